@@ -1,0 +1,77 @@
+"""The `kinematika` command: one subcommand per view of the one engine."""
+from __future__ import annotations
+
+import json
+import os
+import sys
+from pathlib import Path
+from typing import Any, Callable, NoReturn
+
+import typer
+
+from .errors import KinematikaError
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
+                  help="Kinematic analysis of mechanisms: velocities, accelerations, instant "
+                       "centres, curvature, exactly or numerically.")
+
+ModelArg = typer.Argument(..., help="model file (.yaml, .toml or .json)", show_default=False)
+JsonOpt = typer.Option(False, "--json", help="print the contract's JSON")
+SymbolicOpt = typer.Option(False, "--symbolic", help="keep every parameter as a symbol")
+
+
+@app.callback()
+def _group() -> None:
+    """Kinematic analysis of mechanisms."""
+
+
+def fail(err: KinematikaError, as_json: bool) -> NoReturn:
+    """Report a user error in one line (or the contract's JSON) and exit with status 2."""
+    if as_json:
+        print(json.dumps(err.as_json()))
+    else:
+        print(f"error ({err.kind}): {err}", file=sys.stderr)
+    raise typer.Exit(2)
+
+
+def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
+    """Run `work`; user errors become one line, internal ones a short note (no traceback)."""
+    try:
+        return work()
+    except KinematikaError as err:
+        fail(err, as_json)
+    except typer.Exit:
+        raise
+    except Exception as err:  # noqa: BLE001 - never show users a traceback
+        if os.environ.get("KINEMATIKA_DEBUG"):
+            raise
+        message = f"internal error ({type(err).__name__}: {err}); rerun with KINEMATIKA_DEBUG=1 " \
+                  "and report it"
+        if as_json:
+            print(json.dumps({"error": {"kind": "internal", "message": message, "where": ""}}))
+        else:
+            print(f"error: {message}", file=sys.stderr)
+        raise typer.Exit(1)
+
+
+@app.command()
+def solve(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = SymbolicOpt) -> None:
+    """Velocity and acceleration of every point and body at the instant, and the answers."""
+    from .api import solve as solve_model
+    from .report.json_answer import solution_json
+
+    data = guarded(as_json, lambda: solution_json(solve_model(model, symbolic or None)))
+    if as_json:
+        print(json.dumps(data))
+    else:
+        from .report.tables import print_solution
+
+        print_solution(data)
+
+
+def main() -> None:
+    app()
+
+
+if __name__ == "__main__":
+    main()

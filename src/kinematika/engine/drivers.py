@@ -1,0 +1,63 @@
+"""Drivers as rows: the known motion, at the velocity level (values) and acceleration level."""
+from __future__ import annotations
+
+from typing import Any
+
+from ..algebra.vectors import dot, sub
+from ..model.model import Driver
+from .instant import Instant
+from .joints import AXES, JointGeometry, Row, joint_rate
+from .levels import Level
+from .linear import as_lin
+
+
+def driver_rows(inst: Instant, d: Driver, geos: dict[str, JointGeometry], lv: Level) -> list[Row]:
+    """The driver's conditions: (its motion) − (its value) = 0."""
+    given = d.accel if lv.accel else d.value
+    where = d.where
+    if d.kind == "omega":
+        return _omega(inst, d, lv, given, where)
+    if d.kind == "joint":
+        geo = geos[d.joint]
+        value = inst.value(given, where)
+        return [Row(as_lin(joint_rate(geo, lv) - value), f"rate of joint {d.joint} = {given.text}", where, True)]
+    return _velocity(inst, d, lv, given, where)
+
+
+def _omega(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> list[Row]:
+    sp = lv.space
+    rel = d.relative_to
+    motion = sp.rot_sub(lv.omega(d.body), lv.omega(rel)) if rel else lv.omega(d.body)
+    name = "α" if lv.accel else "ω"
+    label = f"{name} of {d.body}" + (f" relative to {rel}" if rel else "")
+    if sp.dim == 2:
+        value = inst.value(given, where)
+        return [Row(as_lin(motion - value), f"{label} = {given.text}", where, True)]
+    value = inst.vector(given, where)
+    if rel and lv.accel:
+        # α_rel = α − α_F − ω_F × ω_rel, the derivative seen from F
+        w_rel = sp.rot_sub(lv.w(d.body), lv.w(rel))
+        motion = sub(motion, sp.cross_ww(lv.w(rel), w_rel))
+    return [Row(as_lin(m - v), f"{label} ({AXES[i]}) = {given[i].text}", where, True)
+            for i, (m, v) in enumerate(zip(motion, value))]
+
+
+def _velocity(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> list[Row]:
+    sp = lv.space
+    ref, rel = d.point, d.relative_to
+    p = inst.points[ref.point]
+    motion = lv.point(ref.body, p)
+    if rel:
+        motion = sub(motion, lv.point(rel, p))
+        if lv.accel:
+            v_rel = sub(lv.v(ref.body, p), lv.v(rel, p))
+            motion = sub(motion, tuple(2 * c for c in sp.cross(lv.w(rel), v_rel)))
+    name = "a" if lv.accel else "v"
+    if d.along is not None:
+        u = inst.unit(inst.vector(d.along, f"{where}.along"), f"{where}.along")
+        value = inst.value(given, where)
+        return [Row(as_lin(dot(motion, u) - value), f"{name} of {ref} along the given direction = "
+                    f"{given.text}", where, True)]
+    value = inst.vector(given, where)
+    return [Row(as_lin(m - v), f"{name} of {ref} ({AXES[i]}) = {given[i].text}", where, True)
+            for i, (m, v) in enumerate(zip(motion, value))]

@@ -1,0 +1,175 @@
+"""A `Model` evaluated on numbers or on symbols: the geometry of one instant.
+
+Everything the linear systems need is here as backend scalars: point coordinates, shapes,
+unit directions of joints and drivers, driver values. For a symbolic model the instant
+also carries generic probe values of the symbols, used to find the structure (rank,
+independent rows, geometric gaps) numerically.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Optional
+
+from ..algebra.backend import Numeric, Symbolic, probe_values
+from ..algebra.vectors import Space, dot, scale, sub
+from ..errors import KinematikaError
+from ..model import model as m
+from ..model.expressions import Expr, ExpressionError, evaluate
+
+
+@dataclass
+class Circle:
+    center: tuple
+    radius: Any
+    center_point: Optional[str] = None
+
+
+@dataclass
+class Line:
+    through: tuple
+    direction: tuple          # unit
+    through_point: Optional[str] = None
+
+
+@dataclass
+class Disc:
+    center: tuple
+    radius: Any
+    axis: tuple               # unit
+    center_point: Optional[str] = None
+
+
+@dataclass
+class Plane:
+    through: tuple
+    normal: tuple             # unit
+    through_point: Optional[str] = None
+
+
+@dataclass
+class Instant:
+    model: m.Model
+    backend: Any
+    space: Space
+    env: dict[str, Any]
+    points: dict[str, tuple]
+    shapes: dict[str, list]
+    probe: dict = field(default_factory=dict)       # symbol -> float (symbolic models)
+    scale: float = 1.0                               # characteristic length
+    ref: tuple = ()                                  # where body twists are taken
+
+    @property
+    def symbolic(self) -> bool:
+        return self.backend.symbolic
+
+    def value(self, expr: Expr, where: str) -> Any:
+        try:
+            return evaluate(expr, self.env, self.backend)
+        except ExpressionError as err:
+            raise KinematikaError("schema", str(err), where) from None
+
+    def vector(self, exprs: tuple, where: str) -> tuple:
+        return tuple(self.value(e, f"{where}[{i}]") for i, e in enumerate(exprs))
+
+    def unit(self, vec: tuple, where: str) -> tuple:
+        """`vec` normalised; a zero vector is a schema error at `where`."""
+        norm2 = dot(vec, vec)
+        if self.num(norm2) <= 1e-24:
+            raise KinematikaError("schema", "a direction cannot be the zero vector", where)
+        norm = self.backend.sqrt(norm2)
+        return tuple(self.backend.simplify(c / norm) for c in vec)
+
+    def direction(self, d: m.Direction, where: str) -> tuple:
+        if isinstance(d, m.PointPair):
+            return self.unit(sub(self.points[d.end], self.points[d.start]), where)
+        return self.unit(self.vector(d, where), where)
+
+    def num(self, x: Any) -> float:
+        """A scalar as a float (a symbolic one at the probe values)."""
+        if isinstance(x, (int, float)):
+            return float(x)
+        return float(x.xreplace(self.probe)) if self.probe else float(x)
+
+    def numvec(self, v: tuple) -> tuple:
+        return tuple(self.num(c) for c in v)
+
+
+def instantiate(model: m.Model, symbolic: bool | None = None) -> Instant:
+    """Evaluate `model`; symbolic when asked or when a parameter has no value."""
+    has_symbols = any(p.value is None for p in model.parameters.values())
+    use_symbols = has_symbols if symbolic is None else (symbolic or has_symbols)
+    backend = Symbolic() if use_symbols else Numeric()
+    env, probe = _parameters(model, backend, force_symbols=bool(symbolic))
+    inst = Instant(model, backend, Space(model.dimension), env, {}, {}, probe)
+    inst.points = {name: inst.vector(v, f"points.{name}") for name, v in model.points.items()}
+    inst.scale = _length_scale(inst)
+    inst.ref = inst.space.zero() if use_symbols else _centroid(inst)
+    inst.shapes = {name: [_shape(inst, s, f"bodies.{name}") for s in b.shapes]
+                   for name, b in model.bodies.items()}
+    return inst
+
+
+def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict, dict]:
+    env: dict[str, Any] = {}
+    pending = dict(model.parameters)
+    for name, p in list(pending.items()):
+        if p.value is None or (force_symbols and backend.symbolic):
+            env[name] = backend.symbol(name, p.positive)
+            del pending[name]
+    while pending:
+        ready = [p for p in pending.values() if p.value.names() <= set(env) | {"pi"}]
+        if not ready:
+            names = ", ".join(pending)
+            raise KinematikaError("schema", f"parameters refer to each other in a cycle: {names}",
+                                  "parameters")
+        for p in ready:
+            try:
+                env[p.name] = evaluate(p.value, env, backend)
+            except ExpressionError as err:
+                raise KinematikaError("schema", str(err), f"parameters.{p.name}") from None
+            del pending[p.name]
+    probe = probe_values([v for v in env.values() if getattr(v, "is_Symbol", False)])
+    return env, probe
+
+
+def _length_scale(inst: Instant) -> float:
+    pts = [inst.numvec(p) for p in inst.points.values()]
+    center = [sum(c) / len(pts) for c in zip(*pts)]
+    spread = max(math.dist(p, center) for p in pts)
+    radii = [abs(inst.num(inst.value(s.radius, "radius"))) for b in inst.model.bodies.values()
+             for s in b.shapes if hasattr(s, "radius")]
+    return max([spread] + radii) or 1.0
+
+
+def _centroid(inst: Instant) -> tuple:
+    pts = list(inst.points.values())
+    return tuple(sum(c) / len(pts) for c in zip(*pts))
+
+
+def _shape(inst: Instant, s: m.Shape, where: str) -> Any:
+    if isinstance(s, m.Circle):
+        return Circle(inst.vector(s.center, where), _radius(inst, s.radius, where), s.center_point)
+    if isinstance(s, m.Line):
+        return Line(inst.vector(s.through, where), inst.unit(inst.vector(s.direction, where),
+                                                             f"{where}.line.direction"), s.through_point)
+    if isinstance(s, m.Disc):
+        return Disc(inst.vector(s.center, where), _radius(inst, s.radius, where),
+                    inst.unit(inst.vector(s.axis, where), f"{where}.disc.axis"), s.center_point)
+    return Plane(inst.vector(s.through, where), inst.unit(inst.vector(s.normal, where),
+                                                          f"{where}.plane.normal"), s.through_point)
+
+
+def _radius(inst: Instant, expr: Expr, where: str) -> Any:
+    r = inst.value(expr, f"{where}.radius")
+    if inst.num(r) <= 0:
+        raise KinematikaError("schema", f"a radius must be positive, got {inst.num(r):g}", where)
+    return r
+
+
+def signed_distance(point: tuple, through: tuple, normal: tuple) -> Any:
+    return dot(sub(point, through), normal)
+
+
+def offset(point: tuple, k: Any, direction: tuple) -> tuple:
+    return tuple(p + c for p, c in zip(point, scale(k, direction)))

@@ -1,0 +1,132 @@
+"""Degrees of freedom by rank, and what to tell the user when the drivers do not fix the motion.
+
+The matrix is made dimensionless first (translation unknowns in units of the model's
+length, rows equilibrated), so that ranks and the condition number compare like with like.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import KinematikaError
+
+SINGULAR_CONDITION = 1e10
+
+
+@dataclass
+class Scaled:
+    """A dimensionless copy of the system matrix: A_s = R A C."""
+
+    matrix: np.ndarray
+    row_scale: np.ndarray
+    col_scale: np.ndarray
+
+
+def scale_system(a: np.ndarray, translation_columns: np.ndarray, length: float) -> Scaled:
+    col = np.where(translation_columns, length, 1.0)
+    scaled = a * col
+    norms = np.abs(scaled).max(axis=1) if a.size else np.zeros(0)
+    row = np.where(norms > 0, 1.0 / np.where(norms > 0, norms, 1.0), 1.0)
+    return Scaled(scaled * row[:, None], row, col)
+
+
+def numeric_rank(a: np.ndarray, reference: float | None = None) -> int:
+    if a.size == 0:
+        return 0
+    s = np.linalg.svd(a, compute_uv=False)
+    top = reference if reference is not None else (s[0] if s.size else 0.0)
+    return int(np.sum(s > top / SINGULAR_CONDITION)) if top > 0 else 0
+
+
+@dataclass
+class Diagnosis:
+    n: int
+    dof: int                 # of the joints alone
+    conditions: int          # independent driver conditions
+    condition_number: float
+
+
+def diagnose(scaled: np.ndarray, is_driver: np.ndarray) -> Diagnosis:
+    n = scaled.shape[1]
+    s = np.linalg.svd(scaled, compute_uv=False) if scaled.size else np.zeros(0)
+    top = s[0] if s.size else 0.0
+    smallest = s[n - 1] if s.size >= n and n > 0 else 0.0
+    cond = float(top / smallest) if smallest > 0 else float("inf")
+    joints = numeric_rank(scaled[~is_driver], top)
+    total = numeric_rank(scaled, top)
+    return Diagnosis(n, n - joints, total - joints, cond)
+
+
+def underdetermined_error(scaled: np.ndarray, is_driver: np.ndarray, labels: list[str],
+                          wheres: list[str], body_of: list[str], diag: Diagnosis) -> KinematikaError:
+    """`singular` at a dead point (drivers enough in number), `mobility` otherwise."""
+    driver_rows = scaled[is_driver]
+    given = numeric_rank(driver_rows)
+    free = _free_bodies(scaled, body_of)
+    if given >= diag.dof > 0 and diag.conditions < given:
+        dependent = _dependent_drivers(scaled, is_driver, wheres)
+        return KinematikaError(
+            "singular",
+            f"the drivers do not fix the motion in this configuration (a dead point): "
+            f"{', '.join(dependent) or 'the drivers'} depend on the joints here; the dimensionless "
+            f"constraint Jacobian has condition number {_fmt(diag.condition_number)} "
+            f"(limit {SINGULAR_CONDITION:.0e})", "drivers")
+    return KinematikaError(
+        "mobility",
+        f"the mechanism has {diag.dof} degree{'s' if diag.dof != 1 else ''} of freedom but the "
+        f"drivers give {diag.conditions} independent condition{'s' if diag.conditions != 1 else ''}; "
+        f"left free: {', '.join(free) or 'some motion'}", "drivers")
+
+
+def conflict_error(residual: np.ndarray, labels: list[str], wheres: list[str],
+                   is_driver: np.ndarray, diag: Diagnosis) -> KinematikaError:
+    """Some conditions cannot hold together: name them (drivers first)."""
+    bad = np.argsort(-np.abs(residual))
+    worst = [i for i in bad if abs(residual[i]) > 1e-6 * max(abs(residual).max(), 1e-300)]
+    names: list[str] = []
+    for i in worst:
+        text = f"{wheres[i]} ({labels[i]})" if is_driver[i] else labels[i]
+        if text not in names:
+            names.append(text)
+    shown = "; ".join(names[:4])
+    extra = diag.conditions - diag.dof
+    return KinematikaError(
+        "mobility",
+        f"the conditions conflict: the mechanism has {diag.dof} degree{'s' if diag.dof != 1 else ''} "
+        f"of freedom and the drivers give {diag.conditions} independent conditions that "
+        f"contradict each other or the joints ({extra} too many): {shown}", "drivers")
+
+
+def _free_bodies(scaled: np.ndarray, body_of: list[str]) -> list[str]:
+    if scaled.shape[1] == 0:
+        return []
+    _, s, vt = np.linalg.svd(scaled)
+    top = s[0] if s.size else 1.0
+    k = int(np.sum(s > top / SINGULAR_CONDITION))
+    null = vt[k:]
+    out: list[str] = []
+    for col in range(scaled.shape[1]):
+        if null.size and np.abs(null[:, col]).max() > 1e-6 and body_of[col] not in out:
+            out.append(body_of[col])
+    return out
+
+
+def _dependent_drivers(scaled: np.ndarray, is_driver: np.ndarray, wheres: list[str]) -> list[str]:
+    """Drivers whose rows lie (numerically) in the span of the joints' rows."""
+    joints = scaled[~is_driver]
+    out: list[str] = []
+    for i in np.flatnonzero(is_driver):
+        row = scaled[i]
+        if joints.size:
+            coef, *_ = np.linalg.lstsq(joints.T, row, rcond=None)
+            gap = np.linalg.norm(joints.T @ coef - row)
+        else:
+            gap = np.linalg.norm(row)
+        if gap < 1e-8 * max(np.linalg.norm(row), 1e-300) and wheres[i] not in out:
+            out.append(wheres[i])
+    return out
+
+
+def _fmt(x: float) -> str:
+    return "infinite" if not np.isfinite(x) else f"{x:.3g}"

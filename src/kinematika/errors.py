@@ -1,0 +1,27 @@
+"""The one error type users see: a kind from the contract, a message and a place."""
+from __future__ import annotations
+
+KINDS = ("syntax", "schema", "geometry", "mobility", "singular", "assembly")
+
+
+class KinematikaError(Exception):
+    """A problem with the user's model, reported as one line, never a traceback.
+
+    `kind` is one of the contract's error kinds; `where` names the place in the model
+    (``joints[2] (j3)``, ``points.A``) or is empty when the whole model is concerned.
+    """
+
+    def __init__(self, kind: str, message: str, where: str = "") -> None:
+        if kind not in KINDS:
+            raise ValueError(f"unknown error kind {kind!r}")
+        super().__init__(message)
+        self.kind = kind
+        self.message = message
+        self.where = where
+
+    def __str__(self) -> str:
+        return f"{self.where}: {self.message}" if self.where else self.message
+
+    def as_json(self) -> dict:
+        """The contract's JSON form of the error."""
+        return {"error": {"kind": self.kind, "message": self.message, "where": self.where}}

@@ -1,0 +1,448 @@
+"""From a model tree (a file's content or the Python API's) to the checked `Model`.
+
+Checks happen here, once, with the place named: the file's shape (pydantic), names of
+points, bodies and joints, expressions, which body carries a bare point name.
+"""
+from __future__ import annotations
+
+from typing import Any, Iterable, Optional
+
+from pydantic import ValidationError
+
+from ..errors import KinematikaError
+from . import schema
+from .expressions import Expr, ExpressionError, parse
+from .model import (Body, Circle, Direction, Disc, Driver, ExprVector, Joint, Line, Model, Parameter,
+                    Plane, PointPair, PointRef, Question, Shape, Sweep)
+
+PLANAR_ONLY = {"wheel", "slot"}
+SPATIAL_ONLY = {"spherical", "cylindrical"}
+SHARED_POINT_JOINTS = {"revolute", "spherical"}
+
+
+def build_model(tree: Any) -> Model:
+    """Check a model tree and resolve it into a `Model`; raises `KinematikaError`."""
+    if not isinstance(tree, dict):
+        raise KinematikaError("schema", "a model is a mapping with keys points, bodies, joints, drivers")
+    try:
+        spec = schema.ModelSpec.model_validate(tree)
+    except ValidationError as err:
+        raise _schema_error(err, tree) from None
+    return _Builder(spec).model()
+
+
+class _Builder:
+    def __init__(self, spec: schema.ModelSpec) -> None:
+        self.spec = spec
+
+    def model(self) -> Model:
+        spec = self.spec
+        params = self.parameters()
+        points = self.points(params)
+        dimension = self.dimension(points)
+        points = {name: _pad(vec, dimension) for name, vec in points.items()}
+        self.point_coords = points
+        self.dim = dimension
+        bodies = self.bodies()
+        if spec.frame not in bodies:
+            raise KinematikaError("schema", f"there is no fixed body {spec.frame!r}: name one body "
+                                  f"{spec.frame!r} or set `frame:` to one of {_names(bodies)}", "bodies")
+        self.body_map = bodies
+        joints = self.joints()
+        self.joint_list = joints
+        drivers = [self.driver(i, d) for i, d in enumerate(spec.drivers)]
+        model = Model(name=spec.name or "Mechanism", dimension=dimension, frame=spec.frame,
+                      parameters=params, points=points, bodies=bodies, joints=joints,
+                      drivers=drivers, questions=[], sweep=self.sweep())
+        self.model_ = model
+        model.questions = self.questions()
+        return model
+
+    # parameters and points -------------------------------------------------------------
+    def parameters(self) -> dict[str, Parameter]:
+        out: dict[str, Parameter] = {}
+        for name, raw in self.spec.parameters.items():
+            where = f"parameters.{name}"
+            if not name.isidentifier():
+                raise KinematikaError("schema", f"{name!r} is not a valid parameter name "
+                                      "(letters, digits and _, not starting with a digit)", where)
+            positive = True
+            if isinstance(raw, schema.ParameterSpec):
+                positive = raw.positive
+                raw = None if raw.symbolic else raw.value
+            out[name] = Parameter(name, None if raw is None else self.expr(raw, where), positive)
+        known = set(out)
+        for p in out.values():
+            if p.value is not None:
+                unknown = p.value.names() - known
+                if unknown:
+                    raise KinematikaError("schema", f"unknown name {sorted(unknown)[0]!r} in "
+                                          f"{p.value.text!r}", f"parameters.{p.name}")
+        return out
+
+    def expr(self, raw: Any, where: str) -> Expr:
+        try:
+            expr = parse(raw)
+        except ExpressionError as err:
+            raise KinematikaError("schema", str(err), where) from None
+        unknown = expr.names() - set(getattr(self, "_param_names", ())) - {"pi"}
+        if hasattr(self, "_param_names") and unknown:
+            raise KinematikaError("schema", f"unknown name {sorted(unknown)[0]!r} in {expr.text!r} "
+                                  f"(parameters: {', '.join(self._param_names) or 'none'})", where)
+        return expr
+
+    def vector(self, raw: list, where: str, dims: Iterable[int] = (2, 3)) -> ExprVector:
+        if len(raw) not in tuple(dims):
+            raise KinematikaError("schema", f"expected {' or '.join(map(str, dims))} components, "
+                                  f"got {len(raw)}", where)
+        return tuple(self.expr(v, f"{where}[{i}]") for i, v in enumerate(raw))
+
+    def points(self, params: dict[str, Parameter]) -> dict[str, ExprVector]:
+        self._param_names = list(params)
+        if not self.spec.points:
+            raise KinematikaError("schema", "a model needs at least one point", "points")
+        return {name: self.vector(raw, f"points.{name}") for name, raw in self.spec.points.items()}
+
+    def dimension(self, points: dict[str, ExprVector]) -> int:
+        sizes = {len(v) for v in points.values()}
+        if self.spec.dimension is not None:
+            if self.spec.dimension == 2 and 3 in sizes:
+                name = next(n for n, v in points.items() if len(v) == 3)
+                raise KinematikaError("schema", "a planar model (dimension 2) has 2 coordinates "
+                                      "per point", f"points.{name}")
+            return self.spec.dimension
+        return 3 if 3 in sizes else 2
+
+    # bodies -----------------------------------------------------------------------------
+    def bodies(self) -> dict[str, Body]:
+        out: dict[str, Body] = {}
+        for name, raw in self.spec.bodies.items():
+            where = f"bodies.{name}"
+            if isinstance(raw, list):
+                raw = schema.BodySpec(points=raw)
+            for p in raw.points:
+                self.known_point(p, where)
+            out[name] = Body(name, list(raw.points), self.shapes(raw, where))
+        listed = {p for b in out.values() for p in b.points}
+        for name in self.point_coords:
+            if name not in listed:
+                raise KinematikaError("schema", f"point {name!r} is not carried by any body: "
+                                      "list it in a body's points", f"points.{name}")
+        return out
+
+    def known_point(self, name: str, where: str) -> None:
+        if name not in self.point_coords:
+            raise KinematikaError("schema", f"unknown point {name!r} (points: "
+                                  f"{', '.join(self.point_coords)})", where)
+
+    def location(self, raw: Any, where: str) -> tuple[ExprVector, Optional[str]]:
+        if isinstance(raw, str):
+            self.known_point(raw, where)
+            return self.point_coords[raw], raw
+        return _pad(self.vector(raw, where), self.dim), None
+
+    def direction_vector(self, raw: list, where: str) -> ExprVector:
+        return _pad(self.vector(raw, where), self.dim)
+
+    def shapes(self, raw: schema.BodySpec, where: str) -> list[Shape]:
+        shapes: list[Shape] = []
+        if raw.circle:
+            center, cp = self.location(raw.circle.center, f"{where}.circle.center")
+            shapes.append(Circle(center, self.expr(raw.circle.radius, f"{where}.circle.radius"), cp))
+        if raw.line:
+            through, tp = self.location(raw.line.through, f"{where}.line.through")
+            shapes.append(Line(through, self.direction_vector(raw.line.direction,
+                                                              f"{where}.line.direction"), tp))
+        if raw.disc:
+            center, cp = self.location(raw.disc.center, f"{where}.disc.center")
+            shapes.append(Disc(center, self.expr(raw.disc.radius, f"{where}.disc.radius"),
+                               self.direction_vector(raw.disc.axis, f"{where}.disc.axis"), cp))
+        if raw.plane:
+            through, tp = self.location(raw.plane.through, f"{where}.plane.through")
+            shapes.append(Plane(through, self.direction_vector(raw.plane.normal,
+                                                               f"{where}.plane.normal"), tp))
+        if self.dim == 2 and any(isinstance(s, (Disc, Plane)) for s in shapes):
+            raise KinematikaError("schema", "disc and plane shapes belong to 3D models; use circle "
+                                  "and line in a planar model", where)
+        return shapes
+
+    def known_body(self, name: Optional[str], where: str) -> str:
+        if name not in self.body_map:
+            raise KinematikaError("schema", f"unknown body {name!r} (bodies: {_names(self.body_map)})",
+                                  where)
+        return name
+
+    # joints -----------------------------------------------------------------------------
+    def joints(self) -> list[Joint]:
+        out: list[Joint] = []
+        ids: set[str] = set()
+        for i, raw in enumerate(self.spec.joints):
+            jid = raw.id or f"j{i + 1}"
+            where = f"joints[{i}] ({jid})"
+            if jid in ids:
+                raise KinematikaError("schema", f"joint id {jid!r} is used twice", where)
+            ids.add(jid)
+            out.append(self.joint(i, jid, raw, where))
+        return out
+
+    def joint(self, i: int, jid: str, raw: schema.JointSpec, where: str) -> Joint:
+        a, b = (self.known_body(name, f"{where}.bodies") for name in raw.bodies)
+        if a == b:
+            raise KinematikaError("schema", f"a joint needs two different bodies, got {a!r} twice", where)
+        kind = raw.type
+        if self.dim == 2 and kind in SPATIAL_ONLY:
+            raise KinematikaError("schema", f"a {kind} joint belongs to a 3D model", where)
+        if self.dim == 3 and kind in PLANAR_ONLY:
+            raise KinematikaError("schema", f"a {kind} joint belongs to a planar model", where)
+        needs_at = kind in {"revolute", "slot", "wheel", "spherical", "cylindrical"}
+        needs_along = kind in {"prismatic", "slot", "wheel"}
+        needs_axis = self.dim == 3 and kind in {"revolute", "cylindrical"}
+        for key, needed in (("at", needs_at), ("along", needs_along), ("axis", needs_axis)):
+            if needed and getattr(raw, key) is None:
+                raise KinematikaError("schema", f"a {kind} joint needs `{key}`", where)
+        allowed = {"at"} if kind in {"rolling", "gear"} else set()
+        for key in ("at", "along", "axis"):
+            present = getattr(raw, key) is not None
+            wanted = {"at": needs_at, "along": needs_along,
+                      "axis": kind in {"revolute", "cylindrical", "prismatic"}}[key]
+            if present and not wanted and key not in allowed:
+                raise KinematikaError("schema", f"a {kind} joint has no `{key}`", where)
+        if raw.internal is not None and kind not in {"gear", "rolling"}:
+            raise KinematikaError("schema", f"`internal` belongs to gear and rolling joints", where)
+        at = raw.at
+        if at is not None:
+            self.known_point(at, f"{where}.at")
+            carriers = [name for name in (a, b) if at in self.body_map[name].points]
+            must = {"revolute": (a, b), "spherical": (a, b), "slot": (b,), "wheel": (b,)}.get(kind, ())
+            missing = [name for name in must if name not in carriers]
+            if missing:
+                raise KinematikaError("geometry", f"the {kind} point {at!r} is not on body "
+                                      f"{missing[0]!r}: list {at!r} in its points", where)
+        along = self.direction(raw.along, f"{where}.along") if raw.along is not None else None
+        axis = self.direction_vector(raw.axis, f"{where}.axis") if raw.axis is not None else None
+        return Joint(jid, kind, a, b, i, at=at, along=along, axis=axis, internal=raw.internal)
+
+    def direction(self, raw: list, where: str) -> Direction:
+        if len(raw) == 2 and all(isinstance(v, str) and v in self.point_coords for v in raw):
+            if raw[0] == raw[1]:
+                raise KinematikaError("schema", f"a direction needs two different points", where)
+            return PointPair(raw[0], raw[1])
+        return self.direction_vector(raw, where)
+
+    # drivers ----------------------------------------------------------------------------
+    def driver(self, i: int, raw: Any) -> Driver:
+        where = f"drivers[{i}]"
+        if isinstance(raw, schema.OmegaDriver):
+            body = self.known_body(raw.omega, f"{where}.omega")
+            rel = self.known_body(raw.relative_to, f"{where}.relative_to") if raw.relative_to else None
+            return Driver("omega", i, body=body, relative_to=rel,
+                          value=self.angular(raw.value, f"{where}.value"),
+                          accel=self.angular(raw.alpha, f"{where}.alpha"))
+        if isinstance(raw, schema.JointDriver):
+            ids = [j.id for j in self.joint_list]
+            if raw.joint not in ids:
+                raise KinematikaError("schema", f"unknown joint {raw.joint!r} (joints: {', '.join(ids)})",
+                                      f"{where}.joint")
+            joint = next(j for j in self.joint_list if j.id == raw.joint)
+            if joint.type not in {"revolute", "prismatic", "slot", "cylindrical"}:
+                raise KinematikaError("schema", f"a {joint.type} joint has no rate to drive; drive a "
+                                      "body's omega or a point's velocity", where)
+            return Driver("joint", i, joint=raw.joint, value=self.expr(raw.rate, f"{where}.rate"),
+                          accel=self.expr(raw.accel, f"{where}.accel"))
+        point = self.point_ref(raw.velocity, f"{where}.velocity")
+        rel = self.known_body(raw.relative_to, f"{where}.relative_to") if raw.relative_to else None
+        if raw.along is not None:
+            along = self.direction_vector(raw.along, f"{where}.along")
+            return Driver("velocity", i, point=point, relative_to=rel, along=along,
+                          value=self.scalar(raw.value, f"{where}.value"),
+                          accel=self.scalar(raw.acceleration, f"{where}.acceleration"))
+        return Driver("velocity", i, point=point, relative_to=rel,
+                      value=self.full_vector(raw.value, f"{where}.value"),
+                      accel=self.full_vector(raw.acceleration, f"{where}.acceleration", zero_ok=True))
+
+    def scalar(self, raw: Any, where: str) -> Expr:
+        if isinstance(raw, list):
+            raise KinematikaError("schema", "expected one number (the component along `along`), "
+                                  "got a vector", where)
+        return self.expr(raw, where)
+
+    def full_vector(self, raw: Any, where: str, zero_ok: bool = False) -> ExprVector:
+        if not isinstance(raw, list):
+            if zero_ok and raw in (0, 0.0):
+                return tuple(self.expr(0, where) for _ in range(self.dim))
+            raise KinematikaError("schema", f"expected a vector of {self.dim} components "
+                                  "(or give `along` for one component)", where)
+        return self.vector(raw, where, (self.dim,))
+
+    def angular(self, raw: Any, where: str) -> Expr | ExprVector:
+        if self.dim == 2:
+            return self.scalar(raw, where)
+        return self.full_vector(raw, where, zero_ok=True)
+
+    # points by name ---------------------------------------------------------------------
+    def point_ref(self, text: str, where: str) -> PointRef:
+        """Resolve ``P@body`` or a bare ``P`` (when every carrier of P moves alike at P)."""
+        if "@" in text:
+            point, _, body = text.partition("@")
+            self.known_point(point, where)
+            self.known_body(body, where)
+            if point not in self.body_map[body].points:
+                raise KinematikaError("schema", f"body {body!r} does not carry point {point!r} "
+                                      f"(carried by {', '.join(self.carriers(point))})", where)
+            return PointRef(point, body)
+        self.known_point(text, where)
+        carriers = self.carriers(text)
+        if len(carriers) > 1 and not self.share_motion(text, carriers):
+            choices = " or ".join(f"{text}@{b}" for b in carriers)
+            raise KinematikaError("schema", f"point {text!r} is carried by {', '.join(carriers)}, "
+                                  f"which move differently there: write {choices}", where)
+        return PointRef(text, carriers[0])
+
+    def carriers(self, point: str) -> list[str]:
+        return [b.name for b in self.body_map.values() if point in b.points]
+
+    def share_motion(self, point: str, carriers: list[str]) -> bool:
+        """Carriers joined at `point` by revolute/spherical joints or welds move alike there."""
+        group = {carriers[0]}
+        changed = True
+        while changed:
+            changed = False
+            for j in self.joint_list:
+                linked = j.type == "weld" or (j.type in SHARED_POINT_JOINTS and j.at == point)
+                if linked and (j.a in group) != (j.b in group) and {j.a, j.b} <= set(carriers):
+                    group |= {j.a, j.b}
+                    changed = True
+        return group == set(carriers)
+
+    # questions --------------------------------------------------------------------------
+    def questions(self) -> list[Question]:
+        if self.spec.ask is None:
+            return self.default_questions()
+        return [self.question(i, q) for i, q in enumerate(self.spec.ask)]
+
+    def default_questions(self) -> list[Question]:
+        out: list[Question] = []
+        for body in self.body_map:
+            if body == self.spec.frame:
+                continue
+            for kind in ("omega", "alpha"):
+                out.append(Question(kind, len(out), body, {kind: body}))
+        for ref in self.model_.material_points():
+            if ref.body == self.spec.frame:
+                continue
+            for kind in ("velocity", "acceleration"):
+                out.append(Question(kind, len(out), ref, {kind: str(ref)}))
+        return out
+
+    def question(self, i: int, raw: schema.QuestionSpec) -> Question:
+        where = f"ask[{i}]"
+        kinds = [k for k in schema.QUESTION_KINDS if getattr(raw, k) is not None]
+        if len(kinds) != 1:
+            raise KinematikaError("schema", "a question has exactly one of the keys "
+                                  f"{', '.join(schema.QUESTION_KINDS)}", where)
+        kind = kinds[0]
+        text = getattr(raw, kind)
+        rel = self.known_body(raw.relative_to, f"{where}.relative_to") if raw.relative_to else None
+        echo = raw.model_dump(exclude_none=True)
+        if kind in {"velocity", "acceleration", "curvature", "decompose", "intrinsic"}:
+            target: Any = self.point_ref(text, f"{where}.{kind}")
+        elif kind == "contact":
+            joint = next((j for j in self.joint_list if j.id == text), None)
+            if joint is None or joint.type not in {"rolling", "gear"}:
+                rolling = [j.id for j in self.joint_list if j.type in {"rolling", "gear"}]
+                raise KinematikaError("schema", f"{text!r} is not a rolling or gear joint (those are: "
+                                      f"{', '.join(rolling) or 'none'})", f"{where}.contact")
+            target = text
+        else:
+            target = self.known_body(text, f"{where}.{kind}")
+        moving = None
+        if kind == "decompose":
+            if raw.moving is None:
+                raise KinematikaError("schema", "a decompose question needs `moving: BODY`, the "
+                                      "moving frame", where)
+            moving = self.known_body(raw.moving, f"{where}.moving")
+        elif raw.moving is not None:
+            raise KinematikaError("schema", "`moving` belongs to decompose questions", where)
+        if kind in {"icr", "pole"} and self.dim == 3:
+            raise KinematikaError("schema", f"{kind} is a planar question; ask for the screw `axis` "
+                                  "in 3D", where)
+        if kind == "axis" and self.dim == 2:
+            raise KinematikaError("schema", "the screw axis is a 3D question; ask for `icr` in a "
+                                  "planar model", where)
+        return Question(kind, i, target, echo, relative_to=rel, moving=moving)
+
+    def sweep(self) -> Optional[Sweep]:
+        raw = self.spec.sweep
+        if raw is None:
+            return None
+        if raw.joint is not None and raw.joint not in {j.id for j in self.joint_list}:
+            raise KinematikaError("schema", f"unknown joint {raw.joint!r}", "sweep.joint")
+        if raw.steps < 1:
+            raise KinematikaError("schema", "steps must be at least 1", "sweep.steps")
+        return Sweep(raw.joint, self.expr(raw.by, "sweep.by"), raw.steps)
+
+
+def _pad(vec: ExprVector, dim: int) -> ExprVector:
+    return vec + tuple(parse(0) for _ in range(dim - len(vec)))
+
+
+def _names(items: Iterable[str]) -> str:
+    return ", ".join(items)
+
+
+# pydantic errors as one line -------------------------------------------------------------
+_BRANCH_NAMES = {"int", "float", "str", "none", "list[union[int,float,str]]", "omega", "joint",
+                 "velocity", "ParameterSpec", "BodySpec", "list[str]"}
+
+
+def _schema_error(err: ValidationError, tree: Any) -> KinematikaError:
+    errors = err.errors()
+    first = min(errors, key=lambda e: _rank(e))
+    loc = [part for part in first["loc"] if not _is_branch(part)]
+    where = _place(loc, tree)
+    message = _message(first, loc)
+    others = len({tuple(p for p in e["loc"] if not _is_branch(p)) for e in errors}) - 1
+    if others > 0:
+        message += f" (and {others} more problem{'s' if others > 1 else ''})"
+    return KinematikaError("schema", message, where)
+
+
+def _is_branch(part: Any) -> bool:
+    return isinstance(part, str) and (part.lower() in {b.lower() for b in _BRANCH_NAMES}
+                                      or "[" in part or part.startswith(("function-", "constrained")))
+
+
+def _rank(error: dict) -> tuple:
+    # prefer unknown or missing keys and literal errors over union-member type mismatches
+    order = {"extra_forbidden": 0, "missing": 1, "literal_error": 2, "driver_kind": 2}
+    return (order.get(error["type"], 5), len(error["loc"]))
+
+
+def _place(loc: list, tree: Any) -> str:
+    out = ""
+    node = tree
+    for part in loc:
+        if isinstance(part, int):
+            out += f"[{part}]"
+            node = node[part] if isinstance(node, list) and part < len(node) else None
+            if len(out) and out.startswith("joints") and out.count("[") == 1 and isinstance(node, dict):
+                out += f" ({node.get('id') or 'j' + str(part + 1)})"
+        else:
+            out += ("." if out else "") + str(part)
+            node = node.get(part) if isinstance(node, dict) else None
+    return out
+
+
+def _message(error: dict, loc: list) -> str:
+    kind = error["type"]
+    last = loc[-1] if loc else ""
+    if kind == "extra_forbidden":
+        return f"unknown key {last!r}"
+    if kind == "missing":
+        return f"missing key {last!r}"
+    if kind == "literal_error":
+        return f"{error['input']!r} is not one of {error['ctx']['expected']}"
+    if kind in {"int_type", "float_type", "string_type", "union_tag_invalid"} or kind.endswith("_type"):
+        shown = repr(error.get("input"))[:60]
+        return f"unexpected value {shown}: {error['msg'].lower()}"
+    return error["msg"]

@@ -1,0 +1,166 @@
+"""The one parsed representation of a mechanism, shared by every command and view.
+
+A `Model` holds names resolved and expressions parsed but not evaluated: the engine
+evaluates it on numbers or on symbols (see `engine.instant`). Files and the Python API
+both end here, through `model.build`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Optional, Union
+
+from .expressions import Expr
+
+ExprVector = tuple[Expr, ...]
+
+
+@dataclass(frozen=True)
+class PointRef:
+    """A material point: the point `point` of body `body` (written ``point@body``)."""
+
+    point: str
+    body: str
+
+    def __str__(self) -> str:
+        return f"{self.point}@{self.body}"
+
+
+@dataclass(frozen=True)
+class PointPair:
+    """A direction given by two points, from `start` to `end`."""
+
+    start: str
+    end: str
+
+
+Direction = Union[ExprVector, PointPair]
+
+
+@dataclass(frozen=True)
+class Circle:
+    center: ExprVector
+    radius: Expr
+    center_point: Optional[str] = None
+
+
+@dataclass(frozen=True)
+class Line:
+    through: ExprVector
+    direction: ExprVector
+    through_point: Optional[str] = None
+
+
+@dataclass(frozen=True)
+class Disc:
+    center: ExprVector
+    radius: Expr
+    axis: ExprVector
+    center_point: Optional[str] = None
+
+
+@dataclass(frozen=True)
+class Plane:
+    through: ExprVector
+    normal: ExprVector
+    through_point: Optional[str] = None
+
+
+Shape = Union[Circle, Line, Disc, Plane]
+
+
+@dataclass
+class Body:
+    name: str
+    points: list[str]
+    shapes: list[Shape] = field(default_factory=list)
+
+
+@dataclass
+class Parameter:
+    name: str
+    value: Optional[Expr]          # None: a symbol
+    positive: bool = True
+
+
+@dataclass
+class Joint:
+    id: str
+    type: str
+    a: str                         # first body: the one `along` directions are fixed in
+    b: str
+    index: int
+    at: Optional[str] = None
+    along: Optional[Direction] = None
+    axis: Optional[ExprVector] = None
+    internal: Optional[bool] = None
+
+    @property
+    def where(self) -> str:
+        return f"joints[{self.index}] ({self.id})"
+
+
+@dataclass
+class Driver:
+    kind: str                      # "omega", "joint" or "velocity"
+    index: int
+    body: Optional[str] = None     # omega driver
+    joint: Optional[str] = None    # joint-rate driver
+    point: Optional[PointRef] = None   # velocity driver
+    value: Union[Expr, ExprVector, None] = None
+    accel: Union[Expr, ExprVector, None] = None
+    relative_to: Optional[str] = None
+    along: Optional[ExprVector] = None
+
+    @property
+    def where(self) -> str:
+        return f"drivers[{self.index}]"
+
+
+@dataclass
+class Question:
+    kind: str                      # one of schema.QUESTION_KINDS
+    index: int
+    target: Union[str, PointRef]   # body name, material point or joint id
+    echo: dict                     # the question as written, echoed in the answer
+    relative_to: Optional[str] = None
+    moving: Optional[str] = None
+
+    @property
+    def where(self) -> str:
+        return f"ask[{self.index}]"
+
+
+@dataclass
+class Sweep:
+    joint: Optional[str]
+    by: Expr
+    steps: int
+
+
+@dataclass
+class Model:
+    name: str
+    dimension: int
+    frame: str
+    parameters: dict[str, Parameter]
+    points: dict[str, ExprVector]
+    bodies: dict[str, Body]
+    joints: list[Joint]
+    drivers: list[Driver]
+    questions: list[Question]
+    sweep: Optional[Sweep] = None
+
+    def carriers(self, point: str) -> list[str]:
+        """The bodies that list `point`, in the file's order."""
+        return [b.name for b in self.bodies.values() if point in b.points]
+
+    def material_points(self) -> list[PointRef]:
+        """Every material point, body by body, in the file's order."""
+        return [PointRef(p, b.name) for b in self.bodies.values() for p in b.points]
+
+    def joint(self, joint_id: str) -> Joint:
+        return next(j for j in self.joints if j.id == joint_id)
+
+    @property
+    def moving_bodies(self) -> list[str]:
+        return [name for name in self.bodies if name != self.frame]

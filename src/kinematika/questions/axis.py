@@ -1,0 +1,29 @@
+"""The instantaneous screw axis (3D): the line of points whose velocity is along ω.
+
+With ω and v_O, the velocity of the body's point at the origin, the axis' point nearest
+the origin is p = ω × v_O / |ω|²; the sliding speed s = v·ω̂ is the same for every point.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from ..algebra.vectors import cross3, dot, scale
+from ..model.model import Question
+from ..solution import Solution
+
+
+def axis(sol: Solution, q: Question) -> dict[str, Any]:
+    state = sol.state(q.target, q.relative_to)
+    w = state.omega
+    v_origin = sol.motion.velocity(state, sol.space.zero())
+    if sol.is_zero(w, sol.rate_scale()):
+        if sol.is_zero(v_origin, sol.speed_scale()):
+            return {"point": None, "direction": None, "omega": 0, "slide": 0, "rest": True}
+        speed = sol.norm(v_origin)
+        return {"point": None, "direction": scale(1 / speed, v_origin), "omega": 0, "slide": speed}
+    ww = dot(w, w)
+    size = sol.inst.backend.sqrt(ww)
+    point = scale(1 / ww, cross3(w, v_origin))
+    return {"point": point, "direction": scale(1 / size, w), "omega": size,
+            "slide": dot(v_origin, w) / size}
+

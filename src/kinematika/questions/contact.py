@@ -1,0 +1,23 @@
+"""The three coincident points of a rolling contact: each body's material point and the
+geometric contact point, which moves along both profiles."""
+from __future__ import annotations
+
+from typing import Any
+
+from ..model.model import Question
+from ..solution import Solution
+
+
+def contact(sol: Solution, q: Question) -> dict[str, Any]:
+    joint = sol.model.joint(q.target)
+    c = sol.solver.geos[joint.id].contact
+    rel = None if q.relative_to in (None, sol.model.frame) else q.relative_to
+    out = {}
+    for key, body in (("body_a", joint.a), ("body_b", joint.b)):
+        state = sol.state(body, rel)
+        out[key] = {"velocity": sol.motion.velocity(state, c.point),
+                    "acceleration": sol.motion.acceleration(state, c.point)}
+    v, a = sol.motion.moving_point(c.point, c.jdot(sol.motion), c.jddot(sol.motion), rel)
+    out["geometric"] = {"velocity": v, "acceleration": a}
+    out["point"] = c.point
+    return out

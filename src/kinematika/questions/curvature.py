@@ -1,0 +1,60 @@
+"""Curvature of a point's path, and the intrinsic components of its acceleration.
+
+The normal acceleration aₙ = a − (a·v̂) v̂ points to the centre of curvature, at distance
+ρ = v²/|aₙ| from the point: centre = P + (v²/|aₙ|²) aₙ. In the plane this is
+P + (v·v)/(v × a) (k × v), with no absolute value needed.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from ..algebra.vectors import add, dot, scale, sub
+from ..model.model import Question
+from ..solution import Solution
+
+
+def curvature(sol: Solution, q: Question) -> dict[str, Any]:
+    p = sol.position(q.target)
+    v = sol.velocity(q.target, q.relative_to)
+    a = sol.acceleration(q.target, q.relative_to)
+    return path_curvature(sol, p, v, a)
+
+
+def path_curvature(sol: Solution, p: tuple, v: tuple, a: tuple) -> dict[str, Any]:
+    sp = sol.space
+    if sol.is_zero(v, sol.speed_scale()):
+        return {"radius": None, "rest": True}
+    cross = sp.cross_vv(v, a)
+    vv = dot(v, v)
+    if sol.is_zero(cross, sol.speed_scale() * sol.accel_scale()):
+        return {"radius": None, "center": None}
+    bk = sol.inst.backend
+    if sp.dim == 2:
+        center = add(p, scale(vv / cross, sp.cross(1, v)))
+        radius = bk.sqrt(vv) ** 3 / abs(cross) if not sol.symbolic else \
+            _symbolic_radius(vv, cross)
+        return {"radius": radius, "center": center}
+    a_n = sub(a, scale(dot(a, v) / vv, v))
+    nn = dot(a_n, a_n)
+    return {"radius": vv / bk.sqrt(nn), "center": add(p, scale(vv / nn, a_n))}
+
+
+def _symbolic_radius(vv: Any, cross: Any) -> Any:
+    import sympy
+
+    return sympy.sqrt(vv) ** 3 / sympy.Abs(cross)
+
+
+def intrinsic(sol: Solution, q: Question) -> dict[str, Any]:
+    """Speed, unit tangent, tangential (signed) and normal components of the acceleration."""
+    v = sol.velocity(q.target, q.relative_to)
+    a = sol.acceleration(q.target, q.relative_to)
+    if sol.is_zero(v, sol.speed_scale()):
+        return {"speed": 0, "tangent": None, "tangential": None, "normal": None,
+                "normal_vector": None, "acceleration": a, "rest": True}
+    speed = sol.norm(v)
+    t = scale(1 / speed, v)
+    at = dot(a, t)
+    an = sub(a, scale(at, t))
+    return {"speed": speed, "tangent": t, "tangential": at, "normal": sol.norm(an),
+            "tangential_vector": scale(at, t), "normal_vector": an}

@@ -1,0 +1,28 @@
+"""Instant centres of rotation (planar): where the relative velocity field vanishes.
+
+With the relative twist (ω, v₀ at ref): v(P) = v₀ + ω k × (P − ref) = 0 gives
+P = ref + k × v₀ / ω. With ω = 0 the motion is a translation: the centre is at infinity,
+perpendicular to v₀; with v₀ = 0 too, the body is at rest relative to the frame.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from ..algebra.vectors import add
+from ..model.model import Question
+from ..solution import Solution
+
+
+def instant_centre(sol: Solution, body: str, relative_to: str | None) -> dict[str, Any]:
+    state = sol.state(body, relative_to)
+    w, v0 = state.omega, state.v0
+    if sol.is_zero(w, sol.rate_scale()):
+        if sol.is_zero(v0, sol.speed_scale()):
+            return {"point": None, "rest": True}
+        speed = sol.norm(v0)
+        return {"point": None, "direction": (-v0[1] / speed, v0[0] / speed)}
+    return {"point": add(sol.motion.ref, (-v0[1] / w, v0[0] / w))}
+
+
+def icr(sol: Solution, q: Question) -> dict[str, Any]:
+    return instant_centre(sol, q.target, q.relative_to)

@@ -1,0 +1,28 @@
+"""The acceleration pole (planar): the point of a body with zero acceleration.
+
+a(P) = a₀ + α k × r − ω² r = 0 with r = P − ref: a 2×2 linear system of determinant
+ω⁴ + α², singular only when the body neither turns nor changes its turning.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from ..algebra.vectors import add
+from ..model.model import Question
+from ..solution import Solution
+
+
+def pole(sol: Solution, q: Question) -> dict[str, Any]:
+    state = sol.state(q.target, q.relative_to)
+    w2, al = state.omega ** 2, state.alpha
+    det = w2 ** 2 + al ** 2
+    ax, ay = state.a0
+    if sol.is_zero(det, sol.rate_scale() ** 4):
+        if sol.is_zero(state.a0, sol.accel_scale()):
+            return {"point": None, "uniform": True}
+        size = sol.norm(state.a0)
+        return {"point": None, "direction": (-ay / size, ax / size)}
+    # solve [[-w2, -al], [al, -w2]] r = -a0
+    rx = (w2 * ax - al * ay) / det
+    ry = (al * ax + w2 * ay) / det
+    return {"point": add(sol.motion.ref, (rx, ry))}

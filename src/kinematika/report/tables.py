@@ -1,0 +1,58 @@
+"""Human-readable answers in the terminal (rich tables)."""
+from __future__ import annotations
+
+from typing import Any
+
+from rich.console import Console
+from rich.table import Table
+
+from .json_answer import solution_json
+
+
+def show(value: Any) -> str:
+    """A compact text form of a plain answer value."""
+    if value is None:
+        return "—"
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    if isinstance(value, list):
+        return "(" + ", ".join(show(v) for v in value) + ")"
+    if isinstance(value, dict):
+        return "  ".join(f"{k}: {show(v)}" for k, v in value.items())
+    return str(value)
+
+
+def ask_text(ask: dict) -> str:
+    main = next(iter(ask.items()))
+    extra = "".join(f", {k} {v}" for k, v in list(ask.items())[1:])
+    return f"{main[0]} {main[1]}{extra}"
+
+
+def print_solution(data: dict, console: Console | None = None) -> None:
+    """Bodies, points and the answers to the questions, as tables."""
+    console = console or Console()
+    mode = "exact formulas" if data["symbolic"] else "numbers"
+    console.print(f"[bold]{data['name']}[/bold]  ({data['dimension']}D, {data['dof']} degree"
+                  f"{'s' if data['dof'] != 1 else ''} of freedom, {mode})")
+    bodies = Table(title="Bodies (relative to the ground)", title_justify="left")
+    for col in ("body", "ω", "α"):
+        bodies.add_column(col)
+    for name, b in data["bodies"].items():
+        bodies.add_row(name, show(b["omega"]), show(b["alpha"]))
+    console.print(bodies)
+    points = Table(title="Points (relative to the ground)", title_justify="left")
+    for col in ("point", "position", "velocity", "acceleration"):
+        points.add_column(col)
+    for name, p in data["points"].items():
+        points.add_row(name, show(p["position"]), show(p["velocity"]), show(p["acceleration"]))
+    console.print(points)
+    answers = Table(title="Answers", title_justify="left")
+    answers.add_column("question")
+    answers.add_column("answer")
+    for entry in data["answers"]:
+        answers.add_row(ask_text(entry["ask"]), show(entry["value"]))
+    console.print(answers)
+
+
+def print_model_solution(sol: Any, console: Console | None = None) -> None:
+    print_solution(solution_json(sol), console)

@@ -1,0 +1,102 @@
+"""The result of solving an instant: the model, its evaluated geometry and the motion.
+
+Views (JSON, tables, figures, explanations) read from a `Solution`; they never solve.
+Values are backend scalars: floats, or sympy expressions for a symbolic model.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Optional
+
+from .algebra.vectors import dot
+from .engine.instant import Instant
+from .engine.motion import BodyState, Motion
+from .engine.system import InstantSolver
+from .model.model import Model, PointRef
+
+ZERO = 1e-9   # the contract's threshold, relative to the model's own scale
+
+
+@dataclass
+class Solution:
+    model: Model
+    inst: Instant
+    motion: Motion
+    solver: InstantSolver
+    _scales: Optional[tuple[float, float]] = field(default=None, repr=False)
+
+    @property
+    def symbolic(self) -> bool:
+        return self.inst.symbolic
+
+    @property
+    def space(self):
+        return self.inst.space
+
+    @property
+    def dof(self) -> int:
+        return self.solver.analysis.diagnosis.dof if self.solver.analysis else 0
+
+    # the motion of bodies and points --------------------------------------------------------
+    def state(self, body: str, relative_to: str | None = None) -> BodyState:
+        frame = None if relative_to in (None, self.model.frame) else relative_to
+        state = self.motion.state(body, frame)
+        return state
+
+    def position(self, ref: PointRef | str) -> tuple:
+        name = ref.point if isinstance(ref, PointRef) else ref
+        return self.inst.points[name]
+
+    def velocity(self, ref: PointRef, relative_to: str | None = None) -> tuple:
+        return self.motion.velocity(self.state(ref.body, relative_to), self.position(ref))
+
+    def acceleration(self, ref: PointRef, relative_to: str | None = None) -> tuple:
+        return self.motion.acceleration(self.state(ref.body, relative_to), self.position(ref))
+
+    def omega(self, body: str, relative_to: str | None = None) -> Any:
+        return self.state(body, relative_to).omega
+
+    def alpha(self, body: str, relative_to: str | None = None) -> Any:
+        return self.state(body, relative_to).alpha
+
+    # zero tests at the model's scale --------------------------------------------------------
+    def scales(self) -> tuple[float, float]:
+        """Characteristic speed and acceleration of the whole mechanism (numerically)."""
+        if self._scales is None:
+            inst, length = self.inst, self.inst.scale
+            speeds, accels = [0.0], [0.0]
+            for ref in self.model.material_points():
+                speeds.append(_norm(inst.numvec(self.velocity(ref))))
+                accels.append(_norm(inst.numvec(self.acceleration(ref))))
+            for body in self.model.bodies:
+                s = self.motion.states[body]
+                speeds.append(_norm(inst.numvec(self.space.rot_components(s.omega))) * length)
+                accels.append(_norm(inst.numvec(self.space.rot_components(s.alpha))) * length)
+            self._scales = (max(speeds), max(accels))
+        return self._scales
+
+    def is_zero(self, value: Any, scale: float) -> bool:
+        """Below 1e-9 times `scale` numerically; exactly zero symbolically."""
+        parts = value if isinstance(value, tuple) else (value,)
+        if self.symbolic:
+            import sympy
+
+            return all(sympy.simplify(p) == 0 for p in parts)
+        return _norm([float(p) for p in parts]) <= ZERO * scale
+
+    def speed_scale(self) -> float:
+        return self.scales()[0]
+
+    def rate_scale(self) -> float:
+        return self.scales()[0] / self.inst.scale
+
+    def accel_scale(self) -> float:
+        return self.scales()[1]
+
+    def norm(self, vec: tuple) -> Any:
+        return self.inst.backend.sqrt(dot(vec, vec))
+
+
+def _norm(values: Any) -> float:
+    return math.sqrt(sum(float(v) ** 2 for v in values))
