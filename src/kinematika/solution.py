@@ -80,9 +80,11 @@ class Solution:
         """Below 1e-9 times `scale` numerically; exactly zero symbolically."""
         parts = value if isinstance(value, tuple) else (value,)
         if self.symbolic:
-            import sympy
+            from .algebra.fields import canonical
 
-            return all(sympy.simplify(p) == 0 for p in parts)
+            if _norm(self.inst.numvec(parts)) > 1e-9 * max(scale, 1e-300):
+                return False
+            return all(canonical(p) == 0 for p in parts)
         return _norm([float(p) for p in parts]) <= ZERO * scale
 
     def speed_scale(self) -> float:

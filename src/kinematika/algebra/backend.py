@@ -99,12 +99,17 @@ class Symbolic:
         return self.sp.sqrt(x)
 
     def simplify(self, x: Any) -> Any:
-        """A cheap, reliable simplification of a rational expression in the symbols."""
-        sp = self.sp
-        if not isinstance(x, sp.Basic):
-            return sp.nsimplify(x)
-        x = sp.cancel(sp.together(x))
-        return sp.factor_terms(x)
+        """A canonical, factored form of a rational expression in the symbols and atoms."""
+        from .fields import canonical
+
+        return canonical(x)
+
+    def check_against(self, exact: list[Any], numeric: Any, probe: dict) -> None:
+        """The exact solution must equal the numeric one at the probe values."""
+        for e, x in zip(exact, numeric):
+            value = float(self.sp.sympify(e).xreplace(probe))
+            if abs(value - x) > 1e-6 * (1 + abs(x)):
+                raise ArithmeticError(f"exact solution {e} disagrees with the numeric one {x}")
 
     def to_float(self, x: Any, env: dict | None = None) -> float:
         value = self.sp.sympify(x)

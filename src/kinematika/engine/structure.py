@@ -13,9 +13,6 @@ from dataclasses import dataclass
 from typing import Any, Sequence
 
 import numpy as np
-import scipy.linalg
-from scipy.sparse import csr_matrix
-from scipy.sparse.csgraph import maximum_bipartite_matching
 
 from ..errors import KinematikaError
 from .mobility import SINGULAR_CONDITION, Diagnosis, conflict_error, diagnose, scale_system, underdetermined_error
@@ -48,9 +45,10 @@ def analyse(a: np.ndarray, is_driver: np.ndarray, translation_columns: np.ndarra
     if m < n or diag.condition_number > SINGULAR_CONDITION:
         raise underdetermined_error(scaled.matrix, is_driver, labels, wheres, body_of, diag)
     u, s, vt = np.linalg.svd(scaled.matrix, full_matrices=False)
-    _, _, piv = scipy.linalg.qr(scaled.matrix.T, pivoting=True, mode="economic")
-    rows = sorted(int(i) for i in piv[:n])
-    blocks = _blocks(a[rows], rows) if want_blocks else []
+    rows, blocks = list(range(m)), []
+    if want_blocks:
+        rows = independent_rows(scaled.matrix, n)
+        blocks = _blocks(a[rows], rows)
     return Analysis(scaled, u, s, vt, diag, rows, blocks)
 
 
@@ -70,30 +68,77 @@ def solve_numeric(an: Analysis, b: np.ndarray, labels: list[str], wheres: list[s
 
 
 def solve_symbolic(an: Analysis, a_sym: Sequence[Sequence[Any]], b_sym: Sequence[Any],
-                   simplify: Any) -> list[Any]:
-    """Exact solution, block by block in dependency order, simplifying as it goes."""
-    import sympy
+                   a_num: np.ndarray) -> list[Any]:
+    """Exact solution, block by block in dependency order, in a field of rational functions."""
+    from ..algebra.fields import RationalField
 
-    n = len(a_sym[0]) if a_sym else 0
-    x: list[Any] = [None] * n
+    n = a_num.shape[1]
+    used = [r for rows, _ in an.blocks for r in rows]
+    entries = [a_sym[r][c] for r in used for c in range(n) if _nonzero(a_num[r, c], a_num)]
+    field = RationalField(entries + [b_sym[r] for r in used])
+    to = field.to
+    x: dict[int, Any] = {}
     for rows, cols in an.blocks:
-        known = [c for c in range(n) if x[c] is not None]
         rhs = []
         for r in rows:
-            value = b_sym[r]
-            for c in known:
-                coef = a_sym[r][c]
-                if coef != 0:
-                    value = value - coef * x[c]
+            value = to(b_sym[r])
+            for c, xc in x.items():
+                if _nonzero(a_num[r, c], a_num):
+                    value -= to(a_sym[r][c]) * xc
             rhs.append(value)
-        if len(cols) == 1:
-            solution = [rhs[0] / a_sym[rows[0]][cols[0]]]
-        else:
-            block = sympy.Matrix([[a_sym[r][c] for c in cols] for r in rows])
-            solution = list(block.LUsolve(sympy.Matrix(rhs)))
-        for c, value in zip(cols, solution):
-            x[c] = simplify(value)
-    return x
+        block = [[to(a_sym[r][c]) if _nonzero(a_num[r, c], a_num) else field.domain.zero
+                  for c in cols] for r in rows]
+        solution = _eliminate(block, rhs, a_num[np.ix_(rows, cols)])
+        x.update(zip(cols, solution))
+    return [field.back(x[c]) for c in range(n)]
+
+
+def _nonzero(value: float, a_num: np.ndarray) -> bool:
+    return abs(value) > 1e-12 * max(np.abs(a_num).max(initial=0.0), 1e-300)
+
+
+def _eliminate(block: list[list[Any]], rhs: list[Any], numeric: np.ndarray) -> list[Any]:
+    """Gaussian elimination on field elements, pivoting on the numeric twin of the block."""
+    k = len(rhs)
+    if k == 1:
+        return [rhs[0] / block[0][0]]
+    a = [row[:] + [r] for row, r in zip(block, rhs)]
+    num = numeric.astype(float).copy()
+    for col in range(k):
+        pivot = col + int(np.argmax(np.abs(num[col:, col])))
+        a[col], a[pivot] = a[pivot], a[col]
+        num[[col, pivot]] = num[[pivot, col]]
+        for row in range(col + 1, k):
+            if num[row, col] == 0 and not a[row][col]:
+                continue
+            factor = a[row][col] / a[col][col]
+            ratio = num[row, col] / num[col, col]
+            a[row] = [x - factor * y for x, y in zip(a[row], a[col])]
+            num[row] -= ratio * num[col]
+    out: list[Any] = [None] * k
+    for row in reversed(range(k)):
+        value = a[row][k]
+        for c in range(row + 1, k):
+            value -= a[row][c] * out[c]
+        out[row] = value / a[row][row]
+    return out
+
+
+def independent_rows(a: np.ndarray, n: int) -> list[int]:
+    """n linearly independent rows, chosen greedily (Gram–Schmidt, joints before drivers)."""
+    basis: list[np.ndarray] = []
+    chosen: list[int] = []
+    for i, row in enumerate(a):
+        residual = row.astype(float).copy()
+        for q in basis:
+            residual -= (q @ residual) * q
+        size = np.linalg.norm(residual)
+        if size > 1e-9 * max(np.linalg.norm(row), 1e-300):
+            basis.append(residual / size)
+            chosen.append(i)
+            if len(chosen) == n:
+                break
+    return chosen
 
 
 def _blocks(a_rows: np.ndarray, rows: list[int]) -> list[tuple[list[int], list[int]]]:
@@ -101,15 +146,38 @@ def _blocks(a_rows: np.ndarray, rows: list[int]) -> list[tuple[list[int], list[i
     n = a_rows.shape[1]
     top = np.abs(a_rows).max(initial=0.0)
     pattern = np.abs(a_rows) > 1e-12 * max(top, 1e-300)
-    match = maximum_bipartite_matching(csr_matrix(pattern.astype(np.int8)), perm_type="column")
-    if np.any(match < 0):
-        raise KinematikaError("singular", "the system has no structurally independent set of "
-                              "conditions for every unknown", "drivers")
+    match = _matching(pattern)
     # row i is matched to column match[i]; unknown match[i] depends on the others of row i
-    row_of_col = {int(c): i for i, c in enumerate(match)}
+    row_of_col = {c: i for i, c in enumerate(match)}
     deps = {c: [int(k) for k in np.flatnonzero(pattern[row_of_col[c]]) if k != c] for c in range(n)}
     order = _tarjan(n, deps)
     return [([rows[row_of_col[c]] for c in comp], comp) for comp in order]
+
+
+def _matching(pattern: np.ndarray) -> list[int]:
+    """A perfect matching of rows to columns over the nonzeros (augmenting paths)."""
+    n = pattern.shape[0]
+    col_owner: dict[int, int] = {}
+    options = [list(np.flatnonzero(pattern[i])) for i in range(n)]
+
+    def augment(i: int, seen: set[int]) -> bool:
+        for c in options[i]:
+            if c in seen:
+                continue
+            seen.add(c)
+            if c not in col_owner or augment(col_owner[c], seen):
+                col_owner[c] = i
+                return True
+        return False
+
+    for i in range(n):
+        if not augment(i, set()):
+            raise KinematikaError("singular", "the system has no structurally independent set of "
+                                  "conditions for every unknown", "drivers")
+    match = [0] * n
+    for c, i in col_owner.items():
+        match[i] = int(c)
+    return match
 
 
 def _tarjan(n: int, deps: dict[int, list[int]]) -> list[list[int]]:

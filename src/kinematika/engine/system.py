@@ -71,7 +71,9 @@ class InstantSolver:
             x_num = solve_numeric(an, b_num, labels, wheres, is_driver, check)
             if not inst.symbolic:
                 return [float(v) for v in x_num]
-            return solve_symbolic(an, a, b, inst.backend.simplify)
+            exact = solve_symbolic(an, a, b, a_num)
+            inst.backend.check_against(exact, x_num, inst.probe)
+            return exact
 
         x_v = solve(b_v, check=True)
         velocities = self._motion(x_v, None)

@@ -40,9 +40,12 @@ def path_curvature(sol: Solution, p: tuple, v: tuple, a: tuple) -> dict[str, Any
 
 
 def _symbolic_radius(vv: Any, cross: Any) -> Any:
+    """|v|³/|v × a| with both factored first, so that roots and absolute values resolve."""
     import sympy
 
-    return sympy.sqrt(vv) ** 3 / sympy.Abs(cross)
+    from ..algebra.fields import canonical
+
+    return sympy.sqrt(canonical(vv)) ** 3 / sympy.Abs(canonical(cross))
 
 
 def intrinsic(sol: Solution, q: Question) -> dict[str, Any]:

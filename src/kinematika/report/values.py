@@ -37,19 +37,10 @@ def formula(x: Any) -> str:
 
 
 def tidy(x: Any) -> Any:
-    """The shortest of a few cheap simplifications; full `simplify` only for small formulas."""
+    """A readable exact form: the canonical rational form, factored."""
     import sympy
 
+    from ..algebra.fields import canonical
+
     x = sympy.sympify(x)
-    radicals = any(p.base.is_number and not p.exp.is_integer for p in x.atoms(sympy.Pow))
-    if x.is_number:
-        return sympy.radsimp(x) if radicals else x
-    candidates = [x]
-    try:
-        base = sympy.cancel(sympy.radsimp(x) if radicals else x)
-        candidates += [base, sympy.factor(base), sympy.factor_terms(base)]
-        if sympy.count_ops(base) < 40:
-            candidates.append(sympy.simplify(base))
-    except (sympy.PolynomialError, TypeError, ValueError):  # pragma: no cover - odd formulas
-        pass
-    return min(candidates, key=lambda e: (sympy.count_ops(e), len(str(e))))
+    return x if x.is_Atom else canonical(x)
