@@ -13,6 +13,7 @@ from .algebra.vectors import dot
 from .engine.instant import Instant
 from .engine.motion import BodyState, Motion
 from .engine.system import InstantSolver
+from .errors import KinematikaError
 from .model.model import Model, PointRef
 
 ZERO = 1e-9   # the contract's threshold, relative to the model's own scale
@@ -40,18 +41,28 @@ class Solution:
 
     # the motion of bodies and points --------------------------------------------------------
     def state(self, body: str, relative_to: str | None = None) -> BodyState:
+        """The motion of `body` seen from `relative_to` (default: the fixed frame)."""
+        for name in (body, relative_to):
+            if name is not None and name not in self.model.bodies:
+                raise KinematikaError("schema", f"unknown body {name!r} (bodies: "
+                                      f"{', '.join(self.model.bodies)})")
         frame = None if relative_to in (None, self.model.frame) else relative_to
-        state = self.motion.state(body, frame)
-        return state
+        return self.motion.state(body, frame)
+
+    def point(self, ref: PointRef | str) -> PointRef:
+        """A material point from ``P@body`` or a bare ``P``."""
+        return self.model.resolve_point(ref)
 
     def position(self, ref: PointRef | str) -> tuple:
-        name = ref.point if isinstance(ref, PointRef) else ref
+        name = ref.point if isinstance(ref, PointRef) else ref.partition("@")[0]
         return self.inst.points[name]
 
-    def velocity(self, ref: PointRef, relative_to: str | None = None) -> tuple:
+    def velocity(self, ref: PointRef | str, relative_to: str | None = None) -> tuple:
+        ref = self.point(ref)
         return self.motion.velocity(self.state(ref.body, relative_to), self.position(ref))
 
-    def acceleration(self, ref: PointRef, relative_to: str | None = None) -> tuple:
+    def acceleration(self, ref: PointRef | str, relative_to: str | None = None) -> tuple:
+        ref = self.point(ref)
         return self.motion.acceleration(self.state(ref.body, relative_to), self.position(ref))
 
     def omega(self, body: str, relative_to: str | None = None) -> Any:

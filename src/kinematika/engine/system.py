@@ -18,7 +18,7 @@ from .instant import Instant, instantiate
 from .joints import JointGeometry, Row, joint_geometry, joint_rows
 from .levels import AccelerationLevel, Level, Unknowns, VelocityLevel
 from .motion import BodyState, Motion
-from .structure import Analysis, analyse, solve_numeric, solve_symbolic
+from .linsolve import Analysis, analyse, solve_numeric, solve_symbolic
 
 
 class InstantSolver:

@@ -17,7 +17,6 @@ from .model import (Body, Circle, Direction, Disc, Driver, ExprVector, Joint, Li
 
 PLANAR_ONLY = {"wheel", "slot"}
 SPATIAL_ONLY = {"spherical", "cylindrical"}
-SHARED_POINT_JOINTS = {"revolute", "spherical"}
 
 
 def build_model(tree: Any) -> Model:
@@ -50,11 +49,11 @@ class _Builder:
         self.body_map = bodies
         joints = self.joints()
         self.joint_list = joints
-        drivers = [self.driver(i, d) for i, d in enumerate(spec.drivers)]
         model = Model(name=spec.name or "Mechanism", dimension=dimension, frame=spec.frame,
                       parameters=params, points=points, bodies=bodies, joints=joints,
-                      drivers=drivers, questions=[], sweep=self.sweep())
+                      drivers=[], questions=[], sweep=self.sweep())
         self.model_ = model
+        model.drivers = [self.driver(i, d) for i, d in enumerate(spec.drivers)]
         model.questions = self.questions()
         return model
 
@@ -279,40 +278,8 @@ class _Builder:
             return self.scalar(raw, where)
         return self.full_vector(raw, where, zero_ok=True)
 
-    # points by name ---------------------------------------------------------------------
     def point_ref(self, text: str, where: str) -> PointRef:
-        """Resolve ``P@body`` or a bare ``P`` (when every carrier of P moves alike at P)."""
-        if "@" in text:
-            point, _, body = text.partition("@")
-            self.known_point(point, where)
-            self.known_body(body, where)
-            if point not in self.body_map[body].points:
-                raise KinematikaError("schema", f"body {body!r} does not carry point {point!r} "
-                                      f"(carried by {', '.join(self.carriers(point))})", where)
-            return PointRef(point, body)
-        self.known_point(text, where)
-        carriers = self.carriers(text)
-        if len(carriers) > 1 and not self.share_motion(text, carriers):
-            choices = " or ".join(f"{text}@{b}" for b in carriers)
-            raise KinematikaError("schema", f"point {text!r} is carried by {', '.join(carriers)}, "
-                                  f"which move differently there: write {choices}", where)
-        return PointRef(text, carriers[0])
-
-    def carriers(self, point: str) -> list[str]:
-        return [b.name for b in self.body_map.values() if point in b.points]
-
-    def share_motion(self, point: str, carriers: list[str]) -> bool:
-        """Carriers joined at `point` by revolute/spherical joints or welds move alike there."""
-        group = {carriers[0]}
-        changed = True
-        while changed:
-            changed = False
-            for j in self.joint_list:
-                linked = j.type == "weld" or (j.type in SHARED_POINT_JOINTS and j.at == point)
-                if linked and (j.a in group) != (j.b in group) and {j.a, j.b} <= set(carriers):
-                    group |= {j.a, j.b}
-                    changed = True
-        return group == set(carriers)
+        return self.model_.resolve_point(text, where)
 
     # questions --------------------------------------------------------------------------
     def questions(self) -> list[Question]:

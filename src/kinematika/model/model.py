@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Optional, Union
 
+from ..errors import KinematikaError
 from .expressions import Expr
 
 ExprVector = tuple[Expr, ...]
@@ -160,6 +161,42 @@ class Model:
 
     def joint(self, joint_id: str) -> Joint:
         return next(j for j in self.joints if j.id == joint_id)
+
+    def resolve_point(self, text: str, where: str = "") -> PointRef:
+        """``P@body``, or a bare ``P`` when every body carrying P moves alike there."""
+        if isinstance(text, PointRef):
+            return text
+        point, _, body = text.partition("@")
+        if point not in self.points:
+            raise KinematikaError("schema", f"unknown point {point!r} (points: "
+                                  f"{', '.join(self.points)})", where)
+        carriers = self.carriers(point)
+        if body:
+            if body not in self.bodies:
+                raise KinematikaError("schema", f"unknown body {body!r} (bodies: "
+                                      f"{', '.join(self.bodies)})", where)
+            if body not in carriers:
+                raise KinematikaError("schema", f"body {body!r} does not carry point {point!r} "
+                                      f"(carried by {', '.join(carriers)})", where)
+            return PointRef(point, body)
+        if len(carriers) > 1 and not self.share_motion(point, carriers):
+            choices = " or ".join(f"{point}@{b}" for b in carriers)
+            raise KinematikaError("schema", f"point {point!r} is carried by {', '.join(carriers)}, "
+                                  f"which move differently there: write {choices}", where)
+        return PointRef(point, carriers[0])
+
+    def share_motion(self, point: str, carriers: list[str]) -> bool:
+        """Carriers joined at `point` by revolute/spherical joints or welds move alike there."""
+        group = {carriers[0]}
+        changed = True
+        while changed:
+            changed = False
+            for j in self.joints:
+                linked = j.type == "weld" or (j.type in ("revolute", "spherical") and j.at == point)
+                if linked and (j.a in group) != (j.b in group) and {j.a, j.b} <= set(carriers):
+                    group |= {j.a, j.b}
+                    changed = True
+        return group == set(carriers)
 
     @property
     def moving_bodies(self) -> list[str]:

@@ -1,4 +1,4 @@
-"""The `kinematika` command: one subcommand per view of the one engine."""
+"""The typer application and what every command shares: options and error reporting."""
 from __future__ import annotations
 
 import json
@@ -9,7 +9,7 @@ from typing import Any, Callable, NoReturn
 
 import typer
 
-from .errors import KinematikaError
+from ..errors import KinematikaError
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
                   help="Kinematic analysis of mechanisms: velocities, accelerations, instant "
@@ -52,26 +52,3 @@ def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
         else:
             print(f"error: {message}", file=sys.stderr)
         raise typer.Exit(1)
-
-
-@app.command()
-def solve(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = SymbolicOpt) -> None:
-    """Velocity and acceleration of every point and body at the instant, and the answers."""
-    from .api import solve as solve_model
-    from .report.json_answer import solution_json
-
-    data = guarded(as_json, lambda: solution_json(solve_model(model, symbolic or None)))
-    if as_json:
-        print(json.dumps(data))
-    else:
-        from .report.tables import print_solution
-
-        print_solution(data)
-
-
-def main() -> None:
-    app()
-
-
-if __name__ == "__main__":
-    main()

@@ -1,0 +1,164 @@
+"""Building a model in Python: the same tree a model file holds, written with methods.
+
+    m = Mechanism("Slider-crank", parameters={"w": 10})
+    m.point("O", 0, 0); m.point("A", 0.1, 0); m.point("B", 0.4, 0)
+    m.body("ground", "O"); m.body("crank", "O", "A"); m.body("rod", "A", "B")
+    m.body("slider", "B")
+    m.revolute("ground", "crank", at="O"); m.revolute("crank", "rod", at="A")
+    m.revolute("rod", "slider", at="B"); m.prismatic("ground", "slider", along=(1, 0))
+    m.drive_omega("crank", "w")
+    sol = m.solve()
+    sol.velocity("B")
+
+The tree goes through the same checks as a file (`build_model`), so every error names the
+same place a file would.
+"""
+from __future__ import annotations
+
+from typing import Any, Optional, Sequence
+
+from .build import build_model
+from .model import Model
+
+Value = Any
+
+
+class Mechanism:
+    """A model under construction; `to_model()` checks it, `solve()` solves it."""
+
+    def __init__(self, name: str = "Mechanism", parameters: Optional[dict[str, Any]] = None,
+                 dimension: Optional[int] = None, frame: str = "ground") -> None:
+        self.tree: dict[str, Any] = {"name": name, "parameters": dict(parameters or {}),
+                                     "points": {}, "bodies": {}, "joints": [], "drivers": []}
+        if dimension is not None:
+            self.tree["dimension"] = dimension
+        if frame != "ground":
+            self.tree["frame"] = frame
+
+    # geometry ----------------------------------------------------------------------------
+    def parameter(self, name: str, value: Value = None, positive: bool = True) -> "Mechanism":
+        """A named value (None keeps it a symbol; `positive=False` for any real sign)."""
+        self.tree["parameters"][name] = value if positive else {"value": value, "positive": False}
+        return self
+
+    def point(self, name: str, *coords: Value) -> "Mechanism":
+        self.tree["points"][name] = list(coords)
+        return self
+
+    def points(self, **coords: Sequence[Value]) -> "Mechanism":
+        for name, xy in coords.items():
+            self.point(name, *xy)
+        return self
+
+    def body(self, name: str, *points: str, circle: Optional[tuple[Any, Value]] = None,
+             line: Optional[tuple[Any, Sequence[Value]]] = None,
+             disc: Optional[tuple[Any, Value, Sequence[Value]]] = None,
+             plane: Optional[tuple[Any, Sequence[Value]]] = None) -> "Mechanism":
+        """A rigid body carrying `points`; shapes as (center, radius), (through, direction),
+        (center, radius, axis) or (through, normal)."""
+        spec: dict[str, Any] = {"points": list(points)}
+        if circle:
+            spec["circle"] = {"center": _loc(circle[0]), "radius": circle[1]}
+        if line:
+            spec["line"] = {"through": _loc(line[0]), "direction": list(line[1])}
+        if disc:
+            spec["disc"] = {"center": _loc(disc[0]), "radius": disc[1], "axis": list(disc[2])}
+        if plane:
+            spec["plane"] = {"through": _loc(plane[0]), "normal": list(plane[1])}
+        self.tree["bodies"][name] = spec
+        return self
+
+    # joints ------------------------------------------------------------------------------
+    def joint(self, type: str, a: str, b: str, id: Optional[str] = None, **fields: Any) -> str:
+        """Add a joint of any type; returns its id (``j1``, ``j2``… unless given)."""
+        spec: dict[str, Any] = {"type": type, "bodies": [a, b]}
+        if id is not None:
+            spec["id"] = id
+        for key, value in fields.items():
+            if value is not None:
+                spec[key] = list(value) if isinstance(value, tuple) else value
+        self.tree["joints"].append(spec)
+        return id or f"j{len(self.tree['joints'])}"
+
+    def revolute(self, a: str, b: str, at: str, axis: Optional[Sequence[Value]] = None,
+                 id: Optional[str] = None) -> str:
+        return self.joint("revolute", a, b, id, at=at, axis=axis)
+
+    def prismatic(self, a: str, b: str, along: Sequence[Any], id: Optional[str] = None) -> str:
+        return self.joint("prismatic", a, b, id, along=along)
+
+    def slot(self, a: str, b: str, at: str, along: Sequence[Any], id: Optional[str] = None) -> str:
+        return self.joint("slot", a, b, id, at=at, along=along)
+
+    def wheel(self, a: str, b: str, at: str, along: Sequence[Any], id: Optional[str] = None) -> str:
+        return self.joint("wheel", a, b, id, at=at, along=along)
+
+    def rolling(self, a: str, b: str, at: Optional[str] = None, id: Optional[str] = None) -> str:
+        return self.joint("rolling", a, b, id, at=at)
+
+    def gear(self, a: str, b: str, internal: bool = False, id: Optional[str] = None) -> str:
+        return self.joint("gear", a, b, id, internal=internal)
+
+    def weld(self, a: str, b: str, id: Optional[str] = None) -> str:
+        return self.joint("weld", a, b, id)
+
+    def spherical(self, a: str, b: str, at: str, id: Optional[str] = None) -> str:
+        return self.joint("spherical", a, b, id, at=at)
+
+    def cylindrical(self, a: str, b: str, at: str, axis: Sequence[Value],
+                    id: Optional[str] = None) -> str:
+        return self.joint("cylindrical", a, b, id, at=at, axis=axis)
+
+    # drivers and questions ---------------------------------------------------------------
+    def drive_omega(self, body: str, value: Any, alpha: Any = 0,
+                    relative_to: Optional[str] = None) -> "Mechanism":
+        spec = {"omega": body, "value": _list(value), "alpha": _list(alpha)}
+        if relative_to:
+            spec["relative_to"] = relative_to
+        self.tree["drivers"].append(spec)
+        return self
+
+    def drive_joint(self, joint: str, rate: Value, accel: Value = 0) -> "Mechanism":
+        self.tree["drivers"].append({"joint": joint, "rate": rate, "accel": accel})
+        return self
+
+    def drive_velocity(self, point: str, value: Any, acceleration: Any = 0,
+                       along: Optional[Sequence[Value]] = None,
+                       relative_to: Optional[str] = None) -> "Mechanism":
+        spec: dict[str, Any] = {"velocity": point, "value": _list(value),
+                                "acceleration": _list(acceleration)}
+        if along is not None:
+            spec["along"] = list(along)
+        if relative_to:
+            spec["relative_to"] = relative_to
+        self.tree["drivers"].append(spec)
+        return self
+
+    def ask(self, **question: Any) -> "Mechanism":
+        """A question, as in a file: ``m.ask(velocity="B", relative_to="rocker")``."""
+        self.tree.setdefault("ask", []).append(question)
+        return self
+
+    # results -----------------------------------------------------------------------------
+    def to_model(self) -> Model:
+        return build_model(self.tree)
+
+    def solve(self, symbolic: Optional[bool] = None):
+        from ..api import solve
+
+        return solve(self.to_model(), symbolic)
+
+    def _repr_svg_(self) -> Optional[str]:  # Jupyter: a drawing when the draw view exists
+        try:
+            from ..draw.jupyter import model_svg
+        except ImportError:
+            return None
+        return model_svg(self.to_model())
+
+
+def _loc(value: Any) -> Any:
+    return value if isinstance(value, str) else list(value)
+
+
+def _list(value: Any) -> Any:
+    return list(value) if isinstance(value, tuple) else value
