@@ -1,0 +1,43 @@
+"""The table of instant centres (`kinematika centres`)."""
+from __future__ import annotations
+
+from typing import Any
+
+from rich.console import Console
+from rich.table import Table
+
+from ..errors import KinematikaError
+from ..questions.centres import all_centres
+from ..solution import Solution
+from .tables import show
+from .values import plain
+
+HOW = {"joint": "joint {}", "kennedy": "Kennedy via {}", "velocities": "from the velocities"}
+
+
+def centres_data(sol: Solution) -> dict[str, Any]:
+    if sol.space.dim != 2:
+        raise KinematikaError("schema", "instant centres are planar; ask for the screw `axis` of "
+                              "each body in 3D", "dimension")
+    rows = []
+    for c in all_centres(sol):
+        rows.append({"bodies": list(c.pair), **plain(c.value, sol.symbolic, sol.inst.scale),
+                     "how": c.how, "via": c.via})
+    return {"name": sol.model.name, "symbolic": sol.symbolic, "centres": rows}
+
+
+def print_centres(data: dict[str, Any], console: Console | None = None) -> None:
+    console = console or Console()
+    table = Table(title=f"Instant centres — {data['name']}", title_justify="left")
+    for col in ("bodies", "centre", "found"):
+        table.add_column(col)
+    for row in data["centres"]:
+        if row.get("rest"):
+            where = "no relative motion"
+        elif row.get("point") is None:
+            where = f"at infinity, direction {show(row['direction'])}"
+        else:
+            where = show(row["point"])
+        how = HOW[row["how"]].format(" and ".join(row["via"]))
+        table.add_row(" – ".join(row["bodies"]), where, how)
+    console.print(table)
