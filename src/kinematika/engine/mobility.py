@@ -6,6 +6,7 @@ length, rows equilibrated), so that ranks and the condition number compare like 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -65,37 +66,48 @@ def underdetermined_error(scaled: np.ndarray, is_driver: np.ndarray, labels: lis
     given = numeric_rank(driver_rows)
     free = _free_bodies(scaled, body_of)
     if given >= diag.dof > 0 and diag.conditions < given:
-        dependent = _dependent_drivers(scaled, is_driver, wheres)
+        dependent = _dependent_drivers(scaled, is_driver, labels, wheres)
+        verb = "depends" if len(dependent) == 1 else "depend"
         return KinematikaError(
             "singular",
             f"the drivers do not fix the motion in this configuration (a dead point): "
-            f"{', '.join(dependent) or 'the drivers'} depend on the joints here; the dimensionless "
+            f"{', '.join(dependent) or 'the drivers'} {verb} on the joints here; the dimensionless "
             f"constraint Jacobian has condition number {_fmt(diag.condition_number)} "
             f"(limit {SINGULAR_CONDITION:.0e})", "drivers")
     return KinematikaError(
         "mobility",
-        f"the mechanism has {diag.dof} degree{'s' if diag.dof != 1 else ''} of freedom but the "
-        f"drivers give {diag.conditions} independent condition{'s' if diag.conditions != 1 else ''}; "
-        f"left free: {', '.join(free) or 'some motion'}", "drivers")
+        f"the mechanism has {_plural(diag.dof, 'degree')} of freedom but the drivers give "
+        f"{_plural(diag.conditions, 'independent condition')}; left free: "
+        f"{', '.join(free) or 'some motion'}", "drivers")
 
 
 def conflict_error(residual: np.ndarray, labels: list[str], wheres: list[str],
                    is_driver: np.ndarray, diag: Diagnosis) -> KinematikaError:
-    """Some conditions cannot hold together: name them (drivers first)."""
-    bad = np.argsort(-np.abs(residual))
-    worst = [i for i in bad if abs(residual[i]) > 1e-6 * max(abs(residual).max(), 1e-300)]
-    names: list[str] = []
-    for i in worst:
-        text = f"{wheres[i]} ({labels[i]})" if is_driver[i] else labels[i]
-        if text not in names:
-            names.append(text)
-    shown = "; ".join(names[:4])
-    extra = diag.conditions - diag.dof
+    """Some conditions cannot hold together: name the drivers involved (else the joints)."""
+    order = np.argsort(-np.abs(residual))
+    worst = [int(i) for i in order if abs(residual[i]) > 1e-6 * max(abs(residual).max(), 1e-300)]
+    drivers = _unique(f"{wheres[i]} ({labels[i]})" for i in worst if is_driver[i])
+    joints = _unique(labels[i] for i in worst if not is_driver[i])
+    named = drivers or joints
+    given = int(is_driver.sum())
     return KinematikaError(
         "mobility",
-        f"the conditions conflict: the mechanism has {diag.dof} degree{'s' if diag.dof != 1 else ''} "
-        f"of freedom and the drivers give {diag.conditions} independent conditions that "
-        f"contradict each other or the joints ({extra} too many): {shown}", "drivers")
+        f"the drivers conflict with each other or with the joints: {'; '.join(named[:4])}. The "
+        f"mechanism has {_plural(diag.dof, 'degree')} of freedom; the drivers give "
+        f"{_plural(given, 'condition')}, {diag.conditions} independent of the joints, and their "
+        "values do not agree", "drivers")
+
+
+def _unique(items: Any) -> list[str]:
+    out: list[str] = []
+    for item in items:
+        if item not in out:
+            out.append(item)
+    return out
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}{'' if n == 1 else 's'}"
 
 
 def _free_bodies(scaled: np.ndarray, body_of: list[str]) -> list[str]:
@@ -112,7 +124,8 @@ def _free_bodies(scaled: np.ndarray, body_of: list[str]) -> list[str]:
     return out
 
 
-def _dependent_drivers(scaled: np.ndarray, is_driver: np.ndarray, wheres: list[str]) -> list[str]:
+def _dependent_drivers(scaled: np.ndarray, is_driver: np.ndarray, labels: list[str],
+                       wheres: list[str]) -> list[str]:
     """Drivers whose rows lie (numerically) in the span of the joints' rows."""
     joints = scaled[~is_driver]
     out: list[str] = []
@@ -123,8 +136,9 @@ def _dependent_drivers(scaled: np.ndarray, is_driver: np.ndarray, wheres: list[s
             gap = np.linalg.norm(joints.T @ coef - row)
         else:
             gap = np.linalg.norm(row)
-        if gap < 1e-8 * max(np.linalg.norm(row), 1e-300) and wheres[i] not in out:
-            out.append(wheres[i])
+        text = f"{wheres[i]} ({labels[i]})"
+        if gap < 1e-8 * max(np.linalg.norm(row), 1e-300) and text not in out:
+            out.append(text)
     return out
 
 
