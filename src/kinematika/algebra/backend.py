@@ -96,7 +96,16 @@ class Symbolic:
         return self.sp.Symbol(name, real=True)
 
     def sqrt(self, x: Any) -> Any:
-        return self.sp.sqrt(x)
+        """√x, with sin² + cos² = 1 and squares of the symbols recognised first."""
+        sp = self.sp
+        x = sp.sympify(x)
+        if x.has(sp.sin, sp.cos):
+            x = sp.trigsimp(x)
+        elif not x.is_number:
+            from .fields import canonical
+
+            x = canonical(x)
+        return sp.sqrt(x)
 
     def simplify(self, x: Any) -> Any:
         """A canonical, factored form of a rational expression in the symbols and atoms."""
