@@ -52,3 +52,12 @@ def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
         else:
             print(f"error: {message}", file=sys.stderr)
         raise typer.Exit(1)
+
+
+def respond(as_json: bool, compute: Callable[[], dict], show: Callable[[dict], None]) -> None:
+    """Compute a command's data (errors reported by `guarded`); print JSON or `show` it."""
+    data = guarded(as_json, compute)
+    if as_json:
+        print(json.dumps(data))
+    else:
+        show(data)

@@ -1,10 +1,9 @@
 """`kinematika centres`: every instant centre of every pair of bodies, and how it is found."""
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
-from .app import JsonOpt, ModelArg, SymbolicOpt, app, guarded
+from .app import JsonOpt, ModelArg, SymbolicOpt, app, respond
 
 
 @app.command()
@@ -13,8 +12,4 @@ def centres(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = Sy
     from ..api import solve as solve_model
     from ..report.centres_table import centres_data, print_centres
 
-    data = guarded(as_json, lambda: centres_data(solve_model(model, symbolic or None)))
-    if as_json:
-        print(json.dumps(data))
-    else:
-        print_centres(data)
+    respond(as_json, lambda: centres_data(solve_model(model, symbolic or None)), print_centres)

@@ -1,10 +1,9 @@
 """`kinematika solve`: the instant, as tables or as the contract's JSON."""
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
-from .app import JsonOpt, ModelArg, SymbolicOpt, app, guarded
+from .app import JsonOpt, ModelArg, SymbolicOpt, app, respond
 
 
 @app.command()
@@ -13,10 +12,9 @@ def solve(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = Symb
     from ..api import solve as solve_model
     from ..report.json_answer import solution_json
 
-    data = guarded(as_json, lambda: solution_json(solve_model(model, symbolic or None)))
-    if as_json:
-        print(json.dumps(data))
-    else:
+    def show(data: dict) -> None:
         from ..report.tables import print_solution
 
         print_solution(data)
+
+    respond(as_json, lambda: solution_json(solve_model(model, symbolic or None)), show)
