@@ -1,0 +1,109 @@
+"""What a sweep runs over: the driven joint, its increments, and how it relates to the drivers.
+
+The contract: `joint` names a driven joint (a joint driver's, or the revolute or prismatic
+joint of an `omega`/`velocity` driver's body to the frame); its coordinate (second body
+relative to the first) advances by `by` (degrees or length) in `steps` equal increments.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Optional
+
+import numpy as np
+
+from ..errors import KinematikaError
+from ..engine.instant import Instant
+from ..model.model import Driver, Joint, Model
+
+DEFAULT_BY = 360.0
+DEFAULT_STEPS = 360
+
+
+@dataclass
+class Plan:
+    joint: Joint
+    driver: Driver                 # the driver whose coordinate is swept
+    by: float                      # degrees (revolute) or length (prismatic)
+    steps: int
+
+    @property
+    def revolute(self) -> bool:
+        return self.joint.type == "revolute"
+
+    @property
+    def unit(self) -> str:
+        return "deg" if self.revolute else "length"
+
+    @cached_property
+    def coordinate(self) -> np.ndarray:
+        """The increments in the user's unit: 0, by/steps, ..., by (steps + 1 rows)."""
+        return np.linspace(0.0, self.by, self.steps + 1)
+
+    @cached_property
+    def increments(self) -> np.ndarray:
+        """The increments in radians (revolute) or length: what the geometry uses."""
+        return np.radians(self.coordinate) if self.revolute else self.coordinate
+
+
+def make_plan(inst: Instant, joint: Optional[str] = None, by: Optional[float] = None,
+              steps: Optional[int] = None) -> Plan:
+    """The sweep of the model: its `sweep:` section with the given options overriding it."""
+    model = inst.model
+    section = model.sweep
+    j, driver = swept_joint(model, joint if joint is not None else (section.joint if section else None))
+    if by is None:
+        if section is not None:
+            by = float(inst.value(section.by, "sweep.by"))
+        elif j.type == "revolute":
+            by = DEFAULT_BY
+        else:
+            raise KinematikaError("schema", f"joint {j.id!r} is prismatic: give the sweep's length "
+                                  "(`by` in the model's sweep section, or --by)", "sweep.by")
+    steps = steps if steps is not None else (section.steps if section else DEFAULT_STEPS)
+    if steps < 1:
+        raise KinematikaError("schema", "steps must be at least 1", "sweep.steps")
+    if not math.isfinite(by):
+        raise KinematikaError("schema", "by must be a finite number", "sweep.by")
+    return Plan(j, driver, float(by), int(steps))
+
+
+def swept_joint(model: Model, joint: Optional[str]) -> tuple[Joint, Driver]:
+    """The joint to sweep (the first driven one unless named) and the driver that drives it."""
+    driven = driven_joints(model)
+    if not driven:
+        raise KinematikaError("schema", "no driven joint to sweep: drive a joint's rate, or the omega "
+                              "or velocity of a body joined to the frame by a revolute or prismatic "
+                              "joint", "sweep.joint")
+    if joint is None:
+        jid, driver = next(iter(driven.items()))
+    else:
+        if joint not in {j.id for j in model.joints}:
+            raise KinematikaError("schema", f"unknown joint {joint!r} (joints: "
+                                  f"{', '.join(j.id for j in model.joints)})", "sweep.joint")
+        if joint not in driven:
+            raise KinematikaError("schema", f"joint {joint!r} is not driven; a sweep advances a driven "
+                                  f"joint: {', '.join(driven)}", "sweep.joint")
+        jid, driver = joint, driven[joint]
+    return model.joint(jid), driver
+
+
+def driven_joints(model: Model) -> dict[str, Driver]:
+    """Each driven joint (in driver order) with the driver that drives it."""
+    out: dict[str, Driver] = {}
+    frame = model.frame
+    for d in model.drivers:
+        if d.kind == "joint":
+            j = model.joint(d.joint)
+            if j.type in ("revolute", "prismatic"):
+                out.setdefault(j.id, d)
+            continue
+        body = d.body if d.kind == "omega" else d.point.body
+        if d.relative_to not in (None, frame) or body == frame:
+            continue
+        kinds = ("revolute",) if d.kind == "omega" else ("revolute", "prismatic")
+        for j in model.joints:
+            if {j.a, j.b} == {body, frame} and j.type in kinds:
+                out.setdefault(j.id, d)
+    return out

@@ -1,0 +1,178 @@
+"""`run_sweep`: the motion over a range of a driven joint's coordinate.
+
+The drawn instant is solved first by the engine (which checks the model). Then, when the
+mechanism is a driven crank or slider followed by dyads, every position is solved at once
+in closed form (`closed_form`); otherwise each position is assembled by Newton's method
+with continuation from the previous one and solved by the engine (`newton`).
+"""
+from __future__ import annotations
+
+from typing import Any, Callable, Optional
+
+import numpy as np
+
+from ..engine.instant import instantiate
+from ..engine.system import InstantSolver
+from ..errors import KinematikaError
+from ..model.model import Model, PointRef
+from .plan import Plan, make_plan, swept_joint
+from .result import QUANTITIES, SweepResult
+
+Progress = Callable[[int, int], None]
+
+
+def run_sweep(source: Any, joint: Optional[str] = None, by: Optional[float] = None,
+              steps: Optional[int] = None, skip_bad: bool = False,
+              progress: bool | Progress = False) -> SweepResult:
+    """Sweep `source` (a path, model tree, `Model` or `Mechanism`) over its driven joint.
+
+    `joint`, `by` (degrees or length), `steps` override the model's `sweep:` section. A row
+    that cannot be assembled or is singular raises `assembly`/`singular`, unless `skip_bad`,
+    which leaves it NaN. `progress`: True for a progress bar on a terminal, or a callable
+    `(done, total)`.
+    """
+    return Sweeper(source, joint).run(by, steps, skip_bad, progress)
+
+
+class Sweeper:
+    """A model analysed once for sweeps of one driven joint; `run` sweeps it (again and again).
+
+    The analysis solves the drawn instant with the engine and decomposes the mechanism into
+    Assur groups; a sweep then costs only the positions themselves.
+    """
+
+    def __init__(self, source: Any, joint: Optional[str] = None) -> None:
+        model = _as_model(source)
+        symbols = [n for n, p in model.parameters.items() if p.value is None]
+        if symbols:
+            raise KinematikaError("schema", f"a sweep needs numbers: give a value to "
+                                  f"{', '.join(symbols)}", "parameters")
+        self.model = model
+        self.inst = instantiate(model, False)
+        self.joint, self.driver = swept_joint(model, joint if joint is not None else
+                                              (model.sweep.joint if model.sweep else None))
+        self.solver = InstantSolver(self.inst)
+        self.drawn = self.solver.solve()
+        self.points = {k: tuple(float(c) for c in v) for k, v in self.inst.points.items()}
+        self.closed = self._closed_form()
+        self.motions = motion_classes(model)
+
+    def _closed_form(self) -> Any:
+        from ..structure.assur import assur_groups
+        from .closed_form import ClosedForm, applicable
+
+        groups = assur_groups(self.model)
+        if not applicable(self.model, groups, self.joint, self.driver):
+            return None
+        directions = {jid: tuple(float(c) for c in g.along) for jid, g in self.solver.geos.items()
+                      if g.along is not None}
+        return ClosedForm(self.model, self.points, directions, groups, self.joint, self.drawn)
+
+    @property
+    def method(self) -> str:
+        return "closed form" if self.closed is not None else "newton"
+
+    def run(self, by: Optional[float] = None, steps: Optional[int] = None, skip_bad: bool = False,
+            progress: bool | Progress = False) -> SweepResult:
+        plan = make_plan(self.inst, self.joint.id, by, steps)
+        if self.closed is None:
+            from .newton import newton_sweep
+
+            return newton_sweep(self, plan, skip_bad, progress)
+        from .closed_form import SINGULAR
+
+        out = self.closed.solve(plan.increments)
+        singular = out.assembled & (out.margin < SINGULAR)
+        ok = out.assembled & ~singular
+        if not skip_bad and not ok.all():
+            k = int(np.flatnonzero(~ok)[0])
+            raise bad_row(plan, k, "singular" if singular[k] else "assembly", out.worst[k])
+        bodies = {b: {"angle": t.theta if b == self.model.frame else np.degrees(t.theta),
+                      "omega": t.omega, "alpha": t.alpha} for b, t in out.tracks.items()}
+        points = {}
+        for name, body, refs in self.motions:
+            points[name, body] = out.tracks[body].point(self.points[name])
+        return self.result(plan, ok, bodies, points, dead_points(plan.coordinate, ok, singular))
+
+    def result(self, plan: Plan, ok: np.ndarray, bodies: dict, motions: dict,
+               dead: list[float]) -> SweepResult:
+        """A `SweepResult` from per-body arrays and per-motion-class point arrays (NaN if bad)."""
+        bad = None if ok.all() else ~ok
+        ordered = {b: _filled(bodies[b], bad) for b in self.model.bodies}
+        pts: dict[str, dict[str, np.ndarray]] = {}
+        for name, body, refs in self.motions:
+            arrays = {q: _rows(xy, bad) for q, xy in zip(QUANTITIES, motions[name, body])}
+            for ref in refs:
+                pts[ref] = arrays
+        pts = {str(r): pts[str(r)] for r in self.model.material_points()}
+        return SweepResult(plan.coordinate, plan.joint.id, ok, ordered, pts, dead,
+                           plan.unit, self.model.name, 2, self.method, self.model.frame)
+
+
+def _rows(xy: Any, bad: Optional[np.ndarray]) -> np.ndarray:
+    """(N, 2) rows from x and y over the rows (a (2, N) array is only transposed), NaN if bad."""
+    arr = xy.T if isinstance(xy, np.ndarray) else np.stack(xy, axis=1)
+    return arr if bad is None else np.where(bad[:, None], np.nan, arr)
+
+
+def _filled(values: dict[str, Any], bad: Optional[np.ndarray]) -> dict[str, np.ndarray]:
+    return {q: values[q] if bad is None else np.where(bad, np.nan, values[q])
+            for q in ("angle", "omega", "alpha")}
+
+
+def motion_classes(model: Model) -> list[tuple[str, str, list[str]]]:
+    """Material points that move alike by construction, as (point, body, ["P@body", ...]).
+
+    Bodies joined at P by a revolute (or welded) share P's motion: it is computed once.
+    """
+    out = []
+    for point in model.points:
+        carriers = model.carriers(point)
+        parent = {b: b for b in carriers}
+
+        def root(b: str) -> str:
+            while parent[b] != b:
+                b = parent[b]
+            return b
+
+        for j in model.joints:
+            if j.a in parent and j.b in parent and (j.type == "weld" or (j.type == "revolute" and j.at == point)):
+                parent[root(j.a)] = root(j.b)
+        classes: dict[str, list[str]] = {}
+        for b in carriers:
+            classes.setdefault(root(b), []).append(b)
+        for members in classes.values():
+            out.append((point, members[0], [str(PointRef(point, b)) for b in members]))
+    return out
+
+
+def _as_model(source: Any) -> Model:
+    if isinstance(source, Model):
+        return source
+    from ..api import as_model
+
+    return as_model(source)
+
+
+def bad_row(plan: Plan, k: int, kind: str, what: str = "") -> KinematikaError:
+    """The error for row k: `assembly` (cannot be assembled) or `singular` (dead point)."""
+    at = f"increment {k} ({plan.joint.id} = {plan.coordinate[k]:.6g} {plan.unit} from the drawn position)"
+    if kind == "singular":
+        message = (f"the configuration at {at} is singular for the drivers (a dead point): the "
+                   "dimensionless constraint Jacobian has condition number above 1e+10")
+    else:
+        message = f"the mechanism cannot be assembled at {at}"
+    if what:
+        message += f": {what} cannot close the loop" if kind == "assembly" else f" ({what})"
+    message += "; use --skip-bad to skip such positions"
+    return KinematikaError(kind, message, "sweep")
+
+
+def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray) -> list[float]:
+    """Where the motion stops being possible: singular rows and the last rows before a gap."""
+    out = [float(x) for x in coordinate[singular]]
+    edges = np.flatnonzero(ok[:-1] != ok[1:])
+    for k in edges:
+        good = k if ok[k] else k + 1
+        out.append(float(coordinate[good]))
+    return sorted(set(out))
