@@ -70,7 +70,7 @@ class _Builder:
                 positive = raw.positive
                 raw = None if raw.symbolic else raw.value
             out[name] = Parameter(name, None if raw is None else self.expr(raw, where), positive)
-        known = set(out)
+        known = set(out) | {"pi"}     # a parameter may use pi like any expression
         for p in out.values():
             if p.value is not None:
                 unknown = p.value.names() - known
