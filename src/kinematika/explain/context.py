@@ -1,0 +1,116 @@
+"""What every part of the builder reads from the solution: positions, motions, clean values.
+
+Nothing here solves: velocities, accelerations, ω and α all come from the `Solution`.
+Numbers are cleaned of round-off at the mechanism's own scale (as the JSON answer is),
+symbolic values are kept exact and simplified only when rendered.
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from ..algebra.vectors import sub
+from ..model.model import PointRef
+from ..report.values import number
+from ..solution import Solution
+from .document import Sym, Value
+
+
+class Ctx:
+    """The solution seen by the explanation builder."""
+
+    def __init__(self, sol: Solution) -> None:
+        self.sol = sol
+        self.model = sol.model
+        self.inst = sol.inst
+        self.space = sol.space
+        self.frame = sol.model.frame
+        self.symbolic = sol.symbolic
+        self.planar = sol.space.dim == 2
+        self._extra: dict[str, tuple] = {}
+
+    # positions -----------------------------------------------------------------------------
+    def pos(self, name: str) -> tuple:
+        return self._extra[name] if name in self._extra else self.inst.points[name]
+
+    def name_position(self, name: str, position: tuple) -> str:
+        """Give an unnamed location (a shape's centre) a name for the equations."""
+        self._extra.setdefault(name, position)
+        return name
+
+    def r(self, q: str, p: str) -> tuple:
+        return sub(self.pos(p), self.pos(q))
+
+    # motion ----------------------------------------------------------------------------------
+    def rel(self, body: Optional[str]) -> Optional[str]:
+        return None if body in (None, self.frame) else body
+
+    def vel(self, body: str, point: str, relative_to: Optional[str] = None) -> tuple:
+        m = self.sol.motion
+        return m.velocity(self.sol.state(body, self.rel(relative_to)), self.pos(point))
+
+    def acc(self, body: str, point: str, relative_to: Optional[str] = None) -> tuple:
+        m = self.sol.motion
+        return m.acceleration(self.sol.state(body, self.rel(relative_to)), self.pos(point))
+
+    def omega(self, body: str, relative_to: Optional[str] = None) -> Any:
+        return self.sol.omega(body, self.rel(relative_to))
+
+    def alpha(self, body: str, relative_to: Optional[str] = None) -> Any:
+        return self.sol.alpha(body, self.rel(relative_to))
+
+    # values ----------------------------------------------------------------------------------
+    def scale_of(self, unit: str) -> float:
+        sol = self.sol
+        return {"speed": sol.speed_scale(), "accel": sol.accel_scale(), "rate": sol.rate_scale(),
+                "rate2": sol.accel_scale() / self.inst.scale, "len": self.inst.scale}.get(unit, 1.0)
+
+    def clean(self, x: Any, unit: str) -> Any:
+        """Numbers rounded to 12 digits with round-off set to 0; symbols as they are."""
+        if isinstance(x, tuple):
+            return tuple(self.clean(c, unit) for c in x)
+        if self.symbolic:
+            return x
+        return number(x, self.scale_of(unit))
+
+    def value(self, x: Any, unit: str) -> Value:
+        return Value(self.clean(x, unit), unit)
+
+    def num(self, x: Any) -> Any:
+        """A value (scalar or vector) as floats: symbols at their sample values."""
+        if isinstance(x, tuple):
+            return tuple(self.inst.num(c) for c in x)
+        return self.inst.num(x)
+
+    def is_zero(self, x: Any, unit: str) -> bool:
+        return self.sol.is_zero(x, self.scale_of(unit))
+
+    # names -----------------------------------------------------------------------------------
+    def shared(self, point: str) -> bool:
+        """Whether every body carrying `point` moves alike there (a bare name is enough)."""
+        carriers = self.model.carriers(point)
+        return len(carriers) <= 1 or self.model.share_motion(point, carriers)
+
+    def point_label(self, point: str, body: str) -> str:
+        """`B` when B is one point of every body carrying it, else `B∈body`."""
+        if point in self.inst.points and self.shared(point) and body in self.model.carriers(point):
+            return point
+        return f"{point}∈{body}"
+
+    def ref(self, point: str, body: str) -> PointRef:
+        return PointRef(point, body)
+
+
+def segment(q: str, p: str) -> str:
+    """The name of the segment from q to p as the notes write it (AB; O2-A for long names)."""
+    return q + p if len(q) == 1 and len(p) == 1 else f"{q}-{p}"
+
+
+def omega_sym(body: str, relative_to: Optional[str] = None, vector: bool = False) -> Sym:
+    """ω of `body` (relative to another body when given); a vector in 3D."""
+    sub_ = body if relative_to is None else f"{body}/{relative_to}"
+    return Sym("ω", sub_, vector=vector)
+
+
+def alpha_sym(body: str, relative_to: Optional[str] = None, vector: bool = False) -> Sym:
+    sub_ = body if relative_to is None else f"{body}/{relative_to}"
+    return Sym("α", sub_, vector=vector)

@@ -1,0 +1,188 @@
+"""The explanation as data: sections of messages, vector equations and figures.
+
+The builder fills a `Document` with the solver's values and message keys; it holds no
+words of any language and no markup. Renderers (Markdown, HTML, LaTeX) translate the
+keys through a catalogue and format the values, so one document serves every language
+and format, and tests can check its equations on the raw values.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Optional, Union
+
+from ..model.model import PointRef
+
+
+@dataclass(frozen=True)
+class Sym:
+    """A named quantity as the notes write it: base letter, subscript, superscript.
+
+    `sub_key` names a catalogue message used as (part of) the subscript, for the words
+    that change with the course's language (drag: arr / ar; relative: rel / erl).
+    """
+
+    base: str
+    sub: str = ""
+    sup: str = ""
+    vector: bool = True
+    sub_key: str = ""
+
+
+@dataclass(frozen=True)
+class Value:
+    """A solver value (scalar or vector) with its kind of unit: len, speed, accel, rate, rate2."""
+
+    value: Any
+    unit: str = ""
+
+
+@dataclass
+class Msg:
+    """A catalogue message with its arguments (str, Sym, Value, Msg or lists of them)."""
+
+    key: str
+    args: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass
+class Inline:
+    """A short formula as a message argument: strings and symbols in a row."""
+
+    items: list
+
+
+def msg(key: str, **args: Any) -> Msg:
+    return Msg(key, args)
+
+
+@dataclass(frozen=True)
+class Ann:
+    """What is known of a term (seed 001): magnitude M or ?, direction D, ?, ⊥ or ∥ a line.
+
+    `code` is one of "M", "D", "?", "perp", "para", "zero"; `ref` names the line
+    (a segment "AB", or a guide `Msg`).
+    """
+
+    code: str
+    ref: Any = ""
+
+
+@dataclass
+class Term:
+    """One vector of an equation: its symbol, how it is formed, its value and annotations."""
+
+    sym: Sym
+    value: tuple
+    mag: Ann
+    dir: Ann
+    how: list = field(default_factory=list)     # inline items (str, Sym) e.g. [ω, " × AB"]
+    unknown: bool = False                        # solved in this step
+    kind: str = ""                               # point, rotation, normal, tangential, slide, coriolis, contact
+
+
+@dataclass
+class Equation:
+    """target = side₁ = side₂ …: each side a sum of terms, all at one level ('v' or 'a')."""
+
+    target: Term
+    sides: list[list[Term]]
+    level: str
+    point: Optional[PointRef] = None             # the material point the target is the motion of
+    relative_to: Optional[str] = None
+    figure: bool = True                          # draw its polygon (planar)
+    polygon: Optional["Figure"] = None           # filled in by the builder
+
+
+@dataclass
+class Derived:
+    """A value read off an equation (ω = v_BA / AB), with the solver's value."""
+
+    sym: Sym
+    how: list                                     # inline items
+    value: Value
+    body: str = ""
+    kind: str = ""                                # omega, alpha
+    sense: bool = False                           # say counter-clockwise / clockwise
+    source: Optional[Term] = None                 # the term it is read from: ω × r or α × r
+    arm: Optional[tuple] = None                   # r, with source.value = value k × r
+
+
+@dataclass
+class Table:
+    header: list[Any]
+    rows: list[list[Any]]
+
+
+@dataclass
+class Arrow:
+    start: tuple
+    end: tuple
+    label: Optional[Sym] = None
+    style: str = "known"                          # known, unknown, result, construction
+
+
+@dataclass
+class Figure:
+    """A drawing in model units: arrows, segments, circles and labelled points."""
+
+    caption: Msg
+    arrows: list[Arrow] = field(default_factory=list)
+    segments: list[tuple[tuple, tuple]] = field(default_factory=list)
+    circles: list[tuple[tuple, float]] = field(default_factory=list)
+    points: list[tuple[str, tuple, str]] = field(default_factory=list)   # (label, xy, style)
+    unit: str = ""                                 # unit of the scale bar (speed, accel, len)
+    sample: bool = False                           # drawn at sample values of the symbols
+
+
+@dataclass
+class CentreNote:
+    """How one instant centre follows (seed 002): at a joint, by Aronhold–Kennedy, or
+    from the directions of two velocities; `value` is the solver's centre."""
+
+    pair: tuple[str, str]
+    value: dict
+    how: str                                       # joint, kennedy, velocities
+    via: list = field(default_factory=list)        # joint id, or the two third bodies
+    lines: list = field(default_factory=list)      # kennedy: [(centre a–k, centre k–b), ...]
+    witnesses: list = field(default_factory=list)  # velocities: [(point, velocity), ...]
+    joint_type: str = ""                           # joint: the type of the joint
+
+
+Block = Union[Msg, Equation, Derived, Table, Figure, CentreNote, "Section"]
+
+
+@dataclass
+class Section:
+    title: Msg
+    blocks: list[Block] = field(default_factory=list)
+    level: int = 2
+
+    def add(self, *blocks: Block) -> "Section":
+        self.blocks.extend(blocks)
+        return self
+
+
+@dataclass
+class Document:
+    title: str
+    symbolic: bool
+    dimension: int
+    length_unit: str
+    sections: list[Section] = field(default_factory=list)
+
+    def blocks(self) -> list:
+        """Every block, nested sections included, in reading order."""
+        out: list = []
+
+        def walk(sec: Section) -> None:
+            for b in sec.blocks:
+                walk(b) if isinstance(b, Section) else out.append(b)
+        for s in self.sections:
+            walk(s)
+        return out
+
+    def equations(self) -> list[Equation]:
+        return [b for b in self.blocks() if isinstance(b, Equation)]
+
+    def derived(self) -> list[Derived]:
+        return [b for b in self.blocks() if isinstance(b, Derived)]

@@ -1,0 +1,97 @@
+"""The order of solution: inputs, then groups solved from the bodies already known.
+
+The dyad (Assur group) decomposition of `kinematika.structure.assur` is used when it is
+there and the mechanism decomposes; otherwise the order is read from the engine's
+block-triangular form of the velocity system (the same matrix the solver used), each new
+block's bodies forming one group.
+"""
+from __future__ import annotations
+
+import importlib
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..engine.linsolve import _blocks, independent_rows
+from ..solution import Solution
+
+
+@dataclass
+class Step:
+    """Bodies solved together from the `known` ones, through `joints` (and drivers)."""
+
+    kind: str                    # input, RRR, RRP, RPR, PRP, other
+    bodies: list[str]
+    joints: list[str]
+    known: list[str] = field(default_factory=list)
+    letters: str = ""
+    source: str = "assur"        # assur or blocks
+
+
+def solution_order(sol: Solution) -> list[Step]:
+    """The steps of the solution in order (Assur groups, else blocks of the system)."""
+    groups = _assur(sol)
+    if groups:
+        return [Step(g.kind, list(g.bodies), list(g.joints), list(g.known), g.letters) for g in groups]
+    return block_order(sol)
+
+
+def _assur(sol: Solution):
+    try:
+        module = importlib.import_module("kinematika.structure.assur")
+    except ImportError:
+        return None
+    try:
+        return module.assur_groups(sol.model)
+    except Exception:  # noqa: BLE001 - a decomposition that fails is no decomposition
+        return None
+
+
+def block_order(sol: Solution) -> list[Step]:
+    """Groups of bodies in the block-triangular order of the velocity system."""
+    solver, inst = sol.solver, sol.inst
+    rows = solver.rows_v
+    a, _ = solver.matrix(rows)
+    n = solver.unknowns.n
+    if n == 0:
+        return []
+    a_num = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), n)
+    scaled = solver.analysis.scaled.matrix if solver.analysis else a_num
+    chosen = independent_rows(scaled, n)
+    blocks = _blocks(a_num[chosen], chosen)
+    known = {sol.model.frame}
+    steps: list[Step] = []
+    for block_rows, cols in blocks:
+        bodies = [b for b in dict.fromkeys(solver.unknowns.body_of(c) for c in cols) if b not in known]
+        joints = _joints_of(sol, [rows[r] for r in block_rows])
+        if not bodies:
+            if steps:
+                steps[-1].joints += [j for j in joints if j not in steps[-1].joints]
+            continue
+        driven = any(rows[r].driver for r in block_rows)
+        kind = "input" if driven and len(bodies) == 1 and _grounded(sol, bodies[0]) else "other"
+        neighbours = _neighbours(sol, bodies, known)
+        steps.append(Step(kind, bodies, joints, neighbours, source="blocks"))
+        known.update(bodies)
+    return steps
+
+
+def _joints_of(sol: Solution, rows: list) -> list[str]:
+    ids = [j.id for j in sol.model.joints]
+    found = [r.label.partition(":")[0] for r in rows if not r.driver]
+    return [j for j in ids if j in found]
+
+
+def _grounded(sol: Solution, body: str) -> bool:
+    frame = sol.model.frame
+    return any({j.a, j.b} == {frame, body} and j.type in ("revolute", "prismatic")
+               for j in sol.model.joints)
+
+
+def _neighbours(sol: Solution, bodies: list[str], known: set[str]) -> list[str]:
+    out = []
+    for j in sol.model.joints:
+        for x, y in ((j.a, j.b), (j.b, j.a)):
+            if x in bodies and y in known and y not in out:
+                out.append(y)
+    return out

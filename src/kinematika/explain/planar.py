@@ -1,0 +1,311 @@
+"""Velocities and accelerations step by step, group by group, in the relative-motion method.
+
+Each step writes the vector equation of seed 001 for the point where the group closes,
+with the M/D/? of every term, reads the group's ω and α off the solved terms, and then
+carries the motion to the other points of its bodies (v_P = v_Q + ω × QP). Groups that
+are not dyads (gears, rolling pairs, triads) get their joint conditions, with the rolling
+contact written as no slip (velocities) and contact kept (accelerations).
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from ..model.model import Joint
+from .context import Ctx, alpha_sym, omega_sym, segment
+from .document import Ann, Derived, Equation, Msg, Section, Sym, Term, msg
+from .order import Step
+from .terms import point_term, rotation_terms, slide_terms, target_term
+
+LEVEL_UNIT = {"v": "rate", "a": "rate2"}
+
+
+class PlanarSteps:
+    """Builds the velocity or the acceleration section of a planar mechanism."""
+
+    def __init__(self, ctx: Ctx, steps: list[Step], level: str) -> None:
+        self.ctx = ctx
+        self.steps = steps
+        self.level = level
+        self.known = {ctx.frame}
+        self.done: set[str] = set()          # point labels already explained
+        self.used: set[str] = set()          # joints already written
+        self.contacts: dict[str, str] = {}   # joint id -> name of its contact point
+
+    def section(self) -> Section:
+        title = "sec.velocities" if self.level == "v" else "sec.accelerations"
+        sec = Section(msg(title))
+        sec.add(msg("v.intro" if self.level == "v" else "a.intro"))
+        for i, step in enumerate(self.steps, 1):
+            sub = Section(msg("step.title", n=str(i), kind=msg(f"kind.{step.kind}"),
+                              bodies=", ".join(step.bodies)), level=3)
+            sub.blocks = self.step(step)
+            sec.blocks.append(sub)
+            self.known.update(step.bodies)
+        return sec
+
+    # one step ----------------------------------------------------------------------------
+    def step(self, step: Step) -> list:
+        model = self.ctx.model
+        joints = {j.id: j for j in model.joints}
+        chain = [joints[j] for j in step.joints if j in joints]
+        builder = {"input": self.input, "RRR": self.rrr, "RRP": self.dyad_rp, "RPR": self.rpr,
+                   "PRP": self.prp}.get(step.kind)
+        blocks = self.drivers(step)
+        if builder is not None and step.source == "assur":
+            made = builder(step, chain)
+            if made is not None:
+                self.used.update(step.joints)
+                return blocks + made + self.carry(step)
+        return blocks + self.other(step) + self.carry(step)
+
+    def drivers(self, step: Step) -> list:
+        out = []
+        for d in self.ctx.model.drivers:
+            body = d.body if d.kind == "omega" else d.point.body if d.kind == "velocity" else None
+            joint = self.ctx.model.joint(d.joint) if d.kind == "joint" else None
+            if body in step.bodies or (joint is not None and {joint.a, joint.b} & set(step.bodies)):
+                out.append(driver_msg(d, self.level))
+        return out
+
+    def input(self, step: Step, chain: list[Joint]) -> Optional[list]:
+        body, j = step.bodies[0], chain[0]
+        out: list = [self.rate(body)]
+        if j.type == "revolute":
+            self.done.add(self.ctx.point_label(j.at, body))
+            out.append(msg("input.revolute", body=body, point=j.at))
+            return out
+        p = self.ctx.model.bodies[body].points[0]
+        side = [point_term(self.ctx, self.level, p, j.a if j.b == body else j.b)] + \
+            slide_terms(self.ctx, self.level, j.a if j.b == body else j.b, body, p, guide(j), j.id, False)
+        out += [msg("input.prismatic", body=body, joint=j.id), self.equation(self.target(p, body, True), [side], p, body)]
+        return out
+
+    def rrr(self, step: Step, chain: list[Joint]) -> Optional[list]:
+        (b1, b2), (j1, j2, j3) = step.bodies, chain
+        a, b, c = j1.at, j2.at, j3.at
+        side1 = [self.point(a, b1)] + rotation_terms(self.ctx, self.level, b1, a, b, True)
+        side2 = [self.point(c, b2)] + rotation_terms(self.ctx, self.level, b2, c, b, True)
+        eq = self.equation(self.target(b, b1, known=False), [side1, side2], b, b1)
+        return [eq, self.read(b1, side1[-1], a, b), self.read(b2, side2[-1], c, b)]
+
+    def dyad_rp(self, step: Step, chain: list[Joint]) -> Optional[list]:
+        """RRP: B, the pin of the two bodies, turns about A and slides along the guide."""
+        if len(chain) == 2:
+            return self.slot_dyad(step, chain)
+        (b1, b2), (j1, j2, j3) = step.bodies, chain
+        k2 = step.known[-1]
+        a, b = j1.at, j2.at
+        side1 = [self.point(a, b1)] + rotation_terms(self.ctx, self.level, b1, a, b, True)
+        side2 = [self.point(b, k2)] + slide_terms(self.ctx, self.level, k2, b2, b, guide(j3), j3.id)
+        eq = self.equation(self.target(b, b1, known=False), [side1, side2], b, b1)
+        return [eq, self.read(b1, side1[-1], a, b), self.same(b2, k2, j3)]
+
+    def rpr(self, step: Step, chain: list[Joint]) -> Optional[list]:
+        """RPR: the pin A of the slider, seen from the guide body turning about C."""
+        if len(chain) == 2:
+            return self.slot_dyad(step, chain)
+        (b1, b2), (j1, j2, j3) = step.bodies, chain
+        a, c = j1.at, j3.at
+        side = [self.point(c, b2)] + rotation_terms(self.ctx, self.level, b2, c, a, True) + \
+            slide_terms(self.ctx, self.level, b2, b1, a, guide(j2), j2.id)
+        eq = self.equation(self.target(a, b1, known=True), [side], a, b1)
+        rot = next(t for t in side if t.kind in ("rotation", "tangential"))
+        return [eq, self.read(b2, rot, c, a), self.same(b1, b2, j2)]
+
+    def prp(self, step: Step, chain: list[Joint]) -> Optional[list]:
+        if len(chain) == 2:
+            return self.slot_dyad(step, chain)
+        (b1, b2), (j1, j2, j3) = step.bodies, chain
+        k1, k2, b = step.known[0], step.known[-1], j2.at
+        side1 = [self.point(b, k1)] + slide_terms(self.ctx, self.level, k1, b1, b, guide(j1), j1.id)
+        side2 = [self.point(b, k2)] + slide_terms(self.ctx, self.level, k2, b2, b, guide(j3), j3.id)
+        eq = self.equation(self.target(b, b1, known=False), [side1, side2], b, b1)
+        return [eq, self.same(b1, k1, j1), self.same(b2, k2, j3)]
+
+    def slot_dyad(self, step: Step, chain: list[Joint]) -> Optional[list]:
+        """One body with a revolute or prismatic joint and a pin in a slot."""
+        body, (first, slot) = step.bodies[0], chain
+        k1 = step.known[0]
+        pin, holder = slot.at, slot.a if slot.b == body else slot.b
+        ctx, lv = self.ctx, self.level
+        if slot.a == body:                      # the slot is cut in the body: RPR
+            if first.type != "revolute":
+                return None
+            c = first.at
+            side = [self.point(c, body)] + rotation_terms(ctx, lv, body, c, pin, True) + \
+                slide_terms(ctx, lv, body, holder, pin, guide(slot), slot.id)
+            eq = self.equation(self.target(pin, holder, known=True), [side], pin, holder)
+            rot = next(t for t in side if t.kind in ("rotation", "tangential"))
+            return [eq, self.read(body, rot, c, pin)]
+        side2 = [self.point(pin, holder)] + slide_terms(ctx, lv, holder, body, pin, guide(slot), slot.id)
+        if first.type == "revolute":            # RRP: the pin turns about the body's pivot
+            c = first.at
+            side1 = [self.point(c, body)] + rotation_terms(ctx, lv, body, c, pin, True)
+            eq = self.equation(self.target(pin, body, known=False), [side1, side2], pin, body)
+            return [eq, self.read(body, side1[-1], c, pin)]
+        side1 = [self.point(pin, k1)] + slide_terms(ctx, lv, k1, body, pin, guide(first), first.id)
+        eq = self.equation(self.target(pin, body, known=False), [side1, side2], pin, body)
+        return [eq, self.same(body, k1, first)]
+
+    # groups that are not dyads ------------------------------------------------------------
+    def other(self, step: Step) -> list:
+        ctx, group = self.ctx, set(step.bodies)
+        scope = self.known | group
+        out: list = [msg("other.intro")]
+        for j in ctx.model.joints:
+            if j.id in self.used or not ({j.a, j.b} <= scope and {j.a, j.b} & group):
+                continue
+            self.used.add(j.id)
+            if j.type in ("rolling", "gear"):
+                out += self.rolling(j, group)
+            else:
+                out.append(condition_msg(j, self.level))
+        out += [self.rate(b) for b in step.bodies]
+        return out
+
+    def rolling(self, j: Joint, group: set[str]) -> list:
+        ctx, lv = self.ctx, self.level
+        contact = ctx.sol.solver.geos[j.id].contact
+        name = self.contact_name(j)
+        ctx.name_position(name, contact.point)
+        sides = [self.via(body, name, body in group) for body in (j.b, j.a)]
+        if lv == "v":
+            target = Term(Sym("v", name), ctx.clean(ctx.vel(j.b, name), "speed"), Ann("?"), Ann("?"),
+                          unknown=True, kind="point")
+            eq = Equation(target, sides, "v", ctx.ref(name, j.b))
+            return [msg("rolling.noslip", joint=j.id, a=j.a, b=j.b, point=name), eq]
+        rel = Term(Sym("a", f"{name}∈{j.b}/{j.a}"), ctx.clean(ctx.acc(j.b, name, j.a), "accel"),
+                   Ann("M"), Ann("para", msg("dir.normal")),
+                   [omega_sym(j.b, j.a), " × (", Sym("v", f"{name}∈{j.a}"), " − ", Sym("v", name, "g"), ")"],
+                   False, "contact")
+        target = Term(Sym("a", f"{name}∈{j.b}"), ctx.clean(ctx.acc(j.b, name), "accel"),
+                      Ann("?"), Ann("?"), unknown=True, kind="point")
+        eq = Equation(target, [sides[0], sides[1] + [rel]], "a", ctx.ref(name, j.b))
+        return [msg("rolling.kept", joint=j.id, a=j.a, b=j.b, point=name), eq]
+
+    def contact_name(self, j: Joint) -> str:
+        if j.id not in self.contacts:
+            rolling = [x.id for x in self.ctx.model.joints if x.type in ("rolling", "gear")]
+            base = "J" if len(rolling) == 1 else f"J{rolling.index(j.id) + 1}"
+            while base in self.ctx.model.points:
+                base += "'"
+            self.contacts[j.id] = base
+        return self.contacts[j.id]
+
+    def via(self, body: str, point: str, unknown: bool) -> list[Term]:
+        """The motion of `point` of `body` from a point of the body: v_Q + ω × QP."""
+        q = self.start(body)
+        if q is None:
+            return [point_term(self.ctx, self.level, point, body, True)]
+        return [self.point(q, body)] + rotation_terms(self.ctx, self.level, body, q, point, unknown)
+
+    def start(self, body: str) -> Optional[str]:
+        """The body's best-known point: a shape's centre, a pin shared with another body, any."""
+        ctx = self.ctx
+        if body == ctx.frame:
+            return None
+        for shape in ctx.model.bodies[body].shapes:
+            centre = getattr(shape, "center_point", None)
+            if centre:
+                return centre
+        points = ctx.model.bodies[body].points
+        pinned = [p for p in points if len(ctx.model.carriers(p)) > 1 and ctx.shared(p)]
+        return (pinned or points or [None])[0]
+
+    # pieces ------------------------------------------------------------------------------
+    def point(self, p: str, body: str) -> Term:
+        return point_term(self.ctx, self.level, p, body, True)
+
+    def target(self, p: str, body: str, known: bool) -> Term:
+        return target_term(self.ctx, self.level, p, body, known)
+
+    def equation(self, target: Term, sides: list[list[Term]], p: str, body: str) -> Equation:
+        self.done.add(self.ctx.point_label(p, body))
+        self.done.update(t.sym.sub for side in sides for t in side if t.kind == "point")
+        return Equation(target, sides, self.level, self.ctx.ref(p, body))
+
+    def read(self, body: str, term: Term, q: str, p: str) -> Derived:
+        """ω = v_PQ / QP (or α = aᵗ_PQ / QP), signed counter-clockwise."""
+        ctx = self.ctx
+        seg = segment(q, p)
+        if self.level == "v":
+            sym, value = omega_sym(body), ctx.omega(body)
+        else:
+            sym, value = alpha_sym(body), ctx.alpha(body)
+        return Derived(sym, [term.sym, f" / {seg}"], ctx.value(value, LEVEL_UNIT[self.level]), body,
+                       "omega" if self.level == "v" else "alpha", not ctx.symbolic, term,
+                       ctx.clean(ctx.r(q, p), "len"))
+
+    def same(self, body: str, other: str, j: Joint) -> Derived:
+        """Bodies joined by a prismatic pair share ω and α."""
+        ctx = self.ctx
+        if self.level == "v":
+            sym, ref, value = omega_sym(body), omega_sym(other), ctx.omega(body)
+        else:
+            sym, ref, value = alpha_sym(body), alpha_sym(other), ctx.alpha(body)
+        return Derived(sym, [ref, " ", msg("how.prismatic", joint=j.id)],
+                       ctx.value(value, LEVEL_UNIT[self.level]), body,
+                       "omega" if self.level == "v" else "alpha", not ctx.symbolic)
+
+    def rate(self, body: str) -> Derived:
+        ctx = self.ctx
+        if self.level == "v":
+            sym, value = omega_sym(body), ctx.omega(body)
+        else:
+            sym, value = alpha_sym(body), ctx.alpha(body)
+        return Derived(sym, [], ctx.value(value, LEVEL_UNIT[self.level]), body,
+                       "omega" if self.level == "v" else "alpha", not ctx.symbolic)
+
+    def carry(self, step: Step) -> list:
+        """The motion of the other points of the step's bodies: v_P = v_Q + ω × QP."""
+        ctx, out = self.ctx, []
+        for body in step.bodies:
+            q = self.anchor(body)
+            if ctx.point_label(q, body) not in self.done:
+                self.done.add(ctx.point_label(q, body))
+                unit = "speed" if self.level == "v" else "accel"
+                out.append(msg("carry.anchor", sym=Sym(self.level, ctx.point_label(q, body)),
+                               value=ctx.value(point_term(ctx, self.level, q, body).value, unit)))
+            for p in ctx.model.bodies[body].points:
+                label = ctx.point_label(p, body)
+                if label in self.done or p == q:
+                    continue
+                self.done.add(label)
+                side = [self.point(q, body)] + rotation_terms(ctx, self.level, body, q, p, False)
+                out.append(Equation(self.target(p, body, known=True), [side], self.level,
+                                    ctx.ref(p, body)))
+        return out
+
+    def anchor(self, body: str) -> str:
+        """A point of the body already explained (else the body's first point)."""
+        ctx = self.ctx
+        points = ctx.model.bodies[body].points
+        for p in points:
+            if ctx.point_label(p, body) in self.done:
+                return p
+        return points[0]
+
+
+def guide(j: Joint) -> Msg:
+    return msg("dir.guide", joint=j.id)
+
+
+def driver_msg(d, level: str) -> Msg:
+    """The known motion as the model states it."""
+    given = d.accel if level == "a" else d.value
+    text = given.text if hasattr(given, "text") else "(" + ", ".join(g.text for g in given) + ")"
+    if d.kind == "omega":
+        sym = omega_sym(d.body, d.relative_to) if level == "v" else alpha_sym(d.body, d.relative_to)
+        return msg("driver.omega", sym=sym, value=text)
+    if d.kind == "joint":
+        return msg("driver.joint" if level == "v" else "driver.joint_accel", joint=d.joint, value=text)
+    sym = Sym("v" if level == "v" else "a", str(d.point))
+    if d.along is not None:
+        along = "(" + ", ".join(e.text for e in d.along) + ")"
+        return msg("driver.along", sym=sym, value=text, along=along)
+    return msg("driver.velocity", sym=sym, value=text)
+
+
+def condition_msg(j: Joint, level: str) -> Msg:
+    """A joint's condition in words (for groups solved together)."""
+    return msg(f"cond.{j.type}", joint=j.id, a=j.a, b=j.b, point=j.at or "")

@@ -1,0 +1,19 @@
+"""Renderers of an explanation: Markdown, HTML and LaTeX."""
+from __future__ import annotations
+
+from ...errors import KinematikaError
+from ..catalogue import catalogue
+from ..document import Document
+from .base import Renderer
+from .html import HtmlRenderer
+from .latex import LatexRenderer
+from .markdown import MarkdownRenderer
+
+FORMATS: dict[str, type[Renderer]] = {"md": MarkdownRenderer, "html": HtmlRenderer, "tex": LatexRenderer}
+
+
+def render(doc: Document, lang: str = "en", fmt: str = "md") -> str:
+    """The document as text in `lang` (en, es, ca, eu) and `fmt` (md, html, tex)."""
+    if fmt not in FORMATS:
+        raise KinematikaError("schema", f"unknown format {fmt!r} (formats: {', '.join(FORMATS)})", "--format")
+    return FORMATS[fmt](doc, catalogue(lang)).render()

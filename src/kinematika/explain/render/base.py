@@ -1,0 +1,214 @@
+"""What the three renderers share: walking the document, filling messages, formatting
+numbers, formulas, units, symbols and the M/D/? annotations. A subclass gives the markup."""
+from __future__ import annotations
+
+from typing import Any
+
+from ..catalogue import Catalogue
+from .svg import sym_label
+from ..document import Ann, CentreNote, Derived, Document, Equation, Figure, Inline, Msg, Section, Sym, Table, Value
+
+UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "rate2": "rad/s²"}
+
+
+class Renderer:
+    """Turns a `Document` into text in one language; subclasses supply the markup."""
+
+    fmt = ""
+
+    def __init__(self, doc: Document, cat: Catalogue) -> None:
+        self.doc = doc
+        self.cat = cat
+
+    # to be given by each format -------------------------------------------------------------
+    def esc(self, text: str) -> str:
+        raise NotImplementedError
+
+    def sym(self, s: Sym) -> str:
+        raise NotImplementedError
+
+    def power(self, mantissa: str, exponent: int) -> str:
+        raise NotImplementedError
+
+    def formula(self, expr: Any) -> str:
+        raise NotImplementedError
+
+    def page(self, body: str) -> str:
+        raise NotImplementedError
+
+    def heading(self, level: int, text: str) -> str:
+        raise NotImplementedError
+
+    def para(self, text: str) -> str:
+        raise NotImplementedError
+
+    def equation(self, eq: Equation) -> str:
+        raise NotImplementedError
+
+    def table(self, header: list[str], rows: list[list[str]]) -> str:
+        raise NotImplementedError
+
+    def figure(self, fig: Figure) -> str:
+        raise NotImplementedError
+
+    def unit_text(self, unit: str) -> str:
+        return self.esc(unit)
+
+    # the walk ---------------------------------------------------------------------------------
+    def render(self) -> str:
+        body = [self.heading(1, self.esc(self.doc.title))]
+        body += [self.section(s) for s in self.doc.sections]
+        return self.page("\n".join(body))
+
+    def section(self, sec: Section) -> str:
+        parts = [self.heading(sec.level, self.message(sec.title))]
+        parts += [self.block(b) for b in sec.blocks]
+        return "\n".join(p for p in parts if p)
+
+    def block(self, b: Any) -> str:
+        if isinstance(b, Section):
+            return self.section(b)
+        if isinstance(b, Msg):
+            return self.para(self.message(b))
+        if isinstance(b, Equation):
+            out = self.equation(b)
+            return out + ("\n" + self.figure(b.polygon) if b.polygon is not None else "")
+        if isinstance(b, Derived):
+            return self.para(self.derived(b))
+        if isinstance(b, Table):
+            return self.table([self.arg(h) for h in b.header], [[self.cell(c) for c in r] for r in b.rows])
+        if isinstance(b, Figure):
+            return self.figure(b)
+        if isinstance(b, CentreNote):
+            return self.para(self.centre(b))
+        raise TypeError(f"unknown block {type(b).__name__}")
+
+    # messages and their arguments ----------------------------------------------------------
+    def message(self, m: Msg) -> str:
+        out = []
+        for kind, piece in self.cat.pieces(m.key):
+            out.append(self.esc(piece) if kind == "text" else self.arg(m.args.get(piece, "")))
+        return "".join(out)
+
+    def arg(self, x: Any) -> str:
+        if isinstance(x, str):
+            return self.esc(x)
+        if isinstance(x, Sym):
+            return self.sym(x)
+        if isinstance(x, Value):
+            return self.value(x)
+        if isinstance(x, Msg):
+            return self.message(x)
+        if isinstance(x, Inline):
+            return self.inline(x.items)
+        if isinstance(x, (list, tuple)):
+            return ", ".join(self.arg(i) for i in x)
+        return self.esc(str(x))
+
+    def inline(self, items: list) -> str:
+        return "".join(self.arg(i) for i in items)
+
+    def cell(self, c: Any) -> str:
+        """A table cell; answers come as [(label, Value), ...]."""
+        if isinstance(c, list) and c and isinstance(c[0], tuple):
+            return "; ".join((self.esc(label) + " = " if label else "") + self.value(v) for label, v in c)
+        return self.arg(c)
+
+    def svg_label(self, s: Sym) -> str:
+        return sym_label(s.base, self.sub_text(s), s.sup)
+
+    def sub_text(self, s: Sym) -> str:
+        """The subscript of a symbol: the catalogue's word (arr, rel, Cor) and the name."""
+        word = self.cat.get(s.sub_key) if s.sub_key else ""
+        return ",".join(p for p in (word, s.sub) if p)
+
+    # values ---------------------------------------------------------------------------------
+    def value(self, v: Value) -> str:
+        x = v.value
+        if x is None:
+            return "—"
+        if isinstance(x, bool):
+            return self.esc(str(x).lower())
+        if isinstance(x, tuple):
+            text = "(" + ", ".join(self.scalar(c) for c in x) + ")"
+        else:
+            text = self.scalar(x)
+        unit = self.unit(v.unit)
+        return text + (" " + unit if unit and not self.doc.symbolic else "")
+
+    def unit(self, kind: str) -> str:
+        if kind not in UNITS:
+            return ""
+        return self.unit_text(UNITS[kind].format(L=self.doc.length_unit))
+
+    def scalar(self, x: Any) -> str:
+        if isinstance(x, (int, float)):
+            return self.number(float(x))
+        return self.formula(x)
+
+    def number(self, x: float) -> str:
+        if x == 0:
+            return "0"
+        text = f"{x:.4g}"
+        if "e" in text:
+            mantissa, exponent = text.split("e")
+            return self.power(mantissa.replace("-", "−"), int(exponent))
+        return text.replace("-", "−")
+
+    # annotations and derived values ------------------------------------------------------------
+    def ann(self, a: Ann) -> str:
+        if a.code in ("M", "D", "?"):
+            if a.code == "M" and a.ref:
+                return self.inline(a.ref)
+            return self.esc(a.code)
+        sign = {"perp": "⊥ ", "para": "∥ "}[a.code]
+        return self.esc(sign) + self.arg(a.ref)
+
+    def derived(self, d: Derived) -> str:
+        parts = [self.sym(d.sym)]
+        if d.how:
+            parts.append(self.inline(d.how))
+        parts.append(self.value(d.value))
+        text = " = ".join(parts)
+        if d.sense and isinstance(d.value.value, float) and d.value.value != 0:
+            text += " (" + self.message(Msg("sense.ccw" if d.value.value > 0 else "sense.cw")) + ")"
+        return text
+
+    def term_line(self, t) -> str:
+        """`v_BA = ω × AB = (…) m/s` for the list of an equation's terms."""
+        parts = [self.sym(t.sym)]
+        if t.how:
+            parts.append(self.inline(t.how))
+        parts.append(self.value(Value(t.value, _unit(t.sym))))
+        return " = ".join(parts)
+
+    # instant centres ------------------------------------------------------------------------
+    def centre(self, c: CentreNote) -> str:
+        a, b = c.pair
+        name = Sym("I", f"{a},{b}", vector=False)
+        if c.how == "joint":
+            why = Msg(f"centre.joint.{c.joint_type}", {"joint": c.via[0]})
+        elif c.how == "kennedy":
+            k1, k2 = c.via
+            why = Msg("centre.kennedy", {"k1": k1, "k2": k2,
+                                         "l1": [Sym("I", f"{a},{k1}", vector=False), Sym("I", f"{k1},{b}", vector=False)],
+                                         "l2": [Sym("I", f"{a},{k2}", vector=False), Sym("I", f"{k2},{b}", vector=False)]})
+        elif len(c.witnesses) == 2:
+            (p, vp), (q, vq) = c.witnesses
+            why = Msg("centre.velocities", {"p": p, "q": q, "vp": Value(vp, "speed"), "vq": Value(vq, "speed"),
+                                            "frame": a})
+        else:
+            why = Msg("centre.omega", {"frame": a})
+        return self.message(Msg("centre.line", {"centre": name, "a": a, "b": b, "why": why,
+                                                "where": self.where(c.value)}))
+
+    def where(self, value: dict) -> Msg:
+        if value.get("rest"):
+            return Msg("centre.rest")
+        if value.get("point") is None:
+            return Msg("centre.infinity", {"direction": Value(value["direction"], "")})
+        return Msg("centre.at", {"point": Value(value["point"], "len")})
+
+
+def _unit(s: Sym) -> str:
+    return {"v": "speed", "a": "accel", "ω": "rate", "α": "rate2", "ω×ω": "rate2"}.get(s.base, "")

@@ -1,0 +1,88 @@
+"""One self-contained HTML page: inline CSS, inline SVG figures, formulas in plain HTML and
+Unicode (no script, no web font, nothing fetched), so a student can open it offline."""
+from __future__ import annotations
+
+from html import escape
+from typing import Any
+
+from ..document import Equation, Figure, Msg, Sym
+from .base import Renderer
+from .svg import svg
+from .unicode import unicode_formula
+
+CSS = """
+body{font-family:"DejaVu Serif",Georgia,serif;max-width:60rem;margin:2rem auto;padding:0 1rem;
+color:#1b1b1b;line-height:1.45}
+h1{font-size:1.7rem;border-bottom:2px solid #1f5fa8}h2{font-size:1.35rem;margin-top:2rem;
+border-bottom:1px solid #ccc}h3{font-size:1.1rem;margin-top:1.4rem}
+table{border-collapse:collapse;margin:.6rem 0}td,th{padding:.15rem .6rem;text-align:left}
+table.grid td,table.grid th{border:1px solid #ccc}table.grid th{background:#f1f4f9}
+table.eq{font-size:1.12rem;margin:.8rem 0 .3rem}table.eq td{text-align:center;padding:0 .25rem}
+table.eq tr.ann td{font-size:.78rem;color:#555}table.eq td.unknown{color:#c0392b}
+ul.terms{margin:.1rem 0 .6rem;font-size:.95rem}figure{margin:.4rem 0 1rem}
+figcaption{font-size:.85rem;color:#555}b.v{font-style:italic}
+p.sample{font-size:.85rem;color:#8a5a00}
+"""
+
+
+class HtmlRenderer(Renderer):
+    fmt = "html"
+
+    def esc(self, text: str) -> str:
+        return escape(text, quote=False)
+
+    def sym(self, s: Sym) -> str:
+        base = f'<b class="v">{escape(s.base)}</b>' if s.vector else f"<i>{escape(s.base)}</i>"
+        sub = self.sub_text(s)
+        return base + (f"<sub>{escape(sub)}</sub>" if sub else "") + (f"<sup>{escape(s.sup)}</sup>" if s.sup else "")
+
+    def power(self, mantissa: str, exponent: int) -> str:
+        return f"{mantissa}×10<sup>{str(exponent).replace('-', '−')}</sup>"
+
+    def formula(self, expr: Any) -> str:
+        return escape(unicode_formula(expr))
+
+    def page(self, body: str) -> str:
+        return (f'<!DOCTYPE html>\n<html lang="{self.cat.lang}">\n<head>\n<meta charset="utf-8">\n'
+                f"<title>{escape(self.doc.title)}</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
+                f"{body}\n</body>\n</html>\n")
+
+    def heading(self, level: int, text: str) -> str:
+        return f"<h{level}>{text}</h{level}>"
+
+    def para(self, text: str) -> str:
+        return f"<p>{text}</p>"
+
+    def equation(self, eq: Equation) -> str:
+        cells = [(self.ann(eq.target.mag), self.sym(eq.target.sym), self.ann(eq.target.dir), eq.target.unknown)]
+        for side in eq.sides:
+            cells.append(("", "=", "", False))
+            for i, t in enumerate(side):
+                if i:
+                    cells.append(("", "+", "", False))
+                cells.append((self.ann(t.mag), self.sym(t.sym), self.ann(t.dir), t.unknown))
+        rows = []
+        for k in range(3):
+            tds = "".join(f'<td class="unknown">{c[k]}</td>' if c[3] and k == 1 else f"<td>{c[k]}</td>"
+                          for c in cells)
+            rows.append(f'<tr class="{"ann" if k != 1 else "terms"}">{tds}</tr>')
+        terms = [eq.target] + [t for side in eq.sides for t in side]
+        items = "".join(f"<li>{self.term_line(t)}</li>" for t in terms)
+        return f'<table class="eq">{"".join(rows)}</table><ul class="terms">{items}</ul>'
+
+    def table(self, header: list[str], rows: list[list[str]]) -> str:
+        head = "".join(f"<th>{h}</th>" for h in header)
+        body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in r) + "</tr>" for r in rows)
+        return f'<table class="grid"><tr>{head}</tr>{body}</table>'
+
+    def figure(self, fig: Figure) -> str:
+        caption = self.message(fig.caption)
+        if fig.sample:
+            caption += " " + self.message(Msg("fig.sample"))
+        drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "")
+        return f"<figure>{drawing}<figcaption>{caption}</figcaption></figure>"
+
+    def message_key(self, key: str) -> str:
+        from ..document import Msg
+
+        return self.message(Msg(key))

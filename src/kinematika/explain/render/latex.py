@@ -1,0 +1,140 @@
+"""A LaTeX article (pdflatex, amsmath, TikZ): equations with the M/D/? of each term set
+over and under it, polygons as TikZ pictures to scale."""
+from __future__ import annotations
+
+from typing import Any
+
+from ..document import Equation, Figure, Msg, Sym
+from .base import Renderer
+from .svg import COLOURS, bounds, nice
+from .unicode import latex_formula
+
+TEXT = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
+        "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
+MATH = {"ω": r"\omega", "α": r"\alpha", "ρ": r"\rho", "⊥": r"\perp", "∥": r"\parallel", "∈": r"\in",
+        "×": r"\times", "·": r"\cdot", "−": "-", "²": "^2", "³": "^3", "–": "\\text{--}", "→": r"\to",
+        "—": "\\text{---}"}
+HEAD = r"""\documentclass[11pt]{article}
+\usepackage[utf8]{inputenc}
+\usepackage[T1]{fontenc}
+\usepackage{amsmath,amssymb}
+\usepackage{tikz}
+\usepackage[margin=2cm]{geometry}
+\setlength{\parindent}{0pt}\setlength{\parskip}{0.5em}
+"""
+
+
+def tex_text(text: str) -> str:
+    """Plain text for LaTeX: specials escaped, math characters set in math mode."""
+    out = []
+    for ch in text:
+        if ch in TEXT:
+            out.append(TEXT[ch])
+        elif ch in MATH:
+            out.append(f"${MATH[ch]}$")
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
+def tex_math_text(text: str) -> str:
+    """A name inside math: \\mathrm{...} with the math characters as commands."""
+    parts, buf = [], ""
+    for ch in text:
+        if ch in MATH:
+            if buf:
+                parts.append(r"\mathrm{" + tex_text(buf) + "}")
+                buf = ""
+            parts.append(MATH[ch] + " ")
+        else:
+            buf += ch
+    if buf:
+        parts.append(r"\mathrm{" + tex_text(buf) + "}")
+    return "".join(parts)
+
+
+class LatexRenderer(Renderer):
+    fmt = "tex"
+
+    def esc(self, text: str) -> str:
+        return tex_text(text)
+
+    def math_sym(self, s: Sym) -> str:
+        base = MATH.get(s.base, s.base) if s.base != "ω×ω" else r"\omega\times\omega"
+        base = rf"\vec{{{base}}}" if s.vector else base
+        sub = self.sub_text(s)
+        return base + (f"_{{{tex_math_text(sub)}}}" if sub else "") + (f"^{{{tex_math_text(s.sup)}}}" if s.sup else "")
+
+    def sym(self, s: Sym) -> str:
+        return f"${self.math_sym(s)}$"
+
+    def power(self, mantissa: str, exponent: int) -> str:
+        return f"${mantissa.replace('−', '-')}\\times 10^{{{exponent}}}$"
+
+    def formula(self, expr: Any) -> str:
+        return f"${latex_formula(expr)}$"
+
+    def page(self, body: str) -> str:
+        return HEAD + "\\title{" + tex_text(self.doc.title) + "}\\date{}\n\\begin{document}\n" + body + \
+            "\n\\end{document}\n"
+
+    def heading(self, level: int, text: str) -> str:
+        if level == 1:
+            return r"\maketitle"
+        command = {2: "section*", 3: "subsection*"}.get(level, "subsubsection*")
+        return f"\\{command}{{{text}}}"
+
+    def para(self, text: str) -> str:
+        return text + "\n"
+
+    def equation(self, eq: Equation) -> str:
+        def cell(t) -> str:
+            mag, dir_ = self.ann(t.mag), self.ann(t.dir)
+            core = self.math_sym(t.sym)
+            if t.unknown:
+                core = r"\color{red!60!black}" + core
+            return rf"\underset{{\text{{\scriptsize {dir_}}}}}{{\overset{{\text{{\scriptsize {mag}}}}}{{{core}}}}}"
+        parts = [cell(eq.target)]
+        for side in eq.sides:
+            parts.append("=")
+            parts.append(" + ".join(cell(t) for t in side))
+        terms = [eq.target] + [t for side in eq.sides for t in side]
+        items = "\n".join(rf"\item {self.term_line(t)}" for t in terms)
+        return "\\[ " + " ".join(parts) + " \\]\n\\begin{itemize}\n" + items + "\n\\end{itemize}\n"
+
+    def table(self, header: list[str], rows: list[list[str]]) -> str:
+        spec = "l" * len(header)
+        lines = [" & ".join(header) + r" \\ \hline"] + [" & ".join(r) + r" \\" for r in rows]
+        return "\\begin{tabular}{" + spec + "}\n\\hline\n" + "\n".join(lines) + "\n\\hline\n\\end{tabular}\n"
+
+    def figure(self, fig: Figure) -> str:
+        caption = self.message(fig.caption)
+        if fig.sample:
+            caption += " " + self.message(Msg("fig.sample"))
+        return tikz(fig, self.math_sym, self.unit(fig.unit) if not self.doc.symbolic else "", caption)
+
+
+def tikz(fig: Figure, label, unit: str, caption: str) -> str:
+    """The figure as a TikZ picture about 9 cm wide, with a scale bar."""
+    x0, y0, x1, y1 = bounds(fig)
+    k = min(9.0 / max(x1 - x0, 1e-300), 7.0 / max(y1 - y0, 1e-300))
+
+    def at(p: tuple) -> str:
+        return f"({(p[0] - x0) * k:.3f},{(p[1] - y0) * k:.3f})"
+
+    colours = "".join(rf"\definecolor{{k{n}}}{{HTML}}{{{c[1:]}}}" for n, c in COLOURS.items())
+    out = [colours, r"\begin{center}\begin{tikzpicture}[>=stealth]"]
+    for c, r in fig.circles:
+        out.append(rf"\draw[gray] {at(c)} circle ({r * k:.3f});")
+    for p, q in fig.segments:
+        out.append(rf"\draw[line width=1.6pt, gray!70!black] {at(p)} -- {at(q)};")
+    for a in fig.arrows:
+        node = "" if a.label is None else rf" node[midway, {'right' if a.style == 'result' else 'left'}] {{${label(a.label)}$}}"
+        width = "thick" if a.style == "result" else "semithick"
+        out.append(rf"\draw[->, {width}, color=k{a.style}] {at(a.start)} -- {at(a.end)}{node};")
+    for name, p, style in fig.points:
+        out.append(rf"\fill {at(p)} circle (1.5pt) node[above right] {{{tex_text(name)}}};")
+    length = nice(2.0 / k)
+    out.append(rf"\draw[|-|] (0,-0.6) -- ({length * k:.3f},-0.6) node[right] {{{tex_text(f'{length:g}')} {unit}}};")
+    out.append(r"\end{tikzpicture}\\[2pt]{\small " + caption + r"}\end{center}")
+    return "\n".join(out) + "\n"

@@ -1,0 +1,24 @@
+"""Exact values as readable one-line Unicode formulas (HTML, Markdown) or LaTeX."""
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from ...report.values import tidy
+
+SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def unicode_formula(expr: Any) -> str:
+    """`sqrt(2)*r**2*w/4` as `√2·r²·w/4`."""
+    text = str(tidy(expr))
+    text = re.sub(r"\*\*(-?\d+)", lambda m: m.group(1).translate(SUPERSCRIPTS), text)
+    text = re.sub(r"sqrt\((\w+)\)", r"√\1", text)
+    text = text.replace("sqrt(", "√(").replace("**", "^").replace("*", "·")
+    return text.replace(" - ", " − ").replace("-", "−")
+
+
+def latex_formula(expr: Any) -> str:
+    import sympy
+
+    return sympy.latex(tidy(expr))

@@ -1,0 +1,174 @@
+"""Bodies carried by bodies (seed 000, the fan): absolute rates, point fields, composition.
+
+    ω = ω₁ + ω₂                      α = α₁ + α₂ + ω₁ × ω₂
+    v_P = v_C + ω × CP               a_P = a_C + α × CP + ω × (ω × CP)
+    v_P = v_drag + v_rel             a_P = a_drag + a_rel + 2 ω₁ × v_rel
+
+Each body is taken from the body it is jointed to (its carrier), in order from the frame.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from ..model.model import PointRef, Question
+from ..questions.decompose import decompose
+from .context import Ctx, alpha_sym, omega_sym
+from .document import Ann, Derived, Equation, Inline, Section, Sym, Term, Value, msg
+from .terms import KNOWN, point_term, rotation_terms, target_term
+
+
+def carriers(ctx: Ctx) -> list[tuple[str, Optional[str], Optional[str]]]:
+    """(body, carrier, joint point) from the frame outwards along the joints."""
+    known, out = {ctx.frame}, []
+    progress = True
+    while progress:
+        progress = False
+        for j in ctx.model.joints:
+            for parent, child in ((j.a, j.b), (j.b, j.a)):
+                if parent in known and child not in known:
+                    known.add(child)
+                    out.append((child, parent, j.at))
+                    progress = True
+    out += [(b, None, None) for b in ctx.model.moving_bodies if b not in known]
+    return out
+
+
+def rates_section(ctx: Ctx) -> Section:
+    """ω = ω_carrier + ω_rel and α = α_carrier + α_rel + ω_carrier × ω_rel, body by body."""
+    sec = Section(msg("sec.rates"))
+    vec = not ctx.planar
+    w1, w2 = omega_sym("1", vector=vec), omega_sym("2", vector=vec)
+    a1, a2 = alpha_sym("1", vector=vec), alpha_sym("2", vector=vec)
+    sec.add(msg("rates.intro", w=Inline([omega_sym("", vector=vec), " = ", w1, " + ", w2]),
+                a=Inline([alpha_sym("", vector=vec), " = ", a1, " + ", a2, " + ", w1, " × ", w2])))
+    for body, parent, _ in carriers(ctx):
+        if parent is None:
+            continue
+        if parent == ctx.frame:
+            sec.add(*[Derived(sym(body, vector=vec), [], Value(_rot(ctx, get(body), unit), unit), body, kind)
+                      for sym, get, unit, kind in ((omega_sym, ctx.omega, "rate", "omega"),
+                                                   (alpha_sym, ctx.alpha, "rate2", "alpha"))])
+            continue
+        for level in ("w", "al"):
+            sec.blocks.append(_rate_equation(ctx, body, parent, level, vec))
+    return sec
+
+
+def _rate_equation(ctx: Ctx, body: str, parent: str, level: str, vec: bool) -> Equation:
+    sp = ctx.space
+    unit = "rate" if level == "w" else "rate2"
+    sym = omega_sym if level == "w" else alpha_sym
+    get = ctx.omega if level == "w" else ctx.alpha
+
+    def term(b: str, rel: Optional[str], value, how=None) -> Term:
+        return Term(sym(b, rel, vector=vec), _rot(ctx, value, unit), *KNOWN, how or [], kind="rate")
+
+    target = term(body, None, get(body))
+    side = [term(parent, None, get(parent)), term(body, parent, get(body, parent))]
+    if level == "al":
+        w1, w2 = ctx.omega(parent), ctx.omega(body, parent)
+        cross = sp.cross_ww(w1, w2)
+        side.append(Term(Sym("ω×ω", f"{parent},{body}", vector=vec), _rot(ctx, cross, unit), *KNOWN,
+                         [omega_sym(parent, vector=vec), " × ", omega_sym(body, parent, vector=vec)],
+                         kind="rate"))
+    return Equation(target, [side], level, figure=False)
+
+
+def _rot(ctx: Ctx, value, unit: str):
+    """An angular quantity as a cleaned tuple (3D) or scalar (planar)."""
+    comps = ctx.clean(tuple(ctx.space.rot_components(value)), unit)
+    return comps[0] if ctx.planar else comps
+
+
+def fields_section(ctx: Ctx, level: str) -> Section:
+    """Every point from its body's joint point: v_P = v_C + ω × CP (a_P likewise)."""
+    sec = Section(msg("sec.velocities" if level == "v" else "sec.accelerations"))
+    sec.add(msg("fields.intro"))
+    done: set[str] = set()
+    for body, parent, at in carriers(ctx):
+        points = ctx.model.bodies[body].points
+        anchor = at if at in points else points[0]
+        done.add(ctx.point_label(anchor, body))
+        for p in points:
+            label = ctx.point_label(p, body)
+            if label in done:
+                continue
+            done.add(label)
+            side = [point_term(ctx, level, anchor, body)] + rotation_terms(ctx, level, body, anchor, p, False)
+            sec.blocks.append(Equation(target_term(ctx, level, p, body, True), [side], level,
+                                       PointRef(p, body), figure=ctx.planar))
+    return sec
+
+
+def composition_section(ctx: Ctx, pairs: list[tuple[PointRef, str, Optional[str]]]) -> Optional[Section]:
+    """Drag + relative (+ Coriolis) for each (point, moving frame, its pivot point)."""
+    if not pairs:
+        return None
+    sec = Section(msg("sec.composition"))
+    w = omega_sym("", vector=not ctx.planar)
+    sec.add(msg("composition.intro", cor=Inline(["2 ", w, " × ", Sym("v", "", sub_key="sub.rel")])))
+    for ref, moving, pivot in pairs:
+        sec.blocks += composition(ctx, ref, moving, pivot)
+    return sec
+
+
+def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> list:
+    """The decomposition of the engine's `decompose`, with its drag and relative parts expanded."""
+    q = Question("decompose", -1, ref, {}, None, moving)
+    parts = decompose(ctx.sol, q)
+    p, body = ref.point, ref.body
+    out: list = [msg("composition.point", point=p, body=body, frame=moving)]
+    for level, key in (("v", "velocity"), ("a", "acceleration")):
+        unit = "speed" if level == "v" else "accel"
+        got = parts[key]
+        drag = Term(Sym(level, p, sub_key="sub.drag"), ctx.clean(got["drag"], unit), *KNOWN, kind="drag")
+        rel = Term(Sym(level, p, sub_key="sub.rel"), ctx.clean(got["relative"], unit), *KNOWN, kind="relative")
+        side = [drag, rel]
+        if level == "a":
+            side.append(Term(Sym("a", p, sub_key="sub.cor"), ctx.clean(got["coriolis"], unit), Ann("M"),
+                             Ann("D"), ["2 ", omega_sym(moving, vector=not ctx.planar), " × ",
+                                        Sym("v", p, sub_key="sub.rel")], kind="coriolis"))
+        target = Term(Sym(level, p), ctx.clean(got["total"], unit), *KNOWN, kind="point")
+        out.append(Equation(target, [side], level, ref, figure=ctx.planar))
+        anchor = pivot if pivot is not None else ctx.model.bodies[moving].points[0]
+        drag_eq = Equation(_relabel(point_term(ctx, level, p, moving), drag.sym),
+                           [[point_term(ctx, level, anchor, moving)] +
+                            rotation_terms(ctx, level, moving, anchor, p, False)],
+                           level, PointRef(p, moving), figure=False)
+        rel_target = _relabel(target_term(ctx, level, p, body, True, moving), rel.sym)
+        rel_side = [target_term(ctx, level, anchor, body, True, moving)] + \
+            rotation_terms(ctx, level, body, anchor, p, False, moving)
+        rel_eq = Equation(rel_target, [rel_side], level, PointRef(p, body), moving, figure=False)
+        out += [msg("composition.drag"), drag_eq, msg("composition.relative"), rel_eq]
+    return out
+
+
+def _relabel(term: Term, sym: Sym) -> Term:
+    term.sym = sym
+    return term
+
+
+def composition_pairs(ctx: Ctx) -> list[tuple[PointRef, str, Optional[str]]]:
+    """The model's `decompose` questions, and in 3D each point carried by a moving body."""
+    out = []
+    for q in ctx.model.questions:
+        if q.kind == "decompose" and q.relative_to in (None, ctx.frame):
+            ref = ctx.model.resolve_point(q.target) if isinstance(q.target, str) else q.target
+            out.append((ref, q.moving, _pivot(ctx, ref.body, q.moving)))
+    if ctx.planar:
+        return out
+    for body, parent, at in carriers(ctx):
+        if parent in (None, ctx.frame):
+            continue
+        for p in ctx.model.bodies[body].points:
+            ref = PointRef(p, body)
+            if p != at and all(r != ref or m != parent for r, m, _ in out):
+                out.append((ref, parent, at))
+    return out
+
+
+def _pivot(ctx: Ctx, body: str, moving: str) -> Optional[str]:
+    for j in ctx.model.joints:
+        if {j.a, j.b} == {body, moving} and j.at:
+            return j.at
+    return None

@@ -1,0 +1,87 @@
+"""The terms of the relative-motion method (seed 001), each with its value and annotations.
+
+    v_P = v_Q + ω × QP                       a_P = a_Q + aⁿ_PQ + aᵗ_PQ
+    v_P = v_P∈F + v_rel                      a_P = a_P∈F + a_rel + 2 ω_F × v_rel
+
+A term knows its magnitude (M) and direction (D) or not (?): rotation terms are ⊥ QP,
+normal terms ∥ PQ, relative terms ∥ the guide, Coriolis terms ⊥ the guide.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from ..algebra.vectors import scale
+from .context import Ctx, alpha_sym, omega_sym, segment
+from .document import Ann, Msg, Sym, Term
+
+UNIT = {"v": "speed", "a": "accel"}
+KNOWN = (Ann("M"), Ann("D"))
+UNKNOWN = (Ann("?"), Ann("?"))
+
+
+def point_term(ctx: Ctx, level: str, point: str, body: str, known: bool = True) -> Term:
+    """v_P (or a_P) of the material point P of `body`."""
+    value = ctx.vel(body, point) if level == "v" else ctx.acc(body, point)
+    mag, dir_ = KNOWN if known else UNKNOWN
+    return Term(Sym(level, ctx.point_label(point, body)), ctx.clean(value, UNIT[level]), mag, dir_,
+                unknown=not known, kind="point")
+
+
+def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: bool,
+                   relative_to: str | None = None) -> list[Term]:
+    """ω × QP at the velocity level; ω × (ω × QP) and α × QP at the acceleration level."""
+    sp, r, seg, back = ctx.space, ctx.r(q, p), segment(q, p), segment(p, q)
+    w = omega_sym(body, relative_to, vector=not ctx.planar)
+    name = segment(p, q) + (f"/{relative_to}" if relative_to else "")
+    if level == "v":
+        value = sp.cross(ctx.omega(body, relative_to), r)
+        mag = Ann("?") if unknown else Ann("M", [w, f"·{seg}"])
+        return [Term(Sym("v", name), ctx.clean(value, "speed"), mag, Ann("perp", seg),
+                     [w, f" × {seg}"], unknown, "rotation")]
+    om = ctx.omega(body, relative_to)
+    normal = sp.cross(om, sp.cross(om, r))
+    tangential = sp.cross(ctx.alpha(body, relative_to), r)
+    al = alpha_sym(body, relative_to, vector=not ctx.planar)
+    how_n = [w, " × (", w, f" × {seg})"] if not ctx.planar else [w, f"² · {back}"]
+    return [Term(Sym("a", name, "n"), ctx.clean(normal, "accel"), Ann("M", [w, f"²·{seg}"]),
+                 Ann("para", back), how_n, False, "normal"),
+            Term(Sym("a", name, "t"), ctx.clean(tangential, "accel"),
+                 Ann("?") if unknown else Ann("M", [al, f"·{seg}"]), Ann("perp", seg),
+                 [al, f" × {seg}"], unknown, "tangential")]
+
+
+def slide_terms(ctx: Ctx, level: str, frame: str, moving: str, point: str, guide: Msg,
+                tag: str, unknown: bool = True) -> list[Term]:
+    """The motion of P∈moving relative to `frame` along a guide; with Coriolis for accelerations."""
+    v_rel = ctx.vel(moving, point, frame)
+    rel = Sym("v", tag, sub_key="sub.rel")
+    mag = Ann("?") if unknown else Ann("M")
+    if level == "v":
+        return [Term(rel, ctx.clean(v_rel, "speed"), mag, Ann("para", guide), [], unknown, "slide")]
+    a_rel = ctx.acc(moving, point, frame)
+    w = omega_sym(frame, vector=not ctx.planar)
+    coriolis = scale(2, ctx.space.cross(ctx.omega(frame), v_rel))
+    return [Term(Sym("a", tag, sub_key="sub.rel"), ctx.clean(a_rel, "accel"), mag,
+                 Ann("para", guide), [], unknown, "slide"),
+            Term(Sym("a", tag, sub_key="sub.cor"), ctx.clean(coriolis, "accel"),
+                 Ann("M", ["2·", w, "·", rel]), Ann("perp", guide), ["2 ", w, " × ", rel], False,
+                 "coriolis")]
+
+
+def target_term(ctx: Ctx, level: str, point: str, body: str, known: bool,
+                relative_to: str | None = None) -> Term:
+    """The left-hand side v_P: known before the step, or solved by it."""
+    t = point_term(ctx, level, point, body, known)
+    if relative_to is not None:
+        value = ctx.vel(body, point, relative_to) if level == "v" else ctx.acc(body, point, relative_to)
+        t.value = ctx.clean(value, UNIT[level])
+        t.sym = Sym(level, f"{t.sym.sub}/{relative_to}")
+    return t
+
+
+def total(terms: list[Term]) -> tuple[Any, ...]:
+    """The sum of the terms' values (for checks)."""
+    out = None
+    for t in terms:
+        out = t.value if out is None else tuple(a + b for a, b in zip(out, t.value))
+    return out
