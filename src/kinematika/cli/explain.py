@@ -1,0 +1,32 @@
+"""`kinematika explain`: the step-by-step solution in the notes' method, in four languages."""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from .app import ModelArg, SymbolicOpt, app, guarded
+
+LangOpt = typer.Option("en", "--lang", help="language: en, es, ca or eu")
+FormatOpt = typer.Option("md", "--format", help="md, html (one self-contained page) or tex")
+OutOpt = typer.Option(None, "-o", "--output", help="write to FILE instead of standard output")
+UnitOpt = typer.Option("m", "--length-unit", help="the name of the model's length unit")
+
+
+@app.command()
+def explain(model: Path = ModelArg, lang: str = LangOpt, fmt: str = FormatOpt,
+            output: Optional[Path] = OutOpt, symbolic: bool = SymbolicOpt,
+            length_unit: str = UnitOpt) -> None:
+    """Step-by-step solution: structure, vector equations with M/D/?, polygons, centres."""
+    from ..explain import explain as write
+
+    text = guarded(False, lambda: write(model, lang, fmt, symbolic or None, length_unit))
+    if output is None:
+        typer.echo(text, nl=False)
+        return
+    try:
+        output.write_text(text, encoding="utf-8")
+    except OSError as err:
+        typer.echo(f"error (output): cannot write {output}: {err.strerror}", err=True)
+        raise typer.Exit(2)
