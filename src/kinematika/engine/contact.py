@@ -143,15 +143,21 @@ def _circle_line(inst: Instant, joint: Joint, c: Circle, cbody: str, ln: Line, l
 
 def _disc_plane(inst: Instant, joint: Joint, dc: Disc, dbody: str, pl: Plane,
                 pbody: str) -> tuple[float, Contact]:
-    """J = C + R w, w = −m/|m|, m = n − (n·a)a: the rim point lowest towards the plane."""
+    """J = C + R w, w = −σ m/|m|, m = n − (n·a)a: the rim point nearest the plane.
+
+    σ = ±1 is the side of the plane the centre is on, so that a disc below a plane (a wheel
+    against a ceiling) touches with its highest point whichever way the normal is written.
+    """
     a, n = dc.axis, pl.normal
     m = sub(n, scale(dot(n, a), a))
     if inst.num(dot(m, m)) < 1e-18:
         raise KinematikaError("geometry", f"disc {dbody!r} lies flat on the plane of {pbody!r}: it "
                               "touches along its face, not at a point", joint.where)
     bk = inst.backend
+    side = 1 if inst.num(dot(sub(dc.center, pl.through), n)) >= 0 else -1
     norm_m = bk.sqrt(dot(m, m))
-    w = tuple(bk.simplify(-x / norm_m) for x in m)
+    w = tuple(bk.simplify(-side * x / norm_m) for x in m)
+    reach = side * dc.radius                   # J = C − reach m/|m|
     point = add(dc.center, scale(dc.radius, w))
     gap = inst.num(dot(sub(point, pl.through), n))
 
@@ -172,7 +178,7 @@ def _disc_plane(inst: Instant, joint: Joint, dc: Disc, dbody: str, pl: Plane,
     def jdot(motion: Motion) -> tuple:
         m1, _ = derivatives(motion)
         w1 = sub(scale(1 / norm_m, m1), scale(dot(m, m1) / norm_m ** 3, m))
-        return sub(motion.point_velocity(dbody, dc.center), scale(dc.radius, w1))
+        return sub(motion.point_velocity(dbody, dc.center), scale(reach, w1))
 
     def jddot(motion: Motion) -> tuple:
         m1, m2 = derivatives(motion)
@@ -181,7 +187,8 @@ def _disc_plane(inst: Instant, joint: Joint, dc: Disc, dbody: str, pl: Plane,
         w2 = sub(w2, scale(2 * mm1 / norm_m ** 3, m1))
         w2 = sub(w2, scale((dot(m1, m1) + dot(m, m2)) / norm_m ** 3, m))
         w2 = add(w2, scale(3 * mm1 ** 2 / norm_m ** 5, m))
-        return sub(motion.point_acceleration(dbody, dc.center), scale(dc.radius, w2))
+        return sub(motion.point_acceleration(dbody, dc.center), scale(reach, w2))
 
-    normal = n if pbody == joint.a else scale(-1, n)
+    towards_disc = scale(side, n)
+    normal = towards_disc if pbody == joint.a else scale(-1, towards_disc)
     return gap, Contact(joint, point, "disc-plane", jdot, jddot, normal)
