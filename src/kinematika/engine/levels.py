@@ -41,6 +41,23 @@ class Unknowns:
         return self.bodies[column // self.width]
 
 
+class KnownTerms(Unknowns):
+    """The unknowns taken as zero: rows then hold only their known terms (their right sides).
+
+    The acceleration system shares the velocity system's matrix, so only its known terms
+    (centripetal, Coriolis, drivers' accelerations) need computing.
+    """
+
+    def __init__(self, unknowns: Unknowns) -> None:
+        self.__dict__.update(unknowns.__dict__)
+
+    def rot(self, body: str) -> Any:
+        return self.space.rot_zero()
+
+    def trans(self, body: str) -> tuple:
+        return self.space.zero()
+
+
 class Level:
     """Shared by both levels: the unknowns, the space and the reference point."""
 

@@ -9,13 +9,14 @@ is solved with the SVD computed for the analysis.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Sequence
 
 import numpy as np
 
 from ..errors import KinematikaError
-from .mobility import SINGULAR_CONDITION, Diagnosis, conflict_error, diagnose, scale_system, underdetermined_error
+from .mobility import (SINGULAR_CONDITION, Diagnosis, Scaled, conflict_error, diagnose, scale_system,
+                       underdetermined_error)
 
 
 @dataclass
@@ -52,19 +53,93 @@ def analyse(a: np.ndarray, is_driver: np.ndarray, translation_columns: np.ndarra
     return Analysis(scaled, u, s, vt, diag, rows, blocks)
 
 
-def solve_numeric(an: Analysis, b: np.ndarray, labels: list[str], wheres: list[str],
+def solve_numeric(an: Analysis | SparseAnalysis, b: np.ndarray, labels: list[str], wheres: list[str],
                   is_driver: np.ndarray, check: bool = True) -> np.ndarray:
-    """Least squares with the analysis' SVD; a residual means conflicting conditions."""
+    """Least squares with the analysis' SVD (or sparse LU); a residual means conflicting conditions."""
     bs = b * an.scaled.row_scale
-    y = (an.u.T @ bs) / an.s
-    xs = an.vt.T @ y
+    if isinstance(an, SparseAnalysis):
+        xs = an.lu.solve(bs)
+    else:
+        y = (an.u.T @ bs) / an.s
+        xs = an.vt.T @ y
     if check:
         residual = an.scaled.matrix @ xs - bs
-        size = max(np.abs(bs).max(initial=0.0), np.abs(an.scaled.matrix).max(initial=0.0) *
-                   np.abs(xs).max(initial=0.0), 1e-300)
+        top = 1.0 if isinstance(an, SparseAnalysis) else np.abs(an.scaled.matrix).max(initial=0.0)
+        size = max(np.abs(bs).max(initial=0.0), top * np.abs(xs).max(initial=0.0), 1e-300)
         if np.abs(residual).max(initial=0.0) > 1e-7 * size:
             raise conflict_error(residual, labels, wheres, is_driver, an.diagnosis)
     return xs * an.scaled.col_scale
+
+
+# large systems: sparse LU ------------------------------------------------------------------
+LARGE = 150      # unknowns above which a numeric system is kept sparse
+DENSE_DIAGNOSIS = 3000   # largest system whose failure is explained with the dense SVD
+
+
+@dataclass
+class SparseAnalysis:
+    """A square, nonsingular, dimensionless sparse system factorised by LU."""
+
+    scaled: Scaled                      # .matrix is a scipy.sparse CSC matrix
+    lu: Any
+    diagnosis: Diagnosis
+    rows: list[int]
+    blocks: list = field(default_factory=list)
+
+    @property
+    def condition_number(self) -> float:
+        return self.diagnosis.condition_number
+
+
+def sparse_matrix(rows: list[Any], n: int) -> Any:
+    """The rows' coefficients as a scipy.sparse CSR matrix (numeric rows only)."""
+    from scipy.sparse import csr_matrix
+
+    indptr, cols, vals = [0], [], []
+    for row in rows:
+        terms = row.lin.terms
+        cols += terms.keys()
+        vals += terms.values()
+        indptr.append(len(cols))
+    return csr_matrix((np.array(vals, dtype=float), np.array(cols, dtype=np.int64), np.array(indptr)),
+                      shape=(len(rows), n))
+
+
+def analyse_sparse(a: Any, is_driver: np.ndarray, translation_columns: np.ndarray, length: float,
+                   labels: list[str], wheres: list[str], body_of: list[str]) -> Analysis | SparseAnalysis:
+    """`analyse` for a large sparse system: scaling, sparse LU and a 1-norm condition estimate.
+
+    A square system whose LU succeeds with condition number below the limit is solved by the
+    LU. Any other (redundant rows, rank deficiency, a dead point) goes to the dense analysis,
+    which gives the same answers and messages as for a small system.
+    """
+    from scipy.sparse import diags
+    from scipy.sparse.linalg import LinearOperator, onenormest, splu
+
+    m, n = a.shape
+    col = np.where(translation_columns, length, 1.0)
+    scaled = a @ diags(col)
+    norms = abs(scaled).max(axis=1).toarray().ravel()
+    row = np.where(norms > 0, 1.0 / np.where(norms > 0, norms, 1.0), 1.0)
+    scaled = (diags(row) @ scaled).tocsc()
+    if m == n:
+        try:
+            lu = splu(scaled)
+        except RuntimeError:
+            lu = None
+        if lu is not None:
+            inverse = LinearOperator((n, n), matvec=lu.solve, rmatvec=lambda x: lu.solve(x, trans="T"),
+                                     dtype=float)
+            cond = float(onenormest(scaled) * onenormest(inverse))
+            if np.isfinite(cond) and cond <= SINGULAR_CONDITION:
+                given = int(is_driver.sum())
+                return SparseAnalysis(Scaled(scaled, row, col), lu, Diagnosis(n, given, given, cond),
+                                      list(range(m)))
+    if n > DENSE_DIAGNOSIS:
+        raise KinematikaError("singular", f"the {m}×{n} constraint Jacobian is singular or not square "
+                              "(sparse LU); the system is too large to say which conditions are "
+                              "missing or dependent", "drivers")
+    return analyse(a.toarray(), is_driver, translation_columns, length, labels, wheres, body_of)
 
 
 def solve_symbolic(an: Analysis, a_sym: Sequence[Sequence[Any]], b_sym: Sequence[Any],

@@ -16,21 +16,26 @@ from ..model.model import Model
 from .drivers import driver_rows
 from .instant import Instant, instantiate
 from .joints import JointGeometry, Row, joint_geometry, joint_rows
-from .levels import AccelerationLevel, Level, Unknowns, VelocityLevel
+from .levels import AccelerationLevel, KnownTerms, Level, Unknowns, VelocityLevel
 from .motion import BodyState, Motion
-from .linsolve import Analysis, analyse, solve_numeric, solve_symbolic
+from .linsolve import (LARGE, Analysis, SparseAnalysis, analyse, analyse_sparse, solve_numeric,
+                       solve_symbolic, sparse_matrix)
 
 
 class InstantSolver:
-    """Builds and solves the velocity and acceleration systems of one instant."""
+    """Builds and solves the velocity and acceleration systems of one instant.
 
-    def __init__(self, inst: Instant) -> None:
+    `geos` may give the joints' geometry already evaluated (a sweep moves it with the bodies).
+    """
+
+    def __init__(self, inst: Instant, geos: dict[str, JointGeometry] | None = None) -> None:
         self.inst = inst
         model = inst.model
         self.space = inst.space
         self.unknowns = Unknowns(model.moving_bodies, self.space)
-        self.geos: dict[str, JointGeometry] = {j.id: joint_geometry(inst, j) for j in model.joints}
-        self.analysis: Analysis | None = None
+        self.geos: dict[str, JointGeometry] = (geos if geos is not None else
+                                               {j.id: joint_geometry(inst, j) for j in model.joints})
+        self.analysis: Analysis | SparseAnalysis | None = None
         self.rows_v: list[Row] = []
 
     def rows(self, lv: Level) -> list[Row]:
@@ -51,35 +56,52 @@ class InstantSolver:
             b.append(-row.lin.const)
         return a, b
 
-    def solve(self) -> Motion:
+    def prepare(self) -> None:
+        """The velocity rows, their matrix and its analysis: what both levels share.
+
+        Large numeric systems are kept sparse and factorised by sparse LU; small ones (and
+        symbolic ones) are analysed densely with the SVD.
+        """
         inst, u = self.inst, self.unknowns
         rows_v = self.rows(VelocityLevel(u, inst.ref))
         self.rows_v = rows_v
-        a, b_v = self.matrix(rows_v)
-        a_num = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), u.n)
-        labels = [r.label for r in rows_v]
-        wheres = [r.where for r in rows_v]
-        is_driver = np.array([r.driver for r in rows_v], dtype=bool)
+        self.labels = [r.label for r in rows_v]
+        self.wheres = [r.where for r in rows_v]
+        self.is_driver = np.array([r.driver for r in rows_v], dtype=bool)
         translation = np.array([(c % u.width) >= self.space.rot for c in range(u.n)], dtype=bool)
         body_of = [u.body_of(c) for c in range(u.n)]
-        an = analyse(a_num, is_driver, translation, inst.scale, labels, wheres, body_of,
-                     want_blocks=inst.symbolic)
-        self.analysis = an
+        if not inst.symbolic and u.n > LARGE:
+            self.a_sym, self.b_v = None, [-r.lin.const for r in rows_v]
+            self.a_num = sparse_matrix(rows_v, u.n)
+            self.analysis = analyse_sparse(self.a_num, self.is_driver, translation, inst.scale,
+                                           self.labels, self.wheres, body_of)
+            return
+        a, self.b_v = self.matrix(rows_v)
+        self.a_sym = a
+        self.a_num = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), u.n)
+        self.analysis = analyse(self.a_num, self.is_driver, translation, inst.scale, self.labels,
+                                self.wheres, body_of, want_blocks=inst.symbolic)
 
-        def solve(b: list[Any], check: bool) -> list[Any]:
-            b_num = np.array([inst.num(v) for v in b], dtype=float)
-            x_num = solve_numeric(an, b_num, labels, wheres, is_driver, check)
-            if not inst.symbolic:
-                return [float(v) for v in x_num]
-            exact = solve_symbolic(an, a, b, a_num)
-            inst.backend.check_against(exact, x_num, inst.probe)
-            return exact
+    def solve_linear(self, b: list[Any], check: bool = True) -> list[Any]:
+        """The solution of A x = b with the analysed matrix (exact for a symbolic instant)."""
+        inst = self.inst
+        b_num = np.array([inst.num(v) for v in b], dtype=float)
+        x_num = solve_numeric(self.analysis, b_num, self.labels, self.wheres, self.is_driver, check)
+        if not inst.symbolic:
+            return x_num.tolist()
+        exact = solve_symbolic(self.analysis, self.a_sym, b, self.a_num)
+        inst.backend.check_against(exact, x_num, inst.probe)
+        return exact
 
-        x_v = solve(b_v, check=True)
+    def solve(self) -> Motion:
+        inst, u = self.inst, self.unknowns
+        if self.analysis is None:
+            self.prepare()
+        x_v = self.solve_linear(self.b_v, check=True)
         velocities = self._motion(x_v, None)
-        rows_a = self.rows(AccelerationLevel(u, inst.ref, velocities))
-        _, b_a = self.matrix(rows_a)
-        x_a = solve(b_a, check=False)
+        # the acceleration system has the same matrix: only its known terms are built
+        rows_a = self.rows(AccelerationLevel(KnownTerms(u), inst.ref, velocities))
+        x_a = self.solve_linear([-r.lin.const for r in rows_a], check=False)
         return self._motion(x_v, x_a)
 
     def _motion(self, x_v: list[Any], x_a: list[Any] | None) -> Motion:
