@@ -1,0 +1,47 @@
+"""Figures of kinematika's results: the mechanism at an instant with its vectors, instant
+centres and curvature circles (`draw`), its motion over a sweep (`animate`), sweep plots
+(`plot_sweep`), and Jupyter's drawings (`jupyter`).
+
+Every figure reads results (a `Solution`, a sweep's arrays); nothing here solves. Drawing
+uses matplotlib without a display (the Agg canvas): no window ever opens.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Optional
+
+from .options import DrawOptions
+
+__all__ = ["draw", "DrawOptions", "plot_sweep", "animate"]
+
+
+def draw(source: Any, path: Optional[Path | str] = None, options: Optional[DrawOptions] = None,
+         symbolic: Optional[bool] = None, **choices: Any) -> Any:
+    """The figure (a matplotlib `Figure`) of a model or `Solution` at its instant; written to
+    `path` (.png, .svg, .pdf) when given. `choices` are `DrawOptions` fields."""
+    from ..api import solve
+    from ..solution import Solution
+    from .figure import render, save
+    from .scene import build_scene
+
+    sol = source if isinstance(source, Solution) else solve(source, symbolic)
+    options = options or DrawOptions(**choices)
+    fig = render(build_scene(sol.inst, sol, options), options)
+    if path is not None:
+        save(fig, path)
+    return fig
+
+
+def plot_sweep(result: Any, path: Optional[Path | str] = None) -> Any:
+    """Angles, angular velocities and accelerations, point speeds and accelerations against
+    the swept coordinate, dead points marked (see `draw.plots`)."""
+    from .plots import plot_sweep as plot
+
+    return plot(result, path)
+
+
+def animate(source: Any, path: Path | str, **kw: Any) -> Path:
+    """A GIF or MP4 of the motion over the model's sweep (see `draw.animation`)."""
+    from .animation import animate as run
+
+    return run(source, path, **kw)

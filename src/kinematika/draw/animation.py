@@ -1,0 +1,279 @@
+"""The motion over a sweep as an animation (GIF, or MP4 when ffmpeg is installed).
+
+The mechanism is painted once, as in a still figure, with every body's artists placed by
+a transform of its own; each frame only updates those transforms from the sweep's arrays
+(a body turns by its `angle` about one of its points, which moves to its swept position),
+the traced paths of chosen points (coupler curves) and the live vectors. Arrows keep one
+scale per kind over the whole motion. Rows the sweep could not assemble are skipped.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any, Callable, Optional
+
+import numpy as np
+from matplotlib.transforms import Affine2D
+
+from ..errors import KinematikaError
+from .canvas import Canvas
+from .geometry import Box
+from .options import DrawOptions
+from .scene import Scene, VectorView
+from .style import INK, KIND_COLOURS, POINT_LABEL, TITLE_SIZE
+from .vectors import arrow_for, arrow_patch
+
+FORMATS = ("gif", "mp4")
+DPI = 80
+
+
+def animate(source: Any, path: Path | str, joint: Optional[str] = None, by: Optional[float] = None,
+            steps: Optional[int] = None, frames: int = 120, fps: int = 20,
+            options: Optional[DrawOptions] = None, trace: Optional[list[str]] = None,
+            skip_bad: bool = False, progress: bool | Callable[[int, int], None] = False) -> Path:
+    """Render the sweep of `source` (path, tree, Model or Mechanism) to `path` (.gif/.mp4).
+
+    `frames`: at most this many frames (rows are subsampled evenly); `options`: which live
+    vectors (velocities, accelerations; the model's relative vectors are not swept);
+    `trace`: the points whose paths are drawn (default: the asked points, else every
+    moving point); `progress`: True for a rich bar, or a callable (done, total).
+    """
+    from ..api import as_model, solve
+    from .figure import new_figure
+    from .scene import build_scene
+
+    path = Path(path)
+    writer = _writer(path, fps)
+    run_sweep = sweeps_available()
+    model = as_model(source)
+    if model.dimension != 2:
+        raise KinematikaError("schema", "animate draws planar models; draw a 3D model's instant "
+                              "with `kinematika draw`", "dimension")
+    options = options or DrawOptions()
+    result = run_sweep(model, joint=joint, by=by, steps=steps, skip_bad=skip_bad)
+    rows = _rows(result, frames)
+    sol = solve(model)
+    still = DrawOptions(**{**options.__dict__, "velocities": False, "accelerations": False,
+                           "centres": False, "curvature": False})
+    scene = build_scene(sol.inst, sol, still)
+    live = _live_vectors(sol, options, result)
+    motion = Motion(scene, result, live)
+    view = motion.box(rows).grow(0.08 * scene.size)
+    fig, ax = new_figure(view.grow(0.06 * scene.size), DrawOptions(width=options.width), 0)
+    cv = Canvas(ax, scene, view, labels=False, placement=motion.transform)
+    _paint(cv)
+    motion.attach(cv, trace)
+    title = fig.text(0.5, 1 - 0.3 / fig.get_figheight(), "", ha="center", va="center",
+                     fontsize=TITLE_SIZE, weight="bold", color=INK)
+    report = _progress(progress, len(rows))
+    with writer.saving(fig, str(path), DPI):
+        for i, k in enumerate(rows):
+            motion.show(k)
+            title.set_text(f"{scene.name}  —  {result.joint} {_coordinate(result, k)}")
+            writer.grab_frame()
+            report(i + 1)
+    report(None)
+    return path
+
+
+def sweeps_available() -> Callable[..., Any]:
+    """`kinematika.sweep.run_sweep`, or a clear error while sweeps are not installed."""
+    try:
+        from ..sweep import run_sweep
+    except ImportError:
+        raise KinematikaError("schema", "animate needs sweeps (kinematika.sweep), which are not "
+                              "available in this installation yet") from None
+    return run_sweep
+
+
+def _writer(path: Path, fps: int) -> Any:
+    from matplotlib import animation
+
+    fmt = path.suffix.lower().lstrip(".")
+    if fmt not in FORMATS:
+        raise ValueError(f"cannot write {path.name!r}: give a .gif or .mp4 file")
+    if fmt == "gif":
+        return animation.PillowWriter(fps=fps)
+    if not animation.writers.is_available("ffmpeg"):
+        raise KinematikaError("schema", "writing .mp4 needs ffmpeg, which is not installed: "
+                              "install it or write a .gif")
+    return animation.FFMpegWriter(fps=fps, bitrate=1800)
+
+
+def _rows(result: Any, frames: int) -> list[int]:
+    """The rows to show: assembled ones, at most `frames`, evenly spread."""
+    ok = np.flatnonzero(np.asarray(result.ok, dtype=bool))
+    if not len(ok):
+        raise KinematikaError("assembly", "no position of the sweep could be assembled")
+    if len(ok) <= frames:
+        return [int(k) for k in ok]
+    pick = np.unique(np.round(np.linspace(0, len(ok) - 1, frames)).astype(int))
+    return [int(ok[i]) for i in pick]
+
+
+def _coordinate(result: Any, k: int) -> str:
+    unit = getattr(result, "unit", "deg")
+    x = float(result.coordinate[k])
+    return f"{x:+.0f}°" if unit == "deg" else f"{x:+.4g}"
+
+
+def _paint(cv: Canvas) -> None:
+    from .bodies import paint_bodies
+    from .joints import paint_joints
+
+    paint_bodies(cv)
+    paint_joints(cv)
+
+
+def _live_vectors(sol: Any, options: DrawOptions, result: Any) -> list[VectorView]:
+    """The vectors to animate: those a still figure would show, absolute ones only."""
+    from .results import vector_targets
+    from .scene import vector_label
+
+    out = []
+    for kind in ("velocity", "acceleration"):
+        flag = options.velocities if kind == "velocity" else options.accelerations
+        for ref, rel in vector_targets(sol, options, kind, flag):
+            if rel not in (None, sol.model.frame) or str(ref) not in result.points:
+                continue
+            label = vector_label(kind, sol.model, ref, None)
+            out.append(VectorView(kind, str(ref), label, np.zeros(2), np.zeros(2), 0.0, ""))
+    return out
+
+
+def _progress(progress: Any, total: int) -> Callable[[Optional[int]], None]:
+    """A callback reporting frames done (None: finished)."""
+    if callable(progress):
+        return lambda done: progress(done, total) if done is not None else None
+    if not progress:
+        return lambda done: None
+    from rich.progress import Progress
+
+    bar = Progress(transient=True)
+    task = bar.add_task("rendering frames", total=total)
+    bar.start()
+
+    def report(done: Optional[int]) -> None:
+        if done is None:
+            bar.stop()
+        else:
+            bar.update(task, completed=done)
+    return report
+
+
+class Motion:
+    """Moves a painted scene through the sweep's rows."""
+
+    def __init__(self, scene: Scene, result: Any, live: list[VectorView]) -> None:
+        self.scene, self.result, self.live = scene, result, live
+        self.places = {name: Affine2D() for name in scene.bodies}
+        self.anchors = {name: self._anchor(name) for name in scene.bodies}
+        self.largest = {kind: self._largest(kind) for kind in KIND_COLOURS}
+        self.traces: list[tuple[Any, np.ndarray]] = []
+        self.arrows: list[tuple[VectorView, Any, Any]] = []
+
+    def transform(self, body: str) -> Affine2D:
+        return self.places[body]
+
+    def _anchor(self, body: str) -> Optional[str]:
+        """The material point a body's placement follows (its first swept point)."""
+        b = self.scene.bodies[body]
+        if b.frame:
+            return None
+        for name in b.points:
+            if f"{name}@{body}" in self.result.points:
+                return name
+        return None
+
+    def _largest(self, kind: str) -> float:
+        values = [np.linalg.norm(self.result.points[v.ref][kind], axis=1) for v in self.live
+                  if v.kind == kind]
+        return float(np.nanmax(np.concatenate(values))) if values else 0.0
+
+    def positions(self, ref: str) -> np.ndarray:
+        return np.asarray(self.result.points[ref]["position"], dtype=float)[:, :2]
+
+    def box(self, rows: list[int]) -> Box:
+        """Everything the animation will show, over the rows drawn."""
+        pts = [np.array(self.scene.box[:2]), np.array(self.scene.box[2:])]
+        for ref in self.result.points:
+            pts += list(self.positions(ref)[rows])
+        for k in rows:
+            pts += [a.end for a in self._arrows(k)]
+        return Box.around(p for p in pts if np.all(np.isfinite(p)))
+
+    def _arrows(self, k: int) -> list:
+        out = []
+        for v in self.live:
+            data = self.result.points[v.ref]
+            value = np.asarray(data[v.kind][k], dtype=float)
+            out.append(arrow_for(v, self.largest[v.kind], self.scene.size,
+                                 origin=self.positions(v.ref)[k], value=value,
+                                 magnitude=float(np.linalg.norm(value))))
+        return out
+
+    def attach(self, cv: Canvas, trace: Optional[list[str]]) -> None:
+        """Add the traced paths and the live arrows (with their labels) to the axes."""
+        ax = cv.ax
+        for ref in self._traced(trace):
+            path = self.positions(ref)
+            ax.plot(*path.T, lw=0.8, ls=(0, (2, 2)), color=POINT_LABEL, alpha=0.35, zorder=1)
+            line, = ax.plot([], [], lw=1.6, color="#6d4c41", alpha=0.9, zorder=2,
+                            gid=f"trace:{ref}")
+            self.traces.append((line, path))
+        for v in self.live:
+            patch = arrow_patch(arrow_for(v, 1.0, 1.0, np.zeros(2), np.array([1.0, 0.0]), 1.0),
+                                f"{v.kind}:{v.ref}")
+            ax.add_patch(patch)
+            text = ax.annotate("", xy=(0, 0), xytext=(4, 4), textcoords="offset points",
+                               fontsize=8.5, color=KIND_COLOURS[v.kind], zorder=20,
+                               annotation_clip=False)
+            self.arrows.append((v, patch, text))
+        for body in self.scene.bodies.values():
+            tf = cv.transform(None if body.frame else body.name)
+            for name, p in body.points.items():
+                ax.annotate(name, xy=p, xycoords=tf, xytext=(5, 5), textcoords="offset points",
+                            fontsize=8, color=POINT_LABEL, weight="bold", zorder=19)
+
+    def _traced(self, trace: Optional[list[str]]) -> list[str]:
+        """The swept keys (P@body) of the traced points; fixed points are not traced."""
+        model_points = {key.partition("@")[0]: key for key in self.result.points}
+        if trace:
+            keys = []
+            for name in trace:
+                key = name if name in self.result.points else model_points.get(name)
+                if key is None:
+                    raise KinematikaError("schema", f"unknown point {name!r} to trace", "--trace")
+                keys.append(key)
+        else:
+            keys = [v.ref for v in self.live] or list(self.result.points)
+        out, seen = [], []
+        for key in keys:
+            path = self.positions(key)
+            spread = np.nanmax(np.linalg.norm(path - path[0], axis=1)) if len(path) else 0.0
+            if spread <= 1e-9 * self.scene.size:
+                continue
+            if any(np.allclose(path, q, equal_nan=True) for q in seen):
+                continue
+            seen.append(path)
+            out.append(key)
+        return out
+
+    def show(self, k: int) -> None:
+        """Place every body, trace and arrow at row `k`."""
+        for body, place in self.places.items():
+            anchor = self.anchors[body]
+            if anchor is None:
+                continue
+            p0 = self.scene.bodies[body].points[anchor]
+            pk = self.positions(f"{anchor}@{body}")[k]
+            theta = math.radians(float(self.result.bodies[body]["angle"][k]))
+            place.clear().translate(-p0[0], -p0[1]).rotate(theta).translate(pk[0], pk[1])
+        for line, path in self.traces:
+            line.set_data(path[: k + 1, 0], path[: k + 1, 1])
+        for (v, patch, text), arrow in zip(self.arrows, self._arrows(k)):
+            patch.set_positions(tuple(arrow.start), tuple(arrow.end))
+            patch.set_visible(arrow.drawn)
+            magnitude = float(np.linalg.norm(self.result.points[v.ref][v.kind][k]))
+            text.xy = tuple(arrow.end)
+            text.set_text(f"{v.label} = {magnitude:.3g}")

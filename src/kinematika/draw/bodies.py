@@ -1,0 +1,172 @@
+"""Bodies as a kinematics textbook draws them: bars, ternary plates, wheels, a hatched ground.
+
+A body with two points is a bar; with three or more, the plate of their convex hull (a
+bar again when they are collinear). Circles are wheels (with two spokes, so that turning
+shows in an animation) or dash-dot pitch circles of gears. The frame is drawn in grey:
+its lines and circles hatched on the material's side.
+"""
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.lines import Line2D
+from matplotlib.patches import Annulus, Circle, Polygon
+
+from .canvas import Canvas
+from .geometry import clip_line, convex_hull, perpendicular
+from .scene import BodyView, ShapeView
+from .style import BAR_WIDTH, GROUND, HATCH_BAND, INK, POINT_LABEL
+
+
+def paint_bodies(cv: Canvas) -> None:
+    for body in cv.scene.bodies.values():
+        if body.frame:
+            for shape in body.shapes:
+                _ground_shape(cv, shape)
+        else:
+            _body(cv, body)
+    _points(cv)
+
+
+def _body(cv: Canvas, body: BodyView) -> None:
+    pts = _distinct(list(body.points.values()), 1e-9 * cv.size)
+    anchor = None
+    if len(pts) >= 3:
+        hull = convex_hull(pts)
+        if len(hull) >= 3 and _area(hull) > 1e-3 * cv.size ** 2 * 0.01:
+            cv.add(Polygon(hull, closed=True, fc=body.colour, ec=body.colour, alpha=0.45, lw=2.5,
+                           joinstyle="round", zorder=2, gid=f"body:{body.name}"), body.name)
+            cv.board.avoid(*hull, hull[0])
+            anchor = np.mean(hull, axis=0)
+        else:
+            pts = _extremes(pts)
+    if len(pts) == 2:
+        cv.add(Line2D(*np.array(pts).T, lw=BAR_WIDTH, color=body.colour, alpha=0.9,
+                      solid_capstyle="round", zorder=2, gid=f"body:{body.name}"), body.name)
+        cv.board.avoid(*pts)
+        anchor = (pts[0] + pts[1]) / 2
+    for shape in body.shapes:
+        _moving_shape(cv, body, shape)
+        if anchor is None and shape.kind == "circle":
+            anchor = shape_anchor(shape)
+    if anchor is None and pts:
+        anchor = pts[0]
+    if anchor is not None:
+        cv.label(anchor, body.name, body.colour, 5, f"body:{body.name}", style="italic")
+
+
+def _moving_shape(cv: Canvas, body: BodyView, s: ShapeView) -> None:
+    gid = f"shape:{body.name}"
+    if s.kind == "circle" and s.ring:
+        _ring_gear(cv, body, s)
+    elif s.kind == "circle":
+        gear = s.role == "gear"
+        cv.add(Circle(s.center, s.radius, fc=body.colour, alpha=0.18 if gear else 0.25, lw=0,
+                      zorder=1), body.name)
+        cv.add(Circle(s.center, s.radius, fill=False, ec=body.colour, lw=1.6 if gear else 2.2,
+                      ls="-." if gear else "-", zorder=3, gid=gid), body.name)
+        for d in (np.array([1.0, 0.0]), np.array([0.0, 1.0])):
+            spoke = np.array([s.center - 0.8 * s.radius * d, s.center + 0.8 * s.radius * d])
+            cv.add(Line2D(*spoke.T, lw=1.0, color=body.colour, alpha=0.8, zorder=3), body.name)
+        cv.board.avoid(*_ring(s.center, s.radius))
+    elif s.kind == "line":
+        seg = clip_line(s.through, s.direction, cv.view)
+        if seg is not None:
+            cv.add(Line2D(*np.array(seg).T, lw=2.2, color=body.colour, zorder=2, gid=gid), body.name)
+            cv.board.avoid(*seg)
+    elif s.vertices is not None:
+        cv.add(Polygon(s.vertices, closed=True, fc=body.colour, ec=body.colour, alpha=0.3, lw=1.5,
+                       zorder=1, gid=gid), body.name)
+        cv.board.avoid(*s.vertices)
+
+
+def _ring_gear(cv: Canvas, body: BodyView, s: ShapeView) -> None:
+    """A ring (another circle rolls inside it): a band outside its circle, with ticks so
+    that its turning shows."""
+    band = min(HATCH_BAND * 1.5 * cv.size, 0.3 * s.radius)
+    cv.add(Annulus(s.center, s.radius + band, band, fc=body.colour, alpha=0.45, lw=0, zorder=1),
+           body.name)
+    cv.add(Circle(s.center, s.radius, fill=False, ec=body.colour, lw=2.2,
+                  ls="-." if s.role == "gear" else "-", zorder=3, gid=f"shape:{body.name}"),
+           body.name)
+    for t in np.linspace(0, 2 * np.pi, 12, endpoint=False):
+        d = np.array([np.cos(t), np.sin(t)])
+        tick = np.array([s.center + s.radius * d, s.center + (s.radius + band) * d])
+        cv.add(Line2D(*tick.T, lw=1.0, color=body.colour, zorder=2), body.name)
+    cv.board.avoid(*_ring(s.center, s.radius))
+    cv.board.avoid(*_ring(s.center, s.radius + band))
+
+
+def shape_anchor(s: ShapeView) -> np.ndarray:
+    """Where a circle-shaped body's name goes: up-left, on the rim of a ring, inside a wheel."""
+    d = np.array([-0.7071, 0.7071])
+    return s.center + (1.0 if s.ring else 0.6) * s.radius * d
+
+
+def _ground_shape(cv: Canvas, s: ShapeView) -> None:
+    band = HATCH_BAND * cv.size
+    if s.kind == "line":
+        seg = clip_line(s.through, s.direction, cv.view.grow(-band))
+        if seg is None:
+            return
+        n = perpendicular(s.direction)
+        towards = s.hatch_towards if s.hatch_towards is not None else \
+            s.through - _moving_centroid(cv)
+        side = n if float(n @ towards) >= 0 else -n
+        p, q = seg
+        cv.add(Line2D(*np.array(seg).T, lw=1.8, color=GROUND, zorder=2, gid="ground:line"))
+        cv.add(Polygon([p, q, q + band * side, p + band * side], closed=True, fill=False,
+                       ec=GROUND, lw=0, hatch="////", zorder=1))
+        cv.board.avoid(p, q)
+    elif s.kind == "circle":
+        outer = s.radius if s.material_inside else s.radius + min(band, s.radius)
+        width = min(band, 0.5 * s.radius)
+        cv.add(Circle(s.center, s.radius, fill=False, ec=GROUND, lw=1.8, zorder=2,
+                      gid="ground:circle"))
+        cv.add(Annulus(s.center, outer, width, fill=False, ec=GROUND, lw=0, hatch="////", zorder=1))
+        cv.board.avoid(*_ring(s.center, s.radius))
+    elif s.vertices is not None:
+        cv.add(Polygon(s.vertices, closed=True, fc="#eeeeee", ec=GROUND, lw=1.0, hatch="//",
+                       alpha=0.5, zorder=0, gid="ground:plane"))
+
+
+def _points(cv: Canvas) -> None:
+    """A dot at every point, and its name once (points shared by bodies are one place)."""
+    named: set[str] = set()
+    for body in cv.scene.bodies.values():
+        for name, p in body.points.items():
+            cv.add(Line2D([p[0]], [p[1]], marker="o", ms=3.2, color=INK, zorder=4),
+                   None if body.frame else body.name)
+            cv.board.avoid(p)
+            if name not in named:
+                named.add(name)
+                cv.label(p, name, POINT_LABEL, 3, f"point:{name}", weight="bold")
+
+
+def _moving_centroid(cv: Canvas) -> np.ndarray:
+    pts = [p for b in cv.scene.bodies.values() if not b.frame for p in b.points.values()]
+    return np.mean(pts, axis=0) if pts else cv.view.centre
+
+
+def _distinct(pts: list, tol: float) -> list:
+    out: list = []
+    for p in pts:
+        if all(np.linalg.norm(p - q) > tol for q in out):
+            out.append(p)
+    return out
+
+
+def _extremes(pts: list) -> list:
+    """The two points farthest apart (the ends of a collinear body)."""
+    best = max(((p, q) for i, p in enumerate(pts) for q in pts[i + 1:]),
+               key=lambda pq: np.linalg.norm(pq[0] - pq[1]))
+    return list(best)
+
+
+def _area(poly: np.ndarray) -> float:
+    x, y = poly[:, 0], poly[:, 1]
+    return 0.5 * abs(float(x @ np.roll(y, 1) - y @ np.roll(x, 1)))
+
+
+def _ring(centre: np.ndarray, radius: float, n: int = 36) -> np.ndarray:
+    t = np.linspace(0, 2 * np.pi, n + 1)
+    return centre + radius * np.column_stack([np.cos(t), np.sin(t)])

@@ -1,0 +1,49 @@
+"""What every painting function shares: the axes, the scene, where infinite lines stop,
+the label board, and how each body's drawing is placed (moved in an animation)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable, Optional
+
+from .geometry import Box
+from .labels import LabelBoard
+from .scene import Scene
+
+
+@dataclass
+class Canvas:
+    ax: Any
+    scene: Scene
+    view: Box                                  # infinite lines and far things are clipped here
+    board: LabelBoard = field(default_factory=LabelBoard)
+    labels: bool = True
+    placement: Optional[Callable[[str], Any]] = None   # body -> extra transform (animation)
+    moving: dict = field(default_factory=dict)         # body -> artists that move with it
+
+    @property
+    def size(self) -> float:
+        return self.scene.size
+
+    def transform(self, body: Optional[str]) -> Any:
+        """Data transform for artists fixed in `body`: the body's placement, then the axes'."""
+        if body is None or self.placement is None:
+            return self.ax.transData
+        return self.placement(body) + self.ax.transData
+
+    def add(self, artist: Any, body: Optional[str] = None) -> Any:
+        """Add a line or patch fixed in `body` (None: fixed on the page)."""
+        from matplotlib.lines import Line2D
+
+        artist.set_transform(self.transform(body))
+        if isinstance(artist, Line2D):
+            self.ax.add_line(artist)
+        else:
+            self.ax.add_patch(artist)
+        if body is not None:
+            self.moving.setdefault(body, []).append(artist)
+        return artist
+
+    def label(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
+              prefer: Any = None, **kw: Any) -> None:
+        if self.labels:
+            self.board.add(anchor, text, colour, priority, gid, prefer, **kw)

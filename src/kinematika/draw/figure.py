@@ -1,0 +1,203 @@
+"""A still figure of a scene: the layout (what must fit, the figure's shape), the painting
+in order, the labels, the legend and the notes.
+
+The view holds the mechanism, its arrows, and the centres and curvature circles that lie
+within `REACH` drawing sizes of it; farther ones are shown at the edge (see `marks`).
+The figure's shape follows the view's, within bounds, at equal scale on both axes; after
+the labels are placed, the limits grow until every label lies inside the axes.
+"""
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+from typing import Any, Optional
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+
+from .bodies import paint_bodies
+from .canvas import Canvas
+from .geometry import Box
+from .joints import paint_joints
+from .marks import paint_axes, paint_curvatures, paint_marks
+from .options import DrawOptions
+from .scene import Scene
+from .style import (ACCELERATION, CENTRE, CURVATURE, INK, LONGEST, SHORTEST, TITLE_SIZE, VELOCITY)
+from .vectors import Arrow, arrows, paint_vectors
+
+REACH = 1.0          # drawing sizes around the mechanism within which results are framed
+CLIP_MARGIN = 0.08   # infinite lines stop this far (drawing sizes) beyond the framed content
+LABEL_MARGIN = 0.10  # room kept around it for labels
+ASPECT = (0.5, 1.25)  # bounds of the axes' height/width
+TOP, LEGEND, NOTE = 0.55, 0.32, 0.2   # inches: title band, legend row, one note line
+FORMATS = ("png", "svg", "pdf")
+
+
+def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
+    """The figure of `scene`: mechanism, vectors, centres, curvature, labels, legend."""
+    options = options or DrawOptions()
+    drawn = arrows(scene.vectors, scene.size)
+    content = framed_box(scene, drawn)
+    view = content.grow(CLIP_MARGIN * scene.size)
+    notes = _notes(scene, drawn)
+    fig, ax = new_figure(view.grow(LABEL_MARGIN * scene.size), options, len(notes))
+    cv = Canvas(ax, scene, view, labels=options.labels)
+    paint_bodies(cv)
+    paint_joints(cv)
+    paint_curvatures(cv)
+    paint_axes(cv)
+    paint_marks(cv)
+    paint_vectors(cv, drawn)
+    if scene.dim == 3:
+        _triad(ax, scene)
+    _place_labels(fig, ax, cv)
+    _title(fig, options.title or scene.name)
+    _legend(fig, scene, drawn, notes)
+    return fig
+
+
+def framed_box(scene: Scene, drawn: list[Arrow]) -> Box:
+    """The mechanism, its arrows, and the results within reach of the mechanism."""
+    base = Box(*scene.box)
+    reach = base.grow(REACH * scene.size)
+    pts = [a.end for a in drawn]
+    pts += [m.point for m in scene.marks if m.point is not None and reach.contains(m.point)]
+    for c in scene.curvatures:
+        ring = c.circle
+        if all(reach.contains(p) for p in ring):
+            pts += list(ring)
+        elif reach.contains(c.centre):
+            pts.append(c.centre)
+    pts += [a.point for a in scene.axes if reach.contains(a.point)]
+    return base.union(pts)
+
+
+def new_figure(limits: Box, options: DrawOptions, n_notes: int) -> tuple[Figure, Any]:
+    aspect = min(max(limits.height / max(limits.width, 1e-300), ASPECT[0]), ASPECT[1])
+    limits = limits.with_aspect(aspect)
+    width = options.width
+    axes_w, axes_h = 0.96 * width, 0.96 * width * aspect
+    bottom = LEGEND + NOTE * n_notes + 0.1
+    height = TOP + axes_h + bottom
+    fig = Figure(figsize=(width, height))
+    FigureCanvasAgg(fig)
+    ax = fig.add_axes((0.02, bottom / height, axes_w / width, axes_h / height))
+    _set_limits(ax, limits)
+    ax.set_axis_off()
+    return fig, ax
+
+
+def _set_limits(ax: Any, box: Box) -> None:
+    """Limits around `box` at equal scale on both axes (matching the axes' shape)."""
+    pos, fig = ax.get_position(), ax.figure
+    box = box.with_aspect(pos.height * fig.get_figheight() / (pos.width * fig.get_figwidth()))
+    ax.set_xlim(box.xmin, box.xmax)
+    ax.set_ylim(box.ymin, box.ymax)
+
+
+def _place_labels(fig: Figure, ax: Any, cv: Canvas) -> None:
+    """Place the labels; while some stick out of the axes, widen the limits and redo."""
+    renderer = fig.canvas.get_renderer()
+    for attempt in range(4):
+        placed = cv.board.place(ax, renderer)
+        grow = _overflow(ax, placed, renderer)
+        if grow is None or attempt == 3:
+            return
+        for ann in placed:
+            ann.remove()
+        x0, x1 = ax.get_xlim()
+        y0, y1 = ax.get_ylim()
+        _set_limits(ax, Box(x0 - grow[0], y0 - grow[1], x1 + grow[2], y1 + grow[3]))
+
+
+def _overflow(ax: Any, placed: list, renderer: Any) -> Optional[tuple]:
+    """How far (data units: left, bottom, right, top) the labels stick out of the axes."""
+    from matplotlib.text import Text
+
+    box = ax.get_window_extent(renderer)
+    left = bottom = right = top = 0.0
+    for ann in placed:
+        ann.update_positions(renderer)
+        bb = Text.get_window_extent(ann, renderer)
+        left, bottom = max(left, box.x0 - bb.x0), max(bottom, box.y0 - bb.y0)
+        right, top = max(right, bb.x1 - box.x1), max(top, bb.y1 - box.y1)
+    if max(left, bottom, right, top) <= 0.5:
+        return None
+    per_px = (ax.get_xlim()[1] - ax.get_xlim()[0]) / box.width
+    return tuple((v + 6) * per_px if v > 0 else 0.0 for v in (left, bottom, right, top))
+
+
+def _title(fig: Figure, title: str) -> None:
+    fig.text(0.5, 1 - 0.3 / fig.get_figheight(), title.replace("$", r"\$"), ha="center",
+             va="center", fontsize=TITLE_SIZE, weight="bold", color=INK)
+
+
+def _notes(scene: Scene, drawn: list[Arrow]) -> list[str]:
+    notes = list(scene.notes)
+    if any(a.enlarged for a in drawn):
+        notes.append(f"arrows are to scale within each kind (the longest is {LONGEST:.0%} of the "
+                     f"drawing); those marked 'enlarged' are drawn at the minimum length "
+                     f"({SHORTEST:.0%})")
+    if scene.dim == 3:
+        notes.append(f"3D model: {'isometric' if scene.projection.view == 'iso' else scene.projection.view}"
+                     " orthographic projection (axes x, y, z shown at the lower left)")
+    lines: list[str] = []
+    for note in notes:
+        lines += textwrap.wrap(note.replace("$", r"\$"), 120)
+    return lines
+
+
+def _legend(fig: Figure, scene: Scene, drawn: list[Arrow], notes: list[str]) -> None:
+    handles = []
+    kinds = {a.view.kind for a in drawn if a.drawn}
+    if "velocity" in kinds:
+        handles.append(Line2D([], [], color=VELOCITY, lw=2.2, label="velocity"))
+    if "acceleration" in kinds:
+        handles.append(Line2D([], [], color=ACCELERATION, lw=2.2, label="acceleration"))
+    if any(m.kind == "icr" for m in scene.marks):
+        handles.append(Line2D([], [], marker="o", ms=8, mfc="white", mec=CENTRE, mew=2, ls="",
+                              label="instant centre"))
+    if scene.kennedy:
+        handles.append(Line2D([], [], color=CENTRE, lw=0.9, ls=(0, (6, 4)), label="Kennedy line"))
+    if any(m.kind == "pole" for m in scene.marks):
+        handles.append(Line2D([], [], marker="D", ms=6, mfc="white", mec=ACCELERATION, ls="",
+                              label="acceleration pole"))
+    if scene.curvatures:
+        handles.append(Line2D([], [], color=CURVATURE, lw=1.3, label="curvature circle"))
+    height = fig.get_figheight()
+    y = (NOTE * len(notes) + 0.1 + LEGEND / 2) / height
+    if handles:
+        fig.legend(handles=handles, loc="center", bbox_to_anchor=(0.5, y), ncol=len(handles),
+                   frameon=False, fontsize=8.5, handlelength=2.2)
+    for i, note in enumerate(notes):
+        fig.text(0.02, (NOTE * (len(notes) - i - 0.5) + 0.05) / height, note, fontsize=7.5,
+                 color="#555555", va="center", ha="left")
+
+
+def _triad(ax: Any, scene: Scene) -> None:
+    """The page images of the x, y, z axes, at the lower left of the axes."""
+    fig = ax.figure
+    bbox = ax.get_position()
+    w_in, h_in = bbox.width * fig.get_figwidth(), bbox.height * fig.get_figheight()
+    origin = np.array([0.08, 0.10])
+    length = 0.45     # inches
+    for name, d in scene.projection.axes().items():
+        tip = origin + length * np.array([d[0] / w_in, d[1] / h_in])
+        ax.annotate("", xy=tip, xytext=origin, xycoords="axes fraction",
+                    arrowprops=dict(arrowstyle="-|>", color=INK, lw=1.0, shrinkA=0, shrinkB=0))
+        if np.linalg.norm(d) > 0.2:
+            label = origin + (length + 0.12) * np.array([d[0] / w_in, d[1] / h_in])
+            ax.text(*label, name, transform=ax.transAxes, ha="center", va="center",
+                    fontsize=9, color=INK, style="italic")
+
+
+def save(fig: Figure, path: Path | str, dpi: int = 110) -> Path:
+    """Write `fig` as PNG, SVG or PDF (by the file's suffix)."""
+    path = Path(path)
+    fmt = path.suffix.lower().lstrip(".")
+    if fmt not in FORMATS:
+        raise ValueError(f"cannot write {path.name!r}: give a .png, .svg or .pdf file")
+    fig.savefig(path, format=fmt, dpi=dpi, facecolor="white")
+    return path

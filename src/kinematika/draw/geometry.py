@@ -1,0 +1,151 @@
+"""Plane geometry for drawing: boxes, clipping, hulls and the outlines of symbols."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Iterable, Optional
+
+import numpy as np
+
+Vec = np.ndarray
+
+
+@dataclass(frozen=True)
+class Box:
+    """An axis-aligned rectangle on the page."""
+
+    xmin: float
+    ymin: float
+    xmax: float
+    ymax: float
+
+    @classmethod
+    def around(cls, points: Iterable[Vec]) -> "Box":
+        arr = np.array([np.asarray(p, dtype=float) for p in points])
+        lo, hi = arr.min(axis=0), arr.max(axis=0)
+        return cls(float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+
+    @property
+    def width(self) -> float:
+        return self.xmax - self.xmin
+
+    @property
+    def height(self) -> float:
+        return self.ymax - self.ymin
+
+    @property
+    def centre(self) -> Vec:
+        return np.array([(self.xmin + self.xmax) / 2, (self.ymin + self.ymax) / 2])
+
+    def grow(self, margin: float) -> "Box":
+        return Box(self.xmin - margin, self.ymin - margin, self.xmax + margin, self.ymax + margin)
+
+    def union(self, points: Iterable[Vec]) -> "Box":
+        pts = [np.asarray(p, dtype=float) for p in points]
+        if not pts:
+            return self
+        return Box.around(pts + [np.array([self.xmin, self.ymin]), np.array([self.xmax, self.ymax])])
+
+    def contains(self, p: Vec, tol: float = 0.0) -> bool:
+        return (self.xmin - tol <= p[0] <= self.xmax + tol) and (self.ymin - tol <= p[1] <= self.ymax + tol)
+
+    def with_aspect(self, aspect: float) -> "Box":
+        """The smallest box around this one whose height/width is `aspect` (same centre)."""
+        w, h = max(self.width, 1e-300), max(self.height, 1e-300)
+        if h / w < aspect:
+            h = w * aspect
+        else:
+            w = h / aspect
+        c = self.centre
+        return Box(c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
+
+
+def clip_line(point: Vec, direction: Vec, box: Box) -> Optional[tuple[Vec, Vec]]:
+    """The part of the infinite line through `point` along `direction` inside `box`."""
+    return clip_segment(point - 1e6 * box.width * direction, point + 1e6 * box.width * direction,
+                        box)
+
+
+def clip_segment(p: Vec, q: Vec, box: Box) -> Optional[tuple[Vec, Vec]]:
+    """The part of segment pq inside `box` (Liang–Barsky), or None."""
+    d = q - p
+    t0, t1 = 0.0, 1.0
+    for dp, lo, hi, x in ((d[0], box.xmin, box.xmax, p[0]), (d[1], box.ymin, box.ymax, p[1])):
+        if abs(dp) < 1e-300:
+            if x < lo or x > hi:
+                return None
+            continue
+        ta, tb = (lo - x) / dp, (hi - x) / dp
+        t0, t1 = max(t0, min(ta, tb)), min(t1, max(ta, tb))
+        if t0 > t1:
+            return None
+    return p + t0 * d, p + t1 * d
+
+
+def clip_polyline(points: Vec, box: Box) -> Vec:
+    """`points` with every vertex outside `box` replaced by NaN (breaks the line there)."""
+    out = np.array(points, dtype=float)
+    inside = (out[:, 0] >= box.xmin) & (out[:, 0] <= box.xmax) & \
+        (out[:, 1] >= box.ymin) & (out[:, 1] <= box.ymax)
+    out[~inside] = np.nan
+    return out
+
+
+def edge_point(box: Box, towards: Vec, inset: float) -> Vec:
+    """Where the ray from the box's centre towards `towards` leaves the box (moved `inset` in)."""
+    inner = box.grow(-inset)
+    c = inner.centre
+    d = towards - c
+    ts = []
+    for i, (lo, hi) in enumerate(((inner.xmin, inner.xmax), (inner.ymin, inner.ymax))):
+        if abs(d[i]) > 1e-300:
+            ts.append(((hi if d[i] > 0 else lo) - c[i]) / d[i])
+    return c + min(ts) * d if ts else c
+
+
+def convex_hull(points: list[Vec]) -> Vec:
+    """The convex hull (counter-clockwise, Andrew's monotone chain) of 2D points."""
+    pts = sorted({(float(p[0]), float(p[1])) for p in points})
+    if len(pts) <= 2:
+        return np.array(pts)
+
+    def half(seq):
+        chain: list = []
+        for p in seq:
+            while len(chain) >= 2 and _turn(chain[-2], chain[-1], p) <= 0:
+                chain.pop()
+            chain.append(p)
+        return chain[:-1]
+
+    return np.array(half(pts) + half(reversed(pts)))
+
+
+def _turn(o, a, b) -> float:
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+
+def rectangle(centre: Vec, along: Vec, length: float, height: float) -> Vec:
+    """The corners of a rectangle centred at `centre`, its length along the unit `along`."""
+    n = np.array([-along[1], along[0]])
+    hl, hh = along * length / 2, n * height / 2
+    return np.array([centre - hl - hh, centre + hl - hh, centre + hl + hh, centre - hl + hh])
+
+
+def stadium(p: Vec, q: Vec, half_width: float) -> Vec:
+    """The outline of a slot from p to q with rounded ends of radius `half_width`."""
+    d = q - p
+    base = math.atan2(d[1], d[0])
+    ends = []
+    for centre, start in ((q, base - math.pi / 2), (p, base + math.pi / 2)):
+        t = np.linspace(start, start + math.pi, 19)
+        ends.append(centre + half_width * np.column_stack([np.cos(t), np.sin(t)]))
+    return np.vstack(ends + [ends[0][:1]])
+
+
+def unit(v: Vec) -> Vec:
+    n = float(np.linalg.norm(v))
+    return v / n if n > 0 else v
+
+
+def perpendicular(v: Vec) -> Vec:
+    return np.array([-v[1], v[0]])

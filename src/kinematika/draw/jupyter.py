@@ -1,0 +1,50 @@
+"""Jupyter's drawings: a `Mechanism` (or `Model`) and a `Solution` show themselves as SVG.
+
+A model that cannot be solved yet (a driver missing while it is being built) is still
+drawn — its geometry alone, with the reason in a note; one that cannot even be evaluated
+gives None, and Jupyter falls back to the text form.
+"""
+from __future__ import annotations
+
+import io
+from typing import Any, Optional
+
+from ..errors import KinematikaError
+from .options import DrawOptions
+
+WIDTH = 6.5     # inches: a notebook cell
+
+
+def solution_svg(sol: Any, options: Optional[DrawOptions] = None) -> str:
+    """The drawing of a solved instant as SVG text."""
+    from .figure import render
+    from .scene import build_scene
+
+    options = options or DrawOptions(width=WIDTH)
+    return _svg(render(build_scene(sol.inst, sol, options), options))
+
+
+def model_svg(model: Any, options: Optional[DrawOptions] = None) -> Optional[str]:
+    """The drawing of a model: solved when it can be, else its geometry with the reason."""
+    from ..api import solve
+    from ..engine.instant import instantiate
+    from .figure import render
+    from .scene import build_scene
+
+    options = options or DrawOptions(width=WIDTH)
+    try:
+        return solution_svg(solve(model), options)
+    except KinematikaError as err:
+        reason = f"not solved: {err}"
+    try:
+        scene = build_scene(instantiate(model), None, options)
+    except KinematikaError:
+        return None
+    scene.notes.append(reason)
+    return _svg(render(scene, options))
+
+
+def _svg(fig: Any) -> str:
+    out = io.StringIO()
+    fig.savefig(out, format="svg", facecolor="white")
+    return out.getvalue()

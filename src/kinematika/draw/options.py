@@ -1,0 +1,34 @@
+"""What a drawing shows: one set of options shared by `draw`, `animate` and Jupyter."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional
+
+Auto = Optional[bool]     # None: decided by the model's questions
+
+
+@dataclass
+class DrawOptions:
+    """Choices of what to draw.
+
+    `velocities` / `accelerations`: None draws the vectors the model asks for (its
+    `velocity` / `acceleration` questions); True draws them at every shown point; False
+    none. Shown points are `points` when given, else the points the questions name, else
+    every point of a moving body. `centres`: None marks the centres the model asks for
+    (`icr`), True every instant centre with its Aronhold–Kennedy lines. `curvature`: None
+    or True draws the curvature questions' circles. `labels`: names and magnitudes.
+    """
+
+    velocities: Auto = None
+    accelerations: Auto = None
+    centres: Auto = None
+    curvature: Auto = None
+    labels: bool = True
+    points: Optional[list[str]] = None
+    view: str = "iso"                 # 3D projection: iso, top, front, side
+    width: float = 8.0                # figure width, inches
+    title: Optional[str] = None       # default: the model's name
+
+    def shows(self, flag: Auto, asked: bool) -> bool:
+        """Whether a tri-state option draws: explicitly, or by default when asked."""
+        return asked if flag is None else flag

@@ -1,0 +1,42 @@
+"""Values for a model's parameters given on the command line (`--set r=0.1`).
+
+A symbolic model is drawn at generic probe values unless the user gives numbers: this
+replaces the named parameters' values (numbers or expressions, checked like a model
+file's) in a copy of the model, which then solves numerically.
+"""
+from __future__ import annotations
+
+import dataclasses
+
+from ..errors import KinematikaError
+from ..model.expressions import ExpressionError, parse
+from ..model.model import Model, Parameter
+
+
+def parse_assignments(items: list[str]) -> dict[str, str]:
+    """`["r=0.1", "w=10"]` as a mapping; a malformed item is a schema error."""
+    out = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip() or not value.strip():
+            raise KinematikaError("schema", f"--set expects NAME=VALUE, got {item!r}", "--set")
+        out[name.strip()] = value.strip()
+    return out
+
+
+def with_parameters(model: Model, values: dict[str, str]) -> Model:
+    """A copy of `model` with the named parameters set to `values`."""
+    if not values:
+        return model
+    params = dict(model.parameters)
+    for name, text in values.items():
+        if name not in params:
+            known = ", ".join(params) or "none"
+            raise KinematikaError("schema", f"unknown parameter {name!r} (parameters: {known})",
+                                  "--set")
+        try:
+            expr = parse(text)
+        except ExpressionError as err:
+            raise KinematikaError("schema", str(err), f"--set {name}") from None
+        params[name] = Parameter(name, expr, params[name].positive)
+    return dataclasses.replace(model, parameters=params)

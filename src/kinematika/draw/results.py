@@ -1,0 +1,231 @@
+"""The results a figure shows, read from a `Solution`: vectors, centres, curvature, axes.
+
+Which ones is decided by the model's questions and the `DrawOptions` (see there); the
+values come from the Solution and the question modules, never from solving here.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Optional
+
+import numpy as np
+
+from ..model.model import PointRef
+from ..questions import answer
+from .options import DrawOptions
+from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView,
+                    display_name, vector_label)
+from .style import equation, plain_name, symbol
+
+POINT_QUESTIONS = ("velocity", "acceleration", "curvature", "intrinsic", "decompose")
+KINDS = ("velocity", "acceleration")
+
+
+def add_results(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
+    _vectors(scene, sol, options, num)
+    _centres(scene, sol, options, num)
+    if options.curvature is not False:
+        _curvatures(scene, sol, num)
+    _other_marks(scene, sol, num)
+
+
+# vectors ---------------------------------------------------------------------------------
+def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
+    for kind in KINDS:
+        flag = options.velocities if kind == "velocity" else options.accelerations
+        for ref, rel in vector_targets(sol, options, kind, flag):
+            value = (sol.velocity if kind == "velocity" else sol.acceleration)(ref, rel)
+            vec = num.vector(value)
+            magnitude = float(np.linalg.norm(vec))
+            scene.vectors.append(VectorView(
+                kind, str(ref), vector_label(kind, sol.model, ref, rel),
+                num.page(sol.position(ref)), num.proj(vec), magnitude,
+                magnitude_text(sol, value, magnitude)))
+
+
+def vector_targets(sol: Any, options: DrawOptions, kind: str,
+                    flag: Optional[bool]) -> list[tuple[PointRef, Optional[str]]]:
+    """(material point, frame) pairs to draw a vector of `kind` at, in order, no repeats."""
+    model = sol.model
+    asked = [(q.target, q.relative_to) for q in model.questions if q.kind == kind]
+    if flag is False:
+        return []
+    if flag is None and not options.points:
+        return _unique(asked)
+    if flag is None and not asked and kind != "velocity":
+        return []
+    if options.points:
+        shown = [(model.resolve_point(p, "--points"), None) for p in options.points]
+    else:
+        shown = [(q.target, q.relative_to if q.kind == kind else None)
+                 for q in model.questions if q.kind in POINT_QUESTIONS]
+        shown = shown or _moving_points(sol)
+    return _unique(shown)
+
+
+def _unique(pairs: list) -> list:
+    seen, out = set(), []
+    for ref, rel in pairs:
+        key = (str(ref), rel)
+        if key not in seen:
+            seen.add(key)
+            out.append((ref, rel))
+    return out
+
+
+def _moving_points(sol: Any) -> list[tuple[PointRef, None]]:
+    """Every material point of a moving body; coincident points moving alike appear once."""
+    out, seen = [], set()
+    for ref in sol.model.material_points():
+        if ref.body == sol.model.frame:
+            continue
+        inst = sol.inst
+        key = tuple(round(x / inst.scale, 9) for x in inst.numvec(sol.position(ref))) + \
+            tuple(round(x, 6) for x in inst.numvec(sol.velocity(ref)))
+        if key not in seen:
+            seen.add(key)
+            out.append((ref, None))
+    return out
+
+
+def magnitude_text(sol: Any, value: tuple, magnitude: float) -> str:
+    """The magnitude as shown: 3 significant digits, or a short exact formula (symbolic)."""
+    if not sol.symbolic:
+        return f"{magnitude:.3g}"
+    return formula_text(sol.norm(value), magnitude)
+
+
+def formula_text(expr: Any, number: float) -> str:
+    """A short formula (`3·r·w`), else the number at the probe values (`≈ 1.24`)."""
+    from ..report.values import tidy
+
+    text = str(tidy(expr)).replace("**", "^").replace("*", "·")
+    return plain_name(text) if len(text) <= 18 else f"≈ {number:.3g}"
+
+
+# instant centres -------------------------------------------------------------------------
+def _centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
+    if options.centres is False:
+        return
+    if options.centres and scene.dim == 2:
+        _all_centres(scene, sol, num)
+        return
+    if options.centres:
+        scene.notes.append("instant centres are planar: not drawn for a 3D model")
+    for q in sol.model.questions:
+        if q.kind != "icr":
+            continue
+        name = q.target if not q.relative_to else f"{q.target}/{q.relative_to}"
+        key = f"icr:{name}"
+        _add_centre(scene, num, answer(sol, q), key, symbol("I", name), (q.target,))
+
+
+def _add_centre(scene: Scene, num: Numbers, value: dict, key: str, label: str,
+                pair: tuple) -> None:
+    if value.get("rest"):
+        scene.notes.append(f"{_bare(label)}: no relative motion")
+    elif value.get("point") is not None:
+        scene.marks.append(MarkView("icr", key, label, point=num.page(value["point"]), pair=pair))
+    else:
+        d = num.page(value["direction"])
+        scene.marks.append(MarkView("icr", key, label, direction=d, pair=pair))
+        scene.notes.append(f"{_bare(label)} at infinity, direction ({d[0]:.3g}, {d[1]:.3g})")
+
+
+def _bare(label: str) -> str:
+    """A mathtext label as readable plain text, for notes: $I_{\\mathrm{13}}$ -> I13."""
+    return label.replace("$", "").replace(r"\mathrm", "").replace("{", "").replace("}", "") \
+        .replace("_", "").replace("\\", "")
+
+
+def _all_centres(scene: Scene, sol: Any, num: Numbers) -> None:
+    """Every centre, labelled I₁₃ by body numbers, with the Kennedy lines that found them."""
+    from ..questions.centres import all_centres
+
+    centres = all_centres(sol)
+    number = {name: b.number for name, b in scene.bodies.items()}
+    by_pair = {frozenset(c.pair): c for c in centres}
+    for c in centres:
+        a, b = sorted(c.pair, key=number.get)
+        tag = f"{number[a]}{number[b]}" if max(number.values()) < 10 else f"{number[a]},{number[b]}"
+        _add_centre(scene, num, c.value, f"centre:{a}-{b}", symbol("I", tag), (a, b))
+    for c in centres:
+        if c.how != "kennedy":
+            continue
+        for third in c.via:
+            line = _kennedy_line(num, by_pair[frozenset((c.pair[0], third))].value,
+                                 by_pair[frozenset((third, c.pair[1]))].value, c.value)
+            if line is not None:
+                scene.kennedy.append(KennedyLine(f"kennedy:{'-'.join(c.pair)}:{third}", *line))
+    order = ", ".join(f"{b.number} {b.name}" for b in sorted(scene.bodies.values(),
+                                                              key=lambda b: b.number))
+    scene.notes.insert(0, f"bodies: {order}")
+
+
+def _kennedy_line(num: Numbers, c1: dict, c2: dict, target: dict):
+    """(through, direction, anchors) of the line through two centres (one may be at infinity)."""
+    finite = [num.page(c["point"]) for c in (c1, c2, target) if c.get("point") is not None]
+    infinite = [num.page(c["direction"]) for c in (c1, c2) if c.get("direction") is not None]
+    if len(finite) >= 2 and np.linalg.norm(finite[1] - finite[0]) > 1e-12:
+        return finite[0], finite[1] - finite[0], finite
+    if finite and infinite:
+        return finite[0], infinite[0], finite
+    return None
+
+
+# curvature -------------------------------------------------------------------------------
+def _curvatures(scene: Scene, sol: Any, num: Numbers) -> None:
+    for q in sol.model.questions:
+        if q.kind != "curvature":
+            continue
+        name = display_name(sol.model, q.target)
+        if q.relative_to:
+            name = f"{name}/{q.relative_to}"
+        value = answer(sol, q)
+        if value.get("rest"):
+            scene.notes.append(f"{name} is at rest: no path curvature")
+            continue
+        if value.get("radius") is None:
+            scene.notes.append(f"the path of {name} is straight here (infinite radius)")
+            continue
+        p, c = num.vector(sol.position(q.target)), num.vector(value["center"])
+        radius = num.scalar(value["radius"])
+        v = num.vector(sol.velocity(q.target, q.relative_to))
+        text = formula_text(value["radius"], radius) if sol.symbolic else f"{radius:.3g}"
+        scene.curvatures.append(CurvatureView(
+            str(q.target) + (f"/{q.relative_to}" if q.relative_to else ""),
+            equation(symbol("ρ", name), text), num.proj(p), num.proj(c), radius,
+            _circle(num, c, p, v)))
+
+
+def _circle(num: Numbers, centre: np.ndarray, p: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """The osculating circle through p about `centre`, tangent to v, sampled every 2°."""
+    r = p - centre
+    radius = float(np.linalg.norm(r))
+    u = r / radius
+    t = v - (v @ u) * u
+    w = t / np.linalg.norm(t)
+    angles = np.linspace(0, 2 * math.pi, 181)
+    pts = centre + radius * (np.outer(np.cos(angles), u) + np.outer(np.sin(angles), w))
+    return np.array([num.proj(x) for x in pts])
+
+
+# poles, contacts, screw axes ---------------------------------------------------------------
+def _other_marks(scene: Scene, sol: Any, num: Numbers) -> None:
+    for q in sol.model.questions:
+        if q.kind == "pole":
+            value = answer(sol, q)
+            if value.get("point") is not None:
+                scene.marks.append(MarkView("pole", f"pole:{q.target}", symbol("Γ", str(q.target)),
+                                            point=num.page(value["point"]), pair=(q.target,)))
+        elif q.kind == "contact":
+            value = answer(sol, q)
+            if value.get("point") is not None:
+                scene.marks.append(MarkView("contact", f"contact:{q.target}",
+                                            symbol("J", str(q.target)),
+                                            point=num.page(value["point"])))
+        elif q.kind == "axis" and scene.dim == 3:
+            value = answer(sol, q)
+            if value.get("point") is not None:
+                scene.axes.append(AxisView(f"axis:{q.target}", f"axis of {plain_name(str(q.target))}",
+                                           num.page(value["point"]), num.page(value["direction"])))

@@ -1,0 +1,371 @@
+"""A numeric snapshot of what a figure shows, read from a solved instant (never solving).
+
+Everything here is floats in page coordinates (projected for a 3D model): the bodies with
+their points and shapes, the joints, and the results asked for — vectors, instant
+centres, curvature circles, screw axes. A symbolic model is drawn at its probe values
+(`Instant.probe`), which `notes` reports. Painting (`draw.figure`) reads only a `Scene`,
+so the same scene serves a still figure, an animation frame and Jupyter.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Optional
+
+import numpy as np
+
+from ..engine.instant import Circle, Disc, Instant, Line, Plane
+from ..errors import KinematikaError
+from ..model.model import PointRef
+from .options import DrawOptions
+from .projection import Projection, projection
+from .style import body_colour, symbol
+
+Vec = np.ndarray
+
+
+@dataclass
+class ShapeView:
+    """A body's shape on the page: a circle, an infinite line, or a closed outline (3D)."""
+
+    kind: str                              # "circle", "line" or "outline"
+    center: Optional[Vec] = None
+    radius: float = 0.0
+    through: Optional[Vec] = None
+    direction: Optional[Vec] = None        # unit (line)
+    vertices: Optional[Vec] = None         # (n, 2) (outline)
+    role: str = "plain"                    # "gear": drawn as a pitch circle
+    ring: bool = False                     # the outer circle of an internal contact
+    hatch_towards: Optional[Vec] = None    # ground line: the side its material is on
+    material_inside: bool = True           # ground circle: a drum (True) or a cavity (False)
+
+
+@dataclass
+class BodyView:
+    name: str
+    number: int                            # the frame is 1, the others 2, 3, … in file order
+    colour: str
+    frame: bool
+    points: dict[str, Vec]
+    shapes: list[ShapeView] = field(default_factory=list)
+
+
+@dataclass
+class JointView:
+    id: str
+    type: str
+    a: str
+    b: str
+    at: Optional[Vec] = None
+    along: Optional[Vec] = None            # unit on the page
+    axis: Optional[Vec] = None             # page image of a 3D axis (not unit)
+    span: Optional[tuple[Vec, Vec]] = None  # a slot given by two points
+    contact: Optional[Vec] = None
+
+
+@dataclass
+class VectorView:
+    kind: str                              # "velocity" or "acceleration"
+    ref: str                               # the material point, P@body
+    label: str                             # the symbol, e.g. $v_B$
+    origin: Vec
+    value: Vec                             # on the page
+    magnitude: float                       # of the model vector
+    text: str                              # the magnitude as shown (a number or a formula)
+
+
+@dataclass
+class MarkView:
+    """A marked point: an instant centre, an acceleration pole or a contact."""
+
+    kind: str                              # "icr", "pole" or "contact"
+    key: str                               # identifies the artist (gid)
+    label: str
+    point: Optional[Vec] = None
+    direction: Optional[Vec] = None        # a centre at infinity
+    pair: tuple[str, ...] = ()
+
+
+@dataclass
+class KennedyLine:
+    """A line of three collinear centres: through `through`, along `direction`."""
+
+    key: str
+    through: Vec
+    direction: Vec
+    anchors: list[Vec]                     # the finite centres it must reach
+
+
+@dataclass
+class CurvatureView:
+    ref: str
+    label: str
+    point: Vec
+    centre: Vec
+    radius: float
+    circle: Vec                            # (n, 2): the osculating circle on the page
+
+
+@dataclass
+class AxisView:
+    key: str
+    label: str
+    point: Vec
+    direction: Vec                         # page image of the unit direction
+
+
+@dataclass
+class Scene:
+    name: str
+    dim: int
+    projection: Projection
+    bodies: dict[str, BodyView]
+    joints: list[JointView]
+    size: float                            # the mechanism's extent: what symbols scale by
+    box: tuple[float, float, float, float]  # xmin, ymin, xmax, ymax of the mechanism
+    vectors: list[VectorView] = field(default_factory=list)
+    marks: list[MarkView] = field(default_factory=list)
+    kennedy: list[KennedyLine] = field(default_factory=list)
+    curvatures: list[CurvatureView] = field(default_factory=list)
+    axes: list[AxisView] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def frame(self) -> BodyView:
+        return next(b for b in self.bodies.values() if b.frame)
+
+    def point(self, name: str) -> Vec:
+        for body in self.bodies.values():
+            if name in body.points:
+                return body.points[name]
+        raise KeyError(name)
+
+
+# building --------------------------------------------------------------------------------
+def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = None,
+                solver: Any = None) -> Scene:
+    """The scene of an evaluated instant; with a `Solution`, also the results to show."""
+    from .results import add_results   # results read the Solution; geometry needs only inst
+
+    options = options or DrawOptions()
+    model = inst.model
+    proj = projection(model.dimension, options.view)
+    num = Numbers(inst, proj)
+    bodies = _bodies(inst, num)
+    box, size = _extent(bodies, inst)
+    geos = _joint_geometries(inst, sol or solver)
+    _mark_ground_sides(bodies, model, geos, num)
+    _mark_gears(bodies, model, geos, num)
+    joints = [_joint(j, geos.get(j.id), num) for j in model.joints]
+    scene = Scene(model.name, model.dimension, proj, bodies, joints, size, box)
+    if inst.symbolic and inst.probe:
+        values = ", ".join(f"{s} = {v:.3g}" for s, v in sorted(inst.probe.items(), key=str))
+        scene.notes.append(f"symbolic model drawn at {values}")
+    if sol is not None:
+        add_results(scene, sol, options, num)
+    return scene
+
+
+class Numbers:
+    """Backend values (floats or sympy at the probe values) as page coordinates."""
+
+    def __init__(self, inst: Instant, proj: Projection) -> None:
+        self.inst, self.proj = inst, proj
+
+    def scalar(self, x: Any) -> float:
+        return self.inst.num(x)
+
+    def vector(self, v: tuple) -> Vec:
+        """A model vector (3D kept as is) as floats."""
+        return np.array([self.inst.num(c) for c in v], dtype=float)
+
+    def page(self, v: tuple) -> Vec:
+        """A model point or vector projected on the page."""
+        return self.proj(self.vector(v))
+
+
+def _bodies(inst: Instant, num: Numbers) -> dict[str, BodyView]:
+    model = inst.model
+    order = [model.frame] + [b for b in model.bodies if b != model.frame]
+    out = {}
+    for number, name in enumerate(order, start=1):
+        body = model.bodies[name]
+        frame = name == model.frame
+        points = {p: num.page(inst.points[p]) for p in body.points}
+        shapes = [_shape(s, num) for s in inst.shapes.get(name, [])]
+        out[name] = BodyView(name, number, "#424242" if frame else body_colour(number), frame,
+                             points, shapes)
+    return {name: out[name] for name in model.bodies}
+
+
+def _shape(s: Any, num: Numbers) -> ShapeView:
+    if isinstance(s, Circle):
+        return ShapeView("circle", center=num.page(s.center), radius=num.scalar(s.radius))
+    if isinstance(s, Line):
+        d = num.page(s.direction)
+        return ShapeView("line", through=num.page(s.through), direction=d / np.linalg.norm(d))
+    if isinstance(s, Disc):
+        c, r, n = num.vector(s.center), num.scalar(s.radius), num.vector(s.axis)
+        u, w = _plane_basis(n)
+        t = np.linspace(0, 2 * math.pi, 73)
+        rim = c + r * (np.outer(np.cos(t), u) + np.outer(np.sin(t), w))
+        return ShapeView("outline", center=num.proj(c), radius=r,
+                         vertices=np.array([num.proj(p) for p in rim]))
+    assert isinstance(s, Plane)
+    return _plane(s, num)
+
+
+def _plane(s: Plane, num: Numbers) -> ShapeView:
+    """A square patch of the plane under the mechanism: centred at the points' centroid
+    projected on the plane, as wide as the points' spread."""
+    pts = np.array([num.vector(p) for p in num.inst.points.values()])
+    n = num.vector(s.normal)
+    n /= np.linalg.norm(n)
+    through = num.vector(s.through)
+    centre = pts.mean(axis=0)
+    centre = centre - ((centre - through) @ n) * n
+    half = max(float(np.abs(pts - centre).max()), float(num.inst.scale)) * 1.1
+    u, w = _plane_basis(n)
+    corners = [centre + half * (i * u + k * w) for i, k in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    return ShapeView("outline", through=num.proj(through), role="plane",
+                     vertices=np.array([num.proj(c) for c in corners]))
+
+
+def _plane_basis(n: Vec) -> tuple[Vec, Vec]:
+    """Two unit vectors spanning the plane normal to `n`."""
+    n = n / np.linalg.norm(n)
+    helper = np.array([1.0, 0, 0]) if abs(n[0]) < 0.9 else np.array([0, 1.0, 0])
+    u = np.cross(n, helper)
+    u /= np.linalg.norm(u)
+    return u, np.cross(n, u)
+
+
+def _extent(bodies: dict[str, BodyView], inst: Instant) -> tuple[tuple, float]:
+    """The bounding box of points and finite shapes, and its size (larger side)."""
+    xy = [p for b in bodies.values() for p in b.points.values()]
+    for b in bodies.values():
+        for s in b.shapes:
+            if s.kind == "circle":
+                xy += [s.center - s.radius, s.center + s.radius]
+            elif s.vertices is not None:
+                xy += list(s.vertices)
+    if not xy:
+        xy = [np.zeros(2)]
+    arr = np.array(xy)
+    lo, hi = arr.min(axis=0), arr.max(axis=0)
+    size = float(max(hi - lo))
+    if size <= 1e-12 * max(1.0, float(np.abs(arr).max())):
+        size = float(inst.scale) or 1.0
+        lo, hi = lo - size / 2, hi + size / 2
+    return (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1])), size
+
+
+def _joint_geometries(inst: Instant, solved: Any) -> dict:
+    """Each joint's evaluated geometry: the solver's when there is one, else evaluated here
+    (a joint whose geometry does not hold is left out of the drawing, not an error)."""
+    solver = getattr(solved, "solver", solved)
+    if solver is not None and hasattr(solver, "geos"):
+        return solver.geos
+    from ..engine.joints import joint_geometry
+
+    out = {}
+    for j in inst.model.joints:
+        try:
+            out[j.id] = joint_geometry(inst, j)
+        except KinematikaError:
+            continue
+    return out
+
+
+def _joint(j: Any, geo: Any, num: Numbers) -> JointView:
+    view = JointView(j.id, j.type, j.a, j.b)
+    if geo is None:
+        return view
+    if geo.at is not None:
+        view.at = num.page(geo.at)
+    if geo.along is not None:
+        d = num.page(geo.along)
+        norm = np.linalg.norm(d)
+        view.along = d / norm if norm > 1e-9 else None
+    if geo.axis is not None:
+        view.axis = num.page(geo.axis)
+    if geo.contact is not None:
+        view.contact = num.page(geo.contact.point)
+    along = j.along
+    if j.type == "slot" and hasattr(along, "start"):
+        pts = num.inst.points
+        view.span = (num.page(pts[along.start]), num.page(pts[along.end]))
+    return view
+
+
+def _mark_ground_sides(bodies: dict[str, BodyView], model: Any, geos: dict, num: Numbers) -> None:
+    """For a fixed shape another body rolls on, the side its material is on (for hatching):
+    away from the rolling body — outside a cavity, inside a drum, below a track."""
+    frame = bodies[model.frame]
+    for j in model.joints:
+        geo = geos.get(j.id)
+        if j.type not in ("rolling", "gear") or geo is None or geo.contact is None:
+            continue
+        if model.frame not in (j.a, j.b) or not frame.shapes:
+            continue
+        contact = num.page(geo.contact.point)
+        fixed = _nearest_shape(frame.shapes, contact)
+        partner = _nearest_shape(bodies[j.b if j.a == model.frame else j.a].shapes, contact)
+        if fixed is None:
+            continue
+        if fixed.kind == "line" and partner is not None and partner.kind == "circle":
+            fixed.hatch_towards = contact - partner.center
+        elif fixed.kind == "circle" and partner is not None and partner.kind == "circle":
+            fixed.material_inside = np.linalg.norm(partner.center - fixed.center) >= fixed.radius
+
+
+def _mark_gears(bodies: dict[str, BodyView], model: Any, geos: dict, num: Numbers) -> None:
+    """Gear circles are pitch circles (drawn dash-dot); the outer circle of an internal
+    contact is a ring (drawn as a band around its inside, not a filled disc)."""
+    for j in model.joints:
+        geo = geos.get(j.id)
+        if j.type not in ("rolling", "gear") or geo is None or geo.contact is None:
+            continue
+        contact = num.page(geo.contact.point)
+        circles = []
+        for name in (j.a, j.b):
+            shape = _nearest_shape(bodies[name].shapes, contact)
+            if shape is not None and shape.kind == "circle":
+                circles.append(shape)
+                if j.type == "gear":
+                    shape.role = "gear"
+        if geo.contact.kind == "internal" and len(circles) == 2:
+            outer = max(circles, key=lambda c: c.radius)
+            outer.ring = True
+
+
+def _nearest_shape(shapes: list[ShapeView], p: Vec) -> Optional[ShapeView]:
+    def gap(s: ShapeView) -> float:
+        if s.kind == "circle":
+            return abs(np.linalg.norm(p - s.center) - s.radius)
+        if s.kind == "line":
+            n = np.array([-s.direction[1], s.direction[0]])
+            return abs(float((p - s.through) @ n))
+        return math.inf
+    best = min(shapes, key=gap, default=None)
+    return best if best is not None and gap(best) < math.inf else None
+
+
+def display_name(model: Any, ref: PointRef) -> str:
+    """`B` when the bare name means this material point, else `B@body`."""
+    try:
+        if model.resolve_point(ref.point) is not None and len(model.carriers(ref.point)) == 1:
+            return ref.point
+        if model.share_motion(ref.point, model.carriers(ref.point)):
+            return ref.point
+    except KinematikaError:
+        pass
+    return str(ref)
+
+
+def vector_label(kind: str, model: Any, ref: PointRef, relative_to: Optional[str]) -> str:
+    """$v_B$, $a_{B@rod}$, $v_{B/crank}$ (relative to a body)."""
+    name = display_name(model, ref)
+    if relative_to and relative_to != model.frame:
+        name = f"{name}/{relative_to}"
+    return symbol("v" if kind == "velocity" else "a", name)
