@@ -110,6 +110,13 @@ class Solution:
     def norm(self, vec: tuple) -> Any:
         return self.inst.backend.sqrt(dot(vec, vec))
 
+    def _repr_svg_(self) -> Optional[str]:  # Jupyter: the instant as a drawing
+        try:
+            from .draw.jupyter import solution_svg
+        except ImportError:
+            return None
+        return solution_svg(self)
+
 
 def _norm(values: Any) -> float:
     return math.sqrt(sum(float(v) ** 2 for v in values))

@@ -217,7 +217,7 @@ class Motion:
         ax = cv.ax
         for ref in self._traced(trace):
             path = self.positions(ref)
-            ax.plot(*path.T, lw=0.8, ls=(0, (2, 2)), color=POINT_LABEL, alpha=0.35, zorder=1)
+            ax.plot(*path.T, lw=1.0, ls=(0, (3, 2)), color=POINT_LABEL, alpha=0.55, zorder=1)
             line, = ax.plot([], [], lw=1.6, color="#6d4c41", alpha=0.9, zorder=2,
                             gid=f"trace:{ref}")
             self.traces.append((line, path))
@@ -276,4 +276,15 @@ class Motion:
             patch.set_visible(arrow.drawn)
             magnitude = float(np.linalg.norm(self.result.points[v.ref][v.kind][k]))
             text.xy = tuple(arrow.end)
+            _beyond(text, arrow.end - arrow.start)
             text.set_text(f"{v.label} = {magnitude:.3g}")
+            text.set_visible(arrow.drawn)
+
+
+def _beyond(text: Any, direction: np.ndarray, distance: float = 5.0) -> None:
+    """Put a tip's label just beyond the tip, along the arrow."""
+    n = float(np.linalg.norm(direction))
+    c, s = (direction / n) if n > 0 else (1.0, 0.0)
+    text.xyann = (distance * c, distance * s)
+    text.set_ha("left" if c > 0.3 else "right" if c < -0.3 else "center")
+    text.set_va("bottom" if s > 0.3 else "top" if s < -0.3 else "center")
