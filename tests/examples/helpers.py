@@ -110,7 +110,7 @@ def curvature(p: Any, v: Any, a: Any) -> tuple[Any, list]:
 
 def line_meet(p: Any, d1: Any, q: Any, d2: Any) -> list:
     """Where the lines p + s d1 and q + u d2 cross (Cramer's rule)."""
-    det = d1[0] * (-d2[1]) - d1[1] * (-d2[0])
+    det = sympy.sympify(d1[0] * (-d2[1]) - d1[1] * (-d2[0]))
     s = ((q[0] - p[0]) * (-d2[1]) - (q[1] - p[1]) * (-d2[0])) / det
     return [sympy.simplify(p[0] + s * d1[0]), sympy.simplify(p[1] + s * d1[1])]
 
