@@ -1,0 +1,201 @@
+"""The general path: assemble each position by Newton's method, continuing from the last one.
+
+From an assembled position, the next increment of the swept coordinate is reached by
+iterating x ← x − A⁺ Φ(x) with A the engine's velocity matrix at the last position (the
+Jacobian of the constraints Φ in pose coordinates, see `poses`): its first iterate is the
+tangent predictor, the next ones correct. If that does not converge, or the correction is
+large next to the prediction (the sign of a jump to another branch), the increment is
+split in halves, down to 1/1024 of it; failing that the position cannot be assembled.
+Each assembled position is then solved by the engine (velocities and accelerations), and
+that solution's matrix is the Jacobian for the next increment.
+"""
+from __future__ import annotations
+
+import math
+import sys
+from typing import TYPE_CHECKING, Any, Callable, Optional
+
+import numpy as np
+
+from ..engine.motion import Motion
+from ..engine.system import InstantSolver
+from ..errors import KinematikaError
+from .constraints import residual_functions
+from .plan import Plan
+from .poses import Poses, moved_geometry, moved_instant
+from .result import SweepResult
+
+if TYPE_CHECKING:
+    from .run import Sweeper
+
+MAX_HALVINGS = 10
+CHORD_ITERATIONS = 25
+TOLERANCE = 1e-12       # step size, dimensionless (rotations; translations / length scale)
+
+
+class Assembler:
+    """Assembles the mechanism at any increment of the swept coordinate, by continuation."""
+
+    def __init__(self, sweeper: "Sweeper", plan: Plan) -> None:
+        inst = sweeper.inst
+        if inst.space.dim != 2:
+            raise KinematikaError("schema", "sweeps of 3D models are not supported yet", "sweep")
+        self.base = inst
+        self.base_geos = sweeper.solver.geos
+        self.unknowns = sweeper.solver.unknowns
+        self.owners = _owners(inst.model)
+        self.functions = residual_functions(inst, self.base_geos, plan)
+        self.scale = inst.scale
+        self.translation = np.array([(c % 3) != 0 for c in range(self.unknowns.n)], dtype=bool)
+        _check_rows(sweeper.solver, self.functions)
+
+    def residual(self, poses: Poses, dq: float) -> np.ndarray:
+        return np.array([x for _, f in self.functions for x in f(poses, dq)], dtype=float)
+
+    def solver_at(self, poses: Poses) -> InstantSolver:
+        """The engine at `poses`, its matrix analysed (raises `singular` at a dead point)."""
+        inst = moved_instant(self.base, poses, self.owners)
+        geos = {jid: moved_geometry(g, poses, inst) for jid, g in self.base_geos.items()}
+        solver = InstantSolver(inst, geos)
+        solver.prepare()
+        return solver
+
+    def size(self, dx: np.ndarray) -> float:
+        return float(np.abs(np.where(self.translation, dx / self.scale, dx)).max(initial=0.0))
+
+    def step(self, poses: Poses, solver: InstantSolver, dq_from: float, dq_to: float,
+             depth: int = 0) -> tuple[Poses, InstantSolver]:
+        """The poses at increment `dq_to`, from the assembled `poses` at `dq_from`."""
+        found = self._corrected(poses, solver, dq_to)
+        if found is not None:
+            return found, self.solver_at(found)
+        if depth >= MAX_HALVINGS:
+            raise _NotAssembled()
+        middle = 0.5 * (dq_from + dq_to)
+        half, half_solver = self.step(poses, solver, dq_from, middle, depth + 1)
+        return self.step(half, half_solver, middle, dq_to, depth + 1)
+
+    def _corrected(self, poses: Poses, solver: InstantSolver, dq: float) -> Optional[Poses]:
+        """Chord iterations from `poses` with the matrix of `solver`; None when they fail."""
+        current = poses
+        predicted = None
+        last = math.inf
+        for _ in range(CHORD_ITERATIONS):
+            r = self.residual(current, dq)
+            dx = -np.asarray(solver.solve_linear(list(r), check=False))
+            size = self.size(dx)
+            if not math.isfinite(size) or size > 2 * last + 1e-9:
+                return None
+            current = current.stepped(dx, self.unknowns)
+            if predicted is None:
+                predicted, first = current, size
+            elif size > 0.3 * first + 1e-9:
+                return None                     # the correction rivals the step: a jump
+            last = size
+            if size < TOLERANCE:
+                self._keep_aux(current)
+                return current
+        return None
+
+    def _keep_aux(self, poses: Poses) -> None:
+        """Record the continuous angles (rolling joints) of the newly assembled poses."""
+        for _, f in self.functions:
+            if hasattr(f, "aux"):
+                poses.aux[f.key] = f.aux(poses)
+
+
+class _NotAssembled(Exception):
+    pass
+
+
+def _owners(model: Any) -> dict[str, str]:
+    """Which body's material point stands for each point name in a moved instant."""
+    owners = {p: (model.carriers(p) or [model.frame])[0] for p in model.points}
+    for d in model.drivers:
+        if d.kind == "velocity":
+            owners[d.point.point] = d.point.body
+    return owners
+
+
+def _check_rows(solver: InstantSolver, functions: list) -> None:
+    """The constraints must match the engine's rows one for one (by place)."""
+    if solver.analysis is None:
+        solver.prepare()
+    engine = [r.where for r in solver.rows_v]
+    poses = Poses.drawn(solver.inst.ref, list(solver.unknowns.offset))
+    ours = [where for where, f in functions for _ in f(poses, 0.0)]
+    if engine != ours:
+        raise RuntimeError(f"position constraints do not match the engine rows: {ours} != {engine}")
+
+
+def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
+                 progress: bool | Callable[[int, int], None]) -> SweepResult:
+    """Every row of the plan by continuation, solved by the engine; NaN rows if skipped."""
+    from .run import bad_row, dead_points
+
+    asm = Assembler(sweeper, plan)
+    model, n = sweeper.model, plan.steps + 1
+    bodies = {b: {q: np.full(n, np.nan) for q in ("angle", "omega", "alpha")} for b in model.bodies}
+    motions = {(name, body): tuple(np.full((2, n), np.nan) for _ in range(3))
+               for name, body, _ in sweeper.motions}
+    ok = np.zeros(n, dtype=bool)
+    singular = np.zeros(n, dtype=bool)
+    poses = Poses.drawn(sweeper.inst.ref, list(asm.unknowns.offset))
+    solver, motion = sweeper.solver, sweeper.drawn
+    dq_good = 0.0
+    report = _reporter(progress, n)
+    for k, dq in enumerate(plan.increments):
+        if k > 0:
+            try:
+                poses, solver = asm.step(poses_good, solver_good, dq_good, float(dq))
+                motion = solver.solve()
+            except (_NotAssembled, KinematikaError) as err:
+                kind = err.kind if isinstance(err, KinematikaError) else "assembly"
+                kind = "assembly" if kind not in ("singular", "assembly") else kind
+                if not skip_bad:
+                    report(None)
+                    raise bad_row(plan, k, kind) from None
+                singular[k] = kind == "singular"
+                report(k + 1)
+                continue
+        _store(sweeper, poses, motion, k, bodies, motions)
+        ok[k] = True
+        poses_good, solver_good, dq_good = poses, solver, float(dq)
+        report(k + 1)
+    report(None)
+    return sweeper.result(plan, ok, bodies, motions, dead_points(plan.coordinate, ok, singular))
+
+
+def _store(sweeper: "Sweeper", poses: Poses, motion: Motion, k: int, bodies: dict, motions: dict) -> None:
+    for b, values in bodies.items():
+        s = motion.states[b]
+        values["angle"][k] = math.degrees(poses.angle(b))
+        values["omega"][k] = s.omega
+        values["alpha"][k] = s.alpha
+    for (name, body), (pos, vel, acc) in motions.items():
+        p = poses.point(body, sweeper.points[name])
+        state = motion.states[body]
+        pos[:, k] = p
+        vel[:, k] = motion.velocity(state, p)
+        acc[:, k] = motion.acceleration(state, p)
+
+
+def _reporter(progress: bool | Callable[[int, int], None], total: int) -> Callable[[Optional[int]], None]:
+    """A callable (done) for a callable or a rich progress bar (on a terminal), or a no-op."""
+    if callable(progress):
+        return lambda done: progress(done, total) if done is not None else None
+    if not progress or not sys.stderr.isatty():
+        return lambda done: None
+    from rich.progress import Progress
+
+    bar = Progress(transient=True)
+    task = bar.add_task("sweeping", total=total)
+    bar.start()
+
+    def update(done: Optional[int]) -> None:
+        if done is None:
+            bar.stop()
+        else:
+            bar.update(task, completed=done)
+
+    return update
