@@ -15,7 +15,7 @@ from ..questions import answer
 from .options import DrawOptions
 from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView,
                     display_name, vector_label)
-from .style import equation, plain_name, symbol
+from .style import equation, number, plain_name, symbol
 
 POINT_QUESTIONS = ("velocity", "acceleration", "curvature", "intrinsic", "decompose")
 KINDS = ("velocity", "acceleration")
@@ -31,36 +31,55 @@ def add_results(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> N
 
 # vectors ---------------------------------------------------------------------------------
 def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
+    tol = 1e-9 * scene.size
     for kind in KINDS:
         flag = options.velocities if kind == "velocity" else options.accelerations
         for ref, rel in vector_targets(sol, options, kind, flag):
             value = (sol.velocity if kind == "velocity" else sol.acceleration)(ref, rel)
             vec = num.vector(value)
+            origin = num.page(sol.position(ref))
+            label = vector_label(kind, sol.model, ref, rel)
+            if any(v.kind == kind and v.label == label and np.allclose(v.origin, origin, atol=tol)
+                   and np.allclose(v.value, num.proj(vec), atol=1e-9 * (1 + v.magnitude))
+                   for v in scene.vectors):
+                continue      # the same vector of a point shared by two bodies
             magnitude = float(np.linalg.norm(vec))
-            scene.vectors.append(VectorView(
-                kind, str(ref), vector_label(kind, sol.model, ref, rel),
-                num.page(sol.position(ref)), num.proj(vec), magnitude,
-                magnitude_text(sol, value, magnitude)))
+            scene.vectors.append(VectorView(kind, str(ref), label, origin, num.proj(vec), magnitude,
+                                            magnitude_text(sol, value, magnitude)))
 
 
 def vector_targets(sol: Any, options: DrawOptions, kind: str,
-                    flag: Optional[bool]) -> list[tuple[PointRef, Optional[str]]]:
-    """(material point, frame) pairs to draw a vector of `kind` at, in order, no repeats."""
+                   flag: Optional[bool]) -> list[tuple[PointRef, Optional[str]]]:
+    """(material point, frame) pairs to draw a vector of `kind` at, in order, no repeats.
+
+    A model without an `ask` section (every point asked by default) counts as asking
+    nothing in particular: velocities at its moving points, no accelerations."""
     model = sol.model
-    asked = [(q.target, q.relative_to) for q in model.questions if q.kind == kind]
+    default = default_ask(model)
+    asked = [] if default else [(q.target, q.relative_to) for q in model.questions
+                                if q.kind == kind]
     if flag is False:
         return []
-    if flag is None and not options.points:
+    if flag is None and not options.points and not default:
         return _unique(asked)
     if flag is None and not asked and kind != "velocity":
         return []
     if options.points:
         shown = [(model.resolve_point(p, "--points"), None) for p in options.points]
     else:
-        shown = [(q.target, q.relative_to if q.kind == kind else None)
-                 for q in model.questions if q.kind in POINT_QUESTIONS]
+        shown = [] if default else [(q.target, q.relative_to if q.kind == kind else None)
+                                    for q in model.questions if q.kind in POINT_QUESTIONS]
         shown = shown or _moving_points(sol)
     return _unique(shown)
+
+
+def default_ask(model: Any) -> bool:
+    """Whether the questions are the contract's default (no `ask` section was written)."""
+    expected = {(k, b) for b in model.moving_bodies for k in ("omega", "alpha")}
+    expected |= {(k, str(r)) for r in model.material_points() if r.body != model.frame
+                 for k in ("velocity", "acceleration")}
+    given = {(q.kind, str(q.target)) for q in model.questions if not q.relative_to}
+    return bool(expected) and given == expected and len(model.questions) == len(expected)
 
 
 def _unique(pairs: list) -> list:
@@ -74,14 +93,19 @@ def _unique(pairs: list) -> list:
 
 
 def _moving_points(sol: Any) -> list[tuple[PointRef, None]]:
-    """Every material point of a moving body; coincident points moving alike appear once."""
+    """Every material point of a moving body that moves; coincident points moving alike
+    appear once."""
     out, seen = [], set()
+    inst = sol.inst
+    speed, accel = sol.scales()
     for ref in sol.model.material_points():
         if ref.body == sol.model.frame:
             continue
-        inst = sol.inst
+        v, a = inst.numvec(sol.velocity(ref)), inst.numvec(sol.acceleration(ref))
+        if np.linalg.norm(v) <= 1e-9 * speed and np.linalg.norm(a) <= 1e-9 * accel:
+            continue
         key = tuple(round(x / inst.scale, 9) for x in inst.numvec(sol.position(ref))) + \
-            tuple(round(x, 6) for x in inst.numvec(sol.velocity(ref)))
+            tuple(round(x / max(speed, 1e-300), 6) for x in v)
         if key not in seen:
             seen.add(key)
             out.append((ref, None))
@@ -129,7 +153,8 @@ def _add_centre(scene: Scene, num: Numbers, value: dict, key: str, label: str,
     else:
         d = num.page(value["direction"])
         scene.marks.append(MarkView("icr", key, label, direction=d, pair=pair))
-        scene.notes.append(f"{_bare(label)} at infinity, direction ({d[0]:.3g}, {d[1]:.3g})")
+        x, y = (number(c) for c in d)
+        scene.notes.append(f"{_bare(label)} at infinity, direction ({x}, {y})")
 
 
 def _bare(label: str) -> str:

@@ -66,7 +66,7 @@ def arrow_patch(arrow: Arrow, gid: str) -> FancyArrowPatch:
     colour = KIND_COLOURS[arrow.view.kind]
     return FancyArrowPatch(tuple(arrow.start), tuple(arrow.end), arrowstyle="-|>",
                            mutation_scale=15, lw=2.2, color=colour, shrinkA=0, shrinkB=0,
-                           zorder=9, gid=gid)
+                           zorder=10 if arrow.view.kind == "velocity" else 9, gid=gid)
 
 
 def paint_vectors(cv: Canvas, drawn: list[Arrow]) -> None:
