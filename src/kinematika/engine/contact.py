@@ -155,7 +155,8 @@ def _disc_plane(inst: Instant, joint: Joint, dc: Disc, dbody: str, pl: Plane,
                               "touches along its face, not at a point", joint.where)
     bk = inst.backend
     side = 1 if inst.num(dot(sub(dc.center, pl.through), n)) >= 0 else -1
-    norm_m = bk.sqrt(dot(m, m))
+    # |m|² = 1 − (n·a)² for unit n, a: the short form keeps symbolic roots simple
+    norm_m = bk.sqrt(1 - dot(n, a) ** 2) if inst.symbolic else bk.sqrt(dot(m, m))
     w = tuple(bk.simplify(-side * x / norm_m) for x in m)
     reach = side * dc.radius                   # J = C − reach m/|m|
     point = add(dc.center, scale(dc.radius, w))
