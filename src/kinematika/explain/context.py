@@ -11,7 +11,7 @@ from typing import Any, Optional
 from ..algebra.vectors import sub
 from ..model.model import PointRef
 from ..report.values import number
-from ..solution import Solution
+from ..solution import ZERO, Solution
 from .document import Sym, Value
 
 
@@ -60,17 +60,19 @@ class Ctx:
 
     # values ----------------------------------------------------------------------------------
     def scale_of(self, unit: str) -> float:
+        """The mechanism's own size of a kind of quantity (accelerations at least ω·v)."""
         sol = self.sol
-        return {"speed": sol.speed_scale(), "accel": sol.accel_scale(), "rate": sol.rate_scale(),
-                "rate2": sol.accel_scale() / self.inst.scale, "len": self.inst.scale}.get(unit, 1.0)
+        accel = max(sol.accel_scale(), sol.rate_scale() * sol.speed_scale())
+        return {"speed": sol.speed_scale(), "accel": accel, "rate": sol.rate_scale(),
+                "rate2": accel / self.inst.scale, "len": self.inst.scale}.get(unit, 1.0)
 
     def clean(self, x: Any, unit: str) -> Any:
-        """Numbers rounded to 12 digits with round-off set to 0; symbols as they are."""
+        """Numbers rounded to 12 digits, below the contract's zero (1e-9 of the scale) 0."""
         if isinstance(x, tuple):
             return tuple(self.clean(c, unit) for c in x)
         if self.symbolic:
             return x
-        return number(x, self.scale_of(unit))
+        return 0.0 if abs(x) <= ZERO * self.scale_of(unit) else number(x)
 
     def value(self, x: Any, unit: str) -> Value:
         return Value(self.clean(x, unit), unit)

@@ -91,6 +91,7 @@ class Equation:
     relative_to: Optional[str] = None
     figure: bool = True                          # draw its polygon (planar)
     polygon: Optional["Figure"] = None           # filled in by the builder
+    position: Optional[tuple] = None             # where the point is, when it has no name
 
 
 @dataclass

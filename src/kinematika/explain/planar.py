@@ -172,7 +172,7 @@ class PlanarSteps:
         if lv == "v":
             target = Term(Sym("v", name), ctx.clean(ctx.vel(j.b, name), "speed"), Ann("?"), Ann("?"),
                           unknown=True, kind="point")
-            eq = Equation(target, sides, "v", ctx.ref(name, j.b))
+            eq = Equation(target, sides, "v", ctx.ref(name, j.b), position=contact.point)
             return [msg("rolling.noslip", joint=j.id, a=j.a, b=j.b, point=name), eq]
         rel = Term(Sym("a", f"{name}∈{j.b}/{j.a}"), ctx.clean(ctx.acc(j.b, name, j.a), "accel"),
                    Ann("M"), Ann("para", msg("dir.normal")),
@@ -180,7 +180,7 @@ class PlanarSteps:
                    False, "contact")
         target = Term(Sym("a", f"{name}∈{j.b}"), ctx.clean(ctx.acc(j.b, name), "accel"),
                       Ann("?"), Ann("?"), unknown=True, kind="point")
-        eq = Equation(target, [sides[0], sides[1] + [rel]], "a", ctx.ref(name, j.b))
+        eq = Equation(target, [sides[0], sides[1] + [rel]], "a", ctx.ref(name, j.b), position=contact.point)
         return [msg("rolling.kept", joint=j.id, a=j.a, b=j.b, point=name), eq]
 
     def contact_name(self, j: Joint) -> str:

@@ -35,7 +35,7 @@ def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: boo
     name = segment(p, q) + (f"/{relative_to}" if relative_to else "")
     if level == "v":
         value = sp.cross(ctx.omega(body, relative_to), r)
-        mag = Ann("?") if unknown else Ann("M", [w, f"·{seg}"])
+        mag = Ann("?") if unknown else Ann("M", [w, f"·{seg}"] if ctx.planar else "")
         return [Term(Sym("v", name), ctx.clean(value, "speed"), mag, Ann("perp", seg),
                      [w, f" × {seg}"], unknown, "rotation")]
     om = ctx.omega(body, relative_to)
@@ -43,10 +43,11 @@ def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: boo
     tangential = sp.cross(ctx.alpha(body, relative_to), r)
     al = alpha_sym(body, relative_to, vector=not ctx.planar)
     how_n = [w, " × (", w, f" × {seg})"] if not ctx.planar else [w, f"² · {back}"]
-    return [Term(Sym("a", name, "n"), ctx.clean(normal, "accel"), Ann("M", [w, f"²·{seg}"]),
-                 Ann("para", back), how_n, False, "normal"),
+    # in space ω × (ω × r) points to the axis of ω, along r only in the plane
+    return [Term(Sym("a", name, "n"), ctx.clean(normal, "accel"), Ann("M", [w, f"²·{seg}"] if ctx.planar else ""),
+                 Ann("para", back) if ctx.planar else Ann("D"), how_n, False, "normal"),
             Term(Sym("a", name, "t"), ctx.clean(tangential, "accel"),
-                 Ann("?") if unknown else Ann("M", [al, f"·{seg}"]), Ann("perp", seg),
+                 Ann("?") if unknown else Ann("M", [al, f"·{seg}"] if ctx.planar else ""), Ann("perp", seg),
                  [al, f" × {seg}"], unknown, "tangential")]
 
 

@@ -69,7 +69,10 @@ class LatexRenderer(Renderer):
         return f"${self.math_sym(s)}$"
 
     def power(self, mantissa: str, exponent: int) -> str:
-        return f"${mantissa.replace('−', '-')}\\times 10^{{{exponent}}}$"
+        return f"{mantissa}\\times 10^{{{exponent}}}"
+
+    def number(self, x: float) -> str:
+        return "$" + super().number(x).replace("−", "-") + "$"
 
     def formula(self, expr: Any) -> str:
         return f"${latex_formula(expr)}$"
@@ -92,7 +95,7 @@ class LatexRenderer(Renderer):
             mag, dir_ = self.ann(t.mag), self.ann(t.dir)
             core = self.math_sym(t.sym)
             if t.unknown:
-                core = r"\color{red!60!black}" + core
+                core = r"\textcolor{red!60!black}{" + core + "}"
             return rf"\underset{{\text{{\scriptsize {dir_}}}}}{{\overset{{\text{{\scriptsize {mag}}}}}{{{core}}}}}"
         parts = [cell(eq.target)]
         for side in eq.sides:

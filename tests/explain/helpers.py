@@ -1,0 +1,39 @@
+"""Explanations of the repository's examples, built once per test run, and the checks that
+tie an explanation's numbers to the solver's."""
+from __future__ import annotations
+
+import functools
+import math
+from pathlib import Path
+from typing import Any
+
+import kinematika
+from kinematika.explain import build
+from kinematika.explain.document import Document
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLES = ROOT / "examples"
+# the worked examples of the notes: seeds 000 (the fan), 001 and 002
+WORKED = sorted(p.stem for p in EXAMPLES.glob("*.yaml") if p.stem.startswith(("seed_", "fan_")))
+ALL = sorted(p.stem for p in EXAMPLES.glob("*.yaml"))
+
+
+@functools.lru_cache(maxsize=None)
+def explained(name: str) -> tuple[kinematika.Solution, Document]:
+    sol = kinematika.solve(EXAMPLES / f"{name}.yaml")
+    return sol, build(sol)
+
+
+def num(sol: kinematika.Solution, x: Any) -> Any:
+    """Floats (symbols at the solver's sample values)."""
+    if isinstance(x, (tuple, list)):
+        return tuple(num(sol, c) for c in x)
+    return sol.inst.num(x)
+
+
+def close(sol: kinematika.Solution, a: Any, b: Any, scale: float) -> bool:
+    a, b = num(sol, a), num(sol, b)
+    a = a if isinstance(a, tuple) else (a,)
+    b = b if isinstance(b, tuple) else (b,)
+    return len(a) == len(b) and all(math.isclose(x, y, rel_tol=1e-7, abs_tol=1e-9 * max(scale, 1e-12))
+                                    for x, y in zip(a, b))

@@ -1,0 +1,182 @@
+"""Each explanation's equations hold with the solver's values, what it says is known of
+each term (⊥, ∥) is true, and what it reads off them equals the solver's answers."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from kinematika.algebra.vectors import add, dot
+from kinematika.explain.document import CentreNote, Sym
+from kinematika.model.model import PointRef
+
+from .helpers import ALL, close, explained, num
+
+
+def _sum(terms):
+    out = terms[0].value
+    for t in terms[1:]:
+        out = add(out, t.value)
+    return out
+
+
+def _scale(sol, level):
+    accel = max(sol.accel_scale(), sol.rate_scale() * sol.speed_scale())
+    return {"v": sol.speed_scale(), "a": accel, "w": sol.rate_scale(),
+            "al": accel / sol.inst.scale}[level] or 1.0
+
+
+def _direction(sol, ref, eq):
+    """The vector a ⊥/∥ annotation refers to: a segment 'AB', a guide, a velocity."""
+    ctx_points = dict(sol.inst.points)
+    if isinstance(ref, Sym):
+        return None
+    if isinstance(ref, str):
+        names = ref.split("-") if "-" in ref else list(ref)
+        if len(names) == 2 and all(n in ctx_points for n in names):
+            p, q = ctx_points[names[0]], ctx_points[names[1]]
+            return tuple(b - a for a, b in zip(p, q))
+        return None
+    if ref.key == "dir.guide":
+        return sol.solver.geos[ref.args["joint"]].along
+    return None
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_every_equation_adds_up(name):
+    sol, doc = explained(name)
+    assert doc.equations(), "an explanation without equations"
+    for eq in doc.equations():
+        scale = _scale(sol, eq.level)
+        for side in eq.sides:
+            assert close(sol, _sum(side), eq.target.value, scale), (name, eq.target.sym, side)
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_targets_are_the_solvers_motion(name):
+    sol, doc = explained(name)
+    checked = 0
+    for eq in doc.equations():
+        if eq.point is None or eq.level not in ("v", "a"):
+            continue
+        state = sol.state(eq.point.body, eq.relative_to)
+        where = eq.position if eq.position is not None else sol.inst.points[eq.point.point]
+        motion = sol.motion.velocity if eq.level == "v" else sol.motion.acceleration
+        expected = motion(state, where)
+        assert close(sol, eq.target.value, expected, _scale(sol, eq.level)), (name, eq.target.sym)
+        checked += 1
+    assert checked
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_annotations_are_true(name):
+    """⊥ AB terms are perpendicular to AB, ∥ terms parallel, '?' only on solved terms."""
+    sol, doc = explained(name)
+    for eq in doc.equations():
+        for t in [x for side in eq.sides for x in side]:
+            value = num(sol, t.value)
+            size = math.sqrt(sum(c * c for c in value))
+            if t.mag.code == "?" or t.dir.code == "?":
+                assert t.unknown, (name, t.sym)
+            if t.dir.code not in ("perp", "para") or size < 1e-9 * _scale(sol, eq.level):
+                continue
+            d = _direction(sol, t.dir.ref, eq)
+            if d is None:
+                continue
+            d = num(sol, d)
+            cos = dot(value, d) / (size * math.sqrt(dot(d, d)))
+            if t.dir.code == "perp":
+                assert abs(cos) < 1e-7, (name, t.sym, cos)
+            else:
+                assert abs(abs(cos) - 1) < 1e-7, (name, t.sym, cos)
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_rates_read_off_the_terms(name):
+    """ω = v_BA / AB and α = aᵗ_BA / AB: the term equals ω k × AB; ρ = v²/|aⁿ|."""
+    sol, doc = explained(name)
+    for d in doc.derived():
+        if d.kind in ("omega", "alpha") and d.body:
+            solver = sol.omega(d.body) if d.kind == "omega" else sol.alpha(d.body)
+            scale = _scale(sol, "w" if d.kind == "omega" else "al")
+            assert close(sol, d.value.value, solver if sol.space.dim == 2 else tuple(solver), scale)
+        if d.source is None:
+            continue
+        if d.kind == "radius":
+            v, an = num(sol, d.arm), num(sol, d.source.value)
+            assert math.isclose(num(sol, d.value.value), dot(v, v) / math.sqrt(dot(an, an)), rel_tol=1e-7)
+        else:
+            made = sol.space.cross(d.value.value, d.arm)
+            assert close(sol, made, d.source.value, _scale(sol, "v") + _scale(sol, "a")), (name, d.sym)
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_rolling_contacts_differ_along_the_normal(name):
+    """Contact kept: the relative acceleration of the contact points is along the normal."""
+    sol, doc = explained(name)
+    for eq in doc.equations():
+        for t in [x for side in eq.sides for x in side if x.kind == "contact"]:
+            joint = next(j for j in sol.model.joints if j.type in ("rolling", "gear")
+                         and t.sym.sub.endswith(f"/{j.a}") and f"∈{j.b}/" in t.sym.sub)
+            normal = num(sol, sol.solver.geos[joint.id].contact.normal)
+            value = num(sol, t.value)
+            cross = value[0] * normal[1] - value[1] * normal[0]
+            assert abs(cross) < 1e-7 * _scale(sol, "a")
+
+
+def test_fan_in_the_notes_three_ways():
+    """Seed 000: ω = (0.5, 0.1, 0), α = α1 + α2 + ω1 × ω2 = (0.01, 0.2, −0.05), v_P = (0, 0, 0.09),
+    a_P = (0.024, −0.075, −0.117), drag v_C = (0, 0, −0.06), relative 0.15 k, Coriolis 2 ω1 × v_rel."""
+    sol, doc = explained("fan_composition")
+    rates = {(e.level, e.target.sym.sub): e for e in doc.equations() if e.level in ("w", "al")}
+    alpha = rates[("al", "blades")]
+    assert close(sol, alpha.target.value, (0.01, 0.2, -0.05), 1)
+    assert close(sol, alpha.sides[0][2].value, (0, 0, -0.05), 1)       # ω1 × ω2
+    assert close(sol, rates[("w", "blades")].target.value, (0.5, 0.1, 0), 1)
+    parts = [e for e in doc.equations() if e.sides[0][0].kind == "drag"]
+    v, a = (next(e for e in parts if e.level == lv) for lv in ("v", "a"))
+    assert close(sol, v.target.value, (0, 0, 0.09), 1)
+    assert close(sol, v.sides[0][0].value, (0, 0, -0.06), 1) and close(sol, v.sides[0][1].value, (0, 0, 0.15), 1)
+    assert close(sol, a.target.value, (0.024, -0.075, -0.117), 1)
+    assert close(sol, a.sides[0][2].value, (0.03, 0, 0), 1)              # 2 (0.1 j) × (0.15 k)
+
+
+def test_four_bar_against_its_loop_equations():
+    """ω3, ω4 of the bundled four-bar by Cramer on the loop equation, independent of the engine."""
+    sol, doc = explained("four_bar")
+    bx = (48 + 8 * math.sqrt(2)) / 17
+    by = 4 * bx - 11
+    ab, o4b = (bx, by - 1.0), (bx - 4.0, by)
+    # ω3 k×AB − ω4 k×O4B = −ω2 k×OA with ω2 = 10, OA = (0, 1): k×OA = (−1, 0)
+    c1, c2, rhs = (-ab[1], ab[0]), (o4b[1], -o4b[0]), (10.0, 0.0)
+    det = c1[0] * c2[1] - c1[1] * c2[0]
+    w3 = (rhs[0] * c2[1] - rhs[1] * c2[0]) / det
+    w4 = (c1[0] * rhs[1] - c1[1] * rhs[0]) / det
+    read = {d.body: d.value.value for d in doc.derived() if d.kind == "omega" and d.source is not None}
+    assert math.isclose(read["coupler"], w3, rel_tol=1e-9) and math.isclose(read["rocker"], w4, rel_tol=1e-9)
+
+
+def test_symbolic_derivations_of_the_notes():
+    """Seed 002: epicyclic planet turns at −5ω with its centre 2r/5 from its axle, the sun at
+    7ω; gear change: the ring turns at 4Ω/3."""
+    import sympy
+
+    def rate(name, body):
+        sol, doc = explained(name)
+        found = [d.value.value for d in doc.derived() if d.kind == "omega" and d.body == body]
+        return sol, sympy.simplify(found[0])
+
+    sol, w = rate("seed_c5_1_4_epicyclic", "planet1")
+    omega = next(s for s in sol.inst.env.values() if str(s) == "w")
+    assert sympy.simplify(w + 5 * omega) == 0
+    _, sun = rate("seed_c5_1_4_epicyclic", "sun")
+    assert sympy.simplify(sun - 7 * omega) == 0
+    _, doc = explained("seed_c5_1_4_epicyclic")
+    note = next(c for c in doc.blocks() if isinstance(c, CentreNote) and set(c.pair) == {"ground", "planet1"})
+    r = next(s for s in sol.inst.env.values() if str(s) == "r")
+    axle = sol.inst.points["A1"]
+    gap = sympy.sqrt(sum((sympy.sympify(p) - q) ** 2 for p, q in zip(note.value["point"], axle)))
+    assert sympy.simplify(gap - sympy.Rational(2, 5) * r) == 0
+    sol, w = rate("seed_c5_e2_gear_change", "ring")
+    omega = next(s for s in sol.inst.env.values() if str(s) == "Omega")
+    assert sympy.simplify(w - sympy.Rational(4, 3) * omega) == 0
