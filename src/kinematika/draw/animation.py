@@ -223,7 +223,7 @@ class Motion:
             self.traces.append((line, path))
         for v in self.live:
             patch = arrow_patch(arrow_for(v, 1.0, 1.0, np.zeros(2), np.array([1.0, 0.0]), 1.0),
-                                f"{v.kind}:{v.ref}")
+                                v.key)
             ax.add_patch(patch)
             text = ax.annotate("", xy=(0, 0), xytext=(4, 4), textcoords="offset points",
                                fontsize=8.5, color=KIND_COLOURS[v.kind], zorder=20,

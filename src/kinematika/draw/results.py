@@ -44,8 +44,9 @@ def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
                    for v in scene.vectors):
                 continue      # the same vector of a point shared by two bodies
             magnitude = float(np.linalg.norm(vec))
+            rel = rel if rel != sol.model.frame else None
             scene.vectors.append(VectorView(kind, str(ref), label, origin, num.proj(vec), magnitude,
-                                            magnitude_text(sol, value, magnitude)))
+                                            magnitude_text(sol, value, magnitude), rel))
 
 
 def vector_targets(sol: Any, options: DrawOptions, kind: str,

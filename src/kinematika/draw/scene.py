@@ -72,6 +72,12 @@ class VectorView:
     value: Vec                             # on the page
     magnitude: float                       # of the model vector
     text: str                              # the magnitude as shown (a number or a formula)
+    relative_to: Optional[str] = None
+
+    @property
+    def key(self) -> str:
+        """Identifies the arrow (its gid): `velocity:B@rocker`, `velocity:B@rod/crank`."""
+        return f"{self.kind}:{self.ref}" + (f"/{self.relative_to}" if self.relative_to else "")
 
 
 @dataclass

@@ -77,8 +77,8 @@ def paint_vectors(cv: Canvas, drawn: list[Arrow]) -> None:
         if arrow.enlarged:
             text += " (enlarged)"
         if arrow.drawn:
-            cv.ax.add_patch(arrow_patch(arrow, f"{v.kind}:{v.ref}"))
+            cv.ax.add_patch(arrow_patch(arrow, v.key))
             cv.board.avoid(arrow.start, arrow.end)
-            cv.label(arrow.end, text, colour, 1, f"{v.kind}:{v.ref}", arrow.end - arrow.start)
+            cv.label(arrow.end, text, colour, 1, v.key, arrow.end - arrow.start)
         else:
-            cv.label(arrow.start, text, colour, 1, f"{v.kind}:{v.ref}")
+            cv.label(arrow.start, text, colour, 1, v.key)
