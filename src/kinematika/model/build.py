@@ -243,7 +243,11 @@ class _Builder:
                 raise KinematikaError("schema", f"unknown joint {raw.joint!r} (joints: {', '.join(ids)})",
                                       f"{where}.joint")
             joint = next(j for j in self.joint_list if j.id == raw.joint)
-            if joint.type not in {"revolute", "prismatic", "slot", "cylindrical"}:
+            if joint.type == "cylindrical":
+                raise KinematikaError("schema", "a cylindrical joint has two rates (turning and "
+                                      "sliding): drive the body's omega relative_to the other body "
+                                      "and a point's velocity along the axis", where)
+            if joint.type not in {"revolute", "prismatic", "slot"}:
                 raise KinematikaError("schema", f"a {joint.type} joint has no rate to drive; drive a "
                                       "body's omega or a point's velocity", where)
             return Driver("joint", i, joint=raw.joint, value=self.expr(raw.rate, f"{where}.rate"),
