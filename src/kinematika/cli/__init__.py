@@ -1,7 +1,7 @@
 """The `kinematika` command: one module per subcommand, all views of the one engine."""
 from __future__ import annotations
 
-from . import centres, draw, explain, solve  # noqa: F401  (each module registers its command)
+from . import centres, draw, explain, solve, sweep  # noqa: F401  (each module registers its command)
 from .app import app
 
 

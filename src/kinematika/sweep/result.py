@@ -39,12 +39,27 @@ class SweepResult:
         return len(self.coordinate)
 
     def to_json(self) -> dict[str, Any]:
-        """The contract's JSON: coordinate, bodies and points, one entry per row (null if bad)."""
-        return {"coordinate": _column(self.coordinate),
-                "bodies": {name: {q: _column(v) for q, v in values.items()}
+        """The contract's JSON: coordinate, bodies and points, one entry per row (null if bad).
+
+        Numbers are given to 12 significant digits, with round-off (below 1e-12 of the
+        largest value of the same quantity) written as 0, as `solve` does.
+        """
+        scales = self._scales()
+        return {"coordinate": _column(clean(self.coordinate, np.abs(self.coordinate).max(initial=0.0))),
+                "bodies": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
                            for name, values in self.bodies.items()},
-                "points": {name: {q: _column(v) for q, v in values.items()}
+                "points": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
                            for name, values in self.points.items()}}
+
+    def _scales(self) -> dict[str, float]:
+        """The largest magnitude of each quantity over every body or point and row."""
+        out: dict[str, float] = {}
+        for group in (self.bodies, self.points):
+            for values in group.values():
+                for q, v in values.items():
+                    top = float(np.nanmax(np.abs(v))) if np.isfinite(v).any() else 0.0
+                    out[q] = max(out.get(q, 0.0), top)
+        return out
 
     def columns(self) -> list[tuple[str, np.ndarray]]:
         """One (header, values) per scalar: coordinate, body quantities, point components."""
@@ -63,13 +78,27 @@ class SweepResult:
 
     def to_csv(self, path: str | Path) -> None:
         """One row per position, one column per scalar, a header; bad rows have empty cells."""
-        cols = self.columns()
+        scales = self._scales()
+        cols = [(h, clean(v, scales.get(h.rpartition(".")[2].rsplit("_", 1)[0], 0.0)))
+                for h, v in self.columns()]
         table = np.column_stack([v for _, v in cols]) if cols else np.zeros((0, 0))
         with open(path, "w", newline="", encoding="utf-8") as f:
             writer = csv.writer(f)
             writer.writerow([h for h, _ in cols])
             for row in table.tolist():
                 writer.writerow(["" if math.isnan(x) else repr(x) for x in row])
+
+
+def clean(values: np.ndarray, scale: float) -> np.ndarray:
+    """12 significant digits; magnitudes below 1e-12·scale set to 0 (NaN stays NaN)."""
+    values = np.asarray(values, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        magnitude = np.abs(values)
+        digits = 11 - np.floor(np.log10(np.where(magnitude > 0, magnitude, 1.0)))
+        factor = 10.0 ** digits
+        out = np.round(values * factor) / factor
+    out = np.where(magnitude <= 1e-12 * scale, 0.0, out)
+    return out + 0.0
 
 
 def _column(values: np.ndarray) -> list:

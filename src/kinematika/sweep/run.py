@@ -54,19 +54,26 @@ class Sweeper:
         self.solver = InstantSolver(self.inst)
         self.drawn = self.solver.solve()
         self.points = {k: tuple(float(c) for c in v) for k, v in self.inst.points.items()}
+        self.directions = {jid: tuple(float(c) for c in g.along) for jid, g in self.solver.geos.items()
+                           if g.along is not None}
+        from ..structure.assur import assur_groups
+
+        self.groups = assur_groups(model)
         self.closed = self._closed_form()
         self.motions = motion_classes(model)
 
     def _closed_form(self) -> Any:
-        from ..structure.assur import assur_groups
         from .closed_form import ClosedForm, applicable
 
-        groups = assur_groups(self.model)
-        if not applicable(self.model, groups, self.joint, self.driver):
+        if not applicable(self.model, self.groups, self.joint, self.driver):
             return None
-        directions = {jid: tuple(float(c) for c in g.along) for jid, g in self.solver.geos.items()
-                      if g.along is not None}
-        return ClosedForm(self.model, self.points, directions, groups, self.joint, self.drawn)
+        return ClosedForm(self.model, self.points, self.directions, self.groups, self.joint, self.drawn)
+
+    def linkage(self) -> Any:
+        """The four-bar or slider-crank this mechanism is (`structure.linkages`), or None."""
+        from ..structure.linkages import identify
+
+        return identify(self.model, self.groups, self.points, self.directions)
 
     @property
     def method(self) -> str:

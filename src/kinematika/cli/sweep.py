@@ -1,0 +1,70 @@
+"""`kinematika sweep`: the motion over a range of a driven joint's coordinate."""
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from .app import JsonOpt, ModelArg, app, guarded
+
+
+@app.command()
+def sweep(model: Path = ModelArg,
+          joint: Optional[str] = typer.Option(None, "--joint", help="the driven joint to sweep"),
+          by: Optional[float] = typer.Option(None, "--by", help="how far: degrees (revolute) or "
+                                             "length (prismatic); negative goes back"),
+          steps: Optional[int] = typer.Option(None, "--steps", help="number of equal increments"),
+          as_json: bool = JsonOpt,
+          csv: Optional[Path] = typer.Option(None, "--csv", help="write one row per position to FILE"),
+          skip_bad: bool = typer.Option(False, "--skip-bad", help="leave positions that cannot be "
+                                        "assembled (or are singular) empty instead of stopping"),
+          plot: Optional[Path] = typer.Option(None, "--plot", help="draw the sweep's curves to FILE"),
+          ) -> None:
+    """Positions, velocities and accelerations over a range of a driven joint (default: the
+    model's `sweep:` section, else a full turn in 360 steps)."""
+    from ..sweep.run import Sweeper
+
+    def work():
+        sweeper = Sweeper(model, joint)
+        return sweeper, sweeper.run(by, steps, skip_bad, progress=not as_json)
+
+    sweeper, result = guarded(as_json, work)
+    if csv is not None:
+        guarded(as_json, lambda: _write_csv(result, csv))
+    if plot is not None:
+        guarded(as_json, lambda: _plot(result, plot))
+    if as_json:
+        json.dump(result.to_json(), sys.stdout)
+        sys.stdout.write("\n")
+        return
+    from ..sweep.summary import summary_lines
+
+    lines = summary_lines(result, guarded(False, sweeper.linkage), sweeper.groups)
+    if csv is not None:
+        lines.append(f"\nwrote {len(result)} rows to {csv}")
+    if plot is not None:
+        lines.append(f"drew {plot}")
+    print("\n".join(lines))
+
+
+def _write_csv(result, path: Path) -> None:
+    from ..errors import KinematikaError
+
+    try:
+        result.to_csv(path)
+    except OSError as err:
+        raise KinematikaError("syntax", f"cannot write {path}: {err.strerror or err}", str(path)) from None
+
+
+def _plot(result, path: Path) -> None:
+    from ..errors import KinematikaError
+
+    try:
+        from ..draw.plots import plot_sweep
+    except ImportError:
+        raise KinematikaError("schema", "--plot needs the figures module (kinematika.draw.plots), "
+                              "which this installation does not have yet", "--plot") from None
+    plot_sweep(result, path)

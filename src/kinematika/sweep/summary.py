@@ -1,0 +1,76 @@
+"""A readable summary of a sweep: ranges, extremes, dead points, and the linkage's classics."""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+import numpy as np
+
+from .result import SweepResult
+
+
+def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[list] = None) -> list[str]:
+    """The summary printed by `kinematika sweep MODEL` (plain text, one line each)."""
+    unit = "deg" if result.unit == "deg" else ""
+    n, good = len(result), int(result.ok.sum())
+    by = result.coordinate[-1] if n else 0.0
+    lines = [f"{result.name}: sweep of {result.joint} by {by:g} {unit} in {n - 1} steps "
+             f"({result.method})".replace("  ", " ")]
+    if groups:
+        lines.append("structure: " + ", then ".join(_group(g) for g in groups))
+    lines.append(f"assembled: {good} of {n} positions" +
+                 ("" if good == n else f" (skipped: {_ranges(result.coordinate[~result.ok])})"))
+    if good == 0:
+        return lines
+    at = result.coordinate
+    moving = {b: v for b, v in result.bodies.items() if b != result.frame}
+    tops = {q: max((float(np.nanmax(np.abs(v[q]))) for v in moving.values()), default=0.0)
+            for q in ("angle", "omega", "alpha")}
+    lines += ["", f"{'body':<14}{'angle (deg)':>24}{'omega (rad/s)':>26}{'alpha (rad/s²)':>26}"]
+    for name, values in moving.items():
+        lines.append(f"{name:<14}" + "".join(f"{_span(values[q], tops[q]):>{w}}" for q, w in
+                                               (("angle", 24), ("omega", 26), ("alpha", 26))))
+    lines += ["", f"{'point':<14}{'max speed':>14}{'at':>12}{'max acceleration':>20}{'at':>12}"]
+    seen = set()
+    for name, values in result.points.items():
+        point, _, body = name.partition("@")
+        if body == result.frame:
+            continue
+        speed = np.linalg.norm(values["velocity"], axis=1)
+        accel = np.linalg.norm(values["acceleration"], axis=1)
+        key = (round(float(np.nanmax(speed)), 9), round(float(np.nanmax(accel)), 9), point)
+        if key in seen:
+            continue          # the same material motion under another body's name
+        seen.add(key)
+        ks, ka = int(np.nanargmax(speed)), int(np.nanargmax(accel))
+        lines.append(f"{name:<14}{speed[ks]:>14.6g}{at[ks]:>12.6g}{accel[ka]:>20.6g}{at[ka]:>12.6g}")
+    lines += ["", "dead points: " + (", ".join(f"{x:g} {unit}".strip() for x in result.dead_points)
+                                     or "none in the range swept")]
+    if linkage is not None:
+        from ..structure.linkages import transmission_angle
+
+        lines += [""] + linkage.summary()
+        mu = transmission_angle(linkage, result)
+        if np.isfinite(mu).any():
+            k = int(np.nanargmin(np.minimum(mu, 180.0 - mu)))
+            lines.append(f"  transmission angle: {np.nanmin(mu):.4g} to {np.nanmax(mu):.4g} deg; "
+                         f"worst {mu[k]:.4g} deg at {at[k]:g} {unit}".rstrip())
+    return lines
+
+
+def _group(g: Any) -> str:
+    bodies = " + ".join(g.bodies)
+    return f"{g.kind} {bodies}" if g.kind != "input" else f"input {bodies}"
+
+
+def _span(values: np.ndarray, top: float) -> str:
+    """`min .. max`, round-off (below 1e-12 of the column's largest value) shown as 0."""
+    if not np.isfinite(values).any():
+        return "-"
+    low, high = (0.0 if abs(x) <= 1e-12 * top else x for x in (np.nanmin(values), np.nanmax(values)))
+    return f" {low:.5g} .. {high:.5g}" if low != high else f" {low:.5g}"
+
+
+def _ranges(values: np.ndarray) -> str:
+    if len(values) <= 4:
+        return ", ".join(f"{x:g}" for x in values)
+    return f"{len(values)} positions from {values.min():g} to {values.max():g}"
