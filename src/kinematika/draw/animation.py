@@ -9,6 +9,7 @@ scale per kind over the whole motion. Rows the sweep could not assemble are skip
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable, Optional
 
@@ -38,42 +39,63 @@ def animate(source: Any, path: Path | str, joint: Optional[str] = None, by: Opti
     `trace`: the points whose paths are drawn (default: the asked points, else every
     moving point); `progress`: True for a rich bar, or a callable (done, total).
     """
-    from ..api import as_model, solve
-    from .figure import new_figure
-    from .scene import build_scene
-
     path = Path(path)
     writer = _writer(path, fps)
-    run_sweep = sweeps_available()
-    model = as_model(source)
-    if model.dimension != 2:
-        raise KinematikaError("schema", "animate draws planar models; draw a 3D model's instant "
-                              "with `kinematika draw`", "dimension")
-    options = options or DrawOptions()
-    result = run_sweep(model, joint=joint, by=by, steps=steps, skip_bad=skip_bad)
-    rows = _rows(result, frames)
-    sol = solve(model)
-    still = DrawOptions(**{**options.__dict__, "velocities": False, "accelerations": False,
-                           "centres": False, "curvature": False})
-    scene = build_scene(sol.inst, sol, still)
-    live = _live_vectors(sol, options, result)
-    motion = Motion(scene, result, live)
-    view = motion.box(rows).grow(0.08 * scene.size)
-    fig, ax = new_figure(view.grow(0.06 * scene.size), DrawOptions(width=options.width), 0)
-    cv = Canvas(ax, scene, view, labels=False, placement=motion.transform)
-    _paint(cv)
-    motion.attach(cv, trace)
-    title = fig.text(0.5, 1 - 0.3 / fig.get_figheight(), "", ha="center", va="center",
-                     fontsize=TITLE_SIZE, weight="bold", color=INK)
-    report = _progress(progress, len(rows))
-    with writer.saving(fig, str(path), DPI):
-        for i, k in enumerate(rows):
-            motion.show(k)
-            title.set_text(f"{scene.name}  —  {result.joint} {_coordinate(result, k)}")
+    film = Film.of(source, joint, by, steps, frames, options, trace, skip_bad)
+    report = _progress(progress, len(film.rows))
+    with writer.saving(film.fig, str(path), DPI):
+        for i, k in enumerate(film.rows):
+            film.show(k)
             writer.grab_frame()
             report(i + 1)
     report(None)
     return path
+
+
+@dataclass
+class Film:
+    """A painted mechanism ready to be shown at any row of its sweep."""
+
+    fig: Any
+    motion: "Motion"
+    rows: list[int]
+    title: Any
+
+    @classmethod
+    def of(cls, source: Any, joint: Optional[str] = None, by: Optional[float] = None,
+           steps: Optional[int] = None, frames: int = 120, options: Optional[DrawOptions] = None,
+           trace: Optional[list[str]] = None, skip_bad: bool = False) -> "Film":
+        from ..api import as_model, solve
+        from .figure import new_figure
+        from .scene import build_scene
+
+        run_sweep = sweeps_available()
+        model = as_model(source)
+        if model.dimension != 2:
+            raise KinematikaError("schema", "animate draws planar models; draw a 3D model's "
+                                  "instant with `kinematika draw`", "dimension")
+        options = options or DrawOptions()
+        result = run_sweep(model, joint=joint, by=by, steps=steps, skip_bad=skip_bad)
+        rows = _rows(result, frames)
+        sol = solve(model)
+        still = DrawOptions(**{**options.__dict__, "velocities": False, "accelerations": False,
+                               "centres": False, "curvature": False})
+        scene = build_scene(sol.inst, sol, still)
+        motion = Motion(scene, result, _live_vectors(sol, options, result))
+        view = motion.box(rows).grow(0.08 * scene.size)
+        fig, ax = new_figure(view.grow(0.06 * scene.size), DrawOptions(width=options.width), 0)
+        cv = Canvas(ax, scene, view, labels=False, placement=motion.transform)
+        _paint(cv)
+        motion.attach(cv, trace)
+        title = fig.text(0.5, 1 - 0.3 / fig.get_figheight(), "", ha="center", va="center",
+                         fontsize=TITLE_SIZE, weight="bold", color=INK)
+        return cls(fig, motion, rows, title)
+
+    def show(self, k: int) -> None:
+        """The mechanism at row `k` of the sweep."""
+        result = self.motion.result
+        self.motion.show(k)
+        self.title.set_text(f"{self.motion.scene.name}  —  {result.joint} {_coordinate(result, k)}")
 
 
 def sweeps_available() -> Callable[..., Any]:

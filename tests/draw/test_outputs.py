@@ -1,0 +1,108 @@
+"""Files, Jupyter, symbolic models and 3D projection."""
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+from kinematika import Mechanism, solve
+from kinematika.draw import draw
+from kinematika.draw.jupyter import model_svg
+from kinematika.draw.parameters import with_parameters
+from kinematika.draw.projection import projection
+from kinematika.errors import KinematikaError
+
+from .artists import angle_between, arrow, marker
+from .mechanisms import coupler_icr, four_bar_tree, xy
+
+
+def test_svg_holds_the_asked_results_by_id(tmp_path):
+    path = tmp_path / "four_bar.svg"
+    draw(four_bar_tree([{"velocity": "B"}, {"acceleration": "P"}, {"icr": "coupler"}]), path)
+    ids = {el.get("id") for el in ET.parse(path).iter() if el.get("id")}
+    assert {"velocity:B@coupler", "acceleration:P@coupler", "icr:coupler"} <= ids
+
+
+@pytest.mark.parametrize("suffix, magic", [(".png", b"\x89PNG"), (".pdf", b"%PDF")])
+def test_png_and_pdf(tmp_path, suffix, magic):
+    path = tmp_path / f"f{suffix}"
+    draw(four_bar_tree(), path)
+    assert path.read_bytes()[:4] == magic
+
+
+def test_unknown_format_is_refused(tmp_path):
+    with pytest.raises(ValueError, match=r"\.png, \.svg or \.pdf"):
+        draw(four_bar_tree(), tmp_path / "f.bmp")
+
+
+def _slider_crank_builder() -> Mechanism:
+    m = Mechanism("Builder slider-crank", parameters={"w": 10})
+    m.points(O=(0, 0), A=(0.1, 0.05), B=(0.4, 0))
+    m.body("ground", "O"); m.body("crank", "O", "A"); m.body("rod", "A", "B"); m.body("slider", "B")
+    m.revolute("ground", "crank", at="O"); m.revolute("crank", "rod", at="A")
+    m.revolute("rod", "slider", at="B"); m.prismatic("ground", "slider", along=(1, 0))
+    return m
+
+
+def test_jupyter_shows_solutions_and_unfinished_mechanisms():
+    m = _slider_crank_builder()
+    unfinished = m._repr_svg_()               # no driver yet: geometry and the reason
+    assert unfinished.startswith("<?xml") and "not solved" in unfinished
+    m.drive_omega("crank", "w")
+    assert 'id="velocity:B@rod"' in m._repr_svg_()
+    assert 'id="velocity:B@rod"' in m.solve()._repr_svg_()
+    assert model_svg(m.to_model()) is not None
+
+
+def test_symbolic_model_is_drawn_at_its_probe_values_and_says_so():
+    tree = four_bar_tree([{"icr": "coupler"}])
+    tree["parameters"]["w2"] = None
+    sol = solve(tree)
+    fig = draw(sol)
+    notes = " ".join(t.get_text() for t in fig.texts)
+    assert f"w2 = {next(iter(sol.inst.probe.values())):.3g}" in notes
+    assert np.allclose(marker(fig, "icr:coupler"), xy(coupler_icr()), atol=1e-9)  # geometry only
+
+
+def test_set_gives_symbols_numbers():
+    from kinematika.api import as_model
+
+    tree = four_bar_tree([{"velocity": "B"}])
+    tree["parameters"]["w2"] = None
+    model = with_parameters(as_model(tree), {"w2": "2*5"})
+    sol = solve(model)
+    assert not sol.symbolic and sol.omega("crank") == pytest.approx(10.0)
+    with pytest.raises(KinematikaError, match="unknown parameter 'q'"):
+        with_parameters(as_model(tree), {"q": "1"})
+
+
+FAN = {
+    "name": "Fan", "dimension": 3,
+    "points": {"B": [0, 0, 0], "C": [0.6, 0, 0], "P": [0.6, 0.3, 0]},
+    "bodies": {"ground": ["B"], "shaft": ["B", "C"], "blades": ["C", "P"]},
+    "joints": [{"type": "revolute", "bodies": ["ground", "shaft"], "at": "B", "axis": [0, 1, 0]},
+               {"type": "revolute", "bodies": ["shaft", "blades"], "at": "C", "axis": [1, 0, 0]}],
+    "drivers": [{"omega": "shaft", "value": [0, 0.1, 0]},
+                {"omega": "blades", "relative_to": "shaft", "value": [0.5, 0, 0]}],
+    "ask": [{"velocity": "P"}, {"velocity": "C"}],
+}
+
+
+@pytest.mark.parametrize("view", ["iso", "front"])
+def test_3d_vectors_are_projected_like_the_drawing(view):
+    """v_P = ω × BP with ω = (0.5, 0.1, 0): (0, 0, 0.09), straight up the page (z up)."""
+    fig = draw(FAN, view=view)
+    proj = projection(3, view)
+    start, tip = arrow(fig, "velocity:P@blades")
+    assert np.allclose(start, proj((0.6, 0.3, 0)), atol=1e-9)
+    assert angle_between(tip - start, (0.0, 1.0)) < 1e-3
+    c0, c1 = arrow(fig, "velocity:C@shaft")         # v_C = (0, 0.1, 0) × (0.6, 0, 0) = (0, 0, −0.06)
+    assert angle_between(c1 - c0, (0.0, -1.0)) < 1e-3
+
+
+def test_isometric_axes_are_120_degrees_apart():
+    axes = projection(3, "iso").axes()
+    for a, b in (("x", "y"), ("y", "z"), ("z", "x")):
+        assert angle_between(axes[a], axes[b]) == pytest.approx(120.0)
+    assert np.allclose(axes["z"] / np.linalg.norm(axes["z"]), (0, 1))
