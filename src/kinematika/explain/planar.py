@@ -8,6 +8,7 @@ contact written as no slip (velocities) and contact kept (accelerations).
 """
 from __future__ import annotations
 
+import re
 from typing import Optional
 
 from ..model.model import Joint
@@ -184,9 +185,11 @@ class PlanarSteps:
         return [msg("rolling.kept", joint=j.id, a=j.a, b=j.b, point=name), eq]
 
     def contact_name(self, j: Joint) -> str:
+        """J, or J10 for joint j10 (J1, J2 … in order when ids are names), not a point's name."""
         if j.id not in self.contacts:
             rolling = [x.id for x in self.ctx.model.joints if x.type in ("rolling", "gear")]
-            base = "J" if len(rolling) == 1 else f"J{rolling.index(j.id) + 1}"
+            number = j.id[1:] if re.fullmatch(r"j\d+", j.id) else str(rolling.index(j.id) + 1)
+            base = "J" if len(rolling) == 1 else f"J{number}"
             while base in self.ctx.model.points:
                 base += "'"
             self.contacts[j.id] = base

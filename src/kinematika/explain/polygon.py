@@ -26,7 +26,10 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
             tip = end
             drawn += 1
     end = ctx.num(eq.target.value)
-    if sum(c * c for c in end) > 0:
+    size = sum(c * c for c in end) ** 0.5
+    same = [a for a in fig.arrows if a.start == origin and
+            sum((p - q) ** 2 for p, q in zip(a.end, end)) ** 0.5 <= 1e-9 * size]
+    if size > 0 and not same:
         fig.arrows.append(Arrow(origin, end, eq.target.sym, "result"))
     if drawn < 2:
         return None

@@ -85,7 +85,8 @@ def svg(fig: Figure, label: Callable[[Sym], str], unit: str) -> str:
         if arrow.label is not None:
             lx, ly = _label_spot(ax, ay, bx, by, arrow.style == "result")
             out.append(f'<text x="{lx:.1f}" y="{ly:.1f}" fill="{colour}" text-anchor="middle" '
-                       f'dominant-baseline="middle">{label(arrow.label)}</text>')
+                       f'dominant-baseline="middle" stroke="white" stroke-width="3" '
+                       f'paint-order="stroke">{label(arrow.label)}</text>')
     for name, p, style in fig.points:
         px, py = at(p)
         if style == "ground":
@@ -97,13 +98,13 @@ def svg(fig: Figure, label: Callable[[Sym], str], unit: str) -> str:
     return "".join(out)
 
 
-def _label_spot(ax: float, ay: float, bx: float, by: float, right: bool) -> tuple[float, float]:
-    """Beside the middle of the arrow, to its left (to its right for the result)."""
+def _label_spot(ax: float, ay: float, bx: float, by: float, result: bool) -> tuple[float, float]:
+    """Beside the arrow: terms at the middle on the left, the result at a third on the right."""
     dx, dy = bx - ax, by - ay
     size = math.hypot(dx, dy) or 1.0
     nx, ny = -dy / size, dx / size
-    side = -1 if right else 1
-    return (ax + bx) / 2 - side * 14 * nx, (ay + by) / 2 - side * 14 * ny
+    along, side = (0.35, -1) if result else (0.5, 1)
+    return ax + along * dx - side * 16 * nx, ay + along * dy - side * 16 * ny
 
 
 def _scale_bar(fig: Figure, k: float, height: float, unit: str) -> str:
