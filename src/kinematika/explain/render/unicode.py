@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from typing import Any
 
 from ...report.values import tidy
@@ -9,9 +10,15 @@ from ...report.values import tidy
 SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
 
+@lru_cache(maxsize=4096)
+def _tidy(expr: Any) -> Any:
+    """Simplified once per expression: the four languages and three formats share it."""
+    return tidy(expr)
+
+
 def unicode_formula(expr: Any) -> str:
     """`sqrt(2)*r**2*w/4` as `√2·r²·w/4`."""
-    text = str(tidy(expr))
+    text = str(_tidy(expr))
     text = re.sub(r"\*\*(-?\d+)", lambda m: m.group(1).translate(SUPERSCRIPTS), text)
     text = re.sub(r"sqrt\((\w+)\)", r"√\1", text)
     text = text.replace("sqrt(", "√(").replace("**", "^").replace("*", "·")
@@ -21,4 +28,4 @@ def unicode_formula(expr: Any) -> str:
 def latex_formula(expr: Any) -> str:
     import sympy
 
-    return sympy.latex(tidy(expr))
+    return sympy.latex(_tidy(expr))
