@@ -94,3 +94,19 @@ def answers_axis(sol, body: str) -> dict:
     from kinematika.questions import answer
 
     return answer(sol, Question("axis", 0, body, {"axis": body}))
+
+
+def test_a_point_of_the_nut_runs_on_a_helix():
+    """Q at distance ρ from the screw's axis, steady turn ω and advance u: its path is a helix
+    of radius of curvature (ω²ρ² + u²)/(ω²ρ), centred on the line from Q towards the axis."""
+    turn, advance = 2.0, 0.3
+    tree = nut_on_a_screw(turn, advance)
+    tree["ask"] = [{"curvature": "Q"}]
+    d = np.array([1, 2, 2]) / 3
+    a, q = np.array([1, 2, 0.5]), np.array([2, 1, 0])
+    radial = (q - a) - ((q - a) @ d) * d
+    rho = np.linalg.norm(radial)
+    expected = (turn ** 2 * rho ** 2 + advance ** 2) / (turn ** 2 * rho)
+    curv = answers(solve(tree))[0][1]
+    assert curv["radius"] == pytest.approx(expected)
+    close(curv["center"], q - expected * radial / rho)
