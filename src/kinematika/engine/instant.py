@@ -103,6 +103,8 @@ def instantiate(model: m.Model, symbolic: bool | None = None) -> Instant:
     env, probe = _parameters(model, backend, force_symbols=bool(symbolic))
     inst = Instant(model, backend, Space(model.dimension), env, {}, {}, probe)
     inst.points = {name: inst.vector(v, f"points.{name}") for name, v in model.points.items()}
+    if probe:
+        inst.probe = _real_probe(inst.points, probe)
     inst.scale = _length_scale(inst)
     inst.ref = inst.space.zero() if use_symbols else _centroid(inst)
     inst.shapes = {name: [_shape(inst, s, f"bodies.{name}") for s in b.shapes]
@@ -131,6 +133,28 @@ def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict
             del pending[p.name]
     probe = probe_values([v for v in env.values() if getattr(v, "is_Symbol", False)])
     return env, probe
+
+
+def _real_probe(points: dict[str, tuple], probe: dict, tries: int = 40) -> dict:
+    """Probe values at which every point is real and finite.
+
+    A symbolic model may make sense only for some values of its symbols
+    (``sqrt(l**2 - r**2)`` needs l > r): when the default probe falls outside, values spread
+    over a wider range (log-uniform in (e⁻², e²)) are tried before giving up.
+    """
+    import random
+
+    coords = [c for p in points.values() for c in p if not isinstance(c, (int, float))]
+    for attempt in range(tries):
+        if attempt:
+            rng = random.Random(attempt)
+            probe = {s: math.exp(rng.uniform(-2, 2)) * (1 if s.is_positive else rng.choice((-1, 1)))
+                     for s in probe}
+        values = [complex(c.xreplace(probe)) for c in coords]
+        if all(math.isfinite(v.real) and abs(v.imag) <= 1e-12 * (1 + abs(v.real)) for v in values):
+            return probe
+    raise KinematikaError("geometry", "the points are not real for any values of the symbols "
+                          "tried (a square root of a negative number?)", "points")
 
 
 def _length_scale(inst: Instant) -> float:
