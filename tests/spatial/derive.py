@@ -14,7 +14,7 @@ from typing import Any, Iterable, Mapping
 import pytest
 import sympy as sp
 from sympy.physics.mechanics import msubs
-from sympy.physics.vector import ReferenceFrame, Vector, dynamicsymbols
+from sympy.physics.vector import Point, ReferenceFrame, Vector, dynamicsymbols
 
 t = dynamicsymbols._t
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -34,6 +34,23 @@ def instant(values: Mapping[Any, tuple]) -> dict:
         subs[q.diff(t)] = sp.nsimplify(q1)
         subs[q] = sp.nsimplify(q0)
     return subs
+
+
+def fixed_point(name: str, frame: ReferenceFrame) -> Point:
+    """A point at rest in `frame`."""
+    point = Point(name)
+    point.set_vel(frame, 0)
+    return point
+
+
+def carried(origin: Point, name: str, offset: Vector, fixed: ReferenceFrame,
+            body: ReferenceFrame) -> Point:
+    """The point of `body` at `offset` from `origin` (also of `body`): its velocity and
+    acceleration in `fixed` by the two-point theorems."""
+    point = origin.locatenew(name, offset)
+    point.v2pt_theory(origin, fixed, body)
+    point.a2pt_theory(origin, fixed, body)
+    return point
 
 
 def components(vec: Vector | Iterable, frame: ReferenceFrame, subs: Mapping | None = None) -> tuple:

@@ -13,7 +13,8 @@ from sympy.physics.vector import Point, ReferenceFrame
 from kinematika import solve
 from kinematika.api import answers
 
-from .derive import EXAMPLES, close, components, coordinates, cross, instant, minus, t, times
+from .derive import (EXAMPLES, carried, close, components, coordinates, cross, fixed_point, instant,
+                     minus, t, times)
 
 
 def by_question(sol) -> dict:
@@ -32,14 +33,9 @@ def test_robot_arm():
     base = N.orientnew("Base", "Axis", (psi, N.z))
     arm = base.orientnew("Arm", "Axis", (gam, -base.y))
     h, L = sp.Rational(1, 2), sp.Rational(4, 5)
-    O = Point("O")
-    O.set_vel(N, 0)
-    S = O.locatenew("S", h * N.z)
-    S.v2pt_theory(O, N, base)
-    S.a2pt_theory(O, N, base)
-    E = S.locatenew("E", L * arm.x)
-    E.v2pt_theory(S, N, arm)
-    E.a2pt_theory(S, N, arm)
+    O = fixed_point("O", N)
+    S = carried(O, "S", h * N.z, N, base)
+    E = carried(S, "E", L * arm.x, N, arm)
     s = instant({psi: (sp.pi / 6, sp.Rational(1, 2), sp.Rational(1, 5)),
                  gam: (sp.pi / 4, 1, -sp.Rational(1, 2))})
     sol = solve(EXAMPLES / "robot_arm_3d.yaml")
@@ -50,10 +46,7 @@ def test_robot_arm():
     # composition with the base as moving frame: E seen from the base, the base's point at E
     v_rel = components(E.pos_from(S).dt(base), N, s)
     a_rel = components(E.pos_from(S).dt(base).dt(base), N, s)
-    drag = Point("D")
-    drag.set_pos(O, E.pos_from(O))
-    drag.v2pt_theory(O, N, base)
-    drag.a2pt_theory(O, N, base)
+    drag = carried(O, "D", E.pos_from(O), N, base)
     dec = by_question(sol)[("decompose", "E@arm", None)]
     close(dec["velocity"]["relative"], v_rel)
     close(dec["acceleration"]["relative"], a_rel)
@@ -80,14 +73,10 @@ def gyroscope_derivation():
     inner = outer.orientnew("In", "Axis", (th, outer.x))
     rotor = inner.orientnew("Rot", "Axis", (phi, inner.z))
     d, r = sp.Rational(1, 10), sp.Rational(1, 20)
-    O = Point("O")
-    O.set_vel(N, 0)
-    pts = {"G": O.locatenew("G", d * inner.z)}
-    pts["Q"] = pts["G"].locatenew("Q", r * rotor.x)
-    pts["Q2"] = pts["G"].locatenew("Q2", r * rotor.y)
-    for p in pts.values():
-        p.v2pt_theory(O, N, rotor)
-        p.a2pt_theory(O, N, rotor)
+    O = fixed_point("O", N)
+    G = carried(O, "G", d * inner.z, N, rotor)
+    pts = {"G": G, "Q": carried(G, "Q", r * rotor.x, N, rotor),
+           "Q2": carried(G, "Q2", r * rotor.y, N, rotor)}
     s = instant({psi: (0, 2, 0), th: (sp.pi / 6, sp.Rational(1, 2), sp.Rational(3, 10)),
                  phi: (0, 100, 0)})
     out = {name: (components(p.vel(N), N, s), components(p.acc(N), N, s)) for name, p in pts.items()}

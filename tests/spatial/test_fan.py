@@ -6,13 +6,14 @@ from __future__ import annotations
 
 import pytest
 import sympy as sp
-from sympy.physics.vector import Point, ReferenceFrame
+from sympy.physics.vector import ReferenceFrame
 
 from kinematika import KinematikaError, solve
 from kinematika.api import answers
 from kinematika.report.json_answer import solution_json
 
-from .derive import EXAMPLES, close, components, coordinates, cross, instant, minus, plus, times
+from .derive import (EXAMPLES, carried, close, components, coordinates, cross, fixed_point, instant,
+                     minus, plus, times)
 
 
 def fan_derivation(w1=0.1, a1=0.2, w2=0.5, a2=0.01, L=sp.Rational(3, 5), h=sp.Rational(3, 10)):
@@ -21,21 +22,12 @@ def fan_derivation(w1=0.1, a1=0.2, w2=0.5, a2=0.01, L=sp.Rational(3, 5), h=sp.Ra
     N = ReferenceFrame("N")
     A = N.orientnew("A", "Axis", (q1, N.y))
     Bl = A.orientnew("Bl", "Axis", (q2, A.x))
-    B = Point("B")
-    B.set_vel(N, 0)
-    C = B.locatenew("C", L * A.x)
-    C.v2pt_theory(B, N, A)
-    C.a2pt_theory(B, N, A)
-    P = C.locatenew("P", h * Bl.y)
-    P.v2pt_theory(C, N, Bl)
-    P.a2pt_theory(C, N, Bl)
+    B = fixed_point("B", N)
+    C = carried(B, "C", L * A.x, N, A)
+    P = carried(C, "P", h * Bl.y, N, Bl)
     s = instant({q1: (0, w1, a1), q2: (0, w2, a2)})
     # the shaft's material point at P (drag); P seen from the shaft is CP differentiated in A
-    drag = Point("D")
-    drag.set_pos(B, P.pos_from(B))
-    drag.set_vel(A, 0)
-    drag.v2pt_theory(B, N, A)
-    drag.a2pt_theory(B, N, A)
+    drag = carried(B, "D", P.pos_from(B), N, A)
     return {
         "omega": components(Bl.ang_vel_in(N), N, s),
         "alpha": components(Bl.ang_acc_in(N), N, s),

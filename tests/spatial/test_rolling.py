@@ -23,7 +23,7 @@ from sympy.physics.vector import Point, ReferenceFrame
 from kinematika import solve
 from kinematika.api import answers
 
-from .derive import EXAMPLES, close, coordinates, t
+from .derive import EXAMPLES, carried, close, coordinates, fixed_point, t
 
 R_COIN = 0.05
 
@@ -49,14 +49,8 @@ def _coin_on_board():
     C = Point("C")
     C.set_vel(N, v_c)
     C.set_acc(N, a_c)
-    Jc = C.locatenew("Jc", -R * T.z)
-    Jc.v2pt_theory(C, N, D)
-    Jc.a2pt_theory(C, N, D)
-    O = Point("O")
-    O.set_vel(N, 0)
-    Jb = O.locatenew("Jb", contact)
-    Jb.v2pt_theory(O, N, board)
-    Jb.a2pt_theory(O, N, board)
+    Jc = carried(C, "Jc", -R * T.z, N, D)
+    Jb = carried(fixed_point("O", N), "Jb", contact, N, board)
     vectors = {"v_C": v_c, "a_C": a_c, "omega": w_coin, "alpha": D.ang_acc_in(N), "jdot": jdot,
                "jddot": jddot, "v_Jc": Jc.vel(N), "a_Jc": Jc.acc(N), "v_Jb": Jb.vel(N),
                "a_Jb": Jb.acc(N), "axis": T.x, "down": -T.z}
