@@ -160,3 +160,23 @@ def test_coin_on_a_ceiling_touches_with_its_top_point():
         # turning about +y under a ceiling, it rolls towards -x: v_C = -(w R) x
         close(sol.velocity("C"), (-0.4, 0, 0))
         close(sol.acceleration("C"), (0, 0, 0))
+
+
+def test_the_rolling_coin_from_python():
+    """The same coin built with the Python API gives the file's answers."""
+    from kinematika import Mechanism
+
+    m = Mechanism("Coin", parameters={"R": 0.02, "rho": 0.15, "beta": "deg(20)"})
+    m.points(O=(0, 0, 0), J=("rho", 0, 0), C=("rho - R*sin(beta)", 0, "R*cos(beta)"))
+    m.body("ground", "O", plane=("O", (0, 0, 1)))
+    m.body("heading", "O", "C")
+    m.body("coin", "C", "J", disc=("C", "R", ("cos(beta)", 0, "sin(beta)")))
+    turn = m.revolute("ground", "heading", at="O", axis=(0, 0, 1))
+    m.revolute("heading", "coin", at="C", axis=("cos(beta)", 0, "sin(beta)"))
+    m.rolling("ground", "coin")
+    m.drive_joint(turn, 3, 0.5)
+    built, read = m.solve(), solve(EXAMPLES / "coin_rolling.yaml")
+    for body in ("heading", "coin"):
+        close(built.omega(body), read.omega(body))
+        close(built.alpha(body), read.alpha(body))
+    close(built.acceleration("J@coin"), read.acceleration("J@coin"))
