@@ -30,10 +30,14 @@ def paint_bodies(cv: Canvas) -> None:
 def _body(cv: Canvas, body: BodyView) -> None:
     pts = _distinct(list(body.points.values()), 1e-9 * cv.size)
     anchor = None
+    wheels = [s for s in body.shapes if s.kind == "circle" and not s.ring]
+    if wheels and all(_on_wheel(p, wheels) for p in pts):
+        _radii(cv, body, pts, wheels)       # the disc is the body: mark its points by radii
+        pts = []
     if len(pts) >= 3:
         hull = convex_hull(pts)
-        if len(hull) >= 3 and _area(hull) > 1e-3 * cv.size ** 2 * 0.01:
-            cv.add(Polygon(hull, closed=True, fc=body.colour, ec=body.colour, alpha=0.45, lw=2.5,
+        if len(hull) >= 3 and _area(hull) > 1e-5 * cv.size ** 2:
+            cv.add(Polygon(hull, closed=True, fc=body.colour, ec=body.colour, alpha=0.38, lw=2.5,
                            joinstyle="round", zorder=2, gid=f"body:{body.name}"), body.name)
             cv.board.avoid(*hull, hull[0])
             anchor = np.mean(hull, axis=0)
@@ -52,6 +56,20 @@ def _body(cv: Canvas, body: BodyView) -> None:
         anchor = pts[0]
     if anchor is not None:
         cv.label(anchor, body.name, body.colour, 5, f"body:{body.name}", style="italic")
+
+
+def _on_wheel(p: np.ndarray, wheels: list[ShapeView]) -> bool:
+    return any(np.linalg.norm(p - w.center) <= w.radius * (1 + 1e-6) for w in wheels)
+
+
+def _radii(cv: Canvas, body: BodyView, pts: list, wheels: list[ShapeView]) -> None:
+    """Lines from a wheel's centre to its marked points (a wheel's points are on its disc)."""
+    for p in pts:
+        w = min(wheels, key=lambda s: np.linalg.norm(p - s.center))
+        if np.linalg.norm(p - w.center) > 1e-9 * cv.size:
+            cv.add(Line2D(*np.array([w.center, p]).T, lw=2.0, color=body.colour, zorder=3,
+                          solid_capstyle="round"), body.name)
+            cv.board.avoid(w.center, p)
 
 
 def _moving_shape(cv: Canvas, body: BodyView, s: ShapeView) -> None:
@@ -125,8 +143,8 @@ def _ground_shape(cv: Canvas, s: ShapeView) -> None:
         cv.add(Annulus(s.center, outer, width, fill=False, ec=GROUND, lw=0, hatch="////", zorder=1))
         cv.board.avoid(*_ring(s.center, s.radius))
     elif s.vertices is not None:
-        cv.add(Polygon(s.vertices, closed=True, fc="#eeeeee", ec=GROUND, lw=1.0, hatch="//",
-                       alpha=0.5, zorder=0, gid="ground:plane"))
+        cv.add(Polygon(s.vertices, closed=True, fc="#f0f0f0", ec="#9e9e9e", lw=1.0, zorder=0,
+                       gid="ground:plane"))
 
 
 def _points(cv: Canvas) -> None:

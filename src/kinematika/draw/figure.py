@@ -1,8 +1,9 @@
 """A still figure of a scene: the layout (what must fit, the figure's shape), the painting
 in order, the labels, the legend and the notes.
 
-The view holds the mechanism, its arrows, and the centres and curvature circles that lie
-within `REACH` drawing sizes of it; farther ones are shown at the edge (see `marks`).
+The axes frame the mechanism, its arrows, and the centres and curvature circles that lie
+within `REACH` drawing sizes of it; what lies outside the axes is shown at their edge
+(see `marks`), and infinite lines stop just inside them.
 The figure's shape follows the view's, within bounds, at equal scale on both axes; after
 the labels are placed, the limits grow until every label lies inside the axes.
 """
@@ -27,9 +28,9 @@ from .scene import Scene
 from .style import (ACCELERATION, CENTRE, CURVATURE, INK, LONGEST, SHORTEST, TITLE_SIZE, VELOCITY)
 from .vectors import Arrow, arrows, paint_vectors
 
-REACH = 1.0          # drawing sizes around the mechanism within which results are framed
-CLIP_MARGIN = 0.08   # infinite lines stop this far (drawing sizes) beyond the framed content
-LABEL_MARGIN = 0.10  # room kept around it for labels
+REACH = 2.0          # drawing sizes around the mechanism within which results are framed
+CLIP_MARGIN = 0.06   # infinite lines and far marks stop this far (drawing sizes) inside the axes
+LABEL_MARGIN = 0.12  # room kept around the framed content for labels
 ASPECT = (0.5, 1.25)  # bounds of the axes' height/width
 TOP, LEGEND, NOTE = 0.55, 0.32, 0.2   # inches: title band, legend row, one note line
 FORMATS = ("png", "svg", "pdf")
@@ -40,9 +41,10 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
     options = options or DrawOptions()
     drawn = arrows(scene.vectors, scene.size)
     content = framed_box(scene, drawn)
-    view = content.grow(CLIP_MARGIN * scene.size)
     notes = _notes(scene, drawn)
-    fig, ax = new_figure(view.grow(LABEL_MARGIN * scene.size), options, len(notes))
+    fig, ax = new_figure(content.grow((CLIP_MARGIN + LABEL_MARGIN) * scene.size), options,
+                         len(notes))
+    view = _limits(ax).grow(-CLIP_MARGIN * scene.size)   # what the axes show, less a margin
     cv = Canvas(ax, scene, view, labels=options.labels)
     paint_bodies(cv)
     paint_joints(cv)
@@ -87,6 +89,11 @@ def new_figure(limits: Box, options: DrawOptions, n_notes: int) -> tuple[Figure,
     _set_limits(ax, limits)
     ax.set_axis_off()
     return fig, ax
+
+
+def _limits(ax: Any) -> Box:
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    return Box(x0, y0, x1, y1)
 
 
 def _set_limits(ax: Any, box: Box) -> None:

@@ -37,6 +37,8 @@ def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
         for ref, rel in vector_targets(sol, options, kind, flag):
             value = (sol.velocity if kind == "velocity" else sol.acceleration)(ref, rel)
             vec = num.vector(value)
+            if _negligible(sol, kind, value):
+                vec = np.zeros_like(vec)      # round-off, not a vector to draw
             origin = num.page(sol.position(ref))
             label = vector_label(kind, sol.model, ref, rel)
             if any(v.kind == kind and v.label == label and np.allclose(v.origin, origin, atol=tol)
@@ -47,6 +49,14 @@ def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
             rel = rel if rel != sol.model.frame else None
             scene.vectors.append(VectorView(kind, str(ref), label, origin, num.proj(vec), magnitude,
                                             magnitude_text(sol, value, magnitude), rel))
+
+
+def _negligible(sol: Any, kind: str, value: tuple) -> bool:
+    """Zero at the model's scale: the contract's 1e-9 of the largest speed (or acceleration,
+    or speed²/length, whichever is larger)."""
+    speed, accel = sol.scales()
+    scale = speed if kind == "velocity" else max(accel, speed ** 2 / sol.inst.scale)
+    return sol.is_zero(value, scale)
 
 
 def vector_targets(sol: Any, options: DrawOptions, kind: str,
@@ -115,6 +125,8 @@ def _moving_points(sol: Any) -> list[tuple[PointRef, None]]:
 
 def magnitude_text(sol: Any, value: tuple, magnitude: float) -> str:
     """The magnitude as shown: 3 significant digits, or a short exact formula (symbolic)."""
+    if magnitude == 0:
+        return "0"
     if not sol.symbolic:
         return f"{magnitude:.3g}"
     return formula_text(sol.norm(value), magnitude)

@@ -230,7 +230,7 @@ def _plane(s: Plane, num: Numbers) -> ShapeView:
     through = num.vector(s.through)
     centre = pts.mean(axis=0)
     centre = centre - ((centre - through) @ n) * n
-    half = max(float(np.abs(pts - centre).max()), float(num.inst.scale)) * 1.1
+    half = max(float(np.abs(pts - centre).max()) * 1.15, 0.5 * float(num.inst.scale))
     u, w = _plane_basis(n)
     corners = [centre + half * (i * u + k * w) for i, k in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
     return ShapeView("outline", through=num.proj(through), role="plane",
