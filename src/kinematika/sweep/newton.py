@@ -30,6 +30,7 @@ if TYPE_CHECKING:
 
 MAX_HALVINGS = 10
 CHORD_ITERATIONS = 25
+NEWTON_ITERATIONS = 40
 TOLERANCE = 1e-12       # step size, dimensionless (rotations; translations / length scale)
 
 
@@ -97,6 +98,25 @@ class Assembler:
                 return current
         return None
 
+    def assemble(self, poses: Poses, dq: float) -> tuple[Poses, InstantSolver]:
+        """Newton's method from any nearby poses (after a gap of skipped rows): the Jacobian
+        rebuilt at each iterate and steps limited to 0.3 rad (0.3 of the model's length)."""
+        current = poses
+        for _ in range(NEWTON_ITERATIONS):
+            try:
+                solver = self.solver_at(current)
+            except KinematikaError:
+                break
+            dx = -np.asarray(solver.solve_linear(list(self.residual(current, dq)), check=False))
+            size = self.size(dx)
+            if not math.isfinite(size):
+                break
+            if size < TOLERANCE:
+                self._keep_aux(current)
+                return current, solver
+            current = current.stepped(dx * min(1.0, 0.3 / size), self.unknowns)
+        raise _NotAssembled()
+
     def _keep_aux(self, poses: Poses) -> None:
         """Record the continuous angles (rolling joints) of the newly assembled poses."""
         for _, f in self.functions:
@@ -147,7 +167,10 @@ def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
     for k, dq in enumerate(plan.increments):
         if k > 0:
             try:
-                poses, solver = asm.step(poses_good, solver_good, dq_good, float(dq))
+                if ok[k - 1]:
+                    poses, solver = asm.step(poses_good, solver_good, dq_good, float(dq))
+                else:           # after skipped rows: assemble afresh near the last good poses
+                    poses, solver = asm.assemble(poses_good, float(dq))
                 motion = solver.solve()
             except (_NotAssembled, KinematikaError) as err:
                 kind = err.kind if isinstance(err, KinematikaError) else "assembly"

@@ -180,6 +180,7 @@ def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray) ->
     out = [float(x) for x in coordinate[singular]]
     edges = np.flatnonzero(ok[:-1] != ok[1:])
     for k in edges:
-        good = k if ok[k] else k + 1
-        out.append(float(coordinate[good]))
+        good, bad = (k, k + 1) if ok[k] else (k + 1, k)
+        if not singular[bad]:            # a singular row is itself the dead point
+            out.append(float(coordinate[good]))
     return sorted(set(out))

@@ -1,0 +1,108 @@
+"""The contract's sweep outputs: JSON and CSV shapes, rows, units, directions; the CLI."""
+from __future__ import annotations
+
+import csv
+import json
+
+import numpy as np
+import pytest
+import yaml
+from typer.testing import CliRunner
+
+from kinematika.cli import app
+from kinematika.sweep import run_sweep
+
+from .models import four_bar_tree, slider_crank_tree
+
+
+def test_json_has_one_entry_per_row_for_every_body_and_material_point():
+    tree = four_bar_tree()
+    data = run_sweep(tree, by=360, steps=8).to_json()
+    assert data["coordinate"] == pytest.approx(list(np.linspace(0, 360, 9)))
+    assert set(data["bodies"]) == {"ground", "crank", "coupler", "rocker"}
+    assert set(data["points"]) == {"O2@ground", "O4@ground", "O2@crank", "A@crank", "A@coupler",
+                                   "B@coupler", "P@coupler", "B@rocker", "O4@rocker"}
+    for values in data["bodies"].values():
+        assert {k: len(v) for k, v in values.items()} == {"angle": 9, "omega": 9, "alpha": 9}
+    for values in data["points"].values():
+        for q in ("position", "velocity", "acceleration"):
+            assert len(values[q]) == 9 and all(len(row) == 2 for row in values[q])
+    assert data["bodies"]["crank"]["angle"][-1] == 360.0          # continuous: not 0
+    assert data["bodies"]["crank"]["omega"] == [10.0] * 9
+    json.dumps(data)
+
+
+def test_negative_by_turns_back_whatever_the_driver_sign():
+    tree = four_bar_tree(w=-10.0)
+    forward = run_sweep(tree, by=90, steps=3)
+    assert forward.bodies["crank"]["angle"] == pytest.approx([0, 30, 60, 90])
+    assert forward.bodies["crank"]["omega"] == pytest.approx([-10] * 4)
+    back = run_sweep(tree, by=-90, steps=3)
+    assert back.coordinate == pytest.approx([0, -30, -60, -90])
+    assert back.bodies["crank"]["angle"] == pytest.approx([0, -30, -60, -90])
+    # the crank pin goes clockwise from (0, 1): at −90° it is at (1, 0)
+    assert back.points["A@crank"]["position"][-1] == pytest.approx([1.0, 0.0], abs=1e-12)
+
+
+def test_prismatic_sweep_is_in_length(tmp_path):
+    tree = slider_crank_tree(1.0, 3.0, 0.0, crank_deg=90, w=0.0)
+    tree["drivers"] = [{"joint": "j4", "rate": 0.5}]
+    tree["sweep"] = {"joint": "j4", "by": 0.4, "steps": 4}
+    result = run_sweep(tree)
+    assert result.unit == "length"
+    assert result.points["B@slider"]["position"][:, 0] == pytest.approx(np.sqrt(8) + np.linspace(0, 0.4, 5))
+    path = tmp_path / "out.csv"
+    result.to_csv(path)
+    rows = list(csv.reader(path.open()))
+    assert rows[0][0] == "coordinate_length" and len(rows) == 6
+
+
+def test_csv_has_a_header_and_one_row_per_position(tmp_path):
+    path = tmp_path / "sweep.csv"
+    run_sweep(four_bar_tree(), by=360, steps=4).to_csv(path)
+    rows = list(csv.reader(path.open()))
+    header = rows[0]
+    assert header[:4] == ["coordinate_deg", "ground.angle", "ground.omega", "ground.alpha"]
+    assert "P@coupler.acceleration_y" in header
+    assert len(rows) == 6 and all(len(r) == len(header) for r in rows)
+    assert float(rows[-1][header.index("crank.angle")]) == 360.0
+
+
+def _model_file(tmp_path, tree):
+    path = tmp_path / "model.yaml"
+    path.write_text(yaml.safe_dump(tree))
+    return str(path)
+
+
+def test_cli_json_csv_and_summary(tmp_path):
+    runner = CliRunner()
+    tree = four_bar_tree()
+    tree["sweep"] = {"joint": "j1", "by": 360, "steps": 12}
+    model = _model_file(tmp_path, tree)
+    out = runner.invoke(app, ["sweep", model, "--json"])
+    assert out.exit_code == 0
+    assert len(json.loads(out.stdout)["coordinate"]) == 13
+    out = runner.invoke(app, ["sweep", model, "--steps", "4", "--by", "-180", "--json"])
+    assert json.loads(out.stdout)["coordinate"] == [0.0, -45.0, -90.0, -135.0, -180.0]
+    target = tmp_path / "rows.csv"
+    out = runner.invoke(app, ["sweep", model, "--csv", str(target)])
+    assert out.exit_code == 0 and len(target.read_text().splitlines()) == 14
+    assert "Grashof crank-rocker" in out.stdout
+    assert "transmission angle" in out.stdout and "limit position (extended)" in out.stdout
+
+
+def test_cli_errors_are_one_line_with_status_2(tmp_path):
+    runner = CliRunner()
+    model = _model_file(tmp_path, four_bar_tree(crank=2.5, coupler=3.0, rocker=3.0, side=1.0))
+    out = runner.invoke(app, ["sweep", model, "--steps", "36"])
+    assert out.exit_code == 2
+    assert out.stderr.strip().startswith("error (assembly): sweep: the mechanism cannot be assembled "
+                                         "at increment 5 (j1 = 50 deg")
+    out = runner.invoke(app, ["sweep", model, "--steps", "36", "--json"])
+    assert json.loads(out.stdout)["error"]["kind"] == "assembly"
+    out = runner.invoke(app, ["sweep", model, "--joint", "j2", "--json"])
+    assert json.loads(out.stdout)["error"] == {
+        "kind": "schema", "message": "joint 'j2' is not driven; a sweep advances a driven joint: j1",
+        "where": "sweep.joint"}
+    out = runner.invoke(app, ["sweep", model, "--steps", "36", "--skip-bad", "--json"])
+    assert out.exit_code == 0 and None in json.loads(out.stdout)["bodies"]["rocker"]["omega"]
