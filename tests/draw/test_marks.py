@@ -7,7 +7,6 @@ closed form, and exact for B on the rocker (a circle about O4 of radius |O4B|).
 from __future__ import annotations
 
 import numpy as np
-import pytest
 
 from kinematika.draw import draw
 

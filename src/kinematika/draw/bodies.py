@@ -128,13 +128,8 @@ def _ground_shape(cv: Canvas, s: ShapeView) -> None:
             return
         n = perpendicular(s.direction)
         towards = s.hatch_towards if s.hatch_towards is not None else \
-            s.through - _moving_centroid(cv)
-        side = n if float(n @ towards) >= 0 else -n
-        p, q = seg
-        cv.add(Line2D(*np.array(seg).T, lw=1.8, color=GROUND, zorder=2, gid="ground:line"))
-        cv.add(Polygon([p, q, q + band * side, p + band * side], closed=True, fill=False,
-                       ec=GROUND, lw=0, hatch="////", zorder=1))
-        cv.board.avoid(p, q)
+            s.through - cv.moving_centroid()
+        hatched_edge(cv, *seg, n if float(n @ towards) >= 0 else -n, "ground:line")
     elif s.kind == "circle":
         outer = s.radius if s.material_inside else s.radius + min(band, s.radius)
         width = min(band, 0.5 * s.radius)
@@ -145,6 +140,15 @@ def _ground_shape(cv: Canvas, s: ShapeView) -> None:
     elif s.vertices is not None:
         cv.add(Polygon(s.vertices, closed=True, fc="#f0f0f0", ec="#9e9e9e", lw=1.0, zorder=0,
                        gid="ground:plane"))
+
+
+def hatched_edge(cv: Canvas, p: np.ndarray, q: np.ndarray, side: np.ndarray, gid: str) -> None:
+    """A fixed edge from p to q, hatched on `side` (where the frame's material is)."""
+    band = HATCH_BAND * cv.size
+    cv.add(Line2D(*np.array([p, q]).T, lw=1.8, color=GROUND, zorder=2, gid=gid))
+    cv.add(Polygon([p, q, q + band * side, p + band * side], closed=True, fill=False,
+                   ec=GROUND, lw=0, hatch="////", zorder=1))
+    cv.board.avoid(p, q)
 
 
 def _points(cv: Canvas) -> None:
@@ -158,11 +162,6 @@ def _points(cv: Canvas) -> None:
             if name not in named:
                 named.add(name)
                 cv.label(p, name, POINT_LABEL, 3, f"point:{name}", weight="bold")
-
-
-def _moving_centroid(cv: Canvas) -> np.ndarray:
-    pts = [p for b in cv.scene.bodies.values() if not b.frame for p in b.points.values()]
-    return np.mean(pts, axis=0) if pts else cv.view.centre
 
 
 def _distinct(pts: list, tol: float) -> list:

@@ -43,6 +43,13 @@ class Canvas:
             self.moving.setdefault(body, []).append(artist)
         return artist
 
+    def moving_centroid(self) -> Any:
+        """The centroid of the moving bodies' points (where "away from the mechanism" starts)."""
+        import numpy as np
+
+        pts = [p for b in self.scene.bodies.values() if not b.frame for p in b.points.values()]
+        return np.mean(pts, axis=0) if pts else self.view.centre
+
     def label(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
               prefer: Any = None, **kw: Any) -> None:
         if self.labels:

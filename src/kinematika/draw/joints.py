@@ -12,6 +12,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon
 
+from .bodies import hatched_edge
 from .canvas import Canvas
 from .geometry import clip_line, perpendicular, rectangle, stadium, unit
 from .scene import JointView
@@ -76,9 +77,7 @@ def _support(cv: Canvas, p: np.ndarray) -> None:
     """A fixed pivot: a triangle from the pin to a hatched base, below the pin (above it when
     the pin is clearly above the rest of the mechanism)."""
     h = SUPPORT * cv.size
-    others = [q for b in cv.scene.bodies.values() if not b.frame for q in b.points.values()]
-    centroid = np.mean(others, axis=0) if others else p
-    d = p - centroid
+    d = p - cv.moving_centroid()
     down = np.array([0.0, 1.0]) if d[1] > 0.3 * np.linalg.norm(d) and d[1] > 1e-9 else \
         np.array([0.0, -1.0])
     side = np.array([1.0, 0.0])
@@ -123,18 +122,10 @@ def _guide(cv: Canvas, body: str, centre: np.ndarray, along: np.ndarray, height:
     frame = body == _frame(cv)
     if frame:
         n = perpendicular(along)
-        towards = centre - _centroid(cv)
-        side = n if float(n @ towards) > 1e-12 * cv.size else -n
-        offset = centre + side * height / 2
-        seg = clip_line(offset, along, cv.view.grow(-HATCH_BAND * cv.size))
-        if seg is None:
-            return
-        p, q = seg
-        band = HATCH_BAND * cv.size
-        cv.add(Line2D(*np.array(seg).T, lw=1.8, color=GROUND, zorder=2, gid="ground:guide"))
-        cv.add(Polygon([p, q, q + band * side, p + band * side], closed=True, fill=False,
-                       ec=GROUND, lw=0, hatch="////", zorder=1))
-        cv.board.avoid(p, q)
+        side = n if float(n @ (centre - cv.moving_centroid())) > 1e-12 * cv.size else -n
+        seg = clip_line(centre + side * height / 2, along, cv.view.grow(-HATCH_BAND * cv.size))
+        if seg is not None:
+            hatched_edge(cv, *seg, side, "ground:guide")
         return
     colour = cv.scene.bodies[body].colour
     pts = list(cv.scene.bodies[body].points.values()) + [centre]
@@ -143,11 +134,6 @@ def _guide(cv: Canvas, body: str, centre: np.ndarray, along: np.ndarray, height:
     seg = np.array([centre + (min(ts) - margin) * along, centre + (max(ts) + margin) * along])
     cv.add(Line2D(*seg.T, lw=3.0, color=colour, zorder=3, solid_capstyle="butt"), body)
     cv.board.avoid(*seg)
-
-
-def _centroid(cv: Canvas) -> np.ndarray:
-    pts = [p for b in cv.scene.bodies.values() if not b.frame for p in b.points.values()]
-    return np.mean(pts, axis=0) if pts else cv.view.centre
 
 
 def _slot(cv: Canvas, j: JointView) -> None:

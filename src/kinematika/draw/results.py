@@ -93,34 +93,32 @@ def default_ask(model: Any) -> bool:
     return bool(expected) and given == expected and len(model.questions) == len(expected)
 
 
-def _unique(pairs: list) -> list:
+def _unique(items: list, key: Any = lambda item: (str(item[0]), item[1])) -> list:
+    """`items` in order, keeping the first of those with the same key."""
     seen, out = set(), []
-    for ref, rel in pairs:
-        key = (str(ref), rel)
-        if key not in seen:
-            seen.add(key)
-            out.append((ref, rel))
+    for item in items:
+        k = key(item)
+        if k not in seen:
+            seen.add(k)
+            out.append(item)
     return out
 
 
 def _moving_points(sol: Any) -> list[tuple[PointRef, None]]:
     """Every material point of a moving body that moves; coincident points moving alike
     appear once."""
-    out, seen = [], set()
     inst = sol.inst
     speed, accel = sol.scales()
+    moving = []
     for ref in sol.model.material_points():
         if ref.body == sol.model.frame:
             continue
         v, a = inst.numvec(sol.velocity(ref)), inst.numvec(sol.acceleration(ref))
-        if np.linalg.norm(v) <= 1e-9 * speed and np.linalg.norm(a) <= 1e-9 * accel:
-            continue
-        key = tuple(round(x / inst.scale, 9) for x in inst.numvec(sol.position(ref))) + \
-            tuple(round(x / max(speed, 1e-300), 6) for x in v)
-        if key not in seen:
-            seen.add(key)
-            out.append((ref, None))
-    return out
+        if np.linalg.norm(v) > 1e-9 * speed or np.linalg.norm(a) > 1e-9 * accel:
+            key = tuple(round(x / inst.scale, 9) for x in inst.numvec(sol.position(ref))) + \
+                tuple(round(x / max(speed, 1e-300), 6) for x in v)
+            moving.append((ref, None, key))
+    return [(ref, rel) for ref, rel, _ in _unique(moving, key=lambda item: item[2])]
 
 
 def magnitude_text(sol: Any, value: tuple, magnitude: float) -> str:

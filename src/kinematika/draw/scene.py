@@ -304,17 +304,21 @@ def _joint(j: Any, geo: Any, num: Numbers) -> JointView:
     return view
 
 
+def _contacts(model: Any, geos: dict, num: Numbers):
+    """(joint, contact point on the page, contact kind) of each rolling or gear joint."""
+    for j in model.joints:
+        geo = geos.get(j.id)
+        if j.type in ("rolling", "gear") and geo is not None and geo.contact is not None:
+            yield j, num.page(geo.contact.point), geo.contact.kind
+
+
 def _mark_ground_sides(bodies: dict[str, BodyView], model: Any, geos: dict, num: Numbers) -> None:
     """For a fixed shape another body rolls on, the side its material is on (for hatching):
     away from the rolling body — outside a cavity, inside a drum, below a track."""
     frame = bodies[model.frame]
-    for j in model.joints:
-        geo = geos.get(j.id)
-        if j.type not in ("rolling", "gear") or geo is None or geo.contact is None:
-            continue
+    for j, contact, _ in _contacts(model, geos, num):
         if model.frame not in (j.a, j.b) or not frame.shapes:
             continue
-        contact = num.page(geo.contact.point)
         fixed = _nearest_shape(frame.shapes, contact)
         partner = _nearest_shape(bodies[j.b if j.a == model.frame else j.a].shapes, contact)
         if fixed is None:
@@ -328,11 +332,7 @@ def _mark_ground_sides(bodies: dict[str, BodyView], model: Any, geos: dict, num:
 def _mark_gears(bodies: dict[str, BodyView], model: Any, geos: dict, num: Numbers) -> None:
     """Gear circles are pitch circles (drawn dash-dot); the outer circle of an internal
     contact is a ring (drawn as a band around its inside, not a filled disc)."""
-    for j in model.joints:
-        geo = geos.get(j.id)
-        if j.type not in ("rolling", "gear") or geo is None or geo.contact is None:
-            continue
-        contact = num.page(geo.contact.point)
+    for j, contact, kind in _contacts(model, geos, num):
         circles = []
         for name in (j.a, j.b):
             shape = _nearest_shape(bodies[name].shapes, contact)
@@ -340,7 +340,7 @@ def _mark_gears(bodies: dict[str, BodyView], model: Any, geos: dict, num: Number
                 circles.append(shape)
                 if j.type == "gear":
                     shape.role = "gear"
-        if geo.contact.kind == "internal" and len(circles) == 2:
+        if kind == "internal" and len(circles) == 2:
             outer = max(circles, key=lambda c: c.radius)
             outer.ring = True
 
