@@ -120,3 +120,12 @@ def carried(origin: Any, turn: Any, offset: Any) -> list:
     its offset from `origin` when turn = 0."""
     c, s = sympy.cos(turn), sympy.sin(turn)
     return [origin[0] + c * offset[0] - s * offset[1], origin[1] + s * offset[0] + c * offset[1]]
+
+
+def check_curvature(name: str, point: str, path: tuple, radius: Any) -> None:
+    """The example's curvature answer for `point` is that of `path` (p, v, a, derived by
+    hand), and its radius is `radius`."""
+    expected, centre = curvature(*path)
+    assert sympy.simplify(expected - radius) == 0
+    got = answer(name, curvature=point)
+    assert same(name, got["radius"], expected) and same(name, got["center"], centre)

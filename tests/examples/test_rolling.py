@@ -10,8 +10,8 @@ import sympy
 from sympy import asin, cos, sin
 from sympy.physics.vector import dynamicsymbols
 
-from .helpers import (answer, at_instant, carried, cli_answers, close, cross, curvature,
-                      line_meet, same, symbols)
+from .helpers import (answer, at_instant, carried, check_curvature, cli_answers, close, cross,
+                      curvature, line_meet, same, symbols)
 
 x, phi = dynamicsymbols("x phi")
 
@@ -111,11 +111,8 @@ def test_seed_c5_1_7_wheel_on_a_semicylinder():
     p = [c[0] + r * sin(3 * phi), c[1] + r * cos(3 * phi)]
     pp, vp, ap = at_instant(p, coords)
     pc, vc, ac = at_instant(c, coords)
-    radius, centre = curvature(pp, vp, ap)
-    assert sympy.simplify(radius - 3 * r) == 0            # the notes' answer: 3r
-    got = answer(name, curvature="P")
-    assert same(name, got["radius"], radius) and same(name, got["center"], centre)
-    assert same(name, got["center"], [0, r])               # 3r below P
+    check_curvature(name, "P", (pp, vp, ap), 3 * r)         # the notes' answer: 3r
+    assert same(name, answer(name, curvature="P")["center"], [0, r])   # 3r below P
     assert same(name, answer(name, velocity="P"), vp) and vp == [2 * r * w, 0]
     assert same(name, answer(name, acceleration="P"), ap)
     assert sympy.simplify(ap[1] + sympy.Rational(4, 3) * r * w ** 2) == 0   # a_n = (4/3) r w², down
@@ -163,21 +160,17 @@ def test_seed_c5_e1_wheels_in_a_cavity():
     theta = phi
     coords = {theta: (0, thd, thdd)}
     c = [-2 * R * sin(theta), 2 * R * cos(theta)]
-    pp, vp, ap = at_instant(carried(c, -2 * theta, [0, -R]), coords)
-    po, vo, ao = at_instant(carried(c, -2 * theta, [0, -2 * R]), coords)
+    path_p = at_instant(carried(c, -2 * theta, [0, -R]), coords)
+    path_o = at_instant(carried(c, -2 * theta, [0, -2 * R]), coords)
+    vp, vo = path_p[1], path_o[1]
     assert same(name, answer(name, omega="wheels"), -2 * thd)
     assert same(name, answer(name, icr="wheels")["point"], [0, 3 * R])
     assert same(name, answer(name, velocity="P"), vp) and vp == [-4 * R * thd, 0]
     assert same(name, answer(name, velocity="O@wheels"), vo) and vo == [-6 * R * thd, 0]
     # The notes print 2R/3 and 9R/10: they use speeds 2R thd and 3R thd (not 4R thd and
     # 6R thd) and add the centripetal terms with the wrong sense. The derivation gives 8R, 6R.
-    radius_p, centre_p = curvature(pp, vp, ap)
-    radius_o, centre_o = curvature(po, vo, ao)
-    assert sympy.simplify(radius_p - 8 * R) == 0 and sympy.simplify(radius_o - 6 * R) == 0
-    got = answer(name, curvature="P")
-    assert same(name, got["radius"], radius_p) and same(name, got["center"], centre_p)
-    got = answer(name, curvature="O@wheels")
-    assert same(name, got["radius"], radius_o) and same(name, got["center"], centre_o)
+    check_curvature(name, "P", path_p, 8 * R)
+    check_curvature(name, "O@wheels", path_o, 6 * R)
 
 
 def test_seed_c5_e1_through_the_cli():

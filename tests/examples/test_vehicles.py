@@ -11,14 +11,15 @@ import sympy
 from sympy import sqrt
 from sympy.physics.vector import Point, ReferenceFrame, dynamicsymbols
 
-from .helpers import answer, cli_answers, close, cross, curvature, line_meet, same, solved, symbols
+from .helpers import answer, check_curvature, cli_answers, close, cross, line_meet, same, solved, symbols
 
 x, q = dynamicsymbols("x q")
 t = dynamicsymbols._t
 
 
-def wheel_point(centre_height, ratio, offset, speed, accel):
-    """A point at `offset` (x, y) from a wheel's centre; the centre translates along x with
+def wheel_point(centre, ratio, offset, speed, accel):
+    """A point at `offset` (x, y) from a wheel's `centre` (x, y at the instant); the centre
+    translates along x with
     velocity u(t), the wheel turns at ratio·u(t) (ccw). Returns (p, v, a) in the plane at the
     instant where u = `speed`, du/dt = `accel`."""
     u = sympy.Function("u")(t)
@@ -26,13 +27,13 @@ def wheel_point(centre_height, ratio, offset, speed, accel):
     wheel = n.orientnew("W", "Axis", [q, n.z])
     o = Point("O")
     o.set_vel(n, 0)
-    centre = o.locatenew("C", x * n.x + centre_height * n.y)
-    p = centre.locatenew("P", offset[0] * wheel.x + offset[1] * wheel.y)
-    centre.set_vel(n, u * n.x)
-    centre.set_acc(n, u.diff(t) * n.x)
+    hub = o.locatenew("C", (centre[0] + x) * n.x + centre[1] * n.y)
+    p = hub.locatenew("P", offset[0] * wheel.x + offset[1] * wheel.y)
+    hub.set_vel(n, u * n.x)
+    hub.set_acc(n, u.diff(t) * n.x)
     p.set_vel(wheel, 0)
-    p.v2pt_theory(centre, n, wheel)
-    p.a2pt_theory(centre, n, wheel)
+    p.v2pt_theory(hub, n, wheel)
+    p.a2pt_theory(hub, n, wheel)
     subs = {q.diff(t, 2): ratio * accel, q.diff(t): ratio * speed, q: 0, x: 0,
             u.diff(t): accel, u: speed}
 
@@ -50,7 +51,7 @@ def test_seed_c5_e4_upper_wheel():
     # from the chassis (a translation), wheel 1 turns at v/R and the upper wheel, touching it
     # without slip, at −v/R (equal radii, external contact): the same relative to the ground.
     w1, w_up = v / R, -v / R
-    _, vp, ap = wheel_point(R + sqrt(3) * R, 1 / R, [0, R], -v, -vd)     # rate −v/R
+    _, vp, ap = wheel_point([0, R + sqrt(3) * R], 1 / R, [0, R], -v, -vd)     # rate −v/R
     assert vp == [0, 0] and ap == [0, -v ** 2 / R]            # the notes: P is the centre, a = v²/R ↓
     assert same(name, answer(name, omega="wheel1"), w1)
     assert same(name, answer(name, icr="wheel1")["point"], [-R, 0])
@@ -99,17 +100,13 @@ def test_seed_c5_e5_unequal_wheels():
     assert same(name, answer(name, omega="wheel1"), w1)
     assert same(name, answer(name, icr="wheel1")["point"], [0, 2 * R + 2 * r1])
     assert same(name, answer(name, omega="wheel2"), -v / r2)
-    p, vp, ap = wheel_point(r2, -1 / r2, [0, -r1], v, vd)
-    p = [p[0] + s["L"], p[1]]
-    assert same(name, answer(name, velocity="P"), vp)
-    assert same(name, answer(name, acceleration="P"), ap)
+    path = wheel_point([s["L"], r2], -1 / r2, [0, -r1], v, vd)
+    assert same(name, answer(name, velocity="P"), path[1])
+    assert same(name, answer(name, acceleration="P"), path[2])
     # the notes print r2/(r2 − r1)² (not a length): their normal acceleration uses CP = r2
     # instead of r1. It is v² r1/r2² upwards, and the radius (r2 − r1)²/r1.
-    assert sympy.simplify(ap[1] - v ** 2 * r1 / r2 ** 2) == 0
-    radius, centre = curvature(p, vp, ap)
-    assert sympy.simplify(radius - (r2 - r1) ** 2 / r1) == 0
-    got = answer(name, curvature="P")
-    assert same(name, got["radius"], radius) and same(name, got["center"], centre)
+    assert sympy.simplify(path[2][1] - v ** 2 * r1 / r2 ** 2) == 0
+    check_curvature(name, "P", path, (r2 - r1) ** 2 / r1)
 
 
 def test_seed_c5_e5_through_the_cli():
@@ -131,15 +128,11 @@ def test_seed_c5_e6_bicycle():
     k_height = R_roda + r - R
     d = R_roda * R / r                          # the notes: the pedals' centre is d below K
     assert same(name, answer(name, icr="chainring")["point"], [b, k_height - d])
-    p, vp, ap = wheel_point(k_height, -(r / R) / R_roda, [0, -L], v, vd)
-    p = [p[0] + b, p[1]]
-    assert same(name, answer(name, velocity="P"), vp)
+    path = wheel_point([b, k_height], -(r / R) / R_roda, [0, -L], v, vd)
+    assert same(name, answer(name, velocity="P"), path[1])
     # The notes print (R/r)² R_roda, independent of L: they keep only L·w of v(P) and do not
     # square it. Derived: (d − L)²/L.
-    radius, centre = curvature(p, vp, ap)
-    assert sympy.simplify(radius - (d - L) ** 2 / L) == 0
-    got = answer(name, curvature="P")
-    assert same(name, got["radius"], radius) and same(name, got["center"], centre)
+    check_curvature(name, "P", path, (d - L) ** 2 / L)
 
 
 def test_seed_c5_2_1_tricycle_steered_45_degrees():

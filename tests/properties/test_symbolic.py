@@ -102,3 +102,23 @@ def test_slider_crank_formulas_match_numbers(r, ratio, w, al):
 @given(big=positive, r=positive, w=positive, wd=signed)
 def test_wheel_on_cylinder_formulas_match_numbers(big, r, w, wd):
     check("wheel_on_cylinder", {"R": big, "r": r, "w": w, "wd": wd})
+
+
+def test_symbolic_geometry_real_only_for_some_values_of_the_symbols():
+    # Regression: sqrt(l² − 3r²/4) is real only for l > (√3/2) r; the engine's default probe
+    # values of the symbols fell outside and the solve crashed ("Cannot convert complex to
+    # float"). Now other probe values are tried.
+    sol = kinematika.solve(SLIDER_CRANK)
+    r, l, w = (sympy.Symbol(n, positive=True) for n in "rlw")
+    root = sympy.sqrt(l ** 2 - 3 * r ** 2 / 4)
+    # v_B = ω k × OA + ω_rod k × AB, AB = (root, −√3 r/2), with v_B horizontal:
+    # y: ω r/2 + ω_rod root = 0; x: −(√3/2) r ω + (√3/2) r ω_rod = −(√3/2) r ω (1 + r/(2 root))
+    expected = -sympy.sqrt(3) / 2 * r * w * (1 + r / 2 / root)
+    assert sympy.simplify(sol.velocity("B")[0] - expected) == 0
+
+
+def test_symbolic_points_never_real_are_a_geometry_error():
+    tree = dict(SLIDER_CRANK, points={"O": [0, 0], "A": ["r/2", "sqrt(-r)"], "B": [1, 0]})
+    with pytest.raises(kinematika.KinematikaError) as err:
+        kinematika.solve(tree)
+    assert err.value.kind == "geometry" and "not real" in str(err.value)
