@@ -70,10 +70,34 @@ def block_order(sol: Solution) -> list[Step]:
             continue
         driven = any(rows[r].driver for r in block_rows)
         kind = "input" if driven and len(bodies) == 1 and _grounded(sol, bodies[0]) else "other"
-        neighbours = _neighbours(sol, bodies, known)
-        steps.append(Step(kind, bodies, joints, neighbours, source="blocks"))
+        step = Step(kind, bodies, joints, _neighbours(sol, bodies, known), source="blocks")
+        steps.append(dyad(sol, step, known) if kind == "other" else step)
         known.update(bodies)
     return steps
+
+
+def dyad(sol: Solution, step: Step, known: set[str]) -> Step:
+    """A group of two bodies chained to known ones by three R or P joints, named as a dyad."""
+    if len(step.bodies) != 2:
+        return step
+    b1, b2 = step.bodies
+    pairs = {"revolute": "R", "prismatic": "P"}
+
+    def between(x: str, others: set[str]) -> list:
+        return [j for j in sol.model.joints if {j.a, j.b} & {x} and ({j.a, j.b} - {x}) <= others]
+
+    ends1, ends2, middle = between(b1, known), between(b2, known), between(b1, {b2})
+    chain = ends1 + middle + ends2
+    if len(ends1) != 1 or len(ends2) != 1 or len(middle) != 1 or any(j.type not in pairs for j in chain):
+        return step
+    letters = "".join(pairs[j.type] for j in chain)
+    if letters == "PRR":
+        b1, b2, chain, letters = b2, b1, chain[::-1], "RRP"
+    if letters not in ("RRR", "RRP", "RPR", "PRP"):
+        return step
+    k1 = next(iter({chain[0].a, chain[0].b} - {b1}))
+    k2 = next(iter({chain[2].a, chain[2].b} - {b2}))
+    return Step(letters, [b1, b2], [j.id for j in chain], [k1, k2], letters, "blocks")
 
 
 def _joints_of(sol: Solution, rows: list) -> list[str]:

@@ -31,6 +31,7 @@ class PlanarSteps:
         self.done: set[str] = set()          # point labels already explained
         self.used: set[str] = set()          # joints already written
         self.contacts: dict[str, str] = {}   # joint id -> name of its contact point
+        self.stated: set[int] = set()        # drivers already stated
 
     def section(self) -> Section:
         title = "sec.velocities" if self.level == "v" else "sec.accelerations"
@@ -52,7 +53,7 @@ class PlanarSteps:
         builder = {"input": self.input, "RRR": self.rrr, "RRP": self.dyad_rp, "RPR": self.rpr,
                    "PRP": self.prp}.get(step.kind)
         blocks = self.drivers(step)
-        if builder is not None and step.source == "assur":
+        if builder is not None and (step.source == "assur" or step.kind != "input"):
             made = builder(step, chain)
             if made is not None:
                 self.used.update(step.joints)
@@ -60,11 +61,11 @@ class PlanarSteps:
         return blocks + self.other(step) + self.carry(step)
 
     def drivers(self, step: Step) -> list:
+        """The drivers that act on the step's bodies, each stated once, at its first step."""
         out = []
         for d in self.ctx.model.drivers:
-            body = d.body if d.kind == "omega" else d.point.body if d.kind == "velocity" else None
-            joint = self.ctx.model.joint(d.joint) if d.kind == "joint" else None
-            if body in step.bodies or (joint is not None and {joint.a, joint.b} & set(step.bodies)):
+            if d.index not in self.stated and set(driven(self.ctx, d)) & set(step.bodies):
+                self.stated.add(d.index)
                 out.append(driver_msg(d, self.level))
         return out
 
@@ -263,6 +264,8 @@ class PlanarSteps:
         """The motion of the other points of the step's bodies: v_P = v_Q + ω × QP."""
         ctx, out = self.ctx, []
         for body in step.bodies:
+            if not ctx.model.bodies[body].points:
+                continue
             q = self.anchor(body)
             if ctx.point_label(q, body) not in self.done:
                 self.done.add(ctx.point_label(q, body))
@@ -287,6 +290,17 @@ class PlanarSteps:
             if ctx.point_label(p, body) in self.done:
                 return p
         return points[0]
+
+
+def driven(ctx: Ctx, d) -> list[str]:
+    """The bodies whose motion a driver states (every carrier of a shared point)."""
+    if d.kind == "omega":
+        return [d.body]
+    if d.kind == "joint":
+        j = ctx.model.joint(d.joint)
+        return [b for b in (j.a, j.b) if b != ctx.frame]
+    point = d.point.point
+    return ctx.model.carriers(point) if ctx.shared(point) else [d.point.body]
 
 
 def guide(j: Joint) -> Msg:

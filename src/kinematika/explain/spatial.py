@@ -87,6 +87,8 @@ def fields_section(ctx: Ctx, level: str) -> Section:
     done: set[str] = set()
     for body, parent, at in carriers(ctx):
         points = ctx.model.bodies[body].points
+        if not points:
+            continue
         anchor = at if at in points else points[0]
         done.add(ctx.point_label(anchor, body))
         for p in points:
@@ -130,7 +132,7 @@ def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> l
                                         Sym("v", p, sub_key="sub.rel")], kind="coriolis"))
         target = Term(Sym(level, p), ctx.clean(got["total"], unit), *KNOWN, kind="point")
         out.append(Equation(target, [side], level, ref, figure=ctx.planar))
-        anchor = pivot if pivot is not None else ctx.model.bodies[moving].points[0]
+        anchor = pivot if pivot is not None else (ctx.model.bodies[moving].points or [p])[0]
         drag_eq = Equation(_relabel(point_term(ctx, level, p, moving), drag.sym),
                            [[point_term(ctx, level, anchor, moving)] +
                             rotation_terms(ctx, level, moving, anchor, p, False)],
