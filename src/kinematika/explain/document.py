@@ -130,6 +130,7 @@ class Figure:
     arrows: list[Arrow] = field(default_factory=list)
     segments: list[tuple[tuple, tuple]] = field(default_factory=list)
     circles: list[tuple[tuple, float]] = field(default_factory=list)
+    lines: list[tuple[tuple, tuple]] = field(default_factory=list)        # tracks, guides (thin)
     points: list[tuple[str, tuple, str]] = field(default_factory=list)   # (label, xy, style)
     unit: str = ""                                 # unit of the scale bar (speed, accel, len)
     sample: bool = False                           # drawn at sample values of the symbols

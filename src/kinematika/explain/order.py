@@ -63,7 +63,7 @@ def block_order(sol: Solution) -> list[Step]:
     steps: list[Step] = []
     for block_rows, cols in blocks:
         bodies = [b for b in dict.fromkeys(solver.unknowns.body_of(c) for c in cols) if b not in known]
-        joints = _joints_of(sol, [rows[r] for r in block_rows])
+        joints = _joints_of(sol, [rows[r] for r in block_rows], bodies)
         if not bodies:
             if steps:
                 steps[-1].joints += [j for j in joints if j not in steps[-1].joints]
@@ -100,10 +100,10 @@ def dyad(sol: Solution, step: Step, known: set[str]) -> Step:
     return Step(letters, [b1, b2], [j.id for j in chain], [k1, k2], letters, "blocks")
 
 
-def _joints_of(sol: Solution, rows: list) -> list[str]:
-    ids = [j.id for j in sol.model.joints]
-    found = [r.label.partition(":")[0] for r in rows if not r.driver]
-    return [j for j in ids if j in found]
+def _joints_of(sol: Solution, rows: list, bodies: list[str]) -> list[str]:
+    """The joints of the block's rows that touch its new bodies."""
+    found = {r.label.partition(":")[0] for r in rows if not r.driver}
+    return [j.id for j in sol.model.joints if j.id in found and {j.a, j.b} & set(bodies)]
 
 
 def _grounded(sol: Solution, body: str) -> bool:

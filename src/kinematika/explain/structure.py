@@ -60,11 +60,14 @@ def mechanism_figure(ctx: Ctx) -> Figure:
         for shape in ctx.inst.shapes[name]:
             if hasattr(shape, "radius"):
                 fig.circles.append((ctx.num(shape.center), float(ctx.num(shape.radius))))
+            elif hasattr(shape, "direction"):
+                p, d, k = ctx.num(shape.through), ctx.num(shape.direction), ctx.inst.scale
+                fig.lines.append((tuple(a - k * b for a, b in zip(p, d)), tuple(a + k * b for a, b in zip(p, d))))
     grounded = set(ctx.model.bodies[ctx.frame].points)
     for name, p in pos.items():
         fig.points.append((name, p, "ground" if name in grounded else "point"))
-    speeds = [(pos[p], ctx.num(ctx.vel(name, p))) for name, body in ctx.model.bodies.items()
-              if name != ctx.frame for p in body.points]
+    speeds = list(dict.fromkeys((pos[p], ctx.num(ctx.vel(name, p))) for name, body in ctx.model.bodies.items()
+                                if name != ctx.frame for p in body.points))
     top = max([sum(c * c for c in v) ** 0.5 for _, v in speeds] + [0.0])
     if top > 0:
         k = 0.35 * ctx.inst.scale / top

@@ -129,6 +129,8 @@ def tikz(fig: Figure, label, unit: str, caption: str) -> str:
     out = [colours, r"\begin{center}\begin{tikzpicture}[>=stealth]"]
     for c, r in fig.circles:
         out.append(rf"\draw[gray] {at(c)} circle ({r * k:.3f});")
+    for p, q in fig.lines:
+        out.append(rf"\draw[gray, dashed] {at(p)} -- {at(q)};")
     for p, q in fig.segments:
         out.append(rf"\draw[line width=1.6pt, gray!70!black] {at(p)} -- {at(q)};")
     for a in fig.arrows:

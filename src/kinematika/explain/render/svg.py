@@ -36,7 +36,7 @@ def bounds(fig: Figure) -> tuple[float, float, float, float]:
     for a in fig.arrows:
         xs += [a.start[0], a.end[0]]
         ys += [a.start[1], a.end[1]]
-    for p, q in fig.segments:
+    for p, q in fig.segments + fig.lines:
         xs += [p[0], q[0]]
         ys += [p[1], q[1]]
     for c, r in fig.circles:
@@ -72,6 +72,10 @@ def svg(fig: Figure, label: Callable[[Sym], str], unit: str) -> str:
         cx, cy = at(c)
         out.append(f'<circle cx="{cx:.1f}" cy="{cy:.1f}" r="{r * k:.1f}" fill="none" stroke="#777" '
                    'stroke-width="1.2"/>')
+    for p, q in fig.lines:
+        (ax, ay), (bx, by) = at(p), at(q)
+        out.append(f'<line x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" y2="{by:.1f}" stroke="#777" '
+                   'stroke-width="1.2" stroke-dasharray="6 3"/>')
     for p, q in fig.segments:
         (ax, ay), (bx, by) = at(p), at(q)
         out.append(f'<line x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" y2="{by:.1f}" stroke="#444" '
