@@ -8,7 +8,6 @@ import pytest
 
 from kinematika.algebra.vectors import add, dot
 from kinematika.explain.document import CentreNote, Sym
-from kinematika.model.model import PointRef
 
 from .helpers import ALL, close, explained, num
 
@@ -173,7 +172,7 @@ def test_four_bar_against_its_loop_equations():
 
 def test_symbolic_derivations_of_the_notes():
     """Seed 002: epicyclic planet turns at −5ω with its centre 2r/5 from its axle, the sun at
-    7ω; gear change: the ring turns at 4Ω/3."""
+    7ω; gear change: the ring turns at 4Ω/3; wheel on a semicylinder: ρ of its top is 3r."""
     import sympy
 
     def rate(name, body):
@@ -225,3 +224,17 @@ def test_order_from_the_engines_blocks_still_finds_the_dyad():
         check(sol, doc, "slider-driven")
     read = {d.body: d.value.value for d in doc.derived() if d.kind == "omega" and d.source is not None}
     assert math.isclose(read["crank"], 30.0) and math.isclose(read["rod"], -10.0)
+
+
+def test_curvature_worked_out_as_in_the_notes():
+    """C5-1.7: the top P of a wheel (radius r) rolling on a fixed semicylinder (radius 2r)
+    has ρ = 3r; derived in the explanation as |v|²/|aⁿ| from its own split of a."""
+    import sympy
+
+    sol, doc = explained("seed_c5_1_7_semicylinder")
+    r = next(s for s in sol.inst.env.values() if str(s) == "r")
+    radius = next(d for d in doc.derived() if d.kind == "radius" and d.sym.sub == "P")
+    assert sympy.simplify(radius.value.value - 3 * r) == 0
+    v, an = radius.arm, radius.source.value
+    assert sympy.simplify(sum(c * c for c in v) / sympy.sqrt(sum(c * c for c in an)) - 3 * r) == 0
+

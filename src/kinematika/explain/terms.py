@@ -8,8 +8,6 @@ normal terms ∥ PQ, relative terms ∥ the guide, Coriolis terms ⊥ the guide.
 """
 from __future__ import annotations
 
-from typing import Any
-
 from ..algebra.vectors import scale
 from .context import Ctx, alpha_sym, omega_sym, segment
 from .document import Ann, Msg, Sym, Term
@@ -78,11 +76,3 @@ def target_term(ctx: Ctx, level: str, point: str, body: str, known: bool,
         t.value = ctx.clean(value, UNIT[level])
         t.sym = Sym(level, f"{t.sym.sub}/{relative_to}")
     return t
-
-
-def total(terms: list[Term]) -> tuple[Any, ...]:
-    """The sum of the terms' values (for checks)."""
-    out = None
-    for t in terms:
-        out = t.value if out is None else tuple(a + b for a, b in zip(out, t.value))
-    return out
