@@ -5,54 +5,25 @@ from __future__ import annotations
 from typing import Any
 
 from ..catalogue import Catalogue
-from .svg import sym_label
 from ..document import Ann, CentreNote, Derived, Document, Equation, Figure, Inline, Msg, Section, Sym, Table, Value
+from .svg import sym_label
 
 UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "rate2": "rad/s²"}
 
 
 class Renderer:
-    """Turns a `Document` into text in one language; subclasses supply the markup."""
+    """Turns a `Document` into text in one language.
+
+    Each format's subclass supplies the markup: `esc(text)`, `sym(Sym)`, `power(mantissa,
+    exponent)`, `formula(expr)`, `page(body)`, `heading(level, text)`, `para(text)`,
+    `equation(Equation)`, `table(header, rows)` and `figure(Figure)`.
+    """
 
     fmt = ""
 
     def __init__(self, doc: Document, cat: Catalogue) -> None:
         self.doc = doc
         self.cat = cat
-
-    # to be given by each format -------------------------------------------------------------
-    def esc(self, text: str) -> str:
-        raise NotImplementedError
-
-    def sym(self, s: Sym) -> str:
-        raise NotImplementedError
-
-    def power(self, mantissa: str, exponent: int) -> str:
-        raise NotImplementedError
-
-    def formula(self, expr: Any) -> str:
-        raise NotImplementedError
-
-    def page(self, body: str) -> str:
-        raise NotImplementedError
-
-    def heading(self, level: int, text: str) -> str:
-        raise NotImplementedError
-
-    def para(self, text: str) -> str:
-        raise NotImplementedError
-
-    def equation(self, eq: Equation) -> str:
-        raise NotImplementedError
-
-    def table(self, header: list[str], rows: list[list[str]]) -> str:
-        raise NotImplementedError
-
-    def figure(self, fig: Figure) -> str:
-        raise NotImplementedError
-
-    def unit_text(self, unit: str) -> str:
-        return self.esc(unit)
 
     # the walk ---------------------------------------------------------------------------------
     def render(self) -> str:
@@ -139,7 +110,7 @@ class Renderer:
     def unit(self, kind: str) -> str:
         if kind not in UNITS:
             return ""
-        return self.unit_text(UNITS[kind].format(L=self.doc.length_unit))
+        return self.esc(UNITS[kind].format(L=self.doc.length_unit))
 
     def scalar(self, x: Any) -> str:
         if isinstance(x, (int, float)):
