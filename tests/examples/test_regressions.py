@@ -3,7 +3,11 @@ from __future__ import annotations
 
 import math
 
+import sympy
+
 import kinematika
+
+from .helpers import EXAMPLES
 
 
 def test_parameter_value_may_use_pi():
@@ -17,3 +21,13 @@ def test_parameter_value_may_use_pi():
     })
     assert math.isclose(float(sol.omega("crank")), 50 * math.pi)
 
+
+
+def test_forced_symbols_keep_derived_parameters_as_formulas():
+    # With --symbolic every parameter became an independent symbol, also those defined from
+    # others (y2 = r2 − r3 in the pulley train), so the geometry no longer held ("'belt2'
+    # does not touch 'pulley3'"). Given values become symbols; derived ones stay formulas.
+    sol = kinematika.solve(EXAMPLES / "pulley_train.yaml", symbolic=True)
+    r1, r2, r3, r4, w1 = (sympy.Symbol(n, positive=True) for n in ("r1", "r2", "r3", "r4", "w1"))
+    # belt speeds equal at each pulley's lowest point: w1 r1 = w2 r2, w2 r3 = w4 r4
+    assert sympy.simplify(sol.omega("pulley4") - w1 * r1 / r2 * r3 / r4) == 0

@@ -116,7 +116,9 @@ def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict
     env: dict[str, Any] = {}
     pending = dict(model.parameters)
     for name, p in list(pending.items()):
-        if p.value is None or (force_symbols and backend.symbolic):
+        # forced symbols: the parameters given values; those defined from others stay formulas
+        given = p.value is not None and not p.value.names() & set(model.parameters)
+        if p.value is None or (force_symbols and backend.symbolic and given):
             env[name] = backend.symbol(name, p.positive)
             del pending[name]
     while pending:
