@@ -156,7 +156,7 @@ def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
     asm = Assembler(sweeper, plan)
     model, n = sweeper.model, plan.steps + 1
     bodies = {b: {q: np.full(n, np.nan) for q in ("angle", "omega", "alpha")} for b in model.bodies}
-    motions = {(name, body): tuple(np.full((2, n), np.nan) for _ in range(3))
+    motions = {(name, body): tuple(np.full((n, 2), np.nan) for _ in range(3))
                for name, body, _ in sweeper.motions}
     ok = np.zeros(n, dtype=bool)
     singular = np.zeros(n, dtype=bool)
@@ -198,9 +198,9 @@ def _store(sweeper: "Sweeper", poses: Poses, motion: Motion, k: int, bodies: dic
     for (name, body), (pos, vel, acc) in motions.items():
         p = poses.point(body, sweeper.points[name])
         state = motion.states[body]
-        pos[:, k] = p
-        vel[:, k] = motion.velocity(state, p)
-        acc[:, k] = motion.acceleration(state, p)
+        pos[k] = p
+        vel[k] = motion.velocity(state, p)
+        acc[k] = motion.acceleration(state, p)
 
 
 def _reporter(progress: bool | Callable[[int, int], None], total: int) -> Callable[[Optional[int]], None]:

@@ -86,20 +86,16 @@ class Sweeper:
             from .newton import newton_sweep
 
             return newton_sweep(self, plan, skip_bad, progress)
-        from .closed_form import SINGULAR
-
         out = self.closed.solve(plan.increments)
-        singular = out.assembled & (out.margin < SINGULAR)
-        ok = out.assembled & ~singular
+        ok = out.assembled & ~out.singular
         if not skip_bad and not ok.all():
             k = int(np.flatnonzero(~ok)[0])
-            raise bad_row(plan, k, "singular" if singular[k] else "assembly", out.worst[k])
+            raise bad_row(plan, k, "singular" if out.singular[k] else "assembly", out.worst[k])
         bodies = {b: {"angle": t.theta if b == self.model.frame else np.degrees(t.theta),
                       "omega": t.omega, "alpha": t.alpha} for b, t in out.tracks.items()}
-        points = {}
-        for name, body, refs in self.motions:
-            points[name, body] = out.tracks[body].point(self.points[name])
-        return self.result(plan, ok, bodies, points, dead_points(plan.coordinate, ok, singular))
+        points = {(name, body): out.tracks[body].point(complex(*self.points[name]))
+                  for name, body, _ in self.motions}
+        return self.result(plan, ok, bodies, points, dead_points(plan.coordinate, ok, out.singular))
 
     def result(self, plan: Plan, ok: np.ndarray, bodies: dict, motions: dict,
                dead: list[float]) -> SweepResult:
@@ -116,10 +112,16 @@ class Sweeper:
                            plan.unit, self.model.name, 2, self.method, self.model.frame)
 
 
-def _rows(xy: Any, bad: Optional[np.ndarray]) -> np.ndarray:
-    """(N, 2) rows from x and y over the rows (a (2, N) array is only transposed), NaN if bad."""
-    arr = xy.T if isinstance(xy, np.ndarray) else np.stack(xy, axis=1)
-    return arr if bad is None else np.where(bad[:, None], np.nan, arr)
+def _rows(values: np.ndarray, bad: Optional[np.ndarray]) -> np.ndarray:
+    """(N, 2) rows: kept as they are, or read from complex x + iy (a view: no copy); NaN if bad."""
+    if values.dtype.kind == "c":
+        if values.strides == (0,):          # a constant: (N, 2) rows with stride 0 as well
+            row = np.array([values[0].real, values[0].imag])
+            values = np.ndarray((len(values), 2), float, row, strides=(0, 8))
+            values.flags.writeable = False
+        else:
+            values = values.view(np.float64).reshape(len(values), 2)
+    return values if bad is None else np.where(bad[:, None], np.nan, values)
 
 
 def _filled(values: dict[str, Any], bad: Optional[np.ndarray]) -> dict[str, np.ndarray]:

@@ -1,0 +1,191 @@
+"""kinematika's speed next to its peers, in one run: prints a table of times and ratios.
+
+    bash benchmarks/setup.sh                       # once: .venv-bench with the peers
+    .venv-bench/bin/python benchmarks/run.py       # about three minutes
+
+Cases: the crank-rocker with a coupler point, an offset slider-crank, a Watt six-bar and a
+Jansen leg, a full crank turn in 3600 positions, with positions, velocities and
+accelerations of every point and ω, α of every body. In process: kinematika (a prepared
+`Sweeper`, and `run_sweep` on a loaded model, analysis included), the closed-form numpy
+four-bar written by hand, pylinkage with numba (`step_fast_with_kinematics`) and without
+(`step_with_derivatives` with NUMBA_DISABLE_JIT=1, in a child process), and `mechanism`
+(four-bar and slider-crank). Whole processes: `kinematika sweep MODEL` against each peer's
+script (`peers.py`). Then one instant of chains of 125 to 2000 bodies (sparse path).
+Times are the best of several repeats; ratios are taken within this run.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import time
+import timeit
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+CASES = ("four_bar", "slider_crank", "watt_six_bar", "jansen_leg")
+MODELS = {"four_bar": HERE / "models" / "four_bar.yaml", "slider_crank": HERE / "models" / "slider_crank.yaml",
+          "watt_six_bar": HERE.parent / "examples" / "watt_six_bar.yaml",
+          "jansen_leg": HERE.parent / "examples" / "jansen_leg.yaml"}
+
+
+def best(fn, repeat: int, number: int = 1) -> float:
+    """Best time of `repeat` runs of `number` calls, per call, in seconds."""
+    return min(timeit.repeat(fn, number=number, repeat=repeat)) / number
+
+
+def in_process(n: int, repeat: int, mechanism_n: int) -> dict[str, dict[str, float]]:
+    from kinematika import load_model
+    from kinematika.sweep import run_sweep
+    from kinematika.sweep.run import Sweeper
+    from numpy_four_bar import four_bar
+    from peers import mechanism_build, mechanism_work, pylinkage_build, pylinkage_work
+
+    out: dict[str, dict[str, float]] = {}
+    for case in CASES:
+        row = out.setdefault(case, {})
+        model = load_model(MODELS[case])
+        sweeper = Sweeper(model)
+        row["kinematika"] = best(lambda: sweeper.run(steps=n - 1), repeat, 5)
+        row["kinematika run_sweep"] = best(lambda: run_sweep(model, steps=n - 1), repeat, 3)
+        if case == "four_bar":
+            theta = np.radians(90 + np.linspace(0, 360, n))
+            row["numpy closed form"] = best(lambda: four_bar(theta), repeat, 5)
+            row["kinematika"] = best(lambda: sweeper.run(steps=n - 1), repeat, 5)   # same moment
+        linkage, links = pylinkage_build(case, n)
+        pylinkage_work(linkage, links, n, fast=True)                              # compile first
+        row["pylinkage+numba"] = best(lambda: pylinkage_work(linkage, links, n, fast=True), repeat, 3)
+        row["pylinkage"] = child_time("pylinkage-slow", case, n)
+        if mechanism_n and case in ("four_bar", "slider_crank"):
+            mech = mechanism_build(case, mechanism_n)
+            row["mechanism"] = best(lambda: mechanism_work(mech), 1) * n / mechanism_n
+    return out
+
+
+def child_time(tool: str, case: str, n: int) -> float:
+    """pylinkage without numba, timed inside a child process started with NUMBA_DISABLE_JIT=1."""
+    code = ("import sys, timeit; sys.path.insert(0, %r); from peers import *; "
+            "lk, links = pylinkage_build(%r, %d); "
+            "print(min(timeit.repeat(lambda: pylinkage_work(lk, links, %d, fast=False), number=1, repeat=2)))"
+            % (str(HERE), case, n, n))
+    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True)
+    return float(done.stdout.strip().splitlines()[-1])
+
+
+def whole_process(n: int, repeat: int, mechanism_n: int) -> dict[str, dict[str, float]]:
+    """Wall time of whole commands: start-up, model, sweep, output."""
+    bindir = Path(sys.executable).parent
+    kin = str(bindir / "kinematika")
+    peers = str(HERE / "peers.py")
+    out: dict[str, dict[str, float]] = {}
+    for case in CASES:
+        row = out.setdefault(case, {})
+        row["kinematika sweep"] = wall([kin, "sweep", str(MODELS[case]), "--steps", str(n - 1)], repeat)
+        row["kinematika sweep --json"] = wall([kin, "sweep", str(MODELS[case]), "--steps", str(n - 1),
+                                               "--json"], repeat)
+        row["pylinkage+numba"] = wall([sys.executable, peers, "pylinkage", case, str(n)], repeat)
+        row["pylinkage"] = wall([sys.executable, peers, "pylinkage", case, str(n), "slow"], 1,
+                                {"NUMBA_DISABLE_JIT": "1"})
+        if mechanism_n and case in ("four_bar", "slider_crank"):
+            row["mechanism"] = wall([sys.executable, peers, "mechanism", case, str(mechanism_n)], 1)
+    out["(python + numpy import)"] = {"floor": wall([sys.executable, "-c", "import numpy"], repeat)}
+    return out
+
+
+def wall(cmd: list[str], repeat: int, env: dict | None = None) -> float:
+    times = []
+    for _ in range(repeat + 1):          # the first run warms caches (numba's, the disk's)
+        start = time.perf_counter()
+        subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True,
+                       env=dict(os.environ, **(env or {})))
+        times.append(time.perf_counter() - start)
+    return min(times[1:]) if len(times) > 1 else times[0]
+
+
+def scaling(sizes: list[int], repeat: int) -> list[tuple[int, float, float]]:
+    """One instant (velocities and accelerations) of a chain of parallelogram loops."""
+    from chain import four_bar_chain
+    from kinematika.engine.instant import instantiate
+    from kinematika.engine.system import InstantSolver
+    from kinematika.model.build import build_model
+
+    rows = []
+    for size in sizes:
+        model = build_model(four_bar_chain(size))
+        inst = instantiate(model, False)
+        solve = best(lambda: InstantSolver(inst).solve(), repeat)
+        whole = best(lambda: InstantSolver(instantiate(build_model(four_bar_chain(size)), False)).solve(), 2)
+        rows.append((len(model.moving_bodies), solve, whole))
+    return rows
+
+
+def ms(t: float) -> str:
+    return f"{t * 1e3:.3g} ms" if t < 1 else f"{t:.3g} s"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--positions", type=int, default=3600)
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--mechanism-positions", type=int, default=360,
+                        help="positions for `mechanism` (its time is scaled to --positions); 0 skips it")
+    args = parser.parse_args()
+    n = args.positions
+    print(f"# kinematika benchmark: {n} positions per sweep, best of {args.repeat}\n")
+    inner = in_process(n, args.repeat, args.mechanism_positions)
+    print("## In process (one sweep: positions, velocities, accelerations of every point; ω, α of every body)\n")
+    tools = ["kinematika", "kinematika run_sweep", "numpy closed form", "pylinkage+numba", "pylinkage", "mechanism"]
+    print("| case | " + " | ".join(tools) + " |")
+    print("|---" * (len(tools) + 1) + "|")
+    for case, row in inner.items():
+        cells = [f"{ms(row[t])} ({row[t] / n * 1e6:.3g} µs/pos)" if t in row else "—" for t in tools]
+        print(f"| {case} | " + " | ".join(cells) + " |")
+    print("\nRatios (same run):")
+    for case, row in inner.items():
+        k = row["kinematika"]
+        parts = []
+        if "numpy closed form" in row:
+            parts.append(f"kinematika / numpy closed form = {k / row['numpy closed form']:.2f}× "
+                         f"(run_sweep incl. analysis: {row['kinematika run_sweep'] / row['numpy closed form']:.2f}×)")
+        parts.append(f"pylinkage+numba / kinematika = {row['pylinkage+numba'] / k:.1f}×")
+        parts.append(f"pylinkage / kinematika = {row['pylinkage'] / k:.0f}×")
+        if "mechanism" in row:
+            parts.append(f"mechanism / kinematika = {row['mechanism'] / k:.0f}×")
+        print(f"- {case}: " + "; ".join(parts))
+    outer = whole_process(n, max(2, args.repeat // 2), args.mechanism_positions)
+    print("\n## Whole process (start-up included; `mechanism` at --mechanism-positions)\n")
+    tools = ["kinematika sweep", "kinematika sweep --json", "pylinkage+numba", "pylinkage", "mechanism"]
+    print("| case | " + " | ".join(tools) + " |")
+    print("|---" * (len(tools) + 1) + "|")
+    for case, row in outer.items():
+        if case.startswith("("):
+            continue
+        print(f"| {case} | " + " | ".join(ms(row[t]) if t in row else "—" for t in tools) + " |")
+    floor = outer["(python + numpy import)"]["floor"]
+    print(f"\n`python -c 'import numpy'` alone: {ms(floor)}")
+    for case, row in outer.items():
+        if case.startswith("("):
+            continue
+        peers = {t: v for t, v in row.items() if not t.startswith("kinematika")}
+        fastest = min(peers, key=peers.get)
+        print(f"- {case}: fastest peer {fastest} {ms(peers[fastest])} / kinematika sweep "
+              f"{ms(row['kinematika sweep'])} = {peers[fastest] / row['kinematika sweep']:.2f}×")
+    print("\n## One instant of a large planar mechanism (chain of four-bar loops, sparse LU)\n")
+    print("| moving bodies | solve (velocity + acceleration) | with model build | per body |")
+    print("|---|---|---|---|")
+    rows = scaling([125, 250, 500, 1000, 2000], args.repeat)
+    for bodies, solve, whole in rows:
+        print(f"| {bodies} | {ms(solve)} | {ms(whole)} | {solve / bodies * 1e6:.1f} µs |")
+    growth = [b2[1] / b1[1] for b1, b2 in zip(rows, rows[1:])]
+    print("\nGrowth of the solve time per doubling of the bodies: " + ", ".join(f"{g:.2f}×" for g in growth)
+          + " (2.00× is linear)")
+
+
+if __name__ == "__main__":
+    main()
