@@ -24,6 +24,16 @@ def kinds(tree_or_path):
     return None if groups is None else [(g.kind, g.bodies) for g in groups]
 
 
+def inverted_slider_crank(w: float) -> dict:
+    """Crank O-A (1, drawn up); the pin A slides in a slot of a rocker pivoted at C = (2, 0)."""
+    return {"points": {"O": [0, 0], "A": [0, 1], "C": [2, 0]},
+            "bodies": {"ground": ["O", "C"], "crank": ["O", "A"], "rocker": ["C", "A"]},
+            "joints": [{"type": "revolute", "bodies": ["ground", "crank"], "at": "O"},
+                       {"type": "revolute", "bodies": ["ground", "rocker"], "at": "C"},
+                       {"type": "slot", "bodies": ["rocker", "crank"], "at": "A", "along": ["C", "A"]}],
+            "drivers": [{"omega": "crank", "value": w}]}
+
+
 def test_four_bar_and_slider_crank_are_a_crank_and_one_dyad():
     assert kinds(four_bar_tree()) == [("input", ["crank"]), ("RRR", ["coupler", "rocker"])]
     assert kinds(slider_crank_tree()) == [("input", ["crank"]), ("RRP", ["rod", "slider"])]
@@ -39,12 +49,7 @@ def test_multi_loop_linkages_decompose_in_solving_order():
 
 def test_slotted_and_sliding_dyads_are_named_by_their_pairs():
     # inverted slider-crank: the crank pin slides in a slot of a rocker pivoted on the ground
-    tree = {"points": {"O": [0, 0], "A": [0, 1], "C": [2, 0]},
-            "bodies": {"ground": ["O", "C"], "crank": ["O", "A"], "rocker": ["C", "A"]},
-            "joints": [{"type": "revolute", "bodies": ["ground", "crank"], "at": "O"},
-                       {"type": "revolute", "bodies": ["ground", "rocker"], "at": "C"},
-                       {"type": "slot", "bodies": ["rocker", "crank"], "at": "A", "along": ["C", "A"]}],
-            "drivers": [{"omega": "crank", "value": 1}]}
+    tree = inverted_slider_crank(1.0)
     assert kinds(tree) == [("input", ["crank"]), ("RPR", ["rocker"])]
     # Scotch yoke: a pin on the crank in a slot of a slider on a horizontal guide; slider and
     # slot make two sliding pairs in a row (an RPP dyad), which is not one of the four closed
@@ -66,12 +71,7 @@ def test_slotted_and_sliding_dyads_are_named_by_their_pairs():
 
 
 def test_inverted_slider_crank_rocker_follows_the_pin():
-    tree = {"points": {"O": [0, 0], "A": [0, 1], "C": [2, 0]},
-            "bodies": {"ground": ["O", "C"], "crank": ["O", "A"], "rocker": ["C", "A"]},
-            "joints": [{"type": "revolute", "bodies": ["ground", "crank"], "at": "O"},
-                       {"type": "revolute", "bodies": ["ground", "rocker"], "at": "C"},
-                       {"type": "slot", "bodies": ["rocker", "crank"], "at": "A", "along": ["C", "A"]}],
-            "drivers": [{"omega": "crank", "value": 2.0}]}
+    tree = inverted_slider_crank(2.0)
     for general in (False, True):
         sweeper = Sweeper(tree)
         if general:

@@ -12,7 +12,6 @@ that solution's matrix is the Jacobian for the next increment.
 from __future__ import annotations
 
 import math
-import sys
 from typing import TYPE_CHECKING, Any, Callable, Optional
 
 import numpy as np
@@ -23,6 +22,7 @@ from ..errors import KinematikaError
 from .constraints import residual_functions
 from .plan import Plan
 from .poses import Poses, moved_geometry, moved_instant
+from .progress import reporter
 from .result import SweepResult
 
 if TYPE_CHECKING:
@@ -163,7 +163,7 @@ def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
     poses = Poses.drawn(sweeper.inst.ref, list(asm.unknowns.offset))
     solver, motion = sweeper.solver, sweeper.drawn
     dq_good = 0.0
-    report = _reporter(progress, n)
+    report = reporter(progress, n, "sweeping")
     for k, dq in enumerate(plan.increments):
         if k > 0:
             try:
@@ -201,24 +201,3 @@ def _store(sweeper: "Sweeper", poses: Poses, motion: Motion, k: int, bodies: dic
         pos[k] = p
         vel[k] = motion.velocity(state, p)
         acc[k] = motion.acceleration(state, p)
-
-
-def _reporter(progress: bool | Callable[[int, int], None], total: int) -> Callable[[Optional[int]], None]:
-    """A callable (done) for a callable or a rich progress bar (on a terminal), or a no-op."""
-    if callable(progress):
-        return lambda done: progress(done, total) if done is not None else None
-    if not progress or not sys.stderr.isatty():
-        return lambda done: None
-    from rich.progress import Progress
-
-    bar = Progress(transient=True)
-    task = bar.add_task("sweeping", total=total)
-    bar.start()
-
-    def update(done: Optional[int]) -> None:
-        if done is None:
-            bar.stop()
-        else:
-            bar.update(task, completed=done)
-
-    return update
