@@ -25,6 +25,7 @@ def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[lis
     moving = {b: v for b, v in result.bodies.items() if b != result.frame}
     tops = {q: max((float(np.nanmax(np.abs(v[q]))) for v in moving.values()), default=0.0)
             for q in ("angle", "omega", "alpha")}
+    tops["alpha"] = max(tops["alpha"], tops["omega"] ** 2)     # the scale of α: α itself or ω²
     lines += ["", f"{'body':<14}{'angle (deg)':>24}{'omega (rad/s)':>26}{'alpha (rad/s²)':>26}"]
     for name, values in moving.items():
         lines.append(f"{name:<14}" + "".join(f"{_span(values[q], tops[q]):>{w}}" for q, w in
@@ -42,7 +43,8 @@ def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[lis
             continue          # the same material motion under another body's name
         seen.add(key)
         ks, ka = int(np.nanargmax(speed)), int(np.nanargmax(accel))
-        lines.append(f"{name:<14}{speed[ks]:>14.6g}{at[ks]:>12.6g}{accel[ka]:>20.6g}{at[ka]:>12.6g}")
+        lines.append(f"{name:<14}{speed[ks]:>14.6g}{_where(speed, at, ks):>12}"
+                     f"{accel[ka]:>20.6g}{_where(accel, at, ka):>12}")
     lines += ["", "dead points: " + (", ".join(f"{x:g} {unit}".strip() for x in result.dead_points)
                                      or "none in the range swept")]
     if linkage is not None:
@@ -57,17 +59,25 @@ def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[lis
     return lines
 
 
+def _where(values: np.ndarray, at: np.ndarray, k: int) -> str:
+    """Where the largest value is reached; "-" when the value does not vary (a steady crank pin)."""
+    if np.nanmax(values) - np.nanmin(values) <= 1e-9 * max(np.nanmax(values), 1e-300):
+        return "-"
+    return f"{at[k]:.6g}"
+
+
 def _group(g: Any) -> str:
     bodies = " + ".join(g.bodies)
     return f"{g.kind} {bodies}" if g.kind != "input" else f"input {bodies}"
 
 
 def _span(values: np.ndarray, top: float) -> str:
-    """`min .. max`, round-off (below 1e-12 of the column's largest value) shown as 0."""
+    """`min .. max`; round-off (below 1e-9 of the quantity's scale) is not shown."""
     if not np.isfinite(values).any():
         return "-"
-    low, high = (0.0 if abs(x) <= 1e-12 * top else x for x in (np.nanmin(values), np.nanmax(values)))
-    return f" {low:.5g} .. {high:.5g}" if low != high else f" {low:.5g}"
+    tol = 1e-9 * top
+    low, high = (0.0 if abs(x) <= tol else float(x) for x in (np.nanmin(values), np.nanmax(values)))
+    return f" {low:.5g} .. {high:.5g}" if high - low > tol else f" {0.5 * (low + high):.5g}"
 
 
 def _ranges(values: np.ndarray) -> str:
