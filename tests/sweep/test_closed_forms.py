@@ -90,3 +90,16 @@ def test_paths_agree_on_random_crank_rockers(crank, coupler, rocker, start, side
             assert slow.points[name][q] == pytest.approx(fast.points[name][q], abs=1e-7)
     for name in fast.bodies:
         assert slow.bodies[name]["angle"] == pytest.approx(fast.bodies[name]["angle"], abs=1e-7)
+
+
+@pytest.mark.parametrize("name", ["watt_six_bar", "jansen_leg"])
+def test_paths_agree_on_multi_loop_examples(name):
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[2] / "examples" / f"{name}.yaml"
+    fast = run_sweep(path, steps=24)
+    slow = newton(path, steps=24)
+    assert fast.method == "closed form"
+    for point in fast.points:
+        for q in ("position", "velocity", "acceleration"):
+            assert slow.points[point][q] == pytest.approx(fast.points[point][q], abs=1e-7)
