@@ -1,4 +1,4 @@
-"""The position constraints: the integrals of the engine's joint and driver rows (planar).
+"""The position constraints: the integrals of the engine's joint and driver rows.
 
 The engine writes each joint as the time derivative of a geometric condition (its rows);
 here are the conditions themselves, row for row in the engine's order, so that the
@@ -18,12 +18,14 @@ from __future__ import annotations
 import math
 from typing import Callable
 
+import numpy as np
+
 from ..engine.instant import Circle, Instant, Line
 from ..engine.joints import JointGeometry
 from ..errors import KinematikaError
 from ..model.model import Driver, Joint
 from .plan import Plan
-from .poses import Poses
+from .poses import Poses, exp_rotation
 
 Rows = Callable[[Poses, float], list]          # (poses, increment) -> residual rows
 
@@ -41,23 +43,39 @@ def residual_functions(inst: Instant, geos: dict[str, JointGeometry], plan: Plan
 
 def _joint(inst: Instant, j: Joint, geo: JointGeometry, ref: tuple) -> Rows:
     a, b = j.a, j.b
-    if j.type == "revolute":
+    spatial = inst.space.dim == 3
+    if j.type in ("revolute", "spherical"):
         p0 = geo.at
-        return lambda q, _: _sub(q.point(b, p0), q.point(a, p0))
+        if not spatial or j.type == "spherical":
+            return lambda q, _: _sub(q.point(b, p0), q.point(a, p0))
+        return lambda q, _: _sub(q.point(b, p0), q.point(a, p0)) + _turning(q, a, b, geo)
     if j.type == "prismatic":
         p0 = geo.at if geo.at is not None else ref
-        n0 = geo.perps[0]
-        return lambda q, _: [q.angle(b) - q.angle(a),
-                             _dot(_sub(q.point(b, p0), q.point(a, p0)), q.turn(a, n0))]
+        return lambda q, _: q.rotation_error(a, b) + _across(q, a, b, p0, geo.perps)
+    if j.type == "cylindrical":
+        return lambda q, _: _turning(q, a, b, geo) + _across(q, a, b, geo.at, geo.perps)
     if j.type == "slot":
-        p0, n0 = geo.at, geo.perps[0]
-        return lambda q, _: [_dot(_sub(q.point(b, p0), q.point(a, p0)), q.turn(a, n0))]
+        return lambda q, _: _across(q, a, b, geo.at, geo.perps)
     if j.type == "weld":
-        return lambda q, _: [q.angle(b) - q.angle(a)] + _sub(q.point(b, ref), q.point(a, ref))
-    if j.type in ("rolling", "gear"):
+        return lambda q, _: q.rotation_error(a, b) + _sub(q.point(b, ref), q.point(a, ref))
+    if j.type in ("rolling", "gear") and not spatial:
         return _rolling(inst, j, geo)
-    raise KinematikaError("schema", f"a sweep cannot follow a {j.type} joint: its condition is on "
-                          "velocities only, so the positions depend on the path taken", j.where)
+    raise KinematikaError("schema", f"a sweep cannot follow a {j.type} joint{' in 3D' if spatial else ''}: "
+                          "its condition is on velocities only, so the positions depend on the path "
+                          "taken", j.where)
+
+
+def _across(q: Poses, a: str, b: str, p0: tuple, perps: list) -> list:
+    """The offset of b's point from a's across each direction fixed in a (sliding pairs)."""
+    gap = _sub(q.point(b, p0), q.point(a, p0))
+    return [_dot(gap, q.turn(a, n)) for n in perps]
+
+
+def _turning(q: Poses, a: str, b: str, geo: JointGeometry) -> list:
+    """3D: b's axis stays along a's: e_b·p₂ and e_b·p₁ (p₁, p₂ ⊥ e fixed in a), signed so that
+    their rates are the engine's rows (ω_b − ω_a)·p₁ and (ω_b − ω_a)·p₂."""
+    e = q.turn(b, geo.axis)
+    return [-_dot(e, q.turn(a, geo.perps[1])), _dot(e, q.turn(a, geo.perps[0]))]
 
 
 def _rolling(inst: Instant, j: Joint, geo: JointGeometry) -> Rows:
@@ -144,41 +162,41 @@ def _psi(q: Poses, key: str, psi0: float, d: tuple) -> float:
 def _driver(inst: Instant, d: Driver, geos: dict[str, JointGeometry], plan: Plan) -> Rows:
     """The driver's coordinate minus its drawn value, minus the increment when it is swept."""
     swept = d is plan.driver
-    model = inst.model
-    frame = model.frame
+    spatial = inst.space.dim == 3
     j = plan.joint
-    sign = 1.0 if j.a == frame else -1.0          # the coordinate is j.b relative to j.a
+    sign = 1.0 if j.a == inst.model.frame else -1.0      # the coordinate is j.b relative to j.a
     if d.kind == "joint":
         geo = geos[d.joint]
         jd = geo.joint
         if jd.type == "revolute":
-            return lambda q, dq: [q.angle(jd.b) - q.angle(jd.a) - (dq if swept else 0.0)]
+            return lambda q, dq: [q.axis_angle_error(jd.a, jd.b, geo.axis, dq if swept else 0.0)]
         p0 = geo.at if geo.at is not None else inst.ref
-        e0 = geo.along
-        return lambda q, dq: [_dot(_sub(q.point(jd.b, p0), q.point(jd.a, p0)), q.turn(jd.a, e0))
+        return lambda q, dq: [_dot(_sub(q.point(jd.b, p0), q.point(jd.a, p0)), q.turn(jd.a, geo.along))
                               - (dq if swept else 0.0)]
     if d.kind == "omega":
         rel = d.relative_to
-        return lambda q, dq: [q.angle(d.body) - (q.angle(rel) if rel else 0.0)
-                              - (sign * dq if swept else 0.0)]
+        if not spatial:
+            return lambda q, dq: q.rotation_error(rel, d.body, sign * dq if swept else 0.0)
+        axis = np.asarray(geos[j.id].axis if swept else (0, 0, 1), dtype=float)
+        return lambda q, dq: q.rotation_error(rel, d.body, exp_rotation(sign * dq * axis) if swept else None)
     p0 = inst.points[d.point.point]
     body, rel = d.point.body, d.relative_to
     along = None
     if d.along is not None:
-        along = inst.unit(inst.vector(d.along, d.where), d.where)
-        along = tuple(float(c) for c in along)
+        along = tuple(float(c) for c in inst.unit(inst.vector(d.along, d.where), d.where))
 
-    def target(dq: float) -> tuple:
+    def target(dq: float) -> list:
         """The drawn point's displacement when the swept joint has turned or slid by dq."""
         if not swept or dq == 0.0:
-            return (0.0, 0.0)
+            return [0.0] * len(p0)
         if j.type == "prismatic":
-            e = geos[j.id].along
-            return (sign * dq * e[0], sign * dq * e[1])
-        c, s = math.cos(sign * dq), math.sin(sign * dq)
-        o = geos[j.id].at
-        r = _sub(p0, o)
-        return (c * r[0] - s * r[1] - r[0], s * r[0] + c * r[1] - r[1])
+            return [sign * dq * c for c in geos[j.id].along]
+        r = np.subtract(p0, geos[j.id].at)
+        axis = np.asarray(geos[j.id].axis if spatial else (0.0, 0.0, 1.0))
+        if not spatial:
+            r = np.append(r, 0.0)
+        moved = exp_rotation(sign * dq * axis) @ r - r
+        return moved[:len(p0)].tolist()
 
     def velocity(q: Poses, dq: float) -> list:
         moved = _sub(_sub(q.point(body, p0), q.point(rel, p0) if rel else p0), target(dq))
@@ -187,12 +205,12 @@ def _driver(inst: Instant, d: Driver, geos: dict[str, JointGeometry], plan: Plan
     return velocity
 
 
-def _sub(p: tuple, r: tuple) -> list:
-    return [p[0] - r[0], p[1] - r[1]]
+def _sub(p, r) -> list:
+    return [x - y for x, y in zip(p, r)]
 
 
 def _dot(p, r) -> float:
-    return p[0] * r[0] + p[1] * r[1]
+    return sum(x * y for x, y in zip(p, r))
 
 
 def _wrap(x: float) -> float:

@@ -21,7 +21,7 @@ from ..engine.system import InstantSolver
 from ..errors import KinematikaError
 from .constraints import residual_functions
 from .plan import Plan
-from .poses import Poses, moved_geometry, moved_instant
+from .poses import Poses, SpatialPoses, moved_geometry, moved_instant
 from .progress import reporter
 from .result import SweepResult
 
@@ -39,15 +39,15 @@ class Assembler:
 
     def __init__(self, sweeper: "Sweeper", plan: Plan) -> None:
         inst = sweeper.inst
-        if inst.space.dim != 2:
-            raise KinematikaError("schema", "sweeps of 3D models are not supported yet", "sweep")
         self.base = inst
         self.base_geos = sweeper.solver.geos
         self.unknowns = sweeper.solver.unknowns
         self.owners = _owners(inst.model)
         self.functions = residual_functions(inst, self.base_geos, plan)
         self.scale = inst.scale
-        self.translation = np.array([(c % 3) != 0 for c in range(self.unknowns.n)], dtype=bool)
+        u = self.unknowns
+        self.translation = np.array([(c % u.width) >= u.space.rot for c in range(u.n)], dtype=bool)
+        self.poses_class = Poses if inst.space.dim == 2 else SpatialPoses
         _check_rows(sweeper.solver, self.functions)
 
     def residual(self, poses: Poses, dq: float) -> np.ndarray:
@@ -142,7 +142,8 @@ def _check_rows(solver: InstantSolver, functions: list) -> None:
     if solver.analysis is None:
         solver.prepare()
     engine = [r.where for r in solver.rows_v]
-    poses = Poses.drawn(solver.inst.ref, list(solver.unknowns.offset))
+    kind = Poses if solver.space.dim == 2 else SpatialPoses
+    poses = kind.drawn(solver.inst.ref, list(solver.unknowns.offset))
     ours = [where for where, f in functions for _ in f(poses, 0.0)]
     if engine != ours:
         raise RuntimeError(f"position constraints do not match the engine rows: {ours} != {engine}")
@@ -154,13 +155,14 @@ def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
     from .run import bad_row, dead_points
 
     asm = Assembler(sweeper, plan)
-    model, n = sweeper.model, plan.steps + 1
-    bodies = {b: {q: np.full(n, np.nan) for q in ("angle", "omega", "alpha")} for b in model.bodies}
-    motions = {(name, body): tuple(np.full((n, 2), np.nan) for _ in range(3))
+    model, n, dim = sweeper.model, plan.steps + 1, sweeper.model.dimension
+    shape = (n,) if dim == 2 else (n, 3)
+    bodies = {b: {q: np.full(shape, np.nan) for q in ("angle", "omega", "alpha")} for b in model.bodies}
+    motions = {(name, body): tuple(np.full((n, dim), np.nan) for _ in range(3))
                for name, body, _ in sweeper.motions}
     ok = np.zeros(n, dtype=bool)
     singular = np.zeros(n, dtype=bool)
-    poses = Poses.drawn(sweeper.inst.ref, list(asm.unknowns.offset))
+    poses = asm.poses_class.drawn(sweeper.inst.ref, list(asm.unknowns.offset))
     solver, motion = sweeper.solver, sweeper.drawn
     dq_good = 0.0
     report = reporter(progress, n, "sweeping")
@@ -192,7 +194,7 @@ def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
 def _store(sweeper: "Sweeper", poses: Poses, motion: Motion, k: int, bodies: dict, motions: dict) -> None:
     for b, values in bodies.items():
         s = motion.states[b]
-        values["angle"][k] = math.degrees(poses.angle(b))
+        values["angle"][k] = np.degrees(poses.angle(b))
         values["omega"][k] = s.omega
         values["alpha"][k] = s.alpha
     for (name, body), (pos, vel, acc) in motions.items():

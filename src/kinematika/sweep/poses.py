@@ -1,4 +1,4 @@
-"""Where the bodies are: each moving body's displacement from its drawn pose (planar).
+"""Where the bodies are: each moving body's displacement from its drawn pose.
 
 A body's pose is a rotation φ about the instant's reference point c and a translation t:
 the material point drawn at P₀ is now at R(φ)(P₀ − c) + c + t. A small step of the
@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
-from typing import Any
+from typing import Any, Optional
+
+import numpy as np
 
 from ..engine.contact import find_contact
 from ..engine.instant import Circle, Instant, Line
@@ -61,6 +63,108 @@ class Poses:
             phi[b] = self.phi[b] + d_theta
             t[b] = (c * tx - s * ty + dx_, s * tx + c * ty + dy_)
         return Poses(self.ref, phi, t, dict(self.aux))
+
+    def rotation_error(self, a: Optional[str], b: str, target: float = 0.0) -> list:
+        """b's rotation relative to a, minus `target` (radians)."""
+        return [self.angle(b) - (self.angle(a) if a else 0.0) - target]
+
+    def axis_angle_error(self, a: str, b: str, axis: tuple, target: float) -> float:
+        return self.angle(b) - self.angle(a) - target
+
+
+class SpatialPoses:
+    """Poses of the moving bodies in 3D: a rotation matrix R about c and a translation t.
+
+    `rotvec` keeps each body's rotation from its drawn pose as a rotation vector, continued
+    from step to step (it may exceed a half turn: a crank's grows to 2π e after a turn).
+    """
+
+    def __init__(self, ref: tuple, rot: dict, t: dict, rotvec: dict, aux: dict) -> None:
+        self.ref = np.asarray(ref, dtype=float)
+        self.rot, self.t, self.rotvec, self.aux = rot, t, rotvec, aux
+
+    @classmethod
+    def drawn(cls, ref: tuple, bodies: list[str]) -> "SpatialPoses":
+        return cls(ref, {b: np.eye(3) for b in bodies}, {b: np.zeros(3) for b in bodies},
+                   {b: np.zeros(3) for b in bodies}, {})
+
+    def angle(self, body: str) -> np.ndarray:
+        return self.rotvec.get(body, np.zeros(3))
+
+    def turn(self, body: str, vec: tuple) -> tuple:
+        if body not in self.rot:
+            return vec
+        return tuple((self.rot[body] @ np.asarray(vec, dtype=float)).tolist())
+
+    def point(self, body: str, p0: tuple) -> tuple:
+        if body not in self.rot:
+            return p0
+        p = self.rot[body] @ (np.asarray(p0, dtype=float) - self.ref) + self.ref + self.t[body]
+        return tuple(p.tolist())
+
+    def stepped(self, dx: Any, unknowns: Unknowns) -> "SpatialPoses":
+        rot, t, rotvec = {}, {}, {}
+        for b, o in unknowns.offset.items():
+            step = exp_rotation(np.asarray(dx[o:o + 3], dtype=float))
+            rot[b] = step @ self.rot[b]
+            t[b] = step @ self.t[b] + np.asarray(dx[o + 3:o + 6], dtype=float)
+            rotvec[b] = _continued(log_rotation(rot[b]), self.rotvec[b])
+        return SpatialPoses(self.ref, rot, t, rotvec, dict(self.aux))
+
+    def _relative(self, a: Optional[str], b: str) -> np.ndarray:
+        rb = self.rot.get(b, np.eye(3))
+        ra = self.rot.get(a, np.eye(3)) if a else np.eye(3)
+        return rb @ ra.T
+
+    def rotation_error(self, a: Optional[str], b: str, target: Optional[np.ndarray] = None) -> list:
+        """log(R_b R_aᵀ Tᵀ): b's rotation relative to a, past the target rotation T."""
+        rel = self._relative(a, b)
+        if target is not None:
+            rel = rel @ target.T
+        return log_rotation(rel).tolist()
+
+    def axis_angle_error(self, a: str, b: str, axis: tuple, target: float) -> float:
+        """The relative rotation about the joint's axis (fixed in a), minus `target`."""
+        e = np.asarray(self.turn(a, axis))
+        return float(log_rotation(exp_rotation(-target * e) @ self._relative(a, b)) @ e)
+
+
+def exp_rotation(w: np.ndarray) -> np.ndarray:
+    """Rodrigues: the rotation by |w| about w."""
+    angle = float(np.linalg.norm(w))
+    k = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    if angle < 1e-12:
+        return np.eye(3) + k
+    k /= angle
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * (k @ k)
+
+
+def log_rotation(r: np.ndarray) -> np.ndarray:
+    """The rotation vector of a rotation matrix (angle in [0, π])."""
+    v = np.array([r[2, 1] - r[1, 2], r[0, 2] - r[2, 0], r[1, 0] - r[0, 1]])
+    angle = math.atan2(float(np.linalg.norm(v)) / 2, (np.trace(r) - 1) / 2)
+    if angle < 1e-6:
+        return v / 2
+    if math.pi - angle > 1e-3:
+        return v * (angle / (2 * math.sin(angle)))
+    b = (r + np.eye(3)) / 2                       # near a half turn: b = a aᵀ (nearly)
+    i = int(np.argmax(np.diag(b)))
+    axis = b[:, i] / math.sqrt(b[i, i])
+    return (axis if axis @ v >= 0 else -axis) * angle
+
+
+def _continued(r: np.ndarray, previous: np.ndarray) -> np.ndarray:
+    """Of the rotation vectors r + 2πk r̂ (the same rotation), the one nearest `previous`."""
+    angle = float(np.linalg.norm(r))
+    if angle < 1e-12:
+        axis = previous / np.linalg.norm(previous) if np.linalg.norm(previous) > 0 else None
+        if axis is None:
+            return r
+        candidates = [2 * math.pi * k * axis for k in range(-3, 4)]
+    else:
+        axis = r / angle
+        candidates = [r + 2 * math.pi * k * axis for k in range(-3, 4)]
+    return min(candidates, key=lambda c: float(np.linalg.norm(c - previous)))
 
 
 def moved_instant(base: Instant, poses: Poses, owners: dict[str, str]) -> Instant:

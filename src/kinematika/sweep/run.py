@@ -109,7 +109,7 @@ class Sweeper:
                 pts[ref] = arrays
         pts = {str(r): pts[str(r)] for r in self.model.material_points()}
         return SweepResult(plan.coordinate, plan.joint.id, ok, ordered, pts, dead,
-                           plan.unit, self.model.name, 2, self.method, self.model.frame)
+                           plan.unit, self.model.name, self.model.dimension, self.method, self.model.frame)
 
 
 def _rows(values: np.ndarray, bad: Optional[np.ndarray]) -> np.ndarray:
@@ -125,7 +125,9 @@ def _rows(values: np.ndarray, bad: Optional[np.ndarray]) -> np.ndarray:
 
 
 def _filled(values: dict[str, Any], bad: Optional[np.ndarray]) -> dict[str, np.ndarray]:
-    return {q: values[q] if bad is None else np.where(bad, np.nan, values[q])
+    if bad is None:
+        return {q: values[q] for q in ("angle", "omega", "alpha")}
+    return {q: np.where(bad if np.ndim(values[q]) == 1 else bad[:, None], np.nan, values[q])
             for q in ("angle", "omega", "alpha")}
 
 

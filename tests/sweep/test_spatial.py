@@ -1,0 +1,47 @@
+"""Sweeps of 3D models (general path): rotation vectors, redundant planar constraints."""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from kinematika.sweep import run_sweep
+
+from .models import four_bar_closed_form, four_bar_tree
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+
+def test_robot_arm_yaw_turns_the_tip_on_a_circle():
+    # yaw swept a full turn, the pitch joint held: E goes round the column at its height;
+    # ω_arm = ψ' k + θ' u with the shoulder axis u = (sin ψ, −cos ψ, 0) turning with the base
+    result = run_sweep(EXAMPLES / "robot_arm_3d.yaml", joint="yaw", by=360, steps=12)
+    h, length, th = 0.5, 0.8, math.radians(45)
+    psi = math.radians(30) + np.radians(result.coordinate)
+    tip = np.column_stack([length * math.cos(th) * np.cos(psi), length * math.cos(th) * np.sin(psi),
+                           np.full_like(psi, h + length * math.sin(th))])
+    assert result.points["E@arm"]["position"] == pytest.approx(tip, abs=1e-10)
+    omega = np.column_stack([np.sin(psi), -np.cos(psi), 0 * psi]) + [0, 0, 0.5]
+    assert result.bodies["arm"]["omega"] == pytest.approx(omega, abs=1e-10)
+    angle = result.bodies["base"]["angle"]           # a rotation vector, continued past 180°
+    assert angle[:, 2] == pytest.approx(result.coordinate, abs=1e-9)
+    assert angle[:, :2] == pytest.approx(np.zeros((13, 2)), abs=1e-9)
+
+
+def test_planar_four_bar_built_in_3d_matches_loop_closure():
+    tree = four_bar_tree(side=1.0)
+    tree["dimension"] = 3
+    tree["points"] = {k: v + [0] for k, v in tree["points"].items()}
+    for joint in tree["joints"]:
+        joint["axis"] = [0, 0, 1]
+    tree["drivers"] = [{"omega": "crank", "value": [0, 0, 10], "alpha": [0, 0, -3]}]
+    result = run_sweep(tree, by=360, steps=12)
+    expect = four_bar_closed_form(np.radians(90 + result.coordinate), 4.0, 1.0, 4.0, 3.0, 1.0, 10.0,
+                                  -3.0, (2.0, 1.0))
+    assert result.points["P@coupler"]["position"][:, :2] == pytest.approx(np.column_stack(expect["P"]),
+                                                                          abs=1e-9)
+    assert result.bodies["rocker"]["omega"][:, 2] == pytest.approx(expect["w4"], abs=1e-9)
+    assert result.bodies["rocker"]["alpha"][:, 2] == pytest.approx(expect["a4"], abs=1e-8)
+    assert result.bodies["crank"]["angle"][-1] == pytest.approx([0, 0, 360], abs=1e-9)
