@@ -124,13 +124,24 @@ def test_conflicting_drivers_are_named():
 
 
 def test_consistent_redundant_driver_is_accepted():
-    # the rocker's rate restated with the value the crank implies: the four-bar closed form
+    # the rocker's rate and its derivative restated with the values the crank implies
     from .models import four_bar_closed_form
 
-    w3, w4, _, _ = four_bar_closed_form()
+    w3, w4, a3, a4 = four_bar_closed_form()
     sol = solve(four_bar(drivers=[{"omega": "crank", "value": 10},
-                                  {"omega": "rocker", "value": repr(w4)}]))
+                                  {"omega": "rocker", "value": repr(w4), "alpha": repr(a4)}]))
     assert sol.omega("coupler") == pytest.approx(w3, rel=1e-9)
+    assert sol.alpha("coupler") == pytest.approx(a3, rel=1e-8)
+
+
+def test_restated_rate_with_a_contradicting_alpha_is_a_conflict():
+    # α of the rocker left at its default 0 contradicts the crank's steady turning
+    from .models import four_bar_closed_form
+
+    _, w4, _, _ = four_bar_closed_form()
+    err = error_of(four_bar(drivers=[{"omega": "crank", "value": 10},
+                                     {"omega": "rocker", "value": repr(w4)}]))
+    assert err.kind == "mobility" and "α of rocker = 0" in err.message
 
 
 def test_dead_point_is_singular():

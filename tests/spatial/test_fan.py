@@ -153,9 +153,6 @@ def test_blades_driven_by_their_absolute_omega_and_alpha():
     close(sol.acceleration("P"), FAN["a_P"])
 
 
-@pytest.mark.xfail(strict=True, reason="the acceleration system is solved by least squares without "
-                   "a consistency check (engine/system.py): alpha1 + alpha2 without omega1 x omega2 "
-                   "is accepted silently; reported to the lead")
 def test_alpha_that_forgets_omega1_x_omega2_is_a_conflict():
     with pytest.raises(KinematikaError) as info:
         solve(_blades_driven_absolutely([0.01, 0.2, 0]))

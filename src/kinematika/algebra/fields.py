@@ -19,11 +19,15 @@ class RationalField:
         self.sp = sympy
         self.atoms: dict[Any, Any] = {}
         symbols: set = set()
-        lifted = [self._lift(sympy.sympify(e), symbols) for e in exprs]
-        del lifted
-        self.gens = sorted(symbols, key=str) + list(self.atoms.values())
+        for e in exprs:
+            self._lift(sympy.sympify(e), symbols)
+        # sines first, so that lex division by sin² + cos² − 1 removes the sines' squares
+        atoms = sorted(self.atoms, key=lambda a: not isinstance(a, sympy.sin))
+        self.gens = sorted(symbols, key=str) + [self.atoms[a] for a in atoms]
         self.back_map = {d: a for a, d in self.atoms.items()}
         self.domain = sympy.QQ.frac_field(*self.gens) if self.gens else sympy.QQ
+        self.pythagoras = [(self.atoms[a], self.atoms[sympy.cos(a.args[0])]) for a in atoms
+                           if isinstance(a, sympy.sin) and sympy.cos(a.args[0]) in self.atoms]
 
     def _lift(self, e: Any, symbols: set) -> Any:
         """`e` with each irrational atom replaced by its stand-in symbol."""
@@ -43,24 +47,21 @@ class RationalField:
             self.atoms[e] = sp.Dummy(f"atom{len(self.atoms)}")
         return self.atoms[e]
 
-    def covers(self, exprs: Iterable[Any]) -> bool:
-        """Whether every symbol and atom of `exprs` is a generator already."""
-        symbols: set = set()
-        known = dict(self.atoms)
-        for e in exprs:
-            self._lift(self.sp.sympify(e), symbols)
-        fresh = set(self.atoms) - set(known)
-        if fresh:
-            for a in fresh:
-                del self.atoms[a]
-            return False
-        return symbols <= set(self.gens)
-
     def to(self, e: Any) -> Any:
         return self.domain.from_sympy(self._lift(self.sp.sympify(e), set()))
 
     def back(self, x: Any) -> Any:
         return self.domain.to_sympy(x).xreplace(self.back_map)
+
+    def reduce_trig(self, x: Any) -> Any:
+        """Numerator and denominator reduced by sin²u + cos²u = 1 (at most linear in sin u)."""
+        if not self.pythagoras:
+            return x
+        ring = self.domain.field.ring
+        index = {g: i for i, g in enumerate(self.gens)}
+        identities = [ring.gens[index[s]] ** 2 + ring.gens[index[c]] ** 2 - 1
+                      for s, c in self.pythagoras]
+        return self.domain.field.new(x.numer.rem(identities), x.denom.rem(identities))
 
 
 def canonical(e: Any) -> Any:
@@ -71,5 +72,5 @@ def canonical(e: Any) -> Any:
     if e.is_Atom:
         return e
     field = RationalField([e])
-    value = field.back(field.to(e))
+    value = field.back(field.reduce_trig(field.to(e)))
     return sympy.factor(value) if value.free_symbols else sympy.radsimp(value)

@@ -17,7 +17,7 @@ app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_
 
 ModelArg = typer.Argument(..., help="model file (.yaml, .toml or .json)", show_default=False)
 JsonOpt = typer.Option(False, "--json", help="print the contract's JSON")
-SymbolicOpt = typer.Option(False, "--symbolic", help="keep every parameter as a symbol")
+SymbolicOpt = typer.Option(False, "--symbolic", help="keep every parameter given as a number as a symbol")
 
 
 @app.callback()

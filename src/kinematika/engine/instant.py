@@ -160,12 +160,19 @@ def _real_probe(points: dict[str, tuple], probe: dict, tries: int = 40) -> dict:
 
 
 def _length_scale(inst: Instant) -> float:
+    """The model's size: the largest distance of a point from the centroid, or radius.
+
+    Never below 1e-9 of the coordinates' magnitude (nor zero), so that a model whose
+    points nearly coincide still gets a usable scale.
+    """
     pts = [inst.numvec(p) for p in inst.points.values()]
     center = [sum(c) / len(pts) for c in zip(*pts)]
     spread = max(math.dist(p, center) for p in pts)
     radii = [abs(inst.num(inst.value(s.radius, "radius"))) for b in inst.model.bodies.values()
              for s in b.shapes if hasattr(s, "radius")]
-    return max([spread] + radii) or 1.0
+    magnitude = max(abs(c) for p in pts for c in p)
+    size = max([spread, 1e-9 * magnitude] + radii)
+    return size if size > 1e-150 else 1.0
 
 
 def _centroid(inst: Instant) -> tuple:

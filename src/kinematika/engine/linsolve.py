@@ -53,6 +53,9 @@ def analyse(a: np.ndarray, is_driver: np.ndarray, translation_columns: np.ndarra
     return Analysis(scaled, u, s, vt, diag, rows, blocks)
 
 
+CONSISTENT = 1e-6   # relative residual of redundant conditions that still agree (geometry given to ~1e-6)
+
+
 def solve_numeric(an: Analysis | SparseAnalysis, b: np.ndarray, labels: list[str], wheres: list[str],
                   is_driver: np.ndarray, check: bool = True) -> np.ndarray:
     """Least squares with the analysis' SVD (or sparse LU); a residual means conflicting conditions."""
@@ -66,7 +69,7 @@ def solve_numeric(an: Analysis | SparseAnalysis, b: np.ndarray, labels: list[str
         residual = an.scaled.matrix @ xs - bs
         top = 1.0 if isinstance(an, SparseAnalysis) else np.abs(an.scaled.matrix).max(initial=0.0)
         size = max(np.abs(bs).max(initial=0.0), top * np.abs(xs).max(initial=0.0), 1e-300)
-        if np.abs(residual).max(initial=0.0) > 1e-7 * size:
+        if np.abs(residual).max(initial=0.0) > CONSISTENT * size:
             raise conflict_error(residual, labels, wheres, is_driver, an.diagnosis)
     return xs * an.scaled.col_scale
 

@@ -82,11 +82,13 @@ class InstantSolver:
         self.analysis = analyse(self.a_num, self.is_driver, translation, inst.scale, self.labels,
                                 self.wheres, body_of, want_blocks=inst.symbolic)
 
-    def solve_linear(self, b: list[Any], check: bool = True) -> list[Any]:
+    def solve_linear(self, b: list[Any], check: bool = True,
+                     labels: list[str] | None = None) -> list[Any]:
         """The solution of A x = b with the analysed matrix (exact for a symbolic instant)."""
         inst = self.inst
         b_num = np.array([inst.num(v) for v in b], dtype=float)
-        x_num = solve_numeric(self.analysis, b_num, self.labels, self.wheres, self.is_driver, check)
+        x_num = solve_numeric(self.analysis, b_num, labels or self.labels, self.wheres,
+                              self.is_driver, check)
         if not inst.symbolic:
             return x_num.tolist()
         exact = solve_symbolic(self.analysis, self.a_sym, b, self.a_num)
@@ -101,7 +103,8 @@ class InstantSolver:
         velocities = self._motion(x_v, None)
         # the acceleration system has the same matrix: only its known terms are built
         rows_a = self.rows(AccelerationLevel(KnownTerms(u), inst.ref, velocities))
-        x_a = self.solve_linear([-r.lin.const for r in rows_a], check=False)
+        # redundant conditions must agree at this level too: an α the joints forbid is a conflict
+        x_a = self.solve_linear([-r.lin.const for r in rows_a], labels=[r.label for r in rows_a])
         return self._motion(x_v, x_a)
 
     def _motion(self, x_v: list[Any], x_a: list[Any] | None) -> Motion:
