@@ -61,6 +61,20 @@ class Sweeper:
         self.groups = assur_groups(model)
         self.closed = self._closed_form()
         self.motions = motion_classes(model)
+        self.names = [str(r) for r in model.material_points()]
+        self.origins = ({name: complex(*self.points[name]) for name, _, _ in self.motions}
+                        if self.closed is not None else {})
+        self._plans: dict[tuple, Plan] = {}
+
+    def plan(self, by: Optional[float], steps: Optional[int]) -> Plan:
+        """The plan of a sweep (kept: its rows are read-only arrays shared by the results)."""
+        key = (by, steps)
+        if key not in self._plans:
+            plan = make_plan(self.inst, self.joint.id, by, steps)
+            for arr in (plan.coordinate, plan.increments):
+                arr.flags.writeable = False
+            self._plans = {key: plan}
+        return self._plans[key]
 
     def _closed_form(self) -> Any:
         from .closed_form import ClosedForm, applicable
@@ -81,7 +95,7 @@ class Sweeper:
 
     def run(self, by: Optional[float] = None, steps: Optional[int] = None, skip_bad: bool = False,
             progress: bool | Progress = False) -> SweepResult:
-        plan = make_plan(self.inst, self.joint.id, by, steps)
+        plan = self.plan(by, steps)
         if self.closed is None:
             from .newton import newton_sweep
 
@@ -93,8 +107,7 @@ class Sweeper:
             raise bad_row(plan, k, "singular" if out.singular[k] else "assembly", out.worst[k])
         bodies = {b: {"angle": t.theta if b == self.model.frame else np.degrees(t.theta),
                       "omega": t.omega, "alpha": t.alpha} for b, t in out.tracks.items()}
-        points = {(name, body): out.tracks[body].point(complex(*self.points[name]))
-                  for name, body, _ in self.motions}
+        points = {(name, body): out.tracks[body].point(self.origins[name]) for name, body, _ in self.motions}
         return self.result(plan, ok, bodies, points, dead_points(plan.coordinate, ok, out.singular))
 
     def result(self, plan: Plan, ok: np.ndarray, bodies: dict, motions: dict,
@@ -107,7 +120,7 @@ class Sweeper:
             arrays = {q: _rows(xy, bad) for q, xy in zip(QUANTITIES, motions[name, body])}
             for ref in refs:
                 pts[ref] = arrays
-        pts = {str(r): pts[str(r)] for r in self.model.material_points()}
+        pts = {name: pts[name] for name in self.names}
         return SweepResult(plan.coordinate, plan.joint.id, ok, ordered, pts, dead,
                            plan.unit, self.model.name, self.model.dimension, self.method, self.model.frame)
 
@@ -181,6 +194,8 @@ def bad_row(plan: Plan, k: int, kind: str, what: str = "") -> KinematikaError:
 
 def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray) -> list[float]:
     """Where the motion stops being possible: singular rows and the last rows before a gap."""
+    if ok.all():
+        return []
     out = [float(x) for x in coordinate[singular]]
     edges = np.flatnonzero(ok[:-1] != ok[1:])
     for k in edges:
