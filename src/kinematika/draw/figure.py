@@ -33,6 +33,7 @@ CLIP_MARGIN = 0.06   # infinite lines and far marks stop this far (drawing sizes
 LABEL_MARGIN = 0.12  # room kept around the framed content for labels
 ASPECT = (0.5, 1.25)  # bounds of the axes' height/width
 TOP, LEGEND, NOTE = 0.55, 0.32, 0.2   # inches: title band, legend row, one note line
+TRIAD = 0.9          # inches: the 3D axis triad's inset (square)
 FORMATS = ("png", "svg", "pdf")
 
 
@@ -43,7 +44,7 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
     content = framed_box(scene, drawn)
     notes = _notes(scene, drawn)
     fig, ax = new_figure(content.grow((CLIP_MARGIN + LABEL_MARGIN) * scene.size), options,
-                         len(notes))
+                         len(notes), TRIAD if scene.dim == 3 else 0.0)
     view = _limits(ax).grow(-CLIP_MARGIN * scene.size)   # what the axes show, less a margin
     cv = Canvas(ax, scene, view, labels=options.labels)
     paint_bodies(cv)
@@ -52,9 +53,9 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
     paint_axes(cv)
     paint_marks(cv)
     paint_vectors(cv, drawn)
-    if scene.dim == 3:
-        _triad(ax, scene)
     _place_labels(fig, ax, cv)
+    if scene.dim == 3:
+        _triad(fig, scene)
     _title(fig, options.title or scene.name)
     _legend(fig, scene, drawn, notes)
     return fig
@@ -76,12 +77,15 @@ def framed_box(scene: Scene, drawn: list[Arrow]) -> Box:
     return base.union(pts)
 
 
-def new_figure(limits: Box, options: DrawOptions, n_notes: int) -> tuple[Figure, Any]:
+def new_figure(limits: Box, options: DrawOptions, n_notes: int,
+               bottom: float = 0.0) -> tuple[Figure, Any]:
+    """A figure whose axes show `limits` at equal scale, with room below for the legend, the
+    notes (`n_notes` lines) and at least `bottom` inches."""
     aspect = min(max(limits.height / max(limits.width, 1e-300), ASPECT[0]), ASPECT[1])
     limits = limits.with_aspect(aspect)
     width = options.width
     axes_w, axes_h = 0.96 * width, 0.96 * width * aspect
-    bottom = LEGEND + NOTE * n_notes + 0.1
+    bottom = max(LEGEND + NOTE * n_notes + 0.1, bottom)
     height = TOP + axes_h + bottom
     fig = Figure(figsize=(width, height))
     FigureCanvasAgg(fig)
@@ -149,10 +153,10 @@ def _notes(scene: Scene, drawn: list[Arrow]) -> list[str]:
                      f"({SHORTEST:.0%})")
     if scene.dim == 3:
         notes.append(f"3D model: {'isometric' if scene.projection.view == 'iso' else scene.projection.view}"
-                     " orthographic projection (axes x, y, z shown at the lower left)")
+                     " orthographic projection (axes x, y, z shown at the lower right)")
     lines: list[str] = []
     for note in notes:
-        lines += textwrap.wrap(note.replace("$", r"\$"), 120)
+        lines += textwrap.wrap(note.replace("$", r"\$"), 100)
     return lines
 
 
@@ -183,21 +187,20 @@ def _legend(fig: Figure, scene: Scene, drawn: list[Arrow], notes: list[str]) -> 
                  color="#555555", va="center", ha="left")
 
 
-def _triad(ax: Any, scene: Scene) -> None:
-    """The page images of the x, y, z axes, at the lower left of the axes."""
-    fig = ax.figure
-    bbox = ax.get_position()
-    w_in, h_in = bbox.width * fig.get_figwidth(), bbox.height * fig.get_figheight()
-    origin = np.array([0.08, 0.10])
-    length = 0.45     # inches
+def _triad(fig: Figure, scene: Scene) -> None:
+    """The page images of the x, y, z axes, in a small inset at the lower right of the
+    figure (below the drawing, beside the notes)."""
+    w, h = fig.get_figwidth(), fig.get_figheight()
+    inset = fig.add_axes((1 - TRIAD / w, 0.04 / h, (TRIAD - 0.1) / w, (TRIAD - 0.1) / h))
+    inset.set_axis_off()
+    inset.set_xlim(-1.3, 1.3)
+    inset.set_ylim(-1.3, 1.3)
     for name, d in scene.projection.axes().items():
-        tip = origin + length * np.array([d[0] / w_in, d[1] / h_in])
-        ax.annotate("", xy=tip, xytext=origin, xycoords="axes fraction",
-                    arrowprops=dict(arrowstyle="-|>", color=INK, lw=1.0, shrinkA=0, shrinkB=0))
+        inset.annotate("", xy=tuple(d), xytext=(0, 0),
+                       arrowprops=dict(arrowstyle="-|>", color=INK, lw=1.0, shrinkA=0, shrinkB=0))
         if np.linalg.norm(d) > 0.2:
-            label = origin + (length + 0.12) * np.array([d[0] / w_in, d[1] / h_in])
-            ax.text(*label, name, transform=ax.transAxes, ha="center", va="center",
-                    fontsize=9, color=INK, style="italic")
+            inset.text(*(1.2 * d), name, ha="center", va="center", fontsize=9, color=INK,
+                       style="italic")
 
 
 def save(fig: Figure, path: Path | str, dpi: int = 110) -> Path:
