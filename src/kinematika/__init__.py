@@ -7,13 +7,24 @@
 Everything goes through one engine: a model (file, dict or `Mechanism`) is parsed once into
 a `Model`, evaluated on numbers or symbols, and its velocity and acceleration systems
 solved; views (CLI, JSON, tables, figures, explanations) read the `Solution`.
+The names below are imported on first use, so a command loads only what it needs.
 """
-from .api import answers, as_model, solve
-from .errors import KinematikaError
-from .model.builder import Mechanism
-from .model.files import load_model
-from .solution import Solution
+from __future__ import annotations
+
+from importlib import import_module
+from typing import Any
 
 __version__ = "0.1.0"
-__all__ = ["solve", "answers", "as_model", "load_model", "Mechanism", "Solution",
-           "KinematikaError", "__version__"]
+
+_EXPORTS = {
+    "solve": "api", "answers": "api", "as_model": "api", "load_model": "model.files",
+    "Mechanism": "model.builder", "Solution": "solution", "KinematikaError": "errors",
+    "run_sweep": "sweep",
+}
+__all__ = sorted(_EXPORTS) + ["__version__"]
+
+
+def __getattr__(name: str) -> Any:
+    if name in _EXPORTS:
+        return getattr(import_module(f".{_EXPORTS[name]}", __name__), name)
+    raise AttributeError(f"module 'kinematika' has no attribute {name!r}")
