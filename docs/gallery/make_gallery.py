@@ -27,13 +27,17 @@ EXTRAS = {   # example: (suffix, options, what the picture adds)
 
 
 def describe(path: Path) -> str:
-    """The example's first comment line: what it shows."""
+    """The first sentence of the example's opening comment: what it shows."""
+    words = []
     for line in path.read_text(encoding="utf-8").splitlines():
-        if line.startswith("#"):
-            return line.lstrip("# ").strip()
-        if line.strip():
+        text = line.lstrip("#").strip()
+        if not line.startswith("#") or not text:
             break
-    return ""
+        words.append(text)
+    paragraph = " ".join(words)
+    end = paragraph.find(". ")
+    sentence = paragraph if end < 0 else paragraph[: end + 1]
+    return sentence if len(sentence) <= 240 else sentence[:237].rsplit(" ", 1)[0] + " …"
 
 
 def render(path: Path, name: str, options: dict) -> str:
