@@ -1,7 +1,6 @@
 """`kinematika draw` and `kinematika animate`: the mechanism as a figure, and in motion."""
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from typing import Optional
 
@@ -113,7 +112,7 @@ def animate(
         options = DrawOptions(velocities=velocities, accelerations=accelerations, width=width)
         return render(_model(model, assignments), output, joint=joint, by=by, steps=steps,
                       frames=frames, fps=fps, options=options, trace=_names(trace),
-                      skip_bad=skip_bad, progress=sys.stderr.isatty())
+                      skip_bad=skip_bad, progress=True)
 
     guarded(False, work)
     print(f"wrote {output}")

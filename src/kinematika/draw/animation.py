@@ -42,7 +42,9 @@ def animate(source: Any, path: Path | str, joint: Optional[str] = None, by: Opti
     path = Path(path)
     writer = _writer(path, fps)
     film = Film.of(source, joint, by, steps, frames, options, trace, skip_bad)
-    report = _progress(progress, len(film.rows))
+    from ..sweep.progress import reporter   # the sweeps' progress bar (sweeps are there now)
+
+    report = reporter(progress, len(film.rows), "rendering frames")
     with writer.saving(film.fig, str(path), DPI):
         for i, k in enumerate(film.rows):
             film.show(k)
@@ -161,26 +163,6 @@ def _live_vectors(sol: Any, options: DrawOptions, result: Any) -> list[VectorVie
             label = vector_label(kind, sol.model, ref, None)
             out.append(VectorView(kind, str(ref), label, np.zeros(2), np.zeros(2), 0.0, ""))
     return out
-
-
-def _progress(progress: Any, total: int) -> Callable[[Optional[int]], None]:
-    """A callback reporting frames done (None: finished)."""
-    if callable(progress):
-        return lambda done: progress(done, total) if done is not None else None
-    if not progress:
-        return lambda done: None
-    from rich.progress import Progress
-
-    bar = Progress(transient=True)
-    task = bar.add_task("rendering frames", total=total)
-    bar.start()
-
-    def report(done: Optional[int]) -> None:
-        if done is None:
-            bar.stop()
-        else:
-            bar.update(task, completed=done)
-    return report
 
 
 class Motion:
