@@ -84,10 +84,13 @@ def test_plot_sweep_leaves_gaps_at_rows_not_assembled():
     assert np.isnan(speeds["B"].get_ydata()[5]) and np.isfinite(speeds["B"].get_ydata()[4])
 
 
-sweep = pytest.importorskip("kinematika.sweep")
+@pytest.fixture
+def sweeps():
+    """The animation tests run real sweeps (kinematika.sweep)."""
+    return pytest.importorskip("kinematika.sweep")
 
 
-def test_animation_moves_the_slider_to_its_closed_form_positions():
+def test_animation_moves_the_slider_to_its_closed_form_positions(sweeps):
     from kinematika.draw.animation import Film
 
     film = Film.of(slider_crank_tree(), by=360, steps=12, frames=13)
@@ -105,7 +108,7 @@ def test_animation_moves_the_slider_to_its_closed_form_positions():
         assert len(trace.get_xdata()) == k + 1
 
 
-def test_animation_writes_a_gif_with_the_frames_asked(tmp_path):
+def test_animation_writes_a_gif_with_the_frames_asked(tmp_path, sweeps):
     from PIL import Image
 
     from kinematika.draw import animate
