@@ -37,8 +37,7 @@ def sweep(model: Path = ModelArg,
     if plot is not None:
         guarded(as_json, lambda: _plot(result, plot))
     if as_json:
-        json.dump(result.to_json(), sys.stdout)
-        sys.stdout.write("\n")
+        sys.stdout.write(json.dumps(result.to_json()) + "\n")      # one write: dump() writes in pieces
         return
     from ..sweep.summary import summary_lines
 
