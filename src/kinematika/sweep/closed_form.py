@@ -30,8 +30,9 @@ class Track:
     """A body's motion over the rows: rotation θ from the drawn pose and its origin's motion.
 
     `o`, `v`, `a` (complex) are the origin's position, velocity and acceleration, `rot` is
-    e^{iθ}. Material points are computed once and kept (`point`), so a joint point a dyad
-    has solved is not computed again for the answers.
+    e^{iθ}. A quantity that does not change over the rows (the frame's, a crank's ω) is a
+    plain number rather than an array. Material points are computed once and kept
+    (`point`), so a joint point a dyad has solved is not computed again for the answers.
     """
 
     __slots__ = ("origin0", "theta", "o", "v", "a", "omega", "alpha", "rot", "known")
@@ -114,9 +115,10 @@ class ClosedForm:
     def solve(self, q: np.ndarray) -> Outcome:
         """Every body's track at the increments `q` (radians or length) of the input joint."""
         n = len(q)
-        frame = _fixed(next(iter(self.points.values())), n)
+        frame = Track(next(iter(self.points.values())), 0.0, 0j, 0j, 0j, 0.0, 0.0, 1 + 0j)
+        frame.o = frame.origin0
         for p in self.model.bodies[self.model.frame].points:
-            frame.known[self.points[p]] = (_const(self.points[p], n), frame.v, frame.a)
+            frame.known[self.points[p]] = (self.points[p], 0j, 0j)
         tracks = {self.model.frame: frame, self.input: self._input(q)}
         assembled = np.ones(n, dtype=bool)
         singular = np.zeros(n, dtype=bool)
@@ -135,26 +137,17 @@ class ClosedForm:
 
     def _input(self, q: np.ndarray) -> Track:
         """A crank turning by the increments about its pivot, or a slider moving along its guide."""
-        j, n = self.joint, len(q)
+        j = self.joint
         sign = 1.0 if j.a == self.model.frame else -1.0      # the coordinate is j.b relative to j.a
         w, al, v, a = self.rates
         o0 = self.origin
         if j.type == "revolute":
             theta = sign * q
-            return Track(o0, theta, _const(o0, n), _const(v, n), _const(a, n), _const(w, n),
-                         _const(al, n), np.exp(1j * theta))
-        zero = _const(0.0, n)
-        return Track(o0, zero, o0 + (sign * self.guide) * q, _const(v, n), _const(a, n), zero, zero,
-                     _const(1 + 0j, n))
+            return Track(o0, theta, o0, v, a, w, al, np.exp(1j * theta))
+        return Track(o0, 0.0, o0 + (sign * self.guide) * q, v, a, 0.0, 0.0, 1 + 0j)
 
 
-def _fixed(origin: complex, n: int) -> Track:
-    """The frame: at rest; its arrays are constants (no memory per row)."""
-    zero, zeros = _const(0.0, n), _const(0j, n)
-    return Track(origin, zero, _const(origin, n), zeros, zeros, zero, zero, _const(1 + 0j, n))
-
-
-def _const(value: complex | float, n: int) -> np.ndarray:
+def const(value: complex | float, n: int) -> np.ndarray:
     """A constant over the rows: a read-only view with stride 0."""
     arr = np.array([value])
     out = np.ndarray((n,), arr.dtype, arr, strides=(0,))

@@ -105,8 +105,9 @@ class Sweeper:
         if not skip_bad and not ok.all():
             k = int(np.flatnonzero(~ok)[0])
             raise bad_row(plan, k, "singular" if out.singular[k] else "assembly", out.worst[k])
-        bodies = {b: {"angle": t.theta if b == self.model.frame else np.degrees(t.theta),
-                      "omega": t.omega, "alpha": t.alpha} for b, t in out.tracks.items()}
+        n = len(ok)
+        bodies = {b: {"angle": _series(np.degrees(t.theta), n), "omega": _series(t.omega, n),
+                      "alpha": _series(t.alpha, n)} for b, t in out.tracks.items()}
         points = {(name, body): out.tracks[body].point(self.origins[name]) for name, body, _ in self.motions}
         return self.result(plan, ok, bodies, points, dead_points(plan.coordinate, ok, out.singular))
 
@@ -117,7 +118,7 @@ class Sweeper:
         ordered = {b: _filled(bodies[b], bad) for b in self.model.bodies}
         pts: dict[str, dict[str, np.ndarray]] = {}
         for name, body, refs in self.motions:
-            arrays = {q: _rows(xy, bad) for q, xy in zip(QUANTITIES, motions[name, body])}
+            arrays = {q: _rows(xy, bad, len(ok)) for q, xy in zip(QUANTITIES, motions[name, body])}
             for ref in refs:
                 pts[ref] = arrays
         pts = {name: pts[name] for name in self.names}
@@ -125,16 +126,27 @@ class Sweeper:
                            plan.unit, self.model.name, self.model.dimension, self.method, self.model.frame)
 
 
-def _rows(values: np.ndarray, bad: Optional[np.ndarray]) -> np.ndarray:
-    """(N, 2) rows: kept as they are, or read from complex x + iy (a view: no copy); NaN if bad."""
-    if values.dtype.kind == "c":
-        if values.strides == (0,):          # a constant: (N, 2) rows with stride 0 as well
-            row = np.array([values[0].real, values[0].imag])
-            values = np.ndarray((len(values), 2), float, row, strides=(0, 8))
-            values.flags.writeable = False
-        else:
-            values = values.view(np.float64).reshape(len(values), 2)
+def _rows(values: Any, bad: Optional[np.ndarray], n: int) -> np.ndarray:
+    """(N, 2) rows: kept as they are, or read from complex x + iy (a view: no copy); NaN if bad.
+
+    A constant (a plain complex number) becomes rows with stride 0.
+    """
+    if not isinstance(values, np.ndarray):
+        row = np.array([values.real, values.imag], dtype=float)
+        values = np.ndarray((n, 2), float, row, strides=(0, 8))
+        values.flags.writeable = False
+    elif values.dtype.kind == "c":
+        values = values.view(np.float64).reshape(n, 2)
     return values if bad is None else np.where(bad[:, None], np.nan, values)
+
+
+def _series(values: Any, n: int) -> np.ndarray:
+    """Values over the rows: an array as it is, a constant as a read-only stride-0 view."""
+    if isinstance(values, np.ndarray) and values.shape == (n,):
+        return values
+    from .closed_form import const
+
+    return const(float(values), n)
 
 
 def _filled(values: dict[str, Any], bad: Optional[np.ndarray]) -> dict[str, np.ndarray]:
