@@ -141,7 +141,7 @@ def main() -> None:
     inner = in_process(n, args.repeat, args.mechanism_positions)
     print("## In process (one sweep: positions, velocities, accelerations of every point; ω, α of every body)\n")
     tools = ["kinematika", "kinematika run_sweep", "numpy closed form", "pylinkage+numba", "pylinkage", "mechanism"]
-    print("| case | " + " | ".join(tools) + " |")
+    print("| case | " + " | ".join(tools).replace("| pylinkage |", "| pylinkage, no numba |") + " |")
     print("|---" * (len(tools) + 1) + "|")
     for case, row in inner.items():
         cells = [f"{ms(row[t])} ({row[t] / n * 1e6:.3g} µs/pos)" if t in row else "—" for t in tools]
@@ -154,14 +154,14 @@ def main() -> None:
             parts.append(f"kinematika / numpy closed form = {k / row['numpy closed form']:.2f}× "
                          f"(run_sweep incl. analysis: {row['kinematika run_sweep'] / row['numpy closed form']:.2f}×)")
         parts.append(f"pylinkage+numba / kinematika = {row['pylinkage+numba'] / k:.1f}×")
-        parts.append(f"pylinkage / kinematika = {row['pylinkage'] / k:.0f}×")
+        parts.append(f"pylinkage without numba / kinematika = {row['pylinkage'] / k:.0f}×")
         if "mechanism" in row:
             parts.append(f"mechanism / kinematika = {row['mechanism'] / k:.0f}×")
         print(f"- {case}: " + "; ".join(parts))
     outer = whole_process(n, max(2, args.repeat // 2), args.mechanism_positions)
     print("\n## Whole process (start-up included; `mechanism` at --mechanism-positions)\n")
     tools = ["kinematika sweep", "kinematika sweep --json", "pylinkage+numba", "pylinkage", "mechanism"]
-    print("| case | " + " | ".join(tools) + " |")
+    print("| case | " + " | ".join(tools).replace("| pylinkage |", "| pylinkage, no numba |") + " |")
     print("|---" * (len(tools) + 1) + "|")
     for case, row in outer.items():
         if case.startswith("("):
