@@ -44,22 +44,29 @@ class SweepResult:
         Numbers are given to 12 significant digits, with round-off (below 1e-12 of the
         largest value of the same quantity) written as 0, as `solve` does.
         """
-        scales = self._scales()
+        scales = self.scales()
         return {"coordinate": _column(clean(self.coordinate, np.abs(self.coordinate).max(initial=0.0))),
                 "bodies": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
                            for name, values in self.bodies.items()},
                 "points": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
                            for name, values in self.points.items()}}
 
-    def _scales(self) -> dict[str, float]:
-        """The largest magnitude of each quantity over every body or point and row."""
-        out: dict[str, float] = {}
+    def scales(self) -> dict[str, float]:
+        """Each quantity's scale: its largest magnitude, or what the motion makes it at least
+        (ω² for α; ω·size for speeds; (α + ω²)·size for accelerations), so that round-off in
+        a quantity that is zero throughout is still seen as round-off."""
+        top: dict[str, float] = {}
         for group in (self.bodies, self.points):
             for values in group.values():
                 for q, v in values.items():
-                    top = float(np.nanmax(np.abs(v))) if np.isfinite(v).any() else 0.0
-                    out[q] = max(out.get(q, 0.0), top)
-        return out
+                    biggest = float(np.nanmax(np.abs(v))) if np.isfinite(v).any() else 0.0
+                    top[q] = max(top.get(q, 0.0), biggest)
+        w, size = top.get("omega", 0.0), top.get("position", 0.0)
+        top["alpha"] = max(top.get("alpha", 0.0), w * w)
+        top["velocity"] = max(top.get("velocity", 0.0), w * size)
+        top["acceleration"] = max(top.get("acceleration", 0.0), top["alpha"] * size,
+                                  top["velocity"] ** 2 / size if size else 0.0)
+        return top
 
     def columns(self) -> list[tuple[str, np.ndarray]]:
         """One (header, values) per scalar: coordinate, body quantities, point components."""
@@ -78,7 +85,7 @@ class SweepResult:
 
     def to_csv(self, path: str | Path) -> None:
         """One row per position, one column per scalar, a header; bad rows have empty cells."""
-        scales = self._scales()
+        scales = self.scales()
         cols = [(h, clean(v, scales.get(h.rpartition(".")[2].rsplit("_", 1)[0], 0.0)))
                 for h, v in self.columns()]
         table = np.column_stack([v for _, v in cols]) if cols else np.zeros((0, 0))

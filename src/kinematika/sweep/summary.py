@@ -31,13 +31,14 @@ def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[lis
         lines.append(f"{name:<14}" + "".join(f"{_span(values[q], tops[q]):>{w}}" for q, w in
                                                (("angle", 24), ("omega", 26), ("alpha", 26))))
     lines += ["", f"{'point':<14}{'max speed':>14}{'at':>12}{'max acceleration':>20}{'at':>12}"]
+    scales = result.scales()
     seen = set()
     for name, values in result.points.items():
         point, _, body = name.partition("@")
         if body == result.frame:
             continue
-        speed = np.linalg.norm(values["velocity"], axis=1)
-        accel = np.linalg.norm(values["acceleration"], axis=1)
+        speed = _quiet(np.linalg.norm(values["velocity"], axis=1), scales["velocity"])
+        accel = _quiet(np.linalg.norm(values["acceleration"], axis=1), scales["acceleration"])
         key = (round(float(np.nanmax(speed)), 9), round(float(np.nanmax(accel)), 9), point)
         if key in seen:
             continue          # the same material motion under another body's name
@@ -57,6 +58,11 @@ def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[lis
             lines.append(f"  transmission angle: {np.nanmin(mu):.4g} to {np.nanmax(mu):.4g} deg; "
                          f"worst {mu[k]:.4g} deg at {at[k]:g} {unit}".rstrip())
     return lines
+
+
+def _quiet(values: np.ndarray, scale: float) -> np.ndarray:
+    """Round-off (below 1e-9 of the quantity's scale) as 0."""
+    return np.where(np.abs(values) <= 1e-9 * scale, 0.0, values)
 
 
 def _where(values: np.ndarray, at: np.ndarray, k: int) -> str:
