@@ -159,7 +159,8 @@ def _filled(values: dict[str, Any], bad: Optional[np.ndarray]) -> dict[str, np.n
 def motion_classes(model: Model) -> list[tuple[str, str, list[str]]]:
     """Material points that move alike by construction, as (point, body, ["P@body", ...]).
 
-    Bodies joined at P by a revolute (or welded) share P's motion: it is computed once.
+    Bodies joined at P by a revolute or spherical joint (or welded) share P's motion: it is
+    computed once.
     """
     out = []
     for point in model.points:
@@ -172,7 +173,7 @@ def motion_classes(model: Model) -> list[tuple[str, str, list[str]]]:
             return b
 
         for j in model.joints:
-            if j.a in parent and j.b in parent and (j.type == "weld" or (j.type == "revolute" and j.at == point)):
+            if j.a in parent and j.b in parent and (j.type == "weld" or (j.type in ("revolute", "spherical") and j.at == point)):
                 parent[root(j.a)] = root(j.b)
         classes: dict[str, list[str]] = {}
         for b in carriers:
