@@ -79,8 +79,7 @@ class Assembler:
     def _corrected(self, poses: Poses, solver: InstantSolver, dq: float) -> Optional[Poses]:
         """Chord iterations from `poses` with the matrix of `solver`; None when they fail."""
         current = poses
-        predicted = None
-        last = math.inf
+        first, last = None, math.inf
         for _ in range(CHORD_ITERATIONS):
             r = self.residual(current, dq)
             dx = -np.asarray(solver.solve_linear(list(r), check=False))
@@ -88,14 +87,14 @@ class Assembler:
             if not math.isfinite(size) or size > 2 * last + 1e-9:
                 return None
             current = current.stepped(dx, self.unknowns)
-            if predicted is None:
-                predicted, first = current, size
+            if first is None:
+                first = size                    # the predictor
             elif size > 0.3 * first + 1e-9:
                 return None                     # the correction rivals the step: a jump
-            last = size
-            if size < TOLERANCE:
-                self._keep_aux(current)
+            if size < TOLERANCE or (size < 1e3 * TOLERANCE and size > 0.5 * last):
+                self._keep_aux(current)         # converged (or stalled at round-off)
                 return current
+            last = size
         return None
 
     def assemble(self, poses: Poses, dq: float) -> tuple[Poses, InstantSolver]:
