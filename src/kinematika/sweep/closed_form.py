@@ -18,7 +18,6 @@ from typing import Optional
 import numpy as np
 
 from ..engine.motion import Motion
-from ..errors import KinematikaError
 from ..model.model import Driver, Joint, Model
 from ..structure.assur import Group
 
@@ -87,9 +86,6 @@ class ClosedForm:
 
     def __init__(self, model: Model, points: dict[str, tuple], directions: dict[str, tuple],
                  groups: list[Group], joint: Joint, drawn: Motion) -> None:
-        for b in model.bodies:
-            if b != model.frame and not any(b in g.bodies for g in groups):
-                raise KinematikaError("schema", f"body {b!r} is not part of the mechanism", "bodies")
         self.model, self.joint = model, joint
         self.points = {k: complex(*p) for k, p in points.items()}
         directions = {k: complex(*u) for k, u in directions.items()}
@@ -115,8 +111,8 @@ class ClosedForm:
     def solve(self, q: np.ndarray) -> Outcome:
         """Every body's track at the increments `q` (radians or length) of the input joint."""
         n = len(q)
-        frame = Track(next(iter(self.points.values())), 0.0, 0j, 0j, 0j, 0.0, 0.0, 1 + 0j)
-        frame.o = frame.origin0
+        o0 = next(iter(self.points.values()))
+        frame = Track(o0, 0.0, o0, 0j, 0j, 0.0, 0.0, 1 + 0j)          # at rest: plain numbers
         for p in self.model.bodies[self.model.frame].points:
             frame.known[self.points[p]] = (self.points[p], 0j, 0j)
         tracks = {self.model.frame: frame, self.input: self._input(q)}
