@@ -87,7 +87,7 @@ def test_paths_agree_on_random_crank_rockers(crank, coupler, rocker, start, side
     assert fast.method == "closed form" and slow.method == "newton"
     for name in fast.points:
         for q in ("position", "velocity", "acceleration"):
-            assert slow.points[name][q] == pytest.approx(fast.points[name][q], abs=1e-7)
+            assert slow.points[name][q] == pytest.approx(fast.points[name][q], rel=1e-7, abs=1e-7)
     for name in fast.bodies:
         assert slow.bodies[name]["angle"] == pytest.approx(fast.bodies[name]["angle"], abs=1e-7)
 
