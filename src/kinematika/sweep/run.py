@@ -109,7 +109,20 @@ class Sweeper:
         bodies = {b: {"angle": _series(np.degrees(t.theta), n), "omega": _series(t.omega, n),
                       "alpha": _series(t.alpha, n)} for b, t in out.tracks.items()}
         points = {(name, body): out.tracks[body].point(self.origins[name]) for name, body, _ in self.motions}
-        return self.result(plan, ok, bodies, points, dead_points(plan.coordinate, ok, out.singular))
+        dead = dead_points(plan.coordinate, ok, out.singular, self._edge if not ok.all() else None)
+        return self.result(plan, ok, bodies, points, dead)
+
+    def _edge(self, good: float, bad: float) -> float:
+        """Where between a row that can be assembled and one that cannot the motion stops:
+        the closed form evaluated on finer and finer rows (to 1/4096 of the step)."""
+        scale = np.pi / 180 if self.joint.type == "revolute" else 1.0
+        for _ in range(2):
+            between = np.linspace(good, bad, 65)
+            out = self.closed.solve(between * scale)
+            fine = out.assembled & ~out.singular
+            last = int(np.argmin(fine)) - 1 if not fine.all() else 64
+            good, bad = between[max(last, 0)], between[min(last + 1, 64)]
+        return float(good)
 
     def result(self, plan: Plan, ok: np.ndarray, bodies: dict, motions: dict,
                dead: list[float]) -> SweepResult:
@@ -205,8 +218,10 @@ def bad_row(plan: Plan, k: int, kind: str, what: str = "") -> KinematikaError:
     return KinematikaError(kind, message, "sweep")
 
 
-def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray) -> list[float]:
-    """Where the motion stops being possible: singular rows and the last rows before a gap."""
+def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray,
+                refine: Optional[Callable[[float, float], float]] = None) -> list[float]:
+    """Where the motion stops being possible: singular rows, and at each edge of a gap the
+    last row that could be assembled (or, with `refine(good, bad)`, the edge found between)."""
     if ok.all():
         return []
     out = [float(x) for x in coordinate[singular]]
@@ -214,5 +229,6 @@ def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray) ->
     for k in edges:
         good, bad = (k, k + 1) if ok[k] else (k + 1, k)
         if not singular[bad]:            # a singular row is itself the dead point
-            out.append(float(coordinate[good]))
+            edge = float(coordinate[good])
+            out.append(refine(edge, float(coordinate[bad])) if refine else edge)
     return sorted(set(out))
