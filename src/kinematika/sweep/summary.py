@@ -22,11 +22,15 @@ def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[lis
     if good == 0:
         return lines
     at = result.coordinate
-    moving = {b: v for b, v in result.bodies.items() if b != result.frame}
+    # in 3D, the magnitudes: the rotation from the drawn pose, |ω| and |α|
+    moving = {b: {q: np.linalg.norm(x, axis=1) if x.ndim == 2 else x for q, x in v.items()}
+              for b, v in result.bodies.items() if b != result.frame}
     tops = {q: max((float(np.nanmax(np.abs(v[q]))) for v in moving.values()), default=0.0)
             for q in ("angle", "omega", "alpha")}
     tops["alpha"] = max(tops["alpha"], tops["omega"] ** 2)     # the scale of α: α itself or ω²
-    lines += ["", f"{'body':<14}{'angle (deg)':>24}{'omega (rad/s)':>26}{'alpha (rad/s²)':>26}"]
+    heads = (("angle (deg)", "omega (rad/s)", "alpha (rad/s²)") if result.dimension == 2 else
+             ("rotation (deg)", "|omega| (rad/s)", "|alpha| (rad/s²)"))
+    lines += ["", f"{'body':<14}{heads[0]:>24}{heads[1]:>26}{heads[2]:>26}"]
     for name, values in moving.items():
         lines.append(f"{name:<14}" + "".join(f"{_span(values[q], tops[q]):>{w}}" for q, w in
                                                (("angle", 24), ("omega", 26), ("alpha", 26))))
