@@ -25,23 +25,12 @@ ground = ["O2", "O4"]
 crank = ["O2", "A"]
 coupler = ["A", "B"]
 rocker = ["B", "O4"]
-[[joints]]
+""" + "".join(f"""[[joints]]
 type = "revolute"
-bodies = ["ground", "crank"]
-at = "O2"
-[[joints]]
-type = "revolute"
-bodies = ["crank", "coupler"]
-at = "A"
-[[joints]]
-type = "revolute"
-bodies = ["coupler", "rocker"]
-at = "B"
-[[joints]]
-type = "revolute"
-bodies = ["rocker", "ground"]
-at = "O4"
-[[drivers]]
+bodies = ["{a}", "{b}"]
+at = "{at}"
+""" for a, b, at in [("ground", "crank", "O2"), ("crank", "coupler", "A"),
+                      ("coupler", "rocker", "B"), ("rocker", "ground", "O4")]) + """[[drivers]]
 omega = "crank"
 value = "w2"
 alpha = 0
