@@ -46,9 +46,6 @@ class Numeric:
     def simplify(self, x: Any) -> Any:
         return x
 
-    def to_float(self, x: Any, env: dict | None = None) -> float:
-        return float(x)
-
 
 def _real_sqrt(x: float) -> float:
     if x < 0:
@@ -119,12 +116,6 @@ class Symbolic:
             value = float(self.sp.sympify(e).xreplace(probe))
             if abs(value - x) > 1e-6 * (1 + abs(x)):
                 raise ArithmeticError(f"exact solution {e} disagrees with the numeric one {x}")
-
-    def to_float(self, x: Any, env: dict | None = None) -> float:
-        value = self.sp.sympify(x)
-        if env:
-            value = value.xreplace(env)
-        return float(value)
 
 
 def probe_values(symbols: list[Any], seed: int = 7) -> dict[Any, float]:

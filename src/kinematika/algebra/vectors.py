@@ -24,10 +24,6 @@ def scale(k: Any, a: Sequence) -> Vec:
     return tuple(k * x for x in a)
 
 
-def neg(a: Sequence) -> Vec:
-    return tuple(-x for x in a)
-
-
 def dot(a: Sequence, b: Sequence) -> Any:
     total: Any = 0
     for x, y in zip(a, b):
@@ -70,9 +66,6 @@ class Space:
 
     def rot_zero(self) -> Any:
         return 0 if self.dim == 2 else (0, 0, 0)
-
-    def rot_add(self, a: Any, b: Any) -> Any:
-        return a + b if self.dim == 2 else add(a, b)
 
     def rot_sub(self, a: Any, b: Any) -> Any:
         return a - b if self.dim == 2 else sub(a, b)

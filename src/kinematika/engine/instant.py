@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any, Optional
 
 from ..algebra.backend import Numeric, Symbolic, probe_values
-from ..algebra.vectors import Space, dot, scale, sub
+from ..algebra.vectors import Space, dot, sub
 from ..errors import KinematikaError
 from ..model import model as m
 from ..model.expressions import Expr, ExpressionError, evaluate
@@ -199,10 +199,3 @@ def _radius(inst: Instant, expr: Expr, where: str) -> Any:
         raise KinematikaError("schema", f"a radius must be positive, got {inst.num(r):g}", where)
     return r
 
-
-def signed_distance(point: tuple, through: tuple, normal: tuple) -> Any:
-    return dot(sub(point, through), normal)
-
-
-def offset(point: tuple, k: Any, direction: tuple) -> tuple:
-    return tuple(p + c for p, c in zip(point, scale(k, direction)))

@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable, Optional
 
-from ..algebra.vectors import add, dot, scale, sub
+from ..algebra.vectors import dot, sub
 from ..errors import KinematikaError
 from ..model.model import Joint, PointPair
 from .contact import Contact, find_contact

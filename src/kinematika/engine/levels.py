@@ -2,8 +2,9 @@
 
 At the velocity level the unknowns are each moving body's (ω, v₀); at the acceleration
 level they are (α, a₀), and the known velocities put the centripetal and Coriolis terms in
-the constants. A joint writes ``lv.point(body, P)``, ``lv.omega(body)`` and adds
-``lv.known(...)`` terms once; both systems then share their matrix by construction.
+the constants. A joint writes ``lv.point(body, P)`` and ``lv.omega(body)`` once, adding its
+Coriolis terms from the solved velocities (``lv.w``, ``lv.v``) when ``lv.accel``; both
+systems then share their matrix by construction.
 """
 from __future__ import annotations
 
@@ -75,10 +76,6 @@ class Level:
 
     def point(self, body: str, p: tuple) -> tuple:
         raise NotImplementedError
-
-    def known(self, term: Any) -> Any:
-        """A second-order term: counted at the acceleration level, zero at the velocity level."""
-        return term if self.accel else 0
 
     # the solved velocities, for the terms of the acceleration level
     def w(self, body: str) -> Any:

@@ -31,10 +31,6 @@ class Analysis:
     rows: list[int]                      # n independent rows
     blocks: list[tuple[list[int], list[int]]]   # (rows, columns) in solving order
 
-    @property
-    def condition_number(self) -> float:
-        return self.diagnosis.condition_number
-
 
 def analyse(a: np.ndarray, is_driver: np.ndarray, translation_columns: np.ndarray, length: float,
             labels: list[str], wheres: list[str], body_of: list[str],
@@ -88,10 +84,6 @@ class SparseAnalysis:
     diagnosis: Diagnosis
     rows: list[int]
     blocks: list = field(default_factory=list)
-
-    @property
-    def condition_number(self) -> float:
-        return self.diagnosis.condition_number
 
 
 def sparse_matrix(rows: list[Any], n: int) -> Any:

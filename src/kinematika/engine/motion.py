@@ -28,10 +28,6 @@ class Motion:
         self.ref = ref
         self.states = states
 
-    def rest(self) -> BodyState:
-        zero = self.space.zero()
-        return BodyState(self.space.rot_zero(), zero, self.space.rot_zero(), zero)
-
     def state(self, body: str, relative_to: str | None = None) -> BodyState:
         """The motion of `body` as seen by an observer fixed to `relative_to` (default: ground).
 

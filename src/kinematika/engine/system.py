@@ -12,9 +12,8 @@ from typing import Any
 
 import numpy as np
 
-from ..model.model import Model
 from .drivers import driver_rows
-from .instant import Instant, instantiate
+from .instant import Instant
 from .joints import JointGeometry, Row, joint_geometry, joint_rows
 from .levels import AccelerationLevel, KnownTerms, Level, Unknowns, VelocityLevel
 from .motion import BodyState, Motion
@@ -130,9 +129,3 @@ def _split(x: list[Any], o: int, rot: int, dim: int) -> tuple[Any, tuple]:
     v0 = tuple(x[o + rot:o + rot + dim])
     return (w[0] if rot == 1 else w), v0
 
-
-def solve_instant(model: Model, symbolic: bool | None = None) -> tuple[Instant, Motion, InstantSolver]:
-    """Evaluate `model` and solve its instant; errors are `KinematikaError`s."""
-    inst = instantiate(model, symbolic)
-    solver = InstantSolver(inst)
-    return inst, solver.solve(), solver

@@ -207,7 +207,7 @@ class _Builder:
             if present and not wanted and key not in allowed:
                 raise KinematikaError("schema", f"a {kind} joint has no `{key}`", where)
         if raw.internal is not None and kind not in {"gear", "rolling"}:
-            raise KinematikaError("schema", f"`internal` belongs to gear and rolling joints", where)
+            raise KinematikaError("schema", "`internal` belongs to gear and rolling joints", where)
         at = raw.at
         if at is not None:
             self.known_point(at, f"{where}.at")
@@ -224,7 +224,7 @@ class _Builder:
     def direction(self, raw: list, where: str) -> Direction:
         if len(raw) == 2 and all(isinstance(v, str) and v in self.point_coords for v in raw):
             if raw[0] == raw[1]:
-                raise KinematikaError("schema", f"a direction needs two different points", where)
+                raise KinematikaError("schema", "a direction needs two different points", where)
             return PointPair(raw[0], raw[1])
         return self.direction_vector(raw, where)
 

@@ -6,8 +6,6 @@ from typing import Any
 from rich.console import Console
 from rich.table import Table
 
-from .json_answer import solution_json
-
 
 def show(value: Any) -> str:
     """A compact text form of a plain answer value."""
@@ -53,6 +51,3 @@ def print_solution(data: dict, console: Console | None = None) -> None:
         answers.add_row(ask_text(entry["ask"]), show(entry["value"]))
     console.print(answers)
 
-
-def print_model_solution(sol: Any, console: Console | None = None) -> None:
-    print_solution(solution_json(sol), console)
