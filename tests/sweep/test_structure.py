@@ -150,3 +150,36 @@ def test_slider_crank_stroke_and_limits():
     travel = {lim.name: lim.output for lim in sc.limits}
     assert x.max() - x[0] == pytest.approx(travel["extended"], abs=1e-6)
     assert x.min() - x[0] == pytest.approx(travel["folded"], abs=1e-6)
+
+
+def test_inverted_slider_crank_with_a_block_is_swept_without_a_classical_linkage(tmp_path):
+    # a block pinned at the crank pin A slides along a rod pivoted at O4 (an RPR dyad of two
+    # bodies): no four-bar or slider-crank figures, but the sweep and its summary work. The rod
+    # swings between the tangents from O4 to the pin's circle: 180° ± asin(r/d) from O4→O2.
+    import yaml
+    from typer.testing import CliRunner
+
+    from kinematika.cli import app
+
+    r, d, th = 0.1, 0.3, math.radians(60)
+    a = [r * math.cos(th), r * math.sin(th)]
+    tree = {"points": {"O2": [0, 0], "O4": [d, 0], "A": a},
+            "bodies": {"ground": ["O2", "O4"], "crank": ["O2", "A"], "block": ["A"], "rod": ["O4", "A"]},
+            "joints": [{"type": "revolute", "bodies": ["ground", "crank"], "at": "O2"},
+                       {"type": "revolute", "bodies": ["crank", "block"], "at": "A"},
+                       {"type": "revolute", "bodies": ["ground", "rod"], "at": "O4"},
+                       {"type": "prismatic", "bodies": ["rod", "block"], "along": ["O4", "A"]}],
+            "drivers": [{"omega": "crank", "value": 20}]}
+    assert kinds(tree) == [("input", ["crank"]), ("RPR", ["block", "rod"])]
+    sweeper = Sweeper(tree)
+    assert sweeper.linkage() is None
+    angle = sweeper.run(by=360, steps=3600).bodies["rod"]["angle"]
+    drawn = math.degrees(math.atan2(a[1], a[0] - d))
+    swing = math.degrees(math.asin(r / d))
+    assert angle.min() == pytest.approx(180 - swing - drawn, abs=1e-3)
+    assert angle.max() == pytest.approx(180 + swing - drawn, abs=1e-3)
+    model = tmp_path / "inverted.yaml"
+    model.write_text(yaml.safe_dump(tree))
+    out = CliRunner().invoke(app, ["sweep", str(model)])
+    assert out.exit_code == 0, out.output
+    assert "RPR block + rod" in out.stdout and "four-bar" not in out.stdout

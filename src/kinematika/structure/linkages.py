@@ -127,9 +127,9 @@ def identify(model: Model, groups: Optional[list[Group]], points: dict[str, tupl
         return None
     first, dyad = groups
     crank_joint = model.joint(first.joints[0])
-    if (crank_joint.type != "revolute" or len(dyad.bodies) != 2
+    if (crank_joint.type != "revolute" or dyad.kind not in ("RRR", "RRP") or len(dyad.bodies) != 2
             or dyad.known != [first.bodies[0], model.frame]):
-        return None
+        return None          # e.g. an inverted slider-crank (RPR): its middle pair has no point
     j1, j2, j3 = (model.joint(j) for j in dyad.joints)
     o, a, b = points[crank_joint.at], points[j1.at], points[j2.at]
     bodies = {"crank": first.bodies[0], "coupler": dyad.bodies[0], "output": dyad.bodies[1]}
@@ -140,15 +140,13 @@ def identify(model: Model, groups: Optional[list[Group]], points: dict[str, tupl
                      {"O2": crank_joint.at, "A": j1.at, "B": j2.at, "O4": j3.at})
         fb.limits = _four_bar_limits(fb)
         return fb
-    if dyad.kind == "RRP":
-        u = directions[j3.id]
-        n = (-u[1], u[0])
-        offset = (b[0] - o[0]) * n[0] + (b[1] - o[1]) * n[1]
-        sc = SliderCrank(math.dist(o, a), math.dist(a, b), offset, bodies, {"O": o, "A": a, "B": b}, u,
-                         {"O": crank_joint.at, "A": j1.at, "B": j2.at})
-        sc.limits = _slider_limits(sc)
-        return sc
-    return None
+    u = directions[j3.id]                     # RRP: the slider's guide on the frame
+    n = (-u[1], u[0])
+    offset = (b[0] - o[0]) * n[0] + (b[1] - o[1]) * n[1]
+    sc = SliderCrank(math.dist(o, a), math.dist(a, b), offset, bodies, {"O": o, "A": a, "B": b}, u,
+                     {"O": crank_joint.at, "A": j1.at, "B": j2.at})
+    sc.limits = _slider_limits(sc)
+    return sc
 
 
 def transmission_angle(linkage: Linkage, result) -> "np.ndarray":
