@@ -106,3 +106,11 @@ def test_cli_errors_are_one_line_with_status_2(tmp_path):
         "where": "sweep.joint"}
     out = runner.invoke(app, ["sweep", model, "--steps", "36", "--skip-bad", "--json"])
     assert out.exit_code == 0 and None in json.loads(out.stdout)["bodies"]["rocker"]["omega"]
+
+
+def test_cli_plot_to_a_format_matplotlib_cannot_write_is_a_clean_error(tmp_path):
+    model = _model_file(tmp_path, four_bar_tree())
+    out = CliRunner().invoke(app, ["sweep", model, "--steps", "4", "--plot", str(tmp_path / "curves.txt")])
+    assert out.exit_code == 2
+    assert out.stderr.strip() == "error (schema): cannot plot to 'curves.txt': give a .png, .svg or .pdf file"
+    assert not (tmp_path / "curves.txt").exists()

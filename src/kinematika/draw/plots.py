@@ -15,6 +15,7 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from ..errors import KinematikaError
 from .style import BODY_COLOURS, INK
 
 MAX_POINTS = 10
@@ -24,7 +25,9 @@ DEAD = "#c62828"
 
 
 def plot_sweep(result: Any, path: Optional[Path | str] = None) -> Figure:
-    """The sweep plots of `result` (a `SweepResult`), written to `path` when given."""
+    """The sweep plots of `result` (a `SweepResult`), written to `path` when given (its
+    suffix names the format, PNG without one)."""
+    fmt = _format(Path(path)) if path is not None else None
     x = np.asarray(result.coordinate, dtype=float)
     fig = Figure(figsize=(8.0, 11.0))
     FigureCanvasAgg(fig)
@@ -51,10 +54,16 @@ def plot_sweep(result: Any, path: Optional[Path | str] = None) -> Figure:
     fig.suptitle(title.replace("$", r"\$"), fontsize=12, weight="bold", color=INK)
     fig.tight_layout(rect=(0, 0, 1, 0.98))
     if path is not None:
-        path = Path(path)
-        fig.savefig(path, dpi=100, format=path.suffix.lower().lstrip(".") or "png",
-                    facecolor="white")
+        fig.savefig(path, dpi=100, format=fmt, facecolor="white")
     return fig
+
+
+def _format(path: Path) -> str:
+    """The format of `path` by its suffix; one matplotlib cannot write is refused up front."""
+    fmt = path.suffix.lower().lstrip(".") or "png"
+    if fmt not in FigureCanvasAgg.get_supported_filetypes():
+        raise KinematikaError("schema", f"cannot plot to {path.name!r}: give a .png, .svg or .pdf file")
+    return fmt
 
 
 def _colour(i: int) -> str:
