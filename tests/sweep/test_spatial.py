@@ -45,3 +45,29 @@ def test_planar_four_bar_built_in_3d_matches_loop_closure():
     assert result.bodies["rocker"]["omega"][:, 2] == pytest.approx(expect["w4"], abs=1e-9)
     assert result.bodies["rocker"]["alpha"][:, 2] == pytest.approx(expect["a4"], abs=1e-8)
     assert result.bodies["crank"]["angle"][-1] == pytest.approx([0, 0, 360], abs=1e-9)
+
+
+def test_fan_driven_by_a_fixed_vector_cannot_be_swept_but_by_its_joint_rate_can():
+    # the blades' ω relative to the block written as (0.5, 0, 0) in ground axes: once the block
+    # has turned about y, the hub axis is no longer x, so the drivers contradict the joints
+    from kinematika import KinematikaError
+
+    tree = {"dimension": 3, "points": {"B": [0, 0, 0], "C": [0.6, 0, 0], "P": [0.6, 0.3, 0]},
+            "bodies": {"ground": ["B"], "block": ["B", "C"], "blades": ["C", "P"]},
+            "joints": [{"id": "shaft", "type": "revolute", "bodies": ["ground", "block"], "at": "B",
+                        "axis": [0, 1, 0]},
+                       {"id": "hub", "type": "revolute", "bodies": ["block", "blades"], "at": "C",
+                        "axis": [1, 0, 0]}],
+            "drivers": [{"joint": "shaft", "rate": 0.1},
+                        {"omega": "blades", "relative_to": "block", "value": [0.5, 0, 0]}]}
+    for skip_bad in (False, True):
+        with pytest.raises(KinematikaError) as err:
+            run_sweep(tree, by=90, steps=3, skip_bad=skip_bad)
+        assert err.value.kind == "mobility"
+        assert "increment 1 (shaft = 30 deg" in str(err.value) and "rate" in str(err.value)
+    tree["drivers"][1] = {"joint": "hub", "rate": 0.5}
+    result = run_sweep(tree, by=90, steps=3)
+    # the hub keeps its coordinate: P turns with the block about +y, (0.6 cos ψ, 0.3, −0.6 sin ψ)
+    psi = np.radians(result.coordinate)
+    expect = np.column_stack([0.6 * np.cos(psi), np.full(4, 0.3), -0.6 * np.sin(psi)])
+    assert result.points["P@blades"]["position"] == pytest.approx(expect, abs=1e-10)

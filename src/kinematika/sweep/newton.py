@@ -163,7 +163,7 @@ def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
     singular = np.zeros(n, dtype=bool)
     poses = asm.poses_class.drawn(sweeper.inst.ref, list(asm.unknowns.offset))
     solver, motion = sweeper.solver, sweeper.drawn
-    dq_good = 0.0
+    poses_good, solver_good, dq_good = poses, solver, 0.0
     report = reporter(progress, n, "sweeping")
     for k, dq in enumerate(plan.increments):
         if k > 0:
@@ -172,7 +172,6 @@ def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
                     poses, solver = asm.step(poses_good, solver_good, dq_good, float(dq))
                 else:           # after skipped rows: assemble afresh near the last good poses
                     poses, solver = asm.assemble(poses_good, float(dq))
-                motion = solver.solve()
             except (_NotAssembled, KinematikaError) as err:
                 kind = err.kind if isinstance(err, KinematikaError) else "assembly"
                 kind = "assembly" if kind not in ("singular", "assembly") else kind
@@ -182,6 +181,11 @@ def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
                 singular[k] = kind == "singular"
                 report(k + 1)
                 continue
+            try:
+                motion = solver.solve()
+            except KinematikaError:     # assembled, but the drivers' values contradict the joints
+                report(None)
+                raise bad_row(plan, k, "mobility") from None
         _store(sweeper, poses, motion, k, bodies, motions)
         ok[k] = True
         poses_good, solver_good, dq_good = poses, solver, float(dq)
