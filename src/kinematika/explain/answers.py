@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..algebra.vectors import dot, scale, sub
 from ..model.model import PointRef
 from ..questions import answer
+from ..questions.curvature import intrinsic
 from .context import Ctx
 from .document import Ann, Derived, Equation, Inline, Section, Sym, Table, Term, Value, msg
 from .terms import KNOWN
@@ -75,9 +75,8 @@ def curvature_steps(ctx: Ctx, q) -> list:
     label = str(ref) if not ctx.shared(ref.point) else ref.point
     if result.get("rest"):
         return [msg("curvature.rest", point=label)]
-    vv = dot(v, v)
-    at = scale(dot(a, v) / vv, v)
-    an = sub(a, at)
+    split = intrinsic(ctx.sol, q)             # the solver's aᵗ and aⁿ of the same point
+    at, an = split["tangential_vector"], split["normal_vector"]
     target = Term(Sym("a", label), ctx.clean(a, "accel"), *KNOWN, kind="point")
     tangential = Term(Sym("a", label, "t"), ctx.clean(at, "accel"), Ann("M"),
                       Ann("para", Sym("v", label)), kind="tangential")
