@@ -84,13 +84,7 @@ def test_plot_sweep_leaves_gaps_at_rows_not_assembled():
     assert np.isnan(speeds["B"].get_ydata()[5]) and np.isfinite(speeds["B"].get_ydata()[4])
 
 
-@pytest.fixture
-def sweeps():
-    """The animation tests run real sweeps (kinematika.sweep)."""
-    return pytest.importorskip("kinematika.sweep")
-
-
-def test_animation_moves_the_slider_to_its_closed_form_positions(sweeps):
+def test_animation_moves_the_slider_to_its_closed_form_positions():
     from kinematika.draw.animation import Film
 
     film = Film.of(slider_crank_tree(), by=360, steps=12, frames=13)
@@ -108,7 +102,7 @@ def test_animation_moves_the_slider_to_its_closed_form_positions(sweeps):
         assert len(trace.get_xdata()) == k + 1
 
 
-def test_animation_writes_a_gif_with_the_frames_asked(tmp_path, sweeps):
+def test_animation_writes_a_gif_with_the_frames_asked(tmp_path):
     from PIL import Image
 
     from kinematika.draw import animate
@@ -121,7 +115,7 @@ def test_animation_writes_a_gif_with_the_frames_asked(tmp_path, sweeps):
     assert done[-1] == (5, 5)
 
 
-def test_animation_errors_are_clear(tmp_path, monkeypatch):
+def test_mp4_without_ffmpeg_is_a_clear_error(tmp_path, monkeypatch):
     from matplotlib import animation
 
     from kinematika.draw import animate
@@ -129,6 +123,3 @@ def test_animation_errors_are_clear(tmp_path, monkeypatch):
     monkeypatch.setattr(animation.writers, "is_available", lambda name: False)
     with pytest.raises(KinematikaError, match="ffmpeg"):
         animate(slider_crank_tree(), tmp_path / "m.mp4")
-    monkeypatch.setitem(__import__("sys").modules, "kinematika.sweep", None)
-    with pytest.raises(KinematikaError, match="sweeps"):
-        animate(slider_crank_tree(), tmp_path / "m.gif")

@@ -42,7 +42,7 @@ def animate(source: Any, path: Path | str, joint: Optional[str] = None, by: Opti
     path = Path(path)
     writer = _writer(path, fps)
     film = Film.of(source, joint, by, steps, frames, options, trace, skip_bad)
-    from ..sweep.progress import reporter   # the sweeps' progress bar (sweeps are there now)
+    from ..sweep.progress import reporter
 
     report = reporter(progress, len(film.rows), "rendering frames")
     with writer.saving(film.fig, str(path), DPI):
@@ -68,10 +68,10 @@ class Film:
            steps: Optional[int] = None, frames: int = 120, options: Optional[DrawOptions] = None,
            trace: Optional[list[str]] = None, skip_bad: bool = False) -> "Film":
         from ..api import as_model, solve
+        from ..sweep import run_sweep
         from .figure import new_figure
         from .scene import build_scene
 
-        run_sweep = sweeps_available()
         model = as_model(source)
         if model.dimension != 2:
             raise KinematikaError("schema", "animate draws planar models; draw a 3D model's "
@@ -98,16 +98,6 @@ class Film:
         result = self.motion.result
         self.motion.show(k)
         self.title.set_text(f"{self.motion.scene.name}  —  {result.joint} {_coordinate(result, k)}")
-
-
-def sweeps_available() -> Callable[..., Any]:
-    """`kinematika.sweep.run_sweep`, or a clear error while sweeps are not installed."""
-    try:
-        from ..sweep import run_sweep
-    except ImportError:
-        raise KinematikaError("schema", "animate needs sweeps (kinematika.sweep), which are not "
-                              "available in this installation yet") from None
-    return run_sweep
 
 
 def _writer(path: Path, fps: int) -> Any:
