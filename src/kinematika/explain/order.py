@@ -1,19 +1,19 @@
 """The order of solution: inputs, then groups solved from the bodies already known.
 
-The dyad (Assur group) decomposition of `kinematika.structure.assur` is used when it is
-there and the mechanism decomposes; otherwise the order is read from the engine's
+The dyad (Assur group) decomposition of `kinematika.structure.assur` is used when the
+mechanism decomposes; otherwise the order is read from the engine's
 block-triangular form of the velocity system (the same matrix the solver used), each new
 block's bodies forming one group.
 """
 from __future__ import annotations
 
-import importlib
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..engine.linsolve import _blocks, independent_rows
 from ..solution import Solution
+from ..structure.assur import assur_groups
 
 
 @dataclass
@@ -30,21 +30,10 @@ class Step:
 
 def solution_order(sol: Solution) -> list[Step]:
     """The steps of the solution in order (Assur groups, else blocks of the system)."""
-    groups = _assur(sol)
+    groups = assur_groups(sol.model)
     if groups:
         return [Step(g.kind, list(g.bodies), list(g.joints), list(g.known), g.letters) for g in groups]
     return block_order(sol)
-
-
-def _assur(sol: Solution):
-    try:
-        module = importlib.import_module("kinematika.structure.assur")
-    except ImportError:
-        return None
-    try:
-        return module.assur_groups(sol.model)
-    except Exception:  # noqa: BLE001 - a decomposition that fails is no decomposition
-        return None
 
 
 def block_order(sol: Solution) -> list[Step]:
