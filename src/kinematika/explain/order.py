@@ -13,7 +13,7 @@ import numpy as np
 
 from ..engine.linsolve import _blocks, independent_rows
 from ..solution import Solution
-from ..structure.assur import assur_groups
+from ..structure.assur import assur_groups, dyad as assur_dyad
 
 
 @dataclass
@@ -66,27 +66,24 @@ def block_order(sol: Solution) -> list[Step]:
 
 
 def dyad(sol: Solution, step: Step, known: set[str]) -> Step:
-    """A group of two bodies chained to known ones by three R or P joints, named as a dyad."""
+    """A group of two bodies chained to known ones by three R or P joints, named as a dyad
+    (as `structure.assur` names them)."""
     if len(step.bodies) != 2:
         return step
     b1, b2 = step.bodies
-    pairs = {"revolute": "R", "prismatic": "P"}
 
     def between(x: str, others: set[str]) -> list:
         return [j for j in sol.model.joints if {j.a, j.b} & {x} and ({j.a, j.b} - {x}) <= others]
 
     ends1, ends2, middle = between(b1, known), between(b2, known), between(b1, {b2})
     chain = ends1 + middle + ends2
-    if len(ends1) != 1 or len(ends2) != 1 or len(middle) != 1 or any(j.type not in pairs for j in chain):
+    if (len(ends1) != 1 or len(ends2) != 1 or len(middle) != 1
+            or any(j.type not in ("revolute", "prismatic") for j in chain)):
         return step
-    letters = "".join(pairs[j.type] for j in chain)
-    if letters == "PRR":
-        b1, b2, chain, letters = b2, b1, chain[::-1], "RRP"
-    if letters not in ("RRR", "RRP", "RPR", "PRP"):
+    group = assur_dyad(b1, b2, *chain)
+    if group is None or group.kind == "other":
         return step
-    k1 = next(iter({chain[0].a, chain[0].b} - {b1}))
-    k2 = next(iter({chain[2].a, chain[2].b} - {b2}))
-    return Step(letters, [b1, b2], [j.id for j in chain], [k1, k2], letters, "blocks")
+    return Step(group.kind, group.bodies, group.joints, group.known, group.letters, "blocks")
 
 
 def _joints_of(sol: Solution, rows: list, bodies: list[str]) -> list[str]:

@@ -124,7 +124,7 @@ class _Graph:
                     continue
                 tail = self.attaching(b2)
                 if len(tail) == 1 and tail[0].type in ("revolute", "prismatic"):
-                    return _dyad(b1, b2, ends[0], j2, tail[0])
+                    return dyad(b1, b2, ends[0], j2, tail[0])
         return None
 
     def next_other(self) -> Optional[Group]:
@@ -166,7 +166,9 @@ def _letter(j: Joint) -> str:
     return "R" if j.type == "revolute" else "P"
 
 
-def _dyad(b1: str, b2: str, j1: Joint, j2: Joint, j3: Joint) -> Optional[Group]:
+def dyad(b1: str, b2: str, j1: Joint, j2: Joint, j3: Joint) -> Optional[Group]:
+    """The dyad b1, b2 chained by revolute or prismatic j1 (to a known body), j2, j3 (to a
+    known body), named by its pairs (PRR read from the other end as RRP); None if PPP."""
     letters = _letter(j1) + _letter(j2) + _letter(j3)
     if letters == "PRR":                      # read the chain from the other end
         b1, b2, j1, j3 = b2, b1, j3, j1
