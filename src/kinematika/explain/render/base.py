@@ -85,6 +85,11 @@ class Renderer:
             return "; ".join((self.esc(label) + " = " if label else "") + self.value(v) for label, v in c)
         return self.arg(c)
 
+    def caption(self, fig: Figure) -> str:
+        """A figure's caption, saying when it is drawn at sample values of the symbols."""
+        text = self.message(fig.caption)
+        return text + " " + self.message(Msg("fig.sample")) if fig.sample else text
+
     def svg_label(self, s: Sym) -> str:
         return sym_label(s.base, self.sub_text(s), s.sup)
 

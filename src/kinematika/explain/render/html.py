@@ -5,7 +5,7 @@ from __future__ import annotations
 from html import escape
 from typing import Any
 
-from ..document import Equation, Figure, Msg, Sym
+from ..document import Equation, Figure, Sym
 from .base import Renderer
 from .svg import svg
 from .unicode import unicode_formula
@@ -76,13 +76,6 @@ class HtmlRenderer(Renderer):
         return f'<table class="grid"><tr>{head}</tr>{body}</table>'
 
     def figure(self, fig: Figure) -> str:
-        caption = self.message(fig.caption)
-        if fig.sample:
-            caption += " " + self.message(Msg("fig.sample"))
+        caption = self.caption(fig)
         drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "")
         return f"<figure>{drawing}<figcaption>{caption}</figcaption></figure>"
-
-    def message_key(self, key: str) -> str:
-        from ..document import Msg
-
-        return self.message(Msg(key))

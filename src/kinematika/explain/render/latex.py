@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..document import Equation, Figure, Msg, Sym
+from ..document import Equation, Figure, Sym
 from .base import Renderer
 from .svg import COLOURS, bounds, nice
 from .unicode import latex_formula
@@ -111,9 +111,7 @@ class LatexRenderer(Renderer):
         return "\\begin{tabular}{" + spec + "}\n\\hline\n" + "\n".join(lines) + "\n\\hline\n\\end{tabular}\n"
 
     def figure(self, fig: Figure) -> str:
-        caption = self.message(fig.caption)
-        if fig.sample:
-            caption += " " + self.message(Msg("fig.sample"))
+        caption = self.caption(fig)
         return tikz(fig, self.math_sym, self.unit(fig.unit) if not self.doc.symbolic else "", caption)
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import base64
 from typing import Any
 
-from ..document import Equation, Figure, Msg, Sym
+from ..document import Equation, Figure, Sym
 from .base import Renderer
 from .svg import svg
 from .unicode import unicode_formula
@@ -56,9 +56,7 @@ class MarkdownRenderer(Renderer):
         return "\n".join([line(header), line(["---"] * len(header))] + [line(r) for r in rows]) + "\n"
 
     def figure(self, fig: Figure) -> str:
-        caption = self.message(fig.caption)
-        if fig.sample:
-            caption += " " + self.message(Msg("fig.sample"))
+        caption = self.caption(fig)
         drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "")
         data = base64.b64encode(drawing.encode("utf-8")).decode("ascii")
         return f"![{caption}](data:image/svg+xml;base64,{data})\n\n*{caption}*\n"
