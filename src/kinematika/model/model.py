@@ -187,16 +187,26 @@ class Model:
 
     def share_motion(self, point: str, carriers: list[str]) -> bool:
         """Carriers joined at `point` by revolute/spherical joints or welds move alike there."""
-        group = {carriers[0]}
-        changed = True
-        while changed:
-            changed = False
-            for j in self.joints:
-                linked = j.type == "weld" or (j.type in ("revolute", "spherical") and j.at == point)
-                if linked and (j.a in group) != (j.b in group) and {j.a, j.b} <= set(carriers):
-                    group |= {j.a, j.b}
-                    changed = True
-        return group == set(carriers)
+        return len(self.motion_classes(point, carriers)) == 1
+
+    def motion_classes(self, point: str, carriers: list[str]) -> list[list[str]]:
+        """`carriers` grouped by the motion of their material points at `point`: bodies joined
+        there by revolute or spherical joints (or welded), directly or through each other."""
+        root = {b: b for b in carriers}
+
+        def find(b: str) -> str:
+            while root[b] != b:
+                b = root[b]
+            return b
+
+        for j in self.joints:
+            linked = j.type == "weld" or (j.type in ("revolute", "spherical") and j.at == point)
+            if linked and j.a in root and j.b in root:
+                root[find(j.a)] = find(j.b)
+        classes: dict[str, list[str]] = {}
+        for b in carriers:
+            classes.setdefault(find(b), []).append(b)
+        return list(classes.values())
 
     @property
     def moving_bodies(self) -> list[str]:

@@ -175,25 +175,9 @@ def motion_classes(model: Model) -> list[tuple[str, str, list[str]]]:
     Bodies joined at P by a revolute or spherical joint (or welded) share P's motion: it is
     computed once.
     """
-    out = []
-    for point in model.points:
-        carriers = model.carriers(point)
-        parent = {b: b for b in carriers}
-
-        def root(b: str) -> str:
-            while parent[b] != b:
-                b = parent[b]
-            return b
-
-        for j in model.joints:
-            if j.a in parent and j.b in parent and (j.type == "weld" or (j.type in ("revolute", "spherical") and j.at == point)):
-                parent[root(j.a)] = root(j.b)
-        classes: dict[str, list[str]] = {}
-        for b in carriers:
-            classes.setdefault(root(b), []).append(b)
-        for members in classes.values():
-            out.append((point, members[0], [str(PointRef(point, b)) for b in members]))
-    return out
+    return [(point, members[0], [str(PointRef(point, b)) for b in members])
+            for point in model.points
+            for members in model.motion_classes(point, model.carriers(point))]
 
 
 def _as_model(source: Any) -> Model:
