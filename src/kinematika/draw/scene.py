@@ -359,14 +359,7 @@ def _nearest_shape(shapes: list[ShapeView], p: Vec) -> Optional[ShapeView]:
 
 def display_name(model: Any, ref: PointRef) -> str:
     """`B` when the bare name means this material point, else `B@body`."""
-    try:
-        if model.resolve_point(ref.point) is not None and len(model.carriers(ref.point)) == 1:
-            return ref.point
-        if model.share_motion(ref.point, model.carriers(ref.point)):
-            return ref.point
-    except KinematikaError:
-        pass
-    return str(ref)
+    return ref.point if model.share_motion(ref.point, model.carriers(ref.point)) else str(ref)
 
 
 def vector_label(kind: str, model: Any, ref: PointRef, relative_to: Optional[str]) -> str:

@@ -89,8 +89,7 @@ class Ctx:
     # names -----------------------------------------------------------------------------------
     def shared(self, point: str) -> bool:
         """Whether every body carrying `point` moves alike there (a bare name is enough)."""
-        carriers = self.model.carriers(point)
-        return len(carriers) <= 1 or self.model.share_motion(point, carriers)
+        return self.model.share_motion(point, self.model.carriers(point))
 
     def point_label(self, point: str, body: str) -> str:
         """`B` when B is one point of every body carrying it, else `B∈body`."""
