@@ -173,3 +173,35 @@ def test_cli_reports_one_line_and_json_with_exit_2(tmp_path, kind, tree_change):
     assert as_json.returncode == 2
     payload = json.loads(as_json.stdout)["error"]
     assert payload["kind"] == kind and payload["message"] and "where" in payload
+
+
+@pytest.mark.parametrize("symbolic", [False, True], ids=["numeric", "symbolic"])
+@pytest.mark.parametrize("text", ["10**10**10", "2**2**2**2**2**2", "(10**300)**1000 / 10**299"])
+def test_huge_powers_are_refused_quickly(text, symbolic):
+    # 10**10**10 has ten billion digits: evaluating it exactly would never end
+    tree = four_bar()
+    tree["points"]["A"] = [0, text]
+    with pytest.raises(KinematikaError) as info:
+        solve(tree, symbolic=symbolic)
+    assert info.value.kind == "schema" and info.value.where == "points.A[1]"
+    assert "too large" in info.value.message or "too many digits" in info.value.message
+
+
+@pytest.mark.parametrize("value", [float("inf"), float("nan"), 10 ** 400, "1e400", "1" + "0" * 400])
+def test_numbers_must_be_finite(value):
+    tree = four_bar()
+    tree["points"]["A"] = [0, value]
+    err = error_of(tree)
+    assert (err.kind, err.where) == ("schema", "points.A[1]")
+
+
+@pytest.mark.parametrize("text,problem", [("sqrt(-1)", "not real"), ("(-8)**(1/3)", "not real"),
+                                          ("tan(pi/2)", "not finite"), ("exp(1000)", "too large")])
+def test_symbolic_constants_must_be_real_and_finite(text, problem):
+    # √−1 = i; (−8)^(1/3) is the principal root 1 + i√3; tan is infinite at π/2; e¹⁰⁰⁰ > 1e308
+    tree = four_bar()
+    tree["points"]["A"] = [0, text]
+    with pytest.raises(KinematikaError) as info:
+        solve(tree, symbolic=True)
+    assert (info.value.kind, info.value.where) == ("schema", "points.A[1]")
+    assert problem in info.value.message

@@ -55,6 +55,9 @@ def _real_sqrt(x: float) -> float:
     return math.sqrt(x)
 
 
+MAX_BITS = 2048   # integers in an exact number (about 600 digits, beyond the range of floats)
+
+
 class Symbolic:
     """Exact sympy expressions; decimals in the model become exact rationals."""
 
@@ -82,8 +85,21 @@ class Symbolic:
         return table[name]
 
     def check(self, value: Any, source: str) -> Any:
-        if getattr(value, "has", None) and value.has(self.sp.zoo, self.sp.nan, self.sp.oo, -self.sp.oo):
+        """A value must be finite; a number must also be real, in the range of floats and
+        written with integers of at most `MAX_BITS` bits, so that evaluation stays bounded."""
+        sp = self.sp
+        if not isinstance(value, sp.Basic):
+            return value
+        if value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
             raise ExpressionError(f"in {source!r}: the value is not finite")
+        if not value.is_number:
+            return value
+        if any(max(abs(r.p), r.q).bit_length() > MAX_BITS for r in value.atoms(sp.Rational)):
+            raise ExpressionError(f"in {source!r}: the value has too many digits to compute exactly")
+        if value.is_real is False:
+            raise ExpressionError(f"in {source!r}: the value is not real")
+        if not math.isfinite(abs(complex(value))):
+            raise ExpressionError(f"in {source!r}: the value is too large")
         return value
 
     def symbol(self, name: str, positive: bool = True) -> Any:

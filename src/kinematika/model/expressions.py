@@ -9,12 +9,14 @@ from __future__ import annotations
 
 import ast
 import keyword
+import math
 import re
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
 MAX_LENGTH = 2000
 MAX_DEPTH = 60
+MAX_EXPONENT = 1000   # |y| in x**y when y is a number: exact powers stay quick to compute
 
 FUNCTIONS = {
     "sqrt": 1, "cbrt": 1, "sin": 1, "cos": 1, "tan": 1, "asin": 1, "acos": 1, "atan": 1,
@@ -64,6 +66,9 @@ def parse(text: str | int | float) -> Expr:
     if isinstance(text, bool):
         raise ExpressionError(f"expected a number or an expression, got {text!r}")
     if isinstance(text, (int, float)):
+        if not _finite(text):
+            got = repr(text) if isinstance(text, float) else f"an integer of {len(str(abs(text)))} digits"
+            raise ExpressionError(f"expected a finite number in the range of floats, got {got}")
         return Expr(repr(text), ast.Constant(text))
     if not isinstance(text, str):
         raise ExpressionError(f"expected a number or an expression, got {text!r}")
@@ -87,6 +92,8 @@ def _check(node: ast.AST, source: str, depth: int) -> None:
     if isinstance(node, ast.Constant):
         if isinstance(node.value, bool) or not isinstance(node.value, (int, float)):
             raise ExpressionError(f"in {source!r}: only numbers may be written as constants")
+        if not _finite(node.value):
+            raise ExpressionError(f"in {source!r}: a number is too large")
         return
     if isinstance(node, ast.Name):
         return
@@ -108,6 +115,14 @@ def _check(node: ast.AST, source: str, depth: int) -> None:
             _check(arg, source, depth + 1)
         return
     raise ExpressionError(f"in {source!r}: {ast.unparse(node)!r} is not allowed in an expression")
+
+
+def _finite(value: int | float) -> bool:
+    """Whether a number written in the model is finite and within the range of floats."""
+    try:
+        return math.isfinite(value)
+    except OverflowError:     # an int too large for a float
+        return False
 
 
 def _collect_names(node: ast.AST, out: set[str]) -> None:
@@ -148,9 +163,10 @@ def _eval(node: ast.AST, env: Mapping[str, Any], backend: Any, source: str) -> A
     assert isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
     args = [_eval(a, env, backend, source) for a in node.args]
     try:
-        return backend.function(node.func.id)(*args)
+        result = backend.function(node.func.id)(*args)
     except (ValueError, ZeroDivisionError, OverflowError) as err:
         raise ExpressionError(f"in {source!r}: {node.func.id} cannot be evaluated ({err})") from None
+    return backend.check(result, source)
 
 
 _OPS: dict[str, Callable[[Any, Any], Any]] = {
@@ -160,6 +176,9 @@ _OPS: dict[str, Callable[[Any, Any], Any]] = {
 
 
 def _binary(op: str, left: Any, right: Any, backend: Any, source: str) -> Any:
+    if op == "**" and not getattr(right, "free_symbols", None) and abs(float(right)) > MAX_EXPONENT:
+        raise ExpressionError(f"in {source!r}: the exponent {float(right):g} is too large "
+                              f"(at most {MAX_EXPONENT} in absolute value)")
     try:
         result = _OPS[op](left, right)
     except ZeroDivisionError:
