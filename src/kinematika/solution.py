@@ -107,6 +107,10 @@ class Solution:
     def accel_scale(self) -> float:
         return self.scales()[1]
 
+    def shown_accel_scale(self) -> float:
+        """The scale below which views show an acceleration as zero: at least ω·v."""
+        return max(self.accel_scale(), self.rate_scale() * self.speed_scale())
+
     def norm(self, vec: tuple) -> Any:
         return self.inst.backend.sqrt(dot(vec, vec))
 

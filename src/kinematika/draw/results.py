@@ -53,10 +53,8 @@ def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
 
 def _negligible(sol: Any, kind: str, value: tuple) -> bool:
     """Zero at the model's scale: the contract's 1e-9 of the largest speed (or acceleration,
-    or speed²/length, whichever is larger)."""
-    speed, accel = sol.scales()
-    scale = speed if kind == "velocity" else max(accel, speed ** 2 / sol.inst.scale)
-    return sol.is_zero(value, scale)
+    or ω·v, whichever is larger)."""
+    return sol.is_zero(value, sol.speed_scale() if kind == "velocity" else sol.shown_accel_scale())
 
 
 def vector_targets(sol: Any, options: DrawOptions, kind: str,

@@ -62,7 +62,7 @@ class Ctx:
     def scale_of(self, unit: str) -> float:
         """The mechanism's own size of a kind of quantity (accelerations at least ω·v)."""
         sol = self.sol
-        accel = max(sol.accel_scale(), sol.rate_scale() * sol.speed_scale())
+        accel = sol.shown_accel_scale()
         return {"speed": sol.speed_scale(), "accel": accel, "rate": sol.rate_scale(),
                 "rate2": accel / self.inst.scale, "len": self.inst.scale}.get(unit, 1.0)
 
