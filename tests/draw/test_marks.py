@@ -10,9 +10,9 @@ import numpy as np
 
 from kinematika.draw import draw
 
-from .artists import has_artist, label, line, lines_starting, marker, point_to_line
+from .artists import arrow, has_artist, label, line, lines_starting, marker, point_to_line
 from .mechanisms import (A, B, O2, O4, P, coupler_icr, cross, four_bar_motion, four_bar_tree,
-                         line_meet, xy)
+                         line_meet, slider_crank_tree, xy)
 
 
 def test_asked_icr_marker_sits_at_the_crossing_of_the_pin_normals():
@@ -54,6 +54,21 @@ def test_far_centre_is_shown_at_the_edge_with_its_coordinates():
     assert ax.get_xlim()[0] <= edge[0] <= ax.get_xlim()[1]
     assert ax.get_ylim()[0] <= edge[1] <= ax.get_ylim()[1]
     assert f"({far.real:.3g}, {far.imag:.3g})" in label(fig, "icr:coupler")
+
+
+def test_centre_at_infinity_is_a_double_arrow_at_the_edge_along_its_direction():
+    """The slider translates along x: its centre relative to ground is at infinity along ±y."""
+    tree = slider_crank_tree()
+    tree["ask"] = [{"icr": "slider"}]
+    fig = draw(tree)
+    start, tip = arrow(fig, "icr:slider:infinity")
+    d = (tip - start) / np.linalg.norm(tip - start)
+    assert abs(d[0]) < 1e-9 and abs(abs(d[1]) - 1) < 1e-9
+    ax = fig.axes[0]
+    for end in (start, tip):
+        assert ax.get_xlim()[0] <= end[0] <= ax.get_xlim()[1]
+        assert ax.get_ylim()[0] <= end[1] <= ax.get_ylim()[1]
+    assert "∞" in label(fig, "icr:slider")
 
 
 def _circle_radius(points: np.ndarray, centre) -> np.ndarray:

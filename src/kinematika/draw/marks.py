@@ -3,12 +3,14 @@ lines; curvature circles with their centres; 3D screw axes.
 
 A marked point far outside the mechanism (beyond the view) is drawn at the edge of the
 view as a triangle pointing towards it, its label giving its coordinates, so that one
-distant centre does not shrink the mechanism to a dot.
+distant centre does not shrink the mechanism to a dot; a centre at infinity (a translation)
+is a double arrow at the edge, along its direction.
 """
 from __future__ import annotations
 
 import numpy as np
 from matplotlib.lines import Line2D
+from matplotlib.patches import FancyArrowPatch
 
 from .canvas import Canvas
 from .geometry import clip_line, clip_polyline, clip_segment, edge_point, unit
@@ -24,6 +26,8 @@ COLOURS = {"icr": CENTRE, "pole": ACCELERATION, "contact": INK}
 def paint_marks(cv: Canvas) -> None:
     for mark in cv.scene.marks:
         if mark.point is None:
+            if mark.direction is not None:
+                _infinite_mark(cv, mark)
             continue
         if cv.view.contains(mark.point):
             _mark(cv, mark)
@@ -52,6 +56,19 @@ def _far_mark(cv: Canvas, mark: MarkView) -> None:
     x, y = (number(c, cv.size) for c in mark.point)
     cv.label(q, f"{mark.label} far off at ({x}, {y})", COLOURS[mark.kind], 2,
              mark.key, -d)
+
+
+def _infinite_mark(cv: Canvas, mark: MarkView) -> None:
+    """A centre at infinity: a double arrow at the edge of the view along its direction (it
+    lies at infinity both ways), labelled with the centre's name and ∞."""
+    d = unit(np.asarray(mark.direction, dtype=float))
+    inset = 0.06 * cv.size
+    q = edge_point(cv.view, cv.view.centre + 1e6 * cv.size * d, inset)
+    half = 0.06 * cv.size * d
+    cv.add(FancyArrowPatch(q - half, q + half, arrowstyle="<|-|>", mutation_scale=14, lw=1.8,
+                           color=COLOURS[mark.kind], zorder=11, gid=f"{mark.key}:infinity"))
+    cv.board.avoid(q - half, q + half)
+    cv.label(q, f"{mark.label} at ∞", COLOURS[mark.kind], 2, mark.key, np.array([-d[1], d[0]]))
 
 
 def _kennedy(cv: Canvas, line) -> None:
