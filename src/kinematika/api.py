@@ -7,7 +7,7 @@ from typing import Any, Union
 from .engine.system import InstantSolver
 from .engine.instant import instantiate
 from .model.build import build_model
-from .model.files import load_model
+from .model.files import load_model, parse_text
 from .model.model import Model
 from .questions import answer
 from .solution import Solution
@@ -16,13 +16,16 @@ ModelLike = Union[Model, str, Path, dict]
 
 
 def as_model(source: ModelLike) -> Model:
-    """A `Model` from a model, a file path or a model tree (dict)."""
+    """A `Model` from a model, a file path, a model tree (dict), a `Mechanism` or the text of
+    a YAML (or JSON) model (a string of several lines)."""
     if isinstance(source, Model):
         return source
     if isinstance(source, dict):
         return build_model(source)
     if hasattr(source, "to_model"):
         return source.to_model()
+    if isinstance(source, str) and "\n" in source:     # a model's text, not a file name
+        return build_model(parse_text(source, "yaml", "<text>"))
     return load_model(source)
 
 

@@ -1,7 +1,9 @@
 """The one error type users see: a kind from the contract, a message and a place."""
 from __future__ import annotations
 
-KINDS = ("syntax", "schema", "geometry", "mobility", "singular", "assembly")
+KINDS = ("syntax", "schema", "geometry", "mobility", "singular", "assembly",
+         "output",     # an extension: a result file that cannot be written
+         "usage")      # an extension: a command-line option the command does not accept
 
 
 class KinematikaError(Exception):

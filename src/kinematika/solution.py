@@ -42,8 +42,8 @@ class Solution:
     # the motion of bodies and points --------------------------------------------------------
     def state(self, body: str, relative_to: str | None = None) -> BodyState:
         """The motion of `body` seen from `relative_to` (default: the fixed frame)."""
-        for name in (body, relative_to):
-            if name is not None and name not in self.model.bodies:
+        for name in (body, relative_to) if relative_to is not None else (body,):
+            if not isinstance(name, str) or name not in self.model.bodies:
                 raise KinematikaError("schema", f"unknown body {name!r} (bodies: "
                                       f"{', '.join(self.model.bodies)})")
         frame = None if relative_to in (None, self.model.frame) else relative_to
@@ -123,4 +123,4 @@ class Solution:
 
 
 def _norm(values: Any) -> float:
-    return math.sqrt(sum(float(v) ** 2 for v in values))
+    return math.hypot(*(float(v) for v in values))     # no overflow of the squares

@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 import os
 import sys
+from pathlib import Path
 from typing import Any, Callable, NoReturn
 
 import typer
@@ -41,6 +42,10 @@ def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
         fail(err, as_json)
     except typer.Exit:
         raise
+    except OSError as err:            # reading is checked where models are read: this is writing
+        name = err.filename or ""
+        fail(KinematikaError("output", f"cannot write {name}: {err.strerror or err}", str(name)),
+             as_json)
     except Exception as err:  # noqa: BLE001 - never show users a traceback
         if os.environ.get("KINEMATIKA_DEBUG"):
             raise
@@ -51,6 +56,16 @@ def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
         else:
             print(f"error: {message}", file=sys.stderr)
         raise typer.Exit(1)
+
+
+def output_file(path: Path, option: str) -> Path:
+    """`path` if a file can be written there; else an `output` error naming the option."""
+    parent = path.parent
+    if not parent.is_dir():
+        raise KinematikaError("output", f"cannot write {path}: there is no folder {parent}", option)
+    if path.is_dir():
+        raise KinematikaError("output", f"cannot write {path}: it is a folder", option)
+    return path
 
 
 def respond(as_json: bool, compute: Callable[[], dict], show: Callable[[dict], None]) -> None:

@@ -6,7 +6,7 @@ from typing import Optional
 
 import typer
 
-from .app import ModelArg, app, guarded
+from .app import ModelArg, app, guarded, output_file
 
 VIEWS = ("iso", "top", "front", "side")
 
@@ -36,7 +36,7 @@ OutputOpt = typer.Option(..., "-o", "--output", help="the file to write", show_d
 SetOpt = typer.Option(None, "--set", metavar="NAME=VALUE",
                       help="give a parameter a value (repeatable); a symbolic model is otherwise "
                            "drawn at generic values of its symbols")
-WidthOpt = typer.Option(8.0, "--width", help="figure width in inches")
+WidthOpt = typer.Option(8.0, "--width", min=1.0, max=100.0, help="figure width in inches")
 
 
 @app.command()
@@ -74,7 +74,7 @@ def draw(
         options = DrawOptions(velocities=velocities, accelerations=accelerations, centres=centres,
                               curvature=curvature, labels=labels, points=_names(points), view=view,
                               width=width)
-        draw_figure(_model(model, assignments), output, options)
+        draw_figure(_model(model, assignments), output_file(output, "-o"), options)
         return output
 
     guarded(False, work)
@@ -87,9 +87,9 @@ def animate(
     output: Path = OutputOpt,
     joint: Optional[str] = typer.Option(None, "--joint", help="the driven joint to sweep"),
     by: Optional[float] = typer.Option(None, "--by", help="its advance: degrees or length"),
-    steps: Optional[int] = typer.Option(None, "--steps", help="positions computed"),
-    frames: int = typer.Option(120, "--frames", help="at most this many frames"),
-    fps: int = typer.Option(20, "--fps", help="frames per second"),
+    steps: Optional[int] = typer.Option(None, "--steps", min=1, max=100_000, help="positions computed"),
+    frames: int = typer.Option(120, "--frames", min=2, max=10_000, help="at most this many frames"),
+    fps: int = typer.Option(20, "--fps", min=1, max=120, help="frames per second"),
     velocities: Optional[bool] = typer.Option(
         None, "--velocities/--no-velocities", help="live velocity arrows (default: the asked ones)"),
     accelerations: Optional[bool] = typer.Option(
@@ -98,7 +98,7 @@ def animate(
         None, "--trace", help="points whose paths are traced (default: the asked points)"),
     skip_bad: bool = typer.Option(False, "--skip-bad", help="skip positions that cannot be assembled"),
     assignments: Optional[list[str]] = SetOpt,
-    width: float = typer.Option(6.4, "--width", help="frame width in inches"),
+    width: float = typer.Option(6.4, "--width", min=1.0, max=50.0, help="frame width in inches"),
 ) -> None:
     """The motion over the sweep (GIF, or MP4 with ffmpeg), with traced paths and live vectors."""
     from ..draw.animation import FORMATS
@@ -110,7 +110,7 @@ def animate(
         from ..draw.animation import animate as render
 
         options = DrawOptions(velocities=velocities, accelerations=accelerations, width=width)
-        return render(_model(model, assignments), output, joint=joint, by=by, steps=steps,
+        return render(_model(model, assignments), output_file(output, "-o"), joint=joint, by=by, steps=steps,
                       frames=frames, fps=fps, options=options, trace=_names(trace),
                       skip_bad=skip_bad, progress=True)
 

@@ -6,7 +6,7 @@ from typing import Optional
 
 import typer
 
-from .app import ModelArg, SymbolicOpt, app, guarded
+from .app import ModelArg, SymbolicOpt, app, guarded, output_file
 
 LangOpt = typer.Option("en", "--lang", help="language: en, es, ca or eu")
 FormatOpt = typer.Option("md", "--format", help="md, html (one self-contained page) or tex")
@@ -25,8 +25,4 @@ def explain(model: Path = ModelArg, lang: str = LangOpt, fmt: str = FormatOpt,
     if output is None:
         typer.echo(text, nl=False)
         return
-    try:
-        output.write_text(text, encoding="utf-8")
-    except OSError as err:
-        typer.echo(f"error (output): cannot write {output}: {err.strerror}", err=True)
-        raise typer.Exit(2)
+    guarded(False, lambda: output_file(output, "-o").write_text(text, encoding="utf-8"))

@@ -8,7 +8,7 @@ from typing import Optional
 
 import typer
 
-from .app import JsonOpt, ModelArg, app, guarded
+from .app import JsonOpt, ModelArg, app, guarded, output_file
 
 
 @app.command()
@@ -16,7 +16,8 @@ def sweep(model: Path = ModelArg,
           joint: Optional[str] = typer.Option(None, "--joint", help="the driven joint to sweep"),
           by: Optional[float] = typer.Option(None, "--by", help="how far: degrees (revolute) or "
                                              "length (prismatic); negative goes back"),
-          steps: Optional[int] = typer.Option(None, "--steps", help="number of equal increments"),
+          steps: Optional[int] = typer.Option(None, "--steps", min=1, max=10_000_000,
+                                              help="number of equal increments"),
           as_json: bool = JsonOpt,
           csv: Optional[Path] = typer.Option(None, "--csv", help="write one row per position to FILE"),
           skip_bad: bool = typer.Option(False, "--skip-bad", help="leave positions that cannot be "
@@ -50,20 +51,10 @@ def sweep(model: Path = ModelArg,
 
 
 def _write_csv(result, path: Path) -> None:
-    from ..errors import KinematikaError
-
-    try:
-        result.to_csv(path)
-    except OSError as err:
-        raise KinematikaError("syntax", f"cannot write {path}: {err.strerror or err}", str(path)) from None
+    result.to_csv(output_file(path, "--csv"))
 
 
 def _plot(result, path: Path) -> None:
-    from ..errors import KinematikaError
+    from ..draw.plots import plot_sweep
 
-    try:
-        from ..draw.plots import plot_sweep
-    except ImportError:
-        raise KinematikaError("schema", "--plot needs the figures module (kinematika.draw.plots), "
-                              "which this installation does not have yet", "--plot") from None
-    plot_sweep(result, path)
+    plot_sweep(result, output_file(path, "--plot"))

@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import KinematikaError
 from .drivers import driver_rows
 from .instant import Instant
 from .joints import JointGeometry, Row, joint_geometry, joint_rows
@@ -86,8 +87,13 @@ class InstantSolver:
         """The solution of A x = b with the analysed matrix (exact for a symbolic instant)."""
         inst = self.inst
         b_num = np.array([inst.num(v) for v in b], dtype=float)
-        x_num = solve_numeric(self.analysis, b_num, labels or self.labels, self.wheres,
-                              self.is_driver, check)
+        with np.errstate(all="ignore"):
+            x_num = solve_numeric(self.analysis, b_num, labels or self.labels, self.wheres,
+                                  self.is_driver, check)
+        if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
+            raise KinematikaError("schema", "the model's values are too large: its velocities or "
+                                  "accelerations overflow the range of floating-point numbers",
+                                  "drivers")
         if not inst.symbolic:
             return x_num.tolist()
         exact = solve_symbolic(self.analysis, self.a_sym, b, self.a_num)

@@ -39,9 +39,10 @@ class _Builder:
         params = self.parameters()
         points = self.points(params)
         dimension = self.dimension(points)
-        points = {name: _pad(vec, dimension) for name, vec in points.items()}
-        self.point_coords = points
         self.dim = dimension
+        for name, vec in points.items():
+            self.check_size(vec, f"points.{name}", "coordinates")
+        self.point_coords = points
         bodies = self.bodies()
         if spec.frame not in bodies:
             raise KinematikaError("schema", f"there is no fixed body {spec.frame!r}: name one body "
@@ -100,6 +101,12 @@ class _Builder:
         self._param_names = list(params)
         if not self.spec.points:
             raise KinematikaError("schema", "a model needs at least one point", "points")
+        for name in [*self.spec.points, *self.spec.bodies]:
+            kind = "points" if name in self.spec.points else "bodies"
+            if not name.strip() or "@" in name:
+                raise KinematikaError("schema", f"{name!r} cannot be a name: names are not empty "
+                                      "and have no '@' (it joins a point to its body: B@rocker)",
+                                      f"{kind}.{name}")
         return {name: self.vector(raw, f"points.{name}") for name, raw in self.spec.points.items()}
 
     def dimension(self, points: dict[str, ExprVector]) -> int:
@@ -138,10 +145,19 @@ class _Builder:
         if isinstance(raw, str):
             self.known_point(raw, where)
             return self.point_coords[raw], raw
-        return _pad(self.vector(raw, where), self.dim), None
+        return self.check_size(self.vector(raw, where), where), None
 
     def direction_vector(self, raw: list, where: str) -> ExprVector:
-        return _pad(self.vector(raw, where), self.dim)
+        return self.check_size(self.vector(raw, where), where)
+
+    def check_size(self, vec: ExprVector, where: str, what: str = "components") -> ExprVector:
+        """A vector of the model's dimension: never padded or cut, so that a slip such as a 2D
+        axis in a 3D model is an error rather than a different mechanism."""
+        if len(vec) != self.dim:
+            kind = "planar" if self.dim == 2 else "3D"
+            raise KinematikaError("schema", f"a {kind} model needs {self.dim} {what}, got "
+                                  f"{len(vec)}", where)
+        return vec
 
     def shapes(self, raw: schema.BodySpec, where: str) -> list[Shape]:
         shapes: list[Shape] = []
@@ -203,9 +219,10 @@ class _Builder:
         for key in ("at", "along", "axis"):
             present = getattr(raw, key) is not None
             wanted = {"at": needs_at, "along": needs_along,
-                      "axis": kind in {"revolute", "cylindrical", "prismatic"}}[key]
+                      "axis": self.dim == 3 and kind in {"revolute", "cylindrical", "prismatic"}}[key]
             if present and not wanted and key not in allowed:
-                raise KinematikaError("schema", f"a {kind} joint has no `{key}`", where)
+                planar = " in a planar model (rotations are about z)" if key == "axis" else ""
+                raise KinematikaError("schema", f"a {kind} joint has no `{key}`{planar}", where)
         if raw.internal is not None and kind not in {"gear", "rolling"}:
             raise KinematikaError("schema", "`internal` belongs to gear and rolling joints", where)
         at = raw.at
@@ -353,29 +370,36 @@ class _Builder:
         return Sweep(raw.joint, self.expr(raw.by, "sweep.by"), raw.steps)
 
 
-def _pad(vec: ExprVector, dim: int) -> ExprVector:
-    return vec + tuple(parse(0) for _ in range(dim - len(vec)))
-
-
 def _names(items: Iterable[str]) -> str:
     return ", ".join(items)
 
 
 # pydantic errors as one line -------------------------------------------------------------
-_BRANCH_NAMES = {"int", "float", "str", "none", "list[union[int,float,str]]", "omega", "joint",
-                 "velocity", "ParameterSpec", "BodySpec", "list[str]"}
+_BRANCH_NAMES = {"int", "float", "str", "none", "list[union[int,float,str]]", "ParameterSpec",
+                 "BodySpec", "list[str]"}
+_DRIVER_TAGS = {"omega", "joint", "velocity"}      # the tag of a driver's union, right after its index
 
 
 def _schema_error(err: ValidationError, tree: Any) -> KinematikaError:
     errors = err.errors()
     first = min(errors, key=lambda e: _rank(e))
-    loc = [part for part in first["loc"] if not _is_branch(part)]
+    loc = _clean(first["loc"])
     where = _place(loc, tree)
     message = _message(first, loc)
-    others = len({tuple(p for p in e["loc"] if not _is_branch(p)) for e in errors}) - 1
+    others = len({tuple(_clean(e["loc"])) for e in errors}) - 1
     if others > 0:
         message += f" (and {others} more problem{'s' if others > 1 else ''})"
     return KinematikaError("schema", message, where)
+
+
+def _clean(loc: tuple) -> list:
+    """The error's place in the user's tree: pydantic's union branches left out."""
+    out = []
+    for i, part in enumerate(loc):
+        tag = i == 2 and loc[0] == "drivers" and part in _DRIVER_TAGS
+        if not tag and not _is_branch(part):
+            out.append(part)
+    return out
 
 
 def _is_branch(part: Any) -> bool:
@@ -407,6 +431,8 @@ def _place(loc: list, tree: Any) -> str:
 def _message(error: dict, loc: list) -> str:
     kind = error["type"]
     last = loc[-1] if loc else ""
+    if kind == "extra_forbidden" and loc[:1] == ["drivers"] and last in _DRIVER_TAGS:
+        return f"a driver has exactly one of {', '.join(sorted(_DRIVER_TAGS))}; {last!r} is a second one"
     if kind == "extra_forbidden":
         return f"unknown key {last!r}"
     if kind == "missing":

@@ -15,7 +15,9 @@ same place a file would.
 """
 from __future__ import annotations
 
-from typing import Any, Optional, Sequence
+from typing import Any, Mapping, Optional, Sequence
+
+from ..errors import KinematikaError
 
 from .build import build_model
 from .model import Model
@@ -28,6 +30,9 @@ class Mechanism:
 
     def __init__(self, name: str = "Mechanism", parameters: Optional[dict[str, Any]] = None,
                  dimension: Optional[int] = None, frame: str = "ground") -> None:
+        if parameters is not None and not isinstance(parameters, Mapping):
+            raise KinematikaError("schema", "parameters are a mapping of names to values, got "
+                                  f"{type(parameters).__name__}", "parameters")
         self.tree: dict[str, Any] = {"name": name, "parameters": dict(parameters or {}),
                                      "points": {}, "bodies": {}, "joints": [], "drivers": []}
         if dimension is not None:

@@ -166,7 +166,14 @@ class Model:
         """``P@body``, or a bare ``P`` when every body carrying P moves alike there."""
         if isinstance(text, PointRef):
             return text
-        point, _, body = text.partition("@")
+        if not isinstance(text, str):
+            raise KinematikaError("schema", f"a point is named by a string such as 'B' or "
+                                  f"'B@rocker', got {text!r}", where)
+        point, at, body = text.partition("@")
+        if at and not body:
+            raise KinematikaError("schema", f"{text!r}: name the body after '@' (as in "
+                                  f"'{point}@{self.carriers(point)[0] if self.carriers(point) else 'body'}')",
+                                  where)
         if point not in self.points:
             raise KinematikaError("schema", f"unknown point {point!r} (points: "
                                   f"{', '.join(self.points)})", where)

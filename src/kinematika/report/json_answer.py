@@ -9,19 +9,22 @@ from .values import plain
 
 
 def solution_json(sol: Solution) -> dict[str, Any]:
-    """name, dimension, dof, symbolic, bodies, points and answers, as the contract says."""
+    """name, dimension, dof, symbolic, bodies, points and answers, as the contract says.
+    Round-off is cleaned against the scale of each kind of quantity (lengths, speeds,
+    accelerations, rates), so that a large acceleration never hides a real speed."""
     sym = sol.symbolic
-    scale = max(sol.speed_scale(), sol.accel_scale(), sol.inst.scale, sol.rate_scale())
+    length, speed, accel, rate = sol.inst.scale, sol.speed_scale(), sol.accel_scale(), sol.rate_scale()
     model = sol.model
     bodies = {}
     for name in model.bodies:
         s = sol.state(name)
-        bodies[name] = {"omega": plain(s.omega, sym, scale), "alpha": plain(s.alpha, sym, scale)}
+        bodies[name] = {"omega": plain(s.omega, sym, rate), "alpha": plain(s.alpha, sym, accel / length)}
     points = {}
     for ref in model.material_points():
-        points[str(ref)] = {"position": plain(sol.position(ref), sym, scale),
-                            "velocity": plain(sol.velocity(ref), sym, scale),
-                            "acceleration": plain(sol.acceleration(ref), sym, scale)}
-    answers = [{"ask": q.echo, "value": plain(answer(sol, q), sym, scale)} for q in model.questions]
+        points[str(ref)] = {"position": plain(sol.position(ref), sym, length),
+                            "velocity": plain(sol.velocity(ref), sym, speed),
+                            "acceleration": plain(sol.acceleration(ref), sym, accel)}
+    smallest = min((x for x in (length, speed, accel, rate, accel / length) if x > 0), default=1.0)
+    answers = [{"ask": q.echo, "value": plain(answer(sol, q), sym, smallest)} for q in model.questions]
     return {"name": model.name, "dimension": model.dimension, "dof": sol.dof, "symbolic": sym,
             "bodies": bodies, "points": points, "answers": answers}

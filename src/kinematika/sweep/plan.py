@@ -7,6 +7,7 @@ relative to the first) advances by `by` (degrees or length) in `steps` equal inc
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Optional
@@ -19,6 +20,7 @@ from ..model.model import Driver, Joint, Model
 
 DEFAULT_BY = 360.0
 DEFAULT_STEPS = 360
+MAX_STEPS = 10_000_000   # rows held in memory at once: about 1 GB for a four-bar
 
 
 @dataclass
@@ -62,8 +64,13 @@ def make_plan(inst: Instant, joint: Optional[str] = None, by: Optional[float] = 
             raise KinematikaError("schema", f"joint {j.id!r} is prismatic: give the sweep's length "
                                   "(`by` in the model's sweep section, or --by)", "sweep.by")
     steps = steps if steps is not None else (section.steps if section else DEFAULT_STEPS)
-    if steps < 1:
-        raise KinematikaError("schema", "steps must be at least 1", "sweep.steps")
+    if isinstance(steps, bool) or not isinstance(steps, numbers.Integral):
+        raise KinematikaError("schema", f"steps must be a whole number, got {steps!r}", "sweep.steps")
+    if not 1 <= steps <= MAX_STEPS:
+        raise KinematikaError("schema", f"steps must be between 1 and {MAX_STEPS}, got {steps}",
+                              "sweep.steps")
+    if isinstance(by, bool) or not isinstance(by, numbers.Real):
+        raise KinematikaError("schema", f"by must be a number, got {by!r}", "sweep.by")
     if not math.isfinite(by):
         raise KinematikaError("schema", "by must be a finite number", "sweep.by")
     return Plan(j, driver, float(by), int(steps))
