@@ -180,3 +180,33 @@ def test_the_rolling_coin_from_python():
         close(built.omega(body), read.omega(body))
         close(built.alpha(body), read.alpha(body))
     close(built.acceleration("J@coin"), read.acceleration("J@coin"))
+
+
+def test_symbolic_lean_gives_plain_formulas_without_absolute_values():
+    """A coin leaning by a symbolic angle l spins about the x axis through its contact K.
+    K is at rest, so v_C = ω × KC and a_C = ω × v_C (α = 0): with ω = (w, 0, 0) and
+    KC = (0, −R sin l, R cos l), a_C = (0, R w² sin l, −R w² cos l), and the coin's
+    contact point, its velocity and acceleration are all zero. √(1 − sin² l) must come out
+    as cos l, the drawn branch, not |cos l|."""
+    l, R, w = sp.symbols("l R w", positive=True)
+    tree = {
+        "dimension": 3, "parameters": {"l": None, "R": None, "w": None},
+        "points": {"K": [0, 0, 0], "C": [0, "-R*sin(l)", "R*cos(l)"]},
+        "bodies": {"ground": {"points": ["K"], "plane": {"through": "K", "normal": [0, 0, 1]}},
+                   "coin": {"points": ["C", "K"],
+                            "disc": {"center": "C", "radius": "R", "axis": [0, "cos(l)", "sin(l)"]}}},
+        "joints": [{"id": "roll", "type": "rolling", "bodies": ["ground", "coin"], "at": "K"}],
+        "drivers": [{"omega": "coin", "value": ["w", 0, 0]}],
+        "ask": [{"acceleration": "C"}, {"contact": "roll"}],
+    }
+    from kinematika.report.json_answer import solution_json
+
+    data = solution_json(solve(tree))
+    (_, a_c), (_, contact) = [(a["ask"], a["value"]) for a in data["answers"]]
+    expected = (0, R * w ** 2 * sp.sin(l), -R * w ** 2 * sp.cos(l))
+    names = {"l": l, "R": R, "w": w}
+    for got, want in zip(a_c, expected):
+        assert "Abs" not in got
+        assert sp.simplify(sp.sympify(got, locals=names) - want) == 0
+    for part in ("body_b", "geometric"):
+        assert contact[part] == {"velocity": ["0"] * 3, "acceleration": ["0"] * 3}

@@ -141,6 +141,18 @@ def _circle_line(inst: Instant, joint: Joint, c: Circle, cbody: str, ln: Line, l
     return gap, Contact(joint, point, "circle-line", jdot, jddot, normal)
 
 
+def _root(square: Any, inst: Instant) -> Any:
+    """The positive root of `square`, each |e| in it written ±e by the sign e has at this
+    instant (as the side of the plane is chosen): √(1 − sin² l) is cos l for the disc drawn,
+    not |cos l|, so that formulas simplify and stay right on the drawn branch."""
+    import sympy
+
+    from ..algebra.fields import canonical
+
+    return sympy.sqrt(sympy.trigsimp(canonical(square))).replace(lambda x: isinstance(x, sympy.Abs),
+                        lambda x: x.args[0] if inst.num(x.args[0]) >= 0 else -x.args[0])
+
+
 def _disc_plane(inst: Instant, joint: Joint, dc: Disc, dbody: str, pl: Plane,
                 pbody: str) -> tuple[float, Contact]:
     """J = C + R w, w = −σ m/|m|, m = n − (n·a)a: the rim point nearest the plane.
@@ -156,7 +168,7 @@ def _disc_plane(inst: Instant, joint: Joint, dc: Disc, dbody: str, pl: Plane,
     bk = inst.backend
     side = 1 if inst.num(dot(sub(dc.center, pl.through), n)) >= 0 else -1
     # |m|² = 1 − (n·a)² for unit n, a: the short form keeps symbolic roots simple
-    norm_m = bk.sqrt(1 - dot(n, a) ** 2) if inst.symbolic else bk.sqrt(dot(m, m))
+    norm_m = _root(1 - dot(n, a) ** 2, inst) if inst.symbolic else bk.sqrt(dot(m, m))
     w = tuple(bk.simplify(-side * x / norm_m) for x in m)
     reach = side * dc.radius                   # J = C − reach m/|m|
     point = add(dc.center, scale(dc.radius, w))
