@@ -157,3 +157,18 @@ def test_alpha_that_forgets_omega1_x_omega2_is_a_conflict():
     with pytest.raises(KinematikaError) as info:
         solve(_blades_driven_absolutely([0.01, 0.2, 0]))
     assert info.value.kind == "mobility"
+
+
+def test_axes_may_be_written_as_two_points():
+    """The hub axis written [B, C] (from B to C: +x) and the shaft's as [B, Y] with Y on
+    +y give the notes' v_P and a_P, as the vectors do."""
+    import yaml
+
+    tree = yaml.safe_load((EXAMPLES / "fan_composition.yaml").read_text())
+    tree["points"]["Y"] = [0, 2, 0]
+    tree["bodies"]["ground"].append("Y")
+    tree["joints"][0]["axis"] = ["B", "Y"]
+    tree["joints"][1]["axis"] = ["B", "C"]
+    sol = solve(tree)
+    close(sol.velocity("P@blades"), NOTES_V_P)
+    close(sol.acceleration("P@blades"), NOTES_A_P)

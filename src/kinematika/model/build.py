@@ -148,6 +148,12 @@ class _Builder:
         return self.check_size(self.vector(raw, where), where), None
 
     def direction_vector(self, raw: list, where: str) -> ExprVector:
+        """A direction as a vector, or as two points [P, Q] (from P to Q, at this instant)."""
+        if len(raw) == 2 and all(isinstance(v, str) and v in self.point_coords for v in raw):
+            if raw[0] == raw[1]:
+                raise KinematikaError("schema", "a direction needs two different points", where)
+            p, q = (self.point_coords[name] for name in raw)
+            return tuple(parse(f"({b.text}) - ({a.text})") for a, b in zip(p, q))
         return self.check_size(self.vector(raw, where), where)
 
     def check_size(self, vec: ExprVector, where: str, what: str = "components") -> ExprVector:
