@@ -14,6 +14,7 @@ import numpy as np
 
 from ..errors import KinematikaError
 from .drivers import driver_rows
+from .idle import idle_rows
 from .instant import Instant
 from .joints import JointGeometry, Row, joint_geometry, joint_rows
 from .levels import AccelerationLevel, KnownTerms, Level, Unknowns, VelocityLevel
@@ -44,7 +45,7 @@ class InstantSolver:
             out += joint_rows(self.geos[j.id], lv)
         for d in self.inst.model.drivers:
             out += driver_rows(self.inst, d, self.geos, lv)
-        return out
+        return out + idle_rows(self.inst, lv)
 
     def matrix(self, rows: list[Row]) -> tuple[list[list[Any]], list[Any]]:
         n = self.unknowns.n
