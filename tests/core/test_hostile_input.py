@@ -211,3 +211,32 @@ def test_out_of_range_options_are_usage_errors(tmp_path, args):
               *(output if command != "sweep" else []))
     assert out.returncode == 2 and out.stderr.startswith("error (usage):")
     assert math.isfinite(len(out.stderr)) and "Traceback" not in out.stderr
+
+
+# joints that say one thing and are another --------------------------------------------------
+def _example(name: str) -> dict:
+    return yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text())
+
+
+def test_internal_on_a_wheel_and_its_track_is_refused():
+    tree = _example("wheel_rolling")
+    roll = next(j for j in tree["joints"] if j["type"] == "rolling")
+    roll["internal"] = True
+    err = error_of(tree)
+    assert err.kind == "schema" and "`internal` tells how two circles touch" in err.message
+
+
+def test_an_external_mesh_declared_internal_is_a_geometry_error():
+    tree = _example("planetary_gears")
+    gear = next(j for j in tree["joints"] if j["type"] == "gear" and not j.get("internal"))
+    gear["internal"] = True
+    err = error_of(tree)
+    assert err.kind == "geometry"
+    assert "declared internal but its pitch circles touch externally" in err.message
+
+
+def test_a_point_listed_twice_by_one_body_is_refused():
+    tree = four_bar()
+    tree["bodies"]["crank"].append("A")
+    err = error_of(tree)
+    assert (err.kind, err.where, err.message) == ("schema", "bodies.crank", "point 'A' is listed twice")

@@ -56,11 +56,15 @@ def find_contact(inst: Instant, joint: Joint) -> Contact:
         if dist > tol:
             raise KinematikaError("geometry", f"the contact is not at {joint.at!r}: it is "
                                   f"{dist:.6g} away", joint.where)
-    if joint.type == "gear" and joint.internal is not None:
+    if joint.internal is not None:
+        if contact.kind not in ("external", "internal"):
+            raise KinematikaError("schema", f"`internal` tells how two circles touch; this is a "
+                                  f"{contact.kind} contact", joint.where)
         if joint.internal != (contact.kind == "internal"):
             said = "internal" if joint.internal else "external"
-            raise KinematikaError("geometry", f"the gear is declared {said} but its pitch circles "
-                                  f"touch {'externally' if said == 'internal' else 'internally'}",
+            circles = "pitch circles" if joint.type == "gear" else "circles"
+            raise KinematikaError("geometry", f"the {joint.type} pair is declared {said} but its "
+                                  f"{circles} touch {'externally' if said == 'internal' else 'internally'}",
                                   joint.where)
     return contact
 

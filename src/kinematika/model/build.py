@@ -128,6 +128,9 @@ class _Builder:
                 raw = schema.BodySpec(points=raw)
             for p in raw.points:
                 self.known_point(p, where)
+            twice = sorted({p for p in raw.points if raw.points.count(p) > 1})
+            if twice:
+                raise KinematikaError("schema", f"point {twice[0]!r} is listed twice", where)
             out[name] = Body(name, list(raw.points), self.shapes(raw, where))
         listed = {p for b in out.values() for p in b.points}
         for name in self.point_coords:
