@@ -71,3 +71,32 @@ def test_fan_driven_by_a_fixed_vector_cannot_be_swept_but_by_its_joint_rate_can(
     psi = np.radians(result.coordinate)
     expect = np.column_stack([0.6 * np.cos(psi), np.full(4, 0.3), -0.6 * np.sin(psi)])
     assert result.points["P@blades"]["position"] == pytest.approx(expect, abs=1e-10)
+
+
+def test_rssr_sweep_keeps_the_coupler_rigid_and_its_spin_idle():
+    """The RSSR of tests/spatial/test_idle_spin.py, its crank turned back 60°. With the crank
+    at θ (A = (−sin θ, cos θ, 0)) and the rocker at φ about x through D = (2, 0, 1)
+    (B = (2, cos φ, 1 + sin φ)), the coupler's length gives
+    (2 + sin θ)² + (cos φ − cos θ)² + (1 + sin φ)² = 5, solved here for φ by bisection on
+    the drawn branch (φ from 0 upwards as θ decreases)."""
+    from tests.spatial.test_idle_spin import RSSR
+
+    result = run_sweep(RSSR, by=-60, steps=6)
+    theta = np.radians(result.coordinate)
+
+    def phi_of(t: float) -> float:
+        f = lambda p: (2 + math.sin(t)) ** 2 + (math.cos(p) - math.cos(t)) ** 2 + (1 + math.sin(p)) ** 2 - 5
+        lo, hi = -0.1, math.pi / 2
+        for _ in range(100):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if f(lo) * f(mid) > 0 else (lo, mid)
+        return 0.5 * (lo + hi)
+
+    phi = np.array([phi_of(t) for t in theta])
+    b = np.column_stack([np.full_like(phi, 2.0), np.cos(phi), 1 + np.sin(phi)])
+    assert result.points["B@rocker"]["position"] == pytest.approx(b, abs=1e-9)
+    assert result.points["B@coupler"]["position"] == pytest.approx(b, abs=1e-9)
+    a = np.column_stack([-np.sin(theta), np.cos(theta), 0 * theta])
+    ab = b - a
+    omega = result.bodies["coupler"]["omega"]
+    assert np.einsum("ij,ij->i", omega, ab) == pytest.approx(np.zeros(7), abs=1e-9)   # no spin

@@ -11,7 +11,9 @@ engine's velocity matrix is their Jacobian in the pose coordinates of `poses`:
 - rolling and gear: the contact is kept (normal) and the arcs rolled are equal, no slip
   (tangential), as one vector whose components are the engine's x and y rows;
 - drivers: each driver's coordinate keeps its drawn value, except the swept one, which
-  advances by the increment.
+  advances by the increment;
+- the idle spin of a link between two spherical joints has no position form (ω·AB = 0 is
+  not integrable): its residual is 0, so that each Newton step carries no such spin.
 """
 from __future__ import annotations
 
@@ -21,6 +23,7 @@ from typing import Callable
 import numpy as np
 
 from ..engine.instant import Circle, Instant, Line
+from ..engine.idle import idle_links
 from ..engine.joints import JointGeometry
 from ..errors import KinematikaError
 from ..model.model import Driver, Joint
@@ -38,6 +41,8 @@ def residual_functions(inst: Instant, geos: dict[str, JointGeometry], plan: Plan
         out.append((j.where, _joint(inst, j, geos[j.id], ref)))
     for d in inst.model.drivers:
         out.append((d.where, _driver(inst, d, geos, plan)))
+    for body, _, _ in idle_links(inst):
+        out.append((f"bodies.{body}", lambda q, dq: [0.0]))
     return out
 
 
