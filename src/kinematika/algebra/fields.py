@@ -7,6 +7,8 @@ generators are the model's symbols and stand-ins for every irrational atom (``sq
 """
 from __future__ import annotations
 
+import functools
+
 from typing import Any, Iterable
 
 
@@ -69,8 +71,15 @@ def canonical(e: Any) -> Any:
     import sympy
 
     e = sympy.sympify(e)
-    if e.is_Atom:
-        return e
+    return e if e.is_Atom else _canonical(e)
+
+
+@functools.lru_cache(maxsize=4096)
+def _canonical(e: Any) -> Any:
+    """`canonical` of a compound expression, remembered: the same velocity is often asked of
+    several material points, and the same value both in the answers and in the tables."""
+    import sympy
+
     field = RationalField([e])
     value = field.back(field.reduce_trig(field.to(e)))
     return sympy.factor(value) if value.free_symbols else sympy.radsimp(value)
