@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import math
 
 import pytest
 import yaml
@@ -75,3 +76,47 @@ def test_builder_answers_by_name():
     sol = built_in_python().solve()
     assert sol.velocity("A") == pytest.approx((-10.0, 0.0))
     assert sol.velocity("A@coupler") == pytest.approx((-10.0, 0.0))
+
+
+def _crank_at(angle_text: str, symbolic: bool = False) -> dict:
+    """A crank of length 2 drawn at `angle_text`, turning at 1 rad/s: v_A = ω k × OA."""
+    tree = {"parameters": {"r": 2},
+            "points": {"O": [0, 0], "A": [f"r*cos({angle_text})", f"r*sin({angle_text})"]},
+            "bodies": {"ground": ["O"], "crank": ["O", "A"]},
+            "joints": [{"type": "revolute", "bodies": ["ground", "crank"], "at": "O"}],
+            "drivers": [{"omega": "crank", "value": 1}]}
+    return tree
+
+
+@pytest.mark.parametrize("text", ["deg(60)", "rad(60)", "radians(60)", "pi/3", "degrees(pi/3)*pi/180"])
+def test_angle_conversions_read_degrees_as_sympy_and_python_do(text):
+    # 60° from O at length 2: A = (1, √3), v_A = k × OA = (−√3, 1)
+    sol = solve(_crank_at(text))
+    assert [float(c) for c in sol.position("A")] == pytest.approx([1, math.sqrt(3)])
+    assert [float(c) for c in sol.velocity("A")] == pytest.approx([-math.sqrt(3), 1])
+
+
+def test_forced_symbols_are_probed_at_their_given_values():
+    """A wheel of radius ρ = 0.5 touching a line only at that radius: with --symbolic the
+    geometry is checked where it holds, not at a generic value of ρ."""
+    tree = {"parameters": {"rho": 0.5, "v": 1},
+            "points": {"J": [0, 0], "C": [0, 0.5]},
+            "bodies": {"ground": {"points": ["J"], "line": {"through": "J", "direction": [1, 0]}},
+                       "wheel": {"points": ["C", "J"], "circle": {"center": "C", "radius": "rho"}}},
+            "joints": [{"type": "rolling", "bodies": ["ground", "wheel"]}],
+            "drivers": [{"velocity": "C", "along": [1, 0], "value": "v"}]}
+    sol = solve(tree, symbolic=True)
+    # rolling: ω = −v/h with h = 1/2 the centre's height as drawn (the contact is found from
+    # the centre and the line; ρ is only checked against it, at its given value)
+    assert str(sol.omega("wheel")) == "-2*v"
+
+
+def test_without_questions_every_body_and_point_is_answered():
+    tree = _crank_at("pi/3")
+    from kinematika.api import answers
+
+    asked = [(q.kind, str(q.target)) for q, _ in answers(solve(tree))]
+    assert asked == [("omega", "ground"), ("alpha", "ground"), ("omega", "crank"), ("alpha", "crank"),
+                     ("velocity", "O@ground"), ("acceleration", "O@ground"),
+                     ("velocity", "O@crank"), ("acceleration", "O@crank"),
+                     ("velocity", "A@crank"), ("acceleration", "A@crank")]

@@ -27,7 +27,8 @@ class Numeric:
             "sqrt": _real_sqrt, "cbrt": lambda x: math.copysign(abs(x) ** (1 / 3), x),
             "sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": math.asin,
             "acos": math.acos, "atan": math.atan, "atan2": math.atan2, "exp": math.exp,
-            "log": math.log, "abs": abs, "deg": math.radians, "rad": math.degrees,
+            "log": math.log, "abs": abs, "deg": math.radians, "rad": math.radians,
+            "radians": math.radians, "degrees": math.degrees,
             "sinh": math.sinh, "cosh": math.cosh, "tanh": math.tanh,
         }
         return table[name]
@@ -58,6 +59,13 @@ def _real_sqrt(x: float) -> float:
 MAX_BITS = 2048   # integers in an exact number (about 600 digits, beyond the range of floats)
 
 
+def _radians(x: Any) -> Any:
+    """x degrees in radians, exactly."""
+    import sympy
+
+    return x * sympy.pi / 180
+
+
 class Symbolic:
     """Exact sympy expressions; decimals in the model become exact rationals."""
 
@@ -79,8 +87,8 @@ class Symbolic:
         table: dict[str, Callable[..., Any]] = {
             "sqrt": sp.sqrt, "cbrt": sp.cbrt, "sin": sp.sin, "cos": sp.cos, "tan": sp.tan,
             "asin": sp.asin, "acos": sp.acos, "atan": sp.atan, "atan2": sp.atan2, "exp": sp.exp,
-            "log": sp.log, "abs": sp.Abs, "deg": lambda x: x * sp.pi / 180,
-            "rad": lambda x: x * 180 / sp.pi, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh,
+            "log": sp.log, "abs": sp.Abs, "deg": _radians, "rad": _radians, "radians": _radians,
+            "degrees": lambda x: x * 180 / sp.pi, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh,
         }
         return table[name]
 

@@ -114,6 +114,7 @@ def instantiate(model: m.Model, symbolic: bool | None = None) -> Instant:
 
 def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict, dict]:
     env: dict[str, Any] = {}
+    at_given: dict[Any, float] = {}
     pending = dict(model.parameters)
     for name, p in list(pending.items()):
         # forced symbols: the parameters given values; those defined from others stay formulas
@@ -121,6 +122,8 @@ def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict
         if p.value is None or (force_symbols and backend.symbolic and given):
             env[name] = backend.symbol(name, p.positive)
             del pending[name]
+            if p.value is not None:
+                at_given[env[name]] = _given_value(p, backend)
     while pending:
         ready = [p for p in pending.values() if p.value.names() <= set(env) | {"pi"}]
         if not ready:
@@ -134,7 +137,20 @@ def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict
                 raise KinematikaError("schema", str(err), f"parameters.{p.name}") from None
             del pending[p.name]
     probe = probe_values([v for v in env.values() if getattr(v, "is_Symbol", False)])
+    probe.update({s: v for s, v in at_given.items() if v is not None})
     return env, probe
+
+
+def _given_value(p: m.Parameter, backend: Any) -> float | None:
+    """The value a forced symbol was given, to probe the model where its geometry holds;
+    None (a generic probe) for 0 or a sign its symbol cannot take."""
+    try:
+        value = float(evaluate(p.value, {}, backend))
+    except (ExpressionError, TypeError, ValueError):
+        return None
+    if not math.isfinite(value) or value == 0 or (p.positive and value < 0):
+        return None
+    return value
 
 
 def _real_probe(points: dict[str, tuple], probe: dict, tries: int = 40) -> dict:

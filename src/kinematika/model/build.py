@@ -318,15 +318,13 @@ class _Builder:
         return [self.question(i, q) for i, q in enumerate(self.spec.ask)]
 
     def default_questions(self) -> list[Question]:
+        """The contract's default: every body (ω, α) and every material point (v, a), the
+        fixed frame and its points included, in the file's order."""
         out: list[Question] = []
         for body in self.body_map:
-            if body == self.spec.frame:
-                continue
             for kind in ("omega", "alpha"):
                 out.append(Question(kind, len(out), body, {kind: body}))
         for ref in self.model_.material_points():
-            if ref.body == self.spec.frame:
-                continue
             for kind in ("velocity", "acceleration"):
                 out.append(Question(kind, len(out), ref, {kind: str(ref)}))
         return out

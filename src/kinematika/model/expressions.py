@@ -20,7 +20,8 @@ MAX_EXPONENT = 1000   # |y| in x**y when y is a number: exact powers stay quick 
 
 FUNCTIONS = {
     "sqrt": 1, "cbrt": 1, "sin": 1, "cos": 1, "tan": 1, "asin": 1, "acos": 1, "atan": 1,
-    "atan2": 2, "exp": 1, "log": 1, "abs": 1, "deg": 1, "rad": 1, "sinh": 1, "cosh": 1, "tanh": 1,
+    "atan2": 2, "exp": 1, "log": 1, "abs": 1, "sinh": 1, "cosh": 1, "tanh": 1,
+    "deg": 1, "rad": 1, "radians": 1, "degrees": 1,      # deg, rad, radians: degrees to radians
 }
 CONSTANTS = ("pi",)
 

@@ -24,7 +24,10 @@ def solution_json(sol: Solution) -> dict[str, Any]:
         points[str(ref)] = {"position": plain(sol.position(ref), sym, length),
                             "velocity": plain(sol.velocity(ref), sym, speed),
                             "acceleration": plain(sol.acceleration(ref), sym, accel)}
-    smallest = min((x for x in (length, speed, accel, rate, accel / length) if x > 0), default=1.0)
-    answers = [{"ask": q.echo, "value": plain(answer(sol, q), sym, smallest)} for q in model.questions]
+    kinds = {"length": length, "velocity": speed, "acceleration": accel, "omega": rate,
+             "alpha": accel / length}
+    smallest = min((x for x in kinds.values() if x > 0), default=1.0)    # answers of mixed kinds
+    answers = [{"ask": q.echo, "value": plain(answer(sol, q), sym, kinds.get(q.kind) or smallest)}
+               for q in model.questions]
     return {"name": model.name, "dimension": model.dimension, "dof": sol.dof, "symbolic": sym,
             "bodies": bodies, "points": points, "answers": answers}

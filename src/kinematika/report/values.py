@@ -37,10 +37,45 @@ def formula(x: Any) -> str:
 
 
 def tidy(x: Any) -> Any:
-    """A readable exact form: the canonical rational form, factored."""
+    """A readable exact form: the canonical rational form, factored, then written as a
+    textbook would: √(b² − a² sin² θ) rather than √((b − a sin θ)(b + a sin θ)) when that
+    is no longer, and v₀(L − s) rather than −v₀(−L + s)."""
     import sympy
 
     from ..algebra.fields import canonical
 
     x = sympy.sympify(x)
-    return x if x.is_Atom else canonical(x)
+    if x.is_Atom:
+        return x
+    return _absorb_sign(canonical(x).replace(_factored_root, _expanded_root))
+
+
+def _factored_root(x: Any) -> bool:
+    return (x.is_Pow and x.exp.is_Rational and not x.exp.is_Integer and x.base.is_Mul
+            and any(f.is_Add for f in x.base.args))
+
+
+def _expanded_root(x: Any) -> Any:
+    import sympy
+
+    flat = sympy.expand(x.base)
+    return sympy.Pow(flat, x.exp) if sympy.count_ops(flat) <= sympy.count_ops(x.base) else x
+
+
+def _absorb_sign(x: Any) -> Any:
+    """A negative numeric factor taken into a sum (or a sum's reciprocal) that reads better
+    negated: −v₀(−L + s)/2 becomes v₀(L − s)/2."""
+    import sympy
+
+    factors = list(sympy.Mul.make_args(x))
+    coeff = next((f for f in factors if f.is_Number), None)
+    if coeff is None or coeff >= 0:
+        return x
+    for i, f in enumerate(factors):
+        base, power = f.as_base_exp()
+        if base.is_Add and power in (1, -1) and base.could_extract_minus_sign():
+            flipped = ([] if coeff == -1 else [-coeff]) + [g for g in factors if g is not coeff
+                                                            and g is not f]
+            flipped += [sympy.Pow(-base, power)]
+            return sympy.Mul(*flipped, evaluate=len(flipped) > 2 or power == -1)
+    return x
