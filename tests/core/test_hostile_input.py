@@ -240,3 +240,17 @@ def test_a_point_listed_twice_by_one_body_is_refused():
     tree["bodies"]["crank"].append("A")
     err = error_of(tree)
     assert (err.kind, err.where, err.message) == ("schema", "bodies.crank", "point 'A' is listed twice")
+
+
+def test_a_file_that_is_not_a_mapping_names_itself(tmp_path):
+    path = tmp_path / "list.yaml"
+    path.write_text("- 1\n- 2\n")
+    err = error_of(path)
+    assert (err.kind, err.where) == ("schema", str(path))
+    assert err.message.endswith("this file holds a list")
+
+
+def test_too_many_questions_are_refused():
+    err = error_of(four_bar(ask=[{"velocity": "B@rocker"}] * 10_001))
+    assert (err.kind, err.where) == ("schema", "ask")
+    assert err.message == "10001 questions: at most 10000 in one model"

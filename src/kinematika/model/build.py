@@ -30,6 +30,9 @@ def build_model(tree: Any) -> Model:
     return _Builder(spec).model()
 
 
+MAX_QUESTIONS = 10_000      # a model is read by people; more is a mistake or an attack
+
+
 class _Builder:
     def __init__(self, spec: schema.ModelSpec) -> None:
         self.spec = spec
@@ -315,6 +318,9 @@ class _Builder:
     def questions(self) -> list[Question]:
         if self.spec.ask is None:
             return self.default_questions()
+        if len(self.spec.ask) > MAX_QUESTIONS:
+            raise KinematikaError("schema", f"{len(self.spec.ask)} questions: at most "
+                                  f"{MAX_QUESTIONS} in one model", "ask")
         return [self.question(i, q) for i, q in enumerate(self.spec.ask)]
 
     def default_questions(self) -> list[Question]:

@@ -42,7 +42,15 @@ def read_tree(path: str | Path) -> Any:
         raise KinematikaError("syntax", f"cannot read {path}: {err}", where) from None
     if not text.strip() or (kind == "yaml" and _only_comments(text)):
         raise KinematikaError("syntax", "the file is empty", where)
-    return parse_text(text, kind, where)
+    tree = parse_text(text, kind, where)
+    if not isinstance(tree, dict):
+        raise KinematikaError("schema", f"a model is a mapping with keys points, bodies, joints, "
+                              f"drivers; this file holds {_kind_of(tree)}", where)
+    return tree
+
+
+def _kind_of(tree: Any) -> str:
+    return {list: "a list", str: "a text", type(None): "nothing"}.get(type(tree), "a single value")
 
 
 def _only_comments(text: str) -> bool:
