@@ -7,6 +7,7 @@ import sympy as sp
 from kinematika.report.values import formula
 
 L, s, v0, a, b, w, th, R, h = sp.symbols("L s v0 a b w theta R h", positive=True)
+c, r, ph, ps, de = sp.symbols("c r ph ps de", positive=True)
 
 
 @pytest.mark.parametrize("value,text", [
@@ -17,8 +18,21 @@ L, s, v0, a, b, w, th, R, h = sp.symbols("L s v0 a b w theta R h", positive=True
      "-a*w*cos(theta)/sqrt(-a**2*sin(theta)**2 + b**2)"),                        # radicand expanded
     (sp.sqrt(R * (2 * h - R)), "sqrt(R)*sqrt(-R + 2*h)"),
     (4 * w / 3, "4*w/3"),
+    # a four-bar's ω₃ = a ω sin(θ − ψ)/(b sin(ψ − φ)), from its expanded form
+    (a * w * (sp.sin(th) * sp.cos(ps) - sp.sin(ps) * sp.cos(th))
+     / (b * (sp.sin(ps) * sp.cos(ph) - sp.sin(ph) * sp.cos(ps))), "a*w*sin(ps - theta)/(b*sin(ph - ps))"),
+    # the quick-return rocker's α: the denominator is (c² + 2cr sin θ + r²)² with cos² = 1 − sin²
+    (c * r * w ** 2 * (c ** 2 - r ** 2) * sp.cos(th)
+     / (c ** 4 + 4 * c ** 3 * r * sp.sin(th) - 4 * c ** 2 * r ** 2 * sp.cos(th) ** 2 + 6 * c ** 2 * r ** 2
+        + 4 * c * r ** 3 * sp.sin(th) + r ** 4),
+     "c*r*w**2*(c - r)*(c + r)*cos(theta)/(c**2 + 2*c*r*sin(theta) + r**2)**2"),
+    # the tricycle's ρ: L² cos² δ + 2Ls sin δ cos δ + s² sin² δ = (L cos δ + s sin δ)²
+    (sp.sqrt(L ** 2 * sp.cos(de) ** 2 + 2 * L * s * sp.sin(de) * sp.cos(de) - s ** 2 * sp.cos(de) ** 2
+             + s ** 2), "Abs(L*cos(de) + s*sin(de))"),
 ])
 def test_formulas_read_as_in_the_notes(value, text):
     assert formula(value) == text
-    names = {str(x): x for x in (L, s, v0, a, b, w, th, R, h)}
-    assert sp.simplify(sp.sympify(text, locals=names) - value) == 0
+    names = {str(x): x for x in (L, s, v0, a, b, w, th, R, h, c, r, ph, ps, de)}
+    difference = sp.sympify(text, locals=names) - value
+    at = {x: 0.3 + 0.17 * i for i, x in enumerate(names.values())}     # simplify cannot always tell
+    assert sp.simplify(difference) == 0 or abs(complex(difference.subs(at))) < 1e-12

@@ -47,7 +47,55 @@ def tidy(x: Any) -> Any:
     x = sympy.sympify(x)
     if x.is_Atom:
         return x
-    return _absorb_sign(canonical(x).replace(_factored_root, _expanded_root))
+    x = canonical(x)
+    if x.has(sympy.sin, sympy.cos):
+        x = x.replace(_trig_sum, _shortest_trig_form)
+    return _absorb_sign(x.replace(_factored_root, _expanded_root))
+
+
+MAX_TRIG_TERMS = 24     # longer sums are left as they are: the rewriting would cost more than it saves
+
+
+def _trig_sum(x: Any) -> bool:
+    import sympy
+
+    return x.is_Add and len(x.args) <= MAX_TRIG_TERMS and x.has(sympy.sin, sympy.cos)
+
+
+def _shortest_trig_form(x: Any) -> Any:
+    """The shortest of a few textbook rewritings of a sum in sines and cosines:
+    sin a cos b − cos a sin b = sin(a − b); the square eliminated the other way
+    (cos² → 1 − sin², so that (c² + 2cr sin θ + r²)² is seen); the sum made homogeneous
+    with sin² + cos² = 1, so that L² cos² δ + 2Ls sin δ cos δ + s² sin² δ = (L cos δ + s sin δ)²."""
+    import sympy
+    from sympy.simplify.fu import TR6, TR10i
+
+    forms = [x, TR10i(x), sympy.factor(TR6(x)), _homogeneous(x)]
+    return min((f for f in forms if f is not None), key=sympy.count_ops)
+
+
+def _homogeneous(x: Any) -> Any:
+    """x with each term raised to the top degree in (sin u, cos u) by factors sin² u + cos² u,
+    factored; None when the degrees do not allow it (or there are several angles)."""
+    import sympy
+
+    angles = {f.args[0] for f in x.atoms(sympy.sin, sympy.cos)}
+    if len(angles) != 1:
+        return None
+    u = angles.pop()
+    sn, cs = sympy.sin(u), sympy.cos(u)
+    try:
+        poly = sympy.Poly(x, sn, cs)
+    except sympy.PolynomialError:
+        return None
+    degrees = [i + j for i, j in poly.monoms()]
+    top = max(degrees)
+    if any((top - d) % 2 for d in degrees):
+        return None
+    one = sn ** 2 + cs ** 2
+    lifted = sum(coeff * sn ** i * cs ** j * one ** ((top - i - j) // 2)
+                 for (i, j), coeff in poly.terms())
+    return sympy.factor(lifted)
 
 
 def _factored_root(x: Any) -> bool:
