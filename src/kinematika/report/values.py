@@ -70,7 +70,12 @@ def _shortest_trig_form(x: Any) -> Any:
     import sympy
     from sympy.simplify.fu import TR6, TR10i
 
-    forms = [x, TR10i(x), sympy.factor(TR6(x)), _homogeneous(x)]
+    forms = [x]
+    for rewrite in (TR10i, lambda e: sympy.factor(TR6(e)), _homogeneous):
+        try:
+            forms.append(rewrite(x))
+        except (sympy.PolynomialError, TypeError, ValueError):   # a form it cannot take
+            continue
     return min((f for f in forms if f is not None), key=sympy.count_ops)
 
 
@@ -119,11 +124,12 @@ def _absorb_sign(x: Any) -> Any:
     coeff = next((f for f in factors if f.is_Number), None)
     if coeff is None or coeff >= 0:
         return x
-    for i, f in enumerate(factors):
+    for f in factors:
         base, power = f.as_base_exp()
         if base.is_Add and power in (1, -1) and base.could_extract_minus_sign():
-            flipped = ([] if coeff == -1 else [-coeff]) + [g for g in factors if g is not coeff
-                                                            and g is not f]
-            flipped += [sympy.Pow(-base, power)]
-            return sympy.Mul(*flipped, evaluate=len(flipped) > 2 or power == -1)
+            rest = [g for g in factors if g is not coeff and g is not f]
+            flipped = ([] if coeff == -1 else [-coeff]) + rest + [sympy.Pow(-base, power)]
+            # sympy would spread a lone number over a sum (3*(L - s) -> 3*L - 3*s): keep it
+            spread = len(flipped) == 2 and power == 1
+            return sympy.Mul(*flipped, evaluate=not spread)
     return x
