@@ -67,3 +67,18 @@ def test_a_link_between_two_spherical_joints_still_needs_the_other_drivers():
     with pytest.raises(KinematikaError) as info:
         solve(tree)
     assert info.value.kind == "mobility" and "1 degree of freedom" in info.value.message
+
+
+def test_the_rssr_example_answers_the_hand_derivation():
+    import yaml
+
+    from .derive import EXAMPLES
+
+    tree = yaml.safe_load((EXAMPLES / "rssr_spatial_four_bar.yaml").read_text())
+    assert tree["points"] == RSSR["points"]
+    sol = solve(tree)
+    close(sol.omega("rocker"), (-2, 0, 0))
+    close(sol.alpha("rocker"), (-5, 0, 0))
+    close(sol.velocity("B"), (0, 0, -2))
+    close(sol.acceleration("B"), (0, -4, -5))
+    close(sol.omega("coupler"), (0, 1, 0))
