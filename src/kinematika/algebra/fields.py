@@ -27,6 +27,8 @@ class RationalField:
         atoms = sorted(self.atoms, key=lambda a: not isinstance(a, sympy.sin))
         self.gens = sorted(symbols, key=str) + [self.atoms[a] for a in atoms]
         self.back_map = {d: a for a, d in self.atoms.items()}
+        self._back_symbols: list | None = None
+        self._gen_of: dict | None = None
         self.domain = sympy.QQ.frac_field(*self.gens) if self.gens else sympy.QQ
         self.pythagoras = [(self.atoms[a], self.atoms[sympy.cos(a.args[0])]) for a in atoms
                            if isinstance(a, sympy.sin) and sympy.cos(a.args[0]) in self.atoms]
@@ -50,10 +52,50 @@ class RationalField:
         return self.atoms[e]
 
     def to(self, e: Any) -> Any:
-        return self.domain.from_sympy(self._lift(self.sp.sympify(e), set()))
+        """`e` as an element of the field, built directly from its tree (shared subtrees once)."""
+        e = self.sp.sympify(e)
+        if not self.gens:
+            return self.domain.from_sympy(self._lift(e, set()))
+        if self._gen_of is None:
+            field = self.domain.field
+            self._gen_of = {self.back_map.get(g, g): fg for g, fg in zip(self.gens, field.gens)}
+        try:
+            return self._element(e, {})
+        except KeyError:                  # an atom the field was not built with
+            return self.domain.from_sympy(self._lift(e, set()))
+
+    def _element(self, e: Any, seen: dict) -> Any:
+        if e in seen:
+            return seen[e]
+        field = self.domain.field
+        if e.is_Rational:
+            out = field.ground_new(self.sp.QQ(int(e.p), int(e.q)))
+        elif e.is_Float:
+            r = self.sp.Rational(str(e))
+            out = field.ground_new(self.sp.QQ(int(r.p), int(r.q)))
+        elif e.is_Add:
+            out = field.zero
+            for a in e.args:
+                out = out + self._element(a, seen)
+        elif e.is_Mul:
+            out = field.one
+            for a in e.args:
+                out = out * self._element(a, seen)
+        elif e.is_Pow and e.exp.is_Integer:
+            out = self._element(e.base, seen) ** int(e.exp)
+        else:
+            out = self._gen_of[e]
+        seen[e] = out
+        return out
 
     def back(self, x: Any) -> Any:
-        return self.domain.to_sympy(x).xreplace(self.back_map)
+        """The sympy expression of field element `x`, each stand-in written as its atom while
+        the expression is built (one pass, no substitution over the finished tree)."""
+        if not self.gens:
+            return self.domain.to_sympy(x)
+        if self._back_symbols is None:
+            self._back_symbols = [self.back_map.get(g, g) for g in self.gens]
+        return x.numer.as_expr(*self._back_symbols) / x.denom.as_expr(*self._back_symbols)
 
     def reduce_trig(self, x: Any) -> Any:
         """Numerator and denominator reduced by sin²u + cos²u = 1 (at most linear in sin u)."""
