@@ -18,6 +18,7 @@ c, r, ph, ps, de = sp.symbols("c r ph ps de", positive=True)
      "-a*w*cos(theta)/sqrt(-a**2*sin(theta)**2 + b**2)"),                        # radicand expanded
     (sp.sqrt(R * (2 * h - R)), "sqrt(R)*sqrt(-R + 2*h)"),
     (4 * w / 3, "4*w/3"),
+    (-v0 * (sp.cos(th) - 1), "v0*(1 - cos(theta))"),
     # a four-bar's ω₃ = a ω sin(θ − ψ)/(b sin(ψ − φ)), from its expanded form
     (a * w * (sp.sin(th) * sp.cos(ps) - sp.sin(ps) * sp.cos(th))
      / (b * (sp.sin(ps) * sp.cos(ph) - sp.sin(ph) * sp.cos(ps))), "a*w*sin(ps - theta)/(b*sin(ph - ps))"),

@@ -103,6 +103,12 @@ def _homogeneous(x: Any) -> Any:
     return sympy.factor(lifted)
 
 
+def _reads_better_negated(total: Any) -> bool:
+    """−L + s reads better as L − s, and cos θ − 1 as 1 − cos θ (so that −v(cos θ − 1) is
+    written v(1 − cos θ))."""
+    return total.could_extract_minus_sign() or sum(t for t in total.args if t.is_Number) < 0
+
+
 def _factored_root(x: Any) -> bool:
     return (x.is_Pow and x.exp.is_Rational and not x.exp.is_Integer and x.base.is_Mul
             and any(f.is_Add for f in x.base.args))
@@ -126,7 +132,7 @@ def _absorb_sign(x: Any) -> Any:
         return x
     for f in factors:
         base, power = f.as_base_exp()
-        if base.is_Add and power in (1, -1) and base.could_extract_minus_sign():
+        if base.is_Add and power in (1, -1) and _reads_better_negated(base):
             rest = [g for g in factors if g is not coeff and g is not f]
             flipped = ([] if coeff == -1 else [-coeff]) + rest + [sympy.Pow(-base, power)]
             # sympy would spread a lone number over a sum (3*(L - s) -> 3*L - 3*s): keep it
