@@ -107,3 +107,15 @@ def test_options_choose_the_vectors():
     assert gids(draw(tree, velocities=False, accelerations=False)) == set()
     assert gids(draw(tree, points=["A", "P"], accelerations=False)) == \
         {"velocity:A@crank", "velocity:P@coupler"}
+
+
+def test_a_model_without_questions_shows_the_velocities_of_its_moving_points_only():
+    """No `ask`: every body and point is answered (the frame's too), but the figure shows
+    only the velocities of moving points, with no labels at the fixed pivots."""
+    tree = four_bar_tree()
+    tree.pop("ask", None)
+    fig = draw(tree)
+    texts = [t.get_gid() or "" for t in fig.axes[0].texts]
+    assert not [g for g in texts if g.startswith(("label:velocity:O", "label:acceleration"))]
+    gids = {p.get_gid() for p in fig.axes[0].patches if (p.get_gid() or "").startswith("velocity")}
+    assert {"velocity:A@crank", "velocity:B@coupler"} <= gids

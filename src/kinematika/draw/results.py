@@ -84,11 +84,7 @@ def vector_targets(sol: Any, options: DrawOptions, kind: str,
 
 def default_ask(model: Any) -> bool:
     """Whether the questions are the contract's default (no `ask` section was written)."""
-    expected = {(k, b) for b in model.moving_bodies for k in ("omega", "alpha")}
-    expected |= {(k, str(r)) for r in model.material_points() if r.body != model.frame
-                 for k in ("velocity", "acceleration")}
-    given = {(q.kind, str(q.target)) for q in model.questions if not q.relative_to}
-    return bool(expected) and given == expected and len(model.questions) == len(expected)
+    return model.default_questions
 
 
 def _unique(items: list, key: Any = lambda item: (str(item[0]), item[1])) -> list:

@@ -59,6 +59,7 @@ class _Builder:
         self.model_ = model
         model.drivers = [self.driver(i, d) for i, d in enumerate(spec.drivers)]
         model.questions = self.questions()
+        model.default_questions = self.spec.ask is None
         return model
 
     # parameters and points -------------------------------------------------------------

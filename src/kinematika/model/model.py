@@ -150,6 +150,7 @@ class Model:
     drivers: list[Driver]
     questions: list[Question]
     sweep: Optional[Sweep] = None
+    default_questions: bool = False   # no `ask` was written: every body and point is asked
 
     def carriers(self, point: str) -> list[str]:
         """The bodies that list `point`, in the file's order."""
