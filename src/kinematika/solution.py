@@ -42,7 +42,8 @@ class Solution:
     # the motion of bodies and points --------------------------------------------------------
     def state(self, body: str, relative_to: str | None = None) -> BodyState:
         """The motion of `body` seen from `relative_to` (default: the fixed frame)."""
-        for name in (body, relative_to) if relative_to is not None else (body,):
+        names = [body] if relative_to is None else [body, relative_to]
+        for name in names:
             if not isinstance(name, str) or name not in self.model.bodies:
                 raise KinematikaError("schema", f"unknown body {name!r} (bodies: "
                                       f"{', '.join(self.model.bodies)})")
@@ -75,15 +76,15 @@ class Solution:
     def scales(self) -> tuple[float, float]:
         """Characteristic speed and acceleration of the whole mechanism (numerically)."""
         if self._scales is None:
-            inst, length = self.inst, self.inst.scale
+            length = self.inst.scale
             speeds, accels = [0.0], [0.0]
             for ref in self.model.material_points():
-                speeds.append(_norm(inst.numvec(self.velocity(ref))))
-                accels.append(_norm(inst.numvec(self.acceleration(ref))))
+                speeds.append(self.size(self.velocity(ref)))
+                accels.append(self.size(self.acceleration(ref)))
             for body in self.model.bodies:
                 s = self.motion.states[body]
-                speeds.append(_norm(inst.numvec(self.space.rot_components(s.omega))) * length)
-                accels.append(_norm(inst.numvec(self.space.rot_components(s.alpha))) * length)
+                speeds.append(self.size(self.space.rot_components(s.omega)) * length)
+                accels.append(self.size(self.space.rot_components(s.alpha)) * length)
             self._scales = (max(speeds), max(accels))
         return self._scales
 
@@ -93,7 +94,7 @@ class Solution:
         if self.symbolic:
             from .algebra.fields import canonical
 
-            if _norm(self.inst.numvec(parts)) > 1e-9 * max(scale, 1e-300):
+            if self.size(parts) > 1e-9 * max(scale, 1e-300):
                 return False
             return all(canonical(p) == 0 for p in parts)
         return _norm([float(p) for p in parts]) <= ZERO * scale
@@ -110,6 +111,10 @@ class Solution:
     def shown_accel_scale(self) -> float:
         """The scale below which views show an acceleration as zero: at least ω·v."""
         return max(self.accel_scale(), self.rate_scale() * self.speed_scale())
+
+    def size(self, vec: tuple) -> float:
+        """|vec| as a number (at the probe values when symbolic), for zero tests."""
+        return _norm(self.inst.numvec(vec))
 
     def norm(self, vec: tuple) -> Any:
         return self.inst.backend.sqrt(dot(vec, vec))

@@ -110,8 +110,8 @@ def animate(
         from ..draw.animation import animate as render
 
         options = DrawOptions(velocities=velocities, accelerations=accelerations, width=width)
-        return render(_model(model, assignments), output_file(output, "-o"), joint=joint, by=by, steps=steps,
-                      frames=frames, fps=fps, options=options, trace=_names(trace),
+        return render(_model(model, assignments), output_file(output, "-o"), joint=joint, by=by,
+                      steps=steps, frames=frames, fps=fps, options=options, trace=_names(trace),
                       skip_bad=skip_bad, progress=True)
 
     guarded(False, work)

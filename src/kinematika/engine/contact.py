@@ -153,7 +153,8 @@ def _root(square: Any, inst: Instant) -> Any:
 
     from ..algebra.fields import canonical
 
-    return sympy.sqrt(sympy.trigsimp(canonical(square))).replace(lambda x: isinstance(x, sympy.Abs),
+    root = sympy.sqrt(sympy.trigsimp(canonical(square)))
+    return root.replace(lambda x: isinstance(x, sympy.Abs),
                         lambda x: x.args[0] if inst.num(x.args[0]) >= 0 else -x.args[0])
 
 

@@ -172,9 +172,9 @@ class Model:
                                   f"'B@rocker', got {text!r}", where)
         point, at, body = text.partition("@")
         if at and not body:
+            example = next(iter(self.carriers(point)), "body")
             raise KinematikaError("schema", f"{text!r}: name the body after '@' (as in "
-                                  f"'{point}@{self.carriers(point)[0] if self.carriers(point) else 'body'}')",
-                                  where)
+                                  f"'{point}@{example}')", where)
         if point not in self.points:
             raise KinematikaError("schema", f"unknown point {point!r} (points: "
                                   f"{', '.join(self.points)})", where)

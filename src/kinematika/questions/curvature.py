@@ -6,7 +6,6 @@ P + (v·v)/(v × a) (k × v), with no absolute value needed.
 """
 from __future__ import annotations
 
-import math
 from typing import Any
 
 from ..algebra.vectors import add, dot, scale, sub
@@ -27,7 +26,7 @@ def path_curvature(sol: Solution, p: tuple, v: tuple, a: tuple) -> dict[str, Any
         return {"radius": None, "rest": True}
     cross = sp.cross_vv(v, a)
     vv = dot(v, v)
-    if sol.is_zero(cross, math.sqrt(float(sum(c * c for c in sol.inst.numvec(v)))) * sol.accel_scale()):
+    if sol.is_zero(cross, sol.size(v) * sol.accel_scale()):
         return {"radius": None, "center": None}    # aₙ = |v × a|/|v| is zero: straight or inflection
     bk = sol.inst.backend
     if sp.dim == 2:
