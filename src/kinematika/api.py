@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Union
+from typing import Any, Mapping, Optional, Union
 
 from .engine.system import InstantSolver
 from .engine.instant import instantiate
@@ -15,18 +15,35 @@ from .solution import Solution
 ModelLike = Union[Model, str, Path, dict]
 
 
-def as_model(source: ModelLike) -> Model:
+def as_model(source: ModelLike, fmt: Optional[str] = None) -> Model:
     """A `Model` from a model, a file path, a model tree (dict), a `Mechanism` or the text of
-    a YAML (or JSON) model (a string of several lines)."""
+    a model (a string of several lines, or any string when `fmt` names its format: 'yaml',
+    'toml' or 'json')."""
     if isinstance(source, Model):
         return source
     if isinstance(source, dict):
         return build_model(source)
     if hasattr(source, "to_model"):
         return source.to_model()
-    if isinstance(source, str) and "\n" in source:     # a model's text, not a file name
-        return build_model(parse_text(source, "yaml", "<text>"))
+    if isinstance(source, str) and (fmt is not None or "\n" in source):   # a model's text
+        return build_model(parse_text(source, fmt or "yaml", "<text>"))
     return load_model(source)
+
+
+def prepare(source: ModelLike, *, fmt: Optional[str] = None,
+            set: Optional[Mapping[str, Any]] = None, move: Optional[Mapping[str, Any]] = None,
+            assembly: Optional[int] = None) -> Model:
+    """The model a command analyses: read (`as_model`), with parameters given values (`set`,
+    as `--set NAME=VALUE`), on the chosen assembly (`--assembly N`) and advanced along driven
+    joints (`move`, as `--move J=AMOUNT`). Every view (CLI, Python, the page) comes here."""
+    from .model.overrides import with_parameters
+
+    model = with_parameters(as_model(source, fmt), {str(k): v for k, v in (set or {}).items()})
+    if assembly is not None or move:
+        from .errors import KinematikaError
+
+        raise KinematikaError("schema", "`move` and `assembly` are not available yet", "move")
+    return model
 
 
 def solve(source: ModelLike, symbolic: bool | None = None) -> Solution:

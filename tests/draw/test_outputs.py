@@ -9,7 +9,7 @@ import pytest
 from kinematika import Mechanism, solve
 from kinematika.draw import draw
 from kinematika.draw.jupyter import model_svg
-from kinematika.draw.parameters import with_parameters
+from kinematika.model.overrides import with_parameters
 from kinematika.draw.projection import projection
 from kinematika.errors import KinematikaError
 

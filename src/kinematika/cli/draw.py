@@ -27,7 +27,7 @@ def _check_output(output: Path, formats: tuple[str, ...]) -> None:
 def _model(model: Path, assignments: Optional[list[str]]):
     """The model with `--set` values applied."""
     from ..api import as_model
-    from ..draw.parameters import parse_assignments, with_parameters
+    from ..model.overrides import parse_assignments, with_parameters
 
     return with_parameters(as_model(model), parse_assignments(assignments or []))
 

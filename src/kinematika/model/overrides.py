@@ -1,16 +1,16 @@
-"""Values for a model's parameters given on the command line (`--set r=0.1`).
+"""Values for a model's parameters given from outside the file (`--set r=0.1`, the page).
 
-A symbolic model is drawn at generic probe values unless the user gives numbers: this
-replaces the named parameters' values (numbers or expressions, checked like a model
-file's) in a copy of the model, which then solves numerically.
+A constructed model is re-posed by its own parameters (`--set theta=40`), and a symbolic
+model is drawn or solved at numbers the user gives: this replaces the named parameters'
+values (numbers or expressions, checked like a model file's) in a copy of the model.
 """
 from __future__ import annotations
 
 import dataclasses
 
 from ..errors import KinematikaError
-from ..model.expressions import ExpressionError, parse
-from ..model.model import Model, Parameter
+from .expressions import ExpressionError, parse
+from .model import Model, Parameter
 
 
 def parse_assignments(items: list[str]) -> dict[str, str]:
