@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from kinematika import Mechanism, solve
-from kinematika.draw import draw
+from kinematika.draw import DrawOptions, draw, svg
 from kinematika.draw.jupyter import model_svg
 from kinematika.model.overrides import with_parameters
 from kinematika.draw.projection import projection
@@ -22,6 +22,17 @@ def test_svg_holds_the_asked_results_by_id(tmp_path):
     draw(four_bar_tree([{"velocity": "B"}, {"acceleration": "P"}, {"icr": "coupler"}]), path)
     ids = {el.get("id") for el in ET.parse(path).iter() if el.get("id")}
     assert {"velocity:B@coupler", "acceleration:P@coupler", "icr:coupler"} <= ids
+
+
+def test_svg_text_of_a_solution_with_options():
+    """What explanations embed: the SVG of a Solution, drawn with the given options."""
+    sol = solve(four_bar_tree([{"velocity": "B"}]))
+    text = svg(sol, DrawOptions(centres=True, accelerations=True))
+    root = ET.fromstring(text.encode())
+    ids = {el.get("id") for el in root.iter() if el.get("id")}
+    assert root.tag.endswith("svg")
+    assert {"velocity:B@coupler", "acceleration:B@coupler", "centre:ground-coupler"} <= ids
+    assert 'id="acceleration:B@coupler"' not in svg(sol)      # the default asks velocities only
 
 
 @pytest.mark.parametrize("suffix, magic", [(".png", b"\x89PNG"), (".pdf", b"%PDF")])

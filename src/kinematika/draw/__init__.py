@@ -12,7 +12,7 @@ from typing import Any, Optional
 
 from .options import DrawOptions
 
-__all__ = ["draw", "DrawOptions", "plot_sweep", "animate"]
+__all__ = ["draw", "svg", "DrawOptions", "plot_sweep", "animate"]
 
 
 def draw(source: Any, path: Optional[Path | str] = None, options: Optional[DrawOptions] = None,
@@ -30,6 +30,15 @@ def draw(source: Any, path: Optional[Path | str] = None, options: Optional[DrawO
     if path is not None:
         save(fig, path)
     return fig
+
+
+def svg(source: Any, options: Optional[DrawOptions] = None, symbolic: Optional[bool] = None,
+        **choices: Any) -> str:
+    """The figure of a model or `Solution` as SVG text (an `<svg>` element with its XML
+    prologue), for pages and explanations to embed. Same arguments as `draw`."""
+    from .figure import svg_text
+
+    return svg_text(draw(source, None, options, symbolic, **choices))
 
 
 def plot_sweep(result: Any, path: Optional[Path | str] = None) -> Any:

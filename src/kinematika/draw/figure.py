@@ -211,3 +211,12 @@ def save(fig: Figure, path: Path | str, dpi: int = 110) -> Path:
         raise ValueError(f"cannot write {path.name!r}: give a .png, .svg or .pdf file")
     fig.savefig(path, format=fmt, dpi=dpi, facecolor="white")
     return path
+
+
+def svg_text(fig: Figure) -> str:
+    """`fig` as SVG text."""
+    import io
+
+    out = io.StringIO()
+    fig.savefig(out, format="svg", facecolor="white")
+    return out.getvalue()

@@ -6,7 +6,6 @@ gives None, and Jupyter falls back to the text form.
 """
 from __future__ import annotations
 
-import io
 from typing import Any, Optional
 
 from ..errors import KinematikaError
@@ -17,18 +16,16 @@ WIDTH = 6.5     # inches: a notebook cell
 
 def solution_svg(sol: Any, options: Optional[DrawOptions] = None) -> str:
     """The drawing of a solved instant as SVG text."""
-    from .figure import render
-    from .scene import build_scene
+    from . import svg
 
-    options = options or DrawOptions(width=WIDTH)
-    return _svg(render(build_scene(sol.inst, sol, options), options))
+    return svg(sol, options or DrawOptions(width=WIDTH))
 
 
 def model_svg(model: Any, options: Optional[DrawOptions] = None) -> Optional[str]:
     """The drawing of a model: solved when it can be, else its geometry with the reason."""
     from ..api import solve
     from ..engine.instant import instantiate
-    from .figure import render
+    from .figure import render, svg_text
     from .scene import build_scene
 
     options = options or DrawOptions(width=WIDTH)
@@ -41,10 +38,4 @@ def model_svg(model: Any, options: Optional[DrawOptions] = None) -> Optional[str
     except KinematikaError:
         return None
     scene.notes.append(reason)
-    return _svg(render(scene, options))
-
-
-def _svg(fig: Any) -> str:
-    out = io.StringIO()
-    fig.savefig(out, format="svg", facecolor="white")
-    return out.getvalue()
+    return svg_text(render(scene, options))
