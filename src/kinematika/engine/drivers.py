@@ -54,7 +54,7 @@ def _velocity(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> li
             motion = sub(motion, tuple(2 * c for c in sp.cross(lv.w(rel), v_rel)))
     name = "a" if lv.accel else "v"
     if d.along is not None:
-        u = inst.unit(inst.vector(d.along, f"{where}.along"), f"{where}.along")
+        u = inst.direction(d.along, f"{where}.along")
         value = inst.value(given, where)
         return [Row(as_lin(dot(motion, u) - value), f"{name} of {ref} along the given direction = "
                     f"{given.text}", where, True)]

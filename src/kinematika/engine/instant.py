@@ -16,6 +16,7 @@ from ..algebra.vectors import Space, dot, sub
 from ..errors import KinematikaError
 from ..model import model as m
 from ..model.expressions import Expr, ExpressionError, evaluate
+from .positions import positions
 
 
 @dataclass
@@ -102,7 +103,7 @@ def instantiate(model: m.Model, symbolic: bool | None = None) -> Instant:
     backend = Symbolic() if use_symbols else Numeric()
     env, probe = _parameters(model, backend, force_symbols=bool(symbolic))
     inst = Instant(model, backend, Space(model.dimension), env, {}, {}, probe)
-    inst.points = {name: inst.vector(v, f"points.{name}") for name, v in model.points.items()}
+    inst.points = positions(inst)
     if probe:
         inst.probe = _real_probe(inst.points, probe)
     inst.scale = _length_scale(inst)
@@ -198,15 +199,21 @@ def _centroid(inst: Instant) -> tuple:
 
 def _shape(inst: Instant, s: m.Shape, where: str) -> Any:
     if isinstance(s, m.Circle):
-        return Circle(inst.vector(s.center, where), _radius(inst, s.radius, where), s.center_point)
+        return Circle(_at(inst, s.center, s.center_point, where), _radius(inst, s.radius, where),
+                      s.center_point)
     if isinstance(s, m.Line):
-        return Line(inst.vector(s.through, where), inst.unit(inst.vector(s.direction, where),
-                                                             f"{where}.line.direction"), s.through_point)
+        return Line(_at(inst, s.through, s.through_point, where),
+                    inst.direction(s.direction, f"{where}.line.direction"), s.through_point)
     if isinstance(s, m.Disc):
-        return Disc(inst.vector(s.center, where), _radius(inst, s.radius, where),
-                    inst.unit(inst.vector(s.axis, where), f"{where}.disc.axis"), s.center_point)
-    return Plane(inst.vector(s.through, where), inst.unit(inst.vector(s.normal, where),
-                                                          f"{where}.plane.normal"), s.through_point)
+        return Disc(_at(inst, s.center, s.center_point, where), _radius(inst, s.radius, where),
+                    inst.direction(s.axis, f"{where}.disc.axis"), s.center_point)
+    return Plane(_at(inst, s.through, s.through_point, where),
+                 inst.direction(s.normal, f"{where}.plane.normal"), s.through_point)
+
+
+def _at(inst: Instant, coords: tuple, point: Optional[str], where: str) -> tuple:
+    """A shape's location: the named point's coordinates at the instant, or its own."""
+    return inst.points[point] if point else inst.vector(coords, where)
 
 
 def _radius(inst: Instant, expr: Expr, where: str) -> Any:

@@ -53,7 +53,7 @@ def joint_geometry(inst: Instant, joint: Joint) -> JointGeometry:
         geo.along = inst.direction(joint.along, f"{joint.where}.along")
         geo.perps = sp.perpendiculars(geo.along, bk.sqrt)
     if joint.axis is not None:
-        geo.axis = inst.unit(inst.vector(joint.axis, f"{joint.where}.axis"), f"{joint.where}.axis")
+        geo.axis = inst.direction(joint.axis, f"{joint.where}.axis")
         if joint.type in ("revolute", "cylindrical"):
             geo.perps = sp.perpendiculars(geo.axis, bk.sqrt)
     if joint.type == "prismatic" and sp.dim == 3 and geo.along is None:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from typing import Optional
 
-from ..model.model import Joint
+from ..model.model import Joint, PointPair
 from .context import Ctx, alpha_sym, omega_sym, segment
 from .document import Ann, Derived, Equation, Msg, Section, Sym, Term, msg
 from .order import Step
@@ -318,7 +318,8 @@ def driver_msg(d, level: str) -> Msg:
         return msg("driver.joint" if level == "v" else "driver.joint_accel", joint=d.joint, value=text)
     sym = Sym("v" if level == "v" else "a", str(d.point))
     if d.along is not None:
-        along = "(" + ", ".join(e.text for e in d.along) + ")"
+        along = (f"{d.along.start}{d.along.end}" if isinstance(d.along, PointPair)
+                 else "(" + ", ".join(e.text for e in d.along) + ")")
         return msg("driver.along", sym=sym, value=text, along=along)
     return msg("driver.velocity", sym=sym, value=text)
 

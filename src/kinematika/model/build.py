@@ -11,6 +11,7 @@ from pydantic import ValidationError
 
 from ..errors import KinematikaError
 from . import schema
+from .constructions import Construction, ConstructionReader, construction_order
 from .expressions import Expr, ExpressionError, parse
 from .model import (Body, Circle, Direction, Disc, Driver, ExprVector, Joint, Line, Model, Parameter,
                     Plane, PointPair, PointRef, Question, Shape, Sweep)
@@ -44,7 +45,8 @@ class _Builder:
         dimension = self.dimension(points)
         self.dim = dimension
         for name, vec in points.items():
-            self.check_size(vec, f"points.{name}", "coordinates")
+            if isinstance(vec, tuple):
+                self.check_size(vec, f"points.{name}", "coordinates")
         self.point_coords = points
         bodies = self.bodies()
         if spec.frame not in bodies:
@@ -101,7 +103,7 @@ class _Builder:
                                   f"got {len(raw)}", where)
         return tuple(self.expr(v, f"{where}[{i}]") for i, v in enumerate(raw))
 
-    def points(self, params: dict[str, Parameter]) -> dict[str, ExprVector]:
+    def points(self, params: dict[str, Parameter]) -> dict[str, ExprVector | Construction]:
         self._param_names = list(params)
         if not self.spec.points:
             raise KinematikaError("schema", "a model needs at least one point", "points")
@@ -111,10 +113,21 @@ class _Builder:
                 raise KinematikaError("schema", f"{name!r} cannot be a name: names are not empty "
                                       "and have no '@' (it joins a point to its body: B@rocker)",
                                       f"{kind}.{name}")
-        return {name: self.vector(raw, f"points.{name}") for name, raw in self.spec.points.items()}
+        symbolic = any(p.value is None for p in params.values())
+        reader = ConstructionReader(self.expr, self.vector, set(self.spec.points), symbolic)
+        out: dict[str, ExprVector | Construction] = {}
+        for name, raw in self.spec.points.items():
+            where = f"points.{name}"
+            out[name] = self.vector(raw, where) if isinstance(raw, list) else reader.read(raw, where)
+        construction_order(out)             # a cycle is an error here, with its place
+        return out
 
-    def dimension(self, points: dict[str, ExprVector]) -> int:
-        sizes = {len(v) for v in points.values()}
+    def dimension(self, points: dict[str, ExprVector | Construction]) -> int:
+        sizes = {len(v) if isinstance(v, tuple) else 2 for v in points.values()}
+        constructed = next((n for n, v in points.items() if not isinstance(v, tuple)), None)
+        if constructed is not None and (3 in sizes or self.spec.dimension == 3):
+            raise KinematikaError("schema", "points by construction are planar; give a 3D "
+                                  "model's points as coordinates [x, y, z]", f"points.{constructed}")
         if self.spec.dimension is not None:
             if self.spec.dimension == 2 and 3 in sizes:
                 name = next(n for n, v in points.items() if len(v) == 3)
@@ -149,19 +162,11 @@ class _Builder:
                                   f"{', '.join(self.point_coords)})", where)
 
     def location(self, raw: Any, where: str) -> tuple[ExprVector, Optional[str]]:
+        """Coordinates, or a point's name (its coordinates are then read at the instant)."""
         if isinstance(raw, str):
             self.known_point(raw, where)
-            return self.point_coords[raw], raw
+            return (), raw
         return self.check_size(self.vector(raw, where), where), None
-
-    def direction_vector(self, raw: list, where: str) -> ExprVector:
-        """A direction as a vector, or as two points [P, Q] (from P to Q, at this instant)."""
-        if len(raw) == 2 and all(isinstance(v, str) and v in self.point_coords for v in raw):
-            if raw[0] == raw[1]:
-                raise KinematikaError("schema", "a direction needs two different points", where)
-            p, q = (self.point_coords[name] for name in raw)
-            return tuple(parse(f"({b.text}) - ({a.text})") for a, b in zip(p, q))
-        return self.check_size(self.vector(raw, where), where)
 
     def check_size(self, vec: ExprVector, where: str, what: str = "components") -> ExprVector:
         """A vector of the model's dimension: never padded or cut, so that a slip such as a 2D
@@ -179,15 +184,15 @@ class _Builder:
             shapes.append(Circle(center, self.expr(raw.circle.radius, f"{where}.circle.radius"), cp))
         if raw.line:
             through, tp = self.location(raw.line.through, f"{where}.line.through")
-            shapes.append(Line(through, self.direction_vector(raw.line.direction,
+            shapes.append(Line(through, self.direction(raw.line.direction,
                                                               f"{where}.line.direction"), tp))
         if raw.disc:
             center, cp = self.location(raw.disc.center, f"{where}.disc.center")
             shapes.append(Disc(center, self.expr(raw.disc.radius, f"{where}.disc.radius"),
-                               self.direction_vector(raw.disc.axis, f"{where}.disc.axis"), cp))
+                               self.direction(raw.disc.axis, f"{where}.disc.axis"), cp))
         if raw.plane:
             through, tp = self.location(raw.plane.through, f"{where}.plane.through")
-            shapes.append(Plane(through, self.direction_vector(raw.plane.normal,
+            shapes.append(Plane(through, self.direction(raw.plane.normal,
                                                                f"{where}.plane.normal"), tp))
         if self.dim == 2 and any(isinstance(s, (Disc, Plane)) for s in shapes):
             raise KinematikaError("schema", "disc and plane shapes belong to 3D models; use circle "
@@ -248,15 +253,16 @@ class _Builder:
                 raise KinematikaError("geometry", f"the {kind} point {at!r} is not on body "
                                       f"{missing[0]!r}: list {at!r} in its points", where)
         along = self.direction(raw.along, f"{where}.along") if raw.along is not None else None
-        axis = self.direction_vector(raw.axis, f"{where}.axis") if raw.axis is not None else None
+        axis = self.direction(raw.axis, f"{where}.axis") if raw.axis is not None else None
         return Joint(jid, kind, a, b, i, at=at, along=along, axis=axis, internal=raw.internal)
 
     def direction(self, raw: list, where: str) -> Direction:
+        """A direction as a vector, or as two points [P, Q] (from P to Q, at this instant)."""
         if len(raw) == 2 and all(isinstance(v, str) and v in self.point_coords for v in raw):
             if raw[0] == raw[1]:
                 raise KinematikaError("schema", "a direction needs two different points", where)
             return PointPair(raw[0], raw[1])
-        return self.direction_vector(raw, where)
+        return self.check_size(self.vector(raw, where), where)
 
     # drivers ----------------------------------------------------------------------------
     def driver(self, i: int, raw: Any) -> Driver:
@@ -285,7 +291,7 @@ class _Builder:
         point = self.point_ref(raw.velocity, f"{where}.velocity")
         rel = self.known_body(raw.relative_to, f"{where}.relative_to") if raw.relative_to else None
         if raw.along is not None:
-            along = self.direction_vector(raw.along, f"{where}.along")
+            along = self.direction(raw.along, f"{where}.along")
             return Driver("velocity", i, point=point, relative_to=rel, along=along,
                           value=self.scalar(raw.value, f"{where}.value"),
                           accel=self.scalar(raw.acceleration, f"{where}.acceleration"))
@@ -411,6 +417,8 @@ def _clean(loc: tuple) -> list:
     out = []
     for i, part in enumerate(loc):
         tag = i == 2 and loc[0] == "drivers" and part in _DRIVER_TAGS
+        tag = tag or (loc[0] == "points" and isinstance(part, str)
+                      and (part in ("construction", "coordinates") or part.startswith("construction:")))
         if not tag and not _is_branch(part):
             out.append(part)
     return out
@@ -423,7 +431,8 @@ def _is_branch(part: Any) -> bool:
 
 def _rank(error: dict) -> tuple:
     # prefer unknown or missing keys and literal errors over union-member type mismatches
-    order = {"extra_forbidden": 0, "missing": 1, "literal_error": 2, "driver_kind": 2}
+    order = {"extra_forbidden": 0, "missing": 1, "literal_error": 2, "driver_kind": 2,
+             "construction_kind": 2}
     return (order.get(error["type"], 5), len(error["loc"]))
 
 

@@ -7,10 +7,13 @@ both end here, through `model.build`.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Optional, Union
+from typing import TYPE_CHECKING, Optional, Union
 
 from ..errors import KinematikaError
 from .expressions import Expr
+
+if TYPE_CHECKING:
+    from .constructions import Construction
 
 ExprVector = tuple[Expr, ...]
 
@@ -39,15 +42,15 @@ Direction = Union[ExprVector, PointPair]
 
 @dataclass(frozen=True)
 class Circle:
-    center: ExprVector
+    center: ExprVector               # empty when `center_point` names the point
     radius: Expr
     center_point: Optional[str] = None
 
 
 @dataclass(frozen=True)
 class Line:
-    through: ExprVector
-    direction: ExprVector
+    through: ExprVector              # empty when `through_point` names the point
+    direction: "Direction"
     through_point: Optional[str] = None
 
 
@@ -55,14 +58,14 @@ class Line:
 class Disc:
     center: ExprVector
     radius: Expr
-    axis: ExprVector
+    axis: "Direction"
     center_point: Optional[str] = None
 
 
 @dataclass(frozen=True)
 class Plane:
     through: ExprVector
-    normal: ExprVector
+    normal: "Direction"
     through_point: Optional[str] = None
 
 
@@ -92,7 +95,7 @@ class Joint:
     index: int
     at: Optional[str] = None
     along: Optional[Direction] = None
-    axis: Optional[ExprVector] = None
+    axis: Optional[Direction] = None
     internal: Optional[bool] = None
 
     @property
@@ -110,7 +113,7 @@ class Driver:
     value: Union[Expr, ExprVector, None] = None
     accel: Union[Expr, ExprVector, None] = None
     relative_to: Optional[str] = None
-    along: Optional[ExprVector] = None
+    along: Optional[Direction] = None
 
     @property
     def where(self) -> str:
@@ -144,12 +147,13 @@ class Model:
     dimension: int
     frame: str
     parameters: dict[str, Parameter]
-    points: dict[str, ExprVector]
+    points: dict[str, Union[ExprVector, "Construction"]]   # coordinates, or a construction
     bodies: dict[str, Body]
     joints: list[Joint]
     drivers: list[Driver]
     questions: list[Question]
     sweep: Optional[Sweep] = None
+    move: dict[str, Expr] = field(default_factory=dict)    # joint id -> advance (deg or length)
     default_questions: bool = False   # no `ask` was written: every body and point is asked
 
     def carriers(self, point: str) -> list[str]:

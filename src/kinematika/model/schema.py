@@ -45,6 +45,86 @@ class PlaneSpec(Strict):
     normal: Vector
 
 
+# points by construction (planar) -------------------------------------------------------
+Location = Union[str, Vector]          # a point's name, or coordinates
+
+
+class PolarSpec(Strict):
+    """`from` + `distance` along `angle` (from the x axis, or from the direction P→Q)."""
+
+    from_: Location = Field(alias="from")
+    distance: Value
+    angle: Value
+    reference: Optional[Annotated[list[Location], Field(min_length=2, max_length=2)]] = None
+
+
+class FrameSpec(Strict):
+    """P + x·u + y·n in the frame of two points (u along P→Q, n to its left)."""
+
+    frame: Annotated[list[Location], Field(min_length=2, max_length=2)]
+    at: Annotated[list[Value], Field(min_length=2, max_length=2)]
+
+
+CircleRef = Annotated[list[Union[str, Vector, StrictInt, StrictFloat]], Field(min_length=2, max_length=2)]
+LineRef = Union[Annotated[list[Location], Field(min_length=2, max_length=2)], LineSpec]
+
+
+class CirclesSpec(Strict):
+    """An intersection of two circles `[[P, r1], [Q, r2]]`, on a `side` of P→Q or `near` a point."""
+
+    circles: Annotated[list[CircleRef], Field(min_length=2, max_length=2)]
+    side: Optional[Literal["left", "right"]] = None
+    near: Optional[Vector] = None
+
+
+class CircleLineSpec(Strict):
+    """An intersection of the circle `[P, r]` and a line, `ahead` or `behind` along it."""
+
+    circle: CircleRef
+    line: LineRef
+    side: Optional[Literal["ahead", "behind"]] = None
+    near: Optional[Vector] = None
+
+
+class LinesSpec(Strict):
+    """Where two lines meet."""
+
+    lines: Annotated[list[LineRef], Field(min_length=2, max_length=2)]
+
+
+CONSTRUCTION_KEYS = {"from": "polar", "frame": "frame", "circles": "circles", "circle": "circle-line",
+                     "lines": "lines"}
+
+
+def _construction_kind(data: Any) -> str | None:
+    if isinstance(data, dict):
+        for key, kind in CONSTRUCTION_KEYS.items():
+            if key in data:
+                return f"construction:{kind}"
+    return None
+
+
+ConstructionSpec = Annotated[
+    Union[Annotated[PolarSpec, Tag("construction:polar")], Annotated[FrameSpec, Tag("construction:frame")],
+          Annotated[CirclesSpec, Tag("construction:circles")],
+          Annotated[CircleLineSpec, Tag("construction:circle-line")],
+          Annotated[LinesSpec, Tag("construction:lines")]],
+    Discriminator(_construction_kind, custom_error_type="construction_kind",
+                  custom_error_message="a point is coordinates [x, y] or a construction with one of "
+                                       "the keys from, frame, circles, circle, lines"),
+]
+
+
+def _point_kind(data: Any) -> str:
+    return "construction" if isinstance(data, dict) else "coordinates"
+
+
+PointSpec = Annotated[
+    Union[Annotated[Vector, Tag("coordinates")], Annotated[ConstructionSpec, Tag("construction")]],
+    Discriminator(_point_kind),
+]
+
+
 class BodySpec(Strict):
     points: list[str] = Field(default_factory=list)
     circle: Optional[CircleSpec] = None
@@ -139,9 +219,10 @@ class ModelSpec(Strict):
     dimension: Optional[Literal[2, 3]] = None
     frame: str = "ground"
     parameters: dict[str, Union[Value, None, ParameterSpec]] = Field(default_factory=dict)
-    points: dict[str, Vector]
+    points: dict[str, PointSpec]
     bodies: dict[str, Union[list[str], BodySpec]]
     joints: list[JointSpec] = Field(default_factory=list)
     drivers: list[DriverSpec] = Field(default_factory=list)
     ask: Optional[list[QuestionSpec]] = None
     sweep: Optional[SweepSpec] = None
+    move: Optional[dict[str, Value]] = None

@@ -1,0 +1,227 @@
+"""Where the points are at the instant: coordinates as written, or constructed.
+
+Constructed points (`model.constructions`) are evaluated in dependency order with the
+instant's algebra, so with symbolic parameters the coordinates are exact formulas (a
+four-bar at a general crank angle). The branch of an intersection is chosen by `side`,
+which holds for every value of the symbols, or by `near` (numbers only); a numeric
+construction that cannot be drawn is a `geometry` error naming the point and by how much.
+"""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Optional
+
+from ..errors import KinematikaError
+from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
+                                   TwoCircles, TwoLines, construction_order)
+
+if TYPE_CHECKING:
+    from .instant import Instant
+
+TOLERANCE = 1e-6        # relative: circles this close to touching meet in one point
+
+
+def positions(inst: "Instant") -> dict[str, tuple]:
+    """Every point's coordinates at the instant, in the model's order."""
+    model = inst.model
+    out: dict[str, tuple] = {}
+    for name in construction_order(model.points):
+        spec = model.points[name]
+        where = f"points.{name}"
+        if isinstance(spec, tuple):
+            out[name] = inst.vector(spec, where)
+        else:
+            builder = _Builder(inst, out, where)
+            out[name] = tuple(inst.backend.simplify(c) for c in builder.build(spec))
+    return {name: out[name] for name in model.points}
+
+
+class _Builder:
+    """Evaluates one construction; `points` holds the points already placed."""
+
+    def __init__(self, inst: "Instant", points: dict[str, tuple], where: str) -> None:
+        self.inst, self.points, self.where = inst, points, where
+        self.bk = inst.backend
+
+    def build(self, c: Construction) -> tuple:
+        if isinstance(c, Polar):
+            return self.polar(c)
+        if isinstance(c, InFrame):
+            return self.frame(c)
+        if isinstance(c, TwoCircles):
+            return self.circles(c)
+        if isinstance(c, CircleLine):
+            return self.circle_line(c)
+        assert isinstance(c, TwoLines)
+        return self.lines(c)
+
+    # values --------------------------------------------------------------------------
+    def at(self, loc: Location, field: str) -> tuple:
+        if isinstance(loc, str):
+            return self.points[loc]
+        return self.inst.vector(loc, f"{self.where}.{field}")
+
+    def value(self, expr: Any, field: str) -> Any:
+        return self.inst.value(expr, f"{self.where}.{field}")
+
+    def num(self, x: Any) -> float:
+        return self.inst.num(x)
+
+    def length(self, expr: Any, field: str, what: str) -> Any:
+        r = self.value(expr, field)
+        if not self.bk.symbolic and r <= 0:
+            raise KinematikaError("schema", f"{what} must be positive, got {r:.6g}",
+                                  f"{self.where}.{field}")
+        return r
+
+    def unit_from(self, p: tuple, q: tuple, field: str) -> tuple:
+        d = (q[0] - p[0], q[1] - p[1])
+        norm2 = d[0] * d[0] + d[1] * d[1]
+        if self.num(norm2) <= 1e-24 * max(1.0, *(self.num(c) ** 2 for c in p + q)):
+            raise KinematikaError("geometry", "the two points that give the direction coincide",
+                                  f"{self.where}.{field}")
+        norm = self.bk.sqrt(norm2)
+        return (d[0] / norm, d[1] / norm)
+
+    # constructions -------------------------------------------------------------------
+    def polar(self, c: Polar) -> tuple:
+        o = self.at(c.origin, "from")
+        dist = self.value(c.distance, "distance")
+        angle = self.value(c.angle, "angle")
+        cos, sin = self.bk.function("cos")(angle), self.bk.function("sin")(angle)
+        if c.reference is None:
+            return (o[0] + dist * cos, o[1] + dist * sin)
+        u = self.unit_from(self.at(c.reference[0], "reference[0]"), self.at(c.reference[1], "reference[1]"),
+                           "reference")
+        return (o[0] + dist * (u[0] * cos - u[1] * sin), o[1] + dist * (u[0] * sin + u[1] * cos))
+
+    def frame(self, c: InFrame) -> tuple:
+        p, q = self.at(c.origin, "frame[0]"), self.at(c.toward, "frame[1]")
+        u = self.unit_from(p, q, "frame")
+        x, y = self.value(c.at[0], "at[0]"), self.value(c.at[1], "at[1]")
+        return (p[0] + x * u[0] - y * u[1], p[1] + x * u[1] + y * u[0])
+
+    def circles(self, c: TwoCircles) -> tuple:
+        p, q = self.at(c.centers[0], "circles[0][0]"), self.at(c.centers[1], "circles[1][0]")
+        r1 = self.length(c.radii[0], "circles[0][1]", "a radius")
+        r2 = self.length(c.radii[1], "circles[1][1]", "a radius")
+        dx, dy = q[0] - p[0], q[1] - p[1]
+        d2 = dx * dx + dy * dy
+        k = r1 * r1 - r2 * r2 + d2
+        disc = 4 * r1 * r1 * d2 - k * k                  # (4 d² h²): 16 × the triangle's area²
+        if not self.bk.symbolic:
+            disc = self._circles_meet(c, p, q, r1, r2, d2, disc)
+        h = self.bk.sqrt(disc) / (2 * d2)
+        base = (p[0] + k * dx / (2 * d2), p[1] + k * dy / (2 * d2))
+        left = (base[0] - h * dy, base[1] + h * dx)
+        right = (base[0] + h * dy, base[1] - h * dx)
+        names = {"left": left, "right": right}
+        label = f"{_name(c.centers[0])}→{_name(c.centers[1])}"
+        return self.choose(c.side, c.near, names, disc, f"of {label}")
+
+    def _circles_meet(self, c: TwoCircles, p: tuple, q: tuple, r1: float, r2: float, d2: float,
+                      disc: float) -> float:
+        d = d2 ** 0.5
+        if d <= 1e-12 * max(r1, r2):
+            raise KinematikaError("geometry", f"the circles about {_name(c.centers[0])} and "
+                                  f"{_name(c.centers[1])} have the same centre", self.where)
+        tol = TOLERANCE * max(d, r1, r2)
+        about = f"the circles about {_name(c.centers[0])} ({r1:.6g}) and {_name(c.centers[1])} ({r2:.6g})"
+        if d - (r1 + r2) > tol:
+            raise KinematikaError("geometry", f"{about} do not meet: centres {d:.6g} apart, "
+                                  f"{d - (r1 + r2):.6g} more than {r1:.6g} + {r2:.6g}", self.where)
+        if abs(r1 - r2) - d > tol:
+            inner, outer = (_name(c.centers[0]), _name(c.centers[1])) if r1 < r2 else \
+                (_name(c.centers[1]), _name(c.centers[0]))
+            raise KinematikaError("geometry", f"{about} do not meet: the circle about {inner} lies "
+                                  f"inside the one about {outer} (centres {d:.6g} apart, "
+                                  f"{abs(r1 - r2) - d:.6g} less than |{r1:.6g} − {r2:.6g}|)", self.where)
+        return max(disc, 0.0)
+
+    def circle_line(self, c: CircleLine) -> tuple:
+        p = self.at(c.center, "circle[0]")
+        r = self.length(c.radius, "circle[1]", "a radius")
+        q, d = self.line(c.line, "line")
+        w = (q[0] - p[0], q[1] - p[1])
+        dd = d[0] * d[0] + d[1] * d[1]
+        dw = d[0] * w[0] + d[1] * w[1]
+        disc = dw * dw - dd * (w[0] * w[0] + w[1] * w[1] - r * r)     # dd (r² − distance²)
+        if not self.bk.symbolic:
+            disc = self._line_meets(c, p, r, q, d, dd, disc)
+        root = self.bk.sqrt(disc)
+        ahead, behind = ((-dw + root) / dd, (-dw - root) / dd)
+        names = {"ahead": (q[0] + ahead * d[0], q[1] + ahead * d[1]),
+                 "behind": (q[0] + behind * d[0], q[1] + behind * d[1])}
+        return self.choose(c.side, c.near, names, disc, f"along {_line_name(c.line)}")
+
+    def _line_meets(self, c: CircleLine, p: tuple, r: float, q: tuple, d: tuple, dd: float,
+                    disc: float) -> float:
+        if dd <= 0:
+            raise KinematikaError("schema", "a line's direction cannot be the zero vector",
+                                  f"{self.where}.line")
+        dist = abs((p[0] - q[0]) * d[1] - (p[1] - q[1]) * d[0]) / dd ** 0.5
+        if dist - r > TOLERANCE * max(r, dist):
+            raise KinematikaError("geometry", f"the circle about {_name(c.center)} ({r:.6g}) misses "
+                                  f"the line {_line_name(c.line)}: the line is {dist:.6g} from "
+                                  f"{_name(c.center)}, {dist - r:.6g} more than the radius", self.where)
+        return max(disc, 0.0)
+
+    def lines(self, c: TwoLines) -> tuple:
+        (q1, d1), (q2, d2) = (self.line(line, f"lines[{i}]") for i, line in enumerate(c.lines))
+        cross = d1[0] * d2[1] - d1[1] * d2[0]
+        scale = (self.num(d1[0] ** 2 + d1[1] ** 2) * self.num(d2[0] ** 2 + d2[1] ** 2)) ** 0.5
+        if abs(self.num(cross)) <= 1e-12 * scale or (self.bk.symbolic and self.bk.simplify(cross) == 0):
+            raise KinematikaError("geometry", f"the lines {_line_name(c.lines[0])} and "
+                                  f"{_line_name(c.lines[1])} are parallel: they do not meet", self.where)
+        t = ((q2[0] - q1[0]) * d2[1] - (q2[1] - q1[1]) * d2[0]) / cross
+        return (q1[0] + t * d1[0], q1[1] + t * d1[1])
+
+    def line(self, line: LineDef, field: str) -> tuple[tuple, tuple]:
+        """A point of the line and its direction (not normalised)."""
+        q = self.at(line.through, f"{field}.through" if line.direction is not None else f"{field}[0]")
+        if line.direction is not None:
+            d = self.inst.vector(line.direction, f"{self.where}.{field}.direction")
+            if self.num(d[0]) == 0 and self.num(d[1]) == 0:
+                raise KinematikaError("schema", "a line's direction cannot be the zero vector",
+                                      f"{self.where}.{field}.direction")
+            return q, d
+        r = self.at(line.toward, f"{field}[1]")
+        d = (r[0] - q[0], r[1] - q[1])
+        if self.num(d[0] * d[0] + d[1] * d[1]) <= 1e-24 * max(1.0, *(self.num(c) ** 2 for c in q + r)):
+            raise KinematikaError("geometry", f"the line {_line_name(line)} is given by two points "
+                                  "that coincide", f"{self.where}.{field}")
+        return q, d
+
+    # branches ------------------------------------------------------------------------
+    def choose(self, side: Optional[str], near: Optional[tuple], options: dict[str, tuple],
+               disc: Any, relation: str) -> tuple:
+        """The intersection named by `side`, or nearest `near`; without either, the only one
+        (tangent) or a `geometry` error listing both."""
+        if side is not None:
+            return options[side]
+        if near is not None:
+            sketch = (float(self.value(near[0], "near[0]")), float(self.value(near[1], "near[1]")))
+            return min(options.values(), key=lambda p: sum((self.num(a) - b) ** 2 for a, b in zip(p, sketch)))
+        first, second = options.values()
+        if self.num(disc) == 0:
+            return first
+        keys = list(options)
+        shown = " and ".join(f"{_coords(self, p)} ({k})" for k, p in zip(keys, (first, second)))
+        raise KinematikaError("geometry", f"two points fit, {relation}: {shown}; choose one with "
+                              f"side: {keys[0]} or {keys[1]}, or near: [x, y]", self.where)
+
+
+def _name(loc: Location) -> str:
+    if isinstance(loc, str):
+        return loc
+    return "(" + ", ".join(e.text for e in loc) + ")"
+
+
+def _line_name(line: LineDef) -> str:
+    if line.toward is not None:
+        a, b = _name(line.through), _name(line.toward)
+        return a + b if isinstance(line.through, str) and isinstance(line.toward, str) else f"{a}–{b}"
+    return f"through {_name(line.through)} along (" + ", ".join(e.text for e in line.direction) + ")"
+
+
+def _coords(builder: _Builder, p: tuple) -> str:
+    return "(" + ", ".join(f"{builder.num(c):.6g}" for c in p) + ")"

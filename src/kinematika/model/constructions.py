@@ -1,0 +1,211 @@
+"""Points by construction: where a planar point is, said as a textbook problem says it.
+
+A construction names the points and lengths it is drawn from, as one would with ruler
+and compass: polar (a distance at an angle from a point), in the frame of two points, the
+intersection of two circles, of a circle and a line, of two lines. This module holds the
+parsed constructions (expressions unevaluated) and reads them from the checked file;
+`engine.positions` evaluates them, on numbers or symbols, in dependency order.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Optional, Union
+
+from ..errors import KinematikaError
+from . import schema
+from .expressions import Expr
+
+ExprVector = tuple[Expr, ...]
+Location = Union[str, ExprVector]          # a point's name, or coordinates
+
+
+@dataclass(frozen=True)
+class LineDef:
+    """A line through `through`, towards `toward` (a second point) or along `direction`."""
+
+    through: Location
+    toward: Optional[Location] = None
+    direction: Optional[ExprVector] = None
+
+
+@dataclass(frozen=True)
+class Polar:
+    origin: Location
+    distance: Expr
+    angle: Expr
+    reference: Optional[tuple[Location, Location]] = None
+
+
+@dataclass(frozen=True)
+class InFrame:
+    origin: Location
+    toward: Location
+    at: tuple[Expr, Expr]
+
+
+@dataclass(frozen=True)
+class TwoCircles:
+    centers: tuple[Location, Location]
+    radii: tuple[Expr, Expr]
+    side: Optional[str] = None             # "left" or "right" of centers[0] → centers[1]
+    near: Optional[tuple[Expr, Expr]] = None
+
+
+@dataclass(frozen=True)
+class CircleLine:
+    center: Location
+    radius: Expr
+    line: LineDef
+    side: Optional[str] = None             # "ahead" or "behind" along the line's direction
+    near: Optional[tuple[Expr, Expr]] = None
+
+
+@dataclass(frozen=True)
+class TwoLines:
+    lines: tuple[LineDef, LineDef]
+
+
+Construction = Union[Polar, InFrame, TwoCircles, CircleLine, TwoLines]
+KIND_NAMES = {Polar: "polar", InFrame: "frame", TwoCircles: "two circles", CircleLine: "circle and line",
+              TwoLines: "two lines"}
+
+
+def uses(c: Construction) -> list[str]:
+    """The names of the points a construction is drawn from."""
+    locs: list[Location] = []
+    if isinstance(c, Polar):
+        locs = [c.origin, *(c.reference or ())]
+    elif isinstance(c, InFrame):
+        locs = [c.origin, c.toward]
+    elif isinstance(c, TwoCircles):
+        locs = list(c.centers)
+    elif isinstance(c, CircleLine):
+        locs = [c.center, c.line.through, c.line.toward]
+    elif isinstance(c, TwoLines):
+        locs = [loc for line in c.lines for loc in (line.through, line.toward)]
+    return [loc for loc in locs if isinstance(loc, str)]
+
+
+def construction_order(points: dict[str, object]) -> list[str]:
+    """Every point's name, each after the points its construction uses; a cycle is an error."""
+    order: list[str] = []
+    state: dict[str, int] = {}             # 1: being visited, 2: done
+
+    def visit(name: str, path: list[str]) -> None:
+        if state.get(name) == 2:
+            return
+        if state.get(name) == 1:
+            cycle = path[path.index(name):] + [name]
+            raise KinematikaError("schema", "the constructions refer to each other in a cycle: "
+                                  + " → ".join(cycle), f"points.{name}")
+        state[name] = 1
+        spec = points[name]
+        if not isinstance(spec, tuple):
+            for used in uses(spec):
+                visit(used, path + [name])
+        state[name] = 2
+        order.append(name)
+
+    for name in points:
+        visit(name, [])
+    return order
+
+
+ExprOf = Callable[[object, str], Expr]
+VectorOf = Callable[[list, str], ExprVector]
+
+
+class ConstructionReader:
+    """Turns a checked construction spec into a `Construction`, naming places in errors.
+
+    `expr` and `vector` parse values (with the model's parameter names); `known` is the set
+    of point names of the model, so that a misspelt name is reported here.
+    """
+
+    def __init__(self, expr: ExprOf, vector: VectorOf, known: set[str], symbolic: bool) -> None:
+        self.expr, self.vector, self.known, self.symbolic = expr, vector, known, symbolic
+
+    def read(self, spec: object, where: str) -> Construction:
+        if isinstance(spec, schema.PolarSpec):
+            ref = None
+            if spec.reference is not None:
+                ref = (self.loc(spec.reference[0], f"{where}.reference[0]"),
+                       self.loc(spec.reference[1], f"{where}.reference[1]"))
+                self.distinct(ref, f"{where}.reference")
+            return Polar(self.loc(spec.from_, f"{where}.from"), self.expr(spec.distance, f"{where}.distance"),
+                         self.expr(spec.angle, f"{where}.angle"), ref)
+        if isinstance(spec, schema.FrameSpec):
+            origin, toward = (self.loc(p, f"{where}.frame[{i}]") for i, p in enumerate(spec.frame))
+            self.distinct((origin, toward), f"{where}.frame")
+            at = self.vector(spec.at, f"{where}.at")
+            return InFrame(origin, toward, (at[0], at[1]))
+        if isinstance(spec, schema.CirclesSpec):
+            (c1, r1), (c2, r2) = (self.circle(c, f"{where}.circles[{i}]") for i, c in enumerate(spec.circles))
+            self.distinct((c1, c2), f"{where}.circles")
+            return TwoCircles((c1, c2), (r1, r2), spec.side, self.near(spec.near, where))
+        if isinstance(spec, schema.CircleLineSpec):
+            center, radius = self.circle(spec.circle, f"{where}.circle")
+            return CircleLine(center, radius, self.line(spec.line, f"{where}.line"), spec.side,
+                              self.near(spec.near, where))
+        assert isinstance(spec, schema.LinesSpec)
+        return TwoLines(tuple(self.line(l, f"{where}.lines[{i}]") for i, l in enumerate(spec.lines)))
+
+    def loc(self, raw: object, where: str) -> Location:
+        if isinstance(raw, str):
+            if raw not in self.known:
+                raise KinematikaError("schema", f"unknown point {raw!r} (points: "
+                                      f"{', '.join(sorted(self.known))})", where)
+            return raw
+        if not isinstance(raw, list):
+            raise KinematikaError("schema", f"expected a point's name or coordinates [x, y], got "
+                                  f"{_short(raw)}", where)
+        vec = self.vector(raw, where)
+        if len(vec) != 2:
+            raise KinematikaError("schema", f"constructions are planar: coordinates [x, y], got "
+                                  f"{len(vec)} components", where)
+        return vec
+
+    def circle(self, raw: list, where: str) -> tuple[Location, Expr]:
+        center, radius = raw
+        if isinstance(radius, list):
+            raise KinematikaError("schema", "a circle is [centre, radius]: the radius is one number",
+                                  f"{where}[1]")
+        return self.loc(center, f"{where}[0]"), self.expr(radius, f"{where}[1]")
+
+    def line(self, raw: object, where: str) -> LineDef:
+        if isinstance(raw, schema.LineSpec):
+            direction = raw.direction
+            if len(direction) == 2 and all(isinstance(v, str) and v in self.known for v in direction):
+                raise KinematikaError("schema", "a line's direction is a vector; for a line through "
+                                      "two points write [P, Q]", f"{where}.direction")
+            vec = self.vector(direction, f"{where}.direction")
+            if len(vec) != 2:
+                raise KinematikaError("schema", "constructions are planar: a direction [dx, dy]",
+                                      f"{where}.direction")
+            return LineDef(self.loc(raw.through, f"{where}.through"), direction=vec)
+        assert isinstance(raw, list)
+        through, toward = (self.loc(p, f"{where}[{i}]") for i, p in enumerate(raw))
+        self.distinct((through, toward), where)
+        return LineDef(through, toward=toward)
+
+    def near(self, raw: Optional[list], where: str) -> Optional[tuple[Expr, Expr]]:
+        if raw is None:
+            return None
+        if self.symbolic:
+            raise KinematikaError("schema", "`near` needs numbers; in a model with symbolic "
+                                  "parameters choose the intersection with `side`", f"{where}.near")
+        vec = self.vector(raw, f"{where}.near")
+        if len(vec) != 2:
+            raise KinematikaError("schema", "`near` is a sketch point [x, y]", f"{where}.near")
+        return vec[0], vec[1]
+
+    @staticmethod
+    def distinct(pair: tuple[Location, Location], where: str) -> None:
+        if isinstance(pair[0], str) and pair[0] == pair[1]:
+            raise KinematikaError("schema", f"two different points are needed, got {pair[0]!r} twice",
+                                  where)
+
+
+def _short(raw: object) -> str:
+    text = repr(raw)
+    return text if len(text) <= 40 else text[:37] + "..."
