@@ -115,13 +115,17 @@ ConstructionSpec = Annotated[
 ]
 
 
-def _point_kind(data: Any) -> str:
-    return "construction" if isinstance(data, dict) else "coordinates"
+def _point_kind(data: Any) -> str | None:
+    if isinstance(data, dict):
+        return "construction"
+    return "coordinates" if isinstance(data, list) else None
 
 
 PointSpec = Annotated[
     Union[Annotated[Vector, Tag("coordinates")], Annotated[ConstructionSpec, Tag("construction")]],
-    Discriminator(_point_kind),
+    Discriminator(_point_kind, custom_error_type="construction_kind",
+                  custom_error_message="a point is coordinates [x, y] or a construction with one of "
+                                       "the keys from, frame, circles, circle, lines"),
 ]
 
 
