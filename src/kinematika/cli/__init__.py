@@ -6,7 +6,7 @@ import sys
 
 import typer
 
-from . import centres, draw, explain, solve, sweep  # noqa: F401  (each module registers its command)
+from . import centres, draw, explain, page, solve, sweep  # noqa: F401  (each module registers its command)
 from .app import app
 
 

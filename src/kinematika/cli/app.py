@@ -70,8 +70,10 @@ def output_file(path: Path, option: str) -> Path:
 
 def respond(as_json: bool, compute: Callable[[], dict], show: Callable[[dict], None]) -> None:
     """Compute a command's data (errors reported by `guarded`); print JSON or `show` it."""
+    from ..commands import json_text
+
     data = guarded(as_json, compute)
     if as_json:
-        print(json.dumps(data))
+        sys.stdout.write(json_text(data))
     else:
         show(data)

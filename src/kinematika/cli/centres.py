@@ -9,7 +9,7 @@ from .app import JsonOpt, ModelArg, SymbolicOpt, app, respond
 @app.command()
 def centres(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = SymbolicOpt) -> None:
     """All instant centres (planar), marking those found from joints and by Aronhold–Kennedy."""
-    from ..api import solve as solve_model
-    from ..report.centres_table import centres_data, print_centres
+    from ..commands import centres_data
+    from ..report.centres_table import print_centres
 
-    respond(as_json, lambda: centres_data(solve_model(model, symbolic or None)), print_centres)
+    respond(as_json, lambda: centres_data(model, symbolic or None), print_centres)

@@ -26,10 +26,10 @@ def _check_output(output: Path, formats: tuple[str, ...]) -> None:
 
 def _model(model: Path, assignments: Optional[list[str]]):
     """The model with `--set` values applied."""
-    from ..api import as_model
-    from ..model.overrides import parse_assignments, with_parameters
+    from ..commands import How
+    from ..model.overrides import parse_assignments
 
-    return with_parameters(as_model(model), parse_assignments(assignments or []))
+    return How(set=parse_assignments(assignments or [])).model(model)
 
 
 OutputOpt = typer.Option(..., "-o", "--output", help="the file to write", show_default=False)

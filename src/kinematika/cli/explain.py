@@ -19,9 +19,9 @@ def explain(model: Path = ModelArg, lang: str = LangOpt, fmt: str = FormatOpt,
             output: Optional[Path] = OutOpt, symbolic: bool = SymbolicOpt,
             length_unit: str = UnitOpt) -> None:
     """Step-by-step solution: structure, vector equations with M/D/?, polygons, centres."""
-    from ..explain import explain as write
+    from ..commands import explain_text
 
-    text = guarded(False, lambda: write(model, lang, fmt, symbolic or None, length_unit))
+    text = guarded(False, lambda: explain_text(model, lang, fmt, symbolic or None, length_unit))
     if output is None:
         typer.echo(text, nl=False)
         return

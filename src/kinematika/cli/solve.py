@@ -9,12 +9,11 @@ from .app import JsonOpt, ModelArg, SymbolicOpt, app, respond
 @app.command()
 def solve(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = SymbolicOpt) -> None:
     """Velocity and acceleration of every point and body at the instant, and the answers."""
-    from ..api import solve as solve_model
-    from ..report.json_answer import solution_json
+    from ..commands import solve_data
 
     def show(data: dict) -> None:
         from ..report.tables import print_solution
 
         print_solution(data)
 
-    respond(as_json, lambda: solution_json(solve_model(model, symbolic or None)), show)
+    respond(as_json, lambda: solve_data(model, symbolic or None), show)

@@ -1,7 +1,6 @@
 """`kinematika sweep`: the motion over a range of a driven joint's coordinate."""
 from __future__ import annotations
 
-import json
 import sys
 from pathlib import Path
 from typing import Optional
@@ -26,19 +25,16 @@ def sweep(model: Path = ModelArg,
           ) -> None:
     """Positions, velocities and accelerations over a range of a driven joint (default: the
     model's `sweep:` section, else a full turn in 360 steps)."""
-    from ..sweep.run import Sweeper
+    from ..commands import json_text, sweep_run
 
-    def work():
-        sweeper = Sweeper(model, joint)
-        return sweeper, sweeper.run(by, steps, skip_bad, progress=not as_json)
-
-    sweeper, result = guarded(as_json, work)
+    sweeper, result = guarded(as_json, lambda: sweep_run(model, joint, by, steps, skip_bad,
+                                                         progress=not as_json))
     if csv is not None:
         guarded(as_json, lambda: _write_csv(result, csv))
     if plot is not None:
         guarded(as_json, lambda: _plot(result, plot))
     if as_json:
-        sys.stdout.write(json.dumps(result.to_json()) + "\n")      # one write: dump() writes in pieces
+        sys.stdout.write(json_text(result.to_json()))      # one write: dump() writes in pieces
         return
     from ..sweep.summary import summary_lines
 

@@ -85,15 +85,19 @@ class SweepResult:
 
     def to_csv(self, path: str | Path) -> None:
         """One row per position, one column per scalar, a header; bad rows have empty cells."""
+        with open(path, "w", newline="", encoding="utf-8") as f:
+            self.write_csv(f)
+
+    def write_csv(self, f: Any) -> None:
+        """The CSV of `to_csv`, written to the text stream `f` (opened with newline="")."""
         scales = self.scales()
         cols = [(h, clean(v, scales.get(h.rpartition(".")[2].rsplit("_", 1)[0], 0.0)))
                 for h, v in self.columns()]
         table = np.column_stack([v for _, v in cols]) if cols else np.zeros((0, 0))
-        with open(path, "w", newline="", encoding="utf-8") as f:
-            writer = csv.writer(f)
-            writer.writerow([h for h, _ in cols])
-            for row in table.tolist():
-                writer.writerow(["" if math.isnan(x) else repr(x) for x in row])
+        writer = csv.writer(f)
+        writer.writerow([h for h, _ in cols])
+        for row in table.tolist():
+            writer.writerow(["" if math.isnan(x) else repr(x) for x in row])
 
 
 def clean(values: np.ndarray, scale: float) -> np.ndarray:

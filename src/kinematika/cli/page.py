@@ -1,0 +1,102 @@
+"""`kinematika app`: the interactive page, served on this machine (see docs/app.md)."""
+from __future__ import annotations
+
+import ipaddress
+import socket
+import sys
+import threading
+import webbrowser
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from ..errors import KinematikaError
+from .app import app, guarded
+
+LOOPBACK = ("127.0.0.1", "localhost", "::1")
+
+
+@app.command("app")
+def serve(
+    model: Optional[Path] = typer.Argument(None, help="the model file to open (.yaml, .toml or "
+                                           ".json); without it, a bundled example",
+                                           show_default=False),
+    port: int = typer.Option(0, "--port", min=0, max=65535, help="the port (0: a free one)"),
+    host: str = typer.Option("127.0.0.1", "--host", help="the address to serve on; anything "
+                             "but 127.0.0.1 lets other machines use the page"),
+    no_browser: bool = typer.Option(False, "--no-browser", help="do not open a browser"),
+) -> None:
+    """The interactive page: edit a model, see it move, its answers and explanation."""
+    from ..web.server import Start, bundled_examples, create_app
+
+    start = guarded(False, lambda: _start(model))
+    start.examples = bundled_examples()
+    sock = guarded(False, lambda: _bind(host, port))
+    local = host in LOOPBACK
+    if not local:
+        print(f"warning: serving on {host}: anyone who can reach this machine on port "
+              f"{sock.getsockname()[1]} can use the page (it reads no file, but it computes "
+              "for them)", file=sys.stderr)
+    url = f"http://{'127.0.0.1' if host in ('0.0.0.0', '::') else _url_host(host)}:{sock.getsockname()[1]}/"
+    hosts = ["127.0.0.1", "localhost"] if local else None
+    _run(create_app(start, hosts=hosts), sock, url, not no_browser)
+
+
+def _start(model: Optional[Path]):
+    """The model named on the command line, read once (the only file the server reads)."""
+    from ..model.files import FORMATS, MAX_BYTES
+    from ..web.server import Start
+
+    if model is None:
+        return Start()
+    fmt = FORMATS.get(model.suffix.lower())
+    if fmt is None:
+        raise KinematikaError("syntax", f"unknown file type {model.suffix or '(none)'!r}: a model "
+                              f"file ends in {', '.join(FORMATS)}", str(model))
+    try:
+        if model.stat().st_size > MAX_BYTES:
+            raise KinematikaError("syntax", "the file is too large for a model", str(model))
+        text = model.read_text(encoding="utf-8-sig")
+    except FileNotFoundError:
+        raise KinematikaError("syntax", f"no such file: {model}", str(model)) from None
+    except (OSError, UnicodeDecodeError) as err:
+        raise KinematikaError("syntax", f"cannot read {model}: {err}", str(model)) from None
+    return Start(text=text, fmt=fmt, name=model.name)
+
+
+def _bind(host: str, port: int) -> socket.socket:
+    """A listening socket on host:port (port 0: a free one), or a `usage` error."""
+    try:
+        family = socket.AF_INET6 if ":" in host else socket.AF_INET
+        sock = socket.socket(family, socket.SOCK_STREAM)
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        sock.bind((host, port))
+        sock.listen(128)
+    except OSError as err:
+        raise KinematikaError("usage", f"cannot serve on {host}:{port}: {err.strerror or err}",
+                              "--port" if port else "--host") from None
+    sock.set_inheritable(True)
+    return sock
+
+
+def _url_host(host: str) -> str:
+    try:
+        return f"[{host}]" if ipaddress.ip_address(host).version == 6 else host
+    except ValueError:
+        return host
+
+
+def _run(application, sock: socket.socket, url: str, browser: bool) -> None:
+    import uvicorn
+
+    config = uvicorn.Config(application, log_level="warning", access_log=False,
+                            timeout_graceful_shutdown=2)
+    server = uvicorn.Server(config)
+    print(f"kinematika: the page is at {url} (Ctrl+C to stop)", flush=True)
+    if browser:
+        threading.Timer(0.6, lambda: webbrowser.open(url)).start()
+    try:
+        server.run(sockets=[sock])
+    except KeyboardInterrupt:
+        pass

@@ -1,0 +1,82 @@
+"""What each command answers, as data or text: one function per command.
+
+The command line prints these and the page's JSON API (`kinematika.web`) answers them, so
+that `kinematika solve MODEL --json` and `POST /api/solve` give the same bytes. Every
+function takes the model as `api.prepare` does (a path, a text with `fmt`, a tree or a
+`Model`) and the same `set`, `move` and `assembly` choices (`How`).
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from typing import Any, Mapping, Optional
+
+from .api import ModelLike, prepare
+
+
+@dataclass(frozen=True)
+class How:
+    """The model a command analyses: its text's format and the `--set`, `--move` and
+    `--assembly` choices (see `api.prepare`)."""
+
+    fmt: Optional[str] = None
+    set: Mapping[str, Any] = field(default_factory=dict)
+    move: Mapping[str, Any] = field(default_factory=dict)
+    assembly: Optional[int] = None
+
+    def model(self, source: ModelLike) -> Any:
+        return prepare(source, fmt=self.fmt, set=self.set or None, move=self.move or None,
+                       assembly=self.assembly)
+
+
+AS_GIVEN = How()
+
+
+def json_text(data: Any) -> str:
+    """The JSON a command prints with `--json`: one line, then a newline."""
+    return json.dumps(data) + "\n"
+
+
+def solve_data(source: ModelLike, symbolic: Optional[bool] = None, how: How = AS_GIVEN) -> dict:
+    """`kinematika solve --json`: the contract's answer."""
+    from .api import solve
+    from .report.json_answer import solution_json
+
+    return solution_json(solve(how.model(source), symbolic))
+
+
+def centres_data(source: ModelLike, symbolic: Optional[bool] = None, how: How = AS_GIVEN) -> dict:
+    """`kinematika centres --json`: every instant centre and how it is found."""
+    from .api import solve
+    from .report.centres_table import centres_data as table
+
+    return table(solve(how.model(source), symbolic))
+
+
+def sweep_run(source: ModelLike, joint: Optional[str] = None, by: Optional[float] = None,
+              steps: Optional[int] = None, skip_bad: bool = False, progress: Any = False,
+              how: How = AS_GIVEN) -> tuple[Any, Any]:
+    """`kinematika sweep`: the `Sweeper` (for the summary) and its `SweepResult` (whose
+    `to_json()` is the contract's answer and `to_csv()` the CSV)."""
+    from .sweep.run import Sweeper
+
+    sweeper = Sweeper(how.model(source), joint)
+    return sweeper, sweeper.run(by, steps, skip_bad, progress=progress)
+
+
+def explain_text(source: ModelLike, lang: str = "en", fmt: str = "md",
+                 symbolic: Optional[bool] = None, length_unit: str = "m",
+                 how: How = AS_GIVEN) -> str:
+    """`kinematika explain`: the step-by-step solution in `fmt` (md, html, tex)."""
+    from .explain import explain
+
+    return explain(how.model(source), lang, fmt, symbolic, length_unit)
+
+
+def draw_scene(source: ModelLike, options: Any = None, how: How = AS_GIVEN) -> Any:
+    """The `Scene` that `kinematika draw` paints (the model solved at its instant)."""
+    from .api import solve
+    from .draw.scene import build_scene
+
+    sol = solve(how.model(source))
+    return build_scene(sol.inst, sol, options)

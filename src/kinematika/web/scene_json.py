@@ -1,0 +1,98 @@
+"""A drawing's `Scene` as JSON data, for the page to paint as SVG.
+
+Everything is in page coordinates of the model (floats; y up), as `draw` paints it: the
+bodies with their points and shapes, the joints, the arrows, the instant centres with
+their Aronhold–Kennedy lines, the curvature circles, the notes; and the figure's style
+(colours, symbol sizes as fractions of the drawing size), so that the page looks like the
+figures. Labels, written for matplotlib's mathtext (`$v_{\\mathrm{B}}$`), become runs of
+plain text and subscripts.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+import re
+from typing import Any
+
+import numpy as np
+
+from ..draw import style
+from ..draw.scene import Scene
+
+_MATH = re.compile(r"\$([^$_]+)_\{\\mathrm\{((?:[^{}\\]|\\.)*)\}\}\$")
+
+
+def scene_data(scene: Scene) -> dict[str, Any]:
+    """The scene as plain data (lists of floats, texts, runs for labels)."""
+    return {
+        "name": scene.name, "dimension": scene.dim, "size": scene.size, "box": list(scene.box),
+        "view": scene.projection.view,
+        "bodies": {name: {"number": b.number, "colour": b.colour, "frame": b.frame,
+                          "points": {p: _floats(xy) for p, xy in b.points.items()},
+                          "shapes": [_plain(s) for s in b.shapes]}
+                   for name, b in scene.bodies.items()},
+        "joints": [_plain(j) for j in scene.joints],
+        "vectors": [{**_plain(v), "key": v.key, "label": runs(v.label)} for v in scene.vectors],
+        "marks": [{**_plain(m), "label": runs(m.label)} for m in scene.marks],
+        "kennedy": [_plain(k) for k in scene.kennedy],
+        "curvatures": [{**_plain(c), "label": runs(c.label)} for c in scene.curvatures],
+        "axes": [_plain(a) for a in scene.axes],
+        "notes": [_unmath(n) for n in scene.notes],
+        "style": STYLE,
+    }
+
+
+STYLE = {"velocity": style.VELOCITY, "acceleration": style.ACCELERATION, "centre": style.CENTRE,
+         "curvature": style.CURVATURE, "ground": style.GROUND, "ink": style.INK,
+         "point_label": style.POINT_LABEL, "longest": style.LONGEST, "shortest": style.SHORTEST,
+         "support": style.SUPPORT, "block": list(style.BLOCK), "slot_width": style.SLOT_WIDTH,
+         "hatch_band": style.HATCH_BAND}
+
+
+def runs(label: str) -> list[dict[str, str]]:
+    """A mathtext label as runs: `[{"t": "v"}, {"sub": "B"}, {"t": " = 9.25"}]`."""
+    out: list[dict[str, str]] = []
+    pos = 0
+    for m in _MATH.finditer(label):
+        if m.start() > pos:
+            out.append({"t": _unmath(label[pos:m.start()])})
+        out.append({"t": m.group(1)})
+        out.append({"sub": m.group(2).replace("\\ ", " ").replace("\\_", "_")})
+        pos = m.end()
+    if pos < len(label):
+        out.append({"t": _unmath(label[pos:])})
+    return out
+
+
+def _unmath(text: str) -> str:
+    """Plain text from a note or label written for matplotlib."""
+    text = _MATH.sub(lambda m: f"{m.group(1)}{m.group(2)}".replace("\\ ", " ").replace("\\_", "_"),
+                     text)
+    return text.replace("\\$", "$")
+
+
+def _plain(obj: Any) -> dict[str, Any]:
+    """A scene dataclass as a dict of JSON values (arrays as lists; NaN and inf as null)."""
+    return {f.name: _value(getattr(obj, f.name)) for f in dataclasses.fields(obj)}
+
+
+def _value(v: Any) -> Any:
+    if isinstance(v, np.ndarray):
+        return _floats(v)
+    if isinstance(v, (list, tuple)):
+        return [_value(x) for x in v]
+    if isinstance(v, (float, np.floating)):
+        return float(v) if math.isfinite(v) else None
+    if isinstance(v, (np.integer, np.bool_)):
+        return v.item()
+    return v
+
+
+def _floats(arr: Any) -> Any:
+    """An array as nested lists of floats, non-finite values as null."""
+    values = np.asarray(arr, dtype=float)
+    if values.ndim == 0:
+        x = float(values)
+        return x if math.isfinite(x) else None
+    return [_floats(x) for x in values] if values.ndim > 1 else \
+        [float(x) if math.isfinite(x) else None for x in values]

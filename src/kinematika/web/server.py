@@ -1,0 +1,236 @@
+"""The page's server: the contract's JSON API over the one engine, and the static page.
+
+Starlette (the small ASGI toolkit FastAPI is built on) serves it under uvicorn. Each
+request is read with a size bound, checked (`requests`), and computed by the same functions
+the command line prints (`kinematika.commands`) in a bounded pool of threads, off the event
+loop, with a time bound; the answer is the bytes the CLI would print. See docs/app.md.
+"""
+from __future__ import annotations
+
+import io
+import json
+import os
+from dataclasses import dataclass, field
+from importlib import resources
+from typing import Any, Callable, Optional
+
+import anyio
+from starlette.applications import Starlette
+from starlette.middleware import Middleware
+from starlette.middleware.trustedhost import TrustedHostMiddleware
+from starlette.requests import Request as HttpRequest
+from starlette.responses import FileResponse, JSONResponse, Response
+from starlette.routing import Mount, Route
+from starlette.staticfiles import StaticFiles
+
+from .. import commands
+from ..errors import KinematikaError
+from . import limits
+from .requests import Request, parse_body
+
+ENDPOINTS = ("solve", "sweep", "centres", "explain", "draw", "edit")
+STATIC = resources.files("kinematika.web") / "static"
+EXAMPLES = resources.files("kinematika.web") / "examples"
+CSP = ("default-src 'self'; script-src 'self'; style-src 'self' 'unsafe-inline'; "
+       "img-src 'self' data: blob:; frame-src 'self' blob: data: about:; object-src 'none'; "
+       "base-uri 'none'; form-action 'none'; frame-ancestors 'none'")
+SECURITY = {"Content-Security-Policy": CSP, "X-Content-Type-Options": "nosniff",
+            "Referrer-Policy": "no-referrer", "Cache-Control": "no-store"}
+
+
+@dataclass
+class Start:
+    """What the page opens with: the model named on the command line (read once, at start)."""
+
+    text: str = ""
+    fmt: str = "yaml"
+    name: str = ""
+    examples: dict[str, str] = field(default_factory=dict)
+
+
+class Failure(Exception):
+    """An answer other than 200: an HTTP status and the contract's error JSON."""
+
+    def __init__(self, status: int, kind: str, message: str, where: str = "") -> None:
+        super().__init__(message)
+        self.status = status
+        self.body = {"error": {"kind": kind, "message": message, "where": where}}
+
+
+def bundled_examples() -> dict[str, str]:
+    """The examples shipped with the package, by file name (read once, at start)."""
+    if not EXAMPLES.is_dir():
+        return {}
+    return {f.name: f.read_text(encoding="utf-8") for f in sorted(EXAMPLES.iterdir(), key=str)
+            if f.name.endswith((".yaml", ".yml", ".toml", ".json"))}
+
+
+def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
+               workers: int = limits.WORKERS) -> Starlette:
+    """The application: the page, its static files and the JSON API. `hosts`: the host names
+    requests may be addressed to (a guard against DNS rebinding); None accepts any."""
+    start = start if start is not None else Start(examples=bundled_examples())
+    pool = anyio.CapacityLimiter(workers)
+
+    async def page(_: HttpRequest) -> Response:
+        return FileResponse(str(STATIC / "index.html"), headers=SECURITY)
+
+    async def opening(_: HttpRequest) -> Response:
+        return JSONResponse({"model": start.text, "format": start.fmt, "name": start.name,
+                             "examples": list(start.examples)}, headers=SECURITY)
+
+    async def example(request: HttpRequest) -> Response:
+        name = request.path_params["name"]
+        if name not in start.examples:
+            return _failure(Failure(404, "usage", f"no bundled example {name!r}", "name"))
+        fmt = "toml" if name.endswith(".toml") else "yaml"
+        return JSONResponse({"model": start.examples[name], "format": fmt, "name": name},
+                            headers=SECURITY)
+
+    def api(endpoint: str) -> Callable:
+        async def handle(request: HttpRequest) -> Response:
+            try:
+                raw = await _read_body(request)
+                req = parse_body(endpoint, raw)
+                if pool.statistics().tasks_waiting >= limits.MAX_WAITING:
+                    raise Failure(503, "busy", "the server is busy: try again in a moment")
+                with anyio.fail_after(limits.MAX_SECONDS):
+                    status, media, body = await anyio.to_thread.run_sync(
+                        _compute, req, limiter=pool, abandon_on_cancel=True)
+            except KinematikaError as err:
+                return _error(400, err.as_json())
+            except Failure as err:
+                return _failure(err)
+            except TimeoutError:
+                return _failure(Failure(503, "limit", f"the computation took longer than "
+                                        f"{limits.MAX_SECONDS:g} s and was given up", endpoint))
+            return Response(body, status_code=status, media_type=media, headers=SECURITY)
+        return handle
+
+    routes = [Route("/", page), Route("/api/start", opening),
+              Route("/api/examples/{name}", example),
+              *[Route(f"/api/{e}", api(e), methods=["POST"]) for e in ENDPOINTS],
+              Mount("/static", StaticFiles(directory=str(STATIC)), name="static")]
+    middleware = [Middleware(TrustedHostMiddleware, allowed_hosts=hosts)] if hosts else []
+    return Starlette(routes=routes, middleware=middleware)
+
+
+async def _read_body(request: HttpRequest) -> bytes:
+    """The body, refused (413) past `limits.MAX_BODY` bytes before more is read; a body
+    that is not declared JSON is refused (415): browsers then ask before a cross-site post."""
+    kind = request.headers.get("content-type", "").split(";")[0].strip().lower()
+    if kind != "application/json":
+        raise Failure(415, "usage", "send the request as JSON (Content-Type: application/json)",
+                      "request")
+    declared = request.headers.get("content-length")
+    if declared is not None and declared.isdigit() and int(declared) > limits.MAX_BODY:
+        raise _too_large(int(declared))
+    chunks, size = [], 0
+    async for chunk in request.stream():
+        size += len(chunk)
+        if size > limits.MAX_BODY:
+            raise _too_large(size)
+        chunks.append(chunk)
+    return b"".join(chunks)
+
+
+def _too_large(size: int) -> Failure:
+    return Failure(413, "syntax", f"the request is too large ({size} bytes; at most "
+                   f"{limits.MAX_BODY})", "request")
+
+
+def _error(status: int, body: dict) -> Response:
+    return Response(commands.json_text(body), status_code=status, media_type="application/json",
+                    headers=SECURITY)
+
+
+def _failure(err: Failure) -> Response:
+    return _error(err.status, err.body)
+
+
+JSON, HTML, CSV = "application/json", "text/html; charset=utf-8", "text/csv; charset=utf-8"
+
+
+def _compute(req: Request) -> tuple[int, str, bytes]:
+    """The answer to a checked request (in a worker thread): status, media type, body.
+    Internal failures answer 500 with a short note, as the CLI does (never a traceback)."""
+    try:
+        media, body = COMPUTE[req.endpoint](req)
+    except KinematikaError:
+        raise
+    except Exception as err:  # noqa: BLE001 - never show users a traceback
+        if os.environ.get("KINEMATIKA_DEBUG"):
+            raise
+        message = f"internal error ({type(err).__name__}: {err}); please report it"
+        return 500, JSON, commands.json_text({"error": {"kind": "internal", "message": message,
+                                                        "where": ""}}).encode()
+    return 200, media, body if isinstance(body, bytes) else body.encode("utf-8")
+
+
+def _solve(req: Request) -> tuple[str, str]:
+    return JSON, commands.json_text(commands.solve_data(req.model, req.get("symbolic") or None,
+                                                        req.how))
+
+
+def _centres(req: Request) -> tuple[str, str]:
+    return JSON, commands.json_text(commands.centres_data(req.model, req.get("symbolic") or None,
+                                                          req.how))
+
+
+def _sweep(req: Request) -> tuple[str, str]:
+    _, result = commands.sweep_run(req.model, req.get("joint"), req.get("by"), req.get("steps"),
+                                   req.get("skip_bad"), how=req.how)
+    if req.get("as") == "csv":
+        out = io.StringIO(newline="")
+        result.write_csv(out)
+        return CSV, out.getvalue()
+    return JSON, commands.json_text(result.to_json())
+
+
+def _explain(req: Request) -> tuple[str, str]:
+    return HTML, commands.explain_text(req.model, req.get("lang", "en"), "html",
+                                       req.get("symbolic") or None, req.get("length_unit"), req.how)
+
+
+def _draw(req: Request) -> tuple[str, Any]:
+    from ..draw import DrawOptions
+
+    keys = ("velocities", "accelerations", "centres", "curvature", "labels", "points", "view",
+            "width")
+    options = DrawOptions(**{k: req.get(k) for k in keys})
+    model = req.how.model(req.model)
+    scene = commands.draw_scene(model, options)
+    if req.get("as") == "data":
+        from .scene_json import scene_data
+
+        return JSON, commands.json_text({**scene_data(scene), "input": _input(model)})
+    from ..draw.figure import render
+
+    fig = render(scene, options)
+    out = io.BytesIO()
+    fmt = req.get("as")
+    fig.savefig(out, format=fmt, dpi=110, facecolor="white",
+                metadata={"Date": None} if fmt == "svg" else None)
+    return ("image/svg+xml" if fmt == "svg" else "image/png"), out.getvalue()
+
+
+def _input(model: Any) -> Optional[dict[str, Any]]:
+    """The joint a sweep (and the page's slider) advances, and its unit; None if none."""
+    from ..sweep.plan import swept_joint
+
+    try:
+        joint, _ = swept_joint(model, model.sweep.joint if model.sweep else None)
+    except KinematikaError:
+        return None
+    return {"joint": joint.id, "unit": "deg" if joint.type == "revolute" else "length"}
+
+
+def _edit(req: Request) -> tuple[str, str]:
+    from .edit import move_point
+
+    text = move_point(req.model, req.how.fmt or "yaml", req.get("point"), req.get("to"))
+    return JSON, json.dumps({"model": text})
+
+
+COMPUTE = {"solve": _solve, "centres": _centres, "sweep": _sweep, "explain": _explain,
+           "draw": _draw, "edit": _edit}

@@ -1,0 +1,37 @@
+// The page's calls to the JSON API (see docs/app.md): every answer is the CLI's.
+
+/** An API error: the contract's {kind, message, where} and the HTTP status. */
+export class ApiError extends Error {
+  constructor(status, error) {
+    super(error.message);
+    this.status = status;
+    this.kind = error.kind;
+    this.where = error.where || "";
+  }
+}
+
+/** POST `body` to /api/`endpoint`; the answer as JSON, text or a Blob (`as`). */
+export async function post(endpoint, body, as = "json") {
+  const response = await fetch(`/api/${endpoint}`, {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify(body),
+  });
+  if (!response.ok) {
+    let error = { kind: "internal", message: `HTTP ${response.status}`, where: "" };
+    try {
+      error = (await response.json()).error || error;
+    } catch (_) { /* not JSON: keep the status */ }
+    throw new ApiError(response.status, error);
+  }
+  if (as === "blob") return response.blob();
+  if (as === "text") return response.text();
+  return response.json();
+}
+
+/** GET a JSON resource of the page (the starting model, a bundled example). */
+export async function get(path) {
+  const response = await fetch(path);
+  if (!response.ok) throw new ApiError(response.status, { kind: "usage", message: `HTTP ${response.status}` });
+  return response.json();
+}

@@ -1,0 +1,618 @@
+// The mechanism as SVG, painted from the API's scene (what `kinematika draw` paints) and
+// moved through the sweep's rows: each body turns by its swept `angle` about one of its
+// points, which goes to its swept position (as `kinematika animate` does). Results that only
+// the scene holds (instant centres, Kennedy lines, curvature circles, relative vectors) are
+// shown at the position the scene was solved at.
+import { el, runsText, num } from "./svg.js";
+
+const REACH = 2.0;      // drawing sizes around the mechanism within which results are framed
+const MARGIN = 0.1;     // drawing sizes of margin around the framed content
+const KINDS = ["velocity", "acceleration"];
+
+export class Figure {
+  constructor(svg, legend, notes, onDrag) {
+    this.svg = svg;
+    this.legend = legend;
+    this.notes = notes;
+    this.onDrag = onDrag;
+    this.layers = { velocity: true, acceleration: true, centres: true, curvature: true, traces: true };
+    this.scene = null;
+    this.sweep = null;
+    this.row = 0;
+    this.sceneRow = 0;
+    new ResizeObserver(() => this.scene && this.paint()).observe(svg);
+  }
+
+  /** A new scene (solved at sweep row `sceneRow`), and the sweep it moves through (or null). */
+  set(scene, sweep, sceneRow = 0) {
+    this.scene = scene;
+    this.sweep = sweep && scene.dimension === 2 ? sweep : null;
+    this.sceneRow = sceneRow;
+    this.row = sceneRow;
+    this.paint();
+  }
+
+  /** Replace the results only the scene holds (after a solve at row `row`). */
+  overlay(scene, row) {
+    if (!this.scene) return;
+    this.overlayScene = scene;
+    this.overlayRow = row;
+    this.paintOverlay();
+    this.show(this.row);
+  }
+
+  setLayer(name, on) {
+    this.layers[name] = on;
+    if (this.scene) this.applyLayers();
+  }
+
+  stale(on) { this.svg.classList.toggle("stale", on); }
+
+  // painting --------------------------------------------------------------------------
+  paint() {
+    const s = this.scene;
+    this.svg.replaceChildren();
+    this.size = s.size || 1;
+    this.view = this.frameBox();
+    const [x0, y0, x1, y1] = this.view;
+    this.svg.setAttribute("viewBox", `${x0} ${-y1} ${x1 - x0} ${y1 - y0}`);
+    const w = this.svg.clientWidth || 800, h = this.svg.clientHeight || 440;
+    this.px = Math.max((x1 - x0) / w, (y1 - y0) / h);       // model units per CSS pixel
+    this.svg.style.setProperty("--halo", String(3 * this.px));  // the white halo of labels
+    this.defs();
+    const g = (cls) => el("g", { class: cls }, this.svg);
+    this.g = { ground: g("ground"), traces: g("traces"), bodies: g("bodies"), overlay: g("overlay"),
+               vectors: g("vectors"), labels: g("labels") };
+    this.anchors = {};
+    this.bodyGroups = {};
+    this.paintTraces();
+    this.paintBodies();
+    this.paintJoints();
+    this.paintPoints();
+    this.liveVectors();
+    this.overlayScene = this.scene;
+    this.overlayRow = this.sceneRow;
+    this.paintOverlay();
+    this.paintLegend();
+    this.notes.textContent = (s.notes || []).join(" · ");
+    this.show(this.row);
+  }
+
+  defs() {
+    const d = el("defs", {}, this.svg);
+    const step = 0.012 * this.size;
+    const p = el("pattern", { id: "hatch", patternUnits: "userSpaceOnUse", width: step, height: step,
+                              patternTransform: "rotate(45)" }, d);
+    el("line", { x1: 0, y1: 0, x2: 0, y2: step, stroke: this.scene.style.ground, "stroke-width": step * 0.25 }, p);
+  }
+
+  /** The box (model coordinates) the figure frames: the mechanism over the whole motion,
+   * its arrows, and the marks and circles within reach. */
+  frameBox() {
+    const s = this.scene, size = this.size;
+    let [x0, y0, x1, y1] = s.box;
+    const add = (p) => {
+      if (!p || p[0] === null || p[1] === null) return;
+      x0 = Math.min(x0, p[0]); y0 = Math.min(y0, p[1]); x1 = Math.max(x1, p[0]); y1 = Math.max(y1, p[1]);
+    };
+    const reach = [s.box[0] - REACH * size, s.box[1] - REACH * size, s.box[2] + REACH * size, s.box[3] + REACH * size];
+    const inReach = (p) => p && p[0] >= reach[0] && p[0] <= reach[2] && p[1] >= reach[1] && p[1] <= reach[3];
+    if (this.sweep) {
+      for (const v of Object.values(this.sweep.points)) for (const p of v.position) add(p);
+    }
+    const longest = s.style.longest * size;
+    for (const v of s.vectors) {
+      add([v.origin[0] - longest, v.origin[1] - longest]);
+      add([v.origin[0] + longest, v.origin[1] + longest]);
+    }
+    for (const m of s.marks) if (m.point && inReach(m.point)) add(m.point);
+    for (const c of s.curvatures) {
+      if (c.circle.every(inReach)) c.circle.forEach(add);
+      else if (inReach(c.centre)) add(c.centre);
+    }
+    const m = MARGIN * size;
+    return [x0 - m, y0 - m, x1 + m, y1 + m];
+  }
+
+  bodyGroup(name) {
+    if (!name || this.scene.bodies[name].frame) return this.g.ground;
+    if (!this.bodyGroups[name]) {
+      this.bodyGroups[name] = el("g", { class: "body", "data-body": name }, this.g.bodies);
+    }
+    return this.bodyGroups[name];
+  }
+
+  paintBodies() {
+    const s = this.scene;
+    for (const [name, b] of Object.entries(s.bodies)) {
+      if (b.frame) {
+        for (const shape of b.shapes) this.groundShape(shape);
+        continue;
+      }
+      const g = this.bodyGroup(name);
+      this.anchors[name] = this.anchor(name, b);
+      const pts = distinct(Object.values(b.points), 1e-9 * this.size);
+      const wheels = b.shapes.filter((x) => x.kind === "circle" && !x.ring);
+      for (const shape of b.shapes) this.movingShape(g, b, shape);
+      if (wheels.length && pts.every((p) => wheels.some((w) => dist(p, w.center) <= w.radius * (1 + 1e-6)))) {
+        for (const p of pts) {
+          const w = wheels.reduce((a, c) => (dist(p, c.center) < dist(p, a.center) ? c : a));
+          el("line", { ...seg(w.center, p), stroke: b.colour, "stroke-width": 2, "stroke-linecap": "round" }, g);
+        }
+        continue;
+      }
+      const hull = pts.length >= 3 ? convexHull(pts) : pts;
+      if (hull.length >= 3 && area(hull) > 1e-5 * this.size ** 2) {
+        el("polygon", { points: poly(hull), fill: b.colour, "fill-opacity": 0.38, stroke: b.colour,
+                        "stroke-width": 2.5, "stroke-linejoin": "round", class: "shape" }, g);
+      } else if (pts.length >= 2) {
+        const [p, q] = extremes(pts);
+        el("line", { ...seg(p, q), stroke: b.colour, "stroke-opacity": 0.9, "stroke-width": 8,
+                     "stroke-linecap": "round", class: "shape" }, g);
+      }
+    }
+  }
+
+  /** The material point a body's placement follows: its first swept point. */
+  anchor(name, b) {
+    if (!this.sweep) return null;
+    for (const p of Object.keys(b.points)) if (this.sweep.points[`${p}@${name}`]) return p;
+    return null;
+  }
+
+  groundShape(sh) {
+    const s = this.scene, band = s.style.hatch_band * this.size, g = this.g.ground;
+    if (sh.kind === "line") {
+      const far = 10 * this.size;
+      const p = add(sh.through, mul(sh.direction, -far)), q = add(sh.through, mul(sh.direction, far));
+      let n = [-sh.direction[1], sh.direction[0]];
+      const towards = sh.hatch_towards || sub(sh.through, this.movingCentroid());
+      if (dot(n, towards) < 0) n = mul(n, -1);
+      this.hatchedEdge(g, p, q, n, band);
+    } else if (sh.kind === "circle") {
+      el("circle", { cx: sh.center[0], cy: -sh.center[1], r: sh.radius, fill: "none", stroke: s.style.ground,
+                     "stroke-width": 1.8 }, g);
+      const width = Math.min(band, 0.5 * sh.radius);
+      const r = sh.material_inside ? sh.radius - width / 2 : sh.radius + width / 2;
+      el("circle", { cx: sh.center[0], cy: -sh.center[1], r, fill: "none", stroke: "url(#hatch)",
+                     "stroke-width": width, class: "model-width" }, g);
+    } else if (sh.vertices) {
+      el("polygon", { points: poly(sh.vertices), fill: "#f0f0f0", stroke: "#9e9e9e", "stroke-width": 1 }, g);
+    }
+  }
+
+  hatchedEdge(g, p, q, side, band) {
+    el("polygon", { points: poly([p, q, add(q, mul(side, band)), add(p, mul(side, band))]),
+                    fill: "url(#hatch)", stroke: "none" }, g);
+    el("line", { ...seg(p, q), stroke: this.scene.style.ground, "stroke-width": 1.8 }, g);
+  }
+
+  movingShape(g, b, sh) {
+    if (sh.kind === "circle") {
+      const gear = sh.role === "gear";
+      const c = { cx: sh.center[0], cy: -sh.center[1] };
+      if (sh.ring) {
+        const band = Math.min(1.5 * this.scene.style.hatch_band * this.size, 0.3 * sh.radius);
+        el("circle", { ...c, r: sh.radius + band / 2, fill: "none", stroke: b.colour, "stroke-opacity": 0.45,
+                       "stroke-width": band, class: "model-width" }, g);
+      } else {
+        el("circle", { ...c, r: sh.radius, fill: b.colour, "fill-opacity": gear ? 0.18 : 0.25, stroke: "none" }, g);
+        for (const d of [[1, 0], [0, 1]]) {
+          el("line", { ...seg(add(sh.center, mul(d, -0.8 * sh.radius)), add(sh.center, mul(d, 0.8 * sh.radius))),
+                       stroke: b.colour, "stroke-width": 1, "stroke-opacity": 0.8 }, g);
+        }
+      }
+      el("circle", { ...c, r: sh.radius, fill: "none", stroke: b.colour, "stroke-width": gear ? 1.6 : 2.2,
+                     "stroke-dasharray": gear ? "10 3 2 3" : null }, g);
+    } else if (sh.kind === "line") {
+      const far = 10 * this.size;
+      el("line", { ...seg(add(sh.through, mul(sh.direction, -far)), add(sh.through, mul(sh.direction, far))),
+                   stroke: b.colour, "stroke-width": 2.2 }, g);
+    } else if (sh.vertices) {
+      el("polygon", { points: poly(sh.vertices), fill: b.colour, "fill-opacity": 0.3, stroke: b.colour,
+                      "stroke-width": 1.5 }, g);
+    }
+  }
+
+  movingCentroid() {
+    const pts = [];
+    for (const b of Object.values(this.scene.bodies)) if (!b.frame) pts.push(...Object.values(b.points));
+    if (!pts.length) return [0, 0];
+    return mul(pts.reduce(add, [0, 0]), 1 / pts.length);
+  }
+
+  frame() { return Object.keys(this.scene.bodies).find((n) => this.scene.bodies[n].frame); }
+
+  mover(j) {
+    const f = this.frame();
+    if (j.b !== f) return j.b;
+    return j.a !== f ? j.a : null;
+  }
+
+  paintJoints() {
+    const st = this.scene.style, f = this.frame();
+    for (const j of this.scene.joints) {
+      if ((j.type === "revolute" || j.type === "spherical") && j.at) {
+        if (j.a === f || j.b === f) this.support(j.at);
+        this.pin(this.bodyGroup(this.mover(j)), j.at, j.id);
+      } else if (j.type === "prismatic" || j.type === "cylindrical") {
+        const along = j.along || (j.axis && unit(j.axis));
+        const centre = j.at || this.sliderCentre(j);
+        if (!along || !centre) continue;
+        const [len, hgt] = st.block.map((x) => x * this.size);
+        this.guide(j.a, centre, along, hgt);
+        const colour = j.b !== f ? this.scene.bodies[j.b].colour : st.ground;
+        el("polygon", { points: poly(rectangle(centre, along, len, hgt)), fill: colour, stroke: st.ink,
+                        "stroke-width": 1.3, "data-joint": j.id }, this.bodyGroup(j.b !== f ? this.mover(j) : null));
+      } else if (j.type === "slot" && j.at && j.along) {
+        const half = (st.slot_width * this.size) / 2;
+        let p, q;
+        if (j.span) {
+          const d = unit(sub(j.span[1], j.span[0]));
+          p = add(j.span[0], mul(d, -2 * half)); q = add(j.span[1], mul(d, 2 * half));
+          const ts = [0, dot(sub(q, p), d), dot(sub(j.at, p), d)];
+          const lo = Math.min(...ts), hi = Math.max(...ts);
+          if (lo < 0 || hi > ts[1]) { const p0 = p; p = add(p0, mul(d, lo - 2 * half)); q = add(p0, mul(d, hi + 2 * half)); }
+        } else {
+          p = add(j.at, mul(j.along, -0.15 * this.size)); q = add(j.at, mul(j.along, 0.15 * this.size));
+        }
+        const colour = j.a === f ? st.ground : this.scene.bodies[j.a].colour;
+        el("polygon", { points: poly(stadium(p, q, half)), fill: "white", stroke: colour, "stroke-width": 2 },
+           this.bodyGroup(j.a === f ? null : j.a));
+        this.pin(this.bodyGroup(j.b === f ? null : j.b), j.at, j.id);
+      } else if (j.type === "wheel" && j.at && j.along) {
+        el("polygon", { points: poly(rectangle(j.at, j.along, 0.1 * this.size, 0.03 * this.size)), fill: st.ink },
+           this.bodyGroup(this.mover(j)));
+      }
+    }
+  }
+
+  pin(g, p, id) {
+    el("circle", { cx: p[0], cy: -p[1], r: 4.2 * this.px, fill: "white", stroke: this.scene.style.ink,
+                   "stroke-width": 1.6, "data-joint": id, class: "pin" }, g);
+  }
+
+  support(p) {
+    const st = this.scene.style, h = st.support * this.size, g = this.g.ground;
+    const d = sub(p, this.movingCentroid());
+    const down = d[1] > 0.3 * Math.hypot(...d) && d[1] > 1e-9 ? [0, 1] : [0, -1];
+    const base = add(p, mul(down, h));
+    const side = [1, 0];
+    el("polygon", { points: poly([p, add(base, mul(side, -0.75 * h)), add(base, mul(side, 0.75 * h))]),
+                    fill: "#e0e0e0", stroke: st.ground, "stroke-width": 1.3 }, g);
+    this.hatchedEdge(g, add(base, mul(side, -h)), add(base, mul(side, h)), down, 0.55 * h);
+  }
+
+  sliderCentre(j) {
+    for (const name of [j.b, j.a]) {
+      const pts = Object.values(this.scene.bodies[name].points);
+      if (pts.length && name !== this.frame()) return mul(pts.reduce(add, [0, 0]), 1 / pts.length);
+    }
+    return null;
+  }
+
+  guide(body, centre, along, height) {
+    if (body === this.frame()) {
+      let n = [-along[1], along[0]];
+      if (dot(n, sub(centre, this.movingCentroid())) <= 1e-12 * this.size) n = mul(n, -1);
+      const c = add(centre, mul(n, height / 2)), far = 10 * this.size;
+      this.hatchedEdge(this.g.ground, add(c, mul(along, -far)), add(c, mul(along, far)), n,
+                       this.scene.style.hatch_band * this.size);
+      return;
+    }
+    const b = this.scene.bodies[body];
+    const ts = [...Object.values(b.points), centre].map((p) => dot(sub(p, centre), along));
+    const m = 0.12 * this.size;
+    el("line", { ...seg(add(centre, mul(along, Math.min(...ts) - m)), add(centre, mul(along, Math.max(...ts) + m))),
+                 stroke: b.colour, "stroke-width": 3 }, this.bodyGroup(body));
+  }
+
+  /** A dot at every point (draggable at the position the scene was solved at) and its name. */
+  paintPoints() {
+    this.pointLabels = [];
+    const named = new Set();
+    for (const [name, b] of Object.entries(this.scene.bodies)) {
+      for (const [p, xy] of Object.entries(b.points)) {
+        if (named.has(p)) continue;
+        named.add(p);
+        const g = this.bodyGroup(b.frame ? null : name);
+        const dotEl = el("circle", { cx: xy[0], cy: -xy[1], r: 3.2 * this.px, fill: this.scene.style.ink,
+                                     class: "draggable", "data-point": p }, g);
+        this.draggable(dotEl, p);
+        const label = el("text", { "font-size": 12 * this.px, "font-weight": "bold", fill: this.scene.style.point_label,
+                                   class: "point-label" }, this.g.labels);
+        label.textContent = p;
+        this.pointLabels.push({ label, name: p, body: name, frame: b.frame, xy });
+      }
+    }
+  }
+
+  /** The full path of every moving point over the sweep (coupler curves), faint. */
+  paintTraces() {
+    this.tracesByKey = [];
+    if (!this.sweep) return;
+    const seen = [];
+    for (const [key, v] of Object.entries(this.sweep.points)) {
+      const path = v.position.filter((p) => p !== null);
+      if (path.length < 2) continue;
+      const spread = Math.max(...path.map((p) => dist(p, path[0])));
+      if (spread <= 1e-6 * this.size) continue;
+      if (seen.some((q) => q.length === path.length && q.every((p, i) => dist(p, path[i]) < 1e-9 * this.size))) continue;
+      seen.push(path);
+      el("polyline", { points: poly(path), fill: "none", stroke: "#6d4c41", "stroke-opacity": 0.45,
+                       "stroke-width": 1.2, "stroke-dasharray": "4 3", "data-trace": key }, this.g.traces);
+    }
+  }
+
+  /** The arrows that follow the sweep: the scene's absolute vectors of swept points. */
+  liveVectors() {
+    this.arrows = [];
+    this.largest = {};
+    for (const v of this.scene.vectors) {
+      const swept = this.sweep && !v.relative_to && this.sweep.points[v.ref];
+      this.largest[v.kind] = Math.max(this.largest[v.kind] || 0, v.magnitude);
+      if (swept) {
+        for (const x of swept[v.kind]) if (x) this.largest[v.kind] = Math.max(this.largest[v.kind], Math.hypot(...x));
+      }
+    }
+    for (const v of this.scene.vectors) this.arrows.push(this.arrowElements(v, this.g.vectors));
+  }
+
+  arrowElements(v, parent) {
+    const colour = this.scene.style[v.kind];
+    const g = el("g", { class: `arrow kind-${v.kind}`, "data-vector": v.key }, parent);
+    const line = el("line", { stroke: colour, "stroke-width": 2.2 }, g);
+    const head = el("polygon", { fill: colour }, g);
+    const label = runsText(g, [...v.label, { t: " = " }], { "font-size": 12 * this.px, fill: colour });
+    const value = el("tspan", {}, label);
+    return { v, g, line, head, label, value, swept: this.sweep && !v.relative_to && this.sweep.points[v.ref] };
+  }
+
+  placeArrow(a, origin, value, magnitude) {
+    const st = this.scene.style, largest = this.largest[a.v.kind] || 0;
+    if (!origin || !value || largest <= 0 || magnitude <= 1e-9 * largest) {
+      a.line.setAttribute("visibility", "hidden");
+      a.head.setAttribute("visibility", "hidden");
+      if (origin) placeText(a.label, origin, [6 * this.px, 6 * this.px]);
+      a.value.textContent = "0";
+      return;
+    }
+    let factor = (st.longest * this.size) / largest;
+    let enlarged = false;
+    if (magnitude * factor < st.shortest * this.size) { factor = (st.shortest * this.size) / magnitude; enlarged = true; }
+    const tip = add(origin, mul(value, factor));
+    const d = unit(value), n = [-d[1], d[0]];
+    const hl = 11 * this.px, hw = 4.5 * this.px;
+    const back = add(tip, mul(d, -hl));
+    a.line.setAttribute("visibility", "visible");
+    a.head.setAttribute("visibility", "visible");
+    setSeg(a.line, origin, back);
+    a.head.setAttribute("points", poly([tip, add(back, mul(n, hw)), add(back, mul(n, -hw))]));
+    placeText(a.label, tip, mul(d, 6 * this.px), d);
+    a.value.textContent = num(magnitude) + (enlarged ? " (enlarged)" : "");
+  }
+
+  paintOverlay() {
+    const s = this.overlayScene, st = s.style;
+    const g = this.g.overlay;
+    g.replaceChildren();
+    this.overlayParts = { centres: el("g", { class: "centres" }, g), curvature: el("g", { class: "curvature" }, g),
+                          vectors: el("g", { class: "relative" }, this.g.overlay) };
+    const far = 10 * this.size;
+    for (const k of s.kennedy) {
+      const d = unit(k.direction);
+      el("line", { ...seg(add(k.through, mul(d, -far)), add(k.through, mul(d, far))), stroke: st.centre,
+                   "stroke-width": 0.9, "stroke-dasharray": "6 4", "stroke-opacity": 0.8, "data-kennedy": k.key },
+         this.overlayParts.centres);
+    }
+    const [x0, y0, x1, y1] = this.view, inset = 14 * this.px;
+    for (const m of s.marks) {
+      if (!m.point) continue;
+      const colour = m.kind === "pole" ? st.acceleration : m.kind === "contact" ? st.ink : st.centre;
+      const inside = m.point[0] >= x0 && m.point[0] <= x1 && m.point[1] >= y0 && m.point[1] <= y1;
+      const p = inside ? m.point : [clamp(m.point[0], x0 + inset, x1 - inset), clamp(m.point[1], y0 + inset, y1 - inset)];
+      const mg = el("g", { "data-mark": m.key }, this.overlayParts.centres);
+      if (inside) {
+        el("circle", { cx: p[0], cy: -p[1], r: 5.5 * this.px, fill: "white", stroke: colour, "stroke-width": 2.2 }, mg);
+        el("circle", { cx: p[0], cy: -p[1], r: 1.4 * this.px, fill: colour }, mg);
+      } else {
+        const d = unit(sub(m.point, p));
+        const n = [-d[1], d[0]], r = 7 * this.px;
+        el("polygon", { points: poly([add(p, mul(d, r)), add(p, add(mul(d, -r / 2), mul(n, r * 0.8))),
+                                      add(p, add(mul(d, -r / 2), mul(n, -r * 0.8)))]), fill: colour }, mg);
+      }
+      const runs = inside ? m.label : [...m.label, { t: ` far off at (${num(m.point[0])}, ${num(m.point[1])})` }];
+      const t = runsText(mg, runs, { "font-size": 12 * this.px, fill: colour });
+      placeText(t, p, inside ? [7 * this.px, 7 * this.px] : mul(unit(sub(p, this.centre())), 10 * this.px),
+                inside ? null : unit(sub(p, this.centre())));
+    }
+    for (const c of s.curvatures) {
+      const cg = el("g", { "data-curvature": c.ref }, this.overlayParts.curvature);
+      el("polyline", { points: poly(c.circle), fill: "none", stroke: st.curvature, "stroke-width": 1.3 }, cg);
+      el("line", { ...seg(c.point, c.centre), stroke: st.curvature, "stroke-width": 0.8, "stroke-dasharray": "3 3" }, cg);
+      el("circle", { cx: c.centre[0], cy: -c.centre[1], r: 2.5 * this.px, fill: st.curvature }, cg);
+      placeText(runsText(cg, c.label, { "font-size": 12 * this.px, fill: st.curvature }), c.centre, [6 * this.px, -12 * this.px]);
+    }
+    this.overlayArrows = [];
+    for (const v of s.vectors) {
+      if (v.relative_to || !this.sweep || !this.sweep.points[v.ref]) {
+        const a = this.arrowElements(v, this.overlayParts.vectors);
+        this.placeArrow(a, v.origin, v.value, v.magnitude);
+        this.overlayArrows.push(a);
+      }
+    }
+    this.applyLayers();
+  }
+
+  centre() { const [x0, y0, x1, y1] = this.view; return [(x0 + x1) / 2, (y0 + y1) / 2]; }
+
+  applyLayers() {
+    const showOverlay = this.row === this.overlayRow;
+    this.g.traces.setAttribute("visibility", this.layers.traces ? "visible" : "hidden");
+    if (this.overlayParts) {
+      this.overlayParts.centres.setAttribute("visibility", this.layers.centres && showOverlay ? "visible" : "hidden");
+      this.overlayParts.curvature.setAttribute("visibility", this.layers.curvature && showOverlay ? "visible" : "hidden");
+      for (const a of this.overlayArrows) a.g.setAttribute("visibility", this.layers[a.v.kind] && showOverlay ? "visible" : "hidden");
+    }
+    for (const a of this.arrows) {
+      const on = this.layers[a.v.kind] && (a.swept || this.row === this.sceneRow) && !a.v.relative_to && !!a.swept;
+      a.g.setAttribute("visibility", on ? "visible" : "hidden");
+    }
+  }
+
+  paintLegend() {
+    const items = [];
+    const kinds = new Set(this.scene.vectors.map((v) => v.kind));
+    if (kinds.has("velocity")) items.push(`<li><i style="background:var(--velocity)"></i>velocity</li>`);
+    if (kinds.has("acceleration")) items.push(`<li><i style="background:var(--acceleration)"></i>acceleration</li>`);
+    if (this.scene.marks.some((m) => m.kind === "icr")) items.push(`<li><i class="ring"></i>instant centre</li>`);
+    if (this.scene.kennedy.length) items.push(`<li><i class="dash"></i>Kennedy line</li>`);
+    if (this.scene.curvatures.length) items.push(`<li><i style="background:var(--curvature)"></i>curvature circle</li>`);
+    if (this.sweep) items.push(`<li><i style="background:#6d4c41;opacity:.5"></i>path over the motion</li>`);
+    items.push(`<li class="hint">drag a point to move it</li>`);
+    this.legend.innerHTML = items.join("");
+  }
+
+  // moving ------------------------------------------------------------------------------
+  /** The mechanism at sweep row `k`. */
+  show(k) {
+    this.row = k;
+    if (!this.scene) return;
+    const sw = this.sweep;
+    if (sw) {
+      const ok = sw.coordinate[k] !== undefined && Object.values(sw.bodies)[0]?.angle[k] !== null;
+      this.svg.classList.toggle("unassembled", !ok);
+      for (const [name, g] of Object.entries(this.bodyGroups)) {
+        const anchor = this.anchors[name];
+        if (!anchor) continue;
+        const p0 = this.scene.bodies[name].points[anchor];
+        const pk = sw.points[`${anchor}@${name}`].position[k];
+        const a0 = sw.bodies[name].angle[this.sceneRow], ak = sw.bodies[name].angle[k];
+        if (!pk || ak === null || a0 === null) { g.setAttribute("visibility", "hidden"); continue; }
+        g.setAttribute("visibility", "visible");
+        g.setAttribute("transform", `translate(${pk[0]} ${-pk[1]}) rotate(${-(ak - a0)}) translate(${-p0[0]} ${p0[1]})`);
+      }
+      for (const a of this.arrows) {
+        if (!a.swept) continue;
+        const value = a.swept[a.v.kind][k];
+        this.placeArrow(a, a.swept.position[k], value, value ? Math.hypot(...value) : 0);
+      }
+    } else {
+      for (const a of this.arrows) this.placeArrow(a, a.v.origin, a.v.value, a.v.magnitude);
+    }
+    for (const pl of this.pointLabels) {
+      let p = pl.xy;
+      if (sw && !pl.frame) {
+        const swept = sw.points[`${pl.name}@${pl.body}`];
+        p = swept ? swept.position[k] : null;
+      }
+      if (p) placeText(pl.label, p, [5 * this.px, 5 * this.px]);
+      pl.label.setAttribute("visibility", p ? "visible" : "hidden");
+    }
+    this.applyLayers();
+  }
+
+  // dragging ----------------------------------------------------------------------------
+  draggable(node, name) {
+    node.addEventListener("pointerdown", (e) => {
+      if (e.button !== 0) return;
+      e.preventDefault();
+      node.setPointerCapture(e.pointerId);
+      this.svg.classList.add("dragging");
+      const move = (ev) => {
+        const p = this.toModel(ev);
+        node.setAttribute("transform", "");
+        node.setAttribute("cx", p[0]);
+        node.setAttribute("cy", -p[1]);
+        this.onDrag(name, p, false);
+      };
+      const up = (ev) => {
+        node.removeEventListener("pointermove", move);
+        node.removeEventListener("pointerup", up);
+        this.svg.classList.remove("dragging");
+        this.onDrag(name, this.toModel(ev), true);
+      };
+      node.addEventListener("pointermove", move);
+      node.addEventListener("pointerup", up);
+      this.onDrag(name, null, false);
+    });
+  }
+
+  /** The model point under a pointer event, rounded to a thousandth of the drawing. */
+  toModel(ev) {
+    const m = this.svg.getScreenCTM().inverse();
+    const x = m.a * ev.clientX + m.c * ev.clientY + m.e, y = m.b * ev.clientX + m.d * ev.clientY + m.f;
+    const step = 10 ** Math.floor(Math.log10(this.size / 500));
+    const round = (v) => Number((Math.round(v / step) * step).toFixed(Math.max(0, -Math.log10(step))));
+    return [round(x), round(-y)];
+  }
+}
+
+// geometry ------------------------------------------------------------------------------
+const add = (p, q) => [p[0] + q[0], p[1] + q[1]];
+const sub = (p, q) => [p[0] - q[0], p[1] - q[1]];
+const mul = (p, s) => [p[0] * s, p[1] * s];
+const dot = (p, q) => p[0] * q[0] + p[1] * q[1];
+const dist = (p, q) => Math.hypot(p[0] - q[0], p[1] - q[1]);
+const unit = (p) => { const n = Math.hypot(p[0], p[1]) || 1; return [p[0] / n, p[1] / n]; };
+const clamp = (x, lo, hi) => Math.min(Math.max(x, lo), hi);
+const poly = (pts) => pts.map((p) => `${p[0]},${-p[1]}`).join(" ");
+const seg = (p, q) => ({ x1: p[0], y1: -p[1], x2: q[0], y2: -q[1] });
+
+function setSeg(line, p, q) {
+  line.setAttribute("x1", p[0]); line.setAttribute("y1", -p[1]);
+  line.setAttribute("x2", q[0]); line.setAttribute("y2", -q[1]);
+}
+
+/** Put a label at `p` + `offset` (model units), anchored away from `towards` when given. */
+function placeText(text, p, offset, towards = null) {
+  text.setAttribute("x", p[0] + offset[0]);
+  text.setAttribute("y", -(p[1] + offset[1]));
+  const c = towards ? towards[0] : 1, s = towards ? towards[1] : 1;
+  text.setAttribute("text-anchor", c > 0.3 ? "start" : c < -0.3 ? "end" : "middle");
+  text.setAttribute("dominant-baseline", s > 0.3 ? "text-after-edge" : s < -0.3 ? "hanging" : "middle");
+}
+
+function distinct(pts, tol) {
+  const out = [];
+  for (const p of pts) if (out.every((q) => dist(p, q) > tol)) out.push(p);
+  return out;
+}
+
+function extremes(pts) {
+  let best = [pts[0], pts[1]], d = -1;
+  for (let i = 0; i < pts.length; i++) for (let j = i + 1; j < pts.length; j++) {
+    const e = dist(pts[i], pts[j]);
+    if (e > d) { d = e; best = [pts[i], pts[j]]; }
+  }
+  return best;
+}
+
+function convexHull(pts) {
+  const p = [...pts].sort((a, b) => a[0] - b[0] || a[1] - b[1]);
+  const cross = (o, a, b) => (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  const lower = [], upper = [];
+  for (const q of p) { while (lower.length >= 2 && cross(lower.at(-2), lower.at(-1), q) <= 0) lower.pop(); lower.push(q); }
+  for (const q of p.reverse()) { while (upper.length >= 2 && cross(upper.at(-2), upper.at(-1), q) <= 0) upper.pop(); upper.push(q); }
+  return lower.slice(0, -1).concat(upper.slice(0, -1));
+}
+
+function area(h) {
+  let s = 0;
+  for (let i = 0; i < h.length; i++) { const p = h[i], q = h[(i + 1) % h.length]; s += p[0] * q[1] - q[0] * p[1]; }
+  return Math.abs(s) / 2;
+}
+
+function rectangle(c, along, length, height) {
+  const d = unit(along), n = [-d[1], d[0]], l = length / 2, h = height / 2;
+  return [add(add(c, mul(d, -l)), mul(n, -h)), add(add(c, mul(d, l)), mul(n, -h)),
+          add(add(c, mul(d, l)), mul(n, h)), add(add(c, mul(d, -l)), mul(n, h))];
+}
+
+function stadium(p, q, half) {
+  const d = unit(sub(q, p)), n = [-d[1], d[0]], out = [];
+  const a0 = Math.atan2(n[1], n[0]);
+  for (let i = 0; i <= 12; i++) { const t = a0 + (Math.PI * i) / 12; out.push(add(p, [half * Math.cos(t), half * Math.sin(t)])); }
+  for (let i = 0; i <= 12; i++) { const t = a0 + Math.PI + (Math.PI * i) / 12; out.push(add(q, [half * Math.cos(t), half * Math.sin(t)])); }
+  return out;
+}

@@ -1,0 +1,317 @@
+// The page: one model at a time. On every change of the model (typing, a drag, an example,
+// a format or assembly), the API solves it, paints its scene and sweeps it once; the slider
+// then moves through the sweep's rows locally. See docs/app.md.
+import { post, get } from "./api.js";
+import { Editor, errorLine } from "./editor.js";
+import { Figure } from "./figure.js";
+import { Answers } from "./table.js";
+import { Plot } from "./plot.js";
+import { fragment, fromFragment } from "./link.js";
+import { num } from "./svg.js";
+
+const $ = (id) => document.getElementById(id);
+const SETTLE_MS = 250;          // a slider at rest this long is solved exactly there
+const ROWS_PER_SECOND = 60;     // playing speed at 1×
+
+const state = { fmt: "yaml", name: "model", assembly: null, lang: "en", gen: 0, row: 0,
+                solution: null, sweep: null, scene: null, input: null, explained: null };
+const timing = { updates: [] };
+window.kinematika = { state, timing };
+
+const editor = new Editor($("model-editor"), $("gutter"), $("error-line"), () => analyse());
+const figure = new Figure($("figure"), $("legend"), $("notes"), drag);
+const answers = new Answers($("answers"));
+const plot = new Plot($("plot"), $("plot-pick"));
+const slider = $("input-slider");
+
+// the model -----------------------------------------------------------------------------
+function request(extra = {}) {
+  const body = { model: editor.text, format: state.fmt, ...extra };
+  if (state.assembly !== null) body.assembly = state.assembly;
+  return body;
+}
+
+/** Solve, draw and sweep the model in the editor (stale answers are dropped). */
+async function analyse() {
+  const gen = ++state.gen;
+  $("busy").hidden = false;
+  const [solved, drawn, swept] = await Promise.allSettled([
+    post("solve", request()), post("draw", request({ centres: true })),
+    post("sweep", request({ skip_bad: true })),
+  ]);
+  if (gen !== state.gen) return;
+  $("busy").hidden = true;
+  if (solved.status === "rejected") {
+    showError(solved.reason);
+    figure.stale(true);
+    return;
+  }
+  showError(null);
+  figure.stale(false);
+  state.solution = solved.value;
+  state.scene = drawn.status === "fulfilled" ? drawn.value : null;
+  state.sweep = swept.status === "fulfilled" ? swept.value : null;
+  state.input = state.scene && state.scene.input;
+  state.sweepError = swept.status === "rejected" ? swept.reason.message : null;
+  state.explained = null;
+  $("model-name").textContent = state.solution.name || "Model";
+  const dof = $("dof");
+  dof.textContent = `DOF ${state.solution.dof}`;
+  dof.classList.remove("bad");
+  const frame = state.scene ? Object.keys(state.scene.bodies).find((b) => state.scene.bodies[b].frame) : "ground";
+  const rows = state.sweep ? state.sweep.coordinate.length : 1;
+  state.row = Math.min(state.row, rows - 1);
+  if (state.row !== 0 && !state.sweep) state.row = 0;
+  if (state.scene) figure.set(state.scene, state.sweep, 0);
+  answers.set(state.solution, state.sweep, frame);
+  plot.set(state.sweep, state.input ? state.input.unit : "deg", frame);
+  slider.max = String(rows - 1);
+  slider.disabled = $("play").disabled = !state.sweep;
+  slider.title = state.sweepError ? `no motion to sweep: ${state.sweepError}` : "";
+  setRow(state.row);
+  explainSoon();
+}
+
+function showError(err) {
+  const box = $("error");
+  if (!err) {
+    box.hidden = true;
+    box.replaceChildren();
+    editor.markLine(null);
+    return;
+  }
+  box.hidden = false;
+  box.innerHTML = "";
+  const kind = document.createElement("b");
+  kind.textContent = err.kind || "error";
+  box.appendChild(kind);
+  if (err.where) {
+    const place = document.createElement("span");
+    place.className = "place";
+    place.textContent = `${err.where}: `;
+    box.appendChild(place);
+  }
+  box.appendChild(document.createTextNode(err.message));
+  box.dataset.kind = err.kind || "";
+  editor.markLine(errorLine(editor.text, err));
+  const dof = $("dof");
+  const said = /(\d+) degrees? of freedom/.exec(err.message || "");
+  dof.textContent = said ? `DOF ${said[1]}` : "DOF ?";
+  dof.classList.add("bad");
+}
+
+function load(text, fmt, name) {
+  state.fmt = fmt || "yaml";
+  state.name = (name || "model").replace(/\.(ya?ml|toml|json)$/, "");
+  $("format").value = state.fmt;
+  editor.text = text;
+  state.row = 0;
+  analyse();
+}
+
+// the slider ----------------------------------------------------------------------------
+function coordinateText(k) {
+  if (!state.sweep || !state.input) return "drawn position";
+  const x = state.sweep.coordinate[k];
+  return `${state.input.joint} ${x >= 0 ? "+" : "−"}${num(Math.abs(x))}${state.input.unit === "deg" ? "°" : ""}`;
+}
+
+/** Show sweep row `k` in the figure, the table and the plot (the part that must be fast). */
+function setRow(k) {
+  const t0 = performance.now();
+  state.row = k;
+  slider.value = String(k);
+  figure.show(k);
+  answers.show(k);
+  plot.cursor(k);
+  $("coordinate").textContent = coordinateText(k);
+  const where = k === 0 ? "at the drawn position" : `at ${coordinateText(k)}`;
+  $("answers-where").textContent = where;
+  timing.updates.push(performance.now() - t0);
+  if (timing.updates.length > 500) timing.updates.shift();
+  settleSoon();
+}
+
+let settleTimer = null;
+function settleSoon() {
+  clearTimeout(settleTimer);
+  settleTimer = setTimeout(settle, SETTLE_MS);
+}
+
+/** With the slider at rest, solve exactly there (`move`): centres, curvature and every
+ * answer of that position; and explain it. */
+async function settle() {
+  const k = state.row, gen = state.gen;
+  explainSoon();
+  if (k === 0 || !state.sweep || !state.input) {
+    if (state.scene) figure.overlay(state.scene, 0);
+    return;
+  }
+  const move = { move: { [state.input.joint]: state.sweep.coordinate[k] } };
+  try {
+    const [sol, scene] = await Promise.all([post("solve", request(move)), post("draw", request({ ...move, centres: true }))]);
+    if (gen !== state.gen || k !== state.row) return;
+    answers.resolved(sol, k);
+    figure.overlay(scene, k);
+  } catch (_) { /* moving is not available: the answers stay those of the drawn position */ }
+}
+
+let playing = null;
+function play() {
+  if (playing) { cancelAnimationFrame(playing.frame); playing = null; $("play").textContent = "▶"; return; }
+  $("play").textContent = "❚❚";
+  playing = { last: performance.now(), pos: state.row };
+  const step = (now) => {
+    const rows = state.sweep.coordinate.length;
+    playing.pos = (playing.pos + ((now - playing.last) / 1000) * ROWS_PER_SECOND * Number($("speed").value)) % rows;
+    playing.last = now;
+    setRow(Math.floor(playing.pos));
+    playing.frame = requestAnimationFrame(step);
+  };
+  playing.frame = requestAnimationFrame(step);
+}
+
+// the explanation -----------------------------------------------------------------------
+let explainTimer = null;
+function explainSoon() {
+  clearTimeout(explainTimer);
+  explainTimer = setTimeout(explain, 60);
+}
+
+async function explain() {
+  const k = state.row, lang = state.lang, gen = state.gen;
+  const key = `${gen}|${lang}|${k}`;
+  if (state.explained === key || !state.solution) return;
+  const move = k !== 0 && state.input && state.sweep ? { move: { [state.input.joint]: state.sweep.coordinate[k] } } : {};
+  let html, where = k === 0 ? "at the drawn position" : `at ${coordinateText(k)}`;
+  try {
+    html = await post("explain", request({ lang, ...move }), "text");
+  } catch (err) {
+    if (!move.move) { html = null; where = err.message; } else {
+      try {
+        html = await post("explain", request({ lang }), "text");
+        where = "at the drawn position (explaining another position needs `move`)";
+      } catch (err2) { html = null; where = err2.message; }
+    }
+  }
+  if (gen !== state.gen || lang !== state.lang || k !== state.row) return;
+  state.explained = key;
+  state.explanation = html;
+  $("explanation-where").textContent = where;
+  $("explanation").srcdoc = html || "";
+}
+
+// dragging a point --------------------------------------------------------------------------
+let dragging = null;
+async function drag(name, to, final) {
+  if (to === null) {                       // a drag starts: edits are made at the drawn position
+    if (playing) play();
+    if (state.row !== 0) setRow(0);
+    return;
+  }
+  dragging = { name, to, final };
+  if (dragging.busy) return;
+  while (dragging && !dragging.busy) {
+    const job = dragging;
+    job.busy = true;
+    try {
+      const answer = await post("edit", { model: editor.text, format: state.fmt, point: job.name, to: job.to });
+      editor.text = answer.model;
+      await analyse();
+    } catch (err) {
+      toast(err.message);
+      showError(err);
+    }
+    if (dragging === job) dragging = null;
+  }
+}
+
+// downloads and the link ----------------------------------------------------------------------
+function save(blob, name) {
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(blob);
+  a.download = name;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(a.href), 10000);
+}
+
+async function download(what) {
+  $("downloads").open = false;
+  const here = state.row !== 0 && state.input && state.sweep ? { move: { [state.input.joint]: state.sweep.coordinate[state.row] } } : {};
+  try {
+    if (what === "model") save(new Blob([editor.text], { type: "text/plain" }), `${state.name}.${state.fmt === "yaml" ? "yaml" : state.fmt}`);
+    else if (what === "svg" || what === "png") {
+      let blob;
+      try { blob = await post("draw", request({ ...here, as: what, centres: true }), "blob"); }
+      catch (_) { blob = await post("draw", request({ as: what, centres: true }), "blob"); }
+      save(blob, `${state.name}.${what}`);
+    } else if (what === "csv") save(await post("sweep", request({ skip_bad: true, as: "csv" }), "blob"), `${state.name}.csv`);
+    else if (what === "html") {
+      if (!state.explanation) await explain();
+      save(new Blob([state.explanation || ""], { type: "text/html" }), `${state.name}-${state.lang}.html`);
+    }
+  } catch (err) { toast(`cannot download: ${err.message}`); }
+}
+
+async function copyLink() {
+  const url = `${location.origin}${location.pathname}#${await fragment(editor.text, state.fmt)}`;
+  history.replaceState(null, "", url);
+  try {
+    await navigator.clipboard.writeText(url);
+    toast("link copied: it holds the model itself");
+  } catch (_) {
+    toast("the link is in the address bar: copy it from there");
+  }
+}
+
+function toast(text) {
+  const t = $("toast");
+  t.textContent = text;
+  t.hidden = false;
+  clearTimeout(toast.timer);
+  toast.timer = setTimeout(() => { t.hidden = true; }, 3000);
+}
+
+// wiring ----------------------------------------------------------------------------------
+slider.addEventListener("input", () => { if (playing) play(); setRow(Number(slider.value)); });
+$("play").addEventListener("click", play);
+$("language").addEventListener("change", (e) => { state.lang = e.target.value; explainSoon(); });
+$("format").addEventListener("change", (e) => { state.fmt = e.target.value; analyse(); });
+$("assembly").addEventListener("change", (e) => { state.assembly = e.target.value === "" ? null : Number(e.target.value); analyse(); });
+$("example").addEventListener("change", async (e) => {
+  if (!e.target.value) return;
+  const ex = await get(`/api/examples/${encodeURIComponent(e.target.value)}`);
+  history.replaceState(null, "", location.pathname);
+  load(ex.model, ex.format, ex.name);
+});
+$("copy-link").addEventListener("click", copyLink);
+for (const b of document.querySelectorAll("[data-download]")) b.addEventListener("click", () => download(b.dataset.download));
+for (const c of document.querySelectorAll("[data-layer]")) c.addEventListener("change", () => figure.setLayer(c.dataset.layer, c.checked));
+document.addEventListener("keydown", (e) => {
+  if (e.target === $("model-editor") || !state.sweep) return;
+  if (e.key === " " && e.target === document.body) { e.preventDefault(); play(); }
+});
+
+async function start() {
+  const opening = await get("/api/start");
+  for (const name of opening.examples) {
+    const o = document.createElement("option");
+    o.value = name;
+    o.textContent = name.replace(/\.(ya?ml|toml|json)$/, "").replace(/_/g, " ");
+    $("example").appendChild(o);
+  }
+  const linked = location.hash ? await fromFragment(location.hash).catch(() => null) : null;
+  if (linked) return load(linked.text, linked.fmt, "linked-model");
+  if (opening.model) return load(opening.model, opening.format, opening.name);
+  const first = opening.examples.find((n) => n === "four_bar.yaml") || opening.examples[0];
+  if (first) {
+    $("example").value = first;
+    const ex = await get(`/api/examples/${encodeURIComponent(first)}`);
+    return load(ex.model, ex.format, ex.name);
+  }
+  load("", "yaml", "model");
+}
+
+start();

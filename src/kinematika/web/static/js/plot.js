@@ -1,0 +1,138 @@
+// Chosen quantities against the input coordinate, from the sweep: one small chart each,
+// a cursor at the slider, dead points (where the sweep stops assembling) and limit
+// positions (where a body's ω changes sign: its angle is at an extreme) marked.
+import { el, num } from "./svg.js";
+
+const PAD = { left: 58, right: 74, top: 8, bottom: 22 };
+const COLOURS = ["#1f5fa8", "#c62828", "#2e7d32", "#7b1fa2", "#ef6c00", "#00838f"];
+
+export class Plot {
+  constructor(svg, pick) {
+    this.svg = svg;
+    this.pick = pick;
+    this.series = [];
+    pick.addEventListener("change", () => this.draw());
+    new ResizeObserver(() => this.sweep && this.draw()).observe(svg);
+  }
+
+  /** The quantities of a sweep (JSON), and which to show first. */
+  set(sweep, unit, frame) {
+    this.sweep = sweep;
+    this.unit = unit;
+    this.pick.replaceChildren();
+    if (!sweep) { this.svg.replaceChildren(); return; }
+    const choices = [];
+    const moving = Object.keys(sweep.bodies).filter((b) => b !== frame);
+    for (const b of moving) {
+      choices.push({ id: `${b}.angle`, label: `${b}: angle (°)`, values: sweep.bodies[b].angle, body: b });
+      choices.push({ id: `${b}.omega`, label: `${b}: ω (rad/s)`, values: sweep.bodies[b].omega });
+      choices.push({ id: `${b}.alpha`, label: `${b}: α (rad/s²)`, values: sweep.bodies[b].alpha });
+    }
+    const seen = new Set();
+    for (const [key, v] of Object.entries(sweep.points)) {
+      if (key.endsWith(`@${frame}`)) continue;
+      const speed = v.velocity.map((x) => (x ? Math.hypot(...x) : null));
+      const sig = key.split("@")[0] + JSON.stringify(speed.slice(0, 5));
+      if (seen.has(sig)) continue;
+      seen.add(sig);
+      if (Math.max(...speed.filter((x) => x !== null), 0) === 0) continue;
+      choices.push({ id: `${key}.speed`, label: `${key}: |v|`, values: speed });
+      choices.push({ id: `${key}.accel`, label: `${key}: |a|`, values: v.acceleration.map((x) => (x ? Math.hypot(...x) : null)) });
+    }
+    this.choices = choices;
+    const output = moving.at(-1);
+    const first = new Set([`${output}.angle`, `${output}.omega`]);
+    for (const c of choices) {
+      const o = document.createElement("option");
+      o.value = c.id;
+      o.textContent = c.label;
+      o.selected = first.has(c.id);
+      this.pick.appendChild(o);
+    }
+    this.pick.size = Math.min(4, choices.length);
+    this.draw();
+  }
+
+  draw() {
+    const svg = this.svg;
+    svg.replaceChildren();
+    if (!this.sweep) return;
+    const chosen = this.choices.filter((c) => [...this.pick.selectedOptions].some((o) => o.value === c.id));
+    const w = svg.clientWidth || 600, h = svg.clientHeight || 190;
+    svg.setAttribute("viewBox", `0 0 ${w} ${h}`);
+    const xs = this.sweep.coordinate;
+    const x0 = Math.min(...xs), x1 = Math.max(...xs);
+    const X = (x) => PAD.left + ((x - x0) / (x1 - x0 || 1)) * (w - PAD.left - PAD.right);
+    const band = (h - PAD.top - PAD.bottom) / Math.max(chosen.length, 1);
+    this.series = [];
+    chosen.forEach((c, i) => {
+      const vals = c.values.filter((v) => v !== null);
+      let lo = Math.min(...vals), hi = Math.max(...vals);
+      if (!(hi - lo > 1e-9 * Math.max(Math.abs(hi), 1))) { lo -= 1; hi += 1; }
+      const top = PAD.top + i * band + 4, bottom = PAD.top + (i + 1) * band - 4;
+      const Y = (v) => bottom - ((v - lo) / (hi - lo)) * (bottom - top);
+      const colour = COLOURS[i % COLOURS.length];
+      el("line", { x1: PAD.left, x2: w - PAD.right, y1: bottom, y2: bottom, stroke: "#e3e7eb" }, svg);
+      if (lo < 0 && hi > 0) el("line", { x1: PAD.left, x2: w - PAD.right, y1: Y(0), y2: Y(0), stroke: "#cfd6dc", "stroke-dasharray": "2 3" }, svg);
+      let d = "";
+      c.values.forEach((v, k) => { if (v !== null) d += `${d && c.values[k - 1] !== null ? "L" : "M"}${X(xs[k]).toFixed(1)},${Y(v).toFixed(1)}`; });
+      el("path", { d, fill: "none", stroke: colour, "stroke-width": 1.6 }, svg);
+      const tick = (v, y) => { const t = el("text", { x: PAD.left - 6, y, "text-anchor": "end", "font-size": 10, fill: "#5f6b73", "dominant-baseline": "middle" }, svg); t.textContent = num(v); };
+      tick(hi, top + 4); tick(lo, bottom - 4);
+      const name = el("text", { x: PAD.left + 6, y: top + 10, "font-size": 11, fill: colour, "font-weight": 600 }, svg);
+      name.textContent = c.label;
+      if (c.body) this.limits(c, X, Y, svg);
+      const dot = el("circle", { r: 3.5, fill: colour, stroke: "white", "stroke-width": 1 }, svg);
+      const value = el("text", { x: w - PAD.right + 6, "font-size": 11, fill: colour, "dominant-baseline": "middle", "font-family": "monospace" }, svg);
+      this.series.push({ c, X, Y, dot, value });
+    });
+    this.deadPoints(X, svg, h);
+    const axis = el("text", { x: (PAD.left + w - PAD.right) / 2, y: h - 5, "text-anchor": "middle", "font-size": 11, fill: "#5f6b73" }, svg);
+    axis.textContent = `input (${this.unit === "deg" ? "°" : "length"}): ${num(x0)} … ${num(x1)}`;
+    this.cursorLine = el("line", { y1: PAD.top, y2: h - PAD.bottom, stroke: "#263238", "stroke-width": 1 }, svg);
+    this.X = X;
+    this.cursor(this.row || 0);
+  }
+
+  /** Limit positions of a body: where its ω changes sign (its angle is at an extreme). */
+  limits(c, X, Y, svg) {
+    const omega = this.sweep.bodies[c.body].omega, xs = this.sweep.coordinate;
+    for (let k = 1; k < omega.length; k++) {
+      const a = omega[k - 1], b = omega[k];
+      if (a === null || b === null || !(a * b < 0)) continue;
+      const t = a / (a - b);
+      const x = xs[k - 1] + t * (xs[k] - xs[k - 1]);
+      const y = c.values[k - 1] + t * (c.values[k] - c.values[k - 1]);
+      const m = el("g", { class: "limit" }, svg);
+      el("circle", { cx: X(x), cy: Y(y), r: 4, fill: "white", stroke: "#263238", "stroke-width": 1.4 }, m);
+      el("title", {}, m).textContent = `limit position: ${c.body} at ${num(y)}° (input ${num(x)})`;
+    }
+  }
+
+  /** Where the sweep stops assembling (edges of its null rows): a dashed red line. */
+  deadPoints(X, svg, h) {
+    const ok = Object.values(this.sweep.bodies)[0].angle.map((v) => v !== null);
+    const xs = this.sweep.coordinate;
+    for (let k = 1; k < ok.length; k++) {
+      if (ok[k] === ok[k - 1]) continue;
+      const x = ok[k] ? xs[k] : xs[k - 1];
+      el("line", { x1: X(x), x2: X(x), y1: PAD.top, y2: h - PAD.bottom, stroke: "#c62828", "stroke-dasharray": "4 3" }, svg);
+      const t = el("text", { x: X(x) + 3, y: PAD.top + 10, "font-size": 10, fill: "#c62828" }, svg);
+      t.textContent = "dead point";
+    }
+  }
+
+  cursor(k) {
+    this.row = k;
+    if (!this.sweep || !this.cursorLine) return;
+    const x = this.X(this.sweep.coordinate[k]);
+    this.cursorLine.setAttribute("x1", x);
+    this.cursorLine.setAttribute("x2", x);
+    for (const s of this.series) {
+      const v = s.c.values[k];
+      s.dot.setAttribute("visibility", v === null ? "hidden" : "visible");
+      if (v !== null) { s.dot.setAttribute("cx", x); s.dot.setAttribute("cy", s.Y(v)); s.value.setAttribute("y", s.Y(v)); }
+      s.value.textContent = num(v);
+    }
+  }
+}

@@ -1,0 +1,51 @@
+// Small helpers to build SVG and to format numbers.
+const NS = "http://www.w3.org/2000/svg";
+
+/** An SVG element with attributes, appended to `parent` when given. */
+export function el(name, attrs = {}, parent = null) {
+  const node = document.createElementNS(NS, name);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (v !== null && v !== undefined) node.setAttribute(k, v);
+  }
+  if (parent) parent.appendChild(node);
+  return node;
+}
+
+/** A label from runs ([{t: "v"}, {sub: "B"}, {t: " = 9.25"}]) as SVG tspans. */
+export function runsText(parent, runs, attrs) {
+  const text = el("text", attrs, parent);
+  for (const run of runs) {
+    if (run.sub !== undefined) {
+      const s = el("tspan", { "baseline-shift": "sub", "font-size": "75%" }, text);
+      s.textContent = run.sub;
+    } else {
+      const s = el("tspan", {}, text);
+      s.textContent = run.t;
+    }
+  }
+  return text;
+}
+
+/** `x` with 4 significant digits, round-off below 1e-9 of `scale` as 0, no trailing zeros. */
+export function num(x, scale = 0) {
+  if (x === null || x === undefined || Number.isNaN(x)) return "–";
+  if (typeof x === "string") return x;
+  if (Math.abs(x) <= 1e-9 * scale || x === 0) return "0";
+  const a = Math.abs(x);
+  let s = a >= 1e-3 && a < 1e6 ? x.toPrecision(4) : x.toExponential(3);
+  if (s.includes("e")) {
+    const [m, e] = s.split("e");
+    s = trim(m) + "e" + e.replace("+", "");
+  } else s = trim(s);
+  return s.replace("-", "−");
+}
+
+function trim(s) {
+  return s.includes(".") ? s.replace(/0+$/, "").replace(/\.$/, "") : s;
+}
+
+/** A vector or a number, formatted. */
+export function show(v, scale = 0) {
+  if (Array.isArray(v)) return "(" + v.map((c) => num(c, scale)).join(", ") + ")";
+  return num(v, scale);
+}

@@ -1,0 +1,162 @@
+"""The page's JSON API answers exactly what the command line prints (the contract's
+section "The page's JSON API"), for every bundled example, and refuses bad requests with
+the contract's error JSON."""
+from __future__ import annotations
+
+import json
+
+import pytest
+from typer.testing import CliRunner
+
+import kinematika.cli  # noqa: F401  (registers the commands)
+from kinematika.cli.app import app as cli
+from tests.conftest import EXAMPLES
+
+EXAMPLE_FILES = sorted(EXAMPLES.glob("*.yaml"))
+RUNNER = CliRunner()
+
+
+def run_cli(*args: str) -> tuple[int, bytes]:
+    result = RUNNER.invoke(cli, list(args))
+    return result.exit_code, result.stdout_bytes
+
+
+def post(client, endpoint: str, **body):
+    return client.post(f"/api/{endpoint}", json=body)
+
+
+@pytest.mark.parametrize("path", EXAMPLE_FILES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("command", ["solve", "sweep", "centres"])
+def test_answers_are_the_cli_json_byte_for_byte(client, path, command):
+    code, printed = run_cli(command, str(path), "--json")
+    answer = post(client, command, model=path.read_text(encoding="utf-8"))
+    if code == 0:
+        assert answer.status_code == 200
+        assert answer.headers["content-type"].startswith("application/json")
+        assert answer.content == printed
+    else:      # the same error: kind and message (the CLI names the file where the API has none)
+        assert code == 2 and answer.status_code == 400
+        said, got = json.loads(printed)["error"], answer.json()["error"]
+        assert (got["kind"], got["message"]) == (said["kind"], said["message"])
+
+
+@pytest.mark.parametrize("path", EXAMPLE_FILES, ids=lambda p: p.stem)
+def test_explanation_is_the_cli_html(client, path):
+    code, printed = run_cli("explain", str(path), "--format", "html", "--lang", "eu")
+    answer = post(client, "explain", model=path.read_text(encoding="utf-8"), lang="eu")
+    assert code == 0 and answer.status_code == 200
+    assert answer.headers["content-type"] == "text/html; charset=utf-8"
+    assert answer.content == printed
+
+
+def test_sweep_options_mean_what_the_cli_options_mean(client, tmp_path):
+    path = EXAMPLES / "four_bar.yaml"
+    code, printed = run_cli("sweep", str(path), "--json", "--by", "90", "--steps", "9", "--skip-bad")
+    answer = post(client, "sweep", model=path.read_text(), by=90, steps=9, skip_bad=True)
+    assert code == 0 and answer.content == printed
+    rows = answer.json()
+    assert rows["coordinate"] == [10.0 * k for k in range(10)]
+    # the crank of length 1 turning at 10 rad/s: its pin A moves at 10, at 90° + 10k
+    for k, (vx, vy) in enumerate(rows["points"]["A@crank"]["velocity"]):
+        theta = 3.141592653589793 / 180 * (90 + 10 * k)
+        assert vx == pytest.approx(-10 * __import__("math").sin(theta), abs=1e-9)
+        assert vy == pytest.approx(10 * __import__("math").cos(theta), abs=1e-9)
+    csv_path = tmp_path / "rows.csv"
+    run_cli("sweep", str(path), "--by", "90", "--steps", "9", "--csv", str(csv_path))
+    as_csv = post(client, "sweep", model=path.read_text(), by=90, steps=9, **{"as": "csv"})
+    assert as_csv.status_code == 200 and as_csv.headers["content-type"].startswith("text/csv")
+    assert as_csv.content == csv_path.read_bytes()
+
+
+def test_set_gives_parameters_values_as_the_option_does(client):
+    text = (EXAMPLES / "four_bar.yaml").read_text()
+    answer = post(client, "solve", model=text, set={"w2": 20}).json()
+    # A is at (0, 1) on the crank: v_A = ω × r = 20 · (−1, 0)
+    assert answer["points"]["A@crank"]["velocity"] == [-20.0, 0.0]
+    assert answer["bodies"]["crank"]["omega"] == 20.0
+
+
+def test_formats_are_read_as_the_cli_reads_files(client):
+    text = json.dumps({"points": {"O": [0, 0], "A": [1, 0]},
+                       "bodies": {"ground": ["O"], "bar": ["O", "A"]},
+                       "joints": [{"type": "revolute", "bodies": ["ground", "bar"], "at": "O"}],
+                       "drivers": [{"omega": "bar", "value": 2}]})
+    as_json = post(client, "solve", model=text, format="json").json()
+    assert as_json["points"]["A@bar"]["velocity"] == [0.0, 2.0]
+    toml = ('[points]\nO = [0, 0]\nA = [1, 0]\n[bodies]\nground = ["O"]\nbar = ["O", "A"]\n'
+            '[[joints]]\ntype = "revolute"\nbodies = ["ground", "bar"]\nat = "O"\n'
+            '[[drivers]]\nomega = "bar"\nvalue = 2\n')
+    assert post(client, "solve", model=toml, format="toml").json() == as_json
+
+
+@pytest.mark.parametrize("body, kind, where", [
+    ({"model": "points: {A: [0, 0]"}, "syntax", "<text>"),
+    ({"model": "points: {A: [0, 0]}\nbodies: {ground: [A]}\nfoo: 1\n"}, "schema", None),
+    ({"model": "x: 1", "format": "xml"}, "usage", "format"),
+    ({"model": "x: 1", "colour": "red"}, "usage", "colour"),
+    ({"format": "yaml"}, "usage", "model"),
+    ({"model": "x: 1", "set": [1, 2]}, "usage", "set"),
+    ({"model": "x: 1", "assembly": "two"}, "usage", "assembly"),
+    ({"model": "x: 1", "lang": "fr"}, "usage", "lang"),
+])
+def test_bad_requests_answer_400_with_the_contract_error(client, body, kind, where):
+    answer = client.post("/api/solve", json=body)
+    assert answer.status_code == 400
+    error = answer.json()["error"]
+    assert set(error) == {"kind", "message", "where"}
+    assert error["kind"] == kind and error["message"]
+    if where is not None:
+        assert error["where"] == where
+
+
+def test_a_body_over_the_limit_answers_413(client):
+    from kinematika.web import limits
+
+    big = json.dumps({"model": "#" * (limits.MAX_BODY + 10)})
+    answer = client.post("/api/solve", content=big, headers={"content-type": "application/json"})
+    assert answer.status_code == 413
+    assert answer.json()["error"]["kind"] == "syntax"
+
+
+def test_only_json_bodies_are_read(client):
+    answer = client.post("/api/solve", content=b'{"model": "x: 1"}', headers={"content-type": "text/plain"})
+    assert answer.status_code == 415
+    assert answer.json()["error"]["where"] == "request"
+
+
+def test_draw_gives_the_scene_as_data_and_the_figure_as_svg_or_png(client):
+    text = (EXAMPLES / "four_bar.yaml").read_text()
+    scene = post(client, "draw", model=text, centres=True).json()
+    assert scene["input"] == {"joint": "j1", "unit": "deg"}
+    assert scene["bodies"]["crank"]["points"] == {"O2": [0.0, 0.0], "A": [0.0, 1.0]}
+    # every centre of the four bodies: 4·3/2 = 6, the ones from Kennedy with their lines
+    assert len([m for m in scene["marks"] if m["kind"] == "icr"]) == 6
+    assert scene["kennedy"]
+    v_b = next(v for v in scene["vectors"] if v["kind"] == "velocity" and v["relative_to"] is None)
+    assert v_b["label"][:2] == [{"t": "v"}, {"sub": "B"}]
+    svg = post(client, "draw", model=text, **{"as": "svg"})
+    assert svg.headers["content-type"] == "image/svg+xml" and b"<svg" in svg.content
+    png = post(client, "draw", model=text, **{"as": "png"})
+    assert png.headers["content-type"] == "image/png" and png.content[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_the_page_and_its_files_are_served_with_a_strict_policy(client):
+    page = client.get("/")
+    assert page.status_code == 200 and 'data-testid="figure"' in page.text
+    assert "script-src 'self'" in page.headers["content-security-policy"]
+    assert client.get("/static/js/main.js").status_code == 200
+    start = client.get("/api/start").json()
+    assert "four_bar.yaml" in start["examples"]
+    example = client.get("/api/examples/four_bar.yaml").json()
+    assert example["model"] == (EXAMPLES / "four_bar.yaml").read_text()
+    assert client.get("/api/examples/..%2Fpyproject.toml").status_code == 404
+
+
+def test_requests_to_another_host_name_are_refused():
+    from starlette.testclient import TestClient
+
+    from kinematika.web.server import create_app
+
+    local = TestClient(create_app(hosts=["127.0.0.1", "localhost"]), base_url="http://127.0.0.1")
+    assert local.get("/").status_code == 200
+    assert local.get("/", headers={"host": "attacker.example"}).status_code == 400
