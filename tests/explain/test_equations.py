@@ -37,7 +37,7 @@ def _direction(sol, ref, eq):
             return tuple(b - a for a, b in zip(p, q))
         return None
     if ref.key == "dir.guide":
-        return sol.solver.geos[ref.args["joint"]].along
+        return sol.solver.geos[str(ref.args["joint"])].along
     return None
 
 

@@ -8,7 +8,7 @@ from ..model.model import PointRef
 from ..questions import answer
 from ..questions.curvature import intrinsic
 from .context import Ctx
-from .document import Ann, Derived, Equation, Inline, Section, Sym, Table, Term, Value, msg
+from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Value, msg
 from .terms import KNOWN
 
 UNITS = {"velocity": "speed", "acceleration": "accel", "omega": "rate", "alpha": "rate2",
@@ -74,7 +74,7 @@ def curvature_steps(ctx: Ctx, q) -> list:
     result = answer(ctx.sol, q)
     label = str(ref) if not ctx.shared(ref.point) else ref.point
     if result.get("rest"):
-        return [msg("curvature.rest", point=label)]
+        return [msg("curvature.rest", point=Name(label))]
     split = intrinsic(ctx.sol, q)             # the solver's aᵗ and aⁿ of the same point
     at, an = split["tangential_vector"], split["normal_vector"]
     target = Term(Sym("a", label), ctx.clean(a, "accel"), *KNOWN, kind="point")
@@ -82,13 +82,13 @@ def curvature_steps(ctx: Ctx, q) -> list:
                       Ann("para", Sym("v", label)), kind="tangential")
     normal = Term(Sym("a", label, "n"), ctx.clean(an, "accel"), Ann("M"),
                   Ann("perp", Sym("v", label)), kind="normal")
-    out: list = [msg("curvature.point", point=label, v=Value(ctx.clean(v, "speed"), "speed")),
+    out: list = [msg("curvature.point", point=Name(label), v=Value(ctx.clean(v, "speed"), "speed")),
                  Equation(target, [[tangential, normal]], "a", ref, rel, figure=False)]
     if result.get("radius") is None:
-        out.append(msg("curvature.straight", point=label))
+        out.append(msg("curvature.straight", point=Name(label)))
         return out
     radius = Value(ctx.clean(result["radius"], "len"), "len")
     out.append(Derived(Sym("ρ", label, vector=False), ["|", Sym("v", label), "|² / |", Sym("a", label, "n"), "|"],
                        radius, kind="radius", source=normal, arm=ctx.clean(v, "speed")))
-    out.append(msg("curvature.centre", point=label, centre=Value(ctx.clean(result["center"], "len"), "len")))
+    out.append(msg("curvature.centre", point=Name(label), centre=Value(ctx.clean(result["center"], "len"), "len")))
     return out

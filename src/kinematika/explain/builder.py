@@ -25,6 +25,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
     doc = Document(sol.model.name, sol.symbolic, sol.space.dim, length_unit)
     intro = Section(msg("sec.data"))
     intro.add(msg("data.symbolic" if sol.symbolic else "data.numeric", unit=length_unit))
+    intro.add(msg("data.planar" if sol.space.dim == 2 else "data.spatial"))
     doc.sections.append(intro)
     if ctx.planar:
         steps = solution_order(sol)

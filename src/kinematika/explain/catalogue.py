@@ -1,46 +1,86 @@
-"""Message catalogues: every word of an explanation, per language, in locales/LANG.yaml.
+"""Message catalogues: every word of an explanation, per language, in locales/LANG.ftl.
 
-A message is a string with named placeholders (`{body}`); the renderer fills them with
-formatted symbols, values and nested messages. The code holds keys only.
+The catalogues are Project Fluent files (`fluent.runtime`, CLDR plural rules through
+Babel): a message names its variables (`{ $body }`), and a translation chooses its own
+wording with selectors, so plurals (`{ $n -> [one] … *[other] … }`), Catalan elision
+(`{ ELISION($point) -> [vowel] d’{ $point } *[other] de { $point } }`) and Basque case
+endings (on a classifier noun, `{ $known } solidotik` / `solidoetatik`) live in the
+catalogue, not in code. The code holds keys only (`sec.data` is the Fluent id
+`sec-data`). See docs/explain.md for why Fluent rather than gettext.
 """
 from __future__ import annotations
 
 import re
 from functools import lru_cache
 from pathlib import Path
+from typing import Any
 
-import yaml
+from fluent.runtime import FluentBundle, FluentResource
 
 from ..errors import KinematikaError
 
 LANGS = ("en", "es", "ca", "eu")
 LOCALES = Path(__file__).resolve().parent / "locales"
-PLACEHOLDER = re.compile(r"\{(\w+)\}")
+VARIABLE = re.compile(r"\{\s*\$(\w+)")
+# letters whose Catalan name begins with a vowel sound: a, e, efa, hac, i, ela, ema, ena,
+# o, erra, essa, u, ics (a point named O4 is read "o quatre": d'O4, l'O4)
+VOWEL_LETTERS = set("AEFHILMNORSUX")
+
+
+def fluent_id(key: str) -> str:
+    """The Fluent identifier of a code key: dots become dashes."""
+    return key.replace(".", "-")
+
+
+def elision(value: Any) -> str:
+    """`vowel` when a name is read with an initial vowel sound (Catalan elides before it).
+
+    Symbols (a capital letter, maybe with digits or primes: A, O4, AB) are read letter by
+    letter, so their first letter's name counts; words elide before a vowel or an h.
+    """
+    text = str(getattr(value, "plain", value)).strip()
+    if not text:
+        return "other"
+    first = text[0]
+    symbol = first.isupper() and (len(text) == 1 or not text[1].islower())
+    if symbol:
+        return "vowel" if first in VOWEL_LETTERS else "other"
+    return "vowel" if first.lower() in "aeiouàèéíòóúh" else "other"
+
+
+FUNCTIONS = {"ELISION": elision}
 
 
 class Catalogue:
     """The messages of one language."""
 
-    def __init__(self, lang: str, messages: dict[str, str]) -> None:
+    def __init__(self, lang: str, source: str) -> None:
         self.lang = lang
-        self.messages = messages
+        self.source = source
+        self.bundle = FluentBundle([lang], functions=FUNCTIONS, use_isolating=False)
+        self.bundle.add_resource(FluentResource(source))
+
+    def keys(self) -> list[str]:
+        """The Fluent ids of the catalogue's messages, in file order."""
+        return re.findall(r"^([A-Za-z][\w-]*)\s*=", self.source, re.M)
+
+    def has(self, key: str) -> bool:
+        return self.bundle.has_message(fluent_id(key))
+
+    def format(self, key: str, args: dict[str, Any] | None = None) -> str:
+        """The message `key` with its variables filled (strings or numbers)."""
+        if not self.has(key):
+            raise KinematikaError("schema", f"no message {key!r} in the {self.lang!r} catalogue", "explain")
+        message = self.bundle.get_message(fluent_id(key))
+        text, errors = self.bundle.format_pattern(message.value, args or {})
+        if errors:
+            raise KinematikaError("schema", f"message {key!r} of the {self.lang!r} catalogue: {errors[0]}",
+                                  "explain")
+        return text
 
     def get(self, key: str) -> str:
-        try:
-            return self.messages[key]
-        except KeyError:
-            raise KinematikaError("schema", f"no message {key!r} in the {self.lang!r} catalogue",
-                                  "explain") from None
-
-    def pieces(self, key: str) -> list[tuple[str, str]]:
-        """The message split into ("text", literal) and ("arg", name) pieces."""
-        text, out, last = self.get(key), [], 0
-        for m in PLACEHOLDER.finditer(text):
-            out.append(("text", text[last:m.start()]))
-            out.append(("arg", m.group(1)))
-            last = m.end()
-        out.append(("text", text[last:]))
-        return out
+        """A message without variables (a word such as a subscript)."""
+        return self.format(key)
 
 
 @lru_cache(maxsize=None)
@@ -49,6 +89,4 @@ def catalogue(lang: str) -> Catalogue:
     if lang not in LANGS:
         raise KinematikaError("schema", f"unknown language {lang!r} (languages: {', '.join(LANGS)})",
                               "--lang")
-    with open(LOCALES / f"{lang}.yaml", encoding="utf-8") as fh:
-        data = yaml.safe_load(fh)
-    return Catalogue(lang, {str(k): str(v) for k, v in data.items()})
+    return Catalogue(lang, (LOCALES / f"{lang}.ftl").read_text(encoding="utf-8"))

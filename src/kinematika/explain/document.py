@@ -56,6 +56,43 @@ def msg(key: str, **args: Any) -> Msg:
 
 
 @dataclass(frozen=True)
+class Name:
+    """A name from the model, set as a name: a point (O4), a body (crank) or a joint (j3)."""
+
+    text: str
+    kind: str = "point"
+
+    def __str__(self) -> str:
+        return self.text
+
+
+@dataclass
+class Names:
+    """Several names as one message argument: a list with the language's "and"."""
+
+    items: list
+
+    def __len__(self) -> int:
+        return len(self.items)
+
+
+def point(name: str) -> Name:
+    return Name(name, "point")
+
+
+def body(name: str) -> Name:
+    return Name(name, "body")
+
+
+def joint(name: str) -> Name:
+    return Name(name, "joint")
+
+
+def names(items, kind: str) -> Names:
+    return Names([Name(str(i), kind) for i in items])
+
+
+@dataclass(frozen=True)
 class Ann:
     """What is known of a term (seed 001): magnitude M or ?, direction D, ?, ⊥ or ∥ a line.
 

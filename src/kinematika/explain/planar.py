@@ -13,8 +13,10 @@ from typing import Optional
 
 from ..model.model import Joint, PointPair
 from .context import Ctx, alpha_sym, omega_sym, segment
-from .document import Ann, Derived, Equation, Msg, Section, Sym, Term, msg
+from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .order import Step
+
+body_ = body
 from .terms import point_term, rotation_terms, slide_terms, target_term
 
 LEVEL_UNIT = {"v": "rate", "a": "rate2"}
@@ -38,8 +40,8 @@ class PlanarSteps:
         sec = Section(msg(title))
         sec.add(msg("v.intro" if self.level == "v" else "a.intro"))
         for i, step in enumerate(self.steps, 1):
-            sub = Section(msg("step.title", n=str(i), kind=msg(f"kind.{step.kind}"),
-                              bodies=", ".join(step.bodies)), level=3)
+            sub = Section(msg("step.title", n=i, kind=msg(f"kind.{step.kind}"),
+                              bodies=names(step.bodies, "body")), level=3)
             sub.blocks = self.step(step)
             sec.blocks.append(sub)
             self.known.update(step.bodies)
@@ -66,7 +68,7 @@ class PlanarSteps:
         for d in self.ctx.model.drivers:
             if d.index not in self.stated and set(driven(self.ctx, d)) & set(step.bodies):
                 self.stated.add(d.index)
-                out.append(driver_msg(d, self.level))
+                out.append(driver_msg(self.ctx, d, self.level))
         return out
 
     def input(self, step: Step, chain: list[Joint]) -> Optional[list]:
@@ -74,12 +76,12 @@ class PlanarSteps:
         out: list = [self.rate(body)]
         if j.type == "revolute":
             self.done.add(self.ctx.point_label(j.at, body))
-            out.append(msg("input.revolute", body=body, point=j.at))
+            out.append(msg("input.revolute", body=body_(body), point=point(j.at)))
             return out
         p = self.ctx.model.bodies[body].points[0]
         side = [point_term(self.ctx, self.level, p, j.a if j.b == body else j.b)] + \
             slide_terms(self.ctx, self.level, j.a if j.b == body else j.b, body, p, guide(j), j.id, False)
-        out += [msg("input.prismatic", body=body, joint=j.id), self.equation(self.target(p, body, True), [side], p, body)]
+        out += [msg("input.prismatic", body=body_(body), joint=joint(j.id)), self.equation(self.target(p, body, True), [side], p, body)]
         return out
 
     def rrr(self, step: Step, chain: list[Joint]) -> Optional[list]:
@@ -175,7 +177,7 @@ class PlanarSteps:
             target = Term(Sym("v", name), ctx.clean(ctx.vel(j.b, name), "speed"), Ann("?"), Ann("?"),
                           unknown=True, kind="point")
             eq = Equation(target, sides, "v", ctx.ref(name, j.b), position=contact.point)
-            return [msg("rolling.noslip", joint=j.id, a=j.a, b=j.b, point=name), eq]
+            return [msg("rolling.noslip", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(name)), eq]
         rel = Term(Sym("a", f"{name}∈{j.b}/{j.a}"), ctx.clean(ctx.acc(j.b, name, j.a), "accel"),
                    Ann("M"), Ann("para", msg("dir.normal")),
                    [omega_sym(j.b, j.a), " × (", Sym("v", f"{name}∈{j.a}"), " − ", Sym("v", name, "g"), ")"],
@@ -183,7 +185,7 @@ class PlanarSteps:
         target = Term(Sym("a", f"{name}∈{j.b}"), ctx.clean(ctx.acc(j.b, name), "accel"),
                       Ann("?"), Ann("?"), unknown=True, kind="point")
         eq = Equation(target, [sides[0], sides[1] + [rel]], "a", ctx.ref(name, j.b), position=contact.point)
-        return [msg("rolling.kept", joint=j.id, a=j.a, b=j.b, point=name), eq]
+        return [msg("rolling.kept", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(name)), eq]
 
     def contact_name(self, j: Joint) -> str:
         """J, or J10 for joint j10 (J1, J2 … in order when ids are names), not a point's name."""
@@ -247,7 +249,7 @@ class PlanarSteps:
             sym, ref, value = omega_sym(body), omega_sym(other), ctx.omega(body)
         else:
             sym, ref, value = alpha_sym(body), alpha_sym(other), ctx.alpha(body)
-        return Derived(sym, [ref, " ", msg("how.prismatic", joint=j.id)],
+        return Derived(sym, [ref, " ", msg("how.prismatic", joint=joint(j.id))],
                        ctx.value(value, LEVEL_UNIT[self.level]), body,
                        "omega" if self.level == "v" else "alpha", not ctx.symbolic)
 
@@ -304,26 +306,32 @@ def driven(ctx: Ctx, d) -> list[str]:
 
 
 def guide(j: Joint) -> Msg:
-    return msg("dir.guide", joint=j.id)
+    return msg("dir.guide", joint=joint(j.id))
 
 
-def driver_msg(d, level: str) -> Msg:
-    """The known motion as the model states it."""
+def driver_msg(ctx: Ctx, d, level: str) -> Msg:
+    """The known motion the model states, as values (never the model's own text)."""
     given = d.accel if level == "a" else d.value
-    text = given.text if hasattr(given, "text") else "(" + ", ".join(g.text for g in given) + ")"
+    inst, where = ctx.inst, d.where
     if d.kind == "omega":
         sym = omega_sym(d.body, d.relative_to) if level == "v" else alpha_sym(d.body, d.relative_to)
-        return msg("driver.omega", sym=sym, value=text)
+        unit = "rate" if level == "v" else "rate2"
+        return msg("driver.omega", sym=sym, value=Value(ctx.clean(inst.value(given, where), unit), unit))
     if d.kind == "joint":
-        return msg("driver.joint" if level == "v" else "driver.joint_accel", joint=d.joint, value=text)
-    sym = Sym("v" if level == "v" else "a", str(d.point))
+        turning = ctx.model.joint(d.joint).type in ("revolute", "wheel", "cylindrical")
+        unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")
+        value = Value(ctx.clean(inst.value(given, where), unit), unit)
+        return msg("driver.joint" if level == "v" else "driver.joint_accel", joint=joint(d.joint), value=value)
+    unit = "speed" if level == "v" else "accel"
+    sym = Sym("v" if level == "v" else "a", ctx.point_label(d.point.point, d.point.body))
     if d.along is not None:
-        along = (f"{d.along.start}{d.along.end}" if isinstance(d.along, PointPair)
-                 else "(" + ", ".join(e.text for e in d.along) + ")")
-        return msg("driver.along", sym=sym, value=text, along=along)
-    return msg("driver.velocity", sym=sym, value=text)
+        along = (Inline([point(d.along.start), point(d.along.end)]) if isinstance(d.along, PointPair)
+                 else Value(ctx.clean(inst.vector(d.along, where), ""), ""))
+        return msg("driver.along", sym=sym, value=Value(ctx.clean(inst.value(given, where), unit), unit),
+                   along=along)
+    return msg("driver.velocity", sym=sym, value=Value(ctx.clean(inst.vector(given, where), unit), unit))
 
 
 def condition_msg(j: Joint, level: str) -> Msg:
     """A joint's condition in words (for groups solved together)."""
-    return msg(f"cond.{j.type}", joint=j.id, a=j.a, b=j.b, point=j.at or "")
+    return msg(f"cond.{j.type}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))

@@ -13,7 +13,7 @@ from typing import Optional
 from ..model.model import PointRef, Question
 from ..questions.decompose import decompose
 from .context import Ctx, alpha_sym, omega_sym
-from .document import Ann, Derived, Equation, Inline, Section, Sym, Term, Value, msg
+from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Term, Value, msg
 from .terms import KNOWN, point_term, rotation_terms, target_term
 
 
@@ -119,7 +119,7 @@ def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> l
     q = Question("decompose", -1, ref, {}, None, moving)
     parts = decompose(ctx.sol, q)
     p, body = ref.point, ref.body
-    out: list = [msg("composition.point", point=p, body=body, frame=moving)]
+    out: list = [msg("composition.point", point=Name(p), body=Name(body, "body"), frame=Name(moving, "body"))]
     for level, key in (("v", "velocity"), ("a", "acceleration")):
         unit = "speed" if level == "v" else "accel"
         got = parts[key]

@@ -5,22 +5,24 @@ from __future__ import annotations
 
 from ..model.model import PointPair
 from .context import Ctx
-from .document import Arrow, Figure, Section, Table, Value, msg
+from .document import Arrow, Figure, Inline, Section, Table, Value, body, joint, msg, names, point
 from .order import Step
 
 
 def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model, sol = ctx.model, ctx.sol
     sec = Section(msg("sec.structure"))
-    bodies = [[msg("structure.frame", body=name) if name == ctx.frame else name, ", ".join(b.points),
+    bodies = [[msg("structure.frame", body=body(name)) if name == ctx.frame else body(name),
+               [point(p) for p in b.points],
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in model.bodies.items()]
     sec.add(Table([msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
-    joints = [[j.id, msg(f"joint.{j.type}"), f"{j.a} – {j.b}", _where(j)] for j in model.joints]
+    joints = [[joint(j.id), msg(f"joint.{j.type}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
+              for j in model.joints]
     sec.add(Table([msg("col.joint"), msg("col.type"), msg("col.bodies"), msg("col.where")], joints))
     d = sol.solver.analysis.diagnosis
-    sec.add(msg("structure.dof", n=str(d.n), moving=str(len(model.moving_bodies)),
-                rank=str(d.n - d.dof), dof=str(d.dof), conditions=str(d.conditions)))
+    sec.add(msg("structure.dof", n=d.n, moving=len(model.moving_bodies), rank=d.n - d.dof, dof=d.dof,
+                conditions=d.conditions))
     if ctx.planar:
         sec.add(mechanism_figure(ctx))
     if not steps:
@@ -28,22 +30,23 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     order = Section(msg("sec.order"), level=3)
     order.add(msg("order.assur" if steps and steps[0].source == "assur" else "order.blocks"))
     for i, s in enumerate(steps, 1):
-        known = ", ".join(s.known) if s.known else "—"
-        order.add(msg("order.item", n=str(i), kind=msg(f"kind.{s.kind}"), bodies=", ".join(s.bodies),
-                      joints=", ".join(s.joints) or "—", known=known))
+        order.add(msg("order.item", n=i, kind=msg(f"kind.{s.kind}"), bodies=names(s.bodies, "body"),
+                      joints=names(s.joints, "joint"), known=names(s.known, "body")))
     sec.add(order)
     return sec
 
 
-def _where(j) -> str:
-    parts = []
+def _where(ctx: Ctx, j) -> Inline | str:
+    """The joint's point and, for a guide, its direction (evaluated: never the model's text)."""
+    parts: list = []
     if j.at:
-        parts.append(j.at)
+        parts.append(point(j.at))
     if isinstance(j.along, PointPair):
-        parts.append(f"∥ {j.along.start}{j.along.end}")
+        parts += [" ∥ " if parts else "∥ ", point(j.along.start), point(j.along.end)]
     elif j.along is not None:
-        parts.append("∥ (" + ", ".join(e.text for e in j.along) + ")")
-    return " ".join(parts) or "—"
+        vec = ctx.clean(ctx.inst.vector(j.along, j.where), "")
+        parts += [" ∥ " if parts else "∥ ", Value(vec, "")]
+    return Inline(parts) if parts else "—"
 
 
 def mechanism_figure(ctx: Ctx) -> Figure:

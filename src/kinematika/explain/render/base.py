@@ -2,11 +2,36 @@
 numbers, formulas, units, symbols and the M/D/? annotations. A subclass gives the markup."""
 from __future__ import annotations
 
+import re
 from typing import Any
 
+from babel.lists import format_list
+
 from ..catalogue import Catalogue
-from ..document import Ann, CentreNote, Derived, Document, Equation, Figure, Inline, Msg, Section, Sym, Table, Value
+from ..document import (Ann, CentreNote, Derived, Document, Equation, Figure, Inline, Msg, Name, Names, Section,
+                        Sym, Table, Value)
 from .svg import sym_label
+
+TOKEN = "\ue000{}\ue001"
+TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
+
+
+class Slot(str):
+    """A message variable as Fluent sees it: a token the renderer replaces by the
+    variable's markup; `plain` is its text, for the catalogue's grammar (elision)."""
+
+    plain: str = ""
+
+
+def plain(x: Any) -> str:
+    """The text a name argument is read as (its first name for a list)."""
+    if isinstance(x, Name):
+        return x.text
+    if isinstance(x, Names):
+        return plain(x.items[0]) if x.items else ""
+    if isinstance(x, str):
+        return x
+    return ""
 
 UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "rate2": "rad/s²"}
 
@@ -56,12 +81,29 @@ class Renderer:
 
     # messages and their arguments ----------------------------------------------------------
     def message(self, m: Msg) -> str:
-        out = []
-        for kind, piece in self.cat.pieces(m.key):
-            out.append(self.esc(piece) if kind == "text" else self.arg(m.args.get(piece, "")))
-        return "".join(out)
+        """The catalogue's message with its variables: numbers go to Fluent as numbers (for
+        plurals), everything else as a token replaced afterwards by its markup, so the
+        catalogue's text is escaped and the variables' markup is not."""
+        rendered: list[str] = []
+        args: dict[str, Any] = {}
+        for name, x in m.args.items():
+            if isinstance(x, int) and not isinstance(x, bool):
+                args[name] = x
+                continue
+            if isinstance(x, Names):
+                args[f"{name}_n"] = len(x)
+            slot = Slot(TOKEN.format(len(rendered)))
+            slot.plain = plain(x)
+            rendered.append(self.arg(x))
+            args[name] = slot
+        parts = TOKEN_RE.split(self.cat.format(m.key, args))
+        return "".join(self.esc(p) if i % 2 == 0 else rendered[int(p)] for i, p in enumerate(parts))
 
     def arg(self, x: Any) -> str:
+        if isinstance(x, Name):
+            return self.name(x)
+        if isinstance(x, Names):
+            return format_list([self.arg(i) for i in x.items], locale=self.cat.lang) if x.items else "—"
         if isinstance(x, str):
             return self.esc(x)
         if isinstance(x, Sym):
@@ -84,6 +126,10 @@ class Renderer:
         if isinstance(c, list) and c and isinstance(c[0], tuple):
             return "; ".join((self.esc(label) + " = " if label else "") + self.value(v) for label, v in c)
         return self.arg(c)
+
+    def name(self, n: Name) -> str:
+        """A model's name as a name (formats set points, bodies and joints apart)."""
+        return self.esc(n.text)
 
     def caption(self, fig: Figure) -> str:
         """A figure's caption, saying when it is drawn at sample values of the symbols."""
@@ -163,19 +209,19 @@ class Renderer:
         a, b = c.pair
         name = Sym("I", f"{a},{b}", vector=False)
         if c.how == "joint":
-            why = Msg(f"centre.joint.{c.joint_type}", {"joint": c.via[0]})
+            why = Msg(f"centre.joint.{c.joint_type}", {"joint": Name(c.via[0], "joint")})
         elif c.how == "kennedy":
             k1, k2 = c.via
-            why = Msg("centre.kennedy", {"k1": k1, "k2": k2,
+            why = Msg("centre.kennedy", {"k1": Name(k1, "body"), "k2": Name(k2, "body"),
                                          "l1": [Sym("I", f"{a},{k1}", vector=False), Sym("I", f"{k1},{b}", vector=False)],
                                          "l2": [Sym("I", f"{a},{k2}", vector=False), Sym("I", f"{k2},{b}", vector=False)]})
         elif len(c.witnesses) == 2:
             (p, vp), (q, vq) = c.witnesses
-            why = Msg("centre.velocities", {"p": p, "q": q, "vp": Value(vp, "speed"), "vq": Value(vq, "speed"),
-                                            "frame": a})
+            why = Msg("centre.velocities", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
+                                            "vq": Value(vq, "speed"), "frame": Name(a, "body")})
         else:
-            why = Msg("centre.omega", {"frame": a})
-        return self.message(Msg("centre.line", {"centre": name, "a": a, "b": b, "why": why,
+            why = Msg("centre.omega", {"frame": Name(a, "body")})
+        return self.message(Msg("centre.line", {"centre": name, "a": Name(a, "body"), "b": Name(b, "body"), "why": why,
                                                 "where": self.where(c.value)}))
 
     def where(self, value: dict) -> Msg:

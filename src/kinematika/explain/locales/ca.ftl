@@ -1,0 +1,174 @@
+## Missatges en català de `kinematika explain` (termes del curs: velocitat, acceleració,
+## arrossegament, relativa, CIR). Cal conservar els marcadors entre claus.
+
+sec-data = Dades
+data-numeric = Els nombres són els del resolutor. Unitats: longituds en { $unit } (les del model), velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
+data-planar = Moviment pla: les velocitats i acceleracions angulars tenen signe, positives en sentit antihorari.
+data-spatial = Les velocitats i acceleracions angulars són vectors (regla de la mà dreta al voltant de la seva direcció).
+data-symbolic = Les dades són símbols: cada valor és la fórmula exacta del resolutor. Les figures es dibuixen amb valors de mostra dels símbols.
+sec-structure = Estructura
+col-body = sòlid
+col-points = punts
+col-shapes = formes
+col-joint = enllaç
+col-type = tipus
+col-bodies = sòlids
+col-where = on
+col-omega = velocitat angular
+col-alpha = acceleració angular
+col-question = pregunta
+col-answer = resposta
+structure-frame = { $body } (fix)
+structure-dof = Incògnites: { $n } components de velocitat { $moving ->
+        [one] d’un sòlid mòbil
+       *[other] de { $moving } sòlids mòbils
+    }. Les condicions de velocitat dels enllaços tenen rang { $rank }, de manera que el mecanisme té { $dof ->
+        [one] un grau
+       *[other] { $dof } graus
+    } de llibertat (comptats pel rang); les dades de moviment donen { $conditions ->
+        [one] una condició independent
+       *[other] { $conditions } condicions independents
+    }.
+shape-circle = circumferència
+shape-line = recta
+shape-disc = disc
+shape-plane = pla
+joint-revolute = articulació (R)
+joint-prismatic = prismàtic (P)
+joint-slot = passador en ranura
+joint-wheel = roda (sense lliscament lateral)
+joint-rolling = rodolament
+joint-gear = engranatge
+joint-weld = unió rígida
+joint-spherical = ròtula esfèrica
+joint-cylindrical = cilíndric
+fig-mechanism = El mecanisme en aquest instant, a escala; fletxes: velocitats dels punts (proporcionals).
+fig-polygon_v = Polígon de velocitats des del pol o, a escala: en negre els termes coneguts, en vermell els trobats en aquest pas, en blau el resultat.
+fig-polygon_a = Polígon d’acceleracions des del pol o, a escala: en negre els termes coneguts, en vermell els trobats en aquest pas, en blau el resultat.
+fig-sample = Dibuixat amb valors de mostra dels símbols.
+sec-order = Ordre de resolució
+order-assur = El mecanisme es descompon en les seves entrades i grups d’Assur (díades); cada grup es resol a partir de sòlids ja coneguts:
+order-blocks = El mecanisme no es descompon en díades a partir de manovelles o corredores motores, de manera que l’ordre surt de la forma triangular per blocs de les equacions de velocitat; cada grup es troba a partir dels sòlids ja coneguts:
+order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
+        [one] enllaç
+       *[other] enllaços
+    } { $joints }), a partir { ELISION($known) ->
+        [vowel] d’{ $known }
+       *[other] de { $known }
+    }.
+kind-input = entrada (sòlid motor)
+kind-RRR = díade RRR
+kind-RRP = díade RRP
+kind-RPR = díade RPR
+kind-PRP = díade PRP
+kind-other = grup resolt conjuntament
+step-title = Pas { $n }: { $kind } — { $bodies }
+sec-velocities = Velocitats
+sec-accelerations = Acceleracions
+v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites; en vermell, els termes trobats en el pas.
+a-intro = Conegudes les velocitats, tots els termes normals i de Coriolis són coneguts; les incògnites són els termes tangencials i relatius.
+driver-omega = Dada: { $sym } = { $value }.
+driver-joint = Dada: la velocitat de l’enllaç { $joint } és { $value }.
+driver-joint_accel = Dada: l’acceleració de l’enllaç { $joint } és { $value }.
+driver-velocity = Dada: { $sym } = { $value }.
+driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
+input-revolute = { $body } gira al voltant del punt fix { $point }: els seus punts descriuen circumferències centrades a { $point }.
+input-prismatic = { $body } es trasllada sense girar al llarg de la guia de l’enllaç { $joint }.
+other-intro = Aquests sòlids es troben alhora a partir de les condicions dels seus enllaços:
+cond-revolute = enllaç { $joint }, articulació a { $point }: { $point } és un punt { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    } i { ELISION($b) ->
+        [vowel] d’{ $b }
+       *[other] de { $b }
+    }.
+cond-prismatic = enllaç { $joint }, prismàtic: { $b } llisca sobre { $a } sense girar respecte { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    }.
+cond-slot = enllaç { $joint }, passador { $point } en ranura: la seva velocitat relativa al sòlid amb ranura segueix la ranura.
+cond-wheel = enllaç { $joint }, roda a { $point }: sense velocitat lateral respecte { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    }.
+cond-weld = enllaç { $joint }: { $a } i { $b } es mouen com un sol sòlid.
+cond-spherical = enllaç { $joint }, ròtula a { $point }: { $point } és un punt { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    } i { ELISION($b) ->
+        [vowel] d’{ $b }
+       *[other] de { $b }
+    }.
+cond-cylindrical = enllaç { $joint }, cilíndric: { $b } gira al voltant de l’eix { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    } i hi llisca.
+rolling-noslip = enllaç { $joint }: { $b } rodola sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
+rolling-kept = enllaç { $joint }: el contacte es manté: a { $point } les acceleracions dels punts materials { ELISION($b) ->
+        [vowel] d’{ $b }
+       *[other] de { $b }
+    } i { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    } només difereixen en un terme segons la normal comuna.
+dir-guide = guia { $joint }
+dir-normal = normal
+how-prismatic = (enllaç prismàtic { $joint }: sense rotació relativa)
+carry-anchor = De la resolució del grup: { $sym } = { $value }.
+sense-ccw = antihorari
+sense-cw = horari
+sub-rel = REL
+sub-drag = ar
+sub-cor = Cor
+sec-rates_summary = Velocitats i acceleracions angulars
+sec-centres = Centres instantanis de rotació (CIR)
+centres-intro = I amb els noms de dos sòlids és el CIR del seu moviment relatiu: el punt on la velocitat relativa és nul·la.
+centre-line = { $centre }: { $why } { $where }
+centre-joint-revolute = l’eix de l’articulació { $joint },
+centre-joint-rolling = el punt de contacte de l’enllaç { $joint } (rodolament sense lliscament),
+centre-joint-gear = el contacte de les circumferències primitives de l’engranatge { $joint },
+centre-joint-prismatic = l’enllaç { $joint } és prismàtic: el moviment relatiu és una translació i el CIR és a la perpendicular a la guia,
+centre-joint-weld = l’enllaç { $joint } uneix rígidament els dos sòlids:
+centre-kennedy = per Aronhold–Kennedy és a la recta que passa per { $l1 } (tercer sòlid { $k1 }) i a la recta que passa per { $l2 } (tercer sòlid { $k2 }); aquestes rectes es tallen
+centre-velocities = les velocitats respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    } { ELISION($p) ->
+        [vowel] d’{ $p }
+       *[other] de { $p }
+    }, { $vp }, i { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }, { $vq }, són perpendiculars a les rectes que els uneixen amb el CIR; les perpendiculars es tallen
+centre-omega = a partir de la velocitat d’un punt i de la velocitat angular respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }, el CIR és
+centre-at = a { $point }.
+centre-infinity = a l’infinit, en la direcció { $direction }.
+centre-rest = no hi ha moviment relatiu.
+sec-rates = Velocitats i acceleracions angulars
+rates-intro = Cada sòlid gira respecte del sòlid que el porta: { $w }, i, derivant en els eixos fixos, { $a }.
+fields-intro = La velocitat i l’acceleració de cada punt, a partir d’un punt del mateix sòlid ja conegut (el seu enllaç):
+sec-composition = Composició de moviments
+composition-intro = El moviment d’un punt és el d’arrossegament (el del punt de la referència mòbil on és) més el relatiu a aquesta referència, més, en acceleracions, el terme de Coriolis { $cor }.
+composition-point = Punt { $point } { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }, referència mòbil { $frame }:
+composition-drag = Arrossegament: el moviment del punt de la referència mòbil on és el punt:
+composition-relative = Relatiu: el moviment vist des de la referència mòbil:
+sec-curvature = Curvatura de les trajectòries
+curvature-intro = L’acceleració es descompon en una part tangencial, segons la velocitat, i una de normal, perpendicular a ella; el radi de curvatura és { $rho }.
+curvature-point = Punt { $point }: velocitat { $v }.
+curvature-rest = El punt { $point } és en repòs: la seva trajectòria no té curvatura en aquest instant.
+curvature-straight = L’acceleració normal { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } és nul·la: la seva trajectòria és recta aquí (o hi té un punt d’inflexió).
+curvature-centre = El centre de curvatura de la trajectòria { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } és a { $centre }, del costat de l’acceleració normal.
+sec-answers = Respostes
+answers-none = El model no fa preguntes.

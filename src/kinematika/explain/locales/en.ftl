@@ -1,0 +1,123 @@
+## English messages of `kinematika explain`. Placeholders in braces are filled by the
+## renderer with symbols, values or other messages; keep them in every translation.
+
+sec-data = Data
+data-numeric = The numbers are the solver's. Units: lengths in { $unit } (as in the model), velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
+data-planar = Planar motion: angular velocities and accelerations are signed, counter-clockwise positive.
+data-spatial = Angular velocities and accelerations are vectors (right-hand rule about their direction).
+data-symbolic = The data are symbols: every value is the solver's exact formula. Figures are drawn at sample values of the symbols.
+sec-structure = Structure
+col-body = body
+col-points = points
+col-shapes = shapes
+col-joint = joint
+col-type = type
+col-bodies = bodies
+col-where = where
+col-omega = angular velocity
+col-alpha = angular acceleration
+col-question = question
+col-answer = answer
+structure-frame = { $body } (fixed)
+structure-dof = Unknowns: { $n } velocity components of { $moving ->
+        [one] one moving body
+       *[other] { $moving } moving bodies
+    }. The velocity conditions of the joints have rank { $rank }, so the mechanism has { $dof ->
+        [one] one degree
+       *[other] { $dof } degrees
+    } of freedom (counted by rank); the drivers give { $conditions ->
+        [one] one independent condition
+       *[other] { $conditions } independent conditions
+    }.
+shape-circle = circle
+shape-line = line
+shape-disc = disc
+shape-plane = plane
+joint-revolute = revolute (R)
+joint-prismatic = prismatic (P)
+joint-slot = pin in slot
+joint-wheel = wheel (knife edge)
+joint-rolling = rolling
+joint-gear = gear
+joint-weld = weld
+joint-spherical = spherical
+joint-cylindrical = cylindrical
+fig-mechanism = The mechanism at this instant, to scale; arrows: velocities of the points (proportional).
+fig-polygon_v = Velocity polygon from the pole o, to scale: known terms in black, terms found in this step in red, the result in blue.
+fig-polygon_a = Acceleration polygon from the pole o, to scale: known terms in black, terms found in this step in red, the result in blue.
+fig-sample = Drawn at sample values of the symbols.
+sec-order = Order of solution
+order-assur = The mechanism is decomposed into its inputs and Assur groups (dyads); each group is solved from bodies already known:
+order-blocks = The mechanism does not decompose from driven cranks or sliders into dyads, so the order comes from the block-triangular form of the velocity equations; each group is found from the bodies already known:
+order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
+        [one] joint
+       *[other] joints
+    } { $joints }), from { $known }.
+kind-input = input (driven body)
+kind-RRR = RRR dyad
+kind-RRP = RRP dyad
+kind-RPR = RPR dyad
+kind-PRP = PRP dyad
+kind-other = group solved together
+step-title = Step { $n }: { $kind } — { $bodies }
+sec-velocities = Velocities
+sec-accelerations = Accelerations
+v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns; the terms found in the step are in red.
+a-intro = With the velocities known, every normal term and every Coriolis term is known; the tangential and relative terms are the unknowns.
+driver-omega = Given: { $sym } = { $value }.
+driver-joint = Given: the rate of joint { $joint } is { $value }.
+driver-joint_accel = Given: the acceleration of joint { $joint } is { $value }.
+driver-velocity = Given: { $sym } = { $value }.
+driver-along = Given: the component of { $sym } along { $along } is { $value }.
+input-revolute = { $body } turns about the fixed pivot { $point }: its points move on circles about { $point }.
+input-prismatic = { $body } slides without turning along the guide of joint { $joint }.
+other-intro = These bodies are found together from the conditions of their joints:
+cond-revolute = joint { $joint }, revolute at { $point }: { $point } is one point of { $a } and of { $b }.
+cond-prismatic = joint { $joint }, prismatic: { $b } slides along { $a } without turning relative to it.
+cond-slot = joint { $joint }, pin { $point } in a slot: its velocity relative to the slotted body is along the slot.
+cond-wheel = joint { $joint }, wheel at { $point }: no sideways velocity relative to { $a }.
+cond-weld = joint { $joint }: { $a } and { $b } move as one body.
+cond-spherical = joint { $joint }, ball joint at { $point }: { $point } is one point of { $a } and of { $b }.
+cond-cylindrical = joint { $joint }, cylindrical: { $b } turns about and slides along the axis of { $a }.
+rolling-noslip = joint { $joint }: { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity.
+rolling-kept = joint { $joint }: the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
+dir-guide = guide { $joint }
+dir-normal = normal
+how-prismatic = (prismatic pair { $joint }: no relative rotation)
+carry-anchor = From the solution of the group: { $sym } = { $value }.
+sense-ccw = counter-clockwise
+sense-cw = clockwise
+sub-rel = rel
+sub-drag = drag
+sub-cor = Cor
+sec-rates_summary = Angular velocities and accelerations
+sec-centres = Instant centres
+centres-intro = I with the names of two bodies is the instant centre of their relative motion: the point where the relative velocity is zero.
+centre-line = { $centre }: { $why } { $where }
+centre-joint-revolute = the pin of joint { $joint },
+centre-joint-rolling = the contact point of joint { $joint } (rolling without slipping),
+centre-joint-gear = the contact of the pitch circles of gear { $joint },
+centre-joint-prismatic = joint { $joint } is prismatic: the relative motion is a translation and the centre is perpendicular to the guide,
+centre-joint-weld = joint { $joint } welds the two bodies:
+centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines meet
+centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
+centre-omega = from the velocity of one point and the angular velocity relative to { $frame }, the centre is
+centre-at = at { $point }.
+centre-infinity = at infinity, in the direction { $direction }.
+centre-rest = there is no relative motion.
+sec-rates = Angular velocities and accelerations
+rates-intro = Each body turns relative to the body that carries it: { $w }, and, differentiating in the fixed axes, { $a }.
+fields-intro = The velocity and acceleration of every point, from a point of the same body already known (its joint):
+sec-composition = Composition of motions
+composition-intro = The motion of a point is its drag motion (that of the point of the moving frame where it is) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
+composition-point = Point { $point } of { $body }, moving frame { $frame }:
+composition-drag = Drag: the motion of the point of the moving frame where the point is:
+composition-relative = Relative: the motion seen from the moving frame:
+sec-curvature = Curvature of paths
+curvature-intro = The acceleration splits into a tangential part along the velocity and a normal part across it; the radius of curvature is { $rho }.
+curvature-point = Point { $point }: velocity { $v }.
+curvature-rest = Point { $point } is at rest: its path has no curvature at this instant.
+curvature-straight = The normal acceleration of { $point } is zero: its path is straight here (or at an inflection point).
+curvature-centre = The centre of curvature of the path of { $point } is at { $centre }, on the side of the normal acceleration.
+sec-answers = Answers
+answers-none = The model asks no questions.

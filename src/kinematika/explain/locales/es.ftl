@@ -1,0 +1,123 @@
+## Mensajes en castellano de `kinematika explain` (términos del curso: velocidad,
+## aceleración, arrastre, relativa, CIR). Conservar los marcadores entre llaves.
+
+sec-data = Datos
+data-numeric = Los números son los del resolvedor. Unidades: longitudes en { $unit } (las del modelo), velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
+data-planar = Movimiento plano: las velocidades y aceleraciones angulares llevan signo, positivas en sentido antihorario.
+data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
+data-symbolic = Los datos son símbolos: cada valor es la fórmula exacta del resolvedor. Las figuras se dibujan con valores de muestra de los símbolos.
+sec-structure = Estructura
+col-body = sólido
+col-points = puntos
+col-shapes = formas
+col-joint = par
+col-type = tipo
+col-bodies = sólidos
+col-where = dónde
+col-omega = velocidad angular
+col-alpha = aceleración angular
+col-question = pregunta
+col-answer = respuesta
+structure-frame = { $body } (fijo)
+structure-dof = Incógnitas: { $n } componentes de velocidad de { $moving ->
+        [one] un sólido móvil
+       *[other] { $moving } sólidos móviles
+    }. Las condiciones de velocidad de los pares tienen rango { $rank }, así que el mecanismo tiene { $dof ->
+        [one] un grado
+       *[other] { $dof } grados
+    } de libertad (contados por el rango); los datos de movimiento dan { $conditions ->
+        [one] una condición independiente
+       *[other] { $conditions } condiciones independientes
+    }.
+shape-circle = circunferencia
+shape-line = recta
+shape-disc = disco
+shape-plane = plano
+joint-revolute = de rotación (R)
+joint-prismatic = prismático (P)
+joint-slot = pasador en ranura
+joint-wheel = rueda (sin deslizamiento lateral)
+joint-rolling = rodadura
+joint-gear = engranaje
+joint-weld = unión rígida
+joint-spherical = esférico
+joint-cylindrical = cilíndrico
+fig-mechanism = El mecanismo en este instante, a escala; flechas: velocidades de los puntos (proporcionales).
+fig-polygon_v = Polígono de velocidades desde el polo o, a escala: en negro los términos conocidos, en rojo los hallados en este paso, en azul el resultado.
+fig-polygon_a = Polígono de aceleraciones desde el polo o, a escala: en negro los términos conocidos, en rojo los hallados en este paso, en azul el resultado.
+fig-sample = Dibujado con valores de muestra de los símbolos.
+sec-order = Orden de resolución
+order-assur = El mecanismo se descompone en sus entradas y grupos de Assur (díadas); cada grupo se resuelve a partir de sólidos ya conocidos:
+order-blocks = El mecanismo no se descompone en díadas a partir de manivelas o correderas motoras, así que el orden sale de la forma triangular por bloques de las ecuaciones de velocidad; cada grupo se halla a partir de los sólidos ya conocidos:
+order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
+        [one] par
+       *[other] pares
+    } { $joints }), a partir de { $known }.
+kind-input = entrada (sólido motor)
+kind-RRR = díada RRR
+kind-RRP = díada RRP
+kind-RPR = díada RPR
+kind-PRP = díada PRP
+kind-other = grupo resuelto en conjunto
+step-title = Paso { $n }: { $kind } — { $bodies }
+sec-velocities = Velocidades
+sec-accelerations = Aceleraciones
+v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas; en rojo, los términos hallados en el paso.
+a-intro = Conocidas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
+driver-omega = Dato: { $sym } = { $value }.
+driver-joint = Dato: la velocidad del par { $joint } es { $value }.
+driver-joint_accel = Dato: la aceleración del par { $joint } es { $value }.
+driver-velocity = Dato: { $sym } = { $value }.
+driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
+input-revolute = { $body } gira alrededor del punto fijo { $point }: sus puntos describen circunferencias centradas en { $point }.
+input-prismatic = { $body } se traslada sin girar a lo largo de la guía del par { $joint }.
+other-intro = Estos sólidos se hallan a la vez a partir de las condiciones de sus pares:
+cond-revolute = par { $joint }, de rotación en { $point }: { $point } es un punto de { $a } y de { $b }.
+cond-prismatic = par { $joint }, prismático: { $b } se desliza sobre { $a } sin girar respecto de él.
+cond-slot = par { $joint }, pasador { $point } en ranura: su velocidad relativa al sólido ranurado sigue la ranura.
+cond-wheel = par { $joint }, rueda en { $point }: sin velocidad lateral respecto de { $a }.
+cond-weld = par { $joint }: { $a } y { $b } se mueven como un solo sólido.
+cond-spherical = par { $joint }, esférico en { $point }: { $point } es un punto de { $a } y de { $b }.
+cond-cylindrical = par { $joint }, cilíndrico: { $b } gira alrededor del eje de { $a } y se desliza a lo largo de él.
+rolling-noslip = par { $joint }: { $b } rueda sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
+rolling-kept = par { $joint }: el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
+dir-guide = guía { $joint }
+dir-normal = normal
+how-prismatic = (par prismático { $joint }: sin rotación relativa)
+carry-anchor = De la resolución del grupo: { $sym } = { $value }.
+sense-ccw = antihorario
+sense-cw = horario
+sub-rel = rel
+sub-drag = arr
+sub-cor = Cor
+sec-rates_summary = Velocidades y aceleraciones angulares
+sec-centres = Centros instantáneos de rotación (CIR)
+centres-intro = I con los nombres de dos sólidos es el CIR de su movimiento relativo: el punto donde la velocidad relativa es nula.
+centre-line = { $centre }: { $why } { $where }
+centre-joint-revolute = el eje del par { $joint },
+centre-joint-rolling = el punto de contacto del par { $joint } (rodadura sin deslizamiento),
+centre-joint-gear = el contacto de las circunferencias primitivas del engranaje { $joint },
+centre-joint-prismatic = el par { $joint } es prismático: el movimiento relativo es una traslación y el CIR está en la perpendicular a la guía,
+centre-joint-weld = el par { $joint } une rígidamente los dos sólidos:
+centre-kennedy = por Aronhold–Kennedy está en la recta que pasa por { $l1 } (tercer sólido { $k1 }) y en la recta que pasa por { $l2 } (tercer sólido { $k2 }); estas rectas se cortan
+centre-velocities = las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
+centre-omega = a partir de la velocidad de un punto y de la velocidad angular respecto de { $frame }, el CIR está
+centre-at = en { $point }.
+centre-infinity = en el infinito, en la dirección { $direction }.
+centre-rest = no hay movimiento relativo.
+sec-rates = Velocidades y aceleraciones angulares
+rates-intro = Cada sólido gira respecto del sólido que lo lleva: { $w }, y, derivando en los ejes fijos, { $a }.
+fields-intro = La velocidad y la aceleración de cada punto, a partir de un punto del mismo sólido ya conocido (su par):
+sec-composition = Composición de movimientos
+composition-intro = El movimiento de un punto es el de arrastre (el del punto de la referencia móvil donde está) más el relativo a esa referencia, más, en aceleraciones, el término de Coriolis { $cor }.
+composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
+composition-drag = Arrastre: el movimiento del punto de la referencia móvil donde está el punto:
+composition-relative = Relativo: el movimiento visto desde la referencia móvil:
+sec-curvature = Curvatura de las trayectorias
+curvature-intro = La aceleración se descompone en una parte tangencial, según la velocidad, y una normal, perpendicular a ella; el radio de curvatura es { $rho }.
+curvature-point = Punto { $point }: velocidad { $v }.
+curvature-rest = El punto { $point } está en reposo: su trayectoria no tiene curvatura en este instante.
+curvature-straight = La aceleración normal de { $point } es nula: su trayectoria es recta aquí (o tiene un punto de inflexión).
+curvature-centre = El centro de curvatura de la trayectoria de { $point } está en { $centre }, del lado de la aceleración normal.
+sec-answers = Respuestas
+answers-none = El modelo no hace preguntas.

@@ -1,0 +1,126 @@
+## `kinematika explain`-en euskarazko mezuak (ikastaroaren terminoak: abiadura,
+## azelerazioa, arrastrea, erlatiboa). Giltza arteko markak bere horretan utzi.
+
+sec-data = Datuak
+data-numeric = Zenbakiak ebazleak emandakoak dira. Unitateak: luzerak { $unit }-tan (ereduarenak), abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
+data-planar = Mugimendu laua: abiadura eta azelerazio angeluarrek zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
+data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
+data-symbolic = Datuak ikurrak dira: balio bakoitza ebazlearen formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude.
+sec-structure = Egitura
+col-body = solidoa
+col-points = puntuak
+col-shapes = formak
+col-joint = lotura
+col-type = mota
+col-bodies = solidoak
+col-where = non
+col-omega = abiadura angeluarra
+col-alpha = azelerazio angeluarra
+col-question = galdera
+col-answer = erantzuna
+structure-frame = { $body } (finkoa)
+structure-dof = Ezezagunak: { $moving ->
+        [one] solido mugikor baten
+       *[other] { $moving } solido mugikorren
+    } { $n } abiadura-osagai. Loturen abiadura-baldintzen heina { $rank } da; beraz, mekanismoak { $dof ->
+        [one] askatasun-gradu bat du
+       *[other] { $dof } askatasun-gradu ditu
+    } (heinaren bidez zenbatuta); eragileek { $conditions ->
+        [one] baldintza independente bat ematen dute
+       *[other] { $conditions } baldintza independente ematen dituzte
+    }.
+shape-circle = zirkunferentzia
+shape-line = zuzena
+shape-disc = diskoa
+shape-plane = planoa
+joint-revolute = giltzadura (R)
+joint-prismatic = prismatikoa (P)
+joint-slot = ziria arteka batean
+joint-wheel = gurpila (alboko irristarik gabe)
+joint-rolling = errodadura
+joint-gear = engranajea
+joint-weld = lotura zurruna
+joint-spherical = esferikoa
+joint-cylindrical = zilindrikoa
+fig-mechanism = Mekanismoa une honetan, eskalan; geziak: puntuen abiadurak (proportzionalak).
+fig-polygon_v = Abiaduren poligonoa o polotik, eskalan: beltzez termino ezagunak, gorriz urrats honetan aurkitutakoak, urdinez emaitza.
+fig-polygon_a = Azelerazioen poligonoa o polotik, eskalan: beltzez termino ezagunak, gorriz urrats honetan aurkitutakoak, urdinez emaitza.
+fig-sample = Ikurren lagin-balioekin marraztua.
+sec-order = Ebazpen-ordena
+order-assur = Mekanismoa bere sarreretan eta Assur taldeetan (diadetan) deskonposatzen da; talde bakoitza jadanik ezagunak diren solidoetatik ebazten da:
+order-blocks = Mekanismoa ez da diadetan deskonposatzen biela edo irristari eragileetatik abiatuta; beraz, ordena abiadura-ekuazioen bloke-triangeluar formatik dator, eta talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da:
+order-item = { $n }. { $kind }: { $bodies } ({ $joints } { $joints_n ->
+        [one] lotura
+       *[other] loturak
+    }), { $known } { $known_n ->
+        [one] solidotik
+       *[other] solidoetatik
+    }.
+kind-input = sarrera (solido eragilea)
+kind-RRR = RRR diada
+kind-RRP = RRP diada
+kind-RPR = RPR diada
+kind-PRP = PRP diada
+kind-other = batera ebatzitako taldea
+step-title = { $n }. urratsa: { $kind } — { $bodies }
+sec-velocities = Abiadurak
+sec-accelerations = Azelerazioak
+v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu; gorriz, urratsean aurkitutako terminoak.
+a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
+driver-omega = Datua: { $sym } = { $value }.
+driver-joint = Datua: { $joint } loturaren abiadura { $value } da.
+driver-joint_accel = Datua: { $joint } loturaren azelerazioa { $value } da.
+driver-velocity = Datua: { $sym } = { $value }.
+driver-along = Datua: { $sym } abiaduraren { $along } norabideko osagaia { $value } da.
+input-revolute = { $body } { $point } puntu finkoaren inguruan biratzen da: bere puntuek { $point } zentrodun zirkunferentziak deskribatzen dituzte.
+input-prismatic = { $body } biratu gabe traslatzen da { $joint } loturaren gidan zehar.
+other-intro = Solido hauek batera aurkitzen dira beren loturen baldintzetatik:
+cond-revolute = { $joint } lotura, giltzadura { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
+cond-prismatic = { $joint } lotura, prismatikoa: { $b } { $a } solidoaren gainean irristatzen da, harekiko biratu gabe.
+cond-slot = { $joint } lotura, { $point } ziria arteka batean: artekadun solidoarekiko abiadura artekaren norabidean dago.
+cond-wheel = { $joint } lotura, gurpila { $point } puntuan: ez dago alboko abiadurarik { $a } solidoarekiko.
+cond-weld = { $joint } lotura: { $a } eta { $b } solido bakar bat bezala mugitzen dira.
+cond-spherical = { $joint } lotura, esferikoa { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
+cond-cylindrical = { $joint } lotura, zilindrikoa: { $b } { $a } solidoaren ardatzaren inguruan biratzen eta haren luzeran irristatzen da.
+rolling-noslip = { $joint } lotura: { $b } { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute.
+rolling-kept = { $joint } lotura: kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak.
+dir-guide = { $joint } gida
+dir-normal = normala
+how-prismatic = ({ $joint } lotura prismatikoa: biraketa erlatiborik gabe)
+carry-anchor = Taldearen ebazpenetik: { $sym } = { $value }.
+sense-ccw = erlojuaren orratzen aurka
+sense-cw = erlojuaren orratzen noranzkoan
+sub-rel = erl
+sub-drag = arr
+sub-cor = Cor
+sec-rates_summary = Abiadura eta azelerazio angeluarrak
+sec-centres = Biraketa-zentro instantaneoak
+centres-intro = I ikurrak, bi solidoren izenekin, haien mugimendu erlatiboaren biraketa-zentro instantaneoa adierazten du: abiadura erlatiboa nulua den puntua.
+centre-line = { $centre }: { $why } { $where }
+centre-joint-revolute = { $joint } giltzaduraren ardatza,
+centre-joint-rolling = { $joint } loturaren kontaktu-puntua (irristatu gabeko errodadura),
+centre-joint-gear = { $joint } engranajearen zirkunferentzia primitiboen kontaktua,
+centre-joint-prismatic = { $joint } lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta zentroa gidaren perpendikularrean dago,
+centre-joint-weld = { $joint } loturak bi solidoak zurrunki lotzen ditu:
+centre-kennedy = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean dago ({ $k1 } hirugarren solidoa) eta { $l2 } zentroetatik pasatzen denean ({ $k2 } hirugarren solidoa); zuzen horiek ebakitzen dira
+centre-velocities = { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
+centre-omega = puntu baten abiaduratik eta { $frame } solidoarekiko abiadura angeluarretik, zentroa hemen dago:
+centre-at = { $point } puntuan.
+centre-infinity = infinituan, { $direction } norabidean.
+centre-rest = ez dago mugimendu erlatiborik.
+sec-rates = Abiadura eta azelerazio angeluarrak
+rates-intro = Solido bakoitza daraman solidoarekiko biratzen da: { $w }, eta, ardatz finkoetan deribatuz, { $a }.
+fields-intro = Puntu bakoitzaren abiadura eta azelerazioa, solido bereko puntu ezagun batetik (bere loturatik):
+sec-composition = Mugimenduen konposizioa
+composition-intro = Puntu baten mugimendua arrastre-mugimendua da (erreferentzia mugikorrean puntuarekin bat datorren puntuarena) gehi erreferentzia horrekiko mugimendu erlatiboa, gehi, azelerazioetan, Coriolisen terminoa { $cor }.
+composition-point = { $body } solidoaren { $point } puntua, { $frame } erreferentzia mugikorra:
+composition-drag = Arrastrea: erreferentzia mugikorrean puntuarekin bat datorren puntuaren mugimendua:
+composition-relative = Erlatiboa: erreferentzia mugikorretik ikusten den mugimendua:
+sec-curvature = Ibilbideen kurbadura
+curvature-intro = Azelerazioa bi zatitan banatzen da: abiaduraren norabideko zati tangentziala eta harekiko perpendikularra den zati normala; kurbadura-erradioa { $rho } da.
+curvature-point = { $point } puntua: abiadura { $v }.
+curvature-rest = { $point } puntua geldirik dago: bere ibilbideak ez du kurbadurarik une honetan.
+curvature-straight = { $point } puntuaren azelerazio normala nulua da: bere ibilbidea zuzena da hemen (edo inflexio-puntu bat du).
+curvature-centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $centre } puntuan dago, azelerazio normalaren aldean.
+sec-answers = Erantzunak
+answers-none = Ereduak ez du galderarik egiten.
