@@ -7,7 +7,7 @@ from typing import Any
 from ..model.model import PointRef
 from ..questions import answer
 from ..questions.curvature import intrinsic
-from .context import Ctx
+from .context import Ctx, alpha_sym, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Value, msg
 from .terms import KNOWN
 
@@ -19,11 +19,10 @@ UNITS = {"velocity": "speed", "acceleration": "accel", "omega": "rate", "alpha":
 
 
 def answers_section(ctx: Ctx) -> Section:
+    """The model's questions, each named as a textbook names it (v_C, ω_rocker, the
+    composition of the motion of A…) with its answer's parts labelled by their symbols."""
     sec = Section(msg("sec.answers"))
-    rows = []
-    for q in ctx.model.questions:
-        asked = ", ".join(f"{k}: {v}" for k, v in q.echo.items())
-        rows.append([asked, flatten(ctx, q.kind, answer(ctx.sol, q))])
+    rows = [[question_label(ctx, q), answer_items(ctx, q, answer(ctx.sol, q))] for q in ctx.model.questions]
     if rows:
         sec.add(Table([msg("col.question"), msg("col.answer")], rows))
     else:
@@ -31,27 +30,88 @@ def answers_section(ctx: Ctx) -> Section:
     return sec
 
 
-def flatten(ctx: Ctx, kind: str, value: Any, unit: str | None = None) -> list:
-    """An answer as a list of (label, Value) items, units from the kind of each entry."""
-    unit = unit if unit is not None else UNITS.get(kind, "")
-    if kind == "axis":
-        unit = ""
-    if isinstance(value, dict):
-        out = []
-        for key, v in value.items():
-            if key == "omega" and kind == "axis":
-                sub_unit = "rate"
-            elif key in ("velocity", "acceleration"):
-                sub_unit = UNITS[key]
-            else:
-                sub_unit = UNITS.get(key) or unit
-            for label, item in flatten(ctx, kind, v, sub_unit):
-                out.append((f"{key}" + (f".{label}" if label else ""), item))
-        return out
+def _ref(ctx: Ctx, q) -> PointRef:
+    return ctx.model.resolve_point(q.target) if isinstance(q.target, str) else q.target
+
+
+def _label(ctx: Ctx, ref: PointRef) -> str:
+    return ctx.point_label(ref.point, ref.body)
+
+
+def question_label(ctx: Ctx, q) -> Any:
+    """The asked quantity as a symbol, or a sentence for the compound questions."""
+    rel = ctx.rel(q.relative_to)
+    tail = f"/{rel}" if rel else ""
+    if q.kind in ("velocity", "acceleration"):
+        return Sym(q.kind[0], _label(ctx, _ref(ctx, q)) + tail)
+    if q.kind == "omega":
+        return omega_sym(q.target, rel, vector=not ctx.planar)
+    if q.kind == "alpha":
+        return alpha_sym(q.target, rel, vector=not ctx.planar)
+    frame = Name(rel or ctx.frame, "body")
+    if q.kind in ("icr", "axis", "pole"):
+        return msg(f"ask.{q.kind}", body=Name(q.target, "body"), frame=frame)
+    if q.kind == "contact":
+        return msg("ask.contact", joint=Name(q.target, "joint"))
+    if q.kind == "decompose":
+        ref = _ref(ctx, q)
+        return msg("ask.decompose", point=Name(_label(ctx, ref)), frame=Name(q.moving, "body"))
+    return msg(f"ask.{q.kind}", point=Name(_label(ctx, _ref(ctx, q))), frame=frame)
+
+
+def answer_items(ctx: Ctx, q, value: Any) -> list:
+    """The answer as [(label, Value)]: a label is a symbol or a message, never a raw key."""
+    if not isinstance(value, dict):
+        return [("", _value(ctx, value, UNITS.get(q.kind, "")))]
+    if value.get("rest"):
+        return [("", msg("ans.rest"))]
+    out = []
+    for key, v in value.items():
+        if isinstance(v, dict):
+            for sub, w in v.items():
+                out.append((_part_label(ctx, q, key, sub), _value(ctx, w, UNITS[sub] if sub in UNITS and
+                                                                    UNITS[sub] else UNITS[key] or "")))
+        elif v is not None and key != "rest":
+            unit = "rate" if (q.kind, key) == ("axis", "omega") else ("speed" if key == "slide" else UNITS.get(key) or "")
+            out.append((_part_label(ctx, q, key, None), _value(ctx, v, unit)))
+    return out
+
+
+def _part_label(ctx: Ctx, q, key: str, sub: str | None) -> Any:
+    if q.kind == "decompose":
+        ref = _ref(ctx, q)
+        level = "v" if key == "velocity" else "a"
+        word = {"drag": "sub.drag", "relative": "sub.rel", "coriolis": "sub.cor"}.get(sub or "", "")
+        return Sym(level, ref.point, sub_key=word)
+    if q.kind == "contact":
+        j = ctx.model.joint(q.target)
+        level = "v" if sub == "velocity" else "a"
+        if key == "body_a":
+            return Sym(level, f"J∈{j.a}")
+        if key == "body_b":
+            return Sym(level, f"J∈{j.b}")
+        if key == "geometric":
+            return Sym(level, "J", sub_key="sub.geom")
+    if q.kind == "intrinsic":
+        p = _label(ctx, _ref(ctx, q))
+        symbols = {"speed": Sym("v", p, vector=False), "tangential": Sym("a", p, "t", vector=False),
+                   "normal": Sym("a", p, "n", vector=False), "tangential_vector": Sym("a", p, "t"),
+                   "normal_vector": Sym("a", p, "n")}
+        if key in symbols:
+            return symbols[key]
+    if q.kind == "curvature" and key == "radius":
+        return Sym("ρ", _label(ctx, _ref(ctx, q)), vector=False)
+    if q.kind == "axis" and key == "omega":
+        return omega_sym(q.target, ctx.rel(q.relative_to), vector=True)
+    return msg(f"ans.{key}")
+
+
+def _value(ctx: Ctx, value: Any, unit: str) -> Value:
+    if isinstance(value, (tuple, list)):
+        return Value(ctx.clean(tuple(value), unit or "len"), unit)
     if value is None or isinstance(value, (bool, str)):
-        return [("", Value(value, ""))]
-    clean = ctx.clean(tuple(value) if isinstance(value, (tuple, list)) else value, unit or "len")
-    return [("", Value(clean, unit or ""))]
+        return Value(value, "")
+    return Value(ctx.clean(value, unit or "len"), unit)
 
 
 def curvature_section(ctx: Ctx) -> Section | None:
@@ -72,7 +132,7 @@ def curvature_steps(ctx: Ctx, q) -> list:
     rel = q.relative_to
     v, a = ctx.sol.velocity(ref, rel), ctx.sol.acceleration(ref, rel)
     result = answer(ctx.sol, q)
-    label = str(ref) if not ctx.shared(ref.point) else ref.point
+    label = ctx.point_label(ref.point, ref.body)
     if result.get("rest"):
         return [msg("curvature.rest", point=Name(label))]
     split = intrinsic(ctx.sol, q)             # the solver's aᵗ and aⁿ of the same point

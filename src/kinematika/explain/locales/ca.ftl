@@ -172,3 +172,50 @@ curvature-centre = El centre de curvatura de la trajectòria { ELISION($point) -
     } és a { $centre }, del costat de l’acceleració normal.
 sec-answers = Respostes
 answers-none = El model no fa preguntes.
+ask-icr = CIR { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }
+ask-axis = eix instantani de rotació i lliscament { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }
+ask-pole = pol d’acceleracions { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }
+ask-contact = els tres punts coincidents al contacte de l’enllaç { $joint }
+ask-decompose = composició del moviment { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    }, referència mòbil { $frame }
+ask-curvature = curvatura de la trajectòria { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }
+ask-intrinsic = acceleració tangencial i normal { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }
+ans-rest = sense moviment relatiu
+ans-point = posició
+ans-direction = direcció
+ans-center = centre de curvatura
+ans-tangent = tangent unitària
+ans-slide = velocitat al llarg de l’eix
+sub-geom = geom

@@ -124,7 +124,7 @@ class Renderer:
     def cell(self, c: Any) -> str:
         """A table cell; answers come as [(label, Value), ...]."""
         if isinstance(c, list) and c and isinstance(c[0], tuple):
-            return "; ".join((self.esc(label) + " = " if label else "") + self.value(v) for label, v in c)
+            return "; ".join((self.arg(label) + " = " if label else "") + self.arg(v) for label, v in c)
         return self.arg(c)
 
     def name(self, n: Name) -> str:
