@@ -67,6 +67,59 @@ def label_boxes(fig) -> list[tuple[str, object]]:
     return out
 
 
+def label_faults(fig, share: float = 0.2) -> list[str]:
+    """What makes the labels unreadable: two labels (their text extents) overlapping by more
+    than `share` of the smaller one, or a leader line passing through another label."""
+    boxes = [(t, b) for t, b in label_boxes(fig) if t]
+    faults = []
+    for i, (t1, b1) in enumerate(boxes):
+        for t2, b2 in boxes[i + 1:]:
+            smaller = min(b1.width * b1.height, b2.width * b2.height)
+            if overlap(b1, b2) > share * smaller:
+                faults.append(f"{t1!r} over {t2!r}")
+    ax = axes(fig)
+    texts = {t.get_gid(): t for t in ax.texts}
+    for ln in ax.lines:
+        gid = ln.get_gid() or ""
+        if not gid.startswith("leader:"):
+            continue
+        own = texts.get("label:" + gid.removeprefix("leader:"))
+        path = ax.transData.transform(ln.get_xydata())
+        samples = [path[0] + t * (path[1] - path[0]) for t in np.linspace(0.05, 0.95, 30)]
+        for t in ax.texts:
+            if t is own or not t.get_text():
+                continue
+            box = Text.get_window_extent(t, fig.canvas.get_renderer()).shrunk(0.8, 0.8)
+            if any(box.contains(*p) for p in samples):
+                faults.append(f"leader of {own.get_text() if own else gid!r} through {t.get_text()!r}")
+    return faults
+
+
+def outside_faults(fig) -> list[str]:
+    """Artists of the drawing outside the axes, and texts outside the page."""
+    renderer = fig.canvas.get_renderer()
+    ax = axes(fig)
+    box = ax.get_window_extent(renderer)
+    faults = []
+    for artist in ax.lines + ax.patches:
+        ext = artist.get_window_extent(renderer)
+        if ext.width == 0 and ext.height == 0 or not np.isfinite(ext.x0):
+            continue
+        if not (ext.x0 >= box.x0 - 1 and ext.x1 <= box.x1 + 1 and
+                ext.y0 >= box.y0 - 1 and ext.y1 <= box.y1 + 1):
+            faults.append(f"{artist.get_gid() or artist} outside the axes")
+    for text, ext in label_boxes(fig):
+        if not (box.x0 - 1 <= ext.x0 and ext.x1 <= box.x1 + 1 and
+                box.y0 - 1 <= ext.y0 and ext.y1 <= box.y1 + 1):
+            faults.append(f"label {text!r} outside the axes")
+    page = fig.bbox
+    for text in fig.texts:
+        ext = text.get_window_extent(renderer)
+        if not (page.x0 <= ext.x0 and ext.x1 <= page.x1 and page.y0 <= ext.y0 and ext.y1 <= page.y1):
+            faults.append(f"text {text.get_text()!r} off the page")
+    return faults
+
+
 def overlap(b1, b2) -> float:
     w = min(b1.x1, b2.x1) - max(b1.x0, b2.x0)
     h = min(b1.y1, b2.y1) - max(b1.y0, b2.y0)

@@ -10,7 +10,7 @@ import numpy as np
 
 from kinematika.draw import draw
 
-from .artists import arrow, has_artist, label, line, lines_starting, marker, point_to_line
+from .artists import angle_between, arrow, has_artist, label, line, lines_starting, marker, point_to_line
 from .mechanisms import (A, B, O2, O4, P, coupler_icr, cross, four_bar_motion, four_bar_tree,
                          line_meet, slider_crank_tree, xy)
 
@@ -18,7 +18,7 @@ from .mechanisms import (A, B, O2, O4, P, coupler_icr, cross, four_bar_motion, f
 def test_asked_icr_marker_sits_at_the_crossing_of_the_pin_normals():
     fig = draw(four_bar_tree([{"icr": "coupler"}]))
     assert np.allclose(marker(fig, "icr:coupler"), xy(coupler_icr()), atol=1e-9)
-    assert "coupler" in label(fig, "icr:coupler")
+    assert label(fig, "icr:coupler") == r"$I_{\mathrm{13}}$"        # ground 1, crank 2, coupler 3
 
 
 def test_all_centres_and_their_kennedy_lines():
@@ -49,10 +49,12 @@ def test_far_centre_is_shown_at_the_edge_with_its_coordinates():
     far = line_meet(O2, A, complex(2.0, 0.02), complex(3.0, 1.0))
     assert abs(far) > 20
     assert not has_artist(fig, "icr:coupler")
-    edge = marker(fig, "icr:coupler:far")
+    tail, tip = arrow(fig, "icr:coupler:far")
     ax = fig.axes[0]
-    assert ax.get_xlim()[0] <= edge[0] <= ax.get_xlim()[1]
-    assert ax.get_ylim()[0] <= edge[1] <= ax.get_ylim()[1]
+    for end in (tail, tip):
+        assert ax.get_xlim()[0] <= end[0] <= ax.get_xlim()[1]
+        assert ax.get_ylim()[0] <= end[1] <= ax.get_ylim()[1]
+    assert angle_between(tip - tail, xy(far) - tip) < 1e-6       # pointing at the centre
     assert f"({far.real:.3g}, {far.imag:.3g})" in label(fig, "icr:coupler")
 
 

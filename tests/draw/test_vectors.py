@@ -60,7 +60,8 @@ def test_relative_velocity_arrow():
     expected = four_bar_motion("B")[0] - 1j * 10.0 * (B - O2)
     assert np.allclose(start, xy(B))
     assert angle_between(tip - start, xy(expected)) < 1e-3     # degrees
-    assert "/crank" in label(fig, "velocity:B@coupler/crank")
+    assert label(fig, "velocity:B@coupler/crank").startswith(r"$v_{\mathrm{B}/2}$")  # crank is 2
+    assert "bodies: 1 ground, 2 crank, 3 coupler, 4 rocker" in [t.get_text() for t in fig.texts]
 
 
 def test_slider_crank_slider_velocity_along_the_guide():

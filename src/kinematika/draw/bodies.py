@@ -13,6 +13,7 @@ from matplotlib.patches import Annulus, Circle, Polygon
 
 from .canvas import Canvas
 from .geometry import clip_line, convex_hull, perpendicular
+from .names import plain
 from .scene import BodyView, ShapeView
 from .style import BAR_WIDTH, GROUND, HATCH_BAND, INK, POINT_LABEL
 
@@ -55,7 +56,8 @@ def _body(cv: Canvas, body: BodyView) -> None:
     if anchor is None and pts:
         anchor = pts[0]
     if anchor is not None:
-        cv.label(anchor, body.name, body.colour, 5, f"body:{body.name}", style="italic")
+        name = plain(body.name) + (f" ({body.number})" if cv.scene.numbered else "")
+        cv.label(anchor, name, body.colour, 5, f"body:{body.name}", style="italic")
 
 
 def _on_wheel(p: np.ndarray, wheels: list[ShapeView]) -> bool:
@@ -149,6 +151,8 @@ def hatched_edge(cv: Canvas, p: np.ndarray, q: np.ndarray, side: np.ndarray, gid
     cv.add(Polygon([p, q, q + band * side, p + band * side], closed=True, fill=False,
                    ec=GROUND, lw=0, hatch="////", zorder=1))
     cv.board.avoid(p, q)
+    cv.board.avoid(p + 0.5 * band * side, q + 0.5 * band * side, weight=0.7)
+    cv.board.avoid(p + band * side, q + band * side, weight=0.7)
 
 
 def _points(cv: Canvas) -> None:
@@ -158,10 +162,10 @@ def _points(cv: Canvas) -> None:
         for name, p in body.points.items():
             cv.add(Line2D([p[0]], [p[1]], marker="o", ms=3.2, color=INK, zorder=4),
                    None if body.frame else body.name)
-            cv.board.avoid(p)
+            cv.board.avoid(p, weight=2.0, radius=2.0)
             if name not in named:
                 named.add(name)
-                cv.label(p, name, POINT_LABEL, 3, f"point:{name}", weight="bold")
+                cv.label(p, plain(name), POINT_LABEL, 3, f"point:{name}", weight="bold")
 
 
 def _distinct(pts: list, tol: float) -> list:

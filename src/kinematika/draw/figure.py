@@ -1,9 +1,9 @@
 """A still figure of a scene: the layout (what must fit, the figure's shape), the painting
 in order, the labels, the legend and the notes.
 
-The axes frame the mechanism, its arrows, and the centres and curvature circles that lie
-within `REACH` drawing sizes of it; what lies outside the axes is shown at their edge
-(see `marks`), and infinite lines stop just inside them.
+The axes frame the mechanism, its arrows, and the centres and curvature circles that fit
+while the frame stays within `REACH` times the mechanism's size; what lies outside the
+axes is shown at their edge (see `marks`), and infinite lines stop just inside them.
 The figure's shape follows the view's, within bounds, at equal scale on both axes; after
 the labels are placed, the limits grow until every label lies inside the axes.
 """
@@ -22,13 +22,14 @@ from .bodies import paint_bodies
 from .canvas import Canvas
 from .geometry import Box
 from .joints import paint_joints
-from .marks import paint_axes, paint_curvatures, paint_marks
+from .marks import mark_groups, paint_axes, paint_curvatures, paint_marks
+from .names import bare, number
 from .options import DrawOptions
 from .scene import Scene
 from .style import (ACCELERATION, CENTRE, CURVATURE, INK, LONGEST, SHORTEST, TITLE_SIZE, VELOCITY)
 from .vectors import Arrow, arrows, paint_vectors
 
-REACH = 2.0          # drawing sizes around the mechanism within which results are framed
+REACH = 2.0          # the frame is at most this many times the mechanism with its arrows
 CLIP_MARGIN = 0.06   # infinite lines and far marks stop this far (drawing sizes) inside the axes
 LABEL_MARGIN = 0.12  # room kept around the framed content for labels
 ASPECT = (0.5, 1.25)  # bounds of the axes' height/width
@@ -62,19 +63,29 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
 
 
 def framed_box(scene: Scene, drawn: list[Arrow]) -> Box:
-    """The mechanism, its arrows, and the results within reach of the mechanism."""
-    base = Box(*scene.box)
-    reach = base.grow(REACH * scene.size)
-    pts = [a.end for a in drawn]
-    pts += [m.point for m in scene.marks if m.point is not None and reach.contains(m.point)]
+    """The mechanism and its arrows, and, nearest first, the results that fit while the
+    frame stays within `REACH` times the size of the mechanism with its arrows (a centre
+    farther off is shown at the edge, so that it does not shrink the mechanism)."""
+    box = Box(*scene.box).union([a.end for a in drawn])
+    limit = REACH * max(box.width, box.height, scene.size)
+    extras = [[m.point] for m in scene.marks if m.point is not None]
     for c in scene.curvatures:
-        ring = c.circle
-        if all(reach.contains(p) for p in ring):
-            pts += list(ring)
-        elif reach.contains(c.centre):
-            pts.append(c.centre)
-    pts += [a.point for a in scene.axes if reach.contains(a.point)]
-    return base.union(pts)
+        extras += [list(c.circle), [c.centre]]
+    extras += [[a.point] for a in scene.axes]
+    extras = [pts for pts in extras if np.all(np.isfinite(pts))]
+    for pts in sorted(extras, key=lambda pts: _distance(box, pts)):
+        trial = box.union(pts)
+        if max(trial.width, trial.height) <= limit:
+            box = trial
+    return box
+
+
+def _distance(box: Box, pts: list) -> float:
+    """How far the farthest of `pts` lies outside `box`."""
+    arr = np.asarray(pts, dtype=float)
+    dx = np.maximum(np.maximum(box.xmin - arr[:, 0], arr[:, 0] - box.xmax), 0)
+    dy = np.maximum(np.maximum(box.ymin - arr[:, 1], arr[:, 1] - box.ymax), 0)
+    return float(np.max(np.hypot(dx, dy)))
 
 
 def new_figure(limits: Box, options: DrawOptions, n_notes: int,
@@ -109,31 +120,27 @@ def _set_limits(ax: Any, box: Box) -> None:
 
 
 def _place_labels(fig: Figure, ax: Any, cv: Canvas) -> None:
-    """Place the labels; while some stick out of the axes, widen the limits and redo."""
-    renderer = fig.canvas.get_renderer()
+    """Place the labels; while some would stick out of the axes, widen the limits and redo
+    (placing is arithmetic on cached text sizes, so redoing is cheap)."""
     for attempt in range(4):
-        placed = cv.board.place(ax, renderer)
-        grow = _overflow(ax, placed, renderer)
+        placed = cv.board.layout(ax)
+        grow = _overflow(ax, placed)
         if grow is None or attempt == 3:
-            return
-        for ann in placed:
-            ann.remove()
+            break
         x0, x1 = ax.get_xlim()
         y0, y1 = ax.get_ylim()
         _set_limits(ax, Box(x0 - grow[0], y0 - grow[1], x1 + grow[2], y1 + grow[3]))
+    cv.board.place(ax, placed)
 
 
-def _overflow(ax: Any, placed: list, renderer: Any) -> Optional[tuple]:
+def _overflow(ax: Any, placed: list) -> Optional[tuple]:
     """How far (data units: left, bottom, right, top) the labels stick out of the axes."""
-    from matplotlib.text import Text
-
-    box = ax.get_window_extent(renderer)
+    box = ax.get_window_extent()
     left = bottom = right = top = 0.0
-    for ann in placed:
-        ann.update_positions(renderer)
-        bb = Text.get_window_extent(ann, renderer)
-        left, bottom = max(left, box.x0 - bb.x0), max(bottom, box.y0 - bb.y0)
-        right, top = max(right, bb.x1 - box.x1), max(top, bb.y1 - box.y1)
+    for p in placed:
+        x0, y0, x1, y1 = p.box
+        left, bottom = max(left, box.x0 - x0), max(bottom, box.y0 - y0)
+        right, top = max(right, x1 - box.x1), max(top, y1 - box.y1)
     if max(left, bottom, right, top) <= 0.5:
         return None
     per_px = (ax.get_xlim()[1] - ax.get_xlim()[0]) / box.width
@@ -147,6 +154,15 @@ def _title(fig: Figure, title: str) -> None:
 
 def _notes(scene: Scene, drawn: list[Arrow]) -> list[str]:
     notes = list(scene.notes)
+    for group in mark_groups(scene.marks, scene.size):
+        if group[0].direction is not None:
+            x, y = (number(c) for c in group[0].direction)
+            notes.append(f"{bare(', '.join(m.label for m in group))} at infinity, "
+                         f"direction ({x}, {y})")
+    rest = [bare(m.label) for m in scene.marks if m.rest]
+    if rest:
+        notes.append(f"no relative motion: {', '.join(rest)}" if len(rest) > 1 else
+                     f"{rest[0]}: no relative motion")
     if any(a.enlarged for a in drawn):
         notes.append(f"arrows are to scale within each kind (the longest is {LONGEST:.0%} of the "
                      f"drawing); those marked 'enlarged' are drawn at the minimum length "

@@ -46,7 +46,7 @@ def _pin(cv: Canvas, j: JointView, centre_dot: bool = False, body: Optional[str]
                   zorder=6, gid=f"joint:{j.id}"), body)
     if centre_dot:
         cv.add(Line2D([p[0]], [p[1]], marker="o", ms=2.5, color=INK, zorder=7), body)
-    cv.board.avoid(p)
+    cv.board.avoid(p, weight=2.0, radius=4.0)
 
 
 def _revolute(cv: Canvas, j: JointView) -> None:
@@ -116,6 +116,7 @@ def _prismatic(cv: Canvas, j: JointView) -> None:
     cv.add(Polygon(block, closed=True, fc=colour, ec=INK, lw=1.3, zorder=4,
                    gid=f"joint:{j.id}"), _mover(cv, j) if j.b != _frame(cv) else None)
     cv.board.avoid(*block, block[0])
+    cv.board.avoid(*rectangle(centre, along, 0.6 * length, 0.4 * height)[[0, 1, 2, 3, 0]])
 
 
 def _guide(cv: Canvas, body: str, centre: np.ndarray, along: np.ndarray, height: float) -> None:

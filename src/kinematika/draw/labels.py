@@ -1,28 +1,41 @@
-"""Label placement: every label near its anchor, clear of the others and of the drawing.
+"""Label placement: every label near its anchor, clear of the other labels and of the drawing.
 
 Labels are collected while the figure is painted and placed at the end, once the axes
-limits are final: each in turn (most important first) tries offsets around its anchor —
-12 directions at growing distances — and takes the one with the lowest cost: overlap with
-labels already placed (heaviest), leaving the axes, covering drawn lines and arrows, then
-distance from the anchor and, for a vector, not lying along its direction. A label pushed
-far from its anchor gets a thin leader line.
+limits are final. Each label's size is measured once per text and font (`text_extent`,
+cached for the whole process), so placing is arithmetic on boxes: no text is laid out
+while positions are tried.
+
+Placement is greedy, then refined. In order of importance each label tries boxes around
+its anchor (`DIRECTIONS` directions at the `DISTANCES`) and takes the cheapest: overlapping
+a placed label costs most, then leaving the axes, then covering what is drawn (arrows and
+marks weigh more than bars), then the distance from the anchor and, for a vector, not lying
+beyond its tip. Then, a few times over, every label is taken out and put back at its best
+place given all the others, until none moves. A label placed far from its anchor gets a
+thin leader line, which later labels keep clear of.
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 from typing import Any, Optional
 
 import numpy as np
-
-from matplotlib.text import Text
+from matplotlib.lines import Line2D
 
 from .style import LABEL_SIZE
 
-DISTANCES = (6.0, 12.0, 20.0, 32.0, 48.0, 68.0)      # points
-DIRECTIONS = 12
-OBSTACLE_PAD = 4.0                                   # px: half a bar's width
-LEADER = 24.0                                        # points: farther labels get a leader
+DISTANCES = (2.5, 6.0, 11.0, 17.0, 25.0, 35.0, 48.0, 64.0, 84.0)   # points: anchor to box
+DIRECTIONS = 16
+LEADER = 16.0            # points: labels farther than this from their anchor get a leader
+PAD = 1.5                # points kept free around each label's text
+OBSTACLE_PAD = 2.5       # points: half a thin line's width around drawn geometry
+SAMPLE = 4.0             # points between samples of drawn lines
+PASSES = 4               # refinement passes at most
+
+# cost weights
+OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
+DISTANCE, PREFER = 0.15, 5.0
 
 
 @dataclass
@@ -37,13 +50,28 @@ class Label:
     weight: str = "normal"
     style: str = "normal"
 
+    @property
+    def extent(self) -> tuple[float, float]:
+        """(width, height) of the text in points."""
+        return text_extent(self.text, self.size, self.weight, self.style)
+
+
+@dataclass
+class Placement:
+    """Where a label went: its box (display pixels) and its offset from the anchor (points)."""
+
+    label: Label
+    box: np.ndarray                    # x0, y0, x1, y1
+    offset: tuple[float, float]
+    leader: bool
+
 
 @dataclass
 class LabelBoard:
     """Labels to place and the drawn geometry they should keep clear of."""
 
     labels: list[Label] = field(default_factory=list)
-    obstacles: list[np.ndarray] = field(default_factory=list)   # polylines, data coordinates
+    obstacles: list[tuple] = field(default_factory=list)   # (data polyline, weight, radius)
 
     def add(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
             prefer: Any = None, **kw: Any) -> None:
@@ -51,96 +79,222 @@ class LabelBoard:
         self.labels.append(Label(np.asarray(anchor, dtype=float), text, colour, priority, gid,
                                  pref, **kw))
 
-    def avoid(self, *polyline: Any) -> None:
-        """Keep labels off the drawn polyline through these points (a single point too)."""
-        self.obstacles.append(np.array([np.asarray(p, dtype=float) for p in polyline]))
+    def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0) -> None:
+        """Keep labels off the drawn polyline through these points (a single point too);
+        `weight` says how bad covering it is (arrows and marks more than bars), `radius`
+        (points) how far around each point the drawing reaches (a marker's size)."""
+        self.obstacles.append((np.array([np.asarray(p, dtype=float) for p in polyline]), weight,
+                               radius))
 
-    def place(self, ax: Any, renderer: Any) -> list[Any]:
-        """Create the labels' annotations in `ax` at their best offsets."""
-        axes_box = ax.get_window_extent(renderer)
-        obstacles = self._sample(ax)
-        px_per_pt = ax.figure.dpi / 72.0
-        placed: list[Any] = []
-        boxes: list[tuple] = []
-        for label in sorted(self.labels, key=lambda lb: lb.priority):
-            ann = _annotation(ax, label, (0.0, 0.0), "left", "bottom", leader=False)
-            bb = Text.get_window_extent(ann, renderer)
-            size = (bb.width, bb.height)
-            anchor = ax.transData.transform(label.anchor)
-            best = min(_candidates(), key=lambda c: _cost(
-                _box(anchor, size, c, px_per_pt), c, label, axes_box, boxes, obstacles))
-            ann.remove()
-            ann = _annotation(ax, label, best[:2], best[3], best[4], leader=best[2] >= LEADER)
-            boxes.append(_box(anchor, size, best, px_per_pt))
-            placed.append(ann)
-        return placed
+    def layout(self, ax: Any) -> list[Placement]:
+        """The best place of every label in `ax` (display pixels), without drawing anything."""
+        return Layout(self, ax).run()
 
-    def _sample(self, ax: Any) -> np.ndarray:
-        """The obstacles as display points about 5 px apart."""
-        pts = []
-        for line in self.obstacles:
-            disp = ax.transData.transform(line)
-            pts.append(disp[:1])
-            for p, q in zip(disp[:-1], disp[1:]):
-                n = max(1, int(np.linalg.norm(q - p) / 5))
-                t = np.linspace(0, 1, n + 1)[1:, None]
-                pts.append(p + t * (q - p))
-        return np.vstack(pts) if pts else np.zeros((0, 2))
+    def place(self, ax: Any, placements: Optional[list[Placement]] = None) -> list[Any]:
+        """Draw the labels in `ax` (as annotations) where `layout` put them."""
+        return [_annotation(ax, p) for p in (placements or self.layout(ax))]
 
 
-def _annotation(ax: Any, label: Label, offset: tuple, ha: str, va: str, leader: bool) -> Any:
-    arrow = dict(arrowstyle="-", color=label.colour, lw=0.6, alpha=0.7, shrinkA=0,
-                 shrinkB=2) if leader else None
-    return ax.annotate(label.text, xy=label.anchor, xytext=offset, textcoords="offset points",
-                       ha=ha, va=va, fontsize=label.size, color=label.colour, weight=label.weight,
-                       style=label.style, zorder=20, gid=f"label:{label.gid}",
-                       annotation_clip=False, arrowprops=arrow,
-                       bbox=dict(boxstyle="round,pad=0.12", fc="white", ec="none", alpha=0.75))
+@functools.lru_cache(maxsize=8192)
+def text_extent(text: str, size: float, weight: str = "normal",
+                style: str = "normal") -> tuple[float, float]:
+    """(width, height) in points of `text` drawn at `size`: measured once, then remembered."""
+    fig = _scratch()
+    t = fig.text(0, 0, text, fontsize=size, weight=weight, style=style)
+    try:
+        bb = t.get_window_extent(fig.canvas.get_renderer())
+    finally:
+        t.remove()
+    return float(bb.width), float(bb.height)
 
 
-def _candidates() -> list[tuple]:
-    """(dx, dy, distance, ha, va) offsets in points around the anchor."""
-    out = []
-    for r in DISTANCES:
-        for k in range(DIRECTIONS):
-            t = 2 * math.pi * k / DIRECTIONS
-            c, s = math.cos(t), math.sin(t)
-            ha = "left" if c > 0.3 else "right" if c < -0.3 else "center"
-            va = "bottom" if s > 0.3 else "top" if s < -0.3 else "center"
-            out.append((r * c, r * s, r, ha, va))
-    return out
+@functools.lru_cache(maxsize=1)
+def _scratch() -> Any:
+    """A figure at 72 dpi (one pixel per point) to measure text in."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(dpi=72)
+    FigureCanvasAgg(fig)
+    return fig
 
 
-def _box(anchor: np.ndarray, size: tuple, cand: tuple, px_per_pt: float) -> tuple:
-    """The display box of a label of `size` (px) placed at candidate `cand`, padded 2 px."""
-    w, h = size
-    x = anchor[0] + cand[0] * px_per_pt
-    y = anchor[1] + cand[1] * px_per_pt
-    x0 = x - {"left": 0.0, "center": w / 2, "right": w}[cand[3]]
-    y0 = y - {"bottom": 0.0, "center": h / 2, "top": h}[cand[4]]
-    return (x0 - 2, y0 - 2, x0 + w + 2, y0 + h + 2)
+class Layout:
+    """One placement run: the board's labels and obstacles in display pixels."""
+
+    def __init__(self, board: LabelBoard, ax: Any) -> None:
+        self.ax = ax
+        self.px = ax.figure.dpi / 72.0                    # pixels per point
+        box = ax.get_window_extent()
+        self.axes = np.array([box.x0, box.y0, box.x1, box.y1])
+        self.labels = sorted(board.labels, key=lambda lb: lb.priority)
+        self.obstacles, self.weights = _sample(board.obstacles, ax.transData, SAMPLE * self.px)
+        self.unit = _directions()
+
+    def run(self) -> list[Placement]:
+        n = len(self.labels)
+        if not n:
+            return []
+        anchors = self.ax.transData.transform(np.array([lb.anchor for lb in self.labels]))
+        sizes = np.array([lb.extent for lb in self.labels]) * self.px + 2 * PAD * self.px
+        cands = [self._candidates(anchors[i], sizes[i]) for i in range(n)]
+        base = [self._fixed_cost(self.labels[i], *cands[i]) for i in range(n)]
+        choice = [-1] * n
+        for i in range(n):                                 # greedy, most important first
+            choice[i] = int(np.argmin(base[i] + self._mutual(i, cands, choice, anchors)))
+        for _ in range(PASSES):                            # refine until nothing moves
+            moved = False
+            for i in range(n):
+                cost = base[i] + self._mutual(i, cands, choice, anchors)
+                best = int(np.argmin(cost))
+                if cost[best] < cost[choice[i]] - 1e-9:
+                    choice[i], moved = best, True
+            if not moved:
+                break
+        out = []
+        for i, k in enumerate(choice):
+            boxes, dist, _ = cands[i]
+            centre = (boxes[k, :2] + boxes[k, 2:]) / 2
+            offset = tuple((centre - anchors[i]) / self.px)
+            inner = boxes[k] + np.array([1, 1, -1, -1]) * PAD * self.px
+            out.append(Placement(self.labels[i], inner, offset, dist[k] >= LEADER))
+        return out
+
+    def _candidates(self, anchor: np.ndarray, size: np.ndarray) -> tuple:
+        """(boxes (K, 4), distance in points (K,), direction (K, 2)) around the anchor."""
+        dist = np.repeat(np.array(DISTANCES), len(self.unit))
+        dirs = np.tile(self.unit, (len(DISTANCES), 1))
+        half = size / 2
+        reach = np.abs(dirs) @ half                        # the box's half-extent along dir
+        centre = anchor + dirs * (dist * self.px + reach)[:, None]
+        boxes = np.hstack([centre - half, centre + half])
+        return boxes, dist, dirs
+
+    def _fixed_cost(self, label: Label, boxes: np.ndarray, dist: np.ndarray,
+                    dirs: np.ndarray) -> np.ndarray:
+        """What does not depend on the other labels: the axes, the drawing, the distance."""
+        area = (boxes[:, 2] - boxes[:, 0]) * (boxes[:, 3] - boxes[:, 1])
+        ax0, ay0, ax1, ay1 = self.axes
+        inside = (np.clip(np.minimum(boxes[:, 2], ax1) - np.maximum(boxes[:, 0], ax0), 0, None) *
+                  np.clip(np.minimum(boxes[:, 3], ay1) - np.maximum(boxes[:, 1], ay0), 0, None))
+        cost = OUTSIDE * (1 - inside / area) + DISTANCE * dist
+        cost += COVER * _covered(boxes, self.obstacles, self.weights, OBSTACLE_PAD * self.px)
+        if label.prefer is not None and np.linalg.norm(label.prefer) > 0:
+            p = label.prefer / np.linalg.norm(label.prefer)
+            cost += PREFER * (1 - dirs @ p)
+        return cost
+
+    def _mutual(self, i: int, cands: list, choice: list[int], anchors: np.ndarray) -> np.ndarray:
+        """The cost of each of label i's candidates against the other labels as placed:
+        overlaps, covering their anchors, and leaders crossing labels either way."""
+        boxes, dist, _ = cands[i]
+        others = [j for j in range(len(choice)) if j != i and choice[j] >= 0]
+        if not others:
+            return np.zeros(len(boxes))
+        placed = np.array([cands[j][0][choice[j]] for j in others])
+        area = (boxes[0, 2] - boxes[0, 0]) * (boxes[0, 3] - boxes[0, 1])
+        ov = _overlaps(boxes, placed)
+        cost = OVERLAP * (ov > 0).sum(axis=1) + OVERLAP_AREA * ov.sum(axis=1) / area
+        # my leader across placed labels
+        far = dist >= LEADER
+        if far.any():
+            centres = (boxes[far, :2] + boxes[far, 2:]) / 2
+            cost[far] += LEADER_CROSS * _segments_hit(anchors[i], centres, placed)
+        # placed labels' leaders across me
+        for j in others:
+            bj = cands[j]
+            if bj[1][choice[j]] >= LEADER:
+                cj = (bj[0][choice[j], :2] + bj[0][choice[j], 2:]) / 2
+                pts = anchors[j] + np.linspace(0.1, 0.9, 9)[:, None] * (cj - anchors[j])
+                cost += LEADER_CROSS * _covered(boxes, pts, np.ones(len(pts)), 0.0) / 3
+        return cost
 
 
-def _cost(box: tuple, cand: tuple, label: Label, axes_box: Any, boxes: list,
-          obstacles: np.ndarray) -> float:
-    x0, y0, x1, y1 = box
-    area = max((x1 - x0) * (y1 - y0), 1.0)
-    cost = 0.0
-    for bx0, by0, bx1, by1 in boxes:
-        w, h = min(x1, bx1) - max(x0, bx0), min(y1, by1) - max(y0, by0)
-        if w > 0 and h > 0:
-            cost += 400.0 * (1 + w * h / area)
-    inside_w = max(0.0, min(x1, axes_box.x1) - max(x0, axes_box.x0))
-    inside_h = max(0.0, min(y1, axes_box.y1) - max(y0, axes_box.y0))
-    cost += 1000.0 * (1 - inside_w * inside_h / area)
-    if len(obstacles):
-        pad = OBSTACLE_PAD
-        hits = (obstacles[:, 0] > x0 - pad) & (obstacles[:, 0] < x1 + pad) & \
-            (obstacles[:, 1] > y0 - pad) & (obstacles[:, 1] < y1 + pad)
-        cost += 6.0 * float(hits.sum())
-    cost += 0.12 * cand[2]
-    if label.prefer is not None and np.linalg.norm(label.prefer) > 0:
-        d = np.array(cand[:2]) / cand[2]
-        p = label.prefer / np.linalg.norm(label.prefer)
-        cost += 4.0 * (1 - float(d @ p))
-    return cost
+def _directions() -> np.ndarray:
+    t = 2 * math.pi * np.arange(DIRECTIONS) / DIRECTIONS
+    return np.column_stack([np.cos(t), np.sin(t)])
+
+
+def _sample(obstacles: list, transform: Any, step: float) -> tuple[np.ndarray, np.ndarray]:
+    """The obstacles as display points about `step` apart, and each point's weight."""
+    pts, weights = [], []
+    ring = np.vstack([[0.0, 0.0], _directions()[::2]])
+    for line, weight, radius in obstacles:
+        disp = transform.transform(line)
+        disp = disp[np.all(np.isfinite(disp), axis=1)]
+        if not len(disp):
+            continue
+        seg = [disp[:1]]
+        for p, q in zip(disp[:-1], disp[1:]):
+            n = max(1, int(np.linalg.norm(q - p) / step))
+            t = np.linspace(0, 1, n + 1)[1:, None]
+            seg.append(p + t * (q - p))
+        seg = np.vstack(seg)
+        if radius > 0:                       # a marker: its outline too
+            seg = (seg[:, None, :] + radius * step / SAMPLE * ring[None]).reshape(-1, 2)
+        pts.append(seg)
+        weights.append(np.full(len(seg), weight))
+    if not pts:
+        return np.zeros((0, 2)), np.zeros(0)
+    return np.vstack(pts), np.concatenate(weights)
+
+
+def _covered(boxes: np.ndarray, pts: np.ndarray, weights: np.ndarray, pad: float) -> np.ndarray:
+    """For each box, the total weight of the points inside it (grown by `pad`)."""
+    if not len(pts):
+        return np.zeros(len(boxes))
+    lo, hi = boxes[:, :2].min(axis=0) - pad, boxes[:, 2:].max(axis=0) + pad
+    near = np.all((pts >= lo) & (pts <= hi), axis=1)
+    pts, weights = pts[near], weights[near]
+    if not len(pts):
+        return np.zeros(len(boxes))
+    x, y = pts[:, 0][None, :], pts[:, 1][None, :]
+    inside = ((x > boxes[:, 0:1] - pad) & (x < boxes[:, 2:3] + pad) &
+              (y > boxes[:, 1:2] - pad) & (y < boxes[:, 3:4] + pad))
+    return inside.astype(float) @ weights
+
+
+def _overlaps(boxes: np.ndarray, others: np.ndarray) -> np.ndarray:
+    """(K, M) overlap areas of K boxes with M others."""
+    w = np.minimum(boxes[:, None, 2], others[None, :, 2]) - np.maximum(boxes[:, None, 0],
+                                                                      others[None, :, 0])
+    h = np.minimum(boxes[:, None, 3], others[None, :, 3]) - np.maximum(boxes[:, None, 1],
+                                                                      others[None, :, 1])
+    return np.clip(w, 0, None) * np.clip(h, 0, None)
+
+
+def _segments_hit(start: np.ndarray, ends: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """For each segment start→end, how many of `boxes` it passes through (sampled)."""
+    t = np.linspace(0.15, 0.85, 8)
+    pts = start + t[None, :, None] * (ends[:, None, :] - start)          # (K, 8, 2)
+    x, y = pts[..., 0][..., None], pts[..., 1][..., None]
+    inside = ((x > boxes[:, 0]) & (x < boxes[:, 2]) & (y > boxes[:, 1]) & (y < boxes[:, 3]))
+    return inside.any(axis=1).sum(axis=1).astype(float)
+
+
+def _annotation(ax: Any, p: Placement) -> Any:
+    """The label's text in data coordinates (the same place at any dpi: the offset in
+    points and the data-to-pixel scale both grow with the dpi), and its leader line."""
+    label = p.label
+    inv = ax.transData.inverted()
+    anchor = ax.transData.transform(label.anchor)
+    centre = (p.box[:2] + p.box[2:]) / 2
+    text = ax.text(*inv.transform(centre), label.text, ha="center", va="center",
+                   fontsize=label.size, color=label.colour, weight=label.weight,
+                   style=label.style, zorder=20, gid=f"label:{label.gid}", clip_on=False,
+                   bbox=dict(boxstyle="round,pad=0.12", fc="white", ec="none", alpha=0.75))
+    if p.leader:
+        end = _edge(anchor, p.box)
+        ax.add_line(Line2D(*inv.transform(np.array([anchor, end])).T, lw=0.6, alpha=0.7,
+                           color=label.colour, zorder=19, gid=f"leader:{label.gid}"))
+    return text
+
+
+def _edge(start: np.ndarray, box: np.ndarray) -> np.ndarray:
+    """Where the segment from `start` to the centre of `box` enters the box."""
+    centre = (box[:2] + box[2:]) / 2
+    d = centre - start
+    half = (box[2:] - box[:2]) / 2
+    with np.errstate(divide="ignore"):
+        t = np.min(np.where(np.abs(d) > 1e-9, half / np.abs(np.where(d == 0, 1, d)), np.inf))
+    return centre - min(t, 1.0) * d

@@ -15,7 +15,8 @@ from matplotlib.patches import FancyArrowPatch
 from .canvas import Canvas
 from .geometry import clip_line, clip_polyline, clip_segment, edge_point, unit
 from .scene import CurvatureView, MarkView
-from .style import ACCELERATION, CENTRE, CURVATURE, INK, number
+from .names import number
+from .style import ACCELERATION, CENTRE, CURVATURE, INK
 
 MARKERS = {"icr": dict(marker="o", ms=9, mfc="white", mec=CENTRE, mew=2.2),
            "pole": dict(marker="D", ms=7, mfc="white", mec=ACCELERATION, mew=2.0),
@@ -24,51 +25,90 @@ COLOURS = {"icr": CENTRE, "pole": ACCELERATION, "contact": INK}
 
 
 def paint_marks(cv: Canvas) -> None:
-    for mark in cv.scene.marks:
+    for group in mark_groups(cv.scene.marks, cv.size):
+        mark = group[0]
         if mark.point is None:
-            if mark.direction is not None:
-                _infinite_mark(cv, mark)
-            continue
-        if cv.view.contains(mark.point):
-            _mark(cv, mark)
+            _infinite_mark(cv, group)
+        elif cv.view.contains(mark.point):
+            _mark(cv, group)
         else:
-            _far_mark(cv, mark)
+            _far_mark(cv, group)
     for line in cv.scene.kennedy:
         _kennedy(cv, line)
 
 
-def _mark(cv: Canvas, mark: MarkView) -> None:
+def mark_groups(marks: list[MarkView], size: float) -> list[list[MarkView]]:
+    """The marks drawn, those of one kind at one place together (the centres of a gear
+    train's pairs at its axis; centres at infinity along one direction)."""
+    groups: list[list[MarkView]] = []
+    for m in marks:
+        if m.rest or (m.point is None and m.direction is None):
+            continue
+        for g in groups:
+            if g[0].kind == m.kind and _same_place(g[0], m, size):
+                g.append(m)
+                break
+        else:
+            groups.append([m])
+    return groups
+
+
+def _same_place(a: MarkView, b: MarkView, size: float) -> bool:
+    if a.point is not None and b.point is not None:
+        return bool(np.linalg.norm(a.point - b.point) <= 1e-6 * size)
+    if a.direction is not None and b.direction is not None:
+        return abs(float(a.direction[0] * b.direction[1] - a.direction[1] * b.direction[0])) < 1e-9
+    return False
+
+
+def group_label(group: list[MarkView], per_line: int = 4) -> str:
+    """The names of a group of marks, a few to a line: I₁₂, I₁₃, I₁₄."""
+    names = [m.label for m in group]
+    return ",\n".join(", ".join(names[i:i + per_line]) for i in range(0, len(names), per_line))
+
+
+def _key(group: list[MarkView]) -> str:
+    return "+".join(m.key for m in group)
+
+
+def _mark(cv: Canvas, group: list[MarkView]) -> None:
+    mark = group[0]
     p = mark.point
-    cv.add(Line2D([p[0]], [p[1]], zorder=11, gid=f"{mark.key}", **MARKERS[mark.kind]))
+    for m in group:
+        cv.add(Line2D([p[0]], [p[1]], zorder=11, gid=f"{m.key}", **MARKERS[m.kind]))
     if mark.kind == "icr":
         cv.add(Line2D([p[0]], [p[1]], marker="o", ms=2.5, color=CENTRE, zorder=12))
-    cv.board.avoid(p)
-    cv.label(p, mark.label, COLOURS[mark.kind], 2, mark.key)
+    cv.board.avoid(p, weight=3.0, radius=5.0)
+    cv.label(p, group_label(group), COLOURS[mark.kind], 2, _key(group))
 
 
-def _far_mark(cv: Canvas, mark: MarkView) -> None:
-    inset = 0.03 * cv.size
-    q = edge_point(cv.view, mark.point, inset)
-    d = unit(mark.point - cv.view.centre)
-    angle = np.degrees(np.arctan2(d[1], d[0])) - 90
-    cv.add(Line2D([q[0]], [q[1]], marker=(3, 0, angle), ms=9, color=COLOURS[mark.kind], zorder=11,
-                  gid=f"{mark.key}:far"))
+def _far_mark(cv: Canvas, group: list[MarkView]) -> None:
+    """A mark beyond the view: an arrow at the edge pointing at it, labelled with its
+    coordinates."""
+    mark = group[0]
+    q = edge_point(cv.view, mark.point, 0.02 * cv.size)
+    d = unit(mark.point - q)
+    tail = q - 0.07 * cv.size * d
+    cv.add(FancyArrowPatch(tuple(tail), tuple(q), arrowstyle="-|>", mutation_scale=14, lw=1.8,
+                           color=COLOURS[mark.kind], zorder=11, gid=f"{mark.key}:far"))
+    cv.board.avoid(tail, q, weight=3.0)
     x, y = (number(c, cv.size) for c in mark.point)
-    cv.label(q, f"{mark.label} far off at ({x}, {y})", COLOURS[mark.kind], 2,
-             mark.key, -d)
+    cv.label(tail, f"{group_label(group)} at ({x}, {y})", COLOURS[mark.kind], 2, _key(group), -d)
 
 
-def _infinite_mark(cv: Canvas, mark: MarkView) -> None:
+def _infinite_mark(cv: Canvas, group: list[MarkView]) -> None:
     """A centre at infinity: a double arrow at the edge of the view along its direction (it
     lies at infinity both ways), labelled with the centre's name and ∞."""
+    mark = group[0]
     d = unit(np.asarray(mark.direction, dtype=float))
     inset = 0.06 * cv.size
     q = edge_point(cv.view, cv.view.centre + 1e6 * cv.size * d, inset)
     half = 0.06 * cv.size * d
     cv.add(FancyArrowPatch(q - half, q + half, arrowstyle="<|-|>", mutation_scale=14, lw=1.8,
-                           color=COLOURS[mark.kind], zorder=11, gid=f"{mark.key}:infinity"))
-    cv.board.avoid(q - half, q + half)
-    cv.label(q, f"{mark.label} at ∞", COLOURS[mark.kind], 2, mark.key, np.array([-d[1], d[0]]))
+                           color=COLOURS[mark.kind], zorder=11, gid=f"{_key(group)}:infinity"))
+    cv.board.avoid(q - half, q + half, weight=3.0)
+    cv.label(q, f"{group_label(group)} at ∞", COLOURS[mark.kind], 2, _key(group),
+             np.array([-d[1], d[0]]))
 
 
 def _kennedy(cv: Canvas, line) -> None:
@@ -101,7 +141,7 @@ def _curvature(cv: Canvas, c: CurvatureView) -> None:
     if cv.view.contains(c.centre):
         cv.add(Line2D([c.centre[0]], [c.centre[1]], marker="P", ms=8, color=CURVATURE, mec="white",
                       mew=0.6, zorder=10, gid=f"curvature-centre:{c.ref}"))
-        cv.board.avoid(c.centre)
+        cv.board.avoid(c.centre, weight=3.0, radius=4.5)
         cv.label(c.centre, c.label, CURVATURE, 2, f"curvature:{c.ref}")
     else:
         x, y = (number(v, cv.size) for v in c.centre)

@@ -13,9 +13,9 @@ import numpy as np
 from ..model.model import PointRef
 from ..questions import answer
 from .options import DrawOptions
+from .names import bare, body_numbers, equation, formula, number, pair_symbol, plain, point_symbol, subscript
 from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView,
-                    display_name, vector_label)
-from .style import equation, number, plain_name, symbol
+                    vector_label)
 
 POINT_QUESTIONS = ("velocity", "acceleration", "curvature", "intrinsic", "decompose")
 KINDS = ("velocity", "acceleration")
@@ -121,15 +121,7 @@ def magnitude_text(sol: Any, value: tuple, magnitude: float) -> str:
         return "0"
     if not sol.symbolic:
         return f"{magnitude:.3g}"
-    return formula_text(sol.norm(value), magnitude)
-
-
-def formula_text(expr: Any, number: float) -> str:
-    """A short formula (`3·r·w`), else the number at the probe values (`≈ 1.24`)."""
-    from ..report.values import tidy
-
-    text = str(tidy(expr)).replace("**", "^").replace("*", "·")
-    return plain_name(text) if len(text) <= 18 else f"≈ {number:.3g}"
+    return formula(sol.norm(value), magnitude)
 
 
 # instant centres -------------------------------------------------------------------------
@@ -141,31 +133,24 @@ def _centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
         return
     if options.centres:
         scene.notes.append("instant centres are planar: not drawn for a 3D model")
-    for q in sol.model.questions:
+    model = sol.model
+    for q in model.questions:
         if q.kind != "icr":
             continue
         name = q.target if not q.relative_to else f"{q.target}/{q.relative_to}"
-        key = f"icr:{name}"
-        _add_centre(scene, num, answer(sol, q), key, symbol("I", name), (q.target,))
+        label = pair_symbol("I", model, q.relative_to or model.frame, q.target)
+        _add_centre(scene, num, answer(sol, q), f"icr:{name}", label, (q.target,))
 
 
 def _add_centre(scene: Scene, num: Numbers, value: dict, key: str, label: str,
                 pair: tuple) -> None:
     if value.get("rest"):
-        scene.notes.append(f"{_bare(label)}: no relative motion")
+        scene.marks.append(MarkView("icr", key, label, pair=pair, rest=True))
     elif value.get("point") is not None:
         scene.marks.append(MarkView("icr", key, label, point=num.page(value["point"]), pair=pair))
     else:
         d = num.page(value["direction"])
-        scene.marks.append(MarkView("icr", key, label, direction=d, pair=pair))
-        x, y = (number(c) for c in d)
-        scene.notes.append(f"{_bare(label)} at infinity, direction ({x}, {y})")
-
-
-def _bare(label: str) -> str:
-    """A mathtext label as readable plain text, for notes: $I_{\\mathrm{13}}$ -> I13."""
-    return label.replace("$", "").replace(r"\mathrm", "").replace("{", "").replace("}", "") \
-        .replace("_", "").replace("\\", "")
+        scene.marks.append(MarkView("icr", key, label, direction=d / np.linalg.norm(d), pair=pair))
 
 
 def _all_centres(scene: Scene, sol: Any, num: Numbers) -> None:
@@ -177,8 +162,8 @@ def _all_centres(scene: Scene, sol: Any, num: Numbers) -> None:
     by_pair = {frozenset(c.pair): c for c in centres}
     for c in centres:
         a, b = sorted(c.pair, key=number.get)
-        tag = f"{number[a]}{number[b]}" if max(number.values()) < 10 else f"{number[a]},{number[b]}"
-        _add_centre(scene, num, c.value, f"centre:{a}-{b}", symbol("I", tag), (a, b))
+        _add_centre(scene, num, c.value, f"centre:{a}-{b}", pair_symbol("I", sol.model, a, b),
+                    (a, b))
     for c in centres:
         if c.how != "kennedy":
             continue
@@ -187,9 +172,6 @@ def _all_centres(scene: Scene, sol: Any, num: Numbers) -> None:
                                  by_pair[frozenset((third, c.pair[1]))].value, c.value)
             if line is not None:
                 scene.kennedy.append(KennedyLine(f"kennedy:{'-'.join(c.pair)}:{third}", *line))
-    order = ", ".join(f"{b.number} {b.name}" for b in sorted(scene.bodies.values(),
-                                                              key=lambda b: b.number))
-    scene.notes.insert(0, f"bodies: {order}")
 
 
 def _kennedy_line(num: Numbers, c1: dict, c2: dict, target: dict):
@@ -208,23 +190,21 @@ def _curvatures(scene: Scene, sol: Any, num: Numbers) -> None:
     for q in sol.model.questions:
         if q.kind != "curvature":
             continue
-        name = display_name(sol.model, q.target)
-        if q.relative_to:
-            name = f"{name}/{q.relative_to}"
+        name = point_symbol("ρ", sol.model, q.target.point, q.target.body, q.relative_to)
         value = answer(sol, q)
         if value.get("rest"):
-            scene.notes.append(f"{name} is at rest: no path curvature")
+            scene.notes.append(f"{bare(name)} is at rest: no path curvature")
             continue
         if value.get("radius") is None:
-            scene.notes.append(f"the path of {name} is straight here (infinite radius)")
+            scene.notes.append(f"{bare(name)}: the path is straight here (infinite radius)")
             continue
         p, c = num.vector(sol.position(q.target)), num.vector(value["center"])
         radius = num.scalar(value["radius"])
         v = num.vector(sol.velocity(q.target, q.relative_to))
-        text = formula_text(value["radius"], radius) if sol.symbolic else f"{radius:.3g}"
+        text = formula(value["radius"], radius) if sol.symbolic else f"{radius:.3g}"
         scene.curvatures.append(CurvatureView(
             str(q.target) + (f"/{q.relative_to}" if q.relative_to else ""),
-            equation(symbol("ρ", name), text), num.proj(p), num.proj(c), radius,
+            equation(name, text), num.proj(p), num.proj(c), radius,
             _circle(num, c, p, v)))
 
 
@@ -246,16 +226,17 @@ def _other_marks(scene: Scene, sol: Any, num: Numbers) -> None:
         if q.kind == "pole":
             value = answer(sol, q)
             if value.get("point") is not None:
-                scene.marks.append(MarkView("pole", f"pole:{q.target}", symbol("Γ", str(q.target)),
+                label = subscript("Γ", str(body_numbers(sol.model)[q.target]))
+                scene.marks.append(MarkView("pole", f"pole:{q.target}", label,
                                             point=num.page(value["point"]), pair=(q.target,)))
         elif q.kind == "contact":
             value = answer(sol, q)
             if value.get("point") is not None:
                 scene.marks.append(MarkView("contact", f"contact:{q.target}",
-                                            symbol("J", str(q.target)),
+                                            subscript("J", str(q.target)),
                                             point=num.page(value["point"])))
         elif q.kind == "axis" and scene.dim == 3:
             value = answer(sol, q)
             if value.get("point") is not None:
-                scene.axes.append(AxisView(f"axis:{q.target}", f"axis of {plain_name(str(q.target))}",
+                scene.axes.append(AxisView(f"axis:{q.target}", f"axis of {plain(str(q.target))}",
                                            num.page(value["point"]), num.page(value["direction"])))

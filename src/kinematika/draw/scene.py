@@ -19,7 +19,8 @@ from ..errors import KinematikaError
 from ..model.model import PointRef
 from .options import DrawOptions
 from .projection import Projection, projection
-from .style import body_colour, symbol
+from .names import body_numbers, numbered, point_symbol
+from .style import body_colour
 
 Vec = np.ndarray
 
@@ -88,8 +89,9 @@ class MarkView:
     key: str                               # identifies the artist (gid)
     label: str
     point: Optional[Vec] = None
-    direction: Optional[Vec] = None        # a centre at infinity
+    direction: Optional[Vec] = None        # a centre at infinity (unit)
     pair: tuple[str, ...] = ()
+    rest: bool = False                     # no relative motion: no centre
 
 
 @dataclass
@@ -135,6 +137,7 @@ class Scene:
     curvatures: list[CurvatureView] = field(default_factory=list)
     axes: list[AxisView] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    numbered: bool = False                 # labels name bodies by number: bodies say theirs
 
     @property
     def frame(self) -> BodyView:
@@ -169,7 +172,21 @@ def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = No
         scene.notes.append(f"symbolic model drawn at {values}")
     if sol is not None:
         add_results(scene, sol, options, num)
+    _number_bodies(scene)
     return scene
+
+
+def _number_bodies(scene: Scene) -> None:
+    """When a label names a body by its number, the bodies are numbered on the figure and
+    the numbering is listed under it."""
+    labels = [v.label for v in scene.vectors] + [m.label for m in scene.marks] + \
+        [c.label for c in scene.curvatures]
+    if not any(numbered(text) for text in labels):
+        return
+    scene.numbered = True
+    order = ", ".join(f"{b.number} {b.name}" for b in sorted(scene.bodies.values(),
+                                                              key=lambda b: b.number))
+    scene.notes.insert(0, f"bodies: {order}")
 
 
 class Numbers:
@@ -192,9 +209,8 @@ class Numbers:
 
 def _bodies(inst: Instant, num: Numbers) -> dict[str, BodyView]:
     model = inst.model
-    order = [model.frame] + [b for b in model.bodies if b != model.frame]
     out = {}
-    for number, name in enumerate(order, start=1):
+    for name, number in body_numbers(model).items():
         body = model.bodies[name]
         frame = name == model.frame
         points = {p: num.page(inst.points[p]) for p in body.points}
@@ -357,14 +373,8 @@ def _nearest_shape(shapes: list[ShapeView], p: Vec) -> Optional[ShapeView]:
     return best if best is not None and gap(best) < math.inf else None
 
 
-def display_name(model: Any, ref: PointRef) -> str:
-    """`B` when the bare name means this material point, else `B@body`."""
-    return ref.point if model.share_motion(ref.point, model.carriers(ref.point)) else str(ref)
-
-
 def vector_label(kind: str, model: Any, ref: PointRef, relative_to: Optional[str]) -> str:
-    """$v_B$, $a_{B@rod}$, $v_{B/crank}$ (relative to a body)."""
-    name = display_name(model, ref)
-    if relative_to and relative_to != model.frame:
-        name = f"{name}/{relative_to}"
-    return symbol("v" if kind == "velocity" else "a", name)
+    """$v_B$, $a_{B∈3}$ (B of body 3, when B's carriers move differently), $v_{B∈3/2}$
+    (relative to body 2)."""
+    return point_symbol("v" if kind == "velocity" else "a", model, ref.point, ref.body,
+                        relative_to)

@@ -7,8 +7,6 @@ the model's units.
 """
 from __future__ import annotations
 
-import re
-
 VELOCITY = "#1565c0"
 ACCELERATION = "#c62828"
 CENTRE = "#7b1fa2"
@@ -36,30 +34,3 @@ HATCH_BAND = 0.03
 def body_colour(number: int) -> str:
     """The colour of the body numbered `number` (the frame is 1 and is drawn in GROUND)."""
     return BODY_COLOURS[(number - 2) % len(BODY_COLOURS)]
-
-
-_SIMPLE = re.compile(r"^[A-Za-z0-9_@/.' -]+$")
-
-
-def symbol(letter: str, name: str) -> str:
-    """`letter` with subscript `name` ($v_B$), in mathtext when `name` is simple enough,
-    else as plain text v(name): any model name is drawn safely."""
-    if _SIMPLE.match(name):
-        inner = name.replace("_", r"\_").replace(" ", r"\ ")
-        return "$" + letter + r"_{\mathrm{" + inner + "}}$"
-    return f"{letter}({plain_name(name)})"
-
-
-def plain_name(text: str) -> str:
-    """A model name made safe for ordinary text (a `$` would start mathtext)."""
-    return text.replace("$", r"\$")
-
-
-def equation(lhs: str, rhs: str) -> str:
-    """`lhs = rhs`, or `lhs ≈ x` when the value is only approximate."""
-    return f"{lhs} {rhs}" if rhs.startswith("≈") else f"{lhs} = {rhs}"
-
-
-def number(x: float, scale: float = 1.0) -> str:
-    """3 significant digits, with round-off below 1e-9 of `scale` shown as 0."""
-    return "0" if abs(x) <= 1e-9 * scale else f"{x:.3g}"

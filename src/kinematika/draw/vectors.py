@@ -7,16 +7,22 @@ then says "enlarged". A zero vector gets no arrow, only its label (= 0) at the p
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 from matplotlib.patches import FancyArrowPatch
+from matplotlib.transforms import offset_copy
 
 from .canvas import Canvas
+from .geometry import perpendicular, unit
 from .scene import VectorView
-from .style import KIND_COLOURS, LONGEST, SHORTEST, equation
+from .names import equation
+from .style import KIND_COLOURS, LONGEST, SHORTEST
 
 ZERO = 1e-9          # relative to the largest vector of the kind
+SIDE = 4.0           # points between arrows along one line from one point
+SIDE_ANGLE = 6.0     # degrees: arrows closer than this in direction are side by side
 
 
 @dataclass
@@ -62,6 +68,22 @@ def arrows(vectors: list[VectorView], size: float) -> list[Arrow]:
     return [arrow_for(v, largest[v.kind], size) for v in vectors]
 
 
+def side_shifts(drawn: list[Arrow], size: float) -> list[float]:
+    """Sideways shifts (points) that keep arrows from one point along one direction side by
+    side instead of one hiding the other (a ram's velocity and acceleration)."""
+    shifts: list[float] = []
+    for i, a in enumerate(drawn):
+        shift = 0.0
+        if a.drawn:
+            d = unit(a.end - a.start)
+            for b, s in zip(drawn[:i], shifts):
+                if b.drawn and np.linalg.norm(b.start - a.start) <= 1e-9 * size and \
+                        float(unit(b.end - b.start) @ d) > math.cos(math.radians(SIDE_ANGLE)):
+                    shift = max(shift, s + SIDE)
+        shifts.append(shift)
+    return shifts
+
+
 def arrow_patch(arrow: Arrow, gid: str) -> FancyArrowPatch:
     colour = KIND_COLOURS[arrow.view.kind]
     return FancyArrowPatch(tuple(arrow.start), tuple(arrow.end), arrowstyle="-|>",
@@ -70,15 +92,21 @@ def arrow_patch(arrow: Arrow, gid: str) -> FancyArrowPatch:
 
 
 def paint_vectors(cv: Canvas, drawn: list[Arrow]) -> None:
-    for arrow in drawn:
+    shifts = side_shifts(drawn, cv.size)
+    for arrow, shift in zip(drawn, shifts):
         v = arrow.view
         colour = KIND_COLOURS[v.kind]
         text = equation(v.label, "0" if arrow.zero else v.text)
         if arrow.enlarged:
             text += " (enlarged)"
         if arrow.drawn:
-            cv.ax.add_patch(arrow_patch(arrow, v.key))
-            cv.board.avoid(arrow.start, arrow.end)
+            patch = arrow_patch(arrow, v.key)
+            if shift:
+                n = perpendicular(unit(arrow.end - arrow.start)) * shift
+                patch.set_transform(offset_copy(cv.ax.transData, fig=cv.ax.figure, x=n[0],
+                                                y=n[1], units="points"))
+            cv.ax.add_patch(patch)
+            cv.board.avoid(arrow.start, arrow.end, weight=3.0)
             cv.label(arrow.end, text, colour, 1, v.key, arrow.end - arrow.start)
         else:
             cv.label(arrow.start, text, colour, 1, v.key)

@@ -1,0 +1,119 @@
+"""How figures write names and values: as the course notes do, never in model syntax.
+
+Bodies are numbered as in the notes (the frame 1, the others 2, 3, … in the file's
+order); a material point is written with the number of its body and a relative vector
+with the number of the reference body: `v_B`, `v_{B∈3}`, `v_{A∈2/3}` (A of body 2 seen
+from body 3), instant centres `I_{13}`. Names are set in mathtext (matplotlib's TeX
+subset) when they are plain enough, else as plain text; formulas are sympy's LaTeX when
+short and mathtext can set them, else their value.
+"""
+from __future__ import annotations
+
+import re
+from typing import Any, Optional
+
+_SIMPLE = re.compile(r"^[A-Za-z0-9_.' -]+$")
+FORMULA_CHARS = 24            # longer formulas (as plain text) are shown by their value
+
+
+def body_numbers(model: Any) -> dict[str, int]:
+    """The notes' numbering: the frame 1, the other bodies 2, 3, … in the file's order."""
+    order = [model.frame] + [b for b in model.bodies if b != model.frame]
+    return {name: k for k, name in enumerate(order, start=1)}
+
+
+def plain(text: str) -> str:
+    """A model name made safe for ordinary (non-math) text: a `$` would start mathtext."""
+    return text.replace("$", r"\$")
+
+
+def _roman(name: str) -> str:
+    return r"\mathrm{" + name.replace("_", r"\_").replace(" ", r"\ ") + "}"
+
+
+def subscript(letter: str, name: str, body: Optional[int] = None,
+              relative: Optional[int] = None) -> str:
+    """`letter` with the subscript `name` (a point or a tag), `∈body` and `/relative`:
+    $v_{\\mathrm{B}∈3/2}$. A name mathtext cannot take is written plainly: v(name∈3/2)."""
+    tail = (f"∈{body}" if body is not None else "") + (f"/{relative}" if relative is not None
+                                                       else "")
+    if not _SIMPLE.match(name):
+        return f"{letter}({plain(name)}{tail})"
+    math = _roman(name)
+    if body is not None:
+        math += r"{\in}" + str(body)
+    if relative is not None:
+        math += "/" + str(relative)
+    return "$" + letter + "_{" + math + "}$"
+
+
+def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
+                 relative_to: Optional[str] = None) -> str:
+    """`letter` for the material point `point` of `body` (None, or one whose motion all the
+    point's carriers share: the bare name), relative to `relative_to` (None or the frame:
+    absolute)."""
+    numbers = body_numbers(model)
+    if body is not None and model.share_motion(point, model.carriers(point)):
+        body = None
+    rel = None if relative_to in (None, model.frame) else numbers[relative_to]
+    return subscript(letter, point, None if body is None else numbers[body], rel)
+
+
+def pair_symbol(letter: str, model: Any, a: str, b: str) -> str:
+    """`letter` for a pair of bodies by their numbers, smaller first: $I_{13}$ (I_{2,11}
+    once a number has two digits)."""
+    numbers = body_numbers(model)
+    x, y = sorted((numbers[a], numbers[b]))
+    tag = f"{x}{y}" if max(numbers.values()) < 10 else f"{x},{y}"
+    return subscript(letter, tag)
+
+
+def formula(expr: Any, value: float) -> str:
+    """A short formula in mathtext ($2 r w^{2}$), else the value (`≈ 3.08`)."""
+    from sympy import latex
+
+    from ..report.values import tidy
+
+    tidied = tidy(expr)
+    if len(str(tidied)) > FORMULA_CHARS:
+        return f"≈ {value:.3g}"
+    text = "$" + latex(tidied) + "$"
+    if not settable(text):
+        return f"≈ {value:.3g}"
+    return text
+
+
+def settable(text: str) -> bool:
+    """Whether matplotlib can set `text` (its mathtext parses)."""
+    from .labels import text_extent
+    from .style import LABEL_SIZE
+
+    try:
+        text_extent(text, LABEL_SIZE)
+    except ValueError:
+        return False
+    return True
+
+
+def equation(lhs: str, rhs: str) -> str:
+    """`lhs = rhs`, or `lhs ≈ x` when the value is only approximate."""
+    return f"{lhs} {rhs}" if rhs.startswith("≈") else f"{lhs} = {rhs}"
+
+
+def number(x: float, scale: float = 1.0) -> str:
+    """3 significant digits, with round-off below 1e-9 of `scale` shown as 0."""
+    return "0" if abs(x) <= 1e-9 * scale else f"{x:.3g}"
+
+
+def bare(label: str) -> str:
+    """A mathtext label as readable plain text, for notes: $I_{\\mathrm{13}}$ -> I13."""
+    out = label.replace("$", "").replace(r"\mathrm", "").replace(r"{\in}", "∈")
+    out = out.replace(r"\_", "\0").replace(r"\ ", " ")
+    out = out.replace("{", "").replace("}", "").replace("_", "").replace("\\", "")
+    return out.replace("\0", "_")
+
+
+def numbered(label: str) -> bool:
+    """Whether a label names bodies by their numbers (then the figure says which is which)."""
+    return r"{\in}" in label or ("_{" in label and "/" in label) or label.startswith("$I_") \
+        or label.startswith("$Γ_")
