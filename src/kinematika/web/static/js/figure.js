@@ -62,7 +62,7 @@ export class Figure {
     this.defs();
     const g = (cls) => el("g", { class: cls }, this.svg);
     this.g = { ground: g("ground"), traces: g("traces"), bodies: g("bodies"), overlay: g("overlay"),
-               vectors: g("vectors"), labels: g("labels") };
+               vectors: g("vectors"), labels: g("labels"), handles: g("handles") };
     this.anchors = {};
     this.bodyGroups = {};
     this.paintTraces();
@@ -316,13 +316,14 @@ export class Figure {
         if (named.has(p)) continue;
         named.add(p);
         const g = this.bodyGroup(b.frame ? null : name);
-        const dotEl = el("circle", { cx: xy[0], cy: -xy[1], r: 3.2 * this.px, fill: this.scene.style.ink,
-                                     class: "draggable", "data-point": p }, g);
-        this.draggable(dotEl, p);
+        el("circle", { cx: xy[0], cy: -xy[1], r: 3.2 * this.px, fill: this.scene.style.ink, "data-point": p }, g);
         const label = el("text", { "font-size": 12 * this.px, "font-weight": "bold", fill: this.scene.style.point_label,
                                    class: "point-label" }, this.g.labels);
         label.textContent = p;
-        this.pointLabels.push({ label, name: p, body: name, frame: b.frame, xy });
+        const handle = el("circle", { r: 9 * this.px, class: "draggable", "data-handle": p }, this.g.handles);
+        el("title", {}, handle).textContent = `${p}: drag to move it`;
+        this.draggable(handle, p);
+        this.pointLabels.push({ label, handle, name: p, body: name, frame: b.frame, xy });
       }
     }
   }
@@ -506,8 +507,13 @@ export class Figure {
         const swept = sw.points[`${pl.name}@${pl.body}`];
         p = swept ? swept.position[k] : null;
       }
-      if (p) placeText(pl.label, p, [5 * this.px, 5 * this.px]);
+      if (p) {
+        placeText(pl.label, p, [5 * this.px, 5 * this.px]);
+        pl.handle.setAttribute("cx", p[0]);
+        pl.handle.setAttribute("cy", -p[1]);
+      }
       pl.label.setAttribute("visibility", p ? "visible" : "hidden");
+      pl.handle.setAttribute("visibility", p ? "visible" : "hidden");
     }
     this.applyLayers();
   }

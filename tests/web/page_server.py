@@ -1,0 +1,37 @@
+"""The page's server on a free port of 127.0.0.1, in a thread, for the browser tests."""
+from __future__ import annotations
+
+import socket
+import threading
+import time
+
+import uvicorn
+
+from kinematika.web.server import Start, bundled_examples, create_app
+
+
+class PageServer:
+    """uvicorn serving `create_app(start)` until `stop()`; `url` is its address."""
+
+    def __init__(self, start: Start) -> None:
+        start.examples = start.examples or bundled_examples()
+        self.sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+        self.sock.bind(("127.0.0.1", 0))
+        self.sock.listen(64)
+        self.url = f"http://127.0.0.1:{self.sock.getsockname()[1]}/"
+        config = uvicorn.Config(create_app(start, hosts=["127.0.0.1", "localhost"]),
+                                log_level="warning", access_log=False)
+        self.server = uvicorn.Server(config)
+        self.thread = threading.Thread(target=self.server.run, kwargs={"sockets": [self.sock]},
+                                       daemon=True)
+        self.thread.start()
+        deadline = time.monotonic() + 20
+        while not self.server.started:
+            if time.monotonic() > deadline:
+                raise RuntimeError("the page's server did not start")
+            time.sleep(0.02)
+
+    def stop(self) -> None:
+        self.server.should_exit = True
+        self.thread.join(10)
+        self.sock.close()

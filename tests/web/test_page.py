@@ -1,0 +1,276 @@
+"""The page in a real browser (Debian's Chromium driven by Playwright): what a new user
+does with `kinematika app examples/four_bar.yaml` — sees the linkage, drags the slider
+through a full turn with the numbers following, edits a length and sees it re-solve, drags
+a point, reads the Basque explanation, downloads the CSV, copies a link.
+
+Skipped only when Chromium is not installed (`bash scripts/browser.sh` installs it); under
+CI it must be there. The figures for the four-bar are derived by hand: the crank O2A has
+length 1, is drawn at 90° and turns at ω = 10 rad/s, so at an input of k degrees
+A = (cos(90°+k), sin(90°+k)) and v_A = 10·(−sin(90°+k), cos(90°+k)).
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import shutil
+import statistics
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+import kinematika.cli  # noqa: F401
+from kinematika.cli.app import app as cli
+from kinematika.web.server import Start
+from tests.conftest import EXAMPLES
+
+from .page_server import PageServer
+
+pytestmark = pytest.mark.browser
+CHROMIUM = "/usr/bin/chromium"
+FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
+         "--disable-component-update", "--disable-sync", "--no-first-run"]
+FOUR_BAR = EXAMPLES / "four_bar.yaml"
+
+
+def _chromium_or_skip() -> None:
+    if Path(CHROMIUM).exists() or shutil.which("chromium"):
+        return
+    if os.environ.get("CI"):
+        pytest.fail("Chromium is missing in CI: the test command runs scripts/browser.sh to install it")
+    pytest.skip("Chromium is not installed (bash scripts/browser.sh, or apt-get install chromium)")
+
+
+@pytest.fixture(scope="session")
+def browser():
+    _chromium_or_skip()
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM if Path(CHROMIUM).exists()
+                              else shutil.which("chromium"), args=FLAGS)
+        yield b
+        b.close()
+
+
+@pytest.fixture(scope="session")
+def server():
+    s = PageServer(Start(text=FOUR_BAR.read_text(), fmt="yaml", name=FOUR_BAR.name))
+    yield s
+    s.stop()
+
+
+@pytest.fixture
+def page(browser, server):
+    context = browser.new_context(viewport={"width": 1400, "height": 1000}, bypass_csp=True,
+                                  accept_downloads=True)
+    pg = context.new_page()
+    pg.set_default_timeout(8000)
+    errors: list[str] = []
+    pg.on("pageerror", lambda e: errors.append(str(e)))
+    pg.goto(server.url)
+    ready(pg)
+    yield pg
+    context.close()
+    assert not errors, errors
+
+
+def ready(pg) -> None:
+    """Wait for the model to be solved, drawn and swept."""
+    pg.wait_for_function("() => window.kinematika && window.kinematika.state.solution"
+                         " && document.getElementById('busy').hidden", timeout=20000)
+
+
+def cell(pg, key: str):
+    return json.loads(pg.get_by_test_id("answers").locator(f'td[data-key="{key}"]')
+                      .get_attribute("data-value"))
+
+
+def sweep_rows(path: Path = FOUR_BAR, *args: str) -> dict:
+    result = CliRunner().invoke(cli, ["sweep", str(path), "--json", "--skip-bad", *args])
+    assert result.exit_code == 0
+    return json.loads(result.stdout)
+
+
+def set_row(pg, k: int) -> float:
+    """Move the slider to row k as an input event does; the milliseconds until the next
+    frame is painted with the figure and table updated."""
+    return pg.evaluate("""async (k) => {
+        const s = document.querySelector('[data-testid=input-slider]');
+        const t0 = performance.now();
+        s.value = String(k);
+        s.dispatchEvent(new Event('input', {bubbles: true}));
+        await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+        return performance.now() - t0;
+    }""", k)
+
+
+def v_a(k: float) -> list[float]:
+    t = math.radians(90 + k)
+    return [-10 * math.sin(t), 10 * math.cos(t)]
+
+
+def test_loads_the_linkage_with_its_answers(page):
+    figure = page.get_by_test_id("figure")
+    assert sorted(figure.locator("g.body").evaluate_all("gs => gs.map(g => g.dataset.body)")) == \
+        ["coupler", "crank", "rocker"]
+    assert page.get_by_test_id("dof").inner_text() == "DOF 1"
+    assert page.get_by_test_id("error").is_hidden()
+    assert cell(page, "points.A@crank.velocity") == pytest.approx([-10.0, 0.0], abs=1e-9)
+    assert cell(page, "bodies.crank.omega") == 10.0
+    # the asked velocity of B, answered as the CLI answers it
+    cli_json = json.loads(CliRunner().invoke(cli, ["solve", str(FOUR_BAR), "--json"]).stdout)
+    assert cell(page, "answers.0") == cli_json["answers"][0]["value"]
+    assert figure.locator("[data-mark]").count() == 6            # every instant centre
+    assert figure.locator("[data-kennedy]").count() > 0
+
+
+def test_the_slider_drives_figure_and_table_through_a_full_turn(page, capsys):
+    rows = sweep_rows()
+    slider = page.get_by_test_id("input-slider")
+    assert slider.get_attribute("max") == "360"
+    # drag the slider's thumb with the mouse from one end to the other
+    box = slider.bounding_box()
+    y = box["y"] + box["height"] / 2
+    page.mouse.move(box["x"] + 2, y)
+    page.mouse.down()
+    page.mouse.move(box["x"] + box["width"] / 2, y, steps=12)
+    k = int(slider.input_value())
+    assert 150 < k < 210
+    assert cell(page, "points.A@crank.velocity") == pytest.approx(v_a(k), abs=1e-9)
+    assert cell(page, "points.B@coupler.velocity") == rows["points"]["B@rocker"]["velocity"][k]
+    page.mouse.move(box["x"] + box["width"] - 1, y, steps=12)
+    page.mouse.up()
+    assert slider.input_value() == "360"
+    times = []
+    for k in range(0, 361, 5):
+        times.append(set_row(page, k))
+        assert cell(page, "bodies.crank.angle") == rows["bodies"]["crank"]["angle"][k] == \
+            pytest.approx(k)
+        assert cell(page, "points.A@crank.velocity") == pytest.approx(v_a(k), abs=1e-9)
+        for key in ("B@coupler", "B@rocker"):      # one motion, one row (B@coupler)
+            assert cell(page, "points.B@coupler.acceleration") == rows["points"][key]["acceleration"][k]
+        assert cell(page, "bodies.rocker.omega") == rows["bodies"]["rocker"]["omega"][k]
+        # the crank's bar is drawn where the sweep puts A
+        a = page.evaluate("""() => { const c = document.querySelector('[data-point=A]');
+            const m = c.getCTM(), s = document.querySelector('[data-testid=figure]').getCTM().inverse();
+            const p = new DOMPoint(+c.getAttribute('cx'), +c.getAttribute('cy')).matrixTransform(m).matrixTransform(s);
+            return [p.x, -p.y]; }""")
+        assert a == pytest.approx(rows["points"]["A@crank"]["position"][k], abs=1e-9)
+    with capsys.disabled():
+        print(f"\n[page] slider to painted frame: median {statistics.median(times):.1f} ms, "
+              f"max {max(times):.1f} ms over {len(times)} positions")
+
+
+def test_editing_a_length_solves_again(page):
+    editor = page.get_by_test_id("model-editor")
+    text = editor.input_value()
+    assert "A: [0, 1]" in text
+    editor.fill(text.replace("A: [0, 1]", "A: [0, 1.5]"))        # the crank 1.5 long
+    page.wait_for_function("() => JSON.parse(document.querySelector("
+                           "'td[data-key=\"points.A@crank.velocity\"]').dataset.value)[0] < -14")
+    assert cell(page, "points.A@crank.velocity") == pytest.approx([-15.0, 0.0], abs=1e-9)
+    assert cell(page, "points.A@crank.position") == [0.0, 1.5]
+    assert page.get_by_test_id("error").is_hidden()
+
+
+def test_errors_appear_as_you_type_at_their_place(page):
+    editor = page.get_by_test_id("model-editor")
+    good = editor.input_value()
+    editor.fill(good.replace("at: O4}", "at: Q4}"))
+    error = page.get_by_test_id("error")
+    error.wait_for(state="visible")
+    assert error.get_attribute("data-kind") == "schema" and "'Q4'" in error.inner_text()
+    bad_line = good.splitlines().index(next(l for l in good.splitlines() if "at: O4}" in l)) + 1
+    assert page.locator("#gutter .bad").inner_text() == str(bad_line)
+    editor.fill(good.replace("drivers:", "drivers: ["))
+    page.wait_for_function("() => document.querySelector('[data-testid=error]').dataset.kind === 'syntax'")
+    editor.fill(good)
+    error.wait_for(state="hidden")
+    assert page.get_by_test_id("dof").inner_text() == "DOF 1"
+
+
+def test_dragging_a_point_changes_the_text(page):
+    set_row(page, 0)
+    dot = page.locator('[data-testid=figure] [data-handle="A"]')
+    box = dot.bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    page.mouse.move(x + 20, y - 30, steps=6)
+    page.mouse.up()
+    page.wait_for_function("() => !document.querySelector('[data-testid=model-editor]').value.includes('A: [0, 1]')")
+    page.wait_for_timeout(400)
+    ready(page)
+    text = page.get_by_test_id("model-editor").input_value()
+    line = next(l for l in text.splitlines() if l.strip().startswith("A:"))
+    x_new, y_new = json.loads(line.split(":", 1)[1])
+    assert x_new > 0 and y_new > 1                       # right of and above where it was
+    assert cell(page, "points.A@crank.position") == pytest.approx([x_new, y_new])
+    # the crank turning at 10 rad/s about O2 = (0, 0): v_A = 10·(−y, x)
+    assert cell(page, "points.A@crank.velocity") == pytest.approx([-10 * y_new, 10 * x_new])
+
+
+def test_basque_explanation_of_the_current_position(page):
+    page.get_by_test_id("language").select_option("eu")
+    frame = page.frame_locator("[data-testid=explanation]")
+    frame.locator("html[lang=eu]").wait_for()
+    body = frame.locator("body").inner_text()
+    assert "Abiadurak" in body and "Azelerazioak" in body
+    assert "Velocities" not in body
+
+
+def test_downloads_the_sweep_as_csv(page, tmp_path):
+    page.locator("#downloads summary").click()
+    with page.expect_download() as info:
+        page.get_by_test_id("download-csv").click()
+    download = info.value
+    assert download.suggested_filename == "four_bar.csv"
+    saved = tmp_path / "rows.csv"
+    download.save_as(saved)
+    expected = tmp_path / "cli.csv"
+    assert CliRunner().invoke(cli, ["sweep", str(FOUR_BAR), "--skip-bad", "--csv", str(expected)]).exit_code == 0
+    assert saved.read_bytes() == expected.read_bytes()
+    lines = saved.read_text().splitlines()
+    assert lines[0].startswith("coordinate_deg,") and len(lines) == 362
+
+
+def test_the_link_holds_the_model(page, browser, server):
+    editor = page.get_by_test_id("model-editor")
+    edited = editor.input_value().replace("w2: 10", "w2: 7")
+    editor.fill(edited)
+    page.wait_for_function("() => window.kinematika.state.solution.bodies.crank.omega === 7")
+    page.get_by_test_id("copy-link").click()
+    page.wait_for_function("() => location.hash.includes('model=')")
+    url = page.url
+    other = browser.new_context(bypass_csp=True).new_page()
+    other.goto(url)
+    ready(other)
+    assert other.get_by_test_id("model-editor").input_value() == edited
+    assert cell(other, "bodies.crank.omega") == 7.0
+    other.context.close()
+
+
+def test_play_moves_the_input(page):
+    play = page.get_by_test_id("play")
+    play.click()
+    page.wait_for_function("() => +document.querySelector('[data-testid=input-slider]').value > 10")
+    play.click()
+    k = int(page.get_by_test_id("input-slider").input_value())
+    page.wait_for_timeout(200)
+    assert int(page.get_by_test_id("input-slider").input_value()) == k     # stopped
+    assert cell(page, "points.A@crank.velocity") == pytest.approx(v_a(k), abs=1e-9)
+
+
+def test_the_page_runs_under_its_own_security_policy(browser, server):
+    context = browser.new_context()            # no CSP bypass: the page as a user gets it
+    pg = context.new_page()
+    problems: list[str] = []
+    pg.on("console", lambda m: problems.append(m.text) if m.type == "error" else None)
+    pg.on("pageerror", lambda e: problems.append(str(e)))
+    pg.goto(server.url)
+    pg.get_by_test_id("figure").locator("g.body").first.wait_for()
+    pg.get_by_test_id("dof").filter(has_text="DOF 1").wait_for()
+    assert not problems, problems
+    context.close()
