@@ -176,9 +176,17 @@ _OPS: dict[str, Callable[[Any, Any], Any]] = {
 }
 
 
+def _magnitude(value: Any) -> float:
+    """|value|; for an array of designs (`algebra.arrays`), the largest."""
+    try:
+        return abs(float(value))
+    except TypeError:
+        return float(abs(value).max())
+
+
 def _binary(op: str, left: Any, right: Any, backend: Any, source: str) -> Any:
-    if op == "**" and not getattr(right, "free_symbols", None) and abs(float(right)) > MAX_EXPONENT:
-        raise ExpressionError(f"in {source!r}: the exponent {float(right):g} is too large "
+    if op == "**" and not getattr(right, "free_symbols", None) and _magnitude(right) > MAX_EXPONENT:
+        raise ExpressionError(f"in {source!r}: the exponent {_magnitude(right):g} is too large "
                               f"(at most {MAX_EXPONENT} in absolute value)")
     try:
         result = _OPS[op](left, right)

@@ -9,6 +9,10 @@ and its rotation; every material point follows from those.
 
 Planar vectors are complex numbers here (x + iy): k × r is i r, a rotation by θ is a
 product by e^{iθ}, and an array of them is, as floats, the (N, 2) rows of the answers.
+
+The batch axis: the drawn points, directions and input rates may be arrays of designs
+(shape (D, 1)) and the increments a row (1, N); every formula broadcasts, so one call
+solves D designs over N positions, each design on its own drawn branch (`sweep.batch`).
 """
 from __future__ import annotations
 
@@ -29,30 +33,35 @@ class Track:
     """A body's motion over the rows: rotation θ from the drawn pose and its origin's motion.
 
     `o`, `v`, `a` (complex) are the origin's position, velocity and acceleration, `rot` is
-    e^{iθ}. A quantity that does not change over the rows (the frame's, a crank's ω) is a
-    plain number rather than an array. Material points are computed once and kept
-    (`point`), so a joint point a dyad has solved is not computed again for the answers.
+    e^{iθ}; `origin0` names the origin's drawn point in `drawn` (name → drawn location).
+    A quantity that does not change over the rows (the frame's, a crank's ω) is a plain
+    number rather than an array. Material points are computed once and kept (`point`), so
+    a joint point a dyad has solved is not computed again for the answers.
     """
 
-    __slots__ = ("origin0", "theta", "o", "v", "a", "omega", "alpha", "rot", "known")
+    __slots__ = ("drawn", "origin0", "theta", "o", "v", "a", "omega", "alpha", "rot", "known")
 
-    def __init__(self, origin0: complex, theta: np.ndarray, o: np.ndarray, v: np.ndarray, a: np.ndarray,
-                 omega: np.ndarray, alpha: np.ndarray, rot: np.ndarray) -> None:
-        self.origin0, self.theta, self.o, self.v, self.a = origin0, theta, o, v, a
+    def __init__(self, drawn: dict, origin0: str, theta: np.ndarray, o: np.ndarray, v: np.ndarray,
+                 a: np.ndarray, omega: np.ndarray, alpha: np.ndarray, rot: np.ndarray) -> None:
+        self.drawn, self.origin0, self.theta, self.o, self.v, self.a = drawn, origin0, theta, o, v, a
         self.omega, self.alpha, self.rot = omega, alpha, rot
-        self.known: dict[complex, tuple] = {}
+        self.known: dict[str, tuple] = {}
 
-    def point(self, p0: complex) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Position, velocity and acceleration of the material point drawn at `p0`."""
-        if p0 in self.known:
-            return self.known[p0]
-        if p0 == self.origin0:
+    def point(self, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Position, velocity and acceleration of the body's material point `name`."""
+        if name in self.known:
+            return self.known[name]
+        if name == self.origin0:
             out = (self.o, self.v, self.a)
         else:
-            r = self.rot * (p0 - self.origin0)
+            r = self.rot * (self.drawn[name] - self.drawn[self.origin0])
             out = (self.o + r, self.v + r * (1j * self.omega), self.a + r * _turning(self.omega, self.alpha))
-        self.known[p0] = out
+        self.known[name] = out
         return out
+
+    def moved(self, origin0: str, o: np.ndarray, v: np.ndarray, a: np.ndarray) -> "Track":
+        """A body turning with this one whose origin `origin0` has the motion o, v, a."""
+        return Track(self.drawn, origin0, self.theta, o, v, a, self.omega, self.alpha, self.rot)
 
 
 def _turning(w: np.ndarray, al: np.ndarray) -> np.ndarray:
@@ -62,12 +71,31 @@ def _turning(w: np.ndarray, al: np.ndarray) -> np.ndarray:
 
 @dataclass
 class Outcome:
-    """Tracks of every body and, per row, whether it was assembled and how singular it is."""
+    """Tracks of every body and, per row, whether it was assembled and how singular it is.
+
+    The masks have the rows' shape: (N,) for one design, (D, N) for a batch of designs.
+    """
 
     tracks: dict[str, Track]
-    assembled: np.ndarray          # bool (N,)
-    singular: np.ndarray           # bool (N,): a dyad's directions parallel (|sin| < SINGULAR)
-    worst: list[str]               # per row with a failure: the group's bodies (for messages)
+    assembled: np.ndarray          # bool: the row could be assembled
+    singular: np.ndarray           # bool: a dyad's directions parallel (|sin| < SINGULAR)
+    failed: np.ndarray             # int: the first group (index in `groups`) that failed, or -1
+    groups: list[Group]
+
+    def worst(self, k) -> str:
+        """The bodies of the group that failed first at row `k` (for messages), or ''."""
+        index = int(self.failed[k])
+        return " and ".join(self.groups[index].bodies) if index >= 0 else ""
+
+
+class InputRates:
+    """The input body's origin (drawn, by name) and its ω, α, v, a: constant over the rows
+    (numbers, or arrays of designs)."""
+
+    __slots__ = ("origin", "omega", "alpha", "v", "a")
+
+    def __init__(self, origin: str, omega, alpha, v, a) -> None:
+        self.origin, self.omega, self.alpha, self.v, self.a = origin, omega, alpha, v, a
 
 
 def applicable(model: Model, groups: Optional[list[Group]], joint: Joint, driver: Driver) -> bool:
@@ -82,65 +110,98 @@ def applicable(model: Model, groups: Optional[list[Group]], joint: Joint, driver
 
 
 class ClosedForm:
-    """A crank/slider-and-dyads mechanism prepared for closed-form sweeps of its input."""
+    """A crank/slider-and-dyads mechanism prepared for closed-form sweeps of its input.
 
-    def __init__(self, model: Model, points: dict[str, tuple], directions: dict[str, tuple],
-                 groups: list[Group], joint: Joint, drawn: Motion) -> None:
-        self.model, self.joint = model, joint
-        self.points = {k: complex(*p) for k, p in points.items()}
-        directions = {k: complex(*u) for k, u in directions.items()}
+    `points` (name → complex) and `directions` (joint id → unit complex) are the drawn
+    configuration, `rates` the input's motion; each may hold arrays of designs (D, 1).
+    """
+
+    def __init__(self, model: Model, points: dict[str, complex], directions: dict[str, complex],
+                 groups: list[Group], joint: Joint, rates: InputRates) -> None:
+        self.model, self.joint, self.groups = model, joint, groups
+        self.points = points
         self.input = groups[0].bodies[0]
+        self.guide = directions[joint.id] if joint.type != "revolute" else 0j
         self.chains = [(g, _SOLVERS[g.kind], _Chain(model, g, self.points, directions)) for g in groups[1:]]
-        self._input_motion(directions, drawn)
+        self.rates = rates
 
-    def _input_motion(self, directions: dict, drawn: Motion) -> None:
-        """The input's origin and its ω, α, v, a from the drawn instant: constant."""
-        j, body = self.joint, self.input
-        state = drawn.states[body]
-        if j.type == "revolute":
-            o0, self.guide = self.points[j.at], 0j
-        else:
-            names = self.model.bodies[body].points
-            o0 = self.points[names[0]] if names else complex(*drawn.ref)
-            self.guide = directions[j.id]
-        here = (o0.real, o0.imag)
-        v, a = drawn.velocity(state, here), drawn.acceleration(state, here)
-        self.origin = o0
-        self.rates = (float(state.omega), float(state.alpha), complex(*v), complex(*a))
+    @classmethod
+    def at_drawn(cls, model: Model, points: dict[str, tuple], directions: dict[str, tuple],
+                 groups: list[Group], joint: Joint, drawn: Motion) -> "ClosedForm":
+        """One design, its input's rates read from the engine's solution of the drawn instant."""
+        cpoints = {k: complex(*p) for k, p in points.items()}
+        cdirections = {k: complex(*u) for k, u in directions.items()}
+        rates = drawn_rates(model, joint, groups[0].bodies[0], cpoints, drawn)
+        return cls(model, cpoints, cdirections, groups, joint, rates)
 
     def solve(self, q: np.ndarray) -> Outcome:
-        """Every body's track at the increments `q` (radians or length) of the input joint."""
-        n = len(q)
-        o0 = next(iter(self.points.values()))
-        frame = Track(o0, 0.0, o0, 0j, 0j, 0.0, 0.0, 1 + 0j)          # at rest: plain numbers
-        for p in self.model.bodies[self.model.frame].points:
-            frame.known[self.points[p]] = (self.points[p], 0j, 0j)
+        """Every body's track at the increments `q` (radians or length) of the input joint:
+        (N,) rows, or a (1, N) row of increments for a batch of designs."""
+        frame_points = self.model.bodies[self.model.frame].points
+        o0 = frame_points[0] if frame_points else next(iter(self.points))
+        frame = Track(self.points, o0, 0.0, self.points[o0], 0j, 0j, 0.0, 0.0, 1 + 0j)   # at rest
+        for p in frame_points:
+            frame.known[p] = (self.points[p], 0j, 0j)
         tracks = {self.model.frame: frame, self.input: self._input(q)}
-        assembled = np.ones(n, dtype=bool)
-        singular = np.zeros(n, dtype=bool)
-        worst = [""] * n
-        for g, solver, chain in self.chains:
+        failures = _Failures()
+        for index, (g, solver, chain) in enumerate(self.chains, start=1):
             sing = solver(chain, tracks)
             theta = tracks[g.bodies[0]].theta
             if np.isnan(theta.sum()) or sing.min() < SINGULAR:      # rare: find the rows
-                ok = ~np.isnan(theta)
-                failed = ~ok | (sing < SINGULAR)
-                for k in np.flatnonzero(failed & assembled & ~singular):
-                    worst[k] = " and ".join(g.bodies)
-                singular |= ok & (sing < SINGULAR)
-                assembled &= ok
-        return Outcome(tracks, assembled, singular & assembled, worst)
+                failures.add(index, ~np.isnan(theta), sing < SINGULAR)
+        shape = np.broadcast_shapes(np.shape(q), np.shape(self.rates.omega),
+                                    *(np.shape(p) for p in self.points.values()))
+        return Outcome(tracks, *failures.masks(shape), self.groups)
 
     def _input(self, q: np.ndarray) -> Track:
         """A crank turning by the increments about its pivot, or a slider moving along its guide."""
         j = self.joint
         sign = 1.0 if j.a == self.model.frame else -1.0      # the coordinate is j.b relative to j.a
-        w, al, v, a = self.rates
-        o0 = self.origin
+        r = self.rates
+        o0 = self.points[r.origin]
         if j.type == "revolute":
             theta = sign * q
-            return Track(o0, theta, o0, v, a, w, al, np.exp(1j * theta))
-        return Track(o0, 0.0, o0 + (sign * self.guide) * q, v, a, 0.0, 0.0, 1 + 0j)
+            return Track(self.points, r.origin, theta, o0, r.v, r.a, r.omega, r.alpha, np.exp(1j * theta))
+        return Track(self.points, r.origin, 0.0, o0 + (sign * self.guide) * q, r.v, r.a, 0.0, 0.0, 1 + 0j)
+
+
+REF = "·ref"             # the drawn reference point, origin of an input slider that carries no point
+
+
+def drawn_rates(model: Model, joint: Joint, body: str, points: dict[str, complex], drawn: Motion) -> InputRates:
+    """The input's origin and its ω, α, v, a read from the engine's drawn instant."""
+    state = drawn.states[body]
+    if joint.type == "revolute":
+        origin = joint.at
+    else:
+        names = model.bodies[body].points
+        origin = names[0] if names else REF
+        if not names:
+            points[REF] = complex(*drawn.ref)
+    here = (points[origin].real, points[origin].imag)
+    v, a = drawn.velocity(state, here), drawn.acceleration(state, here)
+    return InputRates(origin, float(state.omega), float(state.alpha), complex(*v), complex(*a))
+
+
+class _Failures:
+    """Which rows failed, in which group first, and which were singular (built lazily: rare)."""
+
+    def __init__(self) -> None:
+        self.found: list[tuple[int, np.ndarray, np.ndarray]] = []
+
+    def add(self, index: int, ok: np.ndarray, singular: np.ndarray) -> None:
+        self.found.append((index, ok, singular))
+
+    def masks(self, shape: tuple) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        assembled = np.ones(shape, dtype=bool)
+        singular = np.zeros(shape, dtype=bool)
+        failed = np.full(shape, -1, dtype=np.int16)
+        for index, ok, sing in self.found:
+            first = (failed < 0) & (~ok | sing) & assembled & ~singular
+            failed[first] = index
+            singular |= ok & sing
+            assembled &= ok
+        return assembled, singular & assembled, failed
 
 
 def const(value: complex | float, n: int) -> np.ndarray:
@@ -164,7 +225,11 @@ class _Chain:
         self.j1, self.j3 = joints[0], joints[-1]
         self.j2 = joints[1] if len(joints) == 3 else joints[-1]   # a slot is the middle pair too
 
-    def at(self, j: Joint) -> complex:
+    def at(self, j: Joint) -> str:
+        """The name of the joint's point (a track's `point` takes names)."""
+        return j.at
+
+    def drawn(self, j: Joint) -> complex:
         return self.points[j.at]
 
     def along(self, j: Joint) -> complex:
@@ -173,11 +238,12 @@ class _Chain:
 
 def _rrr(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     """Circle–circle: B at L1 from A (on k1) and at L2 from C (on k2)."""
-    a0, b0, c0 = c.at(c.j1), c.at(c.j2), c.at(c.j3)
-    (A, vA, aA), (C, vC, aC) = tr[c.k1].point(a0), tr[c.k2].point(c0)
+    a, b, c_ = c.at(c.j1), c.at(c.j2), c.at(c.j3)
+    a0, b0, c0 = c.drawn(c.j1), c.drawn(c.j2), c.drawn(c.j3)
+    (A, vA, aA), (C, vC, aC) = tr[c.k1].point(a), tr[c.k2].point(c_)
     r10, r20 = b0 - a0, b0 - c0
-    l1, l2 = abs(r10) ** 2, abs(r20) ** 2
-    sigma = -1.0 if _cross(c0 - a0, r10) < 0 else 1.0
+    l1, l2 = _abs2(r10), _abs2(r20)
+    sigma = _sign(_cross(c0 - a0, r10))
     d = C - A
     d2 = d.real * d.real + d.imag * d.imag
     f = (d2 + (l1 - l2)) / (2 * d2)
@@ -191,21 +257,22 @@ def _rrr(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     (al1, al2), _ = _solve2(r1, m2, (aA - aC - w1s * r1 + (w2 * w2) * r2) * 1j)
     vB = vA + r1 * (1j * w1)
     aB = aA + r1 * (1j * al1 - w1s)
-    tr[c.b1] = _body(a0, r10, l1, r1, A, vA, aA, w1, al1)
-    tr[c.b2] = _body(c0, r20, l2, r2, C, vC, aC, w2, al2)
-    tr[c.b1].known[b0] = tr[c.b2].known[b0] = (B, vB, aB)
+    tr[c.b1] = _body(c.points, a, r10, l1, r1, A, vA, aA, w1, al1)
+    tr[c.b2] = _body(c.points, c_, r20, l2, r2, C, vC, aC, w2, al2)
+    tr[c.b1].known[b] = tr[c.b2].known[b] = (B, vB, aB)
     return sing
 
 
 def _rrp(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     """Circle–line: B at L1 from A (on k1) and on the line through B fixed in k2."""
-    a0, b0 = c.at(c.j1), c.at(c.j2)
+    a, b = c.at(c.j1), c.at(c.j2)
+    a0, b0 = c.drawn(c.j1), c.drawn(c.j2)
     g = tr[c.k2]
     u = c.along(c.j3) * g.rot
-    (A, vA, aA), (Q, vQ, aQ) = tr[c.k1].point(a0), g.point(b0)
+    (A, vA, aA), (Q, vQ, aQ) = tr[c.k1].point(a), g.point(b)
     r10 = b0 - a0
-    l1 = abs(r10) ** 2
-    sigma = -1.0 if _dot(r10, c.along(c.j3)) < 0 else 1.0
+    l1 = _abs2(r10)
+    sigma = _sign(_dot(r10, c.along(c.j3)))
     w = Q - A
     wu = w.real * u.real + w.imag * u.imag
     s = sigma * _root(wu * wu - (w.real * w.real + w.imag * w.imag) + l1) - wu
@@ -218,39 +285,39 @@ def _rrp(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     (al1, _), _ = _solve2(1j * r1, -u, aG - aA + (w1 * w1) * r1)
     vB = vA + r1 * (1j * w1)
     aB = aA + r1 * _turning(w1, al1)
-    tr[c.b1] = _body(a0, r10, l1, r1, A, vA, aA, w1, al1)
-    tr[c.b1].known[b0] = (B, vB, aB)
+    tr[c.b1] = _body(c.points, a, r10, l1, r1, A, vA, aA, w1, al1)
+    tr[c.b1].known[b] = (B, vB, aB)
     if c.b2 is not None:
-        tr[c.b2] = Track(b0, g.theta, B, vB, aB, g.omega, g.alpha, g.rot)
+        tr[c.b2] = g.moved(b, B, vB, aB)
     return sing
 
 
 def _rpr(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     """C (on k2) stays on the line through C fixed in b1, which turns about A (on k1)."""
-    a0, c0 = c.at(c.j1), c.at(c.j3)
+    a, c_ = c.at(c.j1), c.at(c.j3)
+    a0, c0 = c.drawn(c.j1), c.drawn(c.j3)
     u0 = c.along(c.j2)
-    (A, vA, aA), (C, vC, aC) = tr[c.k1].point(a0), tr[c.k2].point(c0)
+    (A, vA, aA), (C, vC, aC) = tr[c.k1].point(a), tr[c.k2].point(c_)
     d0 = _dot(c0 - a0, 1j * u0)                   # offset of the line from A, fixed in b1
-    sigma = -1.0 if _dot(c0 - a0, u0) < 0 else 1.0
+    sigma = _sign(_dot(c0 - a0, u0))
     w = C - A
     t = sigma * _root(w.real * w.real + w.imag * w.imag - d0 * d0)
     u = w / (t + 1j * d0)                          # w = t u + d0 i u
     iw = 1j * w
     (om, td), sing = _solve2(iw, u, vC - vA, True)
     (al, _), _ = _solve2(iw, u, aC - aA + (om * om) * w - u * (2j * om * td))
-    tr[c.b1] = _body(a0, u0, 1.0, u, A, vA, aA, om, al)
+    tr[c.b1] = _body(c.points, a, u0, 1.0, u, A, vA, aA, om, al)
     if c.b2 is not None:
-        first = tr[c.b1]
-        tr[c.b2] = Track(c0, first.theta, C, vC, aC, om, al, first.rot)
+        tr[c.b2] = tr[c.b1].moved(c_, C, vC, aC)
     return sing
 
 
 def _prp(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     """Line–line: B on a line fixed in k1 and on a line fixed in k2."""
-    b0 = c.at(c.j2)
+    b = c.at(c.j2)
     g1, g2 = tr[c.k1], tr[c.k2]
     u1, u2 = c.along(c.j1) * g1.rot, c.along(c.j3) * g2.rot
-    (Q1, v1, a1), (Q2, v2, a2) = g1.point(b0), g2.point(b0)
+    (Q1, v1, a1), (Q2, v2, a2) = g1.point(b), g2.point(b)
     (s1, s2), sing = _solve2(u1, -u2, Q2 - Q1, True)
     B = Q1 + s1 * u1
     vg1, vg2 = v1 + (s1 * u1) * (1j * g1.omega), v2 + (s2 * u2) * (1j * g2.omega)
@@ -260,20 +327,33 @@ def _prp(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     (sdd1, _), _ = _solve2(u1, -u2, ag2 - ag1)
     vB, aB = vg1 + sd1 * u1, ag1 + sdd1 * u1
     theta = np.where(np.isnan(B), np.nan, g1.theta)          # parallel guides: no B
-    tr[c.b1] = Track(b0, theta, B, vB, aB, g1.omega, g1.alpha, g1.rot)
+    tr[c.b1] = Track(c.points, b, theta, B, vB, aB, g1.omega, g1.alpha, g1.rot)
     if c.b2 is not None:
-        tr[c.b2] = Track(b0, g2.theta, B, vB, aB, g2.omega, g2.alpha, g2.rot)
+        tr[c.b2] = g2.moved(b, B, vB, aB)
     return sing
 
 
 _SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp}
 
 
-def _body(o0: complex, r0: complex, length2: float, r: np.ndarray, o: np.ndarray, v: np.ndarray,
-          a: np.ndarray, w: np.ndarray, al: np.ndarray) -> Track:
-    """A body whose drawn vector r0 (of squared length `length2`) is now r."""
-    rot = r * (r0.conjugate() / length2)
-    return Track(o0, unwrap(np.angle(rot)), o, v, a, w, al, rot)
+def _body(drawn: dict, origin: str, r0: complex, length2: float, r: np.ndarray, o: np.ndarray,
+          v: np.ndarray, a: np.ndarray, w: np.ndarray, al: np.ndarray) -> Track:
+    """A body whose drawn vector r0 (of squared length `length2`) is now r; its origin is the
+    point named `origin`."""
+    rot = r * (np.conjugate(r0) / length2)
+    return Track(drawn, origin, unwrap(np.angle(rot)), o, v, a, w, al, rot)
+
+
+def _abs2(z):
+    """|z|² of a complex number or array."""
+    return z.real * z.real + z.imag * z.imag
+
+
+def _sign(x):
+    """-1 where x < 0, else 1: a number, or per design for an array of designs."""
+    if isinstance(x, np.ndarray):
+        return np.where(x < 0, -1.0, 1.0)
+    return -1.0 if x < 0 else 1.0
 
 
 def _dot(p: complex, q: complex) -> float:
@@ -295,17 +375,33 @@ def _root(x: np.ndarray) -> np.ndarray:
 
 
 def unwrap(angle: np.ndarray) -> np.ndarray:
-    """Remove the 2π jumps between rows (as np.unwrap), over the rows that have a value."""
+    """Remove the 2π jumps between rows (as np.unwrap) along the last axis, over the rows that
+    have a value (a gap is bridged: the rows either side are compared)."""
     good = ~np.isnan(angle)
     if not good.all():
-        out = angle.copy()
-        out[good] = unwrap(angle[good])
-        return out
+        if angle.ndim == 1:
+            out = angle.copy()
+            out[good] = unwrap(angle[good])
+            return out
+        return np.where(good, unwrap(_bridged(angle, good)), np.nan)
     if np.abs(angle).max(initial=0.0) < np.pi / 2:
         return angle                      # no two rows can be a turn apart
-    step = np.diff(angle)
-    turns = np.concatenate(([0.0], np.cumsum(np.round(step / (2 * np.pi)))))
-    return angle - 2 * np.pi * turns
+    step = np.diff(angle, axis=-1)
+    turns = np.cumsum(np.round(step / (2 * np.pi)), axis=-1)
+    out = angle.copy()
+    out[..., 1:] -= 2 * np.pi * turns
+    return out
+
+
+def _bridged(angle: np.ndarray, good: np.ndarray) -> np.ndarray:
+    """Each missing value replaced by the last one before it (the first good one at the start;
+    0 in a design with none)."""
+    n = angle.shape[-1]
+    index = np.where(good, np.arange(n), -1)
+    last = np.maximum.accumulate(index, axis=-1)
+    first = np.argmax(good, axis=-1)[..., None]
+    last = np.where(last < 0, first, last)
+    return np.nan_to_num(np.take_along_axis(angle, last, axis=-1), nan=0.0)
 
 
 def _solve2(c1: np.ndarray, c2: np.ndarray, rhs: np.ndarray,

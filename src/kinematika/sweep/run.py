@@ -62,8 +62,6 @@ class Sweeper:
         self.closed = self._closed_form()
         self.motions = motion_classes(model)
         self.names = [str(r) for r in model.material_points()]
-        self.origins = ({name: complex(*self.points[name]) for name, _, _ in self.motions}
-                        if self.closed is not None else {})
         self._plans: dict[tuple, Plan] = {}
 
     def plan(self, by: Optional[float], steps: Optional[int]) -> Plan:
@@ -81,7 +79,8 @@ class Sweeper:
 
         if not applicable(self.model, self.groups, self.joint, self.driver):
             return None
-        return ClosedForm(self.model, self.points, self.directions, self.groups, self.joint, self.drawn)
+        return ClosedForm.at_drawn(self.model, self.points, self.directions, self.groups, self.joint,
+                                   self.drawn)
 
     def linkage(self) -> Any:
         """The four-bar or slider-crank this mechanism is (`structure.linkages`), or None."""
@@ -104,11 +103,11 @@ class Sweeper:
         ok = out.assembled & ~out.singular
         if not skip_bad and not ok.all():
             k = int(np.flatnonzero(~ok)[0])
-            raise bad_row(plan, k, "singular" if out.singular[k] else "assembly", out.worst[k])
+            raise bad_row(plan, k, "singular" if out.singular[k] else "assembly", out.worst(k))
         n = len(ok)
         bodies = {b: {"angle": _series(np.degrees(t.theta), n), "omega": _series(t.omega, n),
                       "alpha": _series(t.alpha, n)} for b, t in out.tracks.items()}
-        points = {(name, body): out.tracks[body].point(self.origins[name]) for name, body, _ in self.motions}
+        points = {(name, body): out.tracks[body].point(name) for name, body, _ in self.motions}
         dead = dead_points(plan.coordinate, ok, out.singular, self._edge if not ok.all() else None)
         return self.result(plan, ok, bodies, points, dead)
 
