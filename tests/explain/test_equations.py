@@ -238,3 +238,42 @@ def test_curvature_worked_out_as_in_the_notes():
     v, an = radius.arm, radius.source.value
     assert sympy.simplify(sum(c * c for c in v) / sympy.sqrt(sum(c * c for c in an)) - 3 * r) == 0
 
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_no_intersection_of_one_line_with_itself(name):
+    """Aronhold–Kennedy is stated only with two lines that meet in one point."""
+    sol, doc = explained(name)
+    for note in doc.blocks():
+        if isinstance(note, CentreNote) and note.how == "kennedy":
+            (p1, q1), (p2, q2) = note.lines
+            homo = [_homogeneous(sol, c) for c in (p1, q1, p2, q2)]
+            l1, l2 = _cross(homo[0], homo[1]), _cross(homo[2], homo[3])
+            meet = _cross(l1, l2)
+            size = max(abs(x) for x in l1 + l2) ** 2
+            assert max(abs(x) for x in meet) > 1e-9 * size, (name, note.pair)
+
+
+def test_epicyclic_planet_centre_from_proportional_speeds():
+    """Notes C5-1.4: the planet's centre is between its centre (2rω) and its contact with
+    the ring (3rω the other way), 2r/5 from its centre."""
+    sol, doc = explained("seed_c5_1_4_epicyclic")
+    note = next(b for b in doc.blocks() if isinstance(b, CentreNote) and set(b.pair) == {"ground", "planet1"})
+    assert note.how == "proportional" and note.side == "between"
+    speeds = sorted(abs(num(sol, v)[0]) for _, _, v in note.witnesses)
+    probe = {str(k): v for k, v in sol.inst.probe.items()}
+    r, w = probe["r"], probe["w"]
+    assert speeds == pytest.approx([2 * r * w, 3 * r * w])
+    assert num(sol, note.value["point"]) == pytest.approx((0, -2 * r - 2 * r / 5))
+
+
+def _homogeneous(sol, c: dict) -> tuple:
+    if c.get("point") is not None:
+        x, y = num(sol, tuple(c["point"]))
+        return (x, y, 1.0)
+    dx, dy = num(sol, tuple(c["direction"]))
+    return (dx, dy, 0.0)
+
+
+def _cross(u: tuple, v: tuple) -> tuple:
+    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])

@@ -15,20 +15,105 @@ MAX_ALL = 10        # above this many pairs, only the centres relative to the fr
 def centres_section(ctx: Ctx) -> Section:
     sec = Section(msg("sec.centres"))
     sec.add(msg("centres.intro"))
-    found = {frozenset(c.pair): c for c in all_centres(ctx.sol)}
+    order = all_centres(ctx.sol)
+    found = {frozenset(c.pair): c for c in order}
     for key in _chosen(ctx, found):
         c = found[key]
         note = CentreNote(c.pair, _clean(ctx, c.value), c.how, list(c.via))
         if c.how == "joint":
             note.joint_type = ctx.model.joint(c.via[0]).type
         if c.how == "kennedy":
-            a, b = c.pair
-            note.lines = [(_clean(ctx, found[frozenset((a, k))].value),
-                           _clean(ctx, found[frozenset((k, b))].value)) for k in c.via]
+            _kennedy(ctx, note, found, order[:order.index(c)])
         elif c.how == "velocities" and c.finite:
             note.witnesses = _witnesses(ctx, c.pair[1], c.pair[0])
         sec.blocks.append(note)
     return sec
+
+
+def _kennedy(ctx: Ctx, note: CentreNote, found: dict, before: list) -> None:
+    """Two Aronhold–Kennedy lines that really meet; when every pair of lines is one line
+    (the planet of an epicyclic: O, its centre and its contacts are collinear), the
+    notes' reasoning instead: speeds proportional to the distance from the centre."""
+    a, b = note.pair
+    earlier = {frozenset(c.pair) for c in before}
+    thirds = [k for k in ctx.model.bodies if k not in (a, b) and frozenset((a, k)) in earlier
+              and frozenset((k, b)) in earlier]
+    thirds = list(dict.fromkeys(note.via + thirds))
+    lines = {k: _line(ctx, found[frozenset((a, k))].value, found[frozenset((k, b))].value) for k in thirds}
+    lines = {k: l for k, l in lines.items() if l is not None}
+    for i, k1 in enumerate(lines):
+        for k2 in list(lines)[i + 1:]:
+            if not _same_line(ctx, lines[k1], lines[k2]):
+                note.via = [k1, k2]
+                note.lines = [(_clean(ctx, found[frozenset((a, k))].value),
+                               _clean(ctx, found[frozenset((k, b))].value)) for k in (k1, k2)]
+                return
+    ks = list(lines)[:2] or note.via
+    for k1, k2 in combinations(lines, 2):       # the notes' choice: two points moving in opposite senses
+        u, w = (_witness_velocity(ctx, found, a, b, k) for k in (k1, k2))
+        if u is not None and w is not None and u[0] * w[0] + u[1] * w[1] < 0:
+            ks = [k1, k2]
+            break
+    note.via = ks
+    note.lines = [(_clean(ctx, found[frozenset((a, k))].value), _clean(ctx, found[frozenset((k, b))].value))
+                  for k in ks]
+    note.how = "proportional"
+    note.witnesses = []
+    for k in ks:
+        where = found[frozenset((k, b))].value.get("point")
+        if where is not None:
+            note.witnesses.append((_point_name(ctx, b, where) or f"I:{k},{b}", ctx.clean(tuple(where), "len"),
+                                   ctx.clean(_velocity_at(ctx, b, a, where), "speed")))
+    if len(note.witnesses) == 2:
+        u, w = (ctx.num(v) for _, _, v in note.witnesses)
+        note.side = "between" if u[0] * w[0] + u[1] * w[1] < 0 else "outside"
+    else:
+        note.how = "velocities"
+
+
+def _witness_velocity(ctx: Ctx, found: dict, a: str, b: str, k: str):
+    """As floats, the velocity relative to a of b's point at the centre I_k,b (None at infinity)."""
+    where = found[frozenset((k, b))].value.get("point")
+    return None if where is None else ctx.num(_velocity_at(ctx, b, a, where))
+
+
+def _line(ctx: Ctx, c1: dict, c2: dict):
+    """The line through two centres as (point, direction) in floats; None when undefined."""
+    p1, p2 = c1.get("point"), c2.get("point")
+    if p1 is None and p2 is None:
+        return None
+    if p1 is None or p2 is None:
+        p, c = (p1, c2) if p2 is None else (p2, c1)
+        d = c.get("direction")
+        return None if d is None else (ctx.num(tuple(p)), ctx.num(tuple(d)))
+    x, y = ctx.num(tuple(p1)), ctx.num(tuple(p2))
+    d = (y[0] - x[0], y[1] - x[1])
+    return None if (d[0] ** 2 + d[1] ** 2) ** 0.5 <= 1e-9 * ctx.inst.scale else (x, d)
+
+
+def _same_line(ctx: Ctx, l1, l2) -> bool:
+    (p, d), (q, e) = l1, l2
+    nd, ne = (d[0] ** 2 + d[1] ** 2) ** 0.5, (e[0] ** 2 + e[1] ** 2) ** 0.5
+    if abs(d[0] * e[1] - d[1] * e[0]) > 1e-9 * nd * ne:
+        return False
+    w = (q[0] - p[0], q[1] - p[1])
+    return abs(d[0] * w[1] - d[1] * w[0]) <= 1e-9 * nd * ctx.inst.scale
+
+
+def _velocity_at(ctx: Ctx, body: str, frame: str, where) -> tuple:
+    """The velocity relative to `frame` of the material point of `body` at `where`."""
+    sol = ctx.sol
+    return sol.motion.velocity(sol.state(body, ctx.rel(frame)), tuple(where))
+
+
+def _point_name(ctx: Ctx, body: str, where) -> str | None:
+    """The model's name of the point of `body` at `where`, if it has one."""
+    x = ctx.num(tuple(where))
+    for p in ctx.model.bodies[body].points:
+        y = ctx.num(ctx.pos(p))
+        if sum((u - v) ** 2 for u, v in zip(x, y)) ** 0.5 <= 1e-9 * ctx.inst.scale:
+            return p
+    return None
 
 
 def _chosen(ctx: Ctx, found: dict) -> list[frozenset]:

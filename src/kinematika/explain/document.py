@@ -180,11 +180,12 @@ class CentreNote:
 
     pair: tuple[str, str]
     value: dict
-    how: str                                       # joint, kennedy, velocities
+    how: str                                       # joint, kennedy, velocities, proportional
     via: list = field(default_factory=list)        # joint id, or the two third bodies
     lines: list = field(default_factory=list)      # kennedy: [(centre a–k, centre k–b), ...]
     witnesses: list = field(default_factory=list)  # velocities: [(point, velocity), ...]
     joint_type: str = ""                           # joint: the type of the joint
+    side: str = ""                                 # proportional: the centre "between" or "outside" the witnesses
 
 
 Block = Union[Msg, Equation, Derived, Table, Figure, CentreNote, "Section"]

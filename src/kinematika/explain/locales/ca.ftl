@@ -219,3 +219,11 @@ ans-center = centre de curvatura
 ans-tangent = tangent unitària
 ans-slide = velocitat al llarg de l’eix
 sub-geom = geom
+centre-proportional-between = per Aronhold–Kennedy és a la recta que passa per { $l1 } i a la que passa per { $l2 }, però són una mateixa recta i no el fixen. En aquesta recta les velocitats respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
+centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa per { $l1 } i a la que passa per { $l2 }, però són una mateixa recta i no el fixen. En aquesta recta les velocitats respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:

@@ -135,3 +135,5 @@ ans-center = centre of curvature
 ans-tangent = unit tangent
 ans-slide = velocity along the axis
 sub-geom = geom
+centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
+centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:

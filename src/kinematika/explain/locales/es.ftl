@@ -135,3 +135,5 @@ ans-center = centro de curvatura
 ans-tangent = tangente unitaria
 ans-slide = velocidad a lo largo del eje
 sub-geom = geom
+centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
+centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:

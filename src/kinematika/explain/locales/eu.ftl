@@ -138,3 +138,5 @@ ans-center = kurbadura-zentroa
 ans-tangent = ukitzaile unitarioa
 ans-slide = ardatzaren norabideko abiadura
 sub-geom = geom
+centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziaren proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
+centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziaren proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:

@@ -215,6 +215,8 @@ class Renderer:
             why = Msg("centre.kennedy", {"k1": Name(k1, "body"), "k2": Name(k2, "body"),
                                          "l1": [Sym("I", f"{a},{k1}", vector=False), Sym("I", f"{k1},{b}", vector=False)],
                                          "l2": [Sym("I", f"{a},{k2}", vector=False), Sym("I", f"{k2},{b}", vector=False)]})
+        elif c.how == "proportional" and len(c.witnesses) == 2:
+            why = self.proportional(c)
         elif len(c.witnesses) == 2:
             (p, vp), (q, vq) = c.witnesses
             why = Msg("centre.velocities", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
@@ -223,6 +225,16 @@ class Renderer:
             why = Msg("centre.omega", {"frame": Name(a, "body")})
         return self.message(Msg("centre.line", {"centre": name, "a": Name(a, "body"), "b": Name(b, "body"), "why": why,
                                                 "where": self.where(c.value)}))
+
+    def proportional(self, c: CentreNote) -> Msg:
+        """Coincident Kennedy lines: the centre from speeds proportional to the distance."""
+        a, b = c.pair
+        (p, _, vp), (q, _, vq) = c.witnesses
+        names = [Sym("I", n[2:], vector=False) if n.startswith("I:") else Name(n) for n in (p, q)]
+        lines = [[Sym("I", f"{a},{k}", vector=False), Sym("I", f"{k},{b}", vector=False)] for k in c.via]
+        return Msg(f"centre.proportional.{c.side}",
+                   {"l1": lines[0], "l2": lines[1], "frame": Name(a, "body"), "p": names[0], "q": names[1],
+                    "vp": Value(vp, "speed"), "vq": Value(vq, "speed")})
 
     def where(self, value: dict) -> Msg:
         if value.get("rest"):
