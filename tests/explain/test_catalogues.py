@@ -22,6 +22,7 @@ FAMILIES = {
     "centre.joint": ["revolute", "rolling", "gear", "prismatic", "weld"],
     "ask": ["icr", "axis", "pole", "curvature", "intrinsic"],
     "ans": ["point", "direction", "center", "tangent", "slide"],
+    "centre.proportional": ["between", "outside"],
 }
 
 

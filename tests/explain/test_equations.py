@@ -277,3 +277,35 @@ def _homogeneous(sol, c: dict) -> tuple:
 
 def _cross(u: tuple, v: tuple) -> tuple:
     return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+
+
+def _segment_points(ref: str, points: dict) -> tuple | None:
+    names = ref.split("-") if "-" in ref else list(ref)
+    return tuple(names) if len(names) == 2 and all(n in points for n in names) else None
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_no_degenerate_terms(name):
+    """No term is written along or across a segment of zero length (ω × AA)."""
+    sol, doc = explained(name)
+    pts = sol.inst.points
+    for eq in doc.equations():
+        for t in [eq.target] + [t for side in eq.sides for t in side]:
+            if t.dir.code in ("perp", "para") and isinstance(t.dir.ref, str):
+                seg = _segment_points(t.dir.ref, pts)
+                if seg:
+                    d = [a - b for a, b in zip(num(sol, pts[seg[0]]), num(sol, pts[seg[1]]))]
+                    assert math.hypot(*d) > 1e-9 * sol.inst.scale, (name, t.sym, t.dir.ref)
+
+
+def test_quick_return_drag_from_the_rockers_pivot():
+    """The drag motion of A is that of the rocker's point at A, worked from O4; the
+    relative motion is the slide along the slot."""
+    sol, doc = explained("quick_return")
+    drag = [eq for eq in doc.equations() if eq.target.sym.sub_key == "sub.drag"]
+    assert drag and all(eq.sides[0][0].sym.sub == "O4" for eq in drag)
+    for eq in drag:
+        total = eq.sides[0][0].value
+        for t in eq.sides[0][1:]:
+            total = add(total, t.value)
+        assert close(sol, total, eq.target.value, 10.0)

@@ -132,17 +132,62 @@ def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> l
                                         Sym("v", p, sub_key="sub.rel")], kind="coriolis"))
         target = Term(Sym(level, p), ctx.clean(got["total"], unit), *KNOWN, kind="point")
         out.append(Equation(target, [side], level, ref, figure=ctx.planar))
-        anchor = pivot if pivot is not None else (ctx.model.bodies[moving].points or [p])[0]
-        drag_eq = Equation(_relabel(point_term(ctx, level, p, moving), drag.sym),
-                           [[point_term(ctx, level, anchor, moving)] +
-                            rotation_terms(ctx, level, moving, anchor, p, False)],
-                           level, PointRef(p, moving), figure=False)
-        rel_target = _relabel(target_term(ctx, level, p, body, True, moving), rel.sym)
-        rel_side = [target_term(ctx, level, anchor, body, True, moving)] + \
-            rotation_terms(ctx, level, body, anchor, p, False, moving)
-        rel_eq = Equation(rel_target, [rel_side], level, PointRef(p, body), moving, figure=False)
-        out += [msg("composition.drag"), drag_eq, msg("composition.relative"), rel_eq]
+        out += [msg("composition.drag")] + _drag(ctx, level, p, moving, pivot, drag.sym)
+        out += [msg("composition.relative")] + _relative(ctx, level, ref, moving, pivot, rel.sym)
     return out
+
+
+def _apart(ctx: Ctx, q: Optional[str], p: str) -> bool:
+    """Whether q names a point at another place than p (a segment QP that is not zero)."""
+    if q is None or q == p:
+        return False
+    d = ctx.num(ctx.r(q, p))
+    return sum(c * c for c in d) ** 0.5 > 1e-9 * ctx.inst.scale
+
+
+def _known_point(ctx: Ctx, body: str, p: str, prefer: Optional[str]) -> Optional[str]:
+    """A point of `body` away from p whose motion is known: the preferred one (the joint
+    with the carrier), a pivot on the frame, a pin shared with another body, any other."""
+    model = ctx.model
+    points = model.bodies[body].points
+    pivots = [j.at for j in model.joints if {j.a, j.b} == {body, ctx.frame} and j.at]
+    shared = [q for q in points if len(model.carriers(q)) > 1]
+    for q in [prefer] + pivots + shared + list(points):
+        if _apart(ctx, q, p) and (q in points or q == prefer):
+            return q
+    return None
+
+
+def _drag(ctx: Ctx, level: str, p: str, moving: str, pivot: Optional[str], sym: Sym) -> list:
+    """The drag motion: that of the moving frame's point at P, from a known point Q of the
+    moving body away from P (O4 for the quick-return's rocker): v_Q + ω × QP."""
+    q = _known_point(ctx, moving, p, pivot)
+    target = _relabel(point_term(ctx, level, p, moving), sym)
+    if q is None:
+        return [Equation(target, [[point_term(ctx, level, p, moving)]], level, PointRef(p, moving), figure=False)]
+    side = [point_term(ctx, level, q, moving)] + rotation_terms(ctx, level, moving, q, p, False)
+    return [Equation(target, [side], level, PointRef(p, moving), figure=False)]
+
+
+def _relative(ctx: Ctx, level: str, ref: PointRef, moving: str, pivot: Optional[str], sym: Sym) -> list:
+    """The relative motion seen from the moving body: along the guide when P slides in it,
+    zero when P is the pin joining them, else a rotation about their joint."""
+    p, body = ref.point, ref.body
+    unit = "speed" if level == "v" else "accel"
+    value = ctx.clean(ctx.vel(body, p, moving) if level == "v" else ctx.acc(body, p, moving), unit)
+    joint = next((j for j in ctx.model.joints if {j.a, j.b} == {body, moving}), None)
+    if joint is not None and joint.type in ("slot", "prismatic"):
+        return [msg("composition.slide", sym=sym, value=Value(value, unit), joint=Name(joint.id, "joint"),
+                    point=Name(p))]
+    if joint is not None and joint.at and not _apart(ctx, joint.at, p):
+        return [msg("composition.pin", sym=sym, point=Name(p), joint=Name(joint.id, "joint"))]
+    q = joint.at if joint is not None and joint.at else pivot
+    target = _relabel(target_term(ctx, level, p, body, True, moving), sym)
+    if not _apart(ctx, q, p):
+        return [Equation(target, [[target_term(ctx, level, p, body, True, moving)]], level, ref, moving,
+                         figure=False)]
+    side = [target_term(ctx, level, q, body, True, moving)] + rotation_terms(ctx, level, body, q, p, False, moving)
+    return [Equation(target, [side], level, ref, moving, figure=False)]
 
 
 def _relabel(term: Term, sym: Sym) -> Term:

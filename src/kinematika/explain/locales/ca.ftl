@@ -227,3 +227,5 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
+composition-slide = { $point } llisca al llarg de la guia de l’enllaç { $joint }: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
+composition-pin = { $point } és el passador de l’enllaç { $joint }, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
