@@ -7,7 +7,6 @@ function takes the model as `api.prepare` does (a path, a text with `fmt`, a tre
 """
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field
 from typing import Any, Mapping, Optional
 
@@ -33,8 +32,10 @@ AS_GIVEN = How()
 
 
 def json_text(data: Any) -> str:
-    """The JSON a command prints with `--json`: one line, then a newline."""
-    return json.dumps(data) + "\n"
+    """The JSON a command prints with `--json`: one line, then a newline (`report.json_text`)."""
+    from .report.json_text import json_bytes
+
+    return json_bytes(data).decode() + "\n"
 
 
 def solve_data(source: ModelLike, symbolic: Optional[bool] = None, how: How = AS_GIVEN) -> dict:

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import csv
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -13,6 +14,8 @@ from kinematika.cli import app
 from kinematika.sweep import run_sweep
 
 from .models import four_bar_tree, slider_crank_tree
+
+EXAMPLES = Path(__file__).parents[2] / "examples"
 
 
 def test_json_has_one_entry_per_row_for_every_body_and_material_point():
@@ -114,3 +117,83 @@ def test_cli_plot_to_a_format_matplotlib_cannot_write_is_a_clean_error(tmp_path)
     assert out.exit_code == 2
     assert out.stderr.strip() == f"error (schema): {tmp_path / 'curves.txt'}: cannot plot to 'curves.txt': give a .png, .svg or .pdf file"
     assert not (tmp_path / "curves.txt").exists()
+
+
+# the fast writers: the same document, without a Python float per number -------------------------
+def _bad_rows_result():
+    return run_sweep(four_bar_tree(crank=2.5, coupler=3.0, rocker=3.0, side=1.0), steps=36,
+                     skip_bad=True)
+
+
+@pytest.mark.parametrize("make", [lambda: run_sweep(four_bar_tree(), steps=24),
+                                  lambda: run_sweep(EXAMPLES / "rssr_spatial_four_bar.yaml", steps=6),
+                                  _bad_rows_result], ids=["four-bar", "3d", "bad-rows"])
+def test_the_json_pieces_are_the_json_document(make):
+    result = make()
+    assert json.loads(b"".join(result.json_chunks())) == result.to_json()
+
+
+def test_columnar_files_hold_the_csv_columns(tmp_path):
+    result = _bad_rows_result()
+    path = tmp_path / "rows.npz"
+    result.to_npz(path)
+    stored = np.load(path)
+    assert list(stored["ok"]) == list(result.ok)
+    for header, values in result.columns():
+        np.testing.assert_array_equal(stored[header], values)
+    pq = pytest.importorskip("pyarrow.parquet")
+    path = tmp_path / "rows.parquet"
+    result.to_parquet(path)
+    table = pq.read_table(path)
+    assert table.column_names == ["ok"] + [h for h, _ in result.columns()]
+    for header, values in result.columns():
+        column = table.column(header).to_numpy(zero_copy_only=False)
+        np.testing.assert_array_equal(column, values)       # null read back as NaN
+
+
+def test_cli_writes_rows_in_the_format_asked(tmp_path):
+    model = _model_file(tmp_path, four_bar_tree())
+    runner = CliRunner()
+    out = runner.invoke(app, ["sweep", model, "--steps", "4", "-o", str(tmp_path / "a.npz")])
+    assert out.exit_code == 0 and "wrote 5 rows" in out.stdout
+    assert np.load(tmp_path / "a.npz")["crank.angle"][-1] == 360.0
+    out = runner.invoke(app, ["sweep", model, "--steps", "4", "--format", "json", "-o",
+                              str(tmp_path / "a.txt")])
+    assert out.exit_code == 0
+    assert json.loads((tmp_path / "a.txt").read_text())["coordinate"][-1] == 360.0
+    out = runner.invoke(app, ["sweep", model, "--steps", "4", "-o", str(tmp_path / "a.xlsx")])
+    assert out.exit_code == 2 and out.stderr.startswith("error (usage): -o: 'xlsx' is not a sweep format")
+    out = runner.invoke(app, ["sweep", model, "--format", "npz", "--json"])
+    assert json.loads(out.stdout)["error"]["where"] == "--format"
+
+
+def _clean_by_definition(values, scale):
+    """12 significant digits, element by element: round(x·10^d)/10^d with d = 11 − ⌊log₁₀|x|⌋."""
+    out = []
+    for x in values:
+        if x != x or abs(x) == float("inf"):
+            out.append(float("nan"))
+        elif abs(x) <= 1e-12 * scale:
+            out.append(0.0)
+        else:
+            d = 11 - int(np.floor(np.log10(abs(x))))
+            f = np.power(10.0, float(d))
+            out.append(float(np.rint(x * f) / f) + 0.0)
+    return np.array(out)
+
+
+def test_cleaning_a_column_is_rounding_each_number():
+    from kinematika.sweep.result import clean
+
+    rng = np.random.default_rng(7)
+    x = rng.standard_normal(3000) * 10.0 ** rng.uniform(-15, 15, 3000)
+    x[::17], x[::19], x[::23], x[::29] = 0.0, np.nan, np.inf, 10.0 ** rng.integers(-9, 9, len(x[::29]))
+    for scale in (1e6, 1.0, 0.0):
+        np.testing.assert_array_equal(clean(x, scale), _clean_by_definition(x, scale))
+
+
+def test_the_streamed_json_is_the_bytes_of_the_json_document():
+    from kinematika.report.json_text import json_bytes
+
+    result = run_sweep(four_bar_tree(), steps=24)
+    assert b"".join(result.json_chunks()) == json_bytes(result.to_json())

@@ -1,18 +1,69 @@
-"""The `kinematika` command: one module per subcommand, all views of the one engine."""
+"""The `kinematika` command: one module per subcommand, all views of the one engine.
+
+`solve`, `centres` and `sweep` with plain options take a fast path (`fast`) that imports
+only what they use; everything else goes through the typer application (`app`).
+"""
 from __future__ import annotations
 
-import json
 import sys
-
-import typer
-
-from . import centres, draw, explain, page, solve, sweep  # noqa: F401  (each module registers its command)
-from .app import app
+import types
+from typing import Any
 
 
 def main() -> None:
     """Run the command line; a mistake in its options is one line (or the JSON error with
     `--json`) and exit status 2, like every other user error."""
+    from . import fast
+
+    call = fast.parse(sys.argv[1:])
+    if call is not None:
+        from .run import flush_and_leave
+
+        name, kwargs = call
+        try:
+            fast.command(name)(**kwargs)
+        except SystemExit as done:
+            flush_and_leave(_status(done.code))
+        flush_and_leave(0)
+    _typer_main()
+
+
+def _status(code: Any) -> int:
+    if code is None or isinstance(code, int):
+        return code or 0
+    print(code, file=sys.stderr)
+    return 1
+
+
+def _application() -> Any:
+    """The typer application, with every command registered (imports typer and the commands)."""
+    from . import centres, draw, explain, page, solve, sweep  # noqa: F401  (each registers its command)
+    from .app import app
+
+    return app
+
+
+class _Package(types.ModuleType):
+    """`kinematika.cli.app` is the typer application (as `from kinematika.cli import app`
+    has always given), loaded on first use; the import system's binding of the submodule
+    `cli/app.py` to the same name is ignored, so the order of imports does not matter."""
+
+    @property
+    def app(self) -> Any:
+        return _application()
+
+    @app.setter
+    def app(self, value: Any) -> None:
+        pass
+
+
+sys.modules[__name__].__class__ = _Package
+
+
+def _typer_main() -> None:
+    import typer
+
+    app = _application()
     try:
         code = app(standalone_mode=False)
     except typer.Abort:
@@ -27,6 +78,8 @@ def main() -> None:
 
 def _usage_error(err) -> None:
     """Report a command-line usage error in the contract's shape and exit with its status."""
+    from .shared import print_json
+
     param = getattr(err, "param", None)
     where = getattr(err, "param_hint", None) or (param.opts[0] if getattr(param, "opts", None) else "")
     where = where if isinstance(where, str) else " / ".join(where)
@@ -34,7 +87,7 @@ def _usage_error(err) -> None:
     if not message:                   # `kinematika` alone: the help has been shown
         sys.exit(err.exit_code)
     if "--json" in sys.argv[1:]:
-        print(json.dumps({"error": {"kind": "usage", "message": message, "where": where.strip("'")}}))
+        print_json({"error": {"kind": "usage", "message": message, "where": where.strip("'")}})
     else:
         ctx = getattr(err, "ctx", None)
         command = getattr(ctx, "command_path", None) or "kinematika"

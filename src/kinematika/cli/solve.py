@@ -3,17 +3,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .app import JsonOpt, ModelArg, SymbolicOpt, app, respond
+from .app import JsonOpt, ModelArg, SymbolicOpt, app
+from .run import solve_command
 
 
 @app.command()
 def solve(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = SymbolicOpt) -> None:
     """Velocity and acceleration of every point and body at the instant, and the answers."""
-    from ..commands import solve_data
-
-    def show(data: dict) -> None:
-        from ..report.tables import print_solution
-
-        print_solution(data)
-
-    respond(as_json, lambda: solve_data(model, symbolic or None), show)
+    solve_command(model, as_json, symbolic)

@@ -1,13 +1,13 @@
 """`kinematika sweep`: the motion over a range of a driven joint's coordinate."""
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from typing import Optional
 
 import typer
 
-from .app import JsonOpt, ModelArg, app, guarded, output_file
+from .app import JsonOpt, ModelArg, app
+from .run import sweep_command
 
 
 @app.command()
@@ -22,35 +22,11 @@ def sweep(model: Path = ModelArg,
           skip_bad: bool = typer.Option(False, "--skip-bad", help="leave positions that cannot be "
                                         "assembled (or are singular) empty instead of stopping"),
           plot: Optional[Path] = typer.Option(None, "--plot", help="draw the sweep's curves to FILE"),
+          output: Optional[Path] = typer.Option(None, "-o", "--output", help="write the rows to FILE "
+                                                "(json, csv, npz or parquet: --format, else the suffix)"),
+          fmt: Optional[str] = typer.Option(None, "--format", help="the format of -o: json, csv, npz "
+                                            "(numpy) or parquet (needs pyarrow)"),
           ) -> None:
     """Positions, velocities and accelerations over a range of a driven joint (default: the
     model's `sweep:` section, else a full turn in 360 steps)."""
-    from ..commands import json_text, sweep_run
-
-    sweeper, result = guarded(as_json, lambda: sweep_run(model, joint, by, steps, skip_bad,
-                                                         progress=not as_json))
-    if csv is not None:
-        guarded(as_json, lambda: _write_csv(result, csv))
-    if plot is not None:
-        guarded(as_json, lambda: _plot(result, plot))
-    if as_json:
-        sys.stdout.write(json_text(result.to_json()))      # one write: dump() writes in pieces
-        return
-    from ..sweep.summary import summary_lines
-
-    lines = summary_lines(result, guarded(False, sweeper.linkage), sweeper.groups)
-    if csv is not None:
-        lines.append(f"\nwrote {len(result)} rows to {csv}")
-    if plot is not None:
-        lines.append(f"drew {plot}")
-    print("\n".join(lines))
-
-
-def _write_csv(result, path: Path) -> None:
-    result.to_csv(output_file(path, "--csv"))
-
-
-def _plot(result, path: Path) -> None:
-    from ..draw.plots import plot_sweep
-
-    plot_sweep(result, output_file(path, "--plot"))
+    sweep_command(model, joint, by, steps, as_json, csv, skip_bad, plot, output, fmt)

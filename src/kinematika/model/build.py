@@ -5,16 +5,19 @@ points, bodies and joints, expressions, which body carries a bare point name.
 """
 from __future__ import annotations
 
-from typing import Any, Iterable, Optional
-
-from pydantic import ValidationError
+from typing import TYPE_CHECKING, Any, Iterable, Optional
 
 from ..errors import KinematikaError
-from . import schema
+from . import shape
 from .constructions import Construction, ConstructionReader, construction_order
 from .expressions import Expr, ExpressionError, parse
 from .model import (Body, Circle, Direction, Disc, Driver, ExprVector, Joint, Line, Model, Parameter,
                     Plane, PointPair, PointRef, Question, Shape, Sweep)
+
+if TYPE_CHECKING:
+    from pydantic import ValidationError
+
+    from . import schema
 
 PLANAR_ONLY = {"wheel", "slot"}
 SPATIAL_ONLY = {"spherical", "cylindrical"}
@@ -24,10 +27,16 @@ def build_model(tree: Any) -> Model:
     """Check a model tree and resolve it into a `Model`; raises `KinematikaError`."""
     if not isinstance(tree, dict):
         raise KinematikaError("schema", "a model is a mapping with keys points, bodies, joints, drivers")
-    try:
-        spec = schema.ModelSpec.model_validate(tree)
-    except ValidationError as err:
-        raise _schema_error(err, tree) from None
+    spec = shape.spec_of(tree)         # plain checks first: pydantic only for files that may be wrong
+    if spec is None:
+        from pydantic import ValidationError
+
+        from . import schema
+
+        try:
+            spec = schema.ModelSpec.model_validate(tree)
+        except ValidationError as err:
+            raise _schema_error(err, tree) from None
     return _Builder(spec).model()
 
 
@@ -73,7 +82,7 @@ class _Builder:
                 raise KinematikaError("schema", f"{name!r} is not a valid parameter name "
                                       "(letters, digits and _, not starting with a digit)", where)
             positive = True
-            if isinstance(raw, schema.ParameterSpec):
+            if hasattr(raw, "symbolic"):         # a ParameterSpec (schema's or shape's)
                 positive = raw.positive
                 raw = None if raw.symbolic else raw.value
             out[name] = Parameter(name, None if raw is None else self.expr(raw, where), positive)
@@ -142,7 +151,8 @@ class _Builder:
         for name, raw in self.spec.bodies.items():
             where = f"bodies.{name}"
             if isinstance(raw, list):
-                raw = schema.BodySpec(points=raw)
+                raw = shape.BodySpec(points=raw, circle=None, line=None, disc=None, plane=None,
+                                     description=None)
             for p in raw.points:
                 self.known_point(p, where)
             twice = sorted({p for p in raw.points if raw.points.count(p) > 1})
@@ -267,13 +277,13 @@ class _Builder:
     # drivers ----------------------------------------------------------------------------
     def driver(self, i: int, raw: Any) -> Driver:
         where = f"drivers[{i}]"
-        if isinstance(raw, schema.OmegaDriver):
+        if hasattr(raw, "omega"):                # an OmegaDriver (schema's or shape's)
             body = self.known_body(raw.omega, f"{where}.omega")
             rel = self.known_body(raw.relative_to, f"{where}.relative_to") if raw.relative_to else None
             return Driver("omega", i, body=body, relative_to=rel,
                           value=self.angular(raw.value, f"{where}.value"),
                           accel=self.angular(raw.alpha, f"{where}.alpha"))
-        if isinstance(raw, schema.JointDriver):
+        if hasattr(raw, "joint"):
             ids = [j.id for j in self.joint_list]
             if raw.joint not in ids:
                 raise KinematikaError("schema", f"unknown joint {raw.joint!r} (joints: {', '.join(ids)})",
@@ -344,10 +354,10 @@ class _Builder:
 
     def question(self, i: int, raw: schema.QuestionSpec) -> Question:
         where = f"ask[{i}]"
-        kinds = [k for k in schema.QUESTION_KINDS if getattr(raw, k) is not None]
+        kinds = [k for k in shape.QUESTION_KINDS if getattr(raw, k) is not None]
         if len(kinds) != 1:
             raise KinematikaError("schema", "a question has exactly one of the keys "
-                                  f"{', '.join(schema.QUESTION_KINDS)}", where)
+                                  f"{', '.join(shape.QUESTION_KINDS)}", where)
         kind = kinds[0]
         text = getattr(raw, kind)
         rel = self.known_body(raw.relative_to, f"{where}.relative_to") if raw.relative_to else None

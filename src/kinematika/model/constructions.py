@@ -12,7 +12,6 @@ from dataclasses import dataclass
 from typing import Callable, Optional, Union
 
 from ..errors import KinematikaError
-from . import schema
 from .expressions import Expr
 
 ExprVector = tuple[Expr, ...]
@@ -126,6 +125,8 @@ class ConstructionReader:
         self.expr, self.vector, self.known, self.symbolic = expr, vector, known, symbolic
 
     def read(self, spec: object, where: str) -> Construction:
+        from . import schema      # constructions are checked by pydantic (not by `shape`)
+
         if isinstance(spec, schema.PolarSpec):
             ref = None
             if spec.reference is not None:
@@ -173,6 +174,8 @@ class ConstructionReader:
         return self.loc(center, f"{where}[0]"), self.expr(radius, f"{where}[1]")
 
     def line(self, raw: object, where: str) -> LineDef:
+        from . import schema
+
         if isinstance(raw, schema.LineSpec):
             direction = raw.direction
             if len(direction) == 2 and all(isinstance(v, str) and v in self.known for v in direction):

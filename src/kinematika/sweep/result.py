@@ -10,7 +10,7 @@ import csv
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterator
 
 import numpy as np
 
@@ -51,14 +51,53 @@ class SweepResult:
                 "points": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
                            for name, values in self.points.items()}}
 
+    def json_chunks(self) -> Iterator[bytes]:
+        """The JSON of `to_json` as UTF-8 pieces, each column written by orjson straight from
+        its numpy array (no Python float per number); a column shared by several material
+        points (bodies joined by a revolute) is cleaned and written once."""
+        import orjson
+
+        scales = self.scales()
+        bad = None if self.ok.all() else ~self.ok
+        uses: dict[int, int] = {}
+        for values in self.points.values():
+            for v in values.values():
+                uses[id(v)] = uses.get(id(v), 0) + 1
+        written: dict[int, bytes] = {}
+
+        def column(v: np.ndarray, scale: float) -> bytes:
+            key = id(v)
+            text = written.pop(key, None)
+            if text is None:
+                text = _json_column(clean(v, scale), bad)
+            uses[key] = uses.get(key, 1) - 1
+            if uses[key] > 0:
+                written[key] = text
+            return text
+
+        coordinate = self.coordinate
+        yield b'{"coordinate":' + _json_column(clean(coordinate, np.abs(coordinate).max(initial=0.0)), bad)
+        for part, group in ((b',"bodies":{', self.bodies), (b'},"points":{', self.points)):
+            yield part
+            for i, (name, values) in enumerate(group.items()):
+                yield (b"," if i else b"") + orjson.dumps(name) + b":{"
+                for k, (q, v) in enumerate(values.items()):
+                    yield (b"," if k else b"") + orjson.dumps(q) + b":" + column(v, scales[q])
+                yield b"}"
+        yield b"}}"
+
     def scales(self) -> dict[str, float]:
         """Each quantity's scale: its largest magnitude, or what the motion makes it at least
         (ω² for α; ω·size for speeds; (α + ω²)·size for accelerations), so that round-off in
         a quantity that is zero throughout is still seen as round-off."""
         top: dict[str, float] = {}
+        seen: set[int] = set()            # material points joined by a revolute share arrays
         for group in (self.bodies, self.points):
             for values in group.values():
                 for q, v in values.items():
+                    if id(v) in seen:
+                        continue
+                    seen.add(id(v))
                     biggest = float(np.nanmax(np.abs(v))) if np.isfinite(v).any() else 0.0
                     top[q] = max(top.get(q, 0.0), biggest)
         w, size = top.get("omega", 0.0), top.get("position", 0.0)
@@ -99,17 +138,65 @@ class SweepResult:
         for row in table.tolist():
             writer.writerow(["" if math.isnan(x) else repr(x) for x in row])
 
+    def to_npz(self, path: str | Path) -> None:
+        """The CSV's columns as numpy arrays in one .npz file (raw values; bad rows NaN), with
+        `ok`: `np.load(path)["B@coupler.velocity_x"]`."""
+        np.savez(path, ok=self.ok, **{h: np.ascontiguousarray(v) for h, v in self.columns()})
+
+    def to_parquet(self, path: str | Path) -> None:
+        """The CSV's columns in a Parquet file (raw values; bad rows null), with `ok`; needs
+        pyarrow (`pip install 'kinematika[columnar]'`)."""
+        try:
+            import pyarrow as pa
+            import pyarrow.parquet as pq
+        except ImportError:
+            from ..errors import KinematikaError
+
+            raise KinematikaError("usage", "writing Parquet needs pyarrow: pip install "
+                                  "'kinematika[columnar]' (or write .npz)", "--format") from None
+        names, arrays = ["ok"], [pa.array(self.ok)]
+        for header, values in self.columns():
+            names.append(header)
+            arrays.append(pa.array(np.ascontiguousarray(values), from_pandas=True))   # NaN -> null
+        pq.write_table(pa.Table.from_arrays(arrays, names=names), path)
+
+
+with np.errstate(over="ignore"):
+    _POW10 = np.power(10.0, np.arange(-400, 401, dtype=float))    # 10**k as numpy computes it (inf past 308)
+
 
 def clean(values: np.ndarray, scale: float) -> np.ndarray:
-    """12 significant digits; magnitudes below 1e-12·scale set to 0 (NaN stays NaN)."""
+    """12 significant digits; magnitudes below 1e-12·scale set to 0 (NaN stays NaN).
+
+    x rounded at 10**(11 − ⌊log₁₀|x|⌋), the power read from a table, in a few passes over
+    the column without temporaries of Python objects (a sweep may have millions of rows).
+    """
     values = np.asarray(values, dtype=float)
+    magnitude = np.abs(values)
     with np.errstate(divide="ignore", invalid="ignore"):
-        magnitude = np.abs(values)
-        digits = 11 - np.floor(np.log10(np.where(magnitude > 0, magnitude, 1.0)))
-        factor = 10.0 ** digits
-        out = np.round(values * factor) / factor
-    out = np.where(magnitude <= 1e-12 * scale, 0.0, out)
-    return out + 0.0
+        exponent = np.log10(magnitude)
+    np.floor(exponent, out=exponent)
+    np.copyto(exponent, 0.0, where=~np.isfinite(exponent))       # 0, NaN, inf: any power will do
+    index = exponent.astype(np.int64)
+    np.subtract(411, index, out=index)                            # 11 − ⌊log₁₀|x|⌋, from 10**-400
+    factor = _POW10.take(index, mode="clip")
+    out = np.multiply(values, factor)
+    np.rint(out, out=out)
+    with np.errstate(invalid="ignore"):
+        np.divide(out, factor, out=out)
+    np.copyto(out, 0.0, where=magnitude <= 1e-12 * scale)
+    np.copyto(out, np.nan, where=np.isinf(values))               # as before: no infinite numbers
+    np.add(out, 0.0, out=out)                                     # no -0.0
+    return out
+
+
+def _json_column(values: np.ndarray, bad: np.ndarray | None) -> bytes:
+    """One column as JSON: orjson reads the array itself; bad rows (NaN) are null."""
+    import orjson
+
+    if bad is None:
+        return orjson.dumps(np.ascontiguousarray(values), option=orjson.OPT_SERIALIZE_NUMPY)
+    return orjson.dumps(_column(values))
 
 
 def _column(values: np.ndarray) -> list:

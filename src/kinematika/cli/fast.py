@@ -1,0 +1,85 @@
+"""The fast path of the command line: `solve`, `centres` and `sweep` with plain options are
+read here, without importing typer (and the pydantic and click it brings), which would
+cost more than the work itself.
+
+Only what is certainly valid is taken: a known option given once, a number written plainly,
+one model file. Anything else (`--help`, an unknown or repeated option, a value typer would
+refuse or convert differently) returns None and the typer application reads the command
+line, so errors and help are typer's. The table below mirrors the typer commands' options;
+tests check that it agrees with them.
+"""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from typing import Any, Callable, Optional
+
+FLAG, TEXT, PATH, INT, FLOAT = "flag", "text", "path", "int", "float"
+_INT = re.compile(r"[+-]?[0-9]+\Z")
+_FLOAT = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?\Z")
+
+Spec = tuple  # (parameter, kind) or (parameter, INT, smallest, largest)
+_COMMON = {"--json": ("as_json", FLAG), "--symbolic": ("symbolic", FLAG)}
+OPTIONS: dict[str, dict[str, Spec]] = {
+    "solve": _COMMON,
+    "centres": _COMMON,
+    "sweep": {"--joint": ("joint", TEXT), "--by": ("by", FLOAT),
+              "--steps": ("steps", INT, 1, 10_000_000), "--json": ("as_json", FLAG),
+              "--csv": ("csv", PATH), "--skip-bad": ("skip_bad", FLAG), "--plot": ("plot", PATH),
+              "-o": ("output", PATH), "--output": ("output", PATH), "--format": ("fmt", TEXT)},
+}
+
+
+def command(name: str) -> Callable[..., None]:
+    from . import run
+
+    return getattr(run, f"{name}_command")
+
+
+def parse(argv: list[str]) -> Optional[tuple[str, dict[str, Any]]]:
+    """(command, keyword arguments) when the fast path can read `argv`, else None."""
+    if not argv or argv[0] not in OPTIONS:
+        return None
+    table = OPTIONS[argv[0]]
+    kwargs: dict[str, Any] = {}
+    models = []
+    tokens = iter(argv[1:])
+    for token in tokens:
+        if not token.startswith("-") or token == "-":
+            models.append(token)
+            continue
+        name, eq, value = token.partition("=") if token.startswith("--") else (token, "", "")
+        spec = table.get(name)
+        if spec is None or spec[0] in kwargs:
+            return None
+        if spec[1] == FLAG:
+            if eq:
+                return None
+            kwargs[spec[0]] = True
+            continue
+        if not eq:
+            value = next(tokens, None)
+            if value is None:
+                return None
+        converted = _convert(value, spec)
+        if converted is None:
+            return None
+        kwargs[spec[0]] = converted
+    if len(models) != 1 or not models[0]:
+        return None
+    kwargs["model"] = Path(models[0])
+    return argv[0], kwargs
+
+
+def _convert(value: str, spec: Spec) -> Any:
+    kind = spec[1]
+    if kind == TEXT:
+        return value
+    if kind == PATH:
+        return Path(value) if value else None
+    if kind == INT:
+        if not _INT.match(value):
+            return None
+        number = int(value)
+        return number if spec[2] <= number <= spec[3] else None
+    return float(value) if _FLOAT.match(value) else None

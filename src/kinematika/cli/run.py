@@ -1,0 +1,105 @@
+"""What `solve`, `centres` and `sweep` print once their options are read (the data from
+`kinematika.commands`), without the command-line framework: the typer commands and the
+fast path (`cli/fast.py`) call these."""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Optional
+
+from ..errors import KinematikaError
+from .shared import guarded, output_file, respond, write_stdout
+
+SWEEP_FORMATS = ("json", "csv", "npz", "parquet")
+
+
+def solve_command(model: Path, as_json: bool = False, symbolic: bool = False) -> None:
+    """Velocity and acceleration of every point and body at the instant, and the answers."""
+    from ..commands import solve_data
+
+    def show(data: dict) -> None:
+        from ..report.tables import print_solution
+
+        print_solution(data)
+
+    respond(as_json, lambda: solve_data(model, symbolic or None), show)
+
+
+def centres_command(model: Path, as_json: bool = False, symbolic: bool = False) -> None:
+    """All instant centres (planar), marking those found from joints and by Aronhold–Kennedy."""
+    from ..commands import centres_data
+    from ..report.centres_table import print_centres
+
+    respond(as_json, lambda: centres_data(model, symbolic or None), print_centres)
+
+
+def sweep_command(model: Path, joint: Optional[str] = None, by: Optional[float] = None,
+                  steps: Optional[int] = None, as_json: bool = False, csv: Optional[Path] = None,
+                  skip_bad: bool = False, plot: Optional[Path] = None,
+                  output: Optional[Path] = None, fmt: Optional[str] = None) -> None:
+    """Positions, velocities and accelerations over a range of a driven joint."""
+    from ..commands import sweep_run
+
+    kind = guarded(as_json, lambda: _format(output, fmt))
+    sweeper, result = guarded(as_json, lambda: sweep_run(model, joint, by, steps, skip_bad,
+                                                         progress=not as_json))
+    if csv is not None:
+        guarded(as_json, lambda: result.to_csv(output_file(csv, "--csv")))
+    if output is not None:
+        guarded(as_json, lambda: _write(result, output, kind))
+    if plot is not None:
+        guarded(as_json, lambda: _plot(result, plot))
+    if as_json:
+        for piece in result.json_chunks():
+            write_stdout(piece)
+        write_stdout(b"\n")
+        return
+    from ..sweep.summary import summary_lines
+
+    lines = summary_lines(result, guarded(False, sweeper.linkage), sweeper.groups)
+    if csv is not None:
+        lines.append(f"\nwrote {len(result)} rows to {csv}")
+    if output is not None:
+        lines.append(f"{'' if csv is not None else chr(10)}wrote {len(result)} rows to {output} ({kind})")
+    if plot is not None:
+        lines.append(f"drew {plot}")
+    print("\n".join(lines))
+
+
+def _format(output: Optional[Path], fmt: Optional[str]) -> Optional[str]:
+    """The format of `-o FILE`: `--format`, else the file's suffix."""
+    if fmt is not None and output is None:
+        raise KinematikaError("usage", f"--format {fmt} needs -o FILE, the file to write", "--format")
+    if output is None:
+        return None
+    kind = fmt or output.suffix.lower().lstrip(".")
+    if kind not in SWEEP_FORMATS:
+        raise KinematikaError("usage", f"{kind or output.name!r} is not a sweep format: give "
+                              f"--format {'|'.join(SWEEP_FORMATS)} or a file ending in one of them",
+                              "--format" if fmt else "-o")
+    return kind
+
+
+def _write(result, path: Path, kind: str) -> None:
+    path = output_file(path, "-o")
+    if kind == "json":
+        with open(path, "wb") as f:
+            f.writelines(result.json_chunks())
+            f.write(b"\n")
+    else:
+        {"csv": result.to_csv, "npz": result.to_npz, "parquet": result.to_parquet}[kind](path)
+
+
+def _plot(result, path: Path) -> None:
+    from ..draw.plots import plot_sweep
+
+    plot_sweep(result, output_file(path, "--plot"))
+
+
+def flush_and_leave(code: int = 0) -> None:
+    """Exit at once once the output is out: nothing is gained by freeing every object first."""
+    import os
+
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(code)

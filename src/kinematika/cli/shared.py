@@ -1,0 +1,77 @@
+"""What every command shares, without the command-line framework: error reporting, output
+files and JSON printing. The fast path (`cli/fast.py`) and the typer commands both use it,
+so a command that needs none of typer's parsing never imports it."""
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+from typing import Any, Callable, NoReturn
+
+from ..errors import KinematikaError
+from ..report.json_text import json_bytes
+
+
+def fail(err: KinematikaError, as_json: bool) -> NoReturn:
+    """Report a user error in one line (or the contract's JSON) and exit with status 2."""
+    if as_json:
+        print_json(err.as_json())
+    else:
+        print(f"error ({err.kind}): {err}", file=sys.stderr)
+    sys.exit(2)
+
+
+def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
+    """Run `work`; user errors become one line, internal ones a short note (no traceback)."""
+    try:
+        return work()
+    except KinematikaError as err:
+        fail(err, as_json)
+    except OSError as err:            # reading is checked where models are read: this is writing
+        name = err.filename or ""
+        fail(KinematikaError("output", f"cannot write {name}: {err.strerror or err}", str(name)),
+             as_json)
+    except Exception as err:  # noqa: BLE001 - never show users a traceback
+        if os.environ.get("KINEMATIKA_DEBUG"):
+            raise
+        message = f"internal error ({type(err).__name__}: {err}); rerun with KINEMATIKA_DEBUG=1 " \
+                  "and report it"
+        if as_json:
+            print_json({"error": {"kind": "internal", "message": message, "where": ""}})
+        else:
+            print(f"error: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
+def output_file(path: Path, option: str) -> Path:
+    """`path` if a file can be written there; else an `output` error naming the option."""
+    parent = path.parent
+    if not parent.is_dir():
+        raise KinematikaError("output", f"cannot write {path}: there is no folder {parent}", option)
+    if path.is_dir():
+        raise KinematikaError("output", f"cannot write {path}: it is a folder", option)
+    return path
+
+
+def respond(as_json: bool, compute: Callable[[], dict], show: Callable[[dict], None]) -> None:
+    """Compute a command's data (errors reported by `guarded`); print JSON or `show` it."""
+    data = guarded(as_json, compute)
+    if as_json:
+        print_json(data)
+    else:
+        show(data)
+
+
+def print_json(data: Any) -> None:
+    """`data` as one line of JSON on standard output (orjson: numpy arrays written directly)."""
+    write_stdout(json_bytes(data) + b"\n")
+
+
+def write_stdout(data: bytes) -> None:
+    """Bytes to standard output, after whatever text was printed before them."""
+    sys.stdout.flush()
+    buffer = getattr(sys.stdout, "buffer", None)
+    if buffer is None:                   # a text-only stream (some test runners)
+        sys.stdout.write(data.decode())
+    else:
+        buffer.write(data)

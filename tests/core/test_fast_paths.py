@@ -1,0 +1,207 @@
+"""The fast paths of a command give what the general ones give: the plain check of a model
+file against pydantic's, and the command line's fast path against typer's."""
+from __future__ import annotations
+
+import copy
+import inspect
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from hypothesis import given, strategies as st
+from pydantic import BaseModel, ValidationError
+
+from kinematika.cli import fast
+from kinematika.model import schema, shape
+from kinematika.model.files import read_tree
+
+from .models import four_bar
+
+EXAMPLES = Path(__file__).parents[2] / "examples"
+EXAMPLE_FILES = sorted(EXAMPLES.glob("*.yaml"))
+
+
+def plain(x):
+    """A checked spec as plain data, with each record's class name."""
+    if isinstance(x, BaseModel):
+        return {"class": type(x).__name__, **{k: plain(getattr(x, k)) for k in type(x).model_fields}}
+    if isinstance(x, shape.Record):
+        return {"class": type(x).__name__, **{k: plain(getattr(x, k)) for k in x.FIELDS}}
+    if isinstance(x, dict):
+        return {k: plain(v) for k, v in x.items()}
+    if isinstance(x, list):
+        return [plain(v) for v in x]
+    return (type(x).__name__, x)
+
+
+def pydantic_spec(tree):
+    try:
+        return schema.ModelSpec.model_validate(tree)
+    except ValidationError:
+        return None
+
+
+# the model file's plain check -----------------------------------------------------------
+@pytest.mark.parametrize("path", EXAMPLE_FILES, ids=[p.stem for p in EXAMPLE_FILES])
+def test_the_plain_check_reads_every_example_as_pydantic_does(path):
+    tree = read_tree(path)
+    spec = shape.spec_of(tree)
+    assert spec is not None, "an example taken by pydantic, not by the plain check"
+    assert plain(spec) == plain(schema.ModelSpec.model_validate(tree))
+
+
+def test_the_records_have_schemas_fields_and_defaults():
+    for record in shape.RECORDS:
+        model = getattr(schema, record.__name__)
+        fields = model.model_fields
+        assert tuple(fields) == record.FIELDS, record.__name__
+        for name, field in fields.items():
+            mine = record.DEFAULTS[name]
+            if field.is_required():
+                assert mine is shape.REQUIRED, (record.__name__, name)
+            else:
+                theirs = field.get_default(call_default_factory=True)
+                assert (mine() if callable(mine) else mine) == theirs, (record.__name__, name)
+    assert shape.QUESTION_KINDS == schema.QUESTION_KINDS
+    assert shape.JOINT_TYPES == schema.JointType.__args__
+
+
+ODD_VALUES = [True, False, None, 0, 2, 3, 1.5, float("inf"), "", "x", "revolute", [], {}, [1, "a"],
+              ["A", "B"], ["A", "B", "C"], {"value": 1}, {"points": ["A"]}, (1, 2), 10 ** 30]
+
+
+def _leaves(tree, path=()):
+    yield path
+    if isinstance(tree, dict):
+        for k, v in tree.items():
+            yield from _leaves(v, path + (k,))
+    elif isinstance(tree, list):
+        for i, v in enumerate(tree):
+            yield from _leaves(v, path + (i,))
+
+
+def _set(tree, path, value):
+    node = tree
+    for part in path[:-1]:
+        node = node[part]
+    node[path[-1]] = value
+
+
+def _base_trees():
+    return [four_bar(), four_bar(ask=[{"velocity": "B", "relative_to": "crank"}, {"icr": "coupler"}],
+                                 sweep={"joint": "j1", "by": 90, "steps": 4}),
+            read_tree(EXAMPLES / "fan_absolute.yaml"), read_tree(EXAMPLES / "planetary_gears.yaml"),
+            read_tree(EXAMPLES / "coin_rolling.yaml")]
+
+
+@given(st.data())
+def test_a_changed_tree_is_accepted_only_as_pydantic_accepts_it(data):
+    tree = copy.deepcopy(data.draw(st.sampled_from(_base_trees())))
+    for _ in range(data.draw(st.integers(1, 3))):
+        paths = [p for p in _leaves(tree) if p]
+        path = data.draw(st.sampled_from(paths))
+        action = data.draw(st.sampled_from(["replace", "add", "delete"]))
+        if action == "replace":
+            _set(tree, path, copy.deepcopy(data.draw(st.sampled_from(ODD_VALUES))))
+        else:
+            parent = tree
+            for part in path[:-1]:
+                parent = parent[part]
+            if isinstance(parent, dict) and action == "delete":
+                del parent[path[-1]]
+            elif isinstance(parent, dict):
+                parent[data.draw(st.sampled_from(["extra", "id", "along", "alpha", "relative_to"]))] = \
+                    copy.deepcopy(data.draw(st.sampled_from(ODD_VALUES)))
+    mine, theirs = shape.spec_of(tree), pydantic_spec(tree)
+    if theirs is None:
+        assert mine is None
+    elif mine is not None:
+        assert plain(mine) == plain(theirs)
+
+
+# the command line's fast path ------------------------------------------------------------
+def test_the_fast_options_are_the_typer_commands_options():
+    import typer.main
+
+    from kinematika.cli import app, run as commands
+
+    group = typer.main.get_command(app)
+    for name, table in fast.OPTIONS.items():
+        command = group.commands[name]
+        body = inspect.signature(getattr(commands, f"{name}_command")).parameters
+        options = {opt: p for p in command.params for opt in p.opts}
+        for opt, spec in table.items():
+            param = options[opt]
+            assert param.name == spec[0] and spec[0] in body, (name, opt)
+            assert body[spec[0]].default == param.default, (name, opt)
+            kind = spec[1]
+            annotation = param.type_descriptor.annotation
+            if kind == fast.FLAG:
+                assert param.is_flag and param.default is False and annotation is bool
+            else:
+                assert not param.multiple and not param.is_flag, (name, opt)
+                assert annotation is {fast.TEXT: str, fast.PATH: Path, fast.FLOAT: float,
+                                      fast.INT: int}[kind], (name, opt)
+                limits = spec[2:] if kind == fast.INT else (None, None)
+                assert (param.min, param.max) == limits, (name, opt)
+        arguments = [p for p in command.params if not getattr(p, "opts", [""])[0].startswith("-")]
+        assert [p.name for p in arguments] == ["model"]
+
+
+@pytest.mark.parametrize("argv", [
+    ["solve"], ["solve", "--help"], ["solve", "a.yaml", "b.yaml"], ["solve", "a.yaml", "--jsonx"],
+    ["solve", "a.yaml", "--json", "--json"], ["sweep", "a.yaml", "--steps", "abc"],
+    ["sweep", "a.yaml", "--steps", "0"], ["sweep", "a.yaml", "--steps", "-3"], ["sweep", "a.yaml", "--steps", "10000001"],
+    ["sweep", "a.yaml", "--by", "1_0"], ["sweep", "a.yaml", "--by"], ["sweep", "a.yaml", "--json=1"],
+    ["draw", "a.yaml", "-o", "x.png"], ["sweep", "a.yaml", "--csv", ""], [],
+])
+def test_the_fast_path_leaves_anything_unusual_to_typer(argv):
+    assert fast.parse(argv) is None
+
+
+def test_the_fast_path_reads_plain_options():
+    name, kwargs = fast.parse(["sweep", "--by", "-90", "m.yaml", "--steps=3", "--json", "-o", "x.npz"])
+    assert name == "sweep"
+    assert kwargs == {"by": -90.0, "model": Path("m.yaml"), "steps": 3, "as_json": True,
+                      "output": Path("x.npz")}
+
+
+def _fast(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "kinematika", *args], capture_output=True, text=True)
+
+
+@pytest.mark.parametrize("args", [
+    ["solve", "{ex}/four_bar.yaml", "--json"], ["solve", "{ex}/four_bar.yaml"],
+    ["centres", "{ex}/watt_six_bar.yaml", "--json"],
+    ["sweep", "{ex}/four_bar.yaml", "--steps", "8", "--json"],
+    ["sweep", "{ex}/rssr_spatial_four_bar.yaml", "--steps=6", "--by", "-90", "--json"],
+    ["sweep", "{ex}/four_bar.yaml", "--steps", "8"],
+    ["solve", "{ex}/missing.yaml", "--json"],
+], ids=["solve-json", "solve", "centres", "sweep-json", "sweep-3d", "summary", "missing"])
+def test_the_fast_path_prints_what_typer_prints(args):
+    from typer.testing import CliRunner
+
+    from kinematika.cli import app
+
+    args = [a.format(ex=EXAMPLES) for a in args]
+    quick = _fast(*args)
+    slow = CliRunner().invoke(app, args)
+    assert quick.returncode == slow.exit_code
+    if "--json" in args:
+        assert json.loads(quick.stdout) == json.loads(slow.stdout)
+    else:
+        assert quick.stdout == slow.stdout
+    assert quick.stderr.strip() == slow.stderr.strip()
+
+
+def test_the_fast_path_imports_only_what_the_command_uses():
+    code = ("import sys; from kinematika.cli import fast; "
+            f"name, kw = fast.parse(['sweep', {str(EXAMPLES / 'four_bar.yaml')!r}, '--json']); "
+            "import io, contextlib; out = io.StringIO(); sys.stdout = out; "
+            "fast.command(name)(**kw); sys.stdout = sys.__stdout__; "
+            "print(sorted({m.split('.')[0] for m in sys.modules} & "
+            "{'typer', 'click', 'pydantic', 'scipy', 'sympy', 'matplotlib', 'rich'}))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]"
