@@ -26,6 +26,8 @@ def serve(
     host: str = typer.Option("127.0.0.1", "--host", help="the address to serve on; anything "
                              "but 127.0.0.1 lets other machines use the page"),
     no_browser: bool = typer.Option(False, "--no-browser", help="do not open a browser"),
+    workers: int = typer.Option(1, "--workers", min=1, max=16, help="server processes (a class: "
+                                "one per core)"),
 ) -> None:
     """The interactive page: edit a model, see it move, its answers and explanation."""
     from ..web.server import Start, bundled_examples, create_app
@@ -40,7 +42,10 @@ def serve(
               "for them)", file=sys.stderr)
     url = f"http://{'127.0.0.1' if host in ('0.0.0.0', '::') else _url_host(host)}:{sock.getsockname()[1]}/"
     hosts = ["127.0.0.1", "localhost"] if local else None
-    _run(create_app(start, hosts=hosts), sock, url, not no_browser)
+    if workers == 1:
+        _run(create_app(start, hosts=hosts), sock, url, not no_browser)
+    else:
+        _run_workers(start, hosts, workers, sock, url, not no_browser)
 
 
 def _start(model: Optional[Path]):
@@ -92,11 +97,44 @@ def _run(application, sock: socket.socket, url: str, browser: bool) -> None:
 
     config = uvicorn.Config(application, log_level="warning", access_log=False,
                             timeout_graceful_shutdown=2)
-    server = uvicorn.Server(config)
+    _announce(url, browser)
+    try:
+        uvicorn.Server(config).run(sockets=[sock])
+    except KeyboardInterrupt:
+        pass
+
+
+def _run_workers(start, hosts: Optional[list[str]], workers: int, sock: socket.socket, url: str,
+                 browser: bool) -> None:
+    """`workers` processes serving one socket (uvicorn's supervisor); each builds the app
+    from the start handed over in the environment (`web.server.from_environment`)."""
+    import json
+    import os
+
+    import uvicorn
+    from uvicorn.supervisors import Multiprocess
+
+    from ..web.server import ENVIRONMENT
+
+    os.environ[ENVIRONMENT] = json.dumps({"text": start.text, "fmt": start.fmt, "name": start.name,
+                                         "hosts": hosts})
+    import inspect
+
+    patience = {"timeout_worker_healthcheck": 120}      # a busy worker is not a dead one
+    patience = patience if "timeout_worker_healthcheck" in inspect.signature(uvicorn.Config).parameters else {}
+    config = uvicorn.Config("kinematika.web.server:from_environment", factory=True,
+                            workers=workers, log_level="warning", access_log=False,
+                            timeout_graceful_shutdown=2, **patience)
+    _announce(url, browser)
+    older = "target" in inspect.signature(Multiprocess).parameters    # uvicorn before 0.36
+    extra = {"target": uvicorn.Server(config).run} if older else {}
+    try:
+        Multiprocess(config, sockets=[sock], **extra).run()
+    except KeyboardInterrupt:
+        pass
+
+
+def _announce(url: str, browser: bool) -> None:
     print(f"kinematika: the page is at {url} (Ctrl+C to stop)", flush=True)
     if browser:
         threading.Timer(0.6, lambda: webbrowser.open(url)).start()
-    try:
-        server.run(sockets=[sock])
-    except KeyboardInterrupt:
-        pass

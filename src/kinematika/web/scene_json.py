@@ -19,7 +19,6 @@ import numpy as np
 from ..draw import style
 from ..draw.scene import Scene
 
-_MATH = re.compile(r"\$([^$_]+)_\{\\mathrm\{((?:[^{}\\]|\\.)*)\}\}\$")
 
 
 def scene_data(scene: Scene) -> dict[str, Any]:
@@ -50,25 +49,48 @@ STYLE = {"velocity": style.VELOCITY, "acceleration": style.ACCELERATION, "centre
 
 
 def runs(label: str) -> list[dict[str, str]]:
-    """A mathtext label as runs: `[{"t": "v"}, {"sub": "B"}, {"t": " = 9.25"}]`."""
+    """A mathtext label as runs of text and subscripts:
+    `$v_{\\mathrm{B}{\\in}3/2}$ = 9.25` -> `[{"t": "v"}, {"sub": "B∈3/2"}, {"t": " = 9.25"}]`."""
     out: list[dict[str, str]] = []
-    pos = 0
-    for m in _MATH.finditer(label):
-        if m.start() > pos:
-            out.append({"t": _unmath(label[pos:m.start()])})
-        out.append({"t": m.group(1)})
-        out.append({"sub": m.group(2).replace("\\ ", " ").replace("\\_", "_")})
-        pos = m.end()
-    if pos < len(label):
-        out.append({"t": _unmath(label[pos:])})
+    label = label.replace("\\$", "\0")               # an escaped dollar is a dollar
+    for k, part in enumerate(label.split("$")):
+        if not part:
+            continue
+        if k % 2 == 0:
+            out.append({"t": part.replace("\0", "$")})
+            continue
+        m = _SUBSCRIPTED.match(part)
+        if m:
+            out += [{"t": _latex_text(m.group(1))}, {"sub": _latex_text(m.group(2))}]
+        else:
+            out.append({"t": _latex_text(part)})
     return out
+
+
+_SUBSCRIPTED = re.compile(r"^([^_{}\\]+|\\[A-Za-z]+)_\{(.*)\}$")
+_GREEK = {"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "theta": "θ",
+          "lambda": "λ", "mu": "μ", "pi": "π", "rho": "ρ", "sigma": "σ", "tau": "τ", "phi": "φ",
+          "varphi": "φ", "psi": "ψ", "omega": "ω", "Omega": "Ω", "Gamma": "Γ", "Delta": "Δ",
+          "Theta": "Θ", "Phi": "Φ", "cdot": "·", "in": "∈", "times": "×"}
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def _latex_text(text: str) -> str:
+    """Plain Unicode for the small LaTeX the figures write (names, short formulas)."""
+    text = text.replace("\\ ", " ").replace("\\_", "\1").replace("\\left", "").replace("\\right", "")
+    for _ in range(4):       # innermost first: \frac{a}{b}, \sqrt{x}, \mathrm{x}, x^{2}
+        text = re.sub(r"\\frac\{([^{}]*)\}\{([^{}]*)\}", r"(\1)/(\2)", text)
+        text = re.sub(r"\\sqrt\{([^{}]*)\}", r"√(\1)", text)
+        text = re.sub(r"\\(?:mathrm|mathit|operatorname)\{([^{}]*)\}", r"\1", text)
+        text = re.sub(r"\^\{?(-?[0-9]+)\}?", lambda m: m.group(1).translate(_SUPERSCRIPT), text)
+    text = re.sub(r"\\([A-Za-z]+)", lambda m: _GREEK.get(m.group(1), m.group(1)), text)
+    text = re.sub(r"\((\w)\)", r"\1", text)         # (a)/(b) of single letters: a/b
+    return text.replace("{", "").replace("}", "").replace("\1", "_").replace("\0", "$")
 
 
 def _unmath(text: str) -> str:
     """Plain text from a note or label written for matplotlib."""
-    text = _MATH.sub(lambda m: f"{m.group(1)}{m.group(2)}".replace("\\ ", " ").replace("\\_", "_"),
-                     text)
-    return text.replace("\\$", "$")
+    return "".join(r.get("t", r.get("sub", "")) for r in runs(text))
 
 
 def _plain(obj: Any) -> dict[str, Any]:

@@ -115,6 +115,18 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
     return Starlette(routes=routes, middleware=middleware)
 
 
+ENVIRONMENT = "KINEMATIKA_APP"      # how `kinematika app --workers N` hands its start to workers
+
+
+def from_environment() -> Starlette:
+    """The application of a worker process of `kinematika app --workers N`: the start (the
+    model read once by the parent) and the allowed host names come in `KINEMATIKA_APP`."""
+    given = json.loads(os.environ.get(ENVIRONMENT, "{}"))
+    start = Start(given.get("text", ""), given.get("fmt", "yaml"), given.get("name", ""),
+                  bundled_examples())
+    return create_app(start, hosts=given.get("hosts"), workers=given.get("threads", limits.WORKERS))
+
+
 async def _read_body(request: HttpRequest) -> bytes:
     """The body, refused (413) past `limits.MAX_BODY` bytes before more is read; a body
     that is not declared JSON is refused (415): browsers then ask before a cross-site post."""
