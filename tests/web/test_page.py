@@ -274,3 +274,30 @@ def test_the_page_runs_under_its_own_security_policy(browser, server):
     pg.get_by_test_id("dof").filter(has_text="DOF 1").wait_for()
     assert not problems, problems
     context.close()
+
+
+@pytest.mark.parametrize("name", ["slider_crank.yaml", "quick_return.yaml", "planetary_gears.yaml",
+                                  "robot_arm_3d.yaml", "fan_symbolic.yaml"])
+def test_every_kind_of_model_is_shown(page, name):
+    """A prismatic joint, a slot, gears, a 3D model, a symbolic one: drawn, with
+    the slider over the sweep when there is one (and off, saying why, when there is none)."""
+    gen = page.evaluate("window.kinematika.state.gen")
+    page.get_by_test_id("example").select_option(name)
+    page.wait_for_function(f"() => window.kinematika.state.gen > {gen} && document.getElementById('busy').hidden")
+    assert page.get_by_test_id("error").is_hidden()
+    cli_json = json.loads(CliRunner().invoke(cli, ["solve", str(EXAMPLES / name), "--json"]).stdout)
+    assert page.get_by_test_id("dof").inner_text() == f"DOF {cli_json['dof']}"
+    assert cell(page, "answers.0") == cli_json["answers"][0]["value"]
+    figure = page.get_by_test_id("figure")
+    assert figure.locator("[data-handle]").count() == len({p for b in cli_json["points"] for p in [b.split("@")[0]]})
+    sweep = CliRunner().invoke(cli, ["sweep", str(EXAMPLES / name), "--json", "--skip-bad"])
+    slider = page.get_by_test_id("input-slider")
+    if sweep.exit_code != 0:
+        assert slider.is_disabled() and "the slider is off" in page.locator("#notes").inner_text()
+        return
+    rows = json.loads(sweep.stdout)
+    last = len(rows["coordinate"]) - 1
+    assert slider.get_attribute("max") == str(last)
+    set_row(page, last)
+    body = next(b for b in rows["bodies"] if b != "ground")
+    assert cell(page, f"bodies.{body}.omega") == rows["bodies"][body]["omega"][last]

@@ -5,7 +5,7 @@
 // shown at the position the scene was solved at.
 import { el, runsText, num } from "./svg.js";
 
-const REACH = 2.0;      // drawing sizes around the mechanism within which results are framed
+const REACH = 0.6;      // drawing sizes around the mechanism within which results are framed (farther: at the edge)
 const MARGIN = 0.1;     // drawing sizes of margin around the framed content
 const KINDS = ["velocity", "acceleration"];
 
@@ -330,18 +330,22 @@ export class Figure {
 
   /** The full path of every moving point over the sweep (coupler curves), faint. */
   paintTraces() {
-    this.tracesByKey = [];
     if (!this.sweep) return;
     const seen = [];
-    for (const [key, v] of Object.entries(this.sweep.points)) {
+    const asked = new Set(this.scene.vectors.map((v) => v.ref));
+    const keys = Object.keys(this.sweep.points).sort((a, b) => asked.has(b) - asked.has(a));
+    for (const key of keys) {
+      const v = this.sweep.points[key];
       const path = v.position.filter((p) => p !== null);
       if (path.length < 2) continue;
       const spread = Math.max(...path.map((p) => dist(p, path[0])));
       if (spread <= 1e-6 * this.size) continue;
       if (seen.some((q) => q.length === path.length && q.every((p, i) => dist(p, path[i]) < 1e-9 * this.size))) continue;
       seen.push(path);
-      el("polyline", { points: poly(path), fill: "none", stroke: "#6d4c41", "stroke-opacity": 0.45,
-                       "stroke-width": 1.2, "stroke-dasharray": "4 3", "data-trace": key }, this.g.traces);
+      const strong = asked.has(key);      // the asked points' paths (coupler curves) stand out
+      el("polyline", { points: poly(path), fill: "none", stroke: "#6d4c41", "stroke-opacity": strong ? 0.75 : 0.4,
+                       "stroke-width": strong ? 1.6 : 1.1, "stroke-dasharray": strong ? null : "4 3",
+                       "data-trace": key }, this.g.traces);
     }
   }
 
@@ -424,8 +428,9 @@ export class Figure {
       }
       const runs = inside ? m.label : [...m.label, { t: ` far off at (${num(m.point[0])}, ${num(m.point[1])})` }];
       const t = runsText(mg, runs, { "font-size": 12 * this.px, fill: colour });
-      placeText(t, p, inside ? [7 * this.px, 7 * this.px] : mul(unit(sub(p, this.centre())), 10 * this.px),
-                inside ? null : unit(sub(p, this.centre())));
+      const inward = unit(sub(this.centre(), p));
+      if (inside) placeText(t, p, [7 * this.px, -7 * this.px], [1, -1]);
+      else placeText(t, p, mul(inward, 12 * this.px), inward);
     }
     for (const c of s.curvatures) {
       const cg = el("g", { "data-curvature": c.ref }, this.overlayParts.curvature);
@@ -447,18 +452,16 @@ export class Figure {
 
   centre() { const [x0, y0, x1, y1] = this.view; return [(x0 + x1) / 2, (y0 + y1) / 2]; }
 
+  /** Show or hide the layers (as switched, and the scene-only results away from their row). */
   applyLayers() {
     const showOverlay = this.row === this.overlayRow;
-    this.g.traces.setAttribute("visibility", this.layers.traces ? "visible" : "hidden");
+    shown(this.g.traces, this.layers.traces);
     if (this.overlayParts) {
-      this.overlayParts.centres.setAttribute("visibility", this.layers.centres && showOverlay ? "visible" : "hidden");
-      this.overlayParts.curvature.setAttribute("visibility", this.layers.curvature && showOverlay ? "visible" : "hidden");
-      for (const a of this.overlayArrows) a.g.setAttribute("visibility", this.layers[a.v.kind] && showOverlay ? "visible" : "hidden");
+      shown(this.overlayParts.centres, this.layers.centres && showOverlay);
+      shown(this.overlayParts.curvature, this.layers.curvature && showOverlay);
+      for (const a of this.overlayArrows) shown(a.g, this.layers[a.v.kind] && showOverlay);
     }
-    for (const a of this.arrows) {
-      const on = this.layers[a.v.kind] && (a.swept || this.row === this.sceneRow) && !a.v.relative_to && !!a.swept;
-      a.g.setAttribute("visibility", on ? "visible" : "hidden");
-    }
+    for (const a of this.arrows) shown(a.g, this.layers[a.v.kind] && !!a.swept);
   }
 
   paintLegend() {
@@ -489,8 +492,8 @@ export class Figure {
         const p0 = this.scene.bodies[name].points[anchor];
         const pk = sw.points[`${anchor}@${name}`].position[k];
         const a0 = sw.bodies[name].angle[this.sceneRow], ak = sw.bodies[name].angle[k];
-        if (!pk || ak === null || a0 === null) { g.setAttribute("visibility", "hidden"); continue; }
-        g.setAttribute("visibility", "visible");
+        shown(g, pk && ak !== null && a0 !== null);
+        if (!pk || ak === null || a0 === null) continue;
         g.setAttribute("transform", `translate(${pk[0]} ${-pk[1]}) rotate(${-(ak - a0)}) translate(${-p0[0]} ${p0[1]})`);
       }
       for (const a of this.arrows) {
@@ -564,6 +567,11 @@ const unit = (p) => { const n = Math.hypot(p[0], p[1]) || 1; return [p[0] / n, p
 const clamp = (x, lo, hi) => Math.min(Math.max(x, lo), hi);
 const poly = (pts) => pts.map((p) => `${p[0]},${-p[1]}`).join(" ");
 const seg = (p, q) => ({ x1: p[0], y1: -p[1], x2: q[0], y2: -q[1] });
+
+/** Display a group or not (`display`, which its children cannot override). */
+function shown(node, on) {
+  node.style.display = on ? "" : "none";
+}
 
 function setSeg(line, p, q) {
   line.setAttribute("x1", p[0]); line.setAttribute("y1", -p[1]);

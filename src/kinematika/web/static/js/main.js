@@ -69,6 +69,9 @@ async function analyse() {
   slider.disabled = $("play").disabled = !state.sweep;
   slider.title = state.sweepError ? `no motion to sweep: ${state.sweepError}` : "";
   setRow(state.row);
+  if (state.sweepError) {
+    $("notes").textContent = [$("notes").textContent, `the slider is off: ${state.sweepError}`].filter(Boolean).join(" · ");
+  }
   explainSoon();
 }
 
@@ -304,7 +307,10 @@ async function start() {
   }
   const linked = location.hash ? await fromFragment(location.hash).catch(() => null) : null;
   if (linked) return load(linked.text, linked.fmt, "linked-model");
-  if (opening.model) return load(opening.model, opening.format, opening.name);
+  if (opening.model) {
+    if (opening.examples.includes(opening.name)) $("example").value = opening.name;
+    return load(opening.model, opening.format, opening.name);
+  }
   const first = opening.examples.find((n) => n === "four_bar.yaml") || opening.examples[0];
   if (first) {
     $("example").value = first;

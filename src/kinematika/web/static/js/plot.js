@@ -11,7 +11,7 @@ export class Plot {
     this.svg = svg;
     this.pick = pick;
     this.series = [];
-    pick.addEventListener("change", () => this.draw());
+    this.chosen = new Set();
     new ResizeObserver(() => this.sweep && this.draw()).observe(svg);
   }
 
@@ -23,10 +23,19 @@ export class Plot {
     if (!sweep) { this.svg.replaceChildren(); return; }
     const choices = [];
     const moving = Object.keys(sweep.bodies).filter((b) => b !== frame);
+    const size = (xs) => xs.map((x) => (Array.isArray(x) ? Math.hypot(...x) : x));   // 3D: magnitudes
+    const planar = !Array.isArray(sweep.bodies[moving[0]]?.omega.find((x) => x !== null));
     for (const b of moving) {
-      choices.push({ id: `${b}.angle`, label: `${b}: angle (°)`, values: sweep.bodies[b].angle, body: b });
-      choices.push({ id: `${b}.omega`, label: `${b}: ω (rad/s)`, values: sweep.bodies[b].omega });
-      choices.push({ id: `${b}.alpha`, label: `${b}: α (rad/s²)`, values: sweep.bodies[b].alpha });
+      const q = sweep.bodies[b];
+      if (planar) {
+        choices.push({ id: `${b}.angle`, label: `${b}: angle (°)`, values: q.angle, body: b });
+        choices.push({ id: `${b}.omega`, label: `${b}: ω (rad/s)`, values: q.omega });
+        choices.push({ id: `${b}.alpha`, label: `${b}: α (rad/s²)`, values: q.alpha });
+      } else {
+        choices.push({ id: `${b}.angle`, label: `${b}: rotation (°)`, values: size(q.angle) });
+        choices.push({ id: `${b}.omega`, label: `${b}: |ω| (rad/s)`, values: size(q.omega) });
+        choices.push({ id: `${b}.alpha`, label: `${b}: |α| (rad/s²)`, values: size(q.alpha) });
+      }
     }
     const seen = new Set();
     for (const [key, v] of Object.entries(sweep.points)) {
@@ -40,16 +49,25 @@ export class Plot {
       choices.push({ id: `${key}.accel`, label: `${key}: |a|`, values: v.acceleration.map((x) => (x ? Math.hypot(...x) : null)) });
     }
     this.choices = choices;
-    const output = moving.at(-1);
-    const first = new Set([`${output}.angle`, `${output}.omega`]);
-    for (const c of choices) {
-      const o = document.createElement("option");
-      o.value = c.id;
-      o.textContent = c.label;
-      o.selected = first.has(c.id);
-      this.pick.appendChild(o);
+    const ids = new Set(choices.map((c) => c.id));
+    this.chosen = new Set([...this.chosen].filter((id) => ids.has(id)));
+    if (!this.chosen.size) {
+      const output = moving.at(-1);
+      this.chosen = new Set([`${output}.angle`, `${output}.omega`].filter((id) => ids.has(id)));
     }
-    this.pick.size = Math.min(4, choices.length);
+    for (const c of choices) {
+      const b = document.createElement("button");
+      b.type = "button";
+      b.textContent = c.label;
+      b.dataset.quantity = c.id;
+      b.setAttribute("aria-pressed", String(this.chosen.has(c.id)));
+      b.addEventListener("click", () => {
+        if (this.chosen.has(c.id)) this.chosen.delete(c.id); else this.chosen.add(c.id);
+        b.setAttribute("aria-pressed", String(this.chosen.has(c.id)));
+        this.draw();
+      });
+      this.pick.appendChild(b);
+    }
     this.draw();
   }
 
@@ -57,7 +75,7 @@ export class Plot {
     const svg = this.svg;
     svg.replaceChildren();
     if (!this.sweep) return;
-    const chosen = this.choices.filter((c) => [...this.pick.selectedOptions].some((o) => o.value === c.id));
+    const chosen = this.choices.filter((c) => this.chosen.has(c.id));
     const w = svg.clientWidth || 600, h = svg.clientHeight || 190;
     svg.setAttribute("viewBox", `0 0 ${w} ${h}`);
     const xs = this.sweep.coordinate;
