@@ -179,3 +179,7 @@ def test_seed_c5_2_2_articulated_vehicle():
     assert same(name, answer(name, velocity="W4"), v_w4)
     # the inner wheel's spin w' = |v(W4)|/r = w/(2√2)
     assert same(name, answer(name, intrinsic="W4")["speed"], r * w / (2 * sqrt(2)))
+    # wheels roll without side slip (knife edges, not a slot round a fixed pin): with e, n
+    # along and across S2 (45°), P2 = O − a e and v(P2)·n = 0 give θ' = v(O)·n / a, and
+    # with a(O) = 0, θ'' = v(O)·(dn/dt) / a = −θ' (v(O)·e) / a = r²w²/(2a²)
+    assert same(name, solved(name)[1]["bodies"]["S2"]["alpha"], r ** 2 * w ** 2 / (2 * a ** 2))

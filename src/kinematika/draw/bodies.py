@@ -12,7 +12,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Annulus, Circle, Polygon
 
 from .canvas import Canvas
-from .geometry import clip_line, convex_hull, perpendicular
+from .geometry import clip_line, clip_segment, convex_hull, perpendicular
 from .names import plain
 from .scene import BodyView, ShapeView
 from .style import BAR_WIDTH, GROUND, HATCH_BAND, INK, POINT_LABEL
@@ -89,7 +89,7 @@ def _moving_shape(cv: Canvas, body: BodyView, s: ShapeView) -> None:
             cv.add(Line2D(*spoke.T, lw=1.0, color=body.colour, alpha=0.8, zorder=3), body.name)
         cv.board.avoid(*_ring(s.center, s.radius))
     elif s.kind == "line":
-        seg = clip_line(s.through, s.direction, cv.view)
+        seg = _line_span(cv, body, s)
         if seg is not None:
             cv.add(Line2D(*np.array(seg).T, lw=2.2, color=body.colour, zorder=2, gid=gid), body.name)
             cv.board.avoid(*seg)
@@ -97,6 +97,19 @@ def _moving_shape(cv: Canvas, body: BodyView, s: ShapeView) -> None:
         cv.add(Polygon(s.vertices, closed=True, fc=body.colour, ec=body.colour, alpha=0.3, lw=1.5,
                        zorder=1, gid=gid), body.name)
         cv.board.avoid(*s.vertices)
+
+
+def _line_span(cv: Canvas, body: BodyView, s: ShapeView):
+    """The part of a moving body's line worth drawing (a chain's run, a rack): over its
+    points and the contacts on it, a little beyond, inside the view."""
+    pts = list(body.points.values()) + [j.contact for j in cv.scene.joints
+                                        if body.name in (j.a, j.b) and j.contact is not None]
+    if not pts:
+        return clip_line(s.through, s.direction, cv.view)
+    ts = [float((p - s.through) @ s.direction) for p in pts]
+    margin = 0.1 * cv.size
+    return clip_segment(s.through + (min(ts) - margin) * s.direction,
+                        s.through + (max(ts) + margin) * s.direction, cv.view)
 
 
 def _ring_gear(cv: Canvas, body: BodyView, s: ShapeView) -> None:

@@ -9,6 +9,7 @@ the labels are placed, the limits grow until every label lies inside the axes.
 """
 from __future__ import annotations
 
+import re
 import textwrap
 from pathlib import Path
 from typing import Any, Optional
@@ -22,7 +23,7 @@ from .bodies import paint_bodies
 from .canvas import Canvas
 from .geometry import Box
 from .joints import paint_joints
-from .marks import mark_groups, paint_axes, paint_curvatures, paint_marks
+from .marks import KENNEDY, NORMAL, mark_groups, paint_axes, paint_curvatures, paint_marks
 from .names import bare, number
 from .options import DrawOptions
 from .scene import Scene
@@ -36,6 +37,7 @@ ASPECT = (0.5, 1.25)  # bounds of the axes' height/width
 TOP, LEGEND, NOTE = 0.55, 0.32, 0.2   # inches: title band, legend row, one note line
 TRIAD = 0.9          # inches: the 3D axis triad's inset (square)
 FORMATS = ("png", "svg", "pdf")
+NBSP = "\u00a0"      # keeps `r = 0.1` and `2 crank` on one line of the notes
 
 
 def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
@@ -172,7 +174,8 @@ def _notes(scene: Scene, drawn: list[Arrow]) -> list[str]:
                      " orthographic projection (axes x, y, z shown at the lower right)")
     lines: list[str] = []
     for note in notes:
-        lines += textwrap.wrap(note.replace("$", r"\$"), 100)
+        kept = re.sub(r"(?<=\b\d) (?=\w)", NBSP, note.replace(" = ", f"{NBSP}={NBSP}"))
+        lines += [line.replace(NBSP, " ") for line in textwrap.wrap(kept.replace("$", r"\$"), 100)]
     return lines
 
 
@@ -187,7 +190,9 @@ def _legend(fig: Figure, scene: Scene, drawn: list[Arrow], notes: list[str]) -> 
         handles.append(Line2D([], [], marker="o", ms=8, mfc="white", mec=CENTRE, mew=2, ls="",
                               label="instant centre"))
     if scene.kennedy:
-        handles.append(Line2D([], [], color=CENTRE, lw=0.9, ls=(0, (6, 4)), label="Kennedy line"))
+        handles.append(Line2D([], [], **KENNEDY, label="Kennedy line"))
+    if scene.normals:
+        handles.append(Line2D([], [], **NORMAL, label="normal to a wheel or slot"))
     if any(m.kind == "pole" for m in scene.marks):
         handles.append(Line2D([], [], marker="D", ms=6, mfc="white", mec=ACCELERATION, ls="",
                               label="acceleration pole"))

@@ -8,6 +8,8 @@ is a double arrow at the edge, along its direction.
 """
 from __future__ import annotations
 
+from typing import Optional
+
 import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import FancyArrowPatch
@@ -22,6 +24,8 @@ MARKERS = {"icr": dict(marker="o", ms=9, mfc="white", mec=CENTRE, mew=2.2),
            "pole": dict(marker="D", ms=7, mfc="white", mec=ACCELERATION, mew=2.0),
            "contact": dict(marker="X", ms=7, mfc=INK, mec="white", mew=0.8)}
 COLOURS = {"icr": CENTRE, "pole": ACCELERATION, "contact": INK}
+KENNEDY = dict(lw=0.9, ls=(0, (6, 4)), color=CENTRE, alpha=0.65, zorder=1)
+NORMAL = dict(lw=1.1, ls=(0, (8, 3, 1.5, 3)), color=CENTRE, alpha=0.85, zorder=1)
 
 
 def paint_marks(cv: Canvas) -> None:
@@ -35,6 +39,8 @@ def paint_marks(cv: Canvas) -> None:
             _far_mark(cv, group)
     for line in cv.scene.kennedy:
         _kennedy(cv, line)
+    for line in cv.scene.normals:
+        _kennedy(cv, line, NORMAL)
 
 
 def mark_groups(marks: list[MarkView], size: float) -> list[list[MarkView]]:
@@ -111,10 +117,11 @@ def _infinite_mark(cv: Canvas, group: list[MarkView]) -> None:
              np.array([-d[1], d[0]]))
 
 
-def _kennedy(cv: Canvas, line) -> None:
-    """The part of the line covering its centres (and a little beyond), inside the view."""
+def _kennedy(cv: Canvas, line, style: Optional[dict] = None) -> None:
+    """The part of the line covering its centres (and a little beyond; up to the edge
+    towards one that lies off the view), inside the view."""
     d = unit(np.asarray(line.direction, dtype=float))
-    ts = [float((a - line.through) @ d) for a in line.anchors if cv.view.contains(a)]
+    ts = [float((a - line.through) @ d) for a in line.anchors]
     margin = 0.12 * cv.size
     if ts:
         seg = clip_segment(line.through + (min(ts) - margin) * d,
@@ -122,8 +129,7 @@ def _kennedy(cv: Canvas, line) -> None:
     else:
         seg = clip_line(line.through, d, cv.view)
     if seg is not None:
-        cv.add(Line2D(*np.array(seg).T, lw=0.9, ls=(0, (6, 4)), color=CENTRE, alpha=0.65,
-                      zorder=1, gid=line.key))
+        cv.add(Line2D(*np.array(seg).T, **(style or KENNEDY), gid=line.key))
 
 
 def paint_curvatures(cv: Canvas) -> None:

@@ -77,7 +77,7 @@ def formula(expr: Any, value: float) -> str:
     tidied = tidy(expr)
     if len(str(tidied)) > FORMULA_CHARS:
         return f"≈ {value:.3g}"
-    text = "$" + latex(tidied) + "$"
+    text = "$" + latex(tidied).replace(r"\frac", r"\dfrac") + "$"    # full-size fractions
     if not settable(text):
         return f"≈ {value:.3g}"
     return text

@@ -13,6 +13,7 @@ import numpy as np
 from ..model.model import PointRef
 from ..questions import answer
 from .options import DrawOptions
+from .geometry import perpendicular
 from .names import bare, body_numbers, equation, formula, number, pair_symbol, plain, point_symbol, subscript
 from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView,
                     vector_label)
@@ -126,6 +127,32 @@ def magnitude_text(sol: Any, value: tuple, magnitude: float) -> str:
 
 # instant centres -------------------------------------------------------------------------
 def _centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
+    _asked_centres(scene, sol, options, num)
+    _normals(scene)
+
+
+def _normals(scene: Scene) -> None:
+    """Where a knife-edge wheel or a pin in a slot joins two bodies whose centre is shown,
+    the normal to the wheel's plane (to the slot) at the joint: the centre lies on it. Two
+    wheels on one axle give one line."""
+    for j in scene.joints:
+        if j.type not in ("wheel", "slot") or j.at is None or j.along is None:
+            continue
+        mark = next((m for m in scene.marks if m.kind == "icr" and not m.rest
+                     and set(m.pair) == {j.a, j.b}), None)
+        if mark is None:
+            continue
+        n = np.array([-j.along[1], j.along[0]])
+        anchors = [j.at] if mark.point is None else [j.at, mark.point]   # at ∞: along n
+        same = next((k for k in scene.normals if abs(float((j.at - k.through) @ perpendicular(
+            k.direction))) <= 1e-9 * scene.size and abs(float(n @ k.direction)) > 1 - 1e-9), None)
+        if same is None:
+            scene.normals.append(KennedyLine(f"normal:{j.id}", j.at, n, anchors))
+        else:
+            same.anchors += anchors
+
+
+def _asked_centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
     if options.centres is False:
         return
     if options.centres and scene.dim == 2:
@@ -139,7 +166,8 @@ def _centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
             continue
         name = q.target if not q.relative_to else f"{q.target}/{q.relative_to}"
         label = pair_symbol("I", model, q.relative_to or model.frame, q.target)
-        _add_centre(scene, num, answer(sol, q), f"icr:{name}", label, (q.target,))
+        _add_centre(scene, num, answer(sol, q), f"icr:{name}", label,
+                    (q.relative_to or model.frame, q.target))
 
 
 def _add_centre(scene: Scene, num: Numbers, value: dict, key: str, label: str,

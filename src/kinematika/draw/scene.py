@@ -134,6 +134,7 @@ class Scene:
     vectors: list[VectorView] = field(default_factory=list)
     marks: list[MarkView] = field(default_factory=list)
     kennedy: list[KennedyLine] = field(default_factory=list)
+    normals: list[KennedyLine] = field(default_factory=list)   # wheel and slot normals
     curvatures: list[CurvatureView] = field(default_factory=list)
     axes: list[AxisView] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
@@ -158,8 +159,8 @@ def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = No
 
     options = options or DrawOptions()
     model = inst.model
-    proj = projection(model.dimension, options.view)
-    num = Numbers(inst, proj)
+    proj = projection(model.dimension, options.view, model.up)
+    num = Numbers(inst, proj, drawing_values(inst))
     bodies = _bodies(inst, num)
     box, size = _extent(bodies, inst)
     geos = _joint_geometries(inst, sol or solver)
@@ -167,9 +168,8 @@ def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = No
     _mark_gears(bodies, model, geos, num)
     joints = [_joint(j, geos.get(j.id), num) for j in model.joints]
     scene = Scene(model.name, model.dimension, proj, bodies, joints, size, box)
-    if inst.symbolic and inst.probe:
-        values = ", ".join(f"{s} = {v:.3g}" for s, v in sorted(inst.probe.items(), key=str))
-        scene.notes.append(f"symbolic model drawn at {values}")
+    if num.values:
+        scene.notes.append(_values_note(num.values, model.draw_at))
     if sol is not None:
         add_results(scene, sol, options, num)
     _number_bodies(scene)
@@ -189,18 +189,47 @@ def _number_bodies(scene: Scene) -> None:
     scene.notes.insert(0, f"bodies: {order}")
 
 
-class Numbers:
-    """Backend values (floats or sympy at the probe values) as page coordinates."""
+def drawing_values(inst: Instant) -> dict:
+    """The numbers a symbolic model is drawn at: its `draw_at` values, the solver's generic
+    probe values for the other symbols. Empty for a numeric model."""
+    if not (inst.symbolic and inst.probe):
+        return {}
+    given = inst.model.draw_at
+    values = {s: float(given.get(str(s), v)) for s, v in inst.probe.items()}
+    if any(str(s) in given for s in values):
+        for name, vec in inst.points.items():
+            if any(abs(complex(c.xreplace(values) if hasattr(c, "xreplace") else c).imag) > 1e-12
+                   for c in vec):
+                raise KinematikaError("schema", f"the model cannot be drawn at these values: "
+                                      f"point {name} is not real there", "draw_at")
+    return values
 
-    def __init__(self, inst: Instant, proj: Projection) -> None:
+
+def _values_note(values: dict, given: dict) -> str:
+    """Which numbers the figure shows: the model's draw_at, or generic ones."""
+    text = ", ".join(f"{s} = {v:.3g}" for s, v in sorted(values.items(), key=str))
+    if all(str(s) in given for s in values):
+        return f"symbolic model drawn at {text} (its draw_at values)"
+    if any(str(s) in given for s in values):
+        return f"symbolic model drawn at {text} (draw_at values, generic ones for the rest)"
+    return f"symbolic model drawn at generic values {text} (a model's draw_at sets them)"
+
+
+class Numbers:
+    """Backend values (floats, or sympy at the drawing values) as page coordinates."""
+
+    def __init__(self, inst: Instant, proj: Projection, values: Optional[dict] = None) -> None:
         self.inst, self.proj = inst, proj
+        self.values = values or {}
 
     def scalar(self, x: Any) -> float:
-        return self.inst.num(x)
+        if isinstance(x, (int, float)) or not self.values:
+            return self.inst.num(x)
+        return float(x.xreplace(self.values))
 
     def vector(self, v: tuple) -> Vec:
         """A model vector (3D kept as is) as floats."""
-        return np.array([self.inst.num(c) for c in v], dtype=float)
+        return np.array([self.scalar(c) for c in v], dtype=float)
 
     def page(self, v: tuple) -> Vec:
         """A model point or vector projected on the page."""

@@ -71,7 +71,14 @@ class _Builder:
         model.drivers = [self.driver(i, d) for i, d in enumerate(spec.drivers)]
         model.questions = self.questions()
         model.default_questions = self.spec.ask is None
+        model.draw_at, model.up = self.figure_hints(params, dimension)
         return model
+
+    def figure_hints(self, params: dict[str, Parameter], dimension: int) -> tuple[dict, Any]:
+        """`draw_at` (numbers for symbolic parameters, to draw at) and `up` (a 3D vertical)."""
+        from .figure_hints import draw_values, up_vector
+
+        return draw_values(self.spec.draw_at, params), up_vector(self.spec.up, dimension)
 
     # parameters and points -------------------------------------------------------------
     def parameters(self) -> dict[str, Parameter]:

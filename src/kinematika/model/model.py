@@ -155,6 +155,8 @@ class Model:
     sweep: Optional[Sweep] = None
     move: dict[str, Expr] = field(default_factory=dict)    # joint id -> advance (deg or length)
     default_questions: bool = False   # no `ask` was written: every body and point is asked
+    draw_at: dict[str, float] = field(default_factory=dict)   # figures: values of the symbols
+    up: Optional[tuple[float, ...]] = None                    # figures: the vertical (3D)
 
     def carriers(self, point: str) -> list[str]:
         """The bodies that list `point`, in the file's order."""

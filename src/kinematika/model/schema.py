@@ -230,3 +230,5 @@ class ModelSpec(Strict):
     ask: Optional[list[QuestionSpec]] = None
     sweep: Optional[SweepSpec] = None
     move: Optional[dict[str, Value]] = None
+    draw_at: Optional[dict[str, Union[StrictInt, StrictFloat]]] = None   # figures: symbols' values
+    up: Optional[list[Union[StrictInt, StrictFloat]]] = None             # figures: the vertical (3D)
