@@ -64,6 +64,13 @@ def integer(x: Any) -> int:
     raise _Refused
 
 
+def real(x: Any) -> Any:
+    """A number (StrictInt or StrictFloat: not a bool, not an expression)."""
+    if type(x) in (int, float):
+        return x
+    raise _Refused
+
+
 def vector(x: Any) -> list:
     if type(x) is list:
         return [value(v) for v in x]
@@ -207,7 +214,8 @@ ModelSpec, model = record("ModelSpec", {
     "bodies": (mapping(either(texts, body)), REQUIRED),
     "joints": (listed(joint), list), "drivers": (listed(driver), list),
     "ask": (optional(listed(question)), None), "sweep": (optional(sweep), None),
-    "move": (optional(mapping(value)), None)})
+    "move": (optional(mapping(value)), None),
+    "draw_at": (optional(mapping(real)), None), "up": (optional(listed(real)), None)})
 
 RECORDS = (ParameterSpec, CircleSpec, LineSpec, DiscSpec, PlaneSpec, BodySpec, JointSpec,
            OmegaDriver, JointDriver, VelocityDriver, QuestionSpec, SweepSpec, ModelSpec)
