@@ -37,7 +37,7 @@ def _status(code: Any) -> int:
 
 def _application() -> Any:
     """The typer application, with every command registered (imports typer and the commands)."""
-    from . import centres, draw, explain, page, solve, sweep  # noqa: F401  (each registers its command)
+    from . import centres, draw, explain, explore, page, solve, sweep  # noqa: F401  (each registers)
     from .app import app
 
     return app

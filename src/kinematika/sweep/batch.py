@@ -42,6 +42,7 @@ class Batch:
     outcome: Outcome
     drawn: np.ndarray
     points: dict[str, np.ndarray]        # drawn point locations (D,) complex
+    directions: dict[str, np.ndarray]    # unit `along` of prismatic and slot joints (D,) complex
 
     @property
     def ok(self) -> np.ndarray:
@@ -77,8 +78,8 @@ class BatchSweeper:
                                               (model.sweep.joint if model.sweep else None))
         self.groups = assur_groups(model)
         self.options = (by, steps)
+        self.plan = self._plan()
         self.batchable = self._batchable()
-        self.plan = self._plan() if self.batchable else None
 
     def _batchable(self) -> bool:
         """Closed form, a driver whose rates are its values (ω or a joint's rate), and a sweep
@@ -87,13 +88,14 @@ class BatchSweeper:
             return False
         if self.driver.kind not in ("omega", "joint"):
             return False
-        if self.driver.kind == "omega" and self.joint.type != "revolute":
-            return False
-        section = self.model.sweep
-        return not (self.options[0] is None and section is not None
-                    and section.by.names() & set(self.varied))
+        return self.driver.kind == "joint" or self.joint.type == "revolute"
 
     def _plan(self) -> Plan:
+        """The sweep's rows, the same for every design."""
+        section = self.model.sweep
+        if self.options[0] is None and section is not None and section.by.names() & set(self.varied):
+            raise KinematikaError("usage", f"the sweep's length ({section.by.text}) depends on a varied "
+                                  "parameter: give it as a number (--by)", "sweep.by")
         inst = self._instant({name: np.zeros(1) for name in self.varied})
         return make_plan(inst, self.joint.id, *self.options)
 
@@ -103,7 +105,7 @@ class BatchSweeper:
 
     def run(self, values: dict[str, np.ndarray]) -> Batch:
         """Sweep the designs `values` (name → (D,) array) over the plan's rows."""
-        assert self.batchable and self.plan is not None
+        assert self.batchable
         size = len(next(iter(values.values())))
         with np.errstate(all="ignore"):
             inst = self._instant({k: np.asarray(v, dtype=float) for k, v in values.items()})
@@ -122,7 +124,7 @@ class BatchSweeper:
                                 rates)
             outcome = closed.solve(self.plan.increments[None, :])
         drawn &= outcome.assembled[:, 0] & ~outcome.singular[:, 0]
-        return Batch(self.plan, outcome, drawn, points)
+        return Batch(self.plan, outcome, drawn, points, directions)
 
     def _directions(self, inst: Instant, points: dict[str, np.ndarray], size: int) -> dict[str, np.ndarray]:
         """Each prismatic or slot joint's unit `along` (fixed in its first body), per design."""

@@ -1,0 +1,100 @@
+"""Which designs a study evaluates: a grid or a space-filling sample of the varied parameters.
+
+Designs are numbered 0, 1, ... and any range of them is computed on its own, so that a
+study is cut into chunks that any worker can evaluate, in any order, with the same values.
+A grid takes N equally spaced values of each parameter (both ends included), the first
+parameter varying slowest; a sample takes N points of a scrambled Sobol' sequence (scipy's
+quasi-Monte-Carlo) fixed by its seed, scaled to the intervals.
+"""
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass
+from typing import Optional
+
+import numpy as np
+
+from ..errors import KinematikaError
+
+MAX_DESIGNS = 10 ** 10
+
+
+@dataclass(frozen=True)
+class Vary:
+    """A varied parameter and its interval."""
+
+    name: str
+    low: float
+    high: float
+
+
+def parse_vary(text: str) -> Vary:
+    """`NAME=LOW:HIGH` as a `Vary`; a malformed one is a usage error naming it."""
+    name, eq, interval = text.partition("=")
+    low, colon, high = interval.partition(":")
+    try:
+        if not (eq and colon and name.strip()):
+            raise ValueError
+        lo, hi = float(low), float(high)
+    except ValueError:
+        raise KinematikaError("usage", f"--vary expects NAME=LOW:HIGH (as a=1:5), got {text!r}",
+                              "--vary") from None
+    if not (math.isfinite(lo) and math.isfinite(hi)) or hi < lo:
+        raise KinematikaError("usage", f"--vary {name.strip()}: the interval must be finite with "
+                              f"LOW <= HIGH, got {lo:g}:{hi:g}", "--vary")
+    return Vary(name.strip(), lo, hi)
+
+
+@dataclass(frozen=True)
+class Designs:
+    """The designs of a study: `grid` values per parameter, or `samples` Sobol' points."""
+
+    vary: tuple[Vary, ...]
+    grid: Optional[int] = None
+    samples: Optional[int] = None
+    seed: int = 0
+
+    def __post_init__(self) -> None:
+        if not self.vary:
+            raise KinematikaError("usage", "name at least one parameter to vary (--vary NAME=LOW:HIGH)",
+                                  "--vary")
+        names = [v.name for v in self.vary]
+        if len(set(names)) != len(names):
+            raise KinematikaError("usage", f"a parameter is varied twice: {', '.join(names)}", "--vary")
+        if (self.grid is None) == (self.samples is None):
+            raise KinematikaError("usage", "give either --grid N or --samples N", "--grid")
+        if self.grid is not None and self.grid < 1 or self.samples is not None and self.samples < 1:
+            raise KinematikaError("usage", "--grid and --samples take a positive number", "--grid")
+        if self.count > MAX_DESIGNS:
+            raise KinematikaError("usage", f"{self.count} designs: at most {MAX_DESIGNS}", "--grid")
+
+    @property
+    def names(self) -> list[str]:
+        return [v.name for v in self.vary]
+
+    @property
+    def count(self) -> int:
+        return self.grid ** len(self.vary) if self.grid is not None else int(self.samples)
+
+    def values(self, start: int, stop: int) -> dict[str, np.ndarray]:
+        """The designs start, ..., stop - 1: one array of values per varied parameter."""
+        if self.grid is not None:
+            index = np.unravel_index(np.arange(start, stop), (self.grid,) * len(self.vary))
+            return {v.name: _grid_values(v, self.grid)[i] for v, i in zip(self.vary, index)}
+        unit = self._sobol(start, stop - start)
+        return {v.name: v.low + unit[:, k] * (v.high - v.low) for k, v in enumerate(self.vary)}
+
+    def _sobol(self, start: int, count: int) -> np.ndarray:
+        from scipy.stats import qmc
+
+        engine = qmc.Sobol(len(self.vary), scramble=True, rng=np.random.default_rng(self.seed))
+        if start:
+            engine.fast_forward(start)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")          # balance properties want powers of 2
+            return engine.random(count)
+
+
+def _grid_values(v: Vary, n: int) -> np.ndarray:
+    return np.linspace(v.low, v.high, n) if n > 1 else np.array([v.low])

@@ -1,0 +1,321 @@
+"""A design study run in chunks, here or on a Dask cluster, written as it goes.
+
+The designs are cut into chunks of `chunk` consecutive designs. Each chunk is evaluated
+on its own (`run_chunk`: by this process, or by a worker of a dask.distributed cluster)
+and, when it comes back, written to `OUT.parts/part-NNNNNN.parquet` (a temporary name,
+then renamed: a part on disk is always whole). When every chunk is there the parts are
+joined, in order, into the output (`.parquet` or `.csv`) and the folder is removed. A
+study interrupted at any moment is continued with `resume`: the parts already written are
+kept and only the missing chunks are computed, so no design is lost or written twice.
+The rows do not depend on where, or in which order, chunks were computed.
+"""
+from __future__ import annotations
+
+import functools
+import hashlib
+import json
+import os
+import shutil
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Iterable, Optional
+
+import numpy as np
+
+from ..errors import KinematikaError
+from .designs import Designs, Vary
+from .evaluate import Evaluator, Sweep
+
+CHUNK = 4096            # designs per chunk (batch kernel)
+CHUNK_ALONE = 64        # designs per chunk for models solved one design at a time
+WINDOW = 3              # chunks in flight per worker
+
+
+@dataclass(frozen=True)
+class Study:
+    """Everything a worker needs to evaluate any chunk (picklable; no file is read there)."""
+
+    model: str                              # the model's text
+    fmt: str                                # yaml, toml or json
+    designs: Designs
+    metrics: tuple[str, ...]
+    files: tuple[tuple[str, str], ...] = ()     # target files as written → their text
+    sweep: Sweep = field(default_factory=Sweep)
+    chunk: int = 0                          # 0: chosen by the kind of model
+
+    @property
+    def signature(self) -> str:
+        """A digest of the study: a resumed study must be the same one."""
+        data = asdict(self)
+        return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()[:20]
+
+    @property
+    def chunks(self) -> int:
+        return -(-self.designs.count // self.chunk)
+
+    def bounds(self, index: int) -> tuple[int, int]:
+        start = index * self.chunk
+        return start, min(start + self.chunk, self.designs.count)
+
+
+@functools.lru_cache(maxsize=4)
+def evaluator(study: Study) -> Evaluator:
+    """The study's prepared model, once per process (a worker keeps it between chunks)."""
+    from ..api import as_model
+
+    model = as_model(study.model, study.fmt)
+    return Evaluator(model, study.designs.names, list(study.metrics), study.sweep, files=dict(study.files))
+
+
+def run_chunk(study: Study, index: int) -> Any:
+    """The rows of chunk `index` as an Arrow table."""
+    start, stop = study.bounds(index)
+    ev = evaluator(study)
+    return to_table(ev, ev.evaluate(study.designs.values(start, stop)))
+
+
+def to_table(ev: Evaluator, columns: dict[str, Any]) -> Any:
+    """Columns as an Arrow table: NaN metrics become nulls, classes strings, counts integers."""
+    import pyarrow as pa
+
+    arrays = {name: pa.array(columns[name], pa.float64()) for name in ev.varied}
+    arrays["assembles"] = pa.array(columns["assembles"], pa.bool_())
+    arrays["reason"] = pa.array(list(columns["reason"]), pa.string())
+    for m in ev.metrics:
+        values = columns[m.name]
+        if m.kind == "class":
+            arrays[m.name] = pa.array(list(values), pa.string())
+            continue
+        values = np.asarray(values, dtype=float)
+        missing = ~np.isfinite(values)
+        if m.kind == "count":
+            arrays[m.name] = pa.array(np.where(missing, 0, values).astype(np.int64), pa.int64(), mask=missing)
+        else:
+            arrays[m.name] = pa.array(values, pa.float64(), mask=missing)
+    return pa.table(arrays)
+
+
+# running ---------------------------------------------------------------------------------------
+Progress = Callable[[int], None]
+
+
+def compute(study: Study, pending: list[int], done: Callable[[int, Any], None],
+            scheduler: Any = None, workers: Optional[int] = None) -> None:
+    """Evaluate the chunks `pending`, calling `done(index, table)` as each comes back (in any
+    order): in this process, on a local Dask cluster of `workers` processes, or on the
+    cluster at `scheduler` (an address, or a dask.distributed Client)."""
+    workers = workers if workers is not None else (os.cpu_count() or 1)
+    if scheduler is None and (workers <= 1 or len(pending) <= 1):
+        for index in pending:
+            done(index, run_chunk(study, index))
+        return
+    from dask.distributed import Client, LocalCluster, as_completed
+
+    cluster = None
+    if scheduler is None:
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                               dashboard_address=None, silence_logs=40)
+        client = Client(cluster)
+    elif isinstance(scheduler, str):
+        try:
+            client = Client(scheduler, timeout="20s")
+        except OSError as err:
+            raise KinematikaError("usage", f"cannot reach the Dask scheduler at {scheduler}: {err}",
+                                  "--scheduler") from None
+    else:
+        client = scheduler
+    try:
+        _on_cluster(client, study, pending, done)
+    finally:
+        if client is not scheduler:
+            client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+def _on_cluster(client: Any, study: Study, pending: list[int], done: Callable[[int, Any], None]) -> None:
+    from dask.distributed import as_completed
+
+    width = max(1, WINDOW * len(client.scheduler_info().get("workers", {}) or [1]))
+    todo = iter(pending)
+    first = [client.submit(run_chunk, study, i, key=f"kinematika-{study.signature}-{i}", pure=False)
+             for i in _take(todo, width)]
+    index_of = {f.key: i for f, i in zip(first, pending)}
+    queue = as_completed(first)
+    for future in queue:
+        index = index_of.pop(future.key)
+        done(index, future.result())
+        future.release()
+        for i in _take(todo, 1):
+            nxt = client.submit(run_chunk, study, i, key=f"kinematika-{study.signature}-{i}", pure=False)
+            index_of[nxt.key] = i
+            queue.add(nxt)
+
+
+def _take(it: Iterable[int], n: int) -> list[int]:
+    out = []
+    for x in it:
+        out.append(x)
+        if len(out) == n:
+            break
+    return out
+
+
+# writing ---------------------------------------------------------------------------------------
+class Parts:
+    """The folder of finished chunks beside the output, with the study's signature."""
+
+    def __init__(self, output: Path, study: Study) -> None:
+        self.output, self.study = output, study
+        self.folder = output.with_name(output.name + ".parts")
+        self.manifest = self.folder / "study.json"
+
+    def open(self, resume: bool) -> set[int]:
+        """Start (or, with `resume`, continue) the study; the chunks already written."""
+        if self.folder.exists():
+            if not resume:
+                raise KinematikaError("usage", f"{self.folder} holds an interrupted study: add --resume "
+                                      "to continue it, or delete that folder to start again", "--resume")
+            try:
+                signature = json.loads(self.manifest.read_text())["signature"]
+            except (OSError, ValueError, KeyError):
+                signature = None
+            if signature != self.study.signature:
+                raise KinematikaError("usage", f"{self.folder} holds a different study (another model, "
+                                      "parameters, designs or metrics): delete it to start again",
+                                      "--resume")
+            return {int(p.stem.split("-")[1]) for p in self.folder.glob("part-*.parquet")}
+        self.folder.mkdir()
+        self.manifest.write_text(json.dumps({"signature": self.study.signature,
+                                             "designs": self.study.designs.count,
+                                             "chunk": self.study.chunk}))
+        return set()
+
+    def path(self, index: int) -> Path:
+        return self.folder / f"part-{index:06d}.parquet"
+
+    def write(self, index: int, table: Any) -> None:
+        """A finished chunk, whole or not at all (written aside, then renamed)."""
+        import pyarrow.parquet as pq
+
+        tmp = self.folder / f"tmp-{index:06d}.parquet"
+        pq.write_table(table, tmp)
+        os.replace(tmp, self.path(index))
+
+    def join(self) -> None:
+        """The parts, in order, into the output; then the folder goes."""
+        import pyarrow.parquet as pq
+
+        tmp = self.output.with_name(self.output.name + ".tmp")
+        writer = _writer(tmp, pq.read_schema(self.path(0)), self.output.suffix.lower())
+        try:
+            for index in range(self.study.chunks):
+                writer.write_table(pq.read_table(self.path(index)))
+        finally:
+            writer.close()
+        os.replace(tmp, self.output)
+        shutil.rmtree(self.folder)
+
+
+def _writer(path: Path, schema: Any, suffix: str) -> Any:
+    if suffix == ".csv":
+        import pyarrow.csv as pcsv
+
+        return pcsv.CSVWriter(str(path), schema, write_options=pcsv.WriteOptions(quoting_style="needed"))
+    import pyarrow.parquet as pq
+
+    return pq.ParquetWriter(str(path), schema)
+
+
+def write_study(study: Study, output: Path, resume: bool = False, scheduler: Any = None,
+                workers: Optional[int] = None, progress: Optional[Progress] = None) -> None:
+    """Run the study into `output` (.parquet or .csv), in chunks, resumable."""
+    if output.suffix.lower() not in (".parquet", ".csv"):
+        raise KinematikaError("usage", f"the output is a .parquet or .csv file, got {output.name}", "-o")
+    parts = Parts(output, study)
+    finished = parts.open(resume)
+    count = sum(np.subtract(*study.bounds(i)[::-1]) for i in finished)
+    if progress:
+        progress(int(count))
+
+    def done(index: int, table: Any) -> None:
+        nonlocal count
+        parts.write(index, table)
+        count += table.num_rows
+        if progress:
+            progress(int(count))
+
+    compute(study, [i for i in range(study.chunks) if i not in finished], done, scheduler, workers)
+    parts.join()
+
+
+def collect(study: Study, scheduler: Any = None, workers: Optional[int] = None,
+            progress: Optional[Progress] = None) -> Any:
+    """Run the study and return its rows as one Arrow table (for studies that fit in memory)."""
+    import pyarrow as pa
+
+    tables: dict[int, Any] = {}
+    count = 0
+
+    def done(index: int, table: Any) -> None:
+        nonlocal count
+        tables[index] = table
+        count += table.num_rows
+        if progress:
+            progress(count)
+
+    compute(study, list(range(study.chunks)), done, scheduler, workers)
+    return pa.concat_tables([tables[i] for i in range(study.chunks)])
+
+
+def make_study(source: Any, vary: Iterable[Vary | str], metrics: Iterable[str], grid: Optional[int] = None,
+               samples: Optional[int] = None, seed: int = 0, sweep: Sweep = Sweep(),
+               chunk: Optional[int] = None) -> Study:
+    """A `Study` from a model file (or model text), checked here, where the files are."""
+    text, fmt, base = _model_text(source)
+    designs = Designs(tuple(v if isinstance(v, Vary) else _vary(v) for v in vary), grid, samples, seed)
+    metrics = tuple(metrics)
+    files = _target_files(metrics, base)
+    study = Study(text, fmt, designs, metrics, files, sweep, 0)
+    ev = evaluator(study)                       # checks the model, parameters and metrics here
+    size = chunk or (CHUNK if ev.batch.batchable else CHUNK_ALONE)
+    return Study(text, fmt, designs, metrics, files, sweep, int(size))
+
+
+def _vary(text: str) -> Vary:
+    from .designs import parse_vary
+
+    return parse_vary(text)
+
+
+def _model_text(source: Any) -> tuple[str, str, Path]:
+    """The model's text and format, and the folder relative file names are read from."""
+    if isinstance(source, (str, Path)) and "\n" not in str(source):
+        path = Path(source)
+        try:
+            text = path.read_text(encoding="utf-8")
+        except OSError as err:
+            raise KinematikaError("syntax", f"cannot read {path}: {err.strerror or err}", str(path)) from None
+        fmt = {".toml": "toml", ".json": "json"}.get(path.suffix.lower(), "yaml")
+        return text, fmt, path.parent
+    if isinstance(source, str):
+        return source, "yaml", Path(".")
+    if isinstance(source, dict):
+        return json.dumps(source), "json", Path(".")
+    raise KinematikaError("usage", "a study needs a model file or a model's text", "model")
+
+
+def _target_files(metrics: tuple[str, ...], base: Path) -> tuple[tuple[str, str], ...]:
+    """The text of every file a metric names (`path_error:P=FILE.csv`), read here."""
+    out = {}
+    for m in metrics:
+        head, eq, arg = m.partition("=")
+        name = arg.strip()
+        if eq and name.lower().endswith(".csv"):
+            path = Path(name) if Path(name).is_absolute() else base / name
+            try:
+                out[name] = path.read_text(encoding="utf-8")
+            except OSError as err:
+                raise KinematikaError("usage", f"cannot read {name}: {err.strerror or err}",
+                                      f"--metric {m}") from None
+    return tuple(sorted(out.items()))
