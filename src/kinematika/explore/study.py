@@ -272,6 +272,7 @@ def make_study(source: Any, vary: Iterable[Vary | str], metrics: Iterable[str], 
                samples: Optional[int] = None, seed: int = 0, sweep: Sweep = Sweep(),
                chunk: Optional[int] = None) -> Study:
     """A `Study` from a model file (or model text), checked here, where the files are."""
+    _need_extra()
     text, fmt, base = _model_text(source)
     designs = Designs(tuple(v if isinstance(v, Vary) else _vary(v) for v in vary), grid, samples, seed)
     metrics = tuple(metrics)
@@ -280,6 +281,15 @@ def make_study(source: Any, vary: Iterable[Vary | str], metrics: Iterable[str], 
     ev = evaluator(study)                       # checks the model, parameters and metrics here
     size = chunk or (CHUNK if ev.batch.batchable else CHUNK_ALONE)
     return Study(text, fmt, designs, metrics, files, sweep, int(size))
+
+
+def _need_extra() -> None:
+    try:
+        import pandas  # noqa: F401
+        import pyarrow  # noqa: F401
+    except ImportError:
+        raise KinematikaError("usage", "design studies need pyarrow and pandas (and dask for "
+                              "clusters): pip install 'kinematika[explore]'", "explore") from None
 
 
 def _vary(text: str) -> Vary:
