@@ -83,7 +83,8 @@ export class Figure {
     const step = 0.012 * this.size;
     const p = el("pattern", { id: "hatch", patternUnits: "userSpaceOnUse", width: step, height: step,
                               patternTransform: "rotate(45)" }, d);
-    el("line", { x1: 0, y1: 0, x2: 0, y2: step, stroke: this.scene.style.ground, "stroke-width": step * 0.25 }, p);
+    el("line", { x1: 0, y1: 0, x2: 0, y2: step, stroke: this.scene.style.ground, "stroke-width": step * 0.22,
+                 class: "model-width" }, p);
   }
 
   /** The box (model coordinates) the figure frames: the mechanism over the whole motion,
