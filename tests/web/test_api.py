@@ -8,8 +8,7 @@ import json
 import pytest
 from typer.testing import CliRunner
 
-import kinematika.cli  # noqa: F401  (registers the commands)
-from kinematika.cli.app import app as cli
+from kinematika.cli import app as cli       # the typer application, every command registered
 from tests.conftest import EXAMPLES
 
 EXAMPLE_FILES = sorted(EXAMPLES.glob("*.yaml"))
@@ -160,3 +159,23 @@ def test_requests_to_another_host_name_are_refused():
     local = TestClient(create_app(hosts=["127.0.0.1", "localhost"]), base_url="http://127.0.0.1")
     assert local.get("/").status_code == 200
     assert local.get("/", headers={"host": "attacker.example"}).status_code == 400
+
+
+def test_answers_kept_for_identical_requests_are_bounded():
+    from kinematika.web.server import Answers
+
+    kept = Answers(limit=1000)
+    for k in range(30):
+        kept.put(("solve", b"x" * 10 + bytes([k])), (200, "application/json", b"y" * 89))
+    assert kept.size <= 1000 and len(kept.kept) == 10            # 100 bytes each: the last ten
+    assert kept.get(("solve", b"x" * 10 + bytes([29]))) is not None
+    assert kept.get(("solve", b"x" * 10 + bytes([0]))) is None
+    kept.put(("sweep", b"z"), (200, "application/json", b"w" * 500))   # over an eighth: not kept
+    assert kept.get(("sweep", b"z")) is None
+
+
+def test_a_repeated_request_gets_the_same_answer(client):
+    text = (EXAMPLES / "slider_crank.yaml").read_text()
+    first = post(client, "sweep", model=text, steps=12)
+    again = post(client, "sweep", model=text, steps=12)
+    assert first.status_code == again.status_code == 200 and first.content == again.content

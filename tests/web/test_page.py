@@ -20,8 +20,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-import kinematika.cli  # noqa: F401
-from kinematika.cli.app import app as cli
+from kinematika.cli import app as cli       # the typer application, every command registered
 from kinematika.web.server import Start
 from tests.conftest import EXAMPLES
 

@@ -71,6 +71,7 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
     requests may be addressed to (a guard against DNS rebinding); None accepts any."""
     start = start if start is not None else Start(examples=bundled_examples())
     pool = anyio.CapacityLimiter(workers)
+    cache = Answers(limits.CACHE_BYTES)
 
     async def page(_: HttpRequest) -> Response:
         return FileResponse(str(STATIC / "index.html"), headers=SECURITY)
@@ -92,11 +93,18 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
             try:
                 raw = await _read_body(request)
                 req = parse_body(endpoint, raw)
-                if pool.statistics().tasks_waiting >= limits.MAX_WAITING:
-                    raise Failure(503, "busy", "the server is busy: try again in a moment")
-                with anyio.fail_after(limits.MAX_SECONDS):
-                    status, media, body = await anyio.to_thread.run_sync(
-                        _compute, req, limiter=pool, abandon_on_cancel=True)
+                key = (endpoint, raw)
+                kept = cache.get(key)
+                if kept is not None:
+                    status, media, body = kept
+                else:
+                    if pool.statistics().tasks_waiting >= limits.MAX_WAITING:
+                        raise Failure(503, "busy", "the server is busy: try again in a moment")
+                    with anyio.fail_after(limits.MAX_SECONDS):
+                        status, media, body = await anyio.to_thread.run_sync(
+                            _compute, req, limiter=pool, abandon_on_cancel=True)
+                    if status == 200:
+                        cache.put(key, (status, media, body))
             except KinematikaError as err:
                 return _error(400, err.as_json())
             except Failure as err:
@@ -125,6 +133,33 @@ def from_environment() -> Starlette:
     start = Start(given.get("text", ""), given.get("fmt", "yaml"), given.get("name", ""),
                   bundled_examples())
     return create_app(start, hosts=given.get("hosts"), workers=given.get("threads", limits.WORKERS))
+
+
+class Answers:
+    """The answers to the last requests, by endpoint and body, up to `limit` bytes: an
+    answer is a function of its request, and a class often asks the same one."""
+
+    def __init__(self, limit: int) -> None:
+        from collections import OrderedDict
+
+        self.limit, self.size = limit, 0
+        self.kept: OrderedDict = OrderedDict()
+
+    def get(self, key: tuple) -> Optional[tuple]:
+        answer = self.kept.get(key)
+        if answer is not None:
+            self.kept.move_to_end(key)
+        return answer
+
+    def put(self, key: tuple, answer: tuple) -> None:
+        cost = len(answer[2]) + len(key[1])
+        if cost > self.limit // 8 or key in self.kept:
+            return
+        self.kept[key] = answer
+        self.size += cost
+        while self.size > self.limit:
+            old_key, old = self.kept.popitem(last=False)
+            self.size -= len(old[2]) + len(old_key[1])
 
 
 async def _read_body(request: HttpRequest) -> bytes:
@@ -196,7 +231,7 @@ def _sweep(req: Request) -> tuple[str, str]:
         out = io.StringIO(newline="")
         result.write_csv(out)
         return CSV, out.getvalue()
-    return JSON, commands.json_text(result.to_json())
+    return JSON, b"".join(result.json_chunks()) + b"\n"      # as `sweep --json` writes it
 
 
 def _explain(req: Request) -> tuple[str, str]:
