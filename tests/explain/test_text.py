@@ -16,7 +16,8 @@ from .helpers import ALL, explained
 # the model's syntax and the code's internals, as they must never reach a reader
 SYNTAX = [
     (r"\w@\w", "a material point written as in the model (A@crank)"),
-    (r"\b(relative_to|moving|decompose|velocity|acceleration|icr|curvature|contact)\s*:", "a question as written"),
+    (r"(?m)\b(relative_to|moving|decompose|velocity|acceleration|omega|alpha|icr|curvature|contact|axis|pole|"
+     r"intrinsic)\s*:\s*[\w@]+\s*(,|\||$)", "a question as written"),
     (r"\b(body_a|body_b|tangential_vector|normal_vector|rates_summary)\b", "an answer's key"),
     (r"\b(geometric|velocity|acceleration|total|drag|relative|coriolis)\.(velocity|acceleration|drag|relative|total|coriolis)\b",
      "an answer's key path"),

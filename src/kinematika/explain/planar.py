@@ -18,6 +18,7 @@ from .order import Step
 
 body_ = body
 from .terms import point_term, rotation_terms, slide_terms, target_term
+from .vehicles import wheel_route
 
 LEVEL_UNIT = {"v": "rate", "a": "rate2"}
 
@@ -39,7 +40,7 @@ class PlanarSteps:
         title = "sec.velocities" if self.level == "v" else "sec.accelerations"
         sec = Section(msg(title))
         sec.add(msg("v.intro" if self.level == "v" else "a.intro"))
-        for i, step in enumerate(self.steps, 1):
+        for i, step in enumerate(merge_vehicles(self.ctx, self.steps), 1):
             sub = Section(msg("step.title", n=i, kind=msg(f"kind.{step.kind}"),
                               bodies=names(step.bodies, "body")), level=3)
             sub.blocks = self.step(step)
@@ -55,6 +56,13 @@ class PlanarSteps:
         builder = {"input": self.input, "RRR": self.rrr, "RRP": self.dyad_rp, "RPR": self.rpr,
                    "PRP": self.prp}.get(step.kind)
         blocks = self.drivers(step)
+        if step.kind == "other":
+            route = wheel_route(self.ctx, step.bodies, self.known, self.level)
+            if route is not None:
+                self.used.update(step.joints)
+                for b in step.bodies:
+                    self.done.update(self.ctx.point_label(p, b) for p in self.ctx.model.bodies[b].points)
+                return blocks + route
         if builder is not None and (step.source == "assur" or step.kind != "input"):
             made = builder(step, chain)
             if made is not None:
@@ -164,8 +172,20 @@ class PlanarSteps:
                 out += self.rolling(j, group)
             else:
                 out.append(condition_msg(j, self.level))
-        out += [self.rate(b) for b in step.bodies]
+        out += [self.read_from(b, out) for b in step.bodies]
         return out
+
+    def read_from(self, body: str, blocks: list) -> Derived:
+        """ω (α) of a body of the group, read off the first equation where its rotation
+        term is unknown: ω = v_PQ / QP; stated from the solution when no equation has it."""
+        sym = omega_sym(body) if self.level == "v" else alpha_sym(body)
+        for eq in (b for b in blocks if isinstance(b, Equation)):
+            for t in (t for side in eq.sides for t in side):
+                if t.unknown and t.kind in ("rotation", "tangential") and t.how and t.how[0] == sym \
+                        and isinstance(t.dir.ref, str):
+                    q, p = split_segment(t.dir.ref)
+                    return self.read(body, t, q, p)
+        return self.rate(body)
 
     def rolling(self, j: Joint, group: set[str]) -> list:
         ctx, lv = self.ctx, self.level
@@ -294,6 +314,11 @@ class PlanarSteps:
         return points[0]
 
 
+def split_segment(seg: str) -> tuple[str, str]:
+    """The two point names of a segment written by `segment` (AB, O2-A)."""
+    return tuple(seg.split("-", 1)) if "-" in seg else (seg[0], seg[1:])
+
+
 def driven(ctx: Ctx, d) -> list[str]:
     """The bodies whose motion a driver states (every carrier of a shared point)."""
     if d.kind == "omega":
@@ -335,3 +360,21 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
 def condition_msg(j: Joint, level: str) -> Msg:
     """A joint's condition in words (for groups solved together)."""
     return msg(f"cond.{j.type}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))
+
+
+def merge_vehicles(ctx: Ctx, steps: list[Step]) -> list[Step]:
+    """Consecutive groups on knife-edge wheels solved as one (the notes find a vehicle's
+    centre from all its wheels at once: the front wheel's speed locates the chassis')."""
+    wheeled = {b for j in ctx.model.joints if j.type == "wheel" for b in (j.a, j.b)}
+    out: list[Step] = []
+    for s in steps:
+        prev = out[-1] if out else None
+        if (prev is not None and prev.kind == s.kind == "other" and prev.source == s.source == "blocks"
+                and set(prev.bodies) & wheeled and set(s.bodies) & wheeled
+                and any({j.a, j.b} & set(prev.bodies) and {j.a, j.b} & set(s.bodies) for j in ctx.model.joints)):
+            out[-1] = Step("other", prev.bodies + s.bodies, prev.joints + s.joints,
+                           list(dict.fromkeys(prev.known + [k for k in s.known if k not in prev.bodies])),
+                           source="blocks")
+        else:
+            out.append(s)
+    return out

@@ -229,3 +229,17 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 composition-slide = { $point } llisca al llarg de la guia de l’enllaç { $joint }: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
 composition-pin = { $point } és el passador de l’enllaç { $joint }, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
+vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
+vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)
+vehicle-line-velocity = la perpendicular a { $sym } pel punt { $point }
+vehicle-centre = El CIR { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } és a { $first } i a { $second }; es tallen a { $centre } = { $where }. Cada punt { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } es mou perpendicular a la seva recta fins a { $centre }, amb celeritat proporcional a la seva distància:
+vehicle-translation = Les rectes { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } són paral·leles: el seu CIR és a l’infinit, es trasllada i tots els seus punts es mouen com { $point }.

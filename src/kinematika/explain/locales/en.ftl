@@ -139,3 +139,8 @@ centre-proportional-between = by Aronhold–Kennedy it lies on the line through 
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along the guide of joint { $joint }: its relative motion is along the guide, { $sym } = { $value }.
 composition-pin = { $point } is the pin of joint { $joint }, a point of both bodies: it has no relative motion, { $sym } = 0.
+vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
+vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
+vehicle-line-velocity = the perpendicular to { $sym } at { $point }
+vehicle-centre = The centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
+vehicle-translation = The lines of { $body } are parallel: its centre is at infinity, it translates, and every point moves as { $point }.

@@ -142,3 +142,8 @@ centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetat
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziaren proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: bere mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
 composition-pin = { $point } puntua { $joint } loturaren ardatza da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
+vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da bere abiadura osoa: { $sym } = { $value }.
+vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (bere ardatza: gurpila ez da alboetara irristatzen)
+vehicle-line-velocity = { $sym } abiadurarekiko perpendikularra { $point } puntuan
+vehicle-centre = { $body } solidoaren biraketa-zentroa { $first } zuzenean eta { $second } zuzenean dago; { $centre } = { $where } puntuan ebakitzen dira. { $body } solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziaren proportzionala den abiadurarekin:
+vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.

@@ -1,0 +1,166 @@
+"""Velocities of bodies on knife-edge wheels, as the notes' vehicle section (seed 002, C5.2).
+
+A wheel that does not slip has no velocity across its plane, so the centre of the body
+that carries it lies on the perpendicular to the wheel's plane at its contact (its axle
+line). Two such lines — or one, with the perpendicular to a point's known velocity — meet
+at the body's instant centre I; a known speed then gives ω (v_P = ω × IP) and every
+other point follows (v_Q = ω × IQ). A body pinned to one already known with a given
+joint rate turns at ω_known + rate.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from .context import Ctx, omega_sym
+from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, msg
+
+TOL = 1e-9
+
+
+def wheel_route(ctx: Ctx, group: list[str], known: set[str], level: str) -> Optional[list]:
+    """The blocks of the instant-centre route for `group` (velocities), or None when the
+    route does not reach every body of the group."""
+    if level != "v":
+        return None
+    wheels = [j for j in ctx.model.joints if j.type == "wheel" and ctx.frame in (j.a, j.b)
+              and ({j.a, j.b} & set(group))]
+    if not wheels:
+        return None
+    out: list = []
+    speeds = _known_speeds(ctx, known)
+    for d in ctx.model.drivers:
+        out += _driven_wheel(ctx, d, group, speeds)
+    solved: set[str] = set()
+    progress = True
+    while progress and len(solved) < len(group):
+        progress = False
+        for b in group:
+            if b in solved:
+                continue
+            made = _centre(ctx, b, wheels, speeds) or _pinned(ctx, b, known | solved)
+            if made is not None:
+                out += made
+                solved.add(b)
+                for p in ctx.model.bodies[b].points:
+                    speeds.setdefault(p, ctx.vel(b, p))
+                progress = True
+    return out if len(solved) == len(group) else None
+
+
+def _known_speeds(ctx: Ctx, known: set[str]) -> dict[str, tuple]:
+    """Velocities already known: every point of a known body (shared points by name)."""
+    out = {}
+    for b in known:
+        if b == ctx.frame:
+            continue
+        for p in ctx.model.bodies[b].points:
+            if ctx.shared(p):
+                out[p] = ctx.vel(b, p)
+    return out
+
+
+def _driven_wheel(ctx: Ctx, d, group: list[str], speeds: dict) -> list:
+    """A speed given along a wheel's plane at its contact: with no velocity across the
+    plane, the whole velocity of that point is known."""
+    if d.kind != "velocity" or d.along is None or d.point.body not in group:
+        return []
+    p = d.point.point
+    for j in ctx.model.joints:
+        if j.type == "wheel" and j.at == p and d.point.body in (j.a, j.b):
+            e = ctx.num(ctx.sol.solver.geos[j.id].along)
+            along = ctx.num(ctx.inst.direction(d.along, d.where))
+            if abs(e[0] * along[1] - e[1] * along[0]) <= 1e-9:
+                v = ctx.vel(d.point.body, p)
+                speeds[p] = v
+                return [msg("vehicle.driven", point=Name(p), joint=Name(j.id, "joint"),
+                            sym=Sym("v", p), value=Value(ctx.clean(v, "speed"), "speed"))]
+    return []
+
+
+def _lines(ctx: Ctx, b: str, wheels: list, speeds: dict) -> list[tuple]:
+    """(point, direction, reason) of the lines the centre of b lies on."""
+    out = []
+    for j in wheels:
+        if b in (j.a, j.b):
+            e = ctx.num(ctx.sol.solver.geos[j.id].along)
+            out.append((ctx.num(ctx.pos(j.at)), (-e[1], e[0]),
+                        msg("vehicle.line.wheel", joint=Name(j.id, "joint"), point=Name(j.at))))
+    for p in ctx.model.bodies[b].points:
+        v = speeds.get(p)
+        if v is not None and _size(ctx.num(v)) > TOL * ctx.scale_of("speed"):
+            vn = ctx.num(v)
+            out.append((ctx.num(ctx.pos(p)), (-vn[1], vn[0]),
+                        msg("vehicle.line.velocity", point=Name(p), sym=Sym("v", p))))
+    return out
+
+
+def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
+    """The centre of b from two of its lines that meet, then ω from a known speed."""
+    lines = _lines(ctx, b, wheels, speeds)
+    witness = next((p for p in ctx.model.bodies[b].points if p in speeds
+                    and _size(ctx.num(speeds[p])) > TOL * ctx.scale_of("speed")), None)
+    if witness is None:
+        return None
+    for i, (p1, d1, why1) in enumerate(lines):
+        for p2, d2, why2 in lines[i + 1:]:
+            det = d1[0] * d2[1] - d1[1] * d2[0]
+            if abs(det) <= 1e-9 * _size(d1) * _size(d2):
+                continue
+            t = ((p2[0] - p1[0]) * d2[1] - (p2[1] - p1[1]) * d2[0]) / det
+            centre = (p1[0] + t * d1[0], p1[1] + t * d1[1])
+            return _from_centre(ctx, b, centre, [why1, why2], witness)
+    if len(lines) >= 2 and ctx.is_zero(ctx.omega(b), "rate"):
+        return [msg("vehicle.translation", body=Name(b, "body"), point=Name(witness)),
+                Derived(omega_sym(b), [], ctx.value(ctx.omega(b), "rate"), b, "omega", False)]
+    return None
+
+
+def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str) -> list:
+    ident = Sym("I", f"{ctx.frame},{b}", vector=False)
+    w = omega_sym(b)
+    out: list = [msg("vehicle.centre", body=Name(b, "body"), first=why[0], second=why[1], centre=ident,
+                     where=Value(ctx.clean(_exact_centre(ctx, b, centre), "len"), "len"))]
+    for k, p in enumerate([witness] + [q for q in ctx.model.bodies[b].points if q != witness]):
+        arm = Inline([ident, " ", Name(p)])
+        value = ctx.clean(ctx.vel(b, p), "speed")
+        term = Term(Sym("v", f"{p}I"), value, Ann("?") if k == 0 else Ann("M", [w, "·", arm]),
+                    Ann("perp", arm), [w, " × ", arm], k == 0, "rotation")
+        target = Term(Sym("v", ctx.point_label(p, b)), value, Ann("M"), Ann("D"), kind="point")
+        out.append(Equation(target, [[term]], "v", ctx.ref(p, b), figure=False))
+        if k == 0:
+            out.append(Derived(w, [Sym("v", f"{p}I"), " / ", arm], ctx.value(ctx.omega(b), "rate"), b,
+                               "omega", not ctx.symbolic, term, ctx.clean(_arm(ctx, b, p), "len")))
+    return out
+
+
+def _exact_centre(ctx: Ctx, b: str, approx: tuple):
+    """The solver's centre (exact for symbolic models) where the construction put it."""
+    from ..questions.icr import instant_centre
+    found = instant_centre(ctx.sol, b, ctx.frame)
+    return tuple(found["point"]) if found.get("point") is not None else approx
+
+
+def _arm(ctx: Ctx, b: str, p: str) -> tuple:
+    from ..questions.icr import instant_centre
+    c = instant_centre(ctx.sol, b, ctx.frame)["point"]
+    return tuple(x - y for x, y in zip(ctx.pos(p), c))
+
+
+def _pinned(ctx: Ctx, b: str, solved: set[str]) -> Optional[list]:
+    """ω of a body pinned to a known one whose joint rate is given: ω = ω_known + rate."""
+    for d in ctx.model.drivers:
+        if d.kind != "joint":
+            continue
+        j = ctx.model.joint(d.joint)
+        if j.type == "revolute" and b in (j.a, j.b):
+            other = j.a if j.b == b else j.b
+            if other in solved:
+                rate = Value(ctx.clean(ctx.inst.value(d.value, d.where), "rate"), "rate")
+                return [Derived(omega_sym(b), [omega_sym(other), " + ", omega_sym(b, other), " = ",
+                                               omega_sym(other), " + ", rate],
+                                ctx.value(ctx.omega(b), "rate"), b, "omega", not ctx.symbolic)]
+    return None
+
+
+def _size(v) -> float:
+    return sum(c * c for c in v) ** 0.5

@@ -1,0 +1,80 @@
+"""Groups the solver solves together are explained with the textbooks' methods, each ω (and
+α) read off an equation; the models written for them are checked against independent
+derivations by hand (numpy), never against the solver."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from kinematika.explain.document import Derived, Section
+
+from .helpers import explained, num
+
+SIX = ["seed_c5_1_4_epicyclic", "quick_return", "seed_c5_2_1_tricycle", "tractor_trailer"]
+
+
+def section_blocks(doc, title_key: str) -> list:
+    out: list = []
+
+    def walk(sec: Section) -> None:
+        for b in sec.blocks:
+            walk(b) if isinstance(b, Section) else out.append(b)
+    for s in doc.sections:
+        if s.title.key == title_key:
+            walk(s)
+    return out
+
+
+def derived_rates(doc, key: str) -> list[Derived]:
+    return [b for b in section_blocks(doc, key) if isinstance(b, Derived) and b.kind in ("omega", "alpha")]
+
+
+@pytest.mark.parametrize("name", SIX)
+def test_every_velocity_unknown_has_an_equation(name):
+    """No angular velocity is stated bare: each is read off an equation (a term over its arm,
+    a loop along the joint axes, or the rate of a joint added to a known one)."""
+    sol, doc = explained(name)
+    key = "sec.velocities" if sol.space.dim == 2 else "sec.rates"
+    rates = derived_rates(doc, key)
+    bare = [d.body for d in rates if not d.how and d.body not in _given(sol)]
+    assert not bare, f"ω stated without an equation: {bare}"
+    bodies = {d.body for d in rates}
+    assert set(sol.model.moving_bodies) <= bodies | _given(sol), set(sol.model.moving_bodies) - bodies
+
+
+def _given(sol) -> set[str]:
+    return {d.body for d in sol.model.drivers if d.kind == "omega"}
+
+
+def tractor_by_hand():
+    """The notes' construction: centres where the axle lines meet the perpendiculars to known
+    velocities; ω = v / distance."""
+    v, wb, steer, tilt = 2.0, 2.5, math.radians(20), math.radians(30)
+    F, H = np.array([wb, 0.0]), np.array([-1.0, 0.0])
+    T = H + 4 * np.array([-math.cos(tilt), -math.sin(tilt)])
+    e_f = np.array([math.cos(steer), math.sin(steer)])
+    v_f = v * e_f
+    # rear axle: x = 0; perpendicular to the front wheel at F: F + s (-sin, cos)
+    s = wb / math.sin(steer)
+    i_t = F + s * np.array([-math.sin(steer), math.cos(steer)])
+    w_t = float(np.cross(F - i_t, v_f) / np.dot(F - i_t, F - i_t))
+    v_h = w_t * np.array([-(H - i_t)[1], (H - i_t)[0]])
+    # trailer: axle line through T, perpendicular to (cos tilt, sin tilt); and H + u v_h⊥
+    d1, d2 = np.array([-math.sin(tilt), math.cos(tilt)]), np.array([-v_h[1], v_h[0]])
+    a, b = np.linalg.solve(np.column_stack([d1, -d2]), H - T)
+    i_r = T + a * d1
+    w_r = float(np.cross(H - i_r, v_h) / np.dot(H - i_r, H - i_r))
+    return w_t, w_r, i_t, i_r
+
+
+def test_tractor_trailer_against_the_construction():
+    sol, doc = explained("tractor_trailer")
+    w_t, w_r, i_t, i_r = tractor_by_hand()
+    rates = {d.body: num(sol, d.value.value) for d in derived_rates(doc, "sec.velocities")}
+    assert rates["tractor"] == pytest.approx(w_t, rel=1e-9)
+    assert rates["trailer"] == pytest.approx(w_r, rel=1e-9)
+    assert rates["front"] == pytest.approx(w_t, rel=1e-9)
+    assert sol.omega("trailer") == pytest.approx(w_r, rel=1e-9)
+    assert w_t == pytest.approx(2 * math.sin(math.radians(20)) / 2.5)
