@@ -151,8 +151,12 @@ def _check_rows(solver: InstantSolver, functions: list) -> None:
 def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
                  progress: bool | Callable[[int, int], None]) -> SweepResult:
     """Every row of the plan by continuation, solved by the engine; NaN rows if skipped."""
+    from .compiled import compiled_sweep
     from .run import bad_row, dead_points
 
+    fast = compiled_sweep(sweeper, plan)       # spatial R/S linkages: all positions as arrays
+    if fast is not None:
+        return fast
     asm = Assembler(sweeper, plan)
     model, n, dim = sweeper.model, plan.steps + 1, sweeper.model.dimension
     shape = (n,) if dim == 2 else (n, 3)

@@ -154,16 +154,20 @@ def log_rotation(r: np.ndarray) -> np.ndarray:
 
 
 def _continued(r: np.ndarray, previous: np.ndarray) -> np.ndarray:
-    """Of the rotation vectors r + 2πk r̂ (the same rotation), the one nearest `previous`."""
+    """Of the rotation vectors r + 2πk r̂ (the same rotation), the one nearest `previous`.
+
+    Near no rotation (a crank back after a full turn) r̂ is round-off: the previous axis is
+    taken instead, so that the crank ends at 2π about its axis rather than at 0.
+    """
     angle = float(np.linalg.norm(r))
-    if angle < 1e-12:
-        axis = previous / np.linalg.norm(previous) if np.linalg.norm(previous) > 0 else None
-        if axis is None:
-            return r
-        candidates = [2 * math.pi * k * axis for k in range(-3, 4)]
+    size = float(np.linalg.norm(previous))
+    if angle < 1e-6 and size > 0:
+        axis = previous / size
+    elif angle < 1e-12:
+        return r
     else:
         axis = r / angle
-        candidates = [r + 2 * math.pi * k * axis for k in range(-3, 4)]
+    candidates = [r + 2 * math.pi * k * axis for k in range(-3, 4)]
     return min(candidates, key=lambda c: float(np.linalg.norm(c - previous)))
 
 
