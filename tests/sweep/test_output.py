@@ -115,7 +115,7 @@ def test_cli_plot_to_a_format_matplotlib_cannot_write_is_a_clean_error(tmp_path)
     model = _model_file(tmp_path, four_bar_tree())
     out = CliRunner().invoke(app, ["sweep", model, "--steps", "4", "--plot", str(tmp_path / "curves.txt")])
     assert out.exit_code == 2
-    assert out.stderr.strip() == f"error (schema): {tmp_path / 'curves.txt'}: cannot plot to 'curves.txt': give a .png, .svg or .pdf file"
+    assert out.stderr.strip() == f"error (usage): {tmp_path / 'curves.txt'}: cannot plot to 'curves.txt': give a .png, .svg or .pdf file"
     assert not (tmp_path / "curves.txt").exists()
 
 

@@ -98,7 +98,8 @@ def animate(
         None, "--trace", help="points whose paths are traced (default: the asked points)"),
     skip_bad: bool = typer.Option(False, "--skip-bad", help="skip positions that cannot be assembled"),
     assignments: Optional[list[str]] = SetOpt,
-    width: float = typer.Option(6.4, "--width", min=1.0, max=50.0, help="frame width in inches"),
+    width: float = typer.Option(8.0, "--width", min=1.0, max=50.0,
+                                help="frame width in inches (100 pixels an inch)"),
 ) -> None:
     """The motion over the sweep (GIF, or MP4 with ffmpeg), with traced paths and live vectors."""
     from ..draw.animation import FORMATS

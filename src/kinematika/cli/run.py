@@ -48,7 +48,7 @@ def sweep_command(model: Path, joint: Optional[str] = None, by: Optional[float] 
     if output is not None:
         guarded(as_json, lambda: _write(result, output, kind))
     if plot is not None:
-        guarded(as_json, lambda: _plot(result, plot))
+        guarded(as_json, lambda: _plot(result, plot, sweeper.model))
     if as_json:
         for piece in result.json_chunks():
             write_stdout(piece)
@@ -90,10 +90,10 @@ def _write(result, path: Path, kind: str) -> None:
         {"csv": result.to_csv, "npz": result.to_npz, "parquet": result.to_parquet}[kind](path)
 
 
-def _plot(result, path: Path) -> None:
+def _plot(result, path: Path, model) -> None:
     from ..draw.plots import plot_sweep
 
-    plot_sweep(result, output_file(path, "--plot"))
+    plot_sweep(result, output_file(path, "--plot"), model)
 
 
 def flush_and_leave(code: int = 0) -> None:

@@ -41,12 +41,13 @@ def svg(source: Any, options: Optional[DrawOptions] = None, symbolic: Optional[b
     return svg_text(draw(source, None, options, symbolic, **choices))
 
 
-def plot_sweep(result: Any, path: Optional[Path | str] = None) -> Any:
-    """Angles, angular velocities and accelerations, point speeds and accelerations against
-    the swept coordinate, dead points marked (see `draw.plots`)."""
+def plot_sweep(result: Any, path: Optional[Path | str] = None, model: Any = None) -> Any:
+    """Absolute angles, ω and α of the bodies, sliders' positions, velocities and
+    accelerations (signed, with stroke and time ratio), other points' speed and tangential
+    acceleration, against the crank angle; dead points marked (see `draw.plots`)."""
     from .plots import plot_sweep as plot
 
-    return plot(result, path)
+    return plot(result, path, model)
 
 
 def animate(source: Any, path: Path | str, **kw: Any) -> Path:

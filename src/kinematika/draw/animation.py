@@ -21,11 +21,16 @@ from .canvas import Canvas
 from .geometry import Box
 from .options import DrawOptions
 from .scene import Scene, VectorView
+from .names import plain
 from .style import INK, KIND_COLOURS, POINT_LABEL, TITLE_SIZE
-from .vectors import arrow_for, arrow_patch
+from .geometry import perpendicular, unit
+from .vectors import arrow_for, arrow_patch, side_shifts
+from matplotlib.transforms import offset_copy
 
 FORMATS = ("gif", "mp4")
-DPI = 80
+DPI = 100            # an 8-inch frame is 800 pixels wide
+WIDTH = 8.0          # inches
+LABEL = 11.0         # points: names and vector labels in frames
 
 
 def animate(source: Any, path: Path | str, joint: Optional[str] = None, by: Optional[float] = None,
@@ -45,7 +50,7 @@ def animate(source: Any, path: Path | str, joint: Optional[str] = None, by: Opti
     from ..sweep.progress import reporter
 
     report = reporter(progress, len(film.rows), "rendering frames")
-    with writer.saving(film.fig, str(path), DPI):
+    with writer.saving(film.fig, str(path), film.fig.dpi):
         for i, k in enumerate(film.rows):
             film.show(k)
             writer.grab_frame()
@@ -62,6 +67,7 @@ class Film:
     motion: "Motion"
     rows: list[int]
     title: Any
+    axis: tuple = (None, None)     # the driving crank's absolute angle per row, and its name
 
     @classmethod
     def of(cls, source: Any, joint: Optional[str] = None, by: Optional[float] = None,
@@ -86,18 +92,36 @@ class Film:
         motion = Motion(scene, result, _live_vectors(sol, options, result))
         view = motion.box(rows).grow(0.08 * scene.size)
         fig, ax = new_figure(view.grow(0.06 * scene.size), DrawOptions(width=options.width), 0)
+        fig.set_dpi(DPI)
         cv = Canvas(ax, scene, view, labels=False, placement=motion.transform)
         _paint(cv)
         motion.attach(cv, trace)
         title = fig.text(0.5, 1 - 0.3 / fig.get_figheight(), "", ha="center", va="center",
                          fontsize=TITLE_SIZE, weight="bold", color=INK)
-        return cls(fig, motion, rows, title)
+        return cls(fig, motion, rows, title, _reading(result))
 
     def show(self, k: int) -> None:
         """The mechanism at row `k` of the sweep."""
-        result = self.motion.result
         self.motion.show(k)
-        self.title.set_text(f"{self.motion.scene.name}  —  {result.joint} {_coordinate(result, k)}")
+        name = self.motion.scene.name.replace("$", r"\$")
+        self.title.set_text(f"{name}  —  {self.coordinate(k)}")
+
+    def coordinate(self, k: int) -> str:
+        """The driving coordinate at row k as a student reads it: `crank θ = 230°`."""
+        x, label = self.axis
+        if label is not None:
+            return f"{label} θ = {float(x[k]) % 360:.0f}°"
+        return f"{self.motion.result.joint} {_coordinate(self.motion.result, k)}"
+
+
+def _reading(result: Any) -> tuple[Any, Optional[str]]:
+    """(values, body) of the driving crank's absolute angle, or (None, None) when the sweep
+    does not turn a body from the frame."""
+    from .plots import _driver, _moving_bodies, body_angle
+
+    angles = {n: a for n in _moving_bodies(result) if (a := body_angle(result, n)) is not None}
+    driver = _driver(result, angles)
+    return (angles[driver], driver) if driver is not None else (None, None)
 
 
 def _writer(path: Path, fps: int) -> Any:
@@ -109,8 +133,10 @@ def _writer(path: Path, fps: int) -> Any:
     if fmt == "gif":
         return animation.PillowWriter(fps=fps)
     if not animation.writers.is_available("ffmpeg"):
-        raise KinematikaError("schema", "writing .mp4 needs ffmpeg, which is not installed: "
-                              "install it or write a .gif")
+        raise KinematikaError("output", "writing .mp4 needs the ffmpeg program, which is not "
+                              "installed (on Debian or Ubuntu: apt install ffmpeg; with conda: "
+                              "conda install ffmpeg); or write a .gif, which needs nothing more",
+                              str(path))
     return animation.FFMpegWriter(fps=fps, bitrate=1800)
 
 
@@ -220,14 +246,21 @@ class Motion:
                                 v.key)
             ax.add_patch(patch)
             text = ax.annotate("", xy=(0, 0), xytext=(4, 4), textcoords="offset points",
-                               fontsize=8.5, color=KIND_COLOURS[v.kind], zorder=20,
-                               annotation_clip=False)
+                               fontsize=LABEL, color=KIND_COLOURS[v.kind], zorder=20,
+                               annotation_clip=False,
+                               bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none",
+                                         alpha=0.7))
             self.arrows.append((v, patch, text))
+        named: set[str] = set()
         for body in self.scene.bodies.values():
             tf = cv.transform(None if body.frame else body.name)
             for name, p in body.points.items():
-                ax.annotate(name, xy=p, xycoords=tf, xytext=(5, 5), textcoords="offset points",
-                            fontsize=8, color=POINT_LABEL, weight="bold", zorder=19)
+                if name in named or name in body.passing:
+                    continue
+                named.add(name)
+                ax.annotate(plain(name), xy=p, xycoords=tf, xytext=(6, 6),
+                            textcoords="offset points", fontsize=LABEL, color=POINT_LABEL,
+                            weight="bold", zorder=19)
 
     def _traced(self, trace: Optional[list[str]]) -> list[str]:
         """The swept keys (P@body) of the traced points; fixed points are not traced."""
@@ -265,20 +298,30 @@ class Motion:
             place.clear().translate(-p0[0], -p0[1]).rotate(theta).translate(pk[0], pk[1])
         for line, path in self.traces:
             line.set_data(path[: k + 1, 0], path[: k + 1, 1])
-        for (v, patch, text), arrow in zip(self.arrows, self._arrows(k)):
+        arrows = self._arrows(k)
+        for (v, patch, text), arrow, shift in zip(self.arrows, arrows,
+                                                  side_shifts(arrows, self.scene.size)):
             patch.set_positions(tuple(arrow.start), tuple(arrow.end))
             patch.set_visible(arrow.drawn)
+            d = unit(arrow.end - arrow.start)
+            n = perpendicular(d) * shift
+            ax = patch.axes
+            patch.set_transform(offset_copy(ax.transData, fig=ax.figure, x=n[0], y=n[1],
+                                            units="points"))
             magnitude = float(np.linalg.norm(self.result.points[v.ref][v.kind][k]))
             text.xy = tuple(arrow.end)
-            _beyond(text, arrow.end - arrow.start)
+            _beyond(text, d, 1.0 if v.kind == "velocity" else -1.0)
             text.set_text(f"{v.label} = {magnitude:.3g}")
             text.set_visible(arrow.drawn)
 
 
-def _beyond(text: Any, direction: np.ndarray, distance: float = 5.0) -> None:
-    """Put a tip's label just beyond the tip, along the arrow."""
-    n = float(np.linalg.norm(direction))
-    c, s = (direction / n) if n > 0 else (1.0, 0.0)
-    text.xyann = (distance * c, distance * s)
+def _beyond(text: Any, d: np.ndarray, side: float) -> None:
+    """Put a tip's label just beyond the tip, a little to one side of the arrow (velocities
+    left, accelerations right: one point's two labels do not meet when its arrows line up)."""
+    if not np.any(d):
+        d = np.array([1.0, 0.0])
+    off = 6.0 * d + 7.0 * side * perpendicular(d)
+    c, s = off / np.linalg.norm(off)
+    text.xyann = tuple(off)
     text.set_ha("left" if c > 0.3 else "right" if c < -0.3 else "center")
     text.set_va("bottom" if s > 0.3 else "top" if s < -0.3 else "center")

@@ -173,6 +173,8 @@ def _points(cv: Canvas) -> None:
     named: set[str] = set()
     for body in cv.scene.bodies.values():
         for name, p in body.points.items():
+            if name in body.passing:
+                continue
             cv.add(Line2D([p[0]], [p[1]], marker="o", ms=3.2, color=INK, zorder=4),
                    None if body.frame else body.name)
             cv.board.avoid(p, weight=2.0, radius=2.0)

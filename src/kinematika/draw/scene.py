@@ -49,6 +49,7 @@ class BodyView:
     frame: bool
     points: dict[str, Vec]
     shapes: list[ShapeView] = field(default_factory=list)
+    passing: list[str] = field(default_factory=list)   # points that slide along this body
 
 
 @dataclass
@@ -246,7 +247,22 @@ def _bodies(inst: Instant, num: Numbers) -> dict[str, BodyView]:
         shapes = [_shape(s, num) for s in inst.shapes.get(name, [])]
         out[name] = BodyView(name, number, "#424242" if frame else body_colour(number), frame,
                              points, shapes)
+    for j in model.joints:
+        for name in _passing(model, j):
+            out[j.a].passing.append(name)
     return {name: out[name] for name in model.bodies}
+
+
+def _passing(model: Any, j: Any) -> list[str]:
+    """The points of a slot's or a guide's body (`j.a`) that are the other body's points
+    sliding along it (the quick-return's A on the rocker): at this instant a material point
+    of the guide there, but not the pin, which an animation would leave behind."""
+    shared = [p for p in model.bodies[j.b].points if p in model.bodies[j.a].points]
+    if j.type == "slot":
+        return [p for p in shared if p == j.at]
+    if j.type in ("prismatic", "cylindrical"):
+        return shared
+    return []
 
 
 def _shape(s: Any, num: Numbers) -> ShapeView:
