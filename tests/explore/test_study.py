@@ -11,7 +11,7 @@ import pytest
 from typer.testing import CliRunner
 
 import kinematika.explore as ke
-from kinematika.cli.app import app
+from kinematika.cli import app
 from kinematika.explore import study as study_mod
 from kinematika.explore.evaluate import Evaluator
 from kinematika.explore.study import make_study, write_study

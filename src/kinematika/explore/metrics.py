@@ -12,6 +12,7 @@ whose sweep meets a position it cannot assemble. Definitions (docs/explore.md li
 | `peak_omega:BODY`, `peak_alpha:BODY` | the largest \\|ω\\|, \\|α\\| over the cycle |
 | `peak_speed:POINT`, `peak_accel:POINT` | the largest \\|v\\|, \\|a\\| over the cycle |
 | `path_error:POINT=FILE.csv` | the largest distance from a target point of the file to the point's path |
+| `motion_error:POINT=FILE.csv` | the largest distance from a target pose (x, y, angle) to the poses of the body carrying POINT |
 | `time_ratio[:BODY]` | the output's slower stroke over its quicker one, in input travel (a full turn) |
 | `dead_points` | the number of dead points met over the sweep |
 | `structural_error:BODY=FILE.csv` | the largest \\|rotation − target\\| over the file's (input, rotation) rows |
@@ -98,6 +99,14 @@ def parse_metric(text: str, ctx: Context, files: Optional[dict[str, str]] = None
         ref = _point(ctx, target, where)
         targets = read_points(arg.strip(), files, where)
         return Metric(text, lambda c: path_error(c.motion(ref)[0], targets), data=targets)
+    if kind == "motion_error" and colon and arg:
+        ref = _point(ctx, target, where)
+        points = ctx.model.bodies[ref.body].points
+        if len(points) < 2:
+            raise KinematikaError("usage", f"motion_error: body {ref.body!r} needs two points to have "
+                                  "an orientation", where)
+        poses = read_table(arg.strip(), files, where, 3)
+        return Metric(text, lambda c: motion_error(c, ref, points, poses), data=poses)
     if kind == "structural_error" and colon and arg:
         body = _body(ctx, target, where)
         table = read_table(arg.strip(), files, where, 2)
@@ -108,6 +117,7 @@ def parse_metric(text: str, ctx: Context, files: Optional[dict[str, str]] = None
     raise KinematikaError("usage", f"unknown metric {text!r}; metrics: grashof, transmission, "
                           "dead_points, time_ratio[:BODY], range:BODY, peak_omega:BODY, peak_alpha:BODY, "
                           "peak_speed:POINT, peak_accel:POINT, path_error:POINT=FILE.csv, "
+                          "motion_error:POINT=FILE.csv, "
                           "structural_error:BODY=FILE.csv, angle|omega|alpha:BODY=X, "
                           "speed|accel|x|y:POINT=X", "--metric")
 
@@ -225,6 +235,23 @@ def path_error(path: np.ndarray, targets: np.ndarray) -> np.ndarray:
         along = np.clip(np.where(length2 > 0, (rel * np.conj(seg)).real / length2, 0.0), 0.0, 1.0)
         nearest = np.nanmin(np.abs(rel - along * seg), axis=1)
         worst = np.maximum(worst, nearest)
+    return worst
+
+
+def motion_error(c: Cycle, ref: PointRef, points: list[str], poses: np.ndarray) -> np.ndarray:
+    """The largest, over target poses (x, y, angle in degrees), of the distance to the nearest pose
+    over the cycle: √(|ΔP|² + (ρ Δφ)²), φ the direction of the body's line from its first point to
+    its second, ρ the body's size (its largest distance between two points): an angle error
+    counts as the displacement it gives the body's far end."""
+    pos = c.motion(ref)[0]
+    drawn = [c.drawn(p) for p in points]
+    phi = np.angle(drawn[1] - drawn[0])[:, None] + np.radians(c.angle(ref.body))
+    size = np.max([np.abs(p - q) for p in drawn for q in drawn], axis=0)[:, None]
+    worst = np.zeros(len(pos))
+    for x, y, angle in poses:
+        turn = np.angle(np.exp(1j * (phi - math.radians(angle))))
+        gap = np.sqrt(np.abs(pos - complex(x, y)) ** 2 + (size * turn) ** 2)
+        worst = np.maximum(worst, np.nanmin(gap, axis=1))
     return worst
 
 

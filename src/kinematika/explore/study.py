@@ -270,13 +270,14 @@ def collect(study: Study, scheduler: Any = None, workers: Optional[int] = None,
 
 def make_study(source: Any, vary: Iterable[Vary | str], metrics: Iterable[str], grid: Optional[int] = None,
                samples: Optional[int] = None, seed: int = 0, sweep: Sweep = Sweep(),
-               chunk: Optional[int] = None) -> Study:
-    """A `Study` from a model file (or model text), checked here, where the files are."""
+               chunk: Optional[int] = None, files: Optional[dict[str, str]] = None) -> Study:
+    """A `Study` from a model file (or model text), checked here, where the files are.
+    `files` gives the text of target files by name instead of reading them."""
     _need_extra()
     text, fmt, base = _model_text(source)
     designs = Designs(tuple(v if isinstance(v, Vary) else _vary(v) for v in vary), grid, samples, seed)
     metrics = tuple(metrics)
-    files = _target_files(metrics, base)
+    files = _target_files(metrics, base, files or {})
     study = Study(text, fmt, designs, metrics, files, sweep, 0)
     ev = evaluator(study)                       # checks the model, parameters and metrics here
     size = chunk or (CHUNK if ev.batch.batchable else CHUNK_ALONE)
@@ -315,13 +316,15 @@ def _model_text(source: Any) -> tuple[str, str, Path]:
     raise KinematikaError("usage", "a study needs a model file or a model's text", "model")
 
 
-def _target_files(metrics: tuple[str, ...], base: Path) -> tuple[tuple[str, str], ...]:
+def _target_files(metrics: tuple[str, ...], base: Path, given: dict[str, str]) -> tuple[tuple[str, str], ...]:
     """The text of every file a metric names (`path_error:P=FILE.csv`), read here."""
     out = {}
     for m in metrics:
         head, eq, arg = m.partition("=")
         name = arg.strip()
-        if eq and name.lower().endswith(".csv"):
+        if name in given:
+            out[name] = given[name]
+        elif eq and name.lower().endswith(".csv"):
             path = Path(name) if Path(name).is_absolute() else base / name
             try:
                 out[name] = path.read_text(encoding="utf-8")

@@ -1,0 +1,143 @@
+"""Synthesis: the designs whose metric is least — path, function and motion generation.
+
+The objective is one of the study's metrics: `path_error:POINT=FILE` (path generation: the
+point passes near the targets), `structural_error:BODY=FILE` (function generation: the
+body's rotation follows a function of the input's), `motion_error:POINT=FILE` (motion
+generation: the body passes through target poses), or any other metric to minimise. The
+optimiser is scipy's differential evolution, its whole population evaluated at once by
+the batch kernel (`vectorized=True`): a generation is one call over (population ×
+positions) arrays. A design that cannot be assembled over its whole cycle scores a
+penalty. The best distinct designs are returned and written as model files, ready for
+`solve`, `draw`, `animate`.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Optional
+
+import numpy as np
+
+from ..errors import KinematikaError
+from .designs import Vary
+from .evaluate import Sweep
+from .study import evaluator, make_study
+
+PENALTY = 1e9           # the objective of a design that does not complete its cycle
+
+
+@dataclass
+class Synthesis:
+    """The result: the best designs (parameter values and objective, best first), and how
+    many designs were evaluated."""
+
+    names: list[str]
+    designs: list[dict[str, float]]
+    errors: list[float]
+    evaluated: int
+    objective: str
+    history: list[float]                 # the best objective after each generation
+
+
+def synthesize(model: Any, vary: list[Vary | str], objective: str, population: int = 40,
+               generations: int = 200, seed: int = 0, best: int = 3, sweep: Sweep = Sweep(),
+               tol: float = 0.0, target: Optional[float] = None,
+               files: Optional[dict[str, str]] = None) -> Synthesis:
+    """Minimise the metric `objective` over the varied parameters' intervals.
+
+    `population` designs per generation (scipy's popsize is per parameter: it is derived),
+    at most `generations` generations; stop early once the objective is below `target`.
+    `files` gives target files' text by name (as `make_study`).
+    """
+    from scipy.optimize import differential_evolution
+
+    study = make_study(model, vary, [objective], grid=1, sweep=sweep, files=files)
+    ev = evaluator(study)
+    names = study.designs.names
+    bounds = [(v.low, v.high) for v in study.designs.vary]
+    archive_x: list[np.ndarray] = []
+    archive_f: list[np.ndarray] = []
+    history: list[float] = []
+
+    def cost(x: np.ndarray) -> np.ndarray:
+        x = x.reshape(len(names), -1)                          # (parameters, designs)
+        columns = ev.evaluate({n: x[i] for i, n in enumerate(names)})
+        f = np.asarray(columns[objective], dtype=float)
+        f = np.where(np.isfinite(f), f, PENALTY)
+        archive_x.append(x.T.copy())
+        archive_f.append(f)
+        return f
+
+    def progress(intermediate_result: Any) -> bool:        # scipy passes the result by this name
+        fun = float(intermediate_result.fun)
+        history.append(fun)
+        return target is not None and fun <= target
+
+    size = max(5, math.ceil(population / len(names)))
+    differential_evolution(cost, bounds, popsize=size, maxiter=generations, seed=seed, tol=tol,
+                           polish=False, vectorized=True, updating="deferred", init="sobol",
+                           callback=progress)
+    xs, fs = np.concatenate(archive_x), np.concatenate(archive_f)
+    chosen = _distinct_best(xs, fs, bounds, best)
+    designs = [{n: float(xs[i, k]) for k, n in enumerate(names)} for i in chosen]
+    return Synthesis(names, designs, [float(fs[i]) for i in chosen], len(fs), objective, history)
+
+
+def _distinct_best(xs: np.ndarray, fs: np.ndarray, bounds: list[tuple], count: int) -> list[int]:
+    """The best designs, each at least 2 % of the intervals away from the better ones."""
+    span = np.array([max(hi - lo, 1e-300) for lo, hi in bounds])
+    out: list[int] = []
+    for i in np.argsort(fs, kind="stable"):
+        if fs[i] >= PENALTY:
+            break
+        if all(np.max(np.abs(xs[i] - xs[j]) / span) > 0.02 for j in out):
+            out.append(int(i))
+        if len(out) == count:
+            break
+    return out
+
+
+def write_designs(model: Path, result: Synthesis, folder: Path) -> list[Path]:
+    """Each best design as a model file (the model with its parameters set): best-1.yaml, ..."""
+    import yaml
+
+    from ..model.files import parse_text
+
+    fmt = {".toml": "toml", ".json": "json"}.get(model.suffix.lower(), "yaml")
+    tree = parse_text(model.read_text(encoding="utf-8"), fmt, str(model))
+    folder.mkdir(parents=True, exist_ok=True)
+    out = []
+    for rank, (design, error) in enumerate(zip(result.designs, result.errors), start=1):
+        copy = dict(tree)
+        copy["parameters"] = {**tree.get("parameters", {}), **{k: float(f"{v:.12g}") for k, v in design.items()}}
+        copy["name"] = f"{tree.get('name', model.stem)} — synthesized {rank} ({result.objective} = {error:.6g})"
+        path = folder / f"best-{rank}.yaml"
+        path.write_text(yaml.safe_dump(copy, sort_keys=False, allow_unicode=True), encoding="utf-8")
+        out.append(path)
+    return out
+
+
+def function_targets(expression: str, over: tuple[float, float], points: int) -> str:
+    """A target function f(x) (an expression in x: the input's increment, giving the output's
+    rotation in degrees) at `points` Chebyshev precision points of `over`, as CSV text."""
+    from ..algebra.arrays import Arrays
+    from ..model.expressions import ExpressionError, evaluate, parse
+
+    low, high = over
+    k = np.arange(1, points + 1)
+    x = 0.5 * (low + high) - 0.5 * (high - low) * np.cos((2 * k - 1) * np.pi / (2 * points))
+    try:
+        expr = parse(expression)
+        unknown = expr.names() - {"x", "pi"}
+        if unknown:
+            raise ExpressionError(f"in {expression!r}: unknown name {sorted(unknown)[0]!r} (the function "
+                                  "is of x, the input's increment)")
+        with np.errstate(all="ignore"):
+            y = np.broadcast_to(evaluate(expr, {"x": x}, Arrays({})), x.shape)
+    except ExpressionError as err:
+        raise KinematikaError("usage", str(err), "--target-function") from None
+    if not np.isfinite(y).all():
+        raise KinematikaError("usage", f"{expression!r} is not finite over {low:g} to {high:g}",
+                              "--target-function")
+    return "".join(f"{a!r},{b!r}\n" for a, b in zip(x.tolist(), y.tolist()))
