@@ -1,78 +1,215 @@
 """A point dragged on the page, as an edit of the model's text.
 
-Only the dragged point's value changes; comments, order and layout stay as the user wrote
-them. A point given by coordinates gets the new coordinates. The value's place in the text
-is found by the YAML composer's marks (a JSON text is YAML too); in TOML, by the line
-`NAME = [...]` of the `[points]` table.
+Only the values that place the dragged point change; comments, order and layout stay as
+the user wrote them. A point given by coordinates gets the new coordinates. A constructed
+point keeps its construction and gets the lengths and angle that put it where it was
+dropped: a polar point its `distance` and `angle` (or the parameters they name), a point
+in a frame its `at`, an intersection of two circles their radii (and the `side` it fell
+on), a point on a circle and a line the radius (the point slides along its line). A point
+where two lines meet is placed by its lines: it cannot be dragged itself.
+
+Values are located in the text by the YAML composer's marks (a JSON text is YAML too); a
+TOML text can have its coordinates moved (the line `NAME = [x, y]` of `[points]`).
 """
 from __future__ import annotations
 
+import math
 import re
 from typing import Any, Optional
 
+import numpy as np
+
 from ..errors import KinematikaError
+
+Edit = tuple[int, int, str]                 # replace text[start:end] with the text
 
 
 def move_point(text: str, fmt: str, point: str, to: tuple[float, float]) -> str:
     """`text` with the point `point` placed at `to` (model coordinates)."""
-    span = _toml_span(text, point) if fmt == "toml" else _yaml_span(text, point)
-    start, end, node = span
-    if node == "mapping":
-        raise KinematikaError("usage", f"{point} is constructed from other points: drag the "
-                              "points it is built from, or edit its construction", f"points.{point}")
-    if node != "list2":
+    if fmt == "toml":
+        start, end, kind = _toml_span(text, point)
+        if kind != "list2":
+            raise KinematikaError("usage", f"{point} is constructed: drag it in a YAML or JSON model, "
+                                  "or edit its construction", f"points.{point}")
+        return text[:start] + _pair(to) + text[end:]
+    root = _compose(text)
+    node = _child(_child(root, "points"), point)
+    if node is None:
+        raise KinematikaError("schema", f"no point {point!r} in the model", "points")
+    if _is_pair(node):
+        edits = [(node.start_mark.index, _end(text, node), _pair(to))]
+    elif _is_mapping(node):
+        edits = _construction_edits(text, fmt, root, node, point, np.array(to, dtype=float))
+    else:
         raise KinematikaError("usage", f"{point} is not a planar point with two coordinates",
                               f"points.{point}")
-    return text[:start] + f"[{_number(to[0])}, {_number(to[1])}]" + text[end:]
+    for start, end, new in sorted(edits, reverse=True):
+        text = text[:start] + new + text[end:]
+    return text
 
 
-def _number(x: float) -> str:
-    """A short form of `x` (the page has already rounded it to the drawing's precision)."""
-    text = f"{x:.10g}"
-    return "0" if text in ("-0", "0") else text
+# constructions -------------------------------------------------------------------------------
+def _construction_edits(text: str, fmt: str, root: Any, node: Any, point: str,
+                        to: np.ndarray) -> list[Edit]:
+    from ..api import as_model
+    from ..engine.instant import instantiate
+
+    model = as_model(text, "yaml")
+    inst = instantiate(model, False)
+    size = float(inst.scale) or 1.0
+    where = f"points.{point}"
+
+    def at(loc: Any) -> np.ndarray:
+        """A point (by name) or coordinates, as numbers."""
+        vec = inst.points[loc] if isinstance(loc, str) else inst.vector(loc, where)
+        return np.array([inst.num(c) for c in vec], dtype=float)
+
+    spec = model.points[point]
+    kind = type(spec).__name__
+    edits = Edits(text, root, node, size, fmt == "json")
+    if kind == "Polar":
+        origin = at(spec.origin)
+        d = to - origin
+        angle = math.degrees(math.atan2(d[1], d[0]))
+        if spec.reference is not None:
+            p, q = (at(x) for x in spec.reference)
+            angle -= math.degrees(math.atan2(*(q - p)[::-1]))
+        edits.value("distance", edits.length(float(np.hypot(*d))))
+        edits.value("angle", f"deg({_short((angle + 180) % 360 - 180, 0.1)})", text=True)
+    elif kind == "InFrame":
+        p, q = at(spec.origin), at(spec.toward)
+        u = (q - p) / np.linalg.norm(q - p)
+        n = np.array([-u[1], u[0]])
+        edits.replace(_child(node, "at"), f"[{edits.length(float((to - p) @ u))}, "
+                                           f"{edits.length(float((to - p) @ n))}]")
+    elif kind == "TwoCircles":
+        c1, c2 = (at(c) for c in spec.centers)
+        circles = _child(node, "circles")
+        for i, c in enumerate((c1, c2)):
+            edits.value_node(circles.value[i].value[1], edits.length(float(np.linalg.norm(to - c))))
+        (ux, uy), (vx, vy) = c2 - c1, to - c1
+        cross = float(ux * vy - uy * vx)
+        edits.side(_child(node, "side"), "left" if cross > 0 else "right", to)
+    elif kind == "CircleLine":
+        centre = at(spec.center)
+        line = spec.line
+        through = at(line.through)
+        d = (at(line.toward) - through) if line.toward is not None else at(line.direction)
+        d = d / np.linalg.norm(d)
+        onto = through + ((to - through) @ d) * d           # the point stays on its line
+        foot = through + ((centre - through) @ d) * d
+        edits.value_node(_child(node, "circle").value[1],
+                         edits.length(float(np.linalg.norm(onto - centre))))
+        edits.side(_child(node, "side"), "ahead" if (onto - foot) @ d >= 0 else "behind", onto)
+    else:
+        raise KinematikaError("usage", f"{point} is where two lines meet: drag the points its "
+                              "lines go through", where)
+    return edits.out
 
 
-def _yaml_span(text: str, point: str) -> tuple[int, int, str]:
-    """Start and end (character offsets) of the point's value, and its kind."""
+class Edits:
+    """The edits that write a construction's new values (a value that names a parameter
+    changes the parameter's value instead, so that what else uses it follows)."""
+
+    def __init__(self, text: str, root: Any, node: Any, size: float, json: bool) -> None:
+        self.text, self.root, self.node, self.size, self.json = text, root, node, size, json
+        self.params = _child(root, "parameters")
+        self.out: list[Edit] = []
+
+    def length(self, x: float) -> str:
+        """A length to a thousandth of a percent of the mechanism's size."""
+        return _short(x, 10 ** math.floor(math.log10(self.size / 1e4)))
+
+    def value(self, key: str, new: str, text: bool = False) -> None:
+        self.value_node(_child(self.node, key), new, text)
+
+    def value_node(self, node: Any, new: str, text: bool = False) -> None:
+        import yaml
+
+        if isinstance(node, yaml.ScalarNode) and self.params is not None:
+            target = _child(self.params, node.value)
+            if target is not None:                   # a parameter's name: change its value
+                if _is_mapping(target):
+                    target = _child(target, "value")
+                self.replace(target, new, text)
+                return
+        self.replace(node, new, text)
+
+    def side(self, node: Any, side: str, place: np.ndarray) -> None:
+        """The side the point fell on (or the sketch point `near`, if that is what is used)."""
+        near = _child(self.node, "near")
+        if near is not None:
+            self.replace(near, _pair(tuple(float(self.length(c)) for c in place)))
+        elif node is not None:
+            self.replace(node, side, text=True)
+
+    def replace(self, node: Any, new: str, text: bool = False) -> None:
+        """Replace a node's text; a text value keeps the node's quotes (JSON: double quotes)."""
+        start, end = node.start_mark.index, _end(self.text, node)
+        if text:
+            quote = self.text[start] if self.text[start] in "'\"" else ('"' if self.json else "")
+            new = f"{quote}{new}{quote}"
+        self.out.append((start, end, new))
+
+
+# YAML nodes ----------------------------------------------------------------------------------
+def _compose(text: str) -> Any:
     import yaml
 
     try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        return yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.YAMLError as err:
         raise KinematikaError("syntax", f"the model cannot be read: {err}", "") from None
-    points = _child(root, "points")
-    node = _child(points, point) if points is not None else None
-    if node is None:
-        raise KinematikaError("schema", f"no point {point!r} in the model", "points")
-    kind = "other"
-    if isinstance(node, yaml.MappingNode):
-        kind = "mapping"
-    elif isinstance(node, yaml.SequenceNode) and len(node.value) == 2:
-        kind = "list2"
-    return node.start_mark.index, _end(text, node), kind
+
+
+def _child(node: Any, key: str) -> Optional[Any]:
+    if not _is_mapping(node):
+        return None
+    for k, v in node.value:
+        if getattr(k, "value", None) == key:
+            return v
+    return None
+
+
+def _is_mapping(node: Any) -> bool:
+    import yaml
+
+    return isinstance(node, yaml.MappingNode)
+
+
+def _is_pair(node: Any) -> bool:
+    import yaml
+
+    return isinstance(node, yaml.SequenceNode) and len(node.value) == 2
 
 
 def _end(text: str, node: Any) -> int:
-    """Where a node's text ends (a block sequence's mark runs to the next key: trim it)."""
+    """Where a node's text ends (a block node's mark runs on to the next key: trim it)."""
     end = node.end_mark.index
     while end > node.start_mark.index and text[end - 1] in " \t\r\n":
         end -= 1
     return end
 
 
-def _child(node: Any, key: str) -> Optional[Any]:
-    import yaml
-
-    if not isinstance(node, yaml.MappingNode):
-        return None
-    for k, v in node.value:
-        if isinstance(k, yaml.ScalarNode) and k.value == key:
-            return v
-    return None
+def _pair(xy: Any) -> str:
+    return f"[{_short(xy[0])}, {_short(xy[1])}]"
 
 
+def _short(x: float, step: Optional[float] = None) -> str:
+    """`x` (rounded to `step`) in few characters."""
+    if step:
+        x = round(x / step) * step
+        decimals = max(0, -math.floor(math.log10(step) + 1e-9))
+        text = f"{x:.{decimals}f}"
+        text = text.rstrip("0").rstrip(".") if "." in text else text
+    else:
+        text = f"{x:.10g}"
+    return "0" if text in ("-0", "0", "") else text
+
+
+# TOML ----------------------------------------------------------------------------------------
 def _toml_span(text: str, point: str) -> tuple[int, int, str]:
-    """The span of `NAME = [x, y]` (one line) in the `[points]` table."""
+    """The span of `NAME = [x, y]` (one line) in the `[points]` table, and its kind."""
     table = None
     offset = 0
     for line in text.splitlines(keepends=True):
@@ -84,8 +221,7 @@ def _toml_span(text: str, point: str) -> tuple[int, int, str]:
             if m:
                 parts = [p for p in m.group(1)[1:-1].split(",") if p.strip()]
                 return offset + m.start(1), offset + m.end(1), "list2" if len(parts) == 2 else "other"
-            m = re.match(rf"\s*\"?{re.escape(point)}\"?\s*=\s*\{{", line)
-            if m:
+            if re.match(rf"\s*\"?{re.escape(point)}\"?\s*=\s*\{{", line):
                 return 0, 0, "mapping"
         offset += len(line)
     raise KinematikaError("usage", f"the point {point!r} is not written as `{point} = [x, y]` "
