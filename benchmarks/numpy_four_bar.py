@@ -45,8 +45,30 @@ def four_bar(theta: np.ndarray, w2: float = 10.0, a2: float = 0.0) -> dict[str, 
             "P": (px, py, vpx, vpy, apx, apy), "w3": w3, "w4": w4, "a3": al3, "a4": al4}
 
 
+def script(n: int) -> None:
+    """A whole process doing `kinematika sweep --json`'s work by hand: n positions of a crank
+    turn, every point's position, velocity and acceleration and every body's ω, α, as JSON on
+    standard output (the standard library's writer, as a script would)."""
+    import json
+    import sys
+
+    coordinate = np.linspace(0, 360, n)
+    out = four_bar(np.radians(90 + coordinate))
+    points = {name: {"position": np.column_stack(out[name][:2]).tolist(),
+                     "velocity": np.column_stack(out[name][2:4]).tolist(),
+                     "acceleration": np.column_stack(out[name][4:]).tolist()} for name in "ABP"}
+    bodies = {"coupler": {"omega": out["w3"].tolist(), "alpha": out["a3"].tolist()},
+              "rocker": {"omega": out["w4"].tolist(), "alpha": out["a4"].tolist()}}
+    sys.stdout.write(json.dumps({"coordinate": coordinate.tolist(), "bodies": bodies, "points": points}))
+
+
 if __name__ == "__main__":
+    import sys
     import timeit
+
+    if len(sys.argv) == 3 and sys.argv[1] == "json":
+        script(int(sys.argv[2]))
+        sys.exit()
 
     theta = np.radians(90 + np.linspace(0, 360, 3601))
     best = min(timeit.repeat(lambda: four_bar(theta), number=20, repeat=10)) / 20

@@ -17,8 +17,10 @@ from __future__ import annotations
 
 import argparse
 import os
+import statistics
 import subprocess
 import sys
+import tempfile
 import time
 import timeit
 from pathlib import Path
@@ -125,6 +127,77 @@ def scaling(sizes: list[int], repeat: int) -> list[tuple[int, float, float]]:
     return rows
 
 
+NEWTON = {"rssr_spatial_four_bar": -60.0, "hooke_joint": 360.0, "spherical_four_bar": 360.0}
+
+
+def newton_in_process(n: int, repeat: int, general_n: int) -> dict[str, tuple[float, float]]:
+    """Per position: the compiled Newton path (a prepared `Sweeper`, n positions) and the
+    general one (`general_n` positions, the compiled path switched off)."""
+    import kinematika.sweep.compiled as compiled
+    from kinematika.sweep.run import Sweeper
+
+    out = {}
+    for name, by in NEWTON.items():
+        sweeper = Sweeper(HERE.parent / "examples" / f"{name}.yaml")
+        fast = best(lambda: sweeper.run(by, n - 1), repeat) / n
+        saved = compiled.compiled_sweep
+        compiled.compiled_sweep = lambda *args: None
+        try:
+            general = best(lambda: sweeper.run(by, general_n - 1), 1) / general_n
+        finally:
+            compiled.compiled_sweep = saved
+        out[name] = (fast, general)
+    return out
+
+
+def median_wall(cmd: list[str], repeat: int) -> float:
+    """Median wall time of `repeat` runs after one warm-up run."""
+    times = []
+    for _ in range(repeat + 1):
+        start = time.perf_counter()
+        subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+        times.append(time.perf_counter() - start)
+    return statistics.median(times[1:])
+
+
+def wall_and_memory(cmd: list[str]) -> tuple[float, float]:
+    """Wall time (s) and peak memory (MB) of one process."""
+    start = time.perf_counter()
+    child = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(child.pid, 0)
+    if status:
+        raise RuntimeError(f"{cmd} failed")
+    return time.perf_counter() - start, usage.ru_maxrss / 1024
+
+
+def start_up_and_output(repeat: int, big_rows: int) -> dict[str, float]:
+    """Whole processes where users wait: start-up, one small instant, a sweep with --json
+    against a numpy script doing the same work, a very long sweep, large models."""
+    from chain import four_bar_chain
+    import yaml
+
+    py, kin = sys.executable, str(Path(sys.executable).parent / "kinematika")
+    four = str(MODELS["four_bar"])
+    out = {"python -c 'import numpy'": median_wall([py, "-c", "import numpy"], repeat),
+           "kinematika solve four_bar --json": median_wall(
+               [kin, "solve", str(HERE.parent / "examples" / "four_bar.yaml"), "--json"], repeat),
+           "numpy script, 3600 positions to JSON": median_wall(
+               [py, str(HERE / "numpy_four_bar.py"), "json", "3600"], repeat),
+           "kinematika sweep four_bar --steps 3599 --json": median_wall(
+               [kin, "sweep", four, "--steps", "3599", "--json"], repeat)}
+    if big_rows:
+        t, mb = wall_and_memory([kin, "sweep", four, "--steps", str(big_rows - 1), "--json"])
+        out[f"kinematika sweep four_bar --steps {big_rows - 1} --json"] = t
+        out[f"  (peak memory, MB)"] = mb
+    with tempfile.TemporaryDirectory() as folder:
+        for bodies in (1000, 10000):
+            path = Path(folder) / f"chain{bodies}.yaml"
+            path.write_text(yaml.safe_dump(four_bar_chain(bodies), sort_keys=False))
+            out[f"kinematika solve chain of {bodies} bodies --json"] = median_wall(
+                [kin, "solve", str(path), "--json"], max(1, repeat // 2))
+    return out
+
+
 def ms(t: float) -> str:
     return f"{t * 1e3:.3g} ms" if t < 1 else f"{t:.3g} s"
 
@@ -135,9 +208,30 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--mechanism-positions", type=int, default=360,
                         help="positions for `mechanism` (its time is scaled to --positions); 0 skips it")
+    parser.add_argument("--big-rows", type=int, default=360_000,
+                        help="rows of the long `sweep --json` run (0 skips it)")
     args = parser.parse_args()
     n = args.positions
     print(f"# kinematika benchmark: {n} positions per sweep, best of {args.repeat}\n")
+    print(f"load average at the start: {' '.join(f'{x:.1f}' for x in os.getloadavg())} "
+          f"({os.cpu_count()} cores)\n")
+    outputs = start_up_and_output(args.repeat, args.big_rows)
+    print("## Where users wait: whole processes (median wall time)\n")
+    print("| process | time | ratio |")
+    print("|---|---|---|")
+    floor = outputs["python -c 'import numpy'"]
+    script = outputs["numpy script, 3600 positions to JSON"]
+    for what, t in outputs.items():
+        if what.startswith("  ("):
+            print(f"| {what.strip()} | {t:.0f} MB | |")
+            continue
+        ratio = ""
+        if what.startswith("kinematika solve four_bar"):
+            ratio = f"{t / floor:.2f}× `import numpy`"
+        elif what.startswith("kinematika sweep four_bar --steps 3599"):
+            ratio = f"{t / script:.2f}× the numpy script"
+        print(f"| {what} | {ms(t)} | {ratio} |")
+    print()
     inner = in_process(n, args.repeat, args.mechanism_positions)
     print("## In process (one sweep: positions, velocities, accelerations of every point; ω, α of every body)\n")
     tools = ["kinematika", "kinematika run_sweep", "numpy closed form", "pylinkage+numba", "pylinkage", "mechanism"]
@@ -158,6 +252,14 @@ def main() -> None:
         if "mechanism" in row:
             parts.append(f"mechanism / kinematika = {row['mechanism'] / k:.0f}×")
         print(f"- {case}: " + "; ".join(parts))
+    newton = newton_in_process(n, args.repeat, min(n, 360))
+    closed = inner["four_bar"]["numpy closed form"] / n
+    print("\n## The Newton path (spatial linkages, in process, per position)\n")
+    print("| mechanism | compiled | general path | speed-up | compiled / numpy closed-form four-bar |")
+    print("|---|---|---|---|---|")
+    for name, (fast, general) in newton.items():
+        print(f"| {name} | {fast * 1e6:.3g} µs | {general * 1e6:.3g} µs | {general / fast:.0f}× | "
+              f"{fast / closed:.0f}× |")
     outer = whole_process(n, max(2, args.repeat // 2), args.mechanism_positions)
     print("\n## Whole process (start-up included; `mechanism` at --mechanism-positions)\n")
     tools = ["kinematika sweep", "kinematika sweep --json", "pylinkage+numba", "pylinkage", "mechanism"]

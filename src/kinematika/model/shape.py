@@ -39,36 +39,20 @@ class Record:
 
 
 # plain values -------------------------------------------------------------------------------
-def value(x: Any) -> Any:
-    """A number or an expression (StrictInt, StrictFloat or str: never a bool)."""
-    if type(x) in (int, float, str):
-        return x
-    raise _Refused
+def exact(*types: type) -> Check:
+    """A value of exactly one of `types` (never a subclass: a bool is not an int here)."""
+    def check(x: Any) -> Any:
+        if type(x) in types:
+            return x
+        raise _Refused
+    return check
 
 
-def text(x: Any) -> str:
-    if type(x) is str:
-        return x
-    raise _Refused
-
-
-def flag(x: Any) -> bool:
-    if type(x) is bool:
-        return x
-    raise _Refused
-
-
-def integer(x: Any) -> int:
-    if type(x) is int:
-        return x
-    raise _Refused
-
-
-def real(x: Any) -> Any:
-    """A number (StrictInt or StrictFloat: not a bool, not an expression)."""
-    if type(x) in (int, float):
-        return x
-    raise _Refused
+value = exact(int, float, str)      # a number or an expression (StrictInt, StrictFloat or str)
+text = exact(str)
+flag = exact(bool)
+integer = exact(int)
+real = exact(int, float)            # a number (StrictInt or StrictFloat: not an expression)
 
 
 def vector(x: Any) -> list:

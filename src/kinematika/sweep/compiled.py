@@ -180,19 +180,11 @@ class CompiledNewton:
         if len(self.perp0):
             tr = self.turn
             p = np.einsum("mkij,kj->mki", rot_f[:, tr.a], self.perp0)
-            rows = base + np.arange(len(tr.a))
-            for sign, body in ((1.0, tr.b), (-1.0, tr.a)):
-                for i in range(3):
-                    a[:, rows, col(body) + i] += sign * p[:, :, i]
-            base += len(tr.a)
+            base = _relative_rotation_rows(a, base, tr, p, col)
         if len(self.drive_axis0):
             dr = self.drive
             e = np.einsum("mkij,kj->mki", rot_f[:, dr.a], self.drive_axis0)
-            rows = base + np.arange(len(dr.a))
-            for sign, body in ((1.0, dr.b), (-1.0, dr.a)):
-                for i in range(3):
-                    a[:, rows, col(body) + i] += sign * e[:, :, i]
-            base += len(dr.a)
+            base = _relative_rotation_rows(a, base, dr, e, col)
         for k_, body in enumerate(self.idle_body):
             ab = self._idle_ab(rot_f, t_f, k_)
             for i in range(3):
@@ -368,6 +360,15 @@ class CompiledNewton:
         if len(self.idle_body):
             known.append(np.zeros((n_rows, len(self.idle_body))))
         return -np.concatenate(known, axis=1)[:, self.keep]
+
+
+def _relative_rotation_rows(a: np.ndarray, base: int, pairs: _Pairs, e: np.ndarray, col) -> int:
+    """Rows (ω_b − ω_a)·e from row `base` on (e: (M, K, 3)); the next free row."""
+    rows = base + np.arange(len(pairs.a))
+    for sign, body in ((1.0, pairs.b), (-1.0, pairs.a)):
+        for i in range(3):
+            a[:, rows, col(body) + i] += sign * e[:, :, i]
+    return base + len(pairs.a)
 
 
 def _pair_axes(axes: np.ndarray) -> np.ndarray:
