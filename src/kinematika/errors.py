@@ -1,21 +1,28 @@
 """The one error type users see: a kind from the contract, a message and a place."""
 from __future__ import annotations
 
+from .limits import MESSAGE_CHARS, WHERE_CHARS
+from .text import clip_middle, shown
+
 KINDS = ("syntax", "schema", "geometry", "mobility", "singular", "assembly",
          "output",     # an extension: a result file that cannot be written
-         "usage")      # an extension: a command-line option the command does not accept
+         "usage",      # an extension: a command-line option the command does not accept
+         "limit")      # an extension: valid work beyond a documented limit (symbolic time)
 
 
 class KinematikaError(Exception):
     """A problem with the user's model, reported as one line, never a traceback.
 
     `kind` is one of the contract's error kinds; `where` names the place in the model
-    (``joints[2] (j3)``, ``points.A``) or is empty when the whole model is concerned.
+    (``joints[2] (j3)``, ``points.A``) or is empty when the whole model is concerned. Both
+    are one printable line (control characters escaped) of bounded length.
     """
 
     def __init__(self, kind: str, message: str, where: str = "") -> None:
         if kind not in KINDS:
             raise ValueError(f"unknown error kind {kind!r}")
+        message = shown(message, MESSAGE_CHARS)
+        where = clip_middle(shown(where), WHERE_CHARS)
         super().__init__(message)
         self.kind = kind
         self.message = message

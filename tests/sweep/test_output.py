@@ -105,8 +105,8 @@ def test_cli_errors_are_one_line_with_status_2(tmp_path):
     assert json.loads(out.stdout)["error"]["kind"] == "assembly"
     out = runner.invoke(app, ["sweep", model, "--joint", "j2", "--json"])
     assert json.loads(out.stdout)["error"] == {
-        "kind": "schema", "message": "joint 'j2' is not driven; a sweep advances a driven joint: j1",
-        "where": "sweep.joint"}
+        "kind": "usage", "message": "joint 'j2' is not driven; a sweep advances a driven joint: j1",
+        "where": "--joint"}
     out = runner.invoke(app, ["sweep", model, "--steps", "36", "--skip-bad", "--json"])
     assert out.exit_code == 0 and None in json.loads(out.stdout)["bodies"]["rocker"]["omega"]
 

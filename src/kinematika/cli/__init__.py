@@ -13,6 +13,9 @@ from typing import Any
 def main() -> None:
     """Run the command line; a mistake in its options is one line (or the JSON error with
     `--json`) and exit status 2, like every other user error."""
+    for stream in (sys.stdout, sys.stderr):      # a terminal that cannot show a character
+        if hasattr(stream, "reconfigure"):        # gets an escape, never an encoding error
+            stream.reconfigure(errors="backslashreplace")
     from . import fast
 
     call = fast.parse(sys.argv[1:])
@@ -78,12 +81,14 @@ def _typer_main() -> None:
 
 def _usage_error(err) -> None:
     """Report a command-line usage error in the contract's shape and exit with its status."""
+    from ..limits import MESSAGE_CHARS
+    from ..text import shown
     from .shared import print_json
 
     param = getattr(err, "param", None)
     where = getattr(err, "param_hint", None) or (param.opts[0] if getattr(param, "opts", None) else "")
-    where = where if isinstance(where, str) else " / ".join(where)
-    message = " ".join(err.format_message().split())
+    where = shown(where if isinstance(where, str) else " / ".join(where), 60)
+    message = shown(" ".join(err.format_message().split()), MESSAGE_CHARS)
     if not message:                   # `kinematika` alone: the help has been shown
         sys.exit(err.exit_code)
     if "--json" in sys.argv[1:]:

@@ -6,7 +6,9 @@ from typing import Optional
 
 import typer
 
-from .app import ModelArg, app, guarded, output_file
+from ..text import shown
+from .app import ModelArg, app
+from .shared import guarded, options_named, output_file, sweep_options, writing
 
 VIEWS = ("iso", "top", "front", "side")
 
@@ -74,11 +76,13 @@ def draw(
         options = DrawOptions(velocities=velocities, accelerations=accelerations, centres=centres,
                               curvature=curvature, labels=labels, points=_names(points), view=view,
                               width=width)
-        draw_figure(_model(model, assignments), output_file(output, "-o"), options)
+        target = output_file(output, "-o")
+        with writing(target, "-o"):
+            draw_figure(_model(model, assignments), target, options)
         return output
 
     guarded(False, work)
-    print(f"wrote {output}")
+    print(f"wrote {shown(output)}")
 
 
 @app.command()
@@ -111,9 +115,11 @@ def animate(
         from ..draw.animation import animate as render
 
         options = DrawOptions(velocities=velocities, accelerations=accelerations, width=width)
-        return render(_model(model, assignments), output_file(output, "-o"), joint=joint, by=by,
-                      steps=steps, frames=frames, fps=fps, options=options, trace=_names(trace),
-                      skip_bad=skip_bad, progress=True)
+        target = output_file(output, "-o")
+        with writing(target, "-o"), options_named(sweep_options(joint, by, steps)):
+            return render(_model(model, assignments), target, joint=joint, by=by, steps=steps,
+                          frames=frames, fps=fps, options=options, trace=_names(trace),
+                          skip_bad=skip_bad, progress=True)
 
     guarded(False, work)
-    print(f"wrote {output}")
+    print(f"wrote {shown(output)}")

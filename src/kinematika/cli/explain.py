@@ -6,7 +6,8 @@ from typing import Optional
 
 import typer
 
-from .app import ModelArg, SymbolicOpt, app, guarded, output_file
+from .app import ModelArg, SymbolicOpt, app
+from .shared import guarded, output_file, writing
 
 LangOpt = typer.Option("en", "--lang", help="language: en, es, ca or eu")
 FormatOpt = typer.Option("md", "--format", help="md, html (one self-contained page) or tex")
@@ -25,4 +26,10 @@ def explain(model: Path = ModelArg, lang: str = LangOpt, fmt: str = FormatOpt,
     if output is None:
         typer.echo(text, nl=False)
         return
-    guarded(False, lambda: output_file(output, "-o").write_text(text, encoding="utf-8"))
+
+    def write_file() -> None:
+        target = output_file(output, "-o")
+        with writing(target, "-o"):
+            target.write_text(text, encoding="utf-8")
+
+    guarded(False, write_file)

@@ -8,7 +8,8 @@ from pathlib import Path
 from typing import Optional
 
 from ..errors import KinematikaError
-from .shared import guarded, output_file, respond, write_stdout
+from ..text import shown
+from .shared import guarded, options_named, output_file, respond, sweep_options, write_stdout, writing
 
 SWEEP_FORMATS = ("json", "csv", "npz", "parquet")
 
@@ -41,10 +42,13 @@ def sweep_command(model: Path, joint: Optional[str] = None, by: Optional[float] 
     from ..commands import sweep_run
 
     kind = guarded(as_json, lambda: _format(output, fmt))
-    sweeper, result = guarded(as_json, lambda: sweep_run(model, joint, by, steps, skip_bad,
-                                                         progress=not as_json))
+    def run():
+        with options_named(sweep_options(joint, by, steps)):
+            return sweep_run(model, joint, by, steps, skip_bad, progress=not as_json)
+
+    sweeper, result = guarded(as_json, run)
     if csv is not None:
-        guarded(as_json, lambda: result.to_csv(output_file(csv, "--csv")))
+        guarded(as_json, lambda: _write(result, csv, "csv", "--csv"))
     if output is not None:
         guarded(as_json, lambda: _write(result, output, kind))
     if plot is not None:
@@ -63,7 +67,7 @@ def sweep_command(model: Path, joint: Optional[str] = None, by: Optional[float] 
         lines.append(f"{'' if csv is not None else chr(10)}wrote {len(result)} rows to {output} ({kind})")
     if plot is not None:
         lines.append(f"drew {plot}")
-    print("\n".join(lines))
+    print("\n".join(shown(line) for line in lines))
 
 
 def _format(output: Optional[Path], fmt: Optional[str]) -> Optional[str]:
@@ -80,20 +84,23 @@ def _format(output: Optional[Path], fmt: Optional[str]) -> Optional[str]:
     return kind
 
 
-def _write(result, path: Path, kind: str) -> None:
-    path = output_file(path, "-o")
-    if kind == "json":
-        with open(path, "wb") as f:
-            f.writelines(result.json_chunks())
-            f.write(b"\n")
-    else:
-        {"csv": result.to_csv, "npz": result.to_npz, "parquet": result.to_parquet}[kind](path)
+def _write(result, path: Path, kind: str, option: str = "-o") -> None:
+    path = output_file(path, option)
+    with writing(path, option):
+        if kind == "json":
+            with open(path, "wb") as f:
+                f.writelines(result.json_chunks())
+                f.write(b"\n")
+        else:
+            {"csv": result.to_csv, "npz": result.to_npz, "parquet": result.to_parquet}[kind](path)
 
 
 def _plot(result, path: Path, model) -> None:
     from ..draw.plots import plot_sweep
 
-    plot_sweep(result, output_file(path, "--plot"), model)
+    path = output_file(path, "--plot")
+    with writing(path, "--plot"):
+        plot_sweep(result, path, model)
 
 
 def flush_and_leave(code: int = 0) -> None:

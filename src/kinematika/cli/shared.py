@@ -5,15 +5,22 @@ from __future__ import annotations
 
 import os
 import sys
+from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Callable, NoReturn
+from typing import Any, Callable, Iterator, NoReturn
 
 from ..errors import KinematikaError
+from ..limits import MESSAGE_CHARS
 from ..report.json_text import json_bytes
+from ..text import shown
 
 
 def fail(err: KinematikaError, as_json: bool) -> NoReturn:
-    """Report a user error in one line (or the contract's JSON) and exit with status 2."""
+    """Report a user error in one line (or the contract's JSON) and exit with status 2.
+    An error whose place is a command-line option (`--lang`, `--set w`) is a `usage` error,
+    whichever part of the program found it: one kind of mistake, one kind of error."""
+    if err.where.startswith("-") and err.kind not in ("usage", "output"):
+        err = KinematikaError("usage", err.message, err.where)
     if as_json:
         print_json(err.as_json())
     else:
@@ -28,19 +35,52 @@ def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
     except KinematikaError as err:
         fail(err, as_json)
     except OSError as err:            # reading is checked where models are read: this is writing
-        name = err.filename or ""
-        fail(KinematikaError("output", f"cannot write {name}: {err.strerror or err}", str(name)),
-             as_json)
+        fail(_write_error(err.filename or "the output file", err), as_json)
+    except MemoryError:
+        fail(KinematikaError("limit", "the work needs more memory than this machine gives; make "
+                             "the model or the sweep smaller"), as_json)
     except Exception as err:  # noqa: BLE001 - never show users a traceback
         if os.environ.get("KINEMATIKA_DEBUG"):
             raise
-        message = f"internal error ({type(err).__name__}: {err}); rerun with KINEMATIKA_DEBUG=1 " \
-                  "and report it"
+        detail = shown(f"{type(err).__name__}: {err}", MESSAGE_CHARS - 80)
+        message = f"internal error ({detail}); rerun with KINEMATIKA_DEBUG=1 and report it"
         if as_json:
             print_json({"error": {"kind": "internal", "message": message, "where": ""}})
         else:
             print(f"error: {message}", file=sys.stderr)
         sys.exit(1)
+
+
+def _write_error(path: Any, err: OSError, option: str = "") -> KinematikaError:
+    return KinematikaError("output", f"cannot write {shown(path)}: {err.strerror or err}", option)
+
+
+@contextmanager
+def writing(path: Path, option: str) -> Iterator[None]:
+    """Writing `path` (given by `option`): a failure (a full disk, no permission) is an
+    `output` error naming the file."""
+    try:
+        yield
+    except OSError as err:
+        raise _write_error(path, err, option) from None
+
+
+@contextmanager
+def options_named(given: dict[str, tuple[str, Any]]) -> Iterator[None]:
+    """Errors found in a value that came from the command line name its option: `given`
+    maps a model place (``sweep.joint``) to the option that set it and its value."""
+    try:
+        yield
+    except KinematikaError as err:
+        option, value = given.get(err.where, (None, None))
+        if option is None or value is None:
+            raise
+        raise KinematikaError("usage", err.message, option) from None
+
+
+def sweep_options(joint: Any, by: Any, steps: Any) -> dict:
+    """The places in a model that a sweep's options override, with the options."""
+    return {"sweep.joint": ("--joint", joint), "sweep.by": ("--by", by), "sweep.steps": ("--steps", steps)}
 
 
 def output_file(path: Path, option: str) -> Path:

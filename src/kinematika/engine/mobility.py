@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import KinematikaError
+from ..text import names
 
 SINGULAR_CONDITION = 1e10
 
@@ -70,15 +71,14 @@ def underdetermined_error(scaled: np.ndarray, is_driver: np.ndarray, labels: lis
         verb = "depends" if len(dependent) == 1 else "depend"
         return KinematikaError(
             "singular",
-            f"the drivers do not fix the motion in this configuration (a dead point): "
-            f"{', '.join(dependent) or 'the drivers'} {verb} on the joints here; the dimensionless "
-            f"constraint Jacobian has condition number {_fmt(diag.condition_number)} "
-            f"(limit {SINGULAR_CONDITION:.0e})", "drivers")
+            f"a dead point: the drivers do not fix the motion here; {names(dependent, 3) or 'the drivers'} "
+            f"{verb} on the joints (condition number {_fmt(diag.condition_number)} of the "
+            f"dimensionless Jacobian, limit {SINGULAR_CONDITION:.0e})", "drivers")
     return KinematikaError(
         "mobility",
         f"the mechanism has {_plural(diag.dof, 'degree')} of freedom but the drivers give "
         f"{_plural(diag.conditions, 'independent condition')}; left free: "
-        f"{', '.join(free) or 'some motion'}", "drivers")
+        f"{names(free, 6) or 'some motion'}", "drivers")
 
 
 def conflict_error(residual: np.ndarray, labels: list[str], wheres: list[str],
@@ -92,10 +92,9 @@ def conflict_error(residual: np.ndarray, labels: list[str], wheres: list[str],
     given = int(is_driver.sum())
     return KinematikaError(
         "mobility",
-        f"the drivers conflict with each other or with the joints: {'; '.join(named[:4])}. The "
-        f"mechanism has {_plural(diag.dof, 'degree')} of freedom; the drivers give "
-        f"{_plural(given, 'condition')}, {diag.conditions} independent of the joints, and their "
-        "values do not agree", "drivers")
+        f"the drivers conflict, their values do not agree with each other or the joints: "
+        f"{'; '.join(named[:3])} ({_plural(diag.dof, 'degree')} of freedom; "
+        f"{_plural(given, 'driver condition')}, {diag.conditions} independent)", "drivers")
 
 
 def _unique(items: Any) -> list[str]:

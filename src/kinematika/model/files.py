@@ -1,22 +1,30 @@
 """Reading model files: YAML, TOML or JSON into one tree, with unreadable files reported.
 
-A model file is untrusted input: a repeated key (which YAML and JSON readers would let the
-last one win silently), nesting deep enough to exhaust the parser's recursion, integers too
-long to convert and oversized files are `syntax` errors, never a wrong model or a crash.
+A model file is untrusted input. Whatever the path is (a link to /dev/zero, a FIFO, a
+folder) at most `limits.FILE_BYTES` are read, without blocking; a repeated key (which
+YAML and JSON readers would let the last one win silently), nesting deeper than
+`limits.NESTING`, YAML aliases that expand beyond `limits.ALIAS_NODES` values, integers too
+long to convert and text that is not Unicode are `syntax` errors, never a wrong model, a
+hang or a crash. YAML is read by libyaml's C parser when PyYAML has it.
 """
 from __future__ import annotations
 
 import json
+import os
+import select
+import stat
+import time
 import tomllib
 from pathlib import Path
 from typing import Any
 
+from .. import limits
 from ..errors import KinematikaError
+from ..text import brief
 from .build import build_model
 from .model import Model
 
 FORMATS = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
-MAX_BYTES = 5_000_000      # a model is a few kilobytes; anything this large is not one
 
 
 def read_tree(path: str | Path) -> Any:
@@ -29,17 +37,14 @@ def read_tree(path: str | Path) -> Any:
     kind = FORMATS.get(path.suffix.lower())
     if kind is None:
         known = ", ".join(FORMATS)
-        raise KinematikaError("syntax", f"unknown file type {path.suffix or '(none)'!r}: "
+        raise KinematikaError("syntax", f"unknown file type {brief(path.suffix or '(none)', 20)}: "
                               f"a model file ends in {known}", where)
+    data = read_bytes(path, where)
     try:
-        if path.stat().st_size > MAX_BYTES:
-            raise KinematikaError("syntax", f"the file is too large for a model "
-                                  f"({path.stat().st_size} bytes; at most {MAX_BYTES})", where)
-        text = path.read_text(encoding="utf-8-sig")
-    except FileNotFoundError:
-        raise KinematikaError("syntax", f"no such file: {path}", where) from None
-    except (OSError, UnicodeDecodeError) as err:
-        raise KinematikaError("syntax", f"cannot read {path}: {err}", where) from None
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as err:
+        raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})",
+                              where) from None
     if not text.strip() or (kind == "yaml" and _only_comments(text)):
         raise KinematikaError("syntax", "the file is empty", where)
     tree = parse_text(text, kind, where)
@@ -47,6 +52,64 @@ def read_tree(path: str | Path) -> Any:
         raise KinematikaError("schema", f"a model is a mapping with keys points, bodies, joints, "
                               f"drivers; this file holds {_kind_of(tree)}", where)
     return tree
+
+
+def read_bytes(path: Path, where: str) -> bytes:
+    """At most `limits.FILE_BYTES` of the file, never blocking on a FIFO or a device and
+    never trusting the size it reports (/dev/zero says 0 and never ends)."""
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0)
+    try:
+        fd = os.open(path, flags)
+    except FileNotFoundError:
+        raise KinematikaError("syntax", "no such file", where) from None
+    except OSError as err:
+        raise KinematikaError("syntax", f"cannot read the file: {err.strerror or err}", where) from None
+    try:
+        mode = os.fstat(fd).st_mode
+        if stat.S_ISDIR(mode):
+            raise KinematikaError("syntax", "this is a folder, not a model file", where)
+        chunks = _read_regular(fd) if stat.S_ISREG(mode) else _read_stream(fd, where)
+    except OSError as err:
+        raise KinematikaError("syntax", f"cannot read the file: {err.strerror or err}", where) from None
+    finally:
+        os.close(fd)
+    data = b"".join(chunks)
+    if len(data) > limits.FILE_BYTES:
+        raise KinematikaError("syntax", f"the file is too large for a model (more than "
+                              f"{limits.FILE_BYTES} bytes)", where)
+    return data
+
+
+def _read_regular(fd: int) -> list[bytes]:
+    chunks, size = [], 0
+    while size <= limits.FILE_BYTES:
+        chunk = os.read(fd, min(1 << 20, limits.FILE_BYTES + 1 - size))
+        if not chunk:
+            break
+        chunks.append(chunk)
+        size += len(chunk)
+    return chunks
+
+
+def _read_stream(fd: int, where: str) -> list[bytes]:
+    """A pipe, socket or device, read as it comes until its end, the size limit or the
+    time limit (a FIFO nobody writes to, a terminal)."""
+    chunks, size = [], 0
+    deadline = time.monotonic() + limits.READ_SECONDS
+    while size <= limits.FILE_BYTES:
+        left = deadline - time.monotonic()
+        if left <= 0 or not select.select([fd], [], [], left)[0]:
+            raise KinematikaError("syntax", f"the file gave no end within {limits.READ_SECONDS:g} s "
+                                  "(a pipe or a device, not a model file)", where)
+        try:
+            chunk = os.read(fd, min(1 << 20, limits.FILE_BYTES + 1 - size))
+        except BlockingIOError:       # woken without data: wait again, within the time limit
+            continue
+        if not chunk:
+            break
+        chunks.append(chunk)
+        size += len(chunk)
+    return chunks
 
 
 def _kind_of(tree: Any) -> str:
@@ -58,19 +121,60 @@ def _only_comments(text: str) -> bool:
 
 
 def parse_text(text: str, kind: str, where: str = "") -> Any:
-    """Plain data from a model's text in `kind` ('yaml', 'toml' or 'json')."""
+    """Plain data from a model's text in `kind` ('yaml', 'toml' or 'json'), within the
+    limits on nesting and aliases, its strings valid Unicode."""
     readers = {"json": _json, "toml": _toml, "yaml": _yaml}
+    if len(text) > limits.FILE_BYTES:
+        raise KinematikaError("syntax", f"the text is too large for a model (more than "
+                              f"{limits.FILE_BYTES} characters)", where)
     try:
-        return readers[kind](text, where)
+        tree = readers[kind](text, where)
     except RecursionError:
-        raise KinematikaError("syntax", "the file is nested too deeply to be a model", where) from None
+        raise _too_deep(where) from None
     except ValueError as err:       # e.g. an integer literal of thousands of digits
         raise KinematikaError("syntax", f"unreadable {kind.upper()}: {err}", where) from None
+    check_tree(tree, where)
+    return tree
+
+
+def _too_deep(where: str, line: int | None = None) -> KinematikaError:
+    at = f", line {line}" if line else ""
+    return KinematikaError("syntax", f"the file is nested too deeply to be a model (more than "
+                           f"{limits.NESTING} levels{at})", where)
+
+
+def check_tree(tree: Any, where: str = "") -> None:
+    """A parsed tree within the nesting limit, its texts encodable (no lone surrogates from
+    a JSON or YAML escape such as \\ud800): walked without recursion."""
+    stack = [(tree, 0)]
+    while stack:
+        node, depth = stack.pop()
+        if isinstance(node, str):
+            if not node.isascii():
+                _check_unicode(node, where)
+            continue
+        if isinstance(node, dict):
+            children = [*node.keys(), *node.values()]
+        elif isinstance(node, list):
+            children = node
+        else:
+            continue
+        if depth >= limits.NESTING:
+            raise _too_deep(where)
+        stack.extend((child, depth + 1) for child in children)
+
+
+def _check_unicode(text: str, where: str) -> None:
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError as err:
+        raise KinematikaError("syntax", f"the text {brief(text, 30)} holds a lone surrogate, "
+                              "which is not Unicode text", where) from None
 
 
 def _duplicate(key: Any, where: str, line: int | None = None) -> KinematikaError:
     at = f" at line {line}" if line else ""
-    return KinematikaError("syntax", f"duplicate key {key!r}{at}: each key may appear only once",
+    return KinematikaError("syntax", f"duplicate key {brief(key)}{at}: each key may appear only once",
                            where)
 
 
@@ -100,8 +204,10 @@ def _toml(text: str, where: str) -> Any:
 def _yaml(text: str, where: str) -> Any:
     import yaml
 
+    loader = _unique_key_loader(yaml, where)
     try:
-        return yaml.load(text, Loader=_unique_key_loader(yaml, where))
+        _check_events(yaml, text, loader, where)
+        return yaml.load(text, Loader=loader)
     except yaml.YAMLError as err:
         mark = getattr(err, "problem_mark", None)
         problem = getattr(err, "problem", None) or "unreadable"
@@ -109,10 +215,57 @@ def _yaml(text: str, where: str) -> Any:
         raise KinematikaError("syntax", f"invalid YAML{at}: {problem}", where) from None
 
 
-def _unique_key_loader(yaml: Any, where: str) -> type:
-    """yaml.SafeLoader that refuses a key repeated in one mapping."""
+def _check_events(yaml: Any, text: str, loader: type, where: str) -> None:
+    """Nesting and alias expansion measured on the parser's events, before any tree is
+    built: libyaml's composer recurses in C (deep nesting would crash the process), and
+    a billion-laughs file expands a few hundred bytes into billions of values."""
+    events = yaml.events
+    sizes: dict[str, tuple[int, int]] = {}    # anchor: (values, depth) of what it names
+    stack: list[list] = []                    # open collections: [anchor, values, depth below]
+    added = 0                                 # values the aliases add
 
-    class Loader(yaml.SafeLoader):
+    def close(anchor: str | None, count: int, below: int, line: int) -> None:
+        if anchor is not None:
+            sizes[anchor] = (count, below)
+        if stack:
+            parent = stack[-1]
+            parent[1] += count
+            parent[2] = max(parent[2], below + 1)
+            if len(stack) + below > limits.NESTING:
+                raise _too_deep(where, line)
+
+    for event in yaml.parse(text, Loader=loader):
+        line = event.start_mark.line + 1 if event.start_mark else None
+        if isinstance(event, (events.SequenceStartEvent, events.MappingStartEvent)):
+            if len(stack) >= limits.NESTING:
+                raise _too_deep(where, line)
+            stack.append([event.anchor, 1, 0])
+        elif isinstance(event, events.CollectionEndEvent):
+            anchor, count, below = stack.pop()
+            close(anchor, count, below, line)
+        elif isinstance(event, events.ScalarEvent):
+            close(event.anchor, 1, 0, line)
+        elif isinstance(event, events.AliasEvent):
+            if event.anchor not in sizes:
+                inside = any(frame[0] == event.anchor for frame in stack)
+                raise KinematikaError("syntax", f"the alias *{brief(event.anchor, 30)[1:-1]} at line "
+                                      f"{line} {'is inside what it names' if inside else 'names no anchor'}",
+                                      where)
+            count, below = sizes[event.anchor]
+            added += count - 1
+            if added > limits.ALIAS_NODES:
+                raise KinematikaError("syntax", f"the aliases expand to more than "
+                                      f"{limits.ALIAS_NODES} values (at line {line}): too many "
+                                      "for a model", where)
+            close(None, count, below, line)
+
+
+def _unique_key_loader(yaml: Any, where: str) -> type:
+    """PyYAML's safe loader (libyaml's C parser when available) that refuses a key
+    repeated in one mapping."""
+    base = getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader
+
+    class Loader(base):
         def construct_mapping(self, node: Any, deep: bool = False) -> dict:
             seen: set = set()
             for key_node, _ in node.value:

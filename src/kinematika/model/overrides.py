@@ -38,5 +38,9 @@ def with_parameters(model: Model, values: dict[str, str]) -> Model:
             expr = parse(text)
         except ExpressionError as err:
             raise KinematikaError("schema", str(err), f"--set {name}") from None
+        unknown = sorted(expr.names() - set(params) - {"pi"})
+        if unknown:
+            raise KinematikaError("schema", f"unknown name {unknown[0]!r} in {text!r} (parameters: "
+                                  f"{', '.join(params) or 'none'})", f"--set {name}")
         params[name] = Parameter(name, expr, params[name].positive)
     return dataclasses.replace(model, parameters=params)

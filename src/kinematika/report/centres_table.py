@@ -7,8 +7,10 @@ from rich.console import Console
 from rich.table import Table
 
 from ..errors import KinematikaError
+from ..limits import NAME_CHARS
 from ..questions.centres import all_centres
 from ..solution import Solution
+from ..text import markup
 from .tables import show
 from .values import plain
 
@@ -28,7 +30,7 @@ def centres_data(sol: Solution) -> dict[str, Any]:
 
 def print_centres(data: dict[str, Any], console: Console | None = None) -> None:
     console = console or Console()
-    table = Table(title=f"Instant centres — {data['name']}", title_justify="left")
+    table = Table(title=f"Instant centres — {markup(data['name'], NAME_CHARS)}", title_justify="left")
     for col in ("bodies", "centre", "found"):
         table.add_column(col)
     for row in data["centres"]:
@@ -39,5 +41,5 @@ def print_centres(data: dict[str, Any], console: Console | None = None) -> None:
         else:
             where = show(row["point"])
         how = HOW[row["how"]].format(" and ".join(row["via"]))
-        table.add_row(" – ".join(row["bodies"]), where, how)
+        table.add_row(markup(" – ".join(row["bodies"])), markup(where), markup(how))
     console.print(table)

@@ -1,10 +1,16 @@
-"""Human-readable answers in the terminal (rich tables)."""
+"""Human-readable answers in the terminal (rich tables).
+
+Names and formulas are printed as written: control characters escaped, rich markup not
+read (`text.markup`)."""
 from __future__ import annotations
 
 from typing import Any
 
 from rich.console import Console
 from rich.table import Table
+
+from ..limits import NAME_CHARS
+from ..text import markup
 
 
 def show(value: Any) -> str:
@@ -30,24 +36,24 @@ def print_solution(data: dict, console: Console | None = None) -> None:
     """Bodies, points and the answers to the questions, as tables."""
     console = console or Console()
     mode = "exact formulas" if data["symbolic"] else "numbers"
-    console.print(f"[bold]{data['name']}[/bold]  ({data['dimension']}D, {data['dof']} degree"
+    console.print(f"[bold]{markup(data['name'], NAME_CHARS)}[/bold]  ({data['dimension']}D, {data['dof']} degree"
                   f"{'s' if data['dof'] != 1 else ''} of freedom, {mode})")
     bodies = Table(title="Bodies (relative to the ground)", title_justify="left")
     for col in ("body", "ω", "α"):
         bodies.add_column(col)
     for name, b in data["bodies"].items():
-        bodies.add_row(name, show(b["omega"]), show(b["alpha"]))
+        bodies.add_row(markup(name), markup(show(b["omega"])), markup(show(b["alpha"])))
     console.print(bodies)
     points = Table(title="Points (relative to the ground)", title_justify="left")
     for col in ("point", "position", "velocity", "acceleration"):
         points.add_column(col)
     for name, p in data["points"].items():
-        points.add_row(name, show(p["position"]), show(p["velocity"]), show(p["acceleration"]))
+        points.add_row(markup(name), *(markup(show(p[k])) for k in ("position", "velocity", "acceleration")))
     console.print(points)
     answers = Table(title="Answers", title_justify="left")
     answers.add_column("question")
     answers.add_column("answer")
     for entry in data["answers"]:
-        answers.add_row(ask_text(entry["ask"]), show(entry["value"]))
+        answers.add_row(markup(ask_text(entry["ask"])), markup(show(entry["value"])))
     console.print(answers)
 

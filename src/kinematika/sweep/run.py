@@ -190,15 +190,14 @@ def _as_model(source: Any) -> Model:
 def bad_row(plan: Plan, k: int, kind: str, what: str = "") -> KinematikaError:
     """The error for row k: `assembly` (cannot be assembled), `singular` (dead point), or
     `mobility` (assembled, but the drivers as written contradict the moved joints)."""
-    at = f"increment {k} ({plan.joint.id} = {plan.coordinate[k]:.6g} {plan.unit} from the drawn position)"
+    at = f"increment {k} ({plan.joint.id} = {plan.coordinate[k]:.6g} {plan.unit})"
     if kind == "mobility":
-        return KinematikaError(kind, f"the drivers as written contradict the joints at {at}: a driver "
-                               "given as a vector in the ground axes (a 3D angular velocity, a "
-                               "velocity) stays fixed while the mechanism turns; drive the joint's "
-                               "rate instead (`{joint: ID, rate: ...}`)", "sweep")
+        return KinematikaError(kind, f"the drivers as written contradict the joints at {at}: a vector "
+                               "driver (3D ω, a velocity) stays fixed in the ground axes as the "
+                               "mechanism turns; drive the joint's rate instead", "sweep")
     if kind == "singular":
-        message = (f"the configuration at {at} is singular for the drivers (a dead point): the "
-                   "dimensionless constraint Jacobian has condition number above 1e+10")
+        message = (f"the configuration at {at} is singular for the drivers (a dead point: "
+                   "condition number above 1e+10)")
     else:
         message = f"the mechanism cannot be assembled at {at}"
     if what:

@@ -1,0 +1,47 @@
+"""Every limit kinematika puts on untrusted input, decided once, here.
+
+A model file is untrusted input (files pasted from the web, handed in by students, sent by
+a browser): whatever it holds, the tool answers or says what is wrong in one line, quickly
+and in bounded memory. Each limit below is far above anything a real mechanism needs (the
+README and docs/model-format.md list them); what goes beyond is refused with an error that
+names the limit, never a hang, a crash or a silently different model.
+"""
+from __future__ import annotations
+
+import os
+
+# reading a model --------------------------------------------------------------------------
+FILE_BYTES = 5_000_000       # a model is a few kilobytes; read at most this, whatever the file claims
+READ_SECONDS = 5.0           # a pipe or a terminal that gives no end of file within this is refused
+NESTING = 64                 # levels of lists and mappings (a model uses 4 to 6)
+ALIAS_NODES = 100_000        # values that YAML aliases may add to a file (a "billion laughs" adds 10⁹)
+NAME_CHARS = 200             # a name of a point, body, joint, parameter or of the model
+
+# expressions ------------------------------------------------------------------------------
+EXPRESSION_CHARS = 2000      # characters of one expression
+EXPRESSION_DEPTH = 60        # nesting of operations and calls in one expression
+EXPONENT = 1000              # |y| in x**y when y is a number
+EXACT_DIGITS = 60            # decimal digits of an exact number (numerator or denominator) in
+                             # symbolic work: 1e-200 written in a symbolic model is refused
+DEGREE = 60                  # degree of a formula in the symbols (r**1000, (w + 1)**100**2)
+
+# sweeps -----------------------------------------------------------------------------------
+SWEEP_STEPS = 10_000_000     # increments of one sweep
+SWEEP_VALUES = 20_000_000    # rows × numbers per row held at once (about 1 GB with the answer's text)
+
+# symbolic work ----------------------------------------------------------------------------
+SYMBOLIC_SECONDS = 15.0      # wall-clock time for exact formulas (KINEMATIKA_SYMBOLIC_SECONDS overrides)
+
+# messages ---------------------------------------------------------------------------------
+MESSAGE_CHARS = 200          # an error message is one line, cut beyond this (with …)
+WHERE_CHARS = 120            # an error's place (a file path, `joints[2] (j3)`) likewise
+
+
+def symbolic_seconds() -> float:
+    """The time budget of symbolic work: `SYMBOLIC_SECONDS`, or the environment's override."""
+    raw = os.environ.get("KINEMATIKA_SYMBOLIC_SECONDS", "")
+    try:
+        value = float(raw)
+    except ValueError:
+        return SYMBOLIC_SECONDS
+    return value if value > 0 else SYMBOLIC_SECONDS
