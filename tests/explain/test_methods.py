@@ -12,7 +12,7 @@ from kinematika.explain.document import Derived, Section
 
 from .helpers import explained, num
 
-SIX = ["seed_c5_1_4_epicyclic", "quick_return", "seed_c5_2_1_tricycle", "tractor_trailer"]
+SIX = ["seed_c5_1_4_epicyclic", "quick_return", "seed_c5_2_1_tricycle", "tractor_trailer", "triad_six_bar"]
 
 
 def section_blocks(doc, title_key: str) -> list:
@@ -78,3 +78,44 @@ def test_tractor_trailer_against_the_construction():
     assert rates["front"] == pytest.approx(w_t, rel=1e-9)
     assert sol.omega("trailer") == pytest.approx(w_r, rel=1e-9)
     assert w_t == pytest.approx(2 * math.sin(math.radians(20)) / 2.5)
+
+
+def triad_by_hand():
+    """The six-bar's loop equations differentiated, solved with numpy: unknowns ω (α) of
+    link1, ternary, link2, link3 from v_B (two ways) and v_D (two ways)."""
+    P = {k: np.array(v, float) for k, v in dict(O2=(0, 0), A=(0.1, 0.1), B=(0.25, 0.2), C=(0.4, 0.15),
+                                                D=(0.32, 0.3), O4=(0.45, 0), O6=(0.2, 0.45)).items()}
+    perp = lambda r: np.array([-r[1], r[0]])          # k × r
+    w2 = 10.0
+    v_a = w2 * perp(P["A"] - P["O2"])
+    # unknowns x = (w1, wt, w4, w6): v_B = v_A + w1 k×AB = w4 k×O4C + wt k×CB ; v_D = w6 k×O6D = w4 k×O4C + wt k×CD
+    m = np.zeros((4, 4))
+    m[0:2, 0] = perp(P["B"] - P["A"])
+    m[0:2, 1] = -perp(P["B"] - P["C"])
+    m[0:2, 2] = -perp(P["C"] - P["O4"])
+    m[2:4, 1] = -perp(P["D"] - P["C"])
+    m[2:4, 2] = -perp(P["C"] - P["O4"])
+    m[2:4, 3] = perp(P["D"] - P["O6"])
+    rhs = np.concatenate([-v_a, np.zeros(2)])
+    w1, wt, w4, w6 = np.linalg.solve(m, rhs)
+    # accelerations: the same matrix for α, the centripetal terms on the right
+    cen = lambda w, r: -w * w * r
+    a_a = cen(w2, P["A"] - P["O2"])
+    rhs_a = np.concatenate([
+        -(a_a + cen(w1, P["B"] - P["A"])) + cen(w4, P["C"] - P["O4"]) + cen(wt, P["B"] - P["C"]),
+        -cen(w6, P["D"] - P["O6"]) + cen(w4, P["C"] - P["O4"]) + cen(wt, P["D"] - P["C"])])
+    a1, at, a4, a6 = np.linalg.solve(m, rhs_a)
+    return {"link1": w1, "ternary": wt, "link2": w4, "link3": w6}, \
+        {"link1": a1, "ternary": at, "link2": a4, "link3": a6}
+
+
+def test_triad_by_its_assur_point_against_the_loop_equations():
+    sol, doc = explained("triad_six_bar")
+    omega, alpha = triad_by_hand()
+    rates = {d.body: num(sol, d.value.value) for d in derived_rates(doc, "sec.velocities")}
+    accels = {d.body: num(sol, d.value.value) for d in derived_rates(doc, "sec.accelerations")}
+    for body in omega:
+        assert rates[body] == pytest.approx(omega[body], rel=1e-9), body
+        assert accels[body] == pytest.approx(alpha[body], rel=1e-9), body
+    steps = [b for b in section_blocks(doc, "sec.velocities") if getattr(b, "key", "") == "triad.intro"]
+    assert steps, "the triad is not explained by its Assur point"

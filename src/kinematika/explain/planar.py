@@ -18,6 +18,7 @@ from .order import Step
 
 body_ = body
 from .terms import point_term, rotation_terms, slide_terms, target_term
+from .triad import triad_steps
 from .vehicles import wheel_route
 
 LEVEL_UNIT = {"v": "rate", "a": "rate2"}
@@ -58,6 +59,11 @@ class PlanarSteps:
         blocks = self.drivers(step)
         if step.kind == "other":
             route = wheel_route(self.ctx, step.bodies, self.known, self.level)
+            if route is None:
+                triad = triad_steps(self, step)
+                if triad is not None:
+                    self.used.update(step.joints)
+                    return blocks + triad + self.carry(step)
             if route is not None:
                 self.used.update(step.joints)
                 for b in step.bodies:

@@ -243,3 +243,9 @@ vehicle-translation = Les rectes { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     } són paral·leles: el seu CIR és a l’infinit, es trasllada i tots els seus punts es mouen com { $point }.
+triad-intro = { $body } està subjectat per tres barres binàries, { $links }: cap equació vectorial d’un sol punt no té només dues incògnites. Com fan els textos per a una tríada, es pren el punt d’Assur { $point }, on es tallen les rectes { $l1 } i { $l3 }, com a punt { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }:
+triad-collinear = A cada membre els dos termes desconeguts són perpendiculars a una mateixa recta ({ $point } és a { $l1 } i a { $l3 }), de manera que cada membre té un sol mòdul desconegut: dues incògnites, i el polígon es tanca.
+triad-closure = Conegut { $point } com a punt de la barra ternària, la seva articulació { $pin } es tanca com en una díade:

@@ -147,3 +147,6 @@ vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point
 vehicle-line-velocity = { $sym } abiadurarekiko perpendikularra { $point } puntuan
 vehicle-centre = { $body } solidoaren biraketa-zentroa { $first } zuzenean eta { $second } zuzenean dago; { $centre } = { $where } puntuan ebakitzen dira. { $body } solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziaren proportzionala den abiadurarekin:
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
+triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
+triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
+triad-closure = { $point } barra hirutarraren puntu gisa ezaguna denez, bere { $pin } giltzadura diada batean bezala ixten da:
