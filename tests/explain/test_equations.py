@@ -36,6 +36,8 @@ def _direction(sol, ref, eq):
             p, q = ctx_points[names[0]], ctx_points[names[1]]
             return tuple(b - a for a, b in zip(p, q))
         return None
+    if getattr(ref, "key", None) == "dir.axis":
+        return sol.solver.geos[str(ref.args["joint"])].axis
     if getattr(ref, "key", None) == "dir.guide":
         return sol.solver.geos[str(ref.args["joint"])].along
     return None

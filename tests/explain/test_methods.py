@@ -8,11 +8,12 @@ import math
 import numpy as np
 import pytest
 
-from kinematika.explain.document import Derived, Section
+from kinematika.explain.document import Derived, Equation, Section
 
 from .helpers import explained, num
 
-SIX = ["seed_c5_1_4_epicyclic", "quick_return", "seed_c5_2_1_tricycle", "tractor_trailer", "triad_six_bar"]
+SIX = ["seed_c5_1_4_epicyclic", "quick_return", "seed_c5_2_1_tricycle", "tractor_trailer", "triad_six_bar",
+       "spherical_four_bar"]
 
 
 def section_blocks(doc, title_key: str) -> list:
@@ -40,12 +41,20 @@ def test_every_velocity_unknown_has_an_equation(name):
     rates = derived_rates(doc, key)
     bare = [d.body for d in rates if not d.how and d.body not in _given(sol)]
     assert not bare, f"ω stated without an equation: {bare}"
-    bodies = {d.body for d in rates}
+    bodies = {d.body for d in rates} | {eq.target.sym.sub for eq in section_blocks(doc, key)
+                                        if isinstance(eq, Equation) and eq.level == "w"}
     assert set(sol.model.moving_bodies) <= bodies | _given(sol), set(sol.model.moving_bodies) - bodies
 
 
 def _given(sol) -> set[str]:
-    return {d.body for d in sol.model.drivers if d.kind == "omega"}
+    """Bodies whose ω the model gives: an ω driver, or a rate of their joint to the frame."""
+    out = {d.body for d in sol.model.drivers if d.kind == "omega"}
+    for d in sol.model.drivers:
+        if d.kind == "joint":
+            j = sol.model.joint(d.joint)
+            if sol.model.frame in (j.a, j.b):
+                out |= {j.a, j.b} - {sol.model.frame}
+    return out
 
 
 def tractor_by_hand():
@@ -59,13 +68,13 @@ def tractor_by_hand():
     # rear axle: x = 0; perpendicular to the front wheel at F: F + s (-sin, cos)
     s = wb / math.sin(steer)
     i_t = F + s * np.array([-math.sin(steer), math.cos(steer)])
-    w_t = float(np.cross(F - i_t, v_f) / np.dot(F - i_t, F - i_t))
+    w_t = float(_cross2(F - i_t, v_f) / np.dot(F - i_t, F - i_t))
     v_h = w_t * np.array([-(H - i_t)[1], (H - i_t)[0]])
     # trailer: axle line through T, perpendicular to (cos tilt, sin tilt); and H + u v_h⊥
     d1, d2 = np.array([-math.sin(tilt), math.cos(tilt)]), np.array([-v_h[1], v_h[0]])
     a, b = np.linalg.solve(np.column_stack([d1, -d2]), H - T)
     i_r = T + a * d1
-    w_r = float(np.cross(H - i_r, v_h) / np.dot(H - i_r, H - i_r))
+    w_r = float(_cross2(H - i_r, v_h) / np.dot(H - i_r, H - i_r))
     return w_t, w_r, i_t, i_r
 
 
@@ -119,3 +128,36 @@ def test_triad_by_its_assur_point_against_the_loop_equations():
         assert accels[body] == pytest.approx(alpha[body], rel=1e-9), body
     steps = [b for b in section_blocks(doc, "sec.velocities") if getattr(b, "key", "") == "triad.intro"]
     assert steps, "the triad is not explained by its Assur point"
+
+
+def _cross2(r, v) -> float:
+    return r[0] * v[1] - r[1] * v[0]
+
+
+def spherical_by_hand():
+    """The loop of the spherical four-bar solved with numpy: ω_crank + t2 u2 + t3 u3 = s u4 and,
+    differentiated, α_crank + a2 u2 + ω_crank × t2 u2 + a3 u3 + ω_coupler × t3 u3 = q u4."""
+    deg = math.radians
+    A = np.array([0, math.sin(deg(30)), math.cos(deg(30))])
+    B = np.array([0.738834276689, 0.673861538519, 0.005876695946])
+    D = np.array([math.sin(deg(60)), 0, math.cos(deg(60))])
+    u2, u3, u4 = A / np.linalg.norm(A), B / np.linalg.norm(B), D / np.linalg.norm(D)
+    w1 = np.array([0.0, 0.0, 1.0])
+    t2, t3, s = np.linalg.solve(np.column_stack([u2, u3, -u4]), -w1)
+    w_coupler, w_rocker = w1 + t2 * u2, s * u4
+    a2, a3, q = np.linalg.solve(np.column_stack([u2, u3, -u4]),
+                                -(np.cross(w1, t2 * u2) + np.cross(w_coupler, t3 * u3)))
+    return w_coupler, w_rocker, q * u4
+
+
+def test_spherical_four_bar_by_its_loop_along_the_axes():
+    sol, doc = explained("spherical_four_bar")
+    w_coupler, w_rocker, a_rocker = spherical_by_hand()
+    blocks = section_blocks(doc, "sec.rates")
+    assert any(getattr(b, "key", "") == "loop.intro" for b in blocks), "no loop equation"
+    targets = {(eq.level, eq.target.sym.sub): num(sol, eq.target.value) for eq in blocks if isinstance(eq, Equation)}
+    assert targets[("w", "coupler")] == pytest.approx(tuple(w_coupler), abs=1e-9)
+    assert targets[("w", "rocker")] == pytest.approx(tuple(w_rocker), abs=1e-9)
+    assert targets[("al", "rocker")] == pytest.approx(tuple(a_rocker), abs=1e-9)
+    loops = [eq for eq in blocks if isinstance(eq, Equation) and eq.target.sym.base == "0"]
+    assert len(loops) == 2 and all(sum(t.unknown or t.mag.code == "?" for t in eq.sides[0]) == 3 for eq in loops)

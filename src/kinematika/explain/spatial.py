@@ -10,10 +10,11 @@ from __future__ import annotations
 
 from typing import Optional
 
+from ..algebra.vectors import dot
 from ..model.model import PointRef, Question
 from ..questions.decompose import decompose
 from .context import Ctx, alpha_sym, omega_sym
-from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Term, Value, msg
+from .document import Ann, Derived, Equation, Inline, Name, Names, Section, Sym, Term, Value, msg
 from .terms import KNOWN, point_term, rotation_terms, target_term
 
 
@@ -41,6 +42,7 @@ def rates_section(ctx: Ctx) -> Section:
     a1, a2 = alpha_sym("1", vector=vec), alpha_sym("2", vector=vec)
     sec.add(msg("rates.intro", w=Inline([omega_sym("", vector=vec), " = ", w1, " + ", w2]),
                 a=Inline([alpha_sym("", vector=vec), " = ", a1, " + ", a2, " + ", w1, " × ", w2])))
+    sec.blocks += loop_blocks(ctx)
     for body, parent, _ in carriers(ctx):
         if parent is None:
             continue
@@ -52,6 +54,87 @@ def rates_section(ctx: Ctx) -> Section:
         for level in ("w", "al"):
             sec.blocks.append(_rate_equation(ctx, body, parent, level, vec))
     return sec
+
+
+def loop_blocks(ctx: Ctx) -> list:
+    """Closed loops of revolute joints: the relative angular velocities add to zero around
+    the loop, each along its joint's axis (three scalar equations for the unknown rates);
+    differentiated, α_rel + ω_carrier × ω_rel add to zero too."""
+    model = ctx.model
+    parent: dict[str, tuple] = {ctx.frame: (None, None)}
+    queue, closing = [ctx.frame], []
+    while queue:
+        x = queue.pop(0)
+        for j in model.joints:
+            if x not in (j.a, j.b):
+                continue
+            y = j.b if j.a == x else j.a
+            if y not in parent:
+                parent[y] = (x, j)
+                queue.append(y)
+            elif parent[x][1] is not j and j not in closing and parent[y][1] is not j:
+                closing.append(j)
+    out: list = []
+    for j in closing:
+        loop = _loop(ctx, parent, j)
+        if loop is None:
+            continue
+        out.append(msg("loop.intro", bodies=Names([Name(b, "body") for b, _, _ in loop])))
+        driven = {d.joint for d in model.drivers if d.kind == "joint"}
+        for level in ("w", "al"):
+            if level == "al":
+                out.append(msg("loop.solve_alpha"))
+            out.append(_loop_equation(ctx, loop, driven, level))
+            if level == "w":
+                out.append(msg("loop.solve"))
+            for x, y, jj in loop:
+                if jj.id not in driven:
+                    axis = ctx.sol.solver.geos[jj.id].axis
+                    rel = ctx.omega(x, y) if level == "w" else ctx.alpha(x, y)
+                    rate = dot(tuple(ctx.space.rot_components(rel)), tuple(axis))
+                    unit = "rate" if level == "w" else "rate2"
+                    out.append(Derived(Sym("θ̇" if level == "w" else "θ̈", jj.id, vector=False), [],
+                                       ctx.value(rate, unit)))
+    return out
+
+
+def _loop(ctx: Ctx, parent: dict, j) -> Optional[list]:
+    """[(x, y, joint)]: ω_x/y around the loop closed by j, from the frame and back."""
+    def up(b: str) -> list:
+        out = []
+        while parent[b][0] is not None:
+            out.append((b, parent[b][0], parent[b][1]))
+            b = parent[b][0]
+        return out
+    down = list(reversed(up(j.a)))
+    back = [(p, c, jj) for c, p, jj in up(j.b)]
+    loop = down + [(j.b, j.a, j)] + back
+    if any(jj.type != "revolute" for _, _, jj in loop):
+        return None
+    return loop
+
+
+def _loop_equation(ctx: Ctx, loop: list, driven: set, level: str) -> Equation:
+    unit = "rate" if level == "w" else "rate2"
+    side = []
+    for x, y, j in loop:
+        known = j.id in driven
+        along = Ann("para", msg("dir.axis", joint=Name(j.id, "joint")))
+        if level == "w":
+            value = _rot(ctx, ctx.omega(x, y), unit)
+            side.append(Term(omega_sym(x, y, vector=True), value, Ann("M") if known else Ann("?"), along,
+                             [Sym("θ̇", j.id, vector=False), " ", Sym("u", j.id)], not known, "rate"))
+            continue
+        value = _rot(ctx, ctx.alpha(x, y), unit)
+        side.append(Term(alpha_sym(x, y, vector=True), value, Ann("M") if known else Ann("?"), along,
+                         [Sym("θ̈", j.id, vector=False), " ", Sym("u", j.id)], not known, "rate"))
+        if y == ctx.frame:
+            continue
+        cross = ctx.space.cross_ww(ctx.omega(y), ctx.omega(x, y))
+        side.append(Term(Sym("ω×ω", f"{y},{x}", vector=True), _rot(ctx, cross, unit), *KNOWN,
+                         [omega_sym(y, vector=True), " × ", omega_sym(x, y, vector=True)], kind="rate"))
+    zero = Term(Sym("0", vector=True), tuple(0.0 for _ in range(3)), *KNOWN, kind="rate")
+    return Equation(zero, [side], level, figure=False)
 
 
 def _rate_equation(ctx: Ctx, body: str, parent: str, level: str, vec: bool) -> Equation:

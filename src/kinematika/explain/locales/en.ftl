@@ -147,3 +147,7 @@ vehicle-translation = The lines of { $body } are parallel: its centre is at infi
 triad-intro = { $body } is held by three binary links, { $links }: no vector equation of a single point has only two unknowns. As textbooks do for a triad, take the Assur point { $point }, where the lines { $l1 } and { $l3 } meet, as a point of { $body }:
 triad-collinear = On each side the two unknown terms are perpendicular to one line ({ $point } lies on { $l1 } and on { $l3 }), so each side has one unknown magnitude: two unknowns, and the polygon closes.
 triad-closure = With { $point } known as a point of the ternary link, its pin { $pin } closes as in a dyad:
+loop-intro = The bodies { $bodies } close a loop: going round it, the relative angular velocities add up to zero, each along its joint's axis (three scalar equations for the unknown rates θ̇):
+loop-solve = The three components give the unknown rates:
+loop-solve_alpha = Differentiating in the fixed axes, the relative angular accelerations and the terms ω × ω_rel add up to zero round the loop; the three components give the unknown θ̈:
+dir-axis = axis { $joint }

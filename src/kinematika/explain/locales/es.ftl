@@ -147,3 +147,7 @@ vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el 
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
 triad-closure = Conocido { $point } como punto del eslabón ternario, su articulación { $pin } se cierra como en una díada:
+loop-intro = Los sólidos { $bodies } cierran un lazo: al recorrerlo, las velocidades angulares relativas suman cero, cada una según el eje de su par (tres ecuaciones escalares para las velocidades θ̇ desconocidas):
+loop-solve = Las tres componentes dan las velocidades desconocidas:
+loop-solve_alpha = Derivando en los ejes fijos, las aceleraciones angulares relativas y los términos ω × ω_rel suman cero a lo largo del lazo; las tres componentes dan las θ̈ desconocidas:
+dir-axis = eje { $joint }

@@ -150,3 +150,7 @@ vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infi
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
 triad-closure = { $point } barra hirutarraren puntu gisa ezaguna denez, bere { $pin } giltzadura diada batean bezala ixten da:
+loop-intro = { $bodies } solidoek begizta bat ixten dute: hura osatzean, abiadura angeluar erlatiboen batura zero da, bakoitza bere loturaren ardatzaren norabidean (hiru ekuazio eskalar θ̇ abiadura ezezagunetarako):
+loop-solve = Hiru osagaiek abiadura ezezagunak ematen dituzte:
+loop-solve_alpha = Ardatz finkoetan deribatuz, azelerazio angeluar erlatiboen eta ω × ω_rel terminoen batura zero da begiztan; hiru osagaiek θ̈ ezezagunak ematen dituzte:
+dir-axis = { $joint } ardatza
