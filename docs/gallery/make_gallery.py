@@ -17,12 +17,28 @@ ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
 OUT = ROOT / "docs" / "gallery"
 PAGE = ROOT / "docs" / "gallery.md"
-DPI = 96
+DPI = 110
 WIDTH = 7.5
-EXTRAS = {   # example: (suffix, options, what the picture adds)
-    "four_bar": ("centres", {"centres": True, "accelerations": True},
-                 "every instant centre with its Aronhold–Kennedy lines, and the accelerations"),
-    "slider_crank": ("centres", {"centres": True}, "every instant centre"),
+CENTRES = {"centres": True}
+EXTRAS = {   # example: [(suffix, options, what the picture adds)]
+    "four_bar": [("centres", {"centres": True, "accelerations": True},
+                  "every instant centre with its Aronhold–Kennedy lines, and the accelerations")],
+    "slider_crank": [("centres", CENTRES, "every instant centre")],
+    "quick_return": [("centres", {"centres": True, "accelerations": True},
+                      "every instant centre (the ram's, far above, at the edge with its "
+                      "coordinates), and the accelerations")],
+    "seed_c5_1_4_epicyclic": [("centres", CENTRES, "every instant centre: those of the "
+                               "sun, ring, carrier and frame all at O")],
+    "seed_c5_2_1_tricycle": [("centres", CENTRES, "every instant centre: the normals to the "
+                              "wheels' planes meet at the chassis' centre")],
+    "seed_c5_2_2_articulated": [("centres", CENTRES, "every instant centre: each unit's "
+                                 "centre on the normal to its wheels")],
+    "watt_six_bar": [("centres", CENTRES, "every instant centre")],
+}
+SWEEPS = {   # example: what its sweep plot shows
+    "quick_return": "the ram's slow and quick strokes and their time ratio",
+    "four_bar": "the rocker's swing and the coupler's motion over a crank turn",
+    "slider_crank": "the piston's position, velocity and acceleration over a crank turn",
 }
 
 
@@ -56,6 +72,21 @@ def render(path: Path, name: str, options: dict) -> str:
     return ""
 
 
+def plot(path: Path, name: str) -> str:
+    """The sweep plot of `path` to OUT/name.png; '' when drawn, else why not."""
+    from kinematika.api import as_model
+    from kinematika.draw import plot_sweep
+    from kinematika.errors import KinematikaError
+    from kinematika.sweep import run_sweep
+
+    try:
+        model = as_model(path)
+        plot_sweep(run_sweep(model), OUT / f"{name}.png", model)
+    except KinematikaError as err:
+        return f"{err.kind}: {err}"
+    return ""
+
+
 def entry(path: Path, title: str, image: str, command: str, text: str) -> list[str]:
     rel = path.relative_to(ROOT).as_posix()
     out = [f"### {title}", "", f"[`{rel}`](../{rel})" + (f" — {text}" if text else ""), ""]
@@ -72,8 +103,8 @@ def main() -> int:
     lines = ["# Gallery", "",
              "Every example in `examples/` as `kinematika draw` draws it (made by "
              "`docs/gallery/make_gallery.py`; see [figures.md](figures.md) for what the "
-             "drawings show). Symbolic examples are drawn at generic values of their symbols, "
-             "given under each picture.", ""]
+             "drawings show). Symbolic examples are drawn at the numbers their `draw_at` "
+             "gives, stated under each picture; the answers stay formulas.", ""]
     skipped = []
     with Progress(transient=True) as bar:
         task = bar.add_task("drawing examples", total=len(models))
@@ -86,13 +117,16 @@ def main() -> int:
                 lines += entry(path, _title(path), f"{name}.png",
                                f"kinematika draw examples/{path.name} -o {name}.png",
                                describe(path))
-                if name in EXTRAS:
-                    suffix, options, text = EXTRAS[name]
+                for suffix, options, text in EXTRAS.get(name, []):
                     if not render(path, f"{name}-{suffix}", options):
                         flags = " ".join(f"--{k}" for k in options)
                         lines += entry(path, f"{_title(path)}: {suffix}", f"{name}-{suffix}.png",
                                        f"kinematika draw examples/{path.name} {flags} -o "
                                        f"{name}-{suffix}.png", text)
+                if name in SWEEPS and not plot(path, f"{name}-sweep"):
+                    lines += entry(path, f"{_title(path)}: sweep", f"{name}-sweep.png",
+                                   f"kinematika sweep examples/{path.name} --plot "
+                                   f"{name}-sweep.png", SWEEPS[name])
             bar.advance(task)
     if skipped:
         lines += ["## Not drawn", ""] + skipped + [""]

@@ -19,13 +19,27 @@ from .style import BAR_WIDTH, GROUND, HATCH_BAND, INK, POINT_LABEL
 
 
 def paint_bodies(cv: Canvas) -> None:
+    if cv.scene.sphere is not None:
+        centre, radius = cv.scene.sphere
+        cv.add(Circle(centre, radius, fill=False, ec="#bdbdbd", lw=1.0, ls=(0, (4, 3)), zorder=0,
+                      gid="sphere"))
     for body in cv.scene.bodies.values():
         if body.frame:
             for shape in body.shapes:
                 _ground_shape(cv, shape)
+            _skeleton(cv, body, GROUND, 3.0)
         else:
             _body(cv, body)
     _points(cv)
+
+
+def _skeleton(cv: Canvas, body: BodyView, colour: str, width: float = BAR_WIDTH) -> None:
+    """A body drawn as its bars (a carrier's arms, a chassis, a spherical link's arcs)."""
+    for line in body.skeleton:
+        cv.add(Line2D(*np.asarray(line).T, lw=width, color=colour, alpha=0.9,
+                      solid_capstyle="round", solid_joinstyle="round", zorder=2,
+                      gid=f"body:{body.name}"), None if body.frame else body.name)
+        cv.board.avoid(*line)
 
 
 def _body(cv: Canvas, body: BodyView) -> None:
@@ -35,6 +49,12 @@ def _body(cv: Canvas, body: BodyView) -> None:
     if wheels and all(_on_wheel(p, wheels) for p in pts):
         _radii(cv, body, pts, wheels)       # the disc is the body: mark its points by radii
         pts = []
+    if body.skeleton:
+        _skeleton(cv, body, body.colour)
+        longest = max(body.skeleton, key=lambda line: float(np.ptp(np.asarray(line), axis=0).sum()))
+        anchor, pts = np.asarray(longest)[len(longest) // 2], []
+        if len(longest) == 2:
+            anchor = (longest[0] + longest[1]) / 2
     if len(pts) >= 3:
         hull = convex_hull(pts)
         if len(hull) >= 3 and _area(hull) > 1e-5 * cv.size ** 2:

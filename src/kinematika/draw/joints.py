@@ -74,12 +74,12 @@ def _axis_line(cv: Canvas, j: JointView) -> None:
 
 
 def _support(cv: Canvas, p: np.ndarray) -> None:
-    """A fixed pivot: a triangle from the pin to a hatched base, below the pin (above it when
-    the pin is clearly above the rest of the mechanism)."""
+    """A fixed pivot: a triangle from the pin to a hatched base, below the pin (in a planar
+    model, above it when the pin is clearly above the rest of the mechanism: it hangs)."""
     h = SUPPORT * cv.size
     d = p - cv.moving_centroid()
-    down = np.array([0.0, 1.0]) if d[1] > 0.3 * np.linalg.norm(d) and d[1] > 1e-9 else \
-        np.array([0.0, -1.0])
+    hanging = cv.scene.dim == 2 and d[1] > 0.3 * np.linalg.norm(d) and d[1] > 1e-9
+    down = np.array([0.0, 1.0]) if hanging else np.array([0.0, -1.0])   # 3D: the vertical
     side = np.array([1.0, 0.0])
     base = p + down * h
     tri = [p, base - 0.75 * h * side, base + 0.75 * h * side]

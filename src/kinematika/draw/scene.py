@@ -20,6 +20,7 @@ from ..model.model import PointRef
 from .options import DrawOptions
 from .projection import Projection, projection
 from .names import body_numbers, numbered, point_symbol
+from .skeleton import add_skeletons
 from .style import body_colour
 
 Vec = np.ndarray
@@ -50,6 +51,7 @@ class BodyView:
     points: dict[str, Vec]
     shapes: list[ShapeView] = field(default_factory=list)
     passing: list[str] = field(default_factory=list)   # points that slide along this body
+    skeleton: list[Vec] = field(default_factory=list)  # polylines drawn as its bars, if any
 
 
 @dataclass
@@ -140,6 +142,7 @@ class Scene:
     axes: list[AxisView] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     numbered: bool = False                 # labels name bodies by number: bodies say theirs
+    sphere: Optional[tuple] = None         # (centre, radius) of a spherical linkage's sphere
 
     @property
     def frame(self) -> BodyView:
@@ -169,6 +172,8 @@ def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = No
     _mark_gears(bodies, model, geos, num)
     joints = [_joint(j, geos.get(j.id), num) for j in model.joints]
     scene = Scene(model.name, model.dimension, proj, bodies, joints, size, box)
+    add_skeletons(scene, inst, num, geos)
+    _grow_box(scene)
     if num.values:
         scene.notes.append(_values_note(num.values, model.draw_at))
     if sol is not None:
@@ -325,6 +330,20 @@ def _extent(bodies: dict[str, BodyView], inst: Instant) -> tuple[tuple, float]:
         size = float(inst.scale) or 1.0
         lo, hi = lo - size / 2, hi + size / 2
     return (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1])), size
+
+
+def _grow_box(scene: Scene) -> None:
+    """The mechanism's box with its skeletons' arcs and the sphere they lie on."""
+    extra = [p for b in scene.bodies.values() for line in b.skeleton for p in line]
+    if scene.sphere is not None:
+        c, r = scene.sphere
+        extra += [c - r, c + r]
+    if not extra:
+        return
+    arr = np.vstack([np.array(scene.box).reshape(2, 2)] + [np.asarray(extra)])
+    lo, hi = arr.min(axis=0), arr.max(axis=0)
+    scene.box = (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+    scene.size = max(scene.size, float(max(hi - lo)))
 
 
 def _joint_geometries(inst: Instant, solved: Any) -> dict:
