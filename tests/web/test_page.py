@@ -233,6 +233,13 @@ def test_downloads_the_sweep_as_csv(page, tmp_path):
     assert saved.read_bytes() == expected.read_bytes()
     lines = saved.read_text().splitlines()
     assert lines[0].startswith("coordinate_deg,") and len(lines) == 362
+    page.locator("#downloads summary").click()
+    with page.expect_download() as info:
+        page.get_by_test_id("download-model").click()
+    model = tmp_path / "model.yaml"
+    info.value.save_as(model)
+    assert info.value.suggested_filename == "four_bar.yaml"
+    assert model.read_text() == FOUR_BAR.read_text()
 
 
 def test_the_link_holds_the_model(page, browser, server):

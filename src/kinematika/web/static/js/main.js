@@ -55,6 +55,7 @@ async function analyse() {
   state.sweepError = swept.status === "rejected" ? swept.reason.message : null;
   state.explained = null;
   $("model-name").textContent = state.solution.name || "Model";
+  document.title = `${state.solution.name || "Model"} — kinematika`;
   const dof = $("dof");
   dof.textContent = `DOF ${state.solution.dof}`;
   dof.classList.remove("bad");
