@@ -6,5 +6,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 python3 -m venv .venv-bench
 .venv-bench/bin/pip install --quiet --upgrade pip
-.venv-bench/bin/pip install --quiet -e . pylinkage numba mechanism
+.venv-bench/bin/pip install --quiet -e '.[explore]' pylinkage numba mechanism
 .venv-bench/bin/python -c "import kinematika, pylinkage, numba, mechanism; print('benchmark environment ready: pylinkage', pylinkage.__version__, 'numba', numba.__version__)"

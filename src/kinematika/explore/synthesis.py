@@ -13,6 +13,7 @@ penalty. The best distinct designs are returned and written as model files, read
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Optional
@@ -37,17 +38,18 @@ class Synthesis:
     errors: list[float]
     evaluated: int
     objective: str
-    history: list[float]                 # the best objective after each generation
+    history: list[tuple[float, float]]   # (seconds from the start, best objective) per generation
 
 
 def synthesize(model: Any, vary: list[Vary | str], objective: str, population: int = 40,
                generations: int = 200, seed: int = 0, best: int = 3, sweep: Sweep = Sweep(),
                tol: float = 0.0, target: Optional[float] = None,
-               files: Optional[dict[str, str]] = None) -> Synthesis:
+               files: Optional[dict[str, str]] = None, seconds: Optional[float] = None) -> Synthesis:
     """Minimise the metric `objective` over the varied parameters' intervals.
 
     `population` designs per generation (scipy's popsize is per parameter: it is derived),
-    at most `generations` generations; stop early once the objective is below `target`.
+    at most `generations` generations; stop early once the objective is below `target`, or
+    after `seconds`.
     `files` gives target files' text by name (as `make_study`).
     """
     from scipy.optimize import differential_evolution
@@ -58,7 +60,8 @@ def synthesize(model: Any, vary: list[Vary | str], objective: str, population: i
     bounds = [(v.low, v.high) for v in study.designs.vary]
     archive_x: list[np.ndarray] = []
     archive_f: list[np.ndarray] = []
-    history: list[float] = []
+    history: list[tuple[float, float]] = []           # (seconds, best objective) per generation
+    start = time.perf_counter()
 
     def cost(x: np.ndarray) -> np.ndarray:
         x = x.reshape(len(names), -1)                          # (parameters, designs)
@@ -71,8 +74,9 @@ def synthesize(model: Any, vary: list[Vary | str], objective: str, population: i
 
     def progress(intermediate_result: Any) -> bool:        # scipy passes the result by this name
         fun = float(intermediate_result.fun)
-        history.append(fun)
-        return target is not None and fun <= target
+        elapsed = time.perf_counter() - start
+        history.append((elapsed, fun))
+        return (target is not None and fun <= target) or (seconds is not None and elapsed >= seconds)
 
     size = max(5, math.ceil(population / len(names)))
     differential_evolution(cost, bounds, popsize=size, maxiter=generations, seed=seed, tol=tol,
