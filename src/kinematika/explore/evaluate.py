@@ -21,7 +21,7 @@ from ..sweep.batch import BatchSweeper, describe
 from .cycle import BatchCycle, ResultCycle
 from .metrics import Context, Metric, parse_metric
 
-BATCH = 256             # designs solved together: (BATCH × positions) arrays stay in cache-sized pieces
+BATCH = 64              # designs solved together: (BATCH × positions) arrays stay in cache-sized pieces
 
 
 @dataclass(frozen=True)
