@@ -39,16 +39,22 @@ def prepare(source: ModelLike, *, fmt: Optional[str] = None,
     from .model.overrides import with_parameters
 
     model = with_parameters(as_model(source, fmt), {str(k): v for k, v in (set or {}).items()})
-    if assembly is not None or move:
-        from .errors import KinematikaError
+    if assembly is not None:
+        from .sweep.assemblies import with_assembly
 
-        raise KinematikaError("schema", "`move` and `assembly` are not available yet", "move")
+        model = with_assembly(model, assembly)
+    amounts = {**model.move, **(move or {})}
+    if amounts:
+        from .sweep.move import moved
+
+        model = moved(model, amounts)
     return model
 
 
-def solve(source: ModelLike, symbolic: bool | None = None) -> Solution:
-    """Solve the instant described by `source` (numerically, or exactly when it has symbols)."""
-    model = as_model(source)
+def solve(source: ModelLike, symbolic: bool | None = None, **options: Any) -> Solution:
+    """Solve the instant described by `source` (numerically, or exactly when it has symbols);
+    `options` are `prepare`'s (set, move, assembly, fmt)."""
+    model = prepare(source, **options)
     inst = instantiate(model, symbolic)
     solver = InstantSolver(inst)
     motion = solver.solve()

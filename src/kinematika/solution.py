@@ -74,17 +74,22 @@ class Solution:
 
     # zero tests at the model's scale --------------------------------------------------------
     def scales(self) -> tuple[float, float]:
-        """Characteristic speed and acceleration of the whole mechanism (numerically)."""
+        """Characteristic speed and acceleration of the whole mechanism (numerically): the
+        largest point speed and acceleration, and the rates' ω·L, α·L and ω²·L."""
         if self._scales is None:
             length = self.inst.scale
             speeds, accels = [0.0], [0.0]
             for ref in self.model.material_points():
                 speeds.append(self.size(self.velocity(ref)))
                 accels.append(self.size(self.acceleration(ref)))
+            rates = [0.0]
             for body in self.model.bodies:
                 s = self.motion.states[body]
-                speeds.append(self.size(self.space.rot_components(s.omega)) * length)
+                rates.append(self.size(self.space.rot_components(s.omega)))
+                speeds.append(rates[-1] * length)
                 accels.append(self.size(self.space.rot_components(s.alpha)) * length)
+            # a body turning at ω has accelerations of order ω² L even where none is asked
+            accels.append(max(rates) ** 2 * length)
             self._scales = (max(speeds), max(accels))
         return self._scales
 

@@ -72,6 +72,7 @@ class _Builder:
         model.questions = self.questions()
         model.default_questions = self.spec.ask is None
         model.draw_at, model.up = self.figure_hints(params, dimension)
+        model.move = self.move()
         return model
 
     def figure_hints(self, params: dict[str, Parameter], dimension: int) -> tuple[dict, Any]:
@@ -395,6 +396,17 @@ class _Builder:
             raise KinematikaError("schema", "the screw axis is a 3D question; ask for `icr` in a "
                                   "planar model", where)
         return Question(kind, i, target, echo, relative_to=rel, moving=moving)
+
+    def move(self) -> dict[str, Expr]:
+        """`move: {joint: amount}`: joints checked here, amounts evaluated when moving."""
+        out: dict[str, Expr] = {}
+        ids = {j.id for j in self.joint_list}
+        for jid, raw in (self.spec.move or {}).items():
+            if jid not in ids:
+                raise KinematikaError("schema", f"unknown joint {jid!r} (joints: "
+                                      f"{', '.join(j.id for j in self.joint_list)})", f"move.{jid}")
+            out[jid] = self.expr(raw, f"move.{jid}")
+        return out
 
     def sweep(self) -> Optional[Sweep]:
         raw = self.spec.sweep

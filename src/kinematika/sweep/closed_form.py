@@ -117,22 +117,32 @@ class ClosedForm:
     """
 
     def __init__(self, model: Model, points: dict[str, complex], directions: dict[str, complex],
-                 groups: list[Group], joint: Joint, rates: InputRates) -> None:
+                 groups: list[Group], joint: Joint, rates: InputRates,
+                 flips: Optional[dict[int, float]] = None) -> None:
         self.model, self.joint, self.groups = model, joint, groups
         self.points = points
         self.input = groups[0].bodies[0]
         self.guide = directions[joint.id] if joint.type != "revolute" else 0j
-        self.chains = [(g, _SOLVERS[g.kind], _Chain(model, g, self.points, directions)) for g in groups[1:]]
+        flips = flips or {}
+        self.chains = [(g, _SOLVERS[g.kind], _Chain(model, g, self.points, directions, flips.get(i, 1.0)))
+                       for i, g in enumerate(groups[1:], start=1)]
         self.rates = rates
 
     @classmethod
     def at_drawn(cls, model: Model, points: dict[str, tuple], directions: dict[str, tuple],
-                 groups: list[Group], joint: Joint, drawn: Motion) -> "ClosedForm":
-        """One design, its input's rates read from the engine's solution of the drawn instant."""
+                 groups: list[Group], joint: Joint, drawn: Motion,
+                 flips: Optional[dict[int, float]] = None) -> "ClosedForm":
+        """One design, its input's rates read from the engine's solution of the drawn instant;
+        `flips` (group index → −1) close those dyads the other way than drawn (assemblies)."""
         cpoints = {k: complex(*p) for k, p in points.items()}
         cdirections = {k: complex(*u) for k, u in directions.items()}
         rates = drawn_rates(model, joint, groups[0].bodies[0], cpoints, drawn)
-        return cls(model, cpoints, cdirections, groups, joint, rates)
+        return cls(model, cpoints, cdirections, groups, joint, rates, flips)
+
+    def branches(self) -> list[tuple[int, Group, float]]:
+        """The dyads that close in two ways: (index among the groups, group, drawn side ±1)."""
+        return [(i, g, float(SIDES[g.kind](chain))) for i, (g, _, chain) in enumerate(self.chains, start=1)
+                if g.kind in SIDES]
 
     def solve(self, q: np.ndarray) -> Outcome:
         """Every body's track at the increments `q` (radians or length) of the input joint:
@@ -214,10 +224,12 @@ def const(value: complex | float, n: int) -> np.ndarray:
 
 # the dyads --------------------------------------------------------------------------------
 class _Chain:
-    """A dyad read as k1 –J1– b1 –J2– b2 –J3– k2 (b2 None for a one-body dyad with a slot)."""
+    """A dyad read as k1 –J1– b1 –J2– b2 –J3– k2 (b2 None for a one-body dyad with a slot).
 
-    def __init__(self, model: Model, g: Group, points: dict, directions: dict) -> None:
-        self.points, self.directions = points, directions
+    `flip` is −1 to close the dyad on the other branch than the drawn one (an assembly)."""
+
+    def __init__(self, model: Model, g: Group, points: dict, directions: dict, flip: float = 1.0) -> None:
+        self.points, self.directions, self.flip = points, directions, flip
         self.k1, self.k2 = g.known[0], g.known[-1]
         self.b1 = g.bodies[0]
         self.b2 = g.bodies[1] if len(g.bodies) == 2 else None
@@ -243,7 +255,7 @@ def _rrr(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     (A, vA, aA), (C, vC, aC) = tr[c.k1].point(a), tr[c.k2].point(c_)
     r10, r20 = b0 - a0, b0 - c0
     l1, l2 = _abs2(r10), _abs2(r20)
-    sigma = _sign(_cross(c0 - a0, r10))
+    sigma = c.flip * _rrr_side(c)
     d = C - A
     d2 = d.real * d.real + d.imag * d.imag
     f = (d2 + (l1 - l2)) / (2 * d2)
@@ -272,7 +284,7 @@ def _rrp(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     (A, vA, aA), (Q, vQ, aQ) = tr[c.k1].point(a), g.point(b)
     r10 = b0 - a0
     l1 = _abs2(r10)
-    sigma = _sign(_dot(r10, c.along(c.j3)))
+    sigma = c.flip * _rrp_side(c)
     w = Q - A
     wu = w.real * u.real + w.imag * u.imag
     s = sigma * _root(wu * wu - (w.real * w.real + w.imag * w.imag) + l1) - wu
@@ -299,7 +311,7 @@ def _rpr(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     u0 = c.along(c.j2)
     (A, vA, aA), (C, vC, aC) = tr[c.k1].point(a), tr[c.k2].point(c_)
     d0 = _dot(c0 - a0, 1j * u0)                   # offset of the line from A, fixed in b1
-    sigma = _sign(_dot(c0 - a0, u0))
+    sigma = c.flip * _rpr_side(c)
     w = C - A
     t = sigma * _root(w.real * w.real + w.imag * w.imag - d0 * d0)
     u = w / (t + 1j * d0)                          # w = t u + d0 i u
@@ -347,6 +359,28 @@ def _body(drawn: dict, origin: str, r0: complex, length2: float, r: np.ndarray, 
 def _abs2(z):
     """|z|² of a complex number or array."""
     return z.real * z.real + z.imag * z.imag
+
+
+# which of a dyad's two closures is drawn: +1 or -1 (per design for arrays of designs) --------
+def _rrr_side(c: _Chain):
+    """+1 when the middle pin B is left of the line from A (on k1) to C (on k2)."""
+    a0, b0, c0 = c.drawn(c.j1), c.drawn(c.j2), c.drawn(c.j3)
+    return _sign(_cross(c0 - a0, b0 - a0))
+
+
+def _rrp_side(c: _Chain):
+    """+1 when the pin B is ahead of A along the guide it slides on."""
+    a0, b0 = c.drawn(c.j1), c.drawn(c.j2)
+    return _sign(_dot(b0 - a0, c.along(c.j3)))
+
+
+def _rpr_side(c: _Chain):
+    """+1 when the pin C is ahead of the pivot A along the slot that turns about A."""
+    a0, c0 = c.drawn(c.j1), c.drawn(c.j3)
+    return _sign(_dot(c0 - a0, c.along(c.j2)))
+
+
+SIDES = {"RRR": _rrr_side, "RRP": _rrp_side, "RPR": _rpr_side}     # PRP closes one way only
 
 
 def _sign(x):

@@ -41,7 +41,8 @@ class Sweeper:
     Assur groups; a sweep then costs only the positions themselves.
     """
 
-    def __init__(self, source: Any, joint: Optional[str] = None) -> None:
+    def __init__(self, source: Any, joint: Optional[str] = None,
+                 flips: Optional[dict[int, float]] = None) -> None:
         model = _as_model(source)
         symbols = [n for n, p in model.parameters.items() if p.value is None]
         if symbols:
@@ -59,7 +60,7 @@ class Sweeper:
         from ..structure.assur import assur_groups
 
         self.groups = assur_groups(model)
-        self.closed = self._closed_form()
+        self.closed = self._closed_form(flips)
         self.motions = motion_classes(model)
         self.names = [str(r) for r in model.material_points()]
         self._plans: dict[tuple, Plan] = {}
@@ -74,13 +75,14 @@ class Sweeper:
             self._plans = {key: plan}
         return self._plans[key]
 
-    def _closed_form(self) -> Any:
+    def _closed_form(self, flips: Optional[dict[int, float]] = None) -> Any:
+        """The closed form of this mechanism (dyads closed as drawn, or as `flips` say)."""
         from .closed_form import ClosedForm, applicable
 
         if not applicable(self.model, self.groups, self.joint, self.driver):
             return None
         return ClosedForm.at_drawn(self.model, self.points, self.directions, self.groups, self.joint,
-                                   self.drawn)
+                                   self.drawn, flips)
 
     def linkage(self) -> Any:
         """The four-bar or slider-crank this mechanism is (`structure.linkages`), or None."""
@@ -180,11 +182,10 @@ def motion_classes(model: Model) -> list[tuple[str, str, list[str]]]:
 
 
 def _as_model(source: Any) -> Model:
-    if isinstance(source, Model):
-        return source
-    from ..api import as_model
+    """The model to sweep: read, and posed where its file says (`move`)."""
+    from ..api import prepare
 
-    return as_model(source)
+    return prepare(source)
 
 
 def bad_row(plan: Plan, k: int, kind: str, what: str = "") -> KinematikaError:

@@ -1,0 +1,108 @@
+"""`move`: the drawn mechanism advanced along driven joints, as the sweep reaches it.
+
+`move: {j1: 30}` (or `--move j1=30`) analyses the configuration a sweep of j1 from 0 to 30
+(degrees for a revolute, length for a prismatic) reaches on the branch continuous with the
+drawn one: the sweep's last row, written back as a model (`posed`). Several joints are
+advanced one after the other, in the order given. A path that meets a dead point or
+comes apart first is an `assembly` error saying how far it got.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Any, Mapping
+
+from ..errors import KinematikaError
+from ..model.expressions import Expr, ExpressionError, evaluate, parse
+from ..model.model import Model
+from .plan import driven_joints
+
+DEGREES_PER_STEP = 1.0          # continuation steps of a revolute
+LENGTHS_PER_STEP = 0.02         # of a prismatic, in model sizes
+MAX_STEPS = 200_000
+
+
+def moved(model: Model, amounts: Mapping[str, Any]) -> Model:
+    """`model` with each joint in `amounts` advanced by its amount (numbers or expressions)."""
+    model = dataclasses.replace(model, move={})
+    for jid, raw in amounts.items():
+        where = f"move.{jid}"
+        _check_driven(model, jid, where)
+        amount = _amount(model, raw, where)
+        if amount != 0:
+            model = _advance(model, jid, amount, where)
+    return model
+
+
+def _amount(model: Model, raw: Any, where: str) -> float:
+    """The amount as a number: an expression over the parameters that have values."""
+    from ..algebra.backend import Numeric
+
+    try:
+        expr = raw if isinstance(raw, Expr) else parse(raw)
+        value = float(evaluate(expr, _numeric_parameters(model), Numeric()))
+    except ExpressionError as err:
+        raise KinematikaError("schema", f"{err} (a move is a number of degrees or lengths)",
+                              where) from None
+    if not math.isfinite(value):
+        raise KinematikaError("schema", "a move is a finite number", where)
+    return value
+
+
+def _numeric_parameters(model: Model) -> dict[str, float]:
+    """The parameters that evaluate to numbers (symbols and what depends on them left out)."""
+    from ..algebra.backend import Numeric
+
+    env: dict[str, float] = {}
+    pending = {n: p for n, p in model.parameters.items() if p.value is not None}
+    progress = True
+    while pending and progress:
+        progress = False
+        for name, p in list(pending.items()):
+            if p.value.names() <= set(env) | {"pi"}:
+                try:
+                    env[name] = float(evaluate(p.value, env, Numeric()))
+                except (ExpressionError, ValueError, OverflowError):
+                    pass
+                del pending[name]
+                progress = True
+    return env
+
+
+def _check_driven(model: Model, jid: str, where: str) -> None:
+    ids = [j.id for j in model.joints]
+    if jid not in ids:
+        raise KinematikaError("schema", f"unknown joint {jid!r} (joints: {', '.join(ids)})", where)
+    driven = driven_joints(model)
+    if jid not in driven:
+        raise KinematikaError("schema", f"joint {jid!r} is not driven; `move` advances a driven "
+                              f"joint ({', '.join(driven) or 'none here'})", where)
+
+
+def _advance(model: Model, jid: str, amount: float, where: str) -> Model:
+    if any(p.value is None for p in model.parameters.values()):
+        from .symbolic_move import symbolic_moved
+
+        return symbolic_moved(model, jid, amount, where)
+    from .posed import posed_model
+    from .run import Sweeper
+
+    sweeper = Sweeper(model, jid)
+    revolute = model.joint(jid).type == "revolute"
+    per_step = DEGREES_PER_STEP if revolute else LENGTHS_PER_STEP * sweeper.inst.scale
+    steps = min(MAX_STEPS, max(1, math.ceil(abs(amount) / per_step)))
+    result = sweeper.run(amount, steps, skip_bad=True)
+    if not result.ok.all():
+        raise _unreachable(result, jid, amount, "°" if revolute else "")
+    return posed_model(model, result, -1)
+
+
+def _unreachable(result: Any, jid: str, amount: float, unit: str) -> KinematikaError:
+    """How far the joint got before the first position that cannot be assembled."""
+    bad = int((~result.ok).nonzero()[0][0])
+    got = float(result.coordinate[max(bad - 1, 0)])
+    edges = [x for x in result.dead_points if abs(x) <= abs(amount) and x * amount >= 0]
+    if edges:
+        got = min(edges, key=abs)
+    return KinematikaError("assembly", f"{jid} cannot be moved {amount:g}{unit}: the mechanism meets "
+                           f"a dead point or comes apart after {got:.6g}{unit}", f"move.{jid}")

@@ -1,0 +1,159 @@
+"""A model at another configuration: one row of a motion written back as a model.
+
+`move` and `--assembly` analyse the mechanism somewhere other than where it is drawn. The
+position analysis (a sweep's row) gives every body's rotation and every material point's
+place; this module writes that configuration as an ordinary `Model` with numeric
+coordinates, so that every command and view works on it unchanged.
+
+A point name listed by bodies that move differently there (a pin in a slot, a contact
+point) names one location at the new instant: the pin's material point for a slot or
+knife edge, the new contact for a rolling pair, else the first moving body's material
+point. Directions fixed in a body turn with it; a direction given by two points stays so
+when both points belong to that body there.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Any, Optional
+
+import numpy as np
+
+from ..engine.contact import find_contact
+from ..engine.instant import Instant, instantiate
+from ..errors import KinematikaError
+from ..model.expressions import Expr, parse
+from ..model.model import Body, Circle, Direction, Disc, Driver, Joint, Line, Model, Plane, PointPair
+from .result import SweepResult
+
+
+def posed_model(model: Model, result: SweepResult, row: int = -1) -> Model:
+    """`model` at row `row` of `result` (a sweep of it, or its assembly search)."""
+    pose = _Pose(model, result, row)
+    points = {name: _numbers(pose.location(name)) for name in model.points}
+    posed = dataclasses.replace(
+        model, points=points, move={},
+        bodies={name: _moved_body(pose, b) for name, b in model.bodies.items()},
+        joints=[_moved_joint(pose, j) for j in model.joints],
+        drivers=[dataclasses.replace(d) for d in model.drivers])
+    return _contacts_placed(posed, pose)
+
+
+class _Pose:
+    """Rotations and material-point places of every body at one row."""
+
+    def __init__(self, model: Model, result: SweepResult, row: int) -> None:
+        self.model, self.result, self.row = model, result, row
+        self.inst = instantiate(model, False)          # the drawn instant: directions, shapes
+        self.rot = {b: _rotation(result.bodies[b]["angle"][row], model.dimension) for b in model.bodies}
+        self.owner = {name: self._owner(name) for name in model.points}
+
+    def _owner(self, point: str) -> str:
+        """The body whose material point the name stands for at the new instant."""
+        model = self.model
+        carriers = model.carriers(point)
+        classes = model.motion_classes(point, carriers)
+        if len(classes) == 1:
+            return classes[0][0]
+        for j in model.joints:
+            if j.at == point and j.type in ("slot", "wheel"):
+                return j.b
+        moving = [b for b in carriers if b != model.frame]
+        return moving[0] if moving else carriers[0]
+
+    def material(self, point: str, body: str) -> np.ndarray:
+        return np.asarray(self.result.points[f"{point}@{body}"]["position"][self.row], dtype=float)
+
+    def location(self, point: str) -> np.ndarray:
+        return self.material(point, self.owner[point])
+
+    def carried(self, body: str, drawn: tuple) -> np.ndarray:
+        """Where the material point of `body` drawn at `drawn` is now."""
+        drawn = np.asarray([float(c) for c in drawn])
+        if body == self.model.frame:
+            return drawn
+        names = self.model.bodies[body].points
+        if not names:
+            raise KinematikaError("schema", f"body {body!r} carries no point, so its shapes cannot "
+                                  "be moved: list one of its points", f"bodies.{body}")
+        ref = names[0]
+        return self.material(ref, body) + self.rot[body] @ (drawn - np.asarray(
+            [float(c) for c in self.inst.points[ref]]))
+
+    def turned(self, body: str, d: Direction, where: str) -> Direction:
+        """A direction fixed in `body`, now; two points stay two points when both are the
+        body's own material points there."""
+        if isinstance(d, PointPair) and all(self._belongs(p, body) for p in (d.start, d.end)):
+            return d
+        if body == self.model.frame and not isinstance(d, PointPair):
+            return d
+        drawn = np.asarray([float(c) for c in self.inst.direction(d, where)])
+        return _numbers(self.rot[body] @ drawn)
+
+    def _belongs(self, point: str, body: str) -> bool:
+        classes = self.model.motion_classes(point, self.model.carriers(point))
+        return any(body in c and self.owner[point] in c for c in classes)
+
+
+def _moved_body(pose: _Pose, body: Body) -> Body:
+    where = f"bodies.{body.name}"
+    shapes = []
+    for s in body.shapes:
+        if isinstance(s, (Circle, Disc)):
+            center = () if s.center_point else _numbers(pose.carried(body.name, pose.inst.vector(s.center, where)))
+            if isinstance(s, Circle):
+                shapes.append(dataclasses.replace(s, center=center))
+            else:
+                shapes.append(dataclasses.replace(s, center=center,
+                                                  axis=pose.turned(body.name, s.axis, f"{where}.disc.axis")))
+        elif isinstance(s, Line):
+            through = () if s.through_point else _numbers(pose.carried(body.name, pose.inst.vector(s.through, where)))
+            shapes.append(dataclasses.replace(s, through=through, direction=pose.turned(
+                body.name, s.direction, f"{where}.line.direction")))
+        else:
+            assert isinstance(s, Plane)
+            through = () if s.through_point else _numbers(pose.carried(body.name, pose.inst.vector(s.through, where)))
+            shapes.append(dataclasses.replace(s, through=through, normal=pose.turned(
+                body.name, s.normal, f"{where}.plane.normal")))
+    return dataclasses.replace(body, points=list(body.points), shapes=shapes)
+
+
+def _moved_joint(pose: _Pose, j: Joint) -> Joint:
+    fixed_in = j.b if j.type == "wheel" else j.a
+    along = pose.turned(fixed_in, j.along, f"{j.where}.along") if j.along is not None else None
+    axis = pose.turned(j.a, j.axis, f"{j.where}.axis") if j.axis is not None else None
+    return dataclasses.replace(j, along=along, axis=axis)
+
+
+def _contacts_placed(model: Model, pose: _Pose) -> Model:
+    """A point named as a rolling joint's contact (`at`) is the new contact."""
+    rolling = [j for j in model.joints if j.type in ("rolling", "gear") and j.at is not None]
+    if not rolling:
+        return model
+    inst = instantiate(model, False)
+    points = dict(model.points)
+    for j in rolling:
+        contact = find_contact(inst, dataclasses.replace(j, at=None))
+        points[j.at] = _numbers([float(c) for c in contact.point])
+    return dataclasses.replace(model, points=points)
+
+
+def _rotation(angle: Any, dim: int) -> np.ndarray:
+    """The rotation by `angle` (degrees; a rotation vector in 3D)."""
+    if dim == 2:
+        t = math.radians(float(angle))
+        return np.array([[math.cos(t), -math.sin(t)], [math.sin(t), math.cos(t)]])
+    from .poses import exp_rotation
+
+    return exp_rotation(np.radians(np.asarray(angle, dtype=float)))
+
+
+def _numbers(values: Any) -> tuple[Expr, ...]:
+    """Coordinates as the model's expressions (exact float literals)."""
+    out = []
+    for v in values:
+        v = float(v)
+        if not math.isfinite(v):
+            raise KinematikaError("assembly", "the mechanism cannot be assembled there")
+        out.append(parse(v + 0.0))
+    return tuple(out)
