@@ -222,6 +222,21 @@ class Model:
             classes.setdefault(find(b), []).append(b)
         return list(classes.values())
 
+    def place_owner(self, point: str) -> str:
+        """The body whose material point gives a point name's place when its carriers move
+        differently there (after a move, in a sweep's rows): the pin of a slot or knife
+        edge, else the first moving carrier. The other carriers' points named so are the
+        points of those bodies that coincide with it."""
+        carriers = self.carriers(point)
+        classes = self.motion_classes(point, carriers)
+        if len(classes) == 1:
+            return classes[0][0]
+        for j in self.joints:
+            if j.at == point and j.type in ("slot", "wheel"):
+                return j.b
+        moving = [b for b in carriers if b != self.frame]
+        return moving[0] if moving else carriers[0]
+
     @property
     def moving_bodies(self) -> list[str]:
         return [name for name in self.bodies if name != self.frame]

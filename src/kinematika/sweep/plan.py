@@ -106,11 +106,17 @@ def driven_joints(model: Model) -> dict[str, Driver]:
             if j.type in ("revolute", "prismatic"):
                 out.setdefault(j.id, d)
             continue
-        body = d.body if d.kind == "omega" else d.point.body
-        if d.relative_to not in (None, frame) or body == frame:
+        if d.relative_to not in (None, frame):
             continue
-        kinds = ("revolute",) if d.kind == "omega" else ("revolute", "prismatic")
+        if d.kind == "omega":
+            bodies, kinds = {d.body}, ("revolute",)
+        else:                        # every body whose point moves as the driven one there
+            point = d.point.point
+            bodies = next(set(c) for c in model.motion_classes(point, model.carriers(point))
+                          if d.point.body in c)
+            kinds = ("revolute", "prismatic")
         for j in model.joints:
-            if {j.a, j.b} == {body, frame} and j.type in kinds:
+            other = j.b if j.a == frame else j.a if j.b == frame else None
+            if other in bodies and other != frame and j.type in kinds:
                 out.setdefault(j.id, d)
     return out

@@ -5,25 +5,25 @@ position analysis (a sweep's row) gives every body's rotation and every material
 place; this module writes that configuration as an ordinary `Model` with numeric
 coordinates, so that every command and view works on it unchanged.
 
-A point name listed by bodies that move differently there (a pin in a slot, a contact
-point) names one location at the new instant: the pin's material point for a slot or
-knife edge, the new contact for a rolling pair, else the first moving body's material
-point. Directions fixed in a body turn with it; a direction given by two points stays so
-when both points belong to that body there.
+A point name listed by bodies that move differently there (a pin in a slot, a drawn
+contact) names one place at the new instant (`Model.place_owner`: the pin's material
+point, else the first moving carrier's); the others' points of that name are the points
+of those bodies that coincide with it, as in the sweep's rows. Directions fixed in a body
+turn with it; a direction given by two points stays so when both points belong to that
+body there. Rolling joints find their new contact themselves.
 """
 from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any, Optional
+from typing import Any
 
 import numpy as np
 
-from ..engine.contact import find_contact
-from ..engine.instant import Instant, instantiate
+from ..engine.instant import instantiate
 from ..errors import KinematikaError
 from ..model.expressions import Expr, parse
-from ..model.model import Body, Circle, Direction, Disc, Driver, Joint, Line, Model, Plane, PointPair
+from ..model.model import Body, Circle, Direction, Disc, Joint, Line, Model, Plane, PointPair
 from .result import SweepResult
 
 
@@ -46,20 +46,7 @@ class _Pose:
         self.model, self.result, self.row = model, result, row
         self.inst = instantiate(model, False)          # the drawn instant: directions, shapes
         self.rot = {b: _rotation(result.bodies[b]["angle"][row], model.dimension) for b in model.bodies}
-        self.owner = {name: self._owner(name) for name in model.points}
-
-    def _owner(self, point: str) -> str:
-        """The body whose material point the name stands for at the new instant."""
-        model = self.model
-        carriers = model.carriers(point)
-        classes = model.motion_classes(point, carriers)
-        if len(classes) == 1:
-            return classes[0][0]
-        for j in model.joints:
-            if j.at == point and j.type in ("slot", "wheel"):
-                return j.b
-        moving = [b for b in carriers if b != model.frame]
-        return moving[0] if moving else carriers[0]
+        self.owner = {name: model.place_owner(name) for name in model.points}
 
     def material(self, point: str, body: str) -> np.ndarray:
         return np.asarray(self.result.points[f"{point}@{body}"]["position"][self.row], dtype=float)
@@ -126,16 +113,10 @@ def _moved_joint(pose: _Pose, j: Joint) -> Joint:
 
 
 def _contacts_placed(model: Model, pose: _Pose) -> Model:
-    """A point named as a rolling joint's contact (`at`) is the new contact."""
-    rolling = [j for j in model.joints if j.type in ("rolling", "gear") and j.at is not None]
-    if not rolling:
-        return model
-    inst = instantiate(model, False)
-    points = dict(model.points)
-    for j in rolling:
-        contact = find_contact(inst, dataclasses.replace(j, at=None))
-        points[j.at] = _numbers([float(c) for c in contact.point])
-    return dataclasses.replace(model, points=points)
+    """Rolling joints find their new contact themselves: the point that named the drawn
+    contact (`at`) is now a material point that has rolled away."""
+    joints = [dataclasses.replace(j, at=None) if j.type in ("rolling", "gear") else j for j in model.joints]
+    return dataclasses.replace(model, joints=joints)
 
 
 def _rotation(angle: Any, dim: int) -> np.ndarray:

@@ -15,6 +15,7 @@ from ..engine.instant import instantiate
 from ..engine.system import InstantSolver
 from ..errors import KinematikaError
 from ..model.model import Model, PointRef
+from .coincident import coincide
 from .plan import Plan, make_plan, swept_joint
 from .result import QUANTITIES, SweepResult
 
@@ -136,6 +137,7 @@ class Sweeper:
             for ref in refs:
                 pts[ref] = arrays
         pts = {name: pts[name] for name in self.names}
+        coincide(self.model, ordered, pts)
         return SweepResult(plan.coordinate, plan.joint.id, ok, ordered, pts, dead,
                            plan.unit, self.model.name, self.model.dimension, self.method, self.model.frame)
 

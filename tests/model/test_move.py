@@ -1,0 +1,198 @@
+"""`move` and assemblies: against sweep rows, and against independent position analysis
+(Freudenstein's equation, the slider-crank's closed form, the limit of a non-Grashof crank)."""
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import kinematika
+from kinematika import KinematikaError
+from kinematika.api import prepare
+from kinematika.report.json_answer import solution_json
+from kinematika.sweep import run_sweep
+from kinematika.sweep.assemblies import assemblies
+
+from .test_constructions import four_bar_tree, freudenstein, norton_rates, slider_crank_tree
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+
+def moved_json(source, **move) -> dict:
+    return solution_json(kinematika.solve(source, move=move))
+
+
+@pytest.mark.parametrize("delta", [30, -75, 200, 720])
+def test_moved_four_bar_is_freudenstein_at_the_new_crank_angle(delta):
+    a, b, c, d, t0 = 2.25, 6.1, 4.35, 5.2, 52
+    js = moved_json(four_bar_tree(a, b, c, d, t0), j1=delta)
+    t2 = math.radians(t0 + delta)
+    t3, t4 = freudenstein(a, b, c, d, t2)
+    assert js["points"]["A@crank"]["position"] == pytest.approx([a * math.cos(t2), a * math.sin(t2)], abs=1e-9)
+    assert js["points"]["B@rocker"]["position"] == pytest.approx(
+        [d + c * math.cos(t4), c * math.sin(t4)], abs=1e-9)
+    expected = norton_rates(a, b, c, t2, t3, t4, 9.5, -21.0)
+    assert [x["value"] for x in js["answers"]] == pytest.approx(list(expected), rel=1e-8, abs=1e-8)
+
+
+def test_a_file_move_equals_the_option_and_set_reposes_a_constructed_model():
+    tree = four_bar_tree()
+    tree["move"] = {"j1": "10*3"}                  # an expression: 30 degrees
+    by_file = solution_json(kinematika.solve(tree))
+    tree.pop("move")
+    by_option = moved_json(tree, j1=30)
+    reposed = solution_json(kinematika.solve(tree, set={"theta": "deg(82)"}))
+    for other in (by_option, reposed):
+        for key, values in by_file["points"].items():
+            assert values["position"] == pytest.approx(other["points"][key]["position"], abs=1e-9)
+        assert [x["value"] for x in by_file["answers"]] == pytest.approx([x["value"] for x in other["answers"]])
+
+
+@pytest.mark.parametrize("name, amount", [("four_bar", 137.0), ("slider_crank", -50.0),
+                                          ("quick_return", 95.0), ("watt_six_bar", 222.0),
+                                          ("jansen_leg", 300.0), ("inverted_slider_crank", 40.0),
+                                          ("pulley_train", 33.0), ("planetary_gears", 40.0)])
+def test_move_equals_the_last_row_of_the_sweep(name, amount):
+    path = EXAMPLES / f"{name}.yaml"
+    model = kinematika.as_model(path)
+    joint = next(iter(__import__("kinematika.sweep.plan", fromlist=["x"]).driven_joints(model)))
+    row = run_sweep(path, joint=joint, by=amount, steps=max(1, int(abs(amount)))).to_json()
+    js = moved_json(path, **{joint: amount})
+    for key, values in js["points"].items():
+        for q in ("position", "velocity", "acceleration"):
+            assert values[q] == pytest.approx(row["points"][key][q][-1], rel=1e-7, abs=1e-7), (key, q)
+    for body, values in js["bodies"].items():
+        for q in ("omega", "alpha"):
+            assert values[q] == pytest.approx(row["bodies"][body][q][-1], rel=1e-7, abs=1e-7), (body, q)
+
+
+def test_move_of_a_slider():
+    # offset slider-crank driven by its slider: move the slider 1.5 back from x_C(40°)
+    tree = slider_crank_tree(theta=40)
+    tree["drivers"] = [{"velocity": "C", "along": [1, 0], "value": 2}]
+    js0 = solution_json(kinematika.solve(tree))
+    x0 = js0["points"]["C@slider"]["position"][0]
+    js = moved_json(tree, j4=-1.5)
+    x = x0 - 1.5
+    # the crank angle on the same branch: 3 cos t + sqrt(121 - (3 sin t + 2)^2) = x, near 40°
+    t = math.radians(40)
+    for _ in range(60):
+        f = 3 * math.cos(t) + math.sqrt(121 - (3 * math.sin(t) + 2) ** 2) - x
+        df = -3 * math.sin(t) - 3 * math.cos(t) * (3 * math.sin(t) + 2) / math.sqrt(121 - (3 * math.sin(t) + 2) ** 2)
+        t -= f / df
+    assert js["points"]["C@slider"]["position"] == pytest.approx([x, -2], abs=1e-9)
+    assert js["points"]["A@crank"]["position"] == pytest.approx([3 * math.cos(t), 3 * math.sin(t)], abs=1e-9)
+
+
+def test_a_slot_pin_is_one_place_and_the_rocker_point_there_its_coincident_point():
+    js = moved_json(EXAMPLES / "quick_return.yaml", j1=61)
+    for point in {k.partition("@")[0] for k in js["points"]}:   # one place per name
+        places = [v["position"] for k, v in js["points"].items() if k.partition("@")[0] == point]
+        assert all(p == pytest.approx(places[0], abs=1e-9) for p in places), point
+    # the rocker's point at the pin moves as the rocker: v = ω × (A − O4)
+    (ox, oy), (ax, ay) = js["points"]["O4@rocker"]["position"], js["points"]["A@rocker"]["position"]
+    w = js["bodies"]["rocker"]["omega"]
+    assert js["points"]["A@rocker"]["velocity"] == pytest.approx([-w * (ay - oy), w * (ax - ox)], abs=1e-9)
+
+
+def test_move_beyond_reach_says_how_far():
+    # a non-Grashof (triple-rocker) four-bar: a = 4, b = 3, c = 3, d = 5; the crank stops when
+    # coupler and rocker line up: |A O4| = b + c, cos t = (a² + d² − (b + c)²) / (2 a d)
+    tree = four_bar_tree(a=4, b=3, c=3, d=5, theta=60)
+    limit = math.degrees(math.acos((16 + 25 - 36) / 40))      # 82.82°
+    with pytest.raises(KinematikaError) as info:
+        kinematika.solve(tree, move={"j1": 60})
+    err = info.value
+    assert err.kind == "assembly" and err.where == "move.j1"
+    got = float(err.message.rsplit("after ", 1)[1].rstrip("°"))
+    assert got == pytest.approx(limit - 60, abs=0.05)
+
+
+@pytest.mark.parametrize("move, kind, where", [({"j2": 10}, "schema", "move.j2"),
+                                               ({"j9": 10}, "schema", "move.j9"),
+                                               ({"j1": "q"}, "schema", "move.j1")])
+def test_bad_moves(move, kind, where):
+    with pytest.raises(KinematikaError) as info:
+        kinematika.solve(four_bar_tree(), move=move)
+    assert (info.value.kind, info.value.where) == (kind, where)
+
+
+def test_spatial_move_of_the_rssr():
+    path = EXAMPLES / "rssr_spatial_four_bar.yaml"
+    js = moved_json(path, crank_pin=-40)
+    row = run_sweep(path, joint="crank_pin", by=-40, steps=40).to_json()
+    for key, values in js["points"].items():
+        assert values["position"] == pytest.approx(row["points"][key]["position"][-1], abs=1e-7)
+        assert values["velocity"] == pytest.approx(row["points"][key]["velocity"][-1], abs=1e-7)
+
+
+# assemblies ----------------------------------------------------------------------------------
+def test_four_bar_has_two_assemblies_open_and_crossed():
+    found = assemblies(kinematika.as_model(four_bar_tree()))
+    assert [a.number for a in found] == [1, 2] and [a.drawn for a in found] == [True, False]
+    assert found[0].closures == ["B left of A→O4"] and found[1].closures == ["B right of A→O4"]
+    _, t4 = freudenstein(2.25, 6.1, 4.35, 5.2, math.radians(52), open_circuit=False)
+    crossed = solution_json(kinematika.solve(four_bar_tree(), assembly=2))
+    assert crossed["points"]["B@rocker"]["position"] == pytest.approx(
+        [5.2 + 4.35 * math.cos(t4), 4.35 * math.sin(t4)], abs=1e-9)
+    # drawn on the other side, the same two are numbered the same way
+    other = assemblies(kinematika.as_model(four_bar_tree(side="right")))
+    assert [a.drawn for a in other] == [False, True]
+
+
+def test_watt_six_bar_has_four_and_the_numbers_do_not_depend_on_the_drawing():
+    found = assemblies(kinematika.as_model(EXAMPLES / "watt_six_bar.yaml"))
+    assert len(found) == 4 and sum(a.drawn for a in found) == 1
+    for a in found:
+        again = assemblies(a.model)
+        assert [b.closures for b in again] == [b.closures for b in found]
+        assert [b.drawn for b in again] == [b.number == a.number for b in found]
+
+
+@pytest.mark.parametrize("name, count", [("jansen_leg", 8), ("quick_return", 2), ("slider_crank", 2)])
+def test_every_assembly_keeps_every_body_rigid_and_differs_from_the_others(name, count):
+    from kinematika.engine.instant import instantiate
+
+    model = kinematika.as_model(EXAMPLES / f"{name}.yaml")
+    drawn = instantiate(model, False).points
+    found = assemblies(model)
+    assert len(found) == count and sum(a.drawn for a in found) == 1
+    places = []
+    for a in found:
+        pts = instantiate(a.model, False).points
+        for body in model.bodies.values():
+            own = [p for p in body.points          # the body's own material points, not a pin
+                   if any(body.name in c and model.place_owner(p) in c
+                          for c in model.motion_classes(p, model.carriers(p)))]
+            for p, q in zip(own, own[1:]):
+                assert math.dist(pts[p], pts[q]) == pytest.approx(math.dist(drawn[p], drawn[q]), abs=1e-9)
+        kinematika.solve(a.model)                  # each is a mechanism the engine accepts
+        places.append([c for name in sorted(pts) for c in pts[name]])
+    for i in range(len(places)):
+        for j in range(i):
+            assert max(abs(x - y) for x, y in zip(places[i], places[j])) > 1e-6
+
+
+def test_assembly_option_on_the_command_line(tmp_path):
+    out = subprocess.run([sys.executable, "-m", "kinematika", "assemblies", str(EXAMPLES / "four_bar.yaml"),
+                          "--json"], capture_output=True, text=True, check=True)
+    data = json.loads(out.stdout)
+    assert [a["number"] for a in data["assemblies"]] == [1, 2]
+    out = subprocess.run([sys.executable, "-m", "kinematika", "solve", str(EXAMPLES / "four_bar.yaml"),
+                          "--assembly", "3", "--json"], capture_output=True, text=True)
+    assert out.returncode == 2 and json.loads(out.stdout)["error"]["kind"] == "usage"
+    out = subprocess.run([sys.executable, "-m", "kinematika", "solve", str(EXAMPLES / "four_bar.yaml"),
+                          "--move", "j1", "--json"], capture_output=True, text=True)
+    assert out.returncode == 2 and json.loads(out.stdout)["error"] == {
+        "kind": "usage", "message": "--move expects NAME=VALUE, got 'j1'", "where": "--move"}
+
+
+def test_prepare_reads_text_in_any_format():
+    text = json.dumps(four_bar_tree())
+    js = solution_json(kinematika.solve(prepare(text, fmt="json", move={"j1": 30})))
+    ref = moved_json(four_bar_tree(), j1=30)
+    assert js["points"]["B@rocker"]["position"] == pytest.approx(ref["points"]["B@rocker"]["position"])
