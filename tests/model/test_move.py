@@ -196,3 +196,46 @@ def test_prepare_reads_text_in_any_format():
     js = solution_json(kinematika.solve(prepare(text, fmt="json", move={"j1": 30})))
     ref = moved_json(four_bar_tree(), j1=30)
     assert js["points"]["B@rocker"]["position"] == pytest.approx(ref["points"]["B@rocker"]["position"])
+
+
+# moving models with symbolic parameters ----------------------------------------------------
+def test_symbolic_slider_crank_moved_is_the_formula_at_the_advanced_angle():
+    import sympy
+
+    th = sympy.Symbol("theta", positive=True)
+    tree = slider_crank_tree()
+    tree["parameters"] = {"theta": None}
+    js = solution_json(kinematika.solve(tree, move={"j1": 30}))
+    vc, w_rod = (a["value"] for a in js["answers"])
+    t = th + sympy.pi / 6                           # the hand derivation at θ + 30°
+    root = sympy.sqrt(121 - (3 * sympy.sin(t) + 2) ** 2)
+    expected_w = -12 * sympy.cos(t) / root
+    formula = sympy.sympify(w_rod, locals={"theta": th})
+    for value in (0.2, 1.3, 2.9):
+        assert float(formula.subs(th, value)) == pytest.approx(float(expected_w.subs(th, value)), abs=1e-12)
+
+
+def test_a_model_symbolic_only_in_its_rates_moves_with_numbers():
+    import sympy
+
+    tree = four_bar_tree()
+    tree["parameters"]["w"] = None
+    tree["drivers"] = [{"omega": "crank", "value": "w"}]
+    js = solution_json(kinematika.solve(tree, move={"j1": 40}))
+    assert js["symbolic"] is True
+    t2 = math.radians(92)
+    t3, t4 = freudenstein(2.25, 6.1, 4.35, 5.2, t2)
+    w3, w4, _, _ = norton_rates(2.25, 6.1, 4.35, t2, t3, t4, 1.0, 0.0)
+    w = sympy.Symbol("w", positive=True)
+    got = sympy.sympify(js["answers"][0]["value"], locals={"w": w})
+    assert float(got.subs(w, 1)) == pytest.approx(w3, abs=1e-8)
+
+
+def test_a_symbolic_point_that_does_not_follow_the_input_is_refused():
+    tree = four_bar_tree()
+    tree["parameters"]["q"] = None                 # the rocker's angle a symbol, B by coordinates:
+    tree["points"]["B"] = ["d + c*cos(q)", "c*sin(q)"]      # B cannot follow the crank
+    tree["points"]["A"] = {"circles": [["O2", "a"], ["B", "b"]], "side": "right"}
+    with pytest.raises(KinematikaError) as info:
+        prepare(tree, move={"j1": 10})
+    assert info.value.where == "move.j1" and "'B'" in info.value.message

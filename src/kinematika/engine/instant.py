@@ -86,6 +86,16 @@ class Instant:
             return self.unit(sub(self.points[d.end], self.points[d.start]), where)
         return self.unit(self.vector(d, where), where)
 
+    def body_direction(self, body: str, d: m.Direction, where: str) -> tuple:
+        """A direction fixed in `body`: as written, turned with the body when the model is
+        moved (`Model.turns`); two points give it at the instant anyway."""
+        u = self.direction(d, where)
+        if self.model.turns and not isinstance(d, m.PointPair):
+            from .positions import turned
+
+            u = turned(self, body, u)
+        return u
+
     def num(self, x: Any) -> float:
         """A scalar as a float (a symbolic one at the probe values)."""
         if isinstance(x, (int, float)):
@@ -108,7 +118,7 @@ def instantiate(model: m.Model, symbolic: bool | None = None) -> Instant:
         inst.probe = _real_probe(inst.points, probe)
     inst.scale = _length_scale(inst)
     inst.ref = inst.space.zero() if use_symbols else _centroid(inst)
-    inst.shapes = {name: [_shape(inst, s, f"bodies.{name}") for s in b.shapes]
+    inst.shapes = {name: [_shape(inst, s, name) for s in b.shapes]
                    for name, b in model.bodies.items()}
     return inst
 
@@ -197,23 +207,33 @@ def _centroid(inst: Instant) -> tuple:
     return tuple(sum(c) / len(pts) for c in zip(*pts))
 
 
-def _shape(inst: Instant, s: m.Shape, where: str) -> Any:
+def _shape(inst: Instant, s: m.Shape, body: str) -> Any:
+    where = f"bodies.{body}"
     if isinstance(s, m.Circle):
-        return Circle(_at(inst, s.center, s.center_point, where), _radius(inst, s.radius, where),
+        return Circle(_at(inst, s.center, s.center_point, body), _radius(inst, s.radius, where),
                       s.center_point)
     if isinstance(s, m.Line):
-        return Line(_at(inst, s.through, s.through_point, where),
-                    inst.direction(s.direction, f"{where}.line.direction"), s.through_point)
+        return Line(_at(inst, s.through, s.through_point, body),
+                    inst.body_direction(body, s.direction, f"{where}.line.direction"), s.through_point)
     if isinstance(s, m.Disc):
-        return Disc(_at(inst, s.center, s.center_point, where), _radius(inst, s.radius, where),
-                    inst.direction(s.axis, f"{where}.disc.axis"), s.center_point)
-    return Plane(_at(inst, s.through, s.through_point, where),
-                 inst.direction(s.normal, f"{where}.plane.normal"), s.through_point)
+        return Disc(_at(inst, s.center, s.center_point, body), _radius(inst, s.radius, where),
+                    inst.body_direction(body, s.axis, f"{where}.disc.axis"), s.center_point)
+    return Plane(_at(inst, s.through, s.through_point, body),
+                 inst.body_direction(body, s.normal, f"{where}.plane.normal"), s.through_point)
 
 
-def _at(inst: Instant, coords: tuple, point: Optional[str], where: str) -> tuple:
-    """A shape's location: the named point's coordinates at the instant, or its own."""
-    return inst.points[point] if point else inst.vector(coords, where)
+def _at(inst: Instant, coords: tuple, point: Optional[str], body: str) -> tuple:
+    """A shape's location: the named point's coordinates at the instant, or its own (carried
+    with its body when the model is moved)."""
+    if point:
+        return inst.points[point]
+    p = inst.vector(coords, f"bodies.{body}")
+    for turn in inst.model.turns:
+        if turn.body == body:
+            from .positions import carry
+
+            p = carry(inst, turn, p, inst.points)
+    return p
 
 
 def _radius(inst: Instant, expr: Expr, where: str) -> Any:

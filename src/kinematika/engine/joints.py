@@ -50,7 +50,8 @@ def joint_geometry(inst: Instant, joint: Joint) -> JointGeometry:
     if joint.at is not None:
         geo.at = inst.points[joint.at]
     if joint.along is not None:
-        geo.along = inst.direction(joint.along, f"{joint.where}.along")
+        fixed_in = joint.b if joint.type == "wheel" else joint.a
+        geo.along = inst.body_direction(fixed_in, joint.along, f"{joint.where}.along")
         geo.perps = sp.perpendiculars(geo.along, bk.sqrt)
     if joint.axis is not None:
         geo.axis = inst.direction(joint.axis, f"{joint.where}.axis")

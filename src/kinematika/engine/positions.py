@@ -8,11 +8,13 @@ construction that cannot be drawn is a `geometry` error naming the point and by 
 """
 from __future__ import annotations
 
+import dataclasses
 from typing import TYPE_CHECKING, Any, Optional
 
 from ..errors import KinematikaError
 from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
                                    TwoCircles, TwoLines, construction_order)
+from ..model.expressions import parse
 
 if TYPE_CHECKING:
     from .instant import Instant
@@ -27,12 +29,57 @@ def positions(inst: "Instant") -> dict[str, tuple]:
     for name in construction_order(model.points):
         spec = model.points[name]
         where = f"points.{name}"
+        turns = [t for t in model.turns if _carried(model, name, t.body)]
+        if turns and _about_pivot(spec, turns[0]):      # a crank pin: its angle advances
+            spec = dataclasses.replace(spec, angle=parse(f"({spec.angle.text}) + ({turns[0].angle.text})"))
+            turns = turns[1:]
         if isinstance(spec, tuple):
             out[name] = inst.vector(spec, where)
         else:
             builder = _Builder(inst, out, where)
             out[name] = tuple(inst.backend.simplify(c) for c in builder.build(spec))
+        for turn in turns:
+            out[name] = carry(inst, turn, out[name], out)
     return {name: out[name] for name in model.points}
+
+
+def _about_pivot(spec: Any, turn: Any) -> bool:
+    """A polar point from the pivot a turn is about: turning it adds to its angle."""
+    return (isinstance(spec, Polar) and spec.reference is None and turn.angle is not None
+            and spec.origin == turn.pivot)
+
+
+def _carried(model: Any, point: str, body: str) -> bool:
+    """Whether `point` is placed by a material point of `body` that the frame does not hold."""
+    for members in model.motion_classes(point, model.carriers(point)):
+        if model.place_owner(point) in members:
+            return body in members and model.frame not in members
+    return False
+
+
+def carry(inst: "Instant", turn: Any, p: tuple, points: dict[str, tuple]) -> tuple:
+    """`p` carried by a `Turn`: turned about its pivot, or shifted along its direction."""
+    bk = inst.backend
+    if turn.angle is not None:
+        o = points[turn.pivot] if turn.pivot in points else inst.points[turn.pivot]
+        t = inst.value(turn.angle, "move")
+        c, s = bk.function("cos")(t), bk.function("sin")(t)
+        dx, dy = p[0] - o[0], p[1] - o[1]
+        return tuple(bk.simplify(v) for v in (o[0] + c * dx - s * dy, o[1] + s * dx + c * dy))
+    u = inst.direction(turn.along, "move")
+    d = inst.value(turn.shift, "move")
+    return tuple(bk.simplify(v) for v in (p[0] + d * u[0], p[1] + d * u[1]))
+
+
+def turned(inst: "Instant", body: str, u: tuple) -> tuple:
+    """A direction fixed in `body`, turned with it by the model's turns (unit stays unit)."""
+    bk = inst.backend
+    for turn in inst.model.turns:
+        if turn.body == body and turn.angle is not None:
+            t = inst.value(turn.angle, "move")
+            c, s = bk.function("cos")(t), bk.function("sin")(t)
+            u = (bk.simplify(c * u[0] - s * u[1]), bk.simplify(s * u[0] + c * u[1]))
+    return u
 
 
 class _Builder:

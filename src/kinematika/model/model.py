@@ -134,6 +134,19 @@ class Question:
         return f"ask[{self.index}]"
 
 
+@dataclass(frozen=True)
+class Turn:
+    """A body carried rigidly from its drawn pose by a driven joint to the frame: turned by
+    `angle` (radians) about `pivot`, or shifted by `shift` along `along`. A model with
+    symbolic parameters is moved this way (`move`), its constructions following."""
+
+    body: str
+    pivot: Optional[str] = None
+    angle: Optional[Expr] = None
+    along: Optional[Direction] = None
+    shift: Optional[Expr] = None
+
+
 @dataclass
 class Sweep:
     joint: Optional[str]
@@ -154,6 +167,7 @@ class Model:
     questions: list[Question]
     sweep: Optional[Sweep] = None
     move: dict[str, Expr] = field(default_factory=dict)    # joint id -> advance (deg or length)
+    turns: list[Turn] = field(default_factory=list)        # bodies carried from the drawing
     default_questions: bool = False   # no `ask` was written: every body and point is asked
     draw_at: dict[str, float] = field(default_factory=dict)   # figures: values of the symbols
     up: Optional[tuple[float, ...]] = None                    # figures: the vertical (3D)
