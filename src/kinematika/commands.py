@@ -65,6 +65,15 @@ def sweep_run(source: ModelLike, joint: Optional[str] = None, by: Optional[float
     return sweeper, sweeper.run(by, steps, skip_bad, progress=progress)
 
 
+def assemblies_data(source: ModelLike, how: How = AS_GIVEN) -> dict:
+    """`kinematika assemblies --json`: every assembly at the drawn input, numbered, the drawn
+    one marked, with how each dyad closes and every material point's place."""
+    from .sweep.assemblies import assemblies, assemblies_json
+
+    model = how.model(source)
+    return {"name": model.name, **assemblies_json(assemblies(model))}
+
+
 def explain_text(source: ModelLike, lang: str = "en", fmt: str = "md",
                  symbolic: Optional[bool] = None, length_unit: str = "m",
                  how: How = AS_GIVEN) -> str:

@@ -40,7 +40,7 @@ def _status(code: Any) -> int:
 
 def _application() -> Any:
     """The typer application, with every command registered (imports typer and the commands)."""
-    from . import centres, draw, explain, explore, page, solve, sweep  # noqa: F401  (each registers)
+    from . import assemblies, centres, draw, explain, explore, page, solve, sweep  # noqa: F401  (each registers)
     from .app import app
 
     return app

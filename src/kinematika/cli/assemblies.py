@@ -4,7 +4,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Optional
 
-from .app import JsonOpt, ModelArg, SetOpt, app, posed, respond
+from .app import JsonOpt, ModelArg, SetOpt, app, how, respond
 
 
 @app.command()
@@ -12,12 +12,11 @@ def assemblies(model: Path = ModelArg, as_json: bool = JsonOpt,
                sets: Optional[list[str]] = SetOpt) -> None:
     """Every assembly at the drawn input (both closures of each dyad), numbered; pick one with
     --assembly N on solve, centres, explain, draw, animate and sweep."""
-    from ..sweep.assemblies import assemblies as find, assemblies_json
+    from ..commands import assemblies_data
 
     def show(data: dict) -> None:
         from ..report.assemblies_table import print_assemblies
 
         print_assemblies(data)
 
-    respond(as_json, lambda: {"name": posed(model, sets).name,
-                              **assemblies_json(find(posed(model, sets)))}, show)
+    respond(as_json, lambda: assemblies_data(model, how(sets)), show)

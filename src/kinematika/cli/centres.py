@@ -3,11 +3,15 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .app import JsonOpt, ModelArg, SymbolicOpt, app
+from typing import Optional
+
+from .app import AssemblyOpt, JsonOpt, ModelArg, MoveOpt, SetOpt, SymbolicOpt, app, how
 from .run import centres_command
 
 
 @app.command()
-def centres(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = SymbolicOpt) -> None:
+def centres(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = SymbolicOpt,
+          sets: Optional[list[str]] = SetOpt, moves: Optional[list[str]] = MoveOpt,
+          assembly: Optional[int] = AssemblyOpt) -> None:
     """All instant centres (planar), marking those found from joints and by Aronhold–Kennedy."""
-    centres_command(model, as_json, symbolic)
+    centres_command(model, as_json, symbolic, lambda: how(sets, moves, assembly))

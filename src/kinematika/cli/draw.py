@@ -7,7 +7,7 @@ from typing import Optional
 import typer
 
 from ..text import shown
-from .app import ModelArg, app
+from .app import AssemblyOpt, ModelArg, MoveOpt, SetOpt, app, how
 from .shared import guarded, options_named, output_file, sweep_options, writing
 
 VIEWS = ("iso", "top", "front", "side")
@@ -26,18 +26,12 @@ def _check_output(output: Path, formats: tuple[str, ...]) -> None:
                                  f"{', '.join('.' + f for f in formats)}", param_hint="'-o'")
 
 
-def _model(model: Path, assignments: Optional[list[str]]):
-    """The model with `--set` values applied."""
-    from ..commands import How
-    from ..model.overrides import parse_assignments
-
-    return How(set=parse_assignments(assignments or [])).model(model)
+def _model(model: Path, sets: Optional[list[str]], moves: Optional[list[str]], assembly: Optional[int]):
+    """The model with `--set`, `--assembly` and `--move` applied."""
+    return how(sets, moves, assembly).model(model)
 
 
 OutputOpt = typer.Option(..., "-o", "--output", help="the file to write", show_default=False)
-SetOpt = typer.Option(None, "--set", metavar="NAME=VALUE",
-                      help="give a parameter a value (repeatable); a symbolic model is otherwise "
-                           "drawn at generic values of its symbols")
 WidthOpt = typer.Option(8.0, "--width", min=1.0, max=100.0, help="figure width in inches")
 
 
@@ -61,6 +55,8 @@ def draw(
         None, "--points", help="the points to draw vectors at (comma-separated, repeatable)"),
     view: str = typer.Option("iso", "--view", help="3D projection: iso, top, front or side"),
     assignments: Optional[list[str]] = SetOpt,
+    moves: Optional[list[str]] = MoveOpt,
+    assembly: Optional[int] = AssemblyOpt,
     width: float = WidthOpt,
 ) -> None:
     """The mechanism at its instant, with vectors, instant centres and curvature (PNG, SVG, PDF)."""
@@ -78,7 +74,7 @@ def draw(
                               width=width)
         target = output_file(output, "-o")
         with writing(target, "-o"):
-            draw_figure(_model(model, assignments), target, options)
+            draw_figure(_model(model, assignments, moves, assembly), target, options)
         return output
 
     guarded(False, work)
@@ -102,6 +98,8 @@ def animate(
         None, "--trace", help="points whose paths are traced (default: the asked points)"),
     skip_bad: bool = typer.Option(False, "--skip-bad", help="skip positions that cannot be assembled"),
     assignments: Optional[list[str]] = SetOpt,
+    moves: Optional[list[str]] = MoveOpt,
+    assembly: Optional[int] = AssemblyOpt,
     width: float = typer.Option(8.0, "--width", min=1.0, max=50.0,
                                 help="frame width in inches (100 pixels an inch)"),
 ) -> None:
@@ -117,8 +115,8 @@ def animate(
         options = DrawOptions(velocities=velocities, accelerations=accelerations, width=width)
         target = output_file(output, "-o")
         with writing(target, "-o"), options_named(sweep_options(joint, by, steps)):
-            return render(_model(model, assignments), target, joint=joint, by=by, steps=steps,
-                          frames=frames, fps=fps, options=options, trace=_names(trace),
+            return render(_model(model, assignments, moves, assembly), target, joint=joint, by=by,
+                          steps=steps, frames=frames, fps=fps, options=options, trace=_names(trace),
                           skip_bad=skip_bad, progress=True)
 
     guarded(False, work)

@@ -6,7 +6,7 @@ from typing import Optional
 
 import typer
 
-from .app import ModelArg, SymbolicOpt, app
+from .app import AssemblyOpt, ModelArg, MoveOpt, SetOpt, SymbolicOpt, app, how
 from .shared import guarded, output_file, writing
 
 LangOpt = typer.Option("en", "--lang", help="language: en, es, ca or eu")
@@ -18,11 +18,13 @@ UnitOpt = typer.Option("m", "--length-unit", help="the name of the model's lengt
 @app.command()
 def explain(model: Path = ModelArg, lang: str = LangOpt, fmt: str = FormatOpt,
             output: Optional[Path] = OutOpt, symbolic: bool = SymbolicOpt,
-            length_unit: str = UnitOpt) -> None:
+            length_unit: str = UnitOpt, sets: Optional[list[str]] = SetOpt,
+            moves: Optional[list[str]] = MoveOpt, assembly: Optional[int] = AssemblyOpt) -> None:
     """Step-by-step solution: structure, vector equations with M/D/?, polygons, centres."""
     from ..commands import explain_text
 
-    text = guarded(False, lambda: explain_text(model, lang, fmt, symbolic or None, length_unit))
+    text = guarded(False, lambda: explain_text(model, lang, fmt, symbolic or None, length_unit,
+                                                     how(sets, moves, assembly)))
     if output is None:
         typer.echo(text, nl=False)
         return

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
-from typing import Optional
+from typing import Any, Optional
 
 from ..errors import KinematikaError
 from ..text import shown
@@ -14,37 +14,44 @@ from .shared import guarded, options_named, output_file, respond, sweep_options,
 SWEEP_FORMATS = ("json", "csv", "npz", "parquet")
 
 
-def solve_command(model: Path, as_json: bool = False, symbolic: bool = False) -> None:
+def solve_command(model: Path, as_json: bool = False, symbolic: bool = False, how: Any = None) -> None:
     """Velocity and acceleration of every point and body at the instant, and the answers."""
-    from ..commands import solve_data
+    from ..commands import AS_GIVEN, solve_data
 
     def show(data: dict) -> None:
         from ..report.tables import print_solution
 
         print_solution(data)
 
-    respond(as_json, lambda: solve_data(model, symbolic or None), show)
+    respond(as_json, lambda: solve_data(model, symbolic or None, _how(how) or AS_GIVEN), show)
 
 
-def centres_command(model: Path, as_json: bool = False, symbolic: bool = False) -> None:
+def centres_command(model: Path, as_json: bool = False, symbolic: bool = False, how: Any = None) -> None:
     """All instant centres (planar), marking those found from joints and by Aronhold–Kennedy."""
-    from ..commands import centres_data
+    from ..commands import AS_GIVEN, centres_data
     from ..report.centres_table import print_centres
 
-    respond(as_json, lambda: centres_data(model, symbolic or None), print_centres)
+    respond(as_json, lambda: centres_data(model, symbolic or None, _how(how) or AS_GIVEN), print_centres)
+
+
+def _how(how: Any) -> Any:
+    """`how` as `commands.How`: given, or built lazily by the typer commands (a callable, so
+    that a malformed --set is reported like every other error)."""
+    return how() if callable(how) else how
 
 
 def sweep_command(model: Path, joint: Optional[str] = None, by: Optional[float] = None,
                   steps: Optional[int] = None, as_json: bool = False, csv: Optional[Path] = None,
                   skip_bad: bool = False, plot: Optional[Path] = None,
-                  output: Optional[Path] = None, fmt: Optional[str] = None) -> None:
+                  output: Optional[Path] = None, fmt: Optional[str] = None, how: Any = None) -> None:
     """Positions, velocities and accelerations over a range of a driven joint."""
-    from ..commands import sweep_run
+    from ..commands import AS_GIVEN, sweep_run
 
     kind = guarded(as_json, lambda: _format(output, fmt))
     def run():
         with options_named(sweep_options(joint, by, steps)):
-            return sweep_run(model, joint, by, steps, skip_bad, progress=not as_json)
+            return sweep_run(model, joint, by, steps, skip_bad, progress=not as_json,
+                             how=_how(how) or AS_GIVEN)
 
     sweeper, result = guarded(as_json, run)
     if csv is not None:

@@ -3,11 +3,15 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .app import JsonOpt, ModelArg, SymbolicOpt, app
+from typing import Optional
+
+from .app import AssemblyOpt, JsonOpt, ModelArg, MoveOpt, SetOpt, SymbolicOpt, app, how
 from .run import solve_command
 
 
 @app.command()
-def solve(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = SymbolicOpt) -> None:
+def solve(model: Path = ModelArg, as_json: bool = JsonOpt, symbolic: bool = SymbolicOpt,
+          sets: Optional[list[str]] = SetOpt, moves: Optional[list[str]] = MoveOpt,
+          assembly: Optional[int] = AssemblyOpt) -> None:
     """Velocity and acceleration of every point and body at the instant, and the answers."""
-    solve_command(model, as_json, symbolic)
+    solve_command(model, as_json, symbolic, lambda: how(sets, moves, assembly))

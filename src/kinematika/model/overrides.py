@@ -13,17 +13,6 @@ from .expressions import ExpressionError, parse
 from .model import Model, Parameter
 
 
-def parse_assignments(items: list[str]) -> dict[str, str]:
-    """`["r=0.1", "w=10"]` as a mapping; a malformed item is a schema error."""
-    out = {}
-    for item in items:
-        name, sep, value = item.partition("=")
-        if not sep or not name.strip() or not value.strip():
-            raise KinematikaError("schema", f"--set expects NAME=VALUE, got {item!r}", "--set")
-        out[name.strip()] = value.strip()
-    return out
-
-
 def with_parameters(model: Model, values: dict[str, str]) -> Model:
     """A copy of `model` with the named parameters set to `values`."""
     if not values:
@@ -32,7 +21,7 @@ def with_parameters(model: Model, values: dict[str, str]) -> Model:
     for name, text in values.items():
         if name not in params:
             known = ", ".join(params) or "none"
-            raise KinematikaError("schema", f"unknown parameter {name!r} (parameters: {known})",
+            raise KinematikaError("usage", f"unknown parameter {name!r} (parameters: {known})",
                                   "--set")
         try:
             expr = parse(text)
