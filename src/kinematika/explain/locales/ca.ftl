@@ -43,8 +43,20 @@ joint-weld = unió rígida
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
 fig-mechanism = El mecanisme en aquest instant, a escala; fletxes: velocitats dels punts (proporcionals).
-fig-polygon_v = Polígon de velocitats des del pol o, a escala: en negre els termes coneguts, en vermell els trobats en aquest pas, en blau el resultat.
-fig-polygon_a = Polígon d’acceleracions des del pol o, a escala: en negre els termes coneguts, en vermell els trobats en aquest pas, en blau el resultat.
+fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts: en negre els termes coneguts{ $unknown ->
+        [1] , en vermell els trobats en aquest pas
+       *[other] {""}
+    }{ $result ->
+        [1] , en blau el resultat
+       *[other] {""}
+    }.
+fig-polygon_a = Polígon d’acceleracions des del pol o, a escala, amb els vèrtexs imatges dels punts: en negre els termes coneguts{ $unknown ->
+        [1] , en vermell els trobats en aquest pas
+       *[other] {""}
+    }{ $result ->
+        [1] , en blau el resultat
+       *[other] {""}
+    }.
 fig-sample = Dibuixat amb valors de mostra dels símbols.
 sec-order = Ordre de resolució
 order-assur = El mecanisme es descompon en les seves entrades i grups d’Assur (díades); cada grup es resol a partir de sòlids ja coneguts:

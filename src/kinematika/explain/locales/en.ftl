@@ -43,8 +43,20 @@ joint-weld = weld
 joint-spherical = spherical
 joint-cylindrical = cylindrical
 fig-mechanism = The mechanism at this instant, to scale; arrows: velocities of the points (proportional).
-fig-polygon_v = Velocity polygon from the pole o, to scale: known terms in black, terms found in this step in red, the result in blue.
-fig-polygon_a = Acceleration polygon from the pole o, to scale: known terms in black, terms found in this step in red, the result in blue.
+fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points: known terms in black{ $unknown ->
+        [1] , terms found in this step in red
+       *[other] {""}
+    }{ $result ->
+        [1] , the result in blue
+       *[other] {""}
+    }.
+fig-polygon_a = Acceleration polygon from the pole o, to scale, its vertices the images of the points: known terms in black{ $unknown ->
+        [1] , terms found in this step in red
+       *[other] {""}
+    }{ $result ->
+        [1] , the result in blue
+       *[other] {""}
+    }.
 fig-sample = Drawn at sample values of the symbols.
 sec-order = Order of solution
 order-assur = The mechanism is decomposed into its inputs and Assur groups (dyads); each group is solved from bodies already known:

@@ -43,8 +43,20 @@ joint-weld = unión rígida
 joint-spherical = esférico
 joint-cylindrical = cilíndrico
 fig-mechanism = El mecanismo en este instante, a escala; flechas: velocidades de los puntos (proporcionales).
-fig-polygon_v = Polígono de velocidades desde el polo o, a escala: en negro los términos conocidos, en rojo los hallados en este paso, en azul el resultado.
-fig-polygon_a = Polígono de aceleraciones desde el polo o, a escala: en negro los términos conocidos, en rojo los hallados en este paso, en azul el resultado.
+fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos: en negro los términos conocidos{ $unknown ->
+        [1] , en rojo los hallados en este paso
+       *[other] {""}
+    }{ $result ->
+        [1] , en azul el resultado
+       *[other] {""}
+    }.
+fig-polygon_a = Polígono de aceleraciones desde el polo o, a escala, con los vértices imágenes de los puntos: en negro los términos conocidos{ $unknown ->
+        [1] , en rojo los hallados en este paso
+       *[other] {""}
+    }{ $result ->
+        [1] , en azul el resultado
+       *[other] {""}
+    }.
 fig-sample = Dibujado con valores de muestra de los símbolos.
 sec-order = Orden de resolución
 order-assur = El mecanismo se descompone en sus entradas y grupos de Assur (díadas); cada grupo se resuelve a partir de sólidos ya conocidos:

@@ -43,8 +43,20 @@ joint-weld = lotura zurruna
 joint-spherical = esferikoa
 joint-cylindrical = zilindrikoa
 fig-mechanism = Mekanismoa une honetan, eskalan; geziak: puntuen abiadurak (proportzionalak).
-fig-polygon_v = Abiaduren poligonoa o polotik, eskalan: beltzez termino ezagunak, gorriz urrats honetan aurkitutakoak, urdinez emaitza.
-fig-polygon_a = Azelerazioen poligonoa o polotik, eskalan: beltzez termino ezagunak, gorriz urrats honetan aurkitutakoak, urdinez emaitza.
+fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik: beltzez termino ezagunak{ $unknown ->
+        [1] , gorriz urrats honetan aurkitutakoak
+       *[other] {""}
+    }{ $result ->
+        [1] , urdinez emaitza
+       *[other] {""}
+    }.
+fig-polygon_a = Azelerazioen poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik: beltzez termino ezagunak{ $unknown ->
+        [1] , gorriz urrats honetan aurkitutakoak
+       *[other] {""}
+    }{ $result ->
+        [1] , urdinez emaitza
+       *[other] {""}
+    }.
 fig-sample = Ikurren lagin-balioekin marraztua.
 sec-order = Ebazpen-ordena
 order-assur = Mekanismoa bere sarreretan eta Assur taldeetan (diadetan) deskonposatzen da; talde bakoitza jadanik ezagunak diren solidoetatik ebazten da:

@@ -1,0 +1,47 @@
+"""Render the six explanations of docs/explain.md as HTML, then PNG through headless Chromium.
+
+    .venv/bin/python docs/explain/render.py [LANG]
+
+Writes docs/explain/NAME.LANG.html and NAME.LANG.png (a full-page screenshot, trimmed).
+"""
+from __future__ import annotations
+
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+from PIL import Image, ImageChops
+
+from kinematika.explain import explain
+
+HERE = Path(__file__).resolve().parent
+EXAMPLES = HERE.parents[1] / "examples"
+SIX = {"seed_c5_1_4_epicyclic": "en", "quick_return": "eu", "seed_c5_2_1_tricycle": "ca",
+       "tractor_trailer": "es", "triad_six_bar": "en", "spherical_four_bar": "ca"}
+FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+         "--disable-component-update", "--disable-sync", "--no-first-run", "--hide-scrollbars"]
+
+
+def shoot(html: Path, png: Path, width: int = 1000, height: int = 30000) -> None:
+    with tempfile.TemporaryDirectory() as profile:
+        subprocess.run(["chromium", *FLAGS, f"--user-data-dir={profile}", f"--screenshot={png}",
+                        f"--window-size={width},{height}", html.as_uri()], check=True, capture_output=True)
+    image = Image.open(png).convert("RGB")
+    box = ImageChops.difference(image, Image.new("RGB", image.size, "white")).getbbox()
+    page = image.crop((0, 0, width, min(height, box[3] + 40)))
+    page.quantize(colors=64).save(png, optimize=True)
+
+
+def main() -> None:
+    only = sys.argv[1] if len(sys.argv) > 1 else None
+    for name, lang in SIX.items():
+        lang = only or lang
+        html = HERE / f"{name}.{lang}.html"
+        html.write_text(explain(EXAMPLES / f"{name}.yaml", lang=lang, fmt="html"), encoding="utf-8")
+        shoot(html, HERE / f"{name}.{lang}.png")
+        print(html.with_suffix(".png").name)
+
+
+if __name__ == "__main__":
+    main()
