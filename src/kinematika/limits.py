@@ -32,6 +32,14 @@ SWEEP_VALUES = 20_000_000    # rows × numbers per row held at once (about 1 GB 
 # symbolic work ----------------------------------------------------------------------------
 SYMBOLIC_SECONDS = 15.0      # wall-clock time for exact formulas (KINEMATIKA_SYMBOLIC_SECONDS overrides)
 
+# the page's server (`kinematika app`) -----------------------------------------------------
+REQUEST_BYTES = FILE_BYTES   # a request's body (a model's text and a few options); 413 beyond
+REQUEST_SECONDS = 30.0       # a request's computation; 503 beyond (the work is bounded anyway)
+SERVER_THREADS = 4           # computations at once in a server process, off its event loop
+WAITING = 256                # requests waiting for a thread before the server answers 503 (busy)
+PAGE_SWEEP_STEPS = 20_000    # increments of a sweep asked through the API
+ANSWER_CACHE_BYTES = 64_000_000   # answers kept for identical requests (a class opening one example)
+
 # messages ---------------------------------------------------------------------------------
 MESSAGE_CHARS = 200          # an error message is one line, cut beyond this (with …)
 WHERE_CHARS = 120            # an error's place (a file path, `joints[2] (j3)`) likewise

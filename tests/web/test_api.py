@@ -109,9 +109,9 @@ def test_bad_requests_answer_400_with_the_contract_error(client, body, kind, whe
 
 
 def test_a_body_over_the_limit_answers_413(client):
-    from kinematika.web import limits
+    from kinematika import limits
 
-    big = json.dumps({"model": "#" * (limits.MAX_BODY + 10)})
+    big = json.dumps({"model": "#" * (limits.REQUEST_BYTES + 10)})
     answer = client.post("/api/solve", content=big, headers={"content-type": "application/json"})
     assert answer.status_code == 413
     assert answer.json()["error"]["kind"] == "syntax"

@@ -50,7 +50,7 @@ def serve(
 
 def _start(model: Optional[Path]):
     """The model named on the command line, read once (the only file the server reads)."""
-    from ..model.files import FORMATS, MAX_BYTES
+    from ..model.files import FORMATS, read_bytes
     from ..web.server import Start
 
     if model is None:
@@ -60,13 +60,10 @@ def _start(model: Optional[Path]):
         raise KinematikaError("syntax", f"unknown file type {model.suffix or '(none)'!r}: a model "
                               f"file ends in {', '.join(FORMATS)}", str(model))
     try:
-        if model.stat().st_size > MAX_BYTES:
-            raise KinematikaError("syntax", "the file is too large for a model", str(model))
-        text = model.read_text(encoding="utf-8-sig")
-    except FileNotFoundError:
-        raise KinematikaError("syntax", f"no such file: {model}", str(model)) from None
-    except (OSError, UnicodeDecodeError) as err:
-        raise KinematikaError("syntax", f"cannot read {model}: {err}", str(model)) from None
+        text = read_bytes(model, str(model)).decode("utf-8-sig")
+    except UnicodeDecodeError as err:
+        raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})",
+                              str(model)) from None
     return Start(text=text, fmt=fmt, name=model.name)
 
 

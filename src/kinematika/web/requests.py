@@ -16,7 +16,7 @@ from typing import Any, Optional
 
 from ..commands import How
 from ..errors import KinematikaError
-from .limits import MAX_STEPS
+from ..limits import PAGE_SWEEP_STEPS
 
 FORMATS = ("yaml", "toml", "json")
 COMMON = ("model", "format", "set", "move", "assembly", "lang")
@@ -83,7 +83,7 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
     if endpoint == "sweep":
         out["joint"] = _text(body, "joint")
         out["by"] = _number(body, "by")
-        out["steps"] = _integer(body, "steps", None, low=1, high=MAX_STEPS)
+        out["steps"] = _integer(body, "steps", None, low=1, high=PAGE_SWEEP_STEPS)
         out["skip_bad"] = bool(_flag(body, "skip_bad"))
     elif endpoint == "explain":
         out["length_unit"] = _text(body, "length_unit") or "m"

@@ -28,12 +28,17 @@ def scene_data(scene: Scene) -> dict[str, Any]:
         "view": scene.projection.view,
         "bodies": {name: {"number": b.number, "colour": b.colour, "frame": b.frame,
                           "points": {p: _floats(xy) for p, xy in b.points.items()},
-                          "shapes": [_plain(s) for s in b.shapes]}
+                          "shapes": [_plain(s) for s in b.shapes],
+                          "skeleton": [_floats(line) for line in getattr(b, "skeleton", [])],
+                          "passing": list(getattr(b, "passing", []))}
                    for name, b in scene.bodies.items()},
         "joints": [_plain(j) for j in scene.joints],
         "vectors": [{**_plain(v), "key": v.key, "label": runs(v.label)} for v in scene.vectors],
         "marks": [{**_plain(m), "label": runs(m.label)} for m in scene.marks],
         "kennedy": [_plain(k) for k in scene.kennedy],
+        "normals": [_plain(k) for k in getattr(scene, "normals", [])],
+        "sphere": _value(getattr(scene, "sphere", None)),
+        "numbered": bool(getattr(scene, "numbered", False)),
         "curvatures": [{**_plain(c), "label": runs(c.label)} for c in scene.curvatures],
         "axes": [_plain(a) for a in scene.axes],
         "notes": [_unmath(n) for n in scene.notes],

@@ -25,7 +25,7 @@ from starlette.staticfiles import StaticFiles
 
 from .. import commands
 from ..errors import KinematikaError
-from . import limits
+from .. import limits
 from .requests import Request, parse_body
 
 ENDPOINTS = ("solve", "sweep", "centres", "explain", "draw", "edit")
@@ -66,12 +66,12 @@ def bundled_examples() -> dict[str, str]:
 
 
 def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
-               workers: int = limits.WORKERS) -> Starlette:
+               workers: int = limits.SERVER_THREADS) -> Starlette:
     """The application: the page, its static files and the JSON API. `hosts`: the host names
     requests may be addressed to (a guard against DNS rebinding); None accepts any."""
     start = start if start is not None else Start(examples=bundled_examples())
     pool = anyio.CapacityLimiter(workers)
-    cache = Answers(limits.CACHE_BYTES)
+    cache = Answers(limits.ANSWER_CACHE_BYTES)
 
     async def page(_: HttpRequest) -> Response:
         return FileResponse(str(STATIC / "index.html"), headers=SECURITY)
@@ -98,9 +98,9 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
                 if kept is not None:
                     status, media, body = kept
                 else:
-                    if pool.statistics().tasks_waiting >= limits.MAX_WAITING:
-                        raise Failure(503, "busy", "the server is busy: try again in a moment")
-                    with anyio.fail_after(limits.MAX_SECONDS):
+                    if pool.statistics().tasks_waiting >= limits.WAITING:
+                        raise Failure(503, "limit", "the server is busy: try again in a moment")
+                    with anyio.fail_after(limits.REQUEST_SECONDS):
                         status, media, body = await anyio.to_thread.run_sync(
                             _compute, req, limiter=pool, abandon_on_cancel=True)
                     if status == 200:
@@ -111,7 +111,7 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
                 return _failure(err)
             except TimeoutError:
                 return _failure(Failure(503, "limit", f"the computation took longer than "
-                                        f"{limits.MAX_SECONDS:g} s and was given up", endpoint))
+                                        f"{limits.REQUEST_SECONDS:g} s and was given up", endpoint))
             return Response(body, status_code=status, media_type=media, headers=SECURITY)
         return handle
 
@@ -132,7 +132,7 @@ def from_environment() -> Starlette:
     given = json.loads(os.environ.get(ENVIRONMENT, "{}"))
     start = Start(given.get("text", ""), given.get("fmt", "yaml"), given.get("name", ""),
                   bundled_examples())
-    return create_app(start, hosts=given.get("hosts"), workers=given.get("threads", limits.WORKERS))
+    return create_app(start, hosts=given.get("hosts"), workers=given.get("threads", limits.SERVER_THREADS))
 
 
 class Answers:
@@ -163,19 +163,19 @@ class Answers:
 
 
 async def _read_body(request: HttpRequest) -> bytes:
-    """The body, refused (413) past `limits.MAX_BODY` bytes before more is read; a body
+    """The body, refused (413) past `limits.REQUEST_BYTES` bytes before more is read; a body
     that is not declared JSON is refused (415): browsers then ask before a cross-site post."""
     kind = request.headers.get("content-type", "").split(";")[0].strip().lower()
     if kind != "application/json":
         raise Failure(415, "usage", "send the request as JSON (Content-Type: application/json)",
                       "request")
     declared = request.headers.get("content-length")
-    if declared is not None and declared.isdigit() and int(declared) > limits.MAX_BODY:
+    if declared is not None and declared.isdigit() and int(declared) > limits.REQUEST_BYTES:
         raise _too_large(int(declared))
     chunks, size = [], 0
     async for chunk in request.stream():
         size += len(chunk)
-        if size > limits.MAX_BODY:
+        if size > limits.REQUEST_BYTES:
             raise _too_large(size)
         chunks.append(chunk)
     return b"".join(chunks)
@@ -183,7 +183,7 @@ async def _read_body(request: HttpRequest) -> bytes:
 
 def _too_large(size: int) -> Failure:
     return Failure(413, "syntax", f"the request is too large ({size} bytes; at most "
-                   f"{limits.MAX_BODY})", "request")
+                   f"{limits.REQUEST_BYTES})", "request")
 
 
 def _error(status: int, body: dict) -> Response:

@@ -125,13 +125,23 @@ export class Figure {
 
   paintBodies() {
     const s = this.scene;
+    if (s.sphere) {
+      const [c, r] = s.sphere;
+      el("circle", { cx: c[0], cy: -c[1], r, fill: "none", stroke: "#bdbdbd", "stroke-dasharray": "4 3" }, this.g.ground);
+    }
     for (const [name, b] of Object.entries(s.bodies)) {
       if (b.frame) {
         for (const shape of b.shapes) this.groundShape(shape);
+        for (const line of b.skeleton || []) this.bar(this.g.ground, line, s.style.ground, 3);
         continue;
       }
       const g = this.bodyGroup(name);
       this.anchors[name] = this.anchor(name, b);
+      if (b.skeleton && b.skeleton.length) {       // a carrier's arms, a chassis, a 3D body's bars
+        for (const shape of b.shapes) this.movingShape(g, b, shape);
+        for (const line of b.skeleton) this.bar(g, line, b.colour, 8);
+        continue;
+      }
       const pts = distinct(Object.values(b.points), 1e-9 * this.size);
       const wheels = b.shapes.filter((x) => x.kind === "circle" && !x.ring);
       for (const shape of b.shapes) this.movingShape(g, b, shape);
@@ -152,6 +162,11 @@ export class Figure {
                      "stroke-linecap": "round", class: "shape" }, g);
       }
     }
+  }
+
+  bar(g, line, colour, width) {
+    el("polyline", { points: poly(line), fill: "none", stroke: colour, "stroke-opacity": 0.9, "stroke-width": width,
+                     "stroke-linecap": "round", "stroke-linejoin": "round", class: "shape" }, g);
   }
 
   /** The material point a body's placement follows: its first swept point. */
@@ -405,15 +420,16 @@ export class Figure {
     this.overlayParts = { centres: el("g", { class: "centres" }, g), curvature: el("g", { class: "curvature" }, g),
                           vectors: el("g", { class: "relative" }, this.g.overlay) };
     const far = 10 * this.size;
-    for (const k of s.kennedy) {
-      const d = unit(k.direction);
+    for (const k of [...s.kennedy, ...(s.normals || [])]) {     // Kennedy lines; wheel and slot normals
+      const d = unit(k.direction), normal = k.key.startsWith("normal:");
       el("line", { ...seg(add(k.through, mul(d, -far)), add(k.through, mul(d, far))), stroke: st.centre,
-                   "stroke-width": 0.9, "stroke-dasharray": "6 4", "stroke-opacity": 0.8, "data-kennedy": k.key },
+                   "stroke-width": normal ? 1.1 : 0.9, "stroke-dasharray": normal ? "8 3 1.5 3" : "6 4",
+                   "stroke-opacity": 0.8, [normal ? "data-normal" : "data-kennedy"]: k.key },
          this.overlayParts.centres);
     }
     const [x0, y0, x1, y1] = this.view, inset = 14 * this.px;
     for (const m of s.marks) {
-      if (!m.point) continue;
+      if (!m.point || m.rest) continue;
       const colour = m.kind === "pole" ? st.acceleration : m.kind === "contact" ? st.ink : st.centre;
       const inside = m.point[0] >= x0 && m.point[0] <= x1 && m.point[1] >= y0 && m.point[1] <= y1;
       const p = inside ? m.point : [clamp(m.point[0], x0 + inset, x1 - inset), clamp(m.point[1], y0 + inset, y1 - inset)];
