@@ -5,8 +5,8 @@ from __future__ import annotations
 import signal
 import threading
 import time
-from contextlib import contextmanager
-from typing import Any, Iterator
+from contextlib import contextmanager, nullcontext
+from typing import Any, ContextManager, Iterator
 
 from .errors import KinematikaError
 from .limits import symbolic_seconds
@@ -38,7 +38,7 @@ def budget(what: str, seconds: float | None = None) -> Iterator[None]:
     end = time.monotonic() + seconds
     if stack:
         end = min(end, stack[-1][0])
-    stack.append((end, what, seconds))
+    stack.append([end, what, seconds, ""])
     alarm = _arm(end) if len(stack) == 1 else None
     try:
         yield
@@ -48,17 +48,28 @@ def budget(what: str, seconds: float | None = None) -> Iterator[None]:
             _disarm(alarm)
 
 
+def exact_work(model: Any, symbolic: bool | None = None) -> ContextManager:
+    """The time budget of the work on `model` when it is solved with exact formulas (asked
+    with `symbolic`, or a parameter without a value); numbers need none."""
+    exact = bool(symbolic) or any(p.value is None for p in model.parameters.values())
+    return budget("the exact formulas") if exact else nullcontext()
+
+
 def check(stage: str = "") -> None:
-    """Raise `OverBudget` if the current time budget is spent (no budget: nothing)."""
+    """Raise `OverBudget` if the current time budget is spent (no budget: nothing); `stage`
+    names the work under way, for the message."""
     stack = _state()
-    if stack and time.monotonic() > stack[-1][0]:
-        raise _over(stage)
+    if stack:
+        if stage:
+            stack[-1][3] = stage
+        if time.monotonic() > stack[-1][0]:
+            raise _over()
 
 
-def _over(stage: str = "") -> OverBudget:
-    _, what, seconds = _state()[-1]
-    at = f" (while {stage})" if stage else ""
-    return OverBudget("limit", f"{what} take longer than {seconds:g} s{at}: the formulas are too "
+def _over() -> OverBudget:
+    _, what, seconds, stage = _state()[-1]
+    at = f" ({stage})" if stage else ""
+    return OverBudget("limit", f"finding {what} takes longer than {seconds:g} s{at}: they are too "
                       "large; give some parameters numbers, or solve without --symbolic", "")
 
 

@@ -41,17 +41,23 @@ def json_text(data: Any) -> str:
 def solve_data(source: ModelLike, symbolic: Optional[bool] = None, how: How = AS_GIVEN) -> dict:
     """`kinematika solve --json`: the contract's answer."""
     from .api import solve
+    from .budget import exact_work
     from .report.json_answer import solution_json
 
-    return solution_json(solve(how.model(source), symbolic))
+    model = how.model(source)
+    with exact_work(model, symbolic):
+        return solution_json(solve(model, symbolic))
 
 
 def centres_data(source: ModelLike, symbolic: Optional[bool] = None, how: How = AS_GIVEN) -> dict:
     """`kinematika centres --json`: every instant centre and how it is found."""
     from .api import solve
+    from .budget import exact_work
     from .report.centres_table import centres_data as table
 
-    return table(solve(how.model(source), symbolic))
+    model = how.model(source)
+    with exact_work(model, symbolic):
+        return table(solve(model, symbolic))
 
 
 def sweep_run(source: ModelLike, joint: Optional[str] = None, by: Optional[float] = None,
@@ -78,9 +84,12 @@ def explain_text(source: ModelLike, lang: str = "en", fmt: str = "md",
                  symbolic: Optional[bool] = None, length_unit: str = "m",
                  how: How = AS_GIVEN) -> str:
     """`kinematika explain`: the step-by-step solution in `fmt` (md, html, tex)."""
+    from .budget import exact_work
     from .explain import explain
 
-    return explain(how.model(source), lang, fmt, symbolic, length_unit)
+    model = how.model(source)
+    with exact_work(model, symbolic):
+        return explain(model, lang, fmt, symbolic, length_unit)
 
 
 def draw_scene(source: ModelLike, options: Any = None, how: How = AS_GIVEN) -> Any:

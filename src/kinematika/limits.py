@@ -27,7 +27,7 @@ DEGREE = 60                  # degree of a formula in the symbols (r**1000, (w +
 
 # sweeps -----------------------------------------------------------------------------------
 SWEEP_STEPS = 10_000_000     # increments of one sweep
-SWEEP_VALUES = 20_000_000    # rows × numbers per row held at once (about 1 GB with the answer's text)
+SWEEP_VALUES = 5_000_000     # rows × numbers per row held at once (under 1 GB on every path)
 
 # symbolic work ----------------------------------------------------------------------------
 SYMBOLIC_SECONDS = 15.0      # wall-clock time for exact formulas (KINEMATIKA_SYMBOLIC_SECONDS overrides)

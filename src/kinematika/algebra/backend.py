@@ -10,7 +10,9 @@ import math
 import random
 from typing import Any, Callable
 
+from .. import limits
 from ..model.expressions import ExpressionError
+from ..text import brief
 
 
 class Numeric:
@@ -35,7 +37,7 @@ class Numeric:
 
     def check(self, value: Any, source: str) -> Any:
         if isinstance(value, float) and not math.isfinite(value):
-            raise ExpressionError(f"in {source!r}: the value is not finite")
+            raise ExpressionError(f"in {brief(source)}: the value is not finite")
         return value
 
     def symbol(self, name: str, positive: bool = True) -> float:
@@ -56,7 +58,7 @@ def _real_sqrt(x: float) -> float:
     return math.sqrt(x)
 
 
-MAX_BITS = 2048   # integers in an exact number (about 600 digits, beyond the range of floats)
+MAX_BITS = int(limits.EXACT_DIGITS * math.log2(10)) + 1   # integers of an exact number
 
 
 def _radians(x: Any) -> Any:
@@ -78,9 +80,14 @@ class Symbolic:
         self.pi = sympy.pi
 
     def number(self, value: int | float) -> Any:
-        if isinstance(value, int):
-            return self.sp.Integer(value)
-        return self.sp.Rational(repr(value))
+        """A number written in the model, exactly (0.1 is 1/10); at most `limits.EXACT_DIGITS`
+        digits above and below the fraction bar, so that exact work stays bounded."""
+        exact = self.sp.Integer(value) if isinstance(value, int) else self.sp.Rational(repr(value))
+        if max(abs(exact.p), exact.q).bit_length() > MAX_BITS:
+            raise ExpressionError(f"the number {brief(value, 30)} has too many digits for exact "
+                                  f"formulas (more than {limits.EXACT_DIGITS} as a fraction): round "
+                                  "it, or solve with numbers")
+        return exact
 
     def function(self, name: str) -> Callable[..., Any]:
         sp = self.sp
@@ -93,21 +100,26 @@ class Symbolic:
         return table[name]
 
     def check(self, value: Any, source: str) -> Any:
-        """A value must be finite; a number must also be real, in the range of floats and
-        written with integers of at most `MAX_BITS` bits, so that evaluation stays bounded."""
+        """A value must be finite, its exact numbers of at most `limits.EXACT_DIGITS` digits
+        and its degree in the symbols at most `limits.DEGREE`; a number must also be real
+        and in the range of floats, so that exact work stays bounded."""
         sp = self.sp
         if not isinstance(value, sp.Basic):
             return value
         if value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
-            raise ExpressionError(f"in {source!r}: the value is not finite")
-        if not value.is_number:
-            return value
+            raise ExpressionError(f"in {brief(source)}: the value is not finite")
         if any(max(abs(r.p), r.q).bit_length() > MAX_BITS for r in value.atoms(sp.Rational)):
-            raise ExpressionError(f"in {source!r}: the value has too many digits to compute exactly")
+            raise ExpressionError(f"in {brief(source)}: the value has too many digits for exact "
+                                  f"formulas (more than {limits.EXACT_DIGITS})")
+        if not value.is_number:
+            if degree(value) > limits.DEGREE:
+                raise ExpressionError(f"in {brief(source)}: the formula's degree in the symbols is "
+                                      f"above {limits.DEGREE}: too high for exact formulas")
+            return value
         if value.is_real is False:
-            raise ExpressionError(f"in {source!r}: the value is not real")
+            raise ExpressionError(f"in {brief(source)}: the value is not real")
         if not math.isfinite(abs(complex(value))):
-            raise ExpressionError(f"in {source!r}: the value is too large")
+            raise ExpressionError(f"in {brief(source)}: the value is too large")
         return value
 
     def symbol(self, name: str, positive: bool = True) -> Any:
@@ -140,6 +152,26 @@ class Symbolic:
             value = float(self.sp.sympify(e).xreplace(probe))
             if abs(value - x) > 1e-6 * (1 + abs(x)):
                 raise ArithmeticError(f"exact solution {e} disagrees with the numeric one {x}")
+
+
+def degree(e: Any, memo: dict | None = None) -> int:
+    """An upper bound of the degree of formula `e` in its symbols (a power's degree times
+    its exponent, a product's the sum of its factors'), without expanding anything."""
+    memo = {} if memo is None else memo
+    if e in memo:
+        return memo[e]
+    if e.is_Symbol:
+        out = 1
+    elif e.is_Atom or e.is_number:
+        out = 0
+    elif e.is_Pow and e.exp.is_Rational:
+        out = degree(e.base, memo) * math.ceil(abs(e.exp))
+    elif e.is_Mul:
+        out = sum(degree(a, memo) for a in e.args)
+    else:
+        out = max((degree(a, memo) for a in e.args), default=0)
+    memo[e] = out
+    return out
 
 
 def probe_values(symbols: list[Any], seed: int = 7) -> dict[Any, float]:

@@ -112,6 +112,9 @@ def canonical(e: Any) -> Any:
     """`e` as a quotient of coprime expanded polynomials, factored for reading."""
     import sympy
 
+    from ..budget import check
+
+    check("simplifying the formulas")
     e = sympy.sympify(e)
     return e if e.is_Atom else _canonical(e)
 

@@ -97,6 +97,9 @@ class InstantSolver:
                                   "drivers")
         if not inst.symbolic:
             return x_num.tolist()
+        from ..budget import check as within_budget
+
+        within_budget("solving the equations exactly")
         exact = solve_symbolic(self.analysis, self.a_sym, b, self.a_num)
         inst.backend.check_against(exact, x_num, inst.probe)
         return exact

@@ -8,6 +8,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, Iterable, Optional
 
 from ..errors import KinematikaError
+from ..text import names as name_list
 from . import shape
 from .constructions import Construction, ConstructionReader, construction_order
 from .expressions import Expr, ExpressionError, parse
@@ -228,8 +229,10 @@ class _Builder:
         out: list[Joint] = []
         ids: set[str] = set()
         for i, raw in enumerate(self.spec.joints):
-            jid = raw.id or f"j{i + 1}"
+            jid = raw.id if raw.id is not None else f"j{i + 1}"
             where = f"joints[{i}] ({jid})"
+            if not jid.strip():
+                raise KinematikaError("schema", "a joint id is not empty", f"joints[{i}].id")
             if jid in ids:
                 raise KinematikaError("schema", f"joint id {jid!r} is used twice", where)
             ids.add(jid)
@@ -287,7 +290,8 @@ class _Builder:
         where = f"drivers[{i}]"
         if hasattr(raw, "omega"):                # an OmegaDriver (schema's or shape's)
             body = self.known_body(raw.omega, f"{where}.omega")
-            rel = self.known_body(raw.relative_to, f"{where}.relative_to") if raw.relative_to else None
+            rel = (None if raw.relative_to is None else
+                   self.known_body(raw.relative_to, f"{where}.relative_to"))
             return Driver("omega", i, body=body, relative_to=rel,
                           value=self.angular(raw.value, f"{where}.value"),
                           accel=self.angular(raw.alpha, f"{where}.alpha"))
@@ -307,7 +311,7 @@ class _Builder:
             return Driver("joint", i, joint=raw.joint, value=self.expr(raw.rate, f"{where}.rate"),
                           accel=self.expr(raw.accel, f"{where}.accel"))
         point = self.point_ref(raw.velocity, f"{where}.velocity")
-        rel = self.known_body(raw.relative_to, f"{where}.relative_to") if raw.relative_to else None
+        rel = None if raw.relative_to is None else self.known_body(raw.relative_to, f"{where}.relative_to")
         if raw.along is not None:
             along = self.direction(raw.along, f"{where}.along")
             return Driver("velocity", i, point=point, relative_to=rel, along=along,
@@ -368,7 +372,7 @@ class _Builder:
                                   f"{', '.join(shape.QUESTION_KINDS)}", where)
         kind = kinds[0]
         text = getattr(raw, kind)
-        rel = self.known_body(raw.relative_to, f"{where}.relative_to") if raw.relative_to else None
+        rel = None if raw.relative_to is None else self.known_body(raw.relative_to, f"{where}.relative_to")
         echo = raw.model_dump(exclude_none=True)
         if kind in {"velocity", "acceleration", "curvature", "decompose", "intrinsic"}:
             target: Any = self.point_ref(text, f"{where}.{kind}")
@@ -420,7 +424,7 @@ class _Builder:
 
 
 def _names(items: Iterable[str]) -> str:
-    return ", ".join(items)
+    return name_list(items)
 
 
 # pydantic errors as one line -------------------------------------------------------------

@@ -4,19 +4,26 @@ A model file is untrusted input, so expression strings go through Python's parse
 (``ast.parse`` builds a tree and executes nothing); every node of the tree must be a
 number, a name, an arithmetic operator or a call of a whitelisted function. The tree is
 then evaluated by an algebra backend, on floats or on sympy symbols.
+
+Names are matched exactly as written. Python's parser would fold identifiers to their NFKC
+form (𝑟 → r, ﬁ → fi) and refuses keywords (`lambda`), so every identifier is replaced by a
+plain placeholder before parsing and restored in the tree afterwards: `𝑟` and `r`, `lambda`
+and any other text are distinct names, each meaning only itself.
 """
 from __future__ import annotations
 
 import ast
-import keyword
 import math
 import re
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
-MAX_LENGTH = 2000
-MAX_DEPTH = 60
-MAX_EXPONENT = 1000   # |y| in x**y when y is a number: exact powers stay quick to compute
+from .. import limits
+from ..text import brief
+
+MAX_LENGTH = limits.EXPRESSION_CHARS
+MAX_DEPTH = limits.EXPRESSION_DEPTH
+MAX_EXPONENT = limits.EXPONENT      # |y| in x**y when y is a number: exact powers stay quick to compute
 
 FUNCTIONS = {
     "sqrt": 1, "cbrt": 1, "sin": 1, "cos": 1, "tan": 1, "asin": 1, "acos": 1, "atan": 1,
@@ -28,20 +35,51 @@ CONSTANTS = ("pi",)
 _BINARY = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/", ast.Pow: "**", ast.BitXor: "**"}
 _UNARY = {ast.USub: "-", ast.UAdd: "+"}
 
-
-_KEYWORDS = re.compile(r"\b(" + "|".join(keyword.kwlist) + r")\b")
-_MANGLE = "_kw_{}_"
-
-
-def _mangle(source: str) -> str:
-    """Rename Python keywords (`lambda`, `in`, `is`) so that they parse as plain names."""
-    return _KEYWORDS.sub(lambda m: _MANGLE.format(m.group(1)), source)
+# a numeric literal as Python reads it (so that `2e-3` is not read as a name `e`)
+_NUMBER = re.compile(r"0[xXoObB][0-9a-fA-F_]*|(?:[0-9][0-9_]*(?:\.[0-9_]*)?|\.[0-9][0-9_]*)"
+                     r"(?:[eE][+-]?[0-9_]+)?[jJ]?")
 
 
-def _unmangle(name: str) -> str:
-    if name.startswith("_kw_") and name.endswith("_") and keyword.iskeyword(name[4:-1]):
-        return name[4:-1]
-    return name
+def _placeholders(source: str) -> tuple[str, dict[str, str]]:
+    """`source` with each identifier replaced by a placeholder `v0`, `v1`, … (the same
+    identifier by the same one), and the placeholders' identifiers as written."""
+    out: list[str] = []
+    names: dict[str, str] = {}
+    index: dict[str, str] = {}
+    i, n = 0, len(source)
+    while i < n:
+        c = source[i]
+        if c.isascii() and (c.isdigit() or (c == "." and source[i + 1:i + 2].isdigit())):
+            match = _NUMBER.match(source, i)
+            out.append(match.group())
+            i = match.end()
+        elif c == "_" or c.isidentifier():
+            j = i + 1
+            while j < n and ("_" + source[j]).isidentifier():
+                j += 1
+            name = source[i:j]
+            if name not in index:
+                index[name] = f"v{len(index)}"
+                names[index[name]] = name
+            out.append(index[name])
+            i = j
+        else:
+            out.append(c)
+            i += 1
+    return "".join(out), names
+
+
+def _restore(tree: ast.AST, names: dict[str, str], source: str) -> None:
+    """The identifiers as written, back in the parsed tree."""
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Name):
+            if node.id not in names:
+                raise ExpressionError(f"cannot read expression {brief(source)}")
+            node.id = names[node.id]
+        elif isinstance(node, ast.Attribute):
+            node.attr = names.get(node.attr, node.attr)
+        elif isinstance(node, ast.keyword) and node.arg is not None:
+            node.arg = names.get(node.arg, node.arg)
 
 
 class ExpressionError(ValueError):
@@ -65,36 +103,38 @@ class Expr:
 def parse(text: str | int | float) -> Expr:
     """Parse a number or an expression string into a checked `Expr`."""
     if isinstance(text, bool):
-        raise ExpressionError(f"expected a number or an expression, got {text!r}")
+        raise ExpressionError(f"expected a number or an expression, got {brief(text)}")
     if isinstance(text, (int, float)):
         if not _finite(text):
-            got = repr(text) if isinstance(text, float) else f"an integer of {len(str(abs(text)))} digits"
+            got = repr(text) if isinstance(text, float) else f"an integer of {text.bit_length()} bits"
             raise ExpressionError(f"expected a finite number in the range of floats, got {got}")
         return Expr(repr(text), ast.Constant(text))
     if not isinstance(text, str):
-        raise ExpressionError(f"expected a number or an expression, got {text!r}")
+        raise ExpressionError(f"expected a number or an expression, got {brief(text)}")
     source = text.strip()
     if not source:
         raise ExpressionError("empty expression")
     if len(source) > MAX_LENGTH:
         raise ExpressionError(f"expression longer than {MAX_LENGTH} characters")
+    plain, names = _placeholders(source)
     try:
-        tree = ast.parse(_mangle(source), mode="eval").body
+        tree = ast.parse(plain, mode="eval").body
     except (SyntaxError, ValueError, RecursionError, MemoryError) as err:
         detail = getattr(err, "msg", None) or "unreadable"
-        raise ExpressionError(f"cannot read expression {source!r}: {detail}") from None
+        raise ExpressionError(f"cannot read expression {brief(source)}: {detail}") from None
+    _restore(tree, names, source)
     _check(tree, source, 0)
     return Expr(source, tree)
 
 
 def _check(node: ast.AST, source: str, depth: int) -> None:
     if depth > MAX_DEPTH:
-        raise ExpressionError(f"expression {source!r} is nested too deeply")
+        raise ExpressionError(f"expression {brief(source)} is nested too deeply")
     if isinstance(node, ast.Constant):
         if isinstance(node.value, bool) or not isinstance(node.value, (int, float)):
-            raise ExpressionError(f"in {source!r}: only numbers may be written as constants")
+            raise ExpressionError(f"in {brief(source)}: only numbers may be written as constants")
         if not _finite(node.value):
-            raise ExpressionError(f"in {source!r}: a number is too large")
+            raise ExpressionError(f"in {brief(source)}: a number is too large")
         return
     if isinstance(node, ast.Name):
         return
@@ -108,14 +148,14 @@ def _check(node: ast.AST, source: str, depth: int) -> None:
     if isinstance(node, ast.Call):
         name = node.func.id if isinstance(node.func, ast.Name) else None
         if name not in FUNCTIONS:
-            raise ExpressionError(f"in {source!r}: unknown function {ast.unparse(node.func)!r} "
+            raise ExpressionError(f"in {brief(source)}: unknown function {brief(ast.unparse(node.func))} "
                                   f"(known: {', '.join(sorted(FUNCTIONS))})")
         if node.keywords or len(node.args) != FUNCTIONS[name]:
-            raise ExpressionError(f"in {source!r}: {name} takes {FUNCTIONS[name]} argument(s)")
+            raise ExpressionError(f"in {brief(source)}: {name} takes {FUNCTIONS[name]} argument(s)")
         for arg in node.args:
             _check(arg, source, depth + 1)
         return
-    raise ExpressionError(f"in {source!r}: {ast.unparse(node)!r} is not allowed in an expression")
+    raise ExpressionError(f"in {brief(source)}: {brief(ast.unparse(node))} is not allowed in an expression")
 
 
 def _finite(value: int | float) -> bool:
@@ -128,7 +168,7 @@ def _finite(value: int | float) -> bool:
 
 def _collect_names(node: ast.AST, out: set[str]) -> None:
     if isinstance(node, ast.Name):
-        out.add(_unmangle(node.id))
+        out.add(node.id)
     elif isinstance(node, ast.BinOp):
         _collect_names(node.left, out)
         _collect_names(node.right, out)
@@ -148,12 +188,12 @@ def _eval(node: ast.AST, env: Mapping[str, Any], backend: Any, source: str) -> A
     if isinstance(node, ast.Constant):
         return backend.number(node.value)
     if isinstance(node, ast.Name):
-        name = _unmangle(node.id)
+        name = node.id
         if name in env:
             return env[name]
         if name in CONSTANTS:
             return backend.pi
-        raise ExpressionError(f"in {source!r}: unknown name {name!r} (not a parameter)")
+        raise ExpressionError(f"in {brief(source)}: unknown name {brief(name)} (not a parameter)")
     if isinstance(node, ast.UnaryOp):
         value = _eval(node.operand, env, backend, source)
         return -value if isinstance(node.op, ast.USub) else value
@@ -165,8 +205,10 @@ def _eval(node: ast.AST, env: Mapping[str, Any], backend: Any, source: str) -> A
     args = [_eval(a, env, backend, source) for a in node.args]
     try:
         result = backend.function(node.func.id)(*args)
+        if isinstance(result, float) and result == 0 and node.func.id == "exp":
+            raise OverflowError("the value is too small for floating-point numbers")
     except (ValueError, ZeroDivisionError, OverflowError) as err:
-        raise ExpressionError(f"in {source!r}: {node.func.id} cannot be evaluated ({err})") from None
+        raise ExpressionError(f"in {brief(source)}: {node.func.id} cannot be evaluated ({err})") from None
     return backend.check(result, source)
 
 
@@ -186,14 +228,18 @@ def _magnitude(value: Any) -> float:
 
 def _binary(op: str, left: Any, right: Any, backend: Any, source: str) -> Any:
     if op == "**" and not getattr(right, "free_symbols", None) and _magnitude(right) > MAX_EXPONENT:
-        raise ExpressionError(f"in {source!r}: the exponent {_magnitude(right):g} is too large "
+        raise ExpressionError(f"in {brief(source)}: the exponent {_magnitude(right):g} is too large "
                               f"(at most {MAX_EXPONENT} in absolute value)")
     try:
         result = _OPS[op](left, right)
     except ZeroDivisionError:
-        raise ExpressionError(f"in {source!r}: division by zero") from None
+        raise ExpressionError(f"in {brief(source)}: division by zero") from None
     except OverflowError:
-        raise ExpressionError(f"in {source!r}: the value is too large") from None
+        raise ExpressionError(f"in {brief(source)}: the value is too large") from None
     if isinstance(result, complex):
-        raise ExpressionError(f"in {source!r}: the value is not real")
+        raise ExpressionError(f"in {brief(source)}: the value is not real")
+    if isinstance(result, float) and result == 0 and left != 0 and (op != "*" or right != 0) \
+            and op in ("*", "/", "**"):
+        raise ExpressionError(f"in {brief(source)}: the value is too small for floating-point "
+                              "numbers (it would be taken as 0)")
     return backend.check(result, source)

@@ -144,8 +144,9 @@ def _too_deep(where: str, line: int | None = None) -> KinematikaError:
 
 
 def check_tree(tree: Any, where: str = "") -> None:
-    """A parsed tree within the nesting limit, its texts encodable (no lone surrogates from
-    a JSON or YAML escape such as \\ud800): walked without recursion."""
+    """A parsed tree within the nesting limit, its keys (names) within `limits.NAME_CHARS`,
+    its texts encodable (no lone surrogates from a JSON or YAML escape such as \\ud800):
+    walked without recursion."""
     stack = [(tree, 0)]
     while stack:
         node, depth = stack.pop()
@@ -154,6 +155,10 @@ def check_tree(tree: Any, where: str = "") -> None:
                 _check_unicode(node, where)
             continue
         if isinstance(node, dict):
+            long = next((k for k in node if isinstance(k, str) and len(k) > limits.NAME_CHARS), None)
+            if long is not None:
+                raise KinematikaError("syntax", f"the name {brief(long, 30)} has {len(long)} "
+                                      f"characters: names have at most {limits.NAME_CHARS}", where)
             children = [*node.keys(), *node.values()]
         elif isinstance(node, list):
             children = node

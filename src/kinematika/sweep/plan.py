@@ -14,13 +14,14 @@ from typing import Optional
 
 import numpy as np
 
+from .. import limits
 from ..errors import KinematikaError
 from ..engine.instant import Instant
 from ..model.model import Driver, Joint, Model
 
 DEFAULT_BY = 360.0
 DEFAULT_STEPS = 360
-MAX_STEPS = 10_000_000   # rows held in memory at once: about 1 GB for a four-bar
+MAX_STEPS = limits.SWEEP_STEPS
 
 
 @dataclass
@@ -69,11 +70,24 @@ def make_plan(inst: Instant, joint: Optional[str] = None, by: Optional[float] = 
     if not 1 <= steps <= MAX_STEPS:
         raise KinematikaError("schema", f"steps must be between 1 and {MAX_STEPS}, got {steps}",
                               "sweep.steps")
+    per_row = values_per_row(model)
+    if (steps + 1) * per_row > limits.SWEEP_VALUES:
+        raise KinematikaError("schema", f"{steps} steps of {per_row} values each are more than a sweep "
+                              f"holds ({limits.SWEEP_VALUES} values): take at most "
+                              f"{max(limits.SWEEP_VALUES // per_row - 1, 1)} steps", "sweep.steps")
     if isinstance(by, bool) or not isinstance(by, numbers.Real):
         raise KinematikaError("schema", f"by must be a number, got {by!r}", "sweep.by")
     if not math.isfinite(by):
         raise KinematikaError("schema", "by must be a finite number", "sweep.by")
     return Plan(j, driver, float(by), int(steps))
+
+
+def values_per_row(model: Model) -> int:
+    """The numbers a sweep keeps per row: each body's angle, ω and α, each material point's
+    position, velocity and acceleration (vectors of the model's dimension)."""
+    dim = model.dimension
+    turn = 1 if dim == 2 else 3
+    return 3 * turn * len(model.bodies) + 3 * dim * len(model.material_points())
 
 
 def swept_joint(model: Model, joint: Optional[str]) -> tuple[Joint, Driver]:
