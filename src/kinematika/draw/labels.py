@@ -201,16 +201,17 @@ class Layout:
             centres = (boxes[far, :2] + boxes[far, 2:]) / 2
             cost[far] += LEADER_CROSS * _segments_hit(anchors[i], centres, placed)
         # placed labels' leaders across me, and my leader across theirs
-        centres = (boxes[:, :2] + boxes[:, 2:]) / 2
-        for j in others:
-            bj = cands[j]
-            if bj[1][choice[j]] >= LEADER:
-                cj = (bj[0][choice[j], :2] + bj[0][choice[j], 2:]) / 2
-                pts = anchors[j] + np.linspace(0.1, 0.9, 9)[:, None] * (cj - anchors[j])
-                cost += LEADER_CROSS * _covered(boxes, pts, np.ones(len(pts)), 0.0) / 3
-                if far.any():
-                    cost[far] += LEADER_CROSS * _crossing(anchors[i], centres[far],
-                                                          anchors[j], cj)
+        lead = [j for j in others if cands[j][1][choice[j]] >= LEADER]
+        if lead:
+            starts = anchors[lead]
+            ends = np.array([(cands[j][0][choice[j], :2] + cands[j][0][choice[j], 2:]) / 2
+                             for j in lead])
+            t = np.linspace(0.1, 0.9, 9)[None, :, None]
+            pts = (starts[:, None, :] + t * (ends - starts)[:, None, :]).reshape(-1, 2)
+            cost += LEADER_CROSS * _covered(boxes, pts, np.ones(len(pts)), 0.0) / 3
+            if far.any():
+                mine = (boxes[far, :2] + boxes[far, 2:]) / 2
+                cost[far] += LEADER_CROSS * _crossing(anchors[i], mine, starts, ends)
         return cost
 
 
@@ -276,14 +277,15 @@ def _segments_hit(start: np.ndarray, ends: np.ndarray, boxes: np.ndarray) -> np.
     return inside.any(axis=1).sum(axis=1).astype(float)
 
 
-def _crossing(p: np.ndarray, qs: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """1 where the segment p→q (for each q) crosses the segment a→b, else 0."""
+def _crossing(p: np.ndarray, qs: np.ndarray, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """For each segment p→q (q in `qs`), how many of the segments starts→ends it crosses."""
     def side(o, u, v):
         return (u[..., 0] - o[..., 0]) * (v[..., 1] - o[..., 1]) - \
             (u[..., 1] - o[..., 1]) * (v[..., 0] - o[..., 0])
-    d1, d2 = side(a, b, p), side(a, b, qs)
-    d3, d4 = side(p, qs, a), side(p, qs, b)
-    return ((d1 * d2 < 0) & (d3 * d4 < 0)).astype(float)
+    q = qs[:, None, :]                                  # (K, 1, 2) against (M, 2)
+    d1, d2 = side(starts, ends, p), side(starts, ends, q)
+    d3, d4 = side(p, q, starts), side(p, q, ends)
+    return ((d1 * d2 < 0) & (d3 * d4 < 0)).sum(axis=1).astype(float)
 
 
 def _annotation(ax: Any, p: Placement) -> Any:
