@@ -9,10 +9,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from kinematika.draw import DrawOptions, draw
 from kinematika.draw.labels import LabelBoard, text_extent
+from kinematika.errors import KinematikaError
 
 from properties.mechanisms import linkages
 from .artists import label_faults, outside_faults
@@ -32,6 +34,29 @@ def test_every_example_reads(path):
 @given(linkages)
 def test_random_linkages_read(m):
     fig = draw(m.tree, options=CROWDED)
+    assert label_faults(fig) == []
+    assert outside_faults(fig) == []
+
+
+SYMBOLIC = [p for p in EXAMPLES if "draw_at" in p.read_text(encoding="utf-8")]
+
+
+@settings(max_examples=12)
+@given(st.sampled_from(SYMBOLIC), st.data())
+def test_symbolic_examples_at_other_sizes_read(path, data):
+    """Models of the examples' kinds: each symbolic example drawn at its draw_at values
+    scaled by random factors (other proportions of the same mechanism)."""
+    import dataclasses
+
+    from kinematika.api import as_model
+
+    model = as_model(path)
+    scaled = {name: value * data.draw(st.floats(0.6, 1.6), label=name)
+              for name, value in model.draw_at.items()}
+    try:
+        fig = draw(dataclasses.replace(model, draw_at=scaled), options=CROWDED)
+    except KinematikaError:
+        assume(False)                     # proportions at which the mechanism cannot be
     assert label_faults(fig) == []
     assert outside_faults(fig) == []
 
