@@ -93,7 +93,7 @@ def loop_blocks(ctx: Ctx) -> list:
                     rel = ctx.omega(x, y) if level == "w" else ctx.alpha(x, y)
                     rate = dot(tuple(ctx.space.rot_components(rel)), tuple(axis))
                     unit = "rate" if level == "w" else "rate2"
-                    out.append(Derived(Sym("θ̇" if level == "w" else "θ̈", jj.id, vector=False), [],
+                    out.append(Derived(Sym("ω" if level == "w" else "α", jj.id, vector=False), [],
                                        ctx.value(rate, unit)))
     return out
 
@@ -123,11 +123,11 @@ def _loop_equation(ctx: Ctx, loop: list, driven: set, level: str) -> Equation:
         if level == "w":
             value = _rot(ctx, ctx.omega(x, y), unit)
             side.append(Term(omega_sym(x, y, vector=True), value, Ann("M") if known else Ann("?"), along,
-                             [Sym("θ̇", j.id, vector=False), " ", Sym("u", j.id)], not known, "rate"))
+                             [Sym("ω", j.id, vector=False), " ", Sym("u", j.id)], not known, "rate"))
             continue
         value = _rot(ctx, ctx.alpha(x, y), unit)
         side.append(Term(alpha_sym(x, y, vector=True), value, Ann("M") if known else Ann("?"), along,
-                         [Sym("θ̈", j.id, vector=False), " ", Sym("u", j.id)], not known, "rate"))
+                         [Sym("α", j.id, vector=False), " ", Sym("u", j.id)], not known, "rate"))
         if y == ctx.frame:
             continue
         cross = ctx.space.cross_ww(ctx.omega(y), ctx.omega(x, y))

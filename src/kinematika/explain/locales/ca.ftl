@@ -261,7 +261,7 @@ triad-intro = { $body } està subjectat per tres barres binàries, { $links }: c
     }:
 triad-collinear = A cada membre els dos termes desconeguts són perpendiculars a una mateixa recta ({ $point } és a { $l1 } i a { $l3 }), de manera que cada membre té un sol mòdul desconegut: dues incògnites, i el polígon es tanca.
 triad-closure = Conegut { $point } com a punt de la barra ternària, la seva articulació { $pin } es tanca com en una díade:
-loop-intro = Els sòlids { $bodies } tanquen un llaç: en recórrer-lo, les velocitats angulars relatives sumen zero, cadascuna segons l’eix del seu enllaç (tres equacions escalars per a les velocitats θ̇ desconegudes):
+loop-intro = Els sòlids { $bodies } tanquen un llaç: en recórrer-lo, les velocitats angulars relatives sumen zero, cadascuna segons l’eix del seu enllaç (tres equacions escalars per a les velocitats ω_j desconegudes segons els eixos u_j):
 loop-solve = Les tres components donen les velocitats desconegudes:
-loop-solve_alpha = Derivant en els eixos fixos, les acceleracions angulars relatives i els termes ω × ω_rel sumen zero al llarg del llaç; les tres components donen les θ̈ desconegudes:
+loop-solve_alpha = Derivant en els eixos fixos, les acceleracions angulars relatives i els termes ω × ω_rel sumen zero al llarg del llaç; les tres components donen les α_j desconegudes:
 dir-axis = eix { $joint }
