@@ -323,3 +323,19 @@ def test_constructions_are_planar():
     tree["points"]["O4"] = [5.2, 0, 0]
     err = error_of(tree)
     assert err.kind == "schema" and "planar" in err.message
+
+
+def test_a_rounded_point_off_its_slot_says_the_tolerance_and_the_fix():
+    tree = {"points": {"O2": [-1, 0], "O4": [0, -1], "A": [0.00001, 0], "B": [0, 2]},
+            "bodies": {"ground": ["O2", "O4"], "crank": ["O2", "A"], "rocker": ["O4", "A", "B"]},
+            "joints": [{"type": "revolute", "bodies": ["ground", "crank"], "at": "O2"},
+                       {"type": "revolute", "bodies": ["ground", "rocker"], "at": "O4"},
+                       {"type": "slot", "bodies": ["rocker", "crank"], "at": "A", "along": ["O4", "B"]}],
+            "drivers": [{"omega": "crank", "value": 1}]}
+    err = error_of(tree)
+    assert err.kind == "geometry" and err.where == "joints[2] (j3)"
+    assert "gap -1e-05, more than the tolerance" in err.message
+    assert "write A by construction, or with more digits" in err.message
+    tree["points"]["A"] = {"lines": [["O2", [1, 0]], ["O4", "B"]]}      # the same point, constructed
+    # by hand: v_A = ω k × (A − O2) = (0, 1), along the slot x = 0, so the rocker does not turn
+    assert kinematika.solve(tree).omega("rocker") == pytest.approx(0, abs=1e-12)

@@ -49,13 +49,17 @@ def find_contact(inst: Instant, joint: Joint) -> Contact:
     gap, contact = min(candidates, key=lambda c: abs(c[0]))
     tol = 1e-6 * inst.scale
     if abs(gap) > tol:
-        raise KinematikaError("geometry", f"{joint.b!r} does not touch {joint.a!r}: gap {gap:.6g}",
-                              joint.where)
+        from .joints import rounding_hint
+
+        raise KinematikaError("geometry", f"{joint.b!r} does not touch {joint.a!r}: gap {gap:.6g}"
+                              + rounding_hint(gap, inst.scale, "the contact or centre"), joint.where)
     if joint.at is not None:
         dist = max(abs(x) for x in inst.numvec(sub(inst.points[joint.at], contact.point)))
         if dist > tol:
+            from .joints import rounding_hint
+
             raise KinematikaError("geometry", f"the contact is not at {joint.at!r}: it is "
-                                  f"{dist:.6g} away", joint.where)
+                                  f"{dist:.6g} away" + rounding_hint(dist, inst.scale, joint.at), joint.where)
     if joint.internal is not None:
         if contact.kind not in ("external", "internal"):
             raise KinematikaError("schema", f"`internal` tells how two circles touch; this is a "

@@ -65,10 +65,20 @@ def joint_geometry(inst: Instant, joint: Joint) -> JointGeometry:
         gap = inst.num(dot(sub(geo.at, start), geo.perps[0]))
         if abs(gap) > 1e-6 * inst.scale:
             raise KinematikaError("geometry", f"slot point {joint.at!r} is off the line "
-                                  f"{joint.along.start}{joint.along.end}: gap {gap:.6g}", joint.where)
+                                  f"{joint.along.start}{joint.along.end}: gap {gap:.6g}"
+                                  + rounding_hint(gap, inst.scale, joint.at), joint.where)
     if joint.type in ("rolling", "gear"):
         geo.contact = find_contact(inst, joint)
     return geo
+
+
+def rounding_hint(gap: float, scale: float, point: str) -> str:
+    """For a gap small next to the model (coordinates rounded by hand, most likely): the
+    tolerance, and how to avoid the rounding."""
+    if abs(gap) > 1e-3 * scale:
+        return ""
+    return (f", more than the tolerance {1e-6 * scale:.2g} (1e-6 of the model's size): write "
+            f"{point} by construction, or with more digits")
 
 
 # shared derivatives ------------------------------------------------------------------------

@@ -10,6 +10,13 @@
     sol = m.solve()
     sol.velocity("B")
 
+Points may be constructed as a problem states them (`polar`, `in_frame`, `circles`,
+`circle_line`, `lines`), and the mechanism analysed elsewhere than drawn (`move`,
+`solve(assembly=N)`):
+
+    m.points(O2=(0, 0), O4=(5.2, 0)).polar("A", "O2", 2.25, "deg(52)")
+    m.circles("B", ("A", 6.1), ("O4", 4.35), side="left").move(j1=30)
+
 The tree goes through the same checks as a file (`build_model`), so every error names the
 same place a file would.
 """
@@ -53,6 +60,49 @@ class Mechanism:
     def points(self, **coords: Sequence[Value]) -> "Mechanism":
         for name, xy in coords.items():
             self.point(name, *xy)
+        return self
+
+    # points by construction (planar) ---------------------------------------------------
+    def polar(self, name: str, origin: Any, distance: Value, angle: Value,
+              reference: Optional[tuple[Any, Any]] = None) -> "Mechanism":
+        """`name` at `distance` from `origin`, `angle` (radians: "deg(30)") counter-clockwise
+        from the x axis, or from the direction reference[0] → reference[1]."""
+        spec: dict[str, Any] = {"from": _loc(origin), "distance": distance, "angle": angle}
+        if reference is not None:
+            spec["reference"] = [_loc(p) for p in reference]
+        return self._constructed(name, spec)
+
+    def in_frame(self, name: str, frame: tuple[Any, Any], at: Sequence[Value]) -> "Mechanism":
+        """`name` at x along frame[0] → frame[1] and y to its left, from frame[0]."""
+        return self._constructed(name, {"frame": [_loc(p) for p in frame], "at": list(at)})
+
+    def circles(self, name: str, first: tuple[Any, Value], second: tuple[Any, Value],
+                side: Optional[str] = None, near: Optional[Sequence[Value]] = None) -> "Mechanism":
+        """`name` at first[1] from first[0] and second[1] from second[0], on the `side`
+        ("left" or "right") of first[0] → second[0], or `near` a sketch point."""
+        spec: dict[str, Any] = {"circles": [[_loc(c), r] for c, r in (first, second)]}
+        return self._constructed(name, _branch(spec, side, near))
+
+    def circle_line(self, name: str, circle: tuple[Any, Value], line: Optional[tuple[Any, Any]] = None,
+                    through: Any = None, direction: Optional[Sequence[Value]] = None,
+                    side: Optional[str] = None, near: Optional[Sequence[Value]] = None) -> "Mechanism":
+        """`name` at circle[1] from circle[0] on the line through two points (`line`) or
+        `through` a point along `direction`; `side` "ahead" or "behind" along the line."""
+        spec: dict[str, Any] = {"circle": [_loc(circle[0]), circle[1]], "line": _line(line, through, direction)}
+        return self._constructed(name, _branch(spec, side, near))
+
+    def lines(self, name: str, first: Any, second: Any) -> "Mechanism":
+        """`name` where two lines meet: each two points (P, Q), or {"through": P, "direction": d}."""
+        return self._constructed(name, {"lines": [_line_spec(first), _line_spec(second)]})
+
+    def _constructed(self, name: str, spec: dict[str, Any]) -> "Mechanism":
+        self.tree["points"][name] = spec
+        return self
+
+    def move(self, **amounts: Value) -> "Mechanism":
+        """Analyse the mechanism advanced along driven joints: ``m.move(j1=30)`` (degrees or
+        length from the drawn configuration), as the sweep reaches it."""
+        self.tree.setdefault("move", {}).update(amounts)
         return self
 
     def body(self, name: str, *points: str, circle: Optional[tuple[Any, Value]] = None,
@@ -148,10 +198,17 @@ class Mechanism:
     def to_model(self) -> Model:
         return build_model(self.tree)
 
-    def solve(self, symbolic: Optional[bool] = None):
+    def solve(self, symbolic: Optional[bool] = None, **options: Any):
+        """Solve the mechanism; `options` as `kinematika.solve`'s (set, move, assembly)."""
         from ..api import solve
 
-        return solve(self.to_model(), symbolic)
+        return solve(self.to_model(), symbolic, **options)
+
+    def assemblies(self) -> list:
+        """Every assembly at the drawn input (`kinematika assemblies`); `solve(assembly=N)`."""
+        from ..sweep.assemblies import assemblies
+
+        return assemblies(self.to_model())
 
     def _repr_svg_(self) -> Optional[str]:  # Jupyter: a drawing when the draw view exists
         try:
@@ -163,6 +220,26 @@ class Mechanism:
 
 def _loc(value: Any) -> Any:
     return value if isinstance(value, str) else list(value)
+
+
+def _branch(spec: dict[str, Any], side: Optional[str], near: Optional[Sequence[Value]]) -> dict[str, Any]:
+    if side is not None:
+        spec["side"] = side
+    if near is not None:
+        spec["near"] = list(near)
+    return spec
+
+
+def _line(line: Optional[tuple[Any, Any]], through: Any, direction: Optional[Sequence[Value]]) -> Any:
+    if line is not None:
+        return [_loc(p) for p in line]
+    return {"through": _loc(through), "direction": list(direction or ())}
+
+
+def _line_spec(line: Any) -> Any:
+    if isinstance(line, dict):
+        return {"through": _loc(line["through"]), "direction": list(line["direction"])}
+    return [_loc(p) for p in line]
 
 
 def _list(value: Any) -> Any:
