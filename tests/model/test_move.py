@@ -239,3 +239,27 @@ def test_a_symbolic_point_that_does_not_follow_the_input_is_refused():
     with pytest.raises(KinematikaError) as info:
         prepare(tree, move={"j1": 10})
     assert info.value.where == "move.j1" and "'B'" in info.value.message
+
+
+@pytest.mark.parametrize("name, count", [("triad_six_bar", 2), ("spherical_four_bar", 2),
+                                         ("rssr_spatial_four_bar", 2)])
+def test_assemblies_of_groups_that_are_not_dyads_are_found_and_rigid(name, count):
+    from kinematika.engine.instant import instantiate
+
+    model = kinematika.as_model(EXAMPLES / f"{name}.yaml")
+    drawn = instantiate(model, False).points
+    found = assemblies(model)
+    assert len(found) == count and [a.drawn for a in found].count(True) == 1
+    for a in found:
+        pts = instantiate(a.model, False).points
+        for body in model.bodies.values():               # every pair of a body's points
+            for i, p in enumerate(body.points):
+                for q in body.points[i + 1:]:
+                    assert math.dist(pts[p], pts[q]) == pytest.approx(math.dist(drawn[p], drawn[q]), abs=1e-8)
+        from kinematika.sweep.plan import driven_joints
+
+        joint = model.joint(next(iter(driven_joints(model))))
+        for body in (model.frame, joint.a, joint.b):     # the frame and the input stay
+            for p in model.bodies[body].points:
+                assert pts[p] == pytest.approx(drawn[p], abs=1e-9)
+        kinematika.solve(a.model)                        # the engine accepts every joint there
