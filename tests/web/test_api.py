@@ -179,3 +179,36 @@ def test_a_repeated_request_gets_the_same_answer(client):
     first = post(client, "sweep", model=text, steps=12)
     again = post(client, "sweep", model=text, steps=12)
     assert first.status_code == again.status_code == 200 and first.content == again.content
+
+
+def test_assemblies_and_a_chosen_one_are_the_cli_answers(client):
+    path = EXAMPLES / "four_bar.yaml"
+    code, printed = run_cli("assemblies", str(path), "--json")
+    answer = post(client, "assemblies", model=path.read_text())
+    assert code == 0 and answer.content == printed
+    assert [a["drawn"] for a in answer.json()["assemblies"]] == [True, False]
+    # the other assembly: B mirrored in the line A O4 (A = (0, 1), O4 = (4, 0))
+    code, printed = run_cli("solve", str(path), "--assembly", "2", "--json")
+    crossed = post(client, "solve", model=path.read_text(), assembly=2)
+    assert code == 0 and crossed.content == printed
+    b = crossed.json()["points"]["B@rocker"]["position"]
+    b0 = json.loads(run_cli("solve", str(path), "--json")[1])["points"]["B@rocker"]["position"]
+    a, o4 = (0.0, 1.0), (4.0, 0.0)
+    dx, dy = o4[0] - a[0], o4[1] - a[1]
+    t = ((b0[0] - a[0]) * dx + (b0[1] - a[1]) * dy) / (dx * dx + dy * dy)
+    foot = (a[0] + t * dx, a[1] + t * dy)
+    assert b == pytest.approx([2 * foot[0] - b0[0], 2 * foot[1] - b0[1]], abs=1e-9)
+
+
+def test_move_answers_as_the_option_does(client):
+    path = EXAMPLES / "four_bar.yaml"
+    for endpoint in ("solve", "centres"):
+        code, printed = run_cli(endpoint, str(path), "--move", "j1=90", "--json")
+        answer = post(client, endpoint, model=path.read_text(), move={"j1": 90})
+        assert code == 0 and answer.content == printed
+    moved = post(client, "solve", model=path.read_text(), move={"j1": 90}).json()
+    # the crank turned from 90° to 180°: A = (−1, 0), v_A = 10·(0, −1)
+    assert moved["points"]["A@crank"]["position"] == pytest.approx([-1.0, 0.0], abs=1e-12)
+    assert moved["points"]["A@crank"]["velocity"] == pytest.approx([0.0, -10.0], abs=1e-9)
+    code, printed = run_cli("explain", str(path), "--move", "j1=90", "--format", "html", "--lang", "eu")
+    assert post(client, "explain", model=path.read_text(), move={"j1": 90}, lang="eu").content == printed

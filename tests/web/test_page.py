@@ -212,12 +212,43 @@ def test_dragging_a_point_changes_the_text(page):
 
 
 def test_basque_explanation_of_the_current_position(page):
+    set_row(page, 90)
     page.get_by_test_id("language").select_option("eu")
     frame = page.frame_locator("[data-testid=explanation]")
     frame.locator("html[lang=eu]").wait_for()
+    page.wait_for_function("() => document.getElementById('explanation-where').textContent === 'at j1 +90°'")
     body = frame.locator("body").inner_text()
     assert "Abiadurak" in body and "Azelerazioak" in body
     assert "Velocities" not in body
+    printed = CliRunner().invoke(cli, ["explain", str(FOUR_BAR), "--move", "j1=90", "--lang", "eu",
+                                       "--format", "html"]).stdout
+    assert page.get_by_test_id("explanation").get_attribute("srcdoc") == printed
+
+
+def test_at_rest_the_slider_position_is_solved_exactly(page):
+    set_row(page, 90)
+    answers = page.get_by_test_id("answers")
+    page.wait_for_function("() => !document.querySelector('[data-testid=answers] td.held')")
+    moved = json.loads(CliRunner().invoke(cli, ["solve", str(FOUR_BAR), "--move", "j1=90", "--json"]).stdout)
+    for i, a in enumerate(moved["answers"]):
+        assert cell(page, f"answers.{i}") == a["value"]
+    # the crank at 180°: A = (−1, 0) lies on the ground line O2O4, so the coupler's centre
+    # (where the lines O2A and O4B meet) is O4
+    assert moved["answers"][6]["value"] == {"point": [4.0, 0.0]}
+    assert answers.locator("td.held").count() == 0
+    assert page.get_by_test_id("figure").locator("[data-mark]").count() >= 5
+
+
+def test_the_other_assembly_can_be_picked(page):
+    pick = page.get_by_test_id("assembly")
+    page.wait_for_function("() => document.querySelector('[data-testid=assembly]').options.length === 3")
+    pick.select_option("2")
+    crossed = json.loads(CliRunner().invoke(cli, ["solve", str(FOUR_BAR), "--assembly", "2", "--json"]).stdout)
+    b = crossed["points"]["B@rocker"]["position"]
+    page.wait_for_function(f"() => JSON.parse(document.querySelector("
+                           f"'td[data-key=\"points.B@coupler.position\"]').dataset.value)[1] < {b[1] + 1e-6}")
+    assert cell(page, "points.B@coupler.position") == b
+    assert b[1] < 0                          # the crossed four-bar: B below the ground line
 
 
 def test_downloads_the_sweep_as_csv(page, tmp_path):

@@ -28,6 +28,7 @@ EXTRA = {
     "draw": ("as", "velocities", "accelerations", "centres", "curvature", "labels", "points",
              "view", "width"),
     "edit": ("point", "to"),
+    "assemblies": (),
 }
 AS = {"sweep": ("json", "csv"), "draw": ("data", "svg", "png")}
 

@@ -28,7 +28,7 @@ from ..errors import KinematikaError
 from .. import limits
 from .requests import Request, parse_body
 
-ENDPOINTS = ("solve", "sweep", "centres", "explain", "draw", "edit")
+ENDPOINTS = ("solve", "sweep", "centres", "explain", "draw", "edit", "assemblies")
 STATIC = resources.files("kinematika.web") / "static"
 EXAMPLES = resources.files("kinematika.web") / "examples"
 CSP = ("default-src 'self'; script-src 'self'; style-src 'self' 'unsafe-inline'; "
@@ -279,5 +279,9 @@ def _edit(req: Request) -> tuple[str, str]:
     return JSON, json.dumps({"model": text})
 
 
+def _assemblies(req: Request) -> tuple[str, str]:
+    return JSON, commands.json_text(commands.assemblies_data(req.model, req.how))
+
+
 COMPUTE = {"solve": _solve, "centres": _centres, "sweep": _sweep, "explain": _explain,
-           "draw": _draw, "edit": _edit}
+           "draw": _draw, "edit": _edit, "assemblies": _assemblies}

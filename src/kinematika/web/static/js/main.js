@@ -70,10 +70,35 @@ async function analyse() {
   slider.disabled = $("play").disabled = !state.sweep;
   slider.title = state.sweepError ? `no motion to sweep: ${state.sweepError}` : "";
   setRow(state.row);
+  listAssemblies(gen);
   if (state.sweepError) {
     $("notes").textContent = [$("notes").textContent, `the slider is off: ${state.sweepError}`].filter(Boolean).join(" · ");
   }
   explainSoon();
+}
+
+/** The assemblies of the mechanism at its drawn input (`kinematika assemblies`), to pick one. */
+async function listAssemblies(gen) {
+  const pick = $("assembly");
+  let found = [];
+  try {
+    found = (await post("assemblies", { model: editor.text, format: state.fmt })).assemblies;
+  } catch (_) { /* none to offer: the model's own */ }
+  if (gen !== state.gen) return;
+  const options = [`<option value="">as drawn</option>`];
+  for (const a of found) {
+    const how = a.closures.length ? `: ${a.closures.join("; ")}` : "";
+    options.push(`<option value="${a.number}">${a.number}${a.drawn ? " (drawn)" : ""}${escapeHtml(how)}</option>`);
+  }
+  pick.innerHTML = options.join("");
+  pick.value = state.assembly === null ? "" : String(state.assembly);
+  pick.disabled = found.length < 2;
+  pick.title = found.length < 2 ? "this mechanism closes one way at its drawn input"
+                                : `${found.length} ways to close at the drawn input`;
+}
+
+function escapeHtml(s) {
+  return String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" })[c]);
 }
 
 function showError(err) {
