@@ -66,6 +66,7 @@ async function analyse() {
   if (state.scene) figure.set(state.scene, state.sweep, 0);
   answers.set(state.solution, state.sweep, frame);
   plot.set(state.sweep, state.input ? state.input.unit : "deg", frame);
+  $("plot-box").hidden = !state.sweep;
   slider.max = String(rows - 1);
   slider.disabled = $("play").disabled = !state.sweep;
   slider.title = state.sweepError ? `no motion to sweep: ${state.sweepError}` : "";
