@@ -170,8 +170,11 @@ def _notes(scene: Scene, drawn: list[Arrow]) -> list[str]:
                      f"drawing); those marked 'enlarged' are drawn at the minimum length "
                      f"({SHORTEST:.0%})")
     if scene.dim == 3:
-        notes.append(f"3D model: {'isometric' if scene.projection.view == 'iso' else scene.projection.view}"
-                     " orthographic projection (axes x, y, z shown at the lower right)")
+        view = "isometric" if scene.projection.view == "iso" else scene.projection.view
+        up = next((name for name, d in scene.projection.axes().items()
+                   if abs(d[0]) < 1e-9 and d[1] > 1e-9), None)
+        notes.append(f"3D model: {view} orthographic projection{f', {up} up' if up else ''} "
+                     "(axes x, y, z shown at the lower right)")
     lines: list[str] = []
     for note in notes:
         kept = re.sub(r"(?<=\b\d) (?=\w)", NBSP, note.replace(" = ", f"{NBSP}={NBSP}"))
