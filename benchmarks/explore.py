@@ -197,6 +197,10 @@ def _circle_meet(p, r1, q, r2):
     return (p[0] + f * dx - h * dy, p[1] + f * dy + h * dx)
 
 
+def _best_at(history: list[tuple[float, float]], seconds: float) -> float:
+    return min((e for t, e in history if t <= seconds), default=math.nan)
+
+
 def _time_to(history: list[tuple[float, float]], threshold: float) -> float:
     return next((t for t, e in history if e <= threshold), math.nan)
 
@@ -211,6 +215,9 @@ def synthesis(budget: float, seed: int) -> None:
         print(f"  {name:<52} best error {r['best']:.3g}; {times}; "
               f"{r['evaluated']} designs ({r['evaluated'] / r['wall']:.0f}/s)")
     k, p = runs.values()
+    for t in (1.0, 2.0, 5.0, budget):
+        print(f"  best error after {t:g} s: kinematika {_best_at(k['history'], t):.3g}, "
+              f"pylinkage {_best_at(p['history'], t):.3g}")
     for th in THRESHOLDS:
         tk, tp = _time_to(k["history"], th), _time_to(p["history"], th)
         print(f"  time to error < {th:g}: pylinkage / kinematika = {tp / tk:.3g}x" if math.isfinite(tp)
