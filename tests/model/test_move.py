@@ -55,7 +55,8 @@ def test_a_file_move_equals_the_option_and_set_reposes_a_constructed_model():
 @pytest.mark.parametrize("name, amount", [("four_bar", 137.0), ("slider_crank", -50.0),
                                           ("quick_return", 95.0), ("watt_six_bar", 222.0),
                                           ("jansen_leg", 300.0), ("inverted_slider_crank", 40.0),
-                                          ("pulley_train", 33.0), ("planetary_gears", 40.0)])
+                                          ("pulley_train", 33.0), ("planetary_gears", 40.0),
+                                          ("triad_six_bar", 25.0), ("spherical_four_bar", 30.0)])
 def test_move_equals_the_last_row_of_the_sweep(name, amount):
     path = EXAMPLES / f"{name}.yaml"
     model = kinematika.as_model(path)
