@@ -12,23 +12,14 @@ from typing import Any, Optional
 
 import numpy as np
 
-from ..model.constructions import CircleLine, LineDef, TwoCircles, TwoLines, construction_order
-from .positions import TOLERANCE, _Builder
+from ..model.constructions import CircleLine, LineDef, TwoCircles, TwoLines
+from .positions import TOLERANCE, _Builder, positions
 
 
 def array_positions(inst: Any) -> dict[str, tuple]:
     """Every point's coordinates (arrays over the designs, NaN where it cannot be drawn)."""
-    model = inst.model
-    out: dict[str, tuple] = {}
     with np.errstate(all="ignore"):
-        for name in construction_order(model.points):
-            spec = model.points[name]
-            where = f"points.{name}"
-            if isinstance(spec, tuple):
-                out[name] = inst.vector(spec, where)
-            else:
-                out[name] = _ArrayBuilder(inst, out, where).build(spec)
-    return {name: out[name] for name in model.points}
+        return positions(inst, _ArrayBuilder)
 
 
 def _largest(values: list) -> Any:

@@ -22,8 +22,10 @@ if TYPE_CHECKING:
 TOLERANCE = 1e-6        # relative: circles this close to touching meet in one point
 
 
-def positions(inst: "Instant") -> dict[str, tuple]:
-    """Every point's coordinates at the instant, in the model's order."""
+def positions(inst: "Instant", builder: Optional[type] = None) -> dict[str, tuple]:
+    """Every point's coordinates at the instant, in the model's order; `builder` evaluates
+    the constructions (`_Builder`, or the per-design arrays' in `array_positions`)."""
+    builder = builder or _Builder
     model = inst.model
     out: dict[str, tuple] = {}
     for name in construction_order(model.points):
@@ -36,8 +38,7 @@ def positions(inst: "Instant") -> dict[str, tuple]:
         if isinstance(spec, tuple):
             out[name] = inst.vector(spec, where)
         else:
-            builder = _Builder(inst, out, where)
-            out[name] = tuple(inst.backend.simplify(c) for c in builder.build(spec))
+            out[name] = tuple(inst.backend.simplify(c) for c in builder(inst, out, where).build(spec))
         for turn in turns:
             out[name] = carry(inst, turn, out[name], out)
     return {name: out[name] for name in model.points}
