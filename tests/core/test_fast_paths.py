@@ -205,3 +205,42 @@ def test_the_fast_path_imports_only_what_the_command_uses():
             "{'typer', 'click', 'pydantic', 'scipy', 'sympy', 'matplotlib', 'rich'}))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]"
+
+
+# YAML read in one pass ------------------------------------------------------------------
+PLAIN_DOCUMENTS = [
+    "points: {O: [0, 0], A: [1.5, -2e-3]}\nbodies: {ground: [O]}\n",
+    "a: yes\nb: No\nc: on\nd: ~\ne: null\nf: ''\ng: '1'\nh: \"2.0\"\ni: 0x1f\nj: 1_000\nk: 0o17\n",
+    "a: .inf\nb: -.Inf\nc: 2001-12-14\nd: 2001-12-14t21:59:43.10-05:00\ne: 1:30\nf: 190:20:30.15\n",
+    "- [1, [2, [3, {x: y}]]]\n- {}\n- []\n- ''\n- |\n  two\n  lines\n- >\n  folded\n  text\n",
+    "---\nname: 'ünïcödé θ'\n1: one\n2.5: two\nfalse: three\nnull: four\n...\n",
+    "x: !!str 12\n", "x: &a [1]\ny: *a\n", "<<: {a: 1}\nb: 2\n", "a: 1\n---\nb: 2\n",
+    "a: 1\na: 2\n", "? [1, 2]\n: pair\n", "x: !!binary aGk=\n", "",
+]
+
+
+@pytest.mark.parametrize("text", PLAIN_DOCUMENTS)
+def test_the_one_pass_yaml_reader_gives_what_yaml_load_gives(text):
+    """The one-pass reader gives yaml.load's tree, or leaves the text to the full reader
+    (anchors, tags, merge keys, several documents, duplicate or unhashable keys)."""
+    import yaml
+
+    from kinematika.model.files import _UNUSUAL, _plain_yaml
+
+    tree = _plain_yaml(text)
+    unusual = any(mark in text for mark in ("!!", "&", "<<", "\n---\n", "a: 1\na:", "? ")) or not text
+    assert (tree is _UNUSUAL) == unusual
+    if tree is not _UNUSUAL:
+        expected = yaml.load(text, Loader=yaml.SafeLoader)
+        assert repr(tree) == repr(expected)
+        assert json.dumps(tree, default=str) == json.dumps(expected, default=str)
+
+
+@pytest.mark.parametrize("path", EXAMPLE_FILES, ids=[p.stem for p in EXAMPLE_FILES])
+def test_every_example_is_read_in_one_pass_as_yaml_load_reads_it(path):
+    import yaml
+
+    from kinematika.model.files import _plain_yaml
+
+    text = path.read_text()
+    assert repr(_plain_yaml(text)) == repr(yaml.load(text, Loader=yaml.SafeLoader))
