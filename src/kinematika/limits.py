@@ -25,6 +25,10 @@ EXACT_DIGITS = 60            # decimal digits of an exact number (numerator or d
                              # symbolic work: 1e-200 written in a symbolic model is refused
 DEGREE = 60                  # degree of a formula in the symbols (r**1000, (w + 1)**100**2)
 
+# the size of a mechanism ------------------------------------------------------------------
+SCALE = 1e50                 # lengths and rates (ω, v/length, √(a/length)) between 1/SCALE and
+                             # SCALE in the model's units: their squares and cubes stay floats
+
 # sweeps -----------------------------------------------------------------------------------
 SWEEP_STEPS = 10_000_000     # increments of one sweep
 SWEEP_VALUES = 5_000_000     # rows × numbers per row held at once (under 1 GB on every path)

@@ -146,12 +146,21 @@ class Symbolic:
 
         return canonical(x)
 
-    def check_against(self, exact: list[Any], numeric: Any, probe: dict) -> None:
-        """The exact solution must equal the numeric one at the probe values."""
-        for e, x in zip(exact, numeric):
-            value = float(self.sp.sympify(e).xreplace(probe))
-            if abs(value - x) > 1e-6 * (1 + abs(x)):
-                raise ArithmeticError(f"exact solution {e} disagrees with the numeric one {x}")
+    def check_against(self, exact: list[Any], numeric: Any, probe: dict, scale: float = 0.0) -> None:
+        """The exact solution must equal the numeric one at the probe values, within the
+        numeric one's round-off: relative to the largest value of the solution, or to
+        `scale` (the size the known terms give the unknowns) when the solution is all 0."""
+        values = []
+        for e in exact:
+            try:
+                values.append(complex(self.sp.sympify(e).xreplace(probe)))
+            except (TypeError, OverflowError):
+                values.append(complex(math.nan))
+        top = max([abs(float(x)) for x in numeric] + [scale])
+        for e, value, x in zip(exact, values, numeric):
+            if not abs(value - x) <= 1e-6 * max(abs(x), 1e-3 * top) + 1e-300:
+                raise ArithmeticError(f"exact solution {brief(str(e))} disagrees with the numeric "
+                                      f"one {x:.6g}")
 
 
 def degree(e: Any, memo: dict | None = None) -> int:

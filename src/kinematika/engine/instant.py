@@ -58,6 +58,7 @@ class Instant:
     shapes: dict[str, list]
     probe: dict = field(default_factory=dict)       # symbol -> float (symbolic models)
     scale: float = 1.0                               # characteristic length
+    rate: float = 0.0                                # characteristic rate (engine.ranges)
     ref: tuple = ()                                  # where body twists are taken
 
     @property
@@ -74,16 +75,23 @@ class Instant:
         return tuple(self.value(e, f"{where}[{i}]") for i, e in enumerate(exprs))
 
     def unit(self, vec: tuple, where: str) -> tuple:
-        """`vec` normalised; a zero vector is a schema error at `where`."""
-        norm2 = dot(vec, vec)
-        if self.num(norm2) <= 1e-24:
+        """`vec` normalised, whatever its size ([1e-12, 0] is the x axis); a zero vector is a
+        schema error at `where`."""
+        size = math.hypot(*self.numvec(vec))          # no squares to underflow or overflow
+        if not 0 < size < math.inf:
             raise KinematikaError("schema", "a direction cannot be the zero vector", where)
-        norm = self.backend.sqrt(norm2)
+        if not self.symbolic:
+            return tuple(c / size for c in vec)
+        norm = self.backend.sqrt(dot(vec, vec))
         return tuple(self.backend.simplify(c / norm) for c in vec)
 
     def direction(self, d: m.Direction, where: str) -> tuple:
         if isinstance(d, m.PointPair):
-            return self.unit(sub(self.points[d.end], self.points[d.start]), where)
+            gap = sub(self.points[d.end], self.points[d.start])
+            if math.hypot(*self.numvec(gap)) <= 1e-12 * self.scale:
+                raise KinematikaError("schema", f"a direction needs two different points: {d.start} and "
+                                      f"{d.end} coincide", where)
+            return self.unit(gap, where)
         return self.unit(self.vector(d, where), where)
 
     def body_direction(self, body: str, d: m.Direction, where: str) -> tuple:
@@ -100,7 +108,16 @@ class Instant:
         """A scalar as a float (a symbolic one at the probe values)."""
         if isinstance(x, (int, float)):
             return float(x)
-        return float(x.xreplace(self.probe)) if self.probe else float(x)
+        value = x.xreplace(self.probe) if self.probe else x
+        try:
+            return float(value)
+        except TypeError:             # complex at the probe values
+            z = complex(value)
+            if abs(z.imag) <= 1e-12 * abs(z.real):
+                return z.real
+            raise KinematikaError("schema", "a value is not a real number for the symbols' values "
+                                  "(the square root or a power of a negative quantity?)",
+                                  "parameters") from None
 
     def numvec(self, v: tuple) -> tuple:
         return tuple(self.num(c) for c in v)
@@ -120,6 +137,9 @@ def instantiate(model: m.Model, symbolic: bool | None = None) -> Instant:
     inst.ref = inst.space.zero() if use_symbols else _centroid(inst)
     inst.shapes = {name: [_shape(inst, s, name) for s in b.shapes]
                    for name, b in model.bodies.items()}
+    from .ranges import check_rates
+
+    inst.rate = check_rates(inst)
     return inst
 
 
@@ -190,16 +210,22 @@ def _length_scale(inst: Instant) -> float:
     """The model's size: the largest distance of a point from the centroid, or radius.
 
     Never below 1e-9 of the coordinates' magnitude (nor zero), so that a model whose
-    points nearly coincide still gets a usable scale.
+    points nearly coincide still gets a usable scale. A size outside `limits.SCALE` (in
+    either direction) is refused: squares and cubes of lengths would leave the floats.
     """
     pts = [inst.numvec(p) for p in inst.points.values()]
-    center = [sum(c) / len(pts) for c in zip(*pts)]
+    center = [math.fsum(c / len(pts) for c in axis) for axis in zip(*pts)]
     spread = max(math.dist(p, center) for p in pts)
     radii = [abs(inst.num(inst.value(s.radius, "radius"))) for b in inst.model.bodies.values()
              for s in b.shapes if hasattr(s, "radius")]
     magnitude = max(abs(c) for p in pts for c in p)
     size = max([spread, 1e-9 * magnitude] + radii)
-    return size if size > 1e-150 else 1.0
+    if size == 0:
+        return 1.0
+    from .ranges import check_size
+
+    check_size(size)
+    return size
 
 
 def _centroid(inst: Instant) -> tuple:

@@ -34,13 +34,15 @@ class Analysis:
 
 def analyse(a: np.ndarray, is_driver: np.ndarray, translation_columns: np.ndarray, length: float,
             labels: list[str], wheres: list[str], body_of: list[str],
-            want_blocks: bool = False) -> Analysis:
-    """Check that A fixes every unknown and prepare the solves; raise `mobility`/`singular`."""
+            want_blocks: bool = False, restating: Any = None) -> Analysis:
+    """Check that A fixes every unknown and prepare the solves; raise `mobility`/`singular`.
+    `restating()`, when given, marks the driver rows that only restate a joint."""
     m, n = a.shape
     scaled = scale_system(a, translation_columns, length)
     diag = diagnose(scaled.matrix, is_driver)
     if m < n or diag.condition_number > SINGULAR_CONDITION:
-        raise underdetermined_error(scaled.matrix, is_driver, labels, wheres, body_of, diag)
+        raise underdetermined_error(scaled.matrix, is_driver, labels, wheres, body_of, diag,
+                                    restating() if restating else None)
     u, s, vt = np.linalg.svd(scaled.matrix, full_matrices=False)
     rows, blocks = list(range(m)), []
     if want_blocks:
@@ -101,7 +103,8 @@ def sparse_matrix(rows: list[Any], n: int) -> Any:
 
 
 def analyse_sparse(a: Any, is_driver: np.ndarray, translation_columns: np.ndarray, length: float,
-                   labels: list[str], wheres: list[str], body_of: list[str]) -> Analysis | SparseAnalysis:
+                   labels: list[str], wheres: list[str], body_of: list[str],
+                   restating: Any = None) -> Analysis | SparseAnalysis:
     """`analyse` for a large sparse system: scaling, sparse LU and a 1-norm condition estimate.
 
     A square system whose LU succeeds with condition number below the limit is solved by the
@@ -134,7 +137,8 @@ def analyse_sparse(a: Any, is_driver: np.ndarray, translation_columns: np.ndarra
         raise KinematikaError("singular", f"the {m}×{n} constraint Jacobian is singular or not square "
                               "(sparse LU); the system is too large to say which conditions are "
                               "missing or dependent", "drivers")
-    return analyse(a.toarray(), is_driver, translation_columns, length, labels, wheres, body_of)
+    return analyse(a.toarray(), is_driver, translation_columns, length, labels, wheres, body_of,
+                   restating=restating)
 
 
 def solve_symbolic(an: Analysis, a_sym: Sequence[Sequence[Any]], b_sym: Sequence[Any],

@@ -61,9 +61,12 @@ def diagnose(scaled: np.ndarray, is_driver: np.ndarray) -> Diagnosis:
 
 
 def underdetermined_error(scaled: np.ndarray, is_driver: np.ndarray, labels: list[str],
-                          wheres: list[str], body_of: list[str], diag: Diagnosis) -> KinematikaError:
-    """`singular` at a dead point (drivers enough in number), `mobility` otherwise."""
-    driver_rows = scaled[is_driver]
+                          wheres: list[str], body_of: list[str], diag: Diagnosis,
+                          restating: np.ndarray | None = None) -> KinematikaError:
+    """`singular` at a dead point (drivers enough in number), `mobility` otherwise. Driver
+    rows that only restate a joint (`restating`) do not count as drivers here."""
+    counted = is_driver if restating is None else is_driver & ~restating
+    driver_rows = scaled[counted]
     given = numeric_rank(driver_rows)
     free = _free_bodies(scaled, body_of)
     if given >= diag.dof > 0 and diag.conditions < given:

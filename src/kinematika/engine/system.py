@@ -41,11 +41,20 @@ class InstantSolver:
 
     def rows(self, lv: Level) -> list[Row]:
         out: list[Row] = []
-        for j in self.inst.model.joints:
-            out += joint_rows(self.geos[j.id], lv)
-        for d in self.inst.model.drivers:
-            out += driver_rows(self.inst, d, self.geos, lv)
-        return out + idle_rows(self.inst, lv)
+        pairs: list = []          # the two bodies each joint row or driver row relates
+        model = self.inst.model
+        for j in model.joints:
+            rows = joint_rows(self.geos[j.id], lv)
+            out += rows
+            pairs += [frozenset((j.a, j.b))] * len(rows)
+        for d in model.drivers:
+            rows = driver_rows(self.inst, d, self.geos, lv)
+            out += rows
+            body = d.body if d.kind == "omega" else d.point.body if d.kind == "velocity" else None
+            pairs += [frozenset((body, d.relative_to or model.frame)) if body else None] * len(rows)
+        idle = idle_rows(self.inst, lv)
+        self.pairs = pairs + [None] * len(idle)
+        return out + idle
 
     def matrix(self, rows: list[Row]) -> tuple[list[list[Any]], list[Any]]:
         n = self.unknowns.n
@@ -75,13 +84,32 @@ class InstantSolver:
             self.a_sym, self.b_v = None, [-r.lin.const for r in rows_v]
             self.a_num = sparse_matrix(rows_v, u.n)
             self.analysis = analyse_sparse(self.a_num, self.is_driver, translation, inst.scale,
-                                           self.labels, self.wheres, body_of)
+                                           self.labels, self.wheres, body_of, self._restating)
             return
         a, self.b_v = self.matrix(rows_v)
         self.a_sym = a
         self.a_num = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), u.n)
         self.analysis = analyse(self.a_num, self.is_driver, translation, inst.scale, self.labels,
-                                self.wheres, body_of, want_blocks=inst.symbolic)
+                                self.wheres, body_of, want_blocks=inst.symbolic,
+                                restating=self._restating)
+
+    def _restating(self) -> np.ndarray:
+        """The driver rows that restate what a joint between the same two bodies fixes in
+        every configuration (ω_x = 0 of a body turning about y): accepted, but not counted
+        as conditions when the drivers are too few (`mobility`, not a dead point)."""
+        a = self.a_num
+        out = np.zeros(len(self.pairs), dtype=bool)
+        for i, pair in enumerate(self.pairs):
+            if not self.is_driver[i] or pair is None:
+                continue
+            local = [k for k, p in enumerate(self.pairs) if p == pair and not self.is_driver[k]]
+            if not local:
+                continue
+            joints = a[local].toarray() if hasattr(a, "toarray") else a[local]
+            row = a[i].toarray().ravel() if hasattr(a, "toarray") else a[i]
+            coef, *_ = np.linalg.lstsq(joints.T, row, rcond=None)
+            out[i] = np.linalg.norm(joints.T @ coef - row) <= 1e-9 * np.linalg.norm(row)
+        return out
 
     def solve_linear(self, b: list[Any], check: bool = True,
                      labels: list[str] | None = None) -> list[Any]:
@@ -101,7 +129,8 @@ class InstantSolver:
 
         within_budget("solving the equations exactly")
         exact = solve_symbolic(self.analysis, self.a_sym, b, self.a_num)
-        inst.backend.check_against(exact, x_num, inst.probe)
+        rate = max(inst.rate, inst.rate ** 2)        # the size of rates and their squares
+        inst.backend.check_against(exact, x_num, inst.probe, rate * max(1.0, inst.scale))
         return exact
 
     def solve(self) -> Motion:

@@ -11,6 +11,7 @@ from ..limits import NAME_CHARS
 from ..questions.centres import all_centres
 from ..solution import Solution
 from ..text import markup
+from .json_answer import answer_scales
 from .tables import show
 from .values import plain
 
@@ -21,9 +22,10 @@ def centres_data(sol: Solution) -> dict[str, Any]:
     if sol.space.dim != 2:
         raise KinematikaError("schema", "instant centres are planar; ask for the screw `axis` of "
                               "each body in 3D", "dimension")
+    fields = answer_scales(sol)[1]
     rows = []
     for c in all_centres(sol):
-        rows.append({"bodies": list(c.pair), **plain(c.value, sol.symbolic, sol.inst.scale),
+        rows.append({"bodies": list(c.pair), **plain(c.value, sol.symbolic, sol.inst.scale, fields),
                      "how": c.how, "via": c.via})
     return {"name": sol.model.name, "symbolic": sol.symbolic, "centres": rows}
 

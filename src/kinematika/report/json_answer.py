@@ -8,14 +8,29 @@ from ..solution import Solution
 from .values import plain
 
 
+# the kind of each field of a compound answer (None: a unit vector or a pure number)
+FIELD_KINDS = {"point": "position", "center": "position", "radius": "position",
+               "velocity": "velocity", "speed": "velocity", "slide": "velocity",
+               "acceleration": "acceleration", "tangential": "acceleration", "normal": "acceleration",
+               "tangential_vector": "acceleration", "normal_vector": "acceleration",
+               "coriolis": "acceleration", "omega": "omega", "direction": None, "tangent": None}
+
+
+def answer_scales(sol: Solution) -> tuple[dict[str, float], dict[str, float]]:
+    """The scale of each kind of quantity, and of each field of compound answers."""
+    length = sol.inst.scale
+    scale = {"position": length, "velocity": sol.speed_scale(), "acceleration": sol.accel_scale(),
+             "omega": sol.rate_scale(), "alpha": sol.accel_scale() / length}
+    return scale, {field: scale[kind] if kind else 1.0 for field, kind in FIELD_KINDS.items()}
+
+
 def solution_json(sol: Solution) -> dict[str, Any]:
     """name, dimension, dof, symbolic, bodies, points and answers, as the contract says.
     Round-off is cleaned against the scale of each kind of quantity (lengths, speeds,
     accelerations, rates), so that a large acceleration never hides a real speed."""
     sym = sol.symbolic
     length = sol.inst.scale
-    scale = {"position": length, "velocity": sol.speed_scale(), "acceleration": sol.accel_scale(),
-             "omega": sol.rate_scale(), "alpha": sol.accel_scale() / length}
+    scale, fields = answer_scales(sol)
     model = sol.model
     bodies = {}
     for name in model.bodies:
@@ -27,8 +42,7 @@ def solution_json(sol: Solution) -> dict[str, Any]:
         points[str(ref)] = {"position": plain(sol.position(ref), sym, scale["position"]),
                             "velocity": plain(sol.velocity(ref), sym, scale["velocity"]),
                             "acceleration": plain(sol.acceleration(ref), sym, scale["acceleration"])}
-    smallest = min((x for x in scale.values() if x > 0), default=1.0)    # answers of mixed kinds
-    answers = [{"ask": q.echo, "value": plain(answer(sol, q), sym, scale.get(q.kind) or smallest)}
+    answers = [{"ask": q.echo, "value": plain(answer(sol, q), sym, scale.get(q.kind, length), fields)}
                for q in model.questions]
     return {"name": model.name, "dimension": model.dimension, "dof": sol.dof, "symbolic": sym,
             "bodies": bodies, "points": points, "answers": answers}

@@ -2,19 +2,23 @@
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, Mapping
 
 SIGNIFICANT = 12
 
 
-def plain(value: Any, symbolic: bool, scale: float = 1.0) -> Any:
-    """Convert a raw answer (nested dicts, tuples, scalars) into JSON-able data."""
+def plain(value: Any, symbolic: bool, scale: float = 1.0,
+          fields: Mapping[str, float] | None = None) -> Any:
+    """Convert a raw answer (nested dicts, tuples, scalars) into JSON-able data; round-off
+    is cleaned against `scale`, or for a field of a compound answer against the scale of
+    its own kind (`fields`: a point's against lengths, a direction's against 1)."""
     if value is None or isinstance(value, bool) or isinstance(value, str):
         return value
     if isinstance(value, dict):
-        return {k: plain(v, symbolic, scale) for k, v in value.items()}
+        return {k: plain(v, symbolic, fields.get(k, scale) if fields else scale, fields)
+                for k, v in value.items()}
     if isinstance(value, (tuple, list)):
-        return [plain(v, symbolic, scale) for v in value]
+        return [plain(v, symbolic, scale, fields) for v in value]
     if symbolic:
         return formula(value)
     return number(value, scale)

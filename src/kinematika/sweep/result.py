@@ -184,6 +184,7 @@ def clean(values: np.ndarray, scale: float) -> np.ndarray:
     np.rint(out, out=out)
     with np.errstate(invalid="ignore"):
         np.divide(out, factor, out=out)
+    np.copyto(out, values, where=np.isnan(out) & np.isfinite(values))   # below 1e-297: as it is
     np.copyto(out, 0.0, where=magnitude <= 1e-12 * scale)
     np.copyto(out, np.nan, where=np.isinf(values))               # as before: no infinite numbers
     np.add(out, 0.0, out=out)                                     # no -0.0
