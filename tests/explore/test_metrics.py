@@ -146,3 +146,16 @@ def test_a_design_that_cannot_be_drawn_says_why():
     assert table["reason"][0].startswith("geometry: points.B: the circles about A (6.1) and O4 (0.5) "
                                          "do not meet")
     assert pd.isna(table["grashof"][0]) and math.isnan(table["transmission"][0])
+
+
+def test_motion_error_measures_position_and_turn_of_the_body(tmp_path):
+    """The crank's poses are (a cos θ, a sin θ, θ): a pose of its own cycle is at distance 0; the
+    pivot with the crank's direction at a row is a from the nearest pose (ρ = a, Δφ = 0 there)."""
+    a = 2.25
+    (tmp_path / "own.csv").write_text(f"{a * math.cos(math.radians(62))!r},{a * math.sin(math.radians(62))!r},62\n")
+    (tmp_path / "pivot.csv").write_text("x,y,angle\n0,0,62\n")
+    (tmp_path / "m.yaml").write_text(FOUR_BAR)
+    table = rows(str(tmp_path / "m.yaml"), {"c": (4.35, 4.35)},
+                 ["motion_error:A@crank=own.csv", "motion_error:A@crank=pivot.csv"], grid=1)
+    assert table["motion_error:A@crank=own.csv"][0] == pytest.approx(0.0, abs=1e-12)
+    assert table["motion_error:A@crank=pivot.csv"][0] == pytest.approx(a, rel=1e-12)
