@@ -1,8 +1,11 @@
-"""Linkages (four-bar, slider-crank, inverted slider-crank, quick-return, seed 001's R and P
-pairs) against their loop-closure equations, solved for the positions as functions of the
-input angle and differentiated in time by sympy: an independent route to every number."""
+"""Linkages (four-bar, slider-crank, inverted slider-crank, quick-return, Watt six-bar,
+Jansen's leg, seed 001's R and P pairs) against their loop-closure equations, solved for the
+positions as functions of the input angle (from the link lengths the files state) and
+differentiated in time by sympy, or by mpmath for the deep chains: an independent route to
+every number."""
 from __future__ import annotations
 
+import mpmath
 import sympy
 from sympy import atan2, cos, pi, sin, sqrt
 from sympy.physics.vector import dynamicsymbols
@@ -172,3 +175,66 @@ def test_seed_001_p_pair_coriolis():
     assert close(parts["acceleration"]["coriolis"], cross(8, rel_v), scale=10)   # 2 w_M x v_rel
     assert close(parts["acceleration"]["total"], ab, scale=10)
     assert close(parts["velocity"]["total"], vb, scale=1)
+
+
+
+
+def meet(p, rp, q, rq, side):
+    """circle_meet in mpmath numbers (40 digits), for chains too deep for algebra."""
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    d = mpmath.sqrt(dx ** 2 + dy ** 2)
+    a = (rp ** 2 - rq ** 2 + d ** 2) / (2 * d)
+    h = mpmath.sqrt(rp ** 2 - a ** 2)
+    return [p[0] + a * dx / d - side * h * dy / d, p[1] + a * dy / d + side * h * dx / d]
+
+
+def by_crank(position, theta, w):
+    """Value, velocity and acceleration of `position`(crank angle), a list of numbers, when
+    the crank is at `theta` degrees turning at `w` steady: d/dt = w d/dθ, the derivatives
+    taken by mpmath at 40 digits."""
+    with mpmath.workdps(40):
+        t0 = mpmath.radians(theta)
+        n = len(position(t0))
+        value = [float(c) for c in position(t0)]
+        first = [float(w * mpmath.diff(lambda t, i=i: position(t)[i], t0, 1)) for i in range(n)]
+        second = [float(w * w * mpmath.diff(lambda t, i=i: position(t)[i], t0, 2)) for i in range(n)]
+    return value, first, second
+
+
+def test_watt_six_bar_two_loops_by_their_lengths():
+    def output(t):
+        # loop 1: ground 4, crank 1, coupler 4, rocker 3; B above the ground line
+        b = meet([mpmath.cos(t), mpmath.sin(t)], 4, [4, 0], 3, side=1)
+        phi4 = mpmath.atan2(b[1], b[0] - 4)
+        # the rocker's second pin C is 1 from O4, on the ground line when drawn (crank up):
+        # it keeps its angle to O4B, so it turns with the rocker from angle 0
+        b0 = meet([0, 1], 4, [4, 0], 3, side=1)
+        turn = phi4 - mpmath.atan2(b0[1], b0[0] - 4)
+        c = [4 + mpmath.cos(turn), mpmath.sin(turn)]
+        d = meet(c, 4, [8, 0], 3, side=1)                 # loop 2: coupler 4, output 3
+        return [d[0], d[1], mpmath.atan2(d[1], d[0] - 8)]
+
+    (dx, dy, _), (_, _, w6), (_, _, a6) = by_crank(output, 90, 10)
+    assert close([dx, dy], [23 / 3, 80 ** 0.5 / 3], scale=10)      # 4 from C = (5, 0), 3 from O6
+    assert close(answer("watt_six_bar", omega="output"), w6)
+    assert close(answer("watt_six_bar", alpha="output"), a6, scale=100)
+
+
+def test_jansen_leg_from_the_holy_numbers():
+    n = mpmath.mpf
+
+    def foot(t):
+        # every joint where two circles meet, on the side of the working leg
+        a = [38 + 15 * mpmath.cos(t), n("7.8") + 15 * mpmath.sin(t)]
+        z = [0, 0]
+        b = meet(z, n("41.5"), a, 50, side=1)
+        e = meet(z, n("40.1"), b, n("55.8"), side=1)
+        d = meet(z, n("39.3"), a, n("61.9"), side=-1)
+        f = meet(e, n("39.4"), d, n("36.7"), side=-1)
+        return meet(d, 49, f, n("65.7"), side=1)
+
+    pp, vp, ap = by_crank(foot, 90, 1)
+    # the drawn foot, as the file gave it before (coordinates to 12 decimals)
+    assert close(pp, [30.310933769358, -82.589351367404], rel=1e-11, scale=100)
+    assert close(answer("jansen_leg", velocity="P"), vp, scale=10)
+    assert close(answer("jansen_leg", acceleration="P"), ap, scale=10)
