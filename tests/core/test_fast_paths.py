@@ -93,7 +93,8 @@ def _base_trees():
     return [four_bar(), four_bar(ask=[{"velocity": "B", "relative_to": "crank"}, {"icr": "coupler"}],
                                  sweep={"joint": "j1", "by": 90, "steps": 4}),
             read_tree(EXAMPLES / "fan_absolute.yaml"), read_tree(EXAMPLES / "planetary_gears.yaml"),
-            read_tree(EXAMPLES / "coin_rolling.yaml")]
+            read_tree(EXAMPLES / "coin_rolling.yaml"),
+            read_tree(EXAMPLES / "quick_return.yaml"), read_tree(EXAMPLES / "jansen_leg.yaml")]   # constructions
 
 
 @given(st.data())

@@ -125,9 +125,9 @@ class ConstructionReader:
         self.expr, self.vector, self.known, self.symbolic = expr, vector, known, symbolic
 
     def read(self, spec: object, where: str) -> Construction:
-        from . import schema      # constructions are checked by pydantic (not by `shape`)
-
-        if isinstance(spec, schema.PolarSpec):
+        # the checked spec is one of `schema`'s classes or `shape`'s records of the same name
+        kind = type(spec).__name__
+        if kind == "PolarSpec":
             ref = None
             if spec.reference is not None:
                 ref = (self.loc(spec.reference[0], f"{where}.reference[0]"),
@@ -135,20 +135,20 @@ class ConstructionReader:
                 self.distinct(ref, f"{where}.reference")
             return Polar(self.loc(spec.from_, f"{where}.from"), self.expr(spec.distance, f"{where}.distance"),
                          self.expr(spec.angle, f"{where}.angle"), ref)
-        if isinstance(spec, schema.FrameSpec):
+        if kind == "FrameSpec":
             origin, toward = (self.loc(p, f"{where}.frame[{i}]") for i, p in enumerate(spec.frame))
             self.distinct((origin, toward), f"{where}.frame")
             at = self.vector(spec.at, f"{where}.at")
             return InFrame(origin, toward, (at[0], at[1]))
-        if isinstance(spec, schema.CirclesSpec):
+        if kind == "CirclesSpec":
             (c1, r1), (c2, r2) = (self.circle(c, f"{where}.circles[{i}]") for i, c in enumerate(spec.circles))
             self.distinct((c1, c2), f"{where}.circles")
             return TwoCircles((c1, c2), (r1, r2), spec.side, self.near(spec.near, where))
-        if isinstance(spec, schema.CircleLineSpec):
+        if kind == "CircleLineSpec":
             center, radius = self.circle(spec.circle, f"{where}.circle")
             return CircleLine(center, radius, self.line(spec.line, f"{where}.line"), spec.side,
                               self.near(spec.near, where))
-        assert isinstance(spec, schema.LinesSpec)
+        assert kind == "LinesSpec", kind
         return TwoLines(tuple(self.line(l, f"{where}.lines[{i}]") for i, l in enumerate(spec.lines)))
 
     def loc(self, raw: object, where: str) -> Location:
@@ -174,9 +174,7 @@ class ConstructionReader:
         return self.loc(center, f"{where}[0]"), self.expr(radius, f"{where}[1]")
 
     def line(self, raw: object, where: str) -> LineDef:
-        from . import schema
-
-        if isinstance(raw, schema.LineSpec):
+        if type(raw).__name__ == "LineSpec":
             direction = raw.direction
             if len(direction) == 2 and all(isinstance(v, str) and v in self.known for v in direction):
                 raise KinematikaError("schema", "a line's direction is a vector; for a line through "

@@ -98,24 +98,45 @@ def mapping(check: Check) -> Check:
     return check_all
 
 
-def record(name: str, fields: dict[str, tuple[Check, Any]]) -> tuple[type, Check]:
-    """A record class and its check; a field's default is `REQUIRED`, a value or a factory."""
+def record(name: str, fields: dict[str, tuple[Check, Any]],
+           keys: Optional[dict[str, str]] = None) -> tuple[type, Check]:
+    """A record class and its check; a field's default is `REQUIRED`, a value or a factory.
+    `keys` gives the file's key of a field whose name differs (`from` for `from_`)."""
     cls = type(name, (Record,), {"FIELDS": tuple(fields),
                                  "DEFAULTS": {k: d for k, (_, d) in fields.items()}})
+    in_file = {(keys or {}).get(f, f): f for f in fields}
 
     def check(x: Any) -> Record:
-        if type(x) is not dict or not all(k in fields for k in x):
+        if type(x) is not dict or not all(k in in_file for k in x):
             raise _Refused
         out = {}
-        for key, (check_field, default) in fields.items():
+        for key, field in in_file.items():
+            check_field, default = fields[field]
             if key in x:
-                out[key] = check_field(x[key])
+                out[field] = check_field(x[key])
             elif default is REQUIRED:
                 raise _Refused
             else:
-                out[key] = default() if callable(default) else default
+                out[field] = default() if callable(default) else default
         return cls(**out)
     return cls, check
+
+
+def sized(check: Check, n: int) -> Check:
+    """A list of exactly `n` items, each checked."""
+    def check_all(x: Any) -> list:
+        if type(x) is not list or len(x) != n:
+            raise _Refused
+        return [check(v) for v in x]
+    return check_all
+
+
+def one_of(*choices: str) -> Check:
+    def check(x: Any) -> str:
+        if type(x) is str and x in choices:
+            return x
+        raise _Refused
+    return check
 
 
 REQUIRED = object()
@@ -133,6 +154,37 @@ DiscSpec, disc = record("DiscSpec", {"center": (center_or_point, REQUIRED), "rad
                                      "axis": (vector, REQUIRED)})
 PlaneSpec, plane = record("PlaneSpec", {"through": (center_or_point, REQUIRED),
                                         "normal": (vector, REQUIRED)})
+
+# points by construction (planar), as `schema`'s specs --------------------------------------
+location = either(text, vector)                 # a point's name, or coordinates
+PolarSpec, polar = record("PolarSpec", {
+    "from_": (location, REQUIRED), "distance": (value, REQUIRED), "angle": (value, REQUIRED),
+    "reference": (optional(sized(location, 2)), None)}, keys={"from_": "from"})
+FrameSpec, frame = record("FrameSpec", {"frame": (sized(location, 2), REQUIRED),
+                                        "at": (sized(value, 2), REQUIRED)})
+circle_ref = sized(either(text, vector, real), 2)
+line_ref = either(sized(location, 2), line)
+CirclesSpec, circles = record("CirclesSpec", {
+    "circles": (sized(circle_ref, 2), REQUIRED), "side": (optional(one_of("left", "right")), None),
+    "near": (optional(vector), None)})
+CircleLineSpec, circle_line = record("CircleLineSpec", {
+    "circle": (circle_ref, REQUIRED), "line": (line_ref, REQUIRED),
+    "side": (optional(one_of("ahead", "behind")), None), "near": (optional(vector), None)})
+LinesSpec, lines = record("LinesSpec", {"lines": (sized(line_ref, 2), REQUIRED)})
+CONSTRUCTIONS = (("from", polar), ("frame", frame), ("circles", circles), ("circle", circle_line),
+                 ("lines", lines))
+
+
+def point(x: Any) -> Any:
+    """Coordinates, or a construction told by its first key of `CONSTRUCTIONS` (as `schema`)."""
+    if type(x) is dict:
+        for key, check in CONSTRUCTIONS:
+            if key in x:
+                return check(x)
+        raise _Refused
+    return vector(x)
+
+
 BodySpec, body = record("BodySpec", {
     "points": (texts, list), "circle": (optional(circle), None), "line": (optional(line), None),
     "disc": (optional(disc), None), "plane": (optional(plane), None),
@@ -194,15 +246,16 @@ ModelSpec, model = record("ModelSpec", {
     "name": (optional(text), None), "description": (optional(text), None),
     "dimension": (optional(dimension), None), "frame": (text, "ground"),
     "parameters": (mapping(either(value, lambda x: None if x is None else parameter(x))), dict),
-    "points": (mapping(vector), REQUIRED),
+    "points": (mapping(point), REQUIRED),
     "bodies": (mapping(either(texts, body)), REQUIRED),
     "joints": (listed(joint), list), "drivers": (listed(driver), list),
     "ask": (optional(listed(question)), None), "sweep": (optional(sweep), None),
     "move": (optional(mapping(value)), None),
     "draw_at": (optional(mapping(real)), None), "up": (optional(listed(real)), None)})
 
-RECORDS = (ParameterSpec, CircleSpec, LineSpec, DiscSpec, PlaneSpec, BodySpec, JointSpec,
-           OmegaDriver, JointDriver, VelocityDriver, QuestionSpec, SweepSpec, ModelSpec)
+RECORDS = (ParameterSpec, CircleSpec, LineSpec, DiscSpec, PlaneSpec, PolarSpec, FrameSpec, CirclesSpec,
+           CircleLineSpec, LinesSpec, BodySpec, JointSpec, OmegaDriver, JointDriver, VelocityDriver,
+           QuestionSpec, SweepSpec, ModelSpec)
 
 
 def spec_of(tree: Any) -> Optional[Record]:
