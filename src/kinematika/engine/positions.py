@@ -9,6 +9,7 @@ construction that cannot be drawn is a `geometry` error naming the point and by 
 from __future__ import annotations
 
 import dataclasses
+import math
 from typing import TYPE_CHECKING, Any, Optional
 
 from ..errors import KinematikaError
@@ -136,6 +137,8 @@ class _Builder:
         dist = self.value(c.distance, "distance")
         angle = self.value(c.angle, "angle")
         cos, sin = self.bk.function("cos")(angle), self.bk.function("sin")(angle)
+        if not self.bk.symbolic:
+            cos, sin = _quarter_turns(float(angle), cos, sin)
         if c.reference is None:
             return (o[0] + dist * cos, o[1] + dist * sin)
         u = self.unit_from(self.at(c.reference[0], "reference[0]"), self.at(c.reference[1], "reference[1]"),
@@ -156,18 +159,21 @@ class _Builder:
         d2 = dx * dx + dy * dy
         k = r1 * r1 - r2 * r2 + d2
         disc = 4 * r1 * r1 * d2 - k * k                  # (4 d² h²): 16 × the triangle's area²
+        tangent = False
         if not self.bk.symbolic:
-            disc = self._circles_meet(c, p, q, r1, r2, d2, disc)
+            disc, tangent = self._circles_meet(c, p, q, r1, r2, d2, disc)
         h = self.bk.sqrt(disc) / (2 * d2)
         base = (p[0] + k * dx / (2 * d2), p[1] + k * dy / (2 * d2))
         left = (base[0] - h * dy, base[1] + h * dx)
         right = (base[0] + h * dy, base[1] - h * dx)
         names = {"left": left, "right": right}
         label = f"{_name(c.centers[0])}→{_name(c.centers[1])}"
-        return self.choose(c.side, c.near, names, disc, f"of {label}")
+        return self.choose(c.side, c.near, names, disc, f", one on each side of {label}", tangent)
 
     def _circles_meet(self, c: TwoCircles, p: tuple, q: tuple, r1: float, r2: float, d2: float,
-                      disc: float) -> float:
+                      disc: float) -> tuple[float, bool]:
+        """The discriminant (never negative), and whether the circles touch within the
+        tolerance; a `geometry` error when they do not meet."""
         d = d2 ** 0.5
         if d <= 1e-12 * max(r1, r2):
             raise KinematikaError("geometry", f"the circles about {_name(c.centers[0])} and "
@@ -183,7 +189,8 @@ class _Builder:
             raise KinematikaError("geometry", f"{about} do not meet: the circle about {inner} lies "
                                   f"inside the one about {outer} (centres {d:.6g} apart, "
                                   f"{abs(r1 - r2) - d:.6g} less than |{r1:.6g} − {r2:.6g}|)", self.where)
-        return max(disc, 0.0)
+        tangent = abs(d - (r1 + r2)) <= tol or abs(abs(r1 - r2) - d) <= tol
+        return max(disc, 0.0), tangent
 
     def circle_line(self, c: CircleLine) -> tuple:
         p = self.at(c.center, "circle[0]")
@@ -193,16 +200,18 @@ class _Builder:
         dd = d[0] * d[0] + d[1] * d[1]
         dw = d[0] * w[0] + d[1] * w[1]
         disc = dw * dw - dd * (w[0] * w[0] + w[1] * w[1] - r * r)     # dd (r² − distance²)
+        tangent = False
         if not self.bk.symbolic:
-            disc = self._line_meets(c, p, r, q, d, dd, disc)
+            disc, tangent = self._line_meets(c, p, r, q, d, dd, disc)
         root = self.bk.sqrt(disc)
         ahead, behind = ((-dw + root) / dd, (-dw - root) / dd)
         names = {"ahead": (q[0] + ahead * d[0], q[1] + ahead * d[1]),
                  "behind": (q[0] + behind * d[0], q[1] + behind * d[1])}
-        return self.choose(c.side, c.near, names, disc, f"along {_line_name(c.line)}")
+        return self.choose(c.side, c.near, names, disc, f" on the line {_line_name(c.line)}", tangent)
 
     def _line_meets(self, c: CircleLine, p: tuple, r: float, q: tuple, d: tuple, dd: float,
-                    disc: float) -> float:
+                    disc: float) -> tuple[float, bool]:
+        """As `_circles_meet`, for a circle and a line."""
         if dd <= 0:
             raise KinematikaError("schema", "a line's direction cannot be the zero vector",
                                   f"{self.where}.line")
@@ -211,7 +220,7 @@ class _Builder:
             raise KinematikaError("geometry", f"the circle about {_name(c.center)} ({r:.6g}) misses "
                                   f"the line {_line_name(c.line)}: the line is {dist:.6g} from "
                                   f"{_name(c.center)}, {dist - r:.6g} more than the radius", self.where)
-        return max(disc, 0.0)
+        return max(disc, 0.0), abs(dist - r) <= TOLERANCE * max(r, dist)
 
     def lines(self, c: TwoLines) -> tuple:
         (q1, d1), (q2, d2) = (self.line(line, f"lines[{i}]") for i, line in enumerate(c.lines))
@@ -241,21 +250,32 @@ class _Builder:
 
     # branches ------------------------------------------------------------------------
     def choose(self, side: Optional[str], near: Optional[tuple], options: dict[str, tuple],
-               disc: Any, relation: str) -> tuple:
+               disc: Any, relation: str, tangent: bool = False) -> tuple:
         """The intersection named by `side`, or nearest `near`; without either, the only one
-        (tangent) or a `geometry` error listing both."""
+        (tangent: the two meet within the tolerance, so their midpoint) or a `geometry`
+        error listing both."""
         if side is not None:
             return options[side]
         if near is not None:
             sketch = (float(self.value(near[0], "near[0]")), float(self.value(near[1], "near[1]")))
             return min(options.values(), key=lambda p: sum((self.num(a) - b) ** 2 for a, b in zip(p, sketch)))
         first, second = options.values()
+        if tangent:
+            return tuple((a + b) / 2 for a, b in zip(first, second))
         if self.num(disc) == 0:
             return first
         keys = list(options)
         shown = " and ".join(f"{_coords(self, p)} ({k})" for k, p in zip(keys, (first, second)))
-        raise KinematikaError("geometry", f"two points fit, {relation}: {shown}; choose one with "
+        raise KinematikaError("geometry", f"two points fit{relation}: {shown}; choose one with "
                               f"side: {keys[0]} or {keys[1]}, or near: [x, y]", self.where)
+
+
+def _quarter_turns(angle: float, cos: float, sin: float) -> tuple[float, float]:
+    """cos and sin with a zero that is only the round-off of a multiple of 90° made exact:
+    `deg(90)` is π/2 to the float's precision, and cos of it is 6e-17, not 0. A value below
+    the float spacing of the angle itself cannot be told from 0."""
+    spacing = math.ulp(angle) if angle else 0.0
+    return (0.0 if abs(cos) <= spacing else cos), (0.0 if abs(sin) <= spacing else sin)
 
 
 def _name(loc: Location) -> str:
