@@ -49,16 +49,18 @@ class _ArrayBuilder(_Builder):
         return (d[0] / norm, d[1] / norm)
 
     def _circles_meet(self, c: TwoCircles, p: tuple, q: tuple, r1: Any, r2: Any, d2: Any,
-                      disc: Any) -> Any:
+                      disc: Any) -> tuple[Any, Any]:
         d = np.sqrt(d2)
         tol = TOLERANCE * np.maximum(np.maximum(d, r1), r2)
         ok = (d > 1e-12 * np.maximum(r1, r2)) & (d - (r1 + r2) <= tol) & (np.abs(r1 - r2) - d <= tol)
-        return _nan_unless(ok, np.maximum(disc, 0.0))
+        tangent = (np.abs(d - (r1 + r2)) <= tol) | (np.abs(np.abs(r1 - r2) - d) <= tol)
+        return _nan_unless(ok, np.maximum(disc, 0.0)), tangent
 
-    def _line_meets(self, c: CircleLine, p: tuple, r: Any, q: tuple, d: tuple, dd: Any, disc: Any) -> Any:
+    def _line_meets(self, c: CircleLine, p: tuple, r: Any, q: tuple, d: tuple, dd: Any,
+                    disc: Any) -> tuple[Any, Any]:
         dist = np.abs((p[0] - q[0]) * d[1] - (p[1] - q[1]) * d[0]) / np.sqrt(dd)
         ok = (dd > 0) & (dist - r <= TOLERANCE * np.maximum(r, dist))
-        return _nan_unless(ok, np.maximum(disc, 0.0))
+        return _nan_unless(ok, np.maximum(disc, 0.0)), np.abs(dist - r) <= TOLERANCE * np.maximum(r, dist)
 
     def lines(self, c: TwoLines) -> tuple:
         (q1, d1), (q2, d2) = (self.line(line, f"lines[{i}]") for i, line in enumerate(c.lines))
@@ -81,7 +83,7 @@ class _ArrayBuilder(_Builder):
         return q, (_nan_unless(~zero, d[0]), _nan_unless(~zero, d[1]))
 
     def choose(self, side: Optional[str], near: Optional[tuple], options: dict[str, tuple],
-               disc: Any, relation: str) -> tuple:
+               disc: Any, relation: str, tangent: Any = False) -> tuple:
         first, second = options.values()
         if side is not None:
             return options[side]
@@ -91,6 +93,6 @@ class _ArrayBuilder(_Builder):
             d2 = sum((a - b) ** 2 for a, b in zip(second, sketch))
             pick = d1 <= d2
         else:
-            one = np.where(disc == 0, 1.0, np.nan)          # one point (tangent), else none
-            return (one * first[0], one * first[1])
+            one = np.where(tangent | (disc == 0), 1.0, np.nan)   # one point (touching), else none
+            return (one * (first[0] + second[0]) / 2, one * (first[1] + second[1]) / 2)
         return (np.where(pick, first[0], second[0]), np.where(pick, first[1], second[1]))

@@ -137,7 +137,7 @@ class _Builder:
         dist = self.value(c.distance, "distance")
         angle = self.value(c.angle, "angle")
         cos, sin = self.bk.function("cos")(angle), self.bk.function("sin")(angle)
-        if not self.bk.symbolic:
+        if isinstance(angle, (int, float)):          # one number (not symbols, not a batch)
             cos, sin = _quarter_turns(float(angle), cos, sin)
         if c.reference is None:
             return (o[0] + dist * cos, o[1] + dist * sin)
