@@ -18,6 +18,7 @@ import statistics
 from pathlib import Path
 
 import pytest
+import yaml
 from typer.testing import CliRunner
 
 from kinematika.cli import app as cli       # the typer application, every command registered
@@ -165,8 +166,8 @@ def test_the_slider_drives_figure_and_table_through_a_full_turn(page, capsys):
 def test_editing_a_length_solves_again(page):
     editor = page.get_by_test_id("model-editor")
     text = editor.input_value()
-    assert "A: [0, 1]" in text
-    editor.fill(text.replace("A: [0, 1]", "A: [0, 1.5]"))        # the crank 1.5 long
+    assert "  a: 1 " in text                                      # the crank O2A, by construction
+    editor.fill(text.replace("  a: 1 ", "  a: 1.5 "))             # the crank 1.5 long
     page.wait_for_function("() => JSON.parse(document.querySelector("
                            "'td[data-key=\"points.A@crank.velocity\"]').dataset.value)[0] < -14")
     assert cell(page, "points.A@crank.velocity") == pytest.approx([-15.0, 0.0], abs=1e-9)
@@ -199,12 +200,14 @@ def test_dragging_a_point_changes_the_text(page):
     page.mouse.down()
     page.mouse.move(x + 20, y - 30, steps=6)
     page.mouse.up()
-    page.wait_for_function("() => !document.querySelector('[data-testid=model-editor]').value.includes('A: [0, 1]')")
+    page.wait_for_function("() => !document.querySelector('[data-testid=model-editor]').value.includes('theta2: deg(90)')")
     page.wait_for_timeout(400)
     ready(page)
     text = page.get_by_test_id("model-editor").input_value()
-    line = next(l for l in text.splitlines() if l.strip().startswith("A:"))
-    x_new, y_new = json.loads(line.split(":", 1)[1])
+    # A is the crank's end by construction (a from O2 at theta2): the drag edits those two
+    params = yaml.safe_load(text)["parameters"]
+    theta = math.radians(float(params["theta2"].removeprefix("deg(").removesuffix(")")))
+    x_new, y_new = params["a"] * math.cos(theta), params["a"] * math.sin(theta)
     assert x_new > 0 and y_new > 1                       # right of and above where it was
     assert cell(page, "points.A@crank.position") == pytest.approx([x_new, y_new])
     # the crank turning at 10 rad/s about O2 = (0, 0): v_A = 10·(−y, x)
