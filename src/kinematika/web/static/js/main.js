@@ -174,7 +174,7 @@ async function settle() {
   const k = state.row, gen = state.gen;
   explainSoon();
   if (k === 0 || !state.sweep || !state.input) {
-    if (state.scene) figure.overlay(state.scene, 0);
+    if (state.scene) place(state.scene, 0);
     return;
   }
   const move = { move: { [state.input.joint]: state.sweep.coordinate[k] } };
@@ -182,8 +182,15 @@ async function settle() {
     const [sol, scene] = await Promise.all([post("solve", request(move)), post("draw", request({ ...move, centres: true }))]);
     if (gen !== state.gen || k !== state.row) return;
     answers.resolved(sol, k);
-    figure.overlay(scene, k);
+    place(scene, k);
   } catch (_) { /* moving is not available: the answers stay those of the drawn position */ }
+}
+
+/** The scene solved at row k: its results over the moving figure (planar), or the whole
+ * figure (a 3D model, whose figure does not move with the sweep's rows). */
+function place(scene, k) {
+  if (figure.sweep) figure.overlay(scene, k);
+  else if (figure.sceneRow !== k || figure.scene !== scene) figure.set(scene, null, k);
 }
 
 let playing = null;
