@@ -63,6 +63,7 @@ class _Builder:
             raise KinematikaError("schema", f"there is no fixed body {spec.frame!r}: name one body "
                                   f"{spec.frame!r} or set `frame:` to one of {_names(bodies)}", "bodies")
         self.body_map = bodies
+        self.body_points = {name: set(b.points) for name, b in bodies.items()}
         joints = self.joints()
         self.joint_list = joints
         model = Model(name=spec.name or "Mechanism", dimension=dimension, frame=spec.frame,
@@ -164,7 +165,8 @@ class _Builder:
                                      description=None)
             for p in raw.points:
                 self.known_point(p, where)
-            twice = sorted({p for p in raw.points if raw.points.count(p) > 1})
+            seen: set[str] = set()
+            twice = sorted({p for p in raw.points if p in seen or seen.add(p)})
             if twice:
                 raise KinematikaError("schema", f"point {twice[0]!r} is listed twice", where)
             out[name] = Body(name, list(raw.points), self.shapes(raw, where))
@@ -213,7 +215,7 @@ class _Builder:
             through, tp = self.location(raw.plane.through, f"{where}.plane.through")
             shapes.append(Plane(through, self.direction(raw.plane.normal,
                                                                f"{where}.plane.normal"), tp))
-        if self.dim == 2 and any(isinstance(s, (Disc, Plane)) for s in shapes):
+        if self.dim == 2 and shapes and any(isinstance(s, (Disc, Plane)) for s in shapes):
             raise KinematikaError("schema", "disc and plane shapes belong to 3D models; use circle "
                                   "and line in a planar model", where)
         return shapes
@@ -267,7 +269,7 @@ class _Builder:
         at = raw.at
         if at is not None:
             self.known_point(at, f"{where}.at")
-            carriers = [name for name in (a, b) if at in self.body_map[name].points]
+            carriers = [name for name in (a, b) if at in self.body_points[name]]
             must = {"revolute": (a, b), "spherical": (a, b), "slot": (b,), "wheel": (b,)}.get(kind, ())
             missing = [name for name in must if name not in carriers]
             if missing:

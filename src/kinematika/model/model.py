@@ -172,9 +172,18 @@ class Model:
     draw_at: dict[str, float] = field(default_factory=dict)   # figures: values of the symbols
     up: Optional[tuple[float, ...]] = None                    # figures: the vertical (3D)
 
+    _index: Optional["_Index"] = field(default=None, init=False, repr=False, compare=False)
+
+    def index(self) -> "_Index":
+        """Who carries each point and which joints are at it, found once (a model's bodies
+        and joints are not changed after it is built; changed copies are new models)."""
+        if self._index is None:
+            self._index = _Index(self)
+        return self._index
+
     def carriers(self, point: str) -> list[str]:
         """The bodies that list `point`, in the file's order."""
-        return [b.name for b in self.bodies.values() if point in b.points]
+        return list(self.index().carriers.get(point, ()))
 
     def material_points(self) -> list[PointRef]:
         """Every material point, body by body, in the file's order."""
@@ -227,8 +236,9 @@ class Model:
                 b = root[b]
             return b
 
-        for j in self.joints:
-            linked = j.type == "weld" or (j.type in ("revolute", "spherical") and j.at == point)
+        index = self.index()
+        for j in (*index.welds, *index.joints_at.get(point, ())):
+            linked = j.type == "weld" or j.type in ("revolute", "spherical")
             if linked and j.a in root and j.b in root:
                 root[find(j.a)] = find(j.b)
         classes: dict[str, list[str]] = {}
@@ -245,8 +255,8 @@ class Model:
         classes = self.motion_classes(point, carriers)
         if len(classes) == 1:
             return classes[0][0]
-        for j in self.joints:
-            if j.at == point and j.type in ("slot", "wheel"):
+        for j in self.index().joints_at.get(point, ()):
+            if j.type in ("slot", "wheel"):
                 return j.b
         moving = [b for b in carriers if b != self.frame]
         return moving[0] if moving else carriers[0]
@@ -254,3 +264,19 @@ class Model:
     @property
     def moving_bodies(self) -> list[str]:
         return [name for name in self.bodies if name != self.frame]
+
+
+class _Index:
+    """A model's lookups by point: its carriers (file order) and the joints at it (joint
+    order), and the welds, so that resolving every point takes linear time."""
+
+    def __init__(self, model: Model) -> None:
+        self.carriers: dict[str, list[str]] = {}
+        for body in model.bodies.values():
+            for point in body.points:
+                self.carriers.setdefault(point, []).append(body.name)
+        self.joints_at: dict[str, list[Joint]] = {}
+        for j in model.joints:
+            if j.at is not None:
+                self.joints_at.setdefault(j.at, []).append(j)
+        self.welds = [j for j in model.joints if j.type == "weld"]
