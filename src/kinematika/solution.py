@@ -26,6 +26,7 @@ class Solution:
     motion: Motion
     solver: InstantSolver
     _scales: Optional[tuple[float, float]] = field(default=None, repr=False)
+    _fields: Optional[tuple] = field(default=None, repr=False)
 
     @property
     def symbolic(self) -> bool:
@@ -72,6 +73,18 @@ class Solution:
     def alpha(self, body: str, relative_to: str | None = None) -> Any:
         return self.state(body, relative_to).alpha
 
+    def point_fields(self) -> tuple[list[PointRef], Any, Any, Any]:
+        """Every material point (file order) with its position, velocity and acceleration as
+        (n, dim) float arrays, computed at once from the body twists (numeric instants)."""
+        if self._fields is None:
+            import numpy as np
+
+            refs = self.model.material_points()
+            places = np.array([self.inst.points[r.point] for r in refs], dtype=float).reshape(len(refs), -1)
+            velocity, acceleration = self.motion.fields([r.body for r in refs], places)
+            self._fields = (refs, places, velocity, acceleration)
+        return self._fields
+
     # zero tests at the model's scale --------------------------------------------------------
     def scales(self) -> tuple[float, float]:
         """Characteristic speed and acceleration of the whole mechanism (numerically): the
@@ -79,15 +92,22 @@ class Solution:
         if self._scales is None:
             length = self.inst.scale
             speeds, accels = [0.0], [0.0]
-            for ref in self.model.material_points():
-                speeds.append(self.size(self.velocity(ref)))
-                accels.append(self.size(self.acceleration(ref)))
             rates = [0.0]
-            for body in self.model.bodies:
-                s = self.motion.states[body]
-                rates.append(self.size(self.space.rot_components(s.omega)))
-                speeds.append(rates[-1] * length)
-                accels.append(self.size(self.space.rot_components(s.alpha)) * length)
+            if self.symbolic:
+                for ref in self.model.material_points():
+                    speeds.append(self.size(self.velocity(ref)))
+                    accels.append(self.size(self.acceleration(ref)))
+                for body in self.model.bodies:
+                    s = self.motion.states[body]
+                    rates.append(self.size(self.space.rot_components(s.omega)))
+                    speeds.append(rates[-1] * length)
+                    accels.append(self.size(self.space.rot_components(s.alpha)) * length)
+            else:                        # the same maxima, from arrays
+                _, _, velocity, acceleration = self.point_fields()
+                omega, _, alpha, _ = self.motion.arrays()
+                rates.append(_largest_norm(omega))
+                speeds += [_largest_norm(velocity), rates[-1] * length]
+                accels += [_largest_norm(acceleration), _largest_norm(alpha) * length]
             # a body turning at ω has accelerations of order ω² L even where none is asked
             accels.append(max(rates) ** 2 * length)
             self._scales = (max(speeds), max(accels))
@@ -134,3 +154,15 @@ class Solution:
 
 def _norm(values: Any) -> float:
     return math.hypot(*(float(v) for v in values))     # no overflow of the squares
+
+
+def _largest_norm(rows: Any) -> float:
+    """The largest Euclidean norm of an array's rows (no overflow of the squares), 0 for none."""
+    import numpy as np
+
+    if not len(rows):
+        return 0.0
+    norms = np.abs(rows[:, 0])
+    for k in range(1, rows.shape[1]):
+        norms = np.hypot(norms, rows[:, k])
+    return float(norms.max())

@@ -245,3 +245,72 @@ def test_every_example_is_read_in_one_pass_as_yaml_load_reads_it(path):
 
     text = path.read_text()
     assert repr(_plain_yaml(text)) == repr(yaml.load(text, Loader=yaml.SafeLoader))
+
+
+# the answer's tables from arrays ----------------------------------------------------------
+def _tables_one_by_one(sol):
+    """The bodies' and points' tables as the general path writes them: every value from the
+    tuple formulas (`Solution.velocity`…), rounded one scalar at a time."""
+    from kinematika.report.values import plain
+
+    speed, accel, length = sol.speed_scale(), sol.accel_scale(), sol.inst.scale
+    bodies = {name: {"omega": plain(sol.state(name).omega, False, sol.rate_scale()),
+                     "alpha": plain(sol.state(name).alpha, False, accel / length)}
+              for name in sol.model.bodies}
+    points = {str(ref): {"position": plain(sol.position(ref), False, length),
+                         "velocity": plain(sol.velocity(ref), False, speed),
+                         "acceleration": plain(sol.acceleration(ref), False, accel)}
+              for ref in sol.model.material_points()}
+    return bodies, points
+
+
+NUMERIC_EXAMPLES = [p for p in EXAMPLE_FILES if "symbolic" not in p.stem]
+
+
+@pytest.mark.parametrize("path", NUMERIC_EXAMPLES, ids=[p.stem for p in NUMERIC_EXAMPLES])
+def test_the_answer_tables_from_arrays_are_the_one_by_one_tables(path):
+    from kinematika import KinematikaError, solve
+    from kinematika.report.json_answer import solution_json
+
+    try:
+        sol = solve(path)
+    except KinematikaError:
+        pytest.skip("the example is an error case")
+    if sol.symbolic:
+        pytest.skip("symbolic")
+    data = solution_json(sol)
+    bodies, points = _tables_one_by_one(sol)
+    assert json.dumps(data["bodies"]) == json.dumps(bodies)
+    assert json.dumps(data["points"]) == json.dumps(points)
+    for q, given in zip(sol.model.questions, data["answers"]):
+        if q.kind in ("velocity", "acceleration") and q.relative_to in (None, sol.model.frame):
+            assert given["value"] == points[str(q.target)][q.kind]
+
+
+def test_a_large_chains_answer_is_its_hand_derivation():
+    """Every loop a parallelogram: rockers turn as the crank (ω, α), couplers translate, and
+    every pin A_i = (4i, 1) moves as the crank pin: v = ω k × (0, 1) = (−ω, 0),
+    a = α k × (0, 1) − ω² (0, 1) = (−α, −ω²); the pivots O_i stand still. (The sparse LU
+    leaves round-off of about 1e-11 in the accelerations of the far loops.)"""
+    sys.path.insert(0, str(EXAMPLES.parent / "benchmarks"))
+    from chain import four_bar_chain
+
+    from kinematika.commands import solve_data
+
+    w, alpha = 10.0, 3.0
+    tree = four_bar_chain(301, w=w, alpha=alpha)
+    del tree["ask"]                     # the default questions: every body and point
+    data = solve_data(tree)
+    assert data["dof"] == 1 and len(data["bodies"]) == 302
+    for i in range(1, 151):
+        assert data["bodies"][f"rocker{i}"] == {"omega": w, "alpha": pytest.approx(alpha, rel=1e-9)}
+        assert data["bodies"][f"coupler{i}"] == {"omega": 0.0, "alpha": 0.0}
+        for ref in (f"A{i}@rocker{i}", f"A{i}@coupler{i}", f"A{i - 1}@coupler{i}"):
+            assert data["points"][ref]["velocity"] == [-w, 0.0]
+            assert data["points"][ref]["acceleration"] == pytest.approx([-alpha, -w * w], rel=1e-9)
+        assert data["points"][f"O{i}@rocker{i}"] == {"position": [4.0 * i, 0.0], "velocity": [0.0, 0.0],
+                                                     "acceleration": [0.0, 0.0]}
+    answers = {(a["ask"].get("velocity") or a["ask"].get("omega") or a["ask"].get("acceleration")
+                or a["ask"].get("alpha"), next(iter(a["ask"]))): a["value"] for a in data["answers"]}
+    assert answers[("A150@rocker150", "velocity")] == [-w, 0.0]
+    assert answers[("rocker150", "alpha")] == pytest.approx(alpha, rel=1e-9)

@@ -37,3 +37,35 @@ def test_formulas_read_as_in_the_notes(value, text):
     difference = sp.sympify(text, locals=names) - value
     at = {x: 0.3 + 0.17 * i for i, x in enumerate(names.values())}     # simplify cannot always tell
     assert sp.simplify(difference) == 0 or abs(complex(difference.subs(at))) < 1e-12
+
+
+# numbers rounded by arrays ----------------------------------------------------------------
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+def _same(array, scale):
+    import math
+
+    import numpy as np
+
+    from kinematika.report.values import number, numbers
+
+    got = numbers(np.array(array, dtype=float), scale).tolist()
+    want = [number(x, scale) for x in array]
+    for g, w in zip(got, want):
+        assert (math.isnan(g) and math.isnan(w)) or (g == w and math.copysign(1, g) == math.copysign(1, w))
+
+
+@given(st.lists(st.floats(allow_nan=True, allow_infinity=True), max_size=50),
+       st.floats(min_value=1e-30, max_value=1e30))
+def test_numbers_round_arrays_exactly_as_number_rounds_each(values, scale):
+    _same(values, scale)
+
+
+@settings(max_examples=50)
+@given(st.integers(-40, 40), st.integers(1, 10 ** 12), st.sampled_from([0.5, 0.49999999999, 1.0, 0.0, 0.5000001]))
+def test_numbers_round_near_ties_and_powers_of_ten_as_number(exponent, mantissa, tail):
+    """Values whose 13th digit is (nearly) a half, or that are (nearly) powers of ten."""
+    values = [(mantissa + tail) * 10.0 ** (exponent - 12), -(mantissa + tail) * 10.0 ** (exponent - 12),
+              10.0 ** exponent, 10.0 ** exponent * (1 - 1e-16), 10.0 ** exponent * (1 + 2e-16)]
+    _same(values, 1e-30)

@@ -7,7 +7,7 @@ quantity (any point, any frame) follows from these by the rigid-body formulas be
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Sequence
 
 from ..algebra.vectors import Space, add, scale, sub
 
@@ -55,6 +55,34 @@ class Motion:
         r = sub(point, self.ref)
         return add(add(state.a0, sp.cross(state.alpha, r)), sp.cross(state.omega, sp.cross(state.omega, r)))
 
+    def arrays(self) -> tuple[Any, Any, Any, Any]:
+        """ω, v₀, α, a₀ of every body (the order of `states`) as float arrays of one row per
+        body (ω and α with one column in the plane, three in space); numeric motions."""
+        import numpy as np
+
+        sp, n = self.space, len(self.states)
+        table = [(sp.rot_components(s.omega), s.v0, sp.rot_components(s.alpha), s.a0)
+                 for s in self.states.values()]
+        return tuple(np.array([t[k] for t in table], dtype=float).reshape(n, width)
+                     for k, width in enumerate((sp.rot, sp.dim, sp.rot, sp.dim)))
+
+    def fields(self, bodies: Sequence[str], points: Any) -> tuple[Any, Any]:
+        """Velocities and accelerations of many material points of a numeric motion at once:
+        point k of body `bodies[k]` at `points[k]` (an (n, dim) float array). The formulas of
+        `velocity` and `acceleration` with numpy, operation for operation, so the numbers
+        are the same."""
+        import numpy as np
+
+        sp = self.space
+        row = {name: i for i, name in enumerate(self.states)}
+        take = np.array([row[b] for b in bodies], dtype=np.intp)
+        w, v0, alpha, a0 = (column[take] for column in self.arrays())
+        r = np.asarray(points, dtype=float).reshape(len(take), sp.dim) - np.asarray(self.ref, dtype=float)
+        turn = _cross if sp.dim == 3 else _cross_planar
+        velocity = v0 + turn(w, r)
+        acceleration = (a0 + turn(alpha, r)) + turn(w, turn(w, r))
+        return velocity, acceleration
+
     def point_velocity(self, body: str, point: tuple, relative_to: str | None = None) -> tuple:
         return self.velocity(self.state(body, relative_to), point)
 
@@ -71,3 +99,18 @@ class Motion:
         a_rel = sub(sub(acceleration, self.acceleration(f, position)),
                     scale(2, self.space.cross(f.omega, v_rel)))
         return v_rel, a_rel
+
+
+def _cross_planar(w: Any, r: Any) -> Any:
+    """Rows of ω k × r, as `Space.cross` computes them: (−ω r_y, ω r_x)."""
+    import numpy as np
+
+    return np.stack([-w[:, 0] * r[:, 1], w[:, 0] * r[:, 0]], axis=1)
+
+
+def _cross(a: Any, b: Any) -> Any:
+    """Rows of a × b, as `cross3` computes them."""
+    import numpy as np
+
+    return np.stack([a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1], a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2],
+                     a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]], axis=1)

@@ -5,7 +5,7 @@ from typing import Any
 
 from ..questions import answer
 from ..solution import Solution
-from .values import plain
+from .values import numbers, plain
 
 
 # the kind of each field of a compound answer (None: a unit vector or a pure number)
@@ -32,17 +32,54 @@ def solution_json(sol: Solution) -> dict[str, Any]:
     length = sol.inst.scale
     scale, fields = answer_scales(sol)
     model = sol.model
-    bodies = {}
-    for name in model.bodies:
-        s = sol.state(name)
-        bodies[name] = {"omega": plain(s.omega, sym, scale["omega"]),
-                        "alpha": plain(s.alpha, sym, scale["alpha"])}
-    points = {}
-    for ref in model.material_points():
-        points[str(ref)] = {"position": plain(sol.position(ref), sym, scale["position"]),
-                            "velocity": plain(sol.velocity(ref), sym, scale["velocity"]),
-                            "acceleration": plain(sol.acceleration(ref), sym, scale["acceleration"])}
-    answers = [{"ask": q.echo, "value": plain(answer(sol, q), sym, scale.get(q.kind, length), fields)}
+    if sym:
+        bodies = {}
+        for name in model.bodies:
+            s = sol.state(name)
+            bodies[name] = {"omega": plain(s.omega, sym, scale["omega"]),
+                            "alpha": plain(s.alpha, sym, scale["alpha"])}
+        points = {}
+        for ref in model.material_points():
+            points[str(ref)] = {"position": plain(sol.position(ref), sym, scale["position"]),
+                                "velocity": plain(sol.velocity(ref), sym, scale["velocity"]),
+                                "acceleration": plain(sol.acceleration(ref), sym, scale["acceleration"])}
+    else:
+        bodies, points = _numeric_tables(sol, scale)
+    answers = [{"ask": q.echo, "value": _answer(sol, q, bodies, points, scale.get(q.kind, length), fields)}
                for q in model.questions]
     return {"name": model.name, "dimension": model.dimension, "dof": sol.dof, "symbolic": sym,
             "bodies": bodies, "points": points, "answers": answers}
+
+
+def _numeric_tables(sol: Solution, scale: dict[str, float]) -> tuple[dict, dict]:
+    """The bodies' and points' tables of a numeric instant, every column rounded at once
+    (`numbers`): the values `plain` gives one by one."""
+    omega, _, alpha, _ = sol.motion.arrays()
+    if sol.space.rot == 1:
+        omega, alpha = omega[:, 0], alpha[:, 0]
+    rates = zip(numbers(omega, scale["omega"]).tolist(), numbers(alpha, scale["alpha"]).tolist())
+    bodies = {name: {"omega": w, "alpha": a} for name, (w, a) in zip(sol.motion.states, rates)}
+    refs, places, velocity, acceleration = sol.point_fields()
+    columns = [numbers(values, scale[kind]).tolist() for values, kind in
+               ((places, "position"), (velocity, "velocity"), (acceleration, "acceleration"))]
+    points = {str(ref): {"position": p, "velocity": v, "acceleration": a}
+              for ref, p, v, a in zip(refs, *columns)}
+    return bodies, points
+
+
+def _answer(sol: Solution, q: Any, bodies: dict, points: dict, scale: float,
+            fields: dict[str, float]) -> Any:
+    """A question's answer as plain data: read from the tables when it is one of their
+    entries (a body's ω or α, a material point's velocity or acceleration, in the fixed
+    frame, at the same scale), else answered and converted."""
+    frame = q.relative_to in (None, sol.model.frame)
+    if not sol.symbolic and frame:
+        if q.kind in ("omega", "alpha") and q.target in bodies:
+            return _copy(bodies[q.target][q.kind])
+        if q.kind in ("velocity", "acceleration") and str(q.target) in points:
+            return _copy(points[str(q.target)][q.kind])
+    return plain(answer(sol, q), sol.symbolic, scale, fields)
+
+
+def _copy(value: Any) -> Any:
+    return list(value) if isinstance(value, list) else value

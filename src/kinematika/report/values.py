@@ -35,6 +35,44 @@ def number(x: Any, scale: float = 1.0) -> float:
     return float(round(x, digits)) + 0.0
 
 
+_POWERS_OF_TEN = [float(10 ** k) for k in range(23)]      # exact doubles
+
+
+def numbers(values: Any, scale: float = 1.0) -> Any:
+    """`number` of every element of a float array, as a float array, without a Python float
+    per element: exactly `number`'s results (a model of 10 000 bodies has 300 000 of them).
+
+    x·10^d (or x/10^-d) is rounded to an integer n in floating point and n/10^d taken: both
+    operations are exact or correctly rounded while 10^|d| is exact (|d| ≤ 22), which is
+    what Python's `round` gives unless x·10^d lies within rounding error of a half-integer:
+    those few, and magnitudes beyond 10^±22, go through `number`. Near a power of ten
+    (where numpy's log10 and math's might disagree on the floor) the exponent is math's."""
+    import numpy as np
+
+    given = np.asarray(values, dtype=float)
+    x = given.ravel()
+    magnitude = np.abs(x)
+    finite = np.isfinite(x)
+    live = finite & (magnitude > 1e-12 * scale) & (x != 0)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        log = np.log10(np.where(live, magnitude, 1.0))
+        exponent = np.floor(log)
+        near = np.flatnonzero(live & (np.abs(log - np.rint(log)) <= 1e-9))   # near 1, 10, 100…
+        exponent[near] = [math.floor(math.log10(v)) for v in magnitude[near].tolist()]
+        digits = SIGNIFICANT - 1 - exponent
+        safe = live & (np.abs(digits) <= 22)
+        power = np.array(_POWERS_OF_TEN).take(np.abs(np.where(safe, digits, 0.0)).astype(int))
+        up = digits >= 0
+        scaled = np.where(up, x * power, x / power)
+        whole = np.rint(scaled)
+        safe &= np.abs(np.abs(scaled - np.floor(scaled)) - 0.5) > 1e-3
+        rounded = np.where(up, whole / power, whole * power)
+    out = np.where(live, rounded, np.where(finite, 0.0, x)) + 0.0
+    for i in np.flatnonzero(live & ~safe):
+        out[i] = number(x[i], scale)
+    return out.reshape(given.shape)
+
+
 def formula(x: Any) -> str:
     """A simplified formula in sympy's syntax (`4*Omega/3`, `sqrt(2)*r*w/4`)."""
     return str(tidy(x))
