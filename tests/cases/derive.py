@@ -154,12 +154,12 @@ def tb_fourbar_crossed_near():
     return answers[:4]
 
 
-def tb_fourbar_coupler_point():
+def tb_fourbar_coupler_point(theta2: float = 120):
     """Freudenstein (open), Norton 6.18/7.12; the coupler point by Norton 6.36/7.32:
     V_P = V_A + p ω3 (−sin(θ3 + δ3), cos(θ3 + δ3)), A_P = A_A + p α3 (...) − p ω3² (...);
     the coupler's instant centre where the lines O2A and O4B meet; the curvature of P's path
     from v and a (radius |v|³/|v × a|)."""
-    a, b, c, d, p, delta, t2, w2 = 3, 7.5, 8, 9, 4, math.radians(30), math.radians(120), 10
+    a, b, c, d, p, delta, t2, w2 = 3, 7.5, 8, 9, 4, math.radians(30), math.radians(theta2), 10
     t3, t4 = freudenstein(a, b, c, d, t2)
     w3, w4, al3, al4 = norton_rates(a, b, c, t2, t3, t4, w2, 0)
     pa = [a * math.cos(t2), a * math.sin(t2)]
@@ -171,6 +171,13 @@ def tb_fourbar_coupler_point():
     # the coupler's centre: on the crank line O2A and on the rocker line O4B
     icr = line_meet([0, 0], pa, [d, 0], [math.cos(t4), math.sin(t4)])
     return [v_p, a_p, {"point": icr}, curvature(pp, v_p, a_p)]
+
+
+def tb_fourbar_moved():
+    """The coupler-point four-bar at 120° + 45° = 165°: a Grashof crank-rocker stays on its
+    (open) circuit over the whole turn, so the moved configuration is Freudenstein's open
+    root at 165°, and everything as for the coupler point there."""
+    return tb_fourbar_coupler_point(120 + 45)
 
 
 def tb_slider_crank_offset():
@@ -260,7 +267,7 @@ def tb_stephenson_six_bar():
 
 
 NUMERIC = {f.__name__: f for f in (
-    tb_fourbar_inclined_ground, tb_fourbar_crossed_near, tb_fourbar_coupler_point,
+    tb_fourbar_inclined_ground, tb_fourbar_crossed_near, tb_fourbar_coupler_point, tb_fourbar_moved,
     tb_slider_crank_offset, tb_inverted_slider_crank, tb_whitworth, tb_crank_shaper,
     tb_watt_six_bar, tb_stephenson_six_bar)}
 
@@ -312,7 +319,7 @@ def tb_slider_crank_symbolic_lengths():
 SYMBOLIC = {f.__name__: f for f in (tb_fourbar_symbolic_theta, tb_crank_shaper_symbolic_theta,
                                     tb_slider_crank_symbolic_lengths)}
 
-ERRORS = {"tb_err_no_side": "geometry", "tb_err_circle_inside": "geometry", "tb_err_cycle": "schema",
+ERRORS = {"tb_err_no_side": "geometry", "tb_err_circles_apart": "geometry", "tb_err_circle_inside": "geometry", "tb_err_cycle": "schema",
           "tb_err_near_symbolic": "schema", "tb_err_unknown_point": "schema",
           "tb_err_toggle_singular": "singular", "tb_err_parallel_lines": "geometry",
           "tb_err_rod_too_short": "geometry"}
