@@ -130,10 +130,6 @@ def inclined_four_bar(open_circuit: bool):
     return [w3, w4, al3, al4, v_b, a_b], side, [o4[0] + r[0], o4[1] + r[1]]
 
 
-def _docstring(fn) -> str:
-    return " ".join((fn.__doc__ or "").split())
-
-
 def tb_fourbar_inclined_ground():
     """Freudenstein's equation in the ground link's frame (θ2 = 40° from it), the open
     root (−√, B left of A→O4); ω, α by Norton 6.18 and 7.12; v_B = ω4 k × O4B and
@@ -337,6 +333,10 @@ def expected(name: str) -> dict:
     fn = NUMERIC[name]
     return {"source": f"{source} Derived by hand: {_docstring(fn)}", "symbolic": False,
             "tolerance": 1e-9, "abs": 1e-9, "answers": fn()}
+
+
+def _docstring(fn) -> str:
+    return " ".join((fn.__doc__ or "").split())
 
 
 def _first_comment(path: Path) -> str:

@@ -4,7 +4,6 @@ four-bar and its coupler point, the closed form ω(θ) derived on the page, the
 slider-crank's textbook v_B), and the numbers the page quotes are those."""
 from __future__ import annotations
 
-import importlib.util
 import math
 import re
 
@@ -14,6 +13,7 @@ import yaml
 
 import kinematika
 from kinematika.report.json_answer import solution_json
+from tests.conftest import hand_derivations
 
 from .helpers import EXAMPLES
 
@@ -23,14 +23,7 @@ PROBLEM = ROOT / "docs" / "from-a-problem" / "four_bar_problem.yaml"
 THETA = ROOT / "docs" / "from-a-problem" / "four_bar_theta.yaml"
 
 
-def _derive():
-    spec = importlib.util.spec_from_file_location("textbook_derive", ROOT / "tests" / "cases" / "derive.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-derive = _derive()
+derive = hand_derivations()
 A, B, C, D, P, DELTA, T2, W2, AL2 = 3, 7.5, 8, 9, 4, math.radians(30), math.radians(120), 10, -5
 
 

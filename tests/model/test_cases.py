@@ -8,7 +8,6 @@ checks that the files still hold exactly them.
 """
 from __future__ import annotations
 
-import importlib.util
 import json
 import random
 import subprocess
@@ -18,17 +17,12 @@ from pathlib import Path
 import pytest
 import sympy
 
+from tests.conftest import hand_derivations
+
 CASES = Path(__file__).resolve().parents[1] / "cases"
 
 
-def _derive():
-    spec = importlib.util.spec_from_file_location("textbook_derive", CASES / "derive.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-derive = _derive()
+derive = hand_derivations()
 NAMES = sorted(p.stem for p in CASES.glob("*.yaml"))
 
 

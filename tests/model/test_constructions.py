@@ -15,6 +15,9 @@ import sympy
 import kinematika
 from kinematika import KinematikaError
 from kinematika.report.json_answer import solution_json
+from tests.conftest import hand_derivations
+
+_hand = hand_derivations()
 
 
 def four_bar_tree(a=2.25, b=6.1, c=4.35, d=5.2, theta=52, side="left", w=9.5, alpha=-21.0) -> dict:
@@ -35,35 +38,9 @@ def four_bar_tree(a=2.25, b=6.1, c=4.35, d=5.2, theta=52, side="left", w=9.5, al
     }
 
 
-def freudenstein(a, b, c, d, t2, open_circuit=True):
-    """θ3, θ4 of a four-bar (ground along +x) by Norton's solution of Freudenstein's equation."""
-    k1, k2, k3 = d / a, d / c, (a * a - b * b + c * c + d * d) / (2 * a * c)
-    k4, k5 = d / b, (c * c - d * d - a * a - b * b) / (2 * a * b)
-    aa = math.cos(t2) - k1 - k2 * math.cos(t2) + k3
-    bb = -2 * math.sin(t2)
-    cc = k1 - (k2 + 1) * math.cos(t2) + k3
-    dd = math.cos(t2) - k1 + k4 * math.cos(t2) + k5
-    ee = -2 * math.sin(t2)
-    ff = k1 + (k4 - 1) * math.cos(t2) + k5
-    s = -1 if open_circuit else 1
-    t4 = 2 * math.atan2(-bb + s * math.sqrt(bb * bb - 4 * aa * cc), 2 * aa)
-    t3 = 2 * math.atan2(-ee + s * math.sqrt(ee * ee - 4 * dd * ff), 2 * dd)
-    return t3, t4
-
-
-def norton_rates(a, b, c, t2, t3, t4, w2, al2):
-    """ω3, ω4, α3, α4 of a four-bar (Norton, eqs. 6.18 and 7.12)."""
-    w3 = a * w2 / b * math.sin(t4 - t2) / math.sin(t3 - t4)
-    w4 = a * w2 / c * math.sin(t2 - t3) / math.sin(t4 - t3)
-    A = c * math.sin(t4)
-    B = b * math.sin(t3)
-    C = a * al2 * math.sin(t2) + a * w2 ** 2 * math.cos(t2) + b * w3 ** 2 * math.cos(t3) - c * w4 ** 2 * math.cos(t4)
-    D = c * math.cos(t4)
-    E = b * math.cos(t3)
-    F = a * al2 * math.cos(t2) - a * w2 ** 2 * math.sin(t2) - b * w3 ** 2 * math.sin(t3) + c * w4 ** 2 * math.sin(t4)
-    al3 = (C * D - A * F) / (A * E - B * D)
-    al4 = (C * E - B * F) / (A * E - B * D)
-    return w3, w4, al3, al4
+# Freudenstein's equation as Norton solves it (eqs. 4.10-4.13) and Norton's rate equations
+# (6.18, 7.12), written out once in tests/cases/derive.py
+freudenstein, norton_rates = _hand.freudenstein, _hand.norton_rates
 
 
 def values(tree: dict) -> list:
