@@ -49,7 +49,18 @@ class Solution:
                 raise KinematikaError("schema", f"unknown body {name!r} (bodies: "
                                       f"{', '.join(self.model.bodies)})")
         frame = None if relative_to in (None, self.model.frame) else relative_to
+        if self.exact is not None and frame is not None:
+            return self.exact.state(body, frame)
         return self.motion.state(body, frame)
+
+    @property
+    def exact(self) -> Any:
+        """A symbolic solution in stand-ins (`engine.exact`): point motions are derived there,
+        where formulas are small, and revealed once; None for a numeric one."""
+        return getattr(self.solver, "exact", None)
+
+    def _frame(self, relative_to: str | None) -> str | None:
+        return None if relative_to in (None, self.model.frame) else relative_to
 
     def point(self, ref: PointRef | str) -> PointRef:
         """A material point from ``P@body`` or a bare ``P``."""
@@ -61,10 +72,18 @@ class Solution:
 
     def velocity(self, ref: PointRef | str, relative_to: str | None = None) -> tuple:
         ref = self.point(ref)
+        if self.exact is not None:
+            self.state(ref.body, relative_to)            # the names checked
+            raw = self.exact.velocity(ref.body, ref.point, self._frame(relative_to))
+            return self.exact.reveal.vector(raw)
         return self.motion.velocity(self.state(ref.body, relative_to), self.position(ref))
 
     def acceleration(self, ref: PointRef | str, relative_to: str | None = None) -> tuple:
         ref = self.point(ref)
+        if self.exact is not None:
+            self.state(ref.body, relative_to)
+            raw = self.exact.acceleration(ref.body, ref.point, self._frame(relative_to))
+            return self.exact.reveal.vector(raw)
         return self.motion.acceleration(self.state(ref.body, relative_to), self.position(ref))
 
     def omega(self, body: str, relative_to: str | None = None) -> Any:
@@ -94,14 +113,19 @@ class Solution:
             speeds, accels = [0.0], [0.0]
             rates = [0.0]
             if self.symbolic:
+                # the numbers come from the formulas in stand-ins, when solved there: nothing revealed
+                world = self.exact
+                inst = world.inst if world is not None else self.inst
+                motion = world.motion if world is not None else self.motion
                 for ref in self.model.material_points():
-                    speeds.append(self.size(self.velocity(ref)))
-                    accels.append(self.size(self.acceleration(ref)))
+                    state, point = motion.states[ref.body], inst.points[ref.point]
+                    speeds.append(_norm(inst.numvec(motion.velocity(state, point))))
+                    accels.append(_norm(inst.numvec(motion.acceleration(state, point))))
                 for body in self.model.bodies:
-                    s = self.motion.states[body]
-                    rates.append(self.size(self.space.rot_components(s.omega)))
+                    s = motion.states[body]
+                    rates.append(_norm(inst.numvec(self.space.rot_components(s.omega))))
                     speeds.append(rates[-1] * length)
-                    accels.append(self.size(self.space.rot_components(s.alpha)) * length)
+                    accels.append(_norm(inst.numvec(self.space.rot_components(s.alpha))) * length)
             else:                        # the same maxima, from arrays
                 _, _, velocity, acceleration = self.point_fields()
                 omega, _, alpha, _ = self.motion.arrays()

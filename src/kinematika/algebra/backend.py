@@ -129,12 +129,11 @@ class Symbolic:
         return self.sp.Symbol(name, real=True)
 
     def sqrt(self, x: Any) -> Any:
-        """√x, with sin² + cos² = 1 and squares of the symbols recognised first."""
+        """√x, with sin² + cos² = 1 and squares of the symbols recognised first (in the
+        exact field, where trigsimp on a long radicand would take seconds)."""
         sp = self.sp
         x = sp.sympify(x)
-        if x.has(sp.sin, sp.cos):
-            x = sp.trigsimp(x)
-        elif not x.is_number:
+        if not x.is_number:
             from .fields import canonical
 
             x = canonical(x)

@@ -38,6 +38,7 @@ class InstantSolver:
                                                {j.id: joint_geometry(inst, j) for j in model.joints})
         self.analysis: Analysis | SparseAnalysis | None = None
         self.rows_v: list[Row] = []
+        self.exact: Any = None      # a symbolic instant's solution in stand-ins (`engine.exact`)
 
     def rows(self, lv: Level) -> list[Row]:
         out: list[Row] = []
@@ -137,6 +138,8 @@ class InstantSolver:
         inst, u = self.inst, self.unknowns
         if self.analysis is None:
             self.prepare()
+        if inst.symbolic and self.space.dim == 2:     # spatial formulas are solved as written
+            return self._solve_exact()
         x_v = self.solve_linear(self.b_v, check=True)
         velocities = self._motion(x_v, None)
         # the acceleration system has the same matrix: only its known terms are built
@@ -144,6 +147,42 @@ class InstantSolver:
         # redundant conditions must agree at this level too: an α the joints forbid is a conflict
         x_a = self.solve_linear([-r.lin.const for r in rows_a], labels=[r.label for r in rows_a])
         return self._motion(x_v, x_a)
+
+    def _solve_exact(self) -> Motion:
+        """Both levels solved with the coordinates as stand-ins (`engine.exact`), then the
+        coordinates written in: the same analysis (blocks, pivots) as the numeric twin."""
+        from .exact import ExactWorld, Reveal, stand_in_instant, stand_in_values
+
+        inst, u = self.inst, self.unknowns
+        standin, values = stand_in_instant(inst)
+        twin = InstantSolver(standin)
+        a, b_v = twin.matrix(twin.rows(VelocityLevel(u, inst.ref)))
+        x_v = self._solve_exact_level(standin, a, b_v, self.labels, True)
+        # the accelerations are solved with the velocities as stand-ins too
+        x_w, known = stand_in_values(x_v, standin, "x")
+        values.update(known)
+        velocities = twin._motion(x_w, None)
+        rows_a = twin.rows(AccelerationLevel(KnownTerms(u), inst.ref, velocities))
+        x_a = self._solve_exact_level(standin, a, [-r.lin.const for r in rows_a],
+                                      [r.label for r in rows_a], True)
+        self.exact = ExactWorld(standin, twin._motion(x_v, x_a), twin._motion(x_w, x_a),
+                                Reveal(values, set(known)))
+        states = {body: self.exact.state(body) for body in self.exact.motion.states}
+        return Motion(self.space, inst.ref, states)
+
+    def _solve_exact_level(self, standin: Instant, a: list[list[Any]], b: list[Any],
+                           labels: list[str], check: bool) -> list[Any]:
+        """A x = b exactly (in stand-ins), after the numeric solve checks its consistency."""
+        b_num = np.array([standin.num(v) for v in b], dtype=float)
+        with np.errstate(all="ignore"):
+            x_num = solve_numeric(self.analysis, b_num, labels, self.wheres, self.is_driver, check)
+        if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
+            raise KinematikaError("schema", "the model's values are too large: its velocities or "
+                                  "accelerations overflow the range of floating-point numbers",
+                                  "drivers")
+        exact = solve_symbolic(self.analysis, a, b, self.a_num)
+        standin.backend.check_against(exact, x_num, standin.probe)
+        return exact
 
     def _motion(self, x_v: list[Any], x_a: list[Any] | None) -> Motion:
         sp, u = self.space, self.unknowns

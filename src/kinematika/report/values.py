@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import math
+import time
 from typing import Any, Mapping
 
 SIGNIFICANT = 12
@@ -90,21 +91,29 @@ def tidy(x: Any) -> Any:
     if x.is_Atom:
         return x
     x = canonical(x)
+    if sympy.count_ops(x) > MAX_TIDY_OPS:       # past the budget: the canonical form as it is
+        return x
     if x.has(sympy.sin, sympy.cos):
-        x = x.replace(_trig_sum, _shortest_trig_form)
+        deadline = time.monotonic() + TRIG_SECONDS
+        x = x.replace(_trig_sum, lambda e: _shortest_trig_form(e, deadline))
     return _absorb_sign(x.replace(_factored_root, _expanded_root))
 
 
 MAX_TRIG_TERMS = 24     # longer sums are left as they are: the rewriting would cost more than it saves
+MAX_TIDY_OPS = 200      # longer formulas are shown in their canonical form, not rewritten
+TRIG_SECONDS = 0.25     # the rewriting of one formula stops here, keeping the shortest form so far
 
 
 def _trig_sum(x: Any) -> bool:
+    """A sum worth rewriting: in sines and cosines, short, and free of roots (a root inside
+    makes the rewritings slow and never shorter)."""
     import sympy
 
-    return x.is_Add and len(x.args) <= MAX_TRIG_TERMS and x.has(sympy.sin, sympy.cos)
+    return (x.is_Add and len(x.args) <= MAX_TRIG_TERMS and x.has(sympy.sin, sympy.cos)
+            and not any(p.exp.q != 1 for p in x.atoms(sympy.Pow) if p.exp.is_Rational))
 
 
-def _shortest_trig_form(x: Any) -> Any:
+def _shortest_trig_form(x: Any, deadline: float = float("inf")) -> Any:
     """The shortest of a few textbook rewritings of a sum in sines and cosines:
     sin a cos b − cos a sin b = sin(a − b); the square eliminated the other way
     (cos² → 1 − sin², so that (c² + 2cr sin θ + r²)² is seen); the sum made homogeneous
@@ -114,6 +123,8 @@ def _shortest_trig_form(x: Any) -> Any:
 
     forms = [x]
     for rewrite in (TR10i, lambda e: sympy.factor(TR6(e)), _homogeneous):
+        if time.monotonic() > deadline:
+            break
         try:
             forms.append(rewrite(x))
         except (sympy.PolynomialError, TypeError, ValueError):   # a form it cannot take
