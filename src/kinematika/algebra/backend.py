@@ -59,6 +59,7 @@ def _real_sqrt(x: float) -> float:
 
 
 MAX_BITS = int(limits.EXACT_DIGITS * math.log2(10)) + 1   # integers of an exact number
+TRIGSIMP_OPS = 40   # radicands simplified by trigsimp up to this size (beyond, it takes seconds)
 
 
 def _radians(x: Any) -> Any:
@@ -133,7 +134,9 @@ class Symbolic:
         exact field, where trigsimp on a long radicand would take seconds)."""
         sp = self.sp
         x = sp.sympify(x)
-        if not x.is_number:
+        if x.has(sp.sin, sp.cos) and sp.count_ops(x) <= TRIGSIMP_OPS:
+            x = sp.trigsimp(x)
+        elif not x.is_number:
             from .fields import canonical
 
             x = canonical(x)

@@ -425,9 +425,16 @@ class ExactField:
         shown = _ROOTS_SHOWN.get(plain)
         if shown is None:               # the first way met of writing it, if shorter, for good
             shown = plain
+            if self.trig_pairs:         # √(9 − sin²θ) as a textbook writes it, not √(cos²θ + 8)
+                syms = self.back_symbols
+                sines = self.sp.Mul(self.sp.Add(*[self._cosines_reduced(p).as_expr(*syms) * self._roots(m)
+                                                  for m, p in sorted(radicand.num.items())]),
+                                    *[self.sp.Pow(self._den_expr(f), -k) for f, k in radicand.den.items()])
+                if self.sp.count_ops(sines) <= self.sp.count_ops(shown):
+                    shown = sines
             if written is not None:
                 other = self._written(written)
-                if self.sp.count_ops(other) < self.sp.count_ops(shown):
+                if self.sp.count_ops(other) <= self.sp.count_ops(shown):
                     shown = other
             if len(_ROOTS_SHOWN) > 4096:
                 _ROOTS_SHOWN.clear()
