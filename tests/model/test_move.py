@@ -264,3 +264,9 @@ def test_assemblies_of_groups_that_are_not_dyads_are_found_and_rigid(name, count
             for p in model.bodies[body].points:
                 assert pts[p] == pytest.approx(drawn[p], abs=1e-9)
         kinematika.solve(a.model)                        # the engine accepts every joint there
+
+
+@pytest.mark.parametrize("name", ["vehicle_upper_wheel", "seed_c5_e4_upper_wheel", "wheel_rolling"])
+def test_models_without_a_held_input_or_with_symbols_list_the_drawn_assembly(name):
+    found = assemblies(kinematika.as_model(EXAMPLES / f"{name}.yaml"))
+    assert [(a.number, a.drawn) for a in found] == [(1, True)]

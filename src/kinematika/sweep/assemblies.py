@@ -35,15 +35,29 @@ class Assembly:
 
 
 def assemblies(model: Model) -> list[Assembly]:
-    """Every assembly of `model` at its drawn input; the drawn one is marked."""
+    """Every assembly of `model` at its drawn input; the drawn one is marked. A model whose
+    position analysis needs numbers it does not have (symbols), or that has no driven joint
+    to hold at its input (a vehicle driven by a speed), lists the drawn assembly only."""
+    from .plan import driven_joints
     from .run import Sweeper
 
+    if any(p.value is None for p in model.parameters.values()) or not driven_joints(model):
+        return [_drawn_only(model)]
     sweeper = Sweeper(model)
     if sweeper.closed is not None:
         return _dyad_assemblies(model, sweeper)
     from .search import searched_assemblies
 
     return searched_assemblies(model, sweeper)
+
+
+def _drawn_only(model: Model) -> Assembly:
+    """The drawn assembly, its points at the probe values when symbolic (for the listing)."""
+    from ..engine.instant import instantiate
+
+    inst = instantiate(model)
+    points = {str(r): inst.numvec(inst.points[r.point]) for r in model.material_points()}
+    return Assembly(1, True, [], model, points)
 
 
 def with_assembly(model: Model, number: Any) -> Model:
