@@ -7,17 +7,18 @@ written once against this interface.
 """
 from __future__ import annotations
 
+import operator
 from typing import Any, Sequence
 
 Vec = tuple
 
 
 def add(a: Sequence, b: Sequence) -> Vec:
-    return tuple(x + y for x, y in zip(a, b))
+    return tuple(map(operator.add, a, b))      # x + y, pairwise (map: no generator per call)
 
 
 def sub(a: Sequence, b: Sequence) -> Vec:
-    return tuple(x - y for x, y in zip(a, b))
+    return tuple(map(operator.sub, a, b))
 
 
 def scale(k: Any, a: Sequence) -> Vec:
