@@ -198,6 +198,16 @@ def start_up_and_output(repeat: int, big_rows: int) -> dict[str, float]:
     return out
 
 
+def compile_bytecode() -> None:
+    """kinematika's modules compiled to bytecode once, as `pip install` does: with
+    PYTHONDONTWRITEBYTECODE set (some shells and containers set it) an editable install would
+    otherwise compile every module from source at every start, which is not what users wait for."""
+    import kinematika
+
+    subprocess.run([sys.executable, "-m", "compileall", "-q", str(Path(kinematika.__file__).parent)],
+                   check=True, stdout=subprocess.DEVNULL)
+
+
 def ms(t: float) -> str:
     return f"{t * 1e3:.3g} ms" if t < 1 else f"{t:.3g} s"
 
@@ -215,6 +225,7 @@ def main() -> None:
     print(f"# kinematika benchmark: {n} positions per sweep, best of {args.repeat}\n")
     print(f"load average at the start: {' '.join(f'{x:.1f}' for x in os.getloadavg())} "
           f"({os.cpu_count()} cores)\n")
+    compile_bytecode()
     outputs = start_up_and_output(args.repeat, args.big_rows)
     print("## Where users wait: whole processes (median wall time)\n")
     print("| process | time | ratio |")
