@@ -26,11 +26,13 @@ FIELDS = {   # the fields of compound answers
 }
 
 
-def _times(value: Any, factor: float) -> Any:
-    """An expression (or number) multiplied by `factor`, as text the model reads."""
-    if factor == 1:
+def _times(value: Any, factor: float | tuple) -> Any:
+    """An expression (or number) multiplied by `factor` (or by the product of a tuple of
+    factors, written out so that a product beyond floats is the model's to refuse)."""
+    factors = [f for f in (factor if isinstance(factor, tuple) else (factor,)) if f != 1]
+    if not factors:
         return value
-    return f"({value})*({factor!r})"
+    return f"({value})" + "".join(f"*({f!r})" for f in factors)
 
 
 def _vec(values: Any, factor: float) -> Any:
@@ -61,7 +63,7 @@ def numeric(tree: dict) -> dict:
 def scaled(tree: dict, length: float = 1.0, rate: float = 1.0) -> dict:
     """`tree` with lengths multiplied by `length` and times divided by `rate`."""
     tree = copy.deepcopy(tree)
-    speed, accel = length * rate, length * rate * rate
+    speed, accel = (length, rate), (length, rate, rate)
     for name, raw in tree.get("points", {}).items():
         tree["points"][name] = _point(raw, length)
     for body in tree.get("bodies", {}).values():
@@ -80,16 +82,16 @@ def scaled(tree: dict, length: float = 1.0, rate: float = 1.0) -> dict:
         if "omega" in d:
             d["value"] = _vec(d["value"], rate)
             if "alpha" in d:
-                d["alpha"] = _vec(d["alpha"], rate * rate)
+                d["alpha"] = _vec(d["alpha"], (rate, rate))
         elif "velocity" in d:
             d["value"] = _vec(d["value"], speed)
             if "acceleration" in d:
                 d["acceleration"] = _vec(d["acceleration"], accel)
         elif "joint" in d:
             unit = length if d["joint"] in sliding else 1.0
-            d["rate"] = _times(d["rate"], unit * rate)
+            d["rate"] = _times(d["rate"], (unit, rate))
             if "accel" in d:
-                d["accel"] = _times(d["accel"], unit * rate * rate)
+                d["accel"] = _times(d["accel"], (unit, rate, rate))
     sweep = tree.get("sweep")
     if isinstance(sweep, dict) and sweep.get("joint") in sliding and "by" in sweep:
         sweep["by"] = _times(sweep["by"], length)

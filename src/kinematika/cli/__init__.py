@@ -5,6 +5,7 @@ only what they use; everything else goes through the typer application (`app`).
 """
 from __future__ import annotations
 
+import os
 import sys
 import types
 from typing import Any
@@ -16,6 +17,10 @@ def main() -> None:
     for stream in (sys.stdout, sys.stderr):      # a terminal that cannot show a character
         if hasattr(stream, "reconfigure"):        # gets an escape, never an encoding error
             stream.reconfigure(errors="backslashreplace")
+    if not os.environ.get("KINEMATIKA_DEBUG"):   # the output is the answer or one error line
+        import warnings
+
+        warnings.simplefilter("ignore")
     from . import fast
 
     call = fast.parse(sys.argv[1:])

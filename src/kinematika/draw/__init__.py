@@ -7,10 +7,14 @@ uses matplotlib without a display (the Agg canvas): no window ever opens.
 """
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 from typing import Any, Optional
 
 from .options import DrawOptions
+
+# a name with a character the font lacks (emoji, CJK, a control) is drawn as a box: no warning
+warnings.filterwarnings("ignore", message=r"Glyph \d+ .*missing from font", category=UserWarning)
 
 __all__ = ["draw", "svg", "DrawOptions", "plot_sweep", "animate"]
 

@@ -1,0 +1,413 @@
+"""One test per class of hostile input that once broke the contract (issue 12): resource
+exhaustion, tracebacks, terminal injection, wrong answers, inconsistent messages. Each runs
+the real path (a file on disk, the command line where the class lives there) and checks
+the outcome against the contract, with values derived by hand where an answer is expected.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import stat
+import time
+from pathlib import Path
+
+import pytest
+import yaml
+
+from kinematika import KinematikaError, solve
+from kinematika import limits
+from kinematika.budget import OverBudget, budget, check
+from kinematika.commands import solve_data
+from kinematika.model.expressions import parse
+from kinematika.text import brief, markup, shown
+
+from .contract import EXAMPLES, call, check_error, check_run, run_cli
+from .mutations import alias_bomb, rename
+from .scaling import close, expected, numeric, scaled
+
+
+def four_bar() -> dict:
+    return yaml.safe_load((EXAMPLES / "four_bar.yaml").read_text())
+
+
+def error_of(source, **kw) -> KinematikaError:
+    with pytest.raises(KinematikaError) as info:
+        solve_data(source, **kw)
+    check_error(info.value)
+    return info.value
+
+
+def write(tmp_path: Path, name: str, text: str | dict) -> Path:
+    path = tmp_path / name
+    path.write_text(text if isinstance(text, str) else json.dumps(text), encoding="utf-8")
+    return path
+
+
+# resource exhaustion ------------------------------------------------------------------------
+@pytest.mark.parametrize("where", ["description", "bogus"])
+def test_an_alias_bomb_fails_fast_wherever_it_is(tmp_path, where):
+    err = error_of(write(tmp_path, "bomb.yaml", alias_bomb(9, 9, where)))
+    assert err.kind == "syntax" and "aliases expand to more than" in err.message
+
+
+def test_an_alias_that_contains_itself_is_refused(tmp_path):
+    err = error_of(write(tmp_path, "loop.yaml", "points: &p {O: [0, 0], P: *p}\n"))
+    assert err.kind == "syntax" and "inside what it names" in err.message
+
+
+def test_nesting_beyond_the_limit_is_refused_not_a_crash(tmp_path):
+    # libyaml's composer recurses in C: this depth would crash the process if it were reached
+    depth = 200_000
+    err = error_of(write(tmp_path, "deep.yaml", "points: " + "[" * depth + "]" * depth))
+    assert err.kind == "syntax" and "nested too deeply" in err.message
+
+
+@pytest.mark.parametrize("device", ["/dev/zero", "/dev/urandom"])
+def test_a_link_to_an_endless_device_reads_at_most_the_limit(tmp_path, device):
+    if not os.path.exists(device):
+        pytest.skip(f"no {device}")
+    link = tmp_path / "model.yaml"
+    link.symlink_to(device)
+    err = error_of(link)
+    assert err.kind == "syntax" and "too large" in err.message
+
+
+def test_a_fifo_without_a_writer_does_not_block(tmp_path, monkeypatch):
+    monkeypatch.setattr(limits, "READ_SECONDS", 0.2)
+    fifo = tmp_path / "model.yaml"
+    os.mkfifo(fifo)
+    assert stat.S_ISFIFO(fifo.stat().st_mode)
+    err = error_of(fifo)
+    assert err.kind == "syntax" and "gave no end" in err.message
+
+
+def test_a_folder_is_not_a_model(tmp_path):
+    folder = tmp_path / "model.yaml"
+    folder.mkdir()
+    assert error_of(folder).kind == "syntax"
+
+
+def test_a_sweep_too_large_to_hold_is_a_clear_error_from_the_file_or_the_options(tmp_path):
+    from kinematika.commands import sweep_run
+
+    tree = four_bar()
+    tree["sweep"]["steps"] = 10_000_000
+    with pytest.raises(KinematikaError) as info:
+        sweep_run(tree)
+    err = info.value
+    check_error(err)
+    # 4 bodies × (angle, ω, α) + 8 material points × 3 planar vectors = 60 numbers a row
+    assert (err.kind, err.where) == ("schema", "sweep.steps")
+    assert "of 60 values each" in err.message and f"at most {limits.SWEEP_VALUES // 60 - 1} steps" in err.message
+    run = run_cli(["sweep", str(EXAMPLES / "four_bar.yaml"), "--steps", "9000000", "--json"])
+    check_run(run)
+    assert json.loads(run.stdout)["error"]["where"] == "--steps"
+
+
+@pytest.mark.parametrize("value", ["1e-200", "(1e-308)**2", "1e-320*1e-10"])
+def test_numbers_with_too_many_digits_for_exact_work_are_refused(value):
+    tree = four_bar()
+    tree["points"]["O2"] = [value, 0]
+    err = error_of(tree, symbolic=True)
+    assert err.kind == "schema" and err.where == "points.O2[0]" and "too many digits" in err.message
+
+
+@pytest.mark.parametrize("value", ["(1e-308)**2", "1e-320*1e-10", "exp(-1000)"])
+def test_floats_that_underflow_to_zero_are_refused(value):
+    tree = four_bar()
+    tree["points"]["O2"] = [value, 0]
+    err = error_of(tree)
+    assert err.kind == "schema" and err.where == "points.O2[0]" and "too small" in err.message
+
+
+@pytest.mark.parametrize("power", ["r**1000", "(w2 + 1)**1000", "((r**10)**10)**10"])
+def test_formulas_of_huge_degree_are_refused_in_exact_work(power):
+    tree = four_bar()
+    tree["parameters"]["r"] = None
+    tree["points"]["A"] = [0, f"1 + 0*{power}"]
+    err = error_of(tree, symbolic=True)
+    assert err.kind == "schema" and err.where == "points.A[1]" and "degree" in err.message
+
+
+def test_the_time_budget_stops_cooperative_work_with_a_limit_error():
+    with pytest.raises(OverBudget) as info:
+        with budget("the exact formulas", 0.05):
+            while True:
+                check("simplifying the formulas")
+    check_error(info.value)
+    assert info.value.kind == "limit"
+    assert "longer than 0.05 s (simplifying the formulas)" in info.value.message
+
+
+def test_the_time_budget_interrupts_one_long_computation():
+    import sympy
+
+    x, y = sympy.symbols("x y")
+    start = time.monotonic()
+    with pytest.raises(OverBudget):
+        with budget("the exact formulas", 0.3):
+            sympy.factor(sympy.expand((x + 3 * y + 7) ** 60 * (x - y + 1) ** 60 - 1))
+    assert time.monotonic() - start < 5       # a hang detector, not a speed claim
+
+
+def test_a_long_name_is_refused_and_a_long_title_is_shown_cut(tmp_path):
+    tree = four_bar()
+    tree["points"]["P" * 30_000] = [1, 1]
+    err = error_of(write(tmp_path, "long.json", tree))
+    assert err.kind == "syntax" and f"names have at most {limits.NAME_CHARS}" in err.message
+    tree = four_bar()
+    tree["name"] = "x" * 30_000
+    run = run_cli(["solve", str(write(tmp_path, "title.json", tree))])
+    check_run(run)
+    assert "x" * limits.NAME_CHARS not in run.stdout.replace("\n", "")
+
+
+# tracebacks and internal errors -------------------------------------------------------------
+def test_a_lone_surrogate_is_refused_not_a_crash(tmp_path):
+    tree = four_bar()
+    tree["name"] = "\ud800"
+    path = tmp_path / "surrogate.json"
+    path.write_text(json.dumps(tree))           # ASCII JSON with the escape \ud800
+    err = error_of(path)
+    assert err.kind == "syntax" and "lone surrogate" in err.message
+    check_run(run_cli(["solve", str(path)]))
+
+
+@pytest.mark.parametrize("name", ["[/]", "[bold]x[/bold]", "\x1b]0;owned\x07\x1b[2J", "a\rb"])
+def test_names_are_printed_as_written_never_as_markup_or_terminal_codes(tmp_path, name):
+    tree = rename(four_bar(), "coupler", name + "c")
+    tree["name"] = name
+    text = json.dumps(tree)
+    run = run_cli(["solve", str(write(tmp_path, "names.json", text))])
+    check_run(run)
+    assert run.status == 0
+    assert "\x1b" not in run.stdout and "\x07" not in run.stdout and "\r" not in run.stdout
+    assert shown(name) in run.stdout                            # the escaped name, literally
+    run = run_cli(["centres", str(write(tmp_path, "names.json", text))])
+    check_run(run)
+    assert "\x1b" not in run.stdout and shown(name + "c") in run.stdout
+
+
+def test_text_helpers_escape_controls_and_markup_and_bound_reprs():
+    assert shown("a\x1b[2Jb\nc\u202ed\ud800") == "a\\x1b[2Jb\\nc\\u202ed\\ud800"
+    assert markup("[/]") == "\\[/]"
+    assert brief("x" * 1000) == repr("x" * 59)[:-1] + "…'"
+    assert len(brief([[list(range(10 ** 4))] * 10 ** 3] * 10 ** 3)) <= 60
+
+
+@pytest.mark.parametrize("change,kind", [
+    ({"parameters": {"w2": 1e12}}, None),                         # a fast crank: answered
+    ({"parameters": {"w2": 1e300}}, "schema"),                    # beyond the rates' range
+    ({"points": {"O2": [2 ** 63, 0]}}, "mobility"),               # the tiny crank is lost
+])
+def test_large_values_answer_or_give_a_clear_error_never_an_internal_one(change, kind):
+    tree = four_bar()
+    for key, value in change.items():
+        tree[key].update(value)
+    out = call(lambda: solve_data(tree))
+    assert (out.error.kind if out.error else None) == kind
+    call(lambda: solve_data(tree, True))         # exactly: an answer or a clear error
+
+
+def wheel() -> dict:
+    tree = yaml.safe_load((EXAMPLES / "wheel_rolling.yaml").read_text())
+    tree.pop("draw_at", None)
+    return tree
+
+
+def test_an_exact_velocity_driver_of_1e12_agrees_with_the_numbers():
+    tree = wheel()
+    tree["parameters"] = {"R": 1, "v": 1e12, "vd": 0}
+    data = solve_data(tree, symbolic=True)
+    assert data["bodies"]["wheel"]["omega"] == "-v/R"         # v = ω R, rolling to +x turns cw
+    data = solve_data(tree)
+    assert data["bodies"]["wheel"]["omega"] == -1e12
+
+
+def test_a_value_that_is_complex_at_the_symbols_values_is_a_clear_error():
+    import sympy
+
+    from kinematika.api import as_model
+    from kinematika.engine.instant import instantiate
+
+    inst = instantiate(as_model(wheel()))
+    with pytest.raises(KinematikaError) as info:
+        inst.num(sympy.sqrt(-1 - sympy.Symbol("R", positive=True)))
+    check_error(info.value)
+    assert info.value.kind == "schema" and "not a real number" in info.value.message
+    for radius in ("sqrt(sqrt(x))", "x**(1/1000)"):       # once TypeError: complex to float
+        tree = wheel()
+        tree["parameters"]["x"] = {"value": None, "positive": False}
+        tree["bodies"]["wheel"]["circle"]["radius"] = radius
+        call(lambda: solve_data(tree))
+
+
+@pytest.mark.parametrize("change", [{"O2": [1.7e308, 0]}, {"A": [0, "3e110"]}])
+def test_huge_coordinates_are_out_of_range_not_overflow_or_linalg_errors(change):
+    tree = four_bar()
+    tree["points"].update(change)
+    err = error_of(tree)
+    assert (err.kind, err.where) == ("schema", "points") and "lengths between" in err.message
+
+
+def test_a_direction_with_subnormal_components_is_read_numerically():
+    tree = wheel()
+    tree["parameters"] = {"R": 1, "v": 2, "vd": 0}
+    tree["drivers"][0]["along"] = [1, 5e-324]
+    assert solve_data(tree)["bodies"]["wheel"]["omega"] == -2.0
+    err = error_of(tree, symbolic=True)
+    assert err.kind == "schema" and "too many digits" in err.message
+
+
+def test_a_sweep_by_a_tiny_amount_has_no_nan():
+    from kinematika.commands import sweep_run
+
+    out = call(lambda: sweep_run(four_bar(), by=1e-308, steps=3)[1].to_json())
+    assert out.error is None
+    assert out.data["coordinate"][-1] == 1e-308
+
+
+def test_a_path_with_a_newline_gives_one_line(tmp_path):
+    run = run_cli(["solve", str(tmp_path / "a\nb.yaml")])
+    check_run(run)
+    assert run.status == 2 and "a\\nb.yaml" in run.stderr
+
+
+@pytest.mark.parametrize("name", ["emoji.png", "cjk.png"])
+def test_figures_of_names_without_glyphs_print_no_warnings(tmp_path, name):
+    label = {"emoji.png": "😀\r", "cjk.png": "中文"}[name]
+    text = json.dumps(rename(four_bar(), "coupler", label))
+    run = run_cli(["draw", str(write(tmp_path, "glyphs.json", text)), "-o", str(tmp_path / name)])
+    check_run(run)
+    assert run.status == 0 and "Warning" not in run.stderr and run.stderr.strip() == ""
+
+
+# wrong answers ------------------------------------------------------------------------------
+@pytest.mark.parametrize("twin,name", [("r", "𝑟"), ("fi", "ﬁ"), ("R", "ℝ"), ("A", "Ａ"),
+                                        ("lambda", "_kw_lambda_")])
+def test_parameter_names_are_matched_exactly_as_written(twin, name):
+    tree = four_bar()
+    tree["parameters"] = {twin: 3, name: 5}
+    tree["drivers"][0]["value"] = name
+    assert solve_data(tree)["bodies"]["crank"]["omega"] == 5.0
+    tree["drivers"][0]["value"] = twin
+    assert solve_data(tree)["bodies"]["crank"]["omega"] == 3.0
+
+
+def test_a_name_python_would_fold_works_on_its_own():
+    tree = four_bar()
+    tree["parameters"] = {"𝑟": 5}
+    tree["drivers"][0]["value"] = "2*𝑟"
+    assert solve_data(tree)["bodies"]["crank"]["omega"] == 10.0
+    assert parse("𝑟 + lambda").names() == {"𝑟", "lambda"}
+
+
+@pytest.mark.parametrize("path,value", [("ask", {"velocity": "B", "relative_to": ""}),
+                                        ("drivers", {"omega": "crank", "value": 1, "relative_to": ""}),
+                                        ("joints", None)])
+def test_an_empty_name_is_an_error_not_the_ground(path, value):
+    tree = four_bar()
+    if path == "joints":
+        tree["joints"][0]["id"] = ""
+    elif path == "drivers":
+        tree["drivers"] = [value]
+    else:
+        tree["ask"].append(value)
+    err = error_of(tree)
+    assert err.kind == "schema"
+
+
+def test_a_direction_of_1e_12_is_a_direction():
+    tree = wheel()
+    tree["drivers"][0]["along"] = [1e-12, 0]
+    data = solve_data(tree)
+    assert data["bodies"]["wheel"]["omega"] == "-v/R"
+
+
+def _scaled_answers(name: str, length: float, rate: float) -> None:
+    tree = numeric(yaml.safe_load((EXAMPLES / name).read_text()))
+    base = solve_data(tree)
+    got = solve_data(scaled(tree, length, rate))
+    for a, b in zip(base["answers"], got["answers"]):
+        kind = next(iter(a["ask"]))
+        want = expected(a["value"], kind, length, rate)
+        top = max([abs(x) for x in _numbers(want)] + [0.0])
+        assert close(b["value"], want, top), (a["ask"], want, b["value"])
+
+
+def _numbers(x):
+    if isinstance(x, dict):
+        return [n for v in x.values() for n in _numbers(v)]
+    if isinstance(x, list):
+        return [n for v in x for n in _numbers(v)]
+    return [x] if isinstance(x, float) else []
+
+
+@pytest.mark.parametrize("name", ["wheel_rolling.yaml", "fan_absolute.yaml", "gyroscope.yaml",
+                                  "quick_return.yaml", "seed_c5_e2_gear_change.yaml"])
+@pytest.mark.parametrize("length,rate", [(1e45, 1.0), (1e-45, 1.0), (1.0, 1e45), (1e-40, 1e40),
+                                         (1e40, 1e40)])
+def test_a_scaled_model_gives_the_same_answers_scaled(name, length, rate):
+    _scaled_answers(name, length, rate)
+
+
+@pytest.mark.parametrize("length,rate", [(1e200, 1.0), (1e-200, 1.0), (1e300, 1.0), (1e-300, 1.0),
+                                         (1.0, 1e200), (1.0, 1e-200)])
+def test_a_model_scaled_beyond_the_floats_range_is_a_clear_error(length, rate):
+    for name in ("wheel_rolling.yaml", "four_bar.yaml", "fan_absolute.yaml"):
+        tree = scaled(numeric(yaml.safe_load((EXAMPLES / name).read_text())), length, rate)
+        err = error_of(tree)
+        assert err.kind == "schema"
+        assert any(why in err.message for why in ("between 1e-50 and 1e+50", "not finite", "too large",
+                                              "too small"))
+
+
+def test_the_top_of_a_huge_rolling_wheel_has_a_curved_path():
+    # the cycloid's radius of curvature at the top is 4R (R = 1e45, v = 1e45)
+    tree = wheel()
+    tree["parameters"] = {"R": 1e45, "v": 1e45, "vd": 0}
+    answers = {next(iter(a["ask"])): a["value"] for a in solve_data(tree)["answers"]}
+    assert answers["curvature"]["radius"] == pytest.approx(4e45)
+
+
+# one kind for one kind of mistake -----------------------------------------------------------
+@pytest.mark.parametrize("args,where", [
+    (["explain", "{model}", "--lang", "xx"], "--lang"),
+    (["explain", "{model}", "--format", "docx"], "--format"),
+    (["draw", "{model}", "-o", "{tmp}/x.png", "--points", "nope"], "--points"),
+    (["draw", "{model}", "-o", "{tmp}/x.png", "--view", "bogus"], "--view"),
+    (["draw", "{model}", "-o", "{tmp}/x.png", "--set", "w2=abc"], "--set w2"),
+    (["sweep", "{model}", "--joint", "nope"], "--joint"),
+    (["sweep", "{model}", "--steps", "nope"], "--steps"),
+])
+def test_every_bad_command_line_value_is_a_usage_error(tmp_path, args, where):
+    args = [a.format(model=EXAMPLES / "four_bar.yaml", tmp=tmp_path) for a in args]
+    run = run_cli(args)
+    check_run(run)
+    assert run.status == 2 and run.stderr.startswith("error (usage):"), run.stderr
+    assert where in run.stderr
+
+
+def test_an_output_error_names_the_file(tmp_path):
+    if not os.path.exists("/dev/full"):
+        pytest.skip("no /dev/full")
+    run = run_cli(["explain", str(EXAMPLES / "four_bar.yaml"), "-o", "/dev/full"])
+    check_run(run)
+    assert run.stderr.startswith("error (output): -o: cannot write /dev/full: ")
+
+
+def test_messages_never_echo_a_whole_expression():
+    tree = four_bar()
+    tree["points"]["A"] = [0, "1 + " * 490 + "q"]
+    err = error_of(tree)
+    assert err.kind == "schema" and len(err.message) <= limits.MESSAGE_CHARS
+
+
+def test_a_two_dof_fan_with_a_restating_vector_driver_is_mobility():
+    tree = yaml.safe_load((EXAMPLES / "fan_absolute.yaml").read_text())
+    tree["drivers"] = tree["drivers"][:1]          # ω of the block (restates its shaft's x, z)
+    err = error_of(tree)
+    assert err.kind == "mobility"
+    assert "2 degrees of freedom but the drivers give 1 independent condition" in err.message
+    assert err.message.endswith("left free: blades")
