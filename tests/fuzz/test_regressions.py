@@ -196,17 +196,17 @@ def test_text_helpers_escape_controls_and_markup_and_bound_reprs():
     assert len(brief([[list(range(10 ** 4))] * 10 ** 3] * 10 ** 3)) <= 60
 
 
-@pytest.mark.parametrize("change,kind", [
-    ({"parameters": {"w2": 1e12}}, None),                         # a fast crank: answered
-    ({"parameters": {"w2": 1e300}}, "schema"),                    # beyond the rates' range
-    ({"points": {"O2": [2 ** 63, 0]}}, "mobility"),               # the tiny crank is lost
+@pytest.mark.parametrize("change,kinds", [
+    ({"parameters": {"w2": 1e12}}, [None]),                       # a fast crank: answered
+    ({"parameters": {"w2": 1e300}}, ["schema"]),                  # beyond the rates' range
+    ({"points": {"O2": [2 ** 63, 0]}}, ["mobility", "geometry"]),  # the tiny crank is lost
 ])
-def test_large_values_answer_or_give_a_clear_error_never_an_internal_one(change, kind):
+def test_large_values_answer_or_give_a_clear_error_never_an_internal_one(change, kinds):
     tree = four_bar()
     for key, value in change.items():
         tree[key].update(value)
     out = call(lambda: solve_data(tree))
-    assert (out.error.kind if out.error else None) == kind
+    assert (out.error.kind if out.error else None) in kinds
     call(lambda: solve_data(tree, True))         # exactly: an answer or a clear error
 
 
