@@ -22,13 +22,17 @@ from kinematika.commands import solve_data
 from kinematika.model.expressions import parse
 from kinematika.text import brief, markup, shown
 
+from core.models import four_bar as core_four_bar
 from .contract import EXAMPLES, call, check_error, check_run, run_cli
 from .mutations import alias_bomb, rename
 from .scaling import close, expected, numeric, scaled
 
 
 def four_bar() -> dict:
-    return yaml.safe_load((EXAMPLES / "four_bar.yaml").read_text())
+    """The crank-rocker of the core tests, by coordinates, with questions and a sweep."""
+    return core_four_bar(ask=[{"velocity": "B"}, {"acceleration": "B"}, {"omega": "coupler"},
+                              {"icr": "coupler"}, {"velocity": "B@coupler", "relative_to": "crank"}],
+                         sweep={"joint": "j1", "by": 360, "steps": 360})
 
 
 def error_of(source, **kw) -> KinematikaError:
@@ -100,7 +104,8 @@ def test_a_sweep_too_large_to_hold_is_a_clear_error_from_the_file_or_the_options
     # 4 bodies × (angle, ω, α) + 8 material points × 3 planar vectors = 60 numbers a row
     assert (err.kind, err.where) == ("schema", "sweep.steps")
     assert "of 60 values each" in err.message and f"at most {limits.SWEEP_VALUES // 60 - 1} steps" in err.message
-    run = run_cli(["sweep", str(EXAMPLES / "four_bar.yaml"), "--steps", "9000000", "--json"])
+    run = run_cli(["sweep", str(write(tmp_path, "four_bar.json", four_bar())), "--steps", "9000000",
+                   "--json"])
     check_run(run)
     assert json.loads(run.stdout)["error"]["where"] == "--steps"
 
