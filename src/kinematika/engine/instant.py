@@ -130,7 +130,11 @@ def instantiate(model: m.Model, symbolic: bool | None = None) -> Instant:
     backend = Symbolic() if use_symbols else Numeric()
     env, probe = _parameters(model, backend, force_symbols=bool(symbolic))
     inst = Instant(model, backend, Space(model.dimension), env, {}, {}, probe)
-    inst.points = positions(inst)
+    try:
+        inst.points = positions(inst)
+    except KinematikaError:
+        _check_coordinates(inst)         # a model out of range says so, not that circles miss
+        raise
     if probe:
         inst.probe = _real_probe(inst.points, probe)
     inst.scale = _length_scale(inst)
@@ -204,6 +208,22 @@ def _real_probe(points: dict[str, tuple], probe: dict, tries: int = 40) -> dict:
             return probe
     raise KinematikaError("geometry", "the points are not real for any values of the symbols "
                           "tried (a square root of a negative number?)", "points")
+
+
+def _check_coordinates(inst: Instant) -> None:
+    """The explicit coordinates' magnitude within the range the engine computes with."""
+    from .ranges import check_size
+
+    sizes = []
+    for p in inst.model.points.values():
+        for c in p if isinstance(p, tuple) else ():
+            try:
+                sizes.append(abs(inst.num(inst.value(c, "points"))))
+            except KinematikaError:        # that error is the one to report
+                return
+    top = max(sizes, default=0.0)
+    if top > 0:
+        check_size(top)
 
 
 def _length_scale(inst: Instant) -> float:

@@ -124,11 +124,10 @@ class _Builder:
 
     def unit_from(self, p: tuple, q: tuple, field: str) -> tuple:
         d = (q[0] - p[0], q[1] - p[1])
-        norm2 = d[0] * d[0] + d[1] * d[1]
-        if self.num(norm2) <= 1e-24 * max(1.0, *(self.num(c) ** 2 for c in p + q)):
+        if _coincide(self, d, p + q):
             raise KinematikaError("geometry", "the two points that give the direction coincide",
                                   f"{self.where}.{field}")
-        norm = self.bk.sqrt(norm2)
+        norm = self.bk.sqrt(d[0] * d[0] + d[1] * d[1]) if self.bk.symbolic else math.hypot(*d)
         return (d[0] / norm, d[1] / norm)
 
     # constructions -------------------------------------------------------------------
@@ -243,7 +242,7 @@ class _Builder:
             return q, d
         r = self.at(line.toward, f"{field}[1]")
         d = (r[0] - q[0], r[1] - q[1])
-        if self.num(d[0] * d[0] + d[1] * d[1]) <= 1e-24 * max(1.0, *(self.num(c) ** 2 for c in q + r)):
+        if _coincide(self, d, q + r):
             raise KinematikaError("geometry", f"the line {_line_name(line)} is given by two points "
                                   "that coincide", f"{self.where}.{field}")
         return q, d
@@ -293,3 +292,9 @@ def _line_name(line: LineDef) -> str:
 
 def _coords(builder: _Builder, p: tuple) -> str:
     return "(" + ", ".join(f"{builder.num(c):.6g}" for c in p) + ")"
+
+
+def _coincide(reader: Any, d: tuple, coords: tuple) -> bool:
+    """A difference of points that is round-off of their coordinates (relative, whatever the
+    model's unit: no squares to underflow)."""
+    return math.hypot(*(reader.num(c) for c in d)) <= 1e-12 * max(abs(reader.num(c)) for c in coords)
