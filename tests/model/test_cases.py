@@ -74,10 +74,14 @@ def test_case_through_the_command_line(name):
 
 
 def _matches(got, exp, opts, where):
-    """The check-cases rules: numbers within max(tol·max(|a|, |b|), abs); formulas equal."""
+    """The check-cases rules: numbers within max(tol·max(|a|, |b|), abs); formulas equal; an
+    ICR's direction in either sense."""
     if isinstance(exp, dict):
         assert isinstance(got, dict), where
         for key, value in exp.items():
+            if key == "direction" and value is not None and not opts.get("symbolic"):   # either sense
+                sense = -1 if sum(g * e for g, e in zip(got[key], value)) < 0 else 1
+                value = [sense * e for e in value]
             _matches(got[key], value, opts, f"{where}.{key}")
     elif isinstance(exp, list):
         assert isinstance(got, list) and len(got) == len(exp), where

@@ -1,0 +1,349 @@
+"""Independent derivations of the textbook cases in this folder (NAME.yaml).
+
+Each function solves one problem as a student would, by hand: the position of what is
+asked is written as a function of the input (loop closure, triangles, Freudenstein,
+rolling conditions, the cones of a spherical linkage) and differentiated in time, by
+mpmath at 40 digits: with q(t) = q0 + w t + al t²/2, d/dt = w d/dq and
+d²/dt² = w² d²/dq² + al d/dq (`motion` of tests/cases/derive.py). Rates of bodies are the
+derivatives of their angles; the symbolic cases give formulas derived by hand (see
+their docstrings). Nothing here calls kinematika.
+
+`python tests/textbook/derive.py` rewrites each case's NAME.expect.json from these
+derivations; tests/textbook/test_textbook.py checks that the files hold exactly these
+values and runs every case through the command line under check-cases' rules.
+"""
+from __future__ import annotations
+
+import importlib.util
+import json
+import math
+from pathlib import Path
+
+import mpmath
+
+HERE = Path(__file__).resolve().parent
+_spec = importlib.util.spec_from_file_location("cases_derive", HERE.parent / "cases" / "derive.py")
+base = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(base)
+meet, polar, motion, curvature, line_meet, turn, cross = (base.meet, base.polar, base.motion, base.curvature,
+                                                         base.line_meet, base.turn, base.cross)
+D = mpmath.radians
+
+
+def angle(p, q):
+    """Direction of p→q (radians)."""
+    return mpmath.atan2(q[1] - p[1], q[0] - p[0])
+
+
+def frame(p, q, x, y):
+    """p + x u + y n, u the unit vector p→q and n = u turned +90°."""
+    dist = mpmath.sqrt((q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2)
+    u = [(q[0] - p[0]) / dist, (q[1] - p[1]) / dist]
+    return [p[0] + x * u[0] - y * u[1], p[1] + x * u[1] + y * u[0]]
+
+
+def on_line(centre, r, through, direction, ahead=True):
+    """Where the circle (centre, r) meets the line through `through` along `direction`:
+    the intersection farther along the direction when `ahead`."""
+    n = mpmath.sqrt(direction[0] ** 2 + direction[1] ** 2)
+    d = [direction[0] / n, direction[1] / n]
+    w = [through[0] - centre[0], through[1] - centre[1]]
+    b = w[0] * d[0] + w[1] * d[1]
+    s = -b + (1 if ahead else -1) * mpmath.sqrt(b * b - (w[0] ** 2 + w[1] ** 2 - r * r))
+    return [through[0] + s * d[0], through[1] + s * d[1]]
+
+
+# four-bars ---------------------------------------------------------------------------------
+def four_bar(d, a, b, c, side=1):
+    """B of the four-bar O2 = (0, 0), O4 = (d, 0) at crank angle t."""
+    return lambda t: meet(polar([0, 0], a, t), b, [d, 0], c, side)
+
+
+def fb_crank_rocker_coupler():
+    """B from the circles about A (7) and O4 (6), left of A→O4 (the open circuit);
+    P = A + 3 u − 1.5 n; θ3 = angle of AB, θ4 = angle of O4B, differentiated at θ2 = 50°,
+    ω2 = −12, α2 = −30; curvature of P's path |v|³/|v × a|."""
+    b_of = four_bar(8, 2, 7, 6)
+
+    def pos(t):
+        a, b = polar([0, 0], 2, t), b_of(t)
+        p = frame(a, b, 3, mpmath.mpf("-1.5"))
+        return [angle(a, b), angle([8, 0], b), p[0], p[1]]
+
+    (_, _, px, py), (w3, w4, vx, vy), (al3, al4, ax, ay) = motion(pos, math.radians(50), -12, -30)
+    return [w3, w4, al3, al4, [vx, vy], [ax, ay], curvature([px, py], [vx, vy], [ax, ay])]
+
+
+def fb_crossed_icr():
+    """B right of A→O4 (crossed); ω3, ω4 and α3 differentiated at 50°, ω2 = 5; the
+    coupler's centre where the lines O2A and O4B meet (Kennedy), the rocker's its pivot."""
+    b_of = four_bar(8, 2, 7, 6, side=-1)
+
+    def pos(t):
+        a, b = polar([0, 0], 2, t), b_of(t)
+        return [angle(a, b), angle([8, 0], b), b[0], b[1]]
+
+    (_, _, bx, by), (w3, w4, vx, vy), (al3, _, _, _) = motion(pos, math.radians(50), 5)
+    a = [2 * math.cos(math.radians(50)), 2 * math.sin(math.radians(50))]
+    icr = line_meet([0, 0], a, [8, 0], [bx - 8, by])
+    return [w3, w4, al3, {"point": icr}, {"point": [8.0, 0.0]}, [vx, vy]]
+
+
+def _triple_rocker(theta_deg):
+    b_of = four_bar(6, 5, 4, mpmath.mpf("3.5"))
+
+    def pos(t):
+        a, b = polar([0, 0], 5, t), b_of(t)
+        return [angle(a, b), angle([6, 0], b), b[0], b[1]]
+
+    _, (w3, w4, vx, vy), (al3, al4, ax, ay) = motion(pos, math.radians(theta_deg), 3, -2)
+    return [w3, w4, al3, al4, [vx, vy], [ax, ay]]
+
+
+def fb_non_grashof():
+    """Open circuit (B left of A→O4) at 60°, ω2 = 3, α2 = −2; angles of AB and O4B
+    differentiated."""
+    return _triple_rocker(60)
+
+
+def fb_non_grashof_moved():
+    """At 60° − 40° = 20°: |AO4| stays between |b − c| = 0.5 and b + c = 7.5 from 60° down
+    to 20° (|AO4|² = 61 − 60 cos θ ≥ 1), so no dead point is met and B stays left of A→O4:
+    the open circuit at 20°."""
+    return _triple_rocker(20)
+
+
+def fb_drag_link_moved():
+    """A drag link never toggles (|AO4| between 3 and 7, inside [0.5, 11.5]), so after
+    290° the linkage is on its drawn (left) circuit at 200° + 290° = 130°; ω2 = 4."""
+    b_of = four_bar(2, 5, 6, mpmath.mpf("5.5"))
+
+    def pos(t):
+        a, b = polar([0, 0], 5, t), b_of(t)
+        return [angle([2, 0], b), angle(a, b), b[0], b[1]]
+
+    _, (w4, w3, vx, vy), (al4, al3, _, _) = motion(pos, math.radians(130), 4)
+    return [w4, al4, w3, al3, [vx, vy]]
+
+
+def fb_parallelogram():
+    """A parallelogram: B = A + (8, 0), so the coupler translates (ω3 = α3 = 0), the rocker
+    turns with the crank (ω4 = 6, α4 = 2), v_B = v_A = ω2 k × O2A; the coupler's centre is
+    at infinity along O2A (perpendicular to v_A)."""
+    t = math.radians(70)
+    return [0.0, 0.0, 6.0, 2.0, {"point": None, "direction": [math.cos(t), math.sin(t)]},
+            [-6 * 3 * math.sin(t), 6 * 3 * math.cos(t)]]
+
+
+# slider-cranks and their inversions ----------------------------------------------------------
+def sc_offset_above():
+    """x_B = a cos θ + √(b² − (e − a sin θ)²) on y = e = 15; the rod's angle
+    φ = atan2(e − a sin θ, x_B − a cos θ); M the midpoint of AB; θ = 300°, ω2 = −40,
+    α2 = 100. The rod's centre where the line O2A meets the vertical through B."""
+    a, b, e = 30, 90, 15
+
+    def pos(t):
+        pa = polar([0, 0], a, t)
+        pb = [pa[0] + mpmath.sqrt(b ** 2 - (e - pa[1]) ** 2), e]
+        return [pb[0], angle(pa, pb), (pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2]
+
+    (xb, _, _, _), (vb, w3, vmx, vmy), (ab, al3, _, _) = motion(pos, math.radians(300), -40, 100)
+    t = math.radians(300)
+    icr = line_meet([0, 0], [math.cos(t), math.sin(t)], [xb, e], [0, 1])
+    return [[vb, 0.0], [ab, 0.0], w3, al3, {"point": icr}, [vmx, vmy]]
+
+
+def _vertical_engine(theta_deg):
+    def pos(t):
+        pa = polar([0, 0], 50, t)
+        pb = [-10, pa[1] + mpmath.sqrt(160 ** 2 - (pa[0] + 10) ** 2)]
+        return [pb[1], angle(pa, pb)]
+
+    _, (vb, w3), (ab, al3) = motion(pos, math.radians(theta_deg), 100)
+    return [[0.0, vb], [0.0, ab], w3, al3]
+
+
+def sc_vertical_engine():
+    """y_B = r sin θ + √(l² − (r cos θ + 10)²) on x = −10; the rod's angle atan2(B − A);
+    θ = 30°, ω = 100."""
+    return _vertical_engine(30)
+
+
+def sc_vertical_engine_moved():
+    """l = 160 > r + 10, so the piston stays above the crank for every angle: the moved
+    configuration is the same formula at 30° + 120° = 150°."""
+    return _vertical_engine(150)
+
+
+def isc_oscillating_cylinder():
+    """φ = atan2(A − O4), ρ = |A − O4| with A = 0.1 (cos θ, sin θ), θ = 220°, ω2 = 25,
+    α2 = 40; seen from the cylinder the piston moves ρ' u and ρ'' u (u along O4A); drag
+    v = ω k × r, a = α k × r − ω² r (r = O4A), Coriolis 2 ω k × ρ' u; totals v_A, a_A."""
+    o4 = [mpmath.mpf("-0.3"), mpmath.mpf("0.1")]
+
+    def pos(t):
+        pa = polar([0, 0], mpmath.mpf("0.1"), t)
+        return [angle(o4, pa), mpmath.sqrt((pa[0] - o4[0]) ** 2 + (pa[1] - o4[1]) ** 2)]
+
+    t = math.radians(220)
+    (phi, rho), (w, rho_d), (al, rho_dd) = motion(pos, t, 25, 40)
+    u = [math.cos(phi), math.sin(phi)]
+    r = [rho * u[0], rho * u[1]]
+    v_rel, a_rel = [rho_d * u[0], rho_d * u[1]], [rho_dd * u[0], rho_dd * u[1]]
+    v_drag = turn(w, r)
+    a_drag = [x - w * w * y for x, y in zip(turn(al, r), r)]
+    cor = turn(2 * w, v_rel)
+    pa = [0.1 * math.cos(t), 0.1 * math.sin(t)]
+    v_a, a_a = turn(25, pa), [x - 625 * y for x, y in zip(turn(40, pa), pa)]
+    return [w, al, v_rel, a_rel,
+            {"velocity": {"drag": v_drag, "relative": v_rel, "total": v_a},
+             "acceleration": {"drag": a_drag, "relative": a_rel, "coriolis": cor, "total": a_a}}]
+
+
+def isc_slotted_crank():
+    """B = s e on the slot (e = (cos θ, sin θ)), |B − O4| = 3: s = 4 cos θ + √(9 − 16 sin² θ)
+    (the far root); the rocker's angle atan2(B − O4); seen from the crank the pin moves s' e
+    and s'' e. θ = 30°, ω = 2, α = 1."""
+    def pos(t):
+        s = 4 * mpmath.cos(t) + mpmath.sqrt(9 - 16 * mpmath.sin(t) ** 2)
+        return [angle([4, 0], [s * mpmath.cos(t), s * mpmath.sin(t)]), s]
+
+    t = math.radians(30)
+    _, (w4, sd), (al4, sdd) = motion(pos, t, 2, 1)
+    e = [math.cos(t), math.sin(t)]
+    return [w4, al4, [sd * e[0], sd * e[1]], [sdd * e[0], sdd * e[1]]]
+
+
+def sc_offset_symbolic_theta():
+    """x_B = 3 cos θ + R, R = √(100 − (1 − 3 sin θ)²): v = w (−3 sin θ + 3 cos θ (1 − 3 sin θ)/R);
+    the rod's sin φ = (1 − 3 sin θ)/10, so φ' cos φ = −3 cos θ/10 and ω = −3 w cos θ/R."""
+    root = "sqrt(100 - (1 - 3*sin(theta))**2)"
+    return [[f"w*(-3*sin(theta) + 3*cos(theta)*(1 - 3*sin(theta))/{root})", "0"], f"-3*w*cos(theta)/{root}"]
+
+
+def isc_oscillating_cylinder_symbolic():
+    """tan φ = sin θ/(cos θ − 3): φ' = w (1 − 3 cos θ)/ρ² with ρ² = 10 − 6 cos θ; ρ' = 3 w sin θ/ρ
+    (from ρ² = 10 − 6 cos θ), along u = (cos θ − 3, sin θ)/ρ."""
+    return ["w*(1 - 3*cos(theta))/(10 - 6*cos(theta))",
+            ["3*w*sin(theta)*(cos(theta) - 3)/(10 - 6*cos(theta))", "3*w*sin(theta)**2/(10 - 6*cos(theta))"]]
+
+
+# quick-returns, Geneva, pin in slot ----------------------------------------------------------
+def qr_whitworth_opposite():
+    """φ = atan2(A − O4), B = O4 − 100 (cos φ, sin φ), x_C = x_B + √(300² − (20 − y_B)²);
+    the block seen from the slotted link moves ρ' u (ρ = |O4A|, u along O4A); θ = 250°, ω = 3."""
+    o4 = [50, 0]
+
+    def pos(t):
+        pa = polar([0, 0], 150, t)
+        phi = angle(o4, pa)
+        pb = polar(o4, -100, phi)
+        rho = mpmath.sqrt((pa[0] - 50) ** 2 + pa[1] ** 2)
+        return [pb[0] + mpmath.sqrt(300 ** 2 - (20 - pb[1]) ** 2), phi, rho]
+
+    (_, phi, _), (vc, w4, rho_d), (ac, al4, _) = motion(pos, math.radians(250), 3)
+    return [[vc, 0.0], [ac, 0.0], w4, al4, [rho_d * math.cos(phi), rho_d * math.sin(phi)]]
+
+
+def qr_drag_link():
+    """B from the circles about A (5) and O4 (4.5), left of A→O4; ψ = angle of O4B,
+    C = O4 − 3 (cos ψ, sin ψ), x_D = x_C + √(64 − y_C²) on y = 0; θ = 75°, ω = 5."""
+    def pos(t):
+        pb = meet(polar([0, 0], 4, t), 5, [mpmath.mpf("1.5"), 0], mpmath.mpf("4.5"), 1)
+        psi = angle([mpmath.mpf("1.5"), 0], pb)
+        pc = polar([mpmath.mpf("1.5"), 0], -3, psi)
+        return [psi, pc[0] + mpmath.sqrt(64 - pc[1] ** 2)]
+
+    _, (w4, vd), (al4, ad) = motion(pos, math.radians(75), 5)
+    return [w4, al4, [vd, 0.0], [ad, 0.0]]
+
+
+def geneva_four_slot():
+    """The slot's line passes through O3 and P: φ = atan2(r sin θ, r cos θ − c),
+    ρ = |O3P|; seen from the wheel the pin moves straight along the slot: ρ' u and ρ'' u.
+    θ = 20°, ω = 10, r = 50, c = 50√2."""
+    c = 50 * mpmath.sqrt(2)
+
+    def pos(t):
+        pp = polar([0, 0], 50, t)
+        return [angle([c, 0], pp), mpmath.sqrt((pp[0] - c) ** 2 + pp[1] ** 2)]
+
+    (phi, _), (w, rd), (al, rdd) = motion(pos, math.radians(20), 10)
+    u = [math.cos(phi), math.sin(phi)]
+    return [w, al, [rd * u[0], rd * u[1]], [rdd * u[0], rdd * u[1]]]
+
+
+def geneva_symbolic_theta():
+    """tan φ = sin θ/(cos θ − √2): φ' = w (1 − √2 cos θ)/(3 − 2√2 cos θ)."""
+    return ["w*(1 - sqrt(2)*cos(theta))/(3 - 2*sqrt(2)*cos(theta))"]
+
+
+def scotch_yoke():
+    """x_Y = 80 cos θ: v = −80 ω sin θ, a = −80 (ω² cos θ + α sin θ); seen from the
+    yoke the pin moves along the slot at 80 ω cos θ. θ = 35°, ω = 30, α = −10."""
+    t, w, al = math.radians(35), 30, -10
+    return [[-80 * w * math.sin(t), 0.0], [-80 * (w * w * math.cos(t) + al * math.sin(t)), 0.0],
+            [0.0, 80 * w * math.cos(t)]]
+
+
+def scotch_yoke_symbolic():
+    """x_Y = r cos θ: v = −r w sin θ, a = −r w² cos θ − r al sin θ."""
+    return [["-r*w*sin(theta)", "0"], ["-r*w**2*cos(theta) - r*al*sin(theta)", "0"]]
+
+
+def pin_slotted_rocker():
+    """tan φ = 0.3/x, the block at x = 0.4 moving at 0.6 (constant): φ and ρ = √(x² + 0.09)
+    differentiated; drag v = ω k × OP, a = α k × OP − ω² OP; relative ρ' u, ρ'' u;
+    Coriolis 2 ω k × ρ' u; the pin's own v = (0.6, 0), a = 0."""
+    def pos(x):
+        return [mpmath.atan2(mpmath.mpf("0.3"), x), mpmath.sqrt(x * x + mpmath.mpf("0.09"))]
+
+    (phi, rho), (w, rd), (al, rdd) = motion(pos, 0.4, 0.6)
+    u = [math.cos(phi), math.sin(phi)]
+    r = [rho * u[0], rho * u[1]]
+    v_rel, a_rel = [rd * u[0], rd * u[1]], [rdd * u[0], rdd * u[1]]
+    return [w, al, {"velocity": {"drag": turn(w, r), "relative": v_rel, "total": [0.6, 0.0]},
+                    "acceleration": {"drag": [x - w * w * y for x, y in zip(turn(al, r), r)], "relative": a_rel,
+                                     "coriolis": turn(2 * w, v_rel), "total": [0.0, 0.0]}}]
+
+
+NUMERIC = {f.__name__: f for f in (
+    fb_crank_rocker_coupler, fb_crossed_icr, fb_non_grashof, fb_non_grashof_moved, fb_drag_link_moved,
+    fb_parallelogram, sc_offset_above, sc_vertical_engine, sc_vertical_engine_moved, isc_oscillating_cylinder,
+    isc_slotted_crank, qr_whitworth_opposite, qr_drag_link, geneva_four_slot, scotch_yoke, pin_slotted_rocker)}
+SYMBOLIC = {f.__name__: f for f in (sc_offset_symbolic_theta, isc_oscillating_cylinder_symbolic,
+                                     geneva_symbolic_theta, scotch_yoke_symbolic)}
+ERRORS = {"fb_err_move_past_limit": "assembly"}
+
+
+def expected(name: str) -> dict:
+    """The NAME.expect.json content of a case, from its derivation."""
+    source = base._first_comment(HERE / f"{name}.yaml")
+    if name in ERRORS:
+        return {"source": source, "error": ERRORS[name]}
+    if name in SYMBOLIC:
+        fn = SYMBOLIC[name]
+        return {"source": f"{source} Derived by hand: {base._docstring(fn)}", "symbolic": True,
+                "assume_positive": True, "answers": fn()}
+    fn = NUMERIC[name]
+    return {"source": f"{source} Derived by hand: {base._docstring(fn)}", "symbolic": False,
+            "tolerance": 1e-9, "abs": 1e-9, "answers": _floats(fn())}
+
+
+def _floats(value):
+    if isinstance(value, (list, tuple)):
+        return [_floats(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _floats(v) for k, v in value.items()}
+    if isinstance(value, (mpmath.mpf, int)) and not isinstance(value, bool):
+        return float(value)
+    return value
+
+
+CASES = sorted([*NUMERIC, *SYMBOLIC, *ERRORS])
+
+if __name__ == "__main__":
+    for case in CASES:
+        (HERE / f"{case}.expect.json").write_text(json.dumps(expected(case), indent=1, ensure_ascii=False)
+                                                  + "\n", encoding="utf-8")
+        print("wrote", case)
