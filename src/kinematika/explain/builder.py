@@ -12,6 +12,7 @@ from .answers import answers_section, curvature_section
 from .centres import centres_section
 from .context import Ctx
 from .document import Document, Section, msg
+from .group import refine
 from .order import solution_order
 from .planar import PlanarSteps
 from .polygon import polygon
@@ -28,7 +29,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
     intro.add(msg("data.planar" if sol.space.dim == 2 else "data.spatial"))
     doc.sections.append(intro)
     if ctx.planar:
-        steps = solution_order(sol)
+        steps = refine(ctx, solution_order(sol))
         doc.sections.append(structure_section(ctx, steps))
         for level in ("v", "a"):
             doc.sections.append(PlanarSteps(ctx, steps, level).section())

@@ -27,6 +27,7 @@ class Ctx:
         self.symbolic = sol.symbolic
         self.planar = sol.space.dim == 2
         self._extra: dict[str, tuple] = {}
+        self._contacts: dict[str, str] = {}
 
     # positions -----------------------------------------------------------------------------
     def pos(self, name: str) -> tuple:
@@ -36,6 +37,23 @@ class Ctx:
         """Give an unnamed location (a shape's centre) a name for the equations."""
         self._extra.setdefault(name, position)
         return name
+
+    def contact(self, j) -> str:
+        """The name of a rolling joint's contact point, placed there: J, or J10 for joint
+        j10 (J1, J2 … in order when ids are names), never a point's name."""
+        if j.id not in self._contacts:
+            import re
+
+            rolling = [x.id for x in self.model.joints if x.type in ("rolling", "gear")]
+            number = j.id[1:] if re.fullmatch(r"j\d+", j.id) else str(rolling.index(j.id) + 1)
+            base = "J" if len(rolling) == 1 else f"J{number}"
+            while base in self.model.points:
+                base += "'"
+            self._contacts[j.id] = base
+            contact = self.sol.solver.geos[j.id].contact
+            if contact is not None:
+                self.name_position(base, contact.point)
+        return self._contacts[j.id]
 
     def r(self, q: str, p: str) -> tuple:
         return sub(self.pos(p), self.pos(q))
@@ -96,6 +114,16 @@ class Ctx:
         if point in self.inst.points and self.shared(point) and body in self.model.carriers(point):
             return point
         return f"{point}∈{body}"
+
+    def motion_key(self, point: str, body: str) -> str:
+        """Which material point this is, by its motion: one key for the points of bodies
+        pinned (or welded) together there, whatever their labels (B∈N and B∈rocker)."""
+        if point not in self.inst.points or body not in self.model.carriers(point):
+            return f"{point}∈{body}"
+        classes = self.model.motion_classes(point, self.model.carriers(point))
+        if len(classes) == 1:
+            return point
+        return f"{point}∈{next(c for c in classes if body in c)[0]}"
 
     def ref(self, point: str, body: str) -> PointRef:
         return PointRef(point, body)

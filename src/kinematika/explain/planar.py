@@ -17,7 +17,8 @@ from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, V
 from .order import Step
 
 body_ = body
-from .terms import point_term, rotation_terms, slide_terms, target_term
+from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
+from .group import group_blocks
 from .triad import triad_steps
 from .vehicles import wheel_route
 
@@ -34,7 +35,6 @@ class PlanarSteps:
         self.known = {ctx.frame}
         self.done: set[str] = set()          # point labels already explained
         self.used: set[str] = set()          # joints already written
-        self.contacts: dict[str, str] = {}   # joint id -> name of its contact point
         self.stated: set[int] = set()        # drivers already stated
 
     def section(self) -> Section:
@@ -64,6 +64,9 @@ class PlanarSteps:
                 if triad is not None:
                     self.used.update(step.joints)
                     return blocks + triad + self.carry(step)
+                planned = group_blocks(self, step)
+                if planned is not None:
+                    return blocks + planned + self.carry(step)
             if route is not None:
                 self.used.update(step.joints)
                 for b in step.bodies:
@@ -87,7 +90,7 @@ class PlanarSteps:
 
     def input(self, step: Step, chain: list[Joint]) -> Optional[list]:
         body, j = step.bodies[0], chain[0]
-        out: list = [self.rate(body)]
+        out: list = [self.rate(body) if j.type == "revolute" else self.same(body, self.ctx.frame, j)]
         if j.type == "revolute":
             self.done.add(self.ctx.point_label(j.at, body))
             out.append(msg("input.revolute", body=body_(body), point=point(j.at)))
@@ -204,25 +207,14 @@ class PlanarSteps:
                           unknown=True, kind="point")
             eq = Equation(target, sides, "v", ctx.ref(name, j.b), position=contact.point)
             return [msg("rolling.noslip", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(name)), eq]
-        rel = Term(Sym("a", f"{name}∈{j.b}/{j.a}"), ctx.clean(ctx.acc(j.b, name, j.a), "accel"),
-                   Ann("M"), Ann("para", msg("dir.normal")),
-                   [omega_sym(j.b, j.a), " × (", Sym("v", f"{name}∈{j.a}"), " − ", Sym("v", name, "g"), ")"],
-                   False, "contact")
+        rel = contact_term(ctx, name, j.b, j.a)
         target = Term(Sym("a", f"{name}∈{j.b}"), ctx.clean(ctx.acc(j.b, name), "accel"),
                       Ann("?"), Ann("?"), unknown=True, kind="point")
         eq = Equation(target, [sides[0], sides[1] + [rel]], "a", ctx.ref(name, j.b), position=contact.point)
         return [msg("rolling.kept", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(name)), eq]
 
     def contact_name(self, j: Joint) -> str:
-        """J, or J10 for joint j10 (J1, J2 … in order when ids are names), not a point's name."""
-        if j.id not in self.contacts:
-            rolling = [x.id for x in self.ctx.model.joints if x.type in ("rolling", "gear")]
-            number = j.id[1:] if re.fullmatch(r"j\d+", j.id) else str(rolling.index(j.id) + 1)
-            base = "J" if len(rolling) == 1 else f"J{number}"
-            while base in self.ctx.model.points:
-                base += "'"
-            self.contacts[j.id] = base
-        return self.contacts[j.id]
+        return self.ctx.contact(j)
 
     def via(self, body: str, point: str, unknown: bool) -> list[Term]:
         """The motion of `point` of `body` from a point of the body: v_Q + ω × QP."""
@@ -289,13 +281,17 @@ class PlanarSteps:
                        "omega" if self.level == "v" else "alpha", not ctx.symbolic)
 
     def carry(self, step: Step) -> list:
-        """The motion of the other points of the step's bodies: v_P = v_Q + ω × QP."""
+        """The motion of the other points of the step's bodies: v_P = v_Q + ω × QP, each
+        body from a point already written (bodies whose points follow from another's last)."""
         ctx, out = self.ctx, []
-        for body in step.bodies:
-            if not ctx.model.bodies[body].points:
-                continue
-            q = self.anchor(body)
-            if ctx.point_label(q, body) not in self.done:
+        pending = [b for b in step.bodies if ctx.model.bodies[b].points]
+        while pending:
+            ready = [b for b in pending if self.anchor(b) is not None]
+            body = ready[0] if ready else pending[0]
+            pending.remove(body)
+            found = self.anchor(body)
+            q, owner = found if found is not None else (ctx.model.bodies[body].points[0], body)
+            if found is None:                   # nothing written of it: the group's value
                 self.done.add(ctx.point_label(q, body))
                 unit = "speed" if self.level == "v" else "accel"
                 out.append(msg("carry.anchor", sym=Sym(self.level, ctx.point_label(q, body)),
@@ -305,19 +301,33 @@ class PlanarSteps:
                 if label in self.done or p == q:
                     continue
                 self.done.add(label)
-                side = [self.point(q, body)] + rotation_terms(ctx, self.level, body, q, p, False)
-                out.append(Equation(self.target(p, body, known=True), [side], self.level,
-                                    ctx.ref(p, body)))
+                side = [self.point(q, owner)] + rotation_terms(ctx, self.level, body, q, p, False)
+                out.append(Equation(self.target(p, body, known=True), [side], self.level, ctx.ref(p, body)))
         return out
 
-    def anchor(self, body: str) -> str:
-        """A point of the body already explained (else the body's first point)."""
+    def anchor(self, body: str) -> Optional[tuple[str, str]]:
+        """(point, body it was written as) of a point of `body` already written: one of
+        its points, or one pinned to it (B∈rocker for B∈N), else another material point of
+        it (a contact J∈body); None when none is."""
         ctx = self.ctx
-        points = ctx.model.bodies[body].points
-        for p in points:
-            if ctx.point_label(p, body) in self.done:
-                return p
-        return points[0]
+        written: dict[str, tuple[str, str]] = {}
+        for label in sorted(self.done):
+            name, _, owner = label.partition("∈")
+            if owner and owner not in ctx.model.bodies:
+                continue
+            written.setdefault(ctx.motion_key(name, owner) if owner else name, (name, owner))
+        for p in ctx.model.bodies[body].points:
+            name, owner = written.get(ctx.motion_key(p, body), ("", ""))
+            if name:
+                return p, owner or body
+            known = [k for k in self.known if k in ctx.model.carriers(p)
+                     and ctx.motion_key(p, k) == ctx.motion_key(p, body)]
+            if known:                           # a point of a body found before (a weld to the ground)
+                return p, known[0]
+        for name, owner in written.values():
+            if owner == body:
+                return name, body
+        return None
 
 
 def split_segment(seg: str) -> tuple[str, str]:

@@ -76,3 +76,12 @@ def target_term(ctx: Ctx, level: str, point: str, body: str, known: bool,
         t.value = ctx.clean(value, UNIT[level])
         t.sym = Sym(level, f"{t.sym.sub}/{relative_to}")
     return t
+
+
+def contact_term(ctx: Ctx, name: str, body: str, other: str) -> Term:
+    """a_J∈body − a_J∈other at a rolling contact without slip: along the common normal,
+    ω_body/other × (v_J∈other − J̇), with J̇ the velocity of the geometric contact point."""
+    return Term(Sym("a", f"{name}∈{body}/{other}"), ctx.clean(ctx.acc(body, name, other), "accel"),
+                Ann("M"), Ann("para", Msg("dir.normal", {})),
+                [omega_sym(body, other), " × (", Sym("v", f"{name}∈{other}"), " − ", Sym("v", name, "g"), ")"],
+                False, "contact")

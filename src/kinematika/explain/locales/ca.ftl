@@ -265,3 +265,14 @@ loop-intro = Els sòlids { $bodies } tanquen un llaç: en recórrer-lo, les velo
 loop-solve = Les tres components donen les velocitats desconegudes:
 loop-solve_alpha = Derivant en els eixos fixos, les acceleracions angulars relatives i els termes ω × ω_rel sumen zero al llarg del llaç; les tres components donen les α_j desconegudes:
 dir-axis = eix { $joint }
+dir-wheel = pla de la roda { $joint }
+how-weld = (unió rígida { $joint }: un sol sòlid)
+group-wheel_v = La roda { $joint } no llisca lateralment: la velocitat { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } és al pla de la roda.
+group-wheel_a = La roda { $joint } no llisca lateralment en cap instant i el seu pla gira amb { $body }: l’acceleració { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } té una part tangencial al pla i una de normal perpendicular al pla, { $w } × { $v }.
+how-translation = (es trasllada)
