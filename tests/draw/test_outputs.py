@@ -35,6 +35,17 @@ def test_svg_text_of_a_solution_with_options():
     assert 'id="acceleration:B@coupler"' not in svg(sol)      # the default asks velocities only
 
 
+def test_bare_svg_is_the_drawing_alone():
+    """For a page that embeds the figure and says its title, legend and notes in its own
+    language: no title, legend or notes, and a shorter figure."""
+    sol = solve(four_bar_tree([{"velocity": "B"}]))
+    full, bare = svg(sol), svg(sol, bare=True)
+    assert "<!-- velocity -->" in full and "<!-- velocity -->" not in bare
+    height = lambda text: float(ET.fromstring(text.encode()).get("height").rstrip("pt"))  # noqa: E731
+    assert height(bare) < height(full) - 30
+    assert 'id="velocity:B@coupler"' in bare
+
+
 @pytest.mark.parametrize("suffix, magic", [(".png", b"\x89PNG"), (".pdf", b"%PDF")])
 def test_png_and_pdf(tmp_path, suffix, magic):
     path = tmp_path / f"f{suffix}"

@@ -23,7 +23,7 @@ def test_explained_in_four_languages(name):
     for lang in LANGS:
         cat = catalogue(lang)
         for fmt in ("md", "html", "tex"):
-            text = render(doc, lang, fmt)
+            text = render(doc, lang, fmt, drawings=False)
             title = cat.get("sec.velocities" if sol.space.dim == 2 else "sec.rates")
             if fmt != "tex":
                 assert title in text, (name, lang, fmt)
@@ -45,7 +45,7 @@ def test_html_is_self_contained_and_has_the_final_numbers(name):
         value = plain(answer(sol, q), False)
         for x in (value if isinstance(value, list) else [value]):
             if abs(x) > 1e-9:
-                assert f"{x:.4g}".replace("-", "−") in page, (name, q.echo, x)
+                assert f"{x:.4g}".replace("-", "−").replace(".", ",") in page, (name, q.echo, x)
 
 
 def test_symbolic_formulas_are_written_exactly():
@@ -74,3 +74,30 @@ def test_latex_compiles(tmp_path):
                          cwd=tmp_path, capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stdout[-2000:]
     assert (tmp_path / "p.pdf").stat().st_size > 10000
+
+
+@pytest.mark.parametrize("name, drawings", [("quick_return", 2), ("fan_composition", 1), ("seed_c5_2_1_tricycle", 2)])
+def test_figures_are_the_draw_figures(name, drawings):
+    """The mechanism (3D too) and its instant centres as `kinematika draw` draws them, bare
+    (captions in the page's language), ids unique across the page; a symbolic model's
+    caption gives the numbers it is drawn at."""
+    sol, doc = explained(name)
+    page = render(doc, "es", "html")
+    assert page.count('<figure class="drawing">') == drawings
+    ids = re.findall(r'\bid="([^"]+)"', page)
+    assert len(ids) == len(set(ids)), "ids repeated across the inline figures"
+    refs = set(re.findall(r'url\(#([^)]+)\)|href="#([^"]+)"', page))
+    assert {r for pair in refs for r in pair if r} <= set(ids)
+    assert "<!-- velocity -->" not in page                     # no English legend
+    if sol.symbolic:
+        assert "Dibujado con" in page and "1,2" in page or "1.2" in page
+
+
+def test_numbers_as_each_language_writes_them():
+    """A decimal comma in Spanish, Catalan and Basque (Babel's), so a vector's components
+    are parted by semicolons; English keeps the point and the comma."""
+    _, doc = explained("four_bar")
+    en, es = render(doc, "en", "md", drawings=False), render(doc, "es", "md", drawings=False)
+    assert "(−9.117, −1.576) m/s" in en and "(−9,117; −1,576) m/s" in es
+    assert "ω_3 = v_BA / AB = −0,4516 rad/s" in render(doc, "ca", "md", drawings=False)
+    assert "0,4516" in render(doc, "eu", "html", drawings=False)

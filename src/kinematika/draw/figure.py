@@ -45,7 +45,7 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
     options = options or DrawOptions()
     drawn = arrows(scene.vectors, scene.size)
     content = framed_box(scene, drawn)
-    notes = _notes(scene, drawn)
+    notes = [] if options.bare else _notes(scene, drawn)
     fig, ax = new_figure(content.grow((CLIP_MARGIN + LABEL_MARGIN) * scene.size), options,
                          len(notes), TRIAD if scene.dim == 3 else 0.0)
     view = _limits(ax).grow(-CLIP_MARGIN * scene.size)   # what the axes show, less a margin
@@ -59,8 +59,9 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
     _place_labels(fig, ax, cv)
     if scene.dim == 3:
         _triad(fig, scene)
-    _title(fig, options.title or scene.name)
-    _legend(fig, scene, drawn, notes)
+    if not options.bare:
+        _title(fig, options.title or scene.name)
+        _legend(fig, scene, drawn, notes)
     return fig
 
 
@@ -98,8 +99,9 @@ def new_figure(limits: Box, options: DrawOptions, n_notes: int,
     limits = limits.with_aspect(aspect)
     width = options.width
     axes_w, axes_h = 0.96 * width, 0.96 * width * aspect
-    bottom = max(LEGEND + NOTE * n_notes + 0.1, bottom)
-    height = TOP + axes_h + bottom
+    top = 0.1 if options.bare else TOP
+    bottom = max(0.1 if options.bare else LEGEND + NOTE * n_notes + 0.1, bottom)
+    height = top + axes_h + bottom
     fig = Figure(figsize=(width, height))
     FigureCanvasAgg(fig)
     ax = fig.add_axes((0.02, bottom / height, axes_w / width, axes_h / height))

@@ -28,6 +28,8 @@ class DrawOptions:
     view: str = "iso"                 # 3D projection: iso, top, front, side
     width: float = 8.0                # figure width, inches
     title: Optional[str] = None       # default: the model's name
+    bare: bool = False                # the drawing alone: no title, legend or notes (a page
+                                      # that embeds it says them, in its own language)
 
     def shows(self, flag: Auto, asked: bool) -> bool:
         """Whether a tri-state option draws: explicitly, or by default when asked."""

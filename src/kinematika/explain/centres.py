@@ -7,14 +7,17 @@ from itertools import combinations
 
 from ..questions.centres import all_centres
 from .context import Ctx
-from .document import CentreNote, Section, msg
+from .document import CentreNote, Section, Sym, msg
 
 MAX_ALL = 10        # above this many pairs, only the centres relative to the frame (and what they need)
 
 
 def centres_section(ctx: Ctx) -> Section:
+    from .structure import drawing
+
     sec = Section(msg("sec.centres"))
-    sec.add(msg("centres.intro"))
+    sec.add(msg("centres.intro", example=Sym("I", "13", vector=False)))
+    sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False))
     order = all_centres(ctx.sol)
     found = {frozenset(c.pair): c for c in order}
     for key in _chosen(ctx, found):

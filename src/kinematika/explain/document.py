@@ -171,6 +171,30 @@ class Figure:
     points: list[tuple[str, tuple, str]] = field(default_factory=list)   # (label, xy, style)
     unit: str = ""                                 # unit of the scale bar (speed, accel, len)
     sample: bool = False                           # drawn at sample values of the symbols
+    layouts: dict = field(default_factory=dict, repr=False, compare=False)   # by the labels' texts
+
+
+@dataclass
+class Drawing:
+    """The figure `kinematika draw` gives of the solution with these `options` (the
+    mechanism with its velocities, its instant centres, a 3D model upright), drawn bare:
+    the caption says in the document's language what it shows. LaTeX, one file without
+    images, draws `fallback` (TikZ) instead, or nothing."""
+
+    caption: Msg
+    solution: Any
+    options: dict = field(default_factory=dict)
+    fallback: Optional[Figure] = None
+    values: dict = field(default_factory=dict)    # symbol -> the number it is drawn at
+    _svg: Optional[str] = field(default=None, repr=False)
+
+    def svg(self) -> str:
+        """The drawing as SVG text, drawn once for every language and format."""
+        if self._svg is None:
+            from ..draw import svg
+
+            self._svg = svg(self.solution, bare=True, **self.options)
+        return self._svg
 
 
 @dataclass
@@ -188,7 +212,7 @@ class CentreNote:
     side: str = ""                                 # proportional: the centre "between" or "outside" the witnesses
 
 
-Block = Union[Msg, Equation, Derived, Table, Figure, CentreNote, "Section"]
+Block = Union[Msg, Equation, Derived, Table, Figure, Drawing, CentreNote, "Section"]
 
 
 @dataclass
@@ -209,6 +233,7 @@ class Document:
     dimension: int
     length_unit: str
     sections: list[Section] = field(default_factory=list)
+    numbers: dict = field(default_factory=dict)    # body -> its number, as the notes and figures number them
 
     def blocks(self) -> list:
         """Every block, nested sections included, in reading order."""

@@ -585,7 +585,7 @@ class Writer:
                 return [Term(Sym("v", label), ctx.clean(whole, unit), Ann("M" if given else "?"), Ann("para", plane),
                              [], not given, "point")]
             along = scale(dot(whole, e), e)
-            w = omega_sym(s.body)
+            w = omega_sym(wheel.b)
             return [Term(Sym("a", label, "t"), ctx.clean(along, unit), Ann("M" if given else "?"),
                          Ann("para", plane), [], not given, "point"),
                     Term(Sym("a", label, "n"), ctx.clean(sub(whole, along), unit),

@@ -1,8 +1,15 @@
-"""Velocity and acceleration polygons as textbooks draw them: each side of a vector
-equation head to tail from the pole o, to scale, all sides closing on the target's tip
-(seed 001). Vertices are lettered as the images of the points (o, a, b, …); terms that
-lie on one line are drawn side by side, offset across the line, so none hides another,
-and the result is drawn (offset) even where it coincides with a term."""
+"""Velocity and acceleration polygons as textbooks draw them (seed 001).
+
+One polygon per level: from the pole o, the absolute velocity (acceleration) of every
+point ends at its image, lettered as the point (a, b, o4 …); between images, the relative
+terms of the equations, head to tail as they are written (ω × AB from a to b; the normal
+and then the tangential component; the slide and the Coriolis term), so the whole level's
+equations are one figure (the velocity image of each body). An equation's sides are
+chained from the image of their first point; an arrow drawn once is not drawn again.
+Terms that fall on one line are drawn side by side, offset across it, so none hides
+another. Equations outside the level sections (composition of motions) keep a polygon of
+their own.
+"""
 from __future__ import annotations
 
 import math
@@ -11,40 +18,103 @@ from .context import Ctx
 from .document import Arrow, Equation, Figure, msg
 
 OFFSET = 0.035          # of the polygon's size: the gap between collinear arrows
+SAME = 1e-9             # relative: two points (or arrows) are one
+
+
+def level_polygon(ctx: Ctx, equations: list[Equation], level: str) -> Figure | None:
+    """The polygon of all the planar equations of a level ('v' or 'a'), or None."""
+    eqs = [e for e in equations if e.level == level]
+    if not ctx.planar or not eqs:
+        return None
+    poly = _Builder(ctx)
+    for eq in eqs:
+        poly.equation(eq)
+    if not poly.arrows:
+        return None
+    fig = Figure(msg("fig.level_v" if level == "v" else "fig.level_a"), unit="speed" if level == "v" else "accel",
+                 sample=ctx.symbolic)
+    fig.arrows = _separated(poly.arrows)
+    fig.points = [("o", (0.0, 0.0), "pole")] + [(name, xy, "image") for name, xy in poly.images.items()
+                                                 if not poly.at_pole(xy)]
+    return fig
 
 
 def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
-    """The polygon of a planar equation, or None when there is nothing to draw."""
+    """The polygon of one planar equation (outside the level sections), or None."""
     if not ctx.planar or eq.level not in ("v", "a") or not eq.figure:
         return None
-    unit = "speed" if eq.level == "v" else "accel"
-    origin = (0.0, 0.0)
-    arrows: list[Arrow] = []
-    images: dict[str, tuple] = {}
-    for side in eq.sides:
-        tip = origin
-        for term in side:
-            step = ctx.num(term.value)
-            if sum(c * c for c in step) == 0:
-                continue
-            end = (tip[0] + step[0], tip[1] + step[1])
-            arrows.append(Arrow(tip, end, term.sym, "unknown" if term.unknown else "known"))
-            if term.kind == "point" and tip == origin:
-                images.setdefault(_letter(term.sym.sub), end)
-            tip = end
-    end = ctx.num(eq.target.value)
-    if len(arrows) < 2:
+    poly = _Builder(ctx, single=True)
+    poly.equation(eq)
+    if len(poly.arrows) < 2:
         return None
-    if sum(c * c for c in end) > 0:
-        arrows.append(Arrow(origin, end, eq.target.sym, "result"))
-        images.setdefault(_letter(eq.target.sym.sub), end)
-    styles = {a.style for a in arrows}
+    styles = {a.style for a in poly.arrows}
     fig = Figure(msg("fig.polygon_v" if eq.level == "v" else "fig.polygon_a",
                      unknown=int("unknown" in styles), result=int("result" in styles)),
-                 arrows=_separated(arrows), unit=unit, sample=ctx.symbolic)
-    fig.points.append(("o", origin, "pole"))
-    fig.points += [(name, xy, "image") for name, xy in images.items() if name]
+                 arrows=_separated(poly.arrows), unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic)
+    fig.points = [("o", (0.0, 0.0), "pole")] + [(n, xy, "image") for n, xy in poly.images.items()
+                                                 if not poly.at_pole(xy)]
     return fig
+
+
+class _Builder:
+    """Arrows and images, each drawn once."""
+
+    def __init__(self, ctx: Ctx, single: bool = False) -> None:
+        self.ctx, self.single = ctx, single
+        self.arrows: list[Arrow] = []
+        self.images: dict[str, tuple] = {}
+        self.size = max(ctx.scale_of("speed"), 1e-300)
+
+    def at_pole(self, xy: tuple) -> bool:
+        return math.hypot(*xy) <= SAME * self._scale()
+
+    def _scale(self) -> float:
+        pts = [p for a in self.arrows for p in (a.start, a.end)]
+        return max([math.hypot(*p) for p in pts] + [1e-300])
+
+    def equation(self, eq: Equation) -> None:
+        origin = (0.0, 0.0)
+        for side in eq.sides:
+            tip = origin
+            for term in side:
+                step = self.ctx.num(term.value)
+                if step[0] == 0 and step[1] == 0:
+                    continue
+                end = (tip[0] + step[0], tip[1] + step[1])
+                whole = term.kind == "point" and not term.sym.sup
+                if whole and tip == origin:
+                    self._image(term.sym.sub, end)
+                    style = "known" if self.single and not term.unknown else "result"
+                    self._arrow(Arrow(origin, end, term.sym, style if self.single else "result"), label=self.single)
+                else:
+                    style = ("unknown" if term.unknown else "known") if self.single else "known"
+                    self._arrow(Arrow(tip, end, term.sym, style))
+                tip = end
+        end = self.ctx.num(eq.target.value)
+        if end != origin and eq.target.sym.base in ("v", "a"):
+            if not eq.target.sym.sup:
+                self._image(eq.target.sym.sub, end)
+            self._arrow(Arrow(origin, end, eq.target.sym, "result"), label=self.single)
+
+    def _image(self, label: str, xy: tuple) -> None:
+        name = _letter(label)
+        if name and name not in self.images:
+            self.images[name] = xy
+
+    def _arrow(self, a: Arrow, label: bool = True) -> None:
+        """Add an arrow once; a point's absolute motion wins over a term that is the same
+        arrow from the pole (v_AO2 when O2 is fixed): blue, named by its image."""
+        a = a if label else Arrow(a.start, a.end, None, a.style)
+        for i, b in enumerate(self.arrows):
+            if _close(a.start, b.start, self.size) and _close(a.end, b.end, self.size):
+                if a.style == "result" and b.style != "result" and not self.single:
+                    self.arrows[i] = a
+                return
+        self.arrows.append(a)
+
+
+def _close(p: tuple, q: tuple, size: float) -> bool:
+    return math.hypot(p[0] - q[0], p[1] - q[1]) <= 1e-7 * size
 
 
 def _letter(label: str) -> str:

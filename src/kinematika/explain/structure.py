@@ -3,28 +3,29 @@
 order of solution."""
 from __future__ import annotations
 
+from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
-from .document import Arrow, Figure, Inline, Section, Table, Value, body, joint, msg, names, point
+from .document import Arrow, Drawing, Figure, Inline, Section, Table, Value, body, joint, msg, names, point
 from .order import Step
 
 
 def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model, sol = ctx.model, ctx.sol
     sec = Section(msg("sec.structure"))
-    bodies = [[msg("structure.frame", body=body(name)) if name == ctx.frame else body(name),
+    numbers = body_numbers(model)
+    bodies = [[str(numbers[name]), msg("structure.frame", body=body(name)) if name == ctx.frame else body(name),
                [point(p) for p in b.points],
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
-              for name, b in model.bodies.items()]
-    sec.add(Table([msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
+              for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
+    sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
     joints = [[joint(j.id), msg(f"joint.{j.type}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]
     sec.add(Table([msg("col.joint"), msg("col.type"), msg("col.bodies"), msg("col.where")], joints))
     d = sol.solver.analysis.diagnosis
     sec.add(msg("structure.dof", n=d.n, moving=len(model.moving_bodies), rank=d.n - d.dof, dof=d.dof,
                 conditions=d.conditions))
-    if ctx.planar:
-        sec.add(mechanism_figure(ctx))
+    sec.add(drawing(ctx, "fig.mechanism", velocities=True, accelerations=False, centres=False, curvature=False))
     if not steps:
         return sec
     order = Section(msg("sec.order"), level=3)
@@ -49,9 +50,19 @@ def _where(ctx: Ctx, j) -> Inline | str:
     return Inline(parts) if parts else "—"
 
 
+def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
+    """The `draw` figure of the solution with these options (for LaTeX, the mechanism as
+    TikZ when planar); for a symbolic model, the numbers it is drawn at."""
+    from ..draw.scene import drawing_values
+
+    fallback = mechanism_figure(ctx) if ctx.planar and caption == "fig.mechanism" else None
+    values = {str(k): v for k, v in sorted(drawing_values(ctx.inst).items(), key=lambda kv: str(kv[0]))}
+    return Drawing(msg(caption, dim=ctx.space.dim), ctx.sol, options, fallback, values)
+
+
 def mechanism_figure(ctx: Ctx) -> Figure:
     """The mechanism at the instant: bodies as lines between their points, shapes, labels."""
-    fig = Figure(msg("fig.mechanism"), unit="len", sample=ctx.symbolic)
+    fig = Figure(msg("fig.mechanism", dim=2), unit="len", sample=ctx.symbolic)
     pos = {name: ctx.num(p) for name, p in ctx.inst.points.items()}
     for name, body in ctx.model.bodies.items():
         pts = [pos[p] for p in body.points]

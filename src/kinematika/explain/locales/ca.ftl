@@ -42,7 +42,10 @@ joint-gear = engranatge
 joint-weld = unió rígida
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
-fig-mechanism = El mecanisme en aquest instant, a escala; fletxes: velocitats dels punts (proporcionals).
+fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
+        [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
+       *[other] {""}
+    }; les fletxes blaves són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls; els sòlids estan numerats.
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts: en negre els termes coneguts{ $unknown ->
         [1] , en vermell els trobats en aquest pas
        *[other] {""}
@@ -134,7 +137,7 @@ sub-drag = ar
 sub-cor = Cor
 sec-rates_summary = Velocitats i acceleracions angulars
 sec-centres = Centres instantanis de rotació (CIR)
-centres-intro = I amb els noms de dos sòlids és el CIR del seu moviment relatiu: el punt on la velocitat relativa és nul·la.
+centres-intro = I amb els números de dos sòlids ({ $example }: sòlids 1 i 3) és el CIR del seu moviment relatiu: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
 centre-joint-rolling = el punt de contacte de l’enllaç { $joint } (rodolament sense lliscament),
@@ -265,7 +268,7 @@ loop-intro = Els sòlids { $bodies } tanquen un llaç: en recórrer-lo, les velo
 loop-solve = Les tres components donen les velocitats desconegudes:
 loop-solve_alpha = Derivant en els eixos fixos, les acceleracions angulars relatives i els termes ω × ω_rel sumen zero al llarg del llaç; les tres components donen les α_j desconegudes:
 dir-axis = eix { $joint }
-dir-wheel = pla de la roda { $joint }
+dir-wheel = roda { $joint }
 how-weld = (unió rígida { $joint }: un sol sòlid)
 group-wheel_v = La roda { $joint } no llisca lateralment: la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
@@ -276,3 +279,8 @@ group-wheel_a = La roda { $joint } no llisca lateralment en cap instant i el seu
        *[other] de { $point }
     } té una part tangencial al pla i una de normal perpendicular al pla, { $w } × { $v }.
 how-translation = (es trasllada)
+fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy i perpendiculars a rodes i ranures).
+fig-drawn_at = Dibuixat amb { $values }.
+fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt (blau) acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, les velocitats relatives de les equacions anteriors (negre), l’una darrere l’altra.
+fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt (blau) acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors (negre: normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
+col-number = núm.

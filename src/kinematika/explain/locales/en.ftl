@@ -42,7 +42,10 @@ joint-gear = gear
 joint-weld = weld
 joint-spherical = spherical
 joint-cylindrical = cylindrical
-fig-mechanism = The mechanism at this instant, to scale; arrows: velocities of the points (proportional).
+fig-mechanism = The mechanism at this instant, to scale{ $dim ->
+        [3] , in isometric projection (the axes x, y, z at the lower right)
+       *[other] {""}
+    }; the blue arrows are the velocities of its points, to one scale, with their magnitudes; the bodies are numbered.
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points: known terms in black{ $unknown ->
         [1] , terms found in this step in red
        *[other] {""}
@@ -104,7 +107,7 @@ sub-drag = drag
 sub-cor = Cor
 sec-rates_summary = Angular velocities and accelerations
 sec-centres = Instant centres
-centres-intro = I with the names of two bodies is the instant centre of their relative motion: the point where the relative velocity is zero.
+centres-intro = I with the numbers of two bodies ({ $example }: bodies 1 and 3) is the instant centre of their relative motion: the point where the relative velocity is zero.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = the pin of joint { $joint },
 centre-joint-rolling = the contact point of joint { $joint } (rolling without slipping),
@@ -163,8 +166,13 @@ loop-intro = The bodies { $bodies } close a loop: going round it, the relative a
 loop-solve = The three components give the unknown rates:
 loop-solve_alpha = Differentiating in the fixed axes, the relative angular accelerations and the terms ω × ω_rel add up to zero round the loop; the three components give the unknown α_j:
 dir-axis = axis { $joint }
-dir-wheel = plane of wheel { $joint }
+dir-wheel = wheel { $joint }
 how-weld = (weld { $joint }: one body)
 group-wheel_v = The wheel { $joint } does not slip sideways: the velocity of { $point } lies in the wheel's plane.
 group-wheel_a = The wheel { $joint } does not slip sideways at any instant, and its plane turns with { $body }: the acceleration of { $point } is a tangential part in the plane and a normal part across it, { $w } × { $v }.
 how-translation = (it translates)
+fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism, with the lines they are found on (dash-dot: Aronhold–Kennedy lines and the perpendiculars to wheels and slots).
+fig-drawn_at = Drawn at { $values }.
+fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point (blue) ends at its image, lettered as the point (a for A); between the images, the relative velocities of the equations above (black), head to tail.
+fig-level_a = Acceleration polygon, to scale: from the pole o, the acceleration of each point (blue) ends at its image, lettered as the point (a for A); between the images, the terms of the equations above (black: normal and tangential, relative and Coriolis), head to tail.
+col-number = no.

@@ -42,7 +42,10 @@ joint-gear = engranaje
 joint-weld = unión rígida
 joint-spherical = esférico
 joint-cylindrical = cilíndrico
-fig-mechanism = El mecanismo en este instante, a escala; flechas: velocidades de los puntos (proporcionales).
+fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
+        [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
+       *[other] {""}
+    }; las flechas azules son las velocidades de sus puntos, a una misma escala, con sus módulos; los sólidos están numerados.
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos: en negro los términos conocidos{ $unknown ->
         [1] , en rojo los hallados en este paso
        *[other] {""}
@@ -104,7 +107,7 @@ sub-drag = arr
 sub-cor = Cor
 sec-rates_summary = Velocidades y aceleraciones angulares
 sec-centres = Centros instantáneos de rotación (CIR)
-centres-intro = I con los nombres de dos sólidos es el CIR de su movimiento relativo: el punto donde la velocidad relativa es nula.
+centres-intro = I con los números de dos sólidos ({ $example }: sólidos 1 y 3) es el CIR de su movimiento relativo: el punto donde la velocidad relativa es nula.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = el eje del par { $joint },
 centre-joint-rolling = el punto de contacto del par { $joint } (rodadura sin deslizamiento),
@@ -163,8 +166,13 @@ loop-intro = Los sólidos { $bodies } cierran un lazo: al recorrerlo, las veloci
 loop-solve = Las tres componentes dan las velocidades desconocidas:
 loop-solve_alpha = Derivando en los ejes fijos, las aceleraciones angulares relativas y los términos ω × ω_rel suman cero a lo largo del lazo; las tres componentes dan las α_j desconocidas:
 dir-axis = eje { $joint }
-dir-wheel = plano de la rueda { $joint }
+dir-wheel = rueda { $joint }
 how-weld = (unión rígida { $joint }: un solo sólido)
 group-wheel_v = La rueda { $joint } no desliza lateralmente: la velocidad de { $point } está en el plano de la rueda.
 group-wheel_a = La rueda { $joint } no desliza lateralmente en ningún instante y su plano gira con { $body }: la aceleración de { $point } tiene una parte tangencial en el plano y una normal perpendicular a él, { $w } × { $v }.
 how-translation = (se traslada)
+fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo, con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy y perpendiculares a ruedas y ranuras).
+fig-drawn_at = Dibujado con { $values }.
+fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto (azul) acaba en su imagen, con la letra del punto (a para A); entre las imágenes, las velocidades relativas de las ecuaciones anteriores (negro), una tras otra.
+fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto (azul) acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores (negro: normales y tangenciales, relativos y de Coriolis), uno tras otro.
+col-number = n.º

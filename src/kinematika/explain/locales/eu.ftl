@@ -42,7 +42,10 @@ joint-gear = engranajea
 joint-weld = lotura zurruna
 joint-spherical = esferikoa
 joint-cylindrical = zilindrikoa
-fig-mechanism = Mekanismoa une honetan, eskalan; geziak: puntuen abiadurak (proportzionalak).
+fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
+        [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
+       *[other] {""}
+    }; gezi urdinak bere puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik: beltzez termino ezagunak{ $unknown ->
         [1] , gorriz urrats honetan aurkitutakoak
        *[other] {""}
@@ -107,7 +110,7 @@ sub-drag = arr
 sub-cor = Cor
 sec-rates_summary = Abiadura eta azelerazio angeluarrak
 sec-centres = Biraketa-zentro instantaneoak
-centres-intro = I ikurrak, bi solidoren izenekin, haien mugimendu erlatiboaren biraketa-zentro instantaneoa adierazten du: abiadura erlatiboa nulua den puntua.
+centres-intro = I ikurrak, bi solidoren zenbakiekin ({ $example }: 1 eta 3 solidoak), haien mugimendu erlatiboaren biraketa-zentro instantaneoa adierazten du: abiadura erlatiboa nulua den puntua.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = { $joint } giltzaduraren ardatza,
 centre-joint-rolling = { $joint } loturaren kontaktu-puntua (irristatu gabeko errodadura),
@@ -166,8 +169,13 @@ loop-intro = { $bodies } solidoek begizta bat ixten dute: hura osatzean, abiadur
 loop-solve = Hiru osagaiek abiadura ezezagunak ematen dituzte:
 loop-solve_alpha = Ardatz finkoetan deribatuz, azelerazio angeluar erlatiboen eta ω × ω_rel terminoen batura zero da begiztan; hiru osagaiek α_j ezezagunak ematen dituzte:
 dir-axis = { $joint } ardatza
-dir-wheel = { $joint } gurpilaren planoa
+dir-wheel = { $joint } gurpila
 how-weld = ({ $joint } lotura zurruna: solido bakarra)
 group-wheel_v = { $joint } gurpila ez da alboetara irristatzen: { $point } puntuaren abiadura gurpilaren planoan dago.
 group-wheel_a = { $joint } gurpila ez da inoiz alboetara irristatzen, eta bere planoa { $body } solidoarekin batera biratzen da: { $point } puntuaren azelerazioak zati tangentzial bat du planoan eta zati normal bat planoarekiko perpendikularra, { $w } × { $v }.
 how-translation = (traslatzen da)
+fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak eta gurpilen eta arteken perpendikularrak).
+fig-drawn_at = Balio hauekin marraztua: { $values }.
+fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura (urdinez) bere irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen abiadura erlatiboak (beltzez), bata bestearen ondoren.
+fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa (urdinez) bere irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak (beltzez: normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
+col-number = zk.

@@ -12,8 +12,9 @@ from .markdown import MarkdownRenderer
 FORMATS: dict[str, type[Renderer]] = {"md": MarkdownRenderer, "html": HtmlRenderer, "tex": LatexRenderer}
 
 
-def render(doc: Document, lang: str = "en", fmt: str = "md") -> str:
-    """The document as text in `lang` (en, es, ca, eu) and `fmt` (md, html, tex)."""
+def render(doc: Document, lang: str = "en", fmt: str = "md", drawings: bool = True) -> str:
+    """The document as text in `lang` (en, es, ca, eu) and `fmt` (md, html, tex);
+    `drawings=False` leaves out the `draw` figures (quick, for checking the text)."""
     if fmt not in FORMATS:
         raise KinematikaError("schema", f"unknown format {fmt!r} (formats: {', '.join(FORMATS)})", "--format")
-    return FORMATS[fmt](doc, catalogue(lang)).render()
+    return FORMATS[fmt](doc, catalogue(lang), drawings).render()

@@ -6,11 +6,14 @@ import re
 from typing import Any
 
 from babel.lists import format_list
+from babel.numbers import get_decimal_symbol
+
+from ...text import shown
 
 from ..catalogue import Catalogue
-from ..document import (Ann, CentreNote, Derived, Document, Equation, Figure, Inline, Msg, Name, Names, Section,
-                        Sym, Table, Value)
-from .svg import sym_label
+from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Msg, Name, Names,
+                        Section, Sym, Table, Value)
+from .svg import Text, sym_text
 
 TOKEN = "\ue000{}\ue001"
 TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
@@ -34,6 +37,14 @@ def plain(x: Any) -> str:
     return ""
 
 UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "rate2": "rad/s²"}
+BODY_SUBS = ("ω", "α", "I", "ω×ω")          # symbols whose subscript is made of bodies
+DECIMAL = re.compile(r"(?<=\d)\.(?=\d)")
+
+
+def visible(text: str) -> str:
+    """Text with its control characters (but for line breaks) shown as escapes: a name
+    never drives a terminal, a page or a reader's eye (issue 12's `text.shown`)."""
+    return "\n".join(shown(line) for line in text.split("\n"))
 
 
 class Renderer:
@@ -46,13 +57,16 @@ class Renderer:
 
     fmt = ""
 
-    def __init__(self, doc: Document, cat: Catalogue) -> None:
+    def __init__(self, doc: Document, cat: Catalogue, drawings: bool = True) -> None:
         self.doc = doc
         self.cat = cat
+        self.drawings = drawings
+        self.decimal = get_decimal_symbol(cat.lang)
+        self.comma = "; " if self.decimal == "," else ", "      # between a vector's components
 
     # the walk ---------------------------------------------------------------------------------
     def render(self) -> str:
-        body = [self.heading(1, self.esc(self.doc.title))]
+        body = [self.heading(1, self.esc(visible(self.doc.title)))]
         body += [self.section(s) for s in self.doc.sections]
         return self.page("\n".join(body))
 
@@ -75,6 +89,8 @@ class Renderer:
             return self.table([self.arg(h) for h in b.header], [[self.cell(c) for c in r] for r in b.rows])
         if isinstance(b, Figure):
             return self.figure(b)
+        if isinstance(b, Drawing):
+            return self.drawing(b) if self.drawings else ""
         if isinstance(b, CentreNote):
             return self.para(self.centre(b))
         raise TypeError(f"unknown block {type(b).__name__}")
@@ -131,18 +147,49 @@ class Renderer:
         """A model's name as a name (formats set points, bodies and joints apart)."""
         return self.esc(n.text)
 
+    def numbered(self, s: Sym) -> str:
+        """A symbol's subscript with its bodies by number, as the notes and the figures write
+        them: ω_3, ω_3/2, v_B∈3, v_A∈2/3, a_J∈3/1, I_13 (I_2,11 past nine bodies)."""
+        nums = self.doc.numbers
+        if not nums or not s.sub:
+            return s.sub
+        if s.base in BODY_SUBS:
+            sep = "," if s.base in ("I", "ω×ω") else "/"
+            parts = s.sub.split(sep)
+            if not all(p in nums for p in parts):
+                return s.sub
+            if s.base == "I":
+                ks = sorted(nums[p] for p in parts)
+                return "".join(map(str, ks)) if max(nums.values()) < 10 else ",".join(map(str, ks))
+            return sep.join(str(nums[p]) for p in parts)
+        head, *rest = re.split(r"([∈/])", s.sub)
+        return head + "".join(str(nums.get(t, t)) if i % 2 else t for i, t in enumerate(rest))
+
     def caption(self, fig: Figure) -> str:
         """A figure's caption, saying when it is drawn at sample values of the symbols."""
         text = self.message(fig.caption)
         return text + " " + self.message(Msg("fig.sample")) if fig.sample else text
 
-    def svg_label(self, s: Sym) -> str:
-        return sym_label(s.base, self.sub_text(s), s.sup)
+    def drawing_caption(self, d: Drawing) -> str:
+        """A `draw` figure's caption, with the numbers a symbolic model is drawn at."""
+        text = self.message(d.caption)
+        if d.values:
+            values = [Inline([Name(k, "param"), " = ", Value(v, "")]) for k, v in d.values.items()]
+            text += " " + self.message(Msg("fig.drawn_at", {"values": Names(values)}))
+        return text
+
+    def drawing(self, d: Drawing) -> str:
+        """A `draw` figure; formats that cannot embed one draw its fallback, or nothing."""
+        return self.figure(d.fallback) if d.fallback is not None else ""
+
+    def svg_label(self, s: Sym) -> Text:
+        """A symbol in a figure: its SVG text and measured size."""
+        return sym_text(s.base, self.sub_text(s), s.sup)
 
     def sub_text(self, s: Sym) -> str:
         """The subscript of a symbol: the catalogue's word (arr, rel, Cor) and the name."""
         word = self.cat.get(s.sub_key) if s.sub_key else ""
-        return ",".join(p for p in (word, s.sub) if p)
+        return visible(",".join(p for p in (word, self.numbered(s)) if p))
 
     # values ---------------------------------------------------------------------------------
     def value(self, v: Value) -> str:
@@ -152,7 +199,7 @@ class Renderer:
         if isinstance(x, bool):
             return self.esc(str(x).lower())
         if isinstance(x, tuple):
-            text = "(" + ", ".join(self.scalar(c) for c in x) + ")"
+            text = "(" + self.comma.join(self.scalar(c) for c in x) + ")"
         else:
             text = self.scalar(x)
         unit = self.unit(v.unit)
@@ -169,13 +216,22 @@ class Renderer:
         return self.formula(x)
 
     def number(self, x: float) -> str:
+        """Four significant digits, with the language's decimal sign (Babel's)."""
         if x == 0:
             return "0"
-        text = f"{x:.4g}"
+        text = f"{x:.4g}".replace(".", self.decimal)
         if "e" in text:
             mantissa, exponent = text.split("e")
             return self.power(mantissa.replace("-", "−"), int(exponent))
         return text.replace("-", "−")
+
+    def bar_number(self, x: float) -> str:
+        """A scale bar's round length, with the language's decimal sign."""
+        return f"{x:g}".replace(".", self.decimal)
+
+    def decimals(self, text: str) -> str:
+        """A formula's decimal points as the language writes them."""
+        return DECIMAL.sub(self.decimal, text) if self.decimal != "." else text
 
     # annotations and derived values ------------------------------------------------------------
     def ann(self, a: Ann) -> str:

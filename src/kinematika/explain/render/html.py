@@ -5,9 +5,9 @@ from __future__ import annotations
 from html import escape
 from typing import Any
 
-from ..document import Equation, Figure, Sym
-from .base import Renderer
-from .svg import svg
+from ..document import Drawing, Equation, Figure, Name, Sym
+from .base import Renderer, visible
+from .svg import embedded, svg
 from .unicode import unicode_formula
 
 CSS = """
@@ -21,7 +21,9 @@ table.eq{font-size:1.12rem;margin:.8rem 0 .3rem}table.eq td{text-align:center;pa
 table.eq tr.ann td{font-size:.78rem;color:#555}table.eq td.unknown{color:#c0392b}
 ul.terms{margin:.1rem 0 .6rem;font-size:.95rem}figure{margin:.4rem 0 1rem}
 figcaption{font-size:.85rem;color:#555}b.v{font-style:italic}
+span.pt,span.jt{font-family:"DejaVu Sans",Arial,sans-serif;font-size:.9em}span.jt{color:#444}
 p.sample{font-size:.85rem;color:#8a5a00}
+figure.drawing svg{width:100%;max-width:42rem;height:auto}
 """
 
 
@@ -29,7 +31,17 @@ class HtmlRenderer(Renderer):
     fmt = "html"
 
     def esc(self, text: str) -> str:
-        return escape(text, quote=False)
+        return escape(visible(text), quote=False)
+
+    def name(self, n: Name) -> str:
+        """Points upright and sans serif (as the figures letter them), bodies in italics,
+        joints sans serif, parameters as symbols."""
+        text = self.esc(n.text)
+        if n.kind == "body":
+            return f'<i class="bd">{text}</i>'
+        if n.kind == "param":
+            return f"<i>{text}</i>"
+        return f'<span class="{"jt" if n.kind == "joint" else "pt"}">{text}</span>'
 
     def sym(self, s: Sym) -> str:
         base = f'<b class="v">{escape(s.base)}</b>' if s.vector else f"<i>{escape(s.base)}</i>"
@@ -40,11 +52,11 @@ class HtmlRenderer(Renderer):
         return f"{mantissa}×10<sup>{str(exponent).replace('-', '−')}</sup>"
 
     def formula(self, expr: Any) -> str:
-        return escape(unicode_formula(expr))
+        return self.decimals(escape(unicode_formula(expr)))
 
     def page(self, body: str) -> str:
         return (f'<!DOCTYPE html>\n<html lang="{self.cat.lang}">\n<head>\n<meta charset="utf-8">\n'
-                f"<title>{escape(self.doc.title)}</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
+                f"<title>{self.esc(self.doc.title)}</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
                 f"{body}\n</body>\n</html>\n")
 
     def heading(self, level: int, text: str) -> str:
@@ -77,5 +89,12 @@ class HtmlRenderer(Renderer):
 
     def figure(self, fig: Figure) -> str:
         caption = self.caption(fig)
-        drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "")
+        self.figures = getattr(self, "figures", 0) + 1
+        drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "", f"f{self.figures}",
+                      self.bar_number)
         return f"<figure>{drawing}<figcaption>{caption}</figcaption></figure>"
+
+    def drawing(self, d: Drawing) -> str:
+        self.drawn = getattr(self, "drawn", 0) + 1
+        return (f'<figure class="drawing">{embedded(d.svg(), f"d{self.drawn}")}'
+                f"<figcaption>{self.drawing_caption(d)}</figcaption></figure>")

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..document import Equation, Figure, Sym
-from .base import Renderer
-from .svg import COLOURS, bounds, nice
+from ..document import Equation, Figure, Name, Sym
+from .base import DECIMAL, Renderer, visible
+from .svg import COLOURS, MARGIN, WIDTH, Text, layout, nice, sym_text
 from .unicode import latex_formula
 
 TEXT = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
@@ -57,7 +57,13 @@ class LatexRenderer(Renderer):
     fmt = "tex"
 
     def esc(self, text: str) -> str:
-        return tex_text(text)
+        return tex_text(visible(text))
+
+    def name(self, n: Name) -> str:
+        """Points and joints sans serif, bodies emphasised, parameters italic."""
+        text = self.esc(n.text)
+        command = {"body": "emph", "param": "textit"}.get(n.kind, "textsf")
+        return f"\\{command}{{{text}}}"
 
     def math_sym(self, s: Sym) -> str:
         base = MATH.get(s.base, s.base) if s.base != "ω×ω" else r"\omega\times\omega"
@@ -72,13 +78,14 @@ class LatexRenderer(Renderer):
         return f"{mantissa}\\times 10^{{{exponent}}}"
 
     def number(self, x: float) -> str:
-        return "$" + super().number(x).replace("−", "-") + "$"
+        return "$" + super().number(x).replace("−", "-").replace(",", "{,}") + "$"
 
     def formula(self, expr: Any) -> str:
-        return f"${latex_formula(expr)}$"
+        text = latex_formula(expr)
+        return f"${DECIMAL.sub('{,}', text) if self.decimal == ',' else text}$"
 
     def page(self, body: str) -> str:
-        return HEAD + "\\title{" + tex_text(self.doc.title) + "}\\date{}\n\\begin{document}\n" + body + \
+        return HEAD + "\\title{" + self.esc(self.doc.title) + "}\\date{}\n\\begin{document}\n" + body + \
             "\n\\end{document}\n"
 
     def heading(self, level: int, text: str) -> str:
@@ -112,32 +119,47 @@ class LatexRenderer(Renderer):
 
     def figure(self, fig: Figure) -> str:
         caption = self.caption(fig)
-        return tikz(fig, self.math_sym, self.unit(fig.unit) if not self.doc.symbolic else "", caption)
+        return tikz(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "", caption,
+                    self.bar_number)
+
+    def svg_label(self, s: Sym) -> Text:
+        text = sym_text(s.base, self.sub_text(s), s.sup)
+        text.tex = f"${self.math_sym(s)}$"
+        return text
 
 
-def tikz(fig: Figure, label, unit: str, caption: str) -> str:
-    """The figure as a TikZ picture about 9 cm wide, with a scale bar."""
-    x0, y0, x1, y1 = bounds(fig)
-    k = min(9.0 / max(x1 - x0, 1e-300), 7.0 / max(y1 - y0, 1e-300))
+def tikz(fig: Figure, label, unit: str, caption: str, number=lambda x: f"{x:g}") -> str:
+    """The figure as a TikZ picture 12 cm wide, laid out (labels placed) as the SVG is."""
+    lay = layout(fig, label)
+    c = 12.0 / WIDTH
+
+    def cm(u: float, v: float) -> str:
+        return f"({u * c:.3f},{(lay.height - v) * c:.3f})"
 
     def at(p: tuple) -> str:
-        return f"({(p[0] - x0) * k:.3f},{(p[1] - y0) * k:.3f})"
+        return cm(*lay.at(p))
 
-    colours = "".join(rf"\definecolor{{k{n}}}{{HTML}}{{{c[1:]}}}" for n, c in COLOURS.items())
+    colours = "".join(rf"\definecolor{{k{n}}}{{HTML}}{{{col[1:]}}}" for n, col in COLOURS.items())
     out = [colours, r"\begin{center}\begin{tikzpicture}[>=stealth]"]
-    for c, r in fig.circles:
-        out.append(rf"\draw[gray] {at(c)} circle ({r * k:.3f});")
+    for centre, r in fig.circles:
+        out.append(rf"\draw[gray] {at(centre)} circle ({r * lay.k * c:.3f});")
     for p, q in fig.lines:
         out.append(rf"\draw[gray, dashed] {at(p)} -- {at(q)};")
     for p, q in fig.segments:
         out.append(rf"\draw[line width=1.6pt, gray!70!black] {at(p)} -- {at(q)};")
     for a in fig.arrows:
-        node = "" if a.label is None else rf" node[midway, {'right' if a.style == 'result' else 'left'}] {{${label(a.label)}$}}"
         width = "thick" if a.style == "result" else "semithick"
-        out.append(rf"\draw[->, {width}, color=k{a.style}] {at(a.start)} -- {at(a.end)}{node};")
-    for name, p, style in fig.points:
-        out.append(rf"\fill {at(p)} circle (1.5pt) node[above right] {{{tex_text(name)}}};")
-    length = nice(2.0 / k)
-    out.append(rf"\draw[|-|] (0,-0.6) -- ({length * k:.3f},-0.6) node[right] {{{tex_text(f'{length:g}')} {unit}}};")
+        out.append(rf"\draw[->, {width}, color=k{a.style}] {at(a.start)} -- {at(a.end)};")
+    for _, p, _ in fig.points:
+        out.append(rf"\fill {at(p)} circle (1.5pt);")
+    for lb in lay.labels:
+        colour = next((n for n, col in COLOURS.items() if col == lb.colour), "known")
+        if lb.leader is not None:
+            out.append(rf"\draw[very thin, color=k{colour}] {cm(*lb.leader[0])} -- {cm(*lb.leader[1])};")
+        out.append(rf"\node[color=k{colour}, inner sep=0pt] at {cm(*lb.centre)} {{\small {lb.text.tex or tex_text(lb.text.raw)}}};")
+    length = nice(90 / lay.k)
+    y = lay.height - 14
+    out.append(rf"\draw[|-|] {cm(MARGIN, y)} -- {cm(MARGIN + length * lay.k, y)} node[right] "
+               rf"{{{tex_text(number(length))} {unit}}};")
     out.append(r"\end{tikzpicture}\\[2pt]{\small " + caption + r"}\end{center}")
     return "\n".join(out) + "\n"

@@ -3,29 +3,42 @@ each term, as in the slides) and figures as inline SVG images (data URIs)."""
 from __future__ import annotations
 
 import base64
+import re
 from typing import Any
 
-from ..document import Equation, Figure, Sym
-from .base import Renderer
+from ..document import Drawing, Equation, Figure, Name, Sym
+from .base import Renderer, visible
 from .svg import svg
 from .unicode import unicode_formula
+
+MARKUP = re.compile(r"([\\`*_\[\]<>|])")       # what Markdown would read as markup
 
 
 class MarkdownRenderer(Renderer):
     fmt = "md"
 
+    code = False            # inside an equation's code block: nothing is markup there
+
     def esc(self, text: str) -> str:
-        return text
+        text = visible(text)
+        if self.code:
+            return text.replace("`", "ʼ")
+        return MARKUP.sub(r"\\\1", text)
+
+    def name(self, n: Name) -> str:
+        """Bodies in italics, the other names as they are (escaped)."""
+        text = self.esc(n.text)
+        return f"*{text}*" if n.kind in ("body", "param") and not self.code else text
 
     def sym(self, s: Sym) -> str:
-        sub = self.sub_text(s)
+        sub = self.esc(self.sub_text(s)).replace("\\_", "_")
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
 
     def power(self, mantissa: str, exponent: int) -> str:
         return f"{mantissa}·10^{exponent}"
 
     def formula(self, expr: Any) -> str:
-        return unicode_formula(expr)
+        return self.decimals(unicode_formula(expr))
 
     def page(self, body: str) -> str:
         return body.rstrip() + "\n"
@@ -37,6 +50,16 @@ class MarkdownRenderer(Renderer):
         return f"{text}\n"
 
     def equation(self, eq: Equation) -> str:
+        self.code = True
+        try:
+            block = self._block(eq)
+        finally:
+            self.code = False
+        terms = [eq.target] + [t for side in eq.sides for t in side]
+        listed = "\n".join(f"- {self.term_line(t)}" for t in terms)
+        return block + "\n" + listed + "\n"
+
+    def _block(self, eq: Equation) -> str:
         cols = [(self.ann(eq.target.mag), self.sym(eq.target.sym), self.ann(eq.target.dir))]
         for side in eq.sides:
             cols.append(("", "=", ""))
@@ -46,17 +69,22 @@ class MarkdownRenderer(Renderer):
                 cols.append((self.ann(t.mag), self.sym(t.sym), self.ann(t.dir)))
         widths = [max(len(c) for c in col) for col in cols]
         lines = ["  ".join(col[k].center(w) for col, w in zip(cols, widths)).rstrip() for k in range(3)]
-        terms = [eq.target] + [t for side in eq.sides for t in side]
-        listed = "\n".join(f"- {self.term_line(t)}" for t in terms)
-        return "```\n" + "\n".join(lines) + "\n```\n\n" + listed + "\n"
+        return "```\n" + "\n".join(lines) + "\n```\n"
 
     def table(self, header: list[str], rows: list[list[str]]) -> str:
         def line(cells: list[str]) -> str:
-            return "| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |"
+            return "| " + " | ".join(cells) + " |"
         return "\n".join([line(header), line(["---"] * len(header))] + [line(r) for r in rows]) + "\n"
 
     def figure(self, fig: Figure) -> str:
         caption = self.caption(fig)
-        drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "")
+        self.figures = getattr(self, "figures", 0) + 1
+        drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "", f"f{self.figures}",
+                      self.bar_number)
         data = base64.b64encode(drawing.encode("utf-8")).decode("ascii")
+        return f"![{caption}](data:image/svg+xml;base64,{data})\n\n*{caption}*\n"
+
+    def drawing(self, d: Drawing) -> str:
+        caption = self.drawing_caption(d)
+        data = base64.b64encode(d.svg().encode("utf-8")).decode("ascii")
         return f"![{caption}](data:image/svg+xml;base64,{data})\n\n*{caption}*\n"

@@ -1,26 +1,84 @@
-"""Figures as inline SVG: arrows, segments, circles and labelled points, to scale, with a
-scale bar; used by the HTML page and (as data URIs) by Markdown."""
+"""The explanation's own figures (polygons, and LaTeX's mechanism) laid out once: to scale,
+with a scale bar, and every label placed clear of the others and of the drawing.
+
+Labels are placed by the figures' label-placement step (`draw.labels.LabelBoard`: boxes
+measured from matplotlib's text extents, greedy then refined, leaders for labels set far
+from their anchor) on an invisible matplotlib axes the size of the figure, one unit a
+point. The same `Layout` is written as inline SVG (HTML, and Markdown as data URIs) and
+as TikZ (LaTeX).
+"""
 from __future__ import annotations
 
 import math
+import re
+from dataclasses import dataclass, field
 from html import escape
-from typing import Callable
+from typing import Callable, Optional
 
 from ..document import Figure, Sym
 
 COLOURS = {"known": "#222222", "unknown": "#c0392b", "result": "#1f5fa8", "velocity": "#2e8b57",
            "construction": "#999999"}
-WIDTH, MAX_HEIGHT, MARGIN = 460, 340, 36
+WIDTH, MAX_HEIGHT, MARGIN, BAR = 460, 340, 30, 26
+FONT, SMALL = 13.0, 0.7                      # label size (units = points), sub/superscript scale
 
 
-def sym_label(base: str, sub: str, sup: str) -> str:
-    """A symbol as SVG text: bold italic letter, smaller subscript and superscript."""
+@dataclass
+class Text:
+    """A label's markup, and its measured size (units)."""
+
+    markup: str
+    width: float
+    height: float
+    tex: str = ""                  # LaTeX's text of a symbol
+    raw: str = ""                  # a name's plain text
+
+
+@dataclass
+class Placed:
+    text: Text
+    colour: str
+    centre: tuple[float, float]              # figure units, y down
+    box: tuple[float, float, float, float]   # x0, y0, x1, y1, y down
+    leader: Optional[tuple] = None           # ((x, y), (x, y)) from the anchor to the box
+
+
+@dataclass
+class Layout:
+    """A figure in figure units (y down): its scale, size and placed labels."""
+
+    fig: Figure
+    k: float
+    x0: float
+    y1: float
+    height: float
+    labels: list[Placed] = field(default_factory=list)
+
+    def at(self, p: tuple) -> tuple[float, float]:
+        return MARGIN + (p[0] - self.x0) * self.k, MARGIN + (self.y1 - p[1]) * self.k
+
+
+def sym_text(base: str, sub: str, sup: str, tex: str = "") -> Text:
+    """A symbol as SVG text (bold italic letter, smaller subscript and superscript) and
+    its size."""
+    from ...draw.labels import text_extent
+
     out = f'<tspan font-style="italic" font-weight="bold">{escape(base)}</tspan>'
-    if sub:
-        out += f'<tspan baseline-shift="sub" font-size="70%">{escape(sub)}</tspan>'
-    if sup:
-        out += f'<tspan baseline-shift="super" font-size="70%">{escape(sup)}</tspan>'
-    return out
+    w, h = text_extent(base, FONT, "bold", "italic")
+    for part, shift in ((sub, "sub"), (sup, "super")):
+        if part:
+            out += f'<tspan baseline-shift="{shift}" font-size="70%">{escape(part)}</tspan>'
+            w += text_extent(part, FONT * SMALL)[0]
+    return Text(out, w, h * (1.25 if sub or sup else 1.0), tex)
+
+
+def plain_text(text: str) -> Text:
+    from ...draw.labels import text_extent
+    from ...text import shown
+
+    text = shown(text)
+    w, h = text_extent(text, FONT)
+    return Text(escape(text), w, h, raw=text)
 
 
 def nice(x: float) -> float:
@@ -52,25 +110,114 @@ def bounds(fig: Figure) -> tuple[float, float, float, float]:
     return x0 - 0.02 * span, y0 - 0.02 * span, x1 + 0.02 * span, y1 + 0.02 * span
 
 
-def svg(fig: Figure, label: Callable[[Sym], str], unit: str) -> str:
-    """The figure as an <svg> element; `label` gives a symbol's SVG text, `unit` the bar's unit."""
+def layout(fig: Figure, label: Callable[[Sym], Text]) -> Layout:
+    """Scale the figure into WIDTH × at most MAX_HEIGHT, then place its labels: the points'
+    names (the pole and the images first) and the arrows' symbols beside their middles.
+    Laid out once per set of label texts (the languages mostly share one)."""
+    texts = {id(a): label(a.label) for a in fig.arrows if a.label is not None}
+    key = tuple((t.markup, t.tex) for t in texts.values())
+    if key not in fig.layouts:
+        fig.layouts[key] = _layout(fig, texts)
+    return fig.layouts[key]
+
+
+def _layout(fig: Figure, texts: dict) -> Layout:
     x0, y0, x1, y1 = bounds(fig)
     w, h = max(x1 - x0, 1e-300), max(y1 - y0, 1e-300)
     k = min((WIDTH - 2 * MARGIN) / w, (MAX_HEIGHT - 2 * MARGIN) / h)
-    height = h * k + 2 * MARGIN + 24
+    out = Layout(fig, k, x0, y1, h * k + 2 * MARGIN + BAR)
+    items = [(plain_text(name), COLOURS["known"], p, 0 if style == "pole" else 1, None)
+             for name, p, style in fig.points]
+    for a in fig.arrows:
+        if a.label is not None:
+            (ax, ay), (bx, by) = a.start, a.end
+            items.append((texts[id(a)], COLOURS[a.style], ((ax + bx) / 2, (ay + by) / 2), 2,
+                          (-(by - ay), bx - ax)))
+    if items:
+        out.labels = _place(out, items)
+    return out
 
-    def at(p: tuple) -> tuple[float, float]:
-        return MARGIN + (p[0] - x0) * k, MARGIN + (y1 - p[1]) * k
 
+def _place(lay: Layout, items: list) -> list[Placed]:
+    """The labels placed by the figures' LabelBoard on an axes of the figure's size."""
+    import numpy as np
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure as MplFigure
+
+    from ...draw.labels import LabelBoard
+    from .placing import Sized
+
+    fig = lay.fig
+    mpl = MplFigure(figsize=(WIDTH / 72, lay.height / 72), dpi=72)
+    FigureCanvasAgg(mpl)
+    ax = mpl.add_axes((0, 0, 1, 1))
+    ax.set_axis_off()
+    # figure units (y down) as data: x = u, y = height - v
+    ax.set_xlim(0, WIDTH)
+    ax.set_ylim(0, lay.height)
+
+    def data(p: tuple) -> tuple[float, float]:
+        u, v = lay.at(p)
+        return u, lay.height - v
+
+    board = LabelBoard()
+    for i, (text, colour, anchor, priority, prefer) in enumerate(items):
+        board.labels.append(Sized(np.asarray(data(anchor), dtype=float), text.markup, colour, priority, str(i),
+                                  None if prefer is None else np.asarray(prefer, dtype=float),
+                                  width=text.width, height=text.height))
+    for a in fig.arrows:
+        board.avoid(data(a.start), data(a.end), weight=3.0)
+    for p, q in fig.segments:
+        board.avoid(data(p), data(q), weight=1.0)
+    for p, q in fig.lines:
+        board.avoid(data(p), data(q), weight=0.5)
+    for c, r in fig.circles:
+        ring = [data((c[0] + r * math.cos(t), c[1] + r * math.sin(t))) for t in np.linspace(0, 2 * math.pi, 48)]
+        board.avoid(*ring, weight=1.0)
+    for _, p, _ in fig.points:
+        board.avoid(data(p), weight=3.0, radius=3.0)
+    board.avoid((MARGIN, BAR - 8), (MARGIN + 150, BAR - 8), weight=3.0)      # the scale bar
+    placed = board.layout(ax)
+    out = []
+    by_gid = {str(i): item for i, item in enumerate(items)}
+    for p in placed:
+        text, colour, anchor, _, _ = by_gid[p.label.gid]
+        bx0, by0, bx1, by1 = (float(c) for c in p.box)
+        box = (bx0, lay.height - by1, bx1, lay.height - by0)
+        centre = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
+        leader = None
+        if p.leader:
+            start = lay.at(anchor)
+            leader = (start, _edge(start, box))
+        out.append(Placed(text, colour, centre, box, leader))
+    return out
+
+
+def _edge(start: tuple, box: tuple) -> tuple:
+    """Where the segment from `start` to the middle of `box` enters it."""
+    cx, cy = (box[0] + box[2]) / 2, (box[1] + box[3]) / 2
+    dx, dy = cx - start[0], cy - start[1]
+    hw, hh = (box[2] - box[0]) / 2, (box[3] - box[1]) / 2
+    t = min(hw / abs(dx) if abs(dx) > 1e-9 else math.inf, hh / abs(dy) if abs(dy) > 1e-9 else math.inf, 1.0)
+    return cx - t * dx, cy - t * dy
+
+
+def svg(fig: Figure, label: Callable[[Sym], Text], unit: str, prefix: str = "f",
+        number: Callable[[float], str] = lambda x: f"{x:g}") -> str:
+    """The figure as an <svg> element; `label` gives a symbol's text, `unit` the bar's unit,
+    `prefix` keeps its ids apart from other figures' on the page."""
+    lay = layout(fig, label)
+    height = lay.height
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height:.0f}" '
-           f'viewBox="0 0 {WIDTH} {height:.0f}" font-family="DejaVu Sans, Arial, sans-serif" font-size="13">',
+           f'viewBox="0 0 {WIDTH} {height:.0f}" font-family="DejaVu Sans, Arial, sans-serif" font-size="{FONT:g}">',
            "<defs>" + "".join(
-               f'<marker id="h{name}" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" '
+               f'<marker id="{prefix}-{name}" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" '
                f'markerHeight="7" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="{c}"/></marker>'
                for name, c in COLOURS.items()) + "</defs>"]
+    at = lay.at
     for c, r in fig.circles:
         cx, cy = at(c)
-        out.append(f'<circle cx="{cx:.1f}" cy="{cy:.1f}" r="{r * k:.1f}" fill="none" stroke="#777" '
+        out.append(f'<circle cx="{cx:.1f}" cy="{cy:.1f}" r="{r * lay.k:.1f}" fill="none" stroke="#777" '
                    'stroke-width="1.2"/>')
     for p, q in fig.lines:
         (ax, ay), (bx, by) = at(p), at(q)
@@ -85,39 +232,54 @@ def svg(fig: Figure, label: Callable[[Sym], str], unit: str) -> str:
         colour = COLOURS[arrow.style]
         width = 2.2 if arrow.style == "result" else 1.8
         out.append(f'<line x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" y2="{by:.1f}" stroke="{colour}" '
-                   f'stroke-width="{width}" marker-end="url(#h{arrow.style})"/>')
-        if arrow.label is not None:
-            lx, ly = _label_spot(ax, ay, bx, by, arrow.style == "result")
-            out.append(f'<text x="{lx:.1f}" y="{ly:.1f}" fill="{colour}" text-anchor="middle" '
-                       f'dominant-baseline="middle" stroke="white" stroke-width="3" '
-                       f'paint-order="stroke">{label(arrow.label)}</text>')
+                   f'stroke-width="{width}" marker-end="url(#{prefix}-{arrow.style})"/>')
     for name, p, style in fig.points:
         px, py = at(p)
         if style == "ground":
             out.append(f'<path d="M{px:.1f},{py:.1f} l-7,12 h14 z" fill="#ddd" stroke="#444"/>')
         out.append(f'<circle cx="{px:.1f}" cy="{py:.1f}" r="3" fill="#222"/>')
-        out.append(f'<text x="{px + 6:.1f}" y="{py - 6:.1f}" fill="#222">{escape(name)}</text>')
-    out.append(_scale_bar(fig, k, height, unit))
+    for lb in lay.labels:
+        if lb.leader is not None:
+            (ax, ay), (bx, by) = lb.leader
+            out.append(f'<line x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" y2="{by:.1f}" stroke="{lb.colour}" '
+                       'stroke-width="0.6" opacity="0.7"/>')
+        out.append(f'<text x="{lb.centre[0]:.1f}" y="{lb.centre[1]:.1f}" fill="{lb.colour}" text-anchor="middle" '
+                   f'dominant-baseline="central" stroke="white" stroke-width="3" '
+                   f'paint-order="stroke">{lb.text.markup}</text>')
+    out.append(_scale_bar(lay, unit, number))
     out.append("</svg>")
     return "".join(out)
 
 
-def _label_spot(ax: float, ay: float, bx: float, by: float, result: bool) -> tuple[float, float]:
-    """Beside the arrow: terms at the middle on the left, the result at a third on the right."""
-    dx, dy = bx - ax, by - ay
-    size = math.hypot(dx, dy) or 1.0
-    nx, ny = -dy / size, dx / size
-    along, side = (0.35, -1) if result else (0.5, 1)
-    return ax + along * dx - side * 16 * nx, ay + along * dy - side * 16 * ny
-
-
-def _scale_bar(fig: Figure, k: float, height: float, unit: str) -> str:
-    length = nice(90 / k)
-    px = length * k
-    y = height - 14
-    text = f"{length:g} {unit}".strip()
+def _scale_bar(lay: Layout, unit: str, number: Callable[[float], str]) -> str:
+    length = nice(90 / lay.k)
+    px = length * lay.k
+    y = lay.height - 14
+    text = f"{number(length)} {unit}".strip()
     return (f'<line x1="{MARGIN}" y1="{y:.1f}" x2="{MARGIN + px:.1f}" y2="{y:.1f}" stroke="#222" '
             f'stroke-width="2"/><line x1="{MARGIN}" y1="{y - 4:.1f}" x2="{MARGIN}" y2="{y + 4:.1f}" '
             f'stroke="#222"/><line x1="{MARGIN + px:.1f}" y1="{y - 4:.1f}" x2="{MARGIN + px:.1f}" '
             f'y2="{y + 4:.1f}" stroke="#222"/><text x="{MARGIN + px + 8:.1f}" y="{y + 4:.1f}" '
             f'fill="#222">{escape(text)}</text>')
+
+
+def embedded(text: str, prefix: str) -> str:
+    """A standalone SVG (matplotlib's) made fit to sit inline in a page beside others: no
+    XML prologue, doctype or comments, no control character (a model's names make ids),
+    every id and reference to it prefixed and every id unique, its size set by the page's
+    style from its viewBox."""
+    from .base import visible
+
+    text = re.sub(r"<\?xml[^>]*>\s*|<!DOCTYPE[^>]*>\s*", "", text)
+    text = re.sub(r"<!--.*?-->", "", text, flags=re.S)     # matplotlib's comments (the labels' text)
+    text = visible(text)                                   # control characters of names in ids
+    seen: dict[str, int] = {}
+
+    def unique(m) -> str:          # a figure may give several artists one gid (body:crank)
+        name = m.group(1)
+        seen[name] = seen.get(name, 0) + 1
+        return f'id="{prefix}-{name}"' if seen[name] == 1 else f'id="{prefix}-{name}-{seen[name]}"'
+    text = re.sub(r'\bid="([^"]+)"', unique, text)
+    text = re.sub(r'url\(#([^)]+)\)', lambda m: f"url(#{prefix}-{m.group(1)})", text)
+    text = re.sub(r'href="#([^"]+)"', lambda m: f'href="#{prefix}-{m.group(1)}"', text)
+    return re.sub(r'<svg([^>]*?)\swidth="[^"]*"\s+height="[^"]*"', r"<svg\1", text, count=1)
