@@ -35,6 +35,15 @@ def test_svg_text_of_a_solution_with_options():
     assert 'id="acceleration:B@coupler"' not in svg(sol)      # the default asks velocities only
 
 
+def test_svg_text_is_reproducible():
+    """The same figure twice is the same bytes (no date, no random clip-path ids), so that an
+    explanation's HTML from the CLI and from the page's API are byte for byte equal."""
+    sol = solve(four_bar_tree([{"velocity": "B"}]))
+    first, second = svg(sol), svg(sol)
+    assert "clip-path" in first and "<dc:date>" not in first
+    assert first == second
+
+
 def test_bare_svg_is_the_drawing_alone():
     """For a page that embeds the figure and says its title, legend and notes in its own
     language: no title, legend or notes, and a shorter figure."""

@@ -240,9 +240,13 @@ def save(fig: Figure, path: Path | str, dpi: int = 110) -> Path:
 
 
 def svg_text(fig: Figure) -> str:
-    """`fig` as SVG text."""
+    """`fig` as SVG text, the same bytes for the same figure (no date, fixed clip-path ids):
+    an explanation or a page that embeds it is reproducible."""
     import io
 
+    import matplotlib
+
     out = io.StringIO()
-    fig.savefig(out, format="svg", facecolor="white")
+    with matplotlib.rc_context({"svg.hashsalt": "kinematika"}):
+        fig.savefig(out, format="svg", facecolor="white", metadata={"Date": None})
     return out.getvalue()
