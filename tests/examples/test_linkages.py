@@ -10,6 +10,8 @@ import sympy
 from sympy import atan2, cos, pi, sin, sqrt
 from sympy.physics.vector import dynamicsymbols
 
+from tests.conftest import hand_derivations
+
 from .helpers import answer, at_instant, close, cross, solved
 
 th, th2 = dynamicsymbols("theta theta2")
@@ -179,13 +181,7 @@ def test_seed_001_p_pair_coriolis():
 
 
 
-def meet(p, rp, q, rq, side):
-    """circle_meet in mpmath numbers (40 digits), for chains too deep for algebra."""
-    dx, dy = q[0] - p[0], q[1] - p[1]
-    d = mpmath.sqrt(dx ** 2 + dy ** 2)
-    a = (rp ** 2 - rq ** 2 + d ** 2) / (2 * d)
-    h = mpmath.sqrt(rp ** 2 - a ** 2)
-    return [p[0] + a * dx / d - side * h * dy / d, p[1] + a * dy / d + side * h * dx / d]
+meet = hand_derivations().meet     # circle_meet in mpmath numbers, for chains too deep for algebra
 
 
 def by_crank(position, theta, w):

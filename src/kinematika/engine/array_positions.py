@@ -13,7 +13,7 @@ from typing import Any, Optional
 import numpy as np
 
 from ..model.constructions import CircleLine, LineDef, TwoCircles, TwoLines
-from .positions import TOLERANCE, _Builder, positions
+from .positions import TOLERANCE, _Builder, line_meet, positions
 
 
 def array_positions(inst: Any) -> dict[str, tuple]:
@@ -67,8 +67,7 @@ class _ArrayBuilder(_Builder):
         cross = d1[0] * d2[1] - d1[1] * d2[0]
         scale = np.sqrt((d1[0] ** 2 + d1[1] ** 2) * (d2[0] ** 2 + d2[1] ** 2))
         cross = _nan_unless(np.abs(cross) > 1e-12 * scale, cross)
-        t = ((q2[0] - q1[0]) * d2[1] - (q2[1] - q1[1]) * d2[0]) / cross
-        return (q1[0] + t * d1[0], q1[1] + t * d1[1])
+        return line_meet(q1, d1, q2, d2, cross)
 
     def line(self, line: LineDef, field: str) -> tuple[tuple, tuple]:
         q = self.at(line.through, f"{field}.through" if line.direction is not None else f"{field}[0]")

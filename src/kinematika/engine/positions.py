@@ -228,8 +228,7 @@ class _Builder:
         if abs(self.num(cross)) <= 1e-12 * scale or (self.bk.symbolic and self.bk.simplify(cross) == 0):
             raise KinematikaError("geometry", f"the lines {_line_name(c.lines[0])} and "
                                   f"{_line_name(c.lines[1])} are parallel: they do not meet", self.where)
-        t = ((q2[0] - q1[0]) * d2[1] - (q2[1] - q1[1]) * d2[0]) / cross
-        return (q1[0] + t * d1[0], q1[1] + t * d1[1])
+        return line_meet(q1, d1, q2, d2, cross)
 
     def line(self, line: LineDef, field: str) -> tuple[tuple, tuple]:
         """A point of the line and its direction (not normalised)."""
@@ -298,3 +297,10 @@ def _coincide(reader: Any, d: tuple, coords: tuple) -> bool:
     """A difference of points that is round-off of their coordinates (relative, whatever the
     model's unit: no squares to underflow)."""
     return math.hypot(*(reader.num(c) for c in d)) <= 1e-12 * max(abs(reader.num(c)) for c in coords)
+
+
+def line_meet(q1: tuple, d1: tuple, q2: tuple, d2: tuple, cross: Any) -> tuple:
+    """Where the line q1 + t d1 meets the line q2 + s d2, given cross = d1 × d2 (not zero);
+    numbers, formulas or arrays alike."""
+    t = ((q2[0] - q1[0]) * d2[1] - (q2[1] - q1[1]) * d2[0]) / cross
+    return (q1[0] + t * d1[0], q1[1] + t * d1[1])
