@@ -15,6 +15,7 @@ from typing import Any, Sequence
 import numpy as np
 
 from ..errors import KinematikaError
+from .blocks import BlockLU, SparseRows, tarjan
 from .mobility import (SINGULAR_CONDITION, Diagnosis, Scaled, conflict_error, diagnose, scale_system,
                        underdetermined_error)
 
@@ -59,7 +60,7 @@ def solve_numeric(an: Analysis | SparseAnalysis, b: np.ndarray, labels: list[str
     """Least squares with the analysis' SVD (or sparse LU); a residual means conflicting conditions."""
     bs = b * an.scaled.row_scale
     if isinstance(an, SparseAnalysis):
-        xs = an.lu.solve(bs)
+        xs = an.lu.refined(bs) if isinstance(an.lu, BlockLU) else an.lu.solve(bs)
     else:
         y = (an.u.T @ bs) / an.s
         xs = an.vt.T @ y
@@ -88,45 +89,37 @@ class SparseAnalysis:
     blocks: list = field(default_factory=list)
 
 
-def sparse_matrix(rows: list[Any], n: int) -> Any:
-    """The rows' coefficients as a scipy.sparse CSR matrix (numeric rows only)."""
-    from scipy.sparse import csr_matrix
-
+def sparse_matrix(rows: list[Any], n: int) -> SparseRows:
+    """The rows' coefficients as a sparse matrix by rows (numeric rows only)."""
     indptr, cols, vals = [0], [], []
     for row in rows:
         terms = row.lin.terms
         cols += terms.keys()
         vals += terms.values()
         indptr.append(len(cols))
-    return csr_matrix((np.array(vals, dtype=float), np.array(cols, dtype=np.int64), np.array(indptr)),
-                      shape=(len(rows), n))
+    return SparseRows(np.array(indptr), np.array(cols, dtype=np.int64), np.array(vals, dtype=float),
+                      (len(rows), n))
 
 
-def analyse_sparse(a: Any, is_driver: np.ndarray, translation_columns: np.ndarray, length: float,
+def analyse_sparse(a: SparseRows, is_driver: np.ndarray, translation_columns: np.ndarray, length: float,
                    labels: list[str], wheres: list[str], body_of: list[str],
                    restating: Any = None) -> Analysis | SparseAnalysis:
-    """`analyse` for a large sparse system: scaling, sparse LU and a 1-norm condition estimate.
+    """`analyse` for a large sparse system: scaling, a block LU (`blocks`, or scipy's sparse
+    LU when the blocks are large) and a 1-norm condition estimate.
 
     A square system whose LU succeeds with condition number below the limit is solved by the
     LU. Any other (redundant rows, rank deficiency, a dead point) goes to the dense analysis,
     which gives the same answers and messages as for a small system.
     """
-    from scipy.sparse import diags
-    from scipy.sparse.linalg import splu
-
     m, n = a.shape
     col = np.where(translation_columns, length, 1.0)
-    scaled = a @ diags(col)
-    norms = abs(scaled).max(axis=1).toarray().ravel()
+    norms = a.scaled(np.ones(m), col).row_max()
     row = np.where(norms > 0, 1.0 / np.where(norms > 0, norms, 1.0), 1.0)
-    scaled = (diags(row) @ scaled).tocsc()
+    scaled = a.scaled(row, col)
     if m == n:
-        try:
-            lu = splu(scaled)
-        except RuntimeError:
-            lu = None
+        lu = BlockLU.factor(scaled) or _scipy_lu(scaled)
         if lu is not None:
-            cond = float(abs(scaled).sum(axis=0).max()) * inverse_norm(lu, n)
+            cond = float(scaled.column_sums().max()) * inverse_norm(lu, n)
             if np.isfinite(cond) and cond <= SINGULAR_CONDITION:
                 given = int(is_driver.sum())
                 return SparseAnalysis(Scaled(scaled, row, col), lu, Diagnosis(n, given, given, cond),
@@ -137,6 +130,16 @@ def analyse_sparse(a: Any, is_driver: np.ndarray, translation_columns: np.ndarra
                               "missing or dependent", "drivers")
     return analyse(a.toarray(), is_driver, translation_columns, length, labels, wheres, body_of,
                    restating=restating)
+
+
+def _scipy_lu(a: SparseRows) -> Any:
+    """scipy's sparse LU of a square matrix, or None when it is singular."""
+    from scipy.sparse.linalg import splu
+
+    try:
+        return splu(a.to_scipy().tocsc())
+    except RuntimeError:
+        return None
 
 
 def inverse_norm(lu: Any, n: int, steps: int = 5) -> float:
@@ -250,7 +253,7 @@ def _blocks(a_rows: np.ndarray, rows: list[int]) -> list[tuple[list[int], list[i
     # row i is matched to column match[i]; unknown match[i] depends on the others of row i
     row_of_col = {c: i for i, c in enumerate(match)}
     deps = {c: [int(k) for k in np.flatnonzero(pattern[row_of_col[c]]) if k != c] for c in range(n)}
-    order = _tarjan(n, deps)
+    order = tarjan(n, deps)
     return [([rows[row_of_col[c]] for c in comp], comp) for comp in order]
 
 
@@ -278,49 +281,3 @@ def _matching(pattern: np.ndarray) -> list[int]:
     for c, i in col_owner.items():
         match[i] = int(c)
     return match
-
-
-def _tarjan(n: int, deps: dict[int, list[int]]) -> list[list[int]]:
-    """Strongly connected components, each after the components it depends on."""
-    index: dict[int, int] = {}
-    low: dict[int, int] = {}
-    stack: list[int] = []
-    on_stack: set[int] = set()
-    out: list[list[int]] = []
-    counter = 0
-    for root in range(n):
-        if root in index:
-            continue
-        work = [(root, 0)]
-        while work:
-            v, i = work.pop()
-            if i == 0:
-                index[v] = low[v] = counter
-                counter += 1
-                stack.append(v)
-                on_stack.add(v)
-            recurse = False
-            for k in range(i, len(deps[v])):
-                w = deps[v][k]
-                if w not in index:
-                    work.append((v, k + 1))
-                    work.append((w, 0))
-                    recurse = True
-                    break
-                if w in on_stack:
-                    low[v] = min(low[v], index[w])
-            if recurse:
-                continue
-            if low[v] == index[v]:
-                comp = []
-                while True:
-                    w = stack.pop()
-                    on_stack.discard(w)
-                    comp.append(w)
-                    if w == v:
-                        break
-                out.append(sorted(comp))
-            if work:
-                parent = work[-1][0]
-                low[parent] = min(low[parent], low[v])
-    return out

@@ -98,7 +98,7 @@ class InstantSolver:
         """The driver rows that restate what a joint between the same two bodies fixes in
         every configuration (ω_x = 0 of a body turning about y): accepted, but not counted
         as conditions when the drivers are too few (`mobility`, not a dead point)."""
-        a = self.a_num
+        a = self.a_num.toarray() if hasattr(self.a_num, "toarray") else self.a_num
         out = np.zeros(len(self.pairs), dtype=bool)
         for i, pair in enumerate(self.pairs):
             if not self.is_driver[i] or pair is None:
@@ -106,8 +106,7 @@ class InstantSolver:
             local = [k for k, p in enumerate(self.pairs) if p == pair and not self.is_driver[k]]
             if not local:
                 continue
-            joints = a[local].toarray() if hasattr(a, "toarray") else a[local]
-            row = a[i].toarray().ravel() if hasattr(a, "toarray") else a[i]
+            joints, row = a[local], a[i]
             coef, *_ = np.linalg.lstsq(joints.T, row, rcond=None)
             out[i] = np.linalg.norm(joints.T @ coef - row) <= 1e-9 * np.linalg.norm(row)
         return out

@@ -1,0 +1,278 @@
+"""Large sparse systems solved block by block, without scipy.
+
+A mechanism's velocity matrix in block lower-triangular order (rows matched to unknowns,
+then the strongly connected components of what each unknown depends on: the
+Dulmage–Mendelsohn fine blocks) falls apart into small square blocks, a chain's loops or
+a machine's Assur groups, solved one after the other. Consecutive blocks are merged up to
+`MERGED` unknowns and every merged block is inverted densely in one stacked numpy call, so
+a solve is a short Python loop of small products. When a block is large, the matching
+takes too long or a block is singular, `BlockLU.factor` returns None and the caller falls
+back on scipy's sparse LU, whose import alone costs more CPU than a 1 000-body instant.
+"""
+from __future__ import annotations
+
+from typing import Any, Optional, Sequence
+
+import numpy as np
+
+BLOCK_MAX = 64      # largest fine block solved as a dense matrix
+MERGED = 48         # consecutive blocks merged up to this many unknowns
+MATCH_WORK = 50     # matching steps allowed per nonzero before giving up (scipy decides)
+
+
+class SparseRows:
+    """A sparse matrix by rows (CSR arrays) with what the solves need: products, scaling,
+    column sums, a dense or scipy copy for the diagnosis of a failure."""
+
+    def __init__(self, indptr: np.ndarray, cols: np.ndarray, vals: np.ndarray, shape: tuple[int, int]):
+        self.indptr, self.cols, self.vals, self.shape = indptr, cols, vals, shape
+        self.row_index = np.repeat(np.arange(shape[0]), np.diff(indptr))
+
+    def __matmul__(self, x: np.ndarray) -> np.ndarray:
+        return np.bincount(self.row_index, weights=self.vals * x[self.cols], minlength=self.shape[0])
+
+    def scaled(self, row: np.ndarray, col: np.ndarray) -> "SparseRows":
+        """diag(row) · A · diag(col)."""
+        return SparseRows(self.indptr, self.cols, self.vals * row[self.row_index] * col[self.cols],
+                          self.shape)
+
+    def row_max(self) -> np.ndarray:
+        """The largest |a_ij| of every row (0 for an empty row)."""
+        out = np.zeros(self.shape[0])
+        np.maximum.at(out, self.row_index, np.abs(self.vals))
+        return out
+
+    def column_sums(self) -> np.ndarray:
+        """Σ_i |a_ij| of every column (‖A‖₁ is their maximum)."""
+        return np.bincount(self.cols, weights=np.abs(self.vals), minlength=self.shape[1])
+
+    def toarray(self) -> np.ndarray:
+        out = np.zeros(self.shape)
+        np.add.at(out, (self.row_index, self.cols), self.vals)
+        return out
+
+    def to_scipy(self) -> Any:
+        from scipy.sparse import csr_matrix
+
+        return csr_matrix((self.vals, self.cols, self.indptr), shape=self.shape)
+
+
+class BlockLU:
+    """A square matrix as merged diagonal blocks (inverted) and the entries below them.
+
+    Rows and columns are renumbered in block order (`row_order`, `col_order`); block k holds
+    positions start[k]:start[k+1] of both. `solve(b)` solves A x = b, `solve(c, trans="T")`
+    Aᵀ y = c, as scipy's SuperLU does (so `linsolve.inverse_norm` takes either)."""
+
+    def __init__(self, matrix, row_order, col_order, start, inverses, below, left) -> None:
+        self.matrix = matrix
+        self.row_order, self.col_order, self.start = row_order, col_order, start
+        self.inverses = inverses          # (K, S, S), padded with the identity
+        self.below = below                # per block: (local row, column position, value) left of it
+        self.left = left                  # per block: (local column, row position, value) below it
+        self.n = len(col_order)
+
+    @classmethod
+    def factor(cls, a: SparseRows) -> Optional["BlockLU"]:
+        """The block form of a square matrix, or None (scipy's LU must decide)."""
+        m, n = a.shape
+        if m != n or n == 0:
+            return None
+        nonzero = a.vals != 0
+        cols_all = a.cols.tolist()
+        ptr = a.indptr.tolist()
+        if nonzero.all():
+            rows = [cols_all[ptr[i]:ptr[i + 1]] for i in range(m)]
+        else:
+            keep = nonzero.tolist()
+            rows = [[c for c, k in zip(cols_all[ptr[i]:ptr[i + 1]], keep[ptr[i]:ptr[i + 1]]) if k]
+                    for i in range(m)]
+        col_row = _match(rows, n, MATCH_WORK * max(len(cols_all), 1))
+        if col_row is None:
+            return None
+        deps = [[d for d in rows[col_row[c]] if d != c] for c in range(n)]
+        blocks = _merged(tarjan(n, deps))
+        if blocks is None:
+            return None
+        col_order = np.array([c for block in blocks for c in block], dtype=np.int64)
+        row_order = np.array(col_row, dtype=np.int64)[col_order]
+        sizes = np.array([len(b) for b in blocks], dtype=np.int64)
+        start = np.r_[0, np.cumsum(sizes)]
+        block_of = np.repeat(np.arange(len(blocks)), sizes)
+        row_pos, col_pos = np.empty(n, np.int64), np.empty(n, np.int64)
+        row_pos[row_order], col_pos[col_order] = np.arange(n), np.arange(n)
+        r = row_pos[a.row_index[nonzero]]
+        c = col_pos[a.cols[nonzero]]
+        v = a.vals[nonzero]
+        rb, cb = block_of[r], block_of[c]
+        width = int(sizes.max())
+        dense = np.zeros((len(blocks), width, width))
+        pad = np.arange(width)[None, :] >= sizes[:, None]
+        dense[:, np.arange(width), np.arange(width)] = pad
+        diagonal = rb == cb
+        dense[rb[diagonal], r[diagonal] - start[rb[diagonal]], c[diagonal] - start[cb[diagonal]]] = v[diagonal]
+        try:
+            inverses = np.linalg.inv(dense)
+        except np.linalg.LinAlgError:
+            return None
+        if not np.isfinite(inverses).all():
+            return None
+        low = cb < rb                    # entries left of the diagonal blocks (none are right of them)
+        below = _grouped(rb[low], r[low] - start[rb[low]], c[low], v[low], len(blocks))
+        left = _grouped(cb[low], c[low] - start[cb[low]], r[low], v[low], len(blocks))
+        return cls(a, row_order, col_order, start, inverses, below, left)
+
+    def refined(self, b: np.ndarray) -> np.ndarray:
+        """A x = b with one step of iterative refinement: solving with the blocks' explicit
+        inverses loses digits as a block's condition grows; the residual's solve wins them back."""
+        x = self.solve(b)
+        return x + self.solve(b - self.matrix @ x)
+
+    def solve(self, b: np.ndarray, trans: str = "N") -> np.ndarray:
+        start, inverses = self.start, self.inverses
+        k_all = len(start) - 1
+        x = np.empty(self.n)
+        if trans == "N":
+            rhs = b[self.row_order]
+            for k in range(k_all):
+                s0, s1 = start[k], start[k + 1]
+                r = rhs[s0:s1]
+                local, at, value = self.below[k]
+                if len(local):
+                    r = r - np.bincount(local, weights=value * x[at], minlength=s1 - s0)
+                x[s0:s1] = inverses[k, :s1 - s0, :s1 - s0] @ r
+            out = np.empty(self.n)
+            out[self.col_order] = x
+            return out
+        rhs = b[self.col_order]
+        for k in range(k_all - 1, -1, -1):
+            s0, s1 = start[k], start[k + 1]
+            r = rhs[s0:s1]
+            local, at, value = self.left[k]
+            if len(local):
+                r = r - np.bincount(local, weights=value * x[at], minlength=s1 - s0)
+            x[s0:s1] = inverses[k, :s1 - s0, :s1 - s0].T @ r
+        out = np.empty(self.n)
+        out[self.row_order] = x
+        return out
+
+
+def _grouped(block: np.ndarray, local: np.ndarray, at: np.ndarray, value: np.ndarray,
+             count: int) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """Entries split by block: (local index, position in the other direction, value) each."""
+    order = np.argsort(block, kind="stable")
+    bounds = np.searchsorted(block[order], np.arange(count + 1)).tolist()
+    local, at, value = local[order], at[order], value[order]
+    return [(local[bounds[k]:bounds[k + 1]], at[bounds[k]:bounds[k + 1]], value[bounds[k]:bounds[k + 1]])
+            for k in range(count)]
+
+
+def _merged(components: list[list[int]]) -> Optional[list[list[int]]]:
+    """Consecutive components joined up to `MERGED` unknowns (None if one is too large)."""
+    out: list[list[int]] = []
+    for comp in components:
+        if len(comp) > BLOCK_MAX:
+            return None
+        if out and len(out[-1]) + len(comp) <= MERGED:
+            out[-1] += comp
+        else:
+            out.append(list(comp))
+    return out
+
+
+def _match(rows: list[list[int]], n: int, budget: int) -> Optional[list[int]]:
+    """A perfect matching of rows to columns (the row of each column): a cheap pass, then
+    augmenting paths by depth-first search with lookahead (Duff's MC21); None if there is
+    none or it takes more than `budget` steps."""
+    col_row = [-1] * n
+    row_col = [-1] * n
+    look = [0] * n
+    for i, cs in enumerate(rows):
+        for k, c in enumerate(cs):
+            if col_row[c] < 0:
+                col_row[c], row_col[i], look[i] = i, c, k + 1
+                break
+    work = 0
+    for root in range(n):
+        if row_col[root] >= 0:
+            continue
+        stack, pos, via, seen = [root], [0], [], set()
+        found = -1
+        while stack:
+            r = stack[-1]
+            cs = rows[r]
+            k = look[r]
+            while k < len(cs) and col_row[cs[k]] >= 0:
+                k += 1
+            look[r] = k
+            if k < len(cs):
+                found = cs[k]
+                break
+            k = pos[-1]
+            while k < len(cs) and cs[k] in seen:
+                k += 1
+            work += 1
+            if work > budget:
+                return None
+            if k == len(cs):
+                stack.pop(), pos.pop()
+                if via:
+                    via.pop()
+                continue
+            c = cs[k]
+            pos[-1] = k + 1
+            seen.add(c)
+            via.append(c)
+            stack.append(col_row[c])
+            pos.append(0)
+        if found < 0:
+            return None
+        for r, c in zip(stack, via + [found]):
+            col_row[c], row_col[r] = r, c
+    return col_row
+
+
+def tarjan(n: int, deps: Sequence[Sequence[int]]) -> list[list[int]]:
+    """Strongly connected components, each after the components it depends on."""
+    index: dict[int, int] = {}
+    low: dict[int, int] = {}
+    stack: list[int] = []
+    on_stack: set[int] = set()
+    out: list[list[int]] = []
+    counter = 0
+    for root in range(n):
+        if root in index:
+            continue
+        work = [(root, 0)]
+        while work:
+            v, i = work.pop()
+            if i == 0:
+                index[v] = low[v] = counter
+                counter += 1
+                stack.append(v)
+                on_stack.add(v)
+            recurse = False
+            for k in range(i, len(deps[v])):
+                w = deps[v][k]
+                if w not in index:
+                    work.append((v, k + 1))
+                    work.append((w, 0))
+                    recurse = True
+                    break
+                if w in on_stack:
+                    low[v] = min(low[v], index[w])
+            if recurse:
+                continue
+            if low[v] == index[v]:
+                comp = []
+                while True:
+                    w = stack.pop()
+                    on_stack.discard(w)
+                    comp.append(w)
+                    if w == v:
+                        break
+                out.append(sorted(comp))
+            if work:
+                parent = work[-1][0]
+                low[parent] = min(low[parent], low[v])
+    return out
