@@ -69,6 +69,9 @@ def page(browser, server):
     pg.set_default_timeout(8000)
     errors: list[str] = []
     pg.on("pageerror", lambda e: errors.append(str(e)))
+    pg.on("console", lambda m: errors.append(m.text) if m.type == "error" and "attribute" in m.text
+          else None)                                   # an SVG attribute set to NaN, say
+    pg.on("dialog", lambda d: (errors.append(f"dialog: {d.message}"), d.dismiss()))
     pg.goto(server.url)
     ready(pg)
     yield pg
@@ -124,6 +127,19 @@ def test_loads_the_linkage_with_its_answers(page):
     assert cell(page, "answers.0") == cli_json["answers"][0]["value"]
     assert figure.locator("[data-mark]").count() == 6            # every instant centre
     assert figure.locator("[data-kennedy]").count() > 0
+    # I13 is far above, labelled with its place without round-off: on the crank's line
+    # x = 0 (O2A is vertical) and on the rocker's line O4B. B by hand: |AB| = 4 from
+    # A = (0, 1), |O4B| = 3 from O4 = (4, 0), the upper of the two points.
+    ax, ay, ox, b, c = 0.0, 1.0, 4.0, 4.0, 3.0
+    d = math.hypot(ox - ax, ay)
+    along = (b * b - c * c + d * d) / (2 * d)
+    h = math.sqrt(b * b - along * along)
+    ux, uy = (ox - ax) / d, (0 - ay) / d
+    bx, by = max(((ax + along * ux - s * h * uy, ay + along * uy + s * h * ux) for s in (1, -1)),
+                 key=lambda p: p[1])
+    i13 = ox / (ox - bx) * by                      # O4 + t (B - O4) where x = 0
+    label = figure.locator("[data-mark='centre:ground-coupler'] text")
+    assert label.text_content() == f"I13 far off at (0, {i13:.4g})"
 
 
 def test_the_slider_drives_figure_and_table_through_a_full_turn(page, capsys):
@@ -328,6 +344,8 @@ def test_every_kind_of_model_is_shown(page, name):
     cli_json = json.loads(CliRunner().invoke(cli, ["solve", str(EXAMPLES / name), "--json"]).stdout)
     assert page.get_by_test_id("dof").inner_text() == f"DOF {cli_json['dof']}"
     assert cell(page, "answers.0") == cli_json["answers"][0]["value"]
+    answers = page.get_by_test_id("answers")        # long answers (a decomposition) wrap
+    assert answers.evaluate("a => a.scrollWidth <= a.clientWidth")
     figure = page.get_by_test_id("figure")
     assert figure.locator("[data-handle]").count() == len({p for b in cli_json["points"] for p in [b.split("@")[0]]})
     sweep = CliRunner().invoke(cli, ["sweep", str(EXAMPLES / name), "--json", "--skip-bad"])
@@ -338,6 +356,45 @@ def test_every_kind_of_model_is_shown(page, name):
     rows = json.loads(sweep.stdout)
     last = len(rows["coordinate"]) - 1
     assert slider.get_attribute("max") == str(last)
+    # the plot opens on quantities that change over the motion (a piston's speed, not its angle)
+    shown = page.locator("[data-testid=plot-pick] button[aria-pressed=true]").evaluate_all(
+        "bs => bs.map(b => b.dataset.quantity)")
+    key, what = shown[0].rsplit(".", 1)
+    series = rows["bodies"][key][what] if key in rows["bodies"] else \
+        rows["points"][key]["velocity" if what == "speed" else "acceleration"]
+    assert len({json.dumps(x) for x in series if x is not None}) > 1, shown
     set_row(page, last)
     body = next(b for b in rows["bodies"] if b != "ground")
     assert cell(page, f"bodies.{body}.omega") == rows["bodies"][body]["omega"][last]
+
+
+def test_names_are_shown_as_text_never_as_markup(page):
+    """Markup, control characters and bidirectional overrides in names: shown escaped, as
+    the command line shows them; nothing is interpreted."""
+    text = FOUR_BAR.read_text().replace("name: Four-bar linkage",
+                                        'name: "<img src=x onerror=alert(1)>\\x1b[31m"')
+    text = text.replace("crank", '"<b>cr\\u202eank</b>"')
+    editor = page.get_by_test_id("model-editor")
+    editor.fill(text)
+    page.wait_for_function("() => window.kinematika.state.solution && "
+                           "window.kinematika.state.solution.name.startsWith('<img')")
+    ready(page)
+    assert page.get_by_test_id("error").is_hidden()
+    assert page.locator("#model-name").inner_text() == "<img src=x onerror=alert(1)>\\x1b[31m"
+    assert page.locator("body img, #answers b b, #figure b").count() == 0
+    body = r"<b>cr\u202eank</b>"
+    assert body in page.get_by_test_id("answers").inner_text()
+    assert f"2 {body}" in page.locator("#notes").inner_text()
+    assert any(body in c for c in page.locator("[data-testid=plot-pick] button").all_inner_texts())
+
+
+def test_a_phone_sees_the_whole_page_width(browser, server):
+    context = browser.new_context(viewport={"width": 390, "height": 844}, bypass_csp=True)
+    pg = context.new_page()
+    pg.goto(server.url)
+    ready(pg)
+    assert pg.evaluate("document.documentElement.scrollWidth") <= 390
+    for part in ("copy-link", "example", "assembly", "figure", "input-slider", "model-editor"):
+        box = pg.get_by_test_id(part).bounding_box()
+        assert box["x"] >= 0 and box["x"] + box["width"] <= 390, part
+    context.close()

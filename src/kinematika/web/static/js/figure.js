@@ -3,7 +3,7 @@
 // points, which goes to its swept position (as `kinematika animate` does). Results that only
 // the scene holds (instant centres, Kennedy lines, curvature circles, relative vectors) are
 // shown at the position the scene was solved at.
-import { el, runsText, num } from "./svg.js";
+import { el, runsText, num, shown } from "./svg.js";
 
 const REACH = 0.6;      // drawing sizes around the mechanism within which results are framed (farther: at the edge)
 const MARGIN = 0.1;     // drawing sizes of margin around the framed content
@@ -74,7 +74,7 @@ export class Figure {
     this.overlayRow = this.sceneRow;
     this.paintOverlay();
     this.paintLegend();
-    this.notes.textContent = (s.notes || []).join(" · ");
+    this.notes.textContent = (s.notes || []).map((n) => shown(n, 2000)).join(" · ");
     this.show(this.row);
   }
 
@@ -335,9 +335,9 @@ export class Figure {
         el("circle", { cx: xy[0], cy: -xy[1], r: 3.2 * this.px, fill: this.scene.style.ink, "data-point": p }, g);
         const label = el("text", { "font-size": 12 * this.px, "font-weight": "bold", fill: this.scene.style.point_label,
                                    class: "point-label" }, this.g.labels);
-        label.textContent = p;
+        label.textContent = shown(p);
         const handle = el("circle", { r: 9 * this.px, class: "draggable", "data-handle": p }, this.g.handles);
-        el("title", {}, handle).textContent = `${p}: drag to move it`;
+        el("title", {}, handle).textContent = `${shown(p)}: drag to move it`;
         this.draggable(handle, p);
         this.pointLabels.push({ label, handle, name: p, body: name, frame: b.frame, xy });
       }
@@ -443,7 +443,8 @@ export class Figure {
         el("polygon", { points: poly([add(p, mul(d, r)), add(p, add(mul(d, -r / 2), mul(n, r * 0.8))),
                                       add(p, add(mul(d, -r / 2), mul(n, -r * 0.8)))]), fill: colour }, mg);
       }
-      const runs = inside ? m.label : [...m.label, { t: ` far off at (${num(m.point[0])}, ${num(m.point[1])})` }];
+      const scale = Math.max(this.size, Math.hypot(...m.point));       // round-off as 0
+      const runs = inside ? m.label : [...m.label, { t: ` far off at (${num(m.point[0], scale)}, ${num(m.point[1], scale)})` }];
       const t = runsText(mg, runs, { "font-size": 12 * this.px, fill: colour });
       const inward = unit(sub(this.centre(), p));
       if (inside) placeText(t, p, [7 * this.px, -7 * this.px], [1, -1]);
@@ -472,13 +473,13 @@ export class Figure {
   /** Show or hide the layers (as switched, and the scene-only results away from their row). */
   applyLayers() {
     const showOverlay = this.row === this.overlayRow;
-    shown(this.g.traces, this.layers.traces);
+    visible(this.g.traces, this.layers.traces);
     if (this.overlayParts) {
-      shown(this.overlayParts.centres, this.layers.centres && showOverlay);
-      shown(this.overlayParts.curvature, this.layers.curvature && showOverlay);
-      for (const a of this.overlayArrows) shown(a.g, this.layers[a.v.kind] && showOverlay);
+      visible(this.overlayParts.centres, this.layers.centres && showOverlay);
+      visible(this.overlayParts.curvature, this.layers.curvature && showOverlay);
+      for (const a of this.overlayArrows) visible(a.g, this.layers[a.v.kind] && showOverlay);
     }
-    for (const a of this.arrows) shown(a.g, this.layers[a.v.kind] && !!a.swept);
+    for (const a of this.arrows) visible(a.g, this.layers[a.v.kind] && !!a.swept);
   }
 
   paintLegend() {
@@ -509,7 +510,7 @@ export class Figure {
         const p0 = this.scene.bodies[name].points[anchor];
         const pk = sw.points[`${anchor}@${name}`].position[k];
         const a0 = sw.bodies[name].angle[this.sceneRow], ak = sw.bodies[name].angle[k];
-        shown(g, pk && ak !== null && a0 !== null);
+        visible(g, pk && ak !== null && a0 !== null);
         if (!pk || ak === null || a0 === null) continue;
         g.setAttribute("transform", `translate(${pk[0]} ${-pk[1]}) rotate(${-(ak - a0)}) translate(${-p0[0]} ${p0[1]})`);
       }
@@ -586,7 +587,7 @@ const poly = (pts) => pts.map((p) => `${p[0]},${-p[1]}`).join(" ");
 const seg = (p, q) => ({ x1: p[0], y1: -p[1], x2: q[0], y2: -q[1] });
 
 /** Display a group or not (`display`, which its children cannot override). */
-function shown(node, on) {
+function visible(node, on) {
   node.style.display = on ? "" : "none";
 }
 

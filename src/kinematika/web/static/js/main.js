@@ -7,7 +7,7 @@ import { Figure } from "./figure.js";
 import { Answers } from "./table.js";
 import { Plot } from "./plot.js";
 import { fragment, fromFragment } from "./link.js";
-import { num } from "./svg.js";
+import { num, shown } from "./svg.js";
 
 const $ = (id) => document.getElementById(id);
 const SETTLE_MS = 250;          // a slider at rest this long is solved exactly there
@@ -54,8 +54,10 @@ async function analyse() {
   state.input = state.scene && state.scene.input;
   state.sweepError = swept.status === "rejected" ? swept.reason.message : null;
   state.explained = null;
-  $("model-name").textContent = state.solution.name || "Model";
-  document.title = `${state.solution.name || "Model"} — kinematika`;
+  const name = shown(state.solution.name || "Model", 120);
+  $("model-name").textContent = name;
+  $("model-name").title = name;
+  document.title = `${name} — kinematika`;
   const dof = $("dof");
   dof.textContent = `DOF ${state.solution.dof}`;
   dof.classList.remove("bad");
@@ -89,7 +91,7 @@ async function listAssemblies(gen) {
   const options = [`<option value="">as drawn</option>`];
   for (const a of found) {
     const how = a.closures.length ? `: ${a.closures.join("; ")}` : "";
-    options.push(`<option value="${a.number}">${a.number}${a.drawn ? " (drawn)" : ""}${escapeHtml(how)}</option>`);
+    options.push(`<option value="${a.number}">${a.number}${a.drawn ? " (drawn)" : ""}${escapeHtml(shown(how, 160))}</option>`);
   }
   pick.innerHTML = options.join("");
   pick.value = state.assembly === null ? "" : String(state.assembly);
@@ -143,7 +145,7 @@ function load(text, fmt, name) {
 function coordinateText(k) {
   if (!state.sweep || !state.input) return "drawn position";
   const x = state.sweep.coordinate[k];
-  return `${state.input.joint} ${x >= 0 ? "+" : "−"}${num(Math.abs(x))}${state.input.unit === "deg" ? "°" : ""}`;
+  return `${shown(state.input.joint, 40)} ${x >= 0 ? "+" : "−"}${num(Math.abs(x))}${state.input.unit === "deg" ? "°" : ""}`;
 }
 
 /** Show sweep row `k` in the figure, the table and the plot (the part that must be fast). */
@@ -197,10 +199,11 @@ let playing = null;
 function play() {
   if (playing) { cancelAnimationFrame(playing.frame); playing = null; $("play").textContent = "▶"; return; }
   $("play").textContent = "❚❚";
-  playing = { last: performance.now(), pos: state.row };
-  const step = (now) => {
+  playing = { last: null, pos: state.row };
+  const step = (now) => {       // `now`: the frame's time, which can precede the click's
     const rows = state.sweep.coordinate.length;
-    playing.pos = (playing.pos + ((now - playing.last) / 1000) * ROWS_PER_SECOND * Number($("speed").value)) % rows;
+    const dt = playing.last === null ? 0 : Math.max(now - playing.last, 0);
+    playing.pos = (playing.pos + (dt / 1000) * ROWS_PER_SECOND * Number($("speed").value)) % rows;
     playing.last = now;
     setRow(Math.floor(playing.pos));
     playing.frame = requestAnimationFrame(step);

@@ -1,7 +1,7 @@
 // Chosen quantities against the input coordinate, from the sweep: one small chart each,
 // a cursor at the slider, dead points (where the sweep stops assembling) and limit
 // positions (where a body's ω changes sign: its angle is at an extreme) marked.
-import { el, num } from "./svg.js";
+import { el, num, shown } from "./svg.js";
 
 const PAD = { left: 58, right: 74, top: 8, bottom: 22 };
 const COLOURS = ["#1f5fa8", "#c62828", "#2e7d32", "#7b1fa2", "#ef6c00", "#00838f"];
@@ -18,6 +18,7 @@ export class Plot {
   /** The quantities of a sweep (JSON), and which to show first. */
   set(sweep, unit, frame) {
     this.sweep = sweep;
+    this.row = 0;                  // the slider's row is set again after (a new sweep may be shorter)
     this.unit = unit;
     this.pick.replaceChildren();
     if (!sweep) { this.svg.replaceChildren(); return; }
@@ -51,14 +52,11 @@ export class Plot {
     this.choices = choices;
     const ids = new Set(choices.map((c) => c.id));
     this.chosen = new Set([...this.chosen].filter((id) => ids.has(id)));
-    if (!this.chosen.size) {
-      const output = moving.at(-1);
-      this.chosen = new Set([`${output}.angle`, `${output}.omega`].filter((id) => ids.has(id)));
-    }
+    if (!this.chosen.size) this.chosen = new Set(firstChoice(sweep, moving, choices).filter((id) => ids.has(id)));
     for (const c of choices) {
       const b = document.createElement("button");
       b.type = "button";
-      b.textContent = c.label;
+      b.textContent = shown(c.label);
       b.dataset.quantity = c.id;
       b.setAttribute("aria-pressed", String(this.chosen.has(c.id)));
       b.addEventListener("click", () => {
@@ -98,7 +96,7 @@ export class Plot {
       const tick = (v, y) => { const t = el("text", { x: PAD.left - 6, y, "text-anchor": "end", "font-size": 10, fill: "#5f6b73", "dominant-baseline": "middle" }, svg); t.textContent = num(v); };
       tick(hi, top + 4); tick(lo, bottom - 4);
       const name = el("text", { x: PAD.left + 6, y: top + 10, "font-size": 11, fill: colour, "font-weight": 600 }, svg);
-      name.textContent = c.label;
+      name.textContent = shown(c.label);
       if (c.body) this.limits(c, X, Y, svg);
       const dot = el("circle", { r: 3.5, fill: colour, stroke: "white", "stroke-width": 1 }, svg);
       const value = el("text", { x: w - PAD.right + 6, "font-size": 11, fill: colour, "dominant-baseline": "middle", "font-family": "monospace" }, svg);
@@ -123,7 +121,7 @@ export class Plot {
       const y = c.values[k - 1] + t * (c.values[k] - c.values[k - 1]);
       const m = el("g", { class: "limit" }, svg);
       el("circle", { cx: X(x), cy: Y(y), r: 4, fill: "white", stroke: "#263238", "stroke-width": 1.4 }, m);
-      el("title", {}, m).textContent = `limit position: ${c.body} at ${num(y)}° (input ${num(x)})`;
+      el("title", {}, m).textContent = `limit position: ${shown(c.body)} at ${num(y)}° (input ${num(x)})`;
     }
   }
 
@@ -153,4 +151,18 @@ export class Plot {
       s.value.textContent = num(v);
     }
   }
+}
+
+/** What a plot shows first: the output (the last moving body)'s angle and ω when it turns;
+ * a slider (a ram, a piston) does not turn, so its point's speed and acceleration. */
+function firstChoice(sweep, moving, choices) {
+  const output = moving.at(-1);
+  const turns = (b) => {
+    const a = sweep.bodies[b].angle.filter((x) => x !== null).map((x) => (Array.isArray(x) ? Math.hypot(...x) : x));
+    return a.length > 1 && Math.max(...a) - Math.min(...a) > 1e-9;
+  };
+  if (!output || turns(output)) return [`${output}.angle`, `${output}.omega`];
+  const carried = new Set(Object.keys(sweep.points).filter((k) => k.endsWith(`@${output}`)).map((k) => k.split("@")[0]));
+  const speed = choices.find((c) => c.id.endsWith(".speed") && carried.has(c.id.split("@")[0]));
+  return speed ? [speed.id, speed.id.replace(/\.speed$/, ".accel")] : [`${output}.angle`, `${output}.omega`];
 }

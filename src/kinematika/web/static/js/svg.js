@@ -11,16 +11,34 @@ export function el(name, attrs = {}, parent = null) {
   return node;
 }
 
+// C0 and C1 controls, DEL, line and paragraph separators, bidirectional controls: what
+// kinematika.text.shown escapes in the command line's tables (lone surrogates never reach
+// the page: the server refuses them).
+const UNSAFE = /[\x00-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069]/g;
+const NAMED = { "\n": "\\n", "\r": "\\r", "\t": "\\t" };
+export const NAME_CHARS = 200;    // kinematika.limits.NAME_CHARS: a name is shown cut there
+
+/** A name (untrusted text) as one printable line, as the command line shows it: control
+ * characters and bidirectional overrides written as escapes (\x1b, \u202e), cut to `limit`
+ * characters with …. Shown through textContent, never as markup. */
+export function shown(text, limit = NAME_CHARS) {
+  let s = String(text).replace(UNSAFE, (c) => NAMED[c] ||
+    (c.charCodeAt(0) < 0x100 ? `\\x${c.charCodeAt(0).toString(16).padStart(2, "0")}`
+                             : `\\u${c.charCodeAt(0).toString(16).padStart(4, "0")}`));
+  if (s.length > limit) s = s.slice(0, limit - 1) + "…";
+  return s;
+}
+
 /** A label from runs ([{t: "v"}, {sub: "B"}, {t: " = 9.25"}]) as SVG tspans. */
 export function runsText(parent, runs, attrs) {
   const text = el("text", attrs, parent);
   for (const run of runs) {
     if (run.sub !== undefined) {
       const s = el("tspan", { "baseline-shift": "sub", "font-size": "75%" }, text);
-      s.textContent = run.sub;
+      s.textContent = shown(run.sub);
     } else {
       const s = el("tspan", {}, text);
-      s.textContent = run.t;
+      s.textContent = shown(run.t);
     }
   }
   return text;

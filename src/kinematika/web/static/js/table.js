@@ -2,8 +2,9 @@
 // Absolute velocities, accelerations, ω and α follow the sweep's rows at once; the other
 // answers (centres, curvature, relative motion) are those of the last solve, greyed while
 // the slider is away from the position that solve was made at.
-import { show } from "./svg.js";
+import { show, shown } from "./svg.js";
 
+const LONG = 22;      // characters: a longer value (a 3D vector, a formula, a decomposition) wraps in its cell
 const LIVE = { velocity: "points", acceleration: "points", omega: "bodies", alpha: "bodies" };
 
 export class Answers {
@@ -29,8 +30,8 @@ export class Answers {
     });
     rows.push(section("Body", "angle (°)", "ω (rad/s)", "α (rad/s²)"));
     for (const [name, b] of Object.entries(solution.bodies)) {
-      rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" data-key="bodies.${esc(name)}.angle"></td>` +
-                `<td class="v" data-key="bodies.${esc(name)}.omega"></td><td class="v" data-key="bodies.${esc(name)}.alpha"></td></tr>`);
+      rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" data-key="bodies.${attr(name)}.angle"></td>` +
+                `<td class="v" data-key="bodies.${attr(name)}.omega"></td><td class="v" data-key="bodies.${attr(name)}.alpha"></td></tr>`);
       const sw = sweep && sweep.bodies[name];
       this.cells.push({ key: `bodies.${name}.angle`, fixed: sw ? sw.angle[0] : 0, source: sw && sw.angle });
       this.cells.push({ key: `bodies.${name}.omega`, fixed: b.omega, source: sw && sw.omega });
@@ -41,14 +42,14 @@ export class Answers {
       const p = solution.points[key];
       const label = names.length > 1 ? `${esc(key.split("@")[0])} <span class="where">(${names.map((n) => esc(n.split("@")[1])).join(", ")})</span>` : esc(key);
       rows.push(`<tr><td class="q">${label}</td>` + ["position", "velocity", "acceleration"].map(
-        (q) => `<td class="v kind-${q}" data-key="points.${esc(key)}.${q}"></td>`).join("") + "</tr>");
+        (q) => `<td class="v kind-${q}" data-key="points.${attr(key)}.${q}"></td>`).join("") + "</tr>");
       for (const q of ["position", "velocity", "acceleration"]) {
         this.cells.push({ key: `points.${key}.${q}`, fixed: p[q], source: sweep && sweep.points[key] && sweep.points[key][q] });
       }
     }
     this.root.innerHTML = `<table>${rows.join("")}</table>`;
-    const byKey = new Map([...this.root.querySelectorAll("td[data-key]")].map((td) => [td.dataset.key, td]));
-    for (const c of this.cells) c.td = byKey.get(c.key);
+    const tds = this.root.querySelectorAll("td[data-key]");       // in the order of the cells
+    this.cells.forEach((c, i) => { c.td = tds[i]; });
     this.solvedRow = 0;
     this.show(0);
   }
@@ -79,7 +80,9 @@ export class Answers {
       const live = c.source && c.source[k] !== undefined;
       const value = live ? c.source[k] : c.fixed;
       const held = !live && (c.fixedRow ?? this.solvedRow) !== k;
-      c.td.textContent = format(value);
+      const text = shown(format(value), Infinity);
+      c.td.textContent = text;
+      c.td.classList.toggle("long", text.length > LONG);
       c.td.dataset.value = JSON.stringify(value);
       c.td.classList.toggle("held", held);
       c.td.title = held ? "at the position last solved (move the slider's end there, or wait: it is solved again)" : "";
@@ -124,6 +127,12 @@ export function format(v) {
   return Object.entries(v).map(([k, x]) => `${k}: ${format(x)}`).join("; ");
 }
 
+/** A name as text for the table's HTML: shown as one printable line, markup escaped. */
 function esc(s) {
+  return attr(shown(s));
+}
+
+/** Text (a name as written, for a data attribute) with markup escaped. */
+function attr(s) {
   return String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" })[c]);
 }
