@@ -38,7 +38,8 @@ def prepare(source: ModelLike, *, fmt: Optional[str] = None,
     joints (`move`, as `--move J=AMOUNT`). Every view (CLI, Python, the page) comes here."""
     from .model.overrides import with_parameters
 
-    model = with_parameters(as_model(source, fmt), {str(k): v for k, v in (set or {}).items()})
+    model = with_parameters(as_model(source, fmt),
+                            {str(k): None if v is None else str(v) for k, v in (set or {}).items()})
     if assembly is not None:
         from .sweep.assemblies import with_assembly
 

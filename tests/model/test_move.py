@@ -2,6 +2,7 @@
 (Freudenstein's equation, the slider-crank's closed form, the limit of a non-Grashof crank)."""
 from __future__ import annotations
 
+import functools
 import json
 import math
 import subprocess
@@ -270,3 +271,36 @@ def test_assemblies_of_groups_that_are_not_dyads_are_found_and_rigid(name, count
 def test_models_without_a_held_input_or_with_symbols_list_the_drawn_assembly(name):
     found = assemblies(kinematika.as_model(EXAMPLES / f"{name}.yaml"))
     assert [(a.number, a.drawn) for a in found] == [(1, True)]
+
+
+@functools.lru_cache(maxsize=None)
+def _four_bar_with_symbolic_crank() -> dict:
+    out = subprocess.run([sys.executable, "-m", "kinematika", "solve", str(EXAMPLES / "four_bar.yaml"),
+                          "--set", "theta2=null", "--json"], capture_output=True, text=True, check=True)
+    return json.loads(out.stdout)
+
+
+@pytest.mark.parametrize("theta", [20.0, 90.0, 200.0, 321.0])
+def test_set_null_makes_the_crank_angle_a_symbol(theta):
+    """`--set theta2=null` turns a numeric example's crank angle into θ2, as `null` in the
+    file would: the coupler's and rocker's ω are formulas that equal Freudenstein and
+    Norton's rates wherever they are evaluated (the example: a=1, b=4, c=3, d=4, w=10)."""
+    import sympy
+
+    js = _four_bar_with_symbolic_crank()
+    assert js["symbolic"] is True
+    values = {tuple(a["ask"].items())[0]: a["value"] for a in js["answers"]}
+    t2 = math.radians(theta)
+    t3, t4 = freudenstein(1, 4, 3, 4, t2)
+    w3, w4, _, _ = norton_rates(1, 4, 3, t2, t3, t4, 10.0, 0.0)
+    at = {sympy.Symbol("theta2"): t2}
+    assert float(sympy.sympify(values[("omega", "coupler")]).subs(at)) == pytest.approx(w3, rel=1e-9)
+    assert float(sympy.sympify(values[("omega", "rocker")]).subs(at)) == pytest.approx(w4, rel=1e-9)
+
+
+def test_set_null_through_the_api_and_a_bad_set_value():
+    js = solution_json(kinematika.solve(prepare((EXAMPLES / "four_bar.yaml").read_text(), set={"theta2": None})))
+    assert js["symbolic"] is True
+    with pytest.raises(KinematikaError) as err:
+        prepare((EXAMPLES / "four_bar.yaml").read_text(), set={"theta2": "nul"})
+    assert "nul" in err.value.message

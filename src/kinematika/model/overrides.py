@@ -3,17 +3,20 @@
 A constructed model is re-posed by its own parameters (`--set theta=40`), and a symbolic
 model is drawn or solved at numbers the user gives: this replaces the named parameters'
 values (numbers or expressions, checked like a model file's) in a copy of the model.
+`null` (or None from JSON) makes a parameter a symbol, as `null` in the file does: a
+numeric model's crank angle becomes θ and the answers formulas in it.
 """
 from __future__ import annotations
 
 import dataclasses
+from typing import Optional
 
 from ..errors import KinematikaError
 from .expressions import ExpressionError, parse
 from .model import Model, Parameter
 
 
-def with_parameters(model: Model, values: dict[str, str]) -> Model:
+def with_parameters(model: Model, values: dict[str, Optional[str]]) -> Model:
     """A copy of `model` with the named parameters set to `values`."""
     if not values:
         return model
@@ -23,6 +26,9 @@ def with_parameters(model: Model, values: dict[str, str]) -> Model:
             known = ", ".join(params) or "none"
             raise KinematikaError("usage", f"unknown parameter {name!r} (parameters: {known})",
                                   "--set")
+        if text is None or str(text).strip() == "null":
+            params[name] = Parameter(name, None, params[name].positive)
+            continue
         try:
             expr = parse(text)
         except ExpressionError as err:
