@@ -307,13 +307,308 @@ def pin_slotted_rocker():
                                      "coriolis": turn(2 * w, v_rel), "total": [0.0, 0.0]}}]
 
 
+# six-bars ----------------------------------------------------------------------------------
+def watt_one():
+    """Loop 1: B from the circles about A (5.5) and O4 (4), left of A→O4; C = A + 3 at 40°
+    from AB, D = O4 + 2.5 at 50° from O4B; loop 2: E from the circles about C (4) and
+    D (3.5), left of C→D; angles of CE and ED and E differentiated at 80°, ω2 = 10, α2 = 5."""
+    o4 = [6, 0]
+
+    def pos(t):
+        a = polar([0, 0], mpmath.mpf("1.5"), t)
+        b = meet(a, mpmath.mpf("5.5"), o4, 4, 1)
+        c = polar(a, 3, angle(a, b) + D(40))
+        d = polar(o4, mpmath.mpf("2.5"), angle(o4, b) + D(50))
+        e = meet(c, 4, d, mpmath.mpf("3.5"), 1)
+        return [angle(c, e), angle(e, d), e[0], e[1]]
+
+    _, (w5, w6, vx, vy), (al5, al6, ax, ay) = motion(pos, math.radians(80), 10, 5)
+    return [w5, w6, al5, al6, [vx, vy], [ax, ay]]
+
+
+def stephenson_slider():
+    """B from the circles about A (4.5) and O4 (3.5), left; P = A + 2.5 at −35° from AB;
+    x_Q = x_P + √(25 − (y_P + 1.5)²) on y = −1.5; the rod's angle; θ = 140°, ω = −8."""
+    def pos(t):
+        a = polar([0, 0], mpmath.mpf("1.5"), t)
+        b = meet(a, mpmath.mpf("4.5"), [5, 0], mpmath.mpf("3.5"), 1)
+        p = polar(a, mpmath.mpf("2.5"), angle(a, b) - D(35))
+        q = [p[0] + mpmath.sqrt(25 - (p[1] + mpmath.mpf("1.5")) ** 2), mpmath.mpf("-1.5")]
+        return [q[0], angle(p, q)]
+
+    _, (vq, w5), (aq, al5) = motion(pos, math.radians(140), -8)
+    return [[vq, 0.0], [aq, 0.0], w5, al5]
+
+
+def _triad_drawn():
+    """The drawn points of the triad case, from its stated angles."""
+    a = polar([0, 0], 1, D(30))
+    b = polar(a, 3, D(20))
+    c, d = polar(b, mpmath.mpf("2.5"), D(-30)), polar(b, 2, D(60))
+    return a, b, c, d, polar(c, mpmath.mpf("2.8"), D(-80)), polar(d, mpmath.mpf("2.2"), D(120))
+
+
+def triad_pose(t, start):
+    """The triad closed at crank angle t by Newton from `start` = (φ1, ψ, φ2, φ3): the angles
+    of AB, of the ternary (its BC direction), of O4C and of O6D. The loops
+    A + 3 e(φ1) + 2.5 e(ψ) = O4 + 2.8 e(φ2) and A + 3 e(φ1) + 2 e(ψ + 90°) = O6 + 2.2 e(φ3)
+    (the ternary's BD is 90° from BC)."""
+    _, _, _, _, o4, o6 = _triad_drawn()
+    a = polar([0, 0], 1, t)
+
+    def loops(f1, psi, f2, f3):
+        b = polar(a, 3, f1)
+        c, d = polar(b, mpmath.mpf("2.5"), psi), polar(b, 2, psi + D(90))
+        cc, dd = polar(o4, mpmath.mpf("2.8"), f2), polar(o6, mpmath.mpf("2.2"), f3)
+        return [c[0] - cc[0], c[1] - cc[1], d[0] - dd[0], d[1] - dd[1]]
+
+    return mpmath.findroot(loops, start, tol=mpmath.mpf(10) ** (-2 * mpmath.mp.dps + 10))
+
+
+def stephenson_triad():
+    """No dyad closes first: the four angles solve the two loop equations together (Newton
+    from the drawn pose, at 40 digits); C = O4 + 2.8 e(φ2); everything differentiated in θ
+    at 30° with ω = 4."""
+    _, _, _, _, o4, _ = _triad_drawn()
+    start = [D(20), D(-30), D(100), D(-60)]
+
+    def pos(t):
+        f1, psi, f2, f3 = triad_pose(t, start)
+        c = polar(o4, mpmath.mpf("2.8"), f2)
+        return [f1, psi, f2, f3, c[0], c[1]]
+
+    _, (w1, wt, w2, w3, vx, vy), (_, alt, _, _, ax, ay) = motion(pos, math.radians(30), 4)
+    return [w1, wt, w2, w3, alt, [vx, vy], [ax, ay]]
+
+
+# gears and rolling --------------------------------------------------------------------------
+def gear_compound_train():
+    """External meshes reverse: ω2 = ω3 = −ω1 r1/r2 = −50, ω4 = −ω3 r3/r4 = 50/3,
+    α4 = α1 (r1/r2)(r3/r4) = 10/9. The pitch point K = (20, 0) stays put (geometric
+    contact at rest); gear 1's point there: v = ω1 k × O1K, a = α1 k × O1K − ω1² O1K;
+    gear 2's: the same with ω2 = −50, α2 = −10/3 about O2 = (80, 0)."""
+    w1, al1 = 150, 10
+    w2, al2 = -w1 * 20 / 60, -al1 * 20 / 60
+    r1, r2 = [20, 0], [-60, 0]
+
+    def point(w, al, r):
+        return {"velocity": turn(w, r), "acceleration": [x - w * w * y for x, y in zip(turn(al, r), r)]}
+
+    return [w2, -w2 * 25 / 75, al1 * (20 / 60) * (25 / 75),
+            {"body_a": point(w1, al1, r1), "body_b": point(w2, al2, r2),
+             "geometric": {"velocity": [0.0, 0.0], "acceleration": [0.0, 0.0]}}]
+
+
+def epicyclic_arm():
+    """Rolling on the fixed sun: the planet turns (1 + 40/20) = 3 times the arm, so with the
+    arm at β: Q = 60 e(β) + 20 e(90° + 3 (β − 30°)); ω_p = 18, α_p = 6; differentiated at
+    β = 30° with ω = 6, α = 2; the planet's centre is its contact with the sun, 40 e(30°)."""
+    b0 = D(30)
+
+    def pos(b):
+        a = polar([0, 0], 60, b)
+        return polar(a, 20, D(90) + 3 * (b - b0))
+
+    (qx, qy), v, acc = motion(pos, math.radians(30), 6, 2)
+    return [18.0, 6.0, v, acc, curvature([qx, qy], v, acc),
+            {"point": [40 * math.cos(math.radians(30)), 40 * math.sin(math.radians(30))]}]
+
+
+def planetary_two_inputs():
+    """Willis: (ω_r − ω_c)/(ω_s − ω_c) = −r_s/r_r = −1/2, so ω_r = 20 − 40 = −20; relative to
+    the carrier the planet turns −(ω_s − ω_c) r_s/r_p = −160, absolutely −140; the planet's
+    centre moves with the carrier: 20 × 45 upwards."""
+    return [-20.0, -140.0, -160.0, [0.0, 900.0]]
+
+
+def rolling_hypocycloid():
+    """Rolling inside the ring: the contact point of the wheel is at rest, so
+    3 ω_arm + 1 ω_w = 0: the wheel turns at −3 times the arm. P = 3 e(β) + e(110° − 3 (β − 20°))
+    differentiated at β = 20° (ω = 2, α = 0.5); ω_w = −6, α_w = −1.5; the centre is the
+    contact, 4 e(20°)."""
+    b0 = D(20)
+
+    def pos(b):
+        return polar(polar([0, 0], 3, b), 1, D(110) - 3 * (b - b0))
+
+    p, v, acc = motion(pos, math.radians(20), 2, 0.5)
+    return [-6.0, -1.5, v, acc, curvature(p, v, acc),
+            {"point": [4 * math.cos(math.radians(20)), 4 * math.sin(math.radians(20))]}]
+
+
+def rolling_on_plank():
+    """No slip at the contact J: v_C + ω r = v_plank, so ω = (1.5 + 0.5)/0.3, α = (0.5 − 0)/0.3;
+    v_T = v_C − ω r, a_T = (a_C − α r, −ω² r); the centre is on the vertical through C where
+    v_C − ω y = 0 (y up from C): r + v_C/ω above J; the plank's point at J moves with the plank,
+    the disc's point at J has the plank's velocity and (a_C + α r, ω² r); the geometric
+    contact stays under C: (v_C, 0) and (a_C, 0)."""
+    r, vp, ap, vc, ac = 0.3, 1.5, 0.5, -0.5, 0.0
+    w, al = (vp - vc) / r, (ap - ac) / r
+    return [w, al, [vc - w * r, 0.0], [ac - al * r, -w * w * r], {"point": [0.0, r + vc / w]},
+            {"body_a": {"velocity": [vp, 0.0], "acceleration": [ap, 0.0]},
+             "body_b": {"velocity": [vc + w * r, 0.0], "acceleration": [ac + al * r, w * w * r]},
+             "geometric": {"velocity": [vc, 0.0], "acceleration": [ac, 0.0]}}]
+
+
+def rolling_wheel_rod():
+    """With the centre at x (moving at 2, 1 m/s²) the wheel has turned −x/r: A = (x, r) +
+    r e(135° − x/r); x_B = x_A + √(0.8² − y_A²) on the floor; ω_w = −2/0.25; the rod's angle
+    and x_B differentiated in x at 0."""
+    r, l = mpmath.mpf("0.25"), mpmath.mpf("0.8")
+
+    def pos(x):
+        a = polar([x, r], r, D(135) - x / r)
+        b = [a[0] + mpmath.sqrt(l * l - a[1] ** 2), 0]
+        return [angle(a, b), b[0]]
+
+    _, (w, vb), (al, ab) = motion(pos, 0.0, 2, 1)
+    return [-8.0, w, al, [vb, 0.0], [ab, 0.0]]
+
+
+# spatial linkages ---------------------------------------------------------------------------
+def v_cross(u, v):
+    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+
+
+def v_dot(u, v):
+    return sum(x * y for x, y in zip(u, v))
+
+
+def spherical_b(t):
+    """B on the unit sphere 75° from A(t) and 45° from D: B = p A + q D + s A × D with p, q
+    from B·A = cos 75°, B·D = cos 45° and s from |B| = 1 (the root with s > 0, which is
+    the drawn one)."""
+    a = [mpmath.sin(D(25)) * mpmath.cos(t), mpmath.sin(D(25)) * mpmath.sin(t), mpmath.cos(D(25))]
+    d = [mpmath.sin(D(70)), 0, mpmath.cos(D(70))]
+    ad = v_dot(a, d)
+    cb, cc = mpmath.cos(D(75)), mpmath.cos(D(45))
+    p, q = (cb - ad * cc) / (1 - ad * ad), (cc - ad * cb) / (1 - ad * ad)
+    n = v_cross(a, d)
+    base_ = [p * x + q * y for x, y in zip(a, d)]
+    s = mpmath.sqrt((1 - v_dot(base_, base_)) / v_dot(n, n))
+    return a, d, [x + s * y for x, y in zip(base_, n)]
+
+
+def spherical_crank_rocker():
+    """B(θ) from the two cones (spherical_b); the rocker's angle ψ about D measured from
+    y toward D × y, so ω4 = ψ' D, α4 = ψ'' D (a fixed axis); the coupler turns about O, so
+    from v_A = ω × A and v_B = ω × B: ω3 = (v_A × v_B)/(v_A · B). θ = 60°, ω = 2."""
+    def pos(t):
+        _, d, b = spherical_b(t)
+        e2 = v_cross(d, [0, 1, 0])
+        return [mpmath.atan2(v_dot(b, e2), b[1]), *b]
+
+    t = math.radians(60)
+    (_, *b), (w4, *vb), (al4, *ab) = motion(pos, t, 2)
+    a, d, _ = spherical_b(mpmath.mpf(t))
+    va = [float(x) for x in v_cross([0, 0, 2], a)]
+    w3 = [x / v_dot(va, b) for x in v_cross(va, vb)]
+    d = [float(x) for x in d]
+    return [[w4 * x for x in d], [al4 * x for x in d], w3, vb, ab]
+
+
+def _rssr_b(t):
+    """B = D + 1.1 (0, cos ψ, sin ψ) at the drawn coupler length from A(t) = (cos t, sin t, 0):
+    with w = D − A, |w|² + 1.1² + 2.2 (w_y cos ψ + w_z sin ψ) = b², so
+    ψ = atan2(w_z, w_y) + acos(K/√(w_y² + w_z²)), K = (b² − |w|² − 1.21)/2.2 (the drawn root)."""
+    dd = [mpmath.mpf("2.5"), mpmath.mpf("0.5"), mpmath.mpf("1.2")]
+    c = mpmath.mpf("1.1")
+    b0 = [dd[0], dd[1] + c * mpmath.cos(D(120)), dd[2] + c * mpmath.sin(D(120))]
+    a0 = [mpmath.cos(D(45)), mpmath.sin(D(45)), 0]
+    length2 = sum((x - y) ** 2 for x, y in zip(b0, a0))
+    a = [mpmath.cos(t), mpmath.sin(t), 0]
+    w = [x - y for x, y in zip(dd, a)]
+    k = (length2 - v_dot(w, w) - c * c) / (2 * c)
+    psi = mpmath.atan2(w[2], w[1]) + mpmath.acos(k / mpmath.sqrt(w[1] ** 2 + w[2] ** 2))
+    return a, psi, [dd[0], dd[1] + c * mpmath.cos(psi), dd[2] + c * mpmath.sin(psi)]
+
+
+def rssr_offset():
+    """ψ(θ) closed form (_rssr_b, which reproduces ψ = 120° at 45°); ω4 = (ψ', 0, 0),
+    α4 = (ψ'', 0, 0) with ω = 3 constant; the coupler without spin about AB:
+    ω3 = AB × (v_B − v_A)/|AB|², so ω3 = 3 g(θ) with g = AB × (B' − A')/|AB|² (' = d/dθ) and
+    α3 = 9 g'(θ)."""
+    def g(t):
+        a, _, b = _rssr_b(t)
+        da = [mpmath.diff(lambda s, i=i: _rssr_b(s)[0][i], t) for i in range(3)]
+        db = [mpmath.diff(lambda s, i=i: _rssr_b(s)[2][i], t) for i in range(3)]
+        ab = [x - y for x, y in zip(b, a)]
+        return [x / v_dot(ab, ab) for x in v_cross(ab, [x - y for x, y in zip(db, da)])]
+
+    def pos(t):
+        _, psi, b = _rssr_b(t)
+        return [psi, *b]
+
+    t = math.radians(45)
+    _, (w4, *vb), (al4, *ab) = motion(pos, t, 3)
+    with mpmath.workdps(40):
+        g0 = g(mpmath.mpf(t))
+        g1 = [mpmath.diff(lambda s, i=i: g(s)[i], mpmath.mpf(t)) for i in range(3)]
+    return [[w4, 0.0, 0.0], [al4, 0.0, 0.0], vb, ab, [float(3 * x) for x in g0], [float(9 * x) for x in g1]]
+
+
+def _hooke(t):
+    """The input's fork arm F = (0, cos t, sin t); the cross's other arm G = F × u/|F × u|
+    (u the output axis); the output's angle φ = atan2(G·q, G·p) about u, p = (−sin β, cos β, 0),
+    q = (0, 0, 1) (p × q = u)."""
+    beta = D(25)
+    u = [mpmath.cos(beta), mpmath.sin(beta), 0]
+    f = [0, mpmath.cos(t), mpmath.sin(t)]
+    g = v_cross(f, u)
+    n = mpmath.sqrt(v_dot(g, g))
+    g = [x / n for x in g]
+    return u, g, mpmath.atan2(g[2], -mpmath.sin(beta) * g[0] + mpmath.cos(beta) * g[1])
+
+
+def hooke_joint_60():
+    """φ(θ) from _hooke: ω_out = φ' u, α_out = φ'' u (ω_in = 10 constant). The cross turns
+    with the input about F and with the output about G: ω_c = ω_in x + λ F = φ' u + μ G;
+    dotting with G (F·G = u·G = 0) gives μ = ω_in G_x, so ω_c = φ' u + ω_in G_x G and
+    α_c = φ'' u + ω_in d/dt(G_x G)."""
+    def pos(t):
+        _, g, phi = _hooke(t)
+        return [phi, *(g[0] * x for x in g)]
+
+    t = math.radians(60)
+    (_, *gg), (w, *dgg), (al, *_) = motion(pos, t, 10)
+    u, g, _ = _hooke(mpmath.mpf(t))
+    u, g = [float(x) for x in u], [float(x) for x in g]
+    return [[w * x for x in u], [al * x for x in u], [w * x + 10 * y for x, y in zip(u, gg)],
+            [al * x + 10 * y for x, y in zip(u, dgg)]]
+
+
+# vehicles -----------------------------------------------------------------------------------
+def tricycle_steering():
+    """The rear wheels keep v_M along the chassis (u); F = M + L e: v_F = u e + ω L e⊥ must be
+    v e(δ): u = v cos δ, ω = v sin δ/L for all t, so α = v cos δ δ'/L (v constant: the
+    driver's acceleration along the wheel is 0); a_M = u' e + u ω e⊥ = (−v sin δ δ', u ω);
+    the centre on the rear axle line at L/tan δ; v_RL = (u − ω s, 0); the front wheel turns
+    at ω + δ'."""
+    v, big_l, s, d, dd = 3, 1.1, 0.45, math.radians(30), 0.4
+    u, w = v * math.cos(d), v * math.sin(d) / big_l
+    return [w, v * math.cos(d) * dd / big_l, {"point": [0.0, big_l / math.tan(d)]}, [u - w * s, 0.0],
+            [-v * math.sin(d) * dd, u * w], w + dd]
+
+
+def forklift_rear_steer():
+    """The front wheels keep v_M = u e; R = M − L e: v_R = u e − ω L e⊥ must lie along e(δ):
+    ω = −u tan δ/L, α = −u δ'/(L cos² δ) (u constant); the centre on the front axle line at
+    u/ω; v_R = (u, −ω L); a_R = a_M + α k × MR − ω² MR with a_M = (0, u ω), MR = (−L, 0)."""
+    u, big_l, d, dd = 2, 1.4, math.radians(-25), -0.3
+    w, al = -u * math.tan(d) / big_l, -u * dd / (big_l * math.cos(d) ** 2)
+    return [w, al, {"point": [0.0, u / w]}, [u, -w * big_l], [w * w * big_l, u * w - al * big_l]]
+
+
 NUMERIC = {f.__name__: f for f in (
     fb_crank_rocker_coupler, fb_crossed_icr, fb_non_grashof, fb_non_grashof_moved, fb_drag_link_moved,
     fb_parallelogram, sc_offset_above, sc_vertical_engine, sc_vertical_engine_moved, isc_oscillating_cylinder,
-    isc_slotted_crank, qr_whitworth_opposite, qr_drag_link, geneva_four_slot, scotch_yoke, pin_slotted_rocker)}
+    isc_slotted_crank, qr_whitworth_opposite, qr_drag_link, geneva_four_slot, scotch_yoke, pin_slotted_rocker,
+    watt_one, stephenson_slider, stephenson_triad, gear_compound_train, epicyclic_arm, planetary_two_inputs,
+    rolling_hypocycloid, rolling_on_plank, rolling_wheel_rod, spherical_crank_rocker, rssr_offset, hooke_joint_60,
+    tricycle_steering, forklift_rear_steer)}
 SYMBOLIC = {f.__name__: f for f in (sc_offset_symbolic_theta, isc_oscillating_cylinder_symbolic,
                                      geneva_symbolic_theta, scotch_yoke_symbolic)}
-ERRORS = {"fb_err_move_past_limit": "assembly"}
+ERRORS = {"fb_err_move_past_limit": "assembly", "fb_err_two_drivers": "mobility"}
 
 
 def expected(name: str) -> dict:
