@@ -136,7 +136,7 @@ def fb_parallelogram():
 
 
 # slider-cranks and their inversions ----------------------------------------------------------
-def sc_offset_above():
+def sc_offset_above(theta_deg: float = 300):
     """x_B = a cos θ + √(b² − (e − a sin θ)²) on y = e = 15; the rod's angle
     φ = atan2(e − a sin θ, x_B − a cos θ); M the midpoint of AB; θ = 300°, ω2 = −40,
     α2 = 100. The rod's centre where the line O2A meets the vertical through B."""
@@ -147,8 +147,8 @@ def sc_offset_above():
         pb = [pa[0] + mpmath.sqrt(b ** 2 - (e - pa[1]) ** 2), e]
         return [pb[0], angle(pa, pb), (pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2]
 
-    (xb, _, _, _), (vb, w3, vmx, vmy), (ab, al3, _, _) = motion(pos, math.radians(300), -40, 100)
-    t = math.radians(300)
+    t = math.radians(theta_deg)
+    (xb, _, _, _), (vb, w3, vmx, vmy), (ab, al3, _, _) = motion(pos, t, -40, 100)
     icr = line_meet([0, 0], [math.cos(t), math.sin(t)], [xb, e], [0, 1])
     return [[vb, 0.0], [ab, 0.0], w3, al3, {"point": icr}, [vmx, vmy]]
 
@@ -379,6 +379,37 @@ def stephenson_triad():
 
     _, (w1, wt, w2, w3, vx, vy), (_, alt, _, _, ax, ay) = motion(pos, math.radians(30), 4)
     return [w1, wt, w2, w3, alt, [vx, vy], [ax, ay]]
+
+
+def triad_assemblies(steps: int = 3600) -> list[tuple[float, float]]:
+    """Every closure of the triad at the drawn crank angle, as (φ1, ψ) in degrees: for each
+    direction φ1 of AB, C = B + 2.5 e(ψ) on the circle of radius 2.8 about O4 gives two ψ
+    (cos(ψ − β) = (|O4B|² + 2.5² − 2.8²)/(5 |O4B|)); a closure is where |D − O6| − 2.2
+    changes sign along φ1 on either branch (refined by the secant method at 30 digits)."""
+    a, _, _, _, o4, o6 = _triad_drawn()
+
+    def branch(f1, s):
+        b = polar(a, 3, f1)
+        dist = mpmath.sqrt((o4[0] - b[0]) ** 2 + (o4[1] - b[1]) ** 2)
+        k = (dist ** 2 + mpmath.mpf("6.25") - mpmath.mpf("7.84")) / (5 * dist)
+        if abs(k) > 1:
+            return None
+        psi = angle(b, o4) + s * mpmath.acos(k)
+        d = polar(b, 2, psi + D(90))
+        return psi, mpmath.sqrt((d[0] - o6[0]) ** 2 + (d[1] - o6[1]) ** 2) - mpmath.mpf("2.2")
+
+    out = []
+    with mpmath.workdps(30):
+        for s in (1, -1):
+            prev = None
+            for i in range(steps + 1):
+                f1 = 2 * mpmath.pi * i / steps
+                here = branch(f1, s)
+                if here is not None and prev is not None and prev[1] * here[1] < 0:
+                    root = mpmath.findroot(lambda x: branch(x, s)[1], (prev[0], f1), solver="secant")
+                    out.append((float(mpmath.degrees(root)) % 360, float(mpmath.degrees(branch(root, s)[0])) % 360))
+                prev = None if here is None else (f1, here[1])
+    return sorted(out)
 
 
 # gears and rolling --------------------------------------------------------------------------

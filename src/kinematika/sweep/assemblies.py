@@ -79,15 +79,18 @@ def _dyad_assemblies(model: Model, sweeper: Any) -> list[Assembly]:
         raise KinematikaError("schema", f"{len(branches)} dyads close in two ways each: listing "
                               f"2^{len(branches)} assemblies is beyond the limit of 2^{MAX_DYADS}")
     out: list[Assembly] = []
+    turns: list[dict[str, float]] = []
     for sides in itertools.product((1.0, -1.0), repeat=len(branches)):
         flips = {i: side * drawn for (i, _, drawn), side in zip(branches, sides)}
         sweeper.closed = sweeper._closed_form(flips)
         result = sweeper.run(0.0, 1, skip_bad=True)
         if not result.ok[0]:
             continue
-        points = _places(model, result)
-        if any(_same(points, a.points, sweeper.inst.scale) for a in out):
+        points, turn = _places(model, result), _turns(result)
+        if any(_same(points, a.points, sweeper.inst.scale) and _same_turns(turn, t)
+               for a, t in zip(out, turns)):
             continue                          # a dyad at its limit closes one way only
+        turns.append(turn)
         drawn = all(f == 1.0 for f in flips.values())
         posed = model if drawn else posed_model(model, result, 0)
         words = [_closure(model, g, side) for (_, g, _), side in zip(branches, sides)]
@@ -103,6 +106,17 @@ def _places(model: Model, result: Any) -> dict[str, tuple]:
 
 def _same(a: dict[str, tuple], b: dict[str, tuple], scale: float) -> bool:
     return all(np.allclose(a[k], b[k], atol=1e-7 * scale, rtol=0) for k in a)
+
+
+def _turns(result: Any) -> dict[str, float]:
+    """Each body's turn from the drawn pose at row 0, degrees. Two closures may put every
+    point in the same place and still differ: the block of an inverted slider-crank turned
+    half a turn on its pin (its only point) carries its guide the other way."""
+    return {name: float(values["angle"][0]) for name, values in result.bodies.items()}
+
+
+def _same_turns(a: dict[str, float], b: dict[str, float]) -> bool:
+    return all(abs((a[k] - b[k] + 180.0) % 360.0 - 180.0) < 1e-6 for k in a)
 
 
 def _closure(model: Model, g: Any, side: float) -> str:
