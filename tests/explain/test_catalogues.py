@@ -23,6 +23,7 @@ FAMILIES = {
     "ask": ["icr", "axis", "pole", "curvature", "intrinsic"],
     "ans": ["point", "direction", "center", "tangent", "slide"],
     "centre.proportional": ["between", "outside"],
+    "pos": ["left", "right", "ahead", "behind", "open", "crossed"],
 }
 
 
@@ -71,7 +72,7 @@ def test_no_unused_and_no_missing_keys():
     assert keys - used == set(), f"unused keys: {sorted(keys - used)}"
     prefixes = ("sec.", "msg.", "col.", "data.", "fig.", "order.", "step.", "driver.", "input.",
                 "other.", "rolling.", "dir.", "how.", "carry.", "sense.", "sub.", "centre.", "centres.",
-                "rates.", "fields.", "composition.", "curvature.", "answers.", "structure.", "v.", "a.", "ask.", "ans.")
+                "rates.", "fields.", "composition.", "pos.", "curvature.", "answers.", "structure.", "v.", "a.", "ask.", "ans.")
     wanted = {k for k in literals() if k.startswith(prefixes)}
     assert wanted - keys == set(), f"keys the code uses but no catalogue has: {sorted(wanted - keys)}"
 

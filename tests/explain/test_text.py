@@ -23,6 +23,8 @@ SYNTAX = [
      "an answer's key path"),
     (r"\b(deg|cos|sin|tan|sqrt|atan2?)\(", "an expression as written"),
     (r"\w\*\w|\*\*", "a product written as in the model"),
+    (r"\b(Abs|sign|Piecewise|atan2)\(", "a function written as sympy prints it"),
+    (r"\bpi\b", "π written as pi"),
     (r"\b(None|True|False)\b", "a Python value"),
     (r"\b(Name|Msg|Sym|Value|Inline)\(", "a Python object"),
     (r"[{}]\s*\$?\w+\s*[{}]", "a placeholder"),
@@ -73,6 +75,9 @@ def test_reads_as_text(name, lang, fmt):
     for pattern, what in SYNTAX:
         m = re.search(pattern, text)
         assert m is None, f"{what}: …{text[max(0, m.start() - 60):m.end() + 60]}…"
+    if fmt == "html":      # Markdown writes every subscript ω_2; a page must set it as one
+        m = re.search(r"[ωαθφu]_\w", text)
+        assert m is None, f"a subscript written with an underscore: …{text[max(0, m.start() - 60):m.end() + 60]}…"
     m = PASTED_PLURAL.search(text)
     assert m is None, f"a pasted plural: …{text[max(0, m.start() - 40):m.end() + 20]}…"
     if lang != "en":

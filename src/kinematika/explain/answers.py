@@ -22,7 +22,11 @@ def answers_section(ctx: Ctx) -> Section:
     """The model's questions, each named as a textbook names it (v_C, ω_rocker, the
     composition of the motion of A…) with its answer's parts labelled by their symbols."""
     sec = Section(msg("sec.answers"))
-    rows = [[question_label(ctx, q), answer_items(ctx, q, answer(ctx.sol, q))] for q in ctx.model.questions]
+    rows: list = []
+    for q in ctx.model.questions:
+        row = [question_label(ctx, q), answer_items(ctx, q, answer(ctx.sol, q))]
+        if row not in rows:        # a fixed point asked of every body it belongs to: once
+            rows.append(row)
     if rows:
         sec.add(Table([msg("col.question"), msg("col.answer")], rows))
     else:

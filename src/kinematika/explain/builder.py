@@ -17,6 +17,7 @@ from .group import refine
 from .order import solution_order
 from .planar import PlanarSteps
 from .polygon import level_polygon, polygon
+from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
 from .structure import structure_section, values_table
 
@@ -34,6 +35,9 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
     if ctx.planar:
         steps = refine(ctx, solution_order(sol))
         doc.sections.append(structure_section(ctx, steps))
+        placed = position_section(ctx)
+        if placed is not None:
+            doc.sections.append(placed)
         for level in ("v", "a"):
             sec = PlanarSteps(ctx, steps, level).section()
             levels.append(sec)

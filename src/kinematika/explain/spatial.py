@@ -79,11 +79,13 @@ def loop_blocks(ctx: Ctx) -> list:
         loop = _loop(ctx, parent, j)
         if loop is None:
             continue
-        out.append(msg("loop.intro", bodies=Names([Name(b, "body") for b, _, _ in loop])))
+        out.append(msg("loop.intro", bodies=Names([Name(b, "body") for b, _, _ in loop]),
+                       rate=Sym("ω", "j", vector=False), axis=Sym("u", "j")))
         driven = {d.joint for d in model.drivers if d.kind == "joint"}
         for level in ("w", "al"):
             if level == "al":
-                out.append(msg("loop.solve_alpha"))
+                out.append(msg("loop.solve_alpha", cross=Inline([Sym("ω", ""), " × ", Sym("ω", "", sub_key="sub.rel")]),
+                               rate=Sym("α", "j", vector=False)))
             out.append(_loop_equation(ctx, loop, driven, level))
             if level == "w":
                 out.append(msg("loop.solve"))

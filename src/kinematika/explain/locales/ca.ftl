@@ -61,6 +61,53 @@ fig-polygon_a = Polígon d’acceleracions des del pol o, a escala, amb els vèr
        *[other] {""}
     }.
 fig-sample = Dibuixat amb valors de mostra dels símbols.
+sec-position = Posició
+pos-intro = Anàlisi de posició: cada punt mòbil se situa com el situa l’enunciat, a partir de punts ja situats.
+pos-polar = { $point } és a una distància { $distance } { ELISION($origin) ->
+        [vowel] d’{ $origin }
+       *[other] de { $origin }
+    }, a { $angle } de l’eix x: { $point } = { $at }.
+pos-polar_ref = { $point } és a una distància { $distance } { ELISION($origin) ->
+        [vowel] d’{ $origin }
+       *[other] de { $origin }
+    }, a { $angle } de la direcció { $ref }: { $point } = { $at }.
+pos-frame = { $point } és a { $x } { ELISION($origin) ->
+        [vowel] d’{ $origin }
+       *[other] de { $origin }
+    } segons { $line } i a { $y } en perpendicular, a la seva esquerra: { $point } = { $at }.
+pos-frame_on = { $point } és a { $x } { ELISION($origin) ->
+        [vowel] d’{ $origin }
+       *[other] de { $origin }
+    } segons { $line }: { $point } = { $at }.
+pos-circles = { $point } és a una distància { $r1 } { ELISION($c1) ->
+        [vowel] d’{ $c1 }
+       *[other] de { $c1 }
+    } i { $r2 } { ELISION($c2) ->
+        [vowel] d’{ $c2 }
+       *[other] de { $c2 }
+    }: la intersecció de dues circumferències, de centres { $c1 } i { $c2 }. Dels dos punts on es tallen, és { $which }: { $point } = { $at }.
+pos-circle_line = { $point } és a una distància { $r } { ELISION($c) ->
+        [vowel] d’{ $c }
+       *[other] de { $c }
+    } sobre la recta { $line }: la intersecció d’una circumferència de centre { $c } i una recta. Dels dos punts on es tallen, és { $which }: { $point } = { $at }.
+pos-lines = { $point } és el punt on es tallen les rectes { $l1 } i { $l2 }: { $point } = { $at }.
+pos-line_dir = per { $through } segons { $dir }
+pos-left = el que queda a l’esquerra mirant { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    } cap a { $b }
+pos-right = el que queda a la dreta mirant { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    } cap a { $b }
+pos-ahead = el que és més endavant en el sentit de la recta { $line }
+pos-behind = el que és més enrere en el sentit de la recta { $line }
+pos-near = el més proper al punt de l’esbós { $near }
+pos-touch = l’únic punt on es toquen
+pos-assembly = { $which }, { $assembly }
+pos-open = la configuració oberta (les barres no es creuen)
+pos-crossed = la configuració creuada (les barres es creuen)
+
 sec-order = Ordre de resolució
 order-assur = El mecanisme es descompon en les seves entrades i grups d’Assur (díades); cada grup es resol a partir de sòlids ja coneguts:
 order-blocks = El mecanisme no es descompon en díades a partir de manovelles o corredores motores, de manera que l’ordre surt de la forma triangular per blocs de les equacions de velocitat; cada grup es troba a partir dels sòlids ja coneguts:
@@ -264,9 +311,9 @@ triad-intro = { $body } està subjectat per tres barres binàries, { $links }: c
     }:
 triad-collinear = A cada membre els dos termes desconeguts són perpendiculars a una mateixa recta ({ $point } és a { $l1 } i a { $l3 }), de manera que cada membre té un sol mòdul desconegut: dues incògnites, i el polígon es tanca.
 triad-closure = Conegut { $point } com a punt de la barra ternària, la seva articulació { $pin } es tanca com en una díade:
-loop-intro = Els sòlids { $bodies } tanquen un llaç: en recórrer-lo, les velocitats angulars relatives sumen zero, cadascuna segons l’eix del seu enllaç (tres equacions escalars per a les velocitats ω_j desconegudes segons els eixos u_j):
+loop-intro = Els sòlids { $bodies } tanquen un llaç: en recórrer-lo, les velocitats angulars relatives sumen zero, cadascuna segons l’eix del seu enllaç (tres equacions escalars per a les velocitats { $rate } desconegudes segons els eixos { $axis }):
 loop-solve = Les tres components donen les velocitats desconegudes:
-loop-solve_alpha = Derivant en els eixos fixos, les acceleracions angulars relatives i els termes ω × ω_rel sumen zero al llarg del llaç; les tres components donen les α_j desconegudes:
+loop-solve_alpha = Derivant en els eixos fixos, les acceleracions angulars relatives i els termes { $cross } sumen zero al llarg del llaç; les tres components donen les { $rate } desconegudes:
 dir-axis = eix { $joint }
 dir-wheel = roda { $joint }
 how-weld = (unió rígida { $joint }: un sol sòlid)

@@ -61,6 +61,26 @@ fig-polygon_a = Acceleration polygon from the pole o, to scale, its vertices the
        *[other] {""}
     }.
 fig-sample = Drawn at sample values of the symbols.
+sec-position = Position
+pos-intro = Position analysis: each moving point is placed as the statement places it, from points already placed.
+pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
+pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
+pos-frame = { $point } is { $x } from { $origin } along { $line } and { $y } across it, to its left: { $point } = { $at }.
+pos-frame_on = { $point } is { $x } from { $origin } along { $line }: { $point } = { $at }.
+pos-circles = { $point } is at distance { $r1 } from { $c1 } and { $r2 } from { $c2 }: the intersection of two circles, about { $c1 } and about { $c2 }. Of the two points where they meet, it is { $which }: { $point } = { $at }.
+pos-circle_line = { $point } is at distance { $r } from { $c } on the line { $line }: the intersection of a circle about { $c } and a line. Of the two points where they meet, it is { $which }: { $point } = { $at }.
+pos-lines = { $point } is where the lines { $l1 } and { $l2 } meet: { $point } = { $at }.
+pos-line_dir = through { $through } along { $dir }
+pos-left = the one on the left as one looks from { $a } towards { $b }
+pos-right = the one on the right as one looks from { $a } towards { $b }
+pos-ahead = the one farther along the line { $line }
+pos-behind = the one farther back along the line { $line }
+pos-near = the one nearer the sketch point { $near }
+pos-touch = the single point where they touch
+pos-assembly = { $which }, { $assembly }
+pos-open = the open assembly (the links do not cross)
+pos-crossed = the crossed assembly (the links cross)
+
 sec-order = Order of solution
 order-assur = The mechanism is decomposed into its inputs and Assur groups (dyads); each group is solved from bodies already known:
 order-blocks = The mechanism does not decompose from driven cranks or sliders into dyads, so the order comes from the block-triangular form of the velocity equations; each group is found from the bodies already known:
@@ -162,9 +182,9 @@ vehicle-translation = The lines of { $body } are parallel: its centre is at infi
 triad-intro = { $body } is held by three binary links, { $links }: no vector equation of a single point has only two unknowns. As textbooks do for a triad, take the Assur point { $point }, where the lines { $l1 } and { $l3 } meet, as a point of { $body }:
 triad-collinear = On each side the two unknown terms are perpendicular to one line ({ $point } lies on { $l1 } and on { $l3 }), so each side has one unknown magnitude: two unknowns, and the polygon closes.
 triad-closure = With { $point } known as a point of the ternary link, its pin { $pin } closes as in a dyad:
-loop-intro = The bodies { $bodies } close a loop: going round it, the relative angular velocities add up to zero, each along its joint's axis (three scalar equations for the unknown rates ω_j along the axes u_j):
+loop-intro = The bodies { $bodies } close a loop: going round it, the relative angular velocities add up to zero, each along its joint's axis (three scalar equations for the unknown rates { $rate } along the axes { $axis }):
 loop-solve = The three components give the unknown rates:
-loop-solve_alpha = Differentiating in the fixed axes, the relative angular accelerations and the terms ω × ω_rel add up to zero round the loop; the three components give the unknown α_j:
+loop-solve_alpha = Differentiating in the fixed axes, the relative angular accelerations and the terms { $cross } add up to zero round the loop; the three components give the unknown { $rate }:
 dir-axis = axis { $joint }
 dir-wheel = wheel { $joint }
 how-weld = (weld { $joint }: one body)

@@ -61,6 +61,26 @@ fig-polygon_a = Polígono de aceleraciones desde el polo o, a escala, con los v�
        *[other] {""}
     }.
 fig-sample = Dibujado con valores de muestra de los símbolos.
+sec-position = Posición
+pos-intro = Análisis de posición: cada punto móvil se sitúa como lo sitúa el enunciado, a partir de puntos ya situados.
+pos-polar = { $point } está a una distancia { $distance } de { $origin }, a { $angle } del eje x: { $point } = { $at }.
+pos-polar_ref = { $point } está a una distancia { $distance } de { $origin }, a { $angle } de la dirección { $ref }: { $point } = { $at }.
+pos-frame = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su izquierda: { $point } = { $at }.
+pos-frame_on = { $point } está a { $x } de { $origin } según { $line }: { $point } = { $at }.
+pos-circles = { $point } está a una distancia { $r1 } de { $c1 } y { $r2 } de { $c2 }: la intersección de dos circunferencias, de centros { $c1 } y { $c2 }. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
+pos-circle_line = { $point } está a una distancia { $r } de { $c } sobre la recta { $line }: la intersección de una circunferencia de centro { $c } y una recta. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
+pos-lines = { $point } es el punto en que se cortan las rectas { $l1 } y { $l2 }: { $point } = { $at }.
+pos-line_dir = por { $through } según { $dir }
+pos-left = el que queda a la izquierda mirando desde { $a } hacia { $b }
+pos-right = el que queda a la derecha mirando desde { $a } hacia { $b }
+pos-ahead = el que está más adelante en el sentido de la recta { $line }
+pos-behind = el que está más atrás en el sentido de la recta { $line }
+pos-near = el más cercano al punto del croquis { $near }
+pos-touch = el único punto en que se tocan
+pos-assembly = { $which }, { $assembly }
+pos-open = la configuración abierta (las barras no se cruzan)
+pos-crossed = la configuración cruzada (las barras se cruzan)
+
 sec-order = Orden de resolución
 order-assur = El mecanismo se descompone en sus entradas y grupos de Assur (díadas); cada grupo se resuelve a partir de sólidos ya conocidos:
 order-blocks = El mecanismo no se descompone en díadas a partir de manivelas o correderas motoras, así que el orden sale de la forma triangular por bloques de las ecuaciones de velocidad; cada grupo se halla a partir de los sólidos ya conocidos:
@@ -162,9 +182,9 @@ vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el 
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
 triad-closure = Conocido { $point } como punto del eslabón ternario, su articulación { $pin } se cierra como en una díada:
-loop-intro = Los sólidos { $bodies } cierran un lazo: al recorrerlo, las velocidades angulares relativas suman cero, cada una según el eje de su par (tres ecuaciones escalares para las velocidades ω_j desconocidas según los ejes u_j):
+loop-intro = Los sólidos { $bodies } cierran un lazo: al recorrerlo, las velocidades angulares relativas suman cero, cada una según el eje de su par (tres ecuaciones escalares para las velocidades { $rate } desconocidas según los ejes { $axis }):
 loop-solve = Las tres componentes dan las velocidades desconocidas:
-loop-solve_alpha = Derivando en los ejes fijos, las aceleraciones angulares relativas y los términos ω × ω_rel suman cero a lo largo del lazo; las tres componentes dan las α_j desconocidas:
+loop-solve_alpha = Derivando en los ejes fijos, las aceleraciones angulares relativas y los términos { $cross } suman cero a lo largo del lazo; las tres componentes dan las { $rate } desconocidas:
 dir-axis = eje { $joint }
 dir-wheel = rueda { $joint }
 how-weld = (unión rígida { $joint }: un solo sólido)

@@ -61,6 +61,26 @@ fig-polygon_a = Azelerazioen poligonoa o polotik, eskalan, erpinak puntuen irudi
        *[other] {""}
     }.
 fig-sample = Ikurren lagin-balioekin marraztua.
+sec-position = Posizioa
+pos-intro = Posizio-analisia: puntu mugikor bakoitza enuntziatuak kokatzen duen moduan kokatzen da, aurretik kokatutako puntuetatik abiatuta.
+pos-polar = { $point } puntua { $origin } puntutik { $distance } distantziara dago, x ardatzarekiko { $angle } angeluan: { $point } = { $at }.
+pos-polar_ref = { $point } puntua { $origin } puntutik { $distance } distantziara dago, { $ref } norabidearekiko { $angle } angeluan: { $point } = { $at }.
+pos-frame = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, ezkerretara: { $point } = { $at }.
+pos-frame_on = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar: { $point } = { $at }.
+pos-circles = { $point } puntua { $c1 } puntutik { $r1 } distantziara eta { $c2 } puntutik { $r2 } distantziara dago: bi zirkunferentziaren ebakidura, { $c1 } eta { $c2 } zentrodunak. Ebakitzen diren bi puntuetatik, { $which } da: { $point } = { $at }.
+pos-circle_line = { $point } puntua { $c } puntutik { $r } distantziara dago, { $line } zuzenean: { $c } zentroko zirkunferentzia baten eta zuzen baten ebakidura. Ebakitzen diren bi puntuetatik, { $which } da: { $point } = { $at }.
+pos-lines = { $point } puntua { $l1 } eta { $l2 } zuzenen ebakidura da: { $point } = { $at }.
+pos-line_dir = { $through } puntutik { $dir } norabidean doan
+pos-left = { $a } puntutik { $b } puntura begiratuta ezkerrean dagoena
+pos-right = { $a } puntutik { $b } puntura begiratuta eskuinean dagoena
+pos-ahead = { $line } zuzenaren noranzkoan aurrerago dagoena
+pos-behind = { $line } zuzenaren noranzkoan atzerago dagoena
+pos-near = { $near } zirriborro-puntutik hurbilen dagoena
+pos-touch = ukitzen diren puntu bakarra
+pos-assembly = { $which } ({ $assembly })
+pos-open = konfigurazio irekia: barrak ez dira gurutzatzen
+pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
+
 sec-order = Ebazpen-ordena
 order-assur = Mekanismoa bere sarreretan eta Assur taldeetan (diadetan) deskonposatzen da; talde bakoitza jadanik ezagunak diren solidoetatik ebazten da:
 order-blocks = Mekanismoa ez da diadetan deskonposatzen biela edo irristari eragileetatik abiatuta; beraz, ordena abiadura-ekuazioen bloke-triangeluar formatik dator, eta talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da:
@@ -165,9 +185,9 @@ vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infi
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
 triad-closure = { $point } barra hirutarraren puntu gisa ezaguna denez, bere { $pin } giltzadura diada batean bezala ixten da:
-loop-intro = { $bodies } solidoek begizta bat ixten dute: hura osatzean, abiadura angeluar erlatiboen batura zero da, bakoitza bere loturaren ardatzaren norabidean (hiru ekuazio eskalar u_j ardatzen norabideko ω_j abiadura ezezagunetarako):
+loop-intro = { $bodies } solidoek begizta bat ixten dute: hura osatzean, abiadura angeluar erlatiboen batura zero da, bakoitza bere loturaren ardatzaren norabidean (hiru ekuazio eskalar { $axis } ardatzen norabideko { $rate } abiadura ezezagunetarako):
 loop-solve = Hiru osagaiek abiadura ezezagunak ematen dituzte:
-loop-solve_alpha = Ardatz finkoetan deribatuz, azelerazio angeluar erlatiboen eta ω × ω_rel terminoen batura zero da begiztan; hiru osagaiek α_j ezezagunak ematen dituzte:
+loop-solve_alpha = Ardatz finkoetan deribatuz, azelerazio angeluar erlatiboen eta { $cross } terminoen batura zero da begiztan; hiru osagaiek { $rate } ezezagunak ematen dituzte:
 dir-axis = { $joint } ardatza
 dir-wheel = { $joint } gurpila
 how-weld = ({ $joint } lotura zurruna: solido bakarra)

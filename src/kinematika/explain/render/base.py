@@ -202,6 +202,8 @@ class Renderer:
             text = "(" + self.comma.join(self.scalar(c) for c in x) + ")"
         else:
             text = self.scalar(x)
+        if v.unit == "deg":
+            return text + "°"
         unit = self.unit(v.unit)
         return text + (" " + unit if unit and not self.doc.symbolic else "")
 

@@ -18,11 +18,24 @@ def _tidy(expr: Any) -> Any:
 
 def unicode_formula(expr: Any) -> str:
     """`sqrt(2)*r**2*w/4` as `√2·r²·w/4`."""
-    text = str(_tidy(expr))
+    text = _bars(str(_tidy(expr)))
     text = re.sub(r"\*\*(-?\d+)", lambda m: m.group(1).translate(SUPERSCRIPTS), text)
     text = re.sub(r"sqrt\((\w+)\)", r"√\1", text)
     text = text.replace("sqrt(", "√(").replace("**", "^").replace("*", "·")
+    text = re.sub(r"\bpi\b", "π", text)
     return text.replace(" - ", " − ").replace("-", "−")
+
+
+def _bars(text: str) -> str:
+    """sympy's `Abs(x)` as the |x| a reader writes (nested ones too)."""
+    while (start := text.find("Abs(")) >= 0:
+        depth, end = 0, start + 3
+        for end in range(start + 3, len(text)):
+            depth += {"(": 1, ")": -1}.get(text[end], 0)
+            if depth == 0:
+                break
+        text = text[:start] + "|" + text[start + 4:end] + "|" + text[end + 1:]
+    return text
 
 
 def latex_formula(expr: Any) -> str:

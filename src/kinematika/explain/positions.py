@@ -1,0 +1,145 @@
+"""The position analysis of points given by construction, told as the notes tell it.
+
+A model may place a point as a textbook statement does ("B is 4 from A and 3 from O4",
+`{circles: [[A, b], [O4, c]], side: left}`); the engine evaluates the construction
+(`engine.positions`). This step says, point by point in the order they are drawn, which
+construction gives it, with the lengths and angles of the statement, which of two
+intersections was taken (and, for a four-bar loop, whether that is the open or the
+crossed assembly), and where the point is. Every number is the instant's.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Optional
+
+from ..model.constructions import CircleLine, InFrame, LineDef, Polar, TwoCircles, TwoLines, construction_order
+from .context import Ctx
+from .document import Inline, Msg, Name, Section, Value, msg, point
+
+
+def position_section(ctx: Ctx) -> Optional[Section]:
+    """The constructed points of a planar model, one sentence each; None when every point
+    is given by its coordinates."""
+    model = ctx.model
+    built = [n for n in construction_order(model.points) if not isinstance(model.points[n], tuple)]
+    if not ctx.planar or not built:
+        return None
+    sec = Section(msg("sec.position"))
+    sec.add(msg("pos.intro"))
+    for name in built:
+        sec.add(_sentence(ctx, name, model.points[name]))
+    return sec
+
+
+def _sentence(ctx: Ctx, name: str, c: Any) -> Msg:
+    at = Value(ctx.clean(ctx.pos(name), "len"), "len")
+    p = point(name)
+    if isinstance(c, Polar):
+        args = dict(point=p, origin=_loc(ctx, c.origin), distance=_quantity(ctx, c.distance, "len"),
+                    angle=_angle(ctx, name, c), at=at)
+        if c.reference is None:
+            return msg("pos.polar", **args)
+        return msg("pos.polar_ref", ref=_pair(ctx, *c.reference), **args)
+    if isinstance(c, InFrame):
+        across = ctx.clean(ctx.inst.value(c.at[1], "explain"), "len")
+        key = "pos.frame_on" if not ctx.symbolic and across == 0 else "pos.frame"
+        return msg(key, point=p, origin=_loc(ctx, c.origin), line=_pair(ctx, c.origin, c.toward),
+                   x=_quantity(ctx, c.at[0], "len"), y=_quantity(ctx, c.at[1], "len"), at=at)
+    if isinstance(c, TwoCircles):
+        (c1, c2), (r1, r2) = c.centers, c.radii
+        which = _which(ctx, c.side, c.near, a=_loc(ctx, c1), b=_loc(ctx, c2))
+        assembly = _assembly(ctx, name, c)
+        if assembly:
+            which = msg("pos.assembly", which=which, assembly=msg(f"pos.{assembly}"))
+        return msg("pos.circles", point=p, c1=_loc(ctx, c1), c2=_loc(ctx, c2), r1=_quantity(ctx, r1, "len"),
+                   r2=_quantity(ctx, r2, "len"), which=which, at=at)
+    if isinstance(c, CircleLine):
+        return msg("pos.circle_line", point=p, c=_loc(ctx, c.center), r=_quantity(ctx, c.radius, "len"),
+                   line=_line(ctx, c.line), which=_which(ctx, c.side, c.near, line=_line(ctx, c.line)), at=at)
+    assert isinstance(c, TwoLines)
+    return msg("pos.lines", point=p, l1=_line(ctx, c.lines[0]), l2=_line(ctx, c.lines[1]), at=at)
+
+
+def _loc(ctx: Ctx, loc: Any) -> Any:
+    """A point's name, or given coordinates as a value."""
+    if isinstance(loc, str):
+        return point(loc)
+    return Value(ctx.clean(tuple(ctx.inst.value(e, "explain") for e in loc), "len"), "len")
+
+
+def _pair(ctx: Ctx, a: Any, b: Any) -> Any:
+    """A segment or direction named by two points (AB), or by its ends' coordinates."""
+    if isinstance(a, str) and isinstance(b, str):
+        return Inline([point(a), "–" if len(a) > 1 or len(b) > 1 else "", point(b)])
+    return Inline([_loc(ctx, a), "–", _loc(ctx, b)])
+
+
+def _line(ctx: Ctx, line: LineDef) -> Any:
+    if line.toward is not None:
+        return _pair(ctx, line.through, line.toward)
+    d = ctx.clean(tuple(ctx.inst.value(e, "explain") for e in line.direction), "")
+    return msg("pos.line_dir", through=_loc(ctx, line.through), dir=Value(d, ""))
+
+
+def _quantity(ctx: Ctx, expr: Any, unit: str) -> Any:
+    """A length of the statement: `b = 4` when the model names it by a parameter."""
+    value = Value(ctx.clean(ctx.inst.value(expr, "explain"), unit), unit)
+    text = getattr(expr, "text", "").strip()
+    if text in ctx.model.parameters and not ctx.symbolic:
+        return Inline([Name(text, "param"), " = ", value])
+    return value
+
+
+def _angle(ctx: Ctx, name: str, c: Polar) -> Any:
+    """The angle of a polar point at the instant: in degrees from its coordinates for a
+    numeric model (so a moved crank reads its present angle); the formula for a symbolic one."""
+    if ctx.symbolic:
+        import sympy
+
+        angle = sympy.sympify(ctx.inst.value(c.angle, "explain"))
+        deg = sympy.nsimplify(angle * 180 / sympy.pi) if not angle.free_symbols else None
+        return Value(float(deg), "deg") if deg is not None and deg.is_Rational else Value(angle, "")
+    o = ctx.num(ctx.pos(c.origin)) if isinstance(c.origin, str) else ctx.num(_loc(ctx, c.origin).value)
+    p = ctx.num(ctx.pos(name))
+    theta = math.atan2(p[1] - o[1], p[0] - o[0])
+    if c.reference is not None:
+        a, b = (ctx.num(ctx.pos(r)) if isinstance(r, str) else ctx.num(_loc(ctx, r).value) for r in c.reference)
+        theta -= math.atan2(b[1] - a[1], b[0] - a[0])
+    deg = (math.degrees(theta) + 180.0) % 360.0 - 180.0
+    return Value(round(deg, 6) + 0.0, "deg")
+
+
+def _which(ctx: Ctx, side: Optional[str], near: Optional[tuple], **names: Any) -> Msg:
+    """Which of two intersections: by its side (of a→b, or along the line), or nearest a sketch point."""
+    if side is not None:
+        return msg(f"pos.{side}", **names)
+    if near is not None:
+        sketch = tuple(float(ctx.inst.num(ctx.inst.value(e, "explain"))) for e in near)
+        return msg("pos.near", near=Value(sketch, "len"))
+    return msg("pos.touch")
+
+
+def _assembly(ctx: Ctx, name: str, c: TwoCircles) -> str:
+    """`open` or `crossed` when the circles close a four-bar loop O–A–P–Q (A a crank pin
+    placed polar from a fixed pivot O, Q a fixed pivot): open when the quadrilateral does
+    not cross itself."""
+    model = ctx.model
+    fixed = set(model.bodies[ctx.frame].points)
+    for pin, pivot in (c.centers, c.centers[::-1]):
+        if not (isinstance(pin, str) and isinstance(pivot, str)) or pivot not in fixed:
+            continue
+        spec = model.points.get(pin)
+        if isinstance(spec, Polar) and isinstance(spec.origin, str) and spec.origin in fixed \
+                and spec.origin != pivot:
+            o, a, p, q = (ctx.num(ctx.pos(n)) for n in (spec.origin, pin, name, pivot))
+            crossed = _cross(o, a, p, q) or _cross(a, p, q, o)
+            return "crossed" if crossed else "open"
+    return ""
+
+
+def _cross(a: tuple, b: tuple, c: tuple, d: tuple) -> bool:
+    """Whether the segments ab and cd cross (properly)."""
+    def turn(p: tuple, q: tuple, r: tuple) -> float:
+        return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+    d1, d2, d3, d4 = turn(c, d, a), turn(c, d, b), turn(a, b, c), turn(a, b, d)
+    return d1 * d2 < 0 and d3 * d4 < 0

@@ -1,0 +1,102 @@
+"""The position step: every point placed by construction is told how it was found (the
+construction, the lengths, the branch, the assembly), with where it is, in every language."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import kinematika
+from kinematika.explain import build, render
+from kinematika.explain.catalogue import LANGS
+from kinematika.explain.document import Msg, Section
+
+from .helpers import ALL, EXAMPLES, explained
+
+
+def position_section(doc) -> Section | None:
+    return next((s for s in doc.sections if s.title.key == "sec.position"), None)
+
+
+def sentences(doc) -> dict[str, Msg]:
+    sec = position_section(doc)
+    return {} if sec is None else {b.args["point"].text: b for b in sec.blocks if "point" in b.args}
+
+
+def constructed(sol) -> list[str]:
+    return [n for n, spec in sol.model.points.items() if not isinstance(spec, tuple)]
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_every_constructed_point_is_told(name):
+    sol, doc = explained(name)
+    if sol.space.dim != 2:
+        assert position_section(doc) is None
+        return
+    told = sentences(doc)
+    assert sorted(told) == sorted(constructed(sol))
+    for point, m in told.items():
+        at = sol.inst.num(m.args["at"].value[0]), sol.inst.num(m.args["at"].value[1])
+        want = tuple(sol.inst.num(c) for c in sol.inst.points[point])
+        assert all(math.isclose(a, b, abs_tol=1e-9 * sol.inst.scale) for a, b in zip(at, want)), point
+
+
+def test_four_bar_by_hand():
+    """B at 4 from A(0, 1) and 3 from O4(4, 0): y = 4x − 11 and 17x² − 96x + 128 = 0, so
+    x = (96 ± √512)/34; on the left of A→O4 (above the ground), the open assembly."""
+    sol, doc = explained("four_bar")
+    told = sentences(doc)
+    a = told["A"]
+    assert a.key == "pos.polar" and a.args["angle"].value == pytest.approx(90.0)
+    b = told["B"]
+    assert b.key == "pos.circles"
+    x = (96 + math.sqrt(512)) / 34
+    assert b.args["at"].value == pytest.approx((x, 4 * x - 11))
+    assert b.args["which"].key == "pos.assembly"
+    assert b.args["which"].args["which"].key == "pos.left"
+    assert b.args["which"].args["assembly"].key == "pos.open"
+    text = render(doc, "en", "md")
+    assert "is at distance *b* = 4 m from A and *c* = 3 m from O4" in text
+    assert "the open assembly" in text
+
+
+def test_crossed_assembly(tmp_path):
+    """The same four-bar on the other side of A→O4: B = (2.158, −2.368), the links cross."""
+    src = (EXAMPLES / "four_bar.yaml").read_text(encoding="utf-8").replace("side: left", "side: right")
+    path = tmp_path / "crossed.yaml"
+    path.write_text(src, encoding="utf-8")
+    doc = build(kinematika.solve(path))
+    b = sentences(doc)["B"]
+    x = (96 - math.sqrt(512)) / 34
+    assert b.args["at"].value == pytest.approx((x, 4 * x - 11))
+    assert b.args["which"].args["assembly"].key == "pos.crossed"
+
+
+def test_slider_and_coupler_point():
+    """Slider-crank: B on the line of stroke at l from A, ahead along +x; G on AB."""
+    sol, doc = explained("slider_crank")
+    told = sentences(doc)
+    assert told["B"].key == "pos.circle_line" and told["B"].args["which"].key == "pos.ahead"
+    r, l, th = 0.05, 0.2, math.radians(60)
+    assert told["B"].args["at"].value == pytest.approx((r * math.cos(th) + math.sqrt(l**2 - (r * math.sin(th))**2), 0))
+    assert told["G"].key == "pos.frame_on"
+
+
+def test_symbolic_angles_in_degrees():
+    """The epicyclic's planets at −90°, 30° and 150° about O (exact multiples of π)."""
+    _, doc = explained("seed_c5_1_4_epicyclic")
+    angles = {p: m.args["angle"].value for p, m in sentences(doc).items()}
+    assert angles == {"A1": pytest.approx(-90.0), "A2": pytest.approx(30.0), "A3": pytest.approx(150.0)}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_told_in_every_language(lang):
+    _, doc = explained("four_bar")
+    text = render(doc, lang, "md")
+    heading = {"en": "## Position", "es": "## Posición", "ca": "## Posició", "eu": "## Posizioa"}[lang]
+    assert heading in text
+    closing = {"en": "open assembly", "es": "configuración abierta", "ca": "configuració oberta",
+               "eu": "konfigurazio irekia"}[lang]
+    assert closing in text
+    if lang == "ca":
+        assert "d’A cap a O4" in text and "d’O2" in text
