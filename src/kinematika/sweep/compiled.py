@@ -40,6 +40,7 @@ ITERATIONS = 25
 TOLERANCE = 1e-12           # as the general path: dimensionless step size
 JUMP = 0.3                  # a correction above this fraction of the step is a jump
 CONDITION = 1e10            # the engine's limit for a dead point (2-norm, dimensionless)
+FROZEN = 1e-5               # Newton keeps its last matrix once the corrections are this small
 
 
 @dataclass
@@ -131,7 +132,7 @@ class CompiledNewton:
 
     def _point(self, rot, t, body: np.ndarray, p0: np.ndarray) -> np.ndarray:
         """Where the material points drawn at p0 (K, 3) of `body` (K,) are: (M, K, 3)."""
-        return np.einsum("mkij,kj->mki", rot[:, body], p0 - self.c) + self.c + t[:, body]
+        return _turned(rot[:, body], p0 - self.c) + self.c + t[:, body]
 
     def residual(self, rot, t, dq) -> np.ndarray:
         """Φ (M, m): the general path's position constraints, row for row."""
@@ -141,19 +142,19 @@ class CompiledNewton:
         parts = [gap.reshape(len(dq), -1)]
         if len(self.perp0):
             tr = self.turn
-            e = np.einsum("mkij,kj->mki", rot[:, tr.b], _pair_axes(self.axis_b0))
-            p = np.einsum("mkij,kj->mki", rot[:, tr.a], self.perp0)
-            dots = np.einsum("mki,mki->mk", e, p)          # e_b·p1, e_b·p2, ... per revolute
+            e = _turned(rot[:, tr.b], _pair_axes(self.axis_b0))
+            p = _turned(rot[:, tr.a], self.perp0)
+            dots = _dot(e, p)          # e_b·p1, e_b·p2, ... per revolute
             out = np.empty_like(dots)
             out[:, 0::2], out[:, 1::2] = -dots[:, 1::2], dots[:, 0::2]
             parts.append(out)
         if len(self.drive_axis0):
             dr = self.drive
-            e = np.einsum("mkij,kj->mki", rot[:, dr.a], self.drive_axis0)
-            rel = np.einsum("mkij,mklj->mkil", rot[:, dr.b], rot[:, dr.a])      # R_b R_aᵀ
+            e = _turned(rot[:, dr.a], self.drive_axis0)
+            rel = rot[:, dr.b] @ rot[:, dr.a].swapaxes(-1, -2)      # R_b R_aᵀ
             target = np.where(self.swept, 1.0, 0.0)[None, :] * dq[:, None]
             back = _exp(-target[..., None] * e)
-            parts.append(np.einsum("mki,mki->mk", _log(np.einsum("mkij,mkjl->mkil", back, rel)), e))
+            parts.append(_dot(_log(back @ rel), e))
         if len(self.idle_body):
             parts.append(np.zeros((len(dq), len(self.idle_body))))
         return np.concatenate(parts, axis=1)[:, self.keep]
@@ -179,11 +180,11 @@ class CompiledNewton:
         base = 3 * len(k.a)
         if len(self.perp0):
             tr = self.turn
-            p = np.einsum("mkij,kj->mki", rot_f[:, tr.a], self.perp0)
+            p = _turned(rot_f[:, tr.a], self.perp0)
             base = _relative_rotation_rows(a, base, tr, p, col)
         if len(self.drive_axis0):
             dr = self.drive
-            e = np.einsum("mkij,kj->mki", rot_f[:, dr.a], self.drive_axis0)
+            e = _turned(rot_f[:, dr.a], self.drive_axis0)
             base = _relative_rotation_rows(a, base, dr, e, col)
         for k_, body in enumerate(self.idle_body):
             ab = self._idle_ab(rot_f, t_f, k_)
@@ -224,7 +225,8 @@ class CompiledNewton:
             inverse = self._inverse(rots[[k0]], ts[[k0]])
             if inverse is None:
                 return None
-            done = self._chord(rots[[k0]], ts[[k0]], inverse, dq[[k0]], dq[[k1]], newton=True)
+            done = self._chord(rots[[k0]], ts[[k0]], inverse, self._predictor(rots[[k0]], ts[[k0]], inverse),
+                               dq[[k0]], dq[[k1]], newton=True)
             if done is None:
                 return None
             rots[k1], ts[k1] = done[0][0], done[1][0]
@@ -241,7 +243,9 @@ class CompiledNewton:
             inverse = self._inverse(rots[heads], ts[heads])
             if inverse is None:
                 return None
-            done = self._chord(rots[parent], ts[parent], inverse[which], dq[parent], dq[level])
+            slope, bend = self._predictor(rots[heads], ts[heads], inverse)
+            done = self._chord(rots[parent], ts[parent], inverse[which], (slope[which], bend[which]),
+                               dq[parent], dq[level])
             if done is None:
                 return None
             rots[level], ts[level] = done
@@ -268,32 +272,40 @@ class CompiledNewton:
         except np.linalg.LinAlgError:
             return None
 
-    def _tangent(self, inverse: np.ndarray) -> np.ndarray:
-        """dx/dq: the velocity system with a unit rate on the swept driver (a column of A⁻¹)."""
-        return inverse[:, :, self._driver_rows()[self.swept]].sum(axis=2)
+    def _predictor(self, rot, t, inverse) -> tuple[np.ndarray, np.ndarray]:
+        """dx/dq and d²x/dq² at assembled poses: the velocity system with a unit rate on the
+        swept driver (a column of A⁻¹) and the acceleration system with those velocities and
+        no driver acceleration. In the steps' coordinates (R ← exp(δθ) R, t ← exp(δθ) t + δ)
+        x(q + h) = x + h x' + h²/2 x'' + O(h³), so a predicted position is off by O(h³)."""
+        slope = inverse[:, :, self._driver_rows()[self.swept]].sum(axis=2)
+        bend = _times(inverse, self._accel_terms(rot, t, slope, driven=False))
+        return slope, bend
 
     def _size(self, dx: np.ndarray) -> np.ndarray:
         return np.abs(np.where(self.translation, dx / self.scale, dx)).max(axis=-1)
 
-    def _chord(self, rot, t, inverse, dq_from, dq_to, newton: bool = False) -> Optional[tuple]:
-        """From assembled poses at dq_from: the tangent predictor to dq_to, then iterations
-        x ← x − A⁻¹Φ(x) with the start's matrix (or, `newton`, the current one), rows that
-        have converged left alone; None if any row does not converge or jumps."""
-        step = self._tangent(inverse) * (dq_to - dq_from)[:, None]
-        predicted = self._size(step)
+    def _chord(self, rot, t, inverse, predictor, dq_from, dq_to, newton: bool = False) -> Optional[tuple]:
+        """From assembled poses at dq_from: the second-order predictor to dq_to, then
+        iterations x ← x − A⁻¹Φ(x) with the start's matrix (or, `newton`, the current one
+        until the corrections are small), rows that have converged left alone; None if any
+        row does not converge or jumps."""
+        slope, bend = predictor
+        h = (dq_to - dq_from)[:, None]
+        predicted = self._size(slope * h)
+        step = slope * h + 0.5 * bend * h * h
         rot, t = _stepped(rot, t, step)
         last = np.full(len(dq_to), np.inf)
         active = np.arange(len(dq_to))
         for _ in range(ITERATIONS):
             r, tt = rot[active], t[active]
             phi = self.residual(r, tt, dq_to[active])
-            if newton:
-                inverse = self._inverse(r, tt)
-                if inverse is None:
+            if newton and (last[active] > FROZEN).any():
+                current = self._inverse(r, tt)
+                if current is None:
                     return None
-                dx = -np.einsum("mij,mj->mi", inverse, phi)
-            else:
-                dx = -np.einsum("mij,mj->mi", inverse[active], phi)
+                inverse = inverse.copy()
+                inverse[active] = current
+            dx = -_times(inverse[active], phi)
             size = self._size(dx)
             if not np.isfinite(size).all() or (size > JUMP * predicted[active] + 1e-9).any():
                 return None
@@ -311,24 +323,27 @@ class CompiledNewton:
         the engine checks a dead point: any doubt returns None (the general path decides)."""
         n_rows = len(rots)
         a = self.matrix(rots, ts)
-        inverse = self._regular(a)
-        if inverse is None:
+        regular = self._regular(a)
+        if regular is None:
             return None
+        inverse, column, rows = regular          # A⁻¹ = C S⁻¹ R
         rhs = np.zeros((n_rows, self.m))
         rhs[:, self._driver_rows()] = self.rates
-        x_v = np.einsum("mij,mj->mi", inverse, rhs)
-        x_a = np.einsum("mij,mj->mi", inverse, self._accel_terms(rots, ts, x_v))
+        x_v = column * _times(inverse, rows * rhs)
+        x_a = column * _times(inverse, rows * self._accel_terms(rots, ts, x_v))
         return {"rot": rots, "t": ts, "x_v": x_v, "x_a": x_a}
 
-    def _regular(self, a: np.ndarray) -> Optional[np.ndarray]:
-        """A⁻¹ when every dimensionless matrix is certainly below the engine's condition
-        limit (its exact 1-norm condition number times n bounds the 2-norm one), else None."""
+    def _regular(self, a: np.ndarray) -> Optional[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+        """The dimensionless S = R A C (rows equilibrated, lengths in the model's scale) of
+        every matrix inverted, with C and R's diagonals, when every S is certainly below the
+        engine's condition limit (its exact 1-norm condition number times n bounds the 2-norm
+        one), else None. A⁻¹ = C S⁻¹ R is applied to vectors, never formed."""
         column = np.where(self.translation, self.scale, 1.0)
         scaled = a * column
         norms = np.abs(scaled).max(axis=2, keepdims=True)
         if (norms == 0).any():
             return None
-        scaled = scaled / norms
+        scaled /= norms
         try:
             inverse = np.linalg.inv(scaled)
         except np.linalg.LinAlgError:
@@ -336,10 +351,11 @@ class CompiledNewton:
         cond = np.abs(scaled).sum(axis=1).max(axis=1) * np.abs(inverse).sum(axis=1).max(axis=1)
         if not (np.isfinite(cond).all() and (cond * self.n < CONDITION).all()):
             return None
-        return inverse * column[None, :, None] / norms.transpose(0, 2, 1)     # A⁻¹ unscaled
+        return inverse, column, 1.0 / norms[..., 0]
 
-    def _accel_terms(self, rots, ts, x_v) -> np.ndarray:
-        """The acceleration system's right side: minus the rows' terms in the velocities."""
+    def _accel_terms(self, rots, ts, x_v, driven: bool = True) -> np.ndarray:
+        """The acceleration system's right side: minus the rows' terms in the velocities
+        (with the drivers' accelerations, or none: `driven` False)."""
         n_rows = len(rots)
         rot_f, t_f = self._full(rots, ts)
         w = np.concatenate([x_v.reshape(n_rows, -1, 6)[:, :, :3], np.zeros((n_rows, 1, 3))], axis=1)
@@ -349,14 +365,14 @@ class CompiledNewton:
         known = [(np.cross(wb, np.cross(wb, r)) - np.cross(wa, np.cross(wa, r))).reshape(n_rows, -1)]
         if len(self.perp0):
             tr = self.turn
-            p = np.einsum("mkij,kj->mki", rot_f[:, tr.a], self.perp0)
+            p = _turned(rot_f[:, tr.a], self.perp0)
             w_rel = w[:, tr.b] - w[:, tr.a]
-            known.append(np.einsum("mki,mki->mk", w_rel, np.cross(w[:, tr.a], p)))
+            known.append(_dot(w_rel, np.cross(w[:, tr.a], p)))
         if len(self.drive_axis0):
             dr = self.drive
-            e = np.einsum("mkij,kj->mki", rot_f[:, dr.a], self.drive_axis0)
+            e = _turned(rot_f[:, dr.a], self.drive_axis0)
             w_rel = w[:, dr.b] - w[:, dr.a]
-            known.append(np.einsum("mki,mki->mk", w_rel, np.cross(w[:, dr.a], e)) - self.accels)
+            known.append(_dot(w_rel, np.cross(w[:, dr.a], e)) - (self.accels if driven else 0.0))
         if len(self.idle_body):
             known.append(np.zeros((n_rows, len(self.idle_body))))
         return -np.concatenate(known, axis=1)[:, self.keep]
@@ -376,23 +392,39 @@ def _pair_axes(axes: np.ndarray) -> np.ndarray:
     return np.repeat(axes, 2, axis=0)
 
 
-def _skew(w: np.ndarray) -> np.ndarray:
-    k = np.zeros(w.shape[:-1] + (3, 3))
-    k[..., 0, 1], k[..., 0, 2] = -w[..., 2], w[..., 1]
-    k[..., 1, 0], k[..., 1, 2] = w[..., 2], -w[..., 0]
-    k[..., 2, 0], k[..., 2, 1] = -w[..., 1], w[..., 0]
-    return k
+def _turned(rot: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Rotations (M, K, 3, 3) applied to fixed vectors (K, 3): (M, K, 3) (matmul, which
+    numpy runs several times faster than the same einsum on small matrices)."""
+    return (rot @ v[:, :, None])[..., 0]
+
+
+def _times(a: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Stacked matrix-vector products: (…, i, j) · (…, j) → (…, i)."""
+    return (a @ x[..., None])[..., 0]
+
+
+def _dot(u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    return (u * v).sum(axis=-1)
 
 
 def _exp(w: np.ndarray) -> np.ndarray:
-    """Rodrigues on stacked rotation vectors (…, 3) → (…, 3, 3), as `poses.exp_rotation`."""
-    angle = np.linalg.norm(w, axis=-1)[..., None, None]
-    k = _skew(w)
+    """Rodrigues on stacked rotation vectors (…, 3) → (…, 3, 3), as `poses.exp_rotation`:
+    R = I + (sin θ/θ) W + ((1 − cos θ)/θ²) W², with W² = w wᵀ − θ² I; I + W below 1e-12."""
+    sq = (w * w).sum(axis=-1)
+    angle = np.sqrt(sq)
     small = angle < 1e-12
     safe = np.where(small, 1.0, angle)
-    k_unit = k / safe
-    full = np.eye(3) + np.sin(safe) * k_unit + (1 - np.cos(safe)) * (k_unit @ k_unit)
-    return np.where(small, np.eye(3) + k, full)
+    s = np.where(small, 1.0, np.sin(safe) / safe)
+    c = np.where(small, 0.0, (1.0 - np.cos(safe)) / (safe * safe))
+    out = (c[..., None, None] * w[..., :, None]) * w[..., None, :]
+    diagonal = 1.0 - c * sq
+    sw = s[..., None] * w
+    for i in range(3):
+        j, k = (i + 1) % 3, (i + 2) % 3
+        out[..., i, i] += diagonal
+        out[..., j, i] += sw[..., k]
+        out[..., i, j] -= sw[..., k]
+    return out
 
 
 def _log(r: np.ndarray) -> np.ndarray:
@@ -409,7 +441,7 @@ def _stepped(rot, t, dx) -> tuple[np.ndarray, np.ndarray]:
     t ← exp(δθ) t + δ."""
     d = dx.reshape(dx.shape[0], -1, 6)
     step = _exp(d[..., :3])
-    return step @ rot, np.einsum("mbij,mbj->mbi", step, t) + d[..., 3:]
+    return step @ rot, _times(step, t) + d[..., 3:]
 
 
 def rotation_vectors(rots: np.ndarray) -> np.ndarray:
