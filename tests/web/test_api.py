@@ -212,3 +212,18 @@ def test_move_answers_as_the_option_does(client):
     assert moved["points"]["A@crank"]["velocity"] == pytest.approx([0.0, -10.0], abs=1e-9)
     code, printed = run_cli("explain", str(path), "--move", "j1=90", "--format", "html", "--lang", "eu")
     assert post(client, "explain", model=path.read_text(), move={"j1": 90}, lang="eu").content == printed
+
+
+def test_drawing_endpoints_at_the_same_time(client):
+    """matplotlib is not thread-safe (its mathtext parser fails when two threads parse at
+    once): explanations and figures asked together all answer, each as asked alone."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    text = (EXAMPLES / "four_bar.yaml").read_text(encoding="utf-8")
+    asks = [("explain", {"lang": lang, "move": {"j1": move}}) for lang in ("en", "eu") for move in (30, 90)]
+    asks += [("draw", {"as": "svg", "move": {"j1": 45}}), ("draw", {"as": "png"})]
+    with ThreadPoolExecutor(len(asks)) as pool:
+        answers = list(pool.map(lambda ask: post(client, ask[0], model=text, **ask[1]), asks))
+    assert [a.status_code for a in answers] == [200] * len(asks)
+    alone = post(client, "explain", model=text, lang="eu", move={"j1": 90})
+    assert answers[3].content == alone.content

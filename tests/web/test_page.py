@@ -234,8 +234,8 @@ def test_basque_explanation_of_the_current_position(page):
     set_row(page, 90)
     page.get_by_test_id("language").select_option("eu")
     frame = page.frame_locator("[data-testid=explanation]")
-    frame.locator("html[lang=eu]").wait_for()
-    page.wait_for_function("() => document.getElementById('explanation-where').textContent === 'at j1 +90°'")
+    frame.locator("html[lang=eu]").wait_for(timeout=30000)     # an explanation with figures, on a loaded machine
+    page.wait_for_function("() => document.getElementById('explanation-where').textContent === 'at j1 +90°'", timeout=30000)
     body = frame.locator("body").inner_text()
     assert "Abiadurak" in body and "Azelerazioak" in body
     assert "Velocities" not in body

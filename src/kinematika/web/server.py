@@ -10,6 +10,7 @@ from __future__ import annotations
 import io
 import json
 import os
+import threading
 from dataclasses import dataclass, field
 from importlib import resources
 from typing import Any, Callable, Optional
@@ -234,12 +235,23 @@ def _sweep(req: Request) -> tuple[str, str]:
     return JSON, b"".join(result.json_chunks()) + b"\n"      # as `sweep --json` writes it
 
 
+# matplotlib (text extents, mathtext's parser, the canvases) is not thread-safe: the
+# endpoints that draw take turns; solving and sweeping stay parallel.
+MATPLOTLIB = threading.Lock()
+
+
 def _explain(req: Request) -> tuple[str, str]:
-    return HTML, commands.explain_text(req.model, req.get("lang", "en"), "html",
-                                       req.get("symbolic") or None, req.get("length_unit"), req.how)
+    with MATPLOTLIB:
+        return HTML, commands.explain_text(req.model, req.get("lang", "en"), "html",
+                                           req.get("symbolic") or None, req.get("length_unit"), req.how)
 
 
 def _draw(req: Request) -> tuple[str, Any]:
+    with MATPLOTLIB:
+        return _drawn(req)
+
+
+def _drawn(req: Request) -> tuple[str, Any]:
     from ..draw import DrawOptions
 
     keys = ("velocities", "accelerations", "centres", "curvature", "labels", "points", "view",
@@ -251,14 +263,14 @@ def _draw(req: Request) -> tuple[str, Any]:
         from .scene_json import scene_data
 
         return JSON, commands.json_text({**scene_data(scene), "input": _input(model)})
-    from ..draw.figure import render
+    from ..draw.figure import render, svg_text
 
     fig = render(scene, options)
+    if req.get("as") == "svg":
+        return "image/svg+xml", svg_text(fig)
     out = io.BytesIO()
-    fmt = req.get("as")
-    fig.savefig(out, format=fmt, dpi=110, facecolor="white",
-                metadata={"Date": None} if fmt == "svg" else None)
-    return ("image/svg+xml" if fmt == "svg" else "image/png"), out.getvalue()
+    fig.savefig(out, format="png", dpi=110, facecolor="white")
+    return "image/png", out.getvalue()
 
 
 def _input(model: Any) -> Optional[dict[str, Any]]:
