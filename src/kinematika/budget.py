@@ -6,7 +6,7 @@ import signal
 import threading
 import time
 from contextlib import contextmanager, nullcontext
-from typing import Any, ContextManager, Iterator
+from typing import Any, Callable, ContextManager, Iterator, TypeVar
 
 from .errors import KinematikaError
 from .limits import symbolic_seconds
@@ -16,7 +16,17 @@ class OverBudget(KinematikaError):
     """Symbolic work ran out of its time budget (a `limit` error naming the stage)."""
 
 
+class TimeUp(BaseException):
+    """An optional step ran past its own time (`within`); never seen outside `within`."""
+
+
+POLISH_SHARE = 0.1          # of the budget, the time all optional steps of a command may take
+POLISH_SECONDS = 1.0        # ... and at most this much processor time (formulas past it are
+                            # shown in the form found)
+
 _deadline = threading.local()
+_soft: list[float] = []     # the ends of the optional steps under way (main thread only)
+T = TypeVar("T")
 
 
 def _state() -> list:
@@ -36,9 +46,11 @@ def budget(what: str, seconds: float | None = None) -> Iterator[None]:
     seconds = symbolic_seconds() if seconds is None else seconds
     stack = _state()
     end = time.monotonic() + seconds
+    polish = time.process_time() + min(POLISH_SECONDS, POLISH_SHARE * seconds)   # processor time
     if stack:
         end = min(end, stack[-1][0])
-    stack.append([end, what, seconds, ""])
+        polish = stack[-1][4]
+    stack.append([end, what, seconds, "", polish])
     alarm = _arm(end) if len(stack) == 1 else None
     try:
         yield
@@ -66,8 +78,48 @@ def check(stage: str = "") -> None:
             raise _over()
 
 
+def within(seconds: float, step: Callable[..., T], *args: Any, default: Any = None) -> T:
+    """`step(*args)`, or `default` when it takes more than `seconds` of processor time, or
+    more than is left of the time for optional steps (`POLISH_SECONDS` of a command's
+    budget): for work that only makes a result read better (factoring, trigonometric
+    rewriting), whose cost can jump on a rare input. Processor time, not the clock, so
+    that a loaded machine gives the same forms, only later. In the main thread a timer
+    signal stops a step under way; in other threads a step runs whole until the time for
+    optional steps is spent."""
+    stack = _state()
+    now = time.process_time()
+    if stack:
+        seconds = min(seconds, stack[-1][4] - now)
+    if seconds <= 0:
+        return default
+    if threading.current_thread() is not threading.main_thread() or not hasattr(signal, "setitimer"):
+        return step(*args)
+    previous = signal.signal(signal.SIGVTALRM, _time_up)
+    _soft.append(now + seconds)
+    try:
+        try:
+            signal.setitimer(signal.ITIMER_VIRTUAL, seconds, 0.02)
+            return step(*args)
+        finally:
+            signal.setitimer(signal.ITIMER_VIRTUAL, 0)
+    except TimeUp:
+        return default
+    finally:
+        _soft.pop()
+        signal.setitimer(signal.ITIMER_VIRTUAL, 0)
+        signal.signal(signal.SIGVTALRM, previous)
+        if _soft:                           # an outer step's timer, as it was
+            signal.setitimer(signal.ITIMER_VIRTUAL, max(_soft[-1] - time.process_time(), 0.001), 0.02)
+
+
+def _time_up(signum: int, frame: Any) -> None:
+    """The processor-time timer of `within`: stop the step under way once past its end."""
+    if _soft and time.process_time() + 0.002 >= _soft[-1]:
+        raise TimeUp()
+
+
 def _over() -> OverBudget:
-    _, what, seconds, stage = _state()[-1]
+    _, what, seconds, stage, _ = _state()[-1]
     at = f" ({stage})" if stage else ""
     return OverBudget("limit", f"finding {what} takes longer than {seconds:g} s{at}: they are too "
                       "large; give some parameters numbers, or solve without --symbolic", "")

@@ -60,6 +60,7 @@ def _real_sqrt(x: float) -> float:
 
 MAX_BITS = int(limits.EXACT_DIGITS * math.log2(10)) + 1   # integers of an exact number
 TRIGSIMP_OPS = 40   # radicands simplified by trigsimp up to this size (beyond, it takes seconds)
+TRIGSIMP_SECONDS = 0.3   # ... and for at most this long (`budget.within`)
 
 
 def _radians(x: Any) -> Any:
@@ -135,7 +136,9 @@ class Symbolic:
         sp = self.sp
         x = sp.sympify(x)
         if x.has(sp.sin, sp.cos) and sp.count_ops(x) <= TRIGSIMP_OPS:
-            x = sp.trigsimp(x)
+            from ..budget import within
+
+            x = within(TRIGSIMP_SECONDS, sp.trigsimp, x, default=x)
         elif not x.is_number:
             from .fields import canonical
 

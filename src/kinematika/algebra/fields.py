@@ -20,6 +20,8 @@ import functools
 import time
 from typing import Any, Iterable
 
+from ..budget import within
+
 PRIME_LIMIT = 10 ** 12      # rational radicands up to this size are split into prime roots
 MAX_ROOTS = 40
 
@@ -58,7 +60,7 @@ class ExactField:
         self.sp = sympy
         self.use_roots = roots
         self.max_terms = max_terms          # budget: terms of a value's numerators
-        self.deadline = deadline            # budget: time.monotonic() past which work stops
+        self.deadline = deadline            # budget: time.process_time() past which work stops
         symbols: set = set()
         atoms: dict[Any, None] = {}
         self._scanned: set = set()
@@ -214,7 +216,7 @@ class ExactField:
         return out
 
     def _check(self, x: Value) -> None:
-        if self.deadline is not None and time.monotonic() > self.deadline:
+        if self.deadline is not None and time.process_time() > self.deadline:
             raise TooLarge("out of time")
         if self.max_terms is not None and sum(len(p) for p in x.num.values()) > self.max_terms:
             raise TooLarge("too many terms")
@@ -430,11 +432,11 @@ class ExactField:
                 sines = self.sp.Mul(self.sp.Add(*[self._cosines_reduced(p).as_expr(*syms) * self._roots(m)
                                                   for m, p in sorted(radicand.num.items())]),
                                     *[self.sp.Pow(self._den_expr(f), -k) for f, k in radicand.den.items()])
-                if self.sp.count_ops(sines) <= self.sp.count_ops(shown):
+                if ops(sines) <= ops(shown):
                     shown = sines
             if written is not None:
                 other = self._written(written)
-                if self.sp.count_ops(other) <= self.sp.count_ops(shown):
+                if ops(other) <= ops(shown):
                     shown = other
             if len(_ROOTS_SHOWN) > 4096:
                 _ROOTS_SHOWN.clear()
@@ -593,6 +595,43 @@ MAX_TERMS = 400          # a canonical form is computed within this many numerat
 MAX_SECONDS = 0.4        # ... and this time; past either, the factors' forms are kept
 FACTOR_OPS = 60          # forms factored for reading up to this size (multivariate factoring
                          # is randomised and grows fast: a rare draw takes minutes on a long form)
+FACTOR_SECONDS = 0.3     # ... and for at most this long (`budget.within`), else kept as found
+COMMON_OPS = 600         # larger forms, past reading anyway, are not searched for common factors
+FACTOR_SEED = 1
+
+
+EXACT_OPS = 80           # sizes up to this are sympy's count_ops; above, a quick count
+
+
+def ops(e: Any) -> Any:
+    """The size of formula `e` in operations, as sympy's count_ops for small formulas (so
+    that the choice among short forms is sympy's); for a large one a count of the same
+    kind in one pass over its shared subtrees (count_ops takes a tenth of a second there)."""
+    import sympy
+
+    if e in _OPS:
+        return _OPS[e]
+    quick = _quick_ops(e, {})
+    out = sympy.count_ops(e) if quick <= EXACT_OPS else quick
+    if len(_OPS) > 8192:
+        _OPS.clear()
+    _OPS[e] = out
+    return out
+
+
+_OPS: dict[Any, int] = {}     # a form's size is asked by each step that weighs it
+
+
+def _quick_ops(e: Any, memo: dict) -> int:
+    """Operations of `e`: one per sum or product of two terms, power and function."""
+    if e.is_Atom:
+        return 0
+    if e in memo:
+        return memo[e]
+    args = e.args
+    out = (len(args) - 1 if e.is_Add or e.is_Mul else 1) + sum(_quick_ops(a, memo) for a in args)
+    memo[e] = out
+    return out
 
 
 def canonical(e: Any) -> Any:
@@ -627,7 +666,7 @@ def _canonical(e: Any) -> Any:
     if e.is_Mul or e.is_Pow:
         forms.append(_by_factors(e))
     forms.append(e)
-    sizes = [sympy.count_ops(f) for f in forms]
+    sizes = [ops(f) for f in forms]
     best = min(range(len(forms)), key=sizes.__getitem__)
     # the canonical form, factored, unless another is clearly shorter
     return forms[0] if len(forms) > 2 and sizes[0] <= 1.25 * sizes[best] + 2 else forms[best]
@@ -642,7 +681,7 @@ def _whole(e: Any, max_terms: int = MAX_TERMS, written: bool = False) -> Any:
     for roots in (True, False):
         try:
             field = ExactField([e], roots=roots, max_terms=max_terms,
-                               deadline=time.monotonic() + MAX_SECONDS)
+                               deadline=time.process_time() + MAX_SECONDS)
             value = field.back(field.to(e))
             break
         except DependentRoots:
@@ -653,10 +692,10 @@ def _whole(e: Any, max_terms: int = MAX_TERMS, written: bool = False) -> Any:
         return [] if written else None
     if not value.free_symbols:
         value = sympy.radsimp(value)
-    elif sympy.count_ops(value) <= FACTOR_OPS:
-        value = _factor_outside_roots(value)
-    else:                                   # too large to factor: common factors taken out
-        value = sympy.factor_terms(value)
+    elif ops(value) <= FACTOR_OPS:
+        value = factored(value)
+    elif ops(value) <= COMMON_OPS:          # too large to factor: common factors taken out
+        value = within(FACTOR_SECONDS, sympy.factor_terms, value, default=value)
     if not written:
         return value
     try:
@@ -665,14 +704,27 @@ def _whole(e: Any, max_terms: int = MAX_TERMS, written: bool = False) -> Any:
         return [value]
 
 
-def _factor_outside_roots(e: Any) -> Any:
-    """e factored with its roots as they are (a radicand keeps the way it is written)."""
+def factored(e: Any) -> Any:
+    """e factored with its roots as they are (a radicand keeps the way it is written), or e
+    itself when factoring takes longer than `FACTOR_SECONDS` (`budget.within`)."""
     import sympy
 
     roots = {p: sympy.Dummy() for p in e.atoms(sympy.Pow) if p.exp.is_Rational and not p.exp.is_Integer}
     if not roots:
-        return sympy.factor(e)
-    return sympy.factor(e.xreplace(roots)).xreplace({d: p for p, d in roots.items()})
+        return within(FACTOR_SECONDS, factor, e, default=e)
+    out = within(FACTOR_SECONDS, factor, e.xreplace(roots))
+    return e if out is None else out.xreplace({d: p for p, d in roots.items()})
+
+
+def factor(e: Any) -> Any:
+    """sympy's factor with its random choices drawn the same way every time: multivariate
+    factoring picks random evaluation points, and a rare draw takes far longer; seeded,
+    the same formula is factored alike (and as fast) in every run."""
+    import sympy
+    from sympy.core import random
+
+    random.rng.seed(FACTOR_SEED)
+    return sympy.factor(e)
 
 
 def _by_factors(e: Any) -> Any:

@@ -124,7 +124,9 @@ def _simple(c: Any) -> bool:
     if any(p.exp.is_Rational and not p.exp.is_Integer and p.base.free_symbols
            for p in c.atoms(sympy.Pow)):
         return False
-    return sympy.count_ops(c) <= STAND_IN_OPS
+    from ..algebra.fields import ops
+
+    return ops(c) <= STAND_IN_OPS
 
 
 def _moved_shape(shape: Any, points: dict[str, tuple]) -> Any:
@@ -189,7 +191,7 @@ def _in_stand_ins(e: Any) -> Any:
     """e over one denominator in the stand-ins, factored when small enough."""
     import sympy
 
-    from ..algebra.fields import ExactField, TooLarge
+    from ..algebra.fields import ExactField, TooLarge, factored, ops
 
     try:
         field = ExactField([e], roots=False, max_terms=4 * FACTOR_OPS)
@@ -198,7 +200,7 @@ def _in_stand_ins(e: Any) -> Any:
         return e
     except ZeroDivisionError:
         return e
-    if sympy.count_ops(e) <= FACTOR_OPS:
-        return sympy.factor(e)
+    if ops(e) <= FACTOR_OPS:
+        return factored(e)
     num, den = sympy.fraction(e)
     return sympy.Mul(num, sympy.Pow(den, -1, evaluate=False), evaluate=False)

@@ -76,7 +76,30 @@ def numbers(values: Any, scale: float = 1.0) -> Any:
 
 def formula(x: Any) -> str:
     """A simplified formula in sympy's syntax (`4*Omega/3`, `sqrt(2)*r*w/4`)."""
-    return str(tidy(x))
+    shown = tidy(x)
+    if shown not in _TEXT:
+        if len(_TEXT) > 4096:
+            _TEXT.clear()
+        _TEXT[shown] = _printed(shown)
+    return _TEXT[shown]
+
+
+PLAIN_ORDER_OPS = 1000  # longer formulas are printed with their terms in sympy's stored order
+
+
+def _printed(x: Any) -> str:
+    """sympy's text of `x`; a long formula's sums are not sorted by degree first (sorting
+    takes most of the printing there, and such a formula is read by a program anyway)."""
+    from ..algebra.fields import ops
+
+    if ops(x) <= PLAIN_ORDER_OPS:
+        return str(x)
+    from sympy.printing.str import StrPrinter
+
+    return StrPrinter({"order": "none"}).doprint(x)
+
+
+_TEXT: dict[Any, str] = {}      # printing a long formula takes long: each is printed once
 
 
 def tidy(x: Any) -> Any:
@@ -90,11 +113,27 @@ def tidy(x: Any) -> Any:
     x = sympy.sympify(x)
     if x.is_Atom:
         return x
-    x = canonical(x)
-    if sympy.count_ops(x) > MAX_TIDY_OPS:       # past the budget: the canonical form as it is
+    if x not in _TIDY:
+        if len(_TIDY) > 4096:
+            _TIDY.clear()
+        _TIDY[x] = _tidy(canonical(x))
+    return _TIDY[x]
+
+
+_TIDY: dict[Any, Any] = {}      # remembered: a point's velocity is asked of every body that
+                                # carries it, and answers repeat the tables' entries
+
+
+def _tidy(x: Any) -> Any:
+    """`tidy` of a canonical form."""
+    import sympy
+
+    from ..algebra.fields import ops
+
+    if x.is_Atom or ops(x) > MAX_TIDY_OPS:   # past the budget: the canonical form
         return x
     if x.has(sympy.sin, sympy.cos):
-        deadline = time.monotonic() + TRIG_SECONDS
+        deadline = time.process_time() + TRIG_SECONDS
         x = x.replace(_trig_sum, lambda e: _shortest_trig_form(e, deadline))
     return _absorb_sign(x.replace(_factored_root, _expanded_root))
 
@@ -121,15 +160,28 @@ def _shortest_trig_form(x: Any, deadline: float = float("inf")) -> Any:
     import sympy
     from sympy.simplify.fu import TR6, TR10i
 
+    from ..algebra.fields import factor, ops
+    from ..budget import within
+
+    if x in _SHORTEST:
+        return _SHORTEST[x]
     forms = [x]
-    for rewrite in (TR10i, lambda e: sympy.factor(TR6(e)), _homogeneous):
-        if time.monotonic() > deadline:
+    for rewrite in (TR10i, lambda e: factor(TR6(e)), _homogeneous):
+        left = deadline - time.process_time()
+        if left <= 0:
             break
         try:
-            forms.append(rewrite(x))
+            forms.append(within(left, rewrite, x))
         except (sympy.PolynomialError, TypeError, ValueError):   # a form it cannot take
             continue
-    return min((f for f in forms if f is not None), key=sympy.count_ops)
+    out = min((f for f in forms if f is not None), key=ops)
+    if len(_SHORTEST) > 4096:
+        _SHORTEST.clear()
+    _SHORTEST[x] = out
+    return out
+
+
+_SHORTEST: dict[Any, Any] = {}      # the same sums recur in the formulas of one mechanism
 
 
 def _homogeneous(x: Any) -> Any:
@@ -153,7 +205,9 @@ def _homogeneous(x: Any) -> Any:
     one = sn ** 2 + cs ** 2
     lifted = sum(coeff * sn ** i * cs ** j * one ** ((top - i - j) // 2)
                  for (i, j), coeff in poly.terms())
-    return sympy.factor(lifted)
+    from ..algebra.fields import factor
+
+    return factor(lifted)
 
 
 def _reads_better_negated(total: Any) -> bool:
