@@ -79,9 +79,12 @@ def _matches(got, exp, opts, where):
     if isinstance(exp, dict):
         assert isinstance(got, dict), where
         for key, value in exp.items():
-            if key == "direction" and value is not None and not opts.get("symbolic"):   # either sense
-                sense = -1 if sum(g * e for g, e in zip(got[key], value)) < 0 else 1
-                value = [sense * e for e in value]
+            if key == "direction" and value is not None:                 # either sense
+                try:
+                    _matches(got[key], value, opts, f"{where}.{key}")
+                    continue
+                except AssertionError:
+                    value = [f"-({v})" if isinstance(v, str) else -v for v in value]
             _matches(got[key], value, opts, f"{where}.{key}")
     elif isinstance(exp, list):
         assert isinstance(got, list) and len(got) == len(exp), where

@@ -273,6 +273,15 @@ def geneva_four_slot():
     return [w, al, [rd * u[0], rd * u[1]], [rdd * u[0], rdd * u[1]]]
 
 
+def fb_parallelogram_letters():
+    """B = A + (L, 0) is left of A→O4 at 70° (the cross product of O4 − A and B − A is
+    r L sin 70° > 0), so the coupler translates: ω3 = 0, ω4 = w, its centre at infinity
+    along O2A, v_B = v_A = r w (−sin 70°, cos 70°). (It used to be a long formula in
+    sin(7π/18) and cos(π/9), equal to 0 but not seen to be, and the centre 'zoo'.)"""
+    return ["0", "w", {"point": None, "direction": ["cos(7*pi/18)", "sin(7*pi/18)"]},
+            ["-r*w*sin(7*pi/18)", "r*w*cos(7*pi/18)"]]
+
+
 def geneva_symbolic_theta():
     """tan φ = sin θ/(cos θ − √2): φ' = w (1 − √2 cos θ)/(3 − 2√2 cos θ)."""
     return ["w*(1 - sqrt(2)*cos(theta))/(3 - 2*sqrt(2)*cos(theta))"]
@@ -637,7 +646,7 @@ NUMERIC = {f.__name__: f for f in (
     watt_one, stephenson_slider, stephenson_triad, gear_compound_train, epicyclic_arm, planetary_two_inputs,
     rolling_hypocycloid, rolling_on_plank, rolling_wheel_rod, spherical_crank_rocker, rssr_offset, hooke_joint_60,
     tricycle_steering, forklift_rear_steer)}
-SYMBOLIC = {f.__name__: f for f in (sc_offset_symbolic_theta, isc_oscillating_cylinder_symbolic,
+SYMBOLIC = {f.__name__: f for f in (sc_offset_symbolic_theta, isc_oscillating_cylinder_symbolic, fb_parallelogram_letters,
                                      geneva_symbolic_theta, scotch_yoke_symbolic)}
 ERRORS = {"fb_err_move_past_limit": "assembly", "fb_err_two_drivers": "mobility"}
 

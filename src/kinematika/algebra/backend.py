@@ -138,7 +138,7 @@ class Symbolic:
         if x.has(sp.sin, sp.cos) and sp.count_ops(x) <= TRIGSIMP_OPS:
             from ..budget import within
 
-            x = within(TRIGSIMP_SECONDS, sp.trigsimp, x, default=x)
+            x = within(TRIGSIMP_SECONDS, _trigsimp_keeping_angles, x, default=x)
         elif not x.is_number:
             from .fields import canonical
 
@@ -166,6 +166,21 @@ class Symbolic:
             if not abs(value - x) <= 1e-6 * max(abs(x), 1e-3 * top) + 1e-300:
                 raise ArithmeticError(f"exact solution {brief(str(e))} disagrees with the numeric "
                                       f"one {x:.6g}")
+
+
+def _trigsimp_keeping_angles(x: Any) -> Any:
+    """trigsimp(x) with each numeric angle held as a symbol: alone, trigsimp writes
+    1 − cos²(7π/18) as cos²(π/9), a new atom the exact field cannot relate to sin(7π/18),
+    so that a rate that is zero (a parallelogram's coupler at 70°) was not seen to be."""
+    import sympy as sp
+
+    angles = {f.args[0] for f in x.atoms(sp.sin, sp.cos) if f.args[0].is_number}
+    if not angles:
+        return sp.trigsimp(x)
+    held = {a: sp.Dummy(real=True) for a in angles}
+    simple = sp.trigsimp(x.replace(lambda e: isinstance(e, (sp.sin, sp.cos)) and e.args[0] in held,
+                                   lambda e: e.func(held[e.args[0]])))
+    return simple.xreplace({d: a for a, d in held.items()})
 
 
 def degree(e: Any, memo: dict | None = None) -> int:
