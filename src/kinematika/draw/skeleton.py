@@ -6,7 +6,8 @@ frame of bars) and for any body in space (a shaft with its fork is two bars, not
 triangle). Those are drawn as their skeleton: the shortest tree of bars joining their
 points. In a spherical linkage (every moving body turns about one point O, its points on a
 sphere about O, as the spherical four-bar) each link is drawn instead as great-circle arcs
-on that sphere, between the points where its joints' axes pierce it.
+on that sphere, between the points where its joints' axes pierce it. A Hooke joint is
+drawn as the textbook draws it: two shafts ending in forks (yokes) and the cross between.
 """
 from __future__ import annotations
 
@@ -21,6 +22,11 @@ def add_skeletons(scene: Any, inst: Any, num: Any, geos: dict) -> None:
     """Set `skeleton` on the bodies drawn as trees of bars or as arcs (and `scene.sphere`)."""
     model = inst.model
     xyz = {name: num.vector(p) for name, p in inst.points.items()}
+    hooke = _hooke(model, xyz, geos, num) if scene.dim == 3 else None
+    if hooke is not None:
+        for name, lines in hooke.items():
+            scene.bodies[name].skeleton = [np.array([num.proj(p) for p in line]) for line in lines]
+        return
     sphere = _sphere(model, xyz) if scene.dim == 3 else None
     if sphere is not None:
         centre, radius = sphere
@@ -119,3 +125,50 @@ def _arc(c: np.ndarray, radius: float, a: np.ndarray, b: np.ndarray) -> list[np.
         return [a, b]
     return [c + radius * (np.sin((1 - t) * angle) * u + np.sin(t * angle) * v) / np.sin(angle)
             for t in np.linspace(0, 1, ARC_SAMPLES)]
+
+
+# Hooke (Cardan) joints ----------------------------------------------------------------------
+YOKE_DEPTH = 0.4        # the fork's prongs, as a fraction of the cross's arm
+SHAFT_LENGTH = 1.8      # each shaft from the centre, in arms
+
+
+def _hooke(model: Any, xyz: dict, geos: dict, num: Any) -> Optional[dict]:
+    """The bodies of a Hooke joint as a textbook draws them, or None: a cross held at one
+    point O by two revolute joints with perpendicular axes to two shafts, each shaft turning
+    in a bearing at O. Each shaft is a bar along its bearing ending in a fork (yoke) whose
+    prongs hold the cross's arm; the cross is its two arms."""
+    revolute = [j for j in model.joints if j.type == "revolute" and j.at and geos.get(j.id) is not None
+                and geos[j.id].axis is not None]
+    for cross in model.bodies:
+        own = [j for j in revolute if cross in (j.a, j.b)]
+        if cross == model.frame or len(own) != 2 or len({j.at for j in own}) != 1:
+            continue
+        centre = own[0].at
+        arms = [_unit(num.vector(geos[j.id].axis)) for j in own]
+        if arms[0] is None or arms[1] is None or abs(float(arms[0] @ arms[1])) > 1e-6:
+            continue
+        shafts = [j.b if j.a == cross else j.a for j in own]
+        bearings = [next((b for b in revolute if b.at == centre and set((b.a, b.b)) == {s, model.frame}), None)
+                    for s in shafts]
+        if model.frame in shafts or None in bearings:
+            continue
+        c = xyz[centre]
+        arm = max(float(np.linalg.norm(xyz[p] - c)) for s in shafts for p in model.bodies[s].points)
+        out = {cross: [np.array([c - arm * a, c + arm * a]) for a in arms]}
+        for shaft, bearing, a in zip(shafts, bearings, arms):
+            s = _unit(num.vector(geos[bearing.id].axis))
+            if s is None:
+                return None
+            away = [xyz[p] - c for p in model.bodies[shaft].points if float(np.linalg.norm(xyz[p] - c)) > 0]
+            side = float(np.sign(sum(float(v @ s) for v in away)) or 1.0)
+            s = side * s
+            base = c + YOKE_DEPTH * arm * s
+            out[shaft] = [np.array([base, c + SHAFT_LENGTH * arm * s]),
+                          np.array([c + arm * a, base + arm * a, base - arm * a, c - arm * a])]
+        return out
+    return None
+
+
+def _unit(v: np.ndarray) -> Optional[np.ndarray]:
+    n = float(np.linalg.norm(v))
+    return v / n if n > 0 else None
