@@ -129,6 +129,8 @@ def magnitude_text(sol: Any, value: tuple, magnitude: float) -> str:
 def _centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
     _asked_centres(scene, sol, options, num)
     _normals(scene)
+    if options.centres and scene.dim == 2:
+        _radii(scene, sol, num)
 
 
 def _normals(scene: Scene) -> None:
@@ -150,6 +152,39 @@ def _normals(scene: Scene) -> None:
             scene.normals.append(KennedyLine(f"normal:{j.id}", j.at, n, anchors))
         else:
             same.anchors += anchors
+
+
+def _radii(scene: Scene, sol: Any, num: Numbers) -> None:
+    """A centre found from velocities (a vehicle's unit): the line from it to each pin of
+    its body, the perpendicular to that pin's velocity (the trailer's centre on the line
+    through the tractor's centre and the hitch), unless a line already drawn is that one."""
+    from ..questions.centres import all_centres
+
+    drawn = scene.normals + scene.kennedy
+    for c in all_centres(sol):
+        if c.how != "velocities" or c.value.get("point") is None or sol.model.frame not in c.pair:
+            continue
+        centre = num.page(c.value["point"])
+        for j in scene.joints:
+            if j.type != "revolute" or j.at is None or not set(c.pair) & {j.a, j.b} - {sol.model.frame}:
+                continue
+            d = centre - j.at
+            if np.linalg.norm(d) <= 1e-9 * scene.size:
+                continue
+            same = next((k for k in drawn if _on_line(k, j.at, d, scene.size)), None)
+            if same is not None:
+                same.anchors += [j.at, centre]
+                continue
+            line = KennedyLine(f"radius:{'-'.join(c.pair)}:{j.id}", j.at, d, [j.at, centre])
+            scene.kennedy.append(line)
+            drawn.append(line)
+
+
+def _on_line(k: KennedyLine, p: Any, d: Any, size: float) -> bool:
+    """Whether the line through p along d is the line k."""
+    u = np.asarray(k.direction, float) / np.linalg.norm(k.direction)
+    w = np.asarray(d, float) / np.linalg.norm(d)
+    return abs(float((p - k.through) @ perpendicular(u))) <= 1e-6 * size and abs(float(u @ w)) > 1 - 1e-9
 
 
 def _asked_centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:

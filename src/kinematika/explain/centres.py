@@ -29,6 +29,7 @@ def centres_section(ctx: Ctx) -> Section:
             _kennedy(ctx, note, found, order[:order.index(c)])
         elif c.how == "velocities" and c.finite:
             note.witnesses = _witnesses(ctx, c.pair[1], c.pair[0])
+            _axles(ctx, note)
         sec.blocks.append(note)
     return sec
 
@@ -136,6 +137,25 @@ def _chosen(ctx: Ctx, found: dict) -> list[frozenset]:
                         wanted.append(key)
         i += 1
     return [k for k in keys if k in wanted]
+
+
+def _axles(ctx: Ctx, note: CentreNote) -> None:
+    """A body on knife-edge wheels: its centre where its wheels' axles (the perpendiculars to
+    their planes at the contacts) meet, or an axle and the perpendicular to a known
+    velocity, as the notes construct it (seed 002, C5.2)."""
+    from .vehicles import _lines
+
+    frame, b = note.pair
+    wheels = [j for j in ctx.model.joints if j.type == "wheel" and {j.a, j.b} == {frame, b}]
+    if not wheels:
+        return
+    speeds = {p: ctx.vel(b, p, frame) for p in ctx.model.bodies[b].points}
+    lines = _lines(ctx, b, wheels, speeds)
+    for i, (p, d, why) in enumerate(lines):
+        for q, e, other in lines[i + 1:]:
+            if abs(d[0] * e[1] - d[1] * e[0]) > 1e-6 * _size(ctx, d) * _size(ctx, e):
+                note.how, note.via = "lines", [why, other]
+                return
 
 
 def _clean(ctx: Ctx, value: dict) -> dict:

@@ -17,7 +17,7 @@ from typing import Optional
 
 from ..model.model import Joint
 from .context import Ctx, segment
-from .document import Equation, Name, msg, names
+from .document import Equation, Figure, Name, msg, names
 from .terms import point_term, rotation_terms, target_term
 
 
@@ -84,6 +84,7 @@ def triad_steps(ps, step) -> Optional[list]:
     if lv == "v":
         out.append(msg("triad.intro", body=Name(t, "body"), links=names([l1, l2, l3], "body"),
                        point=Name(s), l1=_seg(e1, i1), l3=_seg(e3, i3)))
+        out.append(_assur_figure(ctx, s, s_xy, (e1, i1), (e3, i3)))
     side1 = [point_term(ctx, lv, e1, k1)] + rotation_terms(ctx, lv, l1, e1, i1, True) + \
         rotation_terms(ctx, lv, t, i1, s, True)
     side3 = [point_term(ctx, lv, e3, k3)] + rotation_terms(ctx, lv, l3, e3, i3, True) + \
@@ -103,6 +104,19 @@ def triad_steps(ps, step) -> Optional[list]:
         out.append(ps.read(link, side[-1], e, i))
     ps.done.add(s)
     return out
+
+
+def _assur_figure(ctx: Ctx, s: str, s_xy: tuple, line1: tuple, line3: tuple) -> Figure:
+    """The mechanism with the lines of the two links drawn on to where they meet, S."""
+    from .structure import mechanism_figure
+
+    fig = mechanism_figure(ctx)
+    fig.arrows = []
+    fig.caption = msg("fig.assur", point=Name(s), l1=_seg(*line1), l3=_seg(*line3))
+    for e, _ in (line1, line3):
+        fig.lines.append((ctx.num(ctx.pos(e)), s_xy))
+    fig.points.append((s, s_xy, "point"))
+    return fig
 
 
 def _seg(q: str, p: str) -> Name:

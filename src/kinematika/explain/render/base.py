@@ -273,6 +273,8 @@ class Renderer:
             why = Msg("centre.kennedy", {"k1": Name(k1, "body"), "k2": Name(k2, "body"),
                                          "l1": [Sym("I", f"{a},{k1}", vector=False), Sym("I", f"{k1},{b}", vector=False)],
                                          "l2": [Sym("I", f"{a},{k2}", vector=False), Sym("I", f"{k2},{b}", vector=False)]})
+        elif c.how == "lines":
+            why = Msg("centre.lines", {"first": c.via[0], "second": c.via[1]})
         elif c.how == "proportional" and len(c.witnesses) == 2:
             why = self.proportional(c)
         elif len(c.witnesses) == 2:
