@@ -75,9 +75,10 @@ def formula(expr: Any, value: float) -> str:
     from ..report.values import tidy
 
     tidied = tidy(expr)
-    if len(str(tidied)) > FORMULA_CHARS:
+    if len(str(tidied).replace("Abs", "")) > FORMULA_CHARS:       # |x| is as short as (x)
         return f"≈ {value:.3g}"
-    text = "$" + latex(tidied).replace(r"\frac", r"\dfrac") + "$"    # full-size fractions
+    body = latex(tidied).replace(r"\left|", "|").replace(r"\right|", "|")   # mathtext: plain bars
+    text = "$" + body.replace(r"\frac", r"\dfrac") + "$"    # full-size fractions
     if not settable(text):
         return f"≈ {value:.3g}"
     return text
