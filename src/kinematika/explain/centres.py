@@ -20,7 +20,8 @@ def centres_section(ctx: Ctx) -> Section:
     sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False))
     order = all_centres(ctx.sol)
     found = {frozenset(c.pair): c for c in order}
-    for key in _chosen(ctx, found):
+    made = {}
+    for key in found:
         c = found[key]
         note = CentreNote(c.pair, _clean(ctx, c.value), c.how, list(c.via))
         if c.how == "joint":
@@ -30,7 +31,8 @@ def centres_section(ctx: Ctx) -> Section:
         elif c.how == "velocities" and c.finite:
             note.witnesses = _witnesses(ctx, c.pair[1], c.pair[0])
             _axles(ctx, note)
-        sec.blocks.append(note)
+        made[key] = note
+    sec.blocks += [made[key] for key in _chosen(ctx, made)]
     return sec
 
 
@@ -120,20 +122,21 @@ def _point_name(ctx: Ctx, body: str, where) -> str | None:
     return None
 
 
-def _chosen(ctx: Ctx, found: dict) -> list[frozenset]:
-    """Every pair for small mechanisms; else the frame's pairs and the centres they need."""
-    keys = list(found)
+def _chosen(ctx: Ctx, notes: dict) -> list[frozenset]:
+    """Every pair for small mechanisms; else the frame's pairs and the centres their notes
+    are found from (the lines' third bodies), so that each centre named is explained."""
+    keys = list(notes)
     if len(keys) <= MAX_ALL:
         return keys
     wanted = [k for k in keys if ctx.frame in k]
     i = 0
     while i < len(wanted):
-        c = found[wanted[i]]
-        if c.how == "kennedy":
-            a, b = c.pair
-            for k in c.via:
+        note = notes[wanted[i]]
+        if note.how in ("kennedy", "proportional"):
+            a, b = note.pair
+            for k in note.via:
                 for key in (frozenset((a, k)), frozenset((k, b))):
-                    if key not in wanted:
+                    if key in notes and key not in wanted:
                         wanted.append(key)
         i += 1
     return [k for k in keys if k in wanted]
