@@ -54,3 +54,22 @@ def test_trailer_centre_on_the_line_through_the_tractor_centre_and_the_hitch():
         return abs(r[0] * d[1] - r[1] * d[0]) <= 1e-6 * scene.size
 
     assert any(on(k, h) and on(k, i12) and on(k, i14) for k in lines)
+
+
+def test_a_bare_figure_has_no_english_words():
+    """A figure embedded in an explanation of any language: far and infinite centres read
+    `I₁₄ = (x, y)` and `I₅₆ → ∞`, not "at"; no "(enlarged)"."""
+    from matplotlib.text import Text
+
+    from kinematika.draw import draw
+
+    for name, options in (("seed_c5_1_4_epicyclic", {"centres": True}),
+                          ("quick_return", {"centres": True, "accelerations": True}),
+                          ("coin_rolling", {})):
+        for bare in (False, True):
+            fig = draw(EXAMPLES / f"{name}.yaml", options=DrawOptions(bare=bare, **options))
+            texts = " ".join(t.get_text() for t in fig.findobj(Text))
+            english = any(w in texts for w in (" at ∞", " at (", "(enlarged)"))
+            assert english != bare, (name, bare, texts)
+            if bare and name != "coin_rolling":
+                assert "→ ∞" in texts or "= (" in texts

@@ -17,6 +17,8 @@ class Canvas:
     view: Box                                  # infinite lines and far things are clipped here
     board: LabelBoard = field(default_factory=LabelBoard)
     labels: bool = True
+    words: bool = True                         # English words in labels ("at ∞"); a bare figure
+                                               # embedded in a page of any language has none
     placement: Optional[Callable[[str], Any]] = None   # body -> extra transform (animation)
     moving: dict = field(default_factory=dict)         # body -> artists that move with it
 

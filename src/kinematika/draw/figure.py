@@ -49,7 +49,7 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
     fig, ax = new_figure(content.grow((CLIP_MARGIN + LABEL_MARGIN) * scene.size), options,
                          len(notes), TRIAD if scene.dim == 3 else 0.0)
     view = _limits(ax).grow(-CLIP_MARGIN * scene.size)   # what the axes show, less a margin
-    cv = Canvas(ax, scene, view, labels=options.labels)
+    cv = Canvas(ax, scene, view, labels=options.labels, words=not options.bare)
     paint_bodies(cv)
     paint_joints(cv)
     paint_curvatures(cv)

@@ -99,7 +99,8 @@ def _far_mark(cv: Canvas, group: list[MarkView]) -> None:
                            color=COLOURS[mark.kind], zorder=11, gid=f"{mark.key}:far"))
     cv.board.avoid(tail, q, weight=3.0)
     x, y = (number(c, cv.size) for c in mark.point)
-    cv.label(tail, f"{group_label(group)} at ({x}, {y})", COLOURS[mark.kind], 2, _key(group), -d)
+    where = f"at ({x}, {y})" if cv.words else f"= ({x}, {y})"
+    cv.label(tail, f"{group_label(group)} {where}", COLOURS[mark.kind], 2, _key(group), -d)
 
 
 def _infinite_mark(cv: Canvas, group: list[MarkView]) -> None:
@@ -113,7 +114,7 @@ def _infinite_mark(cv: Canvas, group: list[MarkView]) -> None:
     cv.add(FancyArrowPatch(q - half, q + half, arrowstyle="<|-|>", mutation_scale=14, lw=1.8,
                            color=COLOURS[mark.kind], zorder=11, gid=f"{_key(group)}:infinity"))
     cv.board.avoid(q - half, q + half, weight=3.0)
-    cv.label(q, f"{group_label(group)} at ∞", COLOURS[mark.kind], 2, _key(group),
+    cv.label(q, f"{group_label(group)} {'at ∞' if cv.words else '→ ∞'}", COLOURS[mark.kind], 2, _key(group),
              np.array([-d[1], d[0]]))
 
 

@@ -97,7 +97,7 @@ def paint_vectors(cv: Canvas, drawn: list[Arrow]) -> None:
         v = arrow.view
         colour = KIND_COLOURS[v.kind]
         text = equation(v.label, "0" if arrow.zero else v.text)
-        if arrow.enlarged:
+        if arrow.enlarged and cv.words:
             text += " (enlarged)"
         if arrow.drawn:
             patch = arrow_patch(arrow, v.key)
