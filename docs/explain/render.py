@@ -1,6 +1,7 @@
-"""Render the six explanations of docs/explain.md as HTML, then PNG through headless Chromium.
+"""Render the six explanations of docs/explain.md in the four languages as HTML, then PNG
+through headless Chromium.
 
-    .venv/bin/python docs/explain/render.py [LANG]
+    .venv/bin/python docs/explain/render.py [LANG ...]
 
 Writes docs/explain/NAME.LANG.html and NAME.LANG.png (a full-page screenshot, trimmed).
 """
@@ -17,8 +18,9 @@ from kinematika.explain import explain
 
 HERE = Path(__file__).resolve().parent
 EXAMPLES = HERE.parents[1] / "examples"
-SIX = {"seed_c5_1_4_epicyclic": "en", "quick_return": "eu", "seed_c5_2_1_tricycle": "ca",
-       "tractor_trailer": "es", "triad_six_bar": "en", "spherical_four_bar": "ca"}
+SIX = ["seed_c5_1_4_epicyclic", "quick_return", "seed_c5_2_1_tricycle", "tractor_trailer", "triad_six_bar",
+       "spherical_four_bar"]
+LANGS = ["en", "es", "ca", "eu"]
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
          "--disable-component-update", "--disable-sync", "--no-first-run", "--hide-scrollbars"]
 
@@ -34,13 +36,12 @@ def shoot(html: Path, png: Path, width: int = 1000, height: int = 30000) -> None
 
 
 def main() -> None:
-    only = sys.argv[1] if len(sys.argv) > 1 else None
-    for name, lang in SIX.items():
-        lang = only or lang
-        html = HERE / f"{name}.{lang}.html"
-        html.write_text(explain(EXAMPLES / f"{name}.yaml", lang=lang, fmt="html"), encoding="utf-8")
-        shoot(html, HERE / f"{name}.{lang}.png")
-        print(html.with_suffix(".png").name)
+    for lang in sys.argv[1:] or LANGS:
+        for name in SIX:
+            html = HERE / f"{name}.{lang}.html"
+            html.write_text(explain(EXAMPLES / f"{name}.yaml", lang=lang, fmt="html"), encoding="utf-8")
+            shoot(html, HERE / f"{name}.{lang}.png")
+            print(html.with_suffix(".png").name, flush=True)
 
 
 if __name__ == "__main__":
