@@ -112,6 +112,12 @@ def within(seconds: float, step: Callable[..., T], *args: Any, default: Any = No
             signal.setitimer(signal.ITIMER_VIRTUAL, max(_soft[-1] - time.process_time(), 0.001), 0.02)
 
 
+def polish_left() -> float:
+    """Processor seconds left for optional steps in the current budget (inf without one)."""
+    stack = _state()
+    return stack[-1][4] - time.process_time() if stack else float("inf")
+
+
 def _time_up(signum: int, frame: Any) -> None:
     """The processor-time timer of `within`: stop the step under way once past its end."""
     if _soft and time.process_time() + 0.002 >= _soft[-1]:

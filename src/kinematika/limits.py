@@ -35,6 +35,8 @@ SWEEP_VALUES = 5_000_000     # rows × numbers per row held at once (under 1 GB 
 
 # symbolic work ----------------------------------------------------------------------------
 SYMBOLIC_SECONDS = 15.0      # wall-clock time for exact formulas (KINEMATIKA_SYMBOLIC_SECONDS overrides)
+POINT_OPS = 2000             # operations of a constructed point's exact coordinate (a four-bar's
+                             # coupler pin has 84; Jansen's leg in its 15 lengths, 14 000 at F)
 
 # the page's server (`kinematika app`) -----------------------------------------------------
 REQUEST_BYTES = FILE_BYTES   # a request's body (a model's text and a few options); 413 beyond

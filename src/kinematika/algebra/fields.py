@@ -20,10 +20,17 @@ import functools
 import time
 from typing import Any, Iterable
 
-from ..budget import within
+from ..budget import polish_left, within
 
 PRIME_LIMIT = 10 ** 12      # rational radicands up to this size are split into prime roots
 MAX_ROOTS = 40
+
+
+PRODUCT_TERMS = 16      # a product of more than this × the budget's terms is not formed
+
+
+def _terms(x: "Value") -> int:
+    return sum(len(p) for p in x.num.values())
 
 
 class TooLarge(ArithmeticError):
@@ -61,6 +68,7 @@ class ExactField:
         self.use_roots = roots
         self.max_terms = max_terms          # budget: terms of a value's numerators
         self.deadline = deadline            # budget: time.process_time() past which work stops
+        self._steps = 0
         symbols: set = set()
         atoms: dict[Any, None] = {}
         self._scanned: set = set()
@@ -188,6 +196,8 @@ class ExactField:
     def mul(self, x: Value, y: Value) -> Value:
         if not x.num or not y.num:
             return self.zero
+        if self.max_terms is not None and _terms(x) * _terms(y) > PRODUCT_TERMS * self.max_terms:
+            raise TooLarge("too many terms")      # before the product is formed, not after
         den = dict(x.den)
         for f, k in y.den.items():
             den[f] = den.get(f, 0) + k
@@ -216,8 +226,9 @@ class ExactField:
         return out
 
     def _check(self, x: Value) -> None:
-        if self.deadline is not None and time.process_time() > self.deadline:
-            raise TooLarge("out of time")
+        self._steps += 1
+        if self.deadline is not None and not self._steps % 32 and time.process_time() > self.deadline:
+            raise TooLarge("out of time")         # the clock read every 32 steps (it is a system call)
         if self.max_terms is not None and sum(len(p) for p in x.num.values()) > self.max_terms:
             raise TooLarge("too many terms")
 
@@ -592,7 +603,8 @@ class RationalField:
 
 
 MAX_TERMS = 400          # a canonical form is computed within this many numerator terms ...
-MAX_SECONDS = 0.4        # ... and this time; past either, the factors' forms are kept
+MAX_SECONDS = 0.4        # ... and this processor time; past either, the factors' forms are kept
+MIN_SECONDS = 0.05       # (the time once the command's time for optional steps is spent)
 FACTOR_OPS = 60          # forms factored for reading up to this size (multivariate factoring
                          # is randomised and grows fast: a rare draw takes minutes on a long form)
 FACTOR_SECONDS = 0.3     # ... and for at most this long (`budget.within`), else kept as found
@@ -681,7 +693,8 @@ def _whole(e: Any, max_terms: int = MAX_TERMS, written: bool = False) -> Any:
     for roots in (True, False):
         try:
             field = ExactField([e], roots=roots, max_terms=max_terms,
-                               deadline=time.process_time() + MAX_SECONDS)
+                               deadline=time.process_time() + max(min(MAX_SECONDS, polish_left()),
+                                                                  MIN_SECONDS))
             value = field.back(field.to(e))
             break
         except DependentRoots:

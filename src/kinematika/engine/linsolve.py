@@ -10,7 +10,7 @@ is solved with the SVD computed for the analysis.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 import numpy as np
 
@@ -171,29 +171,52 @@ def inverse_norm(lu: Any, n: int, steps: int = 5) -> float:
 
 
 def solve_symbolic(an: Analysis, a_sym: Sequence[Sequence[Any]], b_sym: Sequence[Any],
-                   a_num: np.ndarray) -> list[Any]:
-    """Exact solution, block by block in dependency order, in a field of rational functions."""
+                   a_num: np.ndarray, name: Callable[[int, Any], Any] | None = None) -> list[Any]:
+    """Exact solution, block by block in dependency order, in a field of rational functions.
+
+    With `name`, each solved unknown is passed on to later blocks as `name(column, value)`
+    (a stand-in symbol for a compound value): a later loop of a multi-loop linkage is then
+    solved in its own small terms, not with the earlier loops' formulas written in, and
+    each block in its own field of rational functions."""
     from ..algebra.fields import RationalField
 
     n = a_num.shape[1]
-    used = [r for rows, _ in an.blocks for r in rows]
-    entries = [a_sym[r][c] for r in used for c in range(n) if _nonzero(a_num[r, c], a_num)]
-    field = RationalField(entries + [b_sym[r] for r in used])
-    to = field.to
-    x: dict[int, Any] = {}
+    if name is None:
+        used = [r for rows, _ in an.blocks for r in rows]
+        entries = [a_sym[r][c] for r in used for c in range(n) if _nonzero(a_num[r, c], a_num)]
+        field = RationalField(entries + [b_sym[r] for r in used])
+        x: dict[int, Any] = {}
+        for rows, cols in an.blocks:
+            x.update(zip(cols, _solve_block(field, rows, cols, a_sym, b_sym, a_num, x)))
+        return [field.back(x[c]) for c in range(n)]
+    out: dict[int, Any] = {}
+    passed: dict[int, Any] = {}           # what later blocks read of each solved unknown
     for rows, cols in an.blocks:
-        rhs = []
-        for r in rows:
-            value = to(b_sym[r])
-            for c, xc in x.items():
-                if _nonzero(a_num[r, c], a_num):
-                    value -= to(a_sym[r][c]) * xc
-            rhs.append(value)
-        block = [[to(a_sym[r][c]) if _nonzero(a_num[r, c], a_num) else field.domain.zero
-                  for c in cols] for r in rows]
-        solution = _eliminate(block, rhs, a_num[np.ix_(rows, cols)])
-        x.update(zip(cols, solution))
-    return [field.back(x[c]) for c in range(n)]
+        known = {r: b_sym[r] - sum((a_sym[r][c] * v for c, v in passed.items()
+                                    if _nonzero(a_num[r, c], a_num)), 0) for r in rows}
+        entries = [a_sym[r][c] for r in rows for c in cols if _nonzero(a_num[r, c], a_num)]
+        field = RationalField(entries + list(known.values()))
+        solved = _solve_block(field, rows, cols, a_sym, known, a_num, {})
+        for c, value in zip(cols, solved):
+            out[c] = field.back(value)
+            passed[c] = name(c, out[c])
+    return [out[c] for c in range(n)]
+
+
+def _solve_block(field: Any, rows: list[int], cols: list[int], a_sym: Sequence[Sequence[Any]],
+                 b_sym: Any, a_num: np.ndarray, x: dict[int, Any]) -> list[Any]:
+    """One block's unknowns in `field`, the unknowns `x` of earlier blocks known."""
+    to = field.to
+    rhs = []
+    for r in rows:
+        value = to(b_sym[r])
+        for c, xc in x.items():
+            if _nonzero(a_num[r, c], a_num):
+                value -= to(a_sym[r][c]) * xc
+        rhs.append(value)
+    block = [[to(a_sym[r][c]) if _nonzero(a_num[r, c], a_num) else field.domain.zero
+              for c in cols] for r in rows]
+    return _eliminate(block, rhs, a_num[np.ix_(rows, cols)])
 
 
 def _nonzero(value: float, a_num: np.ndarray) -> bool:

@@ -39,10 +39,28 @@ def positions(inst: "Instant", builder: Optional[type] = None) -> dict[str, tupl
         if isinstance(spec, tuple):
             out[name] = inst.vector(spec, where)
         else:
-            out[name] = tuple(inst.backend.simplify(c) for c in builder(inst, out, where).build(spec))
+            built = builder(inst, out, where).build(spec)
+            if inst.symbolic:
+                _check_size(built, name, where)
+            out[name] = tuple(inst.backend.simplify(c) for c in built)
         for turn in turns:
             out[name] = carry(inst, turn, out[name], out)
     return {name: out[name] for name in model.points}
+
+
+def _check_size(coords: tuple, name: str, where: str) -> None:
+    """A `limit` error when a constructed point's exact coordinates are past reading (each
+    circle intersection writes the earlier points into the next: Jansen's leg in its 15
+    lengths reaches 160 000 operations at its foot), before any time goes into them."""
+    from ..algebra.fields import _quick_ops
+    from ..limits import POINT_OPS
+
+    size = max(_quick_ops(c, {}) if hasattr(c, "args") else 0 for c in coords)
+    if size > POINT_OPS:
+        raise KinematikaError("limit", f"the exact coordinates of {name} would have about {size:,} "
+                              f"operations (more than {POINT_OPS:,}): too large for formulas; give "
+                              "the lengths numbers and keep the angle a symbol (null), or solve "
+                              "without --symbolic", where)
 
 
 def _about_pivot(spec: Any, turn: Any) -> bool:

@@ -156,30 +156,40 @@ class InstantSolver:
         standin, values = stand_in_instant(inst)
         twin = InstantSolver(standin)
         a, b_v = twin.matrix(twin.rows(VelocityLevel(u, inst.ref)))
-        x_v = self._solve_exact_level(standin, a, b_v, self.labels, True)
+        x_v = self._solve_exact_level(standin, a, b_v, self.labels, values, "v")
         # the accelerations are solved with the velocities as stand-ins too
         x_w, known = stand_in_values(x_v, standin, "x")
         values.update(known)
         velocities = twin._motion(x_w, None)
         rows_a = twin.rows(AccelerationLevel(KnownTerms(u), inst.ref, velocities))
         x_a = self._solve_exact_level(standin, a, [-r.lin.const for r in rows_a],
-                                      [r.label for r in rows_a], True)
+                                      [r.label for r in rows_a], values, "a")
         self.exact = ExactWorld(standin, twin._motion(x_v, x_a), twin._motion(x_w, x_a),
                                 Reveal(values, set(known)))
         states = {body: self.exact.state(body) for body in self.exact.motion.states}
         return Motion(self.space, inst.ref, states)
 
     def _solve_exact_level(self, standin: Instant, a: list[list[Any]], b: list[Any],
-                           labels: list[str], check: bool) -> list[Any]:
-        """A x = b exactly (in stand-ins), after the numeric solve checks its consistency."""
+                           labels: list[str], values: dict, prefix: str) -> list[Any]:
+        """A x = b exactly (in stand-ins), after the numeric solve checks its consistency.
+        Each compound unknown reaches later blocks as a stand-in too (its value added to
+        `values`, from where it is revealed), so that a later loop is solved in its terms."""
+        from .exact import stand_in_values
+
         b_num = np.array([standin.num(v) for v in b], dtype=float)
         with np.errstate(all="ignore"):
-            x_num = solve_numeric(self.analysis, b_num, labels, self.wheres, self.is_driver, check)
+            x_num = solve_numeric(self.analysis, b_num, labels, self.wheres, self.is_driver, True)
         if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
             raise KinematikaError("schema", "the model's values are too large: its velocities or "
                                   "accelerations overflow the range of floating-point numbers",
                                   "drivers")
-        exact = solve_symbolic(self.analysis, a, b, self.a_num)
+
+        def name(column: int, value: Any) -> Any:
+            (out,), known = stand_in_values([value], standin, f"{prefix}{column}_")
+            values.update(known)
+            return out
+
+        exact = solve_symbolic(self.analysis, a, b, self.a_num, name)
         standin.backend.check_against(exact, x_num, standin.probe)
         return exact
 

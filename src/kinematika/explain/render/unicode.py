@@ -5,7 +5,7 @@ import re
 from functools import lru_cache
 from typing import Any
 
-from ...report.values import tidy
+from ...report.values import formula, tidy
 
 SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
@@ -18,7 +18,7 @@ def _tidy(expr: Any) -> Any:
 
 def unicode_formula(expr: Any) -> str:
     """`sqrt(2)*r**2*w/4` as `√2·r²·w/4`."""
-    text = _bars(str(_tidy(expr)))
+    text = _bars(formula(expr))              # printed once (a long formula takes long to print)
     text = re.sub(r"\*\*(-?\d+)", lambda m: m.group(1).translate(SUPERSCRIPTS), text)
     text = re.sub(r"sqrt\((\w+)\)", r"√\1", text)
     text = text.replace("sqrt(", "√(").replace("**", "^").replace("*", "·")

@@ -1,0 +1,216 @@
+"""Construction-built models solved with --symbolic: the formulas the JSON answer shows,
+evaluated at two sets of values of their symbols, equal hand derivations that never call
+kinematika — each mechanism's output written by loop closure as a function of the crank
+angle and differentiated in time by mpmath at 40 digits (tests/cases/derive.py's
+`motion`), d/dt = ω d/dθ and d²/dt² = ω² d²/dθ² + α d/dθ. The textbook cases of
+tests/cases, solved with every parameter a symbol, equal their hand derivations at the
+cases' values. Also: formulas are exact (no floats), and a construction too large for
+formulas is refused by name."""
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+
+import mpmath
+import pytest
+import sympy as sp
+
+from kinematika.commands import solve_data
+from kinematika.errors import KinematikaError
+from tests.conftest import hand_derivations
+
+ROOT = Path(__file__).resolve().parents[2]
+MODELS = ROOT / "benchmarks" / "models" / "symbolic"
+derive = hand_derivations()
+meet, polar, motion = derive.meet, derive.polar, derive.motion
+CI = bool(os.environ.get("CI"))
+
+
+def sets(*values: dict) -> list:
+    """Parameter sets to check: the model's own values, and others where not in CI."""
+    return list(values[:1] if CI else values)
+
+
+def shown(name: str) -> dict:
+    """`kinematika solve MODEL --symbolic --json`'s answers, in process."""
+    return solve_data(MODELS / f"{name}.yaml", True)
+
+
+def numbers(value, at: dict):
+    """A formula (or nested lists and dicts of them) evaluated at `at` {name: number}."""
+    if isinstance(value, list):
+        return [numbers(v, at) for v in value]
+    if isinstance(value, dict):
+        return {k: numbers(v, at) for k, v in value.items()}
+    names = {k: sp.Symbol(k, positive=True) for k in at}
+    e = sp.sympify(value, locals=names)
+    assert not e.atoms(sp.Float), value[:200]                 # exact: no decimals in a formula
+    with mpmath.workdps(30):                                  # long formulas cancel: 30 digits
+        return float(sp.lambdify(list(names.values()), e, "mpmath")(*[mpmath.mpf(str(v)) for v in at.values()]))
+
+
+def same(got, exp, rel=1e-8, where="") -> None:
+    if isinstance(exp, (list, tuple)):
+        assert len(got) == len(exp), where
+        for i, (g, e) in enumerate(zip(got, exp)):
+            same(g, e, rel, f"{where}[{i}]")
+        return
+    scale = max(abs(float(exp)), 1e-6)
+    assert abs(got - float(exp)) <= rel * scale, (where, got, float(exp))
+
+
+def answers(name: str, at: dict) -> list:
+    return [numbers(a["value"], at) for a in shown(name)["answers"]]
+
+
+# each model by hand --------------------------------------------------------------------------
+def slider_crank(r, l, e, theta, w, al):
+    """B on y = e, ahead of A: x_B = r cos θ + √(l² − (e − r sin θ)²); the rod's angle
+    φ = atan2(e − r sin θ, x_B − r cos θ); G halfway along A-B."""
+    def pos(t):
+        ax, ay = r * mpmath.cos(t), r * mpmath.sin(t)
+        xb = ax + mpmath.sqrt(l ** 2 - (e - ay) ** 2)
+        return [xb, mpmath.atan2(e - ay, xb - ax), (ax + xb) / 2, (ay + e) / 2]
+
+    _, v, a = motion(pos, theta, w, al)
+    return v, a
+
+
+@pytest.mark.parametrize("at", sets(dict(r=0.05, l=0.2, e=0.02, theta=1.0471975511965976, w=150, al=10),
+                                     dict(r=0.7, l=2.3, e=0.4, theta=4.1, w=-3, al=2.5)))
+def test_offset_slider_crank(at):
+    v, a = slider_crank(**at)
+    same(answers("slider_crank_offset", at),
+         [[v[0], 0], [a[0], 0], v[1], a[1], [v[2], v[3]], [a[2], a[3]]])
+
+
+def test_in_line_slider_crank():
+    at = dict(r=0.3, l=1.1, theta=2.2, w=7)
+    v, a = slider_crank(e=0, al=0, **at)
+    same(answers("slider_crank_general", at), [[v[0], 0], [a[0], 0], v[1], a[1]])
+
+
+@pytest.mark.parametrize("at", sets(dict(r=0.1, d=0.3, theta=1.0471975511965976, w=20, al=5),
+                                     dict(r=1.3, d=0.8, theta=2.7, w=-1.5, al=0.3)))
+def test_inverted_slider_crank(at):
+    """The rod's angle φ = atan2(A − O4) and the block's distance ρ = |A − O4|: seen from
+    the rod the block slides ρ' along it; the rod's point at A moves with φ', φ''."""
+    r, d = at["r"], at["d"]
+
+    def pos(t):
+        x, y = r * mpmath.cos(t) - d, r * mpmath.sin(t)
+        return [mpmath.atan2(y, x), mpmath.sqrt(x * x + y * y)]
+
+    (phi, rho), (w4, rho_d), (al4, _) = motion(pos, at["theta"], at["w"], at["al"])
+    u = [math.cos(phi), math.sin(phi)]
+    got = answers("inverted_slider_crank_general", at)
+    same(got[:3], [w4, al4, [rho_d * u[0], rho_d * u[1]]])
+    # A of the rod: α k × ρu − ω² ρu
+    same(got[4], [-al4 * rho * u[1] - w4 ** 2 * rho * u[0], al4 * rho * u[0] - w4 ** 2 * rho * u[1]])
+
+
+@pytest.mark.parametrize("at", sets(dict(r=0.2, d=0.1, R=0.15, l=0.45, theta=1.0471975511965976, w=5),
+                                     dict(r=1.1, d=0.35, R=0.6, l=2.0, theta=3.9, w=2)))
+def test_whitworth(at):
+    """φ = atan2(A − O4), O4 = (0, −d); B = O4 − R(cos φ, sin φ); the ram C on y = −d
+    ahead of B: x_C = x_B + √(l² − R² sin² φ)."""
+    r, d, big_r, l = at["r"], at["d"], at["R"], at["l"]
+
+    def pos(t):
+        phi = mpmath.atan2(r * mpmath.sin(t) + d, r * mpmath.cos(t))
+        xb = -big_r * mpmath.cos(phi)
+        return [xb + mpmath.sqrt(l ** 2 - (big_r * mpmath.sin(phi)) ** 2), phi]
+
+    _, (vc, w4), (ac, al4) = motion(pos, at["theta"], at["w"])
+    same(answers("whitworth", at), [[vc, 0], [ac, 0], w4, al4])
+
+
+@pytest.mark.parametrize("at", sets(dict(theta=1.0471975511965976, w=10), dict(theta=1.9, w=-4)))
+def test_watt_six_bar_at_a_general_angle(at):
+    """Loop 1 (O2, O4 = (4, 0); 1, 4, 3) turns the rocker by φ4(t) − φ4(θ), carrying C,
+    drawn at (5, 0) at the instant; loop 2 closes C-D-O6 (4, 3) with O6 = (8, 0)."""
+    o4, o6 = [4, 0], [8, 0]
+
+    def rocker(t):
+        b = meet(polar([0, 0], 1, t), 4, o4, 3, 1)
+        return mpmath.atan2(b[1], b[0] - 4)
+
+    with mpmath.workdps(40):
+        drawn = rocker(mpmath.mpf(at["theta"]))
+
+    def pos(t):
+        c = polar(o4, 1, rocker(t) - drawn)
+        dd = meet(c, 4, o6, 3, 1)
+        return [mpmath.atan2(dd[1], dd[0] - 8)]
+
+    _, (w6,), (al6,) = motion(pos, at["theta"], at["w"])
+    same(answers("watt_six_bar_theta", at), [w6, al6])
+
+
+@pytest.mark.parametrize("at", sets(dict(a=3, b=7.5, c=8, d=9, p=4, delta=0.5235987755982988,
+                                          theta=2.0943951023931957, w=10),
+                                     dict(a=1.2, b=3.1, c=2.6, d=2.9, p=1.7, delta=-0.4, theta=0.8, w=-2)))
+def test_four_bar_coupler_point(at):
+    """B where the circles (A, b) and (O4, c) meet, left of A→O4; P = A + p(cos, sin)(φ3 + δ)
+    with φ3 the angle of AB (Norton's coupler point)."""
+    a, b, c, d, p, delta = (at[k] for k in "a b c d p delta".split())
+
+    def pos(t):
+        pa = polar([0, 0], a, t)
+        pb = meet(pa, b, [d, 0], c, 1)
+        phi3 = mpmath.atan2(pb[1] - pa[1], pb[0] - pa[0])
+        return [pa[0] + p * mpmath.cos(phi3 + delta), pa[1] + p * mpmath.sin(phi3 + delta), phi3]
+
+    _, v, acc = motion(pos, at["theta"], at["w"])
+    if at["delta"] < 0:                          # a symbol is positive: δ < 0 is δ + 2π
+        at = dict(at, delta=at["delta"] + 2 * math.pi)
+    same(answers("four_bar_coupler_point", at), [v[:2], acc[:2], v[2]])
+
+
+# the textbook cases, every parameter a symbol --------------------------------------------------
+HEAVY = {"tb_fourbar_coupler_point", "tb_fourbar_inclined_ground", "tb_watt_six_bar"}   # long
+NUMERIC_CASES = [pytest.param(n, marks=pytest.mark.slow) if n in HEAVY else n for n in sorted(derive.NUMERIC)
+                 if not (CI and n in HEAVY)]        # formulas: seconds to read back; not in CI
+
+
+@pytest.mark.parametrize("name", NUMERIC_CASES)
+def test_textbook_case_with_every_parameter_a_symbol(name):
+    """Solved with --symbolic and evaluated at the case's values, each answer equals the
+    case's hand derivation (the cases without parameters are exact numbers with roots)."""
+    from kinematika.api import as_model
+    from kinematika.algebra.backend import Numeric
+    from kinematika.model.expressions import evaluate
+
+    path = ROOT / "tests" / "cases" / f"{name}.yaml"
+    model = as_model(path)
+    at: dict = {}
+    for p in model.parameters.values():                 # the cases' parameters are plain values
+        at[p.name] = evaluate(p.value, dict(at), Numeric())
+    out = solve_data(path, True)
+    assert out["symbolic"] is True
+    expected = derive.expected(name)["answers"]
+    for i, (got, exp) in enumerate(zip(out["answers"], expected)):
+        _close(numbers(got["value"], at), exp, f"{name} answers[{i}]")
+
+
+def _close(got, exp, where):
+    """As the cases' rules: numbers within 1e-9 relative (or 1e-9 absolute)."""
+    if isinstance(exp, dict):
+        for k in exp:
+            _close(got[k], exp[k], f"{where}.{k}")
+    elif isinstance(exp, (list, tuple)):
+        assert len(got) == len(exp), where
+        for i, (g, e) in enumerate(zip(got, exp)):
+            _close(g, e, f"{where}[{i}]")
+    elif isinstance(exp, (int, float)):
+        assert abs(got - exp) <= max(1e-9 * max(abs(got), abs(exp)), 1e-9), (where, got, exp)
+
+
+def test_a_construction_too_large_for_formulas_is_refused_by_name():
+    """Jansen's leg in its 15 lengths: the foot's coordinates would have 160 000 operations;
+    refused at the first point past the limit, with the way out."""
+    with pytest.raises(KinematikaError) as err:
+        solve_data(ROOT / "examples" / "jansen_leg.yaml", True)
+    assert err.value.kind == "limit" and err.value.where == "points.F"
+    assert "null" in str(err.value) and "--symbolic" in str(err.value)
