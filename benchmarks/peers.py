@@ -1,10 +1,12 @@
-"""The peers' versions of the benchmark cases: pylinkage and `mechanism` (run in .venv-bench).
+"""The peers' versions of the benchmark cases: pylinkage, `mechanism` and sympy (run in .venv-bench).
 
 Each `*_work(n)` function does the benchmark's work for n positions of a crank turn at
 10 rad/s: positions, velocities and accelerations of every point and ω, α of every body
 (the peers give points only; ω and α of a link follow from two of its points:
 ω = (r × Δv)/|r|², α = (r × Δa)/|r|², done with numpy). Build functions are not timed.
 Run as a script (`python peers.py TOOL CASE N`) it is a peer's whole process, for timing.
+`python peers.py sympy four_bar_general 0` derives by hand with sympy what
+`kinematika solve benchmarks/models/symbolic/four_bar_general.yaml --symbolic` answers.
 """
 from __future__ import annotations
 
@@ -122,9 +124,37 @@ def mechanism_work(model) -> None:
     model.iterate()
 
 
+# sympy ---------------------------------------------------------------------------------------
+def sympy_four_bar() -> dict:
+    """The general four-bar (crank a at angle θ turning at w, coupler b, rocker c, ground d)
+    as a user would derive it with sympy: B where the circles about A and O4 meet (the left
+    one), the velocity loop a ω₂ k×(A−O2) + ω₃ k×(B−A) − ω₄ k×(B−O4) = 0 solved for ω₃, ω₄,
+    differentiated in time for α₃ (θ' = w), each result simplified."""
+    import sympy as sp
+
+    a, b, c, d, w = sp.symbols("a b c d w", positive=True)
+    th = sp.symbols("theta", real=True)
+    ax, ay = a * sp.cos(th), a * sp.sin(th)
+    dx, dy = d - ax, -ay
+    d2 = dx ** 2 + dy ** 2
+    f = (b ** 2 - c ** 2 + d2) / (2 * d2)
+    h = sp.sqrt(b ** 2 / d2 - f ** 2)
+    bx, by = ax + f * dx - h * dy, ay + f * dy + h * dx
+    w3, w4 = sp.symbols("omega3 omega4")
+    va = sp.Matrix([-w * ay, w * ax])
+    loop = va + w3 * sp.Matrix([-(by - ay), bx - ax]) - w4 * sp.Matrix([-by, bx - d])
+    sol = sp.solve(list(loop), [w3, w4], dict=True)[0]
+    out = {"omega coupler": sp.simplify(sol[w3]), "omega rocker": sp.simplify(sol[w4])}
+    out["alpha coupler"] = sp.simplify(sp.diff(sol[w3], th) * w)
+    return out
+
+
 if __name__ == "__main__":
     tool, case, n = sys.argv[1], sys.argv[2], int(sys.argv[3])
-    if tool == "pylinkage":
+    if tool == "sympy":
+        found = sympy_four_bar()
+        print({k: len(str(v)) for k, v in found.items()})
+    elif tool == "pylinkage":
         linkage, links = pylinkage_build(case, n)
         pos, vel, acc, rates = pylinkage_work(linkage, links, n, fast=len(sys.argv) < 5)
         print(f"{case}: {n} positions, speed up to {np.abs(vel).max():.4g}")
