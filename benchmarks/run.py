@@ -216,32 +216,15 @@ def start_up_and_output(repeat: int, big_rows: int) -> dict[str, float]:
     return out
 
 
-FOUR_BAR_FAMILY = """
-parameters: {g: 4, a: 1, b: 4, c: 3, theta: deg(90)}
-points:
-  O2: [0, 0]
-  O4: [g, 0]
-  A: {from: O2, distance: a, angle: theta}
-  B: {circles: [[A, b], [O4, c]], side: left}
-  P: {frame: [A, B], at: [2, 1]}
-bodies: {ground: [O2, O4], crank: [O2, A], coupler: [A, B, P], rocker: [O4, B]}
-joints:
-  - {type: revolute, bodies: [ground, crank], at: O2}
-  - {type: revolute, bodies: [crank, coupler], at: A}
-  - {type: revolute, bodies: [coupler, rocker], at: B}
-  - {type: revolute, bodies: [ground, rocker], at: O4}
-drivers: [{omega: crank, value: 10, alpha: 0}]
-"""
-
-
 def batch(designs: int, chunk: int = 64) -> tuple[float, int]:
     """CPU seconds for `designs` four-bars (crank a, rocker c varied on a grid) over 361
     positions each, by the batch kernel in chunks of `chunk` designs (explore's size), and
     how many it solved."""
+    from explore import MODEL              # the design-study benchmark's four-bar family
     from kinematika.api import as_model
     from kinematika.sweep.batch import BatchSweeper
 
-    sweeper = BatchSweeper(as_model(FOUR_BAR_FAMILY, "yaml"), ["a", "c"], steps=360)
+    sweeper = BatchSweeper(as_model(MODEL, "yaml"), ["a", "c"], steps=360)
     side = int(np.ceil(np.sqrt(designs)))
     a, c = (v.ravel()[:designs] for v in np.meshgrid(np.linspace(0.5, 1.5, side), np.linspace(2, 4, side)))
     sweeper.run({"a": a[:chunk], "c": c[:chunk]})                # warm
