@@ -73,3 +73,10 @@ def test_a_bare_figure_has_no_english_words():
             assert english != bare, (name, bare, texts)
             if bare and name != "coin_rolling":
                 assert "→ ∞" in texts or "= (" in texts
+
+
+def test_a_bare_figure_numbers_its_bodies():
+    """An explanation names bodies by number (ω_2, I_12): its figures say which is which."""
+    plain = scene_of("triad_six_bar")
+    bare = scene_of("triad_six_bar", bare=True)
+    assert not plain.numbered and bare.numbered

@@ -178,16 +178,17 @@ def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = No
         scene.notes.append(_values_note(num.values, model.draw_at))
     if sol is not None:
         add_results(scene, sol, options, num)
-    _number_bodies(scene)
+    _number_bodies(scene, options.bare)
     return scene
 
 
-def _number_bodies(scene: Scene) -> None:
+def _number_bodies(scene: Scene, always: bool = False) -> None:
     """When a label names a body by its number, the bodies are numbered on the figure and
-    the numbering is listed under it."""
+    the numbering is listed under it; `always` for a figure set in a text that names the
+    bodies by number (an explanation's ω_3, I_13)."""
     labels = [v.label for v in scene.vectors] + [m.label for m in scene.marks] + \
         [c.label for c in scene.curvatures]
-    if not any(numbered(text) for text in labels):
+    if not always and not any(numbered(text) for text in labels):
         return
     scene.numbered = True
     order = ", ".join(f"{b.number} {b.name}" for b in sorted(scene.bodies.values(),

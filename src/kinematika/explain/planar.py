@@ -90,7 +90,14 @@ class PlanarSteps:
 
     def input(self, step: Step, chain: list[Joint]) -> Optional[list]:
         body, j = step.bodies[0], chain[0]
-        out: list = [self.rate(body) if j.type == "revolute" else self.same(body, self.ctx.frame, j)]
+        given = any(d.kind == "omega" and d.body == body and d.relative_to in (None, self.ctx.frame)
+                    for d in self.ctx.model.drivers)
+        if j.type != "revolute":
+            out: list = [self.same(body, self.ctx.frame, j)]
+        elif given and self.ctx.symbolic:
+            out = []            # "Given: ω_2 = w" says it all (no sense to add to a formula)
+        else:
+            out = [self.rate(body)]
         if j.type == "revolute":
             self.done.add(self.ctx.point_label(j.at, body))
             out.append(msg("input.revolute", body=body_(body), point=point(j.at)))

@@ -328,7 +328,7 @@ group-wheel_a = La roda { $joint } no llisca lateralment en cap instant i el seu
     } té una part tangencial al pla i una de normal perpendicular al pla, { $w } × { $v }.
 how-translation = (es trasllada)
 fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy i perpendiculars a rodes i ranures).
-fig-assur = El punt d’Assur { $point }: les rectes { $l1 } i { $l3 } (a traços) perllongades fins que es tallen; { $point } es pren com a punt del sòlid ternari.
+fig-assur = El punt d’Assur { $point }: les rectes { $l1 } i { $l3 } (a traços) perllongades fins que es tallen; { $point } es pren com a punt de la barra ternària.
 fig-drawn_at = Dibuixat amb { $values }.
 fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt (blau) acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, les velocitats relatives de les equacions anteriors (negre), l’una darrere l’altra.
 fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt (blau) acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors (negre: normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
