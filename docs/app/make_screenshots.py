@@ -76,12 +76,18 @@ def main() -> None:
             page.wait_for_timeout(300)
             page.screenshot(path=HERE / "error.png", clip={"x": 0, "y": 0, "width": 1440, "height": 720})
             for name, k in (("quick_return.yaml", 60), ("planetary_gears.yaml", 0),
-                            ("jansen_leg.yaml", 200), ("robot_arm_3d.yaml", 0)):
+                            ("jansen_leg.yaml", 200), ("robot_arm_3d.yaml", 60),
+                            ("spherical_four_bar.yaml", 24)):
                 example(page, name)
                 if k:
                     slide(page, k)
                 page.screenshot(path=HERE / name.replace(".yaml", ".png"),
                                 clip={"x": 0, "y": 0, "width": 1440, "height": 1000})
+            phone = browser.new_page(viewport={"width": 390, "height": 844}, bypass_csp=True)
+            phone.goto(url)
+            ready(phone)
+            slide(phone, 125)
+            phone.screenshot(path=HERE / "phone.png")
             browser.close()
     finally:
         proc.terminate()

@@ -398,3 +398,34 @@ def test_a_phone_sees_the_whole_page_width(browser, server):
         box = pg.get_by_test_id(part).bounding_box()
         assert box["x"] >= 0 and box["x"] + box["width"] <= 390, part
     context.close()
+
+
+def test_a_3d_figure_follows_the_slider(page, capsys):
+    """The spherical four-bar moves with the slider, not only where it settles. By hand:
+    A turns about z on its cone, at an input of k° A = (−sin 30° sin k, sin 30° cos k,
+    cos 30°); B stays 70° from A and 50° from D = (sin 60°, 0, cos 60°)."""
+    path = EXAMPLES / "spherical_four_bar.yaml"
+    page.get_by_test_id("example").select_option(path.name)
+    page.wait_for_function("() => window.kinematika.state.solution.name === 'Spherical four-bar'")
+    ready(page)
+    P = page.evaluate("window.kinematika.state.scene.projection")
+    on_page = lambda x: [sum(r * c for r, c in zip(row, x)) for row in P]
+    rows = sweep_rows(path)
+    d = [math.sin(math.radians(60)), 0, math.cos(math.radians(60))]
+    angle = lambda u, v: math.degrees(math.acos(sum(a * b for a, b in zip(u, v))))
+    times = []
+    for k in (7, 24, 50, 67):
+        times.append(set_row(page, k))                 # at once: not waiting for it to settle
+        dots = page.evaluate("""() => Object.fromEntries(['A', 'B'].map((p) => {
+            const c = document.querySelector(`#figure [data-point=${p}]`);
+            return [p, [+c.getAttribute('cx'), -c.getAttribute('cy')]]; }))""")
+        t = math.radians(rows["coordinate"][k])
+        a = [-0.5 * math.sin(t), 0.5 * math.cos(t), math.cos(math.radians(30))]
+        assert rows["coordinate"][k] == 5 * k
+        assert dots["A"] == pytest.approx(on_page(a), abs=1e-9)
+        b = rows["points"]["B@coupler"]["position"][k]
+        assert (angle(a, b), angle(b, d)) == pytest.approx((70, 50), abs=1e-6)
+        assert dots["B"] == pytest.approx(on_page(b), abs=1e-9)
+    with capsys.disabled():
+        print(f"\n[page] 3D slider to painted frame: median {statistics.median(times):.1f} ms, "
+              f"max {max(times):.1f} ms over {len(times)} positions")

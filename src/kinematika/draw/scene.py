@@ -157,13 +157,14 @@ class Scene:
 
 # building --------------------------------------------------------------------------------
 def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = None,
-                solver: Any = None) -> Scene:
-    """The scene of an evaluated instant; with a `Solution`, also the results to show."""
+                solver: Any = None, proj: Optional[Projection] = None) -> Scene:
+    """The scene of an evaluated instant; with a `Solution`, also the results to show.
+    `proj`: another map to the page than the options' view (the page's 3D twin, whose first coordinate is the depth)."""
     from .results import add_results   # results read the Solution; geometry needs only inst
 
     options = options or DrawOptions()
     model = inst.model
-    proj = projection(model.dimension, options.view, model.up)
+    proj = proj or projection(model.dimension, options.view, model.up)
     num = Numbers(inst, proj, drawing_values(inst))
     bodies = _bodies(inst, num)
     box, size = _extent(bodies, inst)

@@ -12,7 +12,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
-from typing import Any
+from typing import Any, Optional
 
 import numpy as np
 
@@ -21,9 +21,10 @@ from ..draw.scene import Scene
 
 
 
-def scene_data(scene: Scene) -> dict[str, Any]:
-    """The scene as plain data (lists of floats, texts, runs for labels)."""
-    return {
+def scene_data(scene: Scene, twin: Optional[Scene] = None) -> dict[str, Any]:
+    """The scene as plain data (lists of floats, texts, runs for labels); for a 3D model
+    with its depth `twin` (`depth_twin`), also the model coordinates of what is drawn."""
+    data = {
         "name": scene.name, "dimension": scene.dim, "size": scene.size, "box": list(scene.box),
         "view": scene.projection.view,
         "bodies": {name: {"number": b.number, "colour": b.colour, "frame": b.frame,
@@ -44,6 +45,48 @@ def scene_data(scene: Scene) -> dict[str, Any]:
         "notes": [_unmath(n) for n in scene.notes],
         "style": STYLE,
     }
+    if twin is not None:
+        _add_model_coordinates(data, scene, twin)
+    return data
+
+
+def depth_twin(scene: Scene, sol: Any, options: Any) -> Scene:
+    """The scene of a 3D model built again with a map whose first page coordinate is the
+    depth along the view (the same bodies, arcs, shapes and joints, in the same order):
+    with it, every drawn coordinate has its point in space, which the page turns with the
+    sweep's rotations so that the figure follows the slider."""
+    from ..draw.projection import Projection
+    from ..draw.scene import build_scene
+
+    P = scene.projection.matrix
+    towards = np.cross(P[0], P[1])
+    return build_scene(sol.inst, None, options, solver=getattr(sol, "solver", None),
+                       proj=Projection(np.vstack([towards, P[0]]), "depth"))
+
+
+def _add_model_coordinates(data: dict, scene: Scene, twin: Scene) -> None:
+    """`…_xyz` twins of the drawn coordinates (points, skeletons, shapes' vertices and
+    centres, joints' places) and the `projection` (2 × 3) that maps them to the page."""
+    P = scene.projection.matrix
+    towards = np.cross(P[0], P[1])
+
+    def lift(page: Any, depth: Any) -> Any:
+        q, d = np.asarray(page, dtype=float), np.asarray(depth, dtype=float)
+        return _floats(q[..., :1] * P[0] + q[..., 1:2] * P[1] + d[..., :1] * towards)
+
+    data["projection"] = _floats(P)
+    for name, b in scene.bodies.items():
+        t, out = twin.bodies[name], data["bodies"][name]
+        out["points_xyz"] = {p: lift(xy, t.points[p]) for p, xy in b.points.items()}
+        out["skeleton_xyz"] = [lift(line, deep) for line, deep in zip(b.skeleton, t.skeleton)]
+        for shape, deep, plain in zip(b.shapes, t.shapes, out["shapes"]):
+            if shape.vertices is not None:
+                plain["vertices_xyz"] = lift(shape.vertices, deep.vertices)
+            if shape.center is not None:
+                plain["center_xyz"] = lift(shape.center, deep.center)
+    for joint, deep, plain in zip(scene.joints, twin.joints, data["joints"]):
+        if joint.at is not None and deep.at is not None:
+            plain["at_xyz"] = lift(joint.at, deep.at)
 
 
 STYLE = {"velocity": style.VELOCITY, "acceleration": style.ACCELERATION, "centre": style.CENTRE,

@@ -258,11 +258,16 @@ def _drawn(req: Request) -> tuple[str, Any]:
             "width")
     options = DrawOptions(**{k: req.get(k) for k in keys})
     model = req.how.model(req.model)
-    scene = commands.draw_scene(model, options)
     if req.get("as") == "data":
-        from .scene_json import scene_data
+        from ..api import solve
+        from ..draw.scene import build_scene
+        from .scene_json import depth_twin, scene_data
 
-        return JSON, commands.json_text({**scene_data(scene), "input": _input(model)})
+        sol = solve(model)                    # as commands.draw_scene, keeping the solution
+        scene = build_scene(sol.inst, sol, options)
+        twin = depth_twin(scene, sol, options) if scene.dim == 3 else None
+        return JSON, commands.json_text({**scene_data(scene, twin), "input": _input(model)})
+    scene = commands.draw_scene(model, options)
     from ..draw.figure import render, svg_text
 
     fig = render(scene, options)

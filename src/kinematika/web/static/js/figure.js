@@ -1,6 +1,8 @@
 // The mechanism as SVG, painted from the API's scene (what `kinematika draw` paints) and
 // moved through the sweep's rows: each body turns by its swept `angle` about one of its
-// points, which goes to its swept position (as `kinematika animate` does). Results that only
+// points, which goes to its swept position (as `kinematika animate` does). A 3D body turns
+// in space (its `angle` is a rotation vector) and is projected again: the scene gives the
+// model coordinates of what it draws (`…_xyz`) and the projection. Results that only
 // the scene holds (instant centres, Kennedy lines, curvature circles, relative vectors) are
 // shown at the position the scene was solved at.
 import { el, runsText, num, shown } from "./svg.js";
@@ -26,7 +28,9 @@ export class Figure {
   /** A new scene (solved at sweep row `sceneRow`), and the sweep it moves through (or null). */
   set(scene, sweep, sceneRow = 0) {
     this.scene = scene;
-    this.sweep = sweep && scene.dimension === 2 ? sweep : null;
+    this.P = scene.dimension === 3 && scene.projection ? scene.projection : null;   // 2 × 3
+    this.raw = sweep && (scene.dimension === 2 || this.P) ? sweep : null;
+    this.sweep = this.raw && onPage(this.raw, this.P);
     this.sceneRow = sceneRow;
     this.row = sceneRow;
     this.paint();
@@ -65,6 +69,7 @@ export class Figure {
                vectors: g("vectors"), labels: g("labels"), handles: g("handles") };
     this.anchors = {};
     this.bodyGroups = {};
+    this.tracked = [];          // 3D: elements placed from model coordinates at every row
     this.paintTraces();
     this.paintBodies();
     this.paintJoints();
@@ -137,6 +142,10 @@ export class Figure {
       }
       const g = this.bodyGroup(name);
       this.anchors[name] = this.anchor(name, b);
+      if (this.P && this.sweep && b.points_xyz) {
+        this.paintBody3(name, b, g);
+        continue;
+      }
       if (b.skeleton && b.skeleton.length) {       // a carrier's arms, a chassis, a 3D body's bars
         for (const shape of b.shapes) this.movingShape(g, b, shape);
         for (const line of b.skeleton) this.bar(g, line, b.colour, 8);
@@ -164,8 +173,32 @@ export class Figure {
     }
   }
 
+  /** A 3D body, its parts kept with their model coordinates to be moved (`move3`). */
+  paintBody3(name, b, g) {
+    for (const [i, shape] of b.shapes.entries()) {
+      const node = this.movingShape(g, b, shape);
+      if (node && shape.vertices_xyz) this.track(node, name, "points", shape.vertices_xyz);
+    }
+    if (b.skeleton && b.skeleton.length) {
+      b.skeleton.forEach((line, i) => this.track(this.bar(g, line, b.colour, 8), name, "points", b.skeleton_xyz[i]));
+      return;
+    }
+    const pts = distinct(Object.values(b.points_xyz), 1e-9 * this.size);
+    if (pts.length < 2) return;
+    const [p, q] = extremes(pts);
+    const line = el("line", { stroke: b.colour, "stroke-opacity": 0.9, "stroke-width": 8, "stroke-linecap": "round",
+                              class: "shape" }, g);
+    this.track(line, name, "line", [p, q]);
+  }
+
+  /** Keep `node` of `body` to be placed from its model coordinates `xyz` at every row (3D). */
+  track(node, body, kind, xyz) {
+    if (this.P && this.sweep && body && xyz) this.tracked.push({ node, body, kind, xyz });
+    return node;
+  }
+
   bar(g, line, colour, width) {
-    el("polyline", { points: poly(line), fill: "none", stroke: colour, "stroke-opacity": 0.9, "stroke-width": width,
+    return el("polyline", { points: poly(line), fill: "none", stroke: colour, "stroke-opacity": 0.9, "stroke-width": width,
                      "stroke-linecap": "round", "stroke-linejoin": "round", class: "shape" }, g);
   }
 
@@ -225,9 +258,10 @@ export class Figure {
       el("line", { ...seg(add(sh.through, mul(sh.direction, -far)), add(sh.through, mul(sh.direction, far))),
                    stroke: b.colour, "stroke-width": 2.2 }, g);
     } else if (sh.vertices) {
-      el("polygon", { points: poly(sh.vertices), fill: b.colour, "fill-opacity": 0.3, stroke: b.colour,
-                      "stroke-width": 1.5 }, g);
+      return el("polygon", { points: poly(sh.vertices), fill: b.colour, "fill-opacity": 0.3, stroke: b.colour,
+                             "stroke-width": 1.5 }, g);
     }
+    return null;
   }
 
   movingCentroid() {
@@ -250,7 +284,7 @@ export class Figure {
     for (const j of this.scene.joints) {
       if ((j.type === "revolute" || j.type === "spherical") && j.at) {
         if (j.a === f || j.b === f) this.support(j.at);
-        this.pin(this.bodyGroup(this.mover(j)), j.at, j.id);
+        this.track(this.pin(this.bodyGroup(this.mover(j)), j.at, j.id), this.mover(j), "circle", j.at_xyz);
       } else if (j.type === "prismatic" || j.type === "cylindrical") {
         const along = j.along || (j.axis && unit(j.axis));
         const centre = j.at || this.sliderCentre(j);
@@ -284,7 +318,7 @@ export class Figure {
   }
 
   pin(g, p, id) {
-    el("circle", { cx: p[0], cy: -p[1], r: 4.2 * this.px, fill: "white", stroke: this.scene.style.ink,
+    return el("circle", { cx: p[0], cy: -p[1], r: 4.2 * this.px, fill: "white", stroke: this.scene.style.ink,
                    "stroke-width": 1.6, "data-joint": id, class: "pin" }, g);
   }
 
@@ -332,7 +366,8 @@ export class Figure {
         if (named.has(p)) continue;
         named.add(p);
         const g = this.bodyGroup(b.frame ? null : name);
-        el("circle", { cx: xy[0], cy: -xy[1], r: 3.2 * this.px, fill: this.scene.style.ink, "data-point": p }, g);
+        const dot = el("circle", { cx: xy[0], cy: -xy[1], r: 3.2 * this.px, fill: this.scene.style.ink, "data-point": p }, g);
+        if (!b.frame) this.track(dot, name, "circle", b.points_xyz && b.points_xyz[p]);
         const label = el("text", { "font-size": 12 * this.px, "font-weight": "bold", fill: this.scene.style.point_label,
                                    class: "point-label" }, this.g.labels);
         label.textContent = shown(p);
@@ -373,7 +408,7 @@ export class Figure {
       const swept = this.sweep && !v.relative_to && this.sweep.points[v.ref];
       this.largest[v.kind] = Math.max(this.largest[v.kind] || 0, v.magnitude);
       if (swept) {
-        for (const x of swept[v.kind]) if (x) this.largest[v.kind] = Math.max(this.largest[v.kind], Math.hypot(...x));
+        for (const x of swept.size[v.kind]) if (x) this.largest[v.kind] = Math.max(this.largest[v.kind], x);
       }
     }
     for (const v of this.scene.vectors) this.arrows.push(this.arrowElements(v, this.g.vectors));
@@ -504,7 +539,8 @@ export class Figure {
     if (sw) {
       const ok = sw.coordinate[k] !== undefined && Object.values(sw.bodies)[0]?.angle[k] !== null;
       this.svg.classList.toggle("unassembled", !ok);
-      for (const [name, g] of Object.entries(this.bodyGroups)) {
+      if (this.P) this.move3(k);
+      else for (const [name, g] of Object.entries(this.bodyGroups)) {
         const anchor = this.anchors[name];
         if (!anchor) continue;
         const p0 = this.scene.bodies[name].points[anchor];
@@ -516,8 +552,7 @@ export class Figure {
       }
       for (const a of this.arrows) {
         if (!a.swept) continue;
-        const value = a.swept[a.v.kind][k];
-        this.placeArrow(a, a.swept.position[k], value, value ? Math.hypot(...value) : 0);
+        this.placeArrow(a, a.swept.position[k], a.swept[a.v.kind][k], a.swept.size[a.v.kind][k] || 0);
       }
     } else {
       for (const a of this.arrows) this.placeArrow(a, a.v.origin, a.v.value, a.v.magnitude);
@@ -537,6 +572,38 @@ export class Figure {
       pl.handle.setAttribute("visibility", p ? "visible" : "hidden");
     }
     this.applyLayers();
+  }
+
+  /** The 3D bodies at sweep row `k`: each tracked part turned in space by the body's
+   * rotation since the scene's row (R_k R_s^T, from the rotation vectors), about its anchor
+   * point carried to its swept place, and projected on the page. */
+  move3(k) {
+    const placed = {}, P = this.P, s = this.sceneRow;
+    for (const [name, g] of Object.entries(this.bodyGroups)) {
+      const anchor = this.anchors[name];
+      if (!anchor) continue;
+      const a = this.raw.points[`${anchor}@${name}`].position, turn = this.raw.bodies[name].angle;
+      const ok = a[s] && a[k] && turn[s] && turn[k];
+      visible(g, ok);
+      if (!ok) continue;
+      const R = times(rotation(turn[k]), transpose(rotation(turn[s])));
+      const A = times(P, R);                                    // 2 × 3: space to page
+      const from = apply(A, a[s]), to = apply(P, a[k]);
+      placed[name] = { A, c: [to[0] - from[0], to[1] - from[1]] };
+    }
+    for (const t of this.tracked) {
+      const m = placed[t.body];
+      if (!m) continue;
+      if (t.kind === "circle") {
+        const p = apply(m.A, t.xyz);
+        t.node.setAttribute("cx", p[0] + m.c[0]);
+        t.node.setAttribute("cy", -(p[1] + m.c[1]));
+        continue;
+      }
+      const pts = t.xyz.map((x) => { const p = apply(m.A, x); return [p[0] + m.c[0], p[1] + m.c[1]]; });
+      if (t.kind === "line") setSeg(t.node, pts[0], pts[1]);
+      else t.node.setAttribute("points", poly(pts));
+    }
   }
 
   // dragging ----------------------------------------------------------------------------
@@ -576,11 +643,39 @@ export class Figure {
 }
 
 // geometry ------------------------------------------------------------------------------
+/** The sweep with its points on the page (3D: projected by P) and the sizes of their
+ * velocities and accelerations (in space), which the arrows' scale reads. */
+function onPage(sweep, P) {
+  const page = P ? (x) => (x ? apply(P, x) : null) : (x) => x;
+  const size = (xs) => xs.map((x) => (x ? Math.hypot(...x) : null));
+  const points = {};
+  for (const [key, v] of Object.entries(sweep.points)) {
+    points[key] = { position: v.position.map(page), velocity: v.velocity.map(page),
+                    acceleration: v.acceleration.map(page),
+                    size: { velocity: size(v.velocity), acceleration: size(v.acceleration) } };
+  }
+  return { ...sweep, points };
+}
+
+/** The rotation matrix of a rotation vector in degrees (Rodrigues). */
+function rotation(v) {
+  const t = (Math.hypot(...v) * Math.PI) / 180;
+  if (t < 1e-12) return [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+  const [x, y, z] = v.map((c) => (c * Math.PI) / 180 / t);
+  const c = Math.cos(t), s = Math.sin(t), C = 1 - c;
+  return [[c + x * x * C, x * y * C - z * s, x * z * C + y * s],
+          [y * x * C + z * s, c + y * y * C, y * z * C - x * s],
+          [z * x * C - y * s, z * y * C + x * s, c + z * z * C]];
+}
+const transpose = (m) => m[0].map((_, j) => m.map((row) => row[j]));
+const times = (a, b) => a.map((row) => b[0].map((_, j) => row.reduce((sum, x, i) => sum + x * b[i][j], 0)));
+const apply = (m, x) => m.map((row) => row[0] * x[0] + row[1] * x[1] + row[2] * x[2]);
+
 const add = (p, q) => [p[0] + q[0], p[1] + q[1]];
 const sub = (p, q) => [p[0] - q[0], p[1] - q[1]];
 const mul = (p, s) => [p[0] * s, p[1] * s];
 const dot = (p, q) => p[0] * q[0] + p[1] * q[1];
-const dist = (p, q) => Math.hypot(p[0] - q[0], p[1] - q[1]);
+const dist = (p, q) => Math.hypot(...p.map((x, i) => x - q[i]));      // in the plane or in space
 const unit = (p) => { const n = Math.hypot(p[0], p[1]) || 1; return [p[0] / n, p[1] / n]; };
 const clamp = (x, lo, hi) => Math.min(Math.max(x, lo), hi);
 const poly = (pts) => pts.map((p) => `${p[0]},${-p[1]}`).join(" ");

@@ -188,8 +188,8 @@ async function settle() {
   } catch (_) { /* moving is not available: the answers stay those of the drawn position */ }
 }
 
-/** The scene solved at row k: its results over the moving figure (planar), or the whole
- * figure (a 3D model, whose figure does not move with the sweep's rows). */
+/** The scene solved at row k: its results over the moving figure, or the whole figure
+ * when it cannot move through the rows (no sweep). */
 function place(scene, k) {
   if (figure.sweep) figure.overlay(scene, k);
   else if (figure.sceneRow !== k || figure.scene !== scene) figure.set(scene, null, k);
