@@ -137,3 +137,26 @@ def test_isometric_axes_are_120_degrees_apart():
     for a, b in (("x", "y"), ("y", "z"), ("z", "x")):
         assert angle_between(axes[a], axes[b]) == pytest.approx(120.0)
     assert np.allclose(axes["z"] / np.linalg.norm(axes["z"]), (0, 1))
+
+
+def test_svg_ids_do_not_depend_on_the_hash_salt():
+    """matplotlib's ids hash `svg.hashsalt`, a global that another thread's rc_context can
+    undo while a figure is saved (the page's server renders while a command runs): the ids
+    are numbered instead, so any salt gives the same text."""
+    import io
+
+    import matplotlib
+
+    from kinematika.draw.figure import _numbered_ids, render
+    from kinematika.draw.scene import build_scene
+
+    sol = solve(four_bar_tree([{"velocity": "B"}]))
+    fig = render(build_scene(sol.inst, sol, DrawOptions(centres=True)), DrawOptions(centres=True))
+    texts = []
+    for salt in ("one", "two"):
+        out = io.StringIO()
+        with matplotlib.rc_context({"svg.hashsalt": salt}):
+            fig.savefig(out, format="svg", metadata={"Date": None})
+        texts.append(out.getvalue())
+    assert texts[0] != texts[1] and 'id="m' in texts[0]        # markers named by the salted hash
+    assert _numbered_ids(texts[0]) == _numbered_ids(texts[1])

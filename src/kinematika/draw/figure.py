@@ -253,14 +253,15 @@ def svg_text(fig: Figure) -> str:
 
 
 def _numbered_ids(text: str) -> str:
-    """matplotlib names clip paths and hatches by a hash of their coordinates, so the same
-    drawing reached by another route (a sweep row rather than a move) differs in the last
-    bit and in its ids: number them in order of appearance instead."""
+    """matplotlib names clip paths, hatches and markers by a hash of their coordinates and
+    of `svg.hashsalt` (a global setting, which another thread's `rc_context` can undo
+    meanwhile), so the same drawing reached by another route (a sweep row rather than a
+    move) differs in the last bit and in its ids: number them in order of appearance."""
     import re
 
     names: dict[str, str] = {}
-    for found in re.finditer(r'id="([ph][0-9a-f]{10})"', text):
+    for found in re.finditer(r'id="([phm][0-9a-f]{10})"', text):
         names.setdefault(found.group(1), f"{found.group(1)[0]}{len(names) + 1}")
     if not names:
         return text
-    return re.sub(r"\b[ph][0-9a-f]{10}\b", lambda m: names.get(m.group(0), m.group(0)), text)
+    return re.sub(r"\b[phm][0-9a-f]{10}\b", lambda m: names.get(m.group(0), m.group(0)), text)

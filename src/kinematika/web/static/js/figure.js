@@ -371,9 +371,12 @@ export class Figure {
         const label = el("text", { "font-size": 12 * this.px, "font-weight": "bold", fill: this.scene.style.point_label,
                                    class: "point-label" }, this.g.labels);
         label.textContent = shown(p);
-        const handle = el("circle", { r: 9 * this.px, class: "draggable", "data-handle": p }, this.g.handles);
-        el("title", {}, handle).textContent = `${shown(p)}: drag to move it`;
-        this.draggable(handle, p);
+        let handle = null;                      // a 3D point is moved in the text (edit takes x, y)
+        if (this.scene.dimension === 2) {
+          handle = el("circle", { r: 9 * this.px, class: "draggable", "data-handle": p }, this.g.handles);
+          el("title", {}, handle).textContent = `${shown(p)}: drag to move it`;
+          this.draggable(handle, p);
+        }
         this.pointLabels.push({ label, handle, name: p, body: name, frame: b.frame, xy });
       }
     }
@@ -526,7 +529,7 @@ export class Figure {
     if (this.scene.kennedy.length) items.push(`<li><i class="dash"></i>Kennedy line</li>`);
     if (this.scene.curvatures.length) items.push(`<li><i style="background:var(--curvature)"></i>curvature circle</li>`);
     if (this.sweep) items.push(`<li><i style="background:#6d4c41;opacity:.5"></i>path over the motion</li>`);
-    items.push(`<li class="hint">drag a point to move it</li>`);
+    if (this.scene.dimension === 2) items.push(`<li class="hint">drag a point to move it</li>`);
     this.legend.innerHTML = items.join("");
   }
 
@@ -565,11 +568,11 @@ export class Figure {
       }
       if (p) {
         placeText(pl.label, p, [5 * this.px, 5 * this.px]);
-        pl.handle.setAttribute("cx", p[0]);
-        pl.handle.setAttribute("cy", -p[1]);
+        pl.handle?.setAttribute("cx", p[0]);
+        pl.handle?.setAttribute("cy", -p[1]);
       }
       pl.label.setAttribute("visibility", p ? "visible" : "hidden");
-      pl.handle.setAttribute("visibility", p ? "visible" : "hidden");
+      pl.handle?.setAttribute("visibility", p ? "visible" : "hidden");
     }
     this.applyLayers();
   }
