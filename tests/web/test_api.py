@@ -141,25 +141,29 @@ def test_draw_gives_the_scene_as_data_and_the_figure_as_svg_or_png(client):
 
 
 def test_a_3d_scene_gives_what_it_draws_in_model_coordinates(client):
-    """Hooke's joint as stated in its file: the drawn points are the file's points (β = 30°),
-    the scene's projection takes them to the page, and the arcs lie on the unit sphere."""
-    text = (EXAMPLES / "hooke_joint.yaml").read_text()
+    """The spherical four-bar as stated in its file: the drawn points are the file's points,
+    the scene's projection takes them to the page, and its links are arcs on the unit
+    sphere about O."""
+    text = (EXAMPLES / "spherical_four_bar.yaml").read_text()
     scene = post(client, "draw", model=text).json()
-    beta = math.radians(30)
-    stated = {"O": [0, 0, 0], "A": [-1, 0, 0], "F": [0, 1, 0], "B": [math.cos(beta), math.sin(beta), 0],
-              "G": [0, 0, 1]}
+    c30, s30 = math.cos(math.radians(30)), math.sin(math.radians(30))
+    stated = {"O": [0, 0, 0], "A": [0, s30, c30], "B": [0.738834276689, 0.673861538519, 0.005876695946],
+              "D": [c30, 0, s30]}                                  # D = (sin 60°, 0, cos 60°)
     P = scene["projection"]
     assert len(P) == 2 and all(len(row) == 3 for row in P)
     assert sum(a * b for a, b in zip(*P)) == pytest.approx(0, abs=1e-12)      # orthonormal rows
     assert [math.hypot(*row) for row in P] == pytest.approx([1, 1])
+    arcs = 0
     for body in scene["bodies"].values():
         for name, xyz in body["points_xyz"].items():
-            assert xyz == pytest.approx(stated[name], abs=1e-12)
+            assert xyz == pytest.approx(stated[name], abs=1e-9)
             assert [sum(r * x for r, x in zip(row, xyz)) for row in P] == \
                 pytest.approx(body["points"][name], abs=1e-12)
         for line, page in zip(body["skeleton_xyz"], body["skeleton"], strict=True):
             assert [math.hypot(*x) for x in line] == pytest.approx([1] * len(line))
             assert len(line) == len(page)
+            arcs += 1
+    assert arcs >= 4
     assert "projection" not in post(client, "draw", model=(EXAMPLES / "four_bar.yaml").read_text()).json()
 
 
