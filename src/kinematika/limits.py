@@ -31,7 +31,7 @@ SCALE = 1e50                 # lengths and rates (ω, v/length, √(a/length)) b
 
 # sweeps -----------------------------------------------------------------------------------
 SWEEP_STEPS = 10_000_000     # increments of one sweep
-SWEEP_VALUES = 5_000_000     # rows × numbers per row held at once (under 1 GB on every path)
+SWEEP_VALUES = 32_000_000    # rows × numbers per row held at once: 480 000 rows of a four-bar (under 1 GB on every path)
 
 # symbolic work ----------------------------------------------------------------------------
 SYMBOLIC_SECONDS = 15.0      # wall-clock time for exact formulas (KINEMATIKA_SYMBOLIC_SECONDS overrides)

@@ -90,6 +90,7 @@ def test_cli_json_csv_and_summary(tmp_path):
     target = tmp_path / "rows.csv"
     out = runner.invoke(app, ["sweep", model, "--csv", str(target)])
     assert out.exit_code == 0 and len(target.read_text().splitlines()) == 14
+    assert out.stdout.endswith(f"\n\nwrote 13 rows to {target}\n")      # a blank line, not a shown '\\n'
     assert "Grashof crank-rocker" in out.stdout
     assert "transmission angle" in out.stdout and "limit position (extended)" in out.stdout
 

@@ -100,3 +100,23 @@ def test_rssr_sweep_keeps_the_coupler_rigid_and_its_spin_idle():
     ab = b - a
     omega = result.bodies["coupler"]["omega"]
     assert np.einsum("ij,ij->i", omega, ab) == pytest.approx(np.zeros(7), abs=1e-9)   # no spin
+
+
+def test_a_long_spatial_sweep_is_solved_in_chunks_with_the_same_positions(monkeypatch):
+    """Long sweeps on the compiled Newton path build their stacked matrices a chunk at a
+    time (memory): with chunks of 7 positions, the RSSR's 60 steps are the hand closure's
+    φ(θ) as with one chunk, and velocities and accelerations are the same to 1e-12."""
+    from kinematika.sweep import compiled
+    from tests.spatial.test_idle_spin import RSSR
+
+    whole = run_sweep(RSSR, by=-60, steps=60)
+    monkeypatch.setattr(compiled, "CHUNK", 7)
+    chunked = run_sweep(RSSR, by=-60, steps=60)
+    theta = np.radians(chunked.coordinate)
+    b = chunked.points["B@rocker"]["position"]
+    a = np.column_stack([-np.sin(theta), np.cos(theta), 0 * theta])
+    assert np.linalg.norm(b - a, axis=1) == pytest.approx(np.full(61, math.sqrt(5)), abs=1e-9)
+    assert b[:, 0] == pytest.approx(np.full(61, 2.0), abs=1e-9)      # the rocker turns about x at D
+    for kind in ("position", "velocity", "acceleration"):
+        assert chunked.points["B@coupler"][kind] == pytest.approx(whole.points["B@coupler"][kind], abs=1e-12)
+    assert chunked.bodies["coupler"]["alpha"] == pytest.approx(whole.bodies["coupler"]["alpha"], abs=1e-12)

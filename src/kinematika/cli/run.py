@@ -68,10 +68,12 @@ def sweep_command(model: Path, joint: Optional[str] = None, by: Optional[float] 
     from ..sweep.summary import summary_lines
 
     lines = summary_lines(result, guarded(False, sweeper.linkage), sweeper.groups)
+    if csv is not None or output is not None:
+        lines.append("")                     # a blank line (names are shown escaped, never a raw \n)
     if csv is not None:
-        lines.append(f"\nwrote {len(result)} rows to {csv}")
+        lines.append(f"wrote {len(result)} rows to {csv}")
     if output is not None:
-        lines.append(f"{'' if csv is not None else chr(10)}wrote {len(result)} rows to {output} ({kind})")
+        lines.append(f"wrote {len(result)} rows to {output} ({kind})")
     if plot is not None:
         lines.append(f"drew {plot}")
     print("\n".join(shown(line) for line in lines))

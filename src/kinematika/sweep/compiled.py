@@ -40,6 +40,7 @@ ITERATIONS = 25
 TOLERANCE = 1e-12           # as the general path: dimensionless step size
 JUMP = 0.3                  # a correction above this fraction of the step is a jump
 CONDITION = 1e10            # the engine's limit for a dead point (2-norm, dimensionless)
+CHUNK = 8192                # positions whose stacked matrices are built at once (memory)
 FROZEN = 1e-5               # Newton keeps its last matrix once the corrections are this small
 
 
@@ -239,16 +240,18 @@ class CompiledNewton:
             right = np.clip(np.searchsorted(solved, level), 1, len(solved) - 1)
             left = solved[right - 1]
             parent = np.where(level - left <= solved[right] - level, left, solved[right])
-            heads, which = np.unique(parent, return_inverse=True)
-            inverse = self._inverse(rots[heads], ts[heads])
-            if inverse is None:
-                return None
-            slope, bend = self._predictor(rots[heads], ts[heads], inverse)
-            done = self._chord(rots[parent], ts[parent], inverse[which], (slope[which], bend[which]),
-                               dq[parent], dq[level])
-            if done is None:
-                return None
-            rots[level], ts[level] = done
+            for part in range(0, len(level), CHUNK):      # stacked matrices a chunk at a time
+                rows, parents = level[part:part + CHUNK], parent[part:part + CHUNK]
+                heads, which = np.unique(parents, return_inverse=True)
+                inverse = self._inverse(rots[heads], ts[heads])
+                if inverse is None:
+                    return None
+                slope, bend = self._predictor(rots[heads], ts[heads], inverse)
+                done = self._chord(rots[parents], ts[parents], inverse[which], (slope[which], bend[which]),
+                                   dq[parents], dq[rows])
+                if done is None:
+                    return None
+                rots[rows], ts[rows] = done
             solved = np.union1d(solved, level)
         if len(self.keep) < self.m_all and not self._consistent(rots, ts, dq):
             return None
@@ -319,8 +322,17 @@ class CompiledNewton:
         return None
 
     def _motion(self, rots, ts) -> Optional[dict]:
-        """Twists and their rates at every position (with the inverse matrices), checked as
-        the engine checks a dead point: any doubt returns None (the general path decides)."""
+        """Twists and their rates at every position, checked as the engine checks a dead
+        point: any doubt returns None (the general path decides). A chunk of positions at a
+        time, so that the stacked matrices stay small whatever the sweep's length."""
+        parts = [self._motion_of(rots[k:k + CHUNK], ts[k:k + CHUNK]) for k in range(0, len(rots), CHUNK)]
+        if any(part is None for part in parts):
+            return None
+        return {"rot": rots, "t": ts, "x_v": np.concatenate([x_v for x_v, _ in parts]),
+                "x_a": np.concatenate([x_a for _, x_a in parts])}
+
+    def _motion_of(self, rots, ts) -> Optional[tuple[np.ndarray, np.ndarray]]:
+        """The twists and their rates of some positions (see `_motion`)."""
         n_rows = len(rots)
         a = self.matrix(rots, ts)
         regular = self._regular(a)
@@ -331,7 +343,7 @@ class CompiledNewton:
         rhs[:, self._driver_rows()] = self.rates
         x_v = column * _times(inverse, rows * rhs)
         x_a = column * _times(inverse, rows * self._accel_terms(rots, ts, x_v))
-        return {"rot": rots, "t": ts, "x_v": x_v, "x_a": x_a}
+        return x_v, x_a
 
     def _regular(self, a: np.ndarray) -> Optional[tuple[np.ndarray, np.ndarray, np.ndarray]]:
         """The dimensionless S = R A C (rows equilibrated, lengths in the model's scale) of

@@ -135,8 +135,9 @@ class SweepResult:
         table = np.column_stack([v for _, v in cols]) if cols else np.zeros((0, 0))
         writer = csv.writer(f)
         writer.writerow([h for h, _ in cols])
-        for row in table.tolist():
-            writer.writerow(["" if math.isnan(x) else repr(x) for x in row])
+        for start in range(0, len(table), CSV_ROWS):      # a chunk of Python floats at a time
+            writer.writerows([["" if x != x else repr(x) for x in row]      # x != x: NaN
+                              for row in table[start:start + CSV_ROWS].tolist()])
 
     def to_npz(self, path: str | Path) -> None:
         """The CSV's columns as numpy arrays in one .npz file (raw values; bad rows NaN), with
@@ -160,6 +161,8 @@ class SweepResult:
             arrays.append(pa.array(np.ascontiguousarray(values), from_pandas=True))   # NaN -> null
         pq.write_table(pa.Table.from_arrays(arrays, names=names), path)
 
+
+CSV_ROWS = 2048     # rows turned into text at once: memory stays that of the arrays
 
 with np.errstate(over="ignore"):
     _POW10 = np.power(10.0, np.arange(-400, 401, dtype=float))    # 10**k as numpy computes it (inf past 308)
