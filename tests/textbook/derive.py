@@ -505,6 +505,45 @@ def rolling_wheel_rod():
     return [-8.0, w, al, [vb, 0.0], [ab, 0.0]]
 
 
+def rolling_on_drum():
+    """The roller's contact point is at rest: v_C = ω k × (C − J), so ω = v/r = 20 and
+    α = a_t/r = −30; C moves on the circle of radius R + r: a_C = a_t e⊥ − v²/(R + r) e
+    (e along OC at 60°); the roller's contact point: a_C + α k × (J − C) − ω² (J − C) =
+    ω² r R/(R + r) e."""
+    t, v, at, big_r, r = math.radians(60), 2.0, -3.0, 0.4, 0.1
+    e, n = [math.cos(t), math.sin(t)], [-math.sin(t), math.cos(t)]
+    a_c = [at * y - v * v / (big_r + r) * x for x, y in zip(e, n)]
+    w, al = v / r, at / r
+    jc = [-r * x for x in e]
+    return [w, al, a_c, [x + y - w * w * z for x, y, z in zip(a_c, turn(al, jc), jc)]]
+
+
+def rack_and_pinion():
+    """The pinion's point at the pitch point K = (0, −25) moves with the rack:
+    ω k × OK = (25 ω, 0) = (−500, 0), so ω = −20, α = −200/25 = −8; T = 28 e(30°):
+    v = ω k × OT, a = α k × OT − ω² OT."""
+    w, al = -500 / 25, -200 / 25
+    t = [28 * math.cos(math.radians(30)), 28 * math.sin(math.radians(30))]
+    return [w, al, turn(w, t), [x - w * w * y for x, y in zip(turn(al, t), t)]]
+
+
+def fb_coupler_driven():
+    """With θ3 = g(θ2) and θ4 = h(θ2) (the open four-bar), the motor holds
+    ω3 − ω2 = (g' − 1) ω2 = 4: ω2 = 4/(g' − 1), and differentiating
+    α2 = −4 ω2 g''/(g' − 1)² (= α3: the relative rate is constant); ω3 = g' ω2,
+    α3 = g' α2 + g'' ω2², ω4 = h' ω2, α4 = h' α2 + h'' ω2²."""
+    b_of = four_bar(5, 2, mpmath.mpf("4.5"), mpmath.mpf("3.5"))
+
+    def pos(t):
+        a, b = polar([0, 0], 2, t), b_of(t)
+        return [angle(a, b), angle([5, 0], b)]
+
+    _, (g1, h1), (g2, h2) = motion(pos, math.radians(75), 1.0)    # at unit rate: g', h' and g'', h''
+    w2 = 4 / (g1 - 1)
+    al2 = -4 * w2 * g2 / (g1 - 1) ** 2
+    return [w2, g1 * w2, h1 * w2, al2, g1 * al2 + g2 * w2 * w2, h1 * al2 + h2 * w2 * w2]
+
+
 # spatial linkages ---------------------------------------------------------------------------
 def v_cross(u, v):
     return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
@@ -645,7 +684,7 @@ NUMERIC = {f.__name__: f for f in (
     isc_slotted_crank, qr_whitworth_opposite, qr_drag_link, geneva_four_slot, scotch_yoke, pin_slotted_rocker,
     watt_one, stephenson_slider, stephenson_triad, gear_compound_train, epicyclic_arm, planetary_two_inputs,
     rolling_hypocycloid, rolling_on_plank, rolling_wheel_rod, spherical_crank_rocker, rssr_offset, hooke_joint_60,
-    tricycle_steering, forklift_rear_steer)}
+    tricycle_steering, forklift_rear_steer, rolling_on_drum, rack_and_pinion, fb_coupler_driven)}
 SYMBOLIC = {f.__name__: f for f in (sc_offset_symbolic_theta, isc_oscillating_cylinder_symbolic, fb_parallelogram_letters,
                                      geneva_symbolic_theta, scotch_yoke_symbolic)}
 ERRORS = {"fb_err_move_past_limit": "assembly", "fb_err_two_drivers": "mobility"}
