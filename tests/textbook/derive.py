@@ -139,7 +139,8 @@ def fb_parallelogram():
 def sc_offset_above(theta_deg: float = 300):
     """x_B = a cos θ + √(b² − (e − a sin θ)²) on y = e = 15; the rod's angle
     φ = atan2(e − a sin θ, x_B − a cos θ); M the midpoint of AB; θ = 300°, ω2 = −40,
-    α2 = 100. The rod's centre where the line O2A meets the vertical through B."""
+    α2 = 100. The rod's centre where the line O2A meets the vertical through B; the slider's
+    path is straight (no centre of curvature); the rod's acceleration pole from a_A."""
     a, b, e = 30, 90, 15
 
     def pos(t):
@@ -150,7 +151,15 @@ def sc_offset_above(theta_deg: float = 300):
     t = math.radians(theta_deg)
     (xb, _, _, _), (vb, w3, vmx, vmy), (ab, al3, _, _) = motion(pos, t, -40, 100)
     icr = line_meet([0, 0], [math.cos(t), math.sin(t)], [xb, e], [0, 1])
-    return [[vb, 0.0], [ab, 0.0], w3, al3, {"point": icr}, [vmx, vmy]]
+    # the rod's acceleration pole P: a_A + α k × AP − ω² AP = 0, so
+    # AP = (ω² a_A + α J a_A)/(ω⁴ + α²) (J a quarter turn); a_A = α2 k × OA − ω2² OA
+    pa = [a * math.cos(t), a * math.sin(t)]
+    a_a = [x - 1600 * y for x, y in zip(turn(100, pa), pa)]
+    ja = [-a_a[1], a_a[0]]
+    den = w3 ** 4 + al3 ** 2
+    pole = [p + (w3 * w3 * x + al3 * y) / den for p, x, y in zip(pa, a_a, ja)]
+    return [[vb, 0.0], [ab, 0.0], w3, al3, {"point": icr}, [vmx, vmy], {"radius": None, "center": None},
+            {"point": pole}]
 
 
 def _vertical_engine(theta_deg):
@@ -457,8 +466,9 @@ def epicyclic_arm():
 def planetary_two_inputs():
     """Willis: (ω_r − ω_c)/(ω_s − ω_c) = −r_s/r_r = −1/2, so ω_r = 20 − 40 = −20; relative to
     the carrier the planet turns −(ω_s − ω_c) r_s/r_p = −160, absolutely −140; the planet's
-    centre moves with the carrier: 20 × 45 upwards."""
-    return [-20.0, -140.0, -160.0, [0.0, 900.0]]
+    centre moves with the carrier: 20 × 45 upwards; relative to the carrier the planet turns
+    about its pin A."""
+    return [-20.0, -140.0, -160.0, [0.0, 900.0], {"point": [45.0, 0.0]}]
 
 
 def rolling_hypocycloid():
@@ -606,7 +616,7 @@ def rssr_offset():
     """ψ(θ) closed form (_rssr_b, which reproduces ψ = 120° at 45°); ω4 = (ψ', 0, 0),
     α4 = (ψ'', 0, 0) with ω = 3 constant; the coupler without spin about AB:
     ω3 = AB × (v_B − v_A)/|AB|², so ω3 = 3 g(θ) with g = AB × (B' − A')/|AB|² (' = d/dθ) and
-    α3 = 9 g'(θ)."""
+    α3 = 9 g'(θ); its screw axis through A + ω3 × v_A/|ω3|², sliding at v_A·ω̂3."""
     def g(t):
         a, _, b = _rssr_b(t)
         da = [mpmath.diff(lambda s, i=i: _rssr_b(s)[0][i], t) for i in range(3)]
@@ -623,7 +633,17 @@ def rssr_offset():
     with mpmath.workdps(40):
         g0 = g(mpmath.mpf(t))
         g1 = [mpmath.diff(lambda s, i=i: g(s)[i], mpmath.mpf(t)) for i in range(3)]
-    return [[w4, 0.0, 0.0], [al4, 0.0, 0.0], vb, ab, [float(3 * x) for x in g0], [float(9 * x) for x in g1]]
+    w3 = [float(3 * x) for x in g0]
+    # the screw axis: Q = A + ω × v_A/|ω|² has v_Q ∥ ω; the point nearest O is
+    # Q − (Q·û)û; the slide v_A·û (u = ω/|ω|)
+    a = [float(x) for x in _rssr_b(mpmath.mpf(t))[0]]
+    va = [-3 * a[1], 3 * a[0], 0.0]
+    size = math.sqrt(v_dot(w3, w3))
+    u = [x / size for x in w3]
+    q = [x + y / size ** 2 for x, y in zip(a, v_cross(w3, va))]
+    p = [x - v_dot(q, u) * y for x, y in zip(q, u)]
+    axis = {"point": p, "direction": u, "omega": size, "slide": v_dot(va, u)}
+    return [[w4, 0.0, 0.0], [al4, 0.0, 0.0], vb, ab, w3, [float(9 * x) for x in g1], axis]
 
 
 def _hooke(t):
@@ -662,11 +682,17 @@ def tricycle_steering():
     v e(δ): u = v cos δ, ω = v sin δ/L for all t, so α = v cos δ δ'/L (v constant: the
     driver's acceleration along the wheel is 0); a_M = u' e + u ω e⊥ = (−v sin δ δ', u ω);
     the centre on the rear axle line at L/tan δ; v_RL = (u − ω s, 0); the front wheel turns
-    at ω + δ'."""
+    at ω + δ'; RL moves along x (speed u − ω s > 0): its acceleration
+    a_M + α k × (0, s) − ω² (0, s) split along x (tangential) and y (normal)."""
     v, big_l, s, d, dd = 3, 1.1, 0.45, math.radians(30), 0.4
     u, w = v * math.cos(d), v * math.sin(d) / big_l
-    return [w, v * math.cos(d) * dd / big_l, {"point": [0.0, big_l / math.tan(d)]}, [u - w * s, 0.0],
-            [-v * math.sin(d) * dd, u * w], w + dd]
+    al = v * math.cos(d) * dd / big_l
+    a_m = [-v * math.sin(d) * dd, u * w]
+    a_rl = [a_m[0] - al * s, a_m[1] - w * w * s]          # a_M + α k × (0, s) − ω² (0, s)
+    speed = u - w * s
+    return [w, al, {"point": [0.0, big_l / math.tan(d)]}, [speed, 0.0], a_m, w + dd,
+            {"speed": abs(speed), "tangent": [1.0, 0.0], "tangential": a_rl[0], "normal": abs(a_rl[1]),
+             "tangential_vector": [a_rl[0], 0.0], "normal_vector": [0.0, a_rl[1]]}]
 
 
 def forklift_rear_steer():
