@@ -399,7 +399,7 @@ def stephenson_triad():
     return [w1, wt, w2, w3, alt, [vx, vy], [ax, ay]]
 
 
-def triad_assemblies(steps: int = 3600) -> list[tuple[float, float]]:
+def triad_assemblies(steps: int = 720) -> list[tuple[float, float]]:
     """Every closure of the triad at the drawn crank angle, as (φ1, ψ) in degrees: for each
     direction φ1 of AB, C = B + 2.5 e(ψ) on the circle of radius 2.8 about O4 gives two ψ
     (cos(ψ − β) = (|O4B|² + 2.5² − 2.8²)/(5 |O4B|)); a closure is where |D − O6| − 2.2
