@@ -59,8 +59,7 @@ def _check_size(coords: tuple, name: str, where: str) -> None:
     if size > POINT_OPS:
         raise KinematikaError("limit", f"the exact coordinates of {name} would have about {size:,} "
                               f"operations (more than {POINT_OPS:,}): too large for formulas; give "
-                              "the lengths numbers and keep the angle a symbol (null), or solve "
-                              "without --symbolic", where)
+                              "more parameters numbers, or solve without --symbolic", where)
 
 
 def _about_pivot(spec: Any, turn: Any) -> bool:
