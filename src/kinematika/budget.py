@@ -1,5 +1,12 @@
 """A time budget for work whose cost the input decides (exact formulas): past it, a clear
-`limit` error naming the work, instead of a computation that runs for minutes."""
+`limit` error naming the work and what asked for it, instead of a computation that runs
+for minutes.
+
+The budget is CPU time of the working thread, not wall time: a valid model must not fail
+because the machine is busy with other work (a loaded server, a shared CI runner). Exact
+formulas are pure computation (no waiting on files or the network), so their CPU time is
+their cost; a hang that waits on something is bounded elsewhere (`limits.READ_SECONDS`).
+"""
 from __future__ import annotations
 
 import signal
@@ -27,6 +34,7 @@ POLISH_SECONDS = 1.0        # ... and at most this much processor time (formulas
 _deadline = threading.local()
 _soft: list[float] = []     # the ends of the optional steps under way (main thread only)
 T = TypeVar("T")
+_clock = time.thread_time   # CPU seconds of this thread (a server's other requests not counted)
 
 
 def _state() -> list:
@@ -36,21 +44,24 @@ def _state() -> list:
 
 
 @contextmanager
-def budget(what: str, seconds: float | None = None) -> Iterator[None]:
-    """Run the body within a time budget; past it, `OverBudget` naming `what` is raised.
+def budget(what: str, seconds: float | None = None, why: str = "") -> Iterator[None]:
+    """Run the body within a budget of `seconds` of CPU time; past it, `OverBudget` naming
+    `what` (and `why` it was asked, for the advice) is raised.
 
     Nested budgets keep the earliest deadline. Checks are cooperative (`check`, called
-    between steps of the work); in the main thread a timer signal also interrupts a single
-    long computation (a factorisation of huge polynomials), so the limit holds in any case.
+    between steps of the work); in the main thread a CPU-time timer signal also interrupts
+    a single long computation (a factorisation of huge polynomials), so the limit holds in
+    any case.
     """
     seconds = symbolic_seconds() if seconds is None else seconds
     stack = _state()
-    end = time.monotonic() + seconds
+    end = _clock() + seconds
     polish = time.process_time() + min(POLISH_SECONDS, POLISH_SHARE * seconds)   # processor time
     if stack:
         end = min(end, stack[-1][0])
         polish = stack[-1][4]
-    stack.append([end, what, seconds, "", polish])
+        why = why or stack[-1][5]
+    stack.append([end, what, seconds, "", polish, why])
     alarm = _arm(end) if len(stack) == 1 else None
     try:
         yield
@@ -62,9 +73,14 @@ def budget(what: str, seconds: float | None = None) -> Iterator[None]:
 
 def exact_work(model: Any, symbolic: bool | None = None) -> ContextManager:
     """The time budget of the work on `model` when it is solved with exact formulas (asked
-    with `symbolic`, or a parameter without a value); numbers need none."""
-    exact = bool(symbolic) or any(p.value is None for p in model.parameters.values())
-    return budget("the exact formulas") if exact else nullcontext()
+    with `symbolic`, or a parameter without a value); numbers need none. The error's advice
+    names what the user did: the option, or the parameters left as symbols."""
+    if symbolic:
+        return budget("the exact formulas", why="--symbolic")
+    free = [name for name, p in model.parameters.items() if p.value is None]
+    if not free:
+        return nullcontext()
+    return budget("the exact formulas", why="null:" + ", ".join(free))
 
 
 def check(stage: str = "") -> None:
@@ -74,7 +90,7 @@ def check(stage: str = "") -> None:
     if stack:
         if stage:
             stack[-1][3] = stage
-        if time.monotonic() > stack[-1][0]:
+        if _clock() > stack[-1][0]:
             raise _over()
 
 
@@ -125,30 +141,46 @@ def _time_up(signum: int, frame: Any) -> None:
 
 
 def _over() -> OverBudget:
-    _, what, seconds, stage, _ = _state()[-1]
+    _, what, seconds, stage, _, why = _state()[-1]
     at = f" ({stage})" if stage else ""
-    return OverBudget("limit", f"finding {what} takes longer than {seconds:g} s{at}: they are too "
-                      "large; give some parameters numbers, or solve without --symbolic", "")
+    return OverBudget("limit", f"finding {what} takes longer than {seconds:g} s of CPU time{at}: "
+                      f"they are too large; {_advice(why)}", "")
+
+
+def _advice(why: str) -> str:
+    """What to change, from what made the work exact: the option, or symbols in the model."""
+    if why == "--symbolic":
+        return "give some parameters numbers, or solve without --symbolic"
+    if why.startswith("null:"):
+        names = why[5:]
+        if len(names) > 60:
+            names = names[:59] + "…"
+        return f"give numbers to some of the parameters left as symbols (null: {names})"
+    return "give some parameters numbers"
 
 
 def _arm(end: float) -> Any:
-    """A timer signal at `end` in the main thread (elsewhere only cooperative checks work)."""
+    """A CPU-time timer signal (SIGPROF) at `end` in the main thread (elsewhere only
+    cooperative checks work). The process's CPU time, counted by the timer, is at least
+    the thread's, so the signal never comes early."""
     if threading.current_thread() is not threading.main_thread() or not hasattr(signal, "setitimer"):
         return None
     try:
-        previous = signal.signal(signal.SIGALRM, _ring)
+        previous = signal.signal(signal.SIGPROF, _ring)
     except (ValueError, OSError):
         return None
-    signal.setitimer(signal.ITIMER_REAL, max(end - time.monotonic(), 0.001), 0.25)
+    signal.setitimer(signal.ITIMER_PROF, max(end - _clock(), 0.001), 0.25)
     return previous
 
 
 def _disarm(previous: Any) -> None:
-    signal.setitimer(signal.ITIMER_REAL, 0)
-    signal.signal(signal.SIGALRM, previous)
+    signal.setitimer(signal.ITIMER_PROF, 0)
+    signal.signal(signal.SIGPROF, previous)
 
 
 def _ring(signum: int, frame: Any) -> None:
-    """The timer: raise inside whatever runs (and again every 0.25 s until it is out)."""
-    if _state():
+    """The timer: raise inside whatever runs once the thread's budget is spent (and check
+    again every 0.25 s of CPU time until it is out)."""
+    stack = _state()
+    if stack and _clock() > stack[-1][0]:
         raise _over()

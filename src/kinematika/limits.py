@@ -34,7 +34,8 @@ SWEEP_STEPS = 10_000_000     # increments of one sweep
 SWEEP_VALUES = 32_000_000    # rows × numbers per row held at once: 480 000 rows of a four-bar (under 1 GB on every path)
 
 # symbolic work ----------------------------------------------------------------------------
-SYMBOLIC_SECONDS = 15.0      # wall-clock time for exact formulas (KINEMATIKA_SYMBOLIC_SECONDS overrides)
+SYMBOLIC_SECONDS = 15.0      # CPU time (not wall time: a busy machine does not fail a valid model)
+                             # for exact formulas (KINEMATIKA_SYMBOLIC_SECONDS overrides)
 POINT_OPS = 2000             # operations of a constructed point's exact coordinate (a four-bar's
                              # coupler pin has 84; Jansen's leg in its 15 lengths, 14 000 at F)
 

@@ -37,6 +37,14 @@ def shown(text: Any, limit: int | None = None) -> str:
     return clip(text, limit) if limit is not None else text
 
 
+def shown_lines(text: str) -> str:
+    """A whole document (an explanation, a table) with its line breaks kept and every other
+    control character escaped as `shown` does: names inside it can drive no terminal."""
+    if text.isprintable():
+        return text
+    return "\n".join(shown(line) for line in text.split("\n"))
+
+
 def clip(text: str, limit: int) -> str:
     """`text` cut to at most `limit` characters, the cut marked with …"""
     return text if len(text) <= limit else text[:max(limit - 1, 0)] + "…"

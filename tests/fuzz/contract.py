@@ -105,6 +105,7 @@ class Run:
     stderr: str
     seconds: float
     memory: int                   # peak resident bytes of the child
+    cpu: float = 0.0              # CPU seconds of the child (user + system)
 
     def describe(self) -> str:
         return f"kinematika {' '.join(self.args)} -> {self.status}: {self.stderr[:200] or self.stdout[:200]}"
@@ -148,12 +149,15 @@ def run_cli(args: list[str], seconds: float = SECONDS, cwd: Path | None = None) 
         err.seek(0)
         stdout, stderr = out.read().decode("utf-8", "replace"), err.read().decode("utf-8", "replace")
     code = -9 if killed.is_set() else proc.returncode
-    return Run(args, code, stdout, stderr if code != -9 else "timeout", elapsed, usage.ru_maxrss * 1024)
+    return Run(args, code, stdout, stderr if code != -9 else "timeout", elapsed, usage.ru_maxrss * 1024,
+               usage.ru_utime + usage.ru_stime)
 
 
 def check_run(run: Run) -> None:
     """The command line's contract: exit 0 with an answer, or 2 with one error line."""
     assert run.status != -9, f"hang: {run.describe()}"
+    assert run.cpu <= SECONDS, f"{run.cpu:.1f} s of CPU: {run.describe()}"
+    assert run.memory <= MEMORY, f"{run.memory >> 20} MB: {run.describe()}"
     assert run.status in (0, 2), run.describe()
     assert "Traceback" not in run.stderr, run.describe()
     as_json = "--json" in run.args

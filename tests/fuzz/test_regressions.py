@@ -142,7 +142,35 @@ def test_the_time_budget_stops_cooperative_work_with_a_limit_error():
                 check("simplifying the formulas")
     check_error(info.value)
     assert info.value.kind == "limit"
-    assert "longer than 0.05 s (simplifying the formulas)" in info.value.message
+    assert "longer than 0.05 s of CPU time (simplifying the formulas)" in info.value.message
+
+
+@pytest.mark.parametrize("symbolic", [True, None])
+def test_the_budget_message_names_what_made_the_work_exact(monkeypatch, symbolic):
+    # the wheel's R, v, vd are null: exact work without --symbolic, whose advice would mislead
+    from kinematika.api import as_model
+    from kinematika.budget import exact_work
+
+    monkeypatch.setattr(limits, "SYMBOLIC_SECONDS", 0.02)
+    monkeypatch.delenv("KINEMATIKA_SYMBOLIC_SECONDS", raising=False)
+    with pytest.raises(OverBudget) as info:
+        with exact_work(as_model(wheel()), symbolic):
+            while True:
+                check("solving the equations exactly")
+    check_error(info.value)
+    message = info.value.message
+    if symbolic:
+        assert message.endswith("give some parameters numbers, or solve without --symbolic")
+    else:
+        assert "--symbolic" not in message
+        assert message.endswith("give numbers to some of the parameters left as symbols (null: R, v, vd)")
+
+
+def test_the_budget_counts_cpu_time_not_waiting():
+    # a thread that waits (a loaded machine gives it no processor) spends none of its budget
+    with budget("the exact formulas", 0.2):
+        time.sleep(0.5)
+        check("after waiting")
 
 
 def test_the_time_budget_interrupts_one_long_computation():
@@ -192,6 +220,19 @@ def test_names_are_printed_as_written_never_as_markup_or_terminal_codes(tmp_path
     run = run_cli(["centres", str(write(tmp_path, "names.json", text))])
     check_run(run)
     assert "\x1b" not in run.stdout and shown(name + "c") in run.stdout
+
+
+@pytest.mark.parametrize("fmt", ["md", "html", "tex"])
+def test_explanations_show_names_with_control_characters_escaped(fmt):
+    # found by the campaign: the title and names went raw into every format of explain
+    from kinematika.commands import explain_text
+
+    name = "x\x7f\x9b\x0b\ufeff\t\x1b[/]\u202e"
+    tree = rename(four_bar(), "coupler", "c\x1b[2J")
+    tree["name"] = name
+    text = explain_text(tree, fmt=fmt)
+    assert not any(c in text for c in "\x7f\x9b\x0b\t\x1b\u202e")
+    assert "x\\x7f\\x9b\\x0b" in text and "c\\x1b[2J" in text
 
 
 def test_text_helpers_escape_controls_and_markup_and_bound_reprs():

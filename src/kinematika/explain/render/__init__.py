@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from ...errors import KinematikaError
+from ...text import shown_lines
 from ..catalogue import catalogue
 from ..document import Document
 from .base import Renderer
@@ -14,7 +15,8 @@ FORMATS: dict[str, type[Renderer]] = {"md": MarkdownRenderer, "html": HtmlRender
 
 def render(doc: Document, lang: str = "en", fmt: str = "md", drawings: bool = True) -> str:
     """The document as text in `lang` (en, es, ca, eu) and `fmt` (md, html, tex);
-    `drawings=False` leaves out the `draw` figures (quick, for checking the text)."""
+    `drawings=False` leaves out the `draw` figures (quick, for checking the text). Control
+    characters in the model's names come out escaped (``\\x1b``), as everywhere names are shown."""
     if fmt not in FORMATS:
         raise KinematikaError("schema", f"unknown format {fmt!r} (formats: {', '.join(FORMATS)})", "--format")
-    return FORMATS[fmt](doc, catalogue(lang), drawings).render()
+    return shown_lines(FORMATS[fmt](doc, catalogue(lang), drawings).render())

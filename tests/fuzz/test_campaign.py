@@ -1,0 +1,76 @@
+"""The fuzzing campaign (`campaign.py`) in the test suite: a few dozen generated inputs on
+every run (each through the command line in its own process), thousands on demand.
+
+    KINEMATIKA_FUZZ=5000 .venv/bin/python -m pytest tests/fuzz/test_campaign.py -s
+    KINEMATIKA_FUZZ_SEED=123 ...             # another campaign (default: a new one every day)
+
+With `CI=1` it runs 30 inputs, else 100; the inputs are drawn from a seed that changes
+every day, so that the suite keeps finding new inputs, and a failure names its seed and
+number (`tests/fuzz/campaign.py --seed S --case N` runs it again).
+"""
+from __future__ import annotations
+
+import os
+import time
+
+import pytest
+
+from .campaign import run
+from .cases import CLASSES, case
+from .forks import run_forked
+
+
+def _count() -> int:
+    raw = os.environ.get("KINEMATIKA_FUZZ", "")
+    if raw.isdigit():
+        return int(raw)
+    return 30 if os.environ.get("CI") else 100
+
+
+def _seed() -> int:
+    raw = os.environ.get("KINEMATIKA_FUZZ_SEED", "")
+    return int(raw) if raw.isdigit() else int(time.time() // 86400)
+
+
+def test_the_campaign_meets_the_contract():
+    summary = run(_count(), _seed(), workers=2, fresh_every=25 if _count() >= 100 else 10)
+    print("\n" + summary.report())
+    assert not summary.failures, summary.report()
+
+
+def test_every_class_of_input_is_drawn():
+    drawn = {case(0, n).klass for n in range(200)}
+    assert drawn == set(CLASSES)
+
+
+def test_a_forked_run_is_a_separate_process_with_its_own_status_and_streams(tmp_path):
+    good = run_forked(["solve", "examples/four_bar.yaml", "--json"], cwd=os.getcwd())
+    assert good.status == 0 and good.stdout.startswith('{"name":"Four-bar linkage"') and good.stderr == ""
+    bad = run_forked(["solve", str(tmp_path / "none.yaml")])
+    assert bad.status == 2 and bad.stderr.startswith("error (syntax):") and bad.stdout == ""
+
+
+@pytest.mark.parametrize("behaviour", ["raise", "hang", "shout"])
+def test_the_campaign_catches_what_breaks_the_contract(monkeypatch, behaviour):
+    # a child that raises is seen as a traceback, one that hangs is killed and seen as a
+    # hang, one that answers with control characters is caught by the campaign's checks
+    import sys
+
+    import kinematika.cli.run
+
+    from . import campaign
+    from .cases import Case
+
+    def command(*args, **kwargs):
+        if behaviour == "raise":
+            raise RuntimeError("boom")
+        if behaviour == "hang":
+            time.sleep(30)
+        print("answer \x1b]0;owned\x07")
+        sys.exit(0)
+
+    monkeypatch.setattr(kinematika.cli.run, "solve_command", command)
+    args = ["solve", "examples/four_bar.yaml"]
+    got = run_forked(args, wall=2)
+    failure = campaign.check(Case(0, "test", args), got, "")
+    assert {"raise": "Traceback", "hang": "hang", "shout": "control character"}[behaviour] in failure
