@@ -11,29 +11,27 @@ from __future__ import annotations
 
 import re
 import reprlib
+import unicodedata
 from typing import Any
 
-# C0 and C1 controls, DEL, line and paragraph separators, bidirectional controls, surrogates
-_UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069"
-                     "\ud800-\udfff]")
 _NAMED = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
 
 
-def _escape(match: re.Match) -> str:
-    c = match.group()
+def _escape(c: str) -> str:
     if c in _NAMED:
         return _NAMED[c]
     code = ord(c)
-    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
+    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}" if code < 0x10000 else f"\\U{code:08x}"
 
 
 def shown(text: Any, limit: int | None = None) -> str:
-    """`text` as one printable line: control characters, separators, bidirectional controls
-    and lone surrogates written as escapes (``\\x1b``, ``\\n``, ``\\ud800``); cut to `limit`
-    characters with … when given."""
+    """`text` as one printable line: every character Python does not call printable (control
+    characters, separators, bidirectional and other format controls such as zero-width
+    spaces, lone surrogates) written as an escape (``\\x1b``, ``\\n``, ``\\u200b``,
+    ``\\ud800``), spaces of every width kept; cut to `limit` characters with … when given."""
     text = text if isinstance(text, str) else str(text)
     if not text.isprintable():
-        text = _UNSAFE.sub(_escape, text)
+        text = "".join(c if c.isprintable() or unicodedata.category(c) == "Zs" else _escape(c) for c in text)
     return clip(text, limit) if limit is not None else text
 
 
@@ -76,7 +74,13 @@ def brief(value: Any, limit: int = 60) -> str:
     (a YAML alias bomb, a 30,000-character name), control characters escaped."""
     if isinstance(value, str):
         return repr(value) if len(value) <= limit else repr(value[:limit - 1])[:-1] + "…'"
-    return shown(_REPR.repr(value), limit)
+    if isinstance(value, int) and not isinstance(value, bool) and value.bit_length() > 3 * limit:
+        # repr of an integer past Python's 4300 digits raises; past `limit` it is cut anyway
+        return f"{'-' if value < 0 else ''}an integer of {int(value.bit_length() * 0.30103) + 1} digits"
+    try:
+        return shown(_REPR.repr(value), limit)
+    except ValueError:                          # an integer too long to write, deeper inside
+        return f"a {type(value).__name__} too large to show"
 
 
 def names(items: Any, limit: int = 12) -> str:

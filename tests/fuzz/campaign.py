@@ -28,8 +28,8 @@ if __package__ in (None, ""):                      # run as a script: import as 
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
     __package__ = "fuzz"
 
-from .cases import Case, bases, case  # noqa: E402
-from .contract import ROOT, Run, check_run, run_cli  # noqa: E402
+from .cases import Case, bases, case, symbolic_examples  # noqa: E402
+from .contract import ROOT, Run, check_run, json_wanted, run_cli  # noqa: E402
 from .forks import run_all  # noqa: E402
 from .scaling import ACCELERATION, ALPHA, OMEGA, POSITION, VELOCITY, close, expected, factor  # noqa: E402
 
@@ -55,9 +55,16 @@ class Summary:
         return [r for r in self.results if r.failure]
 
     def report(self) -> str:
-        inputs = [r for r in self.results if r.case.klass != "base"]
-        lines = [f"seed {self.seed}: {len(inputs)} inputs (+{len(self.results) - len(inputs)} base runs) "
+        inputs = [r for r in self.results if r.case.klass not in ("base", "example")]
+        extra = len(self.results) - len(inputs)
+        lines = [f"seed {self.seed}: {len(inputs)} inputs (+{extra} runs of the examples) "
                  f"in {self.seconds:.0f} s, {len(self.failures)} failures"]
+        examples = [r for r in self.results if r.case.klass == "example"]
+        if examples:
+            top = max(examples, key=lambda r: r.run.cpu)
+            lines.append(f"every example with --symbolic: {sum(r.run.status == 0 for r in examples)}/"
+                         f"{len(examples)} answered, most CPU {top.run.cpu:.2f} s ({top.case.note}, "
+                         f"wall {top.run.seconds:.2f} s)")
         by_class = Counter(r.case.klass for r in inputs)
         lines.append("inputs per class: " + ", ".join(f"{k} {v}" for k, v in sorted(by_class.items())))
         by_command = Counter(r.case.args[0] if r.case.args else "" for r in inputs)
@@ -104,7 +111,7 @@ def check(case: Case, run: Run, text: str) -> str:
         return str(err) or "contract"
     except ValueError as err:                    # the JSON did not parse
         return f"invalid JSON: {err}: {run.stdout[:200]!r}"
-    if run.status == 0 and "--json" not in run.args:
+    if run.status == 0 and not json_wanted(run.args) and "--help" not in run.args:
         bad = CONTROL.search(run.stdout)
         if bad:
             return f"control character {bad.group()!r} in the output: {run.stdout[max(0, bad.start() - 40):bad.end() + 40]!r}"
@@ -184,14 +191,17 @@ def _argv(args: list[str]) -> list[str]:
 
 
 def run(count: int, seed: int, workers: int = 2, fresh_every: int = 25, keep: Path | None = None,
-        numbers: list[int] | None = None, progress: bool = False) -> Summary:
-    """`count` inputs of the campaign `seed` (or the inputs `numbers`), checked."""
+        numbers: list[int] | None = None, progress: bool = False, examples: bool = False) -> Summary:
+    """`count` inputs of the campaign `seed` (or the inputs `numbers`), checked; with
+    `examples`, every shipped example solved with `--symbolic` as well."""
     start = time.monotonic()
     summary = Summary(seed)
     scratch = Path(tempfile.mkdtemp(prefix="kinematika-fuzz-"))
     drawn = [case(seed, n) for n in (numbers if numbers is not None else range(count))]
     wanted = {c.base for c in drawn}
     cases = [c for c in bases() if c.note in wanted] + drawn
+    if examples:
+        cases += symbolic_examples()
     texts: dict[int, str] = {}
 
     def jobs():
@@ -200,7 +210,7 @@ def run(count: int, seed: int, workers: int = 2, fresh_every: int = 25, keep: Pa
             folder.mkdir()
             args = _argv(c.materialise(folder))
             texts[i] = "".join(v if isinstance(v, str) else "" for v in c.files.values())
-            if c.klass != "base" and fresh_every and c.number % fresh_every == fresh_every - 1:
+            if c.klass not in ("base", "example") and fresh_every and c.number % fresh_every == fresh_every - 1:
                 continue                                   # run below as a fresh process
             yield i, args, ROOT
 
@@ -234,6 +244,9 @@ def run(count: int, seed: int, workers: int = 2, fresh_every: int = 25, keep: Pa
             why = f"answers not comparable: {err!r}"
         if why:
             r.failure = "wrong answer: " + why
+    for r in results.values():
+        if r.case.klass == "example" and not r.failure and r.run.status != 0:
+            r.failure = f"a shipped example does not answer with --symbolic: {r.run.stdout[:200]}"
     summary.results = [results[i] for i in range(len(cases))]
     summary.seconds = time.monotonic() - start
     if keep:
@@ -250,8 +263,8 @@ def run(count: int, seed: int, workers: int = 2, fresh_every: int = 25, keep: Pa
 
 def _ordinary(c: Case) -> bool:
     """A rename to a name a model may use (a plain identifier of ordinary length)."""
-    new = c.note.split(" -> ", 1)[-1]
-    return bool(re.fullmatch(r"'[A-Za-z_][A-Za-z0-9_]{0,60}'", new)) and new.strip("'") not in (
+    new = c.name
+    return bool(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]{0,60}", new)) and new not in (
         "lambda", "pi", "sqrt", "None", "True", "abs", "ground", "_kw_lambda_", "__import__")
 
 
@@ -264,11 +277,13 @@ def main() -> None:
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--case", type=int, action="append", help="run only these inputs, verbosely")
     parser.add_argument("--keep", type=Path, help="copy each failing input's files here")
+    parser.add_argument("--examples", action="store_true", help="solve every example with --symbolic too")
     ns = parser.parse_args()
-    summary = run(ns.count, ns.seed, ns.workers, keep=ns.keep, numbers=ns.case, progress=not ns.case)
+    summary = run(ns.count, ns.seed, ns.workers, keep=ns.keep, numbers=ns.case, progress=not ns.case,
+                  examples=ns.examples)
     if ns.case:
         for r in summary.results:
-            if r.case.klass != "base":
+            if r.case.klass not in ("base", "example"):
                 print(r.case.klass, r.case.note, r.case.args, "->", r.run.status, f"{r.run.cpu:.2f} s CPU")
                 print(r.run.stdout[:2000], r.run.stderr[:2000], sep="\n")
     print(summary.report())

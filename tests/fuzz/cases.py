@@ -48,6 +48,7 @@ class Case:
     length: float = 1.0
     rate: float = 1.0
     strict: bool = False          # must answer (exit 0) when its base answers
+    name: str = ""                # the new name of a renamed model
     note: str = ""
 
     def materialise(self, folder: Path) -> list[str]:
@@ -300,7 +301,7 @@ def renamed_case(rng: random.Random, n: int) -> Case:
     command = rng.choice(["solve", "solve", "centres", "explain", "draw"])
     args = [command, "{dir}/" + file] + (["--json"] if command == "solve" else options(rng, command, False))
     return Case(n, "renamed", args, {file: text}, base=f"base:{name}" if command == "solve" else None,
-                note=f"{name} -> {new[:20]!r}")
+                name=new, note=f"{name} -> {new[:20]!r}")
 
 
 BAD_VALUES = ["", " ", "nope", "-1", "0", "1e400", "nan", "inf", "-inf", "1e-400", "9" * 40, "1.5",
@@ -366,3 +367,9 @@ def bases() -> list[Case]:
         out.append(Case(-1, "base", ["solve", "{dir}/model.json", "--json"],
                         {"model.json": json.dumps(numeric(TREES[name]))}, note=f"base:{name}"))
     return out
+
+
+def symbolic_examples() -> list[Case]:
+    """Every shipped example solved with `--symbolic` as it is (the issue's bar: under 5 s)."""
+    return [Case(-1, "example", ["solve", f"examples/{name}", "--symbolic", "--json"], note=name)
+            for name in sorted(TREES)]

@@ -15,6 +15,7 @@ import resource
 import signal
 import subprocess
 import sys
+import unicodedata
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
@@ -65,7 +66,8 @@ def finite(data: Any, where: str = "") -> None:
 def one_line(text: str, limit: int) -> None:
     """A message line: printable, no line breaks or control characters, bounded."""
     assert len(text) <= limit, f"{len(text)} characters: {text[:80]}…"
-    assert text.isprintable() or all(c.isprintable() or c == " " for c in text), repr(text[:120])
+    assert text.isprintable() or all(c.isprintable() or unicodedata.category(c) == "Zs" for c in text), \
+        repr(text[:120])
 
 
 def check_error(err: KinematikaError) -> None:
@@ -153,6 +155,16 @@ def run_cli(args: list[str], seconds: float = SECONDS, cwd: Path | None = None) 
                usage.ru_utime + usage.ru_stime)
 
 
+# options that take a value: `--set --json` gives --set the value '--json' (no JSON asked)
+VALUE_OPTIONS = {"--set", "--move", "--assembly", "--joint", "--by", "--steps", "--csv", "--plot", "-o",
+                 "--output", "--format", "--lang", "--length-unit", "--points", "--view", "--width"}
+
+
+def json_wanted(args: list[str]) -> bool:
+    """Whether `--json` is given as a flag (not as another option's value)."""
+    return any(a == "--json" and (i == 0 or args[i - 1] not in VALUE_OPTIONS) for i, a in enumerate(args))
+
+
 def check_run(run: Run) -> None:
     """The command line's contract: exit 0 with an answer, or 2 with one error line."""
     assert run.status != -9, f"hang: {run.describe()}"
@@ -160,7 +172,9 @@ def check_run(run: Run) -> None:
     assert run.memory <= MEMORY, f"{run.memory >> 20} MB: {run.describe()}"
     assert run.status in (0, 2), run.describe()
     assert "Traceback" not in run.stderr, run.describe()
-    as_json = "--json" in run.args
+    as_json = json_wanted(run.args)
+    if "--help" in run.args and run.status == 0:
+        return                                   # the help text, as asked
     if run.status == 2:
         if as_json:
             lines = run.stdout.splitlines()

@@ -33,7 +33,8 @@ def _seed() -> int:
 
 
 def test_the_campaign_meets_the_contract():
-    summary = run(_count(), _seed(), workers=2, fresh_every=25 if _count() >= 100 else 10)
+    count = _count()
+    summary = run(count, _seed(), workers=2, fresh_every=25 if count >= 100 else 10, examples=count >= 1000)
     print("\n" + summary.report())
     assert not summary.failures, summary.report()
 

@@ -457,3 +457,51 @@ def test_a_two_dof_fan_with_a_restating_vector_driver_is_mobility():
     assert err.kind == "mobility"
     assert "2 degrees of freedom but the drivers give 1 independent condition" in err.message
     assert err.message.endswith("left free: blades")
+
+
+# found by the fuzzing campaign (tests/fuzz/campaign.py) ------------------------------------
+def test_an_integer_too_long_to_write_is_shown_by_its_size(tmp_path):
+    # repr() of an integer past 4300 digits raises ValueError: it became an internal error
+    text = (EXAMPLES / "four_bar.yaml").read_text().replace("type: revolute", "type: 0x" + "f" * 5000, 1)
+    err = error_of(write(tmp_path, "hex.yaml", text))
+    assert err.kind == "schema" and "an integer of 6021 digits is not one of 'revolute'" in err.message
+    assert brief(-(16 ** 5000)) == "-an integer of 6021 digits"
+
+
+@pytest.mark.parametrize("name", ["\u200b", "a\ufeffb", "x\u00ad", "\U000e0001"])
+def test_invisible_format_characters_in_names_are_escaped_in_messages(name):
+    tree = four_bar()
+    tree["bodies"][name] = tree["bodies"].pop("coupler")
+    err = error_of(tree)                              # the joints still name 'coupler'
+    assert "unknown body 'coupler'" in err.message and shown(name) in err.message
+    assert all(c not in err.message for c in name if not c.isprintable())
+    assert shown("a\u00a0b\u202fc") == "a\u00a0b\u202fc"    # spaces of any width stay spaces
+
+
+def test_a_point_name_with_a_dash_is_explained():
+    # explanations wrote a segment as 'Q-P' and split it at the first '-': '-x' broke it
+    from kinematika.commands import explain_text
+
+    tree = rename(four_bar(), "A", "-x")
+    text = explain_text(tree)
+    assert "ω" in text and "-x" in text
+
+
+def test_a_trigonometric_identity_is_zero_in_the_decomposition_check():
+    # the pitch axis [sin ψ, 0, 0] makes a component (…)(sin²ψ + cos²ψ − 1)/sin²ψ, which the
+    # canonical form does not reduce: the self-check raised AssertionError
+    tree = yaml.safe_load((EXAMPLES / "robot_arm_3d.yaml").read_text())
+    tree["joints"][1]["axis"] = ["sin(psi)", 0, 0]
+    exact = solve_data(tree, symbolic=True)
+    numbers = solve_data(tree)
+    want = next(a for a in numbers["answers"] if "decompose" in a["ask"])["value"]["acceleration"]
+    got = next(a for a in exact["answers"] if "decompose" in a["ask"])["value"]["acceleration"]
+    import sympy
+
+    values = {sympy.Symbol(k): sympy.sympify(v) for k, v in
+              {"h": 0.5, "L": 0.8, "psi": "pi/6", "th": "pi/4"}.items()}
+    for part in ("drag", "relative", "coriolis", "total"):
+        evaluated = [float(sympy.sympify(c, locals={str(s): s for s in values}).subs(values)) for c in got[part]]
+        assert evaluated == pytest.approx(want[part], abs=1e-12)
+    # and by hand: the pitch axis is x, E turns about S at 1 rad/s, the base about z at 0.5
+    assert sum(want[k][0] for k in ("drag", "relative", "coriolis")) == pytest.approx(want["total"][0])

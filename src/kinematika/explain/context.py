@@ -129,9 +129,18 @@ class Ctx:
         return PointRef(point, body)
 
 
-def segment(q: str, p: str) -> str:
+class Segment(str):
+    """A segment's name as written (AB, O2-A) that keeps its two points: names may hold `-`
+    themselves (`-x`), so the name alone cannot be split back."""
+
+    ends: tuple[str, str] = ("", "")
+
+
+def segment(q: str, p: str) -> Segment:
     """The name of the segment from q to p as the notes write it (AB; O2-A for long names)."""
-    return q + p if len(q) == 1 and len(p) == 1 else f"{q}-{p}"
+    seg = Segment(q + p if len(q) == 1 and len(p) == 1 else f"{q}-{p}")
+    seg.ends = (q, p)
+    return seg
 
 
 def omega_sym(body: str, relative_to: Optional[str] = None, vector: bool = False) -> Sym:

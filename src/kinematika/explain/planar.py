@@ -339,6 +339,8 @@ class PlanarSteps:
 
 def split_segment(seg: str) -> tuple[str, str]:
     """The two point names of a segment written by `segment` (AB, O2-A)."""
+    if getattr(seg, "ends", None):
+        return seg.ends
     return tuple(seg.split("-", 1)) if "-" in seg else (seg[0], seg[1:])
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, Iterable, Optional
 
 from ..errors import KinematikaError
-from ..text import names as name_list
+from ..text import brief, names as name_list
 from . import shape
 from .constructions import Construction, ConstructionReader, construction_order
 from .expressions import Expr, ExpressionError, parse
@@ -496,8 +496,7 @@ def _message(error: dict, loc: list) -> str:
     if kind == "missing":
         return f"missing key {last!r}"
     if kind == "literal_error":
-        return f"{error['input']!r} is not one of {error['ctx']['expected']}"
+        return f"{brief(error['input'])} is not one of {error['ctx']['expected']}"
     if kind in {"int_type", "float_type", "string_type", "union_tag_invalid"} or kind.endswith("_type"):
-        shown = repr(error.get("input"))[:60]
-        return f"unexpected value {shown}: {error['msg'].lower()}"
+        return f"unexpected value {brief(error.get('input'))}: {error['msg'].lower()}"
     return error["msg"]
