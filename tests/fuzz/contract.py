@@ -161,7 +161,8 @@ VALUE_OPTIONS = {"--set", "--move", "--assembly", "--joint", "--by", "--steps", 
 
 
 def json_wanted(args: list[str]) -> bool:
-    """Whether `--json` is given as a flag (not as another option's value)."""
+    """Whether `--json` is given as a flag for certain (not only as another option's value,
+    where the command line may read it either way)."""
     return any(a == "--json" and (i == 0 or args[i - 1] not in VALUE_OPTIONS) for i, a in enumerate(args))
 
 
@@ -172,7 +173,9 @@ def check_run(run: Run) -> None:
     assert run.memory <= MEMORY, f"{run.memory >> 20} MB: {run.describe()}"
     assert run.status in (0, 2), run.describe()
     assert "Traceback" not in run.stderr, run.describe()
-    as_json = json_wanted(run.args)
+    as_json = "--json" in run.args
+    if as_json and not json_wanted(run.args) and not run.stdout.strip():
+        as_json = False            # `--set --json`: '--json' may be read as --set's value
     if "--help" in run.args and run.status == 0:
         return                                   # the help text, as asked
     if run.status == 2:

@@ -235,6 +235,18 @@ def test_explanations_show_names_with_control_characters_escaped(fmt):
     assert "x\\x7f\\x9b\\x0b" in text and "c\\x1b[2J" in text
 
 
+@pytest.mark.parametrize("name", ["x\ufeff\u202e[/]", "\x7f[bold]", "\x1b]0;owned\x07"])
+def test_the_assemblies_table_shows_names_as_written(tmp_path, name):
+    # found by the campaign: its title was read as rich markup ('[/]': MarkupError) and
+    # printed control characters raw
+    tree = four_bar()
+    tree["name"] = name
+    run = run_cli(["assemblies", str(write(tmp_path, "named.json", tree))])
+    check_run(run)
+    assert run.status == 0 and shown(name) in run.stdout.replace("\n", "")
+    assert not any(c in run.stdout for c in "\x7f\x1b\x07\u202e\ufeff")
+
+
 def test_text_helpers_escape_controls_and_markup_and_bound_reprs():
     assert shown("a\x1b[2Jb\nc\u202ed\ud800") == "a\\x1b[2Jb\\nc\\u202ed\\ud800"
     assert markup("[/]") == "\\[/]"
