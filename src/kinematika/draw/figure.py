@@ -24,7 +24,7 @@ from .canvas import Canvas
 from .geometry import Box
 from .joints import paint_joints
 from .marks import KENNEDY, NORMAL, mark_groups, paint_axes, paint_curvatures, paint_marks
-from .names import bare, number
+from .names import bare, number, plain
 from .options import DrawOptions
 from .scene import Scene
 from .style import (ACCELERATION, CENTRE, CURVATURE, INK, LONGEST, SHORTEST, TITLE_SIZE, VELOCITY)
@@ -152,7 +152,7 @@ def _overflow(ax: Any, placed: list) -> Optional[tuple]:
 
 
 def _title(fig: Figure, title: str) -> None:
-    fig.text(0.5, 1 - 0.3 / fig.get_figheight(), title.replace("$", r"\$"), ha="center",
+    fig.text(0.5, 1 - 0.3 / fig.get_figheight(), plain(title), ha="center",
              va="center", fontsize=TITLE_SIZE, weight="bold", color=INK)
 
 

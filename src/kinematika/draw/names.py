@@ -23,8 +23,12 @@ def body_numbers(model: Any) -> dict[str, int]:
 
 
 def plain(text: str) -> str:
-    """A model name made safe for ordinary (non-math) text: a `$` would start mathtext."""
-    return text.replace("$", r"\$")
+    """A model name made safe for ordinary (non-math) text: control characters written as
+    escapes (as everywhere names are shown; a font has no glyph for them), and a `$` would
+    start mathtext."""
+    from ..text import shown
+
+    return shown(text).replace("$", r"\$")
 
 
 def _roman(name: str) -> str:
