@@ -521,3 +521,20 @@ def test_a_trigonometric_identity_is_zero_in_the_decomposition_check():
         assert evaluated == pytest.approx(want[part], abs=1e-12)
     # and by hand: the pitch axis is x, E turns about S at 1 rad/s, the base about z at 0.5
     assert sum(want[k][0] for k in ("drag", "relative", "coriolis")) == pytest.approx(want["total"][0])
+
+
+def test_figures_show_names_with_control_characters_escaped():
+    # the title and the plain labels went raw into matplotlib (a box for ESC, a warning)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from kinematika.draw import draw
+
+    name = "t\x1b]0;owned\x07"
+    tree = rename(four_bar(), "coupler", "c\x1b[2J")
+    tree["name"] = name
+    fig = draw(tree)
+    texts = [t.get_text() for t in fig.findobj(matplotlib.text.Text)]
+    assert shown(name) in texts
+    assert any(shown("c\x1b[2J") in t for t in texts)
+    assert not any(c in t for t in texts for c in "\x1b\x07")
