@@ -24,6 +24,7 @@ from .canvas import Canvas
 from .geometry import Box
 from .joints import paint_joints
 from .marks import KENNEDY, NORMAL, mark_groups, paint_axes, paint_curvatures, paint_marks
+from ..text import shown
 from .names import bare, number, plain
 from .options import DrawOptions
 from .scene import Scene
@@ -179,6 +180,7 @@ def _notes(scene: Scene, drawn: list[Arrow]) -> list[str]:
                      "(axes x, y, z shown at the lower right)")
     lines: list[str] = []
     for note in notes:
+        note = shown(note)                     # names in notes: control characters escaped
         kept = re.sub(r"(?<=\b\d) (?=\w)", NBSP, note.replace(" = ", f"{NBSP}={NBSP}"))
         lines += [line.replace(NBSP, " ") for line in textwrap.wrap(kept.replace("$", r"\$"), 100)]
     return lines
