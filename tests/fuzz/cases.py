@@ -27,8 +27,9 @@ from typing import Any
 
 import yaml
 
+from . import mutations
 from .mutations import (HOSTILE_EXPRESSIONS, HOSTILE_FILES, HOSTILE_NAMES, HOSTILE_NUMBERS, TREES,
-                        _get, _paths, _scaled_number, _set, alias_bomb, rename)
+                        _get, _paths, _scaled_number, _set, alias_bomb, names_in)
 from .scaling import numeric, scaled
 
 COMMANDS = ["solve", "centres", "sweep", "explain", "draw", "assemblies"]
@@ -168,18 +169,10 @@ def mutate(rng: random.Random, tree: dict, count: int, structural: bool) -> dict
 def renamed(rng: random.Random, tree: dict, new: str, everywhere: bool = True) -> dict:
     """A point, body or parameter (chosen at random) renamed to `new`, everywhere or in its
     definition only."""
-    names = [n for section in ("points", "bodies", "parameters") for n in (tree.get(section) or {})
-             if isinstance(n, str) and n != "ground"]
+    names = [n for n in names_in(tree) if n != "ground"]
     if not names:
         return tree
-    old = rng.choice(sorted(names))
-    if not everywhere:
-        for section in ("points", "bodies", "parameters"):
-            items = tree.get(section)
-            if isinstance(items, dict) and old in items:
-                items[new] = items.pop(old)
-                return tree
-    return rename(tree, old, new)
+    return mutations.renamed(tree, new, everywhere, rng.choice(sorted(names)))
 
 
 # the classes ---------------------------------------------------------------------------------

@@ -189,5 +189,5 @@ def check_run(run: Run) -> None:
             lines = run.stderr.splitlines()
             assert len(lines) == 1 and lines[0].startswith("error ("), run.describe()
             one_line(lines[0], 40 + MESSAGE_CHARS + WHERE_CHARS)
-    elif as_json:
+    elif json_wanted(run.args):
         finite(json.loads(run.stdout, parse_constant=lambda c: float(c)))

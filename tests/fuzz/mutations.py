@@ -109,14 +109,20 @@ def mutated(draw: Any, structural: bool = True) -> tuple[str, dict]:
     return name, tree
 
 
-def renamed(tree: dict, new: str, everywhere: bool = True) -> dict:
-    """A point, body or parameter renamed to `new`: everywhere it is written (the same
-    model under another name: its answers must not change), or in its definition only."""
-    names = [n for section in ("points", "bodies", "parameters") for n in (tree.get(section) or {})
-             if isinstance(n, str)]
+def names_in(tree: dict) -> list[str]:
+    """The names of the model's points, bodies and parameters."""
+    return [n for section in ("points", "bodies", "parameters") for n in (tree.get(section) or {})
+            if isinstance(n, str)]
+
+
+def renamed(tree: dict, new: str, everywhere: bool = True, old: str | None = None) -> dict:
+    """A point, body or parameter (`old`, else the longest name) renamed to `new`:
+    everywhere it is written (the same model under another name: its answers must not
+    change), or in its definition only."""
+    names = names_in(tree)
     if not names:
         return tree
-    old = sorted(names, key=len)[-1]
+    old = old if old is not None else sorted(names, key=len)[-1]
     if not everywhere:
         for section in ("points", "bodies", "parameters"):
             items = tree.get(section)

@@ -17,6 +17,7 @@ import pytest
 
 from .campaign import run
 from .cases import CLASSES, case
+from .contract import check_run
 from .forks import run_forked
 
 
@@ -49,6 +50,10 @@ def test_a_forked_run_is_a_separate_process_with_its_own_status_and_streams(tmp_
     assert good.status == 0 and good.stdout.startswith('{"name":"Four-bar linkage"') and good.stderr == ""
     bad = run_forked(["solve", str(tmp_path / "none.yaml")])
     assert bad.status == 2 and bad.stderr.startswith("error (syntax):") and bad.stdout == ""
+    # '--json' as another option's value asks for no JSON: the explanation is the answer
+    taken = run_forked(["explain", "examples/wheel_rolling.yaml", "--length-unit", "--json"], cwd=os.getcwd())
+    check_run(taken)
+    assert taken.status == 0 and "# Wheel rolling" in taken.stdout
 
 
 @pytest.mark.parametrize("behaviour", ["raise", "hang", "shout"])
