@@ -117,7 +117,7 @@ def check(case: Case, run: Run, text: str) -> str:
             return f"control character {bad.group()!r} in the output: {run.stdout[max(0, bad.start() - 40):bad.end() + 40]!r}"
         if run.stderr.strip():
             return f"exit 0 with text on stderr: {run.stderr[:200]!r}"
-        if not NAN.search(text):
+        if not NAN.search(text + " ".join(run.args)):       # 'nan' the user wrote is shown as written
             bad = NAN.search(run.stdout)
             if bad:
                 return f"{bad.group()} in the output: {run.stdout[max(0, bad.start() - 80):bad.end() + 40]!r}"
