@@ -323,16 +323,23 @@ ERRORS = {"tb_err_no_side": "geometry", "tb_err_circles_apart": "geometry", "tb_
 
 def expected(name: str) -> dict:
     """The NAME.expect.json content of a case, from its derivation."""
-    source = _first_comment(HERE / f"{name}.yaml")
-    if name in ERRORS:
-        return {"source": source, "error": ERRORS[name]}
-    if name in SYMBOLIC:
-        fn = SYMBOLIC[name]
+    return expected_in(HERE, name, ERRORS, SYMBOLIC, NUMERIC)
+
+
+def expected_in(folder: Path, name: str, errors: dict, symbolic: dict, numeric: dict,
+                numbers: Callable = lambda answers: answers) -> dict:
+    """The NAME.expect.json content of a case in `folder`: its error kind, or the answers of
+    its symbolic or numeric derivation (`numbers` turns those into JSON numbers)."""
+    source = _first_comment(folder / f"{name}.yaml")
+    if name in errors:
+        return {"source": source, "error": errors[name]}
+    if name in symbolic:
+        fn = symbolic[name]
         return {"source": f"{source} Derived by hand: {_docstring(fn)}", "symbolic": True,
                 "assume_positive": True, "answers": fn()}
-    fn = NUMERIC[name]
+    fn = numeric[name]
     return {"source": f"{source} Derived by hand: {_docstring(fn)}", "symbolic": False,
-            "tolerance": 1e-9, "abs": 1e-9, "answers": fn()}
+            "tolerance": 1e-9, "abs": 1e-9, "answers": numbers(fn())}
 
 
 def _docstring(fn) -> str:

@@ -33,8 +33,13 @@ def test_every_case_has_its_derivation_and_expectation():
 
 @pytest.mark.parametrize("name", NAMES)
 def test_the_expectation_is_the_hand_derivation(name):
-    written = json.loads((CASES / f"{name}.expect.json").read_text(encoding="utf-8"))
-    derived = json.loads(json.dumps(derive.expected(name)))          # tuples → lists
+    expectation_is_derivation(CASES, derive, name)
+
+
+def expectation_is_derivation(folder: Path, module, name: str) -> None:
+    """NAME.expect.json in `folder` is what `module`'s hand derivation gives."""
+    written = json.loads((folder / f"{name}.expect.json").read_text(encoding="utf-8"))
+    derived = json.loads(json.dumps(module.expected(name)))          # tuples → lists
     assert written.keys() == derived.keys()
     assert written.get("error") == derived.get("error")
     _same(written.get("answers"), derived.get("answers"), rel=1e-12)
@@ -58,8 +63,13 @@ def _same(got, exp, rel):
 # the cases through the command line -------------------------------------------------------
 @pytest.mark.parametrize("name", NAMES)
 def test_case_through_the_command_line(name):
-    expect = json.loads((CASES / f"{name}.expect.json").read_text(encoding="utf-8"))
-    run = subprocess.run([sys.executable, "-m", "kinematika", "solve", str(CASES / f"{name}.yaml"), "--json"],
+    case_through_the_command_line(CASES, name)
+
+
+def case_through_the_command_line(folder: Path, name: str) -> None:
+    """`kinematika solve NAME.yaml --json` against NAME.expect.json, by check-cases' rules."""
+    expect = json.loads((folder / f"{name}.expect.json").read_text(encoding="utf-8"))
+    run = subprocess.run([sys.executable, "-m", "kinematika", "solve", str(folder / f"{name}.yaml"), "--json"],
                          capture_output=True, text=True, timeout=300)
     assert "Traceback" not in run.stdout + run.stderr
     out = json.loads(run.stdout)

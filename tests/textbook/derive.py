@@ -718,16 +718,7 @@ ERRORS = {"fb_err_move_past_limit": "assembly", "fb_err_two_drivers": "mobility"
 
 def expected(name: str) -> dict:
     """The NAME.expect.json content of a case, from its derivation."""
-    source = base._first_comment(HERE / f"{name}.yaml")
-    if name in ERRORS:
-        return {"source": source, "error": ERRORS[name]}
-    if name in SYMBOLIC:
-        fn = SYMBOLIC[name]
-        return {"source": f"{source} Derived by hand: {base._docstring(fn)}", "symbolic": True,
-                "assume_positive": True, "answers": fn()}
-    fn = NUMERIC[name]
-    return {"source": f"{source} Derived by hand: {base._docstring(fn)}", "symbolic": False,
-            "tolerance": 1e-9, "abs": 1e-9, "answers": _floats(fn())}
+    return base.expected_in(HERE, name, ERRORS, SYMBOLIC, NUMERIC, _floats)
 
 
 def _floats(value):

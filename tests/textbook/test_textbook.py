@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.model.test_cases import _matches, _same
+from tests.model.test_cases import _matches, case_through_the_command_line, expectation_is_derivation
 
 HERE = Path(__file__).resolve().parent
 _spec = importlib.util.spec_from_file_location("textbook_derive", HERE / "derive.py")
@@ -43,25 +43,12 @@ def test_every_case_has_its_derivation_and_expectation():
 
 @pytest.mark.parametrize("name", NAMES)
 def test_the_expectation_is_the_hand_derivation(name):
-    written = json.loads((HERE / f"{name}.expect.json").read_text(encoding="utf-8"))
-    derived = json.loads(json.dumps(derive.expected(name)))
-    assert written.keys() == derived.keys()
-    assert written.get("error") == derived.get("error")
-    _same(written.get("answers"), derived.get("answers"), rel=1e-12)
+    expectation_is_derivation(HERE, derive, name)
 
 
 @pytest.mark.parametrize("name", NAMES)
 def test_case_through_the_command_line(name):
-    expect = json.loads((HERE / f"{name}.expect.json").read_text(encoding="utf-8"))
-    code, out = kinematika("solve", str(HERE / f"{name}.yaml"), "--json")
-    if "error" in expect:
-        assert code == 2 and out["error"]["kind"] == expect["error"], out
-        return
-    assert code == 0, out
-    got = [a["value"] for a in out["answers"]]
-    assert len(got) == len(expect["answers"])
-    for i, (g, e) in enumerate(zip(got, expect["answers"])):
-        _matches(g, e, expect, f"answers[{i}]")
+    case_through_the_command_line(HERE, name)
 
 
 # the other commands on these problems --------------------------------------------------------

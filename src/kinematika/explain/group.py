@@ -35,6 +35,7 @@ from ..model.model import Joint
 from .context import Ctx, alpha_sym, omega_sym
 from .document import (Ann, Derived, Equation, Sym, Term, Value, body as body_name, joint as joint_name, msg,
                        point as point_name)
+from .order import jointed
 from .terms import contact_term, point_term, rotation_terms, slide_terms
 
 MAX_TURNS = 3           # rotations along one route at most
@@ -450,7 +451,7 @@ def _recut(ctx: Ctx, run: list, known: set[str]) -> list:
         while True:
             new = [b for b in pool if b in plan.determined and b not in done]
             if new:
-                out.append(Step("other", new, plan.used[mark:], _from(ctx, new, done), source=run[0].source))
+                out.append(Step("other", new, plan.used[mark:], jointed(ctx.model, new, done), source=run[0].source))
                 mark = len(plan.used)
                 done |= set(new)
             if plan.complete() or plan.step() is None:
@@ -461,16 +462,6 @@ def _recut(ctx: Ctx, run: list, known: set[str]) -> list:
         bodies = [b for b in stuck.bodies if b not in done]
         out.append(Step(stuck.kind, bodies, stuck.joints, stuck.known, stuck.letters, stuck.source))
         done |= set(bodies)
-    return out
-
-
-def _from(ctx: Ctx, bodies: list[str], known: set[str]) -> list[str]:
-    """The known bodies jointed to `bodies`."""
-    out = []
-    for j in ctx.model.joints:
-        for x, y in ((j.a, j.b), (j.b, j.a)):
-            if x in bodies and y in known and y not in out:
-                out.append(y)
     return out
 
 

@@ -59,7 +59,7 @@ def block_order(sol: Solution) -> list[Step]:
             continue
         driven = any(rows[r].driver for r in block_rows)
         kind = "input" if driven and len(bodies) == 1 and _grounded(sol, bodies[0]) else "other"
-        step = Step(kind, bodies, joints, _neighbours(sol, bodies, known), source="blocks")
+        step = Step(kind, bodies, joints, jointed(sol.model, bodies, known), source="blocks")
         steps.append(dyad(sol, step, known) if kind == "other" else step)
         known.update(bodies)
     return steps
@@ -98,9 +98,10 @@ def _grounded(sol: Solution, body: str) -> bool:
                for j in sol.model.joints)
 
 
-def _neighbours(sol: Solution, bodies: list[str], known: set[str]) -> list[str]:
+def jointed(model, bodies: list[str], known: set[str]) -> list[str]:
+    """The known bodies jointed to `bodies`, in the joints' order."""
     out = []
-    for j in sol.model.joints:
+    for j in model.joints:
         for x, y in ((j.a, j.b), (j.b, j.a)):
             if x in bodies and y in known and y not in out:
                 out.append(y)
