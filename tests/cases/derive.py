@@ -357,8 +357,13 @@ def _first_comment(path: Path) -> str:
 
 CASES = sorted([*NUMERIC, *SYMBOLIC, *ERRORS])
 
-if __name__ == "__main__":
-    for case in CASES:
-        (HERE / f"{case}.expect.json").write_text(json.dumps(expected(case), indent=1, ensure_ascii=False)
-                                                  + "\n", encoding="utf-8")
+def write_expectations(folder: Path, cases: list[str], expected: Callable[[str], dict]) -> None:
+    """Write every case's NAME.expect.json in `folder` from its derivation."""
+    for case in cases:
+        (folder / f"{case}.expect.json").write_text(json.dumps(expected(case), indent=1, ensure_ascii=False)
+                                                    + "\n", encoding="utf-8")
         print("wrote", case)
+
+
+if __name__ == "__main__":
+    write_expectations(HERE, CASES, expected)

@@ -27,8 +27,14 @@ NAMES = sorted(p.stem for p in CASES.glob("*.yaml"))
 
 
 def test_every_case_has_its_derivation_and_expectation():
-    assert NAMES == derive.CASES
-    assert sorted(p.name for p in CASES.glob("*.expect.json")) == [f"{n}.expect.json" for n in NAMES]
+    every_case_derived(CASES, derive)
+
+
+def every_case_derived(folder: Path, module) -> None:
+    """Each NAME.yaml in `folder` has its derivation in `module` and its NAME.expect.json."""
+    names = sorted(p.stem for p in folder.glob("*.yaml"))
+    assert names == module.CASES
+    assert sorted(p.name for p in folder.glob("*.expect.json")) == [f"{n}.expect.json" for n in names]
 
 
 @pytest.mark.parametrize("name", NAMES)

@@ -734,7 +734,4 @@ def _floats(value):
 CASES = sorted([*NUMERIC, *SYMBOLIC, *ERRORS])
 
 if __name__ == "__main__":
-    for case in CASES:
-        (HERE / f"{case}.expect.json").write_text(json.dumps(expected(case), indent=1, ensure_ascii=False)
-                                                  + "\n", encoding="utf-8")
-        print("wrote", case)
+    base.write_expectations(HERE, CASES, expected)
