@@ -15,7 +15,7 @@ FILE_BYTES = 5_000_000       # a model is a few kilobytes; read at most this, wh
 READ_SECONDS = 5.0           # a pipe or a terminal that gives no end of file within this is refused
 NESTING = 64                 # levels of lists and mappings (a model uses 4 to 6)
 ALIAS_NODES = 100_000        # values that YAML aliases may add to a file (a "billion laughs" adds 10⁹)
-NAME_CHARS = 200             # a name of a point, body, joint, parameter or of the model
+NAME_CHARS = 200             # a name of a point, body, joint or parameter; a model's title is shown cut to it
 
 # expressions ------------------------------------------------------------------------------
 EXPRESSION_CHARS = 2000      # characters of one expression
