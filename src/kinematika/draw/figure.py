@@ -246,19 +246,16 @@ def svg_text(fig: Figure) -> str:
     an explanation or a page that embeds it is reproducible."""
     import io
 
-    import matplotlib
-
     out = io.StringIO()
-    with matplotlib.rc_context({"svg.hashsalt": "kinematika"}):
-        fig.savefig(out, format="svg", facecolor="white", metadata={"Date": None})
+    fig.savefig(out, format="svg", facecolor="white", metadata={"Date": None})
     return _numbered_ids(out.getvalue())
 
 
 def _numbered_ids(text: str) -> str:
     """matplotlib names clip paths, hatches and markers by a hash of their coordinates and
-    of `svg.hashsalt` (a global setting, which another thread's `rc_context` can undo
-    meanwhile), so the same drawing reached by another route (a sweep row rather than a
-    move) differs in the last bit and in its ids: number them in order of appearance."""
+    a salt (random unless the global `svg.hashsalt` is set), so the same drawing, or one
+    reached by another route (a sweep row rather than a move), differs in its ids: number
+    them in order of appearance instead (no global setting, safe in the page's threads)."""
     import re
 
     names: dict[str, str] = {}
