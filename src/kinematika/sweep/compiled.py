@@ -41,6 +41,7 @@ TOLERANCE = 1e-12           # as the general path: dimensionless step size
 JUMP = 0.3                  # a correction above this fraction of the step is a jump
 CONDITION = 1e10            # the engine's limit for a dead point (2-norm, dimensionless)
 CHUNK = 8192                # positions whose stacked matrices are built at once (memory)
+REFINEMENTS = 40            # iterations of a solve from a neighbour's inverse (each ≤ ½ the last)
 FROZEN = 1e-5               # Newton keeps its last matrix once the corrections are this small
 
 
@@ -100,10 +101,15 @@ class CompiledNewton:
         self.idle_a = [(at(owners[a]), np.asarray(inst.points[a], dtype=float)) for _, a, _ in idle]
         self.idle_b = [(at(owners[b]), np.asarray(inst.points[b], dtype=float)) for _, _, b in idle]
         self.m_all = 3 * len(self.p0) + len(self.perp0) + len(self.drive_axis0) + len(idle)
+        self.vectors = self._vectors(len(self.bodies))
         self.translation = np.tile(np.r_[np.zeros(3, bool), np.ones(3, bool)], len(self.bodies))
-        self.keep = np.arange(self.m_all)
-        self.keep = self._independent_rows()
-        self.m = len(self.keep)
+        self._column = np.where(self.translation, self.scale, 1.0)
+        self.keep, self.m = np.arange(self.m_all), self.m_all
+        self.usable = self._scatter()
+        if self.usable:
+            self.keep = self._independent_rows()
+            self.m = len(self.keep)
+            self._scatter()
 
     def _independent_rows(self) -> np.ndarray:
         """Rows independent at the drawn pose (a Hooke joint's closure repeats its point
@@ -124,79 +130,95 @@ class CompiledNewton:
         return np.array(keep, dtype=int)
 
     # poses ------------------------------------------------------------------------------
-    def _full(self, rot: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Rotations and translations with the frame appended last (index −1)."""
-        m = rot.shape[0]
-        rot = np.concatenate([rot, np.broadcast_to(np.eye(3), (m, 1, 3, 3))], axis=1)
-        t = np.concatenate([t, np.zeros((m, 1, 3))], axis=1)
-        return rot, t
-
-    def _point(self, rot, t, body: np.ndarray, p0: np.ndarray) -> np.ndarray:
-        """Where the material points drawn at p0 (K, 3) of `body` (K,) are: (M, K, 3)."""
-        return _turned(rot[:, body], p0 - self.c) + self.c + t[:, body]
+    def _vectors(self, n_bodies: int) -> LinearVectors:
+        """The vectors the rows are made of, each fixed in a body: the joints' points as
+        carried by b and by a (from c), the revolutes' axes (in b) and perpendiculars (in
+        a), the driven axes and a perpendicular to each (in a, and in b), idle links' AB."""
+        out, c, k, tr, dr = LinearVectors(n_bodies), self.c, self.coincide, self.turn, self.drive
+        out.add("pb", [[(b, p - c, True, 1.0)] for b, p in zip(k.b, self.p0)])
+        out.add("pa", [[(a, p - c, True, 1.0)] for a, p in zip(k.a, self.p0)])
+        out.add("axis", [[(b, e, False, 1.0)] for b, e in zip(tr.b[0::2], self.axis_b0)])
+        out.add("perp", [[(a, p, False, 1.0)] for a, p in zip(tr.a, self.perp0)])
+        out.add("drive", [[(a, e, False, 1.0)] for a, e in zip(dr.a, self.drive_axis0)])
+        across = [_perpendicular(e) for e in self.drive_axis0]
+        out.add("ua", [[(a, u, False, 1.0)] for a, u in zip(dr.a, across)])
+        out.add("ub", [[(b, u, False, 1.0)] for b, u in zip(dr.b, across)])
+        out.add("idle", [[(bb, pb - c, True, 1.0), (ba, pa - c, True, -1.0)]
+                         for (ba, pa), (bb, pb) in zip(self.idle_a, self.idle_b)])
+        out.compile()
+        return out
 
     def residual(self, rot, t, dq) -> np.ndarray:
-        """Φ (M, m): the general path's position constraints, row for row."""
-        rot, t = self._full(rot, t)
-        k = self.coincide
-        gap = self._point(rot, t, k.b, self.p0) - self._point(rot, t, k.a, self.p0)
-        parts = [gap.reshape(len(dq), -1)]
+        """Φ (M, m): the general path's position constraints, row for row (the drivers' as
+        the angle turned about the axis, which the engine writes as log(exp(−q e) R_b R_aᵀ)·e:
+        the same to first order, and zero at the same poses)."""
+        v = self.vectors(rot, t)
+        get = self.vectors.part
+        parts = [(get(v, "pb") - get(v, "pa")).reshape(len(dq), -1)]
         if len(self.perp0):
-            tr = self.turn
-            e = _turned(rot[:, tr.b], _pair_axes(self.axis_b0))
-            p = _turned(rot[:, tr.a], self.perp0)
-            dots = _dot(e, p)          # e_b·p1, e_b·p2, ... per revolute
+            dots = _dot(np.repeat(get(v, "axis"), 2, axis=1), get(v, "perp"))   # e·p1, e·p2 per revolute
             out = np.empty_like(dots)
             out[:, 0::2], out[:, 1::2] = -dots[:, 1::2], dots[:, 0::2]
             parts.append(out)
         if len(self.drive_axis0):
-            dr = self.drive
-            e = _turned(rot[:, dr.a], self.drive_axis0)
-            rel = rot[:, dr.b] @ rot[:, dr.a].swapaxes(-1, -2)      # R_b R_aᵀ
+            ua, ub = get(v, "ua"), get(v, "ub")
+            turned = np.arctan2(_dot(_cross(ua, ub), get(v, "drive")), _dot(ua, ub))
             target = np.where(self.swept, 1.0, 0.0)[None, :] * dq[:, None]
-            back = _exp(-target[..., None] * e)
-            parts.append(_dot(_log(back @ rel), e))
+            parts.append(np.remainder(turned - target + math.pi, 2 * math.pi) - math.pi)
         if len(self.idle_body):
             parts.append(np.zeros((len(dq), len(self.idle_body))))
         return np.concatenate(parts, axis=1)[:, self.keep]
 
     def matrix(self, rot, t) -> np.ndarray:
-        """The engine's velocity matrix at these poses (M, m, n): the constraints' Jacobian."""
+        """The engine's velocity matrix at these poses (M, m, n): the constraints' Jacobian.
+        Its entries are ±1 or ± a coordinate of a joint's lever arm, a turning row's
+        perpendicular, a driven axis or an idle link's AB: those vectors are computed for
+        every pose at once and scattered into place by `_scatter`'s fixed index arrays."""
         m = rot.shape[0]
-        rot_f, t_f = self._full(rot, t)
-        a = np.zeros((m, self.m_all, self.n + 6))      # the frame's columns, dropped at the end
-        col = lambda body: np.where(body < 0, self.n, 6 * body)  # noqa: E731
-        k = self.coincide
-        p = self._point(rot_f, t_f, k.b, self.p0)      # the joint point, carried by b
-        r = p - self.c
-        rows = 3 * np.arange(len(k.a))
-        for sign, body in ((1.0, k.b), (-1.0, k.a)):
-            c0 = col(body)
-            for i in range(3):
-                # v_P = v0 + ω × r: d/dω of (ω × r)_i, and the identity on v0
-                a[:, rows + i, c0 + 3 + i] += sign
-                j, l = (i + 1) % 3, (i + 2) % 3
-                a[:, rows + i, c0 + j] += sign * r[:, :, l]
-                a[:, rows + i, c0 + l] -= sign * r[:, :, j]
-        base = 3 * len(k.a)
-        if len(self.perp0):
-            tr = self.turn
-            p = _turned(rot_f[:, tr.a], self.perp0)
-            base = _relative_rotation_rows(a, base, tr, p, col)
-        if len(self.drive_axis0):
-            dr = self.drive
-            e = _turned(rot_f[:, dr.a], self.drive_axis0)
-            base = _relative_rotation_rows(a, base, dr, e, col)
-        for k_, body in enumerate(self.idle_body):
-            ab = self._idle_ab(rot_f, t_f, k_)
-            for i in range(3):
-                a[:, base + k_, 6 * body + i] = ab[:, i]
-        return a[:, self.keep, :self.n]
+        v = self.vectors(rot, t)
+        features = np.concatenate([self.vectors.part(v, name).reshape(m, -1)
+                                   for name in ("pb", "perp", "drive", "idle")], axis=1)
+        at, source, sign = self._layout
+        a = np.zeros((m, self.m * self.n))
+        a[:, at] = features[:, source] * sign
+        a[:, self._ones[0]] = self._ones[1]
+        return a.reshape(m, self.m, self.n)
 
-    def _idle_ab(self, rot_f, t_f, k: int) -> np.ndarray:
-        (ba, pa), (bb, pb) = self.idle_a[k], self.idle_b[k]
-        one = lambda body, p: self._point(rot_f, t_f, np.array([body]), p[None, :])[:, 0]  # noqa: E731
-        return one(bb, pb) - one(ba, pa)
+    def _scatter(self) -> bool:
+        """Where `matrix` puts each entry: (flat index, feature, sign) for the entries that
+        are a coordinate of a computed vector, (flat index, value) for the ±1 ones; rows left
+        out and the frame's columns dropped. Feature order: the joints' lever arms r (3 per
+        joint), the turning rows' perpendiculars, the driven axes, the idle links' AB."""
+        var: list[tuple[int, int, int, float]] = []     # (row, column, feature, sign)
+        one: list[tuple[int, int, float]] = []
+        k = self.coincide
+        for q in range(len(k.a)):
+            for sign, body in ((1.0, k.b[q]), (-1.0, k.a[q])):
+                if body < 0:
+                    continue
+                c0 = 6 * body
+                for i in range(3):
+                    j, l = (i + 1) % 3, (i + 2) % 3
+                    one.append((3 * q + i, c0 + 3 + i, sign))
+                    var.append((3 * q + i, c0 + j, 3 * q + l, sign))
+                    var.append((3 * q + i, c0 + l, 3 * q + j, -sign))
+        row, feature = 3 * len(k.a), 3 * len(k.a)
+        for pairs in (self.turn, self.drive):
+            for q in range(len(pairs.a)):
+                for sign, body in ((1.0, pairs.b[q]), (-1.0, pairs.a[q])):
+                    if body >= 0:
+                        var += [(row + q, 6 * body + i, feature + 3 * q + i, sign) for i in range(3)]
+            row, feature = row + len(pairs.a), feature + 3 * len(pairs.a)
+        for q, body in enumerate(self.idle_body):
+            var += [(row + q, 6 * body + i, feature + 3 * q + i, 1.0) for i in range(3)]
+        place = np.full(self.m_all, -1)
+        place[self.keep] = np.arange(len(self.keep))
+        var = [(place[r] * self.n + c, f, s) for r, c, f, s in var if place[r] >= 0]
+        one = [(place[r] * self.n + c, s) for r, c, s in one if place[r] >= 0]
+        at = np.array([v[0] for v in var], dtype=int)
+        self._layout = (at, np.array([v[1] for v in var], dtype=int), np.array([v[2] for v in var]))
+        self._ones = (np.array([o[0] for o in one], dtype=int), np.array([o[1] for o in one]))
+        return len(np.unique(np.r_[at, self._ones[0]])) == len(at) + len(one)   # one writer each
 
     def _driver_rows(self) -> np.ndarray:
         """The drivers' rows among the kept ones."""
@@ -212,7 +234,7 @@ class CompiledNewton:
         tangent as predictor, then chord iterations with that row's inverse matrix.
         """
         drivers = 3 * len(self.p0) + len(self.perp0) + np.arange(len(self.drive_axis0))
-        if self.m != self.n or len(self.bodies) == 0 or not np.isin(drivers, self.keep).all():
+        if not self.usable or self.m != self.n or len(self.bodies) == 0 or not np.isin(drivers, self.keep).all():
             return None
         dq = np.asarray(increments, dtype=float)
         n_rows = len(dq)
@@ -222,15 +244,9 @@ class CompiledNewton:
         b = len(self.bodies)
         rots, ts = np.empty((n_rows, b, 3, 3)), np.empty((n_rows, b, 3))
         rots[0], ts[0] = np.eye(3), 0.0
-        for k0, k1 in zip(coarse[:-1], coarse[1:]):
-            inverse = self._inverse(rots[[k0]], ts[[k0]])
-            if inverse is None:
-                return None
-            done = self._chord(rots[[k0]], ts[[k0]], inverse, self._predictor(rots[[k0]], ts[[k0]], inverse),
-                               dq[[k0]], dq[[k1]], newton=True)
-            if done is None:
-                return None
-            rots[k1], ts[k1] = done[0][0], done[1][0]
+        if not self._coarse(rots, ts, dq, coarse):
+            return None
+        twists = _Twists(n_rows, self.n)
         solved = coarse
         while stride > 1:
             stride = max(1, stride // 8)
@@ -242,20 +258,53 @@ class CompiledNewton:
             parent = np.where(level - left <= solved[right] - level, left, solved[right])
             for part in range(0, len(level), CHUNK):      # stacked matrices a chunk at a time
                 rows, parents = level[part:part + CHUNK], parent[part:part + CHUNK]
-                heads, which = np.unique(parents, return_inverse=True)
-                inverse = self._inverse(rots[heads], ts[heads])
-                if inverse is None:
+                if not self._level(rots, ts, dq, rows, parents, twists if stride == 1 else None):
                     return None
-                slope, bend = self._predictor(rots[heads], ts[heads], inverse)
-                done = self._chord(rots[parents], ts[parents], inverse[which], (slope[which], bend[which]),
-                                   dq[parents], dq[rows])
-                if done is None:
-                    return None
-                rots[rows], ts[rows] = done
             solved = np.union1d(solved, level)
         if len(self.keep) < self.m_all and not self._consistent(rots, ts, dq):
             return None
-        return self._motion(rots, ts)
+        rest = np.flatnonzero(~twists.known)
+        for part in range(0, len(rest), CHUNK):
+            rows = rest[part:part + CHUNK]
+            regular = self._regular(self.matrix(rots[rows], ts[rows]))
+            if regular is None:
+                return None
+            twists.x_v[rows], twists.x_a[rows] = self._twists(rots[rows], ts[rows], regular)
+        return {"rot": rots, "t": ts, "x_v": twists.x_v, "x_a": twists.x_a}
+
+    def _coarse(self, rots, ts, dq, coarse) -> bool:
+        """The coarse rows, one after the other, by Newton's method from the last one."""
+        for k0, k1 in zip(coarse[:-1], coarse[1:]):
+            inverse = self._inverse(rots[[k0]], ts[[k0]])
+            if inverse is None:
+                return False
+            done = self._chord(rots[[k0]], ts[[k0]], inverse, self._predictor(rots[[k0]], ts[[k0]], inverse),
+                               dq[[k0]], dq[[k1]], newton=True)
+            if done is None:
+                return False
+            rots[k1], ts[k1] = done[0][0], done[1][0]
+        return True
+
+    def _level(self, rots, ts, dq, rows, parents, twists: Optional["_Twists"]) -> bool:
+        """Rows of one level from their parents (solved rows): the parents' matrices inverted
+        and checked, the rows predicted and corrected with them; with `twists` (the last
+        level), the rows' twists too, from the parents' inverses (`_near_twists`)."""
+        heads, which = np.unique(parents, return_inverse=True)
+        regular = self._regular(self.matrix(rots[heads], ts[heads]))
+        if regular is None:
+            return False
+        inverse = regular.inverse()
+        slope, bend = self._predictor(rots[heads], ts[heads], inverse)
+        done = self._chord(rots[parents], ts[parents], inverse[which], (slope[which], bend[which]),
+                           dq[parents], dq[rows])
+        if done is None:
+            return False
+        rots[rows], ts[rows] = done
+        if twists is not None:
+            twists.put(heads, *self._twists(rots[heads], ts[heads], regular))
+            x_v, x_a, ok = self._near_twists(rots[rows], ts[rows], regular, which)
+            twists.put(rows[ok], x_v[ok], x_a[ok])
+        return True
 
     def _consistent(self, rots, ts, dq) -> bool:
         """The rows left out (repeated conditions) hold too at every position."""
@@ -314,100 +363,190 @@ class CompiledNewton:
                 return None
             r, tt = _stepped(r, tt, dx)
             rot[active], t[active] = r, tt
-            done = (size < TOLERANCE) | ((size < 1e3 * TOLERANCE) & (size > 0.5 * last[active]))
+            rate = np.where(np.isfinite(last[active]), np.minimum(size / last[active], 0.5), 0.5)
+            done = (size < TOLERANCE) | (size * rate < 0.1 * TOLERANCE) | \
+                ((size < 1e3 * TOLERANCE) & (size > 0.5 * last[active]))
             last[active] = size
             active = active[~done]
             if not len(active):
                 return rot, t
         return None
 
-    def _motion(self, rots, ts) -> Optional[dict]:
-        """Twists and their rates at every position, checked as the engine checks a dead
-        point: any doubt returns None (the general path decides). A chunk of positions at a
-        time, so that the stacked matrices stay small whatever the sweep's length."""
-        parts = [self._motion_of(rots[k:k + CHUNK], ts[k:k + CHUNK]) for k in range(0, len(rots), CHUNK)]
-        if any(part is None for part in parts):
-            return None
-        return {"rot": rots, "t": ts, "x_v": np.concatenate([x_v for x_v, _ in parts]),
-                "x_a": np.concatenate([x_a for _, x_a in parts])}
-
-    def _motion_of(self, rots, ts) -> Optional[tuple[np.ndarray, np.ndarray]]:
-        """The twists and their rates of some positions (see `_motion`)."""
-        n_rows = len(rots)
-        a = self.matrix(rots, ts)
-        regular = self._regular(a)
-        if regular is None:
-            return None
-        inverse, column, rows = regular          # A⁻¹ = C S⁻¹ R
-        rhs = np.zeros((n_rows, self.m))
+    def _twists(self, rots, ts, regular: "_Regular") -> tuple[np.ndarray, np.ndarray]:
+        """The twists and their rates at these poses, whose matrices are `regular`."""
+        rhs = np.zeros((len(rots), self.m))
         rhs[:, self._driver_rows()] = self.rates
-        x_v = column * _times(inverse, rows * rhs)
-        x_a = column * _times(inverse, rows * self._accel_terms(rots, ts, x_v))
-        return x_v, x_a
+        x_v = regular.solve(rhs)
+        return x_v, regular.solve(self._accel_terms(rots, ts, x_v))
 
-    def _regular(self, a: np.ndarray) -> Optional[tuple[np.ndarray, np.ndarray, np.ndarray]]:
-        """The dimensionless S = R A C (rows equilibrated, lengths in the model's scale) of
-        every matrix inverted, with C and R's diagonals, when every S is certainly below the
-        engine's condition limit (its exact 1-norm condition number times n bounds the 2-norm
-        one), else None. A⁻¹ = C S⁻¹ R is applied to vectors, never formed."""
-        column = np.where(self.translation, self.scale, 1.0)
-        scaled = a * column
+    def _near_twists(self, rots, ts, near: "_Regular", which) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The twists and their rates at poses next to already inverted ones (`near`, row
+        `which` for each), without inverting again. With P = S_near⁻¹ and E = I − P S,
+        ‖E‖₁ ≤ ‖P‖₁ ‖S_near − S‖₁ = ρ; where ρ < ½, ‖S⁻¹‖₁ ≤ ‖P‖₁ / (1 − ρ) bounds the
+        condition number as `_regular` checks it, and P₂ = P (2I − S P) (one Newton–Schulz
+        step: I − P₂S = E²) solves S y = b by y ← y + P₂(b − S y), converging as ρ²ᵏ.
+        Rows where that cannot be certified are flagged, for `_regular` to decide."""
+        scaled, rows = self._scaled(self.matrix(rots, ts))
+        p = near.s_inv[which]
+        gap = scaled - near.scaled[which]
+        rho = near.size_inv[which] * _norm1(gap)
+        cond = (near.size[which] + rho / near.size_inv[which]) * near.size_inv[which] / (1.0 - rho)
+        ok = (rho < 0.5) & (cond * self.n < CONDITION)
+        p = 2.0 * p - p @ (scaled @ p)
+        rhs = np.zeros((len(rots), self.m))
+        rhs[:, self._driver_rows()] = self.rates
+        y_v, ok_v = _refined(scaled, p, rows * rhs)
+        x_v = self._column * y_v
+        y_a, ok_a = _refined(scaled, p, rows * self._accel_terms(rots, ts, x_v))
+        return x_v, self._column * y_a, ok & ok_v & ok_a
+
+    def _scaled(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """S = R A C (rows equilibrated, lengths in the model's scale) and R's diagonal."""
+        scaled = a * self._column
         norms = np.abs(scaled).max(axis=2, keepdims=True)
-        if (norms == 0).any():
+        with np.errstate(divide="ignore", invalid="ignore"):
+            scaled /= norms
+        return scaled, 1.0 / norms[..., 0]
+
+    def _regular(self, a: np.ndarray) -> Optional["_Regular"]:
+        """The dimensionless S = R A C of every matrix inverted, when every S is certainly
+        below the engine's condition limit (its exact 1-norm condition number times n bounds
+        the 2-norm one), else None."""
+        scaled, rows = self._scaled(a)
+        if not np.isfinite(rows).all():
             return None
-        scaled /= norms
         try:
             inverse = np.linalg.inv(scaled)
         except np.linalg.LinAlgError:
             return None
-        cond = np.abs(scaled).sum(axis=1).max(axis=1) * np.abs(inverse).sum(axis=1).max(axis=1)
+        size, size_inv = _norm1(scaled), _norm1(inverse)
+        cond = size * size_inv
         if not (np.isfinite(cond).all() and (cond * self.n < CONDITION).all()):
             return None
-        return inverse, column, 1.0 / norms[..., 0]
+        return _Regular(scaled, inverse, self._column, rows, size, size_inv)
 
     def _accel_terms(self, rots, ts, x_v, driven: bool = True) -> np.ndarray:
         """The acceleration system's right side: minus the rows' terms in the velocities
         (with the drivers' accelerations, or none: `driven` False)."""
         n_rows = len(rots)
-        rot_f, t_f = self._full(rots, ts)
+        v, get = self.vectors(rots, ts), self.vectors.part
         w = np.concatenate([x_v.reshape(n_rows, -1, 6)[:, :, :3], np.zeros((n_rows, 1, 3))], axis=1)
         k = self.coincide
-        r = self._point(rot_f, t_f, k.b, self.p0) - self.c
+        r = get(v, "pb")
         wb, wa = w[:, k.b], w[:, k.a]
-        known = [(np.cross(wb, np.cross(wb, r)) - np.cross(wa, np.cross(wa, r))).reshape(n_rows, -1)]
+        known = [(_cross(wb, _cross(wb, r)) - _cross(wa, _cross(wa, r))).reshape(n_rows, -1)]
         if len(self.perp0):
             tr = self.turn
-            p = _turned(rot_f[:, tr.a], self.perp0)
             w_rel = w[:, tr.b] - w[:, tr.a]
-            known.append(_dot(w_rel, np.cross(w[:, tr.a], p)))
+            known.append(_dot(w_rel, _cross(w[:, tr.a], get(v, "perp"))))
         if len(self.drive_axis0):
             dr = self.drive
-            e = _turned(rot_f[:, dr.a], self.drive_axis0)
             w_rel = w[:, dr.b] - w[:, dr.a]
-            known.append(_dot(w_rel, np.cross(w[:, dr.a], e)) - (self.accels if driven else 0.0))
+            known.append(_dot(w_rel, _cross(w[:, dr.a], get(v, "drive"))) - (self.accels if driven else 0.0))
         if len(self.idle_body):
             known.append(np.zeros((n_rows, len(self.idle_body))))
         return -np.concatenate(known, axis=1)[:, self.keep]
 
 
-def _relative_rotation_rows(a: np.ndarray, base: int, pairs: _Pairs, e: np.ndarray, col) -> int:
-    """Rows (ω_b − ω_a)·e from row `base` on (e: (M, K, 3)); the next free row."""
-    rows = base + np.arange(len(pairs.a))
-    for sign, body in ((1.0, pairs.b), (-1.0, pairs.a)):
-        for i in range(3):
-            a[:, rows, col(body) + i] += sign * e[:, :, i]
-    return base + len(pairs.a)
+@dataclass
+class _Regular:
+    """Matrices A = R⁻¹ S C⁻¹ certified regular: S, S⁻¹, C's and R's diagonals, ‖S‖₁, ‖S⁻¹‖₁."""
+
+    scaled: np.ndarray
+    s_inv: np.ndarray
+    column: np.ndarray
+    rows: np.ndarray
+    size: np.ndarray
+    size_inv: np.ndarray
+
+    def inverse(self) -> np.ndarray:
+        """A⁻¹ = C S⁻¹ R, formed (the chord iterations apply it many times)."""
+        return self.column[None, :, None] * self.s_inv * self.rows[:, None, :]
+
+    def solve(self, b: np.ndarray) -> np.ndarray:
+        return self.column * _times(self.s_inv, self.rows * b)
 
 
-def _pair_axes(axes: np.ndarray) -> np.ndarray:
-    """Each revolute's axis twice (its two turning rows)."""
-    return np.repeat(axes, 2, axis=0)
+class _Twists:
+    """Every row's twists and their rates, filled as they are found."""
+
+    def __init__(self, n_rows: int, n: int) -> None:
+        self.x_v, self.x_a = np.zeros((n_rows, n)), np.zeros((n_rows, n))
+        self.known = np.zeros(n_rows, dtype=bool)
+
+    def put(self, rows, x_v, x_a) -> None:
+        self.x_v[rows], self.x_a[rows], self.known[rows] = x_v, x_a, True
 
 
-def _turned(rot: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """Rotations (M, K, 3, 3) applied to fixed vectors (K, 3): (M, K, 3) (matmul, which
-    numpy runs several times faster than the same einsum on small matrices)."""
-    return (rot @ v[:, :, None])[..., 0]
+def _norm1(a: np.ndarray) -> np.ndarray:
+    """Stacked matrices' 1-norms (largest column sum)."""
+    return np.abs(a).sum(axis=-2).max(axis=-1)
+
+
+def _refined(s: np.ndarray, p: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """S y = b by y ← y + P(b − S y) from y = P b, P ≈ S⁻¹, until the error left (the last
+    correction times its ratio to the one before) is below round-off or the corrections stop
+    shrinking; with the rows where that error is below 1e-15 of y."""
+    y = _times(p, b)
+    last = np.full(len(b), np.inf)
+    left = scale = last
+    for _ in range(REFINEMENTS):
+        dy = _times(p, b - _times(s, y))
+        y += dy
+        size, scale = np.abs(dy).sum(axis=-1), np.abs(y).sum(axis=-1)
+        left = size * (np.minimum(size / last, 0.5) if np.isfinite(last).all() else 0.5)
+        if ((left <= 1e-16 * scale) | (size > 0.5 * last)).all():
+            break
+        last = size
+    return y, left <= 1e-15 * scale
+
+
+class LinearVectors:
+    """Vectors fixed in bodies (directions, or points measured from c that move with the
+    body's translation too), sums of them allowed, for many poses at once: each is linear in
+    the poses, so all of them are one matrix product X W + w₀, X a pose's rotations and
+    translations flattened (the frame's vectors, index −1, are the constant w₀)."""
+
+    def __init__(self, n_bodies: int) -> None:
+        self.n_bodies = n_bodies
+        self.terms: list[list[tuple[int, np.ndarray, bool, float]]] = []
+        self.slices: dict[str, slice] = {}
+
+    def add(self, name: str, terms: list[list[tuple[int, np.ndarray, bool, float]]]) -> None:
+        """Vectors named `name`: each a list of (body, vector, moves with t, sign)."""
+        self.slices[name] = slice(len(self.terms), len(self.terms) + len(terms))
+        self.terms += terms
+
+    def compile(self) -> None:
+        b, k = self.n_bodies, len(self.terms)
+        self.w, self.w0 = np.zeros((12 * b, 3 * k)), np.zeros(3 * k)
+        for q, term in enumerate(self.terms):
+            for body, v, moves, sign in term:
+                v = sign * np.asarray(v, dtype=float)
+                if body < 0:
+                    self.w0[3 * q:3 * q + 3] += v
+                    continue
+                for i in range(3):              # (R v)_i = Σ_j R_ij v_j, R_ij at 9 body + 3 i + j
+                    self.w[9 * body + 3 * i:9 * body + 3 * i + 3, 3 * q + i] += v
+                    if moves:
+                        self.w[9 * b + 3 * body + i, 3 * q + i] += sign
+
+    def __call__(self, rot: np.ndarray, t: np.ndarray) -> np.ndarray:
+        """Every vector at poses rot (M, B, 3, 3), t (M, B, 3): (M, K, 3). A product per
+        pose (stacked): one large product would run on BLAS threads that cost more than
+        they give on matrices this small."""
+        m = rot.shape[0]
+        x = np.concatenate([rot.reshape(m, -1), t.reshape(m, -1)], axis=1)
+        return ((x[:, None, :] @ self.w)[:, 0] + self.w0).reshape(m, -1, 3)
+
+    def part(self, v: np.ndarray, name: str) -> np.ndarray:
+        return v[:, self.slices[name]]
+
+
+def _perpendicular(e: np.ndarray) -> np.ndarray:
+    """A unit vector perpendicular to the unit vector e."""
+    u = _cross(e, np.eye(3)[int(np.argmin(np.abs(e)))])
+    return u / np.linalg.norm(u)
 
 
 def _times(a: np.ndarray, x: np.ndarray) -> np.ndarray:
@@ -416,7 +555,14 @@ def _times(a: np.ndarray, x: np.ndarray) -> np.ndarray:
 
 
 def _dot(u: np.ndarray, v: np.ndarray) -> np.ndarray:
-    return (u * v).sum(axis=-1)
+    return np.einsum("...i,...i->...", u, v)
+
+
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Stacked cross products (…, 3): as np.cross, with less overhead on small arrays."""
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
 
 
 def _exp(w: np.ndarray) -> np.ndarray:
@@ -437,15 +583,6 @@ def _exp(w: np.ndarray) -> np.ndarray:
         out[..., j, i] += sw[..., k]
         out[..., i, j] -= sw[..., k]
     return out
-
-
-def _log(r: np.ndarray) -> np.ndarray:
-    """Stacked rotation vectors of rotations within a small angle of the identity (the
-    driven joint's error): as `poses.log_rotation` there."""
-    v = np.stack([r[..., 2, 1] - r[..., 1, 2], r[..., 0, 2] - r[..., 2, 0], r[..., 1, 0] - r[..., 0, 1]], -1)
-    angle = np.arctan2(np.linalg.norm(v, axis=-1) / 2, (np.trace(r, axis1=-2, axis2=-1) - 1) / 2)
-    factor = np.where(angle < 1e-6, 0.5, angle / (2 * np.sin(np.where(angle < 1e-6, 1.0, angle))))
-    return v * factor[..., None]
 
 
 def _stepped(rot, t, dx) -> tuple[np.ndarray, np.ndarray]:
@@ -529,7 +666,7 @@ def compiled_sweep(sweeper: "Sweeper", plan: Plan):
         i = index[body]
         r = np.einsum("mij,j->mi", rots[:, i], p0 - c) + ts[:, i]        # P − ref, now
         w, v0, al, a0 = x_v[:, i, :3], x_v[:, i, 3:], x_a[:, i, :3], x_a[:, i, 3:]
-        motions[name, body] = (r + c, v0 + np.cross(w, r),
-                               a0 + np.cross(al, r) + np.cross(w, np.cross(w, r)))
+        motions[name, body] = (r + c, v0 + _cross(w, r),
+                               a0 + _cross(al, r) + _cross(w, _cross(w, r)))
     ok = np.ones(n_rows, dtype=bool)
     return sweeper.result(plan, ok, bodies, motions, [])
