@@ -92,3 +92,24 @@ def test_the_spherical_four_bar_keeps_its_arcs_and_the_rockers_rate_is_its_angle
     omega = result.bodies["rocker"]["omega"]
     np.testing.assert_allclose((omega @ d)[1:-1], rate[1:-1], atol=5e-4 * np.abs(rate).max())      # O(h²) of the differences
     np.testing.assert_allclose(np.cross(omega, d), 0.0, atol=1e-9)     # the rocker turns about D
+
+
+@pytest.mark.parametrize("name,by,idle", [
+    ("rssr_spatial_four_bar", -60, {"coupler"}),
+    ("hooke_joint", 350, set()),
+    ("spherical_four_bar", 360, set()),
+])
+def test_a_dense_sweep_gives_the_general_paths_numbers_at_every_tenth_row(name, by, idle):
+    """Dense sweeps solve most rows from a neighbour's inverse (levels, refinement): every
+    tenth of 720 rows equals the general path's sweep of 72 steps."""
+    sweeper = Sweeper(EXAMPLES / f"{name}.yaml")
+    fast = compiled.compiled_sweep(sweeper, sweeper.plan(by, 720))
+    assert fast is not None and fast.ok.all()
+    _, general = both_paths(name, by, 72)
+    for body, values in general.bodies.items():
+        for q, v in values.items():
+            if not (q == "angle" and body in idle):
+                np.testing.assert_allclose(fast.bodies[body][q][::10], v, atol=1e-9, err_msg=f"{body}.{q}")
+    for point, values in general.points.items():
+        for q, v in values.items():
+            np.testing.assert_allclose(fast.points[point][q][::10], v, atol=1e-9, err_msg=f"{point}.{q}")

@@ -36,6 +36,8 @@ if TYPE_CHECKING:
     from .run import Sweeper
 
 COARSE_STEP = 0.15          # rad between coarse positions
+AHEAD = 5                   # coarse positions solved at once from the last one
+DENSER = 8                  # each level has this many times more rows than the last
 ITERATIONS = 25
 TOLERANCE = 1e-12           # as the general path: dimensionless step size
 JUMP = 0.3                  # a correction above this fraction of the step is a jump
@@ -105,18 +107,16 @@ class CompiledNewton:
         self.translation = np.tile(np.r_[np.zeros(3, bool), np.ones(3, bool)], len(self.bodies))
         self._column = np.where(self.translation, self.scale, 1.0)
         self.keep, self.m = np.arange(self.m_all), self.m_all
+        self._scatter()
+        self.keep = self._independent_rows()
+        self.m = len(self.keep)
         self.usable = self._scatter()
-        if self.usable:
-            self.keep = self._independent_rows()
-            self.m = len(self.keep)
-            self._scatter()
 
     def _independent_rows(self) -> np.ndarray:
         """Rows independent at the drawn pose (a Hooke joint's closure repeats its point
         conditions): kept greedily in order, as long as they add a direction."""
         rot = np.broadcast_to(np.eye(3), (1, len(self.bodies), 3, 3))
-        a = self.matrix(rot, np.zeros((1, len(self.bodies), 3)))[0]
-        a = a * np.where(self.translation, self.scale, 1.0)
+        a = self.matrix(rot, np.zeros((1, len(self.bodies), 3)))[0] * self._column
         basis: list[np.ndarray] = []
         keep = []
         for i, row in enumerate(a):
@@ -170,19 +170,31 @@ class CompiledNewton:
         return np.concatenate(parts, axis=1)[:, self.keep]
 
     def matrix(self, rot, t) -> np.ndarray:
-        """The engine's velocity matrix at these poses (M, m, n): the constraints' Jacobian.
-        Its entries are ±1 or ± a coordinate of a joint's lever arm, a turning row's
-        perpendicular, a driven axis or an idle link's AB: those vectors are computed for
-        every pose at once and scattered into place by `_scatter`'s fixed index arrays."""
+        """The engine's velocity matrix at these poses (M, m, n): the constraints' Jacobian."""
+        return self._entries(rot, t, self._layout[2])[0]
+
+    def scaled_matrix(self, rot, t) -> tuple[np.ndarray, np.ndarray]:
+        """S = R A C (rows equilibrated, lengths in the model's scale) and R's diagonal."""
+        a, values = self._entries(rot, t, self._layout[3])
+        norms = np.maximum.reduceat(np.abs(values), self._layout[4], axis=1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            a /= norms[..., None]
+            return a, 1.0 / norms
+
+    def _entries(self, rot, t, sign: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """A matrix (M, m, n) and its nonzero entries (M, E), by rows. Its entries are ±1 or
+        ± a coordinate of a joint's lever arm, a turning row's perpendicular, a driven axis
+        or an idle link's AB: those vectors are computed for every pose at once and
+        scattered into place by `_scatter`'s fixed index arrays."""
         m = rot.shape[0]
         v = self.vectors(rot, t)
         features = np.concatenate([self.vectors.part(v, name).reshape(m, -1)
-                                   for name in ("pb", "perp", "drive", "idle")], axis=1)
-        at, source, sign = self._layout
+                                   for name in ("pb", "perp", "drive", "idle")] + [np.ones((m, 1))], axis=1)
+        at, source = self._layout[:2]
+        values = features[:, source] * sign
         a = np.zeros((m, self.m * self.n))
-        a[:, at] = features[:, source] * sign
-        a[:, self._ones[0]] = self._ones[1]
-        return a.reshape(m, self.m, self.n)
+        a[:, at] = values
+        return a.reshape(m, self.m, self.n), values
 
     def _scatter(self) -> bool:
         """Where `matrix` puts each entry: (flat index, feature, sign) for the entries that
@@ -213,12 +225,17 @@ class CompiledNewton:
             var += [(row + q, 6 * body + i, feature + 3 * q + i, 1.0) for i in range(3)]
         place = np.full(self.m_all, -1)
         place[self.keep] = np.arange(len(self.keep))
-        var = [(place[r] * self.n + c, f, s) for r, c, f, s in var if place[r] >= 0]
-        one = [(place[r] * self.n + c, s) for r, c, s in one if place[r] >= 0]
-        at = np.array([v[0] for v in var], dtype=int)
-        self._layout = (at, np.array([v[1] for v in var], dtype=int), np.array([v[2] for v in var]))
-        self._ones = (np.array([o[0] for o in one], dtype=int), np.array([o[1] for o in one]))
-        return len(np.unique(np.r_[at, self._ones[0]])) == len(at) + len(one)   # one writer each
+        unit = len(self.p0) * 3 + 3 * (len(self.perp0) + len(self.drive_axis0) + len(self.idle_body))
+        entries = sorted((place[r] * self.n + c, f, s) for r, c, f, s in var + [(r, c, unit, s) for r, c, s in one]
+                         if place[r] >= 0)
+        at = np.array([e[0] for e in entries], dtype=int)
+        sign = np.array([e[2] for e in entries])
+        rows = at // self.n
+        starts = np.searchsorted(rows, np.arange(self.m))
+        self._layout = (at, np.array([e[1] for e in entries], dtype=int), sign,
+                        sign * self._column[at % self.n], starts)
+        every_row = (np.diff(np.r_[starts, len(at)]) > 0).all()
+        return len(np.unique(at)) == len(at) and bool(every_row)     # one writer each, no empty row
 
     def _driver_rows(self) -> np.ndarray:
         """The drivers' rows among the kept ones."""
@@ -249,7 +266,7 @@ class CompiledNewton:
         twists = _Twists(n_rows, self.n)
         solved = coarse
         while stride > 1:
-            stride = max(1, stride // 8)
+            stride = max(1, stride // DENSER)
             level = np.setdiff1d(np.arange(0, n_rows, stride), solved)
             if not len(level):
                 continue
@@ -266,23 +283,33 @@ class CompiledNewton:
         rest = np.flatnonzero(~twists.known)
         for part in range(0, len(rest), CHUNK):
             rows = rest[part:part + CHUNK]
-            regular = self._regular(self.matrix(rots[rows], ts[rows]))
+            regular = self._regular(rots[rows], ts[rows])
             if regular is None:
                 return None
             twists.x_v[rows], twists.x_a[rows] = self._twists(rots[rows], ts[rows], regular)
         return {"rot": rots, "t": ts, "x_v": twists.x_v, "x_a": twists.x_a}
 
     def _coarse(self, rots, ts, dq, coarse) -> bool:
-        """The coarse rows, one after the other, by Newton's method from the last one."""
-        for k0, k1 in zip(coarse[:-1], coarse[1:]):
-            inverse = self._inverse(rots[[k0]], ts[[k0]])
+        """The coarse rows by Newton's method from the last one solved: the next AHEAD rows
+        at once, each from its tangent there (one stacked Newton); where any of them does
+        not converge or jumps, only the next one."""
+        i = 0
+        while i < len(coarse) - 1:
+            k0 = coarse[[i]]
+            inverse = self._inverse(rots[k0], ts[k0])
             if inverse is None:
                 return False
-            done = self._chord(rots[[k0]], ts[[k0]], inverse, self._predictor(rots[[k0]], ts[[k0]], inverse),
-                               dq[[k0]], dq[[k1]], newton=True)
+            slope, bend = self._predictor(rots[k0], ts[k0], inverse)
+            for targets in (coarse[i + 1:i + 1 + AHEAD], coarse[i + 1:i + 2]):
+                from_ = np.repeat(k0, len(targets))
+                done = self._chord(rots[from_], ts[from_], inverse[from_ * 0], (slope[from_ * 0], bend[from_ * 0]),
+                                   dq[from_], dq[targets], newton=True)
+                if done is not None:
+                    break
             if done is None:
                 return False
-            rots[k1], ts[k1] = done[0][0], done[1][0]
+            rots[targets], ts[targets] = done
+            i += len(targets)
         return True
 
     def _level(self, rots, ts, dq, rows, parents, twists: Optional["_Twists"]) -> bool:
@@ -290,7 +317,7 @@ class CompiledNewton:
         and checked, the rows predicted and corrected with them; with `twists` (the last
         level), the rows' twists too, from the parents' inverses (`_near_twists`)."""
         heads, which = np.unique(parents, return_inverse=True)
-        regular = self._regular(self.matrix(rots[heads], ts[heads]))
+        regular = self._regular(rots[heads], ts[heads])
         if regular is None:
             return False
         inverse = regular.inverse()
@@ -346,30 +373,30 @@ class CompiledNewton:
         predicted = self._size(slope * h)
         step = slope * h + 0.5 * bend * h * h
         rot, t = _stepped(rot, t, step)
-        last = np.full(len(dq_to), np.inf)
-        active = np.arange(len(dq_to))
-        for _ in range(ITERATIONS):
-            r, tt = rot[active], t[active]
-            phi = self.residual(r, tt, dq_to[active])
-            if newton and (last[active] > FROZEN).any():
-                current = self._inverse(r, tt)
-                if current is None:
+        r, tt, inv, dq, last, rows = rot, t, inverse, dq_to, np.full(len(dq_to), np.inf), np.arange(len(dq_to))
+        for _ in range(ITERATIONS):             # r, tt, ... : the rows still iterating
+            phi = self.residual(r, tt, dq)
+            if newton and (last > FROZEN).any():
+                inv = self._inverse(r, tt)
+                if inv is None:
                     return None
-                inverse = inverse.copy()
-                inverse[active] = current
-            dx = -_times(inverse[active], phi)
+            dx = -_times(inv, phi)
             size = self._size(dx)
-            if not np.isfinite(size).all() or (size > JUMP * predicted[active] + 1e-9).any():
+            if not np.isfinite(size).all() or (size > JUMP * predicted + 1e-9).any():
                 return None
             r, tt = _stepped(r, tt, dx)
-            rot[active], t[active] = r, tt
-            rate = np.where(np.isfinite(last[active]), np.minimum(size / last[active], 0.5), 0.5)
+            rate = np.where(np.isfinite(last), np.minimum(size / last, 0.5), 0.5)
             done = (size < TOLERANCE) | (size * rate < 0.1 * TOLERANCE) | \
-                ((size < 1e3 * TOLERANCE) & (size > 0.5 * last[active]))
-            last[active] = size
-            active = active[~done]
-            if not len(active):
+                ((size < 1e3 * TOLERANCE) & (size > 0.5 * last))
+            if done.all():
+                rot[rows], t[rows] = r, tt
                 return rot, t
+            if done.any():
+                rot[rows[done]], t[rows[done]] = r[done], tt[done]
+                going = ~done
+                r, tt, inv, dq, rows, predicted = r[going], tt[going], inv[going], dq[going], rows[going], predicted[going]
+                size = size[going]
+            last = size
         return None
 
     def _twists(self, rots, ts, regular: "_Regular") -> tuple[np.ndarray, np.ndarray]:
@@ -386,13 +413,17 @@ class CompiledNewton:
         condition number as `_regular` checks it, and P₂ = P (2I − S P) (one Newton–Schulz
         step: I − P₂S = E²) solves S y = b by y ← y + P₂(b − S y), converging as ρ²ᵏ.
         Rows where that cannot be certified are flagged, for `_regular` to decide."""
-        scaled, rows = self._scaled(self.matrix(rots, ts))
+        scaled, rows = self.scaled_matrix(rots, ts)
         p = near.s_inv[which]
-        gap = scaled - near.scaled[which]
-        rho = near.size_inv[which] * _norm1(gap)
+        gap = near.scaled[which]
+        np.subtract(scaled, gap, out=gap)
+        rho = near.size_inv[which] * _norm1(gap, in_place=True)
         cond = (near.size[which] + rho / near.size_inv[which]) * near.size_inv[which] / (1.0 - rho)
         ok = (rho < 0.5) & (cond * self.n < CONDITION)
-        p = 2.0 * p - p @ (scaled @ p)
+        q = scaled @ p
+        np.negative(q, out=q)
+        q.reshape(len(q), -1)[:, ::self.n + 1] += 2.0
+        p = p @ q                                        # P (2I − S P)
         rhs = np.zeros((len(rots), self.m))
         rhs[:, self._driver_rows()] = self.rates
         y_v, ok_v = _refined(scaled, p, rows * rhs)
@@ -400,19 +431,11 @@ class CompiledNewton:
         y_a, ok_a = _refined(scaled, p, rows * self._accel_terms(rots, ts, x_v))
         return x_v, self._column * y_a, ok & ok_v & ok_a
 
-    def _scaled(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """S = R A C (rows equilibrated, lengths in the model's scale) and R's diagonal."""
-        scaled = a * self._column
-        norms = np.abs(scaled).max(axis=2, keepdims=True)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            scaled /= norms
-        return scaled, 1.0 / norms[..., 0]
-
-    def _regular(self, a: np.ndarray) -> Optional["_Regular"]:
-        """The dimensionless S = R A C of every matrix inverted, when every S is certainly
+    def _regular(self, rot, t) -> Optional["_Regular"]:
+        """The dimensionless S = R A C at these poses inverted, when every S is certainly
         below the engine's condition limit (its exact 1-norm condition number times n bounds
         the 2-norm one), else None."""
-        scaled, rows = self._scaled(a)
+        scaled, rows = self.scaled_matrix(rot, t)
         if not np.isfinite(rows).all():
             return None
         try:
@@ -478,27 +501,28 @@ class _Twists:
         self.x_v[rows], self.x_a[rows], self.known[rows] = x_v, x_a, True
 
 
-def _norm1(a: np.ndarray) -> np.ndarray:
-    """Stacked matrices' 1-norms (largest column sum)."""
-    return np.abs(a).sum(axis=-2).max(axis=-1)
+def _norm1(a: np.ndarray, in_place: bool = False) -> np.ndarray:
+    """Stacked matrices' 1-norms (largest column sum); `in_place` overwrites a with |a|."""
+    return np.abs(a, out=a if in_place else None).sum(axis=-2).max(axis=-1)
 
 
 def _refined(s: np.ndarray, p: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """S y = b by y ← y + P(b − S y) from y = P b, P ≈ S⁻¹, until the error left (the last
-    correction times its ratio to the one before) is below round-off or the corrections stop
-    shrinking; with the rows where that error is below 1e-15 of y."""
+    correction times its ratio to the one before) is within a few round-offs of y or the
+    corrections stop shrinking; with the rows where that error is below 1e-14 of y (what an
+    explicit inverse leaves at condition numbers of a hundred)."""
     y = _times(p, b)
-    last = np.full(len(b), np.inf)
-    left = scale = last
+    scale = np.abs(y).sum(axis=-1)          # y's size: changed by far less than itself below
+    last = left = np.full(len(b), np.inf)
     for _ in range(REFINEMENTS):
         dy = _times(p, b - _times(s, y))
         y += dy
-        size, scale = np.abs(dy).sum(axis=-1), np.abs(y).sum(axis=-1)
+        size = np.abs(dy).sum(axis=-1)
         left = size * (np.minimum(size / last, 0.5) if np.isfinite(last).all() else 0.5)
-        if ((left <= 1e-16 * scale) | (size > 0.5 * last)).all():
+        if ((left <= 1e-15 * scale) | (size > 0.5 * last)).all():
             break
         last = size
-    return y, left <= 1e-15 * scale
+    return y, left <= 1e-14 * scale
 
 
 class LinearVectors:
