@@ -6,13 +6,18 @@ Python rows. Here the same conditions (`constraints`: points coincide, the relat
 rotation stays about the revolute's axis, the driven joint's angle is the increment, no
 idle spin of an S–S link) become numpy arrays over every position at once:
 
-- a few coarse positions (about every 8°) are assembled one after the other by Newton's
-  method from the tangent at the last one, with the general path's safeguard against a
-  jump to another branch (a correction larger than 0.3 of the step taken);
-- every other position starts from the tangent at its nearest coarse position and all of
-  them are corrected together: stacked (N, n, n) Jacobians and solves;
-- velocities and accelerations are then two more stacked solves with the same matrices, the
-  acceleration's known terms (centripetal and Coriolis) written as arrays.
+- the rows are made of vectors fixed in bodies (joint points, axes, perpendiculars), all of
+  them one product per pose (`rigid.LinearVectors`); the velocity matrix is those vectors'
+  coordinates scattered by fixed index arrays;
+- coarse positions (about every 8°) are assembled five at a time by Newton's method from
+  the tangent at the last one (one at a time where that fails), with the general path's
+  safeguard against a jump to another branch (a correction larger than 0.3 of the step);
+- then, level by level (eight times denser each time), every other position starts from
+  the second-order tangent at its nearest solved one and all of them are corrected
+  together by chord iterations with that one's inverse (stacked (N, n, n) arrays);
+- velocities and accelerations are stacked solves: exact inverses at the positions that
+  served as parents, and at the last level, refinement from the parent's inverse
+  (`stacked.refined`) with a bound that certifies the condition number as an inverse would.
 
 Anything it does not handle (other joints or drivers, a redundant or nearly singular
 matrix at any position, Newton failing or jumping anywhere) returns None, and the general
@@ -31,6 +36,8 @@ import numpy as np
 
 from ..engine.idle import idle_links
 from .plan import Plan
+from .rigid import LinearVectors, perpendicular, rotation_vectors, stepped
+from .stacked import Regular, Twists, cross, dot, norm1, refined, times
 
 if TYPE_CHECKING:
     from .run import Sweeper
@@ -43,7 +50,6 @@ TOLERANCE = 1e-12           # as the general path: dimensionless step size
 JUMP = 0.3                  # a correction above this fraction of the step is a jump
 CONDITION = 1e10            # the engine's limit for a dead point (2-norm, dimensionless)
 CHUNK = 8192                # positions whose stacked matrices are built at once (memory)
-REFINEMENTS = 40            # iterations of a solve from a neighbour's inverse (each ≤ ½ the last)
 FROZEN = 1e-5               # Newton keeps its last matrix once the corrections are this small
 
 
@@ -140,7 +146,7 @@ class CompiledNewton:
         out.add("axis", [[(b, e, False, 1.0)] for b, e in zip(tr.b[0::2], self.axis_b0)])
         out.add("perp", [[(a, p, False, 1.0)] for a, p in zip(tr.a, self.perp0)])
         out.add("drive", [[(a, e, False, 1.0)] for a, e in zip(dr.a, self.drive_axis0)])
-        across = [_perpendicular(e) for e in self.drive_axis0]
+        across = [perpendicular(e) for e in self.drive_axis0]
         out.add("ua", [[(a, u, False, 1.0)] for a, u in zip(dr.a, across)])
         out.add("ub", [[(b, u, False, 1.0)] for b, u in zip(dr.b, across)])
         out.add("idle", [[(bb, pb - c, True, 1.0), (ba, pa - c, True, -1.0)]
@@ -156,13 +162,13 @@ class CompiledNewton:
         get = self.vectors.part
         parts = [(get(v, "pb") - get(v, "pa")).reshape(len(dq), -1)]
         if len(self.perp0):
-            dots = _dot(np.repeat(get(v, "axis"), 2, axis=1), get(v, "perp"))   # e·p1, e·p2 per revolute
+            dots = dot(np.repeat(get(v, "axis"), 2, axis=1), get(v, "perp"))   # e·p1, e·p2 per revolute
             out = np.empty_like(dots)
             out[:, 0::2], out[:, 1::2] = -dots[:, 1::2], dots[:, 0::2]
             parts.append(out)
         if len(self.drive_axis0):
             ua, ub = get(v, "ua"), get(v, "ub")
-            turned = np.arctan2(_dot(_cross(ua, ub), get(v, "drive")), _dot(ua, ub))
+            turned = np.arctan2(dot(cross(ua, ub), get(v, "drive")), dot(ua, ub))
             target = np.where(self.swept, 1.0, 0.0)[None, :] * dq[:, None]
             parts.append(np.remainder(turned - target + math.pi, 2 * math.pi) - math.pi)
         if len(self.idle_body):
@@ -171,30 +177,31 @@ class CompiledNewton:
 
     def matrix(self, rot, t) -> np.ndarray:
         """The engine's velocity matrix at these poses (M, m, n): the constraints' Jacobian."""
-        return self._entries(rot, t, self._layout[2])[0]
+        return self._placed(self._values(rot, t, self._layout[2]))
 
     def scaled_matrix(self, rot, t) -> tuple[np.ndarray, np.ndarray]:
         """S = R A C (rows equilibrated, lengths in the model's scale) and R's diagonal."""
-        a, values = self._entries(rot, t, self._layout[3])
+        values = self._values(rot, t, self._layout[3])
         norms = np.maximum.reduceat(np.abs(values), self._layout[4], axis=1)
         with np.errstate(divide="ignore", invalid="ignore"):
-            a /= norms[..., None]
-            return a, 1.0 / norms
+            values /= norms[:, self._layout[5]]
+            return self._placed(values), 1.0 / norms
 
-    def _entries(self, rot, t, sign: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """A matrix (M, m, n) and its nonzero entries (M, E), by rows. Its entries are ±1 or
-        ± a coordinate of a joint's lever arm, a turning row's perpendicular, a driven axis
-        or an idle link's AB: those vectors are computed for every pose at once and
-        scattered into place by `_scatter`'s fixed index arrays."""
+    def _values(self, rot, t, sign: np.ndarray) -> np.ndarray:
+        """The matrix's nonzero entries (M, E), row by row. Each is ±1 or ± a coordinate of a
+        joint's lever arm, a turning row's perpendicular, a driven axis or an idle link's AB:
+        those vectors are computed for every pose at once (`vectors`) and picked by
+        `_scatter`'s fixed index arrays."""
         m = rot.shape[0]
         v = self.vectors(rot, t)
         features = np.concatenate([self.vectors.part(v, name).reshape(m, -1)
                                    for name in ("pb", "perp", "drive", "idle")] + [np.ones((m, 1))], axis=1)
-        at, source = self._layout[:2]
-        values = features[:, source] * sign
-        a = np.zeros((m, self.m * self.n))
-        a[:, at] = values
-        return a.reshape(m, self.m, self.n), values
+        return features[:, self._layout[1]] * sign
+
+    def _placed(self, values: np.ndarray) -> np.ndarray:
+        a = np.zeros((len(values), self.m * self.n))
+        a[:, self._layout[0]] = values
+        return a.reshape(len(values), self.m, self.n)
 
     def _scatter(self) -> bool:
         """Where `matrix` puts each entry: (flat index, feature, sign) for the entries that
@@ -233,7 +240,7 @@ class CompiledNewton:
         rows = at // self.n
         starts = np.searchsorted(rows, np.arange(self.m))
         self._layout = (at, np.array([e[1] for e in entries], dtype=int), sign,
-                        sign * self._column[at % self.n], starts)
+                        sign * self._column[at % self.n], starts, rows)
         every_row = (np.diff(np.r_[starts, len(at)]) > 0).all()
         return len(np.unique(at)) == len(at) and bool(every_row)     # one writer each, no empty row
 
@@ -263,7 +270,7 @@ class CompiledNewton:
         rots[0], ts[0] = np.eye(3), 0.0
         if not self._coarse(rots, ts, dq, coarse):
             return None
-        twists = _Twists(n_rows, self.n)
+        twists = Twists(n_rows, self.n)
         solved = coarse
         while stride > 1:
             stride = max(1, stride // DENSER)
@@ -312,7 +319,7 @@ class CompiledNewton:
             i += len(targets)
         return True
 
-    def _level(self, rots, ts, dq, rows, parents, twists: Optional["_Twists"]) -> bool:
+    def _level(self, rots, ts, dq, rows, parents, twists: Optional[Twists]) -> bool:
         """Rows of one level from their parents (solved rows): the parents' matrices inverted
         and checked, the rows predicted and corrected with them; with `twists` (the last
         level), the rows' twists too, from the parents' inverses (`_near_twists`)."""
@@ -357,7 +364,7 @@ class CompiledNewton:
         no driver acceleration. In the steps' coordinates (R ← exp(δθ) R, t ← exp(δθ) t + δ)
         x(q + h) = x + h x' + h²/2 x'' + O(h³), so a predicted position is off by O(h³)."""
         slope = inverse[:, :, self._driver_rows()[self.swept]].sum(axis=2)
-        bend = _times(inverse, self._accel_terms(rot, t, slope, driven=False))
+        bend = times(inverse, self._accel_terms(rot, t, slope, driven=False))
         return slope, bend
 
     def _size(self, dx: np.ndarray) -> np.ndarray:
@@ -372,7 +379,7 @@ class CompiledNewton:
         h = (dq_to - dq_from)[:, None]
         predicted = self._size(slope * h)
         step = slope * h + 0.5 * bend * h * h
-        rot, t = _stepped(rot, t, step)
+        rot, t = stepped(rot, t, step)
         r, tt, inv, dq, last, rows = rot, t, inverse, dq_to, np.full(len(dq_to), np.inf), np.arange(len(dq_to))
         for _ in range(ITERATIONS):             # r, tt, ... : the rows still iterating
             phi = self.residual(r, tt, dq)
@@ -380,11 +387,11 @@ class CompiledNewton:
                 inv = self._inverse(r, tt)
                 if inv is None:
                     return None
-            dx = -_times(inv, phi)
+            dx = -times(inv, phi)
             size = self._size(dx)
             if not np.isfinite(size).all() or (size > JUMP * predicted + 1e-9).any():
                 return None
-            r, tt = _stepped(r, tt, dx)
+            r, tt = stepped(r, tt, dx)
             rate = np.where(np.isfinite(last), np.minimum(size / last, 0.5), 0.5)
             done = (size < TOLERANCE) | (size * rate < 0.1 * TOLERANCE) | \
                 ((size < 1e3 * TOLERANCE) & (size > 0.5 * last))
@@ -399,14 +406,14 @@ class CompiledNewton:
             last = size
         return None
 
-    def _twists(self, rots, ts, regular: "_Regular") -> tuple[np.ndarray, np.ndarray]:
+    def _twists(self, rots, ts, regular: Regular) -> tuple[np.ndarray, np.ndarray]:
         """The twists and their rates at these poses, whose matrices are `regular`."""
         rhs = np.zeros((len(rots), self.m))
         rhs[:, self._driver_rows()] = self.rates
         x_v = regular.solve(rhs)
         return x_v, regular.solve(self._accel_terms(rots, ts, x_v))
 
-    def _near_twists(self, rots, ts, near: "_Regular", which) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _near_twists(self, rots, ts, near: Regular, which) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The twists and their rates at poses next to already inverted ones (`near`, row
         `which` for each), without inverting again. With P = S_near⁻¹ and E = I − P S,
         ‖E‖₁ ≤ ‖P‖₁ ‖S_near − S‖₁ = ρ; where ρ < ½, ‖S⁻¹‖₁ ≤ ‖P‖₁ / (1 − ρ) bounds the
@@ -417,7 +424,7 @@ class CompiledNewton:
         p = near.s_inv[which]
         gap = near.scaled[which]
         np.subtract(scaled, gap, out=gap)
-        rho = near.size_inv[which] * _norm1(gap, in_place=True)
+        rho = near.size_inv[which] * norm1(gap, in_place=True)
         cond = (near.size[which] + rho / near.size_inv[which]) * near.size_inv[which] / (1.0 - rho)
         ok = (rho < 0.5) & (cond * self.n < CONDITION)
         q = scaled @ p
@@ -426,12 +433,12 @@ class CompiledNewton:
         p = p @ q                                        # P (2I − S P)
         rhs = np.zeros((len(rots), self.m))
         rhs[:, self._driver_rows()] = self.rates
-        y_v, ok_v = _refined(scaled, p, rows * rhs)
+        y_v, ok_v = refined(scaled, p, rows * rhs)
         x_v = self._column * y_v
-        y_a, ok_a = _refined(scaled, p, rows * self._accel_terms(rots, ts, x_v))
+        y_a, ok_a = refined(scaled, p, rows * self._accel_terms(rots, ts, x_v))
         return x_v, self._column * y_a, ok & ok_v & ok_a
 
-    def _regular(self, rot, t) -> Optional["_Regular"]:
+    def _regular(self, rot, t) -> Optional[Regular]:
         """The dimensionless S = R A C at these poses inverted, when every S is certainly
         below the engine's condition limit (its exact 1-norm condition number times n bounds
         the 2-norm one), else None."""
@@ -442,11 +449,11 @@ class CompiledNewton:
             inverse = np.linalg.inv(scaled)
         except np.linalg.LinAlgError:
             return None
-        size, size_inv = _norm1(scaled), _norm1(inverse)
+        size, size_inv = norm1(scaled), norm1(inverse)
         cond = size * size_inv
         if not (np.isfinite(cond).all() and (cond * self.n < CONDITION).all()):
             return None
-        return _Regular(scaled, inverse, self._column, rows, size, size_inv)
+        return Regular(scaled, inverse, self._column, rows, size, size_inv)
 
     def _accel_terms(self, rots, ts, x_v, driven: bool = True) -> np.ndarray:
         """The acceleration system's right side: minus the rows' terms in the velocities
@@ -457,192 +464,18 @@ class CompiledNewton:
         k = self.coincide
         r = get(v, "pb")
         wb, wa = w[:, k.b], w[:, k.a]
-        known = [(_cross(wb, _cross(wb, r)) - _cross(wa, _cross(wa, r))).reshape(n_rows, -1)]
+        known = [(cross(wb, cross(wb, r)) - cross(wa, cross(wa, r))).reshape(n_rows, -1)]
         if len(self.perp0):
             tr = self.turn
             w_rel = w[:, tr.b] - w[:, tr.a]
-            known.append(_dot(w_rel, _cross(w[:, tr.a], get(v, "perp"))))
+            known.append(dot(w_rel, cross(w[:, tr.a], get(v, "perp"))))
         if len(self.drive_axis0):
             dr = self.drive
             w_rel = w[:, dr.b] - w[:, dr.a]
-            known.append(_dot(w_rel, _cross(w[:, dr.a], get(v, "drive"))) - (self.accels if driven else 0.0))
+            known.append(dot(w_rel, cross(w[:, dr.a], get(v, "drive"))) - (self.accels if driven else 0.0))
         if len(self.idle_body):
             known.append(np.zeros((n_rows, len(self.idle_body))))
         return -np.concatenate(known, axis=1)[:, self.keep]
-
-
-@dataclass
-class _Regular:
-    """Matrices A = R⁻¹ S C⁻¹ certified regular: S, S⁻¹, C's and R's diagonals, ‖S‖₁, ‖S⁻¹‖₁."""
-
-    scaled: np.ndarray
-    s_inv: np.ndarray
-    column: np.ndarray
-    rows: np.ndarray
-    size: np.ndarray
-    size_inv: np.ndarray
-
-    def inverse(self) -> np.ndarray:
-        """A⁻¹ = C S⁻¹ R, formed (the chord iterations apply it many times)."""
-        return self.column[None, :, None] * self.s_inv * self.rows[:, None, :]
-
-    def solve(self, b: np.ndarray) -> np.ndarray:
-        return self.column * _times(self.s_inv, self.rows * b)
-
-
-class _Twists:
-    """Every row's twists and their rates, filled as they are found."""
-
-    def __init__(self, n_rows: int, n: int) -> None:
-        self.x_v, self.x_a = np.zeros((n_rows, n)), np.zeros((n_rows, n))
-        self.known = np.zeros(n_rows, dtype=bool)
-
-    def put(self, rows, x_v, x_a) -> None:
-        self.x_v[rows], self.x_a[rows], self.known[rows] = x_v, x_a, True
-
-
-def _norm1(a: np.ndarray, in_place: bool = False) -> np.ndarray:
-    """Stacked matrices' 1-norms (largest column sum); `in_place` overwrites a with |a|."""
-    return np.abs(a, out=a if in_place else None).sum(axis=-2).max(axis=-1)
-
-
-def _refined(s: np.ndarray, p: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """S y = b by y ← y + P(b − S y) from y = P b, P ≈ S⁻¹, until the error left (the last
-    correction times its ratio to the one before) is within a few round-offs of y or the
-    corrections stop shrinking; with the rows where that error is below 1e-14 of y (what an
-    explicit inverse leaves at condition numbers of a hundred)."""
-    y = _times(p, b)
-    scale = np.abs(y).sum(axis=-1)          # y's size: changed by far less than itself below
-    last = left = np.full(len(b), np.inf)
-    for _ in range(REFINEMENTS):
-        dy = _times(p, b - _times(s, y))
-        y += dy
-        size = np.abs(dy).sum(axis=-1)
-        left = size * (np.minimum(size / last, 0.5) if np.isfinite(last).all() else 0.5)
-        if ((left <= 1e-15 * scale) | (size > 0.5 * last)).all():
-            break
-        last = size
-    return y, left <= 1e-14 * scale
-
-
-class LinearVectors:
-    """Vectors fixed in bodies (directions, or points measured from c that move with the
-    body's translation too), sums of them allowed, for many poses at once: each is linear in
-    the poses, so all of them are one matrix product X W + w₀, X a pose's rotations and
-    translations flattened (the frame's vectors, index −1, are the constant w₀)."""
-
-    def __init__(self, n_bodies: int) -> None:
-        self.n_bodies = n_bodies
-        self.terms: list[list[tuple[int, np.ndarray, bool, float]]] = []
-        self.slices: dict[str, slice] = {}
-
-    def add(self, name: str, terms: list[list[tuple[int, np.ndarray, bool, float]]]) -> None:
-        """Vectors named `name`: each a list of (body, vector, moves with t, sign)."""
-        self.slices[name] = slice(len(self.terms), len(self.terms) + len(terms))
-        self.terms += terms
-
-    def compile(self) -> None:
-        b, k = self.n_bodies, len(self.terms)
-        self.w, self.w0 = np.zeros((12 * b, 3 * k)), np.zeros(3 * k)
-        for q, term in enumerate(self.terms):
-            for body, v, moves, sign in term:
-                v = sign * np.asarray(v, dtype=float)
-                if body < 0:
-                    self.w0[3 * q:3 * q + 3] += v
-                    continue
-                for i in range(3):              # (R v)_i = Σ_j R_ij v_j, R_ij at 9 body + 3 i + j
-                    self.w[9 * body + 3 * i:9 * body + 3 * i + 3, 3 * q + i] += v
-                    if moves:
-                        self.w[9 * b + 3 * body + i, 3 * q + i] += sign
-
-    def __call__(self, rot: np.ndarray, t: np.ndarray) -> np.ndarray:
-        """Every vector at poses rot (M, B, 3, 3), t (M, B, 3): (M, K, 3). A product per
-        pose (stacked): one large product would run on BLAS threads that cost more than
-        they give on matrices this small."""
-        m = rot.shape[0]
-        x = np.concatenate([rot.reshape(m, -1), t.reshape(m, -1)], axis=1)
-        return ((x[:, None, :] @ self.w)[:, 0] + self.w0).reshape(m, -1, 3)
-
-    def part(self, v: np.ndarray, name: str) -> np.ndarray:
-        return v[:, self.slices[name]]
-
-
-def _perpendicular(e: np.ndarray) -> np.ndarray:
-    """A unit vector perpendicular to the unit vector e."""
-    u = _cross(e, np.eye(3)[int(np.argmin(np.abs(e)))])
-    return u / np.linalg.norm(u)
-
-
-def _times(a: np.ndarray, x: np.ndarray) -> np.ndarray:
-    """Stacked matrix-vector products: (…, i, j) · (…, j) → (…, i)."""
-    return (a @ x[..., None])[..., 0]
-
-
-def _dot(u: np.ndarray, v: np.ndarray) -> np.ndarray:
-    return np.einsum("...i,...i->...", u, v)
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Stacked cross products (…, 3): as np.cross, with less overhead on small arrays."""
-    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
-    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
-    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
-
-
-def _exp(w: np.ndarray) -> np.ndarray:
-    """Rodrigues on stacked rotation vectors (…, 3) → (…, 3, 3), as `poses.exp_rotation`:
-    R = I + (sin θ/θ) W + ((1 − cos θ)/θ²) W², with W² = w wᵀ − θ² I; I + W below 1e-12."""
-    sq = (w * w).sum(axis=-1)
-    angle = np.sqrt(sq)
-    small = angle < 1e-12
-    safe = np.where(small, 1.0, angle)
-    s = np.where(small, 1.0, np.sin(safe) / safe)
-    c = np.where(small, 0.0, (1.0 - np.cos(safe)) / (safe * safe))
-    out = (c[..., None, None] * w[..., :, None]) * w[..., None, :]
-    diagonal = 1.0 - c * sq
-    sw = s[..., None] * w
-    for i in range(3):
-        j, k = (i + 1) % 3, (i + 2) % 3
-        out[..., i, i] += diagonal
-        out[..., j, i] += sw[..., k]
-        out[..., i, j] -= sw[..., k]
-    return out
-
-
-def _stepped(rot, t, dx) -> tuple[np.ndarray, np.ndarray]:
-    """Poses after a step of the unknowns, as `SpatialPoses.stepped`: R ← exp(δθ) R,
-    t ← exp(δθ) t + δ."""
-    d = dx.reshape(dx.shape[0], -1, 6)
-    step = _exp(d[..., :3])
-    return step @ rot, _times(step, t) + d[..., 3:]
-
-
-def rotation_vectors(rots: np.ndarray) -> np.ndarray:
-    """Each row's rotation vector (N, 3), continued from row to row from 0 at row 0, as the
-    general path's `_continued` does: the axis kept on one side, the angle unwrapped (a crank
-    ends a turn at 2π about its axis, not at 0)."""
-    v = np.stack([rots[:, 2, 1] - rots[:, 1, 2], rots[:, 0, 2] - rots[:, 2, 0],
-                  rots[:, 1, 0] - rots[:, 0, 1]], -1)
-    angle = np.arctan2(np.linalg.norm(v, axis=-1) / 2, (np.trace(rots, axis1=1, axis2=2) - 1) / 2)
-    axis = np.zeros_like(v)
-    regular = (angle > 1e-6) & (math.pi - angle > 1e-3)
-    axis[regular] = v[regular] / np.linalg.norm(v[regular], axis=-1, keepdims=True)
-    half = math.pi - angle <= 1e-3
-    for i in np.flatnonzero(half):                   # near a half turn (rare): as log_rotation
-        bm = (rots[i] + np.eye(3)) / 2
-        j = int(np.argmax(np.diag(bm)))
-        a = bm[:, j] / math.sqrt(bm[j, j])
-        axis[i] = a if a @ v[i] >= 0 else -a
-    known = regular | half
-    if not known.any():
-        return v / 2
-    # rows at (nearly) no rotation take the axis of the nearest earlier row (or the first)
-    fill = np.maximum.accumulate(np.where(known, np.arange(len(v)), -1))
-    axis = axis[np.where(fill < 0, int(np.argmax(known)), fill)]
-    flips = np.sign(np.einsum("ki,ki->k", axis[1:], axis[:-1]))
-    flips[flips == 0] = 1.0
-    sign = np.r_[1.0, np.cumprod(flips)]
-    return np.unwrap(sign * angle)[:, None] * (axis * sign[:, None])
 
 
 def supported(sweeper: "Sweeper") -> bool:
@@ -690,7 +523,7 @@ def compiled_sweep(sweeper: "Sweeper", plan: Plan):
         i = index[body]
         r = np.einsum("mij,j->mi", rots[:, i], p0 - c) + ts[:, i]        # P − ref, now
         w, v0, al, a0 = x_v[:, i, :3], x_v[:, i, 3:], x_a[:, i, :3], x_a[:, i, 3:]
-        motions[name, body] = (r + c, v0 + _cross(w, r),
-                               a0 + _cross(al, r) + _cross(w, _cross(w, r)))
+        motions[name, body] = (r + c, v0 + cross(w, r),
+                               a0 + cross(al, r) + cross(w, cross(w, r)))
     ok = np.ones(n_rows, dtype=bool)
     return sweeper.result(plan, ok, bodies, motions, [])
