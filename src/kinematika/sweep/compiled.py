@@ -392,7 +392,7 @@ class CompiledNewton:
             if not np.isfinite(size).all() or (size > JUMP * predicted + 1e-9).any():
                 return None
             r, tt = stepped(r, tt, dx)
-            rate = np.where(np.isfinite(last), np.minimum(size / last, 0.5), 0.5)
+            rate = np.where(np.isfinite(last), np.minimum(size / np.maximum(last, 1e-300), 0.5), 0.5)
             done = (size < TOLERANCE) | (size * rate < 0.1 * TOLERANCE) | \
                 ((size < 1e3 * TOLERANCE) & (size > 0.5 * last))
             if done.all():

@@ -72,7 +72,7 @@ def refined(s: np.ndarray, p: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np
         dy = times(p, b - times(s, y))
         y += dy
         size = np.abs(dy).sum(axis=-1)
-        left = size * (np.minimum(size / last, 0.5) if np.isfinite(last).all() else 0.5)
+        left = size * (np.minimum(size / np.maximum(last, 1e-300), 0.5) if np.isfinite(last).all() else 0.5)
         if ((left <= 1e-15 * scale) | (size > 0.5 * last)).all():
             break
         last = size
