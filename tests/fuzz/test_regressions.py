@@ -18,7 +18,7 @@ import yaml
 from kinematika import KinematikaError, solve
 from kinematika import limits
 from kinematika.budget import OverBudget, budget, check
-from kinematika.commands import solve_data
+from kinematika.commands import How, solve_data
 from kinematika.model.expressions import parse
 from kinematika.text import brief, markup, shown
 
@@ -311,6 +311,7 @@ def test_huge_coordinates_are_out_of_range_not_overflow_or_linalg_errors(change)
     tree["points"].update(change)
     err = error_of(tree)
     assert (err.kind, err.where) == ("schema", "points") and "lengths between" in err.message
+    assert "nan" not in err.message and "inf" not in err.message.split(":")[0]      # an overflowed size is said in words
 
 
 def test_a_direction_with_subnormal_components_is_read_numerically():
@@ -538,3 +539,11 @@ def test_figures_show_names_with_control_characters_escaped():
     assert shown(name) in texts
     assert any(shown("c\x1b[2J") in t for t in texts)
     assert not any(c in t for t in texts for c in "\x1b\x07")
+
+
+def test_a_length_that_overflows_the_constructed_positions_is_said_in_words():
+    """`--set d=1e308` on a model stated by construction: its positions overflow, and the
+    error once said 'the model's size is nan'."""
+    err = error_of(EXAMPLES / "four_bar.yaml", how=How(set={"d": 1e308}))
+    assert (err.kind, err.where) == ("schema", "points") and "lengths between" in err.message
+    assert "beyond what floats hold" in err.message and "nan" not in err.message

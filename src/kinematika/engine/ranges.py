@@ -18,7 +18,8 @@ from ..errors import KinematikaError
 def check_size(size: float) -> None:
     """The model's length scale within the range (`limits.SCALE`)."""
     if not 1 / limits.SCALE <= size <= limits.SCALE:
-        raise KinematikaError("schema", f"the model's size is {size:.3g}: kinematika computes with "
+        shown = f"{size:.3g}" if math.isfinite(size) else "beyond what floats hold"
+        raise KinematikaError("schema", f"the model's size is {shown}: kinematika computes with "
                               f"lengths between {1 / limits.SCALE:g} and {limits.SCALE:g}, in any "
                               "unit; write the lengths in another unit", "points")
 
