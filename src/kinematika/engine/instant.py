@@ -60,6 +60,8 @@ class Instant:
     scale: float = 1.0                               # characteristic length
     rate: float = 0.0                                # characteristic rate (engine.ranges)
     ref: tuple = ()                                  # where body twists are taken
+    names: dict = field(default_factory=dict)        # named coordinates (symbolic): symbol ->
+                                                     # formula in parameters and earlier names
 
     @property
     def symbolic(self) -> bool:
@@ -136,7 +138,7 @@ def instantiate(model: m.Model, symbolic: bool | None = None) -> Instant:
         _check_coordinates(inst)         # a model out of range says so, not that circles miss
         raise
     if probe:
-        inst.probe = _real_probe(inst.points, probe)
+        inst.probe = _real_probe(inst.points, probe, inst.names)
     inst.scale = _length_scale(inst)
     inst.ref = inst.space.zero() if use_symbols else _centroid(inst)
     inst.shapes = {name: [_shape(inst, s, name) for s in b.shapes]
@@ -188,8 +190,10 @@ def _given_value(p: m.Parameter, backend: Any) -> float | None:
     return value
 
 
-def _real_probe(points: dict[str, tuple], probe: dict, tries: int = 40) -> dict:
-    """Probe values at which every point is real and finite.
+def _real_probe(points: dict[str, tuple], probe: dict, names: dict | None = None,
+                tries: int = 40) -> dict:
+    """Probe values at which every point is real and finite (with the values of the named
+    coordinates there, `names`).
 
     A symbolic model may make sense only for some values of its symbols
     (``sqrt(l**2 - r**2)`` needs l > r): when the default probe falls outside, values spread
@@ -197,17 +201,29 @@ def _real_probe(points: dict[str, tuple], probe: dict, tries: int = 40) -> dict:
     """
     import random
 
+    names = names or {}
+    probe = {s: v for s, v in probe.items() if s not in names}
     coords = [c for p in points.values() for c in p if not isinstance(c, (int, float))]
     for attempt in range(tries):
         if attempt:
             rng = random.Random(attempt)
             probe = {s: math.exp(rng.uniform(-2, 2)) * (1 if s.is_positive else rng.choice((-1, 1)))
                      for s in probe}
-        values = [complex(c.xreplace(probe)) for c in coords]
+        at = {**probe, **named_values(names, probe)}
+        values = list(at.values())[len(probe):] + [complex(c.xreplace(at)) for c in coords]
         if all(math.isfinite(v.real) and abs(v.imag) <= 1e-12 * (1 + abs(v.real)) for v in values):
-            return probe
+            return {**probe, **{s: complex(v).real for s, v in at.items() if s in names}}
     raise KinematikaError("geometry", "the points are not real for any values of the symbols "
                           "tried (a square root of a negative number?)", "points")
+
+
+def named_values(names: dict, probe: dict) -> dict:
+    """The values (complex) of the named coordinates at the symbols' values `probe`, each
+    from its formula in the parameters and the names before it."""
+    out: dict = {}
+    for s, formula in names.items():
+        out[s] = complex(formula.xreplace({**probe, **out}))
+    return out
 
 
 def _check_coordinates(inst: Instant) -> None:

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any, Optional
 
 from ..errors import KinematikaError
 from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
-                                   TwoCircles, TwoLines, construction_order)
+                                   TwoCircles, TwoLines, construction_order, uses)
 from ..model.expressions import parse
 
 if TYPE_CHECKING:
@@ -41,21 +41,81 @@ def positions(inst: "Instant", builder: Optional[type] = None) -> dict[str, tupl
         else:
             built = builder(inst, out, where).build(spec)
             if inst.symbolic:
-                _check_size(built, name, where)
+                built = _bounded(inst, builder, spec, built, name, out, where)
             out[name] = tuple(inst.backend.simplify(c) for c in built)
         for turn in turns:
             out[name] = carry(inst, turn, out[name], out)
     return {name: out[name] for name in model.points}
 
 
+NAME_OPS = 400      # a constructed point whose exact coordinates would be longer is named
+
+
+def _bounded(inst: "Instant", builder: type, spec: Construction, built: tuple, name: str,
+             out: dict[str, tuple], where: str) -> tuple:
+    """The exact coordinates of a constructed point, bounded: when written out they would
+    pass `NAME_OPS` operations (each circle intersection writes the points it is drawn from
+    into the next: Jansen's leg in its 15 lengths reaches 160 000 at its foot), the points
+    it is drawn from and the point itself are named (x_E, y_E) as a textbook does, and it is
+    written in those names: the answers are then formulas in the parameters and the names,
+    each name defined by its own short formula (`Instant.names`). Once names are in use,
+    every later point that is more than a short formula is named too."""
+    if inst.names and _size(built) > 0:
+        return name_point(inst, name, tuple(inst.backend.simplify(c) for c in built))
+    if _size(built) <= NAME_OPS:
+        return built
+    for used in uses(spec):
+        out[used] = name_point(inst, used, out[used])
+    built = builder(inst, out, where).build(spec)
+    _check_size(built, name, where)
+    return name_point(inst, name, tuple(inst.backend.simplify(c) for c in built))
+
+
+def name_point(inst: "Instant", point: str, coords: tuple) -> tuple:
+    """`coords` with each compound coordinate replaced by a named symbol (x_P, y_P), whose
+    formula and value at the probe `inst` records."""
+    import sympy
+
+    from .exact import _simple
+
+    out = []
+    for axis, c in zip("xyz", coords):
+        if _simple(c) or c in inst.names:
+            out.append(c)
+            continue
+        symbol = sympy.Symbol(_fresh_name(inst, f"{axis}_{point}"), real=True)
+        inst.names[symbol] = c
+        inst.probe[symbol] = complex(c.xreplace(inst.probe)).real
+        out.append(symbol)
+    return tuple(out)
+
+
+def _fresh_name(inst: "Instant", wanted: str) -> str:
+    """An identifier for a named coordinate, free among the parameters and the names."""
+    import re
+
+    base = re.sub(r"\W", "_", wanted)
+    taken = set(inst.model.parameters) | {str(s) for s in inst.names} | {"pi", "E", "I", "oo"}
+    text, k = base, 1
+    while text in taken or not text.isidentifier():
+        k += 1
+        text = f"{base}_{k}"
+    return text
+
+
+def _size(coords: tuple) -> int:
+    from ..algebra.fields import _quick_ops
+
+    return max(_quick_ops(c, {}) if hasattr(c, "args") else 0 for c in coords)
+
+
 def _check_size(coords: tuple, name: str, where: str) -> None:
     """A `limit` error when a constructed point's exact coordinates are past reading (each
     circle intersection writes the earlier points into the next: Jansen's leg in its 15
     lengths reaches 160 000 operations at its foot), before any time goes into them."""
-    from ..algebra.fields import _quick_ops
     from ..limits import POINT_OPS
 
-    size = max(_quick_ops(c, {}) if hasattr(c, "args") else 0 for c in coords)
+    size = _size(coords)
     if size > POINT_OPS:
         raise KinematikaError("limit", f"the exact coordinates of {name} would have about {size:,} "
                               f"operations (more than {POINT_OPS:,}): too large for formulas; give "

@@ -47,8 +47,18 @@ def solution_json(sol: Solution) -> dict[str, Any]:
         bodies, points = _numeric_tables(sol, scale)
     answers = [{"ask": q.echo, "value": _answer(sol, q, bodies, points, scale.get(q.kind, length), fields)}
                for q in model.questions]
-    return {"name": model.name, "dimension": model.dimension, "dof": sol.dof, "symbolic": sym,
-            "bodies": bodies, "points": points, "answers": answers}
+    out = {"name": model.name, "dimension": model.dimension, "dof": sol.dof, "symbolic": sym,
+           "bodies": bodies, "points": points, "answers": answers}
+    if sym and sol.inst.names:
+        out["where"] = where(sol.inst)
+    return out
+
+
+def where(inst: Any) -> dict[str, str]:
+    """The named coordinates of a symbolic instant (x_E, y_E), each with its formula in the
+    parameters and the names before it, in that order: what the answers' formulas use
+    besides the parameters when written out they would be too long to read (or to print)."""
+    return {str(s): plain(formula, True) for s, formula in inst.names.items()}
 
 
 def _numeric_tables(sol: Solution, scale: dict[str, float]) -> tuple[dict, dict]:
