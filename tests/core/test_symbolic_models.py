@@ -263,7 +263,7 @@ def test_jansen_leg_in_its_15_lengths_answers_with_named_coordinates():
 
 
 TEXTBOOK = ROOT / "tests" / "textbook"
-NAMED = ["watt_one", "stephenson_triad", "spherical_crank_rocker"]
+NAMED = ["watt_one", "stephenson_triad"]
 
 
 @pytest.mark.slow

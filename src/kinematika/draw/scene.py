@@ -203,10 +203,13 @@ def drawing_values(inst: Instant) -> dict:
     if not (inst.symbolic and inst.probe):
         return {}
     given = inst.model.draw_at
-    values = {s: float(given.get(str(s), v)) for s, v in inst.probe.items()}
+    values = {s: float(given.get(str(s), v)) for s, v in inst.probe.items() if s not in inst.names}
     if any(str(s) in given for s in values):
+        from ..engine.instant import named_values
+
+        at = {**values, **named_values(inst.names, values)}      # named coordinates there
         for name, vec in inst.points.items():
-            if any(abs(complex(c.xreplace(values) if hasattr(c, "xreplace") else c).imag) > 1e-12
+            if any(abs(complex(c.xreplace(at) if hasattr(c, "xreplace") else c).imag) > 1e-12
                    for c in vec):
                 raise KinematikaError("schema", f"the model cannot be drawn at these values: "
                                       f"point {name} is not real there", "draw_at")
@@ -229,11 +232,16 @@ class Numbers:
     def __init__(self, inst: Instant, proj: Projection, values: Optional[dict] = None) -> None:
         self.inst, self.proj = inst, proj
         self.values = values or {}
+        self._at = dict(self.values)        # with the named coordinates' values there
+        if self.values and inst.names:
+            from ..engine.instant import named_values
+
+            self._at.update({s: v.real for s, v in named_values(inst.names, self.values).items()})
 
     def scalar(self, x: Any) -> float:
         if isinstance(x, (int, float)) or not self.values:
             return self.inst.num(x)
-        return float(x.xreplace(self.values))
+        return float(x.xreplace(self._at))
 
     def vector(self, v: tuple) -> Vec:
         """A model vector (3D kept as is) as floats."""

@@ -11,8 +11,8 @@ from ..limits import NAME_CHARS
 from ..questions.centres import all_centres
 from ..solution import Solution
 from ..text import markup
-from .json_answer import answer_scales
-from .tables import show
+from .json_answer import answer_scales, where
+from .tables import print_where, show
 from .values import plain
 
 HOW = {"joint": "joint {}", "kennedy": "Kennedy via {}", "velocities": "from the velocities"}
@@ -27,7 +27,10 @@ def centres_data(sol: Solution) -> dict[str, Any]:
     for c in all_centres(sol):
         rows.append({"bodies": list(c.pair), **plain(c.value, sol.symbolic, sol.inst.scale, fields),
                      "how": c.how, "via": c.via})
-    return {"name": sol.model.name, "symbolic": sol.symbolic, "centres": rows}
+    out = {"name": sol.model.name, "symbolic": sol.symbolic, "centres": rows}
+    if sol.symbolic and sol.inst.names:
+        out["where"] = where(sol.inst)          # the named coordinates the formulas use
+    return out
 
 
 def print_centres(data: dict[str, Any], console: Console | None = None) -> None:
@@ -45,3 +48,4 @@ def print_centres(data: dict[str, Any], console: Console | None = None) -> None:
         how = HOW[row["how"]].format(" and ".join(row["via"]))
         table.add_row(markup(" – ".join(row["bodies"])), markup(where), markup(how))
     console.print(table)
+    print_where(data, console)

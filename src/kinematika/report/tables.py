@@ -56,4 +56,18 @@ def print_solution(data: dict, console: Console | None = None) -> None:
     for entry in data["answers"]:
         answers.add_row(markup(ask_text(entry["ask"])), markup(show(entry["value"])))
     console.print(answers)
+    print_where(data, console)
+
+
+def print_where(data: dict, console: Console) -> None:
+    """The named coordinates the formulas use (a symbolic answer's `where`), in order."""
+    if not data.get("where"):
+        return
+    table = Table(title="Where (named coordinates, each in the parameters and the names above it)",
+                  title_justify="left")
+    table.add_column("name")
+    table.add_column("formula")
+    for name, formula in data["where"].items():
+        table.add_row(markup(name), markup(formula))
+    console.print(table)
 

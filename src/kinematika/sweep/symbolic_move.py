@@ -72,7 +72,7 @@ def _check(model: Model, posed: Model, jid: str, amount: float, where: str) -> N
     from .move import moved
 
     inst = instantiate(posed)
-    values = {str(s): repr(float(v)) for s, v in inst.probe.items()}
+    values = {str(s): repr(float(v)) for s, v in inst.probe.items() if s not in inst.names}
     numeric = with_parameters(dataclasses.replace(model, move={}), values)
     try:
         reached = instantiate(moved(numeric, {jid: amount}), False).points
