@@ -33,6 +33,8 @@ def _model(model: Path, sets: Optional[list[str]], moves: Optional[list[str]], a
 
 OutputOpt = typer.Option(..., "-o", "--output", help="the file to write", show_default=False)
 WidthOpt = typer.Option(8.0, "--width", min=1.0, max=100.0, help="figure width in inches")
+LangOpt = typer.Option(None, "--lang", help="numbers as an explanation in en, es, ca or eu writes "
+                       "them (2,5 and −0,3 in es; default: 2.5 and -0.3)")
 
 
 @app.command()
@@ -58,6 +60,7 @@ def draw(
     moves: Optional[list[str]] = MoveOpt,
     assembly: Optional[int] = AssemblyOpt,
     width: float = WidthOpt,
+    lang: Optional[str] = LangOpt,
 ) -> None:
     """The mechanism at its instant, with vectors, instant centres and curvature (PNG, SVG, PDF)."""
     from ..draw.figure import FORMATS
@@ -71,7 +74,7 @@ def draw(
 
         options = DrawOptions(velocities=velocities, accelerations=accelerations, centres=centres,
                               curvature=curvature, labels=labels, points=_names(points), view=view,
-                              width=width)
+                              width=width, lang=lang)
         target = output_file(output, "-o")
         with writing(target, "-o"):
             draw_figure(_model(model, assignments, moves, assembly), target, options)
@@ -102,6 +105,7 @@ def animate(
     assembly: Optional[int] = AssemblyOpt,
     width: float = typer.Option(8.0, "--width", min=1.0, max=50.0,
                                 help="frame width in inches (100 pixels an inch)"),
+    lang: Optional[str] = LangOpt,
 ) -> None:
     """The motion over the sweep (GIF, or MP4 with ffmpeg), with traced paths and live vectors."""
     from ..draw.animation import FORMATS
@@ -112,7 +116,8 @@ def animate(
         from ..draw import DrawOptions
         from ..draw.animation import animate as render
 
-        options = DrawOptions(velocities=velocities, accelerations=accelerations, width=width)
+        options = DrawOptions(velocities=velocities, accelerations=accelerations, width=width,
+                              lang=lang)
         target = output_file(output, "-o")
         with writing(target, "-o"), options_named(sweep_options(joint, by, steps)):
             return render(_model(model, assignments, moves, assembly), target, joint=joint, by=by,

@@ -21,7 +21,7 @@ from .canvas import Canvas
 from .geometry import Box
 from .options import DrawOptions
 from .scene import Scene, VectorView
-from .names import plain
+from .names import plain, value_text
 from .style import INK, KIND_COLOURS, POINT_LABEL, TITLE_SIZE
 from .geometry import perpendicular, unit
 from .vectors import arrow_for, arrow_patch, side_shifts
@@ -93,7 +93,7 @@ class Film:
         view = motion.box(rows).grow(0.08 * scene.size)
         fig, ax = new_figure(view.grow(0.06 * scene.size), DrawOptions(width=options.width), 0)
         fig.set_dpi(DPI)
-        cv = Canvas(ax, scene, view, labels=False, placement=motion.transform)
+        cv = Canvas(ax, scene, view, labels=False, placement=motion.transform, lang=options.lang)
         _paint(cv)
         motion.attach(cv, trace)
         title = fig.text(0.5, 1 - 0.3 / fig.get_figheight(), "", ha="center", va="center",
@@ -191,6 +191,7 @@ class Motion:
         self.largest = {kind: self._largest(kind) for kind in KIND_COLOURS}
         self.traces: list[tuple[Any, np.ndarray]] = []
         self.arrows: list[tuple[VectorView, Any, Any]] = []
+        self.lang: Optional[str] = None       # the live labels' numbers (the canvas's language)
 
     def transform(self, body: str) -> Affine2D:
         return self.places[body]
@@ -235,6 +236,7 @@ class Motion:
     def attach(self, cv: Canvas, trace: Optional[list[str]]) -> None:
         """Add the traced paths and the live arrows (with their labels) to the axes."""
         ax = cv.ax
+        self.lang = cv.lang
         for ref in self._traced(trace):
             path = self.positions(ref)
             ax.plot(*path.T, lw=1.0, ls=(0, (3, 2)), color=POINT_LABEL, alpha=0.55, zorder=1)
@@ -311,7 +313,7 @@ class Motion:
             magnitude = float(np.linalg.norm(self.result.points[v.ref][v.kind][k]))
             text.xy = tuple(arrow.end)
             _beyond(text, d, 1.0 if v.kind == "velocity" else -1.0)
-            text.set_text(f"{v.label} = {magnitude:.3g}")
+            text.set_text(f"{v.label} = {value_text(magnitude, self.lang)}")
             text.set_visible(arrow.drawn)
 
 

@@ -21,6 +21,7 @@ class Canvas:
                                                # embedded in a page of any language has none
     placement: Optional[Callable[[str], Any]] = None   # body -> extra transform (animation)
     moving: dict = field(default_factory=dict)         # body -> artists that move with it
+    lang: Optional[str] = None                 # numbers as this language writes them (DrawOptions)
 
     @property
     def size(self) -> float:

@@ -25,7 +25,7 @@ from .geometry import Box
 from .joints import paint_joints
 from .marks import KENNEDY, NORMAL, mark_groups, paint_axes, paint_curvatures, paint_marks
 from ..text import shown
-from .names import bare, number, plain
+from .names import bare, coordinates, plain
 from .options import DrawOptions
 from .scene import Scene
 from .style import (ACCELERATION, CENTRE, CURVATURE, INK, LONGEST, SHORTEST, TITLE_SIZE, VELOCITY)
@@ -46,11 +46,11 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
     options = options or DrawOptions()
     drawn = arrows(scene.vectors, scene.size)
     content = framed_box(scene, drawn)
-    notes = [] if options.bare else _notes(scene, drawn)
+    notes = [] if options.bare else _notes(scene, drawn, options.lang)
     fig, ax = new_figure(content.grow((CLIP_MARGIN + LABEL_MARGIN) * scene.size), options,
                          len(notes), TRIAD if scene.dim == 3 else 0.0)
     view = _limits(ax).grow(-CLIP_MARGIN * scene.size)   # what the axes show, less a margin
-    cv = Canvas(ax, scene, view, labels=options.labels, words=not options.bare)
+    cv = Canvas(ax, scene, view, labels=options.labels, words=not options.bare, lang=options.lang)
     paint_bodies(cv)
     paint_joints(cv)
     paint_curvatures(cv)
@@ -157,13 +157,12 @@ def _title(fig: Figure, title: str) -> None:
              va="center", fontsize=TITLE_SIZE, weight="bold", color=INK)
 
 
-def _notes(scene: Scene, drawn: list[Arrow]) -> list[str]:
+def _notes(scene: Scene, drawn: list[Arrow], lang: Optional[str] = None) -> list[str]:
     notes = list(scene.notes)
     for group in mark_groups(scene.marks, scene.size):
         if group[0].direction is not None:
-            x, y = (number(c) for c in group[0].direction)
             notes.append(f"{bare(', '.join(m.label for m in group))} at infinity, "
-                         f"direction ({x}, {y})")
+                         f"direction {coordinates(group[0].direction, lang=lang)}")
     rest = [bare(m.label) for m in scene.marks if m.rest]
     if rest:
         notes.append(f"no relative motion: {', '.join(rest)}" if len(rest) > 1 else

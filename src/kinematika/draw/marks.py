@@ -17,7 +17,7 @@ from matplotlib.patches import FancyArrowPatch
 from .canvas import Canvas
 from .geometry import clip_line, clip_polyline, clip_segment, edge_point, unit
 from .scene import CurvatureView, MarkView
-from .names import number
+from .names import coordinates
 from .style import ACCELERATION, CENTRE, CURVATURE, INK
 
 MARKERS = {"icr": dict(marker="o", ms=9, mfc="white", mec=CENTRE, mew=2.2),
@@ -98,8 +98,8 @@ def _far_mark(cv: Canvas, group: list[MarkView]) -> None:
     cv.add(FancyArrowPatch(tuple(tail), tuple(q), arrowstyle="-|>", mutation_scale=14, lw=1.8,
                            color=COLOURS[mark.kind], zorder=11, gid=f"{mark.key}:far"))
     cv.board.avoid(tail, q, weight=3.0)
-    x, y = (number(c, cv.size) for c in mark.point)
-    where = f"at ({x}, {y})" if cv.words else f"= ({x}, {y})"
+    at = coordinates(mark.point, cv.size, cv.lang)
+    where = f"at {at}" if cv.words else f"= {at}"
     cv.label(tail, f"{group_label(group)} {where}", COLOURS[mark.kind], 2, _key(group), -d)
 
 
@@ -151,9 +151,8 @@ def _curvature(cv: Canvas, c: CurvatureView) -> None:
         cv.board.avoid(c.centre, weight=3.0, radius=4.5)
         cv.label(c.centre, c.label, CURVATURE, 2, f"curvature:{c.ref}")
     else:
-        x, y = (number(v, cv.size) for v in c.centre)
         cv.label(c.point + 0.5 * (seg[1] - seg[0]) if seg is not None else c.point,
-                 f"{c.label}, centre ({x}, {y})", CURVATURE, 2, f"curvature:{c.ref}")
+                 f"{c.label}, centre {coordinates(c.centre, cv.size, cv.lang)}", CURVATURE, 2, f"curvature:{c.ref}")
 
 
 def paint_axes(cv: Canvas) -> None:

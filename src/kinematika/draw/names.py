@@ -10,7 +10,9 @@ short and mathtext can set them, else their value.
 from __future__ import annotations
 
 import re
-from typing import Any, Optional
+from typing import Any, Optional, Sequence
+
+from ..numerals import DECIMAL, decimal_sign, separator, superscript_power, written
 
 _SIMPLE = re.compile(r"^[A-Za-z0-9_.' -]+$")
 FORMULA_CHARS = 24            # longer formulas (as plain text) are shown by their value
@@ -72,19 +74,22 @@ def pair_symbol(letter: str, model: Any, a: str, b: str) -> str:
     return subscript(letter, tag)
 
 
-def formula(expr: Any, value: float) -> str:
-    """A short formula in mathtext ($2 r w^{2}$), else the value (`≈ 3.08`)."""
+def formula(expr: Any, value: float, lang: Optional[str] = None) -> str:
+    """A short formula in mathtext ($2 r w^{2}$), else the value (`≈ 3.08`); numbers as
+    `lang` writes them (`value_text`)."""
     from sympy import latex
 
     from ..report.values import tidy
 
     tidied = tidy(expr)
     if len(str(tidied).replace("Abs", "")) > FORMULA_CHARS:       # |x| is as short as (x)
-        return f"≈ {value:.3g}"
+        return f"≈ {value_text(value, lang)}"
     body = latex(tidied).replace(r"\left|", "|").replace(r"\right|", "|")   # mathtext: plain bars
     text = "$" + body.replace(r"\frac", r"\dfrac") + "$"    # full-size fractions
     if not settable(text):
-        return f"≈ {value:.3g}"
+        return f"≈ {value_text(value, lang)}"
+    if lang is not None and decimal_sign(lang) == ",":
+        text = DECIMAL.sub("{,}", text)      # mathtext's comma without a space after it
     return text
 
 
@@ -105,9 +110,24 @@ def equation(lhs: str, rhs: str) -> str:
     return f"{lhs} {rhs}" if rhs.startswith("≈") else f"{lhs} = {rhs}"
 
 
-def number(x: float, scale: float = 1.0) -> str:
+def value_text(x: float, lang: Optional[str] = None) -> str:
+    """3 significant digits: as Python writes them (2.5, -0.3, 1e-05) in a figure of no
+    language (`draw`'s default), else as the explanation in `lang` writes its numbers, with
+    the same writer (2,5, −0,3, 1×10⁻⁵ in es)."""
+    if lang is None:
+        return f"{x:.3g}"
+    return written(x, 3, decimal_sign(lang), superscript_power)
+
+
+def number(x: float, scale: float = 1.0, lang: Optional[str] = None) -> str:
     """3 significant digits, with round-off below 1e-9 of `scale` shown as 0."""
-    return "0" if abs(x) <= 1e-9 * scale else f"{x:.3g}"
+    return "0" if abs(x) <= 1e-9 * scale else value_text(x, lang)
+
+
+def coordinates(xs: Sequence[float], scale: float = 1.0, lang: Optional[str] = None) -> str:
+    """`(0.32, 1.29)`; in a language with a decimal comma `(0,32; 1,29)`, as its text."""
+    sep = ", " if lang is None else separator(decimal_sign(lang))
+    return "(" + sep.join(number(x, scale, lang) for x in xs) + ")"
 
 
 def bare(label: str) -> str:

@@ -11,6 +11,10 @@ Auto = Optional[bool]     # None: decided by the model's questions
 class DrawOptions:
     """Choices of what to draw.
 
+    `lang`: None (the default) writes numbers as Python does (2.5, -0.3, 1e-05), as the
+    figure always has; a language (en, es, ca, eu) writes them as an explanation in it
+    does (2,5, −0,3, 1×10⁻⁵ in es), so that a figure beside its text reads the same.
+
     `velocities` / `accelerations`: None draws the vectors the model asks for (its
     `velocity` / `acceleration` questions); True draws them at every shown point; False
     none. Shown points are `points` when given, else the points the questions name, else
@@ -30,6 +34,14 @@ class DrawOptions:
     title: Optional[str] = None       # default: the model's name
     bare: bool = False                # the drawing alone: no title, legend or notes (a page
                                       # that embeds it says them, in its own language)
+    lang: Optional[str] = None        # how numbers are written: None as Python does, else
+                                      # as an explanation in that language (see above)
+
+    def __post_init__(self) -> None:
+        if self.lang is not None:
+            from ..explain.catalogue import known
+
+            known(self.lang)            # one of the explanation's languages, else a usage error
 
     def shows(self, flag: Auto, asked: bool) -> bool:
         """Whether a tri-state option draws: explicitly, or by default when asked."""

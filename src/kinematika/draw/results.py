@@ -14,7 +14,8 @@ from ..model.model import PointRef
 from ..questions import answer
 from .options import DrawOptions
 from .geometry import perpendicular
-from .names import bare, body_numbers, equation, formula, number, pair_symbol, plain, point_symbol, subscript
+from .names import (bare, body_numbers, equation, formula, number, pair_symbol, plain, point_symbol, subscript,
+                    value_text)
 from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView,
                     vector_label)
 
@@ -26,7 +27,7 @@ def add_results(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> N
     _vectors(scene, sol, options, num)
     _centres(scene, sol, options, num)
     if options.curvature is not False:
-        _curvatures(scene, sol, num)
+        _curvatures(scene, sol, num, options.lang)
     _other_marks(scene, sol, num)
 
 
@@ -49,7 +50,7 @@ def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
             magnitude = float(np.linalg.norm(vec))
             rel = rel if rel != sol.model.frame else None
             scene.vectors.append(VectorView(kind, str(ref), label, origin, num.proj(vec), magnitude,
-                                            magnitude_text(sol, value, magnitude), rel))
+                                            magnitude_text(sol, value, magnitude, options.lang), rel))
 
 
 def _negligible(sol: Any, kind: str, value: tuple) -> bool:
@@ -116,13 +117,14 @@ def _moving_points(sol: Any) -> list[tuple[PointRef, None]]:
     return [(ref, rel) for ref, rel, _ in _unique(moving, key=lambda item: item[2])]
 
 
-def magnitude_text(sol: Any, value: tuple, magnitude: float) -> str:
-    """The magnitude as shown: 3 significant digits, or a short exact formula (symbolic)."""
+def magnitude_text(sol: Any, value: tuple, magnitude: float, lang: Optional[str] = None) -> str:
+    """The magnitude as shown: 3 significant digits, or a short exact formula (symbolic);
+    numbers as `lang` writes them (`names.value_text`)."""
     if magnitude == 0:
         return "0"
     if not sol.symbolic:
-        return f"{magnitude:.3g}"
-    return formula(sol.norm(value), magnitude)
+        return value_text(magnitude, lang)
+    return formula(sol.norm(value), magnitude, lang)
 
 
 # instant centres -------------------------------------------------------------------------
@@ -249,7 +251,7 @@ def _kennedy_line(num: Numbers, c1: dict, c2: dict, target: dict):
 
 
 # curvature -------------------------------------------------------------------------------
-def _curvatures(scene: Scene, sol: Any, num: Numbers) -> None:
+def _curvatures(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None) -> None:
     for q in sol.model.questions:
         if q.kind != "curvature":
             continue
@@ -264,7 +266,7 @@ def _curvatures(scene: Scene, sol: Any, num: Numbers) -> None:
         p, c = num.vector(sol.position(q.target)), num.vector(value["center"])
         radius = num.scalar(value["radius"])
         v = num.vector(sol.velocity(q.target, q.relative_to))
-        text = formula(value["radius"], radius) if sol.symbolic else f"{radius:.3g}"
+        text = formula(value["radius"], radius, lang) if sol.symbolic else value_text(radius, lang)
         scene.curvatures.append(CurvatureView(
             str(q.target) + (f"/{q.relative_to}" if q.relative_to else ""),
             equation(name, text), num.proj(p), num.proj(c), radius,

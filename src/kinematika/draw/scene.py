@@ -19,7 +19,7 @@ from ..errors import KinematikaError
 from ..model.model import PointRef
 from .options import DrawOptions
 from .projection import Projection, projection
-from .names import body_numbers, numbered, point_symbol
+from .names import body_numbers, numbered, point_symbol, value_text
 from .skeleton import add_skeletons
 from .style import body_colour
 
@@ -176,7 +176,7 @@ def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = No
     add_skeletons(scene, inst, num, geos)
     _grow_box(scene)
     if num.values:
-        scene.notes.append(_values_note(num.values, model.draw_at))
+        scene.notes.append(_values_note(num.values, model.draw_at, options.lang))
     if sol is not None:
         add_results(scene, sol, options, num)
     _number_bodies(scene, options.bare)
@@ -216,9 +216,9 @@ def drawing_values(inst: Instant) -> dict:
     return values
 
 
-def _values_note(values: dict, given: dict) -> str:
+def _values_note(values: dict, given: dict, lang: Optional[str] = None) -> str:
     """Which numbers the figure shows: the model's draw_at, or generic ones."""
-    text = ", ".join(f"{s} = {v:.3g}" for s, v in sorted(values.items(), key=str))
+    text = ", ".join(f"{s} = {value_text(v, lang)}" for s, v in sorted(values.items(), key=str))
     if all(str(s) in given for s in values):
         return f"symbolic model drawn at {text} (its draw_at values)"
     if any(str(s) in given for s in values):

@@ -86,7 +86,12 @@ class Catalogue:
 @lru_cache(maxsize=None)
 def catalogue(lang: str) -> Catalogue:
     """The catalogue of `lang` (one of LANGS), read once."""
+    return Catalogue(known(lang), (LOCALES / f"{lang}.ftl").read_text(encoding="utf-8"))
+
+
+def known(lang: str) -> str:
+    """`lang` when it is one of LANGS, else the one-line error naming `--lang`."""
     if lang not in LANGS:
         raise KinematikaError("schema", f"unknown language {lang!r} (languages: {', '.join(LANGS)})",
                               "--lang")
-    return Catalogue(lang, (LOCALES / f"{lang}.ftl").read_text(encoding="utf-8"))
+    return lang

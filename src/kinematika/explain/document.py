@@ -186,15 +186,16 @@ class Drawing:
     options: dict = field(default_factory=dict)
     fallback: Optional[Figure] = None
     values: dict = field(default_factory=dict)    # symbol -> the number it is drawn at
-    _svg: Optional[str] = field(default=None, repr=False)
+    _svg: dict = field(default_factory=dict, repr=False)     # lang -> SVG text
 
-    def svg(self) -> str:
-        """The drawing as SVG text, drawn once for every language and format."""
-        if self._svg is None:
+    def svg(self, lang: str) -> str:
+        """The drawing as SVG text with its numbers as `lang` writes them (2,5 in es),
+        drawn once for each language, whatever the format."""
+        if lang not in self._svg:
             from ..draw import svg
 
-            self._svg = svg(self.solution, bare=True, **self.options)
-        return self._svg
+            self._svg[lang] = svg(self.solution, bare=True, lang=lang, **self.options)
+        return self._svg[lang]
 
 
 @dataclass

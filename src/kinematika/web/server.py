@@ -255,7 +255,7 @@ def _drawn(req: Request) -> tuple[str, Any]:
     from ..draw import DrawOptions
 
     keys = ("velocities", "accelerations", "centres", "curvature", "labels", "points", "view",
-            "width")
+            "width", "lang")
     options = DrawOptions(**{k: req.get(k) for k in keys})
     model = req.how.model(req.model)
     if req.get("as") == "data":

@@ -6,8 +6,8 @@ import re
 from typing import Any
 
 from babel.lists import format_list
-from babel.numbers import get_decimal_symbol
 
+from ...numerals import DECIMAL, decimal_sign, separator, written
 from ...text import shown
 
 from ..catalogue import Catalogue
@@ -38,7 +38,6 @@ def plain(x: Any) -> str:
 
 UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "rate2": "rad/s²"}
 BODY_SUBS = ("ω", "α", "I", "ω×ω")          # symbols whose subscript is made of bodies
-DECIMAL = re.compile(r"(?<=\d)\.(?=\d)")
 
 
 def visible(text: str) -> str:
@@ -61,8 +60,8 @@ class Renderer:
         self.doc = doc
         self.cat = cat
         self.drawings = drawings
-        self.decimal = get_decimal_symbol(cat.lang)
-        self.comma = "; " if self.decimal == "," else ", "      # between a vector's components
+        self.decimal = decimal_sign(cat.lang)
+        self.comma = separator(self.decimal)      # between a vector's components
 
     # the walk ---------------------------------------------------------------------------------
     def render(self) -> str:
@@ -218,14 +217,9 @@ class Renderer:
         return self.formula(x)
 
     def number(self, x: float) -> str:
-        """Four significant digits, with the language's decimal sign (Babel's)."""
-        if x == 0:
-            return "0"
-        text = f"{x:.4g}".replace(".", self.decimal)
-        if "e" in text:
-            mantissa, exponent = text.split("e")
-            return self.power(mantissa.replace("-", "−"), int(exponent))
-        return text.replace("-", "−")
+        """Four significant digits, with the language's decimal sign (Babel's); the figures
+        write theirs with the same writer (`numerals.written`), to three digits."""
+        return written(x, 4, self.decimal, self.power)
 
     def bar_number(self, x: float) -> str:
         """A scale bar's round length, with the language's decimal sign."""

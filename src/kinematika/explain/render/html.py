@@ -96,5 +96,5 @@ class HtmlRenderer(Renderer):
 
     def drawing(self, d: Drawing) -> str:
         self.drawn = getattr(self, "drawn", 0) + 1
-        return (f'<figure class="drawing">{embedded(d.svg(), f"d{self.drawn}")}'
+        return (f'<figure class="drawing">{embedded(d.svg(self.cat.lang), f"d{self.drawn}")}'
                 f"<figcaption>{self.drawing_caption(d)}</figcaption></figure>")

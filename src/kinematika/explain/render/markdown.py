@@ -86,5 +86,5 @@ class MarkdownRenderer(Renderer):
 
     def drawing(self, d: Drawing) -> str:
         caption = self.drawing_caption(d)
-        data = base64.b64encode(d.svg().encode("utf-8")).decode("ascii")
+        data = base64.b64encode(d.svg(self.cat.lang).encode("utf-8")).decode("ascii")
         return f"![{caption}](data:image/svg+xml;base64,{data})\n\n*{caption}*\n"
