@@ -140,6 +140,25 @@ def test_draw_gives_the_scene_as_data_and_the_figure_as_svg_or_png(client):
     assert png.headers["content-type"] == "image/png" and png.content[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+def test_draw_and_explain_write_the_figures_numbers_in_the_asked_language(client):
+    """`lang` means what `draw --lang` means: the four-bar's |v_B| = 9.252 (by hand: the
+    loop closure in tests/draw/test_languages.py) is 9,25 in a Basque figure, 9.25 without
+    a language; the Basque explanation embeds the figures drawn in Basque."""
+    from kinematika import solve
+    from kinematika.explain import build
+    from kinematika.explain.render.svg import embedded
+    from tests.draw.test_languages import drawings, texts
+
+    text = (EXAMPLES / "four_bar.yaml").read_text()
+    eu = post(client, "draw", model=text, lang="eu", **{"as": "svg"}).text
+    plain = post(client, "draw", model=text, **{"as": "svg"}).text
+    assert r"$v_{\mathrm{B}}$ = 9,25" in texts(eu) and r"$v_{\mathrm{B}}$ = 9.25" in texts(plain)
+    assert "9,25" in json.dumps(post(client, "draw", model=text, lang="es").json()["vectors"], ensure_ascii=False)
+    page = post(client, "explain", model=text, lang="eu").text
+    first = drawings(build(solve(EXAMPLES / "four_bar.yaml")).sections)[0]
+    assert embedded(first.svg("eu"), "d1") in page and embedded(first.svg("en"), "d1") not in page
+
+
 def test_a_3d_scene_gives_what_it_draws_in_model_coordinates(client):
     """The spherical four-bar as stated in its file: the drawn points are the file's points,
     the scene's projection takes them to the page, and its links are arcs on the unit

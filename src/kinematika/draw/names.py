@@ -124,10 +124,15 @@ def number(x: float, scale: float = 1.0, lang: Optional[str] = None) -> str:
     return "0" if abs(x) <= 1e-9 * scale else value_text(x, lang)
 
 
+def listed(items: Sequence[str], lang: Optional[str] = None) -> str:
+    """Numbers one after another: `0.32, 1.29`; `0,32; 1,29` where the decimal sign is a
+    comma, as the text of an explanation in `lang` parts them."""
+    return (", " if lang is None else separator(decimal_sign(lang))).join(items)
+
+
 def coordinates(xs: Sequence[float], scale: float = 1.0, lang: Optional[str] = None) -> str:
     """`(0.32, 1.29)`; in a language with a decimal comma `(0,32; 1,29)`, as its text."""
-    sep = ", " if lang is None else separator(decimal_sign(lang))
-    return "(" + sep.join(number(x, scale, lang) for x in xs) + ")"
+    return "(" + listed([number(x, scale, lang) for x in xs], lang) + ")"
 
 
 def bare(label: str) -> str:

@@ -19,7 +19,7 @@ from ..errors import KinematikaError
 from ..model.model import PointRef
 from .options import DrawOptions
 from .projection import Projection, projection
-from .names import body_numbers, numbered, point_symbol, value_text
+from .names import body_numbers, listed, numbered, point_symbol, value_text
 from .skeleton import add_skeletons
 from .style import body_colour
 
@@ -218,7 +218,7 @@ def drawing_values(inst: Instant) -> dict:
 
 def _values_note(values: dict, given: dict, lang: Optional[str] = None) -> str:
     """Which numbers the figure shows: the model's draw_at, or generic ones."""
-    text = ", ".join(f"{s} = {value_text(v, lang)}" for s, v in sorted(values.items(), key=str))
+    text = listed([f"{s} = {value_text(v, lang)}" for s, v in sorted(values.items(), key=str)], lang)
     if all(str(s) in given for s in values):
         return f"symbolic model drawn at {text} (its draw_at values)"
     if any(str(s) in given for s in values):

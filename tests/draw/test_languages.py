@@ -1,0 +1,138 @@
+"""Figures write numbers as the explanation beside them does: a decimal comma in Spanish,
+Catalan and Basque, with the text's minus sign and powers of ten (`DrawOptions.lang`); a
+figure asked in no language writes them as it always has (Python's 2.5, -0.3, 1e-05).
+
+The expected values are derived here by hand (the four-bar's loop closure) or read from
+the contract's JSON (`centres --json`), never from the figure code."""
+from __future__ import annotations
+
+import json
+import re
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from kinematika import solve
+from kinematika.cli import app as cli
+from kinematika.draw import svg
+from kinematika.draw.names import value_text
+from kinematika.errors import KinematikaError
+from kinematika.explain import build, render
+from kinematika.explain.catalogue import catalogue
+from kinematika.explain.document import Drawing, Section
+from kinematika.explain.render.html import HtmlRenderer
+from kinematika.explain.render.svg import embedded
+from tests.conftest import EXAMPLES
+
+FOUR_BAR = EXAMPLES / "four_bar.yaml"
+
+
+def texts(svg_text: str) -> list[str]:
+    """The texts a matplotlib SVG draws (it writes each as a comment before its glyphs)."""
+    return re.findall(r"<!-- (.*?) -->", svg_text)
+
+
+def four_bar_by_hand() -> dict[str, float]:
+    """The example's four-bar (O2 (0, 0), O4 (4, 0), crank 1 at 90° turning at 10 rad/s,
+    coupler 4, rocker 3, B left of A→O4): |v_B|, |v_B relative to the crank| and the
+    coupler's centre I13 on the line O2A (x = 0), from the loop closure."""
+    o4, a = np.array([4.0, 0.0]), np.array([0.0, 1.0])
+    d = np.linalg.norm(o4 - a)
+    along = (4.0**2 - 3.0**2 + d**2) / (2 * d)              # from A towards O4
+    u = (o4 - a) / d
+    left = np.array([-u[1], u[0]])
+    b = a + along * u + np.sqrt(4.0**2 - along**2) * left
+    perp = lambda r: np.array([-r[1], r[0]])                # noqa: E731  k × r
+    v_a = 10 * perp(a)
+    # v_A + ω3 k×(B−A) = ω4 k×(B−O4)
+    w3, w4 = np.linalg.solve(np.column_stack([perp(b - a), -perp(b - o4)]), -v_a)
+    v_b = w4 * perp(b - o4)
+    i13_y = b[1] + (0 - b[0]) * (b[1] - o4[1]) / (b[0] - o4[0])   # line O4B at x = 0
+    return {"v_B": float(np.linalg.norm(v_b)), "v_B/2": float(np.linalg.norm(v_b - 10 * perp(b))),
+            "I13": float(i13_y)}
+
+
+def test_the_four_bar_by_hand_is_what_the_figures_round():
+    """The derivation gives 9.252, 41.80 and 23.14: three digits 9.25, 41.8, 23.1."""
+    hand = four_bar_by_hand()
+    assert round(hand["v_B"], 2) == 9.25 and round(hand["v_B/2"], 1) == 41.8
+    assert round(hand["I13"], 1) == 23.1
+
+
+@pytest.mark.parametrize("lang", ["es", "ca", "eu"])
+def test_a_figure_in_a_comma_language_writes_decimal_commas(lang):
+    sol = solve(FOUR_BAR)
+    shown = texts(svg(sol, centres=True, lang=lang))
+    assert r"$v_{\mathrm{B}}$ = 9,25" in shown and r"$v_{\mathrm{B}/2}$ = 41,8" in shown
+    assert r"$I_{\mathrm{13}}$ at (0; 23,1)" in shown        # components parted as in the text
+    assert not [t for t in shown if re.search(r"\d\.\d", t)]
+
+
+@pytest.mark.parametrize("lang", [None, "en"])
+def test_a_figure_in_english_or_no_language_keeps_the_point(lang):
+    shown = texts(svg(solve(FOUR_BAR), centres=True, lang=lang))
+    assert r"$v_{\mathrm{B}}$ = 9.25" in shown and r"$I_{\mathrm{13}}$ at (0, 23.1)" in shown
+
+
+def test_minus_signs_and_powers_of_ten_as_the_text_writes_them():
+    """The Jansen leg's I67 (rocker 6, knee 7) lies far off, at (−1197.5, −177.3) by the
+    contract's JSON: three digits are −1.20×10³ and −177. The figure in no language writes
+    Python's `-1.2e+03`; in Spanish the text's minus sign and power of ten, `−1,2×10³`."""
+    out = CliRunner().invoke(cli, ["centres", str(EXAMPLES / "jansen_leg.yaml"), "--json"])
+    x, y = next(c["point"] for c in json.loads(out.stdout)["centres"] if c["bodies"] == ["rocker", "knee"])
+    assert round(x, -1) == -1200 and round(y) == -177
+    sol = solve(EXAMPLES / "jansen_leg.yaml")
+    plain, es = (texts(svg(sol, centres=True, bare=True, lang=lang)) for lang in (None, "es"))
+    assert r"$I_{\mathrm{67}}$ = (-1.2e+03, -177)" in plain
+    assert r"$I_{\mathrm{67}}$ = (−1,2×10³; −177)" in es
+
+
+def test_the_figure_writer_is_the_text_writer():
+    """Where three digits are all there is, a figure's number and the HTML text's are the
+    same characters (the text's ×10<sup>−5</sup> as ×10⁻⁵)."""
+    doc = build(solve(FOUR_BAR))
+    for lang in ("en", "es", "ca", "eu"):
+        text = HtmlRenderer(doc, catalogue(lang))
+        for x in (2.5, -0.3, 1.5e-05, -2.25e-07, 123000.0, 0.0):
+            html = text.number(x)
+            html = re.sub(r"<sup>(.*?)</sup>", lambda m: m.group(1).translate(str.maketrans("−0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")),
+                          html)
+            assert value_text(x, lang) == html
+    assert value_text(-1.5e-05, "es") == "−1,5×10⁻⁵" and value_text(-1.5e-05) == "-1.5e-05"
+
+
+def drawings(blocks) -> list[Drawing]:
+    out = []
+    for b in blocks:
+        if isinstance(b, Section):
+            out += drawings(b.blocks)
+        elif isinstance(b, Drawing):
+            out.append(b)
+    return out
+
+
+def test_an_explanation_embeds_its_language_figures():
+    """The Spanish page holds the figures drawn in Spanish (9,25 beside the text's 9,252),
+    not the English ones; each language's figure is drawn once."""
+    doc = build(solve(FOUR_BAR))
+    page = render(doc, "es", "html")
+    first = drawings(doc.sections)[0]
+    assert r"$v_{\mathrm{B}}$ = 9,25" in texts(first.svg("es"))
+    assert r"$v_{\mathrm{B}}$ = 9.25" in texts(first.svg("en"))
+    assert embedded(first.svg("es"), "d1") in page and embedded(first.svg("en"), "d1") not in page
+    assert first.svg("es") is first.svg("es")
+
+
+def test_an_unknown_language_is_a_usage_error(tmp_path):
+    with pytest.raises(KinematikaError, match="unknown language 'fr'"):
+        svg(solve(FOUR_BAR), lang="fr")
+    out = CliRunner().invoke(cli, ["draw", str(FOUR_BAR), "-o", str(tmp_path / "f.svg"), "--lang", "fr"])
+    assert out.exit_code == 2 and "error (usage): --lang: unknown language 'fr'" in out.stderr
+
+
+def test_draw_lang_on_the_command_line(tmp_path):
+    path = tmp_path / "f.svg"
+    out = CliRunner().invoke(cli, ["draw", str(FOUR_BAR), "-o", str(path), "--lang", "eu"])
+    assert out.exit_code == 0
+    assert r"$v_{\mathrm{B}}$ = 9,25" in texts(path.read_text(encoding="utf-8"))
