@@ -113,3 +113,31 @@ def test_a_dense_sweep_gives_the_general_paths_numbers_at_every_tenth_row(name, 
     for point, values in general.points.items():
         for q, v in values.items():
             np.testing.assert_allclose(fast.points[point][q][::10], v, atol=1e-9, err_msg=f"{point}.{q}")
+
+
+def test_near_a_limit_position_coarse_rows_stay_on_their_branch():
+    """The RSSR's crank cannot pass about −89.9°: swept to −89.5° the two assemblies are
+    close, and coarse rows solved five at a time by Newton's method once landed on the
+    other one (the rocker turned 0.03 rad away). Each coarse row equals the general path's."""
+    from scipy.spatial.transform import Rotation
+
+    name = EXAMPLES / "rssr_spatial_four_bar.yaml"
+    saved = compiled.compiled_sweep
+    compiled.compiled_sweep = lambda *args: None
+    try:
+        general = Sweeper(name).run(-89.5, 720)
+    finally:
+        compiled.compiled_sweep = saved
+    sweeper = Sweeper(name)
+    plan = sweeper.plan(-89.5, 720)
+    kernel = compiled.CompiledNewton(sweeper, plan)
+    dq = np.asarray(plan.increments)
+    rots, ts = np.empty((len(dq), len(kernel.bodies), 3, 3)), np.empty((len(dq), len(kernel.bodies), 3))
+    rots[0], ts[0] = np.eye(3), 0.0
+    stride = int(compiled.COARSE_STEP / abs(dq[1] - dq[0]))
+    with np.errstate(all="ignore"):
+        solved = kernel._coarse(rots, ts, dq, np.unique(np.r_[np.arange(0, len(dq), stride), len(dq) - 1]))
+    assert solved is not None and len(solved) > compiled.AHEAD
+    rocker = kernel.bodies.index("rocker")
+    expected = Rotation.from_rotvec(np.radians(general.bodies["rocker"]["angle"][solved])).as_matrix()
+    np.testing.assert_allclose(rots[solved, rocker], expected, atol=1e-9)

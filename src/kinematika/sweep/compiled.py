@@ -268,22 +268,21 @@ class CompiledNewton:
         b = len(self.bodies)
         rots, ts = np.empty((n_rows, b, 3, 3)), np.empty((n_rows, b, 3))
         rots[0], ts[0] = np.eye(3), 0.0
-        if not self._coarse(rots, ts, dq, coarse):
+        solved = self._coarse(rots, ts, dq, coarse)
+        if solved is None:
             return None
         twists = Twists(n_rows, self.n)
-        solved = coarse
         while stride > 1:
-            stride = max(1, stride // DENSER)
-            level = np.setdiff1d(np.arange(0, n_rows, stride), solved)
-            if not len(level):
-                continue
-            right = np.clip(np.searchsorted(solved, level), 1, len(solved) - 1)
-            left = solved[right - 1]
-            parent = np.where(level - left <= solved[right] - level, left, solved[right])
-            for part in range(0, len(level), CHUNK):      # stacked matrices a chunk at a time
-                rows, parents = level[part:part + CHUNK], parent[part:part + CHUNK]
-                if not self._level(rots, ts, dq, rows, parents, twists if stride == 1 else None):
-                    return None
+            # where a level fails, one twice as dense first (chord iterations, as the general path)
+            for denser, newton in ((DENSER, False), (2, False)):
+                level = np.setdiff1d(np.arange(0, n_rows, max(1, stride // denser)), solved)
+                last = twists if stride // denser <= 1 else None
+                if self._levels(rots, ts, dq, solved, level, last, newton):
+                    break
+                twists.known[level] = False
+            else:
+                return None
+            stride = max(1, stride // denser)
             solved = np.union1d(solved, level)
         if len(self.keep) < self.m_all and not self._consistent(rots, ts, dq):
             return None
@@ -296,30 +295,72 @@ class CompiledNewton:
             twists.x_v[rows], twists.x_a[rows] = self._twists(rots[rows], ts[rows], regular)
         return {"rot": rots, "t": ts, "x_v": twists.x_v, "x_a": twists.x_a}
 
-    def _coarse(self, rots, ts, dq, coarse) -> bool:
+    def _coarse(self, rots, ts, dq, coarse) -> Optional[np.ndarray]:
         """The coarse rows by Newton's method from the last one solved: the next AHEAD rows
-        at once, each from its tangent there (one stacked Newton); where any of them does
-        not converge or jumps, only the next one."""
-        i = 0
-        while i < len(coarse) - 1:
-            k0 = coarse[[i]]
-            inverse = self._inverse(rots[k0], ts[k0])
-            if inverse is None:
-                return False
-            slope, bend = self._predictor(rots[k0], ts[k0], inverse)
-            for targets in (coarse[i + 1:i + 1 + AHEAD], coarse[i + 1:i + 2]):
+        at once, each from its tangent there (one stacked Newton), kept if `_in_sequence`;
+        where any of them fails, only the next one; where that fails too, a row halfway to
+        it first (down to the sweep's own step, as the general path goes). The rows solved."""
+        solved, pending = [int(coarse[0])], [int(k) for k in coarse[1:]]
+        start = None                       # A⁻¹ and the tangents at solved[-1], when known
+        while pending:
+            k0 = np.array(solved[-1:])
+            if start is None:
+                inverse = self._inverse(rots[k0], ts[k0])
+                if inverse is None:
+                    return None
+                start = (inverse, *self._predictor(rots[k0], ts[k0], inverse))
+            inverse, slope, bend = start
+            for targets in (np.array(pending[:AHEAD]), np.array(pending[:1])):
                 from_ = np.repeat(k0, len(targets))
                 done = self._chord(rots[from_], ts[from_], inverse[from_ * 0], (slope[from_ * 0], bend[from_ * 0]),
                                    dq[from_], dq[targets], newton=True)
+                if done is not None and len(targets) > 1:
+                    checked = self._in_sequence(done, dq[targets])
+                    done = None if checked is None else done
                 if done is not None:
                     break
             if done is None:
-                return False
+                if pending[0] - solved[-1] < 2:
+                    return None
+                pending.insert(0, (solved[-1] + pending[0]) // 2)
+                continue
+            start = checked if len(targets) > 1 else None
             rots[targets], ts[targets] = done
-            i += len(targets)
+            solved += targets.tolist()
+            del pending[:len(targets)]
+        return np.array(solved)
+
+    def _in_sequence(self, done: tuple, dq_rows: np.ndarray) -> Optional[tuple]:
+        """Rows solved at once from one start are the rows that one after the other would
+        give: each reached again from the one before (its tangent, chord iterations with
+        its matrix, the jump guard) at the same poses. Far from the start, Newton's method
+        can land on the other branch near a limit position; this finds it. A⁻¹ and the
+        tangents at the last row (the next start), or None."""
+        rot, t = done
+        inverse = self._inverse(rot, t)
+        if inverse is None:
+            return None
+        slope, bend = self._predictor(rot, t, inverse)
+        again = self._chord(rot[:-1].copy(), t[:-1].copy(), inverse[:-1], (slope[:-1], bend[:-1]),
+                            dq_rows[:-1], dq_rows[1:])
+        if again is None:
+            return None
+        gap = max(np.abs(again[0] - rot[1:]).max(), np.abs(again[1] - t[1:]).max() / self.scale)
+        return (inverse[-1:], slope[-1:], bend[-1:]) if gap < 1e-8 else None
+
+    def _levels(self, rots, ts, dq, solved, level, twists: Optional[Twists], newton: bool) -> bool:
+        """The rows of `level`, each from its nearest solved row, a chunk at a time."""
+        if not len(level):
+            return True
+        right = np.clip(np.searchsorted(solved, level), 1, len(solved) - 1)
+        left = solved[right - 1]
+        parent = np.where(level - left <= solved[right] - level, left, solved[right])
+        for part in range(0, len(level), CHUNK):      # stacked matrices a chunk at a time
+            if not self._level(rots, ts, dq, level[part:part + CHUNK], parent[part:part + CHUNK], twists, newton):
+                return False
         return True
 
-    def _level(self, rots, ts, dq, rows, parents, twists: Optional[Twists]) -> bool:
+    def _level(self, rots, ts, dq, rows, parents, twists: Optional[Twists], newton: bool = False) -> bool:
         """Rows of one level from their parents (solved rows): the parents' matrices inverted
         and checked, the rows predicted and corrected with them; with `twists` (the last
         level), the rows' twists too, from the parents' inverses (`_near_twists`)."""
@@ -330,7 +371,7 @@ class CompiledNewton:
         inverse = regular.inverse()
         slope, bend = self._predictor(rots[heads], ts[heads], inverse)
         done = self._chord(rots[parents], ts[parents], inverse[which], (slope[which], bend[which]),
-                           dq[parents], dq[rows])
+                           dq[parents], dq[rows], newton)
         if done is None:
             return False
         rots[rows], ts[rows] = done
