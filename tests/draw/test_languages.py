@@ -136,3 +136,16 @@ def test_draw_lang_on_the_command_line(tmp_path):
     out = CliRunner().invoke(cli, ["draw", str(FOUR_BAR), "-o", str(path), "--lang", "eu"])
     assert out.exit_code == 0
     assert r"$v_{\mathrm{B}}$ = 9,25" in texts(path.read_text(encoding="utf-8"))
+
+
+def test_a_formula_in_a_figure_takes_the_decimal_comma():
+    """A symbolic label keeps its formula; a decimal inside it (an exponent sympy keeps as a
+    float) is written as the language writes it, in mathtext's unspaced comma."""
+    import sympy
+
+    from kinematika.draw.names import formula, settable
+
+    r = sympy.Symbol("r")
+    assert formula(r ** sympy.Float(0.3), 1.0) == "$r^{0.3}$"
+    assert formula(r ** sympy.Float(0.3), 1.0, "eu") == "$r^{0{,}3}$"
+    assert settable("$r^{0{,}3}$")
