@@ -332,21 +332,24 @@ class CompiledNewton:
 
     def _in_sequence(self, done: tuple, dq_rows: np.ndarray) -> Optional[tuple]:
         """Rows solved at once from one start are the rows that one after the other would
-        give: each reached again from the one before (its tangent, chord iterations with
-        its matrix, the jump guard) at the same poses. Far from the start, Newton's method
-        can land on the other branch near a limit position; this finds it. A⁻¹ and the
-        tangents at the last row (the next start), or None."""
+        give: each row's joints and turns (an idle link's spin aside: it has no position
+        form) are where the tangent at the row before puts them, within the general path's
+        jump guard (0.3 of the step the tangent takes). Far from the
+        start, Newton's method can land on the other branch near a limit position; this
+        finds it. A⁻¹ and the tangents at the last row (the next start), or None."""
         rot, t = done
         inverse = self._inverse(rot, t)
         if inverse is None:
             return None
         slope, bend = self._predictor(rot, t, inverse)
-        again = self._chord(rot[:-1].copy(), t[:-1].copy(), inverse[:-1], (slope[:-1], bend[:-1]),
-                            dq_rows[:-1], dq_rows[1:])
-        if again is None:
-            return None
-        gap = max(np.abs(again[0] - rot[1:]).max(), np.abs(again[1] - t[1:]).max() / self.scale)
-        return (inverse[-1:], slope[-1:], bend[-1:]) if gap < 1e-8 else None
+        h = (dq_rows[1:] - dq_rows[:-1])[:, None]
+        guess = stepped(rot[:-1], t[:-1], slope[:-1] * h + 0.5 * bend[:-1] * h * h)
+        joints = lambda r, tt: self.vectors(r, tt)[:, self.vectors.slices["pb"]]   # noqa: E731
+        turning = np.setdiff1d(np.arange(len(self.bodies)), self.idle_body)         # not idle spins
+        miss = np.maximum(np.abs(joints(rot[1:], t[1:]) - joints(*guess)).max(axis=(1, 2)) / self.scale,
+                          np.abs(rot[1:, turning] - guess[0][:, turning]).max(axis=(1, 2, 3)))
+        ok = (miss <= JUMP * self._size(slope[:-1] * h)).all()
+        return (inverse[-1:], slope[-1:], bend[-1:]) if ok else None
 
     def _levels(self, rots, ts, dq, solved, level, twists: Optional[Twists], newton: bool) -> bool:
         """The rows of `level`, each from its nearest solved row, a chunk at a time."""
