@@ -149,3 +149,14 @@ def test_a_formula_in_a_figure_takes_the_decimal_comma():
     assert formula(r ** sympy.Float(0.3), 1.0) == "$r^{0.3}$"
     assert formula(r ** sympy.Float(0.3), 1.0, "eu") == "$r^{0{,}3}$"
     assert settable("$r^{0{,}3}$")
+
+
+def test_an_animation_labels_its_live_vectors_in_the_language():
+    """Row 0 of the sweep is the drawn position: |v_B| = 9.252 by hand, 9,25 in Catalan."""
+    from kinematika.draw import DrawOptions
+    from kinematika.draw.animation import Film
+
+    film = Film.of(FOUR_BAR, by=90, steps=1, frames=2, options=DrawOptions(lang="ca"))
+    film.show(0)
+    labels = {v.kind: text.get_text() for v, _, text in film.motion.arrows}
+    assert labels["velocity"] == r"$v_{\mathrm{B}}$ = 9,25"
