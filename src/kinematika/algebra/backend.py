@@ -155,10 +155,12 @@ class Symbolic:
         """The exact solution must equal the numeric one at the probe values, within the
         numeric one's round-off: relative to the largest value of the solution, or to
         `scale` (the size the known terms give the unknowns) when the solution is all 0."""
+        from .evaluate import complex_value
+
         values = []
         for e in exact:
             try:
-                values.append(complex(self.sp.sympify(e).xreplace(probe)))
+                values.append(complex_value(self.sp.sympify(e), probe))
             except (TypeError, OverflowError):
                 values.append(complex(math.nan))
         top = max([abs(float(x)) for x in numeric] + [scale])

@@ -145,9 +145,17 @@ class Reveal:
     factors' roots come out written alike, so that equal bases combine.
     """
 
-    def __init__(self, values: dict, derived: set | None = None) -> None:
+    def __init__(self, values: dict, derived: set | None = None, public: dict | None = None,
+                 inst: Instant | None = None, probe: dict | None = None) -> None:
         self.values = values
         self.derived = {s: values[s] for s in derived or ()}   # stand-ins for solved values
+        self.public = public or {}     # a solved velocity's stand-in -> its name (omega_link)
+        self.inst = inst               # where a name used is recorded (`Instant.names`) ...
+        self.probe = probe or {}       # ... with its value, the stand-in's here
+        # velocities are named only where coordinates are (formulas past reading anyway) or
+        # in exact numbers (no symbols): elsewhere answers stay formulas in the parameters
+        if inst is None or not (inst.names or not inst.probe):
+            self.public = {}
         self.cache: dict[Any, Any] = {}
 
     def __call__(self, e: Any) -> Any:
@@ -170,18 +178,52 @@ class Reveal:
         if not (e.free_symbols & self.values.keys()):
             return canonical(e)
         # solved velocities stay stand-ins here: each is revealed on its own, so that an
-        # acceleration reads as the textbook's sum of terms in ω, not as one expanded formula
+        # acceleration reads as the textbook's sum of terms in ω, not as one expanded formula;
+        # when that would still be long, the velocities stay named (omega_link, under `where`)
         e = _in_stand_ins(e)
+        named = (bool(self.public) and bool(e.free_symbols & self.public.keys())
+                 and _written_ops(e, self, {}) > LONG_OPS)
         out = []
         for f in sympy.Mul.make_args(e):
             base, power = f.as_base_exp()
             deps = base.free_symbols & self.values.keys()
-            written = base.xreplace({s: self(self.values[s]) for s in deps})
+            written = base.xreplace({s: self._name(s) if named and s in self.public
+                                     else self(self.values[s]) for s in deps})
             out.append(canonical(written) ** power)
         return sympy.Mul(*out)
 
+    def _name(self, s: Any) -> Any:
+        """The name of a solved velocity, its formula (revealed) and value at the probe
+        recorded with the instant's named quantities (`where`)."""
+        name = self.public[s]
+        if self.inst is not None and name not in self.inst.names:
+            self.inst.names[name] = self(self.values[s])
+            self.inst.probe[name] = self.probe[s]
+        return name
+
     def vector(self, v: Any) -> Any:
         return tuple(self(c) for c in v) if isinstance(v, tuple) else self(v)
+
+
+LONG_OPS = 3000      # an acceleration longer than this with its velocities written in keeps them
+                     # named, in a model with named coordinates or without symbols
+
+
+def _written_ops(e: Any, reveal: Reveal, memo: dict) -> int:
+    """The size of `e` with each stand-in written in (as revealed), without writing it."""
+    from ..algebra.fields import ops
+
+    if e in memo:
+        return memo[e]
+    if e in reveal.values:
+        out = ops(reveal(reveal.values[e]))
+    elif e.is_Atom:
+        out = 0
+    else:
+        args = e.args
+        out = (len(args) - 1 if e.is_Add or e.is_Mul else 1) + sum(_written_ops(a, reveal, memo) for a in args)
+    memo[e] = out
+    return out
 
 
 FACTOR_OPS = 40     # stand-in formulas factored up to this size (then split into N/D only)

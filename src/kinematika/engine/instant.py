@@ -60,8 +60,9 @@ class Instant:
     scale: float = 1.0                               # characteristic length
     rate: float = 0.0                                # characteristic rate (engine.ranges)
     ref: tuple = ()                                  # where body twists are taken
-    names: dict = field(default_factory=dict)        # named coordinates (symbolic): symbol ->
+    names: dict = field(default_factory=dict)        # named quantities (symbolic): symbol ->
                                                      # formula in parameters and earlier names
+                                                     # (coordinates x_E, then velocities omega_link)
 
     @property
     def symbolic(self) -> bool:
@@ -110,16 +111,15 @@ class Instant:
         """A scalar as a float (a symbolic one at the probe values)."""
         if isinstance(x, (int, float)):
             return float(x)
-        value = x.xreplace(self.probe) if self.probe else x
-        try:
-            return float(value)
-        except TypeError:             # complex at the probe values
-            z = complex(value)
-            if abs(z.imag) <= 1e-12 * abs(z.real):
-                return z.real
-            raise KinematikaError("schema", "a value is not a real number for the symbols' values "
-                                  "(the square root or a power of a negative quantity?)",
-                                  "parameters") from None
+        if getattr(x, "is_Number", False):
+            return float(x)
+        from ..algebra.evaluate import complex_value
+
+        z = complex_value(x, self.probe)      # each shared subformula once (long exact numbers)
+        if z.imag == 0 or abs(z.imag) <= 1e-12 * abs(z.real):
+            return z.real
+        raise KinematikaError("schema", "a value is not a real number for the symbols' values "
+                              "(the square root or a power of a negative quantity?)", "parameters")
 
     def numvec(self, v: tuple) -> tuple:
         return tuple(self.num(c) for c in v)

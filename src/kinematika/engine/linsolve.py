@@ -223,11 +223,16 @@ def _nonzero(value: float, a_num: np.ndarray) -> bool:
     return abs(value) > 1e-12 * max(np.abs(a_num).max(initial=0.0), 1e-300)
 
 
+SPARSE_BLOCK = 7     # blocks from this size up are eliminated in the order of least fill
+
+
 def _eliminate(block: list[list[Any]], rhs: list[Any], numeric: np.ndarray) -> list[Any]:
     """Gaussian elimination on field elements, pivoting on the numeric twin of the block."""
     k = len(rhs)
     if k == 1:
         return [rhs[0] / block[0][0]]
+    if k >= SPARSE_BLOCK:
+        return _eliminate_sparse(block, rhs, numeric)
     a = [row[:] + [r] for row, r in zip(block, rhs)]
     num = numeric.astype(float).copy()
     for col in range(k):
@@ -248,6 +253,79 @@ def _eliminate(block: list[list[Any]], rhs: list[Any], numeric: np.ndarray) -> l
             value -= a[row][c] * out[c]
         out[row] = value / a[row][row]
     return out
+
+
+def _eliminate_sparse(block: list[list[Any]], rhs: list[Any], numeric: np.ndarray) -> list[Any]:
+    """Gaussian elimination for a large block (a triad's 12 unknowns): exact arithmetic
+    needs no pivoting for size, so each pivot is the entry that creates the least fill-in
+    (Markowitz: (row's nonzeros − 1)·(column's nonzeros − 1)), a plain number before a
+    formula (the ±1 of a joint's velocity terms eliminates v₀ without fractions), among
+    entries not negligible numerically. Far cheaper than partial pivoting, which fills the
+    block with long entries."""
+    k = len(rhs)
+    rows = [dict((c, v) for c, v in enumerate(row) if v) for row in block]
+    right = list(rhs)
+    num = numeric.astype(float).copy()
+    top = np.abs(num).max(initial=0.0)
+    order: list[tuple[int, int]] = []           # (row, column) of each pivot
+    live_rows, live_cols = set(range(k)), set(range(k))
+    for _ in range(k):
+        col_count = {c: 0 for c in live_cols}
+        for r in live_rows:
+            for c in rows[r]:
+                if c in col_count:
+                    col_count[c] += 1
+        best = None
+        for r in live_rows:
+            n_r = sum(1 for c in rows[r] if c in live_cols)
+            for c, v in rows[r].items():
+                if c not in live_cols or abs(num[r, c]) <= 1e-9 * top:
+                    continue
+                key = ((n_r - 1) * (col_count[c] - 1), not _plain(v), -abs(num[r, c]))
+                if best is None or key < best[0]:
+                    best = (key, r, c)
+        if best is None:
+            raise ZeroDivisionError("no pivot in an exact block")
+        _, pr, pc = best
+        order.append((pr, pc))
+        live_rows.discard(pr)
+        live_cols.discard(pc)
+        pivot_row, pivot = rows[pr], rows[pr][pc]
+        for r in live_rows:
+            factor_v = rows[r].get(pc)
+            if not factor_v:
+                continue
+            factor = factor_v / pivot
+            ratio = num[r, pc] / num[pr, pc]
+            target = rows[r]
+            for c, v in pivot_row.items():
+                if c == pc:
+                    continue
+                new = target.get(c, 0) - factor * v if c in target else -(factor * v)
+                if new:
+                    target[c] = new
+                else:
+                    target.pop(c, None)
+            del target[pc]
+            right[r] = right[r] - factor * right[pr]
+            num[r] -= ratio * num[pr]
+            num[r, pc] = 0.0
+    out: list[Any] = [None] * k
+    for pr, pc in reversed(order):
+        value = right[pr]
+        for c, v in rows[pr].items():
+            if c != pc:
+                value -= v * out[c]
+        out[pc] = value / rows[pr][pc]
+    return out
+
+
+def _plain(v: Any) -> bool:
+    """A field element that is a number (no symbols, no atoms)."""
+    try:
+        return v.numer.is_ground and v.denom.is_ground
+    except AttributeError:
+        return True
 
 
 def independent_rows(a: np.ndarray, n: int) -> list[int]:

@@ -83,19 +83,20 @@ def name_point(inst: "Instant", point: str, coords: tuple) -> tuple:
         if _simple(c) or c in inst.names:
             out.append(c)
             continue
-        symbol = sympy.Symbol(_fresh_name(inst, f"{axis}_{point}"), real=True)
+        symbol = sympy.Symbol(fresh_name(inst, f"{axis}_{point}"), real=True)
         inst.names[symbol] = c
         inst.probe[symbol] = complex(c.xreplace(inst.probe)).real
         out.append(symbol)
     return tuple(out)
 
 
-def _fresh_name(inst: "Instant", wanted: str) -> str:
-    """An identifier for a named coordinate, free among the parameters and the names."""
+def fresh_name(inst: "Instant", wanted: str, taken: set[str] | None = None) -> str:
+    """An identifier for a named quantity, free among the parameters, the names and `taken`."""
     import re
 
     base = re.sub(r"\W", "_", wanted)
-    taken = set(inst.model.parameters) | {str(s) for s in inst.names} | {"pi", "E", "I", "oo"}
+    taken = (set(inst.model.parameters) | {str(s) for s in inst.names} | {"pi", "E", "I", "oo"}
+             | (taken or set()))
     text, k = base, 1
     while text in taken or not text.isidentifier():
         k += 1

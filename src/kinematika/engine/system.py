@@ -137,7 +137,7 @@ class InstantSolver:
         inst, u = self.inst, self.unknowns
         if self.analysis is None:
             self.prepare()
-        if inst.symbolic and self.space.dim == 2:     # spatial formulas are solved as written
+        if inst.symbolic:          # planar and spatial alike, in stand-ins (`engine.exact`)
             return self._solve_exact()
         x_v = self.solve_linear(self.b_v, check=True)
         velocities = self._motion(x_v, None)
@@ -160,14 +160,38 @@ class InstantSolver:
         # the accelerations are solved with the velocities as stand-ins too
         x_w, known = stand_in_values(x_v, standin, "x")
         values.update(known)
+        public = self._velocity_names(x_w, known)
         velocities = twin._motion(x_w, None)
         rows_a = twin.rows(AccelerationLevel(KnownTerms(u), inst.ref, velocities))
         x_a = self._solve_exact_level(standin, a, [-r.lin.const for r in rows_a],
                                       [r.label for r in rows_a], values, "a")
         self.exact = ExactWorld(standin, twin._motion(x_v, x_a), twin._motion(x_w, x_a),
-                                Reveal(values, set(known)))
+                                Reveal(values, set(known), public, inst, standin.probe))
         states = {body: self.exact.state(body) for body in self.exact.motion.states}
         return Motion(self.space, inst.ref, states)
+
+    def _velocity_names(self, x_w: list[Any], known: dict) -> dict:
+        """The name each solved velocity's stand-in takes when an acceleration would be too
+        long with it written in: omega_BODY (omega_BODY_x in 3D), v0x_BODY for the velocity
+        of the body's point at the origin."""
+        import sympy
+
+        from .positions import fresh_name
+
+        u, rot = self.unknowns, self.space.rot
+        out = {}
+        for column, s in enumerate(x_w):
+            if s not in known:
+                continue
+            body = u.body_of(column)
+            k = column - u.offset[body]
+            if k < rot:
+                wanted = f"omega_{body}" + (f"_{'xyz'[k]}" if rot == 3 else "")
+            else:
+                wanted = f"v0{'xyz'[k - rot]}_{body}"
+            out[s] = sympy.Symbol(fresh_name(self.inst, wanted, {str(v) for v in out.values()}),
+                                  real=True)
+        return out
 
     def _solve_exact_level(self, standin: Instant, a: list[list[Any]], b: list[Any],
                            labels: list[str], values: dict, prefix: str) -> list[Any]:

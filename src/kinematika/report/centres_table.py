@@ -28,8 +28,9 @@ def centres_data(sol: Solution) -> dict[str, Any]:
         rows.append({"bodies": list(c.pair), **plain(c.value, sol.symbolic, sol.inst.scale, fields),
                      "how": c.how, "via": c.via})
     out = {"name": sol.model.name, "symbolic": sol.symbolic, "centres": rows}
-    if sol.symbolic and sol.inst.names:
-        out["where"] = where(sol.inst)          # the named coordinates the formulas use
+    named = where(sol) if sol.symbolic else {}
+    if named:
+        out["where"] = named                    # the named quantities the formulas use
     return out
 
 

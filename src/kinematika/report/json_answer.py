@@ -49,16 +49,18 @@ def solution_json(sol: Solution) -> dict[str, Any]:
                for q in model.questions]
     out = {"name": model.name, "dimension": model.dimension, "dof": sol.dof, "symbolic": sym,
            "bodies": bodies, "points": points, "answers": answers}
-    if sym and sol.inst.names:
-        out["where"] = where(sol.inst)
+    named = where(sol) if sym else {}
+    if named:
+        out["where"] = named
     return out
 
 
-def where(inst: Any) -> dict[str, str]:
-    """The named coordinates of a symbolic instant (x_E, y_E), each with its formula in the
-    parameters and the names before it, in that order: what the answers' formulas use
-    besides the parameters when written out they would be too long to read (or to print)."""
-    return {str(s): plain(formula, True) for s, formula in inst.names.items()}
+def where(sol: Solution) -> dict[str, str]:
+    """The named quantities of a symbolic answer, each with its formula in the parameters
+    and the names before it, in that order: coordinates (x_E, y_E) and then velocities
+    (omega_link), what the answers' formulas use besides the parameters where written out
+    they would be too long to read (or to print)."""
+    return {str(s): plain(formula, True) for s, formula in sol.inst.names.items()}
 
 
 def _numeric_tables(sol: Solution, scale: dict[str, float]) -> tuple[dict, dict]:
