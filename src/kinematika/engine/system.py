@@ -214,7 +214,8 @@ class InstantSolver:
             return out
 
         exact = solve_symbolic(self.analysis, a, b, self.a_num, name)
-        standin.backend.check_against(exact, x_num, standin.probe)
+        rate = max(self.inst.rate, self.inst.rate ** 2)     # the size of rates and their squares
+        standin.backend.check_against(exact, x_num, standin.probe, rate * max(1.0, self.inst.scale))
         return exact
 
     def _motion(self, x_v: list[Any], x_a: list[Any] | None) -> Motion:
