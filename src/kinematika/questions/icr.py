@@ -14,6 +14,10 @@ from ..solution import Solution
 
 
 def instant_centre(sol: Solution, body: str, relative_to: str | None) -> dict[str, Any]:
+    if sol.exact is not None and sol.inst.names:
+        found = _in_stand_ins(sol, body, relative_to)
+        if found is not None:
+            return found
     state = sol.state(body, relative_to)
     w, v0 = state.omega, state.v0
     if sol.is_zero(w, sol.rate_scale()):
@@ -22,6 +26,19 @@ def instant_centre(sol: Solution, body: str, relative_to: str | None) -> dict[st
         speed = sol.norm(v0)
         return {"point": None, "direction": (-v0[1] / speed, v0[0] / speed)}
     return {"point": add(sol.motion.ref, (-v0[1] / w, v0[0] / w))}
+
+
+def _in_stand_ins(sol: Solution, body: str, relative_to: str | None) -> dict[str, Any] | None:
+    """The centre of a model with named coordinates (formulas past reading written out):
+    k × v₀ / ω formed in stand-ins and revealed once, not formed from the revealed ω and v₀.
+    None when ω is zero at the probe (the general rules decide then)."""
+    world = sol.exact
+    sol.state(body, relative_to)                          # the names checked
+    state = world.motion.state(body, sol._frame(relative_to))
+    w, v0 = state.omega, state.v0
+    if abs(world.inst.num(w)) <= 1e-9 * sol.rate_scale():
+        return None
+    return {"point": add(sol.motion.ref, world.reveal.vector((-v0[1] / w, v0[0] / w)))}
 
 
 def icr(sol: Solution, q: Question) -> dict[str, Any]:
