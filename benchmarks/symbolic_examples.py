@@ -1,8 +1,9 @@
 """Time a whole `kinematika solve MODEL --symbolic --json` (start-up included) on every model.
 
 Every shipped example, the construction-built models of `benchmarks/models/symbolic/` and
-of the textbook cases (`tests/cases/tb_*.yaml`, errors left out), and the symbolic contract
-cases must answer with `--symbolic` in under 5 s (issues 12, 16).
+of the textbook cases (`tests/cases/tb_*.yaml` and `tests/textbook/*.yaml`, errors left
+out), and the symbolic contract cases must answer with `--symbolic` in under 5 s (issues
+12, 16).
 Run:  .venv/bin/python benchmarks/symbolic_examples.py [--repeat 1] [--cap 60] [--markdown]
       [--command solve|centres|explain]
 Prints one row per model (best of the repeats, whole process): the seconds on the clock,
@@ -31,16 +32,20 @@ def models() -> list[Path]:
     """The examples, the benchmark's own symbolic models, and the symbolic contract cases."""
     out = sorted((ROOT / "examples").glob("*.yaml"))
     out += sorted((ROOT / "benchmarks" / "models" / "symbolic").glob("*.yaml"))
-    for path in sorted((ROOT / "tests" / "cases").glob("tb_*.yaml")):
-        expect = path.with_suffix("").with_suffix(".expect.json")
-        if expect.exists() and "error" not in json.loads(expect.read_text()):
-            out.append(path)
+    out += [path for path in sorted((ROOT / "tests" / "cases").glob("tb_*.yaml")) if _answers(path)]
+    out += [path for path in sorted((ROOT / "tests" / "textbook").glob("*.yaml")) if _answers(path)]
     if CASES.is_dir():
         for path in sorted(CASES.glob("*.yaml")):
             expect = path.with_suffix("").with_suffix(".expect.json")
             if expect.exists() and json.loads(expect.read_text()).get("symbolic"):
                 out.append(path)
     return out
+
+
+def _answers(path: Path) -> bool:
+    """A textbook case whose expectation is an answer (not an error)."""
+    expect = path.with_suffix("").with_suffix(".expect.json")
+    return expect.exists() and "error" not in json.loads(expect.read_text())
 
 
 def time_solve(path: Path, repeat: int, cap: float, command: str = "solve") -> tuple[float, float, str]:

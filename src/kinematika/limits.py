@@ -36,8 +36,9 @@ SWEEP_VALUES = 32_000_000    # rows × numbers per row held at once: 480 000 row
 # symbolic work ----------------------------------------------------------------------------
 SYMBOLIC_SECONDS = 15.0      # CPU time (not wall time: a busy machine does not fail a valid model)
                              # for exact formulas (KINEMATIKA_SYMBOLIC_SECONDS overrides)
-POINT_OPS = 2000             # operations of a constructed point's exact coordinate (a four-bar's
-                             # coupler pin has 84; Jansen's leg in its 15 lengths, 14 000 at F)
+POINT_OPS = 2000             # operations of a constructed point's exact coordinate, in named
+                             # coordinates (engine.positions.NAME_OPS): a four-bar's coupler pin
+                             # has 84; Jansen's leg in its 15 lengths, under 400 in its names
 
 # the page's server (`kinematika app`) -----------------------------------------------------
 REQUEST_BYTES = FILE_BYTES   # a request's body (a model's text and a few options); 413 beyond
