@@ -137,7 +137,10 @@ class InstantSolver:
         inst, u = self.inst, self.unknowns
         if self.analysis is None:
             self.prepare()
-        if inst.symbolic:          # planar and spatial alike, in stand-ins (`engine.exact`)
+        # in stand-ins (`engine.exact`): planar models, and spatial ones in exact numbers (whose
+        # written-out solve spent its time in gcds of long integers); spatial formulas in
+        # symbols are solved as written (as fast, and their points' motions read shorter)
+        if inst.symbolic and (self.space.dim == 2 or not inst.probe):
             return self._solve_exact()
         x_v = self.solve_linear(self.b_v, check=True)
         velocities = self._motion(x_v, None)
