@@ -232,15 +232,16 @@ class Numbers:
     def __init__(self, inst: Instant, proj: Projection, values: Optional[dict] = None) -> None:
         self.inst, self.proj = inst, proj
         self.values = values or {}
-        self._at = dict(self.values)        # with the named coordinates' values there
-        if self.values and inst.names:
-            from ..engine.instant import named_values
-
-            self._at.update({s: v.real for s, v in named_values(inst.names, self.values).items()})
+        self._at = dict(self.values)        # with the named quantities' values there
 
     def scalar(self, x: Any) -> float:
         if isinstance(x, (int, float)) or not self.values:
             return self.inst.num(x)
+        if len(self._at) != len(self.values) + len(self.inst.names):    # names added since
+            from ..engine.instant import named_values
+
+            self._at = {**self.values, **{s: v.real for s, v in
+                                          named_values(self.inst.names, self.values).items()}}
         return float(x.xreplace(self._at))
 
     def vector(self, v: tuple) -> Vec:
