@@ -297,3 +297,18 @@ def test_textbook_mechanism_with_long_formulas(name):
     assert len(out["answers"]) == len(expected)
     for i, (got, exp) in enumerate(zip(out["answers"], expected)):
         _close(written(got["value"], at, names), exp, f"{name} answers[{i}]")
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(CI, reason="seconds: not in CI")
+def test_a_model_with_named_quantities_is_drawn_at_its_values():
+    """Jansen's leg with only its crank angle a symbol (its decimal lengths make roots of
+    roots: named coordinates, and the foot's acceleration in named velocities): the figure
+    is drawn at the probe value of θ, its caption naming θ alone, never the names."""
+    from kinematika.api import solve
+    from kinematika.draw.jupyter import solution_svg
+
+    sol = solve(ROOT / "examples" / "jansen_leg.yaml", set={"theta": None})
+    svg = solution_svg(sol)
+    assert "symbolic model drawn at generic values theta = " in svg
+    assert "x_B" not in svg and "omega_" not in svg
