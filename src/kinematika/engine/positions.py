@@ -76,6 +76,7 @@ def name_point(inst: "Instant", point: str, coords: tuple) -> tuple:
     formula and value at the probe `inst` records."""
     import sympy
 
+    from ..algebra.evaluate import complex_value
     from .exact import _simple
 
     out = []
@@ -85,7 +86,7 @@ def name_point(inst: "Instant", point: str, coords: tuple) -> tuple:
             continue
         symbol = sympy.Symbol(fresh_name(inst, f"{axis}_{point}"), real=True)
         inst.names[symbol] = c
-        inst.probe[symbol] = complex(c.xreplace(inst.probe)).real
+        inst.probe[symbol] = complex_value(c, inst.probe).real
         out.append(symbol)
     return tuple(out)
 
@@ -111,9 +112,8 @@ def _size(coords: tuple) -> int:
 
 
 def _check_size(coords: tuple, name: str, where: str) -> None:
-    """A `limit` error when a constructed point's exact coordinates are past reading (each
-    circle intersection writes the earlier points into the next: Jansen's leg in its 15
-    lengths reaches 160 000 operations at its foot), before any time goes into them."""
+    """A `limit` error when a constructed point's exact coordinates are past reading even
+    in named coordinates (`_bounded`), before any time goes into them."""
     from ..limits import POINT_OPS
 
     size = _size(coords)
