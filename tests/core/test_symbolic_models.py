@@ -242,27 +242,33 @@ def written(value, at: dict, names: dict):
             *[mpmath.mpf(str(v)) for v in at.values()], *names.values()))
 
 
+JANSEN = dict(a=38, l=7.8, m=15, j=50, b=41.5, d=40.1, e=55.8, k=61.9, c=39.3, f=39.4, g=36.7,
+              i=49, h=65.7, theta=math.pi / 2, w=1)
+
+
+def jansen_points(t, at=JANSEN) -> dict:
+    """Jansen's leg by hand at crank angle t: five circle intersections in a chain."""
+    pts = {"Z": [0, 0], "O": [at["a"], at["l"]]}
+    pts["A"] = polar(pts["O"], at["m"], t)
+    pts["B"] = meet(pts["Z"], at["b"], pts["A"], at["j"], 1)
+    pts["E"] = meet(pts["Z"], at["d"], pts["B"], at["e"], 1)
+    pts["D"] = meet(pts["Z"], at["c"], pts["A"], at["k"], -1)
+    pts["F"] = meet(pts["E"], at["f"], pts["D"], at["g"], -1)
+    pts["P"] = meet(pts["D"], at["i"], pts["F"], at["h"], 1)
+    return pts
+
+
 def test_jansen_leg_in_its_15_lengths_answers_with_named_coordinates():
     """Jansen's leg with every length and the crank angle symbols: written out, the foot's
     coordinates alone would have 160 000 operations; the answer names the coordinates of
     the points past the limit (x_B, y_B, ... x_P, y_P: each a short formula in the lengths
     and the names before it, under `where`) and its formulas, evaluated there, are the foot's
     motion by hand: five circle intersections in a chain, differentiated by mpmath."""
-    at = dict(a=38, l=7.8, m=15, j=50, b=41.5, d=40.1, e=55.8, k=61.9, c=39.3, f=39.4, g=36.7,
-              i=49, h=65.7, theta=math.pi / 2, w=1)
+    at = JANSEN
     out = solve_data(ROOT / "examples" / "jansen_leg.yaml", True)
     assert {"x_F", "y_F", "x_P", "y_P"} <= set(out["where"])
     assert max(len(text) for text in out["where"].values()) < 2000        # each one short
-
-    def foot(t):
-        a = polar([at["a"], at["l"]], at["m"], t)
-        b = meet([0, 0], at["b"], a, at["j"], 1)
-        e = meet([0, 0], at["d"], b, at["e"], 1)
-        d = meet([0, 0], at["c"], a, at["k"], -1)
-        f = meet(e, at["f"], d, at["g"], -1)
-        return meet(d, at["i"], f, at["h"], 1)
-
-    place, v, acc = motion(foot, at["theta"], at["w"])
+    place, v, acc = motion(lambda t: jansen_points(t)["P"], at["theta"], at["w"])
     names = named(out, at)
     got = [written(a["value"], at, names) for a in out["answers"]]
     same(got, [v, acc], rel=1e-9)
@@ -312,3 +318,35 @@ def test_a_model_with_named_quantities_is_drawn_at_its_values():
     svg = solution_svg(sol)
     assert "symbolic model drawn at generic values theta = " in svg
     assert "x_B" not in svg and "omega_" not in svg
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(CI, reason="seconds: not in CI")
+def test_jansen_leg_centres_with_named_coordinates():
+    """`centres --symbolic` of Jansen's leg in its 15 lengths: each of the 28 centres,
+    evaluated with the names of `where`, is where the two bodies' velocity fields agree by
+    hand: each body's ω the rate of the angle of two of its points, v₀ = v_P − ω k × P,
+    the centre k × (v₀b − v₀a) / (ωb − ωa)."""
+    from kinematika.commands import centres_data
+
+    at = JANSEN
+    bodies = {"ground": "ZO", "crank": "OA", "upper": "AB", "top": "ZB", "lower": "AD",
+              "rocker": "ZD", "knee": "EF", "foot": "DF"}
+    with mpmath.workdps(30):
+        t0 = mpmath.mpf(at["theta"])
+        pts = jansen_points(t0)
+        rate = {}
+        for body, (p, q) in bodies.items():
+            angle = lambda t, p=p, q=q: mpmath.atan2(*reversed([b - a for a, b in
+                                                                 zip(jansen_points(t)[p], jansen_points(t)[q])]))
+            w = mpmath.diff(angle, t0) * at["w"]
+            vp = [mpmath.diff(lambda t, i=i, p=p: jansen_points(t)[p][i], t0) * at["w"] for i in range(2)]
+            rate[body] = (w, [vp[0] + w * pts[p][1], vp[1] - w * pts[p][0]])      # v₀ = v_P − ω k × P
+    out = centres_data(ROOT / "examples" / "jansen_leg.yaml", True)
+    names = named(out, at)
+    assert len(out["centres"]) == 28
+    for c in out["centres"]:
+        (wa, va), (wb, vb) = rate[c["bodies"][0]], rate[c["bodies"][1]]
+        dc = [vb[0] - va[0], vb[1] - va[1]]
+        same(written(c["point"], at, names), [float(-dc[1] / (wb - wa)), float(dc[0] / (wb - wa))],
+             rel=1e-9, where=str(c["bodies"]))

@@ -47,7 +47,8 @@ def all_centres(sol: Solution) -> list[Centre]:
     for a, b in combinations(bodies, 2):
         found = direct_centre(sol, a, b)
         if found:
-            known[frozenset((a, b))] = Centre((a, b), instant_centre(sol, b, a), "joint", [found[1]])
+            pin = _pin(sol, found)
+            known[frozenset((a, b))] = Centre((a, b), instant_centre(sol, b, a, pin), "joint", [found[1]])
     progress = True
     while progress:
         progress = False
@@ -65,6 +66,14 @@ def all_centres(sol: Solution) -> list[Centre]:
         if frozenset((a, b)) not in known:
             out.append(Centre((a, b), instant_centre(sol, b, a), "velocities"))
     return out
+
+
+def _pin(sol: Solution, found: tuple[str, str]) -> str | None:
+    """The point of a revolute joint (its bodies' centre while they turn), else None."""
+    kind, jid = found
+    if kind != "revolute":
+        return None
+    return next((j.at for j in sol.model.joints if j.id == jid and isinstance(j.at, str)), None)
 
 
 def _is_line(known: dict[frozenset, Centre], a: str, k: str, b: str) -> bool:

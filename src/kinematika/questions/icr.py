@@ -13,9 +13,12 @@ from ..model.model import Question
 from ..solution import Solution
 
 
-def instant_centre(sol: Solution, body: str, relative_to: str | None) -> dict[str, Any]:
+def instant_centre(sol: Solution, body: str, relative_to: str | None,
+                   pin: str | None = None) -> dict[str, Any]:
+    """The centre of `body`'s motion relative to `relative_to`; `pin` names the point of a
+    revolute joint between them (their centre whenever they turn relative to each other)."""
     if sol.exact is not None and sol.inst.names:
-        found = _in_stand_ins(sol, body, relative_to)
+        found = _in_stand_ins(sol, body, relative_to, pin)
         if found is not None:
             return found
     state = sol.state(body, relative_to)
@@ -28,16 +31,20 @@ def instant_centre(sol: Solution, body: str, relative_to: str | None) -> dict[st
     return {"point": add(sol.motion.ref, (-v0[1] / w, v0[0] / w))}
 
 
-def _in_stand_ins(sol: Solution, body: str, relative_to: str | None) -> dict[str, Any] | None:
+def _in_stand_ins(sol: Solution, body: str, relative_to: str | None,
+                  pin: str | None = None) -> dict[str, Any] | None:
     """The centre of a model with named coordinates (formulas past reading written out):
-    k × v₀ / ω formed in stand-ins and revealed once, not formed from the revealed ω and v₀.
-    None when ω is zero at the probe (the general rules decide then)."""
+    the pin of a revolute joint between the two bodies as it stands, else k × v₀ / ω
+    formed in stand-ins and revealed once, not formed from the revealed ω and v₀. None
+    when ω is zero at the probe (the general rules decide then)."""
     world = sol.exact
     sol.state(body, relative_to)                          # the names checked
     state = world.motion.state(body, sol._frame(relative_to))
     w, v0 = state.omega, state.v0
     if abs(world.inst.num(w)) <= 1e-9 * sol.rate_scale():
         return None
+    if pin is not None:
+        return {"point": sol.position(pin)}
     return {"point": add(sol.motion.ref, world.reveal.vector((-v0[1] / w, v0[0] / w)))}
 
 
