@@ -350,3 +350,16 @@ def test_jansen_leg_centres_with_named_coordinates():
         dc = [vb[0] - va[0], vb[1] - va[1]]
         same(written(c["point"], at, names), [float(-dc[1] / (wb - wa)), float(dc[0] / (wb - wa))],
              rel=1e-9, where=str(c["bodies"]))
+
+
+def test_a_point_too_long_even_in_named_coordinates_is_refused_by_name(monkeypatch):
+    """Past `limits.POINT_OPS` even in named coordinates a constructed point is a `limit`
+    error naming it, before any time goes into it (no model comes near 2 000: here the
+    limit is lowered to 40, which Jansen's leg passes at its first named point, E)."""
+    from kinematika import limits
+
+    monkeypatch.setattr(limits, "POINT_OPS", 40)
+    with pytest.raises(KinematikaError) as err:
+        solve_data(ROOT / "examples" / "jansen_leg.yaml", True)
+    assert err.value.kind == "limit" and err.value.where == "points.E"
+    assert "numbers" in str(err.value) and "--symbolic" in str(err.value)
