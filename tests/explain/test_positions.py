@@ -100,3 +100,31 @@ def test_told_in_every_language(lang):
     assert closing in text
     if lang == "ca":
         assert "d’A cap a O4" in text and "d’O2" in text
+
+
+def test_named_coordinates_are_defined_where_the_point_is_placed(monkeypatch):
+    """A constructed point too long to write out is named (x_B, y_B); the explanation gives
+    each name's formula right after the point's sentence, and that formula is the point's
+    coordinate as written out when nothing is named (the four-bar in all its lengths, with
+    the naming threshold lowered so that its coupler pin is named), and the acceleration
+    section says that angular velocities may be written by name."""
+    import sympy
+
+    from kinematika.engine import positions
+
+    full = kinematika.solve(EXAMPLES / "four_bar.yaml", symbolic=True)
+    monkeypatch.setattr(positions, "NAME_OPS", 10)
+    sol = kinematika.solve(EXAMPLES / "four_bar.yaml", symbolic=True)
+    doc = build(sol)
+    blocks = position_section(doc).blocks
+    defined = {str(b.args["name"].value): b.args["formula"].value for b in blocks if b.key == "pos.named"}
+    assert {"x_B", "y_B"} <= set(defined)
+    names = {str(k): v for k, v in sol.inst.names.items()}
+    for axis, written in zip("xy", full.inst.points["B"]):
+        formula = sympy.sympify(defined[f"{axis}_B"]).subs({sympy.Symbol(k): v for k, v in names.items()})
+        probe = {s: v for s, v in full.inst.probe.items()} if isinstance(full.inst.probe, dict) else {}
+        assert float(sympy.N((formula - written).subs(probe))) == pytest.approx(0.0, abs=1e-9)
+    order = [b.args.get("point").text if "point" in b.args else str(b.args["name"].value) for b in blocks[1:]]
+    assert order.index("x_B") == order.index("B") + 1          # right after B's sentence
+    accelerations = next(s for s in doc.sections if s.title.key == "sec.accelerations")
+    assert any(getattr(b, "key", "") == "a.named" for b in accelerations.blocks)

@@ -47,6 +47,9 @@ class PlanarSteps:
             sub.blocks = self.step(step)
             sec.blocks.append(sub)
             self.known.update(step.bodies)
+        if self.level == "a" and self.ctx.symbolic and self.ctx.inst.names:
+            first = next(iter(self.ctx.model.moving_bodies))
+            sec.blocks.insert(1, msg("a.named", name=f"omega_{first}", body=body(first)))
         return sec
 
     # one step ----------------------------------------------------------------------------

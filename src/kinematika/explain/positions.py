@@ -28,7 +28,18 @@ def position_section(ctx: Ctx) -> Optional[Section]:
     sec.add(msg("pos.intro"))
     for name in built:
         sec.add(_sentence(ctx, name, model.points[name]))
+        for coordinate in _named(ctx, name):
+            sec.add(msg("pos.named", name=Value(coordinate, "len"),
+                        formula=Value(ctx.inst.names[coordinate], "len")))
     return sec
+
+
+def _named(ctx: Ctx, name: str) -> list:
+    """The point's coordinates that the engine named (x_E, y_E: written out they would be
+    past reading), whose formulas the explanation must give as the answer's `where` does."""
+    if not ctx.symbolic:
+        return []
+    return [c for c in ctx.pos(name) if getattr(c, "is_Symbol", False) and c in ctx.inst.names]
 
 
 def _sentence(ctx: Ctx, name: str, c: Any) -> Msg:

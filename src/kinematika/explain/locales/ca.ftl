@@ -63,6 +63,7 @@ fig-polygon_a = Polígon d’acceleracions des del pol o, a escala, amb els vèr
 fig-sample = Dibuixat amb valors de mostra dels símbols.
 sec-position = Posició
 pos-intro = Anàlisi de posició: cada punt mòbil se situa com el situa l’enunciat, a partir de punts ja situats.
+pos-named = Aquí { $name } = { $formula }.
 pos-polar = { $point } és a una distància { $distance } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
@@ -129,6 +130,7 @@ sec-velocities = Velocitats
 sec-accelerations = Acceleracions
 v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites; en vermell, els termes trobats en el pas.
 a-intro = Conegudes les velocitats, tots els termes normals i de Coriolis són coneguts; les incògnites són els termes tangencials i relatius.
+a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada cos.
 driver-omega = Dada: { $sym } = { $value }.
 driver-joint = Dada: la velocitat de l’enllaç { $joint } és { $value }.
 driver-joint_accel = Dada: l’acceleració de l’enllaç { $joint } és { $value }.

@@ -63,6 +63,7 @@ fig-polygon_a = Acceleration polygon from the pole o, to scale, its vertices the
 fig-sample = Drawn at sample values of the symbols.
 sec-position = Position
 pos-intro = Position analysis: each moving point is placed as the statement places it, from points already placed.
+pos-named = Here { $name } = { $formula }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
 pos-frame = { $point } is { $x } from { $origin } along { $line } and { $y } across it, to its left: { $point } = { $at }.
@@ -99,6 +100,7 @@ sec-velocities = Velocities
 sec-accelerations = Accelerations
 v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns; the terms found in the step are in red.
 a-intro = With the velocities known, every normal term and every Coriolis term is known; the tangential and relative terms are the unknowns.
+a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
 driver-joint = Given: the rate of joint { $joint } is { $value }.
 driver-joint_accel = Given: the acceleration of joint { $joint } is { $value }.

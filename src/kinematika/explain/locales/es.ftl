@@ -63,6 +63,7 @@ fig-polygon_a = Polígono de aceleraciones desde el polo o, a escala, con los v�
 fig-sample = Dibujado con valores de muestra de los símbolos.
 sec-position = Posición
 pos-intro = Análisis de posición: cada punto móvil se sitúa como lo sitúa el enunciado, a partir de puntos ya situados.
+pos-named = Aquí { $name } = { $formula }.
 pos-polar = { $point } está a una distancia { $distance } de { $origin }, a { $angle } del eje x: { $point } = { $at }.
 pos-polar_ref = { $point } está a una distancia { $distance } de { $origin }, a { $angle } de la dirección { $ref }: { $point } = { $at }.
 pos-frame = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su izquierda: { $point } = { $at }.
@@ -99,6 +100,7 @@ sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
 v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas; en rojo, los términos hallados en el paso.
 a-intro = Conocidas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
+a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada cuerpo.
 driver-omega = Dato: { $sym } = { $value }.
 driver-joint = Dato: la velocidad del par { $joint } es { $value }.
 driver-joint_accel = Dato: la aceleración del par { $joint } es { $value }.

@@ -63,6 +63,7 @@ fig-polygon_a = Azelerazioen poligonoa o polotik, eskalan, erpinak puntuen irudi
 fig-sample = Ikurren lagin-balioekin marraztua.
 sec-position = Posizioa
 pos-intro = Posizio-analisia: puntu mugikor bakoitza enuntziatuak kokatzen duen moduan kokatzen da, aurretik kokatutako puntuetatik abiatuta.
+pos-named = Hemen, { $name } = { $formula }.
 pos-polar = { $point } puntua { $origin } puntutik { $distance } distantziara dago, x ardatzarekiko { $angle } angeluan: { $point } = { $at }.
 pos-polar_ref = { $point } puntua { $origin } puntutik { $distance } distantziara dago, { $ref } norabidearekiko { $angle } angeluan: { $point } = { $at }.
 pos-frame = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, ezkerretara: { $point } = { $at }.
@@ -102,6 +103,7 @@ sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
 v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu; gorriz, urratsean aurkitutako terminoak.
 a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
+a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } gorputzaren ω-rako, eta horrela gorputz bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
 driver-joint = Datua: { $joint } loturaren abiadura { $value } da.
 driver-joint_accel = Datua: { $joint } loturaren azelerazioa { $value } da.
