@@ -432,3 +432,19 @@ def test_a_3d_figure_follows_the_slider(page, capsys):
     with capsys.disabled():
         print(f"\n[page] 3D slider to painted frame: median {statistics.median(times):.1f} ms, "
               f"max {max(times):.1f} ms over {len(times)} positions")
+
+
+def test_named_quantities_of_long_formulas_are_listed(page, tmp_path):
+    """Jansen's leg with its crank angle a symbol: its points' exact coordinates are named
+    (x_B, y_B, …) and the table lists each name's formula, as the CLI's answer does."""
+    text = (EXAMPLES / "jansen_leg.yaml").read_text()
+    assert "  theta: deg(90)" in text
+    symbolic = text.replace("  theta: deg(90)", "  theta: null")
+    page.get_by_test_id("model-editor").fill(symbolic)
+    page.wait_for_selector('td[data-key="where.x_B"]', timeout=60_000)
+    path = tmp_path / "jansen_theta.yaml"
+    path.write_text(symbolic)
+    cli_json = json.loads(CliRunner().invoke(cli, ["solve", str(path), "--json"]).stdout)
+    assert list(cli_json["where"])[:2] == ["x_B", "y_B"]
+    for name in ("x_B", "y_B"):
+        assert cell(page, f"where.{name}") == cli_json["where"][name]

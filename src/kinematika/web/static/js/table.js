@@ -47,6 +47,13 @@ export class Answers {
         this.cells.push({ key: `points.${key}.${q}`, fixed: p[q], source: sweep && sweep.points[key] && sweep.points[key][q] });
       }
     }
+    if (solution.where) {            // named quantities of long exact formulas (x_E = …)
+      rows.push(section("Where", "formula"));
+      for (const [name, formula] of Object.entries(solution.where)) {
+        rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" colspan="3" data-key="where.${attr(name)}"></td></tr>`);
+        this.cells.push({ key: `where.${name}`, fixed: formula, source: null });
+      }
+    }
     this.root.innerHTML = `<table>${rows.join("")}</table>`;
     const tds = this.root.querySelectorAll("td[data-key]");       // in the order of the cells
     this.cells.forEach((c, i) => { c.td = tds[i]; });
