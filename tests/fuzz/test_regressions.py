@@ -547,3 +547,14 @@ def test_a_length_that_overflows_the_constructed_positions_is_said_in_words():
     err = error_of(EXAMPLES / "four_bar.yaml", how=How(set={"d": 1e308}))
     assert (err.kind, err.where) == ("schema", "points") and "lengths between" in err.message
     assert "beyond what floats hold" in err.message and "nan" not in err.message
+
+
+def test_a_direction_with_components_1e50_apart_in_a_symbolic_model_is_a_clear_error():
+    """Fuzz seed 20261124 case 397: the rolling wheel's ground line along [1, 2e-50] with
+    its radius a symbol: normalising it exactly made sympy's integer factoring raise
+    ValueError (an internal error); it is a schema error naming the direction."""
+    tree = yaml.safe_load((EXAMPLES / "wheel_rolling.yaml").read_text())
+    tree["bodies"]["ground"]["line"]["direction"] = [1, 2e-50]
+    err = error_of(tree)
+    assert (err.kind, err.where) == ("schema", "bodies.ground.line.direction")
+    assert "unit vector" in err.message

@@ -85,8 +85,13 @@ class Instant:
             raise KinematikaError("schema", "a direction cannot be the zero vector", where)
         if not self.symbolic:
             return tuple(c / size for c in vec)
-        norm = self.backend.sqrt(dot(vec, vec))
-        return tuple(self.backend.simplify(c / norm) for c in vec)
+        try:
+            norm = self.backend.sqrt(dot(vec, vec))
+            return tuple(self.backend.simplify(c / norm) for c in vec)
+        except ValueError as err:   # sympy's integer factoring fails on some 100-digit norms
+            raise KinematikaError("schema", "this direction cannot be made a unit vector exactly: its "
+                                  "components are too far apart in size (write the small one as 0)",
+                                  where) from err
 
     def direction(self, d: m.Direction, where: str) -> tuple:
         if isinstance(d, m.PointPair):
