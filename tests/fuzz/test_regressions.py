@@ -558,3 +558,12 @@ def test_a_direction_with_components_1e50_apart_in_a_symbolic_model_is_a_clear_e
     err = error_of(tree)
     assert (err.kind, err.where) == ("schema", "bodies.ground.line.direction")
     assert "unit vector" in err.message
+
+
+def test_a_symbol_drawn_at_a_huge_number_is_a_clear_error():
+    """Fuzz seed 5 case 398: the symbolic fan drawn at h = 1.7e308 (`draw_at`) made the
+    figure's limits infinite (matplotlib's ValueError: an internal error in explain)."""
+    tree = yaml.safe_load((EXAMPLES / "fan_symbolic.yaml").read_text())
+    tree["draw_at"]["h"] = 1.7e308
+    err = error_of(tree)
+    assert (err.kind, err.where) == ("schema", "draw_at.h") and "1e+50" in err.message

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from typing import Any, Optional
 
+from .. import limits
 from ..errors import KinematikaError
 from .model import Parameter
 
@@ -26,6 +27,10 @@ def draw_values(raw: Optional[dict[str, Any]], params: dict[str, Parameter]) -> 
         if not math.isfinite(value) or (param.positive and value <= 0):
             raise KinematikaError("schema", f"{name!r} is drawn at {value:g}: give a finite"
                                   f"{' positive' if param.positive else ''} number", where)
+        if value != 0 and not 1 / limits.SCALE <= abs(value) <= limits.SCALE:
+            raise KinematikaError("schema", f"{name!r} is drawn at {value:g}: figures are drawn with "
+                                  f"numbers between {1 / limits.SCALE:g} and {limits.SCALE:g} in size",
+                                  where)
         out[name] = value
     return out
 
