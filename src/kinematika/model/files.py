@@ -220,6 +220,8 @@ def _yaml(text: str, where: str) -> Any:
     except yaml.YAMLError as err:
         mark = getattr(err, "problem_mark", None)
         problem = getattr(err, "problem", None) or "unreadable"
+        if "nesting depth" in problem:      # PyYAML ≥ 6.0.4 stops at its own depth first
+            raise _too_deep(where, mark.line + 1 if mark else None) from None
         at = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
         raise KinematikaError("syntax", f"invalid YAML{at}: {problem}", where) from None
 
