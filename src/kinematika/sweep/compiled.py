@@ -244,21 +244,32 @@ class CompiledNewton:
         every_row = (np.diff(np.r_[starts, len(at)]) > 0).all()
         return len(np.unique(at)) == len(at) and bool(every_row)     # one writer each, no empty row
 
+    def _drive_rows(self) -> np.ndarray:
+        """The drivers' rows among all the rows."""
+        return 3 * len(self.p0) + len(self.perp0) + np.arange(len(self.drive_axis0))
+
     def _driver_rows(self) -> np.ndarray:
         """The drivers' rows among the kept ones."""
-        rows = 3 * len(self.p0) + len(self.perp0) + np.arange(len(self.drive_axis0))
-        return np.searchsorted(self.keep, rows)
+        return np.searchsorted(self.keep, self._drive_rows())
+
+    def _rates(self, n_rows: int) -> np.ndarray:
+        """The velocity system's right side: the drivers' rates."""
+        rhs = np.zeros((n_rows, self.m))
+        rhs[:, self._driver_rows()] = self.rates
+        return rhs
 
     # the sweep ---------------------------------------------------------------------------
     def sweep(self, increments: np.ndarray) -> Optional[dict]:
         """Every position's poses, twists and their rates; None where the general path must run.
 
-        Coarse rows first, one after the other; then, level by level, the rows between them
-        (eight times denser each time) all at once, each from its nearest solved row: its
-        tangent as predictor, then chord iterations with that row's inverse matrix.
+        Coarse rows first (`_coarse`); then, level by level, the rows between them (eight
+        times denser each time, twice where that fails) all at once, each from its nearest
+        solved row: its tangent as predictor, then chord iterations with that row's inverse
+        matrix; the twists of the last level from those inverses (`_near_twists`), the
+        others' from their own.
         """
-        drivers = 3 * len(self.p0) + len(self.perp0) + np.arange(len(self.drive_axis0))
-        if not self.usable or self.m != self.n or len(self.bodies) == 0 or not np.isin(drivers, self.keep).all():
+        if (not self.usable or self.m != self.n or len(self.bodies) == 0
+                or not np.isin(self._drive_rows(), self.keep).all()):
             return None
         dq = np.asarray(increments, dtype=float)
         n_rows = len(dq)
@@ -273,11 +284,10 @@ class CompiledNewton:
             return None
         twists = Twists(n_rows, self.n)
         while stride > 1:
-            # where a level fails, one twice as dense first (chord iterations, as the general path)
-            for denser, newton in ((DENSER, False), (2, False)):
+            for denser in (DENSER, 2):         # where a level fails, one twice as dense first
                 level = np.setdiff1d(np.arange(0, n_rows, max(1, stride // denser)), solved)
                 last = twists if stride // denser <= 1 else None
-                if self._levels(rots, ts, dq, solved, level, last, newton):
+                if self._levels(rots, ts, dq, solved, level, last):
                     break
                 twists.known[level] = False
             else:
@@ -351,7 +361,7 @@ class CompiledNewton:
         ok = (miss <= JUMP * self._size(slope[:-1] * h)).all()
         return (inverse[-1:], slope[-1:], bend[-1:]) if ok else None
 
-    def _levels(self, rots, ts, dq, solved, level, twists: Optional[Twists], newton: bool) -> bool:
+    def _levels(self, rots, ts, dq, solved, level, twists: Optional[Twists]) -> bool:
         """The rows of `level`, each from its nearest solved row, a chunk at a time."""
         if not len(level):
             return True
@@ -359,11 +369,11 @@ class CompiledNewton:
         left = solved[right - 1]
         parent = np.where(level - left <= solved[right] - level, left, solved[right])
         for part in range(0, len(level), CHUNK):      # stacked matrices a chunk at a time
-            if not self._level(rots, ts, dq, level[part:part + CHUNK], parent[part:part + CHUNK], twists, newton):
+            if not self._level(rots, ts, dq, level[part:part + CHUNK], parent[part:part + CHUNK], twists):
                 return False
         return True
 
-    def _level(self, rots, ts, dq, rows, parents, twists: Optional[Twists], newton: bool = False) -> bool:
+    def _level(self, rots, ts, dq, rows, parents, twists: Optional[Twists]) -> bool:
         """Rows of one level from their parents (solved rows): the parents' matrices inverted
         and checked, the rows predicted and corrected with them; with `twists` (the last
         level), the rows' twists too, from the parents' inverses (`_near_twists`)."""
@@ -374,7 +384,7 @@ class CompiledNewton:
         inverse = regular.inverse()
         slope, bend = self._predictor(rots[heads], ts[heads], inverse)
         done = self._chord(rots[parents], ts[parents], inverse[which], (slope[which], bend[which]),
-                           dq[parents], dq[rows], newton)
+                           dq[parents], dq[rows])
         if done is None:
             return False
         rots[rows], ts[rows] = done
@@ -452,9 +462,7 @@ class CompiledNewton:
 
     def _twists(self, rots, ts, regular: Regular) -> tuple[np.ndarray, np.ndarray]:
         """The twists and their rates at these poses, whose matrices are `regular`."""
-        rhs = np.zeros((len(rots), self.m))
-        rhs[:, self._driver_rows()] = self.rates
-        x_v = regular.solve(rhs)
+        x_v = regular.solve(self._rates(len(rots)))
         return x_v, regular.solve(self._accel_terms(rots, ts, x_v))
 
     def _near_twists(self, rots, ts, near: Regular, which) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -475,9 +483,7 @@ class CompiledNewton:
         np.negative(q, out=q)
         q.reshape(len(q), -1)[:, ::self.n + 1] += 2.0
         p = p @ q                                        # P (2I − S P)
-        rhs = np.zeros((len(rots), self.m))
-        rhs[:, self._driver_rows()] = self.rates
-        y_v, ok_v = refined(scaled, p, rows * rhs)
+        y_v, ok_v = refined(scaled, p, rows * self._rates(len(rots)))
         x_v = self._column * y_v
         y_a, ok_a = refined(scaled, p, rows * self._accel_terms(rots, ts, x_v))
         return x_v, self._column * y_a, ok & ok_v & ok_a
