@@ -6,10 +6,14 @@ The budget is CPU time of the working thread, not wall time: a valid model must 
 because the machine is busy with other work (a loaded server, a shared CI runner). Exact
 formulas are pure computation (no waiting on files or the network), so their CPU time is
 their cost; a hang that waits on something is bounded elsewhere (`limits.READ_SECONDS`).
+
+Steps that only make a formula read better (`within`) are bounded by a count instead, the
+operations they are given, so that the formulas shown are the same in every run.
 """
 from __future__ import annotations
 
 import signal
+import sys
 import threading
 import time
 from contextlib import contextmanager, nullcontext
@@ -27,11 +31,15 @@ class TimeUp(BaseException):
     """An optional step ran past its own time (`within`); never seen outside `within`."""
 
 
-POLISH_SHARE = 0.1          # of the budget, the time all optional steps of a command may take
-POLISH_SECONDS = 1.0        # ... and at most this much processor time (formulas past it are
-                            # shown in the form found)
+POLISH_OPS = 20_000         # the operations all optional steps of a command may be given
+                            # (their inputs' sizes, summed); past it, formulas are shown in the
+                            # form found. A count, not a time: every run, on any machine and
+                            # under any load, gives the same forms
+STEP_SECONDS = 0.5          # processor time one optional step may take: a safety net for a
+                            # rare input whose cost jumps (never reached by the sizes allowed)
 
 _deadline = threading.local()
+_unraisable = sys.unraisablehook
 _soft: list[float] = []     # the ends of the optional steps under way (main thread only)
 T = TypeVar("T")
 _clock = time.thread_time   # CPU seconds of this thread (a server's other requests not counted)
@@ -56,7 +64,7 @@ def budget(what: str, seconds: float | None = None, why: str = "") -> Iterator[N
     seconds = symbolic_seconds() if seconds is None else seconds
     stack = _state()
     end = _clock() + seconds
-    polish = time.process_time() + min(POLISH_SECONDS, POLISH_SHARE * seconds)   # processor time
+    polish = [POLISH_OPS]           # the operations left for optional steps, shared when nested
     if stack:
         end = min(end, stack[-1][0])
         polish = stack[-1][4]
@@ -94,27 +102,27 @@ def check(stage: str = "") -> None:
             raise _over()
 
 
-def within(seconds: float, step: Callable[..., T], *args: Any, default: Any = None) -> T:
-    """`step(*args)`, or `default` when it takes more than `seconds` of processor time, or
-    more than is left of the time for optional steps (`POLISH_SECONDS` of a command's
-    budget): for work that only makes a result read better (factoring, trigonometric
-    rewriting), whose cost can jump on a rare input. Processor time, not the clock, so
-    that a loaded machine gives the same forms, only later. In the main thread a timer
-    signal stops a step under way; in other threads a step runs whole until the time for
-    optional steps is spent."""
+def within(size: int, step: Callable[..., T], *args: Any, default: Any = None) -> T:
+    """`step(*args)` for work that only makes a result read better (factoring, trigonometric
+    rewriting), or `default` when its input's `size` (in operations) is more than is left of
+    the command's allowance (`POLISH_OPS`), which it then takes from. The allowance is a
+    count so that the forms shown never depend on the machine or its load. In the main
+    thread a timer signal also stops a step that takes more than `STEP_SECONDS` of processor
+    time (a rare input whose cost jumps); in other threads a step runs whole."""
     stack = _state()
-    now = time.process_time()
     if stack:
-        seconds = min(seconds, stack[-1][4] - now)
-    if seconds <= 0:
-        return default
+        allowance = stack[-1][4]
+        if size > allowance[0]:
+            return default
+        allowance[0] -= size
     if threading.current_thread() is not threading.main_thread() or not hasattr(signal, "setitimer"):
         return step(*args)
+    now = time.process_time()
     previous = signal.signal(signal.SIGVTALRM, _time_up)
-    _soft.append(now + seconds)
+    _soft.append(now + STEP_SECONDS)
     try:
         try:
-            signal.setitimer(signal.ITIMER_VIRTUAL, seconds, 0.02)
+            signal.setitimer(signal.ITIMER_VIRTUAL, STEP_SECONDS, 0.02)
             return step(*args)
         finally:
             signal.setitimer(signal.ITIMER_VIRTUAL, 0)
@@ -126,12 +134,6 @@ def within(seconds: float, step: Callable[..., T], *args: Any, default: Any = No
         signal.signal(signal.SIGVTALRM, previous)
         if _soft:                           # an outer step's timer, as it was
             signal.setitimer(signal.ITIMER_VIRTUAL, max(_soft[-1] - time.process_time(), 0.001), 0.02)
-
-
-def polish_left() -> float:
-    """Processor seconds left for optional steps in the current budget (inf without one)."""
-    stack = _state()
-    return stack[-1][4] - time.process_time() if stack else float("inf")
 
 
 def _time_up(signum: int, frame: Any) -> None:
@@ -184,3 +186,14 @@ def _ring(signum: int, frame: Any) -> None:
     stack = _state()
     if stack and _clock() > stack[-1][0]:
         raise _over()
+
+
+def _quiet(info: Any) -> None:
+    """A timer signal that lands in a weakref callback is printed and dropped by Python
+    ("Exception ignored in …"); the timer raises it again at its next tick, so it is not
+    news for the user's terminal."""
+    if not isinstance(info.exc_value, (TimeUp, OverBudget)):
+        _unraisable(info)
+
+
+sys.unraisablehook = _quiet

@@ -60,7 +60,6 @@ def _real_sqrt(x: float) -> float:
 
 MAX_BITS = int(limits.EXACT_DIGITS * math.log2(10)) + 1   # integers of an exact number
 TRIGSIMP_OPS = 40   # radicands simplified by trigsimp up to this size (beyond, it takes seconds)
-TRIGSIMP_SECONDS = 0.3   # ... and for at most this long (`budget.within`)
 
 
 def _radians(x: Any) -> Any:
@@ -135,10 +134,11 @@ class Symbolic:
         exact field, where trigsimp on a long radicand would take seconds)."""
         sp = self.sp
         x = sp.sympify(x)
-        if x.has(sp.sin, sp.cos) and sp.count_ops(x) <= TRIGSIMP_OPS:
+        size = sp.count_ops(x) if x.has(sp.sin, sp.cos) else TRIGSIMP_OPS + 1
+        if size <= TRIGSIMP_OPS:
             from ..budget import within
 
-            x = within(TRIGSIMP_SECONDS, _trigsimp_keeping_angles, x, default=x)
+            x = within(size, _trigsimp_keeping_angles, x, default=x)
         elif not x.is_number:
             from .fields import canonical
 
@@ -179,7 +179,7 @@ def _trigsimp_keeping_angles(x: Any) -> Any:
     angles = {f.args[0] for f in x.atoms(sp.sin, sp.cos) if f.args[0].is_number}
     if not angles:
         return sp.trigsimp(x)
-    held = {a: sp.Dummy(real=True) for a in angles}
+    held = {a: sp.Dummy(real=True) for a in sorted(angles, key=sp.default_sort_key)}   # one order
     simple = sp.trigsimp(x.replace(lambda e: isinstance(e, (sp.sin, sp.cos)) and e.args[0] in held,
                                    lambda e: e.func(held[e.args[0]])))
     return simple.xreplace({d: a for a, d in held.items()})

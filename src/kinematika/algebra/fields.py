@@ -17,10 +17,9 @@ the velocity of a point reads the same from every body that carries it.
 from __future__ import annotations
 
 import functools
-import time
 from typing import Any, Iterable
 
-from ..budget import polish_left, within
+from ..budget import within
 
 PRIME_LIMIT = 10 ** 12      # rational radicands up to this size are split into prime roots
 MAX_ROOTS = 40
@@ -59,7 +58,7 @@ class ExactField:
     """QQ[symbols, atoms]/(sin² + cos² − 1) with factored denominators and square roots."""
 
     def __init__(self, exprs: Iterable[Any], roots: bool = True, max_terms: int | None = None,
-                 deadline: float | None = None) -> None:
+                 max_work: int | None = None) -> None:
         import sympy
         from sympy.polys.orderings import lex
         from sympy.polys.rings import PolyRing
@@ -67,8 +66,8 @@ class ExactField:
         self.sp = sympy
         self.use_roots = roots
         self.max_terms = max_terms          # budget: terms of a value's numerators
-        self.deadline = deadline            # budget: time.process_time() past which work stops
-        self._steps = 0
+        self.max_work = max_work            # budget: terms of all values formed, summed (a
+        self._work = 0                      # count, so that every run gives the same forms)
         symbols: set = set()
         atoms: dict[Any, None] = {}
         self._scanned: set = set()
@@ -226,10 +225,11 @@ class ExactField:
         return out
 
     def _check(self, x: Value) -> None:
-        self._steps += 1
-        if self.deadline is not None and not self._steps % 32 and time.process_time() > self.deadline:
-            raise TooLarge("out of time")         # the clock read every 32 steps (it is a system call)
-        if self.max_terms is not None and sum(len(p) for p in x.num.values()) > self.max_terms:
+        terms = sum(len(p) for p in x.num.values())
+        self._work += terms
+        if self.max_work is not None and self._work > self.max_work:
+            raise TooLarge("too much work")
+        if self.max_terms is not None and terms > self.max_terms:
             raise TooLarge("too many terms")
 
     def _monomial(self, m1: int, m2: int) -> Value:
@@ -603,11 +603,9 @@ class RationalField:
 
 
 MAX_TERMS = 400          # a canonical form is computed within this many numerator terms ...
-MAX_SECONDS = 0.4        # ... and this processor time; past either, the factors' forms are kept
-MIN_SECONDS = 0.05       # (the time once the command's time for optional steps is spent)
+MAX_WORK = 200_000         # ... and this many terms formed in all; past either, the factors' forms are kept
 FACTOR_OPS = 60          # forms factored for reading up to this size (multivariate factoring
                          # is randomised and grows fast: a rare draw takes minutes on a long form)
-FACTOR_SECONDS = 0.3     # ... and for at most this long (`budget.within`), else kept as found
 COMMON_OPS = 600         # larger forms, past reading anyway, are not searched for common factors
 FACTOR_SEED = 1
 
@@ -693,8 +691,7 @@ def _whole(e: Any, max_terms: int = MAX_TERMS, written: bool = False) -> Any:
     for roots in (True, False):
         try:
             field = ExactField([e], roots=roots, max_terms=max_terms,
-                               deadline=time.process_time() + max(min(MAX_SECONDS, polish_left()),
-                                                                  MIN_SECONDS))
+                               max_work=MAX_WORK)
             value = field.back(field.to(e))
             break
         except DependentRoots:
@@ -708,7 +705,7 @@ def _whole(e: Any, max_terms: int = MAX_TERMS, written: bool = False) -> Any:
     elif ops(value) <= FACTOR_OPS:
         value = factored(value)
     elif ops(value) <= COMMON_OPS:          # too large to factor: common factors taken out
-        value = within(FACTOR_SECONDS, sympy.factor_terms, value, default=value)
+        value = within(ops(value), sympy.factor_terms, value, default=value)
     if not written:
         return value
     try:
@@ -719,13 +716,14 @@ def _whole(e: Any, max_terms: int = MAX_TERMS, written: bool = False) -> Any:
 
 def factored(e: Any) -> Any:
     """e factored with its roots as they are (a radicand keeps the way it is written), or e
-    itself when factoring takes longer than `FACTOR_SECONDS` (`budget.within`)."""
+    itself past the command's allowance for optional steps (`budget.within`)."""
     import sympy
 
-    roots = {p: sympy.Dummy() for p in e.atoms(sympy.Pow) if p.exp.is_Rational and not p.exp.is_Integer}
+    powers = sorted(e.atoms(sympy.Pow), key=sympy.default_sort_key)   # Dummies made in one order
+    roots = {p: sympy.Dummy() for p in powers if p.exp.is_Rational and not p.exp.is_Integer}
     if not roots:
-        return within(FACTOR_SECONDS, factor, e, default=e)
-    out = within(FACTOR_SECONDS, factor, e.xreplace(roots))
+        return within(ops(e), factor, e, default=e)
+    out = within(ops(e), factor, e.xreplace(roots))
     return e if out is None else out.xreplace({d: p for p, d in roots.items()})
 
 

@@ -186,8 +186,8 @@ class Reveal:
         out = []
         for f in sympy.Mul.make_args(e):
             base, power = f.as_base_exp()
-            deps = base.free_symbols & self.values.keys()
-            written = base.xreplace({s: self._name(s) if named and s in self.public
+            deps = sorted(base.free_symbols & self.values.keys(), key=str)   # names recorded
+            written = base.xreplace({s: self._name(s) if named and s in self.public  # in one order
                                      else self(self.values[s]) for s in deps})
             out.append(canonical(written) ** power)
         return sympy.Mul(*out)

@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import math
-import time
 from typing import Any, Mapping
 
 SIGNIFICANT = 12
@@ -133,14 +132,14 @@ def _tidy(x: Any) -> Any:
     if x.is_Atom or ops(x) > MAX_TIDY_OPS:   # past the budget: the canonical form
         return x
     if x.has(sympy.sin, sympy.cos):
-        deadline = time.process_time() + TRIG_SECONDS
-        x = x.replace(_trig_sum, lambda e: _shortest_trig_form(e, deadline))
+        x = x.replace(_trig_sum, _shortest_trig_form)
     return _absorb_sign(x.replace(_factored_root, _expanded_root))
 
 
 MAX_TRIG_TERMS = 24     # longer sums are left as they are: the rewriting would cost more than it saves
 MAX_TIDY_OPS = 200      # longer formulas are shown in their canonical form, not rewritten
-TRIG_SECONDS = 0.25     # the rewriting of one formula stops here, keeping the shortest form so far
+TRIG_FACTOR_OPS = 120   # longer sums are not factored after cos² → 1 − sin² (past it, factoring
+                        # takes up to seconds, a cost that jumps from one sum to the next)
 
 
 def _trig_sum(x: Any) -> bool:
@@ -152,7 +151,7 @@ def _trig_sum(x: Any) -> bool:
             and not any(p.exp.q != 1 for p in x.atoms(sympy.Pow) if p.exp.is_Rational))
 
 
-def _shortest_trig_form(x: Any, deadline: float = float("inf")) -> Any:
+def _shortest_trig_form(x: Any) -> Any:
     """The shortest of a few textbook rewritings of a sum in sines and cosines:
     sin a cos b − cos a sin b = sin(a − b); the square eliminated the other way
     (cos² → 1 − sin², so that (c² + 2cr sin θ + r²)² is seen); the sum made homogeneous
@@ -166,12 +165,12 @@ def _shortest_trig_form(x: Any, deadline: float = float("inf")) -> Any:
     if x in _SHORTEST:
         return _SHORTEST[x]
     forms = [x]
-    for rewrite in (TR10i, lambda e: factor(TR6(e)), _homogeneous):
-        left = deadline - time.process_time()
-        if left <= 0:
-            break
+    size = ops(x)
+    rewrites = (TR10i, lambda e: factor(TR6(e)), _homogeneous) if size <= TRIG_FACTOR_OPS else \
+        (TR10i, _homogeneous)
+    for rewrite in rewrites:
         try:
-            forms.append(within(left, rewrite, x))
+            forms.append(within(size, rewrite, x))
         except (sympy.PolynomialError, TypeError, ValueError):   # a form it cannot take
             continue
     out = min((f for f in forms if f is not None), key=ops)

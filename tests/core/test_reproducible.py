@@ -1,0 +1,92 @@
+"""Exact formulas are the same in every run: on a slower (or busier) machine, and whatever
+Python's string hashes are. The steps that only make a formula read better are bounded by
+a count of operations (`budget.within`), not by the clock."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import sympy
+
+from kinematika import budget
+
+ROOT = Path(__file__).resolve().parents[2]
+
+# the command line, with the clocks the budgets read running `factor` times as fast (the
+# machine as a loaded or slower one looks to them)
+RUN = """
+import sys, time
+factor = float(sys.argv[1])
+for name in ("process_time", "thread_time"):
+    real = getattr(time, name)
+    setattr(time, name, lambda real=real: factor * real())
+sys.argv = ["kinematika"] + sys.argv[2:]
+from kinematika.cli import main
+main()
+"""
+
+
+def _solve(model: Path, slower: float, hash_seed: str) -> dict:
+    env = dict(os.environ, PYTHONHASHSEED=hash_seed)
+    done = subprocess.run([sys.executable, "-c", RUN, str(slower), "solve", str(model),
+                           "--symbolic", "--json"], capture_output=True, text=True, env=env,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+def test_formulas_do_not_depend_on_the_clock_or_the_hashes(tmp_path):
+    """Jansen's leg with its crank angle a symbol (2 s of formulas, named coordinates, many
+    optional rewritings): the same answer, formula for formula and key for key, when the
+    clocks run three times as fast and the string hashes differ (it differed from run to
+    run when the rewritings had 1 s of processor time in all)."""
+    text = (ROOT / "examples" / "jansen_leg.yaml").read_text()
+    model = tmp_path / "jansen_theta.yaml"
+    model.write_text(text.replace("  theta: deg(90)", "  theta: null"))
+    first = _solve(model, 1.0, "1")
+    again = _solve(model, 3.0, "2")
+    assert list(first["where"]) == list(again["where"])
+    assert json.dumps(first) == json.dumps(again)
+
+
+def test_optional_steps_stop_at_the_allowance(monkeypatch):
+    """Within a command's budget the optional steps are given at most `POLISH_OPS`
+    operations in all: a step larger than what is left keeps its input's form, a smaller
+    one later still runs; outside a budget every step runs."""
+    monkeypatch.setattr(budget, "POLISH_OPS", 100)
+    ran = []
+
+    def step(x):
+        ran.append(x)
+        return x + 1
+
+    with budget.budget("the exact formulas", 60):
+        assert budget.within(60, step, 1, default=-1) == 2       # 40 left
+        assert budget.within(50, step, 2, default=-1) == -1      # more than is left
+        assert budget.within(40, step, 3, default=-1) == 4       # exactly what is left
+        assert budget.within(1, step, 4, default=-1) == -1
+    assert ran == [1, 3]
+    assert budget.within(10**9, step, 5) == 6
+
+
+@pytest.mark.parametrize("hash_seed", ["0", "1"])
+def test_factoring_with_roots_is_the_same_for_any_hashes(hash_seed):
+    """`fields.factored` holds each root as a stand-in while it factors: the stand-ins are
+    made in one order, so the factored form (its sign included) does not follow the order of
+    a set of roots, which follows the string hashes."""
+    code = ("import sympy; from kinematika.algebra.fields import factored; "
+            "s2, s5, s10 = sympy.sqrt(2), sympy.sqrt(5), sympy.sqrt(10); w = sympy.Symbol('w'); "
+            "print(factored(-w**2*1178 - 321*s10*w**2 - 372*s2*w**2 + 1440*s5*w**2))")
+    env = dict(os.environ, PYTHONHASHSEED=hash_seed)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env,
+                         check=True).stdout.strip()
+    w = sympy.Symbol("w")
+    expected = w**2 * (-1178 - 321 * sympy.sqrt(10) - 372 * sympy.sqrt(2) + 1440 * sympy.sqrt(5))
+    assert sympy.simplify(sympy.sympify(out) - expected) == 0
+    reference = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                               env=dict(os.environ, PYTHONHASHSEED="7"), check=True).stdout.strip()
+    assert out == reference
