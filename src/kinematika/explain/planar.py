@@ -49,7 +49,10 @@ class PlanarSteps:
             self.known.update(step.bodies)
         if self.level == "a" and self.ctx.symbolic and self.ctx.inst.names:
             first = next(iter(self.ctx.model.moving_bodies))
-            sec.blocks.insert(1, msg("a.named", name=f"omega_{first}", body=body(first)))
+            import sympy
+
+            named = Value(sympy.Symbol(f"omega_{first}"), "")      # written as in the formulas: ω_crank
+            sec.blocks.insert(1, msg("a.named", name=named, body=body(first)))
         return sec
 
     # one step ----------------------------------------------------------------------------

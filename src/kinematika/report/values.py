@@ -86,16 +86,17 @@ def formula(x: Any) -> str:
 PLAIN_ORDER_OPS = 1000  # longer formulas are printed with their terms in sympy's stored order
 
 
-def _printed(x: Any) -> str:
+def _printed(x: Any, printer: Any = None) -> str:
     """sympy's text of `x`; a long formula's sums are not sorted by degree first (sorting
-    takes most of the printing there, and such a formula is read by a program anyway)."""
+    takes most of the printing there, and such a formula is read by a program anyway).
+    `printer`: a StrPrinter subclass to print with (the explanations mark the symbols)."""
     from ..algebra.fields import ops
 
     if ops(x) <= PLAIN_ORDER_OPS:
-        return str(x)
+        return str(x) if printer is None else printer().doprint(x)
     from sympy.printing.str import StrPrinter
 
-    return StrPrinter({"order": "none"}).doprint(x)
+    return (printer or StrPrinter)({"order": "none"}).doprint(x)
 
 
 _TEXT: dict[Any, str] = {}      # printing a long formula takes long: each is printed once

@@ -8,6 +8,7 @@ from typing import Any
 from ..document import Drawing, Equation, Figure, Name, Sym
 from .base import Renderer, visible
 from .svg import embedded, svg
+from .names import html_name
 from .unicode import unicode_formula
 
 CSS = """
@@ -35,12 +36,12 @@ class HtmlRenderer(Renderer):
 
     def name(self, n: Name) -> str:
         """Points upright and sans serif (as the figures letter them), bodies in italics,
-        joints sans serif, parameters as symbols."""
+        joints sans serif, parameters as symbols (θ<sub>2</sub>, as in the formulas)."""
+        if n.kind == "param":
+            return f"<i>{html_name(n.text)}</i>"
         text = self.esc(n.text)
         if n.kind == "body":
             return f'<i class="bd">{text}</i>'
-        if n.kind == "param":
-            return f"<i>{text}</i>"
         return f'<span class="{"jt" if n.kind == "joint" else "pt"}">{text}</span>'
 
     def sym(self, s: Sym) -> str:
@@ -52,7 +53,7 @@ class HtmlRenderer(Renderer):
         return f"{mantissa}×10<sup>{str(exponent).replace('-', '−')}</sup>"
 
     def formula(self, expr: Any) -> str:
-        return self.decimals(escape(unicode_formula(expr)))
+        return self.decimals(unicode_formula(expr, html_name, escape))
 
     def page(self, body: str) -> str:
         return (f'<!DOCTYPE html>\n<html lang="{self.cat.lang}">\n<head>\n<meta charset="utf-8">\n'

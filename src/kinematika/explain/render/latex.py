@@ -7,6 +7,7 @@ from typing import Any
 from ..document import Equation, Figure, Name, Sym
 from .base import DECIMAL, Renderer, visible
 from .svg import COLOURS, MARGIN, WIDTH, Text, layout, nice, sym_text
+from .names import latex_name
 from .unicode import latex_formula
 
 TEXT = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
@@ -60,9 +61,12 @@ class LatexRenderer(Renderer):
         return tex_text(visible(text))
 
     def name(self, n: Name) -> str:
-        """Points and joints sans serif, bodies emphasised, parameters italic."""
+        """Points and joints sans serif, bodies emphasised, parameters as symbols in math
+        (as `sympy.latex` writes them in the formulas: \\theta_{2})."""
+        if n.kind == "param":
+            return f"${latex_name(n.text)}$"
         text = self.esc(n.text)
-        command = {"body": "emph", "param": "textit"}.get(n.kind, "textsf")
+        command = {"body": "emph"}.get(n.kind, "textsf")
         return f"\\{command}{{{text}}}"
 
     def math_sym(self, s: Sym) -> str:

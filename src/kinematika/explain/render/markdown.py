@@ -9,6 +9,7 @@ from typing import Any
 from ..document import Drawing, Equation, Figure, Name, Sym
 from .base import Renderer, visible
 from .svg import svg
+from .names import unicode_name
 from .unicode import unicode_formula
 
 MARKUP = re.compile(r"([\\`*_\[\]<>|])")       # what Markdown would read as markup
@@ -26,8 +27,9 @@ class MarkdownRenderer(Renderer):
         return MARKUP.sub(r"\\\1", text)
 
     def name(self, n: Name) -> str:
-        """Bodies in italics, the other names as they are (escaped)."""
-        text = self.esc(n.text)
+        """Bodies and parameters in italics (parameters as symbols: θ₂, x_B), the other
+        names as they are (escaped)."""
+        text = self.esc(unicode_name(n.text)).replace("\\_", "_") if n.kind == "param" else self.esc(n.text)
         return f"*{text}*" if n.kind in ("body", "param") and not self.code else text
 
     def sym(self, s: Sym) -> str:

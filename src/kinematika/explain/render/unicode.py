@@ -1,13 +1,43 @@
-"""Exact values as readable one-line Unicode formulas (HTML, Markdown) or LaTeX."""
+"""Exact values as readable one-line Unicode formulas (HTML, Markdown) or LaTeX, with the
+model's names written as a teacher writes them (θ₂, x_B: `names`)."""
 from __future__ import annotations
 
 import re
 from functools import lru_cache
-from typing import Any
+from typing import Any, Callable
 
-from ...report.values import formula, tidy
+from sympy.printing.str import StrPrinter
+
+from ...report.values import _printed, tidy
+from .names import latex_name, unicode_name
 
 SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+MARK = 0xF0000                              # a symbol's place in a formula's text: one private character
+MARKS = re.compile("[\U000F0000-\U000FFFFD]")
+
+
+class _Marking(StrPrinter):
+    """sympy's text with each symbol as one private character (its index in `names`), so
+    that no symbol is mistaken for a word, a function or a constant of the same spelling
+    (a parameter named `pi`, `E` or `sin`); the constants as a reader writes them."""
+
+    def __init__(self, settings: dict | None = None, names: list | None = None) -> None:
+        super().__init__(settings)
+        self.names = names if names is not None else []
+
+    def _print_Symbol(self, expr: Any) -> str:
+        if expr.name not in self.names:
+            self.names.append(expr.name)
+        return chr(MARK + self.names.index(expr.name))
+
+    def _print_Pi(self, expr: Any) -> str:
+        return "π"
+
+    def _print_Exp1(self, expr: Any) -> str:
+        return "e"
+
+    def _print_ImaginaryUnit(self, expr: Any) -> str:
+        return "i"
 
 
 @lru_cache(maxsize=4096)
@@ -16,14 +46,24 @@ def _tidy(expr: Any) -> Any:
     return tidy(expr)
 
 
-def unicode_formula(expr: Any) -> str:
-    """`sqrt(2)*r**2*w/4` as `√2·r²·w/4`."""
-    text = _bars(formula(expr))              # printed once (a long formula takes long to print)
+@lru_cache(maxsize=4096)
+def _marked(expr: Any) -> tuple[str, tuple[str, ...]]:
+    """The Unicode formula with its symbols marked, and their names: printed once (a long
+    formula takes long to print), written out by each format."""
+    names: list[str] = []
+    text = _bars(_printed(_tidy(expr), lambda settings=None: _Marking(settings, names)))
     text = re.sub(r"\*\*(-?\d+)", lambda m: m.group(1).translate(SUPERSCRIPTS), text)
-    text = re.sub(r"sqrt\((\w+)\)", r"√\1", text)
+    text = re.sub(r"sqrt\(([\w\U000F0000-\U000FFFFD]+)\)", r"√\1", text)
     text = text.replace("sqrt(", "√(").replace("**", "^").replace("*", "·")
-    text = re.sub(r"\bpi\b", "π", text)
-    return text.replace(" - ", " − ").replace("-", "−")
+    return text.replace(" - ", " − ").replace("-", "−"), tuple(names)
+
+
+def unicode_formula(expr: Any, name: Callable[[str], str] = unicode_name,
+                    esc: Callable[[str], str] = lambda text: text) -> str:
+    """`sqrt(2)*r**2*theta2/4` as `√2·r²·θ₂/4`: the text through `esc` (HTML's escaping),
+    each symbol as `name` writes it."""
+    text, names = _marked(expr)
+    return MARKS.sub(lambda m: name(names[ord(m.group()) - MARK]), esc(text))
 
 
 def _bars(text: str) -> str:
@@ -39,6 +79,9 @@ def _bars(text: str) -> str:
 
 
 def latex_formula(expr: Any) -> str:
+    """sympy's LaTeX; a symbol named like the constant π (`pi`, `pi2`) as the word."""
     import sympy
 
-    return sympy.latex(_tidy(expr))
+    shown = _tidy(expr)
+    own = {s: latex_name(s.name) for s in getattr(shown, "free_symbols", ()) if s.name.startswith("pi")}
+    return sympy.latex(shown, symbol_names=own) if own else sympy.latex(shown)

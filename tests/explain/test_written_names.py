@@ -1,0 +1,165 @@
+"""Names as a teacher writes them in the explanations (θ₂, ω with the subscript link5, x
+with the subscript B), in formulas, prose, definitions and captions, while the answers keep
+sympy's syntax; the expected texts are written by hand."""
+from __future__ import annotations
+
+import json
+import re
+
+import pytest
+import sympy
+from typer.testing import CliRunner
+
+import kinematika
+from kinematika.cli import app as cli
+from kinematika.explain import build, render
+from kinematika.explain.render.names import html_name, latex_name, unicode_name
+
+from .helpers import EXAMPLES
+
+LINK = """name: Names
+parameters:
+  atheta: 2
+  theta: deg(30)
+  theta2: deg(20)
+  omega_link5: 3
+points:
+  O: [0, 0]
+  A: {from: O, distance: atheta, angle: theta + theta2}
+bodies:
+  ground: [O]
+  link5: [O, A]
+joints:
+  - {type: revolute, bodies: [ground, link5], at: O}
+drivers:
+  - {omega: link5, value: omega_link5, alpha: 0}
+ask:
+  - {velocity: A}
+"""
+
+# parameters spelt as sympy's constants and a Python keyword; deg(90) brings in the constant π
+CONSTANTS = """name: Constants
+parameters:
+  pi: deg(30)
+  E: 3
+  I: 2
+  lambda: 5
+points:
+  O: [0, 0]
+  A: {from: O, distance: lambda*I, angle: pi + deg(90)}
+bodies:
+  ground: [O]
+  crank: [O, A]
+joints:
+  - {type: revolute, bodies: [ground, crank], at: O}
+drivers:
+  - {omega: crank, value: E, alpha: 0}
+ask:
+  - {velocity: A}
+"""
+
+
+@pytest.mark.parametrize("name, text, html", [
+    ("theta", "θ", "θ"), ("theta2", "θ₂", "θ<sub>2</sub>"), ("alpha3", "α₃", "α<sub>3</sub>"),
+    ("Omega", "Ω", "Ω"), ("lambda", "λ", "λ"), ("phi12", "φ₁₂", "φ<sub>12</sub>"),
+    ("omega_link5", "ω_link5", "ω<sub>link5</sub>"), ("x_B", "x_B", "x<sub>B</sub>"),
+    ("v0x_link", "v0x_link", "v0x<sub>link</sub>"), ("omega_left_arm", "ω_left_arm", "ω<sub>left_arm</sub>"),
+    ("x_theta", "x_θ", "x<sub>θ</sub>"), ("x__2", "x²", "x<sup>2</sup>"), ("w2", "w₂", "w<sub>2</sub>"),
+    ("atheta", "atheta", "atheta"), ("thetas", "thetas", "thetas"), ("d", "d", "d"),
+    ("pi", "pi", "pi"), ("pi2", "pi₂", "pi<sub>2</sub>"), ("E", "E", "E"), ("I", "I", "I"),
+    ("x_", "x_", "x_"), ("θ2", "θ₂", "θ<sub>2</sub>"),
+])
+def test_names_by_hand(name, text, html):
+    assert unicode_name(name) == text
+    assert html_name(name) == html
+
+
+def test_latex_names_are_sympys_but_pi():
+    """LaTeX as sympy writes the symbol in a formula (so text and formulas agree); a
+    parameter named pi is the word, the constant stays \\pi."""
+    for name, tex in [("theta2", r"\theta_{2}"), ("omega_link5", r"\omega_{link5}"), ("x_B", "x_{B}"),
+                      ("lambda", r"\lambda"), ("E", "E")]:
+        assert latex_name(name) == tex == sympy.latex(sympy.Symbol(name))
+    assert latex_name("pi") == r"\mathit{pi}" and latex_name("pi_B") == r"\mathit{pi}_{B}"
+
+
+def test_html_name_escapes():
+    assert html_name("a&b_<c>") == "a&amp;b<sub>&lt;c&gt;</sub>"
+
+
+@pytest.fixture(scope="module")
+def four_bar():
+    sol = kinematika.solve(EXAMPLES / "four_bar.yaml", symbolic=True)
+    return build(sol)
+
+
+def test_four_bar_symbolic(four_bar):
+    """The crank angle theta2 and speed w2 of the four-bar read θ₂ and w₂ in the prose,
+    the formulas and the caption of the drawing, in every format."""
+    page = render(four_bar, "en", "html", drawings=False)
+    assert "at θ<sub>2</sub> from the x axis: <span class=\"pt\">A</span> = (a·cos(θ<sub>2</sub>), " \
+           "a·sin(θ<sub>2</sub>))" in page
+    assert "(−a·w<sub>2</sub>·sin(θ<sub>2</sub>), a·w<sub>2</sub>·cos(θ<sub>2</sub>))" in page
+    assert "theta" not in page and not re.search(r"\bw2\b", page)
+    text = render(four_bar, "es", "md", drawings=False)
+    assert "A = (a·cos(θ₂); a·sin(θ₂))" in text and "theta" not in text     # Spanish separates by ;
+    tex = render(four_bar, "eu", "tex", drawings=False)
+    assert r"a \cos{\left(\theta_{2} \right)}" in tex and "theta2" not in tex
+    drawn = render(four_bar, "en", "html")                    # the drawing's caption names the values
+    assert "<i>θ<sub>2</sub></i> = 1.571" in drawn and "<i>w<sub>2</sub></i> = 10" in drawn
+
+
+def test_answers_keep_sympys_names(tmp_path):
+    """The JSON answer is the contract: its formulas stay in sympy's syntax."""
+    out = CliRunner().invoke(cli, ["solve", str(EXAMPLES / "four_bar.yaml"), "--symbolic", "--json"])
+    text = json.dumps(json.loads(out.stdout), ensure_ascii=False)
+    assert "theta2" in text and "w2" in text and "θ" not in text
+
+
+def _explained(tmp_path, source: str):
+    path = tmp_path / "model.yaml"
+    path.write_text(source)
+    return build(kinematika.solve(path, symbolic=True))
+
+
+def test_a_name_inside_another_is_left_whole(tmp_path):
+    """theta, theta2 and atheta are three names: θ, θ₂ and atheta; omega_link5 is ω_link5
+    (the body link5 as its subscript) and the word "the" of the prose is untouched."""
+    doc = _explained(tmp_path, LINK)
+    page = render(doc, "en", "html", drawings=False)
+    assert "at distance atheta from <span class=\"pt\">O</span>, at θ + θ<sub>2</sub> from the x axis" in page
+    assert "(−atheta·ω<sub>link5</sub>·sin(θ + θ<sub>2</sub>), atheta·ω<sub>link5</sub>·cos(θ + θ<sub>2</sub>))" in page
+    assert set(re.findall(r"\w*theta\w*", page)) == {"atheta"} and "omega" not in page
+    text = render(doc, "ca", "md", drawings=False)
+    assert "(−atheta·ω_link5·sin(θ + θ₂); atheta·ω_link5·cos(θ + θ₂))" in text
+
+
+def test_names_spelt_as_constants(tmp_path):
+    """Parameters named pi, E, I and lambda: pi stays the word (π is the constant, which
+    deg(90) brings in), E and I stay letters, lambda is λ; sin(pi) is not taken for 0."""
+    doc = _explained(tmp_path, CONSTANTS)
+    text = render(doc, "en", "md", drawings=False)
+    assert "A is at distance I·λ from O, at (2·pi + π)/2 from the x axis: A = (−I·λ·sin(pi), I·λ·cos(pi))" in text
+    assert "(−E·I·λ·cos(pi), −E·I·λ·sin(pi))" in text and "lambda" not in text
+    tex = render(doc, "en", "tex", drawings=False)
+    assert r"\frac{2 \mathit{pi} + \pi}{2}" in tex and r"\sin{\left(\mathit{pi} \right)}" in tex
+
+
+@pytest.fixture(scope="module")
+def jansen(tmp_path_factory):
+    """Jansen's leg with its crank angle a symbol: its points' coordinates are named."""
+    text = (EXAMPLES / "jansen_leg.yaml").read_text()
+    assert "  theta: deg(90)" in text
+    path = tmp_path_factory.mktemp("jansen") / "jansen_theta.yaml"
+    path.write_text(text.replace("  theta: deg(90)", "  theta: null"))
+    return build(kinematika.solve(path))
+
+
+@pytest.mark.parametrize("lang, here", [("en", "Here"), ("eu", "Hemen,")])
+def test_named_coordinates_as_subscripts(jansen, lang, here):
+    """'Here x_B = …' defines x with the subscript B, and the formulas use it so."""
+    page = render(jansen, lang, "html", drawings=False)
+    for name in ("B", "E", "D", "F", "P"):
+        assert f"{here} x<sub>{name}</sub> = " in page and f"{here} y<sub>{name}</sub> = " in page
+    assert "x_B" not in page and "·sin(θ)" in page and "theta" not in page
+    assert "ω<sub>crank</sub>" in page                        # the named angular velocities, by name
