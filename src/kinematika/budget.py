@@ -19,6 +19,7 @@ import time
 from contextlib import contextmanager, nullcontext
 from typing import Any, Callable, ContextManager, Iterator, TypeVar
 
+from . import memo
 from .errors import KinematikaError
 from .limits import symbolic_seconds
 
@@ -72,7 +73,8 @@ def budget(what: str, seconds: float | None = None, why: str = "") -> Iterator[N
     stack.append([end, what, seconds, "", polish, why])
     alarm = _arm(end) if len(stack) == 1 else None
     try:
-        yield
+        with memo.fresh() if len(stack) == 1 else nullcontext():   # a command's own memory
+            yield
     finally:
         stack.pop()
         if alarm is not None:

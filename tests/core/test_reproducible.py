@@ -90,3 +90,25 @@ def test_factoring_with_roots_is_the_same_for_any_hashes(hash_seed):
     reference = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                                env=dict(os.environ, PYTHONHASHSEED="7"), check=True).stdout.strip()
     assert out == reference
+
+
+def test_what_a_command_remembers_is_its_own():
+    """Forms remembered in a command (`budget.budget`) are forgotten when it ends and not
+    seen by another command, so that the page's server (many commands in one process)
+    answers as a fresh command line does; outside a command one memory serves the process."""
+    from kinematika.memo import Memo
+
+    memo = Memo(4)
+    memo.put("outside", 1)
+    with budget.budget("the exact formulas", 60):
+        assert memo.get("outside") is None
+        memo.put("first", 2)
+        with budget.budget("a nested stage", 60):       # the same command
+            assert memo.get("first") == 2
+    with budget.budget("the exact formulas", 60):
+        assert memo.get("first") is None
+    assert memo.get("outside") == 1
+    assert memo.get("first") is None
+    for k in range(5):                                  # bounded: emptied when full
+        memo.put(k, k)
+    assert memo.get(0) is None and memo.get(4) == 4

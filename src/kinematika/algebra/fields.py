@@ -20,6 +20,7 @@ import functools
 from typing import Any, Iterable
 
 from ..budget import within
+from ..memo import Memo
 
 PRIME_LIMIT = 10 ** 12      # rational radicands up to this size are split into prime roots
 MAX_ROOTS = 40
@@ -449,9 +450,7 @@ class ExactField:
                 other = self._written(written)
                 if ops(other) <= ops(shown):
                     shown = other
-            if len(_ROOTS_SHOWN) > 4096:
-                _ROOTS_SHOWN.clear()
-            _ROOTS_SHOWN[plain] = shown
+            _ROOTS_SHOWN.put(plain, shown)
         self.root_exprs.append(self.sp.Pow(shown, self.sp.S.Half))
         self._root_of[key] = index
         return index
@@ -492,8 +491,8 @@ class ExactField:
         return self._den_exprs[f]
 
 
-_ROOTS_SHOWN: dict[Any, Any] = {}   # a radicand's canonical form -> how its root is written,
-                                    # the same in every field, so that equal roots combine
+_ROOTS_SHOWN = Memo(4096)   # a radicand's canonical form -> how its root is written, the
+                            # same in every field of a command, so that equal roots combine
 
 
 def _monomial_gcd(polys: list) -> tuple:
@@ -619,17 +618,14 @@ def ops(e: Any) -> Any:
     kind in one pass over its shared subtrees (count_ops takes a tenth of a second there)."""
     import sympy
 
-    if e in _OPS:
-        return _OPS[e]
+    known = _OPS.get(e)
+    if known is not None:
+        return known
     quick = _quick_ops(e, {})
-    out = sympy.count_ops(e) if quick <= EXACT_OPS else quick
-    if len(_OPS) > 8192:
-        _OPS.clear()
-    _OPS[e] = out
-    return out
+    return _OPS.put(e, sympy.count_ops(e) if quick <= EXACT_OPS else quick)
 
 
-_OPS: dict[Any, int] = {}     # a form's size is asked by each step that weighs it
+_OPS = Memo(8192)   # a form's size is asked by each step that weighs it
 
 
 def _quick_ops(e: Any, memo: dict) -> int:
@@ -656,16 +652,15 @@ def canonical(e: Any) -> Any:
     e = sympy.sympify(e)
     if e.is_Atom:
         return e
-    if e not in _KNOWN:
-        if len(_KNOWN) > 8192:
-            _KNOWN.clear()
-        out = _canonical(e)
-        _KNOWN[e] = _KNOWN[out] = out        # a canonical form is its own canonical form
-    return _KNOWN[e]
+    known = _KNOWN.get(e)
+    if known is None:
+        known = _KNOWN.put(e, _canonical(e))
+        _KNOWN.put(known, known)             # a canonical form is its own canonical form
+    return known
 
 
-_KNOWN: dict[Any, Any] = {}   # remembered: the same velocity is often asked of several material
-                              # points, and the same value is shown in the answers and the tables
+_KNOWN = Memo(8192)     # the same velocity is often asked of several material points, and
+                        # the same value is shown in the answers and the tables
 
 
 def _canonical(e: Any) -> Any:

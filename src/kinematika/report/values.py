@@ -4,6 +4,8 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
+from ..memo import Memo
+
 SIGNIFICANT = 12
 
 
@@ -76,11 +78,8 @@ def numbers(values: Any, scale: float = 1.0) -> Any:
 def formula(x: Any) -> str:
     """A simplified formula in sympy's syntax (`4*Omega/3`, `sqrt(2)*r*w/4`)."""
     shown = tidy(x)
-    if shown not in _TEXT:
-        if len(_TEXT) > 4096:
-            _TEXT.clear()
-        _TEXT[shown] = _printed(shown)
-    return _TEXT[shown]
+    text = _TEXT.get(shown)
+    return _TEXT.put(shown, _printed(shown)) if text is None else text
 
 
 PLAIN_ORDER_OPS = 1000  # longer formulas are printed with their terms in sympy's stored order
@@ -99,7 +98,7 @@ def _printed(x: Any, printer: Any = None) -> str:
     return (printer or StrPrinter)({"order": "none"}).doprint(x)
 
 
-_TEXT: dict[Any, str] = {}      # printing a long formula takes long: each is printed once
+_TEXT = Memo(4096)  # printing a long formula takes long: each is printed once
 
 
 def tidy(x: Any) -> Any:
@@ -113,15 +112,12 @@ def tidy(x: Any) -> Any:
     x = sympy.sympify(x)
     if x.is_Atom:
         return x
-    if x not in _TIDY:
-        if len(_TIDY) > 4096:
-            _TIDY.clear()
-        _TIDY[x] = _tidy(canonical(x))
-    return _TIDY[x]
+    shown = _TIDY.get(x)
+    return _TIDY.put(x, _tidy(canonical(x))) if shown is None else shown
 
 
-_TIDY: dict[Any, Any] = {}      # remembered: a point's velocity is asked of every body that
-                                # carries it, and answers repeat the tables' entries
+_TIDY = Memo(4096)  # a point's velocity is asked of every body that carries it, and
+                    # answers repeat the tables' entries
 
 
 def _tidy(x: Any) -> Any:
@@ -163,8 +159,9 @@ def _shortest_trig_form(x: Any) -> Any:
     from ..algebra.fields import factor, ops
     from ..budget import within
 
-    if x in _SHORTEST:
-        return _SHORTEST[x]
+    known = _SHORTEST.get(x)
+    if known is not None:
+        return known
     forms = [x]
     size = ops(x)
     rewrites = (TR10i, lambda e: factor(TR6(e)), _homogeneous) if size <= TRIG_FACTOR_OPS else \
@@ -174,14 +171,10 @@ def _shortest_trig_form(x: Any) -> Any:
             forms.append(within(size, rewrite, x))
         except (sympy.PolynomialError, TypeError, ValueError):   # a form it cannot take
             continue
-    out = min((f for f in forms if f is not None), key=ops)
-    if len(_SHORTEST) > 4096:
-        _SHORTEST.clear()
-    _SHORTEST[x] = out
-    return out
+    return _SHORTEST.put(x, min((f for f in forms if f is not None), key=ops))
 
 
-_SHORTEST: dict[Any, Any] = {}      # the same sums recur in the formulas of one mechanism
+_SHORTEST = Memo(4096)  # the same sums recur in the formulas of one mechanism
 
 
 def _homogeneous(x: Any) -> Any:
