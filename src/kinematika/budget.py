@@ -109,8 +109,10 @@ def within(size: int, step: Callable[..., T], *args: Any, default: Any = None) -
     rewriting), or `default` when its input's `size` (in operations) is more than is left of
     the command's allowance (`POLISH_OPS`), which it then takes from. The allowance is a
     count so that the forms shown never depend on the machine or its load. In the main
-    thread a timer signal also stops a step that takes more than `STEP_SECONDS` of processor
-    time (a rare input whose cost jumps); in other threads a step runs whole."""
+    thread a timer signal also stops a step that takes more than `STEP_SECONDS` of the
+    thread's own processor time (a rare input whose cost jumps; other threads' work, such as
+    the page's server answering other requests, does not count); in other threads a step
+    runs whole."""
     stack = _state()
     if stack:
         allowance = stack[-1][4]
@@ -119,9 +121,8 @@ def within(size: int, step: Callable[..., T], *args: Any, default: Any = None) -
         allowance[0] -= size
     if threading.current_thread() is not threading.main_thread() or not hasattr(signal, "setitimer"):
         return step(*args)
-    now = time.process_time()
     previous = signal.signal(signal.SIGVTALRM, _time_up)
-    _soft.append(now + STEP_SECONDS)
+    _soft.append(_clock() + STEP_SECONDS)
     try:
         try:
             signal.setitimer(signal.ITIMER_VIRTUAL, STEP_SECONDS, 0.02)
@@ -135,12 +136,15 @@ def within(size: int, step: Callable[..., T], *args: Any, default: Any = None) -
         signal.setitimer(signal.ITIMER_VIRTUAL, 0)
         signal.signal(signal.SIGVTALRM, previous)
         if _soft:                           # an outer step's timer, as it was
-            signal.setitimer(signal.ITIMER_VIRTUAL, max(_soft[-1] - time.process_time(), 0.001), 0.02)
+            signal.setitimer(signal.ITIMER_VIRTUAL, max(_soft[-1] - _clock(), 0.001), 0.02)
 
 
 def _time_up(signum: int, frame: Any) -> None:
-    """The processor-time timer of `within`: stop the step under way once past its end."""
-    if _soft and time.process_time() + 0.002 >= _soft[-1]:
+    """The timer of `within`: stop the step under way once this thread's processor time is
+    past its end. The timer counts the whole process (the page's server threads, BLAS
+    threads), so it rings early when other threads work; it then rings every 0.02 s until
+    the thread's own time is up."""
+    if _soft and _clock() + 0.002 >= _soft[-1]:
         raise TimeUp()
 
 

@@ -112,3 +112,37 @@ def test_what_a_command_remembers_is_its_own():
     for k in range(5):                                  # bounded: emptied when full
         memo.put(k, k)
     assert memo.get(0) is None and memo.get(4) == 4
+
+
+def test_other_threads_work_does_not_cut_a_step_short(monkeypatch):
+    """The safety net of an optional step counts the main thread's own processor time: a
+    step of 0.15 s of it ends whole while another thread works (the page's server answering
+    while the command line solves in the same process), though the process as a whole
+    spends more than the step's 0.2 s meanwhile. A step past its time is still stopped."""
+    import threading
+    import time
+
+    monkeypatch.setattr(budget, "STEP_SECONDS", 0.2)
+
+    def spend(seconds):
+        start = time.thread_time()
+        while time.thread_time() - start < seconds:
+            pass
+        return "whole"
+
+    stop = threading.Event()
+
+    def busy():
+        while not stop.is_set():
+            sum(range(1000))
+
+    other = threading.Thread(target=busy)
+    other.start()
+    try:
+        process = time.process_time()
+        assert budget.within(1, spend, 0.15, default="stopped") == "whole"
+        assert time.process_time() - process > 0.2          # the others worked meanwhile
+        assert budget.within(1, spend, 2.0, default="stopped") == "stopped"
+    finally:
+        stop.set()
+        other.join()
