@@ -17,46 +17,30 @@ from kinematika.explain.render.names import html_name, latex_name, unicode_name
 
 from .helpers import EXAMPLES
 
-LINK = """name: Names
-parameters:
-  atheta: 2
-  theta: deg(30)
-  theta2: deg(20)
-  omega_link5: 3
+def crank(parameters: dict, distance: str, angle: str, body: str, omega: str) -> str:
+    """A crank O–A turned by a driver, placed polar: the smallest model with formulas."""
+    given = "".join(f"\n  {k}: {v}" for k, v in parameters.items())
+    return f"""name: Names
+parameters:{given}
 points:
   O: [0, 0]
-  A: {from: O, distance: atheta, angle: theta + theta2}
+  A: {{from: O, distance: {distance}, angle: {angle}}}
 bodies:
   ground: [O]
-  link5: [O, A]
+  {body}: [O, A]
 joints:
-  - {type: revolute, bodies: [ground, link5], at: O}
+  - {{type: revolute, bodies: [ground, {body}], at: O}}
 drivers:
-  - {omega: link5, value: omega_link5, alpha: 0}
+  - {{omega: {body}, value: {omega}, alpha: 0}}
 ask:
-  - {velocity: A}
+  - {{velocity: A}}
 """
 
+
+LINK = crank({"atheta": 2, "theta": "deg(30)", "theta2": "deg(20)", "omega_link5": 3},
+             "atheta", "theta + theta2", "link5", "omega_link5")
 # parameters spelt as sympy's constants and a Python keyword; deg(90) brings in the constant π
-CONSTANTS = """name: Constants
-parameters:
-  pi: deg(30)
-  E: 3
-  I: 2
-  lambda: 5
-points:
-  O: [0, 0]
-  A: {from: O, distance: lambda*I, angle: pi + deg(90)}
-bodies:
-  ground: [O]
-  crank: [O, A]
-joints:
-  - {type: revolute, bodies: [ground, crank], at: O}
-drivers:
-  - {omega: crank, value: E, alpha: 0}
-ask:
-  - {velocity: A}
-"""
+CONSTANTS = crank({"pi": "deg(30)", "E": 3, "I": 2, "lambda": 5}, "lambda*I", "pi + deg(90)", "crank", "E")
 
 
 @pytest.mark.parametrize("name, text, html", [
