@@ -3,11 +3,11 @@ model's names written as a teacher writes them (θ₂, x_B: `names`)."""
 from __future__ import annotations
 
 import re
-from functools import lru_cache
 from typing import Any, Callable
 
 from sympy.printing.str import StrPrinter
 
+from ...memo import Memo
 from ...report.values import _printed, tidy
 from .names import latex_name, unicode_name
 
@@ -40,22 +40,22 @@ class _Marking(StrPrinter):
         return "i"
 
 
-@lru_cache(maxsize=4096)
-def _tidy(expr: Any) -> Any:
-    """Simplified once per expression: the four languages and three formats share it."""
-    return tidy(expr)
-
-
-@lru_cache(maxsize=4096)
 def _marked(expr: Any) -> tuple[str, tuple[str, ...]]:
-    """The Unicode formula with its symbols marked, and their names: printed once (a long
-    formula takes long to print), written out by each format."""
+    """The Unicode formula with its symbols marked, and their names: printed once in a
+    command (a long formula takes long to print), written out by each language and format."""
+    shown = tidy(expr)
+    known = _MARKED.get(shown)
+    if known is not None:
+        return known
     names: list[str] = []
-    text = _bars(_printed(_tidy(expr), lambda settings=None: _Marking(settings, names)))
+    text = _bars(_printed(shown, lambda settings=None: _Marking(settings, names)))
     text = re.sub(r"\*\*(-?\d+)", lambda m: m.group(1).translate(SUPERSCRIPTS), text)
     text = re.sub(r"sqrt\(([\w\U000F0000-\U000FFFFD]+)\)", r"√\1", text)
     text = text.replace("sqrt(", "√(").replace("**", "^").replace("*", "·")
-    return text.replace(" - ", " − ").replace("-", "−"), tuple(names)
+    return _MARKED.put(shown, (text.replace(" - ", " − ").replace("-", "−"), tuple(names)))
+
+
+_MARKED = Memo(4096)    # a command's own memory (kinematika.memo), as sympy's printed texts
 
 
 def unicode_formula(expr: Any, name: Callable[[str], str] = unicode_name,
@@ -82,6 +82,6 @@ def latex_formula(expr: Any) -> str:
     """sympy's LaTeX; a symbol named like the constant π (`pi`, `pi2`) as the word."""
     import sympy
 
-    shown = _tidy(expr)
+    shown = tidy(expr)
     own = {s: latex_name(s.name) for s in getattr(shown, "free_symbols", ()) if s.name.startswith("pi")}
     return sympy.latex(shown, symbol_names=own) if own else sympy.latex(shown)
