@@ -55,6 +55,25 @@ class Value:
         return bool(self.num)
 
 
+def _may_divide(p: Any, f: Any) -> bool:
+    """False when f surely does not divide p: with every variable but one of f's set to a
+    small integer, f's image does not divide p's (p = q·f holds in every image). Dividing
+    the images takes a univariate division instead of a multivariate one (a long numerator
+    over a factor that does not divide it was most of `cancel`)."""
+    ring = f.ring
+    if ring.ngens < 2:
+        return True
+    keep = max(range(ring.ngens), key=lambda i: f.degree(ring.gens[i]))
+    points = [(ring.gens[i], PROBE_POINTS[i % len(PROBE_POINTS)]) for i in range(ring.ngens) if i != keep]
+    image = f.evaluate(points)
+    if image.is_ground:                 # a constant image (0 or not) proves nothing
+        return True
+    return not p.evaluate(points).rem(image)
+
+
+PROBE_POINTS = (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37)
+
+
 class ExactField:
     """QQ[symbols, atoms]/(sin² + cos² − 1) with factored denominators and square roots."""
 
@@ -330,6 +349,9 @@ class ExactField:
 
     @staticmethod
     def _divide_all(num: dict, f: Any) -> dict | None:
+        """Each numerator divided by f, or None when f does not divide one of them."""
+        if not all(_may_divide(p, f) for p in num.values()):
+            return None
         out = {}
         for m, p in num.items():
             q, r = p.div(f)
