@@ -84,3 +84,21 @@ def test_reads_as_text(name, lang, fmt):
         english = english_words(lang) - model_words(sol)
         stray = sorted({w for w in WORD.findall(text) if w.lower() in english})
         assert not stray, f"English words in the {lang} text: {stray}"
+
+
+BAR = re.compile(r"(?<!\\)\|")
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_markdown_tables_keep_their_columns(name):
+    """Every row of a Markdown table has the header's cells: a formula's bars |x| are
+    escaped (the tricycle's speed √2·v₀·|L − s|/(2·L) split its row in two cells)."""
+    _, doc = explained(name)
+    lines = render(doc, "en", "md", drawings=False).splitlines()
+    for i, line in enumerate(lines[:-1]):
+        if line.startswith("| ") and lines[i + 1].startswith("| ---"):
+            header = len(BAR.findall(line))
+            for row in lines[i + 2:]:
+                if not row.startswith("|"):
+                    break
+                assert len(BAR.findall(row)) == header, row[:200]

@@ -40,7 +40,10 @@ class MarkdownRenderer(Renderer):
         return f"{mantissa}·10^{exponent}"
 
     def formula(self, expr: Any) -> str:
-        return self.decimals(unicode_formula(expr))
+        """The Unicode formula; its bars |x| escaped outside code blocks, where a table
+        would read them as the end of a cell."""
+        text = self.decimals(unicode_formula(expr))
+        return text if self.code else text.replace("|", "\\|")
 
     def page(self, body: str) -> str:
         return body.rstrip() + "\n"
