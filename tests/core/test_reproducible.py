@@ -146,3 +146,19 @@ def test_other_threads_work_does_not_cut_a_step_short(monkeypatch):
     finally:
         stop.set()
         other.join()
+
+
+def test_the_exact_field_stops_at_its_work_not_at_a_time():
+    """A canonical form's work is counted (terms formed, products of terms taken): (a + b)⁵
+    by squaring takes 2 + 4 + 9 + 10 products of terms and, with a + b itself, 2 + 2 + 3 + 5
+    + 6 terms formed: 43; a field allowed 40 stops with `TooLarge` and one allowed more
+    finishes, whatever the clock."""
+    from kinematika.algebra.fields import ExactField, TooLarge
+
+    a, b = sympy.symbols("a b", positive=True)
+    e = (a + b) ** 5
+    with pytest.raises(TooLarge):
+        small = ExactField([e], max_work=40)
+        small.back(small.to(e))
+    field = ExactField([e], max_work=10_000)
+    assert sympy.expand(field.back(field.to(e)) - e) == 0

@@ -86,8 +86,9 @@ class ExactField:
         self.sp = sympy
         self.use_roots = roots
         self.max_terms = max_terms          # budget: terms of a value's numerators
-        self.max_work = max_work            # budget: terms of all values formed, summed (a
-        self._work = 0                      # count, so that every run gives the same forms)
+        self.max_work = max_work            # budget: terms of all values formed and products
+        self._work = 0                      # of terms taken, summed (a count: the same forms
+                                            # in every run)
         symbols: set = set()
         atoms: dict[Any, None] = {}
         self._scanned: set = set()
@@ -215,8 +216,10 @@ class ExactField:
     def mul(self, x: Value, y: Value) -> Value:
         if not x.num or not y.num:
             return self.zero
-        if self.max_terms is not None and _terms(x) * _terms(y) > PRODUCT_TERMS * self.max_terms:
+        products = _terms(x) * _terms(y)
+        if self.max_terms is not None and products > PRODUCT_TERMS * self.max_terms:
             raise TooLarge("too many terms")      # before the product is formed, not after
+        self._work += products
         den = dict(x.den)
         for f, k in y.den.items():
             den[f] = den.get(f, 0) + k
@@ -624,7 +627,8 @@ class RationalField:
 
 
 MAX_TERMS = 400          # a canonical form is computed within this many numerator terms ...
-MAX_WORK = 200_000         # ... and this many terms formed in all; past either, the factors' forms are kept
+MAX_WORK = 500_000       # ... and this much work (terms formed, and products of terms); past either,
+                         # the factors' forms are kept (a count: the same forms in every run)
 FACTOR_OPS = 60          # forms factored for reading up to this size (multivariate factoring
                          # is randomised and grows fast: a rare draw takes minutes on a long form)
 COMMON_OPS = 600         # larger forms, past reading anyway, are not searched for common factors
