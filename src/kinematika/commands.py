@@ -94,8 +94,17 @@ def explain_text(source: ModelLike, lang: str = "en", fmt: str = "md",
 
 def draw_scene(source: ModelLike, options: Any = None, how: How = AS_GIVEN) -> Any:
     """The `Scene` that `kinematika draw` paints (the model solved at its instant)."""
+    return solved_scene(source, options, how)[1]
+
+
+def solved_scene(source: ModelLike, options: Any = None, how: How = AS_GIVEN) -> tuple[Any, Any]:
+    """The model solved at its instant and the `Scene` drawn from it; a model with symbols
+    is solved within the same budget as `solve` (its `limit` error past it)."""
     from .api import solve
+    from .budget import exact_work
     from .draw.scene import build_scene
 
-    sol = solve(how.model(source))
-    return build_scene(sol.inst, sol, options)
+    model = how.model(source)
+    with exact_work(model):
+        sol = solve(model)
+        return sol, build_scene(sol.inst, sol, options)

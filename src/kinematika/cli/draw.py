@@ -75,9 +75,12 @@ def draw(
         options = DrawOptions(velocities=velocities, accelerations=accelerations, centres=centres,
                               curvature=curvature, labels=labels, points=_names(points), view=view,
                               width=width, lang=lang)
+        from ..budget import exact_work
+
         target = output_file(output, "-o")
-        with writing(target, "-o"):
-            draw_figure(_model(model, assignments, moves, assembly), target, options)
+        given = _model(model, assignments, moves, assembly)
+        with writing(target, "-o"), exact_work(given):     # symbols: solve's budget
+            draw_figure(given, target, options)
         return output
 
     guarded(False, work)

@@ -259,12 +259,9 @@ def _drawn(req: Request) -> tuple[str, Any]:
     options = DrawOptions(**{k: req.get(k) for k in keys})
     model = req.how.model(req.model)
     if req.get("as") == "data":
-        from ..api import solve
-        from ..draw.scene import build_scene
         from .scene_json import depth_twin, scene_data
 
-        sol = solve(model)                    # as commands.draw_scene, keeping the solution
-        scene = build_scene(sol.inst, sol, options)
+        sol, scene = commands.solved_scene(model, options)
         twin = depth_twin(scene, sol, options) if scene.dim == 3 else None
         return JSON, commands.json_text({**scene_data(scene, twin), "input": _input(model)})
     scene = commands.draw_scene(model, options)
