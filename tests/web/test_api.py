@@ -274,3 +274,15 @@ def test_drawing_endpoints_at_the_same_time(client):
     assert [a.status_code for a in answers] == [200] * len(asks)
     alone = post(client, "explain", model=text, lang="eu", move={"j1": 90})
     assert answers[3].content == alone.content
+
+
+def test_the_figure_of_a_model_with_symbols_keeps_the_budget_of_solve(client, monkeypatch):
+    """The page's figure of Jansen's leg in its crank angle is solved exactly within the
+    budget of `solve`: past it, the same `limit` error (it was drawn without any budget)."""
+    text = (EXAMPLES / "jansen_leg.yaml").read_text().replace("  theta: deg(90)", "  theta: null")
+    monkeypatch.setenv("KINEMATIKA_SYMBOLIC_SECONDS", "0.05")
+    answer = post(client, "draw", model=text, **{"as": "data"})
+    assert answer.status_code == 400 and answer.json()["error"]["kind"] == "limit"
+    monkeypatch.delenv("KINEMATIKA_SYMBOLIC_SECONDS")
+    answer = post(client, "draw", model=text, **{"as": "data"})
+    assert answer.status_code == 200 and answer.json()["bodies"]
