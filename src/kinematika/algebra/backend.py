@@ -134,8 +134,8 @@ class Symbolic:
         exact field, where trigsimp on a long radicand would take seconds)."""
         sp = self.sp
         x = sp.sympify(x)
-        size = sp.count_ops(x) if x.has(sp.sin, sp.cos) else TRIGSIMP_OPS + 1
-        if size <= TRIGSIMP_OPS:
+        size = sp.count_ops(x) if x.has(sp.sin, sp.cos) else None
+        if size is not None and size <= TRIGSIMP_OPS:
             from ..budget import within
 
             x = within(size, _trigsimp_keeping_angles, x, default=x)

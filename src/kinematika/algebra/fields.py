@@ -711,8 +711,7 @@ def _whole(e: Any, max_terms: int = MAX_TERMS, written: bool = False) -> Any:
     value, field = None, None
     for roots in (True, False):
         try:
-            field = ExactField([e], roots=roots, max_terms=max_terms,
-                               max_work=MAX_WORK)
+            field = ExactField([e], roots=roots, max_terms=max_terms, max_work=MAX_WORK)
             value = field.back(field.to(e))
             break
         except DependentRoots:

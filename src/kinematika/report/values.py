@@ -79,13 +79,13 @@ def formula(x: Any) -> str:
     """A simplified formula in sympy's syntax (`4*Omega/3`, `sqrt(2)*r*w/4`)."""
     shown = tidy(x)
     text = _TEXT.get(shown)
-    return _TEXT.put(shown, _printed(shown)) if text is None else text
+    return _TEXT.put(shown, printed(shown)) if text is None else text
 
 
 PLAIN_ORDER_OPS = 1000  # longer formulas are printed with their terms in sympy's stored order
 
 
-def _printed(x: Any, printer: Any = None) -> str:
+def printed(x: Any, printer: Any = None) -> str:
     """sympy's text of `x`; a long formula's sums are not sorted by degree first (sorting
     takes most of the printing there, and such a formula is read by a program anyway).
     `printer`: a StrPrinter subclass to print with (the explanations mark the symbols)."""

@@ -8,7 +8,7 @@ from typing import Any, Callable
 from sympy.printing.str import StrPrinter
 
 from ...memo import Memo
-from ...report.values import _printed, tidy
+from ...report.values import printed, tidy
 from .names import latex_name, unicode_name
 
 SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
@@ -48,7 +48,7 @@ def _marked(expr: Any) -> tuple[str, tuple[str, ...]]:
     if known is not None:
         return known
     names: list[str] = []
-    text = _bars(_printed(shown, lambda settings=None: _Marking(settings, names)))
+    text = _bars(printed(shown, lambda settings=None: _Marking(settings, names)))
     text = re.sub(r"\*\*(-?\d+)", lambda m: m.group(1).translate(SUPERSCRIPTS), text)
     text = re.sub(r"sqrt\(([\w\U000F0000-\U000FFFFD]+)\)", r"√\1", text)
     text = text.replace("sqrt(", "√(").replace("**", "^").replace("*", "·")
