@@ -21,7 +21,7 @@ _EXPORTS = {
     "Mechanism": "model.builder", "Solution": "solution", "KinematikaError": "errors",
     "run_sweep": "sweep",
 }
-__all__ = sorted(_EXPORTS) + ["__version__"]
+__all__ = [*sorted(_EXPORTS), "__version__"]  # noqa: PLE0604 (the names _EXPORTS lists)
 
 
 def __getattr__(name: str) -> Any:

@@ -87,8 +87,10 @@ def explain_text(source: ModelLike, lang: str = "en", fmt: str = "md",
     from .budget import exact_work
     from .explain import explain
 
+    from .draw.lock import MATPLOTLIB
+
     model = how.model(source)
-    with exact_work(model, symbolic):
+    with exact_work(model, symbolic), MATPLOTLIB:       # its figures are drawn as it goes
         return explain(model, lang, fmt, symbolic, length_unit)
 
 

@@ -9,7 +9,6 @@ into a message.
 """
 from __future__ import annotations
 
-import re
 import reprlib
 import unicodedata
 from typing import Any

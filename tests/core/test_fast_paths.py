@@ -65,7 +65,7 @@ def test_the_records_have_schemas_fields_and_defaults():
                 theirs = field.get_default(call_default_factory=True)
                 assert (mine() if callable(mine) else mine) == theirs, (record.__name__, name)
     assert shape.QUESTION_KINDS == schema.QUESTION_KINDS
-    assert shape.JOINT_TYPES == schema.JointType.__args__
+    assert schema.JointType.__args__ == shape.JOINT_TYPES
 
 
 ODD_VALUES = [True, False, None, 0, 2, 3, 1.5, float("inf"), "", "x", "revolute", [], {}, [1, "a"],
@@ -282,9 +282,9 @@ def test_the_answer_tables_from_arrays_are_the_one_by_one_tables(path):
     bodies, points = _tables_one_by_one(sol)
     assert json.dumps(data["bodies"]) == json.dumps(bodies)
     assert json.dumps(data["points"]) == json.dumps(points)
-    for q, given in zip(sol.model.questions, data["answers"]):
+    for q, answer in zip(sol.model.questions, data["answers"]):
         if q.kind in ("velocity", "acceleration") and q.relative_to in (None, sol.model.frame):
-            assert given["value"] == points[str(q.target)][q.kind]
+            assert answer["value"] == points[str(q.target)][q.kind]
 
 
 def test_a_large_chains_answer_is_its_hand_derivation():

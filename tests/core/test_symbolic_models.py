@@ -155,7 +155,7 @@ def test_watt_six_bar_at_a_general_angle(at):
 def test_four_bar_coupler_point(at):
     """B where the circles (A, b) and (O4, c) meet, left of A→O4; P = A + p(cos, sin)(φ3 + δ)
     with φ3 the angle of AB (Norton's coupler point)."""
-    a, b, c, d, p, delta = (at[k] for k in "a b c d p delta".split())
+    a, b, c, d, p, delta = (at[k] for k in ["a", "b", "c", "d", "p", "delta"])
 
     def pos(t):
         pa = polar([0, 0], a, t)

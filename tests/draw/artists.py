@@ -103,7 +103,7 @@ def outside_faults(fig) -> list[str]:
     faults = []
     for artist in ax.lines + ax.patches:
         ext = artist.get_window_extent(renderer)
-        if ext.width == 0 and ext.height == 0 or not np.isfinite(ext.x0):
+        if (ext.width == 0 and ext.height == 0) or not np.isfinite(ext.x0):
             continue
         if not (ext.x0 >= box.x0 - 1 and ext.x1 <= box.x1 + 1 and
                 ext.y0 >= box.y0 - 1 and ext.y1 <= box.y1 + 1):

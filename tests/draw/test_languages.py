@@ -43,7 +43,7 @@ def four_bar_by_hand() -> dict[str, float]:
     u = (o4 - a) / d
     left = np.array([-u[1], u[0]])
     b = a + along * u + np.sqrt(4.0**2 - along**2) * left
-    perp = lambda r: np.array([-r[1], r[0]])                # noqa: E731  k × r
+    perp = lambda r: np.array([-r[1], r[0]])
     v_a = 10 * perp(a)
     # v_A + ω3 k×(B−A) = ω4 k×(B−O4)
     w3, w4 = np.linalg.solve(np.column_stack([perp(b - a), -perp(b - o4)]), -v_a)

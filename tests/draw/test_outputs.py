@@ -50,7 +50,7 @@ def test_bare_svg_is_the_drawing_alone():
     sol = solve(four_bar_tree([{"velocity": "B"}]))
     full, bare = svg(sol), svg(sol, bare=True)
     assert "<!-- velocity -->" in full and "<!-- velocity -->" not in bare
-    height = lambda text: float(ET.fromstring(text.encode()).get("height").rstrip("pt"))  # noqa: E731
+    height = lambda text: float(ET.fromstring(text.encode()).get("height").rstrip("pt"))
     assert height(bare) < height(full) - 30
     assert 'id="velocity:B@coupler"' in bare
 

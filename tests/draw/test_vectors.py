@@ -101,7 +101,7 @@ def test_zero_vector_has_no_arrow_but_a_label():
 
 def test_options_choose_the_vectors():
     tree = four_bar_tree([{"velocity": "B"}, {"acceleration": "B"}])
-    gids = lambda fig: {p.get_gid() for p in fig.axes[0].patches  # noqa: E731
+    gids = lambda fig: {p.get_gid() for p in fig.axes[0].patches
                         if (p.get_gid() or "").startswith(("velocity", "acceleration"))}
     assert gids(draw(tree)) == {"velocity:B@coupler", "acceleration:B@coupler"}
     assert gids(draw(tree, accelerations=False)) == {"velocity:B@coupler"}

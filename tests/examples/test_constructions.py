@@ -35,7 +35,7 @@ def test_seed_c5_1_2_bar_on_inclined_wheels():
 
 def test_seed_c5_1_3_bar_in_a_sleeve():
     name = "seed_c5_1_3_bar_in_sleeve"
-    o, qq, s, e, j = [0, 0], [1, 2], [4, 1], [Rational(11, 2), Rational(1, 2)], [4, 0]
+    o, qq, _s, e, j = [0, 0], [1, 2], [4, 1], [Rational(11, 2), Rational(1, 2)], [4, 0]
     along = [3, -1]
     # the bar's centre is on OQ (v_Q ⟂ OQ) and on the perpendicular to the bar through the
     # point where drag (rotation about J) and relative (along the bar) velocities are

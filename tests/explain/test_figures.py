@@ -32,7 +32,7 @@ def test_polygon_labels_clear_of_each_other(name):
         lay = layout(fig, renderer.svg_label)
         boxes = [lb.box for lb in lay.labels]
         for i, a in enumerate(boxes):
-            assert -1 <= a[0] and a[2] <= WIDTH + 1 and -1 <= a[1] and a[3] <= lay.height + 1, \
+            assert a[0] >= -1 and a[2] <= WIDTH + 1 and a[1] >= -1 and a[3] <= lay.height + 1, \
                 (name, lay.labels[i].text.markup, a)
             for j in range(i):
                 b = boxes[j]

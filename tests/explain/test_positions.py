@@ -122,7 +122,7 @@ def test_named_coordinates_are_defined_where_the_point_is_placed(monkeypatch):
     names = {str(k): v for k, v in sol.inst.names.items()}
     for axis, written in zip("xy", full.inst.points["B"]):
         formula = sympy.sympify(defined[f"{axis}_B"]).subs({sympy.Symbol(k): v for k, v in names.items()})
-        probe = {s: v for s, v in full.inst.probe.items()} if isinstance(full.inst.probe, dict) else {}
+        probe = dict(full.inst.probe.items()) if isinstance(full.inst.probe, dict) else {}
         assert float(sympy.N((formula - written).subs(probe))) == pytest.approx(0.0, abs=1e-9)
     order = [b.args.get("point").text if "point" in b.args else str(b.args["name"].value) for b in blocks[1:]]
     assert order.index("x_B") == order.index("B") + 1          # right after B's sentence

@@ -90,7 +90,7 @@ def test_figures_are_the_draw_figures(name, drawings):
     assert {r for pair in refs for r in pair if r} <= set(ids)
     assert "<!-- velocity -->" not in page                     # no English legend
     if sol.symbolic:
-        assert "Dibujado con" in page and "1,2" in page or "1.2" in page
+        assert ("Dibujado con" in page and "1,2" in page) or "1.2" in page
 
 
 def test_numbers_as_each_language_writes_them():

@@ -28,10 +28,10 @@ if __package__ in (None, ""):                      # run as a script: import as 
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
     __package__ = "fuzz"
 
-from .cases import Case, bases, case, symbolic_examples  # noqa: E402
-from .contract import ROOT, Run, check_run, json_wanted, run_cli  # noqa: E402
-from .forks import run_all  # noqa: E402
-from .scaling import ACCELERATION, ALPHA, OMEGA, POSITION, VELOCITY, close, expected, factor  # noqa: E402
+from .cases import Case, bases, case, symbolic_examples
+from .contract import ROOT, Run, check_run, json_wanted, run_cli
+from .forks import run_all
+from .scaling import ACCELERATION, ALPHA, OMEGA, POSITION, VELOCITY, close, expected, factor
 
 CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
 NAN = re.compile(r"(?<![\w.])[-+]?(nan|inf)(?![\w])", re.IGNORECASE)
@@ -235,7 +235,7 @@ def run(count: int, seed: int, workers: int = 2, fresh_every: int = 25, keep: Pa
         if original.status != 0:
             continue
         if r.run.status != 0:
-            if r.case.strict or r.case.klass == "renamed" and _ordinary(r.case):
+            if r.case.strict or (r.case.klass == "renamed" and _ordinary(r.case)):
                 r.failure = f"the original answers, this gives: {(r.run.stdout or r.run.stderr)[:300]}"
             continue
         try:

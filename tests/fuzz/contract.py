@@ -190,4 +190,4 @@ def check_run(run: Run) -> None:
             assert len(lines) == 1 and lines[0].startswith("error ("), run.describe()
             one_line(lines[0], 40 + MESSAGE_CHARS + WHERE_CHARS)
     elif json_wanted(run.args):
-        finite(json.loads(run.stdout, parse_constant=lambda c: float(c)))
+        finite(json.loads(run.stdout, parse_constant=float))

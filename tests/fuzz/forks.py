@@ -16,9 +16,9 @@ import signal
 import sys
 import tempfile
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Iterable, Iterator
+from typing import Iterable, Iterator
 
 from .contract import MEMORY, Run
 
@@ -39,12 +39,12 @@ def preload() -> None:
     import matplotlib
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot  # noqa: F401
+    import matplotlib.pyplot
     import numpy  # noqa: F401
     import sympy  # noqa: F401
 
     import kinematika.cli as cli
-    import kinematika.cli.fast  # noqa: F401
+    import kinematika.cli.fast
     import kinematika.cli.run  # noqa: F401
 
     cli._application()          # typer and every command module

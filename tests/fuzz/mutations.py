@@ -7,7 +7,6 @@ runs commands on them under the contract, and `tests/fuzz/run.py` does the same 
 from __future__ import annotations
 
 import copy
-import json
 from pathlib import Path
 from typing import Any
 

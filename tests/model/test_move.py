@@ -19,6 +19,7 @@ from kinematika.sweep import run_sweep
 from kinematika.sweep.assemblies import assemblies
 
 from .test_constructions import four_bar_tree, freudenstein, norton_rates, slider_crank_tree
+import itertools
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -170,7 +171,7 @@ def test_every_assembly_keeps_every_body_rigid_and_differs_from_the_others(name,
             own = [p for p in body.points          # the body's own material points, not a pin
                    if any(body.name in c and model.place_owner(p) in c
                           for c in model.motion_classes(p, model.carriers(p)))]
-            for p, q in zip(own, own[1:]):
+            for p, q in itertools.pairwise(own):
                 assert math.dist(pts[p], pts[q]) == pytest.approx(math.dist(drawn[p], drawn[q]), abs=1e-9)
         kinematika.solve(a.model)                  # each is a mechanism the engine accepts
         places.append([c for name in sorted(pts) for c in pts[name]])
@@ -289,7 +290,7 @@ def test_set_null_makes_the_crank_angle_a_symbol(theta):
 
     js = _four_bar_with_symbolic_crank()
     assert js["symbolic"] is True
-    values = {tuple(a["ask"].items())[0]: a["value"] for a in js["answers"]}
+    values = {next(iter(a["ask"].items())): a["value"] for a in js["answers"]}
     t2 = math.radians(theta)
     t3, t4 = freudenstein(1, 4, 3, 4, t2)
     w3, w4, _, _ = norton_rates(1, 4, 3, t2, t3, t4, 10.0, 0.0)

@@ -21,6 +21,7 @@ from kinematika import solve
 from kinematika.report.json_answer import solution_json
 
 from .derive import close, cross, minus, plus
+import itertools
 
 TYPES = ["revolute", "revolute", "revolute", "prismatic", "cylindrical", "spherical"]
 # on a grid of 0.01: a model's length scale comes from its points, so no subnormal spreads
@@ -140,7 +141,7 @@ def test_rigid_body_fields_hold_for_every_body(chain):
     for body in sol.model.moving_bodies:
         w, al = sol.omega(body), sol.alpha(body)
         names = sol.model.bodies[body].points
-        for a_name, b_name in zip(names, names[1:]):
+        for a_name, b_name in itertools.pairwise(names):
             pa, pb = sol.inst.points[a_name], sol.inst.points[b_name]
             ab = minus(pb, pa)
             va, vb = sol.velocity(f"{a_name}@{body}"), sol.velocity(f"{b_name}@{body}")

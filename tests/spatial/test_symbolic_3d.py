@@ -19,7 +19,7 @@ from .derive import EXAMPLES
 
 def symbolic_version(example: str, symbols: list[str], drivers: list | None = None) -> dict:
     tree = yaml.safe_load((EXAMPLES / example).read_text())
-    tree["parameters"] = {**tree.get("parameters", {}), **{name: None for name in symbols}}
+    tree["parameters"] = {**tree.get("parameters", {}), **dict.fromkeys(symbols)}
     if drivers is not None:
         tree["drivers"] = drivers
     return tree

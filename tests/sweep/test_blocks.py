@@ -14,7 +14,7 @@ from kinematika.engine import blocks, linsolve
 from kinematika.engine.blocks import BlockLU, SparseRows
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
-from chain import four_bar_chain  # noqa: E402
+from chain import four_bar_chain
 
 
 def sparse(dense: np.ndarray) -> SparseRows:

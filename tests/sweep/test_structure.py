@@ -14,8 +14,9 @@ from kinematika.sweep.run import Sweeper
 
 from pathlib import Path
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 from .models import four_bar_tree, slider_crank_tree
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def kinds(tree_or_path):

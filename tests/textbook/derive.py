@@ -15,7 +15,6 @@ values and runs every case through the command line under check-cases' rules.
 from __future__ import annotations
 
 import importlib.util
-import json
 import math
 from pathlib import Path
 
@@ -424,7 +423,7 @@ def triad_assemblies(steps: int = 720) -> list[tuple[float, float]]:
                 f1 = 2 * mpmath.pi * i / steps
                 here = branch(f1, s)
                 if here is not None and prev is not None and prev[1] * here[1] < 0:
-                    root = mpmath.findroot(lambda x: branch(x, s)[1], (prev[0], f1), solver="secant")
+                    root = mpmath.findroot(lambda x, s=s: branch(x, s)[1], (prev[0], f1), solver="secant")
                     out.append((float(mpmath.degrees(root)) % 360, float(mpmath.degrees(branch(root, s)[0])) % 360))
                 prev = None if here is None else (f1, here[1])
     return sorted(out)

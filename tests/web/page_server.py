@@ -32,6 +32,14 @@ class PageServer:
             time.sleep(0.02)
 
     def stop(self) -> None:
+        """Stop serving, and wait for the computations of requests the browser abandoned
+        (they go on in the server's worker threads, drawing with matplotlib): the tests that
+        follow in this process must not share matplotlib with them."""
         self.server.should_exit = True
         self.thread.join(10)
         self.sock.close()
+        deadline = time.monotonic() + 120
+        while any(t.name.startswith("AnyIO worker") and t.is_alive() for t in threading.enumerate()):
+            if time.monotonic() > deadline:
+                raise RuntimeError("the page's server still computes 120 s after it stopped")
+            time.sleep(0.05)

@@ -45,7 +45,7 @@ class DependentRoots(ArithmeticError):
 class Value:
     """Σ num[m]·(roots of mask m) / Π f**k for (f, k) in den: polynomials over QQ."""
 
-    __slots__ = ("num", "den")
+    __slots__ = ("den", "num")
 
     def __init__(self, num: dict, den: dict | None = None) -> None:
         self.num = num
@@ -691,7 +691,6 @@ _KNOWN = Memo(8192)     # the same velocity is often asked of several material p
 
 def _canonical(e: Any) -> Any:
     """`canonical` of a compound expression."""
-    import sympy
 
     forms = list(_whole(e, written=True))
     if e.is_Mul or e.is_Pow:

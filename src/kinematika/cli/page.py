@@ -13,6 +13,7 @@ import typer
 
 from ..errors import KinematikaError
 from .app import app, guarded
+import contextlib
 
 LOOPBACK = ("127.0.0.1", "localhost", "::1")
 
@@ -30,7 +31,7 @@ def serve(
                                 "one per core)"),
 ) -> None:
     """The interactive page: edit a model, see it move, its answers and explanation."""
-    from ..web.server import Start, bundled_examples, create_app
+    from ..web.server import bundled_examples, create_app
 
     start = guarded(False, lambda: _start(model))
     start.examples = bundled_examples()
@@ -95,10 +96,8 @@ def _run(application, sock: socket.socket, url: str, browser: bool) -> None:
     config = uvicorn.Config(application, log_level="warning", access_log=False,
                             timeout_graceful_shutdown=2)
     _announce(url, browser)
-    try:
+    with contextlib.suppress(KeyboardInterrupt):
         uvicorn.Server(config).run(sockets=[sock])
-    except KeyboardInterrupt:
-        pass
 
 
 def _run_workers(start, hosts: Optional[list[str]], workers: int, sock: socket.socket, url: str,
@@ -125,10 +124,8 @@ def _run_workers(start, hosts: Optional[list[str]], workers: int, sock: socket.s
     _announce(url, browser)
     older = "target" in inspect.signature(Multiprocess).parameters    # uvicorn before 0.36
     extra = {"target": uvicorn.Server(config).run} if older else {}
-    try:
+    with contextlib.suppress(KeyboardInterrupt):
         Multiprocess(config, sockets=[sock], **extra).run()
-    except KeyboardInterrupt:
-        pass
 
 
 def _announce(url: str, browser: bool) -> None:

@@ -39,7 +39,7 @@ def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
     except MemoryError:
         fail(KinematikaError("limit", "the work needs more memory than this machine gives; make "
                              "the model or the sweep smaller"), as_json)
-    except Exception as err:  # noqa: BLE001 - never show users a traceback
+    except Exception as err:
         if os.environ.get("KINEMATIKA_DEBUG"):
             raise
         detail = shown(f"{type(err).__name__}: {err}", MESSAGE_CHARS - 80)

@@ -16,7 +16,7 @@ from .options import DrawOptions
 # a name with a character the font lacks (emoji, CJK, a control) is drawn as a box: no warning
 warnings.filterwarnings("ignore", message=r"Glyph \d+ .*missing from font", category=UserWarning)
 
-__all__ = ["draw", "svg", "DrawOptions", "plot_sweep", "animate"]
+__all__ = ["DrawOptions", "animate", "draw", "plot_sweep", "svg"]
 
 
 def draw(source: Any, path: Optional[Path | str] = None, options: Optional[DrawOptions] = None,
@@ -28,11 +28,14 @@ def draw(source: Any, path: Optional[Path | str] = None, options: Optional[DrawO
     from .figure import render, save
     from .scene import build_scene
 
+    from .lock import MATPLOTLIB
+
     sol = source if isinstance(source, Solution) else solve(source, symbolic)
     options = options or DrawOptions(**choices)
-    fig = render(build_scene(sol.inst, sol, options), options)
-    if path is not None:
-        save(fig, path)
+    with MATPLOTLIB:
+        fig = render(build_scene(sol.inst, sol, options), options)
+        if path is not None:
+            save(fig, path)
     return fig
 
 

@@ -20,6 +20,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 from .bodies import paint_bodies
+from .lock import MATPLOTLIB
 from .canvas import Canvas
 from .geometry import Box
 from .joints import paint_joints
@@ -42,8 +43,13 @@ NBSP = "\u00a0"      # keeps `r = 0.1` and `2 crank` on one line of the notes
 
 
 def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
-    """The figure of `scene`: mechanism, vectors, centres, curvature, labels, legend."""
-    options = options or DrawOptions()
+    """The figure of `scene`: mechanism, vectors, centres, curvature, labels, legend (laid
+    out under `MATPLOTLIB`: labels are placed by their measured text)."""
+    with MATPLOTLIB:
+        return _render(scene, options or DrawOptions())
+
+
+def _render(scene: Scene, options: DrawOptions) -> Figure:
     drawn = arrows(scene.vectors, scene.size)
     content = framed_box(scene, drawn)
     notes = [] if options.bare else _notes(scene, drawn, options.lang)
@@ -236,7 +242,8 @@ def save(fig: Figure, path: Path | str, dpi: int = 110) -> Path:
     fmt = path.suffix.lower().lstrip(".")
     if fmt not in FORMATS:
         raise ValueError(f"cannot write {path.name!r}: give a .png, .svg or .pdf file")
-    fig.savefig(path, format=fmt, dpi=dpi, facecolor="white")
+    with MATPLOTLIB:
+        fig.savefig(path, format=fmt, dpi=dpi, facecolor="white")
     return path
 
 
@@ -246,7 +253,8 @@ def svg_text(fig: Figure) -> str:
     import io
 
     out = io.StringIO()
-    fig.savefig(out, format="svg", facecolor="white", metadata={"Date": None})
+    with MATPLOTLIB:
+        fig.savefig(out, format="svg", facecolor="white", metadata={"Date": None})
     return _numbered_ids(out.getvalue())
 
 

@@ -24,6 +24,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from .style import LABEL_SIZE
+import itertools
 
 DISTANCES = (2.5, 6.0, 11.0, 17.0, 25.0, 35.0, 48.0, 64.0, 84.0)   # points: anchor to box
 DIRECTIONS = 16
@@ -230,7 +231,7 @@ def _sample(obstacles: list, transform: Any, step: float) -> tuple[np.ndarray, n
         if not len(disp):
             continue
         seg = [disp[:1]]
-        for p, q in zip(disp[:-1], disp[1:]):
+        for p, q in itertools.pairwise(disp):
             n = max(1, int(np.linalg.norm(q - p) / step))
             t = np.linspace(0, 1, n + 1)[1:, None]
             seg.append(p + t * (q - p))

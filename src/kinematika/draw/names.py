@@ -145,5 +145,4 @@ def bare(label: str) -> str:
 
 def numbered(label: str) -> bool:
     """Whether a label names bodies by their numbers (then the figure says which is which)."""
-    return r"{\in}" in label or ("_{" in label and "/" in label) or label.startswith("$I_") \
-        or label.startswith("$Γ_")
+    return r"{\in}" in label or ("_{" in label and "/" in label) or label.startswith(("$I_", "$Γ_"))

@@ -95,7 +95,10 @@ def plot_sweep(result: Any, path: Optional[Path | str] = None, model: Any = None
     fig.suptitle(title.replace("$", r"\$"), fontsize=12, weight="bold", color=INK)
     fig.tight_layout(rect=(0, 0, 1, 0.985))
     if path is not None:
-        fig.savefig(path, dpi=100, format=fmt, facecolor="white")
+        from .lock import MATPLOTLIB
+
+        with MATPLOTLIB:
+            fig.savefig(path, dpi=100, format=fmt, facecolor="white")
     return fig
 
 

@@ -148,7 +148,7 @@ def _hooke(model: Any, xyz: dict, geos: dict, num: Any) -> Optional[dict]:
         if arms[0] is None or arms[1] is None or abs(float(arms[0] @ arms[1])) > 1e-6:
             continue
         shafts = [j.b if j.a == cross else j.a for j in own]
-        bearings = [next((b for b in revolute if b.at == centre and set((b.a, b.b)) == {s, model.frame}), None)
+        bearings = [next((b for b in revolute if b.at == centre and {b.a, b.b} == {s, model.frame}), None)
                     for s in shafts]
         if model.frame in shafts or None in bearings:
             continue

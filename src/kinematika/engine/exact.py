@@ -43,7 +43,7 @@ class ExactWorld:
 class RevealedState:
     """A body's (ω, v₀, α, a₀) read from its state in stand-ins, each revealed when asked."""
 
-    __slots__ = ("_raw", "_reveal", "_done")
+    __slots__ = ("_done", "_raw", "_reveal")
 
     def __init__(self, raw: BodyState, reveal: "Reveal") -> None:
         self._raw, self._reveal, self._done = raw, reveal, {}

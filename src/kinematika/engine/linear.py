@@ -10,7 +10,7 @@ from typing import Any
 
 
 class Lin:
-    __slots__ = ("terms", "const")
+    __slots__ = ("const", "terms")
     __array_ufunc__ = None   # numpy scalars defer to us instead of building object arrays
 
     def __init__(self, terms: dict[int, Any] | None = None, const: Any = 0) -> None:

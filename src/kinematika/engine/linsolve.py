@@ -263,14 +263,14 @@ def _eliminate_sparse(block: list[list[Any]], rhs: list[Any], numeric: np.ndarra
     entries not negligible numerically. Far cheaper than partial pivoting, which fills the
     block with long entries."""
     k = len(rhs)
-    rows = [dict((c, v) for c, v in enumerate(row) if v) for row in block]
+    rows = [{c: v for c, v in enumerate(row) if v} for row in block]
     right = list(rhs)
     num = numeric.astype(float).copy()
     top = np.abs(num).max(initial=0.0)
     order: list[tuple[int, int]] = []           # (row, column) of each pivot
     live_rows, live_cols = set(range(k)), set(range(k))
     for _ in range(k):
-        col_count = {c: 0 for c in live_cols}
+        col_count = dict.fromkeys(live_cols, 0)
         for r in live_rows:
             for c in rows[r]:
                 if c in col_count:

@@ -23,4 +23,4 @@ def explain(source: ModelLike, lang: str = "en", fmt: str = "md", symbolic: bool
     return render(build(solve(source, symbolic), length_unit), lang, fmt)
 
 
-__all__ = ["explain", "build", "render", "Document", "LANGS", "FORMATS"]
+__all__ = ["FORMATS", "LANGS", "Document", "build", "explain", "render"]

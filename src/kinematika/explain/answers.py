@@ -73,8 +73,7 @@ def answer_items(ctx: Ctx, q, value: Any) -> list:
     for key, v in value.items():
         if isinstance(v, dict):
             for sub, w in v.items():
-                out.append((_part_label(ctx, q, key, sub), _value(ctx, w, UNITS[sub] if sub in UNITS and
-                                                                    UNITS[sub] else UNITS[key] or "")))
+                out.append((_part_label(ctx, q, key, sub), _value(ctx, w, UNITS[sub] if UNITS.get(sub) else UNITS[key] or "")))
         elif v is not None and key != "rest":
             unit = "rate" if (q.kind, key) == ("axis", "omega") else ("speed" if key == "slide" else UNITS.get(key) or "")
             out.append((_part_label(ctx, q, key, None), _value(ctx, v, unit)))

@@ -154,8 +154,8 @@ def _axles(ctx: Ctx, note: CentreNote) -> None:
         return
     speeds = {p: ctx.vel(b, p, frame) for p in ctx.model.bodies[b].points}
     lines = _lines(ctx, b, wheels, speeds)
-    for i, (p, d, why) in enumerate(lines):
-        for q, e, other in lines[i + 1:]:
+    for i, (_, d, why) in enumerate(lines):
+        for _, e, other in lines[i + 1:]:
             if abs(d[0] * e[1] - d[1] * e[0]) > 1e-6 * _size(ctx, d) * _size(ctx, e):
                 note.how, note.via = "lines", [why, other]
                 return

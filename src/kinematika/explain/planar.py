@@ -8,19 +8,18 @@ contact written as no slip (velocities) and contact kept (accelerations).
 """
 from __future__ import annotations
 
-import re
 from typing import Optional
 
 from ..model.model import Joint, PointPair
 from .context import Ctx, alpha_sym, omega_sym, segment
 from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
-from .order import Step
-
-body_ = body
-from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
 from .group import group_blocks
+from .order import Step
+from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
 from .vehicles import wheel_route
+
+body_ = body
 
 LEVEL_UNIT = {"v": "rate", "a": "rate2"}
 

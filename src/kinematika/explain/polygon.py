@@ -126,7 +126,7 @@ def _letter(label: str) -> str:
 def _separated(arrows: list[Arrow]) -> list[Arrow]:
     """Arrows moved across their line, in turn, while they overlap one already placed."""
     pts = [p for a in arrows for p in (a.start, a.end)]
-    size = max(max(abs(p[0]) for p in pts), max(abs(p[1]) for p in pts), 1e-300)
+    size = max(*(abs(p[0]) for p in pts), *(abs(p[1]) for p in pts), 1e-300)
     gap = OFFSET * size
     placed: list[Arrow] = []
     for a in arrows:

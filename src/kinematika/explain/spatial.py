@@ -170,7 +170,7 @@ def fields_section(ctx: Ctx, level: str) -> Section:
     sec = Section(msg("sec.velocities" if level == "v" else "sec.accelerations"))
     sec.add(msg("fields.intro"))
     done: set[str] = set()
-    for body, parent, at in carriers(ctx):
+    for body, _, at in carriers(ctx):
         points = ctx.model.bodies[body].points
         if not points:
             continue

@@ -64,8 +64,8 @@ def mechanism_figure(ctx: Ctx) -> Figure:
     """The mechanism at the instant: bodies as lines between their points, shapes, labels."""
     fig = Figure(msg("fig.mechanism", dim=2), unit="len", sample=ctx.symbolic)
     pos = {name: ctx.num(p) for name, p in ctx.inst.points.items()}
-    for name, body in ctx.model.bodies.items():
-        pts = [pos[p] for p in body.points]
+    for name, carrier in ctx.model.bodies.items():
+        pts = [pos[p] for p in carrier.points]
         if name != ctx.frame:
             if len(pts) == 2:
                 fig.segments.append((pts[0], pts[1]))
@@ -80,8 +80,8 @@ def mechanism_figure(ctx: Ctx) -> Figure:
     grounded = set(ctx.model.bodies[ctx.frame].points)
     for name, p in pos.items():
         fig.points.append((name, p, "ground" if name in grounded else "point"))
-    speeds = list(dict.fromkeys((pos[p], ctx.num(ctx.vel(name, p))) for name, body in ctx.model.bodies.items()
-                                if name != ctx.frame for p in body.points))
+    speeds = list(dict.fromkeys((pos[p], ctx.num(ctx.vel(name, p))) for name, carrier in ctx.model.bodies.items()
+                                if name != ctx.frame for p in carrier.points))
     top = max([sum(c * c for c in v) ** 0.5 for _, v in speeds] + [0.0])
     if top > 0:
         k = 0.35 * ctx.inst.scale / top

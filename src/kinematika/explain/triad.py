@@ -47,7 +47,7 @@ def assur_point(ctx: Ctx, links: list) -> Optional[tuple]:
     """Two links whose lines meet, the third one, and the meeting point S (floats)."""
     for i in range(3):
         for k in range(i + 1, 3):
-            (l1, o1, j1, _), (l3, o3, j3, _) = links[i], links[k]
+            (_, o1, j1, _), (_, o3, j3, _) = links[i], links[k]
             p1, d1 = _line(ctx, o1.at, j1.at)
             p3, d3 = _line(ctx, o3.at, j3.at)
             det = d1[0] * d3[1] - d1[1] * d3[0]

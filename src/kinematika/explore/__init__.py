@@ -16,7 +16,7 @@ from typing import Any, Iterable, Mapping, Optional, Union
 from .designs import Vary
 from .evaluate import Sweep
 
-__all__ = ["explore", "Vary", "Sweep"]
+__all__ = ["Sweep", "Vary", "explore"]
 
 
 def explore(model: Any, vary: Union[Mapping[str, tuple], Iterable[str]], metrics: Iterable[str] = (),

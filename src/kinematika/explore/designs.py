@@ -64,7 +64,7 @@ class Designs:
             raise KinematikaError("usage", f"a parameter is varied twice: {', '.join(names)}", "--vary")
         if (self.grid is None) == (self.samples is None):
             raise KinematikaError("usage", "give either --grid N or --samples N", "--grid")
-        if self.grid is not None and self.grid < 1 or self.samples is not None and self.samples < 1:
+        if (self.grid is not None and self.grid < 1) or (self.samples is not None and self.samples < 1):
             raise KinematikaError("usage", "--grid and --samples take a positive number", "--grid")
         if self.count > MAX_DESIGNS:
             raise KinematikaError("usage", f"{self.count} designs: at most {MAX_DESIGNS}", "--grid")

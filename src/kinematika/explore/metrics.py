@@ -220,7 +220,7 @@ def _peak(kind: str, ctx: Context, target: str, where: str) -> Callable[[Cycle],
     else:
         ref = _point(ctx, target, where)
         index = 1 if kind == "peak_speed" else 2
-        read = lambda c: c.motion(ref)[index]          # noqa: E731
+        read = lambda c: c.motion(ref)[index]
     return lambda c: np.nanmax(np.abs(read(c)), axis=1)
 
 

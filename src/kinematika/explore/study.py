@@ -130,7 +130,7 @@ def compute(study: Study, pending: list[int], done: Callable[[int, Any], None],
         for index in pending:
             done(index, run_chunk(study, index))
         return
-    from dask.distributed import Client, LocalCluster, as_completed
+    from dask.distributed import Client, LocalCluster
 
     cluster = None
     if scheduler is None:

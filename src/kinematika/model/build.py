@@ -437,7 +437,7 @@ _DRIVER_TAGS = {"omega", "joint", "velocity"}      # the tag of a driver's union
 
 def _schema_error(err: ValidationError, tree: Any) -> KinematikaError:
     errors = err.errors()
-    first = min(errors, key=lambda e: _rank(e))
+    first = min(errors, key=_rank)
     loc = _clean(first["loc"])
     where = _place(loc, tree)
     message = _message(first, loc)

@@ -176,7 +176,7 @@ def check_tree(tree: Any, where: str = "") -> None:
 def _check_unicode(text: str, where: str) -> None:
     try:
         text.encode("utf-8")
-    except UnicodeEncodeError as err:
+    except UnicodeEncodeError:
         raise KinematikaError("syntax", f"the text {brief(text, 30)} holds a lone surrogate, "
                               "which is not Unicode text", where) from None
 

@@ -222,7 +222,7 @@ class ModelSpec(Strict):
     description: Optional[str] = None
     dimension: Optional[Literal[2, 3]] = None
     frame: str = "ground"
-    parameters: dict[str, Union[Value, None, ParameterSpec]] = Field(default_factory=dict)
+    parameters: dict[str, Union[Value, ParameterSpec, None]] = Field(default_factory=dict)
     points: dict[str, PointSpec]
     bodies: dict[str, Union[list[str], BodySpec]]
     joints: list[JointSpec] = Field(default_factory=list)

@@ -14,7 +14,7 @@ def plain(value: Any, symbolic: bool, scale: float = 1.0,
     """Convert a raw answer (nested dicts, tuples, scalars) into JSON-able data; round-off
     is cleaned against `scale`, or for a field of a compound answer against the scale of
     its own kind (`fields`: a point's against lengths, a direction's against 1)."""
-    if value is None or isinstance(value, bool) or isinstance(value, str):
+    if value is None or isinstance(value, (bool, str)):
         return value
     if isinstance(value, dict):
         return {k: plain(v, symbolic, fields.get(k, scale) if fields else scale, fields)
@@ -33,7 +33,7 @@ def number(x: Any, scale: float = 1.0) -> float:
         return x
     if abs(x) <= 1e-12 * scale or x == 0:
         return 0.0
-    digits = SIGNIFICANT - 1 - int(math.floor(math.log10(abs(x))))
+    digits = SIGNIFICANT - 1 - math.floor(math.log10(abs(x)))
     return float(round(x, digits)) + 0.0
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Optional, Union
+from typing import Any, Optional, Union
 
 from ..model.model import Model
 from .assur import Group
@@ -149,7 +149,7 @@ def identify(model: Model, groups: Optional[list[Group]], points: dict[str, tupl
     return sc
 
 
-def transmission_angle(linkage: Linkage, result) -> "np.ndarray":
+def transmission_angle(linkage: Linkage, result: Any) -> Any:
     """The transmission angle over a sweep's rows, in degrees.
 
     Four-bar: the angle at B between the coupler (B→A) and the rocker (B→O4), 0–180°

@@ -7,4 +7,4 @@
 from .result import SweepResult
 from .run import run_sweep
 
-__all__ = ["run_sweep", "SweepResult"]
+__all__ = ["SweepResult", "run_sweep"]

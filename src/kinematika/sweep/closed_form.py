@@ -39,7 +39,7 @@ class Track:
     a joint point a dyad has solved is not computed again for the answers.
     """
 
-    __slots__ = ("drawn", "origin0", "theta", "o", "v", "a", "omega", "alpha", "rot", "known")
+    __slots__ = ("a", "alpha", "drawn", "known", "o", "omega", "origin0", "rot", "theta", "v")
 
     def __init__(self, drawn: dict, origin0: str, theta: np.ndarray, o: np.ndarray, v: np.ndarray,
                  a: np.ndarray, omega: np.ndarray, alpha: np.ndarray, rot: np.ndarray) -> None:
@@ -92,7 +92,7 @@ class InputRates:
     """The input body's origin (drawn, by name) and its ω, α, v, a: constant over the rows
     (numbers, or arrays of designs)."""
 
-    __slots__ = ("origin", "omega", "alpha", "v", "a")
+    __slots__ = ("a", "alpha", "omega", "origin", "v")
 
     def __init__(self, origin: str, omega, alpha, v, a) -> None:
         self.origin, self.omega, self.alpha, self.v, self.a = origin, omega, alpha, v, a

@@ -69,7 +69,7 @@ class CompiledNewton:
         model = inst.model
         self.bodies = list(u.bodies)
         index = {b: i for i, b in enumerate(self.bodies)}
-        at = lambda name: index.get(name, -1)  # noqa: E731  (the frame and fixed bodies: −1)
+        at = lambda name: index.get(name, -1)
         self.c = np.asarray(inst.ref, dtype=float)
         self.scale = float(inst.scale)
         self.n = u.n
@@ -354,7 +354,7 @@ class CompiledNewton:
         slope, bend = self._predictor(rot, t, inverse)
         h = (dq_rows[1:] - dq_rows[:-1])[:, None]
         guess = stepped(rot[:-1], t[:-1], slope[:-1] * h + 0.5 * bend[:-1] * h * h)
-        joints = lambda r, tt: self.vectors(r, tt)[:, self.vectors.slices["pb"]]   # noqa: E731
+        joints = lambda r, tt: self.vectors(r, tt)[:, self.vectors.slices["pb"]]
         turning = np.setdiff1d(np.arange(len(self.bodies)), self.idle_body)         # not idle spins
         miss = np.maximum(np.abs(joints(rot[1:], t[1:]) - joints(*guess)).max(axis=(1, 2)) / self.scale,
                           np.abs(rot[1:, turning] - guess[0][:, turning]).max(axis=(1, 2, 3)))

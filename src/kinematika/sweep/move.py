@@ -16,6 +16,7 @@ from ..errors import KinematikaError
 from ..model.expressions import Expr, ExpressionError, evaluate, parse
 from ..model.model import Model
 from .plan import driven_joints
+import contextlib
 
 DEGREES_PER_STEP = 1.0          # continuation steps of a revolute
 LENGTHS_PER_STEP = 0.02         # of a prismatic, in model sizes
@@ -60,10 +61,8 @@ def _numeric_parameters(model: Model) -> dict[str, float]:
         progress = False
         for name, p in list(pending.items()):
             if p.value.names() <= set(env) | {"pi"}:
-                try:
+                with contextlib.suppress(ExpressionError, ValueError, OverflowError):
                     env[name] = float(evaluate(p.value, env, Numeric()))
-                except (ExpressionError, ValueError, OverflowError):
-                    pass
                 del pending[name]
                 progress = True
     return env

@@ -32,7 +32,7 @@ class Poses:
 
     @classmethod
     def drawn(cls, ref: tuple, bodies: list[str]) -> "Poses":
-        return cls(ref, {b: 0.0 for b in bodies}, {b: (0.0, 0.0) for b in bodies}, {})
+        return cls(ref, dict.fromkeys(bodies, 0.0), dict.fromkeys(bodies, (0.0, 0.0)), {})
 
     def angle(self, body: str) -> float:
         return self.phi.get(body, 0.0)

@@ -7,7 +7,6 @@ as null / an empty cell.
 from __future__ import annotations
 
 import csv
-import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Iterator

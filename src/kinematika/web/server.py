@@ -10,7 +10,6 @@ from __future__ import annotations
 import io
 import json
 import os
-import threading
 from dataclasses import dataclass, field
 from importlib import resources
 from typing import Any, Callable, Optional
@@ -206,7 +205,7 @@ def _compute(req: Request) -> tuple[int, str, bytes]:
         media, body = COMPUTE[req.endpoint](req)
     except KinematikaError:
         raise
-    except Exception as err:  # noqa: BLE001 - never show users a traceback
+    except Exception as err:
         if os.environ.get("KINEMATIKA_DEBUG"):
             raise
         message = f"internal error ({type(err).__name__}: {err}); please report it"
@@ -235,18 +234,14 @@ def _sweep(req: Request) -> tuple[str, str]:
     return JSON, b"".join(result.json_chunks()) + b"\n"      # as `sweep --json` writes it
 
 
-# matplotlib (text extents, mathtext's parser, the canvases) is not thread-safe: the
-# endpoints that draw take turns; solving and sweeping stay parallel.
-MATPLOTLIB = threading.Lock()
-
-
 def _explain(req: Request) -> tuple[str, str]:
-    with MATPLOTLIB:
-        return HTML, commands.explain_text(req.model, req.get("lang", "en"), "html",
-                                           req.get("symbolic") or None, req.get("length_unit"), req.how)
+    return HTML, commands.explain_text(req.model, req.get("lang", "en"), "html",
+                                       req.get("symbolic") or None, req.get("length_unit"), req.how)
 
 
 def _draw(req: Request) -> tuple[str, Any]:
+    from ..draw.lock import MATPLOTLIB      # the endpoints that draw take turns (matplotlib)
+
     with MATPLOTLIB:
         return _drawn(req)
 

@@ -233,7 +233,7 @@ def svg(fig: Figure, label: Callable[[Sym], Text], unit: str, prefix: str = "f",
         width = 2.2 if arrow.style == "result" else 1.8
         out.append(f'<line x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" y2="{by:.1f}" stroke="{colour}" '
                    f'stroke-width="{width}" marker-end="url(#{prefix}-{arrow.style})"/>')
-    for name, p, style in fig.points:
+    for _, p, style in fig.points:
         px, py = at(p)
         if style == "ground":
             out.append(f'<path d="M{px:.1f},{py:.1f} l-7,12 h14 z" fill="#ddd" stroke="#444"/>')
