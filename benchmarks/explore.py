@@ -29,6 +29,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+import contextlib
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "src"))
@@ -59,7 +60,7 @@ THRESHOLDS = (1e-2, 1e-3)
 def throughput(designs: int) -> None:
     from kinematika.explore.study import make_study, write_study
 
-    side = int(round(math.sqrt(designs)))
+    side = round(math.sqrt(designs))
     with tempfile.TemporaryDirectory() as tmp:
         model = Path(tmp) / "four_bar.yaml"
         model.write_text(MODEL)
@@ -181,11 +182,9 @@ def pylinkage_synthesis(budget: float, seed: int) -> dict:
 
     lo, hi = zip(*BOUNDS.values())
     np.random.seed(seed)
-    try:
+    with contextlib.suppress(_Stop):
         pl.particle_swarm_optimization(fitness, linkage, dimensions=3, bounds=(lo, hi), n_particles=45,
                                        iterations=100_000, order_relation=min, verbose=False)
-    except _Stop:
-        pass
     return {"history": record, "best": best[0], "evaluated": count[0], "wall": time.perf_counter() - start}
 
 

@@ -92,7 +92,7 @@ async def user(client: httpx.AsyncClient, texts: list[tuple[str, str | None]], s
 
 def percentile(values: list[float], q: float) -> float:
     values = sorted(values)
-    return values[min(len(values) - 1, int(round(q / 100 * (len(values) - 1))))]
+    return values[min(len(values) - 1, round(q / 100 * (len(values) - 1)))]
 
 
 async def run(args: argparse.Namespace, url: str) -> tuple[dict, list[str], float]:

@@ -29,6 +29,7 @@ import timeit
 from pathlib import Path
 
 import numpy as np
+import itertools
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
@@ -210,7 +211,7 @@ def start_up_and_output(repeat: int, big_rows: int) -> dict[str, float]:
             big_rows = int(refused.stdout.split("take at most ")[1].split()[0]) + 1
         t, mb = wall_and_memory([kin, "sweep", four, "--steps", str(big_rows - 1), "--json"])
         out[f"kinematika sweep four_bar --steps {big_rows - 1} --json"] = t
-        out[f"  (peak memory, MB)"] = mb
+        out["  (peak memory, MB)"] = mb
     with tempfile.TemporaryDirectory() as folder:
         for bodies in (1000, 10000):
             path = Path(folder) / f"chain{bodies}.yaml"
@@ -406,7 +407,7 @@ def main() -> None:
     rows = scaling([125, 250, 500, 1000, 2000], args.repeat)
     for bodies, solve, whole in rows:
         print(f"| {bodies} | {ms(solve)} | {ms(whole)} | {solve / bodies * 1e6:.1f} µs |")
-    growth = [b2[1] / b1[1] for b1, b2 in zip(rows, rows[1:])]
+    growth = [b2[1] / b1[1] for b1, b2 in itertools.pairwise(rows)]
     print("\nGrowth of the solve time per doubling of the bodies: " + ", ".join(f"{g:.2f}×" for g in growth)
           + " (2.00× is linear)")
     if args.designs:

@@ -1,14 +1,15 @@
-"""A time budget for work whose cost the input decides (exact formulas): past it, a clear
+"""The budgets of work whose cost the input decides (exact formulas): past one, a clear
 `limit` error naming the work and what asked for it, instead of a computation that runs
 for minutes.
 
-The budget is CPU time of the working thread, not wall time: a valid model must not fail
-because the machine is busy with other work (a loaded server, a shared CI runner). Exact
-formulas are pure computation (no waiting on files or the network), so their CPU time is
-their cost; a hang that waits on something is bounded elsewhere (`limits.READ_SECONDS`).
-
-Steps that only make a formula read better (`within`) are bounded by a count instead, the
-operations they are given, so that the formulas shown are the same in every run.
+What a model answers is a function of the model, never of the machine: the budgets that
+decide are counts. `spend` counts the exact algebra's work (terms formed and products of
+terms taken, `limits.EXACT_WORK` a command); `within` gives the steps that only make a
+formula read better a count of operations (`POLISH_OPS` a command), so that the formulas
+shown are the same in every run. A time limit stays only as a safety net, far above what
+the counts admit (`limits.SYMBOLIC_SECONDS` of the working thread's CPU time, 14 times the
+slowest valid model's; `STEP_SECONDS` a step): a valid model never meets it, however slow or
+busy the machine.
 """
 from __future__ import annotations
 
@@ -21,6 +22,7 @@ from typing import Any, Callable, ContextManager, Iterator, TypeVar
 
 from . import memo
 from .errors import KinematikaError
+from . import limits
 from .limits import symbolic_seconds
 
 
@@ -36,9 +38,9 @@ POLISH_OPS = 20_000         # the operations all optional steps of a command may
                             # (their inputs' sizes, summed); past it, formulas are shown in the
                             # form found. A count, not a time: every run, on any machine and
                             # under any load, gives the same forms
-STEP_SECONDS = 0.5          # processor time one optional step may take: a safety net for a
+STEP_SECONDS = 2.0          # processor time one optional step may take: a safety net for a
                             # rare input whose cost jumps (the benchmark's 113 models take at
-                            # most 0.09 s a step)
+                            # most 0.09 s a step: 22 times less)
 
 _deadline = threading.local()
 _unraisable = sys.unraisablehook
@@ -67,11 +69,12 @@ def budget(what: str, seconds: float | None = None, why: str = "") -> Iterator[N
     stack = _state()
     end = _clock() + seconds
     polish = [POLISH_OPS]           # the operations left for optional steps, shared when nested
+    work = [limits.EXACT_WORK]      # the exact algebra's work left, shared when nested
     if stack:
         end = min(end, stack[-1][0])
-        polish = stack[-1][4]
+        polish, work = stack[-1][4], stack[-1][6]
         why = why or stack[-1][5]
-    stack.append([end, what, seconds, "", polish, why])
+    stack.append([end, what, seconds, "", polish, why, work])
     alarm = _arm(end) if len(stack) == 1 else None
     try:
         with memo.fresh() if len(stack) == 1 else nullcontext():   # a command's own memory
@@ -103,6 +106,18 @@ def check(stage: str = "") -> None:
             stack[-1][3] = stage
         if _clock() > stack[-1][0]:
             raise _over()
+
+
+def spend(units: int) -> None:
+    """Count `units` of the exact algebra's work (terms formed, products of terms taken)
+    against the command's allowance, `limits.EXACT_WORK`; past it, the `limit` error. A
+    count, so that whether a model is answered never depends on the machine or its load."""
+    stack = _state()
+    if stack:
+        left = stack[-1][6]
+        left[0] -= units
+        if left[0] < 0:
+            raise _over(counted=True)
 
 
 def within(size: int, step: Callable[..., T], *args: Any, default: Any = None) -> T:
@@ -149,11 +164,12 @@ def _time_up(signum: int, frame: Any) -> None:
         raise TimeUp()
 
 
-def _over() -> OverBudget:
-    _, what, seconds, stage, _, why = _state()[-1]
+def _over(counted: bool = False) -> OverBudget:
+    _, what, seconds, stage, _, why, _ = _state()[-1]
     at = f" ({stage})" if stage else ""
-    return OverBudget("limit", f"finding {what} takes longer than {seconds:g} s of CPU time{at}: "
-                      f"they are too large; {_advice(why)}", "")
+    cost = (f"more than {limits.EXACT_WORK:,} steps of exact algebra".replace(",", " ") if counted
+            else f"longer than {seconds:g} s of CPU time")
+    return OverBudget("limit", f"finding {what} takes {cost}{at}: they are too large; {_advice(why)}", "")
 
 
 def _advice(why: str) -> str:

@@ -34,3 +34,22 @@ class KinematikaError(Exception):
     def as_json(self) -> dict:
         """The contract's JSON form of the error."""
         return {"error": {"kind": self.kind, "message": self.message, "where": self.where}}
+
+
+class KinematikaWarning(UserWarning):
+    """Input answered as written that is most likely a mistake (an angle of 30 rad where 30°
+    was meant): a message and a place, one line each. The command line prints it on
+    standard error, the JSON answer lists it under `warnings`, the page shows it, and from
+    Python it is a standard warning (`warnings.catch_warnings` catches it)."""
+
+    def __init__(self, message: str, where: str = "") -> None:
+        self.message = shown(message, MESSAGE_CHARS)
+        self.where = clip_middle(shown(where), WHERE_CHARS)
+        super().__init__(self.message)
+
+    def __str__(self) -> str:
+        return f"{self.where}: {self.message}" if self.where else self.message
+
+    def as_json(self) -> dict:
+        """The answer's JSON form: `{"message": ..., "where": ...}`."""
+        return {"message": self.message, "where": self.where}

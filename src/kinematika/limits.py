@@ -34,8 +34,12 @@ SWEEP_STEPS = 10_000_000     # increments of one sweep
 SWEEP_VALUES = 32_000_000    # rows × numbers per row held at once: 480 000 rows of a four-bar (under 1 GB on every path)
 
 # symbolic work ----------------------------------------------------------------------------
-SYMBOLIC_SECONDS = 15.0      # CPU time (not wall time: a busy machine does not fail a valid model)
-                             # for exact formulas (KINEMATIKA_SYMBOLIC_SECONDS overrides)
+EXACT_WORK = 1_500_000       # steps of exact algebra a command may take (terms formed, products of
+                             # terms): a count, so whether a model is answered is the model's own
+                             # matter (the most any shipped model needs: 440 000, Jansen's leg
+                             # explained in its crank angle, 13 s of CPU time)
+SYMBOLIC_SECONDS = 180.0     # CPU time of exact formulas: a safety net only, far above what the
+                             # counts admit (about 45 s here); KINEMATIKA_SYMBOLIC_SECONDS overrides
 POINT_OPS = 2000             # operations of a constructed point's exact coordinate, in named
                              # coordinates (engine.positions.NAME_OPS): a four-bar's coupler pin
                              # has 84; Jansen's leg in its 15 lengths, under 400 in its names

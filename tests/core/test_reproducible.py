@@ -162,3 +162,21 @@ def test_the_exact_field_stops_at_its_work_not_at_a_time():
         small.back(small.to(e))
     field = ExactField([e], max_work=10_000)
     assert sympy.expand(field.back(field.to(e)) - e) == 0
+
+
+def test_whether_a_model_is_answered_is_decided_by_a_count(monkeypatch):
+    """The exact algebra's work is counted (`budget.spend`): past `limits.EXACT_WORK` a model
+    is refused with a `limit` error that says so, whatever the clock; the four-bar at a
+    general crank angle needs some thousands of steps, so 2 000 refuse it and the default
+    answers it."""
+    from kinematika import limits
+    from kinematika.budget import OverBudget
+    from kinematika.commands import solve_data
+
+    model = ROOT / "tests" / "cases" / "tb_fourbar_symbolic_theta.yaml"
+    assert solve_data(model)["symbolic"] is True
+    monkeypatch.setattr(limits, "EXACT_WORK", 2000)
+    with pytest.raises(OverBudget) as info:
+        solve_data(model)
+    assert info.value.kind == "limit"
+    assert info.value.message.startswith("finding the exact formulas takes more than 2 000 steps of exact algebra")

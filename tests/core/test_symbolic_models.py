@@ -10,7 +10,6 @@ and spherical four-bar) answer with named coordinates, equal to their hand deriv
 from __future__ import annotations
 
 import math
-import os
 from pathlib import Path
 
 import mpmath
@@ -19,18 +18,17 @@ import sympy as sp
 
 from kinematika.commands import solve_data
 from kinematika.errors import KinematikaError
-from tests.conftest import hand_derivations
+from tests.conftest import DEEP, hand_derivations
 
 ROOT = Path(__file__).resolve().parents[2]
 MODELS = ROOT / "benchmarks" / "models" / "symbolic"
 derive = hand_derivations()
 meet, polar, motion = derive.meet, derive.polar, derive.motion
-CI = bool(os.environ.get("CI"))
 
 
 def sets(*values: dict) -> list:
-    """Parameter sets to check: the model's own values, and others where not in CI."""
-    return list(values[:1] if CI else values)
+    """Parameter sets to check: the model's own values, and the others in a deep run."""
+    return list(values if DEEP else values[:1])
 
 
 def shown(name: str) -> dict:
@@ -172,7 +170,7 @@ def test_four_bar_coupler_point(at):
 # the textbook cases, every parameter a symbol --------------------------------------------------
 HEAVY = {"tb_fourbar_coupler_point", "tb_fourbar_inclined_ground", "tb_watt_six_bar"}   # long
 NUMERIC_CASES = [pytest.param(n, marks=pytest.mark.slow) if n in HEAVY else n for n in sorted(derive.NUMERIC)
-                 if not (CI and n in HEAVY)]        # formulas: seconds to read back; not in CI
+                 if DEEP or n not in HEAVY]        # formulas: seconds to read back; in a deep run
 
 
 @pytest.mark.parametrize("name", NUMERIC_CASES)
@@ -280,7 +278,7 @@ NAMED = ["watt_one", "stephenson_triad", "spherical_crank_rocker"]
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", [] if CI else NAMED)        # seconds each: not in CI
+@pytest.mark.parametrize("name", NAMED if DEEP else [])        # seconds each: in a deep run
 def test_textbook_mechanism_with_long_formulas(name):
     """Mechanisms whose exact formulas written out are long (a Watt six-bar's second dyad
     on the first loop's roots, a triad, a spherical four-bar given by decimals): solved with
@@ -306,7 +304,7 @@ def test_textbook_mechanism_with_long_formulas(name):
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(CI, reason="seconds: not in CI")
+@pytest.mark.skipif(not DEEP, reason="seconds: in a deep run (KINEMATIKA_DEEP=1)")
 def test_a_model_with_named_quantities_is_drawn_at_its_values():
     """Jansen's leg with only its crank angle a symbol (its decimal lengths make roots of
     roots: named coordinates, and the foot's acceleration in named velocities): the figure
@@ -321,7 +319,7 @@ def test_a_model_with_named_quantities_is_drawn_at_its_values():
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(CI, reason="seconds: not in CI")
+@pytest.mark.skipif(not DEEP, reason="seconds: in a deep run (KINEMATIKA_DEEP=1)")
 def test_jansen_leg_centres_with_named_coordinates():
     """`centres --symbolic` of Jansen's leg in its 15 lengths: each of the 28 centres,
     evaluated with the names of `where`, is where the two bodies' velocity fields agree by

@@ -29,7 +29,7 @@ if __package__ in (None, ""):                      # run as a script: import as 
     __package__ = "fuzz"
 
 from .cases import Case, bases, case, symbolic_examples
-from .contract import ROOT, Run, check_run, json_wanted, run_cli
+from .contract import ROOT, Run, check_run, json_wanted, run_cli, without_warnings
 from .forks import run_all
 from .scaling import ACCELERATION, ALPHA, OMEGA, POSITION, VELOCITY, close, expected, factor
 
@@ -93,7 +93,7 @@ def _outcome(run: Run) -> str:
     if run.status == 0:
         return "answer"
     if run.status == 2:
-        kind = re.match(r"error \((\w+)\)", run.stderr)
+        kind = re.match(r"error \((\w+)\)", without_warnings(run.stderr))
         if kind:
             return f"error {kind.group(1)}"
         try:
@@ -115,7 +115,7 @@ def check(case: Case, run: Run, text: str) -> str:
         bad = CONTROL.search(run.stdout)
         if bad:
             return f"control character {bad.group()!r} in the output: {run.stdout[max(0, bad.start() - 40):bad.end() + 40]!r}"
-        if run.stderr.strip():
+        if without_warnings(run.stderr).strip():
             return f"exit 0 with text on stderr: {run.stderr[:200]!r}"
         if not NAN.search(text + " ".join(run.args)):       # 'nan' the user wrote is shown as written
             bad = NAN.search(run.stdout)

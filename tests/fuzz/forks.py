@@ -20,10 +20,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Iterator
 
-from .contract import MEMORY, Run
+from .contract import MEMORY, SECONDS, Run
 
-CPU = 20.0          # the contract's time bound, in CPU seconds of the child: killed past it
-WALL = 120.0        # a child still running after this is killed, whatever its CPU time (a hang
+CPU = SECONDS       # the contract's time bound, in CPU seconds of the child: killed past it
+WALL = 600.0        # a child still running after this is killed, whatever its CPU time (a hang
                     # that waits); CPU time, not wall time, is the bound otherwise, so that
                     # a loaded machine (other work on its 2 cores) fails no valid input
 _ready = False

@@ -1,4 +1,4 @@
-"""The limits table of the README and of docs/model-format.md is `kinematika.limits`: the
+"""The limits table of docs/model-format.md is `kinematika.limits`: the
 same names, the same values, nothing missing or extra."""
 from __future__ import annotations
 
@@ -17,7 +17,7 @@ def _table(text: str) -> dict[str, float]:
     return {name: float(value.replace(" ", "").replace(",", "")) for name, value in ROW.findall(text)}
 
 
-@pytest.mark.parametrize("doc", ["README.md", "docs/model-format.md"])
+@pytest.mark.parametrize("doc", ["docs/model-format.md"])
 def test_the_documented_limits_are_the_modules(doc):
     table = _table((ROOT / doc).read_text(encoding="utf-8"))
     module = {name: float(value) for name, value in vars(limits).items()

@@ -174,10 +174,10 @@ def test_the_time_budget_interrupts_one_long_computation():
     import sympy
 
     x, y = sympy.symbols("x y")
-    start = time.monotonic()
+    start = time.thread_time()                # this thread's CPU time: the machine's load is not in it
     with pytest.raises(OverBudget), budget("the exact formulas", 0.3):
         sympy.factor(sympy.expand((x + 3 * y + 7) ** 60 * (x - y + 1) ** 60 - 1))
-    assert time.monotonic() - start < 5       # a hang detector, not a speed claim
+    assert time.thread_time() - start < 10    # stopped, not run to its end (minutes)
 
 
 def test_a_long_name_is_refused_and_a_long_title_is_shown_cut(tmp_path):

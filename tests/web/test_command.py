@@ -12,6 +12,8 @@ import pytest
 
 from tests.conftest import EXAMPLES, ROOT
 
+WAIT = 60.0         # seconds an answer may take before the test calls it a hang
+
 
 def start(*args: str) -> tuple[subprocess.Popen, str]:
     """The command running and its page's URL (once it answers)."""
@@ -23,18 +25,22 @@ def start(*args: str) -> tuple[subprocess.Popen, str]:
     if not m:
         proc.kill()
         pytest.fail(f"no URL in {line!r}: {proc.stderr.read()}")
-    for _ in range(200):
+    deadline = time.monotonic() + 120          # a hang detector: a busy machine starts slowly
+    while True:
         try:
-            httpx.get(m.group(0) + "api/start", timeout=2)
+            httpx.get(m.group(0) + "api/start", timeout=WAIT)
             break
         except httpx.HTTPError:
+            if time.monotonic() > deadline:
+                proc.kill()
+                raise
             time.sleep(0.05)
     return proc, m.group(0)
 
 
 def stop(proc: subprocess.Popen) -> str:
     proc.terminate()
-    _, err = proc.communicate(timeout=10)
+    _, err = proc.communicate(timeout=WAIT)
     return err
 
 
@@ -43,12 +49,12 @@ def test_the_command_serves_the_model_it_was_given():
     proc, url = start(str(path))
     try:
         assert url.startswith("http://127.0.0.1:")
-        opening = httpx.get(url + "api/start").json()
+        opening = httpx.get(url + "api/start", timeout=WAIT).json()
         assert opening["model"] == path.read_text() and opening["name"] == "four_bar.yaml"
-        solved = httpx.post(url + "api/solve", json={"model": opening["model"]}).json()
+        solved = httpx.post(url + "api/solve", json={"model": opening["model"]}, timeout=WAIT).json()
         assert solved["points"]["A@crank"]["velocity"] == [-10.0, 0.0]     # ω × O2A = 10 × (0, 1)
-        assert "data-testid=\"figure\"" in httpx.get(url).text
-        assert httpx.get(url, headers={"host": "elsewhere.example"}).status_code == 400
+        assert "data-testid=\"figure\"" in httpx.get(url, timeout=WAIT).text
+        assert httpx.get(url, headers={"host": "elsewhere.example"}, timeout=WAIT).status_code == 400
     finally:
         stop(proc)
 
@@ -57,7 +63,7 @@ def test_another_address_is_served_with_a_warning():
     proc, url = start("--host", "127.0.0.2")             # loopback, but not the default
     try:
         assert url.startswith("http://127.0.0.2:")
-        assert httpx.get(url + "api/start").status_code == 200
+        assert httpx.get(url + "api/start", timeout=WAIT).status_code == 200
     finally:
         err = stop(proc)
     assert "warning: serving on 127.0.0.2" in err

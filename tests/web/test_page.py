@@ -66,7 +66,7 @@ def page(browser, server):
     context = browser.new_context(viewport={"width": 1400, "height": 1000}, bypass_csp=True,
                                   accept_downloads=True)
     pg = context.new_page()
-    pg.set_default_timeout(8000)
+    pg.set_default_timeout(60_000)          # a hang detector: a loaded machine is slow, not wrong
     errors: list[str] = []
     pg.on("pageerror", lambda e: errors.append(str(e)))
     pg.on("console", lambda m: errors.append(m.text) if m.type == "error" and "attribute" in m.text
@@ -82,7 +82,7 @@ def page(browser, server):
 def ready(pg) -> None:
     """Wait for the model to be solved, drawn and swept."""
     pg.wait_for_function("() => window.kinematika && window.kinematika.state.solution"
-                         " && document.getElementById('busy').hidden", timeout=20000)
+                         " && document.getElementById('busy').hidden", timeout=60_000)
 
 
 def cell(pg, key: str):

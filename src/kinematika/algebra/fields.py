@@ -19,7 +19,7 @@ from __future__ import annotations
 import functools
 from typing import Any, Iterable
 
-from ..budget import within
+from ..budget import spend, within
 from ..memo import Memo
 
 PRIME_LIMIT = 10 ** 12      # rational radicands up to this size are split into prime roots
@@ -220,6 +220,7 @@ class ExactField:
         if self.max_terms is not None and products > PRODUCT_TERMS * self.max_terms:
             raise TooLarge("too many terms")      # before the product is formed, not after
         self._work += products
+        spend(products)
         den = dict(x.den)
         for f, k in y.den.items():
             den[f] = den.get(f, 0) + k
@@ -250,6 +251,7 @@ class ExactField:
     def _check(self, x: Value) -> None:
         terms = sum(len(p) for p in x.num.values())
         self._work += terms
+        spend(terms)
         if self.max_work is not None and self._work > self.max_work:
             raise TooLarge("too much work")
         if self.max_terms is not None and terms > self.max_terms:
@@ -602,7 +604,7 @@ class RationalField:
         elif e.is_Pow and e.exp.is_Integer:
             out = self._element(e.base, seen) ** int(e.exp)
         else:
-            out = self._gen_of[e]
+            out = self._gen_of[e]    # type: ignore[index]  # set by `to`, which calls this
         seen[e] = out
         return out
 
@@ -725,7 +727,7 @@ def _whole(e: Any, max_terms: int = MAX_TERMS, written: bool = False) -> Any:
         value = factored(value)
     elif ops(value) <= COMMON_OPS:          # too large to factor: common factors taken out
         value = within(ops(value), sympy.factor_terms, value, default=value)
-    if not written:
+    if not written or field is None:
         return value
     try:
         return [value, field._written(e)]

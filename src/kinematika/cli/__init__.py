@@ -17,10 +17,14 @@ def main() -> None:
     for stream in (sys.stdout, sys.stderr):      # a terminal that cannot show a character
         if hasattr(stream, "reconfigure"):        # gets an escape, never an encoding error
             stream.reconfigure(errors="backslashreplace")
-    if not os.environ.get("KINEMATIKA_DEBUG"):   # the output is the answer or one error line
-        import warnings
+    import warnings
 
+    from ..errors import KinematikaWarning
+
+    if not os.environ.get("KINEMATIKA_DEBUG"):   # the output is the answer or one error line
         warnings.simplefilter("ignore")
+    warnings.simplefilter("default", KinematikaWarning)     # ... and a line per likely mistake
+    warnings.showwarning = _warning_line
     from . import fast
 
     call = fast.parse(sys.argv[1:])
@@ -41,6 +45,12 @@ def main() -> None:
             flush_and_leave(_status(done.code))
         flush_and_leave(0)
     _typer_main()
+
+
+def _warning_line(message: Any, category: type, filename: str, lineno: int, file: Any = None,
+                  line: Any = None) -> None:
+    """A warning on standard error as one line: `warning: points.A.angle: ...`."""
+    print(f"warning: {message}", file=sys.stderr)
 
 
 def _status(code: Any) -> int:

@@ -38,7 +38,7 @@ def explore(model: Path = ModelArg,
     """Evaluate many designs of MODEL (values of its parameters) and write one row each: the
     parameters, whether it assembles (and why not), and the metrics."""
     from ..explore.evaluate import Sweep
-    from ..explore.study import make_study, write_study
+    from ..explore.study import Parts, make_study, resume_note, write_study
     from ..sweep.progress import reporter
 
     def work() -> int:
@@ -47,6 +47,10 @@ def explore(model: Path = ModelArg,
         bar = reporter(True, study.designs.count, f"exploring {study.designs.count} designs")
         try:
             write_study(study, output, resume, scheduler, workers, bar)
+        except KeyboardInterrupt:
+            bar(None)
+            print(f"stopped{resume_note(Parts(output, study)) or ': nothing was kept'}", file=sys.stderr)
+            sys.exit(130)
         finally:
             bar(None)
         return study.designs.count
@@ -124,7 +128,8 @@ def _objective(model: Path, target, function, motion, point, body, over, points)
         if not body:
             raise KinematikaError("usage", "function generation needs --output BODY", "--output")
         if function.lower().endswith(".csv"):
-            return f"structural_error:{body}={function}", {}
+            name = Path(function).name
+            return f"structural_error:{body}={name}", {name: _target_text(Path(function), "--target-function")}
         from ..explore.designs import parse_vary
         from ..explore.synthesis import function_targets
 
@@ -134,8 +139,22 @@ def _objective(model: Path, target, function, motion, point, body, over, points)
     if not point:
         raise KinematikaError("usage", "path and motion generation need --point P", "--point")
     kind = "path_error" if target is not None else "motion_error"
-    name = str(target if target is not None else motion)
-    return f"{kind}:{point}={name}", {}
+    path = target if target is not None else motion
+    option = "--target" if target is not None else "--target-motion"
+    return f"{kind}:{point}={path.name}", {path.name: _target_text(path, option)}
+
+
+def _target_text(path: Path, option: str) -> str:
+    """A target file named on the command line (relative to the working folder), as text."""
+    from ..errors import KinematikaError
+
+    if path.suffix.lower() != ".csv":
+        raise KinematikaError("usage", f"{path.name}: a target file is a .csv file", option)
+    try:
+        return path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as err:
+        raise KinematikaError("usage", f"cannot read {path}: {getattr(err, 'strerror', None) or err}",
+                              option) from None
 
 
 def _plot_synthesis(model: Path, result, point, plot: Path, files: dict, objective: str) -> None:
@@ -204,7 +223,10 @@ def _split_names(text: str) -> list[str]:
 
 def _read_study(path: Path):
     from ..errors import KinematikaError
+    from ..extras import need
 
+    need("pyarrow", "plot-study")
+    need("pandas", "plot-study")
     try:
         if path.suffix.lower() == ".csv":
             import pandas as pd

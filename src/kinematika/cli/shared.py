@@ -12,7 +12,7 @@ from typing import Any, Callable, Iterator, NoReturn
 from ..errors import KinematikaError
 from ..limits import MESSAGE_CHARS
 from ..report.json_text import json_bytes
-from ..text import shown
+from ..text import clip_middle, shown
 
 
 def fail(err: KinematikaError, as_json: bool) -> NoReturn:
@@ -51,8 +51,17 @@ def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
         sys.exit(1)
 
 
+PATH_CHARS = 90       # a path in an error is cut in the middle to this, so the reason shows
+
+
+def cannot_write(path: Any, reason: str, option: str = "") -> KinematikaError:
+    """An `output` error: the file (a long path cut in the middle, its name kept), why it
+    cannot be written, and the option that named it."""
+    return KinematikaError("output", f"cannot write {clip_middle(shown(path), PATH_CHARS)}: {reason}", option)
+
+
 def _write_error(path: Any, err: OSError, option: str = "") -> KinematikaError:
-    return KinematikaError("output", f"cannot write {shown(path)}: {err.strerror or err}", option)
+    return cannot_write(path, str(err.strerror or err), option)
 
 
 @contextmanager
@@ -86,10 +95,13 @@ def sweep_options(joint: Any, by: Any, steps: Any) -> dict:
 def output_file(path: Path, option: str) -> Path:
     """`path` if a file can be written there; else an `output` error naming the option."""
     parent = path.parent
-    if not parent.is_dir():
-        raise KinematikaError("output", f"cannot write {path}: there is no folder {parent}", option)
-    if path.is_dir():
-        raise KinematikaError("output", f"cannot write {path}: it is a folder", option)
+    try:
+        if not parent.is_dir():
+            raise cannot_write(path, f"there is no folder {clip_middle(shown(parent), PATH_CHARS // 2)}", option)
+        if path.is_dir():
+            raise cannot_write(path, "it is a folder", option)
+    except OSError as err:                  # a name too long, a folder that cannot be read
+        raise _write_error(path, err, option) from None
     return path
 
 

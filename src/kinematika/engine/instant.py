@@ -16,7 +16,7 @@ from ..algebra.vectors import Space, dot, sub
 from ..errors import KinematikaError
 from ..model import model as m
 from ..model.expressions import Expr, ExpressionError, evaluate
-from .positions import positions
+from .positions import angle_warnings, positions
 
 
 @dataclass
@@ -63,6 +63,8 @@ class Instant:
     names: dict = field(default_factory=dict)        # named quantities (symbolic): symbol ->
                                                      # formula in parameters and earlier names
                                                      # (coordinates x_E, then velocities omega_link)
+    warnings: list = field(default_factory=list)     # KinematikaWarning: input answered as written
+                                                     # that is most likely a mistake
 
     @property
     def symbolic(self) -> bool:
@@ -137,6 +139,7 @@ def instantiate(model: m.Model, symbolic: bool | None = None) -> Instant:
     backend = Symbolic() if use_symbols else Numeric()
     env, probe = _parameters(model, backend, force_symbols=bool(symbolic))
     inst = Instant(model, backend, Space(model.dimension), env, {}, {}, probe)
+    inst.warnings = angle_warnings(inst)
     try:
         inst.points = positions(inst)
     except KinematikaError:

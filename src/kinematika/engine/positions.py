@@ -10,9 +10,10 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
 from typing import TYPE_CHECKING, Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, KinematikaWarning
 from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
                                    TwoCircles, TwoLines, construction_order, uses)
 from ..model.expressions import parse
@@ -21,6 +22,7 @@ if TYPE_CHECKING:
     from .instant import Instant
 
 TOLERANCE = 1e-6        # relative: circles this close to touching meet in one point
+TURN = 2 * math.pi
 
 
 def positions(inst: "Instant", builder: Optional[type] = None) -> dict[str, tuple]:
@@ -49,6 +51,32 @@ def positions(inst: "Instant", builder: Optional[type] = None) -> dict[str, tupl
 
 
 NAME_OPS = 400      # a constructed point whose exact coordinates would be longer is named
+
+
+def angle_warnings(inst: "Instant") -> list[KinematikaWarning]:
+    """A warning for every drawing angle (a polar point's `angle`) that is a number more than
+    one turn (2π) from zero: angles are radians, so `angle: 30` is 30 rad (1719°, 4.8 turns),
+    most likely 30° written without `deg()`. The model is answered as written; the warning
+    names the place and the fix. Angles with symbols are not judged."""
+    out = []
+    for name, spec in inst.model.points.items():
+        if not isinstance(spec, Polar):
+            continue
+        where = f"points.{name}.angle"
+        value = inst.value(spec.angle, where)
+        if getattr(value, "free_symbols", None):
+            continue
+        try:
+            angle = float(value)
+        except (TypeError, ValueError, OverflowError):
+            continue
+        if math.isfinite(angle) and abs(angle) > TURN * (1 + 1e-9):
+            out.append(KinematikaWarning(
+                f"the angle {angle:g} is in radians: {math.degrees(angle):.0f}°, {abs(angle) / TURN:.1f} "
+                f"turns; for {angle:g}° write deg({angle:g})", where))
+    for w in out:
+        warnings.warn(w, stacklevel=3)
+    return out
 
 
 def _bounded(inst: "Instant", builder: type, spec: Construction, built: tuple, name: str,

@@ -35,9 +35,9 @@ def explore(model: Any, vary: Union[Mapping[str, tuple], Iterable[str]], metrics
     """
     from .study import collect, make_study, write_study
 
-    if isinstance(vary, Mapping):
-        vary = [Vary(str(k), float(v[0]), float(v[1])) for k, v in vary.items()]
-    study = make_study(model, vary, metrics, grid, samples, seed, Sweep(joint, by, steps), chunk)
+    varied: Iterable[Vary | str] = vary if not isinstance(vary, Mapping) else \
+        [Vary(str(k), float(v[0]), float(v[1])) for k, v in vary.items()]
+    study = make_study(model, varied, metrics, grid, samples, seed, Sweep(joint, by, steps), chunk)
     if output is None:
         table = collect(study, scheduler, workers)
     else:

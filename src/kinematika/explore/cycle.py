@@ -44,7 +44,7 @@ class Cycle:
     @property
     def complete(self) -> np.ndarray:
         """(D,): the whole sweep was assembled."""
-        return self.ok.all(axis=1)
+        return np.asarray(self.ok.all(axis=1))
 
 
 class BatchCycle(Cycle):
@@ -68,7 +68,8 @@ class BatchCycle(Cycle):
         return self._rows(self.batch.outcome.tracks[body].alpha)
 
     def motion(self, ref: PointRef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        return tuple(self._rows(x) for x in self.batch.outcome.tracks[ref.body].point(ref.point))
+        p, v, a = (self._rows(x) for x in self.batch.outcome.tracks[ref.body].point(ref.point))
+        return p, v, a
 
     def drawn(self, point: str) -> np.ndarray:
         return self.batch.points[point]
@@ -96,7 +97,8 @@ class ResultCycle(Cycle):
 
     def motion(self, ref: PointRef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         values = self.result.points[str(ref)]
-        return tuple(_complex(values[q])[None, :] for q in ("position", "velocity", "acceleration"))
+        p, v, a = (_complex(values[q])[None, :] for q in ("position", "velocity", "acceleration"))
+        return p, v, a
 
     def drawn(self, point: str) -> np.ndarray:
         name = next(k for k in self.result.points if k.partition("@")[0] == point)

@@ -75,7 +75,7 @@ class Designs:
 
     @property
     def count(self) -> int:
-        return self.grid ** len(self.vary) if self.grid is not None else int(self.samples)
+        return self.grid ** len(self.vary) if self.grid is not None else int(self.samples or 0)
 
     def values(self, start: int, stop: int) -> dict[str, np.ndarray]:
         """The designs start, ..., stop - 1: one array of values per varied parameter."""

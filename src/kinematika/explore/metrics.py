@@ -147,7 +147,7 @@ def four_bar_roles(ctx: Context, where: str = "--metric grashof") -> dict[str, s
     return roles
 
 
-def _linkage(ctx: Context) -> Optional[dict[str, str]]:
+def _linkage(ctx: Context) -> Optional[dict[str, Any]]:
     """Four-bar (input crank + RRR closing on the frame) or slider-crank (+ RRP on the frame)."""
     groups, model = ctx.groups, ctx.model
     if not groups or len(groups) != 2 or groups[0].kind != "input":
@@ -173,7 +173,7 @@ def _linkage_output(ctx: Context, where: str) -> str:
     return roles["output"]
 
 
-def grashof(c: Cycle, roles: dict[str, str]) -> np.ndarray:
+def grashof(c: Cycle, roles: dict[str, Any]) -> np.ndarray:
     """Grashof's class from the drawn lengths (s + l against p + q, then the shortest link)."""
     o2, a, b, o4 = (c.drawn(roles[k]) for k in ("O2", "A", "B", "O4"))
     lengths = np.stack([np.abs(o4 - o2), np.abs(a - o2), np.abs(b - a), np.abs(o4 - b)])
@@ -183,7 +183,7 @@ def grashof(c: Cycle, roles: dict[str, str]) -> np.ndarray:
     out = by_shortest[np.argmin(lengths, axis=0)]
     out = np.where(gap > 1e-9 * l, "non-grashof", out)
     out = np.where(np.abs(gap) <= 1e-9 * l, "change-point", out)
-    return np.where(np.isfinite(gap), out, None)
+    return np.where(np.isfinite(gap), out, np.array(None, dtype=object))
 
 
 def _transmission(ctx: Context, where: str) -> Callable[[Cycle], np.ndarray]:
@@ -361,7 +361,7 @@ def read_table(name: str, files: dict[str, str], where: str, columns: int) -> np
     """The numeric rows of a CSV file's text (a header line is skipped), `columns` numbers each."""
     if name not in files:
         raise KinematikaError("usage", f"{name}: a target file is a .csv file", where)
-    rows = []
+    rows: list[list[float]] = []
     for i, row in enumerate(csv.reader(io.StringIO(files[name]))):
         cells = [c.strip() for c in row if c.strip()]
         if not cells:

@@ -1,7 +1,8 @@
 """A design study run in chunks, here or on a Dask cluster, written as it goes.
 
 The designs are cut into chunks of `chunk` consecutive designs. Each chunk is evaluated
-on its own (`run_chunk`: by this process, or by a worker of a dask.distributed cluster)
+on its own (`run_chunk`: by this process, by a pool of local processes, or by a worker of a
+dask.distributed cluster)
 and, when it comes back, written to `OUT.parts/part-NNNNNN.parquet` (a temporary name,
 then renamed: a part on disk is always whole). When every chunk is there the parts are
 joined, in order, into the output (`.parquet` or `.csv`) and the folder is removed. A
@@ -123,23 +124,54 @@ Progress = Callable[[int], None]
 def compute(study: Study, pending: list[int], done: Callable[[int, Any], None],
             scheduler: Any = None, workers: Optional[int] = None) -> None:
     """Evaluate the chunks `pending`, calling `done(index, table)` as each comes back (in any
-    order): in this process, on a local Dask cluster of `workers` processes, or on the
-    cluster at `scheduler` (an address, or a dask.distributed Client)."""
+    order): in this process, in a pool of `workers` local processes, or on the Dask cluster
+    at `scheduler` (an address, or a dask.distributed Client)."""
     workers = workers if workers is not None else (os.cpu_count() or 1)
-    if scheduler is None and (workers <= 1 or len(pending) <= 1):
+    if scheduler is not None:
+        _on_scheduler(study, pending, done, scheduler)
+    elif workers <= 1 or len(pending) <= 1:
         for index in pending:
             done(index, run_chunk(study, index))
-        return
-    from dask.distributed import Client, LocalCluster
+    else:
+        _in_processes(study, pending, done, workers)
 
-    cluster = None
-    if scheduler is None:
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None, silence_logs=40)
-        client = Client(cluster)
-    elif isinstance(scheduler, str):
+
+def _in_processes(study: Study, pending: list[int], done: Callable[[int, Any], None], workers: int) -> None:
+    """The chunks in a pool of local processes (the standard library's; no cluster needed),
+    `WINDOW` chunks in flight per process. Processes are spawned, not forked: the caller may
+    have threads (the page's server, Jupyter)."""
+    import multiprocessing
+    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+
+    from concurrent.futures.process import BrokenProcessPool
+
+    todo = iter(pending)
+    context = multiprocessing.get_context("spawn")
+    with ProcessPoolExecutor(max_workers=min(workers, len(pending)), mp_context=context) as pool:
+        running = {pool.submit(run_chunk, study, i): i for i in _take(todo, WINDOW * workers)}
         try:
-            client = Client(scheduler, timeout="20s")
+            while running:
+                finished, _ = wait(running, return_when=FIRST_COMPLETED)
+                for future in finished:
+                    done(running.pop(future), future.result())
+                    running.update({pool.submit(run_chunk, study, i): i for i in _take(todo, 1)})
+        except BrokenProcessPool:
+            raise KinematikaError("limit", "a worker process of the study ended abruptly (out of memory?): "
+                                  "try fewer --workers or a smaller --chunk", "--workers") from None
+        except BaseException:
+            for future in running:
+                future.cancel()
+            raise
+
+
+def _on_scheduler(study: Study, pending: list[int], done: Callable[[int, Any], None], scheduler: Any) -> None:
+    """The chunks on a Dask cluster: `scheduler` is its address or a Client."""
+    from ..extras import need
+
+    distributed = need("dask.distributed", "a study on a Dask cluster", "--scheduler")
+    if isinstance(scheduler, str):
+        try:
+            client = distributed.Client(scheduler, timeout="20s")
         except OSError as err:
             raise KinematikaError("usage", f"cannot reach the Dask scheduler at {scheduler}: {err}",
                                   "--scheduler") from None
@@ -150,8 +182,6 @@ def compute(study: Study, pending: list[int], done: Callable[[int, Any], None],
     finally:
         if client is not scheduler:
             client.close()
-        if cluster is not None:
-            cluster.close()
 
 
 def _on_cluster(client: Any, study: Study, pending: list[int], done: Callable[[int, Any], None]) -> None:
@@ -192,7 +222,9 @@ class Parts:
         self.manifest = self.folder / "study.json"
 
     def open(self, resume: bool) -> set[int]:
-        """Start (or, with `resume`, continue) the study; the chunks already written."""
+        """Start (or, with `resume`, continue) the study; the chunks already written. The
+        folder is made when the first chunk is written (`write`): a run that computes nothing
+        leaves nothing."""
         if self.folder.exists():
             if not resume:
                 raise KinematikaError("usage", f"{self.folder} holds an interrupted study: add --resume "
@@ -205,12 +237,19 @@ class Parts:
                 raise KinematikaError("usage", f"{self.folder} holds a different study (another model, "
                                       "parameters, designs or metrics): delete it to start again",
                                       "--resume")
-            return {int(p.stem.split("-")[1]) for p in self.folder.glob("part-*.parquet")}
-        self.folder.mkdir()
-        self.manifest.write_text(json.dumps({"signature": self.study.signature,
-                                             "designs": self.study.designs.count,
-                                             "chunk": self.study.chunk}))
+            return self.written()
         return set()
+
+    def written(self) -> set[int]:
+        """The chunks on disk."""
+        return {int(p.stem.split("-")[1]) for p in self.folder.glob("part-*.parquet")}
+
+    def _make(self) -> None:
+        if not self.manifest.exists():
+            self.folder.mkdir(exist_ok=True)
+            self.manifest.write_text(json.dumps({"signature": self.study.signature,
+                                                 "designs": self.study.designs.count,
+                                                 "chunk": self.study.chunk}))
 
     def path(self, index: int) -> Path:
         return self.folder / f"part-{index:06d}.parquet"
@@ -219,6 +258,7 @@ class Parts:
         """A finished chunk, whole or not at all (written aside, then renamed)."""
         import pyarrow.parquet as pq
 
+        self._make()
         tmp = self.folder / f"tmp-{index:06d}.parquet"
         pq.write_table(table, tmp)
         os.replace(tmp, self.path(index))
@@ -250,7 +290,9 @@ def _writer(path: Path, schema: Any, suffix: str) -> Any:
 
 def write_study(study: Study, output: Path, resume: bool = False, scheduler: Any = None,
                 workers: Optional[int] = None, progress: Optional[Progress] = None) -> None:
-    """Run the study into `output` (.parquet or .csv), in chunks, resumable."""
+    """Run the study into `output` (.parquet or .csv), in chunks, resumable. A run stopped by
+    an error keeps the chunks it finished and its error says how to resume; one that
+    finished none leaves no folder behind."""
     if output.suffix.lower() not in (".parquet", ".csv"):
         raise KinematikaError("usage", f"the output is a .parquet or .csv file, got {output.name}", "-o")
     parts = Parts(output, study)
@@ -266,8 +308,19 @@ def write_study(study: Study, output: Path, resume: bool = False, scheduler: Any
         if progress:
             progress(int(count))
 
-    compute(study, [i for i in range(study.chunks) if i not in finished], done, scheduler, workers)
+    try:
+        compute(study, [i for i in range(study.chunks) if i not in finished], done, scheduler, workers)
+    except KinematikaError as err:
+        raise KinematikaError(err.kind, err.message + resume_note(parts), err.where) from None
     parts.join()
+
+
+def resume_note(parts: Parts) -> str:
+    """What an interrupted study left: nothing, or the finished designs and how to go on."""
+    if not parts.folder.exists():
+        return ""
+    kept = sum(np.subtract(*parts.study.bounds(i)[::-1]) for i in parts.written())
+    return f"; {kept} designs are kept in {parts.folder.name}: run again with --resume to go on"
 
 
 def collect(study: Study, scheduler: Any = None, workers: Optional[int] = None,
@@ -291,27 +344,27 @@ def collect(study: Study, scheduler: Any = None, workers: Optional[int] = None,
 
 def make_study(source: Any, vary: Iterable[Vary | str], metrics: Iterable[str], grid: Optional[int] = None,
                samples: Optional[int] = None, seed: int = 0, sweep: Sweep = Sweep(),
-               chunk: Optional[int] = None, files: Optional[dict[str, str]] = None) -> Study:
+               chunk: Optional[int] = None, files: Optional[dict[str, str]] = None,
+               what: str = "explore") -> Study:
     """A `Study` from a model file (or model text), checked here, where the files are.
-    `files` gives the text of target files by name instead of reading them."""
-    _need_extra()
+    `files` gives the text of target files by name instead of reading them; `what` names the
+    command for an error about a missing optional dependency."""
+    _need_extra(what)
     text, fmt, base = _model_text(source)
     designs = Designs(tuple(v if isinstance(v, Vary) else _vary(v) for v in vary), grid, samples, seed)
     metrics = tuple(metrics)
-    files = _target_files(metrics, base, files or {})
-    study = Study(text, fmt, designs, metrics, files, sweep, 0)
+    texts = _target_files(metrics, base, files or {})
+    study = Study(text, fmt, designs, metrics, texts, sweep, 0)
     ev = evaluator(study)                       # checks the model, parameters and metrics here
     size = chunk or (CHUNK if ev.batch.batchable else CHUNK_ALONE)
-    return Study(text, fmt, designs, metrics, files, sweep, int(size))
+    return Study(text, fmt, designs, metrics, texts, sweep, int(size))
 
 
-def _need_extra() -> None:
-    try:
-        import pandas  # noqa: F401
-        import pyarrow  # noqa: F401
-    except ImportError:
-        raise KinematikaError("usage", "design studies need pyarrow and pandas (and dask for "
-                              "clusters): pip install 'kinematika[explore]'", "explore") from None
+def _need_extra(what: str) -> None:
+    from ..extras import need
+
+    need("pyarrow", what)
+    need("pandas", what)
 
 
 def _vary(text: str) -> Vary:

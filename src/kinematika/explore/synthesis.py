@@ -54,7 +54,7 @@ def synthesize(model: Any, vary: list[Vary | str], objective: str, population: i
     """
     from scipy.optimize import differential_evolution
 
-    study = make_study(model, vary, [objective], grid=1, sweep=sweep, files=files)
+    study = make_study(model, vary, [objective], grid=1, sweep=sweep, files=files, what="synthesize")
     ev = evaluator(study)
     names = study.designs.names
     bounds = [(v.low, v.high) for v in study.designs.vary]

@@ -133,6 +133,14 @@ class Question:
     def where(self) -> str:
         return f"ask[{self.index}]"
 
+    @property
+    def name(self) -> str:
+        """The body (or joint) a question about a body or joint asks of (`omega`, `alpha`,
+        `icr`, `axis`, `pole`, `contact`): its target, which is then a name."""
+        if not isinstance(self.target, str):
+            raise TypeError(f"{self.where} asks of a material point, not a body")
+        return self.target
+
 
 @dataclass(frozen=True)
 class Turn:
@@ -192,7 +200,7 @@ class Model:
     def joint(self, joint_id: str) -> Joint:
         return next(j for j in self.joints if j.id == joint_id)
 
-    def resolve_point(self, text: str, where: str = "") -> PointRef:
+    def resolve_point(self, text: "str | PointRef", where: str = "") -> PointRef:
         """``P@body``, or a bare ``P`` when every body carrying P moves alike there."""
         if isinstance(text, PointRef):
             return text

@@ -13,7 +13,7 @@ from ..solution import Solution
 
 
 def axis(sol: Solution, q: Question) -> dict[str, Any]:
-    state = sol.state(q.target, q.relative_to)
+    state = sol.state(q.name, q.relative_to)
     w = state.omega
     v_origin = sol.motion.velocity(state, sol.space.zero())
     if sol.is_zero(w, sol.rate_scale()):

@@ -83,10 +83,10 @@ def _is_line(known: dict[frozenset, Centre], a: str, k: str, b: str) -> bool:
 
 def collinear(sol: Solution, c1: dict, c2: dict, c3: dict) -> bool:
     """Whether three centres (finite or at infinity) lie on one line, at the model's scale."""
-    homo = [_homogeneous(c) for c in (c1, c2, c3)]
-    if any(h is None for h in homo):
+    h1, h2, h3 = (_homogeneous(c) for c in (c1, c2, c3))
+    if h1 is None or h2 is None or h3 is None:
         return True
-    (x1, y1, w1), (x2, y2, w2), (x3, y3, w3) = homo
+    (x1, y1, w1), (x2, y2, w2), (x3, y3, w3) = h1, h2, h3
     det = x1 * (y2 * w3 - w2 * y3) - y1 * (x2 * w3 - w2 * x3) + w1 * (x2 * y3 - y2 * x3)
     return sol.is_zero(det, sol.inst.scale ** 2 * 1e3)
 

@@ -9,10 +9,12 @@ from ..solution import Solution
 
 
 def contact(sol: Solution, q: Question) -> dict[str, Any]:
-    joint = sol.model.joint(q.target)
+    joint = sol.model.joint(q.name)
     c = sol.solver.geos[joint.id].contact
+    if c is None:
+        raise TypeError(f"{q.where}: joint {joint.id} has no contact")
     rel = None if q.relative_to in (None, sol.model.frame) else q.relative_to
-    out = {}
+    out: dict[str, Any] = {}
     for key, body in (("body_a", joint.a), ("body_b", joint.b)):
         state = sol.state(body, rel)
         out[key] = {"velocity": sol.motion.velocity(state, c.point),

@@ -16,6 +16,8 @@ from ..solution import Solution
 def decompose(sol: Solution, q: Question) -> dict[str, Any]:
     ref, base, moving = q.target, q.relative_to, q.moving
     p = sol.position(ref)
+    if moving is None:
+        raise TypeError(f"{q.where}: a decomposition needs its moving body")
     frame = sol.state(moving, base)
     motion = sol.motion
     v_drag = motion.velocity(frame, p)

@@ -49,4 +49,4 @@ def _in_stand_ins(sol: Solution, body: str, relative_to: str | None,
 
 
 def icr(sol: Solution, q: Question) -> dict[str, Any]:
-    return instant_centre(sol, q.target, q.relative_to)
+    return instant_centre(sol, q.name, q.relative_to)

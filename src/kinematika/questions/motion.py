@@ -16,8 +16,8 @@ def acceleration(sol: Solution, q: Question) -> tuple:
 
 
 def omega(sol: Solution, q: Question) -> Any:
-    return sol.omega(q.target, q.relative_to)
+    return sol.omega(q.name, q.relative_to)
 
 
 def alpha(sol: Solution, q: Question) -> Any:
-    return sol.alpha(q.target, q.relative_to)
+    return sol.alpha(q.name, q.relative_to)

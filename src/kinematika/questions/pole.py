@@ -13,7 +13,7 @@ from ..solution import Solution
 
 
 def pole(sol: Solution, q: Question) -> dict[str, Any]:
-    state = sol.state(q.target, q.relative_to)
+    state = sol.state(q.name, q.relative_to)
     w2, al = state.omega ** 2, state.alpha
     det = w2 ** 2 + al ** 2
     ax, ay = state.a0

@@ -52,6 +52,8 @@ def solution_json(sol: Solution) -> dict[str, Any]:
     named = where(sol) if sym else {}
     if named:
         out["where"] = named
+    if sol.inst.warnings:                       # an extension: likely mistakes answered as written
+        out["warnings"] = [w.as_json() for w in sol.inst.warnings]
     return out
 
 

@@ -146,14 +146,10 @@ class SweepResult:
     def to_parquet(self, path: str | Path) -> None:
         """The CSV's columns in a Parquet file (raw values; bad rows null), with `ok`; needs
         pyarrow (`pip install 'kinematika[columnar]'`)."""
-        try:
-            import pyarrow as pa
-            import pyarrow.parquet as pq
-        except ImportError:
-            from ..errors import KinematikaError
+        from ..extras import need
 
-            raise KinematikaError("usage", "writing Parquet needs pyarrow: pip install "
-                                  "'kinematika[columnar]' (or write .npz)", "--format") from None
+        pa = need("pyarrow", "writing Parquet (or write .npz)", "-o", "columnar")
+        pq = need("pyarrow.parquet", "writing Parquet (or write .npz)", "-o", "columnar")
         names, arrays = ["ok"], [pa.array(self.ok)]
         for header, values in self.columns():
             names.append(header)

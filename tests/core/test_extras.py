@@ -1,0 +1,134 @@
+"""Optional dependencies hidden in turn: each command that uses one either runs without it
+or says in one line what to install (in the README's terms) and exits with status 2; never
+an internal error. And a study stopped half way leaves only what can be resumed."""
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+from tests.conftest import ROOT
+
+FAMILY = ROOT / "docs" / "explore" / "four_bar_family.yaml"
+TARGETS = ROOT / "docs" / "explore" / "targets.csv"
+HINT = ".venv/bin/pip install -e '.[explore]'"
+
+# the command line with some modules made unimportable (as if not installed)
+RUN = """
+import sys
+if __name__ == "__main__":
+    for name in sys.argv[1].split(","):
+        if name:
+            sys.modules[name] = None
+    sys.argv = ["kinematika"] + sys.argv[2:]
+    from kinematika.cli import main
+    main()
+"""
+
+
+def without(hidden: str, *args: str, cwd=ROOT) -> subprocess.CompletedProcess:
+    """`kinematika ARGS` with the modules `hidden` (comma-separated) not importable."""
+    return subprocess.run([sys.executable, "-c", RUN, hidden, *args], cwd=cwd, capture_output=True,
+                          text=True, timeout=600)
+
+
+def one_line(done: subprocess.CompletedProcess) -> str:
+    assert done.returncode == 2, done.stderr
+    lines = done.stderr.strip().splitlines()
+    assert len(lines) == 1 and "Traceback" not in done.stderr and "internal error" not in done.stderr, done.stderr
+    return lines[0]
+
+
+STUDY = ["explore", str(FAMILY), "--vary", "a=1.5:3", "--vary", "c=3.5:5.5", "--grid", "12",
+         "--metric", "grashof"]
+
+
+@pytest.mark.parametrize("hidden", ["pyarrow", "pandas"])
+def test_a_study_without_its_extra_says_what_to_install(hidden, tmp_path):
+    line = one_line(without(hidden, *STUDY, "-o", str(tmp_path / "s.parquet")))
+    assert line.startswith(f"error (usage): explore needs {hidden}, which is not installed") and HINT in line
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_study_without_dask_runs_in_local_processes(tmp_path):
+    import pyarrow.parquet as pq
+
+    alone = without("", *STUDY, "--workers", "1", "--chunk", "40", "-o", str(tmp_path / "one.parquet"))
+    pooled = without("dask,distributed", *STUDY, "--workers", "2", "--chunk", "40",
+                     "-o", str(tmp_path / "two.parquet"))
+    assert alone.returncode == 0 and pooled.returncode == 0, pooled.stderr
+    one, two = pq.read_table(tmp_path / "one.parquet"), pq.read_table(tmp_path / "two.parquet")
+    assert one.num_rows == 144 and one.equals(two)          # 12 × 12 designs, the same rows
+
+
+def test_a_cluster_without_dask_says_what_to_install(tmp_path):
+    line = one_line(without("dask,distributed", *STUDY, "-o", str(tmp_path / "s.parquet"),
+                            "--scheduler", "tcp://127.0.0.1:9"))
+    assert "a study on a Dask cluster needs dask" in line and HINT in line
+    assert list(tmp_path.iterdir()) == []                   # nothing computed, nothing left
+
+
+def test_synthesize_and_plot_study_name_themselves(tmp_path):
+    line = one_line(without("pyarrow", "synthesize", str(FAMILY), "--vary", "a=1.5:3", "--target",
+                            str(TARGETS), "--point", "P", "-o", str(tmp_path / "best")))
+    assert line.startswith("error (usage): synthesize needs pyarrow") and HINT in line
+    study = tmp_path / "s.csv"
+    study.write_text("a,c,assembles,reason,grashof\n1.5,3.5,true,,crank-rocker\n")
+    line = one_line(without("pandas", "plot-study", str(study), "--map", "a,c,grashof", "-o",
+                            str(tmp_path / "map.png")))
+    assert line.startswith("error (usage): plot-study needs pandas") and HINT in line
+
+
+def test_a_parquet_sweep_without_pyarrow_says_what_to_install(tmp_path):
+    line = one_line(without("pyarrow", "sweep", str(ROOT / "examples" / "four_bar.yaml"), "-o",
+                            str(tmp_path / "rows.parquet")))
+    assert "writing Parquet (or write .npz) needs pyarrow" in line and "'.[columnar]'" in line
+
+
+# a study stopped half way ------------------------------------------------------------------
+def _stopping_after(monkeypatch, chunks: int) -> None:
+    """`compute` finishes `chunks` chunks, then meets a user error (an unreachable cluster)."""
+    from kinematika.errors import KinematikaError
+    from kinematika.explore import study as st
+
+    real = st.compute
+
+    def compute(study, pending, done, scheduler=None, workers=None):
+        real(study, pending[:chunks], done, None, 1)
+        raise KinematikaError("usage", "cannot reach the Dask scheduler at tcp://nowhere:8786", "--scheduler")
+
+    monkeypatch.setattr(st, "compute", compute)
+
+
+def test_a_study_that_computed_nothing_leaves_nothing(monkeypatch, tmp_path):
+    from kinematika.errors import KinematikaError
+    from kinematika.explore.study import make_study, write_study
+
+    _stopping_after(monkeypatch, 0)
+    study = make_study(FAMILY, ["a=1.5:3", "c=3.5:5.5"], ["grashof"], grid=12, chunk=40)
+    out = tmp_path / "s.parquet"
+    with pytest.raises(KinematikaError) as info:
+        write_study(study, out)
+    assert info.value.message == "cannot reach the Dask scheduler at tcp://nowhere:8786"
+    assert list(tmp_path.iterdir()) == []
+    monkeypatch.undo()
+    write_study(study, out)                                  # the next run is not refused
+    assert out.exists()
+
+
+def test_a_study_that_computed_part_says_how_to_resume(monkeypatch, tmp_path):
+    from kinematika.errors import KinematikaError
+    from kinematika.explore.study import make_study, write_study
+
+    _stopping_after(monkeypatch, 2)
+    study = make_study(FAMILY, ["a=1.5:3", "c=3.5:5.5"], ["grashof"], grid=12, chunk=40)
+    out = tmp_path / "s.parquet"
+    with pytest.raises(KinematikaError) as info:
+        write_study(study, out)
+    assert info.value.message.endswith("; 80 designs are kept in s.parquet.parts: run again with --resume to go on")
+    monkeypatch.undo()
+    write_study(study, out, resume=True)
+    import pyarrow.parquet as pq
+
+    assert pq.read_table(out).num_rows == 144 and not (tmp_path / "s.parquet.parts").exists()
