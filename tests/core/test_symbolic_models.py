@@ -179,7 +179,7 @@ def test_textbook_case_with_every_parameter_a_symbol(name):
     case's hand derivation (the cases without parameters are exact numbers with roots)."""
     from kinematika.api import as_model
     from kinematika.algebra.backend import Numeric
-    from kinematika.model.expressions import evaluate
+    from kinematika.expressions import evaluate
 
     path = ROOT / "tests" / "cases" / f"{name}.yaml"
     model = as_model(path)
@@ -288,7 +288,7 @@ def test_textbook_mechanism_with_long_formulas(name):
 
     from kinematika.algebra.backend import Numeric
     from kinematika.api import as_model
-    from kinematika.model.expressions import evaluate
+    from kinematika.expressions import evaluate
 
     path = TEXTBOOK / f"{name}.yaml"
     at: dict = {}

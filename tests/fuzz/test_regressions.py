@@ -18,7 +18,7 @@ from kinematika import KinematikaError
 from kinematika import limits
 from kinematika.budget import OverBudget, budget, check
 from kinematika.commands import How, solve_data
-from kinematika.model.expressions import parse
+from kinematika.expressions import parse
 from kinematika.text import brief, markup, shown
 
 from core.models import four_bar as core_four_bar

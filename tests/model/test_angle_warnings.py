@@ -47,8 +47,8 @@ def test_thirty_radians_is_answered_as_written_with_a_warning():
         ["points.A.angle: the angle 30 is in radians: 1719°, 4.8 turns; for 30° write deg(30)"]
 
 
-@pytest.mark.parametrize("angle", ["deg(30)", 6, -6.2, "2*pi", "deg(350)", None])
-def test_angles_within_a_turn_or_symbols_give_no_warning(angle):
+@pytest.mark.parametrize("angle", ["deg(30)", 6, -6.2, "2*pi", "deg(350)", "deg(450)", "3*pi", None])
+def test_angles_within_a_turn_written_as_angles_or_symbols_give_no_warning(angle):
     data = solve_data(slider_crank(angle))
     assert "warnings" not in data
 

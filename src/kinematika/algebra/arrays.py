@@ -12,7 +12,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from ..model.expressions import ExpressionError
+from ..expressions import ExpressionError
 
 
 class Arrays:

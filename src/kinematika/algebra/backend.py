@@ -11,7 +11,7 @@ import random
 from typing import Any, Callable
 
 from .. import limits
-from ..model.expressions import ExpressionError
+from ..expressions import ExpressionError
 from ..text import brief
 
 

@@ -14,7 +14,8 @@ from typing import Any, Optional
 
 import numpy as np
 
-from ..engine.instant import Circle, Disc, Instant, Line, Plane
+from ..engine.instant import Instant
+from ..shapes import Circle, Disc, Line, Plane
 from ..errors import KinematikaError
 from ..model.model import PointRef
 from .options import DrawOptions

@@ -6,7 +6,8 @@ from typing import Any
 from ..algebra.vectors import dot, sub
 from ..model.model import Driver
 from .instant import Instant
-from .joints import AXES, JointGeometry, Row, joint_rate
+from ..joints import AXES, JointGeometry
+from .joints import Row, joint_rate
 from .levels import Level
 from .linear import as_lin
 

@@ -15,7 +15,8 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from ..algebra.backend import Symbolic
-from .instant import Circle, Disc, Instant
+from ..shapes import Circle, Disc
+from .instant import Instant
 from .motion import BodyState, Motion
 
 

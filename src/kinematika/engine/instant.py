@@ -15,37 +15,9 @@ from ..algebra.backend import Numeric, Symbolic, probe_values
 from ..algebra.vectors import Space, dot, sub
 from ..errors import KinematikaError
 from ..model import model as m
-from ..model.expressions import Expr, ExpressionError, evaluate
+from ..expressions import Expr, ExpressionError, evaluate
+from ..shapes import Circle, Disc, Line, Plane
 from .positions import angle_warnings, positions
-
-
-@dataclass
-class Circle:
-    center: tuple
-    radius: Any
-    center_point: Optional[str] = None
-
-
-@dataclass
-class Line:
-    through: tuple
-    direction: tuple          # unit
-    through_point: Optional[str] = None
-
-
-@dataclass
-class Disc:
-    center: tuple
-    radius: Any
-    axis: tuple               # unit
-    center_point: Optional[str] = None
-
-
-@dataclass
-class Plane:
-    through: tuple
-    normal: tuple             # unit
-    through_point: Optional[str] = None
 
 
 @dataclass

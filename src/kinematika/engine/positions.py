@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any, Optional
 from ..errors import KinematikaError, KinematikaWarning
 from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
                                    TwoCircles, TwoLines, construction_order, uses)
-from ..model.expressions import parse
+from ..expressions import parse
 
 if TYPE_CHECKING:
     from .instant import Instant
@@ -60,7 +60,7 @@ def angle_warnings(inst: "Instant") -> list[KinematikaWarning]:
     names the place and the fix. Angles with symbols are not judged."""
     out = []
     for name, spec in inst.model.points.items():
-        if not isinstance(spec, Polar):
+        if not isinstance(spec, Polar) or _angle_stated(spec.angle, inst.model.parameters, set()):
             continue
         where = f"points.{name}.angle"
         value = inst.value(spec.angle, where)
@@ -77,6 +77,22 @@ def angle_warnings(inst: "Instant") -> list[KinematikaWarning]:
     for w in out:
         warnings.warn(w, stacklevel=3)
     return out
+
+
+ANGULAR = {"deg", "rad", "radians", "degrees", "asin", "acos", "atan", "atan2"}
+
+
+def _angle_stated(expr: Any, parameters: dict, seen: set) -> bool:
+    """Whether an angle is written as an angle (`deg(30)`, `pi/6`, `atan2(…)`), itself or in
+    the parameters it uses: then its size is the user's meaning, however many turns."""
+    if expr.calls() & ANGULAR or "pi" in expr.names():
+        return True
+    for name in expr.names() - seen:
+        seen.add(name)
+        p = parameters.get(name)
+        if p is not None and p.value is not None and _angle_stated(p.value, parameters, seen):
+            return True
+    return False
 
 
 def _bounded(inst: "Instant", builder: type, spec: Construction, built: tuple, name: str,

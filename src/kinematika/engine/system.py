@@ -16,7 +16,8 @@ from ..errors import KinematikaError
 from .drivers import driver_rows
 from .idle import idle_rows
 from .instant import Instant
-from .joints import JointGeometry, Row, joint_geometry, joint_rows
+from ..joints import JointGeometry
+from .joints import Row, joint_geometry, joint_rows
 from .levels import AccelerationLevel, KnownTerms, Level, Unknowns, VelocityLevel
 from .motion import BodyState, Motion
 from .linsolve import (LARGE, Analysis, SparseAnalysis, analyse, analyse_sparse, solve_numeric,

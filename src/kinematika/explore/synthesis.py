@@ -126,7 +126,7 @@ def function_targets(expression: str, over: tuple[float, float], points: int) ->
     """A target function f(x) (an expression in x: the input's increment, giving the output's
     rotation in degrees) at `points` Chebyshev precision points of `over`, as CSV text."""
     from ..algebra.arrays import Arrays
-    from ..model.expressions import ExpressionError, evaluate, parse
+    from ..expressions import ExpressionError, evaluate, parse
 
     low, high = over
     k = np.arange(1, points + 1)

@@ -8,10 +8,12 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, Iterable, Optional
 
 from ..errors import KinematikaError
+from ..joints import KINDS
+from ..joints import kind as joint_kind
 from ..text import brief, names as name_list
 from . import shape
 from .constructions import Construction, ConstructionReader, construction_order
-from .expressions import Expr, ExpressionError, parse
+from ..expressions import Expr, ExpressionError, parse
 from .model import (Body, Circle, Direction, Disc, Driver, ExprVector, Joint, Line, Model, Parameter,
                     Plane, PointPair, PointRef, Question, Shape, Sweep)
 
@@ -20,8 +22,6 @@ if TYPE_CHECKING:
 
     from . import schema
 
-PLANAR_ONLY = {"wheel", "slot"}
-SPATIAL_ONLY = {"spherical", "cylindrical"}
 
 
 def build_model(tree: Any) -> Model:
@@ -245,39 +245,21 @@ class _Builder:
         a, b = (self.known_body(name, f"{where}.bodies") for name in raw.bodies)
         if a == b:
             raise KinematikaError("schema", f"a joint needs two different bodies, got {a!r} twice", where)
-        kind = raw.type
-        if self.dim == 2 and kind in SPATIAL_ONLY:
-            raise KinematikaError("schema", f"a {kind} joint belongs to a 3D model", where)
-        if self.dim == 3 and kind in PLANAR_ONLY:
-            raise KinematikaError("schema", f"a {kind} joint belongs to a planar model", where)
-        needs_at = kind in {"revolute", "slot", "wheel", "spherical", "cylindrical"}
-        needs_along = kind in {"prismatic", "slot", "wheel"}
-        needs_axis = self.dim == 3 and kind in {"revolute", "cylindrical"}
-        for key, needed in (("at", needs_at), ("along", needs_along), ("axis", needs_axis)):
-            if needed and getattr(raw, key) is None:
-                raise KinematikaError("schema", f"a {kind} joint needs `{key}`", where)
-        allowed = {"at"} if kind in {"rolling", "gear"} else set()
-        for key in ("at", "along", "axis"):
-            present = getattr(raw, key) is not None
-            wanted = {"at": needs_at, "along": needs_along,
-                      "axis": self.dim == 3 and kind in {"revolute", "cylindrical", "prismatic"}}[key]
-            if present and not wanted and key not in allowed:
-                planar = " in a planar model (rotations are about z)" if key == "axis" else ""
-                raise KinematikaError("schema", f"a {kind} joint has no `{key}`{planar}", where)
-        if raw.internal is not None and kind not in {"gear", "rolling"}:
-            raise KinematikaError("schema", "`internal` belongs to gear and rolling joints", where)
+        kind = joint_kind(raw.type)
+        kind.check_fields({key: getattr(raw, key) for key in ("at", "along", "axis", "internal")},
+                          self.dim, where)
         at = raw.at
         if at is not None:
             self.known_point(at, f"{where}.at")
             carriers = [name for name in (a, b) if at in self.body_points[name]]
-            must = {"revolute": (a, b), "spherical": (a, b), "slot": (b,), "wheel": (b,)}.get(kind, ())
+            must = {"ab": (a, b), "b": (b,)}.get(kind.point_on, ())
             missing = [name for name in must if name not in carriers]
             if missing:
-                raise KinematikaError("geometry", f"the {kind} point {at!r} is not on body "
+                raise KinematikaError("geometry", f"the {kind.name} point {at!r} is not on body "
                                       f"{missing[0]!r}: list {at!r} in its points", where)
         along = self.direction(raw.along, f"{where}.along") if raw.along is not None else None
         axis = self.direction(raw.axis, f"{where}.axis") if raw.axis is not None else None
-        return Joint(jid, kind, a, b, i, at=at, along=along, axis=axis, internal=raw.internal)
+        return Joint(jid, kind.name, a, b, i, at=at, along=along, axis=axis, internal=raw.internal)
 
     def direction(self, raw: list, where: str) -> Direction:
         """A direction as a vector, or as two points [P, Q] (from P to Q, at this instant)."""
@@ -303,13 +285,8 @@ class _Builder:
                 raise KinematikaError("schema", f"unknown joint {raw.joint!r} (joints: {', '.join(ids)})",
                                       f"{where}.joint")
             joint = next(j for j in self.joint_list if j.id == raw.joint)
-            if joint.type == "cylindrical":
-                raise KinematikaError("schema", "a cylindrical joint has two rates (turning and "
-                                      "sliding): drive the body's omega relative_to the other body "
-                                      "and a point's velocity along the axis", where)
-            if joint.type not in {"revolute", "prismatic", "slot"}:
-                raise KinematikaError("schema", f"a {joint.type} joint has no rate to drive; drive a "
-                                      "body's omega or a point's velocity", where)
+            if joint.kind.coordinate is None:
+                raise joint.kind.no_rate(where)
             return Driver("joint", i, joint=raw.joint, value=self.expr(raw.rate, f"{where}.rate"),
                           accel=self.expr(raw.accel, f"{where}.accel"))
         point = self.point_ref(raw.velocity, f"{where}.velocity")
@@ -380,10 +357,11 @@ class _Builder:
             target: Any = self.point_ref(text, f"{where}.{kind}")
         elif kind == "contact":
             joint = next((j for j in self.joint_list if j.id == text), None)
-            if joint is None or joint.type not in {"rolling", "gear"}:
-                rolling = [j.id for j in self.joint_list if j.type in {"rolling", "gear"}]
-                raise KinematikaError("schema", f"{text!r} is not a rolling or gear joint (those are: "
-                                      f"{', '.join(rolling) or 'none'})", f"{where}.contact")
+            if joint is None or not joint.kind.touches:
+                touching = [j.id for j in self.joint_list if j.kind.touches]
+                kinds = " or ".join(sorted(k.name for k in KINDS.values() if k.touches))
+                raise KinematikaError("schema", f"{text!r} is not a {kinds} joint (those are: "
+                                      f"{', '.join(touching) or 'none'})", f"{where}.contact")
             target = text
         else:
             target = self.known_body(text, f"{where}.{kind}")

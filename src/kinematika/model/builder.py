@@ -25,6 +25,7 @@ from __future__ import annotations
 from typing import Any, Mapping, Optional, Sequence
 
 from ..errors import KinematikaError
+from ..joints import KINDS
 
 from .build import build_model
 from .model import Model
@@ -135,34 +136,8 @@ class Mechanism:
         self.tree["joints"].append(spec)
         return id or f"j{len(self.tree['joints'])}"
 
-    def revolute(self, a: str, b: str, at: str, axis: Optional[Sequence[Value]] = None,
-                 id: Optional[str] = None) -> str:
-        return self.joint("revolute", a, b, id, at=at, axis=axis)
-
-    def prismatic(self, a: str, b: str, along: Sequence[Any], id: Optional[str] = None) -> str:
-        return self.joint("prismatic", a, b, id, along=along)
-
-    def slot(self, a: str, b: str, at: str, along: Sequence[Any], id: Optional[str] = None) -> str:
-        return self.joint("slot", a, b, id, at=at, along=along)
-
-    def wheel(self, a: str, b: str, at: str, along: Sequence[Any], id: Optional[str] = None) -> str:
-        return self.joint("wheel", a, b, id, at=at, along=along)
-
-    def rolling(self, a: str, b: str, at: Optional[str] = None, id: Optional[str] = None) -> str:
-        return self.joint("rolling", a, b, id, at=at)
-
-    def gear(self, a: str, b: str, internal: bool = False, id: Optional[str] = None) -> str:
-        return self.joint("gear", a, b, id, internal=internal)
-
-    def weld(self, a: str, b: str, id: Optional[str] = None) -> str:
-        return self.joint("weld", a, b, id)
-
-    def spherical(self, a: str, b: str, at: str, id: Optional[str] = None) -> str:
-        return self.joint("spherical", a, b, id, at=at)
-
-    def cylindrical(self, a: str, b: str, at: str, axis: Sequence[Value],
-                    id: Optional[str] = None) -> str:
-        return self.joint("cylindrical", a, b, id, at=at, axis=axis)
+    # one method per kind of joint, from its module (`kinematika.joints`): revolute, prismatic,
+    # slot, wheel, rolling, gear, weld, spherical, cylindrical, ...
 
     # drivers and questions ---------------------------------------------------------------
     def drive_omega(self, body: str, value: Any, alpha: Any = 0,
@@ -244,3 +219,7 @@ def _line_spec(line: Any) -> Any:
 
 def _list(value: Any) -> Any:
     return list(value) if isinstance(value, tuple) else value
+
+
+for _kind in KINDS.values():               # m.revolute(...), m.prismatic(...): each kind's `add`
+    setattr(Mechanism, _kind.name, _kind.builder())

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import Callable, Optional, Union
 
 from ..errors import KinematikaError
-from .expressions import Expr
+from ..expressions import Expr
 
 ExprVector = tuple[Expr, ...]
 Location = Union[str, ExprVector]          # a point's name, or coordinates

@@ -10,7 +10,9 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Optional, Union
 
 from ..errors import KinematikaError
-from .expressions import Expr
+from ..joints import JointKind
+from ..joints import kind as joint_kind
+from ..expressions import Expr
 
 if TYPE_CHECKING:
     from .constructions import Construction
@@ -101,6 +103,11 @@ class Joint:
     @property
     def where(self) -> str:
         return f"joints[{self.index}] ({self.id})"
+
+    @property
+    def kind(self) -> JointKind:
+        """What this kind of joint means (`kinematika.joints`): ask it, never its name."""
+        return joint_kind(self.type)
 
 
 @dataclass
@@ -246,7 +253,7 @@ class Model:
 
         index = self.index()
         for j in (*index.welds, *index.joints_at.get(point, ())):
-            linked = j.type == "weld" or j.type in ("revolute", "spherical")
+            linked = j.kind.rigid or j.kind.pins
             if linked and j.a in root and j.b in root:
                 root[find(j.a)] = find(j.b)
         classes: dict[str, list[str]] = {}
@@ -264,7 +271,7 @@ class Model:
         if len(classes) == 1:
             return classes[0][0]
         for j in self.index().joints_at.get(point, ()):
-            if j.type in ("slot", "wheel"):
+            if j.kind.guides_point:
                 return j.b
         moving = [b for b in carriers if b != self.frame]
         return moving[0] if moving else carriers[0]
@@ -287,4 +294,4 @@ class _Index:
         for j in model.joints:
             if j.at is not None:
                 self.joints_at.setdefault(j.at, []).append(j)
-        self.welds = [j for j in model.joints if j.type == "weld"]
+        self.welds = [j for j in model.joints if j.kind.rigid]

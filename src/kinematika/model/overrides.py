@@ -12,7 +12,7 @@ import dataclasses
 from typing import Optional
 
 from ..errors import KinematikaError
-from .expressions import ExpressionError, parse
+from ..expressions import ExpressionError, parse
 from .model import Model, Parameter
 
 

@@ -9,6 +9,8 @@ from typing import Annotated, Any, Literal, Optional, Union
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, StrictBool, StrictFloat, StrictInt, Tag
 
+from ..joints import KINDS
+
 Value = Union[StrictInt, StrictFloat, str]
 Vector = list[Value]
 
@@ -138,8 +140,7 @@ class BodySpec(Strict):
     description: Optional[str] = None
 
 
-JointType = Literal["revolute", "prismatic", "slot", "wheel", "rolling", "gear", "spherical",
-                    "weld", "cylindrical"]
+JointType = Literal[tuple(KINDS)]          # type: ignore[valid-type]  # the registered kinds
 
 
 class JointSpec(Strict):

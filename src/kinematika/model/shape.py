@@ -12,10 +12,11 @@ from __future__ import annotations
 
 from typing import Any, Callable, Optional
 
+from ..joints import KINDS
+
 QUESTION_KINDS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose",
                   "contact", "axis", "pole", "intrinsic")
-JOINT_TYPES = ("revolute", "prismatic", "slot", "wheel", "rolling", "gear", "spherical", "weld",
-               "cylindrical")
+JOINT_TYPES = tuple(KINDS)
 
 Check = Callable[[Any], Any]       # returns the checked value, or raises _Refused
 

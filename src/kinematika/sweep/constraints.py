@@ -22,9 +22,10 @@ from typing import Callable
 
 import numpy as np
 
-from ..engine.instant import Circle, Instant, Line
+from ..engine.instant import Instant
+from ..shapes import Circle, Line
 from ..engine.idle import idle_links
-from ..engine.joints import JointGeometry
+from ..joints import JointGeometry
 from ..errors import KinematikaError
 from ..model.model import Driver, Joint
 from .plan import Plan

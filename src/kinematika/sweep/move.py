@@ -13,7 +13,7 @@ import math
 from typing import Any, Mapping
 
 from ..errors import KinematikaError
-from ..model.expressions import Expr, ExpressionError, evaluate, parse
+from ..expressions import Expr, ExpressionError, evaluate, parse
 from ..model.model import Model
 from .plan import driven_joints
 import contextlib

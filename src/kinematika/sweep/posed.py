@@ -22,7 +22,7 @@ import numpy as np
 
 from ..engine.instant import instantiate
 from ..errors import KinematikaError
-from ..model.expressions import Expr, parse
+from ..expressions import Expr, parse
 from ..model.model import Body, Circle, Direction, Disc, Joint, Line, Model, Plane, PointPair
 from .result import SweepResult
 

@@ -14,9 +14,10 @@ from typing import Any, Optional
 
 import numpy as np
 
-from ..engine.contact import find_contact
-from ..engine.instant import Circle, Instant, Line
-from ..engine.joints import JointGeometry
+from ..joints.contact import find_contact
+from ..engine.instant import Instant
+from ..shapes import Circle, Line
+from ..joints import JointGeometry
 from ..engine.levels import Unknowns
 
 

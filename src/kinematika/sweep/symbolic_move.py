@@ -15,7 +15,7 @@ import dataclasses
 import numpy as np
 
 from ..errors import KinematikaError
-from ..model.expressions import parse
+from ..expressions import parse
 from ..model.model import Model, Turn
 
 

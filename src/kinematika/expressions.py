@@ -18,8 +18,8 @@ import re
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
-from .. import limits
-from ..text import brief
+from . import limits
+from .text import brief
 
 MAX_LENGTH = limits.EXPRESSION_CHARS
 MAX_DEPTH = limits.EXPRESSION_DEPTH
@@ -98,6 +98,11 @@ class Expr:
         out: set[str] = set()
         _collect_names(self.tree, out)
         return out
+
+    def calls(self) -> set[str]:
+        """The functions it calls (`deg`, `sqrt`, …)."""
+        return {node.func.id for node in ast.walk(self.tree)
+                if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)}
 
 
 def parse(text: str | int | float) -> Expr:

@@ -12,9 +12,12 @@ from typing import Any, Callable
 
 from ..algebra.vectors import add, cross3, dot, scale, sub
 from ..errors import KinematikaError
-from ..model.model import Joint
-from .instant import Circle, Disc, Instant, Line, Plane
-from .motion import Motion
+from ..shapes import Circle, Disc, Line, Plane
+from .base import rounding_hint
+
+Instant = Any       # the instant (`engine.instant.Instant`): its shapes, points and algebra
+Joint = Any         # the parsed joint (`model.model.Joint`)
+Motion = Any        # the bodies' motion (`engine.motion.Motion`): their velocities and accelerations
 
 
 @dataclass
@@ -49,15 +52,11 @@ def find_contact(inst: Instant, joint: Joint) -> Contact:
     gap, contact = min(candidates, key=lambda c: abs(c[0]))
     tol = 1e-6 * inst.scale
     if abs(gap) > tol:
-        from .joints import rounding_hint
-
         raise KinematikaError("geometry", f"{joint.b!r} does not touch {joint.a!r}: gap {gap:.6g}"
                               + rounding_hint(gap, inst.scale, "the contact or centre"), joint.where)
     if joint.at is not None:
         dist = max(abs(x) for x in inst.numvec(sub(inst.points[joint.at], contact.point)))
         if dist > tol:
-            from .joints import rounding_hint
-
             raise KinematikaError("geometry", f"the contact is not at {joint.at!r}: it is "
                                   f"{dist:.6g} away" + rounding_hint(dist, inst.scale, joint.at), joint.where)
     if joint.internal is not None:

@@ -1,0 +1,185 @@
+"""What a kind of joint is: the base class every joint module fills in.
+
+A joint relates two bodies, `a` (the first, in which its `along` and `axis` are fixed) and
+`b`. Its meaning is a geometric condition between them; everything else follows from it
+and lives in the kind's module, asked for by the rest of the package through this class
+(never by comparing type names):
+
+- what the file says (`fields`) and the checks of the values (`check`);
+- its capabilities, which other modules ask: whether the bodies share a point (`pins`), one
+  slides on the other (`slides`), a point of `b` runs in a guide of `a` (`guides_point`),
+  they roll (`rolls`), are one body (`rigid`); the joint's own coordinate (`coordinate`:
+  an angle or a length, or none), which a driver may give the rate of and a sweep advance;
+- at an instant: what its rows need (`prepare` → `JointGeometry`) and the rows, the time
+  derivative of the condition at the velocity and acceleration levels (`rows`), written
+  once in the levels' vocabulary (`lv.point`, `lv.omega`; `lv.w`, `lv.v` for the known
+  velocities when `lv.accel`);
+- for structure and instant centres: the scalar conditions it imposes in the plane
+  (`conditions`), its letter in a group's name (`letter`: R or P), and where the relative
+  instant centre of its two bodies is (`centre`);
+- how it is drawn, explained and built from Python (`route`, `builder`).
+
+The rows receive the level `lv` and the instant `inst` as arguments and only call their
+methods, so a joint module needs nothing of the engine (sympy's `Joint` and pinocchio's
+joint models are the pattern: the model is constant, each computation brings its data).
+"""
+from __future__ import annotations
+
+import functools
+import inspect
+from dataclasses import dataclass, field
+from typing import Any, Callable, ClassVar, Optional
+
+from ..algebra.vectors import dot, sub
+from ..errors import KinematikaError
+
+AXES = "xyz"
+
+
+@dataclass
+class JointGeometry:
+    """What a joint's rows need at this instant, evaluated once: the joint's point, its
+    unit directions (fixed in body `a`, in `b` for a knife edge) and their unit normals,
+    and the contact of a rolling pair."""
+
+    joint: Any
+    at: Optional[tuple] = None
+    along: Optional[tuple] = None           # unit; fixed in body a (b for a `wheel`)
+    axis: Optional[tuple] = None            # unit; fixed in body a
+    perps: list = field(default_factory=list)   # unit normals to `along` or `axis`
+    contact: Any = None                     # a rolling pair's `Contact`
+
+
+Rows = list[tuple[Any, str]]
+
+
+class JointKind:
+    """A kind of joint: its name in model files and everything it means (see the module's
+    docstring). One instance per kind, registered in `kinematika.joints.KINDS`."""
+
+    name: ClassVar[str] = ""
+    summary: ClassVar[str] = ""             # one line for the docs and messages
+    dimensions: ClassVar[tuple[int, ...]] = (2, 3)   # the models it exists in
+    # capabilities --------------------------------------------------------------------------
+    coordinate: ClassVar[Optional[str]] = None   # "angle" (degrees, rad/s) or "length": its own
+                                                 # coordinate, which drivers and sweeps move
+    pins: ClassVar[bool] = False            # the bodies share the point `at` (its motion)
+    rigid: ClassVar[bool] = False           # the bodies move as one
+    slides: ClassVar[bool] = False          # b translates relative to a along `along` or `axis`
+    guides_point: ClassVar[bool] = False    # the point `at` of b runs along a guide
+    touches: ClassVar[bool] = False         # the bodies touch at a contact point (`contact` questions)
+    rolls: ClassVar[bool] = False           # ... and roll there without slipping
+    along_in: ClassVar[str] = "a"           # the body `along` is fixed in
+    letter: ClassVar[Optional[str]] = None  # R or P in a dyad's name (RRR, RRP, …)
+    route: ClassVar[str] = "pair"           # how an explanation treats it (explain.group)
+    # what the file says: each optional key of a joint and whether this kind needs it
+    # ("required", "optional", "required in 3D" — and then absent in a planar model —,
+    # "optional in 3D"; a key not listed is refused), and the bodies that must carry `at`
+    fields: ClassVar[dict[str, str]] = {}
+    point_on: ClassVar[str] = ""            # "ab": both bodies carry `at`; "b": the second one
+
+    def conditions(self, dim: int) -> int:
+        """The independent scalar conditions it imposes on the pair's relative motion."""
+        raise NotImplementedError
+
+    # at an instant ------------------------------------------------------------------------
+    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        """Evaluate the joint's point and directions, and check its geometry holds (else a
+        `geometry` error naming the joint and the gap)."""
+        sp, bk = inst.space, inst.backend
+        geo = JointGeometry(joint)
+        if joint.at is not None:
+            geo.at = inst.points[joint.at]
+        if joint.along is not None:
+            fixed_in = joint.b if self.along_in == "b" else joint.a
+            geo.along = inst.body_direction(fixed_in, joint.along, f"{joint.where}.along")
+            geo.perps = sp.perpendiculars(geo.along, bk.sqrt)
+        if joint.axis is not None:
+            geo.axis = inst.direction(joint.axis, f"{joint.where}.axis")
+        return geo
+
+    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """The conditions at the level `lv`, each (a linear form that must vanish, a label)."""
+        raise NotImplementedError
+
+    def rate(self, geo: JointGeometry, lv: Any) -> Any:
+        """The rate of the joint's coordinate (b relative to a), or its derivative at the
+        acceleration level; only for a kind with a `coordinate`."""
+        raise self.no_rate(geo.joint.where)
+
+    def check_fields(self, given: dict[str, Any], dim: int, where: str) -> None:
+        """The joint's keys for this kind in a model of `dim` dimensions: its model exists,
+        the keys it needs are given and no other (a `schema` error naming the joint)."""
+        if dim not in self.dimensions:
+            model = "3D" if dim == 2 else "planar"
+            raise KinematikaError("schema", f"a {self.name} joint belongs to a {model} model", where)
+        for key, need in self.fields.items():
+            if given.get(key) is None and (need == "required" or (need == "required in 3D" and dim == 3)):
+                raise KinematikaError("schema", f"a {self.name} joint needs `{key}`", where)
+        for key, value in given.items():
+            need = self.fields.get(key)
+            allowed = need in ("required", "optional") or (need is not None and dim == 3)
+            if value is not None and not allowed:
+                if key == "internal":
+                    owners = " and ".join(sorted(k.name for k in kinds() if "internal" in k.fields))
+                    raise KinematikaError("schema", f"`internal` belongs to {owners} joints", where)
+                planar = " in a planar model (rotations are about z)" if key == "axis" and dim == 2 else ""
+                raise KinematikaError("schema", f"a {self.name} joint has no `{key}`{planar}", where)
+
+    def no_rate(self, where: str) -> KinematikaError:
+        """The error for a driver of this kind's rate, which it has not (`coordinate` None)."""
+        return KinematikaError("schema", f"a {self.name} joint has no rate to drive; drive a "
+                               "body's omega or a point's velocity", where)
+
+    # from Python ---------------------------------------------------------------------------
+    def add(self, m: Any, a: str, b: str, id: Optional[str] = None, **fields: Any) -> str:
+        """Add a joint of this kind between bodies `a` and `b` to the `Mechanism` `m`; its id."""
+        return m.joint(self.name, a, b, id, **fields)
+
+    def builder(self) -> Callable[..., str]:
+        """The `Mechanism` method named after this kind (`m.revolute(...)`): its `add`."""
+        add, kind = type(self).add, self
+
+        @functools.wraps(add)
+        def method(m: Any, *args: Any, **kwargs: Any) -> str:
+            return add(kind, m, *args, **kwargs)
+
+        signature = inspect.signature(add)
+        params = list(signature.parameters.values())[1:]     # the kind itself is bound
+        method.__signature__ = signature.replace(  # type: ignore[attr-defined]
+            parameters=[params[0].replace(name="self"), *params[1:]])
+        method.__name__ = method.__qualname__ = self.name
+        return method
+
+    def __repr__(self) -> str:
+        return f"<joint kind {self.name}>"
+
+
+def kinds() -> list[JointKind]:
+    """Every registered kind (`kinematika.joints.KINDS`), for messages that list them."""
+    from . import KINDS
+
+    return list(KINDS.values())
+
+
+def rounding_hint(gap: float, scale: float, point: str) -> str:
+    """For a gap small next to the model (coordinates rounded by hand, most likely): the
+    tolerance, and how to avoid the rounding."""
+    if abs(gap) > 1e-3 * scale:
+        return ""
+    return (f", more than the tolerance {1e-6 * scale:.2g} (1e-6 of the model's size): write "
+            f"{point} by construction, or with more digits")
+
+
+def off_line(inst: Any, joint: Any, geo: JointGeometry) -> None:
+    """A slot's pin must lie on the slot's line PQ when the slot is given by two points:
+    else a `geometry` error with the gap."""
+    along = joint.along
+    if not hasattr(along, "start"):
+        return
+    start = inst.points[along.start]
+    gap = inst.num(dot(sub(geo.at, start), geo.perps[0]))
+    if abs(gap) > 1e-6 * inst.scale:
+        raise KinematikaError("geometry", f"slot point {joint.at!r} is off the line "
+                              f"{along.start}{along.end}: gap {gap:.6g}"
+                              + rounding_hint(gap, inst.scale, joint.at), joint.where)

@@ -1,0 +1,53 @@
+"""The cylindrical joint (3D): the second body turns about and slides along an axis fixed
+in the first.
+
+Condition: (ω_b − ω_a) × e = 0 and (Q_b − Q_a) × e = 0 for the axis e through `at`.
+Velocity rows: (ω_b − ω_a)·nₖ = 0 and v_rel·nₖ = 0 for the axis's two normals.
+It has two coordinates (a turn and a slide): drive them by a body's omega and a point's
+velocity, not by a joint rate.
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from ..errors import KinematikaError
+from .base import JointGeometry, JointKind, Rows
+from .derivatives import sliding, turning
+
+
+class Cylindrical(JointKind):
+    """A pin that may also slide along its axis."""
+
+    name = "cylindrical"
+    summary = "3D: turning about and sliding along `axis` through `at`"
+    dimensions = (3,)
+    slides = True
+    fields = {"at": "required", "axis": "required in 3D"}
+
+    def conditions(self, dim: int) -> int:
+        return 4
+
+    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        geo = super().prepare(inst, joint)
+        geo.perps = inst.space.perpendiculars(geo.axis, inst.backend.sqrt)
+        return geo
+
+    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        j = geo.joint
+        rows = [(turning(lv, j.a, j.b, p), f"relative rotation only about the axis ({k + 1})")
+                for k, p in enumerate(geo.perps)]
+        rows += [(sliding(lv, j.a, j.b, geo.at, p), f"relative sliding only along the axis ({k + 1})")
+                 for k, p in enumerate(geo.perps)]
+        return rows
+
+    def no_rate(self, where: str) -> KinematikaError:
+        return KinematikaError("schema", "a cylindrical joint has two rates (turning and sliding): drive "
+                               "the body's omega relative_to the other body and a point's velocity along "
+                               "the axis", where)
+
+    def add(self, m: Any, a: str, b: str, at: str, axis: Any, id: Optional[str] = None) -> str:
+        """`b` turns about and slides along `axis` through point `at`, fixed in `a`."""
+        return m.joint(self.name, a, b, id, at=at, axis=axis)
+
+
+KIND = Cylindrical()

@@ -1,0 +1,58 @@
+"""The prismatic joint (sliding pair, P): the second body slides along a direction fixed in
+the first, without turning relative to it.
+
+Condition: ω_b = ω_a, and (Q_b − Q_a)·n = 0 for the guide's normals n (fixed in a).
+Velocity rows: ω_b − ω_a = 0, v_rel·n = 0; acceleration rows add the Coriolis term
+2 v_rel·(ω_a × n) (`derivatives.sliding`). Its coordinate is b's displacement along
+`along`; the relative instant centre is at infinity, perpendicular to `along`.
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from .base import AXES, JointGeometry, JointKind, Rows
+from .derivatives import same_rotation, sliding
+
+
+class Prismatic(JointKind):
+    """A slider on a straight guide."""
+
+    name = "prismatic"
+    summary = "the second body slides along a direction fixed in the first; no relative rotation"
+    coordinate = "length"
+    slides = True
+    letter = "P"
+    route = "slider"
+    fields = {"along": "required", "axis": "optional in 3D"}
+
+    def conditions(self, dim: int) -> int:
+        return 2 if dim == 2 else 5
+
+    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        geo = super().prepare(inst, joint)
+        if inst.space.dim == 3 and geo.along is None:
+            geo.along = geo.axis
+            geo.perps = inst.space.perpendiculars(geo.along, inst.backend.sqrt)
+        return geo
+
+    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        j = geo.joint
+        q = geo.at if geo.at is not None else lv.ref
+        rows = [(c, "no relative rotation" + (f" ({AXES[i]})" if lv.space.dim == 3 else ""))
+                for i, c in enumerate(same_rotation(lv, j.a, j.b))]
+        rows += [(sliding(lv, j.a, j.b, q, n), f"no relative motion across the guide ({k + 1})")
+                 for k, n in enumerate(geo.perps)]
+        return rows
+
+    def rate(self, geo: JointGeometry, lv: Any) -> Any:
+        """(v_Qb − v_Qa)·u along the guide u (its derivative with the Coriolis term)."""
+        j = geo.joint
+        q = geo.at if geo.at is not None else lv.ref
+        return sliding(lv, j.a, j.b, q, geo.along)
+
+    def add(self, m: Any, a: str, b: str, along: Any, id: Optional[str] = None) -> str:
+        """`b` slides on `a` along `along` (a vector or two points): `m.prismatic("ground", "slider", along=(1, 0))`."""
+        return m.joint(self.name, a, b, id, along=along)
+
+
+KIND = Prismatic()

@@ -1,0 +1,58 @@
+"""The revolute joint (turning pair, R): the two bodies share the point `at` and turn
+relative to each other only about it (about `axis` in 3D).
+
+Condition: P_b = P_a at `at`; in 3D also (ω_b − ω_a) × e = 0 for the axis e.
+Velocity rows: v_P(b) − v_P(a) = 0 (and (ω_b − ω_a)·nₖ = 0 for the axis's two normals).
+Its coordinate is the angle of b relative to a, counter-clockwise (about `axis`).
+The relative instant centre of the pair is `at`.
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from .base import AXES, JointGeometry, JointKind, Rows
+from .derivatives import coincident, turning
+
+
+class Revolute(JointKind):
+    """A pin (turning pair)."""
+
+    name = "revolute"
+    summary = "the two bodies share point `at` and turn relative to each other about it"
+    coordinate = "angle"
+    pins = True
+    letter = "R"
+    route = "pin"
+    fields = {"at": "required", "axis": "required in 3D"}
+    point_on = "ab"
+
+    def conditions(self, dim: int) -> int:
+        return 2 if dim == 2 else 5
+
+    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        geo = super().prepare(inst, joint)
+        if geo.axis is not None:
+            geo.perps = inst.space.perpendiculars(geo.axis, inst.backend.sqrt)
+        return geo
+
+    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        j = geo.joint
+        rows = [(c, f"{j.at}@{j.b} moves with {j.at}@{j.a} ({AXES[i]})")
+                for i, c in enumerate(coincident(lv, j.a, j.b, geo.at))]
+        rows += [(turning(lv, j.a, j.b, p), f"relative rotation only about the axis ({k + 1})")
+                 for k, p in enumerate(geo.perps)]
+        return rows
+
+    def rate(self, geo: JointGeometry, lv: Any) -> Any:
+        """ω_b − ω_a (planar), (ω_b − ω_a)·e about the axis e (3D)."""
+        j, sp = geo.joint, lv.space
+        if sp.dim == 2:
+            return sp.rot_sub(lv.omega(j.b), lv.omega(j.a))
+        return turning(lv, j.a, j.b, geo.axis)
+
+    def add(self, m: Any, a: str, b: str, at: str, axis: Any = None, id: Optional[str] = None) -> str:
+        """A pin between `a` and `b` at point `at` (about `axis` in 3D): `m.revolute("ground", "crank", at="O")`."""
+        return m.joint(self.name, a, b, id, at=at, axis=axis)
+
+
+KIND = Revolute()

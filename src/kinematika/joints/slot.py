@@ -1,0 +1,52 @@
+"""The slot (pin in a straight slot, planar): the point `at` of the second body slides
+along a line fixed in the first; relative rotation is free.
+
+Condition: (P_b − S)·n = 0, S on the slot's line, n its normal (fixed in a).
+Velocity row: v_rel·n = 0; acceleration row: (a_Pb − a_Pa)·n + 2 v_rel·(ω_a × n) = 0,
+the Coriolis term (`derivatives.sliding`). Its coordinate is the pin's displacement along
+`along`; the relative instant centre lies on the normal to the slot through the pin.
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from .base import JointGeometry, JointKind, Rows, off_line
+from .derivatives import sliding
+
+
+class Slot(JointKind):
+    """A pin in a slot."""
+
+    name = "slot"
+    summary = "point `at` of the second body slides along a line fixed in the first; rotation free"
+    dimensions = (2,)
+    coordinate = "length"
+    slides = True
+    guides_point = True
+    route = "slot"
+    fields = {"at": "required", "along": "required"}
+    point_on = "b"
+
+    def conditions(self, dim: int) -> int:
+        return 1
+
+    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        geo = super().prepare(inst, joint)
+        off_line(inst, joint, geo)
+        return geo
+
+    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        j = geo.joint
+        return [(sliding(lv, j.a, j.b, geo.at, geo.perps[0]), f"{j.at}@{j.b} stays on the slot of {j.a}")]
+
+    def rate(self, geo: JointGeometry, lv: Any) -> Any:
+        """(v_Pb − v_Pa)·u along the slot u (its derivative with the Coriolis term)."""
+        j = geo.joint
+        return sliding(lv, j.a, j.b, geo.at, geo.along)
+
+    def add(self, m: Any, a: str, b: str, at: str, along: Any, id: Optional[str] = None) -> str:
+        """Point `at` of `b` slides in a slot of `a` along `along`: `m.slot("rocker", "crank", at="A", along=("O4", "B"))`."""
+        return m.joint(self.name, a, b, id, at=at, along=along)
+
+
+KIND = Slot()

@@ -1,0 +1,38 @@
+"""The spherical joint (ball joint, S; 3D only): the two bodies share the point `at` and
+turn freely about it.
+
+Condition: P_b = P_a at `at`. Velocity rows: v_P(b) − v_P(a) = 0 (three components).
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from .base import AXES, JointGeometry, JointKind, Rows
+from .derivatives import coincident
+
+
+class Spherical(JointKind):
+    """A ball joint."""
+
+    name = "spherical"
+    summary = "3D ball joint: the bodies share point `at`"
+    dimensions = (3,)
+    pins = True
+    route = "pin"
+    fields = {"at": "required"}
+    point_on = "ab"
+
+    def conditions(self, dim: int) -> int:
+        return 3
+
+    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        j = geo.joint
+        return [(c, f"{j.at}@{j.b} moves with {j.at}@{j.a} ({AXES[i]})")
+                for i, c in enumerate(coincident(lv, j.a, j.b, geo.at))]
+
+    def add(self, m: Any, a: str, b: str, at: str, id: Optional[str] = None) -> str:
+        """A ball joint between `a` and `b` at point `at`."""
+        return m.joint(self.name, a, b, id, at=at)
+
+
+KIND = Spherical()

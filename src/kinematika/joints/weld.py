@@ -1,0 +1,37 @@
+"""The weld: the two bodies move as one.
+
+Condition: ω_b = ω_a and the bodies' points at the reference coincide in motion.
+Velocity rows: ω_b − ω_a = 0, v_R(b) − v_R(a) = 0 at the reference point R.
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from .base import AXES, JointGeometry, JointKind, Rows
+from .derivatives import coincident, same_rotation
+
+
+class Weld(JointKind):
+    """Two bodies fixed together."""
+
+    name = "weld"
+    summary = "the two bodies move as one"
+    rigid = True
+    route = "weld"
+
+    def conditions(self, dim: int) -> int:
+        return 3 if dim == 2 else 6
+
+    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        j = geo.joint
+        rows = [(c, f"{j.b} turns with {j.a}") for c in same_rotation(lv, j.a, j.b)]
+        rows += [(c, f"{j.b} moves with {j.a} ({AXES[i]})")
+                 for i, c in enumerate(coincident(lv, j.a, j.b, lv.ref))]
+        return rows
+
+    def add(self, m: Any, a: str, b: str, id: Optional[str] = None) -> str:
+        """`a` and `b` move as one body."""
+        return m.joint(self.name, a, b, id)
+
+
+KIND = Weld()

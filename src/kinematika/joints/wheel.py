@@ -1,0 +1,47 @@
+"""The knife edge (planar `wheel`): the point `at` of the second body moves, relative to
+the first, only along the direction `along` fixed in the second body (a vehicle's wheel
+seen from above, a skate).
+
+Condition (non-holonomic): v_rel(Q_b)·n_b = 0, n_b the normal to `along`, fixed in b.
+Acceleration: (a_Qb − a_Qa − ω_a × v_rel)·n + v_rel·(ω_b × n) = 0.
+The relative instant centre lies on the wheel's axle line (through `at`, along n_b).
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from ..algebra.vectors import dot, sub
+from .base import JointGeometry, JointKind, Rows
+from .derivatives import coincident
+
+
+class Wheel(JointKind):
+    """A wheel that does not slip sideways."""
+
+    name = "wheel"
+    summary = "knife edge: point `at` of the second body moves only along `along`, fixed in it"
+    dimensions = (2,)
+    guides_point = True
+    along_in = "b"
+    route = "wheel"
+    fields = {"at": "required", "along": "required"}
+    point_on = "b"
+
+    def conditions(self, dim: int) -> int:
+        return 1
+
+    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        j, sp = geo.joint, lv.space
+        n = geo.perps[0]
+        row = dot(coincident(lv, j.a, j.b, geo.at), n)
+        if lv.accel:
+            v_rel = sub(lv.v(j.b, geo.at), lv.v(j.a, geo.at))
+            row = row - dot(sp.cross(lv.w(j.a), v_rel), n) + dot(v_rel, sp.cross(lv.w(j.b), n))
+        return [(row, f"{j.at}@{j.b} has no sideways velocity relative to {j.a}")]
+
+    def add(self, m: Any, a: str, b: str, at: str, along: Any, id: Optional[str] = None) -> str:
+        """A knife edge: point `at` of `b` moves relative to `a` only along `along`, fixed in `b`."""
+        return m.joint(self.name, a, b, id, at=at, along=along)
+
+
+KIND = Wheel()
