@@ -25,7 +25,7 @@ def idle_links(inst: Instant) -> list[tuple[str, str, str]]:
     out = []
     for body in model.moving_bodies:
         joints = [j for j in model.joints if body in (j.a, j.b)]
-        if body in driven or len(joints) != 2 or any(j.type != "spherical" for j in joints):
+        if body in driven or len(joints) != 2 or not all(j.kind.ball for j in joints):
             continue
         a, b = (j.at for j in joints)
         if a != b:

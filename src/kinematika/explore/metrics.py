@@ -154,7 +154,7 @@ def _linkage(ctx: Context) -> Optional[dict[str, Any]]:
         return None
     first, dyad = groups
     crank = model.joint(first.joints[0])
-    if crank.type != "revolute" or dyad.kind not in ("RRR", "RRP") or len(dyad.bodies) != 2 \
+    if first.letters != "R" or dyad.kind not in ("RRR", "RRP") or len(dyad.bodies) != 2 \
             or dyad.known != [first.bodies[0], model.frame]:
         return None
     j1, j2, j3 = (model.joint(j) for j in dyad.joints)

@@ -15,7 +15,7 @@ and lives in the kind's module, asked for by the rest of the package through thi
   once in the levels' vocabulary (`lv.point`, `lv.omega`; `lv.w`, `lv.v` for the known
   velocities when `lv.accel`);
 - for structure and instant centres: the scalar conditions it imposes in the plane
-  (`conditions`), its letter in a group's name (`letter`: R or P), and where the relative
+  (`conditions`), its pairs in a group's name (`chain`: R, P, or PR), and where the relative
   instant centre of its two bodies is (`centre`);
 - how it is drawn, explained and built from Python (`route`, `builder`).
 
@@ -32,6 +32,7 @@ from typing import Any, Callable, ClassVar, Optional
 
 from ..algebra.vectors import dot, sub
 from ..errors import KinematikaError
+from . import positions
 
 AXES = "xyz"
 
@@ -62,15 +63,23 @@ class JointKind:
     dimensions: ClassVar[tuple[int, ...]] = (2, 3)   # the models it exists in
     # capabilities --------------------------------------------------------------------------
     coordinate: ClassVar[Optional[str]] = None   # "angle" (degrees, rad/s) or "length": its own
-                                                 # coordinate, which drivers and sweeps move
+                                                 # coordinate, which drivers may give the rate of
+    sweepable: ClassVar[bool] = False       # a sweep (and `move`) may advance that coordinate
     pins: ClassVar[bool] = False            # the bodies share the point `at` (its motion)
+    ball: ClassVar[bool] = False            # ... and turn freely about it, every way (3D)
     rigid: ClassVar[bool] = False           # the bodies move as one
     slides: ClassVar[bool] = False          # b translates relative to a along `along` or `axis`
     guides_point: ClassVar[bool] = False    # the point `at` of b runs along a guide
     touches: ClassVar[bool] = False         # the bodies touch at a contact point (`contact` questions)
     rolls: ClassVar[bool] = False           # ... and roll there without slipping
     along_in: ClassVar[str] = "a"           # the body `along` is fixed in
-    letter: ClassVar[Optional[str]] = None  # R or P in a dyad's name (RRR, RRP, …)
+    centre: ClassVar[str] = ""              # where it puts the relative instant centre of its two
+                                            # bodies by itself: "pin" (at `at`), "contact" (the
+                                            # contact point), "infinity" (normal to the sliding),
+                                            # "rest" (none: they move as one); "" when it does not
+    chain: ClassVar[str] = ""               # the lower pairs it is in a chain, read from a to b:
+                                            # "R", "P", or "PR" for a pin in a slot (a slider
+                                            # block between); names dyads (RRR, RRP, …)
     route: ClassVar[str] = "pair"           # how an explanation treats it (explain.group)
     # what the file says: each optional key of a joint and whether this kind needs it
     # ("required", "optional", "required in 3D" — and then absent in a planar model —,
@@ -101,6 +110,23 @@ class JointKind:
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
         """The conditions at the level `lv`, each (a linear form that must vanish, a label)."""
         raise NotImplementedError
+
+    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Callable[[Any, float], list]:
+        """The condition itself, for sweeps (`joints.positions`): a function of a pose and the
+        increment whose rows are the integrals of `rows`, row for row."""
+        spatial = " in 3D" if inst.space.dim == 3 else ""
+        raise KinematikaError("schema", f"a sweep cannot follow a {self.name} joint{spatial}: its "
+                              "condition is on velocities only, so the positions depend on the path "
+                              "taken", geo.joint.where)
+
+    def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Callable[[Any, float], list]:
+        """The position form of a driver of the joint's rate: the coordinate's change from
+        the drawing, less the sweep's increment when it is the swept one (a length here:
+        the pin's or the reference point's offset along `along`)."""
+        a, b = geo.joint.a, geo.joint.b
+        p0 = geo.at if geo.at is not None else ref
+        return lambda q, dq: [positions.dot(positions.differences(q.point(b, p0), q.point(a, p0)),
+                                            q.turn(a, geo.along)) - (dq if swept else 0.0)]
 
     def rate(self, geo: JointGeometry, lv: Any) -> Any:
         """The rate of the joint's coordinate (b relative to a), or its derivative at the

@@ -213,3 +213,34 @@ def _disc_plane(inst: Instant, joint: Joint, dc: Disc, dbody: str, pl: Plane,
     towards_disc = scale(side, n)
     normal = towards_disc if pbody == joint.a else scale(-1, towards_disc)
     return gap, Contact(joint, point, "disc-plane", jdot, jddot, normal)
+
+
+def drawn_pair(inst: Instant, joint: Joint) -> tuple:
+    """The two planar shapes (circles, lines) that touch at the drawn configuration, as
+    `find_contact` chose them: a sweep follows their rolling."""
+    best = None
+    for sa in inst.shapes[joint.a]:
+        for sb in inst.shapes[joint.b]:
+            if isinstance(sa, Line) and isinstance(sb, Line):
+                continue
+            gap = _drawn_gap(sa, sb)
+            if gap is not None and (best is None or gap < best[0]):
+                best = (gap, sa, sb)
+    if best is None:
+        raise KinematikaError("schema", "a sweep follows rolling of circles and lines only", joint.where)
+    return best[1], best[2]
+
+
+def _drawn_gap(sa: Any, sb: Any) -> float | None:
+    import math
+
+    if isinstance(sa, Circle) and isinstance(sb, Circle):
+        dist = math.dist(sa.center, sb.center)
+        ra, rb = float(sa.radius), float(sb.radius)
+        return min(abs(dist - ra - rb), abs(dist - abs(ra - rb)))
+    if isinstance(sa, Line):
+        sa, sb = sb, sa
+    if isinstance(sa, Circle) and isinstance(sb, Line):
+        n = (-sb.direction[1], sb.direction[0])
+        return abs(abs(float(dot(sub(sa.center, sb.through), n))) - float(sa.radius))
+    return None

@@ -13,6 +13,7 @@ from typing import Any, Optional
 from ..errors import KinematikaError
 from .base import JointGeometry, JointKind, Rows
 from .derivatives import sliding, turning
+from .positions import across, axis_kept
 
 
 class Cylindrical(JointKind):
@@ -39,6 +40,11 @@ class Cylindrical(JointKind):
         rows += [(sliding(lv, j.a, j.b, geo.at, p), f"relative sliding only along the axis ({k + 1})")
                  for k, p in enumerate(geo.perps)]
         return rows
+
+    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+        """The axis kept, the offset across it kept."""
+        a, b = geo.joint.a, geo.joint.b
+        return lambda q, _: axis_kept(q, a, b, geo.axis, geo.perps) + across(q, a, b, geo.at, geo.perps)
 
     def no_rate(self, where: str) -> KinematikaError:
         return KinematikaError("schema", "a cylindrical joint has two rates (turning and sliding): drive "

@@ -12,6 +12,7 @@ from typing import Any, Optional
 
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import same_rotation, sliding
+from .positions import across
 
 
 class Prismatic(JointKind):
@@ -19,9 +20,11 @@ class Prismatic(JointKind):
 
     name = "prismatic"
     summary = "the second body slides along a direction fixed in the first; no relative rotation"
+    sweepable = True
     coordinate = "length"
     slides = True
-    letter = "P"
+    chain = "P"
+    centre = "infinity"
     route = "slider"
     fields = {"along": "required", "axis": "optional in 3D"}
 
@@ -43,6 +46,12 @@ class Prismatic(JointKind):
         rows += [(sliding(lv, j.a, j.b, q, n), f"no relative motion across the guide ({k + 1})")
                  for k, n in enumerate(geo.perps)]
         return rows
+
+    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+        """No relative rotation; the offset across the guide kept."""
+        a, b = geo.joint.a, geo.joint.b
+        p0 = geo.at if geo.at is not None else ref
+        return lambda q, _: q.rotation_error(a, b) + across(q, a, b, p0, geo.perps)
 
     def rate(self, geo: JointGeometry, lv: Any) -> Any:
         """(v_Qb − v_Qa)·u along the guide u (its derivative with the Coriolis term)."""

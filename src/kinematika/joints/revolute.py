@@ -12,6 +12,7 @@ from typing import Any, Optional
 
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident, turning
+from .positions import axis_kept, coincide
 
 
 class Revolute(JointKind):
@@ -19,9 +20,11 @@ class Revolute(JointKind):
 
     name = "revolute"
     summary = "the two bodies share point `at` and turn relative to each other about it"
+    sweepable = True
     coordinate = "angle"
     pins = True
-    letter = "R"
+    chain = "R"
+    centre = "pin"
     route = "pin"
     fields = {"at": "required", "axis": "required in 3D"}
     point_on = "ab"
@@ -42,6 +45,18 @@ class Revolute(JointKind):
         rows += [(turning(lv, j.a, j.b, p), f"relative rotation only about the axis ({k + 1})")
                  for k, p in enumerate(geo.perps)]
         return rows
+
+    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+        """P_b − P_a at the pin (and the axis kept, in 3D)."""
+        a, b, p0 = geo.joint.a, geo.joint.b, geo.at
+        if inst.space.dim == 2:
+            return lambda q, _: coincide(q, a, b, p0)
+        return lambda q, _: coincide(q, a, b, p0) + axis_kept(q, a, b, geo.axis, geo.perps)
+
+    def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Any:
+        """The angle turned about the axis since the drawing, less the increment."""
+        a, b = geo.joint.a, geo.joint.b
+        return lambda q, dq: [q.axis_angle_error(a, b, geo.axis, dq if swept else 0.0)]
 
     def rate(self, geo: JointGeometry, lv: Any) -> Any:
         """ω_b − ω_a (planar), (ω_b − ω_a)·e about the axis e (3D)."""

@@ -10,10 +10,14 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+import math
+
 from ..algebra.vectors import sub
+from ..shapes import Circle
 from .base import AXES, JointGeometry, JointKind, Rows
-from .contact import find_contact
+from .contact import drawn_pair, find_contact
 from .derivatives import coincident
+from .positions import continued, differences, dot, wrap
 
 
 class Rolling(JointKind):
@@ -23,6 +27,7 @@ class Rolling(JointKind):
     summary = "the bodies' shapes roll on each other without slipping"
     touches = True
     rolls = True
+    centre = "contact"
     route = "contact"
     fields = {"at": "optional", "internal": "optional"}
 
@@ -45,9 +50,72 @@ class Rolling(JointKind):
             diff = sub(diff, sp.cross(w_rel, rolling_velocity))
         return [(x, f"no slip at the contact of {j.a} and {j.b} ({AXES[i]})") for i, x in enumerate(diff)]
 
+    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+        """Planar circles and lines: the contact kept (normal) and the arcs rolled equal
+        (tangential), as one vector whose components are the engine's x and y rows.
+
+        Circle on circle: Φ = (D − (ρa − ρb)) u + ((ρa − ρb)(ψ − ψ₀) + ρb φb − ρa φa) τ, u the
+        unit vector from centre a to centre b (angle ψ), τ = k × u, J = Cₐ + ρₐ u = C_b + ρ_b u
+        the contact (signed distances along u). Circle on line: the centre keeps its distance
+        to the line and advances along it by the arc rolled.
+        """
+        if inst.space.dim == 3:
+            return super().residual(inst, geo, ref)
+        j = geo.joint
+        ca, cb = drawn_pair(inst, j)
+        a, b = j.a, j.b
+        if isinstance(ca, Circle) and isinstance(cb, Circle):
+            return _circles(j.id, a, b, ca, cb, geo.contact.kind)
+        if isinstance(ca, Circle):
+            return _on_line(ca, a, cb, b, -1.0)
+        return _on_line(cb, b, ca, a, 1.0)
+
     def add(self, m: Any, a: str, b: str, at: Optional[str] = None, id: Optional[str] = None) -> str:
         """The shapes of `a` and `b` roll on each other (touching at point `at`, if named)."""
         return m.joint(self.name, a, b, id, at=at)
 
 
 KIND = Rolling()
+
+
+def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle, contact: str) -> Any:
+    """Circle on circle, outside or inside (the contact's kind)."""
+    ra, rb = float(ca.radius), float(cb.radius)
+    rho_a, rho_b = {"external": (ra, -rb)}.get(contact, (ra, rb) if ra >= rb else (-ra, -rb))
+    gap = rho_a - rho_b
+    d0 = differences(cb.center, ca.center)
+    psi0 = math.atan2(d0[1], d0[0])
+
+    def circles(q: Any, _: float) -> list:
+        d = differences(q.point(b, cb.center), q.point(a, ca.center))
+        dist = math.hypot(*d)
+        u = (d[0] / dist, d[1] / dist)
+        psi = q.aux.get(key, psi0)
+        psi += wrap(math.atan2(d[1], d[0]) - psi)
+        slip = gap * (psi - psi0) + rho_b * q.angle(b) - rho_a * q.angle(a)
+        return [(dist - gap) * u[0] - slip * u[1], (dist - gap) * u[1] + slip * u[0]]
+
+    circles.key = key  # type: ignore[attr-defined]
+    circles.aux = lambda q: continued(q, key, psi0, differences(q.point(b, cb.center),  # type: ignore[attr-defined]
+                                                                q.point(a, ca.center)))
+    return circles
+
+
+def _on_line(circle: Any, cbody: str, line: Any, lbody: str, sign: float) -> Any:
+    """A circle rolling on a line: its centre keeps its distance to the line and advances
+    along it by the arc rolled."""
+    e0 = line.direction
+    n0 = (-e0[1], e0[0])
+    rel0 = differences(circle.center, line.through)
+    side = 1.0 if dot(rel0, n0) >= 0 else -1.0
+    r = float(circle.radius)
+    x0 = dot(rel0, e0)
+
+    def on_line(q: Any, _: float) -> list:
+        e, n = q.turn(lbody, e0), q.turn(lbody, n0)
+        rel = differences(q.point(cbody, circle.center), q.point(lbody, line.through))
+        along = dot(rel, e) - x0 + side * r * (q.angle(cbody) - q.angle(lbody))
+        across = dot(rel, n) - side * r
+        return [sign * (along * e[0] + across * n[0]), sign * (along * e[1] + across * n[1])]
+
+    return on_line

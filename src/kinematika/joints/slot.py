@@ -12,6 +12,7 @@ from typing import Any, Optional
 
 from .base import JointGeometry, JointKind, Rows, off_line
 from .derivatives import sliding
+from .positions import across
 
 
 class Slot(JointKind):
@@ -23,6 +24,7 @@ class Slot(JointKind):
     coordinate = "length"
     slides = True
     guides_point = True
+    chain = "PR"                   # the slot's line in a, a slider block, the pin of b
     route = "slot"
     fields = {"at": "required", "along": "required"}
     point_on = "b"
@@ -38,6 +40,11 @@ class Slot(JointKind):
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
         j = geo.joint
         return [(sliding(lv, j.a, j.b, geo.at, geo.perps[0]), f"{j.at}@{j.b} stays on the slot of {j.a}")]
+
+    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+        """The pin's offset across the slot's line."""
+        a, b = geo.joint.a, geo.joint.b
+        return lambda q, _: across(q, a, b, geo.at, geo.perps)
 
     def rate(self, geo: JointGeometry, lv: Any) -> Any:
         """(v_Pb − v_Pa)·u along the slot u (its derivative with the Coriolis term)."""

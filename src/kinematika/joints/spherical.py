@@ -9,6 +9,7 @@ from typing import Any, Optional
 
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident
+from .positions import coincide
 
 
 class Spherical(JointKind):
@@ -18,6 +19,7 @@ class Spherical(JointKind):
     summary = "3D ball joint: the bodies share point `at`"
     dimensions = (3,)
     pins = True
+    ball = True
     route = "pin"
     fields = {"at": "required"}
     point_on = "ab"
@@ -29,6 +31,11 @@ class Spherical(JointKind):
         j = geo.joint
         return [(c, f"{j.at}@{j.b} moves with {j.at}@{j.a} ({AXES[i]})")
                 for i, c in enumerate(coincident(lv, j.a, j.b, geo.at))]
+
+    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+        """P_b − P_a at the ball."""
+        a, b, p0 = geo.joint.a, geo.joint.b, geo.at
+        return lambda q, _: coincide(q, a, b, p0)
 
     def add(self, m: Any, a: str, b: str, at: str, id: Optional[str] = None) -> str:
         """A ball joint between `a` and `b` at point `at`."""

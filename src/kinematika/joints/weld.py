@@ -9,6 +9,7 @@ from typing import Any, Optional
 
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident, same_rotation
+from .positions import coincide
 
 
 class Weld(JointKind):
@@ -17,6 +18,7 @@ class Weld(JointKind):
     name = "weld"
     summary = "the two bodies move as one"
     rigid = True
+    centre = "rest"
     route = "weld"
 
     def conditions(self, dim: int) -> int:
@@ -28,6 +30,11 @@ class Weld(JointKind):
         rows += [(c, f"{j.b} moves with {j.a} ({AXES[i]})")
                  for i, c in enumerate(coincident(lv, j.a, j.b, lv.ref))]
         return rows
+
+    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+        """No relative rotation; the points at the reference coincide."""
+        a, b = geo.joint.a, geo.joint.b
+        return lambda q, _: q.rotation_error(a, b) + coincide(q, a, b, ref)
 
     def add(self, m: Any, a: str, b: str, id: Optional[str] = None) -> str:
         """`a` and `b` move as one body."""

@@ -31,12 +31,11 @@ class Centre:
 
 
 def direct_centre(sol: Solution, a: str, b: str) -> Optional[tuple[str, str]]:
-    """(kind, joint id) when a joint between a and b places their centre by itself."""
+    """(how the joint places it, joint id) when a joint between a and b places their centre
+    by itself (its kind's `centre`: at its pin, its contact, at infinity, or none at rest)."""
     for j in sol.model.joints:
-        if {j.a, j.b} != {a, b}:
-            continue
-        if j.type in ("revolute", "rolling", "gear", "prismatic", "weld"):
-            return j.type, j.id
+        if {j.a, j.b} == {a, b} and j.kind.centre:
+            return j.kind.centre, j.id
     return None
 
 
@@ -69,9 +68,9 @@ def all_centres(sol: Solution) -> list[Centre]:
 
 
 def _pin(sol: Solution, found: tuple[str, str]) -> str | None:
-    """The point of a revolute joint (its bodies' centre while they turn), else None."""
-    kind, jid = found
-    if kind != "revolute":
+    """The point of a pin (its bodies' centre while they turn), else None."""
+    how, jid = found
+    if how != "pin":
         return None
     return next((j.at for j in sol.model.joints if j.id == jid and isinstance(j.at, str)), None)
 

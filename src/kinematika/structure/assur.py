@@ -20,9 +20,6 @@ from ..model.model import Driver, Joint, Model
 
 KINDS = ("input", "RRR", "RRP", "RPR", "PRP", "other")
 
-# conditions a joint imposes on a planar relative motion (Grübler's count)
-_CONDITIONS = {"revolute": 2, "prismatic": 2, "slot": 1, "wheel": 1, "rolling": 2, "gear": 1,
-               "weld": 3}
 _MAX_OTHER = 4          # largest group of `other` kind searched for
 
 
@@ -97,8 +94,7 @@ class _Graph:
             return None
         if body is None or body == frame:
             return None
-        to_frame = [j for j in self.by_body[body] if frame in (j.a, j.b)
-                    and j.type in ("revolute", "prismatic")]
+        to_frame = [j for j in self.by_body[body] if frame in (j.a, j.b) and _lower(j)]
         if len(to_frame) != 1 or (d.kind == "joint" and to_frame[0].id != d.joint):
             return None
         j = to_frame[0]
@@ -112,18 +108,18 @@ class _Graph:
             if b1 in self.known:
                 continue
             ends = self.attaching(b1)
-            if len(ends) == 2 and all(j.type in ("revolute", "prismatic", "slot") for j in ends):
+            if len(ends) == 2 and all(j.kind.chain for j in ends):
                 group = _one_body_dyad(b1, ends)
                 if group is not None:
                     return group
-            if len(ends) != 1 or ends[0].type not in ("revolute", "prismatic"):
+            if len(ends) != 1 or not _lower(ends[0]):
                 continue
             for j2 in self.by_body[b1]:
                 b2 = _other(j2, b1)
-                if j2.id not in self.unused or b2 in self.known or j2.type not in ("revolute", "prismatic"):
+                if j2.id not in self.unused or b2 in self.known or not _lower(j2):
                     continue
                 tail = self.attaching(b2)
-                if len(tail) == 1 and tail[0].type in ("revolute", "prismatic"):
+                if len(tail) == 1 and _lower(tail[0]):
                     return dyad(b1, b2, ends[0], j2, tail[0])
         return None
 
@@ -137,7 +133,7 @@ class _Graph:
                           if {j.a, j.b} <= chosen | self.known and {j.a, j.b} & chosen]
                 if not joints or not self._connected(chosen, joints):
                     continue
-                if 3 * size - sum(_CONDITIONS.get(j.type, 3) for j in joints) <= 0:
+                if 3 * size - sum(j.kind.conditions(2) for j in joints) <= 0:
                     known = sorted({_other(j, b) for j in joints for b in chosen
                                     if b in (j.a, j.b) and _other(j, b) in self.known})
                     return Group("other", list(bodies), [j.id for j in joints], known)
@@ -162,8 +158,13 @@ def _other(j: Joint, body: str) -> str:
     return j.b if j.a == body else j.a
 
 
+def _lower(j: Joint) -> bool:
+    """A revolute or prismatic pair: one letter of a dyad's name."""
+    return len(j.kind.chain) == 1
+
+
 def _letter(j: Joint) -> str:
-    return "R" if j.type == "revolute" else "P"
+    return j.kind.chain
 
 
 def dyad(b1: str, b2: str, j1: Joint, j2: Joint, j3: Joint) -> Optional[Group]:
@@ -181,13 +182,13 @@ def dyad(b1: str, b2: str, j1: Joint, j2: Joint, j3: Joint) -> Optional[Group]:
 
 def _one_body_dyad(body: str, ends: list[Joint]) -> Optional[Group]:
     """A body with a slot and a revolute or prismatic joint to known bodies."""
-    slots = [j for j in ends if j.type == "slot"]
+    slots = [j for j in ends if len(j.kind.chain) == 2]
     if len(slots) != 1:
         return None
     slot = slots[0]
     first = next(j for j in ends if j is not slot)
     # the slider block sits between the slot's line (fixed in slot.a) and its pin (on slot.b)
-    slot_letters = "PR" if slot.a == body else "RP"
+    slot_letters = slot.kind.chain if slot.a == body else slot.kind.chain[::-1]
     letters = _letter(first) + slot_letters
     kinds = {"RPR": "RPR", "RRP": "RRP", "PRP": "PRP"}
     kind = kinds.get(letters, "other")

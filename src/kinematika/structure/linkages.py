@@ -127,7 +127,7 @@ def identify(model: Model, groups: Optional[list[Group]], points: dict[str, tupl
         return None
     first, dyad = groups
     crank_joint = model.joint(first.joints[0])
-    if (crank_joint.type != "revolute" or dyad.kind not in ("RRR", "RRP") or len(dyad.bodies) != 2
+    if (first.letters != "R" or dyad.kind not in ("RRR", "RRP") or len(dyad.bodies) != 2
             or dyad.known != [first.bodies[0], model.frame]):
         return None          # e.g. an inverted slider-crank (RPR): its middle pair has no point
     j1, j2, j3 = (model.joint(j) for j in dyad.joints)

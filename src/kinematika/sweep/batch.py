@@ -88,7 +88,7 @@ class BatchSweeper:
             return False
         if self.driver.kind not in ("omega", "joint"):
             return False
-        return self.driver.kind == "joint" or self.joint.type == "revolute"
+        return self.driver.kind == "joint" or self.joint.kind.coordinate == "angle"
 
     def _plan(self) -> Plan:
         """The sweep's rows, the same for every design."""
@@ -162,7 +162,7 @@ class BatchSweeper:
         accel = _column(inst.value(d.accel, f"{d.where}.accel"), size)[:, None]
         sign = 1.0 if d.kind == "omega" or j.a == frame else -1.0      # a joint's rate is b relative to a
         body = self.groups[0].bodies[0]
-        if j.type == "revolute":
+        if j.kind.coordinate == "angle":
             return InputRates(j.at, sign * value, sign * accel, 0j, 0j)
         names = self.model.bodies[body].points
         origin = names[0] if names else next(iter(self.model.points))

@@ -80,7 +80,7 @@ class CompiledNewton:
             g = geos[j.id]
             points.append(np.asarray(g.at, dtype=float))
             pa.append(at(j.a)), pb.append(at(j.b))
-            if j.type == "revolute":
+            if j.kind.pins and not j.kind.ball:          # a pin about an axis: its turning rows
                 for p in g.perps:
                     perps.append(np.asarray(p, dtype=float))
                     ra.append(at(j.a)), rb.append(at(j.b))
@@ -90,7 +90,7 @@ class CompiledNewton:
         self.turn = _Pairs(np.array(ra, dtype=int), np.array(rb, dtype=int))
         # the revolutes' own axes (e fixed in b) for the position form of the turning rows
         self.axis_b0 = np.array([np.asarray(geos[j.id].axis, dtype=float)
-                                 for j in model.joints if j.type == "revolute"]).reshape(-1, 3)
+                                 for j in model.joints if j.kind.pins and not j.kind.ball]).reshape(-1, 3)
         axes, da, db, rates, accels, swept = [], [], [], [], [], []
         for d in model.drivers:
             g = geos[d.joint]
@@ -534,8 +534,8 @@ def supported(sweeper: "Sweeper") -> bool:
     if model.dimension != 3 or not model.drivers:
         return False
     joints = {j.id: j for j in model.joints}
-    return (all(j.type in ("revolute", "spherical") for j in model.joints)
-            and all(d.kind == "joint" and joints[d.joint].type == "revolute" for d in model.drivers))
+    return (all(j.kind.pins for j in model.joints)
+            and all(d.kind == "joint" and joints[d.joint].kind.coordinate == "angle" for d in model.drivers))
 
 
 def compiled_sweep(sweeper: "Sweeper", plan: Plan):

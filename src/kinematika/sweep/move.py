@@ -87,12 +87,12 @@ def _advance(model: Model, jid: str, amount: float, where: str) -> Model:
     from .run import Sweeper
 
     sweeper = Sweeper(model, jid)
-    revolute = model.joint(jid).type == "revolute"
-    per_step = DEGREES_PER_STEP if revolute else LENGTHS_PER_STEP * sweeper.inst.scale
+    turns = model.joint(jid).kind.coordinate == "angle"
+    per_step = DEGREES_PER_STEP if turns else LENGTHS_PER_STEP * sweeper.inst.scale
     steps = min(MAX_STEPS, max(1, math.ceil(abs(amount) / per_step)))
     result = sweeper.run(amount, steps, skip_bad=True)
     if not result.ok.all():
-        raise _unreachable(result, jid, amount, "°" if revolute else "")
+        raise _unreachable(result, jid, amount, "°" if turns else "")
     return posed_model(model, result, -1)
 
 

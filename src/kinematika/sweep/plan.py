@@ -32,12 +32,13 @@ class Plan:
     steps: int
 
     @property
-    def revolute(self) -> bool:
-        return self.joint.type == "revolute"
+    def turns(self) -> bool:
+        """The swept coordinate is an angle (in degrees; radians in the geometry)."""
+        return self.joint.kind.coordinate == "angle"
 
     @property
     def unit(self) -> str:
-        return "deg" if self.revolute else "length"
+        return "deg" if self.turns else "length"
 
     @cached_property
     def coordinate(self) -> np.ndarray:
@@ -47,7 +48,7 @@ class Plan:
     @cached_property
     def increments(self) -> np.ndarray:
         """The increments in radians (revolute) or length: what the geometry uses."""
-        return np.radians(self.coordinate) if self.revolute else self.coordinate
+        return np.radians(self.coordinate) if self.turns else self.coordinate
 
 
 def make_plan(inst: Instant, joint: Optional[str] = None, by: Optional[float] = None,
@@ -59,10 +60,10 @@ def make_plan(inst: Instant, joint: Optional[str] = None, by: Optional[float] = 
     if by is None:
         if section is not None:
             by = float(inst.value(section.by, "sweep.by"))
-        elif j.type == "revolute":
+        elif j.kind.coordinate == "angle":
             by = DEFAULT_BY
         else:
-            raise KinematikaError("schema", f"joint {j.id!r} is prismatic: give the sweep's length "
+            raise KinematikaError("schema", f"joint {j.id!r} is {j.kind.name}: give the sweep's length "
                                   "(`by` in the model's sweep section, or --by)", "sweep.by")
     steps = steps if steps is not None else (section.steps if section else DEFAULT_STEPS)
     if isinstance(steps, bool) or not isinstance(steps, numbers.Integral):
@@ -117,20 +118,20 @@ def driven_joints(model: Model) -> dict[str, Driver]:
     for d in model.drivers:
         if d.kind == "joint":
             j = model.joint(d.joint)
-            if j.type in ("revolute", "prismatic"):
+            if j.kind.sweepable:
                 out.setdefault(j.id, d)
             continue
         if d.relative_to not in (None, frame):
             continue
-        if d.kind == "omega":
-            bodies, kinds = {d.body}, ("revolute",)
+        if d.kind == "omega":        # a turning joint of the body to the frame
+            bodies, coordinates = {d.body}, ("angle",)
         else:                        # every body whose point moves as the driven one there
             point = d.point.point
             bodies = next(set(c) for c in model.motion_classes(point, model.carriers(point))
                           if d.point.body in c)
-            kinds = ("revolute", "prismatic")
+            coordinates = ("angle", "length")
         for j in model.joints:
             other = j.b if j.a == frame else j.a if j.b == frame else None
-            if other in bodies and other != frame and j.type in kinds:
+            if other in bodies and other != frame and j.kind.sweepable and j.kind.coordinate in coordinates:
                 out.setdefault(j.id, d)
     return out

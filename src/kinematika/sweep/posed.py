@@ -106,7 +106,7 @@ def _moved_body(pose: _Pose, body: Body) -> Body:
 
 
 def _moved_joint(pose: _Pose, j: Joint) -> Joint:
-    fixed_in = j.b if j.type == "wheel" else j.a
+    fixed_in = j.b if j.kind.along_in == "b" else j.a
     along = pose.turned(fixed_in, j.along, f"{j.where}.along") if j.along is not None else None
     axis = pose.turned(j.a, j.axis, f"{j.where}.axis") if j.axis is not None else None
     return dataclasses.replace(j, along=along, axis=axis)
@@ -115,7 +115,7 @@ def _moved_joint(pose: _Pose, j: Joint) -> Joint:
 def _contacts_placed(model: Model, pose: _Pose) -> Model:
     """Rolling joints find their new contact themselves: the point that named the drawn
     contact (`at`) is now a material point that has rolled away."""
-    joints = [dataclasses.replace(j, at=None) if j.type in ("rolling", "gear") else j for j in model.joints]
+    joints = [dataclasses.replace(j, at=None) if j.kind.touches else j for j in model.joints]
     return dataclasses.replace(model, joints=joints)
 
 

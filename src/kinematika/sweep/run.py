@@ -117,7 +117,7 @@ class Sweeper:
     def _edge(self, good: float, bad: float) -> float:
         """Where between a row that can be assembled and one that cannot the motion stops:
         the closed form evaluated on finer and finer rows (to 1/4096 of the step)."""
-        scale = np.pi / 180 if self.joint.type == "revolute" else 1.0
+        scale = np.pi / 180 if self.joint.kind.coordinate == "angle" else 1.0
         for _ in range(2):
             between = np.linspace(good, bad, 65)
             out = self.closed.solve(between * scale)

@@ -49,7 +49,7 @@ def searched_assemblies(model: Model, sweeper: Any) -> list:
 
 
 def _searchable(model: Model) -> bool:
-    return not any(j.type in ("rolling", "gear", "wheel") for j in model.joints)
+    return not any(j.kind.touches or j.kind.along_in == "b" for j in model.joints)
 
 
 class _Search:

@@ -34,7 +34,7 @@ def symbolic_moved(model: Model, jid: str, amount: float, where: str) -> Model:
                               "model with symbolic parameters by its input joint", where)
     sign = 1 if joint.a == frame else -1          # the coordinate is b relative to a
     value = repr(float(sign * amount))
-    if joint.type == "revolute":
+    if joint.kind.coordinate == "angle":
         turn = Turn(body, pivot=joint.at, angle=parse(f"deg({value})"))
     else:
         turn = Turn(body, along=joint.along, shift=parse(value))

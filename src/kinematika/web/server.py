@@ -278,7 +278,7 @@ def _input(model: Any) -> Optional[dict[str, Any]]:
         joint, _ = swept_joint(model, model.sweep.joint if model.sweep else None)
     except KinematikaError:
         return None
-    return {"joint": joint.id, "unit": "deg" if joint.type == "revolute" else "length"}
+    return {"joint": joint.id, "unit": "deg" if joint.kind.coordinate == "angle" else "length"}
 
 
 def _edit(req: Request) -> tuple[str, str]:
