@@ -27,6 +27,7 @@ from typing import Any
 import numpy as np
 
 from ..curves.base import cross
+from ..errors import KinematikaWarning
 from ..curves.jet import Jet
 from .profile import DiscCam, PlateCam
 
@@ -60,6 +61,10 @@ class CamAnalysis:
     def angle(self) -> np.ndarray:
         """The abscissa as the user gives it: degrees of cam angle (disc) or travel (plate)."""
         return self.u if isinstance(self.cam, PlateCam) else np.degrees(self.u)
+
+    def angle_of(self, u: np.ndarray) -> np.ndarray:
+        """Cam coordinates (rad, or travel) as the abscissa is shown (degrees, or travel)."""
+        return np.asarray(u, dtype=float) if isinstance(self.cam, PlateCam) else np.degrees(u)
 
     @cached_property
     def motion(self) -> tuple[np.ndarray, ...]:
@@ -144,10 +149,31 @@ class CamAnalysis:
                        "amount": j.amount * self.speed ** (2 if j.quantity == "acceleration" else 1),
                        "between": [j.before, j.after]} for j in self.cam.program.jumps()],
             "peaks": {name: float(np.max(np.abs(v))) for name, v in zip("svaj", self.svaj)},
+            "lift": float(np.max(self.motion[0]) - np.min(self.motion[0])),
         }
+        if self.cam.follower.angular:                     # an oscillating follower's angle in degrees
+            out["peaks"]["s"] = math.degrees(out["peaks"]["s"])
+            out["lift"] = math.degrees(out["lift"])
         if self.cam.follower.contact.touches_with_face:
             where = self.cam.follower.along_face(self.cam.to_ground(self.profile, self.u), self.motion[0], self.cam.base)
             out["face"] = {"from": float(np.min(where)), "to": float(np.max(where))}
+        return out
+
+
+    def warnings(self, units: str = "mm") -> list[KinematikaWarning]:
+        """One warning per jump of velocity or acceleration (the fundamental law of cam design
+        broken: infinite acceleration or jerk there), naming the segments and the size."""
+        out = []
+        unit = "rad" if self.cam.follower.angular else units
+        for j in self.cam.program.jumps():
+            order = 1 if j.quantity == "velocity" else 2
+            size = j.amount * self.speed**order
+            what = "infinite acceleration" if order == 1 else "infinite jerk"
+            at = _abscissa(self.cam, j.at)
+            place = "°" if not isinstance(self.cam, PlateCam) else f" {units}"
+            out.append(KinematikaWarning(
+                f"the {j.quantity} jumps by {size:+.4g} {unit}/s{'²' if order == 2 else ''} at {at:g}{place} "
+                f"({what}: the fundamental law of cam design is broken)", f"program[{j.before}]→[{j.after}]"))
         return out
 
 
