@@ -57,8 +57,17 @@ class Polynomial(Law):
 
     def __call__(self, x: np.ndarray | float) -> Values:
         x = np.asarray(x, dtype=float)
-        c = np.polynomial.Polynomial(self.coefficients)
-        return c(x), c.deriv(1)(x), c.deriv(2)(x), c.deriv(3)(x)
+        return tuple(np.polyval(c, x) + 0 * x for c in self._derivatives)  # type: ignore[return-value]
+
+    @property
+    def _derivatives(self) -> tuple[np.ndarray, ...]:
+        """The coefficients of S, S', S'', S''' (highest power first, for polyval), made once."""
+        found = self.__dict__.get("_made")
+        if found is None:
+            c = np.polynomial.Polynomial(self.coefficients)
+            found = tuple(c.deriv(k).coef[::-1].copy() for k in range(4))
+            object.__setattr__(self, "_made", found)
+        return found
 
     @classmethod
     def through(cls, start: Mapping[int, float], end: Mapping[int, float]) -> Polynomial:

@@ -59,6 +59,10 @@ class Curve(ABC):
     def d2(self, u: Param) -> np.ndarray:
         """r''(u) = d²r/du²."""
 
+    def derivatives(self, u: Param) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """r, r' and r'' at once (a kind that computes them together overrides this)."""
+        return self.point(u), self.d1(u), self.d2(u)
+
     # derived geometry ------------------------------------------------------------------
     def wrap(self, u: Param) -> np.ndarray:
         """u brought into the domain: wrapped by the period for a closed curve, clipped for
@@ -139,7 +143,8 @@ class Curve(ABC):
             lo, hi = max(lo, a), min(hi, b)
 
         def g(x: float) -> float:
-            return float(np.dot(self.point(x) - p, self.d1(x)))
+            r, d, _ = self.derivatives(x)
+            return float(np.dot(r - p, d))
 
         g_lo, g_hi = g(lo), g(hi)
         if g_lo > 0 and g_hi > 0:                 # distance rises across the bracket
@@ -147,7 +152,8 @@ class Curve(ABC):
         if g_lo < 0 and g_hi < 0:
             return hi
         for _ in range(60):
-            r, d, dd = self.point(u) - p, self.d1(u), self.d2(u)
+            r, d, dd = self.derivatives(u)
+            r = r - p
             gu = float(np.dot(r, d))
             slope = float(np.dot(d, d) + np.dot(r, dd))
             if gu < 0:

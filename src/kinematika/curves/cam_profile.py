@@ -47,6 +47,11 @@ class CamProfile(Curve):
         x, y = self.jets(u)
         return np.stack([x.d(k), y.d(k)], axis=-1)
 
+    def derivatives(self, u: Param) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """r, r' and r'' from one evaluation of the trace."""
+        x, y = self.jets(u)
+        return tuple(np.stack([x.d(k), y.d(k)], axis=-1) for k in range(3))  # type: ignore[return-value]
+
     def point(self, u: Param) -> np.ndarray:
         """r(u)."""
         return self._stack(u, 0)
