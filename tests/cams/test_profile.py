@@ -19,7 +19,7 @@ PROGRAM = build([(laws.DWELL, D(60), 0, "dwell"), (laws.CYCLOIDAL, D(100), H, "r
 SWING = build([(laws.DWELL, D(60), 0, "dwell"), (laws.MODIFIED_SINE, D(120), D(20), "rise"),
                (laws.DWELL, D(30), 0, "dwell"), (laws.CYCLOIDAL, D(150), -D(20), "return")])
 BASE = 40.0
-ANGLES = np.radians([10.0, 75.0, 110.0, 150.0, 180.0, 230.0, 290.0, 340.0])
+ANGLES = np.radians([10.0, 110.0, 150.0, 230.0, 290.0])
 
 
 def rotate(p: np.ndarray, a: float) -> np.ndarray:
@@ -92,7 +92,7 @@ def oscillating_roller_s(cam: DiscCam, theta: float) -> float:
                        f.start(cam.base) + D(24), D(2))
     else:      # a knife edge: the crossing of its circle |X − A| = ℓ with the turned profile
         u = np.linspace(0, 2 * math.pi, 4001)
-        gap = lambda v: np.linalg.norm(rotate(cam.profile.point(v), cam.sense * theta) - [a, 0]) - l  # noqa: E731
+        gap = lambda v: np.linalg.norm(rotate(cam.profile.point(v), cam.sense * theta) - [a, 0]) - l
         turned = np.array([rotate(q, cam.sense * theta) for q in cam.profile.point(u)])
         g = np.linalg.norm(turned - [a, 0], axis=1) - l
         roots = [brentq(gap, u[i], u[i + 1], xtol=1e-14) for i in np.flatnonzero(g[:-1] * g[1:] <= 0)]
@@ -146,7 +146,7 @@ def test_a_translating_cams_roller_touches_its_profile_where_the_program_says():
                           (laws.HARMONIC, 50.0, -15.0, "r")], periodic=False), Translating(Roller(6.0)), 10.0)
     for u in (5.0, 30.0, 55.0, 70.0, 100.0, 125.0):
         # the roller at x = 0 over the plate moved by u: lower it until it touches
-        def gap(y: float) -> float:
+        def gap(y: float, u: float = u) -> float:
             local = np.array([0.0 - u, y])
             return float(np.linalg.norm(cam.profile.point(cam.profile.nearest(local)) - local)) - 6.0
 

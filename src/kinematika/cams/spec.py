@@ -208,7 +208,7 @@ def program(segments: list[SegmentSpec], angular: bool, periodic: bool, where: s
         total = sum(float(seg.over) for seg in segments)
         if abs(total - 360.0) > 1e-6:
             raise KinematikaError("schema", f"the segments span {total:g}°; a disc cam's program spans 360°", where)
-        if abs(s) > 1e-9 * max(1.0, max(abs(st[2]) for st in steps)):
+        if abs(s) > 1e-9 * max([1.0] + [abs(st[2]) for st in steps]):
             raise KinematikaError("schema", f"the program ends at s = {s / unit:g}, not where it starts (0): "
                                   f"a disc cam's motion repeats every turn", f"{where}[{len(segments) - 1}].to")
     return built
