@@ -154,7 +154,8 @@ class CamAnalysis:
         if self.cam.follower.angular:                     # an oscillating follower's angle in degrees
             out["peaks"]["s"] = math.degrees(out["peaks"]["s"])
             out["lift"] = math.degrees(out["lift"])
-        if self.cam.follower.contact.touches_with_face:
+        if self.cam.follower.contact.touches_with_face:       # no trace point: no pitch curve
+            del out["pitch_radius"]
             where = self.cam.follower.along_face(self.cam.to_ground(self.profile, self.u), self.motion[0], self.cam.base)
             out["face"] = {"from": float(np.min(where)), "to": float(np.max(where))}
         return out

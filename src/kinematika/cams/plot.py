@@ -89,9 +89,8 @@ def profile_figure(analysis: CamAnalysis, units: str = "mm", title: str = "") ->
     profile, pitch = cam.profile.point(u), cam.pitch.point(u)
     ax.fill(profile[:, 0], profile[:, 1], color="#dbe7f3", zorder=0) if cam.profile.closed else None
     ax.plot(profile[:, 0], profile[:, 1], color="black", linewidth=1.6, label="profile")
-    if cam.follower.contact.radius > 0 or cam.follower.contact.touches_with_face:
-        ax.plot(pitch[:, 0], pitch[:, 1], color="#1f77b4", linestyle="--", linewidth=1.0,
-                label="pitch curve" if not cam.follower.contact.touches_with_face else "face's trace")
+    if cam.follower.contact.radius > 0:
+        ax.plot(pitch[:, 0], pitch[:, 1], color="#1f77b4", linestyle="--", linewidth=1.0, label="pitch curve")
     if not isinstance(cam, PlateCam):
         t = np.linspace(0, 2 * math.pi, 361)
         ax.plot(cam.base * np.cos(t), cam.base * np.sin(t), color="#888", linewidth=0.8, label="base circle")

@@ -93,7 +93,7 @@ def _show(data: dict) -> None:
     phi = data["pressure_angle"]
     print(f"largest pressure angle      {phi['largest']:.2f}° at {at(phi['at'])}")
     for key, name in (("pitch_radius", "radius of curvature, pitch"), ("profile_radius", "radius of curvature, profile")):
-        for side, value in data[key].items():
+        for side, value in data.get(key, {}).items():
             print(f"{name + ' (' + side + ')':<40}{value['smallest']:.4g} {u} at {at(value['at'])}"
                   if side == "convex" else f"{'':<12}{side}: {value['smallest']:.4g} {u} at {at(value['at'])}")
     if data["undercut"]:
