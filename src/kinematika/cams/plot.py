@@ -37,11 +37,14 @@ def svaj_figure(analysis: CamAnalysis, units: str = "mm", title: str = "") -> Fi
     FigureCanvasAgg(fig)
     axes = fig.subplots(4, 1, sharex=True)
     xlabel, ylabels = _labels(analysis, units)
-    x = analysis.angle
-    values = list(analysis.svaj)
+    program = analysis.cam.program
+    u = analysis.u
+    if program.periodic:                    # close the cycle: the last segment's end, from the left
+        u = np.append(u, program.period * (1 - 1e-12))
+    x = analysis.angle_of(u)
+    values = list(program.kinematics(u, analysis.speed))
     if analysis.cam.follower.angular:
         values[0] = np.degrees(values[0])
-    program = analysis.cam.program
     bounds = analysis.angle_of(program.boundaries)
     for k, (ax, y, label) in enumerate(zip(axes, values, ylabels)):
         ax.plot(x, y, color="#1f4e79", linewidth=1.4)
