@@ -2,7 +2,7 @@
 
 kinematika's core (solve, explain, draw, sweep, the page) needs only what `pip install -e .`
 installs. Design studies need pyarrow and pandas (and dask.distributed for a cluster), Parquet
-sweeps need pyarrow: they are the extras of pyproject.toml. A command that needs a missing one
+sweeps need pyarrow, a cam's DXF needs ezdxf: they are the extras of pyproject.toml. A command that needs a missing one
 says, in one line naming the command, what to install, in the README's own terms, and exits
 with status 2 (`usage`); it never ends in an internal error.
 """
@@ -18,6 +18,7 @@ EXTRA = {                       # the module imported -> the extra of pyproject.
     "pandas": "explore",
     "dask": "explore",
     "distributed": "explore",
+    "ezdxf": "cad",             # a cam's profile as DXF (`kinematika cam --dxf`)
 }
 
 
