@@ -135,6 +135,14 @@ class Curve(ABC):
                 best, best_d = u, d
         return float(self.wrap(best))
 
+    def near(self, p: np.ndarray, u: float, span: float = 1 / 32) -> float:
+        """The parameter of the point nearest to p, close to `u` (within `span` of the domain's
+        length on each side): the nearest point followed along a motion, without jumping to
+        another branch of the distance (Newton as in `nearest`)."""
+        a, b = self.domain
+        width = (b - a) * span if np.isfinite(b - a) else max(1.0, abs(u)) * span * 32
+        return float(self.wrap(self._newton(np.asarray(p, dtype=float), float(u), u - width, u + width)))
+
     def _newton(self, p: np.ndarray, u: float, lo: float, hi: float) -> float:
         """Safeguarded Newton on g(u) = (r − p)·r' inside [lo, hi] (bisection when a step
         leaves the bracket or g' ≤ 0); open curves keep to their domain."""

@@ -16,7 +16,7 @@ from ..algebra.vectors import Space, dot, sub
 from ..errors import KinematikaError
 from ..model import model as m
 from ..expressions import Expr, ExpressionError, evaluate
-from ..shapes import Circle, Disc, Line, Plane
+from ..shapes import Cam, Circle, Curve, Disc, Line, Plane
 from .positions import angle_warnings, positions
 
 
@@ -260,8 +260,57 @@ def _shape(inst: Instant, s: m.Shape, body: str) -> Any:
     if isinstance(s, m.Disc):
         return Disc(_at(inst, s.center, s.center_point, body), _radius(inst, s.radius, where),
                     inst.body_direction(body, s.axis, f"{where}.disc.axis"), s.center_point)
-    return Plane(_at(inst, s.through, s.through_point, body),
-                 inst.body_direction(body, s.normal, f"{where}.plane.normal"), s.through_point)
+    if isinstance(s, m.Plane):
+        return Plane(_at(inst, s.through, s.through_point, body),
+                     inst.body_direction(body, s.normal, f"{where}.plane.normal"), s.through_point)
+    if inst.symbolic:
+        raise KinematikaError("schema", "curves and cams are drawn from numbers: give the parameters "
+                              "their values (or solve without --symbolic)", where)
+    if isinstance(s, m.CurveShape):
+        return _curve(inst, s, body, where)
+    return _cam(inst, s, body, where)
+
+
+def _curve(inst: Instant, s: m.CurveShape, body: str, where: str) -> Curve:
+    """A spline through the curve's points at this instant (carried with the body when the
+    model is moved: a rigid motion moves the spline through moved points)."""
+    from ..curves import Spline
+
+    pts = [inst.numvec(_at(inst, () if isinstance(p, str) else p, p if isinstance(p, str) else None, body))
+           for p in s.through]
+    try:
+        spline = Spline(pts, closed=s.closed)
+    except ValueError as err:
+        raise KinematikaError("geometry", f"the curve cannot be drawn through its points: {err}",
+                              f"{where}.curve") from None
+    return Curve(spline, role="curve")
+
+
+def _cam(inst: Instant, s: m.CamShape, body: str, where: str) -> Cam:
+    """A cam's profile and pitch curve, in the cam's own coordinates placed at `center`: a disc
+    cam turned by `layout` + σθ (θ its cam angle: the drawing's, advanced by the body's turn
+    since), a plate cam by `layout` (its `center` the plate's own origin, which the program's
+    travel θ has carried along the frame's x from the follower's line)."""
+    from .positions import turned
+
+    design = s.design.cam
+    center = inst.numvec(_at(inst, s.center, s.center_point, body))
+    layout = float(inst.num(inst.value(s.layout, f"{where}.cam.layout")))
+    theta = float(inst.num(inst.value(s.angle, f"{where}.cam.angle")))
+    placed = layout
+    if not _translates(design):
+        ux = inst.numvec(turned(inst, body, (1, 0)))
+        theta += design.sense * math.atan2(ux[1], ux[0])     # the body's turn since the drawing
+        placed = layout + design.sense * theta
+    return Cam(design, Curve(design.profile, center, placed, "profile"), Curve(design.pitch, center, placed, "pitch"),
+               center, theta, layout, not _translates(design))
+
+
+def _translates(design: Any) -> bool:
+    """A plate (translating) cam, which slides instead of turning."""
+    from ..cams.profile import PlateCam
+
+    return isinstance(design, PlateCam)
 
 
 def _at(inst: Instant, coords: tuple, point: Optional[str], body: str) -> tuple:

@@ -15,7 +15,7 @@ import math
 from ..algebra.vectors import sub
 from ..shapes import Circle
 from .base import AXES, JointGeometry, JointKind, Rows
-from .contact import drawn_pair, find_contact
+from .rolling_contact import drawn_pair, find_contact
 from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
 

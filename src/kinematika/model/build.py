@@ -14,7 +14,7 @@ from ..text import brief, names as name_list
 from . import shape
 from .constructions import Construction, ConstructionReader, construction_order
 from ..expressions import Expr, ExpressionError, parse
-from .model import (Body, Circle, Direction, Disc, Driver, ExprVector, Joint, Line, Model, Parameter,
+from .model import (Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint, Line, Model, Parameter,
                     Plane, PointPair, PointRef, Question, Shape, Sweep)
 
 if TYPE_CHECKING:
@@ -215,10 +215,34 @@ class _Builder:
             through, tp = self.location(raw.plane.through, f"{where}.plane.through")
             shapes.append(Plane(through, self.direction(raw.plane.normal,
                                                                f"{where}.plane.normal"), tp))
+        if getattr(raw, "curve", None):
+            through = tuple(self.location(p, f"{where}.curve.through[{i}]")
+                            for i, p in enumerate(raw.curve.through))
+            shapes.append(CurveShape(tuple(name or coords for coords, name in through), raw.curve.closed))
+        if getattr(raw, "cam", None):
+            shapes.append(self.cam(raw.cam, f"{where}.cam"))
         if self.dim == 2 and shapes and any(isinstance(s, (Disc, Plane)) for s in shapes):
             raise KinematikaError("schema", "disc and plane shapes belong to 3D models; use circle "
                                   "and line in a planar model", where)
+        if self.dim == 3 and any(isinstance(s, (CurveShape, CamShape)) for s in shapes):
+            raise KinematikaError("schema", "curves and cams belong to planar models", where)
         return shapes
+
+    def cam(self, raw: Any, where: str) -> CamShape:
+        """A cam's profile: its design checked as a cam-design file's (`cams.spec.design`,
+        errors named in the body), placed at its centre."""
+        from ..cams.spec import CamFileSpec, CamSpec, design
+
+        center, cp = self.location(raw.center, f"{where}.center")
+        spec = CamFileSpec(cam=CamSpec(kind=raw.kind, base=raw.base, rotation=raw.rotation),
+                           follower=raw.follower, program=raw.program, profile=raw.profile,
+                           speed={"velocity" if raw.kind == "translating" else "omega": 1.0})
+        try:
+            made = design(spec)
+        except KinematikaError as err:
+            raise KinematikaError(err.kind, err.message, f"{where}.{err.where}" if err.where else where) from None
+        return CamShape(center, self.expr(raw.angle, f"{where}.angle"), self.expr(raw.layout, f"{where}.layout"),
+                        made, cp)
 
     def known_body(self, name: Optional[str], where: str) -> str:
         if name not in self.body_map:

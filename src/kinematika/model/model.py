@@ -7,7 +7,7 @@ both end here, through `model.build`.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Optional, Union
+from typing import TYPE_CHECKING, Any, Optional, Union
 
 from ..errors import KinematikaError
 from ..joints import JointKind
@@ -71,7 +71,27 @@ class Plane:
     through_point: Optional[str] = None
 
 
-Shape = Union[Circle, Line, Disc, Plane]
+@dataclass(frozen=True)
+class CurveShape:
+    """A smooth curve through points (names or coordinates at the drawing), closed or not."""
+
+    through: tuple                   # each a point's name (str) or coordinates (ExprVector)
+    closed: bool = False
+
+
+@dataclass(frozen=True)
+class CamShape:
+    """A cam's profile, from its design (`kinematika.cams`), placed at its centre, turned by
+    its cam angle `angle` within the design frame, itself turned by `layout` (radians)."""
+
+    center: ExprVector
+    angle: Expr
+    layout: Expr
+    design: Any                      # the checked cam design (`cams.spec.CamDesign`)
+    center_point: Optional[str] = None
+
+
+Shape = Union[Circle, Line, Disc, Plane, CurveShape, CamShape]
 
 
 @dataclass

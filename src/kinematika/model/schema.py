@@ -9,6 +9,7 @@ from typing import Annotated, Any, Literal, Optional, Union
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, StrictBool, StrictFloat, StrictInt, Tag
 
+from ..cams.spec import FollowerSpec, SegmentSpec
 from ..joints import KINDS
 
 Value = Union[StrictInt, StrictFloat, str]
@@ -131,12 +132,40 @@ PointSpec = Annotated[
 ]
 
 
+class CurveSpec(Strict):
+    """A smooth curve fixed in the body through the given points (a cubic spline, closed or
+    open): a curved slot, a cam known by points, a profile that slides on another."""
+
+    through: Annotated[list[Location], Field(min_length=3, max_length=10_000)]
+    closed: StrictBool = False
+
+
+class BodyCamSpec(Strict):
+    """A cam's profile fixed in the body: its motion program (or measured profile) and follower
+    as in a cam-design file (`kinematika.cams.spec`), placed at `center`, turned by `angle`
+    (the cam angle at this instant: where the program is) in the design frame, itself turned
+    by `layout` in the model's axes (a translating follower rises along the frame's y axis)."""
+
+    center: Location
+    angle: Value = 0
+    layout: Value = 0
+    kind: Literal["disc", "translating"] = "disc"
+    base: Optional[Union[StrictInt, StrictFloat]] = None
+    rotation: Literal["ccw", "cw"] = "ccw"
+    follower: FollowerSpec
+    program: Optional[Annotated[list[SegmentSpec], Field(min_length=1, max_length=1000)]] = None
+    profile: Optional[Annotated[list[Annotated[list[Union[StrictInt, StrictFloat]], Field(min_length=2, max_length=2)]],
+                                Field(min_length=3, max_length=100_000)]] = None
+
+
 class BodySpec(Strict):
     points: list[str] = Field(default_factory=list)
     circle: Optional[CircleSpec] = None
     line: Optional[LineSpec] = None
     disc: Optional[DiscSpec] = None
     plane: Optional[PlaneSpec] = None
+    curve: Optional[CurveSpec] = None
+    cam: Optional[BodyCamSpec] = None
     description: Optional[str] = None
 
 

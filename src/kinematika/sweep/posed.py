@@ -115,7 +115,7 @@ def _moved_joint(pose: _Pose, j: Joint) -> Joint:
 def _contacts_placed(model: Model, pose: _Pose) -> Model:
     """Rolling joints find their new contact themselves: the point that named the drawn
     contact (`at`) is now a material point that has rolled away."""
-    joints = [dataclasses.replace(j, at=None) if j.kind.touches else j for j in model.joints]
+    joints = [dataclasses.replace(j, at=None) if j.kind.rolls else j for j in model.joints]
     return dataclasses.replace(model, joints=joints)
 
 

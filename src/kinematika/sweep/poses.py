@@ -14,9 +14,9 @@ from typing import Any, Optional
 
 import numpy as np
 
-from ..joints.contact import find_contact
+from ..joints.rolling_contact import find_contact
 from ..engine.instant import Instant
-from ..shapes import Circle, Line
+from ..shapes import Cam, Circle, Curve, Line
 from ..joints import JointGeometry
 from ..engine.levels import Unknowns
 
@@ -186,7 +186,25 @@ def _moved_shape(s: Any, body: str, poses: Poses) -> Any:
         return Circle(poses.point(body, s.center), s.radius, s.center_point)
     if isinstance(s, Line):
         return Line(poses.point(body, s.through), poses.turn(body, s.direction), s.through_point)
+    if isinstance(s, Curve):
+        return _moved_curve(s, body, poses)
+    if isinstance(s, Cam):
+        turned = _turned_by(body, poses)
+        theta = s.angle + s.design.sense * turned if s.turns else s.angle
+        return Cam(s.design, _moved_curve(s.profile, body, poses), _moved_curve(s.pitch, body, poses),
+                   tuple(poses.point(body, s.center)), theta, s.layout, s.turns)
     return s
+
+
+def _turned_by(body: str, poses: Poses) -> float:
+    """How far a planar body has turned from the drawing."""
+    e = poses.turn(body, (1.0, 0.0))
+    return math.atan2(e[1], e[0])
+
+
+def _moved_curve(s: Curve, body: str, poses: Poses) -> Curve:
+    """A placed curve carried by its body: its origin moved, its axis turned."""
+    return Curve(s.curve, tuple(poses.point(body, s.origin)), s.angle + _turned_by(body, poses), s.role)
 
 
 def moved_geometry(geo: JointGeometry, poses: Poses, inst: Instant) -> JointGeometry:
@@ -202,6 +220,8 @@ def moved_geometry(geo: JointGeometry, poses: Poses, inst: Instant) -> JointGeom
     if geo.axis is not None:
         out.axis = poses.turn(j.a, geo.axis)
     out.perps = [poses.turn(owner, p) for p in geo.perps]
-    if geo.contact is not None:
+    if j.kind.rolls:
         out.contact = find_contact(inst, replace(j, at=None))
+    elif geo.contact is not None:                # a sliding contact: found anew where it has moved
+        return j.kind.prepare(inst, j)
     return out

@@ -1,0 +1,78 @@
+"""A pin in a curved slot (planar `curved_slot`): the point `at` of the second body slides
+along a curve fixed in the first — a circular arc (the body's `circle`) or any curve (its
+`curve`); relative rotation is free.
+
+Condition: the pin stays on the curve (`touching`, a point on a curve): at the velocity level
+v_rel·n = 0, the relative velocity of the pin along the slot's tangent t; at the acceleration
+level the relative acceleration has the normal part v_rel²/ρ towards the slot's centre of
+curvature (ρ its radius there) besides the drag and Coriolis terms:
+
+    a_P = a_P∈a + a_rel + 2 ω_a × v_rel,   a_rel = (dv_rel/dt) t + (v_rel²/ρ) n_c.
+
+Its coordinate is the pin's displacement along the slot (arc length); the relative instant
+centre of the two bodies lies on the slot's normal at the pin.
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from ..algebra.vectors import dot, sub
+from ..errors import KinematikaError
+from ..shapes import Circle, Curve
+from .base import JointGeometry, JointKind, Rows
+from .touching import Follow, Point, find_touch, touch_row
+
+
+class CurvedSlot(JointKind):
+    """A pin in a slot along a circle or a curve."""
+
+    name = "curved_slot"
+    summary = "point `at` of the second body slides along the first body's circle or curve; rotation free"
+    dimensions = (2,)
+    coordinate = "length"
+    slides = True
+    guides_point = True
+    touches = True
+    route = "slot"
+    centre = "normal"
+    fields = {"at": "required"}
+    point_on = "b"
+
+    def conditions(self, dim: int) -> int:
+        return 1
+
+    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        geo = super().prepare(inst, joint)
+        curves = [s for s in inst.shapes[joint.a] if isinstance(s, (Circle, Curve))]
+        if not curves:
+            raise KinematikaError("schema", f"a curved slot is cut along a circle or curve of {joint.a!r}: "
+                                  "give that body one", joint.where)
+        geo.contact = find_touch(inst, joint, curves, [Point(inst.points[joint.at], joint.at)])
+        n = geo.contact.normal               # a circle's: outward; a curve's: its own normal
+        geo.along = (-n[1], n[0]) if isinstance(geo.contact.outline_a, Circle) else (n[1], -n[0])
+        return geo
+
+    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        j = geo.joint
+        return [(touch_row(lv, j.a, j.b, geo.contact), f"{j.at}@{j.b} stays in the curved slot of {j.a}")]
+
+    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+        """The pin's distance from the slot's curve along its normal."""
+        return Follow(geo.joint.a, geo.joint.b, geo.contact, geo.joint.id)
+
+    def rate(self, geo: JointGeometry, lv: Any) -> Any:
+        """The pin's speed along the slot, (v_P − v_P∈a)·t (at the acceleration level the
+        tangential relative acceleration plus the Coriolis term's part along t)."""
+        j = geo.joint
+        row = dot(sub(lv.point(j.b, geo.at), lv.point(j.a, geo.at)), geo.along)
+        if lv.accel:
+            v_rel = sub(lv.v(j.b, geo.at), lv.v(j.a, geo.at))
+            row = row + 2 * dot(v_rel, lv.space.cross(lv.w(j.a), geo.along))
+        return row
+
+    def add(self, m: Any, a: str, b: str, at: str, id: Optional[str] = None) -> str:
+        """Point `at` of `b` slides in a slot of `a` along a's circle or curve."""
+        return m.joint(self.name, a, b, id, at=at)
+
+
+KIND = CurvedSlot()
