@@ -1,5 +1,6 @@
 """The code's own checks, run by the test command: ruff (style and likely bugs) on the
-package and the tests, and mypy (types) on the modules pyproject.toml lists."""
+package and the tests, mypy (types) on the modules pyproject.toml lists, and import-linter
+(the layers, pyproject.toml's contract)."""
 from __future__ import annotations
 
 import subprocess
@@ -21,4 +22,11 @@ def test_ruff_finds_nothing():
 
 def test_mypy_finds_nothing_in_the_typed_modules():
     done = _run(sys.executable, "-m", "mypy")
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_the_layers_hold():
+    """import-linter's contract in pyproject.toml: each layer imports only the layers below it
+    (cli, web, commands, api, the views, sweep, ..., the engine, the model, the joints, ...)."""
+    done = _run(str(BIN / "lint-imports"))
     assert done.returncode == 0, done.stdout + done.stderr

@@ -1,67 +1,67 @@
-"""The Python entry points: load a model, solve it, read the answers."""
+"""The Python entry points: load a model, solve it, read the answers.
+
+    >>> import kinematika
+    >>> sol = kinematika.solve("examples/four_bar.yaml")
+    >>> sol.velocity("B"), sol.omega("coupler")
+
+`solve` and `prepare` are the sweep layer's (`sweep.posing`: posing a model moves it as a
+sweep does); the Jupyter drawings of a `Solution` register here, from above the views.
+"""
 from __future__ import annotations
 
-from pathlib import Path
-from typing import Any, Mapping, Optional, Union
+from typing import Any, Optional
 
-from .engine.system import InstantSolver
-from .engine.instant import instantiate
-from .model.build import build_model
-from .model.files import load_model, parse_text
-from .model.model import Model
+from .model.builder import Mechanism
+from .model.source import ModelLike, as_model
 from .questions import answer
 from .solution import Solution
+from .sweep.posing import prepare, solved
 
-ModelLike = Union[Model, str, Path, dict]
-
-
-def as_model(source: ModelLike, fmt: Optional[str] = None) -> Model:
-    """A `Model` from a model, a file path, a model tree (dict), a `Mechanism` or the text of
-    a model (a string of several lines, or any string when `fmt` names its format: 'yaml',
-    'toml' or 'json')."""
-    if isinstance(source, Model):
-        return source
-    if isinstance(source, dict):
-        return build_model(source)
-    if hasattr(source, "to_model"):
-        return source.to_model()
-    if isinstance(source, str) and (fmt is not None or "\n" in source):   # a model's text
-        return build_model(parse_text(source, fmt or "yaml", "<text>"))
-    return load_model(source)
-
-
-def prepare(source: ModelLike, *, fmt: Optional[str] = None,
-            set: Optional[Mapping[str, Any]] = None, move: Optional[Mapping[str, Any]] = None,
-            assembly: Optional[int] = None) -> Model:
-    """The model a command analyses: read (`as_model`), with parameters given values (`set`,
-    as `--set NAME=VALUE`), on the chosen assembly (`--assembly N`) and advanced along driven
-    joints (`move`, as `--move J=AMOUNT`). Every view (CLI, Python, the page) comes here."""
-    from .model.overrides import with_parameters
-
-    model = with_parameters(as_model(source, fmt),
-                            {str(k): None if v is None else str(v) for k, v in (set or {}).items()})
-    if assembly is not None:
-        from .sweep.assemblies import with_assembly
-
-        model = with_assembly(model, assembly)
-    amounts = {**model.move, **(move or {})}
-    if amounts:
-        from .sweep.move import moved
-
-        model = moved(model, amounts)
-    return model
+__all__ = ["Mechanism", "ModelLike", "answers", "as_model", "prepare", "solve"]
 
 
 def solve(source: ModelLike, symbolic: bool | None = None, **options: Any) -> Solution:
     """Solve the instant described by `source` (numerically, or exactly when it has symbols);
     `options` are `prepare`'s (set, move, assembly, fmt)."""
-    model = prepare(source, **options)
-    inst = instantiate(model, symbolic)
-    solver = InstantSolver(inst)
-    motion = solver.solve()
-    return Solution(model, inst, motion, solver)
+    return solved(source, symbolic, **options)
 
 
 def answers(sol: Solution) -> list[tuple[Any, Any]]:
     """Each question of the model with its raw answer, in order."""
     return [(q, answer(sol, q)) for q in sol.model.questions]
+
+
+def _solution_svg(sol: Solution) -> Optional[str]:
+    """Jupyter: a solved instant shows itself as its figure."""
+    from .draw.jupyter import solution_svg
+
+    return solution_svg(sol)
+
+
+def _mechanism_svg(m: Any) -> Optional[str]:
+    """Jupyter: a model being built shows itself drawn (solved when it can be)."""
+    from .draw.jupyter import model_svg
+
+    try:
+        return model_svg(m.to_model())
+    except Exception:            # a half-built model: Jupyter shows its text instead
+        return None
+
+
+def _solve_mechanism(m: Any, symbolic: bool | None = None, **options: Any) -> Solution:
+    """`Mechanism.solve`: the mechanism built so far, solved (`options` as `prepare`'s)."""
+    return solved(m.to_model(), symbolic, **options)
+
+
+def _mechanism_assemblies(m: Any) -> list:
+    """`Mechanism.assemblies`: every assembly at the drawn input (`kinematika assemblies`)."""
+    from .sweep.assemblies import assemblies
+
+    return assemblies(m.to_model())
+
+
+# the hooks of the lower layers' classes, registered from above
+Solution._repr_svg_ = _solution_svg                    # type: ignore[attr-defined]
+Mechanism._repr_svg_ = _mechanism_svg                  # type: ignore[attr-defined]
+Mechanism.solve = _solve_mechanism                     # type: ignore[attr-defined]
+Mechanism.assemblies = _mechanism_assemblies           # type: ignore[attr-defined]

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from typing import Any, Optional
 
 from .algebra.vectors import dot
-from .engine.instant import Instant
+from .engine.instant import Instant, instantiate
 from .engine.motion import BodyState, Motion
 from .engine.system import InstantSolver
 from .errors import KinematikaError
@@ -168,12 +168,6 @@ class Solution:
     def norm(self, vec: tuple) -> Any:
         return self.inst.backend.sqrt(dot(vec, vec))
 
-    def _repr_svg_(self) -> Optional[str]:  # Jupyter: the instant as a drawing
-        try:
-            from .draw.jupyter import solution_svg
-        except ImportError:
-            return None
-        return solution_svg(self)
 
 
 def _norm(values: Any) -> float:
@@ -210,3 +204,11 @@ def _vanishes(x: Any) -> bool:
         if not value.is_number or abs(complex(value)) > 1e-30:
             return False
     return True
+
+
+def solve_model(model: Model, symbolic: bool | None = None) -> Solution:
+    """The instant `model` describes, solved: its velocity and acceleration systems
+    (`engine.system`), numerically, or exactly when it has symbols (or `symbolic`)."""
+    inst = instantiate(model, symbolic)
+    solver = InstantSolver(inst)
+    return Solution(model, inst, solver.solve(), solver)

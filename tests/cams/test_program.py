@@ -13,7 +13,8 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from kinematika.cams import CamAnalysis, laws, load
+from kinematika.cams import CamAnalysis, laws
+from kinematika.model.files import load_cam as load
 from kinematika.cams.export import COLUMNS, csv_text, svg_text, write_dxf
 from kinematika.cams.program import build
 from kinematika.cams.spec import design, parse

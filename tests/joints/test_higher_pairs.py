@@ -143,7 +143,7 @@ def test_an_eccentric_cam_drives_a_flat_follower_as_y_is_e_sin_theta_plus_R():
 
 def test_the_eccentric_cam_in_symbols():
     tree = copy.deepcopy(ECCENTRIC)
-    tree["parameters"] = {k: None for k in ("e", "R", "th", "w")}
+    tree["parameters"] = dict.fromkeys(("e", "R", "th", "w"))
     v, a = (x["value"] for x in solve_data(tree)["answers"])
     e, w, th = sympy.symbols("e w th", positive=True)
     assert sympy.simplify(sympy.sympify(v[1], locals={"e": e, "w": w, "th": th}) - e * w * sympy.cos(th)) == 0

@@ -28,7 +28,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Annotated, Any, Literal, Optional, Union
 
 from pydantic import BaseModel, ConfigDict, Field, StrictFloat, StrictInt, ValidationError
@@ -313,25 +312,6 @@ def parse(tree: Any) -> CamFileSpec:
         return CamFileSpec.model_validate(tree)
     except ValidationError as err:
         raise _schema_error(err) from None
-
-
-def load(path: str | Path) -> CamDesign:
-    """Read, check and build a cam-design file (YAML, TOML or JSON)."""
-    from ..model.files import FORMATS, parse_text, read_bytes
-
-    path = Path(path)
-    kind = FORMATS.get(path.suffix.lower())
-    if kind is None:
-        raise KinematikaError("syntax", f"unknown file type {brief(path.suffix or '(none)', 20)}: a cam file ends "
-                              f"in {', '.join(FORMATS)}", str(path))
-    data = read_bytes(path, str(path))
-    try:
-        text = data.decode("utf-8-sig")
-    except UnicodeDecodeError as err:
-        raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})", str(path)) from None
-    if not text.strip():
-        raise KinematikaError("syntax", "the file is empty", str(path))
-    return design(parse(parse_text(text, kind, str(path))))
 
 
 def _schema_error(err: ValidationError) -> KinematikaError:

@@ -40,8 +40,9 @@ def cam(
     _figure_path(drawing, "--drawing")
 
     def compute() -> dict:
-        from ..cams import CamAnalysis, load
-        from ..cams import export, plot as figures
+        from ..cams import CamAnalysis, export
+        from ..draw import cam_plots as figures
+        from ..model.files import load_cam as load
 
         targets = {opt: output_file(p, opt) for opt, p in
                    (("--csv", csv), ("--svg", svg), ("--dxf", dxf), ("--plot", plot), ("--drawing", drawing))

@@ -2,8 +2,9 @@
 centres and curvature circles (`draw`), its motion over a sweep (`animate`), sweep plots
 (`plot_sweep`), and Jupyter's drawings (`jupyter`).
 
-Every figure reads results (a `Solution`, a sweep's arrays); nothing here solves. Drawing
-uses matplotlib without a display (the Agg canvas): no window ever opens.
+Every figure reads results (a `Solution`, a sweep's arrays); given a model instead, `draw`
+and `animate` have it solved by the sweep layer (`sweep.posing`) first. Drawing uses
+matplotlib without a display (the Agg canvas): no window ever opens.
 """
 from __future__ import annotations
 
@@ -23,8 +24,8 @@ def draw(source: Any, path: Optional[Path | str] = None, options: Optional[DrawO
          symbolic: Optional[bool] = None, **choices: Any) -> Any:
     """The figure (a matplotlib `Figure`) of a model or `Solution` at its instant; written to
     `path` (.png, .svg, .pdf) when given. `choices` are `DrawOptions` fields."""
-    from ..api import solve
     from ..solution import Solution
+    from ..sweep.posing import solved as solve
     from .figure import render, save
     from .scene import build_scene
 

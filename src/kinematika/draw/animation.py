@@ -73,8 +73,9 @@ class Film:
     def of(cls, source: Any, joint: Optional[str] = None, by: Optional[float] = None,
            steps: Optional[int] = None, frames: int = 120, options: Optional[DrawOptions] = None,
            trace: Optional[list[str]] = None, skip_bad: bool = False) -> "Film":
-        from ..api import as_model, solve
+        from ..model.source import as_model
         from ..sweep import run_sweep
+        from ..sweep.posing import solved as solve
         from .figure import new_figure
         from .scene import build_scene
 

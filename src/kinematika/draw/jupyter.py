@@ -23,8 +23,8 @@ def solution_svg(sol: Any, options: Optional[DrawOptions] = None) -> str:
 
 def model_svg(model: Any, options: Optional[DrawOptions] = None) -> Optional[str]:
     """The drawing of a model: solved when it can be, else its geometry with the reason."""
-    from ..api import solve
     from ..engine.instant import instantiate
+    from ..sweep.posing import solved as solve
     from .figure import render, svg_text
     from .scene import build_scene
 

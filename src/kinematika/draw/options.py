@@ -39,7 +39,7 @@ class DrawOptions:
 
     def __post_init__(self) -> None:
         if self.lang is not None:
-            from ..explain.catalogue import known
+            from ..languages import known
 
             known(self.lang)            # one of the explanation's languages, else a usage error
 

@@ -18,8 +18,8 @@ from typing import Any
 from fluent.runtime import FluentBundle, FluentResource
 
 from ..errors import KinematikaError
+from ..languages import known
 
-LANGS = ("en", "es", "ca", "eu")
 LOCALES = Path(__file__).resolve().parent / "locales"
 VARIABLE = re.compile(r"\{\s*\$(\w+)")
 # letters whose Catalan name begins with a vowel sound: a, e, efa, hac, i, ela, ema, ena,
@@ -87,11 +87,3 @@ class Catalogue:
 def catalogue(lang: str) -> Catalogue:
     """The catalogue of `lang` (one of LANGS), read once."""
     return Catalogue(known(lang), (LOCALES / f"{lang}.ftl").read_text(encoding="utf-8"))
-
-
-def known(lang: str) -> str:
-    """`lang` when it is one of LANGS, else the one-line error naming `--lang`."""
-    if lang not in LANGS:
-        raise KinematikaError("schema", f"unknown language {lang!r} (languages: {', '.join(LANGS)})",
-                              "--lang")
-    return lang

@@ -63,7 +63,7 @@ class Study:
 @functools.lru_cache(maxsize=4)
 def evaluator(study: Study) -> Evaluator:
     """The study's prepared model, once per process (a worker keeps it between chunks)."""
-    from ..api import as_model
+    from ..model.source import as_model
 
     _heap_for_arrays()
     model = as_model(study.model, study.fmt)

@@ -173,24 +173,8 @@ class Mechanism:
     def to_model(self) -> Model:
         return build_model(self.tree)
 
-    def solve(self, symbolic: Optional[bool] = None, **options: Any):
-        """Solve the mechanism; `options` as `kinematika.solve`'s (set, move, assembly)."""
-        from ..api import solve
-
-        return solve(self.to_model(), symbolic, **options)
-
-    def assemblies(self) -> list:
-        """Every assembly at the drawn input (`kinematika assemblies`); `solve(assembly=N)`."""
-        from ..sweep.assemblies import assemblies
-
-        return assemblies(self.to_model())
-
-    def _repr_svg_(self) -> Optional[str]:  # Jupyter: a drawing when the draw view exists
-        try:
-            from ..draw.jupyter import model_svg
-        except ImportError:
-            return None
-        return model_svg(self.to_model())
+    # solve(), assemblies() and Jupyter's _repr_svg_ are registered by `kinematika.api`, which
+    # `import kinematika` makes available (the layers above the model's)
 
 
 def _loc(value: Any) -> Any:

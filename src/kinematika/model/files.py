@@ -383,3 +383,23 @@ def _unique_key_loader(yaml: Any, where: str) -> type:
 def load_model(path: str | Path) -> Model:
     """Read and check a model file."""
     return build_model(read_tree(path))
+
+
+def load_cam(path: str | Path) -> Any:
+    """Read, check and build a cam-design file (YAML, TOML or JSON; `cams.spec`), with the
+    same limits on untrusted files as a model's."""
+    from ..cams.spec import design, parse
+
+    path = Path(path)
+    kind = FORMATS.get(path.suffix.lower())
+    if kind is None:
+        raise KinematikaError("syntax", f"unknown file type {brief(path.suffix or '(none)', 20)}: a cam file ends "
+                              f"in {', '.join(FORMATS)}", str(path))
+    data = read_bytes(path, str(path))
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as err:
+        raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})", str(path)) from None
+    if not text.strip():
+        raise KinematikaError("syntax", "the file is empty", str(path))
+    return design(parse(parse_text(text, kind, str(path))))

@@ -185,7 +185,7 @@ def motion_classes(model: Model) -> list[tuple[str, str, list[str]]]:
 
 def _as_model(source: Any) -> Model:
     """The model to sweep: read, and posed where its file says (`move`)."""
-    from ..api import prepare
+    from .posing import prepare
 
     return prepare(source)
 

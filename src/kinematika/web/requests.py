@@ -74,7 +74,7 @@ def parse_body(endpoint: str, raw: bytes) -> Request:
 def _options(endpoint: str, body: dict) -> dict[str, Any]:
     out: dict[str, Any] = {}
     if "lang" in body:
-        from ..explain import LANGS
+        from ..languages import LANGS
 
         out["lang"] = _choice(body, "lang", tuple(LANGS), "en")
     if "symbolic" in body:

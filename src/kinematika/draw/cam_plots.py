@@ -15,9 +15,11 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from ..draw.lock import MATPLOTLIB
-from .analysis import CamAnalysis
-from .profile import PlateCam
+from ..cams.analysis import CamAnalysis
+from ..cams.profile import PlateCam
+from .lock import MATPLOTLIB
+
+
 
 FORMATS = ("png", "svg", "pdf")
 JUMP = "#d62728"

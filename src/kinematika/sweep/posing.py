@@ -1,0 +1,39 @@
+"""The model a command analyses, posed as asked: parameters given values (`set`), the
+assembly chosen (`assembly`), driven joints advanced (`move`, the file's own `move:` section
+first) — and that model solved. Posing moves the mechanism as a sweep does, so it lives in
+the sweep layer; every view (the command line, Python, the page, explanations, figures)
+comes here through `kinematika.api`."""
+from __future__ import annotations
+
+from typing import Any, Mapping, Optional
+
+from ..model.model import Model
+from ..model.overrides import with_parameters
+from ..model.source import ModelLike, as_model
+from ..solution import Solution, solve_model
+
+
+def prepare(source: ModelLike, *, fmt: Optional[str] = None,
+            set: Optional[Mapping[str, Any]] = None, move: Optional[Mapping[str, Any]] = None,
+            assembly: Optional[int] = None) -> Model:
+    """The model a command analyses: read (`as_model`), with parameters given values (`set`,
+    as `--set NAME=VALUE`), on the chosen assembly (`--assembly N`) and advanced along driven
+    joints (`move`, as `--move J=AMOUNT`)."""
+    model = with_parameters(as_model(source, fmt),
+                            {str(k): None if v is None else str(v) for k, v in (set or {}).items()})
+    if assembly is not None:
+        from .assemblies import with_assembly
+
+        model = with_assembly(model, assembly)
+    amounts = {**model.move, **(move or {})}
+    if amounts:
+        from .move import moved
+
+        model = moved(model, amounts)
+    return model
+
+
+def solved(source: ModelLike, symbolic: bool | None = None, **options: Any) -> Solution:
+    """`source` prepared (`options` as `prepare`'s) and solved: numerically, or exactly when
+    it has symbols (or `symbolic`)."""
+    return solve_model(prepare(source, **options), symbolic)
