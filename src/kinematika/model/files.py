@@ -23,6 +23,7 @@ from ..errors import KinematikaError
 from ..text import brief
 from .build import build_model
 from .model import Model
+import contextlib
 
 FORMATS = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
 
@@ -387,7 +388,8 @@ def load_model(path: str | Path) -> Model:
 
 def load_cam(path: str | Path) -> Any:
     """Read, check and build a cam-design file (YAML, TOML or JSON; `cams.spec`), with the
-    same limits on untrusted files as a model's."""
+    same limits on untrusted files as a model's; or a model file whose body carries a `cam:`
+    shape (its design, at the speed of the model's `omega` driver of that body)."""
     from ..cams.spec import design, parse
 
     path = Path(path)
@@ -402,4 +404,45 @@ def load_cam(path: str | Path) -> Any:
         raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})", str(path)) from None
     if not text.strip():
         raise KinematikaError("syntax", "the file is empty", str(path))
-    return design(parse(parse_text(text, kind, str(path))))
+    tree = parse_text(text, kind, str(path))
+    if isinstance(tree, dict) and "bodies" in tree:
+        return _model_cam(build_model(tree), str(path))
+    return design(parse(tree))
+
+
+def _model_cam(model: Model, where: str) -> Any:
+    """The first cam shape of a model, at the speed its body is driven with (when a number)."""
+    import dataclasses
+
+    from ..expressions import ExpressionError
+    from .model import CamShape
+
+    for body in model.bodies.values():
+        for shape in body.shapes:
+            if isinstance(shape, CamShape):
+                speed = shape.design.speed
+                for d in model.drivers:
+                    if d.kind == "omega" and d.body == body.name and d.relative_to in (None, model.frame):
+                        env = {n: p.value for n, p in model.parameters.items()}
+                        with contextlib.suppress(ExpressionError, TypeError, ValueError):
+                            speed = abs(float(_number(d.value, env)))
+                return dataclasses.replace(shape.design, speed=speed, title=model.name)
+    raise KinematikaError("schema", "this model has no cam: give a body a `cam:` shape", where)
+
+
+def _number(expr: Any, env: dict) -> float:
+    """An expression of the model evaluated with its parameters' values (numbers only)."""
+    import math
+
+    from ..algebra.backend import Numeric
+    from ..expressions import ExpressionError, evaluate
+
+    values: dict[str, Any] = {"pi": math.pi}
+    for _ in range(len(env) + 1):
+        for name, raw in env.items():
+            if name not in values and raw is not None:
+                try:
+                    values[name] = evaluate(raw, values, Numeric())
+                except (ExpressionError, TypeError, ValueError, ZeroDivisionError, OverflowError):
+                    continue
+    return float(evaluate(expr, values, Numeric()))
