@@ -41,6 +41,13 @@ class Solution:
         return self.solver.analysis.diagnosis.dof if self.solver.analysis else 0
 
     # the motion of bodies and points --------------------------------------------------------
+    def geometry(self, joint_id: str) -> Any:
+        """What joint `joint_id` is at this instant (`joints.JointGeometry`): its point, unit
+        directions and their normals, and the contact of a touching pair (`.contact`: its
+        point J, common normal n, radii of curvature). For example
+        ``sol.geometry("j3").contact.point`` is where a cam touches its follower."""
+        return self.solver.geos[joint_id]
+
     def state(self, body: str, relative_to: str | None = None) -> BodyState:
         """The motion of `body` seen from `relative_to` (default: the fixed frame)."""
         names = [body] if relative_to is None else [body, relative_to]

@@ -48,8 +48,15 @@ def pydantic_spec(tree):
 def test_the_plain_check_reads_every_example_as_pydantic_does(path):
     tree = read_tree(path)
     spec = shape.spec_of(tree)
+    if _has_curves(tree):           # curves and cams are pydantic's alone (model.shape)
+        assert spec is None
+        return
     assert spec is not None, "an example taken by pydantic, not by the plain check"
     assert plain(spec) == plain(schema.ModelSpec.model_validate(tree))
+
+
+def _has_curves(tree: dict) -> bool:
+    return any(isinstance(b, dict) and ({"curve", "cam"} & set(b)) for b in tree["bodies"].values())
 
 
 def test_the_records_have_schemas_fields_and_defaults():

@@ -11,15 +11,17 @@ from fluent.syntax import FluentParser, ast as ftl
 
 import kinematika.explain as explain_package
 from kinematika.explain.catalogue import LANGS, LOCALES, VARIABLE, catalogue
+from kinematika.joints import KINDS
+from kinematika.questions.centres import FIXED
 
 SOURCE = Path(explain_package.__file__).resolve().parent
 # keys built at run time from a name (f"kind.{step.kind}" ...): the families and their members
 FAMILIES = {
     "kind": ["input", "RRR", "RRP", "RPR", "PRP", "other"],
-    "joint": ["revolute", "prismatic", "slot", "wheel", "rolling", "gear", "weld", "spherical", "cylindrical"],
-    "shape": ["circle", "line", "disc", "plane"],
-    "cond": ["revolute", "prismatic", "slot", "wheel", "weld", "spherical", "cylindrical"],
-    "centre.joint": ["revolute", "rolling", "gear", "prismatic", "weld"],
+    "joint": list(KINDS),                                   # every kind of joint has its name
+    "shape": ["circle", "line", "disc", "plane", "curveshape", "camshape"],
+    "cond": [k.name for k in KINDS.values() if not k.rolls],  # rolling pairs are written out
+    "centre.joint": [k.name for k in KINDS.values() if k.centre in FIXED],
     "ask": ["icr", "axis", "pole", "curvature", "intrinsic"],
     "ans": ["point", "direction", "center", "tangent", "slide"],
     "centre.proportional": ["between", "outside"],

@@ -113,10 +113,24 @@ def _moving_shape(cv: Canvas, body: BodyView, s: ShapeView) -> None:
         if seg is not None:
             cv.add(Line2D(*np.array(seg).T, lw=2.2, color=body.colour, zorder=2, gid=gid), body.name)
             cv.board.avoid(*seg)
+    elif s.kind == "curve":
+        _moving_curve(cv, body, s, gid)
     elif s.vertices is not None:
         cv.add(Polygon(s.vertices, closed=True, fc=body.colour, ec=body.colour, alpha=0.3, lw=1.5,
                        zorder=1, gid=gid), body.name)
         cv.board.avoid(*s.vertices)
+
+
+def _moving_curve(cv: Canvas, body: BodyView, s: ShapeView, gid: str) -> None:
+    """A body's curve: a cam's profile filled, its pitch curve dash-dot, a curve (a slot's
+    path, a profile through points) as a line."""
+    if s.role == "pitch":
+        cv.add(Line2D(*s.vertices.T, lw=1.0, ls="-.", color=body.colour, zorder=2), body.name)
+        return
+    if s.closed and s.role == "profile":
+        cv.add(Polygon(s.vertices, closed=True, fc=body.colour, alpha=0.2, lw=0, zorder=1), body.name)
+    cv.add(Line2D(*s.vertices.T, lw=2.2, color=body.colour, zorder=3, gid=gid), body.name)
+    cv.board.avoid(*s.vertices[::8])
 
 
 def _line_span(cv: Canvas, body: BodyView, s: ShapeView):
@@ -172,6 +186,9 @@ def _ground_shape(cv: Canvas, s: ShapeView) -> None:
                       gid="ground:circle"))
         cv.add(Annulus(s.center, outer, width, fill=False, ec=GROUND, lw=0, hatch="////", zorder=1))
         cv.board.avoid(*_ring(s.center, s.radius))
+    elif s.kind == "curve":
+        cv.add(Line2D(*s.vertices.T, lw=1.8, color=GROUND, zorder=2, gid="ground:curve"))
+        cv.board.avoid(*s.vertices[::8])
     elif s.vertices is not None:
         cv.add(Polygon(s.vertices, closed=True, fc="#f0f0f0", ec="#9e9e9e", lw=1.0, zorder=0,
                        gid="ground:plane"))

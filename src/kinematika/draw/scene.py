@@ -15,7 +15,7 @@ from typing import Any, Optional
 import numpy as np
 
 from ..engine.instant import Instant
-from ..shapes import Circle, Disc, Line, Plane
+from ..shapes import Cam, Circle, Curve, Disc, Line, Plane
 from ..errors import KinematikaError
 from ..model.model import PointRef
 from .options import DrawOptions
@@ -31,13 +31,15 @@ Vec = np.ndarray
 class ShapeView:
     """A body's shape on the page: a circle, an infinite line, or a closed outline (3D)."""
 
-    kind: str                              # "circle", "line" or "outline"
+    kind: str                              # "circle", "line", "outline" (3D) or "curve"
     center: Optional[Vec] = None
     radius: float = 0.0
     through: Optional[Vec] = None
     direction: Optional[Vec] = None        # unit (line)
-    vertices: Optional[Vec] = None         # (n, 2) (outline)
-    role: str = "plain"                    # "gear": drawn as a pitch circle
+    vertices: Optional[Vec] = None         # (n, 2) (outline, curve)
+    role: str = "plain"                    # "gear": drawn as a pitch circle; a cam's "profile"
+                                           # and "pitch" curve
+    closed: bool = True                    # a curve that closes (a cam's profile)
     ring: bool = False                     # the outer circle of an internal contact
     hatch_towards: Optional[Vec] = None    # ground line: the side its material is on
     material_inside: bool = True           # ground circle: a drum (True) or a cavity (False)
@@ -261,7 +263,7 @@ def _bodies(inst: Instant, num: Numbers) -> dict[str, BodyView]:
         body = model.bodies[name]
         frame = name == model.frame
         points = {p: num.page(inst.points[p]) for p in body.points}
-        shapes = [_shape(s, num) for s in inst.shapes.get(name, [])]
+        shapes = [view for s in inst.shapes.get(name, []) for view in _shapes(s, num)]
         out[name] = BodyView(name, number, "#424242" if frame else body_colour(number), frame,
                              points, shapes)
     for j in model.joints:
@@ -280,6 +282,25 @@ def _passing(model: Any, j: Any) -> list[str]:
     if j.type in ("prismatic", "cylindrical"):
         return shared
     return []
+
+
+def _shapes(s: Any, num: Numbers) -> list[ShapeView]:
+    """A shape's views: one, or a cam's profile and its pitch curve (a roller's centre's path)."""
+    if isinstance(s, Cam):
+        out = [_curve(s.profile, num, "profile")]
+        if s.design.follower.contact.radius > 0:
+            out.append(_curve(s.pitch, num, "pitch"))
+        return out
+    if isinstance(s, Curve):
+        return [_curve(s, num, "curve")]
+    return [_shape(s, num)]
+
+
+def _curve(c: Curve, num: Numbers, role: str) -> ShapeView:
+    """A curve as a polyline of points (closed or not) on the page."""
+    closed = bool(getattr(c.curve, "closed", False))
+    pts = c.points(361 if closed else 200)
+    return ShapeView("curve", vertices=np.array([num.page(tuple(p)) for p in pts]), role=role, closed=closed)
 
 
 def _shape(s: Any, num: Numbers) -> ShapeView:

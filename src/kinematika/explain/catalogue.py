@@ -18,7 +18,9 @@ from typing import Any
 from fluent.runtime import FluentBundle, FluentResource
 
 from ..errors import KinematikaError
-from ..languages import known
+from ..languages import LANGS, known
+
+__all__ = ["LANGS", "LOCALES", "catalogue", "known"]
 
 LOCALES = Path(__file__).resolve().parent / "locales"
 VARIABLE = re.compile(r"\{\s*\$(\w+)")

@@ -14,6 +14,7 @@ from ..model.model import Joint, PointPair
 from .context import Ctx, alpha_sym, omega_sym, segment
 from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .group import group_blocks
+from .higher import higher_pair_steps
 from .order import Step
 from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
@@ -63,6 +64,10 @@ class PlanarSteps:
                    "PRP": self.prp}.get(step.kind)
         blocks = self.drivers(step)
         if step.kind == "other":
+            higher = higher_pair_steps(self, step)
+            if higher is not None:
+                self.used.update(step.joints)
+                return blocks + higher + self.carry(step)
             route = wheel_route(self.ctx, step.bodies, self.known, self.level)
             if route is None:
                 triad = triad_steps(self, step)

@@ -76,7 +76,8 @@ class JointKind:
     centre: ClassVar[str] = ""              # where it puts the relative instant centre of its two
                                             # bodies by itself: "pin" (at `at`), "contact" (the
                                             # contact point), "infinity" (normal to the sliding),
-                                            # "rest" (none: they move as one); "" when it does not
+                                            # "rest" (none: they move as one); "normal" (only a
+                                            # line: the common normal at the contact); "" none
     chain: ClassVar[str] = ""               # the lower pairs it is in a chain, read from a to b:
                                             # "R", "P", or "PR" for a pin in a slot (a slider
                                             # block between); names dyads (RRR, RRP, …)

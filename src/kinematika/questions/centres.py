@@ -30,11 +30,15 @@ class Centre:
         return self.value.get("point") is not None
 
 
+FIXED = ("pin", "contact", "infinity", "rest")     # a joint's own centre, found without Kennedy
+                                                   # ("normal": only a line through it)
+
+
 def direct_centre(sol: Solution, a: str, b: str) -> Optional[tuple[str, str]]:
     """(how the joint places it, joint id) when a joint between a and b places their centre
     by itself (its kind's `centre`: at its pin, its contact, at infinity, or none at rest)."""
     for j in sol.model.joints:
-        if {j.a, j.b} == {a, b} and j.kind.centre:
+        if {j.a, j.b} == {a, b} and j.kind.centre in FIXED:
             return j.kind.centre, j.id
     return None
 

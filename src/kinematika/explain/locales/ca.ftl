@@ -335,3 +335,17 @@ fig-drawn_at = Dibuixat amb { $values }.
 fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt (blau) acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, les velocitats relatives de les equacions anteriors (negre), l’una darrere l’altra.
 fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt (blau) acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors (negre: normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
 col-number = núm.
+
+# higher pairs (joints.contact, curved_slot, cam)
+shape-curveshape = corba
+shape-camshape = lleva
+joint-contact = contacte (parell superior)
+joint-curved_slot = passador en ranura corba
+joint-cam = lleva i seguidor
+cond-contact = enllaç { $joint }, contacte: { $a } i { $b } es mantenen en contacte; poden lliscar segons la tangent comuna.
+cond-curved_slot = enllaç { $joint }, passador { $point } en ranura corba: la seva velocitat relativa al sòlid amb ranura segueix la tangent de la ranura.
+cond-cam = enllaç { $joint }, lleva: el seguidor { $b } es manté en contacte amb la lleva { $a }.
+dir-tangent = tangent a { $point }
+dir-centre = cap al centre de curvatura { $point }
+higher-intro = El parell superior { $joint } s'escriu com el moviment de { $point } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l'acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
+higher-straight = El parell superior { $joint } s'escriu com el moviment de { $point } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).

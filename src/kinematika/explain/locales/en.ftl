@@ -200,3 +200,17 @@ fig-drawn_at = Drawn at { $values }.
 fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point (blue) ends at its image, lettered as the point (a for A); between the images, the relative velocities of the equations above (black), head to tail.
 fig-level_a = Acceleration polygon, to scale: from the pole o, the acceleration of each point (blue) ends at its image, lettered as the point (a for A); between the images, the terms of the equations above (black: normal and tangential, relative and Coriolis), head to tail.
 col-number = no.
+
+# higher pairs (joints.contact, curved_slot, cam)
+shape-curveshape = curve
+shape-camshape = cam
+joint-contact = contact (higher pair)
+joint-curved_slot = pin in a curved slot
+joint-cam = cam and follower
+cond-contact = joint { $joint }, contact: { $a } and { $b } keep touching; they may slide along the common tangent.
+cond-curved_slot = joint { $joint }, pin { $point } in a curved slot: its velocity relative to the slotted body is along the slot's tangent.
+cond-cam = joint { $joint }, cam: the follower { $b } keeps touching the cam { $a }.
+dir-tangent = tangent at { $point }
+dir-centre = towards the centre of curvature { $point }
+higher-intro = The higher pair { $joint } is written as the motion of { $point } along its path relative to { $holder } (a slot along the tangent, curved with radius { $radius }): the relative acceleration has a normal part v²/ρ towards the path's centre of curvature.
+higher-straight = The higher pair { $joint } is written as the motion of { $point } along a straight path relative to { $holder } (a slot along the tangent).

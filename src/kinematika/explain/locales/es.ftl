@@ -200,3 +200,17 @@ fig-drawn_at = Dibujado con { $values }.
 fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto (azul) acaba en su imagen, con la letra del punto (a para A); entre las imágenes, las velocidades relativas de las ecuaciones anteriores (negro), una tras otra.
 fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto (azul) acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores (negro: normales y tangenciales, relativos y de Coriolis), uno tras otro.
 col-number = n.º
+
+# higher pairs (joints.contact, curved_slot, cam)
+shape-curveshape = curva
+shape-camshape = leva
+joint-contact = contacto (par superior)
+joint-curved_slot = pasador en ranura curva
+joint-cam = leva y seguidor
+cond-contact = par { $joint }, contacto: { $a } y { $b } siguen en contacto; pueden deslizar según la tangente común.
+cond-curved_slot = par { $joint }, pasador { $point } en ranura curva: su velocidad relativa al sólido ranurado sigue la tangente de la ranura.
+cond-cam = par { $joint }, leva: el seguidor { $b } sigue en contacto con la leva { $a }.
+dir-tangent = tangente en { $point }
+dir-centre = hacia el centro de curvatura { $point }
+higher-intro = El par superior { $joint } se escribe como el movimiento de { $point } por su trayectoria relativa a { $holder } (una ranura según la tangente, curva de radio { $radius }): la aceleración relativa tiene una parte normal v²/ρ hacia el centro de curvatura de la trayectoria.
+higher-straight = El par superior { $joint } se escribe como el movimiento de { $point } por una trayectoria recta relativa a { $holder } (una ranura según la tangente).

@@ -203,3 +203,17 @@ fig-drawn_at = Balio hauekin marraztua: { $values }.
 fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura (urdinez) bere irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen abiadura erlatiboak (beltzez), bata bestearen ondoren.
 fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa (urdinez) bere irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak (beltzez: normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
 col-number = zk.
+
+# higher pairs (joints.contact, curved_slot, cam)
+shape-curveshape = kurba
+shape-camshape = espeka
+joint-contact = kontaktua (goi-mailako bikotea)
+joint-curved_slot = ziria arteka kurbatu batean
+joint-cam = espeka eta jarraitzailea
+cond-contact = { $joint } lotura, kontaktua: { $a } eta { $b } ukitzen jarraitzen dute; ukitzaile komunean irristatu daitezke.
+cond-curved_slot = { $joint } lotura, { $point } ziria arteka kurbatu batean: artekadun solidoarekiko abiadura artekaren ukitzailean dago.
+cond-cam = { $joint } lotura, espeka: { $b } jarraitzaileak { $a } espeka ukitzen jarraitzen du.
+dir-tangent = ukitzailea { $point } puntuan
+dir-centre = { $point } kurbadura-zentrorantz
+higher-intro = { $joint } goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko bere ibilbidean ({ $radius } erradioko arteka kurbatua, ukitzailearen norabidean): azelerazio erlatiboak v²/ρ osagai normala du ibilbidearen kurbadura-zentrorantz.
+higher-straight = { $joint } goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko ibilbide zuzen batean (arteka bat ukitzailearen norabidean).
