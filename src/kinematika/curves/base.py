@@ -141,7 +141,20 @@ class Curve(ABC):
         another branch of the distance (Newton as in `nearest`)."""
         a, b = self.domain
         width = (b - a) * span if np.isfinite(b - a) else max(1.0, abs(u)) * span * 32
-        return float(self.wrap(self._newton(np.asarray(p, dtype=float), float(u), u - width, u + width)))
+        p = np.asarray(p, dtype=float)
+        x = float(u)
+        for _ in range(8):                 # plain Newton from a close hint: two or three steps
+            r, d, dd = self.derivatives(x)
+            slope = float(np.dot(d, d) + np.dot(r - p, dd))
+            if slope <= 0:
+                break
+            step = float(np.dot(r - p, d)) / slope
+            x -= step
+            if abs(x - u) > width:
+                break
+            if abs(step) <= 1e-13 * max(1.0, abs(x)):
+                return float(self.wrap(x))
+        return float(self.wrap(self._newton(p, float(u), u - width, u + width)))
 
     def _newton(self, p: np.ndarray, u: float, lo: float, hi: float) -> float:
         """Safeguarded Newton on g(u) = (r − p)·r' inside [lo, hi] (bisection when a step

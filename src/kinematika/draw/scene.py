@@ -68,6 +68,7 @@ class JointView:
     axis: Optional[Vec] = None             # page image of a 3D axis (not unit)
     span: Optional[tuple[Vec, Vec]] = None  # a slot given by two points
     contact: Optional[Vec] = None
+    radius: float = 0.0                    # a cam follower's roller
 
 
 @dataclass
@@ -410,8 +411,9 @@ def _joint(j: Any, geo: Any, num: Numbers) -> JointView:
         view.axis = num.page(geo.axis)
     if geo.contact is not None:
         view.contact = num.page(geo.contact.point)
+    view.radius = geo.roller
     along = j.along
-    if j.type == "slot" and hasattr(along, "start"):
+    if j.kind.guides_point and hasattr(along, "start"):          # a slot given by two points
         pts = num.inst.points
         view.span = (num.page(pts[along.start]), num.page(pts[along.end]))
     return view

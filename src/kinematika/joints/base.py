@@ -48,7 +48,8 @@ class JointGeometry:
     along: Optional[tuple] = None           # unit; fixed in body a (b for a `wheel`)
     axis: Optional[tuple] = None            # unit; fixed in body a
     perps: list = field(default_factory=list)   # unit normals to `along` or `axis`
-    contact: Any = None                     # a rolling pair's `Contact`
+    contact: Any = None                     # a touching pair's contact (`Contact`, `Touch`)
+    roller: float = 0.0                     # a cam follower's roller radius (drawn about `at`)
 
 
 Rows = list[tuple[Any, str]]
@@ -129,6 +130,12 @@ class JointKind:
         return lambda q, dq: [positions.dot(positions.differences(q.point(b, p0), q.point(a, p0)),
                                             q.turn(a, geo.along)) - (dq if swept else 0.0)]
 
+    def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
+        """The joint's geometry at a sweep's new pose, when it must be found anew there (a
+        contact that moves along its outlines; `hint` what the sweep remembers of it); None:
+        carried by its bodies as drawn."""
+        return None
+
     def rate(self, geo: JointGeometry, lv: Any) -> Any:
         """The rate of the joint's coordinate (b relative to a), or its derivative at the
         acceleration level; only for a kind with a `coordinate`."""
@@ -157,6 +164,12 @@ class JointKind:
         """The error for a driver of this kind's rate, which it has not (`coordinate` None)."""
         return KinematikaError("schema", f"a {self.name} joint has no rate to drive; drive a "
                                "body's omega or a point's velocity", where)
+
+    # drawn -----------------------------------------------------------------------------------
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """How a figure draws it (`joints.symbols.Mark`s): `view` its place on the page (its
+        point, directions, contact), `ctx` the figure's (see `joints.symbols`)."""
+        return []
 
     # from Python ---------------------------------------------------------------------------
     def add(self, m: Any, a: str, b: str, id: Optional[str] = None, **fields: Any) -> str:

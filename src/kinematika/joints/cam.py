@@ -14,9 +14,12 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+import numpy as np
+
 from ..errors import KinematikaError
 from ..shapes import Cam as CamShape
 from ..shapes import Line
+from . import symbols
 from .base import JointGeometry, JointKind, Rows
 from .touching import Follow, Point, find_touch, touch_row
 
@@ -36,7 +39,7 @@ class Cam(JointKind):
     def conditions(self, dim: int) -> int:
         return 1
 
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
         geo = super().prepare(inst, joint)
         cams = [s for s in inst.shapes[joint.a] if isinstance(s, CamShape)]
         if not cams:
@@ -49,18 +52,35 @@ class Cam(JointKind):
             if not faces:
                 raise KinematikaError("schema", f"a flat-faced follower touches with its face: give {joint.b!r} "
                                       "a `line` (the face)", joint.where)
-            geo.contact = find_touch(inst, joint, [cam.profile], faces)
+            geo.contact = find_touch(inst, joint, [cam.profile], faces, near)
         else:
             if joint.at is None:
                 what = "roller's centre" if contact.radius > 0 else "knife edge"
                 raise KinematikaError("schema", f"a cam joint needs `at`: the follower's {what}", joint.where)
             curve = cam.pitch if contact.radius > 0 else cam.profile
-            geo.contact = find_touch(inst, joint, [curve], [Point(inst.points[joint.at], joint.at)])
+            geo.contact = find_touch(inst, joint, [curve], [Point(inst.points[joint.at], joint.at)], near)
+            geo.roller = float(contact.radius)
         return geo
+
+    def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
+        """Found anew at the pose, near the sweep's last contact on the curve."""
+        return self.prepare(inst, geo.joint, hint)
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
         j = geo.joint
         return [(touch_row(lv, j.a, j.b, geo.contact), f"the follower {j.b} keeps touching the cam {j.a}")]
+
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """The follower's roller (a circle about its centre `at`, moving with it) or knife
+        edge (a pin), and the contact point."""
+        out = symbols.contact_dot(view, ctx)
+        if view.at is None:
+            return out
+        if view.radius > 0:
+            roller = symbols.ring(np.asarray(view.at, dtype=float), view.radius)
+            return [symbols.Mark("polygon", roller, f"body:{view.b}", "white", 1.8, zorder=5,
+                                 gid=f"joint:{view.id}", moves_with=view.b), *symbols.pin(view, ctx, body=view.b), *out]
+        return [*symbols.pin(view, ctx, body=view.b), *out]
 
     def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
         """The follower's gap from the cam along the normal."""

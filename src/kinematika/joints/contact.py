@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from . import symbols
 from .base import JointGeometry, JointKind, Rows
 from .touching import Follow, find_touch, outlines, touch_row
 
@@ -31,15 +32,23 @@ class Contact(JointKind):
     def conditions(self, dim: int) -> int:
         return 1
 
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
         geo = super().prepare(inst, joint)
         geo.contact = find_touch(inst, joint, outlines(inst, joint, joint.a),
-                                 outlines(inst, joint, joint.b, joint.at))
+                                 outlines(inst, joint, joint.b, joint.at), near)
         return geo
+
+    def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
+        """Found anew at the pose, near the sweep's last contact on the curve."""
+        return self.prepare(inst, geo.joint, hint)
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
         j = geo.joint
         return [(touch_row(lv, j.a, j.b, geo.contact), f"{j.b} keeps touching {j.a}")]
+
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """The contact point (a still figure only)."""
+        return symbols.contact_dot(view, ctx)
 
     def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
         """The gap between the outlines along the normal (0 while they touch)."""

@@ -19,6 +19,7 @@ from typing import Any, Optional
 from ..algebra.vectors import dot, sub
 from ..errors import KinematikaError
 from ..shapes import Circle, Curve
+from . import symbols
 from .base import JointGeometry, JointKind, Rows
 from .touching import Follow, Point, find_touch, touch_row
 
@@ -41,20 +42,30 @@ class CurvedSlot(JointKind):
     def conditions(self, dim: int) -> int:
         return 1
 
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
         geo = super().prepare(inst, joint)
         curves = [s for s in inst.shapes[joint.a] if isinstance(s, (Circle, Curve))]
         if not curves:
             raise KinematikaError("schema", f"a curved slot is cut along a circle or curve of {joint.a!r}: "
                                   "give that body one", joint.where)
-        geo.contact = find_touch(inst, joint, curves, [Point(inst.points[joint.at], joint.at)])
+        geo.contact = find_touch(inst, joint, curves, [Point(inst.points[joint.at], joint.at)], near)
         n = geo.contact.normal               # a circle's: outward; a curve's: its own normal
         geo.along = (-n[1], n[0]) if isinstance(geo.contact.outline_a, Circle) else (n[1], -n[0])
         return geo
 
+    def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
+        """Found anew at the pose, near the sweep's last contact on the curve."""
+        return self.prepare(inst, geo.joint, hint)
+
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
         j = geo.joint
         return [(touch_row(lv, j.a, j.b, geo.contact), f"{j.at}@{j.b} stays in the curved slot of {j.a}")]
+
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """The pin of the second body (the slot's curve is drawn as the first body's shape)."""
+        if view.at is None:
+            return []
+        return symbols.pin(view, ctx, body=None if view.b == ctx.frame else view.b)
 
     def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
         """The pin's distance from the slot's curve along its normal."""

@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import Any, Optional
 
 from ..errors import KinematikaError
+from . import symbols
 from .base import JointGeometry, JointKind, Rows
 from .derivatives import sliding, turning
 from .positions import across, axis_kept
@@ -45,6 +46,10 @@ class Cylindrical(JointKind):
         """The axis kept, the offset across it kept."""
         a, b = geo.joint.a, geo.joint.b
         return lambda q, _: axis_kept(q, a, b, geo.axis, geo.perps) + across(q, a, b, geo.at, geo.perps)
+
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """A block on its guide, as a prismatic pair."""
+        return symbols.block_on_guide(view, ctx)
 
     def no_rate(self, where: str) -> KinematikaError:
         return KinematikaError("schema", "a cylindrical joint has two rates (turning and sliding): drive "

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import same_rotation, sliding
 from .positions import across
@@ -52,6 +53,10 @@ class Prismatic(JointKind):
         a, b = geo.joint.a, geo.joint.b
         p0 = geo.at if geo.at is not None else ref
         return lambda q, _: q.rotation_error(a, b) + across(q, a, b, p0, geo.perps)
+
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """A block on its guide (a fixed guide hatched)."""
+        return symbols.block_on_guide(view, ctx)
 
     def rate(self, geo: JointGeometry, lv: Any) -> Any:
         """(v_Qb − v_Qa)·u along the guide u (its derivative with the Coriolis term)."""

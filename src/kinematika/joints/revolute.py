@@ -10,6 +10,9 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+import numpy as np
+
+from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident, turning
 from .positions import axis_kept, coincide
@@ -64,6 +67,17 @@ class Revolute(JointKind):
         if sp.dim == 2:
             return sp.rot_sub(lv.omega(j.b), lv.omega(j.a))
         return turning(lv, j.a, j.b, geo.axis)
+
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """A pin; on a fixed pivot's triangle when the frame is one of its bodies; its axis (3D)."""
+        if view.at is None:
+            return []
+        out = symbols.support(view.at, ctx) if ctx.frame in (view.a, view.b) else []
+        if view.axis is not None and np.linalg.norm(view.axis) > 1e-6:
+            half = 0.14 * ctx.size * np.asarray(view.axis, dtype=float)
+            out.append(symbols.Mark("line", np.array([view.at - half, view.at + half]), width=1.0, dash=True,
+                                    moves_with=symbols.mover(view, ctx)))
+        return out + symbols.pin(view, ctx)
 
     def add(self, m: Any, a: str, b: str, at: str, axis: Any = None, id: Optional[str] = None) -> str:
         """A pin between `a` and `b` at point `at` (about `axis` in 3D): `m.revolute("ground", "crank", at="O")`."""

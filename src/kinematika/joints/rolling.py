@@ -8,16 +8,16 @@ a_J(b) − a_J(a) = ω_rel × (v_J(a) − J̇), J̇ the velocity of the geometri
 """
 from __future__ import annotations
 
-from typing import Any, Optional
-
 import math
+from typing import Any, Optional
 
 from ..algebra.vectors import sub
 from ..shapes import Circle
+from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
-from .rolling_contact import drawn_pair, find_contact
 from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
+from .rolling_contact import drawn_pair, find_contact
 
 
 class Rolling(JointKind):
@@ -49,6 +49,10 @@ class Rolling(JointKind):
             rolling_velocity = sub(lv.v(j.a, c.point), c.jdot(lv.motion))
             diff = sub(diff, sp.cross(w_rel, rolling_velocity))
         return [(x, f"no slip at the contact of {j.a} and {j.b} ({AXES[i]})") for i, x in enumerate(diff)]
+
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """The contact point (a still figure only: it is no body's point)."""
+        return symbols.contact_dot(view, ctx)
 
     def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
         """Planar circles and lines: the contact kept (normal) and the arcs rolled equal

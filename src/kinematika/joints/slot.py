@@ -10,6 +10,9 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+import numpy as np
+
+from . import symbols
 from .base import JointGeometry, JointKind, Rows, off_line
 from .derivatives import sliding
 from .positions import across
@@ -45,6 +48,26 @@ class Slot(JointKind):
         """The pin's offset across the slot's line."""
         a, b = geo.joint.a, geo.joint.b
         return lambda q, _: across(q, a, b, geo.at, geo.perps)
+
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """The slot of the first body (a rounded outline along its line) and the pin in it."""
+        if view.at is None or view.along is None:
+            return []
+        at, along = np.asarray(view.at, dtype=float), np.asarray(view.along, dtype=float)
+        half = symbols.SLOT_WIDTH * ctx.size / 2
+        if view.span is not None:
+            p, q = (np.asarray(x, dtype=float) for x in view.span)
+            d = symbols.unit(q - p)
+            p, q = p - 2 * half * d, q + 2 * half * d
+            if float((at - p) @ d) < 0 or float((at - q) @ d) > 0:   # pin beyond the given span
+                ts = [float((x - p) @ d) for x in (p, q, at)]
+                p, q = p + (min(ts) - 2 * half) * d, p + (max(ts) + 2 * half) * d
+        else:
+            p, q = at - 0.15 * ctx.size * along, at + 0.15 * ctx.size * along
+        colour = "ground" if view.a == ctx.frame else f"body:{view.a}"
+        outline = symbols.Mark("polygon", symbols.stadium(p, q, half), colour, "white", 2.0, zorder=3,
+                               gid=f"slot:{view.id}", moves_with=None if view.a == ctx.frame else view.a)
+        return [outline, *symbols.pin(view, ctx, body=None if view.b == ctx.frame else view.b)]
 
     def rate(self, geo: JointGeometry, lv: Any) -> Any:
         """(v_Pb − v_Pa)·u along the slot u (its derivative with the Coriolis term)."""

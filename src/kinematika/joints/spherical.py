@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident
 from .positions import coincide
@@ -31,6 +32,13 @@ class Spherical(JointKind):
         j = geo.joint
         return [(c, f"{j.at}@{j.b} moves with {j.at}@{j.a} ({AXES[i]})")
                 for i, c in enumerate(coincident(lv, j.a, j.b, geo.at))]
+
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """A pin with a dot (a ball), on a fixed pivot when the frame is one of its bodies."""
+        if view.at is None:
+            return []
+        out = symbols.support(view.at, ctx) if ctx.frame in (view.a, view.b) else []
+        return out + symbols.pin(view, ctx, centre_dot=True)
 
     def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
         """P_b − P_a at the ball."""

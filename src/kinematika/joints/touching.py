@@ -141,9 +141,10 @@ def outlines(inst: Any, joint: Any, body: str, point: Optional[str] = None) -> l
     return out
 
 
-def find_touch(inst: Any, joint: Any, first: list, second: list) -> Touch:
+def find_touch(inst: Any, joint: Any, first: list, second: list, near: Optional[float] = None) -> Touch:
     """The touching pair of outlines of the joint's two bodies (the one with the smallest
-    gap), checked to touch: else a `geometry` error with the gap."""
+    gap), checked to touch: else a `geometry` error with the gap. `near`: a curve's parameter
+    close to the contact (a sweep's previous one), which spares the search along the curve."""
     if not first or not second:
         missing = joint.a if not first else joint.b
         raise KinematikaError("schema", f"a {joint.kind.name} joint needs an outline on both bodies: give "
@@ -151,7 +152,7 @@ def find_touch(inst: Any, joint: Any, first: list, second: list) -> Touch:
     candidates = []
     for oa in first:
         for ob in second:
-            made = _pair(inst, oa, ob)
+            made = _pair(inst, oa, ob, near)
             if made is not None:
                 candidates.append(made)
     if not candidates:
@@ -165,7 +166,7 @@ def find_touch(inst: Any, joint: Any, first: list, second: list) -> Touch:
     return touch
 
 
-def _pair(inst: Any, oa: Any, ob: Any) -> Optional[Touch]:
+def _pair(inst: Any, oa: Any, ob: Any, near: Optional[float] = None) -> Optional[Touch]:
     """The contact of outline oa (body a) and ob (body b), or None if they cannot touch."""
     if isinstance(oa, (Circle, Line)) and isinstance(ob, Point):
         return _point_exact(inst, oa, ob)
@@ -176,9 +177,9 @@ def _pair(inst: Any, oa: Any, ob: Any) -> Optional[Touch]:
     if isinstance(oa, Line) and isinstance(ob, Circle):
         return _circle_line(inst, oa, ob)
     if isinstance(oa, Curve):
-        return _on_curve(inst, oa, ob)
+        return _on_curve(inst, oa, ob, near)
     if isinstance(ob, Curve) and not isinstance(oa, Point):
-        return _flip(_on_curve(inst, ob, oa))
+        return _flip(_on_curve(inst, ob, oa, near))
     return None
 
 
@@ -233,17 +234,17 @@ def _circle_line(inst: Any, ln: Line, c: Circle) -> Touch:
     return Touch(sub(c.center, scale(c.radius, n)), n, None, c.radius, gap, ln, c, kind="circle-line")
 
 
-def _on_curve(inst: Any, curve: Curve, ob: Any) -> Optional[Touch]:
+def _on_curve(inst: Any, curve: Curve, ob: Any, near: Optional[float] = None) -> Optional[Touch]:
     """b's point, circle, line or curve touching a's curve (numeric)."""
     if isinstance(ob, Point):
         p = _floats(inst, ob.at)
-        u = curve.nearest(p)
+        u = curve.nearest(p, near)
         n = curve.normal(u)
         gap = float(np.dot(p - curve.point(u), n))
         return _curve_touch(curve, u, 1.0, tuple(p), 0.0, gap, ob, "point-curve")
     if isinstance(ob, Circle):
         c = _floats(inst, ob.center)
-        u = curve.nearest(c)
+        u = curve.nearest(c, near)
         d = float(np.dot(c - curve.point(u), curve.normal(u)))
         side = 1.0 if d >= 0 else -1.0
         r = float(inst.num(ob.radius))

@@ -10,7 +10,10 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+import numpy as np
+
 from ..algebra.vectors import dot, sub
+from . import symbols
 from .base import JointGeometry, JointKind, Rows
 from .derivatives import coincident
 
@@ -38,6 +41,15 @@ class Wheel(JointKind):
             v_rel = sub(lv.v(j.b, geo.at), lv.v(j.a, geo.at))
             row = row - dot(sp.cross(lv.w(j.a), v_rel), n) + dot(v_rel, sp.cross(lv.w(j.b), n))
         return [(row, f"{j.at}@{j.b} has no sideways velocity relative to {j.a}")]
+
+    def symbol(self, view: Any, ctx: Any) -> list:
+        """A knife edge seen from above: a narrow dark wheel along its rolling direction."""
+        if view.at is None or view.along is None:
+            return []
+        wheel = symbols.rectangle(np.asarray(view.at, dtype=float), np.asarray(view.along, dtype=float),
+                                  0.10 * ctx.size, 0.03 * ctx.size)
+        return [symbols.Mark("polygon", wheel, "ink", "ink", 1.0, zorder=5, gid=f"joint:{view.id}",
+                             moves_with=symbols.mover(view, ctx))]
 
     def add(self, m: Any, a: str, b: str, at: str, along: Any, id: Optional[str] = None) -> str:
         """A knife edge: point `at` of `b` moves relative to `a` only along `along`, fixed in `b`."""

@@ -222,6 +222,5 @@ def moved_geometry(geo: JointGeometry, poses: Poses, inst: Instant) -> JointGeom
     out.perps = [poses.turn(owner, p) for p in geo.perps]
     if j.kind.rolls:
         out.contact = find_contact(inst, replace(j, at=None))
-    elif geo.contact is not None:                # a sliding contact: found anew where it has moved
-        return j.kind.prepare(inst, j)
-    return out
+    found = j.kind.moved(geo, inst, poses.aux.get(j.id))   # a contact found anew where it has moved
+    return found if found is not None else out

@@ -1,0 +1,187 @@
+"""How joints are drawn: each kind's `symbol` gives marks — polygons, lines and dots in the
+model's (page) coordinates, with their colours by role — that every figure paints as they
+are: matplotlib (`draw.joints`) and the page (`web/static/js/figure.js`) alike, so that no
+view redraws a joint symbol of its own.
+
+A symbol is fixed in the body it belongs to, so that an animation moves it with that body:
+a slider's block with the slider, its guide with the guiding body; a pin with the moving
+body of the pair (`moves_with`). Sizes are fractions of the drawing's size, so a figure
+reads the same whatever the model's units.
+
+The context a symbol is drawn in (duck-typed, given by the figure): `size` (the drawing's
+size), `frame` (the fixed body), `still` (a still figure, not an animation's frame),
+`centroid()` (of the moving bodies' points: "away from the mechanism"), `points(body)`
+(its points on the page), `clip(p, d, inset)` (the part of the line through p along d inside
+the view, less `inset`, or None).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Optional
+
+import numpy as np
+
+Vec = np.ndarray
+
+PIN_SIZE = 7.5              # marker size of a revolute pin, points
+SUPPORT = 0.045             # size of a fixed-pivot symbol (of the drawing's size)
+BLOCK = (0.11, 0.06)        # slider block: length and height
+SLOT_WIDTH = 0.035
+HATCH_BAND = 0.03
+
+
+@dataclass
+class Mark:
+    """One drawn primitive of a symbol, in page coordinates.
+
+    `colour` and `fill` are roles: "ink", "ground", "white", "none", or "body:NAME" (that
+    body's colour). `avoid` is how strongly labels keep off it (0: not at all), `radius`
+    how far around its points (points of the page)."""
+
+    kind: str                           # "polygon", "line" or "dot"
+    points: Vec                         # (n, 2)
+    colour: str = "ink"
+    fill: str = "none"
+    width: float = 1.3                  # line width, points
+    size: float = 0.0                   # a dot's diameter, points
+    hatch: bool = False                 # the frame's hatching
+    dash: bool = False                  # dash-dot (an axis)
+    zorder: int = 3
+    moves_with: Optional[str] = None    # the body that carries it (None: fixed)
+    gid: str = ""
+    avoid: float = 1.0
+    radius: float = 0.0
+
+    def as_json(self) -> dict:
+        """The mark as the page receives it."""
+        return {"kind": self.kind, "points": self.points.tolist(), "colour": self.colour, "fill": self.fill,
+                "width": self.width, "size": self.size, "hatch": self.hatch, "dash": self.dash,
+                "zorder": self.zorder, "body": self.moves_with, "id": self.gid}
+
+
+# shapes of symbols -------------------------------------------------------------------------
+def unit(v: Vec) -> Vec:
+    n = float(np.linalg.norm(v))
+    return v / n if n > 0 else v
+
+
+def perpendicular(v: Vec) -> Vec:
+    return np.array([-v[1], v[0]])
+
+
+def rectangle(centre: Vec, along: Vec, length: float, height: float) -> Vec:
+    """The corners of a rectangle centred at `centre`, its length along the unit `along`."""
+    n = np.array([-along[1], along[0]])
+    hl, hh = along * length / 2, n * height / 2
+    return np.array([centre - hl - hh, centre + hl - hh, centre + hl + hh, centre - hl + hh])
+
+
+def stadium(p: Vec, q: Vec, half_width: float) -> Vec:
+    """The outline of a slot from p to q with rounded ends of radius `half_width`."""
+    d = q - p
+    base = math.atan2(d[1], d[0])
+    ends = []
+    for centre, start in ((q, base - math.pi / 2), (p, base + math.pi / 2)):
+        t = np.linspace(start, start + math.pi, 19)
+        ends.append(centre + half_width * np.column_stack([np.cos(t), np.sin(t)]))
+    return np.vstack(ends + [ends[0][:1]])
+
+
+def ring(centre: Vec, radius: float, n: int = 61) -> Vec:
+    """A circle as a closed polygon."""
+    t = np.linspace(0, 2 * math.pi, n)
+    return centre + radius * np.column_stack([np.cos(t), np.sin(t)])
+
+
+# shared symbols ----------------------------------------------------------------------------
+def mover(view: Any, ctx: Any) -> Optional[str]:
+    """The body a symbol at the joint moves with: the second body unless it is the frame."""
+    if view.b != ctx.frame:
+        return view.b
+    return view.a if view.a != ctx.frame else None
+
+
+def pin(view: Any, ctx: Any, centre_dot: bool = False, body: Any = "") -> list[Mark]:
+    """A pin at the joint, moving with `body` (by default the pair's moving body)."""
+    p = np.asarray(view.at, dtype=float)[None, :]
+    body = mover(view, ctx) if body == "" else body
+    out = [Mark("dot", p, "ink", "white", 1.6, PIN_SIZE, zorder=6, moves_with=body, gid=f"joint:{view.id}",
+                avoid=2.0, radius=4.0)]
+    if centre_dot:
+        out.append(Mark("dot", p, "ink", "ink", 0, 2.5, zorder=7, moves_with=body, avoid=0))
+    return out
+
+
+def support(p: Vec, ctx: Any) -> list[Mark]:
+    """A fixed pivot: a triangle from the pin to a hatched base, below the pin (in a planar
+    model, above it when the pin is clearly above the rest of the mechanism: it hangs)."""
+    p = np.asarray(p, dtype=float)
+    h = SUPPORT * ctx.size
+    d = p - ctx.centroid()
+    hanging = ctx.dim == 2 and d[1] > 0.3 * np.linalg.norm(d) and d[1] > 1e-9
+    down = np.array([0.0, 1.0]) if hanging else np.array([0.0, -1.0])     # 3D: the vertical
+    side = np.array([1.0, 0.0])
+    base = p + down * h
+    tri = np.array([p, base - 0.75 * h * side, base + 0.75 * h * side])
+    band = 0.55 * h
+    return [Mark("polygon", tri, "ground", "#e0e0e0", 1.3, zorder=2, gid="ground:pivot"),
+            Mark("line", np.array([base - h * side, base + h * side]), "ground", width=1.8, zorder=2),
+            Mark("polygon", np.array([base - h * side, base + h * side, base + h * side + band * down,
+                                      base - h * side + band * down]), "ground", width=0, hatch=True, zorder=1)]
+
+
+def hatched_edge(p: Vec, q: Vec, side: Vec, ctx: Any, gid: str) -> list[Mark]:
+    """A fixed edge from p to q, hatched on `side` (where the frame's material is)."""
+    band = HATCH_BAND * ctx.size
+    return [Mark("line", np.array([p, q]), "ground", width=1.8, zorder=2, gid=gid),
+            Mark("polygon", np.array([p, q, q + band * side, p + band * side]), "ground", width=0,
+                 hatch=True, zorder=1, avoid=0.7)]
+
+
+def block_on_guide(view: Any, ctx: Any) -> list[Mark]:
+    """A block (second body) on its guide (first body); a fixed guide is hatched."""
+    along = view.along if view.along is not None else (unit(view.axis) if view.axis is not None else None)
+    centre = slider_centre(view, ctx)
+    if along is None or centre is None:
+        return []
+    length, height = (f * ctx.size for f in BLOCK)
+    out = guide(view.a, centre, along, height, ctx)
+    block = rectangle(centre, along, length, height)
+    fill = f"body:{view.b}" if view.b != ctx.frame else "ground"
+    out.append(Mark("polygon", block, "ink", fill, 1.3, zorder=4, gid=f"joint:{view.id}",
+                    moves_with=mover(view, ctx) if view.b != ctx.frame else None))
+    return out
+
+
+def slider_centre(view: Any, ctx: Any) -> Optional[Vec]:
+    if view.at is not None:
+        return np.asarray(view.at, dtype=float)
+    for name in (view.b, view.a):
+        pts = ctx.points(name)
+        if len(pts) and name != ctx.frame:
+            return np.mean(pts, axis=0)
+    return None
+
+
+def guide(body: str, centre: Vec, along: Vec, height: float, ctx: Any) -> list[Mark]:
+    """The guide a block slides on: the frame's hatched edge beside the block, or a bar of
+    the guiding body over its points."""
+    if body == ctx.frame:
+        n = perpendicular(along)
+        side = n if float(n @ (centre - ctx.centroid())) > 1e-12 * ctx.size else -n
+        seg = ctx.clip(centre + side * height / 2, along, HATCH_BAND * ctx.size)
+        return [] if seg is None else hatched_edge(seg[0], seg[1], side, ctx, "ground:guide")
+    pts = list(ctx.points(body)) + [centre]
+    ts = [float((p - centre) @ along) for p in pts]
+    margin = 0.12 * ctx.size
+    seg = np.array([centre + (min(ts) - margin) * along, centre + (max(ts) + margin) * along])
+    return [Mark("line", seg, f"body:{body}", width=3.0, zorder=3, moves_with=body)]
+
+
+def contact_dot(view: Any, ctx: Any) -> list[Mark]:
+    """The contact point of a touching pair (a still figure only: it is no body's point)."""
+    if view.contact is None or not ctx.still:
+        return []
+    return [Mark("dot", np.asarray(view.contact, dtype=float)[None, :], "ink", "ink", 0, 3.5, zorder=6,
+                 gid=f"joint:{view.id}")]
