@@ -13,38 +13,41 @@ from matplotlib.patches import Polygon
 from ..joints import kind as joint_kind
 from ..joints.symbols import Mark
 from .canvas import Canvas
-from .geometry import clip_line
+from .geometry import Box, clip_line
+from .scene import Scene
 from .style import GROUND, INK
 
 
 class SymbolContext:
-    """What a joint's symbol needs of the figure (see `joints.symbols`)."""
+    """What a joint's symbol needs of the figure (see `joints.symbols`): the scene, the view
+    infinite lines stop in, and whether it is a still figure (not an animation's frame)."""
 
-    def __init__(self, cv: Canvas) -> None:
-        self.cv = cv
-        self.size = cv.size
-        self.frame = cv.scene.frame.name
-        self.still = cv.placement is None
-        self.dim = cv.scene.dim
+    def __init__(self, scene: Scene, view: Box, still: bool = True) -> None:
+        self.scene, self.view, self.still = scene, view, still
+        self.size = scene.size
+        self.frame = scene.frame.name
+        self.dim = scene.dim
 
     def centroid(self) -> np.ndarray:
-        return self.cv.moving_centroid()
+        """The centroid of the moving bodies' points (where "away from the mechanism" starts)."""
+        pts = [p for b in self.scene.bodies.values() if not b.frame for p in b.points.values()]
+        return np.mean(pts, axis=0) if pts else self.view.centre
 
     def points(self, body: str) -> list:
-        return list(self.cv.scene.bodies[body].points.values())
+        return list(self.scene.bodies[body].points.values())
 
     def clip(self, p: np.ndarray, d: np.ndarray, inset: float) -> Optional[tuple]:
-        return clip_line(p, d, self.cv.view.grow(-inset))
+        return clip_line(p, d, self.view.grow(-inset))
 
 
-def scene_marks(cv: Canvas) -> list[Mark]:
-    """Every joint's marks on this figure."""
-    ctx = SymbolContext(cv)
-    return [m for j in cv.scene.joints for m in joint_kind(j.type).symbol(j, ctx)]
+def scene_symbols(scene: Scene, view: Box, still: bool = True) -> list[Mark]:
+    """Every joint's marks on a figure of `scene` showing `view`."""
+    ctx = SymbolContext(scene, view, still)
+    return [m for j in scene.joints for m in joint_kind(j.type).symbol(j, ctx)]
 
 
 def paint_joints(cv: Canvas) -> None:
-    for mark in scene_marks(cv):
+    for mark in scene_symbols(cv.scene, cv.view, cv.placement is None):
         paint_mark(cv, mark)
 
 

@@ -140,7 +140,7 @@ def _normals(scene: Scene) -> None:
     the normal to the wheel's plane (to the slot) at the joint: the centre lies on it. Two
     wheels on one axle give one line."""
     for j in scene.joints:
-        if j.type not in ("wheel", "slot") or j.at is None or j.along is None:
+        if j.kind.centre != "normal" or j.at is None or j.along is None:
             continue
         mark = next((m for m in scene.marks if m.kind == "icr" and not m.rest
                      and set(m.pair) == {j.a, j.b}), None)
@@ -168,7 +168,7 @@ def _radii(scene: Scene, sol: Any, num: Numbers) -> None:
             continue
         centre = num.page(c.value["point"])
         for j in scene.joints:
-            if j.type != "revolute" or j.at is None or not set(c.pair) & {j.a, j.b} - {sol.model.frame}:
+            if not j.kind.pins or j.at is None or not set(c.pair) & {j.a, j.b} - {sol.model.frame}:
                 continue
             d = centre - j.at
             if np.linalg.norm(d) <= 1e-9 * scene.size:

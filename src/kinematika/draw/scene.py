@@ -17,6 +17,7 @@ import numpy as np
 from ..engine.instant import Instant
 from ..shapes import Cam, Circle, Curve, Disc, Line, Plane
 from ..errors import KinematikaError
+from ..joints import kind as joint_kind
 from ..model.model import PointRef
 from .options import DrawOptions
 from .projection import Projection, projection
@@ -59,6 +60,8 @@ class BodyView:
 
 @dataclass
 class JointView:
+    """A joint on the page: its place, directions and contact (what its kind draws)."""
+
     id: str
     type: str
     a: str
@@ -69,6 +72,11 @@ class JointView:
     span: Optional[tuple[Vec, Vec]] = None  # a slot given by two points
     contact: Optional[Vec] = None
     radius: float = 0.0                    # a cam follower's roller
+
+    @property
+    def kind(self) -> Any:
+        """What the joint is (`kinematika.joints`)."""
+        return joint_kind(self.type)
 
 
 @dataclass
@@ -278,9 +286,9 @@ def _passing(model: Any, j: Any) -> list[str]:
     sliding along it (the quick-return's A on the rocker): at this instant a material point
     of the guide there, but not the pin, which an animation would leave behind."""
     shared = [p for p in model.bodies[j.b].points if p in model.bodies[j.a].points]
-    if j.type == "slot":
+    if j.kind.slides and j.kind.guides_point:              # a pin in a slot: the pin's point
         return [p for p in shared if p == j.at]
-    if j.type in ("prismatic", "cylindrical"):
+    if j.kind.slides:                                      # a guide: every shared point
         return shared
     return []
 
@@ -420,10 +428,10 @@ def _joint(j: Any, geo: Any, num: Numbers) -> JointView:
 
 
 def _contacts(model: Any, geos: dict, num: Numbers):
-    """(joint, contact point on the page, contact kind) of each rolling or gear joint."""
+    """(joint, contact point on the page, contact kind) of each joint that rolls."""
     for j in model.joints:
         geo = geos.get(j.id)
-        if j.type in ("rolling", "gear") and geo is not None and geo.contact is not None:
+        if j.kind.rolls and geo is not None and geo.contact is not None:
             yield j, num.page(geo.contact.point), geo.contact.kind
 
 
@@ -453,7 +461,7 @@ def _mark_gears(bodies: dict[str, BodyView], model: Any, geos: dict, num: Number
             shape = _nearest_shape(bodies[name].shapes, contact)
             if shape is not None and shape.kind == "circle":
                 circles.append(shape)
-                if j.type == "gear":
+                if j.kind.pitch:
                     shape.role = "gear"
         if kind == "internal" and len(circles) == 2:
             outer = max(circles, key=lambda c: c.radius)

@@ -54,7 +54,7 @@ def _carrier(scene: Any, model: Any, name: str) -> bool:
                for s in other.shapes if s.kind == "circle" and not s.ring]
     at_centres = sum(any(np.linalg.norm(p - c) <= 1e-9 * scene.size for c in centres)
                      for p in body.points.values())
-    wheels = sum(j.type == "wheel" and name in (j.a, j.b) for j in model.joints)
+    wheels = sum(j.kind.along_in == "b" and name in (j.a, j.b) for j in model.joints)   # knife edges
     return at_centres + wheels >= 2
 
 
@@ -137,7 +137,7 @@ def _hooke(model: Any, xyz: dict, geos: dict, num: Any) -> Optional[dict]:
     point O by two revolute joints with perpendicular axes to two shafts, each shaft turning
     in a bearing at O. Each shaft is a bar along its bearing ending in a fork (yoke) whose
     prongs hold the cross's arm; the cross is its two arms."""
-    revolute = [j for j in model.joints if j.type == "revolute" and j.at and geos.get(j.id) is not None
+    revolute = [j for j in model.joints if j.kind.pins and not j.kind.ball and j.at and geos.get(j.id) is not None
                 and geos[j.id].axis is not None]
     for cross in model.bodies:
         own = [j for j in revolute if cross in (j.a, j.b)]

@@ -73,6 +73,7 @@ class JointKind:
     guides_point: ClassVar[bool] = False    # the point `at` of b runs along a guide
     touches: ClassVar[bool] = False         # the bodies touch at a contact point (`contact` questions)
     rolls: ClassVar[bool] = False           # ... and roll there without slipping
+    pitch: ClassVar[bool] = False           # its circles are pitch circles (gears: drawn dash-dot)
     along_in: ClassVar[str] = "a"           # the body `along` is fixed in
     centre: ClassVar[str] = ""              # where it puts the relative instant centre of its two
                                             # bodies by itself: "pin" (at `at`), "contact" (the

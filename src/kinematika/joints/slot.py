@@ -28,6 +28,7 @@ class Slot(JointKind):
     slides = True
     guides_point = True
     chain = "PR"                   # the slot's line in a, a slider block, the pin of b
+    centre = "normal"                 # on the normal to `along` at `at`
     route = "slot"
     fields = {"at": "required", "along": "required"}
     point_on = "b"

@@ -26,6 +26,7 @@ class Wheel(JointKind):
     dimensions = (2,)
     guides_point = True
     along_in = "b"
+    centre = "normal"                 # on the normal to `along` at `at`
     route = "wheel"
     fields = {"at": "required", "along": "required"}
     point_on = "b"

@@ -34,6 +34,7 @@ def scene_data(scene: Scene, twin: Optional[Scene] = None) -> dict[str, Any]:
                           "passing": list(getattr(b, "passing", []))}
                    for name, b in scene.bodies.items()},
         "joints": [_plain(j) for j in scene.joints],
+        "symbols": joint_symbols(scene),
         "vectors": [{**_plain(v), "key": v.key, "label": runs(v.label)} for v in scene.vectors],
         "marks": [{**_plain(m), "label": runs(m.label)} for m in scene.marks],
         "kennedy": [_plain(k) for k in scene.kennedy],
@@ -48,6 +49,16 @@ def scene_data(scene: Scene, twin: Optional[Scene] = None) -> dict[str, Any]:
     if twin is not None:
         _add_model_coordinates(data, scene, twin)
     return data
+
+
+def joint_symbols(scene: Scene) -> list[dict[str, Any]]:
+    """Every joint's symbol as the marks its kind draws (`joints.symbols`), for a view a
+    little larger than the mechanism: the page paints them as matplotlib does."""
+    from ..draw.geometry import Box
+    from ..draw.joints import scene_symbols
+
+    view = Box(*scene.box).grow(0.6 * scene.size)
+    return [m.as_json() for m in scene_symbols(scene, view)]
 
 
 def depth_twin(scene: Scene, sol: Any, options: Any) -> Scene:
