@@ -1,5 +1,7 @@
 """The fast paths of a command give what the general ones give: the plain check of a model
-file against pydantic's, and the command line's fast path against typer's."""
+file against pydantic's, and the command line's fast path against typer's. Both fast paths
+are generated from the general ones (`model.generate_shape`, `cli.generate_options`): the
+tests regenerate them and compare, then check that they mean the same."""
 from __future__ import annotations
 
 import copy
@@ -13,8 +15,8 @@ import pytest
 from hypothesis import given, strategies as st
 from pydantic import BaseModel, ValidationError
 
-from kinematika.cli import fast
-from kinematika.model import schema, shape
+from kinematika.cli import fast, generate_options
+from kinematika.model import generate_shape, schema, shape
 from kinematika.model.files import read_tree
 
 from .models import four_bar
@@ -44,6 +46,11 @@ def pydantic_spec(tree):
 
 
 # the model file's plain check -----------------------------------------------------------
+def test_the_plain_check_is_generated_from_the_schema():
+    assert generate_shape.source() == generate_shape.TARGET.read_text(encoding="utf-8"), \
+        f"model/shape.py is out of date: run {generate_shape.COMMAND}"
+
+
 @pytest.mark.parametrize("path", EXAMPLE_FILES, ids=[p.stem for p in EXAMPLE_FILES])
 def test_the_plain_check_reads_every_example_as_pydantic_does(path):
     tree = read_tree(path)
@@ -71,8 +78,12 @@ def test_the_records_have_schemas_fields_and_defaults():
             else:
                 theirs = field.get_default(call_default_factory=True)
                 assert (mine() if callable(mine) else mine) == theirs, (record.__name__, name)
-    assert shape.QUESTION_KINDS == schema.QUESTION_KINDS
-    assert schema.JointType.__args__ == shape.JOINT_TYPES
+    assert shape.JOINT_KEYS == schema.JOINT_KEYS
+    assert {r.__name__ for r in shape.RECORDS} == {"ModelSpec", "ParameterSpec", "PolarSpec", "FrameSpec",
+                                                     "CirclesSpec", "CircleLineSpec", "LineSpec", "LinesSpec",
+                                                     "BodySpec", "CircleSpec", "DiscSpec", "PlaneSpec", "CurveSpec",
+                                                     "JointSpec", "OmegaDriver", "JointDriver", "VelocityDriver",
+                                                     "QuestionSpec", "SweepSpec"}      # all but the cam's design
 
 
 ODD_VALUES = [True, False, None, 0, 2, 3, 1.5, float("inf"), "", "x", "revolute", [], {}, [1, "a"],
@@ -101,7 +112,14 @@ def _base_trees():
                                  sweep={"joint": "j1", "by": 90, "steps": 4}),
             read_tree(EXAMPLES / "fan_absolute.yaml"), read_tree(EXAMPLES / "planetary_gears.yaml"),
             read_tree(EXAMPLES / "coin_rolling.yaml"),
-            read_tree(EXAMPLES / "quick_return.yaml"), read_tree(EXAMPLES / "jansen_leg.yaml")]   # constructions
+            read_tree(EXAMPLES / "quick_return.yaml"), read_tree(EXAMPLES / "jansen_leg.yaml"),  # constructions
+            _with_a_curve()]
+
+
+def _with_a_curve():
+    tree = four_bar()
+    tree["bodies"]["ground"] = {"points": tree["bodies"]["ground"], "curve": {"through": [[0, 0], [1, 1], "O4"], "closed": False}}
+    return tree
 
 
 @given(st.data())
@@ -130,13 +148,19 @@ def test_a_changed_tree_is_accepted_only_as_pydantic_accepts_it(data):
 
 
 # the command line's fast path ------------------------------------------------------------
+def test_the_fast_options_are_generated_from_the_typer_commands():
+    assert generate_options.source() == generate_options.TARGET.read_text(encoding="utf-8"), \
+        f"cli/fast_options.py is out of date: run {generate_options.COMMAND}"
+
+
 def test_the_fast_options_are_the_typer_commands_options():
     import typer.main
 
-    from kinematika.cli import app, run as commands
+    from kinematika.cli import app, fast_options, run as commands
 
     group = typer.main.get_command(app)
-    for name, table in fast.OPTIONS.items():
+    assert set(fast_options.OPTIONS) == {"solve", "centres", "sweep"}
+    for name, table in fast_options.OPTIONS.items():
         command = group.commands[name]
         body = inspect.signature(getattr(commands, f"{name}_command")).parameters
         options = {opt: p for p in command.params for opt in p.opts}
@@ -156,6 +180,33 @@ def test_the_fast_options_are_the_typer_commands_options():
                 assert (param.min, param.max) == limits, (name, opt)
         arguments = [p for p in command.params if not getattr(p, "opts", [""])[0].startswith("-")]
         assert [p.name for p in arguments] == ["model"]
+
+
+def _one_command(**option):
+    import typer
+    import typer.main
+
+    app = typer.Typer()
+
+    @app.command()
+    def solve(model: Path, as_json: bool = typer.Option(False, "--json", **option)) -> None:
+        """A command as `kinematika solve`, its --json changed."""
+
+    return typer.main.get_command(app)
+
+
+@pytest.mark.parametrize("option", [{"envvar": "KINEMATIKA_JSON"}, {"callback": lambda value: value},
+                                    {"is_eager": True}],
+                         ids=["envvar", "callback", "eager"])
+def test_an_option_typer_reads_otherwise_is_an_error_of_the_generator(option):
+    with pytest.raises(TypeError, match="--json"):
+        generate_options._options("solve", _one_command(**option))
+
+
+def test_an_integer_option_bounded_on_one_side():
+    spec = ("assembly", fast.INT, 1, None)
+    assert [fast._convert(v, spec) for v in ("1", "+7", "0", "-2", "10000000000000")] == \
+        [1, 7, None, None, 10000000000000]
 
 
 @pytest.mark.parametrize("argv", [

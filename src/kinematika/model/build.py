@@ -14,8 +14,8 @@ from ..text import brief, names as name_list
 from . import shape
 from .constructions import Construction, ConstructionReader, construction_order
 from ..expressions import Expr, ExpressionError, parse
-from .model import (Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint, Line, Model, Parameter,
-                    Plane, PointPair, PointRef, Question, Shape, Sweep)
+from .model import (QUESTION_KINDS, Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint,
+                    Line, Model, Parameter, Plane, PointPair, PointRef, Question, Shape, Sweep)
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
@@ -161,8 +161,7 @@ class _Builder:
         for name, raw in self.spec.bodies.items():
             where = f"bodies.{name}"
             if isinstance(raw, list):
-                raw = shape.BodySpec(points=raw, circle=None, line=None, disc=None, plane=None,
-                                     description=None)
+                raw = shape.BodySpec.make(points=raw)
             for p in raw.points:
                 self.known_point(p, where)
             seen: set[str] = set()
@@ -215,11 +214,11 @@ class _Builder:
             through, tp = self.location(raw.plane.through, f"{where}.plane.through")
             shapes.append(Plane(through, self.direction(raw.plane.normal,
                                                                f"{where}.plane.normal"), tp))
-        if getattr(raw, "curve", None):
+        if raw.curve:
             through = tuple(self.location(p, f"{where}.curve.through[{i}]")
                             for i, p in enumerate(raw.curve.through))
             shapes.append(CurveShape(tuple(name or coords for coords, name in through), raw.curve.closed))
-        if getattr(raw, "cam", None):
+        if raw.cam:
             shapes.append(self.cam(raw.cam, f"{where}.cam"))
         if self.dim == 2 and shapes and any(isinstance(s, (Disc, Plane)) for s in shapes):
             raise KinematikaError("schema", "disc and plane shapes belong to 3D models; use circle "
@@ -270,8 +269,7 @@ class _Builder:
         if a == b:
             raise KinematikaError("schema", f"a joint needs two different bodies, got {a!r} twice", where)
         kind = joint_kind(raw.type)
-        kind.check_fields({key: getattr(raw, key) for key in ("at", "along", "axis", "internal")},
-                          self.dim, where)
+        kind.check_fields({key: getattr(raw, key) for key in shape.JOINT_KEYS}, self.dim, where)
         at = raw.at
         if at is not None:
             self.known_point(at, f"{where}.at")
@@ -369,10 +367,10 @@ class _Builder:
 
     def question(self, i: int, raw: schema.QuestionSpec) -> Question:
         where = f"ask[{i}]"
-        kinds = [k for k in shape.QUESTION_KINDS if getattr(raw, k) is not None]
+        kinds = [k for k in QUESTION_KINDS if getattr(raw, k) is not None]
         if len(kinds) != 1:
             raise KinematikaError("schema", "a question has exactly one of the keys "
-                                  f"{', '.join(shape.QUESTION_KINDS)}", where)
+                                  f"{', '.join(QUESTION_KINDS)}", where)
         kind = kinds[0]
         text = getattr(raw, kind)
         rel = None if raw.relative_to is None else self.known_body(raw.relative_to, f"{where}.relative_to")
