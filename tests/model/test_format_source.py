@@ -3,6 +3,9 @@ takes the cam-design file's fields, the questions' keys are the question kinds (
 its answer). `shape`, the plain check, is generated from `schema` (tests/core/test_fast_paths.py)."""
 from __future__ import annotations
 
+import re
+from pathlib import Path
+
 import pytest
 
 from kinematika import KinematikaError
@@ -60,3 +63,31 @@ def test_a_cams_base_circle_is_checked_as_in_a_cam_design_file():
 def test_the_questions_keys_are_the_question_kinds_and_each_has_its_answer():
     assert list(schema.QuestionSpec.model_fields) == [*QUESTION_KINDS, "relative_to", "moving"]
     assert set(ANSWERS) == set(QUESTION_KINDS)
+
+
+def _table_rows(doc: str, heading: str) -> dict[str, list[str]]:
+    """The rows of the first table after `heading` in docs/`doc`, by their first cell's `name`."""
+    text = (Path(__file__).parents[2] / "docs" / doc).read_text(encoding="utf-8")
+    text = text[text.index(heading):]
+    rows = {}
+    for line in text.splitlines():
+        if line.startswith("| `"):
+            cells = [c.strip() for c in line.strip("|").split(" | ")]
+            rows[re.match(r"`([a-z_]+)`", cells[0]).group(1)] = cells
+        elif rows and not line.startswith("|"):
+            break
+    return rows
+
+
+def test_the_formats_joints_table_names_each_kinds_keys():
+    """docs/model-format.md's joints table: a row per kind, naming the keys its `fields` declare."""
+    rows = _table_rows("model-format.md", "## Joints")
+    assert set(rows) == set(KINDS)
+    for name, cells in rows.items():
+        assert set(re.findall(r"`([a-z_]+)`", cells[1])) == set(KINDS[name].fields), name
+
+
+def test_the_joints_doc_has_a_row_per_kind_and_its_module():
+    rows = _table_rows("joints.md", "# Joints")
+    assert {name: cells[1] for name, cells in rows.items()} == \
+        {name: f"`{type(kind).__module__.rsplit('.', 1)[1]}.py`" for name, kind in KINDS.items()}

@@ -52,9 +52,10 @@ def parse(argv: list[str]) -> Optional[tuple[str, dict[str, Any]]]:
             kwargs[spec[0]] = True
             continue
         if not eq:
-            value = next(tokens, None)
-            if value is None:
+            following = next(tokens, None)
+            if following is None:
                 return None
+            value = following
         converted = _convert(value, spec)
         if converted is None:
             return None
@@ -66,6 +67,7 @@ def parse(argv: list[str]) -> Optional[tuple[str, dict[str, Any]]]:
 
 
 def _convert(value: str, spec: Spec) -> Any:
+    """`value` as typer would pass it for an option of `spec`; None when typer might not."""
     kind = spec[1]
     if kind == TEXT:
         return value
