@@ -146,8 +146,60 @@ def test_a_changed_tree_is_accepted_only_as_pydantic_accepts_it(data):
     mine, theirs = shape.spec_of(tree), pydantic_spec(tree)
     if theirs is None:
         assert mine is None
+        _every_error_is_placed_in_the_tree(tree)
     elif mine is not None:
         assert plain(mine) == plain(theirs)
+
+
+def _every_error_is_placed_in_the_tree(tree):
+    """An error's place is a path in the user's tree (up to a missing or unknown key): none
+    of pydantic's names for a union's members (`BodySpec`, `LineSpec`…) is left in it."""
+    from kinematika.model.build import _clean
+
+    try:
+        schema.ModelSpec.model_validate(tree)
+    except ValidationError as err:
+        for error in err.errors():
+            node = tree
+            for part in _clean(error["loc"])[:-1]:
+                assert isinstance(node, (dict, list)), (error["loc"], part)
+                node = node[part]
+
+
+def _dict_paths(tree, path=()):
+    if isinstance(tree, dict):
+        yield path
+    children = tree.items() if isinstance(tree, dict) else enumerate(tree) if isinstance(tree, list) else ()
+    for key, child in children:
+        yield from _dict_paths(child, path + (key,))
+
+
+@pytest.mark.parametrize("path", EXAMPLE_FILES, ids=[p.stem for p in EXAMPLE_FILES])
+def test_an_unknown_key_anywhere_is_placed_in_the_tree(path):
+    """An unknown key added to each mapping of an example: every error's place is a path in
+    the tree — the union members' names pydantic adds are all left out (they are read from
+    `schema`, not listed by hand)."""
+    base = read_tree(path)
+    for where in _dict_paths(base):
+        tree = copy.deepcopy(base)
+        node = tree
+        for part in where:
+            node = node[part]
+        node["zz_unknown"] = [True]
+        _every_error_is_placed_in_the_tree(tree)
+
+
+def test_a_construction_lines_key_is_placed_in_the_line():
+    """`LineSpec` (a construction's line given as through + direction) is not in the place."""
+    from kinematika import KinematikaError
+    from kinematika.model.build import build_model
+
+    tree = read_tree(EXAMPLES / "quick_return.yaml")
+    tree["points"]["C"]["line"]["dir"] = [1, 0]
+    with pytest.raises(KinematikaError) as info:
+        build_model(tree)
+    assert (info.value.kind, info.value.where) == ("schema", "points.C.line.dir")
+    assert info.value.message.startswith("unknown key 'dir'")
 
 
 # the command line's fast path ------------------------------------------------------------

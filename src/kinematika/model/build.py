@@ -5,6 +5,9 @@ points, bodies and joints, expressions, which body carries a bare point name.
 """
 from __future__ import annotations
 
+import functools
+import types
+import typing
 from typing import TYPE_CHECKING, Any, Iterable, Optional
 
 from ..errors import KinematikaError
@@ -430,9 +433,52 @@ def _names(items: Iterable[str]) -> str:
 
 
 # pydantic errors as one line -------------------------------------------------------------
-_BRANCH_NAMES = {"int", "float", "str", "none", "list[union[int,float,str]]", "ParameterSpec",
-                 "BodySpec", "list[str]"}
-_DRIVER_TAGS = {"omega", "joint", "velocity"}      # the tag of a driver's union, right after its index
+_SCALAR_BRANCHES = {"int", "float", "str", "none"}   # pydantic's names of a union's plain members
+
+
+@functools.cache
+def _branch_names() -> frozenset[str]:
+    """The names pydantic puts in an error's place for the member of a union the value was
+    tried as: the plain types', and those of `schema`'s classes that are a union's members
+    (`BodySpec` in `bodies: {NAME: [points] or BodySpec}`), read from `schema`; lower case."""
+    from pydantic import BaseModel, Discriminator
+
+    from . import schema
+
+    found: set[str] = set()
+    seen: set[type] = set()
+
+    def walk(tp: Any, member: bool) -> None:
+        if isinstance(tp, type) and issubclass(tp, BaseModel):
+            if member:
+                found.add(tp.__name__.lower())
+            if tp not in seen:
+                seen.add(tp)
+                for field in tp.model_fields.values():
+                    walk(field.annotation, False)
+            return
+        args = typing.get_args(tp)
+        if typing.get_origin(tp) is typing.Annotated:
+            if any(isinstance(m, Discriminator) for m in args[1:]):   # members named by their tags
+                for choice in typing.get_args(args[0]):
+                    walk(choice, False)
+            else:
+                walk(args[0], member)
+            return
+        is_union = typing.get_origin(tp) in (typing.Union, types.UnionType)
+        choices = [a for a in args if a is not type(None)]
+        for a in choices:
+            walk(a, is_union and len(choices) > 1)
+
+    walk(schema.ModelSpec, False)
+    return frozenset(found | _SCALAR_BRANCHES)
+
+
+def _driver_tags() -> set[str]:
+    """The tag of a driver's union (right after its index in an error's place): `schema`'s."""
+    from . import schema
+
+    return set(schema._driver_kind.tags.values())
 
 
 def _schema_error(err: ValidationError, tree: Any) -> KinematikaError:
@@ -451,7 +497,7 @@ def _clean(loc: tuple) -> list:
     """The error's place in the user's tree: pydantic's union branches left out."""
     out = []
     for i, part in enumerate(loc):
-        tag = i == 2 and loc[0] == "drivers" and part in _DRIVER_TAGS
+        tag = i == 2 and loc[0] == "drivers" and part in _driver_tags()
         tag = tag or (loc[0] == "points" and isinstance(part, str)
                       and (part in ("construction", "coordinates") or part.startswith("construction:")))
         if not tag and not _is_branch(part):
@@ -460,7 +506,7 @@ def _clean(loc: tuple) -> list:
 
 
 def _is_branch(part: Any) -> bool:
-    return isinstance(part, str) and (part.lower() in {b.lower() for b in _BRANCH_NAMES}
+    return isinstance(part, str) and (part.lower() in _branch_names()
                                       or "[" in part or part.startswith(("function-", "constrained")))
 
 
@@ -489,8 +535,8 @@ def _place(loc: list, tree: Any) -> str:
 def _message(error: dict, loc: list) -> str:
     kind = error["type"]
     last = loc[-1] if loc else ""
-    if kind == "extra_forbidden" and loc[:1] == ["drivers"] and last in _DRIVER_TAGS:
-        return f"a driver has exactly one of {', '.join(sorted(_DRIVER_TAGS))}; {last!r} is a second one"
+    if kind == "extra_forbidden" and loc[:1] == ["drivers"] and last in _driver_tags():
+        return f"a driver has exactly one of {', '.join(sorted(_driver_tags()))}; {last!r} is a second one"
     if kind == "extra_forbidden":
         return f"unknown key {last!r}"
     if kind == "missing":
