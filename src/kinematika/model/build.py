@@ -481,6 +481,13 @@ def _driver_tags() -> set[str]:
     return set(schema._driver_kind.tags.values())
 
 
+def _point_tags() -> set[str]:
+    """The tags of a point's unions (coordinates or a construction, and which): `schema`'s."""
+    from . import schema
+
+    return {*schema._point_kind.tags.values(), *schema._construction_kind.tags.values()}
+
+
 def _schema_error(err: ValidationError, tree: Any) -> KinematikaError:
     errors = err.errors()
     first = min(errors, key=_rank)
@@ -498,8 +505,7 @@ def _clean(loc: tuple) -> list:
     out = []
     for i, part in enumerate(loc):
         tag = i == 2 and loc[0] == "drivers" and part in _driver_tags()
-        tag = tag or (loc[0] == "points" and isinstance(part, str)
-                      and (part in ("construction", "coordinates") or part.startswith("construction:")))
+        tag = tag or (loc[0] == "points" and part in _point_tags())
         if not tag and not _is_branch(part):
             out.append(part)
     return out
