@@ -43,6 +43,8 @@ PLAIN_WORDS = ("REQUIRED", "by_type", "either", "exact", "first_key", "listed", 
 PLAIN_CONFIG = {"extra", "populate_by_name", "validate_by_name", "title"}
 # `schema`'s constants that the fast path needs too, copied
 CONSTANTS = ("JOINT_KEYS",)
+# names of the generated module a named type of `schema` must not take
+RESERVED = {name.lower() for name in (*PLAIN_WORDS, "record", "checked", "spec_of", "RECORDS", "KINDS", *CONSTANTS)}
 
 
 @dataclass(frozen=True)
@@ -90,8 +92,10 @@ class _Writer:
                 default = "REQUIRED"
             elif field.default_factory is not None:
                 default = _factory(field.default_factory)
-            else:
+            elif type(field.default) in (str, int, float, bool, type(None)):
                 default = repr(field.default)
+            else:
+                return None                   # a default written as code only pydantic copies right
             fields.append(f"    {name!r}: ({check.code}, {default}),")
             key = field.alias or name
             if key != name:
@@ -119,6 +123,8 @@ class _Writer:
 
     def alias(self, name: str, tp: Any) -> Written:
         """One of schema's named types, written once under its name (`location`)."""
+        if _snake(name) in RESERVED:
+            return self.written(tp, [])
         if name not in self.named:
             self.named[name] = DECIDES                       # (a cycle is left to pydantic)
             written = self.written(tp, [])
@@ -203,7 +209,7 @@ class _Writer:
         if isinstance(discriminator, schema.FirstKey):
             pairs = ", ".join(f"({key!r}, {members[tag].code})" for key, tag in discriminator.tags.items())
             return Written(f"first_key({pairs})", frozenset({dict}))
-        if isinstance(discriminator, schema.ByType):
+        if isinstance(discriminator, schema.ByType) and set(discriminator.tags) <= {dict, list, *SCALARS}:
             table = ", ".join(f"{kind.__name__}: {members[tag].code}" for kind, tag in discriminator.tags.items())
             return Written(f"by_type({{{table}}})", frozenset(discriminator.tags))
         return DECIDES
