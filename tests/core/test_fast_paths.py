@@ -1,5 +1,7 @@
 """The fast paths of a command give what the general ones give: the plain check of a model
-file against pydantic's, and the command line's fast path against typer's."""
+file against pydantic's, and the command line's fast path against typer's. Both fast paths
+are generated from the general ones (`model.generate_shape`, `cli.generate_options`): the
+tests regenerate them and compare, then check that they mean the same."""
 from __future__ import annotations
 
 import copy
@@ -9,12 +11,16 @@ import subprocess
 import sys
 from pathlib import Path
 
+from typing import Annotated, Literal, Optional, Union
+
 import pytest
 from hypothesis import given, strategies as st
-from pydantic import BaseModel, ValidationError
+from pydantic import BaseModel, Field, StrictBool, StrictFloat, StrictInt, ValidationError
 
-from kinematika.cli import fast
-from kinematika.model import schema, shape
+from kinematika.cams.spec import FollowerSpec
+
+from kinematika.cli import fast, generate_options
+from kinematika.model import generate_shape, schema, shape
 from kinematika.model.files import read_tree
 
 from .models import four_bar
@@ -44,19 +50,27 @@ def pydantic_spec(tree):
 
 
 # the model file's plain check -----------------------------------------------------------
+def test_the_plain_check_is_generated_from_the_schema():
+    assert generate_shape.source() == generate_shape.TARGET.read_text(encoding="utf-8"), \
+        f"model/shape.py is out of date: run {generate_shape.COMMAND}"
+
+
+def _has_a_cam(tree):
+    return any(isinstance(body, dict) and "cam" in body for body in tree["bodies"].values())
+
+
 @pytest.mark.parametrize("path", EXAMPLE_FILES, ids=[p.stem for p in EXAMPLE_FILES])
 def test_the_plain_check_reads_every_example_as_pydantic_does(path):
+    """Every example but those with a cam's design (checked by `cams.spec`, whose design is
+    built with pydantic anyway) is read by the plain check, as pydantic reads it."""
     tree = read_tree(path)
     spec = shape.spec_of(tree)
-    if _has_curves(tree):           # curves and cams are pydantic's alone (model.shape)
+    if _has_a_cam(tree):
         assert spec is None
+        assert schema.ModelSpec.model_validate(tree)
         return
     assert spec is not None, "an example taken by pydantic, not by the plain check"
     assert plain(spec) == plain(schema.ModelSpec.model_validate(tree))
-
-
-def _has_curves(tree: dict) -> bool:
-    return any(isinstance(b, dict) and ({"curve", "cam"} & set(b)) for b in tree["bodies"].values())
 
 
 def test_the_records_have_schemas_fields_and_defaults():
@@ -71,8 +85,26 @@ def test_the_records_have_schemas_fields_and_defaults():
             else:
                 theirs = field.get_default(call_default_factory=True)
                 assert (mine() if callable(mine) else mine) == theirs, (record.__name__, name)
-    assert shape.QUESTION_KINDS == schema.QUESTION_KINDS
-    assert schema.JointType.__args__ == shape.JOINT_TYPES
+    assert shape.JOINT_KEYS == schema.JOINT_KEYS
+    assert {r.__name__ for r in shape.RECORDS} == {"ModelSpec", "ParameterSpec", "PolarSpec", "FrameSpec",
+                                                     "CirclesSpec", "CircleLineSpec", "LineSpec", "LinesSpec",
+                                                     "BodySpec", "CircleSpec", "DiscSpec", "PlaneSpec", "CurveSpec",
+                                                     "JointSpec", "OmegaDriver", "JointDriver", "VelocityDriver",
+                                                     "QuestionSpec", "SweepSpec"}      # all but the cam's design
+
+
+@pytest.mark.parametrize("annotation, code", [
+    (Union[StrictInt, StrictFloat, str], "value"),                          # schema's named type
+    (Union[StrictInt, StrictBool], "exact(int, bool)"),
+    (Optional[Annotated[list[str], Field(min_length=2, max_length=3)]], "optional(listed(exact(str), 2, 3))"),
+    (Literal["a", 1], "one_of('a', 1)"),
+    (Annotated[StrictInt, Field(gt=0)], "pydantic_decides"),                # a bound plain tests do not check
+    (Union[list[str], list[StrictInt]], "pydantic_decides"),                # members taking the same values
+    (dict[int, str], "pydantic_decides"),
+    (FollowerSpec, "pydantic_decides"),                                     # another file format's class
+])
+def test_the_generator_writes_only_what_plain_tests_check_as_pydantic(annotation, code):
+    assert generate_shape._Writer().annotation(annotation, []).code == code
 
 
 ODD_VALUES = [True, False, None, 0, 2, 3, 1.5, float("inf"), "", "x", "revolute", [], {}, [1, "a"],
@@ -101,7 +133,14 @@ def _base_trees():
                                  sweep={"joint": "j1", "by": 90, "steps": 4}),
             read_tree(EXAMPLES / "fan_absolute.yaml"), read_tree(EXAMPLES / "planetary_gears.yaml"),
             read_tree(EXAMPLES / "coin_rolling.yaml"),
-            read_tree(EXAMPLES / "quick_return.yaml"), read_tree(EXAMPLES / "jansen_leg.yaml")]   # constructions
+            read_tree(EXAMPLES / "quick_return.yaml"), read_tree(EXAMPLES / "jansen_leg.yaml"),  # constructions
+            _with_a_curve()]
+
+
+def _with_a_curve():
+    tree = four_bar()
+    tree["bodies"]["ground"] = {"points": tree["bodies"]["ground"], "curve": {"through": [[0, 0], [1, 1], "O4"], "closed": False}}
+    return tree
 
 
 @given(st.data())
@@ -125,18 +164,76 @@ def test_a_changed_tree_is_accepted_only_as_pydantic_accepts_it(data):
     mine, theirs = shape.spec_of(tree), pydantic_spec(tree)
     if theirs is None:
         assert mine is None
+        _every_error_is_placed_in_the_tree(tree)
     elif mine is not None:
         assert plain(mine) == plain(theirs)
 
 
+def _every_error_is_placed_in_the_tree(tree):
+    """An error's place is a path in the user's tree (up to a missing or unknown key): none
+    of pydantic's names for a union's members (`BodySpec`, `LineSpec`…) is left in it."""
+    from kinematika.model.build import _clean
+
+    try:
+        schema.ModelSpec.model_validate(tree)
+    except ValidationError as err:
+        for error in err.errors():
+            node = tree
+            for part in _clean(error["loc"])[:-1]:
+                assert isinstance(node, (dict, list)), (error["loc"], part)
+                node = node[part]
+
+
+def _dict_paths(tree, path=()):
+    if isinstance(tree, dict):
+        yield path
+    children = tree.items() if isinstance(tree, dict) else enumerate(tree) if isinstance(tree, list) else ()
+    for key, child in children:
+        yield from _dict_paths(child, path + (key,))
+
+
+@pytest.mark.parametrize("path", EXAMPLE_FILES, ids=[p.stem for p in EXAMPLE_FILES])
+def test_an_unknown_key_anywhere_is_placed_in_the_tree(path):
+    """An unknown key added to each mapping of an example: every error's place is a path in
+    the tree — the union members' names pydantic adds are all left out (they are read from
+    `schema`, not listed by hand)."""
+    base = read_tree(path)
+    for where in _dict_paths(base):
+        tree = copy.deepcopy(base)
+        node = tree
+        for part in where:
+            node = node[part]
+        node["zz_unknown"] = [True]
+        _every_error_is_placed_in_the_tree(tree)
+
+
+def test_a_construction_lines_key_is_placed_in_the_line():
+    """`LineSpec` (a construction's line given as through + direction) is not in the place."""
+    from kinematika import KinematikaError
+    from kinematika.model.build import build_model
+
+    tree = read_tree(EXAMPLES / "quick_return.yaml")
+    tree["points"]["C"]["line"]["dir"] = [1, 0]
+    with pytest.raises(KinematikaError) as info:
+        build_model(tree)
+    assert (info.value.kind, info.value.where) == ("schema", "points.C.line.dir")
+    assert info.value.message.startswith("unknown key 'dir'")
+
+
 # the command line's fast path ------------------------------------------------------------
+def test_the_fast_options_are_generated_from_the_typer_commands():
+    assert generate_options.source() == generate_options.TARGET.read_text(encoding="utf-8"), \
+        f"cli/fast_options.py is out of date: run {generate_options.COMMAND}"
+
+
 def test_the_fast_options_are_the_typer_commands_options():
     import typer.main
 
-    from kinematika.cli import app, run as commands
+    from kinematika.cli import app, fast_options, run as commands
 
     group = typer.main.get_command(app)
-    for name, table in fast.OPTIONS.items():
+    assert set(fast_options.OPTIONS) == {"solve", "centres", "sweep"}
+    for name, table in fast_options.OPTIONS.items():
         command = group.commands[name]
         body = inspect.signature(getattr(commands, f"{name}_command")).parameters
         options = {opt: p for p in command.params for opt in p.opts}
@@ -156,6 +253,33 @@ def test_the_fast_options_are_the_typer_commands_options():
                 assert (param.min, param.max) == limits, (name, opt)
         arguments = [p for p in command.params if not getattr(p, "opts", [""])[0].startswith("-")]
         assert [p.name for p in arguments] == ["model"]
+
+
+def _one_command(**option):
+    import typer
+    import typer.main
+
+    app = typer.Typer()
+
+    @app.command()
+    def solve(model: Path, as_json: bool = typer.Option(False, "--json", **option)) -> None:
+        """A command as `kinematika solve`, its --json changed."""
+
+    return typer.main.get_command(app)
+
+
+@pytest.mark.parametrize("option", [{"envvar": "KINEMATIKA_JSON"}, {"callback": lambda value: value},
+                                    {"is_eager": True}],
+                         ids=["envvar", "callback", "eager"])
+def test_an_option_typer_reads_otherwise_is_an_error_of_the_generator(option):
+    with pytest.raises(TypeError, match="--json"):
+        generate_options._options("solve", _one_command(**option))
+
+
+def test_an_integer_option_bounded_on_one_side():
+    spec = ("assembly", fast.INT, 1, None)
+    assert [fast._convert(v, spec) for v in ("1", "+7", "0", "-2", "10000000000000")] == \
+        [1, 7, None, None, 10000000000000]
 
 
 @pytest.mark.parametrize("argv", [

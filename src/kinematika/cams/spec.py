@@ -41,8 +41,7 @@ from .program import Program, build
 
 Number = Union[StrictInt, StrictFloat]
 Positive = Annotated[Number, Field(gt=0)]
-LawName = Literal["dwell", "uniform", "harmonic", "cycloidal", "modified-trapezoid", "modified-sine",
-                  "3-4-5", "4-5-6-7", "polynomial"]
+LawName = Literal[tuple(law_table.names())]     # type: ignore[valid-type]  # the laws' table
 
 
 class Strict(BaseModel):

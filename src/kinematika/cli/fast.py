@@ -5,8 +5,9 @@ cost more than the work itself.
 Only what is certainly valid is taken: a known option given once, a number written plainly,
 one model file. Anything else (`--help`, an unknown or repeated option, a value typer would
 refuse or convert differently) returns None and the typer application reads the command
-line, so errors and help are typer's. The table below mirrors the typer commands' options;
-tests check that it agrees with them.
+line, so errors and help are typer's. The options' table (`fast_options.OPTIONS`) is
+generated from the typer commands (`python -m kinematika.cli.generate_options`); a test
+regenerates it and compares.
 """
 from __future__ import annotations
 
@@ -18,16 +19,7 @@ FLAG, TEXT, PATH, INT, FLOAT = "flag", "text", "path", "int", "float"
 _INT = re.compile(r"[+-]?[0-9]+\Z")
 _FLOAT = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?\Z")
 
-Spec = tuple  # (parameter, kind) or (parameter, INT, smallest, largest)
-_COMMON = {"--json": ("as_json", FLAG), "--symbolic": ("symbolic", FLAG)}
-OPTIONS: dict[str, dict[str, Spec]] = {
-    "solve": _COMMON,
-    "centres": _COMMON,
-    "sweep": {"--joint": ("joint", TEXT), "--by": ("by", FLOAT),
-              "--steps": ("steps", INT, 1, 10_000_000), "--json": ("as_json", FLAG),
-              "--csv": ("csv", PATH), "--skip-bad": ("skip_bad", FLAG), "--plot": ("plot", PATH),
-              "-o": ("output", PATH), "--output": ("output", PATH), "--format": ("fmt", TEXT)},
-}
+Spec = tuple  # (parameter, kind) or (parameter, INT, smallest, largest); None: no bound
 
 
 def command(name: str) -> Callable[..., None]:
@@ -38,6 +30,8 @@ def command(name: str) -> Callable[..., None]:
 
 def parse(argv: list[str]) -> Optional[tuple[str, dict[str, Any]]]:
     """(command, keyword arguments) when the fast path can read `argv`, else None."""
+    from .fast_options import OPTIONS     # (generated; imported here so its generator imports this module
+                                          # even when the table is broken)
     if not argv or argv[0] not in OPTIONS:
         return None
     table = OPTIONS[argv[0]]
@@ -58,9 +52,10 @@ def parse(argv: list[str]) -> Optional[tuple[str, dict[str, Any]]]:
             kwargs[spec[0]] = True
             continue
         if not eq:
-            value = next(tokens, None)
-            if value is None:
+            following = next(tokens, None)
+            if following is None:
                 return None
+            value = following
         converted = _convert(value, spec)
         if converted is None:
             return None
@@ -72,6 +67,7 @@ def parse(argv: list[str]) -> Optional[tuple[str, dict[str, Any]]]:
 
 
 def _convert(value: str, spec: Spec) -> Any:
+    """`value` as typer would pass it for an option of `spec`; None when typer might not."""
     kind = spec[1]
     if kind == TEXT:
         return value
@@ -81,5 +77,6 @@ def _convert(value: str, spec: Spec) -> Any:
         if not _INT.match(value):
             return None
         number = int(value)
-        return number if spec[2] <= number <= spec[3] else None
+        low, high = spec[2:]
+        return None if (low is not None and number < low) or (high is not None and number > high) else number
     return float(value) if _FLOAT.match(value) else None

@@ -5,6 +5,9 @@ points, bodies and joints, expressions, which body carries a bare point name.
 """
 from __future__ import annotations
 
+import functools
+import types
+import typing
 from typing import TYPE_CHECKING, Any, Iterable, Optional
 
 from ..errors import KinematikaError
@@ -14,8 +17,8 @@ from ..text import brief, names as name_list
 from . import shape
 from .constructions import Construction, ConstructionReader, construction_order
 from ..expressions import Expr, ExpressionError, parse
-from .model import (Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint, Line, Model, Parameter,
-                    Plane, PointPair, PointRef, Question, Shape, Sweep)
+from .model import (QUESTION_KINDS, Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint,
+                    Line, Model, Parameter, Plane, PointPair, PointRef, Question, Shape, Sweep)
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
@@ -161,8 +164,7 @@ class _Builder:
         for name, raw in self.spec.bodies.items():
             where = f"bodies.{name}"
             if isinstance(raw, list):
-                raw = shape.BodySpec(points=raw, circle=None, line=None, disc=None, plane=None,
-                                     description=None)
+                raw = shape.BodySpec.make(points=raw)
             for p in raw.points:
                 self.known_point(p, where)
             seen: set[str] = set()
@@ -215,11 +217,11 @@ class _Builder:
             through, tp = self.location(raw.plane.through, f"{where}.plane.through")
             shapes.append(Plane(through, self.direction(raw.plane.normal,
                                                                f"{where}.plane.normal"), tp))
-        if getattr(raw, "curve", None):
+        if raw.curve:
             through = tuple(self.location(p, f"{where}.curve.through[{i}]")
                             for i, p in enumerate(raw.curve.through))
             shapes.append(CurveShape(tuple(name or coords for coords, name in through), raw.curve.closed))
-        if getattr(raw, "cam", None):
+        if raw.cam:
             shapes.append(self.cam(raw.cam, f"{where}.cam"))
         if self.dim == 2 and shapes and any(isinstance(s, (Disc, Plane)) for s in shapes):
             raise KinematikaError("schema", "disc and plane shapes belong to 3D models; use circle "
@@ -270,8 +272,7 @@ class _Builder:
         if a == b:
             raise KinematikaError("schema", f"a joint needs two different bodies, got {a!r} twice", where)
         kind = joint_kind(raw.type)
-        kind.check_fields({key: getattr(raw, key) for key in ("at", "along", "axis", "internal")},
-                          self.dim, where)
+        kind.check_fields({key: getattr(raw, key) for key in shape.JOINT_KEYS}, self.dim, where)
         at = raw.at
         if at is not None:
             self.known_point(at, f"{where}.at")
@@ -369,10 +370,10 @@ class _Builder:
 
     def question(self, i: int, raw: schema.QuestionSpec) -> Question:
         where = f"ask[{i}]"
-        kinds = [k for k in shape.QUESTION_KINDS if getattr(raw, k) is not None]
+        kinds = [k for k in QUESTION_KINDS if getattr(raw, k) is not None]
         if len(kinds) != 1:
             raise KinematikaError("schema", "a question has exactly one of the keys "
-                                  f"{', '.join(shape.QUESTION_KINDS)}", where)
+                                  f"{', '.join(QUESTION_KINDS)}", where)
         kind = kinds[0]
         text = getattr(raw, kind)
         rel = None if raw.relative_to is None else self.known_body(raw.relative_to, f"{where}.relative_to")
@@ -432,9 +433,59 @@ def _names(items: Iterable[str]) -> str:
 
 
 # pydantic errors as one line -------------------------------------------------------------
-_BRANCH_NAMES = {"int", "float", "str", "none", "list[union[int,float,str]]", "ParameterSpec",
-                 "BodySpec", "list[str]"}
-_DRIVER_TAGS = {"omega", "joint", "velocity"}      # the tag of a driver's union, right after its index
+_SCALAR_BRANCHES = {"int", "float", "str", "none"}   # pydantic's names of a union's plain members
+
+
+@functools.cache
+def _branch_names() -> frozenset[str]:
+    """The names pydantic puts in an error's place for the member of a union the value was
+    tried as: the plain types', and those of `schema`'s classes that are a union's members
+    (`BodySpec` in `bodies: {NAME: [points] or BodySpec}`), read from `schema`; lower case."""
+    from pydantic import BaseModel, Discriminator
+
+    from . import schema
+
+    found: set[str] = set()
+    seen: set[type] = set()
+
+    def walk(tp: Any, member: bool) -> None:
+        if isinstance(tp, type) and issubclass(tp, BaseModel):
+            if member:
+                found.add(tp.__name__.lower())
+            if tp not in seen:
+                seen.add(tp)
+                for field in tp.model_fields.values():
+                    walk(field.annotation, False)
+            return
+        args = typing.get_args(tp)
+        if typing.get_origin(tp) is typing.Annotated:
+            if any(isinstance(m, Discriminator) for m in args[1:]):   # members named by their tags
+                for choice in typing.get_args(args[0]):
+                    walk(choice, False)
+            else:
+                walk(args[0], member)
+            return
+        is_union = typing.get_origin(tp) in (typing.Union, types.UnionType)
+        choices = [a for a in args if a is not type(None)]
+        for a in choices:
+            walk(a, is_union and len(choices) > 1)
+
+    walk(schema.ModelSpec, False)
+    return frozenset(found | _SCALAR_BRANCHES)
+
+
+def _driver_tags() -> set[str]:
+    """The tag of a driver's union (right after its index in an error's place): `schema`'s."""
+    from . import schema
+
+    return set(schema._driver_kind.tags.values())
+
+
+def _point_tags() -> set[str]:
+    """The tags of a point's unions (coordinates or a construction, and which): `schema`'s."""
+    from . import schema
+
+    return {*schema._point_kind.tags.values(), *schema._construction_kind.tags.values()}
 
 
 def _schema_error(err: ValidationError, tree: Any) -> KinematikaError:
@@ -453,16 +504,15 @@ def _clean(loc: tuple) -> list:
     """The error's place in the user's tree: pydantic's union branches left out."""
     out = []
     for i, part in enumerate(loc):
-        tag = i == 2 and loc[0] == "drivers" and part in _DRIVER_TAGS
-        tag = tag or (loc[0] == "points" and isinstance(part, str)
-                      and (part in ("construction", "coordinates") or part.startswith("construction:")))
+        tag = i == 2 and loc[0] == "drivers" and part in _driver_tags()
+        tag = tag or (loc[0] == "points" and part in _point_tags())
         if not tag and not _is_branch(part):
             out.append(part)
     return out
 
 
 def _is_branch(part: Any) -> bool:
-    return isinstance(part, str) and (part.lower() in {b.lower() for b in _BRANCH_NAMES}
+    return isinstance(part, str) and (part.lower() in _branch_names()
                                       or "[" in part or part.startswith(("function-", "constrained")))
 
 
@@ -491,8 +541,8 @@ def _place(loc: list, tree: Any) -> str:
 def _message(error: dict, loc: list) -> str:
     kind = error["type"]
     last = loc[-1] if loc else ""
-    if kind == "extra_forbidden" and loc[:1] == ["drivers"] and last in _DRIVER_TAGS:
-        return f"a driver has exactly one of {', '.join(sorted(_DRIVER_TAGS))}; {last!r} is a second one"
+    if kind == "extra_forbidden" and loc[:1] == ["drivers"] and last in _driver_tags():
+        return f"a driver has exactly one of {', '.join(sorted(_driver_tags()))}; {last!r} is a second one"
     if kind == "extra_forbidden":
         return f"unknown key {last!r}"
     if kind == "missing":

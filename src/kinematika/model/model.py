@@ -147,9 +147,14 @@ class Driver:
         return f"drivers[{self.index}]"
 
 
+# the kinds of question, each a key of a question in a model file (`ask:`)
+QUESTION_KINDS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose",
+                  "contact", "axis", "pole", "intrinsic")
+
+
 @dataclass
 class Question:
-    kind: str                      # one of schema.QUESTION_KINDS
+    kind: str                      # one of QUESTION_KINDS
     index: int
     target: Union[str, PointRef]   # body name, material point or joint id
     echo: dict                     # the question as written, echoed in the answer

@@ -2,15 +2,24 @@
 
 This module only says which keys exist and what type each value has. Names are resolved
 and expressions parsed afterwards, in `build`, which turns a checked file into a `Model`.
+
+It is the one place the format is written: `shape`, the plain-Python check the fast path
+uses (pydantic is not imported there), is generated from these classes by
+`python -m kinematika.model.generate_shape`, and a test regenerates it and compares. A
+joint's keys are those its kinds declare (`JointKind.fields`, typed by `JOINT_KEY_TYPES`),
+the questions' keys are `model.QUESTION_KINDS`, and a body's `cam:` takes the cam-design
+file's own fields (`cams.spec`). See docs/architecture.md, "One source for the model format".
 """
 from __future__ import annotations
 
+import copy
 from typing import Annotated, Any, Literal, Optional, Union
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, StrictBool, StrictFloat, StrictInt, Tag
+from pydantic import BaseModel, ConfigDict, Discriminator, Field, StrictBool, StrictFloat, StrictInt, Tag, create_model
 
-from ..cams.spec import FollowerSpec, SegmentSpec
+from ..cams.spec import CamFileSpec, CamSpec
 from ..joints import KINDS
+from .model import QUESTION_KINDS
 
 Value = Union[StrictInt, StrictFloat, str]
 Vector = list[Value]
@@ -95,17 +104,36 @@ class LinesSpec(Strict):
     lines: Annotated[list[LineRef], Field(min_length=2, max_length=2)]
 
 
+class FirstKey:
+    """A union's discriminator: the tag of the first of `tags`' keys a mapping has (None,
+    an error, for a mapping with none of them or for anything else). `generate_shape`
+    reads `tags` to write the same choice as a plain check; pydantic shows `name`."""
+
+    def __init__(self, name: str, tags: dict[str, str]) -> None:
+        self.__name__, self.tags = name, tags
+
+    def __call__(self, data: Any) -> str | None:
+        if isinstance(data, dict):
+            for key, tag in self.tags.items():
+                if key in data:
+                    return tag
+        return None
+
+
+class ByType:
+    """A union's discriminator: the tag of the value's type (a subclass counts), None for
+    any other type."""
+
+    def __init__(self, name: str, tags: dict[type, str]) -> None:
+        self.__name__, self.tags = name, tags
+
+    def __call__(self, data: Any) -> str | None:
+        return next((tag for kind, tag in self.tags.items() if isinstance(data, kind)), None)
+
+
 CONSTRUCTION_KEYS = {"from": "polar", "frame": "frame", "circles": "circles", "circle": "circle-line",
                      "lines": "lines"}
-
-
-def _construction_kind(data: Any) -> str | None:
-    if isinstance(data, dict):
-        for key, kind in CONSTRUCTION_KEYS.items():
-            if key in data:
-                return f"construction:{kind}"
-    return None
-
+_construction_kind = FirstKey("_construction_kind", {key: f"construction:{kind}" for key, kind in CONSTRUCTION_KEYS.items()})
 
 ConstructionSpec = Annotated[
     Union[Annotated[PolarSpec, Tag("construction:polar")], Annotated[FrameSpec, Tag("construction:frame")],
@@ -118,11 +146,7 @@ ConstructionSpec = Annotated[
 ]
 
 
-def _point_kind(data: Any) -> str | None:
-    if isinstance(data, dict):
-        return "construction"
-    return "coordinates" if isinstance(data, list) else None
-
+_point_kind = ByType("_point_kind", {dict: "construction", list: "coordinates"})
 
 PointSpec = Annotated[
     Union[Annotated[Vector, Tag("coordinates")], Annotated[ConstructionSpec, Tag("construction")]],
@@ -140,22 +164,22 @@ class CurveSpec(Strict):
     closed: StrictBool = False
 
 
-class BodyCamSpec(Strict):
-    """A cam's profile fixed in the body: its motion program (or measured profile) and follower
-    as in a cam-design file (`kinematika.cams.spec`), placed at `center`, turned by `angle`
-    (the cam angle at this instant: where the program is) in the design frame, itself turned
-    by `layout` in the model's axes (a translating follower rises along the frame's y axis)."""
+def _fields_of(spec: type[BaseModel], *names: str) -> dict[str, Any]:
+    """Fields of another spec as `create_model` takes them: the same types, checks, defaults."""
+    fields = spec.model_fields
+    return {name: (fields[name].annotation, copy.copy(fields[name])) for name in names or fields}
 
-    center: Location
-    angle: Value = 0
-    layout: Value = 0
-    kind: Literal["disc", "translating"] = "disc"
-    base: Optional[Union[StrictInt, StrictFloat]] = None
-    rotation: Literal["ccw", "cw"] = "ccw"
-    follower: FollowerSpec
-    program: Optional[Annotated[list[SegmentSpec], Field(min_length=1, max_length=1000)]] = None
-    profile: Optional[Annotated[list[Annotated[list[Union[StrictInt, StrictFloat]], Field(min_length=2, max_length=2)]],
-                                Field(min_length=3, max_length=100_000)]] = None
+
+BodyCamSpec = create_model(
+    "BodyCamSpec", __base__=Strict, __module__=__name__,
+    __doc__="""A cam's profile fixed in the body: its motion program (or measured profile) and
+    follower as in a cam-design file (`kinematika.cams.spec`: the keys of its `cam:` and its
+    `follower`, `program`, `profile`, with their checks), placed at `center`, turned by
+    `angle` (the cam angle at this instant: where the program is) in the design frame, itself
+    turned by `layout` in the model's axes (a translating follower rises along the frame's y
+    axis).""",
+    center=(Location, ...), angle=(Value, 0), layout=(Value, 0),
+    **_fields_of(CamSpec), **_fields_of(CamFileSpec, "follower", "program", "profile"))
 
 
 class BodySpec(Strict):
@@ -171,16 +195,27 @@ class BodySpec(Strict):
 
 JointType = Literal[tuple(KINDS)]          # type: ignore[valid-type]  # the registered kinds
 
+# What each key a kind of joint may declare in its `fields` holds. A joint's keys are those
+# the registered kinds declare, in this order (the order errors are looked for in).
+JOINT_KEY_TYPES: dict[str, Any] = {"at": str, "along": Vector, "axis": Vector, "internal": StrictBool}
 
-class JointSpec(Strict):
-    type: JointType
-    bodies: Annotated[list[str], Field(min_length=2, max_length=2)]
-    id: Optional[str] = None
-    at: Optional[str] = None
-    along: Optional[Vector] = None
-    axis: Optional[Vector] = None
-    internal: Optional[StrictBool] = None
-    description: Optional[str] = None
+
+def _joint_keys() -> tuple[str, ...]:
+    declared = {key for kind in KINDS.values() for key in kind.fields}
+    untyped = sorted(declared - set(JOINT_KEY_TYPES))
+    if untyped:
+        raise TypeError(f"joint keys {untyped} are declared by a kind of joint but have no type in "
+                        "kinematika.model.schema.JOINT_KEY_TYPES")
+    return tuple(key for key in JOINT_KEY_TYPES if key in declared)
+
+
+JOINT_KEYS = _joint_keys()
+JointSpec = create_model(
+    "JointSpec", __base__=Strict, __module__=__name__,
+    __doc__="A joint: its kind, its two bodies, its id, the keys its kinds declare, a description.",
+    type=(JointType, ...), bodies=(Annotated[list[str], Field(min_length=2, max_length=2)], ...),
+    id=(Optional[str], None), **{key: (Optional[JOINT_KEY_TYPES[key]], None) for key in JOINT_KEYS},
+    description=(Optional[str], None))
 
 
 class OmegaDriver(Strict):
@@ -204,13 +239,7 @@ class VelocityDriver(Strict):
     relative_to: Optional[str] = None
 
 
-def _driver_kind(data: Any) -> str | None:
-    if isinstance(data, dict):
-        for key in ("omega", "joint", "velocity"):
-            if key in data:
-                return key
-    return None
-
+_driver_kind = FirstKey("_driver_kind", {key: key for key in ("omega", "joint", "velocity")})
 
 DriverSpec = Annotated[
     Union[Annotated[OmegaDriver, Tag("omega")], Annotated[JointDriver, Tag("joint")],
@@ -219,26 +248,11 @@ DriverSpec = Annotated[
                   custom_error_message="a driver needs one of the keys omega, joint or velocity"),
 ]
 
-QUESTION_KINDS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose",
-                  "contact", "axis", "pole", "intrinsic")
-
-
-class QuestionSpec(Strict):
-    """One question; exactly one of the question keys is set (checked in `build`)."""
-
-    velocity: Optional[str] = None
-    acceleration: Optional[str] = None
-    omega: Optional[str] = None
-    alpha: Optional[str] = None
-    icr: Optional[str] = None
-    curvature: Optional[str] = None
-    decompose: Optional[str] = None
-    contact: Optional[str] = None
-    axis: Optional[str] = None
-    pole: Optional[str] = None
-    intrinsic: Optional[str] = None
-    relative_to: Optional[str] = None
-    moving: Optional[str] = None
+QuestionSpec = create_model(
+    "QuestionSpec", __base__=Strict, __module__=__name__,
+    __doc__="One question; exactly one of the question keys is set (checked in `build`).",
+    **dict.fromkeys(QUESTION_KINDS, (Optional[str], None)),
+    relative_to=(Optional[str], None), moving=(Optional[str], None))
 
 
 class SweepSpec(Strict):
