@@ -1,18 +1,51 @@
 """The kinds of joint, each in one module that says everything the kind means (its fields,
 capabilities, conditions at an instant, structure, centres, drawing and explanation), and
 the registry the rest of kinematika asks (`KINDS`, `kind`). Adding a kind is adding its
-module and its line below."""
+module and its line below.
+
+A kind's module is imported when a model first uses it (`kind`), or when every kind is asked
+for (iterating `KINDS`): a command starts without importing kinds it does not need.
+"""
 from __future__ import annotations
 
-from . import cam, contact, curved_slot, cylindrical, gear, prismatic, revolute, rolling, slot, spherical, weld, wheel
+from collections.abc import Iterator, Mapping
+from importlib import import_module
+
 from .base import AXES, JointGeometry, JointKind, Rows, rounding_hint
 
-KINDS: dict[str, JointKind] = {k.name: k for k in (
-    revolute.KIND, prismatic.KIND, slot.KIND, wheel.KIND, rolling.KIND, gear.KIND,
-    spherical.KIND, weld.KIND, cylindrical.KIND, contact.KIND, curved_slot.KIND, cam.KIND,
-)}
+MODULES = {                        # the kind's name in model files -> its module
+    "revolute": "revolute",
+    "prismatic": "prismatic",
+    "slot": "slot",
+    "wheel": "wheel",
+    "rolling": "rolling",
+    "gear": "gear",
+    "spherical": "spherical",
+    "weld": "weld",
+    "cylindrical": "cylindrical",
+    "contact": "contact",
+    "curved_slot": "curved_slot",
+    "cam": "cam",
+}
 
-__all__ = ["AXES", "KINDS", "JointGeometry", "JointKind", "Rows", "kind", "rounding_hint"]
+
+class Registry(Mapping):
+    """The kinds by name, each imported on first use."""
+
+    def __getitem__(self, name: str) -> JointKind:
+        module = MODULES[name]               # KeyError for an unknown kind, as a dict's
+        return import_module(f".{module}", __name__).KIND
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(MODULES)
+
+    def __len__(self) -> int:
+        return len(MODULES)
+
+
+KINDS: Mapping[str, JointKind] = Registry()
+
+__all__ = ["AXES", "KINDS", "MODULES", "JointGeometry", "JointKind", "Rows", "kind", "rounding_hint"]
 
 
 def kind(name: str) -> JointKind:

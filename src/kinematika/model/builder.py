@@ -205,5 +205,17 @@ def _list(value: Any) -> Any:
     return list(value) if isinstance(value, tuple) else value
 
 
-for _kind in KINDS.values():               # m.revolute(...), m.prismatic(...): each kind's `add`
-    setattr(Mechanism, _kind.name, _kind.builder())
+class _KindMethod:
+    """`Mechanism.revolute`, `Mechanism.cam`, …: the kind's `add` (its signature and
+    docstring), its module imported when the method is first looked up."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def __get__(self, obj: Any, owner: Any = None) -> Any:
+        method = KINDS[self.name].builder()
+        return method if obj is None else method.__get__(obj, owner)
+
+
+for _name in KINDS:                        # m.revolute(...), m.prismatic(...): each kind's `add`
+    setattr(Mechanism, _name, _KindMethod(_name))
