@@ -44,9 +44,9 @@ class JointGeometry:
     and the contact of a rolling pair."""
 
     joint: Any
-    at: Optional[tuple] = None
-    along: Optional[tuple] = None           # unit; fixed in body a (b for a `wheel`)
-    axis: Optional[tuple] = None            # unit; fixed in body a
+    at: Any = None                          # a tuple of numbers or formulas, or None
+    along: Any = None                       # unit; fixed in body a (b for a `wheel`)
+    axis: Any = None                        # unit; fixed in body a
     perps: list = field(default_factory=list)   # unit normals to `along` or `axis`
     contact: Any = None                     # a touching pair's contact (`Contact`, `Touch`)
     roller: float = 0.0                     # a cam follower's roller radius (drawn about `at`)
@@ -152,8 +152,8 @@ class JointKind:
             if given.get(key) is None and (need == "required" or (need == "required in 3D" and dim == 3)):
                 raise KinematikaError("schema", f"a {self.name} joint needs `{key}`", where)
         for key, value in given.items():
-            need = self.fields.get(key)
-            allowed = need in ("required", "optional") or (need is not None and dim == 3)
+            wanted = self.fields.get(key)
+            allowed = wanted in ("required", "optional") or (wanted is not None and dim == 3)
             if value is not None and not allowed:
                 if key == "internal":
                     owners = " and ".join(sorted(k.name for k in kinds() if "internal" in k.fields))
@@ -173,9 +173,10 @@ class JointKind:
         return []
 
     # from Python ---------------------------------------------------------------------------
-    def add(self, m: Any, a: str, b: str, id: Optional[str] = None, **fields: Any) -> str:
-        """Add a joint of this kind between bodies `a` and `b` to the `Mechanism` `m`; its id."""
-        return m.joint(self.name, a, b, id, **fields)
+    def add(self, m: Any, a: str, b: str, *args: Any, **fields: Any) -> str:
+        """Add a joint of this kind between bodies `a` and `b` to the `Mechanism` `m`; its id.
+        Each kind names its own fields (`Revolute.add(m, a, b, at, axis=None, id=None)`)."""
+        return m.joint(self.name, a, b, *args, **fields)
 
     def builder(self) -> Callable[..., str]:
         """The `Mechanism` method named after this kind (`m.revolute(...)`): its `add`."""

@@ -22,7 +22,8 @@ class Gear(Rolling):
     def conditions(self, dim: int) -> int:
         return 1
 
-    def add(self, m: Any, a: str, b: str, internal: bool = False, id: Optional[str] = None) -> str:
+    def add(self, m: Any, a: str, b: str, internal: bool = False,  # type: ignore[override]
+            id: Optional[str] = None) -> str:
         """The pitch circles of `a` and `b` mesh (`internal=True` for a ring gear)."""
         return m.joint(self.name, a, b, id, internal=internal)
 

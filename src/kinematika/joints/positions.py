@@ -43,7 +43,7 @@ def wrap(x: float) -> float:
     return (x + math.pi) % (2 * math.pi) - math.pi
 
 
-def continued(q: Any, key: str, psi0: float, d: tuple) -> float:
+def continued(q: Any, key: str, psi0: float, d: Any) -> float:
     """The angle of d, continued from the value remembered under `key` (no jump of 2π)."""
     psi = q.aux.get(key, psi0)
     return psi + wrap(math.atan2(d[1], d[0]) - psi)

@@ -114,14 +114,14 @@ class Touch:
 def touch_row(lv: Any, a: str, b: str, t: Touch) -> Any:
     """The condition of keeping the contact at level `lv` (see the module's formulas)."""
     n = t.normal
-    if t.radius_a is None and t.radius_b is None:
+    ca, cb = t.centre_a, t.centre_b
+    if ca is None and cb is None:
         raise KinematikaError("geometry", "two straight outlines touch along a line, not at a point: "
                               "join them by a prismatic joint", "")
-    if t.radius_a is None:                  # a straight: b's centre slides along a's line
-        return sliding(lv, a, b, t.centre_b, n)
-    if t.radius_b is None:                  # b straight: a's centre slides along b's line
-        return sliding(lv, b, a, t.centre_a, scale(-1, n))
-    ca, cb = t.centre_a, t.centre_b
+    if ca is None:                          # a straight: b's centre slides along a's line
+        return sliding(lv, a, b, cb, n)
+    if cb is None:                          # b straight: a's centre slides along b's line
+        return sliding(lv, b, a, ca, scale(-1, n))
     row = dot(sub(lv.point(b, cb), lv.point(a, ca)), n)
     if lv.accel:
         v = sub(lv.v(b, cb), lv.v(a, ca))
