@@ -118,9 +118,9 @@ def touch_row(lv: Any, a: str, b: str, t: Touch) -> Any:
     if ca is None and cb is None:
         raise KinematikaError("geometry", "two straight outlines touch along a line, not at a point: "
                               "join them by a prismatic joint", "")
-    if ca is None:                          # a straight: b's centre slides along a's line
+    if ca is None and cb is not None:       # a straight: b's centre slides along a's line
         return sliding(lv, a, b, cb, n)
-    if cb is None:                          # b straight: a's centre slides along b's line
+    if cb is None and ca is not None:       # b straight: a's centre slides along b's line
         return sliding(lv, b, a, ca, scale(-1, n))
     row = dot(sub(lv.point(b, cb), lv.point(a, ca)), n)
     if lv.accel:
