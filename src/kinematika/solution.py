@@ -21,6 +21,20 @@ ZERO = 1e-9   # the contract's threshold, relative to the model's own scale
 
 @dataclass
 class Solution:
+    """A mechanism solved at its instant: what every view reads.
+
+    The motion of every body is its twist at this instant, ω and v₀ (the velocity of the
+    body's point at the reference), and their derivatives α and a₀; a point P of body B then
+    moves as the rigid body does:
+
+        v_P = v₀ + ω × (P − O),   a_P = a₀ + α × (P − O) + ω × (ω × (P − O)).
+
+        >>> sol = kinematika.solve("examples/four_bar.yaml")
+        >>> sol.velocity("B@coupler"), sol.omega("rocker"), sol.acceleration("B", relative_to="crank")
+
+    Numbers are floats, or sympy formulas when the model has symbols (`symbolic`).
+    """
+
     model: Model
     inst: Instant
     motion: Motion
@@ -30,14 +44,17 @@ class Solution:
 
     @property
     def symbolic(self) -> bool:
+        """Whether the answers are exact formulas (a parameter left as a symbol)."""
         return self.inst.symbolic
 
     @property
-    def space(self):
+    def space(self) -> Any:
+        """The vectors' space (planar or 3D: `algebra.vectors.Space`)."""
         return self.inst.space
 
     @property
     def dof(self) -> int:
+        """The mechanism's degrees of freedom, counted by the rank of its joints' conditions."""
         return self.solver.analysis.diagnosis.dof if self.solver.analysis else 0
 
     # the motion of bodies and points --------------------------------------------------------
@@ -66,7 +83,8 @@ class Solution:
         where formulas are small, and revealed once; None for a numeric one."""
         return getattr(self.solver, "exact", None)
 
-    def _frame(self, relative_to: str | None) -> str | None:
+    def frame_of(self, relative_to: str | None) -> str | None:
+        """The body an answer is relative to, or None for the fixed frame (named or not)."""
         return None if relative_to in (None, self.model.frame) else relative_to
 
     def point(self, ref: PointRef | str) -> PointRef:
@@ -74,29 +92,40 @@ class Solution:
         return self.model.resolve_point(ref)
 
     def position(self, ref: PointRef | str) -> tuple:
+        """Where point `ref` is at this instant (its coordinates), e.g. ``sol.position("B")``."""
         name = ref.point if isinstance(ref, PointRef) else ref.partition("@")[0]
         return self.inst.points[name]
 
     def velocity(self, ref: PointRef | str, relative_to: str | None = None) -> tuple:
+        """v_P = v₀ + ω × (P − O) of material point `ref` (``"B@rocker"``, or a bare ``"B"``
+        shared by its bodies), as seen from body `relative_to` (default: the fixed frame):
+        ``sol.velocity("B", relative_to="crank")``."""
         ref = self.point(ref)
         if self.exact is not None:
             self.state(ref.body, relative_to)            # the names checked
-            raw = self.exact.velocity(ref.body, ref.point, self._frame(relative_to))
+            raw = self.exact.velocity(ref.body, ref.point, self.frame_of(relative_to))
             return self.exact.reveal.vector(raw)
         return self.motion.velocity(self.state(ref.body, relative_to), self.position(ref))
 
     def acceleration(self, ref: PointRef | str, relative_to: str | None = None) -> tuple:
+        """a_P = a₀ + α × (P − O) + ω × (ω × (P − O)) of material point `ref`, as seen from
+        `relative_to` (its acceleration relative to that body: drag and Coriolis taken out):
+        ``sol.acceleration("B@coupler")``."""
         ref = self.point(ref)
         if self.exact is not None:
             self.state(ref.body, relative_to)
-            raw = self.exact.acceleration(ref.body, ref.point, self._frame(relative_to))
+            raw = self.exact.acceleration(ref.body, ref.point, self.frame_of(relative_to))
             return self.exact.reveal.vector(raw)
         return self.motion.acceleration(self.state(ref.body, relative_to), self.position(ref))
 
     def omega(self, body: str, relative_to: str | None = None) -> Any:
+        """ω of `body` (planar: a number, counter-clockwise positive; 3D: a vector), relative
+        to `relative_to`: ω_B/F = ω_B − ω_F. ``sol.omega("coupler")``."""
         return self.state(body, relative_to).omega
 
     def alpha(self, body: str, relative_to: str | None = None) -> Any:
+        """α of `body`, relative to `relative_to` the derivative seen from that body:
+        α_B/F = α_B − α_F − ω_F × ω_B/F. ``sol.alpha("rocker")``."""
         return self.state(body, relative_to).alpha
 
     def point_fields(self) -> tuple[list[PointRef], Any, Any, Any]:
@@ -156,12 +185,15 @@ class Solution:
         return _norm([float(p) for p in parts]) <= ZERO * scale
 
     def speed_scale(self) -> float:
+        """The mechanism's characteristic speed (`scales`)."""
         return self.scales()[0]
 
     def rate_scale(self) -> float:
+        """Its characteristic rate: the speed over the model's size."""
         return self.scales()[0] / self.inst.scale
 
     def accel_scale(self) -> float:
+        """Its characteristic acceleration (`scales`)."""
         return self.scales()[1]
 
     def shown_accel_scale(self) -> float:
@@ -173,6 +205,7 @@ class Solution:
         return _norm(self.inst.numvec(vec))
 
     def norm(self, vec: tuple) -> Any:
+        """|vec|, as a number or a formula."""
         return self.inst.backend.sqrt(dot(vec, vec))
 
 

@@ -10,7 +10,7 @@ from ..solution import Solution
 
 def contact(sol: Solution, q: Question) -> dict[str, Any]:
     joint = sol.model.joint(q.name)
-    c = sol.solver.geos[joint.id].contact
+    c = sol.geometry(joint.id).contact
     if c is None:
         raise TypeError(f"{q.where}: joint {joint.id} has no contact")
     rel = None if q.relative_to in (None, sol.model.frame) else q.relative_to

@@ -39,7 +39,7 @@ def _in_stand_ins(sol: Solution, body: str, relative_to: str | None,
     when ω is zero at the probe (the general rules decide then)."""
     world = sol.exact
     sol.state(body, relative_to)                          # the names checked
-    state = world.motion.state(body, sol._frame(relative_to))
+    state = world.motion.state(body, sol.frame_of(relative_to))
     w, v0 = state.omega, state.v0
     if abs(world.inst.num(w)) <= 1e-9 * sol.rate_scale():
         return None
