@@ -132,3 +132,13 @@ def test_a_study_that_computed_part_says_how_to_resume(monkeypatch, tmp_path):
     import pyarrow.parquet as pq
 
     assert pq.read_table(out).num_rows == 144 and not (tmp_path / "s.parquet.parts").exists()
+
+
+def test_a_dxf_without_ezdxf_says_what_to_install(tmp_path):
+    """The cam's profile for a workshop needs the `cad` extra; the rest of the command runs."""
+    line = one_line(without("ezdxf", "cam", str(ROOT / "examples" / "cam_roller_follower.yaml"),
+                            "--dxf", str(tmp_path / "cam.dxf")))
+    assert "needs ezdxf, which is not installed" in line and "'.[cad]'" in line
+    done = without("ezdxf", "cam", str(ROOT / "examples" / "cam_roller_follower.yaml"),
+                   "--csv", str(tmp_path / "cam.csv"))
+    assert done.returncode == 0 and (tmp_path / "cam.csv").exists()
