@@ -91,7 +91,10 @@ class Solution:
             self.state(ref.body, relative_to)
             raw = self.exact.acceleration(ref.body, ref.point, self._frame(relative_to))
             return self.exact.reveal.vector(raw)
-        return self.motion.acceleration(self.state(ref.body, relative_to), self.position(ref))
+        if self.motion.terms.mechanics:
+            return self.motion.acceleration(self.state(ref.body, relative_to), self.position(ref))
+        self.state(ref.body, relative_to)                # the names checked
+        return self.motion.point_acceleration(ref.body, self.position(ref), self._frame(relative_to))
 
     def omega(self, body: str, relative_to: str | None = None) -> Any:
         return self.state(body, relative_to).omega
