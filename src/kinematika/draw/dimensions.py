@@ -23,6 +23,7 @@ OFFSET = 0.09        # a length's line: this far (drawing sizes) off the measure
 GAP = 0.015          # extension lines start this far from their points
 OVERSHOOT = 0.02     # and end this far past the dimension line
 RADIUS = 0.16        # an angle's arc (drawing sizes), at most 0.6 of its arm
+TEXT_GAP = 0.028     # a length's text stands this far off its line, outwards (drawing sizes)
 
 
 @dataclass(frozen=True)
@@ -82,7 +83,7 @@ def _length(d: Dimension, size: float, centre: np.ndarray) -> Placed:
             rotation += 180
     lines = [(p + _toward(p, a) * GAP * size, a + _toward(p, a) * OVERSHOOT * size),
              (q + _toward(q, b) * GAP * size, b + _toward(q, b) * OVERSHOOT * size)]
-    return Placed(lines, np.array([a, b]), (a + b) / 2, rotation)
+    return Placed(lines, np.array([a, b]), (a + b) / 2 + n * TEXT_GAP * size, rotation)
 
 
 def _toward(p: np.ndarray, a: np.ndarray) -> np.ndarray:
@@ -100,7 +101,7 @@ def _angle(d: Dimension, size: float) -> Placed:
     arc = v + radius * np.column_stack([np.cos(t), np.sin(t)])
     ref = v + 1.35 * radius * np.array([math.cos(d.reference), math.sin(d.reference)])
     middle = d.reference + sweep / 2
-    text_at = v + (radius + 0.05 * size) * np.array([math.cos(middle), math.sin(middle)])
+    text_at = v + (radius + 0.07 * size) * np.array([math.cos(middle), math.sin(middle)])
     return Placed([(v, ref)], arc, text_at, 0.0)
 
 
@@ -129,4 +130,4 @@ def paint_dimensions(ax: Any, dimensions: list[Dimension], size: float, centre: 
                                     mutation_scale=9), zorder=6)
         ax.text(pl.text_at[0], pl.text_at[1], d.text, rotation=pl.rotation, rotation_mode="anchor",
                 ha="center", va="center", fontsize=LABEL_SIZE, color=DIMENSION, zorder=7,
-                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.9))
+                bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.85))

@@ -56,6 +56,11 @@ class Exercise:
         return graded(self.section.ask, len(self.model.questions))
 
     @property
+    def title(self) -> str:
+        """The exercise's title in its language: the section's, else the model's name."""
+        return self.section.title.get(self.lang, self.model.name)
+
+    @property
     def tolerance(self) -> float:
         return self.section.tolerance
 

@@ -39,7 +39,7 @@ def figure_name(number: int) -> str:
 def quiz_xml(exercise: Any, figures: dict[int, bytes], solutions: Optional[dict[int, str]],
              mistakes: dict[int, list[Mistaken]]) -> str:
     """The quiz: a category, then one Cloze question per variant."""
-    name = exercise.model.name
+    name = exercise.title
     category = f"$course$/top/kinematika/{name} (seed {exercise.seed})"
     parts = ['<?xml version="1.0" encoding="UTF-8"?>\n<quiz>\n',
              '  <question type="category">\n    <category>\n      <text>', _xml(category),
@@ -54,7 +54,7 @@ def quiz_xml(exercise: Any, figures: dict[int, bytes], solutions: Optional[dict[
 def _question(exercise: Any, variant: Any, figure: bytes, solution: str, mistakes: list[Mistaken]) -> str:
     lang = exercise.lang
     cat = catalogue(lang)
-    title = f"{exercise.model.name} — {cat.format('sheet-variant', {'n': variant.number})}"
+    title = f"{exercise.title} — {cat.format('sheet-variant', {'n': variant.number})}"
     text = question_text(exercise, variant, lang, mistakes)
     file = figure_name(variant.number)
     return (f'  <question type="cloze">\n'
@@ -79,7 +79,7 @@ def question_text(exercise: Any, variant: Any, lang: str, mistakes: list[Mistake
         items.append(f"<li>{escape(a.words)}: {fields}</li>")
     stated = variant.all_stated(exercise)
     return (statement_html(exercise, stated, lang)
-            + f'<p><img src="@@PLUGINFILE@@/{figure_name(variant.number)}" alt="{escape(exercise.model.name)}"'
+            + f'<p><img src="@@PLUGINFILE@@/{figure_name(variant.number)}" alt="{escape(exercise.title)}"'
             f' style="max-width:100%;height:auto"></p>'
             + f"<p>{escape(units_note(exercise, lang))}</p>"
             + f"<p><b>{escape(cat.format('sheet-find'))}</b></p><ol>{''.join(items)}</ol>")

@@ -64,7 +64,7 @@ def _page(title: str, lang: str, body: str) -> str:
 
 def _header(exercise: Any, number: int, lang: str, title_key: str = "sheet-title") -> str:
     cat = catalogue(lang)
-    return (f"<header><h1>{escape(cat.format(title_key))}: {escape(exercise.model.name)}</h1>"
+    return (f"<header><h1>{escape(cat.format(title_key))}: {escape(exercise.title)}</h1>"
             f'<span class="variant">{escape(cat.format("sheet-variant", {"n": number}))}</span></header>')
 
 
@@ -88,11 +88,11 @@ def sheets_html(exercise: Any, figures: dict[int, bytes], students: list[Student
             f'<p class="student"><span>{escape(cat.format("sheet-student"))}: <b>{escape(s.label)}</b></span>'
             f'<span>{escape(cat.format("sheet-name"))}:</span><span class="line"></span></p>'
             f"{statement_html(exercise, v.all_stated(exercise), lang)}"
-            f'<figure><img src="{png_uri(figures[v.number])}" alt="{escape(exercise.model.name)}"></figure>'
+            f'<figure><img src="{png_uri(figures[v.number])}" alt="{escape(exercise.title)}"></figure>'
             f'<p class="note">{escape(units_note(exercise, lang))}</p>'
             f"<h2>{escape(cat.format('sheet-find'))}</h2>"
             f'<table class="answers">{"".join(rows)}</table></section>\n')
-    return _page(exercise.model.name, lang, "".join(pages))
+    return _page(exercise.title, lang, "".join(pages))
 
 
 def key_html(exercise: Any, figures: dict[int, bytes], solutions: dict[int, str]) -> str:
@@ -114,8 +114,8 @@ def key_html(exercise: Any, figures: dict[int, bytes], solutions: dict[int, str]
         pages.append(
             f'<section class="sheet">{_header(exercise, v.number, lang, "key-title")}'
             f"{statement_html(exercise, v.all_stated(exercise), lang)}"
-            f'<figure><img src="{png_uri(figures[v.number])}" alt="{escape(exercise.model.name)}"></figure>'
+            f'<figure><img src="{png_uri(figures[v.number])}" alt="{escape(exercise.title)}"></figure>'
             f"<h2>{escape(cat.format('key-values'))}</h2>"
             f'<table class="key"><tr>{head}<th></th></tr>{"".join(rows)}</table>'
             f"<h2>{escape(cat.format('key-solution'))}</h2>{solutions.get(v.number, '')}</section>\n")
-    return _page(f"{cat.format('key-title')}: {exercise.model.name}", lang, "".join(pages))
+    return _page(f"{cat.format('key-title')}: {exercise.title}", lang, "".join(pages))

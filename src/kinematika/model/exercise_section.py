@@ -3,6 +3,7 @@ section (`kinematika exercise`, docs/exercises.md), checked here, and the units 
 statement gives its data in.
 
     exercise:
+      title: {en: "P pair with Coriolis", eu: "P bikotea Coriolisekin"}   # default: the model's name
       statement: {en: "The guide M turns about A at ω = {w} …", eu: "…"}
       units: {s: mm, beta: deg, w: rad/s}       # how the statement states each parameter
       length: m                                 # the model's length unit (default m)
@@ -89,6 +90,7 @@ class ExerciseSection:
 
     statement: dict[str, str] = field(default_factory=dict)
     units: dict[str, Unit] = field(default_factory=dict)
+    title: dict[str, str] = field(default_factory=dict)
     length: Unit = UNITS["m"]
     ask: Optional[tuple[int, ...]] = None          # 1-based positions in the model's `ask`
     tolerance: float = 0.01
@@ -105,6 +107,10 @@ def exercise_section(raw: Any, params: dict[str, Parameter], questions: int,
     and points; None when the model has none."""
     if raw is None:
         return None
+    for lang in raw.title:
+        if lang not in LANGS:
+            raise KinematikaError("schema", f"unknown language {lang!r} (languages: {', '.join(LANGS)})",
+                                  f"exercise.title.{lang}")
     statement = {}
     for lang, text in raw.statement.items():
         where = f"exercise.statement.{lang}"
@@ -142,7 +148,7 @@ def exercise_section(raw: Any, params: dict[str, Parameter], questions: int,
             if name not in points:
                 raise KinematikaError("schema", f"unknown point {name!r}", f"{where}.between")
         marks.append(DimensionMark(tuple(d.between), d.along or "aligned", d.label))
-    return ExerciseSection(statement, units, length, ask, tolerance, tuple(marks))
+    return ExerciseSection(statement, units, dict(raw.title), length, ask, tolerance, tuple(marks))
 
 
 def _unit(text: str, where: str) -> Unit:

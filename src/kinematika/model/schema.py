@@ -273,6 +273,7 @@ class DimensionSpec(Strict):
 class ExerciseSpec(Strict):
     """`exercise`: what `kinematika exercise` states and grades (docs/exercises.md)."""
 
+    title: dict[str, str] = Field(default_factory=dict)
     statement: dict[str, str] = Field(default_factory=dict)
     units: dict[str, str] = Field(default_factory=dict)
     length: str = "m"

@@ -147,6 +147,7 @@ DimensionSpec, dimension_spec = record('DimensionSpec', {
     'label': (optional(exact(str)), None),
 })
 ExerciseSpec, exercise_spec = record('ExerciseSpec', {
+    'title': (mapping(exact(str)), dict),
     'statement': (mapping(exact(str)), dict),
     'units': (mapping(exact(str)), dict),
     'length': (exact(str), 'm'),
