@@ -31,6 +31,20 @@ def four_bar30():
     return make(FOUR_BAR, FOUR_BAR_VARY, 30, 3)
 
 
+@pytest.fixture(scope="session")
+def folders(tmp_path_factory, p_pair30, four_bar30):
+    """The two exercises written (`exercise -o DIR`, without worked solutions and PDF, which
+    tests of their own make for a few variants): {"p_pair": DIR, "four_bar": DIR}."""
+    from kinematika.exercise import write_exercise
+
+    out = {}
+    for name, ex in (("p_pair", p_pair30), ("four_bar", four_bar30)):
+        folder = tmp_path_factory.mktemp(name)
+        write_exercise(ex, folder, solutions=False, pdf=False)
+        out[name] = folder
+    return out
+
+
 def p_pair_data(stated, fixed=None):
     """A P-pair variant's data in SI units and radians, from its stated values (mm, degrees)."""
     data = {"s": 400, "beta": 30, "ex": 100, "ey": 400, "w": 4, "al": -2, **(fixed or {})}

@@ -13,9 +13,10 @@ and `import_multianswer`; the Cloze syntax of `question/type/multianswer/questio
   value with its absolute margin (Moodle's numerical tolerance is absolute: the relative
   tolerance times the answer's size), then each usual mistake's value (`%0%`, no marks) with
   the feedback that names it, so that Moodle itself tells a student which mistake their
-  number shows. Numbers are written as Moodle's `NUMBER_REGEX` reads them; the feedback's
-  `}`, `~`, `#`, `\\` and `"` are written as HTML character references, which Moodle's
-  parser does not take for delimiters and then decodes (`html_entity_decode`).
+  number shows. Numbers are written as Moodle's `NUMBER_REGEX` reads them; a feedback's
+  HTML has its `}`, `~`, `#`, `\\`, `&`, `<`, `>` and `"` written as numeric character
+  references, which Moodle's parser does not take for delimiters and then decodes
+  (`html_entity_decode`) back into that HTML.
 """
 from __future__ import annotations
 
@@ -29,7 +30,10 @@ from .mistakes import Mistaken
 from .statement import asked, statement_html, units_note
 
 PENALTY = "0.3333333"
-CLOZE_SPECIAL = {"}": "&#125;", "~": "&#126;", "#": "&#35;", "\\": "&#92;", '"': "&quot;"}
+CLOZE_SPECIAL = set('}~#&<>"')
+# a backslash reaches the page as the reference &#92;: Moodle drops a backslash before } or #
+# once the references are decoded, so it is decoded to that reference, which a browser shows
+BACKSLASH = "&#38;#92;"
 
 
 def figure_name(number: int) -> str:
@@ -111,11 +115,13 @@ def distinct_mistakes(row: Row, tolerance: float, mistakes: list[Mistaken]) -> l
 
 
 def cloze_text(text: str) -> str:
-    """A feedback text inside a Cloze subquestion: HTML-escaped, and the characters the
-    Cloze parser reads as delimiters (`}`, `~`, `#`) or escapes (`\\`, `"`) as character
-    references."""
-    out = escape(text, quote=False)
-    return "".join(CLOZE_SPECIAL.get(c, c) for c in out)
+    """A plain feedback text inside a Cloze subquestion: as HTML (`escape`), then with the
+    characters the Cloze parser reads as delimiters (`}`, `~`, `#`) and the HTML's own (`&`,
+    `<`, `>`, `"`) as numeric character references, which the parser passes over and
+    `html_entity_decode` turns back into that HTML; a backslash (which Moodle removes before
+    `}` and `#` after decoding) as a reference that decodes to the reference `&#92;`."""
+    return "".join(BACKSLASH if c == "\\" else f"&#{ord(c)};" if c in CLOZE_SPECIAL else c
+                   for c in escape(text, quote=False))
 
 
 def _cdata(text: str) -> str:
