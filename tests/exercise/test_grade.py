@@ -6,7 +6,6 @@ from __future__ import annotations
 import math
 import random
 
-import numpy as np
 import pytest
 
 from kinematika.errors import KinematikaError
@@ -48,7 +47,7 @@ def _rows(worlds):
     out = {kind: [derive.rows(w) for w in ws if w is not None] for kind, ws in worlds.items()}
     right = out["right"][0]
     swapped = {}
-    for q, (value, size) in right.items():
+    for q, (_, size) in right.items():
         stem, _, axis = q.rpartition(".")
         if axis in ("x", "y"):
             swapped[q] = right[f"{stem}.{'y' if axis == 'x' else 'x'}"][0], size

@@ -51,7 +51,7 @@ def key_of(ex):
 
 
 def test_the_quizzes_are_moodle_xml_with_one_cloze_question_per_variant(quizzes):
-    for ex, text in quizzes:
+    for _, text in quizzes:
         root = ET.fromstring(text.encode())
         assert root.tag == "quiz"
         questions = root.findall("question")
@@ -69,7 +69,7 @@ def test_the_quizzes_are_moodle_xml_with_one_cloze_question_per_variant(quizzes)
 
 
 def test_question_texts_are_cdata_and_their_figures_are_files_they_show(quizzes):
-    for ex, text in quizzes:
+    for _, text in quizzes:
         assert text.count("<questiontext format=\"html\">\n      <text><![CDATA[") == 30
         for q in ET.fromstring(text.encode()).findall("question[@type='cloze']"):
             body = q.findtext("questiontext/text")

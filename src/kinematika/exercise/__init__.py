@@ -17,4 +17,4 @@ from .folder import load_exercise, write_exercise
 from .grading import grade
 from .mistakes import KINDS
 
-__all__ = ["Exercise", "Variant", "make_exercise", "write_exercise", "load_exercise", "grade", "KINDS"]
+__all__ = ["KINDS", "Exercise", "Variant", "grade", "load_exercise", "make_exercise", "write_exercise"]

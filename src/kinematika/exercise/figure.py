@@ -26,12 +26,14 @@ DPI = 120
 def figure_png(sol: Any, dimensions: list[Dimension], lang: str) -> bytes:
     """The statement's figure as PNG bytes."""
     from ..draw import DrawOptions, draw
+    from ..draw.lock import MATPLOTLIB
 
     options = DrawOptions(velocities=False, accelerations=False, centres=False, curvature=False,
                           bare=True, lang=lang, width=WIDTH, dimensions=dimensions)
-    fig = draw(sol, None, options)
     out = io.BytesIO()
-    fig.savefig(out, format="png", dpi=DPI, facecolor="white", metadata={"Software": None})
+    with MATPLOTLIB:
+        draw(sol, None, options).savefig(out, format="png", dpi=DPI, facecolor="white",
+                                         metadata={"Software": None})
     return out.getvalue()
 
 

@@ -27,7 +27,7 @@ from typing import Any, Callable, Optional
 from ..engine.terms import Terms
 from ..errors import KinematikaError
 from ..model.expressions import Expr, parse
-from ..model.model import Driver, Joint, Model
+from ..model.model import Joint, Model
 from .key import Row, key_rows
 
 KINDS = ("coriolis-omitted", "coriolis-doubled", "normal-omitted", "sense-reversed", "drag-as-absolute",
