@@ -39,6 +39,8 @@ class Dimension:
     along: str = "aligned"
     reference: float = 0.0
     sweep: Optional[float] = None           # default: from `reference` to the direction of `end`
+    side: Optional[str] = None              # an aligned length: "left" or "right" of start→end
+                                            # (default: away from the mechanism's centre)
 
 
 @dataclass(frozen=True)
@@ -49,6 +51,7 @@ class Placed:
     arrow: np.ndarray                       # the dimension line or arc, a polyline (n, 2)
     text_at: np.ndarray
     rotation: float                         # degrees
+    align: tuple[str, str] = ("center", "center")   # the text's (ha, va) at `text_at`
 
 
 def placed(d: Dimension, size: float, centre: np.ndarray) -> Placed:
@@ -72,8 +75,8 @@ def _length(d: Dimension, size: float, centre: np.ndarray) -> Placed:
         n[other] = out
         rotation = 0.0 if axis == 0 else 90.0
     else:
-        n = perpendicular(unit(q - p))
-        if float(np.dot(mid - centre, n)) < 0:
+        n = perpendicular(unit(q - p))               # the left of p→q
+        if d.side == "right" or (d.side is None and float(np.dot(mid - centre, n)) < 0):
             n = -n
         a, b = p + n * OFFSET * size, q + n * OFFSET * size
         rotation = math.degrees(math.atan2(q[1] - p[1], q[0] - p[0]))
@@ -101,8 +104,11 @@ def _angle(d: Dimension, size: float) -> Placed:
     arc = v + radius * np.column_stack([np.cos(t), np.sin(t)])
     ref = v + 1.35 * radius * np.array([math.cos(d.reference), math.sin(d.reference)])
     middle = d.reference + sweep / 2
-    text_at = v + (radius + 0.07 * size) * np.array([math.cos(middle), math.sin(middle)])
-    return Placed([(v, ref)], arc, text_at, 0.0)
+    out = np.array([math.cos(middle), math.sin(middle)])
+    text_at = v + (radius + 0.02 * size) * out
+    # the text starts just outside the arc and runs away from it (not across the arms)
+    align = ("left" if out[0] >= 0 else "right", "bottom" if out[1] >= 0.5 else "top" if out[1] <= -0.5 else "center")
+    return Placed([(v, ref)], arc, text_at, 0.0, align)
 
 
 def reach(dimensions: list[Dimension], size: float, centre: np.ndarray) -> list[np.ndarray]:
@@ -112,6 +118,23 @@ def reach(dimensions: list[Dimension], size: float, centre: np.ndarray) -> list[
         pl = placed(d, size, centre)
         out += [pt for line in pl.lines for pt in line] + list(pl.arrow) + [pl.text_at]
     return out
+
+
+def avoid_dimensions(board: Any, ax: Any, dimensions: list[Dimension], size: float, centre: np.ndarray) -> None:
+    """Keep the figure's other labels off the dimensions' lines and texts."""
+    from .labels import text_extent
+
+    box = ax.get_window_extent()
+    per_point = (ax.get_xlim()[1] - ax.get_xlim()[0]) / (box.width * 72.0 / ax.figure.dpi)
+    for d in dimensions:
+        pl = placed(d, size, centre)
+        board.avoid(*pl.arrow, weight=3.0)
+        width, height = text_extent(d.text, LABEL_SIZE)
+        turn = math.radians(pl.rotation)
+        along = width * per_point * np.array([math.cos(turn), math.sin(turn)])
+        start = {"left": 0.0, "center": -0.5, "right": -1.0}[pl.align[0]]
+        board.avoid(pl.text_at + start * along, pl.text_at + (start + 1) * along, weight=8.0,
+                    radius=0.6 * height)
 
 
 def paint_dimensions(ax: Any, dimensions: list[Dimension], size: float, centre: np.ndarray) -> None:
@@ -129,5 +152,5 @@ def paint_dimensions(ax: Any, dimensions: list[Dimension], size: float, centre: 
                     arrowprops=dict(arrowstyle=style, color=DIMENSION, lw=0.9, shrinkA=0, shrinkB=0,
                                     mutation_scale=9), zorder=6)
         ax.text(pl.text_at[0], pl.text_at[1], d.text, rotation=pl.rotation, rotation_mode="anchor",
-                ha="center", va="center", fontsize=LABEL_SIZE, color=DIMENSION, zorder=7,
+                ha=pl.align[0], va=pl.align[1], fontsize=LABEL_SIZE, color=DIMENSION, zorder=7,
                 bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.85))

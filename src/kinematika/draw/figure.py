@@ -22,7 +22,7 @@ from matplotlib.lines import Line2D
 from .bodies import paint_bodies
 from .lock import MATPLOTLIB
 from .canvas import Canvas
-from .dimensions import paint_dimensions, reach
+from .dimensions import avoid_dimensions, paint_dimensions, reach
 from .geometry import Box
 from .joints import paint_joints
 from .marks import KENNEDY, NORMAL, mark_groups, paint_axes, paint_curvatures, paint_marks
@@ -69,6 +69,7 @@ def _render(scene: Scene, options: DrawOptions) -> Figure:
     paint_vectors(cv, drawn)
     if dimensions:
         paint_dimensions(ax, dimensions, scene.size, Box(*scene.box).centre)
+        avoid_dimensions(cv.board, ax, dimensions, scene.size, Box(*scene.box).centre)
     _place_labels(fig, ax, cv)
     if scene.dim == 3:
         _triad(fig, scene)

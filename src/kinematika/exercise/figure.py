@@ -19,8 +19,8 @@ from ..model.constructions import CircleLine, Polar, TwoCircles
 from ..model.expressions import Expr
 from .stated import number_text, stated_text
 
-WIDTH = 6.0         # inches
-DPI = 120
+WIDTH = 4.6         # inches: printed about at its size, so that its text reads as 9 pt
+DPI = 150
 
 
 def figure_png(sol: Any, dimensions: list[Dimension], lang: str) -> bytes:
@@ -32,8 +32,8 @@ def figure_png(sol: Any, dimensions: list[Dimension], lang: str) -> bytes:
                           bare=True, lang=lang, width=WIDTH, dimensions=dimensions)
     out = io.BytesIO()
     with MATPLOTLIB:
-        draw(sol, None, options).savefig(out, format="png", dpi=DPI, facecolor="white",
-                                         metadata={"Software": None})
+        draw(sol, None, options).savefig(out, format="png", dpi=DPI, facecolor="white", bbox_inches="tight",
+                                         pad_inches=0.08, metadata={"Software": None})
     return out.getvalue()
 
 
@@ -67,7 +67,8 @@ def dimensions_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str
     out: list[Dimension] = []
     seen: set = set()
 
-    def length(p: str, q: str, name: Optional[str], along: str = "aligned", text: Optional[str] = None) -> None:
+    def length(p: str, q: str, name: Optional[str], along: str = "aligned", text: Optional[str] = None,
+               side: Optional[str] = None) -> None:
         key = (frozenset((p, q)), along)
         if key in seen or at[p] == at[q]:
             return
@@ -76,20 +77,21 @@ def dimensions_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str
             gap = math.dist(at[p], at[q])
         else:
             gap = abs(at[q]["xy".index(along)] - at[p]["xy".index(along)])
-        out.append(Dimension("length", at[p], at[q], text or labels.of(name, gap, False), along))
+        out.append(Dimension("length", at[p], at[q], text or labels.of(name, gap, False), along, side=side))
 
     origin = next((name for name, c in model.points.items() if isinstance(c, tuple)
                    and all(e.text.strip() in ("0", "0.0") for e in c)), None)
     for name, c in model.points.items():
         if isinstance(c, Polar) and isinstance(c.origin, str):
-            length(c.origin, name, _name(c.distance))
             reference = 0.0
             if c.reference is not None and all(isinstance(r, str) for r in c.reference):
                 a, b = at[c.reference[0]], at[c.reference[1]]
                 reference = math.atan2(b[1] - a[1], b[0] - a[0])
-            sweep = float(inst.value(c.angle, f"points.{name}.angle"))
+            sweep = math.remainder(float(inst.value(c.angle, f"points.{name}.angle")), 2 * math.pi)
+            # the length on the side of the arm away from the angle's arc
+            length(c.origin, name, _name(c.distance), side="left" if sweep >= 0 else "right")
             out.append(Dimension("angle", at[c.origin], at[name], labels.of(_name(c.angle), sweep, True),
-                                 reference=reference, sweep=math.remainder(sweep, 2 * math.pi)))
+                                 reference=reference, sweep=sweep))
         elif isinstance(c, TwoCircles):
             for centre, radius in zip(c.centers, c.radii):
                 if isinstance(centre, str):

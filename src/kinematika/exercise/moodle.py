@@ -78,9 +78,9 @@ def question_text(exercise: Any, variant: Any, lang: str, mistakes: list[Mistake
     cat = catalogue(lang)
     items = []
     for a in asked(exercise, variant.rows, lang):
-        fields = "; ".join(f"{escape(words)} = {cloze(row, exercise.tolerance, mistakes, lang)}&nbsp;"
-                           f"{escape(row.unit(exercise.section.length.name))}" for row, words in a.parts)
-        items.append(f"<li>{escape(a.words)}: {fields}</li>")
+        fields = "; ".join(f"{escape(words) + ' = ' if words else ''}{cloze(row, exercise.tolerance, mistakes, lang)}"
+                           f"&nbsp;{escape(row.unit(exercise.section.length.name))}" for row, words in a.parts)
+        items.append(f"<li>{escape(a.words)}{': ' if a.parts[0][1] else ' = '}{fields}</li>")
     stated = variant.all_stated(exercise)
     return (statement_html(exercise, stated, lang)
             + f'<p><img src="@@PLUGINFILE@@/{figure_name(variant.number)}" alt="{escape(exercise.title)}"'

@@ -15,10 +15,12 @@ _RULE = re.compile(r"([^{}]+)\{([^{}]*)\}")
 
 def solution_html(exercise: Any, variant: Any, lang: str) -> str:
     """The worked solution of `variant` as an HTML fragment (`div.kinematika-solution`)."""
+    import dataclasses
+
     from ..commands import How, explain_text
 
-    page = explain_text(exercise.model, lang, "html", how=How(set=variant.sets),
-                        length_unit=exercise.section.length.name)
+    titled = dataclasses.replace(exercise.model, name=exercise.title)     # the exercise's title
+    page = explain_text(titled, lang, "html", how=How(set=variant.sets), length_unit=exercise.section.length.name)
     return fragment(page)
 
 
