@@ -8,6 +8,7 @@
     sheets.html     one page per student; sheets.pdf when Chromium prints it
     key.html        the answer key with the worked solutions; key.pdf likewise
     figures/        each variant's figure (variant-001.png …)
+    links.txt       variant, then the link fragment that opens it in the page (`kinematika app`)
     students.csv    student,variant (when the students are named)
 
 `kinematika grade DIR` reads it back: the model, exercise.json and variants.csv give the
@@ -58,6 +59,8 @@ def write_exercise(ex: Exercise, out: Path, names: Optional[list[str]] = None, s
     if names:
         _text(out / "students.csv", "student,variant\n" + "".join(
             f"{_csv_field(s.label)},{s.variant}\n" for s in students))
+    if ex.source is not None:
+        _text(out / "links.txt", "".join(f"{v.number}\t{page_link(ex, v.number)}\n" for v in ex.variants))
     _text(out / "sheets.html", sheets_html(ex, figures, students))
     _text(out / "key.html", key_html(ex, figures, worked))
     notes = [f"wrote {len(ex.variants)} variants to {out}"]
@@ -70,6 +73,25 @@ def write_exercise(ex: Exercise, out: Path, names: Optional[list[str]] = None, s
         else:
             notes.append(reason)
     return notes
+
+
+def page_link(ex: Exercise, number: int) -> str:
+    """The fragment that opens variant `number` in the page's exercise mode (append it to
+    the address of `kinematika app`): the model deflated and base64url-encoded, as the
+    page's own links hold a model (web/static/js/link.js), with `vary`, `seed`, `variant`
+    and `lang`."""
+    import base64
+    import zlib
+    from urllib.parse import urlencode
+
+    packer = zlib.compressobj(9, zlib.DEFLATED, -15)             # raw deflate, as the page's
+    packed = packer.compress(ex.source.read_bytes()) + packer.flush()
+    model = base64.urlsafe_b64encode(packed).rstrip(b"=").decode()
+    suffix = ex.source.suffix.lower().lstrip(".")
+    fmt = {"yml": "yaml"}.get(suffix, suffix)
+    query = urlencode([("exercise", "1"), *(("vary", m) for m in meta(ex)["vary"]), ("seed", ex.seed),
+                       ("variant", number), ("lang", ex.lang)])
+    return f"#{query}&format={fmt}&model={model}"
 
 
 def _text(path: Path, text: str) -> None:

@@ -1,0 +1,61 @@
+"""The page's exercise mode in Chromium: a link of `kinematika exercise`'s links.txt opens a
+variant over the page, typed answers are checked (a right one, the Coriolis term left out)
+and the worked solution shown."""
+from __future__ import annotations
+
+import pytest
+
+from .conftest import P_PAIR, P_PAIR_VARY
+
+pytestmark = pytest.mark.browser
+
+
+def test_the_page_opens_a_link_checks_the_answers_and_shows_the_solution(tmp_path, p_pair30):
+    from kinematika.exercise import write_exercise
+    from kinematika.exercise.printing import FLAGS, chromium
+    from kinematika.web.server import Start
+    from tests.web.page_server import PageServer
+
+    if chromium() is None:
+        pytest.skip("Chromium is not installed (bash scripts/browser.sh)")
+    from .conftest import make
+
+    ex = make(P_PAIR, P_PAIR_VARY, 2, 7, "eu")
+    write_exercise(ex, tmp_path, solutions=False, pdf=False)
+    fragment = (tmp_path / "links.txt").read_text().splitlines()[1].split("\t")[1]
+    v = ex.variants[1]
+    mistakes = {m.kind: m for m in ex.mistakes(v)}
+    server = PageServer(Start())
+    from playwright.sync_api import sync_playwright
+
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
+            page = browser.new_page(viewport={"width": 1000, "height": 1400})
+            page.goto(server.url + fragment)
+            page.get_by_test_id("exercise-input-q1").fill(repr(v.rows[0].value).replace(".", ","))
+            page.get_by_test_id("exercise-input-q2").fill(repr(mistakes["coriolis-omitted"].rows["q2"].value))
+            page.get_by_test_id("exercise-check").click()
+            page.get_by_test_id("exercise-score").filter(has_text="10").wait_for()
+            assert page.get_by_test_id("exercise-mark-q1").text_content().startswith("✔")
+            assert page.get_by_test_id("exercise-mark-q2").get_attribute("data-diagnosis") == "coriolis-omitted"
+            assert _opened(page.get_by_test_id("exercise-link").get_attribute("href")) == _opened(fragment)
+            page.screenshot(path=str(tmp_path / "exercise-page.png"), full_page=True)
+            page.get_by_test_id("exercise-show").click()
+            page.locator("[data-testid=exercise-solution] iframe").wait_for()
+            browser.close()
+    finally:
+        server.stop()
+
+
+def _opened(fragment):
+    """What a link holds: its parameters, the model's text inflated (browsers and zlib
+    deflate the same text to different bytes)."""
+    import base64
+    import zlib
+    from urllib.parse import parse_qs
+
+    params = parse_qs(fragment.lstrip("#"))
+    packed = params.pop("model")[0]
+    text = zlib.decompress(base64.urlsafe_b64decode(packed + "=" * (-len(packed) % 4)), -15).decode()
+    return params, text
