@@ -1,6 +1,7 @@
 """The renders docs/exercises.md shows: a sheet and a page of the key in eu and ca, the
-four-bar's statement figure, and one quiz question as Moodle shows it with three answers
-(right, the Coriolis term left out, degrees taken as radians). Needs Chromium.
+four-bar's statement figure, one quiz question as Moodle shows it with three answers
+(right, the Coriolis term left out, degrees taken as radians), and the page's exercise mode
+with two answers checked. Needs Chromium.
 
     .venv/bin/python scripts/exercise_renders.py [OUT]       (default docs/exercises)
 """
@@ -31,6 +32,36 @@ def crop(png: Path, height: int) -> None:
         im.crop((0, 0, im.width, min(height, im.height))).save(png, optimize=True)
 
 
+def page_render(work: Path, png: Path) -> None:
+    """The page's exercise mode opened by a link of links.txt, two answers checked."""
+    from playwright.sync_api import sync_playwright
+
+    from kinematika.exercise.printing import FLAGS, chromium
+    from kinematika.web.server import Start
+    from tests.web.page_server import PageServer
+
+    ex = make_exercise(load_model(P_PAIR), ["s=300:500:10", "beta=20:40:1", "w=2:6:0.5"], 1, 7, "eu",
+                       source=P_PAIR)
+    write_exercise(ex, work / "page", solutions=False, pdf=False)
+    fragment = (work / "page" / "links.txt").read_text().split("\t")[1].strip()
+    v = ex.variants[0]
+    wrong = {m.kind: m for m in ex.mistakes(v)}["coriolis-omitted"].rows["q2"].value
+    server = PageServer(Start())
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
+            page = browser.new_page(viewport={"width": 900, "height": 1130})
+            page.goto(server.url + fragment)
+            page.get_by_test_id("exercise-input-q1").fill(f"{v.rows[0].value:.4g}".replace(".", ","))
+            page.get_by_test_id("exercise-input-q2").fill(f"{wrong:.4g}".replace(".", ","))
+            page.get_by_test_id("exercise-check").click()
+            page.get_by_test_id("exercise-score").filter(has_text="10").wait_for()
+            page.screenshot(path=str(png))
+            browser.close()
+    finally:
+        server.stop()
+
+
 def main(out: Path) -> None:
     out.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp())
@@ -59,6 +90,8 @@ def main(out: Path) -> None:
     screenshots([(html, png) for html, png, _ in shots], width=WIDTH)
     for _, png, height in shots:
         crop(png, height)
+    page_render(work, out / "page-exercise-eu.png")
+    crop(out / "page-exercise-eu.png", 1130)
     print("\n".join(str(png) for _, png, _ in shots))
 
 
