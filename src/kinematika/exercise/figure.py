@@ -16,7 +16,7 @@ from typing import Any, Optional
 
 from ..draw.dimensions import Dimension
 from ..model.constructions import CircleLine, Polar, TwoCircles
-from ..model.expressions import Expr
+from ..expressions import Expr
 from .stated import number_text, stated_text
 
 WIDTH = 4.6         # inches: printed about at its size, so that its text reads as 9 pt
