@@ -11,7 +11,9 @@ Mechanics is n = c = 1 (`MECHANICS`), which every command uses. A mistaken world
 places only, all at the acceleration level or below it:
 
 - `levels.AccelerationLevel.point`: n on ω × (ω × r) in every joint's and driver's rows;
-- `joints.sliding`: c on 2 v_rel·(ω_a × e) (prismatic, slot and cylindrical joints);
+- `joints.derivatives.sliding`: c on 2 v_rel·(ω_a × e) (the joints that slide: prismatic,
+  slot, cylindrical), through `Level.terms` (`engine.levels`, taken from the velocities'
+  `Motion`);
 - `drivers._velocity`: c on the Coriolis term of a relative velocity driver's acceleration;
 - `motion.Motion`: n in the reported point accelerations, c in the relative frame's
   Coriolis term; in a mistaken world a relative point acceleration is the composition at
