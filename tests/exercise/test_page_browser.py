@@ -43,9 +43,10 @@ def test_the_page_opens_a_link_checks_the_answers_and_shows_the_solution(tmp_pat
             page.screenshot(path=str(tmp_path / "exercise-page.png"), full_page=True)
             page.get_by_test_id("exercise-show").click()
             page.locator("[data-testid=exercise-solution] iframe").wait_for()
+            page.wait_for_load_state("networkidle")        # no request left computing
             browser.close()
     finally:
-        server.stop()
+        _stop(server)
 
 
 def _opened(fragment):
@@ -59,3 +60,12 @@ def _opened(fragment):
     packed = params.pop("model")[0]
     text = zlib.decompress(base64.urlsafe_b64decode(packed + "=" * (-len(packed) % 4)), -15).decode()
     return params, text
+
+
+def _stop(server):
+    """Stop this test's server only: `PageServer.stop` waits for every AnyIO worker thread of
+    the process, which includes the idle ones of another test module's server still serving
+    in the same worker process (pytest-xdist), and would wait for them in vain."""
+    server.server.should_exit = True
+    server.thread.join(10)
+    server.sock.close()
