@@ -10,9 +10,9 @@ from .conftest import P_PAIR, P_PAIR_VARY
 pytestmark = pytest.mark.browser
 
 
-def test_the_page_opens_a_link_checks_the_answers_and_shows_the_solution(tmp_path, p_pair30):
+def test_the_page_opens_a_link_checks_the_answers_and_shows_the_solution(tmp_path):
     from kinematika.exercise import write_exercise
-    from kinematika.exercise.printing import FLAGS, chromium
+    from kinematika.exercise.printing import chromium, in_own_thread
     from kinematika.web.server import Start
     from tests.web.page_server import PageServer
 
@@ -26,27 +26,37 @@ def test_the_page_opens_a_link_checks_the_answers_and_shows_the_solution(tmp_pat
     v = ex.variants[1]
     mistakes = {m.kind: m for m in ex.mistakes(v)}
     server = PageServer(Start())
-    from playwright.sync_api import sync_playwright
-
     try:
-        with sync_playwright() as p:
-            browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
-            page = browser.new_page(viewport={"width": 1000, "height": 1400})
-            page.goto(server.url + fragment)
-            page.get_by_test_id("exercise-input-q1").fill(repr(v.rows[0].value).replace(".", ","))
-            page.get_by_test_id("exercise-input-q2").fill(repr(mistakes["coriolis-omitted"].rows["q2"].value))
-            page.get_by_test_id("exercise-check").click()
-            page.get_by_test_id("exercise-score").filter(has_text="10").wait_for()
-            assert page.get_by_test_id("exercise-mark-q1").text_content().startswith("✔")
-            assert page.get_by_test_id("exercise-mark-q2").get_attribute("data-diagnosis") == "coriolis-omitted"
-            assert _opened(page.get_by_test_id("exercise-link").get_attribute("href")) == _opened(fragment)
-            page.screenshot(path=str(tmp_path / "exercise-page.png"), full_page=True)
-            page.get_by_test_id("exercise-show").click()
-            page.locator("[data-testid=exercise-solution] iframe").wait_for()
-            page.wait_for_load_state("networkidle")        # no request left computing
-            browser.close()
+        in_own_thread(lambda: _drive(server.url, fragment, v, mistakes, tmp_path))
     finally:
         _stop(server)
+
+
+def _drive(url, fragment, v, mistakes, tmp_path):
+    """The browser's part, in a thread of its own (another module's Playwright may be live in
+    this process: pytest-xdist runs several modules in one worker)."""
+    from playwright.sync_api import sync_playwright
+
+    from kinematika.exercise.printing import FLAGS, chromium
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
+        page = browser.new_page(viewport={"width": 1000, "height": 1400})
+        page.goto(url + fragment)
+        page.get_by_test_id("exercise-input-q1").fill(repr(v.rows[0].value).replace(".", ","))
+        page.get_by_test_id("exercise-input-q2").fill(repr(mistakes["coriolis-omitted"].rows["q2"].value))
+        page.get_by_test_id("exercise-check").click()
+        page.get_by_test_id("exercise-score").filter(has_text="10").wait_for()
+        assert page.get_by_test_id("exercise-mark-q1").text_content().startswith("✔")
+        assert page.get_by_test_id("exercise-mark-q2").get_attribute("data-diagnosis") == "coriolis-omitted"
+        assert _opened(page.get_by_test_id("exercise-link").get_attribute("href")) == _opened(fragment)
+        page.screenshot(path=str(tmp_path / "exercise-page.png"), full_page=True)
+        page.get_by_test_id("exercise-show").click()
+        page.locator("[data-testid=exercise-solution] iframe").wait_for()
+        page.wait_for_load_state("networkidle")        # no request left computing
+        browser.close()
+
+
 
 
 def _opened(fragment):

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import shutil
 from pathlib import Path
-from typing import Optional
+from typing import Any, Callable, Optional
 
 CHROMIUM = "/usr/bin/chromium"
 FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
@@ -32,8 +32,21 @@ def missing() -> Optional[str]:
     return None
 
 
+def in_own_thread(work: Callable[[], Any]) -> Any:
+    """`work()` in a thread of its own: Playwright's synchronous API refuses a thread that
+    runs an asyncio loop (Jupyter's, a server's) or already drives a Playwright."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(1) as pool:
+        return pool.submit(work).result()
+
+
 def print_pdfs(pages: list[tuple[Path, Path]]) -> None:
     """Print each HTML file to its PDF (A4, backgrounds kept), with one browser."""
+    in_own_thread(lambda: _print_pdfs(pages))
+
+
+def _print_pdfs(pages: list[tuple[Path, Path]]) -> None:
     from playwright.sync_api import sync_playwright
 
     with sync_playwright() as p:
@@ -50,6 +63,10 @@ def print_pdfs(pages: list[tuple[Path, Path]]) -> None:
 def screenshots(pages: list[tuple[Path, Path]], width: int = 900, full_page: bool = True,
                 print_media: bool = True) -> None:
     """Each HTML file as a PNG (as printed: `print` media), to look at."""
+    in_own_thread(lambda: _screenshots(pages, width, full_page, print_media))
+
+
+def _screenshots(pages: list[tuple[Path, Path]], width: int, full_page: bool, print_media: bool) -> None:
     from playwright.sync_api import sync_playwright
 
     with sync_playwright() as p:
