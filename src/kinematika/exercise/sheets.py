@@ -22,11 +22,11 @@ header{display:flex;justify-content:space-between;align-items:baseline;border-bo
 margin-bottom:3mm}
 header h1{font-size:14pt;margin:0}header .variant{font-size:11pt;color:#1f5fa8;font-weight:bold}
 p.student{display:flex;gap:8mm;margin:2mm 0 3mm}p.student span.line{flex:1;border-bottom:1px solid #555}
-figure{margin:2mm 0;text-align:center}figure img{max-width:100%;max-height:118mm}
+figure{margin:1mm 0;text-align:center}figure img{max-width:100%;max-height:100mm}
 p.note{font-size:9pt;color:#444}
 h2{font-size:11.5pt;margin:4mm 0 1mm;border-bottom:1px solid #ccc}
 table.answers{border-collapse:collapse;width:100%}
-table.answers td{padding:1.2mm 1.5mm;vertical-align:bottom}
+table.answers td{padding:1mm 1.5mm;vertical-align:bottom}
 table.answers td.n{font-weight:bold;width:6mm}
 table.answers td.box{border-bottom:1px solid #333;width:32mm}
 table.answers td.unit{width:16mm}table.answers td.id{font-family:"DejaVu Sans Mono",monospace;
