@@ -13,6 +13,7 @@ from .algebra.vectors import dot
 from .engine.instant import Instant, instantiate
 from .engine.motion import BodyState, Motion
 from .engine.system import InstantSolver
+from .engine.terms import MECHANICS, Terms
 from .errors import KinematikaError
 from .model.model import Model, PointRef
 
@@ -216,9 +217,11 @@ def _vanishes(x: Any) -> bool:
     return True
 
 
-def solve_model(model: Model, symbolic: bool | None = None) -> Solution:
+def solve_model(model: Model, symbolic: bool | None = None, terms: Terms = MECHANICS) -> Solution:
     """The instant `model` describes, solved: its velocity and acceleration systems
-    (`engine.system`), numerically, or exactly when it has symbols (or `symbolic`)."""
+    (`engine.system`), numerically, or exactly when it has symbols (or `symbolic`); `terms`
+    solves it as a student with a known mistake would (`engine.terms`, the exercises'
+    diagnoses), else as it is."""
     inst = instantiate(model, symbolic)
-    solver = InstantSolver(inst)
+    solver = InstantSolver(inst, terms=terms)
     return Solution(model, inst, solver.solve(), solver)

@@ -84,11 +84,11 @@ class Exercise:
 
     def solve(self, stated: dict[str, Decimal]) -> Variant:
         """The variant of these stated values, solved (its number 0 until numbered)."""
-        from ..api import solve
         from ..report.json_answer import solution_json
+        from ..sweep.posing import solved
 
         sets = self.sets_of(stated)
-        sol = solve(self.model, set=sets)
+        sol = solved(self.model, set=sets)
         answers = solution_json(sol)["answers"]
         kinds = [q.kind for q in self.model.questions]
         return Variant(0, stated, sets, sol, answers, key_rows(answers, kinds, self.asks, floors_of(sol)))
@@ -124,18 +124,18 @@ DEFAULT_SECTION = ExerciseSection()
 def _answers_and_floors(model: Model, terms: Any = None) -> tuple[list[dict], dict[str, float]]:
     """A model's `solve --json` answers and its floors (`key.floors_of`), solved with
     `terms` (`engine.terms`: mechanics, or a student's mistake)."""
-    from ..api import solve
     from ..engine.terms import MECHANICS
     from ..report.json_answer import solution_json
+    from ..solution import solve_model
 
-    sol = solve(model, terms=terms or MECHANICS)
+    sol = solve_model(model, terms=terms or MECHANICS)
     return solution_json(sol)["answers"], floors_of(sol)
 
 
 def make_exercise(model: Model, vary: list[str], count: int, seed: int, lang: str,
                   source: Optional[Path] = None) -> Exercise:
     """`count` variants of `model`'s problem, drawn on the `--vary` grids with `seed`."""
-    from ..explain.catalogue import known
+    from ..languages import known
 
     known(lang)
     section = model.exercise or DEFAULT_SECTION

@@ -6,7 +6,8 @@ from __future__ import annotations
 from functools import lru_cache
 from pathlib import Path
 
-from ..explain.catalogue import LANGS, Catalogue, known
+from ..explain.catalogue import Catalogue
+from ..languages import LANGS, known
 
 LOCALES = Path(__file__).resolve().parent / "locales"
 

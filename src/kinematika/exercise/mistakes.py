@@ -101,7 +101,7 @@ def mistakes_of(world: World) -> list[Mistaken]:
 
 
 def _prepared(model: Model, sets: dict[str, str]) -> Model:
-    from ..api import prepare
+    from ..sweep.posing import prepare
 
     return prepare(model, set=sets)
 

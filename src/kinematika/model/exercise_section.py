@@ -22,9 +22,9 @@ from fractions import Fraction
 from typing import Any, Optional
 
 from ..errors import KinematikaError
+from ..languages import LANGS
 from .model import Parameter
 
-LANGS = ("en", "es", "ca", "eu")          # the explanation's languages (explain.catalogue)
 PLACEHOLDER = re.compile(r"\{(\w+)\}")
 
 
