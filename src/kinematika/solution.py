@@ -13,6 +13,7 @@ from .algebra.vectors import dot
 from .engine.instant import Instant, instantiate
 from .engine.motion import BodyState, Motion
 from .engine.system import InstantSolver
+from .engine.terms import MECHANICS, Terms
 from .errors import KinematikaError
 from .model.model import Model, PointRef
 
@@ -116,7 +117,10 @@ class Solution:
             self.state(ref.body, relative_to)
             raw = self.exact.acceleration(ref.body, ref.point, self.frame_of(relative_to))
             return self.exact.reveal.vector(raw)
-        return self.motion.acceleration(self.state(ref.body, relative_to), self.position(ref))
+        if self.motion.terms.mechanics:
+            return self.motion.acceleration(self.state(ref.body, relative_to), self.position(ref))
+        self.state(ref.body, relative_to)                # the names checked
+        return self.motion.point_acceleration(ref.body, self.position(ref), self._frame(relative_to))
 
     def omega(self, body: str, relative_to: str | None = None) -> Any:
         """ω of `body` (planar: a number, counter-clockwise positive; 3D: a vector), relative
@@ -246,9 +250,11 @@ def _vanishes(x: Any) -> bool:
     return True
 
 
-def solve_model(model: Model, symbolic: bool | None = None) -> Solution:
+def solve_model(model: Model, symbolic: bool | None = None, terms: Terms = MECHANICS) -> Solution:
     """The instant `model` describes, solved: its velocity and acceleration systems
-    (`engine.system`), numerically, or exactly when it has symbols (or `symbolic`)."""
+    (`engine.system`), numerically, or exactly when it has symbols (or `symbolic`); `terms`
+    solves it as a student with a known mistake would (`engine.terms`, the exercises'
+    diagnoses), else as it is."""
     inst = instantiate(model, symbolic)
-    solver = InstantSolver(inst)
+    solver = InstantSolver(inst, terms=terms)
     return Solution(model, inst, solver.solve(), solver)

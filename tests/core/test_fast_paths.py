@@ -90,7 +90,8 @@ def test_the_records_have_schemas_fields_and_defaults():
                                                      "CirclesSpec", "CircleLineSpec", "LineSpec", "LinesSpec",
                                                      "BodySpec", "CircleSpec", "DiscSpec", "PlaneSpec", "CurveSpec",
                                                      "JointSpec", "OmegaDriver", "JointDriver", "VelocityDriver",
-                                                     "QuestionSpec", "SweepSpec"}      # all but the cam's design
+                                                     "QuestionSpec", "SweepSpec",
+                                                     "ExerciseSpec", "DimensionSpec"}  # all but the cam's design
 
 
 @pytest.mark.parametrize("annotation, code", [

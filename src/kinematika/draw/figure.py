@@ -22,6 +22,7 @@ from matplotlib.lines import Line2D
 from .bodies import paint_bodies
 from .lock import MATPLOTLIB
 from .canvas import Canvas
+from .dimensions import avoid_dimensions, paint_dimensions, reach
 from .geometry import Box
 from .joints import paint_joints
 from .marks import KENNEDY, NORMAL, mark_groups, paint_axes, paint_curvatures, paint_marks
@@ -52,6 +53,9 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
 def _render(scene: Scene, options: DrawOptions) -> Figure:
     drawn = arrows(scene.vectors, scene.size)
     content = framed_box(scene, drawn)
+    dimensions = options.dimensions if scene.dim == 2 else None
+    if dimensions:
+        content = content.union(reach(dimensions, scene.size, Box(*scene.box).centre))
     notes = [] if options.bare else _notes(scene, drawn, options.lang)
     fig, ax = new_figure(content.grow((CLIP_MARGIN + LABEL_MARGIN) * scene.size), options,
                          len(notes), TRIAD if scene.dim == 3 else 0.0)
@@ -63,6 +67,9 @@ def _render(scene: Scene, options: DrawOptions) -> Figure:
     paint_axes(cv)
     paint_marks(cv)
     paint_vectors(cv, drawn)
+    if dimensions:
+        paint_dimensions(ax, dimensions, scene.size, Box(*scene.box).centre)
+        avoid_dimensions(cv.board, ax, dimensions, scene.size, Box(*scene.box).centre)
     _place_labels(fig, ax, cv)
     if scene.dim == 3:
         _triad(fig, scene)

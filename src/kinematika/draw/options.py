@@ -36,6 +36,7 @@ class DrawOptions:
                                       # that embeds it says them, in its own language)
     lang: Optional[str] = None        # how numbers are written: None as Python does, else
                                       # as an explanation in that language (see above)
+    dimensions: Optional[list] = None  # `draw.dimensions.Dimension` marks (a statement's data)
 
     def __post_init__(self) -> None:
         if self.lang is not None:

@@ -52,7 +52,7 @@ def _velocity(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> li
         motion = sub(motion, lv.point(rel, p))
         if lv.accel:
             v_rel = sub(lv.v(ref.body, p), lv.v(rel, p))
-            motion = sub(motion, tuple(2 * c for c in sp.cross(lv.w(rel), v_rel)))
+            motion = sub(motion, tuple(lv.terms.coriolis_factor() * c for c in sp.cross(lv.w(rel), v_rel)))
     name = "a" if lv.accel else "v"
     if d.along is not None:
         u = inst.direction(d.along, f"{where}.along")

@@ -13,6 +13,7 @@ from typing import Any, Optional
 from ..algebra.vectors import Space, add, sub
 from .linear import Lin
 from .motion import Motion
+from .terms import MECHANICS, Terms
 
 
 class Unknowns:
@@ -69,6 +70,9 @@ class Level:
         self.space = unknowns.space
         self.ref = ref
         self.motion = motion
+        # the factors of the velocity-squared terms (`engine.terms`): mechanics unless a view
+        # models a student's mistake; the motion of the velocities carries them
+        self.terms: Terms = motion.terms if motion is not None else MECHANICS
 
     def omega(self, body: str) -> Any:
         """ω (velocity level) or α (acceleration level) of `body`, as linear forms."""
@@ -103,5 +107,5 @@ class AccelerationLevel(Level):
         """a = a₀ + α × r + ω × (ω × r), with ω known."""
         r = sub(p, self.ref)
         w = self.w(body)
-        centripetal = self.space.cross(w, self.space.cross(w, r))
+        centripetal = self.terms.normal_part(self.space.cross(w, self.space.cross(w, r)))
         return add(add(self.u.trans(body), self.space.cross(self.u.rot(body), r)), centripetal)

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from typing import Any, Sequence
 
 from ..algebra.vectors import Space, add, scale, sub
+from .terms import MECHANICS, Terms
 
 
 @dataclass(frozen=True)
@@ -21,12 +22,17 @@ class BodyState:
 
 
 class Motion:
-    """Body states relative to the fixed frame, and the same seen from any body."""
+    """Body states relative to the fixed frame, and the same seen from any body.
 
-    def __init__(self, space: Space, ref: tuple, states: dict[str, BodyState]) -> None:
+    `terms` are the factors of the normal and Coriolis terms (`engine.terms`): mechanics'
+    unless the motion was solved as a student with a mistake would solve it."""
+
+    def __init__(self, space: Space, ref: tuple, states: dict[str, BodyState],
+                 terms: Terms = MECHANICS) -> None:
         self.space = space
         self.ref = ref
         self.states = states
+        self.terms = terms
 
     def state(self, body: str, relative_to: str | None = None) -> BodyState:
         """The motion of `body` as seen by an observer fixed to `relative_to` (default: ground).
@@ -42,7 +48,7 @@ class Motion:
         w = sp.rot_sub(s.omega, f.omega)
         v0 = sub(s.v0, f.v0)
         alpha = sp.rot_sub(sp.rot_sub(s.alpha, f.alpha), sp.cross_ww(f.omega, w))
-        a0 = sub(sub(s.a0, f.a0), scale(2, sp.cross(f.omega, v0)))
+        a0 = sub(sub(s.a0, f.a0), scale(self.terms.coriolis_factor(), sp.cross(f.omega, v0)))
         return BodyState(w, v0, alpha, a0)
 
     def velocity(self, state: BodyState, point: tuple) -> tuple:
@@ -53,7 +59,8 @@ class Motion:
         """a = a₀ + α × r + ω × (ω × r), r = P − ref."""
         sp = self.space
         r = sub(point, self.ref)
-        return add(add(state.a0, sp.cross(state.alpha, r)), sp.cross(state.omega, sp.cross(state.omega, r)))
+        normal = self.terms.normal_part(sp.cross(state.omega, sp.cross(state.omega, r)))
+        return add(add(state.a0, sp.cross(state.alpha, r)), normal)
 
     def arrays(self) -> tuple[Any, Any, Any, Any]:
         """ω, v₀, α, a₀ of every body (the order of `states`) as float arrays of one row per
@@ -80,14 +87,24 @@ class Motion:
         r = np.asarray(points, dtype=float).reshape(len(take), sp.dim) - np.asarray(self.ref, dtype=float)
         turn = _cross if sp.dim == 3 else _cross_planar
         velocity = v0 + turn(w, r)
-        acceleration = (a0 + turn(alpha, r)) + turn(w, turn(w, r))
+        normal = turn(w, turn(w, r))
+        acceleration = (a0 + turn(alpha, r)) + (normal if self.terms.normal == 1 else self.terms.normal * normal)
         return velocity, acceleration
 
     def point_velocity(self, body: str, point: tuple, relative_to: str | None = None) -> tuple:
         return self.velocity(self.state(body, relative_to), point)
 
     def point_acceleration(self, body: str, point: tuple, relative_to: str | None = None) -> tuple:
-        return self.acceleration(self.state(body, relative_to), point)
+        """The acceleration of `body`'s point at `point` seen from `relative_to`. In a
+        mistaken world (`terms` not mechanics' ones) a relative acceleration is the
+        composition at the point, a_rel = a_P(b) − a_P(F) − 2c ω_F × v_rel, as the student
+        writes it (the relative state's formula assumes the true terms)."""
+        if relative_to is None or self.terms.mechanics:
+            return self.acceleration(self.state(body, relative_to), point)
+        f = self.states[relative_to]
+        v_rel = sub(self.velocity(self.states[body], point), self.velocity(f, point))
+        coriolis = scale(self.terms.coriolis_factor(), self.space.cross(f.omega, v_rel))
+        return sub(sub(self.acceleration(self.states[body], point), self.acceleration(f, point)), coriolis)
 
     def moving_point(self, position: tuple, velocity: tuple, acceleration: tuple,
                      relative_to: str | None) -> tuple[tuple, tuple]:
@@ -97,7 +114,7 @@ class Motion:
         f = self.states[relative_to]
         v_rel = sub(velocity, self.velocity(f, position))
         a_rel = sub(sub(acceleration, self.acceleration(f, position)),
-                    scale(2, self.space.cross(f.omega, v_rel)))
+                    scale(self.terms.coriolis_factor(), self.space.cross(f.omega, v_rel)))
         return v_rel, a_rel
 
 

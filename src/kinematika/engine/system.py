@@ -20,6 +20,7 @@ from ..joints import JointGeometry
 from .joints import Row, joint_geometry, joint_rows
 from .levels import AccelerationLevel, KnownTerms, Level, Unknowns, VelocityLevel
 from .motion import BodyState, Motion
+from .terms import MECHANICS, Terms
 from .linsolve import (LARGE, Analysis, SparseAnalysis, analyse, analyse_sparse, solve_numeric,
                        solve_symbolic, sparse_matrix)
 
@@ -30,8 +31,10 @@ class InstantSolver:
     `geos` may give the joints' geometry already evaluated (a sweep moves it with the bodies).
     """
 
-    def __init__(self, inst: Instant, geos: dict[str, JointGeometry] | None = None) -> None:
+    def __init__(self, inst: Instant, geos: dict[str, JointGeometry] | None = None,
+                 terms: Terms = MECHANICS) -> None:
         self.inst = inst
+        self.terms = terms          # mechanics, or a student's mistake (`engine.terms`)
         model = inst.model
         self.space = inst.space
         self.unknowns = Unknowns(model.moving_bodies, self.space)
@@ -158,7 +161,7 @@ class InstantSolver:
 
         inst, u = self.inst, self.unknowns
         standin, values = stand_in_instant(inst)
-        twin = InstantSolver(standin)
+        twin = InstantSolver(standin, terms=self.terms)
         a, b_v = twin.matrix(twin.rows(VelocityLevel(u, inst.ref)))
         x_v = self._solve_exact_level(standin, a, b_v, self.labels, values, "v")
         # the accelerations are solved with the velocities as stand-ins too
@@ -172,7 +175,7 @@ class InstantSolver:
         self.exact = ExactWorld(standin, twin._motion(x_v, x_a), twin._motion(x_w, x_a),
                                 Reveal(values, set(known), public, inst, standin.probe))
         states = {body: self.exact.state(body) for body in self.exact.motion.states}
-        return Motion(self.space, inst.ref, states)
+        return Motion(self.space, inst.ref, states, self.terms)
 
     def _velocity_names(self, x_w: list[Any], known: dict) -> dict:
         """The name each solved velocity's stand-in takes when an acceleration would be too
@@ -237,7 +240,7 @@ class InstantSolver:
             else:
                 alpha, a0 = _split(x_a, o, sp.rot, sp.dim)
             states[body] = BodyState(w, v0, alpha, a0)
-        return Motion(sp, self.inst.ref, states)
+        return Motion(sp, self.inst.ref, states, self.terms)
 
 
 def _split(x: list[Any], o: int, rot: int, dim: int) -> tuple[Any, tuple]:

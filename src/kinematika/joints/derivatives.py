@@ -20,12 +20,13 @@ def coincident(lv: Any, a: str, b: str, p: tuple) -> tuple:
 def sliding(lv: Any, a: str, b: str, q: tuple, e: tuple) -> Any:
     """d/dt [(Q_b − Q_a)·e], e fixed in a: the relative motion of Q along e.
 
-    Velocity: v_rel·e. Acceleration: (a_Qb − a_Qa)·e + 2 v_rel·(ω_a × e), the Coriolis term.
+    Velocity: v_rel·e. Acceleration: (a_Qb − a_Qa)·e + 2 v_rel·(ω_a × e), the Coriolis term
+    (times the level's factor, 1 in mechanics: `engine.terms`).
     """
     row = dot(coincident(lv, a, b, q), e)
     if lv.accel:
         v_rel = sub(lv.v(b, q), lv.v(a, q))
-        row = row + 2 * dot(v_rel, lv.space.cross(lv.w(a), e))
+        row = row + lv.terms.coriolis_factor() * dot(v_rel, lv.space.cross(lv.w(a), e))
     return row
 
 

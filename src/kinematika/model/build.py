@@ -78,6 +78,10 @@ class _Builder:
         model.default_questions = self.spec.ask is None
         model.draw_at, model.up = self.figure_hints(params, dimension)
         model.move = self.move()
+        if spec.exercise is not None:
+            from .exercise_section import exercise_section
+
+            model.exercise = exercise_section(spec.exercise, params, len(model.questions), points)
         return model
 
     def figure_hints(self, params: dict[str, Parameter], dimension: int) -> tuple[dict, Any]:

@@ -16,6 +16,7 @@ from ..expressions import Expr
 
 if TYPE_CHECKING:
     from .constructions import Construction
+    from .exercise_section import ExerciseSection
 
 ExprVector = tuple[Expr, ...]
 
@@ -211,6 +212,7 @@ class Model:
     default_questions: bool = False   # no `ask` was written: every body and point is asked
     draw_at: dict[str, float] = field(default_factory=dict)   # figures: values of the symbols
     up: Optional[tuple[float, ...]] = None                    # figures: the vertical (3D)
+    exercise: Optional["ExerciseSection"] = None              # `kinematika exercise` (its section)
 
     _index: Optional["_Index"] = field(default=None, init=False, repr=False, compare=False)
 

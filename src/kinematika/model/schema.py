@@ -261,6 +261,27 @@ class SweepSpec(Strict):
     steps: StrictInt = 360
 
 
+class DimensionSpec(Strict):
+    """A dimension drawn on an exercise's figure: the distance between two points, along x,
+    along y or aligned with them (the default), labelled with a parameter or a text."""
+
+    between: Annotated[list[str], Field(min_length=2, max_length=2)]
+    along: Optional[Literal["x", "y", "aligned"]] = None
+    label: Optional[str] = None
+
+
+class ExerciseSpec(Strict):
+    """`exercise`: what `kinematika exercise` states and grades (docs/exercises.md)."""
+
+    title: dict[str, str] = Field(default_factory=dict)
+    statement: dict[str, str] = Field(default_factory=dict)
+    units: dict[str, str] = Field(default_factory=dict)
+    length: str = "m"
+    ask: Optional[list[StrictInt]] = None
+    tolerance: Union[StrictInt, StrictFloat] = 0.01
+    dimensions: list[DimensionSpec] = Field(default_factory=list)
+
+
 class ModelSpec(Strict):
     name: Optional[str] = None
     description: Optional[str] = None
@@ -276,3 +297,4 @@ class ModelSpec(Strict):
     move: Optional[dict[str, Value]] = None
     draw_at: Optional[dict[str, Union[StrictInt, StrictFloat]]] = None   # figures: symbols' values
     up: Optional[list[Union[StrictInt, StrictFloat]]] = None             # figures: the vertical (3D)
+    exercise: Optional[ExerciseSpec] = None                             # `kinematika exercise`

@@ -141,6 +141,20 @@ SweepSpec, sweep_spec = record('SweepSpec', {
     'by': (value, 360),
     'steps': (exact(int), 360),
 })
+DimensionSpec, dimension_spec = record('DimensionSpec', {
+    'between': (listed(exact(str), 2, 2), REQUIRED),
+    'along': (optional(one_of('x', 'y', 'aligned')), None),
+    'label': (optional(exact(str)), None),
+})
+ExerciseSpec, exercise_spec = record('ExerciseSpec', {
+    'title': (mapping(exact(str)), dict),
+    'statement': (mapping(exact(str)), dict),
+    'units': (mapping(exact(str)), dict),
+    'length': (exact(str), 'm'),
+    'ask': (optional(listed(exact(int))), None),
+    'tolerance': (exact(int, float), 0.01),
+    'dimensions': (listed(dimension_spec), list),
+})
 ModelSpec, model_spec = record('ModelSpec', {
     'name': (optional(exact(str)), None),
     'description': (optional(exact(str)), None),
@@ -156,12 +170,13 @@ ModelSpec, model_spec = record('ModelSpec', {
     'move': (optional(mapping(value)), None),
     'draw_at': (optional(mapping(exact(int, float))), None),
     'up': (optional(listed(exact(int, float))), None),
+    'exercise': (optional(exercise_spec), None),
 })
 
 RECORDS = (
     ModelSpec, ParameterSpec, PolarSpec, FrameSpec, CirclesSpec, CircleLineSpec, LineSpec, LinesSpec,
     BodySpec, CircleSpec, DiscSpec, PlaneSpec, CurveSpec, JointSpec, OmegaDriver, JointDriver,
-    VelocityDriver, QuestionSpec, SweepSpec,
+    VelocityDriver, QuestionSpec, SweepSpec, ExerciseSpec, DimensionSpec,
 )
 
 

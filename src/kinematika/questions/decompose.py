@@ -24,11 +24,12 @@ def decompose(sol: Solution, q: Question) -> dict[str, Any]:
     a_drag = motion.acceleration(frame, p)
     v_rel = sol.velocity(ref, moving)
     a_rel = sol.acceleration(ref, moving)
-    coriolis = scale(2, sol.space.cross(frame.omega, v_rel))
+    coriolis = scale(motion.terms.coriolis_factor(), sol.space.cross(frame.omega, v_rel))
     v_total = sol.velocity(ref, base)
     a_total = sol.acceleration(ref, base)
     _check_sum(sol, add(v_drag, v_rel), v_total, sol.speed_scale())
-    _check_sum(sol, add(add(a_drag, a_rel), coriolis), a_total, sol.accel_scale())
+    if motion.terms.mechanics:       # a student's mistaken world (`engine.terms`) need not add up
+        _check_sum(sol, add(add(a_drag, a_rel), coriolis), a_total, sol.accel_scale())
     return {"velocity": {"drag": v_drag, "relative": v_rel, "total": v_total},
             "acceleration": {"drag": a_drag, "relative": a_rel, "coriolis": coriolis, "total": a_total}}
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Any, Mapping, Optional
 
+from ..engine.terms import MECHANICS, Terms
 from ..model.model import Model
 from ..model.overrides import with_parameters
 from ..model.source import ModelLike, as_model
@@ -33,7 +34,9 @@ def prepare(source: ModelLike, *, fmt: Optional[str] = None,
     return model
 
 
-def solved(source: ModelLike, symbolic: bool | None = None, **options: Any) -> Solution:
+def solved(source: ModelLike, symbolic: bool | None = None, terms: Terms = MECHANICS,
+           **options: Any) -> Solution:
     """`source` prepared (`options` as `prepare`'s) and solved: numerically, or exactly when
-    it has symbols (or `symbolic`)."""
-    return solve_model(prepare(source, **options), symbolic)
+    it has symbols (or `symbolic`); with `terms`, as a student with that mistake would
+    (`engine.terms`)."""
+    return solve_model(prepare(source, **options), symbolic, terms)

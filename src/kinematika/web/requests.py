@@ -29,6 +29,7 @@ EXTRA = {
              "view", "width"),
     "edit": ("point", "to"),
     "assemblies": (),
+    "exercise": ("vary", "seed", "variant", "answers", "reveal"),     # web.exercise_api
 }
 AS = {"sweep": ("json", "csv"), "draw": ("data", "svg", "png")}
 
@@ -102,6 +103,10 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         if width is not None and not 1 <= width <= 100:
             raise KinematikaError("usage", "'width' is a figure width in inches, 1 to 100", "width")
         out["width"] = width or 8.0
+    elif endpoint == "exercise":
+        from .exercise_api import exercise_options
+
+        out.update(exercise_options(body))
     elif endpoint == "edit":
         out["point"] = _text(body, "point")
         to = body.get("to")

@@ -28,7 +28,7 @@ from ..errors import KinematikaError
 from .. import limits
 from .requests import Request, parse_body
 
-ENDPOINTS = ("solve", "sweep", "centres", "explain", "draw", "edit", "assemblies")
+ENDPOINTS = ("solve", "sweep", "centres", "explain", "draw", "edit", "assemblies", "exercise")
 STATIC = resources.files("kinematika.web") / "static"
 EXAMPLES = resources.files("kinematika.web") / "examples"
 CSP = ("default-src 'self'; script-src 'self'; style-src 'self' 'unsafe-inline'; "
@@ -292,5 +292,11 @@ def _assemblies(req: Request) -> tuple[str, str]:
     return JSON, commands.json_text(commands.assemblies_data(req.model, req.how))
 
 
+def _exercise(req: Request) -> tuple[str, str]:
+    from .exercise_api import exercise_answer      # the page's exercise mode
+
+    return JSON, commands.json_text(exercise_answer(req))
+
+
 COMPUTE = {"solve": _solve, "centres": _centres, "sweep": _sweep, "explain": _explain,
-           "draw": _draw, "edit": _edit, "assemblies": _assemblies}
+           "draw": _draw, "edit": _edit, "assemblies": _assemblies, "exercise": _exercise}

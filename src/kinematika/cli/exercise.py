@@ -1,0 +1,102 @@
+"""`kinematika exercise` and `kinematika grade`: a class's worth of variants of a model's
+problem (Moodle quiz, sheets, key), and the class's answers marked with the mistakes named."""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from .app import JsonOpt, ModelArg, app
+from .shared import guarded, output_file, print_json, writing
+
+DEFAULT_COUNT = 30
+
+
+@app.command()
+def exercise(model: Path = ModelArg,
+             vary: list[str] = typer.Option(..., "--vary", metavar="NAME=LOW:HIGH[:STEP]",
+                                            help="a parameter varied on a grid, in the statement's "
+                                                 "unit (repeat for each parameter)"),
+             count: Optional[int] = typer.Option(None, "--count", min=1, help="how many variants "
+                                                 "(default: one per named student, else 30)"),
+             seed: int = typer.Option(0, "--seed", help="the variants' seed (the same seed, the same "
+                                                        "variants)"),
+             lang: str = typer.Option("en", "--lang", help="the statements' language: en, es, ca or eu"),
+             output: Path = typer.Option(..., "-o", "--output", help="the folder to write"),
+             students: Optional[Path] = typer.Option(None, "--students", help="a CSV whose first column "
+                                                     "names the students (one sheet each)"),
+             solutions: bool = typer.Option(True, "--solutions/--no-solutions",
+                                            help="worked solutions in the key and the quiz's feedback"),
+             pdf: bool = typer.Option(True, "--pdf/--no-pdf", help="print the sheets and the key to PDF "
+                                                                   "(Chromium)"),
+             ) -> None:
+    """Variants of MODEL's problem for every student: a Moodle quiz, sheets, a key with worked
+    solutions, variants.csv and key.csv (see docs/exercises.md)."""
+    from ..exercise import make_exercise, write_exercise
+    from ..model.files import load_model
+
+    def work() -> list[str]:
+        _folder(output)
+        names = _names(students) if students is not None else None
+        ex = make_exercise(load_model(model), vary, count or (len(names) if names else DEFAULT_COUNT),
+                           seed, lang, source=model)
+        with writing(output, "-o"):
+            return write_exercise(ex, output, names, solutions, pdf)
+
+    for note in guarded(False, work):
+        print(note, file=sys.stderr)
+
+
+def _folder(output: Path) -> None:
+    """A folder can be written at `output` (made if missing), else an `output` error."""
+    from ..errors import KinematikaError
+
+    if output.exists() and not output.is_dir():
+        raise KinematikaError("output", f"cannot write {output}: it is a file", "-o")
+    if not output.parent.is_dir():
+        raise KinematikaError("output", f"cannot write {output}: there is no folder {output.parent}", "-o")
+
+
+def _names(path: Path) -> list[str]:
+    """The first column of a CSV after its header: the students' names."""
+    from ..errors import KinematikaError
+    from ..exercise.folder import read_csv
+
+    rows = read_csv(path, [])
+    if not rows:
+        raise KinematikaError("usage", f"{path.name} names no students (a header, then one per row)",
+                              "--students")
+    first = next(iter(rows[0]))
+    names = [r[first] for r in rows if r.get(first)]
+    return names
+
+
+@app.command()
+def grade(folder: Path = typer.Argument(..., help="the folder `kinematika exercise` wrote",
+                                        show_default=False),
+          answers: Path = typer.Argument(..., help="the answers: student,variant,question,value",
+                                         show_default=False),
+          as_json: bool = JsonOpt,
+          gradebook: Optional[Path] = typer.Option(None, "--gradebook", help="also write a CSV Moodle's "
+                                                   "gradebook imports (student,grade out of 100)"),
+          ) -> None:
+    """Mark a class's answers: right within the key's tolerance, and each wrong one named by the
+    usual mistake whose value it equals (Coriolis left out, degrees as radians, ...)."""
+    from ..exercise import grade as mark, load_exercise
+    from ..exercise.grading import gradebook_csv, summary_text
+
+    def work() -> dict:
+        result = mark(load_exercise(folder), answers)
+        if gradebook is not None:
+            target = output_file(gradebook, "--gradebook")
+            with writing(target, "--gradebook"):
+                target.write_text(gradebook_csv(result), encoding="utf-8")
+        return result
+
+    result = guarded(as_json, work)
+    if as_json:
+        print_json(result)
+    else:
+        sys.stdout.write(summary_text(result))

@@ -1,0 +1,173 @@
+"""An exercise: the model, its `exercise` section, the varied parameters and the variants,
+each solved once (the key), as `kinematika exercise` writes them and `kinematika grade` and
+the page read them back.
+
+Every number comes from the one solver: a variant is the model with `--set` values
+(`api.prepare`), solved by `api.solve`, and its key is `solve --json`'s answers.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from decimal import Decimal
+from pathlib import Path
+from typing import Any, Optional
+
+from ..errors import KinematikaError
+from ..model.exercise_section import ExerciseSection, Unit
+from ..model.model import Model
+from .key import Row, floors_of, graded, key_rows
+from .stated import as_stated, model_expression, stated_unit
+from .variants import MAX_CONDITION, Drawn, Vary, draw_variants, parse_vary
+
+SIGNIFICANT = 12          # a parameter's value as stated, when the model gives it (not varied)
+
+
+@dataclass
+class Variant:
+    """One student's data and its solution: `number` (1-based), the varied parameters'
+    values as stated, the `--set` expressions, the solution, its answers and its key."""
+
+    number: int
+    stated: dict[str, Decimal]
+    sets: dict[str, str]
+    solution: Any
+    answers: list[dict]
+    rows: list[Row]
+
+    def all_stated(self, exercise: "Exercise") -> dict[str, Decimal]:
+        """Every parameter's value as stated: the varied ones', then the model's others."""
+        return {**exercise.fixed_stated(self.solution), **self.stated}
+
+
+@dataclass
+class Exercise:
+    """A model made an exercise, with its variants."""
+
+    model: Model
+    section: ExerciseSection
+    varies: list[Vary]
+    seed: int
+    lang: str
+    variants: list[Variant] = field(default_factory=list)
+    source: Optional[Path] = None
+
+    @property
+    def asks(self) -> list[int]:
+        return graded(self.section.ask, len(self.model.questions))
+
+    @property
+    def title(self) -> str:
+        """The exercise's title in its language: the section's, else the model's name."""
+        return self.section.title.get(self.lang, self.model.name)
+
+    @property
+    def tolerance(self) -> float:
+        return self.section.tolerance
+
+    def unit_of(self, name: str) -> Optional[Unit]:
+        return stated_unit(self.model, self.section, name)
+
+    def sets_of(self, stated: dict[str, Decimal]) -> dict[str, str]:
+        """The `--set` expressions of stated values (`deg(35)`, `450/1000`)."""
+        return {name: model_expression(v, self.unit_of(name), self.section) for name, v in stated.items()}
+
+    def fixed_stated(self, sol: Any) -> dict[str, Decimal]:
+        """The values of the parameters that are not varied, as stated (from the model)."""
+        varied = {v.name for v in self.varies}
+        out = {}
+        for name in self.model.parameters:
+            if name in varied or name not in sol.inst.env:
+                continue
+            value = as_stated(float(sol.inst.env[name]), self.unit_of(name), self.section)
+            out[name] = Decimal(f"{value:.{SIGNIFICANT}g}")
+        return out
+
+    def solve(self, stated: dict[str, Decimal]) -> Variant:
+        """The variant of these stated values, solved (its number 0 until numbered)."""
+        from ..report.json_answer import solution_json
+        from ..sweep.posing import solved
+
+        sets = self.sets_of(stated)
+        sol = solved(self.model, set=sets)
+        answers = solution_json(sol)["answers"]
+        kinds = [q.kind for q in self.model.questions]
+        return Variant(0, stated, sets, sol, answers, key_rows(answers, kinds, self.asks, floors_of(sol)))
+
+    def mistakes(self, variant: Variant) -> list:
+        """The usual mistakes' values for `variant` (`mistakes.Mistaken`, in `KINDS` order),
+        each from the model solved again with the mistake."""
+        from fractions import Fraction
+
+        from .mistakes import World, mistakes_of
+
+        stated = variant.all_stated(self)
+        units = {name: self.unit_of(name) for name in stated}
+        degrees = tuple(n for n, u in units.items() if u is not None and u.kind == "angle" and u.pi == 1
+                        and u.ratio == Fraction(1, 180))
+        millimetres = tuple(n for n, u in units.items() if u is not None and u.ratio == Fraction(1, 1000)
+                            and u.kind in ("length", "speed", "accel"))
+        metre = str(Fraction(1) / self.section.length.ratio)
+        world = World(self.model, variant.sets, stated, degrees, millimetres, metre, self.asks,
+                      variant.solution, variant.rows, _answers_and_floors)
+        return mistakes_of(world)
+
+    def variant(self, number: int) -> Variant:
+        if not 1 <= number <= len(self.variants):
+            raise KinematikaError("usage", f"there is no variant {number} (variants 1 to "
+                                  f"{len(self.variants)})", "variant")
+        return self.variants[number - 1]
+
+
+DEFAULT_SECTION = ExerciseSection()
+
+
+def _answers_and_floors(model: Model, terms: Any = None) -> tuple[list[dict], dict[str, float]]:
+    """A model's `solve --json` answers and its floors (`key.floors_of`), solved with
+    `terms` (`engine.terms`: mechanics, or a student's mistake)."""
+    from ..engine.terms import MECHANICS
+    from ..report.json_answer import solution_json
+    from ..solution import solve_model
+
+    sol = solve_model(model, terms=terms or MECHANICS)
+    return solution_json(sol)["answers"], floors_of(sol)
+
+
+def make_exercise(model: Model, vary: list[str], count: int, seed: int, lang: str,
+                  source: Optional[Path] = None) -> Exercise:
+    """`count` variants of `model`'s problem, drawn on the `--vary` grids with `seed`."""
+    from ..languages import known
+
+    known(lang)
+    section = model.exercise or DEFAULT_SECTION
+    varies = [parse_vary(text) for text in vary]
+    for v in varies:
+        if v.name not in model.parameters:
+            raise KinematikaError("usage", f"--vary {v.name}: unknown parameter (parameters: "
+                                  f"{', '.join(model.parameters) or 'none'})", "--vary")
+    ex = Exercise(model, section, varies, seed, lang, source=source)
+    if not varies:
+        raise KinematikaError("usage", "name at least one parameter to vary (--vary NAME=LOW:HIGH[:STEP])",
+                              "--vary")
+    varied = {v.name for v in varies}
+    if any(p.value is None and p.name not in varied for p in model.parameters.values()):
+        raise KinematikaError("usage", "an exercise needs numbers: give every symbolic parameter a "
+                              "value (or vary it)", "--vary")
+
+    def accept(stated: dict[str, Decimal]) -> Drawn:
+        try:
+            variant = ex.solve(stated)
+        except KinematikaError as err:
+            if err.kind in ("geometry", "assembly"):
+                return Drawn(reason="assembly")
+            if err.kind in ("singular", "mobility"):
+                return Drawn(reason="dead-point")
+            raise
+        condition = variant.solution.solver.analysis.diagnosis.condition_number
+        if condition > MAX_CONDITION:
+            return Drawn(reason="dead-point")
+        return Drawn(kept=variant)
+
+    for number, (_, variant) in enumerate(draw_variants(varies, count, seed, accept), start=1):
+        variant.number = number
+        ex.variants.append(variant)
+    return ex

@@ -1,0 +1,217 @@
+"""An exercise's folder (`kinematika exercise -o DIR`), written and read back.
+
+    variants.csv    variant, then one column per varied parameter (values as stated)
+    key.csv         variant,question,value,tolerance (one row per number; tolerance relative)
+    MODEL           the model file, as given
+    exercise.json   how the variants were drawn: the model's file name, --vary, --seed, --lang
+    quiz.xml        the Moodle XML quiz (one Cloze question per variant)
+    sheets.html     one page per student; sheets.pdf when Chromium prints it
+    key.html        the answer key with the worked solutions; key.pdf likewise
+    figures/        each variant's figure (variant-001.png …)
+    links.txt       variant, then the link fragment that opens it in the page (`kinematika app`)
+    students.csv    student,variant (when the students are named)
+
+`kinematika grade DIR` reads it back: the model, exercise.json and variants.csv give the
+variants again (solved again by the same solver), and key.csv must agree with them.
+"""
+from __future__ import annotations
+
+import csv
+import io
+import json
+from decimal import Decimal, InvalidOperation
+from pathlib import Path
+from typing import Any, Optional
+
+from ..errors import KinematikaError
+from .build import DEFAULT_SECTION, Exercise
+from .key import value_text
+from .stated import plain_decimal
+from .variants import parse_vary
+
+AGREE = 1e-9           # key.csv and the model solved again agree to this (relative to the value's size)
+
+
+def write_exercise(ex: Exercise, out: Path, names: Optional[list[str]] = None, solutions: bool = True,
+                   pdf: bool = True) -> list[str]:
+    """Write the folder; the notes to show (what was written, what was skipped)."""
+    from .figure import dimensions_of, figure_png
+    from .moodle import quiz_xml
+    from .sheets import key_html, sheets_html, students_for
+    from .solutions import solution_html
+
+    out.mkdir(exist_ok=True)
+    (out / "figures").mkdir(exist_ok=True)
+    figures, worked, mistakes = {}, {}, {}
+    for v in ex.variants:
+        figures[v.number] = figure_png(v.solution, dimensions_of(ex, v.solution, v.all_stated(ex), ex.lang), ex.lang)
+        (out / "figures" / f"variant-{v.number:03d}.png").write_bytes(figures[v.number])
+        mistakes[v.number] = ex.mistakes(v)
+        if solutions:
+            worked[v.number] = solution_html(ex, v, ex.lang)
+    _text(out / "variants.csv", variants_csv(ex))
+    _text(out / "key.csv", key_csv(ex))
+    if ex.source is not None:
+        (out / ex.source.name).write_bytes(ex.source.read_bytes())
+    _text(out / "exercise.json", json.dumps(meta(ex), ensure_ascii=False, indent=1) + "\n")
+    _text(out / "quiz.xml", quiz_xml(ex, figures, worked if solutions else None, mistakes))
+    students = students_for(ex, names)
+    if names:
+        _text(out / "students.csv", "student,variant\n" + "".join(
+            f"{_csv_field(s.label)},{s.variant}\n" for s in students))
+    if ex.source is not None:
+        _text(out / "links.txt", "".join(f"{v.number}\t{page_link(ex, v.number)}\n" for v in ex.variants))
+    _text(out / "sheets.html", sheets_html(ex, figures, students))
+    _text(out / "key.html", key_html(ex, figures, worked))
+    notes = [f"wrote {len(ex.variants)} variants to {out}"]
+    if pdf:
+        from .printing import missing, print_pdfs
+
+        reason = missing()
+        if reason is None:
+            print_pdfs([(out / "sheets.html", out / "sheets.pdf"), (out / "key.html", out / "key.pdf")])
+        else:
+            notes.append(reason)
+    return notes
+
+
+def page_link(ex: Exercise, number: int) -> str:
+    """The fragment that opens variant `number` in the page's exercise mode (append it to
+    the address of `kinematika app`): the model deflated and base64url-encoded, as the
+    page's own links hold a model (web/static/js/link.js), with `vary`, `seed`, `variant`
+    and `lang`."""
+    import base64
+    import zlib
+    from urllib.parse import urlencode
+
+    packer = zlib.compressobj(9, zlib.DEFLATED, -15)             # raw deflate, as the page's
+    packed = packer.compress(ex.source.read_bytes()) + packer.flush()
+    model = base64.urlsafe_b64encode(packed).rstrip(b"=").decode()
+    suffix = ex.source.suffix.lower().lstrip(".")
+    fmt = {"yml": "yaml"}.get(suffix, suffix)
+    query = urlencode([("exercise", "1"), *(("vary", m) for m in meta(ex)["vary"]), ("seed", ex.seed),
+                       ("variant", number), ("lang", ex.lang)])
+    return f"#{query}&format={fmt}&model={model}"
+
+
+def _text(path: Path, text: str) -> None:
+    path.write_text(text, encoding="utf-8", newline="")
+
+
+def _csv_field(text: str) -> str:
+    buf = io.StringIO()
+    csv.writer(buf, lineterminator="").writerow([text])
+    return buf.getvalue()
+
+
+def meta(ex: Exercise) -> dict[str, Any]:
+    return {"model": ex.source.name if ex.source is not None else None,
+            "vary": [f"{v.name}={plain_decimal(v.low)}:{plain_decimal(v.high)}:{plain_decimal(v.step)}"
+                     for v in ex.varies],
+            "count": len(ex.variants), "seed": ex.seed, "lang": ex.lang}
+
+
+def variants_csv(ex: Exercise) -> str:
+    names = [v.name for v in ex.varies]
+    lines = [",".join(["variant", *names])]
+    for v in ex.variants:
+        lines.append(",".join([str(v.number), *(plain_decimal(v.stated[n]) for n in names)]))
+    return "\n".join(lines) + "\n"
+
+
+def key_csv(ex: Exercise) -> str:
+    lines = ["variant,question,value,tolerance"]
+    for v in ex.variants:
+        lines += [f"{v.number},{r.question},{value_text(r.value)},{ex.tolerance!r}" for r in v.rows]
+    return "\n".join(lines) + "\n"
+
+
+# reading a folder back ------------------------------------------------------------------------
+def load_exercise(folder: Path) -> Exercise:
+    """The exercise of a folder `kinematika exercise` wrote, its variants solved again."""
+    from ..model.files import load_model
+
+    info = _json(folder / "exercise.json")
+    model_name = info.get("model")
+    if not isinstance(model_name, str) or "/" in model_name or "\\" in model_name:
+        raise KinematikaError("usage", "exercise.json does not name the model file", str(folder))
+    model_path = folder / model_name
+    model = load_model(model_path)
+    try:
+        vary, seed, lang = list(info["vary"]), int(info["seed"]), str(info["lang"])
+    except (KeyError, TypeError, ValueError):
+        raise KinematikaError("usage", "exercise.json lacks vary, seed or lang", str(folder)) from None
+    ex = Exercise(model, model.exercise or DEFAULT_SECTION, [parse_vary(t) for t in vary], seed, lang,
+                  source=model_path)
+    for number, stated in enumerate(_variants(folder / "variants.csv", [v.name for v in ex.varies]), start=1):
+        variant = ex.solve(stated)
+        variant.number = number
+        ex.variants.append(variant)
+    _check_key(ex, folder / "key.csv")
+    return ex
+
+
+def _json(path: Path) -> dict:
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except OSError as err:
+        raise KinematikaError("usage", f"cannot read {path}: {err.strerror or err} (is it a folder "
+                              "`kinematika exercise` wrote?)", str(path)) from None
+    except ValueError as err:
+        raise KinematikaError("syntax", f"{path.name} is not JSON: {err}", str(path)) from None
+    if not isinstance(data, dict):
+        raise KinematikaError("syntax", f"{path.name} is not a JSON object", str(path))
+    return data
+
+
+def read_csv(path: Path, columns: list[str]) -> list[dict[str, str]]:
+    """A CSV's rows by the header's names; the `columns` must be there (else a one-line error
+    naming the file)."""
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except OSError as err:
+        raise KinematikaError("usage", f"cannot read {path}: {err.strerror or err}", str(path)) from None
+    except UnicodeDecodeError:
+        raise KinematikaError("syntax", f"{path.name} is not UTF-8 text", str(path)) from None
+    reader = csv.DictReader(io.StringIO(text))
+    header = [h.strip() for h in reader.fieldnames or []]
+    lacking = [c for c in columns if c not in header]
+    if lacking:
+        raise KinematikaError("syntax", f"{path.name} has no column {lacking[0]!r} (its header: "
+                              f"{','.join(header) or 'none'})", path.name)
+    rows = []
+    for row in reader:
+        rows.append({(k or "").strip(): (v or "").strip() if isinstance(v, str) else "" for k, v in row.items()})
+    return rows
+
+
+def _variants(path: Path, names: list[str]) -> list[dict[str, Decimal]]:
+    out = []
+    for i, row in enumerate(read_csv(path, ["variant", *names]), start=2):
+        try:
+            if int(row["variant"]) != len(out) + 1:
+                raise ValueError
+            out.append({n: Decimal(row[n]) for n in names})
+        except (ValueError, InvalidOperation):
+            raise KinematikaError("syntax", "variants are numbered 1, 2, … with a value of each varied "
+                                  "parameter", f"{path.name}:{i}") from None
+    if not out:
+        raise KinematikaError("syntax", "no variants", path.name)
+    return out
+
+
+def _check_key(ex: Exercise, path: Path) -> None:
+    """key.csv must hold what the model gives again (an edited model or key is an error)."""
+    rows = read_csv(path, ["variant", "question", "value", "tolerance"])
+    written = {(r["variant"], r["question"]): r["value"] for r in rows}
+    for v in ex.variants:
+        for r in v.rows:
+            value = written.get((str(v.number), r.question))
+            try:
+                agree = value is not None and abs(float(value) - r.value) <= AGREE * max(r.size, 1e-300)
+            except ValueError:
+                agree = False
+            if not agree:
+                raise KinematikaError("usage", f"key.csv does not match the model solved again (variant "
+                                      f"{v.number}, {r.question}): was the model or the key edited?",
+                                      path.name)

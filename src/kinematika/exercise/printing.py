@@ -1,0 +1,82 @@
+"""HTML printed by Chromium: the sheets and the key to PDF (`page.pdf`), and any page to PNG
+(to look at it), through Playwright driving the system's Chromium (`/usr/bin/chromium`, or
+`chromium` on the path; never a browser Playwright downloads).
+
+Printing is optional: without Playwright or Chromium the HTML files are written all the
+same and `missing()` says in one line what to install.
+"""
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+from typing import Any, Callable, Optional
+
+CHROMIUM = "/usr/bin/chromium"
+FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
+         "--disable-component-update", "--disable-sync", "--no-first-run"]
+
+
+def chromium() -> Optional[str]:
+    """The Chromium executable, or None."""
+    return CHROMIUM if Path(CHROMIUM).exists() else shutil.which("chromium")
+
+
+def missing() -> Optional[str]:
+    """Why pages cannot be printed here (one line), or None when they can."""
+    try:
+        import playwright.sync_api  # noqa: F401
+    except ImportError:
+        return "PDF skipped: Playwright is not installed (pip install 'kinematika[exercise]')"
+    if chromium() is None:
+        return "PDF skipped: Chromium is not installed (apt-get install chromium)"
+    return None
+
+
+def in_own_thread(work: Callable[[], Any]) -> Any:
+    """`work()` in a thread of its own: Playwright's synchronous API refuses a thread that
+    runs an asyncio loop (Jupyter's, a server's) or already drives a Playwright."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(1) as pool:
+        return pool.submit(work).result()
+
+
+def print_pdfs(pages: list[tuple[Path, Path]]) -> None:
+    """Print each HTML file to its PDF (A4, backgrounds kept), with one browser."""
+    in_own_thread(lambda: _print_pdfs(pages))
+
+
+def _print_pdfs(pages: list[tuple[Path, Path]]) -> None:
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
+        try:
+            page = browser.new_page()
+            for html, pdf in pages:
+                page.goto(html.resolve().as_uri(), wait_until="load")
+                page.pdf(path=str(pdf), format="A4", print_background=True, prefer_css_page_size=True)
+        finally:
+            browser.close()
+
+
+def screenshots(pages: list[tuple[Path, Path]], width: int = 900, full_page: bool = True,
+                print_media: bool = True) -> None:
+    """Each HTML file as a PNG (as printed: `print` media), to look at."""
+    in_own_thread(lambda: _screenshots(pages, width, full_page, print_media))
+
+
+def _screenshots(pages: list[tuple[Path, Path]], width: int, full_page: bool, print_media: bool) -> None:
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
+        try:
+            page = browser.new_page(viewport={"width": width, "height": 1200})
+            if print_media:
+                page.emulate_media(media="print")
+            for html, png in pages:
+                page.goto(html.resolve().as_uri(), wait_until="load")
+                page.screenshot(path=str(png), full_page=full_page)
+        finally:
+            browser.close()

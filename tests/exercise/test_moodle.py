@@ -1,0 +1,145 @@
+"""quiz.xml read as Moodle's importer reads it (tests/exercise/moodle_rules.py, ported from
+the public moodle repository): the issue's quizzes of 30 variants of the P pair and 30 of a
+four-bar, and a quiz with its worked solutions as general feedback."""
+from __future__ import annotations
+
+import base64
+import html
+import math
+import re
+import xml.etree.ElementTree as ET
+
+import pytest
+from hypothesis import given, strategies as st
+
+from kinematika.exercise.catalogue import catalogue
+from kinematika.exercise.figure import dimensions_of, figure_png
+from kinematika.exercise.folder import key_csv
+from kinematika.exercise.key import floors_of
+from kinematika.exercise.moodle import cloze_text, quiz_xml
+from kinematika.exercise.solutions import solution_html
+
+from .moodle_rules import extract, validate
+
+MISTAKES = ("coriolis-omitted", "coriolis-doubled", "normal-omitted", "sense-reversed", "drag-as-absolute",
+            "degrees-as-radians", "units-mm-as-m", "components-swapped")
+
+
+def quiz(ex, solutions=False):
+    figures, mistakes, worked = {}, {}, {}
+    for v in ex.variants:
+        figures[v.number] = figure_png(v.solution, dimensions_of(ex, v.solution, v.all_stated(ex), ex.lang), ex.lang)
+        mistakes[v.number] = ex.mistakes(v)
+        if solutions:
+            worked[v.number] = solution_html(ex, v, ex.lang)
+    return quiz_xml(ex, figures, worked if solutions else None, mistakes)
+
+
+@pytest.fixture(scope="module")
+def quizzes(p_pair30, four_bar30, folders):
+    return [(ex, (folders[name] / "quiz.xml").read_text(encoding="utf-8"))
+            for name, ex in (("p_pair", p_pair30), ("four_bar", four_bar30))]
+
+
+def key_of(ex):
+    """key.csv as written: {variant: {question: value text}}."""
+    out: dict = {}
+    for line in key_csv(ex).splitlines()[1:]:
+        variant, question, value, _ = line.split(",")
+        out.setdefault(int(variant), {})[question] = value
+    return out
+
+
+def test_the_quizzes_are_moodle_xml_with_one_cloze_question_per_variant(quizzes):
+    for _, text in quizzes:
+        root = ET.fromstring(text.encode())
+        assert root.tag == "quiz"
+        questions = root.findall("question")
+        assert questions[0].get("type") == "category"
+        assert questions[0].findtext("category/text").startswith("$course$/top/")
+        cloze = questions[1:]
+        assert len(cloze) == 30 and all(q.get("type") == "cloze" for q in cloze)
+        names = [q.findtext("name/text") for q in cloze]
+        ids = [q.findtext("idnumber") for q in cloze]
+        assert all(names) and len(set(names)) == 30 and len(set(ids)) == 30
+        for q in cloze:
+            assert q.find("questiontext").get("format") == "html"
+            assert q.find("generalfeedback").get("format") == "html"
+            assert 0 <= float(q.findtext("penalty")) <= 1 and q.findtext("hidden") == "0"
+
+
+def test_question_texts_are_cdata_and_their_figures_are_files_they_show(quizzes):
+    for _, text in quizzes:
+        assert text.count("<questiontext format=\"html\">\n      <text><![CDATA[") == 30
+        for q in ET.fromstring(text.encode()).findall("question[@type='cloze']"):
+            body = q.findtext("questiontext/text")
+            files = q.findall("questiontext/file")
+            assert len(files) == 1
+            f = files[0]
+            assert f.get("path") == "/" and f.get("encoding") == "base64"
+            assert base64.b64decode(f.text, validate=True)[:8] == b"\x89PNG\r\n\x1a\n"
+            shown = set(re.findall(r"@@PLUGINFILE@@/([^\"'\s>]+)", body))
+            assert shown == {f.get("name")}
+
+
+def test_every_part_is_a_numerical_subquestion_of_the_keys_value_and_absolute_margin(quizzes):
+    for ex, text in quizzes:
+        key = key_of(ex)
+        floors = {v.number: {r.question: floors_of(v.solution)[r.kind] for r in v.rows} for v in ex.variants}
+        mistake_words = {catalogue(ex.lang).format(f"mistake-{k}") for k in MISTAKES}
+        right_words = catalogue(ex.lang).format("feedback-right")
+        for number, q in enumerate(ET.fromstring(text.encode()).findall("question[@type='cloze']"), start=1):
+            rest, subs = extract(q.findtext("questiontext/text"))
+            assert validate(subs) == []
+            assert not re.search(r"\{[0-9]*:[A-Z_]+:", rest)          # nothing left that reads as Cloze
+            questions = list(key[number])
+            assert len(subs) == len(questions)
+            values = {qn: float(v) for qn, v in key[number].items()}
+            for question, sub in zip(questions, subs):
+                assert sub.qtype == "numerical" and sub.mark == "1"
+                right, *wrong = sub.alternatives
+                assert right.fraction == 1 and right.answer == key[number][question]
+                assert right.feedback == right_words
+                stem = question.rsplit(".", 1)[0] if "." in question else question
+                size = math.hypot(*[x for qn, x in values.items() if qn == question or qn.startswith(stem + ".")])
+                # absolute: the relative tolerance times the size, never below 1 % of the
+                # mechanism's scale for the quantity (key.floors_of), as key.csv's rows say
+                floor = floors[number][question]
+                assert float(right.tolerance) == pytest.approx(0.01 * max(size, floor), rel=1e-12)
+                assert float(right.tolerance) >= 0.01 * size * (1 - 1e-12)
+                for w in wrong:
+                    assert w.fraction == 0 and w.feedback in mistake_words
+                    assert abs(float(w.answer) - float(right.answer)) > float(right.tolerance)
+
+
+def test_the_p_pair_quiz_names_the_coriolis_mistakes_where_they_change_the_answer(quizzes):
+    ex, text = quizzes[0]
+    words = catalogue("en").format("mistake-coriolis-omitted")
+    first = ET.fromstring(text.encode()).findall("question[@type='cloze']")[0]
+    _, subs = extract(first.findtext("questiontext/text"))
+    by_question = dict(zip(key_of(ex)[1], subs))
+    assert any(w.feedback == words for w in by_question["q2"].alternatives[1:])       # α_EB
+    assert not any(w.feedback == words for w in by_question["q1"].alternatives[1:])   # ω_EB: no
+
+
+def test_worked_solutions_are_the_general_feedback(p_pair30):
+    from .conftest import P_PAIR, P_PAIR_VARY, make
+
+    ex = make(P_PAIR, P_PAIR_VARY, 2, 11, "eu")
+    text = quiz(ex, solutions=True)
+    for q in ET.fromstring(text.encode()).findall("question[@type='cloze']"):
+        feedback = q.findtext("generalfeedback/text")
+        assert feedback.startswith('<div class="kinematika-solution"><style>')
+        assert "<svg" in feedback and "<body" not in feedback and "<html" not in feedback
+        assert "Abiadurak" in feedback                    # the Basque explanation's section
+        styles = re.search(r"<style>(.*?)</style>", feedback, re.S).group(1)
+        assert all(rule.startswith(".kinematika-solution") for rule in re.findall(r"[^{}]+(?=\{)", styles))
+
+
+@given(st.text(alphabet=st.sampled_from(list("ab }~#\\\"&<>%=:1.")), max_size=30))
+def test_a_feedback_text_reaches_moodle_as_its_html(text):
+    _, subs = extract("{1:NUMERICAL:=1.5:0.1#" + cloze_text(text) + "~%0%2:0.1#" + cloze_text(text) + "}")
+    # the feedback as Moodle stores it (HTML) shows the text as written
+    assert [html.unescape(a.feedback) for a in subs[0].alternatives] == [text] * 2
+    assert all("<" not in a.feedback for a in subs[0].alternatives)
+    assert [a.answer for a in subs[0].alternatives] == ["1.5", "2"]

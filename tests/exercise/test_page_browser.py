@@ -1,0 +1,81 @@
+"""The page's exercise mode in Chromium: a link of `kinematika exercise`'s links.txt opens a
+variant over the page, typed answers are checked (a right one, the Coriolis term left out)
+and the worked solution shown."""
+from __future__ import annotations
+
+import pytest
+
+from .conftest import P_PAIR, P_PAIR_VARY
+
+pytestmark = pytest.mark.browser
+
+
+def test_the_page_opens_a_link_checks_the_answers_and_shows_the_solution(tmp_path):
+    from kinematika.exercise import write_exercise
+    from kinematika.exercise.printing import chromium, in_own_thread
+    from kinematika.web.server import Start
+    from tests.web.page_server import PageServer
+
+    if chromium() is None:
+        pytest.skip("Chromium is not installed (bash scripts/browser.sh)")
+    from .conftest import make
+
+    ex = make(P_PAIR, P_PAIR_VARY, 2, 7, "eu")
+    write_exercise(ex, tmp_path, solutions=False, pdf=False)
+    fragment = (tmp_path / "links.txt").read_text().splitlines()[1].split("\t")[1]
+    v = ex.variants[1]
+    mistakes = {m.kind: m for m in ex.mistakes(v)}
+    server = PageServer(Start())
+    try:
+        in_own_thread(lambda: _drive(server.url, fragment, v, mistakes, tmp_path))
+    finally:
+        _stop(server)
+
+
+def _drive(url, fragment, v, mistakes, tmp_path):
+    """The browser's part, in a thread of its own (another module's Playwright may be live in
+    this process: pytest-xdist runs several modules in one worker)."""
+    from playwright.sync_api import sync_playwright
+
+    from kinematika.exercise.printing import FLAGS, chromium
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
+        page = browser.new_page(viewport={"width": 1000, "height": 1400})
+        page.goto(url + fragment)
+        page.get_by_test_id("exercise-input-q1").fill(repr(v.rows[0].value).replace(".", ","))
+        page.get_by_test_id("exercise-input-q2").fill(repr(mistakes["coriolis-omitted"].rows["q2"].value))
+        page.get_by_test_id("exercise-check").click()
+        page.get_by_test_id("exercise-score").filter(has_text="10").wait_for()
+        assert page.get_by_test_id("exercise-mark-q1").text_content().startswith("✔")
+        assert page.get_by_test_id("exercise-mark-q2").get_attribute("data-diagnosis") == "coriolis-omitted"
+        assert _opened(page.get_by_test_id("exercise-link").get_attribute("href")) == _opened(fragment)
+        page.screenshot(path=str(tmp_path / "exercise-page.png"), full_page=True)
+        page.get_by_test_id("exercise-show").click()
+        page.locator("[data-testid=exercise-solution] iframe").wait_for()
+        page.wait_for_load_state("networkidle")        # no request left computing
+        browser.close()
+
+
+
+
+def _opened(fragment):
+    """What a link holds: its parameters, the model's text inflated (browsers and zlib
+    deflate the same text to different bytes)."""
+    import base64
+    import zlib
+    from urllib.parse import parse_qs
+
+    params = parse_qs(fragment.lstrip("#"))
+    packed = params.pop("model")[0]
+    text = zlib.decompress(base64.urlsafe_b64decode(packed + "=" * (-len(packed) % 4)), -15).decode()
+    return params, text
+
+
+def _stop(server):
+    """Stop this test's server only: `PageServer.stop` waits for every AnyIO worker thread of
+    the process, which includes the idle ones of another test module's server still serving
+    in the same worker process (pytest-xdist), and would wait for them in vain."""
+    server.server.should_exit = True
+    server.thread.join(10)
+    server.sock.close()

@@ -1,0 +1,127 @@
+"""Variants on the statement's grids (same seed, same variants; distinct; away from dead
+points) and their key: `solve --set` of each variant, and the hand derivations' values."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from decimal import Decimal
+
+import pytest
+
+from kinematika.errors import KinematikaError
+from kinematika.exercise.folder import key_csv, variants_csv
+from kinematika.exercise.variants import MAX_CONDITION, parse_vary
+
+from . import derive
+from .conftest import FOUR_BAR, P_PAIR, P_PAIR_VARY, four_bar_data, make, p_pair_data
+
+
+def test_the_same_seed_gives_the_same_variants(p_pair30):
+    again = make(P_PAIR, P_PAIR_VARY, 30, 7)
+    assert [v.stated for v in again.variants] == [v.stated for v in p_pair30.variants]
+    other = make(P_PAIR, P_PAIR_VARY, 30, 8)
+    assert [v.stated for v in other.variants] != [v.stated for v in p_pair30.variants]
+
+
+def test_variants_are_distinct_and_on_the_grids(p_pair30, four_bar30):
+    for ex in (p_pair30, four_bar30):
+        seen = {tuple(v.stated.values()) for v in ex.variants}
+        assert len(seen) == len(ex.variants) == 30
+        for v in ex.variants:
+            for vary in ex.varies:
+                x = v.stated[vary.name]
+                assert vary.low <= x <= vary.high and (x - vary.low) % vary.step == 0
+
+
+def test_no_variant_is_near_a_dead_point(p_pair30, four_bar30):
+    for ex in (p_pair30, four_bar30):
+        assert all(v.solution.solver.analysis.diagnosis.condition_number <= MAX_CONDITION
+                   for v in ex.variants)
+
+
+def test_a_grid_of_dead_points_only_is_refused():
+    # s = 400 mm, E at (100, 400) mm: B's velocity as the rocker allows it (⊥ EB) lies along
+    # the guide at β ≈ 59.7° (hand: the direction ⊥ EB is (0.475, 0.88), the guide's at 60°
+    # is (0.5, 0.866)), a dead point; within a degree of it nothing is well conditioned
+    with pytest.raises(KinematikaError) as err:
+        make(P_PAIR, ["beta=59:61:0.5"], 3, 1)
+    assert err.value.kind == "assembly" and "dead point" in err.value.message
+
+
+def test_a_vary_is_read_with_its_step_or_a_tenth_of_its_magnitude():
+    assert parse_vary("s=300:500:10").count == 21
+    assert parse_vary("w=0.8:1.2").step == Decimal("0.01")
+    assert parse_vary("w=5:15").step == Decimal("1")
+    for bad in ("s=300", "s=5:1", "s=1:2:0", "=1:2", "s=a:b"):
+        with pytest.raises(KinematikaError) as err:
+            parse_vary(bad)
+        assert err.value.where == "--vary"
+
+
+def _close(got, want, size, rel=1e-9):
+    assert abs(got - want) <= rel * max(size, 1e-12), (got, want)
+
+
+def test_every_p_pair_key_is_the_hand_derivation(p_pair30):
+    for v in p_pair30.variants:
+        hand = derive.rows(derive.p_pair(**p_pair_data(v.stated)))
+        assert [r.question for r in v.rows] == list(hand)
+        for r in v.rows:
+            _close(r.value, hand[r.question][0], hand[r.question][1])
+
+
+def test_every_four_bar_key_is_the_hand_derivation(four_bar30):
+    for v in four_bar30.variants:
+        hand = derive.rows(derive.four_bar(**four_bar_data(v.stated)))
+        assert [r.question for r in v.rows] == list(hand)
+        for r in v.rows:
+            _close(r.value, hand[r.question][0], hand[r.question][1])
+
+
+def _flat(answers, asks):
+    out = {}
+    for k in asks:
+        value = answers[k - 1]["value"]
+        if isinstance(value, list):
+            out.update({f"q{k}.{axis}": x for axis, x in zip("xyz", value)})
+        else:
+            out[f"q{k}"] = value
+    return out
+
+
+def test_every_key_equals_solve_with_the_variants_values_through_the_api(p_pair30, four_bar30):
+    from kinematika.commands import How, solve_data
+
+    for ex, path in ((p_pair30, P_PAIR), (four_bar30, FOUR_BAR)):
+        for v in ex.variants:
+            answers = solve_data(path, how=How(set=v.sets))["answers"]
+            assert {r.question: r.value for r in v.rows} == _flat(answers, ex.asks)
+
+
+def test_a_few_keys_equal_solve_set_on_the_command_line(p_pair30, four_bar30):
+    for ex, path in ((p_pair30, P_PAIR), (four_bar30, FOUR_BAR)):
+        for v in ex.variants[:2]:
+            sets = [a for name, expr in v.sets.items() for a in ("--set", f"{name}={expr}")]
+            done = subprocess.run([sys.executable, "-m", "kinematika", "solve", str(path), "--json", *sets],
+                                  capture_output=True, text=True, check=True)
+            assert {r.question: r.value for r in v.rows} == _flat(json.loads(done.stdout)["answers"], ex.asks)
+
+
+def test_the_sets_are_the_stated_values_in_the_models_units(p_pair30):
+    v = p_pair30.variants[0]
+    assert v.sets["s"] == f"{v.stated['s'].normalize():f}/1000"
+    assert v.sets["beta"] == f"deg({v.stated['beta'].normalize():f})"
+
+
+def test_variants_csv_and_key_csv_are_the_contracts(p_pair30):
+    lines = variants_csv(p_pair30).splitlines()
+    assert lines[0] == "variant,s,beta,w" and len(lines) == 31
+    first = p_pair30.variants[0]
+    assert lines[1].split(",") == ["1", *(f"{first.stated[n].normalize():f}" for n in ("s", "beta", "w"))]
+    key = key_csv(p_pair30).splitlines()
+    assert key[0] == "variant,question,value,tolerance"
+    questions = [line.split(",")[1] for line in key[1:11]]
+    assert questions == ["q1", "q2", "q3.x", "q3.y", "q4.x", "q4.y", "q5.x", "q5.y", "q6.x", "q6.y"]
+    assert all(float(line.split(",")[3]) == 0.01 for line in key[1:])
+    assert len(key) == 1 + 30 * 10
