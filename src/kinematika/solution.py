@@ -120,7 +120,7 @@ class Solution:
         if self.motion.terms.mechanics:
             return self.motion.acceleration(self.state(ref.body, relative_to), self.position(ref))
         self.state(ref.body, relative_to)                # the names checked
-        return self.motion.point_acceleration(ref.body, self.position(ref), self._frame(relative_to))
+        return self.motion.point_acceleration(ref.body, self.position(ref), self.frame_of(relative_to))
 
     def omega(self, body: str, relative_to: str | None = None) -> Any:
         """ω of `body` (planar: a number, counter-clockwise positive; 3D: a vector), relative
