@@ -18,6 +18,7 @@ EXTRA = {                       # the module imported -> the extra of pyproject.
     "pandas": "explore",
     "dask": "explore",
     "distributed": "explore",
+    "playwright": "exercise",
     "ezdxf": "cad",             # a cam's profile as DXF (`kinematika cam --dxf`)
 }
 

@@ -142,3 +142,13 @@ def test_a_dxf_without_ezdxf_says_what_to_install(tmp_path):
     done = without("ezdxf", "cam", str(ROOT / "examples" / "cam_roller_follower.yaml"),
                    "--csv", str(tmp_path / "cam.csv"))
     assert done.returncode == 0 and (tmp_path / "cam.csv").exists()
+
+
+def test_sheets_without_playwright_are_written_as_html_and_say_why(tmp_path):
+    """The exercise's PDFs need Chromium through Playwright (the `exercise` extra): without
+    it the quiz, the key and the HTML sheets are written, and one line says what to install."""
+    done = without("playwright,playwright.sync_api", "exercise", str(ROOT / "examples" / "exercises" / "four_bar.yaml"),
+                   "--vary", "a=40:60:5", "--count", "2", "--seed", "1", "--no-solutions", "-o", str(tmp_path / "ex"))
+    assert done.returncode == 0, done.stderr
+    assert "PDF skipped: Playwright is not installed (.venv/bin/pip install -e '.[exercise]'" in done.stdout + done.stderr
+    assert {"quiz.xml", "key.csv", "sheets.html"} <= {p.name for p in (tmp_path / "ex").iterdir()}

@@ -23,10 +23,10 @@ def chromium() -> Optional[str]:
 
 def missing() -> Optional[str]:
     """Why pages cannot be printed here (one line), or None when they can."""
-    try:
-        import playwright.sync_api  # noqa: F401
-    except ImportError:
-        return "PDF skipped: Playwright is not installed (pip install 'kinematika[exercise]')"
+    from ..extras import available, install_hint
+
+    if not available("playwright.sync_api"):
+        return f"PDF skipped: Playwright is not installed ({install_hint('exercise')})"
     if chromium() is None:
         return "PDF skipped: Chromium is not installed (apt-get install chromium)"
     return None
