@@ -30,11 +30,18 @@ MODULES = {                        # the kind's name in model files -> its modul
 
 
 class Registry(Mapping):
-    """The kinds by name, each imported on first use."""
+    """The kinds by name, each imported on first use (then remembered: the engine asks a
+    joint's kind for every row)."""
+
+    def __init__(self) -> None:
+        self._loaded: dict[str, JointKind] = {}
 
     def __getitem__(self, name: str) -> JointKind:
-        module = MODULES[name]               # KeyError for an unknown kind, as a dict's
-        return import_module(f".{module}", __name__).KIND
+        found = self._loaded.get(name)
+        if found is None:
+            module = MODULES[name]           # KeyError for an unknown kind, as a dict's
+            found = self._loaded[name] = import_module(f".{module}", __name__).KIND
+        return found
 
     def __iter__(self) -> Iterator[str]:
         return iter(MODULES)

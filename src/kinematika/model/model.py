@@ -7,6 +7,7 @@ both end here, through `model.build`.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import TYPE_CHECKING, Any, Optional, Union
 
 from ..errors import KinematikaError
@@ -125,7 +126,7 @@ class Joint:
     def where(self) -> str:
         return f"joints[{self.index}] ({self.id})"
 
-    @property
+    @cached_property
     def kind(self) -> JointKind:
         """What this kind of joint means (`kinematika.joints`): ask it, never its name."""
         return joint_kind(self.type)
