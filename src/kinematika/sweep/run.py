@@ -14,6 +14,7 @@ import numpy as np
 from ..engine.instant import instantiate
 from ..engine.system import InstantSolver
 from ..errors import KinematikaError
+from ..memory import arrays_on_heap
 from ..model.model import Model, PointRef
 from .coincident import coincide
 from .plan import Plan, make_plan, swept_joint
@@ -44,6 +45,7 @@ class Sweeper:
 
     def __init__(self, source: Any, joint: Optional[str] = None,
                  flips: Optional[dict[int, float]] = None) -> None:
+        arrays_on_heap()                     # a sweep's speed is its own (`memory`)
         model = _as_model(source)
         symbols = [n for n, p in model.parameters.items() if p.value is None]
         if symbols:
