@@ -145,7 +145,8 @@ class BatchSweeper:
         """Designs whose slot pins lie on their lines (else the engine's `geometry` error)."""
         size = len(next(iter(points.values())))
         holds = np.ones(size, dtype=bool)
-        slots = [j for j in self.model.joints if j.kind.guides_point and isinstance(j.along, PointPair)]
+        slots = [j for j in self.model.joints if j.kind.guides_point and j.kind.slides
+                 and isinstance(j.along, PointPair)]
         if not slots:
             return holds
         stack = np.array(list(points.values()))
