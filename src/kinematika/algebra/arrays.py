@@ -25,12 +25,17 @@ class Arrays:
         self.values = values
 
     def number(self, value: int | float) -> float:
+        """A number written in the model, as a float (the same in every design)."""
         return float(value)
 
     def function(self, name: str) -> Callable[..., Any]:
+        """The model's function `name` (sin, sqrt, atan2, deg …) on arrays: NaN outside its
+        domain for a design, never an error for the study."""
         return _FUNCTIONS[name]
 
     def check(self, value: Any, source: str) -> Any:
+        """A computed value, kept as it is: a non-finite entry marks its own design, and the
+        per-design path says why."""
         return value               # a non-finite value marks its design, not the study
 
     def symbol(self, name: str, positive: bool = True) -> np.ndarray:
@@ -40,9 +45,12 @@ class Arrays:
         return self.values[name]
 
     def sqrt(self, x: Any) -> Any:
+        """√x for each design; round-off below zero (> −1e-12) is 0, a real negative NaN."""
         return _sqrt(x)
 
     def simplify(self, x: Any) -> Any:
+        """`x` unchanged: arrays of numbers have nothing to simplify (the `Symbolic` backend
+        simplifies)."""
         return x
 
 

@@ -22,9 +22,12 @@ class Numeric:
     pi = math.pi
 
     def number(self, value: int | float) -> float:
+        """A number written in the model, as a float."""
         return float(value)
 
     def function(self, name: str) -> Callable[..., float]:
+        """The model's function `name` (sin, sqrt, atan2, deg …) on floats; `deg`, `rad` and
+        `radians` all take degrees to radians, and sqrt refuses a real negative."""
         table: dict[str, Callable[..., float]] = {
             "sqrt": _real_sqrt, "cbrt": lambda x: math.copysign(abs(x) ** (1 / 3), x),
             "sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": math.asin,
@@ -36,17 +39,23 @@ class Numeric:
         return table[name]
 
     def check(self, value: Any, source: str) -> Any:
+        """A computed value must be finite: an infinity or NaN is an error naming the expression
+        `source`."""
         if isinstance(value, float) and not math.isfinite(value):
             raise ExpressionError(f"in {brief(source)}: the value is not finite")
         return value
 
     def symbol(self, name: str, positive: bool = True) -> float:
+        """A parameter without a value cannot be a float: the error says so (the `Symbolic`
+        backend makes it a symbol)."""
         raise ExpressionError(f"parameter {name!r} has no value")
 
     def sqrt(self, x: float) -> float:
+        """√x; round-off below zero (> −1e-12) is 0, a real negative an error."""
         return _real_sqrt(x)
 
     def simplify(self, x: Any) -> Any:
+        """`x` unchanged: floats have nothing to simplify."""
         return x
 
 
@@ -91,6 +100,8 @@ class Symbolic:
         return exact
 
     def function(self, name: str) -> Callable[..., Any]:
+        """The model's function `name` as sympy's (sin, sqrt, atan2 …); `deg`, `rad` and
+        `radians` give x·π/180 exactly."""
         sp = self.sp
         table: dict[str, Callable[..., Any]] = {
             "sqrt": sp.sqrt, "cbrt": sp.cbrt, "sin": sp.sin, "cos": sp.cos, "tan": sp.tan,

@@ -133,15 +133,18 @@ class ExactField:
             atoms[e] = None
 
     def constant(self, p: int, q: int = 1) -> Value:
+        """The rational p/q as a value of the field (zero has no terms)."""
         value = self.sp.QQ(p, q)
         return Value({0: self.ring.ground_new(value)}) if value else Value({})
 
     @property
     def zero(self) -> Value:
+        """0: the value with no terms."""
         return Value({})
 
     @property
     def one(self) -> Value:
+        """1: the constant polynomial over an empty denominator."""
         return Value({0: self.ring.one})
 
     def to(self, e: Any) -> Value:
@@ -182,6 +185,8 @@ class ExactField:
         return out
 
     def add(self, x: Value, y: Value) -> Value:
+        """x + y over the least common multiple of the factored denominators (no polynomial gcd:
+        each factor is raised to the larger of its two powers); checked against the budget."""
         if not x.num:
             return y
         if not y.num:
@@ -208,12 +213,17 @@ class ExactField:
         return out
 
     def neg(self, x: Value) -> Value:
+        """−x: each numerator negated over the same denominator."""
         return Value({m: -p for m, p in x.num.items()}, x.den)
 
     def sub(self, x: Value, y: Value) -> Value:
+        """x − y, as x + (−y)."""
         return self.add(x, self.neg(y))
 
     def mul(self, x: Value, y: Value) -> Value:
+        """x·y: numerators multiplied term by term (a product of the same root replaced by its
+        radicand), denominators' factor powers added; refused (`TooLarge`) before it is formed
+        when it would pass the budget."""
         if not x.num or not y.num:
             return self.zero
         products = _terms(x) * _terms(y)
@@ -274,6 +284,7 @@ class ExactField:
         return out
 
     def power(self, x: Value, n: int) -> Value:
+        """xⁿ by repeated squaring; a negative n is a power of 1/x."""
         if n < 0:
             return self.power(self.inverse(x), -n)
         out, base = self.one, x
@@ -306,6 +317,7 @@ class ExactField:
         return self.mul(self.mul(conj, Value({0: self._den_product(x.den)})), self.inverse(norm))
 
     def div(self, x: Value, y: Value) -> Value:
+        """x / y, as x · (1/y) (`inverse`: the roots removed by conjugates)."""
         return self.mul(x, self.inverse(y))
 
     def _factor(self, p: Any) -> tuple[Any, Any]:
@@ -330,6 +342,7 @@ class ExactField:
         return out
 
     def is_zero(self, x: Value) -> bool:
+        """Whether x is 0 once sin²u + cos²u = 1 is used (its denominator cannot make it zero)."""
         return not self._reduce(x.num)
 
     def cancel(self, x: Value) -> Value:

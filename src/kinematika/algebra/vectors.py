@@ -14,18 +14,23 @@ Vec = tuple
 
 
 def add(a: Sequence, b: Sequence) -> Vec:
+    """a + b, component by component."""
     return tuple(map(operator.add, a, b))      # x + y, pairwise (map: no generator per call)
 
 
 def sub(a: Sequence, b: Sequence) -> Vec:
+    """a − b, component by component."""
     return tuple(map(operator.sub, a, b))
 
 
 def scale(k: Any, a: Sequence) -> Vec:
+    """k·a: each component times the scalar k."""
     return tuple(k * x for x in a)
 
 
 def dot(a: Sequence, b: Sequence) -> Any:
+    """a · b = Σ aᵢbᵢ (started from the integer 0, so that exact and linear components stay
+    exact)."""
     total: Any = 0
     for x, y in zip(a, b):
         total = total + x * y
@@ -33,6 +38,7 @@ def dot(a: Sequence, b: Sequence) -> Any:
 
 
 def cross3(a: Sequence, b: Sequence) -> Vec:
+    """a × b of two 3-vectors: (a_y b_z − a_z b_y, a_z b_x − a_x b_z, a_x b_y − a_y b_x)."""
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
@@ -66,15 +72,19 @@ class Space:
         return (w,) if self.dim == 2 else tuple(w)
 
     def rot_zero(self) -> Any:
+        """A zero angular quantity: 0 in the plane, (0, 0, 0) in space."""
         return 0 if self.dim == 2 else (0, 0, 0)
 
     def rot_sub(self, a: Any, b: Any) -> Any:
+        """ω₁ − ω₂ of two angular quantities (scalars in the plane, 3-vectors in space)."""
         return a - b if self.dim == 2 else sub(a, b)
 
     def rot_dot(self, a: Any, b: Any) -> Any:
+        """ω₁ · ω₂ of two angular quantities (a plain product in the plane)."""
         return a * b if self.dim == 2 else dot(a, b)
 
     def zero(self) -> Vec:
+        """The zero vector of the space's dimension."""
         return (0,) * self.dim
 
     def perpendiculars(self, u: Sequence, sqrt: Any) -> list[Vec]:
