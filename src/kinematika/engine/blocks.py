@@ -47,11 +47,15 @@ class SparseRows:
         return np.bincount(self.cols, weights=np.abs(self.vals), minlength=self.shape[1])
 
     def toarray(self) -> np.ndarray:
+        """The matrix as a dense numpy array (repeated entries of a row and column summed), to
+        diagnose a failure by SVD."""
         out = np.zeros(self.shape)
         np.add.at(out, (self.row_index, self.cols), self.vals)
         return out
 
     def to_scipy(self) -> Any:
+        """The matrix as a scipy CSR matrix, for scipy's sparse LU when the blocks cannot be
+        used (scipy imported only then)."""
         from scipy.sparse import csr_matrix
 
         return csr_matrix((self.vals, self.cols, self.indptr), shape=self.shape)
@@ -129,6 +133,9 @@ class BlockLU:
         return x + self.solve(b - self.matrix @ x)
 
     def solve(self, b: np.ndarray, trans: str = "N") -> np.ndarray:
+        """x with A x = b (``trans="N"``) or Aᵀ x = b (``trans="T"``): forward through the
+        blocks in order, each block's unknowns from its inverse after the entries left of it are
+        taken off; the transpose backwards, as scipy's SuperLU solves."""
         start, inverses = self.start, self.inverses
         k_all = len(start) - 1
         x = np.empty(self.n)

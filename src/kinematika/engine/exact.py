@@ -30,6 +30,8 @@ class ExactWorld:
     reveal: "Reveal"
 
     def state(self, body: str, relative_to: str | None = None) -> "RevealedState":
+        """The motion (ω, v₀, α, a₀) of `body` seen from `relative_to`, revealed lazily:
+        velocities read in the coordinates' stand-ins, accelerations in the velocities' own."""
         v, a = self.motion.state(body, relative_to), self.compact.state(body, relative_to)
         return RevealedState(BodyState(v.omega, v.v0, a.alpha, a.a0), self.reveal)
 
@@ -38,6 +40,9 @@ class ExactWorld:
         return self.motion.point_velocity(body, self.inst.points[point], relative_to)
 
     def acceleration(self, body: str, point: str, relative_to: str | None = None) -> tuple:
+        """The acceleration of `point` of `body` seen from `relative_to`, a_P = a₀ + α × r + ω ×
+        (ω × r), in stand-ins (the solved velocities kept as stand-ins, so it reads as a sum of
+        terms in ω); reveal it to read it."""
         return self.compact.point_acceleration(body, self.inst.points[point], relative_to)
 
 
@@ -203,6 +208,8 @@ class Reveal:
         return name
 
     def vector(self, v: Any) -> Any:
+        """`v` revealed component by component (a scalar revealed as it is, for a planar ω or
+        α)."""
         return tuple(self(c) for c in v) if isinstance(v, tuple) else self(v)
 
 

@@ -22,6 +22,11 @@ from .positions import angle_warnings, positions
 
 @dataclass
 class Instant:
+    """A model evaluated at one instant on the backend's scalars (floats or sympy): parameter
+    values (`env`), point coordinates, shapes, and for a symbolic model the probe values that
+    find its structure numerically. `scale` and `rate` are the model's characteristic length and
+    rate (`engine.ranges`); `names` holds the named quantities a long formula is written with,
+    and `warnings` the input answered as written that is most likely a mistake."""
     model: m.Model
     backend: Any
     space: Space
@@ -40,15 +45,21 @@ class Instant:
 
     @property
     def symbolic(self) -> bool:
+        """Whether the instant computes on exact formulas (a parameter left as a symbol, or
+        asked for)."""
         return self.backend.symbolic
 
     def value(self, expr: Expr, where: str) -> Any:
+        """Expression `expr` evaluated with the instant's parameters on its backend; an error in
+        it becomes a schema error at `where`."""
         try:
             return evaluate(expr, self.env, self.backend)
         except ExpressionError as err:
             raise KinematikaError("schema", str(err), where) from None
 
     def vector(self, exprs: tuple, where: str) -> tuple:
+        """Each component of `exprs` evaluated (`value`), its place named ``where[i]`` in an
+        error."""
         return tuple(self.value(e, f"{where}[{i}]") for i, e in enumerate(exprs))
 
     def unit(self, vec: tuple, where: str) -> tuple:
@@ -68,6 +79,8 @@ class Instant:
                                   where) from err
 
     def direction(self, d: m.Direction, where: str) -> tuple:
+        """A unit direction from the model: two points (from `start` to `end`, which must
+        differ) or a written vector, normalised."""
         if isinstance(d, m.PointPair):
             gap = sub(self.points[d.end], self.points[d.start])
             if math.hypot(*self.numvec(gap)) <= 1e-12 * self.scale:
@@ -101,6 +114,8 @@ class Instant:
                               "(the square root or a power of a negative quantity?)", "parameters")
 
     def numvec(self, v: tuple) -> tuple:
+        """A vector's components as floats (a symbolic one at the probe values), to measure and
+        compare."""
         return tuple(self.num(c) for c in v)
 
 

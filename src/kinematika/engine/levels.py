@@ -27,6 +27,8 @@ class Unknowns:
         self.n = self.width * len(bodies)
 
     def rot(self, body: str) -> Any:
+        """The rotation unknowns of `body` as linear forms: ω (or α) — one component in the
+        plane, three in space; zero for the frame."""
         if body not in self.offset:
             return self.space.rot_zero()
         o = self.offset[body]
@@ -34,12 +36,15 @@ class Unknowns:
         return parts[0] if self.space.dim == 2 else parts
 
     def trans(self, body: str) -> tuple:
+        """The translation unknowns of `body` as linear forms: v₀ (or a₀), the velocity of its
+        point at the reference; zero for the frame."""
         if body not in self.offset:
             return self.space.zero()
         o = self.offset[body] + self.space.rot
         return tuple(Lin.unknown(o + i) for i in range(self.space.dim))
 
     def body_of(self, column: int) -> str:
+        """The body whose twist holds unknown number `column`."""
         return self.bodies[column // self.width]
 
 
@@ -54,9 +59,11 @@ class KnownTerms(Unknowns):
         self.__dict__.update(unknowns.__dict__)
 
     def rot(self, body: str) -> Any:
+        """Zero: the unknown α taken out, so that a row keeps only its known terms."""
         return self.space.rot_zero()
 
     def trans(self, body: str) -> tuple:
+        """Zero: the unknown a₀ taken out, so that a row keeps only its known terms."""
         return self.space.zero()
 
 
@@ -79,19 +86,28 @@ class Level:
         return self.u.rot(body)
 
     def point(self, body: str, p: tuple) -> tuple:
+        """The motion of `body`'s material point at `p` as linear forms: its velocity at the
+        velocity level, its acceleration at the acceleration level (each level says its
+        formula)."""
         raise NotImplementedError
 
     # the solved velocities, for the terms of the acceleration level
     def w(self, body: str) -> Any:
+        """The solved ω of `body` (zero for the frame), for the acceleration level's centripetal
+        and Coriolis terms."""
         return self.motion.states[body].omega if body in self.motion.states else self.space.rot_zero()
 
     def v(self, body: str, p: tuple) -> tuple:
+        """The solved velocity of `body`'s material point at `p`, v = v₀ + ω × (P − ref) (zero
+        for the frame), for the Coriolis terms."""
         if body not in self.motion.states:
             return self.space.zero()
         return self.motion.velocity(self.motion.states[body], p)
 
 
 class VelocityLevel(Level):
+    """The velocity level: unknowns (ω, v₀) of every moving body; a joint's row is linear in
+    them, e.g. a pin's v_P(b) − v_P(a) = 0."""
     accel = False
 
     def point(self, body: str, p: tuple) -> tuple:
@@ -101,6 +117,9 @@ class VelocityLevel(Level):
 
 
 class AccelerationLevel(Level):
+    """The acceleration level: unknowns (α, a₀), with the solved velocities' centripetal and
+    Coriolis terms in the constants; the coefficients are the velocity level's, so both systems
+    share one matrix."""
     accel = True
 
     def point(self, body: str, p: tuple) -> tuple:

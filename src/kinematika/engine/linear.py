@@ -10,6 +10,9 @@ from typing import Any
 
 
 class Lin:
+    """A linear form Σ coefᵢ·xᵢ + const in the unknown twists: what a joint's or a driver's
+    condition is written as, and must vanish. It adds, subtracts and scales like a number (a
+    product of two unknowns is refused), so the joint formulas are written once with ``+ − *``."""
     __slots__ = ("const", "terms")
     __array_ufunc__ = None   # numpy scalars defer to us instead of building object arrays
 
@@ -19,6 +22,7 @@ class Lin:
 
     @staticmethod
     def unknown(index: int) -> "Lin":
+        """The unknown xᵢ itself: coefficient 1 at column `index`, no constant."""
         return Lin({index: 1})
 
     def __add__(self, other: Any) -> "Lin":

@@ -26,6 +26,9 @@ class Scaled:
 
 
 def scale_system(a: np.ndarray, translation_columns: np.ndarray, length: float) -> Scaled:
+    """A dimensionless copy of A: translation columns times the model's `length` (C), then each
+    row divided by its largest entry (R), so A_s = R A C compares rotations with translations
+    and rows with rows."""
     col = np.where(translation_columns, length, 1.0)
     scaled = a * col
     norms = np.abs(scaled).max(axis=1) if a.size else np.zeros(0)
@@ -34,6 +37,8 @@ def scale_system(a: np.ndarray, translation_columns: np.ndarray, length: float) 
 
 
 def numeric_rank(a: np.ndarray, reference: float | None = None) -> int:
+    """The rank of `a` by its singular values: those above the largest (or `reference`) /
+    `SINGULAR_CONDITION` count."""
     if a.size == 0:
         return 0
     s = np.linalg.svd(a, compute_uv=False)
@@ -43,6 +48,9 @@ def numeric_rank(a: np.ndarray, reference: float | None = None) -> int:
 
 @dataclass
 class Diagnosis:
+    """What the rank of the dimensionless matrix says: `n` unknowns, the degrees of freedom the
+    joints leave (`dof` = n − rank of the joint rows), the independent conditions the drivers
+    add, and the condition number (the largest singular value over the n-th)."""
     n: int
     dof: int                 # of the joints alone
     conditions: int          # independent driver conditions
@@ -50,6 +58,8 @@ class Diagnosis:
 
 
 def diagnose(scaled: np.ndarray, is_driver: np.ndarray) -> Diagnosis:
+    """The `Diagnosis` of a scaled system whose driver rows are marked by `is_driver`: ranks
+    from one SVD, dof = n − rank(joints), driver conditions = rank(all) − rank(joints)."""
     n = scaled.shape[1]
     s = np.linalg.svd(scaled, compute_uv=False) if scaled.size else np.zeros(0)
     top = s[0] if s.size else 0.0

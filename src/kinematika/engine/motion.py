@@ -15,6 +15,9 @@ from .terms import MECHANICS, Terms
 
 @dataclass(frozen=True)
 class BodyState:
+    """A body's twist and its derivative at the instant: angular velocity ω and acceleration α,
+    and the velocity v₀ and acceleration a₀ of its material point at the reference point
+    (scalars ω, α in the plane, 3-vectors in space)."""
     omega: Any
     v0: tuple
     alpha: Any
@@ -92,6 +95,8 @@ class Motion:
         return velocity, acceleration
 
     def point_velocity(self, body: str, point: tuple, relative_to: str | None = None) -> tuple:
+        """The velocity of `body`'s material point at `point` seen from `relative_to`: v = v₀ +
+        ω × (P − ref) of the relative state."""
         return self.velocity(self.state(body, relative_to), point)
 
     def point_acceleration(self, body: str, point: tuple, relative_to: str | None = None) -> tuple:

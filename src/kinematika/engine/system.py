@@ -45,6 +45,9 @@ class InstantSolver:
         self.exact: Any = None      # a symbolic instant's solution in stand-ins (`engine.exact`)
 
     def rows(self, lv: Level) -> list[Row]:
+        """The rows of one level: each joint's conditions, each driver's, and the idle spins'
+        (`engine.idle`), in that order; the pair of bodies each joint or driver row relates is
+        kept in `pairs`."""
         out: list[Row] = []
         pairs: list = []          # the two bodies each joint row or driver row relates
         model = self.inst.model
@@ -62,6 +65,8 @@ class InstantSolver:
         return out + idle
 
     def matrix(self, rows: list[Row]) -> tuple[list[list[Any]], list[Any]]:
+        """The rows as A x = b: A[i][col] the coefficients of row i's linear form, b[i] minus
+        its constant."""
         n = self.unknowns.n
         a = [[0] * n for _ in rows]
         b = []
@@ -138,6 +143,9 @@ class InstantSolver:
         return exact
 
     def solve(self) -> Motion:
+        """The instant's `Motion`: A x_v = b_v for (ω, v₀), then A x_a = b_a(x_v) for (α, a₀)
+        with the same matrix (only the known terms rebuilt); a symbolic instant is solved
+        exactly in stand-ins (`engine.exact`). Redundant conditions must agree at both levels."""
         inst, u = self.inst, self.unknowns
         if self.analysis is None:
             self.prepare()
