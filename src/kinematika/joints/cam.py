@@ -37,9 +37,15 @@ class Cam(JointKind):
     point_on = "b"
 
     def conditions(self, dim: int) -> int:
+        """One: the follower keeps touching the cam (a higher pair, planar only)."""
         return 1
 
     def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
+        """The contact at this instant: a flat face (the follower's `line`) on the cam's
+        profile, or the point `at` on the profile (a knife edge) or on the pitch curve (a
+        roller's centre, `roller` its radius), the branch nearest `near` when given. A cam joint
+        whose first body has no `cam:` shape, a flat face without a line or an edge without `at`
+        is a schema error naming the joint."""
         geo = super().prepare(inst, joint)
         cams = [s for s in inst.shapes[joint.a] if isinstance(s, CamShape)]
         if not cams:
@@ -67,6 +73,8 @@ class Cam(JointKind):
         return self.prepare(inst, geo.joint, hint)
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """(v_Jb − v_Ja)·n = 0 along the common normal at the contact J (at the acceleration
+        level with the curvature terms, `touching.touch_row`)."""
         j = geo.joint
         return [(touch_row(lv, j.a, j.b, geo.contact), f"the follower {j.b} keeps touching the cam {j.a}")]
 

@@ -30,9 +30,13 @@ class Contact(JointKind):
     point_on = "b"
 
     def conditions(self, dim: int) -> int:
+        """One: the outlines keep touching; sliding along the tangent is free."""
         return 1
 
     def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
+        """Where the two bodies' outlines (circles, lines, curves, a cam's profile, or point
+        `at` of the second) touch at this instant: the contact J, common normal n and radii of
+        curvature (`geo.contact`), the branch nearest `near` when given."""
         geo = super().prepare(inst, joint)
         geo.contact = find_touch(inst, joint, outlines(inst, joint, joint.a),
                                  outlines(inst, joint, joint.b, joint.at), near)
@@ -43,6 +47,8 @@ class Contact(JointKind):
         return self.prepare(inst, geo.joint, hint)
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """(v_Jb − v_Ja)·n = 0: no approach along the common normal (at the acceleration level
+        with the curvature terms, `touching.touch_row`)."""
         j = geo.joint
         return [(touch_row(lv, j.a, j.b, geo.contact), f"{j.b} keeps touching {j.a}")]
 

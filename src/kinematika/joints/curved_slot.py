@@ -40,9 +40,15 @@ class CurvedSlot(JointKind):
     point_on = "b"
 
     def conditions(self, dim: int) -> int:
+        """One: the pin stays on the slot's curve; its motion along the slot and the relative
+        rotation are free."""
         return 1
 
     def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
+        """The pin `at` on the first body's circle or curve at this instant: the contact (normal
+        n, radius of curvature ρ) and `along`, the slot's tangent t = n turned a quarter turn (a
+        circle's normal points outward, a curve's is its own). A first body without a circle or
+        curve is a schema error naming the joint."""
         geo = super().prepare(inst, joint)
         curves = [s for s in inst.shapes[joint.a] if isinstance(s, (Circle, Curve))]
         if not curves:
@@ -58,6 +64,8 @@ class CurvedSlot(JointKind):
         return self.prepare(inst, geo.joint, hint)
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """v_rel·n = 0 at the pin: its relative velocity is along the slot; at the acceleration
+        level with the normal part v_rel²/ρ and Coriolis (`touching.touch_row`)."""
         j = geo.joint
         return [(touch_row(lv, j.a, j.b, geo.contact), f"{j.at}@{j.b} stays in the curved slot of {j.a}")]
 

@@ -27,14 +27,20 @@ class Cylindrical(JointKind):
     fields = {"at": "required", "axis": "required in 3D"}
 
     def conditions(self, dim: int) -> int:
+        """Four: two relative rotations and two relative translations across the axis are
+        forbidden (turning about it and sliding along it are free)."""
         return 4
 
     def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        """The axis's two unit normals n₁, n₂, across which neither rotation nor sliding is
+        allowed."""
         geo = super().prepare(inst, joint)
         geo.perps = inst.space.perpendiculars(geo.axis, inst.backend.sqrt)
         return geo
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """(ω_b − ω_a)·nₖ = 0 and v_rel·nₖ = 0 at `at`, for the axis's two normals nₖ (four
+        rows)."""
         j = geo.joint
         rows = [(turning(lv, j.a, j.b, p), f"relative rotation only about the axis ({k + 1})")
                 for k, p in enumerate(geo.perps)]
@@ -52,6 +58,9 @@ class Cylindrical(JointKind):
         return symbols.block_on_guide(view, ctx)
 
     def no_rate(self, where: str) -> KinematikaError:
+        """The error for a joint-rate driver: a cylindrical joint has two rates, so the user is
+        told to drive a body's omega relative to the other body and a point's velocity along the
+        axis."""
         return KinematikaError("schema", "a cylindrical joint has two rates (turning and sliding): drive "
                                "the body's omega relative_to the other body and a point's velocity along "
                                "the axis", where)

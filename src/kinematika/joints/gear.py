@@ -20,6 +20,8 @@ class Gear(Rolling):
     pitch = True
 
     def conditions(self, dim: int) -> int:
+        """One, in the structural count: the mesh fixes only the gears' turns when their centres
+        are held by other joints (its rows are rolling's, v_J(b) = v_J(a))."""
         return 1
 
     def add(self, m: Any, a: str, b: str, internal: bool = False,  # type: ignore[override]

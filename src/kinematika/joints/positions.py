@@ -17,6 +17,8 @@ def differences(p: Any, r: Any) -> list:
 
 
 def dot(p: Any, r: Any) -> float:
+    """p · r = Σ pᵢrᵢ, for the residuals (duck-typed: floats, arrays over designs or compiled
+    terms)."""
     return sum(x * y for x, y in zip(p, r))
 
 

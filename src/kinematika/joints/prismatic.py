@@ -30,9 +30,13 @@ class Prismatic(JointKind):
     fields = {"along": "required", "axis": "optional in 3D"}
 
     def conditions(self, dim: int) -> int:
+        """Two in the plane (no relative rotation, no motion across the guide), five in space
+        (only the slide along the guide is free)."""
         return 2 if dim == 2 else 5
 
     def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        """In 3D a prismatic pair given by its `axis` alone slides along that axis: `along` is
+        the axis and the guide's normals its two perpendiculars."""
         geo = super().prepare(inst, joint)
         if inst.space.dim == 3 and geo.along is None:
             geo.along = geo.axis
@@ -40,6 +44,9 @@ class Prismatic(JointKind):
         return geo
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """ω_b − ω_a = 0 (one row in the plane, three in space) and v_rel·n = 0 for each normal
+        n of the guide, at `at` or the reference point; the acceleration rows add the Coriolis
+        term 2 v_rel·(ω_a × n)."""
         j = geo.joint
         q = geo.at if geo.at is not None else lv.ref
         rows = [(c, "no relative rotation" + (f" ({AXES[i]})" if lv.space.dim == 3 else ""))

@@ -33,15 +33,21 @@ class Revolute(JointKind):
     point_on = "ab"
 
     def conditions(self, dim: int) -> int:
+        """Two in the plane (the point `at` shared), five in space (shared, and turning only
+        about the axis)."""
         return 2 if dim == 2 else 5
 
     def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        """In 3D, the axis's two unit normals, about which the bodies may not turn relative to
+        each other."""
         geo = super().prepare(inst, joint)
         if geo.axis is not None:
             geo.perps = inst.space.perpendiculars(geo.axis, inst.backend.sqrt)
         return geo
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """v_P(b) − v_P(a) = 0 at `at`, one row per component, and in 3D (ω_b − ω_a)·nₖ = 0 for
+        the axis's two normals."""
         j = geo.joint
         rows = [(c, f"{j.at}@{j.b} moves with {j.at}@{j.a} ({AXES[i]})")
                 for i, c in enumerate(coincident(lv, j.a, j.b, geo.at))]

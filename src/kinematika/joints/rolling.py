@@ -32,9 +32,13 @@ class Rolling(JointKind):
     fields = {"at": "optional", "internal": "optional"}
 
     def conditions(self, dim: int) -> int:
+        """Two in the plane (the contact kept, no slip), three in space (a disc on a plane:
+        v_J(b) = v_J(a))."""
         return 2 if dim == 2 else 3
 
     def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        """The contact of the two shapes at this instant (`geo.contact`: the point J, its
+        normal, and its motion J̇ for the acceleration rows)."""
         geo = super().prepare(inst, joint)
         geo.contact = find_contact(inst, joint)
         return geo

@@ -34,14 +34,19 @@ class Slot(JointKind):
     point_on = "b"
 
     def conditions(self, dim: int) -> int:
+        """One: the pin stays on the slot's line; sliding along it and turning are free."""
         return 1
 
     def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+        """The slot's direction and normal at this instant; a slot given by two points must
+        have the pin on their line (`off_line`: else a geometry error with the gap)."""
         geo = super().prepare(inst, joint)
         off_line(inst, joint, geo)
         return geo
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """v_rel·n = 0 at the pin, n the slot's normal; the acceleration row adds the Coriolis
+        term 2 v_rel·(ω_a × n)."""
         j = geo.joint
         return [(sliding(lv, j.a, j.b, geo.at, geo.perps[0]), f"{j.at}@{j.b} stays on the slot of {j.a}")]
 

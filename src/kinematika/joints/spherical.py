@@ -26,9 +26,11 @@ class Spherical(JointKind):
     point_on = "ab"
 
     def conditions(self, dim: int) -> int:
+        """Three: the centre `at` is shared; every relative rotation is free."""
         return 3
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """v_P(b) − v_P(a) = 0 at the ball's centre, one row per component."""
         j = geo.joint
         return [(c, f"{j.at}@{j.b} moves with {j.at}@{j.a} ({AXES[i]})")
                 for i, c in enumerate(coincident(lv, j.a, j.b, geo.at))]

@@ -62,11 +62,13 @@ class Mark:
 
 # shapes of symbols -------------------------------------------------------------------------
 def unit(v: Vec) -> Vec:
+    """`v` over its length (a zero vector is returned as it is)."""
     n = float(np.linalg.norm(v))
     return v / n if n > 0 else v
 
 
 def perpendicular(v: Vec) -> Vec:
+    """`v` turned a quarter turn counter-clockwise: (−v_y, v_x)."""
     return np.array([-v[1], v[0]])
 
 
@@ -155,6 +157,8 @@ def block_on_guide(view: Any, ctx: Any) -> list[Mark]:
 
 
 def slider_centre(view: Any, ctx: Any) -> Optional[Vec]:
+    """Where a slider's block is drawn: at the joint's point `at`, else at the centroid of the
+    moving body's points (the slider's, else the guide's), else nowhere (None)."""
     if view.at is not None:
         return np.asarray(view.at, dtype=float)
     for name in (view.b, view.a):

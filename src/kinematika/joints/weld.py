@@ -22,9 +22,12 @@ class Weld(JointKind):
     route = "weld"
 
     def conditions(self, dim: int) -> int:
+        """Three in the plane, six in space: no relative motion at all."""
         return 3 if dim == 2 else 6
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """ω_b − ω_a = 0 and v_R(b) − v_R(a) = 0 at the reference point R: the two bodies share
+        one twist."""
         j = geo.joint
         rows = [(c, f"{j.b} turns with {j.a}") for c in same_rotation(lv, j.a, j.b)]
         rows += [(c, f"{j.b} moves with {j.a} ({AXES[i]})")

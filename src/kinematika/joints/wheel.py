@@ -32,9 +32,14 @@ class Wheel(JointKind):
     point_on = "b"
 
     def conditions(self, dim: int) -> int:
+        """One, non-holonomic: no sideways velocity of the wheel's point relative to the ground
+        it runs on."""
         return 1
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+        """v_rel(Q_b)·n_b = 0, n_b the normal to `along` fixed in the wheel; at the acceleration
+        level (a_Qb − a_Qa − ω_a × v_rel)·n + v_rel·(ω_b × n) = 0, the normal turning with the
+        wheel."""
         j, sp = geo.joint, lv.space
         n = geo.perps[0]
         row = dot(coincident(lv, j.a, j.b, geo.at), n)
