@@ -55,10 +55,13 @@ class Mechanism:
         return self
 
     def point(self, name: str, *coords: Value) -> "Mechanism":
+        """A point at coordinates given as numbers, parameter names or formulas: ``m.point("B",
+        "L*cos(theta)", 2)``."""
         self.tree["points"][name] = list(coords)
         return self
 
     def points(self, **coords: Sequence[Value]) -> "Mechanism":
+        """Several points at once, by keyword: ``m.points(O2=(0, 0), O4=(4, 0))``."""
         for name, xy in coords.items():
             self.point(name, *xy)
         return self
@@ -142,6 +145,8 @@ class Mechanism:
     # drivers and questions ---------------------------------------------------------------
     def drive_omega(self, body: str, value: Any, alpha: Any = 0,
                     relative_to: Optional[str] = None) -> "Mechanism":
+        """A driver: `body` turns at ω = `value` with α = `alpha` (a vector in 3D), relative to
+        the frame or to body `relative_to`: ``m.drive_omega("crank", 10)``."""
         spec = {"omega": body, "value": _list(value), "alpha": _list(alpha)}
         if relative_to:
             spec["relative_to"] = relative_to
@@ -149,12 +154,17 @@ class Mechanism:
         return self
 
     def drive_joint(self, joint: str, rate: Value, accel: Value = 0) -> "Mechanism":
+        """A driver: joint `joint`'s coordinate changes at `rate` with acceleration `accel`
+        (rad/s for a pin's angle, length/s for a slider): ``m.drive_joint("j1", 2)``."""
         self.tree["drivers"].append({"joint": joint, "rate": rate, "accel": accel})
         return self
 
     def drive_velocity(self, point: str, value: Any, acceleration: Any = 0,
                        along: Optional[Sequence[Value]] = None,
                        relative_to: Optional[str] = None) -> "Mechanism":
+        """A driver: material point `point` (``"C@slider"``) moves at `value` with
+        `acceleration` — a vector, or a speed along `along` — relative to the frame or to body
+        `relative_to`: ``m.drive_velocity("C", 1.5, along=(1, 0))``."""
         spec: dict[str, Any] = {"velocity": point, "value": _list(value),
                                 "acceleration": _list(acceleration)}
         if along is not None:
@@ -171,6 +181,8 @@ class Mechanism:
 
     # results -----------------------------------------------------------------------------
     def to_model(self) -> Model:
+        """The checked `Model`: the tree goes through the same checks as a file, so an error
+        names the place a file would (``drivers[0].omega``)."""
         return build_model(self.tree)
 
     # solve(), assemblies() and Jupyter's _repr_svg_ are registered by `kinematika.api`, which

@@ -29,6 +29,9 @@ class LineDef:
 
 @dataclass(frozen=True)
 class Polar:
+    """A point at `distance` from `origin` along the direction at `angle` counter-clockwise from
+    the x axis, or from the direction reference[0] → reference[1] when given (a crank's pin: O2
+    + L·(cos θ, sin θ))."""
     origin: Location
     distance: Expr
     angle: Expr
@@ -37,6 +40,8 @@ class Polar:
 
 @dataclass(frozen=True)
 class InFrame:
+    """A point fixed in the frame of two points: origin + x·u + y·n, u the unit vector origin →
+    toward and n = u turned +90°, (x, y) = `at`."""
     origin: Location
     toward: Location
     at: tuple[Expr, Expr]
@@ -44,6 +49,9 @@ class InFrame:
 
 @dataclass(frozen=True)
 class TwoCircles:
+    """A point at radii[0] from centers[0] and radii[1] from centers[1] (a four-bar's coupler
+    pin): the intersection on `side` of the directed line centers[0] → centers[1], or the one
+    nearest the sketch point `near`."""
     centers: tuple[Location, Location]
     radii: tuple[Expr, Expr]
     side: Optional[str] = None             # "left" or "right" of centers[0] → centers[1]
@@ -52,6 +60,8 @@ class TwoCircles:
 
 @dataclass(frozen=True)
 class CircleLine:
+    """A point at `radius` from `center` on `line` (a slider-crank's slider): the intersection
+    `side` ("ahead" farther along the line's direction, or "behind"), or the one nearest `near`."""
     center: Location
     radius: Expr
     line: LineDef
@@ -61,6 +71,7 @@ class CircleLine:
 
 @dataclass(frozen=True)
 class TwoLines:
+    """The point where two lines meet (parallel lines are a geometry error when evaluated)."""
     lines: tuple[LineDef, LineDef]
 
 
@@ -125,6 +136,9 @@ class ConstructionReader:
         self.expr, self.vector, self.known, self.symbolic = expr, vector, known, symbolic
 
     def read(self, spec: object, where: str) -> Construction:
+        """The `Construction` a checked spec describes (polar, frame, two circles, circle and
+        line, two lines), its points' names checked and its values parsed; `where` names the
+        place in errors."""
         # the checked spec is one of `schema`'s classes or `shape`'s records of the same name
         kind = type(spec).__name__
         if kind == "PolarSpec":
@@ -152,6 +166,8 @@ class ConstructionReader:
         return TwoLines(tuple(self.line(l, f"{where}.lines[{i}]") for i, l in enumerate(spec.lines)))
 
     def loc(self, raw: object, where: str) -> Location:
+        """A location: a known point's name, or planar coordinates [x, y] parsed; an unknown
+        name or another shape is a schema error at `where`."""
         if isinstance(raw, str):
             if raw not in self.known:
                 raise KinematikaError("schema", f"unknown point {raw!r} (points: "
@@ -167,6 +183,8 @@ class ConstructionReader:
         return vec
 
     def circle(self, raw: list, where: str) -> tuple[Location, Expr]:
+        """A circle written [centre, radius]: the centre's location and the radius parsed (one
+        number, not a list)."""
         center, radius = raw
         if isinstance(radius, list):
             raise KinematikaError("schema", "a circle is [centre, radius]: the radius is one number",
@@ -174,6 +192,8 @@ class ConstructionReader:
         return self.loc(center, f"{where}[0]"), self.expr(radius, f"{where}[1]")
 
     def line(self, raw: object, where: str) -> LineDef:
+        """A `LineDef`: ``{through, direction}`` (a vector: two point names there mean [P, Q]
+        was meant, said in the error) or [P, Q] through two distinct points."""
         if type(raw).__name__ == "LineSpec":
             direction = raw.direction
             if len(direction) == 2 and all(isinstance(v, str) and v in self.known for v in direction):
@@ -190,6 +210,8 @@ class ConstructionReader:
         return LineDef(through, toward=toward)
 
     def near(self, raw: Optional[list], where: str) -> Optional[tuple[Expr, Expr]]:
+        """The sketch point [x, y] that chooses an intersection, or None; a model with symbolic
+        parameters must use `side` instead, which holds for every value of the symbols."""
         if raw is None:
             return None
         if self.symbolic:
@@ -202,6 +224,7 @@ class ConstructionReader:
 
     @staticmethod
     def distinct(pair: tuple[Location, Location], where: str) -> None:
+        """Two named points must differ (a line or a frame through P and P has no direction)."""
         if isinstance(pair[0], str) and pair[0] == pair[1]:
             raise KinematikaError("schema", f"two different points are needed, got {pair[0]!r} twice",
                                   where)

@@ -41,10 +41,13 @@ class Unit:
 
     @property
     def size(self) -> float:
+        """The unit's size in its kind's base unit (metre, radian, second), ratio·π^pi: 0.001
+        for mm, π/180 for deg."""
         return float(self.ratio) * math.pi ** self.pi
 
     @property
     def shown(self) -> str:
+        """How the unit is printed after a number ("°" for deg, else its name)."""
         return self.text or self.name
 
 

@@ -46,6 +46,8 @@ Direction = Union[ExprVector, PointPair]
 
 @dataclass(frozen=True)
 class Circle:
+    """A body's circle (a wheel, a pitch circle, a slot's arc): its centre (coordinates, or the
+    named point `center_point`) and radius."""
     center: ExprVector               # empty when `center_point` names the point
     radius: Expr
     center_point: Optional[str] = None
@@ -53,6 +55,8 @@ class Circle:
 
 @dataclass(frozen=True)
 class Line:
+    """A body's straight line (a road, a rack, a flat face): a point it passes through
+    (coordinates, or the named point `through_point`) and its direction."""
     through: ExprVector              # empty when `through_point` names the point
     direction: "Direction"
     through_point: Optional[str] = None
@@ -60,6 +64,8 @@ class Line:
 
 @dataclass(frozen=True)
 class Disc:
+    """A 3D body's disc (a wheel rolling on a plane): centre (or the point `center_point`),
+    radius and the axis it turns about."""
     center: ExprVector
     radius: Expr
     axis: "Direction"
@@ -68,6 +74,8 @@ class Disc:
 
 @dataclass(frozen=True)
 class Plane:
+    """A 3D body's plane (the ground a disc rolls on): a point it passes through (or the point
+    `through_point`) and its normal."""
     through: ExprVector
     normal: "Direction"
     through_point: Optional[str] = None
@@ -98,6 +106,8 @@ Shape = Union[Circle, Line, Disc, Plane, CurveShape, CamShape]
 
 @dataclass
 class Body:
+    """A rigid body: its name, the names of the points it carries (a point may belong to several
+    bodies) and its shapes (circles, lines, curves, a cam …) for rolling and contact."""
     name: str
     points: list[str]
     shapes: list[Shape] = field(default_factory=list)
@@ -105,6 +115,8 @@ class Body:
 
 @dataclass
 class Parameter:
+    """A named value of the model; `value` None keeps it a symbol, so answers are formulas in
+    it; `positive` tells the algebra its sign (lengths are positive; an angle may have either)."""
     name: str
     value: Optional[Expr]          # None: a symbol
     positive: bool = True
@@ -112,6 +124,10 @@ class Parameter:
 
 @dataclass
 class Joint:
+    """A joint between body `a` (the one `along` directions are fixed in) and body `b`, of kind
+    `type` (ask `kind`, never compare the name), with the keys its kind declares: point `at`,
+    directions `along` and `axis`, `internal` for circles inside circles. `index` is its place
+    in the file."""
     id: str
     type: str
     a: str                         # first body: the one `along` directions are fixed in
@@ -124,6 +140,7 @@ class Joint:
 
     @property
     def where(self) -> str:
+        """Where the joint is written, for errors: ``joints[2] (j3)``."""
         return f"joints[{self.index}] ({self.id})"
 
     @cached_property
@@ -134,6 +151,9 @@ class Joint:
 
 @dataclass
 class Driver:
+    """A known motion: a body's ω (`kind` "omega", `body`), a joint's rate ("joint", `joint`) or
+    a material point's velocity ("velocity", `point`, optionally only `along` a direction), with
+    its value and acceleration, relative to the frame or to body `relative_to`."""
     kind: str                      # "omega", "joint" or "velocity"
     index: int
     body: Optional[str] = None     # omega driver
@@ -146,6 +166,7 @@ class Driver:
 
     @property
     def where(self) -> str:
+        """Where the driver is written, for errors: ``drivers[0]``."""
         return f"drivers[{self.index}]"
 
 
@@ -156,6 +177,9 @@ QUESTION_KINDS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvatur
 
 @dataclass
 class Question:
+    """One question of `ask`: its `kind` (velocity, icr, curvature …), its target (a body, a
+    material point or a joint id), the body it is asked `relative_to` and, for a decomposition,
+    the `moving` body; `echo` is the question as written, repeated in the answer."""
     kind: str                      # one of QUESTION_KINDS
     index: int
     target: Union[str, PointRef]   # body name, material point or joint id
@@ -165,6 +189,7 @@ class Question:
 
     @property
     def where(self) -> str:
+        """Where the question is written, for errors: ``ask[1]``."""
         return f"ask[{self.index}]"
 
     @property
@@ -191,6 +216,8 @@ class Turn:
 
 @dataclass
 class Sweep:
+    """A model's `sweep` section: the joint whose coordinate advances (None: the first driven
+    joint), by how much in all (degrees or length) and in how many steps."""
     joint: Optional[str]
     by: Expr
     steps: int
@@ -198,6 +225,11 @@ class Sweep:
 
 @dataclass
 class Model:
+    """A mechanism parsed: its parameters, points (coordinates or constructions), bodies,
+    joints, drivers and questions, with names resolved and expressions unevaluated; the engine
+    evaluates it on numbers or on symbols (`engine.instant`). Optional parts: a `sweep`, a
+    `move` to another position (`turns`: the bodies carried there), the figures' `draw_at` and
+    `up`, and an `exercise` section."""
     name: str
     dimension: int
     frame: str
@@ -233,6 +265,8 @@ class Model:
         return [PointRef(p, b.name) for b in self.bodies.values() for p in b.points]
 
     def joint(self, joint_id: str) -> Joint:
+        """The joint with id `joint_id` (the id must exist: a model's ids are checked when it is
+        built)."""
         return next(j for j in self.joints if j.id == joint_id)
 
     def resolve_point(self, text: "str | PointRef", where: str = "") -> PointRef:
@@ -306,6 +340,8 @@ class Model:
 
     @property
     def moving_bodies(self) -> list[str]:
+        """Every body but the frame, in the file's order: the bodies whose twists are the
+        unknowns."""
         return [name for name in self.bodies if name != self.frame]
 
 
