@@ -24,6 +24,8 @@ class How:
     assembly: Optional[int] = None
 
     def model(self, source: ModelLike) -> Any:
+        """The prepared model `source` with these choices (`api.prepare`: parsed, values set,
+        moved, assembly chosen)."""
         return prepare(source, fmt=self.fmt, set=self.set or None, move=self.move or None,
                        assembly=self.assembly)
 

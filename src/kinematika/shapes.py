@@ -71,6 +71,7 @@ class Curve:
         return np.asarray(self.origin, dtype=float) + self.curve.point(u) @ self._r().T
 
     def tangent(self, u: Any) -> np.ndarray:
+        """The unit tangent t(u) in the model's axes (the curve's own, turned by `angle`)."""
         return self.curve.tangent(u) @ self._r().T
 
     def normal(self, u: Any) -> np.ndarray:

@@ -23,6 +23,8 @@ Spec = tuple  # (parameter, kind) or (parameter, INT, smallest, largest); None: 
 
 
 def command(name: str) -> Callable[..., None]:
+    """The command function the fast path calls for `name` (``solve`` → `run.solve_command`),
+    imported only when the fast path takes the command line."""
     from . import run
 
     return getattr(run, f"{name}_command")

@@ -13,6 +13,9 @@ from ..solution import Solution
 
 
 def axis(sol: Solution, q: Question) -> dict[str, Any]:
+    """The instantaneous screw axis of body `q.name` relative to `q.relative_to` (3D): its point
+    nearest the origin p = ω × v_O / |ω|², direction ω̂, angular speed |ω| and sliding speed s =
+    v_O·ω̂; a translation has no point (its direction is v̂), and a body at rest says `rest`."""
     state = sol.state(q.name, q.relative_to)
     w = state.omega
     v_origin = sol.motion.velocity(state, sol.space.zero())

@@ -27,6 +27,7 @@ class Centre:
 
     @property
     def finite(self) -> bool:
+        """Whether the centre is a point (not at infinity, not a rest)."""
         return self.value.get("point") is not None
 
 

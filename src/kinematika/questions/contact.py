@@ -9,6 +9,9 @@ from ..solution import Solution
 
 
 def contact(sol: Solution, q: Question) -> dict[str, Any]:
+    """The three coincident points of joint `q.name`'s contact, seen from `q.relative_to`:
+    velocity and acceleration of each body's material point at J (`body_a`, `body_b`) and of the
+    geometric contact point J itself, which moves along both profiles (`geometric`)."""
     joint = sol.model.joint(q.name)
     c = sol.geometry(joint.id).contact
     if c is None:

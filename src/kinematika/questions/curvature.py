@@ -14,6 +14,8 @@ from ..solution import Solution
 
 
 def curvature(sol: Solution, q: Question) -> dict[str, Any]:
+    """The curvature of material point `q.target`'s path seen from `q.relative_to`: ρ = v³/|v ×
+    a| and the centre P + (v·v)/(v × a) (k × v) (`path_curvature`)."""
     p = sol.position(q.target)
     v = sol.velocity(q.target, q.relative_to)
     a = sol.acceleration(q.target, q.relative_to)
@@ -21,6 +23,10 @@ def curvature(sol: Solution, q: Question) -> dict[str, Any]:
 
 
 def path_curvature(sol: Solution, p: tuple, v: tuple, a: tuple) -> dict[str, Any]:
+    """Radius and centre of curvature of a path through `p` with velocity `v` and acceleration
+    `a`. In the plane ρ = |v|³/|v × a|, centre = P + (v·v)/(v × a) (k × v); in space aₙ = a −
+    (a·v̂) v̂, ρ = v²/|aₙ|, centre = P + (v²/|aₙ|²) aₙ. A point at rest says `rest`; a zero
+    normal acceleration (a straight path, an inflection) has no centre."""
     sp = sol.space
     if sol.is_zero(v, sol.speed_scale()):
         return {"radius": None, "rest": True}

@@ -14,6 +14,9 @@ from ..solution import Solution
 
 
 def decompose(sol: Solution, q: Question) -> dict[str, Any]:
+    """Point `q.target`'s motion seen from `q.relative_to`, composed through the moving body
+    `q.moving`: v = v_drag + v_rel and a = a_drag + a_rel + a_Coriolis, a_Coriolis = 2 ω_moving
+    × v_rel, each part and the total; the sums are checked against the total."""
     ref, base, moving = q.target, q.relative_to, q.moving
     p = sol.position(ref)
     if moving is None:

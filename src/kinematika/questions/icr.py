@@ -49,4 +49,6 @@ def _in_stand_ins(sol: Solution, body: str, relative_to: str | None,
 
 
 def icr(sol: Solution, q: Question) -> dict[str, Any]:
+    """The instant centre of body `q.name` relative to `q.relative_to`: P = ref + k × v₀ / ω, at
+    infinity perpendicular to v₀ when ω = 0 (`instant_centre`)."""
     return instant_centre(sol, q.name, q.relative_to)

@@ -13,6 +13,10 @@ from ..solution import Solution
 
 
 def pole(sol: Solution, q: Question) -> dict[str, Any]:
+    """The acceleration pole of body `q.name` relative to `q.relative_to` (planar): the point
+    with a₀ + α k × r − ω² r = 0, r = ((ω² a_x − α a_y), (α a_x + ω² a_y)) / (ω⁴ + α²) from the
+    reference; when ω = α = 0 the body translates: a uniform field says `uniform`, else the pole
+    is at infinity, perpendicular to a₀."""
     state = sol.state(q.name, q.relative_to)
     w2, al = state.omega ** 2, state.alpha
     det = w2 ** 2 + al ** 2

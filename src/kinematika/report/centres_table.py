@@ -19,6 +19,10 @@ HOW = {"joint": "joint {}", "kennedy": "Kennedy via {}", "velocities": "from the
 
 
 def centres_data(sol: Solution) -> dict[str, Any]:
+    """Every instant centre of the planar mechanism as data for `kinematika centres --json`: per
+    pair of bodies the centre (a point, a direction at infinity, or rest), how it was found (at
+    a joint, by Kennedy via two third bodies, or from the velocities), and the named quantities
+    of a symbolic model. A 3D model is refused: it has screw axes instead."""
     if sol.space.dim != 2:
         raise KinematikaError("schema", "instant centres are planar; ask for the screw `axis` of "
                               "each body in 3D", "dimension")
@@ -35,6 +39,8 @@ def centres_data(sol: Solution) -> dict[str, Any]:
 
 
 def print_centres(data: dict[str, Any], console: Console | None = None) -> None:
+    """`centres_data` as a terminal table: bodies, centre and how it was found, then the named
+    quantities."""
     console = console or Console()
     table = Table(title=f"Instant centres — {markup(data['name'], NAME_CHARS)}", title_justify="left")
     for col in ("bodies", "centre", "found"):

@@ -27,6 +27,7 @@ def show(value: Any) -> str:
 
 
 def ask_text(ask: dict) -> str:
+    """A question as one line of text, its key first: ``velocity B@rocker, relative_to crank``."""
     main = next(iter(ask.items()))
     extra = "".join(f", {k} {v}" for k, v in list(ask.items())[1:])
     return f"{main[0]} {main[1]}{extra}"

@@ -27,6 +27,10 @@ class LimitPosition:
 
 @dataclass
 class FourBar:
+    """A four-bar found in the mechanism: its four lengths (ground O2O4, crank O2A, coupler AB,
+    rocker O4B, from the drawing), the bodies in each role, the drawn pin positions and their
+    names, and its limit positions; it answers Grashof's classification and whether the crank
+    turns fully."""
     ground: float
     crank: float
     coupler: float
@@ -65,6 +69,10 @@ class FourBar:
         return s + l <= sum(lengths) - s - l + 1e-9 * l and min(self.ground, self.crank) == s
 
     def summary(self) -> list[str]:
+        """Lines for the summary of `kinematika sweep`: the lengths, Grashof's classification,
+        the limit positions (crank angle from the drawing, rocker angle) and, when the crank
+        turns fully and both limits exist, the time ratio of the rocker's strokes, the larger
+        crank angle between the limits over the smaller."""
         out = [f"four-bar: ground {self.ground:.6g}, crank {self.crank:.6g}, coupler "
                f"{self.coupler:.6g}, rocker {self.rocker:.6g}", f"  {self.grashof}"]
         for lim in self.limits:
@@ -79,6 +87,9 @@ class FourBar:
 
 @dataclass
 class SliderCrank:
+    """A slider-crank found in the mechanism: crank length r, connecting rod l and offset e of
+    the slider's line from the crank pivot, the bodies in each role, the drawn points and the
+    slider's direction, and its limit positions."""
     crank: float
     rod: float
     offset: float                                   # of the slider's line from the crank pivot
@@ -92,16 +103,22 @@ class SliderCrank:
 
     @property
     def crank_turns(self) -> bool:
+        """Whether the crank can make full turns: r + |e| ≤ l."""
         return self.crank + abs(self.offset) <= self.rod * (1 + 1e-12)
 
     @property
     def stroke(self) -> Optional[float]:
+        """The slider's stroke between its dead points, √((l + r)² − e²) − √((l − r)² − e²);
+        None when the crank cannot turn fully."""
         if not self.crank_turns:
             return None
         e2 = self.offset ** 2
         return math.sqrt((self.rod + self.crank) ** 2 - e2) - math.sqrt((self.rod - self.crank) ** 2 - e2)
 
     def summary(self) -> list[str]:
+        """Lines for the summary of `kinematika sweep`: the lengths and offset, whether the
+        crank turns fully, the stroke, and the limit positions (crank angle from the drawing,
+        slider travel)."""
         turns = ("the crank turns fully (r + |e| <= l)" if self.crank_turns else
                  "the crank cannot turn fully (r + |e| > l): it rocks between dead points")
         out = [f"slider-crank: crank {self.crank:.6g}, connecting rod {self.rod:.6g}, offset "
