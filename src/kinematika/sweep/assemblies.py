@@ -138,4 +138,6 @@ def assemblies_json(found: list[Assembly]) -> dict:
 
 
 def drawn_number(found: list[Assembly]) -> Optional[int]:
+    """The number of the assembly the drawing shows, or None when none of `found` is the drawn
+    one."""
     return next((a.number for a in found if a.drawn), None)

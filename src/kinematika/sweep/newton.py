@@ -51,6 +51,8 @@ class Assembler:
         _check_rows(sweeper.solver, self.functions)
 
     def residual(self, poses: Poses, dq: float) -> np.ndarray:
+        """Every joint's position residual at `poses`, with the swept coordinate advanced by
+        `dq`, as one vector (zero when the mechanism is assembled there)."""
         return np.array([x for _, f in self.functions for x in f(poses, dq)], dtype=float)
 
     def solver_at(self, poses: Poses) -> InstantSolver:
@@ -62,6 +64,8 @@ class Assembler:
         return solver
 
     def size(self, dx: np.ndarray) -> float:
+        """The size of a Newton step, dimensionless: the largest rotation (radians) or
+        translation over the model's length scale, compared with `TOLERANCE`."""
         return float(np.abs(np.where(self.translation, dx / self.scale, dx)).max(initial=0.0))
 
     def step(self, poses: Poses, solver: InstantSolver, dq_from: float, dq_to: float,

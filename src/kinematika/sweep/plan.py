@@ -26,6 +26,8 @@ MAX_STEPS = limits.SWEEP_STEPS
 
 @dataclass
 class Plan:
+    """What a sweep does: the joint whose coordinate advances, the driver that drives it, by how
+    much in all (`by`: degrees for a revolute, length for a prismatic) and in how many steps."""
     joint: Joint
     driver: Driver                 # the driver whose coordinate is swept
     by: float                      # degrees (revolute) or length (prismatic)
@@ -38,6 +40,7 @@ class Plan:
 
     @property
     def unit(self) -> str:
+        """The swept coordinate's unit as the results name it: "deg" or "length"."""
         return "deg" if self.turns else "length"
 
     @cached_property

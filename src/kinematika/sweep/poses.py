@@ -33,9 +33,11 @@ class Poses:
 
     @classmethod
     def drawn(cls, ref: tuple, bodies: list[str]) -> "Poses":
+        """Every body at its drawn pose: no rotation, no translation."""
         return cls(ref, dict.fromkeys(bodies, 0.0), dict.fromkeys(bodies, (0.0, 0.0)), {})
 
     def angle(self, body: str) -> float:
+        """`body`'s rotation φ from its drawn pose (radians; 0 for the frame)."""
         return self.phi.get(body, 0.0)
 
     def turn(self, body: str, vec: tuple) -> tuple:
@@ -70,6 +72,8 @@ class Poses:
         return [self.angle(b) - (self.angle(a) if a else 0.0) - target]
 
     def axis_angle_error(self, a: str, b: str, axis: tuple, target: float) -> float:
+        """b's rotation relative to a minus `target` (radians); in the plane every axis is the
+        normal, so `axis` is not needed."""
         return self.angle(b) - self.angle(a) - target
 
 
@@ -86,24 +90,33 @@ class SpatialPoses:
 
     @classmethod
     def drawn(cls, ref: tuple, bodies: list[str]) -> "SpatialPoses":
+        """Every body at its drawn pose: identity rotations, zero translations and rotation
+        vectors."""
         return cls(ref, {b: np.eye(3) for b in bodies}, {b: np.zeros(3) for b in bodies},
                    {b: np.zeros(3) for b in bodies}, {})
 
     def angle(self, body: str) -> np.ndarray:
+        """`body`'s rotation from its drawn pose as a rotation vector, continued along the sweep
+        (zero for the frame)."""
         return self.rotvec.get(body, np.zeros(3))
 
     def turn(self, body: str, vec: tuple) -> tuple:
+        """A direction fixed in `body`, drawn as `vec`, now: R·vec."""
         if body not in self.rot:
             return vec
         return tuple((self.rot[body] @ np.asarray(vec, dtype=float)).tolist())
 
     def point(self, body: str, p0: tuple) -> tuple:
+        """The material point of `body` drawn at `p0`, now: R(P₀ − c) + c + t."""
         if body not in self.rot:
             return p0
         p = self.rot[body] @ (np.asarray(p0, dtype=float) - self.ref) + self.ref + self.t[body]
         return tuple(p.tolist())
 
     def stepped(self, dx: Any, unknowns: Unknowns) -> "SpatialPoses":
+        """The poses after a step of the unknowns: the rotation exp(δθ) composed on the left of
+        R (about c, the translation turned with it), then the translation δ; rotation vectors
+        continued so that a turn keeps growing past π."""
         rot, t, rotvec = {}, {}, {}
         for b, o in unknowns.offset.items():
             step = exp_rotation(np.asarray(dx[o:o + 3], dtype=float))

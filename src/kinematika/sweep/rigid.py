@@ -27,6 +27,9 @@ class LinearVectors:
         self.terms += terms
 
     def compile(self) -> None:
+        """Build W and w₀ from the terms added, so that a pose's vectors are X W + w₀ (X: the
+        bodies' rotation matrices, then their translations, flattened); call it once after the
+        last `add`."""
         b, k = self.n_bodies, len(self.terms)
         self.w, self.w0 = np.zeros((12 * b, 3 * k)), np.zeros(3 * k)
         for q, term in enumerate(self.terms):
@@ -49,6 +52,7 @@ class LinearVectors:
         return ((x[:, None, :] @ self.w)[:, 0] + self.w0).reshape(m, -1, 3)
 
     def part(self, v: np.ndarray, name: str) -> np.ndarray:
+        """The vectors named `name` (`add`) of every pose, from the result of a call."""
         return v[:, self.slices[name]]
 
 

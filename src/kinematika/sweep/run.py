@@ -95,10 +95,16 @@ class Sweeper:
 
     @property
     def method(self) -> str:
+        """How the sweep is solved: "closed form" (dyads closed position by position) or
+        "newton" (continuation from the drawn pose)."""
         return "closed form" if self.closed is not None else "newton"
 
     def run(self, by: Optional[float] = None, steps: Optional[int] = None, skip_bad: bool = False,
             progress: bool | Progress = False) -> SweepResult:
+        """Sweep the joint's coordinate `by` in `steps` (None: the model's `sweep:` section, else
+        a revolute's 360° in 360 steps) and return every row's angles, rates and point motions
+        with the dead points found; a position that cannot be assembled or is singular is an
+        error unless `skip_bad`, which leaves its row marked."""
         plan = self.plan(by, steps)
         if self.closed is None:
             from .newton import newton_sweep

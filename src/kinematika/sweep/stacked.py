@@ -15,6 +15,7 @@ def times(a: np.ndarray, x: np.ndarray) -> np.ndarray:
 
 
 def dot(u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Stacked dot products: (…, i) · (…, i) → (…)."""
     return np.einsum("...i,...i->...", u, v)
 
 
@@ -41,6 +42,7 @@ class Regular:
         return self.column[None, :, None] * self.s_inv * self.rows[:, None, :]
 
     def solve(self, b: np.ndarray) -> np.ndarray:
+        """A x = b for every stacked matrix: x = C S⁻¹ R b."""
         return self.column * times(self.s_inv, self.rows * b)
 
 
@@ -52,6 +54,7 @@ class Twists:
         self.known = np.zeros(n_rows, dtype=bool)
 
     def put(self, rows, x_v, x_a) -> None:
+        """The twists x_v = (ω, v₀) and their rates x_a = (α, a₀) of rows `rows`, found."""
         self.x_v[rows], self.x_a[rows], self.known[rows] = x_v, x_a, True
 
 
