@@ -21,12 +21,15 @@ class Cycle:
     dead: np.ndarray             # (D,) number of dead points met
 
     def angle(self, body: str) -> np.ndarray:
+        """`body`'s rotation from its drawn configuration over the sweep, degrees: (D, N)."""
         raise NotImplementedError
 
     def omega(self, body: str) -> np.ndarray:
+        """`body`'s angular velocity ω over the sweep, rad/s: (D, N)."""
         raise NotImplementedError
 
     def alpha(self, body: str) -> np.ndarray:
+        """`body`'s angular acceleration α over the sweep, rad/s²: (D, N)."""
         raise NotImplementedError
 
     def motion(self, ref: PointRef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -48,6 +51,8 @@ class Cycle:
 
 
 class BatchCycle(Cycle):
+    """The cycle of a batch of designs solved together (`sweep.batch`): each design's rows; a
+    value shared by every design is broadcast to (D, N)."""
     def __init__(self, batch: Batch) -> None:
         self.batch = batch
         self.coordinate = batch.plan.coordinate
@@ -59,26 +64,34 @@ class BatchCycle(Cycle):
         return np.broadcast_to(x, self.shape)
 
     def angle(self, body: str) -> np.ndarray:
+        """`body`'s rotation from its drawn configuration over the sweep, degrees: (D, N)."""
         return np.degrees(self._rows(self.batch.outcome.tracks[body].theta))
 
     def omega(self, body: str) -> np.ndarray:
+        """`body`'s angular velocity ω over the sweep, rad/s: (D, N)."""
         return self._rows(self.batch.outcome.tracks[body].omega)
 
     def alpha(self, body: str) -> np.ndarray:
+        """`body`'s angular acceleration α over the sweep, rad/s²: (D, N)."""
         return self._rows(self.batch.outcome.tracks[body].alpha)
 
     def motion(self, ref: PointRef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Position, velocity, acceleration of a material point: complex (D, N)."""
         p, v, a = (self._rows(x) for x in self.batch.outcome.tracks[ref.body].point(ref.point))
         return p, v, a
 
     def drawn(self, point: str) -> np.ndarray:
+        """A point's drawn location per design: complex (D,)."""
         return self.batch.points[point]
 
     def direction(self, joint: str) -> np.ndarray:
+        """A prismatic or slot joint's unit `along` (drawn) per design: complex (D,)."""
         return self.batch.directions[joint]
 
 
 class ResultCycle(Cycle):
+    """The cycle of one design swept on its own (`SweepResult`, D = 1), for models the batch
+    kernel does not take; `directions` are the joints' drawn `along`."""
     def __init__(self, result: SweepResult, directions: dict[str, tuple]) -> None:
         self.result = result
         self.directions = directions
@@ -87,24 +100,31 @@ class ResultCycle(Cycle):
         self.dead = np.array([len(result.dead_points)])
 
     def angle(self, body: str) -> np.ndarray:
+        """`body`'s rotation from its drawn configuration over the sweep, degrees: (1, N)."""
         return self.result.bodies[body]["angle"][None, :]
 
     def omega(self, body: str) -> np.ndarray:
+        """`body`'s angular velocity ω over the sweep, rad/s: (1, N)."""
         return self.result.bodies[body]["omega"][None, :]
 
     def alpha(self, body: str) -> np.ndarray:
+        """`body`'s angular acceleration α over the sweep, rad/s²: (1, N)."""
         return self.result.bodies[body]["alpha"][None, :]
 
     def motion(self, ref: PointRef) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Position, velocity, acceleration of a material point: complex (1, N)."""
         values = self.result.points[str(ref)]
         p, v, a = (_complex(values[q])[None, :] for q in ("position", "velocity", "acceleration"))
         return p, v, a
 
     def drawn(self, point: str) -> np.ndarray:
+        """A point's drawn location (the sweep's first row, from any body that carries it):
+        complex (1,)."""
         name = next(k for k in self.result.points if k.partition("@")[0] == point)
         return _complex(self.result.points[name]["position"][:1])
 
     def direction(self, joint: str) -> np.ndarray:
+        """A prismatic or slot joint's unit `along` (drawn): complex (1,)."""
         return np.array([complex(*self.directions[joint])])
 
 

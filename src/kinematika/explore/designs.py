@@ -71,10 +71,12 @@ class Designs:
 
     @property
     def names(self) -> list[str]:
+        """The varied parameters' names, in the order given."""
         return [v.name for v in self.vary]
 
     @property
     def count(self) -> int:
+        """How many designs: grid^(parameters varied) for a grid, else the number of samples."""
         return self.grid ** len(self.vary) if self.grid is not None else int(self.samples or 0)
 
     def values(self, start: int, stop: int) -> dict[str, np.ndarray]:

@@ -51,6 +51,8 @@ class Evaluator:
 
     @property
     def columns(self) -> list[str]:
+        """The table's columns in order: the varied parameters, `assembles`, `reason`, then the
+        metrics."""
         return self.varied + ["assembles", "reason"] + [m.name for m in self.metrics]
 
     def evaluate(self, values: dict[str, np.ndarray]) -> dict[str, Any]:
@@ -118,6 +120,8 @@ class Rows:
                                 else np.full(size, np.nan)) for m in metrics}
 
     def columns(self) -> dict[str, Any]:
+        """The filled chunk as columns: `assembles`, `reason`, and each metric (NaN for a design
+        that does not assemble, except a class, which says none)."""
         out: dict[str, Any] = {"assembles": self.assembles, "reason": np.array(self.reason, dtype=object)}
         for m in self.metrics:
             values = self.values[m.name]

@@ -62,6 +62,9 @@ class Metric:
     data: Any = field(default=None, repr=False)
 
     def values(self, cycle: Cycle) -> np.ndarray:
+        """The metric over `cycle`, one value per design; floating-point warnings are silenced
+        (a design that stops gives NaN), and a number that needs the full cycle is NaN for a
+        design not assembled all the way."""
         with np.errstate(all="ignore"), warnings.catch_warnings():
             warnings.simplefilter("ignore", RuntimeWarning)      # all-NaN rows: designs that stop
             out = self.compute(cycle)

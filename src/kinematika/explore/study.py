@@ -53,9 +53,11 @@ class Study:
 
     @property
     def chunks(self) -> int:
+        """How many chunks: ⌈designs / chunk⌉ (the last may be shorter)."""
         return -(-self.designs.count // self.chunk)
 
     def bounds(self, index: int) -> tuple[int, int]:
+        """Designs [start, stop) of chunk `index`."""
         start = index * self.chunk
         return start, min(start + self.chunk, self.designs.count)
 
@@ -233,6 +235,7 @@ class Parts:
                                                  "chunk": self.study.chunk}))
 
     def path(self, index: int) -> Path:
+        """Where chunk `index` is written: ``part-000012.parquet`` in the parts folder."""
         return self.folder / f"part-{index:06d}.parquet"
 
     def write(self, index: int, table: Any) -> None:
