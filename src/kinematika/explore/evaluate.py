@@ -121,7 +121,7 @@ class Rows:
 
     def columns(self) -> dict[str, Any]:
         """The filled chunk as columns: `assembles`, `reason`, and each metric (NaN for a design
-        that does not assemble, except a class, which says none)."""
+        that does not assemble, a class metric None there)."""
         out: dict[str, Any] = {"assembles": self.assembles, "reason": np.array(self.reason, dtype=object)}
         for m in self.metrics:
             values = self.values[m.name]
