@@ -53,6 +53,8 @@ class Exercise:
 
     @property
     def asks(self) -> list[int]:
+        """The 1-based numbers of the graded questions: the section's `ask`, else every question
+        of the model."""
         return graded(self.section.ask, len(self.model.questions))
 
     @property
@@ -62,9 +64,13 @@ class Exercise:
 
     @property
     def tolerance(self) -> float:
+        """The relative tolerance an answer is marked right within (the section's `tolerance`, 1
+        % by default)."""
         return self.section.tolerance
 
     def unit_of(self, name: str) -> Optional[Unit]:
+        """The unit parameter `name` is stated in: the section's, else degrees for a parameter
+        the model writes `deg(x)`, else None (the model's units)."""
         return stated_unit(self.model, self.section, name)
 
     def sets_of(self, stated: dict[str, Decimal]) -> dict[str, str]:
@@ -112,6 +118,8 @@ class Exercise:
         return mistakes_of(world)
 
     def variant(self, number: int) -> Variant:
+        """Variant `number` (1-based); a number outside 1 … count is a usage error naming the
+        range."""
         if not 1 <= number <= len(self.variants):
             raise KinematikaError("usage", f"there is no variant {number} (variants 1 to "
                                   f"{len(self.variants)})", "variant")

@@ -105,6 +105,8 @@ def _csv_field(text: str) -> str:
 
 
 def meta(ex: Exercise) -> dict[str, Any]:
+    """`exercise.json`: the model's file name, the `--vary` options (NAME=LOW:HIGH:STEP), the
+    count of variants, the seed and the language — what makes the same exercise again."""
     return {"model": ex.source.name if ex.source is not None else None,
             "vary": [f"{v.name}={plain_decimal(v.low)}:{plain_decimal(v.high)}:{plain_decimal(v.step)}"
                      for v in ex.varies],
@@ -112,6 +114,8 @@ def meta(ex: Exercise) -> dict[str, Any]:
 
 
 def variants_csv(ex: Exercise) -> str:
+    """`variants.csv`: one row per variant, its number and the varied parameters' values as
+    stated."""
     names = [v.name for v in ex.varies]
     lines = [",".join(["variant", *names])]
     for v in ex.variants:
@@ -120,6 +124,8 @@ def variants_csv(ex: Exercise) -> str:
 
 
 def key_csv(ex: Exercise) -> str:
+    """`key.csv`: one row per number a student gives (variant, question such as q2.y, value,
+    tolerance)."""
     lines = ["variant,question,value,tolerance"]
     for v in ex.variants:
         lines += [f"{v.number},{r.question},{value_text(r.value)},{ex.tolerance!r}" for r in v.rows]

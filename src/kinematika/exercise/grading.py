@@ -36,6 +36,8 @@ class Mark:
     diagnosis: Optional[str]
 
     def as_json(self) -> dict[str, Any]:
+        """The mark as the page and `grade --json` give it: variant, question, value, correct
+        and diagnosis."""
         return {"variant": self.variant, "question": self.question, "value": self.value,
                 "correct": self.correct, "diagnosis": self.diagnosis}
 
@@ -71,6 +73,8 @@ class Marker:
         self._mistakes: dict[int, list[Mistaken]] = {}
 
     def mistakes(self, variant: Variant) -> list[Mistaken]:
+        """The usual mistakes' answers for `variant`, solved again once per variant and kept (a
+        class has many students per variant)."""
         if variant.number not in self._mistakes:
             self._mistakes[variant.number] = self.exercise.mistakes(variant)
         return self._mistakes[variant.number]

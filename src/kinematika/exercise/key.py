@@ -49,6 +49,8 @@ class Row:
         return tolerance * self.size
 
     def unit(self, length: str) -> str:
+        """The row's unit from the model's length unit `length`: "mm/s²" for an acceleration in
+        mm, "rad/s" for ω."""
         return KIND_UNITS.get(self.kind, "").replace("{L}", length)
 
 

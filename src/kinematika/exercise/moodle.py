@@ -37,6 +37,8 @@ BACKSLASH = "&#38;#92;"
 
 
 def figure_name(number: int) -> str:
+    """The file name of variant `number`'s figure inside the Moodle quiz:
+    ``kinematika-variant-007.png``."""
     return f"kinematika-variant-{number:03d}.png"
 
 

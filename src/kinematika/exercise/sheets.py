@@ -54,6 +54,7 @@ def students_for(exercise: Any, names: Optional[list[str]]) -> list[Student]:
 
 
 def png_uri(data: bytes) -> str:
+    """PNG bytes as a data URI, so that a sheet's HTML holds its figure and prints on its own."""
     return "data:image/png;base64," + base64.b64encode(data).decode()
 
 
