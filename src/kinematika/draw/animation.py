@@ -73,6 +73,9 @@ class Film:
     def of(cls, source: Any, joint: Optional[str] = None, by: Optional[float] = None,
            steps: Optional[int] = None, frames: int = 120, options: Optional[DrawOptions] = None,
            trace: Optional[list[str]] = None, skip_bad: bool = False) -> "Film":
+        """The film of `source` (a path, tree, Model or Mechanism; planar only): the model swept
+        (`joint`, `by`, `steps`), at most `frames` of its rows kept, its drawn instant painted
+        once with `options`' live vectors and the `trace`d points' paths, ready for `show`."""
         from ..model.source import as_model
         from ..sweep import run_sweep
         from ..sweep.posing import solved as solve
@@ -195,6 +198,8 @@ class Motion:
         self.lang: Optional[str] = None       # the live labels' numbers (the canvas's language)
 
     def transform(self, body: str) -> Affine2D:
+        """The placement of `body` at the row shown (an affine map from its drawn pose), which
+        its artists are drawn through."""
         return self.places[body]
 
     def _anchor(self, body: str) -> Optional[str]:
@@ -213,6 +218,7 @@ class Motion:
         return float(np.nanmax(np.concatenate(values))) if values else 0.0
 
     def positions(self, ref: str) -> np.ndarray:
+        """Material point `ref`'s page positions over the sweep's rows: (rows, 2)."""
         return np.asarray(self.result.points[ref]["position"], dtype=float)[:, :2]
 
     def box(self, rows: list[int]) -> Box:

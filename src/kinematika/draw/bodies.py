@@ -19,6 +19,9 @@ from .style import BAR_WIDTH, GROUND, HATCH_BAND, INK, POINT_LABEL
 
 
 def paint_bodies(cv: Canvas) -> None:
+    """Every body as a textbook draws it: the frame's shapes hatched and its bars grey, each
+    moving body's bars, plates, wheels and curves in its colour, then the points with their
+    labels (a spherical linkage's sphere dashed behind)."""
     if cv.scene.sphere is not None:
         centre, radius = cv.scene.sphere
         cv.add(Circle(centre, radius, fill=False, ec="#bdbdbd", lw=1.0, ls=(0, (4, 3)), zorder=0,

@@ -12,6 +12,10 @@ from .scene import Scene
 
 @dataclass
 class Canvas:
+    """What every painting function paints into: the matplotlib axes, the `Scene`, the `view`
+    infinite lines are clipped to, the label board, whether labels and English words are shown,
+    each body's placement in an animation and the artists moving with it, and the language
+    numbers are written in."""
     ax: Any
     scene: Scene
     view: Box                                  # infinite lines and far things are clipped here
@@ -25,6 +29,7 @@ class Canvas:
 
     @property
     def size(self) -> float:
+        """The mechanism's extent, which symbols, arrows and margins are scaled by."""
         return self.scene.size
 
     def transform(self, body: Optional[str]) -> Any:
@@ -55,5 +60,7 @@ class Canvas:
 
     def label(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
               prefer: Any = None, **kw: Any) -> None:
+        """Put a label on the board at `anchor` (placed when the figure is finished, clear of
+        the others; lower `priority` first), unless labels are off."""
         if self.labels:
             self.board.add(anchor, text, colour, priority, gid, prefer, **kw)

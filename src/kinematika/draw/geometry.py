@@ -21,32 +21,39 @@ class Box:
 
     @classmethod
     def around(cls, points: Iterable[Vec]) -> "Box":
+        """The smallest box holding `points`."""
         arr = np.array([np.asarray(p, dtype=float) for p in points])
         lo, hi = arr.min(axis=0), arr.max(axis=0)
         return cls(float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
 
     @property
     def width(self) -> float:
+        """xmax − xmin."""
         return self.xmax - self.xmin
 
     @property
     def height(self) -> float:
+        """ymax − ymin."""
         return self.ymax - self.ymin
 
     @property
     def centre(self) -> Vec:
+        """The box's centre point."""
         return np.array([(self.xmin + self.xmax) / 2, (self.ymin + self.ymax) / 2])
 
     def grow(self, margin: float) -> "Box":
+        """The box with `margin` added on every side (a negative margin shrinks it)."""
         return Box(self.xmin - margin, self.ymin - margin, self.xmax + margin, self.ymax + margin)
 
     def union(self, points: Iterable[Vec]) -> "Box":
+        """The smallest box holding this one and `points`."""
         pts = [np.asarray(p, dtype=float) for p in points]
         if not pts:
             return self
         return Box.around(pts + [np.array([self.xmin, self.ymin]), np.array([self.xmax, self.ymax])])
 
     def contains(self, p: Vec, tol: float = 0.0) -> bool:
+        """Whether `p` lies in the box, widened by `tol`."""
         return (self.xmin - tol <= p[0] <= self.xmax + tol) and (self.ymin - tol <= p[1] <= self.ymax + tol)
 
     def with_aspect(self, aspect: float) -> "Box":
@@ -143,9 +150,11 @@ def stadium(p: Vec, q: Vec, half_width: float) -> Vec:
 
 
 def unit(v: Vec) -> Vec:
+    """`v` over its length (a zero vector is returned as it is)."""
     n = float(np.linalg.norm(v))
     return v / n if n > 0 else v
 
 
 def perpendicular(v: Vec) -> Vec:
+    """`v` turned a quarter turn counter-clockwise: (−v_y, v_x)."""
     return np.array([-v[1], v[0]])

@@ -34,9 +34,12 @@ class SymbolContext:
         return np.mean(pts, axis=0) if pts else self.view.centre
 
     def points(self, body: str) -> list:
+        """The page positions of `body`'s points."""
         return list(self.scene.bodies[body].points.values())
 
     def clip(self, p: np.ndarray, d: np.ndarray, inset: float) -> Optional[tuple]:
+        """The part of the line through `p` along `d` inside the view shrunk by `inset`, or
+        None."""
         return clip_line(p, d, self.view.grow(-inset))
 
 
@@ -47,6 +50,8 @@ def scene_symbols(scene: Scene, view: Box, still: bool = True) -> list[Mark]:
 
 
 def paint_joints(cv: Canvas) -> None:
+    """Every joint's symbol, as its kind describes it (`joints.symbols`), painted in the body it
+    moves with; a still figure gets the marks an animation leaves out."""
     for mark in scene_symbols(cv.scene, cv.view, cv.placement is None):
         paint_mark(cv, mark)
 

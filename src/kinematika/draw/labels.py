@@ -41,6 +41,9 @@ DISTANCE, PREFER = 0.15, 5.0
 
 @dataclass
 class Label:
+    """A text to place near its `anchor` (data coordinates), in `colour`, with its `priority`
+    (lower placed first), its `gid`, and a preferred direction on the page (a vector's label
+    beyond its tip)."""
     anchor: np.ndarray                 # data coordinates
     text: str
     colour: str
@@ -76,6 +79,7 @@ class LabelBoard:
 
     def add(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
             prefer: Any = None, **kw: Any) -> None:
+        """Collect a label (placed later by `layout`, once the axes' limits are final)."""
         pref = None if prefer is None else np.asarray(prefer, dtype=float)
         self.labels.append(Label(np.asarray(anchor, dtype=float), text, colour, priority, gid,
                                  pref, **kw))
@@ -133,6 +137,9 @@ class Layout:
         self.unit = _directions()
 
     def run(self) -> list[Placement]:
+        """Every label's placement: greedily, most important first, each at its cheapest
+        candidate box given those already placed, then refined for at most `PASSES` passes until
+        no label moves."""
         n = len(self.labels)
         if not n:
             return []

@@ -29,6 +29,9 @@ NORMAL = dict(lw=1.1, ls=(0, (8, 3, 1.5, 3)), color=CENTRE, alpha=0.85, zorder=1
 
 
 def paint_marks(cv: Canvas) -> None:
+    """Instant centres, acceleration poles and contacts (a far one at the view's edge pointing
+    towards it, one at infinity as a double arrow along its direction), then the
+    Aronhold–Kennedy lines and the wheels' and slots' normals."""
     for group in mark_groups(cv.scene.marks, cv.size):
         mark = group[0]
         if mark.point is None:
@@ -134,6 +137,8 @@ def _kennedy(cv: Canvas, line, style: Optional[dict] = None) -> None:
 
 
 def paint_curvatures(cv: Canvas) -> None:
+    """Each asked curvature: the osculating circle of the point's path, its centre and the
+    radius."""
     for c in cv.scene.curvatures:
         _curvature(cv, c)
 

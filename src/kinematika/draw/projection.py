@@ -29,6 +29,7 @@ class Projection:
 
     @property
     def dim(self) -> int:
+        """The model's dimension the projection takes (2 or 3)."""
         return self.matrix.shape[1]
 
     def axes(self) -> dict[str, np.ndarray]:

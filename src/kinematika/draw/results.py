@@ -24,6 +24,9 @@ KINDS = ("velocity", "acceleration")
 
 
 def add_results(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
+    """Add to `scene` the results the questions and `options` ask for, read from the solution:
+    velocity and acceleration vectors, instant centres with their Kennedy lines, curvature
+    circles, poles, contacts and screw axes."""
     _vectors(scene, sol, options, num)
     _centres(scene, sol, options, num)
     if options.curvature is not False:

@@ -48,6 +48,9 @@ class ShapeView:
 
 @dataclass
 class BodyView:
+    """A body on the page: its name and number (the frame is 1), colour, whether it is the
+    frame, its points and shapes, the points that slide along it, and the polylines drawn as its
+    bars."""
     name: str
     number: int                            # the frame is 1, the others 2, 3, … in file order
     colour: str
@@ -81,6 +84,9 @@ class JointView:
 
 @dataclass
 class VectorView:
+    """A velocity or acceleration arrow of material point `ref` (relative to a body, if
+    `relative_to`): its label, origin and page value, the model vector's magnitude and the
+    magnitude as shown."""
     kind: str                              # "velocity" or "acceleration"
     ref: str                               # the material point, P@body
     label: str                             # the symbol, e.g. $v_B$
@@ -121,6 +127,8 @@ class KennedyLine:
 
 @dataclass
 class CurvatureView:
+    """A point's path curvature on the page: the point, its centre of curvature, the radius ρ
+    and the osculating circle's polyline."""
     ref: str
     label: str
     point: Vec
@@ -131,6 +139,8 @@ class CurvatureView:
 
 @dataclass
 class AxisView:
+    """A 3D body's instantaneous screw axis on the page: a point of it and the page image of its
+    unit direction."""
     key: str
     label: str
     point: Vec
@@ -139,6 +149,9 @@ class AxisView:
 
 @dataclass
 class Scene:
+    """Everything a figure shows, as floats on the page: bodies, joints, the mechanism's size
+    and box, and the results asked for (vectors, marked points, Kennedy lines and normals,
+    curvatures, screw axes) with notes such as the values a symbolic model is drawn at."""
     name: str
     dim: int
     projection: Projection
@@ -158,9 +171,12 @@ class Scene:
 
     @property
     def frame(self) -> BodyView:
+        """The fixed body's view."""
         return next(b for b in self.bodies.values() if b.frame)
 
     def point(self, name: str) -> Vec:
+        """The page position of point `name` (from the first body that carries it); KeyError if
+        none does."""
         for body in self.bodies.values():
             if name in body.points:
                 return body.points[name]
@@ -247,6 +263,8 @@ class Numbers:
         self._at = dict(self.values)        # with the named quantities' values there
 
     def scalar(self, x: Any) -> float:
+        """A backend value as a float: a number as it is, a formula at the drawing values (and
+        the named quantities' values there)."""
         if isinstance(x, (int, float)) or not self.values:
             return self.inst.num(x)
         if len(self._at) != len(self.values) + len(self.inst.names):    # names added since

@@ -27,6 +27,8 @@ SIDE_ANGLE = 6.0     # degrees: arrows closer than this in direction are side by
 
 @dataclass
 class Arrow:
+    """A vector's arrow on the page: from `start` to `end`, `enlarged` when drawn at the
+    shortest length, `zero` when only its label is shown."""
     view: VectorView
     start: np.ndarray
     end: np.ndarray
@@ -35,6 +37,7 @@ class Arrow:
 
     @property
     def drawn(self) -> bool:
+        """Whether the arrow has a length to draw (a zero vector only has its label)."""
         return bool(np.linalg.norm(self.end - self.start) > 0)
 
 
@@ -64,6 +67,8 @@ def arrow_for(view: VectorView, largest: float, size: float, origin=None, value=
 
 
 def arrows(vectors: list[VectorView], size: float) -> list[Arrow]:
+    """Every vector's arrow, each kind to its own scale: the longest of a kind is `LONGEST` of
+    the drawing size."""
     largest = arrow_scales(vectors)
     return [arrow_for(v, largest[v.kind], size) for v in vectors]
 
@@ -85,6 +90,7 @@ def side_shifts(drawn: list[Arrow], size: float) -> list[float]:
 
 
 def arrow_patch(arrow: Arrow, gid: str) -> FancyArrowPatch:
+    """The matplotlib arrow of `arrow` in its kind's colour (velocities above accelerations)."""
     colour = KIND_COLOURS[arrow.view.kind]
     return FancyArrowPatch(tuple(arrow.start), tuple(arrow.end), arrowstyle="-|>",
                            mutation_scale=15, lw=2.2, color=colour, shrinkA=0, shrinkB=0,
@@ -92,6 +98,9 @@ def arrow_patch(arrow: Arrow, gid: str) -> FancyArrowPatch:
 
 
 def paint_vectors(cv: Canvas, drawn: list[Arrow]) -> None:
+    """Draw the arrows and label each at its tip (`v_B = …`, "enlarged" when it is); arrows from
+    one point in nearly one direction are set side by side, and a zero vector gets its label at
+    the point."""
     shifts = side_shifts(drawn, cv.size)
     for arrow, shift in zip(drawn, shifts):
         v = arrow.view
