@@ -121,9 +121,13 @@ class Edits:
         return _short(x, 10 ** math.floor(math.log10(self.size / 1e4)))
 
     def value(self, key: str, new: str, text: bool = False) -> None:
+        """Write `new` as the value under key `key` of the construction (`value_node`)."""
         self.value_node(_child(self.node, key), new, text)
 
     def value_node(self, node: Any, new: str, text: bool = False) -> None:
+        """Write `new` as `node`'s value; a value that names a parameter changes that
+        parameter's value instead (its `value` key when written in full), so that what else uses
+        it follows."""
         import yaml
 
         if isinstance(node, yaml.ScalarNode) and self.params is not None:

@@ -44,6 +44,7 @@ class Request:
     options: dict[str, Any] = field(default_factory=dict)
 
     def get(self, key: str, default: Any = None) -> Any:
+        """The endpoint's option `key`, or `default` when the request does not give it."""
         return self.options.get(key, default)
 
 

@@ -146,12 +146,16 @@ class Answers:
         self.kept: OrderedDict = OrderedDict()
 
     def get(self, key: tuple) -> Optional[tuple]:
+        """The kept answer (status, media type, body) to request `key` (endpoint, body), or
+        None; a hit becomes the most recently used."""
         answer = self.kept.get(key)
         if answer is not None:
             self.kept.move_to_end(key)
         return answer
 
     def put(self, key: tuple, answer: tuple) -> None:
+        """Keep `answer` for request `key`: one costing more than an eighth of the limit is not
+        kept, and the least recently used go until the rest fit in `limit` bytes."""
         cost = len(answer[2]) + len(key[1])
         if cost > self.limit // 8 or key in self.kept:
             return
