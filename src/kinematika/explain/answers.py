@@ -131,6 +131,9 @@ def curvature_section(ctx: Ctx) -> Section | None:
 
 
 def curvature_steps(ctx: Ctx, q) -> list:
+    """The curvature of a point's path as the notes work it out: its velocity, then a = aᵗ + aⁿ
+    with aᵗ ∥ v and aⁿ ⊥ v (the solver's split), then ρ = |v|² / |aⁿ| and the centre of
+    curvature; a point at rest or a straight path (aⁿ = 0) is said so instead."""
     ref: PointRef = q.target
     rel = q.relative_to
     v, a = ctx.sol.velocity(ref, rel), ctx.sol.acceleration(ref, rel)

@@ -67,6 +67,7 @@ class Catalogue:
         return re.findall(r"^([A-Za-z][\w-]*)\s*=", self.source, re.M)
 
     def has(self, key: str) -> bool:
+        """Whether the catalogue has message `key` (a dotted key, as the document writes it)."""
         return self.bundle.has_message(fluent_id(key))
 
     def format(self, key: str, args: dict[str, Any] | None = None) -> str:

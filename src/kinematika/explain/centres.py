@@ -13,6 +13,10 @@ MAX_ALL = 10        # above this many pairs, only the centres relative to the fr
 
 
 def centres_section(ctx: Ctx) -> Section:
+    """The section of instant centres: the drawing with the centres, then, for each pair of
+    bodies (only those with the frame, and what they need, when there are many), how its centre
+    follows — at a joint, by Aronhold–Kennedy from two lines that meet, or where the
+    perpendiculars to two velocities meet."""
     from .structure import drawing
 
     sec = Section(msg("sec.centres"))

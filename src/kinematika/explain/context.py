@@ -31,6 +31,8 @@ class Ctx:
 
     # positions -----------------------------------------------------------------------------
     def pos(self, name: str) -> tuple:
+        """Where point `name` is at the instant (a named contact or centre too, see
+        `name_position`)."""
         return self._extra[name] if name in self._extra else self.inst.points[name]
 
     def name_position(self, name: str, position: tuple) -> str:
@@ -56,24 +58,33 @@ class Ctx:
         return self._contacts[j.id]
 
     def r(self, q: str, p: str) -> tuple:
+        """The position vector from point q to point p: r_qp = p − q (as in ω × r_AB)."""
         return sub(self.pos(p), self.pos(q))
 
     # motion ----------------------------------------------------------------------------------
     def rel(self, body: Optional[str]) -> Optional[str]:
+        """The body an answer is relative to, or None for the frame (named or not)."""
         return None if body in (None, self.frame) else body
 
     def vel(self, body: str, point: str, relative_to: Optional[str] = None) -> tuple:
+        """The velocity of `body`'s material point at `point`, seen from `relative_to`: v = v₀ +
+        ω × (P − O), read from the solution."""
         m = self.sol.motion
         return m.velocity(self.sol.state(body, self.rel(relative_to)), self.pos(point))
 
     def acc(self, body: str, point: str, relative_to: Optional[str] = None) -> tuple:
+        """The acceleration of `body`'s material point at `point`, seen from `relative_to`: a =
+        a₀ + α × r + ω × (ω × r), read from the solution."""
         m = self.sol.motion
         return m.acceleration(self.sol.state(body, self.rel(relative_to)), self.pos(point))
 
     def omega(self, body: str, relative_to: Optional[str] = None) -> Any:
+        """ω of `body`, relative to `relative_to` when given."""
         return self.sol.omega(body, self.rel(relative_to))
 
     def alpha(self, body: str, relative_to: Optional[str] = None) -> Any:
+        """α of `body`, relative to `relative_to` when given (the derivative seen from that
+        body)."""
         return self.sol.alpha(body, self.rel(relative_to))
 
     # values ----------------------------------------------------------------------------------
@@ -93,6 +104,7 @@ class Ctx:
         return 0.0 if abs(x) <= ZERO * self.scale_of(unit) else number(x)
 
     def value(self, x: Any, unit: str) -> Value:
+        """`x` cleaned (`clean`) as a document `Value` with its kind of unit."""
         return Value(self.clean(x, unit), unit)
 
     def num(self, x: Any) -> Any:
@@ -102,6 +114,8 @@ class Ctx:
         return self.inst.num(x)
 
     def is_zero(self, x: Any, unit: str) -> bool:
+        """Whether `x` is zero at the mechanism's own scale of its kind of quantity
+        (`scale_of`)."""
         return self.sol.is_zero(x, self.scale_of(unit))
 
     # names -----------------------------------------------------------------------------------
@@ -126,6 +140,7 @@ class Ctx:
         return f"{point}∈{next(c for c in classes if body in c)[0]}"
 
     def ref(self, point: str, body: str) -> PointRef:
+        """The material point `point` of `body`."""
         return PointRef(point, body)
 
 
@@ -150,5 +165,6 @@ def omega_sym(body: str, relative_to: Optional[str] = None, vector: bool = False
 
 
 def alpha_sym(body: str, relative_to: Optional[str] = None, vector: bool = False) -> Sym:
+    """α of `body` (relative to another body when given); a vector in 3D."""
     sub_ = body if relative_to is None else f"{body}/{relative_to}"
     return Sym("α", sub_, vector=vector)

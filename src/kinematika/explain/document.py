@@ -52,6 +52,7 @@ class Inline:
 
 
 def msg(key: str, **args: Any) -> Msg:
+    """A catalogue message with its arguments: ``msg("curvature.rest", point=Name("B"))``."""
     return Msg(key, args)
 
 
@@ -77,18 +78,22 @@ class Names:
 
 
 def point(name: str) -> Name:
+    """A point's name, set as a point."""
     return Name(name, "point")
 
 
 def body(name: str) -> Name:
+    """A body's name, set as a body."""
     return Name(name, "body")
 
 
 def joint(name: str) -> Name:
+    """A joint's id, set as a joint."""
     return Name(name, "joint")
 
 
 def names(items, kind: str) -> Names:
+    """Several names of one kind (point, body, joint) as one message argument."""
     return Names([Name(str(i), kind) for i in items])
 
 
@@ -147,12 +152,18 @@ class Derived:
 
 @dataclass
 class Table:
+    """A table: header cells and rows of cells (messages, names, values, inline formulas or
+    text)."""
+
     header: list[Any]
     rows: list[list[Any]]
 
 
 @dataclass
 class Arrow:
+    """An arrow of a figure, in model units, with its symbol; `style` says what it is to the
+    step (known, unknown, result, construction) and so how it is drawn."""
+
     start: tuple
     end: tuple
     label: Optional[Sym] = None
@@ -218,17 +229,25 @@ Block = Union[Msg, Equation, Derived, Table, Figure, Drawing, CentreNote, "Secti
 
 @dataclass
 class Section:
+    """A titled part of the explanation: its blocks in reading order (messages, equations,
+    derived values, tables, figures, nested sections) and its heading level."""
+
     title: Msg
     blocks: list[Block] = field(default_factory=list)
     level: int = 2
 
     def add(self, *blocks: Block) -> "Section":
+        """Append blocks, in reading order; returns the section, so that calls chain."""
         self.blocks.extend(blocks)
         return self
 
 
 @dataclass
 class Document:
+    """The whole explanation as data: the model's title, whether values are formulas, the
+    dimension, the length unit, the sections, and the bodies' numbers as the notes and figures
+    number them."""
+
     title: str
     symbolic: bool
     dimension: int
@@ -248,7 +267,9 @@ class Document:
         return out
 
     def equations(self) -> list[Equation]:
+        """Every vector equation, in reading order (tests check them on the raw values)."""
         return [b for b in self.blocks() if isinstance(b, Equation)]
 
     def derived(self) -> list[Derived]:
+        """Every value read off an equation (ω = v_BA / AB …), in reading order."""
         return [b for b in self.blocks() if isinstance(b, Derived)]

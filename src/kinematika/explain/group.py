@@ -86,6 +86,7 @@ class Path:
 
     @property
     def turns(self) -> int:
+        """The rotations written along the equation's routes in all (fewer read more easily)."""
         return sum(r.turns for r in self.routes)
 
 
@@ -128,12 +129,15 @@ class Planner:
         return self._labels[s]
 
     def state(self, s: Site) -> str:
+        """What is known of material point `s`'s motion: "full", "partial" (a knife-edge wheel's
+        plane or a driver's component) or "none"."""
         label = self.label(s)
         if label in self.full:
             return "full"
         return "partial" if label in self.partial else "none"
 
     def complete(self) -> bool:
+        """Whether every body of the group is known."""
         return all(b in self.determined for b in self.group)
 
     def _given(self) -> None:
@@ -473,15 +477,23 @@ class Writer:
         self.ps, self.plan, self.ctx, self.level = ps, plan, ps.ctx, plan.level
 
     def blocks(self) -> list:
+        """The document's blocks of the plan, in its order: each equation with the values it
+        reads (ω or α), and each rate carried from another body."""
         out: list = []
         for ev in self.plan.events:
             out += self.path(ev) if isinstance(ev, Path) else [self.same(ev)]
         return out
 
     def label(self, s: Site) -> str:
+        """How the document writes material point `s`: `B`, or `B∈body` when bodies move apart
+        there."""
         return self.ctx.point_label(s.point, s.body)
 
     def path(self, p: Path) -> list:
+        """One equation of the plan: the conditions it uses (a knife edge's, a joint's), the
+        motion of the end point along each route (v_P = v_Q + ω × QP at each turn, the contact
+        or slide terms at each crossing), the ω or α it finds read off their terms, and an
+        anchor point for a body found without one."""
         ctx, lv, ps = self.ctx, self.level, self.ps
         out: list = []
         for s in [p.end] + [r.start for r in p.routes]:
@@ -590,6 +602,10 @@ class Writer:
                      True, "point")]
 
     def seg_terms(self, seg: Seg, p: Path, known: bool = False) -> list[Term]:
+        """The terms one piece of a route adds: turning with a body ω × QP (at accelerations
+        α × QP and ω × (ω × QP)); at a rolling contact, the contact's normal term at
+        accelerations; across a slot or guide, the relative slide (and Coriolis at
+        accelerations); a pin adds nothing."""
         ctx, lv = self.ctx, self.level
         if seg.kind == "turn":
             if self.plan.apart(seg.q, seg.p) is None:

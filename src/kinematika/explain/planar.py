@@ -38,6 +38,9 @@ class PlanarSteps:
         self.stated: set[int] = set()        # drivers already stated
 
     def section(self) -> Section:
+        """The velocity (or acceleration) section: its introduction, then one subsection per
+        step of the order of solution, each group's bodies known once it is written; a symbolic
+        model's accelerations first say that ω is written by its name (ω_crank) in the formulas."""
         title = "sec.velocities" if self.level == "v" else "sec.accelerations"
         sec = Section(msg(title))
         sec.add(msg("v.intro" if self.level == "v" else "a.intro"))
@@ -57,6 +60,10 @@ class PlanarSteps:
 
     # one step ----------------------------------------------------------------------------
     def step(self, step: Step) -> list:
+        """One step's blocks: the drivers it uses, then its group's equations — the input body,
+        a dyad (RRR, RRP, RPR, PRP, or a pin in a slot), a higher pair, a vehicle's wheels, a
+        triad, or a group planned equation by equation, else the joints' conditions — and the
+        motion carried to the bodies' other points."""
         model = self.ctx.model
         joints = {j.id: j for j in model.joints}
         chain = [joints[j] for j in step.joints if j in joints]
@@ -99,6 +106,8 @@ class PlanarSteps:
         return out
 
     def input(self, step: Step, chain: list[Joint]) -> Optional[list]:
+        """The input body: its given ω (α) about its pivot, or the slide along its guide, v_P =
+        v_P∈frame + v_rel, for a prismatic input."""
         body, j = step.bodies[0], chain[0]
         given = any(d.kind == "omega" and d.body == body and d.relative_to in (None, self.ctx.frame)
                     for d in self.ctx.model.drivers)
@@ -119,6 +128,8 @@ class PlanarSteps:
         return out
 
     def rrr(self, step: Step, chain: list[Joint]) -> Optional[list]:
+        """RRR: B, the pin of the two bodies, from each pivot: v_B = v_A + ω₁ × AB = v_C + ω₂ ×
+        CB (with α × r and ω × (ω × r) at accelerations); both ω (α) read off the terms."""
         (b1, b2), (j1, j2, j3) = step.bodies, chain
         a, b, c = j1.at, j2.at, j3.at
         side1 = [self.point(a, b1)] + rotation_terms(self.ctx, self.level, b1, a, b, True)
@@ -151,6 +162,8 @@ class PlanarSteps:
         return [eq, self.read(b2, rot, c, a), self.same(b1, b2, j2)]
 
     def prp(self, step: Step, chain: list[Joint]) -> Optional[list]:
+        """PRP: the middle pin B slides along both guides, v_B = v_B∈k₁ + v_rel,1 = v_B∈k₂ +
+        v_rel,2 (Coriolis at accelerations); each body shares ω with the body that guides it."""
         if len(chain) == 2:
             return self.slot_dyad(step, chain)
         (b1, b2), (j1, j2, j3) = step.bodies, chain
@@ -187,6 +200,8 @@ class PlanarSteps:
 
     # groups that are not dyads ------------------------------------------------------------
     def other(self, step: Step) -> list:
+        """A group that is no dyad: its joints' conditions one by one (a rolling contact as no
+        slip, then contact kept) and each body's ω (α) read from them."""
         ctx, group = self.ctx, set(step.bodies)
         scope = self.known | group
         out: list = [msg("other.intro")]
@@ -214,6 +229,9 @@ class PlanarSteps:
         return self.rate(body)
 
     def rolling(self, j: Joint, group: set[str]) -> list:
+        """A rolling contact J of joint `j`: no slip, v_J∈b = v_J∈a (each side from a known
+        point of its body), at velocities; at accelerations the contact kept, a_J∈b = a_J∈a plus
+        the contact's term along the normal."""
         ctx, lv = self.ctx, self.level
         contact = ctx.sol.solver.geos[j.id].contact
         name = self.contact_name(j)
@@ -231,6 +249,7 @@ class PlanarSteps:
         return [msg("rolling.kept", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(name)), eq]
 
     def contact_name(self, j: Joint) -> str:
+        """The name the explanation gives joint `j`'s contact point (J, J1 …; `Ctx.contact`)."""
         return self.ctx.contact(j)
 
     def via(self, body: str, point: str, unknown: bool) -> list[Term]:
@@ -255,12 +274,17 @@ class PlanarSteps:
 
     # pieces ------------------------------------------------------------------------------
     def point(self, p: str, body: str) -> Term:
+        """The known motion of point `p` of `body` as a term (v_P or a_P)."""
         return point_term(self.ctx, self.level, p, body, True)
 
     def target(self, p: str, body: str, known: bool) -> Term:
+        """The term an equation is written for: the motion of `p` of `body`, known or solved in
+        this step."""
         return target_term(self.ctx, self.level, p, body, known)
 
     def equation(self, target: Term, sides: list[list[Term]], p: str, body: str) -> Equation:
+        """The equation target = side₁ = side₂ … at the section's level; its points are marked
+        explained."""
         self.done.add(self.ctx.point_label(p, body))
         self.done.update(t.sym.sub for side in sides for t in side if t.kind == "point")
         return Equation(target, sides, self.level, self.ctx.ref(p, body))
@@ -289,6 +313,7 @@ class PlanarSteps:
                        "omega" if self.level == "v" else "alpha", not ctx.symbolic)
 
     def rate(self, body: str) -> Derived:
+        """`body`'s ω (or α) as given, signed counter-clockwise for numbers."""
         ctx = self.ctx
         if self.level == "v":
             sym, value = omega_sym(body), ctx.omega(body)
@@ -366,6 +391,7 @@ def driven(ctx: Ctx, d) -> list[str]:
 
 
 def guide(j: Joint) -> Msg:
+    """The direction of joint `j`'s guide, as a message ("guide j3")."""
     return msg("dir.guide", joint=joint(j.id))
 
 

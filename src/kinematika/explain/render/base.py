@@ -65,16 +65,21 @@ class Renderer:
 
     # the walk ---------------------------------------------------------------------------------
     def render(self) -> str:
+        """The whole document as one page of the format: its title, then every section."""
         body = [self.heading(1, self.esc(visible(self.doc.title)))]
         body += [self.section(s) for s in self.doc.sections]
         return self.page("\n".join(body))
 
     def section(self, sec: Section) -> str:
+        """A section: its heading at its level, then its blocks in order."""
         parts = [self.heading(sec.level, self.message(sec.title))]
         parts += [self.block(b) for b in sec.blocks]
         return "\n".join(p for p in parts if p)
 
     def block(self, b: Any) -> str:
+        """One block in the format's markup: a message as a paragraph, an equation (with its
+        polygon), a derived value, a table, a figure, a drawing (when drawings are on) or an
+        instant centre's note; a nested section as a section."""
         if isinstance(b, Section):
             return self.section(b)
         if isinstance(b, Msg):
@@ -115,6 +120,9 @@ class Renderer:
         return "".join(self.esc(p) if i % 2 == 0 else rendered[int(p)] for i, p in enumerate(parts))
 
     def arg(self, x: Any) -> str:
+        """A message argument or cell in markup: a name, a list of names joined with the
+        language's "and" (Babel), text escaped, a symbol, a value, a nested message, an inline
+        formula or a list."""
         if isinstance(x, Name):
             return self.name(x)
         if isinstance(x, Names):
@@ -134,6 +142,7 @@ class Renderer:
         return self.esc(str(x))
 
     def inline(self, items: list) -> str:
+        """Inline items (text, symbols, values …) written in a row."""
         return "".join(self.arg(i) for i in items)
 
     def cell(self, c: Any) -> str:
@@ -192,6 +201,8 @@ class Renderer:
 
     # values ---------------------------------------------------------------------------------
     def value(self, v: Value) -> str:
+        """A value with its unit: a number in the language's writing, a vector as (x, y), a
+        formula; angles in degrees."""
         x = v.value
         if x is None:
             return "—"
@@ -207,11 +218,14 @@ class Renderer:
         return text + (" " + unit if unit and not self.doc.symbolic else "")
 
     def unit(self, kind: str) -> str:
+        """The unit of a kind of quantity (speed, accel, len, rate, rate2) in the document's
+        length unit: "m/s²", "rad/s"; none for other kinds."""
         if kind not in UNITS:
             return ""
         return self.esc(UNITS[kind].format(L=self.doc.length_unit))
 
     def scalar(self, x: Any) -> str:
+        """A scalar: a number (`number`) or a formula (`formula`)."""
         if isinstance(x, (int, float)):
             return self.number(float(x))
         return self.formula(x)
@@ -231,6 +245,8 @@ class Renderer:
 
     # annotations and derived values ------------------------------------------------------------
     def ann(self, a: Ann) -> str:
+        """An M/D/? annotation of a term (seed 001): M, D or ?, a magnitude's formula (ω·AB), or
+        the direction ⊥ or ∥ a line."""
         if a.code in ("M", "D", "?"):
             if a.code == "M" and a.ref:
                 return self.inline(a.ref)
@@ -239,6 +255,8 @@ class Renderer:
         return self.esc(sign) + self.arg(a.ref)
 
     def derived(self, d: Derived) -> str:
+        """A value read off an equation, `ω₃ = v_BA / AB = 2.5 rad/s`, with the sense
+        (counter-clockwise or clockwise) when it is a nonzero number and the sense is asked."""
         parts = [self.sym(d.sym)]
         if d.how:
             parts.append(self.inline(d.how))
@@ -258,6 +276,9 @@ class Renderer:
 
     # instant centres ------------------------------------------------------------------------
     def centre(self, c: CentreNote) -> str:
+        """One instant centre's line: I_ab, how it follows (at a joint of its kind, by
+        Aronhold–Kennedy from two lines, where two lines meet, from speeds proportional to the
+        distance, where the perpendiculars to two velocities meet, or from ω) and where it is."""
         a, b = c.pair
         name = Sym("I", f"{a},{b}", vector=False)
         if c.how == "joint":
@@ -291,6 +312,8 @@ class Renderer:
                     "vp": Value(vp, "speed"), "vq": Value(vq, "speed")})
 
     def where(self, value: dict) -> Msg:
+        """Where a centre is, as a message: at a point, at infinity along a direction, or no
+        relative motion."""
         if value.get("rest"):
             return Msg("centre.rest")
         if value.get("point") is None:

@@ -29,9 +29,12 @@ figure.drawing svg{width:100%;max-width:42rem;height:auto}
 
 
 class HtmlRenderer(Renderer):
+    """The explanation as one self-contained HTML page (inline CSS and SVG, nothing fetched)."""
+
     fmt = "html"
 
     def esc(self, text: str) -> str:
+        """Text escaped for HTML, its control characters shown."""
         return escape(visible(text), quote=False)
 
     def name(self, n: Name) -> str:
@@ -45,28 +48,38 @@ class HtmlRenderer(Renderer):
         return f'<span class="{"jt" if n.kind == "joint" else "pt"}">{text}</span>'
 
     def sym(self, s: Sym) -> str:
+        """A symbol: a vector's letter bold, a scalar's italic, with its subscript and
+        superscript."""
         base = f'<b class="v">{escape(s.base)}</b>' if s.vector else f"<i>{escape(s.base)}</i>"
         sub = self.sub_text(s)
         return base + (f"<sub>{escape(sub)}</sub>" if sub else "") + (f"<sup>{escape(s.sup)}</sup>" if s.sup else "")
 
     def power(self, mantissa: str, exponent: int) -> str:
+        """m×10ⁿ with the exponent as a superscript."""
         return f"{mantissa}×10<sup>{str(exponent).replace('-', '−')}</sup>"
 
     def formula(self, expr: Any) -> str:
+        """A formula in Unicode and HTML (θ₂ as θ<sub>2</sub>), decimals as the language writes
+        them."""
         return self.decimals(unicode_formula(expr, html_name, escape))
 
     def page(self, body: str) -> str:
+        """The HTML page around `body`: the language, the title, the inline CSS."""
         return (f'<!DOCTYPE html>\n<html lang="{self.cat.lang}">\n<head>\n<meta charset="utf-8">\n'
                 f"<title>{self.esc(self.doc.title)}</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
                 f"{body}\n</body>\n</html>\n")
 
     def heading(self, level: int, text: str) -> str:
+        """An <h1>…<h3> heading."""
         return f"<h{level}>{text}</h{level}>"
 
     def para(self, text: str) -> str:
+        """A paragraph."""
         return f"<p>{text}</p>"
 
     def equation(self, eq: Equation) -> str:
+        """A vector equation as a three-row table — each term's M above it and its direction
+        below, the unknowns in red — followed by the list of its terms with their values."""
         cells = [(self.ann(eq.target.mag), self.sym(eq.target.sym), self.ann(eq.target.dir), eq.target.unknown)]
         for side in eq.sides:
             cells.append(("", "=", "", False))
@@ -84,11 +97,14 @@ class HtmlRenderer(Renderer):
         return f'<table class="eq">{"".join(rows)}</table><ul class="terms">{items}</ul>'
 
     def table(self, header: list[str], rows: list[list[str]]) -> str:
+        """A table with a header row and borders."""
         head = "".join(f"<th>{h}</th>" for h in header)
         body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in r) + "</tr>" for r in rows)
         return f'<table class="grid"><tr>{head}</tr>{body}</table>'
 
     def figure(self, fig: Figure) -> str:
+        """A polygon or figure as inline SVG, to scale with its scale bar (none for formulas),
+        and its caption."""
         caption = self.caption(fig)
         self.figures = getattr(self, "figures", 0) + 1
         drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "", f"f{self.figures}",
@@ -96,6 +112,8 @@ class HtmlRenderer(Renderer):
         return f"<figure>{drawing}<figcaption>{caption}</figcaption></figure>"
 
     def drawing(self, d: Drawing) -> str:
+        """A `draw` figure embedded as inline SVG (its ids made unique on the page), with its
+        caption."""
         self.drawn = getattr(self, "drawn", 0) + 1
         return (f'<figure class="drawing">{embedded(d.svg(self.cat.lang), f"d{self.drawn}")}'
                 f"<figcaption>{self.drawing_caption(d)}</figcaption></figure>")

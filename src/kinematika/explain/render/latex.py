@@ -55,9 +55,13 @@ def tex_math_text(text: str) -> str:
 
 
 class LatexRenderer(Renderer):
+    """The explanation as a LaTeX article (pdflatex, amsmath, TikZ)."""
+
     fmt = "tex"
 
     def esc(self, text: str) -> str:
+        """Text for LaTeX: specials escaped, math characters in math mode, control characters
+        shown."""
         return tex_text(visible(text))
 
     def name(self, n: Name) -> str:
@@ -70,38 +74,50 @@ class LatexRenderer(Renderer):
         return f"\\{command}{{{text}}}"
 
     def math_sym(self, s: Sym) -> str:
+        """A symbol inside math: an arrow over a vector's letter, the subscript and superscript
+        as upright text."""
         base = MATH.get(s.base, s.base) if s.base != "ω×ω" else r"\omega\times\omega"
         base = rf"\vec{{{base}}}" if s.vector else base
         sub = self.sub_text(s)
         return base + (f"_{{{tex_math_text(sub)}}}" if sub else "") + (f"^{{{tex_math_text(s.sup)}}}" if s.sup else "")
 
     def sym(self, s: Sym) -> str:
+        """A symbol in running text: `math_sym` in $…$."""
         return f"${self.math_sym(s)}$"
 
     def power(self, mantissa: str, exponent: int) -> str:
+        """m × 10ⁿ in math."""
         return f"{mantissa}\\times 10^{{{exponent}}}"
 
     def number(self, x: float) -> str:
+        """A number in math mode, with a true minus and the language's decimal comma set as {,}."""
         return "$" + super().number(x).replace("−", "-").replace(",", "{,}") + "$"
 
     def formula(self, expr: Any) -> str:
+        """A formula as sympy's LaTeX in math mode, decimals as the language writes them."""
         text = latex_formula(expr)
         return f"${DECIMAL.sub('{,}', text) if self.decimal == ',' else text}$"
 
     def page(self, body: str) -> str:
+        """The article around `body`: the preamble, the title, the document environment."""
         return HEAD + "\\title{" + self.esc(self.doc.title) + "}\\date{}\n\\begin{document}\n" + body + \
             "\n\\end{document}\n"
 
     def heading(self, level: int, text: str) -> str:
+        """The title (level 1: the article's title) or an unnumbered section, subsection or
+        subsubsection."""
         if level == 1:
             return r"\maketitle"
         command = {2: "section*", 3: "subsection*"}.get(level, "subsubsection*")
         return f"\\{command}{{{text}}}"
 
     def para(self, text: str) -> str:
+        """A paragraph (text and a line break)."""
         return text + "\n"
 
     def equation(self, eq: Equation) -> str:
+        """A vector equation in display math, each term's M set over it and its direction under
+        it (the unknowns in red), followed by an itemised list of its terms with their values."""
         def cell(t) -> str:
             mag, dir_ = self.ann(t.mag), self.ann(t.dir)
             core = self.math_sym(t.sym)
@@ -117,16 +133,19 @@ class LatexRenderer(Renderer):
         return "\\[ " + " ".join(parts) + " \\]\n\\begin{itemize}\n" + items + "\n\\end{itemize}\n"
 
     def table(self, header: list[str], rows: list[list[str]]) -> str:
+        """A tabular with a rule above, below and under the header."""
         spec = "l" * len(header)
         lines = [" & ".join(header) + r" \\ \hline"] + [" & ".join(r) + r" \\" for r in rows]
         return "\\begin{tabular}{" + spec + "}\n\\hline\n" + "\n".join(lines) + "\n\\hline\n\\end{tabular}\n"
 
     def figure(self, fig: Figure) -> str:
+        """A polygon or figure as a TikZ picture, laid out as the SVG is, with its caption."""
         caption = self.caption(fig)
         return tikz(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "", caption,
                     self.bar_number)
 
     def svg_label(self, s: Sym) -> Text:
+        """A symbol in a figure: its measured size (from the SVG text) and its LaTeX for TikZ."""
         text = sym_text(s.base, self.sub_text(s), s.sup)
         text.tex = f"${self.math_sym(s)}$"
         return text

@@ -16,11 +16,16 @@ MARKUP = re.compile(r"([\\`*_\[\]<>|])")       # what Markdown would read as mar
 
 
 class MarkdownRenderer(Renderer):
+    """The explanation as Markdown, readable as plain text: equations as aligned code blocks,
+    figures as SVG data URIs."""
+
     fmt = "md"
 
     code = False            # inside an equation's code block: nothing is markup there
 
     def esc(self, text: str) -> str:
+        """Text with Markdown's markup characters escaped (inside an equation's code block only
+        a backquote is changed), control characters shown."""
         text = visible(text)
         if self.code:
             return text.replace("`", "ʼ")
@@ -33,10 +38,12 @@ class MarkdownRenderer(Renderer):
         return f"*{text}*" if n.kind in ("body", "param") and not self.code else text
 
     def sym(self, s: Sym) -> str:
+        """A symbol in plain text: v_B, a_B^n."""
         sub = self.esc(self.sub_text(s)).replace("\\_", "_")
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
 
     def power(self, mantissa: str, exponent: int) -> str:
+        """m·10^n."""
         return f"{mantissa}·10^{exponent}"
 
     def formula(self, expr: Any) -> str:
@@ -46,15 +53,20 @@ class MarkdownRenderer(Renderer):
         return text if self.code else text.replace("|", "\\|")
 
     def page(self, body: str) -> str:
+        """The body as the whole page, ending with one newline."""
         return body.rstrip() + "\n"
 
     def heading(self, level: int, text: str) -> str:
+        """A # heading of the level, between blank lines."""
         return f"\n{'#' * level} {text}\n"
 
     def para(self, text: str) -> str:
+        """A paragraph."""
         return f"{text}\n"
 
     def equation(self, eq: Equation) -> str:
+        """A vector equation as a code block of three aligned rows (each term's M above it, its
+        direction below, as in the slides), followed by the list of its terms with their values."""
         self.code = True
         try:
             block = self._block(eq)
@@ -77,11 +89,13 @@ class MarkdownRenderer(Renderer):
         return "```\n" + "\n".join(lines) + "\n```\n"
 
     def table(self, header: list[str], rows: list[list[str]]) -> str:
+        """A pipe table."""
         def line(cells: list[str]) -> str:
             return "| " + " | ".join(cells) + " |"
         return "\n".join([line(header), line(["---"] * len(header))] + [line(r) for r in rows]) + "\n"
 
     def figure(self, fig: Figure) -> str:
+        """A polygon or figure as an SVG data-URI image, with its caption in italics below."""
         caption = self.caption(fig)
         self.figures = getattr(self, "figures", 0) + 1
         drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "", f"f{self.figures}",
@@ -90,6 +104,7 @@ class MarkdownRenderer(Renderer):
         return f"![{caption}](data:image/svg+xml;base64,{data})\n\n*{caption}*\n"
 
     def drawing(self, d: Drawing) -> str:
+        """A `draw` figure as an SVG data-URI image, with its caption in italics below."""
         caption = self.drawing_caption(d)
         data = base64.b64encode(d.svg(self.cat.lang).encode("utf-8")).decode("ascii")
         return f"![{caption}](data:image/svg+xml;base64,{data})\n\n*{caption}*\n"

@@ -36,6 +36,9 @@ class Text:
 
 @dataclass
 class Placed:
+    """A label placed: its text and colour, its centre and box in figure units (y down), and its
+    leader line from the anchor when set far from it."""
+
     text: Text
     colour: str
     centre: tuple[float, float]              # figure units, y down
@@ -55,6 +58,7 @@ class Layout:
     labels: list[Placed] = field(default_factory=list)
 
     def at(self, p: tuple) -> tuple[float, float]:
+        """A model point in figure units: to scale, y down, within the margin."""
         return MARGIN + (p[0] - self.x0) * self.k, MARGIN + (self.y1 - p[1]) * self.k
 
 
@@ -73,6 +77,8 @@ def sym_text(base: str, sub: str, sup: str, tex: str = "") -> Text:
 
 
 def plain_text(text: str) -> Text:
+    """A plain label (a point's name), control characters shown, escaped for SVG, with its
+    measured size."""
     from ...draw.labels import text_extent
     from ...text import shown
 
@@ -90,6 +96,8 @@ def nice(x: float) -> float:
 
 
 def bounds(fig: Figure) -> tuple[float, float, float, float]:
+    """The box of everything a figure draws (arrows, segments, lines, circles, points), 2 %
+    larger on each side; a unit box when it draws nothing."""
     xs, ys = [], []
     for a in fig.arrows:
         xs += [a.start[0], a.end[0]]
