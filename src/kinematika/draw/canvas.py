@@ -16,6 +16,7 @@ class Canvas:
     infinite lines are clipped to, the label board, whether labels and English words are shown,
     each body's placement in an animation and the artists moving with it, and the language
     numbers are written in."""
+
     ax: Any
     scene: Scene
     view: Box                                  # infinite lines and far things are clipped here

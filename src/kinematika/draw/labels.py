@@ -44,6 +44,7 @@ class Label:
     """A text to place near its `anchor` (data coordinates), in `colour`, with its `priority`
     (lower placed first), its `gid`, and a preferred direction on the page (a vector's label
     beyond its tip)."""
+
     anchor: np.ndarray                 # data coordinates
     text: str
     colour: str

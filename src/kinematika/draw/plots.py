@@ -41,6 +41,7 @@ TURNING = 180.0       # degrees: a body whose angle spans more turns fully (own 
 @dataclass
 class Series:
     """One curve of a panel: its name (a body or a point) and its values over the sweep's rows."""
+
     name: str
     values: np.ndarray
 
@@ -49,6 +50,7 @@ class Series:
 class Panel:
     """One panel of the sweep plot: the quantity (its lines' gid prefix), the vertical axis'
     label, the curves and an optional note above it (a stroke, a time ratio)."""
+
     quantity: str                 # the gid prefix of its lines
     ylabel: str
     series: list[Series]

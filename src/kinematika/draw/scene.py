@@ -51,6 +51,7 @@ class BodyView:
     """A body on the page: its name and number (the frame is 1), colour, whether it is the
     frame, its points and shapes, the points that slide along it, and the polylines drawn as its
     bars."""
+
     name: str
     number: int                            # the frame is 1, the others 2, 3, … in file order
     colour: str
@@ -87,6 +88,7 @@ class VectorView:
     """A velocity or acceleration arrow of material point `ref` (relative to a body, if
     `relative_to`): its label, origin and page value, the model vector's magnitude and the
     magnitude as shown."""
+
     kind: str                              # "velocity" or "acceleration"
     ref: str                               # the material point, P@body
     label: str                             # the symbol, e.g. $v_B$
@@ -129,6 +131,7 @@ class KennedyLine:
 class CurvatureView:
     """A point's path curvature on the page: the point, its centre of curvature, the radius ρ
     and the osculating circle's polyline."""
+
     ref: str
     label: str
     point: Vec
@@ -141,6 +144,7 @@ class CurvatureView:
 class AxisView:
     """A 3D body's instantaneous screw axis on the page: a point of it and the page image of its
     unit direction."""
+
     key: str
     label: str
     point: Vec
@@ -152,6 +156,7 @@ class Scene:
     """Everything a figure shows, as floats on the page: bodies, joints, the mechanism's size
     and box, and the results asked for (vectors, marked points, Kennedy lines and normals,
     curvatures, screw axes) with notes such as the values a symbolic model is drawn at."""
+
     name: str
     dim: int
     projection: Projection

@@ -29,6 +29,7 @@ SIDE_ANGLE = 6.0     # degrees: arrows closer than this in direction are side by
 class Arrow:
     """A vector's arrow on the page: from `start` to `end`, `enlarged` when drawn at the
     shortest length, `zero` when only its label is shown."""
+
     view: VectorView
     start: np.ndarray
     end: np.ndarray

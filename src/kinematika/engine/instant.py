@@ -27,6 +27,7 @@ class Instant:
     find its structure numerically. `scale` and `rate` are the model's characteristic length and
     rate (`engine.ranges`); `names` holds the named quantities a long formula is written with,
     and `warnings` the input answered as written that is most likely a mistake."""
+
     model: m.Model
     backend: Any
     space: Space

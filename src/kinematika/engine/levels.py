@@ -108,6 +108,7 @@ class Level:
 class VelocityLevel(Level):
     """The velocity level: unknowns (ω, v₀) of every moving body; a joint's row is linear in
     them, e.g. a pin's v_P(b) − v_P(a) = 0."""
+
     accel = False
 
     def point(self, body: str, p: tuple) -> tuple:
@@ -120,6 +121,7 @@ class AccelerationLevel(Level):
     """The acceleration level: unknowns (α, a₀), with the solved velocities' centripetal and
     Coriolis terms in the constants; the coefficients are the velocity level's, so both systems
     share one matrix."""
+
     accel = True
 
     def point(self, body: str, p: tuple) -> tuple:

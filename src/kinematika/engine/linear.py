@@ -13,6 +13,7 @@ class Lin:
     """A linear form Σ coefᵢ·xᵢ + const in the unknown twists: what a joint's or a driver's
     condition is written as, and must vanish. It adds, subtracts and scales like a number (a
     product of two unknowns is refused), so the joint formulas are written once with ``+ − *``."""
+
     __slots__ = ("const", "terms")
     __array_ufunc__ = None   # numpy scalars defer to us instead of building object arrays
 

@@ -51,6 +51,7 @@ class Diagnosis:
     """What the rank of the dimensionless matrix says: `n` unknowns, the degrees of freedom the
     joints leave (`dof` = n − rank of the joint rows), the independent conditions the drivers
     add, and the condition number (the largest singular value over the n-th)."""
+
     n: int
     dof: int                 # of the joints alone
     conditions: int          # independent driver conditions

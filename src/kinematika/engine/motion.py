@@ -18,6 +18,7 @@ class BodyState:
     """A body's twist and its derivative at the instant: angular velocity ω and acceleration α,
     and the velocity v₀ and acceleration a₀ of its material point at the reference point
     (scalars ω, α in the plane, 3-vectors in space)."""
+
     omega: Any
     v0: tuple
     alpha: Any

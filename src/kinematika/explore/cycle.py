@@ -53,6 +53,7 @@ class Cycle:
 class BatchCycle(Cycle):
     """The cycle of a batch of designs solved together (`sweep.batch`): each design's rows; a
     value shared by every design is broadcast to (D, N)."""
+
     def __init__(self, batch: Batch) -> None:
         self.batch = batch
         self.coordinate = batch.plan.coordinate
@@ -92,6 +93,7 @@ class BatchCycle(Cycle):
 class ResultCycle(Cycle):
     """The cycle of one design swept on its own (`SweepResult`, D = 1), for models the batch
     kernel does not take; `directions` are the joints' drawn `along`."""
+
     def __init__(self, result: SweepResult, directions: dict[str, tuple]) -> None:
         self.result = result
         self.directions = directions

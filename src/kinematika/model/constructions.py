@@ -32,6 +32,7 @@ class Polar:
     """A point at `distance` from `origin` along the direction at `angle` counter-clockwise from
     the x axis, or from the direction reference[0] → reference[1] when given (a crank's pin: O2
     + L·(cos θ, sin θ))."""
+
     origin: Location
     distance: Expr
     angle: Expr
@@ -42,6 +43,7 @@ class Polar:
 class InFrame:
     """A point fixed in the frame of two points: origin + x·u + y·n, u the unit vector origin →
     toward and n = u turned +90°, (x, y) = `at`."""
+
     origin: Location
     toward: Location
     at: tuple[Expr, Expr]
@@ -52,6 +54,7 @@ class TwoCircles:
     """A point at radii[0] from centers[0] and radii[1] from centers[1] (a four-bar's coupler
     pin): the intersection on `side` of the directed line centers[0] → centers[1], or the one
     nearest the sketch point `near`."""
+
     centers: tuple[Location, Location]
     radii: tuple[Expr, Expr]
     side: Optional[str] = None             # "left" or "right" of centers[0] → centers[1]
@@ -62,6 +65,7 @@ class TwoCircles:
 class CircleLine:
     """A point at `radius` from `center` on `line` (a slider-crank's slider): the intersection
     `side` ("ahead" farther along the line's direction, or "behind"), or the one nearest `near`."""
+
     center: Location
     radius: Expr
     line: LineDef
@@ -72,6 +76,7 @@ class CircleLine:
 @dataclass(frozen=True)
 class TwoLines:
     """The point where two lines meet (parallel lines are a geometry error when evaluated)."""
+
     lines: tuple[LineDef, LineDef]
 
 

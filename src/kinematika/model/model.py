@@ -48,6 +48,7 @@ Direction = Union[ExprVector, PointPair]
 class Circle:
     """A body's circle (a wheel, a pitch circle, a slot's arc): its centre (coordinates, or the
     named point `center_point`) and radius."""
+
     center: ExprVector               # empty when `center_point` names the point
     radius: Expr
     center_point: Optional[str] = None
@@ -57,6 +58,7 @@ class Circle:
 class Line:
     """A body's straight line (a road, a rack, a flat face): a point it passes through
     (coordinates, or the named point `through_point`) and its direction."""
+
     through: ExprVector              # empty when `through_point` names the point
     direction: "Direction"
     through_point: Optional[str] = None
@@ -66,6 +68,7 @@ class Line:
 class Disc:
     """A 3D body's disc (a wheel rolling on a plane): centre (or the point `center_point`),
     radius and the axis it turns about."""
+
     center: ExprVector
     radius: Expr
     axis: "Direction"
@@ -76,6 +79,7 @@ class Disc:
 class Plane:
     """A 3D body's plane (the ground a disc rolls on): a point it passes through (or the point
     `through_point`) and its normal."""
+
     through: ExprVector
     normal: "Direction"
     through_point: Optional[str] = None
@@ -108,6 +112,7 @@ Shape = Union[Circle, Line, Disc, Plane, CurveShape, CamShape]
 class Body:
     """A rigid body: its name, the names of the points it carries (a point may belong to several
     bodies) and its shapes (circles, lines, curves, a cam …) for rolling and contact."""
+
     name: str
     points: list[str]
     shapes: list[Shape] = field(default_factory=list)
@@ -117,6 +122,7 @@ class Body:
 class Parameter:
     """A named value of the model; `value` None keeps it a symbol, so answers are formulas in
     it; `positive` tells the algebra its sign (lengths are positive; an angle may have either)."""
+
     name: str
     value: Optional[Expr]          # None: a symbol
     positive: bool = True
@@ -128,6 +134,7 @@ class Joint:
     `type` (ask `kind`, never compare the name), with the keys its kind declares: point `at`,
     directions `along` and `axis`, `internal` for circles inside circles. `index` is its place
     in the file."""
+
     id: str
     type: str
     a: str                         # first body: the one `along` directions are fixed in
@@ -154,6 +161,7 @@ class Driver:
     """A known motion: a body's ω (`kind` "omega", `body`), a joint's rate ("joint", `joint`) or
     a material point's velocity ("velocity", `point`, optionally only `along` a direction), with
     its value and acceleration, relative to the frame or to body `relative_to`."""
+
     kind: str                      # "omega", "joint" or "velocity"
     index: int
     body: Optional[str] = None     # omega driver
@@ -180,6 +188,7 @@ class Question:
     """One question of `ask`: its `kind` (velocity, icr, curvature …), its target (a body, a
     material point or a joint id), the body it is asked `relative_to` and, for a decomposition,
     the `moving` body; `echo` is the question as written, repeated in the answer."""
+
     kind: str                      # one of QUESTION_KINDS
     index: int
     target: Union[str, PointRef]   # body name, material point or joint id
@@ -218,6 +227,7 @@ class Turn:
 class Sweep:
     """A model's `sweep` section: the joint whose coordinate advances (None: the first driven
     joint), by how much in all (degrees or length) and in how many steps."""
+
     joint: Optional[str]
     by: Expr
     steps: int
@@ -230,6 +240,7 @@ class Model:
     evaluates it on numbers or on symbols (`engine.instant`). Optional parts: a `sweep`, a
     `move` to another position (`turns`: the bodies carried there), the figures' `draw_at` and
     `up`, and an `exercise` section."""
+
     name: str
     dimension: int
     frame: str

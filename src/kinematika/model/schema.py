@@ -28,12 +28,14 @@ Vector = list[Value]
 class Strict(BaseModel):
     """The schema's base: an unknown key is an error (a misspelt key never passes silently), and
     a field may be written by its name or its file key (`from`)."""
+
     model_config = ConfigDict(extra="forbid", populate_by_name=True)
 
 
 class ParameterSpec(Strict):
     """A parameter written in full: its value (null keeps it a symbol; TOML, which has no null,
     writes `symbolic = true`), whether it is positive, and a description."""
+
     value: Optional[Value] = None
     positive: StrictBool = True
     symbolic: StrictBool = False   # TOML has no null: `{symbolic = true}` keeps it a symbol
@@ -42,6 +44,7 @@ class ParameterSpec(Strict):
 
 class CircleSpec(Strict):
     """A body's `circle`: centre (a point's name or coordinates) and radius."""
+
     center: Union[str, Vector]
     radius: Value
 
@@ -49,12 +52,14 @@ class CircleSpec(Strict):
 class LineSpec(Strict):
     """A body's `line`: a point it passes through (a name or coordinates) and its direction
     vector."""
+
     through: Union[str, Vector]
     direction: Vector
 
 
 class DiscSpec(Strict):
     """A 3D body's `disc`: centre, radius and axis."""
+
     center: Union[str, Vector]
     radius: Value
     axis: Vector
@@ -62,6 +67,7 @@ class DiscSpec(Strict):
 
 class PlaneSpec(Strict):
     """A 3D body's `plane`: a point it passes through and its normal."""
+
     through: Union[str, Vector]
     normal: Vector
 
@@ -194,6 +200,7 @@ BodyCamSpec = create_model(
 class BodySpec(Strict):
     """A body written in full: its points and at most the shapes it carries (circle, line, disc,
     plane, curve, cam), and a description; a bare list of points is the short form."""
+
     points: list[str] = Field(default_factory=list)
     circle: Optional[CircleSpec] = None
     line: Optional[LineSpec] = None
@@ -232,6 +239,7 @@ JointSpec = create_model(
 class OmegaDriver(Strict):
     """`{omega: BODY, value, alpha}`: the body's angular velocity and acceleration (vectors in
     3D), optionally `relative_to` another body."""
+
     omega: str
     value: Union[Value, Vector]
     alpha: Union[Value, Vector] = 0
@@ -241,6 +249,7 @@ class OmegaDriver(Strict):
 class JointDriver(Strict):
     """`{joint: ID, rate, accel}`: the rate of change of a joint's coordinate (its angle or its
     slide) and its derivative."""
+
     joint: str
     rate: Value
     accel: Value = 0
@@ -249,6 +258,7 @@ class JointDriver(Strict):
 class VelocityDriver(Strict):
     """`{velocity: POINT, value, acceleration}`: a material point's velocity and acceleration
     (vectors, or speeds `along` a direction), optionally `relative_to` another body."""
+
     velocity: str
     value: Union[Value, Vector]
     acceleration: Union[Value, Vector] = 0
@@ -275,6 +285,7 @@ QuestionSpec = create_model(
 class SweepSpec(Strict):
     """`sweep`: the joint to advance (default: the first driven joint), by how much in all
     (default 360 degrees) and in how many steps (default 360)."""
+
     joint: Optional[str] = None
     by: Value = 360
     steps: StrictInt = 360
@@ -306,6 +317,7 @@ class ModelSpec(Strict):
     dimension (inferred when absent), the frame's name, parameters, points, bodies, joints,
     drivers, questions (`ask`), and the optional `sweep`, `move`, `draw_at`, `up` and `exercise`
     sections."""
+
     name: Optional[str] = None
     description: Optional[str] = None
     dimension: Optional[Literal[2, 3]] = None

@@ -31,6 +31,7 @@ class FourBar:
     rocker O4B, from the drawing), the bodies in each role, the drawn pin positions and their
     names, and its limit positions; it answers Grashof's classification and whether the crank
     turns fully."""
+
     ground: float
     crank: float
     coupler: float
@@ -90,6 +91,7 @@ class SliderCrank:
     """A slider-crank found in the mechanism: crank length r, connecting rod l and offset e of
     the slider's line from the crank pivot, the bodies in each role, the drawn points and the
     slider's direction, and its limit positions."""
+
     crank: float
     rod: float
     offset: float                                   # of the slider's line from the crank pivot

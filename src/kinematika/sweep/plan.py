@@ -28,6 +28,7 @@ MAX_STEPS = limits.SWEEP_STEPS
 class Plan:
     """What a sweep does: the joint whose coordinate advances, the driver that drives it, by how
     much in all (`by`: degrees for a revolute, length for a prismatic) and in how many steps."""
+
     joint: Joint
     driver: Driver                 # the driver whose coordinate is swept
     by: float                      # degrees (revolute) or length (prismatic)
