@@ -54,10 +54,7 @@ class Canvas:
 
     def moving_centroid(self) -> Any:
         """The centroid of the moving bodies' points (where "away from the mechanism" starts)."""
-        import numpy as np
-
-        pts = [p for b in self.scene.bodies.values() if not b.frame for p in b.points.values()]
-        return np.mean(pts, axis=0) if pts else self.view.centre
+        return moving_centroid(self.scene, self.view)
 
     def label(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
               prefer: Any = None, **kw: Any) -> None:
@@ -65,3 +62,12 @@ class Canvas:
         the others; lower `priority` first), unless labels are off."""
         if self.labels:
             self.board.add(anchor, text, colour, priority, gid, prefer, **kw)
+
+
+def moving_centroid(scene: Scene, view: Box) -> Any:
+    """The centroid of the moving bodies' points (where "away from the mechanism" starts), or
+    the view's centre when nothing moves."""
+    import numpy as np
+
+    pts = [p for b in scene.bodies.values() if not b.frame for p in b.points.values()]
+    return np.mean(pts, axis=0) if pts else view.centre

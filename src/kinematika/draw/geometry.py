@@ -7,6 +7,8 @@ from typing import Iterable, Optional
 
 import numpy as np
 
+from ..joints.symbols import perpendicular, rectangle, stadium, unit  # noqa: F401  (drawn shapes: one definition)
+
 Vec = np.ndarray
 
 
@@ -129,32 +131,3 @@ def convex_hull(points: list[Vec]) -> Vec:
 
 def _turn(o, a, b) -> float:
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-
-def rectangle(centre: Vec, along: Vec, length: float, height: float) -> Vec:
-    """The corners of a rectangle centred at `centre`, its length along the unit `along`."""
-    n = np.array([-along[1], along[0]])
-    hl, hh = along * length / 2, n * height / 2
-    return np.array([centre - hl - hh, centre + hl - hh, centre + hl + hh, centre - hl + hh])
-
-
-def stadium(p: Vec, q: Vec, half_width: float) -> Vec:
-    """The outline of a slot from p to q with rounded ends of radius `half_width`."""
-    d = q - p
-    base = math.atan2(d[1], d[0])
-    ends = []
-    for centre, start in ((q, base - math.pi / 2), (p, base + math.pi / 2)):
-        t = np.linspace(start, start + math.pi, 19)
-        ends.append(centre + half_width * np.column_stack([np.cos(t), np.sin(t)]))
-    return np.vstack(ends + [ends[0][:1]])
-
-
-def unit(v: Vec) -> Vec:
-    """`v` over its length (a zero vector is returned as it is)."""
-    n = float(np.linalg.norm(v))
-    return v / n if n > 0 else v
-
-
-def perpendicular(v: Vec) -> Vec:
-    """`v` turned a quarter turn counter-clockwise: (−v_y, v_x)."""
-    return np.array([-v[1], v[0]])

@@ -12,7 +12,7 @@ from matplotlib.patches import Polygon
 
 from ..joints import kind as joint_kind
 from ..joints.symbols import Mark
-from .canvas import Canvas
+from .canvas import Canvas, moving_centroid
 from .geometry import Box, clip_line
 from .scene import Scene
 from .style import GROUND, INK
@@ -30,8 +30,7 @@ class SymbolContext:
 
     def centroid(self) -> np.ndarray:
         """The centroid of the moving bodies' points (where "away from the mechanism" starts)."""
-        pts = [p for b in self.scene.bodies.values() if not b.frame for p in b.points.values()]
-        return np.mean(pts, axis=0) if pts else self.view.centre
+        return moving_centroid(self.scene, self.view)
 
     def points(self, body: str) -> list:
         """The page positions of `body`'s points."""
