@@ -1,7 +1,6 @@
 """Plane geometry for drawing: boxes, clipping, hulls and the outlines of symbols."""
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Iterable, Optional
 
