@@ -101,15 +101,23 @@ def _stopping_after(monkeypatch, chunks: int) -> None:
     monkeypatch.setattr(st, "compute", compute)
 
 
-def test_a_study_that_computed_nothing_leaves_nothing(monkeypatch, tmp_path):
+def _stopped_study(monkeypatch, tmp_path, after):
+    """A study whose cluster stops after `after` chunks: the study, its file and the error."""
     from kinematika.errors import KinematikaError
     from kinematika.explore.study import make_study, write_study
 
-    _stopping_after(monkeypatch, 0)
+    _stopping_after(monkeypatch, after)
     study = make_study(FAMILY, ["a=1.5:3", "c=3.5:5.5"], ["grashof"], grid=12, chunk=40)
     out = tmp_path / "s.parquet"
     with pytest.raises(KinematikaError) as info:
         write_study(study, out)
+    return study, out, info
+
+
+def test_a_study_that_computed_nothing_leaves_nothing(monkeypatch, tmp_path):
+    from kinematika.explore.study import write_study
+
+    study, out, info = _stopped_study(monkeypatch, tmp_path, 0)
     assert info.value.message == "cannot reach the Dask scheduler at tcp://nowhere:8786"
     assert list(tmp_path.iterdir()) == []
     monkeypatch.undo()
@@ -118,14 +126,9 @@ def test_a_study_that_computed_nothing_leaves_nothing(monkeypatch, tmp_path):
 
 
 def test_a_study_that_computed_part_says_how_to_resume(monkeypatch, tmp_path):
-    from kinematika.errors import KinematikaError
-    from kinematika.explore.study import make_study, write_study
+    from kinematika.explore.study import write_study
 
-    _stopping_after(monkeypatch, 2)
-    study = make_study(FAMILY, ["a=1.5:3", "c=3.5:5.5"], ["grashof"], grid=12, chunk=40)
-    out = tmp_path / "s.parquet"
-    with pytest.raises(KinematikaError) as info:
-        write_study(study, out)
+    study, out, info = _stopped_study(monkeypatch, tmp_path, 2)
     assert info.value.message.endswith("; 80 designs are kept in s.parquet.parts: run again with --resume to go on")
     monkeypatch.undo()
     write_study(study, out, resume=True)

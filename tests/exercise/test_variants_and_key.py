@@ -63,20 +63,20 @@ def _close(got, want, size, rel=1e-9):
     assert abs(got - want) <= rel * max(size, 1e-12), (got, want)
 
 
-def test_every_p_pair_key_is_the_hand_derivation(p_pair30):
-    for v in p_pair30.variants:
-        hand = derive.rows(derive.p_pair(**p_pair_data(v.stated)))
+def _keys_are_hand_derivations(exercise, derivation, data):
+    for v in exercise.variants:
+        hand = derive.rows(derivation(**data(v.stated)))
         assert [r.question for r in v.rows] == list(hand)
         for r in v.rows:
             _close(r.value, hand[r.question][0], hand[r.question][1])
+
+
+def test_every_p_pair_key_is_the_hand_derivation(p_pair30):
+    _keys_are_hand_derivations(p_pair30, derive.p_pair, p_pair_data)
 
 
 def test_every_four_bar_key_is_the_hand_derivation(four_bar30):
-    for v in four_bar30.variants:
-        hand = derive.rows(derive.four_bar(**four_bar_data(v.stated)))
-        assert [r.question for r in v.rows] == list(hand)
-        for r in v.rows:
-            _close(r.value, hand[r.question][0], hand[r.question][1])
+    _keys_are_hand_derivations(four_bar30, derive.four_bar, four_bar_data)
 
 
 def _flat(answers, asks):

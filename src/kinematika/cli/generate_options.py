@@ -20,6 +20,7 @@ import sys
 from pathlib import Path
 from typing import Any, Optional
 
+from ..generated import write_or_check
 from . import fast, run
 
 TARGET = Path(__file__).with_name("fast_options.py")
@@ -92,18 +93,7 @@ def source() -> str:
 
 def main(argv: Optional[list[str]] = None) -> int:
     """Write `fast_options.py` (or, with --check, say whether it is current: status 1 if not)."""
-    args = sys.argv[1:] if argv is None else argv
-    text = source()
-    current = TARGET.read_text(encoding="utf-8") if TARGET.exists() else ""
-    if "--check" in args:
-        if text != current:
-            print(f"{TARGET} is out of date: run {COMMAND}", file=sys.stderr)
-            return 1
-        return 0
-    if text != current:
-        TARGET.write_text(text, encoding="utf-8")
-        print(f"wrote {TARGET}")
-    return 0
+    return write_or_check(TARGET, source(), COMMAND, argv)
 
 
 if __name__ == "__main__":

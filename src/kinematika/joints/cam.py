@@ -12,7 +12,7 @@ centre); the pressure angle is that normal's angle from the follower's direction
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any
 
 import numpy as np
 
@@ -20,33 +20,28 @@ from ..errors import KinematikaError
 from ..shapes import Cam as CamShape
 from ..shapes import Line
 from . import symbols
-from .base import JointGeometry, JointKind, Rows
-from .touching import Follow, Point, find_touch, touch_row
+from .base import JointGeometry
+from .contact import Contact
+from .touching import Point
 
 
-class Cam(JointKind):
-    """A cam and its follower."""
+class Cam(Contact):
+    """A cam and its follower: a contact whose first outline is the cam (its profile, or
+    its pitch curve for a roller) and whose second is the follower's point or face."""
 
     name = "cam"
     summary = "the first body's cam drives the second, its follower (knife edge or roller at `at`, or flat face)"
-    dimensions = (2,)
-    touches = True
-    route = "contact"
-    centre = "normal"
-    fields = {"at": "optional"}
-    point_on = "b"
+    keeps = "the follower {b} keeps touching the cam {a}"
 
     def conditions(self, dim: int) -> int:
         """One: the follower keeps touching the cam (a higher pair, planar only)."""
         return 1
 
-    def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
-        """The contact at this instant: a flat face (the follower's `line`) on the cam's
-        profile, or the point `at` on the profile (a knife edge) or on the pitch curve (a
-        roller's centre, `roller` its radius), the branch nearest `near` when given. A cam joint
-        whose first body has no `cam:` shape, a flat face without a line or an edge without `at`
-        is a schema error naming the joint."""
-        geo = super().prepare(inst, joint)
+    def outlines(self, inst: Any, joint: Any, geo: JointGeometry) -> tuple[list, list]:
+        """The cam's profile and the follower's flat face (its `line`), or the point `at` and
+        the profile (a knife edge) or the pitch curve (a roller's centre; `geo.roller` its
+        radius). A cam joint whose first body has no `cam:` shape, a flat face without a line
+        or an edge without `at` is a schema error naming the joint."""
         cams = [s for s in inst.shapes[joint.a] if isinstance(s, CamShape)]
         if not cams:
             raise KinematikaError("schema", f"a cam joint's first body carries the cam: give {joint.a!r} a "
@@ -58,25 +53,13 @@ class Cam(JointKind):
             if not faces:
                 raise KinematikaError("schema", f"a flat-faced follower touches with its face: give {joint.b!r} "
                                       "a `line` (the face)", joint.where)
-            geo.contact = find_touch(inst, joint, [cam.profile], faces, near)
-        else:
-            if joint.at is None:
-                what = "roller's centre" if contact.radius > 0 else "knife edge"
-                raise KinematikaError("schema", f"a cam joint needs `at`: the follower's {what}", joint.where)
-            curve = cam.pitch if contact.radius > 0 else cam.profile
-            geo.contact = find_touch(inst, joint, [curve], [Point(inst.points[joint.at], joint.at)], near)
-            geo.roller = float(contact.radius)
-        return geo
-
-    def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
-        """Found anew at the pose, near the sweep's last contact on the curve."""
-        return self.prepare(inst, geo.joint, hint)
-
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
-        """(v_Jb − v_Ja)·n = 0 along the common normal at the contact J (at the acceleration
-        level with the curvature terms, `touching.touch_row`)."""
-        j = geo.joint
-        return [(touch_row(lv, j.a, j.b, geo.contact), f"the follower {j.b} keeps touching the cam {j.a}")]
+            return [cam.profile], faces
+        if joint.at is None:
+            what = "roller's centre" if contact.radius > 0 else "knife edge"
+            raise KinematikaError("schema", f"a cam joint needs `at`: the follower's {what}", joint.where)
+        geo.roller = float(contact.radius)
+        curve = cam.pitch if contact.radius > 0 else cam.profile
+        return [curve], [Point(inst.points[joint.at], joint.at)]
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """The follower's roller (a circle about its centre `at`, moving with it) or knife
@@ -89,14 +72,6 @@ class Cam(JointKind):
             return [symbols.Mark("polygon", roller, f"body:{view.b}", "white", 1.8, zorder=5,
                                  gid=f"joint:{view.id}", moves_with=view.b), *symbols.pin(view, ctx, body=view.b), *out]
         return [*symbols.pin(view, ctx, body=view.b), *out]
-
-    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
-        """The follower's gap from the cam along the normal."""
-        return Follow(geo.joint.a, geo.joint.b, geo.contact, geo.joint.id)
-
-    def add(self, m: Any, a: str, b: str, at: Optional[str] = None, id: Optional[str] = None) -> str:
-        """The cam of `a` drives the follower `b` (touching at its point `at`, or with its face)."""
-        return m.joint(self.name, a, b, id, at=at)
 
 
 KIND = Cam()

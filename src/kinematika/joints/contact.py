@@ -28,19 +28,25 @@ class Contact(JointKind):
     centre = "normal"
     fields = {"at": "optional"}
     point_on = "b"
+    keeps = "{b} keeps touching {a}"
+    """The condition's words (a row's label), with the bodies' names."""
 
     def conditions(self, dim: int) -> int:
         """One: the outlines keep touching; sliding along the tangent is free."""
         return 1
 
     def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
-        """Where the two bodies' outlines (circles, lines, curves, a cam's profile, or point
-        `at` of the second) touch at this instant: the contact J, common normal n and radii of
-        curvature (`geo.contact`), the branch nearest `near` when given."""
+        """Where the two outlines touch at this instant: the contact J, common normal n and
+        radii of curvature (`geo.contact`), the branch nearest `near` when given."""
         geo = super().prepare(inst, joint)
-        geo.contact = find_touch(inst, joint, outlines(inst, joint, joint.a),
-                                 outlines(inst, joint, joint.b, joint.at), near)
+        first, second = self.outlines(inst, joint, geo)
+        geo.contact = find_touch(inst, joint, first, second, near)
         return geo
+
+    def outlines(self, inst: Any, joint: Any, geo: JointGeometry) -> tuple[list, list]:
+        """The outlines that touch: the first body's (circles, lines, curves, a cam's
+        profile) and the second's, or its point `at`."""
+        return outlines(inst, joint, joint.a), outlines(inst, joint, joint.b, joint.at)
 
     def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
         """Found anew at the pose, near the sweep's last contact on the curve."""
@@ -50,7 +56,7 @@ class Contact(JointKind):
         """(v_Jb − v_Ja)·n = 0: no approach along the common normal (at the acceleration level
         with the curvature terms, `touching.touch_row`)."""
         j = geo.joint
-        return [(touch_row(lv, j.a, j.b, geo.contact), f"{j.b} keeps touching {j.a}")]
+        return [(touch_row(lv, j.a, j.b, geo.contact), self.keeps.format(a=j.a, b=j.b))]
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """The contact point (a still figure only)."""

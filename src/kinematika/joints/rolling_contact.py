@@ -14,6 +14,7 @@ from ..algebra.vectors import add, cross3, dot, scale, sub
 from ..errors import KinematikaError
 from ..shapes import Circle, Disc, Line, Plane
 from .base import rounding_hint
+from .touching import closest
 
 Instant = Any       # the instant (`engine.instant.Instant`): its shapes, points and algebra
 Joint = Any         # the parsed joint (`model.model.Joint`)
@@ -40,16 +41,8 @@ def find_contact(inst: Instant, joint: Joint) -> Contact:
         kinds = "circle or line" if inst.space.dim == 2 else "disc or plane"
         raise KinematikaError("schema", f"a {joint.type} joint needs a shape on both bodies: give "
                               f"{missing!r} a {kinds}", joint.where)
-    candidates = []
-    for sa in shapes_a:
-        for sb in shapes_b:
-            made = _pair(inst, joint, sa, sb)
-            if made is not None:
-                candidates.append(made)
-    if not candidates:
-        raise KinematikaError("geometry", f"{joint.type} between {joint.a!r} and {joint.b!r}: these "
-                              "shapes cannot roll on each other", joint.where)
-    gap, contact = min(candidates, key=lambda c: abs(c[0]))
+    gap, contact = closest(shapes_a, shapes_b, lambda sa, sb: _pair(inst, joint, sa, sb), lambda c: c[0], joint,
+                           "these shapes cannot roll on each other")
     tol = 1e-6 * inst.scale
     if abs(gap) > tol:
         raise KinematikaError("geometry", f"{joint.b!r} does not touch {joint.a!r}: gap {gap:.6g}"

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 import numpy as np
 
@@ -141,6 +141,18 @@ def outlines(inst: Any, joint: Any, body: str, point: Optional[str] = None) -> l
     return out
 
 
+def closest(first: list, second: list, pair: Callable[[Any, Any], Any], gap: Callable[[Any], float],
+            joint: Any, cannot: str) -> Any:
+    """Of every pair (one outline of each body) that can touch, `pair(oa, ob)` not None, the
+    one with the smallest |gap|; none at all is a `geometry` error naming the joint (`cannot`:
+    why, in words)."""
+    candidates = [made for oa in first for ob in second if (made := pair(oa, ob)) is not None]
+    if not candidates:
+        raise KinematikaError("geometry", f"{joint.kind.name} between {joint.a!r} and {joint.b!r}: {cannot}",
+                              joint.where)
+    return min(candidates, key=lambda c: abs(gap(c)))
+
+
 def find_touch(inst: Any, joint: Any, first: list, second: list, near: Optional[float] = None) -> Touch:
     """The touching pair of outlines of the joint's two bodies (the one with the smallest
     gap), checked to touch: else a `geometry` error with the gap. `near`: a curve's parameter
@@ -149,16 +161,8 @@ def find_touch(inst: Any, joint: Any, first: list, second: list, near: Optional[
         missing = joint.a if not first else joint.b
         raise KinematikaError("schema", f"a {joint.kind.name} joint needs an outline on both bodies: give "
                               f"{missing!r} a circle, line or curve (or name its point with `at`)", joint.where)
-    candidates = []
-    for oa in first:
-        for ob in second:
-            made = _pair(inst, oa, ob, near)
-            if made is not None:
-                candidates.append(made)
-    if not candidates:
-        raise KinematikaError("geometry", f"{joint.kind.name} between {joint.a!r} and {joint.b!r}: these "
-                              "outlines cannot touch at a point", joint.where)
-    touch = min(candidates, key=lambda c: abs(c.gap))
+    touch = closest(first, second, lambda oa, ob: _pair(inst, oa, ob, near), lambda t: t.gap, joint,
+                    "these outlines cannot touch at a point")
     touch.bodies = (joint.a, joint.b)
     if abs(touch.gap) > 1e-6 * inst.scale:
         raise KinematikaError("geometry", f"{joint.b!r} does not touch {joint.a!r}: gap {touch.gap:.6g}"

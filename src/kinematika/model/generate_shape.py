@@ -1,5 +1,9 @@
 """Write `shape.py`, the model file's fast check, from `schema`'s pydantic classes.
 
+Building pydantic's validators costs more than reading, checking and solving a small
+model, so the CLI checks a file with plain type tests first and calls pydantic only for a
+file those tests refuse (it may be wrong, and then pydantic's message is the one shown).
+
     python -m kinematika.model.generate_shape          # rewrite src/kinematika/model/shape.py
     python -m kinematika.model.generate_shape --check  # exit 1 if it is not what it would write
 
@@ -28,6 +32,7 @@ from pydantic import BaseModel, Discriminator, Tag
 from pydantic.fields import FieldInfo
 from pydantic.types import Strict
 
+from ..generated import write_or_check
 from ..joints import KINDS
 from . import schema
 
@@ -293,17 +298,11 @@ def _snake(name: str) -> str:
     return re.sub(r"(?<!^)(?=[A-Z])", "_", name).lower()
 
 
-HEADER = '''"""The model file's shape checked in plain Python, for the files that are right.
+HEADER = '''"""The model file's shape checked in plain Python: `spec_of` returns `schema`'s records
+for a file that is right, or None so that pydantic checks it and says what is wrong.
 
-GENERATED from `schema` by `{command}`: do not edit.
-Change `schema`, then run that command (tests/core/test_fast_paths.py regenerates this
-module and compares).
-
-`schema` (pydantic) says what a model file may hold; building its validators costs more
-than reading, checking and solving a small model. `spec_of` checks a tree with plain type
-tests (`plain`) and returns records with `schema`'s fields and defaults. It accepts only
-what pydantic accepts unchanged (exact types, known keys); for anything else it returns None
-and `build` lets pydantic check the tree, so that every error message comes from one place.
+GENERATED from `schema` by `{command}`:
+do not edit (why and how: that module's docstring).
 """
 from __future__ import annotations
 
@@ -347,18 +346,7 @@ def source() -> str:
 
 def main(argv: Optional[list[str]] = None) -> int:
     """Write `shape.py` (or, with --check, say whether it is current: status 1 if not)."""
-    args = sys.argv[1:] if argv is None else argv
-    text = source()
-    current = TARGET.read_text(encoding="utf-8") if TARGET.exists() else ""
-    if "--check" in args:
-        if text != current:
-            print(f"{TARGET} is out of date: run {COMMAND}", file=sys.stderr)
-            return 1
-        return 0
-    if text != current:
-        TARGET.write_text(text, encoding="utf-8")
-        print(f"wrote {TARGET}")
-    return 0
+    return write_or_check(TARGET, source(), COMMAND, argv)
 
 
 if __name__ == "__main__":

@@ -1,14 +1,8 @@
-"""The model file's shape checked in plain Python, for the files that are right.
+"""The model file's shape checked in plain Python: `spec_of` returns `schema`'s records
+for a file that is right, or None so that pydantic checks it and says what is wrong.
 
-GENERATED from `schema` by `python -m kinematika.model.generate_shape`: do not edit.
-Change `schema`, then run that command (tests/core/test_fast_paths.py regenerates this
-module and compares).
-
-`schema` (pydantic) says what a model file may hold; building its validators costs more
-than reading, checking and solving a small model. `spec_of` checks a tree with plain type
-tests (`plain`) and returns records with `schema`'s fields and defaults. It accepts only
-what pydantic accepts unchanged (exact types, known keys); for anything else it returns None
-and `build` lets pydantic check the tree, so that every error message comes from one place.
+GENERATED from `schema` by `python -m kinematika.model.generate_shape`:
+do not edit (why and how: that module's docstring).
 """
 from __future__ import annotations
 
