@@ -113,7 +113,8 @@ def sketch(text: str, fmt: str) -> dict[str, Any]:
             "bodies": bodies, "joints": joints,
             "drivers": [document.plain(d) for d in tree.root.get("drivers") or []],
             "ask": [document.plain(a) for a in tree.root.get("ask") or []],
-            "properties": properties(tree, values), "problem": problem}
+            "properties": properties(tree, values), "problem": problem,
+            "name": str(tree.root.get("name") or "")}
 
 
 def _problem(text: str, fmt: str) -> Optional[dict[str, str]]:

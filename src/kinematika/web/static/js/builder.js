@@ -109,9 +109,9 @@ export class Builder {
     return { at: [round(at[0]), round(at[1])] };
   }
 
-  /** The grid's spacing: 1, 2 or 5 × 10^k, about 40 CSS pixels. */
+  /** The grid's spacing: 1, 2 or 5 × 10^k, about 24 CSS pixels. */
   gridStep() {
-    const raw = 40 * (this.figure.px || 0.01);
+    const raw = 24 * (this.figure.px || 0.01);
     const k = 10 ** Math.floor(Math.log10(raw));
     return [1, 2, 5, 10].map((m) => m * k).find((s) => s >= raw) || 10 * k;
   }

@@ -683,9 +683,7 @@ export class Figure {
       if (e.button === 0 && hit.point && this.canDrag(hit.point)) {
         this.hold();
         this.drag = { name: hit.point, at: this.toModel(e) };
-        act = { kind: "drag", id: e.pointerId };
-        svg.classList.add("dragging");
-        this.onDrag(hit.point, null, false);
+        act = { kind: "drag", id: e.pointerId, x: e.clientX, y: e.clientY, moved: false };
       } else {
         act = { kind: "pan", id: e.pointerId, x: e.clientX, y: e.clientY, moved: false };
       }
@@ -693,6 +691,8 @@ export class Figure {
     svg.addEventListener("pointermove", (e) => {
       if (!act || e.pointerId !== act.id) return;
       if (act.kind === "drag") {
+        if (!act.moved && Math.hypot(e.clientX - act.x, e.clientY - act.y) < 3) return;   // a click, not a drag
+        if (!act.moved) { act.moved = true; svg.classList.add("dragging"); this.onDrag(this.drag.name, null, false); }
         this.drag.at = this.toModel(e);
         this.placeDragged();
         this.onDrag(this.drag.name, this.drag.at, false);
@@ -708,7 +708,9 @@ export class Figure {
       if (!act || e.pointerId !== act.id) return;
       const was = act;
       act = null;
-      if (was.kind === "drag") {
+      if (was.kind === "drag" && !was.moved) {
+        this.drag = null;
+      } else if (was.kind === "drag") {
         const name = this.drag.name, at = this.toModel(e);
         this.drag.at = at;
         svg.classList.remove("dragging");

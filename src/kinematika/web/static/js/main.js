@@ -58,8 +58,10 @@ async function analyse() {
     showError(blank ? null : solved.reason);
     stale(true);
     state.solution = null;
+    if (sketch) builder.sketch = sketch;
     if (sketch && (blank || Object.keys(sketch.points).length)) {
-      figure.clear(figure.keep || builder.box());
+      figure.clear(figure.keep || builder.box() || [-0.1, -0.1, 0.3, 0.2]);
+      $("model-name").textContent = shown(sketch.name || t("model"), 120);
       $("plot-box").hidden = true;
       slider.disabled = $("play").disabled = true;
       $("notes").textContent = "";
@@ -88,6 +90,7 @@ async function analyse() {
   const rows = state.sweep ? state.sweep.coordinate.length : 1;
   state.row = Math.min(state.row, rows - 1);
   if (state.row !== 0 && !state.sweep) state.row = 0;
+  if (sketch) builder.sketch = sketch;
   if (state.scene) figure.set(state.scene, state.sweep, 0);
   else figure.clear(figure.keep || builder.box());
   answers.set(state.solution, state.sweep, frame, state.scene);

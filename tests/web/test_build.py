@@ -1,0 +1,169 @@
+"""Building a mechanism by hand on the page, as a student who has never seen the model
+format would: a blank model, the palette, the grid and typed dimensions only — no typing in
+the editor — then the answers read from the page. One server and one browser for the module.
+
+Every expected number is derived here by hand (closed-form loop equations), not taken from
+the tool.
+"""
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+import yaml
+
+from kinematika.web.server import Start
+
+from .page_server import PageServer
+from .test_page import CHROMIUM, FLAGS, _chromium_or_skip
+
+pytestmark = pytest.mark.browser
+
+
+@pytest.fixture(scope="module")
+def server():
+    s = PageServer(Start())
+    yield s
+    s.stop()
+
+
+@pytest.fixture(scope="module")
+def browser():
+    _chromium_or_skip()
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        yield b
+        b.close()
+
+
+@pytest.fixture
+def page(browser, server):
+    context = browser.new_context(viewport={"width": 1400, "height": 1000})
+    pg = context.new_page()
+    pg.set_default_timeout(20000)
+    errors: list[str] = []
+    pg.on("pageerror", lambda e: errors.append(str(e)))
+    pg.goto(server.url)
+    settled(pg, 0)
+    yield pg
+    context.close()
+    assert not errors, errors
+
+
+def settled(pg, gen: int) -> None:
+    """Wait until the page has analysed the text after generation `gen`."""
+    pg.wait_for_function(f"() => window.kinematika && window.kinematika.state.gen > {gen} && "
+                         "document.getElementById('busy').hidden && "
+                         "document.getElementById('properties-body').childElementCount > 0")
+
+
+def step(pg, action) -> None:
+    """Do `action` (a build step) and wait until its edit has been analysed."""
+    gen = pg.evaluate("window.kinematika.state.gen")
+    action()
+    settled(pg, gen)
+
+
+def click_at(pg, xy) -> None:
+    x, y = pg.evaluate(f"window.kinematika.toScreen({json.dumps(list(xy))})")
+    pg.mouse.click(x, y)
+
+
+def click_point(pg, name: str) -> None:
+    click_at(pg, pg.evaluate(f"window.kinematika.builder.sketch.points[{json.dumps(name)}]"))
+
+
+def click_body(pg, a: str, b: str) -> None:
+    """Click halfway along the bar between points a and b."""
+    p, q = (np.array(pg.evaluate(f"window.kinematika.builder.sketch.points[{json.dumps(n)}]"))
+            for n in (a, b))
+    click_at(pg, (p + q) / 2)
+
+
+def selected(pg, click, name: str) -> None:
+    """Select an element by clicking it (no edit: the properties panel shows it)."""
+    click()
+    pg.get_by_test_id("properties").get_by_test_id("selected").filter(has_text=name).wait_for()
+
+
+def tool(pg, kind: str, *picks) -> None:
+    pg.get_by_test_id(f"tool-{kind}").click()
+    *first, last = picks
+    for pick in first:
+        pick()
+    step(pg, last)
+
+
+def typed(pg, testid: str, text: str) -> None:
+    """Type a dimension into the properties panel and press Enter."""
+    field = pg.get_by_test_id("properties").get_by_test_id(testid)
+    step(pg, lambda: (field.fill(text), field.press("Enter")))
+
+
+def blank(pg) -> None:
+    pg.locator("#new-menu summary").click()
+    step(pg, lambda: pg.get_by_test_id("new-model").click())
+    assert "points" not in pg.get_by_test_id("model-editor").input_value()
+
+
+def answer(pg, i: int):
+    return json.loads(pg.get_by_test_id("answers").locator(f'td[data-key="answers.{i}"]')
+                      .get_attribute("data-value"))
+
+
+def text(pg) -> dict:
+    return yaml.safe_load(pg.get_by_test_id("model-editor").input_value())
+
+
+def test_an_offset_slider_crank_built_by_hand(page):
+    """Crank OA = 50 mm at 30°, rod AB = 150 mm, the slider's line 20 mm below O, the crank
+    at 10 rad/s ccw, steady.
+
+    By hand: A = r(cos 30°, sin 30°) = (0.043301, 0.025); B on y = −0.02, so the rod's
+    vertical drop is 0.045 and its horizontal run √(0.15² − 0.045²) = 0.143091 (x_B =
+    0.186392). Velocities: v_A = ω × OA = (−0.25, 0.433013); v_B = v_A + ω₃ × AB with
+    v_By = 0 gives ω₃ = −0.433013 / 0.143091 = −3.0261 rad/s and v_B = −0.25 − ω₃·0.045 =
+    −0.3862 m/s. Accelerations: a_A = −ω²·OA = (−4.3301, −2.5); a_By = 0 = −2.5 +
+    α₃·0.143091 + ω₃²·0.045 gives α₃ = 14.59 rad/s², and a_B = −4.3301 + α₃·0.045 −
+    ω₃²·0.143091 = −4.984 m/s².
+    """
+    blank(page)
+    tool(page, "pivot", lambda: click_at(page, (0, 0)))
+    tool(page, "link", lambda: click_point(page, "O1"), lambda: click_at(page, (0.04, 0.02)))
+    typed(page, "prop-length", "50 mm")
+    typed(page, "prop-angle", "30")
+    tool(page, "link", lambda: click_point(page, "A"), lambda: click_at(page, (0.18, 0.0)))
+    typed(page, "prop-length", "150 mm")
+    tool(page, "slider", lambda: click_point(page, "B"))
+    typed(page, "prop-line-y", "-20 mm")
+    page.get_by_test_id("tool-select").click()
+    selected(page, lambda: click_body(page, "O1", "A"), "link1")        # the crank: the input
+    page.get_by_test_id("properties").get_by_test_id("input-omega").fill("10")
+    step(page, lambda: page.get_by_test_id("set-input").click())
+    selected(page, lambda: click_point(page, "B"), "B")
+    step(page, lambda: page.get_by_test_id("ask-velocity").click())
+    step(page, lambda: page.get_by_test_id("ask-acceleration").click())
+    selected(page, lambda: click_body(page, "A", "B"), "link2")
+    step(page, lambda: page.get_by_test_id("ask-omega").click())
+
+    model = text(page)
+    assert model["points"]["A"] == {"from": "O1", "distance": 0.05, "angle": "deg(30)"}
+    assert model["points"]["B"]["circle"] == ["A", 0.15]          # by construction, as stated
+    assert model["points"]["B"]["line"]["through"][1] == -0.02
+    r, th, rod, e, w = 0.05, math.radians(30), 0.15, 0.02, 10.0
+    ax, ay = r * math.cos(th), r * math.sin(th)
+    drop = ay + e
+    run = math.sqrt(rod ** 2 - drop ** 2)
+    w3 = -(w * ax) / run
+    vb = -w * ay - w3 * (-drop)            # v_Bx = v_Ax − ω₃·(y_B − y_A)
+    a3 = (w ** 2 * ay - w3 ** 2 * drop) / run
+    ab = -w ** 2 * ax - a3 * (-drop) - w3 ** 2 * run
+    assert (round(vb, 4), round(ab, 3), round(w3, 3)) == (-0.3862, -4.984, -3.026)
+    assert answer(page, 0) == pytest.approx([vb, 0], abs=1e-9)
+    assert answer(page, 1) == pytest.approx([ab, 0], abs=1e-8)
+    assert answer(page, 2) == pytest.approx(w3, abs=1e-9)
+    assert page.get_by_test_id("error").is_hidden()
