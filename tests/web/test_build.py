@@ -167,3 +167,74 @@ def test_an_offset_slider_crank_built_by_hand(page):
     assert answer(page, 1) == pytest.approx([ab, 0], abs=1e-8)
     assert answer(page, 2) == pytest.approx(w3, abs=1e-9)
     assert page.get_by_test_id("error").is_hidden()
+
+
+def test_a_four_bar_built_by_its_lengths(page):
+    """Ground O2O4 = 0.4, crank O2A = 0.1 at 60°, coupler AB = 0.4, rocker O4B = 0.3, B
+    above the ground line; the crank at 10 rad/s ccw.
+
+    By hand: B where the circles about A (0.4) and O4 (0.3) meet, the upper point; then
+    v_A + ω₃ k × AB = ω₄ k × O4B, two equations for ω₃ and ω₄ (solved below by Cramer)."""
+    blank(page)
+    for _ in range(2):
+        page.get_by_test_id("zoom-out").click()             # room for the ground link
+    tool(page, "pivot", lambda: click_at(page, (0, 0)))
+    tool(page, "pivot", lambda: click_at(page, (0.4, 0)))
+    tool(page, "link", lambda: click_point(page, "O1"), lambda: click_at(page, (0.06, 0.08)))
+    typed(page, "prop-length", "0.1")
+    typed(page, "prop-angle", "60")
+    tool(page, "link", lambda: click_point(page, "O2"), lambda: click_at(page, (0.3, 0.26)))
+    typed(page, "prop-length", "300 mm")
+    tool(page, "link", lambda: click_point(page, "A"), lambda: click_point(page, "B"))
+    typed(page, "prop-length", "0,4")                    # a decimal comma is a decimal mark
+    page.get_by_test_id("tool-select").click()
+    selected(page, lambda: click_body(page, "O1", "A"), "link1")
+    page.get_by_test_id("properties").get_by_test_id("input-omega").fill("10")
+    step(page, lambda: page.get_by_test_id("set-input").click())
+    for body, pts in (("link3", ("A", "B")), ("link2", ("O2", "B"))):
+        selected(page, lambda: click_body(page, *pts), body)
+        step(page, lambda: page.get_by_test_id("ask-omega").click())
+
+    model = text(page)
+    assert model["points"]["B"] == {"circles": [["O2", 0.3], ["A", 0.4]], "side": "right"}
+    a = np.array([0.1 * math.cos(math.radians(60)), 0.1 * math.sin(math.radians(60))])
+    o4 = np.array([0.4, 0.0])
+    d = np.linalg.norm(o4 - a)
+    along = (0.4 ** 2 - 0.3 ** 2 + d ** 2) / (2 * d)
+    u = (o4 - a) / d
+    b = a + along * u + math.sqrt(0.4 ** 2 - along ** 2) * np.array([-u[1], u[0]])
+    assert b[1] > 0
+    va = 10 * np.array([-a[1], a[0]])
+    ab, ob = b - a, b - o4
+    # va + w3 (−ab_y, ab_x) = w4 (−ob_y, ob_x)
+    m = np.array([[-ab[1], ob[1]], [ab[0], -ob[0]]])
+    w3, w4 = np.linalg.solve(m, -va)
+    assert answer(page, 0) == pytest.approx(w3, abs=1e-9)
+    assert answer(page, 1) == pytest.approx(w4, abs=1e-9)
+    assert (round(w3, 3), round(w4, 3)) == (-1.538, 1.795)
+
+
+def test_a_wheel_rolling_on_a_line(page):
+    """A wheel of radius 0.1 rolling on the ground line at ω = −5 rad/s (clockwise),
+    steady. By hand (no slip): v_C = −ω R (1, 0) = (0.5, 0); the top point P = C + (0, R)
+    moves at 2 v_C = (1, 0) and accelerates towards the centre, −ω² (P − C) = (0, −2.5)."""
+    blank(page)
+    for _ in range(2):
+        page.get_by_test_id("zoom-out").click()
+    tool(page, "wheel", lambda: click_at(page, (0, 0)), lambda: click_at(page, (0, 0.06)))
+    typed(page, "prop-radius", "100 mm")
+    click_body_of_wheel = lambda: click_at(page, (0.05, 0.1))          # inside the wheel's disc
+    tool(page, "plate", click_body_of_wheel, lambda: click_at(page, (0, 0.2)))
+    page.get_by_test_id("tool-select").click()
+    selected(page, click_body_of_wheel, "wheel1")
+    page.get_by_test_id("properties").get_by_test_id("input-omega").fill("-5")
+    step(page, lambda: page.get_by_test_id("set-input").click())
+    selected(page, lambda: click_point(page, "B"), "B")
+    step(page, lambda: page.get_by_test_id("ask-velocity").click())
+    step(page, lambda: page.get_by_test_id("ask-acceleration").click())
+    model = text(page)
+    assert model["parameters"] == {"R1": 0.1}
+    assert list(model) == ["name", "parameters", "points", "bodies", "joints", "drivers", "ask"]
+    assert model["bodies"]["wheel1"]["circle"] == {"center": "A", "radius": "R1"}
+    assert answer(page, 0) == pytest.approx([1.0, 0.0], abs=1e-9)
+    assert answer(page, 1) == pytest.approx([0.0, -2.5], abs=1e-9)

@@ -124,15 +124,28 @@ def new_list(fmt: str, items: list[Any]) -> Any:
     return list(items)
 
 
+ORDER = ("name", "dimension", "frame", "parameters", "draw_at", "points", "bodies", "joints",
+         "drivers", "ask", "move", "sweep")
+
+
 def section(tree: Any, key: str, kind: type, fmt: str) -> Any:
-    """The top-level section `key` (a mapping or a list), made when missing."""
+    """The top-level section `key` (a mapping or a list), made when missing and placed where
+    the format's examples put it (parameters, points, bodies, joints, drivers, ask)."""
     value = tree.get(key)
     if value is None:
-        if kind is dict:
-            value = _block_map(fmt)
+        value = _block_map(fmt) if kind is dict else _block_list(fmt)
+        rank = ORDER.index(key) if key in ORDER else len(ORDER)
+        keys = list(tree.keys())
+        at = next((i for i, k in enumerate(keys) if k in ORDER and ORDER.index(k) > rank), len(keys))
+        if hasattr(tree, "insert") and at < len(keys):
+            tree.insert(at, key, value)
+        elif isinstance(tree, dict) and not hasattr(tree, "insert") and at < len(keys) \
+                and type(tree) is dict:
+            items = list(tree.items())
+            tree.clear()
+            tree.update(items[:at] + [(key, value)] + items[at:])
         else:
-            value = _block_list(fmt)
-        tree[key] = value
+            tree[key] = value
         value = tree[key]
     return value
 

@@ -102,19 +102,8 @@ class Tree:
         return next(f"{prefix}{i}" for i in range(1, 10_000) if f"{prefix}{i}" not in used)
 
     def set_parameter(self, name: str, value: Any) -> None:
-        params = document.section(self.root, "parameters", dict, self.fmt)
-        params[name] = value
-        self._parameters_first()
-
-    def _parameters_first(self) -> None:
-        """`parameters` written before `points` (as a problem states its data first)."""
-        keys = list(self.root.keys())
-        if "points" in keys and keys.index("parameters") > keys.index("points"):
-            value = self.root.pop("parameters")
-            if hasattr(self.root, "insert"):
-                self.root.insert(keys.index("points"), "parameters", value)
-            else:
-                self.root["parameters"] = value
+        """Give a parameter a value (the section made before `points` if new)."""
+        document.section(self.root, "parameters", dict, self.fmt)[name] = value
 
     # joints ----------------------------------------------------------------------------
     def joint_ids(self) -> list[str]:

@@ -672,8 +672,11 @@ export class Figure {
     let act = null;
     svg.addEventListener("pointerdown", (e) => {
       if (e.button !== 0 && e.button !== 1) return;
-      const handle = e.target.closest?.("[data-handle]");
-      const body = e.target.closest?.("[data-body], [data-build-body]");
+      // what is under the pointer, through arrows, labels and lines drawn over the bodies
+      const stack = document.elementsFromPoint(e.clientX, e.clientY).filter((n) => svg.contains(n));
+      const find = (sel) => stack.map((n) => n.closest(sel)).find(Boolean);
+      const handle = find("[data-handle]");
+      const body = find("[data-body], [data-build-body]");
       const hit = handle ? { point: handle.dataset.handle }
         : body ? { body: body.dataset.body || body.dataset.buildBody } : {};
       const at = this.toModel(e, false);
