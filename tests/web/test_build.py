@@ -24,7 +24,12 @@ pytestmark = pytest.mark.browser
 
 @pytest.fixture(scope="module")
 def server():
-    s = PageServer(Start())
+    from kinematika.web.server import bundled_examples
+    from tests.conftest import EXAMPLES
+
+    four_bar = EXAMPLES / "four_bar.yaml"
+    s = PageServer(Start(text=four_bar.read_text(), fmt="yaml", name=four_bar.name,
+                         examples=bundled_examples()))
     yield s
     s.stop()
 
@@ -238,3 +243,46 @@ def test_a_wheel_rolling_on_a_line(page):
     assert model["bodies"]["wheel1"]["circle"] == {"center": "A", "radius": "R1"}
     assert answer(page, 0) == pytest.approx([1.0, 0.0], abs=1e-9)
     assert answer(page, 1) == pytest.approx([0.0, -2.5], abs=1e-9)
+
+
+def _words(text: str) -> set[str]:
+    import re
+
+    return {w.lower() for w in re.findall(r"[A-Za-z]{4,}", text)}
+
+
+@pytest.mark.parametrize("lang", ["eu", "es", "ca"])
+def test_no_english_word_of_the_page_in_another_language(page, lang):
+    """With the page's language chosen (one choice: the page, the explanation, the figure's
+    numbers; remembered), no English word of the page's own catalogue is left on the page:
+    buttons, headings, tooltips, the palette, the properties, the answers' headings, the
+    legend, the plot's chips. The model's own names (crank, coupler, the example's title)
+    are the model's, not the page's, and are left out."""
+    from kinematika.web.strings import page_strings
+
+    english = _words(" ".join(page_strings("en")["messages"].values()))
+    own = _words(" ".join(page_strings(lang)["messages"].values()))
+    foreign = english - own - {"yaml", "toml", "json", "kennedy", "coriolis", "kinematika"}
+    gen = page.evaluate("window.kinematika.state.gen")
+    page.get_by_test_id("ui-language").select_option(lang)
+    settled(page, gen)
+    assert page.get_by_test_id("language").input_value() == lang      # the explanation's too
+    selected(page, lambda: click_body(page, "O2", "A"), "crank")      # a full properties panel
+    model = {"crank", "coupler", "rocker", "ground", "linkage", "four"}      # the model's names
+    model |= _words(" ".join(page.locator("#example option").all_inner_texts()))   # file names
+    shown = page.evaluate("""() => {
+        const parts = [...document.querySelectorAll('header, .panel-head, .build-bar, #build-hint, #legend,'
+            + ' #properties, #answers tr.section, #answers td.q, #plot-pick, #notes, #answers-where')];
+        const text = parts.map((n) => n.innerText).join(' ');
+        const tips = [...document.querySelectorAll('[title]')].map((n) => n.title).join(' ');
+        const labels = [...document.querySelectorAll('[aria-label]')].map((n) => n.getAttribute('aria-label')).join(' ');
+        return text + ' ' + tips + ' ' + labels; }""")
+    left = (_words(shown) & foreign) - model
+    assert not left, left
+    assert page.evaluate("localStorage.getItem('kinematika.lang')") == lang
+    page.reload()
+    settled(page, 0)
+    assert page.get_by_test_id("ui-language").input_value() == lang       # remembered
+    # decimal commas where the explanations write them: ω of the rocker, −? ,?
+    omega = page.get_by_test_id("answers").locator('td[data-key="bodies.rocker.omega"]').inner_text()
+    assert "," in omega and "." not in omega

@@ -162,8 +162,10 @@ def test_the_slider_drives_figure_and_table_through_a_full_turn(page, capsys):
     times = []
     for k in range(0, 361, 5):
         times.append(set_row(page, k))
-        assert cell(page, "bodies.crank.angle") == rows["bodies"]["crank"]["angle"][k] == \
+        # the rotation since the drawn position, and the textbook angle of O2A (drawn at 90°)
+        assert cell(page, "bodies.crank.rotation") == rows["bodies"]["crank"]["angle"][k] == \
             pytest.approx(k)
+        assert cell(page, "bodies.crank.angle") == pytest.approx(90 + k, abs=1e-9)
         assert cell(page, "points.A@crank.velocity") == pytest.approx(v_a(k), abs=1e-9)
         for key in ("B@coupler", "B@rocker"):      # one motion, one row (B@coupler)
             assert cell(page, "points.B@coupler.acceleration") == rows["points"][key]["acceleration"][k]
@@ -448,3 +450,30 @@ def test_named_quantities_of_long_formulas_are_listed(page, tmp_path):
     assert list(cli_json["where"])[:2] == ["x_B", "y_B"]
     for name in ("x_B", "y_B"):
         assert cell(page, f"where.{name}") == cli_json["where"][name]
+
+
+def test_a_slow_drag_ends_under_the_pointer(page):
+    """A hand drags the crank's end A slowly, hesitating: thirty small moves, each followed
+    by a pause long enough for the page to edit, solve and redraw (most of a second). The
+    drag holds the pointer through every redraw, and at the end A is drawn under the
+    pointer (the view is kept while dragging), its text changed through the crank's
+    parameters (a, theta2), never replaced by numbers."""
+    set_row(page, 0)
+    dot = page.locator('[data-testid=figure] [data-handle="A"]')
+    box = dot.bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for i in range(1, 31):
+        page.mouse.move(x + 2 * i, y - 1.5 * i)
+        page.wait_for_timeout(600)                 # the hand hesitates; the page re-solves
+    page.mouse.up()
+    page.wait_for_function("() => !window.kinematika.figure.drag && document.getElementById('busy').hidden",
+                           timeout=30000)
+    ready(page)
+    end = page.locator('[data-testid=figure] [data-handle="A"]').bounding_box()
+    cx, cy = end["x"] + end["width"] / 2, end["y"] + end["height"] / 2
+    assert math.hypot(cx - (x + 60), cy - (y - 45)) < 3, (cx, cy, x + 60, y - 45)
+    text = page.get_by_test_id("model-editor").input_value()
+    assert "A: {from: O2, distance: a, angle: theta2}" in text
+    assert "theta2: deg(90)" not in text

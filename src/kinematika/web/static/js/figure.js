@@ -716,6 +716,7 @@ export class Figure {
       } else if (was.kind === "drag") {
         const name = this.drag.name, at = this.toModel(e);
         this.drag.at = at;
+        this.drag.done = true;
         svg.classList.remove("dragging");
         this.onDrag(name, at, true);
       } else if (!was.moved && this.onPick) {
@@ -746,7 +747,7 @@ export class Figure {
   }
 
   /** The drag is over once its last edit has been solved and drawn. */
-  release() { this.drag = null; }
+  release() { if (this.drag && this.drag.done) this.drag = null; }
 
   /** The model point under a pointer event, rounded to a thousandth of the drawing. */
   toModel(ev, rounded = true) {

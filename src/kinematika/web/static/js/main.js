@@ -138,7 +138,15 @@ async function listAssemblies(gen) {
   pick.innerHTML = options.join("");
   pick.value = state.assembly === null ? "" : String(state.assembly);
   pick.disabled = found.length < 2;
-  pick.title = found.length < 2 ? t("assembly-one") : t("assembly-many", { n: found.length });
+  state.assemblies = found.length;
+  assemblyTitle();
+}
+
+function assemblyTitle() {
+  const n = state.assemblies || 0;
+  $("assembly").title = n < 2 ? t("assembly-one") : t("assembly-many", { n });
+  const first = $("assembly").options[0];
+  if (first) first.textContent = t("assembly-as-drawn");
 }
 
 function escapeHtml(s) {
@@ -472,6 +480,7 @@ async function setLanguage(code) {
   state.lang = code;
   for (const pick of document.querySelectorAll("[data-lang]")) pick.value = code;
   await i18n.use(code);
+  assemblyTitle();
   builder.say();
   builder.showProperties();
   if (state.solution) analyse(); else explainSoon();
