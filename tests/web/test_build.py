@@ -78,14 +78,20 @@ def click_at(pg, xy) -> None:
     pg.mouse.click(x, y)
 
 
+def where(pg, name: str) -> list:
+    """A point's place in the builder's sketch (waiting for the sketch that has it)."""
+    js = f"window.kinematika.builder.sketch.points[{json.dumps(name)}]"
+    pg.wait_for_function(f"() => !!{js}")
+    return pg.evaluate(js)
+
+
 def click_point(pg, name: str) -> None:
-    click_at(pg, pg.evaluate(f"window.kinematika.builder.sketch.points[{json.dumps(name)}]"))
+    click_at(pg, where(pg, name))
 
 
 def click_body(pg, a: str, b: str) -> None:
     """Click halfway along the bar between points a and b."""
-    p, q = (np.array(pg.evaluate(f"window.kinematika.builder.sketch.points[{json.dumps(n)}]"))
-            for n in (a, b))
+    p, q = (np.array(where(pg, n)) for n in (a, b))
     click_at(pg, (p + q) / 2)
 
 
