@@ -98,7 +98,7 @@ export class Answers {
     for (const c of this.cells) {
       const live = c.source && c.source[k] !== undefined;
       const value = live ? c.source[k] : c.fixed;
-      const held = !live && (c.fixedRow ?? this.solvedRow) !== k;
+      const held = !live && value !== null && (c.fixedRow ?? this.solvedRow) !== k;   // "–" is never held
       const text = shown(format(value, this.t), Infinity);
       c.td.textContent = text;
       c.td.classList.toggle("long", text.length > LONG);
