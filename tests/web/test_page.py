@@ -467,7 +467,7 @@ def test_a_slow_drag_ends_under_the_pointer(page):
     page.mouse.down()
     for i in range(1, 31):
         page.mouse.move(x + 2 * i, y - 1.5 * i)
-        page.wait_for_timeout(600)                 # the hand hesitates; the page re-solves
+        page.wait_for_timeout(500)                 # the hand hesitates; the page re-solves
     page.mouse.up()
     page.wait_for_function("() => !window.kinematika.figure.drag && document.getElementById('busy').hidden",
                            timeout=30000)

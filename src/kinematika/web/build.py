@@ -190,7 +190,8 @@ def _row(values: _Values, label: str, path: list, kind: str, raw: Any) -> dict[s
         if kind == "angle" and number_now is not None:
             number_now = math.degrees(number_now)
     return {"label": label, "path": path, "kind": kind, "value": number_now,
-            "text": None if raw is None else str(raw), "parameter": name if name in params else None}
+            "text": None if raw is None else str(raw),
+            "parameter": name if name is not None and name in params else None}
 
 
 def _degrees(raw: Any) -> Optional[float]:
@@ -337,7 +338,7 @@ def _delete(tree: Tree, element: str) -> None:
     elif kind == "body":
         _delete_body(tree, name)
     elif kind in ("joint", "driver", "ask"):
-        items = {"joint": tree.joints, "driver": tree.drivers, "ask": tree.asks}[kind]()
+        items = tree.existing({"joint": "joints", "driver": "drivers", "ask": "ask"}[kind])
         index = tree.joint_ids().index(name) if kind == "joint" and name in tree.joint_ids() else \
             (int(name) if name.isdigit() else -1)
         if not 0 <= index < len(items):
@@ -361,16 +362,22 @@ def _delete_point(tree: Tree, name: str) -> None:
                 changed = True
     for p in doomed:
         del points[p]
+    shrunk = set()
     for b in list(tree.bodies()):
         body = tree.bodies()[b]
         listed = body.get("points") if isinstance(body, dict) else body
         for p in [x for x in listed or [] if str(x) in doomed]:
             listed.remove(p)
-    _remove(tree.joints(), lambda j: str(j.get("at")) in doomed or bool(_uses(j.get("along")) & doomed))
-    _remove(tree.asks(), lambda a: any(str(v).split("@")[0] in doomed for v in a.values()))
-    _remove(tree.drivers(), lambda d: str(d.get("velocity", "")).split("@")[0] in doomed)
-    for b in [b for b in tree.bodies() if str(b) != tree.frame and not tree.body_points(str(b))]:
-        _delete_body(tree, str(b))
+            shrunk.add(str(b))
+    _remove(tree.existing("joints"), lambda j: str(j.get("at")) in doomed or bool(_uses(j.get("along")) & doomed))
+    _remove(tree.existing("ask"), lambda a: any(str(v).split("@")[0] in doomed for v in a.values()))
+    _remove(tree.existing("drivers"), lambda d: str(d.get("velocity", "")).split("@")[0] in doomed)
+    for b in [str(b) for b in tree.bodies()]:         # a link that lost an end goes too
+        shaped = isinstance(tree.bodies()[b], dict) and any(k != "points" for k in tree.bodies()[b])
+        if b != tree.frame and (not tree.body_points(b) or
+                                (b in shrunk and len(tree.body_points(b)) < 2 and not shaped)):
+            if b in tree.bodies():
+                _delete_body(tree, b)
 
 
 def _delete_body(tree: Tree, name: str) -> None:
@@ -380,11 +387,12 @@ def _delete_body(tree: Tree, name: str) -> None:
     listed = tree.body_points(name)
     del bodies[name]
     ids = tree.joint_ids()
-    gone = {ids[i] for i, j in enumerate(tree.joints()) if name in [str(b) for b in j.get("bodies", [])]}
-    _remove(tree.joints(), lambda j: name in [str(b) for b in j.get("bodies", [])])
-    _remove(tree.drivers(), lambda d: name in (str(d.get("omega")), str(d.get("relative_to")))
+    joints = tree.existing("joints")
+    gone = {ids[i] for i, j in enumerate(joints) if name in [str(b) for b in j.get("bodies", [])]}
+    _remove(joints, lambda j: name in [str(b) for b in j.get("bodies", [])])
+    _remove(tree.existing("drivers"), lambda d: name in (str(d.get("omega")), str(d.get("relative_to")))
             or str(d.get("joint")) in gone)
-    _remove(tree.asks(), lambda a: any(str(v).split("@")[-1] == name for v in a.values()))
+    _remove(tree.existing("ask"), lambda a: any(str(v).split("@")[-1] == name for v in a.values()))
     for p in listed:                               # points no other body carries
         if p in tree.points() and not tree.carriers(p):
             _delete_point(tree, p)

@@ -43,7 +43,7 @@ def load(text: str, fmt: str) -> Any:
 def dump(tree: Any, fmt: str) -> str:
     """The tree as text in `fmt` (a round-trip tree keeps its comments)."""
     if fmt == "json":
-        return json.dumps(plain(tree), indent=2, ensure_ascii=False) + "\n"
+        return _json(plain(tree)) + "\n"
     if fmt == "toml":
         import tomlkit
 
@@ -51,6 +51,21 @@ def dump(tree: Any, fmt: str) -> str:
     out = io.StringIO()
     _yaml().dump(tree, out)
     return out.getvalue()
+
+
+def _json(value: Any, depth: int = 0) -> str:
+    """JSON in the model files' style: the top two levels one entry a line, every point,
+    body, joint, driver and question on one line."""
+    pad = "  " * (depth + 1)
+    if depth < 2 and isinstance(value, dict) and value and \
+            not (depth == 1 and all(not isinstance(v, (dict, list)) for v in value.values())):
+        items = [f"{pad}{json.dumps(k, ensure_ascii=False)}: {_json(v, depth + 1)}" for k, v in value.items()]
+        return "{\n" + ",\n".join(items) + "\n" + "  " * depth + "}"
+    if depth < 1 and isinstance(value, list) and value:
+        return "[\n" + ",\n".join(f"{pad}{_json(v, depth + 1)}" for v in value) + "\n" + "  " * depth + "]"
+    if depth == 1 and isinstance(value, list) and value and any(isinstance(v, dict) for v in value):
+        return "[\n" + ",\n".join(f"{pad}{_json(v, 2)}" for v in value) + "\n" + "  " * depth + "]"
+    return json.dumps(value, ensure_ascii=False, separators=(", ", ": "))
 
 
 def convert(text: str, fmt: str, to: str) -> str:

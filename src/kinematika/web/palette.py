@@ -171,14 +171,15 @@ def _guide(ctx: Context, point: str, line: Any, direction: np.ndarray) -> None:
 
 def slider(ctx: Context, picks: list[Pick]) -> str:
     """A slider (a block) carrying the picked point, on a straight guide fixed to the ground
-    through it (horizontal unless an `angle` is typed, in degrees)."""
+    through it (horizontal unless an `angle` is typed, in degrees); the guide is written
+    through its point nearest the origin (`[0, -0.02]`: 20 mm below a pivot at the origin)."""
     t, p = ctx.tree, picks[0]
     if not isinstance(p, str):
         p = _new_point(ctx, p)
     angle = math.radians(float(ctx.values.get("angle", 0)))
     d = np.array([math.cos(angle), math.sin(angle)])
     along = t.list([number(d[0], 12), number(d[1], 12)])
-    xy = ctx.at[p]
+    xy = ctx.at[p] - (ctx.at[p] @ d) * d            # the guide's point nearest the origin
     _guide(ctx, p, t.map({"through": t.list([ctx.tidy(xy[0]), ctx.tidy(xy[1])]),
                           "direction": t.list([number(d[0], 12), number(d[1], 12)])}), d)
     owner = t.owner(p)

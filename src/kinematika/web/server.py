@@ -130,13 +130,13 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
             return _error(404, err.as_json())
 
     async def template(request: HttpRequest) -> Response:
-        from .templates import TEMPLATES
+        from .templates import NAMES, template
 
         name = request.path_params["name"]
-        if name not in TEMPLATES:
+        if name not in NAMES:
             return _failure(Failure(404, "usage", f"no template {name!r}", "name"))
-        return JSONResponse({"model": TEMPLATES[name], "format": "yaml", "name": name},
-                            headers=SECURITY)
+        return JSONResponse({"model": template(name, request.query_params.get("lang", "en")),
+                             "format": "yaml", "name": name}, headers=SECURITY)
 
     async def help_page(request: HttpRequest) -> Response:
         from .help import page_html

@@ -45,6 +45,10 @@ class Tree:
     def asks(self) -> Any:
         return document.section(self.root, "ask", list, self.fmt)
 
+    def existing(self, key: str) -> list:
+        """A top-level list (joints, drivers, ask) as it is, or an empty one (nothing made)."""
+        return self.root.get(key) or []
+
     def parameters(self) -> Optional[Any]:
         return self.root.get("parameters")
 
@@ -108,7 +112,7 @@ class Tree:
     # joints ----------------------------------------------------------------------------
     def joint_ids(self) -> list[str]:
         """Each joint's id: its own, else j1, j2, ... in file order (the format's rule)."""
-        return [str(j.get("id") or f"j{i + 1}") for i, j in enumerate(self.joints())]
+        return [str(j.get("id") or f"j{i + 1}") for i, j in enumerate(self.existing("joints"))]
 
     def add_joint(self, items: dict[str, Any]) -> None:
         self.joints().append(document.new_map(self.fmt, items))
@@ -132,7 +136,7 @@ def number(x: float, digits: int = 6) -> float | int:
 
 def degrees(x: float) -> str:
     """An angle in degrees as the format writes it: `deg(30)`."""
-    return f"deg({number(x, 6)})"
+    return f"deg({number(round(x, 6), 6)})"
 
 
 def name_of(node: Any) -> Optional[str]:

@@ -81,6 +81,7 @@ legend-kennedy = recta de Kennedy
 legend-curvature = circumferència de curvatura
 legend-path = trajectòria en el moviment
 legend-drag = arrossega un punt per moure’l
+bodies-numbered = sòlids: { $list }
 enlarged = ampliada
 far-off = lluny, a { $place }
 play-tip = reprodueix el moviment

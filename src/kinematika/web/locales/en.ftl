@@ -81,6 +81,7 @@ legend-kennedy = Kennedy line
 legend-curvature = curvature circle
 legend-path = path over the motion
 legend-drag = drag a point to move it
+bodies-numbered = bodies: { $list }
 enlarged = enlarged
 far-off = far off at { $place }
 play-tip = play the motion

@@ -81,6 +81,7 @@ legend-kennedy = recta de Kennedy
 legend-curvature = circunferencia de curvatura
 legend-path = trayectoria en el movimiento
 legend-drag = arrastra un punto para moverlo
+bodies-numbered = sólidos: { $list }
 enlarged = ampliada
 far-off = lejos, en { $place }
 play-tip = reproducir el movimiento

@@ -81,6 +81,7 @@ legend-kennedy = Kennedyren zuzena
 legend-curvature = kurbadura-zirkunferentzia
 legend-path = mugimenduko ibilbidea
 legend-drag = arrastatu puntu bat mugitzeko
+bodies-numbered = solidoak: { $list }
 enlarged = handituta
 far-off = urrun, { $place } puntuan
 play-tip = erreproduzitu mugimendua

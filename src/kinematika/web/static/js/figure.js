@@ -105,7 +105,9 @@ export class Figure {
     this.overlayRow = this.sceneRow;
     this.paintOverlay();
     this.paintLegend();
-    this.notes.textContent = (s.notes || []).map((n) => shown(n, 2000)).join(" · ");
+    const numbering = (s.numbering || []).length
+      ? [this.t("bodies-numbered", { list: s.numbering.map(([n, b]) => `${n} ${shown(b)}`).join(", ") })] : [];
+    this.notes.textContent = [...numbering, ...(s.notes || []).map((n) => shown(n, 2000))].join(" · ");
     this.show(this.row);
     this.onView?.();
   }
@@ -630,6 +632,33 @@ export class Figure {
       pl.handle?.setAttribute("visibility", p ? "visible" : "hidden");
     }
     this.applyLayers();
+    this.unclutter();
+  }
+
+  /** Labels that would overlap are moved apart: the points' names stay; each arrow's,
+   * centre's and curvature's label after them is shifted up or down (by its height, at most
+   * twice) to the first place where it overlaps no label already placed. */
+  unclutter() {
+    if (!this.g) return;
+    const texts = [...this.pointLabels.map((pl) => pl.label),
+      ...this.svg.querySelectorAll(".content .vectors text, .content .overlay text")];
+    const placed = [];
+    for (const t of texts) {
+      t.removeAttribute("transform");
+      if (t.getAttribute("visibility") === "hidden" || !t.getClientRects().length) continue;
+      const b = t.getBBox();
+      if (!b.width) continue;
+      const fixed = this.pointLabels.some((pl) => pl.label === t);
+      let dy = 0;
+      if (!fixed) {
+        const gap = 0.15 * b.height;
+        const clash = (d) => placed.some((q) => b.x < q.x + q.width && q.x < b.x + b.width &&
+                                              b.y + d < q.y + q.height + gap && q.y < b.y + d + b.height + gap);
+        dy = [0, b.height, -b.height, 2 * b.height, -2 * b.height].find((d) => !clash(d)) ?? 0;
+        if (dy) t.setAttribute("transform", `translate(0 ${dy})`);
+      }
+      placed.push({ x: b.x, y: b.y + dy, width: b.width, height: b.height });
+    }
   }
 
   /** The 3D bodies at sweep row `k`: each tracked part turned in space by the body's

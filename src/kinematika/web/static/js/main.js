@@ -468,7 +468,7 @@ async function convertTo(fmt) {
 
 async function newModel(name) {
   $("new-menu").open = false;
-  const tpl = await get(`/api/templates/${encodeURIComponent(name)}`);
+  const tpl = await get(`/api/templates/${encodeURIComponent(name)}?lang=${state.lang}`);
   $("example").value = "";
   history.replaceState(null, "", location.pathname);
   load(tpl.model, tpl.format, name === "blank" ? "model" : name);
