@@ -203,7 +203,7 @@ def test_a_four_bar_built_by_its_lengths(page):
     page.get_by_test_id("properties").get_by_test_id("input-omega").fill("10")
     step(page, lambda: page.get_by_test_id("set-input").click())
     for body, pts in (("link3", ("A", "B")), ("link2", ("O2", "B"))):
-        selected(page, lambda: click_body(page, *pts), body)
+        selected(page, lambda pts=pts: click_body(page, *pts), body)
         step(page, lambda: page.get_by_test_id("ask-omega").click())
 
     model = text(page)
@@ -292,3 +292,29 @@ def test_no_english_word_of_the_page_in_another_language(page, lang):
     # decimal commas where the explanations write them: ω of the rocker, −? ,?
     omega = page.get_by_test_id("answers").locator('td[data-key="bodies.rocker.omega"]').inner_text()
     assert "," in omega and "." not in omega
+
+
+def test_the_format_menu_converts_and_undo_goes_back(page):
+    """The Format menu writes the same model in TOML (the same answers); Undo brings the
+    YAML text back with its format, Redo the TOML again. After a model error the answers and
+    the plot are greyed and said to be the last model's."""
+    editor = page.get_by_test_id("model-editor")
+    yaml_text = editor.input_value()
+    omega = answer(page, 2)
+    step(page, lambda: page.get_by_test_id("format").select_option("toml"))
+    toml = editor.input_value()
+    assert "[points]" in toml and "[bodies]" in toml
+    assert answer(page, 2) == omega
+    step(page, lambda: page.get_by_test_id("undo").click())
+    assert editor.input_value() == yaml_text and page.get_by_test_id("format").input_value() == "yaml"
+    step(page, lambda: page.get_by_test_id("redo").click())
+    assert editor.input_value() == toml and page.get_by_test_id("format").input_value() == "toml"
+    gen = page.evaluate("window.kinematika.state.gen")
+    editor.fill(toml.replace('at = "O4"', 'at = "Q4"'))
+    page.get_by_test_id("error").wait_for(state="visible")
+    settled(page, gen)
+    assert "stale" in page.get_by_test_id("answers").get_attribute("class")
+    assert "stale" in page.locator("#plot-box").get_attribute("class")
+    assert page.locator("#answers-stale").is_visible()
+    assert page.locator("#plot .series-value, #plot text[font-family=monospace]").evaluate_all(
+        "ts => ts.every(t => t.textContent === '')")

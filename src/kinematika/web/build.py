@@ -426,10 +426,10 @@ def _drive(tree: Tree, op: dict[str, Any]) -> None:
             raise KinematikaError("usage", "a driver's value is a number or an expression", "value")
     if isinstance(body, str) and body in tree.bodies() and body != tree.frame:
         item = {"omega": body, "value": _value(rate), "alpha": _value(accel)}
-        same = lambda d: str(d.get("omega")) == body and "relative_to" not in d  # noqa: E731
+        same = lambda d: str(d.get("omega")) == body and "relative_to" not in d
     elif isinstance(joint, str) and joint in tree.joint_ids():
         item = {"joint": joint, "rate": _value(rate), "accel": _value(accel)}
-        same = lambda d: str(d.get("joint")) == joint  # noqa: E731
+        same = lambda d: str(d.get("joint")) == joint
     else:
         raise KinematikaError("usage", "the input is a moving body or a joint of the model", "body")
     drivers = tree.drivers()

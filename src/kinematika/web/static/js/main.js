@@ -404,18 +404,18 @@ document.addEventListener("keydown", (e) => {
 });
 
 // building, undo, formats, languages ------------------------------------------------------------
-const past = [], future = [];
-let lastText = null;
+const past = [], future = [];       // earlier and undone states: [text, format]
+let last = null;
 
-/** Keep the text before a change, for undo (typing is kept once per pause). */
+/** Keep the state before a change, for undo (typing is kept once per pause). */
 function remember() {
-  const now = editor.text;
-  if (lastText !== null && lastText !== now && past.at(-1) !== lastText) {
-    past.push(lastText);
+  const now = [editor.text, state.fmt];
+  if (last !== null && (last[0] !== now[0] || last[1] !== now[1])) {
+    past.push(last);
     if (past.length > 200) past.shift();
     future.length = 0;
   }
-  lastText = now;
+  last = now;
   $("undo").disabled = !past.length;
   $("redo").disabled = !future.length;
 }
@@ -428,9 +428,12 @@ function setText(text) {
 function undo(way) {
   const from = way < 0 ? past : future, to = way < 0 ? future : past;
   if (!from.length) return;
-  to.push(editor.text);
-  editor.text = from.pop();
-  lastText = editor.text;
+  to.push([editor.text, state.fmt]);
+  const [text, fmt] = from.pop();
+  editor.text = text;
+  state.fmt = fmt;
+  $("format").value = fmt;
+  last = [text, fmt];
   $("undo").disabled = !past.length;
   $("redo").disabled = !future.length;
   figure.hold();
@@ -456,7 +459,6 @@ async function convertTo(fmt) {
   if (fmt === state.fmt) return;
   try {
     const answer = await post("convert", { model: editor.text, format: state.fmt, to: fmt });
-    remember();
     state.fmt = fmt;
     setText(answer.model);
     analyse();
