@@ -128,6 +128,7 @@ def main() -> None:
             page.get_by_test_id("error").wait_for(state="visible")
             page.wait_for_timeout(300)
             page.screenshot(path=HERE / "error.png", clip={"x": 0, "y": 0, "width": 1440, "height": 720})
+            page.get_by_test_id("ui-language").select_option("en")
             for name, k in (("quick_return.yaml", 60), ("planetary_gears.yaml", 0),
                             ("jansen_leg.yaml", 200), ("robot_arm_3d.yaml", 60),
                             ("spherical_four_bar.yaml", 24)):

@@ -177,9 +177,14 @@ function ticks(lo, hi, n) {
   const span = hi - lo;
   if (!(span > 0) || !Number.isFinite(span)) return [];
   const raw = span / n, k = 10 ** Math.floor(Math.log10(raw));
-  const step = [1, 2, 5, 10].map((m) => m * k).find((s) => s >= raw);
-  const out = [];
-  for (let v = Math.ceil(lo / step) * step; v <= hi + step * 1e-9; v += step) out.push(Math.abs(v) < step * 1e-9 ? 0 : Number(v.toPrecision(12)));
+  let step = [1, 2, 5, 10].map((m) => m * k).find((s) => s >= raw);
+  const at = (st) => {
+    const out = [];
+    for (let v = Math.ceil(lo / st) * st; v <= hi + st * 1e-9; v += st) out.push(Math.abs(v) < st * 1e-9 ? 0 : Number(v.toPrecision(12)));
+    return out;
+  };
+  let out = at(step);
+  while (out.length < 2 && step > span / 100) { step /= 2; out = at(step); }     // at least two ticks
   return out;
 }
 
