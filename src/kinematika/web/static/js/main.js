@@ -61,6 +61,8 @@ async function analyse() {
     if (sketch) builder.sketch = sketch;
     if (sketch && (blank || Object.keys(sketch.points).length)) {
       figure.clear(figure.keep || builder.box() || [-0.1, -0.1, 0.3, 0.2]);
+      figure.stale(false);                      // the sketch is current: only the numbers are not
+      $("coordinate").textContent = "–";
       $("model-name").textContent = shown(sketch.name || t("model"), 120);
       $("plot-box").hidden = true;
       slider.disabled = $("play").disabled = true;
