@@ -1,6 +1,6 @@
 """Building a mechanism by hand on the page, as a student who has never seen the model
 format would: a blank model, the palette, the grid and typed dimensions only — no typing in
-the editor — then the answers read from the page. One server and one browser for the module.
+the editor — then the answers read from the page. One server and one browser for the session (conftest).
 
 Every expected number is derived here by hand (closed-form loop equations), not taken from
 the tool.
@@ -14,35 +14,7 @@ import numpy as np
 import pytest
 import yaml
 
-from kinematika.web.server import Start
-
-from .page_server import PageServer
-from .test_page import CHROMIUM, FLAGS, _chromium_or_skip
-
 pytestmark = pytest.mark.browser
-
-
-@pytest.fixture(scope="module")
-def server():
-    from kinematika.web.server import bundled_examples
-    from tests.conftest import EXAMPLES
-
-    four_bar = EXAMPLES / "four_bar.yaml"
-    s = PageServer(Start(text=four_bar.read_text(), fmt="yaml", name=four_bar.name,
-                         examples=bundled_examples()))
-    yield s
-    s.stop()
-
-
-@pytest.fixture(scope="module")
-def browser():
-    _chromium_or_skip()
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
-        yield b
-        b.close()
 
 
 @pytest.fixture

@@ -12,8 +12,6 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import shutil
 import statistics
 from pathlib import Path
 
@@ -22,43 +20,12 @@ import yaml
 from typer.testing import CliRunner
 
 from kinematika.cli import app as cli       # the typer application, every command registered
-from kinematika.web.server import Start
 from tests.conftest import EXAMPLES
 
-from .page_server import PageServer
+from .conftest import CHROMIUM, FLAGS, _chromium_or_skip  # noqa: F401 - used by other modules too
 
 pytestmark = pytest.mark.browser
-CHROMIUM = "/usr/bin/chromium"
-FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
-         "--disable-component-update", "--disable-sync", "--no-first-run"]
 FOUR_BAR = EXAMPLES / "four_bar.yaml"
-
-
-def _chromium_or_skip() -> None:
-    if Path(CHROMIUM).exists() or shutil.which("chromium"):
-        return
-    if os.environ.get("CI"):
-        pytest.fail("Chromium is missing in CI: the test command runs scripts/browser.sh to install it")
-    pytest.skip("Chromium is not installed (bash scripts/browser.sh, or apt-get install chromium)")
-
-
-@pytest.fixture(scope="session")
-def browser():
-    _chromium_or_skip()
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM if Path(CHROMIUM).exists()
-                              else shutil.which("chromium"), args=FLAGS)
-        yield b
-        b.close()
-
-
-@pytest.fixture(scope="session")
-def server():
-    s = PageServer(Start(text=FOUR_BAR.read_text(), fmt="yaml", name=FOUR_BAR.name))
-    yield s
-    s.stop()
 
 
 @pytest.fixture
@@ -470,7 +437,7 @@ def test_a_slow_drag_ends_under_the_pointer(page):
         page.wait_for_timeout(500)                 # the hand hesitates; the page re-solves
     page.mouse.up()
     page.wait_for_function("() => !window.kinematika.figure.drag && document.getElementById('busy').hidden",
-                           timeout=30000)
+                           timeout=60000)
     ready(page)
     end = page.locator('[data-testid=figure] [data-handle="A"]').bounding_box()
     cx, cy = end["x"] + end["width"] / 2, end["y"] + end["height"] / 2

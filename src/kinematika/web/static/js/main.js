@@ -70,7 +70,6 @@ async function analyse() {
       if (blank) $("dof").textContent = t("dof", { n: "–" });
     }
     if (sketch) builder.update(sketch, false);
-    figure.release();
     return;
   }
   showError(null);
@@ -103,8 +102,7 @@ async function analyse() {
   slider.title = state.sweepError ? t("no-sweep", { why: state.sweepError }) : "";
   setRow(state.row);
   if (sketch) builder.update(sketch, !!state.scene);
-  figure.release();
-  listAssemblies(gen);
+  if (!figure.drag) listAssemblies(gen);
   if (state.sweepError) {
     $("notes").textContent = [$("notes").textContent, t("slider-off", { why: state.sweepError })].filter(Boolean).join(" · ");
   }
@@ -273,6 +271,7 @@ function play() {
 let explainTimer = null;
 function explainSoon() {
   clearTimeout(explainTimer);
+  if (figure.drag) return;                 // explained when the drag is over (it draws: slow)
   explainTimer = setTimeout(explain, 60);
 }
 
@@ -300,18 +299,22 @@ async function explain() {
 }
 
 // dragging a point --------------------------------------------------------------------------
-let dragging = null;
+let dragWanted = null, dragBusy = false;
+
+/** A point dragged to `to`: its edits are made one at a time, each with the latest place
+ * the pointer has reached (places passed while an edit was on its way are skipped). */
 async function drag(name, to, final) {
   if (to === null) {                       // a drag starts: edits are made at the drawn position
     if (playing) play();
     if (state.row !== 0) setRow(0);
     return;
   }
-  dragging = { name, to, final };
-  if (dragging.busy) return;
-  while (dragging && !dragging.busy) {
-    const job = dragging;
-    job.busy = true;
+  dragWanted = { name, to, final };
+  if (dragBusy) return;
+  dragBusy = true;
+  while (dragWanted) {
+    const job = dragWanted;
+    dragWanted = null;
     try {
       const answer = await post("edit", { model: editor.text, format: state.fmt, point: job.name, to: job.to });
       setText(answer.model);
@@ -320,8 +323,10 @@ async function drag(name, to, final) {
       toast(err.message);
       showError(err);
     }
-    if (dragging === job) dragging = null;
   }
+  dragBusy = false;
+  figure.release();
+  if (!figure.drag) { listAssemblies(state.gen); explainSoon(); }
 }
 
 // downloads and the link ----------------------------------------------------------------------
