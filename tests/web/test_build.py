@@ -88,7 +88,6 @@ def typed(pg, testid: str, text: str) -> None:
 
 
 def blank(pg) -> None:
-    pg.locator("#new-menu summary").click()
     step(pg, lambda: pg.get_by_test_id("new-model").click())
     assert "points" not in pg.get_by_test_id("model-editor").input_value()
 

@@ -1,6 +1,7 @@
 ## Les paraules de la pàgina (kinematika app), català. Termes dels apunts (sòlid, CIR,
 ## velocitat d'arrossegament) i del TERMCAT (manovella, corredora, guia, engranatge).
 new-model = Nou
+templates = plantilles
 new-blank = model en blanc
 new-four-bar = quadrilàter articulat (per les seves longituds)
 new-slider-crank = biela-manovella (per les seves dimensions)

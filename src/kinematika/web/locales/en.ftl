@@ -1,6 +1,7 @@
 ## The page's own words (kinematika app), English. Variables: { $name }. No selectors:
 ## the page fills the variables itself (web/strings.py).
 new-model = New
+templates = templates
 new-blank = blank model
 new-four-bar = four-bar (by its lengths)
 new-slider-crank = slider-crank (by its dimensions)

@@ -1,6 +1,7 @@
 ## Las palabras de la página (kinematika app), español. Términos de los apuntes y de la
 ## terminología habitual de Teoría de Máquinas (CIR, manivela, corredera, guía).
 new-model = Nuevo
+templates = plantillas
 new-blank = modelo en blanco
 new-four-bar = cuadrilátero articulado (por sus longitudes)
 new-slider-crank = biela-manivela (por sus dimensiones)

@@ -1,6 +1,7 @@
 ## Orriaren hitzak (kinematika app), euskaraz. Apunteetako terminoak (solidoa, giltzadura,
 ## biraketa-zentro instantaneoa, errodadura) eta Euskaltermenak (biradera, irristaria, gida).
 new-model = Berria
+templates = txantiloiak
 new-blank = eredu hutsa
 new-four-bar = lau barrako mekanismoa (luzeren arabera)
 new-slider-crank = biela-biradera (neurrien arabera)

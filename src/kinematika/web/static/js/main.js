@@ -60,6 +60,7 @@ async function analyse() {
     state.solution = null;
     if (sketch) builder.sketch = sketch;
     if (sketch && (blank || Object.keys(sketch.points).length)) {
+      state.scene = state.sweep = state.input = null;      // nothing of the last model is drawn again
       figure.clear(figure.keep || builder.box() || [-0.1, -0.1, 0.3, 0.2]);
       figure.stale(false);                      // the sketch is current: only the numbers are not
       $("coordinate").textContent = "–";
@@ -230,6 +231,7 @@ function settleSoon() {
  * answer of that position; and explain it. */
 async function settle() {
   const k = state.row, gen = state.gen;
+  if (!state.solution) return;             // a model being built: nothing solved to show
   explainSoon();
   if (k === 0 || !state.sweep || !state.input) {
     if (state.scene) place(state.scene, 0);
