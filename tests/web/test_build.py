@@ -170,15 +170,16 @@ def test_a_four_bar_built_by_its_lengths(page):
     tool(page, "link", lambda: click_point(page, "A"), lambda: click_point(page, "B"))
     typed(page, "prop-length", "0,4")                    # a decimal comma is a decimal mark
     page.get_by_test_id("tool-select").click()
-    selected(page, lambda: click_body(page, "O1", "A"), "link1")
-    page.get_by_test_id("properties").get_by_test_id("input-omega").fill("10")
-    step(page, lambda: page.get_by_test_id("set-input").click())
+    selected(page, lambda: click_point(page, "O1"), "O1")        # the crank's pivot: its joint
+    page.get_by_test_id("properties").get_by_test_id("input-rate-j1").fill("10")
+    step(page, lambda: page.get_by_test_id("set-input-j1").click())
     for body, pts in (("link3", ("A", "B")), ("link2", ("O2", "B"))):
         selected(page, lambda pts=pts: click_body(page, *pts), body)
         step(page, lambda: page.get_by_test_id("ask-omega").click())
 
     model = text(page)
     assert model["points"]["B"] == {"circles": [["O2", 0.3], ["A", 0.4]], "side": "right"}
+    assert model["drivers"] == [{"joint": "j1", "rate": 10, "accel": 0}]
     a = np.array([0.1 * math.cos(math.radians(60)), 0.1 * math.sin(math.radians(60))])
     o4 = np.array([0.4, 0.0])
     d = np.linalg.norm(o4 - a)

@@ -108,13 +108,20 @@ def sketch(text: str, fmt: str) -> dict[str, Any]:
     joints = []
     for jid, j in zip(tree.joint_ids(), tree.root.get("joints") or []):
         joints.append({"id": jid, "type": str(j.get("type")), "bodies": [str(b) for b in j.get("bodies", [])],
-                       "at": str(j["at"]) if isinstance(j.get("at"), str) else None})
+                       "at": str(j["at"]) if isinstance(j.get("at"), str) else None,
+                       "rate_unit": rate_unit(str(j.get("type")))})
     return {"points": {k: [float(v[0]), float(v[1])] for k, v in at.items()},
             "bodies": bodies, "joints": joints,
             "drivers": [document.plain(d) for d in tree.root.get("drivers") or []],
             "ask": [document.plain(a) for a in tree.root.get("ask") or []],
             "properties": properties(tree, values), "problem": problem,
             "name": str(tree.root.get("name") or "")}
+
+
+def rate_unit(joint_type: str) -> str:
+    """The unit of a joint's rate as a driver gives it: rad/s for a joint that turns, m/s for
+    one that slides (the format's rule; the one place the page's builder asks a joint's kind)."""
+    return "m/s" if joint_type in ("prismatic", "slot") else "rad/s"
 
 
 def _problem(text: str, fmt: str) -> Optional[dict[str, str]]:

@@ -245,6 +245,10 @@ export class Builder {
     }
     body.appendChild(form);
     if (kind === "body" && !this.sketch.bodies[name]?.frame) body.appendChild(this.inputSection(name));
+    for (const j of this.sketch.joints) {                 // the joints here can be the input too
+      const here = kind === "point" ? j.at === name : kind === "body" && !j.at && j.bodies.includes(name);
+      if (here && j.bodies.length === 2) body.appendChild(this.jointInput(j));
+    }
     body.appendChild(this.askSection(kind, name));
     const del = button(this.t("delete"), "delete", () => { this.select(null); this.act({ op: "delete", element: key }); });
     del.classList.add("danger");
@@ -292,6 +296,27 @@ export class Builder {
       const w = parseValue(omega.input.value, "rate"), a = parseValue(alpha.input.value || "0", "accel");
       if (w === null || a === null) return;
       this.act({ op: "drive", body, value: w, alpha: a });
+    }));
+    return box;
+  }
+
+  /** Make a joint the input: its rate (the second body relative to the first) and its
+   * acceleration. */
+  jointInput(j) {
+    const box = document.createElement("div");
+    box.className = "input-box";
+    const h = document.createElement("h4");
+    h.textContent = this.t("input-joint", { joint: shown(j.id), bodies: j.bodies.map((b) => shown(b)).join("–") });
+    box.appendChild(h);
+    const driver = this.sketch.drivers.find((d) => d.joint === j.id);
+    const accelUnit = j.rate_unit === "m/s" ? "m/s²" : "rad/s²";
+    const rate = this.numberField(this.t("input-rate"), `input-rate-${j.id}`, driver ? driver.rate : "", j.rate_unit);
+    const accel = this.numberField(this.t("input-accel"), `input-accel-${j.id}`, driver ? (driver.accel ?? 0) : 0, accelUnit);
+    box.append(rate.label, accel.label);
+    box.appendChild(button(this.t(driver ? "input-update" : "input-set"), `set-input-${j.id}`, () => {
+      const r = parseValue(rate.input.value, "rate"), a = parseValue(accel.input.value || "0", "accel");
+      if (r === null || a === null) return;
+      this.act({ op: "drive", joint: j.id, value: r, alpha: a });
     }));
     return box;
   }
