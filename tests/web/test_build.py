@@ -290,3 +290,18 @@ def test_the_format_menu_converts_and_undo_goes_back(page):
     assert page.locator("#answers-stale").is_visible()
     assert page.locator("#plot .series-value, #plot text[font-family=monospace]").evaluate_all(
         "ts => ts.every(t => t.textContent === '')")
+
+
+def test_help_is_one_click_away(page):
+    """The format reference and the walk-through open from the page's bar, served by the
+    page's own server as HTML."""
+    with page.context.expect_page() as opened:
+        page.get_by_test_id("help-format").click()
+    doc = opened.value
+    doc.wait_for_load_state()
+    assert doc.url.endswith("/docs/model-format.md")
+    assert doc.locator("h1").first.inner_text().startswith("Model format")
+    assert doc.locator("table").count() >= 3           # its tables rendered, not left as text
+    walk = page.request.get(page.get_by_test_id("help-problem").get_attribute("href"))
+    assert walk.status == 200 and "<h1>" in walk.text()
+    doc.close()
