@@ -302,6 +302,6 @@ def test_help_is_one_click_away(page):
     assert doc.url.endswith("/docs/model-format.md")
     assert doc.locator("h1").first.inner_text().startswith("Model format")
     assert doc.locator("table").count() >= 3           # its tables rendered, not left as text
-    walk = page.request.get(page.get_by_test_id("help-problem").get_attribute("href"))
+    walk = page.request.get(page.url.rstrip("/") + page.get_by_test_id("help-problem").get_attribute("href"))
     assert walk.status == 200 and "<h1>" in walk.text()
     doc.close()
