@@ -76,6 +76,8 @@ def building(page) -> None:
     tb.step(page, lambda: page.get_by_test_id("set-input").click())
     tb.selected(page, lambda: tb.click_point(page, "B"), "B")
     tb.step(page, lambda: page.get_by_test_id("ask-velocity").click())
+    page.wait_for_function("() => (document.querySelector('[data-testid=explanation]').srcdoc || '').length > 0",
+                           timeout=60000)
     page.wait_for_timeout(800)
     page.screenshot(path=HERE / "build-slider-crank.png", full_page=True)
 

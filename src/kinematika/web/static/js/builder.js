@@ -61,7 +61,11 @@ export class Builder {
   /** What the student is asked to click next. */
   say() {
     const tool = this.tools.find((x) => x.kind === this.tool);
-    if (!tool) { this.hint.textContent = Object.keys(this.sketch.points).length ? this.t("hint-select") : this.t("hint-empty"); return; }
+    if (!tool) {
+      this.hint.textContent = this.sketch.problem ? this.t("hint-fix")
+        : Object.keys(this.sketch.points).length ? this.t("hint-select") : this.t("hint-empty");
+      return;
+    }
     const need = tool.picks[this.picks.length];
     this.hint.textContent = `${this.t(`tool-${tool.kind}`)}: ${this.t(`pick-${need}`)}`;
   }
