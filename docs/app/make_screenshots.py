@@ -76,10 +76,11 @@ def building(page) -> None:
     tb.step(page, lambda: page.get_by_test_id("set-input").click())
     tb.selected(page, lambda: tb.click_point(page, "B"), "B")
     tb.step(page, lambda: page.get_by_test_id("ask-velocity").click())
-    page.wait_for_function("() => (document.querySelector('[data-testid=explanation]').srcdoc || '').length > 0",
-                           timeout=60000)
-    page.wait_for_timeout(800)
-    page.screenshot(path=HERE / "build-slider-crank.png", full_page=True)
+    page.frame_locator("[data-testid=explanation]").locator("h1").first.wait_for(timeout=60000)
+    page.set_viewport_size({"width": 1440, "height": 1500})   # (a full-page shot leaves the frame blank)
+    page.wait_for_timeout(1200)
+    page.screenshot(path=HERE / "build-slider-crank.png")
+    page.set_viewport_size({"width": 1440, "height": 1000})
 
 
 def languages(page) -> None:

@@ -65,6 +65,7 @@ pick-point = fes clic en un punt
 pick-body = fes clic en un sòlid
 hint-empty = Un model en blanc: tria una eina i fes clic a la quadrícula.
 hint-fix = Corregeix l’error del text del model per continuar construint (Desfés torna enrere).
+hint-3d = Un model 3D: els seus punts es mouen al text (la construcció a mà és plana).
 hint-select = Fes clic en un element per escriure’n les dimensions; arrossega un punt per moure’l.
 undo = Desfés
 undo-tip = desfés l’últim canvi (Ctrl+Z)

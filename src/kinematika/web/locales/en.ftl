@@ -65,6 +65,7 @@ pick-point = click a point
 pick-body = click a body
 hint-empty = A blank model: pick a tool in the palette and click on the grid.
 hint-fix = Correct the error in the model's text to go on building (Undo goes back).
+hint-3d = A 3D model: its points are moved in the text (building by hand is planar).
 hint-select = Click an element to type its dimensions, drag a point to move it.
 undo = Undo
 undo-tip = undo the last change (Ctrl+Z)

@@ -65,6 +65,7 @@ pick-point = haz clic en un punto
 pick-body = haz clic en un sólido
 hint-empty = Un modelo en blanco: elige una herramienta y haz clic en la cuadrícula.
 hint-fix = Corrige el error del texto del modelo para seguir construyendo (Deshacer vuelve atrás).
+hint-3d = Un modelo 3D: sus puntos se mueven en el texto (la construcción a mano es plana).
 hint-select = Haz clic en un elemento para escribir sus dimensiones; arrastra un punto para moverlo.
 undo = Deshacer
 undo-tip = deshacer el último cambio (Ctrl+Z)

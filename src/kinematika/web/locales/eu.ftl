@@ -65,6 +65,7 @@ pick-point = egin klik puntu batean
 pick-body = egin klik solido batean
 hint-empty = Eredu hutsa: aukeratu tresna bat eta egin klik saretan.
 hint-fix = Zuzendu ereduaren testuko errorea eraikitzen jarraitzeko (Desegin atzera doa).
+hint-3d = 3D eredu bat: haren puntuak testuan mugitzen dira (eskuz eraikitzea lauan soilik da).
 hint-select = Egin klik elementu batean haren neurriak idazteko; arrastatu puntu bat mugitzeko.
 undo = Desegin
 undo-tip = desegin azken aldaketa (Ctrl+Z)

@@ -61,6 +61,7 @@ export class Builder {
   /** What the student is asked to click next. */
   say() {
     const tool = this.tools.find((x) => x.kind === this.tool);
+    if (this.spatial) { this.hint.textContent = this.t("hint-3d"); return; }
     if (!tool) {
       this.hint.textContent = this.sketch.problem ? this.t("hint-fix")
         : Object.keys(this.sketch.points).length ? this.t("hint-select") : this.t("hint-empty");
@@ -73,6 +74,7 @@ export class Builder {
   // picks -------------------------------------------------------------------------------
   /** A click on the figure (`hit`: a point, a body, nothing); true when it is taken here. */
   pick(hit, at, e) {
+    if (this.spatial && this.tool !== "select") { this.say(); return true; }
     if (this.tool === "select") {
       if (hit.point) { this.select(`point:${hit.point}`); return false; }   // and it may be dragged
       if (hit.body) { this.select(`body:${hit.body}`); return true; }
@@ -122,9 +124,10 @@ export class Builder {
 
   // the drawing over the figure ---------------------------------------------------------
   /** A new sketch (/api/sketch) of the model in the editor. */
-  update(sketch, solved) {
+  update(sketch, solved, dimension = 2) {
     this.sketch = sketch;
     this.solved = solved;
+    this.spatial = dimension === 3;          // built by its text: no grid, no picks
     if (this.selected && !this.exists(this.selected)) this.selected = null;
     this.draw();
     this.showProperties();
@@ -154,7 +157,7 @@ export class Builder {
     root.replaceChildren();
     if (!view) return;
     this.figure.svg.appendChild(root);                    // above the figure's content
-    if (this.showGrid) this.drawGrid(root, view, px);
+    if (this.showGrid && !this.spatial) this.drawGrid(root, view, px);
     if (!this.solved) this.drawSketch(root, px);
     const sel = this.selected && this.selected.split(/:(.*)/s);
     if (sel && sel[0] === "point" && this.sketch.points[sel[1]]) {

@@ -102,7 +102,7 @@ async function analyse() {
   slider.disabled = $("play").disabled = !state.sweep;
   slider.title = state.sweepError ? t("no-sweep", { why: state.sweepError }) : "";
   setRow(state.row);
-  if (sketch) builder.update(sketch, !!state.scene);
+  if (sketch) builder.update(sketch, !!state.scene, state.solution.dimension);
   if (!figure.drag) listAssemblies(gen);
   if (state.sweepError) {
     $("notes").textContent = [$("notes").textContent, t("slider-off", { why: state.sweepError })].filter(Boolean).join(" · ");
