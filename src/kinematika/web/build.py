@@ -118,10 +118,15 @@ def sketch(text: str, fmt: str) -> dict[str, Any]:
             "name": str(tree.root.get("name") or "")}
 
 
-def rate_unit(joint_type: str) -> str:
-    """The unit of a joint's rate as a driver gives it: rad/s for a joint that turns, m/s for
-    one that slides (the format's rule; the one place the page's builder asks a joint's kind)."""
-    return "m/s" if joint_type in ("prismatic", "slot") else "rad/s"
+def rate_unit(joint_type: str) -> Optional[str]:
+    """The unit of a joint's rate as a driver gives it, from the kind's own coordinate (the
+    joints' registry): rad/s for an angle, m/s for a length; None for a kind whose rate no
+    driver can give (a gear, a weld) or an unknown type."""
+    from ..joints import KINDS
+
+    found = KINDS.get(joint_type)
+    coordinate = found.coordinate if found is not None else None
+    return {"angle": "rad/s", "length": "m/s"}.get(coordinate or "")
 
 
 def _problem(text: str, fmt: str) -> Optional[dict[str, str]]:

@@ -254,7 +254,7 @@ export class Builder {
     if (kind === "body" && !this.sketch.bodies[name]?.frame) body.appendChild(this.inputSection(name));
     for (const j of this.sketch.joints) {                 // the joints here can be the input too
       const here = kind === "point" ? j.at === name : kind === "body" && !j.at && j.bodies.includes(name);
-      if (here && j.bodies.length === 2) body.appendChild(this.jointInput(j));
+      if (here && j.bodies.length === 2 && j.rate_unit) body.appendChild(this.jointInput(j));
     }
     body.appendChild(this.askSection(kind, name));
     const del = button(this.t("delete"), "delete", () => { this.select(null); this.act({ op: "delete", element: key }); });
