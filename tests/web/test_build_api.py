@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from kinematika.explain.catalogue import LANGS
+from kinematika.languages import LANGS
 from kinematika.web.palette import TOOLS
 from kinematika.web.strings import page_catalogue
 
@@ -137,3 +137,65 @@ def test_templates_are_stated_by_dimensions_in_each_language(client):
         rod = [b for b in answer["bodies"].values() if abs(b["omega"] + 3.026) < 1e-3]
         assert len(rod) == 1, lang                       # ω_rod = −3.026 rad/s, derived in test_build
     assert json.loads(client.get("/api/templates/nothing").text)["error"]["kind"] == "usage"
+
+
+def test_a_pin_in_a_circular_slot_from_the_palette(client):
+    """The crank O2A (1 at 60°, 2 rad/s) and a rocker about B = (3, 0); the slot tool cuts
+    an arc about C = (2.2, 1.6) through A in the rocker. By hand, the equivalent four-bar
+    O2-A-C-B: v_A + ω_AC k × (C − A) = ω_r k × (C − B) gives the rocker's ω."""
+    import numpy as np
+
+    text = """\
+points:
+  O2: [0, 0]
+  A: {from: O2, distance: 1, angle: deg(60)}
+  B: [3, 0]
+bodies:
+  ground: [O2, B]
+  crank: [O2, A]
+  rocker: [B]
+joints:
+  - {type: revolute, bodies: [ground, crank], at: O2}
+  - {type: revolute, bodies: [ground, rocker], at: B}
+drivers:
+  - {omega: crank, value: 2, alpha: 0}
+ask:
+  - {omega: rocker}
+"""
+    out = build(client, text, {"op": "add", "kind": "curved_slot",
+                               "picks": ["A", {"body": "rocker"}, [2.2, 1.6]]})["model"]
+    assert "  - {type: curved_slot, bodies: [rocker, crank], at: A}" in out
+    assert "  rocker: {points: [B, C], circle: {center: C, radius: 1.85168}}" in out
+    a, b, c = np.array([0.5, 3 ** 0.5 / 2]), np.array([3.0, 0]), np.array([2.2, 1.6])
+    va = 2 * np.array([-a[1], a[0]])
+    ac, bc = c - a, c - b
+    m = np.array([[-ac[1], bc[1]], [ac[0], -bc[0]]])          # va + w3 k×AC = w4 k×BC
+    _, w4 = np.linalg.solve(m, -va)
+    omega = client.post("/api/solve", json={"model": out}).json()["answers"][0]["value"]
+    assert omega == pytest.approx(w4, rel=1e-5)               # the radius is written to 6 digits
+
+
+def test_a_contact_needs_two_outlines(client):
+    text = """\
+parameters: {e: 0.02, R: 0.05}
+points:
+  O: [0, 0]
+  C: {from: O, distance: e, angle: deg(30)}
+  F: [0, "e*sin(deg(30)) + R"]
+bodies:
+  ground: [O]
+  cam: {points: [O, C], circle: {center: C, radius: R}}
+  follower: [F]
+joints:
+  - {type: revolute, bodies: [ground, cam], at: O}
+  - {type: prismatic, bodies: [ground, follower], along: [0, 1]}
+"""
+    op = {"op": "add", "kind": "contact", "picks": [{"body": "cam"}, {"body": "follower"}]}
+    refused = client.post("/api/build", json={"model": text, "op": op})
+    assert refused.status_code == 400 and "follower has no outline" in refused.json()["error"]["message"]
+    flat = text.replace("  follower: [F]", "  follower: {points: [F], line: {through: F, direction: [1, 0]}}")
+    out = build(client, flat + "drivers:\n  - {omega: cam, value: 10, alpha: 0}\nask:\n  - {velocity: F}\n", op)["model"]
+    assert "  - {type: contact, bodies: [cam, follower]}" in out
+    # by hand: the follower's height e sin θ + R, so v = e ω cos θ upwards
+    v = client.post("/api/solve", json={"model": out}).json()["answers"][0]["value"]
+    assert v == pytest.approx([0, 0.02 * 10 * 3 ** 0.5 / 2], abs=1e-12)

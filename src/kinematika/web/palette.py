@@ -294,6 +294,55 @@ def gear(ctx: Context, picks: list[Pick]) -> str:
     return f"body:{bodies[0]}"
 
 
+def curved_slot(ctx: Context, picks: list[Pick]) -> str:
+    """A pin (the first pick) in a circular slot of a body (the second pick) whose centre is
+    the third pick: the body gets the slot's arc, `circle: {center: C, radius: |CP|}`, with C
+    a point it carries, and the joint `curved_slot` at the pin."""
+    t, pin, slotted = ctx.tree, picks[0], picks[1]["body"]
+    if not isinstance(pin, str):
+        pin = _new_point(ctx, pin)
+    body = t.bodies().get(slotted)
+    if body is None:
+        raise KinematikaError("usage", f"no body {slotted!r}", "picks")
+    if isinstance(body, dict) and any(k in body for k in ("circle", "curve", "cam", "line")):
+        raise KinematikaError("usage", f"{slotted} has an outline already: one slot a body",
+                              "picks")
+    owner = t.owner(pin)
+    if owner is None or owner == slotted:
+        raise KinematikaError("usage", f"the pin {pin} is on no other body than {slotted}: "
+                              "pick a pin of another body", "picks")
+    centre = picks[2]
+    if not isinstance(centre, str):
+        centre = t.fresh_point()
+        xy = ctx.place(picks[2])
+        t.points()[centre] = t.list([ctx.tidy(xy[0]), ctx.tidy(xy[1])])
+        ctx.at[centre] = xy
+    radius = float(np.linalg.norm(ctx.at[pin] - ctx.at[centre]))
+    if radius == 0:
+        raise KinematikaError("usage", "the slot's centre cannot be the pin", "picks")
+    listed = t.body_points(slotted)
+    t.bodies()[slotted] = t.map({"points": listed + ([centre] if centre not in listed else []),
+                                 "circle": {"center": centre, "radius": number(radius)}})
+    t.add_joint({"type": "curved_slot", "bodies": t.list([slotted, owner]), "at": pin})
+    return f"body:{slotted}"
+
+
+def contact(ctx: Context, picks: list[Pick]) -> str:
+    """Two bodies whose outlines (a circle, a line, a curve, a cam) touch and slide on each
+    other: the joint `contact` (a cam and its follower; a disc on a flat face)."""
+    t = ctx.tree
+    a, b = picks[0]["body"], picks[1]["body"]
+    if a == b:
+        raise KinematikaError("usage", "a contact joins two different bodies", "picks")
+    for name in (a, b):
+        body = t.bodies().get(name)
+        if not (isinstance(body, dict) and any(k in body for k in ("circle", "line", "curve", "cam"))):
+            raise KinematikaError("usage", f"{name} has no outline (a circle, a line, a curve, a "
+                                  "cam) to touch with: write its shape in the text first", "picks")
+    t.add_joint({"type": "contact", "bodies": t.list([a, b])})
+    return f"body:{a}"
+
+
 # the palette -----------------------------------------------------------------------------------
 TOOLS: tuple[Tool, ...] = (
     Tool("pivot", ("place",), "M12 8a3 3 0 1 0 .01 0M12 11 6 19h12ZM4 21h16", pivot),
@@ -304,6 +353,9 @@ TOOLS: tuple[Tool, ...] = (
          slot),
     Tool("wheel", ("place", "place"), "M12 11a7 7 0 1 0 .01 0M12 4v14M2 21h20", wheel),
     Tool("gear", ("place", "place"), "M8 12a5 5 0 1 0 .01 0M18 12a4 4 0 1 0 .01 0", gear),
+    Tool("curved_slot", ("point", "body", "place"), "M4 17a9 9 0 0 1 16 0M12 8a1.5 1.5 0 1 0 .01 0",
+         curved_slot),
+    Tool("contact", ("body", "body"), "M12 4a6 6 0 1 0 .01 0M3 20h18M12 16v4", contact),
 )
 BY_KIND = {t.kind: t for t in TOOLS}
 

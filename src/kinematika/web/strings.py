@@ -13,7 +13,8 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import KinematikaError
-from ..explain.catalogue import LANGS, VARIABLE, Catalogue
+from ..explain.catalogue import VARIABLE, Catalogue
+from ..languages import LANGS
 from ..numerals import decimal_sign
 
 LOCALES = Path(__file__).resolve().parent / "locales"
