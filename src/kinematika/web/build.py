@@ -73,18 +73,29 @@ def _is_pick(p: Any) -> bool:
 
 
 # where things are ------------------------------------------------------------------------------
-def positions(text: str, fmt: str) -> dict[str, np.ndarray]:
-    """Every point's place (constructions worked out, nothing solved); {} when the model
-    cannot be read yet."""
+def numeric_instant(text: str, fmt: str) -> Any:
+    """The model's instant with numbers (constructions worked out, nothing solved); None when
+    the model cannot be read yet, or has symbols (exact formulas are the solver's work, not
+    the builder's: a symbolic model is built in its text)."""
     from ..api import as_model
     from ..engine.instant import instantiate
 
     try:
-        inst = instantiate(as_model(text, fmt), False)
-        return {name: np.array([inst.num(c) for c in xy[:2]], dtype=float)
-                for name, xy in inst.points.items() if len(xy) == 2}
+        model = as_model(text, fmt)
+        if any(p.value is None for p in model.parameters.values()):
+            return None
+        return instantiate(model, False)
     except KinematikaError:
+        return None
+
+
+def positions(text: str, fmt: str) -> dict[str, np.ndarray]:
+    """Every planar point's place; {} when there is no numeric instant (see above)."""
+    inst = numeric_instant(text, fmt)
+    if inst is None:
         return {}
+    return {name: np.array([inst.num(c) for c in xy[:2]], dtype=float)
+            for name, xy in inst.points.items() if len(xy) == 2}
 
 
 def sketch(text: str, fmt: str) -> dict[str, Any]:
@@ -93,11 +104,12 @@ def sketch(text: str, fmt: str) -> dict[str, Any]:
     dimensions of each element. `problem` is why the places could not be worked out."""
     tree = Tree(document.load(text, fmt), fmt)
     at, problem = {}, None
-    if tree.root.get("points"):
-        at = positions(text, fmt)
-        if not at:
-            problem = _problem(text, fmt)
     values = _Values(tree, text, fmt)
+    if tree.root.get("points") and values.inst is not None:
+        at = {name: np.array([values.inst.num(c) for c in xy[:2]], dtype=float)
+              for name, xy in values.inst.points.items() if len(xy) == 2}
+    elif tree.root.get("points"):
+        problem = _problem(text, fmt)
     bodies = {}
     for name in tree.root.get("bodies") or {}:
         body = tree.root["bodies"][name]
@@ -130,11 +142,15 @@ def rate_unit(joint_type: str) -> Optional[str]:
 
 
 def _problem(text: str, fmt: str) -> Optional[dict[str, str]]:
+    """Why there is no numeric instant: the model's error, or None (it has symbols)."""
     from ..api import as_model
     from ..engine.instant import instantiate
 
     try:
-        instantiate(as_model(text, fmt), False)
+        model = as_model(text, fmt)
+        if any(p.value is None for p in model.parameters.values()):
+            return None
+        instantiate(model, False)
     except KinematikaError as err:
         return err.as_json()["error"]
     return None
@@ -145,13 +161,7 @@ class _Values:
 
     def __init__(self, tree: Tree, text: str, fmt: str) -> None:
         self.tree = tree
-        try:
-            from ..api import as_model
-            from ..engine.instant import instantiate
-
-            self.inst = instantiate(as_model(text, fmt), False)
-        except KinematikaError:
-            self.inst = None
+        self.inst = numeric_instant(text, fmt)
 
     def number(self, raw: Any) -> Optional[float]:
         if isinstance(raw, bool):
@@ -160,7 +170,7 @@ class _Values:
             return float(raw)
         if self.inst is None or not isinstance(raw, str):
             return None
-        from ..model.expressions import ExpressionError, parse
+        from ..expressions import ExpressionError, parse
 
         try:
             return self.inst.num(self.inst.value(parse(raw), "value"))
