@@ -280,7 +280,8 @@ function explainSoon() {
 async function explain() {
   const k = state.row, lang = state.lang, gen = state.gen;
   const key = `${gen}|${lang}|${k}`;
-  if (state.explained === key || !state.solution) return;
+  if (state.explained === key || state.explaining === key || !state.solution) return;
+  state.explaining = key;            // one request a position (an explanation can take seconds)
   const move = k !== 0 && state.input && state.sweep ? { move: { [state.input.joint]: state.sweep.coordinate[k] } } : {};
   let html, where = whereText(k);
   try {
@@ -293,6 +294,7 @@ async function explain() {
       } catch (err2) { html = null; where = err2.message; }
     }
   }
+  if (state.explaining === key) state.explaining = null;
   if (gen !== state.gen || lang !== state.lang || k !== state.row) return;
   state.explained = key;
   state.explanation = html;
