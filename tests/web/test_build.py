@@ -17,8 +17,10 @@ import yaml
 pytestmark = pytest.mark.browser
 
 
-@pytest.fixture
-def page(browser, server):
+@pytest.fixture(scope="module")
+def shared_page(browser, server):
+    """One page for the module (a student goes on using it): each test starts from a blank
+    model or an example it opens itself."""
     context = browser.new_context(viewport={"width": 1400, "height": 1000})
     pg = context.new_page()
     pg.set_default_timeout(20000)
@@ -26,9 +28,23 @@ def page(browser, server):
     pg.on("pageerror", lambda e: errors.append(str(e)))
     pg.goto(server.url)
     settled(pg, 0)
-    yield pg
+    yield pg, errors
     context.close()
+
+
+@pytest.fixture
+def page(shared_page):
+    pg, errors = shared_page
+    pg.get_by_test_id("tool-select").click()
+    yield pg
     assert not errors, errors
+
+
+def example(pg, name: str) -> None:
+    """Open a bundled example, in English."""
+    if pg.get_by_test_id("ui-language").input_value() != "en":
+        step(pg, lambda: pg.get_by_test_id("ui-language").select_option("en"))
+    step(pg, lambda: pg.get_by_test_id("example").select_option(name))
 
 
 def settled(pg, gen: int) -> None:
@@ -241,6 +257,7 @@ def test_no_english_word_of_the_page_in_another_language(page, lang):
     english = _words(" ".join(page_strings("en")["messages"].values()))
     own = _words(" ".join(page_strings(lang)["messages"].values()))
     foreign = english - own - {"yaml", "toml", "json", "kennedy", "coriolis", "kinematika"}
+    example(page, "four_bar.yaml")
     gen = page.evaluate("window.kinematika.state.gen")
     page.get_by_test_id("ui-language").select_option(lang)
     settled(page, gen)
@@ -261,15 +278,17 @@ def test_no_english_word_of_the_page_in_another_language(page, lang):
     page.reload()
     settled(page, 0)
     assert page.get_by_test_id("ui-language").input_value() == lang       # remembered
-    # decimal commas where the explanations write them: ω of the rocker, −? ,?
+    # a decimal comma, as the explanations in es, ca, eu write numbers (the rocker's ω)
     omega = page.get_by_test_id("answers").locator('td[data-key="bodies.rocker.omega"]').inner_text()
     assert "," in omega and "." not in omega
+    step(page, lambda: page.get_by_test_id("ui-language").select_option("en"))
 
 
 def test_the_format_menu_converts_and_undo_goes_back(page):
     """The Format menu writes the same model in TOML (the same answers); Undo brings the
     YAML text back with its format, Redo the TOML again. After a model error the answers and
     the plot are greyed and said to be the last model's."""
+    example(page, "four_bar.yaml")
     editor = page.get_by_test_id("model-editor")
     yaml_text = editor.input_value()
     omega = answer(page, 2)
