@@ -4,7 +4,9 @@
 // data-i18n (text), data-i18n-title (tooltip), data-i18n-label (aria-label).
 import { setDecimal } from "./svg.js";
 
-export const LANGS = ["en", "es", "ca", "eu"];
+/** The languages the page offers: its language menu's (index.html, kept equal to
+ * kinematika.languages.LANGS by tests/web/test_static_lists.py). */
+export const LANGS = [...document.querySelectorAll("#ui-language option")].map((o) => o.value);
 const KEY = "kinematika.lang";
 let words = {};
 let lang = "en";
