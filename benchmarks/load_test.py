@@ -5,8 +5,8 @@
 
 It starts `kinematika app --no-browser` on a free port of 127.0.0.1 (a separate process,
 as an instructor would run it), then each simulated user repeats what the page does on a
-change of the model: `POST /api/solve`, `/api/draw` and `/api/sweep` (a full turn, as the
-page asks), on one of five linkages with its crank speed changed, then waits `--think`
+change of the model: `POST /api/solve`, `/api/draw`, `/api/sweep` (a full turn, as the
+page asks) and `/api/sketch` (the builder's places), on one of five linkages with its crank speed changed, then waits `--think`
 seconds (random ±50 %). The run is bounded in time (`--seconds`) and in requests
 (`--max-requests`), and stops by itself. It prints latency percentiles per endpoint, the
 throughput and every error (a run passes with none).
@@ -70,7 +70,7 @@ async def user(client: httpx.AsyncClient, texts: list[tuple[str, str | None]], s
         if param:
             body["set"] = {param: round(rnd.uniform(1, 20), 3)}
         for endpoint, extra in (("solve", {}), ("draw", {"centres": True}),
-                                ("sweep", {"skip_bad": True})):
+                                ("sweep", {"skip_bad": True}), ("sketch", {})):
             if time.monotonic() >= stop or budget[0] <= 0:
                 return
             budget[0] -= 1
@@ -132,7 +132,7 @@ def main() -> None:
     print(f"{args.users} users, {args.workers} server process(es), {elapsed:.0f} s, "
           f"think {args.think:g} s: {total} requests, "
           f"{total / elapsed:.1f} requests/s, {len(log.get('sweep', [])) / elapsed:.1f} "
-          f"model changes/s (solve + draw + sweep), {len(errors)} errors")
+          f"model changes/s (solve + draw + sweep + sketch), {len(errors)} errors")
     print(f"{'endpoint':<10}{'count':>7}{'p50 ms':>10}{'p90 ms':>10}{'p99 ms':>10}{'max ms':>10}")
     everything = [x for v in log.values() for x in v]
     for name, values in [*log.items(), ("all", everything)]:

@@ -55,6 +55,55 @@ def example(page, name: str) -> None:
     ready(page)
 
 
+def building(page) -> None:
+    """The offset slider-crank of tests/web/test_build.py built by hand from a blank model."""
+    sys.path.insert(0, str(ROOT))
+    from tests.web import test_build as tb
+
+    tb.blank(page)
+    tb.tool(page, "pivot", lambda: tb.click_at(page, (0, 0)))
+    tb.tool(page, "link", lambda: tb.click_point(page, "O1"), lambda: tb.click_at(page, (0.04, 0.02)))
+    tb.typed(page, "prop-length", "50 mm")
+    tb.typed(page, "prop-angle", "30")
+    tb.tool(page, "link", lambda: tb.click_point(page, "A"), lambda: tb.click_at(page, (0.18, 0.0)))
+    tb.typed(page, "prop-length", "150 mm")
+    page.screenshot(path=HERE / "build-links.png", clip={"x": 0, "y": 0, "width": 1440, "height": 800})
+    tb.tool(page, "slider", lambda: tb.click_point(page, "B"))
+    tb.typed(page, "prop-line-y", "-20 mm")
+    page.get_by_test_id("tool-select").click()
+    tb.selected(page, lambda: tb.click_body(page, "O1", "A"), "link1")
+    page.get_by_test_id("properties").get_by_test_id("input-omega").fill("10")
+    tb.step(page, lambda: page.get_by_test_id("set-input").click())
+    tb.selected(page, lambda: tb.click_point(page, "B"), "B")
+    tb.step(page, lambda: page.get_by_test_id("ask-velocity").click())
+    page.frame_locator("[data-testid=explanation]").locator("h1").first.wait_for(timeout=60000)
+    page.set_viewport_size({"width": 1440, "height": 1500})   # (a full-page shot leaves the frame blank)
+    page.wait_for_timeout(1200)
+    page.screenshot(path=HERE / "build-slider-crank.png")
+    page.set_viewport_size({"width": 1440, "height": 1000})
+
+
+def languages(page) -> None:
+    for lang in ("es", "ca", "eu"):
+        gen = page.evaluate("window.kinematika.state.gen")
+        page.get_by_test_id("ui-language").select_option(lang)
+        page.wait_for_function(f"() => window.kinematika.state.gen > {gen}")
+        ready(page)
+        page.wait_for_timeout(1500)
+        page.screenshot(path=HERE / f"four_bar.{lang}.png", clip={"x": 0, "y": 0, "width": 1440, "height": 1000})
+    page.get_by_test_id("ui-language").select_option("en")
+    ready(page)
+
+
+def phone_shot(browser, url: str) -> None:
+    phone = browser.new_page(viewport={"width": 390, "height": 844}, bypass_csp=True)
+    phone.goto(url)
+    ready(phone)
+    slide(phone, 125)
+    phone.screenshot(path=HERE / "phone.png", full_page=True)
+    phone.close()
+
+
 def main() -> None:
     proc, url = serve()
     try:
@@ -64,6 +113,13 @@ def main() -> None:
             page.goto(url)
             ready(page)
             page.screenshot(path=HERE / "four_bar.png")
+            languages(page)
+            building(page)
+            phone_shot(browser, url)
+            if "--only-new" in sys.argv:      # the building, the languages, the phone
+                return
+            page.goto(url)
+            ready(page)
             slide(page, 125)
             page.get_by_test_id("language").select_option("eu")
             page.set_viewport_size({"width": 1440, "height": 1620})
@@ -75,6 +131,7 @@ def main() -> None:
             page.get_by_test_id("error").wait_for(state="visible")
             page.wait_for_timeout(300)
             page.screenshot(path=HERE / "error.png", clip={"x": 0, "y": 0, "width": 1440, "height": 720})
+            page.get_by_test_id("ui-language").select_option("en")
             for name, k in (("quick_return.yaml", 60), ("planetary_gears.yaml", 0),
                             ("jansen_leg.yaml", 200), ("robot_arm_3d.yaml", 60),
                             ("spherical_four_bar.yaml", 24)):
@@ -83,11 +140,6 @@ def main() -> None:
                     slide(page, k)
                 page.screenshot(path=HERE / name.replace(".yaml", ".png"),
                                 clip={"x": 0, "y": 0, "width": 1440, "height": 1000})
-            phone = browser.new_page(viewport={"width": 390, "height": 844}, bypass_csp=True)
-            phone.goto(url)
-            ready(phone)
-            slide(phone, 125)
-            phone.screenshot(path=HERE / "phone.png")
             browser.close()
     finally:
         proc.terminate()

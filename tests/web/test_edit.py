@@ -97,3 +97,15 @@ def test_json_and_toml_texts_keep_their_format(client):
     toml = '[points]\nO = [0, 0]  # pivot\nA = [1, 0]\n[bodies]\nground = ["O"]\nbar = ["O", "A"]\n'
     assert edit(client, toml, "A", [0.5, 0.25], fmt="toml").json()["model"] == \
         toml.replace("A = [1, 0]", "A = [0.5, 0.25]")
+
+
+def test_a_coordinate_given_by_a_parameter_changes_the_parameter(client):
+    """`O4: [d, 0]` dragged to (4.5, 0.25): d becomes 4.5 (the parameter keeps its meaning,
+    and its comment), the literal 0 becomes 0.25."""
+    text = ("parameters:\n  d: 4   # ground link\npoints:\n  O2: [0, 0]\n  O4: [d, 0]\n"
+            "bodies:\n  ground: [O2, O4]\n")
+    moved = edit(client, text, "O4", [4.5, 0.25]).json()["model"]
+    assert moved == text.replace("d: 4 ", "d: 4.5 ").replace("[d, 0]", "[d, 0.25]")
+    formula = text.replace("[d, 0]", '["d/2", 0]')
+    answer = edit(client, formula, "O4", [1, 1])
+    assert answer.status_code == 400 and "formula" in answer.json()["error"]["message"]

@@ -11,6 +11,7 @@ PAGE = (Path(__file__).parents[2] / "src" / "kinematika" / "web" / "static" / "i
 
 
 def test_the_pages_languages_are_the_packages():
-    select = re.search(r'<select id="language".*?</select>', PAGE, re.DOTALL)
-    assert select is not None
-    assert tuple(re.findall(r'<option value="([a-z]+)"', select.group(0))) == LANGS
+    for pick in ("language", "ui-language"):        # the explanation's and the page's (one choice)
+        select = re.search(rf'<select id="{pick}".*?</select>', PAGE, re.DOTALL)
+        assert select is not None, pick
+        assert tuple(re.findall(r'<option value="([a-z]+)"', select.group(0))) == LANGS, pick

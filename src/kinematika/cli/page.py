@@ -90,11 +90,18 @@ def _url_host(host: str) -> str:
         return host
 
 
+# Seconds an idle connection is kept open (uvicorn's default is 5): a page (or the load
+# test's client) that posts on a connection the server is closing at that moment gets a
+# read error, and a browser does not retry a POST; a student who pauses 5 s between two
+# changes would meet it. 75 s, as common front servers keep them.
+KEEP_ALIVE = 75
+
+
 def _run(application, sock: socket.socket, url: str, browser: bool) -> None:
     import uvicorn
 
     config = uvicorn.Config(application, log_level="warning", access_log=False,
-                            timeout_graceful_shutdown=2)
+                            timeout_graceful_shutdown=2, timeout_keep_alive=KEEP_ALIVE)
     _announce(url, browser)
     with contextlib.suppress(KeyboardInterrupt):
         uvicorn.Server(config).run(sockets=[sock])
@@ -120,7 +127,7 @@ def _run_workers(start, hosts: Optional[list[str]], workers: int, sock: socket.s
     patience = patience if "timeout_worker_healthcheck" in inspect.signature(uvicorn.Config).parameters else {}
     config = uvicorn.Config("kinematika.web.server:from_environment", factory=True,
                             workers=workers, log_level="warning", access_log=False,
-                            timeout_graceful_shutdown=2, **patience)
+                            timeout_graceful_shutdown=2, timeout_keep_alive=KEEP_ALIVE, **patience)
     _announce(url, browser)
     older = "target" in inspect.signature(Multiprocess).parameters    # uvicorn before 0.36
     extra = {"target": uvicorn.Server(config).run} if older else {}

@@ -37,7 +37,7 @@ def move_point(text: str, fmt: str, point: str, to: tuple[float, float]) -> str:
     if node is None:
         raise KinematikaError("schema", f"no point {point!r} in the model", "points")
     if _is_pair(node):
-        edits = [(node.start_mark.index, _end(text, node), _pair(to))]
+        edits = _coordinate_edits(text, root, node, point, to)
     elif _is_mapping(node):
         edits = _construction_edits(text, fmt, root, node, point, np.array(to, dtype=float))
     else:
@@ -46,6 +46,39 @@ def move_point(text: str, fmt: str, point: str, to: tuple[float, float]) -> str:
     for start, end, new in sorted(edits, reverse=True):
         text = text[:start] + new + text[end:]
     return text
+
+
+def _coordinate_edits(text: str, root: Any, node: Any, point: str,
+                      to: tuple[float, float]) -> list[Edit]:
+    """A point given by coordinates: a number gets the new coordinate; a coordinate that
+    names a parameter (`O4: [d, 0]`) changes the parameter, so that what else uses it follows
+    and the parameter keeps its meaning. A formula is not replaced by a number: that point
+    is moved by its parameters (a `usage` error says so)."""
+    import yaml
+
+    params = _child(root, "parameters")
+    edits = Edits(text, root, node, 1.0, False)
+    for item, value in zip(node.value, to):
+        if not isinstance(item, yaml.ScalarNode):
+            raise KinematikaError("usage", f"{point} is not a planar point with two coordinates",
+                                  f"points.{point}")
+        raw = item.value.strip()
+        if params is not None and _child(params, raw) is not None:
+            edits.value_node(item, _short(value))
+        elif _is_number(raw):
+            edits.out.append((item.start_mark.index, _end(text, item), _short(value)))
+        else:
+            raise KinematikaError("usage", f"{point} is placed by the formula {raw!r}: change its "
+                                  "parameters to move it", f"points.{point}")
+    return edits.out
+
+
+def _is_number(raw: str) -> bool:
+    try:
+        float(raw)
+    except ValueError:
+        return False
+    return True
 
 
 # constructions -------------------------------------------------------------------------------

@@ -30,6 +30,9 @@ EXTRA = {
     "edit": ("point", "to"),
     "assemblies": (),
     "exercise": ("vary", "seed", "variant", "answers", "reveal"),     # web.exercise_api
+    "build": ("op",),
+    "sketch": (),
+    "convert": ("to",),
 }
 AS = {"sweep": ("json", "csv"), "draw": ("data", "svg", "png")}
 
@@ -108,6 +111,12 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         from .exercise_api import exercise_options
 
         out.update(exercise_options(body))
+    elif endpoint == "build":
+        if not isinstance(body.get("op"), dict):
+            raise KinematikaError("usage", "'op' is the action: an object with its key 'op'", "op")
+        out["op"] = body["op"]
+    elif endpoint == "convert":
+        out["to"] = _choice(body, "to", FORMATS, "yaml")
     elif endpoint == "edit":
         out["point"] = _text(body, "point")
         to = body.get("to")

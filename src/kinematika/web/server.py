@@ -28,7 +28,8 @@ from ..errors import KinematikaError
 from .. import limits
 from .requests import Request, parse_body
 
-ENDPOINTS = ("solve", "sweep", "centres", "explain", "draw", "edit", "assemblies", "exercise")
+ENDPOINTS = ("solve", "sweep", "centres", "explain", "draw", "edit", "assemblies", "exercise",
+             "build", "sketch", "convert")
 STATIC = resources.files("kinematika.web") / "static"
 EXAMPLES = resources.files("kinematika.web") / "examples"
 CSP = ("default-src 'self'; script-src 'self'; style-src 'self' 'unsafe-inline'; "
@@ -115,8 +116,44 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
             return Response(body, status_code=status, media_type=media, headers=SECURITY)
         return handle
 
+    async def palette(_: HttpRequest) -> Response:
+        from .palette import TOOLS
+
+        return JSONResponse({"tools": [t.public() for t in TOOLS]}, headers=SECURITY)
+
+    async def strings(request: HttpRequest) -> Response:
+        from .strings import page_strings
+
+        try:
+            return JSONResponse(page_strings(request.path_params["lang"]), headers=SECURITY)
+        except KinematikaError as err:
+            return _error(404, err.as_json())
+
+    async def template(request: HttpRequest) -> Response:
+        from .templates import NAMES, template
+
+        name = request.path_params["name"]
+        if name not in NAMES:
+            return _failure(Failure(404, "usage", f"no template {name!r}", "name"))
+        return JSONResponse({"model": template(name, request.query_params.get("lang", "en")),
+                             "format": "yaml", "name": name}, headers=SECURITY)
+
+    async def help_page(request: HttpRequest) -> Response:
+        from .help import page_html
+
+        try:
+            body = page_html(request.path_params.get("name", "model-format.md"))
+        except KinematikaError as err:
+            return _error(404, err.as_json())
+        if isinstance(body, bytes):
+            return Response(body, media_type="image/png", headers=SECURITY)
+        return Response(body, media_type="text/html; charset=utf-8", headers=SECURITY)
+
     routes = [Route("/", page), Route("/api/start", opening),
               Route("/api/examples/{name}", example),
+              Route("/api/palette", palette), Route("/api/strings/{lang}", strings),
+              Route("/api/templates/{name}", template),
+              Route("/help", help_page), Route("/docs/{name:path}", help_page),
               *[Route(f"/api/{e}", api(e), methods=["POST"]) for e in ENDPOINTS],
               Mount("/static", StaticFiles(directory=str(STATIC)), name="static")]
     middleware = [Middleware(TrustedHostMiddleware, allowed_hosts=hosts)] if hosts else []
@@ -292,6 +329,26 @@ def _edit(req: Request) -> tuple[str, str]:
     return JSON, json.dumps({"model": text})
 
 
+def _build(req: Request) -> tuple[str, str]:
+    from .build import apply
+
+    text, selected = apply(req.model, req.how.fmt or "yaml", req.get("op"), req.get("lang", "en"))
+    return JSON, json.dumps({"model": text, "select": selected})
+
+
+def _sketch(req: Request) -> tuple[str, str]:
+    from .build import sketch
+
+    return JSON, commands.json_text(sketch(req.model, req.how.fmt or "yaml"))
+
+
+def _convert(req: Request) -> tuple[str, str]:
+    from .document import convert
+
+    return JSON, json.dumps({"model": convert(req.model, req.how.fmt or "yaml", req.get("to")),
+                             "format": req.get("to")})
+
+
 def _assemblies(req: Request) -> tuple[str, str]:
     return JSON, commands.json_text(commands.assemblies_data(req.model, req.how))
 
@@ -303,4 +360,5 @@ def _exercise(req: Request) -> tuple[str, str]:
 
 
 COMPUTE = {"solve": _solve, "centres": _centres, "sweep": _sweep, "explain": _explain,
-           "draw": _draw, "edit": _edit, "assemblies": _assemblies, "exercise": _exercise}
+           "draw": _draw, "edit": _edit, "assemblies": _assemblies, "exercise": _exercise,
+           "build": _build, "sketch": _sketch, "convert": _convert}

@@ -5,24 +5,33 @@
 // model coordinates of what it draws (`…_xyz`) and the projection. Results that only
 // the scene holds (instant centres, Kennedy lines, curvature circles, relative vectors) are
 // shown at the position the scene was solved at.
-import { el, runsText, num, shown } from "./svg.js";
+import { el, runsText, num, shown, pair } from "./svg.js";
 
 const REACH = 0.6;      // drawing sizes around the mechanism within which results are framed (farther: at the edge)
 const MARGIN = 0.1;     // drawing sizes of margin around the framed content
 const KINDS = ["velocity", "acceleration"];
 
 export class Figure {
-  constructor(svg, legend, notes, onDrag) {
+  constructor(svg, legend, notes, onDrag, t = (id) => id) {
     this.svg = svg;
     this.legend = legend;
     this.notes = notes;
     this.onDrag = onDrag;
+    this.t = t;                  // the page's words (i18n.js)
+    this.onPick = null;          // the builder's: a click on a point, a body or a place
+    this.onView = null;          // called after the view changed (zoom, pan, a new frame)
     this.layers = { velocity: true, acceleration: true, centres: true, curvature: true, traces: true };
     this.scene = null;
     this.sweep = null;
     this.row = 0;
     this.sceneRow = 0;
-    new ResizeObserver(() => this.scene && this.paint()).observe(svg);
+    this.keep = null;            // a view kept (zoom, pan, a drag, building): [x0, y0, x1, y1]
+    this.drag = null;            // the point being dragged and where the pointer holds it
+    // the figure's own drawing goes in `content`; the builder draws above it in `overlayRoot`
+    this.content = el("g", { class: "content" }, svg);
+    this.buildRoot = el("g", { class: "build" }, svg);
+    new ResizeObserver(() => this.paint()).observe(svg);
+    this.pointer();
   }
 
   /** A new scene (solved at sweep row `sceneRow`), and the sweep it moves through (or null). */
@@ -53,18 +62,35 @@ export class Figure {
   stale(on) { this.svg.classList.toggle("stale", on); }
 
   // painting --------------------------------------------------------------------------
+  /** The box shown: the kept one, else the frame of the scene (or of `this.empty`). */
+  frameView() {
+    if (this.keep) return this.keep;
+    if (this.scene) return this.frameBox();
+    return this.empty || [-0.1, -0.1, 0.3, 0.2];
+  }
+
+  /** Set the SVG's viewBox to `box` widened to the element's aspect (so that a kept view
+   * maps the pointer the same way after every repaint). */
+  applyView(box) {
+    const w = this.svg.clientWidth || 800, h = this.svg.clientHeight || 440;
+    let [x0, y0, x1, y1] = box;
+    const px = Math.max((x1 - x0) / w, (y1 - y0) / h);
+    const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    [x0, x1, y0, y1] = [cx - (px * w) / 2, cx + (px * w) / 2, cy - (px * h) / 2, cy + (px * h) / 2];
+    this.view = [x0, y0, x1, y1];
+    this.px = px;                                              // model units per CSS pixel
+    this.svg.setAttribute("viewBox", `${x0} ${-y1} ${x1 - x0} ${y1 - y0}`);
+    this.svg.style.setProperty("--halo", String(3 * this.px));  // the white halo of labels
+  }
+
   paint() {
     const s = this.scene;
-    this.svg.replaceChildren();
-    this.size = s.size || 1;
-    this.view = this.frameBox();
-    const [x0, y0, x1, y1] = this.view;
-    this.svg.setAttribute("viewBox", `${x0} ${-y1} ${x1 - x0} ${y1 - y0}`);
-    const w = this.svg.clientWidth || 800, h = this.svg.clientHeight || 440;
-    this.px = Math.max((x1 - x0) / w, (y1 - y0) / h);       // model units per CSS pixel
-    this.svg.style.setProperty("--halo", String(3 * this.px));  // the white halo of labels
+    this.content.replaceChildren();
+    this.size = (s && s.size) || 1;
+    this.applyView(this.frameView());
+    if (!s) { this.legend.innerHTML = ""; this.onView?.(); return; }
     this.defs();
-    const g = (cls) => el("g", { class: cls }, this.svg);
+    const g = (cls) => el("g", { class: cls }, this.content);
     this.g = { ground: g("ground"), traces: g("traces"), bodies: g("bodies"), overlay: g("overlay"),
                vectors: g("vectors"), labels: g("labels"), handles: g("handles") };
     this.anchors = {};
@@ -79,12 +105,42 @@ export class Figure {
     this.overlayRow = this.sceneRow;
     this.paintOverlay();
     this.paintLegend();
-    this.notes.textContent = (s.notes || []).map((n) => shown(n, 2000)).join(" · ");
+    const numbering = (s.numbering || []).length
+      ? [this.t("bodies-numbered", { list: s.numbering.map(([n, b]) => `${n} ${shown(b)}`).join(", ") })] : [];
+    this.notes.textContent = [...numbering, ...(s.notes || []).map((n) => shown(n, 2000))].join(" · ");
     this.show(this.row);
+    this.onView?.();
   }
 
+  /** No scene (a model being built that cannot be solved yet): the figure frames `box`. */
+  clear(box) {
+    this.scene = null;
+    this.sweep = null;
+    this.empty = box;
+    this.paint();
+  }
+
+  // the view: zoom, pan, fit ---------------------------------------------------------------
+  zoom(factor, at = null) {
+    const [x0, y0, x1, y1] = this.view;
+    const [cx, cy] = at || [(x0 + x1) / 2, (y0 + y1) / 2];
+    this.keep = [cx + (x0 - cx) * factor, cy + (y0 - cy) * factor, cx + (x1 - cx) * factor, cy + (y1 - cy) * factor];
+    this.paint();
+  }
+
+  pan(dx, dy) {
+    const [x0, y0, x1, y1] = this.view;
+    this.keep = [x0 - dx, y0 - dy, x1 - dx, y1 - dy];
+    this.paint();
+  }
+
+  fit() { this.keep = null; this.paint(); }
+
+  /** Keep the view as it is (a drag or a building step must not move the grid under the hand). */
+  hold() { if (this.view) this.keep = [...this.view]; }
+
   defs() {
-    const d = el("defs", {}, this.svg);
+    const d = el("defs", {}, this.content);
     const step = 0.012 * this.size;
     const p = el("pattern", { id: "hatch", patternUnits: "userSpaceOnUse", width: step, height: step,
                               patternTransform: "rotate(45)" }, d);
@@ -374,8 +430,7 @@ export class Figure {
         let handle = null;                      // a 3D point is moved in the text (edit takes x, y)
         if (this.scene.dimension === 2) {
           handle = el("circle", { r: 9 * this.px, class: "draggable", "data-handle": p }, this.g.handles);
-          el("title", {}, handle).textContent = `${shown(p)}: drag to move it`;
-          this.draggable(handle, p);
+          el("title", {}, handle).textContent = this.t("handle-tip", { point: shown(p) });
         }
         this.pointLabels.push({ label, handle, name: p, body: name, frame: b.frame, xy });
       }
@@ -448,7 +503,7 @@ export class Figure {
     setSeg(a.line, origin, back);
     a.head.setAttribute("points", poly([tip, add(back, mul(n, hw)), add(back, mul(n, -hw))]));
     placeText(a.label, tip, mul(d, 6 * this.px), d);
-    a.value.textContent = num(magnitude) + (enlarged ? " (enlarged)" : "");
+    a.value.textContent = num(magnitude) + (enlarged ? ` (${this.t("enlarged")})` : "");
   }
 
   paintOverlay() {
@@ -482,7 +537,7 @@ export class Figure {
                                       add(p, add(mul(d, -r / 2), mul(n, -r * 0.8)))]), fill: colour }, mg);
       }
       const scale = Math.max(this.size, Math.hypot(...m.point));       // round-off as 0
-      const runs = inside ? m.label : [...m.label, { t: ` far off at (${num(m.point[0], scale)}, ${num(m.point[1], scale)})` }];
+      const runs = inside ? m.label : [...m.label, { t: ` ${this.t("far-off", { place: pair([num(m.point[0], scale), num(m.point[1], scale)]) })}` }];
       const t = runsText(mg, runs, { "font-size": 12 * this.px, fill: colour });
       const inward = unit(sub(this.centre(), p));
       if (inside) placeText(t, p, [7 * this.px, -7 * this.px], [1, -1]);
@@ -523,13 +578,14 @@ export class Figure {
   paintLegend() {
     const items = [];
     const kinds = new Set(this.scene.vectors.map((v) => v.kind));
-    if (kinds.has("velocity")) items.push(`<li><i style="background:var(--velocity)"></i>velocity</li>`);
-    if (kinds.has("acceleration")) items.push(`<li><i style="background:var(--acceleration)"></i>acceleration</li>`);
-    if (this.scene.marks.some((m) => m.kind === "icr")) items.push(`<li><i class="ring"></i>instant centre</li>`);
-    if (this.scene.kennedy.length) items.push(`<li><i class="dash"></i>Kennedy line</li>`);
-    if (this.scene.curvatures.length) items.push(`<li><i style="background:var(--curvature)"></i>curvature circle</li>`);
-    if (this.sweep) items.push(`<li><i style="background:#6d4c41;opacity:.5"></i>path over the motion</li>`);
-    if (this.scene.dimension === 2) items.push(`<li class="hint">drag a point to move it</li>`);
+    const t = this.t;
+    if (kinds.has("velocity")) items.push(`<li><i style="background:var(--velocity)"></i>${t("legend-velocity")}</li>`);
+    if (kinds.has("acceleration")) items.push(`<li><i style="background:var(--acceleration)"></i>${t("legend-acceleration")}</li>`);
+    if (this.scene.marks.some((m) => m.kind === "icr")) items.push(`<li><i class="ring"></i>${t("legend-centre")}</li>`);
+    if (this.scene.kennedy.length) items.push(`<li><i class="dash"></i>${t("legend-kennedy")}</li>`);
+    if (this.scene.curvatures.length) items.push(`<li><i style="background:var(--curvature)"></i>${t("legend-curvature")}</li>`);
+    if (this.sweep) items.push(`<li><i style="background:#6d4c41;opacity:.5"></i>${t("legend-path")}</li>`);
+    if (this.scene.dimension === 2) items.push(`<li class="hint">${t("legend-drag")}</li>`);
     this.legend.innerHTML = items.join("");
   }
 
@@ -566,6 +622,7 @@ export class Figure {
         const swept = sw.points[`${pl.name}@${pl.body}`];
         p = swept ? swept.position[k] : null;
       }
+      if (this.drag && this.drag.name === pl.name) p = this.drag.at;      // under the hand
       if (p) {
         placeText(pl.label, p, [5 * this.px, 5 * this.px]);
         pl.handle?.setAttribute("cx", p[0]);
@@ -575,6 +632,33 @@ export class Figure {
       pl.handle?.setAttribute("visibility", p ? "visible" : "hidden");
     }
     this.applyLayers();
+    this.unclutter();
+  }
+
+  /** Labels that would overlap are moved apart: the points' names stay; each arrow's,
+   * centre's and curvature's label after them is shifted up or down (by its height, at most
+   * twice) to the first place where it overlaps no label already placed. */
+  unclutter() {
+    if (!this.g) return;
+    const texts = [...this.pointLabels.map((pl) => pl.label),
+      ...this.svg.querySelectorAll(".content .vectors text, .content .overlay text")];
+    const placed = [];
+    for (const t of texts) {
+      t.removeAttribute("transform");
+      if (t.getAttribute("visibility") === "hidden" || !t.getClientRects().length) continue;
+      const b = t.getBBox();
+      if (!b.width) continue;
+      const fixed = this.pointLabels.some((pl) => pl.label === t);
+      let dy = 0;
+      if (!fixed) {
+        const gap = 0.15 * b.height;
+        const clash = (d) => placed.some((q) => b.x < q.x + q.width && q.x < b.x + b.width &&
+                                              b.y + d < q.y + q.height + gap && q.y < b.y + d + b.height + gap);
+        dy = [0, b.height, -b.height, 2 * b.height, -2 * b.height].find((d) => !clash(d)) ?? 0;
+        if (dy) t.setAttribute("transform", `translate(0 ${dy})`);
+      }
+      placed.push({ x: b.x, y: b.y + dy, width: b.width, height: b.height });
+    }
   }
 
   /** The 3D bodies at sweep row `k`: each tracked part turned in space by the body's
@@ -609,36 +693,96 @@ export class Figure {
     }
   }
 
-  // dragging ----------------------------------------------------------------------------
-  draggable(node, name) {
-    node.addEventListener("pointerdown", (e) => {
-      if (e.button !== 0) return;
+  // the pointer: dragging a point, picking for the builder, panning ---------------------------
+  /** One listener on the SVG element itself, which is never replaced: a drag holds the
+   * pointer (setPointerCapture on the SVG) through any number of repaints of its content. */
+  pointer() {
+    const svg = this.svg;
+    let act = null;
+    svg.addEventListener("pointerdown", (e) => {
+      if (e.button !== 0 && e.button !== 1) return;
+      // what is under the pointer, through arrows, labels and lines drawn over the bodies
+      const stack = document.elementsFromPoint(e.clientX, e.clientY).filter((n) => svg.contains(n));
+      const find = (sel) => stack.map((n) => n.closest(sel)).find(Boolean);
+      const handle = find("[data-handle]");
+      const body = find("[data-body], [data-build-body]");
+      const hit = handle ? { point: handle.dataset.handle }
+        : body ? { body: body.dataset.body || body.dataset.buildBody } : {};
+      const at = this.toModel(e, false);
+      if (e.button === 0 && this.onPick && this.onPick(hit, at, e)) { e.preventDefault(); return; }
       e.preventDefault();
-      node.setPointerCapture(e.pointerId);
-      this.svg.classList.add("dragging");
-      const move = (ev) => {
-        const p = this.toModel(ev);
-        node.setAttribute("transform", "");
-        node.setAttribute("cx", p[0]);
-        node.setAttribute("cy", -p[1]);
-        this.onDrag(name, p, false);
-      };
-      const up = (ev) => {
-        node.removeEventListener("pointermove", move);
-        node.removeEventListener("pointerup", up);
-        this.svg.classList.remove("dragging");
-        this.onDrag(name, this.toModel(ev), true);
-      };
-      node.addEventListener("pointermove", move);
-      node.addEventListener("pointerup", up);
-      this.onDrag(name, null, false);
+      svg.setPointerCapture(e.pointerId);
+      if (e.button === 0 && hit.point && this.canDrag(hit.point)) {
+        this.hold();
+        this.drag = { name: hit.point, at: this.toModel(e) };
+        act = { kind: "drag", id: e.pointerId, x: e.clientX, y: e.clientY, moved: false };
+      } else {
+        act = { kind: "pan", id: e.pointerId, x: e.clientX, y: e.clientY, moved: false };
+      }
     });
+    svg.addEventListener("pointermove", (e) => {
+      if (!act || e.pointerId !== act.id) return;
+      if (act.kind === "drag") {
+        if (!act.moved && Math.hypot(e.clientX - act.x, e.clientY - act.y) < 3) return;   // a click, not a drag
+        if (!act.moved) { act.moved = true; svg.classList.add("dragging"); this.onDrag(this.drag.name, null, false); }
+        this.drag.at = this.toModel(e);
+        this.placeDragged();
+        this.onDrag(this.drag.name, this.drag.at, false);
+      } else {
+        const dx = (e.clientX - act.x) * this.px, dy = (e.clientY - act.y) * this.px;
+        if (!act.moved && Math.hypot(e.clientX - act.x, e.clientY - act.y) < 4) return;
+        act.moved = true;
+        act.x = e.clientX; act.y = e.clientY;
+        this.pan(dx, -dy);
+      }
+    });
+    const end = (e) => {
+      if (!act || e.pointerId !== act.id) return;
+      const was = act;
+      act = null;
+      if (was.kind === "drag" && !was.moved) {
+        this.drag = null;
+      } else if (was.kind === "drag") {
+        const name = this.drag.name, at = this.toModel(e);
+        this.drag.at = at;
+        this.drag.done = true;
+        svg.classList.remove("dragging");
+        this.onDrag(name, at, true);
+      } else if (!was.moved && this.onPick) {
+        this.onPick({ empty: true }, this.toModel(e, false), e);
+      }
+    };
+    svg.addEventListener("pointerup", end);
+    svg.addEventListener("pointercancel", end);
+    svg.addEventListener("wheel", (e) => {
+      e.preventDefault();
+      this.zoom(e.deltaY > 0 ? 1.15 : 1 / 1.15, this.toModel(e, false));
+    }, { passive: false });
   }
 
+  /** A point can be dragged in a planar model (a 3D point is moved in its text). */
+  canDrag(name) { return !this.scene || this.scene.dimension === 2; }
+
+  /** The dragged point's handle, dot and label at the pointer (whatever was repainted). */
+  placeDragged() {
+    const d = this.drag;
+    if (!d) return;
+    const pl = (this.pointLabels || []).find((x) => x.name === d.name);
+    if (pl) {
+      pl.handle?.setAttribute("cx", d.at[0]);
+      pl.handle?.setAttribute("cy", -d.at[1]);
+      placeText(pl.label, d.at, [5 * this.px, 5 * this.px]);
+    }
+  }
+
+  /** The drag is over once its last edit has been solved and drawn. */
+  release() { if (this.drag && this.drag.done) this.drag = null; }
+
   /** The model point under a pointer event, rounded to a thousandth of the drawing. */
-  toModel(ev) {
+  toModel(ev, rounded = true) {
     const m = this.svg.getScreenCTM().inverse();
     const x = m.a * ev.clientX + m.c * ev.clientY + m.e, y = m.b * ev.clientX + m.d * ev.clientY + m.f;
+    if (!rounded) return [x, -y];
     const step = 10 ** Math.floor(Math.log10(this.size / 500));
     const round = (v) => Number((Math.round(v / step) * step).toFixed(Math.max(0, -Math.log10(step))));
     return [round(x), round(-y)];

@@ -8,21 +8,31 @@ import { Answers } from "./table.js";
 import { Plot } from "./plot.js";
 import { fragment, fromFragment } from "./link.js";
 import { num, shown } from "./svg.js";
+import { Builder } from "./builder.js";
+import * as i18n from "./i18n.js";
+
+const t = i18n.t;
 
 const $ = (id) => document.getElementById(id);
 const SETTLE_MS = 250;          // a slider at rest this long is solved exactly there
 const ROWS_PER_SECOND = 60;     // playing speed at 1×
 
-const state = { fmt: "yaml", name: "model", assembly: null, lang: "en", gen: 0, row: 0,
+const state = { fmt: "yaml", name: "model", assembly: null, lang: i18n.chosen(), gen: 0, row: 0,
                 solution: null, sweep: null, scene: null, input: null, explained: null };
 const timing = { updates: [] };
-window.kinematika = { state, timing };
 
-const editor = new Editor($("model-editor"), $("gutter"), $("error-line"), () => analyse());
-const figure = new Figure($("figure"), $("legend"), $("notes"), drag);
-const answers = new Answers($("answers"));
-const plot = new Plot($("plot"), $("plot-pick"));
+const editor = new Editor($("model-editor"), $("gutter"), $("error-line"), () => { remember(); analyse(); });
+const figure = new Figure($("figure"), $("legend"), $("notes"), drag, t);
+const answers = new Answers($("answers"), t);
+const plot = new Plot($("plot"), $("plot-pick"), t);
+const builder = new Builder(figure, $("palette"), $("properties-body"), $("build-hint"), t, build);
 const slider = $("input-slider");
+window.kinematika = { state, timing, figure, builder,
+  /** The page coordinates (CSS pixels) of a model point: for tests that click on the grid. */
+  toScreen: ([x, y]) => {
+    const m = $("figure").getScreenCTM();
+    return [m.a * x + m.c * -y + m.e, m.b * x + m.d * -y + m.f];
+  } };
 
 // the model -----------------------------------------------------------------------------
 function request(extra = {}) {
@@ -31,53 +41,86 @@ function request(extra = {}) {
   return body;
 }
 
-/** Solve, draw and sweep the model in the editor (stale answers are dropped). */
+/** Solve, draw and sweep the model in the editor (stale answers are dropped), and sketch
+ * it for the builder (where its points are, solvable or not yet). */
 async function analyse() {
   const gen = ++state.gen;
   $("busy").hidden = false;
-  const [solved, drawn, swept] = await Promise.allSettled([
-    post("solve", request()), post("draw", request({ centres: true })),
-    post("sweep", request({ skip_bad: true })),
+  const [solved, drawn, swept, sketched] = await Promise.allSettled([
+    post("solve", request()), post("draw", request({ centres: true, lang: state.lang })),
+    post("sweep", request({ skip_bad: true })), post("sketch", { model: editor.text, format: state.fmt }),
   ]);
   if (gen !== state.gen) return;
   $("busy").hidden = true;
+  const sketch = sketched.status === "fulfilled" ? sketched.value : null;
   if (solved.status === "rejected") {
-    showError(solved.reason);
-    figure.stale(true);
+    const blank = sketch && !Object.keys(sketch.points).length && !sketch.problem;
+    showError(blank ? null : solved.reason);
+    stale(true);
+    state.solution = null;
+    if (sketch) builder.sketch = sketch;
+    if (sketch && (blank || Object.keys(sketch.points).length)) {
+      state.scene = state.sweep = state.input = null;      // nothing of the last model is drawn again
+      figure.clear(figure.keep || builder.box() || [-0.1, -0.1, 0.3, 0.2]);
+      figure.stale(false);                      // the sketch is current: only the numbers are not
+      $("coordinate").textContent = "–";
+      $("model-name").textContent = shown(sketch.name || t("model"), 120);
+      $("plot-box").hidden = true;
+      slider.disabled = $("play").disabled = true;
+      $("notes").textContent = "";
+      if (blank) $("dof").textContent = t("dof", { n: "–" });
+    }
+    if (sketch) builder.update(sketch, false);
     return;
   }
   showError(null);
-  figure.stale(false);
+  stale(false);
   state.solution = solved.value;
   state.scene = drawn.status === "fulfilled" ? drawn.value : null;
   state.sweep = swept.status === "fulfilled" ? swept.value : null;
   state.input = state.scene && state.scene.input;
   state.sweepError = swept.status === "rejected" ? swept.reason.message : null;
   state.explained = null;
-  const name = shown(state.solution.name || "Model", 120);
+  const name = shown(state.solution.name || t("model"), 120);
   $("model-name").textContent = name;
   $("model-name").title = name;
   document.title = `${name} — kinematika`;
   const dof = $("dof");
-  dof.textContent = `DOF ${state.solution.dof}`;
+  dof.textContent = t("dof", { n: state.solution.dof });
   dof.classList.remove("bad");
   const frame = state.scene ? Object.keys(state.scene.bodies).find((b) => state.scene.bodies[b].frame) : "ground";
   const rows = state.sweep ? state.sweep.coordinate.length : 1;
   state.row = Math.min(state.row, rows - 1);
   if (state.row !== 0 && !state.sweep) state.row = 0;
+  if (sketch) builder.sketch = sketch;
   if (state.scene) figure.set(state.scene, state.sweep, 0);
-  answers.set(state.solution, state.sweep, frame);
+  else figure.clear(figure.keep || builder.box());
+  answers.set(state.solution, state.sweep, frame, state.scene);
   plot.set(state.sweep, state.input ? state.input.unit : "deg", frame);
   $("plot-box").hidden = !state.sweep;
   slider.max = String(rows - 1);
   slider.disabled = $("play").disabled = !state.sweep;
-  slider.title = state.sweepError ? `no motion to sweep: ${state.sweepError}` : "";
+  slider.title = state.sweepError ? t("no-sweep", { why: state.sweepError }) : "";
   setRow(state.row);
-  listAssemblies(gen);
+  if (sketch) builder.update(sketch, !!state.scene, state.solution.dimension);
+  if (!figure.drag) listAssemblies(gen);
   if (state.sweepError) {
-    $("notes").textContent = [$("notes").textContent, `the slider is off: ${state.sweepError}`].filter(Boolean).join(" · ");
+    $("notes").textContent = [$("notes").textContent, t("slider-off", { why: state.sweepError })].filter(Boolean).join(" · ");
   }
   explainSoon();
+}
+
+/** After an error, the numbers of the last model that solved are not current: greyed, and
+ * said so (the figure greyed too). */
+function stale(on) {
+  figure.stale(on);
+  $("answers").classList.toggle("stale", on);
+  $("answers-stale").hidden = !on || !state.solution;
+  $("plot-box").classList.toggle("stale", on);
+  if (on) {
+    $("answers-where").textContent = "";
+    plot.clearValues();
+  }
 }
 
 /** The assemblies of the mechanism at its drawn input (`kinematika assemblies`), to pick one. */
@@ -88,16 +131,23 @@ async function listAssemblies(gen) {
     found = (await post("assemblies", { model: editor.text, format: state.fmt })).assemblies;
   } catch (_) { /* none to offer: the model's own */ }
   if (gen !== state.gen) return;
-  const options = [`<option value="">as drawn</option>`];
+  const options = [`<option value="">${escapeHtml(t("assembly-as-drawn"))}</option>`];
   for (const a of found) {
     const how = a.closures.length ? `: ${a.closures.join("; ")}` : "";
-    options.push(`<option value="${a.number}">${a.number}${a.drawn ? " (drawn)" : ""}${escapeHtml(shown(how, 160))}</option>`);
+    options.push(`<option value="${a.number}">${a.number}${a.drawn ? ` (${escapeHtml(t("assembly-drawn"))})` : ""}${escapeHtml(shown(how, 160))}</option>`);
   }
   pick.innerHTML = options.join("");
   pick.value = state.assembly === null ? "" : String(state.assembly);
   pick.disabled = found.length < 2;
-  pick.title = found.length < 2 ? "this mechanism closes one way at its drawn input"
-                                : `${found.length} ways to close at the drawn input`;
+  state.assemblies = found.length;
+  assemblyTitle();
+}
+
+function assemblyTitle() {
+  const n = state.assemblies || 0;
+  $("assembly").title = n < 2 ? t("assembly-one") : t("assembly-many", { n });
+  const first = $("assembly").options[0];
+  if (first) first.textContent = t("assembly-as-drawn");
 }
 
 function escapeHtml(s) {
@@ -115,7 +165,7 @@ function showError(err) {
   box.hidden = false;
   box.innerHTML = "";
   const kind = document.createElement("b");
-  kind.textContent = err.kind || "error";
+  kind.textContent = t(`kind-${err.kind || "internal"}`);
   box.appendChild(kind);
   if (err.where) {
     const place = document.createElement("span");
@@ -128,22 +178,26 @@ function showError(err) {
   editor.markLine(errorLine(editor.text, err));
   const dof = $("dof");
   const said = /(\d+) degrees? of freedom/.exec(err.message || "");
-  dof.textContent = said ? `DOF ${said[1]}` : "DOF ?";
+  dof.textContent = t("dof", { n: said ? said[1] : "?" });
   dof.classList.add("bad");
 }
 
 function load(text, fmt, name) {
+  remember();
+  figure.keep = null;
+  builder.select(null);
   state.fmt = fmt || "yaml";
   state.name = (name || "model").replace(/\.(ya?ml|toml|json)$/, "");
   $("format").value = state.fmt;
   editor.text = text;
+  remember();
   state.row = 0;
   analyse();
 }
 
 // the slider ----------------------------------------------------------------------------
 function coordinateText(k) {
-  if (!state.sweep || !state.input) return "drawn position";
+  if (!state.sweep || !state.input) return t("drawn-position");
   const x = state.sweep.coordinate[k];
   return `${shown(state.input.joint, 40)} ${x >= 0 ? "+" : "−"}${num(Math.abs(x))}${state.input.unit === "deg" ? "°" : ""}`;
 }
@@ -157,11 +211,14 @@ function setRow(k) {
   answers.show(k);
   plot.cursor(k);
   $("coordinate").textContent = coordinateText(k);
-  const where = k === 0 ? "at the drawn position" : `at ${coordinateText(k)}`;
-  $("answers-where").textContent = where;
+  $("answers-where").textContent = whereText(k);
   timing.updates.push(performance.now() - t0);
   if (timing.updates.length > 500) timing.updates.shift();
   settleSoon();
+}
+
+function whereText(k) {
+  return k === 0 ? t("at-drawn") : t("at-coordinate", { where: coordinateText(k) });
 }
 
 let settleTimer = null;
@@ -174,6 +231,7 @@ function settleSoon() {
  * answer of that position; and explain it. */
 async function settle() {
   const k = state.row, gen = state.gen;
+  if (!state.solution) return;             // a model being built: nothing solved to show
   explainSoon();
   if (k === 0 || !state.sweep || !state.input) {
     if (state.scene) place(state.scene, 0);
@@ -215,25 +273,28 @@ function play() {
 let explainTimer = null;
 function explainSoon() {
   clearTimeout(explainTimer);
+  if (figure.drag) return;                 // explained when the drag is over (it draws: slow)
   explainTimer = setTimeout(explain, 60);
 }
 
 async function explain() {
   const k = state.row, lang = state.lang, gen = state.gen;
   const key = `${gen}|${lang}|${k}`;
-  if (state.explained === key || !state.solution) return;
+  if (state.explained === key || state.explaining === key || !state.solution) return;
+  state.explaining = key;            // one request a position (an explanation can take seconds)
   const move = k !== 0 && state.input && state.sweep ? { move: { [state.input.joint]: state.sweep.coordinate[k] } } : {};
-  let html, where = k === 0 ? "at the drawn position" : `at ${coordinateText(k)}`;
+  let html, where = whereText(k);
   try {
     html = await post("explain", request({ lang, ...move }), "text");
   } catch (err) {
     if (!move.move) { html = null; where = err.message; } else {
       try {
         html = await post("explain", request({ lang }), "text");
-        where = "at the drawn position (explaining another position needs `move`)";
+        where = t("at-drawn-only");
       } catch (err2) { html = null; where = err2.message; }
     }
   }
+  if (state.explaining === key) state.explaining = null;
   if (gen !== state.gen || lang !== state.lang || k !== state.row) return;
   state.explained = key;
   state.explanation = html;
@@ -242,28 +303,34 @@ async function explain() {
 }
 
 // dragging a point --------------------------------------------------------------------------
-let dragging = null;
+let dragWanted = null, dragBusy = false;
+
+/** A point dragged to `to`: its edits are made one at a time, each with the latest place
+ * the pointer has reached (places passed while an edit was on its way are skipped). */
 async function drag(name, to, final) {
   if (to === null) {                       // a drag starts: edits are made at the drawn position
     if (playing) play();
     if (state.row !== 0) setRow(0);
     return;
   }
-  dragging = { name, to, final };
-  if (dragging.busy) return;
-  while (dragging && !dragging.busy) {
-    const job = dragging;
-    job.busy = true;
+  dragWanted = { name, to, final };
+  if (dragBusy) return;
+  dragBusy = true;
+  while (dragWanted) {
+    const job = dragWanted;
+    dragWanted = null;
     try {
       const answer = await post("edit", { model: editor.text, format: state.fmt, point: job.name, to: job.to });
-      editor.text = answer.model;
+      setText(answer.model);
       await analyse();
     } catch (err) {
       toast(err.message);
       showError(err);
     }
-    if (dragging === job) dragging = null;
   }
+  dragBusy = false;
+  figure.release();
+  if (!figure.drag) { listAssemblies(state.gen); explainSoon(); }
 }
 
 // downloads and the link ----------------------------------------------------------------------
@@ -292,7 +359,7 @@ async function download(what) {
       if (!state.explanation) await explain();
       save(new Blob([state.explanation || ""], { type: "text/html" }), `${state.name}-${state.lang}.html`);
     }
-  } catch (err) { toast(`cannot download: ${err.message}`); }
+  } catch (err) { toast(t("cannot-download", { why: err.message })); }
 }
 
 async function copyLink() {
@@ -300,9 +367,9 @@ async function copyLink() {
   history.replaceState(null, "", url);
   try {
     await navigator.clipboard.writeText(url);
-    toast("link copied: it holds the model itself");
+    toast(t("link-copied"));
   } catch (_) {
-    toast("the link is in the address bar: copy it from there");
+    toast(t("link-in-bar"));
   }
 }
 
@@ -317,8 +384,17 @@ function toast(text) {
 // wiring ----------------------------------------------------------------------------------
 slider.addEventListener("input", () => { if (playing) play(); setRow(Number(slider.value)); });
 $("play").addEventListener("click", play);
-$("language").addEventListener("change", (e) => { state.lang = e.target.value; explainSoon(); });
-$("format").addEventListener("change", (e) => { state.fmt = e.target.value; analyse(); });
+for (const pick of document.querySelectorAll("[data-lang]")) {
+  pick.addEventListener("change", (e) => setLanguage(e.target.value));
+}
+$("format").addEventListener("change", (e) => convertTo(e.target.value));
+for (const b of document.querySelectorAll("[data-template]")) b.addEventListener("click", () => newModel(b.dataset.template));
+$("undo").addEventListener("click", () => undo(-1));
+$("redo").addEventListener("click", () => undo(1));
+$("zoom-in").addEventListener("click", () => figure.zoom(1 / 1.4));
+$("zoom-out").addEventListener("click", () => figure.zoom(1.4));
+$("fit").addEventListener("click", () => figure.fit());
+$("grid-on").addEventListener("change", (e) => { builder.showGrid = e.target.checked; builder.draw(); });
 $("assembly").addEventListener("change", (e) => { state.assembly = e.target.value === "" ? null : Number(e.target.value); analyse(); });
 $("example").addEventListener("change", async (e) => {
   if (!e.target.value) return;
@@ -328,14 +404,106 @@ $("example").addEventListener("change", async (e) => {
 });
 $("copy-link").addEventListener("click", copyLink);
 for (const b of document.querySelectorAll("[data-download]")) b.addEventListener("click", () => download(b.dataset.download));
-for (const c of document.querySelectorAll("[data-layer]")) c.addEventListener("change", () => figure.setLayer(c.dataset.layer, c.checked));
+for (const c of document.querySelectorAll("[data-layer]:not(#grid-on)")) c.addEventListener("change", () => figure.setLayer(c.dataset.layer, c.checked));
 document.addEventListener("keydown", (e) => {
-  if (e.target === $("model-editor") || !state.sweep) return;
-  if (e.key === " " && e.target === document.body) { e.preventDefault(); play(); }
+  const typing = e.target.closest?.("textarea, input, select");
+  if (typing) return;
+  if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === "z") { e.preventDefault(); undo(e.shiftKey ? 1 : -1); return; }
+  if ((e.key === "Delete" || e.key === "Backspace") && builder.selected) { e.preventDefault(); build({ op: "delete", element: builder.selected }); return; }
+  if (e.key === "Escape") { builder.choose("select"); return; }
+  if (e.key === " " && e.target === document.body && state.sweep) { e.preventDefault(); play(); }
 });
 
+// building, undo, formats, languages ------------------------------------------------------------
+const past = [], future = [];       // earlier and undone states: [text, format]
+let last = null;
+
+/** Keep the state before a change, for undo (typing is kept once per pause). */
+function remember() {
+  const now = [editor.text, state.fmt];
+  if (last !== null && (last[0] !== now[0] || last[1] !== now[1])) {
+    past.push(last);
+    if (past.length > 200) past.shift();
+    future.length = 0;
+  }
+  last = now;
+  $("undo").disabled = !past.length;
+  $("redo").disabled = !future.length;
+}
+
+function setText(text) {
+  editor.text = text;
+  remember();
+}
+
+function undo(way) {
+  const from = way < 0 ? past : future, to = way < 0 ? future : past;
+  if (!from.length) return;
+  to.push([editor.text, state.fmt]);
+  const [text, fmt] = from.pop();
+  editor.text = text;
+  state.fmt = fmt;
+  $("format").value = fmt;
+  last = [text, fmt];
+  $("undo").disabled = !past.length;
+  $("redo").disabled = !future.length;
+  figure.hold();
+  analyse();
+}
+
+/** A building action (/api/build): the server edits the text, the page solves it again. */
+async function build(op) {
+  try {
+    const answer = await post("build", { model: editor.text, format: state.fmt, lang: state.lang, op });
+    figure.hold();
+    remember();
+    setText(answer.model);
+    if (answer.select) builder.select(answer.select);
+    await analyse();
+  } catch (err) {
+    toast(err.message);
+  }
+}
+
+/** The Format menu: the same model written in another format (server-side). */
+async function convertTo(fmt) {
+  if (fmt === state.fmt) return;
+  try {
+    const answer = await post("convert", { model: editor.text, format: state.fmt, to: fmt });
+    state.fmt = fmt;
+    setText(answer.model);
+    analyse();
+  } catch (err) {
+    $("format").value = state.fmt;
+    toast(t("cannot-convert", { why: err.message }));
+  }
+}
+
+async function newModel(name) {
+  $("new-menu").open = false;
+  const tpl = await get(`/api/templates/${encodeURIComponent(name)}?lang=${state.lang}`);
+  $("example").value = "";
+  history.replaceState(null, "", location.pathname);
+  load(tpl.model, tpl.format, name === "blank" ? "model" : name);
+  if (name === "blank") figure.clear([-0.1, -0.1, 0.3, 0.2]);
+}
+
+/** One choice: the page's words, the explanation's language and the figure's numbers. */
+async function setLanguage(code) {
+  state.lang = code;
+  for (const pick of document.querySelectorAll("[data-lang]")) pick.value = code;
+  await i18n.use(code);
+  assemblyTitle();
+  builder.say();
+  builder.showProperties();
+  if (state.solution) analyse(); else explainSoon();
+}
+
 async function start() {
-  const opening = await get("/api/start");
+  const [opening, palette] = await Promise.all([get("/api/start"), get("/api/palette")]);
+  builder.setTools(palette.tools);
+  for (const pick of document.querySelectorAll("[data-lang]")) pick.value = state.lang;
+  await i18n.use(state.lang);
   for (const name of opening.examples) {
     const o = document.createElement("option");
     o.value = name;

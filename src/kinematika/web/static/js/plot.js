@@ -3,12 +3,13 @@
 // positions (where a body's ω changes sign: its angle is at an extreme) marked.
 import { el, num, shown } from "./svg.js";
 
-const PAD = { left: 58, right: 74, top: 8, bottom: 22 };
+const PAD = { left: 62, right: 74, top: 8, bottom: 34 };
 const COLOURS = ["#1f5fa8", "#c62828", "#2e7d32", "#7b1fa2", "#ef6c00", "#00838f"];
 
 export class Plot {
-  constructor(svg, pick) {
+  constructor(svg, pick, t = (id) => id) {
     this.svg = svg;
+    this.t = t;
     this.pick = pick;
     this.series = [];
     this.chosen = new Set();
@@ -28,14 +29,15 @@ export class Plot {
     const planar = !Array.isArray(sweep.bodies[moving[0]]?.omega.find((x) => x !== null));
     for (const b of moving) {
       const q = sweep.bodies[b];
+      const t = this.t, name = shown(b);
       if (planar) {
-        choices.push({ id: `${b}.angle`, label: `${b}: angle (°)`, values: q.angle, body: b });
-        choices.push({ id: `${b}.omega`, label: `${b}: ω (rad/s)`, values: q.omega });
-        choices.push({ id: `${b}.alpha`, label: `${b}: α (rad/s²)`, values: q.alpha });
+        choices.push({ id: `${b}.angle`, label: t("plot-rotation", { body: name }), unit: "°", values: q.angle, body: b });
+        choices.push({ id: `${b}.omega`, label: t("plot-omega", { body: name }), unit: "rad/s", values: q.omega });
+        choices.push({ id: `${b}.alpha`, label: t("plot-alpha", { body: name }), unit: "rad/s²", values: q.alpha });
       } else {
-        choices.push({ id: `${b}.angle`, label: `${b}: rotation (°)`, values: size(q.angle) });
-        choices.push({ id: `${b}.omega`, label: `${b}: |ω| (rad/s)`, values: size(q.omega) });
-        choices.push({ id: `${b}.alpha`, label: `${b}: |α| (rad/s²)`, values: size(q.alpha) });
+        choices.push({ id: `${b}.angle`, label: t("plot-rotation", { body: name }), unit: "°", values: size(q.angle) });
+        choices.push({ id: `${b}.omega`, label: t("plot-omega-size", { body: name }), unit: "rad/s", values: size(q.omega) });
+        choices.push({ id: `${b}.alpha`, label: t("plot-alpha-size", { body: name }), unit: "rad/s²", values: size(q.alpha) });
       }
     }
     const seen = new Set();
@@ -46,8 +48,8 @@ export class Plot {
       if (seen.has(sig)) continue;
       seen.add(sig);
       if (Math.max(...speed.filter((x) => x !== null), 0) === 0) continue;
-      choices.push({ id: `${key}.speed`, label: `${key}: |v|`, values: speed });
-      choices.push({ id: `${key}.accel`, label: `${key}: |a|`, values: v.acceleration.map((x) => (x ? Math.hypot(...x) : null)) });
+      choices.push({ id: `${key}.speed`, label: this.t("plot-speed", { point: shown(key) }), unit: "m/s", values: speed });
+      choices.push({ id: `${key}.accel`, label: this.t("plot-accel", { point: shown(key) }), unit: "m/s²", values: v.acceleration.map((x) => (x ? Math.hypot(...x) : null)) });
     }
     this.choices = choices;
     const ids = new Set(choices.map((c) => c.id));
@@ -56,7 +58,7 @@ export class Plot {
     for (const c of choices) {
       const b = document.createElement("button");
       b.type = "button";
-      b.textContent = shown(c.label);
+      b.textContent = `${c.label} (${c.unit})`;
       b.dataset.quantity = c.id;
       b.setAttribute("aria-pressed", String(this.chosen.has(c.id)));
       b.addEventListener("click", () => {
@@ -93,18 +95,30 @@ export class Plot {
       let d = "";
       c.values.forEach((v, k) => { if (v !== null) d += `${d && c.values[k - 1] !== null ? "L" : "M"}${X(xs[k]).toFixed(1)},${Y(v).toFixed(1)}`; });
       el("path", { d, fill: "none", stroke: colour, "stroke-width": 1.6 }, svg);
-      const tick = (v, y) => { const t = el("text", { x: PAD.left - 6, y, "text-anchor": "end", "font-size": 10, fill: "#5f6b73", "dominant-baseline": "middle" }, svg); t.textContent = num(v); };
-      tick(hi, top + 4); tick(lo, bottom - 4);
+      for (const v of ticks(lo, hi, Math.max(2, Math.floor((bottom - top) / 22)))) {      // the value axis
+        el("line", { x1: PAD.left - 4, x2: PAD.left, y1: Y(v), y2: Y(v), stroke: "#9aa5ad" }, svg);
+        el("line", { x1: PAD.left, x2: w - PAD.right, y1: Y(v), y2: Y(v), stroke: "#f0f2f4" }, svg);
+        const tk = el("text", { x: PAD.left - 6, y: Y(v), "text-anchor": "end", "font-size": 10, fill: "#5f6b73", "dominant-baseline": "middle" }, svg);
+        tk.textContent = num(v);
+      }
+      el("line", { x1: PAD.left, x2: PAD.left, y1: top, y2: bottom, stroke: "#9aa5ad" }, svg);
       const name = el("text", { x: PAD.left + 6, y: top + 10, "font-size": 11, fill: colour, "font-weight": 600 }, svg);
-      name.textContent = shown(c.label);
+      name.textContent = `${c.label} (${c.unit})`;
       if (c.body) this.limits(c, X, Y, svg);
       const dot = el("circle", { r: 3.5, fill: colour, stroke: "white", "stroke-width": 1 }, svg);
       const value = el("text", { x: w - PAD.right + 6, "font-size": 11, fill: colour, "dominant-baseline": "middle", "font-family": "monospace" }, svg);
       this.series.push({ c, X, Y, dot, value });
     });
     this.deadPoints(X, svg, h);
-    const axis = el("text", { x: (PAD.left + w - PAD.right) / 2, y: h - 5, "text-anchor": "middle", "font-size": 11, fill: "#5f6b73" }, svg);
-    axis.textContent = `input (${this.unit === "deg" ? "°" : "length"}): ${num(x0)} … ${num(x1)}`;
+    const base = h - PAD.bottom;
+    el("line", { x1: PAD.left, x2: w - PAD.right, y1: base, y2: base, stroke: "#9aa5ad" }, svg);
+    for (const x of ticks(x0, x1, Math.max(2, Math.floor((w - PAD.left - PAD.right) / 70)))) {   // the input axis
+      el("line", { x1: X(x), x2: X(x), y1: base, y2: base + 4, stroke: "#9aa5ad" }, svg);
+      const tk = el("text", { x: X(x), y: base + 14, "text-anchor": "middle", "font-size": 10, fill: "#5f6b73" }, svg);
+      tk.textContent = num(x);
+    }
+    const axis = el("text", { x: w - PAD.right + 4, y: base + 14, "font-size": 10.5, fill: "#5f6b73" }, svg);
+    axis.textContent = this.t("plot-input", { unit: this.unit === "deg" ? "°" : "m" });
     this.cursorLine = el("line", { y1: PAD.top, y2: h - PAD.bottom, stroke: "#263238", "stroke-width": 1 }, svg);
     this.X = X;
     this.cursor(this.row || 0);
@@ -121,7 +135,7 @@ export class Plot {
       const y = c.values[k - 1] + t * (c.values[k] - c.values[k - 1]);
       const m = el("g", { class: "limit" }, svg);
       el("circle", { cx: X(x), cy: Y(y), r: 4, fill: "white", stroke: "#263238", "stroke-width": 1.4 }, m);
-      el("title", {}, m).textContent = `limit position: ${shown(c.body)} at ${num(y)}° (input ${num(x)})`;
+      el("title", {}, m).textContent = this.t("limit-position", { body: shown(c.body), angle: num(y), input: num(x) });
     }
   }
 
@@ -134,8 +148,13 @@ export class Plot {
       const x = ok[k] ? xs[k] : xs[k - 1];
       el("line", { x1: X(x), x2: X(x), y1: PAD.top, y2: h - PAD.bottom, stroke: "#c62828", "stroke-dasharray": "4 3" }, svg);
       const t = el("text", { x: X(x) + 3, y: PAD.top + 10, "font-size": 10, fill: "#c62828" }, svg);
-      t.textContent = "dead point";
+      t.textContent = this.t("dead-point");
     }
+  }
+
+  /** After a model error: no value is shown as current. */
+  clearValues() {
+    for (const s of this.series || []) { s.value.textContent = ""; s.dot.setAttribute("visibility", "hidden"); }
   }
 
   cursor(k) {
@@ -151,6 +170,22 @@ export class Plot {
       s.value.textContent = num(v);
     }
   }
+}
+
+/** About `n` round values (1, 2 or 5 × 10^k apart) between lo and hi. */
+function ticks(lo, hi, n) {
+  const span = hi - lo;
+  if (!(span > 0) || !Number.isFinite(span)) return [];
+  const raw = span / n, k = 10 ** Math.floor(Math.log10(raw));
+  let step = [1, 2, 5, 10].map((m) => m * k).find((s) => s >= raw);
+  const at = (st) => {
+    const out = [];
+    for (let v = Math.ceil(lo / st) * st; v <= hi + st * 1e-9; v += st) out.push(Math.abs(v) < st * 1e-9 ? 0 : Number(v.toPrecision(12)));
+    return out;
+  };
+  let out = at(step);
+  while (out.length < 2 && step > span / 100) { step /= 2; out = at(step); }     // at least two ticks
+  return out;
 }
 
 /** What a plot shows first: the output (the last moving body)'s angle and ω when it turns;

@@ -44,6 +44,15 @@ export function runsText(parent, runs, attrs) {
   return text;
 }
 
+let DECIMAL = ".";          // the page's language's decimal mark (i18n.js sets it)
+
+/** Write numbers with `mark` as the decimal mark ("," in es, ca, eu, as the explanations do);
+ * the components of a vector are then separated by "; ". */
+export function setDecimal(mark) { DECIMAL = mark; }
+
+/** Components of a vector, as text: "(1.5, 2)" or "(1,5; 2)". */
+export function pair(values) { return "(" + values.join(DECIMAL === "," ? "; " : ", ") + ")"; }
+
 /** `x` with 4 significant digits, round-off below 1e-9 of `scale` as 0, no trailing zeros. */
 export function num(x, scale = 0) {
   if (x === null || x === undefined || Number.isNaN(x)) return "–";
@@ -55,7 +64,7 @@ export function num(x, scale = 0) {
     const [m, e] = s.split("e");
     s = trim(m) + "e" + e.replace("+", "");
   } else s = trim(s);
-  return s.replace("-", "−");
+  return s.replace("-", "−").replace(".", DECIMAL);
 }
 
 function trim(s) {
@@ -64,6 +73,6 @@ function trim(s) {
 
 /** A vector or a number, formatted. */
 export function show(v, scale = 0) {
-  if (Array.isArray(v)) return "(" + v.map((c) => num(c, scale)).join(", ") + ")";
+  if (Array.isArray(v)) return pair(v.map((c) => num(c, scale)));
   return num(v, scale);
 }

@@ -2,55 +2,67 @@
 // Absolute velocities, accelerations, ω and α follow the sweep's rows at once; the other
 // answers (centres, curvature, relative motion) are those of the last solve, greyed while
 // the slider is away from the position that solve was made at.
-import { show, shown } from "./svg.js";
+import { show, shown, num } from "./svg.js";
 
 const LONG = 22;      // characters: a longer value (a 3D vector, a formula, a decomposition) wraps in its cell
 const LIVE = { velocity: "points", acceleration: "points", omega: "bodies", alpha: "bodies" };
 
 export class Answers {
-  constructor(root) {
+  constructor(root, t = (id) => id) {
     this.root = root;
+    this.t = t;
     this.cells = [];
   }
 
-  /** Build the table for a solve (its JSON) and the sweep (JSON, or null). */
-  set(solution, sweep, frame = "ground") {
+  /** Build the table for a solve (its JSON) and the sweep (JSON, or null); the scene (or
+   * null) gives each body's points at the drawn position, for its textbook angle. */
+  set(solution, sweep, frame = "ground", scene = null) {
+    const t = this.t;
     this.solution = solution;
     this.frameName = frame;
     this.sweep = sweep;
     this.cells = [];
     const rows = [];
-    rows.push(section("Answers", "value"));
+    rows.push(section(t("answers"), t("value")));
     solution.answers.forEach((a, i) => {
       const kind = Object.keys(a.ask).find((k) => k !== "relative_to" && k !== "moving");
       const source = this.liveSource(kind, a.ask);
-      rows.push(`<tr><td class="q kind-${kind}">${question(a.ask)}</td>` +
-                `<td class="v" colspan="3" data-key="answers.${i}"></td></tr>`);
+      rows.push(`<tr><td class="q kind-${kind}">${question(a.ask, t)}</td>` +
+                `<td class="v" colspan="4" data-key="answers.${i}"></td></tr>`);
       this.cells.push({ key: `answers.${i}`, fixed: a.value, source });
     });
-    rows.push(section("Body", "angle (°)", "ω (rad/s)", "α (rad/s²)"));
+    rows.push(section(t("body"), t("angle-h"), t("rotation-h"), t("omega-h"), t("alpha-h")));
     for (const [name, b] of Object.entries(solution.bodies)) {
-      rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" data-key="bodies.${attr(name)}.angle"></td>` +
-                `<td class="v" data-key="bodies.${attr(name)}.omega"></td><td class="v" data-key="bodies.${attr(name)}.alpha"></td></tr>`);
+      const line = scene && referenceLine(scene.bodies[name]);
       const sw = sweep && sweep.bodies[name];
-      this.cells.push({ key: `bodies.${name}.angle`, fixed: sw ? sw.angle[0] : 0, source: sw && sw.angle });
+      const planar = typeof b.omega === "number" || typeof b.omega === "string";
+      const a = `bodies.${attr(name)}`;
+      const tip = line ? attr(t("angle-tip", { line: `${shown(line.from)}${shown(line.to)}` })) : "";
+      rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" data-key="${a}.angle" title="${tip}"></td>` +
+                `<td class="v" data-key="${a}.rotation" title="${attr(t("rotation-tip"))}"></td>` +
+                `<td class="v" data-key="${a}.omega"></td><td class="v" data-key="${a}.alpha"></td></tr>`);
+      const rotation = sw ? sw.angle : null;
+      const since = rotation && planar && rotation.map((x) => (x === null ? null : x - (rotation[0] ?? 0)));
+      const angle = line && planar ? (since ? since.map((x) => (x === null ? null : round(line.angle + x))) : null) : null;
+      this.cells.push({ key: `bodies.${name}.angle`, fixed: line && planar ? round(line.angle) : null, source: angle });
+      this.cells.push({ key: `bodies.${name}.rotation`, fixed: sw ? sw.angle[0] : 0, source: sw && sw.angle });
       this.cells.push({ key: `bodies.${name}.omega`, fixed: b.omega, source: sw && sw.omega });
       this.cells.push({ key: `bodies.${name}.alpha`, fixed: b.alpha, source: sw && sw.alpha });
     }
-    rows.push(section("Point", "position", "velocity", "acceleration"));
+    rows.push(section(t("point"), t("position-h"), t("velocity-h"), t("acceleration-h")));
     for (const [key, names] of groups(solution.points, sweep)) {
       const p = solution.points[key];
       const label = names.length > 1 ? `${esc(key.split("@")[0])} <span class="where">(${names.map((n) => esc(n.split("@")[1])).join(", ")})</span>` : esc(key);
       rows.push(`<tr><td class="q">${label}</td>` + ["position", "velocity", "acceleration"].map(
-        (q) => `<td class="v kind-${q}" data-key="points.${attr(key)}.${q}"></td>`).join("") + "</tr>");
+        (q) => `<td class="v kind-${q}" data-key="points.${attr(key)}.${q}"${q === "position" ? "" : ' colspan="2"'}></td>`).join("") + "</tr>");
       for (const q of ["position", "velocity", "acceleration"]) {
         this.cells.push({ key: `points.${key}.${q}`, fixed: p[q], source: sweep && sweep.points[key] && sweep.points[key][q] });
       }
     }
     if (solution.where) {            // named quantities of long exact formulas (x_E = …)
-      rows.push(section("Where", "formula"));
+      rows.push(section(t("where-h"), t("formula-h")));
       for (const [name, formula] of Object.entries(solution.where)) {
-        rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" colspan="3" data-key="where.${attr(name)}"></td></tr>`);
+        rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" colspan="4" data-key="where.${attr(name)}"></td></tr>`);
         this.cells.push({ key: `where.${name}`, fixed: formula, source: null });
       }
     }
@@ -86,19 +98,36 @@ export class Answers {
     for (const c of this.cells) {
       const live = c.source && c.source[k] !== undefined;
       const value = live ? c.source[k] : c.fixed;
-      const held = !live && (c.fixedRow ?? this.solvedRow) !== k;
-      const text = shown(format(value), Infinity);
+      const held = !live && value !== null && (c.fixedRow ?? this.solvedRow) !== k;   // "–" is never held
+      const text = shown(format(value, this.t), Infinity);
       c.td.textContent = text;
       c.td.classList.toggle("long", text.length > LONG);
       c.td.dataset.value = JSON.stringify(value);
       c.td.classList.toggle("held", held);
-      c.td.title = held ? "at the position last solved (move the slider's end there, or wait: it is solved again)" : "";
+      if (held) c.td.title = this.t("held-tip");
     }
   }
 }
 
 function section(...heads) {
-  return `<tr class="section">${heads.map((h, i) => `<td${i === 1 && heads.length === 2 ? ' colspan="3"' : ""}>${h}</td>`).join("")}</tr>`;
+  const span = (i) => (i === 1 && heads.length === 2 ? ' colspan="4"' : i > 1 && heads.length === 4 ? ' colspan="2"' : "");
+  return `<tr class="section">${heads.map((h, i) => `<td${span(i)}>${esc(h)}</td>`).join("")}</tr>`;
+}
+
+const round = (x) => Number(x.toFixed(9));
+
+/** A body's reference line: from its first point to the first other point drawn elsewhere
+ * (a link's O2 → A); its angle from the x axis, counter-clockwise, in (−180°, 180°]. */
+function referenceLine(body) {
+  if (!body || body.frame) return null;
+  const pts = Object.entries(body.points);
+  if (pts.length < 2 || pts[0][1].length !== 2) return null;
+  const [from, p] = pts[0];
+  const size = Math.max(...pts.map(([, q]) => Math.hypot(q[0] - p[0], q[1] - p[1])));
+  const other = pts.find(([, q]) => Math.hypot(q[0] - p[0], q[1] - p[1]) > 1e-9 * size);
+  if (!other) return null;
+  const q = other[1];
+  return { from, to: other[0], angle: (Math.atan2(q[1] - p[1], q[0] - p[0]) * 180) / Math.PI };
 }
 
 /** Material points that move alike over the whole sweep, shown once: [first key, keys]. */
@@ -116,22 +145,22 @@ function groups(points, sweep) {
   return out;
 }
 
-function question(ask) {
+function question(ask, t) {
   const kind = Object.keys(ask).find((k) => k !== "relative_to" && k !== "moving");
-  const rel = ask.relative_to ? ` <span class="where">relative to ${esc(ask.relative_to)}</span>` : "";
-  const moving = ask.moving ? ` <span class="where">in ${esc(ask.moving)}</span>` : "";
-  return `${kind} <b>${esc(String(ask[kind]))}</b>${rel}${moving}`;
+  const rel = ask.relative_to ? ` <span class="where">${esc(t("relative-to", { body: shown(ask.relative_to) }))}</span>` : "";
+  const moving = ask.moving ? ` <span class="where">${esc(t("in-body", { body: shown(ask.moving) }))}</span>` : "";
+  return `${esc(t(`q-${kind}`))} <b>${esc(String(ask[kind]))}</b>${rel}${moving}`;
 }
 
 /** An answer's value as text (vectors, centres, curvature, decompositions, ...). */
-export function format(v) {
+export function format(v, t = (id) => id) {
   if (v === null || v === undefined) return "–";
   if (typeof v !== "object" || Array.isArray(v)) return show(v);
-  if (v.rest) return "at rest (no relative motion)";
-  if ("radius" in v) return v.radius === null ? "straight path (infinite radius)" : `ρ = ${show(v.radius)}, centre ${show(v.center)}`;
-  if ("point" in v && "slide" in v) return `axis through ${show(v.point)} along ${show(v.direction)}, ω ${show(v.omega)}, slide ${show(v.slide)}`;
-  if ("point" in v) return v.point === null ? `at infinity, direction ${show(v.direction)}` : show(v.point);
-  return Object.entries(v).map(([k, x]) => `${k}: ${format(x)}`).join("; ");
+  if (v.rest) return t("at-rest");
+  if ("radius" in v) return v.radius === null ? t("straight-path") : t("curvature-value", { radius: show(v.radius), centre: show(v.center) });
+  if ("point" in v && "slide" in v) return t("axis-value", { point: show(v.point), direction: show(v.direction), omega: show(v.omega), slide: show(v.slide) });
+  if ("point" in v) return v.point === null ? t("at-infinity", { direction: show(v.direction) }) : show(v.point);
+  return Object.entries(v).map(([k, x]) => `${t(`part-${k}`)}: ${format(x, t)}`).join(" | ");
 }
 
 /** A name as text for the table's HTML: shown as one printable line, markup escaped. */
