@@ -46,7 +46,9 @@ POINT_OPS = 2000             # operations of a constructed point's exact coordin
 
 # the page's server (`kinematika app`) -----------------------------------------------------
 REQUEST_BYTES = FILE_BYTES   # a request's body (a model's text and a few options); 413 beyond
-REQUEST_SECONDS = 30.0       # a request's computation; 503 beyond (the work is bounded anyway)
+REQUEST_SECONDS = 600.0      # a request's computation, wall clock: a safety net only (503 beyond); the
+                             # work is bounded by counts (EXACT_WORK, PAGE_SWEEP_STEPS), so what is
+                             # answered does not depend on the server's load
 SERVER_THREADS = 4           # computations at once in a server process, off its event loop
 WAITING = 256                # requests waiting for a thread before the server answers 503 (busy)
 PAGE_SWEEP_STEPS = 20_000    # increments of a sweep asked through the API
