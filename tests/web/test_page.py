@@ -176,6 +176,21 @@ def test_errors_appear_as_you_type_at_their_place(page):
     assert page.get_by_test_id("dof").inner_text() == "DOF 1"
 
 
+def test_an_angle_in_radians_meant_as_degrees_is_answered_with_a_warning(page):
+    editor = page.get_by_test_id("model-editor")
+    good = editor.input_value()
+    editor.fill(good.replace("theta2: deg(90)", "theta2: 90"))
+    warning = page.get_by_test_id("warnings")
+    warning.wait_for(state="visible")
+    assert "points.A.angle" in warning.inner_text() and "deg(90)" in warning.inner_text()
+    # answered as written: A at 90 rad on the crank circle, its speed a·ω = 10 across O2A
+    t = 90.0
+    assert cell(page, "points.A@crank.position") == pytest.approx([math.cos(t), math.sin(t)], abs=1e-9)
+    assert cell(page, "points.A@crank.velocity") == pytest.approx([-10 * math.sin(t), 10 * math.cos(t)], abs=1e-9)
+    editor.fill(good)
+    warning.wait_for(state="hidden")
+
+
 def test_dragging_a_point_changes_the_text(page):
     set_row(page, 0)
     dot = page.locator('[data-testid=figure] [data-handle="A"]')

@@ -52,12 +52,13 @@ class Mark:
     gid: str = ""
     avoid: float = 1.0
     radius: float = 0.0
+    still: bool = False                 # true of a still figure only (not moved with any body)
 
     def as_json(self) -> dict:
         """The mark as the page receives it."""
         return {"kind": self.kind, "points": self.points.tolist(), "colour": self.colour, "fill": self.fill,
                 "width": self.width, "size": self.size, "hatch": self.hatch, "dash": self.dash,
-                "zorder": self.zorder, "body": self.moves_with, "id": self.gid}
+                "zorder": self.zorder, "body": self.moves_with, "id": self.gid, "still": self.still}
 
 
 # shapes of symbols -------------------------------------------------------------------------
@@ -188,4 +189,4 @@ def contact_dot(view: Any, ctx: Any) -> list[Mark]:
     if view.contact is None or not ctx.still:
         return []
     return [Mark("dot", np.asarray(view.contact, dtype=float)[None, :], "ink", "ink", 0, 3.5, zorder=6,
-                 gid=f"joint:{view.id}")]
+                 gid=f"joint:{view.id}", still=True)]

@@ -199,3 +199,4 @@ kind-assembly = muntatge
 kind-usage = ús
 kind-limit = límit
 kind-internal = intern
+warning = avís

@@ -199,3 +199,4 @@ kind-assembly = assembly
 kind-usage = usage
 kind-limit = limit
 kind-internal = internal
+warning = warning

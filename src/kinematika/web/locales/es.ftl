@@ -199,3 +199,4 @@ kind-assembly = montaje
 kind-usage = uso
 kind-limit = límite
 kind-internal = interno
+warning = aviso

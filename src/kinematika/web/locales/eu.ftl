@@ -199,3 +199,4 @@ kind-assembly = muntaia
 kind-usage = erabilera
 kind-limit = muga
 kind-internal = barnekoa
+warning = abisua

@@ -91,10 +91,11 @@ export class Figure {
     if (!s) { this.legend.innerHTML = ""; this.onView?.(); return; }
     this.defs();
     const g = (cls) => el("g", { class: cls }, this.content);
-    this.g = { ground: g("ground"), traces: g("traces"), bodies: g("bodies"), overlay: g("overlay"),
+    this.g = { ground: g("ground"), traces: g("traces"), bodies: g("bodies"), pins: g("pins"), overlay: g("overlay"),
                vectors: g("vectors"), labels: g("labels"), handles: g("handles") };
     this.anchors = {};
     this.bodyGroups = {};
+    this.topGroups = {};        // a body's pins and rollers, above every body's outline
     this.tracked = [];          // 3D: elements placed from model coordinates at every row
     this.paintTraces();
     this.paintBodies();
@@ -176,13 +177,19 @@ export class Figure {
     return [x0 - m, y0 - m, x1 + m, y1 + m];
   }
 
-  bodyGroup(name) {
-    if (!name || this.scene.bodies[name].frame) return this.g.ground;
-    if (!this.bodyGroups[name]) {
-      this.bodyGroups[name] = el("g", { class: "body", "data-body": name }, this.g.bodies);
+  /** The group of body `name` (the frame's: the ground layer); `top`: its group in the
+   * layer above all bodies (pins, rollers), moved with it. */
+  bodyGroup(name, top = false) {
+    const groups = top ? this.topGroups : this.bodyGroups;
+    if (!name || this.scene.bodies[name].frame) return top ? this.g.pins : this.g.ground;
+    if (!groups[name]) {
+      groups[name] = el("g", { class: top ? "body-pins" : "body", "data-body": name }, top ? this.g.pins : this.g.bodies);
     }
-    return this.bodyGroups[name];
+    return groups[name];
   }
+
+  /** Body `name`'s groups: its outline's and its pins'. */
+  groupsOf(name) { return [this.bodyGroups[name], this.topGroups[name]].filter(Boolean); }
 
   paintBodies() {
     const s = this.scene;
@@ -329,88 +336,41 @@ export class Figure {
 
   frame() { return Object.keys(this.scene.bodies).find((n) => this.scene.bodies[n].frame); }
 
-  mover(j) {
-    const f = this.frame();
-    if (j.b !== f) return j.b;
-    return j.a !== f ? j.a : null;
-  }
-
+  /** Every joint's symbol as its kind draws it (the scene's `symbols`: polygons, lines and
+   * dots, `kinematika.joints.symbols`), each in the body it moves with, lowest first; the
+   * marks of a still figure only (a contact point) are left out while a motion is shown. */
   paintJoints() {
-    const st = this.scene.style, f = this.frame();
-    for (const j of this.scene.joints) {
-      if ((j.type === "revolute" || j.type === "spherical") && j.at) {
-        if (j.a === f || j.b === f) this.support(j.at);
-        this.track(this.pin(this.bodyGroup(this.mover(j)), j.at, j.id), this.mover(j), "circle", j.at_xyz);
-      } else if (j.type === "prismatic" || j.type === "cylindrical") {
-        const along = j.along || (j.axis && unit(j.axis));
-        const centre = j.at || this.sliderCentre(j);
-        if (!along || !centre) continue;
-        const [len, hgt] = st.block.map((x) => x * this.size);
-        this.guide(j.a, centre, along, hgt);
-        const colour = j.b !== f ? this.scene.bodies[j.b].colour : st.ground;
-        el("polygon", { points: poly(rectangle(centre, along, len, hgt)), fill: colour, stroke: st.ink,
-                        "stroke-width": 1.3, "data-joint": j.id }, this.bodyGroup(j.b !== f ? this.mover(j) : null));
-      } else if (j.type === "slot" && j.at && j.along) {
-        const half = (st.slot_width * this.size) / 2;
-        let p, q;
-        if (j.span) {
-          const d = unit(sub(j.span[1], j.span[0]));
-          p = add(j.span[0], mul(d, -2 * half)); q = add(j.span[1], mul(d, 2 * half));
-          const ts = [0, dot(sub(q, p), d), dot(sub(j.at, p), d)];
-          const lo = Math.min(...ts), hi = Math.max(...ts);
-          if (lo < 0 || hi > ts[1]) { const p0 = p; p = add(p0, mul(d, lo - 2 * half)); q = add(p0, mul(d, hi + 2 * half)); }
-        } else {
-          p = add(j.at, mul(j.along, -0.15 * this.size)); q = add(j.at, mul(j.along, 0.15 * this.size));
-        }
-        const colour = j.a === f ? st.ground : this.scene.bodies[j.a].colour;
-        el("polygon", { points: poly(stadium(p, q, half)), fill: "white", stroke: colour, "stroke-width": 2 },
-           this.bodyGroup(j.a === f ? null : j.a));
-        this.pin(this.bodyGroup(j.b === f ? null : j.b), j.at, j.id);
-      } else if (j.type === "wheel" && j.at && j.along) {
-        el("polygon", { points: poly(rectangle(j.at, j.along, 0.1 * this.size, 0.03 * this.size)), fill: st.ink },
-           this.bodyGroup(this.mover(j)));
-      }
+    const marks = [...(this.scene.symbols || [])].sort((m, n) => m.zorder - n.zorder);
+    for (const m of marks) {
+      if (m.still && this.sweep) continue;
+      const node = this.mark(m, this.bodyGroup(m.body, m.zorder >= 5));
+      const joint = m.id.startsWith("joint:") && this.scene.joints.find((j) => `joint:${j.id}` === m.id);
+      if (m.kind === "dot" && joint) this.track(node, m.body, "circle", joint.at_xyz);
     }
   }
 
-  pin(g, p, id) {
-    return el("circle", { cx: p[0], cy: -p[1], r: 4.2 * this.px, fill: "white", stroke: this.scene.style.ink,
-                   "stroke-width": 1.6, "data-joint": id, class: "pin" }, g);
+  /** A colour role of a mark (ink, ground, white, none, body:NAME) as a colour. */
+  role(name) {
+    const st = this.scene.style;
+    if (name.startsWith("body:")) return this.scene.bodies[name.slice(5)].colour;
+    return { ink: st.ink, ground: st.ground, white: "white", none: "none" }[name] || name;
   }
 
-  support(p) {
-    const st = this.scene.style, h = st.support * this.size, g = this.g.ground;
-    const d = sub(p, this.movingCentroid());
-    const down = d[1] > 0.3 * Math.hypot(...d) && d[1] > 1e-9 ? [0, 1] : [0, -1];
-    const base = add(p, mul(down, h));
-    const side = [1, 0];
-    el("polygon", { points: poly([p, add(base, mul(side, -0.75 * h)), add(base, mul(side, 0.75 * h))]),
-                    fill: "#e0e0e0", stroke: st.ground, "stroke-width": 1.3 }, g);
-    this.hatchedEdge(g, add(base, mul(side, -h)), add(base, mul(side, h)), down, 0.55 * h);
-  }
-
-  sliderCentre(j) {
-    for (const name of [j.b, j.a]) {
-      const pts = Object.values(this.scene.bodies[name].points);
-      if (pts.length && name !== this.frame()) return mul(pts.reduce(add, [0, 0]), 1 / pts.length);
+  /** One mark: a dot (its size in points), a line or a polygon (hatched: the frame's material). */
+  mark(m, g) {
+    const stroke = this.role(m.colour), fill = this.role(m.fill), id = m.id.startsWith("joint:") ? m.id.slice(6) : null;
+    if (m.kind === "dot") {
+      const [p] = m.points;
+      return el("circle", { cx: p[0], cy: -p[1], r: (m.size / 2 + m.width / 2) * 1.1 * this.px, fill,
+                            stroke: m.width ? stroke : "none", "stroke-width": m.width, "data-joint": id,
+                            class: m.size >= 5 ? "pin" : null }, g);
     }
-    return null;
-  }
-
-  guide(body, centre, along, height) {
-    if (body === this.frame()) {
-      let n = [-along[1], along[0]];
-      if (dot(n, sub(centre, this.movingCentroid())) <= 1e-12 * this.size) n = mul(n, -1);
-      const c = add(centre, mul(n, height / 2)), far = 10 * this.size;
-      this.hatchedEdge(this.g.ground, add(c, mul(along, -far)), add(c, mul(along, far)), n,
-                       this.scene.style.hatch_band * this.size);
-      return;
+    if (m.kind === "line") {
+      return el("polyline", { points: poly(m.points), fill: "none", stroke, "stroke-width": m.width,
+                              "stroke-dasharray": m.dash ? "10 3 2 3" : null, "data-joint": id }, g);
     }
-    const b = this.scene.bodies[body];
-    const ts = [...Object.values(b.points), centre].map((p) => dot(sub(p, centre), along));
-    const m = 0.12 * this.size;
-    el("line", { ...seg(add(centre, mul(along, Math.min(...ts) - m)), add(centre, mul(along, Math.max(...ts) + m))),
-                 stroke: b.colour, "stroke-width": 3 }, this.bodyGroup(body));
+    return el("polygon", { points: poly(m.points), fill: m.hatch ? "url(#hatch)" : fill,
+                           stroke: m.hatch || !m.width ? "none" : stroke, "stroke-width": m.width, "data-joint": id }, g);
   }
 
   /** A dot at every point (draggable at the position the scene was solved at) and its name. */
@@ -599,15 +559,17 @@ export class Figure {
       const ok = sw.coordinate[k] !== undefined && Object.values(sw.bodies)[0]?.angle[k] !== null;
       this.svg.classList.toggle("unassembled", !ok);
       if (this.P) this.move3(k);
-      else for (const [name, g] of Object.entries(this.bodyGroups)) {
+      else for (const name of Object.keys(this.bodyGroups)) {
         const anchor = this.anchors[name];
         if (!anchor) continue;
         const p0 = this.scene.bodies[name].points[anchor];
         const pk = sw.points[`${anchor}@${name}`].position[k];
         const a0 = sw.bodies[name].angle[this.sceneRow], ak = sw.bodies[name].angle[k];
-        visible(g, pk && ak !== null && a0 !== null);
-        if (!pk || ak === null || a0 === null) continue;
-        g.setAttribute("transform", `translate(${pk[0]} ${-pk[1]}) rotate(${-(ak - a0)}) translate(${-p0[0]} ${p0[1]})`);
+        const here = pk && ak !== null && a0 !== null;
+        for (const x of this.groupsOf(name)) visible(x, here);
+        if (!here) continue;
+        const placed = `translate(${pk[0]} ${-pk[1]}) rotate(${-(ak - a0)}) translate(${-p0[0]} ${p0[1]})`;
+        for (const x of this.groupsOf(name)) x.setAttribute("transform", placed);
       }
       for (const a of this.arrows) {
         if (!a.swept) continue;
@@ -666,12 +628,12 @@ export class Figure {
    * point carried to its swept place, and projected on the page. */
   move3(k) {
     const placed = {}, P = this.P, s = this.sceneRow;
-    for (const [name, g] of Object.entries(this.bodyGroups)) {
+    for (const name of Object.keys(this.bodyGroups)) {
       const anchor = this.anchors[name];
       if (!anchor) continue;
       const a = this.raw.points[`${anchor}@${name}`].position, turn = this.raw.bodies[name].angle;
       const ok = a[s] && a[k] && turn[s] && turn[k];
-      visible(g, ok);
+      for (const x of this.groupsOf(name)) visible(x, ok);
       if (!ok) continue;
       const R = times(rotation(turn[k]), transpose(rotation(turn[s])));
       const A = times(P, R);                                    // 2 × 3: space to page
@@ -875,18 +837,4 @@ function area(h) {
   let s = 0;
   for (let i = 0; i < h.length; i++) { const p = h[i], q = h[(i + 1) % h.length]; s += p[0] * q[1] - q[0] * p[1]; }
   return Math.abs(s) / 2;
-}
-
-function rectangle(c, along, length, height) {
-  const d = unit(along), n = [-d[1], d[0]], l = length / 2, h = height / 2;
-  return [add(add(c, mul(d, -l)), mul(n, -h)), add(add(c, mul(d, l)), mul(n, -h)),
-          add(add(c, mul(d, l)), mul(n, h)), add(add(c, mul(d, -l)), mul(n, h))];
-}
-
-function stadium(p, q, half) {
-  const d = unit(sub(q, p)), n = [-d[1], d[0]], out = [];
-  const a0 = Math.atan2(n[1], n[0]);
-  for (let i = 0; i <= 12; i++) { const t = a0 + (Math.PI * i) / 12; out.push(add(p, [half * Math.cos(t), half * Math.sin(t)])); }
-  for (let i = 0; i <= 12; i++) { const t = a0 + Math.PI + (Math.PI * i) / 12; out.push(add(q, [half * Math.cos(t), half * Math.sin(t)])); }
-  return out;
 }

@@ -56,6 +56,7 @@ async function analyse() {
   if (solved.status === "rejected") {
     const blank = sketch && !Object.keys(sketch.points).length && !sketch.problem;
     showError(blank ? null : solved.reason);
+    showWarnings([]);
     stale(true);
     state.solution = null;
     if (sketch) builder.sketch = sketch;
@@ -76,6 +77,7 @@ async function analyse() {
   showError(null);
   stale(false);
   state.solution = solved.value;
+  showWarnings(state.solution.warnings || []);
   state.scene = drawn.status === "fulfilled" ? drawn.value : null;
   state.sweep = swept.status === "fulfilled" ? swept.value : null;
   state.input = state.scene && state.scene.input;
@@ -152,6 +154,27 @@ function assemblyTitle() {
 
 function escapeHtml(s) {
   return String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" })[c]);
+}
+
+/** The input answered as written that is most likely a mistake (the answer's `warnings`:
+ * an angle of 30 rad where 30° was meant), one line each with its place. */
+function showWarnings(list) {
+  const box = $("warnings");
+  box.hidden = !list.length;
+  box.replaceChildren(...list.map((w) => {
+    const line = document.createElement("p");
+    const kind = document.createElement("b");
+    kind.textContent = t("warning");
+    line.appendChild(kind);
+    if (w.where) {
+      const place = document.createElement("span");
+      place.className = "place";
+      place.textContent = `${w.where}: `;
+      line.appendChild(place);
+    }
+    line.appendChild(document.createTextNode(w.message));
+    return line;
+  }));
 }
 
 function showError(err) {
