@@ -11,7 +11,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon
 
 from ..joints import kind as joint_kind
-from ..joints.symbols import Mark
+from ..joints.symbols import Mark, ring
 from .canvas import Canvas, moving_centroid
 from .geometry import Box, clip_line
 from .scene import Scene
@@ -35,6 +35,21 @@ class SymbolContext:
     def points(self, body: str) -> list:
         """The page positions of `body`'s points."""
         return list(self.scene.bodies[body].points.values())
+
+    def keep_out(self) -> list[np.ndarray]:
+        """Closed outlines ((n, 2) polygons) a fixed guide stops short of: each moving body's
+        circles and closed curves (a cam's profile; not its pitch curve, which a roller's
+        centre is on)."""
+        out = []
+        for body in self.scene.bodies.values():
+            if body.name == self.frame:
+                continue
+            for sh in body.shapes:
+                if sh.kind == "circle" and not sh.ring:
+                    out.append(ring(np.asarray(sh.center, dtype=float), float(sh.radius)))
+                elif sh.kind == "curve" and sh.closed and sh.role != "pitch" and sh.vertices is not None:
+                    out.append(np.asarray(sh.vertices, dtype=float))
+        return out
 
     def clip(self, p: np.ndarray, d: np.ndarray, inset: float) -> Optional[tuple]:
         """The part of the line through `p` along `d` inside the view shrunk by `inset`, or

@@ -12,7 +12,8 @@ The context a symbol is drawn in (duck-typed, given by the figure): `size` (the 
 size), `frame` (the fixed body), `still` (a still figure, not an animation's frame),
 `centroid()` (of the moving bodies' points: "away from the mechanism"), `points(body)`
 (its points on the page), `clip(p, d, inset)` (the part of the line through p along d inside
-the view, less `inset`, or None).
+the view, less `inset`, or None), `keep_out()` (closed outlines that fixed guides stop short
+of: the moving bodies' wheels and cams).
 """
 from __future__ import annotations
 
@@ -176,12 +177,39 @@ def guide(body: str, centre: Vec, along: Vec, height: float, ctx: Any) -> list[M
         n = perpendicular(along)
         side = n if float(n @ (centre - ctx.centroid())) > 1e-12 * ctx.size else -n
         seg = ctx.clip(centre + side * height / 2, along, HATCH_BAND * ctx.size)
+        if seg is not None:
+            seg = kept_out(seg, centre + side * height / 2, along, ctx.keep_out(), 0.5 * height)
         return [] if seg is None else hatched_edge(seg[0], seg[1], side, ctx, "ground:guide")
     pts = list(ctx.points(body)) + [centre]
     ts = [float((p - centre) @ along) for p in pts]
     margin = 0.12 * ctx.size
     seg = np.array([centre + (min(ts) - margin) * along, centre + (max(ts) + margin) * along])
     return [Mark("line", seg, f"body:{body}", width=3.0, zorder=3, moves_with=body)]
+
+
+def kept_out(seg: tuple, base: Vec, along: Vec, outlines: list, margin: float) -> Optional[tuple]:
+    """The segment `seg` of the line through `base` along the unit `along`, cut where it would
+    cross one of the closed `outlines` ((n, 2) polygons: the moving bodies' wheels and cams),
+    less `margin`: a fixed guide stops short of the cam its follower rides on. An outline
+    that `base` is inside is not cut for (the guide is inside it)."""
+    t0, t1 = (float((p - base) @ along) for p in seg)
+    normal = perpendicular(along)
+    for poly in outlines:
+        v = np.asarray(poly, dtype=float) - base
+        h, t = v @ normal, v @ along                     # across and along the line
+        h2, t2 = np.roll(h, -1), np.roll(t, -1)
+        crossing = (h > 0) != (h2 > 0)
+        ts = (t + (t2 - t) * h / np.where(crossing, h - h2, 1.0))[crossing]
+        if np.count_nonzero(ts > 0) % 2 == 1:            # base inside the outline
+            continue
+        ahead, behind = ts[ts > 0], ts[ts < 0]
+        if len(ahead):
+            t1 = min(t1, float(ahead.min()) - margin)
+        if len(behind):
+            t0 = max(t0, float(behind.max()) + margin)
+    if t1 - t0 <= margin:
+        return None
+    return base + t0 * along, base + t1 * along
 
 
 def contact_dot(view: Any, ctx: Any) -> list[Mark]:
