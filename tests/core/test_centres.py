@@ -74,3 +74,26 @@ def test_cli_centres_json(tmp_path):
     rows = json.loads(out.stdout)["centres"]
     assert len(rows) == 6
     assert {r["how"] for r in rows} == {"joint", "kennedy"}
+
+
+def test_a_welded_body_shares_its_centres():
+    """Two bodies welded together are one rigid body: each centre of one with a third body
+    is the other's (found as a weld, not from the velocities), at the same point."""
+    tree = {
+        "points": {"O": [0, 0], "A": [1, 0], "B": [2.5, 1.5], "C": [3, -0.5]},
+        "bodies": {"ground": ["O", "C"], "crank": ["O", "A"], "arm": ["A", "B"], "rod": ["B", "C"],
+                   "fin": ["A"]},
+        "joints": [{"type": "revolute", "bodies": ["ground", "crank"], "at": "O"},
+                   {"type": "revolute", "bodies": ["crank", "arm"], "at": "A"},
+                   {"type": "revolute", "bodies": ["arm", "rod"], "at": "B"},
+                   {"type": "revolute", "bodies": ["rod", "ground"], "at": "C"},
+                   {"type": "weld", "bodies": ["crank", "fin"]}],
+        "drivers": [{"omega": "crank", "value": 2}],
+    }
+    found = centres_by_pair(solve(tree))
+    for other in ("ground", "arm", "rod"):
+        shared, own = found[frozenset(("fin", other))], found[frozenset(("crank", other))]
+        assert shared.how == "weld" and set(shared.value) == set(own.value)
+        for key, value in shared.value.items():
+            assert value == pytest.approx(own.value[key], abs=1e-9)
+    assert found[frozenset(("fin", "ground"))].value["point"] == pytest.approx((0, 0), abs=1e-9)   # O

@@ -22,6 +22,7 @@ FAMILIES = {
     "shape": ["circle", "line", "disc", "plane", "curveshape", "camshape"],
     "cond": [k.name for k in KINDS.values() if not k.rolls],  # rolling pairs are written out
     "centre.joint": [k.name for k in KINDS.values() if k.centre in FIXED],
+    "centre.line": ["slot", "wheel", "normal"],
     "ask": ["icr", "axis", "pole", "curvature", "intrinsic"],
     "ans": ["point", "direction", "center", "tangent", "slide"],
     "centre.proportional": ["between", "outside"],

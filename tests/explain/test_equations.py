@@ -72,7 +72,9 @@ def check_targets_are_the_solvers_motion(sol, doc, name):
         expected = motion(state, where)
         assert close(sol, eq.target.value, expected, _scale(sol, eq.level)), (name, eq.target.sym)
         checked += 1
-    assert checked
+    points_asked = any(q.kind in ("velocity", "acceleration", "curvature", "decompose", "intrinsic")
+                       for q in sol.model.questions)
+    assert checked or not (points_asked or sol.space.dim == 2)    # only what is asked is worked out
 
 
 @pytest.mark.parametrize("name", ALL)

@@ -64,3 +64,25 @@ def test_a_crowded_pole_is_untangled():
     assert worst <= 0.2
     naive = [(lb.centre[0] - 1, lb.centre[1] - 1, lb.centre[0] + 1, lb.centre[1] + 1) for lb in lay.labels]
     assert len(set(naive)) == len(naive)
+
+
+def _images(doc, key: str) -> dict:
+    figs = [b for b in doc.blocks() if isinstance(b, Figure) and b.caption.key == key]
+    return {name: xy for f in figs for name, xy, style in f.points if style == "image"}
+
+
+def test_polygon_letters_sit_on_the_images_they_name():
+    """P pair (seed 001 §4.3): the block's own B (written B∈rocker, the point it shares with
+    the rocker) and the guide's point under it, B∈M (the drag velocity), each lettered at
+    its own tip; the quick-return's slot point A∈rocker has its letter."""
+    from kinematika.model.model import PointRef
+
+    sol, doc = explained("seed_001_p_pair_coriolis")
+    images = _images(doc, "fig.level_v")
+    v_b = tuple(sol.inst.numvec(sol.velocity(PointRef("B", "N"))))
+    v_guide = tuple(sol.inst.numvec(sol.velocity(PointRef("B", "M"))))
+    assert images["b∈rocker"] == pytest.approx(tuple(v_b))
+    assert images["b∈M"] == pytest.approx(tuple(v_guide))
+    sol, doc = explained("quick_return")
+    images = _images(doc, "fig.level_v")
+    assert images["a∈rocker"] == pytest.approx(tuple(sol.inst.numvec(sol.velocity(PointRef("A", "rocker")))))

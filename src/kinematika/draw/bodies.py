@@ -13,6 +13,7 @@ from matplotlib.patches import Annulus, Circle, Polygon
 
 from .canvas import Canvas
 from .geometry import clip_line, clip_segment, convex_hull, perpendicular
+from ..model.wording import noun
 from .names import plain
 from .scene import BodyView, ShapeView
 from .style import BAR_WIDTH, GROUND, HATCH_BAND, INK, POINT_LABEL
@@ -79,7 +80,7 @@ def _body(cv: Canvas, body: BodyView) -> None:
     if anchor is None and pts:
         anchor = pts[0]
     if anchor is not None:
-        name = plain(body.name) + (f" ({body.number})" if cv.scene.numbered else "")
+        name = plain(noun(body.label or body.name)) + (f" ({body.number})" if cv.scene.numbered else "")
         cv.label(anchor, name, body.colour, 5, f"body:{body.name}", style="italic")
 
 
@@ -112,6 +113,11 @@ def _moving_shape(cv: Canvas, body: BodyView, s: ShapeView) -> None:
             cv.add(Line2D(*spoke.T, lw=1.0, color=body.colour, alpha=0.8, zorder=3), body.name)
         cv.board.avoid(*_ring(s.center, s.radius))
     elif s.kind == "line":
+        loop = belt_loop(cv, body, s)
+        if loop is not None:
+            cv.add(Line2D(*np.array(loop).T, lw=2.6, color=body.colour, zorder=3.5, gid=gid), body.name)
+            cv.board.avoid(*loop)
+            return
         seg = _line_span(cv, body, s)
         if seg is not None:
             cv.add(Line2D(*np.array(seg).T, lw=2.2, color=body.colour, zorder=2, gid=gid), body.name)
@@ -134,6 +140,54 @@ def _moving_curve(cv: Canvas, body: BodyView, s: ShapeView, gid: str) -> None:
         cv.add(Polygon(s.vertices, closed=True, fc=body.colour, alpha=0.2, lw=0, zorder=1), body.name)
     cv.add(Line2D(*s.vertices.T, lw=2.2, color=body.colour, zorder=3, gid=gid), body.name)
     cv.board.avoid(*s.vertices[::8])
+def belt_loop(cv: Canvas, body: BodyView, s: ShapeView):
+    """A belt or chain: a line body rolling on two circles that lie on one side of it is the
+    straight run of a loop wrapped round both (an open belt). The loop as a closed polyline:
+    this run from contact to contact, the far side of the second circle, the other run (the
+    first's mirror in the line of centres) and the far side of the first; None otherwise."""
+    touching = []
+    for j in cv.scene.joints:
+        if j.contact is None or body.name not in (j.a, j.b):
+            continue
+        other = cv.scene.bodies.get(j.b if j.a == body.name else j.a)
+        circles = [c for c in (other.shapes if other else []) if c.kind == "circle"]
+        if not circles:
+            return None
+        circle = min(circles, key=lambda c: abs(np.linalg.norm(j.contact - c.center) - c.radius))
+        touching.append((np.asarray(j.contact, float), circle))
+    if len(touching) != 2:
+        return None
+    (t1, c1), (t2, c2) = touching
+    n = perpendicular(s.direction)
+    if float((c1.center - s.through) @ n) * float((c2.center - s.through) @ n) <= 0:
+        return None                     # circles on both sides: a crossed strand, drawn straight
+    axis = c2.center - c1.center
+    if np.linalg.norm(axis) <= 1e-9 * cv.size:
+        return None
+    u = axis / np.linalg.norm(axis)
+
+    def mirror(p: np.ndarray) -> np.ndarray:
+        r = p - c1.center
+        return c1.center + 2 * (r @ u) * u - r
+    m1, m2 = mirror(t1), mirror(t2)
+    return np.vstack([[t1], [t2], _far_arc(c2, t2, m2, u), [m2], [m1], _far_arc(c1, m1, t1, -u), [t1]])
+
+
+def _far_arc(c: ShapeView, start: np.ndarray, end: np.ndarray, away: np.ndarray) -> np.ndarray:
+    """Points of the circle from `start` to `end` the long way round the side facing `away`."""
+    a0 = np.arctan2(*(start - c.center)[::-1])
+    a1 = np.arctan2(*(end - c.center)[::-1])
+    mid = np.arctan2(away[1], away[0])
+    sweep = (a1 - a0) % (2 * np.pi)
+    if not _within(a0, sweep, mid):
+        sweep -= 2 * np.pi
+    ts = a0 + np.linspace(0, sweep, 48)
+    return c.center + c.radius * np.column_stack([np.cos(ts), np.sin(ts)])
+
+
+def _within(a0: float, sweep: float, angle: float) -> bool:
+    """Whether `angle` lies on the counter-clockwise arc of `sweep` from a0."""
+    return (angle - a0) % (2 * np.pi) <= sweep
 
 
 def _line_span(cv: Canvas, body: BodyView, s: ShapeView):

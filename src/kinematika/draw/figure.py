@@ -51,7 +51,7 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
 
 
 def _render(scene: Scene, options: DrawOptions) -> Figure:
-    drawn = arrows(scene.vectors, scene.size)
+    drawn = arrows(scene.vectors, scene.size, bars(scene))
     content = framed_box(scene, drawn)
     dimensions = options.dimensions if scene.dim == 2 else None
     if dimensions:
@@ -79,11 +79,26 @@ def _render(scene: Scene, options: DrawOptions) -> Figure:
     return fig
 
 
+def bars(scene: Scene) -> list:
+    """The segments drawn as bars: between the points of each moving body (its skeleton's
+    pieces when it has one), so that arrows keep off them."""
+    out = []
+    for body in scene.bodies.values():
+        if body.frame:
+            continue
+        if body.skeleton:
+            out += [(line[i], line[i + 1]) for line in body.skeleton for i in range(len(line) - 1)]
+            continue
+        pts = list(body.points.values())
+        out += [(p, q) for i, p in enumerate(pts) for q in pts[i + 1:]]
+    return out
+
+
 def framed_box(scene: Scene, drawn: list[Arrow]) -> Box:
     """The mechanism and its arrows, and, nearest first, the results that fit while the
     frame stays within `REACH` times the size of the mechanism with its arrows (a centre
     farther off is shown at the edge, so that it does not shrink the mechanism)."""
-    box = Box(*scene.box).union([a.end for a in drawn])
+    box = Box(*scene.box).union([a.end for a in drawn] + [a.start for a in drawn])
     limit = REACH * max(box.width, box.height, scene.size)
     extras = [[m.point] for m in scene.marks if m.point is not None]
     for c in scene.curvatures:

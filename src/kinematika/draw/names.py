@@ -14,7 +14,7 @@ from typing import Any, Optional, Sequence
 
 from ..numerals import DECIMAL, decimal_sign, separator, superscript_power, written
 
-_SIMPLE = re.compile(r"^[A-Za-z0-9_.' -]+$")
+_SIMPLE = re.compile(r"^[A-Za-z0-9_.,' -]+$")
 FORMULA_CHARS = 24            # longer formulas (as plain text) are shown by their value
 
 
@@ -65,6 +65,19 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
     return subscript(letter, point, None if body is None else numbers[body], rel)
 
 
+def contact_name(model: Any, joint_id: str) -> str:
+    """The name of a rolling or gear joint's contact point, as the text and the figures both
+    write it: J when the model has one contact (the notes' J), else J and the joint's number
+    (J10 for joint j10, or its place among the contacts when ids are names); never a point's
+    name (a prime is added)."""
+    rolling = [j.id for j in model.joints if j.kind.touches]
+    number = joint_id[1:] if re.fullmatch(r"j\d+", joint_id) else str(rolling.index(joint_id) + 1)
+    base = "J" if len(rolling) == 1 else f"J{number}"
+    while base in model.points:
+        base += "'"
+    return base
+
+
 def pair_symbol(letter: str, model: Any, a: str, b: str) -> str:
     """`letter` for a pair of bodies by their numbers, smaller first: $I_{13}$ (I_{2,11}
     once a number has two digits)."""
@@ -74,17 +87,20 @@ def pair_symbol(letter: str, model: Any, a: str, b: str) -> str:
     return subscript(letter, tag)
 
 
-def formula(expr: Any, value: float, lang: Optional[str] = None) -> str:
+def formula(expr: Any, value: float, lang: Optional[str] = None, spelt: Optional[dict] = None) -> str:
     """A short formula in mathtext ($2 r w^{2}$), else the value (`≈ 3.08`); numbers as
-    `lang` writes them (`value_text`)."""
-    from sympy import latex
+    `lang` writes them (`value_text`); the symbols of `spelt` (a parameter -> how the model
+    writes it, `w0` -> `omega_0`) written that way (ω₀)."""
+    from sympy import Symbol, latex
 
     from ..report.values import tidy
 
     tidied = tidy(expr)
     if len(str(tidied).replace("Abs", "")) > FORMULA_CHARS:       # |x| is as short as (x)
         return f"≈ {value_text(value, lang)}"
-    body = latex(tidied).replace(r"\left|", "|").replace(r"\right|", "|")   # mathtext: plain bars
+    names = {s: latex(Symbol(spelt[s.name])) for s in getattr(tidied, "free_symbols", ()) if s.name in (spelt or {})}
+    body = latex(tidied, symbol_names=names) if names else latex(tidied)
+    body = body.replace(r"\left|", "|").replace(r"\right|", "|")   # mathtext: plain bars
     text = "$" + body.replace(r"\frac", r"\dfrac") + "$"    # full-size fractions
     if not settable(text):
         return f"≈ {value_text(value, lang)}"

@@ -14,8 +14,8 @@ from ..model.model import PointRef
 from ..questions import answer
 from .options import DrawOptions
 from .geometry import perpendicular
-from .names import (bare, body_numbers, equation, formula, pair_symbol, plain, point_symbol, subscript,
-                    value_text)
+from .names import (bare, body_numbers, contact_name, equation, formula, pair_symbol, plain, point_symbol,
+                    subscript, value_text)
 from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView,
                     vector_label)
 
@@ -28,6 +28,7 @@ def add_results(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> N
     velocity and acceleration vectors, instant centres with their Kennedy lines, curvature
     circles, poles, contacts and screw axes."""
     _vectors(scene, sol, options, num)
+    _decompositions(scene, sol, options, num)
     _centres(scene, sol, options, num)
     if options.curvature is not False:
         _curvatures(scene, sol, num, options.lang)
@@ -75,7 +76,7 @@ def vector_targets(sol: Any, options: DrawOptions, kind: str,
     if flag is False:
         return []
     if flag is None and not options.points and not default:
-        return _unique(asked)
+        return _unique(asked + _beside(model, asked, kind))
     if flag is None and not asked and kind != "velocity":
         return []
     if options.points:
@@ -85,6 +86,54 @@ def vector_targets(sol: Any, options: DrawOptions, kind: str,
                                     for q in model.questions if q.kind in POINT_QUESTIONS]
         shown = shown or _moving_points(sol)
     return _unique(shown)
+
+
+def _beside(model: Any, asked: list, kind: str) -> list:
+    """What a figure draws beside the asked vectors: the absolute vector of a point whose
+    relative one is asked (a relative velocity is read against the absolute), and, for
+    velocities, the data the model gives (the tractor's v_F)."""
+    out = [(ref, None) for ref, rel in asked if rel not in (None, model.frame)]
+    if kind == "velocity":
+        out += [(d.point, None) for d in model.drivers
+                if d.kind == "velocity" and d.relative_to in (None, model.frame)]
+    return out
+
+
+def _decompositions(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
+    """The parts of each asked composition of motions at its point, for the kinds the figure
+    draws: drag (and, for accelerations, Coriolis) beside the relative and the absolute."""
+    from ..questions.decompose import decompose
+
+    drawn = {v.kind for v in scene.vectors}
+    words = _part_words(options.lang)
+    for q in sol.model.questions:
+        if q.kind != "decompose":
+            continue
+        parts = decompose(sol, q)
+        origin = num.page(sol.position(q.target))
+        for kind in KINDS:
+            if kind not in drawn:
+                continue
+            letter = "v" if kind == "velocity" else "a"
+            for part in ("drag", "coriolis") if kind == "acceleration" else ("drag",):
+                value = parts[kind][part]
+                vec = num.vector(value)
+                if _negligible(sol, kind, value):
+                    continue
+                magnitude = float(np.linalg.norm(vec))
+                label = subscript(letter, f"{words[part]},{q.target.point}")
+                scene.vectors.append(VectorView(kind, f"{q.target}:{part}", label, origin, num.proj(vec), magnitude,
+                                                magnitude_text(sol, value, magnitude, options.lang)))
+
+
+def _part_words(lang: Optional[str]) -> dict[str, str]:
+    """The subscripts of the parts (drag, Cor), as the explanation in `lang` writes them."""
+    if lang is None:
+        return {"drag": "drag", "coriolis": "Cor"}
+    from ..explain.catalogue import catalogue
+
+    cat = catalogue(lang)
+    return {"drag": cat.get("sub.drag"), "coriolis": cat.get("sub.cor")}
 
 
 def default_ask(model: Any) -> bool:
@@ -127,7 +176,7 @@ def magnitude_text(sol: Any, value: tuple, magnitude: float, lang: Optional[str]
         return "0"
     if not sol.symbolic:
         return value_text(magnitude, lang)
-    return formula(sol.norm(value), magnitude, lang)
+    return formula(sol.norm(value), magnitude, lang, sol.model.wording.parameter_symbols(lang))
 
 
 # instant centres -------------------------------------------------------------------------
@@ -269,7 +318,8 @@ def _curvatures(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None
         p, c = num.vector(sol.position(q.target)), num.vector(value["center"])
         radius = num.scalar(value["radius"])
         v = num.vector(sol.velocity(q.target, q.relative_to))
-        text = formula(value["radius"], radius, lang) if sol.symbolic else value_text(radius, lang)
+        text = formula(value["radius"], radius, lang, sol.model.wording.parameter_symbols(lang)) if sol.symbolic \
+            else value_text(radius, lang)
         scene.curvatures.append(CurvatureView(
             str(q.target) + (f"/{q.relative_to}" if q.relative_to else ""),
             equation(name, text), num.proj(p), num.proj(c), radius,
@@ -300,9 +350,9 @@ def _other_marks(scene: Scene, sol: Any, num: Numbers) -> None:
         elif q.kind == "contact":
             value = answer(sol, q)
             if value.get("point") is not None:
-                scene.marks.append(MarkView("contact", f"contact:{q.target}",
-                                            subscript("J", str(q.target)),
-                                            point=num.page(value["point"])))
+                name = contact_name(sol.model, q.target)
+                label = subscript("J", name[1:]) if name[1:].isdigit() else "$\\mathrm{" + name + "}$"
+                scene.marks.append(MarkView("contact", f"contact:{q.target}", label, point=num.page(value["point"])))
         elif q.kind == "axis" and scene.dim == 3:
             value = answer(sol, q)
             if value.get("point") is not None:

@@ -60,6 +60,8 @@ class BodyView:
     shapes: list[ShapeView] = field(default_factory=list)
     passing: list[str] = field(default_factory=list)   # points that slide along this body
     skeleton: list[Vec] = field(default_factory=list)  # polylines drawn as its bars, if any
+    label: str = ""                        # its name as the figure writes it (the model's
+                                           # name in the figure's language, else its own)
 
 
 @dataclass
@@ -199,7 +201,7 @@ def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = No
     model = inst.model
     proj = proj or projection(model.dimension, options.view, model.up)
     num = Numbers(inst, proj, drawing_values(inst))
-    bodies = _bodies(inst, num)
+    bodies = _bodies(inst, num, options.lang)
     box, size = _extent(bodies, inst)
     geos = _joint_geometries(inst, sol or solver)
     _mark_ground_sides(bodies, model, geos, num)
@@ -225,7 +227,7 @@ def _number_bodies(scene: Scene, always: bool = False) -> None:
     if not always and not any(numbered(text) for text in labels):
         return
     scene.numbered = True
-    order = ", ".join(f"{b.number} {b.name}" for b in sorted(scene.bodies.values(),
+    order = ", ".join(f"{b.number} {b.label or b.name}" for b in sorted(scene.bodies.values(),
                                                               key=lambda b: b.number))
     scene.notes.insert(0, f"bodies: {order}")
 
@@ -288,7 +290,7 @@ class Numbers:
         return self.proj(self.vector(v))
 
 
-def _bodies(inst: Instant, num: Numbers) -> dict[str, BodyView]:
+def _bodies(inst: Instant, num: Numbers, lang: Optional[str] = None) -> dict[str, BodyView]:
     model = inst.model
     out = {}
     for name, number in body_numbers(model).items():
@@ -297,7 +299,7 @@ def _bodies(inst: Instant, num: Numbers) -> dict[str, BodyView]:
         points = {p: num.page(inst.points[p]) for p in body.points}
         shapes = [view for s in inst.shapes.get(name, []) for view in _shapes(s, num)]
         out[name] = BodyView(name, number, "#424242" if frame else body_colour(number), frame,
-                             points, shapes)
+                             points, shapes, label=model.wording.body(name, lang))
     for j in model.joints:
         for name in _passing(model, j):
             out[j.a].passing.append(name)

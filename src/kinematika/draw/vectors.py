@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
 from matplotlib.patches import FancyArrowPatch
@@ -35,6 +36,7 @@ class Arrow:
     end: np.ndarray
     enlarged: bool
     zero: bool = False
+    tip_at_point: bool = False           # drawn ending at its point (off a bar)
 
     @property
     def drawn(self) -> bool:
@@ -67,11 +69,44 @@ def arrow_for(view: VectorView, largest: float, size: float, origin=None, value=
     return Arrow(view, origin, origin + value * factor, enlarged)
 
 
-def arrows(vectors: list[VectorView], size: float) -> list[Arrow]:
-    """Every vector's arrow, each kind to its own scale: the longest of a kind is `LONGEST` of
-    the drawing size."""
+def arrows(vectors: list[VectorView], size: float, bars: Optional[list] = None) -> list[Arrow]:
+    """Every vector's arrow, each kind to its own scale (the longest of a kind is `LONGEST` of
+    the drawing size); one that would lie along a bar from its point (a centripetal
+    acceleration along its crank) is drawn ending at the point instead, beyond the bar,
+    where it can be seen."""
     largest = arrow_scales(vectors)
-    return [arrow_for(v, largest[v.kind], size) for v in vectors]
+    out = [arrow_for(v, largest[v.kind], size) for v in vectors]
+    return [off_bars(a, bars or [], size) for a in out]
+
+
+def off_bars(arrow: Arrow, bars: list, size: float) -> Arrow:
+    """`arrow` turned to end at its point when, starting there, it would run along one of
+    `bars` ((p, q) segments of the bodies); as it is otherwise."""
+    if not arrow.drawn:
+        return arrow
+    d = unit(arrow.end - arrow.start)
+    if _along(arrow.start, d, bars, size) and not _along(arrow.start, -d, bars, size):
+        return Arrow(arrow.view, 2 * arrow.start - arrow.end, arrow.start.copy(), arrow.enlarged,
+                     arrow.zero, tip_at_point=True)
+    return arrow          # free, or a bar both ways (a point inside a slot): it cannot be helped
+
+
+def _along(point: np.ndarray, d: np.ndarray, bars: list, size: float) -> bool:
+    """Whether a bar leaves `point` in the direction d (within 8°), or passes through it
+    that way."""
+    for p, q in bars:
+        for a, b in ((p, q), (q, p)):
+            ab = b - a
+            length = float(np.linalg.norm(ab))
+            if length <= 1e-9 * size:
+                continue
+            t = float((point - a) @ ab) / length ** 2
+            across = float(np.linalg.norm(a + t * ab - point))
+            if across > 1e-6 * size or not -1e-9 <= t < 1 - 1e-6:
+                continue
+            if float(unit(ab) @ d) > math.cos(math.radians(8)):
+                return True
+    return False
 
 
 def side_shifts(drawn: list[Arrow], size: float) -> list[float]:
@@ -83,8 +118,8 @@ def side_shifts(drawn: list[Arrow], size: float) -> list[float]:
         if a.drawn:
             d = unit(a.end - a.start)
             for b, s in zip(drawn[:i], shifts):
-                if b.drawn and np.linalg.norm(b.start - a.start) <= 1e-9 * size and \
-                        float(unit(b.end - b.start) @ d) > math.cos(math.radians(SIDE_ANGLE)):
+                if b.drawn and np.linalg.norm(b.view.origin - a.view.origin) <= 1e-9 * size and \
+                        abs(float(unit(b.end - b.start) @ d)) > math.cos(math.radians(SIDE_ANGLE)):
                     shift = max(shift, s + SIDE)
         shifts.append(shift)
     return shifts
@@ -117,6 +152,7 @@ def paint_vectors(cv: Canvas, drawn: list[Arrow]) -> None:
                                                 y=n[1], units="points"))
             cv.ax.add_patch(patch)
             cv.board.avoid(arrow.start, arrow.end, weight=3.0)
-            cv.label(arrow.end, text, colour, 1, v.key, arrow.end - arrow.start)
+            tail = arrow.start if arrow.tip_at_point else arrow.end      # the label at the free end
+            cv.label(tail, text, colour, 1, v.key, arrow.end - arrow.start)
         else:
             cv.label(arrow.start, text, colour, 1, v.key)

@@ -8,7 +8,7 @@ from ..model.model import PointRef
 from ..questions import answer
 from ..questions.curvature import intrinsic
 from .context import Ctx, alpha_sym, omega_sym
-from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Value, msg
+from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Told, Value, msg
 from .terms import KNOWN
 
 UNITS = {"velocity": "speed", "acceleration": "accel", "omega": "rate", "alpha": "rate2",
@@ -31,6 +31,7 @@ def answers_section(ctx: Ctx) -> Section:
         sec.add(Table([msg("col.question"), msg("col.answer")], rows))
     else:
         sec.add(msg("answers.none"))
+    sec.add(Told("notes"))
     return sec
 
 
@@ -87,14 +88,17 @@ def _part_label(ctx: Ctx, q, key: str, sub: str | None) -> Any:
         word = {"drag": "sub.drag", "relative": "sub.rel", "coriolis": "sub.cor"}.get(sub or "", "")
         return Sym(level, ref.point, sub_key=word)
     if q.kind == "contact":
+        from .contacts import geometric_sym
+
         j = ctx.model.joint(q.target)
         level = "v" if sub == "velocity" else "a"
+        name = ctx.contact(j)
         if key == "body_a":
-            return Sym(level, f"J∈{j.a}")
+            return Sym(level, f"{name}∈{j.a}")
         if key == "body_b":
-            return Sym(level, f"J∈{j.b}")
+            return Sym(level, f"{name}∈{j.b}")
         if key == "geometric":
-            return Sym(level, "J", sub_key="sub.geom")
+            return geometric_sym(level, name)
     if q.kind == "intrinsic":
         p = _label(ctx, _ref(ctx, q))
         symbols = {"speed": Sym("v", p, vector=False), "tangential": Sym("a", p, "t", vector=False),
@@ -115,6 +119,22 @@ def _value(ctx: Ctx, value: Any, unit: str) -> Value:
     if value is None or isinstance(value, (bool, str)):
         return Value(value, "")
     return Value(ctx.clean(value, unit or "len"), unit)
+
+
+def relative_rates(ctx: Ctx) -> list[Derived]:
+    """Each ω (α) asked relative to a moving body, from the absolute ones (planar):
+    ω_b/a = ω_b − ω_a, as the composition of rotations gives it."""
+    out: list[Derived] = []
+    for q in ctx.model.questions:
+        rel = ctx.rel(q.relative_to)
+        if q.kind not in ("omega", "alpha") or rel is None or not ctx.planar:
+            continue
+        sym = omega_sym if q.kind == "omega" else alpha_sym
+        get = ctx.omega if q.kind == "omega" else ctx.alpha
+        unit = "rate" if q.kind == "omega" else "rate2"
+        out.append(Derived(sym(q.target, rel), [sym(q.target), " − ", sym(rel)], ctx.value(get(q.target, rel), unit),
+                           kind=q.kind, sense=not ctx.symbolic))
+    return out
 
 
 def curvature_section(ctx: Ctx) -> Section | None:
@@ -144,10 +164,10 @@ def curvature_steps(ctx: Ctx, q) -> list:
     split = intrinsic(ctx.sol, q)             # the solver's aᵗ and aⁿ of the same point
     at, an = split["tangential_vector"], split["normal_vector"]
     target = Term(Sym("a", label), ctx.clean(a, "accel"), *KNOWN, kind="point")
-    tangential = Term(Sym("a", label, "t"), ctx.clean(at, "accel"), Ann("M"),
-                      Ann("para", Sym("v", label)), kind="tangential")
-    normal = Term(Sym("a", label, "n"), ctx.clean(an, "accel"), Ann("M"),
-                  Ann("perp", Sym("v", label)), kind="normal")
+    tangential = Term(Sym("a", label, "t"), ctx.clean(at, "accel"), Ann("?"),
+                      Ann("para", Sym("v", label)), unknown=True, kind="tangential")
+    normal = Term(Sym("a", label, "n"), ctx.clean(an, "accel"), Ann("?"),
+                  Ann("perp", Sym("v", label)), unknown=True, kind="normal")
     out: list = [msg("curvature.point", point=Name(label), v=Value(ctx.clean(v, "speed"), "speed")),
                  Equation(target, [[tangential, normal]], "a", ref, rel, figure=False)]
     if result.get("radius") is None:

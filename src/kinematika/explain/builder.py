@@ -9,13 +9,16 @@ from __future__ import annotations
 
 from ..draw.names import body_numbers
 from ..solution import Solution
-from .answers import answers_section, curvature_section
+from .answers import answers_section, curvature_section, relative_rates
+from .checks import checks_section
+from .contacts import contact_section
 from .centres import centres_section
 from .context import Ctx
-from .document import Document, Equation, Section, msg
+from .document import Ann, Document, Equation, Section, msg
 from .group import refine
 from .order import solution_order
 from .planar import PlanarSteps
+from .needs import accelerations_asked, prune
 from .polygon import level_polygon, polygon
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
@@ -25,9 +28,11 @@ from .structure import structure_section, values_table
 def build(sol: Solution, length_unit: str = "m") -> Document:
     """The `Document` of `sol`: every value in it is read from the solution."""
     ctx = Ctx(sol)
+    accel = accelerations_asked(ctx)
+    wanted = ("v", "a") if accel else ("v",)
     levels: list[Section] = []
     doc = Document(sol.model.name, sol.symbolic, sol.space.dim, length_unit,
-                   numbers=body_numbers(sol.model))
+                   numbers=body_numbers(sol.model), wording=sol.model.wording)
     intro = Section(msg("sec.data"))
     intro.add(msg("data.symbolic" if sol.symbolic else "data.numeric", unit=length_unit))
     intro.add(msg("data.planar" if sol.space.dim == 2 else "data.spatial"))
@@ -38,29 +43,68 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
         placed = position_section(ctx)
         if placed is not None:
             doc.sections.append(placed)
-        for level in ("v", "a"):
+        for level in wanted:
             sec = PlanarSteps(ctx, steps, level).section()
             levels.append(sec)
-            drawn = level_polygon(ctx, _equations(sec), level)
-            if drawn is not None:
-                sec.add(drawn)
             doc.sections.append(sec)
-        summary = Section(msg("sec.rates_summary"))
-        summary.add(values_table(ctx))
+        summary = Section(msg("sec.rates_summary" if accel else "sec.rates_summary_v"))
+        summary.add(values_table(ctx, accel))
+        summary.blocks += relative_rates(ctx)
         doc.sections.append(summary)
+        contacts = contact_section(ctx)
+        if contacts is not None:
+            doc.sections.append(contacts)
+        checked = checks_section(ctx)
+        if checked is not None:
+            doc.sections.append(checked)
         doc.sections.append(centres_section(ctx))
     else:
         doc.sections.append(structure_section(ctx, []))
         doc.sections.append(rates_section(ctx))
-        doc.sections += [fields_section(ctx, "v"), fields_section(ctx, "a")]
+        doc.sections += [fields_section(ctx, level) for level in wanted]
     extra = [composition_section(ctx, composition_pairs(ctx)), curvature_section(ctx)]
     doc.sections += [s for s in extra if s is not None]
     doc.sections.append(answers_section(ctx))
+    for eq in doc.equations():
+        found_forward(eq)
+    prune(ctx, doc)
+    for sec, level in zip(levels, wanted):
+        level_polygons(ctx, sec, level)
     in_levels = {id(e) for sec in levels for e in _equations(sec)}
     for eq in doc.equations():
         if id(eq) not in in_levels:
             eq.polygon = polygon(ctx, eq)
     return doc
+
+
+SPLIT = 14          # a level polygon with more arrows than this is drawn step by step
+
+
+def level_polygons(ctx: Ctx, sec: Section, level: str) -> None:
+    """The level's polygon at its end; one per step when a single one would be a star of
+    overlapping arrows (the epicyclic train's accelerations)."""
+    whole = level_polygon(ctx, _equations(sec), level)
+    if whole is None:
+        return
+    steps = [b for b in sec.blocks if isinstance(b, Section)]
+    if len(whole.arrows) <= SPLIT or len(steps) < 2:
+        sec.add(whole)
+        return
+    for step in steps:
+        drawn = level_polygon(ctx, _equations(step), level, step=True)
+        if drawn is not None:
+            step.add(drawn)
+
+
+def found_forward(eq: Equation) -> None:
+    """One rule for every equation (seed 001's bookkeeping): an equation whose terms are all
+    known finds its left side, which is marked as found (? ?, in red) — a forward
+    evaluation reads the same in every explanation; an equation with unknown terms keeps its
+    known left side (M D)."""
+    if any(t.unknown for side in eq.sides for t in side):
+        return
+    eq.target.unknown = True
+    eq.target.mag, eq.target.dir = Ann("?"), Ann("?")
 
 
 def _equations(sec: Section) -> list[Equation]:

@@ -19,6 +19,7 @@ from fluent.runtime import FluentBundle, FluentResource
 
 from ..errors import KinematikaError
 from ..languages import LANGS, known
+from ..model.wording import ARTICLES
 
 __all__ = ["LANGS", "LOCALES", "catalogue", "known"]
 
@@ -27,6 +28,13 @@ VARIABLE = re.compile(r"\{\s*\$(\w+)")
 # letters whose Catalan name begins with a vowel sound: a, e, efa, hac, i, ela, ema, ena,
 # o, erra, essa, u, ics (a point named O4 is read "o quatre": d'O4, l'O4)
 VOWEL_LETTERS = set("AEFHILMNORSUX")
+# the renderers set the article a model's name begins with (model.wording.ARTICLES) as text, so the
+# contractions of a preposition with it apply (de el portador -> del portador)
+CONTRACTIONS = {
+    "ca": [(re.compile(r"\b([Dd])e el(s?) "), r"\1el\2 "), (re.compile(r"\b([Aa]) el(s?) "), r"\1l\2 "),
+           (re.compile(r"\b([Pp])er el(s?) "), r"\1el\2 ")],
+    "es": [(re.compile(r"\b([Dd])e el "), r"\1el "), (re.compile(r"\b([Aa]) el "), r"\1l ")],
+}
 
 
 def fluent_id(key: str) -> str:
@@ -41,8 +49,8 @@ def elision(value: Any) -> str:
     letter, so their first letter's name counts; words elide before a vowel or an h.
     """
     text = str(getattr(value, "plain", value)).strip()
-    if not text:
-        return "other"
+    if not text or ARTICLES["ca"].match(text):
+        return "other"          # a name with its article (el portador, l’engranatge): no elision
     first = text[0]
     symbol = first.isupper() and (len(text) == 1 or not text[1].islower())
     if symbol:

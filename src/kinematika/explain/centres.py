@@ -1,12 +1,18 @@
-"""Instant centres as the notes find them (seed 002): at a joint, by Aronhold–Kennedy, or
-where the perpendiculars to two velocities meet. The centres are the engine's
-(`questions.centres.all_centres`); this module only says how each one follows."""
+"""Instant centres as the notes find them (seed 002), from the structure first: at a joint,
+shared across a weld, by Aronhold–Kennedy, on the normal to a slot or the axle of a wheel.
+A centre the structure does not reach is found from the velocities, and the text says so:
+where the perpendiculars to two velocities meet, or from the velocity of one point and the
+angular velocity, 0 = v_Q + ω × QI (the notes' bicycle: the pedals' centre at the depth
+d = R_roda R / r). An asked centre found through other centres is checked that way too.
+The centres are the engine's (`questions.centres.all_centres`); this module only says how
+each one follows."""
 from __future__ import annotations
 
 from itertools import combinations
 
 from ..questions.centres import all_centres
 from .context import Ctx
+from .kinds import line_kind
 from .document import CentreNote, Section, Sym, msg
 
 MAX_ALL = 10        # above this many pairs, only the centres relative to the frame (and what they need)
@@ -30,14 +36,76 @@ def centres_section(ctx: Ctx) -> Section:
         note = CentreNote(c.pair, _clean(ctx, c.value), c.how, list(c.via))
         if c.how == "joint":
             note.joint_type = ctx.model.joint(c.via[0]).type
-        if c.how == "kennedy":
+        elif c.how == "weld":
+            weld = ctx.model.joint(c.via[0])
+            welded = next(b for b in c.pair if b in (weld.a, weld.b) and b != c.via[1])
+            x = next(b for b in c.pair if b != welded)
+            note.same = {"pair": (x, c.via[1]), "welded": welded,
+                         **_clean(ctx, found[frozenset((x, c.via[1]))].value)}
+        elif c.how == "kennedy":
             _kennedy(ctx, note, found, order[:order.index(c)])
+        elif c.how == "lines":
+            note.via = [_line_reason(ctx, c, kind, name, found) for kind, name in c.lines]
         elif c.how == "velocities" and c.finite:
             note.witnesses = _witnesses(ctx, c.pair[1], c.pair[0])
             _axles(ctx, note)
+            if note.how == "velocities" and len(note.witnesses) < 2:
+                _field(ctx, note)
         made[key] = note
-    sec.blocks += [made[key] for key in _chosen(ctx, made)]
+    asked = {frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target)) for q in ctx.model.questions
+             if q.kind == "icr"}
+    for key in _chosen(ctx, made):
+        sec.blocks.append(made[key])
+        if key in asked and made[key].how in ("kennedy", "lines", "weld") and made[key].value.get("point"):
+            check = CentreNote(made[key].pair, made[key].value, "check")
+            if _field(ctx, check):
+                sec.blocks.append(check)
     return sec
+
+
+def _field(ctx: Ctx, note: CentreNote) -> bool:
+    """The centre from one point Q of the body and its angular velocity, as the notes find
+    the bicycle's pedals' centre: 0 = v_Q + ω × QI, so QI = k × v_Q / ω. False when the
+    body does not turn (a translation has its centre at infinity)."""
+    a, b = note.pair
+    w = ctx.omega(b, a)
+    if ctx.is_zero(w, "rate") or note.value.get("point") is None:
+        return False
+    q = _field_point(ctx, b, a)
+    if q is None:
+        return False
+    if note.how != "check":
+        note.how = "field"
+    note.witnesses = [(q, ctx.clean(ctx.vel(b, q, a), "speed"))]
+    note.rate = ctx.clean(w, "rate")
+    note.arm = ctx.clean(tuple(c - p for c, p in zip(note.value["point"], ctx.pos(q))), "len")
+    return True
+
+
+def _field_point(ctx: Ctx, body: str, frame: str) -> str | None:
+    """The body's point to start from: a pin it shares with another body (the bicycle's
+    crank axle K), a shape's centre, else any of its points that moves."""
+    model = ctx.model
+    points = model.bodies[body].points
+    pinned = [p for p in points if len(model.carriers(p)) > 1]
+    centres = [getattr(s, "center_point", None) for s in model.bodies[body].shapes]
+    for p in pinned + [c for c in centres if c] + list(points):
+        if not ctx.is_zero(ctx.vel(body, p, frame), "speed"):
+            return p
+    return None
+
+
+def _line_reason(ctx: Ctx, c, kind: str, name: str, found: dict):
+    """Why the centre lies on a line: a Kennedy line through two centres (third body
+    `name`), or the normal a joint gives at its point (a slot, a knife-edge wheel)."""
+    from .document import Name, msg
+
+    a, b = c.pair
+    if kind == "third":
+        return msg("centre.line.kennedy", l=[Sym("I", f"{a},{name}", vector=False), Sym("I", f"{name},{b}", vector=False)],
+                   k=Name(name, "body"))
+    j = ctx.model.joint(name)
+    return msg(f"centre.line.{line_kind(j)}", joint=Name(j.id, "joint"), point=Name(j.at or ctx.contact(j)))
 
 
 def _kennedy(ctx: Ctx, note: CentreNote, found: dict, before: list) -> None:

@@ -27,7 +27,9 @@ class Ctx:
         self.symbolic = sol.symbolic
         self.planar = sol.space.dim == 2
         self._extra: dict[str, tuple] = {}
+        self.worked: set[str] = set()        # derivations written once in the document (a bar's ω)
         self._contacts: dict[str, str] = {}
+        self._drawn: Any = None
 
     # positions -----------------------------------------------------------------------------
     def pos(self, name: str) -> tuple:
@@ -44,13 +46,9 @@ class Ctx:
         """The name of a rolling joint's contact point, placed there: J, or J10 for joint
         j10 (J1, J2 … in order when ids are names), never a point's name."""
         if j.id not in self._contacts:
-            import re
+            from ..draw.names import contact_name
 
-            rolling = [x.id for x in self.model.joints if x.type in ("rolling", "gear")]
-            number = j.id[1:] if re.fullmatch(r"j\d+", j.id) else str(rolling.index(j.id) + 1)
-            base = "J" if len(rolling) == 1 else f"J{number}"
-            while base in self.model.points:
-                base += "'"
+            base = contact_name(self.model, j.id)
             self._contacts[j.id] = base
             contact = self.sol.solver.geos[j.id].contact
             if contact is not None:
@@ -112,6 +110,26 @@ class Ctx:
         if isinstance(x, tuple):
             return tuple(self.inst.num(c) for c in x)
         return self.inst.num(x)
+
+    def drawn(self, x: Any) -> Any:
+        """A value as the figures show it: symbols at the numbers the mechanism is drawn at
+        (the model's `draw_at`, the solver's sample values for the rest), so that a polygon
+        and the mechanism's figure show one mechanism."""
+        if isinstance(x, tuple):
+            return tuple(self.drawn(c) for c in x)
+        if not self.symbolic:
+            return self.inst.num(x)
+        if self._drawn is None:
+            from ..draw.scene import Numbers, drawing_values
+
+            self._drawn = Numbers(self.inst, None, drawing_values(self.inst))
+        return self._drawn.scalar(x)
+
+    def drawn_values(self) -> dict[str, float]:
+        """The numbers a symbolic model's figures are drawn at, by name (empty when numeric)."""
+        from ..draw.scene import drawing_values
+
+        return {str(k): v for k, v in sorted(drawing_values(self.inst).items(), key=lambda kv: str(kv[0]))}
 
     def is_zero(self, x: Any, unit: str) -> bool:
         """Whether `x` is zero at the mechanism's own scale of its kind of quantity

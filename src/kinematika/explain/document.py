@@ -26,6 +26,7 @@ class Sym:
     sup: str = ""
     vector: bool = True
     sub_key: str = ""
+    fixed: bool = False            # written as given (a model's notation): no body numbers
 
 
 @dataclass(frozen=True)
@@ -62,6 +63,7 @@ class Name:
 
     text: str
     kind: str = "point"
+    bare: bool = False             # a body's name without its article (in a table's cell)
 
     def __str__(self) -> str:
         return self.text
@@ -182,6 +184,7 @@ class Figure:
     points: list[tuple[str, tuple, str]] = field(default_factory=list)   # (label, xy, style)
     unit: str = ""                                 # unit of the scale bar (speed, accel, len)
     sample: bool = False                           # drawn at sample values of the symbols
+    values: dict = field(default_factory=dict)     # ... namely these (a symbolic model's draw_at)
     layouts: dict = field(default_factory=dict, repr=False, compare=False)   # by the labels' texts
 
 
@@ -222,9 +225,21 @@ class CentreNote:
     witnesses: list = field(default_factory=list)  # velocities: [(point, velocity), ...]
     joint_type: str = ""                           # joint: the type of the joint
     side: str = ""                                 # proportional: the centre "between" or "outside" the witnesses
+    same: Optional[dict] = None                    # weld: the centre of the body it is welded to
+    rate: Any = None                               # field, check: ω of the pair
+    arm: Optional[tuple] = None                    # field, check: QI = k × v_Q / ω
 
 
-Block = Union[Msg, Equation, Derived, Table, Figure, Drawing, CentreNote, "Section"]
+@dataclass
+class Told:
+    """What the model tells in the reader's language (its `names`): `points`, a table of
+    what its points are; `notes`, its notes on the printed statement."""
+
+    kind: str
+    points: list = field(default_factory=list)     # the model's point names, in order
+
+
+Block = Union[Msg, Equation, Derived, Table, Figure, Drawing, CentreNote, Told, "Section"]
 
 
 @dataclass
@@ -254,6 +269,7 @@ class Document:
     length_unit: str
     sections: list[Section] = field(default_factory=list)
     numbers: dict = field(default_factory=dict)    # body -> its number, as the notes and figures number them
+    wording: Any = None                             # the model's names per language and notation
 
     def blocks(self) -> list:
         """Every block, nested sections included, in reading order."""

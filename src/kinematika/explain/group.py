@@ -36,6 +36,8 @@ from .context import Ctx, alpha_sym, omega_sym
 from .document import (Ann, Derived, Equation, Sym, Term, Value, body as body_name, joint as joint_name, msg,
                        point as point_name)
 from .order import jointed
+from .contacts import geometric_blocks
+from .kinds import rolls
 from .terms import contact_term, point_term, rotation_terms, slide_terms
 
 MAX_TURNS = 3           # rotations along one route at most
@@ -504,6 +506,10 @@ class Writer:
             for seg in r.segs:
                 if seg.joint is not None:
                     out += self.condition(seg.joint, Site(seg.p, seg.body))
+                    if lv == "a" and rolls(seg.joint):
+                        out += geometric_blocks(ctx, seg.joint, ps.geometric, (seg.body, seg.frm))
+        for s in [r.start for r in p.routes] + [p.end]:
+            out += self.known_first(s, p)
         sides, reads = [], {}
         for r in p.routes:
             terms = self.site_terms(r.start, p)
@@ -527,6 +533,40 @@ class Writer:
             seg, term = reads[body]
             out.append(ps.read(body, term, seg.q, seg.p))
         return out + self.anchors(p)
+
+    def known_first(self, s: Site, p: Path) -> list:
+        """A point of a body found earlier (in an earlier step, or by an earlier equation of
+        this one) is known, but may not be written yet — the pinion's J7 where the chain
+        touches it, the articulated chassis' O once α of the front chassis is found: it is
+        written first, from a written point of its body, so that every known term of the
+        equation can be checked (v_J7∈4 = v_H + ω_4 × H-J7). Points of the frame and points
+        a driver gives need no equation."""
+        ctx, lv, ps = self.ctx, self.level, self.ps
+        label = ctx.point_label(s.point, s.body)
+        state, spec = p.known.get(s, ("full", {}))
+        if s.body == ctx.frame or label in ps.done or state != "full" or spec or self._given(s):
+            return []
+        key = ctx.motion_key(s.point, s.body)
+        for body in [s.body] + [b for b in ctx.model.carriers(s.point) if b != s.body]:
+            if body == ctx.frame:
+                return []
+            if body in p.finds or ctx.motion_key(s.point, body) != key:
+                continue        # a body this equation finds, or one the point is not pinned to
+            start = ps.anchor(body)
+            if start is None or ctx.motion_key(*start) == key:
+                continue
+            q, owner = start
+            side = [point_term(ctx, lv, q, owner, True)] + rotation_terms(ctx, lv, body, q, s.point, False)
+            eq = ps.equation(point_term(ctx, lv, s.point, body, True), [side], s.point, body)
+            eq.position = None if s.point in ctx.inst.points else ctx.pos(s.point)
+            return [eq]
+        return []
+
+    def _given(self, s: Site) -> bool:
+        """Whether a driver gives the point's motion."""
+        key = self.ctx.motion_key(s.point, s.body)
+        return any(d.kind == "velocity" and self.ctx.motion_key(d.point.point, d.point.body) == key
+                   for d in self.ctx.model.drivers)
 
     def anchors(self, p: Path) -> list:
         """For a body the equation finds with none of its points written yet: one point,
@@ -572,7 +612,7 @@ class Writer:
         parts (along a wheel's plane, along a driver's direction); `known`: after it."""
         ctx, lv = self.ctx, self.level
         state, spec = p.known.get(s, ("full", {}))
-        if known or (state == "full" and not spec):
+        if known or state == "full":          # known whole: a driver's component says no more
             return [point_term(ctx, lv, s.point, s.body, True)]
         if state == "none":
             return [point_term(ctx, lv, s.point, s.body, False)]

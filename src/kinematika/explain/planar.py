@@ -15,6 +15,8 @@ from .context import Ctx, alpha_sym, omega_sym, segment
 from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .group import group_blocks
 from .higher import higher_pair_steps
+from .contacts import geometric_blocks
+from .kinds import turns
 from .order import Step
 from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
@@ -36,6 +38,7 @@ class PlanarSteps:
         self.done: set[str] = set()          # point labels already explained
         self.used: set[str] = set()          # joints already written
         self.stated: set[int] = set()        # drivers already stated
+        self.geometric: set[str] = set()     # rolling joints whose v_J^geom is derived
 
     def section(self) -> Section:
         """The velocity (or acceleration) section: its introduction, then one subsection per
@@ -113,8 +116,8 @@ class PlanarSteps:
                     for d in self.ctx.model.drivers)
         if j.type != "revolute":
             out: list = [self.same(body, self.ctx.frame, j)]
-        elif given and self.ctx.symbolic:
-            out = []            # "Given: ω_2 = w" says it all (no sense to add to a formula)
+        elif given:
+            out = []            # "Given: ω_2 = …" says it all
         else:
             out = [self.rate(body)]
         if j.type == "revolute":
@@ -246,7 +249,8 @@ class PlanarSteps:
         target = Term(Sym("a", f"{name}∈{j.b}"), ctx.clean(ctx.acc(j.b, name), "accel"),
                       Ann("?"), Ann("?"), unknown=True, kind="point")
         eq = Equation(target, [sides[0], sides[1] + [rel]], "a", ctx.ref(name, j.b), position=contact.point)
-        return [msg("rolling.kept", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(name)), eq]
+        return [msg("rolling.kept", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(name))] + \
+            geometric_blocks(ctx, j, self.geometric) + [eq]
 
     def contact_name(self, j: Joint) -> str:
         """The name the explanation gives joint `j`'s contact point (J, J1 …; `Ctx.contact`)."""
@@ -404,10 +408,12 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
         unit = "rate" if level == "v" else "rate2"
         return msg("driver.omega", sym=sym, value=Value(ctx.clean(inst.value(given, where), unit), unit))
     if d.kind == "joint":
-        turning = ctx.model.joint(d.joint).type in ("revolute", "wheel", "cylindrical")
+        turning = turns(ctx.model.joint(d.joint))
         unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")
         value = Value(ctx.clean(inst.value(given, where), unit), unit)
-        return msg("driver.joint" if level == "v" else "driver.joint_accel", joint=joint(d.joint), value=value)
+        key = {(True, "v"): "driver.joint", (True, "a"): "driver.joint_accel", (False, "v"): "driver.slide",
+               (False, "a"): "driver.slide_accel"}[(turning, level)]
+        return msg(key, joint=joint(d.joint), value=value)
     unit = "speed" if level == "v" else "accel"
     sym = Sym("v" if level == "v" else "a", ctx.point_label(d.point.point, d.point.body))
     if d.along is not None:

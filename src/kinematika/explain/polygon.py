@@ -21,8 +21,9 @@ OFFSET = 0.035          # of the polygon's size: the gap between collinear arrow
 SAME = 1e-9             # relative: two points (or arrows) are one
 
 
-def level_polygon(ctx: Ctx, equations: list[Equation], level: str) -> Figure | None:
-    """The polygon of all the planar equations of a level ('v' or 'a'), or None."""
+def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = False) -> Figure | None:
+    """The polygon of all the planar equations of a level ('v' or 'a'), or of one step's
+    (`step`), or None."""
     eqs = [e for e in equations if e.level == level]
     if not ctx.planar or not eqs:
         return None
@@ -31,8 +32,8 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str) -> Figure | N
         poly.equation(eq)
     if not poly.arrows:
         return None
-    fig = Figure(msg("fig.level_v" if level == "v" else "fig.level_a"), unit="speed" if level == "v" else "accel",
-                 sample=ctx.symbolic)
+    key = ("fig.step_v" if level == "v" else "fig.step_a") if step else ("fig.level_v" if level == "v" else "fig.level_a")
+    fig = Figure(msg(key), unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + [(name, xy, "image") for name, xy in poly.images.items()
                                                  if not poly.at_pole(xy)]
@@ -50,7 +51,8 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
     styles = {a.style for a in poly.arrows}
     fig = Figure(msg("fig.polygon_v" if eq.level == "v" else "fig.polygon_a",
                      unknown=int("unknown" in styles), result=int("result" in styles)),
-                 arrows=_separated(poly.arrows), unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic)
+                 arrows=_separated(poly.arrows), unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic,
+                 values=ctx.drawn_values())
     fig.points = [("o", (0.0, 0.0), "pole")] + [(n, xy, "image") for n, xy in poly.images.items()
                                                  if not poly.at_pole(xy)]
     return fig
@@ -77,7 +79,7 @@ class _Builder:
         for side in eq.sides:
             tip = origin
             for term in side:
-                step = self.ctx.num(term.value)
+                step = self.ctx.drawn(term.value)
                 if step[0] == 0 and step[1] == 0:
                     continue
                 end = (tip[0] + step[0], tip[1] + step[1])
@@ -90,7 +92,7 @@ class _Builder:
                     style = ("unknown" if term.unknown else "known") if self.single else "known"
                     self._arrow(Arrow(tip, end, term.sym, style))
                 tip = end
-        end = self.ctx.num(eq.target.value)
+        end = self.ctx.drawn(eq.target.value)
         if end != origin and eq.target.sym.base in ("v", "a"):
             if not eq.target.sym.sup:
                 self._image(eq.target.sym.sub, end)
@@ -118,9 +120,17 @@ def _close(p: tuple, q: tuple, size: float) -> bool:
 
 
 def _letter(label: str) -> str:
-    """The image of a point in the polygon: its name in lower case (A → a, O4 → o4)."""
-    name = label.split("∈")[0].split("/")[0]
-    return name.lower() if name and name[0].isalpha() else ""
+    """The image of a material point in the polygon: its name in lower case (A → a, O4 →
+    o4), with the body when the label names one (B∈2, the guide's point under the block:
+    b∈2, apart from the block's own b). The image of a motion relative to a body (B/2)
+    is not a point's: no letter."""
+    if "/" in label:
+        return ""
+    name, _, body = label.partition("∈")
+    if not name or not name[0].isalpha():
+        return ""
+    letter = name.lower() if name.lower() != "o" else "o′"       # the pole is o: a point O's image is o′
+    return letter + (f"∈{body}" if body else "")
 
 
 def _separated(arrows: list[Arrow]) -> list[Arrow]:

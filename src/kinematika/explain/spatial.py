@@ -38,8 +38,9 @@ def rates_section(ctx: Ctx) -> Section:
     """ω = ω_carrier + ω_rel and α = α_carrier + α_rel + ω_carrier × ω_rel, body by body."""
     sec = Section(msg("sec.rates"))
     vec = not ctx.planar
-    w1, w2 = omega_sym("1", vector=vec), omega_sym("2", vector=vec)
-    a1, a2 = alpha_sym("1", vector=vec), alpha_sym("2", vector=vec)
+    # in words, drag and relative: indices 1, 2 would read as bodies (the frame is body 1)
+    w1, w2 = Sym("ω", sub_key="sub.drag", vector=vec), Sym("ω", sub_key="sub.rel", vector=vec)
+    a1, a2 = Sym("α", sub_key="sub.drag", vector=vec), Sym("α", sub_key="sub.rel", vector=vec)
     sec.add(msg("rates.intro", w=Inline([omega_sym("", vector=vec), " = ", w1, " + ", w2]),
                 a=Inline([alpha_sym("", vector=vec), " = ", a1, " + ", a2, " + ", w1, " × ", w2])))
     sec.blocks += loop_blocks(ctx)
@@ -170,11 +171,14 @@ def fields_section(ctx: Ctx, level: str) -> Section:
     sec = Section(msg("sec.velocities" if level == "v" else "sec.accelerations"))
     sec.add(msg("fields.intro"))
     done: set[str] = set()
-    for body, _, at in carriers(ctx):
+    order = carriers(ctx)
+    order = [c for c in order if c[2]] + [c for c in order if not c[2]]   # joint points first
+    for body, _, at in order:
         points = ctx.model.bodies[body].points
         if not points:
             continue
-        anchor = at if at in points else points[0]
+        reached = [p for p in points if ctx.point_label(p, body) in done]
+        anchor = at if at in points else (reached or points)[0]
         done.add(ctx.point_label(anchor, body))
         for p in points:
             label = ctx.point_label(p, body)
@@ -216,9 +220,9 @@ def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> l
                              Ann("D"), ["2 ", omega_sym(moving, vector=not ctx.planar), " × ",
                                         Sym("v", p, sub_key="sub.rel")], kind="coriolis"))
         target = Term(Sym(level, p), ctx.clean(got["total"], unit), *KNOWN, kind="point")
-        out.append(Equation(target, [side], level, ref, figure=ctx.planar))
         out += [msg("composition.drag")] + _drag(ctx, level, p, moving, pivot, drag.sym)
         out += [msg("composition.relative")] + _relative(ctx, level, ref, moving, pivot, rel.sym)
+        out.append(Equation(target, [side], level, ref, figure=ctx.planar))   # the parts found, their sum
     return out
 
 
@@ -281,21 +285,13 @@ def _relabel(term: Term, sym: Sym) -> Term:
 
 
 def composition_pairs(ctx: Ctx) -> list[tuple[PointRef, str, Optional[str]]]:
-    """The model's `decompose` questions, and in 3D each point carried by a moving body."""
+    """The model's `decompose` questions (only what is asked: a composition nobody asked
+    for, each point of each carried body, is noise)."""
     out = []
     for q in ctx.model.questions:
         if q.kind == "decompose" and q.relative_to in (None, ctx.frame):
             ref = ctx.model.resolve_point(q.target) if isinstance(q.target, str) else q.target
             out.append((ref, q.moving, _pivot(ctx, ref.body, q.moving)))
-    if ctx.planar:
-        return out
-    for body, parent, at in carriers(ctx):
-        if parent in (None, ctx.frame):
-            continue
-        for p in ctx.model.bodies[body].points:
-            ref = PointRef(p, body)
-            if p != at and all(r != ref or m != parent for r, m, _ in out):
-                out.append((ref, parent, at))
     return out
 
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
-from .document import Arrow, Drawing, Figure, Inline, Section, Table, Value, body, joint, msg, names, point
+from .document import Arrow, Drawing, Figure, Inline, Name, Section, Table, Told, Value, body, joint, msg, names, point
 from .order import Step
 
 
@@ -18,13 +18,15 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model, sol = ctx.model, ctx.sol
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
-    bodies = [[str(numbers[name]), msg("structure.frame", body=body(name)) if name == ctx.frame else body(name),
+    bodies = [[str(numbers[name]), msg("structure.frame", body=Name(name, "body", bare=True)) if name == ctx.frame
+               else Name(name, "body", bare=True),
                [point(p) for p in b.points],
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
     joints = [[joint(j.id), msg(f"joint.{j.type}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]
+    sec.add(Told("points", list(model.points)))
     sec.add(Table([msg("col.joint"), msg("col.type"), msg("col.bodies"), msg("col.where")], joints))
     d = sol.solver.analysis.diagnosis
     sec.add(msg("structure.dof", n=d.n, moving=len(model.moving_bodies), rank=d.n - d.dof, dof=d.dof,
@@ -54,6 +56,11 @@ def _where(ctx: Ctx, j) -> Inline | str:
     return Inline(parts) if parts else "—"
 
 
+# inches: an explanation's drawing is set at its own size, 432 pt, under the 482 pt of an A4 page's
+# text (2 cm margins): its 9 pt labels print at 9 pt (docs/explain.md, "Printing")
+PRINT_WIDTH = 6.0
+
+
 def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
     """The `draw` figure of the solution with these options (for LaTeX, the mechanism as
     TikZ when planar); for a symbolic model, the numbers it is drawn at."""
@@ -61,6 +68,7 @@ def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
 
     fallback = mechanism_figure(ctx) if ctx.planar and caption == "fig.mechanism" else None
     values = {str(k): v for k, v in sorted(drawing_values(ctx.inst).items(), key=lambda kv: str(kv[0]))}
+    options.setdefault("width", PRINT_WIDTH)
     return Drawing(msg(caption, dim=ctx.space.dim), ctx.sol, options, fallback, values)
 
 
@@ -94,10 +102,11 @@ def mechanism_figure(ctx: Ctx) -> Figure:
     return fig
 
 
-def values_table(ctx: Ctx) -> Table:
-    """ω and α of every body, the solver's values."""
-    rows = [[b, Value(ctx.clean(ctx.omega(b), "rate") if ctx.planar else
-                      ctx.clean(tuple(ctx.omega(b)), "rate"), "rate"),
-             Value(ctx.clean(ctx.alpha(b), "rate2") if ctx.planar else
-                   ctx.clean(tuple(ctx.alpha(b)), "rate2"), "rate2")] for b in ctx.model.moving_bodies]
-    return Table([msg("col.body"), msg("col.omega"), msg("col.alpha")], rows)
+def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
+    """ω (and α, when accelerations are explained) of every body, the solver's values."""
+    def value(x, unit: str) -> Value:
+        return Value(ctx.clean(x if ctx.planar else tuple(x), unit), unit)
+
+    rows = [[Name(b, "body", bare=True), value(ctx.omega(b), "rate")]
+            + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies]
+    return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)

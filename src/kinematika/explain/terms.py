@@ -80,8 +80,9 @@ def target_term(ctx: Ctx, level: str, point: str, body: str, known: bool,
 
 def contact_term(ctx: Ctx, name: str, body: str, other: str) -> Term:
     """a_J∈body − a_J∈other at a rolling contact without slip: along the common normal,
-    ω_body/other × (v_J∈other − J̇), with J̇ the velocity of the geometric contact point."""
+    ω_body/other × (v_J∈other − v_J^geom), with v_J^geom the velocity of the geometric contact
+    point (derived where the term is used: `contacts.geometric_blocks`)."""
     return Term(Sym("a", f"{name}∈{body}/{other}"), ctx.clean(ctx.acc(body, name, other), "accel"),
                 Ann("M"), Ann("para", Msg("dir.normal", {})),
-                [omega_sym(body, other), " × (", Sym("v", f"{name}∈{other}"), " − ", Sym("v", name, "g"), ")"],
+                [omega_sym(body, other), " × (", Sym("v", f"{name}∈{other}"), " − ", Sym("v", name, "geom"), ")"],
                 False, "contact")

@@ -31,6 +31,9 @@ class Contact:
     jdot: Callable[[Motion], tuple]                # velocity of the geometric point J
     jddot: Callable[[Motion], tuple]               # its acceleration
     normal: tuple = ()                             # unit normal at J (planar: from a towards b)
+    centres: tuple = ()                            # ((body, centre), …) of the circles that touch
+    ratio: Any = None                              # circles: J = Cₐ + ratio (C_b − Cₐ)
+    line_body: str = ""                            # circle–line: the body of the line
 
 
 def find_contact(inst: Instant, joint: Joint) -> Contact:
@@ -112,7 +115,8 @@ def _circles(inst: Instant, joint: Joint, ca: Circle, cb: Circle) -> tuple[float
     unit = scale(1 / inst.backend.sqrt(dot(d, d)), d)
     normal = unit if kind == "external" or a_outer else scale(-1, unit)
     return gaps[kind], Contact(joint, point, kind, jdot, jddot,
-                               tuple(inst.backend.simplify(c) for c in normal))
+                               tuple(inst.backend.simplify(c) for c in normal),
+                               ((sa, ca.center), (sb, cb.center)), mu)
 
 
 def _circle_line(inst: Instant, joint: Joint, c: Circle, cbody: str, ln: Line, lbody: str,
@@ -138,7 +142,8 @@ def _circle_line(inst: Instant, joint: Joint, c: Circle, cbody: str, ln: Line, l
     # normal from body a towards body b
     towards_circle = scale(1 if hn >= 0 else -1, n)
     normal = towards_circle if sign == 1 else scale(-1, towards_circle)
-    return gap, Contact(joint, point, "circle-line", jdot, jddot, normal)
+    return gap, Contact(joint, point, "circle-line", jdot, jddot, normal, ((cbody, c.center),),
+                        line_body=lbody)
 
 
 def _root(square: Any, inst: Instant) -> Any:

@@ -77,6 +77,7 @@ class _Builder:
         model.questions = self.questions()
         model.default_questions = self.spec.ask is None
         model.draw_at, model.up = self.figure_hints(params, dimension)
+        model.wording = self.wording(params, model.name)
         model.move = self.move()
         if spec.exercise is not None:
             from .exercise_section import exercise_section
@@ -89,6 +90,14 @@ class _Builder:
         from .figure_hints import draw_values, up_vector
 
         return draw_values(self.spec.draw_at, params), up_vector(self.spec.up, dimension)
+
+    def wording(self, params: dict[str, Parameter], title: str) -> Any:
+        """`names` (titles, bodies, points, notes per language) and `notation`."""
+        from .wording import read_wording
+
+        joints = {j.id: j for j in self.joint_list}
+        return read_wording(self.spec.names, self.spec.notation, self.body_map, self.point_coords, params, title,
+                            joints)
 
     # parameters and points -------------------------------------------------------------
     def parameters(self) -> dict[str, Parameter]:

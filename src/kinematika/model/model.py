@@ -18,6 +18,14 @@ from ..expressions import Expr
 if TYPE_CHECKING:
     from .constructions import Construction
     from .exercise_section import ExerciseSection
+    from .wording import Wording
+
+
+def _wording() -> "Wording":
+    from .wording import Wording
+
+    return Wording()
+
 
 ExprVector = tuple[Expr, ...]
 
@@ -257,6 +265,7 @@ class Model:
     draw_at: dict[str, float] = field(default_factory=dict)   # figures: values of the symbols
     up: Optional[tuple[float, ...]] = None                    # figures: the vertical (3D)
     exercise: Optional["ExerciseSection"] = None              # `kinematika exercise` (its section)
+    wording: "Wording" = field(default_factory=_wording)   # words per language, notation
 
     _index: Optional["_Index"] = field(default=None, init=False, repr=False, compare=False)
 

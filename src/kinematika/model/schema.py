@@ -310,6 +310,15 @@ class ExerciseSpec(Strict):
     ask: Optional[list[StrictInt]] = None
     tolerance: Union[StrictInt, StrictFloat] = 0.01
     dimensions: list[DimensionSpec] = Field(default_factory=list)
+class LanguageNames(Strict):
+    """How a model's things are called in one language (`names.LANG`): explanations and
+    figures only (see `model.wording`)."""
+
+    title: Optional[str] = None
+    bodies: dict[str, str] = Field(default_factory=dict)
+    points: dict[str, str] = Field(default_factory=dict)
+    joints: dict[str, str] = Field(default_factory=dict)
+    notes: list[str] = Field(default_factory=list)
 
 
 class ModelSpec(Strict):
@@ -333,3 +342,5 @@ class ModelSpec(Strict):
     draw_at: Optional[dict[str, Union[StrictInt, StrictFloat]]] = None   # figures: symbols' values
     up: Optional[list[Union[StrictInt, StrictFloat]]] = None             # figures: the vertical (3D)
     exercise: Optional[ExerciseSpec] = None                             # `kinematika exercise`
+    names: Optional[dict[str, LanguageNames]] = None                     # words per language
+    notation: Optional[dict[str, Union[str, dict[str, str]]]] = None     # how quantities are written

@@ -149,6 +149,13 @@ ExerciseSpec, exercise_spec = record('ExerciseSpec', {
     'tolerance': (exact(int, float), 0.01),
     'dimensions': (listed(dimension_spec), list),
 })
+LanguageNames, language_names = record('LanguageNames', {
+    'title': (optional(exact(str)), None),
+    'bodies': (mapping(exact(str)), dict),
+    'points': (mapping(exact(str)), dict),
+    'joints': (mapping(exact(str)), dict),
+    'notes': (listed(exact(str)), list),
+})
 ModelSpec, model_spec = record('ModelSpec', {
     'name': (optional(exact(str)), None),
     'description': (optional(exact(str)), None),
@@ -165,12 +172,14 @@ ModelSpec, model_spec = record('ModelSpec', {
     'draw_at': (optional(mapping(exact(int, float))), None),
     'up': (optional(listed(exact(int, float))), None),
     'exercise': (optional(exercise_spec), None),
+    'names': (optional(mapping(language_names)), None),
+    'notation': (optional(mapping(either(exact(str), mapping(exact(str))))), None),
 })
 
 RECORDS = (
     ModelSpec, ParameterSpec, PolarSpec, FrameSpec, CirclesSpec, CircleLineSpec, LineSpec, LinesSpec,
     BodySpec, CircleSpec, DiscSpec, PlaneSpec, CurveSpec, JointSpec, OmegaDriver, JointDriver,
-    VelocityDriver, QuestionSpec, SweepSpec, ExerciseSpec, DimensionSpec,
+    VelocityDriver, QuestionSpec, SweepSpec, ExerciseSpec, DimensionSpec, LanguageNames,
 )
 
 

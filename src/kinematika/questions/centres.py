@@ -1,10 +1,13 @@
 """Every instant centre of every pair of bodies, and how each is found (planar).
 
 The centres themselves come from the solved velocities (`icr.instant_centre`). Alongside,
-the textbook's reasoning is reconstructed: a pair joined directly has its centre at the
-joint (revolute point, rolling contact, at infinity across a prismatic guide); the other
-centres follow by Aronhold–Kennedy — the centres of three bodies taken two by two lie on
-one line — as the intersection of two such lines.
+the textbook's reasoning is reconstructed from the structure alone: a pair joined directly
+has its centre at the joint (revolute point, rolling contact, at infinity across a
+prismatic guide); a body welded to another shares its centres; the other centres follow by
+Aronhold–Kennedy — the centres of three bodies taken two by two lie on one line — as the
+intersection of two such lines, or of one with a line a joint gives (the normal to a slot
+at its pin, the axle of a knife-edge wheel). A centre none of these reaches is found from
+the velocities (`how` "velocities").
 """
 from __future__ import annotations
 
@@ -22,8 +25,10 @@ class Centre:
 
     pair: tuple[str, str]
     value: dict[str, Any]                  # {"point": p} | {"point": None, "direction": d} | rest
-    how: str                               # "joint", "kennedy" or "velocities"
-    via: list[str] = field(default_factory=list)   # the joint id, or the two third bodies
+    how: str                               # "joint", "weld", "kennedy", "lines" or "velocities"
+    via: list[str] = field(default_factory=list)   # the joint id, the weld and the body welded,
+                                                   # the two third bodies, or (lines) each line's
+    lines: list[tuple[str, str]] = field(default_factory=list)   # ("third", body) | ("joint", id)
 
     @property
     def finite(self) -> bool:
@@ -45,7 +50,8 @@ def direct_centre(sol: Solution, a: str, b: str) -> Optional[tuple[str, str]]:
 
 
 def all_centres(sol: Solution) -> list[Centre]:
-    """One `Centre` per pair of bodies, direct ones first, then in the order Kennedy finds them."""
+    """One `Centre` per pair of bodies: direct ones first, then in the order the structure
+    finds them (welds, Kennedy, Kennedy with a joint's line), the rest from the velocities."""
     bodies = list(sol.model.bodies)
     known: dict[frozenset, Centre] = {}
     for a, b in combinations(bodies, 2):
@@ -60,16 +66,97 @@ def all_centres(sol: Solution) -> list[Centre]:
             key = frozenset((a, b))
             if key in known:
                 continue
-            thirds = [k for k in bodies if k not in (a, b) and frozenset((a, k)) in known
-                      and frozenset((k, b)) in known and _is_line(known, a, k, b)]
-            if len(thirds) >= 2:
-                known[key] = Centre((a, b), instant_centre(sol, b, a), "kennedy", thirds[:2])
+            reached = _structural(sol, known, bodies, a, b)
+            if reached is not None:
+                known[key] = reached
                 progress = True
     out = list(known.values())
     for a, b in combinations(bodies, 2):
         if frozenset((a, b)) not in known:
             out.append(Centre((a, b), instant_centre(sol, b, a), "velocities"))
     return out
+
+
+def _structural(sol: Solution, known: dict, bodies: list[str], a: str, b: str) -> Optional[Centre]:
+    """The centre of (a, b) from centres already known: by a weld, by two Kennedy lines, or by
+    Kennedy lines and the lines joints give; None when the structure does not yet fix it."""
+    for x, y in ((a, b), (b, a)):
+        for j, other in _welded(sol, y):
+            if other != x and frozenset((x, other)) in known and not known[frozenset((x, other))].value.get("rest"):
+                pair = (a, b)
+                return Centre(pair, instant_centre(sol, b, a), "weld", [j, other])
+    thirds: list[str] = []
+    for k in bodies:        # a body welded to a third already taken gives the same line: once
+        if (k not in (a, b) and frozenset((a, k)) in known and frozenset((k, b)) in known
+                and _is_line(known, a, k, b) and not any(other in thirds for _, other in _welded(sol, k))):
+            thirds.append(k)
+    if len(thirds) >= 2:
+        return Centre((a, b), instant_centre(sol, b, a), "kennedy", thirds[:2])
+    candidates = [("third", k, _kennedy_line(sol, known, a, k, b)) for k in thirds]
+    candidates += [("joint", j.id, _joint_line(sol, j)) for j in sol.model.joints
+                   if {j.a, j.b} == {a, b} and crossed_by_a_normal(j)]
+    lines: list[tuple[str, str, tuple]] = [(kind, name, line) for kind, name, line in candidates if line is not None]
+    for i, first in enumerate(lines):
+        for second in lines[i + 1:]:
+            if not _same_line(sol, first[2], second[2]):
+                return Centre((a, b), instant_centre(sol, b, a), "lines", [first[1], second[1]],
+                              [(first[0], first[1]), (second[0], second[1])])
+    return None
+
+
+def crossed_by_a_normal(j: Any) -> bool:
+    """Whether the joint puts the relative centre of its bodies on one line through it: the
+    normal to a slot at its pin, the axle of a knife-edge wheel (no velocity across them),
+    the common normal at a contact that slides (a cam)."""
+    return bool(j.kind.guides_point or j.kind.centre == "normal")
+
+
+def _welded(sol: Solution, body: str) -> list[tuple[str, str]]:
+    """(weld joint, other body) of each weld of `body`: the two are one rigid body."""
+    return [(j.id, j.b if j.a == body else j.a) for j in sol.model.joints
+            if body in (j.a, j.b) and j.kind.rigid]
+
+
+def _kennedy_line(sol: Solution, known: dict, a: str, k: str, b: str) -> Optional[tuple]:
+    """(point, direction) as floats of the line through the centres a–k and k–b."""
+    c1, c2 = known[frozenset((a, k))].value, known[frozenset((k, b))].value
+    p1, p2 = c1.get("point"), c2.get("point")
+    if p1 is None and p2 is None:
+        return None
+    if p1 is None or p2 is None:
+        p, c = (p1, c2) if p2 is None else (p2, c1)
+        d = c.get("direction")
+        return None if d is None else (_floats(sol, p), _floats(sol, d))
+    x, y = _floats(sol, p1), _floats(sol, p2)
+    d = (y[0] - x[0], y[1] - x[1])
+    return None if (d[0] ** 2 + d[1] ** 2) ** 0.5 <= 1e-9 * sol.inst.scale else (x, d)
+
+
+def _joint_line(sol: Solution, j: Any) -> Optional[tuple]:
+    """(point, direction) as floats of the normal to a slot or a wheel's plane at its point,
+    or of the common normal at a contact."""
+    geo = sol.solver.geos.get(j.id)
+    contact = getattr(geo, "contact", None) if geo is not None else None
+    if contact is not None and getattr(contact, "normal", None) and getattr(contact, "point", None) is not None:
+        return _floats(sol, contact.point), _floats(sol, contact.normal)
+    if geo is None or geo.at is None or geo.along is None:
+        return None
+    e = _floats(sol, geo.along)
+    return _floats(sol, geo.at), (-e[1], e[0])
+
+
+def _same_line(sol: Solution, l1: tuple, l2: tuple) -> bool:
+    """Whether two lines are one (parallel lines that are two meet at infinity: a centre)."""
+    (p, d), (q, e) = l1, l2
+    nd, ne = (d[0] ** 2 + d[1] ** 2) ** 0.5, (e[0] ** 2 + e[1] ** 2) ** 0.5
+    if abs(d[0] * e[1] - d[1] * e[0]) > 1e-9 * nd * ne:
+        return False
+    w = (q[0] - p[0], q[1] - p[1])
+    return abs(d[0] * w[1] - d[1] * w[0]) <= 1e-9 * nd * sol.inst.scale
+
+
+def _floats(sol: Solution, v: Any) -> tuple:
+    return tuple(float(sol.inst.num(c)) for c in v)
 
 
 def _pin(sol: Solution, found: tuple[str, str]) -> str | None:

@@ -15,7 +15,8 @@ from .json_answer import answer_scales, where
 from .tables import print_where, show
 from .values import plain
 
-HOW = {"joint": "joint {}", "kennedy": "Kennedy via {}", "velocities": "from the velocities"}
+HOW = {"joint": "joint {}", "weld": "weld {} (one body with {})", "kennedy": "Kennedy via {}",
+       "lines": "on the lines of {}", "velocities": "from the velocities"}
 
 
 def centres_data(sol: Solution) -> dict[str, Any]:
@@ -52,7 +53,8 @@ def print_centres(data: dict[str, Any], console: Console | None = None) -> None:
             where = f"at infinity, direction {show(row['direction'])}"
         else:
             where = show(row["point"])
-        how = HOW[row["how"]].format(" and ".join(row["via"]))
+        how = HOW[row["how"]].format(*row["via"]) if row["how"] == "weld" else \
+            HOW[row["how"]].format(" and ".join(row["via"]))
         table.add_row(markup(" – ".join(row["bodies"])), markup(where), markup(how))
     console.print(table)
     print_where(data, console)

@@ -130,10 +130,10 @@ sec-velocities = Velocitats
 sec-accelerations = Acceleracions
 v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites; en vermell, els termes trobats en el pas.
 a-intro = Conegudes les velocitats, tots els termes normals i de Coriolis són coneguts; les incògnites són els termes tangencials i relatius.
-a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada cos.
+a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
 driver-omega = Dada: { $sym } = { $value }.
-driver-joint = Dada: la velocitat de l’enllaç { $joint } és { $value }.
-driver-joint_accel = Dada: l’acceleració de l’enllaç { $joint } és { $value }.
+driver-joint = Dada: la velocitat angular relativa a l’articulació { $joint } és { $value }.
+driver-joint_accel = Dada: l’acceleració angular relativa a l’articulació { $joint } és { $value }.
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
 input-revolute = { $body } gira al voltant del punt fix { $point }: els seus punts descriuen circumferències centrades a { $point }.
@@ -185,6 +185,7 @@ sub-rel = REL
 sub-drag = ar
 sub-cor = Cor
 sec-rates_summary = Velocitats i acceleracions angulars
+sec-rates_summary_v = Velocitats angulars
 sec-centres = Centres instantanis de rotació (CIR)
 centres-intro = I amb els números de dos sòlids ({ $example }: sòlids 1 i 3) és el CIR del seu moviment relatiu: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
@@ -194,7 +195,7 @@ centre-joint-gear = el contacte de les circumferències primitives de l’engran
 centre-joint-prismatic = l’enllaç { $joint } és prismàtic: el moviment relatiu és una translació i el CIR és a la perpendicular a la guia,
 centre-joint-weld = l’enllaç { $joint } uneix rígidament els dos sòlids:
 centre-kennedy = per Aronhold–Kennedy és a la recta que passa per { $l1 } (tercer sòlid { $k1 }) i a la recta que passa per { $l2 } (tercer sòlid { $k2 }); aquestes rectes es tallen
-centre-velocities = les velocitats respecte { ELISION($frame) ->
+centre-velocities = cap enllaç ni cap recta d’Aronhold–Kennedy no el situa abans de conèixer les velocitats; amb elles: les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } { ELISION($p) ->
@@ -204,11 +205,11 @@ centre-velocities = les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }, { $vq }, són perpendiculars a les rectes que els uneixen amb el CIR; les perpendiculars es tallen
-centre-lines = és sobre { $first } i sobre { $second }; aquestes rectes es tallen
-centre-omega = a partir de la velocitat d’un punt i de la velocitat angular respecte { ELISION($frame) ->
+centre-lines = és a { $first } i a { $second }; aquestes rectes es tallen
+centre-omega = amb les velocitats trobades, la velocitat angular respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, el CIR és
+    } és nul·la: el moviment relatiu és una translació i el CIR és
 centre-at = a { $point }.
 centre-infinity = a l’infinit, en la direcció { $direction }.
 centre-rest = no hi ha moviment relatiu.
@@ -283,7 +284,6 @@ ans-direction = direcció
 ans-center = centre de curvatura
 ans-tangent = tangent unitària
 ans-slide = velocitat al llarg de l’eix
-sub-geom = geom
 centre-proportional-between = per Aronhold–Kennedy és a la recta que passa per { $l1 } i a la que passa per { $l2 }, però són una mateixa recta i no el fixen. En aquesta recta les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
@@ -349,3 +349,53 @@ dir-tangent = tangent a { $point }
 dir-centre = cap al centre de curvatura { $point }
 higher-intro = El parell superior { $joint } s'escriu com el moviment de { $point } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l'acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
 higher-straight = El parell superior { $joint } s'escriu com el moviment de { $point } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).
+centre-weld = l’enllaç { $joint } uneix rígidament { $body } i { $other }: són un sol sòlid, de manera que el CIR és el { ELISION($other) ->
+        [vowel] d’{ $other }
+       *[other] de { $other }
+    }, { $same },
+centre-line-kennedy = la recta que passa per { $l } (Aronhold–Kennedy, tercer sòlid { $k })
+centre-line-slot = la normal a la ranura de l’enllaç { $joint } a { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
+centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
+centre-field = cap enllaç ni cap recta d’Aronhold–Kennedy no el situa abans de conèixer les velocitats; amb elles, 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+centre-check = Comprovació amb les velocitats trobades: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value }, el mateix punt: { $centre } és { $where }
+sec-contact = Punts de contacte
+geom-rule = La regla de tot contacte de rodolament: la condició de no lliscament es compleix a cada instant al punt geomètric de contacte (aquí { $geom }), que es mou; derivant-la al llarg d’aquest punt s’obté { $rule }: les components tangencials de les dues acceleracions són iguals i les normals difereixen en aquest terme, segons la normal comuna. Cal la velocitat del punt geomètric:
+geom-bar = { $geom }, el punt geomètric de contacte de l’enllaç { $joint }, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, a la mateixa fracció, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:
+geom-foot = { $geom }, el punt geomètric de contacte de l’enllaç { $joint }, és el peu de la perpendicular des del centre { $centre } a la recta { ELISION($line) ->
+        [vowel] d’{ $line }
+       *[other] de { $line }
+    }: { $radius } és un radi, perpendicular a la recta, i gira amb ella:
+contact-intro = Al contacte { $point } de l’enllaç { $joint } coincideixen tres punts amb cinemàtiques diferents: el punt { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    }, el punt { ELISION($b) ->
+        [vowel] d’{ $b }
+       *[other] de { $b }
+    } i el punt geomètric de contacte { $geom }, que no pertany a cap dels dos.
+contact-above = { $sym } = { $value }, obtinguda més amunt per a l’acceleració del contacte.
+contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }, que és fix, no es mou: { $sym } = 0.
+fig-step_v = Polígon de velocitats d’aquest pas, a escala: des del pol o, la velocitat de cada punt (blau) acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas (negre), l’un darrere l’altre.
+fig-step_a = Polígon d’acceleracions d’aquest pas, a escala: des del pol o, l’acceleració de cada punt (blau) acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas (negre), l’un darrere l’altre.
+col-point = punt
+col-what = què és
+note-text = Nota: { $text }
+sec-checks = Comprovacions
+check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->
+        [vowel] d’{ $carrier }
+       *[other] de { $carrier }
+    }, la transmissió és ordinària ({ $planet } engrana amb { $s1 } i amb { $s2 }, els eixos dels quals són els del portador), de manera que { $formula } = { $radii } = { $train }, amb { $r1 } i { $r2 }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.
+check-belt = Vista des { ELISION($holder) ->
+        [vowel] d’{ $holder }
+       *[other] de { $holder }
+    }, que porta els dos eixos, { $line } no llisca ni sobre { $a } ni sobre { $b }: { $equation }, de manera que { $ratio }; amb les velocitats angulars trobades, { $values }: coincideixen.
+check-train = La relació de la transmissió és el producte de les de les seves etapes: { $ratio }; amb les velocitats angulars trobades, la relació val { $value }.
+check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la seva oscil·lació quan la ranura és tangent a la circumferència { ELISION($pin) ->
+        [vowel] d’{ $pin }
+       *[other] de { $pin }
+    } (la manovella { $o2 }{ $pin } perpendicular a { $o4 }{ $pin }), on cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Girant uniformement, { $crank } escombra 360° − 2θ = { $slow } en una carrera i 2θ = { $fast } en l’altra: raó de temps { $ratio }.
+driver-slide = Dada: la velocitat de lliscament a l’enllaç { $joint } és { $value }.
+driver-slide_accel = Dada: l’acceleració de lliscament a l’enllaç { $joint } és { $value }.
+centre-line-normal = la normal comuna al contacte { $point } de l’enllaç { $joint } (els sòlids llisquen l’un sobre l’altre: cap velocitat relativa segons ella)

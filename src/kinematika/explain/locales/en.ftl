@@ -102,8 +102,8 @@ v-intro = Each vector equation is annotated as in the notes: M magnitude known, 
 a-intro = With the velocities known, every normal term and every Coriolis term is known; the tangential and relative terms are the unknowns.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
-driver-joint = Given: the rate of joint { $joint } is { $value }.
-driver-joint_accel = Given: the acceleration of joint { $joint } is { $value }.
+driver-joint = Given: the relative angular velocity at joint { $joint } is { $value }.
+driver-joint_accel = Given: the relative angular acceleration at joint { $joint } is { $value }.
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
 input-revolute = { $body } turns about the fixed pivot { $point }: its points move on circles about { $point }.
@@ -128,6 +128,7 @@ sub-rel = rel
 sub-drag = drag
 sub-cor = Cor
 sec-rates_summary = Angular velocities and accelerations
+sec-rates_summary_v = Angular velocities
 sec-centres = Instant centres
 centres-intro = I with the numbers of two bodies ({ $example }: bodies 1 and 3) is the instant centre of their relative motion: the point where the relative velocity is zero.
 centre-line = { $centre }: { $why } { $where }
@@ -137,9 +138,9 @@ centre-joint-gear = the contact of the pitch circles of gear { $joint },
 centre-joint-prismatic = joint { $joint } is prismatic: the relative motion is a translation and the centre is perpendicular to the guide,
 centre-joint-weld = joint { $joint } welds the two bodies:
 centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines meet
-centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
+centre-velocities = no joint and no Aronhold–Kennedy line places it before the velocities are known; with them: the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
 centre-lines = it lies on { $first } and on { $second }; these lines meet
-centre-omega = from the velocity of one point and the angular velocity relative to { $frame }, the centre is
+centre-omega = with the velocities found above, the angular velocity relative to { $frame } is zero: the relative motion is a translation and the centre is
 centre-at = at { $point }.
 centre-infinity = at infinity, in the direction { $direction }.
 centre-rest = there is no relative motion.
@@ -172,7 +173,6 @@ ans-direction = direction
 ans-center = centre of curvature
 ans-tangent = unit tangent
 ans-slide = velocity along the axis
-sub-geom = geom
 centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along the guide of joint { $joint }: its relative motion is along the guide, { $sym } = { $value }.
@@ -214,3 +214,29 @@ dir-tangent = tangent at { $point }
 dir-centre = towards the centre of curvature { $point }
 higher-intro = The higher pair { $joint } is written as the motion of { $point } along its path relative to { $holder } (a slot along the tangent, curved with radius { $radius }): the relative acceleration has a normal part v²/ρ towards the path's centre of curvature.
 higher-straight = The higher pair { $joint } is written as the motion of { $point } along a straight path relative to { $holder } (a slot along the tangent).
+centre-weld = joint { $joint } welds { $body } to { $other }: they are one body, so the centre is that of { $other }, { $same },
+centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
+centre-line-slot = the normal at { $point } to the slot of joint { $joint } (relative to the slotted body, { $point } can only move along the slot)
+centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
+centre-field = no joint and no Aronhold–Kennedy line places it before the velocities are known; with them, 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-check = Check with the velocities found above: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value }, the same point: { $centre } is { $where }
+sec-contact = Contact points
+geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
+geom-bar = { $geom }, the geometric contact point of joint { $joint }, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always at the same fraction of it, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
+geom-foot = { $geom }, the geometric contact point of joint { $joint }, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
+contact-intro = At the contact { $point } of joint { $joint } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
+contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.
+contact-fixed = { $sym }: { $point } as a point of { $body }, which is fixed, does not move: { $sym } = 0.
+fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point (blue) ends at its image, lettered as the point; between the images, the terms of this step’s equations (black), head to tail.
+fig-step_a = Acceleration polygon of this step, to scale: from the pole o, the acceleration of each point (blue) ends at its image, lettered as the point; between the images, the terms of this step’s equations (black), head to tail.
+col-point = point
+col-what = what it is
+note-text = Note: { $text }
+sec-checks = Checks
+check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles are the carrier’s), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.
+check-belt = Seen from { $holder }, which carries both axles, { $line } does not slip on { $a } nor on { $b }: { $equation }, so { $ratio }; with the angular velocities found above, { $values }: they agree.
+check-train = The train’s ratio is the product of its stages’: { $ratio }; with the angular velocities found above, the ratio is { $value }.
+check-quick = Time ratio of the quick return: { $lever } is at an end of its swing when the slot is tangent to the circle of { $pin } (the crank { $o2 }{ $pin } perpendicular to { $o4 }{ $pin }), where cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Turning steadily, { $crank } sweeps 360° − 2θ = { $slow } in one stroke and 2θ = { $fast } in the other: time ratio { $ratio }.
+driver-slide = Given: the sliding velocity at joint { $joint } is { $value }.
+driver-slide_accel = Given: the sliding acceleration at joint { $joint } is { $value }.
+centre-line-normal = the common normal at the contact { $point } of joint { $joint } (the bodies slide on each other there: no relative velocity along it)

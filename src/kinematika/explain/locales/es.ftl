@@ -100,10 +100,10 @@ sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
 v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas; en rojo, los términos hallados en el paso.
 a-intro = Conocidas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
-a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada cuerpo.
+a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
-driver-joint = Dato: la velocidad del par { $joint } es { $value }.
-driver-joint_accel = Dato: la aceleración del par { $joint } es { $value }.
+driver-joint = Dato: la velocidad angular relativa en el par { $joint } es { $value }.
+driver-joint_accel = Dato: la aceleración angular relativa en el par { $joint } es { $value }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
 input-revolute = { $body } gira alrededor del punto fijo { $point }: sus puntos describen circunferencias centradas en { $point }.
@@ -128,6 +128,7 @@ sub-rel = rel
 sub-drag = arr
 sub-cor = Cor
 sec-rates_summary = Velocidades y aceleraciones angulares
+sec-rates_summary_v = Velocidades angulares
 sec-centres = Centros instantáneos de rotación (CIR)
 centres-intro = I con los números de dos sólidos ({ $example }: sólidos 1 y 3) es el CIR de su movimiento relativo: el punto donde la velocidad relativa es nula.
 centre-line = { $centre }: { $why } { $where }
@@ -137,9 +138,9 @@ centre-joint-gear = el contacto de las circunferencias primitivas del engranaje 
 centre-joint-prismatic = el par { $joint } es prismático: el movimiento relativo es una traslación y el CIR está en la perpendicular a la guía,
 centre-joint-weld = el par { $joint } une rígidamente los dos sólidos:
 centre-kennedy = por Aronhold–Kennedy está en la recta que pasa por { $l1 } (tercer sólido { $k1 }) y en la recta que pasa por { $l2 } (tercer sólido { $k2 }); estas rectas se cortan
-centre-velocities = las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
+centre-velocities = ningún par ni ninguna recta de Aronhold–Kennedy lo sitúan antes de conocer las velocidades; con ellas: las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
 centre-lines = está en { $first } y en { $second }; estas rectas se cortan
-centre-omega = a partir de la velocidad de un punto y de la velocidad angular respecto de { $frame }, el CIR está
+centre-omega = con las velocidades halladas, la velocidad angular respecto de { $frame } es nula: el movimiento relativo es una traslación y el CIR está
 centre-at = en { $point }.
 centre-infinity = en el infinito, en la dirección { $direction }.
 centre-rest = no hay movimiento relativo.
@@ -172,7 +173,6 @@ ans-direction = dirección
 ans-center = centro de curvatura
 ans-tangent = tangente unitaria
 ans-slide = velocidad a lo largo del eje
-sub-geom = geom
 centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de la guía del par { $joint }: su movimiento relativo sigue la guía, { $sym } = { $value }.
@@ -214,3 +214,29 @@ dir-tangent = tangente en { $point }
 dir-centre = hacia el centro de curvatura { $point }
 higher-intro = El par superior { $joint } se escribe como el movimiento de { $point } por su trayectoria relativa a { $holder } (una ranura según la tangente, curva de radio { $radius }): la aceleración relativa tiene una parte normal v²/ρ hacia el centro de curvatura de la trayectoria.
 higher-straight = El par superior { $joint } se escribe como el movimiento de { $point } por una trayectoria recta relativa a { $holder } (una ranura según la tangente).
+centre-weld = el par { $joint } une rígidamente { $body } y { $other }: son un solo sólido, así que el CIR es el de { $other }, { $same },
+centre-line-kennedy = la recta que pasa por { $l } (Aronhold–Kennedy, tercer sólido { $k })
+centre-line-slot = la normal en { $point } a la ranura del par { $joint } (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
+centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
+centre-field = ningún par ni ninguna recta de Aronhold–Kennedy lo sitúan antes de conocer las velocidades; con ellas, 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
+centre-check = Comprobación con las velocidades halladas: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value }, el mismo punto: { $centre } está { $where }
+sec-contact = Puntos de contacto
+geom-rule = La regla de todo contacto de rodadura: la condición de no deslizamiento se cumple en cada instante en el punto geométrico de contacto (aquí { $geom }), que se mueve; derivándola a lo largo de él se obtiene { $rule }: las componentes tangenciales de las dos aceleraciones son iguales y las normales difieren en este término, según la normal común. Hace falta la velocidad del punto geométrico:
+geom-bar = { $geom }, el punto geométrico de contacto del par { $joint }, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, en la misma fracción de ella, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:
+geom-foot = { $geom }, el punto geométrico de contacto del par { $joint }, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
+contact-intro = En el contacto { $point } del par { $joint } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
+contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
+contact-fixed = { $sym }: { $point } como punto de { $body }, que es fijo, no se mueve: { $sym } = 0.
+fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto (azul) acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso (negro), uno tras otro.
+fig-step_a = Polígono de aceleraciones de este paso, a escala: desde el polo o, la aceleración de cada punto (azul) acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso (negro), uno tras otro.
+col-point = punto
+col-what = qué es
+note-text = Nota: { $text }
+sec-checks = Comprobaciones
+check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes son los del portasatélites), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
+check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas, { $values }: coinciden.
+check-train = La relación de la transmisión es el producto de las de sus etapas: { $ratio }; con las velocidades angulares halladas, la relación vale { $value }.
+check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extremo de su oscilación cuando la ranura es tangente a la circunferencia de { $pin } (la manivela { $o2 }{ $pin } perpendicular a { $o4 }{ $pin }), donde cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Girando uniformemente, { $crank } barre 360° − 2θ = { $slow } en una carrera y 2θ = { $fast } en la otra: razón de tiempos { $ratio }.
+driver-slide = Dato: la velocidad de deslizamiento en el par { $joint } es { $value }.
+driver-slide_accel = Dato: la aceleración de deslizamiento en el par { $joint } es { $value }.
+centre-line-normal = la normal común en el contacto { $point } del par { $joint } (los sólidos deslizan uno sobre otro: ninguna velocidad relativa según ella)

@@ -45,7 +45,7 @@ joint-cylindrical = zilindrikoa
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
-    }; gezi urdinak bere puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
+    }; gezi urdinak haren puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik: beltzez termino ezagunak{ $unknown ->
         [1] , gorriz urrats honetan aurkitutakoak
        *[other] {""}
@@ -84,7 +84,7 @@ pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
 order-assur = Mekanismoa bere sarreretan eta Assur taldeetan (diadetan) deskonposatzen da; talde bakoitza jadanik ezagunak diren solidoetatik ebazten da:
-order-blocks = Mekanismoa ez da diadetan deskonposatzen biela edo irristari eragileetatik abiatuta; beraz, ordena abiadura-ekuazioen bloke-triangeluar formatik dator, eta talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da:
+order-blocks = Mekanismoa ez da diadetan deskonposatzen biradera edo irristagailu eragileetatik abiatuta; beraz, ordena abiadura-ekuazioen bloke-triangeluar formatik dator, eta talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints } { $joints_n ->
         [one] lotura
        *[other] loturak
@@ -103,23 +103,23 @@ sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
 v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu; gorriz, urratsean aurkitutako terminoak.
 a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
-a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } gorputzaren ω-rako, eta horrela gorputz bakoitzerako.
+a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
-driver-joint = Datua: { $joint } loturaren abiadura { $value } da.
-driver-joint_accel = Datua: { $joint } loturaren azelerazioa { $value } da.
+driver-joint = Datua: { $joint } giltzadurako abiadura angeluar erlatiboa { $value } da.
+driver-joint_accel = Datua: { $joint } giltzadurako azelerazio angeluar erlatiboa { $value } da.
 driver-velocity = Datua: { $sym } = { $value }.
-driver-along = Datua: { $sym } abiaduraren { $along } norabideko osagaia { $value } da.
-input-revolute = { $body } { $point } puntu finkoaren inguruan biratzen da: bere puntuek { $point } zentrodun zirkunferentziak deskribatzen dituzte.
+driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
+input-revolute = { $body } { $point } puntu finkoaren inguruan biratzen da: haren puntuek { $point } zentrodun zirkunferentziak deskribatzen dituzte.
 input-prismatic = { $body } biratu gabe traslatzen da { $joint } loturaren gidan zehar.
 other-intro = Solido hauek batera aurkitzen dira beren loturen baldintzetatik:
 cond-revolute = { $joint } lotura, giltzadura { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
-cond-prismatic = { $joint } lotura, prismatikoa: { $b } { $a } solidoaren gainean irristatzen da, harekiko biratu gabe.
+cond-prismatic = { $joint } lotura, prismatikoa: { $b } solidoa { $a } solidoaren gainean irristatzen da, harekiko biratu gabe.
 cond-slot = { $joint } lotura, { $point } ziria arteka batean: artekadun solidoarekiko abiadura artekaren norabidean dago.
 cond-wheel = { $joint } lotura, gurpila { $point } puntuan: ez dago alboko abiadurarik { $a } solidoarekiko.
 cond-weld = { $joint } lotura: { $a } eta { $b } solido bakar bat bezala mugitzen dira.
 cond-spherical = { $joint } lotura, esferikoa { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
-cond-cylindrical = { $joint } lotura, zilindrikoa: { $b } { $a } solidoaren ardatzaren inguruan biratzen eta haren luzeran irristatzen da.
-rolling-noslip = { $joint } lotura: { $b } { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute.
+cond-cylindrical = { $joint } lotura, zilindrikoa: { $b } solidoa { $a } solidoaren ardatzaren inguruan biratzen eta haren luzeran irristatzen da.
+rolling-noslip = { $joint } lotura: { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute.
 rolling-kept = { $joint } lotura: kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak.
 dir-guide = { $joint } gida
 dir-normal = normala
@@ -131,6 +131,7 @@ sub-rel = erl
 sub-drag = arr
 sub-cor = Cor
 sec-rates_summary = Abiadura eta azelerazio angeluarrak
+sec-rates_summary_v = Abiadura angeluarrak
 sec-centres = Biraketa-zentro instantaneoak
 centres-intro = I ikurrak, bi solidoren zenbakiekin ({ $example }: 1 eta 3 solidoak), haien mugimendu erlatiboaren biraketa-zentro instantaneoa adierazten du: abiadura erlatiboa nulua den puntua.
 centre-line = { $centre }: { $why } { $where }
@@ -140,9 +141,9 @@ centre-joint-gear = { $joint } engranajearen zirkunferentzia primitiboen kontakt
 centre-joint-prismatic = { $joint } lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta zentroa gidaren perpendikularrean dago,
 centre-joint-weld = { $joint } loturak bi solidoak zurrunki lotzen ditu:
 centre-kennedy = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean dago ({ $k1 } hirugarren solidoa) eta { $l2 } zentroetatik pasatzen denean ({ $k2 } hirugarren solidoa); zuzen horiek ebakitzen dira
-centre-velocities = { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
-centre-lines = { $first } zuzenean eta { $second } zuzenean dago; zuzen horiek ebakitzen dira
-centre-omega = puntu baten abiaduratik eta { $frame } solidoarekiko abiadura angeluarretik, zentroa hemen dago:
+centre-velocities = ez lotura batek ez Aronhold–Kennedyren zuzen batek ez dute kokatzen abiadurak ezagutu aurretik; haiekin: { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
+centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek ebakitzen dira
+centre-omega = aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta zentroa
 centre-at = { $point } puntuan.
 centre-infinity = infinituan, { $direction } norabidean.
 centre-rest = ez dago mugimendu erlatiborik.
@@ -157,8 +158,8 @@ composition-relative = Erlatiboa: erreferentzia mugikorretik ikusten den mugimen
 sec-curvature = Ibilbideen kurbadura
 curvature-intro = Azelerazioa bi zatitan banatzen da: abiaduraren norabideko zati tangentziala eta harekiko perpendikularra den zati normala; kurbadura-erradioa { $rho } da.
 curvature-point = { $point } puntua: abiadura { $v }.
-curvature-rest = { $point } puntua geldirik dago: bere ibilbideak ez du kurbadurarik une honetan.
-curvature-straight = { $point } puntuaren azelerazio normala nulua da: bere ibilbidea zuzena da hemen (edo inflexio-puntu bat du).
+curvature-rest = { $point } puntua geldirik dago: haren ibilbideak ez du kurbadurarik une honetan.
+curvature-straight = { $point } puntuaren azelerazio normala nulua da: haren ibilbidea zuzena da hemen (edo inflexio-puntu bat du).
 curvature-centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $centre } puntuan dago, azelerazio normalaren aldean.
 sec-answers = Erantzunak
 answers-none = Ereduak ez du galderarik egiten.
@@ -175,19 +176,18 @@ ans-direction = norabidea
 ans-center = kurbadura-zentroa
 ans-tangent = ukitzaile unitarioa
 ans-slide = ardatzaren norabideko abiadura
-sub-geom = geom
-centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziaren proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
-centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziaren proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
-composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: bere mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
+centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
+centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
+composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
 composition-pin = { $point } puntua { $joint } loturaren ardatza da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
-vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da bere abiadura osoa: { $sym } = { $value }.
-vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (bere ardatza: gurpila ez da alboetara irristatzen)
+vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
+vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
 vehicle-line-velocity = { $sym } abiadurarekiko perpendikularra { $point } puntuan
-vehicle-centre = { $body } solidoaren biraketa-zentroa { $first } zuzenean eta { $second } zuzenean dago; { $centre } = { $where } puntuan ebakitzen dira. { $body } solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziaren proportzionala den abiadurarekin:
+vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira. { $body } solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
-triad-closure = { $point } barra hirutarraren puntu gisa ezaguna denez, bere { $pin } giltzadura diada batean bezala ixten da:
+triad-closure = { $point } barra hirutarraren puntu gisa ezaguna denez, haren { $pin } giltzadura diada batean bezala ixten da:
 loop-intro = { $bodies } solidoek begizta bat ixten dute: hura osatzean, abiadura angeluar erlatiboen batura zero da, bakoitza bere loturaren ardatzaren norabidean (hiru ekuazio eskalar { $axis } ardatzen norabideko { $rate } abiadura ezezagunetarako):
 loop-solve = Hiru osagaiek abiadura ezezagunak ematen dituzte:
 loop-solve_alpha = Ardatz finkoetan deribatuz, azelerazio angeluar erlatiboen eta { $cross } terminoen batura zero da begiztan; hiru osagaiek { $rate } ezezagunak ematen dituzte:
@@ -195,13 +195,13 @@ dir-axis = { $joint } ardatza
 dir-wheel = { $joint } gurpila
 how-weld = ({ $joint } lotura zurruna: solido bakarra)
 group-wheel_v = { $joint } gurpila ez da alboetara irristatzen: { $point } puntuaren abiadura gurpilaren planoan dago.
-group-wheel_a = { $joint } gurpila ez da inoiz alboetara irristatzen, eta bere planoa { $body } solidoarekin batera biratzen da: { $point } puntuaren azelerazioak zati tangentzial bat du planoan eta zati normal bat planoarekiko perpendikularra, { $w } × { $v }.
+group-wheel_a = { $joint } gurpila ez da inoiz alboetara irristatzen, eta haren planoa { $body } solidoarekin batera biratzen da: { $point } puntuaren azelerazioak zati tangentzial bat du planoan eta zati normal bat planoarekiko perpendikularra, { $w } × { $v }.
 how-translation = (traslatzen da)
 fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak eta gurpilen eta arteken perpendikularrak).
 fig-assur = { $point } Assur puntua: { $l1 } eta { $l3 } zuzenak (marra etenez) ebaki arte luzatuta; { $point } barra hirutarraren puntutzat hartzen da.
 fig-drawn_at = Balio hauekin marraztua: { $values }.
-fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura (urdinez) bere irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen abiadura erlatiboak (beltzez), bata bestearen ondoren.
-fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa (urdinez) bere irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak (beltzez: normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
+fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura (urdinez) haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen abiadura erlatiboak (beltzez), bata bestearen ondoren.
+fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa (urdinez) haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak (beltzez: normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
 col-number = zk.
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -217,3 +217,29 @@ dir-tangent = ukitzailea { $point } puntuan
 dir-centre = { $point } kurbadura-zentrorantz
 higher-intro = { $joint } goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko bere ibilbidean ({ $radius } erradioko arteka kurbatua, ukitzailearen norabidean): azelerazio erlatiboak v²/ρ osagai normala du ibilbidearen kurbadura-zentrorantz.
 higher-straight = { $joint } goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko ibilbide zuzen batean (arteka bat ukitzailearen norabidean).
+centre-weld = { $joint } loturak { $body } eta { $other } zurrunki lotzen ditu: solido bakarra dira; beraz, zentroa { $other } solidoarena da, { $same },
+centre-line-kennedy = { $l } zentroetatik pasatzen den zuzena (Aronhold–Kennedy, { $k } hirugarren solidoa)
+centre-line-slot = { $joint } loturaren artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
+centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
+centre-field = ez lotura batek ez Aronhold–Kennedyren zuzen batek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+centre-check = Egiaztapena aurkitutako abiadurekin: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du, puntu bera: { $centre }, { $where }
+sec-contact = Kontaktu-puntuak
+geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
+geom-bar = { $geom }, { $joint } loturaren kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, zati berean, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
+geom-foot = { $geom }, { $joint } loturaren kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
+contact-intro = { $joint } loturaren { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
+contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
+contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen, solidoa finkoa baita: { $sym } = 0.
+fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura (urdina) haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak (beltza), bata bestearen atzetik.
+fig-step_a = Urrats honetako azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa (urdina) haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak (beltza), bata bestearen atzetik.
+col-point = puntua
+col-what = zer den
+note-text = Oharra: { $text }
+sec-checks = Egiaztapenak
+check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak eramailearenak dira); beraz, { $formula } = { $radii } = { $train }, { $r1 } eta { $r2 } izanik. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
+check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
+check-train = Transmisioaren erlazioa etapen erlazioen biderkadura da: { $ratio }; aurkitutako abiadura angeluarrekin, erlazioa { $value } da.
+check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulunkaren mutur batean dago artekak { $pin } puntuaren zirkunferentzia ukitzen duenean ({ $o2 }{ $pin } biradera { $o4 }{ $pin } zuzenarekiko perpendikularra), non cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Abiadura konstantean biratuz, { $crank } solidoak 360° − 2θ = { $slow } egiten ditu kurtsa batean eta 2θ = { $fast } bestean: denbora-erlazioa { $ratio }.
+driver-slide = Datua: { $joint } loturako irristatze-abiadura { $value } da.
+driver-slide_accel = Datua: { $joint } loturako irristatze-azelerazioa { $value } da.
+centre-line-normal = { $joint } loturaren { $point } kontaktuko normal komuna (solidoak elkarren gainean irristatzen dira: ez dago abiadura erlatiborik haren norabidean)

@@ -10,13 +10,17 @@ from babel.lists import format_list
 from ...numerals import DECIMAL, decimal_sign, separator, written
 from ...text import shown
 
-from ..catalogue import Catalogue
+from ...model.wording import ARTICLES, NO_ARTICLE
+from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Msg, Name, Names,
-                        Section, Sym, Table, Value)
-from .svg import Text, sym_text
+                        Section, Sym, Table, Told, Value)
+from .svg import Text, plain_text, sym_text
 
 TOKEN = "\ue000{}\ue001"
 TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
+# what a name's markup begins with before its first letter, by format
+LEADING_MARKUP = {"html": re.compile(r"(?:<[^>]*>)*"), "md": re.compile(r"[*_]*"),
+                  "tex": re.compile(r"(?:\\[A-Za-z]+\{)*")}
 
 
 class Slot(str):
@@ -57,16 +61,21 @@ class Renderer:
     fmt = ""
 
     def __init__(self, doc: Document, cat: Catalogue, drawings: bool = True) -> None:
+        from ...model.wording import Wording
+
         self.doc = doc
         self.cat = cat
+        self.lang = cat.lang
+        self.wording = doc.wording or Wording()
         self.drawings = drawings
         self.decimal = decimal_sign(cat.lang)
         self.comma = separator(self.decimal)      # between a vector's components
 
     # the walk ---------------------------------------------------------------------------------
     def render(self) -> str:
-        """The whole document as one page of the format: its title, then every section."""
-        body = [self.heading(1, self.esc(visible(self.doc.title)))]
+        """The whole document as one page of the format: its title (the model's, in the
+        reader's language when it gives one), then every section."""
+        body = [self.heading(1, self.esc(visible(self.wording.title(self.lang, self.doc.title))))]
         body += [self.section(s) for s in self.doc.sections]
         return self.page("\n".join(body))
 
@@ -83,7 +92,7 @@ class Renderer:
         if isinstance(b, Section):
             return self.section(b)
         if isinstance(b, Msg):
-            return self.para(self.message(b))
+            return self.para(self.sentence(self.message(b, lead=True)))
         if isinstance(b, Equation):
             out = self.equation(b)
             return out + ("\n" + self.figure(b.polygon) if b.polygon is not None else "")
@@ -97,14 +106,19 @@ class Renderer:
             return self.drawing(b) if self.drawings else ""
         if isinstance(b, CentreNote):
             return self.para(self.centre(b))
+        if isinstance(b, Told):
+            return self.told(b)
         raise TypeError(f"unknown block {type(b).__name__}")
 
     # messages and their arguments ----------------------------------------------------------
-    def message(self, m: Msg) -> str:
+    def message(self, m: Msg, lead: bool = False) -> str:
         """The catalogue's message with its variables: numbers go to Fluent as numbers (for
         plurals), everything else as a token replaced afterwards by its markup, so the
-        catalogue's text is escaped and the variables' markup is not."""
+        catalogue's text is escaped and the variables' markup is not. A message that `lead`s a
+        paragraph begins with a capital when its first word is the catalogue's (joint j3 … ->
+        Joint j3 …), never when it is a symbol (v_Q, ω_2)."""
         rendered: list[str] = []
+        values: list[Any] = []
         args: dict[str, Any] = {}
         for name, x in m.args.items():
             if isinstance(x, int) and not isinstance(x, bool):
@@ -113,11 +127,57 @@ class Renderer:
             if isinstance(x, Names):
                 args[f"{name}_n"] = len(x)
             slot = Slot(TOKEN.format(len(rendered)))
-            slot.plain = plain(x)
+            slot.plain = self.plain(x)
             rendered.append(self.arg(x))
+            values.append(x)
             args[name] = slot
         parts = TOKEN_RE.split(self.cat.format(m.key, args))
-        return "".join(self.esc(p) if i % 2 == 0 else rendered[int(p)] for i, p in enumerate(parts))
+        if lead and parts[0][:1].islower():
+            parts[0] = parts[0][0].upper() + parts[0][1:]
+        elif lead and parts[0] == "" and len(parts) > 1:
+            i = int(parts[1])
+            first = values[i]
+            if isinstance(first, Name) and first.kind == "body":    # eu: Besoa O puntu finkoaren …
+                rendered[i] = self.capital(rendered[i])
+        return self.contracted("".join(self.esc(p) if i % 2 == 0 else rendered[int(p)] for i, p in enumerate(parts)))
+
+    def capital(self, markup: str) -> str:
+        """`markup` with its first letter (past the format's leading tags) a capital."""
+        m = LEADING_MARKUP.get(self.fmt, LEADING_MARKUP["md"]).match(markup)
+        at = m.end() if m else 0
+        return markup[:at] + markup[at:at + 1].upper() + markup[at + 1:]
+
+    def contracted(self, text: str) -> str:
+        """The language's contractions of a preposition and the article of a name that
+        follows it (Catalan `de el portador` -> `del portador`, `a el` -> `al`)."""
+        for pattern, short in CONTRACTIONS.get(self.lang, ()):
+            text = pattern.sub(short, text)
+        return text
+
+    def sentence(self, text: str) -> str:
+        """A paragraph that begins with a name's article begins with a capital (El portador …)."""
+        m = ARTICLES.get(self.lang, NO_ARTICLE).match(text)
+        return text[0].upper() + text[1:] if m and text[0].islower() else text
+
+    def told(self, t: Told) -> str:
+        """The model's words in the reader's language: what its points are (a table), its
+        notes on the printed statement (one paragraph each); nothing when it gives none."""
+        if t.kind == "points":
+            rows = [[self.name(Name(p)), self.esc(self.wording.point(p, self.lang))] for p in t.points
+                    if self.wording.point(p, self.lang)]
+            if not rows:
+                return ""
+            return self.table([self.message(Msg("col.point")), self.message(Msg("col.what"))], rows)
+        notes = self.wording.notes.get(self.lang, [])
+        return "\n".join(self.para(self.message(Msg("note.text", {"text": n}))) for n in notes)
+
+    def plain(self, x: Any) -> str:
+        """The text a name argument is read as, in the reader's language (for elision)."""
+        if isinstance(x, Name):
+            return self.called(x)
+        if isinstance(x, Names):
+            return self.plain(x.items[0]) if x.items else ""
+        return plain(x)
 
     def arg(self, x: Any) -> str:
         """A message argument or cell in markup: a name, a list of names joined with the
@@ -153,13 +213,61 @@ class Renderer:
 
     def name(self, n: Name) -> str:
         """A model's name as a name (formats set points, bodies and joints apart)."""
-        return self.esc(n.text)
+        return self.esc(self.called(n))
+
+    # the model's words and notation -----------------------------------------------------------
+    def called(self, n: Name) -> str:
+        """A body's name in the reader's language (the model's `names`), else the model's."""
+        if n.kind == "body":
+            return self.wording.body(n.text, self.lang)
+        if n.kind == "joint":
+            return self.wording.joint(n.text, self.lang)
+        if n.kind == "point" and "∈" in n.text:          # O∈wheels as the symbols write it: O∈3
+            return self.numbered(Sym("", n.text))
+        return n.text
+
+    def articled(self, n: Name) -> tuple[str, str]:
+        """A name split into its article, set as text, and the name proper, set as a name:
+        `el ` and `portador` for the body a Catalan model calls `el portador`."""
+        text = self.called(n)
+        if n.kind == "body":
+            m = ARTICLES.get(self.lang, NO_ARTICLE).match(text)
+            if m and m.end() < len(text):
+                return ("" if n.bare else text[:m.end()]), text[m.end():]
+        return "", text
+
+    def spelt(self, name: str) -> str:
+        """How a parameter is written: the model's notation (w0 as omega_0, ω₀), else its name."""
+        return self.wording.symbol(name, self.lang) or name
+
+    def noted(self, s: Sym) -> Sym:
+        """A rate symbol as the model's notation writes it (the fan's ω₁ for the block's ω,
+        ω₂ for the blades' relative to the block), else as it is."""
+        if s.fixed or s.base not in ("ω", "α") or not s.sub or s.sub_key:
+            return s
+        from ...model.wording import rate_key
+        from .names import written
+
+        parts = s.sub.split("/")
+        spelt = self.wording.symbol(rate_key("omega" if s.base == "ω" else "alpha", *parts[:2]), self.lang)
+        if spelt is None:
+            return s
+        w = written(spelt)
+        return Sym(w.base, w.sub, w.sup or s.sup, s.vector, fixed=True)
+
+    def sym(self, s: Sym) -> str:
+        """A symbol in the format's markup; ω₁ × ω₂ for the cross term of two rates."""
+        if s.base == "ω×ω" and "," in s.sub:
+            parent, body = s.sub.split(",", 1)
+            return (self.sym(Sym("ω", parent, vector=s.vector)) + self.esc(" × ")
+                    + self.sym(Sym("ω", f"{body}/{parent}", vector=s.vector)))
+        return self.symbol(self.noted(s))
 
     def numbered(self, s: Sym) -> str:
         """A symbol's subscript with its bodies by number, as the notes and the figures write
         them: ω_3, ω_3/2, v_B∈3, v_A∈2/3, a_J∈3/1, I_13 (I_2,11 past nine bodies)."""
         nums = self.doc.numbers
-        if not nums or not s.sub:
+        if not nums or not s.sub or s.fixed:
             return s.sub
         if s.base in BODY_SUBS:
             sep = "," if s.base in ("I", "ω×ω") else "/"
@@ -174,24 +282,33 @@ class Renderer:
         return head + "".join(str(nums.get(t, t)) if i % 2 else t for i, t in enumerate(rest))
 
     def caption(self, fig: Figure) -> str:
-        """A figure's caption, saying when it is drawn at sample values of the symbols."""
+        """A figure's caption, saying the numbers a symbolic model is drawn at (or that it is
+        drawn at sample values of the symbols)."""
         text = self.message(fig.caption)
+        if fig.values:
+            return text + " " + self.drawn_at(fig.values)
         return text + " " + self.message(Msg("fig.sample")) if fig.sample else text
 
     def drawing_caption(self, d: Drawing) -> str:
         """A `draw` figure's caption, with the numbers a symbolic model is drawn at."""
         text = self.message(d.caption)
-        if d.values:
-            values = [Inline([Name(k, "param"), " = ", Value(v, "")]) for k, v in d.values.items()]
-            text += " " + self.message(Msg("fig.drawn_at", {"values": Names(values)}))
-        return text
+        return text + " " + self.drawn_at(d.values) if d.values else text
+
+    def drawn_at(self, values: dict) -> str:
+        """“Drawn at r = 0,1 and ω = 2.”"""
+        shown = [Inline([Name(k, "param"), " = ", Value(v, "")]) for k, v in values.items()]
+        return self.message(Msg("fig.drawn_at", {"values": Names(shown)}))
 
     def drawing(self, d: Drawing) -> str:
         """A `draw` figure; formats that cannot embed one draw its fallback, or nothing."""
         return self.figure(d.fallback) if d.fallback is not None else ""
 
-    def svg_label(self, s: Sym) -> Text:
-        """A symbol in a figure: its SVG text and measured size."""
+    def svg_label(self, s: Sym | str) -> Text:
+        """A symbol in a figure, or a point's name (a polygon's image b, b∈2 with its body by
+        number): its SVG text and measured size."""
+        if isinstance(s, str):
+            return plain_text(self.numbered(Sym("", s)) if "∈" in s else s)
+        s = self.noted(s)
         return sym_text(s.base, self.sub_text(s), s.sup)
 
     def sub_text(self, s: Sym) -> str:
@@ -269,7 +386,7 @@ class Renderer:
     def term_line(self, t) -> str:
         """`v_BA = ω × AB = (…) m/s` for the list of an equation's terms."""
         parts = [self.sym(t.sym)]
-        if t.how:
+        if t.how and self.inline(t.how) != parts[0]:
             parts.append(self.inline(t.how))
         parts.append(self.value(Value(t.value, _unit(t.sym))))
         return " = ".join(parts)
@@ -281,8 +398,14 @@ class Renderer:
         distance, where the perpendiculars to two velocities meet, or from ω) and where it is."""
         a, b = c.pair
         name = Sym("I", f"{a},{b}", vector=False)
+        if c.how == "check":
+            return self.message(Msg("centre.check", self.field_args(c, name)))
         if c.how == "joint":
             why = Msg(f"centre.joint.{c.joint_type}", {"joint": Name(c.via[0], "joint")})
+        elif c.how == "weld":
+            x, other = c.same["pair"]
+            why = Msg("centre.weld", {"joint": Name(c.via[0], "joint"), "body": Name(c.same["welded"], "body"),
+                                      "other": Name(other, "body"), "same": Sym("I", f"{x},{other}", vector=False)})
         elif c.how == "kennedy":
             k1, k2 = c.via
             why = Msg("centre.kennedy", {"k1": Name(k1, "body"), "k2": Name(k2, "body"),
@@ -292,6 +415,8 @@ class Renderer:
             why = Msg("centre.lines", {"first": c.via[0], "second": c.via[1]})
         elif c.how == "proportional" and len(c.witnesses) == 2:
             why = self.proportional(c)
+        elif c.how == "field":
+            why = Msg("centre.field", self.field_args(c, name))
         elif len(c.witnesses) == 2:
             (p, vp), (q, vq) = c.witnesses
             why = Msg("centre.velocities", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
@@ -300,6 +425,21 @@ class Renderer:
             why = Msg("centre.omega", {"frame": Name(a, "body")})
         return self.message(Msg("centre.line", {"centre": name, "a": Name(a, "body"), "b": Name(b, "body"), "why": why,
                                                 "where": self.where(c.value)}))
+
+    def field_args(self, c: CentreNote, name: Sym) -> dict:
+        """0 = v_Q + ω × QI: the point Q, its velocity, ω and the arm QI = k × v_Q / ω."""
+        a, b = c.pair
+        (q, vq), = c.witnesses
+        frame = a if a != self.doc_frame() else None
+        v = Sym("v", q if frame is None else f"{q}∈{b}/{a}")
+        w = Sym("ω", b if frame is None else f"{b}/{a}", vector=False)
+        arm = Inline([Name(q), name])
+        return {"v": v, "w": w, "arm": arm, "vq": Value(vq, "speed"), "wv": Value(c.rate, "rate"),
+                "value": Value(c.arm, "len"), "k": Sym("k"), "centre": name, "where": self.where(c.value)}
+
+    def doc_frame(self) -> str:
+        """The fixed body (numbered 1)."""
+        return next((b for b, n in self.doc.numbers.items() if n == 1), "")
 
     def proportional(self, c: CentreNote) -> Msg:
         """Coincident Kennedy lines: the centre from speeds proportional to the distance."""

@@ -2,6 +2,7 @@
 Unicode (no script, no web font, nothing fetched), so a student can open it offline."""
 from __future__ import annotations
 
+import re
 from html import escape
 from typing import Any
 
@@ -18,14 +19,21 @@ h1{font-size:1.7rem;border-bottom:2px solid #1f5fa8}h2{font-size:1.35rem;margin-
 border-bottom:1px solid #ccc}h3{font-size:1.1rem;margin-top:1.4rem}
 table{border-collapse:collapse;margin:.6rem 0}td,th{padding:.15rem .6rem;text-align:left}
 table.grid td,table.grid th{border:1px solid #ccc}table.grid th{background:#f1f4f9}
-table.eq{font-size:1.12rem;margin:.8rem 0 .3rem}table.eq td{text-align:center;padding:0 .25rem}
+table.eq{font-size:1.12rem;margin:.8rem 0 .3rem}table.eq td{text-align:center;padding:0 .25rem;white-space:nowrap}
+table.eq+table.eq{margin-top:.1rem;margin-left:2rem}
 table.eq tr.ann td{font-size:.78rem;color:#555}table.eq td.unknown{color:#c0392b}
 ul.terms{margin:.1rem 0 .6rem;font-size:.95rem}figure{margin:.4rem 0 1rem}
 figcaption{font-size:.85rem;color:#555}b.v{font-style:italic}
 span.pt,span.jt{font-family:"DejaVu Sans",Arial,sans-serif;font-size:.9em}span.jt{color:#444}
-p.sample{font-size:.85rem;color:#8a5a00}
-figure.drawing svg{width:100%;max-width:42rem;height:auto}
+p.sample{font-size:.85rem;color:#8a5a00}span.mk{font-family:"DejaVu Sans",Arial,sans-serif}
+figure.drawing svg{width:432pt;max-width:100%;height:auto}figure svg{max-width:100%;height:auto}
+@media print{@page{size:A4;margin:2cm}body{max-width:none;margin:0;padding:0;font-size:10.5pt}
+figure,table.eq{break-inside:avoid}h2,h3{break-after:avoid}}
 """
+
+
+LONG = 8            # terms: a longer equation is set one side to a line
+MARKED = re.compile("(.[\u0300-\u036f]+)")     # a letter and its combining marks
 
 
 class HtmlRenderer(Renderer):
@@ -34,22 +42,21 @@ class HtmlRenderer(Renderer):
     fmt = "html"
 
     def esc(self, text: str) -> str:
-        """Text escaped for HTML, its control characters shown."""
-        return escape(visible(text), quote=False)
+        """Text escaped; a letter with a combining mark (θ̇ in a note) in the sans font."""
+        return MARKED.sub(r'<span class="mk">\1</span>', escape(visible(text), quote=False))
 
     def name(self, n: Name) -> str:
         """Points upright and sans serif (as the figures letter them), bodies in italics,
         joints sans serif, parameters as symbols (θ<sub>2</sub>, as in the formulas)."""
         if n.kind == "param":
-            return f"<i>{html_name(n.text)}</i>"
-        text = self.esc(n.text)
+            return f"<i>{html_name(self.spelt(n.text))}</i>"
+        article, text = self.articled(n)
         if n.kind == "body":
-            return f'<i class="bd">{text}</i>'
-        return f'<span class="{"jt" if n.kind == "joint" else "pt"}">{text}</span>'
+            return self.esc(article) + f'<i class="bd">{self.esc(text)}</i>'
+        return f'<span class="{"jt" if n.kind == "joint" else "pt"}">{self.esc(text)}</span>'
 
-    def sym(self, s: Sym) -> str:
-        """A symbol: a vector's letter bold, a scalar's italic, with its subscript and
-        superscript."""
+    def symbol(self, s: Sym) -> str:
+        """A symbol: a vector's letter bold, a scalar's italic, with its subscript and superscript."""
         base = f'<b class="v">{escape(s.base)}</b>' if s.vector else f"<i>{escape(s.base)}</i>"
         sub = self.sub_text(s)
         return base + (f"<sub>{escape(sub)}</sub>" if sub else "") + (f"<sup>{escape(s.sup)}</sup>" if s.sup else "")
@@ -59,14 +66,13 @@ class HtmlRenderer(Renderer):
         return f"{mantissa}×10<sup>{str(exponent).replace('-', '−')}</sup>"
 
     def formula(self, expr: Any) -> str:
-        """A formula in Unicode and HTML (θ₂ as θ<sub>2</sub>), decimals as the language writes
-        them."""
-        return self.decimals(unicode_formula(expr, html_name, escape))
+        """A formula in Unicode and HTML (θ₂ as θ<sub>2</sub>, the model's notation), decimals as the language writes them."""
+        return self.decimals(unicode_formula(expr, lambda n: html_name(self.spelt(n)), escape))
 
     def page(self, body: str) -> str:
         """The HTML page around `body`: the language, the title, the inline CSS."""
         return (f'<!DOCTYPE html>\n<html lang="{self.cat.lang}">\n<head>\n<meta charset="utf-8">\n'
-                f"<title>{self.esc(self.doc.title)}</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
+                f"<title>{escape(visible(self.wording.title(self.lang, self.doc.title)), quote=False)}</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
                 f"{body}\n</body>\n</html>\n")
 
     def heading(self, level: int, text: str) -> str:
@@ -78,23 +84,30 @@ class HtmlRenderer(Renderer):
         return f"<p>{text}</p>"
 
     def equation(self, eq: Equation) -> str:
-        """A vector equation as a three-row table — each term's M above it and its direction
-        below, the unknowns in red — followed by the list of its terms with their values."""
-        cells = [(self.ann(eq.target.mag), self.sym(eq.target.sym), self.ann(eq.target.dir), eq.target.unknown)]
+        """The equation as a table of three rows (M/D/? over and under each term); a long one
+        (more than LONG terms) one side to a line, each further line starting with =."""
+        lines: list[list[tuple]] = [[(self.ann(eq.target.mag), self.sym(eq.target.sym), self.ann(eq.target.dir),
+                                      eq.target.unknown)]]
+        long = sum(len(side) for side in eq.sides) > LONG
         for side in eq.sides:
-            cells.append(("", "=", "", False))
+            if long and len(lines[-1]) > 1:
+                lines.append([])
+            lines[-1].append(("", "=", "", False))
             for i, t in enumerate(side):
                 if i:
-                    cells.append(("", "+", "", False))
-                cells.append((self.ann(t.mag), self.sym(t.sym), self.ann(t.dir), t.unknown))
-        rows = []
-        for k in range(3):
-            tds = "".join(f'<td class="unknown">{c[k]}</td>' if c[3] and k == 1 else f"<td>{c[k]}</td>"
-                          for c in cells)
-            rows.append(f'<tr class="{"ann" if k != 1 else "terms"}">{tds}</tr>')
+                    lines[-1].append(("", "+", "", False))
+                lines[-1].append((self.ann(t.mag), self.sym(t.sym), self.ann(t.dir), t.unknown))
+        tables = []
+        for cells in lines:
+            rows = []
+            for k in range(3):
+                tds = "".join(f'<td class="unknown">{c[k]}</td>' if c[3] and k == 1 else f"<td>{c[k]}</td>"
+                              for c in cells)
+                rows.append(f'<tr class="{"ann" if k != 1 else "terms"}">{tds}</tr>')
+            tables.append(f'<table class="eq">{"".join(rows)}</table>')
         terms = [eq.target] + [t for side in eq.sides for t in side]
         items = "".join(f"<li>{self.term_line(t)}</li>" for t in terms)
-        return f'<table class="eq">{"".join(rows)}</table><ul class="terms">{items}</ul>'
+        return "".join(tables) + f'<ul class="terms">{items}</ul>'
 
     def table(self, header: list[str], rows: list[list[str]]) -> str:
         """A table with a header row and borders."""

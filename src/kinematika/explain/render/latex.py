@@ -6,7 +6,7 @@ from typing import Any
 
 from ..document import Equation, Figure, Name, Sym
 from .base import DECIMAL, Renderer, visible
-from .svg import COLOURS, MARGIN, WIDTH, Text, layout, nice, sym_text
+from .svg import COLOURS, MARGIN, WIDTH, Text, layout, nice
 from .names import latex_name
 from .unicode import latex_formula
 
@@ -68,20 +68,24 @@ class LatexRenderer(Renderer):
         """Points and joints sans serif, bodies emphasised, parameters as symbols in math
         (as `sympy.latex` writes them in the formulas: \\theta_{2})."""
         if n.kind == "param":
-            return f"${latex_name(n.text)}$"
-        text = self.esc(n.text)
+            return f"${latex_name(self.spelt(n.text))}$"
+        article, text = self.articled(n)
         command = {"body": "emph"}.get(n.kind, "textsf")
-        return f"\\{command}{{{text}}}"
+        return self.esc(article) + f"\\{command}{{{self.esc(text)}}}"
 
     def math_sym(self, s: Sym) -> str:
-        """A symbol inside math: an arrow over a vector's letter, the subscript and superscript
-        as upright text."""
+        """A symbol inside math: an arrow over a vector's letter, the subscript and superscript as upright text; ω₁ × ω₂ for the cross term of two rates."""
+        if s.base == "ω×ω" and "," in s.sub:
+            parent, body = s.sub.split(",", 1)
+            return (self.math_sym(Sym("ω", parent, vector=s.vector)) + r" \times "
+                    + self.math_sym(Sym("ω", f"{body}/{parent}", vector=s.vector)))
+        s = self.noted(s)
         base = MATH.get(s.base, s.base) if s.base != "ω×ω" else r"\omega\times\omega"
         base = rf"\vec{{{base}}}" if s.vector else base
         sub = self.sub_text(s)
         return base + (f"_{{{tex_math_text(sub)}}}" if sub else "") + (f"^{{{tex_math_text(s.sup)}}}" if s.sup else "")
 
-    def sym(self, s: Sym) -> str:
+    def symbol(self, s: Sym) -> str:
         """A symbol in running text: `math_sym` in $…$."""
         return f"${self.math_sym(s)}$"
 
@@ -94,13 +98,13 @@ class LatexRenderer(Renderer):
         return "$" + super().number(x).replace("−", "-").replace(",", "{,}") + "$"
 
     def formula(self, expr: Any) -> str:
-        """A formula as sympy's LaTeX in math mode, decimals as the language writes them."""
-        text = latex_formula(expr)
+        """A formula as sympy's LaTeX in math mode (the model's notation), decimals as the language writes them."""
+        text = latex_formula(expr, {n: latex_name(self.spelt(n)) for n in self.wording.parameter_symbols(self.lang)})
         return f"${DECIMAL.sub('{,}', text) if self.decimal == ',' else text}$"
 
     def page(self, body: str) -> str:
-        """The article around `body`: the preamble, the title, the document environment."""
-        return HEAD + "\\title{" + self.esc(self.doc.title) + "}\\date{}\n\\begin{document}\n" + body + \
+        """The article around `body`: the preamble, the title (in the reader's language), the document environment."""
+        return HEAD + "\\title{" + self.esc(self.wording.title(self.lang, self.doc.title)) + "}\\date{}\n\\begin{document}\n" + body + \
             "\n\\end{document}\n"
 
     def heading(self, level: int, text: str) -> str:
@@ -144,10 +148,11 @@ class LatexRenderer(Renderer):
         return tikz(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "", caption,
                     self.bar_number)
 
-    def svg_label(self, s: Sym) -> Text:
-        """A symbol in a figure: its measured size (from the SVG text) and its LaTeX for TikZ."""
-        text = sym_text(s.base, self.sub_text(s), s.sup)
-        text.tex = f"${self.math_sym(s)}$"
+    def svg_label(self, s: Sym | str) -> Text:
+        """A symbol or a polygon's point name in a figure: its measured size and, for a symbol, its LaTeX for TikZ."""
+        text = super().svg_label(s)
+        if isinstance(s, Sym):
+            text.tex = f"${self.math_sym(s)}$"
         return text
 
 

@@ -34,10 +34,14 @@ class MarkdownRenderer(Renderer):
     def name(self, n: Name) -> str:
         """Bodies and parameters in italics (parameters as symbols: θ₂, x_B), the other
         names as they are (escaped)."""
-        text = self.esc(unicode_name(n.text)).replace("\\_", "_") if n.kind == "param" else self.esc(n.text)
-        return f"*{text}*" if n.kind in ("body", "param") and not self.code else text
+        if n.kind == "param":
+            text = self.esc(unicode_name(self.spelt(n.text))).replace("\\_", "_")
+            return text if self.code else f"*{text}*"
+        article, text = self.articled(n)
+        text = self.esc(text)
+        return self.esc(article) + (f"*{text}*" if n.kind == "body" and not self.code else text)
 
-    def sym(self, s: Sym) -> str:
+    def symbol(self, s: Sym) -> str:
         """A symbol in plain text: v_B, a_B^n."""
         sub = self.esc(self.sub_text(s)).replace("\\_", "_")
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
@@ -49,7 +53,7 @@ class MarkdownRenderer(Renderer):
     def formula(self, expr: Any) -> str:
         """The Unicode formula; its bars |x| escaped outside code blocks, where a table
         would read them as the end of a cell."""
-        text = self.decimals(unicode_formula(expr))
+        text = self.decimals(unicode_formula(expr, lambda n: unicode_name(self.spelt(n))))
         return text if self.code else text.replace("|", "\\|")
 
     def page(self, body: str) -> str:
@@ -77,16 +81,27 @@ class MarkdownRenderer(Renderer):
         return block + "\n" + listed + "\n"
 
     def _block(self, eq: Equation) -> str:
-        cols = [(self.ann(eq.target.mag), self.sym(eq.target.sym), self.ann(eq.target.dir))]
+        """Three lines (M/D/? over and under each term); a long equation one side to a block
+        of three lines, each further block starting with =."""
+        from .html import LONG
+
+        groups: list[list[tuple]] = [[(self.ann(eq.target.mag), self.sym(eq.target.sym), self.ann(eq.target.dir))]]
+        long = sum(len(side) for side in eq.sides) > LONG
         for side in eq.sides:
-            cols.append(("", "=", ""))
+            if long and len(groups[-1]) > 1:
+                groups.append([])
+            groups[-1].append(("", "=", ""))
             for i, t in enumerate(side):
                 if i:
-                    cols.append(("", "+", ""))
-                cols.append((self.ann(t.mag), self.sym(t.sym), self.ann(t.dir)))
-        widths = [max(len(c) for c in col) for col in cols]
-        lines = ["  ".join(col[k].center(w) for col, w in zip(cols, widths)).rstrip() for k in range(3)]
-        return "```\n" + "\n".join(lines) + "\n```\n"
+                    groups[-1].append(("", "+", ""))
+                groups[-1].append((self.ann(t.mag), self.sym(t.sym), self.ann(t.dir)))
+        blocks = []
+        for n, cols in enumerate(groups):
+            widths = [max(len(c) for c in col) for col in cols]
+            indent = "    " if n else ""
+            blocks.append("\n".join(indent + "  ".join(col[k].center(w) for col, w in zip(cols, widths)).rstrip()
+                                    for k in range(3)))
+        return "```\n" + "\n".join(blocks) + "\n```\n"
 
     def table(self, header: list[str], rows: list[list[str]]) -> str:
         """A pipe table."""

@@ -75,9 +75,15 @@ def unicode_name(name: str) -> str:
 
 
 def html_name(name: str) -> str:
-    """HTML: θ<sub>2</sub>, x<sub>B</sub>, every part escaped."""
+    """HTML: θ<sub>2</sub>, x<sub>B</sub>, every part escaped. A base with a combining mark
+    (θ̇, v̇) is set in the sans font (class `mk`): the serif one has no mark for Greek."""
+    import unicodedata
+
     w = written(name)
-    return (escape(w.base, quote=False) + (f"<sub>{escape(w.sub, quote=False)}</sub>" if w.sub else "")
+    base = escape(w.base, quote=False)
+    if any(unicodedata.combining(c) for c in w.base):
+        base = f'<span class="mk">{base}</span>'
+    return (base + (f"<sub>{escape(w.sub, quote=False)}</sub>" if w.sub else "")
             + (f"<sup>{escape(w.sup, quote=False)}</sup>" if w.sup else ""))
 
 

@@ -19,7 +19,7 @@ from ..document import Figure, Sym
 
 COLOURS = {"known": "#222222", "unknown": "#c0392b", "result": "#1f5fa8", "velocity": "#2e8b57",
            "construction": "#999999"}
-WIDTH, MAX_HEIGHT, MARGIN, BAR = 460, 340, 30, 26
+WIDTH, MAX_HEIGHT, MARGIN, BAR = 460, 420, 30, 26
 FONT, SMALL = 13.0, 0.7                      # label size (units = points), sub/superscript scale
 
 
@@ -118,24 +118,26 @@ def bounds(fig: Figure) -> tuple[float, float, float, float]:
     return x0 - 0.02 * span, y0 - 0.02 * span, x1 + 0.02 * span, y1 + 0.02 * span
 
 
-def layout(fig: Figure, label: Callable[[Sym], Text]) -> Layout:
+def layout(fig: Figure, label: Callable[[Sym | str], Text]) -> Layout:
     """Scale the figure into WIDTH × at most MAX_HEIGHT, then place its labels: the points'
-    names (the pole and the images first) and the arrows' symbols beside their middles.
+    names (the pole and the images first) and the arrows' symbols beside their middles;
+    `label` writes a symbol, or a point's name (a str).
     Laid out once per set of label texts (the languages mostly share one)."""
     texts = {id(a): label(a.label) for a in fig.arrows if a.label is not None}
-    key = tuple((t.markup, t.tex) for t in texts.values())
+    names = [label(name) for name, _, _ in fig.points]       # a point's name: the callable takes a str too
+    key = tuple((t.markup, t.tex) for t in list(texts.values()) + names)
     if key not in fig.layouts:
-        fig.layouts[key] = _layout(fig, texts)
+        fig.layouts[key] = _layout(fig, texts, names)
     return fig.layouts[key]
 
 
-def _layout(fig: Figure, texts: dict) -> Layout:
+def _layout(fig: Figure, texts: dict, names: list) -> Layout:
     x0, y0, x1, y1 = bounds(fig)
     w, h = max(x1 - x0, 1e-300), max(y1 - y0, 1e-300)
     k = min((WIDTH - 2 * MARGIN) / w, (MAX_HEIGHT - 2 * MARGIN) / h)
     out = Layout(fig, k, x0, y1, h * k + 2 * MARGIN + BAR)
-    items = [(plain_text(name), COLOURS["known"], p, 0 if style == "pole" else 1, None)
-             for name, p, style in fig.points]
+    items = [(text, COLOURS["known"], p, 0 if style == "pole" else 1, None)
+             for text, (_, p, style) in zip(names, fig.points)]
     for a in fig.arrows:
         if a.label is not None:
             (ax, ay), (bx, by) = a.start, a.end

@@ -78,10 +78,13 @@ def _bars(text: str) -> str:
     return text
 
 
-def latex_formula(expr: Any) -> str:
-    """sympy's LaTeX; a symbol named like the constant π (`pi`, `pi2`) as the word."""
+def latex_formula(expr: Any, spelt: dict[str, str] | None = None) -> str:
+    """sympy's LaTeX; a symbol named like the constant π (`pi`, `pi2`) as the word; the
+    symbols of `spelt` (a name -> its LaTeX) as given (a model's notation)."""
     import sympy
 
     shown = tidy(expr)
-    own = {s: latex_name(s.name) for s in getattr(shown, "free_symbols", ()) if s.name.startswith("pi")}
+    spelt = spelt or {}
+    own = {s: spelt.get(s.name) or latex_name(s.name) for s in getattr(shown, "free_symbols", ())
+           if s.name.startswith("pi") or s.name in spelt}
     return sympy.latex(shown, symbol_names=own) if own else sympy.latex(shown)

@@ -1,0 +1,264 @@
+"""The checks a teacher adds below a solution: the same result by another road.
+
+- Willis' formula for every epicyclic train (a carrier pivoted at O carrying planets that
+  mesh with wheels turning about O, the frame's wheel included): seen from the carrier
+  the train is an ordinary one, so (ω_s1 − ω_c)/(ω_s2 − ω_c) = ∓ρ_s2/ρ_s1 (minus through
+  one external and one internal mesh, the sun and the ring: −3 in C5-1.4 and C5-E.2).
+- The ratio of a belt or chain drive, seen from the body that carries both axles: the belt
+  does not slip on either wheel, so ρ_a ω_a = ρ_b ω_b (the notes' bicycle: r Ω_pinyó =
+  R Ω_plat; the pulley train's ω₄/ω₁ = (r₁/r₂)(r₃/r₄), through a weld).
+- The time ratio of a quick-return (a crank pin in the slot of a lever pivoted on the
+  frame): the lever is at an end of its swing when the slot is tangent to the crank's
+  circle, so the two strokes take the crank angles 360° − 2θ and 2θ, cos θ = r/d.
+
+Every value is computed from the geometry and the solver's ω; the check says they agree.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Optional
+
+from .context import Ctx, omega_sym
+from .document import Inline, Name, Section, Sym, Value, msg
+from .kinds import crossed_by_a_slot, pins, rolls, welds
+
+
+def checks_section(ctx: Ctx) -> Optional[Section]:
+    """The teacher's checks that apply to the mechanism, or None."""
+    if not ctx.planar:
+        return None
+    blocks = willis(ctx) + belts(ctx) + quick_return(ctx)
+    if not blocks:
+        return None
+    sec = Section(msg("sec.checks"))
+    sec.blocks += blocks
+    return sec
+
+
+# geometry read off the model ------------------------------------------------------------------
+def _circle(ctx: Ctx, body: str) -> Optional[tuple]:
+    """(centre, radius) of the body's circle (the first), else None."""
+    for shape in ctx.inst.shapes.get(body, []):
+        if hasattr(shape, "radius") and hasattr(shape, "center"):
+            return shape.center, shape.radius
+    return None
+
+
+def _same(ctx: Ctx, p: tuple, q: tuple) -> bool:
+    a, b = ctx.num(tuple(p)), ctx.num(tuple(q))
+    return math.dist(a, b) <= 1e-9 * ctx.inst.scale
+
+
+def _pivot(ctx: Ctx, body: str, on: str) -> Optional[tuple]:
+    """Where `body` is pinned to `on` (a revolute between them), else None."""
+    for j in ctx.model.joints:
+        if pins(j) and {j.a, j.b} == {body, on} and j.at:
+            return ctx.pos(j.at)
+    return None
+
+
+def _simplified(ctx: Ctx, x: Any) -> Any:
+    if not ctx.symbolic:
+        return x
+    import sympy
+
+    return sympy.nsimplify(sympy.simplify(x)) if not getattr(x, "free_symbols", None) else sympy.simplify(x)
+
+
+def _rho(ctx: Ctx, body: str) -> Sym:
+    """ρ of a body's circle, by the body's number as the notes and figures number bodies."""
+    from ..draw.names import body_numbers
+
+    return Sym("ρ", str(body_numbers(ctx.model)[body]), vector=False, fixed=True)
+
+
+# Willis -------------------------------------------------------------------------------------
+def willis(ctx: Ctx) -> list:
+    """Willis' formula for each carrier whose planets mesh with two wheels turning about
+    the carrier's pivot."""
+    out: list = []
+    frame = ctx.frame
+    for carrier in ctx.model.bodies:
+        o = _pivot(ctx, carrier, frame)
+        if carrier == frame or o is None:
+            continue
+        planets = [b for b in ctx.model.bodies if b not in (carrier, frame) and _pivot(ctx, b, carrier) is not None]
+        for planet in planets:
+            central = []
+            for j in ctx.model.joints:
+                if not rolls(j) or planet not in (j.a, j.b):
+                    continue
+                other = j.a if j.b == planet else j.b
+                circle = _circle(ctx, other)
+                if circle is None or not _same(ctx, circle[0], o):
+                    continue
+                if other == frame or (_pivot(ctx, other, frame) is not None and _same(ctx, _pivot(ctx, other, frame), o)):
+                    central.append((other, j))
+            if len(central) >= 2:
+                out += _willis_blocks(ctx, carrier, planet, central[0], central[1])
+                break            # one planet says it for the train
+    return out
+
+
+def _willis_blocks(ctx: Ctx, carrier: str, planet: str, first: tuple, second: tuple) -> list:
+    (s1, j1), (s2, j2) = first, second
+    r1, r2 = _circle(ctx, s1)[1], _circle(ctx, s2)[1]
+    sign = _mesh_sign(ctx, j1) * _mesh_sign(ctx, j2)
+    train = _simplified(ctx, sign * r2 / r1)
+    w1, w2, wc = ctx.omega(s1), ctx.omega(s2), ctx.omega(carrier)
+    ratio = _simplified(ctx, (w1 - wc) / (w2 - wc)) if not ctx.is_zero(w2 - wc, "rate") else None
+    ws = [omega_sym(b) for b in (s1, carrier, s2, carrier)]
+    formula = Inline(["(", ws[0], " − ", ws[1], ") / (", ws[2], " − ", ws[3], ")"])
+    radii = Inline(["−" if sign < 0 else "", _rho(ctx, s2), " / ", _rho(ctx, s1)])
+    values = Inline(["(", Value(ctx.clean(w1, "rate"), ""), " − ", Value(ctx.clean(wc, "rate"), ""), ") / (",
+                     Value(ctx.clean(w2, "rate"), ""), " − ", Value(ctx.clean(wc, "rate"), ""), ")"])
+    return [msg("check.willis", carrier=Name(carrier, "body"), planet=Name(planet, "body"), s1=Name(s1, "body"),
+                s2=Name(s2, "body"), formula=formula, radii=radii, r1=Inline([_rho(ctx, s1), " = ", Value(r1, "len")]),
+                r2=Inline([_rho(ctx, s2), " = ", Value(r2, "len")]), train=Value(train, ""),
+                values=values, ratio=Value(ratio if ratio is not None else train, ""))]
+
+
+def _mesh_sign(ctx: Ctx, j) -> int:
+    """−1 for an external contact (the wheels turn in opposite senses), +1 internal."""
+    contact = ctx.sol.solver.geos[j.id].contact
+    return 1 if contact is not None and contact.kind == "internal" else -1
+
+
+# belts and chains ---------------------------------------------------------------------------
+def belts(ctx: Ctx) -> list:
+    """Each line body rolling on two circles whose bodies are pinned to one body K (their
+    axles' carrier): ρ_a ω_a/K = ρ_b ω_b/K; a train of them through welds, its ratio."""
+    out: list = []
+    links: list[tuple] = []
+    for line in ctx.model.bodies:
+        if line == ctx.frame:
+            continue                # the ground under two wheels is no belt
+        wheels = [(j.a if j.b == line else j.b) for j in ctx.model.joints if rolls(j) and line in (j.a, j.b)]
+        wheels = [w for w in wheels if _circle(ctx, w) is not None]
+        if len(wheels) != 2 or not _is_line(ctx, line):
+            continue
+        a, b = wheels
+        holder = _common_holder(ctx, a, b)
+        if holder is None:
+            continue
+        ra, rb = _circle(ctx, a)[1], _circle(ctx, b)[1]
+        sign = 1 if _same_side(ctx, line, a, b) else -1
+        wa, wb = ctx.omega(a, holder), ctx.omega(b, holder)
+        ratio = _simplified(ctx, sign * ra / rb)
+        rel = [omega_sym(x, ctx.rel(holder)) for x in (a, b)]
+        out.append(msg("check.belt", line=Name(line, "body"), a=Name(a, "body"), b=Name(b, "body"),
+                       holder=Name(holder, "body"),
+                       equation=Inline([_rho(ctx, a), " ", rel[0], " = ", "" if sign > 0 else "−",
+                                        _rho(ctx, b), " ", rel[1]]),
+                       ratio=Inline([rel[1], " / ", rel[0], " = ", "" if sign > 0 else "−", _rho(ctx, a), " / ",
+                                     _rho(ctx, b), " = ", Value(ratio, "")]),
+                       values=Inline([rel[1], " = ", Value(ctx.clean(wb, "rate"), "rate"), ", ", rel[0], " = ",
+                                      Value(ctx.clean(wa, "rate"), "rate")])))
+        links.append((a, b, ratio, holder))
+    out += _train(ctx, links)
+    return out
+
+
+def _is_line(ctx: Ctx, body: str) -> bool:
+    return any(hasattr(s, "direction") for s in ctx.inst.shapes.get(body, []))
+
+
+def _common_holder(ctx: Ctx, a: str, b: str) -> Optional[str]:
+    """The body both wheels turn on, each about its circle's centre (the frame, the bicycle's
+    frame, the arm of C5-1.6 that carries the moving pulley and turns about the fixed one);
+    a wheel welded to a pinned body (the sprocket on the rear wheel) turns with it."""
+    for k in ctx.model.bodies:
+        if k in (a, b):
+            continue
+        if all(_turns_on(ctx, w, k) for w in (a, b)):
+            return k
+    return None
+
+
+def _turns_on(ctx: Ctx, wheel: str, k: str) -> bool:
+    """Whether `wheel` (or a body welded to it) is pinned to k at the wheel's centre."""
+    centre = _circle(ctx, wheel)[0]
+    same = {wheel} | {(j.b if j.a == wheel else j.a) for j in ctx.model.joints if welds(j) and wheel in (j.a, j.b)}
+    for w in same:
+        pivot = _pivot(ctx, w, k)
+        if pivot is not None and _same(ctx, pivot, centre):
+            return True
+    return False
+
+
+def _same_side(ctx: Ctx, line: str, a: str, b: str) -> bool:
+    """Whether the two circles are on one side of the belt's line (an open belt)."""
+    shape = next(s for s in ctx.inst.shapes[line] if hasattr(s, "direction"))
+    d, p = ctx.num(tuple(shape.direction)), ctx.num(tuple(shape.through))
+
+    def side(w: str) -> float:
+        c = ctx.num(tuple(_circle(ctx, w)[0]))
+        return d[0] * (c[1] - p[1]) - d[1] * (c[0] - p[0])
+    return side(a) * side(b) > 0
+
+
+def _train(ctx: Ctx, links: list) -> list:
+    """Two belts or more in a row, through welds (pulley 2 and pulley 3 on one axle): the
+    train's ratio is the product of the belts'."""
+    if len(links) < 2:
+        return []
+    welded = {frozenset((j.a, j.b)) for j in ctx.model.joints if welds(j)}
+    chain = [links[0]]
+    for link in links[1:]:
+        last = chain[-1]
+        if link[3] == last[3] and (link[0] == last[1] or frozenset((link[0], last[1])) in welded):
+            chain.append(link)
+    if len(chain) < 2:
+        return []
+    first, last = chain[0][0], chain[-1][1]
+    product = _simplified(ctx, math.prod(x[2] for x in chain) if not ctx.symbolic else _prod(x[2] for x in chain))
+    holder = chain[0][3]
+    w0, w1 = omega_sym(first, ctx.rel(holder)), omega_sym(last, ctx.rel(holder))
+    factors: list = []
+    for i, (a, b, _, _) in enumerate(chain):
+        factors += (["·"] if i else []) + ["(", _rho(ctx, a), " / ", _rho(ctx, b), ")"]
+    value = _simplified(ctx, ctx.omega(last, holder) / ctx.omega(first, holder))
+    return [msg("check.train", ratio=Inline([w1, " / ", w0, " = "] + factors + [" = ", Value(product, "")]),
+                value=Value(value, ""))]
+
+
+def _prod(items) -> Any:
+    out = 1
+    for x in items:
+        out = out * x
+    return out
+
+
+# quick-return -------------------------------------------------------------------------------
+def quick_return(ctx: Ctx) -> list:
+    """A driven crank whose pin slides in the slot of a lever pivoted on the frame, the slot
+    through the lever's pivot: the time ratio of its two strokes."""
+    out: list = []
+    frame = ctx.frame
+    driven = {d.body for d in ctx.model.drivers if d.kind == "omega"}
+    for j in ctx.model.joints:
+        if not crossed_by_a_slot(j) or not j.at:
+            continue
+        lever, crank = j.a, j.b
+        if crank not in driven:
+            continue
+        o2, o4 = _pivot(ctx, crank, frame), _pivot(ctx, lever, frame)
+        if o2 is None or o4 is None:
+            continue
+        r = math.dist(ctx.num(o2), ctx.num(ctx.pos(j.at)))
+        d = math.dist(ctx.num(o2), ctx.num(o4))
+        if not 0 < r < d:
+            continue
+        theta = math.degrees(math.acos(r / d))
+        slow, fast = 360 - 2 * theta, 2 * theta
+        names = [n for n in ctx.model.bodies[crank].points if ctx.num(ctx.pos(n)) == ctx.num(o2)]
+        pivot = names[0] if names else ""
+        lever_pivot = next((n for n in ctx.model.bodies[lever].points if ctx.num(ctx.pos(n)) == ctx.num(o4)), "")
+        out.append(msg("check.quick", crank=Name(crank, "body"), lever=Name(lever, "body"), pin=Name(j.at),
+                       o2=Name(pivot), o4=Name(lever_pivot), r=Value(r, "len"), d=Value(d, "len"),
+                       theta=Value(round(theta, 2), "deg"), slow=Value(round(slow, 2), "deg"),
+                       fast=Value(round(fast, 2), "deg"), ratio=Value(slow / fast, "")))
+    return out
+
+
+

@@ -1,0 +1,233 @@
+"""The three coincident points of a rolling contact, as the notes build them (seed 002, C5-1.8).
+
+At the contact J of two profiles there are three points: the material point of each body
+and the geometric contact point J^geom, which belongs to neither and shows where the
+contact is. J^geom moves as a point of a bar hinged at the two circles' centres (it stays
+on the line of centres, at a fixed fraction of it: the notes' bar OC, Ω = ω₀/3), or, on a
+line, as the foot of the perpendicular from the circle's centre (it turns with the line):
+
+    v_C2 = v_C1 + Ω × C1C2          v_J^geom = v_C1 + Ω × C1J
+
+Rolling without slip keeps the material points' velocities equal at every instant, at the
+moving J^geom; differentiating that condition along J^geom gives the accelerations' rule
+used in the acceleration steps: their tangential components are equal and
+
+    a_J∈b − a_J∈a = ω_b/a × (v_J∈a − v_J^geom)       (along the common normal).
+
+So v_J^geom is derived here wherever that term is used, and the answer to a `contact`
+question is reached point by point.
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from ..algebra.vectors import add, scale, sub
+from .context import Ctx, omega_sym, segment
+from .document import Ann, Derived, Equation, Name, Section, Sym, Term, Value, joint as joint_name, msg
+from .kinds import rolls
+from .terms import point_term, rotation_terms
+
+KNOWN = (Ann("M"), Ann("D"))
+FOUND = (Ann("?"), Ann("?"))
+
+
+def geometric_sym(level: str, name: str) -> Sym:
+    """v_J^geom (a_J^geom): the geometric contact point's motion."""
+    return Sym(level, name, "geom")
+
+
+def geometric_point(name: str) -> Sym:
+    """J^geom, the geometric contact point, in a sentence."""
+    return Sym(name, "", "geom", vector=False, fixed=True)
+
+
+def _cross(w: Any, r: tuple) -> tuple:
+    """ω k × r in the plane."""
+    return (-w * r[1], w * r[0])
+
+
+def _rate_of(ctx: Ctx, r: tuple, dv: tuple) -> Any:
+    """ω with dv = ω k × r: (r × dv)·k / |r|²."""
+    value = (r[0] * dv[1] - r[1] * dv[0]) / (r[0] ** 2 + r[1] ** 2)
+    return _simplified(ctx, value)
+
+
+def _simplified(ctx: Ctx, x: Any) -> Any:
+    if not ctx.symbolic:
+        return x
+    import sympy
+
+    return sympy.simplify(x)
+
+
+def centre_name(ctx: Ctx, body: str, centre: tuple) -> str:
+    """The name of a circle's centre: the model's point there, else a name made for it."""
+    for p in ctx.model.bodies[body].points + list(ctx.inst.points):
+        if p in ctx.inst.points and ctx.num(ctx.pos(p)) == ctx.num(tuple(centre)):
+            return p
+    return ctx.name_position(f"C{body}", tuple(centre))
+
+
+class Bar:
+    """The geometric point's carrier: a bar from C1 to C2 (circles), or a circle's centre C
+    with the radius CJ turning with a line body (circle on a line)."""
+
+    def __init__(self, ctx: Ctx, j) -> None:
+        self.ctx, self.j = ctx, j
+        self.contact = ctx.sol.solver.geos[j.id].contact
+        self.name = ctx.contact(j)
+        (b1, c1), *rest = self.contact.centres
+        self.c1, self.b1 = centre_name(ctx, b1, c1), b1
+        if rest:
+            (b2, c2), = rest
+            self.c2, self.b2 = centre_name(ctx, b2, c2), b2
+            r = ctx.r(self.c1, self.c2)
+            dv = sub(ctx.vel(b2, self.c2), ctx.vel(b1, self.c1))
+            self.omega = _rate_of(ctx, r, dv)
+            dr = sub(ctx.acc(b2, self.c2), ctx.acc(b1, self.c1))
+            centripetal = scale(self.omega ** 2, r)
+            self.alpha = _rate_of(ctx, r, add(dr, centripetal))
+            self.turning = None
+        else:
+            self.c2 = self.b2 = None
+            self.turning = self.contact.line_body
+            self.omega, self.alpha = ctx.omega(self.turning), ctx.alpha(self.turning)
+
+    @property
+    def sym(self) -> Sym:
+        """Ω_C1C2, the bar's angular velocity (ω of the line body for a circle on a line)."""
+        return Sym("Ω", segment(self.c1, self.c2), vector=False) if self.c2 else omega_sym(self.turning)
+
+    @property
+    def alpha_sym(self) -> Sym:
+        """α_C1C2, the bar's angular acceleration (α of the line body)."""
+        return Sym("α", segment(self.c1, self.c2), vector=False) if self.c2 else Sym("α", self.turning, vector=False)
+
+    def rotation(self, level: str, q: str, p: str, unknown: bool) -> list[Term]:
+        """The bar's ω × QP (or its normal and tangential accelerations), by value."""
+        ctx, r = self.ctx, self.ctx.r(q, p)
+        seg, back = segment(q, p), segment(p, q)
+        name = segment(p, q)
+        if level == "v":
+            mag = Ann("?") if unknown else Ann("M", [self.sym, f"·{seg}"])
+            return [Term(Sym("v", name), ctx.clean(_cross(self.omega, r), "speed"), mag, Ann("perp", seg),
+                         [self.sym, f" × {seg}"], unknown, "rotation")]
+        normal = scale(-self.omega ** 2, r)
+        return [Term(Sym("a", name, "n"), ctx.clean(normal, "accel"), Ann("M", [self.sym, f"²·{seg}"]),
+                     Ann("para", back), [self.sym, f"² · {back}"], False, "normal"),
+                Term(Sym("a", name, "t"), ctx.clean(_cross(self.alpha, r), "accel"),
+                     Ann("?") if unknown else Ann("M", [self.alpha_sym, f"·{seg}"]), Ann("perp", seg),
+                     [self.alpha_sym, f" × {seg}"], unknown, "tangential")]
+
+    def blocks(self, level: str, with_bar: bool = True) -> list:
+        """How J^geom moves: the bar's ω (α) from its two ends (unless worked out already:
+        `with_bar` False), then J^geom as its point."""
+        ctx, out = self.ctx, []
+        start = point_term(ctx, level, self.c1, self.b1)
+        if self.c2 is not None:
+            if level == "v":
+                out.append(msg("geom.bar", geom=geometric_point(self.name), c1=Name(self.c1), c2=Name(self.c2),
+                               joint=joint_name(self.j.id)))
+        if self.c2 is not None and with_bar:
+            end = point_term(ctx, level, self.c2, self.b2)
+            turn = self.rotation(level, self.c1, self.c2, True)
+            out.append(Equation(end, [[start] + turn], level, figure=False))
+            sym = self.sym if level == "v" else self.alpha_sym
+            value = self.omega if level == "v" else self.alpha
+            out.append(Derived(sym, [turn[-1].sym, f" / {segment(self.c1, self.c2)}"],
+                               Value(ctx.clean(value, "rate" if level == "v" else "rate2"),
+                                     "rate" if level == "v" else "rate2"),
+                               "", "omega" if level == "v" else "alpha", not ctx.symbolic, turn[-1],
+                               ctx.clean(ctx.r(self.c1, self.c2), "len")))
+        elif self.c2 is None and level == "v":
+            out.append(msg("geom.foot", geom=geometric_point(self.name), centre=Name(self.c1),
+                           line=Name(self.turning, "body"), radius=Name(segment(self.c1, self.name)),
+                           joint=joint_name(self.j.id)))
+        arm = self.rotation(level, self.c1, self.name, False)
+        target = Term(geometric_sym(level, self.name), self.geometric(level), *FOUND, unknown=True, kind="point")
+        out.append(Equation(target, [[start] + arm], level, figure=False, position=ctx.pos(self.name)))
+        return out
+
+    def geometric(self, level: str) -> Any:
+        """v_J^geom (a_J^geom): the motion of the bar's point at J, from its first end C1,
+        v_C1 + Ω × C1J (a_C1 − Ω²·C1J + α × C1J)."""
+        ctx = self.ctx
+        start = point_term(ctx, level, self.c1, self.b1)
+        arm = self.rotation(level, self.c1, self.name, False)
+        moved = add(start.value, arm[0].value) if level == "v" else add(start.value, add(arm[0].value, arm[1].value))
+        return ctx.clean(moved, "speed" if level == "v" else "accel")
+
+    def velocity(self) -> tuple:
+        """v_J^geom as the equations above give it."""
+        ctx, r = self.ctx, self.ctx.r(self.c1, self.name)
+        return ctx.clean(add(ctx.vel(self.b1, self.c1), _cross(self.omega, r)), "speed")
+
+
+def geometric_blocks(ctx: Ctx, j, done: set, pair: Optional[tuple[str, str]] = None) -> list:
+    """Where an acceleration step uses the contact term of joint j between the bodies of
+    `pair` (body, other; j.b, j.a unless told): the rule that gives the term (said once, in
+    the orientation the equation uses), the geometric point's velocity (its bar's ω worked
+    out once per pair of centres), and ω_body/other = ω_body − ω_other."""
+    if j.id in done:
+        return []
+    done.add(j.id)
+    b, a = pair or (j.b, j.a)
+    bar = Bar(ctx, j)
+    w = omega_sym(b, a)
+    rel = Derived(w, [omega_sym(b), " − ", omega_sym(a)], ctx.value(ctx.omega(b, a), "rate"))
+    out: list = []
+    if "rule" not in done:
+        done.add("rule")
+        term = [Sym("a", f"{bar.name}∈{b}"), " − ", Sym("a", f"{bar.name}∈{a}"), " = ", w, " × (",
+                Sym("v", f"{bar.name}∈{a}"), " − ", geometric_sym("v", bar.name), ")"]
+        from .document import Inline
+
+        out.append(msg("geom.rule", joint=joint_name(j.id), geom=geometric_point(bar.name), rule=Inline(term)))
+    key = f"bar:{bar.c1}:{bar.c2 or bar.turning}"
+    blocks = bar.blocks("v", with_bar=key not in ctx.worked)
+    ctx.worked.update({key, f"geom:v:{j.id}"})
+    return out + blocks + [rel]
+
+
+def contact_section(ctx: Ctx) -> Optional[Section]:
+    """Each `contact` question: the velocities and accelerations of the three coincident
+    points, each from an equation (C5-1.8: the wheel's point, the ground's, and J^geom on
+    the bar OC)."""
+    asked = [q for q in ctx.model.questions if q.kind == "contact" and ctx.planar
+             and rolls(ctx.model.joint(q.target))]
+    if not asked:
+        return None
+    sec = Section(msg("sec.contact"))
+    for q in asked:
+        j = ctx.model.joint(q.target)
+        bar = Bar(ctx, j)
+        sec.add(msg("contact.intro", joint=joint_name(j.id), point=Name(bar.name), a=Name(j.a, "body"),
+                    b=Name(j.b, "body"), geom=geometric_point(bar.name)))
+        for level in ("v", "a"):
+            for body in (j.a, j.b):
+                sec.blocks += _material(ctx, bar, body, level)
+            if f"geom:{level}:{j.id}" in ctx.worked:     # worked out for an acceleration step
+                sec.add(msg("contact.above", sym=geometric_sym(level, bar.name),
+                            value=Value(bar.geometric(level), "speed" if level == "v" else "accel")))
+                continue
+            key = f"bar:{bar.c1}:{bar.c2 or bar.turning}" + ("" if level == "v" else ":a")
+            sec.blocks += bar.blocks(level, with_bar=key not in ctx.worked)
+            ctx.worked.update({key, f"geom:{level}:{j.id}"})
+    return sec
+
+
+def _material(ctx: Ctx, bar: Bar, body: str, level: str) -> list:
+    """The body's material point at J from its circle's centre (or a point of it): the
+    rigid-body field; a point of the fixed body has neither velocity nor acceleration."""
+    name = bar.name
+    if body == ctx.frame:
+        return [msg("contact.fixed", point=Name(name), body=Name(body, "body"),
+                    sym=Sym(level, f"{name}∈{body}"))]
+    centre = bar.c1 if body == bar.b1 else bar.c2 if body == bar.b2 else None
+    if centre is None:
+        centre = next((p for p in ctx.model.bodies[body].points), None)
+    target = point_term(ctx, level, name, body, False)
+    if centre is None:
+        return []
+    side = [point_term(ctx, level, centre, body)] + rotation_terms(ctx, level, body, centre, name, False)
+    return [Equation(target, [side], level, ctx.ref(name, body), figure=False, position=ctx.pos(name))]

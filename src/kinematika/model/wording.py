@@ -1,0 +1,167 @@
+"""How a model's things are called and written, per language: what the explanations and
+figures say, and nothing else reads (the answers keep the model's own names).
+
+    names:                                # per language (en, es, ca, eu)
+      ca:
+        title: Transmissió epicicloidal
+        bodies: {carrier: el portador, sun: la roda central, ring: la corona}
+        points: {A1: centre del primer satèl·lit}
+        joints: {hub: boixa}               # a joint's id, as the text names it
+        notes: ["Els apunts donen …; el correcte és … perquè …"]
+    notation:                             # how a quantity is written (sympy's spelling)
+      w0: omega_0                         # a parameter: ω₀
+      vd: vdot                            # v̇
+      omega(block): omega_1               # ω of a body (relative to the frame): ω₁
+      omega(blades/block): omega_2        # relative to another body: ω₂
+      omega(blades): {eu: omega_aspak, ca: omega_aspes}   # per language
+
+A written symbol is a name as sympy reads one (`omega_0` ω₀, `vdot` v̇, `R_roda`), so every
+format (HTML, Markdown, LaTeX, the figures' mathtext) sets it as it sets the model's own
+names. Checked here, once, with the place named.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any, Optional
+
+from ..errors import KinematikaError
+from ..languages import LANGS             # the explanations' languages (each has a catalogue)
+
+# the articles a name may begin with in Catalan and Spanish (`names.ca.bodies: {carrier: el
+# portador}`): texts contract them with a preposition (del portador), figures leave them out
+ARTICLES = {"ca": re.compile(r"(?i)(els|les|el|la) |l['’]"), "es": re.compile(r"(?i)(los|las|el|la) ")}
+NO_ARTICLE = re.compile(r"(?!)")
+RATE = re.compile(r"^(omega|alpha)\((.+)\)$")
+SPELLING = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")      # a name sympy writes as a symbol
+
+
+@dataclass
+class Wording:
+    """Titles, body names, point descriptions and notes per language, and the notation."""
+
+    titles: dict[str, str] = field(default_factory=dict)
+    bodies: dict[str, dict[str, str]] = field(default_factory=dict)     # lang -> body -> name
+    points: dict[str, dict[str, str]] = field(default_factory=dict)     # lang -> point -> text
+    joints: dict[str, dict[str, str]] = field(default_factory=dict)     # lang -> joint id -> name
+    notes: dict[str, list[str]] = field(default_factory=dict)           # lang -> notes
+    symbols: dict[str, dict[str, str]] = field(default_factory=dict)    # key -> lang|"*" -> name
+
+    def title(self, lang: str, default: str) -> str:
+        """The model's title in `lang`, else `default` (its `name`)."""
+        return self.titles.get(lang, default)
+
+    def body(self, name: str, lang: Optional[str]) -> str:
+        """The body's name in `lang` (the model's own when the model gives none)."""
+        return self.bodies.get(lang or "", {}).get(name, name)
+
+    def joint(self, name: str, lang: Optional[str]) -> str:
+        """A joint's name in `lang` (its id when the model gives none)."""
+        return self.joints.get(lang or "", {}).get(name, name)
+
+    def point(self, name: str, lang: Optional[str]) -> str:
+        """What the point is, in `lang` ('' when the model does not say)."""
+        return self.points.get(lang or "", {}).get(name, "")
+
+    def symbol(self, key: str, lang: Optional[str]) -> Optional[str]:
+        """How `key` is written in `lang`: a parameter's name, or `omega(body)`,
+        `omega(body/other)`, `alpha(…)`; None when the model does not say."""
+        spelt = self.symbols.get(key)
+        if spelt is None:
+            return None
+        return spelt.get(lang or "", spelt.get("*"))
+
+    def parameter_symbols(self, lang: Optional[str]) -> dict[str, str]:
+        """parameter name -> its written name, for the parameters the notation spells."""
+        out = {}
+        for key in self.symbols:
+            if not RATE.match(key):
+                spelt = self.symbol(key, lang)
+                if spelt:
+                    out[key] = spelt
+        return out
+
+
+def noun(name: str, lang: Optional[str] = None) -> str:
+    """A name without its article (el portador -> portador), for a figure's label or a table."""
+    for code, pattern in ARTICLES.items():
+        m = pattern.match(name)
+        if m and m.end() < len(name) and lang in (None, code):
+            return name[m.end():]
+    return name
+
+
+def read_wording(names: Any, notation: Any, bodies: dict, points: dict, parameters: dict,
+                 default_title: str, joints: Optional[dict] = None) -> Wording:
+    """The checked `names:` and `notation:` sections (either may be None)."""
+    out = Wording()
+    for lang, spec in (names or {}).items():
+        where = f"names.{lang}"
+        _language(lang, where)
+        if spec.title is not None:
+            out.titles[lang] = _text(spec.title, f"{where}.title")
+        out.bodies[lang] = {_known(b, bodies, "body", f"{where}.bodies"): _text(t, f"{where}.bodies.{b}")
+                            for b, t in (spec.bodies or {}).items()}
+        out.points[lang] = {_known(p, points, "point", f"{where}.points"): _text(t, f"{where}.points.{p}")
+                            for p, t in (spec.points or {}).items()}
+        out.joints[lang] = {_known(j, joints or {}, "joint", f"{where}.joints"): _text(t, f"{where}.joints.{j}")
+                            for j, t in (spec.joints or {}).items()}
+        out.notes[lang] = [_text(t, f"{where}.notes[{i}]") for i, t in enumerate(spec.notes or [])]
+    for raw, spelt in (notation or {}).items():
+        where = f"notation.{raw}"
+        key = _notation_key(raw, bodies, parameters, where)
+        if isinstance(spelt, str):
+            out.symbols[key] = {"*": _spelling(spelt, where)}
+        else:
+            for lang in spelt:
+                _language(lang, f"{where}.{lang}")
+            out.symbols[key] = {lang: _spelling(s, f"{where}.{lang}") for lang, s in spelt.items()}
+    return out
+
+
+def _language(lang: str, where: str) -> None:
+    if lang not in LANGS:
+        raise KinematikaError("schema", f"unknown language {lang!r} (languages: {', '.join(LANGS)})", where)
+
+
+def _text(text: str, where: str) -> str:
+    if not text.strip():
+        raise KinematikaError("schema", "a name or a note is not empty", where)
+    return text.strip()
+
+
+def _known(name: str, known: dict, kind: str, where: str) -> str:
+    if name not in known:
+        raise KinematikaError("schema", f"unknown {kind} {name!r} ({kind}s: {', '.join(known) or 'none'})", where)
+    return name
+
+
+def _notation_key(key: str, bodies: dict, parameters: dict, where: str) -> str:
+    """A parameter's name, or omega(body), omega(body/other), alpha(…) of known bodies;
+    returned as looked up (a rate without spaces: omega(blades/block))."""
+    rate = RATE.match(key.strip())
+    if rate is None:
+        if key not in parameters:
+            raise KinematikaError("schema", f"{key!r} is neither a parameter (parameters: "
+                                  f"{', '.join(parameters) or 'none'}) nor omega(BODY), "
+                                  "omega(BODY/OTHER), alpha(…)", where)
+        return key
+    parts = [b.strip() for b in rate.group(2).split("/")]
+    if len(parts) > 2:
+        raise KinematikaError("schema", f"{key!r}: a rate is of one body, or of one body relative "
+                              "to another (omega(blades/block))", where)
+    for b in parts:
+        _known(b, bodies, "body", where)
+    return f"{rate.group(1)}({'/'.join(parts)})"
+
+
+def rate_key(kind: str, body: str, relative_to: Optional[str] = None) -> str:
+    """The notation's key of ω (kind 'omega') or α ('alpha') of `body`, relative to another."""
+    return f"{kind}({body}{'/' + relative_to if relative_to else ''})"
+
+
+def _spelling(name: str, where: str) -> str:
+    if not SPELLING.match(name):
+        raise KinematikaError("schema", f"{name!r} is not a symbol's name: letters, digits and _ "
+                              "as sympy spells them (omega_0 is ω₀, vdot is v̇, R_roda)", where)
+    return name
