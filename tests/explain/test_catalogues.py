@@ -12,6 +12,7 @@ from fluent.syntax import FluentParser, ast as ftl
 import kinematika.explain as explain_package
 from kinematika.explain.catalogue import LANGS, LOCALES, VARIABLE, catalogue
 from kinematika.joints import KINDS
+from kinematika.model.wording import PART_SUBSCRIPTS
 from kinematika.questions.centres import FIXED
 
 SOURCE = Path(explain_package.__file__).resolve().parent
@@ -74,10 +75,13 @@ def test_no_unused_and_no_missing_keys():
         used |= {f"{family}.{m}" for m in members}
     assert keys - used == set(), f"unused keys: {sorted(keys - used)}"
     prefixes = ("sec.", "msg.", "col.", "data.", "fig.", "order.", "step.", "driver.", "input.",
-                "other.", "rolling.", "dir.", "how.", "carry.", "sense.", "sub.", "centre.", "centres.",
+                "other.", "rolling.", "dir.", "how.", "carry.", "sense.", "centre.", "centres.",
                 "rates.", "fields.", "composition.", "pos.", "curvature.", "answers.", "structure.", "v.", "a.", "ask.", "ans.")
     wanted = {k for k in literals() if k.startswith(prefixes)}
     assert wanted - keys == set(), f"keys the code uses but no catalogue has: {sorted(wanted - keys)}"
+    parts = {k for k in literals() if k.startswith("sub.")}       # the parts' subscripts: model.wording
+    assert parts and parts <= set(PART_SUBSCRIPTS), sorted(parts - set(PART_SUBSCRIPTS))
+    assert all(set(words) == set(LANGS) for words in PART_SUBSCRIPTS.values())
 
 
 @pytest.mark.parametrize("lang,terms", [

@@ -128,12 +128,9 @@ def _decompositions(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) 
 
 def _part_words(lang: Optional[str]) -> dict[str, str]:
     """The subscripts of the parts (drag, Cor), as the explanation in `lang` writes them."""
-    if lang is None:
-        return {"drag": "drag", "coriolis": "Cor"}
-    from ..explain.catalogue import catalogue
+    from ..model.wording import part_subscript
 
-    cat = catalogue(lang)
-    return {"drag": cat.get("sub.drag"), "coriolis": cat.get("sub.cor")}
+    return {"drag": part_subscript("sub.drag", lang), "coriolis": part_subscript("sub.cor", lang)}
 
 
 def default_ask(model: Any) -> bool:

@@ -32,6 +32,17 @@ from ..languages import LANGS             # the explanations' languages (each ha
 # portador}`): texts contract them with a preposition (del portador), figures leave them out
 ARTICLES = {"ca": re.compile(r"(?i)(els|les|el|la) |l['’]"), "es": re.compile(r"(?i)(los|las|el|la) ")}
 NO_ARTICLE = re.compile(r"(?!)")
+# the subscripts of a motion's parts as each language writes them (v_rel, v_arr,B, a_Cor):
+# the explanations' symbols and the figures' labels read them here (one place for both)
+PART_SUBSCRIPTS = {"sub.rel": {"en": "rel", "es": "rel", "ca": "REL", "eu": "erl"},
+                   "sub.drag": {"en": "drag", "es": "arr", "ca": "ar", "eu": "arr"},
+                   "sub.cor": {"en": "Cor", "es": "Cor", "ca": "Cor", "eu": "Cor"}}
+
+
+def part_subscript(key: str, lang: Optional[str]) -> str:
+    """The subscript `key` (sub.rel, sub.drag, sub.cor) in `lang` (English when None)."""
+    words = PART_SUBSCRIPTS[key]
+    return words.get(lang or "en", words["en"])
 RATE = re.compile(r"^(omega|alpha)\((.+)\)$")
 SPELLING = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")      # a name sympy writes as a symbol
 

@@ -181,9 +181,6 @@ how-prismatic = (enllaç prismàtic { $joint }: sense rotació relativa)
 carry-anchor = De la resolució del grup: { $sym } = { $value }.
 sense-ccw = antihorari
 sense-cw = horari
-sub-rel = REL
-sub-drag = ar
-sub-cor = Cor
 sec-rates_summary = Velocitats i acceleracions angulars
 sec-rates_summary_v = Velocitats angulars
 sec-centres = Centres instantanis de rotació (CIR)

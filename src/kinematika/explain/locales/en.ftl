@@ -124,9 +124,6 @@ how-prismatic = (prismatic pair { $joint }: no relative rotation)
 carry-anchor = From the solution of the group: { $sym } = { $value }.
 sense-ccw = counter-clockwise
 sense-cw = clockwise
-sub-rel = rel
-sub-drag = drag
-sub-cor = Cor
 sec-rates_summary = Angular velocities and accelerations
 sec-rates_summary_v = Angular velocities
 sec-centres = Instant centres

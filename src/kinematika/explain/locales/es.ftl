@@ -124,9 +124,6 @@ how-prismatic = (par prismático { $joint }: sin rotación relativa)
 carry-anchor = De la resolución del grupo: { $sym } = { $value }.
 sense-ccw = antihorario
 sense-cw = horario
-sub-rel = rel
-sub-drag = arr
-sub-cor = Cor
 sec-rates_summary = Velocidades y aceleraciones angulares
 sec-rates_summary_v = Velocidades angulares
 sec-centres = Centros instantáneos de rotación (CIR)

@@ -127,9 +127,6 @@ how-prismatic = ({ $joint } lotura prismatikoa: biraketa erlatiborik gabe)
 carry-anchor = Taldearen ebazpenetik: { $sym } = { $value }.
 sense-ccw = erlojuaren orratzen aurka
 sense-cw = erlojuaren orratzen noranzkoan
-sub-rel = erl
-sub-drag = arr
-sub-cor = Cor
 sec-rates_summary = Abiadura eta azelerazio angeluarrak
 sec-rates_summary_v = Abiadura angeluarrak
 sec-centres = Biraketa-zentro instantaneoak

@@ -10,7 +10,7 @@ from babel.lists import format_list
 from ...numerals import DECIMAL, decimal_sign, separator, written
 from ...text import shown
 
-from ...model.wording import ARTICLES, NO_ARTICLE
+from ...model.wording import ARTICLES, NO_ARTICLE, part_subscript
 from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Msg, Name, Names,
                         Section, Sym, Table, Told, Value)
@@ -312,8 +312,9 @@ class Renderer:
         return sym_text(s.base, self.sub_text(s), s.sup)
 
     def sub_text(self, s: Sym) -> str:
-        """The subscript of a symbol: the catalogue's word (arr, rel, Cor) and the name."""
-        word = self.cat.get(s.sub_key) if s.sub_key else ""
+        """The subscript of a symbol: the language's word for a part of a motion (arr, rel,
+        Cor: `model.wording.PART_SUBSCRIPTS`) and the name."""
+        word = part_subscript(s.sub_key, self.lang) if s.sub_key else ""
         return visible(",".join(p for p in (word, self.numbered(s)) if p))
 
     # values ---------------------------------------------------------------------------------
