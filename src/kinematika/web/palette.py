@@ -34,6 +34,7 @@ class Context:
     values: dict[str, Any]
 
     def place(self, pick: Pick) -> np.ndarray:
+        """Where a pick is: a named point's place now, or the coordinates clicked."""
         if isinstance(pick, str):
             if pick not in self.at:
                 raise KinematikaError("usage", f"no point {pick!r} placed yet", "picks")
@@ -52,6 +53,7 @@ class Context:
         return number(round(x / step) * step)
 
     def body(self, kind: str) -> str:
+        """A new body's name: the kind's name in the student's language, numbered (crank1)."""
         return self.tree.fresh_body(self.names.get(kind, kind))
 
 
@@ -66,6 +68,7 @@ class Tool:
     write: Callable[[Context, list[Pick]], str]
 
     def public(self) -> dict[str, Any]:
+        """The entry as the page receives it (`GET /api/palette`): kind, picks, icon."""
         return {"kind": self.kind, "picks": list(self.picks), "icon": self.icon}
 
 

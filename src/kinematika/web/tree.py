@@ -28,21 +28,26 @@ class Tree:
         return str(self.root.get("frame") or "ground")
 
     def points(self) -> Any:
+        """The `points` section (made when missing)."""
         return document.section(self.root, "points", dict, self.fmt)
 
     def bodies(self) -> Any:
+        """The `bodies` section, with the fixed body in it (both made when missing)."""
         bodies = document.section(self.root, "bodies", dict, self.fmt)
         if self.frame not in bodies:
             bodies[self.frame] = document.new_list(self.fmt, [])
         return bodies
 
     def joints(self) -> Any:
+        """The `joints` list (made when missing)."""
         return document.section(self.root, "joints", list, self.fmt)
 
     def drivers(self) -> Any:
+        """The `drivers` list (made when missing)."""
         return document.section(self.root, "drivers", list, self.fmt)
 
     def asks(self) -> Any:
+        """The `ask` list (made when missing)."""
         return document.section(self.root, "ask", list, self.fmt)
 
     def existing(self, key: str) -> list:
@@ -50,6 +55,7 @@ class Tree:
         return self.root.get(key) or []
 
     def parameters(self) -> Optional[Any]:
+        """The `parameters` section, or None when the model has none (nothing made)."""
         return self.root.get("parameters")
 
     # bodies ----------------------------------------------------------------------------
@@ -98,10 +104,12 @@ class Tree:
         raise KinematikaError("usage", "no free point name", "points")
 
     def fresh_body(self, prefix: str) -> str:
+        """A body name not used yet: `prefix` numbered from 1 (crank1, crank2 ...)."""
         used = {str(b) for b in self.bodies()}
         return next(f"{prefix}{i}" for i in range(1, 10_000) if f"{prefix}{i}" not in used)
 
     def fresh_parameter(self, prefix: str) -> str:
+        """A parameter name not used yet: `prefix` numbered from 1 (R1, R2 ...)."""
         used = {str(p) for p in (self.parameters() or {})}
         return next(f"{prefix}{i}" for i in range(1, 10_000) if f"{prefix}{i}" not in used)
 
@@ -115,12 +123,15 @@ class Tree:
         return [str(j.get("id") or f"j{i + 1}") for i, j in enumerate(self.existing("joints"))]
 
     def add_joint(self, items: dict[str, Any]) -> None:
+        """Append a joint (a mapping in the file's format, flow style)."""
         self.joints().append(document.new_map(self.fmt, items))
 
     def map(self, items: dict[str, Any]) -> Any:
+        """A mapping in the file's format (YAML flow style or a TOML inline table)."""
         return document.new_map(self.fmt, items)
 
     def list(self, items: Iterable[Any]) -> Any:
+        """A list in the file's format (YAML flow style or a TOML array)."""
         return document.new_list(self.fmt, list(items))
 
 
