@@ -58,6 +58,13 @@ class Solution:
         """The mechanism's degrees of freedom, counted by the rank of its joints' conditions."""
         return self.solver.analysis.diagnosis.dof if self.solver.analysis else 0
 
+    @property
+    def diagnosis(self) -> Any:
+        """The count behind `dof` (`engine.mobility.Diagnosis`): n unknowns, dof = n − rank of
+        the joints' rows, the drivers' independent conditions and the velocity system's
+        condition number σ_max/σ_n (large near a dead point); None when nothing moves."""
+        return self.solver.analysis.diagnosis if self.solver.analysis else None
+
     # the motion of bodies and points --------------------------------------------------------
     def geometry(self, joint_id: str) -> Any:
         """What joint `joint_id` is at this instant (`joints.JointGeometry`): its point, unit

@@ -176,6 +176,7 @@ def test_errors_appear_as_you_type_at_their_place(page):
     assert page.get_by_test_id("dof").inner_text() == "DOF 1"
 
 
+@pytest.mark.filterwarnings("ignore::kinematika.errors.KinematikaWarning")   # the server's, in its threads
 def test_an_angle_in_radians_meant_as_degrees_is_answered_with_a_warning(page):
     editor = page.get_by_test_id("model-editor")
     good = editor.input_value()

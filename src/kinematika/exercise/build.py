@@ -170,7 +170,7 @@ def make_exercise(model: Model, vary: list[str], count: int, seed: int, lang: st
             if err.kind in ("singular", "mobility"):
                 return Drawn(reason="dead-point")
             raise
-        condition = variant.solution.solver.analysis.diagnosis.condition_number
+        condition = variant.solution.diagnosis.condition_number
         if condition > MAX_CONDITION:
             return Drawn(reason="dead-point")
         return Drawn(kept=variant)

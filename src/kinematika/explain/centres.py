@@ -12,7 +12,7 @@ from itertools import combinations
 
 from ..questions.centres import all_centres
 from .context import Ctx
-from .kinds import line_kind
+from .kinds import knife_edge, line_kind
 from .document import CentreNote, Section, Sym, msg
 
 MAX_ALL = 10        # above this many pairs, only the centres relative to the frame (and what they need)
@@ -35,7 +35,7 @@ def centres_section(ctx: Ctx) -> Section:
         c = found[key]
         note = CentreNote(c.pair, _clean(ctx, c.value), c.how, list(c.via))
         if c.how == "joint":
-            note.joint_type = ctx.model.joint(c.via[0]).type
+            note.joint_type = ctx.model.joint(c.via[0]).kind.name
         elif c.how == "weld":
             weld = ctx.model.joint(c.via[0])
             welded = next(b for b in c.pair if b in (weld.a, weld.b) and b != c.via[1])
@@ -221,7 +221,7 @@ def _axles(ctx: Ctx, note: CentreNote) -> None:
     from .vehicles import _lines
 
     frame, b = note.pair
-    wheels = [j for j in ctx.model.joints if j.type == "wheel" and {j.a, j.b} == {frame, b}]
+    wheels = [j for j in ctx.model.joints if knife_edge(j) and {j.a, j.b} == {frame, b}]
     if not wheels:
         return
     speeds = {p: ctx.vel(b, p, frame) for p in ctx.model.bodies[b].points}

@@ -120,7 +120,7 @@ def _willis_blocks(ctx: Ctx, carrier: str, planet: str, first: tuple, second: tu
 
 def _mesh_sign(ctx: Ctx, j) -> int:
     """−1 for an external contact (the wheels turn in opposite senses), +1 internal."""
-    contact = ctx.sol.solver.geos[j.id].contact
+    contact = ctx.sol.geometry(j.id).contact
     return 1 if contact is not None and contact.kind == "internal" else -1
 
 

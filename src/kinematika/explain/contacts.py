@@ -74,7 +74,7 @@ class Bar:
 
     def __init__(self, ctx: Ctx, j) -> None:
         self.ctx, self.j = ctx, j
-        self.contact = ctx.sol.solver.geos[j.id].contact
+        self.contact = ctx.sol.geometry(j.id).contact
         self.name = ctx.contact(j)
         (b1, c1), *rest = self.contact.centres
         self.c1, self.b1 = centre_name(ctx, b1, c1), b1

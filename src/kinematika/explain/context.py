@@ -50,7 +50,7 @@ class Ctx:
 
             base = contact_name(self.model, j.id)
             self._contacts[j.id] = base
-            contact = self.sol.solver.geos[j.id].contact
+            contact = self.sol.geometry(j.id).contact
             if contact is not None:
                 self.name_position(base, contact.point)
         return self._contacts[j.id]

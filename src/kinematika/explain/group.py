@@ -37,7 +37,7 @@ from .document import (Ann, Derived, Equation, Sym, Term, Value, body as body_na
                        point as point_name)
 from .order import jointed
 from .contacts import geometric_blocks
-from .kinds import rolls
+from .kinds import crossed_by_a_slot, guided, knife_edge, pin_only, rolls, same_rate, slider, welds
 from .terms import contact_term, point_term, rotation_terms, slide_terms
 
 MAX_TURNS = 3           # rotations along one route at most
@@ -156,7 +156,7 @@ class Planner:
                 else:
                     self.partial.setdefault(label, {})["driver"] = d
         for j in ctx.model.joints:
-            if j.type == "wheel" and j.a == ctx.frame and j.b not in self.determined and j.at:
+            if knife_edge(j) and j.a == ctx.frame and j.b not in self.determined and j.at:
                 self.partial.setdefault(ctx.motion_key(j.at, j.b), {})["wheel"] = j
         for label, spec in list(self.partial.items()):
             if not self._open(spec):
@@ -175,7 +175,7 @@ class Planner:
         return []
 
     def _dir(self, j: Joint) -> tuple:
-        return self.ctx.num(self.ctx.sol.solver.geos[j.id].along)
+        return self.ctx.num(self.ctx.sol.geometry(j.id).along)
 
     def _driven(self, j: Joint) -> bool:
         return any(d.kind == "joint" and d.joint == j.id for d in self.ctx.model.drivers)
@@ -189,11 +189,11 @@ class Planner:
         for j in model.joints:
             if b not in (j.a, j.b):
                 continue
-            if j.type in ("rolling", "gear") and ctx.sol.solver.geos[j.id].contact is not None:
+            if rolls(j) and ctx.sol.geometry(j.id).contact is not None:
                 out.append(Site(ctx.contact(j), b))
-            elif j.type == "slot" and j.a == b and j.at:
+            elif crossed_by_a_slot(j) and j.a == b and j.at:
                 out.append(Site(j.at, b))
-            elif j.type == "prismatic":
+            elif slider(j):
                 other = j.b if j.a == b else j.a
                 out += [Site(p, b) for p in ([j.at] if j.at else model.bodies[other].points)]
         return list(dict.fromkeys(out))
@@ -214,13 +214,13 @@ class Planner:
             other = j.b if j.a == s.body else j.a
             if other in visited:
                 continue
-            if j.type in ("rolling", "gear"):
-                ok = self.ctx.sol.solver.geos[j.id].contact is not None and self.ctx.contact(j) == s.point
-            elif j.type == "slot":
+            if rolls(j):
+                ok = self.ctx.sol.geometry(j.id).contact is not None and self.ctx.contact(j) == s.point
+            elif crossed_by_a_slot(j):
                 ok = j.at == s.point and j.a == s.body            # from the slotted body to the pin
-            elif j.type in ("revolute", "weld"):
-                ok = (j.type == "weld" or j.at == s.point) and Site(s.point, other) in self.sites[other]
-            elif j.type == "prismatic":
+            elif pin_only(j) or welds(j):
+                ok = (welds(j) or j.at == s.point) and Site(s.point, other) in self.sites[other]
+            elif slider(j):
                 ok = Site(s.point, other) in self.sites[other]
             else:
                 ok = False
@@ -234,7 +234,7 @@ class Planner:
             r = self.apart(seg.q, seg.p)
             return [] if r is None or seg.body in self.rates else [(-r[1], r[0])]
         j = seg.joint
-        if j.type in ("slot", "prismatic") and not self._driven(j) and j.id not in self.slides:
+        if guided(j) and not self._driven(j) and j.id not in self.slides:
             return [self._dir(j)]
         return []
 
@@ -364,7 +364,7 @@ class Planner:
             self.full.update(self.label(Site(g.p, g.body)) for g in r.segs)
         self.rates.update(path.finds)
         self.slides.update(g.joint.id for r in path.routes for g in r.segs
-                           if g.joint is not None and g.joint.type in ("slot", "prismatic"))
+                           if g.joint is not None and guided(g.joint))
         self._use([g.joint.id for r in path.routes for g in r.segs if g.joint is not None] +
                   [spec["wheel"].id for _, spec in path.known.values() if spec.get("wheel") is not None])
         self._propagate()
@@ -395,12 +395,12 @@ class Planner:
     def _sames(self) -> list[Same]:
         ctx, out = self.ctx, []
         for j in ctx.model.joints:
-            if j.type in ("weld", "prismatic"):
+            if same_rate(j):
                 out += [Same(j.b, j.a, j), Same(j.a, j.b, j)]
         for d in ctx.model.drivers:
             if d.kind == "joint":
                 j = ctx.model.joint(d.joint)
-                if j.type == "revolute":
+                if pin_only(j):
                     out += [Same(j.b, j.a, j, d, 1), Same(j.a, j.b, j, d, -1)]
             elif d.kind == "omega" and d.relative_to not in (None, ctx.frame):
                 out.append(Same(d.body, d.relative_to, None, d, 1))
@@ -592,19 +592,19 @@ class Writer:
     def condition(self, j: Joint, s: Site) -> list:
         """The words of a joint's condition, once per level (pins and welds go unsaid)."""
         ps = self.ps
-        if j.id in ps.used or j.type in ("revolute", "weld"):
+        if j.id in ps.used or pin_only(j) or welds(j):
             ps.used.add(j.id)
             return []
         ps.used.add(j.id)
         lv = self.level
-        if j.type in ("rolling", "gear"):
+        if rolls(j):
             key = "rolling.noslip" if lv == "v" else "rolling.kept"
             return [msg(key, joint=joint_name(j.id), a=body_name(j.a), b=body_name(j.b),
                         point=point_name(self.ctx.contact(j)))]
-        if j.type == "wheel":
+        if knife_edge(j):
             return [msg("group.wheel_v" if lv == "v" else "group.wheel_a", joint=joint_name(j.id),
                         point=point_name(j.at), body=body_name(j.b), w=omega_sym(j.b), v=Sym("v", self.label(s)))]
-        return [msg(f"cond.{j.type}", joint=joint_name(j.id), a=body_name(j.a), b=body_name(j.b),
+        return [msg(f"cond.{j.kind.name}", joint=joint_name(j.id), a=body_name(j.a), b=body_name(j.b),
                     point=point_name(j.at or ""))]
 
     def site_terms(self, s: Site, p: Path, known: bool = False) -> list[Term]:
@@ -621,7 +621,7 @@ class Writer:
         whole = ctx.vel(s.body, s.point) if lv == "v" else ctx.acc(s.body, s.point)
         unit = "speed" if lv == "v" else "accel"
         if wheel is not None:
-            e = ctx.sol.solver.geos[wheel.id].along
+            e = ctx.sol.geometry(wheel.id).along
             plane = msg("dir.wheel", joint=joint_name(wheel.id))
             given = driver is not None
             if lv == "v":
@@ -652,9 +652,9 @@ class Writer:
                 return []
             return rotation_terms(ctx, lv, seg.body, seg.q, seg.p, not known and seg.body not in p.rates)
         j = seg.joint
-        if j.type in ("rolling", "gear"):
+        if rolls(j):
             return [contact_term(ctx, seg.p, seg.body, seg.frm)] if lv == "a" else []
-        if j.type in ("slot", "prismatic"):
+        if guided(j):
             unknown = not known and not self.plan._driven(j) and j.id not in p.slides
             return slide_terms(ctx, lv, seg.frm, seg.body, seg.p, msg("dir.guide", joint=joint_name(j.id)), j.id,
                                unknown)
@@ -667,7 +667,7 @@ class Writer:
         unit = "rate" if lv == "v" else "rate2"
         value = ctx.omega(s.body) if lv == "v" else ctx.alpha(s.body)
         if s.driver is None:
-            key = "how.weld" if s.joint.type == "weld" else "how.prismatic"
+            key = "how.weld" if welds(s.joint) else "how.prismatic"
             how = [sym_of(s.other), " ", msg(key, joint=joint_name(s.joint.id))]
         else:
             rel = sym_of(s.body, s.other) if s.sign > 0 else sym_of(s.other, s.body)

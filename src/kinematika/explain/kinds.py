@@ -26,16 +26,45 @@ def crossed_by_a_slot(j: Any) -> bool:
     return j.kind.chain == "PR"
 
 
+def slider(j: Any) -> bool:
+    """A prismatic pair (the chain P): the bodies slide along a straight guide and turn together."""
+    return j.kind.chain == "P"
+
+
+def guided(j: Any) -> bool:
+    """A straight guide, with a slider block (P) or a pin in a slot (PR): the motion of a
+    point across it is relative sliding along the guide's direction."""
+    return j.kind.chain in ("P", "PR")
+
+
+def pin_only(j: Any) -> bool:
+    """A planar or spatial pin about one axis (the chain R): not a ball joint."""
+    return j.kind.chain == "R"
+
+
+def lower(j: Any) -> bool:
+    """A pin or a slider (R or P): the pairs a dyad's name is made of."""
+    return j.kind.chain in ("R", "P")
+
+
+def same_rate(j: Any) -> bool:
+    """The two bodies turn together (a weld, or a prismatic pair): one ω, one α."""
+    return bool(j.kind.rigid) or j.kind.chain == "P"
+
+
+def knife_edge(j: Any) -> bool:
+    """A vehicle's wheel (a knife edge): its point moves only along the wheel's plane."""
+    return bool(j.kind.knife_edge)
+
+
 def turns(j: Any) -> bool:
     """A joint whose driven rate is an angular velocity (a pin, a wheel, a cylindrical
     pair), not a sliding speed (a prismatic pair)."""
-    return j.kind.coordinate == "angle" or j.kind.pins or j.kind.name == "wheel"
+    return j.kind.coordinate == "angle" or j.kind.pins or j.kind.knife_edge
 
 
 def line_kind(j: Any) -> str:
-    """Which line a joint puts its bodies' relative centre on: "wheel" (its axle), "normal"
-    (the common normal at a contact that slides: a cam, a curved slot), "slot" (the normal to
-    a straight slot at its pin)."""
-    if j.kind.name == "wheel":
-        return "wheel"
-    return "normal" if j.kind.centre == "normal" else "slot"
+    """Which line a joint puts its bodies' relative centre on (its kind's `centre_line`): a
+    wheel's axle, the common normal at a contact that slides (a cam, a curved slot), the
+    normal to a straight slot at its pin."""
+    return j.kind.centre_line

@@ -14,6 +14,7 @@ import numpy as np
 from ..engine.linsolve import _blocks, independent_rows
 from ..solution import Solution
 from ..structure.assur import assur_groups, dyad as assur_dyad
+from .kinds import lower
 
 
 @dataclass
@@ -78,7 +79,7 @@ def dyad(sol: Solution, step: Step, known: set[str]) -> Step:
     ends1, ends2, middle = between(b1, known), between(b2, known), between(b1, {b2})
     chain = ends1 + middle + ends2
     if (len(ends1) != 1 or len(ends2) != 1 or len(middle) != 1
-            or any(j.type not in ("revolute", "prismatic") for j in chain)):
+            or not all(lower(j) for j in chain)):
         return step
     group = assur_dyad(b1, b2, *chain)
     if group is None or group.kind == "other":
@@ -94,7 +95,7 @@ def _joints_of(sol: Solution, rows: list, bodies: list[str]) -> list[str]:
 
 def _grounded(sol: Solution, body: str) -> bool:
     frame = sol.model.frame
-    return any({j.a, j.b} == {frame, body} and j.type in ("revolute", "prismatic")
+    return any({j.a, j.b} == {frame, body} and lower(j)
                for j in sol.model.joints)
 
 

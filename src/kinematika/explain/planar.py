@@ -16,7 +16,7 @@ from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, V
 from .group import group_blocks
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
-from .kinds import turns
+from .kinds import knife_edge, pin_only, rolls, turns
 from .order import Step
 from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
@@ -114,13 +114,13 @@ class PlanarSteps:
         body, j = step.bodies[0], chain[0]
         given = any(d.kind == "omega" and d.body == body and d.relative_to in (None, self.ctx.frame)
                     for d in self.ctx.model.drivers)
-        if j.type != "revolute":
+        if not pin_only(j):
             out: list = [self.same(body, self.ctx.frame, j)]
         elif given:
             out = []            # "Given: ω_2 = …" says it all
         else:
             out = [self.rate(body)]
-        if j.type == "revolute":
+        if pin_only(j):
             self.done.add(self.ctx.point_label(j.at, body))
             out.append(msg("input.revolute", body=body_(body), point=point(j.at)))
             return out
@@ -183,7 +183,7 @@ class PlanarSteps:
         pin, holder = slot.at, slot.a if slot.b == body else slot.b
         ctx, lv = self.ctx, self.level
         if slot.a == body:                      # the slot is cut in the body: RPR
-            if first.type != "revolute":
+            if not pin_only(first):
                 return None
             c = first.at
             side = [self.point(c, body)] + rotation_terms(ctx, lv, body, c, pin, True) + \
@@ -192,7 +192,7 @@ class PlanarSteps:
             rot = next(t for t in side if t.kind in ("rotation", "tangential"))
             return [eq, self.read(body, rot, c, pin)]
         side2 = [self.point(pin, holder)] + slide_terms(ctx, lv, holder, body, pin, guide(slot), slot.id)
-        if first.type == "revolute":            # RRP: the pin turns about the body's pivot
+        if pin_only(first):                     # RRP: the pin turns about the body's pivot
             c = first.at
             side1 = [self.point(c, body)] + rotation_terms(ctx, lv, body, c, pin, True)
             eq = self.equation(self.target(pin, body, known=False), [side1, side2], pin, body)
@@ -212,7 +212,7 @@ class PlanarSteps:
             if j.id in self.used or not ({j.a, j.b} <= scope and {j.a, j.b} & group):
                 continue
             self.used.add(j.id)
-            if j.type in ("rolling", "gear"):
+            if rolls(j):
                 out += self.rolling(j, group)
             else:
                 out.append(condition_msg(j, self.level))
@@ -236,7 +236,7 @@ class PlanarSteps:
         point of its body), at velocities; at accelerations the contact kept, a_J∈b = a_J∈a plus
         the contact's term along the normal."""
         ctx, lv = self.ctx, self.level
-        contact = ctx.sol.solver.geos[j.id].contact
+        contact = ctx.sol.geometry(j.id).contact
         name = self.contact_name(j)
         ctx.name_position(name, contact.point)
         sides = [self.via(body, name, body in group) for body in (j.b, j.a)]
@@ -426,13 +426,13 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
 
 def condition_msg(j: Joint, level: str) -> Msg:
     """A joint's condition in words (for groups solved together)."""
-    return msg(f"cond.{j.type}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))
+    return msg(f"cond.{j.kind.name}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))
 
 
 def merge_vehicles(ctx: Ctx, steps: list[Step]) -> list[Step]:
     """Consecutive groups on knife-edge wheels solved as one (the notes find a vehicle's
     centre from all its wheels at once: the front wheel's speed locates the chassis')."""
-    wheeled = {b for j in ctx.model.joints if j.type == "wheel" for b in (j.a, j.b)}
+    wheeled = {b for j in ctx.model.joints if knife_edge(j) for b in (j.a, j.b)}
     out: list[Step] = []
     for s in steps:
         prev = out[-1] if out else None

@@ -16,6 +16,7 @@ from ..questions.decompose import decompose
 from .context import Ctx, alpha_sym, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Names, Section, Sym, Term, Value, msg
 from .terms import KNOWN, point_term, rotation_terms, target_term
+from .kinds import guided, pin_only
 
 
 def carriers(ctx: Ctx) -> list[tuple[str, Optional[str], Optional[str]]]:
@@ -92,7 +93,7 @@ def loop_blocks(ctx: Ctx) -> list:
                 out.append(msg("loop.solve"))
             for x, y, jj in loop:
                 if jj.id not in driven:
-                    axis = ctx.sol.solver.geos[jj.id].axis
+                    axis = ctx.sol.geometry(jj.id).axis
                     rel = ctx.omega(x, y) if level == "w" else ctx.alpha(x, y)
                     rate = dot(tuple(ctx.space.rot_components(rel)), tuple(axis))
                     unit = "rate" if level == "w" else "rate2"
@@ -112,7 +113,7 @@ def _loop(ctx: Ctx, parent: dict, j) -> Optional[list]:
     down = list(reversed(up(j.a)))
     back = [(p, c, jj) for c, p, jj in up(j.b)]
     loop = down + [(j.b, j.a, j)] + back
-    if any(jj.type != "revolute" for _, _, jj in loop):
+    if not all(pin_only(jj) for _, _, jj in loop):
         return None
     return loop
 
@@ -265,7 +266,7 @@ def _relative(ctx: Ctx, level: str, ref: PointRef, moving: str, pivot: Optional[
     unit = "speed" if level == "v" else "accel"
     value = ctx.clean(ctx.vel(body, p, moving) if level == "v" else ctx.acc(body, p, moving), unit)
     joint = next((j for j in ctx.model.joints if {j.a, j.b} == {body, moving}), None)
-    if joint is not None and joint.type in ("slot", "prismatic"):
+    if joint is not None and guided(joint):
         return [msg("composition.slide", sym=sym, value=Value(value, unit), joint=Name(joint.id, "joint"),
                     point=Name(p))]
     if joint is not None and joint.at and not _apart(ctx, joint.at, p):

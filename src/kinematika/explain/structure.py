@@ -24,11 +24,11 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
-    joints = [[joint(j.id), msg(f"joint.{j.type}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
+    joints = [[joint(j.id), msg(f"joint.{j.kind.name}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]
     sec.add(Told("points", list(model.points)))
     sec.add(Table([msg("col.joint"), msg("col.type"), msg("col.bodies"), msg("col.where")], joints))
-    d = sol.solver.analysis.diagnosis
+    d = sol.diagnosis
     sec.add(msg("structure.dof", n=d.n, moving=len(model.moving_bodies), rank=d.n - d.dof, dof=d.dof,
                 conditions=d.conditions))
     sec.add(drawing(ctx, "fig.mechanism", velocities=True, accelerations=False, centres=False, curvature=False))

@@ -19,11 +19,12 @@ from ..model.model import Joint
 from .context import Ctx, segment
 from .document import Equation, Figure, Name, msg, names
 from .terms import point_term, rotation_terms, target_term
+from .kinds import pin_only
 
 
 def triad_parts(ctx: Ctx, bodies: list[str], joints: list[Joint]) -> Optional[tuple]:
     """(T, [(L, outer joint, inner joint, known body)]) when the group is a revolute triad."""
-    if len(bodies) != 4 or any(j.type != "revolute" for j in joints):
+    if len(bodies) != 4 or not all(pin_only(j) for j in joints):
         return None
     group = set(bodies)
     for t in bodies:

@@ -13,6 +13,7 @@ from typing import Optional
 
 from .context import Ctx, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, msg
+from .kinds import knife_edge, pin_only
 
 TOL = 1e-9
 
@@ -22,7 +23,7 @@ def wheel_route(ctx: Ctx, group: list[str], known: set[str], level: str) -> Opti
     route does not reach every body of the group."""
     if level != "v":
         return None
-    wheels = [j for j in ctx.model.joints if j.type == "wheel" and ctx.frame in (j.a, j.b)
+    wheels = [j for j in ctx.model.joints if knife_edge(j) and ctx.frame in (j.a, j.b)
               and ({j.a, j.b} & set(group))]
     if not wheels:
         return None
@@ -66,8 +67,8 @@ def _driven_wheel(ctx: Ctx, d, group: list[str], speeds: dict) -> list:
         return []
     p = d.point.point
     for j in ctx.model.joints:
-        if j.type == "wheel" and j.at == p and d.point.body in (j.a, j.b):
-            e = ctx.num(ctx.sol.solver.geos[j.id].along)
+        if knife_edge(j) and j.at == p and d.point.body in (j.a, j.b):
+            e = ctx.num(ctx.sol.geometry(j.id).along)
             along = ctx.num(ctx.inst.direction(d.along, d.where))
             if abs(e[0] * along[1] - e[1] * along[0]) <= 1e-9:
                 v = ctx.vel(d.point.body, p)
@@ -82,7 +83,7 @@ def _lines(ctx: Ctx, b: str, wheels: list, speeds: dict) -> list[tuple]:
     out = []
     for j in wheels:
         if b in (j.a, j.b):
-            e = ctx.num(ctx.sol.solver.geos[j.id].along)
+            e = ctx.num(ctx.sol.geometry(j.id).along)
             out.append((ctx.num(ctx.pos(j.at)), (-e[1], e[0]),
                         msg("vehicle.line.wheel", joint=Name(j.id, "joint"), point=Name(j.at))))
     for p in ctx.model.bodies[b].points:
@@ -152,7 +153,7 @@ def _pinned(ctx: Ctx, b: str, solved: set[str]) -> Optional[list]:
         if d.kind != "joint":
             continue
         j = ctx.model.joint(d.joint)
-        if j.type == "revolute" and b in (j.a, j.b):
+        if pin_only(j) and b in (j.a, j.b):
             other = j.a if j.b == b else j.b
             if other in solved:
                 rate = Value(ctx.clean(ctx.inst.value(d.value, d.where), "rate"), "rate")

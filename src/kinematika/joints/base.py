@@ -74,6 +74,8 @@ class JointKind:
     touches: ClassVar[bool] = False         # the bodies touch at a contact point (`contact` questions)
     rolls: ClassVar[bool] = False           # ... and roll there without slipping
     pitch: ClassVar[bool] = False           # its circles are pitch circles (gears: drawn dash-dot)
+    knife_edge: ClassVar[bool] = False      # the point `at` of b moves only along `along`, fixed in b
+                                            # (a vehicle's wheel: no slip sideways)
     along_in: ClassVar[str] = "a"           # the body `along` is fixed in
     centre: ClassVar[str] = ""              # where it puts the relative instant centre of its two
                                             # bodies by itself: "pin" (at `at`), "contact" (the
@@ -84,6 +86,8 @@ class JointKind:
                                             # "R", "P", or "PR" for a pin in a slot (a slider
                                             # block between); names dyads (RRR, RRP, …)
     route: ClassVar[str] = "pair"           # how an explanation treats it (explain.group)
+    centre_line: ClassVar[str] = ""         # with centre "normal": which line, in the explanation's
+                                            # words (its message `centre-line-…`)
     # what the file says: each optional key of a joint and whether this kind needs it
     # ("required", "optional", "required in 3D" — and then absent in a planar model —,
     # "optional in 3D"; a key not listed is refused), and the bodies that must carry `at`

@@ -26,6 +26,7 @@ class Contact(JointKind):
     touches = True
     route = "contact"
     centre = "normal"
+    centre_line = "normal"                 # the common normal at the contact
     fields = {"at": "optional"}
     point_on = "b"
     keeps = "{b} keeps touching {a}"

@@ -36,6 +36,7 @@ class CurvedSlot(JointKind):
     touches = True
     route = "slot"
     centre = "normal"
+    centre_line = "normal"                 # the common normal at the pin
     fields = {"at": "required"}
     point_on = "b"
 

@@ -29,6 +29,7 @@ class Slot(JointKind):
     guides_point = True
     chain = "PR"                   # the slot's line in a, a slider block, the pin of b
     centre = "normal"                 # on the normal to `along` at `at`
+    centre_line = "slot"                   # the normal to the slot at the pin
     route = "slot"
     fields = {"at": "required", "along": "required"}
     point_on = "b"

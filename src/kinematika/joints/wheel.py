@@ -27,6 +27,8 @@ class Wheel(JointKind):
     guides_point = True
     along_in = "b"
     centre = "normal"                 # on the normal to `along` at `at`
+    centre_line = "wheel"                  # its axle
+    knife_edge = True
     route = "wheel"
     fields = {"at": "required", "along": "required"}
     point_on = "b"

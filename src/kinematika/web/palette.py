@@ -18,7 +18,18 @@ from typing import Any, Callable, Optional
 import numpy as np
 
 from ..errors import KinematikaError
+from ..joints.contact import KIND as CONTACT_KIND
+from ..joints.curved_slot import KIND as CURVED_SLOT_KIND
+from ..joints.gear import KIND as GEAR_KIND
+from ..joints.prismatic import KIND as PRISMATIC_KIND
+from ..joints.revolute import KIND as REVOLUTE_KIND
+from ..joints.rolling import KIND as ROLLING_KIND
+from ..joints.slot import KIND as SLOT_KIND
 from .tree import Tree, degrees, number
+
+# the joint kinds the tools place, as their modules name them (`kinematika.joints`)
+REVOLUTE, PRISMATIC, SLOT, ROLLING = REVOLUTE_KIND.name, PRISMATIC_KIND.name, SLOT_KIND.name, ROLLING_KIND.name
+GEAR, CURVED_SLOT, CONTACT = GEAR_KIND.name, CURVED_SLOT_KIND.name, CONTACT_KIND.name
 
 Pick = Any          # a point's name, coordinates [x, y], or {"body": NAME}
 
@@ -96,7 +107,7 @@ def pivot(ctx: Context, picks: list[Pick]) -> str:
     owner = t.owner(p)
     t.add_to_body(t.frame, p)
     if owner and owner != t.frame:
-        t.add_joint({"type": "revolute", "bodies": t.list([t.frame, owner]), "at": p})
+        t.add_joint({"type": REVOLUTE, "bodies": t.list([t.frame, owner]), "at": p})
     return f"point:{p}"
 
 
@@ -117,7 +128,7 @@ def link(ctx: Context, picks: list[Pick]) -> str:
     t.bodies()[body] = t.list([start, end])
     for p, owner in joined:
         if owner:
-            t.add_joint({"type": "revolute", "bodies": t.list([owner, body]), "at": p})
+            t.add_joint({"type": REVOLUTE, "bodies": t.list([owner, body]), "at": p})
     return f"body:{body}"
 
 
@@ -189,8 +200,8 @@ def slider(ctx: Context, picks: list[Pick]) -> str:
     body = ctx.body("slider")
     t.bodies()[body] = t.list([p])
     if owner:
-        t.add_joint({"type": "revolute", "bodies": t.list([owner, body]), "at": p})
-    t.add_joint({"type": "prismatic", "bodies": t.list([t.frame, body]), "along": along})
+        t.add_joint({"type": REVOLUTE, "bodies": t.list([owner, body]), "at": p})
+    t.add_joint({"type": PRISMATIC, "bodies": t.list([t.frame, body]), "along": along})
     return f"body:{body}"
 
 
@@ -207,7 +218,7 @@ def slot(ctx: Context, picks: list[Pick]) -> str:
     d = ctx.at[ends[1]] - ctx.at[ends[0]]
     _guide(ctx, pin, t.list(ends), d / np.linalg.norm(d))
     t.add_to_body(slotted, pin)
-    t.add_joint({"type": "slot", "bodies": t.list([slotted, owner or slotted]), "at": pin,
+    t.add_joint({"type": SLOT, "bodies": t.list([slotted, owner or slotted]), "at": pin,
                  "along": t.list(ends)})
     return f"body:{slotted}"
 
@@ -261,7 +272,7 @@ def wheel(ctx: Context, picks: list[Pick]) -> str:
                                  "line": {"through": contact, "direction": tangent}})
     body = ctx.body("wheel")
     t.bodies()[body] = t.map({"points": [centre, contact], "circle": {"center": centre, "radius": r}})
-    t.add_joint({"type": "rolling", "bodies": t.list([t.frame, body])})
+    t.add_joint({"type": ROLLING, "bodies": t.list([t.frame, body])})
     return f"body:{body}"
 
 
@@ -291,9 +302,9 @@ def gear(ctx: Context, picks: list[Pick]) -> str:
     for centre, r in ((first, ra), (second, rb)):
         body = ctx.body("gear")
         t.bodies()[body] = t.map({"points": [centre], "circle": {"center": centre, "radius": r}})
-        t.add_joint({"type": "revolute", "bodies": t.list([t.frame, body]), "at": centre})
+        t.add_joint({"type": REVOLUTE, "bodies": t.list([t.frame, body]), "at": centre})
         bodies.append(body)
-    t.add_joint({"type": "gear", "bodies": t.list(bodies)})
+    t.add_joint({"type": GEAR, "bodies": t.list(bodies)})
     return f"body:{bodies[0]}"
 
 
@@ -326,7 +337,7 @@ def curved_slot(ctx: Context, picks: list[Pick]) -> str:
     listed = t.body_points(slotted)
     t.bodies()[slotted] = t.map({"points": listed + ([centre] if centre not in listed else []),
                                  "circle": {"center": centre, "radius": number(radius)}})
-    t.add_joint({"type": "curved_slot", "bodies": t.list([slotted, owner]), "at": pin})
+    t.add_joint({"type": CURVED_SLOT, "bodies": t.list([slotted, owner]), "at": pin})
     return f"body:{slotted}"
 
 
@@ -342,7 +353,7 @@ def contact(ctx: Context, picks: list[Pick]) -> str:
         if not (isinstance(body, dict) and any(k in body for k in ("circle", "line", "curve", "cam"))):
             raise KinematikaError("usage", f"{name} has no outline (a circle, a line, a curve, a "
                                   "cam) to touch with: write its shape in the text first", "picks")
-    t.add_joint({"type": "contact", "bodies": t.list([a, b])})
+    t.add_joint({"type": CONTACT, "bodies": t.list([a, b])})
     return f"body:{a}"
 
 
@@ -352,13 +363,13 @@ TOOLS: tuple[Tool, ...] = (
     Tool("link", ("place", "place"), "M5 18 19 6M5 18a2 2 0 1 0 .01 0M19 6a2 2 0 1 0 .01 0", link),
     Tool("plate", ("body", "place"), "M4 18 12 5l8 13Z", plate),
     Tool("slider", ("point",), "M7 9h10v6H7ZM2 17h20", slider),
-    Tool("slot", ("point", "body"), "M5 9h14a3 3 0 0 1 0 6H5a3 3 0 0 1 0-6M12 12a1.5 1.5 0 1 0 .01 0",
+    Tool(SLOT, ("point", "body"), "M5 9h14a3 3 0 0 1 0 6H5a3 3 0 0 1 0-6M12 12a1.5 1.5 0 1 0 .01 0",
          slot),
     Tool("wheel", ("place", "place"), "M12 11a7 7 0 1 0 .01 0M12 4v14M2 21h20", wheel),
-    Tool("gear", ("place", "place"), "M8 12a5 5 0 1 0 .01 0M18 12a4 4 0 1 0 .01 0", gear),
-    Tool("curved_slot", ("point", "body", "place"), "M4 17a9 9 0 0 1 16 0M12 8a1.5 1.5 0 1 0 .01 0",
+    Tool(GEAR, ("place", "place"), "M8 12a5 5 0 1 0 .01 0M18 12a4 4 0 1 0 .01 0", gear),
+    Tool(CURVED_SLOT, ("point", "body", "place"), "M4 17a9 9 0 0 1 16 0M12 8a1.5 1.5 0 1 0 .01 0",
          curved_slot),
-    Tool("contact", ("body", "body"), "M12 4a6 6 0 1 0 .01 0M3 20h18M12 16v4", contact),
+    Tool(CONTACT, ("body", "body"), "M12 4a6 6 0 1 0 .01 0M3 20h18M12 16v4", contact),
 )
 BY_KIND = {t.kind: t for t in TOOLS}
 

@@ -1,0 +1,78 @@
+"""A joint kind lives in its module: no other module compares a joint's type with a kind's
+name or writes one as a string (they ask the kind's capabilities), and every kind registered
+has everything the rest of kinematika asks of it."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from kinematika.joints import KINDS, MODULES, JointKind
+
+SRC = Path(__file__).resolve().parents[2] / "src" / "kinematika"
+NAMES = "|".join(sorted(MODULES, key=len, reverse=True))
+# a kind's name as a string literal: 'revolute', "cam" (Python and the page's JavaScript)
+LITERAL = re.compile(rf"""(?<![\w.-])["']({NAMES})["']""")
+# comparisons of a type with anything: j.type == ..., .type in (...), type === in the page
+COMPARED = re.compile(r"""\.type\s*(==|!=|===|!==|\bin\b|\bnot in\b)""")
+# files where these words mean something else than a joint kind
+OTHER_MEANINGS = {
+    "cams": "a cam design's own words (a follower's `contact`)",
+    "curves": "curves",
+    "joints": "the joint kinds themselves",
+    "exercise": "the mistakes' names",
+}
+ALLOWED_WORDS = {           # the same words meaning something else, with where and what
+    # a question (`contact`), a shape key (`cam:`), a touching pair's geometry (`.contact`)
+    "contact": ("model/model.py", "model/schema.py", "model/shape.py", "model/build.py", "model/generate_shape.py",
+                "draw/results.py", "draw/marks.py", "draw/scene.py", "explain/answers.py", "explain/terms.py",
+                "explain/contacts.py", "explain/needs.py", "web/static/js/figure.js", "questions/__init__.py",
+                "questions/centres.py", "report/json_answer.py",
+                "cli/cam.py"),                      # a cam design's follower: its `contact` (roller, flat)
+    "cam": ("model/build.py", "model/schema.py", "model/shape.py", "model/generate_shape.py",
+            "cli/cam.py",                           # the `kinematika cam` answer's key
+            "web/palette.py"),                      # a body's `cam:` shape
+    # how a centre was found (`Centre.how`): through a weld
+    "weld": ("questions/centres.py", "explain/centres.py", "explain/render/base.py", "report/centres_table.py"),
+    # a body's kind: a pitch circle, and the default names of new bodies in the page's languages
+    "gear": ("draw/scene.py", "draw/bodies.py", "web/static/js/figure.js", "web/build.py", "web/palette.py"),
+    "wheel": ("explain/group.py",                   # what a partly known point's motion comes from
+              "web/build.py", "web/palette.py",
+              "web/static/js/figure.js"),            # the browser's mouse-wheel event
+}
+
+
+def _sources() -> list[Path]:
+    return [p for p in sorted(SRC.rglob("*")) if p.suffix in (".py", ".js")
+            and p.relative_to(SRC).parts[0] not in OTHER_MEANINGS]
+
+
+def test_no_module_compares_a_joints_type():
+    found = [f"{p.relative_to(SRC)}:{i}: {line.strip()}" for p in _sources()
+             for i, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1)
+             if COMPARED.search(line) and "joint" in line.lower() + p.name]
+    assert not found, "\n".join(found)
+
+
+def test_no_module_writes_a_kinds_name():
+    found = []
+    for p in _sources():
+        rel = str(p.relative_to(SRC))
+        for i, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1):
+            for m in LITERAL.finditer(line):
+                if rel not in ALLOWED_WORDS.get(m.group(1), ()):
+                    found.append(f"{rel}:{i}: {line.strip()}")
+    assert not found, "\n".join(found)
+
+
+@pytest.mark.parametrize("name", list(MODULES))
+def test_every_kind_says_what_the_others_ask(name):
+    kind = KINDS[name]
+    assert isinstance(kind, JointKind) and kind.name == name and kind.summary and type(kind).__doc__
+    assert kind.conditions(2 if 2 in kind.dimensions else 3) >= 1
+    assert kind.rows is not JointKind.rows, f"{name} writes no rows"
+    assert kind.add is not JointKind.add, f"{name} has no builder method"
+    module = __import__(f"kinematika.joints.{MODULES[name]}", fromlist=["KIND"])
+    assert module.__doc__ and ("Condition" in module.__doc__ or "condition" in module.__doc__), \
+        f"{name}: its module's docstring says its condition"
