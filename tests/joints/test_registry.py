@@ -73,6 +73,8 @@ def test_every_kind_says_what_the_others_ask(name):
     assert kind.conditions(2 if 2 in kind.dimensions else 3) >= 1
     assert kind.rows is not JointKind.rows, f"{name} writes no rows"
     assert kind.add is not JointKind.add, f"{name} has no builder method"
+    if kind.centre == "normal":                       # the explanation names the line it puts
+        assert kind.centre_line, f"{name}: which line its centre is on"   # the centre on
     module = __import__(f"kinematika.joints.{MODULES[name]}", fromlist=["KIND"])
     assert module.__doc__ and ("Condition" in module.__doc__ or "condition" in module.__doc__), \
         f"{name}: its module's docstring says its condition"
