@@ -121,18 +121,10 @@ def signed_radii(contact: str, ra: Any, rb: Any, a_outer: bool) -> tuple[Any, An
 def arc_slip(rho_a: Any, rho_b: Any, psi: Any, phi_a: Any, phi_b: Any) -> Any:
     """The arcs rolled on a's circle less those on b's, since the drawing, when the line of
     centres has turned by ψ and the bodies by φa, φb: (ρa − ρb) ψ + ρb φb − ρa φa. Rolling
-    without slipping keeps it 0 (on numbers, formulas or arrays)."""
+    without slipping keeps it 0 (on numbers, formulas or arrays): solved for φb, a planet
+    (radius r) on a fixed sun (R) whose arm turns by ψ turns by (R + r) ψ / r, and together
+    for every pair of a gear train, Willis's equations (`sweep.carried`)."""
     return (rho_a - rho_b) * psi + rho_b * phi_b - rho_a * phi_a
-
-
-def rolled_turn(rho_a: Any, rho_b: Any, psi: Any, phi_a: Any = None, phi_b: Any = None) -> Any:
-    """The turn of one body of a rolling circle pair from the other's (`phi_a` or `phi_b`)
-    and the line of centres' ψ, all since the drawing: `arc_slip` = 0 solved,
-    φb = (ρa φa − (ρa − ρb) ψ)/ρb, φa = (ρb φb + (ρa − ρb) ψ)/ρa. A planet (radius r) on a
-    fixed sun (R), its arm turned by ψ: φ = (R + r) ψ / r."""
-    if phi_b is None:
-        return (rho_a * phi_a - (rho_a - rho_b) * psi) / rho_b
-    return (rho_b * phi_b + (rho_a - rho_b) * psi) / rho_a
 
 
 def _on_line(circle: Any, cbody: str, line: Any, lbody: str, sign: float) -> Any:

@@ -4,11 +4,12 @@
 shifts it along its guide), and the constructions follow (`engine.turns`). Every other
 body is carried too when its pose after the move is a closed form of the input's:
 
-- by an angle that is a linear form in the inputs' turns: a body rolling on another
-  (circles, no slip) turns by the rolling ratio, `joints.rolling.rolled_turn`, the line of
-  the centres turning with a body that holds both (a planet of radius r on a fixed sun of
-  radius R, its arm turned by ψ: (R + r) ψ / r); or a body turns as another does (a slider
-  on the frame, a body held by a driver, or welded);
+- by an angle that is a linear form in the inputs' turns: bodies rolling on each other
+  (circles, no slip) turn by the rolling ratios, Willis's equations solved
+  (`joints.rolling.arc_slip` = 0 for each pair, the line of centres turning with a body
+  that holds both: a planet of radius r on a fixed sun of radius R, its arm turned by ψ,
+  turns by (R + r) ψ / r); or a body turns as another does (a slider on the frame, a body
+  held by a driver, or welded);
 - by two of its places: its pivot and a point that turns with it, its own or a pin in a
   slot of it through the pivot (a Geneva wheel): the direction between them turns as it.
 
@@ -27,10 +28,10 @@ from typing import Any, Iterator, Optional
 import numpy as np
 
 from ..engine.instant import Instant, instantiate
-from ..engine.turns import moves_with
+from ..engine.turns import moves_with, turn_for
 from ..errors import KinematikaError
 from ..expressions import parse
-from ..joints.rolling import rolled_turn, signed_radii
+from ..joints.rolling import arc_slip, signed_radii
 from ..model.model import Model, Turn
 from ..shapes import Circle
 
@@ -65,7 +66,27 @@ def carried_turns(model: Model, inputs: list[Input], path: Path, values: dict[st
                   inst: Instant) -> list[Turn]:
     """The inputs' turns and the turns of every body found to follow them in closed form
     (`inst`: the drawing, exact; `values`: the probe values the path was made at)."""
-    return _Finder(model, inputs, path, values, inst).run()
+    turns = _Finder(model, inputs, path, values, inst).run()
+    moved = dataclasses.replace(model, turns=turns)
+    used = {id(turn_for(moved, name)) for name in model.points}
+    inputs_ = {i.turn.body for i in inputs}
+    return [t for t in turns if t.body in inputs_ or id(t) in used or fixture(model, t.body)]
+
+
+def fixture(model: Model, body: str) -> str:
+    """What of `body` is fixed in it by numbers, which only its turn can carry (a shape's
+    place or direction, a joint's direction), or ''."""
+    from ..model.model import PointPair
+
+    for s in model.bodies[body].shapes:
+        if any(getattr(s, k, ()) for k in ("center", "through")) or not all(
+                isinstance(getattr(s, k, None), (PointPair, type(None))) for k in ("direction", "axis", "normal")):
+            return f"{type(s).__name__.lower()}'s place"
+    for j in model.joints:
+        fixed_in = j.b if j.kind.along_in == "b" else j.a
+        if fixed_in == body and j.along is not None and not isinstance(j.along, PointPair):
+            return f"joint {j.id}'s direction"
+    return ""
 
 
 def placed(model: Model, turns: list[Turn], values: dict[str, str]) -> Optional[dict[str, np.ndarray]]:
@@ -101,6 +122,7 @@ class _Finder:
         self.drawn = drawn
         self.tol = PLACE_TOLERANCE * inst.scale
         self.tried: set[str] = set()
+        self.rolled = self._rolling()
 
     def run(self) -> list[Turn]:
         while True:
@@ -139,37 +161,45 @@ class _Finder:
         return None
 
     def _angles(self, body: str) -> Iterator[Form]:
-        """Candidate turns of `body`: rolling ratios, then the turns of the bodies it is
+        """Candidate turns of `body`: its rolling ratio, then the turns of the bodies it is
         joined to, of the frame, of the others."""
         model = self.model
+        if body in self.rolled:
+            yield self.rolled[body]
         joined = [j for j in model.joints if body in (j.a, j.b)]
-        for j in joined:
-            if j.kind.rolls:
-                yield from self._rolled(body, j)
         partners = [j.b if j.a == body else j.a for j in joined]
         for other in dict.fromkeys([*partners, model.frame, *self.forms]):
             if other in self.forms and other != body:
                 yield self.forms[other]
 
-    def _rolled(self, body: str, j: Any) -> Iterator[Form]:
-        """`body`'s turn by the rolling ratio of joint `j` (circles), when the other body's
-        turn is known and a body with a known turn holds both centres (the line of centres
-        turns with it)."""
-        other = j.b if j.a == body else j.a
-        pair = self._circles(j)
-        if other not in self.forms or pair is None:
-            return
-        (ca, na), (cb, nb) = pair
-        kind = _contact(na, nb)
-        rho_a, rho_b = signed_radii(kind, ca.radius, cb.radius, na.radius >= nb.radius)
-        for carrier in self._holding(na.center, nb.center):
-            psi, phi = self.forms[carrier], self.forms[other]
-            form = {}
-            for i in set(psi) | set(phi):
-                p, f = psi.get(i, 0), phi.get(i, 0)
-                turn = rolled_turn(rho_a, rho_b, p, phi_a=f) if body == j.b else rolled_turn(rho_a, rho_b, p, phi_b=f)
-                form[i] = _simplified(turn)
-            yield form
+    def _rolling(self) -> dict[str, Form]:
+        """Willis's method: a rolling circle pair whose centres one body holds rolls equal arcs,
+        `arc_slip` = 0 with ψ that body's turn. These equations, linear in the bodies' turns,
+        solved with the inputs' turns given: the turns they fix that agree with the path."""
+        import sympy
+
+        steps = [sympy.Dummy(f"step{i}") for i in range(len(self.increments))]
+        phi = {b: sum((c * steps[i] for i, c in f.items()), sympy.Integer(0)) for b, f in self.forms.items()}
+        unknown = {b: sympy.Dummy(b) for b in self.model.moving_bodies if b not in phi}
+        phi.update(unknown)
+        equations = []
+        for j in self.model.joints:
+            pair = self._circles(j) if j.kind.rolls else None
+            holders = self._holding(pair[0][1].center, pair[1][1].center, among=self.model.bodies) if pair else []
+            if pair and holders:
+                (ca, na), (cb, nb) = pair
+                rho_a, rho_b = signed_radii(_contact(na, nb), ca.radius, cb.radius, na.radius >= nb.radius)
+                equations.append(arc_slip(rho_a, rho_b, phi[holders[0]], phi[j.a], phi[j.b]))
+        solutions = sympy.linsolve(equations, list(unknown.values())) if equations and unknown else sympy.EmptySet
+        out: dict[str, Form] = {}
+        for body, turn in zip(unknown, next(iter(solutions), ())):
+            if turn.free_symbols & set(unknown.values()):
+                continue                                  # not fixed by the rolling alone
+            form = {i: _simplified(sympy.diff(turn, s)) for i, s in enumerate(steps)}
+            form = {i: c for i, c in form.items() if c != 0}
+            if self._agrees(body, self._numeric(form)):
+                out[body] = form
+        return out
 
     def _circles(self, j: Any) -> Optional[tuple[tuple[Circle, Circle], tuple[Circle, Circle]]]:
         """The touching circles of a rolling pair, exact and at the probe values."""
@@ -190,10 +220,10 @@ class _Finder:
 
         return instantiate(with_parameters(self.model, self.values), False).shapes
 
-    def _holding(self, *centres: tuple) -> list[str]:
-        """The bodies with a known turn that carry points at every one of `centres`."""
+    def _holding(self, *centres: tuple, among: Any) -> list[str]:
+        """The bodies (`among`) that carry points at every one of `centres`."""
         out = []
-        for body in self.forms:
+        for body in among:
             names = self.model.bodies[body].points
             if all(any(np.allclose(self.drawn[n], c, atol=self.tol, rtol=0) for n in names)
                    for c in centres):

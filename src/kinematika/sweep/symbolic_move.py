@@ -21,7 +21,7 @@ from ..engine.instant import Instant, instantiate
 from ..errors import KinematikaError
 from ..expressions import parse
 from ..model.model import Model, Turn
-from .carried import Input, Path, carried_turns, placed
+from .carried import Input, Path, carried_turns, fixture, placed
 
 Step = tuple[str, float, str]          # joint id, amount (degrees or length), where
 
@@ -140,47 +140,45 @@ def _why(model: Model, name: str, numerically: bool) -> str:
     from ..engine.turns import turn_for
 
     if numerically:
-        return (f"cannot move exactly: point {name!r} follows the input only in numbers; its "
-                "exact coordinates do not (give the parameters values)")
+        return (f"cannot move exactly: point {name!r} follows the input in numbers, not in its "
+                "exact coordinates (give the parameters values)")
     owner = model.place_owner(name) if model.carriers(name) else None
     turn = turn_for(model, name)
+    if turn is None and owner is not None and _rolls_on_a_line(model, owner):
+        return (f"cannot move exactly: point {name!r} is on {owner!r}, which rolls on a line: its turn "
+                "is the path of its centre over its radius, no closed form here (give the parameters values)")
     if turn is None and owner is not None:
-        return (f"cannot move exactly: point {name!r} does not follow the input: {owner!r} after "
-                "the move has no closed form here (no construction places two of its points, nor "
-                "does a rolling ratio or another body give its angle); write it by construction "
-                "from the points it is joined to (or give the parameters values)")
-    return (f"cannot move exactly: point {name!r} does not follow the input: its construction is "
-            f"drawn from points that move otherwise than {turn.body if turn else owner!r}; write it "
-            "from the points it is joined to (or give the parameters values)")
+        return (f"cannot move exactly: point {name!r} does not follow the input: no construction, rolling "
+                f"ratio or other body gives the pose of {owner!r} in closed form; write {name} by "
+                "construction (or give values)")
+    return (f"cannot move exactly: point {name!r} does not follow the input: it is constructed from points "
+            f"that do not move with {turn.body if turn else owner!r}; construct it from those (or give values)")
+
+
+def _rolls_on_a_line(model: Model, body: str) -> bool:
+    """Whether `body` rolls with a circle on a line (either body's), which `carried` does not
+    follow: its turn depends on the path of its centre."""
+    from ..model.model import Line
+
+    for j in model.joints:
+        if j.kind.rolls and body in (j.a, j.b):
+            if any(isinstance(s, Line) for b in (j.a, j.b) for s in model.bodies[b].shapes):
+                return True
+    return False
 
 
 def _check_fixtures(model: Model, path: Path, where: str) -> None:
     """A body the move turns but no turn carries must have no shape or direction written in
-    numbers (they would stay as drawn)."""
+    numbers (`fixture`: they would stay as drawn)."""
     turned = {t.body for t in model.turns}
     for body in model.moving_bodies:
         if body in turned or np.max(np.abs(path.angles[body])) <= 1e-9:
             continue
-        what = _fixture(model, body)
+        what = fixture(model, body)
         if what:
             raise KinematikaError("schema", f"cannot move exactly: {body!r} turns with no closed form "
                                   f"here, and its {what} is written in numbers; give it by points "
                                   "(or give the parameters values)", where)
-
-
-def _fixture(model: Model, body: str) -> str:
-    """What of `body` is fixed in it by numbers (a shape's centre or direction, a joint's
-    direction), or ''."""
-    from ..model.model import PointPair
-
-    for s in model.bodies[body].shapes:
-        if getattr(s, "center", ()) or getattr(s, "through", ()):
-            return f"{type(s).__name__.lower()}'s place"
-    for j in model.joints:
-        fixed_in = j.b if j.kind.along_in == "b" else j.a
-        if fixed_in == body and j.along is not None and not isinstance(j.along, PointPair):
-            return f"joint {j.id}'s direction"
-    return ""
 
 
 def _shown(values: dict[str, str]) -> str:
