@@ -61,7 +61,7 @@ def rotation(inst: "Instant", turn: Turn, now: dict[str, tuple]) -> tuple[Any, A
     d0 = sub(inst.drawn[turn.toward], inst.drawn[turn.pivot])
     d = sub(now[turn.toward], now[turn.pivot])
     along, across = dot(d0, d), d0[0] * d[1] - d0[1] * d[0]
-    norm = bk.sqrt(dot(d0, d0) * dot(d, d)) if turn.slides else dot(d0, d0)
+    norm = bk.sqrt(dot(d0, d0)) * bk.sqrt(dot(d, d)) if turn.slides else dot(d0, d0)
     return bk.simplify(along / norm), bk.simplify(across / norm)
 
 
