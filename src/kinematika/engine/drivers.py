@@ -54,8 +54,8 @@ def _velocity(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> li
             v_rel = sub(lv.v(ref.body, p), lv.v(rel, p))
             motion = sub(motion, tuple(lv.terms.coriolis_factor() * c for c in sp.cross(lv.w(rel), v_rel)))
     name = "a" if lv.accel else "v"
-    if d.along is not None:
-        u = inst.direction(d.along, f"{where}.along")
+    if d.along is not None:        # fixed in the frame of reference
+        u = inst.body_direction(rel or inst.model.frame, d.along, f"{where}.along")
         value = inst.value(given, where)
         return [Row(as_lin(dot(motion, u) - value), f"{name} of {ref} along the given direction = "
                     f"{given.text}", where, True)]
