@@ -188,7 +188,7 @@ class Driver:
 
 # the kinds of question, each a key of a question in a model file (`ask:`)
 QUESTION_KINDS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose",
-                  "contact", "axis", "pole", "intrinsic")
+                  "contact", "axis", "pole", "intrinsic", "inflection")
 
 
 @dataclass

@@ -256,6 +256,13 @@ ask-pole = pol d’acceleracions { ELISION($body) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     }
+ask-inflection = circumferència d’inflexions i tangent polar { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }
 ask-contact = els tres punts coincidents al contacte de l’enllaç { $joint }
 ask-decompose = composició del moviment { ELISION($point) ->
         [vowel] d’{ $point }
@@ -281,6 +288,15 @@ ans-direction = direcció
 ans-center = centre de curvatura
 ans-tangent = tangent unitària
 ans-slide = velocitat al llarg de l’eix
+ans-translation = una translació: sense circumferència d’inflexions
+ans-inflection_pole = centre instantani I
+ans-inflection_center = centre de la circumferència d’inflexions
+ans-inflection_diameter = diàmetre de la circumferència d’inflexions
+ans-inflection_point = pol d’inflexions (oposat a I a la circumferència)
+ans-pole_tangent = tangent polar (unitària, en el sentit en què es mou I)
+ans-pole_normal = normal polar (unitària, d’I al pol d’inflexions)
+ans-pole_velocity = velocitat d’I al llarg de la base i la ruleta
+sub-geom = geom
 centre-proportional-between = per Aronhold–Kennedy és a la recta que passa per { $l1 } i a la que passa per { $l2 }, però són una mateixa recta i no el fixen. En aquesta recta les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }

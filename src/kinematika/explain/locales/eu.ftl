@@ -163,6 +163,7 @@ answers-none = Ereduak ez du galderarik egiten.
 ask-icr = { $body } solidoaren biraketa-zentro instantaneoa { $frame } solidoarekiko
 ask-axis = { $body } solidoaren biraketa eta irristadura ardatz instantaneoa { $frame } solidoarekiko
 ask-pole = { $body } solidoaren azelerazio-poloa { $frame } solidoarekiko
+ask-inflection = { $body } solidoaren inflexio-zirkunferentzia eta polo-tangentea { $frame } solidoarekiko
 ask-contact = { $joint } loturaren kontaktuan bat datozen hiru puntuak
 ask-decompose = { $point } puntuaren mugimenduaren konposizioa, { $frame } erreferentzia mugikorra
 ask-curvature = { $point } puntuaren ibilbidearen kurbadura { $frame } solidoarekiko
@@ -176,6 +177,18 @@ ans-slide = ardatzaren norabideko abiadura
 centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
+ans-translation = translazio bat: ez dago inflexio-zirkunferentziarik
+ans-inflection_pole = I biraketa-zentro instantaneoa
+ans-inflection_center = inflexio-zirkunferentziaren zentroa
+ans-inflection_diameter = inflexio-zirkunferentziaren diametroa
+ans-inflection_point = inflexio-poloa (zirkunferentzian I-ren aurkakoa)
+ans-pole_tangent = polo-tangentea (unitarioa, I mugitzen den noranzkoan)
+ans-pole_normal = polo-normala (unitarioa, I-tik inflexio-polora)
+ans-pole_velocity = I zentroaren abiadura polodietan zehar
+sub-geom = geom
+centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziaren proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
+centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziaren proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
+composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: bere mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
 composition-pin = { $point } puntua { $joint } loturaren ardatza da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
