@@ -45,7 +45,8 @@ class Instant:
                                                      # that is most likely a mistake
     drawn: dict = field(default_factory=dict)        # a moved model's turns' pivots: drawn places
     body_turn: Optional[Any] = None                  # a sweep's pose: (body, drawn direction) ->
-                                                     # the direction now (`sweep.poses`)
+                                                     # the direction now (`sweep.poses`), for
+                                                     # the drivers' directions
 
     @property
     def symbolic(self) -> bool:
@@ -95,14 +96,9 @@ class Instant:
 
     def body_direction(self, body: str, d: m.Direction, where: str) -> tuple:
         """A direction fixed in `body`: as written, turned with the body when the model is
-        moved (`Model.turns`) or posed by a sweep (`body_turn`); two points give it at the
-        instant anyway."""
+        moved (`Model.turns`); two points give it at the instant anyway."""
         u = self.direction(d, where)
-        if isinstance(d, m.PointPair):
-            return u
-        if self.body_turn is not None:
-            return tuple(self.body_turn(body, u))
-        if self.model.turns:
+        if self.model.turns and not isinstance(d, m.PointPair):
             from .turns import turned
 
             u = turned(self, body, u)
