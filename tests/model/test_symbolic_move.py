@@ -232,3 +232,16 @@ def test_a_planet_given_by_numbers_with_its_centre_turns_with_its_arm():
     model = prepare(tree, move={"j1": 90})
     circle = instantiate(model).shapes["planet"][0]
     assert sympy.simplify(circle.center[0]) == 0 and sympy.simplify(circle.center[1] - (R + r)) == 0
+
+
+def test_the_explanation_says_how_each_body_was_carried():
+    """The position step of the moved planet: the arm turned 90° about O, the planet by
+    90°·(R + r)/r about C, C's polar angle advanced to 90°, Q carried with the planet."""
+    from kinematika.explain import explain
+
+    text = explain(prepare(PLANET, move={"j1": 90}), lang="en", fmt="md")
+    position = text[text.index("## Position"):text.index("## Velocities")]
+    assert "*arm* has turned by 90° about O." in position
+    assert "*planet* has turned by 90·(R + r)/r° about C." in position
+    assert "C is at distance R + r from O, at 90° from the x axis" in position
+    assert "Q is carried with *planet*" in position

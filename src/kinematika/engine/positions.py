@@ -8,7 +8,6 @@ construction that cannot be drawn is a `geometry` error naming the point and by 
 """
 from __future__ import annotations
 
-import dataclasses
 import math
 import warnings
 from typing import TYPE_CHECKING, Any, Optional
@@ -16,7 +15,6 @@ from typing import TYPE_CHECKING, Any, Optional
 from ..errors import KinematikaError, KinematikaWarning
 from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
                                    TwoCircles, TwoLines, construction_order, uses)
-from ..expressions import parse
 
 if TYPE_CHECKING:
     from .instant import Instant
@@ -93,7 +91,7 @@ class _Moving:
         return drawn
 
     def _point(self, name: str, spec: Any, out: dict[str, tuple]) -> tuple:
-        from .turns import carry, turn_offset
+        from .turns import carry, turn_offset, turned_polar
 
         inst, turn = self.inst, self.placing[name]
         used = [] if isinstance(spec, tuple) else uses(spec)
@@ -101,11 +99,11 @@ class _Moving:
             self.moved.add(name)
         if turn is None:
             return _place(inst, self.builder, name, spec, out)
+        advanced = turned_polar(self.model, name, spec)
+        if advanced is not None:
+            return _place(inst, self.builder, name, advanced, out)
         if isinstance(spec, Polar) and spec.reference is None and isinstance(spec.origin, str) \
                 and self._in_body(spec.origin, turn.body):
-            if turn.angle is not None:
-                advanced = dataclasses.replace(spec, angle=parse(f"({spec.angle.text}) + ({turn.angle.text})"))
-                return _place(inst, self.builder, name, advanced, out)
             built = _place(inst, self.builder, name, spec, out)
             return self._bounded(name, turn_offset(inst, turn, out[spec.origin], built, out))
         if not isinstance(spec, tuple) and self.moved.intersection(used):

@@ -12,6 +12,7 @@ of a body its place moves with, never one taken from the point itself.
 """
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any, Optional
 
 from ..algebra.vectors import dot, sub
@@ -48,6 +49,20 @@ def moves_with(model: Model, point: str, body: str) -> bool:
         return False
     owner = model.place_owner(point)
     return any(body in c and owner in c for c in model.motion_classes(point, model.carriers(point)))
+
+
+def turned_polar(model: Model, name: str, spec: Any) -> Any:
+    """A polar point from a point of the body whose turn places it (`turn_for`), that turn an
+    angle: the same polar point with its angle advanced by the turn's (a crank pin at θ,
+    the crank turned 30°, is at θ + 30°); None for any other point."""
+    from ..expressions import parse
+    from ..model.constructions import Polar
+
+    turn = turn_for(model, name)
+    if (turn is None or turn.angle is None or not isinstance(spec, Polar) or spec.reference is not None
+            or not isinstance(spec.origin, str) or not moves_with(model, spec.origin, turn.body)):
+        return None
+    return replace(spec, angle=parse(f"({spec.angle.text}) + ({turn.angle.text})"))
 
 
 def rotation(inst: "Instant", turn: Turn, now: dict[str, tuple]) -> tuple[Any, Any]:

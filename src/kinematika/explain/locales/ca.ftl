@@ -64,6 +64,14 @@ fig-sample = Dibuixat amb valors de mostra dels símbols.
 sec-position = Posició
 pos-intro = Anàlisi de posició: cada punt mòbil se situa com el situa l’enunciat, a partir de punts ja situats.
 pos-named = Aquí { $name } = { $formula }.
+pos-moved = El mecanisme s’analitza on el porta el moviment demanat, cada sòlid portat des del dibuix com segueix.
+pos-turn_angle = { $body } ha girat { $angle } al voltant { ELISION($pivot) ->
+        [vowel] d’{ $pivot }
+       *[other] de { $pivot }
+    }.
+pos-turn_toward = { $body } ha girat com la recta { $line }.
+pos-turn_shift = { $body } s’ha desplaçat { $shift } al llarg de la seva guia.
+pos-carried = { $point } es mou amb { $body }: { $point } = { $at }.
 pos-polar = { $point } és a una distància { $distance } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }

@@ -64,6 +64,11 @@ fig-sample = Drawn at sample values of the symbols.
 sec-position = Position
 pos-intro = Position analysis: each moving point is placed as the statement places it, from points already placed.
 pos-named = Here { $name } = { $formula }.
+pos-moved = The mechanism is analysed where the move takes it, each body carried from the drawing as follows.
+pos-turn_angle = { $body } has turned by { $angle } about { $pivot }.
+pos-turn_toward = { $body } has turned as the line { $line } has.
+pos-turn_shift = { $body } has moved { $shift } along its guide.
+pos-carried = { $point } is carried with { $body }: { $point } = { $at }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
 pos-frame = { $point } is { $x } from { $origin } along { $line } and { $y } across it, to its left: { $point } = { $at }.

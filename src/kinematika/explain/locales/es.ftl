@@ -64,6 +64,11 @@ fig-sample = Dibujado con valores de muestra de los símbolos.
 sec-position = Posición
 pos-intro = Análisis de posición: cada punto móvil se sitúa como lo sitúa el enunciado, a partir de puntos ya situados.
 pos-named = Aquí { $name } = { $formula }.
+pos-moved = El mecanismo se analiza donde lo lleva el movimiento pedido, cada sólido llevado desde el dibujo como sigue.
+pos-turn_angle = { $body } ha girado { $angle } alrededor de { $pivot }.
+pos-turn_toward = { $body } ha girado como la recta { $line }.
+pos-turn_shift = { $body } se ha desplazado { $shift } a lo largo de su guía.
+pos-carried = { $point } se mueve con { $body }: { $point } = { $at }.
 pos-polar = { $point } está a una distancia { $distance } de { $origin }, a { $angle } del eje x: { $point } = { $at }.
 pos-polar_ref = { $point } está a una distancia { $distance } de { $origin }, a { $angle } de la dirección { $ref }: { $point } = { $at }.
 pos-frame = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su izquierda: { $point } = { $at }.

@@ -64,6 +64,11 @@ fig-sample = Ikurren lagin-balioekin marraztua.
 sec-position = Posizioa
 pos-intro = Posizio-analisia: puntu mugikor bakoitza enuntziatuak kokatzen duen moduan kokatzen da, aurretik kokatutako puntuetatik abiatuta.
 pos-named = Hemen, { $name } = { $formula }.
+pos-moved = Mekanismoa eskatutako mugimenduak eramaten duen lekuan aztertzen da; solido bakoitza marrazkitik honela eraman da.
+pos-turn_angle = { $body } solidoak { $angle } biratu du { $pivot } puntuaren inguruan.
+pos-turn_toward = { $body } solidoak { $line } zuzenak bezala biratu du.
+pos-turn_shift = { $body } solidoa { $shift } mugitu da bere gidan zehar.
+pos-carried = { $point } puntua { $body } solidoarekin mugitzen da: { $point } = { $at }.
 pos-polar = { $point } puntua { $origin } puntutik { $distance } distantziara dago, x ardatzarekiko { $angle } angeluan: { $point } = { $at }.
 pos-polar_ref = { $point } puntua { $origin } puntutik { $distance } distantziara dago, { $ref } norabidearekiko { $angle } angeluan: { $point } = { $at }.
 pos-frame = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, ezkerretara: { $point } = { $at }.
