@@ -64,7 +64,7 @@ def test_the_coupler_circle_is_euler_savarys_through_the_pole(theta):
     assert got["pole"] == pytest.approx(list(I), rel=1e-9, abs=1e-9)
     assert got["center"] == pytest.approx(list(centre), rel=1e-8)
     assert got["diameter"] == pytest.approx(diameter, rel=1e-8)
-    n, tangent = np.array(got["normal"]), np.array(got["tangent"])
+    n, tangent = np.array(got["pole_normal"]), np.array(got["pole_tangent"])
     assert got["inflection_pole"] == pytest.approx(list(I + diameter * n), rel=1e-8)
     assert n @ tangent == pytest.approx(0, abs=1e-12)
     # the circle is geometry: the crank's rate and angular acceleration do not change it
@@ -97,7 +97,7 @@ def test_the_pole_moves_along_the_pole_tangent_at_the_pole_velocity():
     rate = (places(t + h)[2] - places(t - h)[2]) / (2 * h) * w
     (got,) = coupler_inflection(52, w=w)
     assert got["pole_velocity"] == pytest.approx(list(rate), rel=1e-6)
-    assert got["tangent"] == pytest.approx(list(rate / np.linalg.norm(rate)), rel=1e-6)
+    assert got["pole_tangent"] == pytest.approx(list(rate / np.linalg.norm(rate)), rel=1e-6)
     a, b, c, d = LINKS
     t3, t4 = freudenstein(a, b, c, d, t, open_circuit=True)
     w3 = norton_rates(a, b, c, t, t3, t4, w, 0.0)[0]
@@ -123,7 +123,8 @@ def test_a_wheel_rolling_on_the_ground_has_its_centre_on_the_circle():
 
     assert exact(got["pole"]) == [0, 0] and exact(got["center"]) == [0, R / 2]
     assert exact(got["diameter"]) == R and exact(got["inflection_pole"]) == [0, R]
-    assert exact(got["pole_velocity"]) == [v, 0] and exact(got["tangent"]) == [1, 0]
+    assert exact(got["pole_velocity"]) == [v, 0] and exact(got["pole_tangent"]) == [1, 0]
+    assert exact(got["pole_normal"]) == [0, 1]
 
 
 def test_a_translating_body_has_no_circle_and_3d_asks_for_the_screw_axis():

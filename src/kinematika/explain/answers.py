@@ -19,7 +19,7 @@ UNITS = {"velocity": "speed", "acceleration": "accel", "omega": "rate", "alpha":
          "diameter": "len", "inflection_pole": "len", "pole_velocity": "speed"}
 INFLECTION = {"pole": "ans.inflection_pole", "center": "ans.inflection_center",
               "diameter": "ans.inflection_diameter", "inflection_pole": "ans.inflection_point",
-              "tangent": "ans.pole_tangent", "normal": "ans.pole_normal",
+              "pole_tangent": "ans.pole_tangent", "pole_normal": "ans.pole_normal",
               "pole_velocity": "ans.pole_velocity"}
 
 

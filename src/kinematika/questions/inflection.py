@@ -26,7 +26,7 @@ from .icr import instant_centre
 
 
 def inflection(sol: Solution, q: Question) -> dict[str, Any]:
-    """{pole: I, center, diameter, inflection_pole: W, tangent, normal, pole_velocity: u};
+    """{pole: I, center, diameter, inflection_pole: W, pole_tangent, pole_normal, pole_velocity: u};
     for a body translating or at rest relative to the frame, no circle (`translation`,
     `rest`). A body turning about a fixed point (I does not move: u = 0) has the circle of
     diameter 0 at I and no pole tangent."""
@@ -41,12 +41,12 @@ def inflection(sol: Solution, q: Question) -> dict[str, Any]:
     a_i = add(state.a0, (-al * r[1] - w * w * r[0], al * r[0] - w * w * r[1]))   # a₀ + α k × r − ω² r
     if sol.is_zero(a_i, sol.accel_scale()):
         zero = (0, 0)
-        return {"pole": i, "center": i, "diameter": 0, "inflection_pole": i, "tangent": None,
-                "normal": None, "pole_velocity": zero}
+        return {"pole": i, "center": i, "diameter": 0, "inflection_pole": i, "pole_tangent": None,
+                "pole_normal": None, "pole_velocity": zero}
     d_vec = scale(1 / (w * w), a_i)
     u = (-a_i[1] / w, a_i[0] / w)
     return {"pole": i, "center": add(i, scale(_half(sol), d_vec)), "diameter": _length(sol, d_vec),
-            "inflection_pole": add(i, d_vec), "tangent": _unit(sol, u), "normal": _unit(sol, a_i),
+            "inflection_pole": add(i, d_vec), "pole_tangent": _unit(sol, u), "pole_normal": _unit(sol, a_i),
             "pole_velocity": u}
 
 
