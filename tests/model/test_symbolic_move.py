@@ -240,8 +240,8 @@ def test_the_explanation_says_how_each_body_was_carried():
     from kinematika.explain import explain
 
     text = explain(prepare(PLANET, move={"j1": 90}), lang="en", fmt="md")
-    position = text[text.index("## Position"):text.index("## Velocities")]
-    assert "*arm* has turned by 90° about O." in position
-    assert "*planet* has turned by 90·(R + r)/r° about C." in position
-    assert "C is at distance R + r from O, at 90° from the x axis" in position
-    assert "Q is carried with *planet*" in position
+    position = text[text.index("## Position"):text.index("## Velocities")].lower()     # a sentence's first name capitalised
+    assert "*arm* has turned by 90° about o." in position
+    assert "*planet* has turned by 90·(r + r)/r° about c." in position
+    assert "c is at distance r + r from o, at 90° from the x axis" in position
+    assert "q is carried with *planet*" in position

@@ -304,7 +304,6 @@ ans-inflection_point = pol d’inflexions (oposat a I a la circumferència)
 ans-pole_tangent = tangent polar (unitària, en el sentit en què es mou I)
 ans-pole_normal = normal polar (unitària, d’I al pol d’inflexions)
 ans-pole_velocity = velocitat d’I al llarg de la base i la ruleta
-sub-geom = geom
 centre-proportional-between = per Aronhold–Kennedy és a la recta que passa per { $l1 } i a la que passa per { $l2 }, però són una mateixa recta i no el fixen. En aquesta recta les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }

@@ -184,7 +184,6 @@ ans-inflection_point = inflection pole (across the circle from I)
 ans-pole_tangent = pole tangent (unit, the way I moves)
 ans-pole_normal = pole normal (unit, from I to the inflection pole)
 ans-pole_velocity = velocity of I along the centrodes
-sub-geom = geom
 centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along the guide of joint { $joint }: its relative motion is along the guide, { $sym } = { $value }.

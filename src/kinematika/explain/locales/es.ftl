@@ -184,7 +184,6 @@ ans-inflection_point = polo de inflexiones (opuesto a I en la circunferencia)
 ans-pole_tangent = tangente polar (unitaria, en el sentido en que se mueve I)
 ans-pole_normal = normal polar (unitaria, de I al polo de inflexiones)
 ans-pole_velocity = velocidad de I a lo largo de la base y la ruleta
-sub-geom = geom
 centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de la guía del par { $joint }: su movimiento relativo sigue la guía, { $sym } = { $value }.

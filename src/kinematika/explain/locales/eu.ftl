@@ -67,7 +67,7 @@ pos-named = Hemen, { $name } = { $formula }.
 pos-moved = Mekanismoa eskatutako mugimenduak eramaten duen lekuan aztertzen da; solido bakoitza marrazkitik honela eraman da.
 pos-turn_angle = { $body } solidoak { $angle } biratu du { $pivot } puntuaren inguruan.
 pos-turn_toward = { $body } solidoak { $line } zuzenak bezala biratu du.
-pos-turn_shift = { $body } solidoa { $shift } mugitu da bere gidan zehar.
+pos-turn_shift = { $body } solidoa { $shift } mugitu da gidan zehar.
 pos-carried = { $point } puntua { $body } solidoarekin mugitzen da: { $point } = { $at }.
 pos-polar = { $point } puntua { $origin } puntutik { $distance } distantziara dago, x ardatzarekiko { $angle } angeluan: { $point } = { $at }.
 pos-polar_ref = { $point } puntua { $origin } puntutik { $distance } distantziara dago, { $ref } norabidearekiko { $angle } angeluan: { $point } = { $at }.
@@ -179,9 +179,6 @@ ans-direction = norabidea
 ans-center = kurbadura-zentroa
 ans-tangent = ukitzaile unitarioa
 ans-slide = ardatzaren norabideko abiadura
-centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
-centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
-composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
 ans-translation = translazio bat: ez dago inflexio-zirkunferentziarik
 ans-inflection_pole = I biraketa-zentro instantaneoa
 ans-inflection_center = inflexio-zirkunferentziaren zentroa
@@ -190,10 +187,9 @@ ans-inflection_point = inflexio-poloa (zirkunferentzian I-ren aurkakoa)
 ans-pole_tangent = polo-tangentea (unitarioa, I mugitzen den noranzkoan)
 ans-pole_normal = polo-normala (unitarioa, I-tik inflexio-polora)
 ans-pole_velocity = I zentroaren abiadura polodietan zehar
-sub-geom = geom
-centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziaren proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
-centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziaren proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
-composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: bere mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
+centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
+centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
+composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
 composition-pin = { $point } puntua { $joint } loturaren ardatza da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
