@@ -24,7 +24,7 @@ FAMILIES = {
     "cond": [k.name for k in KINDS.values() if not k.rolls],  # rolling pairs are written out
     "centre.joint": [k.name for k in KINDS.values() if k.centre in FIXED],
     "centre.line": ["slot", "wheel", "normal"],
-    "ask": ["icr", "axis", "pole", "curvature", "intrinsic"],
+    "ask": ["icr", "axis", "pole", "curvature", "intrinsic", "inflection"],
     "ans": ["point", "direction", "center", "tangent", "slide"],
     "centre.proportional": ["between", "outside"],
     "pos": ["left", "right", "ahead", "behind", "open", "crossed"],

@@ -55,10 +55,21 @@ def _velocity(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> li
             motion = sub(motion, tuple(lv.terms.coriolis_factor() * c for c in sp.cross(lv.w(rel), v_rel)))
     name = "a" if lv.accel else "v"
     if d.along is not None:
-        u = inst.direction(d.along, f"{where}.along")
+        u = _reference_direction(inst, rel or inst.model.frame, d.along, f"{where}.along")
         value = inst.value(given, where)
         return [Row(as_lin(dot(motion, u) - value), f"{name} of {ref} along the given direction = "
                     f"{given.text}", where, True)]
     value = inst.vector(given, where)
     return [Row(as_lin(m - v), f"{name} of {ref} ({AXES[i]}) = {given[i].text}", where, True)
             for i, (m, v) in enumerate(zip(motion, value))]
+
+
+def _reference_direction(inst: Instant, body: str, d: Any, where: str) -> tuple:
+    """A velocity driver's `along`, fixed in its frame of reference `body`: as drawn, turned
+    with that body in a moved model (`Model.turns`) or a sweep's pose (`Instant.body_turn`);
+    two points give it at the instant anyway."""
+    from ..model.model import PointPair
+
+    if inst.body_turn is not None and not isinstance(d, PointPair):
+        return tuple(inst.body_turn(body, inst.direction(d, where)))
+    return inst.body_direction(body, d, where)

@@ -43,6 +43,10 @@ class Instant:
                                                      # (coordinates x_E, then velocities omega_link)
     warnings: list = field(default_factory=list)     # KinematikaWarning: input answered as written
                                                      # that is most likely a mistake
+    drawn: dict = field(default_factory=dict)        # a moved model's turns' pivots: drawn places
+    body_turn: Optional[Any] = None                  # a sweep's pose: (body, drawn direction) ->
+                                                     # the direction now (`sweep.poses`), for
+                                                     # the drivers' directions
 
     @property
     def symbolic(self) -> bool:
@@ -95,7 +99,7 @@ class Instant:
         moved (`Model.turns`); two points give it at the instant anyway."""
         u = self.direction(d, where)
         if self.model.turns and not isinstance(d, m.PointPair):
-            from .positions import turned
+            from .turns import turned
 
             u = turned(self, body, u)
         return u
@@ -307,7 +311,7 @@ def _cam(inst: Instant, s: m.CamShape, body: str, where: str) -> Cam:
     cam turned by `layout` + σθ (θ its cam angle: the drawing's, advanced by the body's turn
     since), a plate cam by `layout` (its `center` the plate's own origin, which the program's
     travel θ has carried along the frame's x from the follower's line)."""
-    from .positions import turned
+    from .turns import turned
 
     design = s.design.cam
     center = inst.numvec(_at(inst, s.center, s.center_point, body))
@@ -335,11 +339,11 @@ def _at(inst: Instant, coords: tuple, point: Optional[str], body: str) -> tuple:
     if point:
         return inst.points[point]
     p = inst.vector(coords, f"bodies.{body}")
-    for turn in inst.model.turns:
-        if turn.body == body:
-            from .positions import carry
+    turn = next((t for t in inst.model.turns if t.body == body), None)
+    if turn is not None:
+        from .turns import carry
 
-            p = carry(inst, turn, p, inst.points)
+        p = carry(inst, turn, p, inst.points)
     return p
 
 

@@ -8,7 +8,6 @@ construction that cannot be drawn is a `geometry` error naming the point and by 
 """
 from __future__ import annotations
 
-import dataclasses
 import math
 import warnings
 from typing import TYPE_CHECKING, Any, Optional
@@ -16,7 +15,6 @@ from typing import TYPE_CHECKING, Any, Optional
 from ..errors import KinematikaError, KinematikaWarning
 from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
                                    TwoCircles, TwoLines, construction_order, uses)
-from ..expressions import parse
 
 if TYPE_CHECKING:
     from .instant import Instant
@@ -27,27 +25,102 @@ TURN = 2 * math.pi
 
 def positions(inst: "Instant", builder: Optional[type] = None) -> dict[str, tuple]:
     """Every point's coordinates at the instant, in the model's order; `builder` evaluates
-    the constructions (`_Builder`, or the per-design arrays' in `array_positions`)."""
+    the constructions (`_Builder`, or the per-design arrays' in `array_positions`). A moved
+    model (`Model.turns`) places its points by `_Moving`."""
     builder = builder or _Builder
     model = inst.model
+    if model.turns:
+        return _Moving(inst, builder).place()
     out: dict[str, tuple] = {}
     for name in construction_order(model.points):
-        spec = model.points[name]
-        where = f"points.{name}"
-        turns = [t for t in model.turns if _carried(model, name, t.body)]
-        if turns and _about_pivot(spec, turns[0]):      # a crank pin: its angle advances
-            spec = dataclasses.replace(spec, angle=parse(f"({spec.angle.text}) + ({turns[0].angle.text})"))
-            turns = turns[1:]
-        if isinstance(spec, tuple):
-            out[name] = inst.vector(spec, where)
-        else:
-            built = builder(inst, out, where).build(spec)
-            if inst.symbolic:
-                built = _bounded(inst, builder, spec, built, name, out, where)
-            out[name] = tuple(inst.backend.simplify(c) for c in built)
-        for turn in turns:
-            out[name] = carry(inst, turn, out[name], out)
+        out[name] = _place(inst, builder, name, model.points[name], out)
     return {name: out[name] for name in model.points}
+
+
+def _place(inst: "Instant", builder: type, name: str, spec: Any, out: dict[str, tuple]) -> tuple:
+    """A point as written: its coordinates, or its construction from the points in `out`."""
+    where = f"points.{name}"
+    if isinstance(spec, tuple):
+        return inst.vector(spec, where)
+    built = builder(inst, out, where).build(spec)
+    if inst.symbolic:
+        built = _bounded(inst, builder, spec, built, name, out, where)
+    return tuple(inst.backend.simplify(c) for c in built)
+
+
+class _Moving:
+    """The places of a moved model's points (`engine.turns`): each point placed by a turn
+    (`turn_for`) is carried from its drawn place, and a construction is built again from
+    the present places of its points, except where it is drawn in the turned body:
+
+    - a polar point from a point of that body turns with it (its angle advanced by the
+      turn's angle, or its offset turned);
+    - a construction from points that have not moved is built as drawn, then carried.
+
+    The drawn places of the turns' pivots are kept in `inst.drawn`."""
+
+    def __init__(self, inst: "Instant", builder: type) -> None:
+        from .turns import turn_for
+
+        self.inst, self.builder, self.model = inst, builder, inst.model
+        self.placing = {name: turn_for(self.model, name) for name in self.model.points}
+        self.moved: set[str] = set()
+
+    def place(self) -> dict[str, tuple]:
+        model = self.model
+        anchors = {a for t in model.turns for a in t.anchors}
+        self.inst.drawn = self._drawn(anchors)
+        extra = {name: t.anchors for name, t in self.placing.items() if t is not None}
+        out: dict[str, tuple] = {}
+        for name in construction_order(model.points, extra):
+            out[name] = self._point(name, model.points[name], out)
+        return {name: out[name] for name in model.points}
+
+    def _drawn(self, names: set[str]) -> dict[str, tuple]:
+        """The drawn places of `names` (and of the points they are constructed from)."""
+        drawn: dict[str, tuple] = {}
+        needed = set(names)
+        order = construction_order(self.model.points)
+        for name in reversed(order):
+            spec = self.model.points[name]
+            if name in needed and not isinstance(spec, tuple):
+                needed.update(uses(spec))
+        for name in order:
+            if name in needed:
+                drawn[name] = _place(self.inst, self.builder, name, self.model.points[name], drawn)
+        return drawn
+
+    def _point(self, name: str, spec: Any, out: dict[str, tuple]) -> tuple:
+        from .turns import carry, turn_offset, turned_polar
+
+        inst, turn = self.inst, self.placing[name]
+        used = [] if isinstance(spec, tuple) else uses(spec)
+        if turn is not None or self.moved.intersection(used):
+            self.moved.add(name)
+        if turn is None:
+            return _place(inst, self.builder, name, spec, out)
+        advanced = turned_polar(self.model, name, spec)
+        if advanced is not None:
+            return _place(inst, self.builder, name, advanced, out)
+        if isinstance(spec, Polar) and spec.reference is None and isinstance(spec.origin, str) \
+                and self._in_body(spec.origin, turn.body):
+            built = _place(inst, self.builder, name, spec, out)
+            return self._bounded(name, turn_offset(inst, turn, out[spec.origin], built, out))
+        if not isinstance(spec, tuple) and self.moved.intersection(used):
+            return _place(inst, self.builder, name, spec, out)     # closes a loop: built again
+        return self._bounded(name, carry(inst, turn, _place(inst, self.builder, name, spec, out), out))
+
+    def _in_body(self, point: str, body: str) -> bool:
+        from .turns import moves_with
+
+        return moves_with(self.model, point, body)
+
+    def _bounded(self, name: str, coords: tuple) -> tuple:
+        """A carried point's exact coordinates, named (x_P, y_P) when long (`_bounded`)."""
+        inst = self.inst
+        if inst.symbolic and (_size(coords) > NAME_OPS or (inst.names and _size(coords) > 0)):
+            return name_point(inst, name, coords)
+        return coords
 
 
 NAME_OPS = 400      # a constructed point whose exact coordinates would be longer is named
@@ -165,45 +238,6 @@ def _check_size(coords: tuple, name: str, where: str) -> None:
         raise KinematikaError("limit", f"the exact coordinates of {name} would have about {size:,} "
                               f"operations (more than {POINT_OPS:,}): too large for formulas; give "
                               "more parameters numbers, or solve without --symbolic", where)
-
-
-def _about_pivot(spec: Any, turn: Any) -> bool:
-    """A polar point from the pivot a turn is about: turning it adds to its angle."""
-    return (isinstance(spec, Polar) and spec.reference is None and turn.angle is not None
-            and spec.origin == turn.pivot)
-
-
-def _carried(model: Any, point: str, body: str) -> bool:
-    """Whether `point` is placed by a material point of `body` that the frame does not hold."""
-    for members in model.motion_classes(point, model.carriers(point)):
-        if model.place_owner(point) in members:
-            return body in members and model.frame not in members
-    return False
-
-
-def carry(inst: "Instant", turn: Any, p: tuple, points: dict[str, tuple]) -> tuple:
-    """`p` carried by a `Turn`: turned about its pivot, or shifted along its direction."""
-    bk = inst.backend
-    if turn.angle is not None:
-        o = points[turn.pivot] if turn.pivot in points else inst.points[turn.pivot]
-        t = inst.value(turn.angle, "move")
-        c, s = bk.function("cos")(t), bk.function("sin")(t)
-        dx, dy = p[0] - o[0], p[1] - o[1]
-        return tuple(bk.simplify(v) for v in (o[0] + c * dx - s * dy, o[1] + s * dx + c * dy))
-    u = inst.direction(turn.along, "move")
-    d = inst.value(turn.shift, "move")
-    return tuple(bk.simplify(v) for v in (p[0] + d * u[0], p[1] + d * u[1]))
-
-
-def turned(inst: "Instant", body: str, u: tuple) -> tuple:
-    """A direction fixed in `body`, turned with it by the model's turns (unit stays unit)."""
-    bk = inst.backend
-    for turn in inst.model.turns:
-        if turn.body == body and turn.angle is not None:
-            t = inst.value(turn.angle, "move")
-            c, s = bk.function("cos")(t), bk.function("sin")(t)
-            u = (bk.simplify(c * u[0] - s * u[1]), bk.simplify(s * u[0] + c * u[1]))
-    return u
 
 
 class _Builder:

@@ -30,7 +30,7 @@ KIND_UNITS = {"position": "{L}", "velocity": "{L}/s", "acceleration": "{L}/s²",
 QUESTION_KINDS = {"velocity": "velocity", "acceleration": "acceleration", "omega": "omega",
                   "alpha": "alpha", "icr": "position", "curvature": "position", "pole": "position",
                   "axis": "position", "contact": "velocity", "decompose": "velocity",
-                  "intrinsic": "acceleration"}
+                  "intrinsic": "acceleration", "inflection": "position"}
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,12 @@ UNITS = {"velocity": "speed", "acceleration": "accel", "omega": "rate", "alpha":
          "drag": None, "relative": None, "coriolis": None, "total": None, "point": "len",
          "center": "len", "radius": "len", "direction": "", "speed": "speed", "tangent": "",
          "tangential": "accel", "normal": "accel", "tangential_vector": "accel",
-         "normal_vector": "accel", "omega_axis": "rate", "slide": "speed"}
+         "normal_vector": "accel", "omega_axis": "rate", "slide": "speed", "pole": "len",
+         "diameter": "len", "inflection_pole": "len", "pole_velocity": "speed"}
+INFLECTION = {"pole": "ans.inflection_pole", "center": "ans.inflection_center",
+              "diameter": "ans.inflection_diameter", "inflection_pole": "ans.inflection_point",
+              "pole_tangent": "ans.pole_tangent", "pole_normal": "ans.pole_normal",
+              "pole_velocity": "ans.pole_velocity"}
 
 
 def answers_section(ctx: Ctx) -> Section:
@@ -54,7 +59,7 @@ def question_label(ctx: Ctx, q) -> Any:
     if q.kind == "alpha":
         return alpha_sym(q.target, rel, vector=not ctx.planar)
     frame = Name(rel or ctx.frame, "body")
-    if q.kind in ("icr", "axis", "pole"):
+    if q.kind in ("icr", "axis", "pole", "inflection"):
         return msg(f"ask.{q.kind}", body=Name(q.target, "body"), frame=frame)
     if q.kind == "contact":
         return msg("ask.contact", joint=Name(q.target, "joint"))
@@ -70,6 +75,8 @@ def answer_items(ctx: Ctx, q, value: Any) -> list:
         return [("", _value(ctx, value, UNITS.get(q.kind, "")))]
     if value.get("rest"):
         return [("", msg("ans.rest"))]
+    if value.get("translation"):
+        return [("", msg("ans.translation"))]
     out = []
     for key, v in value.items():
         if isinstance(v, dict):
@@ -106,6 +113,8 @@ def _part_label(ctx: Ctx, q, key: str, sub: str | None) -> Any:
                    "normal_vector": Sym("a", p, "n")}
         if key in symbols:
             return symbols[key]
+    if q.kind == "inflection":
+        return msg(INFLECTION[key])
     if q.kind == "curvature" and key == "radius":
         return Sym("ρ", _label(ctx, _ref(ctx, q)), vector=False)
     if q.kind == "axis" and key == "omega":

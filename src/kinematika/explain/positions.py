@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from typing import Any, Optional
 
+from ..engine.turns import turn_for, turned_polar
 from ..model.constructions import CircleLine, InFrame, LineDef, Polar, TwoCircles, TwoLines, construction_order
 from .context import Ctx
 from .document import Inline, Msg, Name, Section, Value, msg, point
@@ -22,16 +23,42 @@ def position_section(ctx: Ctx) -> Optional[Section]:
     is given by its coordinates."""
     model = ctx.model
     built = [n for n in construction_order(model.points) if not isinstance(model.points[n], tuple)]
-    if not ctx.planar or not built:
+    carried = [n for n in model.points if isinstance(model.points[n], tuple) and turn_for(model, n)]
+    if not ctx.planar or not (built or carried):
         return None
     sec = Section(msg("sec.position"))
     sec.add(msg("pos.intro"))
-    for name in built:
-        sec.add(_sentence(ctx, name, model.points[name]))
+    if model.turns:
+        sec.add(msg("pos.moved"))
+    for turn in model.turns:
+        sec.add(_turn(ctx, turn))
+    for name in construction_order(model.points):
+        if name in built:
+            sec.add(_sentence(ctx, name, turned_polar(model, name, model.points[name]) or model.points[name]))
+        elif name in carried:
+            sec.add(msg("pos.carried", point=point(name), body=Name(turn_for(model, name).body, "body"),
+                        at=Value(ctx.clean(ctx.pos(name), "len"), "len")))
+        else:
+            continue
         for coordinate in _named(ctx, name):
             sec.add(msg("pos.named", name=Value(coordinate, "len"),
                         formula=Value(ctx.inst.names[coordinate], "len")))
     return sec
+
+
+def _turn(ctx: Ctx, turn: Any) -> Msg:
+    """How a moved model's body was carried from the drawing (`Model.turns`)."""
+    body = Name(turn.body, "body")
+    if turn.pivot is None:
+        return msg("pos.turn_shift", body=body, shift=_quantity(ctx, turn.shift, "len"))
+    if turn.toward is not None:
+        return msg("pos.turn_toward", body=body, line=_pair(ctx, turn.pivot, turn.toward))
+    import sympy
+
+    angle = sympy.sympify(ctx.inst.value(turn.angle, "explain"))
+    degrees = sympy.nsimplify(angle * 180 / sympy.pi)
+    shown = Value(float(degrees), "deg") if degrees.is_Rational else Value(ctx.clean(degrees, ""), "deg")
+    return msg("pos.turn_angle", body=body, angle=shown, pivot=point(turn.pivot))
 
 
 def _named(ctx: Ctx, name: str) -> list:

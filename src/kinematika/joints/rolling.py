@@ -89,7 +89,7 @@ KIND = Rolling()
 def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle, contact: str) -> Any:
     """Circle on circle, outside or inside (the contact's kind)."""
     ra, rb = float(ca.radius), float(cb.radius)
-    rho_a, rho_b = {"external": (ra, -rb)}.get(contact, (ra, rb) if ra >= rb else (-ra, -rb))
+    rho_a, rho_b = signed_radii(contact, ra, rb, ra >= rb)
     gap = rho_a - rho_b
     d0 = differences(cb.center, ca.center)
     psi0 = math.atan2(d0[1], d0[0])
@@ -100,13 +100,31 @@ def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle, contact: str) -> 
         u = (d[0] / dist, d[1] / dist)
         psi = q.aux.get(key, psi0)
         psi += wrap(math.atan2(d[1], d[0]) - psi)
-        slip = gap * (psi - psi0) + rho_b * q.angle(b) - rho_a * q.angle(a)
+        slip = arc_slip(rho_a, rho_b, psi - psi0, q.angle(a), q.angle(b))
         return [(dist - gap) * u[0] - slip * u[1], (dist - gap) * u[1] + slip * u[0]]
 
     circles.key = key  # type: ignore[attr-defined]
     circles.aux = lambda q: continued(q, key, psi0, differences(q.point(b, cb.center),  # type: ignore[attr-defined]
                                                                 q.point(a, ca.center)))
     return circles
+
+
+def signed_radii(contact: str, ra: Any, rb: Any, a_outer: bool) -> tuple[Any, Any]:
+    """(ρa, ρb): two circles' radii signed so that their contact is Cₐ + ρₐ u = C_b + ρ_b u,
+    u the unit vector from centre a to centre b: outside each other (ra, −rb); inside,
+    (ra, rb) when a is the outer circle, (−ra, −rb) when b is."""
+    if contact == "external":
+        return ra, -rb
+    return (ra, rb) if a_outer else (-ra, -rb)
+
+
+def arc_slip(rho_a: Any, rho_b: Any, psi: Any, phi_a: Any, phi_b: Any) -> Any:
+    """The arcs rolled on a's circle less those on b's, since the drawing, when the line of
+    centres has turned by ψ and the bodies by φa, φb: (ρa − ρb) ψ + ρb φb − ρa φa. Rolling
+    without slipping keeps it 0 (on numbers, formulas or arrays): solved for φb, a planet
+    (radius r) on a fixed sun (R) whose arm turns by ψ turns by (R + r) ψ / r, and together
+    for every pair of a gear train, Willis's equations (`sweep.carried`)."""
+    return (rho_a - rho_b) * psi + rho_b * phi_b - rho_a * phi_a
 
 
 def _on_line(circle: Any, cbody: str, line: Any, lbody: str, sign: float) -> Any:

@@ -411,7 +411,7 @@ class _Builder:
             moving = self.known_body(raw.moving, f"{where}.moving")
         elif raw.moving is not None:
             raise KinematikaError("schema", "`moving` belongs to decompose questions", where)
-        if kind in {"icr", "pole"} and self.dim == 3:
+        if kind in {"icr", "pole", "inflection"} and self.dim == 3:
             raise KinematikaError("schema", f"{kind} is a planar question; ask for the screw `axis` "
                                   "in 3D", where)
         if kind == "axis" and self.dim == 2:

@@ -9,7 +9,7 @@ parsed constructions (expressions unevaluated) and reads them from the checked f
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable, Optional, Union
+from typing import Callable, Mapping, Optional, Union
 
 from ..errors import KinematikaError
 from ..expressions import Expr
@@ -101,8 +101,9 @@ def uses(c: Construction) -> list[str]:
     return [loc for loc in locs if isinstance(loc, str)]
 
 
-def construction_order(points: dict[str, object]) -> list[str]:
-    """Every point's name, each after the points its construction uses; a cycle is an error."""
+def construction_order(points: Mapping[str, object], extra: Optional[Mapping[str, list[str]]] = None) -> list[str]:
+    """Every point's name, each after the points its construction uses (and the points
+    `extra` says it is placed from); a cycle is an error."""
     order: list[str] = []
     state: dict[str, int] = {}             # 1: being visited, 2: done
 
@@ -115,9 +116,9 @@ def construction_order(points: dict[str, object]) -> list[str]:
                                   + " → ".join(cycle), f"points.{name}")
         state[name] = 1
         spec = points[name]
-        if not isinstance(spec, tuple):
-            for used in uses(spec):
-                visit(used, path + [name])
+        before = [] if isinstance(spec, tuple) else uses(spec)
+        for used in before + list((extra or {}).get(name, ())):
+            visit(used, path + [name])
         state[name] = 2
         order.append(name)
 

@@ -188,7 +188,7 @@ class Driver:
 
 # the kinds of question, each a key of a question in a model file (`ask:`)
 QUESTION_KINDS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose",
-                  "contact", "axis", "pole", "intrinsic")
+                  "contact", "axis", "pole", "intrinsic", "inflection")
 
 
 @dataclass
@@ -220,15 +220,26 @@ class Question:
 
 @dataclass(frozen=True)
 class Turn:
-    """A body carried rigidly from its drawn pose by a driven joint to the frame: turned by
-    `angle` (radians) about `pivot`, or shifted by `shift` along `along`. A model with
-    symbolic parameters is moved this way (`move`), its constructions following."""
+    """A body carried rigidly from its drawn pose when a model with symbolic parameters is
+    moved (`move`): p ↦ P + R (p − P₀), P₀ and P its `pivot`'s drawn and present places, R
+    the rotation by `angle` (radians), or the one that takes the drawn direction P₀→T₀ to
+    the present P→T (`toward` T: a point of the body, or a pin sliding in a slot of it
+    along PT when `slides`); or shifted by `shift` along `along`. The input's turn is about
+    its pivot on the frame; the other bodies' turns are found in closed form
+    (`sweep.carried`), and the constructions follow."""
 
     body: str
     pivot: Optional[str] = None
     angle: Optional[Expr] = None
     along: Optional[Direction] = None
     shift: Optional[Expr] = None
+    toward: Optional[str] = None
+    slides: bool = False
+
+    @property
+    def anchors(self) -> list[str]:
+        """The points whose places the turn is taken from (pivot, toward)."""
+        return [p for p in (self.pivot, self.toward) if p is not None]
 
 
 @dataclass

@@ -9,14 +9,14 @@ numeric model's crank angle becomes θ and the answers formulas in it.
 from __future__ import annotations
 
 import dataclasses
-from typing import Optional
+from typing import Mapping, Optional
 
 from ..errors import KinematikaError
 from ..expressions import ExpressionError, parse
 from .model import Model, Parameter
 
 
-def with_parameters(model: Model, values: dict[str, Optional[str]]) -> Model:
+def with_parameters(model: Model, values: Mapping[str, Optional[str]]) -> Model:
     """A copy of `model` with the named parameters set to `values`."""
     if not values:
         return model

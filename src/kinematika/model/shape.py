@@ -127,6 +127,7 @@ QuestionSpec, question_spec = record('QuestionSpec', {
     'axis': (optional(exact(str)), None),
     'pole': (optional(exact(str)), None),
     'intrinsic': (optional(exact(str)), None),
+    'inflection': (optional(exact(str)), None),
     'relative_to': (optional(exact(str)), None),
     'moving': (optional(exact(str)), None),
 })

@@ -10,13 +10,14 @@ from .contact import contact
 from .curvature import curvature, intrinsic
 from .decompose import decompose
 from .icr import icr
+from .inflection import inflection
 from .motion import acceleration, alpha, omega, velocity
 from .pole import pole
 
 ANSWERS: dict[str, Callable[[Solution, Question], Any]] = {
     "velocity": velocity, "acceleration": acceleration, "omega": omega, "alpha": alpha,
     "icr": icr, "curvature": curvature, "decompose": decompose, "contact": contact,
-    "axis": axis, "pole": pole, "intrinsic": intrinsic,
+    "axis": axis, "pole": pole, "intrinsic": intrinsic, "inflection": inflection,
 }
 
 

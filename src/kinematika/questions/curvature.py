@@ -3,6 +3,11 @@
 The normal acceleration aₙ = a − (a·v̂) v̂ points to the centre of curvature, at distance
 ρ = v²/|aₙ| from the point: centre = P + (v²/|aₙ|²) aₙ. In the plane this is
 P + (v·v)/(v × a) (k × v), with no absolute value needed.
+
+In exact answers, a point of a body pinned to the frame of reference moves on a circle
+about the pin: the centre is the pin and ρ = |P − pin| (the rocker's pin of a four-bar is
+at the rocker's length from its pivot, whatever the formulas of its speed), the shortest
+of that and the general form is given.
 """
 from __future__ import annotations
 
@@ -15,11 +20,48 @@ from ..solution import Solution
 
 def curvature(sol: Solution, q: Question) -> dict[str, Any]:
     """The curvature of material point `q.target`'s path seen from `q.relative_to`: ρ = v³/|v ×
-    a| and the centre P + (v·v)/(v × a) (k × v) (`path_curvature`)."""
+    a| and the centre P + (v·v)/(v × a) (k × v) (`path_curvature`); exactly, for a body pinned
+    to that frame, the pin and ρ = |P − pin| when that is shorter."""
     p = sol.position(q.target)
     v = sol.velocity(q.target, q.relative_to)
     a = sol.acceleration(q.target, q.relative_to)
-    return path_curvature(sol, p, v, a)
+    out = path_curvature(sol, p, v, a)
+    pin = _pin(sol, q) if sol.symbolic and out.get("radius") is not None else None
+    if pin is not None:
+        out = {"radius": _shortest(_distance(p, pin), out["radius"]), "center": pin}
+    return out
+
+
+def _pin(sol: Solution, q: Question) -> tuple | None:
+    """The place of a pin joining the point's body to the frame of reference (planar): the
+    point's path relative to that frame is a circle about it. None when there is none."""
+    model = sol.model
+    body = sol.point(q.target).body
+    frame = q.relative_to or model.frame
+    if sol.space.dim != 2 or body == frame:
+        return None
+    for name in model.bodies[body].points:
+        classes = model.motion_classes(name, model.carriers(name))
+        if any(body in c and frame in c for c in classes):
+            return sol.position(name)
+    return None
+
+
+def _distance(p: tuple, q: tuple) -> Any:
+    """|p − q| exactly, its square first brought to its canonical form (counted work)."""
+    import sympy
+
+    from ..algebra.fields import canonical
+
+    d = sub(p, q)
+    return sympy.sqrt(canonical(dot(d, d)))
+
+
+def _shortest(*forms: Any) -> Any:
+    """The shortest of equal forms (in operations; the first on a tie)."""
+    from ..algebra.fields import ops
+
+    return min(forms, key=ops)
 
 
 def path_curvature(sol: Solution, p: tuple, v: tuple, a: tuple) -> dict[str, Any]:

@@ -13,7 +13,9 @@ FIELD_KINDS = {"point": "position", "center": "position", "radius": "position",
                "velocity": "velocity", "speed": "velocity", "slide": "velocity",
                "acceleration": "acceleration", "tangential": "acceleration", "normal": "acceleration",
                "tangential_vector": "acceleration", "normal_vector": "acceleration",
-               "coriolis": "acceleration", "omega": "omega", "direction": None, "tangent": None}
+               "coriolis": "acceleration", "omega": "omega", "direction": None, "tangent": None,
+               "pole": "position", "diameter": "position", "inflection_pole": "position",   # inflection
+               "pole_tangent": None, "pole_normal": None, "pole_velocity": "velocity"}
 
 
 def answer_scales(sol: Solution) -> tuple[dict[str, float], dict[str, float]]:

@@ -58,8 +58,8 @@ def _driver(inst: Instant, d: Driver, geos: dict[str, JointGeometry], plan: Plan
     p0 = inst.points[d.point.point]
     body, rel = d.point.body, d.relative_to
     along = None
-    if d.along is not None:
-        along = tuple(float(c) for c in inst.unit(inst.vector(d.along, d.where), d.where))
+    if d.along is not None:        # fixed in the frame of reference (given as numbers or two points)
+        along = tuple(float(c) for c in inst.direction(d.along, f"{d.where}.along"))
 
     def target(dq: float) -> list:
         """The drawn point's displacement when the swept joint has turned or slid by dq."""
@@ -75,8 +75,12 @@ def _driver(inst: Instant, d: Driver, geos: dict[str, JointGeometry], plan: Plan
         return moved[:len(p0)].tolist()
 
     def velocity(q: Poses, dq: float) -> list:
+        """The point's displacement relative to the frame of reference (along `along`, which
+        turns with that frame: v_rel·u's integral, u fixed in it)."""
         moved = _sub(_sub(q.point(body, p0), q.point(rel, p0) if rel else p0), target(dq))
-        return [_dot(moved, along)] if along is not None else moved
+        if along is None:
+            return moved
+        return [_dot(moved, q.turn(rel, along) if rel else along)]
 
     return velocity
 

@@ -26,12 +26,19 @@ MAX_STEPS = 200_000
 def moved(model: Model, amounts: Mapping[str, Any]) -> Model:
     """`model` with each joint in `amounts` advanced by its amount (numbers or expressions)."""
     model = dataclasses.replace(model, move={})
+    steps = []
     for jid, raw in amounts.items():
         where = f"move.{jid}"
         _check_driven(model, jid, where)
         amount = _amount(model, raw, where)
         if amount != 0:
-            model = _advance(model, jid, amount, where)
+            steps.append((jid, amount, where))
+    if steps and any(p.value is None for p in model.parameters.values()):
+        from .symbolic_move import symbolic_moved
+
+        return symbolic_moved(model, steps)
+    for jid, amount, where in steps:
+        model = _advance(model, jid, amount, where)
     return model
 
 
@@ -79,11 +86,14 @@ def _check_driven(model: Model, jid: str, where: str) -> None:
 
 
 def _advance(model: Model, jid: str, amount: float, where: str) -> Model:
-    if any(p.value is None for p in model.parameters.values()):
-        from .symbolic_move import symbolic_moved
-
-        return symbolic_moved(model, jid, amount, where)
     from .posed import posed_model
+
+    return posed_model(model, swept_to(model, jid, amount), -1)
+
+
+def swept_to(model: Model, jid: str, amount: float) -> Any:
+    """The sweep of joint `jid` from the drawing to `amount` (a row a degree, or a 50th of
+    the model's size), every row assembled, else the `assembly` error saying how far."""
     from .run import Sweeper
 
     sweeper = Sweeper(model, jid)
@@ -93,7 +103,7 @@ def _advance(model: Model, jid: str, amount: float, where: str) -> Model:
     result = sweeper.run(amount, steps, skip_bad=True)
     if not result.ok.all():
         raise _unreachable(result, jid, amount, "°" if turns else "")
-    return posed_model(model, result, -1)
+    return result
 
 
 def _unreachable(result: Any, jid: str, amount: float, unit: str) -> KinematikaError:

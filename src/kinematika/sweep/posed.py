@@ -35,7 +35,7 @@ def posed_model(model: Model, result: SweepResult, row: int = -1) -> Model:
         model, points=points, move={},
         bodies={name: _moved_body(pose, b) for name, b in model.bodies.items()},
         joints=[_moved_joint(pose, j) for j in model.joints],
-        drivers=[dataclasses.replace(d) for d in model.drivers])
+        drivers=[_moved_driver(pose, d) for d in model.drivers])
     return _contacts_placed(posed, pose)
 
 
@@ -110,6 +110,13 @@ def _moved_joint(pose: _Pose, j: Joint) -> Joint:
     along = pose.turned(fixed_in, j.along, f"{j.where}.along") if j.along is not None else None
     axis = pose.turned(j.a, j.axis, f"{j.where}.axis") if j.axis is not None else None
     return dataclasses.replace(j, along=along, axis=axis)
+
+
+def _moved_driver(pose: _Pose, d: Any) -> Any:
+    """A driver now: a velocity's direction is fixed in its frame of reference."""
+    if d.kind != "velocity" or d.along is None or d.relative_to is None:
+        return dataclasses.replace(d)
+    return dataclasses.replace(d, along=pose.turned(d.relative_to, d.along, f"{d.where}.along"))
 
 
 def _contacts_placed(model: Model, pose: _Pose) -> Model:

@@ -188,6 +188,7 @@ def _continued(r: np.ndarray, previous: np.ndarray) -> np.ndarray:
 def moved_instant(base: Instant, poses: Poses, owners: dict[str, str]) -> Instant:
     """The drawn instant with every point and shape carried by its body to the new poses."""
     inst = replace(base)
+    inst.body_turn = poses.turn
     inst.points = {name: poses.point(owners[name], p) for name, p in base.points.items()}
     inst.shapes = {body: [_moved_shape(s, body, poses) for s in shapes]
                    for body, shapes in base.shapes.items()}

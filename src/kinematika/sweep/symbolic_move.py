@@ -1,12 +1,15 @@
-"""`move` in a model with symbolic parameters: the input carried, the constructions following.
+"""`move` in a model with symbolic parameters: the input carried, the other bodies following.
 
 A sweep needs numbers, but a model written by construction moves exactly: turn the input
 body about its pivot by the amount (or shift a slider along its guide) and every point
 constructed from it follows through its construction, so the answers stay formulas (a
-four-bar moved 30° from a general crank angle θ is the four-bar at θ + 30°). This holds only
-when the other moving bodies' points are constructed from the input's; it is checked at
-the symbols' probe values against the numeric sweep of the same model, and a model for
-which it does not hold gets an error saying which point to write by construction.
+four-bar moved 30° from a general crank angle θ is the four-bar at θ + 30°). The other
+bodies are carried wherever their pose after the move is a closed form of the input's
+(`sweep.carried`: rolling ratios, bodies turning as others do, two known places), so a
+planet on a fixed sun moved by its arm, or a Geneva wheel's points, stay exact too.
+
+Everything is checked at the symbols' probe values against the numeric sweep of the same
+model (`Path`); a point that still does not follow gets a one-line error saying why.
 """
 from __future__ import annotations
 
@@ -14,40 +17,57 @@ import dataclasses
 
 import numpy as np
 
+from ..engine.instant import Instant, instantiate
 from ..errors import KinematikaError
 from ..expressions import parse
 from ..model.model import Model, Turn
+from .carried import Input, Path, carried_turns, fixture, placed
+
+Step = tuple[str, float, str]          # joint id, amount (degrees or length), where
 
 
-def symbolic_moved(model: Model, jid: str, amount: float, where: str) -> Model:
-    """`model` with joint `jid` advanced by `amount` (degrees or length), exactly."""
-    if not _geometry_has_symbols(model):
-        return _moved_with_numbers(model, jid, amount)
+def symbolic_moved(model: Model, steps: list[Step]) -> Model:
+    """`model` with each joint advanced by its amount (degrees or length), exactly."""
+    where = steps[0][2]
+    inst = instantiate(model)
+    if not _geometry_has_symbols(inst):
+        for jid, amount, _ in steps:
+            model = _moved_with_numbers(model, jid, amount)
+        return model
     if model.dimension != 2:
         raise KinematikaError("schema", "a 3D model with symbolic parameters cannot be moved: "
                               "give its parameters values (--set NAME=VALUE)", where)
-    joint = model.joint(jid)
-    frame = model.frame
-    body = joint.b if joint.a == frame else joint.a
-    if frame not in (joint.a, joint.b):
-        raise KinematikaError("schema", f"joint {jid!r} does not join a body to the frame: move a "
-                              "model with symbolic parameters by its input joint", where)
-    sign = 1 if joint.a == frame else -1          # the coordinate is b relative to a
-    value = repr(float(sign * amount))
-    if joint.kind.coordinate == "angle":
-        turn = Turn(body, pivot=joint.at, angle=parse(f"deg({value})"))
-    else:
-        turn = Turn(body, along=joint.along, shift=parse(value))
-    posed = dataclasses.replace(model, move={}, turns=[*model.turns, turn])
-    _check(model, posed, jid, amount, where)
+    if model.turns:
+        raise KinematikaError("schema", "a model with symbolic parameters is moved once: give "
+                              "all its moves together", where)
+    inputs = [_input(model, i, jid, amount, w) for i, (jid, amount, w) in enumerate(steps)]
+    if len({i.turn.body for i in inputs}) < len(inputs):
+        raise KinematikaError("schema", "two moves turn the same body: give it one move", where)
+    values = {str(s): repr(float(v)) for s, v in inst.probe.items() if s not in inst.names}
+    path = _path(model, steps, values, where)
+    turns = carried_turns(model, inputs, path, values, inst)
+    posed = dataclasses.replace(model, move={}, turns=turns)
+    _check(posed, path, values, where)
     return posed
 
 
-def _geometry_has_symbols(model: Model) -> bool:
-    """Whether the positions depend on the symbols (else only rates do: ω = w, say)."""
-    from ..engine.instant import instantiate
+def _input(model: Model, index: int, jid: str, amount: float, where: str) -> Input:
+    """The turn (or shift) of the body joint `jid` drives from the frame, by `amount`."""
+    joint = model.joint(jid)
+    frame = model.frame
+    if frame not in (joint.a, joint.b):
+        raise KinematikaError("schema", f"joint {jid!r} does not join a body to the frame: move a "
+                              "model with symbolic parameters by its input joint", where)
+    body = joint.b if joint.a == frame else joint.a
+    sign = 1 if joint.a == frame else -1          # the coordinate is b relative to a
+    value = repr(float(sign * amount))
+    if joint.kind.coordinate == "angle":
+        return Input(Turn(body, pivot=joint.at, angle=parse(f"deg({value})")), {index: 1})
+    return Input(Turn(body, along=joint.along, shift=parse(value)), {})
 
-    inst = instantiate(model)
+
+def _geometry_has_symbols(inst: Instant) -> bool:
+    """Whether the positions depend on the symbols (else only rates do: ω = w, say)."""
     values = [c for p in inst.points.values() for c in p]
     values += [x for shapes in inst.shapes.values() for s in shapes
                for x in (getattr(s, "radius", 0), *getattr(s, "direction", ()), *getattr(s, "axis", ()),
@@ -65,26 +85,100 @@ def _moved_with_numbers(model: Model, jid: str, amount: float) -> Model:
     return dataclasses.replace(twin, parameters=model.parameters)
 
 
-def _check(model: Model, posed: Model, jid: str, amount: float, where: str) -> None:
-    """The exact pose must be where the numeric sweep takes the model at the probe values."""
-    from ..engine.instant import instantiate
+def _path(model: Model, steps: list[Step], values: dict[str, str], where: str) -> Path:
+    """The move made numerically at the probe values, one sweep per step, rows end to end."""
     from ..model.overrides import with_parameters
-    from .move import moved
+    from .move import swept_to
+    from .posed import posed_model
 
+    current = with_parameters(dataclasses.replace(model, move={}), values)
+    angles: dict[str, list] = {b: [] for b in model.bodies}
+    places: dict[str, list] = {}
+    columns: list[np.ndarray] = []
+    reached = np.zeros(len(steps))
+    base = dict.fromkeys(model.bodies, 0.0)
+    for k, (jid, amount, _) in enumerate(steps):
+        try:
+            result = swept_to(current, jid, amount)
+        except KinematikaError as err:
+            raise KinematikaError(err.kind, f"cannot move: at values of the symbols where the model "
+                                  f"holds ({_shown(values)}), {err.message}", where) from None
+        joint = model.joint(jid)
+        sign = 1.0 if joint.a == model.frame else -1.0
+        rows = np.asarray(result.coordinate, dtype=float)
+        rows = np.radians(rows) if joint.kind.coordinate == "angle" else rows
+        block = np.tile(reached, (len(rows), 1))
+        block[:, k] = sign * rows
+        columns.append(block)
+        reached[k] = sign * rows[-1]
+        for b in model.bodies:
+            angles[b].append(base[b] + np.radians(result.bodies[b]["angle"]))
+            base[b] = float(angles[b][-1][-1])
+        for ref, q in result.points.items():
+            places.setdefault(ref, []).append(np.asarray(q["position"], dtype=float))
+        current = posed_model(current, result, -1)
+    final = {k: np.asarray(v, dtype=float) for k, v in instantiate(current, False).points.items()}
+    return Path({b: np.concatenate(v) for b, v in angles.items()},
+                {r: np.concatenate(v) for r, v in places.items()}, np.concatenate(columns), final)
+
+
+def _check(posed: Model, path: Path, values: dict[str, str], where: str) -> None:
+    """The exact pose must be where the numeric move takes the model at the probe values;
+    else a one-line error naming the first point that is not, and why."""
     inst = instantiate(posed)
-    values = {str(s): repr(float(v)) for s, v in inst.probe.items() if s not in inst.names}
-    numeric = with_parameters(dataclasses.replace(model, move={}), values)
-    try:
-        reached = instantiate(moved(numeric, {jid: amount}), False).points
-    except KinematikaError as err:
-        raise KinematikaError(err.kind, f"cannot move: at values of the symbols where the model "
-                              f"holds ({_shown(values)}), {err.message}", where) from None
+    twin = placed(posed, posed.turns, values)
     for name, p in inst.points.items():
         exact = np.asarray(inst.numvec(p))
-        if not np.allclose(exact, reached[name], atol=1e-7 * inst.scale, rtol=0):
-            raise KinematikaError("schema", f"cannot move exactly: point {name!r} does not follow "
-                                  f"the input; write it by construction from the points it is "
-                                  "joined to (or give the parameters values)", where)
+        if not np.allclose(exact, path.final[name], atol=1e-7 * inst.scale, rtol=0):
+            raise KinematikaError("schema", _why(posed, name, twin is not None and np.allclose(
+                twin[name], path.final[name], atol=1e-7 * inst.scale, rtol=0)), where)
+    _check_fixtures(posed, path, where)
+
+
+def _why(model: Model, name: str, numerically: bool) -> str:
+    """Why point `name` does not follow the input: one line."""
+    from ..engine.turns import turn_for
+
+    if numerically:
+        return (f"cannot move exactly: point {name!r} follows the input in numbers, not in its "
+                "exact coordinates (give the parameters values)")
+    owner = model.place_owner(name) if model.carriers(name) else None
+    turn = turn_for(model, name)
+    if turn is None and owner is not None and _rolls_on_a_line(model, owner):
+        return (f"cannot move exactly: point {name!r} is on {owner!r}, which rolls on a line: its turn "
+                "is the path of its centre over its radius, no closed form here (give the parameters values)")
+    if turn is None and owner is not None:
+        return (f"cannot move exactly: point {name!r} does not follow the input: no construction, rolling "
+                f"ratio or other body gives the pose of {owner!r} in closed form; write {name} by "
+                "construction (or give values)")
+    return (f"cannot move exactly: point {name!r} does not follow the input: it is constructed from points "
+            f"that do not move with {turn.body if turn else owner!r}; construct it from those (or give values)")
+
+
+def _rolls_on_a_line(model: Model, body: str) -> bool:
+    """Whether `body` rolls with a circle on a line (either body's), which `carried` does not
+    follow: its turn depends on the path of its centre."""
+    from ..model.model import Line
+
+    for j in model.joints:
+        if j.kind.rolls and body in (j.a, j.b):
+            if any(isinstance(s, Line) for b in (j.a, j.b) for s in model.bodies[b].shapes):
+                return True
+    return False
+
+
+def _check_fixtures(model: Model, path: Path, where: str) -> None:
+    """A body the move turns but no turn carries must have no shape or direction written in
+    numbers (`fixture`: they would stay as drawn)."""
+    turned = {t.body for t in model.turns}
+    for body in model.moving_bodies:
+        if body in turned or np.max(np.abs(path.angles[body])) <= 1e-9:
+            continue
+        what = fixture(model, body)
+        if what:
+            raise KinematikaError("schema", f"cannot move exactly: {body!r} turns with no closed form "
+                                  f"here, and its {what} is written in numbers; give it by points "
+                                  "(or give the parameters values)", where)
 
 
 def _shown(values: dict[str, str]) -> str:

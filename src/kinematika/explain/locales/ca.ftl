@@ -64,6 +64,14 @@ fig-sample = Dibuixat amb valors de mostra dels símbols.
 sec-position = Posició
 pos-intro = Anàlisi de posició: cada punt mòbil se situa com el situa l’enunciat, a partir de punts ja situats.
 pos-named = Aquí { $name } = { $formula }.
+pos-moved = El mecanisme s’analitza on el porta el moviment demanat, cada sòlid portat des del dibuix com segueix.
+pos-turn_angle = { $body } ha girat { $angle } al voltant { ELISION($pivot) ->
+        [vowel] d’{ $pivot }
+       *[other] de { $pivot }
+    }.
+pos-turn_toward = { $body } ha girat com la recta { $line }.
+pos-turn_shift = { $body } s’ha desplaçat { $shift } al llarg de la seva guia.
+pos-carried = { $point } es mou amb { $body }: { $point } = { $at }.
 pos-polar = { $point } és a una distància { $distance } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
@@ -256,6 +264,13 @@ ask-pole = pol d’acceleracions { ELISION($body) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     }
+ask-inflection = circumferència d’inflexions i tangent polar { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }
 ask-contact = els tres punts coincidents al contacte de l’enllaç { $joint }
 ask-decompose = composició del moviment { ELISION($point) ->
         [vowel] d’{ $point }
@@ -281,6 +296,14 @@ ans-direction = direcció
 ans-center = centre de curvatura
 ans-tangent = tangent unitària
 ans-slide = velocitat al llarg de l’eix
+ans-translation = una translació: sense circumferència d’inflexions
+ans-inflection_pole = centre instantani I
+ans-inflection_center = centre de la circumferència d’inflexions
+ans-inflection_diameter = diàmetre de la circumferència d’inflexions
+ans-inflection_point = pol d’inflexions (oposat a I a la circumferència)
+ans-pole_tangent = tangent polar (unitària, en el sentit en què es mou I)
+ans-pole_normal = normal polar (unitària, d’I al pol d’inflexions)
+ans-pole_velocity = velocitat d’I al llarg de la base i la ruleta
 centre-proportional-between = per Aronhold–Kennedy és a la recta que passa per { $l1 } i a la que passa per { $l2 }, però són una mateixa recta i no el fixen. En aquesta recta les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }

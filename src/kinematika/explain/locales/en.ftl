@@ -64,6 +64,11 @@ fig-sample = Drawn at sample values of the symbols.
 sec-position = Position
 pos-intro = Position analysis: each moving point is placed as the statement places it, from points already placed.
 pos-named = Here { $name } = { $formula }.
+pos-moved = The mechanism is analysed where the move takes it, each body carried from the drawing as follows.
+pos-turn_angle = { $body } has turned by { $angle } about { $pivot }.
+pos-turn_toward = { $body } has turned as the line { $line } has.
+pos-turn_shift = { $body } has moved { $shift } along its guide.
+pos-carried = { $point } is carried with { $body }: { $point } = { $at }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
 pos-frame = { $point } is { $x } from { $origin } along { $line } and { $y } across it, to its left: { $point } = { $at }.
@@ -160,6 +165,7 @@ answers-none = The model asks no questions.
 ask-icr = instant centre of { $body } relative to { $frame }
 ask-axis = screw axis of { $body } relative to { $frame }
 ask-pole = acceleration pole of { $body } relative to { $frame }
+ask-inflection = inflection circle and pole tangent of { $body } relative to { $frame }
 ask-contact = the three coincident points at the contact of { $joint }
 ask-decompose = composition of the motion of { $point }, moving frame { $frame }
 ask-curvature = curvature of the path of { $point } relative to { $frame }
@@ -170,6 +176,14 @@ ans-direction = direction
 ans-center = centre of curvature
 ans-tangent = unit tangent
 ans-slide = velocity along the axis
+ans-translation = a translation: no inflection circle
+ans-inflection_pole = instant centre I
+ans-inflection_center = centre of the inflection circle
+ans-inflection_diameter = diameter of the inflection circle
+ans-inflection_point = inflection pole (across the circle from I)
+ans-pole_tangent = pole tangent (unit, the way I moves)
+ans-pole_normal = pole normal (unit, from I to the inflection pole)
+ans-pole_velocity = velocity of I along the centrodes
 centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along the guide of joint { $joint }: its relative motion is along the guide, { $sym } = { $value }.

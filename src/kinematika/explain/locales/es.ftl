@@ -64,6 +64,11 @@ fig-sample = Dibujado con valores de muestra de los símbolos.
 sec-position = Posición
 pos-intro = Análisis de posición: cada punto móvil se sitúa como lo sitúa el enunciado, a partir de puntos ya situados.
 pos-named = Aquí { $name } = { $formula }.
+pos-moved = El mecanismo se analiza donde lo lleva el movimiento pedido, cada sólido llevado desde el dibujo como sigue.
+pos-turn_angle = { $body } ha girado { $angle } alrededor de { $pivot }.
+pos-turn_toward = { $body } ha girado como la recta { $line }.
+pos-turn_shift = { $body } se ha desplazado { $shift } a lo largo de su guía.
+pos-carried = { $point } se mueve con { $body }: { $point } = { $at }.
 pos-polar = { $point } está a una distancia { $distance } de { $origin }, a { $angle } del eje x: { $point } = { $at }.
 pos-polar_ref = { $point } está a una distancia { $distance } de { $origin }, a { $angle } de la dirección { $ref }: { $point } = { $at }.
 pos-frame = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su izquierda: { $point } = { $at }.
@@ -160,6 +165,7 @@ answers-none = El modelo no hace preguntas.
 ask-icr = CIR de { $body } respecto de { $frame }
 ask-axis = eje instantáneo de rotación y deslizamiento de { $body } respecto de { $frame }
 ask-pole = polo de aceleraciones de { $body } respecto de { $frame }
+ask-inflection = circunferencia de inflexiones y tangente polar de { $body } respecto de { $frame }
 ask-contact = los tres puntos coincidentes en el contacto del par { $joint }
 ask-decompose = composición del movimiento de { $point }, referencia móvil { $frame }
 ask-curvature = curvatura de la trayectoria de { $point } respecto de { $frame }
@@ -170,6 +176,14 @@ ans-direction = dirección
 ans-center = centro de curvatura
 ans-tangent = tangente unitaria
 ans-slide = velocidad a lo largo del eje
+ans-translation = una traslación: sin circunferencia de inflexiones
+ans-inflection_pole = centro instantáneo I
+ans-inflection_center = centro de la circunferencia de inflexiones
+ans-inflection_diameter = diámetro de la circunferencia de inflexiones
+ans-inflection_point = polo de inflexiones (opuesto a I en la circunferencia)
+ans-pole_tangent = tangente polar (unitaria, en el sentido en que se mueve I)
+ans-pole_normal = normal polar (unitaria, de I al polo de inflexiones)
+ans-pole_velocity = velocidad de I a lo largo de la base y la ruleta
 centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de la guía del par { $joint }: su movimiento relativo sigue la guía, { $sym } = { $value }.

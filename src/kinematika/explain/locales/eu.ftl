@@ -64,6 +64,11 @@ fig-sample = Ikurren lagin-balioekin marraztua.
 sec-position = Posizioa
 pos-intro = Posizio-analisia: puntu mugikor bakoitza enuntziatuak kokatzen duen moduan kokatzen da, aurretik kokatutako puntuetatik abiatuta.
 pos-named = Hemen, { $name } = { $formula }.
+pos-moved = Mekanismoa eskatutako mugimenduak eramaten duen lekuan aztertzen da; solido bakoitza marrazkitik honela eraman da.
+pos-turn_angle = { $body } solidoak { $angle } biratu du { $pivot } puntuaren inguruan.
+pos-turn_toward = { $body } solidoak { $line } zuzenak bezala biratu du.
+pos-turn_shift = { $body } solidoa { $shift } mugitu da gidan zehar.
+pos-carried = { $point } puntua { $body } solidoarekin mugitzen da: { $point } = { $at }.
 pos-polar = { $point } puntua { $origin } puntutik { $distance } distantziara dago, x ardatzarekiko { $angle } angeluan: { $point } = { $at }.
 pos-polar_ref = { $point } puntua { $origin } puntutik { $distance } distantziara dago, { $ref } norabidearekiko { $angle } angeluan: { $point } = { $at }.
 pos-frame = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, ezkerretara: { $point } = { $at }.
@@ -163,6 +168,7 @@ answers-none = Ereduak ez du galderarik egiten.
 ask-icr = { $body } solidoaren biraketa-zentro instantaneoa { $frame } solidoarekiko
 ask-axis = { $body } solidoaren biraketa eta irristadura ardatz instantaneoa { $frame } solidoarekiko
 ask-pole = { $body } solidoaren azelerazio-poloa { $frame } solidoarekiko
+ask-inflection = { $body } solidoaren inflexio-zirkunferentzia eta polo-tangentea { $frame } solidoarekiko
 ask-contact = { $joint } loturaren kontaktuan bat datozen hiru puntuak
 ask-decompose = { $point } puntuaren mugimenduaren konposizioa, { $frame } erreferentzia mugikorra
 ask-curvature = { $point } puntuaren ibilbidearen kurbadura { $frame } solidoarekiko
@@ -173,6 +179,14 @@ ans-direction = norabidea
 ans-center = kurbadura-zentroa
 ans-tangent = ukitzaile unitarioa
 ans-slide = ardatzaren norabideko abiadura
+ans-translation = translazio bat: ez dago inflexio-zirkunferentziarik
+ans-inflection_pole = I biraketa-zentro instantaneoa
+ans-inflection_center = inflexio-zirkunferentziaren zentroa
+ans-inflection_diameter = inflexio-zirkunferentziaren diametroa
+ans-inflection_point = inflexio-poloa (zirkunferentzian I-ren aurkakoa)
+ans-pole_tangent = polo-tangentea (unitarioa, I mugitzen den noranzkoan)
+ans-pole_normal = polo-normala (unitarioa, I-tik inflexio-polora)
+ans-pole_velocity = I zentroaren abiadura polodietan zehar
 centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.

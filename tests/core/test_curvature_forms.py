@@ -1,0 +1,68 @@
+"""Exact curvature answers read as what they are: a point of a body pinned to the frame of
+reference moves on a circle about the pin, so its radius is the body's length (a symbol,
+not a long formula) and its centre the pin; a point of a body with no such pin keeps the
+general answer, checked here against the curvature of its path written out by hand."""
+from __future__ import annotations
+
+import pytest
+import sympy
+
+import kinematika
+from kinematika.report.json_answer import solution_json
+
+from tests.model.test_constructions import four_bar_tree, slider_crank_tree
+
+theta, a, b, c, d = sympy.symbols("theta a b c d", positive=True)
+NAMES = {"theta": theta, "a": a, "b": b, "c": c, "d": d}
+
+
+def answers(symbols, ask):
+    tree = four_bar_tree()
+    for s in symbols:
+        tree["parameters"][s] = None
+    tree["ask"] = ask
+    return [x["value"] for x in solution_json(kinematika.solve(tree))["answers"]]
+
+
+def exact(text):
+    return sympy.sympify(text, locals=NAMES)
+
+
+def test_the_rockers_pin_is_at_the_rockers_length_however_long_its_speed():
+    """The issue's case: the crank angle θ and the rocker's length c symbols; B moves on the
+    circle of radius c about O4 = (5.2, 0) (the rocker turns about O4)."""
+    (rocker,) = answers(["theta", "c"], [{"curvature": "B@rocker"}])
+    assert exact(rocker["radius"]) == c and len(rocker["radius"]) == 1
+    assert [exact(x) for x in rocker["center"]] == [sympy.Rational(26, 5), 0]
+
+
+def test_every_length_a_symbol_the_radii_are_the_links():
+    """All of a, b, c, d and θ symbols: B's path relative to the ground is the circle of
+    radius c about O4 = (d, 0); relative to the crank, the circle of radius b about A =
+    a (cos θ, sin θ) (the coupler turns about A on the crank)."""
+    rocker, relative = answers(["theta", "a", "b", "c", "d"],
+                               [{"curvature": "B@rocker"}, {"curvature": "B@coupler", "relative_to": "crank"}])
+    assert exact(rocker["radius"]) == c and [exact(x) for x in rocker["center"]] == [d, 0]
+    assert exact(relative["radius"]) == b
+    assert [exact(x) for x in relative["center"]] == [a * sympy.cos(theta), a * sympy.sin(theta)]
+
+
+def test_a_point_of_the_rod_keeps_the_curvature_of_its_path():
+    """The rod's midpoint M of the offset slider-crank (r = 3, l = 11, e = −2) with θ a
+    symbol (the rod has no pin to the ground): its radius against ρ = (x'² + y'²)^{3/2} /
+    |x'y'' − y'x''| of its path written by hand, M = (A + C)/2, A = r(cos θ, sin θ),
+    C = (r cos θ + √(l² − (r sin θ − e)²), e)."""
+    tree = slider_crank_tree()
+    tree["parameters"] = {"theta": None}
+    tree["points"]["M"] = {"frame": ["A", "C"], "at": [5.5, 0]}
+    tree["bodies"]["rod"] = ["A", "C", "M"]
+    tree["ask"] = [{"curvature": "M"}]
+    (rod,) = [x["value"] for x in solution_json(kinematika.solve(tree))["answers"]]
+    A = sympy.Matrix([3 * sympy.cos(theta), 3 * sympy.sin(theta)])
+    C = sympy.Matrix([3 * sympy.cos(theta) + sympy.sqrt(121 - (3 * sympy.sin(theta) + 2) ** 2), -2])
+    M = (A + C) / 2
+    x1, y1 = M.diff(theta)
+    x2, y2 = M.diff(theta, 2)
+    rho = (x1 ** 2 + y1 ** 2) ** sympy.Rational(3, 2) / sympy.Abs(x1 * y2 - y1 * x2)
+    for t in (0.4, 2.2, 4.0):
+        assert float(exact(rod["radius"]).subs(theta, t)) == pytest.approx(float(rho.subs(theta, t)), rel=1e-10)
