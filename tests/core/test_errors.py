@@ -205,3 +205,17 @@ def test_symbolic_constants_must_be_real_and_finite(text, problem):
         solve(tree, symbolic=True)
     assert (info.value.kind, info.value.where) == ("schema", "points.A[1]")
     assert problem in info.value.message
+
+
+def test_a_reader_that_stops_reading_ends_the_command_quietly():
+    """`kinematika sweep ... | head`: the output (far more than a pipe holds) meets a closed
+    pipe; the command ends with status 141 (128 + SIGPIPE) and no traceback."""
+    from tests.conftest import EXAMPLES
+
+    cmd = [sys.executable, "-m", "kinematika.cli", "sweep", str(EXAMPLES / "four_bar.yaml"), "--steps", "5000",
+           "--json"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert proc.stdout.read(10)
+    proc.stdout.close()                                  # `head -c 10` has what it wanted
+    err = proc.stderr.read().decode()
+    assert proc.wait(timeout=120) == 141 and "Traceback" not in err, err

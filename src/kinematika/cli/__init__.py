@@ -13,7 +13,19 @@ from typing import Any
 
 def main() -> None:
     """Run the command line; a mistake in its options is one line (or the JSON error with
-    `--json`) and exit status 2, like every other user error."""
+    `--json`) and exit status 2, like every other user error. A reader that stops reading
+    (`kinematika sweep ... | head`) ends the command quietly, as `cat` ends (status 141,
+    128 + SIGPIPE), never with a traceback."""
+    try:
+        _main()
+    except BrokenPipeError:
+        devnull = os.open(os.devnull, os.O_WRONLY)     # the rest of the output goes nowhere
+        os.dup2(devnull, sys.stdout.fileno())
+        os._exit(141)
+
+
+def _main() -> None:
+    """`main` itself: the fast path for plain `solve`, `centres` and `sweep`, else typer."""
     for stream in (sys.stdout, sys.stderr):      # a terminal that cannot show a character
         if hasattr(stream, "reconfigure"):        # gets an escape, never an encoding error
             stream.reconfigure(errors="backslashreplace")
