@@ -10,9 +10,16 @@ import pytest
 from typer.testing import CliRunner
 
 from kinematika.cli import app as cli       # the typer application, every command registered
-from tests.conftest import EXAMPLES
+from tests.conftest import DEEP, EXAMPLES
 
 EXAMPLE_FILES = sorted(EXAMPLES.glob("*.yaml"))
+# an explanation is seconds of work, written twice here; a run checks one model of each
+# kind of explanation (linkage, rolling, epicyclic, cam, vehicle, spatial, symbols), a
+# deep run (KINEMATIKA_DEEP=1) every example; tests/explain reads every one in every language
+EXPLAINED = EXAMPLE_FILES if DEEP else [
+    EXAMPLES / f"{name}.yaml" for name in (
+        "four_bar", "seed_001_rolling_pair", "seed_c5_1_4_epicyclic", "cam_roller_follower",
+        "tractor_trailer", "spherical_four_bar", "fan_symbolic")]
 RUNNER = CliRunner()
 
 
@@ -40,7 +47,7 @@ def test_answers_are_the_cli_json_byte_for_byte(client, path, command):
         assert (got["kind"], got["message"]) == (said["kind"], said["message"])
 
 
-@pytest.mark.parametrize("path", EXAMPLE_FILES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", EXPLAINED, ids=lambda p: p.stem)
 def test_explanation_is_the_cli_html(client, path):
     code, printed = run_cli("explain", str(path), "--format", "html", "--lang", "eu")
     answer = post(client, "explain", model=path.read_text(encoding="utf-8"), lang="eu")
