@@ -35,3 +35,12 @@ def hand_derivations() -> ModuleType:
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+
+
+def pytest_xdist_auto_num_workers(config) -> int:
+    """`-n auto`: one worker more than the cores. A third of the browser and command-line
+    tests' time is spent waiting (Chromium, a pause of the slow drag, a child process), and
+    on a machine busy with other work the extra worker keeps the suite's share of the cores:
+    on 2 cores under two busy loops the suite took 412 s with two workers, 329 s with three
+    (docs/testing.md)."""
+    return (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1) + 1
