@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import math
 import statistics
+from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
@@ -160,36 +161,40 @@ def test_editing_a_length_solves_again(page):
     assert page.get_by_test_id("error").is_hidden()
 
 
-def test_errors_appear_as_you_type_at_their_place(page):
+@contextmanager
+def edited(page, old: str, new: str, box: str):
+    """The editor's text with `old` replaced by `new` until the block ends (then the text as
+    it was, and the box `box` hidden again); yields the editor, the text as it was and the
+    box, once the box is shown."""
     editor = page.get_by_test_id("model-editor")
     good = editor.input_value()
-    editor.fill(good.replace("at: O4}", "at: Q4}"))
-    error = page.get_by_test_id("error")
-    error.wait_for(state="visible")
-    assert error.get_attribute("data-kind") == "schema" and "'Q4'" in error.inner_text()
-    bad_line = good.splitlines().index(next(l for l in good.splitlines() if "at: O4}" in l)) + 1
-    assert page.locator("#gutter .bad").inner_text() == str(bad_line)
-    editor.fill(good.replace("drivers:", "drivers: ["))
-    page.wait_for_function("() => document.querySelector('[data-testid=error]').dataset.kind === 'syntax'")
+    editor.fill(good.replace(old, new))
+    shown = page.get_by_test_id(box)
+    shown.wait_for(state="visible")
+    yield editor, good, shown
     editor.fill(good)
-    error.wait_for(state="hidden")
+    shown.wait_for(state="hidden")
+
+
+def test_errors_appear_as_you_type_at_their_place(page):
+    with edited(page, "at: O4}", "at: Q4}", "error") as (editor, good, error):
+        assert error.get_attribute("data-kind") == "schema" and "'Q4'" in error.inner_text()
+        bad_line = good.splitlines().index(next(l for l in good.splitlines() if "at: O4}" in l)) + 1
+        assert page.locator("#gutter .bad").inner_text() == str(bad_line)
+        editor.fill(good.replace("drivers:", "drivers: ["))
+        page.wait_for_function("() => document.querySelector('[data-testid=error]').dataset.kind === 'syntax'")
     assert page.get_by_test_id("dof").inner_text() == "DOF 1"
 
 
 @pytest.mark.filterwarnings("ignore::kinematika.errors.KinematikaWarning")   # the server's, in its threads
 def test_an_angle_in_radians_meant_as_degrees_is_answered_with_a_warning(page):
-    editor = page.get_by_test_id("model-editor")
-    good = editor.input_value()
-    editor.fill(good.replace("theta2: deg(90)", "theta2: 90"))
-    warning = page.get_by_test_id("warnings")
-    warning.wait_for(state="visible")
-    assert "points.A.angle" in warning.inner_text() and "deg(90)" in warning.inner_text()
-    # answered as written: A at 90 rad on the crank circle, its speed a·ω = 10 across O2A
-    t = 90.0
-    assert cell(page, "points.A@crank.position") == pytest.approx([math.cos(t), math.sin(t)], abs=1e-9)
-    assert cell(page, "points.A@crank.velocity") == pytest.approx([-10 * math.sin(t), 10 * math.cos(t)], abs=1e-9)
-    editor.fill(good)
-    warning.wait_for(state="hidden")
+    with edited(page, "theta2: deg(90)", "theta2: 90", "warnings") as (_, _, warning):
+        assert "points.A.angle" in warning.inner_text() and "deg(90)" in warning.inner_text()
+        # answered as written: A at 90 rad on the crank circle, its speed a·ω = 10 across O2A
+        t = 90.0
+        assert cell(page, "points.A@crank.position") == pytest.approx([math.cos(t), math.sin(t)], abs=1e-9)
+        assert cell(page, "points.A@crank.velocity") == pytest.approx([-10 * math.sin(t), 10 * math.cos(t)],
+                                                                      abs=1e-9)
 
 
 def test_dragging_a_point_changes_the_text(page):

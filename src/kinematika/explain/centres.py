@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from itertools import combinations
 
-from ..questions.centres import all_centres
+from ..questions.centres import all_centres, centre_line, same_line
 from .context import Ctx
 from .kinds import knife_edge, line_kind
 from .document import CentreNote, Section, Sym, msg
@@ -117,11 +117,12 @@ def _kennedy(ctx: Ctx, note: CentreNote, found: dict, before: list) -> None:
     thirds = [k for k in ctx.model.bodies if k not in (a, b) and frozenset((a, k)) in earlier
               and frozenset((k, b)) in earlier]
     thirds = list(dict.fromkeys(note.via + thirds))
-    lines = {k: _line(ctx, found[frozenset((a, k))].value, found[frozenset((k, b))].value) for k in thirds}
+    lines = {k: centre_line(ctx.inst, found[frozenset((a, k))].value, found[frozenset((k, b))].value)
+             for k in thirds}
     lines = {k: l for k, l in lines.items() if l is not None}
     for i, k1 in enumerate(lines):
         for k2 in list(lines)[i + 1:]:
-            if not _same_line(ctx, lines[k1], lines[k2]):
+            if not same_line(ctx.inst, lines[k1], lines[k2]):
                 note.via = [k1, k2]
                 note.lines = [(_clean(ctx, found[frozenset((a, k))].value),
                                _clean(ctx, found[frozenset((k, b))].value)) for k in (k1, k2)]
@@ -153,29 +154,6 @@ def _witness_velocity(ctx: Ctx, found: dict, a: str, b: str, k: str):
     """As floats, the velocity relative to a of b's point at the centre I_k,b (None at infinity)."""
     where = found[frozenset((k, b))].value.get("point")
     return None if where is None else ctx.num(_velocity_at(ctx, b, a, where))
-
-
-def _line(ctx: Ctx, c1: dict, c2: dict):
-    """The line through two centres as (point, direction) in floats; None when undefined."""
-    p1, p2 = c1.get("point"), c2.get("point")
-    if p1 is None and p2 is None:
-        return None
-    if p1 is None or p2 is None:
-        p, c = (p1, c2) if p2 is None else (p2, c1)
-        d = c.get("direction")
-        return None if d is None else (ctx.num(tuple(p)), ctx.num(tuple(d)))
-    x, y = ctx.num(tuple(p1)), ctx.num(tuple(p2))
-    d = (y[0] - x[0], y[1] - x[1])
-    return None if (d[0] ** 2 + d[1] ** 2) ** 0.5 <= 1e-9 * ctx.inst.scale else (x, d)
-
-
-def _same_line(ctx: Ctx, l1, l2) -> bool:
-    (p, d), (q, e) = l1, l2
-    nd, ne = (d[0] ** 2 + d[1] ** 2) ** 0.5, (e[0] ** 2 + e[1] ** 2) ** 0.5
-    if abs(d[0] * e[1] - d[1] * e[0]) > 1e-9 * nd * ne:
-        return False
-    w = (q[0] - p[0], q[1] - p[1])
-    return abs(d[0] * w[1] - d[1] * w[0]) <= 1e-9 * nd * ctx.inst.scale
 
 
 def _velocity_at(ctx: Ctx, body: str, frame: str, where) -> tuple:

@@ -98,7 +98,7 @@ def _structural(sol: Solution, known: dict, bodies: list[str], a: str, b: str) -
     lines: list[tuple[str, str, tuple]] = [(kind, name, line) for kind, name, line in candidates if line is not None]
     for i, first in enumerate(lines):
         for second in lines[i + 1:]:
-            if not _same_line(sol, first[2], second[2]):
+            if not same_line(sol.inst, first[2], second[2]):
                 return Centre((a, b), instant_centre(sol, b, a), "lines", [first[1], second[1]],
                               [(first[0], first[1]), (second[0], second[1])])
     return None
@@ -119,17 +119,23 @@ def _welded(sol: Solution, body: str) -> list[tuple[str, str]]:
 
 def _kennedy_line(sol: Solution, known: dict, a: str, k: str, b: str) -> Optional[tuple]:
     """(point, direction) as floats of the line through the centres a–k and k–b."""
-    c1, c2 = known[frozenset((a, k))].value, known[frozenset((k, b))].value
+    return centre_line(sol.inst, known[frozenset((a, k))].value, known[frozenset((k, b))].value)
+
+
+def centre_line(inst: Any, c1: dict, c2: dict) -> Optional[tuple]:
+    """The line through two instant centres as (point, direction) in floats (a centre at
+    infinity gives the line through the other along its direction); None when both are at
+    infinity or the two coincide. `inst` is the instant the centres were found at."""
     p1, p2 = c1.get("point"), c2.get("point")
     if p1 is None and p2 is None:
         return None
     if p1 is None or p2 is None:
         p, c = (p1, c2) if p2 is None else (p2, c1)
         d = c.get("direction")
-        return None if d is None else (_floats(sol, p), _floats(sol, d))
-    x, y = _floats(sol, p1), _floats(sol, p2)
+        return None if d is None else (_floats(inst, p), _floats(inst, d))
+    x, y = _floats(inst, p1), _floats(inst, p2)
     d = (y[0] - x[0], y[1] - x[1])
-    return None if (d[0] ** 2 + d[1] ** 2) ** 0.5 <= 1e-9 * sol.inst.scale else (x, d)
+    return None if (d[0] ** 2 + d[1] ** 2) ** 0.5 <= 1e-9 * inst.scale else (x, d)
 
 
 def _joint_line(sol: Solution, j: Any) -> Optional[tuple]:
@@ -138,25 +144,26 @@ def _joint_line(sol: Solution, j: Any) -> Optional[tuple]:
     geo = sol.solver.geos.get(j.id)
     contact = getattr(geo, "contact", None) if geo is not None else None
     if contact is not None and getattr(contact, "normal", None) and getattr(contact, "point", None) is not None:
-        return _floats(sol, contact.point), _floats(sol, contact.normal)
+        return _floats(sol.inst, contact.point), _floats(sol.inst, contact.normal)
     if geo is None or geo.at is None or geo.along is None:
         return None
-    e = _floats(sol, geo.along)
-    return _floats(sol, geo.at), (-e[1], e[0])
+    e = _floats(sol.inst, geo.along)
+    return _floats(sol.inst, geo.at), (-e[1], e[0])
 
 
-def _same_line(sol: Solution, l1: tuple, l2: tuple) -> bool:
-    """Whether two lines are one (parallel lines that are two meet at infinity: a centre)."""
+def same_line(inst: Any, l1: tuple, l2: tuple) -> bool:
+    """Whether two lines (point, direction) are one: d × e = 0 and d × (q − p) = 0 to the
+    instant's scale (parallel lines that are two meet at infinity: a centre)."""
     (p, d), (q, e) = l1, l2
     nd, ne = (d[0] ** 2 + d[1] ** 2) ** 0.5, (e[0] ** 2 + e[1] ** 2) ** 0.5
     if abs(d[0] * e[1] - d[1] * e[0]) > 1e-9 * nd * ne:
         return False
     w = (q[0] - p[0], q[1] - p[1])
-    return abs(d[0] * w[1] - d[1] * w[0]) <= 1e-9 * nd * sol.inst.scale
+    return abs(d[0] * w[1] - d[1] * w[0]) <= 1e-9 * nd * inst.scale
 
 
-def _floats(sol: Solution, v: Any) -> tuple:
-    return tuple(float(sol.inst.num(c)) for c in v)
+def _floats(inst: Any, v: Any) -> tuple:
+    return tuple(float(inst.num(c)) for c in v)
 
 
 def _pin(sol: Solution, found: tuple[str, str]) -> str | None:

@@ -145,17 +145,27 @@ def _polar(ctx: Context, origin: str, to: np.ndarray) -> str:
     return name
 
 
+def _by_distance(t: Any, point: str) -> Any:
+    """The spec of `point` when it is placed by its distance from one point (the one
+    condition a new link can turn into two); None for a point given by coordinates; a usage
+    error when it already has two conditions."""
+    spec = t.points()[point]
+    if not isinstance(spec, dict):
+        return None
+    if "from" not in spec or "reference" in spec:
+        raise KinematikaError("usage", f"{point} is already placed by two conditions: delete "
+                              "one of its links first", f"points.{point}")
+    return spec
+
+
 def _close(ctx: Context, point: str, other: str) -> None:
     """A link from `other` to an existing `point` closes a loop: a point that was placed by
     its distance from one point is now where two circles meet (its old distance, and the
     new link's length), on the side it is drawn; a point given by coordinates stays."""
     t = ctx.tree
-    spec = t.points()[point]
-    if not isinstance(spec, dict):
+    spec = _by_distance(t, point)
+    if spec is None:
         return
-    if "from" not in spec or "reference" in spec:
-        raise KinematikaError("usage", f"{point} is already placed by two conditions: delete "
-                              "one of its links first", f"points.{point}")
     centre = str(spec["from"])
     c, p, q = ctx.at[centre], ctx.at[other], ctx.at[point]
     length = number(float(np.linalg.norm(q - p)))
@@ -169,12 +179,9 @@ def _guide(ctx: Context, point: str, line: Any, direction: np.ndarray) -> None:
     """`point`, placed by its distance from another point, now also on a line: where the
     circle meets the line, on the side it is drawn."""
     t = ctx.tree
-    spec = t.points()[point]
-    if not isinstance(spec, dict):
+    spec = _by_distance(t, point)
+    if spec is None:
         return
-    if "from" not in spec or "reference" in spec:
-        raise KinematikaError("usage", f"{point} is already placed by two conditions: delete "
-                              "one of its links first", f"points.{point}")
     centre = ctx.at[str(spec["from"])]
     q = ctx.at[point]
     foot_t = float((centre - q) @ direction)           # the centre's foot, along the line from q
