@@ -23,6 +23,13 @@ settings.register_profile("default", max_examples=20, **_fixed)
 settings.register_profile("deep", max_examples=500, **_fixed)
 settings.load_profile("deep" if DEEP else "default")
 
+# How long a test waits for a page, a server or a child process before it calls the wait a
+# hang: far above what any wait takes on a 2-core machine busy with other work (the slowest
+# seen, an exercise page's background requests, ~30 s), so that a loaded machine is slow,
+# never red. Playwright counts in milliseconds.
+HANG_SECONDS = 120.0
+BROWSER_WAIT = int(HANG_SECONDS * 1000)
+
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"
 

@@ -44,6 +44,10 @@ POINT_OPS = 2000             # operations of a constructed point's exact coordin
                              # coordinates (engine.positions.NAME_OPS): a four-bar's coupler pin
                              # has 84; Jansen's leg in its 15 lengths, under 400 in its names
 
+PRINT_SECONDS = 600.0        # Chromium's wait for a sheet to load and print (exercise sheets, PDF and
+                             # PNG), wall clock: a safety net only (Playwright's own is 30 s, which a
+                             # busy machine can meet)
+
 # the page's server (`kinematika app`) -----------------------------------------------------
 REQUEST_BYTES = FILE_BYTES   # a request's body (a model's text and a few options); 413 beyond
 REQUEST_SECONDS = 600.0      # a request's computation, wall clock: a safety net only (503 beyond); the

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import pytest
 
+from tests.conftest import BROWSER_WAIT
+
 from .conftest import P_PAIR, P_PAIR_VARY
 
 pytestmark = pytest.mark.browser
@@ -42,6 +44,7 @@ def _drive(url, fragment, v, mistakes, tmp_path):
     with sync_playwright() as p:
         browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
         page = browser.new_page(viewport={"width": 1000, "height": 1400})
+        page.set_default_timeout(BROWSER_WAIT)      # a hang detector: the page's own requests run too
         page.goto(url + fragment)
         page.get_by_test_id("exercise-input-q1").fill(repr(v.rows[0].value).replace(".", ","))
         page.get_by_test_id("exercise-input-q2").fill(repr(mistakes["coriolis-omitted"].rows["q2"].value))
@@ -55,8 +58,6 @@ def _drive(url, fragment, v, mistakes, tmp_path):
         page.locator("[data-testid=exercise-solution] iframe").wait_for()
         page.wait_for_load_state("networkidle")        # no request left computing
         browser.close()
-
-
 
 
 def _opened(fragment):

@@ -14,6 +14,8 @@ import numpy as np
 import pytest
 import yaml
 
+from tests.conftest import BROWSER_WAIT
+
 pytestmark = pytest.mark.browser
 
 
@@ -23,7 +25,7 @@ def shared_page(browser, server):
     model or an example it opens itself."""
     context = browser.new_context(viewport={"width": 1400, "height": 1000})
     pg = context.new_page()
-    pg.set_default_timeout(20000)
+    pg.set_default_timeout(BROWSER_WAIT)          # a hang detector
     errors: list[str] = []
     pg.on("pageerror", lambda e: errors.append(str(e)))
     pg.goto(server.url)

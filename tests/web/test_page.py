@@ -21,7 +21,7 @@ import yaml
 from typer.testing import CliRunner
 
 from kinematika.cli import app as cli       # the typer application, every command registered
-from tests.conftest import EXAMPLES
+from tests.conftest import BROWSER_WAIT, EXAMPLES
 
 from .conftest import CHROMIUM, FLAGS, _chromium_or_skip  # noqa: F401 - used by other modules too
 
@@ -34,7 +34,7 @@ def page(browser, server):
     context = browser.new_context(viewport={"width": 1400, "height": 1000}, bypass_csp=True,
                                   accept_downloads=True)
     pg = context.new_page()
-    pg.set_default_timeout(60_000)          # a hang detector: a loaded machine is slow, not wrong
+    pg.set_default_timeout(BROWSER_WAIT)          # a hang detector: a loaded machine is slow, not wrong
     errors: list[str] = []
     pg.on("pageerror", lambda e: errors.append(str(e)))
     pg.on("console", lambda m: errors.append(m.text) if m.type == "error" and "attribute" in m.text
@@ -50,7 +50,7 @@ def page(browser, server):
 def ready(pg) -> None:
     """Wait for the model to be solved, drawn and swept."""
     pg.wait_for_function("() => window.kinematika && window.kinematika.state.solution"
-                         " && document.getElementById('busy').hidden", timeout=60_000)
+                         " && document.getElementById('busy').hidden", timeout=BROWSER_WAIT)
 
 
 def cell(pg, key: str):
@@ -224,9 +224,9 @@ def test_basque_explanation_of_the_current_position(page):
     set_row(page, 90)
     page.get_by_test_id("language").select_option("eu")
     frame = page.frame_locator("[data-testid=explanation]")
-    frame.locator("html[lang=eu]").wait_for(timeout=30000)     # an explanation with figures, on a loaded machine
+    frame.locator("html[lang=eu]").wait_for()     # an explanation with figures (the page's default wait)
     # one choice: the page speaks Basque too ("at j1 +90°" is "j1 +90° posizioan")
-    page.wait_for_function("() => document.getElementById('explanation-where').textContent === 'j1 +90° posizioan'", timeout=30000)
+    page.wait_for_function("() => document.getElementById('explanation-where').textContent === 'j1 +90° posizioan'", timeout=BROWSER_WAIT)
     body = frame.locator("body").inner_text()
     assert "Abiadurak" in body and "Azelerazioak" in body
     assert "Velocities" not in body
@@ -432,7 +432,7 @@ def test_named_quantities_of_long_formulas_are_listed(page, tmp_path):
     assert "  theta: deg(90)" in text
     symbolic = text.replace("  theta: deg(90)", "  theta: null")
     page.get_by_test_id("model-editor").fill(symbolic)
-    page.wait_for_selector('td[data-key="where.x_B"]', timeout=60_000)
+    page.wait_for_selector('td[data-key="where.x_B"]')
     path = tmp_path / "jansen_theta.yaml"
     path.write_text(symbolic)
     cli_json = json.loads(CliRunner().invoke(cli, ["solve", str(path), "--json"]).stdout)
@@ -458,7 +458,7 @@ def test_a_slow_drag_ends_under_the_pointer(page):
         page.wait_for_timeout(500)                 # the hand hesitates; the page re-solves
     page.mouse.up()
     page.wait_for_function("() => !window.kinematika.figure.drag && document.getElementById('busy').hidden",
-                           timeout=60000)
+                           timeout=BROWSER_WAIT)
     ready(page)
     end = page.locator('[data-testid=figure] [data-handle="A"]').bounding_box()
     cx, cy = end["x"] + end["width"] / 2, end["y"] + end["height"] / 2

@@ -11,6 +11,8 @@ import shutil
 from pathlib import Path
 from typing import Any, Callable, Optional
 
+from ..limits import PRINT_SECONDS
+
 CHROMIUM = "/usr/bin/chromium"
 FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
          "--disable-component-update", "--disable-sync", "--no-first-run"]
@@ -53,6 +55,7 @@ def _print_pdfs(pages: list[tuple[Path, Path]]) -> None:
         browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
         try:
             page = browser.new_page()
+            page.set_default_timeout(PRINT_SECONDS * 1000)
             for html, pdf in pages:
                 page.goto(html.resolve().as_uri(), wait_until="load")
                 page.pdf(path=str(pdf), format="A4", print_background=True, prefer_css_page_size=True)
@@ -73,6 +76,7 @@ def _screenshots(pages: list[tuple[Path, Path]], width: int, full_page: bool, pr
         browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
         try:
             page = browser.new_page(viewport={"width": width, "height": 1200})
+            page.set_default_timeout(PRINT_SECONDS * 1000)
             if print_media:
                 page.emulate_media(media="print")
             for html, png in pages:
