@@ -9,6 +9,7 @@ import time
 import uvicorn
 
 from kinematika.web.server import Start, bundled_examples, create_app
+from tests.conftest import HANG_SECONDS
 
 
 class PageServer:
@@ -26,7 +27,7 @@ class PageServer:
         self.thread = threading.Thread(target=self.server.run, kwargs={"sockets": [self.sock]},
                                        daemon=True)
         self.thread.start()
-        deadline = time.monotonic() + 20
+        deadline = time.monotonic() + HANG_SECONDS
         while not self.server.started:
             if time.monotonic() > deadline:
                 raise RuntimeError("the page's server did not start")
@@ -39,10 +40,10 @@ class PageServer:
         self.server.should_exit = True
         self.thread.join(10)
         self.sock.close()
-        deadline = time.monotonic() + 120
+        deadline = time.monotonic() + HANG_SECONDS
         while any(_computing(t) for t in threading.enumerate()):
             if time.monotonic() > deadline:
-                raise RuntimeError("the page's server still computes 120 s after it stopped")
+                raise RuntimeError(f"the page's server still computes {HANG_SECONDS:.0f} s after it stopped")
             time.sleep(0.05)
 
 

@@ -10,9 +10,9 @@ import time
 import httpx
 import pytest
 
-from tests.conftest import EXAMPLES, ROOT
+from tests.conftest import EXAMPLES, HANG_SECONDS, ROOT
 
-WAIT = 60.0         # seconds an answer may take before the test calls it a hang
+WAIT = HANG_SECONDS     # seconds an answer may take before the test calls it a hang
 
 
 def start(*args: str) -> tuple[subprocess.Popen, str]:
@@ -25,7 +25,7 @@ def start(*args: str) -> tuple[subprocess.Popen, str]:
     if not m:
         proc.kill()
         pytest.fail(f"no URL in {line!r}: {proc.stderr.read()}")
-    deadline = time.monotonic() + 120          # a hang detector: a busy machine starts slowly
+    deadline = time.monotonic() + HANG_SECONDS      # a hang detector: a busy machine starts slowly
     while True:
         try:
             httpx.get(m.group(0) + "api/start", timeout=WAIT)
