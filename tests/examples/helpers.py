@@ -66,10 +66,10 @@ def same(name: str, got: Any, expected: Any) -> bool:
     return sympy.simplify(formula(name, got) - sympy.sympify(expected)) == 0
 
 
-def close(got: Any, expected: Any, rel: float = 1e-9, scale: float = 1.0) -> bool:
+def is_close(got: Any, expected: Any, rel: float = 1e-9, scale: float = 1.0) -> bool:
     """Numbers (or vectors) equal to a relative tolerance, zero judged against `scale`."""
     if isinstance(got, (list, tuple)):
-        return len(got) == len(expected) and all(close(g, e, rel, scale) for g, e in zip(got, expected))
+        return len(got) == len(expected) and all(is_close(g, e, rel, scale) for g, e in zip(got, expected))
     return math.isclose(float(got), float(expected), rel_tol=rel, abs_tol=rel * scale)
 
 

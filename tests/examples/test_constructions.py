@@ -6,7 +6,7 @@ from __future__ import annotations
 import sympy
 from sympy import Rational, sqrt
 
-from .helpers import answer, close, cross, line_meet, solved
+from .helpers import answer, is_close, cross, line_meet, solved
 
 
 def test_seed_c5_1_2_bar_on_inclined_wheels():
@@ -25,12 +25,12 @@ def test_seed_c5_1_2_bar_on_inclined_wheels():
     v_o = cross(w_oq, [o[0] - icr_oq[0], o[1] - icr_oq[1]])
     w_oj = sympy.simplify(v_o[0] / cross(1, [o[0] - icr_oj[0], o[1] - icr_oj[1]])[0])
     v_j = cross(w_oj, [j[0] - icr_oj[0], j[1] - icr_oj[1]])
-    assert close(answer(name, icr="OQ")["point"], icr_oq, scale=5)
-    assert close(answer(name, icr="OJ")["point"], icr_oj, scale=5)
-    assert close(answer(name, omega="OJ"), w_oj)
-    assert close(answer(name, velocity="J@OJ"), v_j, scale=5)
+    assert is_close(answer(name, icr="OQ")["point"], icr_oq, scale=5)
+    assert is_close(answer(name, icr="OJ")["point"], icr_oj, scale=5)
+    assert is_close(answer(name, omega="OJ"), w_oj)
+    assert is_close(answer(name, velocity="J@OJ"), v_j, scale=5)
     assert abs(float(v_j[1])) < 1e-12                       # horizontal, as the floor demands
-    assert close(answer(name, icr="wheel1")["point"], [-sqrt(3), 1], scale=5)   # its contact
+    assert is_close(answer(name, icr="wheel1")["point"], [-sqrt(3), 1], scale=5)   # its contact
 
 
 def test_seed_c5_1_3_bar_in_a_sleeve():
@@ -45,15 +45,15 @@ def test_seed_c5_1_3_bar_in_a_sleeve():
     v_q = cross(2, qq)                                   # OQ turns at 2 rad/s about O
     w_bar = sympy.simplify(v_q[0] / cross(1, [qq[0] - icr[0], qq[1] - icr[1]])[0])
     v_e = cross(w_bar, [e[0] - icr[0], e[1] - icr[1]])
-    assert close(answer(name, icr="bar")["point"], icr, scale=10)
-    assert close(answer(name, icr="support")["point"], j, scale=10)
-    assert close(answer(name, omega="bar"), w_bar) and close(w_bar, -2 / 11)
-    assert close(answer(name, omega="support"), w_bar)      # a prismatic pair turns together
-    assert close(answer(name, velocity="E"), v_e, scale=5)
+    assert is_close(answer(name, icr="bar")["point"], icr, scale=10)
+    assert is_close(answer(name, icr="support")["point"], j, scale=10)
+    assert is_close(answer(name, omega="bar"), w_bar) and is_close(w_bar, -2 / 11)
+    assert is_close(answer(name, omega="support"), w_bar)      # a prismatic pair turns together
+    assert is_close(answer(name, velocity="E"), v_e, scale=5)
     # the composition with the support as the moving frame: drag is rotation about J, and
     # the relative velocity runs along the bar
     parts = answer(name, decompose="E", moving="support")
-    assert close(parts["velocity"]["drag"], cross(w_bar, [e[0] - j[0], e[1] - j[1]]), scale=5)
+    assert is_close(parts["velocity"]["drag"], cross(w_bar, [e[0] - j[0], e[1] - j[1]]), scale=5)
     rel = parts["velocity"]["relative"]
     assert abs(rel[0] * along[1] - rel[1] * along[0]) < 1e-9
     assert solved(name)[1]["dof"] == 1

@@ -7,7 +7,7 @@ import math
 
 import sympy
 
-from .helpers import answer, close, cross, same, solved, symbols
+from .helpers import answer, is_close, cross, same, solved, symbols
 
 
 def test_planetary_gears_willis():
@@ -18,23 +18,23 @@ def test_planetary_gears_willis():
     wp = wc - (ws - wc) * rs / rp
     name = "planetary_gears"
     assert solved(name)[1]["dof"] == 1          # three planets: redundant, solved by rank
-    assert close(answer(name, omega="carrier"), wc) and close(wc, 100 / 3)
-    assert close(answer(name, omega="planet1"), wp) and close(wp, -100)
-    assert close(answer(name, omega="planet2", relative_to="carrier"), wp - wc)
-    assert close(answer(name, velocity="A1"), cross(wc, [0, arm]), scale=1)
+    assert is_close(answer(name, omega="carrier"), wc) and is_close(wc, 100 / 3)
+    assert is_close(answer(name, omega="planet1"), wp) and is_close(wp, -100)
+    assert is_close(answer(name, omega="planet2", relative_to="carrier"), wp - wc)
+    assert is_close(answer(name, velocity="A1"), cross(wc, [0, arm]), scale=1)
     a3 = [arm * math.cos(math.radians(330)), arm * math.sin(math.radians(330))]
-    assert close(answer(name, acceleration="A3"), [-wc ** 2 * c for c in a3], scale=10)
+    assert is_close(answer(name, acceleration="A3"), [-wc ** 2 * c for c in a3], scale=10)
     # planet 1 rolls on the fixed ring: its instant centre is the pitch point with the ring
-    assert close(answer(name, icr="planet1")["point"], [0, rr], scale=1)
+    assert is_close(answer(name, icr="planet1")["point"], [0, rr], scale=1)
     # sun/planet 1 pitch point (0, rs): the sun's point, the planet's, and the geometric
     # one, which stays on the carrier's line at radius rs
     contact = answer(name, contact="sun_p1")
-    assert close(contact["body_a"]["velocity"], cross(ws, [0, rs]), scale=1)
-    assert close(contact["body_a"]["acceleration"], [0, -ws ** 2 * rs], scale=10)
-    assert close(contact["body_b"]["velocity"], cross(ws, [0, rs]), scale=1)
-    assert close(contact["body_b"]["acceleration"], [0, -wc ** 2 * arm + wp ** 2 * rp], scale=10)
-    assert close(contact["geometric"]["velocity"], cross(wc, [0, rs]), scale=1)
-    assert close(contact["geometric"]["acceleration"], [0, -wc ** 2 * rs], scale=10)
+    assert is_close(contact["body_a"]["velocity"], cross(ws, [0, rs]), scale=1)
+    assert is_close(contact["body_a"]["acceleration"], [0, -ws ** 2 * rs], scale=10)
+    assert is_close(contact["body_b"]["velocity"], cross(ws, [0, rs]), scale=1)
+    assert is_close(contact["body_b"]["acceleration"], [0, -wc ** 2 * arm + wp ** 2 * rp], scale=10)
+    assert is_close(contact["geometric"]["velocity"], cross(wc, [0, rs]), scale=1)
+    assert is_close(contact["geometric"]["acceleration"], [0, -wc ** 2 * rs], scale=10)
 
 
 def test_seed_c5_1_4_epicyclic_transmission():

@@ -10,7 +10,7 @@ import sympy
 from sympy import asin, cos, sin
 from sympy.physics.vector import dynamicsymbols
 
-from .helpers import (answer, at_instant, carried, check_curvature, cli_answers, close, cross,
+from .helpers import (answer, at_instant, carried, check_curvature, cli_answers, is_close, cross,
                       curvature, line_meet, same, symbols)
 
 x, phi = dynamicsymbols("x phi")
@@ -66,13 +66,13 @@ def test_seed_001_rolling_pair():
     coords = {x: (rho / sin(sympy.pi / 6), v, 0)}
     _, w_n, al_n = at_instant(beta, coords)
     _, w_r, al_r = at_instant(beta + s_along / rho, coords)
-    assert close(w_n, -0.5 * 3 ** -0.5 / 0.2)           # −v tan(beta)/x
-    assert close(w_r, 0.5 * 3 ** 0.5 / 2 / 0.1)          # v cos(beta)/rho
+    assert is_close(w_n, -0.5 * 3 ** -0.5 / 0.2)           # −v tan(beta)/x
+    assert is_close(w_r, 0.5 * 3 ** 0.5 / 2 / 0.1)          # v cos(beta)/rho
     name = "seed_001_rolling_pair"
     for key, value in (("omega", w_n), ("alpha", al_n)):
-        assert close(answer(name, **{key: "N"}), value)
+        assert is_close(answer(name, **{key: "N"}), value)
     for key, value in (("omega", w_r), ("alpha", al_r)):
-        assert close(answer(name, **{key: "R"}), value)
+        assert is_close(answer(name, **{key: "R"}), value)
     # the three contact points: the lever's, the roller's, the geometric one (s along the edge)
     edge = [cos(beta), sin(beta)]
     pf, vf, af = at_instant([s_along * edge[0], s_along * edge[1]], coords)
@@ -81,22 +81,22 @@ def test_seed_001_rolling_pair():
     fa = [p - q for p, q in zip(pf, a0)]
     af_roller = [c - w_r ** 2 * p for c, p in zip(cross(al_r, fa), fa)]
     contact = answer(name, contact="j4")
-    assert close(contact["point"], pf)
-    assert close(contact["body_a"]["velocity"], cross(w_n, pf), scale=1)
-    assert close(contact["body_b"]["velocity"], [v + c for c, v in zip(cross(w_r, fa), [0.5, 0])], scale=1)
-    assert close(contact["body_a"]["velocity"], contact["body_b"]["velocity"], scale=1)   # no slip
-    assert close(contact["body_a"]["acceleration"], af_lever, scale=10)
-    assert close(contact["body_b"]["acceleration"], af_roller, scale=10)
-    assert close(contact["geometric"]["velocity"], vf, scale=1)
-    assert close(contact["geometric"]["acceleration"], af, scale=10)
+    assert is_close(contact["point"], pf)
+    assert is_close(contact["body_a"]["velocity"], cross(w_n, pf), scale=1)
+    assert is_close(contact["body_b"]["velocity"], [v + c for c, v in zip(cross(w_r, fa), [0.5, 0])], scale=1)
+    assert is_close(contact["body_a"]["velocity"], contact["body_b"]["velocity"], scale=1)   # no slip
+    assert is_close(contact["body_a"]["acceleration"], af_lever, scale=10)
+    assert is_close(contact["body_b"]["acceleration"], af_roller, scale=10)
+    assert is_close(contact["geometric"]["velocity"], vf, scale=1)
+    assert is_close(contact["geometric"]["acceleration"], af, scale=10)
     # composition from the lever: drag (lever's point at A) + relative (along the edge) + Coriolis
     _, s_d, s_dd = at_instant(s_along, coords)
     e0 = [3 ** 0.5 / 2, 0.5]
     parts = answer(name, decompose="A@R", moving="N")
-    assert close(parts["velocity"]["relative"], [s_d * k for k in e0], scale=1)
-    assert close(parts["acceleration"]["relative"], [s_dd * k for k in e0], scale=10)
-    assert close(parts["acceleration"]["coriolis"], cross(2 * w_n, [s_d * k for k in e0]), scale=10)
-    assert close(parts["acceleration"]["total"], [0, 0], scale=10)
+    assert is_close(parts["velocity"]["relative"], [s_d * k for k in e0], scale=1)
+    assert is_close(parts["acceleration"]["relative"], [s_dd * k for k in e0], scale=10)
+    assert is_close(parts["acceleration"]["coriolis"], cross(2 * w_n, [s_d * k for k in e0]), scale=10)
+    assert is_close(parts["acceleration"]["total"], [0, 0], scale=10)
 
 
 def test_seed_c5_1_7_wheel_on_a_semicylinder():

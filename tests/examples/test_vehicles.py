@@ -11,7 +11,7 @@ import sympy
 from sympy import sqrt
 from sympy.physics.vector import Point, ReferenceFrame, dynamicsymbols
 
-from .helpers import answer, check_curvature, cli_answers, close, cross, line_meet, same, solved, symbols
+from .helpers import answer, check_curvature, cli_answers, is_close, cross, line_meet, same, solved, symbols
 
 x, q = dynamicsymbols("x q")
 t = dynamicsymbols._t
@@ -66,28 +66,28 @@ def test_vehicle_upper_wheel_with_numbers():
     R, v, acc = 0.25, 2.0, 1.0
     w_up, al_up = -v / R, acc / R            # w = −v/R with v(t) the leftward speed; dv/dt = −1
     name = "vehicle_upper_wheel"
-    assert close(answer(name, omega="wheel1"), v / R) and close(answer(name, omega="upper"), w_up)
-    assert close(answer(name, alpha="upper"), al_up)
-    assert close(answer(name, velocity="P"), [0, 0], scale=10)
-    assert close(answer(name, acceleration="P"), [0, -v ** 2 / R], scale=10)
+    assert is_close(answer(name, omega="wheel1"), v / R) and is_close(answer(name, omega="upper"), w_up)
+    assert is_close(answer(name, alpha="upper"), al_up)
+    assert is_close(answer(name, velocity="P"), [0, 0], scale=10)
+    assert is_close(answer(name, acceleration="P"), [0, -v ** 2 / R], scale=10)
     # the pole: a_U + α k × r − w² r = 0, a_U = (1, 0); solve the 2×2 system by hand
     det = w_up ** 4 + al_up ** 2
     rx = (w_up ** 2 * acc) / det
     ry = (al_up * acc) / det
     u = (0.0, R + 3 ** 0.5 * R)
-    assert close(answer(name, pole="upper")["point"], [u[0] + rx, u[1] + ry], scale=1)
+    assert is_close(answer(name, pole="upper")["point"], [u[0] + rx, u[1] + ry], scale=1)
     # contact wheel 1 / upper wheel: at the midpoint of A1 U, both wheels' points move alike
     a1 = (-R, R)
     c = ((a1[0] + u[0]) / 2, (a1[1] + u[1]) / 2)
     contact = answer(name, contact="w1_upper")
-    assert close(contact["point"], c, scale=1)
+    assert is_close(contact["point"], c, scale=1)
     turn = cross(v / R, (c[0] - a1[0], c[1] - a1[1]))
     v_wheel1 = [-v + turn[0], turn[1]]
-    assert close(contact["body_a"]["velocity"], v_wheel1, scale=10)
-    assert close(contact["body_b"]["velocity"], v_wheel1, scale=10)
+    assert is_close(contact["body_a"]["velocity"], v_wheel1, scale=10)
+    assert is_close(contact["body_b"]["velocity"], v_wheel1, scale=10)
     # the geometric contact point stays at the midpoint of the translating centres
-    assert close(contact["geometric"]["velocity"], [-v, 0], scale=10)
-    assert close(contact["geometric"]["acceleration"], [acc, 0], scale=10)
+    assert is_close(contact["geometric"]["velocity"], [-v, 0], scale=10)
+    assert is_close(contact["geometric"]["acceleration"], [acc, 0], scale=10)
 
 
 def test_seed_c5_e5_unequal_wheels():

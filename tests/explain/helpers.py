@@ -31,7 +31,7 @@ def num(sol: kinematika.Solution, x: Any) -> Any:
     return sol.inst.num(x)
 
 
-def close(sol: kinematika.Solution, a: Any, b: Any, scale: float) -> bool:
+def is_close(sol: kinematika.Solution, a: Any, b: Any, scale: float) -> bool:
     a, b = num(sol, a), num(sol, b)
     a = a if isinstance(a, tuple) else (a,)
     b = b if isinstance(b, tuple) else (b,)

@@ -10,7 +10,7 @@ import pytest
 from kinematika.explain.document import CentreNote, Derived, Equation, Section
 from kinematika.questions import answer
 
-from .helpers import EXAMPLES, close, explained
+from .helpers import EXAMPLES, is_close, explained
 
 SEEDS = sorted(p.stem for p in EXAMPLES.glob("seed_*.yaml"))
 DERIVED_CENTRES = {"joint", "kennedy", "lines", "proportional", "velocities", "field", "weld"}
@@ -44,11 +44,11 @@ def vector_reached(sol, blocks, level: str, point: str, value, relative: bool) -
     """Some equation of the level ends (or has a term) with this value, named for the point."""
     for eq in (b for b in blocks if isinstance(b, Equation) and b.level == level):
         for t in [eq.target] + [x for side in eq.sides for x in side]:
-            if relative and t.kind == "slide" and close(sol, t.value, value, _scale(sol, level)):
+            if relative and t.kind == "slide" and is_close(sol, t.value, value, _scale(sol, level)):
                 return True              # the slide along a guide: the relative motion asked
             name = t.sym.sub.split("∈")[0].split("/")[0]
             if t.sym.base == level and name == point and ("/" in t.sym.sub) == relative and not t.sym.sup \
-                    and close(sol, t.value, value, _scale(sol, level)):
+                    and is_close(sol, t.value, value, _scale(sol, level)):
                 return True
     return False
 
@@ -57,7 +57,7 @@ def rate_reached(sol, blocks, kind: str, body: str, rel, value) -> bool:
     for d in (b for b in blocks if isinstance(b, Derived)):
         sub = body if rel is None else f"{body}/{rel}"
         base = "ω" if kind == "omega" else "α"
-        if d.sym.base == base and d.sym.sub == sub and close(sol, d.value.value, value, _scale(sol, "w")):
+        if d.sym.base == base and d.sym.sub == sub and is_close(sol, d.value.value, value, _scale(sol, "w")):
             return True
     level = "w" if kind == "omega" else "al"
     for eq in (b for b in blocks if isinstance(b, Equation) and b.level == level):
@@ -83,7 +83,7 @@ def reached(sol, doc, q) -> bool:
         return any(n.how in DERIVED_CENTRES and (n.how != "velocities" or len(n.witnesses) == 2) for n in notes)
     if q.kind == "curvature":
         return any(isinstance(b, Derived) and b.kind == "radius" and b.sym.sub.split("∈")[0] == q.target.point
-                   and close(sol, b.value.value, got["radius"], _scale(sol, "len")) for b in blocks)
+                   and is_close(sol, b.value.value, got["radius"], _scale(sol, "len")) for b in blocks)
     if q.kind == "intrinsic":
         return any(isinstance(b, Equation) and b.level == "a" and b.target.sym.sub.split("∈")[0] == q.target.point
                    and any(t.sym.sup == "t" for t in b.sides[0]) for b in blocks)
@@ -95,7 +95,7 @@ def reached(sol, doc, q) -> bool:
                 for key, lv in (("velocity", "v"), ("acceleration", "a"))]
         values = [(t.value, eq.level) for eq in blocks if isinstance(eq, Equation)
                   for t in [eq.target] + [x for side in eq.sides for x in side]]
-        return all(any(lv == level and close(sol, v, value, _scale(sol, lv)) for v, level in values)
+        return all(any(lv == level and is_close(sol, v, value, _scale(sol, lv)) for v, level in values)
                    for value, lv in want)
     return True
 

@@ -9,7 +9,7 @@ import pytest
 from kinematika.algebra.vectors import add, dot
 from kinematika.explain.document import CentreNote, Sym
 
-from .helpers import ALL, close, explained, num
+from .helpers import ALL, is_close, explained, num
 
 
 def _sum(terms):
@@ -53,7 +53,7 @@ def check_every_equation_adds_up(sol, doc, name):
     for eq in doc.equations():
         scale = _scale(sol, eq.level)
         for side in eq.sides:
-            assert close(sol, _sum(side), eq.target.value, scale), (name, eq.target.sym, side)
+            assert is_close(sol, _sum(side), eq.target.value, scale), (name, eq.target.sym, side)
 
 
 @pytest.mark.parametrize("name", ALL)
@@ -70,7 +70,7 @@ def check_targets_are_the_solvers_motion(sol, doc, name):
         where = eq.position if eq.position is not None else sol.inst.points[eq.point.point]
         motion = sol.motion.velocity if eq.level == "v" else sol.motion.acceleration
         expected = motion(state, where)
-        assert close(sol, eq.target.value, expected, _scale(sol, eq.level)), (name, eq.target.sym)
+        assert is_close(sol, eq.target.value, expected, _scale(sol, eq.level)), (name, eq.target.sym)
         checked += 1
     points_asked = any(q.kind in ("velocity", "acceleration", "curvature", "decompose", "intrinsic")
                        for q in sol.model.questions)
@@ -114,7 +114,7 @@ def check_rates_read_off_the_terms(sol, doc, name):
         if d.kind in ("omega", "alpha") and d.body:
             solver = sol.omega(d.body) if d.kind == "omega" else sol.alpha(d.body)
             scale = _scale(sol, "w" if d.kind == "omega" else "al")
-            assert close(sol, d.value.value, solver if sol.space.dim == 2 else tuple(solver), scale)
+            assert is_close(sol, d.value.value, solver if sol.space.dim == 2 else tuple(solver), scale)
         if d.source is None:
             continue
         if d.kind == "radius":
@@ -122,7 +122,7 @@ def check_rates_read_off_the_terms(sol, doc, name):
             assert math.isclose(num(sol, d.value.value), dot(v, v) / math.sqrt(dot(an, an)), rel_tol=1e-7)
         else:
             made = sol.space.cross(d.value.value, d.arm)
-            assert close(sol, made, d.source.value, _scale(sol, "v") + _scale(sol, "a")), (name, d.sym)
+            assert is_close(sol, made, d.source.value, _scale(sol, "v") + _scale(sol, "a")), (name, d.sym)
 
 
 @pytest.mark.parametrize("name", ALL)
@@ -149,15 +149,15 @@ def test_fan_in_the_notes_three_ways():
     sol, doc = explained("fan_composition")
     rates = {(e.level, e.target.sym.sub): e for e in doc.equations() if e.level in ("w", "al")}
     alpha = rates[("al", "blades")]
-    assert close(sol, alpha.target.value, (0.01, 0.2, -0.05), 1)
-    assert close(sol, alpha.sides[0][2].value, (0, 0, -0.05), 1)       # ω1 × ω2
-    assert close(sol, rates[("w", "blades")].target.value, (0.5, 0.1, 0), 1)
+    assert is_close(sol, alpha.target.value, (0.01, 0.2, -0.05), 1)
+    assert is_close(sol, alpha.sides[0][2].value, (0, 0, -0.05), 1)       # ω1 × ω2
+    assert is_close(sol, rates[("w", "blades")].target.value, (0.5, 0.1, 0), 1)
     parts = [e for e in doc.equations() if e.sides[0][0].kind == "drag"]
     v, a = (next(e for e in parts if e.level == lv) for lv in ("v", "a"))
-    assert close(sol, v.target.value, (0, 0, 0.09), 1)
-    assert close(sol, v.sides[0][0].value, (0, 0, -0.06), 1) and close(sol, v.sides[0][1].value, (0, 0, 0.15), 1)
-    assert close(sol, a.target.value, (0.024, -0.075, -0.117), 1)
-    assert close(sol, a.sides[0][2].value, (0.03, 0, 0), 1)              # 2 (0.1 j) × (0.15 k)
+    assert is_close(sol, v.target.value, (0, 0, 0.09), 1)
+    assert is_close(sol, v.sides[0][0].value, (0, 0, -0.06), 1) and is_close(sol, v.sides[0][1].value, (0, 0, 0.15), 1)
+    assert is_close(sol, a.target.value, (0.024, -0.075, -0.117), 1)
+    assert is_close(sol, a.sides[0][2].value, (0.03, 0, 0), 1)              # 2 (0.1 j) × (0.15 k)
 
 
 def test_four_bar_against_its_loop_equations():
@@ -313,4 +313,4 @@ def test_quick_return_drag_from_the_rockers_pivot():
         total = eq.sides[0][0].value
         for t in eq.sides[0][1:]:
             total = add(total, t.value)
-        assert close(sol, total, eq.target.value, 10.0)
+        assert is_close(sol, total, eq.target.value, 10.0)

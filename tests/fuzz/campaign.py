@@ -31,7 +31,7 @@ if __package__ in (None, ""):                      # run as a script: import as 
 from .cases import Case, bases, case, symbolic_examples
 from .contract import ROOT, Run, check_run, json_wanted, run_cli, without_warnings
 from .forks import run_all
-from .scaling import ACCELERATION, ALPHA, OMEGA, POSITION, VELOCITY, close, expected, factor
+from .scaling import ACCELERATION, ALPHA, OMEGA, POSITION, VELOCITY, is_close, expected, factor
 
 CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
 NAN = re.compile(r"(?<![\w.])[-+]?(nan|inf)(?![\w])", re.IGNORECASE)
@@ -130,7 +130,7 @@ def compare(base: dict, got: dict, length: float, rate: float) -> str:
     def same(a: Any, b: Any, dim: tuple, where: str) -> str:
         want = _scaled(a, dim, length, rate)
         top = max([abs(x) for x in _numbers(want)] + [0.0])
-        if not close(b, want, top):
+        if not is_close(b, want, top):
             return f"{where}: {b} instead of {want}"
         return ""
 
@@ -153,7 +153,7 @@ def compare(base: dict, got: dict, length: float, rate: float) -> str:
         kind = next(iter(a["ask"]))
         want = expected(a["value"], kind, length, rate)
         top = max([abs(x) for x in _numbers(want)] + [0.0])
-        if not close(b["value"], want, top):
+        if not is_close(b["value"], want, top):
             return f"answer {a['ask']}: {b['value']} instead of {want}"
     if len(base.get("answers", [])) != len(got.get("answers", [])):
         return "not the same questions answered"

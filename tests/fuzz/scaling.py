@@ -146,14 +146,14 @@ def expected(value: Any, kind: str, length: float, rate: float, dim: Any = None)
     return value * factor(dim, length, rate)
 
 
-def close(got: Any, want: Any, scale: float, rel: float = 1e-6) -> bool:
+def is_close(got: Any, want: Any, scale: float, rel: float = 1e-6) -> bool:
     """Whether two answers agree: numbers within `rel` of the scale of their kind."""
     if isinstance(want, dict):
         return isinstance(got, dict) and set(got) == set(want) and all(
-            close(got[k], want[k], scale, rel) for k in want)
+            is_close(got[k], want[k], scale, rel) for k in want)
     if isinstance(want, list):
         return isinstance(got, list) and len(got) == len(want) and all(
-            close(g, w, scale, rel) for g, w in zip(got, want))
+            is_close(g, w, scale, rel) for g, w in zip(got, want))
     if isinstance(want, float) or isinstance(got, float):
         if not isinstance(got, (int, float)) or not isinstance(want, (int, float)):
             return False

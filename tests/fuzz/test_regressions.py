@@ -24,7 +24,7 @@ from kinematika.text import brief, markup, shown
 from core.models import four_bar as core_four_bar
 from .contract import EXAMPLES, call, check_error, check_run, run_cli
 from .mutations import alias_bomb, rename
-from .scaling import close, expected, numeric, scaled
+from .scaling import is_close, expected, numeric, scaled
 
 
 def four_bar() -> dict:
@@ -392,7 +392,7 @@ def _scaled_answers(name: str, length: float, rate: float) -> None:
         kind = next(iter(a["ask"]))
         want = expected(a["value"], kind, length, rate)
         top = max([abs(x) for x in _numbers(want)] + [0.0])
-        assert close(b["value"], want, top), (a["ask"], want, b["value"])
+        assert is_close(b["value"], want, top), (a["ask"], want, b["value"])
 
 
 def _numbers(x):

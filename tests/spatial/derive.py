@@ -63,7 +63,7 @@ def floats(values: Iterable) -> list[float]:
     return [float(v) for v in values]
 
 
-def close(actual: Iterable, expected: Iterable, tol: float = 1e-9) -> None:
+def assert_close(actual: Iterable, expected: Iterable, tol: float = 1e-9) -> None:
     """Component-wise equality, relative to the vector's size."""
     a, e = floats(actual), floats(expected)
     size = max([abs(x) for x in e] + [1.0])

@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 from kinematika import solve
 from kinematika.report.json_answer import solution_json
 
-from .derive import close, cross, minus, plus
+from .derive import assert_close, cross, minus, plus
 import itertools
 
 TYPES = ["revolute", "revolute", "revolute", "prismatic", "cylindrical", "spherical"]
@@ -125,13 +125,13 @@ def test_random_chain_matches_the_product_of_exponentials(chain):
     out = solution_json(sol)
     for i, (w, al, first, second) in enumerate(expected_motion(joints)):
         body = f"b{i}"
-        close(sol.omega(body), w, 1e-7)
-        close(sol.alpha(body), al, 1e-7)
+        assert_close(sol.omega(body), w, 1e-7)
+        assert_close(sol.alpha(body), al, 1e-7)
         for name in sol.model.bodies[body].points:
             v, a = point_motion(first, second, sol.inst.points[name])
-            close(sol.velocity(f"{name}@{body}"), v, 1e-7)
-            close(sol.acceleration(f"{name}@{body}"), a, 1e-7)
-            close(out["points"][f"{name}@{body}"]["acceleration"], a, 1e-7)
+            assert_close(sol.velocity(f"{name}@{body}"), v, 1e-7)
+            assert_close(sol.acceleration(f"{name}@{body}"), a, 1e-7)
+            assert_close(out["points"][f"{name}@{body}"]["acceleration"], a, 1e-7)
 
 
 @given(chains())
@@ -146,8 +146,8 @@ def test_rigid_body_fields_hold_for_every_body(chain):
             ab = minus(pb, pa)
             va, vb = sol.velocity(f"{a_name}@{body}"), sol.velocity(f"{b_name}@{body}")
             aa, ab_ = sol.acceleration(f"{a_name}@{body}"), sol.acceleration(f"{b_name}@{body}")
-            close(minus(vb, va), cross(w, ab), 1e-7)
-            close(minus(ab_, aa), plus(cross(al, ab), cross(w, cross(w, ab))), 1e-7)
+            assert_close(minus(vb, va), cross(w, ab), 1e-7)
+            assert_close(minus(ab_, aa), plus(cross(al, ab), cross(w, cross(w, ab))), 1e-7)
 
 
 @given(chains())
@@ -159,12 +159,12 @@ def test_omega_is_the_sum_of_relative_omegas_and_alpha_composes(chain):
         body, parent = f"b{i}", ("ground" if i == 0 else f"b{i - 1}")
         w_rel, al_rel = sol.omega(body, parent), sol.alpha(body, parent)
         # the relative motion is the joint's own: rate about its axis, derivative seen from the parent
-        close(w_rel, j["w"], 1e-7)
-        close(al_rel, j["dw"], 1e-7)
+        assert_close(w_rel, j["w"], 1e-7)
+        assert_close(al_rel, j["dw"], 1e-7)
         total = plus(total, w_rel)
-        close(sol.omega(body), total, 1e-7)
+        assert_close(sol.omega(body), total, 1e-7)
         # α = α_parent + α_rel + ω_parent × ω_rel
-        close(sol.alpha(body), plus(sol.alpha(parent), al_rel, cross(sol.omega(parent), w_rel)), 1e-7)
+        assert_close(sol.alpha(body), plus(sol.alpha(parent), al_rel, cross(sol.omega(parent), w_rel)), 1e-7)
 
 
 @given(chains(types=["revolute"]))
@@ -182,7 +182,7 @@ def test_relative_point_motion_of_the_tip_composes(chain):
     # the frame's material point at the tip: drag
     v_drag, a_drag = point_motion(motion[0][2], motion[0][3], p)
     coriolis = 2 * np.cross(motion[0][0], v_rel)
-    close(sol.velocity(tip, frame), v_rel, 1e-7)
-    close(sol.acceleration(tip, frame), a_rel, 1e-7)
-    close(sol.velocity(tip), v_drag + v_rel, 1e-7)
-    close(sol.acceleration(tip), a_drag + a_rel + coriolis, 1e-7)
+    assert_close(sol.velocity(tip, frame), v_rel, 1e-7)
+    assert_close(sol.acceleration(tip, frame), a_rel, 1e-7)
+    assert_close(sol.velocity(tip), v_drag + v_rel, 1e-7)
+    assert_close(sol.acceleration(tip), a_drag + a_rel + coriolis, 1e-7)

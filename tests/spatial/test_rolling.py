@@ -23,7 +23,7 @@ from sympy.physics.vector import Point, ReferenceFrame
 from kinematika import solve
 from kinematika.api import answers
 
-from .derive import EXAMPLES, carried, close, coordinates, fixed_point, t
+from .derive import EXAMPLES, carried, assert_close, coordinates, fixed_point, t
 
 R_COIN = 0.05
 
@@ -102,20 +102,20 @@ def test_coin_rolling_on_a_tilting_board(psi, beta, x, y, rates, fixed, below):
     e = {k: turn @ np.array(f(*args)) for k, f in COIN.items()}
     centre = turn @ np.array(centre)
     sol = solve(coin_tree(centre, e["axis"], e["omega"], e["alpha"], th1, th2, on_ground=fixed))
-    close(sol.velocity("C"), e["v_C"], 1e-8)
-    close(sol.acceleration("C"), e["a_C"], 1e-8)
-    close(sol.alpha("coin"), e["alpha"], 1e-8)
+    assert_close(sol.velocity("C"), e["v_C"], 1e-8)
+    assert_close(sol.acceleration("C"), e["a_C"], 1e-8)
+    assert_close(sol.alpha("coin"), e["alpha"], 1e-8)
     contact = answers(sol)[0][1]
-    close(contact["point"], centre + R_COIN * e["down"], 1e-9)
-    close(contact["body_b"]["velocity"], e["v_Jc"], 1e-8)
-    close(contact["body_b"]["acceleration"], e["a_Jc"], 1e-8)
-    close(contact["body_a"]["velocity"], e["v_Jb"], 1e-8)
-    close(contact["body_a"]["acceleration"], e["a_Jb"], 1e-8)
-    close(contact["geometric"]["velocity"], e["jdot"], 1e-8)
-    close(contact["geometric"]["acceleration"], e["jddot"], 1e-8)
+    assert_close(contact["point"], centre + R_COIN * e["down"], 1e-9)
+    assert_close(contact["body_b"]["velocity"], e["v_Jc"], 1e-8)
+    assert_close(contact["body_b"]["acceleration"], e["a_Jc"], 1e-8)
+    assert_close(contact["body_a"]["velocity"], e["v_Jb"], 1e-8)
+    assert_close(contact["body_a"]["acceleration"], e["a_Jb"], 1e-8)
+    assert_close(contact["geometric"]["velocity"], e["jdot"], 1e-8)
+    assert_close(contact["geometric"]["acceleration"], e["jddot"], 1e-8)
     # no slip: the coin's contact point has zero velocity relative to the plane's body
     rel = "board" if not fixed else None
-    close(sol.motion.point_velocity("coin", contact["point"], rel), (0, 0, 0), 1e-8)
+    assert_close(sol.motion.point_velocity("coin", contact["point"], rel), (0, 0, 0), 1e-8)
 
 
 def test_coin_rolling_in_a_circle_finds_its_spin():
@@ -128,19 +128,19 @@ def test_coin_rolling_in_a_circle_finds_its_spin():
     J = np.array([rho, 0, 0])
     C = J + R * np.array([-math.sin(beta), 0, math.cos(beta)])
     sol = solve(EXAMPLES / "coin_rolling.yaml")
-    close(sol.omega("coin", "heading"), s * a)
-    close(sol.omega("coin"), W * k + s * a)
-    close(sol.alpha("coin"), W1 * k + s1 * a + np.cross(W * k, s * a))
-    close(sol.velocity("C"), np.cross(W * k, C))
-    close(sol.acceleration("C"), np.cross(W1 * k, C) - W ** 2 * C * [1, 1, 0])
-    close(sol.velocity("J@coin"), (0, 0, 0))
+    assert_close(sol.omega("coin", "heading"), s * a)
+    assert_close(sol.omega("coin"), W * k + s * a)
+    assert_close(sol.alpha("coin"), W1 * k + s1 * a + np.cross(W * k, s * a))
+    assert_close(sol.velocity("C"), np.cross(W * k, C))
+    assert_close(sol.acceleration("C"), np.cross(W1 * k, C) - W ** 2 * C * [1, 1, 0])
+    assert_close(sol.velocity("J@coin"), (0, 0, 0))
     contact = answers(sol)[7][1]
-    close(contact["geometric"]["velocity"], np.cross(W * k, J))
-    close(contact["geometric"]["acceleration"], np.cross(W1 * k, J) - W ** 2 * J)
-    close(contact["body_a"]["acceleration"], (0, 0, 0))
+    assert_close(contact["geometric"]["velocity"], np.cross(W * k, J))
+    assert_close(contact["geometric"]["acceleration"], np.cross(W1 * k, J) - W ** 2 * J)
+    assert_close(contact["body_a"]["acceleration"], (0, 0, 0))
     # the coin's material point at J: zero velocity, acceleration a_C + α×CJ + ω×(ω×CJ)
     w, al, cj = W * k + s * a, W1 * k + s1 * a + np.cross(W * k, s * a), J - C
-    close(contact["body_b"]["acceleration"],
+    assert_close(contact["body_b"]["acceleration"],
           np.cross(W1 * k, C) - W ** 2 * C * [1, 1, 0] + np.cross(al, cj) + np.cross(w, np.cross(w, cj)))
 
 
@@ -156,10 +156,10 @@ def test_coin_on_a_ceiling_touches_with_its_top_point():
                 "drivers": [{"omega": "wheel", "value": [0, 2, 0]}],
                 "ask": [{"contact": "roll"}]}
         sol = solve(tree)
-        close(answers(sol)[0][1]["point"], (0, 0, 1))
+        assert_close(answers(sol)[0][1]["point"], (0, 0, 1))
         # turning about +y under a ceiling, it rolls towards -x: v_C = -(w R) x
-        close(sol.velocity("C"), (-0.4, 0, 0))
-        close(sol.acceleration("C"), (0, 0, 0))
+        assert_close(sol.velocity("C"), (-0.4, 0, 0))
+        assert_close(sol.acceleration("C"), (0, 0, 0))
 
 
 def test_the_rolling_coin_from_python():
@@ -177,9 +177,9 @@ def test_the_rolling_coin_from_python():
     m.drive_joint(turn, 3, 0.5)
     built, read = m.solve(), solve(EXAMPLES / "coin_rolling.yaml")
     for body in ("heading", "coin"):
-        close(built.omega(body), read.omega(body))
-        close(built.alpha(body), read.alpha(body))
-    close(built.acceleration("J@coin"), read.acceleration("J@coin"))
+        assert_close(built.omega(body), read.omega(body))
+        assert_close(built.alpha(body), read.alpha(body))
+    assert_close(built.acceleration("J@coin"), read.acceleration("J@coin"))
 
 
 def test_symbolic_lean_gives_plain_formulas_without_absolute_values():

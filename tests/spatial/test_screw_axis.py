@@ -10,7 +10,7 @@ from hypothesis import given
 from kinematika import solve
 from kinematika.api import answers
 
-from .derive import EXAMPLES, close
+from .derive import EXAMPLES, assert_close
 from .test_chains import chain_tree, chains, expected_motion, point_motion
 
 
@@ -32,12 +32,12 @@ def test_helical_motion_of_a_nut(turn, advance):
     a = np.array([1, 2, 0.5])
     (_, ax), (_, v_q) = answers(solve(nut_on_a_screw(turn, advance)))
     # the screw's axis itself: its point nearest the origin, ω̂ = sign(turn) d
-    close(ax["point"], a - (a @ d) * d)
-    close(ax["direction"], np.sign(turn) * d)
+    assert_close(ax["point"], a - (a @ d) * d)
+    assert_close(ax["direction"], np.sign(turn) * d)
     assert ax["omega"] == pytest.approx(abs(turn))
     assert ax["slide"] == pytest.approx(np.sign(turn) * advance)
     # by hand: v_Q = advance d + turn d × (Q − A)
-    close(v_q, advance * d + turn * np.cross(d, np.array([2, 1, 0]) - a))
+    assert_close(v_q, advance * d + turn * np.cross(d, np.array([2, 1, 0]) - a))
 
 
 def test_translating_and_resting_bodies():
@@ -49,7 +49,7 @@ def test_translating_and_resting_bodies():
             "ask": [{"axis": "slider"}, {"axis": "still"}]}
     (_, moving), (_, still) = answers(solve(tree))
     assert moving["point"] is None and moving["omega"] == 0
-    close(moving["direction"], (0, -0.6, -0.8))
+    assert_close(moving["direction"], (0, -0.6, -0.8))
     assert moving["slide"] == pytest.approx(2)
     assert still == {"point": None, "direction": None, "omega": 0, "slide": 0, "rest": True}
 
@@ -58,8 +58,8 @@ def test_relative_screw_axis_of_the_fan_blades():
     """Seen from the motor block the blades turn about the hub axis BC (+x through B)."""
     sol = solve(EXAMPLES / "fan_composition.yaml")
     ax = answers(sol)[5][1]
-    close(ax["point"], (0, 0, 0))
-    close(ax["direction"], (1, 0, 0))
+    assert_close(ax["point"], (0, 0, 0))
+    assert_close(ax["direction"], (1, 0, 0))
     assert ax["omega"] == pytest.approx(0.5)
     assert ax["slide"] == pytest.approx(0, abs=1e-12)
 
@@ -78,11 +78,11 @@ def test_screw_axis_properties_on_random_chains(chain):
             continue
         p = np.array(ax["point"], dtype=float)
         u = np.array(ax["direction"], dtype=float)
-        close(u, w / size, 1e-7)
+        assert_close(u, w / size, 1e-7)
         assert float(ax["omega"]) == pytest.approx(size, rel=1e-7)
         assert abs(p @ u) < 1e-7 * max(1.0, np.linalg.norm(p))
         v_p, _ = point_motion(first, second, p)
-        close(np.cross(v_p, u), (0, 0, 0), 1e-7)
+        assert_close(np.cross(v_p, u), (0, 0, 0), 1e-7)
         assert float(ax["slide"]) == pytest.approx(v_origin @ u, rel=1e-7, abs=1e-9)
         tip = tips[i]
         assert float(ax["slide"]) == pytest.approx(point_motion(first, second, tip)[0] @ u,
@@ -109,4 +109,4 @@ def test_a_point_of_the_nut_runs_on_a_helix():
     expected = (turn ** 2 * rho ** 2 + advance ** 2) / (turn ** 2 * rho)
     curv = answers(solve(tree))[0][1]
     assert curv["radius"] == pytest.approx(expected)
-    close(curv["center"], q - expected * radial / rho)
+    assert_close(curv["center"], q - expected * radial / rho)
