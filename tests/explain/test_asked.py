@@ -7,6 +7,9 @@ from __future__ import annotations
 
 import pytest
 
+import kinematika
+
+from kinematika.explain import build, render
 from kinematika.explain.document import CentreNote, Derived, Equation, Section
 from kinematika.questions import answer
 
@@ -115,6 +118,20 @@ def test_velocities_asked_stop_at_velocities():
     assert "sec.velocities" in keys and "sec.accelerations" not in keys
     summary = next(s for s in doc.sections if s.title.key == "sec.rates_summary_v")
     assert [h.key for h in summary.blocks[0].header] == ["col.body", "col.omega"]
+
+
+@pytest.mark.parametrize("lang", ["en", "es", "ca", "eu"])
+def test_a_spatial_model_asked_velocities_states_no_acceleration(lang, tmp_path):
+    """The robot arm asked ω of the arm and v_E only: its angular rates are ω = ω_drag +
+    ω_rel body by body, with no α, no loop's α and no acceleration step, in every language."""
+    text = (EXAMPLES / "robot_arm_3d.yaml").read_text()
+    path = tmp_path / "robot_v.yaml"
+    path.write_text(text[:text.index("ask:")] + "ask:\n  - {omega: arm}\n  - {velocity: E}\n")
+    doc = build(kinematika.solve(path))
+    keys = [s.title.key for s in doc.sections]
+    assert "sec.rates_summary_v" in keys and "sec.rates" not in keys and "sec.accelerations" not in keys
+    page = render(doc, lang, "md", drawings=False)
+    assert "α" not in page and "ω" in page
 
 
 def test_a_crowded_acceleration_polygon_is_drawn_step_by_step():

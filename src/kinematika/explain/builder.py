@@ -60,7 +60,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
         doc.sections.append(centres_section(ctx))
     else:
         doc.sections.append(structure_section(ctx, []))
-        doc.sections.append(rates_section(ctx))
+        doc.sections.append(rates_section(ctx, accel))
         doc.sections += [fields_section(ctx, level) for level in wanted]
     extra = [composition_section(ctx, composition_pairs(ctx)), curvature_section(ctx)]
     doc.sections += [s for s in extra if s is not None]

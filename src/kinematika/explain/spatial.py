@@ -35,30 +35,36 @@ def carriers(ctx: Ctx) -> list[tuple[str, Optional[str], Optional[str]]]:
     return out
 
 
-def rates_section(ctx: Ctx) -> Section:
-    """ω = ω_carrier + ω_rel and α = α_carrier + α_rel + ω_carrier × ω_rel, body by body."""
-    sec = Section(msg("sec.rates"))
+def rates_section(ctx: Ctx, accel: bool = True) -> Section:
+    """ω = ω_carrier + ω_rel and α = α_carrier + α_rel + ω_carrier × ω_rel, body by body
+    (the angular velocities only when nothing asked needs accelerations, as the notes stop)."""
+    sec = Section(msg("sec.rates" if accel else "sec.rates_summary_v"))
     vec = not ctx.planar
     # in words, drag and relative: indices 1, 2 would read as bodies (the frame is body 1)
     w1, w2 = Sym("ω", sub_key="sub.drag", vector=vec), Sym("ω", sub_key="sub.rel", vector=vec)
     a1, a2 = Sym("α", sub_key="sub.drag", vector=vec), Sym("α", sub_key="sub.rel", vector=vec)
-    sec.add(msg("rates.intro", w=Inline([omega_sym("", vector=vec), " = ", w1, " + ", w2]),
-                a=Inline([alpha_sym("", vector=vec), " = ", a1, " + ", a2, " + ", w1, " × ", w2])))
-    sec.blocks += loop_blocks(ctx)
+    w = Inline([omega_sym("", vector=vec), " = ", w1, " + ", w2])
+    if accel:
+        sec.add(msg("rates.intro", w=w, a=Inline([alpha_sym("", vector=vec), " = ", a1, " + ", a2, " + ", w1,
+                                                  " × ", w2])))
+    else:
+        sec.add(msg("rates.intro_v", w=w))
+    levels = ("w", "al") if accel else ("w",)
+    sec.blocks += loop_blocks(ctx, levels)
+    rates = ((omega_sym, ctx.omega, "rate", "omega"), (alpha_sym, ctx.alpha, "rate2", "alpha"))[:len(levels)]
     for body, parent, _ in carriers(ctx):
         if parent is None:
             continue
         if parent == ctx.frame:
             sec.add(*[Derived(sym(body, vector=vec), [], Value(_rot(ctx, get(body), unit), unit), body, kind)
-                      for sym, get, unit, kind in ((omega_sym, ctx.omega, "rate", "omega"),
-                                                   (alpha_sym, ctx.alpha, "rate2", "alpha"))])
+                      for sym, get, unit, kind in rates])
             continue
-        for level in ("w", "al"):
+        for level in levels:
             sec.blocks.append(_rate_equation(ctx, body, parent, level, vec))
     return sec
 
 
-def loop_blocks(ctx: Ctx) -> list:
+def loop_blocks(ctx: Ctx, levels: tuple[str, ...] = ("w", "al")) -> list:
     """Closed loops of revolute joints: the relative angular velocities add to zero around
     the loop, each along its joint's axis (three scalar equations for the unknown rates);
     differentiated, α_rel + ω_carrier × ω_rel add to zero too."""
@@ -84,7 +90,7 @@ def loop_blocks(ctx: Ctx) -> list:
         out.append(msg("loop.intro", bodies=Names([Name(b, "body") for b, _, _ in loop]),
                        rate=Sym("ω", "j", vector=False), axis=Sym("u", "j")))
         driven = {d.joint for d in model.drivers if d.kind == "joint"}
-        for level in ("w", "al"):
+        for level in levels:
             if level == "al":
                 out.append(msg("loop.solve_alpha", cross=Inline([Sym("ω", ""), " × ", Sym("ω", "", sub_key="sub.rel")]),
                                rate=Sym("α", "j", vector=False)))
@@ -170,7 +176,7 @@ def _rot(ctx: Ctx, value, unit: str):
 def fields_section(ctx: Ctx, level: str) -> Section:
     """Every point from its body's joint point: v_P = v_C + ω × CP (a_P likewise)."""
     sec = Section(msg("sec.velocities" if level == "v" else "sec.accelerations"))
-    sec.add(msg("fields.intro"))
+    sec.add(msg("fields.intro_v" if level == "v" else "fields.intro_a"))
     done: set[str] = set()
     order = carriers(ctx)
     order = [c for c in order if c[2]] + [c for c in order if not c[2]]   # joint points first
