@@ -197,13 +197,23 @@ def test_an_angle_in_radians_meant_as_degrees_is_answered_with_a_warning(page):
                                                                       abs=1e-9)
 
 
-def test_dragging_a_point_changes_the_text(page):
+def handle_centre(page, point: str) -> tuple[float, float]:
+    """Where the figure draws the drag handle of `point`: its box's centre on the screen."""
+    box = page.locator(f'[data-testid=figure] [data-handle="{point}"]').bounding_box()
+    return box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+
+
+def grab(page, point: str) -> tuple[float, float]:
+    """At the sweep's first row, the pointer pressed on the handle of `point` (where it is)."""
     set_row(page, 0)
-    dot = page.locator('[data-testid=figure] [data-handle="A"]')
-    box = dot.bounding_box()
-    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    x, y = handle_centre(page, point)
     page.mouse.move(x, y)
     page.mouse.down()
+    return x, y
+
+
+def test_dragging_a_point_changes_the_text(page):
+    x, y = grab(page, "A")
     page.mouse.move(x + 20, y - 30, steps=6)
     page.mouse.up()
     page.wait_for_function("() => !document.querySelector('[data-testid=model-editor]').value.includes('theta2: deg(90)')")
@@ -447,12 +457,7 @@ def test_a_slow_drag_ends_under_the_pointer(page):
     drag holds the pointer through every redraw, and at the end A is drawn under the
     pointer (the view is kept while dragging), its text changed through the crank's
     parameters (a, theta2), never replaced by numbers."""
-    set_row(page, 0)
-    dot = page.locator('[data-testid=figure] [data-handle="A"]')
-    box = dot.bounding_box()
-    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
-    page.mouse.move(x, y)
-    page.mouse.down()
+    x, y = grab(page, "A")
     for i in range(1, 31):
         page.mouse.move(x + 2 * i, y - 1.5 * i)
         page.wait_for_timeout(500)                 # the hand hesitates; the page re-solves
@@ -460,8 +465,7 @@ def test_a_slow_drag_ends_under_the_pointer(page):
     page.wait_for_function("() => !window.kinematika.figure.drag && document.getElementById('busy').hidden",
                            timeout=BROWSER_WAIT)
     ready(page)
-    end = page.locator('[data-testid=figure] [data-handle="A"]').bounding_box()
-    cx, cy = end["x"] + end["width"] / 2, end["y"] + end["height"] / 2
+    cx, cy = handle_centre(page, "A")
     assert math.hypot(cx - (x + 60), cy - (y - 45)) < 3, (cx, cy, x + 60, y - 45)
     text = page.get_by_test_id("model-editor").input_value()
     assert "A: {from: O2, distance: a, angle: theta2}" in text
