@@ -227,9 +227,18 @@ def _number_bodies(scene: Scene, always: bool = False) -> None:
     if not always and not any(numbered(text) for text in labels):
         return
     scene.numbered = True
-    order = ", ".join(f"{b.number} {b.label or b.name}" for b in sorted(scene.bodies.values(),
-                                                              key=lambda b: b.number))
-    scene.notes.insert(0, f"bodies: {order}")
+    scene.notes.insert(0, numbering_note(scene))
+
+
+def numbering(scene: Scene) -> list[tuple[int, str]]:
+    """The bodies' numbers with the names the figure gives them (their label, else their
+    name), in order."""
+    return [(b.number, b.label or b.name) for b in sorted(scene.bodies.values(), key=lambda b: b.number)]
+
+
+def numbering_note(scene: Scene) -> str:
+    """The note under a figure that numbers its bodies: 'bodies: 1 ground, 2 crank, …'."""
+    return "bodies: " + ", ".join(f"{n} {name}" for n, name in numbering(scene))
 
 
 def drawing_values(inst: Instant) -> dict:

@@ -17,7 +17,7 @@ from typing import Any, Optional
 import numpy as np
 
 from ..draw import style
-from ..draw.scene import Scene
+from ..draw.scene import Scene, numbering, numbering_note
 
 
 
@@ -43,10 +43,8 @@ def scene_data(scene: Scene, twin: Optional[Scene] = None) -> dict[str, Any]:
         "numbered": bool(getattr(scene, "numbered", False)),
         "curvatures": [{**_plain(c), "label": runs(c.label)} for c in scene.curvatures],
         "axes": [_plain(a) for a in scene.axes],
-        "notes": [_unmath(n) for n in scene.notes if n != _numbering_note(scene)],
-        "numbering": [[b.number, name] for name, b in sorted(scene.bodies.items(),
-                                                             key=lambda kv: kv[1].number)]
-        if getattr(scene, "numbered", False) else [],
+        "notes": [_unmath(n) for n in scene.notes if n != numbering_note(scene)],
+        "numbering": [list(pair) for pair in numbering(scene)] if getattr(scene, "numbered", False) else [],
         "style": STYLE,
     }
     if twin is not None:
@@ -62,13 +60,6 @@ def joint_symbols(scene: Scene) -> list[dict[str, Any]]:
 
     view = Box(*scene.box).grow(0.6 * scene.size)
     return [m.as_json() for m in scene_symbols(scene, view)]
-
-
-def _numbering_note(scene: Scene) -> str:
-    """The note that lists the bodies' numbers (the page writes it in its own language)."""
-    order = ", ".join(f"{b.number} {b.name}" for b in sorted(scene.bodies.values(),
-                                                              key=lambda b: b.number))
-    return f"bodies: {order}"
 
 
 def depth_twin(scene: Scene, sol: Any, options: Any) -> Scene:
