@@ -16,10 +16,10 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from ..algebra.vectors import dot, sub
 from ..errors import KinematikaError
 from ..shapes import Circle, Curve
 from . import symbols
+from .derivatives import sliding
 from .base import JointGeometry, JointKind, Rows
 from .touching import Follow, Point, find_touch, touch_row
 
@@ -82,13 +82,10 @@ class CurvedSlot(JointKind):
 
     def rate(self, geo: JointGeometry, lv: Any) -> Any:
         """The pin's speed along the slot, (v_P − v_P∈a)·t (at the acceleration level the
-        tangential relative acceleration plus the Coriolis term's part along t)."""
+        tangential relative acceleration plus the Coriolis term's part along t):
+        `derivatives.sliding` along the slot's tangent at the pin."""
         j = geo.joint
-        row = dot(sub(lv.point(j.b, geo.at), lv.point(j.a, geo.at)), geo.along)
-        if lv.accel:
-            v_rel = sub(lv.v(j.b, geo.at), lv.v(j.a, geo.at))
-            row = row + 2 * dot(v_rel, lv.space.cross(lv.w(j.a), geo.along))
-        return row
+        return sliding(lv, j.a, j.b, geo.at, geo.along)
 
     def add(self, m: Any, a: str, b: str, at: str, id: Optional[str] = None) -> str:
         """Point `at` of `b` slides in a slot of `a` along a's circle or curve."""
