@@ -134,6 +134,16 @@ def test_a_spatial_model_asked_velocities_states_no_acceleration(lang, tmp_path)
     assert "α" not in page and "ω" in page
 
 
+def test_an_inflection_circle_asked_alone_is_explained_with_accelerations(tmp_path):
+    """The inflection circle is where the normal acceleration vanishes (a_I/ω²): a four-bar
+    asked only {inflection: coupler} is explained up to its accelerations."""
+    text = (EXAMPLES / "four_bar.yaml").read_text()
+    path = tmp_path / "inflection.yaml"
+    path.write_text(text[:text.index("ask:")] + "ask:\n  - {inflection: coupler}\n")
+    keys = [s.title.key for s in build(kinematika.solve(path)).sections]
+    assert "sec.velocities" in keys and "sec.accelerations" in keys
+
+
 def test_a_crowded_acceleration_polygon_is_drawn_step_by_step():
     """The planetary gears' acceleration polygon would hold more than SPLIT arrows: it is
     drawn under each step instead (fig.step_a), with no whole polygon at the level's end."""

@@ -10,7 +10,7 @@ from typing import Any, Optional
 
 import numpy as np
 
-from ..model.model import PointRef
+from ..model.model import POINT_QUESTIONS, PointRef
 from ..questions import answer
 from .options import DrawOptions
 from .geometry import perpendicular
@@ -19,7 +19,6 @@ from .names import (bare, body_numbers, contact_name, equation, formula, pair_sy
 from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView,
                     vector_label)
 
-POINT_QUESTIONS = ("velocity", "acceleration", "curvature", "intrinsic", "decompose")
 KINDS = ("velocity", "acceleration")
 
 

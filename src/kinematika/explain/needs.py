@@ -10,12 +10,10 @@ stay. A model without questions asks for everything, and keeps everything.
 """
 from __future__ import annotations
 
+from ..model.model import ACCELERATION_QUESTIONS, POINT_QUESTIONS
 from .context import Ctx
 from .document import CentreNote, Document, Equation, Section
 
-POINT_QUESTIONS = ("velocity", "acceleration", "curvature", "intrinsic", "decompose")
-# the questions whose answers need accelerations (a composition and a contact question give both)
-ACCELERATION_QUESTIONS = ("acceleration", "alpha", "curvature", "intrinsic", "decompose", "contact", "pole")
 LEVELS = ("sec.velocities", "sec.accelerations")
 
 

@@ -189,6 +189,12 @@ class Driver:
 # the kinds of question, each a key of a question in a model file (`ask:`)
 QUESTION_KINDS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose",
                   "contact", "axis", "pole", "intrinsic", "inflection")
+# the questions about a point (their target names one) ...
+POINT_QUESTIONS = ("velocity", "acceleration", "curvature", "intrinsic", "decompose")
+# ... and those whose answers need accelerations (a composition and a contact question give
+# both; an inflection circle is where the normal acceleration vanishes)
+ACCELERATION_QUESTIONS = ("acceleration", "alpha", "curvature", "intrinsic", "decompose", "contact", "pole",
+                          "inflection")
 
 
 @dataclass

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..algebra.vectors import add, dot, scale, sub
+from ..algebra.vectors import add, dot, scale
 from ..model.model import Question
 from ..solution import Solution
 from .icr import instant_centre
@@ -36,9 +36,8 @@ def inflection(sol: Solution, q: Question) -> dict[str, Any]:
                 **({"rest": True} if centre.get("rest") else {"translation": True})}
     i = centre["point"]
     state = sol.state(q.name, q.relative_to)
-    w, al = state.omega, state.alpha
-    r = sub(i, sol.motion.ref)
-    a_i = add(state.a0, (-al * r[1] - w * w * r[0], al * r[0] - w * w * r[1]))   # a₀ + α k × r − ω² r
+    w = state.omega
+    a_i = sol.motion.acceleration(state, i)          # a₀ + α k × r − ω² r, r = I − ref
     if sol.is_zero(a_i, sol.accel_scale()):
         zero = (0, 0)
         return {"pole": i, "center": i, "diameter": 0, "inflection_pole": i, "pole_tangent": None,

@@ -22,8 +22,6 @@ from .tree import Tree, degrees, name_of, number
 
 ACTIONS = ("add", "set", "delete", "drive", "ask")
 QUESTIONS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose")
-POINT_QUESTIONS = ("velocity", "acceleration", "curvature")
-BODY_QUESTIONS = ("omega", "alpha", "icr")
 # the words new bodies are named with, per language (a name is an identifier in the text)
 NAMES = {
     "en": {"link": "link", "slider": "slider", "wheel": "wheel", "gear": "gear"},
