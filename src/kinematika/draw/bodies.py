@@ -16,7 +16,8 @@ from .geometry import clip_line, clip_segment, convex_hull, perpendicular
 from ..model.wording import noun
 from .names import plain
 from .scene import BodyView, ShapeView
-from .style import BAR_WIDTH, GROUND, HATCH_BAND, INK, POINT_LABEL
+from ..joints.symbols import HATCH_BAND
+from .style import BAR_WIDTH, GROUND, INK, POINT_LABEL
 
 
 def paint_bodies(cv: Canvas) -> None:

@@ -20,16 +20,11 @@ BODY_COLOURS = ("#78909c", "#c49a3a", "#8d6e63", "#5f8a8b", "#b0855c", "#9e9d24"
 KIND_COLOURS = {"velocity": VELOCITY, "acceleration": ACCELERATION}
 
 BAR_WIDTH = 7.0             # points
-PIN_SIZE = 7.5              # marker size of a revolute pin, points
 LABEL_SIZE = 9.0            # font size of labels
 TITLE_SIZE = 12.0
 
 LONGEST = 0.33              # the longest vector of each kind, as a fraction of the drawing size
 SHORTEST = 0.07             # the shortest drawn vector (shorter ones are enlarged to this)
-SUPPORT = 0.045             # size of a fixed-pivot symbol
-BLOCK = (0.11, 0.06)        # slider block: length and height
-SLOT_WIDTH = 0.035
-HATCH_BAND = 0.03
 
 
 def body_colour(number: int) -> str:

@@ -18,6 +18,7 @@ import numpy as np
 
 from ..draw import style
 from ..draw.scene import Scene, numbering, numbering_note
+from ..joints.symbols import HATCH_BAND
 
 
 
@@ -104,8 +105,7 @@ def _add_model_coordinates(data: dict, scene: Scene, twin: Scene) -> None:
 STYLE = {"velocity": style.VELOCITY, "acceleration": style.ACCELERATION, "centre": style.CENTRE,
          "curvature": style.CURVATURE, "ground": style.GROUND, "ink": style.INK,
          "point_label": style.POINT_LABEL, "longest": style.LONGEST, "shortest": style.SHORTEST,
-         "support": style.SUPPORT, "block": list(style.BLOCK), "slot_width": style.SLOT_WIDTH,
-         "hatch_band": style.HATCH_BAND}
+         "hatch_band": HATCH_BAND}
 
 
 def runs(label: str) -> list[dict[str, str]]:
