@@ -33,7 +33,7 @@ export class Answers {
     });
     rows.push(section(t("body"), t("angle-h"), t("rotation-h"), t("omega-h"), t("alpha-h")));
     for (const [name, b] of Object.entries(solution.bodies)) {
-      const line = scene && referenceLine(scene.bodies[name]);
+      const line = scene && referenceLine(scene.bodies[name], scene.bodies);
       const sw = sweep && sweep.bodies[name];
       const planar = typeof b.omega === "number" || typeof b.omega === "string";
       const a = `bodies.${attr(name)}`;
@@ -116,14 +116,18 @@ function section(...heads) {
 
 const round = (x) => Number(x.toFixed(9));
 
-/** A body's reference line: from its first point to the first other point drawn elsewhere
- * (a link's O2 → A); its angle from the x axis, counter-clockwise, in (−180°, 180°]. */
-function referenceLine(body) {
+/** A body's reference line, as the sweep plots measure it (`draw.plots.body_angle`): from
+ * its fixed pivot (a point the frame carries there too), else its first point, to the first
+ * other point drawn elsewhere (a rocker's O4 → B); its angle from the x axis,
+ * counter-clockwise, in (−180°, 180°]. */
+function referenceLine(body, bodies) {
   if (!body || body.frame) return null;
   const pts = Object.entries(body.points);
   if (pts.length < 2 || pts[0][1].length !== 2) return null;
-  const [from, p] = pts[0];
-  const size = Math.max(...pts.map(([, q]) => Math.hypot(q[0] - p[0], q[1] - p[1])));
+  const size = Math.max(...pts.map(([, q]) => Math.hypot(q[0] - pts[0][1][0], q[1] - pts[0][1][1]))) || 1;
+  const frame = Object.values(bodies || {}).find((b) => b.frame);
+  const at = (name, q) => frame && frame.points[name] && Math.hypot(frame.points[name][0] - q[0], frame.points[name][1] - q[1]) <= 1e-9 * size;
+  const [from, p] = pts.find(([name, q]) => at(name, q)) || pts[0];
   const other = pts.find(([, q]) => Math.hypot(q[0] - p[0], q[1] - p[1]) > 1e-9 * size);
   if (!other) return null;
   const q = other[1];
