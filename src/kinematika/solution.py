@@ -80,7 +80,7 @@ class Solution:
             if not isinstance(name, str) or name not in self.model.bodies:
                 raise KinematikaError("schema", f"unknown body {name!r} (bodies: "
                                       f"{', '.join(self.model.bodies)})")
-        frame = None if relative_to in (None, self.model.frame) else relative_to
+        frame = self.frame_of(relative_to)
         if self.exact is not None and frame is not None:
             return self.exact.state(body, frame)
         return self.motion.state(body, frame)
