@@ -41,11 +41,6 @@ def geometric_point(name: str) -> Sym:
     return Sym(name, "", "geom", vector=False, fixed=True)
 
 
-def _cross(w: Any, r: tuple) -> tuple:
-    """ω k × r in the plane."""
-    return (-w * r[1], w * r[0])
-
-
 def _rate_of(ctx: Ctx, r: tuple, dv: tuple) -> Any:
     """ω with dv = ω k × r: (r × dv)·k / |r|²."""
     value = (r[0] * dv[1] - r[1] * dv[0]) / (r[0] ** 2 + r[1] ** 2)
@@ -110,12 +105,12 @@ class Bar:
         name = segment(p, q)
         if level == "v":
             mag = Ann("?") if unknown else Ann("M", [self.sym, f"·{seg}"])
-            return [Term(Sym("v", name), ctx.clean(_cross(self.omega, r), "speed"), mag, Ann("perp", seg),
+            return [Term(Sym("v", name), ctx.clean(ctx.space.cross(self.omega, r), "speed"), mag, Ann("perp", seg),
                          [self.sym, f" × {seg}"], unknown, "rotation")]
         normal = scale(-self.omega ** 2, r)
         return [Term(Sym("a", name, "n"), ctx.clean(normal, "accel"), Ann("M", [self.sym, f"²·{seg}"]),
                      Ann("para", back), [self.sym, f"² · {back}"], False, "normal"),
-                Term(Sym("a", name, "t"), ctx.clean(_cross(self.alpha, r), "accel"),
+                Term(Sym("a", name, "t"), ctx.clean(ctx.space.cross(self.alpha, r), "accel"),
                      Ann("?") if unknown else Ann("M", [self.alpha_sym, f"·{seg}"]), Ann("perp", seg),
                      [self.alpha_sym, f" × {seg}"], unknown, "tangential")]
 
@@ -156,11 +151,6 @@ class Bar:
         arm = self.rotation(level, self.c1, self.name, False)
         moved = add(start.value, arm[0].value) if level == "v" else add(start.value, add(arm[0].value, arm[1].value))
         return ctx.clean(moved, "speed" if level == "v" else "accel")
-
-    def velocity(self) -> tuple:
-        """v_J^geom as the equations above give it."""
-        ctx, r = self.ctx, self.ctx.r(self.c1, self.name)
-        return ctx.clean(add(ctx.vel(self.b1, self.c1), _cross(self.omega, r)), "speed")
 
 
 def geometric_blocks(ctx: Ctx, j, done: set, pair: Optional[tuple[str, str]] = None) -> list:
