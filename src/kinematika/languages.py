@@ -7,9 +7,9 @@ from .errors import KinematikaError
 LANGS = ("en", "es", "ca", "eu")
 
 
-def known(lang: str) -> str:
-    """`lang` when it is one of LANGS, else the one-line error naming `--lang`."""
+def known(lang: str, where: str = "--lang", kind: str = "schema") -> str:
+    """`lang` when it is one of LANGS, else the one-line error of `kind` naming its place
+    `where` (an option, a model's key such as ``names.fr``, a request's field)."""
     if lang not in LANGS:
-        raise KinematikaError("schema", f"unknown language {lang!r} (languages: {', '.join(LANGS)})",
-                              "--lang")
+        raise KinematikaError(kind, f"unknown language {lang!r} (languages: {', '.join(LANGS)})", where)
     return lang

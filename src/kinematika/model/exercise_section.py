@@ -22,7 +22,7 @@ from fractions import Fraction
 from typing import Any, Optional
 
 from ..errors import KinematikaError
-from ..languages import LANGS
+from ..languages import known
 from .model import Parameter
 
 PLACEHOLDER = re.compile(r"\{(\w+)\}")
@@ -111,14 +111,11 @@ def exercise_section(raw: Any, params: dict[str, Parameter], questions: int,
     if raw is None:
         return None
     for lang in raw.title:
-        if lang not in LANGS:
-            raise KinematikaError("schema", f"unknown language {lang!r} (languages: {', '.join(LANGS)})",
-                                  f"exercise.title.{lang}")
+        known(lang, f"exercise.title.{lang}")
     statement = {}
     for lang, text in raw.statement.items():
         where = f"exercise.statement.{lang}"
-        if lang not in LANGS:
-            raise KinematikaError("schema", f"unknown language {lang!r} (languages: {', '.join(LANGS)})", where)
+        known(lang, where)
         for name in PLACEHOLDER.findall(text):
             if name not in params:
                 raise KinematikaError("schema", f"{{{name}}} is not a parameter (parameters: "

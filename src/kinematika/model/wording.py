@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 from typing import Any, Optional
 
 from ..errors import KinematikaError
-from ..languages import LANGS             # the explanations' languages (each has a catalogue)
+from ..languages import known             # the explanations' languages (each has a catalogue)
 
 # the articles a name may begin with in Catalan and Spanish (`names.ca.bodies: {carrier: el
 # portador}`): texts contract them with a preposition (del portador), figures leave them out
@@ -131,8 +131,7 @@ def read_wording(names: Any, notation: Any, bodies: dict, points: dict, paramete
 
 
 def _language(lang: str, where: str) -> None:
-    if lang not in LANGS:
-        raise KinematikaError("schema", f"unknown language {lang!r} (languages: {', '.join(LANGS)})", where)
+    known(lang, where)
 
 
 def _text(text: str, where: str) -> str:

@@ -14,7 +14,7 @@ from typing import Any
 
 from ..errors import KinematikaError
 from ..explain.catalogue import VARIABLE, Catalogue
-from ..languages import LANGS
+from ..languages import known
 from ..numerals import decimal_sign
 
 LOCALES = Path(__file__).resolve().parent / "locales"
@@ -23,9 +23,7 @@ LOCALES = Path(__file__).resolve().parent / "locales"
 @lru_cache(maxsize=None)
 def page_catalogue(lang: str) -> Catalogue:
     """The page's catalogue of `lang`."""
-    if lang not in LANGS:
-        raise KinematikaError("usage", f"unknown language {lang!r} (languages: {', '.join(LANGS)})",
-                              "lang")
+    known(lang, "lang", "usage")
     return Catalogue(lang, (LOCALES / f"{lang}.ftl").read_text(encoding="utf-8"))
 
 
