@@ -98,4 +98,4 @@ def paint_mark(cv: Canvas, m: Mark) -> None:
         if m.kind == "dot":
             cv.board.avoid(pts[0], weight=m.avoid, radius=m.radius)
         else:
-            cv.board.avoid(*pts, pts[0], weight=m.avoid) if m.avoid != 1.0 else cv.board.avoid(*pts, pts[0])
+            cv.board.avoid(*pts, pts[0], weight=m.avoid)
