@@ -42,6 +42,7 @@ def cam(
     def compute() -> dict:
         from ..cams import CamAnalysis, export
         from ..draw import cam_plots as figures
+        from ..draw.figure import save
         from ..model.files import load_cam as load
 
         targets = {opt: output_file(p, opt) for opt, p in
@@ -54,8 +55,8 @@ def cam(
             "--csv": lambda p: export.write_csv(analysis, p),
             "--svg": lambda p: export.write_svg(analysis, p, design.units),
             "--dxf": lambda p: export.write_dxf(analysis, p, design.units),
-            "--plot": lambda p: figures.save(figures.svaj_figure(analysis, design.units, design.title), p),
-            "--drawing": lambda p: figures.save(figures.profile_figure(analysis, design.units, design.title), p),
+            "--plot": lambda p: save(figures.svaj_figure(analysis, design.units, design.title), p, dpi=120),
+            "--drawing": lambda p: save(figures.profile_figure(analysis, design.units, design.title), p, dpi=120),
         }
         for option, path in targets.items():
             with writing(path, option):

@@ -9,7 +9,6 @@ velocity or acceleration (the fundamental law broken) marked in red with its siz
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -17,11 +16,9 @@ from matplotlib.figure import Figure
 
 from ..cams.analysis import CamAnalysis
 from ..cams.profile import PlateCam
-from .lock import MATPLOTLIB
 
 
 
-FORMATS = ("png", "svg", "pdf")
 JUMP = "#d62728"
 
 
@@ -175,17 +172,3 @@ def _worst_pressure(ax, analysis: CamAnalysis, units: str) -> None:
     ax.plot([p[0]], [p[1]], marker="o", color="#ff7f0e", markersize=6,
             label=f"largest pressure angle {math.degrees(phi[i]):.1f}° at {analysis.angle[i]:.1f}"
                   + ("" if isinstance(analysis.cam, PlateCam) else "°"))
-
-
-def save(fig: Figure, path: Path) -> Path:
-    """Write a figure as PNG, SVG or PDF (by the suffix), under the process's matplotlib lock."""
-    path = Path(path)
-    fmt = path.suffix.lower().lstrip(".")
-    with MATPLOTLIB:
-        fig.savefig(path, format=fmt, dpi=120, facecolor="white", metadata=_metadata(fmt))
-    return path
-
-
-def _metadata(fmt: str) -> dict:
-    """No dates in the files: the same cam writes the same bytes."""
-    return {"svg": {"Date": None}, "pdf": {"CreationDate": None, "ModDate": None}}.get(fmt, {})

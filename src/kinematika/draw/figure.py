@@ -259,13 +259,15 @@ def _triad(fig: Figure, scene: Scene) -> None:
 
 
 def save(fig: Figure, path: Path | str, dpi: int = 110) -> Path:
-    """Write `fig` as PNG, SVG or PDF (by the file's suffix)."""
+    """Write `fig` as PNG, SVG or PDF (by the file's suffix), without a date in the file:
+    the same figure writes the same bytes."""
     path = Path(path)
     fmt = path.suffix.lower().lstrip(".")
     if fmt not in FORMATS:
         raise ValueError(f"cannot write {path.name!r}: give a .png, .svg or .pdf file")
+    undated = {"svg": {"Date": None}, "pdf": {"CreationDate": None, "ModDate": None}}.get(fmt, {})
     with MATPLOTLIB:
-        fig.savefig(path, format=fmt, dpi=dpi, facecolor="white")
+        fig.savefig(path, format=fmt, dpi=dpi, facecolor="white", metadata=undated)
     return path
 
 
