@@ -35,24 +35,34 @@ def read_tree(path: str | Path) -> Any:
                               f"not {type(path).__name__}")
     path = Path(path)
     where = str(path)
-    kind = FORMATS.get(path.suffix.lower())
-    if kind is None:
-        known = ", ".join(FORMATS)
-        raise KinematikaError("syntax", f"unknown file type {brief(path.suffix or '(none)', 20)}: "
-                              f"a model file ends in {known}", where)
-    data = read_bytes(path, where)
-    try:
-        text = data.decode("utf-8-sig")
-    except UnicodeDecodeError as err:
-        raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})",
-                              where) from None
-    if not text.strip() or (kind == "yaml" and _only_comments(text)):
+    text, kind = read_text(path, "a model file")
+    if kind == "yaml" and _only_comments(text):
         raise KinematikaError("syntax", "the file is empty", where)
     tree = parse_text(text, kind, where)
     if not isinstance(tree, dict):
         raise KinematikaError("schema", f"a model is a mapping with keys points, bodies, joints, "
                               f"drivers; this file holds {_kind_of(tree)}", where)
     return tree
+
+
+def read_text(path: Path, noun: str) -> tuple[str, str]:
+    """The text of a model or cam file and its kind (yaml, toml, json, by the suffix): at
+    most `limits.FILE_BYTES`, UTF-8 (a byte-order mark allowed), not blank; each refusal a
+    `syntax` error naming the file (`noun` says what such a file is)."""
+    where = str(path)
+    kind = FORMATS.get(path.suffix.lower())
+    if kind is None:
+        raise KinematikaError("syntax", f"unknown file type {brief(path.suffix or '(none)', 20)}: "
+                              f"{noun} ends in {', '.join(FORMATS)}", where)
+    data = read_bytes(path, where)
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as err:
+        raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})",
+                              where) from None
+    if not text.strip():
+        raise KinematikaError("syntax", "the file is empty", where)
+    return text, kind
 
 
 def read_bytes(path: Path, where: str) -> bytes:
@@ -393,17 +403,7 @@ def load_cam(path: str | Path) -> Any:
     from ..cams.spec import design, parse
 
     path = Path(path)
-    kind = FORMATS.get(path.suffix.lower())
-    if kind is None:
-        raise KinematikaError("syntax", f"unknown file type {brief(path.suffix or '(none)', 20)}: a cam file ends "
-                              f"in {', '.join(FORMATS)}", str(path))
-    data = read_bytes(path, str(path))
-    try:
-        text = data.decode("utf-8-sig")
-    except UnicodeDecodeError as err:
-        raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})", str(path)) from None
-    if not text.strip():
-        raise KinematikaError("syntax", "the file is empty", str(path))
+    text, kind = read_text(path, "a cam file")
     tree = parse_text(text, kind, str(path))
     if isinstance(tree, dict) and "bodies" in tree:
         return _model_cam(build_model(tree), str(path))
