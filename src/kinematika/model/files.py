@@ -414,8 +414,10 @@ def _model_cam(model: Model, where: str) -> Any:
     """The first cam shape of a model, at the speed its body is driven with (when a number)."""
     import dataclasses
 
-    from ..expressions import ExpressionError
+    from ..algebra.backend import Numeric
+    from ..expressions import ExpressionError, evaluate
     from .model import CamShape
+    from .overrides import numeric_parameters
 
     for body in model.bodies.values():
         for shape in body.shapes:
@@ -423,26 +425,9 @@ def _model_cam(model: Model, where: str) -> Any:
                 speed = shape.design.speed
                 for d in model.drivers:
                     if d.kind == "omega" and d.body == body.name and d.relative_to in (None, model.frame):
-                        env = {n: p.value for n, p in model.parameters.items()}
-                        with contextlib.suppress(ExpressionError, TypeError, ValueError):
-                            speed = abs(float(_number(d.value, env)))
+                        with contextlib.suppress(ExpressionError, TypeError, ValueError, ZeroDivisionError,
+                                                 OverflowError):
+                            speed = abs(float(evaluate(d.value, numeric_parameters(model), Numeric())))
                 return dataclasses.replace(shape.design, speed=speed, title=model.name)
     raise KinematikaError("schema", "this model has no cam: give a body a `cam:` shape", where)
 
-
-def _number(expr: Any, env: dict) -> float:
-    """An expression of the model evaluated with its parameters' values (numbers only)."""
-    import math
-
-    from ..algebra.backend import Numeric
-    from ..expressions import ExpressionError, evaluate
-
-    values: dict[str, Any] = {"pi": math.pi}
-    for _ in range(len(env) + 1):
-        for name, raw in env.items():
-            if name not in values and raw is not None:
-                try:
-                    values[name] = evaluate(raw, values, Numeric())
-                except (ExpressionError, TypeError, ValueError, ZeroDivisionError, OverflowError):
-                    continue
-    return float(evaluate(expr, values, Numeric()))

@@ -8,11 +8,12 @@ numeric model's crank angle becomes θ and the answers formulas in it.
 """
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 from typing import Mapping, Optional
 
 from ..errors import KinematikaError
-from ..expressions import ExpressionError, parse
+from ..expressions import ExpressionError, evaluate, parse
 from .model import Model, Parameter
 
 
@@ -39,3 +40,22 @@ def with_parameters(model: Model, values: Mapping[str, Optional[str]]) -> Model:
                                   f"{', '.join(params) or 'none'})", f"--set {name}")
         params[name] = Parameter(name, expr, params[name].positive)
     return dataclasses.replace(model, parameters=params)
+
+
+def numeric_parameters(model: Model) -> dict[str, float]:
+    """The parameters that evaluate to numbers (symbols and what depends on them left out),
+    each from those before it, in any order of writing."""
+    from ..algebra.backend import Numeric
+
+    env: dict[str, float] = {}
+    pending = {n: p for n, p in model.parameters.items() if p.value is not None}
+    progress = True
+    while pending and progress:
+        progress = False
+        for name, p in list(pending.items()):
+            if p.value.names() <= set(env) | {"pi"}:
+                with contextlib.suppress(ExpressionError, ValueError, OverflowError):
+                    env[name] = float(evaluate(p.value, env, Numeric()))
+                del pending[name]
+                progress = True
+    return env

@@ -15,8 +15,8 @@ from typing import Any, Mapping
 from ..errors import KinematikaError
 from ..expressions import Expr, ExpressionError, evaluate, parse
 from ..model.model import Model
+from ..model.overrides import numeric_parameters
 from .plan import driven_joints
-import contextlib
 
 DEGREES_PER_STEP = 1.0          # continuation steps of a revolute
 LENGTHS_PER_STEP = 0.02         # of a prismatic, in model sizes
@@ -48,31 +48,13 @@ def _amount(model: Model, raw: Any, where: str) -> float:
 
     try:
         expr = raw if isinstance(raw, Expr) else parse(raw)
-        value = float(evaluate(expr, _numeric_parameters(model), Numeric()))
+        value = float(evaluate(expr, numeric_parameters(model), Numeric()))
     except ExpressionError as err:
         raise KinematikaError("schema", f"{err} (a move is a number of degrees or lengths)",
                               where) from None
     if not math.isfinite(value):
         raise KinematikaError("schema", "a move is a finite number", where)
     return value
-
-
-def _numeric_parameters(model: Model) -> dict[str, float]:
-    """The parameters that evaluate to numbers (symbols and what depends on them left out)."""
-    from ..algebra.backend import Numeric
-
-    env: dict[str, float] = {}
-    pending = {n: p for n, p in model.parameters.items() if p.value is not None}
-    progress = True
-    while pending and progress:
-        progress = False
-        for name, p in list(pending.items()):
-            if p.value.names() <= set(env) | {"pi"}:
-                with contextlib.suppress(ExpressionError, ValueError, OverflowError):
-                    env[name] = float(evaluate(p.value, env, Numeric()))
-                del pending[name]
-                progress = True
-    return env
 
 
 def _check_driven(model: Model, jid: str, where: str) -> None:
