@@ -137,8 +137,8 @@ class JointKind:
 
     def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
         """The joint's geometry at a sweep's new pose, when it must be found anew there (a
-        contact that moves along its outlines; `hint` what the sweep remembers of it); None:
-        carried by its bodies as drawn."""
+        contact that moves along its outlines; `geo` is the geometry as its bodies carried
+        it, `hint` what the sweep remembers of it); None: carried by its bodies as drawn."""
         return None
 
     def rate(self, geo: JointGeometry, lv: Any) -> Any:

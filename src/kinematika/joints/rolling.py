@@ -9,6 +9,7 @@ a_J(b) − a_J(a) = ω_rel × (v_J(a) − J̇), J̇ the velocity of the geometri
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any, Optional
 
 from ..algebra.vectors import sub
@@ -41,6 +42,12 @@ class Rolling(JointKind):
         normal, and its motion J̇ for the acceleration rows)."""
         geo = super().prepare(inst, joint)
         geo.contact = find_contact(inst, joint)
+        return geo
+
+    def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
+        """The carried geometry with the contact found anew where the circles now touch (the
+        drawn contact point `at` does not travel with either body)."""
+        geo.contact = find_contact(inst, replace(geo.joint, at=None))
         return geo
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:

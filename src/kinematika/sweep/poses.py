@@ -14,7 +14,6 @@ from typing import Any, Optional
 
 import numpy as np
 
-from ..joints.rolling_contact import find_contact
 from ..engine.instant import Instant
 from ..shapes import Cam, Circle, Curve, Line
 from ..joints import JointGeometry
@@ -234,7 +233,5 @@ def moved_geometry(geo: JointGeometry, poses: Poses, inst: Instant) -> JointGeom
     if geo.axis is not None:
         out.axis = poses.turn(j.a, geo.axis)
     out.perps = [poses.turn(owner, p) for p in geo.perps]
-    if j.kind.rolls:
-        out.contact = find_contact(inst, replace(j, at=None))
-    found = j.kind.moved(geo, inst, poses.aux.get(j.id))   # a contact found anew where it has moved
+    found = j.kind.moved(out, inst, poses.aux.get(j.id))   # a contact found anew where it has moved
     return found if found is not None else out
