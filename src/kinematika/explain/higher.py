@@ -69,20 +69,17 @@ def path_terms(ctx: Ctx, level: str, p: Path, tag: str) -> list[Term]:
     tangent = Msg("dir.tangent", {"point": point(p.pin)})
     if level == "v" or p.radius is None:
         return slide_terms(ctx, level, p.holder, p.mover, p.pin, tangent, tag)
-    v_rel = ctx.vel(p.mover, p.pin, p.holder)
     a_rel = ctx.acc(p.mover, p.pin, p.holder)
     along = scale(dot(a_rel, p.tangent), p.tangent)
     across = sub(a_rel, along)
     rel = Sym("v", tag, sub_key="sub.rel")
-    w = Sym("ω", p.holder, vector=False) if ctx.planar else Sym("ω", p.holder)
-    coriolis = scale(2, ctx.space.cross(ctx.omega(p.holder), v_rel))
     centre = Msg("dir.centre", {"point": "C"})
+    coriolis = slide_terms(ctx, level, p.holder, p.mover, p.pin, tangent, tag)[-1]   # as a straight slide's
     return [Term(Sym("a", tag, "t", sub_key="sub.rel"), ctx.clean(along, "accel"), Ann("?"), Ann("para", tangent),
                  [], True, "slide"),
             Term(Sym("a", tag, "n", sub_key="sub.rel"), ctx.clean(across, "accel"), Ann("M", [rel, "²/ρ"]),
                  Ann("para", centre), [rel, "² / ρ"], False, "curvature"),
-            Term(Sym("a", tag, sub_key="sub.cor"), ctx.clean(coriolis, "accel"), Ann("M", ["2·", w, "·", rel]),
-                 Ann("perp", tangent), ["2 ", w, " × ", rel], False, "coriolis")]
+            coriolis]
 
 
 def higher_pair_steps(steps: Any, step: Step) -> Optional[list]:
