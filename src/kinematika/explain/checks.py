@@ -211,7 +211,7 @@ def _train(ctx: Ctx, links: list) -> list:
     if len(chain) < 2:
         return []
     first, last = chain[0][0], chain[-1][1]
-    product = _simplified(ctx, math.prod(x[2] for x in chain) if not ctx.symbolic else _prod(x[2] for x in chain))
+    product = _simplified(ctx, math.prod(x[2] for x in chain))
     holder = chain[0][3]
     w0, w1 = omega_sym(first, ctx.rel(holder)), omega_sym(last, ctx.rel(holder))
     factors: list = []
@@ -220,13 +220,6 @@ def _train(ctx: Ctx, links: list) -> list:
     value = _simplified(ctx, ctx.omega(last, holder) / ctx.omega(first, holder))
     return [msg("check.train", ratio=Inline([w1, " / ", w0, " = "] + factors + [" = ", Value(product, "")]),
                 value=Value(value, ""))]
-
-
-def _prod(items) -> Any:
-    out = 1
-    for x in items:
-        out = out * x
-    return out
 
 
 # quick-return -------------------------------------------------------------------------------
