@@ -2,7 +2,7 @@
 // a grid that snaps to points and round values, picks on the figure, and the properties
 // panel where the selected element's dimensions are typed. Every action is an edit of the
 // model's text made by the server (/api/build): the text stays the one source.
-import { el, num, shown } from "./svg.js";
+import { el, niceStep, num, shown } from "./svg.js";
 
 const SNAP_PX = 10;          // a pick this close to a point (CSS pixels) takes the point
 
@@ -117,9 +117,7 @@ export class Builder {
 
   /** The grid's spacing: 1, 2 or 5 × 10^k, about 24 CSS pixels. */
   gridStep() {
-    const raw = 24 * (this.figure.px || 0.01);
-    const k = 10 ** Math.floor(Math.log10(raw));
-    return [1, 2, 5, 10].map((m) => m * k).find((s) => s >= raw) || 10 * k;
+    return niceStep(24 * (this.figure.px || 0.01));
   }
 
   // the drawing over the figure ---------------------------------------------------------

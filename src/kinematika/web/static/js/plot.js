@@ -1,7 +1,7 @@
 // Chosen quantities against the input coordinate, from the sweep: one small chart each,
 // a cursor at the slider, dead points (where the sweep stops assembling) and limit
 // positions (where a body's ω changes sign: its angle is at an extreme) marked.
-import { el, num, shown } from "./svg.js";
+import { el, niceStep, num, shown } from "./svg.js";
 
 const PAD = { left: 62, right: 74, top: 8, bottom: 34 };
 const COLOURS = ["#1f5fa8", "#c62828", "#2e7d32", "#7b1fa2", "#ef6c00", "#00838f"];
@@ -176,8 +176,7 @@ export class Plot {
 function ticks(lo, hi, n) {
   const span = hi - lo;
   if (!(span > 0) || !Number.isFinite(span)) return [];
-  const raw = span / n, k = 10 ** Math.floor(Math.log10(raw));
-  let step = [1, 2, 5, 10].map((m) => m * k).find((s) => s >= raw);
+  let step = niceStep(span / n);
   const at = (st) => {
     const out = [];
     for (let v = Math.ceil(lo / st) * st; v <= hi + st * 1e-9; v += st) out.push(Math.abs(v) < st * 1e-9 ? 0 : Number(v.toPrecision(12)));

@@ -76,3 +76,9 @@ export function show(v, scale = 0) {
   if (Array.isArray(v)) return pair(v.map((c) => num(c, scale)));
   return num(v, scale);
 }
+
+/** The round step at least `raw`: 1, 2 or 5 × 10^k (an axis's ticks, the builder's grid). */
+export function niceStep(raw) {
+  const k = 10 ** Math.floor(Math.log10(raw));
+  return [1, 2, 5, 10].map((m) => m * k).find((s) => s >= raw) || 10 * k;
+}
