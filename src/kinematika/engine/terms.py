@@ -25,7 +25,6 @@ without them (exact and numeric alike): a factor of 1 multiplies nothing.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 
 @dataclass(frozen=True)
@@ -47,10 +46,6 @@ class Terms:
     def coriolis_factor(self) -> int:
         """2c: the factor of ω × v_rel in the Coriolis term."""
         return 2 * self.coriolis
-
-    def scaled(self, factor: Any, vector: tuple) -> tuple:
-        """`vector` times an integer factor (as `vectors.scale`, without a multiplication by 1)."""
-        return vector if factor == 1 else tuple(factor * c for c in vector)
 
 
 MECHANICS = Terms()

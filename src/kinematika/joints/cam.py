@@ -22,7 +22,7 @@ from ..shapes import Line
 from . import symbols
 from .base import JointGeometry
 from .contact import Contact
-from .touching import Point
+from .touching import outlines
 
 
 class Cam(Contact):
@@ -59,7 +59,7 @@ class Cam(Contact):
             raise KinematikaError("schema", f"a cam joint needs `at`: the follower's {what}", joint.where)
         geo.roller = float(contact.radius)
         curve = cam.pitch if contact.radius > 0 else cam.profile
-        return [curve], [Point(inst.points[joint.at], joint.at)]
+        return [curve], outlines(inst, joint, joint.b, joint.at)
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """The follower's roller (a circle about its centre `at`, moving with it) or knife

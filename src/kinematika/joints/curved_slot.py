@@ -21,7 +21,7 @@ from ..shapes import Circle, Curve
 from . import symbols
 from .derivatives import sliding
 from .base import JointGeometry, JointKind, Rows
-from .touching import Follow, Point, find_touch, touch_row
+from .touching import Follow, find_touch, outlines, touch_row
 
 
 class CurvedSlot(JointKind):
@@ -55,7 +55,7 @@ class CurvedSlot(JointKind):
         if not curves:
             raise KinematikaError("schema", f"a curved slot is cut along a circle or curve of {joint.a!r}: "
                                   "give that body one", joint.where)
-        geo.contact = find_touch(inst, joint, curves, [Point(inst.points[joint.at], joint.at)], near)
+        geo.contact = find_touch(inst, joint, curves, outlines(inst, joint, joint.b, joint.at), near)
         n = geo.contact.normal               # a circle's: outward; a curve's: its own normal
         geo.along = (-n[1], n[0]) if isinstance(geo.contact.outline_a, Circle) else (n[1], -n[0])
         return geo
