@@ -9,7 +9,7 @@ from typing import Optional
 import typer
 
 from .app import JsonOpt, ModelArg, app
-from .shared import guarded, output_file, print_json, writing
+from .shared import cannot_write, guarded, output_file, print_json, writing
 
 DEFAULT_COUNT = 30
 
@@ -51,12 +51,10 @@ def exercise(model: Path = ModelArg,
 
 def _folder(output: Path) -> None:
     """A folder can be written at `output` (made if missing), else an `output` error."""
-    from ..errors import KinematikaError
-
     if output.exists() and not output.is_dir():
-        raise KinematikaError("output", f"cannot write {output}: it is a file", "-o")
+        raise cannot_write(output, "it is a file", "-o")
     if not output.parent.is_dir():
-        raise KinematikaError("output", f"cannot write {output}: there is no folder {output.parent}", "-o")
+        raise cannot_write(output, f"there is no folder {output.parent}", "-o")
 
 
 def _names(path: Path) -> list[str]:

@@ -16,7 +16,7 @@ from ..errors import KinematikaError
 from ..model.exercise_section import ExerciseSection, Unit
 from ..model.model import Model
 from .key import Row, floors_of, graded, key_rows
-from .stated import as_stated, model_expression, stated_unit
+from .stated import as_stated, is_degrees, model_expression, stated_unit
 from .variants import MAX_CONDITION, Drawn, Vary, draw_variants, parse_vary
 
 SIGNIFICANT = 12          # a parameter's value as stated, when the model gives it (not varied)
@@ -108,8 +108,7 @@ class Exercise:
 
         stated = variant.all_stated(self)
         units = {name: self.unit_of(name) for name in stated}
-        degrees = tuple(n for n, u in units.items() if u is not None and u.kind == "angle" and u.pi == 1
-                        and u.ratio == Fraction(1, 180))
+        degrees = tuple(n for n, u in units.items() if is_degrees(u))
         millimetres = tuple(n for n, u in units.items() if u is not None and u.ratio == Fraction(1, 1000)
                             and u.kind in ("length", "speed", "accel"))
         metre = str(Fraction(1) / self.section.length.ratio)

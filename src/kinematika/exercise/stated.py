@@ -49,11 +49,17 @@ def model_factor(unit: Optional[Unit], section: ExerciseSection) -> tuple[Fracti
     return ratio, unit.pi
 
 
+def is_degrees(unit: Optional[Unit]) -> bool:
+    """Whether a statement's unit is the degree (π/180 rad): its values reach the model as
+    `deg(…)`."""
+    return unit is not None and unit.kind == "angle" and unit.pi == 1 and unit.ratio == Fraction(1, 180)
+
+
 def model_expression(value: Decimal, unit: Optional[Unit], section: ExerciseSection) -> str:
     """The stated `value` as the expression the model receives (`--set NAME=...`):
     `deg(35)` for degrees, `450/1000` for millimetres in a model in metres, `4` as is."""
     number = plain_decimal(value)
-    if unit is not None and unit.kind == "angle" and unit.pi == 1 and unit.ratio == Fraction(1, 180):
+    if is_degrees(unit):
         return f"deg({number})"
     ratio, pi = model_factor(unit, section)
     if ratio == 1 and not pi:
