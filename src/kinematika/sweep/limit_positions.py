@@ -124,6 +124,11 @@ class _Run:
 
 def follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResult":
     """The sweep of a dyad mechanism through its limit positions (closed form, run by run)."""
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):   # rows at the edges
+        return _follow_closed(sweeper, plan, skip_bad)
+
+
+def _follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResult":
     zig = Zigzag(plan)
     scale = math.pi / 180 if plan.turns else 1.0
     runs: list[_Run] = []
