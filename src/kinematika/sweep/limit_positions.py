@@ -145,7 +145,7 @@ def _follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResu
         edge = None
         if j < len(rows):
             good_q = float(q[j - 1]) if j > 0 else zig.start
-            edge, group = _edge(sweeper, flips, good_q, float(q[j]), int(out.failed[j]), scale)
+            edge, group = _edge(sweeper, flips, good_q, float(q[j]), int(out.failed[j]), scale, zig.h)
             if zig.limits and abs(edge - zig.start) <= 1e-9 * zig.h:
                 why = "it turns back at once: branches of the motion meet there"
                 partial = _closed_result(sweeper, plan, zig, runs, False)
@@ -177,7 +177,7 @@ def _follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResu
 
 
 def _edge(sweeper: "Sweeper", flips: dict[int, float], good: float, bad: float, failed: int,
-          scale: float) -> tuple[float, Optional[int]]:
+          scale: float, step: float) -> tuple[float, Optional[int]]:
     """Where between a coordinate that assembles (`good`) and one that does not (`bad`, where
     group `failed` fails first) the motion turns, to about 1e-15 of the step, and the dyad
     that stops it there (None: not a dyad with two closures, so not a limit position)."""
@@ -195,7 +195,29 @@ def _edge(sweeper: "Sweeper", flips: dict[int, float], good: float, bad: float, 
         failed = int(out.failed[first])
         good, bad = float(between[first - 1]), float(between[first])
     foldable = failed > 0 and sweeper.closed.chains[failed - 1][0].kind in ("RRR", "RRP", "RPR")
-    return good, (failed if foldable else None)
+    if not foldable:
+        return good, None
+    return _fold(form, failed, good, np.sign(bad - good) or 1.0, abs(step), scale), failed
+
+
+def _fold(form: Any, group: int, good: float, d: float, step: float, scale: float) -> float:
+    """The limit position itself, near the edge `good` found by bisection: the dyad's two
+    links fall in line there, and the square of the sine between them falls to 0 as the
+    distance to it (sin² ∝ q* − q, a fold); a parabola through three points a little before
+    the edge gives q* to round-off. (The edge is where the closed form's discriminant passes
+    its round-off tolerance, about 1e-12 past q*, farther when it changes slowly.)"""
+    back = np.array([1e-6, 2e-6, 3e-6]) * step
+    margin = form.solve((good - d * back) * scale).margins[group]
+    y = np.asarray(margin, dtype=float) ** 2
+    if not np.isfinite(y).all() or not y[0] < y[1] < y[2]:
+        return good
+    c2, c1, c0 = np.polyfit(back, y, 2)
+    roots = np.roots([c2, c1, c0]) if abs(c2) > 0 else np.array([-c0 / c1])
+    real = [float(r.real) for r in np.atleast_1d(roots) if abs(r.imag) <= 1e-12 * step]
+    if not real:
+        return good
+    e = min(real, key=abs)                             # how far before `good` the fold is
+    return good - d * e if abs(e) < 1e-5 * step else good
 
 
 def _closed_result(sweeper: "Sweeper", plan: Plan, zig: Zigzag, runs: list[_Run], closed: bool) -> "SweepResult":
