@@ -38,6 +38,7 @@ CORRECTIONS = 8          # Newton iterations of one corrector
 SEARCH = 60              # regula-falsi iterations locating a limit position or a target
 MIN_STEP = 1e-10         # the smallest continuation step (dimensionless arclength)
 RANK = 1e-9              # J's n-th singular value over its largest: below, J has lost rank
+RUNAWAY = 1e3            # a body this many model sizes away: the motion runs off to infinity
 TOLERANCE = 1e-12        # a converged correction (dimensionless), as `newton.TOLERANCE`
 
 
@@ -239,7 +240,10 @@ def advance(asm: "Assembler", poses: Any, q: float, d: float, travel: float, ste
             return _land(curve, here, start, end, start[1].q + d * (travel - done), d, passed)
         done += piece
         here = new
-        s = min(2 * s, top)
+        far = _distance(asm, here.poses)
+        if far > RUNAWAY:
+            raise CannotFollow(here.q, "assembly", "the mechanism runs off to infinity there")
+        s = min(2 * s, top * max(1.0, 4 * far))     # far away, the curve is nearly straight
     raise CannotFollow(here.q, "assembly", f"more than {bounds.CONTINUATION_STEPS} continuation "
                        "steps between two rows")
 
@@ -257,6 +261,14 @@ def _land(curve: Curve, base: Point, start: tuple[float, Point], end: tuple[floa
     if poses is None:
         raise CannotFollow(target, "assembly", "the mechanism could not be assembled there")
     return Passage(poses, target, d, passed)
+
+
+def _distance(asm: "Assembler", poses: Any) -> float:
+    """How far the bodies have gone from the drawing, in model sizes (their reference
+    point's displacement)."""
+    ref = tuple(float(c) for c in asm.base.ref)
+    far = max((math.dist(poses.point(b, ref), ref) for b in asm.unknowns.offset), default=0.0)
+    return far / asm.scale
 
 
 def _stuck(here: Point) -> CannotFollow:
