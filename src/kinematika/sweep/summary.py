@@ -74,8 +74,8 @@ def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[lis
 def _limit_lines(result: SweepResult, unit: str) -> list[str]:
     """Where the input ran back, its range, and whether the motion came back to the drawing."""
     shown = ", ".join(f"{x:.6g}" for x in result.limits)
-    low = min(min(result.limits), float(np.nanmin(result.coordinate)))
-    high = max(max(result.limits), float(np.nanmax(result.coordinate)))
+    low = min(*result.limits, float(np.nanmin(result.coordinate)))
+    high = max(*result.limits, float(np.nanmax(result.coordinate)))
     lines = [f"limit positions of {result.joint}: {shown} {unit} (the input runs back there)".replace("  ", " "),
              f"range of {result.joint}: {low:.6g} .. {high:.6g} {unit}".rstrip()]
     if result.closed and result.travel is not None:
