@@ -3,7 +3,8 @@
 Every endpoint takes `{"model": TEXT, "format": "yaml", "set": {...}, "move": {...},
 "assembly": N, "lang": "eu"}` (the contract), and each accepts a few more keys that mean
 what the command's options mean (`symbolic`, the sweep's `joint`, `by`, `steps`,
-`skip_bad`, the figure's `velocities`, `centres`, ...). A key the endpoint does not know,
+`skip_bad`, the figure's `velocities`, `centres`, ...), and `row` (the model posed at
+that row of its own sweep, through limit positions: what the page's slider shows). A key the endpoint does not know,
 or a value of the wrong type, is a `usage` error naming the key, like a wrong option on the
 command line.
 """
