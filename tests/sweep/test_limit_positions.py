@@ -323,3 +323,32 @@ def test_a_row_of_the_sweep_past_a_limit_is_posed_on_the_other_branch():
     moved = solve_data(tree, how=How(move={"j4": str(rows.coordinate[k])}))   # the drawn branch
     assert moved["points"]["A@crank"]["position"] == pytest.approx(
         list(circle_meet((0.0, 0.0), 1.0, b, 4.0, drawn)), abs=1e-9)
+
+
+# a spatial linkage (Newton's path in 3D) ------------------------------------------------------------
+def test_a_spatial_four_bar_driven_from_its_rocker_reverses_at_its_limit():
+    """The RSSR example driven from its rocker (about x at D = (2, 0, 1), B drawn 1.5 from D
+    along y): B = D + 1.5 (0, cos t, sin t), the crank's pin A = (−sin s, cos s, 0), the
+    coupler |AB|² = 5.25. |AB|² = 5 + 2.25 cos² t + (1 + 1.5 sin t)² + 4 sin s − 3 cos t cos s,
+    whose least over s is with 4 sin s − 3 cos t cos s = −√(16 + 9 cos² t): the rocker can go
+    on while that least is at most 5.25."""
+    import yaml
+    from scipy.optimize import brentq
+
+    tree = yaml.safe_load((EXAMPLES / "rssr_spatial_four_bar.yaml").read_text())
+    tree["points"]["B"] = [2, 1.5, 1]
+    tree["drivers"] = [{"joint": "rocker_pin", "rate": 1}]
+    tree.pop("sweep"), tree.pop("ask")
+
+    def least(t: float) -> float:
+        c = math.cos(t)
+        return 5 + 2.25 * c * c + (1 + 1.5 * math.sin(t)) ** 2 - math.sqrt(16 + 9 * c * c) - 5.25
+
+    limit = math.degrees(brentq(least, math.radians(10), math.radians(80), xtol=1e-15))
+    result = run_sweep(tree, by=40, steps=5)
+    assert result.method == "newton"
+    assert result.limits == pytest.approx([limit], abs=1e-8)
+    assert result.coordinate[-1] == pytest.approx(limit - (40 - limit), abs=1e-8)
+    b = result.points["B@rocker"]["position"]
+    a = result.points["A@crank"]["position"]
+    np.testing.assert_allclose(np.linalg.norm(a - b, axis=1), math.sqrt(5.25), atol=1e-9)

@@ -124,7 +124,7 @@ class Curve:
             poses, q = self._moved(poses, q, dz)
             moved = moved + dz
             if size < TOLERANCE or (size < 1e3 * TOLERANCE and size > 0.5 * last):
-                self.asm._keep_aux(poses)
+                self.asm.keep_aux(poses)
                 try:
                     return self.point(poses, q, t)
                 except CannotFollow:
@@ -149,7 +149,7 @@ class Curve:
                 return None
             poses = poses.stepped(dz / self.weights[:-1], self.asm.unknowns)
             if size < TOLERANCE or (size < 1e3 * TOLERANCE and size > 0.5 * last):
-                self.asm._keep_aux(poses)
+                self.asm.keep_aux(poses)
                 return poses
             last = size
         return None

@@ -96,7 +96,7 @@ class Assembler:
             elif size > 0.3 * first + 1e-9:
                 return None                     # the correction rivals the step: a jump
             if size < TOLERANCE or (size < 1e3 * TOLERANCE and size > 0.5 * last):
-                self._keep_aux(current)         # converged (or stalled at round-off)
+                self.keep_aux(current)         # converged (or stalled at round-off)
                 return current
             last = size
         return None
@@ -115,12 +115,12 @@ class Assembler:
             if not math.isfinite(size):
                 break
             if size < TOLERANCE:
-                self._keep_aux(current)
+                self.keep_aux(current)
                 return current, solver
             current = current.stepped(dx * min(1.0, 0.3 / size), self.unknowns)
         raise _NotAssembled()
 
-    def _keep_aux(self, poses: Poses) -> None:
+    def keep_aux(self, poses: Poses) -> None:
         """Record the continuous angles (rolling joints) of the newly assembled poses."""
         for _, f in self.functions:
             if hasattr(f, "aux"):
