@@ -17,6 +17,7 @@ Every expected number is derived by hand from the geometry, independently of the
 from __future__ import annotations
 
 import csv
+import itertools
 import io
 import json
 import math
@@ -64,7 +65,7 @@ def test_a_rocker_driven_crank_rocker_swings_between_its_limits_and_closes_its_c
     assert result.closed and result.travel[-1] == pytest.approx(cycle, abs=1e-9)
     assert len(result) == math.floor(cycle) + 2             # a row a degree, and the drawing again
     assert result.coordinate[-1] == 0.0
-    for key, values in result.points.items():               # the last row is the drawn one
+    for values in result.points.values():                   # the last row is the drawn one
         np.testing.assert_allclose(values["position"][-1], values["position"][0], atol=1e-9)
     # the real motion: the crank turns on, one way, a whole turn over the rocker's cycle
     a = result.points["A@crank"]["position"]
@@ -193,7 +194,7 @@ def test_the_examples_that_stopped_at_a_limit_move_through_it(name):
     single = {n for n in model.points if len(model.motion_classes(n, model.carriers(n))) == 1}
     for body, names in _bodies(result).items():
         names = [n for n in names if n in single]
-        for p, q in zip(names, names[1:]):
+        for p, q in itertools.pairwise(names):
             d = np.linalg.norm(result.points[f"{p}@{body}"]["position"] -
                                result.points[f"{q}@{body}"]["position"], axis=1)
             np.testing.assert_allclose(d, d[0], rtol=0, atol=1e-9 * max(d[0], 1.0))

@@ -136,8 +136,9 @@ def _follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResu
     k, last = 0, plan.steps
     closed = False
     begin: Optional[float] = None
+    chunk = max(64, math.ceil(720.0 / zig.h) + 2) if plan.turns else 4096   # rows looked at once
     while k <= last:
-        rows = np.arange(k, last + 1)
+        rows = np.arange(k, min(last, k + chunk) + 1)
         q = zig.coordinate(zig.travel(rows))
         out = sweeper.form(flips).solve(q * scale)
         bad = ~np.asarray(out.assembled, dtype=bool)
@@ -159,8 +160,9 @@ def _follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResu
             closed = True
             break
         runs.append(_Run(rows[:j], q[:j], dict(flips), begin, edge))
-        if edge is None:
-            break
+        if edge is None:                           # no limit among these rows: on to the next
+            k, begin = int(rows[-1]) + 1, None
+            continue
         if group is None:                          # not a dyad that closes two ways
             why = f"{' and '.join(out.groups[int(out.failed[j])].bodies) or 'the loop'} cannot close " \
                   "there, and it is not a limit position"
@@ -240,9 +242,10 @@ def _closed_result(sweeper: "Sweeper", plan: Plan, zig: Zigzag, runs: list[_Run]
                  "singular": np.asarray(out.singular, bool) & np.ones(n, bool), "bodies": {}, "points": {}}
         for b, track in out.tracks.items():
             theta = np.array(_series(track.theta, n), dtype=float)
-            if run.begin is not None and b in offsets:     # continued through the limit position
-                theta += 2 * math.pi * round((offsets[b] - theta[0]) / (2 * math.pi))
-            offsets[b] = float(theta[-1])
+            if b in offsets and np.isfinite(theta[0]):   # continued from the run before (through
+                theta += 2 * math.pi * round((offsets[b] - theta[0]) / (2 * math.pi))   # its limit)
+            if np.isfinite(theta[-1]):
+                offsets[b] = float(theta[-1])
             piece["bodies"][b] = (theta, _series(track.omega, n), _series(track.alpha, n))
         for name, body, _ in sweeper.motions:
             piece["points"][name, body] = tuple(np.broadcast_to(np.asarray(x, dtype=complex), (n,))
