@@ -16,18 +16,19 @@ from .api import ModelLike, prepare
 @dataclass(frozen=True)
 class How:
     """The model a command analyses: its text's format and the `--set`, `--move` and
-    `--assembly` choices (see `api.prepare`)."""
+    `--assembly` choices (see `api.prepare`), and for the page a row of its sweep (`row`)."""
 
     fmt: Optional[str] = None
     set: Mapping[str, Any] = field(default_factory=dict)
     move: Mapping[str, Any] = field(default_factory=dict)
     assembly: Optional[int] = None
+    row: Optional[int] = None
 
     def model(self, source: ModelLike) -> Any:
         """The prepared model `source` with these choices (`api.prepare`: parsed, values set,
         moved, assembly chosen)."""
         return prepare(source, fmt=self.fmt, set=self.set or None, move=self.move or None,
-                       assembly=self.assembly)
+                       assembly=self.assembly, row=self.row)
 
 
 AS_GIVEN = How()

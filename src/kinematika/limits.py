@@ -32,6 +32,10 @@ SCALE = 1e50                 # lengths and rates (ω, v/length, √(a/length)) b
 # sweeps -----------------------------------------------------------------------------------
 SWEEP_STEPS = 10_000_000     # increments of one sweep
 SWEEP_VALUES = 32_000_000    # rows × numbers per row held at once: 480 000 rows of a four-bar (under 1 GB on every path)
+SWEEP_LIMITS = 10_000        # limit positions one sweep passes through (a four-bar's cycle has 2;
+                             # the motion stops when it is back at the drawing)
+CONTINUATION_STEPS = 2_000   # arclength steps between two rows of a sweep on Newton's path (a limit
+                             # position of the examples takes under 50)
 
 # symbolic work ----------------------------------------------------------------------------
 EXACT_WORK = 1_500_000       # steps of exact algebra a command may take (terms formed, products of

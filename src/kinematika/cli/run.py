@@ -50,8 +50,13 @@ def sweep_command(model: Path, joint: Optional[str] = None, by: Optional[float] 
     kind = guarded(as_json, lambda: _format(output, fmt))
     def run():
         with options_named(sweep_options(joint, by, steps)):
-            return sweep_run(model, joint, by, steps, skip_bad, progress=not as_json,
-                             how=_how(how) or AS_GIVEN)
+            try:
+                return sweep_run(model, joint, by, steps, skip_bad, progress=not as_json,
+                                 how=_how(how) or AS_GIVEN)
+            except KinematikaError as err:
+                if getattr(err, "partial", None) is not None:
+                    _kept(err, csv, output, kind, plot, as_json)
+                raise
 
     sweeper, result = guarded(as_json, run)
     if csv is not None:
@@ -77,6 +82,28 @@ def sweep_command(model: Path, joint: Optional[str] = None, by: Optional[float] 
     if plot is not None:
         lines.append(f"drew {plot}")
     print("\n".join(shown(line) for line in lines))
+
+
+def _kept(err: KinematikaError, csv: Optional[Path], output: Optional[Path], kind: Optional[str],
+          plot: Optional[Path], as_json: bool) -> None:
+    """A motion that could not be followed further: the rows computed before are written
+    where the rows were asked for (`--csv`, `-o`, `--plot`), and with `--json` printed beside
+    the error (`{"error": ..., "partial": <the sweep's JSON>}`); the error follows."""
+    partial = err.partial                  # type: ignore[attr-defined]
+    if csv is not None:
+        guarded(as_json, lambda: _write(partial, csv, "csv", "--csv"))
+    if output is not None:
+        guarded(as_json, lambda: _write(partial, output, kind))
+    if plot is not None and len(partial):
+        guarded(as_json, lambda: _plot(partial, plot, None))
+    if as_json:
+        import orjson
+
+        write_stdout(b'{"error":' + orjson.dumps(err.as_json()["error"]) + b',"partial":')
+        for piece in partial.json_chunks():
+            write_stdout(piece)
+        write_stdout(b"}\n")
+        sys.exit(2)
 
 
 def _format(output: Optional[Path], fmt: Optional[str]) -> Optional[str]:

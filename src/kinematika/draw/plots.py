@@ -15,7 +15,9 @@ the driven joint's increment. The panels, each only when it has something to sho
   their speed and their tangential acceleration (signed: speeding up or slowing down).
 
 Lengths are in the model's unit, times in seconds. Dead points are dashed red vertical
-lines across every panel; rows the sweep could not assemble leave gaps. The frame and
+lines across every panel; rows the sweep could not assemble leave gaps. A motion through
+the input's limit positions runs back along the axis there (a rocker's cycle is a loop):
+those positions are dotted vertical lines. The frame and
 points at rest are left out; points moving alike (a pin of two bodies) appear once, under
 their bare name.
 """
@@ -87,6 +89,9 @@ def plot_sweep(result: Any, path: Optional[Path | str] = None, model: Any = None
         for d in getattr(result, "dead_points", []) or []:
             x = _dead_x(reading, result, float(d))
             ax.axvline(x, color=DEAD, lw=1.0, ls="--", gid=f"dead:{float(d):g}")
+        for d in getattr(result, "limits", []) or []:
+            x = _dead_x(reading, result, float(d))
+            ax.axvline(x, color=INK, lw=0.9, ls=":", gid=f"limit:{float(d):g}")
         if panel.series:
             ax.legend(fontsize=8, ncol=min(len(panel.series), 6), loc="best", framealpha=0.85)
         if panel.note:
@@ -97,6 +102,8 @@ def plot_sweep(result: Any, path: Optional[Path | str] = None, model: Any = None
     title = getattr(result, "name", "Sweep")
     if getattr(result, "dead_points", None):
         title += "  (dashed red: dead points)"
+    if getattr(result, "limits", None):
+        title += "  (dotted: limit positions, where the input runs back)"
     fig.suptitle(title.replace("$", r"\$"), fontsize=12, weight="bold", color=INK)
     fig.tight_layout(rect=(0, 0, 1, 0.985))
     if path is not None:
@@ -374,9 +381,10 @@ def _dead_x(reading: Reading, result: Any, coordinate: float) -> float:
     """Where a dead point (given in the sweep's coordinate) lies on the plots' axis."""
     xs = np.asarray(result.coordinate, dtype=float)
     ok = np.isfinite(reading.x) & np.isfinite(xs)
-    if ok.sum() < 2 or np.array_equal(reading.x[ok], xs[ok]):
+    if ok.sum() < 2 or np.array_equal(reading.x[ok], xs[ok]) or np.ptp(xs[ok]) == 0:
         return coordinate
-    return float(np.interp(coordinate, xs[ok], reading.x[ok]))
+    slope, offset = np.polyfit(xs[ok], reading.x[ok], 1)    # the driver's angle: θ0 ± coordinate
+    return float(offset + slope * coordinate)
 
 
 def _degrees_locator() -> Any:

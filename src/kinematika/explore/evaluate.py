@@ -95,10 +95,10 @@ class Evaluator:
         try:
             sweeper = Sweeper(model, s.joint)
             try:
-                result = sweeper.run(s.by, s.steps)
-            except KinematikaError as err:
+                result = sweeper.run(s.by, s.steps, through=False)   # a cycle of the input, as
+            except KinematikaError as err:                           # the batch kernel sweeps it
                 out.reason[d] = describe(err)
-                result = sweeper.run(s.by, s.steps, skip_bad=True)
+                result = sweeper.run(s.by, s.steps, skip_bad=True, through=False)
         except KinematikaError as err:
             out.assembles[d] = False
             out.reason[d] = describe(err)

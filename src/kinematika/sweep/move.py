@@ -82,7 +82,7 @@ def swept_to(model: Model, jid: str, amount: float) -> Any:
     turns = model.joint(jid).kind.coordinate == "angle"
     per_step = DEGREES_PER_STEP if turns else LENGTHS_PER_STEP * sweeper.inst.scale
     steps = min(MAX_STEPS, max(1, math.ceil(abs(amount) / per_step)))
-    result = sweeper.run(amount, steps, skip_bad=True)
+    result = sweeper.run(amount, steps, skip_bad=True, through=False)   # to the coordinate, not through limits
     if not result.ok.all():
         raise _unreachable(result, jid, amount, "°" if turns else "")
     return result
@@ -97,3 +97,22 @@ def _unreachable(result: Any, jid: str, amount: float, unit: str) -> KinematikaE
         got = min(edges, key=abs)
     return KinematikaError("assembly", f"{jid} cannot be moved {amount:g}{unit}: the mechanism meets "
                            f"a dead point or comes apart after {got:.6g}{unit}", f"move.{jid}")
+
+
+def at_row(model: Model, row: int) -> Model:
+    """`model` at row `row` of its sweep (its `sweep:` section, else a full turn in 360 steps;
+    rows that cannot be assembled skipped, as the page sweeps it): the last row of the sweep
+    of `row` steps of the same travel each, so through the limit positions it meets."""
+    from .posed import posed_model
+    from .run import Sweeper
+
+    if any(p.value is None for p in model.parameters.values()):
+        raise KinematikaError("schema", "a row of the sweep needs numbers for every parameter", "row")
+    sweeper = Sweeper(model)
+    plan = sweeper.plan(None, None)
+    if row > plan.steps:
+        raise KinematikaError("usage", f"row {row}: the sweep has rows 0 to {plan.steps}", "row")
+    result = sweeper.run(plan.by * row / plan.steps, row, skip_bad=True)
+    if not result.ok[-1]:
+        raise KinematikaError("assembly", f"row {row} of the sweep cannot be assembled", "row")
+    return posed_model(model, result, -1)

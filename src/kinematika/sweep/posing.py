@@ -16,10 +16,11 @@ from ..solution import Solution, solve_model
 
 def prepare(source: ModelLike, *, fmt: Optional[str] = None,
             set: Optional[Mapping[str, Any]] = None, move: Optional[Mapping[str, Any]] = None,
-            assembly: Optional[int] = None) -> Model:
+            assembly: Optional[int] = None, row: Optional[int] = None) -> Model:
     """The model a command analyses: read (`as_model`), with parameters given values (`set`,
-    as `--set NAME=VALUE`), on the chosen assembly (`--assembly N`) and advanced along driven
-    joints (`move`, as `--move J=AMOUNT`)."""
+    as `--set NAME=VALUE`), on the chosen assembly (`--assembly N`), advanced along driven
+    joints (`move`, as `--move J=AMOUNT`), and posed at `row` of its own sweep (through
+    limit positions, as the page's slider shows it: `move.at_row`)."""
     model = with_parameters(as_model(source, fmt),
                             {str(k): None if v is None else str(v) for k, v in (set or {}).items()})
     if assembly is not None:
@@ -31,6 +32,10 @@ def prepare(source: ModelLike, *, fmt: Optional[str] = None,
         from .move import moved
 
         model = moved(model, amounts)
+    if row:
+        from .move import at_row
+
+        model = at_row(model, row)
     return model
 
 

@@ -13,10 +13,17 @@ def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[lis
     unit = "deg" if result.unit == "deg" else ""
     n, good = len(result), int(result.ok.sum())
     by = result.coordinate[-1] if n else 0.0
-    lines = [f"{result.name}: sweep of {result.joint} by {by:g} {unit} in {n - 1} steps "
-             f"({result.method})".replace("  ", " ")]
+    if result.limits and result.travel is not None:
+        lines = [f"{result.name}: sweep of {result.joint}, {result.travel[-1]:g} {unit} of travel in "
+                 f"{n - 1} steps through {len(result.limits)} limit "
+                 f"position{'s' if len(result.limits) > 1 else ''} ({result.method})".replace("  ", " ")]
+    else:
+        lines = [f"{result.name}: sweep of {result.joint} by {by:g} {unit} in {n - 1} steps "
+                 f"({result.method})".replace("  ", " ")]
     if groups:
         lines.append("structure: " + ", then ".join(_group(g) for g in groups))
+    if result.limits:
+        lines += _limit_lines(result, unit)
     lines.append(f"assembled: {good} of {n} positions" +
                  ("" if good == n else f" (skipped: {_ranges(result.coordinate[~result.ok])})"))
     if good == 0:
@@ -61,6 +68,19 @@ def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[lis
             k = int(np.nanargmin(np.minimum(mu, 180.0 - mu)))
             lines.append(f"  transmission angle: {np.nanmin(mu):.4g} to {np.nanmax(mu):.4g} deg; "
                          f"worst {mu[k]:.4g} deg at {at[k]:g} {unit}".rstrip())
+    return lines
+
+
+def _limit_lines(result: SweepResult, unit: str) -> list[str]:
+    """Where the input ran back, its range, and whether the motion came back to the drawing."""
+    shown = ", ".join(f"{x:.6g}" for x in result.limits)
+    low = min(*result.limits, float(np.nanmin(result.coordinate)))
+    high = max(*result.limits, float(np.nanmax(result.coordinate)))
+    lines = [f"limit positions of {result.joint}: {shown} {unit} (the input runs back there)".replace("  ", " "),
+             f"range of {result.joint}: {low:.6g} .. {high:.6g} {unit}".rstrip()]
+    if result.closed and result.travel is not None:
+        lines.append(f"back at the drawn configuration after {result.travel[-1]:.6g} {unit} of "
+                     "travel: the whole cycle".replace("  ", " "))
     return lines
 
 

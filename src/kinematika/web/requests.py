@@ -3,7 +3,8 @@
 Every endpoint takes `{"model": TEXT, "format": "yaml", "set": {...}, "move": {...},
 "assembly": N, "lang": "eu"}` (the contract), and each accepts a few more keys that mean
 what the command's options mean (`symbolic`, the sweep's `joint`, `by`, `steps`,
-`skip_bad`, the figure's `velocities`, `centres`, ...). A key the endpoint does not know,
+`skip_bad`, the figure's `velocities`, `centres`, ...), and `row` (the model posed at
+that row of its own sweep, through limit positions: what the page's slider shows). A key the endpoint does not know,
 or a value of the wrong type, is a `usage` error naming the key, like a wrong option on the
 command line.
 """
@@ -21,11 +22,11 @@ from ..limits import PAGE_SWEEP_STEPS
 FORMATS = ("yaml", "toml", "json")
 COMMON = ("model", "format", "set", "move", "assembly", "lang")
 EXTRA = {
-    "solve": ("symbolic",),
-    "centres": ("symbolic",),
+    "solve": ("symbolic", "row"),
+    "centres": ("symbolic", "row"),
     "sweep": ("joint", "by", "steps", "skip_bad", "as"),
-    "explain": ("symbolic", "length_unit"),
-    "draw": ("as", "velocities", "accelerations", "centres", "curvature", "labels", "points",
+    "explain": ("symbolic", "length_unit", "row"),
+    "draw": ("row", "as", "velocities", "accelerations", "centres", "curvature", "labels", "points",
              "view", "width"),
     "edit": ("point", "to"),
     "assemblies": (),
@@ -70,9 +71,10 @@ def parse_body(endpoint: str, raw: bytes) -> Request:
         raise KinematikaError("usage", "'model' is required: the model file's text", "model")
     fmt = _choice(body, "format", FORMATS, "yaml")
     how = How(fmt=fmt, set=_assignments(body, "set"), move=_assignments(body, "move"),
-              assembly=_integer(body, "assembly", None, low=0))
+              assembly=_integer(body, "assembly", None, low=0),
+              row=_integer(body, "row", None, low=0, high=PAGE_SWEEP_STEPS))
     options = {k: v for k, v in body.items() if k not in ("model", "format", "set", "move",
-                                                          "assembly")}
+                                                          "assembly", "row")}
     return Request(endpoint, model, how, _options(endpoint, options))
 
 

@@ -113,6 +113,7 @@ plot-accel = { $point }: |a|
 plot-input = entrada ({ $unit })
 dead-point = punt mort
 limit-position = posició límit: { $body } a { $angle }° (entrada { $input })
+input-limit = posició límit de l'entrada: torna enrere a { $input }
 properties = Propietats
 nothing-selected = Selecciona un punt o un sòlid de la figura per escriure’n les dimensions, fer-lo entrada o preguntar-hi.
 no-dimensions = No hi ha res per escriure: la seva posició es dedueix de les altres.

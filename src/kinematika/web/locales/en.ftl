@@ -113,6 +113,7 @@ plot-accel = { $point }: |a|
 plot-input = input ({ $unit })
 dead-point = dead point
 limit-position = limit position: { $body } at { $angle }° (input { $input })
+input-limit = limit position of the input: it runs back at { $input }
 properties = Properties
 nothing-selected = Select a point or a body in the figure to type its dimensions, make it the input or ask about it.
 no-dimensions = Nothing to type here: its place follows from the others.

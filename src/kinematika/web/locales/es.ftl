@@ -113,6 +113,7 @@ plot-accel = { $point }: |a|
 plot-input = entrada ({ $unit })
 dead-point = punto muerto
 limit-position = posición límite: { $body } a { $angle }° (entrada { $input })
+input-limit = posición límite de la entrada: vuelve atrás en { $input }
 properties = Propiedades
 nothing-selected = Selecciona un punto o un sólido de la figura para escribir sus dimensiones, hacerlo entrada o preguntar por él.
 no-dimensions = Nada que escribir aquí: su posición se deduce de las demás.

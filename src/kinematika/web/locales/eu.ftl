@@ -113,6 +113,7 @@ plot-accel = { $point }: |a|
 plot-input = sarrera ({ $unit })
 dead-point = puntu hila
 limit-position = muga-posizioa: { $body } { $angle }°-tan (sarrera { $input })
+input-limit = sarreraren muga-posizioa ({ $input }): hemen atzera egiten du
 properties = Propietateak
 nothing-selected = Hautatu irudiko puntu edo solido bat haren neurriak idazteko, sarrera bihurtzeko edo hari buruz galdetzeko.
 no-dimensions = Hemen ez dago ezer idazteko: haren posizioa besteetatik ondorioztatzen da.

@@ -80,6 +80,7 @@ async function analyse() {
   showWarnings(state.solution.warnings || []);
   state.scene = drawn.status === "fulfilled" ? drawn.value : null;
   state.sweep = swept.status === "fulfilled" ? swept.value : null;
+  state.playBack = false;
   state.input = state.scene && state.scene.input;
   state.sweepError = swept.status === "rejected" ? swept.reason.message : null;
   state.explained = null;
@@ -260,7 +261,7 @@ async function settle() {
     if (state.scene) place(state.scene, 0);
     return;
   }
-  const move = { move: { [state.input.joint]: state.sweep.coordinate[k] } };
+  const move = posedAt(k);
   try {
     const [sol, scene] = await Promise.all([post("solve", request(move)), post("draw", request({ ...move, centres: true }))]);
     if (gen !== state.gen || k !== state.row) return;
@@ -276,17 +277,50 @@ function place(scene, k) {
   else if (figure.sceneRow !== k || figure.scene !== scene) figure.set(scene, null, k);
 }
 
+/** How the API poses the model at sweep row k: `move` the input to the row's coordinate, or,
+ * for a motion through limit positions (where a coordinate is reached on two branches), the
+ * row itself (`row`: the sweep's row k, through the limit positions before it). */
+function posedAt(k) {
+  if (k === 0 || !state.input || !state.sweep) return {};
+  if (state.sweep.limits && state.sweep.limits.length) return { row: k };
+  return { move: { [state.input.joint]: state.sweep.coordinate[k] } };
+}
+
+/** A motion through limit positions that ends elsewhere than where it started is played
+ * back and forth (forward to its last row, then back); one that comes back (a full turn, a
+ * rocker's whole cycle) loops. */
+function backAndForth(sweep) {
+  if (!sweep.limits || !sweep.limits.length) return false;
+  if (sweep.bounces === undefined) {              // once a sweep
+    const last = sweep.coordinate.length - 1;
+    sweep.bounces = !Object.values(sweep.points).every(({ position: p }) => p[0] && p[last] &&
+      p[0].every((x, i) => Math.abs(x - p[last][i]) <= 1e-9 * Math.max(1, Math.abs(x))));
+  }
+  return sweep.bounces;
+}
+
 let playing = null;
 function play() {
   if (playing) { cancelAnimationFrame(playing.frame); playing = null; $("play").textContent = "▶"; return; }
   $("play").textContent = "❚❚";
-  playing = { last: null, pos: state.row };
+  // `phase` runs forward; played back and forth, phases past the last row are the way back
+  const rows0 = state.sweep.coordinate.length;
+  playing = { last: null, pos: state.row, phase: state.playBack ? 2 * (rows0 - 1) - state.row : state.row };
   const step = (now) => {       // `now`: the frame's time, which can precede the click's
     const rows = state.sweep.coordinate.length;
     const dt = playing.last === null ? 0 : Math.max(now - playing.last, 0);
-    playing.pos = (playing.pos + (dt / 1000) * ROWS_PER_SECOND * Number($("speed").value)) % rows;
+    const ahead = (dt / 1000) * ROWS_PER_SECOND * Number($("speed").value);
+    if (backAndForth(state.sweep) && rows > 1) {
+      const period = 2 * (rows - 1);
+      playing.phase = (playing.phase + ahead) % period;
+      state.playBack = playing.phase > rows - 1;
+      playing.pos = state.playBack ? period - playing.phase : playing.phase;
+      setRow(state.playBack ? Math.ceil(playing.pos) : Math.floor(playing.pos));
+    } else {
+      playing.pos = (playing.pos + ahead) % rows;
+      setRow(Math.floor(playing.pos));
+    }
     playing.last = now;
-    setRow(Math.floor(playing.pos));
     playing.frame = requestAnimationFrame(step);
   };
   playing.frame = requestAnimationFrame(step);
@@ -305,12 +339,12 @@ async function explain() {
   const key = `${gen}|${lang}|${k}`;
   if (state.explained === key || state.explaining === key || !state.solution) return;
   state.explaining = key;            // one request a position (an explanation can take seconds)
-  const move = k !== 0 && state.input && state.sweep ? { move: { [state.input.joint]: state.sweep.coordinate[k] } } : {};
+  const move = posedAt(k);
   let html, where = whereText(k);
   try {
     html = await post("explain", request({ lang, ...move }), "text");
   } catch (err) {
-    if (!move.move) { html = null; where = err.message; } else {
+    if (!move.move && !move.row) { html = null; where = err.message; } else {
       try {
         html = await post("explain", request({ lang }), "text");
         where = t("at-drawn-only");
@@ -369,7 +403,7 @@ function save(blob, name) {
 
 async function download(what) {
   $("downloads").open = false;
-  const here = state.row !== 0 && state.input && state.sweep ? { move: { [state.input.joint]: state.sweep.coordinate[state.row] } } : {};
+  const here = posedAt(state.row);
   try {
     if (what === "model") save(new Blob([editor.text], { type: "text/plain" }), `${state.name}.${state.fmt === "yaml" ? "yaml" : state.fmt}`);
     else if (what === "svg" || what === "png") {

@@ -1,6 +1,8 @@
 // Chosen quantities against the input coordinate, from the sweep: one small chart each,
 // a cursor at the slider, dead points (where the sweep stops assembling) and limit
-// positions (where a body's ω changes sign: its angle is at an extreme) marked.
+// positions (where a body's ω changes sign: its angle is at an extreme) marked. A motion
+// through the input's limit positions runs its coordinate back there: its curves go back
+// over the axis (a rocker's cycle is a loop), and those positions are dotted lines.
 import { el, niceStep, num, shown } from "./svg.js";
 
 const PAD = { left: 62, right: 74, top: 8, bottom: 34 };
@@ -110,6 +112,7 @@ export class Plot {
       this.series.push({ c, X, Y, dot, value });
     });
     this.deadPoints(X, svg, h);
+    this.inputLimits(X, svg, h);
     const base = h - PAD.bottom;
     el("line", { x1: PAD.left, x2: w - PAD.right, y1: base, y2: base, stroke: "#9aa5ad" }, svg);
     for (const x of ticks(x0, x1, Math.max(2, Math.floor((w - PAD.left - PAD.right) / 70)))) {   // the input axis
@@ -149,6 +152,15 @@ export class Plot {
       el("line", { x1: X(x), x2: X(x), y1: PAD.top, y2: h - PAD.bottom, stroke: "#c62828", "stroke-dasharray": "4 3" }, svg);
       const t = el("text", { x: X(x) + 3, y: PAD.top + 10, "font-size": 10, fill: "#c62828" }, svg);
       t.textContent = this.t("dead-point");
+    }
+  }
+
+  /** Where the input cannot go further and runs back (the sweep's `limits`): dotted lines. */
+  inputLimits(X, svg, h) {
+    for (const x of this.sweep.limits || []) {
+      const m = el("g", { class: "input-limit" }, svg);
+      el("line", { x1: X(x), x2: X(x), y1: PAD.top, y2: h - PAD.bottom, stroke: "#263238", "stroke-dasharray": "1 3" }, m);
+      el("title", {}, m).textContent = this.t("input-limit", { input: num(x) });
     }
   }
 
