@@ -21,6 +21,7 @@ export class Builder {
     this.sketch = { points: {}, bodies: {}, joints: [], drivers: [], ask: [], properties: {} };
     this.showGrid = true;
     this.pointerAt = null;
+    this.missing = null;           // what the model being built lacks (main.js: a hint's key)
     figure.onPick = (hit, at, e) => this.pick(hit, at, e);
     figure.onView = () => this.draw();
     figure.svg.addEventListener("pointermove", (e) => {
@@ -63,7 +64,7 @@ export class Builder {
     const tool = this.tools.find((x) => x.kind === this.tool);
     if (this.spatial) { this.hint.textContent = this.t("hint-3d"); return; }
     if (!tool) {
-      this.hint.textContent = this.sketch.problem ? this.t("hint-fix")
+      this.hint.textContent = this.sketch.problem ? this.t("hint-fix") : this.missing ? this.t(this.missing)
         : Object.keys(this.sketch.points).length ? this.t("hint-select") : this.t("hint-empty");
       return;
     }

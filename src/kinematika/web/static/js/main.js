@@ -55,7 +55,9 @@ async function analyse() {
   const sketch = sketched.status === "fulfilled" ? sketched.value : null;
   if (solved.status === "rejected") {
     const blank = sketch && !Object.keys(sketch.points).length && !sketch.problem;
-    showError(blank ? null : solved.reason);
+    const missing = blank ? null : stillBuilding(solved.reason, sketch);
+    showError(blank || missing ? null : solved.reason);
+    showMissing(missing, solved.reason);
     showWarnings([]);
     stale(true);
     state.solution = null;
@@ -75,6 +77,7 @@ async function analyse() {
     return;
   }
   showError(null);
+  showMissing(null);
   stale(false);
   state.solution = solved.value;
   showWarnings(state.solution.warnings || []);
@@ -177,6 +180,30 @@ function showWarnings(list) {
   }));
 }
 
+/** What a model being built still lacks, when that is all that keeps it from being solved:
+ * a moving body (`missing-body`), an input (`missing-input`), another input for one more
+ * degree of freedom (`missing-more-input`); null for a real error. */
+function stillBuilding(err, sketch) {
+  if (!err || err.kind !== "mobility" || !sketch || sketch.problem) return null;
+  if (!Object.values(sketch.bodies).some((b) => !b.frame)) return "missing-body";
+  if (!sketch.drivers.length) return "missing-input";
+  return /drivers give/.test(err.message || "") ? "missing-more-input" : null;
+}
+
+/** A hint (not an error) of what to add next; the degrees of freedom as the message says. */
+function showMissing(key, err = null) {
+  const box = $("missing");
+  box.hidden = !key;
+  box.textContent = key ? t(key) : "";
+  builder.missing = key;
+  builder.say();
+  if (!key) return;
+  const said = /(\d+) degrees? of freedom/.exec((err && err.message) || "");
+  const dof = $("dof");
+  dof.textContent = t("dof", { n: said && key !== "missing-body" ? said[1] : "–" });
+  dof.classList.remove("bad");
+}
+
 function showError(err) {
   const box = $("error");
   if (!err) {
@@ -209,6 +236,7 @@ function load(text, fmt, name) {
   remember();
   figure.keep = null;
   builder.select(null);
+  forget();
   state.fmt = fmt || "yaml";
   state.name = (name || "model").replace(/\.(ya?ml|toml|json)$/, "");
   $("format").value = state.fmt;
@@ -216,6 +244,20 @@ function load(text, fmt, name) {
   remember();
   state.row = 0;
   analyse();
+}
+
+/** A new document (New, an example, a link): nothing of the last model stays on the page,
+ * neither its answers nor its plot nor its explanation. */
+function forget() {
+  state.solution = state.sweep = state.scene = state.input = null;
+  state.explained = state.explanation = null;
+  answers.clear();
+  plot.set(null);
+  $("plot-box").hidden = true;
+  $("answers-where").textContent = "";
+  $("answers-stale").hidden = true;
+  $("explanation-where").textContent = "";
+  $("explanation").srcdoc = "";
 }
 
 // the slider ----------------------------------------------------------------------------
@@ -334,6 +376,7 @@ async function drag(name, to, final) {
   if (to === null) {                       // a drag starts: edits are made at the drawn position
     if (playing) play();
     if (state.row !== 0) setRow(0);
+    batch.begin();                           // the whole drag is one step of Undo
     return;
   }
   dragWanted = { name, to, final };
@@ -353,7 +396,7 @@ async function drag(name, to, final) {
   }
   dragBusy = false;
   figure.release();
-  if (!figure.drag) { listAssemblies(state.gen); explainSoon(); }
+  if (!figure.drag) { batch.end(); listAssemblies(state.gen); explainSoon(); }
 }
 
 // downloads and the link ----------------------------------------------------------------------
@@ -441,8 +484,17 @@ document.addEventListener("keydown", (e) => {
 const past = [], future = [];       // earlier and undone states: [text, format]
 let last = null;
 
-/** Keep the state before a change, for undo (typing is kept once per pause). */
+/** One step of Undo for an action made of many edits (a drag): between `begin` and `end`
+ * the text changes without being remembered; `end` remembers the state before `begin`. */
+const batch = {
+  open: false,
+  begin() { remember(); this.open = true; },
+  end() { if (!this.open) return; this.open = false; remember(); },
+};
+
+/** Keep the state before a change, for undo (typing is kept once per pause; a drag once). */
 function remember() {
+  if (batch.open) return;
   const now = [editor.text, state.fmt];
   if (last !== null && (last[0] !== now[0] || last[1] !== now[1])) {
     past.push(last);

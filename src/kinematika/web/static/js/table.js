@@ -73,6 +73,13 @@ export class Answers {
     this.show(0);
   }
 
+  /** No answers (a new model, not solved yet). */
+  clear() {
+    this.cells = [];
+    this.solution = null;
+    this.root.replaceChildren();
+  }
+
   /** The sweep's series an answer follows, or null when only a solve gives it. */
   liveSource(kind, ask) {
     if (!this.sweep || !LIVE[kind] || (ask.relative_to && ask.relative_to !== this.frame())) return null;

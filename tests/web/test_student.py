@@ -1,0 +1,147 @@
+"""The page as a student meets it (issue 35): one drag is one step of Undo; a second kind of
+drag turns the mechanism by hand along its motion, leaving the model as it is; names in the
+page's language, and renaming; no alarm while building, and New forgets the last model;
+words that agree; one angle convention; a phone that shows everything.
+
+One server and one browser for the session (conftest), one page for the module (a student
+goes on using it). Expected numbers are derived here by hand, never read from the tool.
+"""
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+import yaml
+
+from kinematika.web.strings import page_strings
+from tests.conftest import BROWSER_WAIT
+
+from .test_build import blank, click_at, click_body, click_point, example, selected, settled, step, text, tool, typed
+
+pytestmark = pytest.mark.browser
+
+
+@pytest.fixture(scope="module")
+def shared_page(browser, server):
+    context = browser.new_context(viewport={"width": 1400, "height": 900})
+    pg = context.new_page()
+    pg.set_default_timeout(BROWSER_WAIT)          # a hang detector
+    errors: list[str] = []
+    pg.on("pageerror", lambda e: errors.append(str(e)))
+    pg.goto(server.url)
+    settled(pg, 0)
+    yield pg, errors
+    context.close()
+
+
+@pytest.fixture
+def page(shared_page):
+    pg, errors = shared_page
+    if pg.get_by_test_id("ui-language").input_value() != "en":
+        step(pg, lambda: pg.get_by_test_id("ui-language").select_option("en"))
+    pg.get_by_test_id("tool-select").click()
+    yield pg
+    assert not errors, errors
+
+
+def words(lang: str = "en") -> dict[str, str]:
+    return page_strings(lang)["messages"]
+
+
+def editor(pg) -> str:
+    return pg.get_by_test_id("model-editor").input_value()
+
+
+def handle(pg, name: str) -> tuple[float, float]:
+    """The centre of a point's handle on the screen (CSS pixels)."""
+    box = pg.locator(f'#figure [data-handle="{name}"]').first.bounding_box()
+    return box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+
+
+def idle(pg) -> None:
+    """Wait until no drag is under way and the last analysis is shown."""
+    pg.wait_for_function("() => !window.kinematika.figure.drag && document.getElementById('busy').hidden")
+
+
+def analysed_after(pg, gen: int) -> None:
+    pg.wait_for_function(f"() => window.kinematika.state.gen > {gen} && document.getElementById('busy').hidden")
+
+
+# 1. one drag, one step of Undo ---------------------------------------------------------------
+def test_one_drag_is_one_step_of_undo(page):
+    """The crank's end dragged in five moves, each edited and solved before the next (five
+    edits of the text): one press of Undo brings the text from before the drag back, one
+    of Redo the text after it."""
+    example(page, "four_bar.yaml")
+    before = editor(page)
+    x, y = handle(page, "A")
+    page.mouse.move(x, y)
+    page.mouse.down()
+    edits = 0
+    for i in range(1, 6):
+        gen = page.evaluate("window.kinematika.state.gen")
+        page.mouse.move(x + 6 * i, y - 5 * i)
+        analysed_after(page, gen)                   # this place edited into the text, solved
+        edits += 1
+    gen = page.evaluate("window.kinematika.state.gen")
+    page.mouse.up()
+    idle(page)
+    after = editor(page)
+    assert after != before and edits == 5
+    step(page, lambda: page.get_by_test_id("undo").click())
+    assert editor(page) == before
+    step(page, lambda: page.get_by_test_id("redo").click())
+    assert editor(page) == after
+    assert gen > 0
+
+
+# 4. no alarm while building; New forgets the last model ---------------------------------------
+def test_what_is_missing_while_building_is_a_hint_not_an_error(page):
+    """A pivot alone: nothing moves yet; a crank on it: an input is missing. Both said as a
+    hint (no red error box, the degrees of freedom not marked bad); once the crank is the
+    input, the hint goes and the model is solved."""
+    blank(page)
+    tool(page, "pivot", lambda: click_at(page, (0, 0)))
+    missing = page.get_by_test_id("missing")
+    assert missing.is_visible() and missing.inner_text() == words()["missing-body"]
+    assert page.get_by_test_id("error").is_hidden()
+    tool(page, "link", lambda: click_point(page, "O1"), lambda: click_at(page, (0.04, 0.02)))
+    assert missing.inner_text() == words()["missing-input"]
+    assert page.get_by_test_id("error").is_hidden()
+    assert "bad" not in page.get_by_test_id("dof").get_attribute("class")
+    assert page.get_by_test_id("dof").inner_text() == words()["dof"].replace("{$n}", "1")
+    page.get_by_test_id("tool-select").click()
+    assert page.get_by_test_id("build-hint").inner_text() == words()["missing-input"]
+    selected(page, lambda: click_body(page, "O1", "A"), "link1")
+    page.get_by_test_id("properties").get_by_test_id("input-omega").fill("10")
+    step(page, lambda: page.get_by_test_id("set-input").click())
+    assert missing.is_hidden() and page.get_by_test_id("error").is_hidden()
+    assert page.evaluate("window.kinematika.state.solution.dof") == 1
+
+
+def test_a_real_error_while_building_is_still_an_error(page):
+    """Two inputs on a one-degree-of-freedom crank conflict: that is an error, in red."""
+    blank(page)
+    tool(page, "pivot", lambda: click_at(page, (0, 0)))
+    tool(page, "link", lambda: click_point(page, "O1"), lambda: click_at(page, (0.04, 0.02)))
+    page.get_by_test_id("tool-select").click()
+    selected(page, lambda: click_body(page, "O1", "A"), "link1")
+    page.get_by_test_id("properties").get_by_test_id("input-omega").fill("10")
+    step(page, lambda: page.get_by_test_id("set-input").click())
+    selected(page, lambda: click_point(page, "O1"), "O1")
+    page.get_by_test_id("properties").get_by_test_id("input-rate-j1").fill("5")
+    step(page, lambda: page.get_by_test_id("set-input-j1").click())
+    assert page.get_by_test_id("error").is_visible()
+    assert page.get_by_test_id("missing").is_hidden()
+
+
+def test_new_forgets_the_last_models_answers_and_explanation(page):
+    example(page, "four_bar.yaml")
+    page.wait_for_function("() => document.getElementById('explanation').srcdoc.length > 0")
+    assert page.get_by_test_id("answers").locator("td").count() > 0
+    blank(page)
+    assert page.get_by_test_id("answers").locator("td").count() == 0
+    assert page.evaluate("document.getElementById('explanation').srcdoc") == ""
+    assert page.locator("#answers-stale").is_hidden() and page.locator("#plot-box").is_hidden()
+    assert page.get_by_test_id("error").is_hidden()
