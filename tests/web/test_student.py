@@ -145,3 +145,60 @@ def test_new_forgets_the_last_models_answers_and_explanation(page):
     assert page.evaluate("document.getElementById('explanation').srcdoc") == ""
     assert page.locator("#answers-stale").is_hidden() and page.locator("#plot-box").is_hidden()
     assert page.get_by_test_id("error").is_hidden()
+
+
+# 5. words that agree ---------------------------------------------------------------------------
+def field_words(pg, testid: str) -> list[str]:
+    """The words before each field `testid` of the properties panel."""
+    return pg.get_by_test_id("properties").locator(f"input[data-testid='{testid}']").evaluate_all(
+        "fields => fields.map((f) => f.previousElementSibling.textContent)")
+
+
+def template(pg, name: str) -> None:
+    pg.locator("#new-menu summary").click()
+    step(pg, lambda: pg.get_by_test_id(f"new-{name}").click())
+
+
+def test_one_quantity_has_one_word_and_one_place(page):
+    """The offset slider-crank stated by its dimensions: the rod's length AB is the same words
+    and the same value on the rod and on its end B; the guide's height is typed on the
+    slider only (B says where); the crank's length and angle read the same on the crank and
+    on A."""
+    template(page, "slider-crank")
+    selected(page, lambda: click_body(page, "A", "B"), "rod")
+    rod = field_words(page, "prop-length")
+    value = page.get_by_test_id("properties").locator("input[data-testid='prop-length']").input_value()
+    assert rod == [words()["prop-length"].replace("{$about}", "AB") + " (l)"]      # the parameter it sets
+    selected(page, lambda: click_point(page, "B"), "B")
+    assert field_words(page, "prop-length") == rod
+    assert page.get_by_test_id("properties").locator("input[data-testid='prop-length']").input_value() == value == "0.15"
+    assert field_words(page, "prop-line-y") == [] and field_words(page, "prop-direction") == []
+    assert page.get_by_test_id("properties").get_by_test_id("prop-guide-on").inner_text() == \
+        words()["prop-guide-on"].replace("{$about}", "slider")
+    selected(page, lambda: click_point(page, "A"), "A")
+    at_a = field_words(page, "prop-length") + field_words(page, "prop-angle")
+    selected(page, lambda: click_body(page, "O", "A"), "crank")
+    assert field_words(page, "prop-length") + field_words(page, "prop-angle") == at_a == \
+        [words()["prop-length"].replace("{$about}", "OA") + " (r)", words()["prop-angle"].replace("{$about}", "OA") + " (theta)"]
+
+
+def test_the_slider_body_has_its_guide(page):
+    template(page, "slider-crank")
+    page.get_by_test_id("tool-select").click()
+    block = page.locator("#figure g.body[data-body=slider]").bounding_box()     # beside the pin's handle
+    selected(page, lambda: page.mouse.click(block["x"] + 4, block["y"] + block["height"] / 2), "slider")
+    assert field_words(page, "prop-line-y") == [words()["prop-line-y"]]
+
+
+def test_each_click_of_a_tool_has_its_own_hint(page):
+    """The Link tool asks for its first end, then for its second."""
+    blank(page)
+    tool(page, "pivot", lambda: click_at(page, (0, 0)))
+    page.get_by_test_id("tool-link").click()
+    hint = page.get_by_test_id("build-hint")
+    first = hint.inner_text()
+    click_point(page, "O1")
+    second = hint.inner_text()
+    name = words()["tool-link"]
+    assert (first, second) == (f"{name}: {words()['pick-link-1']}", f"{name}: {words()['pick-link-2']}")
+    page.keyboard.press("Escape")

@@ -68,8 +68,7 @@ export class Builder {
         : Object.keys(this.sketch.points).length ? this.t("hint-select") : this.t("hint-empty");
       return;
     }
-    const need = tool.picks[this.picks.length];
-    this.hint.textContent = `${this.t(`tool-${tool.kind}`)}: ${this.t(`pick-${need}`)}`;
+    this.hint.textContent = `${this.t(`tool-${tool.kind}`)}: ${this.t(`pick-${tool.kind}-${this.picks.length + 1}`)}`;
   }
 
   // picks -------------------------------------------------------------------------------
@@ -262,10 +261,18 @@ export class Builder {
   }
 
   field(row) {
+    const about = row.of ? segment(row.of) : row.about ? shown(row.about) : "";
+    if (row.kind === "note") {                   // said here, typed elsewhere (a pin's guide)
+      const p = document.createElement("p");
+      p.className = "muted";
+      p.dataset.testid = row.label;
+      p.textContent = this.t(row.label, { about });
+      return p;
+    }
     const label = document.createElement("label");
     label.className = "prop";
     const words = document.createElement("span");
-    words.textContent = this.t(row.label, { about: row.about ? shown(row.about) : "", name: row.parameter ? shown(row.parameter) : "" });
+    words.textContent = this.t(row.label, { about, name: row.parameter ? shown(row.parameter) : "" });
     if (row.parameter) words.textContent += ` (${shown(row.parameter)})`;
     const input = document.createElement("input");
     input.type = "text";
@@ -361,6 +368,11 @@ export class Builder {
     }
     return box;
   }
+}
+
+/** Two points as a segment's name: O2A for short names (as a textbook writes it), else O2–A. */
+export function segment([a, b]) {
+  return a.length <= 3 && b.length <= 3 ? `${shown(a)}${shown(b)}` : `${shown(a)}–${shown(b)}`;
 }
 
 function button(text, testid, onClick) {
