@@ -39,7 +39,8 @@ def shared_page(browser, server):
 def page(shared_page):
     pg, errors = shared_page
     if pg.get_by_test_id("ui-language").input_value() != "en":
-        step(pg, lambda: pg.get_by_test_id("ui-language").select_option("en"))
+        pg.get_by_test_id("ui-language").select_option("en")
+        pg.wait_for_function("() => document.documentElement.lang === 'en'")
     pg.get_by_test_id("tool-select").click()
     yield pg
     assert not errors, errors
@@ -202,3 +203,52 @@ def test_each_click_of_a_tool_has_its_own_hint(page):
     name = words()["tool-link"]
     assert (first, second) == (f"{name}: {words()['pick-link-1']}", f"{name}: {words()['pick-link-2']}")
     page.keyboard.press("Escape")
+
+
+# 3. names ---------------------------------------------------------------------------------------
+def test_a_new_model_speaks_the_pages_language(page):
+    """On the Basque page a new model is `Mekanismo berria` and its fixed body `lurra`; a
+    blank model made on the English page and not begun becomes the Basque one when the
+    page turns Basque."""
+    blank(page)
+    assert "name: New mechanism" in editor(page)
+    step(page, lambda: page.get_by_test_id("ui-language").select_option("eu"))
+    page.wait_for_function("() => document.querySelector('[data-testid=model-editor]').value.includes('Mekanismo berria')")
+    tool(page, "pivot", lambda: click_at(page, (0, 0)))
+    tool(page, "link", lambda: click_point(page, "O1"), lambda: click_at(page, (0.04, 0.02)))
+    model = text(page)
+    assert (model["name"], model["frame"]) == ("Mekanismo berria", "lurra")
+    assert model["bodies"] == {"lurra": ["O1"], "barra1": ["O1", "A"]}
+    assert model["joints"][0]["bodies"] == ["lurra", "barra1"]
+
+
+def rename_field(pg):
+    return pg.get_by_test_id("properties").locator("input[data-testid=rename]")
+
+
+def test_a_body_and_a_point_are_renamed_from_the_properties(page):
+    """The slider-crank's rod becomes `biela` and its end B becomes `C`: everywhere the model
+    names them (bodies, joints, questions, the pin's construction), and the answers say so;
+    the rod's name in Spanish is typed into the model's `names:`."""
+    template(page, "slider-crank")
+    selected(page, lambda: click_body(page, "A", "B"), "rod")
+    field = rename_field(page)
+    assert field.input_value() == "rod"
+    step(page, lambda: (field.fill("biela"), field.press("Enter")))
+    page.get_by_test_id("properties").get_by_test_id("selected").filter(has_text="biela").wait_for()
+    model = text(page)
+    assert "rod" not in model["bodies"] and model["bodies"]["biela"] == ["A", "B"]
+    assert [j["bodies"] for j in model["joints"]][1:3] == [["crank", "biela"], ["biela", "slider"]]
+    assert model["ask"][2] == {"omega": "biela"}
+    assert "biela" in page.get_by_test_id("answers").locator("td.q").all_inner_texts()[2]
+    page.get_by_test_id("properties").get_by_test_id("names-per-language").locator("summary").click()
+    spanish = page.get_by_test_id("properties").locator("input[data-testid=name-es]")
+    step(page, lambda: (spanish.fill("la biela"), spanish.press("Enter")))
+    assert text(page)["names"] == {"es": {"bodies": {"biela": "la biela"}}}
+    selected(page, lambda: click_point(page, "B"), "B")
+    step(page, lambda: (rename_field(page).fill("C"), rename_field(page).press("Enter")))
+    model = text(page)
+    assert "B" not in model["points"] and model["points"]["C"]["circle"] == ["A", "l"]
+    assert model["bodies"]["biela"] == ["A", "C"] and model["bodies"]["slider"] == ["C"]
+    assert model["joints"][2]["at"] == "C" and model["ask"][:2] == [{"velocity": "C"}, {"acceleration": "C"}]
+    assert page.get_by_test_id("error").is_hidden()

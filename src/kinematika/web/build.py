@@ -19,16 +19,17 @@ import numpy as np
 from ..errors import KinematikaError
 from . import document
 from .palette import Context, tool
+from .rename import name_in, rename
 from .tree import Tree, degrees, name_of, number
 
-ACTIONS = ("add", "set", "delete", "drive", "ask")
+ACTIONS = ("add", "set", "delete", "drive", "ask", "rename", "name")
 QUESTIONS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose")
 # the words new bodies are named with, per language (a name is an identifier in the text)
 NAMES = {
-    "en": {"link": "link", "slider": "slider", "wheel": "wheel", "gear": "gear"},
-    "es": {"link": "barra", "slider": "corredera", "wheel": "rueda", "gear": "engranaje"},
-    "ca": {"link": "barra", "slider": "corredora", "wheel": "roda", "gear": "engranatge"},
-    "eu": {"link": "barra", "slider": "irristaria", "wheel": "gurpila", "gear": "engranajea"},
+    "en": {"link": "link", "slider": "slider", "wheel": "wheel", "gear": "gear", "ground": "ground"},
+    "es": {"link": "barra", "slider": "corredera", "wheel": "rueda", "gear": "engranaje", "ground": "bancada"},
+    "ca": {"link": "barra", "slider": "corredora", "wheel": "roda", "gear": "engranatge", "ground": "terra"},
+    "eu": {"link": "barra", "slider": "irristaria", "wheel": "gurpila", "gear": "engranajea", "ground": "lurra"},
 }
 
 
@@ -47,8 +48,9 @@ def apply(text: str, fmt: str, op: dict[str, Any], lang: str = "en") -> tuple[st
                 not all(_is_pick(p) for p in picks):
             raise KinematikaError("usage", f"the {t.kind} tool takes {len(t.picks)} picks "
                                   f"({', '.join(t.picks)})", "picks")
-        ctx = Context(tree, positions(text, fmt), NAMES.get(lang, NAMES["en"]),
-                      op.get("values") or {})
+        words = NAMES.get(lang, NAMES["en"])
+        _name_the_frame(tree, words["ground"])
+        ctx = Context(tree, positions(text, fmt), words, op.get("values") or {})
         selected = t.write(ctx, picks)
     elif action == "set":
         for path in [op.get("path"), *(op.get("also") or [])]:
@@ -57,9 +59,20 @@ def apply(text: str, fmt: str, op: dict[str, Any], lang: str = "en") -> tuple[st
         _delete(tree, str(op.get("element", "")))
     elif action == "drive":
         _drive(tree, op)
+    elif action == "rename":
+        selected = rename(tree, str(op.get("element", "")), op.get("to"))
+    elif action == "name":
+        name_in(tree, str(op.get("element", "")), op.get("lang"), op.get("text"))
     else:
         _ask(tree, str(op.get("question", "")), str(op.get("target", "")))
     return document.dump(tree.root, fmt), selected
+
+
+def _name_the_frame(tree: Tree, word: str) -> None:
+    """A model whose first body is being placed: its fixed body is named in the student's
+    language (`frame: lurra`), unless the model names it already."""
+    if word != "ground" and tree.root.get("frame") is None and not (tree.root.get("bodies") or {}):
+        document.put(tree.root, "frame", word)
 
 
 def _is_pick(p: Any) -> bool:
@@ -126,7 +139,8 @@ def sketch(text: str, fmt: str) -> dict[str, Any]:
             "drivers": [document.plain(d) for d in tree.root.get("drivers") or []],
             "ask": [document.plain(a) for a in tree.root.get("ask") or []],
             "properties": properties(tree, values), "problem": problem,
-            "name": str(tree.root.get("name") or "")}
+            "name": str(tree.root.get("name") or ""),
+            "names": document.plain(tree.root.get("names") or {})}
 
 
 def rate_unit(joint_type: str) -> Optional[str]:

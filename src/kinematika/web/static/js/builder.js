@@ -238,6 +238,7 @@ export class Builder {
     title.textContent = this.t(`element-${kind}`, { name: shown(name) });
     title.dataset.testid = "selected";
     body.appendChild(title);
+    if (kind === "point" || kind === "body") body.appendChild(this.naming(kind, name));
     const rows = this.sketch.properties[key] || [];
     const form = document.createElement("div");
     form.className = "props";
@@ -292,6 +293,40 @@ export class Builder {
     input.addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); input.blur(); } });
     label.append(words, input, unit);
     return label;
+  }
+
+  /** The element's name (renamed everywhere the model names it) and its names per language
+   * (the model's `names:`: how the explanations call a body, what a point is). */
+  naming(kind, name) {
+    const box = document.createElement("div");
+    box.className = "naming";
+    const { label, input } = this.numberField(this.t("prop-name"), "rename", name, "");
+    input.inputMode = "text";
+    input.spellcheck = false;
+    input.addEventListener("change", () => {
+      const to = input.value.trim();
+      if (to && to !== name) this.act({ op: "rename", element: `${kind}:${name}`, to });
+    });
+    input.addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); input.blur(); } });
+    box.appendChild(label);
+    const more = document.createElement("details");
+    more.dataset.testid = "names-per-language";
+    const summary = document.createElement("summary");
+    summary.textContent = this.t(kind === "body" ? "names-body" : "names-point");
+    more.appendChild(summary);
+    const section = kind === "body" ? "bodies" : "points";
+    for (const o of document.querySelectorAll("#ui-language option")) {
+      const now = ((this.sketch.names || {})[o.value] || {})[section] || {};
+      const f = this.numberField(o.textContent, `name-${o.value}`, now[name] ?? "", "");
+      f.input.inputMode = "text";
+      f.input.addEventListener("change", () => this.act({ op: "name", element: `${kind}:${name}`, lang: o.value, text: f.input.value }));
+      f.input.addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); f.input.blur(); } });
+      more.appendChild(f.label);
+    }
+    more.open = this.namesOpen || false;
+    more.addEventListener("toggle", () => { this.namesOpen = more.open; });
+    box.appendChild(more);
+    return box;
   }
 
   /** Make a moving body the input: its ω and α. */

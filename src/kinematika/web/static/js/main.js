@@ -249,7 +249,7 @@ function load(text, fmt, name) {
 /** A new document (New, an example, a link): nothing of the last model stays on the page,
  * neither its answers nor its plot nor its explanation. */
 function forget() {
-  state.solution = state.sweep = state.scene = state.input = null;
+  state.solution = state.sweep = state.scene = state.input = state.blank = null;
   state.explained = state.explanation = null;
   answers.clear();
   plot.set(null);
@@ -560,6 +560,7 @@ async function newModel(name) {
   $("example").value = "";
   history.replaceState(null, "", location.pathname);
   load(tpl.model, tpl.format, name === "blank" ? "model" : name);
+  state.blank = name === "blank" ? tpl.model : null;
   if (name === "blank") figure.clear([-0.1, -0.1, 0.3, 0.2]);
 }
 
@@ -571,7 +572,8 @@ async function setLanguage(code) {
   assemblyTitle();
   builder.say();
   builder.showProperties();
-  if (state.solution) analyse(); else explainSoon();
+  if (state.blank && editor.text === state.blank) newModel("blank");   // not begun: in the new language
+  else if (state.solution) analyse(); else explainSoon();
 }
 
 async function start() {
