@@ -252,3 +252,73 @@ def test_a_body_and_a_point_are_renamed_from_the_properties(page):
     assert model["bodies"]["biela"] == ["A", "C"] and model["bodies"]["slider"] == ["C"]
     assert model["joints"][2]["at"] == "C" and model["ask"][:2] == [{"velocity": "C"}, {"acceleration": "C"}]
     assert page.get_by_test_id("error").is_hidden()
+
+
+# 2. turning the mechanism by hand ---------------------------------------------------------------
+def screen(pg, xy) -> tuple[float, float]:
+    return tuple(pg.evaluate(f"window.kinematika.toScreen({json.dumps(list(xy))})"))
+
+
+def row(pg) -> int:
+    return int(pg.get_by_test_id("input-slider").input_value())
+
+
+def test_the_crank_is_turned_by_hand_and_the_model_stays(page):
+    """The four-bar's crank pin A (O2A = 1, drawn at 90°) dragged by hand along a quarter
+    turn to (−1, 0): the mechanism follows, A under the pointer, the slider at +90° (row
+    90 of the 360 one-degree steps: A = (cos(90° + k), sin(90° + k)) is (−1, 0) at k = 90),
+    and the model's text is what it was."""
+    example(page, "four_bar.yaml")
+    before = editor(page)
+    page.get_by_test_id("by-hand").click()
+    assert page.get_by_test_id("build-hint").inner_text() == words()["hint-by-hand"]
+    x, y = handle(page, "A")
+    assert (x, y) == pytest.approx(screen(page, (0, 1)), abs=1)
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for i in range(1, 11):                             # along the crank's circle, 9° at a time
+        t = math.radians(90 + 9 * i)
+        page.mouse.move(*screen(page, (math.cos(t), math.sin(t))))
+    page.mouse.up()
+    assert row(page) == 90
+    assert handle(page, "A") == pytest.approx(screen(page, (-1, 0)), abs=1.5)
+    page.get_by_test_id("by-hand").click()
+    idle(page)
+    assert editor(page) == before
+
+
+def test_shift_drag_stops_the_rocker_at_its_limit_position(page):
+    """The rocker's end B dragged with Shift far beyond where it can go: it stops at the
+    limit position, crank and coupler in line. By hand: B on the circle of radius 3 about
+    O4 = (4, 0) with |O2B| = a + b = 5 is (4, 3) (the upper branch); the crank is then at
+    atan2(3, 4) = 36.87°, 53.13° before its drawn 90°: row 307 of 360 (a full turn,
+    307° ahead)."""
+    example(page, "four_bar.yaml")
+    before = editor(page)
+    x, y = handle(page, "B")
+    page.keyboard.down("Shift")
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for i in range(1, 9):                              # towards (6, 1), past the limit
+        page.mouse.move(*screen(page, (3.489 + 2.511 * i / 8, 2.956 - 1.956 * i / 8)))
+    page.mouse.up()
+    page.keyboard.up("Shift")
+    assert abs(row(page) - (360 - math.degrees(math.atan2(4, 3)))) <= 1
+    b = json.loads(page.get_by_test_id("answers").locator('td[data-key="points.B@coupler.position"]')
+                   .get_attribute("data-value"))
+    assert b == pytest.approx([4, 3], abs=2e-3)        # within a degree of crank of the limit
+    idle(page)
+    assert editor(page) == before
+
+
+def test_a_fixed_point_does_not_turn(page):
+    example(page, "four_bar.yaml")
+    page.get_by_test_id("by-hand").click()
+    x, y = handle(page, "O4")
+    page.mouse.move(x, y)
+    page.mouse.down()
+    page.mouse.move(x + 30, y + 30)
+    page.mouse.up()
+    assert row(page) == 0
+    page.locator("#toast").filter(has_text="O4").wait_for()
+    page.get_by_test_id("by-hand").click()

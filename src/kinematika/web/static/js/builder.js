@@ -65,6 +65,7 @@ export class Builder {
     if (this.spatial) { this.hint.textContent = this.t("hint-3d"); return; }
     if (!tool) {
       this.hint.textContent = this.sketch.problem ? this.t("hint-fix") : this.missing ? this.t(this.missing)
+        : this.byHand ? this.t("hint-by-hand")
         : Object.keys(this.sketch.points).length ? this.t("hint-select") : this.t("hint-empty");
       return;
     }

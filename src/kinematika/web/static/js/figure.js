@@ -20,6 +20,8 @@ export class Figure {
     this.t = t;                  // the page's words (i18n.js)
     this.onPick = null;          // the builder's: a click on a point, a body or a place
     this.onView = null;          // called after the view changed (zoom, pan, a new frame)
+    this.onTurn = null;          // a point dragged along the motion (by hand, or with Shift): (name, at, phase)
+    this.byHand = false;         // every drag of a point moves the mechanism, not the model
     this.layers = { velocity: true, acceleration: true, centres: true, curvature: true, traces: true };
     this.scene = null;
     this.sweep = null;
@@ -674,7 +676,11 @@ export class Figure {
       if (e.button === 0 && this.onPick && this.onPick(hit, at, e)) { e.preventDefault(); return; }
       e.preventDefault();
       svg.setPointerCapture(e.pointerId);
-      if (e.button === 0 && hit.point && this.canDrag(hit.point)) {
+      if (e.button === 0 && hit.point && (this.byHand || e.shiftKey) && this.onTurn) {
+        act = { kind: "turn", id: e.pointerId, name: hit.point };          // the mechanism moves, not the model
+        svg.classList.add("turning");
+        this.onTurn(hit.point, at, "start");
+      } else if (e.button === 0 && hit.point && this.canDrag(hit.point)) {
         this.hold();
         this.drag = { name: hit.point, at: this.toModel(e) };
         act = { kind: "drag", id: e.pointerId, x: e.clientX, y: e.clientY, moved: false };
@@ -684,7 +690,9 @@ export class Figure {
     });
     svg.addEventListener("pointermove", (e) => {
       if (!act || e.pointerId !== act.id) return;
-      if (act.kind === "drag") {
+      if (act.kind === "turn") {
+        this.onTurn(act.name, this.toModel(e, false), "move");
+      } else if (act.kind === "drag") {
         if (!act.moved && Math.hypot(e.clientX - act.x, e.clientY - act.y) < 3) return;   // a click, not a drag
         if (!act.moved) { act.moved = true; svg.classList.add("dragging"); this.onDrag(this.drag.name, null, false); }
         this.drag.at = this.toModel(e);
@@ -702,7 +710,10 @@ export class Figure {
       if (!act || e.pointerId !== act.id) return;
       const was = act;
       act = null;
-      if (was.kind === "drag" && !was.moved) {
+      if (was.kind === "turn") {
+        svg.classList.remove("turning");
+        this.onTurn(was.name, this.toModel(e, false), "end");
+      } else if (was.kind === "drag" && !was.moved) {
         this.drag = null;
       } else if (was.kind === "drag") {
         const name = this.drag.name, at = this.toModel(e);

@@ -9,6 +9,7 @@ import { Plot } from "./plot.js";
 import { fragment, fromFragment } from "./link.js";
 import { num, shown } from "./svg.js";
 import { Builder } from "./builder.js";
+import { followRow, movingKey } from "./turn.js";
 import * as i18n from "./i18n.js";
 
 const t = i18n.t;
@@ -27,6 +28,7 @@ const answers = new Answers($("answers"), t);
 const plot = new Plot($("plot"), $("plot-pick"), t);
 const builder = new Builder(figure, $("palette"), $("properties-body"), $("build-hint"), t, build);
 const slider = $("input-slider");
+figure.onTurn = turn;
 window.kinematika = { state, timing, figure, builder,
   /** The page coordinates (CSS pixels) of a model point: for tests that click on the grid. */
   toScreen: ([x, y]) => {
@@ -69,7 +71,7 @@ async function analyse() {
       $("coordinate").textContent = "–";
       $("model-name").textContent = shown(sketch.name || t("model"), 120);
       $("plot-box").hidden = true;
-      slider.disabled = $("play").disabled = true;
+      slider.disabled = $("play").disabled = $("by-hand").disabled = true;
       $("notes").textContent = "";
       if (blank) $("dof").textContent = t("dof", { n: "–" });
     }
@@ -104,7 +106,7 @@ async function analyse() {
   plot.set(state.sweep, state.input ? state.input.unit : "deg", frame);
   $("plot-box").hidden = !state.sweep;
   slider.max = String(rows - 1);
-  slider.disabled = $("play").disabled = !state.sweep;
+  slider.disabled = $("play").disabled = $("by-hand").disabled = !state.sweep;
   slider.title = state.sweepError ? t("no-sweep", { why: state.sweepError }) : "";
   setRow(state.row);
   if (sketch) builder.update(sketch, !!state.scene, state.solution.dimension);
@@ -399,6 +401,34 @@ async function drag(name, to, final) {
   if (!figure.drag) { batch.end(); listAssemblies(state.gen); explainSoon(); }
 }
 
+// turning the mechanism by hand ----------------------------------------------------------------
+let turning = null;
+
+/** A point dragged along the motion (by hand, or with Shift): the mechanism follows it
+ * through the sweep's rows as far as it can move (turn.js); the model is not changed. */
+function turn(name, at, phase) {
+  if (phase === "start") {
+    if (playing) play();
+    const frame = state.scene && Object.keys(state.scene.bodies).find((b) => state.scene.bodies[b].frame);
+    const key = state.sweep && state.scene && state.scene.dimension === 2 ? movingKey(state.sweep, name, frame) : null;
+    turning = key ? { key } : null;
+    if (!key) toast(t(state.sweep ? "turn-fixed" : "turn-no-motion", { point: shown(name) }));
+    return;
+  }
+  if (!turning) return;
+  const k = followRow(state.sweep, turning.key, at, state.row);
+  if (k !== state.row) setRow(k);
+  if (phase === "end") turning = null;
+}
+
+function byHand(on) {
+  figure.byHand = on;
+  builder.byHand = on;
+  $("by-hand").setAttribute("aria-pressed", String(on));
+  $("figure").classList.toggle("hand", on);
+  builder.say();
+}
+
 // downloads and the link ----------------------------------------------------------------------
 function save(blob, name) {
   const a = document.createElement("a");
@@ -450,6 +480,7 @@ function toast(text) {
 // wiring ----------------------------------------------------------------------------------
 slider.addEventListener("input", () => { if (playing) play(); setRow(Number(slider.value)); });
 $("play").addEventListener("click", play);
+$("by-hand").addEventListener("click", () => byHand(!figure.byHand));
 for (const pick of document.querySelectorAll("[data-lang]")) {
   pick.addEventListener("change", (e) => setLanguage(e.target.value));
 }
