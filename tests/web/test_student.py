@@ -322,3 +322,67 @@ def test_a_fixed_point_does_not_turn(page):
     assert row(page) == 0
     page.locator("#toast").filter(has_text="O4").wait_for()
     page.get_by_test_id("by-hand").click()
+
+
+# 7. a phone ------------------------------------------------------------------------------------
+@pytest.fixture
+def phone(browser, server):
+    context = browser.new_context(viewport={"width": 390, "height": 844})
+    pg = context.new_page()
+    pg.set_default_timeout(BROWSER_WAIT)
+    errors: list[str] = []
+    pg.on("pageerror", lambda e: errors.append(str(e)))
+    pg.goto(server.url)
+    pg.wait_for_function("() => window.kinematika && window.kinematika.state.solution && document.getElementById('busy').hidden")
+    yield pg
+    context.close()
+    assert not errors, errors
+
+
+def test_a_phone_shows_every_answer_and_every_line(phone):
+    """At 390 × 844 the four-bar's answers fit the panel (θ, rotation, ω, α of every body,
+    position, velocity and acceleration of every point, none cut off), every line of the
+    model's text is seen whole, and no label of the figure sticks out of it."""
+    outside = phone.evaluate("""() => {
+        const panel = document.getElementById('answers').getBoundingClientRect();
+        return [...document.querySelectorAll('#answers td.v')].filter((td) => {
+            const r = td.getBoundingClientRect();
+            return r.left < panel.left - 0.5 || r.right > panel.right + 0.5; }).map((td) => td.dataset.key); }""")
+    assert not outside, outside
+    keys = phone.evaluate("[...document.querySelectorAll('#answers td.v')].map((td) => td.dataset.key)")
+    assert {"bodies.rocker.alpha", "points.B@coupler.acceleration"} <= set(keys)
+    area = phone.get_by_test_id("model-editor")
+    assert area.evaluate("(t) => t.scrollWidth <= t.clientWidth")          # no line runs out of sight
+    gutter = phone.evaluate("document.getElementById('gutter').textContent.split('\\n')")
+    lines = area.input_value().split("\n")
+    assert [x for x in gutter if x] == [str(i) for i in range(1, len(lines) + 1)]
+    assert len(gutter) - 1 > len(lines)                # long lines wrap, and their rows are numbered once
+    cut = phone.evaluate("""() => {
+        const box = document.getElementById('figure').getBoundingClientRect();
+        return [...document.querySelectorAll('#figure .content text')].filter((t) => {
+            if (t.closest('[style*="display: none"]') || t.getAttribute('visibility') === 'hidden') return false;
+            const r = t.getBoundingClientRect();
+            return r.width && (r.left < box.left - 0.5 || r.right > box.right + 0.5 ||
+                               r.top < box.top - 0.5 || r.bottom > box.bottom + 0.5); }).map((t) => t.textContent); }""")
+    assert not cut, cut
+
+
+def test_a_phone_shows_the_selected_elements_properties_by_the_figure(phone):
+    """A point tapped in the figure: its properties come up by the figure, both in sight,
+    without scrolling; tapping the grid puts them away."""
+    x, y = (lambda b: (b["x"] + b["width"] / 2, b["y"] + b["height"] / 2))(
+        phone.locator('#figure [data-handle="A"]').bounding_box())
+    phone.mouse.click(x, y)
+    phone.get_by_test_id("properties").get_by_test_id("selected").filter(has_text="A").wait_for()
+    seen = phone.evaluate("""() => {
+        const field = document.querySelector('[data-testid=properties] input[data-testid=prop-length]');
+        const r = field.getBoundingClientRect(), f = document.getElementById('figure').getBoundingClientRect();
+        const cx = r.left + r.width / 2, cy = r.top + r.height / 2;
+        const handle = document.querySelector('#figure [data-handle="A"]').getBoundingClientRect();
+        const hx = handle.left + handle.width / 2, hy = handle.top + handle.height / 2;
+        return {field: document.elementFromPoint(cx, cy) === field && cy < innerHeight,
+                figure: f.top >= -1 && f.bottom <= document.getElementById('properties').getBoundingClientRect().top + 1,
+                point: document.getElementById('figure').contains(document.elementFromPoint(hx, hy))}; }""")
+    assert seen == {"field": True, "figure": True, "point": True}
+    phone.get_by_test_id("close-properties").click()
+    assert phone.evaluate("getComputedStyle(document.getElementById('properties')).position") != "fixed"

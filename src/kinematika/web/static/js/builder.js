@@ -127,7 +127,7 @@ export class Builder {
     this.sketch = sketch;
     this.solved = solved;
     this.spatial = dimension === 3;          // built by its text: no grid, no picks
-    if (this.selected && !this.exists(this.selected)) this.selected = null;
+    if (this.selected && !this.exists(this.selected)) this.select(null);
     this.draw();
     this.showProperties();
     this.say();
@@ -219,8 +219,22 @@ export class Builder {
   // the properties panel -----------------------------------------------------------------
   select(key) {
     this.selected = key;
+    const sheet = this.panel.closest("section");
+    sheet?.classList.toggle("open", !!key);          // on a phone: a sheet under the figure (app.css)
     this.draw();
     this.showProperties();
+    if (key && sheet && getComputedStyle(sheet).position === "fixed") this.inSight(sheet);
+  }
+
+  /** On a phone, the figure above the properties' sheet: the page scrolled to it once the
+   * pointer is up (a drag that began with the selection is not moved under the finger). */
+  inSight(sheet) {
+    const scroll = () => {
+      const box = this.figure.svg.getBoundingClientRect(), top = sheet.getBoundingClientRect().top;
+      if (box.top < 0 || box.bottom > top) window.scrollBy(0, box.top - Math.max(0, top - box.height) / 2);
+    };
+    if (this.figure.svg.matches(":active")) window.addEventListener("pointerup", () => requestAnimationFrame(scroll), { once: true });
+    else requestAnimationFrame(scroll);
   }
 
   showProperties() {

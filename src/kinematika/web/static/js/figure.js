@@ -601,12 +601,16 @@ export class Figure {
 
   /** Labels that would overlap are moved apart: the points' names stay; each arrow's,
    * centre's and curvature's label after them is shifted up or down (by its height, at most
-   * twice) to the first place where it overlaps no label already placed. */
+   * twice) to the first place where it overlaps no label already placed. A label that would
+   * stick out of the figure (an arrow's tip near its edge, on a narrow screen) is moved back
+   * inside it. */
   unclutter() {
     if (!this.g) return;
     const texts = [...this.pointLabels.map((pl) => pl.label),
       ...this.svg.querySelectorAll(".content .vectors text, .content .overlay text")];
     const placed = [];
+    const [x0, y0, x1, y1] = this.view, pad = 2 * this.px;
+    const inside = (lo, size, from, to) => (size > to - from ? 0 : Math.max(from - lo, 0) + Math.min(to - (lo + size), 0));
     for (const t of texts) {
       t.removeAttribute("transform");
       if (t.getAttribute("visibility") === "hidden" || !t.getClientRects().length) continue;
@@ -619,9 +623,11 @@ export class Figure {
         const clash = (d) => placed.some((q) => b.x < q.x + q.width && q.x < b.x + b.width &&
                                               b.y + d < q.y + q.height + gap && q.y < b.y + d + b.height + gap);
         dy = [0, b.height, -b.height, 2 * b.height, -2 * b.height].find((d) => !clash(d)) ?? 0;
-        if (dy) t.setAttribute("transform", `translate(0 ${dy})`);
       }
-      placed.push({ x: b.x, y: b.y + dy, width: b.width, height: b.height });
+      const dx = inside(b.x, b.width, x0 + pad, x1 - pad);       // user units: y is −model y
+      dy += inside(b.y + dy, b.height, -y1 + pad, -y0 - pad);
+      if (dx || dy) t.setAttribute("transform", `translate(${dx} ${dy})`);
+      placed.push({ x: b.x + dx, y: b.y + dy, width: b.width, height: b.height });
     }
   }
 

@@ -481,6 +481,7 @@ function toast(text) {
 slider.addEventListener("input", () => { if (playing) play(); setRow(Number(slider.value)); });
 $("play").addEventListener("click", play);
 $("by-hand").addEventListener("click", () => byHand(!figure.byHand));
+$("close-properties").addEventListener("click", () => builder.select(null));
 for (const pick of document.querySelectorAll("[data-lang]")) {
   pick.addEventListener("change", (e) => setLanguage(e.target.value));
 }

@@ -38,9 +38,10 @@ export class Answers {
       const planar = typeof b.omega === "number" || typeof b.omega === "string";
       const a = `bodies.${attr(name)}`;
       const tip = line ? attr(t("angle-tip", { line: `${shown(line.from)}${shown(line.to)}` })) : "";
-      rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" data-key="${a}.angle" title="${tip}"></td>` +
-                `<td class="v" data-key="${a}.rotation" title="${attr(t("rotation-tip"))}"></td>` +
-                `<td class="v" data-key="${a}.omega"></td><td class="v" data-key="${a}.alpha"></td></tr>`);
+      const h = (key) => `data-h="${attr(t(key))}"`;          // its column's heading, for a narrow screen
+      rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" data-key="${a}.angle" ${h("angle-h")} title="${tip}"></td>` +
+                `<td class="v" data-key="${a}.rotation" ${h("rotation-h")} title="${attr(t("rotation-tip"))}"></td>` +
+                `<td class="v" data-key="${a}.omega" ${h("omega-h")}></td><td class="v" data-key="${a}.alpha" ${h("alpha-h")}></td></tr>`);
       const rotation = sw ? sw.angle : null;
       const since = rotation && planar && rotation.map((x) => (x === null ? null : x - (rotation[0] ?? 0)));
       const angle = line && planar ? (since ? since.map((x) => (x === null ? null : round(line.angle + x))) : null) : null;
@@ -54,7 +55,7 @@ export class Answers {
       const p = solution.points[key];
       const label = names.length > 1 ? `${esc(key.split("@")[0])} <span class="where">(${names.map((n) => esc(n.split("@")[1])).join(", ")})</span>` : esc(key);
       rows.push(`<tr><td class="q">${label}</td>` + ["position", "velocity", "acceleration"].map(
-        (q) => `<td class="v kind-${q}" data-key="points.${attr(key)}.${q}"${q === "position" ? "" : ' colspan="2"'}></td>`).join("") + "</tr>");
+        (q) => `<td class="v kind-${q}" data-key="points.${attr(key)}.${q}" data-h="${attr(t(`${q}-h`))}"${q === "position" ? "" : ' colspan="2"'}></td>`).join("") + "</tr>");
       for (const q of ["position", "velocity", "acceleration"]) {
         this.cells.push({ key: `points.${key}.${q}`, fixed: p[q], source: sweep && sweep.points[key] && sweep.points[key][q] });
       }
