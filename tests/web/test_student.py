@@ -386,3 +386,36 @@ def test_a_phone_shows_the_selected_elements_properties_by_the_figure(phone):
     assert seen == {"field": True, "figure": True, "point": True}
     phone.get_by_test_id("close-properties").click()
     assert phone.evaluate("getComputedStyle(document.getElementById('properties')).position") != "fixed"
+
+
+# 6. one angle convention -------------------------------------------------------------------------
+def rocker_theta(crank_deg: float) -> float:
+    """The four-bar's rocker angle θ (O4 → B from the x axis) by hand: A = (cos c, sin c),
+    B where the circles |AB| = 4 and |O4B| = 3 (O4 = (4, 0)) meet, left of A → O4."""
+    c = math.radians(crank_deg)
+    a, o4 = (math.cos(c), math.sin(c)), (4.0, 0.0)
+    dx, dy = o4[0] - a[0], o4[1] - a[1]
+    d = math.hypot(dx, dy)
+    along = (16 - 9 + d * d) / (2 * d)
+    h = math.sqrt(16 - along * along)
+    b = (a[0] + along * dx / d - h * dy / d, a[1] + along * dy / d + h * dx / d)
+    return math.degrees(math.atan2(b[1], b[0] - 4))
+
+
+def test_the_plot_gives_the_tables_angle_against_the_cranks_angle(page):
+    """The four-bar's plot shows the rocker's angle θ (as the table's θ column and the
+    command line's plot), against the crank's angle θ (90° as drawn, 180° at the slider's
+    row 90), both said so."""
+    example(page, "four_bar.yaml")
+    assert round(rocker_theta(90), 2) == 99.81
+    chips = page.get_by_test_id("plot-pick").locator("button[aria-pressed=true]").all_inner_texts()
+    assert chips[0] == words()["plot-angle"].replace("{$body}", "rocker") + " (°)"
+    assert words()["plot-input-angle"].replace("{$body}", "crank") in page.get_by_test_id("plot").text_content()
+    for k, crank in ((0, 90), (90, 180)):
+        page.get_by_test_id("input-slider").fill(str(k))
+        shown = page.locator("#plot text[font-family=monospace]").first.text_content()
+        cell = json.loads(page.get_by_test_id("answers").locator('td[data-key="bodies.rocker.angle"]')
+                          .get_attribute("data-value"))
+        assert float(shown.replace("−", "-")) == pytest.approx(rocker_theta(crank), abs=0.05)   # 4 digits
+        assert cell == pytest.approx(rocker_theta(crank), abs=1e-6)
+    page.get_by_test_id("input-slider").fill("0")

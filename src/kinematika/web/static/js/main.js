@@ -82,6 +82,7 @@ async function analyse() {
   showMissing(null);
   stale(false);
   state.solution = solved.value;
+  state.answered = true;
   showWarnings(state.solution.warnings || []);
   state.scene = drawn.status === "fulfilled" ? drawn.value : null;
   state.sweep = swept.status === "fulfilled" ? swept.value : null;
@@ -103,7 +104,7 @@ async function analyse() {
   if (state.scene) figure.set(state.scene, state.sweep, 0);
   else figure.clear(figure.keep || builder.box());
   answers.set(state.solution, state.sweep, frame, state.scene);
-  plot.set(state.sweep, state.input ? state.input.unit : "deg", frame);
+  plot.set(state.sweep, state.input ? state.input.unit : "deg", frame, state.scene);
   $("plot-box").hidden = !state.sweep;
   slider.max = String(rows - 1);
   slider.disabled = $("play").disabled = $("by-hand").disabled = !state.sweep;
@@ -122,7 +123,7 @@ async function analyse() {
 function stale(on) {
   figure.stale(on);
   $("answers").classList.toggle("stale", on);
-  $("answers-stale").hidden = !on || !state.solution;
+  $("answers-stale").hidden = !on || !state.answered;
   $("plot-box").classList.toggle("stale", on);
   if (on) {
     $("answers-where").textContent = "";
@@ -251,7 +252,8 @@ function load(text, fmt, name) {
 /** A new document (New, an example, a link): nothing of the last model stays on the page,
  * neither its answers nor its plot nor its explanation. */
 function forget() {
-  state.solution = state.sweep = state.scene = state.input = state.blank = null;
+  state.sweep = state.scene = state.input = state.blank = null;
+  state.answered = false;                  // the answers panel holds nothing of this model yet
   state.explained = state.explanation = null;
   answers.clear();
   plot.set(null);

@@ -3,6 +3,7 @@
 // answers (centres, curvature, relative motion) are those of the last solve, greyed while
 // the slider is away from the position that solve was made at.
 import { show, shown, num } from "./svg.js";
+import { referenceLine } from "./angles.js";
 
 const LONG = 22;      // characters: a longer value (a 3D vector, a formula, a decomposition) wraps in its cell
 const LIVE = { velocity: "points", acceleration: "points", omega: "bodies", alpha: "bodies" };
@@ -123,24 +124,6 @@ function section(...heads) {
 }
 
 const round = (x) => Number(x.toFixed(9));
-
-/** A body's reference line, as the sweep plots measure it (`draw.plots.body_angle`): from
- * its fixed pivot (a point the frame carries there too), else its first point, to the first
- * other point drawn elsewhere (a rocker's O4 → B); its angle from the x axis,
- * counter-clockwise, in (−180°, 180°]. */
-function referenceLine(body, bodies) {
-  if (!body || body.frame) return null;
-  const pts = Object.entries(body.points);
-  if (pts.length < 2 || pts[0][1].length !== 2) return null;
-  const size = Math.max(...pts.map(([, q]) => Math.hypot(q[0] - pts[0][1][0], q[1] - pts[0][1][1]))) || 1;
-  const frame = Object.values(bodies || {}).find((b) => b.frame);
-  const at = (name, q) => frame && frame.points[name] && Math.hypot(frame.points[name][0] - q[0], frame.points[name][1] - q[1]) <= 1e-9 * size;
-  const [from, p] = pts.find(([name, q]) => at(name, q)) || pts[0];
-  const other = pts.find(([, q]) => Math.hypot(q[0] - p[0], q[1] - p[1]) > 1e-9 * size);
-  if (!other) return null;
-  const q = other[1];
-  return { from, to: other[0], angle: (Math.atan2(q[1] - p[1], q[0] - p[0]) * 180) / Math.PI };
-}
 
 /** Material points that move alike over the whole sweep, shown once: [first key, keys]. */
 function groups(points, sweep) {
