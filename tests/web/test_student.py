@@ -12,12 +12,11 @@ import json
 import math
 
 import pytest
-import yaml
 
 from kinematika.web.strings import page_strings
 from tests.conftest import BROWSER_WAIT
 
-from .test_build import blank, click_at, click_body, click_point, example, selected, settled, step, text, tool, typed
+from .test_build import blank, click_at, click_body, click_point, example, selected, settled, step, text, tool
 
 pytestmark = pytest.mark.browser
 

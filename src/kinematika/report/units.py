@@ -35,4 +35,4 @@ def length_of(model: Any) -> str:
 def field_kind(name: str, parent: Optional[str]) -> Optional[str]:
     """The kind of a compound answer's field (`radius` a position, `coriolis` an
     acceleration); a part of a decomposition (`drag`, `total`) is of its parent's kind."""
-    return FIELD_KINDS[name] if name in FIELD_KINDS else parent
+    return FIELD_KINDS.get(name, parent)
