@@ -158,15 +158,8 @@ export class Builder {
     this.figure.svg.appendChild(root);                    // above the figure's content
     if (this.showGrid && !this.spatial) this.drawGrid(root, view, px);
     if (!this.solved) this.drawSketch(root, px);
-    const sel = this.selected && this.selected.split(/:(.*)/s);
-    if (sel && sel[0] === "point" && this.sketch.points[sel[1]]) {
-      const p = this.sketch.points[sel[1]];
-      el("circle", { cx: p[0], cy: -p[1], r: 11 * px, class: "selected" }, root);
-    } else if (sel && sel[0] === "body" && this.sketch.bodies[sel[1]]) {
-      const pts = this.sketch.bodies[sel[1]].points.map((n) => this.sketch.points[n]).filter(Boolean);
-      if (pts.length === 1) el("circle", { cx: pts[0][0], cy: -pts[0][1], r: 14 * px, class: "selected" }, root);
-      else el("polyline", { points: pts.map((p) => `${p[0]},${-p[1]}`).join(" "), class: "selected", fill: "none" }, root);
-    }
+    this.marked = el("g", { class: "marked" }, root);
+    this.follow();
     const placed = this.picks.map((p) => (typeof p === "string" ? this.sketch.points[p] : Array.isArray(p) ? p : null)).filter(Boolean);
     for (const p of placed) el("circle", { cx: p[0], cy: -p[1], r: 5 * px, class: "picked" }, root);
     if (placed.length && this.pointerAt) {
@@ -175,6 +168,24 @@ export class Builder {
       const len = Math.hypot(q[0] - p[0], q[1] - p[1]), ang = (Math.atan2(q[1] - p[1], q[0] - p[0]) * 180) / Math.PI;
       const label = el("text", { x: q[0] + 8 * px, y: -q[1] - 8 * px, "font-size": 12 * px, class: "rubber-label" }, root);
       label.textContent = `${num(len)} m, ${num(ang)}°`;
+    }
+  }
+
+  /** The selected element marked where the figure shows it now (the slider's row, the
+   * mechanism turned by hand), else where it is drawn. */
+  follow() {
+    const g = this.marked, px = this.figure.px || 0.01;
+    if (!g) return;
+    g.replaceChildren();
+    const sel = this.selected && this.selected.split(/:(.*)/s);
+    const at = (n) => (this.solved && this.figure.at(n)) || this.sketch.points[n];
+    if (sel && sel[0] === "point" && at(sel[1])) {
+      const p = at(sel[1]);
+      el("circle", { cx: p[0], cy: -p[1], r: 11 * px, class: "selected" }, g);
+    } else if (sel && sel[0] === "body" && this.sketch.bodies[sel[1]]) {
+      const pts = this.sketch.bodies[sel[1]].points.map(at).filter(Boolean);
+      if (pts.length === 1) el("circle", { cx: pts[0][0], cy: -pts[0][1], r: 14 * px, class: "selected" }, g);
+      else el("polyline", { points: pts.map((p) => `${p[0]},${-p[1]}`).join(" "), class: "selected", fill: "none" }, g);
     }
   }
 

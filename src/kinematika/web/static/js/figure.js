@@ -739,6 +739,13 @@ export class Figure {
     }, { passive: false });
   }
 
+  /** Where point `name` is drawn now (its handle, at the row shown), or null. */
+  at(name) {
+    const pl = (this.pointLabels || []).find((x) => x.name === name);
+    if (!this.scene || !pl || !pl.handle || pl.handle.getAttribute("visibility") === "hidden") return null;
+    return [Number(pl.handle.getAttribute("cx")), -Number(pl.handle.getAttribute("cy"))];
+  }
+
   /** A point can be dragged in a planar model (a 3D point is moved in its text). */
   canDrag(name) { return !this.scene || this.scene.dimension === 2; }
 

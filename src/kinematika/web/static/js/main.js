@@ -277,6 +277,7 @@ function setRow(k) {
   state.row = k;
   slider.value = String(k);
   figure.show(k);
+  if (builder.selected) builder.follow();
   answers.show(k);
   plot.cursor(k);
   $("coordinate").textContent = coordinateText(k);
