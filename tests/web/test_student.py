@@ -410,7 +410,16 @@ def test_the_plot_gives_the_tables_angle_against_the_cranks_angle(page):
     chips = page.get_by_test_id("plot-pick").locator("button[aria-pressed=true]").all_inner_texts()
     assert chips[0] == words()["plot-angle"].replace("{$body}", "rocker") + " (°)"
     assert words()["plot-input-angle"].replace("{$body}", "crank") in page.get_by_test_id("plot").text_content()
+    import yaml
+
+    from kinematika.draw.plots import read_sweep
+    from kinematika.sweep import run_sweep
+    from tests.conftest import EXAMPLES
+
+    reading = read_sweep(run_sweep(yaml.safe_load((EXAMPLES / "four_bar.yaml").read_text())))   # the twin
+    rocker = next(x for p in reading.panels if p.quantity == "angle" for x in p.series if x.name == "rocker")
     for k, crank in ((0, 90), (90, 180)):
+        assert (reading.x[k], rocker.values[k]) == pytest.approx((crank, rocker_theta(crank)), abs=1e-6)
         page.get_by_test_id("input-slider").fill(str(k))
         shown = page.locator("#plot text[font-family=monospace]").first.text_content()
         cell = json.loads(page.get_by_test_id("answers").locator('td[data-key="bodies.rocker.angle"]')
