@@ -15,15 +15,28 @@ SWEEP_FORMATS = ("json", "csv", "npz", "parquet")
 
 
 def solve_command(model: Path, as_json: bool = False, symbolic: bool = False, how: Any = None) -> None:
-    """Velocity and acceleration of every point and body at the instant, and the answers."""
+    """Velocity and acceleration of every point and body at the instant, and the answers
+    (the tables in the model's units)."""
     from ..commands import AS_GIVEN, solve_data
+
+    if as_json:
+        respond(True, lambda: solve_data(model, symbolic or None, _how(how) or AS_GIVEN), print)
+        return
+    length = {}
+
+    def compute() -> dict:
+        from ..report.units import length_of
+
+        prepared = (_how(how) or AS_GIVEN).model(model)
+        length["unit"] = length_of(prepared)
+        return solve_data(prepared, symbolic or None, AS_GIVEN)
 
     def show(data: dict) -> None:
         from ..report.tables import print_solution
 
-        print_solution(data)
+        print_solution(data, length=length["unit"])
 
-    respond(as_json, lambda: solve_data(model, symbolic or None, _how(how) or AS_GIVEN), show)
+    respond(False, compute, show)
 
 
 def centres_command(model: Path, as_json: bool = False, symbolic: bool = False, how: Any = None) -> None:

@@ -121,10 +121,11 @@ class Film:
 def _reading(result: Any) -> tuple[Any, Optional[str]]:
     """(values, body) of the driving crank's absolute angle, or (None, None) when the sweep
     does not turn a body from the frame."""
-    from .plots import _driver, _moving_bodies, body_angle
+    from ..sweep.angles import body_angle, driving_body
+    from .plots import _moving_bodies
 
     angles = {n: a for n in _moving_bodies(result) if (a := body_angle(result, n)) is not None}
-    driver = _driver(result, angles)
+    driver = driving_body(result, angles)
     return (angles[driver], driver) if driver is not None else (None, None)
 
 

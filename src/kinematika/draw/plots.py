@@ -4,7 +4,8 @@ The horizontal axis is the driving coordinate: the absolute angle θ of a crank 
 the frame (the angle of the line from its pivot to its next point, from the x axis), else
 the driven joint's increment. The panels, each only when it has something to show:
 
-- the absolute angles of the bodies that swing (degrees); bodies that turn fully have a
+- the absolute angles θ of the bodies that swing (degrees, each body's line from the x axis,
+  as the summary of `kinematika sweep` gives them: `sweep.angles`); bodies that turn fully have a
   panel of their own, so that a 0–360° turn does not flatten a ±30° rocker;
 - ω and α of the moving bodies (signed, counter-clockwise positive);
 - for points running on a straight line (a ram, a piston): their position along the line,
@@ -32,6 +33,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from ..errors import KinematikaError
+from ..sweep.angles import angles_of, input_axis
 from .style import BODY_COLOURS, INK
 
 MAX_POINTS = 6
@@ -117,19 +119,13 @@ def plot_sweep(result: Any, path: Optional[Path | str] = None, model: Any = None
 def read_sweep(result: Any, model: Any = None) -> Reading:
     """The horizontal axis and the panels of `result`."""
     bodies = _moving_bodies(result)
-    angles = {name: a for name in bodies if (a := body_angle(result, name)) is not None}
-    driver = _driver(result, angles)
-    if driver is not None:
-        x, xlabel = angles[driver], f"{driver} angle θ (deg)"
-    else:
-        x = np.asarray(result.coordinate, dtype=float)
-        unit = getattr(result, "unit", "deg")
-        xlabel = f"{getattr(result, 'joint', 'joint')} from the drawn position " \
-                 f"({'deg' if unit == 'deg' else 'length'})"
-    reading = Reading(x, xlabel)
+    angles = angles_of(result, list(bodies))
+    axis = input_axis(result, angles)
+    x, driver = axis.x, axis.driver
+    reading = Reading(x, axis.label)
     swinging = {n: a for n, a in angles.items() if n != driver and _span(a) <= TURNING}
     turning = {n: a for n, a in angles.items() if n != driver and _span(a) > TURNING}
-    for group, label in ((swinging, "angle (deg)"), (turning, "angle, turning bodies (deg)")):
+    for group, label in ((swinging, "angle θ (deg)"), (turning, "angle θ, turning bodies (deg)")):
         if group:
             reading.panels.append(Panel("angle", label, [Series(n, a) for n, a in group.items()]))
     reading.panels.append(Panel("omega", "ω (rad/s)",
@@ -170,44 +166,6 @@ def _moving_bodies(result: Any) -> dict[str, dict]:
                               np.nanmax(np.abs(angle), initial=0.0) > 0):
             out[name] = data
     return out
-
-
-def body_angle(result: Any, body: str) -> Optional[np.ndarray]:
-    """The absolute angle (degrees, continuous) of the body's line: from its fixed pivot (or
-    its first point) to its next point elsewhere; None for a body with one point (planar)."""
-    keys = [k for k in result.points if k.partition("@")[2] == body]
-    pos = {k: np.asarray(result.points[k]["position"], dtype=float)[:, :2] for k in keys}
-    if not pos or getattr(result, "dimension", 2) != 2:
-        return None
-    scale = max(float(np.nanmax(np.abs(p))) for p in pos.values()) or 1.0
-    fixed = [k for k, p in pos.items() if np.nanmax(np.abs(p - p[0]), initial=0.0) <= 1e-9 * scale]
-    origin = fixed[0] if fixed else keys[0]
-    other = next((k for k in keys if np.linalg.norm(pos[k][0] - pos[origin][0]) > 1e-9 * scale),
-                 None)
-    if other is None:
-        return None
-    d = pos[other] - pos[origin]
-    return _unwrap_degrees(np.arctan2(d[:, 1], d[:, 0]))
-
-
-def _unwrap_degrees(rad: np.ndarray) -> np.ndarray:
-    """Continuous angles in degrees; NaN rows (not assembled) stay NaN."""
-    out = np.full(len(rad), np.nan)
-    ok = np.isfinite(rad)
-    out[ok] = np.degrees(np.unwrap(rad[ok]))
-    return out
-
-
-def _driver(result: Any, angles: dict[str, np.ndarray]) -> Optional[str]:
-    """The body the sweep turns from the frame: its angle advances with the coordinate."""
-    if getattr(result, "unit", "deg") != "deg":
-        return None
-    x = np.asarray(result.coordinate, dtype=float)
-    for name, a in angles.items():
-        ok = np.isfinite(a) & np.isfinite(x)
-        if ok.sum() >= 2 and np.allclose(a[ok] - a[ok][0], x[ok] - x[ok][0], atol=1e-6):
-            return name
-    return None
 
 
 def _span(a: np.ndarray) -> float:

@@ -148,21 +148,28 @@ def section(tree: Any, key: str, kind: type, fmt: str) -> Any:
     the format's examples put it (parameters, points, bodies, joints, drivers, ask)."""
     value = tree.get(key)
     if value is None:
-        value = _block_map(fmt) if kind is dict else _block_list(fmt)
-        rank = ORDER.index(key) if key in ORDER else len(ORDER)
-        keys = list(tree.keys())
-        at = next((i for i, k in enumerate(keys) if k in ORDER and ORDER.index(k) > rank), len(keys))
-        if hasattr(tree, "insert") and at < len(keys):
-            tree.insert(at, key, value)
-        elif isinstance(tree, dict) and not hasattr(tree, "insert") and at < len(keys) \
-                and type(tree) is dict:
-            items = list(tree.items())
-            tree.clear()
-            tree.update(items[:at] + [(key, value)] + items[at:])
-        else:
-            tree[key] = value
+        put(tree, key, _block_map(fmt) if kind is dict else _block_list(fmt))
         value = tree[key]
     return value
+
+
+def put(tree: Any, key: str, value: Any) -> None:
+    """Set the top-level `key` (a section or a value such as `frame`): a new key goes where
+    the format's examples put it (`ORDER`), an existing one keeps its place."""
+    if key in tree:
+        tree[key] = value
+        return
+    rank = ORDER.index(key) if key in ORDER else len(ORDER)
+    keys = list(tree.keys())
+    at = next((i for i, k in enumerate(keys) if k in ORDER and ORDER.index(k) > rank), len(keys))
+    if hasattr(tree, "insert") and at < len(keys):
+        tree.insert(at, key, value)
+    elif type(tree) is dict and at < len(keys):
+        items = list(tree.items())
+        tree.clear()
+        tree.update(items[:at] + [(key, value)] + items[at:])
+    else:
+        tree[key] = value
 
 
 def _block_map(fmt: str) -> Any:

@@ -9,6 +9,7 @@ import { Plot } from "./plot.js";
 import { fragment, fromFragment } from "./link.js";
 import { num, shown } from "./svg.js";
 import { Builder } from "./builder.js";
+import { followRow, movingKey } from "./turn.js";
 import * as i18n from "./i18n.js";
 
 const t = i18n.t;
@@ -27,6 +28,7 @@ const answers = new Answers($("answers"), t);
 const plot = new Plot($("plot"), $("plot-pick"), t);
 const builder = new Builder(figure, $("palette"), $("properties-body"), $("build-hint"), t, build);
 const slider = $("input-slider");
+figure.onTurn = turn;
 window.kinematika = { state, timing, figure, builder,
   /** The page coordinates (CSS pixels) of a model point: for tests that click on the grid. */
   toScreen: ([x, y]) => {
@@ -55,7 +57,9 @@ async function analyse() {
   const sketch = sketched.status === "fulfilled" ? sketched.value : null;
   if (solved.status === "rejected") {
     const blank = sketch && !Object.keys(sketch.points).length && !sketch.problem;
-    showError(blank ? null : solved.reason);
+    const missing = blank ? null : stillBuilding(solved.reason, sketch);
+    showError(blank || missing ? null : solved.reason);
+    showMissing(missing, solved.reason);
     showWarnings([]);
     stale(true);
     state.solution = null;
@@ -67,7 +71,7 @@ async function analyse() {
       $("coordinate").textContent = "–";
       $("model-name").textContent = shown(sketch.name || t("model"), 120);
       $("plot-box").hidden = true;
-      slider.disabled = $("play").disabled = true;
+      slider.disabled = $("play").disabled = $("by-hand").disabled = true;
       $("notes").textContent = "";
       if (blank) $("dof").textContent = t("dof", { n: "–" });
     }
@@ -75,8 +79,10 @@ async function analyse() {
     return;
   }
   showError(null);
+  showMissing(null);
   stale(false);
   state.solution = solved.value;
+  state.answered = true;
   showWarnings(state.solution.warnings || []);
   state.scene = drawn.status === "fulfilled" ? drawn.value : null;
   state.sweep = swept.status === "fulfilled" ? swept.value : null;
@@ -99,10 +105,10 @@ async function analyse() {
   if (state.scene) figure.set(state.scene, state.sweep, 0);
   else figure.clear(figure.keep || builder.box());
   answers.set(state.solution, state.sweep, frame, state.scene);
-  plot.set(state.sweep, state.input ? state.input.unit : "deg", frame);
+  plot.set(state.sweep, state.input ? state.input.unit : "deg", frame, state.scene);
   $("plot-box").hidden = !state.sweep;
   slider.max = String(rows - 1);
-  slider.disabled = $("play").disabled = !state.sweep;
+  slider.disabled = $("play").disabled = $("by-hand").disabled = !state.sweep;
   slider.title = state.sweepError ? t("no-sweep", { why: state.sweepError }) : "";
   setRow(state.row);
   if (sketch) builder.update(sketch, !!state.scene, state.solution.dimension);
@@ -118,7 +124,7 @@ async function analyse() {
 function stale(on) {
   figure.stale(on);
   $("answers").classList.toggle("stale", on);
-  $("answers-stale").hidden = !on || !state.solution;
+  $("answers-stale").hidden = !on || !state.answered;
   $("plot-box").classList.toggle("stale", on);
   if (on) {
     $("answers-where").textContent = "";
@@ -178,6 +184,30 @@ function showWarnings(list) {
   }));
 }
 
+/** What a model being built still lacks, when that is all that keeps it from being solved:
+ * a moving body (`missing-body`), an input (`missing-input`), another input for one more
+ * degree of freedom (`missing-more-input`); null for a real error. */
+function stillBuilding(err, sketch) {
+  if (!err || err.kind !== "mobility" || !sketch || sketch.problem) return null;
+  if (!Object.values(sketch.bodies).some((b) => !b.frame)) return "missing-body";
+  if (!sketch.drivers.length) return "missing-input";
+  return /drivers give/.test(err.message || "") ? "missing-more-input" : null;
+}
+
+/** A hint (not an error) of what to add next; the degrees of freedom as the message says. */
+function showMissing(key, err = null) {
+  const box = $("missing");
+  box.hidden = !key;
+  box.textContent = key ? t(key) : "";
+  builder.missing = key;
+  builder.say();
+  if (!key) return;
+  const said = /(\d+) degrees? of freedom/.exec((err && err.message) || "");
+  const dof = $("dof");
+  dof.textContent = t("dof", { n: said && key !== "missing-body" ? said[1] : "–" });
+  dof.classList.remove("bad");
+}
+
 function showError(err) {
   const box = $("error");
   if (!err) {
@@ -210,6 +240,7 @@ function load(text, fmt, name) {
   remember();
   figure.keep = null;
   builder.select(null);
+  forget();
   state.fmt = fmt || "yaml";
   state.name = (name || "model").replace(/\.(ya?ml|toml|json)$/, "");
   $("format").value = state.fmt;
@@ -217,6 +248,21 @@ function load(text, fmt, name) {
   remember();
   state.row = 0;
   analyse();
+}
+
+/** A new document (New, an example, a link): nothing of the last model stays on the page,
+ * neither its answers nor its plot nor its explanation. */
+function forget() {
+  state.sweep = state.scene = state.input = state.blank = null;
+  state.answered = false;                  // the answers panel holds nothing of this model yet
+  state.explained = state.explanation = null;
+  answers.clear();
+  plot.set(null);
+  $("plot-box").hidden = true;
+  $("answers-where").textContent = "";
+  $("answers-stale").hidden = true;
+  $("explanation-where").textContent = "";
+  $("explanation").srcdoc = "";
 }
 
 // the slider ----------------------------------------------------------------------------
@@ -232,6 +278,7 @@ function setRow(k) {
   state.row = k;
   slider.value = String(k);
   figure.show(k);
+  if (builder.selected) builder.follow();
   answers.show(k);
   plot.cursor(k);
   $("coordinate").textContent = coordinateText(k);
@@ -368,6 +415,7 @@ async function drag(name, to, final) {
   if (to === null) {                       // a drag starts: edits are made at the drawn position
     if (playing) play();
     if (state.row !== 0) setRow(0);
+    batch.begin();                           // the whole drag is one step of Undo
     return;
   }
   dragWanted = { name, to, final };
@@ -387,7 +435,35 @@ async function drag(name, to, final) {
   }
   dragBusy = false;
   figure.release();
-  if (!figure.drag) { listAssemblies(state.gen); explainSoon(); }
+  if (!figure.drag) { batch.end(); listAssemblies(state.gen); explainSoon(); }
+}
+
+// turning the mechanism by hand ----------------------------------------------------------------
+let turning = null;
+
+/** A point dragged along the motion (by hand, or with Shift): the mechanism follows it
+ * through the sweep's rows as far as it can move (turn.js); the model is not changed. */
+function turn(name, at, phase) {
+  if (phase === "start") {
+    if (playing) play();
+    const frame = state.scene && Object.keys(state.scene.bodies).find((b) => state.scene.bodies[b].frame);
+    const key = state.sweep && state.scene && state.scene.dimension === 2 ? movingKey(state.sweep, name, frame) : null;
+    turning = key ? { key } : null;
+    if (!key) toast(t(state.sweep ? "turn-fixed" : "turn-no-motion", { point: shown(name) }));
+    return;
+  }
+  if (!turning) return;
+  const k = followRow(state.sweep, turning.key, at, state.row);
+  if (k !== state.row) setRow(k);
+  if (phase === "end") turning = null;
+}
+
+function byHand(on) {
+  figure.byHand = on;
+  builder.byHand = on;
+  $("by-hand").setAttribute("aria-pressed", String(on));
+  $("figure").classList.toggle("hand", on);
+  builder.say();
 }
 
 // downloads and the link ----------------------------------------------------------------------
@@ -441,6 +517,8 @@ function toast(text) {
 // wiring ----------------------------------------------------------------------------------
 slider.addEventListener("input", () => { if (playing) play(); setRow(Number(slider.value)); });
 $("play").addEventListener("click", play);
+$("by-hand").addEventListener("click", () => byHand(!figure.byHand));
+$("close-properties").addEventListener("click", () => builder.select(null));
 for (const pick of document.querySelectorAll("[data-lang]")) {
   pick.addEventListener("change", (e) => setLanguage(e.target.value));
 }
@@ -475,8 +553,17 @@ document.addEventListener("keydown", (e) => {
 const past = [], future = [];       // earlier and undone states: [text, format]
 let last = null;
 
-/** Keep the state before a change, for undo (typing is kept once per pause). */
+/** One step of Undo for an action made of many edits (a drag): between `begin` and `end`
+ * the text changes without being remembered; `end` remembers the state before `begin`. */
+const batch = {
+  open: false,
+  begin() { remember(); this.open = true; },
+  end() { if (!this.open) return; this.open = false; remember(); },
+};
+
+/** Keep the state before a change, for undo (typing is kept once per pause; a drag once). */
 function remember() {
+  if (batch.open) return;
   const now = [editor.text, state.fmt];
   if (last !== null && (last[0] !== now[0] || last[1] !== now[1])) {
     past.push(last);
@@ -542,6 +629,7 @@ async function newModel(name) {
   $("example").value = "";
   history.replaceState(null, "", location.pathname);
   load(tpl.model, tpl.format, name === "blank" ? "model" : name);
+  state.blank = name === "blank" ? tpl.model : null;
   if (name === "blank") figure.clear([-0.1, -0.1, 0.3, 0.2]);
 }
 
@@ -553,7 +641,8 @@ async function setLanguage(code) {
   assemblyTitle();
   builder.say();
   builder.showProperties();
-  if (state.solution) analyse(); else explainSoon();
+  if (state.blank && editor.text === state.blank) newModel("blank");   // not begun: in the new language
+  else if (state.solution) analyse(); else explainSoon();
 }
 
 async function start() {
