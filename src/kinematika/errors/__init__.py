@@ -13,7 +13,7 @@ from ..text import clip_middle, shown
 from .said import Names, Num, Said, language, speak, speaking
 
 __all__ = ["KINDS", "KinematikaError", "KinematikaWarning", "Names", "Num", "Said", "language", "parser_problem",
-           "reason", "speak", "speaking"]
+           "pydantic_choices", "pydantic_problem", "reason", "speak", "speaking"]
 
 KINDS = ("syntax", "schema", "geometry", "mobility", "singular", "assembly",
          "output",     # an extension: a result file that cannot be written
@@ -94,7 +94,8 @@ def reason(err: OSError) -> Said:
     return Said("reason", errno=errno.errorcode.get(err.errno or 0, "other"), text=str(err.strerror or err))
 
 
-# what the YAML, JSON and TOML readers say most often, by a word of their own message
+# what the YAML, JSON and TOML readers and Python's parser and math say most often, by words
+# of their own message
 PROBLEMS = (("mapping values are not allowed", "mapping-values"), ("could not find expected ':'", "colon"),
             ("cannot start any token", "token"), ("did not find expected key", "key"),
             ("did not find expected ',' or ']'", "bracket"), ("did not find expected ',' or '}'", "brace"),
@@ -105,11 +106,36 @@ PROBLEMS = (("mapping values are not allowed", "mapping-values"), ("could not fi
             ("Extra data", "extra"), ("Unterminated string", "string"), ("Invalid control character", "control"),
             ("Invalid \\escape", "escape"), ("Invalid value", "value"), ("Unclosed array", "bracket"),
             ("Unclosed inline table", "brace"), ("Expected '=' after a key", "equals"),
-            ("Cannot overwrite a value", "duplicate"), ("Cannot declare", "duplicate"))
+            ("Cannot overwrite a value", "duplicate"), ("Cannot declare", "duplicate"),
+            ("invalid syntax", "syntax"), ("was never closed", "unclosed"), ("unmatched", "unmatched"),
+            ("unexpected EOF", "end"), ("invalid decimal literal", "literal"), ("math domain error", "domain"),
+            ("math range error", "range"), ("too small for floating-point", "small"),
+            ("division by zero", "zero"), ("division or modulo by zero", "zero"))
 
 
 def parser_problem(text: str) -> Said:
-    """A file reader's complaint (PyYAML's, json's, tomllib's), said in the language in use
+    """A reader's complaint (PyYAML's, json's, tomllib's, Python's), said in the language in use
     when it is one of the usual ones (`PROBLEMS`), else in the reader's own words."""
     code = next((code for phrase, code in PROBLEMS if phrase in text), "other")
     return Said("problem", code=code, text=text)
+
+
+def pydantic_problem(error: dict, lower: bool = False) -> Said:
+    """What pydantic found wrong with a value (one of its `errors()`), said by the error's
+    type and context (`too_short` and its `min_length`…) in every language the catalogue
+    knows it, else in pydantic's own words (`lower`: its first letter small, as English
+    writes it after a colon)."""
+    text = str(error.get("msg", ""))
+    ctx = {k: v for k, v in (error.get("ctx") or {}).items() if isinstance(v, (int, float, str))}
+    return Said("pydantic", type=str(error.get("type", "")), text=text.lower() if lower else text,
+                **{f"ctx_{k}": v for k, v in ctx.items() if not isinstance(v, bool)})
+
+
+def pydantic_choices(expected: str) -> "Names | str":
+    """pydantic's list of the values a literal allows (`'a', 'b' or 'c'`), as names joined
+    by the language's "or" when it has that shape, else as it is."""
+    import re
+
+    values = re.findall(r"'[^']*'|\d+(?:\.\d+)?", expected)
+    rebuilt = ", ".join(values[:-1]) + " or " + values[-1] if len(values) > 1 else "".join(values)
+    return Names(values, joined="last-or") if rebuilt == expected else expected

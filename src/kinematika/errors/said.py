@@ -81,7 +81,8 @@ class Num:
 class Names:
     """Names for a message, joined by commas: at most `limit` of them, then how many more
     (`…, (3 more)` in the language in use); `none` in that language when there are none.
-    With `joined="or"` the last ones are joined by the language's word for "or"."""
+    With `joined="or"` they are joined by the language's word for "or" (`a or b or c`), with
+    `joined="last-or"` the last two only (`a, b or c`)."""
 
     __slots__ = ("items", "limit", "joined")
 
@@ -97,6 +98,8 @@ class Names:
             return cat.format("none", {})
         if self.joined == "or":
             return f" {cat.format('or-word', {})} ".join(items)
+        if self.joined == "last-or":
+            return ", ".join(items[:-1]) + f" {cat.format('or-word', {})} " + items[-1] if len(items) > 1 else items[0]
         if self.limit is None:
             return ", ".join(items)
         head = ", ".join(shown(n, 40) for n in items[:self.limit])

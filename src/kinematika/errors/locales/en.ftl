@@ -48,3 +48,90 @@ yaml-alias-inside = the alias *{ $alias } at line { $line } is inside what it na
 yaml-alias-unknown = the alias *{ $alias } at line { $line } names no anchor
 yaml-aliases-too-many = the aliases expand to more than { $limit } values (at line { $line }): too many for a model
 model-no-cam = this model has no cam: give a body a `cam:` shape
+
+## words that messages share
+none = none
+or-word = or
+more = , … ({ $n } more)
+integer-bits = an integer of { $bits } bits
+
+## expressions (expressions.py)
+expr-expected = expected a number or an expression, got { $got }
+expr-not-finite = expected a finite number in the range of floats, got { $got }
+expr-empty = empty expression
+expr-too-long = expression longer than { $limit } characters
+expr-unreadable = cannot read expression { $source }: { $detail }
+expr-unreadable-bare = cannot read expression { $source }
+expr-too-deep = expression { $source } is nested too deeply
+expr-constant = in { $source }: only numbers may be written as constants
+expr-number-too-large = in { $source }: a number is too large
+expr-unknown-function = in { $source }: unknown function { $function } (known: { $known })
+expr-arguments = in { $source }: { $function } takes { $count } argument(s)
+expr-not-allowed = in { $source }: { $part } is not allowed in an expression
+expr-unknown-name = in { $source }: unknown name { $name } (not a parameter)
+expr-function-fails = in { $source }: { $function } cannot be evaluated ({ $why })
+expr-exponent = in { $source }: the exponent { $exponent } is too large (at most { $limit } in absolute value)
+expr-division-by-zero = in { $source }: division by zero
+expr-too-large = in { $source }: the value is too large
+expr-not-real = in { $source }: the value is not real
+expr-underflow = in { $source }: the value is too small for floating-point numbers (it would be taken as 0)
+expr-not-finite-value = in { $source }: the value is not finite
+expr-too-many-digits = in { $source }: the value has too many digits for exact formulas (more than { $limit })
+expr-degree = in { $source }: the formula's degree in the symbols is above { $limit }: too high for exact formulas
+parameter-no-value = parameter '{ $name }' has no value
+number-too-many-digits = the number { $number } has too many digits for exact formulas (more than { $limit } as a fraction): round it, or solve with numbers
+
+## the model's shape (model/build.py, model/model.py)
+model-mapping = a model is a mapping with keys points, bodies, joints, drivers
+frame-missing = there is no fixed body '{ $frame }': name one body '{ $frame }' or set `frame:` to one of { $bodies }
+parameter-name-invalid = '{ $name }' is not a valid parameter name (letters, digits and _, not starting with a digit)
+unknown-name-in = unknown name '{ $name }' in '{ $text }'
+unknown-name-in-parameters = unknown name '{ $name }' in '{ $text }' (parameters: { $parameters })
+components-count = expected { $dims } components, got { $got }
+model-no-points = a model needs at least one point
+name-invalid = '{ $name }' cannot be a name: names are not empty and have no '@' (it joins a point to its body: B@rocker)
+construction-planar = points by construction are planar; give a 3D model's points as coordinates [x, y, z]
+planar-two-coordinates = a planar model (dimension 2) has 2 coordinates per point
+point-listed-twice = point '{ $point }' is listed twice
+point-not-carried = point '{ $point }' is not carried by any body: list it in a body's points
+unknown-point = unknown point '{ $point }' (points: { $points })
+vector-size = a { $dim ->
+        [2] planar
+       *[other] 3D
+    } model needs { $dim } { $what ->
+        [coordinates] coordinates
+       *[components] components
+    }, got { $got }
+shapes-3d-only = disc and plane shapes belong to 3D models; use circle and line in a planar model
+shapes-planar-only = curves and cams belong to planar models
+unknown-body = unknown body '{ $body }' (bodies: { $bodies })
+joint-id-empty = a joint id is not empty
+joint-id-twice = joint id '{ $id }' is used twice
+joint-same-body = a joint needs two different bodies, got '{ $body }' twice
+joint-point-not-on-body = the { $kind } point '{ $point }' is not on body '{ $body }': list '{ $point }' in its points
+direction-same-points = a direction needs two different points
+unknown-joint = unknown joint '{ $joint }' (joints: { $joints })
+unknown-joint-bare = unknown joint '{ $joint }'
+expected-one-number = expected one number (the component along `along`), got a vector
+expected-vector = expected a vector of { $dim } components (or give `along` for one component)
+questions-too-many = { $count } questions: at most { $limit } in one model
+question-one-key = a question has exactly one of the keys { $keys }
+contact-not-touching = '{ $text }' is not a { $kinds } joint (those are: { $joints })
+decompose-needs-moving = a decompose question needs `moving: BODY`, the moving frame
+moving-only-decompose = `moving` belongs to decompose questions
+question-planar-only = { $kind } is a planar question; ask for the screw `axis` in 3D
+question-3d-only = the screw axis is a 3D question; ask for `icr` in a planar model
+steps-at-least-one = steps must be at least 1
+
+## what pydantic finds wrong with a file's shape (model/build.py, cams/spec.py)
+schema-problems = { $problem }{ $others ->
+        [0] {""}
+        [one] {" "}(and { $others } more problem)
+       *[other] {" "}(and { $others } more problems)
+    }
+driver-second-kind = a driver has exactly one of { $kinds }; '{ $key }' is a second one
+unknown-key = unknown key '{ $key }'
+missing-key = missing key '{ $key }'
+not-one-of = { $value } is not one of { $expected }
+unexpected-value = unexpected value { $value }: { $problem }
+pydantic = { $text }
