@@ -135,3 +135,37 @@ missing-key = missing key '{ $key }'
 not-one-of = { $value } is not one of { $expected }
 unexpected-value = unexpected value { $value }: { $problem }
 pydantic = { $text }
+point-name-not-text = a point is named by a string such as 'B' or 'B@rocker', got { $got }
+point-body-after-at = '{ $text }': name the body after '@' (as in '{ $example }')
+body-not-carrying = body '{ $body }' does not carry point '{ $point }' (carried by { $carriers })
+point-ambiguous = point '{ $point }' is carried by { $carriers }, which move differently there: write { $choices }
+unknown-parameter = unknown parameter '{ $name }' (parameters: { $parameters })
+name-or-note-empty = a name or a note is not empty
+notation-key-unknown = '{ $key }' is neither a parameter (parameters: { $parameters }) nor omega(BODY), omega(BODY/OTHER), alpha(…)
+notation-rate-bodies = '{ $key }': a rate is of one body, or of one body relative to another (omega(blades/block))
+notation-spelling = '{ $name }' is not a symbol's name: letters, digits and _ as sympy spells them (omega_0 is ω₀, vdot is v̇, R_roda)
+draw-at-has-value = '{ $name }' has a value already: draw_at gives numbers to symbolic parameters (null)
+draw-at-not-finite = '{ $name }' is drawn at { $value }: give a finite{ $positive ->
+        [true] {" "}positive
+       *[other] {""}
+    } number
+draw-at-range = '{ $name }' is drawn at { $value }: figures are drawn with numbers between { $low } and { $high } in size
+up-planar = up names the vertical of a 3D model; a planar model is drawn in its own plane
+up-direction = up is a non-zero direction of 3 numbers, such as [0, 1, 0]
+construction-cycle = the constructions refer to each other in a cycle: { $cycle }
+construction-point-expected = expected a point's name or coordinates [x, y], got { $got }
+construction-coordinates = constructions are planar: coordinates [x, y], got { $got } components
+construction-circle-radius = a circle is [centre, radius]: the radius is one number
+construction-line-direction = a line's direction is a vector; for a line through two points write [P, Q]
+construction-direction-planar = constructions are planar: a direction [dx, dy]
+near-symbolic = `near` needs numbers; in a model with symbolic parameters choose the intersection with `side`
+near-point = `near` is a sketch point [x, y]
+two-points-same = two different points are needed, got '{ $point }' twice
+statement-placeholder = {"{"}{ $name }{"}"} is not a parameter (parameters: { $parameters })
+unit-not-length = '{ $unit }' is not a length unit (units: { $units })
+question-missing = question { $number } does not exist: the model asks { $count } (numbered from 1)
+graded-once = name each graded question once (at least one)
+tolerance-relative = the tolerance is relative, between 0 and 1: got { $tolerance }
+unknown-point-bare = unknown point '{ $point }'
+unknown-unit = unknown unit '{ $unit }' (units: { $units })
+parameters-mapping = parameters are a mapping of names to values, got { $type }
