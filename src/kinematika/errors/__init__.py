@@ -13,7 +13,7 @@ from ..text import clip_middle, shown
 from .said import Names, Num, Said, language, speak, speaking
 
 __all__ = ["KINDS", "KinematikaError", "KinematikaWarning", "Names", "Num", "Said", "language", "parser_problem",
-           "pydantic_choices", "pydantic_problem", "reason", "speak", "speaking"]
+           "pydantic_choices", "pydantic_problem", "reason", "said_of", "speak", "speaking"]
 
 KINDS = ("syntax", "schema", "geometry", "mobility", "singular", "assembly",
          "output",     # an extension: a result file that cannot be written
@@ -139,3 +139,14 @@ def pydantic_choices(expected: str) -> "Names | str":
     values = re.findall(r"'[^']*'|\d+(?:\.\d+)?", expected)
     rebuilt = ", ".join(values[:-1]) + " or " + values[-1] if len(values) > 1 else "".join(values)
     return Names(values, joined="last-or") if rebuilt == expected else expected
+
+
+def said_of(err: BaseException) -> Said:
+    """What an exception says: its `said` (an `ExpressionError`'s), the `Said` it was raised
+    with (``ValueError(Said("spline-points-differ"))``), else its text as it is."""
+    said = getattr(err, "said", None)
+    if isinstance(said, Said):
+        return said
+    if err.args and isinstance(err.args[0], Said):
+        return err.args[0]
+    return Said.text_of(str(err))

@@ -169,3 +169,55 @@ tolerance-relative = the tolerance is relative, between 0 and 1: got { $toleranc
 unknown-point-bare = unknown point '{ $point }'
 unknown-unit = unknown unit '{ $unit }' (units: { $units })
 parameters-mapping = parameters are a mapping of names to values, got { $type }
+
+## cams (cams/*.py) and curves (curves/*.py)
+cam-translating-no-key = a translating follower has no '{ $key }'
+cam-oscillating-no-offset = an oscillating follower has no 'offset' (place its pivot)
+cam-oscillating-pivot = an oscillating follower needs 'pivot' (its distance from the cam's centre)
+cam-oscillating-arm = an oscillating follower needs 'arm' (pivot to roller centre or knife edge)
+cam-roller-radius = a roller follower needs 'radius'
+cam-no-radius = a { $contact } follower has no 'radius'
+cam-polynomial-only = only a polynomial segment takes '{ $key }' conditions
+cam-dwell-to = a dwell keeps the follower still: leave out 'to'
+cam-segment-to = a { $law } segment needs 'to' (the displacement at its end)
+cam-below-lowest = the follower would go below its lowest position (s < 0, inside the base circle)
+cam-segment-still = a { $law } segment must move the follower: 'to' equals the displacement it starts from (use a dwell)
+cam-span = the segments span { $total }°; a disc cam's program spans 360°
+cam-program-ends = the program ends at s = { $end }, not where it starts (0): a disc cam's motion repeats every turn
+cam-no-polynomial = these boundary conditions have no polynomial
+cam-program-or-profile = give the cam's motion as 'program' or its shape as 'profile' (one of them)
+cam-base-missing = missing key 'base' (the base circle's radius)
+cam-speed-once = give the cam's speed once: omega (rad/s), rpm, or velocity (a translating cam)
+cam-speed-translating = a translating cam's speed is its 'velocity'
+cam-speed-disc = a disc cam's speed is 'omega' or 'rpm'
+cam-plate-translating = a translating cam drives a translating follower
+cam-plate-flat = a flat face cannot follow a translating cam (use a roller or a knife edge)
+cam-plate-offset = a translating cam's follower has no offset
+cam-offset-prime = the offset { $offset } must be smaller than the prime circle's radius { $radius }
+cam-face-base = the face cannot touch the base circle: need 0 < base + face < pivot
+cam-arm-reach = the arm cannot reach the prime circle (radius { $radius }): need |pivot − arm| < { $radius } < pivot + arm
+cam-arm-past = the program turns the arm { $turn }° from { $start }°, past { $reach }° (where the follower loses the cam)
+cam-file-mapping = a cam file is a mapping with keys cam, follower, program (or profile), speed
+value-problem = { $value }: { $problem }
+cam-profile-disc = a cam given by profile points is a disc cam
+cam-profile-base = a cam given by profile points has the base circle its profile gives: leave out 'base'
+cam-follower-misses = the follower does not reach the cam
+cam-knife-misses = the knife edge's path misses the cam
+cam-jump = the { $quantity ->
+        [velocity] velocity
+       *[acceleration] acceleration
+    } jumps by { $size } { $unit } at { $at }{ $place } ({ $quantity ->
+        [velocity] infinite acceleration
+       *[acceleration] infinite jerk
+    }: the fundamental law of cam design is broken)
+curve-line-direction = a line's direction must not be zero
+curve-unbounded = an unbounded curve has no points to draw: give it a finite domain
+spline-points = a spline's points are a list of (x, y) pairs
+spline-too-few = a { $closed ->
+        [true] closed
+       *[false] open
+    } spline needs at least { $need } points
+spline-points-differ = a spline's consecutive points must differ
+circle-radius-positive = a circle's radius must be positive
+arc-angles = an arc runs counter-clockwise from a0 to a1, with a0 < a1 ≤ a0 + 2π
+cam-flat-translating = a flat-faced follower cannot follow a translating cam
