@@ -81,7 +81,7 @@ class Num:
 class Names:
     """Names for a message, joined by commas: at most `limit` of them, then how many more
     (`…, (3 more)` in the language in use); `none` in that language when there are none.
-    With `joined="or"` they are joined by the language's word for "or" (`a or b or c`), with
+    With `joined="or"` (or `"and"`) they are joined by the language's word for it (`a or b or c`), with
     `joined="last-or"` the last two only (`a, b or c`)."""
 
     __slots__ = ("items", "limit", "joined")
@@ -96,8 +96,8 @@ class Names:
         items = [str(_argument(i, lang)) for i in self.items]
         if not items:
             return cat.format("none", {})
-        if self.joined == "or":
-            return f" {cat.format('or-word', {})} ".join(items)
+        if self.joined in ("or", "and"):
+            return f" {cat.format(self.joined + '-word', {})} ".join(items)
         if self.joined == "last-or":
             return ", ".join(items[:-1]) + f" {cat.format('or-word', {})} " + items[-1] if len(items) > 1 else items[0]
         if self.limit is None:

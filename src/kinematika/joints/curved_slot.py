@@ -53,8 +53,7 @@ class CurvedSlot(JointKind):
         geo = super().prepare(inst, joint)
         curves = [s for s in inst.shapes[joint.a] if isinstance(s, (Circle, Curve))]
         if not curves:
-            raise KinematikaError("schema", f"a curved slot is cut along a circle or curve of {joint.a!r}: "
-                                  "give that body one", joint.where)
+            raise KinematikaError("schema", "curved-slot-outline", joint.where, body=joint.a)
         geo.contact = find_touch(inst, joint, curves, outlines(inst, joint, joint.b, joint.at), near)
         n = geo.contact.normal               # a circle's: outward; a curve's: its own normal
         geo.along = (-n[1], n[0]) if isinstance(geo.contact.outline_a, Circle) else (n[1], -n[0])

@@ -61,9 +61,7 @@ class Cylindrical(JointKind):
         """The error for a joint-rate driver: a cylindrical joint has two rates, so the user is
         told to drive a body's omega relative to the other body and a point's velocity along the
         axis."""
-        return KinematikaError("schema", "a cylindrical joint has two rates (turning and sliding): drive "
-                               "the body's omega relative_to the other body and a point's velocity along "
-                               "the axis", where)
+        return KinematikaError("schema", "cylindrical-two-rates", where)
 
     def add(self, m: Any, a: str, b: str, at: str, axis: Any, id: Optional[str] = None) -> str:
         """`b` turns about and slides along `axis` through point `at`, fixed in `a`."""

@@ -34,7 +34,7 @@ def read_tree(path: str | Path) -> Any:
         raise KinematikaError("schema", "model-not-a-path", type=type(path).__name__)
     path = Path(path)
     where = str(path)
-    text, kind = read_text(path, "model")
+    text, kind = read_text(path, "model-file")
     if kind == "yaml" and _only_comments(text):
         raise KinematikaError("syntax", "file-empty", where)
     tree = parse_text(text, kind, where)
@@ -46,7 +46,7 @@ def read_tree(path: str | Path) -> Any:
 def read_text(path: Path, noun: str) -> tuple[str, str]:
     """The text of a model or cam file and its kind (yaml, toml, json, by the suffix): at
     most `limits.FILE_BYTES`, UTF-8 (a byte-order mark allowed), not blank; each refusal a
-    `syntax` error naming the file (`noun` says what such a file is: `model` or `cam`)."""
+    `syntax` error naming the file (`noun` says what such a file is: `model-file` or `cam-file`)."""
     where = str(path)
     kind = FORMATS.get(path.suffix.lower())
     if kind is None:
@@ -390,7 +390,7 @@ def load_cam(path: str | Path) -> Any:
     from ..cams.spec import design, parse
 
     path = Path(path)
-    text, kind = read_text(path, "cam")
+    text, kind = read_text(path, "cam-file")
     tree = parse_text(text, kind, str(path))
     if isinstance(tree, dict) and "bodies" in tree:
         return _model_cam(build_model(tree), str(path))

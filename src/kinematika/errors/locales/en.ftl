@@ -17,8 +17,8 @@ holds = { $what ->
        *[value] a single value
     }
 file-type-unknown = unknown file type { $suffix }: { $noun ->
-        [cam] a cam file
-       *[model] a model file
+        [cam-file] a cam file
+       *[model-file] a model file
     } ends in { $suffixes }
 file-not-utf8 = the file is not UTF-8 text (byte { $byte })
 file-missing = no such file
@@ -221,3 +221,58 @@ spline-points-differ = a spline's consecutive points must differ
 circle-radius-positive = a circle's radius must be positive
 arc-angles = an arc runs counter-clockwise from a0 to a1, with a0 < a1 ≤ a0 + 2π
 cam-flat-translating = a flat-faced follower cannot follow a translating cam
+
+## joints (joints/*.py)
+and-word = and
+nothing = {""}
+sweep-velocity-only = a sweep cannot follow a { $kind } joint{ $dim ->
+        [3] {" "}in 3D
+       *[other] {""}
+    }: its condition is on velocities only, so the positions depend on the path taken
+joint-other-dimension = a { $kind } joint belongs to a { $dim ->
+        [2] 3D
+       *[other] planar
+    } model
+joint-needs-key = a { $kind } joint needs `{ $key }`
+internal-owners = `internal` belongs to { $owners } joints
+joint-no-key = a { $kind } joint has no `{ $key }`{ $planar ->
+        [true] {" "}in a planar model (rotations are about z)
+       *[other] {""}
+    }
+joint-no-rate = a { $kind } joint has no rate to drive; drive a body's omega or a point's velocity
+rounding-hint = , more than the tolerance { $tolerance } (1e-6 of the model's size): write { $point } by construction, or with more digits
+slot-off-line = slot point '{ $point }' is off the line { $line }: gap { $gap }{ $hint }
+cam-joint-first-body = a cam joint's first body carries the cam: give '{ $body }' a `cam:` shape
+cam-joint-face = a flat-faced follower touches with its face: give '{ $body }' a `line` (the face)
+cam-joint-at = a cam joint needs `at`: the follower's { $roller ->
+        [true] roller's centre
+       *[other] knife edge
+    }
+curved-slot-outline = a curved slot is cut along a circle or curve of '{ $body }': give that body one
+cylindrical-two-rates = a cylindrical joint has two rates (turning and sliding): drive the body's omega relative_to the other body and a point's velocity along the axis
+rolling-needs-shapes = a { $kind } joint needs a shape on both bodies: give '{ $body }' a { $dim ->
+        [2] circle or line
+       *[other] disc or plane
+    }
+shapes-cannot-roll = these shapes cannot roll on each other
+no-touch = '{ $body }' does not touch '{ $other }': gap { $gap }{ $hint }
+the-contact-or-centre = the contact or centre
+the-contact = the contact
+contact-not-at = the contact is not at '{ $point }': it is { $distance } away{ $hint }
+internal-circles-only = `internal` tells how two circles touch; this is a { $contact } contact
+rolling-internal-wrong = the { $kind } pair is declared { $said } but its { $kind ->
+        [gear] pitch circles
+       *[other] circles
+    } touch { $said ->
+        [internal] externally
+       *[external] internally
+    }
+disc-flat-on-plane = disc '{ $disc }' lies flat on the plane of '{ $plane }': it touches along its face, not at a point
+sweep-rolling-only = a sweep follows rolling of circles and lines only
+contact-acceleration-curve = the geometric contact point's acceleration on a general curve needs its curvature's rate: ask for the bodies' points
+straight-outlines = two straight outlines touch along a line, not at a point: join them by a prismatic joint
+pair-cannot = { $kind } between '{ $body }' and '{ $other }': { $why }
+touching-needs-outlines = a { $kind } joint needs an outline on both bodies: give '{ $body }' a circle, line or curve (or name its point with `at`)
+outlines-cannot-touch = these outlines cannot touch at a point
+sweep-curve-touching = a sweep follows a curve touching a point, a circle or a line
+sweep-sliding-contact = a sweep follows sliding contact of a point on a circle or line, or of an outline on a curve
