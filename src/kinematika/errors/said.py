@@ -100,6 +100,8 @@ class Names:
             return f" {cat.format(self.joined + '-word', {})} ".join(items)
         if self.joined == "last-or":
             return ", ".join(items[:-1]) + f" {cat.format('or-word', {})} " + items[-1] if len(items) > 1 else items[0]
+        if self.joined == ";":
+            return "; ".join(items)
         if self.limit is None:
             return ", ".join(items)
         head = ", ".join(shown(n, 40) for n in items[:self.limit])

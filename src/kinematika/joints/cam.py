@@ -31,7 +31,7 @@ class Cam(Contact):
 
     name = "cam"
     summary = "the first body's cam drives the second, its follower (knife edge or roller at `at`, or flat face)"
-    keeps = "the follower {b} keeps touching the cam {a}"
+    keeps = "row-cam-touching"
 
     def conditions(self, dim: int) -> int:
         """One: the follower keeps touching the cam (a higher pair, planar only)."""

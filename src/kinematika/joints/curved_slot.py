@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from ..shapes import Circle, Curve
 from . import symbols
 from .derivatives import sliding
@@ -67,7 +67,7 @@ class CurvedSlot(JointKind):
         """v_rel·n = 0 at the pin: its relative velocity is along the slot; at the acceleration
         level with the normal part v_rel²/ρ and Coriolis (`touching.touch_row`)."""
         j = geo.joint
-        return [(touch_row(lv, j.a, j.b, geo.contact), f"{j.at}@{j.b} stays in the curved slot of {j.a}")]
+        return [(touch_row(lv, j.a, j.b, geo.contact), Said("row-curved-slot", point=f"{j.at}@{j.b}", body=j.a))]
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """The pin of the second body (the slot's curve is drawn as the first body's shape)."""

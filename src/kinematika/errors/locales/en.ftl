@@ -276,3 +276,54 @@ touching-needs-outlines = a { $kind } joint needs an outline on both bodies: giv
 outlines-cannot-touch = these outlines cannot touch at a point
 sweep-curve-touching = a sweep follows a curve touching a point, a circle or a line
 sweep-sliding-contact = a sweep follows sliding contact of a point on a circle or line, or of an outline on a curve
+
+## the conditions of the motion, named in messages (joints/*.py, engine/drivers.py, engine/idle.py)
+row-joint = { $id }: { $label }
+row-driver = { $where } ({ $label })
+row-joint-rate = rate of joint { $joint } = { $value }
+row-rate = { $name } of { $body }
+row-rate-relative = { $name } of { $body } relative to { $relative }
+row-equals = { $label } = { $value }
+row-component = { $label } ({ $axis }) = { $value }
+row-point-along = { $name } of { $point } along the given direction = { $value }
+row-point = { $name } of { $point }
+row-idle = no idle spin of { $body } about { $axis }
+row-curved-slot = { $point } stays in the curved slot of { $body }
+row-turning-axis = relative rotation only about the axis ({ $n })
+row-sliding-axis = relative sliding only along the axis ({ $n })
+row-across-guide = no relative motion across the guide ({ $n })
+row-moves-with = { $point } moves with { $other } ({ $axis })
+row-no-slip = no slip at the contact of { $body } and { $other } ({ $axis })
+row-slot = { $point } stays on the slot of { $body }
+row-turns-with = { $body } turns with { $other }
+row-body-moves-with = { $body } moves with { $other } ({ $axis })
+row-no-sideways = { $point } has no sideways velocity relative to { $body }
+row-touching = { $b } keeps touching { $a }
+row-cam-touching = the follower { $b } keeps touching the cam { $a }
+row-no-rotation = no relative rotation
+row-no-rotation-axis = no relative rotation ({ $axis })
+
+## the mobility of the mechanism (engine/mobility.py)
+infinite = infinite
+dead-point = a dead point: the drivers do not fix the motion here; { $count ->
+        [0] the drivers depend
+        [one] { $drivers } depends
+       *[other] { $drivers } depend
+    } on the joints (condition number { $condition } of the dimensionless Jacobian, limit { $limit })
+mobility-free = the mechanism has { $dof ->
+        [one] { $dof } degree
+       *[other] { $dof } degrees
+    } of freedom but the drivers give { $conditions ->
+        [one] { $conditions } independent condition
+       *[other] { $conditions } independent conditions
+    }; left free: { $count ->
+        [0] some motion
+       *[other] { $free }
+    }
+drivers-conflict = the drivers conflict, their values do not agree with each other or the joints: { $named } ({ $dof ->
+        [one] { $dof } degree
+       *[other] { $dof } degrees
+    } of freedom; { $given ->
+        [one] { $given } driver condition
+       *[other] { $given } driver conditions
+    }, { $conditions } independent)
