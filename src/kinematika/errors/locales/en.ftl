@@ -327,3 +327,36 @@ drivers-conflict = the drivers conflict, their values do not agree with each oth
         [one] { $given } driver condition
        *[other] { $given } driver conditions
     }, { $conditions } independent)
+
+## the instant: values, directions, points by construction (engine/*.py)
+direction-zero = a direction cannot be the zero vector
+direction-not-exact = this direction cannot be made a unit vector exactly: its components are too far apart in size (write the small one as 0)
+direction-points-coincide = a direction needs two different points: { $start } and { $end } coincide
+value-not-real = a value is not a real number for the symbols' values (the square root or a power of a negative quantity?)
+parameters-cycle = parameters refer to each other in a cycle: { $names }
+points-not-real = the points are not real for any values of the symbols tried (a square root of a negative number?)
+curves-need-numbers = curves and cams are drawn from numbers: give the parameters their values (or solve without --symbolic)
+curve-through-points = the curve cannot be drawn through its points: { $why }
+radius-positive = a radius must be positive, got { $radius }
+jacobian-singular-large = the { $rows }×{ $columns } constraint Jacobian is singular or not square (sparse LU); the system is too large to say which conditions are missing or dependent
+structurally-singular = the system has no structurally independent set of conditions for every unknown
+angle-in-radians = the angle { $angle } is in radians: { $degrees }°, { $turns } turns; for { $angle }° write deg({ $written })
+point-too-large = the exact coordinates of { $point } would have about { $size } operations (more than { $limit }): too large for formulas; give more parameters numbers, or solve without --symbolic
+length-positive = { $what ->
+       *[radius] a radius
+    } must be positive, got { $value }
+direction-points-same = the two points that give the direction coincide
+fit-each-side = , one on each side of { $line }
+fit-on-line = {" "}on the line { $line }
+circles-same-centre = the circles about { $a } and { $b } have the same centre
+circles-apart = the circles about { $a } ({ $ra }) and { $b } ({ $rb }) do not meet: centres { $d } apart, { $gap } more than { $ra } + { $rb }
+circles-inside = the circles about { $a } ({ $ra }) and { $b } ({ $rb }) do not meet: the circle about { $inner } lies inside the one about { $outer } (centres { $d } apart, { $gap } less than |{ $ra } − { $rb }|)
+line-direction-zero = a line's direction cannot be the zero vector
+circle-misses-line = the circle about { $centre } ({ $radius }) misses the line { $line }: the line is { $distance } from { $centre }, { $gap } more than the radius
+lines-parallel = the lines { $a } and { $b } are parallel: they do not meet
+line-points-coincide = the line { $line } is given by two points that coincide
+two-points-fit = two points fit{ $relation }: { $points }; choose one with side: { $first } or { $second }, or near: [x, y]
+beyond-floats = beyond what floats hold
+model-size-range = the model's size is { $size }: kinematika computes with lengths between { $low } and { $high }, in any unit; write the lengths in another unit
+rates-range = the drivers' values are out of range for this mechanism (a rate of { $rate } per unit of time): kinematika computes with rates between { $low } and { $high }; write the times in another unit
+values-overflow = the model's values are too large: its velocities or accelerations overflow the range of floating-point numbers
