@@ -11,5 +11,5 @@ def known(lang: str, where: str = "--lang", kind: str = "schema") -> str:
     """`lang` when it is one of LANGS, else the one-line error of `kind` naming its place
     `where` (an option, a model's key such as ``names.fr``, a request's field)."""
     if lang not in LANGS:
-        raise KinematikaError(kind, f"unknown language {lang!r} (languages: {', '.join(LANGS)})", where)
+        raise KinematikaError(kind, "unknown-language", where, lang=lang, langs=list(LANGS))
     return lang

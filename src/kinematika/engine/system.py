@@ -134,7 +134,7 @@ class InstantSolver:
             return x_num.tolist()
         from ..budget import check as within_budget
 
-        within_budget("solving the equations exactly")
+        within_budget("stage-solving")
         exact = solve_symbolic(self.analysis, self.a_sym, b, self.a_num)
         rate = max(inst.rate, inst.rate ** 2)        # the size of rates and their squares
         inst.backend.check_against(exact, x_num, inst.probe, rate * max(1.0, inst.scale))

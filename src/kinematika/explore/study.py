@@ -23,7 +23,7 @@ from typing import Any, Callable, Iterable, Optional
 
 import numpy as np
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from ..memory import arrays_on_heap
 from .designs import Designs, Vary
 from .evaluate import Evaluator, Sweep
@@ -151,7 +151,7 @@ def _on_scheduler(study: Study, pending: list[int], done: Callable[[int, Any], N
     """The chunks on a Dask cluster: `scheduler` is its address or a Client."""
     from ..extras import need
 
-    distributed = need("dask.distributed", "a study on a Dask cluster", "--scheduler")
+    distributed = need("dask.distributed", Said("study-on-dask"), "--scheduler")
     if isinstance(scheduler, str):
         try:
             client = distributed.Client(scheduler, timeout="20s")

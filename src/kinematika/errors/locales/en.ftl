@@ -360,3 +360,24 @@ beyond-floats = beyond what floats hold
 model-size-range = the model's size is { $size }: kinematika computes with lengths between { $low } and { $high }, in any unit; write the lengths in another unit
 rates-range = the drivers' values are out of range for this mechanism (a rate of { $rate } per unit of time): kinematika computes with rates between { $low } and { $high }; write the times in another unit
 values-overflow = the model's values are too large: its velocities or accelerations overflow the range of floating-point numbers
+
+## limits of the work, optional modules, languages (budget.py, extras.py, languages.py)
+over-budget = finding { $what } takes { $counted ->
+        [true] more than { $steps } steps of exact algebra
+       *[other] longer than { $seconds } s of CPU time
+    }{ $staged ->
+        [true] {" "}({ $stage })
+       *[other] {""}
+    }: they are too large; { $advice }
+exact-formulas = the exact formulas
+stage-solving = solving the equations exactly
+stage-simplifying = simplifying the formulas
+advice-symbolic = give some parameters numbers, or solve without --symbolic
+advice-null = give numbers to some of the parameters left as symbols (null: { $names })
+advice-numbers = give some parameters numbers
+module-missing = { $what } needs { $module }, which is not installed: install it with { $command }
+writing-parquet = writing Parquet (or write .npz)
+writing-dxf = writing DXF
+study-on-dask = a study on a Dask cluster
+unknown-language = unknown language '{ $lang }' (languages: { $langs })
+centres-planar = instant centres are planar; ask for the screw `axis` of each body in 3D
