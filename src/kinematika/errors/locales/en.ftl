@@ -381,3 +381,49 @@ writing-dxf = writing DXF
 study-on-dask = a study on a Dask cluster
 unknown-language = unknown language '{ $lang }' (languages: { $langs })
 centres-planar = instant centres are planar; ask for the screw `axis` of each body in 3D
+
+## sweeps, moves and assemblies (sweep/*.py)
+assembly-not-whole = an assembly is a whole number, got { $got }
+assembly-missing = there is no assembly { $number }: this mechanism has { $count } at its drawn input (see `kinematika assemblies`)
+assemblies-too-many = { $dyads } dyads close in two ways each: listing 2^{ $dyads } assemblies is beyond the limit of 2^{ $limit }
+sweep-by-varied = the sweep's length ({ $by }) depends on a varied parameter: give it as a number (--by)
+move-not-number = { $problem } (a move is a number of degrees or lengths)
+move-not-finite = a move is a finite number
+move-not-driven = joint '{ $joint }' is not driven; `move` advances a driven joint ({ $count ->
+        [0] none here
+       *[other] { $driven }
+    })
+move-unreachable = { $joint } cannot be moved { $amount }{ $unit }: the mechanism meets a dead point or comes apart after { $got }{ $unit }
+sweep-by-needed = joint '{ $joint }' is { $kind }: give the sweep's length (`by` in the model's sweep section, or --by)
+steps-whole = steps must be a whole number, got { $got }
+steps-range = steps must be between 1 and { $limit }, got { $got }
+steps-too-many-values = { $steps } steps of { $per_row } values each are more than a sweep holds ({ $limit } values): take at most { $most } steps
+by-number = by must be a number, got { $got }
+by-finite = by must be a finite number
+sweep-no-driven-joint = no driven joint to sweep: drive a joint's rate, or the omega or velocity of a body joined to the frame by a revolute or prismatic joint
+sweep-not-driven = joint '{ $joint }' is not driven; a sweep advances a driven joint: { $driven }
+fixture-shape = { $shape }'s place
+fixture-joint = joint { $joint }'s direction
+move-symbolic-3d = a 3D model with symbolic parameters cannot be moved: give its parameters values (--set NAME=VALUE)
+move-symbolic-once = a model with symbolic parameters is moved once: give all its moves together
+move-same-body = two moves turn the same body: give it one move
+move-not-input = joint '{ $joint }' does not join a body to the frame: move a model with symbolic parameters by its input joint
+move-at-values = cannot move: at values of the symbols where the model holds ({ $values }), { $problem }
+move-exact-numbers = cannot move exactly: point '{ $point }' follows the input in numbers, not in its exact coordinates (give the parameters values)
+move-exact-rolls = cannot move exactly: point '{ $point }' is on '{ $body }', which rolls on a line: its turn is the path of its centre over its radius, no closed form here (give the parameters values)
+move-exact-no-form = cannot move exactly: point '{ $point }' does not follow the input: no construction, rolling ratio or other body gives the pose of '{ $body }' in closed form; write { $point } by construction (or give values)
+move-exact-constructed = cannot move exactly: point '{ $point }' does not follow the input: it is constructed from points that do not move with { $body }; construct it from those (or give values)
+move-exact-fixture = cannot move exactly: '{ $body }' turns with no closed form here, and its { $what } is written in numbers; give it by points (or give the parameters values)
+body-no-point = body '{ $body }' carries no point, so its shapes cannot be moved: list one of its points
+cannot-assemble-there = the mechanism cannot be assembled there
+sweep-needs-numbers = a sweep needs numbers: give a value to { $names }
+sweep-at = increment { $k } ({ $joint } = { $value } { $unit })
+sweep-drivers-contradict = the drivers as written contradict the joints at { $at }: a vector driver (3D ω, a velocity) stays fixed in the ground axes as the mechanism turns; drive the joint's rate instead
+sweep-singular = the configuration at { $at } is singular for the drivers (a dead point: condition number above 1e+10){ $said ->
+        [true] {" "}({ $what })
+       *[other] {""}
+    }; use --skip-bad to skip such positions
+sweep-cannot-assemble = the mechanism cannot be assembled at { $at }{ $said ->
+        [true] : { $what } cannot close the loop
+       *[other] {""}
+    }; use --skip-bad to skip such positions
