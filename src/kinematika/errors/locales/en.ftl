@@ -427,3 +427,39 @@ sweep-cannot-assemble = the mechanism cannot be assembled at { $at }{ $said ->
         [true] : { $what } cannot close the loop
        *[other] {""}
     }; use --skip-bad to skip such positions
+
+## studies and synthesis (explore/*.py)
+metrics-once = each metric once, and none named as a parameter or 'assembles'/'reason'
+study-needs-numbers = a study needs numbers: give a value to { $names } or vary it
+vary-form = --vary expects NAME=LOW:HIGH (as a=1:5), got { $got }
+vary-interval = --vary { $name }: the interval must be finite with LOW <= HIGH, got { $got }
+vary-none = name at least one parameter to vary (--vary NAME=LOW:HIGH)
+varied-twice = a parameter is varied twice: { $names }
+grid-or-samples = give either --grid N or --samples N
+grid-positive = --grid and --samples take a positive number
+designs-too-many = { $count } designs: at most { $limit }
+motion-error-two-points = motion_error: body '{ $body }' needs two points to have an orientation
+metric-unknown = unknown metric '{ $metric }'; metrics: grashof, transmission, dead_points, time_ratio[:BODY], range:BODY, peak_omega:BODY, peak_alpha:BODY, peak_speed:POINT, peak_accel:POINT, path_error:POINT=FILE.csv, motion_error:POINT=FILE.csv, structural_error:BODY=FILE.csv, angle|omega|alpha:BODY=X, speed|accel|x|y:POINT=X
+grashof-four-bar = grashof needs a model whose moving loop is a four-bar driven at its crank
+time-ratio-linkage = time_ratio without a body needs a four-bar or slider-crank; name the output (time_ratio:BODY)
+transmission-linkage = transmission needs a four-bar or slider-crank driven at its crank
+metric-at-input = { $metric }=X takes the input's position X (a number, { $unit } from the drawn position), got { $got }
+input-outside-sweep = the input must lie in the sweep's range { $low } to { $high } { $unit }
+time-ratio-full-turn = time_ratio needs the sweep of a full turn of the crank (by: 360)
+target-csv = { $name }: a target file is a .csv file
+table-not-numbers = { $name }, line { $line }: expected numbers, got { $got }
+table-columns = { $name }, line { $line }: expected { $columns } finite numbers
+table-empty = { $name } holds no rows of numbers
+cannot-write = cannot write { $path }: { $reason }
+cannot-read = cannot read { $path }: { $reason }
+study-no-column = the study has no column '{ $name }' (columns: { $columns })
+study-worker-died = a worker process of the study ended abruptly (out of memory?): try fewer --workers or a smaller --chunk
+dask-unreachable = cannot reach the Dask scheduler at { $scheduler }: { $reason }
+study-interrupted = { $folder } holds an interrupted study: add --resume to continue it, or delete that folder to start again
+study-different = { $folder } holds a different study (another model, parameters, designs or metrics): delete it to start again
+study-output = the output is a .parquet or .csv file, got { $name }
+study-stopped = { $problem }{ $note }
+study-kept = ; { $kept } designs are kept in { $folder }: run again with --resume to go on
+study-needs-model = a study needs a model file or a model's text
+function-unknown-name = in { $source }: unknown name '{ $name }' (the function is of x, the input's increment)
+function-not-finite = { $source } is not finite over { $low } to { $high }
