@@ -463,3 +463,33 @@ study-kept = ; { $kept } designs are kept in { $folder }: run again with --resum
 study-needs-model = a study needs a model file or a model's text
 function-unknown-name = in { $source }: unknown name '{ $name }' (the function is of x, the input's increment)
 function-not-finite = { $source } is not finite over { $low } to { $high }
+
+## exercises (exercise/*.py)
+variant-missing = there is no variant { $number } (variants 1 to { $count })
+vary-unknown-parameter = --vary { $name }: unknown parameter (parameters: { $parameters })
+vary-none-step = name at least one parameter to vary (--vary NAME=LOW:HIGH[:STEP])
+exercise-needs-numbers = an exercise needs numbers: give every symbolic parameter a value (or vary it)
+exercise-no-model = exercise.json does not name the model file
+exercise-lacks = exercise.json lacks vary, seed or lang
+exercise-cannot-read = cannot read { $path }: { $reason } (is it a folder `kinematika exercise` wrote?)
+file-not-json = { $name } is not JSON: { $problem }
+file-not-json-object = { $name } is not a JSON object
+csv-not-utf8 = { $name } is not UTF-8 text
+csv-no-column = { $name } has no column '{ $column }' (its header: { $count ->
+        [0] none
+       *[other] { $header }
+    })
+variants-numbered = variants are numbered 1, 2, … with a value of each varied parameter
+variants-none = no variants
+key-mismatch = key.csv does not match the model solved again (variant { $variant }, { $question }): was the model or the key edited?
+question-not-asked = '{ $question }' is not asked in variant { $variant } (its questions: { $asked })
+row-no-student = a row without a student
+variant-not-number = variant { $got } is not a number
+answered-twice = { $student } answers { $question } of variant { $variant } twice
+statement-missing = the exercise section has no statement in '{ $lang }' (it has { $langs })
+vary-step-form = --vary expects NAME=LOW:HIGH[:STEP] (as s=300:500:10), got { $got }
+vary-step-interval = --vary { $name }: give LOW <= HIGH and a positive STEP, got { $got }
+vary-grid-large = --vary { $name }: { $count } values on the grid, at most { $limit }: take a larger step
+count-range = --count takes 1 to { $limit } variants, got { $got }
+grids-too-small = the grids hold { $total } different variants, fewer than --count { $count }: widen an interval or take smaller steps
+variants-few = only { $found } of { $count } variants found in { $drawn } drawn: { $apart } do not assemble, { $dead } are near a dead point; change the intervals
