@@ -493,3 +493,15 @@ vary-grid-large = --vary { $name }: { $count } values on the grid, at most { $li
 count-range = --count takes 1 to { $limit } variants, got { $got }
 grids-too-small = the grids hold { $total } different variants, fewer than --count { $count }: widen an interval or take smaller steps
 variants-few = only { $found } of { $count } variants found in { $drawn } drawn: { $apart } do not assemble, { $dead } are near a dead point; change the intervals
+
+## figures and explanations (draw/*.py, explain/*.py, web/strings.py)
+animate-planar = animate draws planar models; draw a 3D model's instant with `kinematika draw`
+ffmpeg-missing = writing .mp4 needs the ffmpeg program, which is not installed (on Debian or Ubuntu: apt install ffmpeg; with conda: conda install ffmpeg); or write a .gif, which needs nothing more
+sweep-none-assembled = no position of the sweep could be assembled
+trace-unknown-point = unknown point '{ $point }' to trace
+plot-format = cannot plot to '{ $name }': give a .png, .svg or .pdf file
+draw-at-not-real = the model cannot be drawn at these values: point { $point } is not real there
+unknown-format = unknown format '{ $format }' (formats: { $formats })
+catalogue-no-message = no message '{ $key }' in the '{ $lang }' catalogue
+catalogue-message-error = message '{ $key }' of the '{ $lang }' catalogue: { $problem }
+page-message-error = page message '{ $key }' ({ $lang }): { $problem }
