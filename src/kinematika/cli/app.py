@@ -41,7 +41,7 @@ def pairs(items: Optional[list[str]], option: str) -> dict[str, str]:
     for item in items or []:
         name, sep, value = item.partition("=")
         if not sep or not name.strip() or not value.strip():
-            raise KinematikaError("usage", f"{option} expects NAME=VALUE, got {item!r}", option)
+            raise KinematikaError("usage", "option-name-value", option, option=option, got=repr(item))
         out[name.strip()] = value.strip()
     return out
 

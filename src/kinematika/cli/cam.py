@@ -83,7 +83,7 @@ def _show(data: dict) -> None:
     """The summary as a few lines of text; warnings (jumps) on standard error."""
     import warnings
 
-    from ..errors import KinematikaWarning
+    from ..errors import KinematikaWarning, Said
 
     u, plate = data["units"], data["cam"]["kind"] == "translating"
     at = (lambda x: f"{x:.4g} {u}") if plate else (lambda x: f"{x:.4g}°")
@@ -114,4 +114,4 @@ def _show(data: dict) -> None:
     for path in data["written"]:
         print(f"wrote {shown(path)}")
     for w in data.get("warnings", []):
-        warnings.warn(KinematikaWarning(w["message"], w["where"]), stacklevel=1)
+        warnings.warn(KinematikaWarning(Said.text_of(w["message"]), w["where"]), stacklevel=1)

@@ -8,6 +8,7 @@ from typing import Optional
 
 import typer
 
+from ..errors import Said
 from .app import JsonOpt, ModelArg, app
 from .shared import cannot_write, guarded, output_file, print_json, writing
 
@@ -52,9 +53,9 @@ def exercise(model: Path = ModelArg,
 def _folder(output: Path) -> None:
     """A folder can be written at `output` (made if missing), else an `output` error."""
     if output.exists() and not output.is_dir():
-        raise cannot_write(output, "it is a file", "-o")
+        raise cannot_write(output, Said("it-is-a-file"), "-o")
     if not output.parent.is_dir():
-        raise cannot_write(output, f"there is no folder {output.parent}", "-o")
+        raise cannot_write(output, Said("no-folder", folder=str(output.parent)), "-o")
 
 
 def _names(path: Path) -> list[str]:
@@ -64,8 +65,7 @@ def _names(path: Path) -> list[str]:
 
     rows = read_csv(path, [])
     if not rows:
-        raise KinematikaError("usage", f"{path.name} names no students (a header, then one per row)",
-                              "--students")
+        raise KinematikaError("usage", "students-none", "--students", name=path.name)
     first = next(iter(rows[0]))
     names = [r[first] for r in rows if r.get(first)]
     return names

@@ -11,7 +11,7 @@ from typing import Optional
 
 import typer
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, reason
 from .app import app, guarded
 import contextlib
 
@@ -58,13 +58,12 @@ def _start(model: Optional[Path]):
         return Start()
     fmt = FORMATS.get(model.suffix.lower())
     if fmt is None:
-        raise KinematikaError("syntax", f"unknown file type {model.suffix or '(none)'!r}: a model "
-                              f"file ends in {', '.join(FORMATS)}", str(model))
+        raise KinematikaError("syntax", "file-type-unknown", str(model), suffix=repr(model.suffix or '(none)'),
+                              noun="model-file", suffixes=list(FORMATS))
     try:
         text = read_bytes(model, str(model)).decode("utf-8-sig")
     except UnicodeDecodeError as err:
-        raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})",
-                              str(model)) from None
+        raise KinematikaError("syntax", "file-not-utf8", str(model), byte=err.start + 1) from None
     return Start(text=text, fmt=fmt, name=model.name)
 
 
@@ -77,8 +76,8 @@ def _bind(host: str, port: int) -> socket.socket:
         sock.bind((host, port))
         sock.listen(128)
     except OSError as err:
-        raise KinematikaError("usage", f"cannot serve on {host}:{port}: {err.strerror or err}",
-                              "--port" if port else "--host") from None
+        raise KinematikaError("usage", "cannot-serve", "--port" if port else "--host", address=f"{host}:{port}",
+                              reason=reason(err)) from None
     sock.set_inheritable(True)
     return sock
 

@@ -505,3 +505,23 @@ unknown-format = unknown format '{ $format }' (formats: { $formats })
 catalogue-no-message = no message '{ $key }' in the '{ $lang }' catalogue
 catalogue-message-error = message '{ $key }' of the '{ $lang }' catalogue: { $problem }
 page-message-error = page message '{ $key }' ({ $lang }): { $problem }
+
+## the command line (cli/*.py)
+out-of-memory = the work needs more memory than this machine gives; make the model or the sweep smaller
+internal-error = internal error ({ $detail }); rerun with KINEMATIKA_DEBUG=1 and report it
+no-folder = there is no folder { $folder }
+it-is-a-folder = it is a folder
+it-is-a-file = it is a file
+the-output-file = the output file
+students-none = { $name } names no students (a header, then one per row)
+synthesis-no-design = no design of the intervals completes its cycle
+synthesis-one-target = give one of --target (path), --target-function (function) or --target-motion (motion)
+function-needs-output = function generation needs --output BODY
+path-needs-point = path and motion generation need --point P
+map-or-pareto = give --map X,Y,METRIC or --pareto M1,M2
+option-names-count = { $option } takes { $count } names separated by commas
+study-unreadable = cannot read the study { $path }: { $reason }
+option-name-value = { $option } expects NAME=VALUE, got { $got }
+cannot-serve = cannot serve on { $address }: { $reason }
+format-needs-output = --format { $format } needs -o FILE, the file to write
+sweep-format = { $got } is not a sweep format: give --format { $formats } or a file ending in one of them
