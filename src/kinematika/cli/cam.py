@@ -7,7 +7,7 @@ from typing import Any, Optional
 import typer
 
 from ..text import shown
-from .app import JsonOpt, app, respond
+from .app import JsonOpt, MessagesOpt, app, messages, respond
 from .shared import output_file, writing
 
 FIGURES = ("png", "svg", "pdf")
@@ -33,9 +33,11 @@ def cam(
     drawing: Optional[Path] = typer.Option(None, "--drawing", help="write the cam's drawing: profile, pitch "
                                            "curve, base circle, follower (PNG, SVG, PDF)"),
     as_json: bool = JsonOpt,
+    lang: Optional[str] = MessagesOpt,
 ) -> None:
     """A cam from its motion program (or measured profile) and follower: the largest pressure
     angle, the smallest radius of curvature, undercutting, the program's jumps; files on request."""
+    messages(lang, as_json)
     _figure_path(plot, "--plot")
     _figure_path(drawing, "--drawing")
 

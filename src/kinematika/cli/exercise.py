@@ -9,7 +9,7 @@ from typing import Optional
 import typer
 
 from ..errors import Said
-from .app import JsonOpt, ModelArg, app
+from .app import JsonOpt, MessagesOpt, ModelArg, app, messages
 from .shared import cannot_write, guarded, output_file, print_json, writing
 
 DEFAULT_COUNT = 30
@@ -79,9 +79,11 @@ def grade(folder: Path = typer.Argument(..., help="the folder `kinematika exerci
           as_json: bool = JsonOpt,
           gradebook: Optional[Path] = typer.Option(None, "--gradebook", help="also write a CSV Moodle's "
                                                    "gradebook imports (student,grade out of 100)"),
+          lang: Optional[str] = MessagesOpt,
           ) -> None:
     """Mark a class's answers: right within the key's tolerance, and each wrong one named by the
     usual mistake whose value it equals (Coriolis left out, degrees as radians, ...)."""
+    messages(lang, as_json)
     from ..exercise import grade as mark, load_exercise
     from ..exercise.grading import gradebook_csv, summary_text
 

@@ -7,7 +7,7 @@ from typing import Optional
 
 import typer
 
-from .app import ModelArg, app, guarded, output_file
+from .app import MessagesOpt, ModelArg, app, guarded, messages, output_file
 
 
 @app.command()
@@ -34,9 +34,11 @@ def explore(model: Path = ModelArg,
                                                 help="positions per design"),
             chunk: Optional[int] = typer.Option(None, "--chunk", min=1, help="designs per chunk "
                                                 "(written as they finish)"),
+            lang: Optional[str] = MessagesOpt,
             ) -> None:
     """Evaluate many designs of MODEL (values of its parameters) and write one row each: the
     parameters, whether it assembles (and why not), and the metrics."""
+    messages(lang)
     from ..explore.evaluate import Sweep
     from ..explore.study import Parts, make_study, resume_note, write_study
     from ..sweep.progress import reporter
@@ -88,10 +90,12 @@ def synthesize(model: Path = ModelArg,
                                                    "the targets to FILE"),
                steps: Optional[int] = typer.Option(None, "--steps", min=1, max=100_000,
                                                    help="positions per design"),
+               lang: Optional[str] = MessagesOpt,
                ) -> None:
     """Choose parameter values so that a point follows target points (path generation), a body's
     rotation follows a function of the input's (function generation) or a body passes through
     poses (motion generation); write the best designs as model files."""
+    messages(lang)
     from ..explore.evaluate import Sweep
     from ..explore.synthesis import synthesize as run, write_designs
 
@@ -185,8 +189,10 @@ def plot_study(study: Path = typer.Argument(..., help="a study's rows (.parquet 
                maximize: list[str] = typer.Option([], "--maximize", help="a metric of --pareto for "
                                                   "which higher is better"),
                output: Path = typer.Option(..., "-o", help="the figure (.png, .svg, .pdf)"),
+               lang: Optional[str] = MessagesOpt,
                ) -> None:
     """Draw a study: a metric's map over two parameters, or two metrics and their Pareto front."""
+    messages(lang)
     from ..errors import KinematikaError
 
     def work() -> str:

@@ -25,7 +25,7 @@ def fail(err: KinematikaError, as_json: bool) -> NoReturn:
     if as_json:
         print_json(err.as_json())
     else:
-        print(f"error ({err.kind}): {err}", file=sys.stderr)
+        print(Said("error-line", kind=err.kind, text=str(err)), file=sys.stderr)
     sys.exit(2)
 
 
@@ -47,7 +47,7 @@ def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
         if as_json:
             print_json({"error": {"kind": "internal", "message": message, "where": ""}})
         else:
-            print(f"error: {message}", file=sys.stderr)
+            print(Said("internal-line", text=message), file=sys.stderr)
         sys.exit(1)
 
 

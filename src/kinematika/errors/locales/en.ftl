@@ -600,3 +600,12 @@ no-template = no template '{ $name }'
 request-content-type = send the request as JSON (Content-Type: application/json)
 request-too-large = the request is too large ({ $size } bytes; at most { $limit })
 internal-error-page = internal error ({ $detail }); please report it
+
+## the lines the command line prints (cli/__init__.py, cli/shared.py)
+error-line = error ({ $kind }): { $text }
+internal-line = error: { $text }
+warning-line = warning: { $text }
+usage-line = error (usage): { $text } (see { $command } --help)
+aborted = aborted
+click = { $text }
+serving-open = serving on { $host }: anyone who can reach this machine on port { $port } can use the page (it reads no file, but it computes for them)
