@@ -492,7 +492,7 @@ move-exact-fixture = no es pot moure exactament: '{ $body }' gira sense forma ta
 body-no-point = el sòlid '{ $body }' no porta cap punt, així que les seves formes no es poden moure: afegeix-hi un dels seus punts
 cannot-assemble-there = el mecanisme no es pot muntar aquí
 sweep-needs-numbers = un escombratge necessita nombres: dona un valor a { $names }
-sweep-at = increment { $k } ({ $joint } = { $value } { $unit })
+sweep-at = l’increment { $k } ({ $joint } = { $value } { $unit })
 sweep-drivers-contradict = les dades de moviment tal com són escrites contradiuen els enllaços a { $at }: una dada vectorial (ω en 3D, una velocitat) queda fixa en els eixos del fix mentre el mecanisme gira; imposa en canvi la velocitat de l’enllaç
 sweep-singular = la configuració a { $at } és singular per a les dades de moviment (un punt mort: nombre de condició més gran que 1e+10){ $said ->
         [true] {" "}({ $what })

@@ -492,7 +492,7 @@ move-exact-fixture = no se puede mover exactamente: '{ $body }' gira sin forma c
 body-no-point = el sólido '{ $body }' no lleva ningún punto, así que sus formas no se pueden mover: añade uno de sus puntos
 cannot-assemble-there = el mecanismo no se puede montar ahí
 sweep-needs-numbers = un barrido necesita números: da un valor a { $names }
-sweep-at = incremento { $k } ({ $joint } = { $value } { $unit })
+sweep-at = el incremento { $k } ({ $joint } = { $value } { $unit })
 sweep-drivers-contradict = los datos de movimiento tal como están escritos contradicen los pares en { $at }: un dato vectorial (ω en 3D, una velocidad) queda fijo en los ejes del fijo mientras el mecanismo gira; impón en su lugar la velocidad del par
 sweep-singular = la configuración en { $at } es singular para los datos de movimiento (un punto muerto: número de condición mayor que 1e+10){ $said ->
         [true] {" "}({ $what })
