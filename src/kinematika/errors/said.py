@@ -63,7 +63,7 @@ class Num:
     """A number with its own format spec (`Num(gap, ".6g")`, `Num(size, ",")`): written with
     the spec, then with the language's decimal sign and digit grouping."""
 
-    __slots__ = ("value", "spec")
+    __slots__ = ("spec", "value")
 
     def __init__(self, value: float, spec: str) -> None:
         self.value, self.spec = value, spec
@@ -73,6 +73,9 @@ class Num:
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Num) and (self.value, self.spec) == (other.value, other.spec)
+
+    def __hash__(self) -> int:
+        return hash((self.value, self.spec))
 
     def __reduce__(self) -> tuple:
         return Num, (self.value, self.spec)
@@ -84,7 +87,7 @@ class Names:
     With `joined="or"` (or `"and"`) they are joined by the language's word for it (`a or b or c`), with
     `joined="last-or"` the last two only (`a, b or c`)."""
 
-    __slots__ = ("items", "limit", "joined")
+    __slots__ = ("items", "joined", "limit")
 
     def __init__(self, items: Any, limit: int | None = 12, joined: str = ",") -> None:
         self.items, self.limit, self.joined = list(items), limit, joined
@@ -112,6 +115,9 @@ class Names:
         return isinstance(other, Names) and (self.items, self.limit, self.joined) == (
             other.items, other.limit, other.joined)
 
+    def __hash__(self) -> int:
+        return hash((len(self.items), self.limit, self.joined))
+
     def __reduce__(self) -> tuple:
         return Names, (self.items, self.limit, self.joined)
 
@@ -135,7 +141,7 @@ class Said:
     every language: the words of another program (an operating system's reason) or of the
     user."""
 
-    __slots__ = ("key", "args", "_cache")
+    __slots__ = ("_cache", "args", "key")
 
     def __init__(self, key: str, /, **args: Any) -> None:
         self.key = key
@@ -227,8 +233,10 @@ class Catalogue:
         if not self.bundle.has_message(key):
             return catalogue(ENGLISH).format(key, args) if self.lang != ENGLISH else key
         message = self.bundle.get_message(key)
+        if message.value is None:
+            return key
         text, _ = self.bundle.format_pattern(message.value, args)
-        return text
+        return str(text)
 
 
 @lru_cache(maxsize=None)

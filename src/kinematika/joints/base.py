@@ -52,7 +52,7 @@ class JointGeometry:
     roller: float = 0.0                     # a cam follower's roller radius (drawn about `at`)
 
 
-Rows = list[tuple[Any, str]]
+Rows = list[tuple[Any, Said]]          # each condition and its message (errors' catalogue)
 
 
 class JointKind:
