@@ -91,7 +91,8 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
     async def example(request: HttpRequest) -> Response:
         name = request.path_params["name"]
         if name not in start.examples:
-            return _failure(Failure(404, "usage", "no-example", "name", name=name))
+            with speaking(_asked(request.query_params.get("lang"))):
+                return _failure(Failure(404, "usage", "no-example", "name", name=name))
         fmt = "toml" if name.endswith(".toml") else "yaml"
         return JSONResponse({"model": start.examples[name], "format": fmt, "name": name},
                             headers=SECURITY)
@@ -103,9 +104,9 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
             try:
                 raw = await _read_body(request)
             except Failure as err:
-                with speaking(asked if asked in LANGS else None):
+                with speaking(_asked(asked)):
                     return _failure(err)
-            with speaking(_language_of(raw) or (asked if asked in LANGS else None)):
+            with speaking(_language_of(raw) or _asked(asked)):
                 return await answer(raw)
 
         async def answer(raw: bytes) -> Response:
@@ -144,7 +145,8 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
         try:
             return JSONResponse(page_strings(request.path_params["lang"]), headers=SECURITY)
         except KinematikaError as err:
-            return _error(404, err.as_json())
+            with speaking("en"):
+                return _error(404, err.as_json())
 
     async def template(request: HttpRequest) -> Response:
         from .templates import NAMES, template
@@ -152,7 +154,7 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
         name = request.path_params["name"]
         if name not in NAMES:
             asked = request.query_params.get("lang")
-            with speaking(asked if asked in LANGS else None):
+            with speaking(_asked(asked)):
                 return _failure(Failure(404, "usage", "no-template", "name", name=name))
         return JSONResponse({"model": template(name, request.query_params.get("lang", "en")),
                              "format": "yaml", "name": name}, headers=SECURITY)
@@ -163,7 +165,8 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
         try:
             body = page_html(request.path_params.get("name", "model-format.md"))
         except KinematikaError as err:
-            return _error(404, err.as_json())
+            with speaking(_asked(request.query_params.get("lang"))):
+                return _error(404, err.as_json())
         if isinstance(body, bytes):
             return Response(body, media_type="image/png", headers=SECURITY)
         return Response(body, media_type="text/html; charset=utf-8", headers=SECURITY)
@@ -244,10 +247,16 @@ def _too_large(size: int) -> Failure:
     return Failure(413, "syntax", "request-too-large", "request", size=size, limit=limits.REQUEST_BYTES)
 
 
+def _asked(lang: Optional[str]) -> str:
+    """The query's `lang` when it is one kinematika speaks, else English: a request is said
+    in its own language, never in the server's locale."""
+    return lang if lang in LANGS else "en"
+
+
 def _language_of(raw: bytes) -> Optional[str]:
     """The `lang` a request's JSON body asks its messages in (checked later with the rest of
     the body), or None: errors found before the body is read (or in a body that is not
-    JSON) are said in the language of the query's `lang`, else in English."""
+    JSON) are said in the language of the query's `lang`, else in English (`_asked`)."""
     try:
         lang = json.loads(raw.decode("utf-8")).get("lang")
     except (UnicodeDecodeError, ValueError, AttributeError):
@@ -271,14 +280,14 @@ def _compute(req: Request) -> tuple[int, str, bytes]:
     """The answer to a checked request (in a worker thread): status, media type, body.
     Internal failures answer 500 with a short note, as the CLI does (never a traceback)."""
     try:
-        with speaking(req.get("lang")):
+        with speaking(req.get("lang") or "en"):
             media, body = COMPUTE[req.endpoint](req)
     except KinematikaError:
         raise
     except Exception as err:
         if os.environ.get("KINEMATIKA_DEBUG"):
             raise
-        with speaking(req.get("lang")):
+        with speaking(req.get("lang") or "en"):
             message = str(Said("internal-error-page", detail=f"{type(err).__name__}: {err}"))
         return 500, JSON, commands.json_text({"error": {"kind": "internal", "message": message,
                                                         "where": ""}}).encode()
