@@ -32,7 +32,7 @@ class KinematikaError(Exception):
     line (control characters escaped) of bounded length.
     """
 
-    def __init__(self, kind: str, message: "str | Said", where: str = "", /, **args: Any) -> None:
+    def __init__(self, kind: str, message: "str | Said", /, where: str = "", **args: Any) -> None:
         if kind not in KINDS:
             raise ValueError(f"unknown error kind {kind!r}")
         self.said = Said.of(message, args)
@@ -64,7 +64,7 @@ class KinematikaWarning(UserWarning):
     under `warnings`, the page shows it, and from Python it is a standard warning
     (`warnings.catch_warnings` catches it)."""
 
-    def __init__(self, message: "str | Said", where: str = "", /, **args: Any) -> None:
+    def __init__(self, message: "str | Said", /, where: str = "", **args: Any) -> None:
         self.said = Said.of(message, args)
         self.where = clip_middle(shown(where), WHERE_CHARS)
         super().__init__(self.said, self.where)
