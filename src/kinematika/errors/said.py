@@ -69,6 +69,7 @@ class Num:
         self.value, self.spec = value, spec
 
     def written(self, lang: str) -> str:
+        """The number in `lang` (its format spec, the language's signs)."""
         return localized(format(self.value, self.spec), lang)
 
     def __eq__(self, other: object) -> bool:
@@ -93,6 +94,7 @@ class Names:
         self.items, self.limit, self.joined = list(items), limit, joined
 
     def written(self, lang: str) -> str:
+        """The names as `lang` joins them (its words for none, or, and, more)."""
         from ..text import shown
 
         cat = catalogue(lang)
