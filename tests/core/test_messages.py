@@ -211,9 +211,21 @@ KINDS = {
                                    "eu": "eragiketa"}),
 }
 # words a language shares with English (the code's own words are removed before comparing)
-SHARED = {"es": {"error", "final", "normal", "total", "real"},
-          "ca": {"error", "final", "normal", "total", "real", "centres", "increment"},
-          "eu": {"error"}}
+SHARED = {"es": {"error", "final", "normal", "total", "real", "alias", "base", "fundamental", "singular",
+                 "vector", "vertical", "bits", "byte", "bytes"},
+          "ca": {"error", "final", "normal", "total", "real", "centres", "increment", "angle", "arc", "base", "byte",
+                 "bits", "bytes", "centre", "component", "components", "constants", "disc", "document", "exponent",
+                 "expressions", "figures", "format", "independent", "instant", "interval", "intervals", "model",
+                 "models", "moment", "per", "port", "singular", "text", "variant", "variants", "vector",
+                 "vertical", "zero"},
+          "eu": {"error", "formula", "base"}}
+# the words of the model file, the commands and other programs, written as they are in every
+# language (keys, values, metrics, file types, programs)
+CODE_WORDS = {"points", "bodies", "joints", "drivers", "cam", "follower", "program", "profile", "speed", "base",
+              "face", "pivot", "arm", "omega", "alpha", "velocity", "rpm", "circle", "line", "decompose", "steps",
+              "sweep", "vary", "seed", "lang", "true", "false", "null", "spline", "grashof", "transmission",
+              "animate", "dict", "mechanism", "sympy", "vdot", "unicode", "csv", "npz", "parquet", "pdf", "png",
+              "svg", "gif", "dask", "ffmpeg", "conda", "apt", "install", "debian", "kinematika"}
 CODE = re.compile(r"`[^`]*`|'[^']*'|\"[^\"]*\"|--?[a-z][\w-]*|\S*[=/_@\[\]{}:|]\S*|\b[A-Z][A-Z0-9]+\b|"
                   r"\b\w+\.\w+\b")
 
@@ -370,3 +382,24 @@ def test_the_command_line_says_its_own_complaints_in_the_language(models):
     assert "idioma desconocido 'fr'" in run.stderr and "--lang" in run.stderr, run.stderr
     run = _kinematika("solve", str(free), "--json")           # nothing said: English, as ever
     assert "degree of freedom" in json.loads(run.stdout)["error"]["message"]
+
+
+@pytest.mark.parametrize("lang", [lang for lang in LANGS if lang != "en"])
+def test_no_message_keeps_an_english_word_of_its_own(lang):
+    """Every message of the catalogue, said with stand-in values: no English word of the
+    English message is left in the translation, but for the file's and the programs' own words
+    (`CODE_WORDS`) and the words the language shares with English (`SHARED`)."""
+    from fluent.runtime.types import fluent_number
+
+    from kinematika.errors.said import catalogue
+
+    english, mine = catalogue("en"), catalogue(lang)
+    left = {}
+    for key, message in CATALOGUES["en"].items():
+        if key in OTHERS:
+            continue
+        args = {v: fluent_number(2) for v in _variables(message) | _variables(CATALOGUES[lang][key])}
+        words = (_words(english.format(key, args)) & _words(mine.format(key, args))) - SHARED[lang] - CODE_WORDS
+        if words:
+            left[key] = sorted(words)
+    assert not left, left
