@@ -63,7 +63,7 @@ PAGE_SWEEP_STEPS = 20_000    # increments of a sweep asked through the API
 ANSWER_CACHE_BYTES = 64_000_000   # answers kept for identical requests (a class opening one example)
 
 # messages ---------------------------------------------------------------------------------
-MESSAGE_CHARS = 200          # an error message is one line, cut beyond this (with …)
+MESSAGE_CHARS = 300          # an error message is one line, cut beyond this (with …): a translation runs longer
 WHERE_CHARS = 120            # an error's place (a file path, `joints[2] (j3)`) likewise
 
 

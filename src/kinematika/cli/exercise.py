@@ -8,7 +8,8 @@ from typing import Optional
 
 import typer
 
-from .app import JsonOpt, ModelArg, app
+from ..errors import Said
+from .app import JsonOpt, MessagesOpt, ModelArg, app, messages
 from .shared import cannot_write, guarded, output_file, print_json, writing
 
 DEFAULT_COUNT = 30
@@ -52,9 +53,9 @@ def exercise(model: Path = ModelArg,
 def _folder(output: Path) -> None:
     """A folder can be written at `output` (made if missing), else an `output` error."""
     if output.exists() and not output.is_dir():
-        raise cannot_write(output, "it is a file", "-o")
+        raise cannot_write(output, Said("it-is-a-file"), "-o")
     if not output.parent.is_dir():
-        raise cannot_write(output, f"there is no folder {output.parent}", "-o")
+        raise cannot_write(output, Said("no-folder", folder=str(output.parent)), "-o")
 
 
 def _names(path: Path) -> list[str]:
@@ -64,8 +65,7 @@ def _names(path: Path) -> list[str]:
 
     rows = read_csv(path, [])
     if not rows:
-        raise KinematikaError("usage", f"{path.name} names no students (a header, then one per row)",
-                              "--students")
+        raise KinematikaError("usage", "students-none", "--students", name=path.name)
     first = next(iter(rows[0]))
     names = [r[first] for r in rows if r.get(first)]
     return names
@@ -79,9 +79,11 @@ def grade(folder: Path = typer.Argument(..., help="the folder `kinematika exerci
           as_json: bool = JsonOpt,
           gradebook: Optional[Path] = typer.Option(None, "--gradebook", help="also write a CSV Moodle's "
                                                    "gradebook imports (student,grade out of 100)"),
+          lang: Optional[str] = MessagesOpt,
           ) -> None:
     """Mark a class's answers: right within the key's tolerance, and each wrong one named by the
     usual mistake whose value it equals (Coriolis left out, degrees as radians, ...)."""
+    messages(lang, as_json)
     from ..exercise import grade as mark, load_exercise
     from ..exercise.grading import gradebook_csv, summary_text
 

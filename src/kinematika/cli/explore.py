@@ -7,7 +7,7 @@ from typing import Optional
 
 import typer
 
-from .app import ModelArg, app, guarded, output_file
+from .app import MessagesOpt, ModelArg, app, guarded, messages, output_file
 
 
 @app.command()
@@ -34,9 +34,11 @@ def explore(model: Path = ModelArg,
                                                 help="positions per design"),
             chunk: Optional[int] = typer.Option(None, "--chunk", min=1, help="designs per chunk "
                                                 "(written as they finish)"),
+            lang: Optional[str] = MessagesOpt,
             ) -> None:
     """Evaluate many designs of MODEL (values of its parameters) and write one row each: the
     parameters, whether it assembles (and why not), and the metrics."""
+    messages(lang)
     from ..explore.evaluate import Sweep
     from ..explore.study import Parts, make_study, resume_note, write_study
     from ..sweep.progress import reporter
@@ -88,10 +90,12 @@ def synthesize(model: Path = ModelArg,
                                                    "the targets to FILE"),
                steps: Optional[int] = typer.Option(None, "--steps", min=1, max=100_000,
                                                    help="positions per design"),
+               lang: Optional[str] = MessagesOpt,
                ) -> None:
     """Choose parameter values so that a point follows target points (path generation), a body's
     rotation follows a function of the input's (function generation) or a body passes through
     poses (motion generation); write the best designs as model files."""
+    messages(lang)
     from ..explore.evaluate import Sweep
     from ..explore.synthesis import synthesize as run, write_designs
 
@@ -103,7 +107,7 @@ def synthesize(model: Path = ModelArg,
         if not result.designs:
             from ..errors import KinematikaError
 
-            raise KinematikaError("assembly", "no design of the intervals completes its cycle", "--vary")
+            raise KinematikaError("assembly", "synthesis-no-design", "--vary")
         written = write_designs(model, result, out)
         if plot is not None:
             _plot_synthesis(model, result, point, output_file(plot, "--plot"), files, objective)
@@ -122,11 +126,10 @@ def _objective(model: Path, target, function, motion, point, body, over, points)
 
     given = [x for x in (target, function, motion) if x is not None]
     if len(given) != 1:
-        raise KinematikaError("usage", "give one of --target (path), --target-function (function) or "
-                              "--target-motion (motion)", "--target")
+        raise KinematikaError("usage", "synthesis-one-target", "--target")
     if function is not None:
         if not body:
-            raise KinematikaError("usage", "function generation needs --output BODY", "--output")
+            raise KinematikaError("usage", "function-needs-output", "--output")
         if function.lower().endswith(".csv"):
             name = Path(function).name
             return f"structural_error:{body}={name}", {name: _target_text(Path(function), "--target-function")}
@@ -137,7 +140,7 @@ def _objective(model: Path, target, function, motion, point, body, over, points)
         return f"structural_error:{body}=function.csv", {
             "function.csv": function_targets(function, (span.low, span.high), points)}
     if not point:
-        raise KinematikaError("usage", "path and motion generation need --point P", "--point")
+        raise KinematikaError("usage", "path-needs-point", "--point")
     kind = "path_error" if target is not None else "motion_error"
     path = target if target is not None else motion
     option = "--target" if target is not None else "--target-motion"
@@ -146,15 +149,16 @@ def _objective(model: Path, target, function, motion, point, body, over, points)
 
 def _target_text(path: Path, option: str) -> str:
     """A target file named on the command line (relative to the working folder), as text."""
-    from ..errors import KinematikaError
+    from ..errors import KinematikaError, reason
 
     if path.suffix.lower() != ".csv":
-        raise KinematikaError("usage", f"{path.name}: a target file is a .csv file", option)
+        raise KinematikaError("usage", "target-csv", option, name=path.name)
     try:
         return path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as err:
-        raise KinematikaError("usage", f"cannot read {path}: {getattr(err, 'strerror', None) or err}",
-                              option) from None
+    except OSError as err:
+        raise KinematikaError("usage", "cannot-read", option, path=str(path), reason=reason(err)) from None
+    except UnicodeDecodeError:
+        raise KinematikaError("usage", "csv-not-utf8", option, name=str(path)) from None
 
 
 def _plot_synthesis(model: Path, result, point, plot: Path, files: dict, objective: str) -> None:
@@ -185,8 +189,10 @@ def plot_study(study: Path = typer.Argument(..., help="a study's rows (.parquet 
                maximize: list[str] = typer.Option([], "--maximize", help="a metric of --pareto for "
                                                   "which higher is better"),
                output: Path = typer.Option(..., "-o", help="the figure (.png, .svg, .pdf)"),
+               lang: Optional[str] = MessagesOpt,
                ) -> None:
     """Draw a study: a metric's map over two parameters, or two metrics and their Pareto front."""
+    messages(lang)
     from ..errors import KinematikaError
 
     def work() -> str:
@@ -195,7 +201,7 @@ def plot_study(study: Path = typer.Argument(..., help="a study's rows (.parquet 
         table = _read_study(study)
         out = output_file(output, "-o")
         if (map_ is None) == (pareto is None):
-            raise KinematikaError("usage", "give --map X,Y,METRIC or --pareto M1,M2", "--map")
+            raise KinematikaError("usage", "map-or-pareto", "--map")
         if map_ is not None:
             names = _split(map_, 3, "--map")
             plots.metric_map(table, *names, out)
@@ -212,7 +218,7 @@ def _split(text: str, count: int, option: str) -> list[str]:
 
     names = [n.strip() for n in _split_names(text)]
     if len(names) != count or not all(names):
-        raise KinematikaError("usage", f"{option} takes {count} names separated by commas", option)
+        raise KinematikaError("usage", "option-names-count", option, option=option, count=count)
     return names
 
 
@@ -222,7 +228,7 @@ def _split_names(text: str) -> list[str]:
 
 
 def _read_study(path: Path):
-    from ..errors import KinematikaError
+    from ..errors import KinematikaError, said_of
     from ..extras import need
 
     need("pyarrow", "plot-study")
@@ -236,4 +242,4 @@ def _read_study(path: Path):
 
         return pq.read_table(path).to_pandas()
     except (OSError, ValueError) as err:
-        raise KinematikaError("usage", f"cannot read the study {path}: {err}", str(path)) from None
+        raise KinematikaError("usage", "study-unreadable", str(path), path=str(path), reason=said_of(err)) from None

@@ -122,14 +122,13 @@ def _kept(err: KinematikaError, csv: Optional[Path], output: Optional[Path], kin
 def _format(output: Optional[Path], fmt: Optional[str]) -> Optional[str]:
     """The format of `-o FILE`: `--format`, else the file's suffix."""
     if fmt is not None and output is None:
-        raise KinematikaError("usage", f"--format {fmt} needs -o FILE, the file to write", "--format")
+        raise KinematikaError("usage", "format-needs-output", "--format", format=fmt)
     if output is None:
         return None
     kind = fmt or output.suffix.lower().lstrip(".")
     if kind not in SWEEP_FORMATS:
-        raise KinematikaError("usage", f"{kind or output.name!r} is not a sweep format: give "
-                              f"--format {'|'.join(SWEEP_FORMATS)} or a file ending in one of them",
-                              "--format" if fmt else "-o")
+        raise KinematikaError("usage", "sweep-format", "--format" if fmt else "-o", got=repr(kind or output.name),
+                              formats="|".join(SWEEP_FORMATS))
     return kind
 
 

@@ -84,8 +84,7 @@ class Film:
 
         model = as_model(source)
         if model.dimension != 2:
-            raise KinematikaError("schema", "animate draws planar models; draw a 3D model's "
-                                  "instant with `kinematika draw`", "dimension")
+            raise KinematikaError("schema", "animate-planar", "dimension")
         options = options or DrawOptions()
         result = run_sweep(model, joint=joint, by=by, steps=steps, skip_bad=skip_bad)
         rows = _rows(result, frames)
@@ -138,10 +137,7 @@ def _writer(path: Path, fps: int) -> Any:
     if fmt == "gif":
         return animation.PillowWriter(fps=fps)
     if not animation.writers.is_available("ffmpeg"):
-        raise KinematikaError("output", "writing .mp4 needs the ffmpeg program, which is not "
-                              "installed (on Debian or Ubuntu: apt install ffmpeg; with conda: "
-                              "conda install ffmpeg); or write a .gif, which needs nothing more",
-                              str(path))
+        raise KinematikaError("output", "ffmpeg-missing", str(path))
     return animation.FFMpegWriter(fps=fps, bitrate=1800)
 
 
@@ -149,7 +145,7 @@ def _rows(result: Any, frames: int) -> list[int]:
     """The rows to show: assembled ones, at most `frames`, evenly spread."""
     ok = np.flatnonzero(np.asarray(result.ok, dtype=bool))
     if not len(ok):
-        raise KinematikaError("assembly", "no position of the sweep could be assembled")
+        raise KinematikaError("assembly", "sweep-none-assembled")
     if len(ok) <= frames:
         return [int(k) for k in ok]
     pick = np.unique(np.round(np.linspace(0, len(ok) - 1, frames)).astype(int))
@@ -280,7 +276,7 @@ class Motion:
             for name in trace:
                 key = name if name in self.result.points else model_points.get(name)
                 if key is None:
-                    raise KinematikaError("schema", f"unknown point {name!r} to trace", "--trace")
+                    raise KinematikaError("schema", "trace-unknown-point", "--trace", point=name)
                 keys.append(key)
         else:
             keys = [v.ref for v in self.live] or list(self.result.points)

@@ -355,8 +355,7 @@ def _format(path: Path) -> str:
     """The format of `path` by its suffix; one matplotlib cannot write is refused up front."""
     fmt = path.suffix.lower().lstrip(".") or "png"
     if fmt not in FigureCanvasAgg.get_supported_filetypes():
-        raise KinematikaError("usage", f"cannot plot to {path.name!r}: give a .png, .svg or "
-                              ".pdf file", str(path))
+        raise KinematikaError("usage", "plot-format", str(path), name=path.name)
     return fmt
 
 

@@ -255,8 +255,7 @@ def drawing_values(inst: Instant) -> dict:
         for name, vec in inst.points.items():
             if any(abs(complex(c.xreplace(at) if hasattr(c, "xreplace") else c).imag) > 1e-12
                    for c in vec):
-                raise KinematikaError("schema", f"the model cannot be drawn at these values: "
-                                      f"point {name} is not real there", "draw_at")
+                raise KinematikaError("schema", "draw-at-not-real", "draw_at", point=name)
     return values
 
 

@@ -125,9 +125,7 @@ def analyse_sparse(a: SparseRows, is_driver: np.ndarray, translation_columns: np
                 return SparseAnalysis(Scaled(scaled, row, col), lu, Diagnosis(n, given, given, cond),
                                       list(range(m)))
     if n > DENSE_DIAGNOSIS:
-        raise KinematikaError("singular", f"the {m}×{n} constraint Jacobian is singular or not square "
-                              "(sparse LU); the system is too large to say which conditions are "
-                              "missing or dependent", "drivers")
+        raise KinematikaError("singular", "jacobian-singular-large", "drivers", rows=m, columns=n)
     return analyse(a.toarray(), is_driver, translation_columns, length, labels, wheres, body_of,
                    restating=restating)
 
@@ -376,8 +374,7 @@ def _matching(pattern: np.ndarray) -> list[int]:
 
     for i in range(n):
         if not augment(i, set()):
-            raise KinematikaError("singular", "the system has no structurally independent set of "
-                                  "conditions for every unknown", "drivers")
+            raise KinematikaError("singular", "structurally-singular", "drivers")
     match = [0] * n
     for c, i in col_owner.items():
         match[i] = int(c)

@@ -129,14 +129,12 @@ class InstantSolver:
             x_num = solve_numeric(self.analysis, b_num, labels or self.labels, self.wheres,
                                   self.is_driver, check)
         if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
-            raise KinematikaError("schema", "the model's values are too large: its velocities or "
-                                  "accelerations overflow the range of floating-point numbers",
-                                  "drivers")
+            raise KinematikaError("schema", "values-overflow", "drivers")
         if not inst.symbolic:
             return x_num.tolist()
         from ..budget import check as within_budget
 
-        within_budget("solving the equations exactly")
+        within_budget("stage-solving")
         exact = solve_symbolic(self.analysis, self.a_sym, b, self.a_num)
         rate = max(inst.rate, inst.rate ** 2)        # the size of rates and their squares
         inst.backend.check_against(exact, x_num, inst.probe, rate * max(1.0, inst.scale))
@@ -219,9 +217,7 @@ class InstantSolver:
         with np.errstate(all="ignore"):
             x_num = solve_numeric(self.analysis, b_num, labels, self.wheres, self.is_driver, True)
         if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
-            raise KinematikaError("schema", "the model's values are too large: its velocities or "
-                                  "accelerations overflow the range of floating-point numbers",
-                                  "drivers")
+            raise KinematikaError("schema", "values-overflow", "drivers")
 
         def name(column: int, value: Any) -> Any:
             (out,), known = stand_in_values([value], standin, f"{prefix}{column}_")

@@ -120,8 +120,7 @@ class Exercise:
         """Variant `number` (1-based); a number outside 1 … count is a usage error naming the
         range."""
         if not 1 <= number <= len(self.variants):
-            raise KinematikaError("usage", f"there is no variant {number} (variants 1 to "
-                                  f"{len(self.variants)})", "variant")
+            raise KinematikaError("usage", "variant-missing", "variant", number=number, count=len(self.variants))
         return self.variants[number - 1]
 
 
@@ -149,16 +148,14 @@ def make_exercise(model: Model, vary: list[str], count: int, seed: int, lang: st
     varies = [parse_vary(text) for text in vary]
     for v in varies:
         if v.name not in model.parameters:
-            raise KinematikaError("usage", f"--vary {v.name}: unknown parameter (parameters: "
-                                  f"{', '.join(model.parameters) or 'none'})", "--vary")
+            raise KinematikaError("usage", "vary-unknown-parameter", "--vary", name=v.name,
+                                  parameters=list(model.parameters))
     ex = Exercise(model, section, varies, seed, lang, source=source)
     if not varies:
-        raise KinematikaError("usage", "name at least one parameter to vary (--vary NAME=LOW:HIGH[:STEP])",
-                              "--vary")
+        raise KinematikaError("usage", "vary-none-step", "--vary")
     varied = {v.name for v in varies}
     if any(p.value is None and p.name not in varied for p in model.parameters.values()):
-        raise KinematikaError("usage", "an exercise needs numbers: give every symbolic parameter a "
-                              "value (or vary it)", "--vary")
+        raise KinematikaError("usage", "exercise-needs-numbers", "--vary")
 
     def accept(stated: dict[str, Decimal]) -> Drawn:
         try:

@@ -23,7 +23,7 @@ from decimal import Decimal, InvalidOperation
 from pathlib import Path
 from typing import Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, parser_problem, reason
 from .build import DEFAULT_SECTION, Exercise
 from .key import value_text
 from .stated import plain_decimal
@@ -140,13 +140,13 @@ def load_exercise(folder: Path) -> Exercise:
     info = _json(folder / "exercise.json")
     model_name = info.get("model")
     if not isinstance(model_name, str) or "/" in model_name or "\\" in model_name:
-        raise KinematikaError("usage", "exercise.json does not name the model file", str(folder))
+        raise KinematikaError("usage", "exercise-no-model", str(folder))
     model_path = folder / model_name
     model = load_model(model_path)
     try:
         vary, seed, lang = list(info["vary"]), int(info["seed"]), str(info["lang"])
     except (KeyError, TypeError, ValueError):
-        raise KinematikaError("usage", "exercise.json lacks vary, seed or lang", str(folder)) from None
+        raise KinematikaError("usage", "exercise-lacks", str(folder)) from None
     ex = Exercise(model, model.exercise or DEFAULT_SECTION, [parse_vary(t) for t in vary], seed, lang,
                   source=model_path)
     for number, stated in enumerate(_variants(folder / "variants.csv", [v.name for v in ex.varies]), start=1):
@@ -161,12 +161,12 @@ def _json(path: Path) -> dict:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except OSError as err:
-        raise KinematikaError("usage", f"cannot read {path}: {err.strerror or err} (is it a folder "
-                              "`kinematika exercise` wrote?)", str(path)) from None
+        raise KinematikaError("usage", "exercise-cannot-read", str(path), path=str(path), reason=reason(err)) from None
     except ValueError as err:
-        raise KinematikaError("syntax", f"{path.name} is not JSON: {err}", str(path)) from None
+        raise KinematikaError("syntax", "file-not-json", str(path), name=path.name,
+                              problem=parser_problem(str(err))) from None
     if not isinstance(data, dict):
-        raise KinematikaError("syntax", f"{path.name} is not a JSON object", str(path))
+        raise KinematikaError("syntax", "file-not-json-object", str(path), name=path.name)
     return data
 
 
@@ -176,15 +176,15 @@ def read_csv(path: Path, columns: list[str]) -> list[dict[str, str]]:
     try:
         text = path.read_text(encoding="utf-8-sig")
     except OSError as err:
-        raise KinematikaError("usage", f"cannot read {path}: {err.strerror or err}", str(path)) from None
+        raise KinematikaError("usage", "cannot-read", str(path), path=str(path), reason=reason(err)) from None
     except UnicodeDecodeError:
-        raise KinematikaError("syntax", f"{path.name} is not UTF-8 text", str(path)) from None
+        raise KinematikaError("syntax", "csv-not-utf8", str(path), name=path.name) from None
     reader = csv.DictReader(io.StringIO(text))
     header = [h.strip() for h in reader.fieldnames or []]
     lacking = [c for c in columns if c not in header]
     if lacking:
-        raise KinematikaError("syntax", f"{path.name} has no column {lacking[0]!r} (its header: "
-                              f"{','.join(header) or 'none'})", path.name)
+        raise KinematikaError("syntax", "csv-no-column", path.name, name=path.name, column=lacking[0],
+                              header=",".join(header), count=len(header))
     rows = []
     for row in reader:
         rows.append({(k or "").strip(): (v or "").strip() if isinstance(v, str) else "" for k, v in row.items()})
@@ -199,10 +199,9 @@ def _variants(path: Path, names: list[str]) -> list[dict[str, Decimal]]:
                 raise ValueError
             out.append({n: Decimal(row[n]) for n in names})
         except (ValueError, InvalidOperation):
-            raise KinematikaError("syntax", "variants are numbered 1, 2, … with a value of each varied "
-                                  "parameter", f"{path.name}:{i}") from None
+            raise KinematikaError("syntax", "variants-numbered", f"{path.name}:{i}") from None
     if not out:
-        raise KinematikaError("syntax", "no variants", path.name)
+        raise KinematikaError("syntax", "variants-none", path.name)
     return out
 
 
@@ -218,6 +217,4 @@ def _check_key(ex: Exercise, path: Path) -> None:
             except ValueError:
                 agree = False
             if not agree:
-                raise KinematikaError("usage", f"key.csv does not match the model solved again (variant "
-                                      f"{v.number}, {r.question}): was the model or the key edited?",
-                                      path.name)
+                raise KinematikaError("usage", "key-mismatch", path.name, variant=v.number, question=r.question)

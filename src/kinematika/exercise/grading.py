@@ -83,9 +83,8 @@ class Marker:
         """One answer (None when left blank); an unknown question is an error at `where`."""
         row = next((r for r in variant.rows if r.question == question), None)
         if row is None:
-            asked = ", ".join(r.question for r in variant.rows)
-            raise KinematikaError("usage", f"{question!r} is not asked in variant {variant.number} "
-                                  f"(its questions: {asked})", where)
+            raise KinematikaError("usage", "question-not-asked", where, question=question, variant=variant.number,
+                                  asked=[r.question for r in variant.rows])
         if not text.strip():
             return None
         value = read_number(text)
@@ -107,17 +106,17 @@ def grade(exercise: Exercise, answers: Path) -> dict[str, Any]:
         where = f"{answers.name}:{line}"
         student = row["student"]
         if not student:
-            raise KinematikaError("usage", "a row without a student", where)
+            raise KinematikaError("usage", "row-no-student", where)
         try:
             variant = exercise.variant(int(row["variant"]))
         except ValueError:
-            raise KinematikaError("usage", f"variant {row['variant']!r} is not a number", where) from None
+            raise KinematikaError("usage", "variant-not-number", where, got=repr(row['variant'])) from None
         except KinematikaError as err:
-            raise KinematikaError("usage", err.message, where) from None
+            raise KinematikaError("usage", err.said, where) from None
         key = (student, variant.number, row["question"])
         if key in seen:
-            raise KinematikaError("usage", f"{student} answers {row['question']} of variant "
-                                  f"{variant.number} twice", where)
+            raise KinematikaError("usage", "answered-twice", where, student=student, question=row['question'],
+                                  variant=variant.number)
         seen.add(key)
         variants_of.setdefault(student, set()).add(variant.number)
         mark = marker.mark(student, variant, row["question"], row["value"], where)

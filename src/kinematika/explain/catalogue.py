@@ -81,12 +81,12 @@ class Catalogue:
     def format(self, key: str, args: dict[str, Any] | None = None) -> str:
         """The message `key` with its variables filled (strings or numbers)."""
         if not self.has(key):
-            raise KinematikaError("schema", f"no message {key!r} in the {self.lang!r} catalogue", "explain")
+            raise KinematikaError("schema", "catalogue-no-message", "explain", key=key, lang=self.lang)
         message = self.bundle.get_message(fluent_id(key))
         text, errors = self.bundle.format_pattern(message.value, args or {})
         if errors:
-            raise KinematikaError("schema", f"message {key!r} of the {self.lang!r} catalogue: {errors[0]}",
-                                  "explain")
+            raise KinematikaError("schema", "catalogue-message-error", "explain", key=key, lang=self.lang,
+                                  problem=str(errors[0]))
         return text
 
     def get(self, key: str) -> str:

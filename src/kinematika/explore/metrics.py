@@ -106,8 +106,7 @@ def parse_metric(text: str, ctx: Context, files: Optional[dict[str, str]] = None
         ref = _point(ctx, target, where)
         points = ctx.model.bodies[ref.body].points
         if len(points) < 2:
-            raise KinematikaError("usage", f"motion_error: body {ref.body!r} needs two points to have "
-                                  "an orientation", where)
+            raise KinematikaError("usage", "motion-error-two-points", where, body=ref.body)
         poses = read_table(arg.strip(), files, where, 3)
         return Metric(text, lambda c: motion_error(c, ref, points, poses), data=poses)
     if kind == "structural_error" and colon and arg:
@@ -117,19 +116,13 @@ def parse_metric(text: str, ctx: Context, files: Optional[dict[str, str]] = None
         return Metric(text, lambda c: structural_error(c, body, table), data=table)
     if kind in AT_INPUT and colon and arg:
         return _at_input(text, kind, ctx, target, arg, where)
-    raise KinematikaError("usage", f"unknown metric {text!r}; metrics: grashof, transmission, "
-                          "dead_points, time_ratio[:BODY], range:BODY, peak_omega:BODY, peak_alpha:BODY, "
-                          "peak_speed:POINT, peak_accel:POINT, path_error:POINT=FILE.csv, "
-                          "motion_error:POINT=FILE.csv, "
-                          "structural_error:BODY=FILE.csv, angle|omega|alpha:BODY=X, "
-                          "speed|accel|x|y:POINT=X", "--metric")
+    raise KinematikaError("usage", "metric-unknown", "--metric", metric=text)
 
 
 # names ---------------------------------------------------------------------------------------
 def _body(ctx: Context, name: str, where: str) -> str:
     if name not in ctx.model.bodies:
-        raise KinematikaError("usage", f"unknown body {name!r} (bodies: {', '.join(ctx.model.bodies)})",
-                              where)
+        raise KinematikaError("usage", "unknown-body", where, body=name, bodies=list(ctx.model.bodies))
     return name
 
 
@@ -137,7 +130,7 @@ def _point(ctx: Context, name: str, where: str) -> PointRef:
     try:
         return ctx.model.resolve_point(name, where)
     except KinematikaError as err:
-        raise KinematikaError("usage", err.message, where) from None
+        raise KinematikaError("usage", err.said, where) from None
 
 
 # linkages ------------------------------------------------------------------------------------
@@ -145,8 +138,7 @@ def four_bar_roles(ctx: Context, where: str = "--metric grashof") -> dict[str, s
     """The point names O2, A, B, O4 of a four-bar driven at its crank (structure only)."""
     roles = _linkage(ctx)
     if roles is None or roles["kind"] != "four-bar":
-        raise KinematikaError("usage", "grashof needs a model whose moving loop is a four-bar driven "
-                              "at its crank", where)
+        raise KinematikaError("usage", "grashof-four-bar", where)
     return roles
 
 
@@ -171,8 +163,7 @@ def _linkage(ctx: Context) -> Optional[dict[str, Any]]:
 def _linkage_output(ctx: Context, where: str) -> str:
     roles = _linkage(ctx)
     if roles is None:
-        raise KinematikaError("usage", "time_ratio without a body needs a four-bar or slider-crank; "
-                              "name the output (time_ratio:BODY)", where)
+        raise KinematikaError("usage", "time-ratio-linkage", where)
     return roles["output"]
 
 
@@ -192,8 +183,7 @@ def grashof(c: Cycle, roles: dict[str, Any]) -> np.ndarray:
 def _transmission(ctx: Context, where: str) -> Callable[[Cycle], np.ndarray]:
     roles = _linkage(ctx)
     if roles is None:
-        raise KinematikaError("usage", "transmission needs a four-bar or slider-crank driven at its "
-                              "crank", where)
+        raise KinematikaError("usage", "transmission-linkage", where)
     coupler = roles["coupler"]
     a_ref, b_ref = PointRef(roles["A"], coupler), PointRef(roles["B"], coupler)
     if roles["kind"] == "four-bar":
@@ -328,8 +318,8 @@ def _at_input(text: str, kind: str, ctx: Context, target: str, arg: str, where: 
     try:
         x = float(arg)
     except ValueError:
-        raise KinematikaError("usage", f"{kind}:{target}=X takes the input's position X (a number, "
-                              f"{ctx.unit} from the drawn position), got {arg!r}", where) from None
+        raise KinematikaError("usage", "metric-at-input", where, metric=f"{kind}:{target}", unit=ctx.unit,
+                              got=repr(arg)) from None
     _inside(ctx, np.array([x]), where)
     if AT_INPUT[kind] == "body":
         body = _body(ctx, target, where)
@@ -349,21 +339,19 @@ def _at_input(text: str, kind: str, ctx: Context, target: str, arg: str, where: 
 def _inside(ctx: Context, x: np.ndarray, where: str) -> None:
     low, high = sorted((ctx.coordinate[0], ctx.coordinate[-1]))
     if (x < low - 1e-9).any() or (x > high + 1e-9).any():
-        raise KinematikaError("usage", f"the input must lie in the sweep's range {low:g} to {high:g} "
-                              f"{ctx.unit}", where)
+        raise KinematikaError("usage", "input-outside-sweep", where, low=float(low), high=float(high), unit=ctx.unit)
 
 
 def _full_turn(ctx: Context, where: str) -> None:
     if ctx.unit != "deg" or abs(abs(ctx.coordinate[-1]) - 360.0) > 1e-9:
-        raise KinematikaError("usage", "time_ratio needs the sweep of a full turn of the crank "
-                              "(by: 360)", where)
+        raise KinematikaError("usage", "time-ratio-full-turn", where)
 
 
 # target files --------------------------------------------------------------------------------
 def read_table(name: str, files: dict[str, str], where: str, columns: int) -> np.ndarray:
     """The numeric rows of a CSV file's text (a header line is skipped), `columns` numbers each."""
     if name not in files:
-        raise KinematikaError("usage", f"{name}: a target file is a .csv file", where)
+        raise KinematikaError("usage", "target-csv", where, name=name)
     rows: list[list[float]] = []
     for i, row in enumerate(csv.reader(io.StringIO(files[name]))):
         cells = [c.strip() for c in row if c.strip()]
@@ -374,14 +362,12 @@ def read_table(name: str, files: dict[str, str], where: str, columns: int) -> np
         except ValueError:
             if not rows and i == 0:
                 continue                                # a header
-            raise KinematikaError("usage", f"{name}, line {i + 1}: expected numbers, got {row!r}",
-                                  where) from None
+            raise KinematikaError("usage", "table-not-numbers", where, name=name, line=i + 1, got=repr(row)) from None
         if len(numbers) < columns or not all(map(math.isfinite, numbers)):
-            raise KinematikaError("usage", f"{name}, line {i + 1}: expected {columns} finite numbers",
-                                  where)
+            raise KinematikaError("usage", "table-columns", where, name=name, line=i + 1, columns=columns)
         rows.append(numbers[:columns])
     if not rows:
-        raise KinematikaError("usage", f"{name} holds no rows of numbers", where)
+        raise KinematikaError("usage", "table-empty", where, name=name)
     return np.array(rows, dtype=float)
 
 

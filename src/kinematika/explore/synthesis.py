@@ -135,13 +135,12 @@ def function_targets(expression: str, over: tuple[float, float], points: int) ->
         expr = parse(expression)
         unknown = expr.names() - {"x", "pi"}
         if unknown:
-            raise ExpressionError(f"in {expression!r}: unknown name {sorted(unknown)[0]!r} (the function "
-                                  "is of x, the input's increment)")
+            raise ExpressionError("function-unknown-name", source=repr(expression), name=sorted(unknown)[0])
         with np.errstate(all="ignore"):
             y = np.broadcast_to(evaluate(expr, {"x": x}, Arrays({})), x.shape)
     except ExpressionError as err:
-        raise KinematikaError("usage", str(err), "--target-function") from None
+        raise KinematikaError("usage", err.said, "--target-function") from None
     if not np.isfinite(y).all():
-        raise KinematikaError("usage", f"{expression!r} is not finite over {low:g} to {high:g}",
-                              "--target-function")
+        raise KinematikaError("usage", "function-not-finite", "--target-function", source=repr(expression),
+                              low=float(low), high=float(high))
     return "".join(f"{a!r},{b!r}\n" for a, b in zip(x.tolist(), y.tolist()))

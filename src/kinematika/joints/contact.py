@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from ..errors import Said
 from . import symbols
 from .base import JointGeometry, JointKind, Rows
 from .touching import Follow, find_touch, outlines, touch_row
@@ -29,7 +30,7 @@ class Contact(JointKind):
     centre_line = "normal"                 # the common normal at the contact
     fields = {"at": "optional"}
     point_on = "b"
-    keeps = "{b} keeps touching {a}"
+    keeps = "row-touching"          # the message of its condition (errors' catalogue)
     """The condition's words (a row's label), with the bodies' names."""
 
     def conditions(self, dim: int) -> int:
@@ -57,7 +58,7 @@ class Contact(JointKind):
         """(v_Jb − v_Ja)·n = 0: no approach along the common normal (at the acceleration level
         with the curvature terms, `touching.touch_row`)."""
         j = geo.joint
-        return [(touch_row(lv, j.a, j.b, geo.contact), self.keeps.format(a=j.a, b=j.b))]
+        return [(touch_row(lv, j.a, j.b, geo.contact), Said(self.keeps, a=j.a, b=j.b))]
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """The contact point (a still figure only)."""

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from ..shapes import Circle, Curve
 from . import symbols
 from .derivatives import sliding
@@ -53,8 +53,7 @@ class CurvedSlot(JointKind):
         geo = super().prepare(inst, joint)
         curves = [s for s in inst.shapes[joint.a] if isinstance(s, (Circle, Curve))]
         if not curves:
-            raise KinematikaError("schema", f"a curved slot is cut along a circle or curve of {joint.a!r}: "
-                                  "give that body one", joint.where)
+            raise KinematikaError("schema", "curved-slot-outline", joint.where, body=joint.a)
         geo.contact = find_touch(inst, joint, curves, outlines(inst, joint, joint.b, joint.at), near)
         n = geo.contact.normal               # a circle's: outward; a curve's: its own normal
         geo.along = (-n[1], n[0]) if isinstance(geo.contact.outline_a, Circle) else (n[1], -n[0])
@@ -68,7 +67,7 @@ class CurvedSlot(JointKind):
         """v_rel·n = 0 at the pin: its relative velocity is along the slot; at the acceleration
         level with the normal part v_rel²/ρ and Coriolis (`touching.touch_row`)."""
         j = geo.joint
-        return [(touch_row(lv, j.a, j.b, geo.contact), f"{j.at}@{j.b} stays in the curved slot of {j.a}")]
+        return [(touch_row(lv, j.a, j.b, geo.contact), Said("row-curved-slot", point=f"{j.at}@{j.b}", body=j.a))]
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """The pin of the second body (the slot's curve is drawn as the first body's shape)."""

@@ -19,6 +19,7 @@ from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
 from .rolling_contact import drawn_pair, find_contact
+from ..errors import Said
 
 
 class Rolling(JointKind):
@@ -59,7 +60,7 @@ class Rolling(JointKind):
             w_rel = sp.rot_sub(lv.w(j.b), lv.w(j.a))
             rolling_velocity = sub(lv.v(j.a, c.point), c.jdot(lv.motion))
             diff = sub(diff, sp.cross(w_rel, rolling_velocity))
-        return [(x, f"no slip at the contact of {j.a} and {j.b} ({AXES[i]})") for i, x in enumerate(diff)]
+        return [(x, Said("row-no-slip", body=j.a, other=j.b, axis=AXES[i])) for i, x in enumerate(diff)]
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """The contact point (a still figure only: it is no body's point)."""

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 from ..algebra.vectors import add, cross3, dot, scale, sub
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, Said
 from ..shapes import Circle, Disc, Line, Plane
 from .base import rounding_hint
 from .touching import closest
@@ -41,30 +41,25 @@ def find_contact(inst: Instant, joint: Joint) -> Contact:
     shapes_a, shapes_b = inst.shapes[joint.a], inst.shapes[joint.b]
     if not shapes_a or not shapes_b:
         missing = joint.a if not shapes_a else joint.b
-        kinds = "circle or line" if inst.space.dim == 2 else "disc or plane"
-        raise KinematikaError("schema", f"a {joint.type} joint needs a shape on both bodies: give "
-                              f"{missing!r} a {kinds}", joint.where)
+        raise KinematikaError("schema", "rolling-needs-shapes", joint.where, kind=joint.type, body=missing,
+                              dim=inst.space.dim)
     gap, contact = closest(shapes_a, shapes_b, lambda sa, sb: _pair(inst, joint, sa, sb), lambda c: c[0], joint,
-                           "these shapes cannot roll on each other")
+                           Said("shapes-cannot-roll"))
     tol = 1e-6 * inst.scale
     if abs(gap) > tol:
-        raise KinematikaError("geometry", f"{joint.b!r} does not touch {joint.a!r}: gap {gap:.6g}"
-                              + rounding_hint(gap, inst.scale, "the contact or centre"), joint.where)
+        raise KinematikaError("geometry", "no-touch", joint.where, body=joint.b, other=joint.a, gap=Num(gap, ".6g"),
+                              hint=rounding_hint(gap, inst.scale, Said("the-contact-or-centre")))
     if joint.at is not None:
         dist = max(abs(x) for x in inst.numvec(sub(inst.points[joint.at], contact.point)))
         if dist > tol:
-            raise KinematikaError("geometry", f"the contact is not at {joint.at!r}: it is "
-                                  f"{dist:.6g} away" + rounding_hint(dist, inst.scale, joint.at), joint.where)
+            raise KinematikaError("geometry", "contact-not-at", joint.where, point=joint.at, distance=Num(dist, ".6g"),
+                                  hint=rounding_hint(dist, inst.scale, joint.at))
     if joint.internal is not None:
         if contact.kind not in ("external", "internal"):
-            raise KinematikaError("schema", f"`internal` tells how two circles touch; this is a "
-                                  f"{contact.kind} contact", joint.where)
+            raise KinematikaError("schema", "internal-circles-only", joint.where, contact=contact.kind)
         if joint.internal != (contact.kind == "internal"):
-            said = "internal" if joint.internal else "external"
-            circles = "pitch circles" if joint.type == "gear" else "circles"
-            raise KinematikaError("geometry", f"the {joint.type} pair is declared {said} but its "
-                                  f"{circles} touch {'externally' if said == 'internal' else 'internally'}",
-                                  joint.where)
+            raise KinematikaError("geometry", "rolling-internal-wrong", joint.where, kind=joint.type,
+                                  said="internal" if joint.internal else "external")
     return contact
 
 
@@ -169,8 +164,7 @@ def _disc_plane(inst: Instant, joint: Joint, dc: Disc, dbody: str, pl: Plane,
     a, n = dc.axis, pl.normal
     m = sub(n, scale(dot(n, a), a))
     if inst.num(dot(m, m)) < 1e-18:
-        raise KinematikaError("geometry", f"disc {dbody!r} lies flat on the plane of {pbody!r}: it "
-                              "touches along its face, not at a point", joint.where)
+        raise KinematikaError("geometry", "disc-flat-on-plane", joint.where, disc=dbody, plane=pbody)
     bk = inst.backend
     side = 1 if inst.num(dot(sub(dc.center, pl.through), n)) >= 0 else -1
     # |m|² = 1 − (n·a)² for unit n, a: the short form keeps symbolic roots simple
@@ -225,7 +219,7 @@ def drawn_pair(inst: Instant, joint: Joint) -> tuple:
             if gap is not None and (best is None or gap < best[0]):
                 best = (gap, sa, sb)
     if best is None:
-        raise KinematikaError("schema", "a sweep follows rolling of circles and lines only", joint.where)
+        raise KinematikaError("schema", "sweep-rolling-only", joint.where)
     return best[1], best[2]
 
 

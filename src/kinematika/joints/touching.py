@@ -32,7 +32,7 @@ from typing import Any, Callable, Optional
 import numpy as np
 
 from ..algebra.vectors import add, dot, scale, sub
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, Said
 from ..shapes import Cam, Circle, Curve, Line
 from .base import rounding_hint
 from .derivatives import sliding
@@ -86,8 +86,7 @@ class Touch:
         """J̈ likewise (exact while the radii stay constant: points, circles, lines)."""
         for outline in (self.outline_a, self.outline_b):
             if isinstance(outline, Curve):
-                raise KinematikaError("schema", "the geometric contact point's acceleration on a general "
-                                      "curve needs its curvature's rate: ask for the bodies' points", "")
+                raise KinematikaError("schema", "contact-acceleration-curve", "")
         return self._moving(motion, "acceleration")
 
     def _moving(self, motion: Any, level: str) -> tuple:
@@ -116,8 +115,7 @@ def touch_row(lv: Any, a: str, b: str, t: Touch) -> Any:
     n = t.normal
     ca, cb = t.centre_a, t.centre_b
     if ca is None and cb is None:
-        raise KinematikaError("geometry", "two straight outlines touch along a line, not at a point: "
-                              "join them by a prismatic joint", "")
+        raise KinematikaError("geometry", "straight-outlines", "")
     if ca is None and cb is not None:       # a straight: b's centre slides along a's line
         return sliding(lv, a, b, cb, n)
     if cb is None and ca is not None:       # b straight: a's centre slides along b's line
@@ -142,14 +140,14 @@ def outlines(inst: Any, joint: Any, body: str, point: Optional[str] = None) -> l
 
 
 def closest(first: list, second: list, pair: Callable[[Any, Any], Any], gap: Callable[[Any], float],
-            joint: Any, cannot: str) -> Any:
+            joint: Any, cannot: Any) -> Any:
     """Of every pair (one outline of each body) that can touch, `pair(oa, ob)` not None, the
     one with the smallest |gap|; none at all is a `geometry` error naming the joint (`cannot`:
     why, in words)."""
     candidates = [made for oa in first for ob in second if (made := pair(oa, ob)) is not None]
     if not candidates:
-        raise KinematikaError("geometry", f"{joint.kind.name} between {joint.a!r} and {joint.b!r}: {cannot}",
-                              joint.where)
+        raise KinematikaError("geometry", "pair-cannot", joint.where, kind=joint.kind.name, body=joint.a,
+                              other=joint.b, why=cannot)
     return min(candidates, key=lambda c: abs(gap(c)))
 
 
@@ -159,14 +157,13 @@ def find_touch(inst: Any, joint: Any, first: list, second: list, near: Optional[
     close to the contact (a sweep's previous one), which spares the search along the curve."""
     if not first or not second:
         missing = joint.a if not first else joint.b
-        raise KinematikaError("schema", f"a {joint.kind.name} joint needs an outline on both bodies: give "
-                              f"{missing!r} a circle, line or curve (or name its point with `at`)", joint.where)
+        raise KinematikaError("schema", "touching-needs-outlines", joint.where, kind=joint.kind.name, body=missing)
     touch = closest(first, second, lambda oa, ob: _pair(inst, oa, ob, near), lambda t: t.gap, joint,
-                    "these outlines cannot touch at a point")
+                    Said("outlines-cannot-touch"))
     touch.bodies = (joint.a, joint.b)
     if abs(touch.gap) > 1e-6 * inst.scale:
-        raise KinematikaError("geometry", f"{joint.b!r} does not touch {joint.a!r}: gap {touch.gap:.6g}"
-                              + rounding_hint(touch.gap, inst.scale, "the contact"), joint.where)
+        raise KinematikaError("geometry", "no-touch", joint.where, body=joint.b, other=joint.a, gap=Num(touch.gap, ".6g"),
+                              hint=rounding_hint(touch.gap, inst.scale, Said("the-contact")))
     return touch
 
 
@@ -380,7 +377,7 @@ class Follow:
             m = np.array([-e[1], e[0]])
             m = m if np.dot(m, side * curve.normal(u0)) < 0 else -m      # from the line towards the curve
             return _support(curve, through, m)[1]
-        raise KinematikaError("schema", "a sweep follows a curve touching a point, a circle or a line", "")
+        raise KinematikaError("schema", "sweep-curve-touching", "")
 
     def _exact(self, q: Any, back: Any) -> float:
         oa, ob = self.curve, self.element
@@ -391,8 +388,7 @@ class Follow:
             p = back(q.point(self.other, ob.at))
             n = np.array([-float(oa.direction[1]), float(oa.direction[0])])
             return float(np.dot(p - np.asarray(oa.through, dtype=float), n))
-        raise KinematikaError("schema", "a sweep follows sliding contact of a point on a circle or line, or "
-                              "of an outline on a curve", "")
+        raise KinematikaError("schema", "sweep-sliding-contact", "")
 
 
 def _inverse(q: Any, body: str) -> Any:

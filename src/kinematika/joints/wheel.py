@@ -16,6 +16,7 @@ from ..algebra.vectors import dot, sub
 from . import symbols
 from .base import JointGeometry, JointKind, Rows
 from .derivatives import coincident
+from ..errors import Said
 
 
 class Wheel(JointKind):
@@ -48,7 +49,7 @@ class Wheel(JointKind):
         if lv.accel:
             v_rel = sub(lv.v(j.b, geo.at), lv.v(j.a, geo.at))
             row = row - dot(sp.cross(lv.w(j.a), v_rel), n) + dot(v_rel, sp.cross(lv.w(j.b), n))
-        return [(row, f"{j.at}@{j.b} has no sideways velocity relative to {j.a}")]
+        return [(row, Said("row-no-sideways", point=f"{j.at}@{j.b}", body=j.a))]
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """A knife edge seen from above: a narrow dark wheel along its rolling direction."""

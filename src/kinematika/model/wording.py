@@ -136,13 +136,13 @@ def _language(lang: str, where: str) -> None:
 
 def _text(text: str, where: str) -> str:
     if not text.strip():
-        raise KinematikaError("schema", "a name or a note is not empty", where)
+        raise KinematikaError("schema", "name-or-note-empty", where)
     return text.strip()
 
 
 def _known(name: str, known: dict, kind: str, where: str) -> str:
     if name not in known:
-        raise KinematikaError("schema", f"unknown {kind} {name!r} ({kind}s: {', '.join(known) or 'none'})", where)
+        raise KinematikaError("schema", f"unknown-{kind}", where, **{kind: name, f"{kind}s": list(known)})
     return name
 
 
@@ -152,14 +152,11 @@ def _notation_key(key: str, bodies: dict, parameters: dict, where: str) -> str:
     rate = RATE.match(key.strip())
     if rate is None:
         if key not in parameters:
-            raise KinematikaError("schema", f"{key!r} is neither a parameter (parameters: "
-                                  f"{', '.join(parameters) or 'none'}) nor omega(BODY), "
-                                  "omega(BODY/OTHER), alpha(…)", where)
+            raise KinematikaError("schema", "notation-key-unknown", where, key=key, parameters=list(parameters))
         return key
     parts = [b.strip() for b in rate.group(2).split("/")]
     if len(parts) > 2:
-        raise KinematikaError("schema", f"{key!r}: a rate is of one body, or of one body relative "
-                              "to another (omega(blades/block))", where)
+        raise KinematikaError("schema", "notation-rate-bodies", where, key=key)
     for b in parts:
         _known(b, bodies, "body", where)
     return f"{rate.group(1)}({'/'.join(parts)})"
@@ -172,6 +169,5 @@ def rate_key(kind: str, body: str, relative_to: Optional[str] = None) -> str:
 
 def _spelling(name: str, where: str) -> str:
     if not SPELLING.match(name):
-        raise KinematikaError("schema", f"{name!r} is not a symbol's name: letters, digits and _ "
-                              "as sympy spells them (omega_0 is ω₀, vdot is v̇, R_roda)", where)
+        raise KinematikaError("schema", "notation-spelling", where, name=name)
     return name

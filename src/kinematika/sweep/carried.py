@@ -29,7 +29,7 @@ import numpy as np
 
 from ..engine.instant import Instant, instantiate
 from ..engine.turns import moves_with, turn_for
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from ..expressions import parse
 from ..joints.rolling import arc_slip, signed_radii
 from ..model.model import Model, Turn
@@ -73,19 +73,19 @@ def carried_turns(model: Model, inputs: list[Input], path: Path, values: dict[st
     return [t for t in turns if t.body in inputs_ or id(t) in used or fixture(model, t.body)]
 
 
-def fixture(model: Model, body: str) -> str:
+def fixture(model: Model, body: str) -> "Said | str":
     """What of `body` is fixed in it by numbers, which only its turn can carry (a shape's
-    place or direction, a joint's direction), or ''."""
+    place or direction, a joint's direction, as a message), or ''."""
     from ..model.model import PointPair
 
     for s in model.bodies[body].shapes:
         if any(getattr(s, k, ()) for k in ("center", "through")) or not all(
                 isinstance(getattr(s, k, None), (PointPair, type(None))) for k in ("direction", "axis", "normal")):
-            return f"{type(s).__name__.lower()}'s place"
+            return Said("fixture-shape", shape=type(s).__name__.lower())
     for j in model.joints:
         fixed_in = j.b if j.kind.along_in == "b" else j.a
         if fixed_in == body and j.along is not None and not isinstance(j.along, PointPair):
-            return f"joint {j.id}'s direction"
+            return Said("fixture-joint", joint=j.id)
     return ""
 
 

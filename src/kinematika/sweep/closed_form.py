@@ -22,6 +22,7 @@ from typing import Optional
 import numpy as np
 
 from ..engine.motion import Motion
+from ..errors import Names
 from ..model.model import Driver, Joint, Model
 from ..structure.assur import Group
 
@@ -84,10 +85,10 @@ class Outcome:
     margins: dict[int, np.ndarray] = field(default_factory=dict)   # per group: |sin| between its
                                                                    # two unknown directions
 
-    def worst(self, k) -> str:
+    def worst(self, k) -> "Names | str":
         """The bodies of the group that failed first at row `k` (for messages), or ''."""
         index = int(self.failed[k])
-        return " and ".join(self.groups[index].bodies) if index >= 0 else ""
+        return Names(self.groups[index].bodies, joined="and") if index >= 0 else ""
 
 
 class InputRates:

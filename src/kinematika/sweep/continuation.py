@@ -28,7 +28,7 @@ import numpy as np
 from .. import limits as bounds
 from ..engine.levels import VelocityLevel
 from ..engine.system import InstantSolver
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said, said_of
 from .poses import moved_geometry, moved_instant
 
 if TYPE_CHECKING:
@@ -63,8 +63,8 @@ class Point:
 class CannotFollow(Exception):
     """The curve cannot be followed from `q`: `kind` singular (branches meet) or assembly."""
 
-    def __init__(self, q: float, kind: str, why: str) -> None:
-        super().__init__(why)
+    def __init__(self, q: float, kind: str, why: Said) -> None:
+        super().__init__(str(why))
         self.q, self.kind, self.why = q, kind, why
 
 
@@ -171,7 +171,7 @@ class Curve:
                 s = 0.5 * (lo + hi)
             p = self.step(base, s)
             if p is None:
-                raise CannotFollow(base.q, "assembly", "the curve could not be corrected there")
+                raise CannotFollow(base.q, "assembly", Said("follow-not-corrected"))
             f = value(p)
             best, at = p, s
             if abs(f) < 1e-15:
@@ -211,7 +211,7 @@ def advance(asm: "Assembler", poses: Any, q: float, d: float, travel: float, ste
     if here.dq * d < 0:
         here.t = -here.t
     if abs(here.dq) < 1e-14:
-        raise CannotFollow(q, "singular", "it starts at a limit position")
+        raise CannotFollow(q, "singular", Said("follow-starts-at-limit"))
     top = max(step * float(curve.weights[-1]), 1e-6)
     s = top / 4
     done = 0.0
@@ -227,7 +227,7 @@ def advance(asm: "Assembler", poses: Any, q: float, d: float, travel: float, ste
         if new.dq * here.dq < 0:                  # a limit position between here and there
             fold, at = curve.search(here, (start, end), lambda p: p.dq)
             if fold.lost < RANK:
-                raise CannotFollow(fold.q, "singular", "branches of the motion meet there")
+                raise CannotFollow(fold.q, "singular", Said("follow-branches-meet"))
             piece = abs(fold.q - here.q)
             if done + piece >= travel:
                 return _land(curve, here, start, (at, fold), here.q + d * (travel - done), d, passed)
@@ -242,10 +242,10 @@ def advance(asm: "Assembler", poses: Any, q: float, d: float, travel: float, ste
         here = new
         far = _distance(asm, here.poses)
         if far > RUNAWAY:
-            raise CannotFollow(here.q, "assembly", "the mechanism runs off to infinity there")
+            raise CannotFollow(here.q, "assembly", Said("follow-runs-off"))
         s = min(2 * s, top * max(1.0, 4 * far))     # far away, the curve is nearly straight
-    raise CannotFollow(here.q, "assembly", f"more than {bounds.CONTINUATION_STEPS} continuation "
-                       "steps between two rows")
+    raise CannotFollow(here.q, "assembly", Said("follow-too-many-steps",
+                                                                 limit=bounds.CONTINUATION_STEPS))
 
 
 def _land(curve: Curve, base: Point, start: tuple[float, Point], end: tuple[float, Point],
@@ -259,7 +259,7 @@ def _land(curve: Curve, base: Point, start: tuple[float, Point], end: tuple[floa
         near, _ = curve.search(base, (start, end), lambda p: p.q - target)
     poses = curve.at(near, target)
     if poses is None:
-        raise CannotFollow(target, "assembly", "the mechanism could not be assembled there")
+        raise CannotFollow(target, "assembly", Said("follow-not-assembled"))
     return Passage(poses, target, d, passed)
 
 
@@ -273,9 +273,8 @@ def _distance(asm: "Assembler", poses: Any) -> float:
 
 def _stuck(here: Point) -> CannotFollow:
     if here.lost < RANK:
-        return CannotFollow(here.q, "singular", "branches of the motion meet there")
-    return CannotFollow(here.q, "assembly", "the mechanism cannot be assembled a step further, "
-                        "and it is not a limit position")
+        return CannotFollow(here.q, "singular", Said("follow-branches-meet"))
+    return CannotFollow(here.q, "assembly", Said("follow-stuck"))
 
 
 def _matrix(asm: "Assembler", poses: Any) -> np.ndarray:
@@ -287,6 +286,6 @@ def _matrix(asm: "Assembler", poses: Any) -> np.ndarray:
         solver = InstantSolver(inst, geos)
         rows = solver.rows(VelocityLevel(solver.unknowns, inst.ref))
     except KinematikaError as err:
-        raise CannotFollow(math.nan, "assembly", err.message) from None
+        raise CannotFollow(math.nan, "assembly", said_of(err)) from None
     a, _ = solver.matrix(rows)
     return np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), solver.unknowns.n)

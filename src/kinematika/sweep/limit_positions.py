@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any, Optional
 import numpy as np
 
 from .. import limits as bounds
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Names, Num, Said
 from .plan import Plan
 
 if TYPE_CHECKING:
@@ -71,8 +71,7 @@ class Zigzag:
     def turn(self, q: float) -> None:
         """A limit position at q: the run ends there and the next one goes back."""
         if len(self.limits) >= bounds.SWEEP_LIMITS:
-            raise KinematikaError("limit", f"the motion passes more than {bounds.SWEEP_LIMITS} limit "
-                                  f"positions; sweep a shorter travel", "sweep")
+            raise KinematikaError("limit", "sweep-too-many-limits", "sweep", limit=bounds.SWEEP_LIMITS)
         self.travel0 += abs(q - self.start)
         self.limits.append(float(q))
         self.at.append(self.travel0)
@@ -98,10 +97,10 @@ class Zigzag:
         return min(values, key=lambda v: abs(v - a))
 
 
-def not_followed(plan: Plan, q: float, travel: float, why: str, kind: str = "assembly") -> KinematikaError:
+def not_followed(plan: Plan, q: float, travel: float, why: Said, kind: str = "assembly") -> KinematikaError:
     """The error of a motion that cannot be followed further (not a limit position)."""
-    return KinematikaError(kind, f"the motion cannot be followed past {plan.joint.id} = {q:.6g} "
-                           f"{plan.unit} (after {travel:.6g} {plan.unit} of travel): {why}", "sweep")
+    return KinematikaError(kind, "sweep-not-followed", "sweep", joint=plan.joint.id, value=Num(q, ".6g"),
+                           unit=plan.unit, travel=Num(travel, ".6g"), why=why)
 
 
 def with_rows(err: KinematikaError, partial: Optional["SweepResult"]) -> KinematikaError:
@@ -148,7 +147,7 @@ def _follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResu
             good_q = float(q[j - 1]) if j > 0 else zig.start
             edge, group = _edge(sweeper, flips, good_q, float(q[j]), int(out.failed[j]), scale, zig.h)
             if zig.limits and abs(edge - zig.start) <= 1e-9 * zig.h:
-                why = "it turns back at once: branches of the motion meet there"
+                why = Said("follow-turns-back")
                 partial = _closed_result(sweeper, plan, zig, runs, False)
                 raise with_rows(not_followed(plan, edge, zig.travel0, why, "singular"), partial)
         ahead = edge if edge is not None else float(q[-1])
@@ -164,8 +163,7 @@ def _follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResu
             k, begin = int(rows[-1]) + 1, None
             continue
         if group is None:                          # not a dyad that closes two ways
-            why = f"{' and '.join(out.groups[int(out.failed[j])].bodies) or 'the loop'} cannot close " \
-                  "there, and it is not a limit position"
+            why = Said("follow-cannot-close", bodies=Names(out.groups[int(out.failed[j])].bodies, joined="and"))
             if not skip_bad:
                 partial = _closed_result(sweeper, plan, zig, runs, False)
                 raise with_rows(not_followed(plan, edge, zig.travel0 + abs(edge - zig.start), why), partial)

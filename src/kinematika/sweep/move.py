@@ -12,7 +12,7 @@ import dataclasses
 import math
 from typing import Any, Mapping
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num
 from ..expressions import Expr, ExpressionError, evaluate, parse
 from ..model.model import Model
 from ..model.overrides import numeric_parameters
@@ -50,21 +50,19 @@ def _amount(model: Model, raw: Any, where: str) -> float:
         expr = raw if isinstance(raw, Expr) else parse(raw)
         value = float(evaluate(expr, numeric_parameters(model), Numeric()))
     except ExpressionError as err:
-        raise KinematikaError("schema", f"{err} (a move is a number of degrees or lengths)",
-                              where) from None
+        raise KinematikaError("schema", "move-not-number", where, problem=err.said) from None
     if not math.isfinite(value):
-        raise KinematikaError("schema", "a move is a finite number", where)
+        raise KinematikaError("schema", "move-not-finite", where)
     return value
 
 
 def _check_driven(model: Model, jid: str, where: str) -> None:
     ids = [j.id for j in model.joints]
     if jid not in ids:
-        raise KinematikaError("schema", f"unknown joint {jid!r} (joints: {', '.join(ids)})", where)
+        raise KinematikaError("schema", "unknown-joint", where, joint=jid, joints=ids)
     driven = driven_joints(model)
     if jid not in driven:
-        raise KinematikaError("schema", f"joint {jid!r} is not driven; `move` advances a driven "
-                              f"joint ({', '.join(driven) or 'none here'})", where)
+        raise KinematikaError("schema", "move-not-driven", where, joint=jid, driven=list(driven), count=len(driven))
 
 
 def _advance(model: Model, jid: str, amount: float, where: str) -> Model:
@@ -95,8 +93,8 @@ def _unreachable(result: Any, jid: str, amount: float, unit: str) -> KinematikaE
     edges = [x for x in result.dead_points if abs(x) <= abs(amount) and x * amount >= 0]
     if edges:
         got = min(edges, key=abs)
-    return KinematikaError("assembly", f"{jid} cannot be moved {amount:g}{unit}: the mechanism meets "
-                           f"a dead point or comes apart after {got:.6g}{unit}", f"move.{jid}")
+    return KinematikaError("assembly", "move-unreachable", f"move.{jid}", joint=jid, amount=amount, unit=unit,
+                           got=Num(got, ".6g"))
 
 
 def at_row(model: Model, row: int) -> Model:
@@ -107,12 +105,12 @@ def at_row(model: Model, row: int) -> Model:
     from .run import Sweeper
 
     if any(p.value is None for p in model.parameters.values()):
-        raise KinematikaError("schema", "a row of the sweep needs numbers for every parameter", "row")
+        raise KinematikaError("schema", "row-needs-numbers", "row")
     sweeper = Sweeper(model)
     plan = sweeper.plan(None, None)
     if row > plan.steps:
-        raise KinematikaError("usage", f"row {row}: the sweep has rows 0 to {plan.steps}", "row")
+        raise KinematikaError("usage", "row-out-of-range", "row", row=row, last=plan.steps)
     result = sweeper.run(plan.by * row / plan.steps, row, skip_bad=True)
     if not result.ok[-1]:
-        raise KinematikaError("assembly", f"row {row} of the sweep cannot be assembled", "row")
+        raise KinematikaError("assembly", "row-cannot-assemble", "row", row=row)
     return posed_model(model, result, -1)

@@ -226,8 +226,8 @@ def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
 class _CannotFollow(Exception):
     """The curve could not be followed to a row (see `continuation.CannotFollow`)."""
 
-    def __init__(self, q: float, travel: float, kind: str, why: str) -> None:
-        super().__init__(why)
+    def __init__(self, q: float, travel: float, kind: str, why: Any) -> None:
+        super().__init__(str(why))
         self.q, self.travel, self.kind, self.why = q, travel, kind, why
 
     def error(self, plan: Plan, zig: Any, partial: SweepResult) -> KinematikaError:

@@ -61,8 +61,7 @@ class _Pose:
             return drawn
         names = self.model.bodies[body].points
         if not names:
-            raise KinematikaError("schema", f"body {body!r} carries no point, so its shapes cannot "
-                                  "be moved: list one of its points", f"bodies.{body}")
+            raise KinematikaError("schema", "body-no-point", f"bodies.{body}", body=body)
         ref = names[0]
         return self.material(ref, body) + self.rot[body] @ (drawn - np.asarray(
             [float(c) for c in self.inst.points[ref]]))
@@ -142,6 +141,6 @@ def _numbers(values: Any) -> tuple[Expr, ...]:
     for v in values:
         v = float(v)
         if not math.isfinite(v):
-            raise KinematikaError("assembly", "the mechanism cannot be assembled there")
+            raise KinematikaError("assembly", "cannot-assemble-there")
         out.append(parse(v + 0.0))
     return tuple(out)

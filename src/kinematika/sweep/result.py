@@ -180,10 +180,11 @@ class SweepResult:
     def to_parquet(self, path: str | Path) -> None:
         """The CSV's columns in a Parquet file (raw values; bad rows null), with `ok`; needs
         pyarrow (`pip install 'kinematika[columnar]'`)."""
+        from ..errors import Said
         from ..extras import need
 
-        pa = need("pyarrow", "writing Parquet (or write .npz)", "-o", "columnar")
-        pq = need("pyarrow.parquet", "writing Parquet (or write .npz)", "-o", "columnar")
+        pa = need("pyarrow", Said("writing-parquet"), "-o", "columnar")
+        pq = need("pyarrow.parquet", Said("writing-parquet"), "-o", "columnar")
         names, arrays = ["ok"], [pa.array(self.ok)]
         for header, values in self.columns():
             names.append(header)

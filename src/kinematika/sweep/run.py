@@ -13,7 +13,7 @@ import numpy as np
 
 from ..engine.instant import instantiate
 from ..engine.system import InstantSolver
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, Said
 from ..memory import arrays_on_heap
 from ..model.model import Model, PointRef
 from .coincident import coincide
@@ -50,8 +50,7 @@ class Sweeper:
         model = _as_model(source)
         symbols = [n for n, p in model.parameters.items() if p.value is None]
         if symbols:
-            raise KinematikaError("schema", f"a sweep needs numbers: give a value to "
-                                  f"{', '.join(symbols)}", "parameters")
+            raise KinematikaError("schema", "sweep-needs-numbers", "parameters", names=symbols)
         self.model = model
         self.inst = instantiate(model, False)
         self.joint, self.driver = swept_joint(model, joint if joint is not None else
@@ -239,20 +238,11 @@ def bad_row(plan: Plan, k: int, kind: str, what: str = "", at: Optional[float] =
     assembled), `singular` (dead point), or `mobility` (assembled, but the drivers as written
     contradict the moved joints)."""
     value = plan.coordinate[k] if at is None else at
-    at_text = f"increment {k} ({plan.joint.id} = {value:.6g} {plan.unit})"
+    where = Said("sweep-at", k=k, joint=plan.joint.id, value=Num(value, ".6g"), unit=plan.unit)
     if kind == "mobility":
-        return KinematikaError(kind, f"the drivers as written contradict the joints at {at_text}: a "
-                               "vector driver (3D ω, a velocity) stays fixed in the ground axes as "
-                               "the mechanism turns; drive the joint's rate instead", "sweep")
-    if kind == "singular":
-        message = (f"the configuration at {at_text} is singular for the drivers (a dead point: "
-                   "condition number above 1e+10)")
-    else:
-        message = f"the mechanism cannot be assembled at {at_text}"
-    if what:
-        message += f": {what} cannot close the loop" if kind == "assembly" else f" ({what})"
-    message += "; use --skip-bad to skip such positions"
-    return KinematikaError(kind, message, "sweep")
+        return KinematikaError(kind, "sweep-drivers-contradict", "sweep", at=where)
+    return KinematikaError(kind, "sweep-singular" if kind == "singular" else "sweep-cannot-assemble", "sweep",
+                           at=where, what=what or "", said=str(bool(what)).lower())
 
 
 def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray,

@@ -37,8 +37,7 @@ def apply(text: str, fmt: str, op: dict[str, Any], lang: str = "en") -> tuple[st
     """The model's text after one action of the page (see the module's docstring), and the
     element to select then (`body:link1`, or None)."""
     if not isinstance(op, dict) or op.get("op") not in ACTIONS:
-        raise KinematikaError("usage", f"'op' is an object whose 'op' is one of {', '.join(ACTIONS)}",
-                              "op")
+        raise KinematikaError("usage", "build-op", "op", actions=list(ACTIONS))
     tree = Tree(document.load(text, fmt), fmt)
     action, selected = op["op"], None
     if action == "add":
@@ -46,8 +45,7 @@ def apply(text: str, fmt: str, op: dict[str, Any], lang: str = "en") -> tuple[st
         t = tool(str(op.get("kind")))
         if not isinstance(picks, list) or len(picks) != len(t.picks) or \
                 not all(_is_pick(p) for p in picks):
-            raise KinematikaError("usage", f"the {t.kind} tool takes {len(t.picks)} picks "
-                                  f"({', '.join(t.picks)})", "picks")
+            raise KinematikaError("usage", "tool-picks", "picks", tool=t.kind, count=len(t.picks), picks=list(t.picks))
         words = NAMES.get(lang, NAMES["en"])
         _name_the_frame(tree, words["ground"])
         ctx = Context(tree, positions(text, fmt), words, op.get("values") or {})
@@ -349,13 +347,13 @@ def _set(tree: Tree, path: Any, value: Any, unit: Any) -> None:
     `deg(...)`; a direction (unit `direction`, degrees) as its unit vector; a value that
     names a parameter changes the parameter."""
     if not isinstance(path, list) or not path or not all(isinstance(k, (str, int)) for k in path):
-        raise KinematikaError("usage", "'path' is a list of keys and indices", "path")
+        raise KinematikaError("usage", "build-path", "path")
     if isinstance(value, bool) or not isinstance(value, (int, float, str)):
-        raise KinematikaError("usage", "'value' is a number or an expression", "value")
+        raise KinematikaError("usage", "build-value", "value")
     if isinstance(value, str) and not value.strip():
-        raise KinematikaError("usage", "'value' is empty", "value")
+        raise KinematikaError("usage", "build-value-empty", "value")
     if isinstance(value, (int, float)) and not math.isfinite(value):
-        raise KinematikaError("usage", "'value' is not a finite number", "value")
+        raise KinematikaError("usage", "build-value-finite", "value")
     parent, key = _locate(tree.root, path)
     if unit == "direction":
         a = math.radians(float(value))
@@ -394,7 +392,7 @@ def _step(node: Any, key: Any, path: list) -> Any:
             return node[key]
     except (IndexError, KeyError):
         pass
-    raise KinematikaError("usage", f"nothing at {'.'.join(map(str, path))} in the model", "path")
+    raise KinematikaError("usage", "build-nothing-at", "path", path=".".join(map(str, path)))
 
 
 # deleting ---------------------------------------------------------------------------------------
@@ -411,17 +409,16 @@ def _delete(tree: Tree, element: str) -> None:
         index = tree.joint_ids().index(name) if kind == "joint" and name in tree.joint_ids() else \
             (int(name) if name.isdigit() else -1)
         if not 0 <= index < len(items):
-            raise KinematikaError("usage", f"no {element} to delete", "element")
+            raise KinematikaError("usage", "delete-missing", "element", element=element)
         del items[index]
     else:
-        raise KinematikaError("usage", f"{element!r}: delete point:NAME, body:NAME, joint:ID, "
-                              "driver:N or ask:N", "element")
+        raise KinematikaError("usage", "delete-what", "element", element=repr(element))
 
 
 def _delete_point(tree: Tree, name: str) -> None:
     points = tree.points()
     if name not in points:
-        raise KinematikaError("usage", f"no point {name!r} to delete", "element")
+        raise KinematikaError("usage", "delete-no-point", "element", point=name)
     doomed, changed = {name}, True
     while changed:                                   # and every point built on a doomed one
         changed = False
@@ -452,7 +449,7 @@ def _delete_point(tree: Tree, name: str) -> None:
 def _delete_body(tree: Tree, name: str) -> None:
     bodies = tree.bodies()
     if name not in bodies or name == tree.frame:
-        raise KinematikaError("usage", f"no body {name!r} to delete (the ground stays)", "element")
+        raise KinematikaError("usage", "delete-no-body", "element", body=name)
     listed = tree.body_points(name)
     del bodies[name]
     ids = tree.joint_ids()
@@ -492,7 +489,7 @@ def _drive(tree: Tree, op: dict[str, Any]) -> None:
     rate, accel = op.get("value", 1), op.get("alpha", 0)
     for x in (rate, accel):
         if isinstance(x, bool) or not isinstance(x, (int, float, str)):
-            raise KinematikaError("usage", "a driver's value is a number or an expression", "value")
+            raise KinematikaError("usage", "driver-value", "value")
     if isinstance(body, str) and body in tree.bodies() and body != tree.frame:
         item = {"omega": body, "value": _value(rate), "alpha": _value(accel)}
         same = lambda d: str(d.get("omega")) == body and "relative_to" not in d
@@ -500,7 +497,7 @@ def _drive(tree: Tree, op: dict[str, Any]) -> None:
         item = {"joint": joint, "rate": _value(rate), "accel": _value(accel)}
         same = lambda d: str(d.get("joint")) == joint
     else:
-        raise KinematikaError("usage", "the input is a moving body or a joint of the model", "body")
+        raise KinematikaError("usage", "input-body-or-joint", "body")
     drivers = tree.drivers()
     for i, d in enumerate(drivers):
         if isinstance(d, dict) and same(d):
@@ -516,16 +513,15 @@ def _value(x: Any) -> Any:
 def _ask(tree: Tree, question: str, target: str) -> None:
     """Add a question about a point or a body (once)."""
     if question not in QUESTIONS:
-        raise KinematikaError("usage", f"{question!r}: a question is one of {', '.join(QUESTIONS)}",
-                              "question")
+        raise KinematikaError("usage", "question-kind", "question", question=repr(question), kinds=list(QUESTIONS))
     if not target:
-        raise KinematikaError("usage", "'target' names the point or body asked about", "target")
+        raise KinematikaError("usage", "question-target", "target")
     item = {question: target}
     if question == "decompose":
         base = target.split("@")[0]
         moving = next((b for b in tree.carriers(base) if b != tree.frame), None)
         if moving is None:
-            raise KinematikaError("usage", f"{target} is on no moving body", "target")
+            raise KinematikaError("usage", "target-not-moving", "target", target=target)
         item = {"decompose": target, "moving": moving}
     asks = tree.asks()
     if any(document.plain(a) == item for a in asks):

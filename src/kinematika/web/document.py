@@ -14,7 +14,7 @@ import io
 import json
 from typing import Any
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from ..model.files import parse_text
 
 FORMATS = ("yaml", "toml", "json")
@@ -23,14 +23,13 @@ FORMATS = ("yaml", "toml", "json")
 def load(text: str, fmt: str) -> Any:
     """The text as a round-trip tree (a mapping); an empty text is an empty mapping."""
     if fmt not in FORMATS:
-        raise KinematikaError("usage", f"{fmt!r}: a format is one of {', '.join(FORMATS)}", "format")
+        raise KinematikaError("usage", "format-one-of", "format", format=repr(fmt), formats=list(FORMATS))
     if not text.strip() or (fmt == "yaml" and all(
             not line.strip() or line.lstrip().startswith("#") for line in text.splitlines())):
         return _empty(fmt, text)
     plain = parse_text(text, fmt, "model")              # the bounds on untrusted input
     if not isinstance(plain, dict):
-        raise KinematikaError("schema", "a model is a mapping with keys points, bodies, joints, "
-                              "drivers", "model")
+        raise KinematikaError("schema", "model-mapping", "model")
     if fmt == "json":
         return plain
     if fmt == "toml":
@@ -72,7 +71,7 @@ def convert(text: str, fmt: str, to: str) -> str:
     """The model written in another format: the same tree (YAML comments cannot be kept in
     JSON; TOML and YAML keep the model's own, not its comments, across the change)."""
     if to not in FORMATS:
-        raise KinematikaError("usage", f"{to!r}: a format is one of {', '.join(FORMATS)}", "to")
+        raise KinematikaError("usage", "format-one-of", "to", format=repr(to), formats=list(FORMATS))
     if to == fmt:
         return text
     tree = plain(load(text, fmt))
@@ -272,9 +271,7 @@ def _toml_symbols(tree: dict) -> dict:
 def _check_toml(tree: Any, where: str = "") -> None:
     """TOML has no null: a symbolic parameter (`r: null`) cannot be written in it."""
     if tree is None:
-        raise KinematikaError("usage", f"{where or 'the model'} is null, which TOML cannot "
-                              "write (a symbolic parameter): keep this model in YAML or JSON",
-                              where)
+        raise KinematikaError("usage", "toml-null", where, place=where or Said("the-model"))
     if isinstance(tree, dict):
         for k, v in tree.items():
             _check_toml(v, f"{where}.{k}" if where else str(k))

@@ -16,7 +16,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Names
 from ..languages import LANGS
 from ..model.model import POINT_QUESTIONS
 from . import document
@@ -32,14 +32,13 @@ def rename(tree: Tree, element: str, to: Any) -> str:
     kind, _, old = str(element).partition(":")
     new = str(to).strip() if isinstance(to, str) else ""
     if not NAME.fullmatch(new):
-        raise KinematikaError("usage", f"{new!r} is not a name: a letter, then letters, digits or _",
-                              "to")
+        raise KinematikaError("usage", "rename-not-a-name", "to", name=new)
     if kind == "body":
         _rename_body(tree, old, new)
     elif kind == "point":
         _rename_point(tree, old, new)
     else:
-        raise KinematikaError("usage", f"{element!r}: rename body:NAME or point:NAME", "element")
+        raise KinematikaError("usage", "rename-element", "element", element=element)
     return f"{kind}:{new}"
 
 
@@ -48,10 +47,10 @@ def name_in(tree: Tree, element: str, lang: Any, text: Any) -> None:
     (`names.LANG.points`); an empty text takes the name away."""
     kind, _, name = str(element).partition(":")
     if lang not in LANGS:
-        raise KinematikaError("usage", f"{lang!r}: a language is one of {', '.join(LANGS)}", "lang")
+        raise KinematikaError("usage", "rename-language", "lang", lang=lang, langs=Names(LANGS))
     section = {"body": "bodies", "point": "points"}.get(kind)
     if section is None or name not in (tree.bodies() if kind == "body" else tree.points()):
-        raise KinematikaError("usage", f"no {element!r} to name", "element")
+        raise KinematikaError("usage", "rename-nothing", "element", element=element)
     words = " ".join(str(text or "").split())
     names = tree.root.get("names")
     if not words:
@@ -69,11 +68,11 @@ def name_in(tree: Tree, element: str, lang: Any, text: Any) -> None:
 def _rename_body(tree: Tree, old: str, new: str) -> None:
     bodies = tree.bodies()
     if old not in bodies:
-        raise KinematikaError("usage", f"no body {old!r} to rename", "element")
+        raise KinematikaError("usage", "rename-no-body", "element", name=old)
     if new == old:
         return
     if new in bodies:
-        raise KinematikaError("usage", f"there is a body {new!r} already", "to")
+        raise KinematikaError("usage", "rename-body-exists", "to", name=new)
     if old == tree.frame:
         document.put(tree.root, "frame", new)
     _rekey(bodies, old, new)
@@ -114,11 +113,11 @@ def _at_body(ref: str, old: str, new: str) -> str:
 def _rename_point(tree: Tree, old: str, new: str) -> None:
     points = tree.points()
     if old not in points:
-        raise KinematikaError("usage", f"no point {old!r} to rename", "element")
+        raise KinematikaError("usage", "rename-no-point", "element", name=old)
     if new == old:
         return
     if new in points:
-        raise KinematikaError("usage", f"there is a point {new!r} already", "to")
+        raise KinematikaError("usage", "rename-point-exists", "to", name=new)
     _rekey(points, old, new)
     for name in list(points):
         _construction(points[name], old, new)

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from typing import Any, Optional
 
 from ..commands import How
-from ..errors import KinematikaError
+from ..errors import KinematikaError, parser_problem
 from ..limits import PAGE_SWEEP_STEPS
 
 FORMATS = ("yaml", "toml", "json")
@@ -57,18 +57,17 @@ def parse_body(endpoint: str, raw: bytes) -> Request:
     try:
         body = json.loads(raw.decode("utf-8"))
     except (UnicodeDecodeError, ValueError) as err:
-        raise KinematikaError("syntax", f"the request is not JSON: {err}", "request") from None
+        raise KinematikaError("syntax", "request-not-json", "request", problem=parser_problem(str(err))) from None
     if not isinstance(body, dict):
-        raise KinematikaError("usage", "the request is a JSON object with at least the key "
-                              "'model'", "request")
+        raise KinematikaError("usage", "request-object", "request")
     allowed = COMMON + EXTRA[endpoint]
     for key in body:
         if key not in allowed:
-            raise KinematikaError("usage", f"unknown key {key!r} for /api/{endpoint} (accepted: "
-                                  f"{', '.join(allowed)})", key)
+            raise KinematikaError("usage", "request-unknown-key", key, key=key, endpoint=endpoint,
+                                  accepted=list(allowed))
     model = body.get("model")
     if not isinstance(model, str):
-        raise KinematikaError("usage", "'model' is required: the model file's text", "model")
+        raise KinematikaError("usage", "request-model", "model")
     fmt = _choice(body, "format", FORMATS, "yaml")
     how = How(fmt=fmt, set=_assignments(body, "set"), move=_assignments(body, "move"),
               assembly=_integer(body, "assembly", None, low=0),
@@ -102,12 +101,12 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         points = body.get("points")
         if points is not None and not (isinstance(points, list) and
                                        all(isinstance(p, str) for p in points)):
-            raise KinematikaError("usage", "'points' is a list of point names", "points")
+            raise KinematikaError("usage", "request-points", "points")
         out["points"] = points or None
         out["view"] = _choice(body, "view", ("iso", "top", "front", "side"), "iso")
         width = _number(body, "width")
         if width is not None and not 1 <= width <= 100:
-            raise KinematikaError("usage", "'width' is a figure width in inches, 1 to 100", "width")
+            raise KinematikaError("usage", "request-width", "width")
         out["width"] = width or 8.0
     elif endpoint == "exercise":
         from .exercise_api import exercise_options
@@ -115,7 +114,7 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         out.update(exercise_options(body))
     elif endpoint == "build":
         if not isinstance(body.get("op"), dict):
-            raise KinematikaError("usage", "'op' is the action: an object with its key 'op'", "op")
+            raise KinematikaError("usage", "request-op", "op")
         out["op"] = body["op"]
     elif endpoint == "convert":
         out["to"] = _choice(body, "to", FORMATS, "yaml")
@@ -123,10 +122,10 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         out["point"] = _text(body, "point")
         to = body.get("to")
         if not (isinstance(to, list) and len(to) == 2 and all(_finite(x) for x in to)):
-            raise KinematikaError("usage", "'to' is the point's new place [x, y]", "to")
+            raise KinematikaError("usage", "request-to", "to")
         out["to"] = (float(to[0]), float(to[1]))
         if not out["point"]:
-            raise KinematikaError("usage", "'point' names the point to move", "point")
+            raise KinematikaError("usage", "request-point", "point")
     return out
 
 
@@ -137,28 +136,28 @@ def _finite(x: Any) -> bool:
 def _choice(body: dict, key: str, choices: tuple, default: str) -> str:
     value = body.get(key, default)
     if value not in choices:
-        raise KinematikaError("usage", f"{value!r}: {key} is one of {', '.join(choices)}", key)
+        raise KinematikaError("usage", "request-choice", key, value=repr(value), key=key, choices=list(choices))
     return value
 
 
 def _flag(body: dict, key: str) -> Optional[bool]:
     value = body.get(key)
     if value is not None and not isinstance(value, bool):
-        raise KinematikaError("usage", f"{key!r} is true, false or null", key)
+        raise KinematikaError("usage", "request-flag", key, key=key)
     return value
 
 
 def _text(body: dict, key: str) -> Optional[str]:
     value = body.get(key)
     if value is not None and not isinstance(value, str):
-        raise KinematikaError("usage", f"{key!r} is a text", key)
+        raise KinematikaError("usage", "request-text", key, key=key)
     return value
 
 
 def _number(body: dict, key: str) -> Optional[float]:
     value = body.get(key)
     if value is not None and not _finite(value):
-        raise KinematikaError("usage", f"{key!r} is a number", key)
+        raise KinematikaError("usage", "request-number", key, key=key)
     return None if value is None else float(value)
 
 
@@ -169,8 +168,9 @@ def _integer(body: dict, key: str, default: Optional[int], low: int = 0,
         return None
     if not isinstance(value, int) or isinstance(value, bool) or value < low or \
             (high is not None and value > high):
-        bound = f"{low} to {high}" if high is not None else f"at least {low}"
-        raise KinematikaError("usage", f"{key!r} is a whole number, {bound}", key)
+        if high is not None:
+            raise KinematikaError("usage", "request-whole-range", key, key=key, low=low, high=high)
+        raise KinematikaError("usage", "request-whole-least", key, key=key, low=low)
     return value
 
 
@@ -180,7 +180,7 @@ def _assignments(body: dict, key: str) -> dict[str, str]:
     if value is None:
         return {}
     if not isinstance(value, dict):
-        raise KinematikaError("usage", f"{key!r} maps names to numbers or expressions", key)
+        raise KinematikaError("usage", "request-assignments", key, key=key)
     out = {}
     for name, v in value.items():
         if _finite(v):
@@ -188,5 +188,5 @@ def _assignments(body: dict, key: str) -> dict[str, str]:
         elif isinstance(v, str) and v.strip():
             out[name] = v
         else:
-            raise KinematikaError("usage", f"{key}.{name}: a number or an expression", key)
+            raise KinematikaError("usage", "request-assignment", key, key=f"{key}.{name}")
     return out

@@ -38,7 +38,7 @@ window.kinematika = { state, timing, figure, builder,
 
 // the model -----------------------------------------------------------------------------
 function request(extra = {}) {
-  const body = { model: editor.text, format: state.fmt, ...extra };
+  const body = { model: editor.text, format: state.fmt, lang: state.lang, ...extra };
   if (state.assembly !== null) body.assembly = state.assembly;
   return body;
 }
@@ -50,7 +50,7 @@ async function analyse() {
   $("busy").hidden = false;
   const [solved, drawn, swept, sketched] = await Promise.allSettled([
     post("solve", request()), post("draw", request({ centres: true, lang: state.lang })),
-    post("sweep", request({ skip_bad: true })), post("sketch", { model: editor.text, format: state.fmt }),
+    post("sweep", request({ skip_bad: true })), post("sketch", { model: editor.text, format: state.fmt, lang: state.lang }),
   ]);
   if (gen !== state.gen) return;
   $("busy").hidden = true;
@@ -137,7 +137,7 @@ async function listAssemblies(gen) {
   const pick = $("assembly");
   let found = [];
   try {
-    found = (await post("assemblies", { model: editor.text, format: state.fmt })).assemblies;
+    found = (await post("assemblies", { model: editor.text, format: state.fmt, lang: state.lang })).assemblies;
   } catch (_) { /* none to offer: the model's own */ }
   if (gen !== state.gen) return;
   const options = [`<option value="">${escapeHtml(t("assembly-as-drawn"))}</option>`];
@@ -425,7 +425,7 @@ async function drag(name, to, final) {
     const job = dragWanted;
     dragWanted = null;
     try {
-      const answer = await post("edit", { model: editor.text, format: state.fmt, point: job.name, to: job.to });
+      const answer = await post("edit", { model: editor.text, format: state.fmt, lang: state.lang, point: job.name, to: job.to });
       setText(answer.model);
       await analyse();
     } catch (err) {
@@ -613,7 +613,7 @@ async function build(op) {
 async function convertTo(fmt) {
   if (fmt === state.fmt) return;
   try {
-    const answer = await post("convert", { model: editor.text, format: state.fmt, to: fmt });
+    const answer = await post("convert", { model: editor.text, format: state.fmt, lang: state.lang, to: fmt });
     state.fmt = fmt;
     setText(answer.model);
     analyse();
@@ -642,7 +642,7 @@ async function setLanguage(code) {
   builder.say();
   builder.showProperties();
   if (state.blank && editor.text === state.blank) newModel("blank");   // not begun: in the new language
-  else if (state.solution) analyse(); else explainSoon();
+  else if (state.solution || editor.text.trim()) analyse(); else explainSoon();     // errors, warnings: said again
 }
 
 async function start() {
