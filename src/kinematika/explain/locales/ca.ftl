@@ -2,10 +2,10 @@
 ## arrossegament, relativa, CIR). Cal conservar els marcadors entre claus.
 
 sec-data = Dades
-data-numeric = Els nombres són els del resolutor. Unitats: longituds en { $unit } (les del model), velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
+data-numeric = Unitats: longituds en { $unit }, velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
 data-planar = Moviment pla: les velocitats i acceleracions angulars tenen signe, positives en sentit antihorari.
 data-spatial = Les velocitats i acceleracions angulars són vectors (regla de la mà dreta al voltant de la seva direcció).
-data-symbolic = Les dades són símbols: cada valor és la fórmula exacta del resolutor. Les figures es dibuixen amb valors de mostra dels símbols.
+data-symbolic = Les dades són símbols, i cada resultat és una fórmula exacta en funció d’aquests. Les figures es dibuixen amb valors de mostra dels símbols, indicats sota cada figura.
 sec-structure = Estructura
 col-body = sòlid
 col-points = punts
@@ -25,7 +25,10 @@ structure-dof = Incògnites: { $n } components de velocitat { $moving ->
     }. Les condicions de velocitat dels enllaços tenen rang { $rank }, de manera que el mecanisme té { $dof ->
         [one] un grau
        *[other] { $dof } graus
-    } de llibertat (comptats pel rang); les dades de moviment donen { $conditions ->
+    } de llibertat ({ $dof ->
+        [one] comptat
+       *[other] comptats
+    } pel rang); les dades de moviment donen { $conditions ->
         [one] una condició independent
        *[other] { $conditions } condicions independents
     }.
@@ -45,20 +48,29 @@ joint-cylindrical = cilíndric
 fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
-    }; les fletxes blaves són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls; els sòlids estan numerats.
-fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts: en negre els termes coneguts{ $unknown ->
-        [1] , en vermell els trobats en aquest pas
-       *[other] {""}
-    }{ $result ->
-        [1] , en blau el resultat
-       *[other] {""}
+    }; { $format ->
+        [md] les fletxes
+       *[other] les fletxes blaves
+    } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls; els sòlids estan numerats.
+fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
+        [md] , els termes l’un darrere l’altre
+       *[other] : en negre els termes coneguts{ $unknown ->
+            [1] , en vermell els trobats en aquest pas
+           *[other] {""}
+        }{ $result ->
+            [1] , en blau el resultat
+           *[other] {""}
+        }
     }.
-fig-polygon_a = Polígon d’acceleracions des del pol o, a escala, amb els vèrtexs imatges dels punts: en negre els termes coneguts{ $unknown ->
-        [1] , en vermell els trobats en aquest pas
-       *[other] {""}
-    }{ $result ->
-        [1] , en blau el resultat
-       *[other] {""}
+fig-polygon_a = Polígon d’acceleracions des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
+        [md] , els termes l’un darrere l’altre
+       *[other] : en negre els termes coneguts{ $unknown ->
+            [1] , en vermell els trobats en aquest pas
+           *[other] {""}
+        }{ $result ->
+            [1] , en blau el resultat
+           *[other] {""}
+        }
     }.
 fig-sample = Dibuixat amb valors de mostra dels símbols.
 sec-position = Posició
@@ -136,7 +148,10 @@ kind-other = grup resolt conjuntament
 step-title = Pas { $n }: { $kind } — { $bodies }
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
-v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites; en vermell, els termes trobats en el pas.
+v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
+        [md] : els termes marcats amb ?, que troba el pas
+       *[other] ; en vermell, els termes trobats en el pas
+    }.
 a-intro = Conegudes les velocitats, tots els termes normals i de Coriolis són coneguts; les incògnites són els termes tangencials i relatius.
 a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
 driver-omega = Dada: { $sym } = { $value }.
@@ -354,8 +369,20 @@ how-translation = (es trasllada)
 fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy i perpendiculars a rodes i ranures).
 fig-assur = El punt d’Assur { $point }: les rectes { $l1 } i { $l3 } (a traços) perllongades fins que es tallen; { $point } es pren com a punt de la barra ternària.
 fig-drawn_at = Dibuixat amb { $values }.
-fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt (blau) acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, les velocitats relatives de les equacions anteriors (negre), l’una darrere l’altra.
-fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt (blau) acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors (negre: normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
+fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt{ $format ->
+        [md] {""}
+       *[other] {" "}(blau)
+    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, les velocitats relatives de les equacions anteriors{ $format ->
+        [md] {""}
+       *[other] {" "}(negre)
+    }, l’una darrere l’altra.
+fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
+        [md] {""}
+       *[other] {" "}(blau)
+    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors ({ $format ->
+        [md] {""}
+       *[other] negre:{" "}
+    }normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
 col-number = núm.
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -399,8 +426,20 @@ contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }, que és fix, no es mou: { $sym } = 0.
-fig-step_v = Polígon de velocitats d’aquest pas, a escala: des del pol o, la velocitat de cada punt (blau) acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas (negre), l’un darrere l’altre.
-fig-step_a = Polígon d’acceleracions d’aquest pas, a escala: des del pol o, l’acceleració de cada punt (blau) acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas (negre), l’un darrere l’altre.
+fig-step_v = Polígon de velocitats d’aquest pas, a escala: des del pol o, la velocitat de cada punt{ $format ->
+        [md] {""}
+       *[other] {" "}(blau)
+    } acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas{ $format ->
+        [md] {""}
+       *[other] {" "}(negre)
+    }, l’un darrere l’altre.
+fig-step_a = Polígon d’acceleracions d’aquest pas, a escala: des del pol o, l’acceleració de cada punt{ $format ->
+        [md] {""}
+       *[other] {" "}(blau)
+    } acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas{ $format ->
+        [md] {""}
+       *[other] {" "}(negre)
+    }, l’un darrere l’altre.
 col-point = punt
 col-what = què és
 note-text = Nota: { $text }

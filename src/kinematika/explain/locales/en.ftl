@@ -2,10 +2,10 @@
 ## renderer with symbols, values or other messages; keep them in every translation.
 
 sec-data = Data
-data-numeric = The numbers are the solver's. Units: lengths in { $unit } (as in the model), velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
+data-numeric = Units: lengths in { $unit }, velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
 data-planar = Planar motion: angular velocities and accelerations are signed, counter-clockwise positive.
 data-spatial = Angular velocities and accelerations are vectors (right-hand rule about their direction).
-data-symbolic = The data are symbols: every value is the solver's exact formula. Figures are drawn at sample values of the symbols.
+data-symbolic = The data are symbols, and every result is an exact formula in them. The figures are drawn at sample values of the symbols, given under each figure.
 sec-structure = Structure
 col-body = body
 col-points = points
@@ -45,20 +45,29 @@ joint-cylindrical = cylindrical
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
-    }; the blue arrows are the velocities of its points, to one scale, with their magnitudes; the bodies are numbered.
-fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points: known terms in black{ $unknown ->
-        [1] , terms found in this step in red
-       *[other] {""}
-    }{ $result ->
-        [1] , the result in blue
-       *[other] {""}
+    }; { $format ->
+        [md] the arrows
+       *[other] the blue arrows
+    } are the velocities of its points, to one scale, with their magnitudes; the bodies are numbered.
+fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
+        [md] , the terms head to tail
+       *[other] : known terms in black{ $unknown ->
+            [1] , terms found in this step in red
+           *[other] {""}
+        }{ $result ->
+            [1] , the result in blue
+           *[other] {""}
+        }
     }.
-fig-polygon_a = Acceleration polygon from the pole o, to scale, its vertices the images of the points: known terms in black{ $unknown ->
-        [1] , terms found in this step in red
-       *[other] {""}
-    }{ $result ->
-        [1] , the result in blue
-       *[other] {""}
+fig-polygon_a = Acceleration polygon from the pole o, to scale, its vertices the images of the points{ $format ->
+        [md] , the terms head to tail
+       *[other] : known terms in black{ $unknown ->
+            [1] , terms found in this step in red
+           *[other] {""}
+        }{ $result ->
+            [1] , the result in blue
+           *[other] {""}
+        }
     }.
 fig-sample = Drawn at sample values of the symbols.
 sec-position = Position
@@ -103,7 +112,10 @@ kind-other = group solved together
 step-title = Step { $n }: { $kind } — { $bodies }
 sec-velocities = Velocities
 sec-accelerations = Accelerations
-v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns; the terms found in the step are in red.
+v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
+        [md] : the terms marked ?, which the step finds
+       *[other] ; the terms found in the step are in red
+    }.
 a-intro = With the velocities known, every normal term and every Coriolis term is known; the tangential and relative terms are the unknowns.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
@@ -210,8 +222,20 @@ how-translation = (it translates)
 fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism, with the lines they are found on (dash-dot: Aronhold–Kennedy lines and the perpendiculars to wheels and slots).
 fig-assur = The Assur point { $point }: the lines { $l1 } and { $l3 } (dashed) drawn on until they meet; { $point } is taken as a point of the ternary link.
 fig-drawn_at = Drawn at { $values }.
-fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point (blue) ends at its image, lettered as the point (a for A); between the images, the relative velocities of the equations above (black), head to tail.
-fig-level_a = Acceleration polygon, to scale: from the pole o, the acceleration of each point (blue) ends at its image, lettered as the point (a for A); between the images, the terms of the equations above (black: normal and tangential, relative and Coriolis), head to tail.
+fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point{ $format ->
+        [md] {""}
+       *[other] {" "}(blue)
+    } ends at its image, lettered as the point (a for A); between the images, the relative velocities of the equations above{ $format ->
+        [md] {""}
+       *[other] {" "}(black)
+    }, head to tail.
+fig-level_a = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
+        [md] {""}
+       *[other] {" "}(blue)
+    } ends at its image, lettered as the point (a for A); between the images, the terms of the equations above ({ $format ->
+        [md] {""}
+       *[other] black:{" "}
+    }normal and tangential, relative and Coriolis), head to tail.
 col-number = no.
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -240,8 +264,20 @@ geom-foot = { $geom }, the geometric contact point of joint { $joint }, is the f
 contact-intro = At the contact { $point } of joint { $joint } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.
 contact-fixed = { $sym }: { $point } as a point of { $body }, which is fixed, does not move: { $sym } = 0.
-fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point (blue) ends at its image, lettered as the point; between the images, the terms of this step’s equations (black), head to tail.
-fig-step_a = Acceleration polygon of this step, to scale: from the pole o, the acceleration of each point (blue) ends at its image, lettered as the point; between the images, the terms of this step’s equations (black), head to tail.
+fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point{ $format ->
+        [md] {""}
+       *[other] {" "}(blue)
+    } ends at its image, lettered as the point; between the images, the terms of this step’s equations{ $format ->
+        [md] {""}
+       *[other] {" "}(black)
+    }, head to tail.
+fig-step_a = Acceleration polygon of this step, to scale: from the pole o, the acceleration of each point{ $format ->
+        [md] {""}
+       *[other] {" "}(blue)
+    } ends at its image, lettered as the point; between the images, the terms of this step’s equations{ $format ->
+        [md] {""}
+       *[other] {" "}(black)
+    }, head to tail.
 col-point = point
 col-what = what it is
 note-text = Note: { $text }

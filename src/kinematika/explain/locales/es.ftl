@@ -2,10 +2,10 @@
 ## aceleración, arrastre, relativa, CIR). Conservar los marcadores entre llaves.
 
 sec-data = Datos
-data-numeric = Los números son los del resolvedor. Unidades: longitudes en { $unit } (las del modelo), velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
+data-numeric = Unidades: longitudes en { $unit }, velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
 data-planar = Movimiento plano: las velocidades y aceleraciones angulares llevan signo, positivas en sentido antihorario.
 data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
-data-symbolic = Los datos son símbolos: cada valor es la fórmula exacta del resolvedor. Las figuras se dibujan con valores de muestra de los símbolos.
+data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
 sec-structure = Estructura
 col-body = sólido
 col-points = puntos
@@ -45,20 +45,29 @@ joint-cylindrical = cilíndrico
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
-    }; las flechas azules son las velocidades de sus puntos, a una misma escala, con sus módulos; los sólidos están numerados.
-fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos: en negro los términos conocidos{ $unknown ->
-        [1] , en rojo los hallados en este paso
-       *[other] {""}
-    }{ $result ->
-        [1] , en azul el resultado
-       *[other] {""}
+    }; { $format ->
+        [md] las flechas
+       *[other] las flechas azules
+    } son las velocidades de sus puntos, a una misma escala, con sus módulos; los sólidos están numerados.
+fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
+        [md] , los términos uno tras otro
+       *[other] : en negro los términos conocidos{ $unknown ->
+            [1] , en rojo los hallados en este paso
+           *[other] {""}
+        }{ $result ->
+            [1] , en azul el resultado
+           *[other] {""}
+        }
     }.
-fig-polygon_a = Polígono de aceleraciones desde el polo o, a escala, con los vértices imágenes de los puntos: en negro los términos conocidos{ $unknown ->
-        [1] , en rojo los hallados en este paso
-       *[other] {""}
-    }{ $result ->
-        [1] , en azul el resultado
-       *[other] {""}
+fig-polygon_a = Polígono de aceleraciones desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
+        [md] , los términos uno tras otro
+       *[other] : en negro los términos conocidos{ $unknown ->
+            [1] , en rojo los hallados en este paso
+           *[other] {""}
+        }{ $result ->
+            [1] , en azul el resultado
+           *[other] {""}
+        }
     }.
 fig-sample = Dibujado con valores de muestra de los símbolos.
 sec-position = Posición
@@ -103,7 +112,10 @@ kind-other = grupo resuelto en conjunto
 step-title = Paso { $n }: { $kind } — { $bodies }
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
-v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas; en rojo, los términos hallados en el paso.
+v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas{ $format ->
+        [md] : los términos marcados con ?, que halla el paso
+       *[other] ; en rojo, los términos hallados en el paso
+    }.
 a-intro = Conocidas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
@@ -210,8 +222,20 @@ how-translation = (se traslada)
 fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo, con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy y perpendiculares a ruedas y ranuras).
 fig-assur = El punto de Assur { $point }: las rectas { $l1 } y { $l3 } (a trazos) prolongadas hasta cortarse; { $point } se toma como punto del eslabón ternario.
 fig-drawn_at = Dibujado con { $values }.
-fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto (azul) acaba en su imagen, con la letra del punto (a para A); entre las imágenes, las velocidades relativas de las ecuaciones anteriores (negro), una tras otra.
-fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto (azul) acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores (negro: normales y tangenciales, relativos y de Coriolis), uno tras otro.
+fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto{ $format ->
+        [md] {""}
+       *[other] {" "}(azul)
+    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, las velocidades relativas de las ecuaciones anteriores{ $format ->
+        [md] {""}
+       *[other] {" "}(negro)
+    }, una tras otra.
+fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
+        [md] {""}
+       *[other] {" "}(azul)
+    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+        [md] {""}
+       *[other] negro:{" "}
+    }normales y tangenciales, relativos y de Coriolis), uno tras otro.
 col-number = n.º
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -240,8 +264,20 @@ geom-foot = { $geom }, el punto geométrico de contacto del par { $joint }, es e
 contact-intro = En el contacto { $point } del par { $joint } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
 contact-fixed = { $sym }: { $point } como punto de { $body }, que es fijo, no se mueve: { $sym } = 0.
-fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto (azul) acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso (negro), uno tras otro.
-fig-step_a = Polígono de aceleraciones de este paso, a escala: desde el polo o, la aceleración de cada punto (azul) acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso (negro), uno tras otro.
+fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto{ $format ->
+        [md] {""}
+       *[other] {" "}(azul)
+    } acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso{ $format ->
+        [md] {""}
+       *[other] {" "}(negro)
+    }, uno tras otro.
+fig-step_a = Polígono de aceleraciones de este paso, a escala: desde el polo o, la aceleración de cada punto{ $format ->
+        [md] {""}
+       *[other] {" "}(azul)
+    } acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso{ $format ->
+        [md] {""}
+       *[other] {" "}(negro)
+    }, uno tras otro.
 col-point = punto
 col-what = qué es
 note-text = Nota: { $text }

@@ -2,10 +2,10 @@
 ## azelerazioa, arrastrea, erlatiboa). Giltza arteko markak bere horretan utzi.
 
 sec-data = Datuak
-data-numeric = Zenbakiak ebazleak emandakoak dira. Unitateak: luzerak { $unit }-tan (ereduarenak), abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
+data-numeric = Unitateak: luzerak { $unit }-tan, abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
 data-planar = Mugimendu laua: abiadura eta azelerazio angeluarrek zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
 data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
-data-symbolic = Datuak ikurrak dira: balio bakoitza ebazlearen formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude.
+data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
 sec-structure = Egitura
 col-body = solidoa
 col-points = puntuak
@@ -45,20 +45,29 @@ joint-cylindrical = zilindrikoa
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
-    }; gezi urdinak haren puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
-fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik: beltzez termino ezagunak{ $unknown ->
-        [1] , gorriz urrats honetan aurkitutakoak
-       *[other] {""}
-    }{ $result ->
-        [1] , urdinez emaitza
-       *[other] {""}
+    }; { $format ->
+        [md] geziak
+       *[other] gezi urdinak
+    } haren puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
+fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
+        [md] , terminoak bata bestearen ondoren
+       *[other] : beltzez termino ezagunak{ $unknown ->
+            [1] , gorriz urrats honetan aurkitutakoak
+           *[other] {""}
+        }{ $result ->
+            [1] , urdinez emaitza
+           *[other] {""}
+        }
     }.
-fig-polygon_a = Azelerazioen poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik: beltzez termino ezagunak{ $unknown ->
-        [1] , gorriz urrats honetan aurkitutakoak
-       *[other] {""}
-    }{ $result ->
-        [1] , urdinez emaitza
-       *[other] {""}
+fig-polygon_a = Azelerazioen poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
+        [md] , terminoak bata bestearen ondoren
+       *[other] : beltzez termino ezagunak{ $unknown ->
+            [1] , gorriz urrats honetan aurkitutakoak
+           *[other] {""}
+        }{ $result ->
+            [1] , urdinez emaitza
+           *[other] {""}
+        }
     }.
 fig-sample = Ikurren lagin-balioekin marraztua.
 sec-position = Posizioa
@@ -106,7 +115,10 @@ kind-other = batera ebatzitako taldea
 step-title = { $n }. urratsa: { $kind } — { $bodies }
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
-v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu; gorriz, urratsean aurkitutako terminoak.
+v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
+        [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
+       *[other] ; gorriz, urratsean aurkitutako terminoak
+    }.
 a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
@@ -213,8 +225,20 @@ how-translation = (traslatzen da)
 fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak eta gurpilen eta arteken perpendikularrak).
 fig-assur = { $point } Assur puntua: { $l1 } eta { $l3 } zuzenak (marra etenez) ebaki arte luzatuta; { $point } barra hirutarraren puntutzat hartzen da.
 fig-drawn_at = Balio hauekin marraztua: { $values }.
-fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura (urdinez) haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen abiadura erlatiboak (beltzez), bata bestearen ondoren.
-fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa (urdinez) haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak (beltzez: normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
+fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
+        [md] {""}
+       *[other] {" "}(urdinez)
+    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen abiadura erlatiboak{ $format ->
+        [md] {""}
+       *[other] {" "}(beltzez)
+    }, bata bestearen ondoren.
+fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
+        [md] {""}
+       *[other] {" "}(urdinez)
+    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak ({ $format ->
+        [md] {""}
+       *[other] beltzez:{" "}
+    }normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
 col-number = zk.
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -243,8 +267,20 @@ geom-foot = { $geom }, { $joint } loturaren kontaktu-puntu geometrikoa, { $centr
 contact-intro = { $joint } loturaren { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen, solidoa finkoa baita: { $sym } = 0.
-fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura (urdina) haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak (beltza), bata bestearen atzetik.
-fig-step_a = Urrats honetako azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa (urdina) haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak (beltza), bata bestearen atzetik.
+fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
+        [md] {""}
+       *[other] {" "}(urdina)
+    } haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak{ $format ->
+        [md] {""}
+       *[other] {" "}(beltza)
+    }, bata bestearen atzetik.
+fig-step_a = Urrats honetako azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
+        [md] {""}
+       *[other] {" "}(urdina)
+    } haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak{ $format ->
+        [md] {""}
+       *[other] {" "}(beltza)
+    }, bata bestearen atzetik.
 col-point = puntua
 col-what = zer den
 note-text = Oharra: { $text }

@@ -131,6 +131,7 @@ class Renderer:
             rendered.append(self.arg(x))
             values.append(x)
             args[name] = slot
+        args.setdefault("format", self.fmt)     # plain text (md) names no colours
         parts = TOKEN_RE.split(self.cat.format(m.key, args))
         if lead and parts[0][:1].islower():
             parts[0] = parts[0][0].upper() + parts[0][1:]

@@ -1,0 +1,43 @@
+"""Explanations a teacher hands out as they are (issue 30): the notes' worked examples, in
+every language, speak of mechanics and not of the program, name no colour where the text
+is plain (Markdown), state every datum in their Data section and derive every asked
+quantity by an equation before the answers."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from kinematika.explain import render
+from kinematika.explain.catalogue import LANGS
+
+from .helpers import WORKED, explained
+from .test_text import plain_text
+
+# the program, as a student must never read it: the solver, in the four languages
+SOLVER = re.compile(r"(?i)\b(solver|resolutor|resolvedor|solucionador|ebazle\w*|programa|program)\b")
+# colours, which plain text (Markdown) does not show
+COLOURS = re.compile(r"(?i)\b(red|blue|black|green|grey|gray|rojo|roja|azul|azules|negro|verde|vermell|"
+                     r"blau|blava|blaves|blaus|negre|verd|gorri\w*|urdin\w*|beltz\w*|berde\w*)\b")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", WORKED)
+def test_no_explanation_mentions_the_solver(name, lang):
+    _, doc = explained(name)
+    for fmt in ("md", "html"):
+        text = plain_text(render(doc, lang, fmt, drawings=False), fmt)
+        found = SOLVER.search(text)
+        assert found is None, (name, lang, fmt, text[max(0, found.start() - 80):found.end() + 40])
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", WORKED)
+def test_no_markdown_mentions_colours(name, lang, monkeypatch):
+    from kinematika.explain.document import Drawing
+
+    monkeypatch.setattr(Drawing, "svg", lambda self, lang: "<svg/>")     # the captions, not the drawings
+    _, doc = explained(name)
+    text = plain_text(render(doc, lang, "md", drawings=True), "md")
+    found = COLOURS.search(text)
+    assert found is None, (name, lang, text[max(0, found.start() - 80):found.end() + 40])
