@@ -41,3 +41,21 @@ def test_no_markdown_mentions_colours(name, lang, monkeypatch):
     text = plain_text(render(doc, lang, "md", drawings=True), "md")
     found = COLOURS.search(text)
     assert found is None, (name, lang, text[max(0, found.start() - 80):found.end() + 40])
+
+
+@pytest.mark.parametrize("name,lang,wrong,right", [
+    ("seed_c5_e1_cavity", "ca", "*rodes* rodola", "*rodes* rodolen"),
+    ("seed_c5_e1_cavity", "es", "*ruedas* rueda ", "*ruedas* ruedan"),
+])
+def test_a_verb_agrees_with_a_plural_body(name, lang, wrong, right):
+    """Catalan and Spanish: a plural body's name (les rodes) takes a plural verb."""
+    _, doc = explained(name)
+    text = render(doc, lang, "md", drawings=False)
+    assert wrong not in text and right in text
+
+
+def test_count_reads_plural_names():
+    from kinematika.explain.catalogue import count
+
+    assert [count(n) for n in ("les rodes", "el plat i els pedals", "la roda", "el portador", "los dientes",
+                               "las aspas", "el bloc")] == ["many", "many", "one", "one", "many", "many", "one"]

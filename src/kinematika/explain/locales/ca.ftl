@@ -159,8 +159,14 @@ driver-joint = Dada: la velocitat angular relativa a l’articulació { $joint }
 driver-joint_accel = Dada: l’acceleració angular relativa a l’articulació { $joint } és { $value }.
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
-input-revolute = { $body } gira al voltant del punt fix { $point }: els seus punts descriuen circumferències centrades a { $point }.
-input-prismatic = { $body } es trasllada sense girar al llarg de la guia de l’enllaç { $joint }.
+input-revolute = { $body } { COUNT($body) ->
+        [many] giren
+       *[one] gira
+    } al voltant del punt fix { $point }: els seus punts descriuen circumferències centrades a { $point }.
+input-prismatic = { $body } { COUNT($body) ->
+        [many] es traslladen
+       *[one] es trasllada
+    } sense girar al llarg de la guia de l’enllaç { $joint }.
 other-intro = Aquests sòlids es troben alhora a partir de les condicions dels seus enllaços:
 cond-revolute = enllaç { $joint }, articulació a { $point }: { $point } és un punt { ELISION($a) ->
         [vowel] d’{ $a }
@@ -169,7 +175,10 @@ cond-revolute = enllaç { $joint }, articulació a { $point }: { $point } és un
         [vowel] d’{ $b }
        *[other] de { $b }
     }.
-cond-prismatic = enllaç { $joint }, prismàtic: { $b } llisca sobre { $a } sense girar respecte { ELISION($a) ->
+cond-prismatic = enllaç { $joint }, prismàtic: { $b } { COUNT($b) ->
+        [many] llisquen
+       *[one] llisca
+    } sobre { $a } sense girar respecte { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     }.
@@ -186,11 +195,17 @@ cond-spherical = enllaç { $joint }, ròtula a { $point }: { $point } és un pun
         [vowel] d’{ $b }
        *[other] de { $b }
     }.
-cond-cylindrical = enllaç { $joint }, cilíndric: { $b } gira al voltant de l’eix { ELISION($a) ->
+cond-cylindrical = enllaç { $joint }, cilíndric: { $b } { COUNT($b) ->
+        [many] giren
+       *[one] gira
+    } al voltant de l’eix { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } i hi llisca.
-rolling-noslip = enllaç { $joint }: { $b } rodola sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
+rolling-noslip = enllaç { $joint }: { $b } { COUNT($b) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
 rolling-kept = enllaç { $joint }: el contacte es manté: a { $point } les acceleracions dels punts materials { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }

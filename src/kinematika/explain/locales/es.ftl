@@ -123,17 +123,32 @@ driver-joint = Dato: la velocidad angular relativa en el par { $joint } es { $va
 driver-joint_accel = Dato: la aceleración angular relativa en el par { $joint } es { $value }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
-input-revolute = { $body } gira alrededor del punto fijo { $point }: sus puntos describen circunferencias centradas en { $point }.
-input-prismatic = { $body } se traslada sin girar a lo largo de la guía del par { $joint }.
+input-revolute = { $body } { COUNT($body) ->
+        [many] giran
+       *[one] gira
+    } alrededor del punto fijo { $point }: sus puntos describen circunferencias centradas en { $point }.
+input-prismatic = { $body } { COUNT($body) ->
+        [many] se trasladan
+       *[one] se traslada
+    } sin girar a lo largo de la guía del par { $joint }.
 other-intro = Estos sólidos se hallan a la vez a partir de las condiciones de sus pares:
 cond-revolute = par { $joint }, de rotación en { $point }: { $point } es un punto de { $a } y de { $b }.
-cond-prismatic = par { $joint }, prismático: { $b } se desliza sobre { $a } sin girar respecto de él.
+cond-prismatic = par { $joint }, prismático: { $b } { COUNT($b) ->
+        [many] se deslizan
+       *[one] se desliza
+    } sobre { $a } sin girar respecto de él.
 cond-slot = par { $joint }, pasador { $point } en ranura: su velocidad relativa al sólido ranurado sigue la ranura.
 cond-wheel = par { $joint }, rueda en { $point }: sin velocidad lateral respecto de { $a }.
 cond-weld = par { $joint }: { $a } y { $b } se mueven como un solo sólido.
 cond-spherical = par { $joint }, esférico en { $point }: { $point } es un punto de { $a } y de { $b }.
-cond-cylindrical = par { $joint }, cilíndrico: { $b } gira alrededor del eje de { $a } y se desliza a lo largo de él.
-rolling-noslip = par { $joint }: { $b } rueda sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
+cond-cylindrical = par { $joint }, cilíndrico: { $b } { COUNT($b) ->
+        [many] giran
+       *[one] gira
+    } alrededor del eje de { $a } y se desliza a lo largo de él.
+rolling-noslip = par { $joint }: { $b } { COUNT($b) ->
+        [many] ruedan
+       *[one] rueda
+    } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
 rolling-kept = par { $joint }: el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
 dir-guide = guía { $joint }
 dir-normal = normal

@@ -28,6 +28,7 @@ class Slot(str):
     variable's markup; `plain` is its text, for the catalogue's grammar (elision)."""
 
     plain: str = ""
+    n_names: int = 1            # how many names it holds (a verb after a list is plural)
 
 
 def plain(x: Any) -> str:
@@ -128,6 +129,7 @@ class Renderer:
                 args[f"{name}_n"] = len(x)
             slot = Slot(TOKEN.format(len(rendered)))
             slot.plain = self.plain(x)
+            slot.n_names = len(x) if isinstance(x, Names) else 1
             rendered.append(self.arg(x))
             values.append(x)
             args[name] = slot
