@@ -66,10 +66,8 @@ def _simplified(ctx: Ctx, x: Any) -> Any:
 
 
 def _rho(ctx: Ctx, body: str) -> Sym:
-    """ρ of a body's circle, by the body's number as the notes and figures number bodies."""
-    from ..draw.names import body_numbers
-
-    return Sym("ρ", str(body_numbers(ctx.model)[body]), vector=False, fixed=True)
+    """ρ of a body's circle, by the body's label as the notes and figures write bodies."""
+    return Sym("ρ", body, vector=False, of_body=True)
 
 
 # Willis -------------------------------------------------------------------------------------

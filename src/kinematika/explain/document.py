@@ -27,6 +27,7 @@ class Sym:
     vector: bool = True
     sub_key: str = ""
     fixed: bool = False            # written as given (a model's notation): no body numbers
+    of_body: bool = False          # the subscript is a body's name (ρ of a wheel): written by its label
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,7 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model, sol = ctx.model, ctx.sol
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
-    bodies = [[str(numbers[name]), msg("structure.frame", body=Name(name, "body", bare=True)) if name == ctx.frame
+    bodies = [[Name(name, "index"), msg("structure.frame", body=Name(name, "body", bare=True)) if name == ctx.frame
                else Name(name, "body", bare=True),
                [point(p) for p in b.points],
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]

@@ -227,6 +227,8 @@ class Renderer:
             return self.wording.joint(n.text, self.lang)
         if n.kind == "point" and "∈" in n.text:          # O∈wheels as the symbols write it: O∈3
             return self.numbered(Sym("", n.text))
+        if n.kind == "index":                            # a body's label in the structure's table
+            return self.labels().get(n.text, n.text)
         return n.text
 
     def articled(self, n: Name) -> tuple[str, str]:
@@ -266,23 +268,32 @@ class Renderer:
                     + self.sym(Sym("ω", f"{body}/{parent}", vector=s.vector)))
         return self.symbol(self.noted(s))
 
+    def labels(self) -> dict[str, str]:
+        """Each body as the symbols write it: the index the model's notation gives it in this
+        language (ω_N, ω_1 for wheel 1), else its number (ω_3), as the figures write it."""
+        if not hasattr(self, "_labels"):
+            self._labels = {b: self.wording.index(b, self.lang) or str(k) for b, k in self.doc.numbers.items()}
+        return self._labels
+
     def numbered(self, s: Sym) -> str:
-        """A symbol's subscript with its bodies by number, as the notes and the figures write
-        them: ω_3, ω_3/2, v_B∈3, v_A∈2/3, a_J∈3/1, I_13 (I_2,11 past nine bodies)."""
-        nums = self.doc.numbers
+        """A symbol's subscript with its bodies by their labels (`labels`), as the notes and the
+        figures write them: ω_3, ω_3/2, v_B∈3, v_A∈2/3, a_J∈3/1, I_13 (I_2,11 once a label has
+        two characters)."""
+        nums, labels = self.doc.numbers, self.labels()
         if not nums or not s.sub or s.fixed:
             return s.sub
-        if s.base in BODY_SUBS:
+        if s.base in BODY_SUBS or s.of_body:
             sep = "," if s.base in ("I", "ω×ω") else "/"
             parts = s.sub.split(sep)
             if not all(p in nums for p in parts):
                 return s.sub
             if s.base == "I":
-                ks = sorted(nums[p] for p in parts)
-                return "".join(map(str, ks)) if max(nums.values()) < 10 else ",".join(map(str, ks))
-            return sep.join(str(nums[p]) for p in parts)
+                ks = sorted(parts, key=nums.get)
+                one = all(len(t) == 1 for t in labels.values())
+                return ("" if one else ",").join(labels[k] for k in ks)
+            return sep.join(labels[p] for p in parts)
         head, *rest = re.split(r"([∈/])", s.sub)
-        return head + "".join(str(nums.get(t, t)) if i % 2 else t for i, t in enumerate(rest))
+        return head + "".join(labels.get(t, t) if i % 2 else t for i, t in enumerate(rest))
 
     def caption(self, fig: Figure) -> str:
         """A figure's caption, saying the numbers a symbolic model is drawn at (or that it is
