@@ -59,3 +59,63 @@ def test_count_reads_plural_names():
 
     assert [count(n) for n in ("les rodes", "el plat i els pedals", "la roda", "el portador", "los dientes",
                                "las aspas", "el bloc")] == ["many", "many", "one", "one", "many", "many", "one"]
+
+
+def _data_text(doc, lang: str = "en") -> str:
+    """The Data section as a reader reads it (Markdown), up to the next section."""
+    text = render(doc, lang, "md", drawings=False)
+    start = text.index("\n## ")
+    return text[start:text.index("\n## ", start + 1)]
+
+
+def _number(x: float) -> str:
+    """A number as the explanation writes it in English: at most four significant digits."""
+    return f"{float(x):.4g}".replace("-", "−")
+
+
+@pytest.mark.parametrize("name", WORKED)
+def test_every_datum_is_stated_in_the_data_section(name):
+    """Read off the model file itself (not the explanation's code): every numeric parameter's
+    value, every point given by plain numbers, every driver's value and every circle's
+    radius appears in the Data section, with its unit where it has one; a parameter left a
+    symbol appears as its symbol."""
+    import yaml
+
+    from kinematika.explain.render.names import unicode_name
+
+    from .helpers import EXAMPLES
+
+    raw = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8"))
+    sol, doc = explained(name)
+    data = _data_text(doc)
+    notation = raw.get("notation") or {}
+    for pname, value in (raw.get("parameters") or {}).items():
+        if value is None:
+            spelt = notation.get(pname, pname)
+            spelt = spelt if isinstance(spelt, str) else spelt.get("en", pname)
+            assert unicode_name(spelt) in data, (name, pname)
+        elif isinstance(value, (int, float)):
+            assert _number(value) in data, (name, pname, value)
+        elif isinstance(value, str) and value.startswith("deg("):
+            assert _number(float(value[4:-1])) + "°" in data, (name, pname, value)
+    for pname, where in raw["points"].items():
+        if isinstance(where, list) and all(isinstance(c, (int, float)) for c in where):
+            written = "(" + ", ".join(_number(c) for c in where) + ")"
+            assert f"| {pname} |" in data and written in data, (name, pname, written)
+    for d in raw.get("drivers") or []:
+        for key in ("value", "alpha", "acceleration"):
+            given = d.get(key)
+            if isinstance(given, (int, float)):
+                assert _number(given) in data, (name, d, key)
+    for body, spec in raw["bodies"].items():
+        circle = spec.get("circle") if isinstance(spec, dict) else None
+        if circle is not None:
+            radius = circle["radius"]
+            if isinstance(radius, (int, float)):
+                shown = _number(radius) + " m"
+            elif radius in (raw.get("parameters") or {}):
+                spelt = notation.get(radius, radius)
+                shown = unicode_name(spelt if isinstance(spelt, str) else spelt.get("en", radius))
+            else:
+                shown = str(radius).replace("*", "·")
+            assert shown in data, (name, body, shown)

@@ -14,6 +14,7 @@ from .checks import checks_section
 from .contacts import contact_section
 from .centres import centres_section
 from .context import Ctx
+from .data import data_section
 from .document import Ann, Document, Equation, Section, msg
 from .group import refine
 from .order import solution_order
@@ -33,10 +34,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
     levels: list[Section] = []
     doc = Document(sol.model.name, sol.symbolic, sol.space.dim, length_unit,
                    numbers=body_numbers(sol.model), wording=sol.model.wording)
-    intro = Section(msg("sec.data"))
-    intro.add(msg("data.symbolic" if sol.symbolic else "data.numeric", unit=length_unit))
-    intro.add(msg("data.planar" if sol.space.dim == 2 else "data.spatial"))
-    doc.sections.append(intro)
+    doc.sections.append(data_section(ctx, length_unit, accel))
     if ctx.planar:
         steps = refine(ctx, solution_order(sol))
         doc.sections.append(structure_section(ctx, steps))

@@ -404,9 +404,11 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
     given = d.accel if level == "a" else d.value
     inst, where = ctx.inst, d.where
     if d.kind == "omega":
-        sym = omega_sym(d.body, d.relative_to) if level == "v" else alpha_sym(d.body, d.relative_to)
+        vector = isinstance(given, tuple)           # a spatial rate: a vector
+        sym = (omega_sym if level == "v" else alpha_sym)(d.body, d.relative_to, vector=vector)
         unit = "rate" if level == "v" else "rate2"
-        return msg("driver.omega", sym=sym, value=Value(ctx.clean(inst.value(given, where), unit), unit))
+        value = inst.vector(given, where) if vector else inst.value(given, where)
+        return msg("driver.omega", sym=sym, value=Value(ctx.clean(value, unit), unit))
     if d.kind == "joint":
         turning = turns(ctx.model.joint(d.joint))
         unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")

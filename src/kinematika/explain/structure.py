@@ -6,7 +6,7 @@ from __future__ import annotations
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
-from .document import Arrow, Drawing, Figure, Inline, Name, Section, Table, Told, Value, body, joint, msg, names, point
+from .document import Arrow, Drawing, Figure, Inline, Name, Section, Table, Value, body, joint, msg, names, point
 from .order import Step
 
 
@@ -26,7 +26,6 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
     joints = [[joint(j.id), msg(f"joint.{j.kind.name}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]
-    sec.add(Told("points", list(model.points)))
     sec.add(Table([msg("col.joint"), msg("col.type"), msg("col.bodies"), msg("col.where")], joints))
     d = sol.diagnosis
     sec.add(msg("structure.dof", n=d.n, moving=len(model.moving_bodies), rank=d.n - d.dof, dof=d.dof,

@@ -13,7 +13,7 @@ from ...text import shown
 from ...model.wording import ARTICLES, NO_ARTICLE, part_subscript
 from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Msg, Name, Names,
-                        Section, Sym, Table, Told, Value)
+                        Said, Section, Sym, Table, Told, Value)
 from .svg import Text, plain_text, sym_text
 
 TOKEN = "\ue000{}\ue001"
@@ -171,6 +171,8 @@ class Renderer:
             if not rows:
                 return ""
             return self.table([self.message(Msg("col.point")), self.message(Msg("col.what"))], rows)
+        if t.kind == "data":
+            return "\n".join(self.para(self.esc(visible(n))) for n in self.wording.data.get(self.lang, []))
         notes = self.wording.notes.get(self.lang, [])
         return "\n".join(self.para(self.message(Msg("note.text", {"text": n}))) for n in notes)
 
@@ -200,6 +202,9 @@ class Renderer:
             return self.message(x)
         if isinstance(x, Inline):
             return self.inline(x.items)
+        if isinstance(x, Said):
+            said = self.wording.point if x.kind == "point" else self.wording.parameter
+            return self.esc(visible(said(x.name, self.lang)))
         if isinstance(x, (list, tuple)):
             return ", ".join(self.arg(i) for i in x)
         return self.esc(str(x))
