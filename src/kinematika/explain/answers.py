@@ -9,7 +9,7 @@ from ..questions import answer
 from ..questions.curvature import intrinsic
 from .context import Ctx, alpha_sym, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Told, Value, msg
-from .terms import KNOWN
+from .terms import KNOWN, relative_name
 
 UNITS = {"velocity": "speed", "acceleration": "accel", "omega": "rate", "alpha": "rate2",
          "drag": None, "relative": None, "coriolis": None, "total": None, "point": "len",
@@ -51,9 +51,9 @@ def _label(ctx: Ctx, ref: PointRef) -> str:
 def question_label(ctx: Ctx, q) -> Any:
     """The asked quantity as a symbol, or a sentence for the compound questions."""
     rel = ctx.rel(q.relative_to)
-    tail = f"/{rel}" if rel else ""
     if q.kind in ("velocity", "acceleration"):
-        return Sym(q.kind[0], _label(ctx, _ref(ctx, q)) + tail)
+        ref = _ref(ctx, q)
+        return Sym(q.kind[0], relative_name(ref.point, ref.body, rel) if rel else _label(ctx, ref))
     if q.kind == "omega":
         return omega_sym(q.target, rel, vector=not ctx.planar)
     if q.kind == "alpha":

@@ -4,6 +4,7 @@
 sec-data = Dades
 data-numeric = Unitats: longituds en { $unit }, velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
 data-planar = Moviment pla: les velocitats i acceleracions angulars tenen signe, positives en sentit antihorari.
+data-relative = Una magnitud relativa anomena els dos sòlids: { $v } és la velocitat del punt { $point } del sòlid { $b } vista des del sòlid { $a }, i { $w } la velocitat angular de { $b } respecte de { $a }.
 data-spatial = Les velocitats i acceleracions angulars són vectors (regla de la mà dreta al voltant de la seva direcció).
 data-symbolic = Les dades són símbols, i cada resultat és una fórmula exacta en funció d’aquests. Les figures es dibuixen amb valors de mostra dels símbols, indicats sota cada figura.
 data-motion = El moviment donat:
@@ -271,7 +272,17 @@ composition-point = Punt { $point } { ELISION($body) ->
        *[other] de { $body }
     }, referència mòbil { $frame }:
 composition-drag = Arrossegament: el moviment del punt de la referència mòbil on és el punt:
-composition-relative = Relatiu: el moviment vist des de la referència mòbil:
+composition-relative = Relatiu: el moviment vist des de la referència mòbil, { $sym } = { $rel }:
+composition-rolls = { $body } { COUNT($body) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre { $frame } a { $point }: vist des { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }, { $point } és el CIR { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }, { $sym } = 0, i tots els seus punts giren al voltant d’aquest punt.
 sec-curvature = Curvatura de les trajectòries
 curvature-intro = L’acceleració es descompon en una part tangencial, segons la velocitat, i una de normal, perpendicular a ella; el radi de curvatura és { $rho }.
 curvature-point = Punt { $point }: velocitat { $v }.

@@ -4,6 +4,7 @@
 sec-data = Data
 data-numeric = Units: lengths in { $unit }, velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
 data-planar = Planar motion: angular velocities and accelerations are signed, counter-clockwise positive.
+data-relative = A relative quantity names both bodies: { $v } is the velocity of the point { $point } of body { $b } seen from body { $a }, and { $w } the angular velocity of { $b } relative to { $a }.
 data-spatial = Angular velocities and accelerations are vectors (right-hand rule about their direction).
 data-symbolic = The data are symbols, and every result is an exact formula in them. The figures are drawn at sample values of the symbols, given under each figure.
 data-motion = The given motion:
@@ -178,7 +179,8 @@ sec-composition = Composition of motions
 composition-intro = The motion of a point is its drag motion (that of the point of the moving frame where it is) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
 composition-point = Point { $point } of { $body }, moving frame { $frame }:
 composition-drag = Drag: the motion of the point of the moving frame where the point is:
-composition-relative = Relative: the motion seen from the moving frame:
+composition-relative = Relative: the motion seen from the moving frame, { $sym } = { $rel }:
+composition-rolls = { $body } rolls on { $frame } without slipping at { $point }: seen from { $frame }, { $point } is the instant centre of { $body }, { $sym } = 0, and every point of { $body } turns about it.
 sec-curvature = Curvature of paths
 curvature-intro = The acceleration splits into a tangential part along the velocity and a normal part across it; the radius of curvature is { $rho }.
 curvature-point = Point { $point }: velocity { $v }.

@@ -4,6 +4,7 @@
 sec-data = Datos
 data-numeric = Unidades: longitudes en { $unit }, velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
 data-planar = Movimiento plano: las velocidades y aceleraciones angulares llevan signo, positivas en sentido antihorario.
+data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } del sólido { $b } vista desde el sólido { $a }, y { $w } la velocidad angular de { $b } respecto de { $a }.
 data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
 data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
 data-motion = El movimiento dado:
@@ -193,7 +194,11 @@ sec-composition = Composición de movimientos
 composition-intro = El movimiento de un punto es el de arrastre (el del punto de la referencia móvil donde está) más el relativo a esa referencia, más, en aceleraciones, el término de Coriolis { $cor }.
 composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
 composition-drag = Arrastre: el movimiento del punto de la referencia móvil donde está el punto:
-composition-relative = Relativo: el movimiento visto desde la referencia móvil:
+composition-relative = Relativo: el movimiento visto desde la referencia móvil, { $sym } = { $rel }:
+composition-rolls = { $body } { COUNT($body) ->
+        [many] ruedan
+       *[one] rueda
+    } sin deslizar sobre { $frame } en { $point }: visto desde { $frame }, { $point } es el CIR de { $body }, { $sym } = 0, y todos sus puntos giran alrededor de él.
 sec-curvature = Curvatura de las trayectorias
 curvature-intro = La aceleración se descompone en una parte tangencial, según la velocidad, y una normal, perpendicular a ella; el radio de curvatura es { $rho }.
 curvature-point = Punto { $point }: velocidad { $v }.

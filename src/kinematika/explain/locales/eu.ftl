@@ -4,6 +4,7 @@
 sec-data = Datuak
 data-numeric = Unitateak: luzerak { $unit }-tan, abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
 data-planar = Mugimendu laua: abiadura eta azelerazio angeluarrek zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
+data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $b } solidoaren { $point } puntuaren abiadura da { $a } solidotik ikusita, eta { $w } { $b } solidoaren abiadura angeluarra { $a } solidoarekiko.
 data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
 data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
 data-motion = Emandako mugimendua:
@@ -181,7 +182,8 @@ sec-composition = Mugimenduen konposizioa
 composition-intro = Puntu baten mugimendua arrastre-mugimendua da (erreferentzia mugikorrean puntuarekin bat datorren puntuarena) gehi erreferentzia horrekiko mugimendu erlatiboa, gehi, azelerazioetan, Coriolisen terminoa { $cor }.
 composition-point = { $body } solidoaren { $point } puntua, { $frame } erreferentzia mugikorra:
 composition-drag = Arrastrea: erreferentzia mugikorrean puntuarekin bat datorren puntuaren mugimendua:
-composition-relative = Erlatiboa: erreferentzia mugikorretik ikusten den mugimendua:
+composition-relative = Erlatiboa: erreferentzia mugikorretik ikusten den mugimendua, { $sym } = { $rel }:
+composition-rolls = { $body } solidoa { $frame } solidoaren gainean errodatzen da irristatu gabe { $point } puntuan: { $frame } solidotik ikusita, { $point } da { $body } solidoaren biraketa-zentro instantaneoa, { $sym } = 0, eta haren puntu guztiek haren inguruan biratzen dute.
 sec-curvature = Ibilbideen kurbadura
 curvature-intro = Azelerazioa bi zatitan banatzen da: abiaduraren norabideko zati tangentziala eta harekiko perpendikularra den zati normala; kurbadura-erradioa { $rho } da.
 curvature-point = { $point } puntua: abiadura { $v }.

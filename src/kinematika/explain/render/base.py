@@ -135,14 +135,14 @@ class Renderer:
             args[name] = slot
         args.setdefault("format", self.fmt)     # plain text (md) names no colours
         parts = TOKEN_RE.split(self.cat.format(m.key, args))
+        out = [self.esc(p) if i % 2 == 0 else rendered[int(p)] for i, p in enumerate(parts)]
         if lead and parts[0][:1].islower():
-            parts[0] = parts[0][0].upper() + parts[0][1:]
+            out[0] = self.esc(parts[0][0].upper() + parts[0][1:])
         elif lead and parts[0] == "" and len(parts) > 1:
-            i = int(parts[1])
-            first = values[i]
+            first = values[int(parts[1])]
             if isinstance(first, Name) and first.kind == "body":    # eu: Besoa O puntu finkoaren …
-                rendered[i] = self.capital(rendered[i])
-        return self.contracted("".join(self.esc(p) if i % 2 == 0 else rendered[int(p)] for i, p in enumerate(parts)))
+                out[1] = self.capital(out[1])                        # there only, not where it recurs
+        return self.contracted("".join(out))
 
     def capital(self, markup: str) -> str:
         """`markup` with its first letter (past the format's leading tags) a capital."""
@@ -297,7 +297,7 @@ class Renderer:
                 one = all(len(t) == 1 for t in labels.values())
                 return ("" if one else ",").join(labels[k] for k in ks)
             return sep.join(labels[p] for p in parts)
-        head, *rest = re.split(r"([∈/])", s.sub)
+        head, *rest = re.split(r"([∈/,])", s.sub)
         return head + "".join(labels.get(t, t) if i % 2 else t for i, t in enumerate(rest))
 
     def caption(self, fig: Figure) -> str:

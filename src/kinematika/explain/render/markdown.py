@@ -15,6 +15,9 @@ from .unicode import unicode_formula
 MARKUP = re.compile(r"([\\`*_\[\]<>|])")       # what Markdown would read as markup
 
 
+COMPOUND = "/,-∈"          # a subscript with these holds more than one name
+
+
 class MarkdownRenderer(Renderer):
     """The explanation as Markdown, readable as plain text: equations as aligned code blocks,
     figures as SVG data URIs."""
@@ -42,8 +45,12 @@ class MarkdownRenderer(Renderer):
         return self.esc(article) + (f"*{text}*" if n.kind == "body" and not self.code else text)
 
     def symbol(self, s: Sym) -> str:
-        """A symbol in plain text: v_B, a_B^n."""
+        """A symbol in plain text: v_B, a_B^n; a subscript of more than one name in braces,
+        so that it cannot be read as a division or a difference: ω_{3/2}, v_{A∈3/2},
+        v_{rel,A}, v_{O2-A}."""
         sub = self.esc(self.sub_text(s)).replace("\\_", "_")
+        if any(c in sub for c in COMPOUND):
+            sub = "{" + sub + "}"
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
 
     def power(self, mantissa: str, exponent: int) -> str:
