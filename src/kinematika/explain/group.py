@@ -37,7 +37,8 @@ from .document import (Ann, Derived, Equation, Sym, Term, Value, body as body_na
                        point as point_name)
 from .order import jointed
 from .contacts import geometric_blocks
-from .kinds import crossed_by_a_slot, guided, knife_edge, pin_only, rolls, same_rate, slider, welds
+from .kinds import (crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls, same_rate,
+                    slider, welds)
 from .terms import contact_term, point_term, rotation_terms, slide_terms
 
 MAX_TURNS = 3           # rotations along one route at most
@@ -604,7 +605,7 @@ class Writer:
         if knife_edge(j):
             return [msg("group.wheel_v" if lv == "v" else "group.wheel_a", joint=joint_name(j.id),
                         point=point_name(j.at), body=body_name(j.b), w=omega_sym(j.b), v=Sym("v", self.label(s)))]
-        return [msg(f"cond.{j.kind.name}", joint=joint_name(j.id), a=body_name(j.a), b=body_name(j.b),
+        return [msg(f"cond.{kind_key(j, self.ctx.frame)}", joint=joint_name(j.id), a=body_name(j.a), b=body_name(j.b),
                     point=point_name(j.at or ""))]
 
     def site_terms(self, s: Site, p: Path, known: bool = False) -> list[Term]:
@@ -656,7 +657,9 @@ class Writer:
             return [contact_term(ctx, seg.p, seg.body, seg.frm)] if lv == "a" else []
         if guided(j):
             unknown = not known and not self.plan._driven(j) and j.id not in p.slides
-            return slide_terms(ctx, lv, seg.frm, seg.body, seg.p, msg("dir.guide", joint=joint_name(j.id)), j.id,
+            line = (Value(ctx.clean(ctx.sol.geometry(j.id).along, ""), "") if on_fixed_line(j, ctx.frame)
+                    else msg("dir.guide", joint=joint_name(j.id)))       # a fixed line: its direction
+            return slide_terms(ctx, lv, seg.frm, seg.body, seg.p, line, j.id,
                                unknown)
         return []
 

@@ -16,7 +16,7 @@ from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, V
 from .group import group_blocks
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
-from .kinds import knife_edge, pin_only, rolls, turns
+from .kinds import kind_key, knife_edge, pin_only, rolls, turns
 from .order import Step
 from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
@@ -215,7 +215,7 @@ class PlanarSteps:
             if rolls(j):
                 out += self.rolling(j, group)
             else:
-                out.append(condition_msg(j, self.level))
+                out.append(condition_msg(j, self.level, self.ctx.frame))
         out += [self.read_from(b, out) for b in step.bodies]
         return out
 
@@ -426,9 +426,10 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
     return msg("driver.velocity", sym=sym, value=Value(ctx.clean(inst.vector(given, where), unit), unit))
 
 
-def condition_msg(j: Joint, level: str) -> Msg:
-    """A joint's condition in words (for groups solved together)."""
-    return msg(f"cond.{j.kind.name}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))
+def condition_msg(j: Joint, level: str, frame: str = "") -> Msg:
+    """A joint's condition in words (for groups solved together), named from its kind and
+    the bodies it joins (`kinds.kind_key`)."""
+    return msg(f"cond.{kind_key(j, frame)}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))
 
 
 def merge_vehicles(ctx: Ctx, steps: list[Step]) -> list[Step]:

@@ -6,6 +6,7 @@ from __future__ import annotations
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
+from .kinds import kind_key
 from .document import Arrow, Drawing, Figure, Inline, Name, Section, Table, Value, body, joint, msg, names, point
 from .order import Step
 
@@ -24,7 +25,7 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
-    joints = [[joint(j.id), msg(f"joint.{j.kind.name}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
+    joints = [[joint(j.id), msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]
     sec.add(Table([msg("col.joint"), msg("col.type"), msg("col.bodies"), msg("col.where")], joints))
     d = sol.diagnosis

@@ -51,6 +51,7 @@ shape-plane = pla
 joint-revolute = articulació (R)
 joint-prismatic = prismàtic (P)
 joint-slot = passador en ranura
+joint-slot_fixed = contacte amb lliscament (un punt sobre una recta fixa)
 joint-wheel = roda (sense lliscament lateral)
 joint-rolling = rodolament
 joint-gear = engranatge
@@ -195,6 +196,10 @@ cond-prismatic = enllaç { $joint }, prismàtic: { $b } { COUNT($b) ->
        *[other] de { $a }
     }.
 cond-slot = enllaç { $joint }, passador { $point } en ranura: la seva velocitat relativa al sòlid amb ranura segueix la ranura.
+cond-slot_fixed = enllaç { $joint }: el punt { $point } { ELISION($b) ->
+        [vowel] d’{ $b }
+       *[other] de { $b }
+    } llisca al llarg d’una recta solidària a { $a }: la seva velocitat segueix aquesta recta.
 cond-wheel = enllaç { $joint }, roda a { $point }: sense velocitat lateral respecte { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
@@ -441,6 +446,10 @@ centre-weld = l’enllaç { $joint } uneix rígidament { $body } i { $other }: s
     }, { $same },
 centre-line-kennedy = la recta que passa per { $l } (Aronhold–Kennedy, tercer sòlid { $k })
 centre-line-slot = la normal a la ranura de l’enllaç { $joint } a { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
+centre-line-slot_fixed = la normal a { $point } a la recta { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    } per on llisca (enllaç { $joint })
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
 centre-field = cap enllaç ni cap recta d’Aronhold–Kennedy no el situa abans de conèixer les velocitats; amb elles, 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 centre-check = Comprovació amb les velocitats trobades: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value }, el mateix punt: { $centre } és { $where }

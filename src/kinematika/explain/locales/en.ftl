@@ -48,6 +48,7 @@ shape-plane = plane
 joint-revolute = revolute (R)
 joint-prismatic = prismatic (P)
 joint-slot = pin in slot
+joint-slot_fixed = sliding contact (a point on a fixed line)
 joint-wheel = wheel (knife edge)
 joint-rolling = rolling
 joint-gear = gear
@@ -141,6 +142,7 @@ other-intro = These bodies are found together from the conditions of their joint
 cond-revolute = joint { $joint }, revolute at { $point }: { $point } is one point of { $a } and of { $b }.
 cond-prismatic = joint { $joint }, prismatic: { $b } slides along { $a } without turning relative to it.
 cond-slot = joint { $joint }, pin { $point } in a slot: its velocity relative to the slotted body is along the slot.
+cond-slot_fixed = joint { $joint }: the point { $point } of { $b } slides along a line fixed to { $a }: its velocity is along that line.
 cond-wheel = joint { $joint }, wheel at { $point }: no sideways velocity relative to { $a }.
 cond-weld = joint { $joint }: { $a } and { $b } move as one body.
 cond-spherical = joint { $joint }, ball joint at { $point }: { $point } is one point of { $a } and of { $b }.
@@ -267,6 +269,7 @@ higher-straight = The higher pair { $joint } is written as the motion of { $poin
 centre-weld = joint { $joint } welds { $body } to { $other }: they are one body, so the centre is that of { $other }, { $same },
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
 centre-line-slot = the normal at { $point } to the slot of joint { $joint } (relative to the slotted body, { $point } can only move along the slot)
+centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides (joint { $joint })
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
 centre-field = no joint and no Aronhold–Kennedy line places it before the velocities are known; with them, 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-check = Check with the velocities found above: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value }, the same point: { $centre } is { $where }

@@ -48,6 +48,7 @@ shape-plane = plano
 joint-revolute = de rotación (R)
 joint-prismatic = prismático (P)
 joint-slot = pasador en ranura
+joint-slot_fixed = contacto con deslizamiento (un punto sobre una recta fija)
 joint-wheel = rueda (sin deslizamiento lateral)
 joint-rolling = rodadura
 joint-gear = engranaje
@@ -150,6 +151,7 @@ cond-prismatic = par { $joint }, prismático: { $b } { COUNT($b) ->
        *[one] se desliza
     } sobre { $a } sin girar respecto de él.
 cond-slot = par { $joint }, pasador { $point } en ranura: su velocidad relativa al sólido ranurado sigue la ranura.
+cond-slot_fixed = par { $joint }: el punto { $point } de { $b } desliza a lo largo de una recta fija a { $a }: su velocidad sigue esa recta.
 cond-wheel = par { $joint }, rueda en { $point }: sin velocidad lateral respecto de { $a }.
 cond-weld = par { $joint }: { $a } y { $b } se mueven como un solo sólido.
 cond-spherical = par { $joint }, esférico en { $point }: { $point } es un punto de { $a } y de { $b }.
@@ -285,6 +287,7 @@ higher-straight = El par superior { $joint } se escribe como el movimiento de { 
 centre-weld = el par { $joint } une rígidamente { $body } y { $other }: son un solo sólido, así que el CIR es el de { $other }, { $same },
 centre-line-kennedy = la recta que pasa por { $l } (Aronhold–Kennedy, tercer sólido { $k })
 centre-line-slot = la normal en { $point } a la ranura del par { $joint } (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
+centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza (par { $joint })
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
 centre-field = ningún par ni ninguna recta de Aronhold–Kennedy lo sitúan antes de conocer las velocidades; con ellas, 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
 centre-check = Comprobación con las velocidades halladas: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value }, el mismo punto: { $centre } está { $where }

@@ -48,6 +48,7 @@ shape-plane = planoa
 joint-revolute = giltzadura (R)
 joint-prismatic = prismatikoa (P)
 joint-slot = ziria arteka batean
+joint-slot_fixed = irristadurazko kontaktua (puntu bat zuzen finko batean)
 joint-wheel = gurpila (alboko irristarik gabe)
 joint-rolling = errodadura
 joint-gear = engranajea
@@ -144,6 +145,7 @@ other-intro = Solido hauek batera aurkitzen dira beren loturen baldintzetatik:
 cond-revolute = { $joint } lotura, giltzadura { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
 cond-prismatic = { $joint } lotura, prismatikoa: { $b } solidoa { $a } solidoaren gainean irristatzen da, harekiko biratu gabe.
 cond-slot = { $joint } lotura, { $point } ziria arteka batean: artekadun solidoarekiko abiadura artekaren norabidean dago.
+cond-slot_fixed = { $joint } lotura: { $b } solidoaren { $point } puntua { $a } solidoari lotutako zuzen batean zehar irristatzen da: haren abiadura zuzen horren norabidean dago.
 cond-wheel = { $joint } lotura, gurpila { $point } puntuan: ez dago alboko abiadurarik { $a } solidoarekiko.
 cond-weld = { $joint } lotura: { $a } eta { $b } solido bakar bat bezala mugitzen dira.
 cond-spherical = { $joint } lotura, esferikoa { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
@@ -270,6 +272,7 @@ higher-straight = { $joint } goi-mailako bikotea { $point } puntuaren mugimendu 
 centre-weld = { $joint } loturak { $body } eta { $other } zurrunki lotzen ditu: solido bakarra dira; beraz, zentroa { $other } solidoarena da, { $same },
 centre-line-kennedy = { $l } zentroetatik pasatzen den zuzena (Aronhold–Kennedy, { $k } hirugarren solidoa)
 centre-line-slot = { $joint } loturaren artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
+centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala, zeinean zehar irristatzen baita ({ $joint } lotura)
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
 centre-field = ez lotura batek ez Aronhold–Kennedyren zuzen batek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-check = Egiaztapena aurkitutako abiadurekin: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du, puntu bera: { $centre }, { $where }
