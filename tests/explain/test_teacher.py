@@ -119,3 +119,22 @@ def test_every_datum_is_stated_in_the_data_section(name):
             else:
                 shown = str(radius).replace("*", "·")
             assert shown in data, (name, body, shown)
+
+
+def test_the_tricycles_spin_is_derived_as_the_notes_give_it():
+    """C5-2.1: with the steering at 45°, the chassis turns about I on the rear axle line, L to
+    the left of M, at ω = v₀/(√2 L); the left rear wheel's centre, L − s from I, moves at
+    ω (L − s) = r φ̇, so φ̇ = v₀ (L − s)/(√2 L r) (worked here by hand)."""
+    import sympy
+
+
+    sol, doc = explained("seed_c5_2_1_tricycle")
+    L, s, v0, r = (sympy.Symbol(n, positive=True) for n in ("L", "s", "v0", "r"))
+    by_hand = v0 * (L - s) / (sympy.sqrt(2) * L * r)
+    spins = [d for d in doc.derived() if d.kind == "spin"]
+    assert len(spins) == 1
+    env = {str(k): k for k in getattr(spins[0].value.value, "free_symbols", set())}
+    got = spins[0].value.value.subs({env[n]: sym for n, sym in zip(("L", "s", "v0", "r"), (L, s, v0, r)) if n in env})
+    assert sympy.simplify(got - by_hand) == 0
+    answers = render(doc, "en", "md", drawings=False).split("## Answers")[1]
+    assert "φ̇" in answers and "φ̇ = v_RL / *r*" not in answers

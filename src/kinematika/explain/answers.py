@@ -32,6 +32,10 @@ def answers_section(ctx: Ctx) -> Section:
         row = [question_label(ctx, q), answer_items(ctx, q, answer(ctx.sol, q))]
         if row not in rows:        # a fixed point asked of every body it belongs to: once
             rows.append(row)
+    if ctx.planar:                 # the spins the notes ask of a vehicle's wheels (notation spin(j))
+        from .vehicles import spin_values
+
+        rows += [[spin, [("", value)]] for _, _, spin, value in spin_values(ctx)]
     if rows:
         sec.add(Table([msg("col.question"), msg("col.answer")], rows))
     else:
@@ -106,10 +110,12 @@ def _part_label(ctx: Ctx, q, key: str, sub: str | None) -> Any:
             return Sym(level, f"{name}∈{j.b}")
         if key == "geometric":
             return geometric_sym(level, name)
-    if q.kind == "intrinsic":
+    if q.kind == "intrinsic":            # scalars told from vectors by how they are written
         p = _label(ctx, _ref(ctx, q))
-        symbols = {"speed": Sym("v", p, vector=False), "tangential": Sym("a", p, "t", vector=False),
-                   "normal": Sym("a", p, "n", vector=False), "tangential_vector": Sym("a", p, "t"),
+        t = Sym("t", vector=True)
+        symbols = {"speed": Inline(["|", Sym("v", p), "|"]), "tangent": Inline([msg("ans.tangent"), " ", t]),
+                   "tangential": Inline([Sym("a", p, "t"), " · ", t]),
+                   "normal": Inline(["|", Sym("a", p, "n"), "|"]), "tangential_vector": Sym("a", p, "t"),
                    "normal_vector": Sym("a", p, "n")}
         if key in symbols:
             return symbols[key]

@@ -20,7 +20,7 @@ from .kinds import kind_key, knife_edge, pin_only, rolls, turns
 from .order import Step
 from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
-from .vehicles import wheel_route
+from .vehicles import spins, wheel_route
 
 body_ = body
 
@@ -91,7 +91,7 @@ class PlanarSteps:
                 self.used.update(step.joints)
                 for b in step.bodies:
                     self.done.update(self.ctx.point_label(p, b) for p in self.ctx.model.bodies[b].points)
-                return blocks + route
+                return blocks + route + spins(self.ctx, step.bodies)
         if builder is not None and (step.source == "assur" or step.kind != "input"):
             made = builder(step, chain)
             if made is not None:

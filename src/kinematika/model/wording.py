@@ -17,6 +17,7 @@ figures say, and nothing else reads (the answers keep the model's own names).
       omega(blades/block): omega_2        # relative to another body: ω₂
       omega(blades): {eu: omega_aspak, ca: omega_aspes}   # per language
       index(wheel1): "1"                  # a body's index in every symbol (ω_1, v_B∈1, I_12)
+      spin(j3): {symbol: phidot, radius: r}   # a knife-edge wheel's spin: φ̇ = v·e / r
 
 A written symbol is a name as sympy reads one (`omega_0` ω₀, `vdot` v̇, `R_roda`), so every
 format (HTML, Markdown, LaTeX, the figures' mathtext) sets it as it sets the model's own
@@ -49,6 +50,7 @@ def part_subscript(key: str, lang: Optional[str]) -> str:
 RATE = re.compile(r"^(omega|alpha)\((.+)\)$")
 SPELLING = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")      # a name sympy writes as a symbol
 INDEX_KEY = re.compile(r"^index\((.+)\)$")                # notation: index(BODY): N
+SPIN_KEY = re.compile(r"^spin\((.+)\)$")                  # notation: spin(JOINT): {symbol, radius}
 INDEX = re.compile(r"^[A-Za-z0-9]{1,4}$")                 # a body's index as the notes write it
 
 
@@ -64,6 +66,7 @@ class Wording:
     data: dict[str, list[str]] = field(default_factory=dict)            # lang -> statements of the data
     notes: dict[str, list[str]] = field(default_factory=dict)           # lang -> notes
     indices: dict[str, dict[str, str]] = field(default_factory=dict)    # body -> lang|"*" -> its index
+    spins: dict[str, tuple[str, str]] = field(default_factory=dict)     # wheel joint -> (symbol, radius)
     symbols: dict[str, dict[str, str]] = field(default_factory=dict)    # key -> lang|"*" -> name
 
     def title(self, lang: str, default: str) -> str:
@@ -141,6 +144,10 @@ def read_wording(names: Any, notation: Any, bodies: dict, points: dict, paramete
         out.notes[lang] = [_text(t, f"{where}.notes[{i}]") for i, t in enumerate(spec.notes or [])]
     for raw, spelt in (notation or {}).items():
         where = f"notation.{raw}"
+        spin = SPIN_KEY.match(raw.strip())
+        if spin is not None:
+            out.spins[_spin_joint(spin.group(1).strip(), joints or {}, where)] = _spin(spelt, parameters, where)
+            continue
         index = INDEX_KEY.match(raw.strip())
         if index is not None:
             b = _known(index.group(1).strip(), bodies, "body", where)
@@ -176,6 +183,27 @@ def _distinct_indices(out: Wording, order: list) -> None:
                 raise KinematikaError("schema", f"bodies {seen[text]!r} and {b!r} would both be written {text!r}",
                                       f"notation.index({b})")
             seen[text] = b
+
+
+def _spin_joint(name: str, joints: dict, where: str) -> str:
+    """A knife-edge wheel's joint (`spin(j3)`): its spin is the speed of its point along its
+    plane over its radius."""
+    _known(name, joints, "joint", where)
+    if not getattr(joints[name].kind, "knife_edge", False):
+        raise KinematikaError("schema", f"joint {name!r} is not a wheel: only a wheel has a spin", where)
+    return name
+
+
+def _spin(spelt: Any, parameters: dict, where: str) -> tuple[str, str]:
+    """{symbol: NAME, radius: PARAMETER}: how the spin is written and the wheel's radius."""
+    if not isinstance(spelt, dict) or set(spelt) != {"symbol", "radius"}:
+        raise KinematikaError("schema", "a spin is {symbol: NAME, radius: PARAMETER} (symbol: phidot, "
+                              "radius: r)", where)
+    radius = spelt["radius"]
+    if radius not in parameters:
+        raise KinematikaError("schema", f"the radius {radius!r} is not a parameter (parameters: "
+                              f"{', '.join(parameters) or 'none'})", f"{where}.radius")
+    return _spelling(spelt["symbol"], f"{where}.symbol"), radius
 
 
 def _index(text: str, where: str) -> str:

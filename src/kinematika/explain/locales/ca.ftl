@@ -387,6 +387,7 @@ vehicle-translation = Les rectes { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     } són paral·leles: el seu CIR és a l’infinit, es trasllada i tots els seus punts es mouen com { $point }.
+vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda a { $radius } { $spin }, la seva rotació pròpia al voltant del seu eix, de manera que:
 triad-intro = { $body } està subjectat per tres barres binàries, { $links }: cap equació vectorial d’un sol punt no té només dues incògnites. Com fan els textos per a una tríada, es pren el punt d’Assur { $point }, on es tallen les rectes { $l1 } i { $l3 }, com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -498,6 +499,15 @@ check-belt = Vista des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
     }, que porta els dos eixos, { $line } no llisca ni sobre { $a } ni sobre { $b }: { $equation }, de manera que { $ratio }; amb les velocitats angulars trobades, { $values }: coincideixen.
+how-translates = (es trasllada respecte { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    })
+drive-relation_a = Derivant, amb els radis constants: { $equation } (amb { $radii }):
+drive-relation = Vistos des { ELISION($holder) ->
+        [vowel] d’{ $holder }
+       *[other] de { $holder }
+    }, que porta els dos eixos, els eixos són fixos i { $line } es trasllada: no llisca sobre { $a } ni sobre { $b }, de manera que tots dos la mouen amb la mateixa velocitat, { $equation } (amb { $radii }):
 check-train = La relació de la transmissió és el producte de les de les seves etapes: { $ratio }; amb les velocitats angulars trobades, la relació val { $value }.
 check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la seva oscil·lació quan la ranura és tangent a la circumferència { ELISION($pin) ->
         [vowel] d’{ $pin }

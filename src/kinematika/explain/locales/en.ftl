@@ -222,6 +222,7 @@ vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $jo
 vehicle-line-velocity = the perpendicular to { $sym } at { $point }
 vehicle-centre = The centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel: its centre is at infinity, it translates, and every point moves as { $point }.
+vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $radius } { $spin }, its spin about its axle, so:
 triad-intro = { $body } is held by three binary links, { $links }: no vector equation of a single point has only two unknowns. As textbooks do for a triad, take the Assur point { $point }, where the lines { $l1 } and { $l3 } meet, as a point of { $body }:
 triad-collinear = On each side the two unknown terms are perpendicular to one line ({ $point } lies on { $l1 } and on { $l3 }), so each side has one unknown magnitude: two unknowns, and the polygon closes.
 triad-closure = With { $point } known as a point of the ternary link, its pin { $pin } closes as in a dyad:
@@ -300,6 +301,9 @@ note-text = Note: { $text }
 sec-checks = Checks
 check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles are the carrier’s), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.
 check-belt = Seen from { $holder }, which carries both axles, { $line } does not slip on { $a } nor on { $b }: { $equation }, so { $ratio }; with the angular velocities found above, { $values }: they agree.
+how-translates = (it translates relative to { $body })
+drive-relation_a = Differentiating, with the radii constant: { $equation } (with { $radii }):
+drive-relation = Seen from { $holder }, which carries both axles, the axles are fixed and { $line } translates: it does not slip on { $a } nor on { $b }, so both move it at one speed, { $equation } (with { $radii }):
 check-train = The train’s ratio is the product of its stages’: { $ratio }; with the angular velocities found above, the ratio is { $value }.
 check-quick = Time ratio of the quick return: { $lever } is at an end of its swing when the slot is tangent to the circle of { $pin } (the crank { $o2 }{ $pin } perpendicular to { $o4 }{ $pin }), where cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Turning steadily, { $crank } sweeps 360° − 2θ = { $slow } in one stroke and 2θ = { $fast } in the other: time ratio { $ratio }.
 driver-slide = Given: the sliding velocity at joint { $joint } is { $value }.

@@ -240,6 +240,7 @@ vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el pun
 vehicle-line-velocity = la perpendicular a { $sym } por el punto { $point }
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
 vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
+vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $radius } { $spin }, su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
 triad-closure = Conocido { $point } como punto del eslabón ternario, su articulación { $pin } se cierra como en una díada:
@@ -318,6 +319,9 @@ note-text = Nota: { $text }
 sec-checks = Comprobaciones
 check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes son los del portasatélites), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
 check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas, { $values }: coinciden.
+how-translates = (se traslada respecto de { $body })
+drive-relation_a = Derivando, con los radios constantes: { $equation } (con { $radii }):
+drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos y { $line } se traslada: no desliza sobre { $a } ni sobre { $b }, así que ambos la mueven con la misma velocidad, { $equation } (con { $radii }):
 check-train = La relación de la transmisión es el producto de las de sus etapas: { $ratio }; con las velocidades angulares halladas, la relación vale { $value }.
 check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extremo de su oscilación cuando la ranura es tangente a la circunferencia de { $pin } (la manivela { $o2 }{ $pin } perpendicular a { $o4 }{ $pin }), donde cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Girando uniformemente, { $crank } barre 360° − 2θ = { $slow } en una carrera y 2θ = { $fast } en la otra: razón de tiempos { $ratio }.
 driver-slide = Dato: la velocidad de deslizamiento en el par { $joint } es { $value }.

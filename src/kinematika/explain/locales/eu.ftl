@@ -225,6 +225,7 @@ vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point
 vehicle-line-velocity = { $sym } abiadurarekiko perpendikularra { $point } puntuan
 vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira. { $body } solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
+vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $radius } { $spin } abiaduraz, bere ardatzaren inguruko biraketa propioa; beraz:
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
 triad-closure = { $point } barra hirutarraren puntu gisa ezaguna denez, haren { $pin } giltzadura diada batean bezala ixten da:
@@ -303,6 +304,9 @@ note-text = Oharra: { $text }
 sec-checks = Egiaztapenak
 check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak eramailearenak dira); beraz, { $formula } = { $radii } = { $train }, { $r1 } eta { $r2 } izanik. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
 check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
+how-translates = ({ $body } solidoarekiko traslatzen da)
+drive-relation_a = Deribatuz, erradioak konstanteak direnez: { $equation } ({ $radii } izanik):
+drive-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira eta { $line } solidoa traslatzen da: ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean; beraz, biek abiadura berarekin mugitzen dute, { $equation } ({ $radii } izanik):
 check-train = Transmisioaren erlazioa etapen erlazioen biderkadura da: { $ratio }; aurkitutako abiadura angeluarrekin, erlazioa { $value } da.
 check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulunkaren mutur batean dago artekak { $pin } puntuaren zirkunferentzia ukitzen duenean ({ $o2 }{ $pin } biradera { $o4 }{ $pin } zuzenarekiko perpendikularra), non cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Abiadura konstantean biratuz, { $crank } solidoak 360° − 2θ = { $slow } egiten ditu kurtsa batean eta 2θ = { $fast } bestean: denbora-erlazioa { $ratio }.
 driver-slide = Datua: { $joint } loturako irristatze-abiadura { $value } da.
