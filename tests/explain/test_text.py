@@ -21,13 +21,13 @@ SYNTAX = [
     (r"\b(body_a|body_b|tangential_vector|normal_vector|rates_summary)\b", "an answer's key"),
     (r"\b(geometric|velocity|acceleration|total|drag|relative|coriolis)\.(velocity|acceleration|drag|relative|total|coriolis)\b",
      "an answer's key path"),
-    (r"\b(deg|cos|sin|tan|sqrt|atan2?)\(", "an expression as written"),
+    (r"\b(deg|sqrt|atan2?)\(|\b(cos|sin|tan)\([^)]*(deg\(|\*)", "an expression as written"),   # sin(β) is math
     (r"\w\*\w|\*\*", "a product written as in the model"),
     (r"\b(Abs|sign|Piecewise|atan2)\(", "a function written as sympy prints it"),
     (r"\bpi\b", "π written as pi"),
     (r"\b(None|True|False)\b", "a Python value"),
     (r"\b(Name|Msg|Sym|Value|Inline)\(", "a Python object"),
-    (r"[{}]\s*\$?\w+\s*[{}]", "a placeholder"),
+    (r"\{\s*\$\w+\s*\}|\{\s*\w+\s*\}(?!\S)", "a placeholder"),     # not a subscript in braces: v_{A∈2/3}
 ]
 PASTED_PLURAL = re.compile(r"\w\((s|es|ons|ak|ek)\)")
 WORD = re.compile(r"[A-Za-zÀ-ÿ’']+")
