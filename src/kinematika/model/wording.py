@@ -173,8 +173,9 @@ def _distinct_indices(out: Wording, order: list) -> None:
     the others, too: a body left numbered keeps its place in the file)."""
     if not out.indices:
         return
-    langs = {lang for spelt in out.indices.values() for lang in spelt} | {"*"}
-    for lang in sorted(langs):
+    from ..languages import LANGS
+
+    for lang in LANGS:
         seen: dict[str, str] = {}
         for k, b in enumerate(order, start=1):
             spelt = out.indices.get(b)
