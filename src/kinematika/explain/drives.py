@@ -114,9 +114,10 @@ def _relation(ctx: Ctx, d: Drive, a: str, b: str, level: str) -> list:
     sense = not ctx.symbolic
     if k is not None:                  # ω_a = ω_a/K + ω_K: the known wheel's rate seen from K
         how = ["−", sym(d.holder)] if a == ctx.frame else [sym(a), " − ", sym(d.holder)]
-        out.append(Derived(rel_a, how, ctx.value(get(a, d.holder), unit), a, kind, sense))
+        out.append(Derived(rel_a, how, ctx.value(get(a, d.holder), unit), "", kind, sense))    # relative: no body's own
     ratio = simplified(ctx, d.sign * ra / rb)
-    out.append(Derived(rel_b, [Value(ratio, ""), " · ", rel_a], ctx.value(get(b, d.holder), unit), b, kind, sense))
+    out.append(Derived(rel_b, [Value(ratio, ""), " · ", rel_a], ctx.value(get(b, d.holder), unit),
+                       b if k is None else "", kind, sense))
     if k is not None:
         out.append(Derived(sym(b), [rel_b, " + ", sym(d.holder)], ctx.value(get(b), unit), b, kind, sense))
         out.append(Derived(sym(d.line), [sym(d.holder), " ", msg("how.translates", body=Name(d.holder, "body"))],
