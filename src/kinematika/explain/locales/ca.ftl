@@ -494,7 +494,7 @@ sec-checks = Comprovacions
 check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->
         [vowel] d’{ $carrier }
        *[other] de { $carrier }
-    }, la transmissió és ordinària ({ $planet } engrana amb { $s1 } i amb { $s2 }, els eixos dels quals són els del portador), de manera que { $formula } = { $radii } = { $train }, amb { $r1 } i { $r2 }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.
+    }, la transmissió és ordinària ({ $planet } engrana amb { $s1 } i amb { $s2 }, els eixos dels quals porta { $carrier }), de manera que { $formula } = { $radii } = { $train }, amb { $r1 } i { $r2 }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.
 check-belt = Vista des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }

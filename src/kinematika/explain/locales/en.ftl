@@ -299,7 +299,7 @@ col-point = point
 col-what = what it is
 note-text = Note: { $text }
 sec-checks = Checks
-check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles are the carrier’s), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.
+check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } carries), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.
 check-belt = Seen from { $holder }, which carries both axles, { $line } does not slip on { $a } nor on { $b }: { $equation }, so { $ratio }; with the angular velocities found above, { $values }: they agree.
 how-translates = (it translates relative to { $body })
 drive-relation_a = Differentiating, with the radii constant: { $equation } (with { $radii }):

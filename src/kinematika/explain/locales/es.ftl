@@ -317,7 +317,7 @@ col-point = punto
 col-what = qué es
 note-text = Nota: { $text }
 sec-checks = Comprobaciones
-check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes son los del portasatélites), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
+check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes lleva { $carrier }), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
 check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas, { $values }: coinciden.
 how-translates = (se traslada respecto de { $body })
 drive-relation_a = Derivando, con los radios constantes: { $equation } (con { $radii }):

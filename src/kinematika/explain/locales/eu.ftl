@@ -302,7 +302,7 @@ col-point = puntua
 col-what = zer den
 note-text = Oharra: { $text }
 sec-checks = Egiaztapenak
-check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak eramailearenak dira); beraz, { $formula } = { $radii } = { $train }, { $r1 } eta { $r2 } izanik. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
+check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak { $carrier } solidoak daramatza); beraz, { $formula } = { $radii } = { $train }, { $r1 } eta { $r2 } izanik. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
 check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
 how-translates = ({ $body } solidoarekiko traslatzen da)
 drive-relation_a = Deribatuz, erradioak konstanteak direnez: { $equation } ({ $radii } izanik):
