@@ -82,9 +82,9 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
     point's carriers share: the bare name), relative to `relative_to` (None or the frame:
     absolute)."""
     labels = body_labels(model, lang)
-    if body is not None and model.share_motion(point, model.carriers(point)):
-        body = None
     rel = None if relative_to in (None, model.frame) else labels[relative_to]
+    if body is not None and rel is None and model.share_motion(point, model.carriers(point)):
+        body = None          # a relative motion names its body always (v_P∈3/2, as the text does)
     return subscript(letter, point, None if body is None else labels[body], rel)
 
 

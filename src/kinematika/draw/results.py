@@ -335,6 +335,19 @@ def _circle(num: Numbers, centre: np.ndarray, p: np.ndarray, v: np.ndarray) -> n
 
 
 # poles, contacts, screw axes ---------------------------------------------------------------
+def _axis_label(model: Any, q: Any, lang: Optional[str]) -> str:
+    """A screw axis in the course's words with its bodies as the text writes them
+    (EIRL with 3/2 as its subscript: the blades relative to the block), never English words
+    in another language's figure."""
+    from ..model.wording import SCREW_AXIS
+
+    labels = body_labels(model, lang)
+    word = SCREW_AXIS.get(lang or "en", SCREW_AXIS["en"]).replace(" ", r"\ ")
+    rel = q.relative_to if q.relative_to not in (None, model.frame) else None
+    tag = labels[q.target] + (f"/{labels[rel]}" if rel else "")
+    return "$\\mathrm{" + word + "}_{\\mathrm{" + tag + "}}$"
+
+
 def _other_marks(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None) -> None:
     for q in sol.model.questions:
         if q.kind == "pole":
@@ -352,5 +365,5 @@ def _other_marks(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = Non
         elif q.kind == "axis" and scene.dim == 3:
             value = answer(sol, q)
             if value.get("point") is not None:
-                scene.axes.append(AxisView(f"axis:{q.target}", f"axis of {plain(str(q.target))}",
+                scene.axes.append(AxisView(f"axis:{q.target}", _axis_label(sol.model, q, lang),
                                            num.page(value["point"]), num.page(value["direction"])))

@@ -43,6 +43,11 @@ PART_SUBSCRIPTS = {"sub.rel": {"en": "rel", "es": "rel", "ca": "REL", "eu": "erl
                    "sub.cor": {"en": "Cor", "es": "Cor", "ca": "Cor", "eu": "Cor"}}
 
 
+# a screw axis as a figure labels it, in each course's words (the Catalan notes' EIRL, eix
+# instantani de rotació i lliscament; the Spanish EIR; the Basque ardatz instantaneoa)
+SCREW_AXIS = {"en": "ISA", "es": "EIR", "ca": "EIRL", "eu": "ardatz instantaneoa"}
+
+
 def part_subscript(key: str, lang: Optional[str]) -> str:
     """The subscript `key` (sub.rel, sub.drag, sub.cor) in `lang` (English when None)."""
     words = PART_SUBSCRIPTS[key]
