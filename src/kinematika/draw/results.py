@@ -14,7 +14,7 @@ from ..model.model import POINT_QUESTIONS, PointRef
 from ..questions import answer
 from .options import DrawOptions
 from .geometry import perpendicular
-from .names import (bare, body_labels, contact_name, equation, formula, pair_symbol, plain, point_symbol,
+from .names import (bare, body_labels, contact_name, equation, formula, pair_symbol, point_symbol,
                     subscript, value_text)
 from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView,
                     vector_label)
