@@ -144,6 +144,8 @@ def relative_rates(ctx: Ctx) -> list[Derived]:
         rel = ctx.rel(q.relative_to)
         if q.kind not in ("omega", "alpha") or rel is None or not ctx.planar:
             continue
+        if f"relative:{q.target}/{rel}" in ctx.worked:
+            continue            # a step found it (a belt seen from its arm): not again, backwards
         sym = omega_sym if q.kind == "omega" else alpha_sym
         get = ctx.omega if q.kind == "omega" else ctx.alpha
         unit = "rate" if q.kind == "omega" else "rate2"

@@ -107,6 +107,7 @@ def _relation(ctx: Ctx, d: Drive, a: str, b: str, level: str) -> list:
     ra, rb = circle(ctx, a)[1], circle(ctx, b)[1]
     minus = "" if d.sign > 0 else "−"
     rel_a, rel_b = sym(a, k), sym(b, k)
+    ctx.worked.update({f"relative:{a}/{d.holder}", f"relative:{b}/{d.holder}"})    # found here: not again
     out: list = [msg("drive.relation" if level == "v" else "drive.relation_a", holder=Name(d.holder, "body"),
                      line=Name(d.line, "body"), a=Name(a, "body"), b=Name(b, "body"),
                      equation=Inline([rho(a), " ", rel_a, " = ", minus, rho(b), " ", rel_b]),
