@@ -47,8 +47,7 @@ def data_section(ctx: Ctx, length_unit: str, accelerations: bool) -> Section:
     given = [driver_msg(ctx, d, "v") for d in ctx.model.drivers]
     if accelerations:
         given += [driver_msg(ctx, d, "a") for d in ctx.model.drivers if d.accel is not None]
-    if given:
-        sec.add(msg("data.motion"), *given)
+    sec.add(*given)
     return sec
 
 

@@ -7,7 +7,6 @@ data-planar = Moviment pla: les velocitats i acceleracions angulars tenen signe,
 data-relative = Una magnitud relativa anomena els dos sòlids: { $v } és la velocitat del punt { $point } del sòlid { $b } vista des del sòlid { $a }, i { $w } la velocitat angular de { $b } respecte de { $a }.
 data-spatial = Les velocitats i acceleracions angulars són vectors (regla de la mà dreta al voltant de la seva direcció).
 data-symbolic = Les dades són símbols, i cada resultat és una fórmula exacta en funció d’aquests. Les figures es dibuixen amb valors de mostra dels símbols, indicats sota cada figura.
-data-motion = El moviment donat:
 data-symbol = un símbol (qualsevol valor)
 data-constructed = situat per construcció (vegeu Posició)
 data-circle = centre { $centre }, radi { $radius }

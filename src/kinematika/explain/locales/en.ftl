@@ -7,7 +7,6 @@ data-planar = Planar motion: angular velocities and accelerations are signed, co
 data-relative = A relative quantity names both bodies: { $v } is the velocity of the point { $point } of body { $b } seen from body { $a }, and { $w } the angular velocity of { $b } relative to { $a }.
 data-spatial = Angular velocities and accelerations are vectors (right-hand rule about their direction).
 data-symbolic = The data are symbols, and every result is an exact formula in them. The figures are drawn at sample values of the symbols, given under each figure.
-data-motion = The given motion:
 data-symbol = a symbol (any value)
 data-constructed = placed by construction (see Position)
 data-circle = centre { $centre }, radius { $radius }

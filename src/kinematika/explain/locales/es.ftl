@@ -7,7 +7,6 @@ data-planar = Movimiento plano: las velocidades y aceleraciones angulares llevan
 data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } del sólido { $b } vista desde el sólido { $a }, y { $w } la velocidad angular de { $b } respecto de { $a }.
 data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
 data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
-data-motion = El movimiento dado:
 data-symbol = un símbolo (cualquier valor)
 data-constructed = situado por construcción (véase Posición)
 data-circle = centro { $centre }, radio { $radius }

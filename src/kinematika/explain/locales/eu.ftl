@@ -7,7 +7,6 @@ data-planar = Mugimendu laua: abiadura eta azelerazio angeluarrek zeinua dute, p
 data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $b } solidoaren { $point } puntuaren abiadura da { $a } solidotik ikusita, eta { $w } { $b } solidoaren abiadura angeluarra { $a } solidoarekiko.
 data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
 data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
-data-motion = Emandako mugimendua:
 data-symbol = ikur bat (edozein balio)
 data-constructed = eraikuntzaz kokatua (ikus Posizioa)
 data-circle = zentroa { $centre }, erradioa { $radius }
