@@ -138,3 +138,16 @@ def test_the_tricycles_spin_is_derived_as_the_notes_give_it():
     assert sympy.simplify(got - by_hand) == 0
     answers = render(doc, "en", "md", drawings=False).split("## Answers")[1]
     assert "φ̇" in answers and "φ̇ = v_RL / *r*" not in answers
+
+
+def test_the_articulated_vehicles_wheel_spin_is_the_notes():
+    """C5-2.2: S1 translates at rω, so O does; S2 (at 45°) turns about I on its axle line at
+    ω_S2 = rω/(√2 a) (|OI| = √2 a); its inner wheel's centre W4, a/2 from the axle's midpoint
+    towards I, is a/2 from I and moves at ω_S2 a/2 = rω/(2√2) = r ω′: ω′ = ω/(2√2)."""
+    import sympy
+
+    _, doc = explained("seed_c5_2_2_articulated")
+    spins = [d for d in doc.derived() if d.kind == "spin"]
+    assert len(spins) == 1
+    w = next(s for s in spins[0].value.value.free_symbols if s.name == "w")
+    assert sympy.simplify(spins[0].value.value - w / (2 * sympy.sqrt(2))) == 0
