@@ -12,7 +12,9 @@ from .svg import svg
 from .names import unicode_name
 from .unicode import unicode_formula
 
-MARKUP = re.compile(r"([\\`*_\[\]<>|])")       # what Markdown would read as markup
+# what Markdown would read as markup; an underscore inside a word (R_roda) is no emphasis
+# (CommonMark), so it stays as a reader writes it
+MARKUP = re.compile(r"([\\`*\[\]<>|]|(?<!\w)_|_(?!\w))")
 
 
 COMPOUND = "/,-∈"          # a subscript with these holds more than one name
