@@ -58,7 +58,8 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
         checked = checks_section(ctx)
         if checked is not None:
             doc.sections.append(checked)
-        doc.sections.append(centres_section(ctx))
+        if ctx.model.default_questions or any(q.kind == "icr" for q in ctx.model.questions):
+            doc.sections.append(centres_section(ctx))      # only what is asked (the slides ask none)
     else:
         doc.sections.append(structure_section(ctx, []))
         doc.sections.append(rates_section(ctx, accel))
