@@ -50,7 +50,11 @@ class PlanarSteps:
         for i, step in enumerate(merge_vehicles(self.ctx, self.steps), 1):
             sub = Section(msg("step.title", n=i, kind=msg(f"kind.{step.kind}"),
                               bodies=names(step.bodies, "body")), level=3)
-            sub.blocks = self.step(step)
+            if all(self.ctx.fixed(b) for b in step.bodies):       # welded to the frame: said, not solved
+                sub.blocks = [msg("step.fixed", bodies=names(step.bodies, "body"), frame=body(self.ctx.frame))]
+                self.used.update(step.joints)
+            else:
+                sub.blocks = self.step(step)
             sec.blocks.append(sub)
             self.known.update(step.bodies)
         if self.level == "a" and self.ctx.symbolic and self.ctx.inst.names:

@@ -158,6 +158,13 @@ kind-RPR = díade RPR
 kind-PRP = díade PRP
 kind-other = grup resolt conjuntament
 step-title = Pas { $n }: { $kind } — { $bodies }
+step-fixed = { $bodies } { $bodies_n ->
+        [one] està unit
+       *[other] estan units
+    } rígidament a { $frame }: no es { $bodies_n ->
+        [one] mou
+       *[other] mouen
+    }, i tots els seus punts tenen velocitat i acceleració nul·les.
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
 v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->

@@ -122,6 +122,16 @@ kind-RPR = RPR dyad
 kind-PRP = PRP dyad
 kind-other = group solved together
 step-title = Step { $n }: { $kind } — { $bodies }
+step-fixed = { $bodies } { $bodies_n -> 
+        [one] is
+       *[other] are
+    } welded to { $frame }: { $bodies_n ->
+        [one] it does
+       *[other] they do
+    } not move, and all { $bodies_n ->
+        [one] its
+       *[other] their
+    } points have zero velocity and acceleration.
 sec-velocities = Velocities
 sec-accelerations = Accelerations
 v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->

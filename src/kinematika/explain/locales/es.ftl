@@ -122,6 +122,13 @@ kind-RPR = díada RPR
 kind-PRP = díada PRP
 kind-other = grupo resuelto en conjunto
 step-title = Paso { $n }: { $kind } — { $bodies }
+step-fixed = { $bodies } { $bodies_n ->
+        [one] está unido
+       *[other] están unidos
+    } rígidamente a { $frame }: no se { $bodies_n ->
+        [one] mueve
+       *[other] mueven
+    }, y todos sus puntos tienen velocidad y aceleración nulas.
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
 v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas{ $format ->

@@ -125,6 +125,13 @@ kind-RPR = RPR diada
 kind-PRP = PRP diada
 kind-other = batera ebatzitako taldea
 step-title = { $n }. urratsa: { $kind } — { $bodies }
+step-fixed = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
+        [one] dago: ez da mugitzen
+       *[other] daude: ez dira mugitzen
+    }, eta { $bodies_n ->
+        [one] haren
+       *[other] haien
+    } puntu guztien abiadura eta azelerazioa nuluak dira.
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
 v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
