@@ -58,7 +58,20 @@ def elision(value: Any) -> str:
     return "vowel" if first.lower() in "aeiouàèéíòóúh" else "other"
 
 
-FUNCTIONS = {"ELISION": elision}
+PLURAL_NAME = re.compile(r"(?i)^(els|les|los|las) |\s(i|y|and|eta)\s")
+
+
+def count(value: Any) -> str:
+    """`many` when a name stands for several things and a verb after it is plural: a list of
+    names, a name with a plural article (els pedals, les rodes, los dientes) or two names
+    joined by "and" (el plat i els pedals); else `one`."""
+    if getattr(value, "n_names", 1) > 1:
+        return "many"
+    text = str(getattr(value, "plain", value)).strip()
+    return "many" if PLURAL_NAME.search(text) else "one"
+
+
+FUNCTIONS = {"ELISION": elision, "COUNT": count}
 
 
 class Catalogue:

@@ -96,7 +96,7 @@ class _Builder:
 
         joints = {j.id: j for j in self.joint_list}
         return read_wording(self.spec.names, self.spec.notation, self.body_map, self.point_coords, params, title,
-                            joints)
+                            joints, self.spec.frame)
 
     # parameters and points -------------------------------------------------------------
     def parameters(self) -> dict[str, Parameter]:

@@ -318,6 +318,8 @@ class LanguageNames(Strict):
     bodies: dict[str, str] = Field(default_factory=dict)
     points: dict[str, str] = Field(default_factory=dict)
     joints: dict[str, str] = Field(default_factory=dict)
+    parameters: dict[str, str] = Field(default_factory=dict)
+    data: list[str] = Field(default_factory=list)
     notes: list[str] = Field(default_factory=list)
 
 

@@ -155,6 +155,8 @@ LanguageNames, language_names = record('LanguageNames', {
     'bodies': (mapping(exact(str)), dict),
     'points': (mapping(exact(str)), dict),
     'joints': (mapping(exact(str)), dict),
+    'parameters': (mapping(exact(str)), dict),
+    'data': (listed(exact(str)), list),
     'notes': (listed(exact(str)), list),
 })
 ModelSpec, model_spec = record('ModelSpec', {
