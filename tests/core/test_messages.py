@@ -225,7 +225,8 @@ CODE_WORDS = {"points", "bodies", "joints", "drivers", "cam", "follower", "progr
               "face", "pivot", "arm", "omega", "alpha", "velocity", "rpm", "circle", "line", "decompose", "steps",
               "sweep", "vary", "seed", "lang", "true", "false", "null", "spline", "grashof", "transmission",
               "animate", "dict", "mechanism", "sympy", "vdot", "unicode", "csv", "npz", "parquet", "pdf", "png",
-              "svg", "gif", "dask", "ffmpeg", "conda", "apt", "install", "debian", "kinematika"}
+              "svg", "gif", "dask", "ffmpeg", "conda", "apt", "install", "debian", "kinematika",
+              "phidot"}
 CODE = re.compile(r"`[^`]*`|'[^']*'|\"[^\"]*\"|--?[a-z][\w-]*|\S*[=/_@\[\]{}:|]\S*|\b[A-Z][A-Z0-9]+\b|"
                   r"\b\w+\.\w+\b")
 

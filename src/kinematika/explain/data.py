@@ -23,7 +23,7 @@ from typing import Any, Optional
 
 from ..model.model import Circle, Disc, Line, Plane
 from .context import Ctx
-from .document import Inline, Name, Said, Section, Table, Told, Value, msg, point
+from .document import Inline, Name, Described, Section, Table, Told, Value, msg, point
 from .planar import driver_msg
 
 # the kinds of quantity a parameter may be, by where the model uses it
@@ -62,7 +62,7 @@ def parameter_rows(ctx: Ctx) -> list:
             value: Any = msg("data.symbol")
         else:
             value = parameter_value(ctx, name, p.value, kinds.get(name, ""))
-        rows.append([Name(name, "param"), Said("parameter", name), value])
+        rows.append([Name(name, "param"), Described("parameter", name), value])
     return rows
 
 
@@ -170,7 +170,7 @@ def point_rows(ctx: Ctx) -> list:
             where: Any = _coordinates(ctx, spec, ctx.pos(name))
         else:
             where = msg("data.constructed")
-        rows.append([point(name), Said("point", name), where])
+        rows.append([point(name), Described("point", name), where])
     return rows
 
 

@@ -232,7 +232,7 @@ class CentreNote:
 
 
 @dataclass(frozen=True)
-class Said:
+class Described:
     """What the model says of one of its things in the reader's language (`names`): what a
     point is (`kind` point) or a parameter (`kind` parameter); empty when it does not say."""
 

@@ -29,7 +29,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Names
 from ..languages import known             # the explanations' languages (each has a catalogue)
 
 # the articles a name may begin with in Catalan and Spanish (`names.ca.bodies: {carrier: el
@@ -186,8 +186,8 @@ def _distinct_indices(out: Wording, order: list) -> None:
             spelt = out.indices.get(b)
             text = str(k) if spelt is None else spelt.get(lang, spelt.get("*", str(k)))
             if text in seen:
-                raise KinematikaError("schema", f"bodies {seen[text]!r} and {b!r} would both be written {text!r}",
-                                      f"notation.index({b})")
+                raise KinematikaError("schema", "index-twice", f"notation.index({b})", first=seen[text], second=b,
+                                      index=text)
             seen[text] = b
 
 
@@ -196,26 +196,24 @@ def _spin_joint(name: str, joints: dict, where: str) -> str:
     plane over its radius."""
     _known(name, joints, "joint", where)
     if not getattr(joints[name].kind, "knife_edge", False):
-        raise KinematikaError("schema", f"joint {name!r} is not a wheel: only a wheel has a spin", where)
+        raise KinematikaError("schema", "spin-not-wheel", where, joint=name)
     return name
 
 
 def _spin(spelt: Any, parameters: dict, where: str) -> tuple[str, str]:
     """{symbol: NAME, radius: PARAMETER}: how the spin is written and the wheel's radius."""
     if not isinstance(spelt, dict) or set(spelt) != {"symbol", "radius"}:
-        raise KinematikaError("schema", "a spin is {symbol: NAME, radius: PARAMETER} (symbol: phidot, "
-                              "radius: r)", where)
+        raise KinematikaError("schema", "spin-shape", where)
     radius = spelt["radius"]
     if radius not in parameters:
-        raise KinematikaError("schema", f"the radius {radius!r} is not a parameter (parameters: "
-                              f"{', '.join(parameters) or 'none'})", f"{where}.radius")
+        raise KinematikaError("schema", "spin-radius-unknown", f"{where}.radius", radius=radius,
+                              parameters=Names(parameters))
     return _spelling(spelt["symbol"], f"{where}.symbol"), radius
 
 
 def _index(text: str, where: str) -> str:
     if not isinstance(text, str) or not INDEX.match(text):
-        raise KinematikaError("schema", f"{text!r} is not a body's index: one to four letters or digits "
-                              "(N, 1, R, T)", where)
+        raise KinematikaError("schema", "index-shape", where, index=str(text))
     return text
 
 

@@ -721,3 +721,10 @@ rename-no-body = no hi ha cap sòlid '{ $name }' per reanomenar
 rename-body-exists = ja hi ha un sòlid '{ $name }'
 rename-no-point = no hi ha cap punt '{ $name }' per reanomenar
 rename-point-exists = ja hi ha un punt '{ $name }'
+
+## the model's notation of indices and spins (model/wording.py)
+index-twice = els sòlids '{ $first }' i '{ $second }' s’escriurien tots dos '{ $index }'
+spin-not-wheel = l’enllaç '{ $joint }' no és una roda: només una roda té velocitat de gir pròpia
+spin-shape = un gir propi s’escriu {"{"}symbol: NOM, radius: PARÀMETRE{"}"} (symbol: phidot, radius: r)
+spin-radius-unknown = el radi '{ $radius }' no és un paràmetre (paràmetres: { $parameters })
+index-shape = '{ $index }' no és un índex de sòlid: d’una a quatre lletres o xifres (N, 1, R, T)

@@ -635,3 +635,10 @@ rename-no-body = no body '{ $name }' to rename
 rename-body-exists = there is a body '{ $name }' already
 rename-no-point = no point '{ $name }' to rename
 rename-point-exists = there is a point '{ $name }' already
+
+## the model's notation of indices and spins (model/wording.py)
+index-twice = bodies '{ $first }' and '{ $second }' would both be written '{ $index }'
+spin-not-wheel = joint '{ $joint }' is not a wheel: only a wheel has a spin
+spin-shape = a spin is {"{"}symbol: NAME, radius: PARAMETER{"}"} (symbol: phidot, radius: r)
+spin-radius-unknown = the radius '{ $radius }' is not a parameter (parameters: { $parameters })
+index-shape = '{ $index }' is not a body's index: one to four letters or digits (N, 1, R, T)

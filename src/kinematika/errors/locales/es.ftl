@@ -721,3 +721,10 @@ rename-no-body = no hay ningún sólido '{ $name }' que renombrar
 rename-body-exists = ya hay un sólido '{ $name }'
 rename-no-point = no hay ningún punto '{ $name }' que renombrar
 rename-point-exists = ya hay un punto '{ $name }'
+
+## the model's notation of indices and spins (model/wording.py)
+index-twice = los sólidos '{ $first }' y '{ $second }' se escribirían ambos '{ $index }'
+spin-not-wheel = el par '{ $joint }' no es una rueda: solo una rueda tiene velocidad de giro propia
+spin-shape = un giro propio se escribe {"{"}symbol: NOMBRE, radius: PARÁMETRO{"}"} (symbol: phidot, radius: r)
+spin-radius-unknown = el radio '{ $radius }' no es un parámetro (parámetros: { $parameters })
+index-shape = '{ $index }' no es un índice de sólido: de una a cuatro letras o cifras (N, 1, R, T)

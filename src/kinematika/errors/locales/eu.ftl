@@ -724,3 +724,10 @@ rename-no-body = ez dago '{ $name }' solidorik berrizendatzeko
 rename-body-exists = badago '{ $name }' solido bat
 rename-no-point = ez dago '{ $name }' punturik berrizendatzeko
 rename-point-exists = badago '{ $name }' puntu bat
+
+## the model's notation of indices and spins (model/wording.py)
+index-twice = '{ $first }' eta '{ $second }' solidoak biak '{ $index }' idatziko lirateke
+spin-not-wheel = '{ $joint }' lotura ez da gurpil bat: gurpil batek bakarrik du bere biraketa-abiadura
+spin-shape = biraketa propioa honela idazten da: {"{"}symbol: IZENA, radius: PARAMETROA{"}"} (symbol: phidot, radius: r)
+spin-radius-unknown = '{ $radius }' erradioa ez da parametro bat (parametroak: { $parameters })
+index-shape = '{ $index }' ez da solido baten indizea: lau letra edo zifra gehienez (N, 1, R, T)

@@ -13,7 +13,7 @@ from ...text import shown
 from ...model.wording import ARTICLES, NO_ARTICLE, part_subscript
 from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Msg, Name, Names,
-                        Said, Section, Sym, Table, Told, Value)
+                        Described, Section, Sym, Table, Told, Value)
 from .svg import Text, plain_text, sym_text
 
 TOKEN = "\ue000{}\ue001"
@@ -202,7 +202,7 @@ class Renderer:
             return self.message(x)
         if isinstance(x, Inline):
             return self.inline(x.items)
-        if isinstance(x, Said):
+        if isinstance(x, Described):
             said = self.wording.point if x.kind == "point" else self.wording.parameter
             return self.esc(visible(said(x.name, self.lang)))
         if isinstance(x, (list, tuple)):
