@@ -37,6 +37,7 @@ from ..shapes import Cam, Circle, Curve, Line
 from .base import rounding_hint
 from .derivatives import sliding
 from .positions import differences
+from .tangency import circles_tangency
 
 
 @dataclass(frozen=True)
@@ -210,22 +211,21 @@ def _point_exact(inst: Any, oa: Any, p: Point) -> Touch:
 
 
 def _circles(inst: Any, ca: Circle, cb: Circle) -> Optional[Touch]:
-    """Circles touching outside (|Cb − Ca| = Ra + Rb) or one inside the other."""
+    """Circles touching outside each other or one inside the other (`tangency`): J on the
+    line of centres, n = σ u from a's material into b's, the radii signed by the way they
+    touch, so that Cₐ and C_b are the circles' centres."""
     bk = inst.backend
     d = sub(cb.center, ca.center)
     dist = bk.sqrt(dot(d, d))
     if inst.num(dist) <= 1e-12 * inst.scale:
         return None
     u = tuple(bk.simplify(c / dist) for c in d)
+    way = circles_tangency(ca, cb, inst.num)
     ra, rb = ca.radius, cb.radius
-    gaps = {"external": inst.num(dist) - inst.num(ra + rb), "internal": inst.num(dist) - abs(inst.num(ra - rb))}
-    kind = min(gaps, key=lambda k: abs(gaps[k]))
-    if kind == "external":                    # J on the segment, n from a to b
-        return Touch(add(ca.center, scale(ra, u)), u, ra, rb, gaps[kind], ca, cb, kind="circles")
-    if inst.num(ra) >= inst.num(rb):          # b inside a: a concave towards b
-        return Touch(add(ca.center, scale(ra, u)), u, -ra, rb, gaps[kind], ca, cb, kind="circles")
-    n = scale(-1, u)                          # a inside b
-    return Touch(sub(ca.center, scale(ra, u)), n, ra, -rb, gaps[kind], ca, cb, kind="circles")
+    place_a, _ = way.places(ra, rb)
+    radius_a, radius_b = way.radii(ra, rb)
+    return Touch(add(ca.center, scale(place_a, u)), scale(way.sense, u), radius_a, radius_b, way.gap, ca, cb,
+                 kind="circles")
 
 
 def _circle_line(inst: Any, ln: Line, c: Circle) -> Touch:
