@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Optional
+from typing import Any, Optional
 
 import numpy as np
 import sympy
@@ -41,6 +41,7 @@ class Pair:
     shape_a: Optional[dict]
     shape_b: Optional[dict]
     at: Optional[str] = None         # b's point that touches (a pin)
+    placed: Any = None               # θ₄ as a function of θ₂ (arrays): the position in closed form
 
     def tree(self, kind: str = "contact") -> dict:
         """The model: ground, rocker l2 driven at ω₂, α₂, rocker l4, the pair as `kind`."""
@@ -72,17 +73,29 @@ class Pair:
         point = np.array([float(c) for c in j.subs(at)])
         return {"omega": w4, "alpha": a4, "J": point, "J_v": jv, "J_a": ja}
 
+    def over(self, t2: np.ndarray, w2: float = W2, a2: float = A2) -> dict:
+        """θ₄ (continuous), ω₄ and α₄ at every θ₂ of an array, the drive's ω₂ and α₂ the same at
+        each (as a sweep keeps its driver's rates): φ's partial derivatives as numpy functions."""
+        t4 = np.unwrap(self.placed(t2))
+        d = {k: sympy.lambdify((x2, x4), sympy.diff(self.phi, *k), "numpy")
+             for k in [(x2,), (x4,), (x2, x2), (x2, x4), (x4, x4)]}
+        p = {k: np.broadcast_to(f(t2, t4), t2.shape) for k, f in d.items()}
+        w4 = -p[(x2,)] * w2 / p[(x4,)]
+        a4 = -(p[(x2, x2)] * w2**2 + 2 * p[(x2, x4)] * w2 * w4 + p[(x4, x4)] * w4**2 + p[(x2,)] * a2) / p[(x4,)]
+        return {"angle": t4, "omega": w4, "alpha": a4}
 
-def _t4_on_circle(c2: sympy.Matrix, length: float, crank: float) -> float:
-    """θ₄ with |C4 − C2| = length, |C4 − O4| = crank, C4 left of C2 → O4 (the drawn branch)."""
-    p = np.array([float(c2[0]), float(c2[1])])
-    d = np.subtract(O4, p)
-    dist = float(np.hypot(*d))
-    along = (length**2 - crank**2 + dist**2) / (2 * dist)
-    up = math.sqrt(length**2 - along**2)
-    u = d / dist
-    c4 = p + along * u + up * np.array([-u[1], u[0]])
-    return math.atan2(c4[1] - O4[1], c4[0] - O4[0])
+
+def _four_bar(t2: np.ndarray, crank: float, length: float, rocker: float) -> np.ndarray:
+    """θ₄ of the four-bar O2–C2–C4–O4 (|O2C2| = crank, |C2C4| = length, |O4C4| = rocker),
+    C4 left of the direction C2 → O4 (the drawn branch): where two circles meet."""
+    c2 = crank * np.stack([np.cos(t2), np.sin(t2)], axis=-1)
+    d = np.subtract(O4, c2)
+    dist = np.hypot(d[..., 0], d[..., 1])
+    along = (length**2 - rocker**2 + dist**2) / (2 * dist)
+    up = np.sqrt(length**2 - along**2)
+    u = d / dist[..., None]
+    c4 = c2 + along[..., None] * u + up[..., None] * np.stack([-u[..., 1], u[..., 0]], axis=-1)
+    return np.arctan2(c4[..., 1] - O4[1], c4[..., 0] - O4[0])
 
 
 def circles(name: str, ra: float, rb: float, how: str, crank: float = 30.0, rocker: float = 45.0,
@@ -94,11 +107,11 @@ def circles(name: str, ra: float, rb: float, how: str, crank: float = 30.0, rock
     c2, c4 = _polar(O2, crank, x2), _polar(O4, rocker, x4)
     u = (c4 - c2) / length                             # unit while they touch
     contact = c2 + (-ra if how == "a inside b" else ra) * u
-    c2_0 = c2.subs(x2, T2)
-    t4 = _t4_on_circle(c2_0, length, rocker)
-    points = {"O2": O2, "O4": O4, "C2": tuple(c2_0), "C4": tuple(_polar(O4, rocker, t4))}
+    t4 = float(_four_bar(np.array(T2), crank, length, rocker))
+    points = {"O2": O2, "O4": O4, "C2": tuple(c2.subs(x2, T2)), "C4": tuple(_polar(O4, rocker, t4))}
     return Pair(name, (c4 - c2).dot(c4 - c2) - length**2, contact, t4, points,
-                outline(outline_a, "C2", ra, points["C2"]), outline(outline_b, "C4", rb, points["C4"]))
+                outline(outline_a, "C2", ra, points["C2"]), outline(outline_b, "C4", rb, points["C4"]),
+                placed=lambda t: _four_bar(t, crank, length, rocker))
 
 
 def pin_on_circle(name: str, radius: float = 50.0, kind_a: str = "circle") -> Pair:
@@ -115,12 +128,15 @@ def circle_on_line(name: str, side: int, radius: float = 10.0) -> Pair:
     (C2 − O4)·m = side·r, J = C2 − side·r·m."""
     c2 = _polar(O2, 30.0, x2)
     m = sympy.Matrix([-sympy.sin(x4), sympy.cos(x4)])
-    rel = np.array([float(c) for c in c2.subs(x2, T2)]) - O4
-    t4 = math.atan2(rel[1], rel[0]) - math.asin(side * radius / math.hypot(*rel))
+    def placed(t2: np.ndarray) -> np.ndarray:           # (C2 − O4)·m = |C2 − O4| sin(β − θ₄) = side·r
+        rel = 30.0 * np.stack([np.cos(t2), np.sin(t2)], axis=-1) - O4
+        return np.arctan2(rel[..., 1], rel[..., 0]) - np.arcsin(side * radius / np.hypot(rel[..., 0], rel[..., 1]))
+
+    t4 = float(placed(np.array(T2)))
     points = {"O2": O2, "O4": O4, "C2": tuple(c2.subs(x2, T2))}
     line = {"line": {"through": "O4", "direction": [math.cos(t4), math.sin(t4)]}}
     return Pair(name, (c2 - sympy.Matrix(O4)).dot(m) - side * radius, c2 - side * radius * m, t4, points,
-                {"circle": {"center": "C2", "radius": radius}}, line)
+                {"circle": {"center": "C2", "radius": radius}}, line, placed=placed)
 
 
 def line_on_circle(name: str, side: int, radius: float = 10.0, rocker: float = 60.0) -> Pair:
@@ -128,12 +144,15 @@ def line_on_circle(name: str, side: int, radius: float = 10.0, rocker: float = 6
     (C4 − O2)·m = side·r, J = C4 − side·r·m."""
     c4 = _polar(O4, rocker, x4)
     m = sympy.Matrix([-sympy.sin(x2), sympy.cos(x2)])
-    m0 = np.array([-math.sin(T2), math.cos(T2)])
-    t4 = T2 + math.asin((side * radius - float(np.dot(O4, m0))) / rocker)
+    def placed(t2: np.ndarray) -> np.ndarray:           # O4·m + rocker·sin(θ₄ − θ₂) = side·r
+        along = -O4[0] * np.sin(t2) + O4[1] * np.cos(t2)
+        return t2 + np.arcsin((side * radius - along) / rocker)
+
+    t4 = float(placed(np.array(T2)))
     points = {"O2": O2, "O4": O4, "C4": tuple(c4.subs(x4, t4))}
     line = {"line": {"through": "O2", "direction": [math.cos(T2), math.sin(T2)]}}
     return Pair(name, c4.dot(m) - side * radius, c4 - side * radius * m, t4, points, line,
-                {"circle": {"center": "C4", "radius": radius}})
+                {"circle": {"center": "C4", "radius": radius}}, placed=placed)
 
 
 def outline(kind: str, centre: str, radius: float, at: tuple, n: int = 360) -> Optional[dict]:

@@ -14,7 +14,8 @@ and along a sweep (the previous contact's parameter `near`, followed by Newton's
   nearest point on b: s(u) = t_a(u)·n_b(v(u)) = 0 with v(u) the nearest parameter on b
   (the distance of P_a(u) from b is then stationary in u); s has a simple root while the
   curvatures differ (a secant iteration), unlike the distance between the two parameters,
-  whose Hessian is singular at a touch (`curves_contact`).
+  whose Hessian is singular at a touch (`curves_contact`; along a sweep from the last
+  contact's pair of parameters).
 """
 from __future__ import annotations
 
@@ -73,12 +74,14 @@ def _g(curve: Any, c: np.ndarray, u: float) -> tuple[float, float]:
 
 
 def _newton_from(curve: Any, c: np.ndarray, u: float) -> Optional[float]:
-    """Plain Newton on g from a close hint (a sweep's previous contact); None if it wanders
-    off (more than a 32nd of the domain) or does not settle."""
+    """Plain Newton on g from a hint (a sweep's previous contact); None if it wanders off
+    (more than a quarter of the domain), does not settle, or settles on a stationary point of
+    the other kind (a farthest point for a nearest one: g′ of the other sign)."""
     a, b = curve.curve.domain
-    width = (b - a) / 32 if np.isfinite(b - a) else max(1.0, abs(u))
+    width = (b - a) / 4 if np.isfinite(b - a) else max(1.0, abs(u))
     x = u
-    for _ in range(12):
+    kind = _g(curve, c, u)[1] > 0
+    for _ in range(16):
         g, slope = _g(curve, c, x)
         if slope == 0:
             return None
@@ -87,7 +90,7 @@ def _newton_from(curve: Any, c: np.ndarray, u: float) -> Optional[float]:
         if abs(x - u) > width:
             return None
         if abs(step) <= 1e-13 * max(1.0, abs(x)):
-            return float(curve.curve.wrap(x))
+            return float(curve.curve.wrap(x)) if (_g(curve, c, x)[1] > 0) == kind else None
     return None
 
 
@@ -137,17 +140,17 @@ def support(curve: Any, q: np.ndarray, m: np.ndarray, near: Optional[float] = No
     return u, float((curve.point(u) - q) @ m)
 
 
-def curves_contact(ca: Any, cb: Any, near: Optional[float] = None) -> tuple[float, float]:
-    """(u, v): where curve a (at u) touches curve b (at v), see the module: from `near` (a's
-    parameter) or from the closest of sampled pairs, then secant steps on s(u)."""
+def curves_contact(ca: Any, cb: Any, near: Optional[tuple[float, float]] = None) -> tuple[float, float]:
+    """(u, v): where curve a (at u) touches curve b (at v), see the module: from `near` (the
+    previous contact's (u, v)) or from the closest of sampled pairs, then secant steps on s(u)."""
     if near is None:
         pb = cb.points(512)[::8]
         ua = np.array([ca.nearest(p) for p in pb])
         k = int(np.argmin(np.linalg.norm(ca.point(ua) - pb, axis=-1)))
         u = float(ua[k])
+        v = float(cb.nearest(ca.point(u)))
     else:
-        u = float(near)
-    v = float(cb.nearest(ca.point(u)))
+        u, v = (float(x) for x in near)
 
     def s(x: float, hint: float) -> tuple[float, float]:
         w = cb.nearest(ca.point(x), hint)

@@ -63,7 +63,7 @@ class Touch:
     outline_a: Any
     outline_b: Any
     side: float = 1.0                   # n = side × (a curve's own normal), at the drawing
-    param: Optional[float] = None       # a curve's parameter at J
+    param: Any = None                   # a curve's parameter at J (two curves: the pair (u, v))
     kind: str = "sliding"
     bodies: tuple = ("", "")            # the joint's bodies a, b (set by `find_touch`)
 
@@ -155,7 +155,7 @@ def closest(first: list, second: list, pair: Callable[[Any, Any], Any], gap: Cal
     return min(candidates, key=lambda c: abs(gap(c)))
 
 
-def find_touch(inst: Any, joint: Any, first: list, second: list, near: Optional[float] = None) -> Touch:
+def find_touch(inst: Any, joint: Any, first: list, second: list, near: Any = None) -> Touch:
     """The touching pair of outlines of the joint's two bodies (the one with the smallest
     gap), checked to touch: else a `geometry` error with the gap. `near`: a curve's parameter
     close to the contact (a sweep's previous one), which spares the search along the curve."""
@@ -172,7 +172,7 @@ def find_touch(inst: Any, joint: Any, first: list, second: list, near: Optional[
     return touch
 
 
-def _pair(inst: Any, oa: Any, ob: Any, near: Optional[float] = None) -> Optional[Touch]:
+def _pair(inst: Any, oa: Any, ob: Any, near: Any = None) -> Optional[Touch]:
     """The contact of outline oa (body a) and ob (body b), or None if they cannot touch."""
     if isinstance(oa, (Circle, Line)) and isinstance(ob, Point):
         return _point_exact(inst, oa, ob)
@@ -239,9 +239,13 @@ def _circle_line(inst: Any, ln: Line, c: Circle) -> Touch:
     return Touch(sub(c.center, scale(c.radius, n)), n, None, c.radius, gap, ln, c, kind="circle-line")
 
 
-def _on_curve(inst: Any, curve: Curve, ob: Any, near: Optional[float] = None) -> Optional[Touch]:
+def _on_curve(inst: Any, curve: Curve, ob: Any, hint: Any = None) -> Optional[Touch]:
     """b's point, circle, line or curve touching a's curve (numeric; `curve_search` finds
-    where, from a sweep's last contact `near` when given)."""
+    where, from a sweep's last contact `hint` when given: a parameter, or two for two
+    curves)."""
+    if isinstance(ob, Curve):
+        return _curves(curve, ob, hint if isinstance(hint, tuple) else None)
+    near = None if isinstance(hint, tuple) else hint
     if isinstance(ob, (Point, Circle)):
         c = _floats(inst, ob.at if isinstance(ob, Point) else ob.center)
         r = 0.0 if isinstance(ob, Point) else float(inst.num(ob.radius))
@@ -263,8 +267,6 @@ def _on_curve(inst: Any, curve: Curve, ob: Any, near: Optional[float] = None) ->
             (u, h), s = min(heights, key=lambda x: abs(x[0][1]))
         side = float(np.sign(np.dot(curve.normal(u), -s * m)) or 1.0)
         return _curve_touch(curve, u, side, tuple(curve.point(u)), None, h, ob, "line-curve")
-    if isinstance(ob, Curve):
-        return _curves(curve, ob, near)
     return None
 
 
@@ -279,18 +281,22 @@ def _curve_touch(curve: Curve, u: float, side: float, point: tuple, radius_b: An
                  curve, ob, side, float(u), kind)
 
 
-def _curves(ca: Curve, cb: Curve, near: Optional[float] = None) -> Optional[Touch]:
-    """Two curves: where they touch (`curve_search.curves_contact`); b's radius of curvature
-    ρb = (n_b·n)/κ_b along the common normal n."""
+def _curves(ca: Curve, cb: Curve, near: Optional[tuple[float, float]] = None) -> Optional[Touch]:
+    """Two curves: where they touch (`curve_search.curves_contact`); n = ± a's normal towards
+    the side b's curve lies on near J (its centre of curvature's, or the side away from a's
+    when b is straight there: never the sign of a gap that is round-off while they touch),
+    b's radius of curvature ρb = (n_b·n)/κ_b along it."""
     u, v = curves_contact(ca, cb, near)
     j = ca.point(u)
     n = ca.normal(u)
+    kb, nb = float(cb.curvature(v)), cb.normal(v)
+    towards = kb * float(np.dot(nb, n)) if abs(kb) >= 1e-12 else -float(ca.curvature(u))
+    side = -1.0 if towards < 0 else 1.0
     d = float(np.dot(cb.point(v) - j, n))
-    side = 1.0 if d >= 0 else -1.0
-    kb = float(cb.curvature(v))
-    nb = cb.normal(v)
     radius_b = None if abs(kb) < 1e-12 else float(np.dot(nb, side * n)) / kb
-    return _curve_touch(ca, u, side, tuple(j), radius_b, abs(d), cb, "curves")
+    touch = _curve_touch(ca, u, side, tuple(j), radius_b, abs(d), cb, "curves")
+    touch.param = (u, v)
+    return touch
 
 
 def _floats(inst: Any, v: Any) -> np.ndarray:
@@ -330,13 +336,13 @@ class Follow:
             return [self._on_curve(q, q.aux.get(self.key, self.touch.param))[0]]
         return [self._exact(q)]
 
-    def aux(self, q: Any) -> Optional[float]:
-        """The curve parameter at this pose (remembered for the next one)."""
+    def aux(self, q: Any) -> Any:
+        """The curve parameter at this pose (two curves: both), remembered for the next one."""
         if not isinstance(self.curve, Curve):
             return None
         return self._on_curve(q, q.aux.get(self.key, self.touch.param))[1]
 
-    def _on_curve(self, q: Any, u0: float) -> tuple[float, float]:
+    def _on_curve(self, q: Any, u0: Any) -> tuple[float, Any]:
         """(gap, parameter) of the element on the curve at pose q, from the parameter u0."""
         curve, ob, side = self.curve, self.element, self.touch.side
         back = _inverse(q, self.holder)
@@ -356,7 +362,7 @@ class Follow:
         other = Curve(ob.curve, tuple(back(q.point(self.other, ob.origin))),
                       ob.angle + _turned(q, self.other) - _turned(q, self.holder), ob.role)
         u, v = curves_contact(curve, other, near=u0)
-        return float(np.dot(other.point(v) - curve.point(u), side * curve.normal(u))), u
+        return float(np.dot(other.point(v) - curve.point(u), side * curve.normal(u))), (u, v)
 
     def _exact(self, q: Any) -> float:
         t, a, b = self.touch, self.a, self.b
