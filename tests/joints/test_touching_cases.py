@@ -86,11 +86,12 @@ CURVES = [
 
 @pytest.mark.parametrize("pair", CURVES, ids=lambda p: p.name)
 def test_curves_through_points_of_circles_move_as_the_circles(pair):
-    """A closed spline through 360 points of a circle is that circle to a few parts in 10⁶ in
-    curvature: the rocker moves as derived for the circles."""
+    """A closed spline through 360 points of a circle is that circle to O(h²) in curvature
+    (h = 1°: a few parts in 10⁴ between the points, less at them): the rocker moves as derived
+    for the circles."""
     tree = pair.tree()
     tree["ask"] = tree["ask"][:2]
     omega, alpha = (a["value"] for a in solve_data(tree)["answers"])
     want = pair.motion()
     assert omega == pytest.approx(want["omega"], rel=1e-6)
-    assert alpha == pytest.approx(want["alpha"], rel=1e-4)
+    assert alpha == pytest.approx(want["alpha"], rel=1e-3)

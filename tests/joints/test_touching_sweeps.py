@@ -14,6 +14,7 @@ import pytest
 from kinematika.commands import How, solve_data, sweep_run
 
 from .pairs import T2, circle_on_line, circles, line_on_circle, pin_on_circle
+from .test_higher_pairs import cam_model, cycloidal
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -102,3 +103,43 @@ def test_the_eccentric_cam_moves_to_where_its_sweep_goes():
     assert v == pytest.approx([0.0, 0.02 * 10 * math.cos(theta)], abs=1e-12)
     assert a == pytest.approx([0.0, -0.02 * 100 * math.sin(theta)], abs=1e-11)
     assert data["points"]["F@follower"]["position"][1] == pytest.approx(0.02 * math.sin(theta) + 0.05, abs=1e-12)
+
+
+def test_a_cam_moves_as_its_program_says():
+    """`kinematika solve examples/cam_roller_follower.yaml --move j1=30` (an internal error):
+    the roller at θ = 112.5° + 30° of the cycloidal rise, s = h(x − sin 2πx / 2π),
+    v = s'θ̇, a = s''θ̇² (Norton's eq. 8.6), ω = 2π."""
+    data = solve_data(EXAMPLES / "cam_roller_follower.yaml", how=How(move={"j1": 30}))
+    s, ds, dds = cycloidal(142.5)
+    w = 2 * math.pi
+    v, a = (x["value"] for x in data["answers"][:2])
+    assert data["points"]["F@follower"]["position"] == pytest.approx([0.0, 50 + s], abs=1e-9)
+    assert v == pytest.approx([0.0, ds * w], abs=1e-7)
+    assert a == pytest.approx([0.0, dds * w * w], abs=1e-5)
+
+
+@pytest.mark.parametrize("rotation", ["ccw", "cw"])
+def test_a_cam_moved_either_way_is_where_its_sweep_goes(rotation):
+    """A clockwise cam's program runs the other way: moved by −40° (its own sense), the
+    follower is where the program puts it, s(θ) at θ = 112.5° + 40°."""
+    tree = cam_model(112.5, "knife", s=cycloidal(112.5)[0])
+    tree["bodies"]["cam"]["cam"]["rotation"] = rotation
+    by = 40 if rotation == "ccw" else -40
+    data = solve_data(tree, how=How(move={"j1": by}))
+    assert data["points"]["F@follower"]["position"] == pytest.approx([0.0, 40 + cycloidal(152.5)[0]], abs=1e-9)
+
+
+@pytest.mark.parametrize("kind", ["curved_slot", "contact"])
+def test_a_curve_moves_with_its_body(kind):
+    """The pin on a curve through 360 points of a circle, the crank moved 40°: the rocker's
+    ω, α there as the four-bar's (the spline's curvature is the circle's to O(h²), h = 1°:
+    a few parts in 10⁴)."""
+    pair = pin_on_circle("pin on a curve", kind_a="curve")
+    tree = pair.tree(kind)
+    tree["ask"] = tree["ask"][:2]
+    data = solve_data(tree, how=How(move={"j1": 40}))
+    t2 = T2 + math.radians(40)
+    want = pair.motion(t2, float(pair.placed(np.array(t2))))
+    omega, alpha = (x["value"] for x in data["answers"])
+    assert omega == pytest.approx(want["omega"], rel=1e-6)
+    assert alpha == pytest.approx(want["alpha"], rel=1e-3)
