@@ -32,6 +32,8 @@ SCALE = 1e50                 # lengths and rates (ω, v/length, √(a/length)) b
 # sweeps -----------------------------------------------------------------------------------
 SWEEP_STEPS = 10_000_000     # increments of one sweep
 SWEEP_VALUES = 32_000_000    # rows × numbers per row held at once: 480 000 rows of a four-bar (under 1 GB on every path)
+SWEEP_TRAVEL = 1_000_000     # a sweep's or a move's travel (`by`, a `move` amount): at most this many turns of a
+                             # revolute, or times the mechanism's size along a prismatic (angles stay exact to 1e-9 rad)
 
 # symbolic work ----------------------------------------------------------------------------
 EXACT_WORK = 1_500_000       # steps of exact algebra a command may take (terms formed, products of

@@ -16,7 +16,7 @@ from ..errors import KinematikaError
 from ..expressions import Expr, ExpressionError, evaluate, parse
 from ..model.model import Model
 from ..model.overrides import numeric_parameters
-from .plan import driven_joints
+from .plan import check_travel, driven_joints
 
 DEGREES_PER_STEP = 1.0          # continuation steps of a revolute
 LENGTHS_PER_STEP = 0.02         # of a prismatic, in model sizes
@@ -79,6 +79,7 @@ def swept_to(model: Model, jid: str, amount: float) -> Any:
     from .run import Sweeper
 
     sweeper = Sweeper(model, jid)
+    check_travel(amount, model.joint(jid), sweeper.inst.scale, f"move.{jid}", "a move of")
     turns = model.joint(jid).kind.coordinate == "angle"
     per_step = DEGREES_PER_STEP if turns else LENGTHS_PER_STEP * sweeper.inst.scale
     steps = min(MAX_STEPS, max(1, math.ceil(abs(amount) / per_step)))

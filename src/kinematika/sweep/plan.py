@@ -84,7 +84,21 @@ def make_plan(inst: Instant, joint: Optional[str] = None, by: Optional[float] = 
         raise KinematikaError("schema", f"by must be a number, got {by!r}", "sweep.by")
     if not math.isfinite(by):
         raise KinematikaError("schema", "by must be a finite number", "sweep.by")
+    check_travel(float(by), j, inst.scale, "sweep.by", "by")
     return Plan(j, driver, float(by), int(steps))
+
+
+def check_travel(amount: float, joint: Joint, scale: float, where: str, what: str) -> None:
+    """A sweep's `by` or a move's amount within `limits.SWEEP_TRAVEL`: so many turns of a
+    revolute (degrees), or so many times the mechanism's size along a prismatic; beyond, the
+    angles and places would be round-off, so it is a `schema` error naming the limit."""
+    turns = joint.kind.coordinate == "angle"
+    most = limits.SWEEP_TRAVEL * (360.0 if turns else scale)
+    if not abs(amount) <= most:
+        unit = f"{most:.6g}° ({limits.SWEEP_TRAVEL:,} turns)" if turns else \
+            f"{most:.6g} ({limits.SWEEP_TRAVEL:,} times the mechanism's size)"
+        raise KinematikaError("schema", f"{what} {amount:.6g} is more than a sweep or move travels: at most {unit}",
+                              where)
 
 
 def values_per_row(model: Model) -> int:
