@@ -36,10 +36,22 @@ def moved(model: Model, amounts: Mapping[str, Any]) -> Model:
     if steps and any(p.value is None for p in model.parameters.values()):
         from .symbolic_move import symbolic_moved
 
-        return symbolic_moved(model, steps)
+        try:
+            return symbolic_moved(model, steps)
+        except KinematikaError as err:        # the symbols cannot follow: at the figure's numbers
+            if err.kind != "schema" or not _drawn_in_numbers(model):
+                raise
+            from .posing import at_draw_numbers
+
+            model, _ = at_draw_numbers(model, "a move", "moved", err.message)
     for jid, amount, where in steps:
         model = _advance(model, jid, amount, where)
     return model
+
+
+def _drawn_in_numbers(model: Model) -> bool:
+    """Whether every symbol of the model has a `draw_at` number (its figure's)."""
+    return all(n in model.draw_at for n, p in model.parameters.items() if p.value is None)
 
 
 def _amount(model: Model, raw: Any, where: str) -> float:

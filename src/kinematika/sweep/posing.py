@@ -5,9 +5,11 @@ the sweep layer; every view (the command line, Python, the page, explanations, f
 comes here through `kinematika.api`."""
 from __future__ import annotations
 
+import warnings
 from typing import Any, Mapping, Optional
 
 from ..engine.terms import MECHANICS, Terms
+from ..errors import KinematikaError, KinematikaWarning
 from ..model.model import Model
 from ..model.overrides import with_parameters
 from ..model.source import ModelLike, as_model
@@ -32,6 +34,26 @@ def prepare(source: ModelLike, *, fmt: Optional[str] = None,
 
         model = moved(model, amounts)
     return model
+
+
+def at_draw_numbers(model: Model, what: str, done: str, why: str = "") -> tuple[Model, list[KinematikaWarning]]:
+    """`model`'s symbols given their `draw_at` numbers, for the work that needs numbers (`what`:
+    a sweep; a move the symbols cannot follow exactly), and the warning that says so (`done`:
+    what was done at them; `why`, when given, ends it), also issued as a Python warning (the
+    command line prints it). A symbol without a `draw_at` number is a `schema` error naming it."""
+    symbols = [n for n, p in model.parameters.items() if p.value is None]
+    if not symbols:
+        return model, []
+    missing = [n for n in symbols if n not in model.draw_at]
+    if missing:
+        raise KinematikaError("schema", f"{what} needs numbers: give {', '.join(missing)} a value, or the "
+                              "model a `draw_at` number for each symbol", "parameters")
+    values = {n: repr(float(model.draw_at[n])) for n in symbols}
+    shown = ", ".join(f"{n} = {model.draw_at[n]:g}" for n in symbols)
+    note = KinematikaWarning(f"{done} at the draw_at numbers of its symbols: {shown}" + (f" ({why})" if why else ""),
+                             "draw_at")
+    warnings.warn(note, stacklevel=2)
+    return with_parameters(model, values), [note]
 
 
 def solved(source: ModelLike, symbolic: bool | None = None, terms: Terms = MECHANICS,

@@ -33,6 +33,7 @@ class SweepResult:
     dimension: int = 2
     method: str = "closed form"        # "closed form" (Assur groups) or "newton"
     frame: str = "ground"
+    warnings: list = field(default_factory=list)   # KinematikaWarning: swept at draw_at numbers, ...
 
     def __len__(self) -> int:
         return len(self.coordinate)
@@ -44,11 +45,14 @@ class SweepResult:
         largest value of the same quantity) written as 0, as `solve` does.
         """
         scales = self.scales()
-        return {"coordinate": _column(clean(self.coordinate, np.abs(self.coordinate).max(initial=0.0))),
-                "bodies": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
-                           for name, values in self.bodies.items()},
-                "points": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
-                           for name, values in self.points.items()}}
+        out = {"coordinate": _column(clean(self.coordinate, np.abs(self.coordinate).max(initial=0.0))),
+               "bodies": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
+                          for name, values in self.bodies.items()},
+               "points": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
+                          for name, values in self.points.items()}}
+        if self.warnings:                       # an extension, as `solve`'s: what to know of the rows
+            out["warnings"] = [w.as_json() for w in self.warnings]
+        return out
 
     def json_chunks(self) -> Iterator[bytes]:
         """The JSON of `to_json` as UTF-8 pieces, each column written by orjson straight from
@@ -83,7 +87,10 @@ class SweepResult:
                 for k, (q, v) in enumerate(values.items()):
                     yield (b"," if k else b"") + orjson.dumps(q) + b":" + column(v, scales[q])
                 yield b"}"
-        yield b"}}"
+        yield b"}"
+        if self.warnings:
+            yield b',"warnings":' + orjson.dumps([w.as_json() for w in self.warnings])
+        yield b"}"
 
     def scales(self) -> dict[str, float]:
         """Each quantity's scale: its largest magnitude, or what the motion makes it at least

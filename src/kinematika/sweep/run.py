@@ -46,11 +46,9 @@ class Sweeper:
     def __init__(self, source: Any, joint: Optional[str] = None,
                  flips: Optional[dict[int, float]] = None) -> None:
         arrays_on_heap()                     # a sweep's speed is its own (`memory`)
-        model = _as_model(source)
-        symbols = [n for n, p in model.parameters.items() if p.value is None]
-        if symbols:
-            raise KinematikaError("schema", f"a sweep needs numbers: give a value to "
-                                  f"{', '.join(symbols)}", "parameters")
+        from .posing import at_draw_numbers
+
+        model, self.warnings = at_draw_numbers(_as_model(source), "a sweep", "swept")
         self.model = model
         self.inst = instantiate(model, False)
         self.joint, self.driver = swept_joint(model, joint if joint is not None else
@@ -147,7 +145,8 @@ class Sweeper:
         pts = {name: pts[name] for name in self.names}
         coincide(self.model, ordered, pts)
         return SweepResult(plan.coordinate, plan.joint.id, ok, ordered, pts, dead,
-                           plan.unit, self.model.name, self.model.dimension, self.method, self.model.frame)
+                           plan.unit, self.model.name, self.model.dimension, self.method, self.model.frame,
+                           warnings=list(self.warnings))
 
 
 def _rows(values: Any, bad: Optional[np.ndarray], n: int) -> np.ndarray:
