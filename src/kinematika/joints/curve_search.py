@@ -76,21 +76,22 @@ def _g(curve: Any, c: np.ndarray, u: float) -> tuple[float, float]:
 def _newton_from(curve: Any, c: np.ndarray, u: float) -> Optional[float]:
     """Plain Newton on g from a hint (a sweep's previous contact); None if it wanders off
     (more than a quarter of the domain), does not settle, or settles on a stationary point of
-    the other kind (a farthest point for a nearest one: g′ of the other sign)."""
+    the other kind (a farthest point for a nearest one: g′ of the other sign there than at
+    the hint, the sign read from the steps' own g′)."""
     a, b = curve.curve.domain
     width = (b - a) / 4 if np.isfinite(b - a) else max(1.0, abs(u))
-    x = u
-    kind = _g(curve, c, u)[1] > 0
+    x, kind = u, None
     for _ in range(16):
         g, slope = _g(curve, c, x)
         if slope == 0:
             return None
+        kind = slope > 0 if kind is None else kind
         step = g / slope
         x -= step
         if abs(x - u) > width:
             return None
         if abs(step) <= 1e-13 * max(1.0, abs(x)):
-            return float(curve.curve.wrap(x)) if (_g(curve, c, x)[1] > 0) == kind else None
+            return float(curve.curve.wrap(x)) if (slope > 0) == kind else None
     return None
 
 

@@ -333,24 +333,25 @@ class Follow:
 
     def __call__(self, q: Any, _: float) -> list:
         if isinstance(self.curve, Curve):
-            return [self._on_curve(q, q.aux.get(self.key, self.touch.param))[0]]
+            return [self._on_curve(q, q.aux.get(self.key, self.touch.param), gap=True)[0]]
         return [self._exact(q)]
 
     def aux(self, q: Any) -> Any:
         """The curve parameter at this pose (two curves: both), remembered for the next one."""
         if not isinstance(self.curve, Curve):
             return None
-        return self._on_curve(q, q.aux.get(self.key, self.touch.param))[1]
+        return self._on_curve(q, q.aux.get(self.key, self.touch.param), gap=False)[1]
 
-    def _on_curve(self, q: Any, u0: Any) -> tuple[float, Any]:
-        """(gap, parameter) of the element on the curve at pose q, from the parameter u0."""
+    def _on_curve(self, q: Any, u0: Any, gap: bool) -> tuple[float, Any]:
+        """(gap, parameter) of the element on the curve at pose q, from the parameter u0 (the
+        gap left 0 unless asked for: the parameter alone is what a sweep remembers)."""
         curve, ob, side = self.curve, self.element, self.touch.side
         back = _inverse(q, self.holder)
         if isinstance(ob, (Point, Circle)):
             p = back(q.point(self.other, ob.at if isinstance(ob, Point) else ob.center))
             radius = float(ob.radius) if isinstance(ob, Circle) else 0.0
             u = circle_contact(curve, p, radius, near=u0)
-            return float(np.dot(p - curve.point(u), side * curve.normal(u))) - radius, u
+            return (float(np.dot(p - curve.point(u), side * curve.normal(u))) - radius if gap else 0.0), u
         if isinstance(ob, Line):
             through = back(q.point(self.other, ob.through))
             e = _turn_back(q, self.holder, q.turn(self.other, ob.direction))
@@ -362,7 +363,7 @@ class Follow:
         other = Curve(ob.curve, tuple(back(q.point(self.other, ob.origin))),
                       ob.angle + _turned(q, self.other) - _turned(q, self.holder), ob.role)
         u, v = curves_contact(curve, other, near=u0)
-        return float(np.dot(other.point(v) - curve.point(u), side * curve.normal(u))), (u, v)
+        return (float(np.dot(other.point(v) - curve.point(u), side * curve.normal(u))) if gap else 0.0), (u, v)
 
     def _exact(self, q: Any) -> float:
         t, a, b = self.touch, self.a, self.b
