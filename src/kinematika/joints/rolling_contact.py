@@ -14,7 +14,7 @@ from ..algebra.vectors import add, cross3, dot, scale, sub
 from ..errors import KinematikaError
 from ..shapes import Circle, Disc, Line, Plane
 from .base import rounding_hint
-from .tangency import circles_tangency
+from .tangency import circles_tangency, tangency
 from .touching import closest
 
 Instant = Any       # the instant (`engine.instant.Instant`): its shapes, points and algebra
@@ -91,7 +91,7 @@ def _circles(inst: Instant, joint: Joint, ca: Circle, cb: Circle) -> tuple[float
     dist = inst.num(dot(d, d)) ** 0.5
     if dist <= 1e-12 * inst.scale:
         return None   # concentric circles never roll on each other
-    way = circles_tangency(ca, cb, inst.num)
+    way = tangency(dist, inst.num(ca.radius), inst.num(cb.radius))
     mu = inst.backend.simplify(way.ratio(ca.radius, cb.radius))
     point = add(ca.center, scale(mu, d))
     sa, sb = joint.a, joint.b

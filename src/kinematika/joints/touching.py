@@ -38,7 +38,7 @@ from .base import rounding_hint
 from .curve_search import circle_contact, curves_contact, support
 from .derivatives import sliding
 from .positions import differences
-from .tangency import circles_tangency
+from .tangency import tangency
 
 
 @dataclass(frozen=True)
@@ -218,10 +218,11 @@ def _circles(inst: Any, ca: Circle, cb: Circle) -> Optional[Touch]:
     bk = inst.backend
     d = sub(cb.center, ca.center)
     dist = bk.sqrt(dot(d, d))
-    if inst.num(dist) <= 1e-12 * inst.scale:
+    apart = float(inst.num(dist))
+    if apart <= 1e-12 * inst.scale:
         return None
     u = tuple(bk.simplify(c / dist) for c in d)
-    way = circles_tangency(ca, cb, inst.num)
+    way = tangency(apart, float(inst.num(ca.radius)), float(inst.num(cb.radius)))
     ra, rb = ca.radius, cb.radius
     place_a, _ = way.places(ra, rb)
     radius_a, radius_b = way.radii(ra, rb)
