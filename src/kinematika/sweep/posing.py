@@ -36,11 +36,13 @@ def prepare(source: ModelLike, *, fmt: Optional[str] = None,
     return model
 
 
-def at_draw_numbers(model: Model, what: str, done: str, why: str = "") -> tuple[Model, list[KinematikaWarning]]:
+def at_draw_numbers(model: Model, what: str, done: str, why: str = "",
+                    warn: bool = True) -> tuple[Model, list[KinematikaWarning]]:
     """`model`'s symbols given their `draw_at` numbers, for the work that needs numbers (`what`:
     a sweep; a move the symbols cannot follow exactly), and the warning that says so (`done`:
-    what was done at them; `why`, when given, ends it), also issued as a Python warning (the
-    command line prints it). A symbol without a `draw_at` number is a `schema` error naming it."""
+    what was done at them; `why`, when given, ends it), issued as a Python warning (the command
+    line prints it) unless `warn` is False (the caller issues it once the work is under way).
+    A symbol without a `draw_at` number is a `schema` error naming it."""
     symbols = [n for n, p in model.parameters.items() if p.value is None]
     if not symbols:
         return model, []
@@ -52,7 +54,8 @@ def at_draw_numbers(model: Model, what: str, done: str, why: str = "") -> tuple[
     shown = ", ".join(f"{n} = {model.draw_at[n]:g}" for n in symbols)
     note = KinematikaWarning(f"{done} at the draw_at numbers of its symbols: {shown}" + (f" ({why})" if why else ""),
                              "draw_at")
-    warnings.warn(note, stacklevel=2)
+    if warn:
+        warnings.warn(note, stacklevel=2)
     return with_parameters(model, values), [note]
 
 

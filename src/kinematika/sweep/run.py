@@ -7,6 +7,7 @@ with continuation from the previous one and solved by the engine (`newton`).
 """
 from __future__ import annotations
 
+import warnings
 from typing import Any, Callable, Optional
 
 import numpy as np
@@ -48,7 +49,7 @@ class Sweeper:
         arrays_on_heap()                     # a sweep's speed is its own (`memory`)
         from .posing import at_draw_numbers
 
-        model, self.warnings = at_draw_numbers(_as_model(source), "a sweep", "swept")
+        model, self.warnings = at_draw_numbers(_as_model(source), "a sweep", "swept", warn=False)
         self.model = model
         self.inst = instantiate(model, False)
         self.joint, self.driver = swept_joint(model, joint if joint is not None else
@@ -144,6 +145,8 @@ class Sweeper:
                 pts[ref] = arrays
         pts = {name: pts[name] for name in self.names}
         coincide(self.model, ordered, pts)
+        for note in self.warnings:          # said with the rows it is true of
+            warnings.warn(note, stacklevel=3)
         return SweepResult(plan.coordinate, plan.joint.id, ok, ordered, pts, dead,
                            plan.unit, self.model.name, self.model.dimension, self.method, self.model.frame,
                            warnings=list(self.warnings))
