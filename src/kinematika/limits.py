@@ -36,6 +36,8 @@ SWEEP_LIMITS = 10_000        # limit positions one sweep passes through (a four-
                              # the motion stops when it is back at the drawing)
 CONTINUATION_STEPS = 2_000   # arclength steps between two rows of a sweep on Newton's path (a limit
                              # position of the examples takes under 50)
+SWEEP_TRAVEL = 1_000_000     # a sweep's or a move's travel (`by`, a `move` amount): at most this many turns of a
+                             # revolute, or times the mechanism's size along a prismatic (angles stay exact to 1e-9 rad)
 
 # symbolic work ----------------------------------------------------------------------------
 EXACT_WORK = 1_500_000       # steps of exact algebra a command may take (terms formed, products of

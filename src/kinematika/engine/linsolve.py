@@ -56,8 +56,12 @@ CONSISTENT = 1e-6   # relative residual of redundant conditions that still agree
 
 
 def solve_numeric(an: Analysis | SparseAnalysis, b: np.ndarray, labels: list[str], wheres: list[str],
-                  is_driver: np.ndarray, check: bool = True) -> np.ndarray:
-    """Least squares with the analysis' SVD (or sparse LU); a residual means conflicting conditions."""
+                  is_driver: np.ndarray, check: bool = True, natural: float = 0.0) -> np.ndarray:
+    """Least squares with the analysis' SVD (or sparse LU); a residual means conflicting
+    conditions. It is measured against the size of the right side and of the solution, and
+    at least against `natural`, the size they have in the mechanism's own units (its rate, or
+    the rate squared for accelerations): a right side that is all round-off (a train turning
+    rigidly at a constant rate: every acceleration term cancels) is no conflict."""
     bs = b * an.scaled.row_scale
     if isinstance(an, SparseAnalysis):
         xs = an.lu.refined(bs) if isinstance(an.lu, BlockLU) else an.lu.solve(bs)
@@ -67,7 +71,7 @@ def solve_numeric(an: Analysis | SparseAnalysis, b: np.ndarray, labels: list[str
     if check:
         residual = an.scaled.matrix @ xs - bs
         top = 1.0 if isinstance(an, SparseAnalysis) else np.abs(an.scaled.matrix).max(initial=0.0)
-        size = max(np.abs(bs).max(initial=0.0), top * np.abs(xs).max(initial=0.0), 1e-300)
+        size = max(np.abs(bs).max(initial=0.0), top * np.abs(xs).max(initial=0.0), natural, 1e-300)
         if np.abs(residual).max(initial=0.0) > CONSISTENT * size:
             raise conflict_error(residual, labels, wheres, is_driver, an.diagnosis)
     return xs * an.scaled.col_scale

@@ -121,13 +121,15 @@ class InstantSolver:
         return out
 
     def solve_linear(self, b: list[Any], check: bool = True,
-                     labels: list[str] | None = None) -> list[Any]:
-        """The solution of A x = b with the analysed matrix (exact for a symbolic instant)."""
+                     labels: list[str] | None = None, level: int = 0) -> list[Any]:
+        """The solution of A x = b with the analysed matrix (exact for a symbolic instant).
+        `level` 1 (velocities) or 2 (accelerations): the right side's natural size is the
+        model's rate to that power (`linsolve.solve_numeric`'s check of redundant rows)."""
         inst = self.inst
         b_num = np.array([inst.num(v) for v in b], dtype=float)
         with np.errstate(all="ignore"):
             x_num = solve_numeric(self.analysis, b_num, labels or self.labels, self.wheres,
-                                  self.is_driver, check)
+                                  self.is_driver, check, inst.rate ** level if level else 0.0)
         if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
             raise KinematikaError("schema", "values-overflow", "drivers")
         if not inst.symbolic:
@@ -152,12 +154,12 @@ class InstantSolver:
         # symbols are solved as written (as fast, and their points' motions read shorter)
         if inst.symbolic and (self.space.dim == 2 or not inst.probe):
             return self._solve_exact()
-        x_v = self.solve_linear(self.b_v, check=True)
+        x_v = self.solve_linear(self.b_v, check=True, level=1)
         velocities = self._motion(x_v, None)
         # the acceleration system has the same matrix: only its known terms are built
         rows_a = self.rows(AccelerationLevel(KnownTerms(u), inst.ref, velocities))
         # redundant conditions must agree at this level too: an α the joints forbid is a conflict
-        x_a = self.solve_linear([-r.lin.const for r in rows_a], labels=[r.label for r in rows_a])
+        x_a = self.solve_linear([-r.lin.const for r in rows_a], labels=[r.label for r in rows_a], level=2)
         return self._motion(x_v, x_a)
 
     def _solve_exact(self) -> Motion:
@@ -215,7 +217,8 @@ class InstantSolver:
 
         b_num = np.array([standin.num(v) for v in b], dtype=float)
         with np.errstate(all="ignore"):
-            x_num = solve_numeric(self.analysis, b_num, labels, self.wheres, self.is_driver, True)
+            x_num = solve_numeric(self.analysis, b_num, labels, self.wheres, self.is_driver, True,
+                                  self.inst.rate ** (1 if prefix == "v" else 2))
         if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
             raise KinematikaError("schema", "values-overflow", "drivers")
 

@@ -37,7 +37,7 @@ class Contact(JointKind):
         """One: the outlines keep touching; sliding along the tangent is free."""
         return 1
 
-    def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
+    def prepare(self, inst: Any, joint: Any, near: Any = None) -> JointGeometry:
         """Where the two outlines touch at this instant: the contact J, common normal n and
         radii of curvature (`geo.contact`), the branch nearest `near` when given."""
         geo = super().prepare(inst, joint)

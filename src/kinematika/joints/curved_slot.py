@@ -45,7 +45,7 @@ class CurvedSlot(JointKind):
         rotation are free."""
         return 1
 
-    def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
+    def prepare(self, inst: Any, joint: Any, near: Any = None) -> JointGeometry:
         """The pin `at` on the first body's circle or curve at this instant: the contact (normal
         n, radius of curvature ρ) and `along`, the slot's tangent t = n turned a quarter turn (a
         circle's normal points outward, a curve's is its own). A first body without a circle or

@@ -13,13 +13,14 @@ from dataclasses import replace
 from typing import Any, Optional
 
 from ..algebra.vectors import sub
+from ..errors import Said
 from ..shapes import Circle
 from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
 from .rolling_contact import drawn_pair, find_contact
-from ..errors import Said
+from .tangency import circles_tangency
 
 
 class Rolling(JointKind):
@@ -81,7 +82,7 @@ class Rolling(JointKind):
         ca, cb = drawn_pair(inst, j)
         a, b = j.a, j.b
         if isinstance(ca, Circle) and isinstance(cb, Circle):
-            return _circles(j.id, a, b, ca, cb, geo.contact.kind)
+            return _circles(j.id, a, b, ca, cb)
         if isinstance(ca, Circle):
             return _on_line(ca, a, cb, b, -1.0)
         return _on_line(cb, b, ca, a, 1.0)
@@ -94,10 +95,9 @@ class Rolling(JointKind):
 KIND = Rolling()
 
 
-def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle, contact: str) -> Any:
-    """Circle on circle, outside or inside (the contact's kind)."""
-    ra, rb = float(ca.radius), float(cb.radius)
-    rho_a, rho_b = signed_radii(contact, ra, rb, ra >= rb)
+def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle) -> Any:
+    """Circle on circle, outside or inside (as they touch at the drawing, `tangency`)."""
+    rho_a, rho_b = circles_tangency(ca, cb).places(float(ca.radius), float(cb.radius))
     gap = rho_a - rho_b
     d0 = differences(cb.center, ca.center)
     psi0 = math.atan2(d0[1], d0[0])
@@ -117,18 +117,10 @@ def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle, contact: str) -> 
     return circles
 
 
-def signed_radii(contact: str, ra: Any, rb: Any, a_outer: bool) -> tuple[Any, Any]:
-    """(ρa, ρb): two circles' radii signed so that their contact is Cₐ + ρₐ u = C_b + ρ_b u,
-    u the unit vector from centre a to centre b: outside each other (ra, −rb); inside,
-    (ra, rb) when a is the outer circle, (−ra, −rb) when b is."""
-    if contact == "external":
-        return ra, -rb
-    return (ra, rb) if a_outer else (-ra, -rb)
-
-
 def arc_slip(rho_a: Any, rho_b: Any, psi: Any, phi_a: Any, phi_b: Any) -> Any:
     """The arcs rolled on a's circle less those on b's, since the drawing, when the line of
-    centres has turned by ψ and the bodies by φa, φb: (ρa − ρb) ψ + ρb φb − ρa φa. Rolling
+    centres has turned by ψ and the bodies by φa, φb: (ρa − ρb) ψ + ρb φb − ρa φa, ρa and ρb
+    the contact's places along the line of centres (`tangency.Tangency.places`). Rolling
     without slipping keeps it 0 (on numbers, formulas or arrays): solved for φb, a planet
     (radius r) on a fixed sun (R) whose arm turns by ψ turns by (R + r) ψ / r, and together
     for every pair of a gear train, Willis's equations (`sweep.carried`)."""

@@ -14,6 +14,7 @@ from ..algebra.vectors import add, cross3, dot, scale, sub
 from ..errors import KinematikaError, Num, Said
 from ..shapes import Circle, Disc, Line, Plane
 from .base import rounding_hint
+from .tangency import circles_tangency, tangency
 from .touching import closest
 
 Instant = Any       # the instant (`engine.instant.Instant`): its shapes, points and algebra
@@ -85,17 +86,8 @@ def _circles(inst: Instant, joint: Joint, ca: Circle, cb: Circle) -> tuple[float
     dist = inst.num(dot(d, d)) ** 0.5
     if dist <= 1e-12 * inst.scale:
         return None   # concentric circles never roll on each other
-    ra, rb = inst.num(ca.radius), inst.num(cb.radius)
-    gaps = {"external": dist - (ra + rb), "internal": dist - abs(ra - rb)}
-    kind = min(gaps, key=lambda k: abs(gaps[k]))
-    a_outer = ra >= rb
-    if kind == "external":
-        mu = ca.radius / (ca.radius + cb.radius)
-    elif a_outer:
-        mu = ca.radius / (ca.radius - cb.radius)
-    else:
-        mu = -ca.radius / (cb.radius - ca.radius)
-    mu = inst.backend.simplify(mu)
+    way = tangency(dist, inst.num(ca.radius), inst.num(cb.radius))
+    mu = inst.backend.simplify(way.ratio(ca.radius, cb.radius))
     point = add(ca.center, scale(mu, d))
     sa, sb = joint.a, joint.b
 
@@ -107,11 +99,9 @@ def _circles(inst: Instant, joint: Joint, ca: Circle, cb: Circle) -> tuple[float
         aa, ab = motion.point_acceleration(sa, ca.center), motion.point_acceleration(sb, cb.center)
         return add(aa, scale(mu, sub(ab, aa)))
 
-    unit = scale(1 / inst.backend.sqrt(dot(d, d)), d)
-    normal = unit if kind == "external" or a_outer else scale(-1, unit)
-    return gaps[kind], Contact(joint, point, kind, jdot, jddot,
-                               tuple(inst.backend.simplify(c) for c in normal),
-                               ((sa, ca.center), (sb, cb.center)), mu)
+    normal = scale(way.sense / inst.backend.sqrt(dot(d, d)), d)
+    return way.gap, Contact(joint, point, way.kind, jdot, jddot, tuple(inst.backend.simplify(c) for c in normal),
+                            ((sa, ca.center), (sb, cb.center)), mu)
 
 
 def _circle_line(inst: Instant, joint: Joint, c: Circle, cbody: str, ln: Line, lbody: str,
@@ -224,12 +214,8 @@ def drawn_pair(inst: Instant, joint: Joint) -> tuple:
 
 
 def _drawn_gap(sa: Any, sb: Any) -> float | None:
-    import math
-
     if isinstance(sa, Circle) and isinstance(sb, Circle):
-        dist = math.dist(sa.center, sb.center)
-        ra, rb = float(sa.radius), float(sb.radius)
-        return min(abs(dist - ra - rb), abs(dist - abs(ra - rb)))
+        return abs(circles_tangency(sa, sb).gap)
     if isinstance(sa, Line):
         sa, sb = sb, sa
     if isinstance(sa, Circle) and isinstance(sb, Line):

@@ -31,7 +31,8 @@ from ..engine.instant import Instant, instantiate
 from ..engine.turns import moves_with, turn_for
 from ..errors import KinematikaError, Said
 from ..expressions import parse
-from ..joints.rolling import arc_slip, signed_radii
+from ..joints.rolling import arc_slip
+from ..joints.tangency import circles_tangency
 from ..model.model import Model, Turn
 from ..shapes import Circle
 
@@ -188,7 +189,7 @@ class _Finder:
             holders = self._holding(pair[0][1].center, pair[1][1].center, among=self.model.bodies) if pair else []
             if pair and holders:
                 (ca, na), (cb, nb) = pair
-                rho_a, rho_b = signed_radii(_contact(na, nb), ca.radius, cb.radius, na.radius >= nb.radius)
+                rho_a, rho_b = circles_tangency(na, nb).places(ca.radius, cb.radius)
                 equations.append(arc_slip(rho_a, rho_b, phi[holders[0]], phi[j.a], phi[j.b]))
         solutions = sympy.linsolve(equations, list(unknown.values())) if equations and unknown else sympy.EmptySet
         out: dict[str, Form] = {}
@@ -208,7 +209,7 @@ class _Finder:
         for ea, na in zip(self.inst.shapes[j.a], numeric[j.a]):
             for eb, nb in zip(self.inst.shapes[j.b], numeric[j.b]):
                 if isinstance(na, Circle) and isinstance(nb, Circle):
-                    gap = abs(_gap(na, nb))
+                    gap = abs(circles_tangency(na, nb).gap)
                     if best is None or gap < best[0]:
                         best = (gap, (ea, na), (eb, nb))
         return None if best is None else (best[1], best[2])
@@ -276,18 +277,6 @@ class _Finder:
             return False
         turn = np.arctan2(d[:, 1], d[:, 0]) - math.atan2(d[0, 1], d[0, 0])
         return self._agrees(body, turn)
-
-
-def _gap(a: Circle, b: Circle) -> float:
-    dist = math.dist(a.center, b.center)
-    return min(dist - (a.radius + b.radius), dist - abs(a.radius - b.radius), key=abs)
-
-
-def _contact(a: Circle, b: Circle) -> str:
-    """How two circles at the probe values touch: "external" or "internal"."""
-    dist = math.dist(a.center, b.center)
-    outside, inside = abs(dist - (a.radius + b.radius)), abs(dist - abs(a.radius - b.radius))
-    return "external" if outside <= inside else "internal"
 
 
 def _simplified(x: Any) -> Any:

@@ -12,11 +12,11 @@ import dataclasses
 import math
 from typing import Any, Mapping
 
-from ..errors import KinematikaError, Num
+from ..errors import KinematikaError, Num, said_of
 from ..expressions import Expr, ExpressionError, evaluate, parse
 from ..model.model import Model
 from ..model.overrides import numeric_parameters
-from .plan import driven_joints
+from .plan import check_travel, driven_joints
 
 DEGREES_PER_STEP = 1.0          # continuation steps of a revolute
 LENGTHS_PER_STEP = 0.02         # of a prismatic, in model sizes
@@ -36,10 +36,22 @@ def moved(model: Model, amounts: Mapping[str, Any]) -> Model:
     if steps and any(p.value is None for p in model.parameters.values()):
         from .symbolic_move import symbolic_moved
 
-        return symbolic_moved(model, steps)
+        try:
+            return symbolic_moved(model, steps)
+        except KinematikaError as err:        # the symbols cannot follow: at the figure's numbers
+            if err.kind != "schema" or not _drawn_in_numbers(model):
+                raise
+            from .posing import at_draw_numbers
+
+            model, _ = at_draw_numbers(model, "move", said_of(err))
     for jid, amount, where in steps:
         model = _advance(model, jid, amount, where)
     return model
+
+
+def _drawn_in_numbers(model: Model) -> bool:
+    """Whether every symbol of the model has a `draw_at` number (its figure's)."""
+    return all(n in model.draw_at for n, p in model.parameters.items() if p.value is None)
 
 
 def _amount(model: Model, raw: Any, where: str) -> float:
@@ -77,6 +89,7 @@ def swept_to(model: Model, jid: str, amount: float) -> Any:
     from .run import Sweeper
 
     sweeper = Sweeper(model, jid)
+    check_travel(amount, model.joint(jid), sweeper.inst.scale, f"move.{jid}", "a move of")
     turns = model.joint(jid).kind.coordinate == "angle"
     per_step = DEGREES_PER_STEP if turns else LENGTHS_PER_STEP * sweeper.inst.scale
     steps = min(MAX_STEPS, max(1, math.ceil(abs(amount) / per_step)))

@@ -15,7 +15,7 @@ from typing import Optional
 import numpy as np
 
 from .. import limits
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num
 from ..engine.instant import Instant
 from ..model.model import Driver, Joint, Model
 
@@ -81,7 +81,19 @@ def make_plan(inst: Instant, joint: Optional[str] = None, by: Optional[float] = 
         raise KinematikaError("schema", "by-number", "sweep.by", got=repr(by))
     if not math.isfinite(by):
         raise KinematikaError("schema", "by-finite", "sweep.by")
+    check_travel(float(by), j, inst.scale, "sweep.by", "by")
     return Plan(j, driver, float(by), int(steps))
+
+
+def check_travel(amount: float, joint: Joint, scale: float, where: str, what: str) -> None:
+    """A sweep's `by` or a move's amount within `limits.SWEEP_TRAVEL`: so many turns of a
+    revolute (degrees), or so many times the mechanism's size along a prismatic; beyond, the
+    angles and places would be round-off, so it is a `schema` error naming the limit."""
+    turns = joint.kind.coordinate == "angle"
+    most = limits.SWEEP_TRAVEL * (360.0 if turns else scale)
+    if not abs(amount) <= most:
+        raise KinematikaError("schema", "travel-too-far", where, what=what, amount=Num(amount, ".6g"),
+                              most=Num(most, ".6g"), turns=limits.SWEEP_TRAVEL, unit="angle" if turns else "length")
 
 
 def values_per_row(model: Model) -> int:

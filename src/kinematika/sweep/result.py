@@ -42,6 +42,7 @@ class SweepResult:
     limit_travel: list[float] = field(default_factory=list)   # the input's travel at each
     travel: Optional[np.ndarray] = None   # (N,) the input's travel up to each row (with limits)
     closed: bool = False                  # back at the drawn configuration after its limits
+    warnings: list = field(default_factory=list)   # KinematikaWarning: swept at draw_at numbers, ...
 
     def __len__(self) -> int:
         return len(self.coordinate)
@@ -60,6 +61,8 @@ class SweepResult:
                           for name, values in self.points.items()}}
         if self.limits:
             out["limits"] = self._limits_column().tolist()
+        if self.warnings:                       # an extension, as `solve`'s: what to know of the rows
+            out["warnings"] = [w.as_json() for w in self.warnings]
         return out
 
     def _limits_column(self) -> np.ndarray:
@@ -103,6 +106,8 @@ class SweepResult:
         yield b"}"
         if self.limits:
             yield b',"limits":' + orjson.dumps(self._limits_column().tolist())
+        if self.warnings:
+            yield b',"warnings":' + orjson.dumps([w.as_json() for w in self.warnings])
         yield b"}"
 
     def scales(self) -> dict[str, float]:

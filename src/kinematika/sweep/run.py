@@ -7,6 +7,7 @@ with continuation from the previous one and solved by the engine (`newton`).
 """
 from __future__ import annotations
 
+import warnings
 from typing import Any, Callable, Optional
 
 import numpy as np
@@ -47,10 +48,9 @@ class Sweeper:
     def __init__(self, source: Any, joint: Optional[str] = None,
                  flips: Optional[dict[int, float]] = None) -> None:
         arrays_on_heap()                     # a sweep's speed is its own (`memory`)
-        model = _as_model(source)
-        symbols = [n for n, p in model.parameters.items() if p.value is None]
-        if symbols:
-            raise KinematikaError("schema", "sweep-needs-numbers", "parameters", names=symbols)
+        from .posing import at_draw_numbers
+
+        model, self.warnings = at_draw_numbers(_as_model(source), "sweep", warn=False)
         self.model = model
         self.inst = instantiate(model, False)
         self.joint, self.driver = swept_joint(model, joint if joint is not None else
@@ -176,9 +176,11 @@ class Sweeper:
                 pts[ref] = arrays
         pts = {name: pts[name] for name in self.names}
         coincide(self.model, ordered, pts)
+        for note in self.warnings:          # said with the rows it is true of
+            warnings.warn(note, stacklevel=3)
         out = SweepResult(plan.coordinate if coordinate is None else coordinate, plan.joint.id, ok,
                           ordered, pts, dead, plan.unit, self.model.name, self.model.dimension,
-                          self.method, self.model.frame)
+                          self.method, self.model.frame, warnings=list(self.warnings))
         if limits is not None and limits.limits:
             out.limits, out.limit_travel = list(limits.limits), list(limits.at)
             out.travel, out.closed = travel, closed

@@ -349,8 +349,6 @@ straight-outlines = dos contorns rectes es toquen al llarg d’una recta, no en 
 pair-cannot = `{ $kind }` entre '{ $body }' i '{ $other }': { $why }
 touching-needs-outlines = un enllaç `{ $kind }` necessita un contorn als dos sòlids: dona a '{ $body }' una circumferència, una recta o una corba (o anomena’n el punt amb `at`)
 outlines-cannot-touch = aquests contorns no es poden tocar en un punt
-sweep-curve-touching = un escombratge segueix una corba que toca un punt, una circumferència o una recta
-sweep-sliding-contact = un escombratge segueix el contacte amb lliscament d’un punt sobre una circumferència o una recta, o d’un contorn sobre una corba
 
 ## les condicions del moviment, anomenades als missatges
 row-joint = { $id }: { $label }
@@ -491,7 +489,6 @@ move-exact-constructed = no es pot moure exactament: el punt '{ $point }' no seg
 move-exact-fixture = no es pot moure exactament: '{ $body }' gira sense forma tancada aquí, i { $what } és escrita amb nombres; dona-la amb punts (o dona valors als paràmetres)
 body-no-point = el sòlid '{ $body }' no porta cap punt, així que les seves formes no es poden moure: afegeix-hi un dels seus punts
 cannot-assemble-there = el mecanisme no es pot muntar aquí
-sweep-needs-numbers = un escombratge necessita nombres: dona un valor a { $names }
 sweep-at = l’increment { $k } ({ $joint } = { $value } { $unit })
 sweep-drivers-contradict = les dades de moviment tal com són escrites contradiuen els enllaços a { $at }: una dada vectorial (ω en 3D, una velocitat) queda fixa en els eixos del fix mentre el mecanisme gira; imposa en canvi la velocitat de l’enllaç
 sweep-singular = la configuració a { $at } és singular per a les dades de moviment (un punt mort: nombre de condició més gran que 1e+10){ $said ->
@@ -728,3 +725,21 @@ spin-not-wheel = l’enllaç '{ $joint }' no és una roda: només una roda té v
 spin-shape = un gir propi s’escriu {"{"}symbol: NOM, radius: PARÀMETRE{"}"} (symbol: phidot, radius: r)
 spin-radius-unknown = el radi '{ $radius }' no és un paràmetre (paràmetres: { $parameters })
 index-shape = '{ $index }' no és un índex de sòlid: d’una a quatre lletres o xifres (N, 1, R, T)
+
+## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
+needs-draw-at = { $what ->
+        [move] un moviment
+       *[sweep] un escombratge
+    } necessita nombres: dona un valor a { $names }, o al model un nombre `draw_at` per a cada símbol
+at-draw-numbers = { $what ->
+        [move] mogut
+       *[sweep] escombrat
+    } amb els nombres draw_at dels seus símbols: { $values }{ $said ->
+        [true] {" "}({ $why })
+       *[other] {""}
+    }
+travel-too-far = { $what } { $amount } és més del que recorre un escombratge o un moviment: com a màxim { $most }{ $unit ->
+        [angle] ° ({ $turns } voltes)
+       *[length] {" "}({ $turns } vegades la mida del mecanisme)
+    }
+two-straights-touch = dos contorns rectes es toquen al llarg d’una recta, no en un punt: uneix-los amb un enllaç prismàtic

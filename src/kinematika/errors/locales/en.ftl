@@ -274,8 +274,6 @@ straight-outlines = two straight outlines touch along a line, not at a point: jo
 pair-cannot = { $kind } between '{ $body }' and '{ $other }': { $why }
 touching-needs-outlines = a { $kind } joint needs an outline on both bodies: give '{ $body }' a circle, line or curve (or name its point with `at`)
 outlines-cannot-touch = these outlines cannot touch at a point
-sweep-curve-touching = a sweep follows a curve touching a point, a circle or a line
-sweep-sliding-contact = a sweep follows sliding contact of a point on a circle or line, or of an outline on a curve
 
 ## the conditions of the motion, named in messages (joints/*.py, engine/drivers.py, engine/idle.py)
 row-joint = { $id }: { $label }
@@ -416,7 +414,6 @@ move-exact-constructed = cannot move exactly: point '{ $point }' does not follow
 move-exact-fixture = cannot move exactly: '{ $body }' turns with no closed form here, and its { $what } is written in numbers; give it by points (or give the parameters values)
 body-no-point = body '{ $body }' carries no point, so its shapes cannot be moved: list one of its points
 cannot-assemble-there = the mechanism cannot be assembled there
-sweep-needs-numbers = a sweep needs numbers: give a value to { $names }
 sweep-at = increment { $k } ({ $joint } = { $value } { $unit })
 sweep-drivers-contradict = the drivers as written contradict the joints at { $at }: a vector driver (3D ω, a velocity) stays fixed in the ground axes as the mechanism turns; drive the joint's rate instead
 sweep-singular = the configuration at { $at } is singular for the drivers (a dead point: condition number above 1e+10){ $said ->
@@ -642,3 +639,21 @@ spin-not-wheel = joint '{ $joint }' is not a wheel: only a wheel has a spin
 spin-shape = a spin is {"{"}symbol: NAME, radius: PARAMETER{"}"} (symbol: phidot, radius: r)
 spin-radius-unknown = the radius '{ $radius }' is not a parameter (parameters: { $parameters })
 index-shape = '{ $index }' is not a body's index: one to four letters or digits (N, 1, R, T)
+
+## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
+needs-draw-at = { $what ->
+        [move] a move
+       *[sweep] a sweep
+    } needs numbers: give { $names } a value, or the model a `draw_at` number for each symbol
+at-draw-numbers = { $what ->
+        [move] moved
+       *[sweep] swept
+    } at the draw_at numbers of its symbols: { $values }{ $said ->
+        [true] {" "}({ $why })
+       *[other] {""}
+    }
+travel-too-far = { $what } { $amount } is more than a sweep or move travels: at most { $most }{ $unit ->
+        [angle] ° ({ $turns } turns)
+       *[length] {" "}({ $turns } times the mechanism's size)
+    }
+two-straights-touch = two straight outlines touch along a line, not at a point: join them by a prismatic joint

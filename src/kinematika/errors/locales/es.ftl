@@ -349,8 +349,6 @@ straight-outlines = dos contornos rectos se tocan a lo largo de una recta, no en
 pair-cannot = `{ $kind }` entre '{ $body }' y '{ $other }': { $why }
 touching-needs-outlines = un par `{ $kind }` necesita un contorno en los dos sólidos: da a '{ $body }' una circunferencia, una recta o una curva (o nombra su punto con `at`)
 outlines-cannot-touch = estos contornos no pueden tocarse en un punto
-sweep-curve-touching = un barrido sigue una curva que toca un punto, una circunferencia o una recta
-sweep-sliding-contact = un barrido sigue el contacto con deslizamiento de un punto sobre una circunferencia o una recta, o de un contorno sobre una curva
 
 ## las condiciones del movimiento, nombradas en los mensajes
 row-joint = { $id }: { $label }
@@ -491,7 +489,6 @@ move-exact-constructed = no se puede mover exactamente: el punto '{ $point }' no
 move-exact-fixture = no se puede mover exactamente: '{ $body }' gira sin forma cerrada aquí, y { $what } está escrita con números; dala con puntos (o da valores a los parámetros)
 body-no-point = el sólido '{ $body }' no lleva ningún punto, así que sus formas no se pueden mover: añade uno de sus puntos
 cannot-assemble-there = el mecanismo no se puede montar ahí
-sweep-needs-numbers = un barrido necesita números: da un valor a { $names }
 sweep-at = el incremento { $k } ({ $joint } = { $value } { $unit })
 sweep-drivers-contradict = los datos de movimiento tal como están escritos contradicen los pares en { $at }: un dato vectorial (ω en 3D, una velocidad) queda fijo en los ejes del fijo mientras el mecanismo gira; impón en su lugar la velocidad del par
 sweep-singular = la configuración en { $at } es singular para los datos de movimiento (un punto muerto: número de condición mayor que 1e+10){ $said ->
@@ -728,3 +725,21 @@ spin-not-wheel = el par '{ $joint }' no es una rueda: solo una rueda tiene veloc
 spin-shape = un giro propio se escribe {"{"}symbol: NOMBRE, radius: PARÁMETRO{"}"} (symbol: phidot, radius: r)
 spin-radius-unknown = el radio '{ $radius }' no es un parámetro (parámetros: { $parameters })
 index-shape = '{ $index }' no es un índice de sólido: de una a cuatro letras o cifras (N, 1, R, T)
+
+## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
+needs-draw-at = { $what ->
+        [move] un movimiento
+       *[sweep] un barrido
+    } necesita números: da un valor a { $names }, o al modelo un número `draw_at` para cada símbolo
+at-draw-numbers = { $what ->
+        [move] movido
+       *[sweep] barrido
+    } con los números draw_at de sus símbolos: { $values }{ $said ->
+        [true] {" "}({ $why })
+       *[other] {""}
+    }
+travel-too-far = { $what } { $amount } es más de lo que recorre un barrido o un movimiento: como mucho { $most }{ $unit ->
+        [angle] ° ({ $turns } vueltas)
+       *[length] {" "}({ $turns } veces el tamaño del mecanismo)
+    }
+two-straights-touch = dos contornos rectos se tocan a lo largo de una recta, no en un punto: únelos con un par prismático

@@ -349,8 +349,6 @@ straight-outlines = bi ingerada zuzen zuzen batean zehar ukitzen dira, ez puntu 
 pair-cannot = `{ $kind }` '{ $body }' eta '{ $other }' artean: { $why }
 touching-needs-outlines = `{ $kind }` motako lotura batek ingerada bat behar du bi solidoetan: eman '{ $body }' solidoari zirkunferentzia bat, zuzen bat edo kurba bat (edo izendatu haren puntua `at` gakoarekin)
 outlines-cannot-touch = ingerada hauek ezin dute elkar ukitu puntu batean
-sweep-curve-touching = ekorketa batek puntu bat, zirkunferentzia bat edo zuzen bat ukitzen duen kurba jarraitzen du
-sweep-sliding-contact = ekorketa batek puntu baten irristadurazko kontaktua jarraitzen du zirkunferentzia edo zuzen baten gainean, edo ingerada batena kurba baten gainean
 
 ## mugimenduaren baldintzak, mezuetan izendatuta
 row-joint = { $id }: { $label }
@@ -494,7 +492,6 @@ move-exact-constructed = ezin da zehazki mugitu: '{ $point }' puntuak ez du sarr
 move-exact-fixture = ezin da zehazki mugitu: '{ $body }' solidoak forma itxirik gabe biratzen du hemen, eta haren { $what } zenbakitan idatzita dago; eman puntuen bidez (edo eman balioak parametroei)
 body-no-point = '{ $body }' solidoak ez darama punturik, eta, beraz, haren formak ezin dira mugitu: gehitu haren puntuetako bat
 cannot-assemble-there = mekanismoa ezin da hor muntatu
-sweep-needs-numbers = ekorketa batek zenbakiak behar ditu: eman balio bat hauei: { $names }
 sweep-at = { $k }. gehikuntza ({ $joint } = { $value } { $unit })
 sweep-drivers-contradict = idatzita dauden eragileek loturen kontra egiten dute { $at } posizioan: eragile bektorial bat (ω 3D-n, abiadura bat) solido finkoaren ardatzetan finko geratzen da mekanismoak biratzen duen bitartean; ezarri horren ordez loturaren abiadura
 sweep-singular = { $at } posizioko konfigurazioa singularra da eragileentzat (puntu hil bat: baldintza-zenbakia 1e+10 baino handiagoa){ $said ->
@@ -731,3 +728,21 @@ spin-not-wheel = '{ $joint }' lotura ez da gurpil bat: gurpil batek bakarrik du 
 spin-shape = biraketa propioa honela idazten da: {"{"}symbol: IZENA, radius: PARAMETROA{"}"} (symbol: phidot, radius: r)
 spin-radius-unknown = '{ $radius }' erradioa ez da parametro bat (parametroak: { $parameters })
 index-shape = '{ $index }' ez da solido baten indizea: lau letra edo zifra gehienez (N, 1, R, T)
+
+## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
+needs-draw-at = { $what ->
+        [move] mugimendu batek
+       *[sweep] ekorketa batek
+    } zenbakiak behar ditu: eman balio bat { $names } parametroei, edo ereduari `draw_at` zenbaki bat ikur bakoitzeko
+at-draw-numbers = { $what ->
+        [move] mugitua
+       *[sweep] ekortua
+    } bere ikurren draw_at zenbakietan: { $values }{ $said ->
+        [true] {" "}({ $why })
+       *[other] {""}
+    }
+travel-too-far = { $what } { $amount } ekorketa edo mugimendu batek ibiltzen duena baino gehiago da: gehienez { $most }{ $unit ->
+        [angle] ° ({ $turns } bira)
+       *[length] {" "}(mekanismoaren tamaina { $turns } aldiz)
+    }
+two-straights-touch = bi ingerada zuzen zuzen batean zehar ukitzen dira, ez puntu batean: lotu itzazu lotura prismatiko batez
