@@ -34,6 +34,7 @@ from ..errors import KinematikaError
 from ..model.model import Model, PointRef
 from ..structure.assur import Group
 from .cycle import Cycle
+from .fourbar import grashof_of
 
 CLASSES = ("crank-rocker", "double-crank", "double-rocker", "rocker-crank", "change-point", "non-grashof")
 AT_INPUT = {"angle": "body", "omega": "body", "alpha": "body",
@@ -152,7 +153,13 @@ def four_bar_roles(ctx: Context, where: str = "--metric grashof") -> dict[str, s
 
 def _linkage(ctx: Context) -> Optional[dict[str, Any]]:
     """Four-bar (input crank + RRR closing on the frame) or slider-crank (+ RRP on the frame)."""
-    groups, model = ctx.groups, ctx.model
+    return linkage_roles(ctx.model, ctx.groups)
+
+
+def linkage_roles(model: Model, groups: Optional[list[Group]]) -> Optional[dict[str, Any]]:
+    """The roles of a four-bar (an input crank and an RRR dyad closing on the frame) or a
+    slider-crank (an RRP dyad): the points O2, A, B (and O4), the crank, coupler and output
+    bodies, `kind`; None for any other mechanism."""
     if not groups or len(groups) != 2 or groups[0].kind != "input":
         return None
     first, dyad = groups
@@ -179,14 +186,7 @@ def _linkage_output(ctx: Context, where: str) -> str:
 def grashof(c: Cycle, roles: dict[str, Any]) -> np.ndarray:
     """Grashof's class from the drawn lengths (s + l against p + q, then the shortest link)."""
     o2, a, b, o4 = (c.drawn(roles[k]) for k in ("O2", "A", "B", "O4"))
-    lengths = np.stack([np.abs(o4 - o2), np.abs(a - o2), np.abs(b - a), np.abs(o4 - b)])
-    s, l = lengths.min(axis=0), lengths.max(axis=0)
-    gap = (s + l) - (lengths.sum(axis=0) - s - l)
-    by_shortest = np.array(["double-crank", "crank-rocker", "double-rocker", "rocker-crank"], dtype=object)
-    out = by_shortest[np.argmin(lengths, axis=0)]
-    out = np.where(gap > 1e-9 * l, "non-grashof", out)
-    out = np.where(np.abs(gap) <= 1e-9 * l, "change-point", out)
-    return np.where(np.isfinite(gap), out, np.array(None, dtype=object))
+    return grashof_of(np.stack([np.abs(o4 - o2), np.abs(a - o2), np.abs(b - a), np.abs(o4 - b)]))
 
 
 def _transmission(ctx: Context, where: str) -> Callable[[Cycle], np.ndarray]:
