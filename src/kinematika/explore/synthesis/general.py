@@ -20,16 +20,16 @@ from typing import Any, Optional
 
 import numpy as np
 
-from ..errors import KinematikaError
-from .designs import Vary
-from .evaluate import Sweep
-from .study import evaluator, make_study
+from ...errors import KinematikaError
+from ..designs import Vary
+from ..evaluate import Sweep
+from ..study import evaluator, make_study
 
 PENALTY = 1e9           # the objective of a design that does not complete its cycle
 
 
 @dataclass
-class Synthesis:
+class MetricSynthesis:
     """The result: the best designs (parameter values and objective, best first), and how
     many designs were evaluated."""
 
@@ -41,10 +41,10 @@ class Synthesis:
     history: list[tuple[float, float]]   # (seconds from the start, best objective) per generation
 
 
-def synthesize(model: Any, vary: list[Vary | str], objective: str, population: int = 40,
+def minimise_metric(model: Any, vary: list[Vary | str], objective: str, population: int = 40,
                generations: int = 200, seed: int = 0, best: int = 3, sweep: Sweep = Sweep(),
                tol: float = 0.0, target: Optional[float] = None,
-               files: Optional[dict[str, str]] = None, seconds: Optional[float] = None) -> Synthesis:
+               files: Optional[dict[str, str]] = None, seconds: Optional[float] = None) -> MetricSynthesis:
     """Minimise the metric `objective` over the varied parameters' intervals.
 
     `population` designs per generation (scipy's popsize is per parameter: it is derived),
@@ -85,7 +85,7 @@ def synthesize(model: Any, vary: list[Vary | str], objective: str, population: i
     xs, fs = np.concatenate(archive_x), np.concatenate(archive_f)
     chosen = _distinct_best(xs, fs, bounds, best)
     designs = [{n: float(xs[i, k]) for k, n in enumerate(names)} for i in chosen]
-    return Synthesis(names, designs, [float(fs[i]) for i in chosen], len(fs), objective, history)
+    return MetricSynthesis(names, designs, [float(fs[i]) for i in chosen], len(fs), objective, history)
 
 
 def _distinct_best(xs: np.ndarray, fs: np.ndarray, bounds: list[tuple], count: int) -> list[int]:
@@ -102,31 +102,11 @@ def _distinct_best(xs: np.ndarray, fs: np.ndarray, bounds: list[tuple], count: i
     return out
 
 
-def write_designs(model: Path, result: Synthesis, folder: Path) -> list[Path]:
-    """Each best design as a model file (the model with its parameters set): best-1.yaml, ..."""
-    import yaml
-
-    from ..model.files import parse_text
-
-    fmt = {".toml": "toml", ".json": "json"}.get(model.suffix.lower(), "yaml")
-    tree = parse_text(model.read_text(encoding="utf-8"), fmt, str(model))
-    folder.mkdir(parents=True, exist_ok=True)
-    out = []
-    for rank, (design, error) in enumerate(zip(result.designs, result.errors), start=1):
-        copy = dict(tree)
-        copy["parameters"] = {**tree.get("parameters", {}), **{k: float(f"{v:.12g}") for k, v in design.items()}}
-        copy["name"] = f"{tree.get('name', model.stem)} — synthesized {rank} ({result.objective} = {error:.6g})"
-        path = folder / f"best-{rank}.yaml"
-        path.write_text(yaml.safe_dump(copy, sort_keys=False, allow_unicode=True), encoding="utf-8")
-        out.append(path)
-    return out
-
-
 def function_targets(expression: str, over: tuple[float, float], points: int) -> str:
     """A target function f(x) (an expression in x: the input's increment, giving the output's
     rotation in degrees) at `points` Chebyshev precision points of `over`, as CSV text."""
-    from ..algebra.arrays import Arrays
-    from ..expressions import ExpressionError, evaluate, parse
+    from ...algebra.arrays import Arrays
+    from ...expressions import ExpressionError, evaluate, parse
 
     low, high = over
     k = np.arange(1, points + 1)
@@ -145,3 +125,27 @@ def function_targets(expression: str, over: tuple[float, float], points: int) ->
         raise KinematikaError("usage", f"{expression!r} is not finite over {low:g} to {high:g}",
                               "--target-function")
     return "".join(f"{a!r},{b!r}\n" for a, b in zip(x.tolist(), y.tolist()))
+
+
+def synthesize_general(model: Any, varied: list[Vary], task: Any, population: int, generations: Optional[int],
+                       seed: int, best: int, seconds: Optional[float], steps: Optional[int]) -> Any:
+    """A task on a model the four-bar path does not take, by the study's metrics over the
+    batch sweep's rows (path_error, structural_error, motion_error)."""
+    from . import Synthesis
+
+    if task.timing is not None or task.objective != "max" or task.requires or not np.all(task.weights == 1.0):
+        raise KinematikaError("usage", "--timing, --objective sse, --require and weights need a four-bar "
+                              "driven at its crank (the task's point on its coupler)", "--timing")
+    if task.kind == "function":
+        rows = "".join(f"{x!r},{y!r}\n" for x, y in zip(task.inputs.tolist(), task.angle.tolist()))
+        objective = f"structural_error:{task.body}=targets.csv"
+    elif task.kind == "motion":
+        rows = "".join(f"{p.real!r},{p.imag!r},{a!r}\n" for p, a in zip(task.xy.tolist(), task.angle.tolist()))
+        objective = f"motion_error:{task.point}=targets.csv"
+    else:
+        rows = "".join(f"{p.real!r},{p.imag!r}\n" for p in task.xy.tolist())
+        objective = f"path_error:{task.point}=targets.csv"
+    out = minimise_metric(model, list(varied), objective, population, generations or 200, seed, best,
+                          Sweep(steps=steps), files={"targets.csv": rows}, seconds=seconds)
+    return Synthesis(out.names, out.designs, out.errors, out.evaluated, "max", out.history,
+                     [None] * len(out.designs), [None] * len(out.designs), path="general")

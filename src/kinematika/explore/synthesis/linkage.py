@@ -320,11 +320,13 @@ def carried_map(model_map: ModelMap, low: np.ndarray, high: np.ndarray, seed: in
     n = len(low)
     rng = np.random.default_rng(seed)
     span = np.where(high > low, high - low, 0.0)
-    probes = low + rng.random((PROBES, n)) * span
-    probes[0] = low + 0.5 * span
-    c, jw, _ = model_map.jacobian(probes)
-    if not np.isfinite(c.w).all():
+    candidates = low + rng.random((64 * PROBES, n)) * span
+    candidates[0] = low + 0.5 * span
+    drawable = np.isfinite(model_map.canon(candidates).w).all(axis=1)
+    if drawable.sum() < PROBES:
         return None
+    probes = candidates[drawable][:PROBES]
+    c = model_map.canon(probes)
     if np.ptp(c.sigma) > 0 or np.ptp(np.angle(np.exp(1j * (c.kappa3 - c.kappa3[0])))) > AFFINE_TOL \
             or np.ptp(np.angle(np.exp(1j * (c.kappa4 - c.kappa4[0])))) > AFFINE_TOL:
         return None
@@ -373,15 +375,17 @@ def _coordinate(name: str, value: np.ndarray, slope: np.ndarray, probes: np.ndar
     if len(columns) > 1:
         return None
     j = int(columns[0])
-    k = float(np.median(slope[:, j]))
-    if np.max(np.abs(slope[:, j] - k)) > 1e-6 * max(1.0, abs(k)):
+    k0 = float(np.median(slope[:, j]))
+    if np.max(np.abs(slope[:, j] - k0)) > 1e-6 * max(1.0, abs(k0)):
         return None
-    offsets = value - k * probes[:, j]
+    # the slope and offset fitted to the values themselves (exact, where differences are not)
+    x = probes[:, j]
     if name in ANGLES:
-        offsets = offsets[0] + np.angle(np.exp(1j * (offsets - offsets[0])))
-    if np.max(np.abs(offsets - offsets[0])) > 1e-7 * scale:
+        value = value[0] + np.angle(np.exp(1j * (value - value[0] - k0 * (x - x[0])))) + k0 * (x - x[0])
+    k, offset = np.polyfit(x, value, 1)
+    if np.max(np.abs(k * x + offset - value)) > 1e-9 * scale or abs(k - k0) > 1e-6 * max(1.0, abs(k)):
         return None
-    return Coordinate(name, j, k, float(offsets[0]))
+    return Coordinate(name, j, float(k), float(offset))
 
 
 def point_on_coupler(model: Model, roles: Roles, point: str, where: str) -> str:
