@@ -402,5 +402,14 @@ def replace_values(model: Model, values: dict[str, float]) -> Model:
     return with_parameters(model, {k: repr(float(v)) for k, v in values.items()})
 
 
-__all__ = ["Canon", "CarriedMap", "Drawn", "ModelMap", "Roles", "canon_of", "carried_map", "four_bar_roles",
-           "dataclasses"]
+__all__ = [
+    "Canon",
+    "CarriedMap",
+    "Drawn",
+    "ModelMap",
+    "Roles",
+    "canon_of",
+    "carried_map",
+    "dataclasses",
+    "four_bar_roles",
+]

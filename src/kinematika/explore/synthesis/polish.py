@@ -84,7 +84,7 @@ class Residuals:
     def rows(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Residual rows R and their Jacobian J, requirement rows G (≥ 0 when they hold) and
         theirs."""
-        fbt, task = self.fbt, self.fbt.task
+        fbt = self.fbt
         p = x[None, :self.n]
         canon, jw, je = fbt.map.jacobian(p)
         jw, je = jw[0], je[0]                                      # (NW, n), (3, n)
@@ -102,7 +102,7 @@ class Residuals:
         with np.errstate(all="ignore"):
             at, tg = pose(fb, phi, True)
         assert tg is not None
-        chain = lambda t: self._chain(t[0], jw, dphi)              # noqa: E731
+        chain = lambda t: self._chain(t[0], jw, dphi)
         r, j = self._target_rows(x, fb, canon, at, tg, chain, je, jw)
         g, jg = self._requirement_rows(x, fb, jw)
         return r, j, g, jg

@@ -70,7 +70,7 @@ class FourBarTask:
         self.n = len(self.names)
         self.exact_map = ModelMap(model, roles, self.names, point)
         self.map: ModelMap | CarriedMap = self.exact_map
-        if task.kind == "path":
+        if task.kind != "motion":                   # a motion's weight ρ needs every point of the body
             self.map = carried_map(self.exact_map, self.low, self.high) or self.exact_map
         self.sign = roles.sign
         self.sqrtw = np.sqrt(task.weights)
@@ -205,7 +205,6 @@ class FourBarTask:
         (path: the point; motion: the pose, by the task's distance), on the drawn branch
         within the crank's reachable range."""
         count = FINE if exact else GRID
-        size = len(canon.w)
         full = reach.full[:, 0]
         low = np.where(full, fb.phi0[:, 0], reach.low[:, 0])
         high = np.where(full, fb.phi0[:, 0] + TWO_PI, reach.high[:, 0])
@@ -273,7 +272,7 @@ class FourBarTask:
 def four_bar(canon: Canon) -> FourBar:
     """The closed-form four-bars of the designs' numbers, as (D, 1) columns."""
     w = canon.w
-    col = lambda i: w[:, i:i + 1]           # noqa: E731
+    col = lambda i: w[:, i:i + 1]
     return FourBar(col(0) + 1j * col(1), col(2) + 1j * col(3), col(4), col(5), col(6), col(7) + 1j * col(8),
                    canon.sigma[:, None], col(9))
 
@@ -304,4 +303,4 @@ def best_offset(d: np.ndarray, sqrtw: np.ndarray, objective: str) -> np.ndarray:
     return (sqrtw[i] * d[np.arange(len(d)), i] + sqrtw[j] * d[np.arange(len(d)), j]) / (sqrtw[i] + sqrtw[j])
 
 
-__all__ = ["FourBarTask", "NW", "PHI", "Scores", "best_offset", "four_bar", "order_violation", "wrap"]
+__all__ = ["NW", "PHI", "FourBarTask", "Scores", "best_offset", "four_bar", "order_violation", "wrap"]

@@ -158,7 +158,7 @@ def run(fbt: FourBarTask, budget: Budget, seed: int, starts: list[np.ndarray],
     attempt = 0
     while budget.left():
         space = spaces[0] if attempt % 4 != 3 else spaces[-1]
-        along = lambda z: _polish_into(archive, fbt, z, budget, polish, QUICK)       # noqa: E731
+        along = lambda z: _polish_into(archive, fbt, z, budget, polish, QUICK)
         best = _evolve(space, budget, seed + attempt, starts if attempt == 0 else [], along)
         for z in best:
             if not budget.left() and archive.found:
@@ -238,7 +238,7 @@ def _evolve(space: Space, budget: Budget, seed: int, starts: list[np.ndarray],
     if not chosen:
         return []
     _, z = space.score(population[chosen])
-    return [row for row in z]
+    return list(z)
 
 
 def _initial(bounds: list[tuple[float, float]], count: int, seed: int, starts: list[np.ndarray],
