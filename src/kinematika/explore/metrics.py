@@ -229,16 +229,20 @@ def _peak(kind: str, ctx: Context, target: str, where: str) -> Callable[[Cycle],
 
 def path_error(path: np.ndarray, targets: np.ndarray) -> np.ndarray:
     """The largest distance from a target to the polyline through the path's rows (D, N)."""
+    return path_distances(path, targets).max(axis=1)
+
+
+def path_distances(path: np.ndarray, targets: np.ndarray) -> np.ndarray:
+    """Each target's distance to the polyline through the path's rows (D, N): (D, K)."""
     start, end = path[:, :-1], path[:, 1:]
     seg = end - start
     length2 = (seg * np.conj(seg)).real
-    worst = np.zeros(len(path))
-    for t in targets:
+    out = np.zeros((len(path), len(targets)))
+    for i, t in enumerate(targets):
         rel = t - start
         along = np.clip(np.where(length2 > 0, (rel * np.conj(seg)).real / length2, 0.0), 0.0, 1.0)
-        nearest = np.nanmin(np.abs(rel - along * seg), axis=1)
-        worst = np.maximum(worst, nearest)
-    return worst
+        out[:, i] = np.nanmin(np.abs(rel - along * seg), axis=1)
+    return out
 
 
 def motion_error(c: Cycle, ref: PointRef, points: list[str], poses: np.ndarray) -> np.ndarray:
@@ -246,16 +250,20 @@ def motion_error(c: Cycle, ref: PointRef, points: list[str], poses: np.ndarray) 
     over the cycle: √(|ΔP|² + (ρ Δφ)²), φ the direction of the body's line from its first point to
     its second, ρ the body's size (its largest distance between two points): an angle error
     counts as the displacement it gives the body's far end."""
+    return pose_distances(c, ref, points, poses).max(axis=1)
+
+
+def pose_distances(c: Cycle, ref: PointRef, points: list[str], poses: np.ndarray) -> np.ndarray:
+    """Each target pose's distance to the nearest pose over the cycle (as `motion_error`): (D, K)."""
     pos = c.motion(ref)[0]
     drawn = [c.drawn(p) for p in points]
     phi = np.angle(drawn[1] - drawn[0])[:, None] + np.radians(c.angle(ref.body))
     size = np.max([np.abs(p - q) for p in drawn for q in drawn], axis=0)[:, None]
-    worst = np.zeros(len(pos))
-    for x, y, angle in poses:
+    out = np.zeros((len(pos), len(poses)))
+    for i, (x, y, angle) in enumerate(poses):
         turn = np.angle(np.exp(1j * (phi - math.radians(angle))))
-        gap = np.sqrt(np.abs(pos - complex(x, y)) ** 2 + (size * turn) ** 2)
-        worst = np.maximum(worst, np.nanmin(gap, axis=1))
-    return worst
+        out[:, i] = np.nanmin(np.sqrt(np.abs(pos - complex(x, y)) ** 2 + (size * turn) ** 2), axis=1)
+    return out
 
 
 def time_ratio(c: Cycle, body: str, refs: list[PointRef]) -> np.ndarray:
@@ -308,8 +316,12 @@ _QUARTIC = np.linalg.inv(np.vander(np.arange(-2.0, 3.0), 5, increasing=True))
 def structural_error(c: Cycle, body: str, table: np.ndarray) -> np.ndarray:
     """The largest |rotation(x) − target| over the table's (x, target) rows (degrees), the
     rotation interpolated linearly between the sweep's rows."""
-    got = _interpolate(c.coordinate, c.angle(body), table[:, 0])
-    return np.max(np.abs(got - table[None, :, 1]), axis=1)
+    return rotation_errors(c, body, table).max(axis=1)
+
+
+def rotation_errors(c: Cycle, body: str, table: np.ndarray) -> np.ndarray:
+    """Each row's |rotation(x) − target| (degrees; as `structural_error`): (D, K)."""
+    return np.abs(_interpolate(c.coordinate, c.angle(body), table[:, 0]) - table[None, :, 1])
 
 
 def _interpolate(coordinate: np.ndarray, values: np.ndarray, x: np.ndarray) -> np.ndarray:

@@ -77,8 +77,26 @@ def synthesize(model: Any, vary: list[Vary | str], task: Task, population: int =
     if fbt is None:
         from .general import synthesize_general
 
-        return synthesize_general(m, varied, task, population, generations, seed, best, seconds, steps)
+        result = synthesize_general(m, varied, task, population, generations, seed, 4 * best, seconds, steps)
+        return _followed(m, result, best)
     return _four_bar(m, fbt, varied, population, generations, seed, best, seconds, progress)
+
+
+def _followed(m, result: Synthesis, best: int) -> Synthesis:
+    """The designs (best first) the contract's sweep follows over a full turn, when the input
+    turns (a slider's input has no turn to check)."""
+    from ...sweep.plan import swept_joint
+
+    joint, _ = swept_joint(m, m.sweep.joint if m.sweep else None)
+    keep = [i for i, d in enumerate(result.designs)
+            if joint.kind.coordinate != "angle" or follows_a_turn(m, d, joint.id)][:best]
+    if not keep:
+        raise KinematikaError("assembly", "no design found completes a full turn of its input", "--vary")
+    result.designs = [result.designs[i] for i in keep]
+    result.errors = [result.errors[i] for i in keep]
+    result.starts = [None] * len(keep)
+    result.zeros = [None] * len(keep)
+    return result
 
 
 def _check_timing(model, task: Task) -> None:

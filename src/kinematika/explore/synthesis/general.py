@@ -1,14 +1,16 @@
-"""Synthesis: the designs whose metric is least — path, function and motion generation.
+"""The general path: a task on any model the four-bar path does not take (six-bars, slider
+mechanisms, gears …), scored on the batch sweep's rows.
 
-The objective is one of the study's metrics: `path_error:POINT=FILE` (path generation: the
-point passes near the targets), `structural_error:BODY=FILE` (function generation: the
-body's rotation follows a function of the input's), `motion_error:POINT=FILE` (motion
-generation: the body passes through target poses), or any other metric to minimise. The
-optimiser is scipy's differential evolution, its whole population evaluated at once by
-the batch kernel (`vectorized=True`): a generation is one call over (population ×
-positions) arrays. A design that cannot be assembled over its whole cycle scores a
-penalty. The best distinct designs are returned and written as model files, ready for
-`solve`, `draw`, `animate`.
+Each design is swept as a study sweeps it (`evaluate.Evaluator`: the batch kernel where a
+closed form exists, else one design at a time); each target's error is read off the rows —
+a path's target: its distance to the polyline through the point's positions; a pose: its
+distance to the nearest pose of the rows; a function's row: the rotation interpolated
+linearly at its input — and weighted into the task's objective (sse or max). A design that
+does not complete its cycle scores PENALTY; `--require transmission=DEG` reads the
+`transmission` metric (four-bars and slider-cranks), `ordered` the rows at which the targets
+are met. scipy's differential evolution minimises it, a generation per batch call.
+
+`minimise_metric` minimises any single study metric (the Python API's older entry point).
 """
 from __future__ import annotations
 
@@ -20,8 +22,10 @@ from typing import Any, Optional
 import numpy as np
 
 from ...errors import KinematikaError
+from ..cycle import Cycle
 from ..designs import Vary
-from ..evaluate import Sweep
+from ..evaluate import Evaluator, Sweep
+from ..metrics import Metric, path_distances, pose_distances, rotation_errors
 from ..study import evaluator, make_study
 
 PENALTY = 1e9           # the objective of a design that does not complete its cycle
@@ -29,44 +33,122 @@ PENALTY = 1e9           # the objective of a design that does not complete its c
 
 @dataclass
 class MetricSynthesis:
-    """The result: the best designs (parameter values and objective, best first), and how
-    many designs were evaluated."""
+    """The result of `minimise_metric`: the best designs (parameter values and objective, best
+    first), how many designs were evaluated, and (seconds, best) per generation."""
 
     names: list[str]
     designs: list[dict[str, float]]
     errors: list[float]
     evaluated: int
     objective: str
-    history: list[tuple[float, float]]   # (seconds from the start, best objective) per generation
+    history: list[tuple[float, float]]
 
 
-def minimise_metric(model: Any, vary: list[Vary | str], objective: str, population: int = 40,
-               generations: int = 200, seed: int = 0, best: int = 3, sweep: Sweep = Sweep(),
-               tol: float = 0.0, target: Optional[float] = None,
-               files: Optional[dict[str, str]] = None, seconds: Optional[float] = None) -> MetricSynthesis:
-    """Minimise the metric `objective` over the varied parameters' intervals.
+def synthesize_general(model: Any, varied: list[Vary], task: Any, population: int, generations: Optional[int],
+                       seed: int, best: int, seconds: Optional[float], steps: Optional[int]) -> Any:
+    """The task on a model the four-bar path does not take (see the module's docstring)."""
+    from . import Synthesis
 
-    `population` designs per generation (scipy's popsize is per parameter: it is derived),
-    at most `generations` generations; stop early once the objective is below `target`, or
-    after `seconds`.
-    `files` gives target files' text by name (as `make_study`).
-    """
+    if task.timing is not None:
+        raise KinematikaError("usage", "--timing needs a four-bar driven at its crank, the task's point on "
+                              "its coupler (other models: leave the targets' timing free)", "--timing")
+    names = [v.name for v in varied]
+    ev = Evaluator(model, names, [], Sweep(steps=steps))
+    metric = task_metric(ev, task)
+    requirements = _requirements(ev, task)
+    ev.metrics = [metric, *requirements]
+    out = _minimise(ev, names, [(v.low, v.high) for v in varied], metric.name,
+                    [(m.name, m.data) for m in requirements], population, generations or 200, seed, best, seconds)
+    return Synthesis(out.names, out.designs, out.errors, out.evaluated, task.label, out.history,
+                     [None] * len(out.designs), [None] * len(out.designs), path="general")
+
+
+def task_metric(ev: Evaluator, task: Any) -> Metric:
+    """The task's objective as a metric over the designs' cycles (NaN where a design stops),
+    with, as its data, the rows at which each target is met (for `ordered`)."""
+    model, sqrtw = ev.model, np.sqrt(task.weights)
+    where = {"path": "--target", "motion": "--target-motion", "function": "--target-function"}[task.kind]
+    if task.kind == "function":
+        if task.body not in model.bodies:
+            raise KinematikaError("usage", f"unknown body {task.body!r} (bodies: {', '.join(model.bodies)})",
+                                  "--output")
+        table = np.column_stack([task.inputs, task.angle])
+        low, high = sorted((ev.context.coordinate[0], ev.context.coordinate[-1]))
+        if (task.inputs < low - 1e-9).any() or (task.inputs > high + 1e-9).any():
+            raise KinematikaError("usage", f"the inputs must lie in the sweep's range {low:g} to {high:g} "
+                                  f"{ev.context.unit}", where)
+        if task.output_zero is not None:
+            raise KinematikaError("usage", "--output-zero needs a four-bar whose output is its rocker or "
+                                  "coupler", "--output-zero")
+        errors = lambda c: rotation_errors(c, task.body, table)              # noqa: E731
+    else:
+        try:
+            ref = model.resolve_point(task.point, "--point")
+        except KinematikaError as err:
+            raise KinematikaError("usage", err.message, "--point") from None
+        if task.kind == "motion":
+            points = model.bodies[ref.body].points
+            if len(points) < 2:
+                raise KinematikaError("usage", f"body {ref.body!r} needs two points to have a direction", where)
+            poses = np.column_stack([task.xy.real, task.xy.imag, task.angle])
+            errors = lambda c: pose_distances(c, ref, points, poses)         # noqa: E731
+        else:
+            errors = lambda c: path_distances(c.motion(ref)[0], task.xy)     # noqa: E731
+
+    def compute(c: Cycle) -> np.ndarray:
+        r = sqrtw * errors(c)
+        return (r ** 2).sum(axis=1) if task.objective == "sse" else r.max(axis=1)
+
+    return Metric(task.label, compute)
+
+
+def _requirements(ev: Evaluator, task: Any) -> list[Metric]:
+    """The requirements as metrics, each with the bound it must meet as data."""
+    from ..metrics import parse_metric
+
+    out = []
+    if task.requires.transmission is not None:
+        try:
+            metric = parse_metric("transmission", ev.context)
+        except KinematikaError:
+            raise KinematikaError("usage", "--require transmission=DEG needs a four-bar or a slider-crank driven "
+                                  "at its crank", "--require") from None
+        metric.name, metric.data = "·transmission", task.requires.transmission
+        out.append(metric)
+    if task.requires.ordered and task.kind == "path":
+        ref = ev.model.resolve_point(task.point, "--point")
+
+        def order(c: Cycle) -> np.ndarray:
+            path = c.motion(ref)[0]
+            rows = np.argmin(np.abs(path[:, None, :] - task.xy[None, :, None]), axis=2)    # (D, K)
+            turn = np.mod(rows - rows[:, :1], path.shape[1] - 1)
+            return np.maximum(turn[:, :-1] - turn[:, 1:], 0).sum(axis=1).astype(float)
+        out.append(Metric("·order", order, data=0.0))
+    return out
+
+
+def _minimise(ev: Evaluator, names: list[str], bounds: list[tuple[float, float]], objective: str,
+              limits: list[tuple[str, float]], population: int, generations: int, seed: int, best: int,
+              seconds: Optional[float]) -> MetricSynthesis:
+    """Differential evolution of `objective` over the box; a design breaking a limit (a
+    transmission below its bound, targets out of order) or not completing its cycle scores
+    PENALTY."""
     from scipy.optimize import differential_evolution
 
-    study = make_study(model, vary, [objective], grid=1, sweep=sweep, files=files, what="synthesize")
-    ev = evaluator(study)
-    names = study.designs.names
-    bounds = [(v.low, v.high) for v in study.designs.vary]
     archive_x: list[np.ndarray] = []
     archive_f: list[np.ndarray] = []
-    history: list[tuple[float, float]] = []           # (seconds, best objective) per generation
+    history: list[tuple[float, float]] = []
     start = time.perf_counter()
 
     def cost(x: np.ndarray) -> np.ndarray:
-        x = x.reshape(len(names), -1)                          # (parameters, designs)
+        x = x.reshape(len(names), -1)
         columns = ev.evaluate({n: x[i] for i, n in enumerate(names)})
         f = np.asarray(columns[objective], dtype=float)
-        f = np.where(np.isfinite(f), f, PENALTY)
+        ok = np.isfinite(f)
+        for name, bound in limits:
+            value = np.asarray(columns[name], dtype=float)
+            ok &= (value >= bound) if name == "·transmission" else (value <= bound)
+        f = np.where(ok, f, PENALTY)
         archive_x.append(x.T.copy())
         archive_f.append(f)
         return f
@@ -75,16 +157,32 @@ def minimise_metric(model: Any, vary: list[Vary | str], objective: str, populati
         fun = float(intermediate_result.fun)
         elapsed = time.perf_counter() - start
         history.append((elapsed, fun))
-        return (target is not None and fun <= target) or (seconds is not None and elapsed >= seconds)
+        return seconds is not None and elapsed >= seconds
 
     size = max(5, math.ceil(population / len(names)))
-    differential_evolution(cost, bounds, popsize=size, maxiter=generations, seed=seed, tol=tol,
+    differential_evolution(cost, bounds, popsize=size, maxiter=generations, seed=seed, tol=0.0,
                            polish=False, vectorized=True, updating="deferred", init="sobol",
                            callback=progress)
     xs, fs = np.concatenate(archive_x), np.concatenate(archive_f)
     chosen = _distinct_best(xs, fs, bounds, best)
+    if not chosen:
+        raise KinematikaError("assembly", "no design of the intervals completes its cycle and meets the "
+                              "requirements", "--vary")
     designs = [{n: float(xs[i, k]) for k, n in enumerate(names)} for i in chosen]
     return MetricSynthesis(names, designs, [float(fs[i]) for i in chosen], len(fs), objective, history)
+
+
+def minimise_metric(model: Any, vary: list[Vary | str], objective: str, population: int = 40,
+                    generations: int = 200, seed: int = 0, best: int = 3, sweep: Sweep = Sweep(),
+                    files: Optional[dict[str, str]] = None, seconds: Optional[float] = None) -> MetricSynthesis:
+    """Minimise the study metric `objective` (any of `explore`'s) over the varied parameters'
+    intervals, the whole population of each generation swept at once; `files` gives target
+    files' text by name (as `make_study`)."""
+    study = make_study(model, vary, [objective], grid=1, sweep=sweep, files=files, what="synthesize")
+    ev = evaluator(study)
+    names = study.designs.names
+    bounds = [(v.low, v.high) for v in study.designs.vary]
+    return _minimise(ev, names, bounds, objective, [], population, generations, seed, best, seconds)
 
 
 def _distinct_best(xs: np.ndarray, fs: np.ndarray, bounds: list[tuple], count: int) -> list[int]:
@@ -124,27 +222,3 @@ def function_targets(expression: str, over: tuple[float, float], points: int) ->
         raise KinematikaError("usage", f"{expression!r} is not finite over {low:g} to {high:g}",
                               "--target-function")
     return "".join(f"{a!r},{b!r}\n" for a, b in zip(x.tolist(), y.tolist()))
-
-
-def synthesize_general(model: Any, varied: list[Vary], task: Any, population: int, generations: Optional[int],
-                       seed: int, best: int, seconds: Optional[float], steps: Optional[int]) -> Any:
-    """A task on a model the four-bar path does not take, by the study's metrics over the
-    batch sweep's rows (path_error, structural_error, motion_error)."""
-    from . import Synthesis
-
-    if task.timing is not None or task.objective != "max" or task.requires or not np.all(task.weights == 1.0):
-        raise KinematikaError("usage", "--timing, --objective sse, --require and weights need a four-bar "
-                              "driven at its crank (the task's point on its coupler)", "--timing")
-    if task.kind == "function":
-        rows = "".join(f"{x!r},{y!r}\n" for x, y in zip(task.inputs.tolist(), task.angle.tolist()))
-        objective = f"structural_error:{task.body}=targets.csv"
-    elif task.kind == "motion":
-        rows = "".join(f"{p.real!r},{p.imag!r},{a!r}\n" for p, a in zip(task.xy.tolist(), task.angle.tolist()))
-        objective = f"motion_error:{task.point}=targets.csv"
-    else:
-        rows = "".join(f"{p.real!r},{p.imag!r}\n" for p in task.xy.tolist())
-        objective = f"path_error:{task.point}=targets.csv"
-    out = minimise_metric(model, list(varied), objective, population, generations or 200, seed, best,
-                          Sweep(steps=steps), files={"targets.csv": rows}, seconds=seconds)
-    return Synthesis(out.names, out.designs, out.errors, out.evaluated, "max", out.history,
-                     [None] * len(out.designs), [None] * len(out.designs), path="general")

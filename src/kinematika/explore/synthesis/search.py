@@ -58,7 +58,7 @@ class Budget:
         """Whether the search may go on (the last polish's reserve of the seconds kept)."""
         if self.generations is not None and self.spent >= self.generations:
             return False
-        if self.seconds is None:
+        if self.seconds is None or self.spent == 0:             # a time budget runs a generation at least
             return True
         return time.perf_counter() - self.started < self.seconds - min(RESERVE * self.seconds, 5.0)
 
