@@ -189,7 +189,9 @@ def _same_branch(fbt: FourBarTask, w: np.ndarray, sigma: float, phi: np.ndarray,
 
 # motion generation: Burmester --------------------------------------------------------------
 def _burmester(fbt: FourBarTask) -> list[np.ndarray]:
-    """Four-bars whose coupler passes through the poses exactly, from pairs of circle points."""
+    """Four-bars whose coupler passes through the poses exactly, from pairs of circle points:
+    those on the model's branch at every pose, reaching them without a limit position, and
+    meeting the requirements, best transmission first; the few best become designs."""
     task = fbt.task
     mid, ref = _reference(fbt)
     if not np.isfinite(ref.w).all():
@@ -197,17 +199,47 @@ def _burmester(fbt: FourBarTask) -> list[np.ndarray]:
     p, alpha = task.xy, np.radians(task.angle)
     size = max(np.abs(p - p[0]).max(), 1e-9)
     points = circle_points(p, alpha, size)
-    out = []
+    ranked: list[tuple[float, np.ndarray, float]] = []
     for za, zb in itertools.permutations(points, 2):
         w, kappa3, sigma = four_bar_of(p, alpha, za, zb)
         if w is None or sigma != ref.sigma[0]:
             continue
+        quality = _through_poses(fbt, w, sigma, p + np.exp(1j * alpha) * za, p + np.exp(1j * alpha) * zb)
+        if quality is not None:
+            ranked.append((quality, w, kappa3))
+    ranked.sort(key=lambda item: -item[0])
+    out = []
+    for _, w, kappa3 in ranked[:6]:
         z = design_of(fbt, w, kappa3, None, mid)
         if z is not None:
             out.append(z)
-        if len(out) >= MOST:
-            break
     return out
+
+
+def _through_poses(fbt: FourBarTask, w: np.ndarray, sigma: float, qa: np.ndarray, qb: np.ndarray) -> Optional[float]:
+    """The least transmission angle of a four-bar that passes through the poses on its drawn
+    branch, without a limit position between them, meeting the requirements; else None."""
+    from ..fourbar import crank_range, crank_rocker, least_transmission
+
+    fb = FourBar(*(np.array([[v]]) for v in (w[0] + 1j * w[1], w[2] + 1j * w[3], w[4], w[5], w[6], w[7] + 1j * w[8],
+                                             sigma, w[9])))
+    phi = np.angle(qa - (w[0] + 1j * w[1]))
+    with np.errstate(all="ignore"):
+        at, _ = pose(fb, phi[None, :])
+    if not np.allclose(at.b[0], qb, atol=1e-7 * max(1.0, np.abs(qb).max())):
+        return None
+    reach = crank_range(fb)
+    if not reach.full[0, 0]:
+        low, high = reach.low[0, 0], reach.high[0, 0]
+        if (np.mod(phi - low, 2 * np.pi) > high - low + 1e-12).any():
+            return None
+    req = fbt.task.requires
+    least = float(least_transmission(fb)[0, 0])
+    if req.crank_rocker and not crank_rocker(fb)[0, 0]:
+        return None
+    if req.transmission is not None and least < req.transmission:
+        return None
+    return least + (90.0 if reach.full[0, 0] else 0.0)
 
 
 def circumcentre(a: complex, b: complex, c: complex) -> complex:

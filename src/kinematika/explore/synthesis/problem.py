@@ -218,7 +218,11 @@ class FourBarTask:
         step = ((high - low) / count)[:, None]
         phi = self._parabola(dist, k, phi, step, count, full)
         for _ in range(FINE_STEPS if exact else STEPS):
-            phi = self._gauss_newton(fb, canon, phi, low, high, full)
+            new = self._gauss_newton(fb, canon, phi, low, high, full)
+            settled = np.all(np.abs(new - phi) <= 1e-15 * (1 + np.abs(phi)))
+            phi = new
+            if settled:
+                break
         return phi
 
     def _distance2(self, p: np.ndarray, lines: np.ndarray, canon: Canon) -> np.ndarray:
