@@ -252,8 +252,8 @@ def pose_error(params, poses):
     for target, angle in poses:
         values = [distance(t, target, angle) for t in grid]
         k = int(np.argmin(values))
-        sol = minimize(lambda t: distance(t[0], target, angle) ** 2, [grid[k]], method="Nelder-Mead",
-                       options={"xatol": 1e-16, "fatol": 1e-34, "maxiter": 2000})
+        sol = minimize(lambda t, target=target, angle=angle: distance(t[0], target, angle) ** 2, [grid[k]],
+                       method="Nelder-Mead", options={"xatol": 1e-16, "fatol": 1e-34, "maxiter": 2000})
         errors.append(min(math.sqrt(sol.fun), values[k]))
     return max(errors)
 

@@ -120,7 +120,7 @@ def _four_bar(m, fbt, varied: list[Vary], population: int, generations: Optional
     archive = run(fbt, budget, seed, starts(fbt), progress)
     names = [v.name for v in varied]
     chosen = []
-    for found in archive.best(4 * best):
+    for found in archive.best(4 * best, exact=True):
         values = {n: float(found.z[i]) for i, n in enumerate(names)}
         if follows_a_turn(m, values, fbt.roles.joint):
             chosen.append(found)

@@ -80,7 +80,7 @@ def task_metric(ev: Evaluator, task: Any) -> Metric:
         if task.output_zero is not None:
             raise KinematikaError("usage", "--output-zero needs a four-bar whose output is its rocker or "
                                   "coupler", "--output-zero")
-        errors = lambda c: rotation_errors(c, task.body, table)              # noqa: E731
+        errors = lambda c: rotation_errors(c, task.body, table)
     else:
         try:
             ref = model.resolve_point(task.point, "--point")
@@ -91,9 +91,9 @@ def task_metric(ev: Evaluator, task: Any) -> Metric:
             if len(points) < 2:
                 raise KinematikaError("usage", f"body {ref.body!r} needs two points to have a direction", where)
             poses = np.column_stack([task.xy.real, task.xy.imag, task.angle])
-            errors = lambda c: pose_distances(c, ref, points, poses)         # noqa: E731
+            errors = lambda c: pose_distances(c, ref, points, poses)
         else:
-            errors = lambda c: path_distances(c.motion(ref)[0], task.xy)     # noqa: E731
+            errors = lambda c: path_distances(c.motion(ref)[0], task.xy)
 
     def compute(c: Cycle) -> np.ndarray:
         r = sqrtw * errors(c)

@@ -113,16 +113,18 @@ class FourBarTask:
         return np.full(len(z), float(value))
 
     # scoring ------------------------------------------------------------------------------
-    def evaluate(self, z: np.ndarray, exact: bool = False) -> Scores:
+    def evaluate(self, z: np.ndarray, exact: bool = False, phi: Optional[np.ndarray] = None) -> Scores:
         """Score designs z (D, dims); `exact`: through the model's own constructions, the
-        nearest points converged (a design's final score)."""
+        nearest points converged (a design's final score). For free timing, `phi` (D, n) are
+        crank angles the targets were met at (a polish's, kept in order): each is moved to
+        the nearest point of the motion near it instead of the nearest of the whole turn."""
         z = np.atleast_2d(np.asarray(z, dtype=float))
         size = len(z)
         canon = (self.exact_map if exact else self.map).canon(z[:, :self.n])
         with np.errstate(all="ignore"):
-            return self._score(z, canon, size, exact)
+            return self._score(z, canon, size, exact, phi)
 
-    def _score(self, z: np.ndarray, canon: Canon, size: int, exact: bool) -> Scores:
+    def _score(self, z: np.ndarray, canon: Canon, size: int, exact: bool, given: Optional[np.ndarray]) -> Scores:
         fb = four_bar(canon)
         reach = crank_range(fb)
         drawn = np.isfinite(canon.w).all(axis=1) & reach.drawn[:, 0]
@@ -132,7 +134,7 @@ class FourBarTask:
             phi = fb.phi0 + self.sign * (np.radians(start)[:, None] + self.x[None, :])
             violation += self._unreachable(reach, phi)
         else:
-            phi = self.nearest(fb, canon, reach, exact)
+            phi = self.nearest(fb, canon, reach, exact) if given is None else self.settle(fb, canon, reach, given, exact)
         p, lines = self._at(fb, canon, phi)
         error, zero = self._errors(fb, canon, p, lines)
         violation += self.requirement_violation(fb, reach, phi)
@@ -217,6 +219,18 @@ class FourBarTask:
         phi = np.take_along_axis(np.broadcast_to(grid[:, None, :], dist.shape), k[..., None], 2)[..., 0]
         step = ((high - low) / count)[:, None]
         phi = self._parabola(dist, k, phi, step, count, full)
+        return self._converge(fb, canon, phi, low, high, full, exact)
+
+    def settle(self, fb: FourBar, canon: Canon, reach: CrankRange, phi: np.ndarray, exact: bool) -> np.ndarray:
+        """Given crank angles moved to the nearest point of the motion near each."""
+        full = reach.full[:, 0]
+        low = np.where(full, fb.phi0[:, 0], reach.low[:, 0])
+        high = np.where(full, fb.phi0[:, 0] + TWO_PI, reach.high[:, 0])
+        return self._converge(fb, canon, np.asarray(phi, dtype=float), low, high, full, exact)
+
+    def _converge(self, fb: FourBar, canon: Canon, phi: np.ndarray, low: np.ndarray, high: np.ndarray,
+                  full: np.ndarray, exact: bool) -> np.ndarray:
+        """Gauss–Newton steps on each nearest point until they settle (or STEPS, in the search)."""
         for _ in range(FINE_STEPS if exact else STEPS):
             new = self._gauss_newton(fb, canon, phi, low, high, full)
             settled = np.all(np.abs(new - phi) <= 1e-15 * (1 + np.abs(phi)))

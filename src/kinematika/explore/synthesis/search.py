@@ -33,11 +33,12 @@ from .problem import TWO_PI, FourBarTask, Scores
 
 PENALTY = 1e9
 STALL = 40              # generations without improving the best by IMPROVED that end a run
-IMPROVED = 1e-3
-POLISHED = 3            # designs polished after each run
-QUICK = 60              # residual evaluations of a polish during the search
-FINAL = 400             # … of the best designs' last polish
-FINISHED = 6            # the best designs polished last
+IMPROVED = 1e-2
+ALONG = 40              # a run's best designs are polished every ALONG generations
+SPREAD = 8              # designs per generation, per variable searched, at least
+POLISHED = 4            # a run's designs polished together
+FINAL = 400             # residual evaluations of the best designs' last polish
+FINISHED = 4            # the best designs polished last
 RESERVE = 0.1           # the share of the user's seconds kept for the last polish (5 s at most)
 DISTINCT = 0.02         # designs written are this fraction of the intervals apart
 
@@ -69,42 +70,51 @@ class Budget:
 
 @dataclass
 class Found:
-    """A design the search kept: its search vector and exact score."""
+    """A design the search kept: its search vector, its score, whether that score is exact, and
+    for free timing the crank angles the targets are met at."""
 
     z: np.ndarray
     objective: float
+    exact: bool = False
+    phi: Optional[np.ndarray] = None
 
 
 class Archive:
-    """The feasible designs found, polished, each scored exactly."""
+    """The feasible designs found and polished, each with its score: exact (through the model's
+    constructions, the nearest points converged) for the designs polished to the end."""
 
     def __init__(self, fbt: FourBarTask) -> None:
         self.fbt = fbt
         self.found: list[Found] = []
         self.history: list[tuple[float, float]] = []        # (seconds, best) as it improves
+        self.exact = False                                  # an exactly scored design is kept
 
-    def add(self, z: np.ndarray, started: float) -> Optional[float]:
-        """Score z exactly and keep it if feasible; its objective, or None."""
-        s = self.fbt.evaluate(z[None, :], exact=True)
-        if s.violation[0] > 0 or not np.isfinite(s.objective[0]):
-            return None
-        value = float(s.objective[0])
-        best = self.best_value()
-        self.found.append(Found(np.array(z, dtype=float), value))
-        if value < best:
-            self.history.append((time.perf_counter() - started, value))
-        return value
+    def add(self, z: np.ndarray, started: float, phi: Optional[np.ndarray] = None, exact: bool = False) -> None:
+        """Score designs z (K, dims) (free timing: near the crank angles `phi`, when given) and
+        keep the feasible ones."""
+        z = np.atleast_2d(z)
+        s = self.fbt.evaluate(z, exact=exact, phi=None if phi is None else np.atleast_2d(phi))
+        timed = not self.fbt.task.free_timing
+        for i in np.flatnonzero((s.violation <= 0) & np.isfinite(s.objective)):
+            value = float(s.objective[i])
+            if value < self.best_value():
+                self.history.append((time.perf_counter() - started, value))
+            self.found.append(Found(np.array(z[i], dtype=float), value, exact, None if timed else s.phi[i].copy()))
+            self.exact |= exact
 
     def best_value(self) -> float:
         """The best objective kept (inf before any)."""
         return min((f.objective for f in self.found), default=math.inf)
 
-    def best(self, count: int) -> list[Found]:
-        """The best designs, each at least DISTINCT of the intervals from the better ones."""
+    def best(self, count: int, exact: bool = False) -> list[Found]:
+        """The best designs (`exact`: of those scored exactly), each at least DISTINCT of the
+        intervals from the better ones."""
         lo, hi = np.array(self.fbt.bounds()).T
         span = np.maximum(hi - lo, 1e-300)
         out: list[Found] = []
         for f in sorted(self.found, key=lambda f: f.objective):
+            if exact and not f.exact:
+                continue
             if all(np.max(np.abs(f.z - g.z) / span) > DISTINCT for g in out):
                 out.append(f)
             if len(out) == count:
@@ -125,8 +135,9 @@ class Space:
     def bounds(self) -> list[tuple[float, float]]:
         raise NotImplementedError
 
-    def score(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Energies (D,) and designs (D, dims) of the points y (D, k)."""
+    def score(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
+        """Energies (D,) and designs (D, dims) of the points y (D, k), and for free timing the
+        crank angles the targets are met at (None: the nearest points)."""
         raise NotImplementedError
 
 
@@ -139,79 +150,98 @@ class Parameters(Space):
     def bounds(self) -> list[tuple[float, float]]:
         return self.fbt.bounds()
 
-    def score(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        return energy(self.fbt.evaluate(y)), y
+    def score(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
+        return energy(self.fbt.evaluate(y)), y, None
 
 
 def run(fbt: FourBarTask, budget: Budget, seed: int, starts: list[np.ndarray],
         progress: Optional[Callable[[float], None]] = None) -> Archive:
     """Search until the budget is spent; the archive of polished designs."""
-    from .polish import polish
-
     archive = Archive(fbt)
     spaces: list[Space] = [Parameters(fbt)]
     shapes = Shapes.of(fbt)
     if shapes is not None:
         spaces = [shapes, Parameters(fbt)]
     for z in starts:
-        _polish_into(archive, fbt, z, budget, polish, FINAL)
+        _finish(archive, fbt, Found(z, math.inf), budget)
     attempt = 0
     while budget.left():
         space = spaces[0] if attempt % 4 != 3 else spaces[-1]
-        along = lambda z: _polish_into(archive, fbt, z, budget, polish, QUICK)
+        along = lambda z, phi: _polish_many(archive, fbt, z, phi, budget)
         best = _evolve(space, budget, seed + attempt, starts if attempt == 0 else [], along)
-        for z in best:
-            if not budget.left() and archive.found:
-                break
-            _polish_into(archive, fbt, z, budget, polish, QUICK)
+        if best is not None:
+            _polish_many(archive, fbt, best[0], best[1], budget)
         if progress is not None:
             progress(archive.best_value())
         attempt += 1
     for found in archive.best(FINISHED):
-        _polish_into(archive, fbt, found.z, budget, polish, FINAL)
+        if budget.seconds is not None and time.perf_counter() - budget.started > budget.seconds and archive.exact:
+            break
+        _finish(archive, fbt, found, budget)
     return archive
 
 
-def _polish_into(archive: Archive, fbt: FourBarTask, z: np.ndarray, budget: Budget, polish,
-                 evaluations: int) -> None:
-    """Polish z (at most `evaluations` residual evaluations) and keep it (and z itself, when
-    feasible)."""
-    archive.add(z, budget.started)
-    s = fbt.evaluate(z[None, :])
+def _polish_many(archive: Archive, fbt: FourBarTask, z: np.ndarray, phi: Optional[np.ndarray],
+                 budget: Budget) -> None:
+    """Designs z (K, dims) polished together (`polish.batch_lm`) and kept with them; `phi`
+    the free timing's crank angles they were found with (None: the nearest points)."""
+    from .polish import batch_lm
+
+    z = np.atleast_2d(z)
+    s = fbt.evaluate(z, phi=phi)
+    keep = np.isfinite(s.objective) | (s.violation < 1e6)
+    if not keep.any():
+        return
+    archive.add(z[keep], budget.started, None if phi is None else s.phi[keep])
+    polished, angles = batch_lm(fbt, z[keep], _take(s, keep))
+    archive.add(polished, budget.started, angles)
+
+
+def _finish(archive: Archive, fbt: FourBarTask, found: Found, budget: Budget) -> None:
+    """A design polished to the end (scipy's least squares) and scored exactly, as is the
+    design it started from."""
+    from .polish import polish
+
+    archive.add(found.z, budget.started, found.phi, exact=True)
+    s = fbt.evaluate(found.z[None, :], phi=None if found.phi is None else found.phi[None, :])
     if not np.isfinite(s.objective[0]) and s.violation[0] >= 1e6:
         return
-    polished = polish(fbt, z, s, 0, evaluations)
+    polished = polish(fbt, found.z, s, 0, FINAL)
     if polished is not None:
-        archive.add(polished, budget.started)
+        archive.add(polished[0], budget.started, polished[1], exact=True)
+
+
+def _take(s: Scores, index) -> Scores:
+    return Scores(s.objective[index], s.violation[index], s.phi[index], s.zero[index], s.start[index])
 
 
 def _evolve(space: Space, budget: Budget, seed: int, starts: list[np.ndarray],
-            along: Callable[[np.ndarray], None]) -> list[np.ndarray]:
-    """One run of differential evolution; its best distinct designs (search vectors). The
-    run's best is polished on the way (`along`), after 25, 50, 100, 200 … generations."""
+            along: Callable) -> Optional[tuple[np.ndarray, Optional[np.ndarray]]]:
+    """One run of differential evolution; its best distinct designs (search vectors, and the
+    crank angles a shape search met the targets at). The run's best distinct designs are
+    polished on the way (`along`), every ALONG generations."""
     from scipy.optimize import differential_evolution
 
     bounds = space.bounds()
     k = len(bounds)
-    size = max(5, math.ceil(budget.population / k))
-    last: dict[str, np.ndarray] = {}
-    record = {"best": math.inf, "since": 0, "age": 0, "next": 25}
+    size = max(5, math.ceil(budget.population / k), SPREAD if isinstance(space, Shapes) else 0)
+    record = {"best": math.inf, "since": 0, "age": 0}
 
     def cost(y: np.ndarray) -> np.ndarray:
-        e, z = space.score(y.T)
+        e, _, _ = space.score(y.T)
         budget.evaluated += len(e)
-        last["e"], last["z"] = e, z
         return e
 
     def callback(intermediate_result) -> bool:          # scipy passes the result by this name
         budget.spent += 1
         record["age"] += 1
         fun = float(intermediate_result.fun)
-        if record["age"] >= record["next"]:
-            record["next"] *= 2
-            if fun < PENALTY:
-                _, z = space.score(np.asarray(intermediate_result.x)[None, :])
-                along(z[0])
+        if record["age"] % ALONG == 0 and fun < PENALTY:
+            chosen = _distinct(np.asarray(intermediate_result.population),
+                               np.asarray(intermediate_result.population_energies), bounds)
+            if chosen is not None:
+                _, z, phi = space.score(chosen)
+                along(z, phi)
         if fun < record["best"] * (1 - IMPROVED) - 1e-300:
             record["best"], record["since"] = fun, 0
         else:
@@ -222,12 +252,19 @@ def _evolve(space: Space, budget: Budget, seed: int, starts: list[np.ndarray],
     result = differential_evolution(cost, bounds, popsize=size, maxiter=max(1, budget.remaining()), seed=seed,
                                     tol=1e-10, atol=0.0, polish=False, vectorized=True, updating="deferred",
                                     init=init, callback=callback, mutation=(0.5, 1.0), recombination=0.9)
-    population = np.asarray(result.population)
-    energies = np.asarray(result.population_energies)
+    chosen = _distinct(np.asarray(result.population), np.asarray(result.population_energies), bounds)
+    if chosen is None:
+        return None
+    _, z, phi = space.score(chosen)
+    return z, phi
+
+
+def _distinct(population: np.ndarray, energies: np.ndarray, bounds: list[tuple[float, float]]) -> Optional[np.ndarray]:
+    """The POLISHED best feasible points of a population, each 5 % of the box from the better."""
     order = np.argsort(energies, kind="stable")
-    chosen: list[np.ndarray] = []
     lo, hi = np.array(bounds).T
     span = np.maximum(hi - lo, 1e-300)
+    chosen: list[int] = []
     for i in order:
         if energies[i] >= PENALTY:
             break
@@ -235,10 +272,7 @@ def _evolve(space: Space, budget: Budget, seed: int, starts: list[np.ndarray],
             chosen.append(int(i))
         if len(chosen) == POLISHED:
             break
-    if not chosen:
-        return []
-    _, z = space.score(population[chosen])
-    return list(z)
+    return population[chosen] if chosen else None
 
 
 def _initial(bounds: list[tuple[float, float]], count: int, seed: int, starts: list[np.ndarray],
@@ -336,7 +370,8 @@ class Shapes(Space):
             z, violation = self._design(y, shape, a, b, phi)
         objective = np.where(np.isfinite(objective), objective, np.inf)
         violation = np.where(np.isfinite(objective), violation, PENALTY)
-        return np.where(violation > 0, PENALTY * (1.0 + np.minimum(violation, 1e6)), objective), z
+        return np.where(violation > 0, PENALTY * (1.0 + np.minimum(violation, 1e6)), objective), z, \
+            phi + np.angle(a)[:, None]
 
     def _design(self, y, shape: FourBar, a, b, phi) -> tuple[np.ndarray, np.ndarray]:
         """The placed designs' search vectors, and their violations (intervals, requirements,
