@@ -23,7 +23,7 @@ extreme values of |d| over the crank's range.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Optional
+from typing import Any, Optional
 
 import numpy as np
 
@@ -36,17 +36,18 @@ CHANGE_POINT = 1e-9          # Grashof's s + l = p + q within this fraction of l
 
 @dataclass
 class FourBar:
-    """D four-bars (each field broadcasts to (D, 1)): pivots, lengths, coupler point, branch,
-    and `phi0`, the crank's absolute angle in the drawn configuration (radians)."""
+    """D four-bars (each field an array that broadcasts to (D, 1), or a number shared by all):
+    pivots, lengths, coupler point, branch, and `phi0`, the crank's absolute angle in the
+    drawn configuration (radians)."""
 
-    o2: np.ndarray
-    o4: np.ndarray
-    r2: np.ndarray
-    r3: np.ndarray
-    r4: np.ndarray
-    c: np.ndarray
-    sigma: np.ndarray
-    phi0: np.ndarray
+    o2: Any
+    o4: Any
+    r2: Any
+    r3: Any
+    r4: Any
+    c: Any
+    sigma: Any
+    phi0: Any
 
     @property
     def r1(self) -> np.ndarray:
@@ -234,13 +235,12 @@ def least_transmission(fb: FourBar) -> np.ndarray:
     |d|, so its extremes are at |d| = |r1 − r2| and r1 + r2 (ψ = 0, π) when the crank turns;
     a crank with limit positions meets μ = 0 or 180° there (coupler and rocker in line)."""
     r1, r2, r3, r4 = fb.r1, fb.r2, fb.r3, fb.r4
-    worst = None
+    least = []
     for dist in (r1 - r2, r1 + r2):
         cos = np.clip((r3 * r3 + r4 * r4 - dist * dist) / (2 * r3 * r4), -1.0, 1.0)
         mu = np.degrees(np.arccos(cos))
-        m = np.minimum(mu, 180.0 - mu)
-        worst = m if worst is None else np.minimum(worst, m)
-    return np.where(crank_range(fb).full, worst, 0.0)
+        least.append(np.minimum(mu, 180.0 - mu))
+    return np.where(crank_range(fb).full, np.minimum(*least), 0.0)
 
 
 def transmission_gaps(fb: FourBar, least: float) -> np.ndarray:

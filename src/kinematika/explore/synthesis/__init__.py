@@ -59,7 +59,7 @@ def synthesize(model: Any, vary: list[Vary | str], task: Task, population: int =
     """The best `best` distinct designs of `model` for `task`, the parameters `vary` chosen
     within their intervals; the search runs `generations` generations of `population`
     designs in all, or until `seconds` of wall time (the first to come), from `seed`."""
-    from ...api import as_model
+    from ...model.source import as_model
     from ..evaluate import _check_parameters
 
     m = as_model(model)

@@ -145,7 +145,7 @@ def _freudenstein(fbt: FourBarTask) -> list[np.ndarray]:
         zeros = np.radians(turn)
     else:
         return []                               # the drawn zero moves with the design
-    x, y = np.radians(task.inputs), np.radians(task.angle)
+    x, y = fbt.x, np.radians(task.angle)
     out = []
     for start, zero in itertools.product(starts_, zeros):
         phi = w0[9] - theta0 + fbt.sign * (np.radians(start) + x)

@@ -21,15 +21,15 @@ def fast_task(model: Model, task: Task, varied: list[Vary]) -> Optional[FourBarT
     roles = four_bar_roles(model)
     point = None
     ok = roles is not None
-    if ok and task.kind in ("path", "motion"):
+    if roles is not None and task.kind in ("path", "motion"):
         ref = model.resolve_point(task.point, "--point") if task.point else None
         ok = ref is not None and ref.body == roles.coupler
         point = ref.point if ref is not None else None
-    if ok and task.kind == "function":
+    if roles is not None and task.kind == "function":
         ok = task.body in (roles.rocker, roles.coupler)
-    if ok and task.timing is not None:
+    if roles is not None and ok and task.timing is not None:
         ok = task.timing.joint == roles.joint
-    if not ok:
+    if roles is None or not ok:
         if task.requires.crank_rocker:
             raise KinematikaError("usage", "--require crank-rocker needs a four-bar driven at its crank (a crank "
                                   "and two links closing on the frame), its point on the coupler", "--require")

@@ -64,7 +64,7 @@ def four_bar_roles(model: Model) -> Optional[Roles]:
         return None
     groups = assur_groups(model)
     roles = linkage_roles(model, groups)
-    if roles is None or roles["kind"] != "four-bar":
+    if groups is None or roles is None or roles["kind"] != "four-bar":
         return None
     joint = model.joint(groups[0].joints[0])
     if joint.kind.coordinate != "angle":

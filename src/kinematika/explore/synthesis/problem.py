@@ -78,7 +78,7 @@ class FourBarTask:
         self.free_zero = task.kind == "function" and task.output_zero == "free"
         self.line = self._line_body()
         self.timed = task.inputs is not None
-        self.x = np.radians(task.inputs) if task.inputs is not None else None
+        self.x = np.radians(task.inputs) if task.inputs is not None else np.zeros(0)    # the inputs, radians
 
     def _line_body(self) -> str:
         """Function generation: which of the four-bar's angles the output's line follows."""

@@ -29,6 +29,7 @@ from typing import Callable, Optional
 import numpy as np
 
 from ..fourbar import FourBar, crank_range, grashof_gaps, pose, transmission_gaps
+from .linkage import CarriedMap
 from .problem import TWO_PI, FourBarTask, Scores
 
 PENALTY = 1e9
@@ -168,7 +169,8 @@ def run(fbt: FourBarTask, budget: Budget, seed: int, starts: list[np.ndarray],
     while budget.left():
         space = spaces[0] if attempt % 4 != 3 else spaces[-1]
         along = lambda z, phi: _polish_many(archive, fbt, z, phi, budget)
-        best = _evolve(space, budget, seed + attempt, starts if attempt == 0 else [], along)
+        run_seed = int(np.random.SeedSequence([seed, attempt]).generate_state(1)[0])   # runs of seeds never overlap
+        best = _evolve(space, budget, run_seed, starts if attempt == 0 else [], along)
         if best is not None:
             _polish_many(archive, fbt, best[0], best[1], budget)
         if progress is not None:
@@ -299,8 +301,9 @@ class Shapes(Space):
     SPAN = 1e3              # the largest ratio of two lengths searched
 
     def __init__(self, fbt: FourBarTask) -> None:
+        assert isinstance(fbt.map, CarriedMap)
         self.fbt = fbt
-        self.map = fbt.map
+        self.map: CarriedMap = fbt.map
         self.u_lo, self.u_hi = self.map.coordinate_bounds(fbt.low, fbt.high)
         self.ordered = fbt.task.requires.ordered and fbt.task.free_timing
         self.count = fbt.task.count
@@ -310,7 +313,7 @@ class Shapes(Space):
         """The shape search, when the model's map is in closed form, carries all nine numbers
         of the four-bar, and the task is a path whose first target is free."""
         m = fbt.map
-        if not getattr(m, "carried", False) or fbt.task.kind != "path":
+        if not isinstance(m, CarriedMap) or fbt.task.kind != "path":
             return None
         if not all(c.param is not None for c in m.coordinates[:9]):
             return None
@@ -349,7 +352,7 @@ class Shapes(Space):
             return first + s * np.concatenate([np.zeros((len(y), 1)), steps[:, :self.count - 1]], axis=1)
         return np.concatenate([first, y[:, 6:]], axis=1)
 
-    def score(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def score(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
         fbt, task = self.fbt, self.fbt.task
         size = len(y)
         with np.errstate(all="ignore"):
@@ -393,8 +396,9 @@ class Shapes(Space):
         phi1 = phi[:, 0] + turn                                     # the first target's crank angle
         theta0 = turn
         crank0 = m.coordinates[9]
+        drawn: np.ndarray
         if crank0.param is None:
-            drawn = crank0.offset + (theta0 if m.relative else 0.0)
+            drawn = crank0.offset + (theta0 if m.relative else np.zeros(size))
             u[:, 9] = crank0.offset
         else:
             wanted = phi1 - (theta0 if m.relative else 0.0)
