@@ -20,7 +20,6 @@ constructions and checked again on the designs that are written.
 """
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 from typing import Optional
 
@@ -31,7 +30,7 @@ from ...algebra.vectors import Space
 from ...engine.array_positions import array_positions
 from ...engine.instant import Instant, _parameters
 from ...errors import KinematikaError
-from ...model.model import Model, PointRef
+from ...model.model import Model
 from ...structure.assur import assur_groups
 from ...sweep.batch import model_with_symbols
 from ..metrics import linkage_roles
@@ -386,30 +385,3 @@ def _coordinate(name: str, value: np.ndarray, slope: np.ndarray, probes: np.ndar
     if np.max(np.abs(k * x + offset - value)) > 1e-9 * scale or abs(k - k0) > 1e-6 * max(1.0, abs(k)):
         return None
     return Coordinate(name, j, float(k), float(offset))
-
-
-def point_on_coupler(model: Model, roles: Roles, point: str, where: str) -> str:
-    """The name of the path's point, when the coupler carries it (else the fast path does not
-    apply: None is returned by the caller's test)."""
-    ref: PointRef = model.resolve_point(point, where)
-    return ref.point if ref.body == roles.coupler else ""
-
-
-def replace_values(model: Model, values: dict[str, float]) -> Model:
-    """The model with the parameters' values (used by checks)."""
-    from ...model.overrides import with_parameters
-
-    return with_parameters(model, {k: repr(float(v)) for k, v in values.items()})
-
-
-__all__ = [
-    "Canon",
-    "CarriedMap",
-    "Drawn",
-    "ModelMap",
-    "Roles",
-    "canon_of",
-    "carried_map",
-    "dataclasses",
-    "four_bar_roles",
-]

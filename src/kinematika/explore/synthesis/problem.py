@@ -26,9 +26,8 @@ import numpy as np
 
 from ...errors import KinematikaError
 from ...model.model import Model
-from ..fourbar import (PHI, CrankRange, FourBar, Pose, crank_range, grashof_gaps, pose,
-                       transmission_gaps)
-from .linkage import NW, Canon, CarriedMap, ModelMap, Roles, carried_map
+from ..fourbar import CrankRange, FourBar, Pose, crank_range, grashof_gaps, pose, transmission_gaps
+from .linkage import Canon, CarriedMap, ModelMap, Roles, carried_map
 from .task import Task
 
 TWO_PI = 2 * np.pi
@@ -321,4 +320,3 @@ def best_offset(d: np.ndarray, sqrtw: np.ndarray, objective: str) -> np.ndarray:
     return (sqrtw[i] * d[np.arange(len(d)), i] + sqrtw[j] * d[np.arange(len(d)), j]) / (sqrtw[i] + sqrtw[j])
 
 
-__all__ = ["NW", "PHI", "FourBarTask", "Scores", "best_offset", "four_bar", "order_violation", "wrap"]

@@ -134,6 +134,7 @@ class Space:
     their scores."""
 
     def bounds(self) -> list[tuple[float, float]]:
+        """The box searched: (low, high) per variable."""
         raise NotImplementedError
 
     def score(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
@@ -149,9 +150,11 @@ class Parameters(Space):
         self.fbt = fbt
 
     def bounds(self) -> list[tuple[float, float]]:
+        """The parameters' intervals (and a turn for START)."""
         return self.fbt.bounds()
 
     def score(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
+        """The designs' energies; the points are the designs; the nearest points their timing."""
         return energy(self.fbt.evaluate(y)), y, None
 
 
@@ -322,6 +325,9 @@ class Shapes(Space):
         return cls(fbt)
 
     def bounds(self) -> list[tuple[float, float]]:
+        """Length ratios to the crank from 1/SPAN (1 for a crank-rocker) to what the intervals
+        allow (SPAN at most), the coupler point's size likewise and its angle, the first
+        target's crank angle, and the targets' spacing."""
         lo, hi = self.u_lo, self.u_hi
         small = 1.0 / self.SPAN
         crank = max(lo[4], hi[4] * small, 1e-300)
@@ -353,6 +359,8 @@ class Shapes(Space):
         return np.concatenate([first, y[:, 6:]], axis=1)
 
     def score(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
+        """Each shape placed on the targets by its best similarity: its energy, the placed
+        design's parameters, and the crank angles it meets the targets at."""
         fbt, task = self.fbt, self.fbt.task
         size = len(y)
         with np.errstate(all="ignore"):
