@@ -36,8 +36,10 @@ PENALTY = 1e9
 STALL = 40              # generations without improving the best by IMPROVED that end a run
 IMPROVED = 1e-2
 ALONG = 40              # a run's best designs are polished every ALONG generations
+LONGEST = 150           # generations of a run at most (the polish finishes what a run finds)
 SPREAD = 8              # designs per generation, per variable searched, at least
-POLISHED = 4            # a run's designs polished together
+POLISHED = 8            # a run's designs polished together on the way
+ENDED = 32              # … and when it ends
 FINAL = 400             # residual evaluations of the best designs' last polish
 FINISHED = 4            # the best designs polished last
 RESERVE = 0.1           # the share of the user's seconds kept for the last polish (5 s at most)
@@ -254,18 +256,20 @@ def _evolve(space: Space, budget: Budget, seed: int, starts: list[np.ndarray],
         return record["since"] >= STALL or not budget.left()
 
     init = _initial(bounds, size * k, seed, starts, space)
-    result = differential_evolution(cost, bounds, popsize=size, maxiter=max(1, budget.remaining()), seed=seed,
+    result = differential_evolution(cost, bounds, popsize=size, maxiter=max(1, min(budget.remaining(), LONGEST)), seed=seed,
                                     tol=1e-10, atol=0.0, polish=False, vectorized=True, updating="deferred",
                                     init=init, callback=callback, mutation=(0.5, 1.0), recombination=0.9)
-    chosen = _distinct(np.asarray(result.population), np.asarray(result.population_energies), bounds)
+    chosen = _distinct(np.asarray(result.population), np.asarray(result.population_energies), bounds, ENDED)
     if chosen is None:
         return None
     _, z, phi = space.score(chosen)
     return z, phi
 
 
-def _distinct(population: np.ndarray, energies: np.ndarray, bounds: list[tuple[float, float]]) -> Optional[np.ndarray]:
-    """The POLISHED best feasible points of a population, each 5 % of the box from the better."""
+def _distinct(population: np.ndarray, energies: np.ndarray, bounds: list[tuple[float, float]],
+              count: int = 0) -> Optional[np.ndarray]:
+    """The best feasible points of a population (POLISHED of them, or `count`), each 5 % of
+    the box from the better ones."""
     order = np.argsort(energies, kind="stable")
     lo, hi = np.array(bounds).T
     span = np.maximum(hi - lo, 1e-300)
@@ -275,7 +279,7 @@ def _distinct(population: np.ndarray, energies: np.ndarray, bounds: list[tuple[f
             break
         if all(np.max(np.abs(population[i] - population[j]) / span) > 0.05 for j in chosen):
             chosen.append(int(i))
-        if len(chosen) == POLISHED:
+        if len(chosen) == (count or POLISHED):
             break
     return population[chosen] if chosen else None
 
@@ -375,6 +379,7 @@ class Shapes(Space):
             tm = (w * task.xy[None, :]).sum(axis=1, keepdims=True) / w.sum()
             pc, tc = p - pm, task.xy[None, :] - tm
             a = (w * np.conj(pc) * tc).sum(axis=1) / (w * np.abs(pc) ** 2).sum(axis=1)
+            a = a / np.abs(a) * self._scale(np.abs(a), shape)      # the best scale the intervals allow
             b = tm[:, 0] - a * pm[:, 0]
             residual = fbt.sqrtw[None, :] * np.abs(a[:, None] * p + b[:, None] - task.xy[None, :])
             objective = (residual ** 2).sum(axis=1) if task.objective == "sse" else residual.max(axis=1)
@@ -383,6 +388,22 @@ class Shapes(Space):
         violation = np.where(np.isfinite(objective), violation, PENALTY)
         return np.where(violation > 0, PENALTY * (1.0 + np.minimum(violation, 1e6)), objective), z, \
             phi + np.angle(a)[:, None]
+
+    def _scale(self, best: np.ndarray, shape: FourBar) -> np.ndarray:
+        """The similarity's scale nearest the best fit's that keeps the placed lengths and
+        coupler point in their intervals (the best fit's where none does)."""
+        lo, hi = self.u_lo, self.u_hi
+        ones = np.ones_like(best)
+        pairs = [(4, ones), (5, shape.r3[:, 0]), (6, shape.r4[:, 0]), (7, shape.c[:, 0].real), (8, shape.c[:, 0].imag)]
+        if self.map.polar:
+            pairs.append((2, shape.r1[:, 0].real))
+        low, high = np.zeros_like(best), np.full_like(best, np.inf)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for k, v in pairs:
+                a, b = lo[k] / v, hi[k] / v
+                low = np.maximum(low, np.where(v > 0, a, np.where(v < 0, b, 0.0)))
+                high = np.minimum(high, np.where(v > 0, b, np.where(v < 0, a, np.inf)))
+        return np.where(low <= high, np.clip(best, low, high), best)
 
     def _design(self, y, shape: FourBar, a, b, phi) -> tuple[np.ndarray, np.ndarray]:
         """The placed designs' search vectors, and their violations (intervals, requirements,
