@@ -116,6 +116,26 @@ def test_free_timing_targets_are_met_in_order_by_a_crank_rocker(tmp_path):
     assert sse < 1e-12
 
 
+def test_a_transmission_angle_requirement_holds_over_the_whole_turn(tmp_path):
+    """`--require transmission=40 --require crank-rocker`: the written design's least
+    transmission angle, over a dense turn of the test's own closure (min(μ, 180° − μ), μ
+    between coupler and rocker), is at least 40°."""
+    known = (0j, 3.7 + 0j, 1.0, 3.6, 2.9, 1.2 + 1.1j, 1.0)
+    points = [closure(*known, t)[2] for t in np.radians([20, 90, 160, 250, 320])]
+    targets = write(tmp_path / "t.csv", "x,y", [(p.real, p.imag) for p in points])
+    out = invoke(tmp_path, PAPERS, "--vary", "r1=2:6", "--vary", "r2=0.5:2", "--vary", "r3=2:6", "--vary", "r4=2:6",
+                 "--vary", "rcx=-3:3", "--vary", "rcy=-3:3", "--target", targets, "--point", "P", "--require",
+                 "transmission=40", "--require", "crank-rocker", "--generations", "40", "--best", "1")
+    assert out.exit_code == 0, out.output
+    o2, o4, r2, r3, r4, c, _ = papers_design(tmp_path / "out" / "best-1.yaml")
+    least = 90.0
+    for t in np.linspace(0, 2 * np.pi, 7201):
+        a, b, _ = closure(o2, o4, r2, r3, r4, c, 1.0, t)
+        mu = np.degrees(abs(np.angle((a - b) / (o4 - b))))
+        least = min(least, mu, 180 - mu)
+    assert least >= 40 - 1e-6
+
+
 # function generation: Freudenstein -----------------------------------------------------------
 FUNCTION = """
 name: Function generator
