@@ -77,74 +77,95 @@ def synthesize(model: Path = ModelArg,
                output_body: Optional[str] = typer.Option(None, "--output", help="the body whose rotation "
                                                          "follows the function"),
                over: str = typer.Option("0:90", "--over", help="the input's range of the function "
-                                        "(LOW:HIGH, degrees from the drawn position)"),
+                                        "(LOW:HIGH, degrees from the input's zero)"),
                points: int = typer.Option(7, "--points", min=2, help="precision points of the "
                                           "function (Chebyshev spacing)"),
+               timing: Optional[str] = typer.Option(None, "--timing", help="JOINT[=START]: the targets' "
+                                                    "input column is the joint's travel from the first "
+                                                    "target, met START from the drawn configuration "
+                                                    "(free without =START)"),
+               objective: str = typer.Option("max", "--objective", help="sse (the sum of the squared "
+                                             "errors) or max (the largest error)"),
+               require: list[str] = typer.Option([], "--require", help="crank-rocker, ordered or "
+                                                 "transmission=DEG (repeat)"),
+               output_zero: Optional[str] = typer.Option(None, "--output-zero", help="function "
+                                                         "generation: the output's zero, 'free' or "
+                                                         "its line's absolute angle (degrees); default "
+                                                         "its drawn position"),
+               seconds: Optional[float] = typer.Option(None, "--seconds", min=0.0, help="stop after S "
+                                                       "seconds of wall time and write what was found"),
                population: int = typer.Option(40, "--population", min=4, help="designs per generation"),
-               generations: int = typer.Option(200, "--generations", min=1, help="at most this many"),
+               generations: Optional[int] = typer.Option(None, "--generations", min=1, help="at most this "
+                                                         "many in all (default 200, or no limit with "
+                                                         "--seconds)"),
                seed: int = typer.Option(0, "--seed", help="the optimiser's seed"),
                best: int = typer.Option(3, "--best", min=1, help="how many distinct designs to keep"),
                out: Path = typer.Option(..., "-o", "--output-dir", help="folder for the best designs' "
-                                        "model files"),
+                                        "model files and designs.csv"),
                plot: Optional[Path] = typer.Option(None, "--plot", help="draw the best designs over "
                                                    "the targets to FILE"),
                steps: Optional[int] = typer.Option(None, "--steps", min=1, max=100_000,
-                                                   help="positions per design"),
+                                                   help="positions per design (models other than a "
+                                                   "four-bar)"),
                lang: Optional[str] = MessagesOpt,
                ) -> None:
     """Choose parameter values so that a point follows target points (path generation), a body's
     rotation follows a function of the input's (function generation) or a body passes through
     poses (motion generation); write the best designs as model files."""
     messages(lang)
-    from ..explore.evaluate import Sweep
     from ..explore.synthesis import synthesize as run, write_designs
 
     def work():
-        objective, files = _objective(model, target, target_function, target_motion, point, output_body,
-                                      over, points)
-        result = run(model, vary, objective, population, generations, seed, best, Sweep(steps=steps),
-                     files=files)
-        if not result.designs:
-            from ..errors import KinematikaError
-
-            raise KinematikaError("assembly", "synthesis-no-design", "--vary")
+        task = _task(model, target, target_function, target_motion, point, output_body, over, points, timing,
+                     objective, require, output_zero)
+        result = run(model, vary, task, population, generations, seed, best, seconds, steps)
         written = write_designs(model, result, out)
         if plot is not None:
-            _plot_synthesis(model, result, point, output_file(plot, "--plot"), files, objective)
+            _plot_synthesis(model, result, task, output_file(plot, "--plot"))
         return result, written
 
     result, written = guarded(False, work)
-    for path, design, error in zip(written, result.designs, result.errors):
+    for i, (path, design, error) in enumerate(zip(written, result.designs, result.errors)):
         values = ", ".join(f"{k} = {v:.6g}" for k, v in design.items())
-        print(f"{path}: {values}; {result.objective} = {error:.6g}")
+        extra = "".join(f"; {name} = {v[i]:.6g}" for name, v in (("start", result.starts),
+                                                                  ("output zero", result.zeros))
+                        if v and v[i] is not None)
+        print(f"{path}: {values}{extra}; {result.objective} = {error:.6g}")
     print(f"({result.evaluated} designs evaluated)")
 
 
-def _objective(model: Path, target, function, motion, point, body, over, points) -> tuple[str, dict]:
-    """The metric to minimise and the target files' text."""
+def _task(model: Path, target, function, motion, point, body, over, points, timing, objective, require,
+          output_zero):
+    """The task as posed on the command line (`explore.synthesis.task`)."""
     from ..errors import KinematikaError
+    from ..explore.synthesis.task import (make_task, parse_objective, parse_output_zero, parse_requirements,
+                                          parse_timing)
 
     given = [x for x in (target, function, motion) if x is not None]
     if len(given) != 1:
         raise KinematikaError("usage", "synthesis-one-target", "--target")
+    options = dict(objective=parse_objective(objective), timing=parse_timing(timing),
+                   requires=parse_requirements(list(require)))
     if function is not None:
         if not body:
             raise KinematikaError("usage", "function-needs-output", "--output")
+        zero = parse_output_zero(output_zero)
         if function.lower().endswith(".csv"):
-            name = Path(function).name
-            return f"structural_error:{body}={name}", {name: _target_text(Path(function), "--target-function")}
+            path = Path(function)
+            return make_task("function", path.name, _target_text(path, "--target-function"), "--target-function",
+                             body=body, output_zero=zero, **options)
         from ..explore.designs import parse_vary
         from ..explore.synthesis import function_targets
 
         span = parse_vary(f"x={over}")
-        return f"structural_error:{body}=function.csv", {
-            "function.csv": function_targets(function, (span.low, span.high), points)}
+        return make_task("function", "function.csv", function_targets(function, (span.low, span.high), points),
+                         "--target-function", body=body, output_zero=zero, **options)
+    if output_zero is not None:
+        raise KinematikaError("usage", "output-zero-function-only", "--output-zero")
     if not point:
         raise KinematikaError("usage", "path-needs-point", "--point")
-    kind = "path_error" if target is not None else "motion_error"
-    path = target if target is not None else motion
-    option = "--target" if target is not None else "--target-motion"
-    return f"{kind}:{point}={path.name}", {path.name: _target_text(path, option)}
+    kind, path, option = ("path", target, "--target") if target is not None else ("motion", motion, "--target-motion")
+    return make_task(kind, path.name, _target_text(path, option), option, point=point, **options)
 
 
 def _target_text(path: Path, option: str) -> str:
@@ -161,23 +182,20 @@ def _target_text(path: Path, option: str) -> str:
         raise KinematikaError("usage", "csv-not-utf8", option, name=str(path)) from None
 
 
-def _plot_synthesis(model: Path, result, point, plot: Path, files: dict, objective: str) -> None:
+def _plot_synthesis(model: Path, result, task, plot: Path) -> None:
     """Path and motion generation: the paths over the targets; function: rotation over targets."""
-    from ..api import as_model
-    from ..explore.metrics import read_table
-    from ..explore.plots import function_over_targets, paths_over_targets
-    from ..explore.study import _target_files
+    import numpy as np
 
-    kind, _, rest = objective.partition(":")
-    name = rest.partition("=")[2]
-    texts = dict(_target_files((objective,), model.parent, files))
-    table = read_table(name, texts, "--plot", 2)
-    labels = [f"{i + 1}: {objective.partition('=')[0]} = {e:.3g}" for i, e in enumerate(result.errors)]
+    from ..api import as_model
+    from ..explore.plots import function_over_targets, paths_over_targets
+
+    labels = [f"{i + 1}: {result.objective} = {e:.3g}" for i, e in enumerate(result.errors)]
     m = as_model(model)
-    if kind == "structural_error":
-        function_over_targets(m, result.designs, rest.partition("=")[0], table, plot, labels)
+    if task.kind == "function":
+        function_over_targets(m, result.designs, task.body, np.column_stack([task.inputs, task.angle]), plot,
+                              labels)
     else:
-        paths_over_targets(m, result.designs, point, table[:, 0] + 1j * table[:, 1], plot, labels)
+        paths_over_targets(m, result.designs, task.point, task.xy, plot, labels)
 
 
 @app.command("plot-study")

@@ -34,6 +34,7 @@ from ..errors import KinematikaError
 from ..model.model import Model, PointRef
 from ..structure.assur import Group
 from .cycle import Cycle
+from .fourbar import grashof_of
 
 CLASSES = ("crank-rocker", "double-crank", "double-rocker", "rocker-crank", "change-point", "non-grashof")
 AT_INPUT = {"angle": "body", "omega": "body", "alpha": "body",
@@ -144,7 +145,13 @@ def four_bar_roles(ctx: Context, where: str = "--metric grashof") -> dict[str, s
 
 def _linkage(ctx: Context) -> Optional[dict[str, Any]]:
     """Four-bar (input crank + RRR closing on the frame) or slider-crank (+ RRP on the frame)."""
-    groups, model = ctx.groups, ctx.model
+    return linkage_roles(ctx.model, ctx.groups)
+
+
+def linkage_roles(model: Model, groups: Optional[list[Group]]) -> Optional[dict[str, Any]]:
+    """The roles of a four-bar (an input crank and an RRR dyad closing on the frame) or a
+    slider-crank (an RRP dyad): the points O2, A, B (and O4), the crank, coupler and output
+    bodies, `kind`; None for any other mechanism."""
     if not groups or len(groups) != 2 or groups[0].kind != "input":
         return None
     first, dyad = groups
@@ -170,14 +177,7 @@ def _linkage_output(ctx: Context, where: str) -> str:
 def grashof(c: Cycle, roles: dict[str, Any]) -> np.ndarray:
     """Grashof's class from the drawn lengths (s + l against p + q, then the shortest link)."""
     o2, a, b, o4 = (c.drawn(roles[k]) for k in ("O2", "A", "B", "O4"))
-    lengths = np.stack([np.abs(o4 - o2), np.abs(a - o2), np.abs(b - a), np.abs(o4 - b)])
-    s, l = lengths.min(axis=0), lengths.max(axis=0)
-    gap = (s + l) - (lengths.sum(axis=0) - s - l)
-    by_shortest = np.array(["double-crank", "crank-rocker", "double-rocker", "rocker-crank"], dtype=object)
-    out = by_shortest[np.argmin(lengths, axis=0)]
-    out = np.where(gap > 1e-9 * l, "non-grashof", out)
-    out = np.where(np.abs(gap) <= 1e-9 * l, "change-point", out)
-    return np.where(np.isfinite(gap), out, np.array(None, dtype=object))
+    return grashof_of(np.stack([np.abs(o4 - o2), np.abs(a - o2), np.abs(b - a), np.abs(o4 - b)]))
 
 
 def _transmission(ctx: Context, where: str) -> Callable[[Cycle], np.ndarray]:
@@ -219,16 +219,20 @@ def _peak(kind: str, ctx: Context, target: str, where: str) -> Callable[[Cycle],
 
 def path_error(path: np.ndarray, targets: np.ndarray) -> np.ndarray:
     """The largest distance from a target to the polyline through the path's rows (D, N)."""
+    return path_distances(path, targets).max(axis=1)
+
+
+def path_distances(path: np.ndarray, targets: np.ndarray) -> np.ndarray:
+    """Each target's distance to the polyline through the path's rows (D, N): (D, K)."""
     start, end = path[:, :-1], path[:, 1:]
     seg = end - start
     length2 = (seg * np.conj(seg)).real
-    worst = np.zeros(len(path))
-    for t in targets:
+    out = np.zeros((len(path), len(targets)))
+    for i, t in enumerate(targets):
         rel = t - start
         along = np.clip(np.where(length2 > 0, (rel * np.conj(seg)).real / length2, 0.0), 0.0, 1.0)
-        nearest = np.nanmin(np.abs(rel - along * seg), axis=1)
-        worst = np.maximum(worst, nearest)
-    return worst
+        out[:, i] = np.nanmin(np.abs(rel - along * seg), axis=1)
+    return out
 
 
 def motion_error(c: Cycle, ref: PointRef, points: list[str], poses: np.ndarray) -> np.ndarray:
@@ -236,16 +240,20 @@ def motion_error(c: Cycle, ref: PointRef, points: list[str], poses: np.ndarray) 
     over the cycle: √(|ΔP|² + (ρ Δφ)²), φ the direction of the body's line from its first point to
     its second, ρ the body's size (its largest distance between two points): an angle error
     counts as the displacement it gives the body's far end."""
+    return pose_distances(c, ref, points, poses).max(axis=1)
+
+
+def pose_distances(c: Cycle, ref: PointRef, points: list[str], poses: np.ndarray) -> np.ndarray:
+    """Each target pose's distance to the nearest pose over the cycle (as `motion_error`): (D, K)."""
     pos = c.motion(ref)[0]
     drawn = [c.drawn(p) for p in points]
     phi = np.angle(drawn[1] - drawn[0])[:, None] + np.radians(c.angle(ref.body))
     size = np.max([np.abs(p - q) for p in drawn for q in drawn], axis=0)[:, None]
-    worst = np.zeros(len(pos))
-    for x, y, angle in poses:
+    out = np.zeros((len(pos), len(poses)))
+    for i, (x, y, angle) in enumerate(poses):
         turn = np.angle(np.exp(1j * (phi - math.radians(angle))))
-        gap = np.sqrt(np.abs(pos - complex(x, y)) ** 2 + (size * turn) ** 2)
-        worst = np.maximum(worst, np.nanmin(gap, axis=1))
-    return worst
+        out[:, i] = np.nanmin(np.sqrt(np.abs(pos - complex(x, y)) ** 2 + (size * turn) ** 2), axis=1)
+    return out
 
 
 def time_ratio(c: Cycle, body: str, refs: list[PointRef]) -> np.ndarray:
@@ -298,8 +306,12 @@ _QUARTIC = np.linalg.inv(np.vander(np.arange(-2.0, 3.0), 5, increasing=True))
 def structural_error(c: Cycle, body: str, table: np.ndarray) -> np.ndarray:
     """The largest |rotation(x) − target| over the table's (x, target) rows (degrees), the
     rotation interpolated linearly between the sweep's rows."""
-    got = _interpolate(c.coordinate, c.angle(body), table[:, 0])
-    return np.max(np.abs(got - table[None, :, 1]), axis=1)
+    return rotation_errors(c, body, table).max(axis=1)
+
+
+def rotation_errors(c: Cycle, body: str, table: np.ndarray) -> np.ndarray:
+    """Each row's |rotation(x) − target| (degrees; as `structural_error`): (D, K)."""
+    return np.abs(_interpolate(c.coordinate, c.angle(body), table[:, 0]) - table[None, :, 1])
 
 
 def _interpolate(coordinate: np.ndarray, values: np.ndarray, x: np.ndarray) -> np.ndarray:
