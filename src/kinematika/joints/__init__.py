@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping
 from importlib import import_module
 
-from .base import AXES, JointGeometry, JointKind, Rows, rounding_hint
+from .base import AXES, Holonomic, JointGeometry, JointKind, Rows, rounding_hint
 
 MODULES = {                        # the kind's name in model files -> its module
     "revolute": "revolute",

@@ -55,6 +55,21 @@ class JointGeometry:
 Rows = list[tuple[Any, str]]
 
 
+@dataclass
+class Holonomic:
+    """The part of a joint's condition that is on positions alone, which a motion followed in
+    time (`simulate`) keeps its poses on by projection.
+
+    `values(q, 0.0)` is the residual at the poses `q` (zero on the condition), with the
+    signature of `JointKind.residual`'s functions (whose `aux` and `key`, when they carry them,
+    are kept); `weights(q)` says how the rate of each value is made of the joint's engine rows
+    (one list of weights per value), so that the Jacobian of the values is those weights times
+    the engine's velocity matrix; None: the values are the rows themselves, one for one."""
+
+    values: Callable[[Any, float], list]
+    weights: Optional[Callable[[Any], list]] = None
+
+
 class JointKind:
     """A kind of joint: its name in model files and everything it means (see the module's
     docstring). One instance per kind, registered in `kinematika.joints.KINDS`."""
@@ -125,6 +140,12 @@ class JointKind:
         raise KinematikaError("schema", f"a sweep cannot follow a {self.name} joint{spatial}: its "
                               "condition is on velocities only, so the positions depend on the path "
                               "taken", geo.joint.where)
+
+    def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
+        """The condition's part on positions (`Holonomic`), for a motion integrated in time: the
+        whole condition (`residual`, row for row the engine's) unless the kind is constrained
+        on velocities only (a knife edge, a disc rolling on a plane), which says what is left."""
+        return Holonomic(self.residual(inst, geo, ref))
 
     def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Callable[[Any, float], list]:
         """The position form of a driver of the joint's rate: the coordinate's change from
