@@ -33,6 +33,13 @@ SCALE = 1e50                 # lengths and rates (ω, v/length, √(a/length)) b
 SWEEP_STEPS = 10_000_000     # increments of one sweep
 SWEEP_VALUES = 32_000_000    # rows × numbers per row held at once: 480 000 rows of a four-bar (under 1 GB on every path)
 
+# motion in time (`kinematika simulate`) ----------------------------------------------------
+SIMULATE_STEPS = 1_000_000   # rows of one simulation (each is solved by the engine: about a millisecond)
+SIMULATE_EVALUATIONS = 200_000   # velocity solutions the ODE solver may ask for in one simulation (a smooth
+                             # motion takes a few per second of motion: the tractor and trailer over
+                             # 60 s, a few hundred); beyond, the motion is too stiff or too nearly
+                             # singular to follow, and the rows computed so far are kept
+
 # symbolic work ----------------------------------------------------------------------------
 EXACT_WORK = 1_500_000       # steps of exact algebra a command may take (terms formed, products of
                              # terms): a count, so whether a model is answered is the model's own

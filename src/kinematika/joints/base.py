@@ -91,6 +91,9 @@ class JointKind:
     pitch: ClassVar[bool] = False           # its circles are pitch circles (gears: drawn dash-dot)
     knife_edge: ClassVar[bool] = False      # the point `at` of b moves only along `along`, fixed in b
                                             # (a vehicle's wheel: no slip sideways)
+    velocity_only: ClassVar[tuple[int, ...]] = ()   # the dimensions in which its condition is on
+                                            # velocities only (non-holonomic: a motion with it
+                                            # is followed in time, `simulate`, not swept)
     along_in: ClassVar[str] = "a"           # the body `along` is fixed in
     centre: ClassVar[str] = ""              # where it puts the relative instant centre of its two
                                             # bodies by itself: "pin" (at `at`), "contact" (the

@@ -28,6 +28,7 @@ class Rolling(JointKind):
     summary = "the bodies' shapes roll on each other without slipping"
     touches = True
     rolls = True
+    velocity_only = (3,)              # a disc on a plane: where it has rolled depends on the path
     centre = "contact"
     route = "contact"
     fields = {"at": "optional", "internal": "optional"}
@@ -46,8 +47,9 @@ class Rolling(JointKind):
 
     def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
         """The carried geometry with the contact found anew where the circles now touch (the
-        drawn contact point `at` does not travel with either body)."""
-        geo.contact = find_contact(inst, replace(geo.joint, at=None))
+        drawn contact point `at` does not travel with either body); whether they touch is for
+        the caller to judge (a sweep's residual, a simulation's projection)."""
+        geo.contact = find_contact(inst, replace(geo.joint, at=None), touching=False)
         return geo
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:

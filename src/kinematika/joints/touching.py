@@ -153,10 +153,12 @@ def closest(first: list, second: list, pair: Callable[[Any, Any], Any], gap: Cal
     return min(candidates, key=lambda c: abs(gap(c)))
 
 
-def find_touch(inst: Any, joint: Any, first: list, second: list, near: Optional[float] = None) -> Touch:
+def find_touch(inst: Any, joint: Any, first: list, second: list, near: Optional[float] = None,
+               touching: bool = True) -> Touch:
     """The touching pair of outlines of the joint's two bodies (the one with the smallest
-    gap), checked to touch: else a `geometry` error with the gap. `near`: a curve's parameter
-    close to the contact (a sweep's previous one), which spares the search along the curve."""
+    gap), checked to touch: else a `geometry` error with the gap (unless not `touching`: a
+    moved pose, whose caller judges the gap). `near`: a curve's parameter close to the
+    contact (a sweep's previous one), which spares the search along the curve."""
     if not first or not second:
         missing = joint.a if not first else joint.b
         raise KinematikaError("schema", f"a {joint.kind.name} joint needs an outline on both bodies: give "
@@ -164,7 +166,7 @@ def find_touch(inst: Any, joint: Any, first: list, second: list, near: Optional[
     touch = closest(first, second, lambda oa, ob: _pair(inst, oa, ob, near), lambda t: t.gap, joint,
                     "these outlines cannot touch at a point")
     touch.bodies = (joint.a, joint.b)
-    if abs(touch.gap) > 1e-6 * inst.scale:
+    if touching and abs(touch.gap) > 1e-6 * inst.scale:
         raise KinematikaError("geometry", f"{joint.b!r} does not touch {joint.a!r}: gap {touch.gap:.6g}"
                               + rounding_hint(touch.gap, inst.scale, "the contact"), joint.where)
     return touch

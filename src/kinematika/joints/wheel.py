@@ -29,6 +29,7 @@ class Wheel(JointKind):
     centre = "normal"                 # on the normal to `along` at `at`
     centre_line = "wheel"                  # its axle
     knife_edge = True
+    velocity_only = (2,)
     route = "wheel"
     fields = {"at": "required", "along": "required"}
     point_on = "b"
