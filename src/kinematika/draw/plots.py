@@ -117,8 +117,8 @@ def read_sweep(result: Any, model: Any = None) -> Reading:
     else:
         x = np.asarray(result.coordinate, dtype=float)
         unit = getattr(result, "unit", "deg")
-        xlabel = f"{getattr(result, 'joint', 'joint')} from the drawn position " \
-                 f"({'deg' if unit == 'deg' else 'length'})"
+        xlabel = "time t (s)" if unit == "s" else \
+            f"{getattr(result, 'joint', 'joint')} from the drawn position ({'deg' if unit == 'deg' else 'length'})"
     reading = Reading(x, xlabel)
     swinging = {n: a for n, a in angles.items() if n != driver and _span(a) <= TURNING}
     turning = {n: a for n, a in angles.items() if n != driver and _span(a) > TURNING}

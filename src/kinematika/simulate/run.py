@@ -52,12 +52,12 @@ PROJECT_ABOVE = 1e-9         # a row whose drift is above this is projected back
 
 
 class SimulationStopped(KinematikaError):
-    """The motion could not be followed to the end: the error, and the rows computed before it
-    (`result`, a `SimulationResult` whose `stopped` is this error)."""
+    """The motion could not be followed to the end: the error, the rows computed before it
+    (`result`, a `SimulationResult` whose `stopped` is this error) and the model simulated."""
 
-    def __init__(self, err: KinematikaError, result: SimulationResult) -> None:
+    def __init__(self, err: KinematikaError, result: SimulationResult, model: Model) -> None:
         super().__init__(err.kind, err.message, err.where)
-        self.result = result
+        self.result, self.model = result, model
         result.stopped = self
 
 
@@ -180,7 +180,7 @@ class Simulator:
         report(None)
         result = rows.result(method, self.evaluations, self.notes)
         if stopped is not None:
-            raise SimulationStopped(stopped, result.rows(rows.done))
+            raise SimulationStopped(stopped, result.rows(rows.done), self.model)
         return result
 
     def _integrate(self, clock: Clock, rows: "Rows", method: str, report: Any) -> Optional[KinematikaError]:
