@@ -23,6 +23,7 @@ class SimulationResult(SweepResult):
     material point position/velocity/acceleration (N, dim), and `drift` (N,)."""
 
     drift: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    duration: float = 0.0                # the time asked for (seconds): the last row's, unless stopped
     evaluations: int = 0                 # velocity solutions the ODE solver asked for
     notes: list[str] = field(default_factory=list)    # what the summary must say (drivers, numbers)
     stopped: Optional[Any] = None        # the KinematikaError that ended the motion early, if any
@@ -69,7 +70,7 @@ class SimulationResult(SweepResult):
             {b: {q: v[cut] for q, v in values.items()} for b, values in self.bodies.items()},
             {p: {q: v[cut] for q, v in values.items()} for p, values in self.points.items()},
             [], self.unit, self.name, self.dimension, self.method, self.frame,
-            self.drift[cut], self.evaluations, list(self.notes), self.stopped)
+            self.drift[cut], self.duration, self.evaluations, list(self.notes), self.stopped)
 
 
 def _drift(values: np.ndarray) -> np.ndarray:

@@ -314,7 +314,8 @@ class Rows:
         coincide(sim.model, bodies, pts)
         ok = np.arange(len(self.clock.times)) < self.done
         return SimulationResult(np.array(self.clock.times), "time", ok, bodies, pts, [], "s", sim.model.name,
-                                sim.model.dimension, method, sim.model.frame, self.drift, evaluations, notes)
+                                sim.model.dimension, method, sim.model.frame, self.drift, self.clock.duration,
+                                evaluations, notes)
 
 
 def owners(model: Model) -> dict[str, str]:

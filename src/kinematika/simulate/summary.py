@@ -9,14 +9,15 @@ from .result import SimulationResult
 
 def summary_lines(result: SimulationResult) -> list[str]:
     """The summary printed by `kinematika simulate MODEL` (plain text, one line each)."""
-    n = len(result)
-    done = int(result.ok.sum())
-    span = float(result.time[-1] - result.time[0]) if n else 0.0
-    lines = [f"{result.name}: followed in time over {span:g} s in {n - 1} steps ({result.method}, "
-             f"{result.evaluations} velocity solutions)"]
+    n = done = len(result)
+    if result.stopped is not None and n:
+        lines = [f"{result.name}: followed in time for {result.time[-1] - result.time[0]:g} s of the "
+                 f"{result.duration:g} s asked, {n} rows ({result.method}, {result.evaluations} velocity "
+                 "solutions); then it stopped"]
+    else:
+        lines = [f"{result.name}: followed in time over {result.duration:g} s in {n - 1} steps "
+                 f"({result.method}, {result.evaluations} velocity solutions)"]
     lines += result.notes
-    if done < n:
-        lines.append(f"rows: {done} of {n} (to t = {result.time[done - 1]:g} s)")
     if done == 0:
         return lines
     rows = slice(0, done)
@@ -53,8 +54,6 @@ def summary_lines(result: SimulationResult) -> list[str]:
         ks, ka = int(np.nanargmax(speed)), int(np.nanargmax(accel))
         lines.append(f"{name:<14}{speed[ks]:>14.6g}{_when(speed, at, ks):>12}"
                      f"{accel[ka]:>20.6g}{_when(accel, at, ka):>12}")
-    if result.stopped is not None:
-        lines += ["", f"stopped: {result.stopped}"]
     return lines
 
 

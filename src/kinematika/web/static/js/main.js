@@ -82,6 +82,16 @@ async function analyse() {
   state.sweep = swept.status === "fulfilled" ? swept.value : null;
   state.input = state.scene && state.scene.input;
   state.sweepError = swept.status === "rejected" ? swept.reason.message : null;
+  if (inTime()) {                    // a motion followed in time: its rows, as a sweep's
+    try {
+      state.sweep = rowsInTime(await post("simulate", request({ time: state.input.time, steps: state.input.steps })));
+      state.sweepError = null;
+    } catch (err) {
+      state.sweep = err.partial ? rowsInTime(err.partial) : null;
+      state.sweepError = err.message;
+    }
+    if (gen !== state.gen) return;
+  }
   state.explained = null;
   const name = shown(state.solution.name || t("model"), 120);
   $("model-name").textContent = name;
@@ -219,9 +229,25 @@ function load(text, fmt, name) {
 }
 
 // the slider ----------------------------------------------------------------------------
+/** Whether the slider moves through time (a simulation's rows: `kinematika simulate`). */
+function inTime() {
+  return !!(state.input && state.input.unit === "s");
+}
+
+/** A simulation's rows read as a sweep's: its times as the coordinate. */
+function rowsInTime(rows) {
+  return { ...rows, coordinate: rows.time };
+}
+
+/** The `move` that poses the model at row k (none at row 0, nor for rows in time). */
+function moveAt(k) {
+  return k !== 0 && state.input && state.sweep && !inTime() ? { move: { [state.input.joint]: state.sweep.coordinate[k] } } : {};
+}
+
 function coordinateText(k) {
   if (!state.sweep || !state.input) return t("drawn-position");
   const x = state.sweep.coordinate[k];
+  if (inTime()) return `t = ${num(x)} s`;
   return `${shown(state.input.joint, 40)} ${x >= 0 ? "+" : "−"}${num(Math.abs(x))}${state.input.unit === "deg" ? "°" : ""}`;
 }
 
@@ -256,11 +282,11 @@ async function settle() {
   const k = state.row, gen = state.gen;
   if (!state.solution) return;             // a model being built: nothing solved to show
   explainSoon();
-  if (k === 0 || !state.sweep || !state.input) {
-    if (state.scene) place(state.scene, 0);
+  if (k === 0 || !state.sweep || !state.input || inTime()) {
+    if (state.scene && (k === 0 || !inTime())) place(state.scene, 0);
     return;
   }
-  const move = { move: { [state.input.joint]: state.sweep.coordinate[k] } };
+  const move = moveAt(k);
   try {
     const [sol, scene] = await Promise.all([post("solve", request(move)), post("draw", request({ ...move, centres: true }))]);
     if (gen !== state.gen || k !== state.row) return;
@@ -305,8 +331,8 @@ async function explain() {
   const key = `${gen}|${lang}|${k}`;
   if (state.explained === key || state.explaining === key || !state.solution) return;
   state.explaining = key;            // one request a position (an explanation can take seconds)
-  const move = k !== 0 && state.input && state.sweep ? { move: { [state.input.joint]: state.sweep.coordinate[k] } } : {};
-  let html, where = whereText(k);
+  const move = moveAt(k);
+  let html, where = inTime() && k !== 0 ? t("at-drawn-only") : whereText(k);
   try {
     html = await post("explain", request({ lang, ...move }), "text");
   } catch (err) {
@@ -369,7 +395,7 @@ function save(blob, name) {
 
 async function download(what) {
   $("downloads").open = false;
-  const here = state.row !== 0 && state.input && state.sweep ? { move: { [state.input.joint]: state.sweep.coordinate[state.row] } } : {};
+  const here = moveAt(state.row);
   try {
     if (what === "model") save(new Blob([editor.text], { type: "text/plain" }), `${state.name}.${state.fmt === "yaml" ? "yaml" : state.fmt}`);
     else if (what === "svg" || what === "png") {
@@ -377,7 +403,8 @@ async function download(what) {
       try { blob = await post("draw", request({ ...here, as: what, centres: true }), "blob"); }
       catch (_) { blob = await post("draw", request({ as: what, centres: true }), "blob"); }
       save(blob, `${state.name}.${what}`);
-    } else if (what === "csv") save(await post("sweep", request({ skip_bad: true, as: "csv" }), "blob"), `${state.name}.csv`);
+    } else if (what === "csv" && inTime()) save(await post("simulate", request({ time: state.input.time, steps: state.input.steps, as: "csv" }), "blob"), `${state.name}.csv`);
+    else if (what === "csv") save(await post("sweep", request({ skip_bad: true, as: "csv" }), "blob"), `${state.name}.csv`);
     else if (what === "html") {
       if (!state.explanation) await explain();
       save(new Blob([state.explanation || ""], { type: "text/html" }), `${state.name}-${state.lang}.html`);

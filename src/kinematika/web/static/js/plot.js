@@ -118,7 +118,7 @@ export class Plot {
       tk.textContent = num(x);
     }
     const axis = el("text", { x: w - PAD.right + 4, y: base + 14, "font-size": 10.5, fill: "#5f6b73" }, svg);
-    axis.textContent = this.t("plot-input", { unit: this.unit === "deg" ? "°" : "m" });
+    axis.textContent = this.unit === "s" ? "t (s)" : this.t("plot-input", { unit: this.unit === "deg" ? "°" : "m" });
     this.cursorLine = el("line", { y1: PAD.top, y2: h - PAD.bottom, stroke: "#263238", "stroke-width": 1 }, svg);
     this.X = X;
     this.cursor(this.row || 0);
