@@ -47,7 +47,7 @@ def test_the_slider_moves_through_time_for_a_vehicle(client):
                                               "as": "data"}).json()
         return data["input"]
 
-    assert slider("tractor_trailer_turning.yaml") == {"joint": None, "unit": "s", "time": 60.0, "steps": 600}
+    assert slider("tractor_trailer_turning.yaml") == {"joint": None, "unit": "s", "time": 60.0, "steps": 300}
     assert slider("tractor_trailer.yaml") == {"joint": None, "unit": "s", "time": 10.0, "steps": 200}
     assert slider("four_bar.yaml")["unit"] == "deg"
     assert json.loads(json.dumps(slider("coin_rolling.yaml")))["unit"] == "s"
