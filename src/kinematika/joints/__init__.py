@@ -52,7 +52,7 @@ class Registry(Mapping):
 
 KINDS: Mapping[str, JointKind] = Registry()
 
-__all__ = ["AXES", "KINDS", "MODULES", "JointGeometry", "JointKind", "Rows", "kind", "rounding_hint"]
+__all__ = ["AXES", "KINDS", "MODULES", "Holonomic", "JointGeometry", "JointKind", "Rows", "kind", "rounding_hint"]
 
 
 def kind(name: str) -> JointKind:
