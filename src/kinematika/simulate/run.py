@@ -198,10 +198,11 @@ class Simulator:
         def drift(t: float, y: np.ndarray) -> float:
             if not np.isfinite(y).all():
                 return 1.0
-            q = self.state.poses(y, self.aux)
+            q = self.state.poses(y, self.aux)        # after each step taken: what it reached
             size = self.projection.size(q)
             self.projection.keep(q)
             self.aux, self.reached = q.aux, max(self.reached, t)
+            self.failure = None                       # a step was taken past the failures so far
             return min(size, 1.0) - DRIFT_EVENT
 
         # LSODA's steps may otherwise shrink without end towards an instant it cannot pass
@@ -236,7 +237,7 @@ class Simulator:
         """Why the integrator stopped: the error of the instant that could not be solved (with
         its time), or the integrator's own message."""
         if self.failure is not None:
-            err, at = self.failure
+            err, _ = self.failure
             return KinematikaError(err.kind, f"the motion cannot be followed past t = {self.reached:.6g} s: "
                                    f"{err.message}", err.where or "simulate")
         return KinematikaError("assembly", f"the motion cannot be followed past t = {self.reached:.6g} s: "
