@@ -140,9 +140,10 @@ class JointKind:
         """The condition itself, for sweeps (`joints.positions`): a function of a pose and the
         increment whose rows are the integrals of `rows`, row for row."""
         spatial = " in 3D" if inst.space.dim == 3 else ""
+        in_time = "; `kinematika simulate` follows it in time" if inst.space.dim in self.velocity_only else ""
         raise KinematikaError("schema", f"a sweep cannot follow a {self.name} joint{spatial}: its "
                               "condition is on velocities only, so the positions depend on the path "
-                              "taken", geo.joint.where)
+                              f"taken{in_time}", geo.joint.where)
 
     def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
         """The condition's part on positions (`Holonomic`), for a motion integrated in time: the
