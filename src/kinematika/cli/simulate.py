@@ -42,6 +42,9 @@ def simulate(model: Path = ModelArg,
     kind = guarded(as_json, lambda: _format(output, fmt))
     if animation is not None:
         guarded(as_json, lambda: _animation_format(animation))
+    for path, option in ((csv, "--csv"), (output, "-o"), (plot, "--plot"), (animation, "--animate")):
+        if path is not None:                       # before the motion is followed, not after
+            guarded(as_json, lambda path=path, option=option: output_file(path, option))
     simulator, result, stopped = guarded(as_json, lambda: _run(model, time, steps, method, as_json,
                                                                lambda: how(sets, moves, assembly)))
     written = []
