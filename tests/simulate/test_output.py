@@ -157,3 +157,11 @@ def test_a_written_acceleration_of_a_constant_rate_is_left_out_and_said(tmp_path
     assert result.bodies["crank"]["alpha"] == pytest.approx([0.0, 0.0, 0.0])
     assert result.bodies["crank"]["angle"] == pytest.approx(np.degrees([0.0, 1.0, 2.0]))
     assert any("drivers[0]: its accel is left out" in note for note in result.notes)
+
+
+@pytest.mark.parametrize("option", ["--csv", "-o", "--plot", "--animate"])
+def test_an_output_that_cannot_be_written_is_said_before_the_motion_is_followed(tmp_path, option):
+    name = {"--plot": "x.png", "--animate": "x.gif", "-o": "x.parquet"}.get(option, "x.csv")
+    code, out, _ = run("simulate", TRAILER, "--time", 1, option, tmp_path / "missing" / name, "--json")
+    error = json.loads(out)["error"]
+    assert code == 2 and (error["kind"], error["where"]) == ("output", option)
