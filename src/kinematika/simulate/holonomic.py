@@ -102,4 +102,4 @@ class Projection:
         for part, _ in self.parts:
             function = part.values
             if hasattr(function, "aux"):
-                q.aux[function.key] = function.aux(q)
+                q.aux[function.key] = function.aux(q)  # type: ignore[attr-defined]

@@ -106,6 +106,9 @@ class Simulator:
         self.names = [str(r) for r in self.model.material_points()]
         self._last: tuple[Any, Any] = (None, None)          # (key, solver) of the last instant solved
         self.aux: dict = {}
+        self.evaluations = 0                                 # velocity solutions asked for, this run
+        self.failure: Optional[tuple[KinematikaError, float]] = None   # the last instant not solved
+        self.reached = 0.0                                   # the last time a step reached
 
     # one instant ----------------------------------------------------------------------------
     def engine_at(self, t: float, poses: Any, accelerations: bool = False) -> InstantSolver:
@@ -324,7 +327,7 @@ def owners(model: Model) -> dict[str, str]:
     gives its place (`Model.place_owner`: a knife edge's wheel, a pin), or a velocity driver's."""
     out = {p: model.place_owner(p) if model.carriers(p) else model.frame for p in model.points}
     for d in model.drivers:
-        if d.kind == "velocity":
+        if d.kind == "velocity" and d.point is not None:
             out[d.point.point] = d.point.body
     return out
 

@@ -56,9 +56,11 @@ class PoseState:
         aux = dict(aux or {})
         if self.dim == 2:
             phi = {b: float(y[k * w]) for k, b in enumerate(self.bodies)}
-            t = {b: (float(y[k * w + 1]), float(y[k * w + 2])) for k, b in enumerate(self.bodies)}
-            return Poses(self.ref, phi, t, aux)
-        rot, t, rotvec = {}, {}, {}
+            shift = {b: (float(y[k * w + 1]), float(y[k * w + 2])) for k, b in enumerate(self.bodies)}
+            return Poses(self.ref, phi, shift, aux)
+        rot: dict[str, np.ndarray] = {}
+        t: dict[str, np.ndarray] = {}
+        rotvec: dict[str, np.ndarray] = {}
         for k, b in enumerate(self.bodies):
             q = y[k * w:k * w + 4]
             rot[b] = rotation(q)

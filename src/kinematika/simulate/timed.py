@@ -54,7 +54,7 @@ class Timing:
         env[TIME] = t
         for name in self.follow:
             try:
-                env[name] = evaluate(self.model.parameters[name].value, env, _NUMERIC)
+                env[name] = evaluate(_written(self.model.parameters[name]), env, _NUMERIC)
             except ExpressionError as err:
                 raise KinematikaError("schema", f"at t = {t:.6g} s: {err}", f"parameters.{name}") from None
         for name, (rate, where) in (self.rates if accelerations else {}).items():
@@ -83,7 +83,7 @@ def timing(model: Model) -> Timing:
     extra: dict[str, Parameter] = {}
     drivers = []
     for d in model.drivers:
-        values = d.value if isinstance(d.value, tuple) else (d.value,)
+        values = _expressions_of(d.value)
         if any(e.names() & timed for e in values):
             names = []
             for k, e in enumerate(values):
@@ -94,8 +94,7 @@ def timing(model: Model) -> Timing:
             accel: Any = tuple(names) if isinstance(d.value, tuple) else names[0]
         else:
             accel = tuple(parse(0) for _ in values) if isinstance(d.value, tuple) else parse(0)
-            written = d.accel if isinstance(d.accel, tuple) else (d.accel,)
-            if any(_nonzero(e, numbers) for e in written if e is not None):
+            if any(_nonzero(e, numbers) for e in _expressions_of(d.accel)):
                 out.notes.append(f"{d.where}: its accel is left out: the rate stays as written in "
                                  "time (write it as an expression in t, e.g. \"3 + 0.5*t\", to change it)")
         drivers.append(dataclasses.replace(d, accel=accel))
@@ -123,8 +122,7 @@ def _ordered(params: dict[str, Parameter], names: set[str]) -> list[str]:
     out: list[str] = []
     pending = [n for n in params if n in names]
     while pending:
-        ready = [n for n in pending if (params[n].value is None or
-                                        not (params[n].value.names() & (set(pending) - {n})))]
+        ready = [n for n in pending if not (_names(params[n]) & (set(pending) - {n}))]
         if not ready:            # a cycle: the model's own check reports it
             return out + pending
         out += ready
@@ -161,6 +159,23 @@ def _expressions(thing: Any, where: str) -> Iterator[tuple[str, Expr]]:
             yield from _expressions(x, f"{where}[{i}]")
 
 
+def _expressions_of(value: Any) -> tuple[Expr, ...]:
+    """A driver's value or accel as its expressions (one, or a vector's)."""
+    return tuple(e for e in (value if isinstance(value, tuple) else (value,)) if e is not None)
+
+
+def _names(p: Parameter) -> set[str]:
+    """The names a parameter is written in (none for a symbol)."""
+    return p.value.names() if p.value is not None else set()
+
+
+def _written(p: Parameter) -> Expr:
+    """A parameter's expression (a simulated model's parameters all have one)."""
+    if p.value is None:
+        raise KinematikaError("schema", f"parameter {p.name!r} needs a value", f"parameters.{p.name}")
+    return p.value
+
+
 def _nonzero(expr: Expr, numbers: dict[str, float]) -> bool:
     try:
         return float(evaluate(expr, numbers, _NUMERIC)) != 0.0
@@ -191,7 +206,7 @@ def _derivative(expr: Expr, model: Model, timed: set[str], where: str) -> Callab
     try:
         for name in _ordered(params, timed):
             if name != TIME:
-                env[name] = evaluate(params[name].value, env, backend)
+                env[name] = evaluate(_written(params[name]), env, backend)
         rate = sympy.diff(evaluate(expr, env, backend), t)
     except (ExpressionError, TypeError, ValueError) as err:
         raise KinematikaError("schema", f"the rate's derivative in time cannot be taken: {err}", where) from None
