@@ -47,15 +47,15 @@ class SimulationResult(SweepResult):
 
         chunks = super().json_chunks()
         first = next(chunks)
-        yield b'{"time":' + first[len(b'{"coordinate":'):]
-        last = None
+        head = b'{"coordinate":'
+        assert first.startswith(head)
+        last = b'{"time":' + first[len(head):]
         for chunk in chunks:
-            if last is not None:
-                yield last
+            yield last
             last = chunk
-        assert last == b"}}"
-        yield b'},"drift":' + orjson.dumps(np.ascontiguousarray(_drift(self.drift)),
-                                           option=orjson.OPT_SERIALIZE_NUMPY) + b"}"
+        assert last.endswith(b"}")                    # the object's closing brace, last
+        yield last[:-1] + b',"drift":' + orjson.dumps(np.ascontiguousarray(_drift(self.drift)),
+                                                      option=orjson.OPT_SERIALIZE_NUMPY) + b"}"
 
     def columns(self) -> list[tuple[str, np.ndarray]]:
         """One (header, values) per scalar: `time_s`, `drift`, then the sweep's columns."""
@@ -66,11 +66,12 @@ class SimulationResult(SweepResult):
         """The first `count` rows (those computed before the motion stopped)."""
         cut = slice(0, count)
         return SimulationResult(
-            self.coordinate[cut], self.joint, self.ok[cut],
-            {b: {q: v[cut] for q, v in values.items()} for b, values in self.bodies.items()},
-            {p: {q: v[cut] for q, v in values.items()} for p, values in self.points.items()},
-            [], self.unit, self.name, self.dimension, self.method, self.frame,
-            self.drift[cut], self.duration, self.evaluations, list(self.notes), self.stopped)
+            coordinate=self.coordinate[cut], joint=self.joint, ok=self.ok[cut],
+            bodies={b: {q: v[cut] for q, v in values.items()} for b, values in self.bodies.items()},
+            points={p: {q: v[cut] for q, v in values.items()} for p, values in self.points.items()},
+            unit=self.unit, name=self.name, dimension=self.dimension, method=self.method, frame=self.frame,
+            drift=self.drift[cut], duration=self.duration, evaluations=self.evaluations,
+            notes=list(self.notes), stopped=self.stopped)
 
 
 def _drift(values: np.ndarray) -> np.ndarray:

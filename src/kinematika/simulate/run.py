@@ -317,9 +317,10 @@ class Rows:
         bodies = {b: self.bodies[b] for b in sim.model.bodies}
         coincide(sim.model, bodies, pts)
         ok = np.arange(len(self.clock.times)) < self.done
-        return SimulationResult(np.array(self.clock.times), "time", ok, bodies, pts, [], "s", sim.model.name,
-                                sim.model.dimension, method, sim.model.frame, self.drift, self.clock.duration,
-                                evaluations, notes)
+        return SimulationResult(coordinate=np.array(self.clock.times), joint="time", ok=ok, bodies=bodies,
+                                points=pts, unit="s", name=sim.model.name, dimension=sim.model.dimension,
+                                method=method, frame=sim.model.frame, drift=self.drift,
+                                duration=self.clock.duration, evaluations=evaluations, notes=notes)
 
 
 def owners(model: Model) -> dict[str, str]:
