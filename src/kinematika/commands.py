@@ -74,6 +74,18 @@ def sweep_run(source: ModelLike, joint: Optional[str] = None, by: Optional[float
     return sweeper, sweeper.run(by, steps, skip_bad, progress=progress)
 
 
+def simulate_run(source: ModelLike, time: Optional[float] = None, steps: Optional[int] = None,
+                 method: Optional[str] = None, progress: Any = False, how: How = AS_GIVEN,
+                 default_time: Optional[float] = None) -> tuple[Any, Any]:
+    """`kinematika simulate`: the `Simulator` (for the summary) and its `SimulationResult`
+    (whose `to_json()` is the answer); a motion that stops early raises
+    `simulate.run.SimulationStopped`, which holds the rows before (`result`)."""
+    from .simulate.run import Simulator
+
+    simulator = Simulator(how.model(source), default_time)
+    return simulator, simulator.run(time, steps, method, progress)
+
+
 def assemblies_data(source: ModelLike, how: How = AS_GIVEN) -> dict:
     """`kinematika assemblies --json`: every assembly at the drawn input, numbered, the drawn
     one marked, with how each dyad closes and every material point's place."""

@@ -39,6 +39,13 @@ CONTINUATION_STEPS = 2_000   # arclength steps between two rows of a sweep on Ne
 SWEEP_TRAVEL = 1_000_000     # a sweep's or a move's travel (`by`, a `move` amount): at most this many turns of a
                              # revolute, or times the mechanism's size along a prismatic (angles stay exact to 1e-9 rad)
 
+# motion in time (`kinematika simulate`) ----------------------------------------------------
+SIMULATE_STEPS = 1_000_000   # rows of one simulation (each is solved by the engine: about a millisecond)
+SIMULATE_EVALUATIONS = 200_000   # velocity solutions the ODE solver may ask for in one simulation (a smooth
+                             # motion takes a few per second of motion: the tractor and trailer over
+                             # 60 s, a few hundred); beyond, the motion is too stiff or too nearly
+                             # singular to follow, and the rows computed so far are kept
+
 # symbolic work ----------------------------------------------------------------------------
 EXACT_WORK = 1_500_000       # steps of exact algebra a command may take (terms formed, products of
                              # terms): a count, so whether a model is answered is the model's own

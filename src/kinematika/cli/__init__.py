@@ -79,7 +79,7 @@ def _status(code: Any) -> int:
 
 def _application() -> Any:
     """The typer application, with every command registered (imports typer and the commands)."""
-    from . import assemblies, cam, centres, draw, exercise, explain, explore, page, solve, sweep  # noqa: F401  (each registers)
+    from . import assemblies, cam, centres, draw, exercise, explain, explore, page, simulate, solve, sweep  # noqa: F401  (each registers)
     from .app import app
 
     return app

@@ -40,11 +40,12 @@ def analyse(a: np.ndarray, is_driver: np.ndarray, translation_columns: np.ndarra
     `restating()`, when given, marks the driver rows that only restate a joint."""
     m, n = a.shape
     scaled = scale_system(a, translation_columns, length)
-    diag = diagnose(scaled.matrix, is_driver)
+    # one SVD for the solve and the diagnosis (an underdetermined system is only diagnosed)
+    u, s, vt = np.linalg.svd(scaled.matrix, full_matrices=False) if m >= n else (None, None, None)
+    diag = diagnose(scaled.matrix, is_driver, s if scaled.matrix.size else None)
     if m < n or diag.condition_number > SINGULAR_CONDITION:
         raise underdetermined_error(scaled.matrix, is_driver, labels, wheres, body_of, diag,
                                     restating() if restating else None)
-    u, s, vt = np.linalg.svd(scaled.matrix, full_matrices=False)
     rows, blocks = list(range(m)), []
     if want_blocks:
         rows = independent_rows(scaled.matrix, n)

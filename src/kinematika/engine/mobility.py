@@ -57,16 +57,18 @@ class Diagnosis:
     condition_number: float
 
 
-def diagnose(scaled: np.ndarray, is_driver: np.ndarray) -> Diagnosis:
+def diagnose(scaled: np.ndarray, is_driver: np.ndarray, s: np.ndarray | None = None) -> Diagnosis:
     """The `Diagnosis` of a scaled system whose driver rows are marked by `is_driver`: ranks
-    from one SVD, dof = n − rank(joints), driver conditions = rank(all) − rank(joints)."""
+    by singular values (`s`, the whole matrix's when the caller has them), dof = n −
+    rank(joints), driver conditions = rank(all) − rank(joints)."""
     n = scaled.shape[1]
-    s = np.linalg.svd(scaled, compute_uv=False) if scaled.size else np.zeros(0)
+    if s is None:
+        s = np.linalg.svd(scaled, compute_uv=False) if scaled.size else np.zeros(0)
     top = s[0] if s.size else 0.0
     smallest = s[n - 1] if s.size >= n and n > 0 else 0.0
     cond = float(top / smallest) if smallest > 0 else float("inf")
     joints = numeric_rank(scaled[~is_driver], top)
-    total = numeric_rank(scaled, top)
+    total = int(np.sum(s > top / SINGULAR_CONDITION)) if top > 0 else 0
     return Diagnosis(n, n - joints, total - joints, cond)
 
 

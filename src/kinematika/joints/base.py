@@ -55,6 +55,21 @@ class JointGeometry:
 Rows = list[tuple[Any, Said]]          # each condition and its message (errors' catalogue)
 
 
+@dataclass
+class Holonomic:
+    """The part of a joint's condition that is on positions alone, which a motion followed in
+    time (`simulate`) keeps its poses on by projection.
+
+    `values(q, 0.0)` is the residual at the poses `q` (zero on the condition), with the
+    signature of `JointKind.residual`'s functions (whose `aux` and `key`, when they carry them,
+    are kept); `weights(q)` says how the rate of each value is made of the joint's engine rows
+    (one list of weights per value), so that the Jacobian of the values is those weights times
+    the engine's velocity matrix; None: the values are the rows themselves, one for one."""
+
+    values: Callable[[Any, float], list]
+    weights: Optional[Callable[[Any], list]] = None
+
+
 class JointKind:
     """A kind of joint: its name in model files and everything it means (see the module's
     docstring). One instance per kind, registered in `kinematika.joints.KINDS`."""
@@ -76,6 +91,9 @@ class JointKind:
     pitch: ClassVar[bool] = False           # its circles are pitch circles (gears: drawn dash-dot)
     knife_edge: ClassVar[bool] = False      # the point `at` of b moves only along `along`, fixed in b
                                             # (a vehicle's wheel: no slip sideways)
+    velocity_only: ClassVar[tuple[int, ...]] = ()   # the dimensions in which its condition is on
+                                            # velocities only (non-holonomic: a motion with it
+                                            # is followed in time, `simulate`, not swept)
     along_in: ClassVar[str] = "a"           # the body `along` is fixed in
     centre: ClassVar[str] = ""              # where it puts the relative instant centre of its two
                                             # bodies by itself: "pin" (at `at`), "contact" (the
@@ -121,7 +139,14 @@ class JointKind:
     def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Callable[[Any, float], list]:
         """The condition itself, for sweeps (`joints.positions`): a function of a pose and the
         increment whose rows are the integrals of `rows`, row for row."""
-        raise KinematikaError("schema", "sweep-velocity-only", geo.joint.where, kind=self.name, dim=inst.space.dim)
+        raise KinematikaError("schema", "sweep-velocity-only", geo.joint.where, kind=self.name, dim=inst.space.dim,
+                              in_time=str(inst.space.dim in self.velocity_only).lower())
+
+    def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
+        """The condition's part on positions (`Holonomic`), for a motion integrated in time: the
+        whole condition (`residual`, row for row the engine's) unless the kind is constrained
+        on velocities only (a knife edge, a disc rolling on a plane), which says what is left."""
+        return Holonomic(self.residual(inst, geo, ref))
 
     def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Callable[[Any, float], list]:
         """The position form of a driver of the joint's rate: the coordinate's change from

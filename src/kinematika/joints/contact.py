@@ -37,12 +37,12 @@ class Contact(JointKind):
         """One: the outlines keep touching; sliding along the tangent is free."""
         return 1
 
-    def prepare(self, inst: Any, joint: Any, near: Any = None) -> JointGeometry:
+    def prepare(self, inst: Any, joint: Any, near: Any = None, touching: bool = True) -> JointGeometry:
         """Where the two outlines touch at this instant: the contact J, common normal n and
         radii of curvature (`geo.contact`), the branch nearest `near` when given."""
         geo = super().prepare(inst, joint)
         first, second = self.outlines(inst, joint, geo)
-        geo.contact = find_touch(inst, joint, first, second, near)
+        geo.contact = find_touch(inst, joint, first, second, near, touching)
         return geo
 
     def outlines(self, inst: Any, joint: Any, geo: JointGeometry) -> tuple[list, list]:
@@ -51,8 +51,10 @@ class Contact(JointKind):
         return outlines(inst, joint, joint.a), outlines(inst, joint, joint.b, joint.at)
 
     def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
-        """Found anew at the pose, near the sweep's last contact on the curve."""
-        return self.prepare(inst, geo.joint, hint)
+        """Found anew at the pose, near the sweep's last contact on the curve (whether the
+        outlines touch there is for the caller to judge: a sweep's residual, a simulation's
+        projection)."""
+        return self.prepare(inst, geo.joint, hint, touching=False)
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
         """(v_Jb − v_Ja)·n = 0: no approach along the common normal (at the acceleration level

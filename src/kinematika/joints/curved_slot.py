@@ -45,7 +45,7 @@ class CurvedSlot(JointKind):
         rotation are free."""
         return 1
 
-    def prepare(self, inst: Any, joint: Any, near: Any = None) -> JointGeometry:
+    def prepare(self, inst: Any, joint: Any, near: Any = None, touching: bool = True) -> JointGeometry:
         """The pin `at` on the first body's circle or curve at this instant: the contact (normal
         n, radius of curvature ρ) and `along`, the slot's tangent t = n turned a quarter turn (a
         circle's normal points outward, a curve's is its own). A first body without a circle or
@@ -54,14 +54,16 @@ class CurvedSlot(JointKind):
         curves = [s for s in inst.shapes[joint.a] if isinstance(s, (Circle, Curve))]
         if not curves:
             raise KinematikaError("schema", "curved-slot-outline", joint.where, body=joint.a)
-        geo.contact = find_touch(inst, joint, curves, outlines(inst, joint, joint.b, joint.at), near)
+        geo.contact = find_touch(inst, joint, curves, outlines(inst, joint, joint.b, joint.at), near, touching)
         n = geo.contact.normal               # a circle's: outward; a curve's: its own normal
         geo.along = (-n[1], n[0]) if isinstance(geo.contact.outline_a, Circle) else (n[1], -n[0])
         return geo
 
     def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
-        """Found anew at the pose, near the sweep's last contact on the curve."""
-        return self.prepare(inst, geo.joint, hint)
+        """Found anew at the pose, near the sweep's last contact on the curve (whether the
+        outlines touch there is for the caller to judge: a sweep's residual, a simulation's
+        projection)."""
+        return self.prepare(inst, geo.joint, hint, touching=False)
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
         """v_rel·n = 0 at the pin: its relative velocity is along the slot; at the acceleration

@@ -37,8 +37,10 @@ class Contact:
     line_body: str = ""                            # circle–line: the body of the line
 
 
-def find_contact(inst: Instant, joint: Joint) -> Contact:
-    """The contact of `joint`; a `geometry` error names the gap when the shapes do not touch."""
+def find_contact(inst: Instant, joint: Joint, touching: bool = True) -> Contact:
+    """The contact of `joint`; a `geometry` error names the gap when the shapes do not touch
+    (unless not `touching`: a pose between a motion's steps, off the conditions by the
+    integrator's error, whose contact is the nearest pair of points)."""
     shapes_a, shapes_b = inst.shapes[joint.a], inst.shapes[joint.b]
     if not shapes_a or not shapes_b:
         missing = joint.a if not shapes_a else joint.b
@@ -47,7 +49,7 @@ def find_contact(inst: Instant, joint: Joint) -> Contact:
     gap, contact = closest(shapes_a, shapes_b, lambda sa, sb: _pair(inst, joint, sa, sb), lambda c: c[0], joint,
                            Said("shapes-cannot-roll"))
     tol = 1e-6 * inst.scale
-    if abs(gap) > tol:
+    if touching and abs(gap) > tol:
         raise KinematikaError("geometry", "no-touch", joint.where, body=joint.b, other=joint.a, gap=Num(gap, ".6g"),
                               hint=rounding_hint(gap, inst.scale, Said("the-contact-or-centre")))
     if joint.at is not None:

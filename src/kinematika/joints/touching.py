@@ -153,17 +153,19 @@ def closest(first: list, second: list, pair: Callable[[Any, Any], Any], gap: Cal
     return min(candidates, key=lambda c: abs(gap(c)))
 
 
-def find_touch(inst: Any, joint: Any, first: list, second: list, near: Any = None) -> Touch:
+def find_touch(inst: Any, joint: Any, first: list, second: list, near: Any = None,
+               touching: bool = True) -> Touch:
     """The touching pair of outlines of the joint's two bodies (the one with the smallest
-    gap), checked to touch: else a `geometry` error with the gap. `near`: a curve's parameter
-    close to the contact (a sweep's previous one), which spares the search along the curve."""
+    gap), checked to touch: else a `geometry` error with the gap (unless not `touching`: a
+    moved pose, whose caller judges the gap). `near`: a curve's parameter close to the
+    contact (a sweep's previous one), which spares the search along the curve."""
     if not first or not second:
         missing = joint.a if not first else joint.b
         raise KinematikaError("schema", "touching-needs-outlines", joint.where, kind=joint.kind.name, body=missing)
     touch = closest(first, second, lambda oa, ob: _pair(inst, oa, ob, near), lambda t: t.gap, joint,
                     Said("outlines-cannot-touch"))
     touch.bodies = (joint.a, joint.b)
-    if abs(touch.gap) > 1e-6 * inst.scale:
+    if touching and abs(touch.gap) > 1e-6 * inst.scale:
         raise KinematikaError("geometry", "no-touch", joint.where, body=joint.b, other=joint.a, gap=Num(touch.gap, ".6g"),
                               hint=rounding_hint(touch.gap, inst.scale, Said("the-contact")))
     return touch

@@ -18,7 +18,7 @@ from . import shape
 from .constructions import Construction, ConstructionReader, construction_order
 from ..expressions import Expr, ExpressionError, parse
 from .model import (QUESTION_KINDS, Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint,
-                    Line, Model, Parameter, Plane, PointPair, PointRef, Question, Shape, Sweep)
+                    Line, Model, Parameter, Plane, PointPair, PointRef, Question, Shape, Simulate, Sweep)
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
@@ -70,7 +70,8 @@ class _Builder:
         self.joint_list = joints
         model = Model(name=spec.name or "Mechanism", dimension=dimension, frame=spec.frame,
                       parameters=params, points=points, bodies=bodies, joints=joints,
-                      drivers=[], questions=[], sweep=self.sweep())
+                      drivers=[], questions=[], sweep=self.sweep(),
+                      simulate=self.simulate())
         self.model_ = model
         model.drivers = [self.driver(i, d) for i, d in enumerate(spec.drivers)]
         model.questions = self.questions()
@@ -419,6 +420,14 @@ class _Builder:
         if raw.steps < 1:
             raise KinematikaError("schema", "steps-at-least-one", "sweep.steps")
         return Sweep(raw.joint, self.expr(raw.by, "sweep.by"), raw.steps)
+
+    def simulate(self) -> Optional[Simulate]:
+        raw = self.spec.simulate
+        if raw is None:
+            return None
+        if raw.steps < 1:
+            raise KinematikaError("schema", "steps must be at least 1", "simulate.steps")
+        return Simulate(self.expr(raw.time, "simulate.time"), raw.steps)
 
 
 def _names(items: Iterable[str]) -> Names:

@@ -259,6 +259,15 @@ class Sweep:
 
 
 @dataclass
+class Simulate:
+    """A model's `simulate` section: how long its motion is followed in time (seconds) and in
+    how many equal steps of time."""
+
+    time: Expr
+    steps: int
+
+
+@dataclass
 class Model:
     """A mechanism parsed: its parameters, points (coordinates or constructions), bodies,
     joints, drivers and questions, with names resolved and expressions unevaluated; the engine
@@ -276,6 +285,7 @@ class Model:
     drivers: list[Driver]
     questions: list[Question]
     sweep: Optional[Sweep] = None
+    simulate: Optional[Simulate] = None                    # `kinematika simulate`: time, steps
     move: dict[str, Expr] = field(default_factory=dict)    # joint id -> advance (deg or length)
     turns: list[Turn] = field(default_factory=list)        # bodies carried from the drawing
     default_questions: bool = False   # no `ask` was written: every body and point is asked

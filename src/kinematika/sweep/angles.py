@@ -84,5 +84,7 @@ def input_axis(result: Any, angles: Optional[dict[str, np.ndarray]] = None) -> I
         ok = np.isfinite(a) & np.isfinite(coordinate)
         return InputAxis(a, f"{driver} angle θ (deg)", driver, float(a[ok][0] - coordinate[ok][0]))
     unit = getattr(result, "unit", "deg")
+    if unit == "s":                                   # a simulation's rows: against time
+        return InputAxis(coordinate, "time t (s)", None, 0.0)
     return InputAxis(coordinate, f"{getattr(result, 'joint', 'joint')} from the drawn position "
                                  f"({'deg' if unit == 'deg' else 'length'})", None, 0.0)

@@ -25,6 +25,7 @@ EXTRA = {
     "solve": ("symbolic", "row"),
     "centres": ("symbolic", "row"),
     "sweep": ("joint", "by", "steps", "skip_bad", "as"),
+    "simulate": ("time", "steps", "method", "as"),
     "explain": ("symbolic", "length_unit", "row"),
     "draw": ("row", "as", "velocities", "accelerations", "centres", "curvature", "labels", "points",
              "view", "width"),
@@ -35,7 +36,7 @@ EXTRA = {
     "sketch": (),
     "convert": ("to",),
 }
-AS = {"sweep": ("json", "csv"), "draw": ("data", "svg", "png")}
+AS = {"sweep": ("json", "csv"), "simulate": ("json", "csv"), "draw": ("data", "svg", "png")}
 
 
 @dataclass
@@ -92,6 +93,12 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         out["by"] = _number(body, "by")
         out["steps"] = _integer(body, "steps", None, low=1, high=PAGE_SWEEP_STEPS)
         out["skip_bad"] = bool(_flag(body, "skip_bad"))
+    elif endpoint == "simulate":
+        from ..simulate.run import METHODS
+
+        out["time"] = _number(body, "time")
+        out["steps"] = _integer(body, "steps", None, low=1, high=PAGE_SWEEP_STEPS)
+        out["method"] = _choice(body, "method", METHODS, METHODS[0])
     elif endpoint == "explain":
         out["length_unit"] = _text(body, "length_unit") or "m"
     elif endpoint == "draw":

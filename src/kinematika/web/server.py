@@ -29,7 +29,7 @@ from ..languages import LANGS
 from .. import limits
 from .requests import Request, parse_body
 
-ENDPOINTS = ("solve", "sweep", "centres", "explain", "draw", "edit", "assemblies", "exercise",
+ENDPOINTS = ("solve", "sweep", "simulate", "centres", "explain", "draw", "edit", "assemblies", "exercise",
              "build", "sketch", "convert")
 STATIC = resources.files("kinematika.web") / "static"
 EXAMPLES = resources.files("kinematika.web") / "examples"
@@ -282,7 +282,7 @@ def _compute(req: Request) -> tuple[int, str, bytes]:
     try:
         with speaking(req.get("lang") or "en"):
             media, body = COMPUTE[req.endpoint](req)
-    except KinematikaError:
+    except (KinematikaError, Failure):
         raise
     except Exception as err:
         if os.environ.get("KINEMATIKA_DEBUG"):
@@ -312,6 +312,25 @@ def _sweep(req: Request) -> tuple[str, str]:
         result.write_csv(out)
         return CSV, out.getvalue()
     return JSON, b"".join(result.json_chunks()) + b"\n"      # as `sweep --json` writes it
+
+
+def _simulate(req: Request) -> tuple[str, Any]:
+    """What `simulate --json` prints (or its CSV); a motion that stops early answers 400 with
+    the error and, under `partial`, the rows before it (as `simulate --json` prints them)."""
+    from ..simulate.run import SimulationStopped
+
+    try:
+        _, result = commands.simulate_run(req.model, req.get("time"), req.get("steps"), req.get("method"),
+                                          how=req.how)
+    except SimulationStopped as err:
+        failure = Failure(400, err.kind, err.message, err.where)
+        failure.body["partial"] = json.loads(b"".join(err.result.json_chunks()))
+        raise failure from None
+    if req.get("as") == "csv":
+        out = io.StringIO(newline="")
+        result.write_csv(out)
+        return CSV, out.getvalue()
+    return JSON, b"".join(result.json_chunks()) + b"\n"      # as `simulate --json` writes it
 
 
 def _explain(req: Request) -> tuple[str, str]:
@@ -351,14 +370,30 @@ def _drawn(req: Request) -> tuple[str, Any]:
 
 
 def _input(model: Any) -> Optional[dict[str, Any]]:
-    """The joint a sweep (and the page's slider) advances, and its unit; None if none."""
+    """What the page's slider advances: the joint a sweep advances, and its unit; or, for a
+    model whose motion is followed in time (`simulate`), the time ("unit": "s") over which
+    and in how many steps; None if neither."""
+    from ..simulate.run import needs_time
     from ..sweep.plan import swept_joint
 
+    if needs_time(model):
+        return _time_input(model)
     try:
         joint, _ = swept_joint(model, model.sweep.joint if model.sweep else None)
     except KinematikaError:
-        return None
+        return _time_input(model) if model.simulate is not None else None
     return {"joint": joint.id, "unit": "deg" if joint.kind.coordinate == "angle" else "length"}
+
+
+def _time_input(model: Any) -> Optional[dict[str, Any]]:
+    """The page's slider over time: the model's `simulate` section, else `DEFAULT_TIME` s."""
+    from ..simulate.clock import DEFAULT_STEPS, DEFAULT_TIME, make_clock
+
+    try:
+        clock = make_clock(model, 0.0, None, None, DEFAULT_TIME)
+    except KinematikaError:
+        clock = make_clock(model, 0.0, DEFAULT_TIME, DEFAULT_STEPS)
+    return {"joint": None, "unit": "s", "time": clock.duration, "steps": clock.steps}
 
 
 def _edit(req: Request) -> tuple[str, str]:
@@ -398,6 +433,6 @@ def _exercise(req: Request) -> tuple[str, str]:
     return JSON, commands.json_text(exercise_answer(req))
 
 
-COMPUTE = {"solve": _solve, "centres": _centres, "sweep": _sweep, "explain": _explain,
+COMPUTE = {"solve": _solve, "centres": _centres, "sweep": _sweep, "simulate": _simulate, "explain": _explain,
            "draw": _draw, "edit": _edit, "assemblies": _assemblies, "exercise": _exercise,
            "build": _build, "sketch": _sketch, "convert": _convert}

@@ -300,7 +300,10 @@ nothing = {""}
 sweep-velocity-only = un escombratge no pot seguir un enllaç `{ $kind }`{ $dim ->
         [3] {" "}en 3D
        *[other] {""}
-    }: la seva condició només és de velocitats, així que les posicions depenen del camí recorregut
+    }: la seva condició només és de velocitats, així que les posicions depenen del camí recorregut{ $in_time ->
+        [true] ; `kinematika simulate` el segueix en el temps
+       *[other] {""}
+    }
 joint-other-dimension = un enllaç `{ $kind }` és d’un model { $dim ->
         [2] 3D
        *[other] pla

@@ -228,7 +228,10 @@ nothing = {""}
 sweep-velocity-only = a sweep cannot follow a { $kind } joint{ $dim ->
         [3] {" "}in 3D
        *[other] {""}
-    }: its condition is on velocities only, so the positions depend on the path taken
+    }: its condition is on velocities only, so the positions depend on the path taken{ $in_time ->
+        [true] ; `kinematika simulate` follows it in time
+       *[other] {""}
+    }
 joint-other-dimension = a { $kind } joint belongs to a { $dim ->
         [2] 3D
        *[other] planar

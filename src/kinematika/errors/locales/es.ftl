@@ -300,7 +300,10 @@ nothing = {""}
 sweep-velocity-only = un barrido no puede seguir un par `{ $kind }`{ $dim ->
         [3] {" "}en 3D
        *[other] {""}
-    }: su condición es solo de velocidades, así que las posiciones dependen del camino recorrido
+    }: su condición es solo de velocidades, así que las posiciones dependen del camino recorrido{ $in_time ->
+        [true] ; `kinematika simulate` lo sigue en el tiempo
+       *[other] {""}
+    }
 joint-other-dimension = un par `{ $kind }` es de un modelo { $dim ->
         [2] 3D
        *[other] plano

@@ -300,7 +300,10 @@ nothing = {""}
 sweep-velocity-only = ekorketa batek ezin du `{ $kind }` motako lotura bat jarraitu{ $dim ->
         [3] {" "}3D-n
        *[other] {""}
-    }: haren baldintza abiaduretakoa baino ez da, eta, beraz, posizioak egindako bidearen araberakoak dira
+    }: haren baldintza abiaduretakoa baino ez da, eta, beraz, posizioak egindako bidearen araberakoak dira{ $in_time ->
+        [true] ; `kinematika simulate` aginduak denboran jarraitzen du
+       *[other] {""}
+    }
 joint-other-dimension = `{ $kind }` motako lotura bat eredu { $dim ->
         [2] 3D batekoa
        *[other] lau batekoa

@@ -89,6 +89,16 @@ async function analyse() {
   state.playBack = false;
   state.input = state.scene && state.scene.input;
   state.sweepError = swept.status === "rejected" ? swept.reason.message : null;
+  if (inTime()) {                    // a motion followed in time: its rows, as a sweep's
+    try {
+      state.sweep = rowsInTime(await post("simulate", request({ time: state.input.time, steps: state.input.steps })));
+      state.sweepError = null;
+    } catch (err) {
+      state.sweep = err.partial ? rowsInTime(err.partial) : null;
+      state.sweepError = err.message;
+    }
+    if (gen !== state.gen) return;
+  }
   state.explained = null;
   const name = shown(state.solution.name || t("model"), 120);
   $("model-name").textContent = name;
@@ -266,9 +276,21 @@ function forget() {
 }
 
 // the slider ----------------------------------------------------------------------------
+/** Whether the slider moves through time (a simulation's rows: `kinematika simulate`). */
+function inTime() {
+  return !!(state.input && state.input.unit === "s");
+}
+
+/** A simulation's rows read as a sweep's: its times as the coordinate. */
+function rowsInTime(rows) {
+  return { ...rows, coordinate: rows.time };
+}
+
+
 function coordinateText(k) {
   if (!state.sweep || !state.input) return t("drawn-position");
   const x = state.sweep.coordinate[k];
+  if (inTime()) return `t = ${num(x)} s`;
   return `${shown(state.input.joint, 40)} ${x >= 0 ? "+" : "−"}${num(Math.abs(x))}${state.input.unit === "deg" ? "°" : ""}`;
 }
 
@@ -304,8 +326,8 @@ async function settle() {
   const k = state.row, gen = state.gen;
   if (!state.solution) return;             // a model being built: nothing solved to show
   explainSoon();
-  if (k === 0 || !state.sweep || !state.input) {
-    if (state.scene) place(state.scene, 0);
+  if (k === 0 || !state.sweep || !state.input || inTime()) {
+    if (state.scene && (k === 0 || !inTime())) place(state.scene, 0);
     return;
   }
   const move = posedAt(k);
@@ -328,7 +350,7 @@ function place(scene, k) {
  * for a motion through limit positions (where a coordinate is reached on two branches), the
  * row itself (`row`: the sweep's row k, through the limit positions before it). */
 function posedAt(k) {
-  if (k === 0 || !state.input || !state.sweep) return {};
+  if (k === 0 || !state.input || !state.sweep || inTime()) return {};     // rows in time: posed at the drawing only
   if (state.sweep.limits && state.sweep.limits.length) return { row: k };
   return { move: { [state.input.joint]: state.sweep.coordinate[k] } };
 }
@@ -387,7 +409,7 @@ async function explain() {
   if (state.explained === key || state.explaining === key || !state.solution) return;
   state.explaining = key;            // one request a position (an explanation can take seconds)
   const move = posedAt(k);
-  let html, where = whereText(k);
+  let html, where = inTime() && k !== 0 ? t("at-drawn-only") : whereText(k);
   try {
     html = await post("explain", request({ lang, ...move }), "text");
   } catch (err) {
@@ -487,7 +509,8 @@ async function download(what) {
       try { blob = await post("draw", request({ ...here, as: what, centres: true }), "blob"); }
       catch (_) { blob = await post("draw", request({ as: what, centres: true }), "blob"); }
       save(blob, `${state.name}.${what}`);
-    } else if (what === "csv") save(await post("sweep", request({ skip_bad: true, as: "csv" }), "blob"), `${state.name}.csv`);
+    } else if (what === "csv" && inTime()) save(await post("simulate", request({ time: state.input.time, steps: state.input.steps, as: "csv" }), "blob"), `${state.name}.csv`);
+    else if (what === "csv") save(await post("sweep", request({ skip_bad: true, as: "csv" }), "blob"), `${state.name}.csv`);
     else if (what === "html") {
       if (!state.explanation) await explain();
       save(new Blob([state.explanation || ""], { type: "text/html" }), `${state.name}-${state.lang}.html`);

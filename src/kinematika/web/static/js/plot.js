@@ -129,7 +129,7 @@ export class Plot {
       tk.textContent = num(x);
     }
     const axis = el("text", { x: w - PAD.right + 4, y: base + 14, "font-size": 10.5, fill: "#5f6b73" }, svg);
-    axis.textContent = this.xlabel;
+    axis.textContent = this.unit === "s" ? "t (s)" : this.xlabel;
     axis.setAttribute("text-anchor", "end");
     axis.setAttribute("x", w - PAD.right);
     axis.setAttribute("y", base + 28);
