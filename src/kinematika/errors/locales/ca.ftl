@@ -785,4 +785,4 @@ target-row-width = { $name }, línia { $line }: { $count } valors on el fitxer t
 target-not-finite = { $name }, línia { $line }: s’esperaven nombres finits
 target-weight-positive = { $name }, línia { $line }: un pes ha de ser positiu
 target-first-input = { $name }, línia { $line }: l’entrada del primer objectiu és 0 (les entrades es compten des del primer objectiu)
-target-inputs-increase = { $name }, línia { $line }: els valors de la columna { $column } han de créixer ({ $before } i després { $after })
+target-inputs-increase = { $name }, línia { $line }: els valors de la columna '{ $column }' han de créixer ({ $before } i després { $after })

@@ -785,4 +785,4 @@ target-row-width = { $name }, línea { $line }: { $count } valores donde el arch
 target-not-finite = { $name }, línea { $line }: se esperaban números finitos
 target-weight-positive = { $name }, línea { $line }: un peso tiene que ser positivo
 target-first-input = { $name }, línea { $line }: la entrada del primer objetivo es 0 (las entradas se cuentan desde el primer objetivo)
-target-inputs-increase = { $name }, línea { $line }: los valores de la columna { $column } tienen que crecer ({ $before } y luego { $after })
+target-inputs-increase = { $name }, línea { $line }: los valores de la columna '{ $column }' tienen que crecer ({ $before } y luego { $after })

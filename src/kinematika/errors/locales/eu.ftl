@@ -782,4 +782,4 @@ target-row-width = { $name }, { $line }. lerroa: { $count } balio, fitxategiak {
 target-not-finite = { $name }, { $line }. lerroa: zenbaki finituak espero ziren
 target-weight-positive = { $name }, { $line }. lerroa: pisu batek positiboa izan behar du
 target-first-input = { $name }, { $line }. lerroa: lehen helburuaren sarrera 0 da (sarrerak lehen helburutik zenbatzen dira)
-target-inputs-increase = { $name }, { $line }. lerroa: { $column } zutabearen balioek gora egin behar dute ({ $before } eta gero { $after })
+target-inputs-increase = { $name }, { $line }. lerroa: '{ $column }' zutabearen balioek gora egin behar dute ({ $before } eta gero { $after })
