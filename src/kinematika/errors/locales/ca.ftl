@@ -589,7 +589,6 @@ it-is-a-folder = és una carpeta
 it-is-a-file = és un fitxer
 the-output-file = el fitxer de sortida
 students-none = { $name } no anomena estudiants (una capçalera i després un per fila)
-synthesis-no-design = cap disseny dels intervals no completa el seu cicle
 synthesis-one-target = dona un de --target (trajectòria), --target-function (funció) o --target-motion (moviment)
 function-needs-output = la generació de funcions necessita --output BODY
 path-needs-point = la generació de trajectòries i de moviment necessita --point P
@@ -746,3 +745,47 @@ travel-too-far = { $what } { $amount } és més del que recorre un escombratge o
        *[length] {" "}({ $turns } vegades la mida del mecanisme)
     }
 two-straights-touch = dos contorns rectes es toquen al llarg d’una recta, no en un punt: uneix-los amb un enllaç prismàtic
+
+## synthesis: its task, its target file, its four-bar (explore/synthesis/*.py, cli/explore.py)
+synthesis-no-design = cap disseny dels intervals no completa el seu cicle{ $requirements ->
+        [0] {""}
+       *[other] {" "}i compleix els requisits
+    }
+synthesis-no-full-turn = cap disseny trobat no completa una volta sencera de la seva entrada
+synthesis-nothing-found = cap disseny dins dels intervals de --vary no es pot muntar a tots els objectius{ $count ->
+        [0] {""}
+       *[other] {" "}i complir { $requirements }
+    }; amplia els intervals o cerca durant més temps
+require-crank-rocker-four-bar = `--require crank-rocker` necessita un quadrilàter articulat mogut per la seva manovella (una manovella i dues barres que tanquen sobre el sòlid fix), amb el seu punt a la biela
+require-transmission-linkage = `--require transmission=DEG` necessita un quadrilàter articulat o una biela-manovella moguts per la seva manovella
+require-transmission-angle = --require transmission=DEG: DEG és un angle entre 0 i 90 graus, i hi ha { $got }
+requirement-unknown = requisit desconegut '{ $requirement }'; requisits: { $requirements }
+timing-needs-four-bar = --timing necessita un quadrilàter articulat mogut per la seva manovella, amb el punt de la tasca a la seva biela (en altres models, deixa lliure la sincronització dels objectius)
+timing-form = --timing espera JOINT o JOINT=START, i hi ha { $got }
+timing-start-number = --timing { $joint }=START: START ha de ser un nombre, i hi ha { $got }
+timing-start-finite = --timing { $joint }=START: START ha de ser finit
+objective-form = --objective és `sse` o `max`, i hi ha { $got }
+output-zero-form = --output-zero és 'free' o un angle en graus, i hi ha { $got }
+output-zero-function-only = --output-zero només serveix per a la generació de funcions (--target-function)
+output-zero-needs-four-bar = --output-zero necessita un quadrilàter articulat la sortida del qual sigui el seu balancí o la seva biela
+output-not-rocker-or-coupler = la sortida '{ $output }' no és el balancí ({ $rocker }) ni la biela ({ $coupler }) del quadrilàter articulat
+body-needs-two-points = el sòlid '{ $body }' necessita dos punts per tenir una direcció
+targets-too-few = { $name }: { $count } { $count ->
+        [one] objectiu
+       *[other] objectius
+    }; la síntesi necessita com a mínim { $least }
+target-columns-count = { $name }: { $count } { $count ->
+        [one] columna
+       *[other] columnes
+    }; aquesta tasca llegeix { $reads }
+target-column-unread = { $name }: aquesta tasca no llegeix la columna '{ $column }'{ $timing ->
+        [true] {" "}(dona --timing JOINT per fer-la servir)
+       *[other] {""}
+    }; llegeix { $reads }
+target-column-missing = { $name }: no hi ha cap columna '{ $column }' (aquesta tasca llegeix { $reads })
+target-header-twice = { $name }, línia { $line }: cada columna s’anomena una sola vegada
+target-row-width = { $name }, línia { $line }: { $count } valors on el fitxer té { $columns } columnes
+target-not-finite = { $name }, línia { $line }: s’esperaven nombres finits
+target-weight-positive = { $name }, línia { $line }: un pes ha de ser positiu
+target-first-input = { $name }, línia { $line }: l’entrada del primer objectiu és 0 (les entrades es compten des del primer objectiu)
+target-inputs-increase = { $name }, línia { $line }: els valors de la columna '{ $column }' han de créixer ({ $before } i després { $after })

@@ -514,7 +514,6 @@ it-is-a-folder = it is a folder
 it-is-a-file = it is a file
 the-output-file = the output file
 students-none = { $name } names no students (a header, then one per row)
-synthesis-no-design = no design of the intervals completes its cycle
 synthesis-one-target = give one of --target (path), --target-function (function) or --target-motion (motion)
 function-needs-output = function generation needs --output BODY
 path-needs-point = path and motion generation need --point P
@@ -660,3 +659,47 @@ travel-too-far = { $what } { $amount } is more than a sweep or move travels: at 
        *[length] {" "}({ $turns } times the mechanism's size)
     }
 two-straights-touch = two straight outlines touch along a line, not at a point: join them by a prismatic joint
+
+## synthesis: its task, its target file, its four-bar (explore/synthesis/*.py, cli/explore.py)
+synthesis-no-design = no design of the intervals completes its cycle{ $requirements ->
+        [0] {""}
+       *[other] {" "}and meets the requirements
+    }
+synthesis-no-full-turn = no design found completes a full turn of its input
+synthesis-nothing-found = no design within the --vary intervals assembles at every target{ $count ->
+        [0] {""}
+       *[other] {" "}and meets { $requirements }
+    }; widen the intervals or search longer
+require-crank-rocker-four-bar = --require crank-rocker needs a four-bar driven at its crank (a crank and two links closing on the frame), its point on the coupler
+require-transmission-linkage = --require transmission=DEG needs a four-bar or a slider-crank driven at its crank
+require-transmission-angle = --require transmission=DEG: DEG is an angle between 0 and 90 degrees, got { $got }
+requirement-unknown = unknown requirement '{ $requirement }'; requirements: { $requirements }
+timing-needs-four-bar = --timing needs a four-bar driven at its crank, the task's point on its coupler (other models: leave the targets' timing free)
+timing-form = --timing expects JOINT or JOINT=START, got { $got }
+timing-start-number = --timing { $joint }=START: START must be a number, got { $got }
+timing-start-finite = --timing { $joint }=START: START must be finite
+objective-form = --objective is sse or max, got { $got }
+output-zero-form = --output-zero is 'free' or an angle in degrees, got { $got }
+output-zero-function-only = --output-zero is for function generation only (--target-function)
+output-zero-needs-four-bar = --output-zero needs a four-bar whose output is its rocker or coupler
+output-not-rocker-or-coupler = the output '{ $output }' is not the four-bar's rocker ({ $rocker }) or coupler ({ $coupler })
+body-needs-two-points = body '{ $body }' needs two points to have a direction
+targets-too-few = { $name }: { $count } { $count ->
+        [one] target
+       *[other] targets
+    }; synthesis needs at least { $least }
+target-columns-count = { $name }: { $count } { $count ->
+        [one] column
+       *[other] columns
+    }; this task reads { $reads }
+target-column-unread = { $name }: column '{ $column }' is not read by this task{ $timing ->
+        [true] {" "}(give --timing JOINT to use it)
+       *[other] {""}
+    }; it reads { $reads }
+target-column-missing = { $name }: no column '{ $column }' (this task reads { $reads })
+target-header-twice = { $name }, line { $line }: each column named once
+target-row-width = { $name }, line { $line }: { $count } values where the file has { $columns } columns
+target-not-finite = { $name }, line { $line }: expected finite numbers
+target-weight-positive = { $name }, line { $line }: a weight must be positive
+target-first-input = { $name }, line { $line }: the first target's input is 0 (the inputs count from the first target)
+target-inputs-increase = { $name }, line { $line }: the { $column } values must increase ({ $before } then { $after })

@@ -589,7 +589,6 @@ it-is-a-folder = es una carpeta
 it-is-a-file = es un archivo
 the-output-file = el archivo de salida
 students-none = { $name } no nombra estudiantes (una cabecera y luego uno por fila)
-synthesis-no-design = ningún diseño de los intervalos completa su ciclo
 synthesis-one-target = da uno de --target (trayectoria), --target-function (función) o --target-motion (movimiento)
 function-needs-output = la generación de funciones necesita --output BODY
 path-needs-point = la generación de trayectorias y de movimiento necesita --point P
@@ -746,3 +745,47 @@ travel-too-far = { $what } { $amount } es más de lo que recorre un barrido o un
        *[length] {" "}({ $turns } veces el tamaño del mecanismo)
     }
 two-straights-touch = dos contornos rectos se tocan a lo largo de una recta, no en un punto: únelos con un par prismático
+
+## synthesis: its task, its target file, its four-bar (explore/synthesis/*.py, cli/explore.py)
+synthesis-no-design = ningún diseño de los intervalos completa su ciclo{ $requirements ->
+        [0] {""}
+       *[other] {" "}y cumple los requisitos
+    }
+synthesis-no-full-turn = ningún diseño hallado completa una vuelta entera de su entrada
+synthesis-nothing-found = ningún diseño dentro de los intervalos de --vary se puede montar en todos los objetivos{ $count ->
+        [0] {""}
+       *[other] {" "}y cumplir { $requirements }
+    }; amplía los intervalos o busca durante más tiempo
+require-crank-rocker-four-bar = `--require crank-rocker` necesita un cuadrilátero articulado movido por su manivela (una manivela y dos barras que cierran sobre el sólido fijo), con su punto en la biela
+require-transmission-linkage = `--require transmission=DEG` necesita un cuadrilátero articulado o un biela-manivela movido por su manivela
+require-transmission-angle = --require transmission=DEG: DEG es un ángulo entre 0 y 90 grados, y hay { $got }
+requirement-unknown = requisito desconocido '{ $requirement }'; requisitos: { $requirements }
+timing-needs-four-bar = --timing necesita un cuadrilátero articulado movido por su manivela, con el punto de la tarea en su biela (en otros modelos, deja libre la sincronización de los objetivos)
+timing-form = --timing espera JOINT o JOINT=START, y hay { $got }
+timing-start-number = --timing { $joint }=START: START tiene que ser un número, y hay { $got }
+timing-start-finite = --timing { $joint }=START: START tiene que ser finito
+objective-form = --objective es `sse` o `max`, y hay { $got }
+output-zero-form = --output-zero es 'free' o un ángulo en grados, y hay { $got }
+output-zero-function-only = --output-zero es solo para la generación de funciones (--target-function)
+output-zero-needs-four-bar = --output-zero necesita un cuadrilátero articulado cuya salida sea su balancín o su biela
+output-not-rocker-or-coupler = la salida '{ $output }' no es el balancín ({ $rocker }) ni la biela ({ $coupler }) del cuadrilátero articulado
+body-needs-two-points = el sólido '{ $body }' necesita dos puntos para tener una dirección
+targets-too-few = { $name }: { $count } { $count ->
+        [one] objetivo
+       *[other] objetivos
+    }; la síntesis necesita al menos { $least }
+target-columns-count = { $name }: { $count } { $count ->
+        [one] columna
+       *[other] columnas
+    }; esta tarea lee { $reads }
+target-column-unread = { $name }: esta tarea no lee la columna '{ $column }'{ $timing ->
+        [true] {" "}(da --timing JOINT para usarla)
+       *[other] {""}
+    }; lee { $reads }
+target-column-missing = { $name }: no hay ninguna columna '{ $column }' (esta tarea lee { $reads })
+target-header-twice = { $name }, línea { $line }: cada columna se nombra una sola vez
+target-row-width = { $name }, línea { $line }: { $count } valores donde el archivo tiene { $columns } columnas
+target-not-finite = { $name }, línea { $line }: se esperaban números finitos
+target-weight-positive = { $name }, línea { $line }: un peso tiene que ser positivo
+target-first-input = { $name }, línea { $line }: la entrada del primer objetivo es 0 (las entradas se cuentan desde el primer objetivo)
+target-inputs-increase = { $name }, línea { $line }: los valores de la columna '{ $column }' tienen que crecer ({ $before } y luego { $after })

@@ -592,7 +592,6 @@ it-is-a-folder = karpeta bat da
 it-is-a-file = fitxategi bat da
 the-output-file = irteerako fitxategia
 students-none = { $name } fitxategiak ez du ikaslerik izendatzen (goiburu bat eta gero bat errenkada bakoitzeko)
-synthesis-no-design = tarteen diseinu batek ere ez du bere zikloa osatzen
 synthesis-one-target = eman hauetako bat: --target (ibilbidea), --target-function (funtzioa) edo --target-motion (mugimendua)
 function-needs-output = funtzio-sorkuntzak --output BODY behar du
 path-needs-point = ibilbide- eta mugimendu-sorkuntzak --point P behar du
@@ -749,3 +748,41 @@ travel-too-far = { $what } { $amount } ekorketa edo mugimendu batek ibiltzen due
        *[length] {" "}(mekanismoaren tamaina { $turns } aldiz)
     }
 two-straights-touch = bi ingerada zuzen zuzen batean zehar ukitzen dira, ez puntu batean: lotu itzazu lotura prismatiko batez
+
+## synthesis: its task, its target file, its four-bar (explore/synthesis/*.py, cli/explore.py)
+synthesis-no-design = tarteetan ez dago bere zikloa osatzen duen{ $requirements ->
+        [0] {""}
+       *[other] {" "}eta baldintzak betetzen dituen
+    } diseinurik
+synthesis-no-full-turn = aurkitutako diseinu batek ere ez du bere sarreraren bira osoa osatzen
+synthesis-nothing-found = --vary tarteetako diseinu bat ere ezin da helburu guztietan muntatu{ $count ->
+        [0] {""}
+       *[other] {" "}eta hauek bete: { $requirements }
+    }; zabaldu tarteak edo bilatu denbora gehiagoz
+require-crank-rocker-four-bar = `--require crank-rocker` aukerak bere biraderaz eragindako lau barrako mekanismo bat behar du (biradera bat eta solido finkoan ixten diren bi barra), puntua bielan duela
+require-transmission-linkage = `--require transmission=DEG` aukerak bere biraderaz eragindako lau barrako mekanismo bat edo biela-biradera bat behar du
+require-transmission-angle = --require transmission=DEG: DEG 0 eta 90 gradu arteko angelu bat da, baina { $got } dago
+requirement-unknown = baldintza ezezaguna '{ $requirement }'; baldintzak: { $requirements }
+timing-needs-four-bar = --timing aukerak bere biraderaz eragindako lau barrako mekanismo bat behar du, zereginaren puntua bielan duela (beste ereduetan, utzi libre helburuen sinkronizazioa)
+timing-form = --timing aukerak JOINT edo JOINT=START espero du, baina { $got } dago
+timing-start-number = --timing { $joint }=START: START zenbaki bat izan behar da, baina { $got } dago
+timing-start-finite = --timing { $joint }=START: START finitua izan behar da
+objective-form = --objective aukera `sse` edo `max` da, baina { $got } dago
+output-zero-form = --output-zero aukera 'free' da edo angelu bat gradutan, baina { $got } dago
+output-zero-function-only = --output-zero funtzio-sorkuntzarako bakarrik da (--target-function)
+output-zero-needs-four-bar = --output-zero aukerak lau barrako mekanismo bat behar du, irteera haren balantzina edo biela duena
+output-not-rocker-or-coupler = '{ $output }' irteera ez da lau barrako mekanismoaren balantzina ({ $rocker }) ezta biela ({ $coupler }) ere
+body-needs-two-points = '{ $body }' solidoak bi puntu behar ditu norabide bat izateko
+targets-too-few = { $name }: { $count } helburu; sintesiak gutxienez { $least } behar ditu
+target-columns-count = { $name }: { $count } zutabe; zeregin honek { $reads } irakurtzen ditu
+target-column-unread = { $name }: zeregin honek ez du '{ $column }' zutabea irakurtzen{ $timing ->
+        [true] {" "}(eman --timing JOINT hura erabiltzeko)
+       *[other] {""}
+    }; { $reads } irakurtzen ditu
+target-column-missing = { $name }: ez dago '{ $column }' zutaberik (zeregin honek { $reads } irakurtzen ditu)
+target-header-twice = { $name }, { $line }. lerroa: zutabe bakoitza behin bakarrik izendatzen da
+target-row-width = { $name }, { $line }. lerroa: { $count } balio, fitxategiak { $columns } zutabe dituen lekuan
+target-not-finite = { $name }, { $line }. lerroa: zenbaki finituak espero ziren
+target-weight-positive = { $name }, { $line }. lerroa: pisu batek positiboa izan behar du
+target-first-input = { $name }, { $line }. lerroa: lehen helburuaren sarrera 0 da (sarrerak lehen helburutik zenbatzen dira)
+target-inputs-increase = { $name }, { $line }. lerroa: '{ $column }' zutabearen balioek gora egin behar dute ({ $before } eta gero { $after })

@@ -25,7 +25,7 @@ from typing import Any, Callable, Optional
 
 import numpy as np
 
-from ...errors import KinematikaError
+from ...errors import KinematikaError, Names, Said
 from ..designs import Vary, parse_vary
 from .general import function_targets
 from .task import Task
@@ -65,10 +65,10 @@ def synthesize(model: Any, vary: list[Vary | str], task: Task, population: int =
     m = as_model(model)
     varied = [v if isinstance(v, Vary) else parse_vary(v) for v in vary]
     if not varied:
-        raise KinematikaError("usage", "name at least one parameter to vary (--vary NAME=LOW:HIGH)", "--vary")
+        raise KinematikaError("usage", "vary-none", "--vary")
     names = [v.name for v in varied]
     if len(set(names)) != len(names):
-        raise KinematikaError("usage", f"a parameter is varied twice: {', '.join(names)}", "--vary")
+        raise KinematikaError("usage", "varied-twice", "--vary", names=names)
     _check_parameters(m, names)
     _check_timing(m, task)
     from .fast import fast_task
@@ -91,7 +91,7 @@ def _followed(m, result: Synthesis, best: int) -> Synthesis:
     keep = [i for i, d in enumerate(result.designs)
             if joint.kind.coordinate != "angle" or follows_a_turn(m, d, joint.id)][:best]
     if not keep:
-        raise KinematikaError("assembly", "no design found completes a full turn of its input", "--vary")
+        raise KinematikaError("assembly", "synthesis-no-full-turn", "--vary")
     result.designs = [result.designs[i] for i in keep]
     result.errors = [result.errors[i] for i in keep]
     result.starts = [None] * len(keep)
@@ -108,7 +108,7 @@ def _check_timing(model, task: Task) -> None:
     try:
         swept_joint(model, task.timing.joint)
     except KinematikaError as err:
-        raise KinematikaError("usage", err.message, "--timing") from None
+        raise KinematikaError("usage", err.said, "--timing") from None
 
 
 def _four_bar(m, fbt, varied: list[Vary], population: int, generations: Optional[int], seed: int, best: int,
@@ -135,11 +135,10 @@ def _four_bar(m, fbt, varied: list[Vary], population: int, generations: Optional
                      [float(np.degrees(z)) for z in scores.zero] if fbt.free_zero else [None] * len(chosen))
 
 
-def _nothing_found(task: Task) -> str:
+def _nothing_found(task: Task) -> Said:
+    """No design of the box assembles at every target (and meets the task's requirements)."""
     why = task.requires.names()
-    needs = f" and meets {', '.join(why)}" if why else ""
-    return (f"no design within the --vary intervals assembles at every target{needs}; widen the intervals "
-            "or search longer")
+    return Said("synthesis-nothing-found", count=len(why), requirements=Names(why, None))
 
 
 def follows_a_turn(model, values: dict[str, float], joint: Optional[str]) -> bool:

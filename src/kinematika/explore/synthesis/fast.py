@@ -31,8 +31,7 @@ def fast_task(model: Model, task: Task, varied: list[Vary]) -> Optional[FourBarT
         ok = task.timing.joint == roles.joint
     if roles is None or not ok:
         if task.requires.crank_rocker:
-            raise KinematikaError("usage", "--require crank-rocker needs a four-bar driven at its crank (a crank "
-                                  "and two links closing on the frame), its point on the coupler", "--require")
+            raise KinematikaError("usage", "require-crank-rocker-four-bar", "--require")
         return None
     low = np.array([v.low for v in varied])
     high = np.array([v.high for v in varied])

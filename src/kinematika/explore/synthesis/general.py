@@ -50,8 +50,7 @@ def synthesize_general(model: Any, varied: list[Vary], task: Any, population: in
     from . import Synthesis
 
     if task.timing is not None:
-        raise KinematikaError("usage", "--timing needs a four-bar driven at its crank, the task's point on "
-                              "its coupler (other models: leave the targets' timing free)", "--timing")
+        raise KinematikaError("usage", "timing-needs-four-bar", "--timing")
     names = [v.name for v in varied]
     ev = Evaluator(model, names, [], Sweep(steps=steps))
     metric = task_metric(ev, task)
@@ -70,26 +69,24 @@ def task_metric(ev: Evaluator, task: Any) -> Metric:
     where = {"path": "--target", "motion": "--target-motion", "function": "--target-function"}[task.kind]
     if task.kind == "function":
         if task.body not in model.bodies:
-            raise KinematikaError("usage", f"unknown body {task.body!r} (bodies: {', '.join(model.bodies)})",
-                                  "--output")
+            raise KinematikaError("usage", "unknown-body", "--output", body=task.body, bodies=list(model.bodies))
         table = np.column_stack([task.inputs, task.angle])
         low, high = sorted((ev.context.coordinate[0], ev.context.coordinate[-1]))
         if (task.inputs < low - 1e-9).any() or (task.inputs > high + 1e-9).any():
-            raise KinematikaError("usage", f"the inputs must lie in the sweep's range {low:g} to {high:g} "
-                                  f"{ev.context.unit}", where)
+            raise KinematikaError("usage", "input-outside-sweep", where, low=float(low), high=float(high),
+                                  unit=ev.context.unit)
         if task.output_zero is not None:
-            raise KinematikaError("usage", "--output-zero needs a four-bar whose output is its rocker or "
-                                  "coupler", "--output-zero")
+            raise KinematikaError("usage", "output-zero-needs-four-bar", "--output-zero")
         errors = lambda c: rotation_errors(c, task.body, table)
     else:
         try:
             ref = model.resolve_point(task.point, "--point")
         except KinematikaError as err:
-            raise KinematikaError("usage", err.message, "--point") from None
+            raise KinematikaError("usage", err.said, "--point") from None
         if task.kind == "motion":
             points = model.bodies[ref.body].points
             if len(points) < 2:
-                raise KinematikaError("usage", f"body {ref.body!r} needs two points to have a direction", where)
+                raise KinematikaError("usage", "body-needs-two-points", where, body=ref.body)
             poses = np.column_stack([task.xy.real, task.xy.imag, task.angle])
             errors = lambda c: pose_distances(c, ref, points, poses)
         else:
@@ -111,8 +108,7 @@ def _requirements(ev: Evaluator, task: Any) -> list[Metric]:
         try:
             metric = parse_metric("transmission", ev.context)
         except KinematikaError:
-            raise KinematikaError("usage", "--require transmission=DEG needs a four-bar or a slider-crank driven "
-                                  "at its crank", "--require") from None
+            raise KinematikaError("usage", "require-transmission-linkage", "--require") from None
         metric.name, metric.data = "·transmission", task.requires.transmission
         out.append(metric)
     if task.requires.ordered and task.kind == "path":
@@ -166,8 +162,7 @@ def _minimise(ev: Evaluator, names: list[str], bounds: list[tuple[float, float]]
     xs, fs = np.concatenate(archive_x), np.concatenate(archive_f)
     chosen = _distinct_best(xs, fs, bounds, best)
     if not chosen:
-        raise KinematikaError("assembly", "no design of the intervals completes its cycle and meets the "
-                              "requirements", "--vary")
+        raise KinematikaError("assembly", "synthesis-no-design", "--vary", requirements=len(limits))
     designs = [{n: float(xs[i, k]) for k, n in enumerate(names)} for i in chosen]
     return MetricSynthesis(names, designs, [float(fs[i]) for i in chosen], len(fs), objective, history)
 
@@ -212,13 +207,12 @@ def function_targets(expression: str, over: tuple[float, float], points: int) ->
         expr = parse(expression)
         unknown = expr.names() - {"x", "pi"}
         if unknown:
-            raise ExpressionError(f"in {expression!r}: unknown name {sorted(unknown)[0]!r} (the function "
-                                  "is of x, the input's increment)")
+            raise ExpressionError("function-unknown-name", source=repr(expression), name=sorted(unknown)[0])
         with np.errstate(all="ignore"):
             y = np.broadcast_to(evaluate(expr, {"x": x}, Arrays({})), x.shape)
     except ExpressionError as err:
-        raise KinematikaError("usage", str(err), "--target-function") from None
+        raise KinematikaError("usage", err.said, "--target-function") from None
     if not np.isfinite(y).all():
-        raise KinematikaError("usage", f"{expression!r} is not finite over {low:g} to {high:g}",
-                              "--target-function")
+        raise KinematikaError("usage", "function-not-finite", "--target-function", source=repr(expression),
+                              low=float(low), high=float(high))
     return "".join(f"{a!r},{b!r}\n" for a, b in zip(x.tolist(), y.tolist()))

@@ -102,7 +102,7 @@ def line_of(model: Model, body: str) -> tuple[str, str]:
     """A body's line: from its first point to its second (as `motion_error` measures a pose)."""
     points = model.bodies[body].points
     if len(points) < 2:
-        raise KinematikaError("usage", f"body {body!r} needs two points to have a direction", "--output")
+        raise KinematikaError("usage", "body-needs-two-points", "--output", body=body)
     return points[0], points[1]
 
 

@@ -89,8 +89,8 @@ class FourBarTask:
             return "rocker"
         if self.task.body == self.roles.coupler:
             return "coupler"
-        raise KinematikaError("usage", f"the output {self.task.body!r} is not the four-bar's rocker "
-                              f"({self.roles.rocker}) or coupler ({self.roles.coupler})", "--output")
+        raise KinematikaError("usage", "output-not-rocker-or-coupler", "--output", output=self.task.body,
+                              rocker=self.roles.rocker, coupler=self.roles.coupler)
 
     # the search's variables ---------------------------------------------------------------
     @property

@@ -103,7 +103,7 @@ class Task:
 def parse_objective(text: str) -> str:
     """`--objective`: sse or max."""
     if text not in OBJECTIVES:
-        raise KinematikaError("usage", f"--objective is sse or max, got {text!r}", "--objective")
+        raise KinematikaError("usage", "objective-form", "--objective", got=repr(text))
     return text
 
 
@@ -114,16 +114,15 @@ def parse_timing(text: Optional[str]) -> Optional[Timing]:
     joint, eq, start = text.partition("=")
     joint = joint.strip()
     if not joint:
-        raise KinematikaError("usage", f"--timing expects JOINT or JOINT=START, got {text!r}", "--timing")
+        raise KinematikaError("usage", "timing-form", "--timing", got=repr(text))
     if not eq:
         return Timing(joint)
     try:
         value = float(start)
     except ValueError:
-        raise KinematikaError("usage", f"--timing {joint}=START: START must be a number, got {start!r}",
-                              "--timing") from None
+        raise KinematikaError("usage", "timing-start-number", "--timing", joint=joint, got=repr(start)) from None
     if not math.isfinite(value):
-        raise KinematikaError("usage", f"--timing {joint}=START: START must be finite", "--timing")
+        raise KinematikaError("usage", "timing-start-finite", "--timing", joint=joint)
     return Timing(joint, value)
 
 
@@ -143,12 +142,11 @@ def parse_requirements(texts: list[str]) -> Requirements:
             except ValueError:
                 deg = math.nan
             if not 0 < deg < 90:
-                raise KinematikaError("usage", f"--require transmission=DEG: DEG is an angle between 0 "
-                                      f"and 90 degrees, got {value!r}", "--require")
+                raise KinematikaError("usage", "require-transmission-angle", "--require", got=repr(value))
             transmission = deg
         else:
-            raise KinematikaError("usage", f"unknown requirement {text!r}; requirements: "
-                                  f"{', '.join(REQUIREMENTS)}", "--require")
+            raise KinematikaError("usage", "requirement-unknown", "--require", requirement=text,
+                                  requirements=list(REQUIREMENTS))
     return Requirements(crank_rocker, ordered, transmission)
 
 
@@ -161,8 +159,7 @@ def parse_output_zero(text: Optional[str]) -> Optional[str | float]:
     except ValueError:
         value = math.nan
     if not math.isfinite(value):
-        raise KinematikaError("usage", f"--output-zero is 'free' or an angle in degrees, got {text!r}",
-                              "--output-zero")
+        raise KinematikaError("usage", "output-zero-form", "--output-zero", got=repr(text))
     return value
 
 
@@ -182,42 +179,38 @@ def read_targets(kind: str, name: str, text: str, timing: Optional[Timing], opti
     need, optional = columns_of(kind, timing is not None)
     header, rows, lines = _rows(name, text, option)
     width = len(rows[0]) if rows else 0
+    reads = f"{','.join(need)}[,{','.join(optional)}]"         # the task's columns, as a header writes them
     if header is None:
         allowed = need + optional
         if width < len(need) or width > len(allowed):
-            raise KinematikaError("usage", f"{name}: {width} columns; this task reads "
-                                  f"{','.join(need)}[,{','.join(optional)}]", option)
+            raise KinematikaError("usage", "target-columns-count", option, name=name, count=width, reads=reads)
         header = allowed[:width]
     else:
         unknown = [h for h in header if h not in need + optional]
         if unknown:
-            why = " (give --timing JOINT to use it)" if unknown[0] == "input" else ""
-            raise KinematikaError("usage", f"{name}: column {unknown[0]!r} is not read by this task{why}; "
-                                  f"it reads {','.join(need)}[,{','.join(optional)}]", option)
+            raise KinematikaError("usage", "target-column-unread", option, name=name, column=unknown[0],
+                                  timing=unknown[0] == "input", reads=reads)
         missing = [h for h in need if h not in header]
         if missing:
-            raise KinematikaError("usage", f"{name}: no column {missing[0]!r} (this task reads "
-                                  f"{','.join(need)}[,{','.join(optional)}])", option)
+            raise KinematikaError("usage", "target-column-missing", option, name=name, column=missing[0], reads=reads)
     table = np.array(rows, dtype=float)
     out = {h: table[:, i] for i, h in enumerate(header)}
     if len(table) < MIN_TARGETS:
-        raise KinematikaError("usage", f"{name}: {len(table)} target; synthesis needs at least "
-                              f"{MIN_TARGETS}", option)
+        raise KinematikaError("usage", "targets-too-few", option, name=name, count=len(table), least=MIN_TARGETS)
     weights = out.get("weight")
     if weights is not None and not (weights > 0).all():
         k = int(np.argmin(weights > 0))
-        raise KinematikaError("usage", f"{name}, line {lines[k]}: a weight must be positive", option)
+        raise KinematikaError("usage", "target-weight-positive", option, name=name, line=lines[k])
     series = out.get("input") if kind != "function" else out["x"]
     what = "input" if kind != "function" else "x"
     if series is not None:
         if kind != "function" and series[0] != 0:
-            raise KinematikaError("usage", f"{name}, line {lines[0]}: the first target's input is 0 (the "
-                                  "inputs count from the first target)", option)
+            raise KinematikaError("usage", "target-first-input", option, name=name, line=lines[0])
         steps = np.diff(series)
         if (steps <= 0).any():
             k = int(np.argmax(steps <= 0)) + 1
-            raise KinematikaError("usage", f"{name}, line {lines[k]}: the {what} values must increase "
-                                  f"({series[k - 1]:g} then {series[k]:g})", option)
+            raise KinematikaError("usage", "target-inputs-increase", option, name=name, line=lines[k], column=what,
+                                  before=float(series[k - 1]), after=float(series[k]))
     return out
 
 
@@ -236,19 +229,19 @@ def _rows(name: str, text: str, option: str) -> tuple[Optional[list[str]], list[
             if not rows and header is None:
                 header = [c.lower() for c in cells]
                 if len(set(header)) != len(header) or not all(header):
-                    raise KinematikaError("usage", f"{name}, line {i + 1}: each column named once", option) from None
+                    raise KinematikaError("usage", "target-header-twice", option, name=name, line=i + 1) from None
                 continue
-            raise KinematikaError("usage", f"{name}, line {i + 1}: expected numbers, got {row!r}", option) from None
+            raise KinematikaError("usage", "table-not-numbers", option, name=name, line=i + 1, got=repr(row)) from None
         if not all(map(math.isfinite, numbers)):
-            raise KinematikaError("usage", f"{name}, line {i + 1}: expected finite numbers", option)
+            raise KinematikaError("usage", "target-not-finite", option, name=name, line=i + 1)
         width = len(header) if header is not None else (len(rows[0]) if rows else len(numbers))
         if len(numbers) != width:
-            raise KinematikaError("usage", f"{name}, line {i + 1}: {len(numbers)} values where the file has "
-                                  f"{width} columns", option)
+            raise KinematikaError("usage", "target-row-width", option, name=name, line=i + 1, count=len(numbers),
+                                  columns=width)
         rows.append(numbers)
         lines.append(i + 1)
     if not rows:
-        raise KinematikaError("usage", f"{name} holds no rows of numbers", option)
+        raise KinematikaError("usage", "table-empty", option, name=name)
     return header, rows, lines
 
 
