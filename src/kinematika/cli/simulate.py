@@ -127,7 +127,7 @@ def _animation_format(path: Path) -> None:
     from ..errors import KinematikaError
 
     if path.suffix.lower().lstrip(".") not in FORMATS:
-        raise KinematikaError("usage", f"cannot write {path.name!r}: give a .gif or .mp4 file", "--animate")
+        raise KinematikaError("usage", "animation-file-type", "--animate", name=repr(path.name))
 
 
 def _animate(result: Any, path: Path, model: Any, progress: bool) -> None:
