@@ -145,7 +145,7 @@ def test_symbols_need_numbers(tmp_path):
     model.write_text(STOPPING.replace("r: 0.1", "r: null"), encoding="utf-8")
     code, out, _ = run("simulate", model, "--time", 1, "--json")
     error = json.loads(out)["error"]
-    assert code == 2 and error["where"] == "parameters" and "give a value to r" in error["message"]
+    assert code == 2 and error["where"] == "parameters" and "give r a value" in error["message"]
     code, out, _ = run("simulate", model, "--time", 0.5, "--steps", 2, "--set", "r=0.2", "--json")
     assert code == 0 and json.loads(out)["points"]["A@crank"]["position"][0] == [0.2, 0.0]
 
@@ -165,3 +165,33 @@ def test_an_output_that_cannot_be_written_is_said_before_the_motion_is_followed(
     code, out, _ = run("simulate", TRAILER, "--time", 1, option, tmp_path / "missing" / name, "--json")
     error = json.loads(out)["error"]
     assert code == 2 and (error["kind"], error["where"]) == ("output", option)
+
+
+def test_a_stop_is_said_in_the_readers_language(tmp_path):
+    """The errors of a motion in time are catalogue messages: the time written with the
+    language's decimal sign, the course's term (punto muerto, punt mort, puntu hil), the place
+    the same in every language, and a nested reason (a driver's rate at t = 1) said in the same
+    language as the sentence around it."""
+    from kinematika.errors import speaking
+
+    with pytest.raises(SimulationStopped) as stop:
+        run_simulation(EXAMPLES / "seed_c5_2_1_tricycle.yaml", time=1.0, steps=10)
+    dead = {"en": ("dead point", "0.848528"), "es": ("punto muerto", "0,848528"),
+            "ca": ("punt mort", "0,848528"), "eu": ("puntu hil", "0,848528")}
+    for lang, words in dead.items():
+        with speaking(lang):
+            error = stop.value.as_json()["error"]
+        assert (error["kind"], error["where"]) == ("singular", "simulate")
+        assert all(w in error["message"] for w in words), (lang, error["message"])
+    model = tmp_path / "crank.yaml"
+    model.write_text(STOPPING, encoding="utf-8")
+    with pytest.raises(SimulationStopped) as stop:
+        run_simulation(model, time=2, steps=20)
+    starts = {"en": "at t = 1 s: the rate's derivative in time is not a finite real number",
+              "es": "en t = 1 s: la derivada en el tiempo de la velocidad impuesta no es un número real finito",
+              "ca": "a t = 1 s: la derivada en el temps de la velocitat imposada no és un nombre real finit",
+              "eu": "t = 1 s unean: ezarritako abiaduraren denborarekiko deribatua ez da zenbaki erreal finitu bat"}
+    for lang, start in starts.items():
+        with speaking(lang):
+            assert stop.value.message.startswith(start), (lang, stop.value.message)
+            assert stop.value.where == "drivers[0]"

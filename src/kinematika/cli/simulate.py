@@ -10,7 +10,7 @@ import typer
 
 from ..limits import SIMULATE_STEPS
 from ..text import shown
-from .app import AssemblyOpt, JsonOpt, ModelArg, MoveOpt, SetOpt, app, how
+from .app import AssemblyOpt, JsonOpt, MessagesOpt, ModelArg, MoveOpt, SetOpt, app, how, messages
 from .shared import fail, guarded, options_named, output_file, write_stdout, writing
 
 
@@ -32,13 +32,14 @@ def simulate(model: Path = ModelArg,
              fmt: Optional[str] = typer.Option(None, "--format", help="the format of -o: json, csv, npz "
                                                "(numpy) or parquet (needs pyarrow)"),
              sets: Optional[list[str]] = SetOpt, moves: Optional[list[str]] = MoveOpt,
-             assembly: Optional[int] = AssemblyOpt,
+             assembly: Optional[int] = AssemblyOpt, lang: Optional[str] = MessagesOpt,
              ) -> None:
     """Positions, velocities and accelerations in time: the motion integrated from the drawn
     configuration (drivers as written, or expressions in the parameter t), for mechanisms whose
     joints constrain velocities only (knife edges, discs rolling on a plane) and any other."""
     from .run import _format
 
+    messages(lang, as_json)
     kind = guarded(as_json, lambda: _format(output, fmt))
     if animation is not None:
         guarded(as_json, lambda: _animation_format(animation))
@@ -127,7 +128,7 @@ def _animation_format(path: Path) -> None:
     from ..errors import KinematikaError
 
     if path.suffix.lower().lstrip(".") not in FORMATS:
-        raise KinematikaError("usage", f"cannot write {path.name!r}: give a .gif or .mp4 file", "--animate")
+        raise KinematikaError("usage", "animation-file-type", "--animate", name=repr(path.name))
 
 
 def _animate(result: Any, path: Path, model: Any, progress: bool) -> None:

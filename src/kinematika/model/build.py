@@ -426,7 +426,7 @@ class _Builder:
         if raw is None:
             return None
         if raw.steps < 1:
-            raise KinematikaError("schema", "steps must be at least 1", "simulate.steps")
+            raise KinematikaError("schema", "steps-at-least-one", "simulate.steps")
         return Simulate(self.expr(raw.time, "simulate.time"), raw.steps)
 
 

@@ -15,7 +15,7 @@ from typing import Any, Optional
 import numpy as np
 
 from .. import limits
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num
 from ..sweep.plan import values_per_row
 
 DEFAULT_STEPS = 200
@@ -58,29 +58,33 @@ def make_clock(model: Any, start: float, time: Optional[float] = None, steps: Op
             try:
                 time = float(evaluate(section.time, numeric_parameters(model), Numeric()))
             except (ExpressionError, TypeError, ValueError) as err:
-                raise KinematikaError("schema", f"the simulation's time cannot be evaluated: {err}",
-                                      "simulate.time") from None
+                raise KinematikaError("schema", "simulate-time-not-evaluated", "simulate.time",
+                                      problem=err.said if isinstance(err, ExpressionError) else str(err)) from None
         elif default_time is not None:
             time = default_time
         else:
-            raise KinematikaError("schema", "how long to follow the motion: give --time SECONDS (or "
-                                  "a `simulate: {time: ...}` section in the model)", "simulate.time")
+            raise KinematikaError("schema", "simulate-time-missing", "simulate.time")
     if steps is None:
         steps = section.steps if section is not None else DEFAULT_STEPS
     if isinstance(time, bool) or not isinstance(time, numbers.Real) or not math.isfinite(time) or time <= 0:
-        raise KinematikaError("schema", f"the time must be a positive number of seconds, got {time!r}",
-                              "simulate.time")
+        raise KinematikaError("schema", "simulate-time-positive", "simulate.time", got=_written(time))
     if isinstance(steps, bool) or not isinstance(steps, numbers.Integral):
-        raise KinematikaError("schema", f"steps must be a whole number, got {steps!r}", "simulate.steps")
+        raise KinematikaError("schema", "steps-whole", "simulate.steps", got=repr(steps))
     if not 1 <= steps <= MAX_STEPS:
-        raise KinematikaError("schema", f"steps must be between 1 and {MAX_STEPS}, got {steps}",
-                              "simulate.steps")
+        raise KinematikaError("schema", "steps-range", "simulate.steps", limit=MAX_STEPS, got=int(steps))
     per_row = values_per_row(model)
     if (steps + 1) * per_row > limits.SWEEP_VALUES:
-        raise KinematikaError("schema", f"{steps} steps of {per_row} values each are more than a "
-                              f"simulation holds ({limits.SWEEP_VALUES} values): take at most "
-                              f"{max(limits.SWEEP_VALUES // per_row - 1, 1)} steps", "simulate.steps")
+        raise KinematikaError("schema", "simulate-steps-too-many", "simulate.steps", steps=int(steps),
+                              per_row=per_row, limit=limits.SWEEP_VALUES,
+                              most=max(limits.SWEEP_VALUES // per_row - 1, 1))
     if not math.isfinite(start + float(time)) or float(time) <= 1e-12 * max(1.0, abs(start)):
-        raise KinematikaError("schema", f"the time {time!r} s is too short to follow from t = {start:g} s",
-                              "simulate.time")
+        raise KinematikaError("schema", "simulate-time-too-short", "simulate.time", time=_written(time),
+                              start=float(start))
     return Clock(float(start), float(time), int(steps))
+
+
+def _written(value: Any) -> Any:
+    """A time as a message writes it: a number in the language's signs, else as Python shows it."""
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        return Num(float(value), ".6g")
+    return repr(value)

@@ -39,8 +39,10 @@ class Projection:
             try:
                 part = j.kind.holonomic(inst, geos[j.id], inst.ref)
             except KinematikaError as err:
-                raise KinematikaError(err.kind, err.message.replace("a sweep cannot", "a simulation cannot"),
-                                      err.where) from None
+                if err.said.key != "sweep-velocity-only":
+                    raise
+                raise KinematikaError(err.kind, "simulate-velocity-only", err.where, kind=err.said.args["kind"],
+                                      dim=err.said.args["dim"]) from None
             rows = [i for i, w in enumerate(wheres) if w == j.where and not drivers[i]]
             self.parts.append((part, rows))
 
@@ -82,7 +84,7 @@ class Projection:
         column = np.where(translation, self.scale, 1.0)
         drift = self.size(q)
         if not math.isfinite(drift):
-            raise KinematikaError("assembly", "the integrated positions are not finite numbers", "joints")
+            raise KinematikaError("assembly", "simulate-positions-not-finite", "joints")
         for _ in range(ITERATIONS):
             phi = self.residual(q)
             if float(np.abs(phi).max(initial=0.0)) <= TOLERANCE * self.scale:
@@ -93,9 +95,7 @@ class Projection:
             if not np.isfinite(step).all():
                 break
             q = q.stepped(step * column, unknowns)
-        raise KinematikaError("assembly", "the integrated positions cannot be brought back onto the "
-                              "joints' position conditions (the motion has left what they allow)",
-                              "joints")
+        raise KinematikaError("assembly", "simulate-projection-fails", "joints")
 
     def keep(self, q: Any) -> None:
         """Record the continuous angles (a rolling pair's line of centres) of the poses `q`."""

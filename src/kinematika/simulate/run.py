@@ -24,7 +24,7 @@ import numpy as np
 from .. import limits
 from ..engine.instant import instantiate
 from ..engine.system import InstantSolver
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Names, Num, Said
 from ..model.model import Model
 from ..sweep.coincident import coincide
 from ..sweep.poses import moved_geometry, moved_instant
@@ -56,7 +56,7 @@ class SimulationStopped(KinematikaError):
     (`result`, a `SimulationResult` whose `stopped` is this error) and the model simulated."""
 
     def __init__(self, err: KinematikaError, result: SimulationResult, model: Model) -> None:
-        super().__init__(err.kind, err.message, err.where)
+        super().__init__(err.kind, err.said, err.where)
         self.result, self.model = result, model
         result.stopped = self
 
@@ -122,8 +122,8 @@ class Simulator:
         try:
             solver.prepare()
         except np.linalg.LinAlgError:
-            raise KinematikaError("singular", f"at t = {t:.6g} s the velocity equations cannot be "
-                                  "solved (their matrix is not made of finite numbers)", "simulate") from None
+            raise KinematikaError("singular", "simulate-at", "simulate", at=Num(t, ".6g"),
+                                  what=Said("simulate-velocity-matrix")) from None
         return solver
 
     def rates(self, t: float, y: np.ndarray) -> np.ndarray:
@@ -134,12 +134,10 @@ class Simulator:
         self.evaluations += 1
         try:
             if self.evaluations > limits.SIMULATE_EVALUATIONS:
-                raise KinematikaError(
-                    "assembly", f"the motion needs more than {limits.SIMULATE_EVALUATIONS} velocity solutions "
-                    "to be followed (limits.SIMULATE_EVALUATIONS): it is too stiff (a part that settles much "
-                    "faster than the rest moves) or too nearly singular", "simulate")
+                raise KinematikaError("assembly", "simulate-too-many-evaluations", "simulate",
+                                      limit=limits.SIMULATE_EVALUATIONS)
             if not np.isfinite(y).all():
-                raise KinematikaError("assembly", "the integrated positions are not finite numbers", "simulate")
+                raise KinematikaError("assembly", "simulate-positions-not-finite", "simulate")
             solver = self.engine_at(t, self.state.poses(y, self.aux))
             twists = solver.solve_linear(solver.b_v, check=True)
         except KinematikaError as err:
@@ -167,8 +165,8 @@ class Simulator:
         """Follow the motion over `time` seconds in `steps` rows (see `run_simulation`)."""
         method = method or DEFAULT_METHOD
         if method not in METHODS:
-            raise KinematikaError("usage", f"unknown method {method!r} (scipy's solve_ivp methods: "
-                                  f"{', '.join(METHODS)})", "--method")
+            raise KinematikaError("usage", "simulate-unknown-method", "--method", method=method,
+                                  methods=Names(METHODS))
         clock = make_clock(self.model, self.timing.start, time, steps, self.default_time)
         rows = Rows(self, clock)
         report = reporter(progress, len(clock.times), "simulating")
@@ -230,9 +228,8 @@ class Simulator:
                 continue
             if sol.status == 1:
                 at = float(sol.t_events[0][0])
-                return KinematikaError("singular", f"the motion reaches a dead point at t = {at:.6g} s: the "
-                                       f"velocities cannot be found past it (the constraint Jacobian's condition "
-                                       f"number reaches {DEAD_POINT:.0e})", "simulate")
+                return KinematikaError("singular", "simulate-dead-point", "simulate", at=Num(at, ".6g"),
+                                       condition=Num(DEAD_POINT, ".0e"))
             return self._failed(sol.message)
         return None
 
@@ -241,10 +238,10 @@ class Simulator:
         its time), or the integrator's own message."""
         if self.failure is not None:
             err, _ = self.failure
-            return KinematikaError(err.kind, f"the motion cannot be followed past t = {self.reached:.6g} s: "
-                                   f"{err.message}", err.where or "simulate")
-        return KinematikaError("assembly", f"the motion cannot be followed past t = {self.reached:.6g} s: "
-                               f"the integrator stopped ({message})", "simulate")
+            return KinematikaError(err.kind, "simulate-not-followed", err.where or "simulate",
+                                   at=Num(self.reached, ".6g"), why=err.said)
+        return KinematikaError("assembly", "simulate-not-followed", "simulate", at=Num(self.reached, ".6g"),
+                               why=Said("simulate-integrator-stopped", message=message))
 
 
 class Rows:
@@ -283,7 +280,7 @@ class Rows:
             solver = sim.engine_at(t, poses, accelerations=True)
             motion = solver.solve()
         except KinematikaError as err:
-            said = err.message if err.message.startswith("at t =") else f"at t = {t:.6g} s: {err.message}"
+            said = err.said if err.said.key == "simulate-at" else Said("simulate-at", at=Num(t, ".6g"), what=err.said)
             raise KinematikaError(err.kind, said, err.where) from None
         self.store(self.done, t, poses, solver, motion, drift)
 
@@ -341,8 +338,7 @@ def at_numbers(model: Model) -> tuple[Model, list[str]]:
         return model, []
     missing = [n for n in symbols if n not in model.draw_at]
     if missing:
-        raise KinematikaError("schema", f"a simulation needs numbers: give a value to {', '.join(missing)} "
-                              "(--set, or the model's draw_at)", "parameters")
+        raise KinematikaError("schema", "needs-draw-at", "parameters", what="simulate", names=Names(missing))
     from ..model.overrides import with_parameters
 
     values = {n: repr(float(model.draw_at[n])) for n in symbols}

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Iterator
 
 from ..algebra.backend import Numeric
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Names, Num, Said
 from ..expressions import Expr, ExpressionError, evaluate, parse
 from ..model.model import Model, Parameter
 from ..model.overrides import numeric_parameters
@@ -56,12 +56,13 @@ class Timing:
             try:
                 env[name] = evaluate(_written(self.model.parameters[name]), env, _NUMERIC)
             except ExpressionError as err:
-                raise KinematikaError("schema", f"at t = {t:.6g} s: {err}", f"parameters.{name}") from None
+                raise KinematikaError("schema", "simulate-at", f"parameters.{name}", at=Num(t, ".6g"),
+                                      what=err.said) from None
         for name, (rate, where) in (self.rates if accelerations else {}).items():
             env[name] = rate(t)
             if not math.isfinite(env[name]):
-                raise KinematikaError("schema", f"at t = {t:.6g} s: the rate's derivative in time is not "
-                                      "finite (a square root or a logarithm at zero?)", where)
+                raise KinematikaError("schema", "simulate-at", where, at=Num(t, ".6g"),
+                                      what=Said("simulate-rate-not-finite"))
         return env
 
 
@@ -75,8 +76,7 @@ def timing(model: Model) -> Timing:
     start = 0.0
     if TIME in params:
         if TIME not in numbers:
-            raise KinematikaError("schema", "the time t needs a value: the drawn configuration's "
-                                  "time (usually 0)", f"parameters.{TIME}")
+            raise KinematikaError("schema", "simulate-time-needs-value", f"parameters.{TIME}")
         start = numbers[TIME]
     out = Timing(model, start, [n for n in _ordered(params, timed) if n != TIME])
     taken = set(params)
@@ -142,9 +142,7 @@ def _only_in_rates(model: Model, timed: set[str]) -> None:
     for where, thing in places:
         for place, expr in _expressions(thing, where):
             if expr.names() & timed:
-                raise KinematikaError("schema", "the time t may be used only in drivers' rates (a rate "
-                                      "that changes in time); here it would move the mechanism by "
-                                      "itself", place)
+                raise KinematikaError("schema", "simulate-time-only-in-rates", place)
 
 
 def _expressions(thing: Any, where: str) -> Iterator[tuple[str, Expr]]:
@@ -172,7 +170,8 @@ def _names(p: Parameter) -> set[str]:
 def _written(p: Parameter) -> Expr:
     """A parameter's expression (a simulated model's parameters all have one)."""
     if p.value is None:
-        raise KinematikaError("schema", f"parameter {p.name!r} needs a value", f"parameters.{p.name}")
+        raise KinematikaError("schema", "needs-draw-at", f"parameters.{p.name}", what="simulate",
+                              names=Names([p.name]))
     return p.value
 
 
@@ -209,7 +208,8 @@ def _derivative(expr: Expr, model: Model, timed: set[str], where: str) -> Callab
                 env[name] = evaluate(_written(params[name]), env, backend)
         rate = sympy.diff(evaluate(expr, env, backend), t)
     except (ExpressionError, TypeError, ValueError) as err:
-        raise KinematikaError("schema", f"the rate's derivative in time cannot be taken: {err}", where) from None
+        raise KinematikaError("schema", "simulate-rate-not-taken", where,
+                              problem=err.said if isinstance(err, ExpressionError) else str(err)) from None
     function = sympy.lambdify(t, rate, modules="numpy")
 
     def derivative(time: float) -> float:
@@ -217,11 +217,11 @@ def _derivative(expr: Expr, model: Model, timed: set[str], where: str) -> Callab
             try:
                 value = complex(function(time))
             except (ArithmeticError, ValueError, TypeError) as err:
-                raise KinematikaError("schema", f"at t = {time:.6g} s: the rate's derivative in time "
-                                      f"cannot be evaluated ({err})", where) from None
+                raise KinematikaError("schema", "simulate-at", where, at=Num(time, ".6g"),
+                                      what=Said("simulate-rate-not-evaluated", problem=str(err))) from None
         if value.imag != 0 or not math.isfinite(value.real):
-            raise KinematikaError("schema", f"at t = {time:.6g} s: the rate's derivative in time is not "
-                                  "a finite real number (a square root of a negative number?)", where)
+            raise KinematikaError("schema", "simulate-at", where, at=Num(time, ".6g"),
+                                  what=Said("simulate-rate-not-real"))
         return value.real
 
     return derivative

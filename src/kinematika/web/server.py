@@ -54,15 +54,16 @@ class Failure(Exception):
     """An answer other than 200: an HTTP status and the contract's error JSON (its message a
     key of the errors' catalogue and its arguments, said in the request's language)."""
 
-    def __init__(self, status: int, kind: str, message: str, where: str = "", /, **args: Any) -> None:
+    def __init__(self, status: int, kind: str, message: "str | Said", where: str = "", /, **args: Any) -> None:
         self.error = KinematikaError(kind, message, where, **args)
         super().__init__(self.error.said)
         self.status = status
+        self.extra: dict[str, Any] = {}        # more of the answer beside the error (`partial` rows)
 
     @property
     def body(self) -> dict:
-        """The contract's error JSON, in the language in use."""
-        return self.error.as_json()
+        """The contract's error JSON, in the language in use (and `extra`)."""
+        return {**self.error.as_json(), **self.extra}
 
 
 def bundled_examples() -> dict[str, str]:
@@ -323,8 +324,8 @@ def _simulate(req: Request) -> tuple[str, Any]:
         _, result = commands.simulate_run(req.model, req.get("time"), req.get("steps"), req.get("method"),
                                           how=req.how)
     except SimulationStopped as err:
-        failure = Failure(400, err.kind, err.message, err.where)
-        failure.body["partial"] = json.loads(b"".join(err.result.json_chunks()))
+        failure = Failure(400, err.kind, err.said, err.where)
+        failure.extra["partial"] = json.loads(b"".join(err.result.json_chunks()))
         raise failure from None
     if req.get("as") == "csv":
         out = io.StringIO(newline="")

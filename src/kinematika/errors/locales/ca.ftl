@@ -731,6 +731,7 @@ index-shape = '{ $index }' no és un índex de sòlid: d’una a quatre lletres 
 ## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
 needs-draw-at = { $what ->
         [move] un moviment
+        [simulate] una simulació
        *[sweep] un escombratge
     } necessita nombres: dona un valor a { $names }, o al model un nombre `draw_at` per a cada símbol
 at-draw-numbers = { $what ->
@@ -789,3 +790,29 @@ target-not-finite = { $name }, línia { $line }: s’esperaven nombres finits
 target-weight-positive = { $name }, línia { $line }: un pes ha de ser positiu
 target-first-input = { $name }, línia { $line }: l’entrada del primer objectiu és 0 (les entrades es compten des del primer objectiu)
 target-inputs-increase = { $name }, línia { $line }: els valors de la columna '{ $column }' han de créixer ({ $before } i després { $after })
+## motion in time (simulate/)
+simulate-time-not-evaluated = no es pot avaluar el temps de la simulació: { $problem }
+simulate-time-missing = quant de temps cal seguir el moviment: dona --time SEGONS (o una secció `simulate: {"{"}time: ...{"}"}` al model)
+simulate-time-positive = el temps ha de ser un nombre positiu de segons, i hi ha { $got }
+simulate-steps-too-many = { $steps } passos de { $per_row } valors cadascun passen del que hi cap en una simulació ({ $limit } valors): dona’n com a molt { $most }
+simulate-time-too-short = el temps { $time } s és massa curt per seguir el moviment des de t = { $start } s
+simulate-time-needs-value = el temps t necessita un valor: el temps de la configuració dibuixada (normalment 0)
+simulate-time-only-in-rates = el temps t només pot aparèixer en les velocitats imposades per les dades de moviment (una velocitat que canvia en el temps); aquí mouria el mecanisme per si sol
+simulate-unknown-method = mètode desconegut '{ $method }' (els mètodes de scipy.integrate.solve_ivp: { $methods })
+simulate-at = a t = { $at } s: { $what }
+simulate-rate-not-taken = no es pot prendre la derivada en el temps de la velocitat imposada: { $problem }
+simulate-rate-not-evaluated = no es pot avaluar la derivada en el temps de la velocitat imposada ({ $problem })
+simulate-rate-not-real = la derivada en el temps de la velocitat imposada no és un nombre real finit (l’arrel quadrada d’un nombre negatiu?)
+simulate-rate-not-finite = la derivada en el temps de la velocitat imposada no és finita (una arrel quadrada o un logaritme a zero?)
+simulate-velocity-matrix = no es poden resoldre les equacions de velocitat (la seva matriu no està feta de nombres finits)
+simulate-too-many-evaluations = el moviment necessita més de { $limit } solucions de velocitat per seguir-lo (limits.SIMULATE_EVALUATIONS): és massa rígid (un element s’assenta molt més de pressa que no pas es mou la resta) o és massa a prop d’una configuració singular
+simulate-dead-point = el moviment arriba a un punt mort a t = { $at } s: més enllà no es poden trobar les velocitats (el nombre de condició del jacobià de restriccions arriba a { $condition })
+simulate-not-followed = no es pot seguir el moviment més enllà de t = { $at } s: { $why }
+simulate-integrator-stopped = l’integrador s’ha aturat ({ $message })
+simulate-positions-not-finite = les posicions integrades no són nombres finits
+simulate-projection-fails = les posicions integrades no es poden tornar a les condicions de posició dels enllaços (el moviment ha sortit del que permeten)
+simulate-velocity-only = una simulació no pot seguir un enllaç `{ $kind }`{ $dim ->
+        [3] {" "}en 3D
+       *[other] {""}
+    }: la seva condició només és de velocitats, així que les posicions depenen del camí recorregut
+animation-file-type = no es pot escriure { $name }: dona un fitxer .gif o .mp4

@@ -645,6 +645,7 @@ index-shape = '{ $index }' is not a body's index: one to four letters or digits 
 ## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
 needs-draw-at = { $what ->
         [move] a move
+        [simulate] a simulation
        *[sweep] a sweep
     } needs numbers: give { $names } a value, or the model a `draw_at` number for each symbol
 at-draw-numbers = { $what ->
@@ -703,3 +704,29 @@ target-not-finite = { $name }, line { $line }: expected finite numbers
 target-weight-positive = { $name }, line { $line }: a weight must be positive
 target-first-input = { $name }, line { $line }: the first target's input is 0 (the inputs count from the first target)
 target-inputs-increase = { $name }, line { $line }: the { $column } values must increase ({ $before } then { $after })
+## motion in time (simulate/)
+simulate-time-not-evaluated = the simulation's time cannot be evaluated: { $problem }
+simulate-time-missing = how long to follow the motion: give --time SECONDS (or a `simulate: {"{"}time: ...{"}"}` section in the model)
+simulate-time-positive = the time must be a positive number of seconds, got { $got }
+simulate-steps-too-many = { $steps } steps of { $per_row } values each are more than a simulation holds ({ $limit } values): take at most { $most } steps
+simulate-time-too-short = the time { $time } s is too short to follow from t = { $start } s
+simulate-time-needs-value = the time t needs a value: the drawn configuration's time (usually 0)
+simulate-time-only-in-rates = the time t may be used only in drivers' rates (a rate that changes in time); here it would move the mechanism by itself
+simulate-unknown-method = unknown method '{ $method }' (the methods of scipy.integrate.solve_ivp: { $methods })
+simulate-at = at t = { $at } s: { $what }
+simulate-rate-not-taken = the rate's derivative in time cannot be taken: { $problem }
+simulate-rate-not-evaluated = the rate's derivative in time cannot be evaluated ({ $problem })
+simulate-rate-not-real = the rate's derivative in time is not a finite real number (a square root of a negative number?)
+simulate-rate-not-finite = the rate's derivative in time is not finite (a square root or a logarithm at zero?)
+simulate-velocity-matrix = the velocity equations cannot be solved (their matrix is not made of finite numbers)
+simulate-too-many-evaluations = the motion needs more than { $limit } velocity solutions to be followed (limits.SIMULATE_EVALUATIONS): it is too stiff (a part that settles much faster than the rest moves) or too nearly singular
+simulate-dead-point = the motion reaches a dead point at t = { $at } s: the velocities cannot be found past it (the constraint Jacobian's condition number reaches { $condition })
+simulate-not-followed = the motion cannot be followed past t = { $at } s: { $why }
+simulate-integrator-stopped = the integrator stopped ({ $message })
+simulate-positions-not-finite = the integrated positions are not finite numbers
+simulate-projection-fails = the integrated positions cannot be brought back onto the joints' position conditions (the motion has left what they allow)
+simulate-velocity-only = a simulation cannot follow a { $kind } joint{ $dim ->
+        [3] {" "}in 3D
+       *[other] {""}
+    }: its condition is on velocities only, so the positions depend on the path taken
+animation-file-type = cannot write { $name }: give a .gif or .mp4 file

@@ -731,6 +731,7 @@ index-shape = '{ $index }' no es un índice de sólido: de una a cuatro letras o
 ## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
 needs-draw-at = { $what ->
         [move] un movimiento
+        [simulate] una simulación
        *[sweep] un barrido
     } necesita números: da un valor a { $names }, o al modelo un número `draw_at` para cada símbolo
 at-draw-numbers = { $what ->
@@ -789,3 +790,29 @@ target-not-finite = { $name }, línea { $line }: se esperaban números finitos
 target-weight-positive = { $name }, línea { $line }: un peso tiene que ser positivo
 target-first-input = { $name }, línea { $line }: la entrada del primer objetivo es 0 (las entradas se cuentan desde el primer objetivo)
 target-inputs-increase = { $name }, línea { $line }: los valores de la columna '{ $column }' tienen que crecer ({ $before } y luego { $after })
+## motion in time (simulate/)
+simulate-time-not-evaluated = no se puede evaluar el tiempo de la simulación: { $problem }
+simulate-time-missing = cuánto tiempo seguir el movimiento: da --time SEGUNDOS (o una sección `simulate: {"{"}time: ...{"}"}` en el modelo)
+simulate-time-positive = el tiempo tiene que ser un número positivo de segundos, y hay { $got }
+simulate-steps-too-many = { $steps } pasos de { $per_row } valores cada uno superan lo que cabe en una simulación ({ $limit } valores): da como mucho { $most } pasos
+simulate-time-too-short = el tiempo { $time } s es demasiado corto para seguir el movimiento desde t = { $start } s
+simulate-time-needs-value = el tiempo t necesita un valor: el tiempo de la configuración dibujada (normalmente 0)
+simulate-time-only-in-rates = el tiempo t solo puede aparecer en las velocidades impuestas por los datos de movimiento (una velocidad que cambia en el tiempo); aquí movería el mecanismo por sí solo
+simulate-unknown-method = método desconocido '{ $method }' (los métodos de scipy.integrate.solve_ivp: { $methods })
+simulate-at = en t = { $at } s: { $what }
+simulate-rate-not-taken = no se puede tomar la derivada en el tiempo de la velocidad impuesta: { $problem }
+simulate-rate-not-evaluated = no se puede evaluar la derivada en el tiempo de la velocidad impuesta ({ $problem })
+simulate-rate-not-real = la derivada en el tiempo de la velocidad impuesta no es un número real finito (¿la raíz cuadrada de un número negativo?)
+simulate-rate-not-finite = la derivada en el tiempo de la velocidad impuesta no es finita (¿una raíz cuadrada o un logaritmo en cero?)
+simulate-velocity-matrix = no se pueden resolver las ecuaciones de velocidad (su matriz no está hecha de números finitos)
+simulate-too-many-evaluations = el movimiento necesita más de { $limit } soluciones de velocidad para seguirse (limits.SIMULATE_EVALUATIONS): es demasiado rígido (una parte se asienta mucho más deprisa de lo que se mueve el resto) o está demasiado cerca de una configuración singular
+simulate-dead-point = el movimiento llega a un punto muerto en t = { $at } s: más allá no se pueden hallar las velocidades (el número de condición del jacobiano de restricciones llega a { $condition })
+simulate-not-followed = no se puede seguir el movimiento más allá de t = { $at } s: { $why }
+simulate-integrator-stopped = el integrador se ha detenido ({ $message })
+simulate-positions-not-finite = las posiciones integradas no son números finitos
+simulate-projection-fails = las posiciones integradas no se pueden devolver a las condiciones de posición de los pares (el movimiento ha salido de lo que permiten)
+simulate-velocity-only = una simulación no puede seguir un par `{ $kind }`{ $dim ->
+        [3] {" "}en 3D
+       *[other] {""}
+    }: su condición es solo de velocidades, así que las posiciones dependen del camino recorrido
+animation-file-type = no se puede escribir { $name }: da un archivo .gif o .mp4

@@ -734,6 +734,7 @@ index-shape = '{ $index }' ez da solido baten indizea: lau letra edo zifra gehie
 ## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
 needs-draw-at = { $what ->
         [move] mugimendu batek
+        [simulate] simulazio batek
        *[sweep] ekorketa batek
     } zenbakiak behar ditu: eman balio bat { $names } parametroei, edo ereduari `draw_at` zenbaki bat ikur bakoitzeko
 at-draw-numbers = { $what ->
@@ -786,3 +787,29 @@ target-not-finite = { $name }, { $line }. lerroa: zenbaki finituak espero ziren
 target-weight-positive = { $name }, { $line }. lerroa: pisu batek positiboa izan behar du
 target-first-input = { $name }, { $line }. lerroa: lehen helburuaren sarrera 0 da (sarrerak lehen helburutik zenbatzen dira)
 target-inputs-increase = { $name }, { $line }. lerroa: '{ $column }' zutabearen balioek gora egin behar dute ({ $before } eta gero { $after })
+## motion in time (simulate/)
+simulate-time-not-evaluated = ezin da simulazioaren denbora ebaluatu: { $problem }
+simulate-time-missing = zenbat denboran jarraitu behar den mugimendua: eman --time SEGUNDOAK (edo `simulate: {"{"}time: ...{"}"}` atal bat ereduan)
+simulate-time-positive = denborak segundo-kopuru positibo bat izan behar du, baina { $got } dago
+simulate-steps-too-many = bakoitza { $per_row } baliokoak diren { $steps } urrats simulazio batean sartzen dena baino gehiago dira ({ $limit } balio): eman gehienez { $most } urrats
+simulate-time-too-short = { $time } s denbora laburregia da mugimendua t = { $start } s unetik jarraitzeko
+simulate-time-needs-value = t denborak balio bat behar du: marraztutako konfigurazioaren denbora (normalean 0)
+simulate-time-only-in-rates = t denbora eragileek ezarritako abiaduretan bakarrik ager daiteke (denboran aldatzen den abiadura bat); hemen mekanismoa berez mugituko luke
+simulate-unknown-method = metodo ezezaguna '{ $method }' (scipy.integrate.solve_ivp funtzioaren metodoak: { $methods })
+simulate-at = t = { $at } s unean: { $what }
+simulate-rate-not-taken = ezin da ezarritako abiaduraren denborarekiko deribatua kalkulatu: { $problem }
+simulate-rate-not-evaluated = ezin da ezarritako abiaduraren denborarekiko deribatua ebaluatu ({ $problem })
+simulate-rate-not-real = ezarritako abiaduraren denborarekiko deribatua ez da zenbaki erreal finitu bat (zenbaki negatibo baten erro karratua?)
+simulate-rate-not-finite = ezarritako abiaduraren denborarekiko deribatua ez da finitua (erro karratu bat edo logaritmo bat zeroan?)
+simulate-velocity-matrix = ezin dira abiadura-ekuazioak ebatzi (haien matrizea ez dago zenbaki finituz osatua)
+simulate-too-many-evaluations = mugimenduak { $limit } abiadura-soluzio baino gehiago behar ditu jarraitua izateko (limits.SIMULATE_EVALUATIONS): zurrunegia da (zati bat gainerakoa mugitzen dena baino askoz azkarrago egonkortzen da) edo singulartasun batetik hurbilegi dago
+simulate-dead-point = mugimendua puntu hil batera iristen da t = { $at } s unean: hortik aurrera ezin dira abiadurak aurkitu (murrizketa-Jacobiarraren baldintza-zenbakia { $condition } izatera iristen da)
+simulate-not-followed = ezin da mugimendua jarraitu t = { $at } s unetik haratago: { $why }
+simulate-integrator-stopped = integratzailea gelditu egin da ({ $message })
+simulate-positions-not-finite = posizio integratuak ez dira zenbaki finituak
+simulate-projection-fails = posizio integratuak ezin dira loturen posizio-baldintzetara itzuli (mugimendua haiek onartzen dutenetik irten da)
+simulate-velocity-only = simulazio batek ezin du `{ $kind }` motako lotura bat jarraitu{ $dim ->
+        [3] {" "}3D-n
+       *[other] {""}
+    }: haren baldintza abiaduretakoa baino ez da, eta, beraz, posizioak egindako bidearen araberakoak dira
+animation-file-type = ezin da { $name } idatzi: eman .gif edo .mp4 fitxategi bat
