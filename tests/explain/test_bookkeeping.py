@@ -118,7 +118,7 @@ def unknowns(sol, ctx, eq, dim) -> tuple[dict, list]:
                 cols += own
     if len(eq.sides) == 1 and marks(eq.target):
         distinct[("target",)] = marks(eq.target)
-        cols += list(np.eye(dim)) if eq.target.dir.code == "?" else []
+        cols += column(sol, ctx, eq, eq.target, dim)       # its magnitude along a known line, or all
     return distinct, cols
 
 

@@ -13,6 +13,9 @@ from tests.conftest import BROWSER_WAIT
 from tests.core.models import four_bar
 
 FREE = yaml.safe_dump(four_bar(drivers=[]))                 # no driver: one degree of freedom left free
+# two drivers for one degree of freedom whose values disagree: a real mobility error
+CONFLICT = yaml.safe_dump(four_bar(drivers=[{"omega": "crank", "value": "w2", "alpha": 0},
+                                            {"omega": "rocker", "value": 1, "alpha": 0}]))
 
 
 def _radians() -> str:
@@ -52,7 +55,7 @@ def test_the_api_says_a_refused_request_in_its_language(client):
     assert refused.status_code == 400
     assert refused.json()["error"] == {"kind": "usage", "where": "nonsense", "message":
                                        "gako ezezaguna 'nonsense' /api/solve helbiderako (onartuak: model, format, "
-                                       "set, move, assembly, lang, symbolic)"}
+                                       "set, move, assembly, lang, symbolic, row)"}
     plain = client.post("/api/solve?lang=ca", content=b"{}", headers={"content-type": "text/plain"})
     assert plain.status_code == 415
     assert plain.json()["error"]["message"] == "envia la petició com a JSON (Content-Type: application/json)"
@@ -69,10 +72,10 @@ def test_the_api_says_a_refused_request_in_its_language(client):
 @pytest.mark.browser
 @pytest.mark.filterwarnings("ignore::kinematika.errors.KinematikaWarning")   # the server's, in its threads
 @pytest.mark.parametrize("lang, words", [
-    ("eu", {"kind": "mugikortasuna", "error": "mekanismoak askatasun-gradu 1 du", "warning": "abisua",
-            "radians": "30 angelua radianetan dago"}),
-    ("ca", {"kind": "mobilitat", "error": "el mecanisme té 1 grau de llibertat", "warning": "avís",
-            "radians": "l’angle 30 és en radiants"})])
+    ("eu", {"kind": "mugikortasuna", "error": "eragileek elkarren kontra egiten dute", "warning": "abisua",
+            "radians": "30 angelua radianetan dago", "missing": "aukeratu sarrera bat", "dof": "ag 1"}),
+    ("ca", {"kind": "mobilitat", "error": "les dades de moviment es contradiuen", "warning": "avís",
+            "radians": "l’angle 30 és en radiants", "missing": "tria una entrada", "dof": "gdl 1"})])
 def test_the_page_shows_a_mobility_error_and_the_radians_warning_in_its_language(browser, server, lang, words,
                                                                                  tmp_path):
     context = browser.new_context(viewport={"width": 1400, "height": 1000})
@@ -83,13 +86,19 @@ def test_the_page_shows_a_mobility_error_and_the_radians_warning_in_its_language
         page.wait_for_function("() => window.kinematika && window.kinematika.state.solution", timeout=BROWSER_WAIT)
         page.get_by_test_id("ui-language").select_option(lang)
         editor = page.get_by_test_id("model-editor")
-        editor.fill(FREE)
+        editor.fill(FREE)                 # a model still being built: a hint of what to add, not an error
+        hint = page.get_by_test_id("missing")
+        hint.wait_for(state="visible")
+        assert words["missing"] in hint.inner_text().lower()
+        assert page.get_by_test_id("dof").inner_text().lower() == words["dof"]
+        assert page.get_by_test_id("error").is_hidden()
+        editor.fill(CONFLICT)
         error = page.get_by_test_id("error")
         page.wait_for_function("(w) => document.querySelector('[data-testid=error]').innerText.includes(w)",
                                arg=words["error"])
         text = error.inner_text().lower()       # the kind is written in capitals (CSS)
         assert error.get_attribute("data-kind") == "mobility"
-        assert words["kind"] in text and "drivers" in text and "degree" not in text
+        assert words["kind"] in text and "drivers" in text and "degree" not in text and hint.is_hidden()
         error.scroll_into_view_if_needed()
         page.screenshot(path=str(tmp_path / f"error-{lang}.png"))
         editor.fill(_radians())

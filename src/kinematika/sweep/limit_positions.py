@@ -135,7 +135,7 @@ def _follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResu
     k, last = 0, plan.steps
     closed = False
     begin: Optional[float] = None
-    chunk = max(64, math.ceil(720.0 / zig.h) + 2) if plan.turns else 4096   # rows looked at once
+    chunk = max(64, math.ceil(720.0 / zig.h) + 2) if plan.turns and zig.h > 0 else 4096   # rows looked at once
     while k <= last:
         rows = np.arange(k, min(last, k + chunk) + 1)
         q = zig.coordinate(zig.travel(rows))

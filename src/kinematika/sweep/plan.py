@@ -93,7 +93,7 @@ def check_travel(amount: float, joint: Joint, scale: float, where: str, what: st
     most = limits.SWEEP_TRAVEL * (360.0 if turns else scale)
     if not abs(amount) <= most:
         raise KinematikaError("schema", "travel-too-far", where, what=what, amount=Num(amount, ".6g"),
-                              most=Num(most, ".6g"), turns=limits.SWEEP_TRAVEL, unit="angle" if turns else "length")
+                              most=Num(most, ".6g"), turns=Num(limits.SWEEP_TRAVEL, ","), unit="angle" if turns else "length")
 
 
 def values_per_row(model: Model) -> int:

@@ -126,7 +126,7 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
                     if status == 200:
                         cache.put(key, (status, media, body))
             except KinematikaError as err:
-                return _error(400, err.as_json())
+                return _error(400, _answered(err))
             except Failure as err:
                 return _failure(err)
             except TimeoutError:
@@ -263,6 +263,16 @@ def _language_of(raw: bytes) -> Optional[str]:
     except (UnicodeDecodeError, ValueError, AttributeError):
         return None
     return lang if lang in LANGS else None
+
+
+def _answered(err: KinematikaError) -> dict:
+    """The error's JSON; a mechanism left free (`mobility-free`) also says its degrees of
+    freedom and the independent conditions its drivers give (`dof`, `conditions`), so the page
+    tells "add an input" from a real error in any language."""
+    body = err.as_json()
+    if err.said.key == "mobility-free":
+        body["error"].update(dof=int(err.said.args["dof"]), conditions=int(err.said.args["conditions"]))
+    return body
 
 
 def _error(status: int, body: dict) -> Response:

@@ -1,7 +1,8 @@
 // The page's calls to the JSON API (see docs/app.md): every answer is the CLI's.
 
 /** An API error: the contract's {kind, message, where} and the HTTP status; `partial`, the
- * rows a simulation computed before it stopped (or null). */
+ * rows a simulation computed before it stopped (or null); `dof` and `conditions`, a
+ * mechanism left free's degrees of freedom and its drivers' conditions (else undefined). */
 export class ApiError extends Error {
   constructor(status, error, partial = null) {
     super(error.message);
@@ -9,6 +10,8 @@ export class ApiError extends Error {
     this.kind = error.kind;
     this.where = error.where || "";
     this.partial = partial;
+    this.dof = error.dof;
+    this.conditions = error.conditions;
   }
 }
 

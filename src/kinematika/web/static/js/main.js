@@ -200,8 +200,8 @@ function showWarnings(list) {
 function stillBuilding(err, sketch) {
   if (!err || err.kind !== "mobility" || !sketch || sketch.problem) return null;
   if (!Object.values(sketch.bodies).some((b) => !b.frame)) return "missing-body";
-  if (!sketch.drivers.length) return "missing-input";
-  return /drivers give/.test(err.message || "") ? "missing-more-input" : null;
+  if (err.dof === undefined) return null;             // drivers that conflict: a real error
+  return sketch.drivers.length ? "missing-more-input" : "missing-input";
 }
 
 /** A hint (not an error) of what to add next; the degrees of freedom as the message says. */
@@ -212,9 +212,8 @@ function showMissing(key, err = null) {
   builder.missing = key;
   builder.say();
   if (!key) return;
-  const said = /(\d+) degrees? of freedom/.exec((err && err.message) || "");
   const dof = $("dof");
-  dof.textContent = t("dof", { n: said && key !== "missing-body" ? said[1] : "–" });
+  dof.textContent = t("dof", { n: err && err.dof !== undefined && key !== "missing-body" ? err.dof : "–" });
   dof.classList.remove("bad");
 }
 
@@ -241,8 +240,7 @@ function showError(err) {
   box.dataset.kind = err.kind || "";
   editor.markLine(errorLine(editor.text, err));
   const dof = $("dof");
-  const said = /(\d+) degrees? of freedom/.exec(err.message || "");
-  dof.textContent = t("dof", { n: said ? said[1] : "?" });
+  dof.textContent = t("dof", { n: err.dof !== undefined ? err.dof : "?" });
   dof.classList.add("bad");
 }
 
