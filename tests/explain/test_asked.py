@@ -145,12 +145,13 @@ def test_an_inflection_circle_asked_alone_is_explained_with_accelerations(tmp_pa
 
 
 def test_a_crowded_acceleration_polygon_is_drawn_step_by_step():
-    """The planetary gears' acceleration polygon would hold more than SPLIT arrows: it is
-    drawn under each step instead (fig.step_a), with no whole polygon at the level's end."""
+    """Jansen's leg's acceleration polygon would hold more than SPLIT arrows: it is drawn
+    under each step instead (fig.step_a), with no whole polygon at the level's end. (The
+    planetary gears' was, until their planets were said once: "the same for each".)"""
     from kinematika.explain.builder import SPLIT
     from kinematika.explain.document import Figure
 
-    _, doc = explained("planetary_gears")
+    _, doc = explained("jansen_leg")
     acc = next(s for s in doc.sections if s.title.key == "sec.accelerations")
     whole = [b for b in acc.blocks if isinstance(b, Figure)]
     steps = [b for s in acc.blocks if isinstance(s, Section) for b in s.blocks if isinstance(b, Figure)]

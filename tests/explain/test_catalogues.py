@@ -18,7 +18,7 @@ from kinematika.questions.centres import FIXED
 SOURCE = Path(explain_package.__file__).resolve().parent
 # keys built at run time from a name (f"kind.{step.kind}" ...): the families and their members
 FAMILIES = {
-    "kind": ["input", "RRR", "RRP", "RPR", "PRP", "other"],
+    "kind": ["input", "RRR", "RRP", "RPR", "PRP", "other", "copy"],
     "joint": list(KINDS) + ["slot_fixed"],                  # every kind of joint has its name (kinds.kind_key)
     "shape": ["circle", "line", "disc", "plane", "curveshape", "camshape"],
     "cond": [k.name for k in KINDS.values() if not k.rolls] + ["slot_fixed"],  # rolling pairs are written out

@@ -15,6 +15,7 @@ from ..solution import Solution
 from .answers import answers_section, curvature_section, relative_rates
 from .checks import checks_section
 from .contacts import contact_section
+from .copies import copies
 from .centres import centres_section
 from .context import Ctx, omega_sym
 from .data import data_section
@@ -39,7 +40,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
                    numbers=body_numbers(sol.model), wording=sol.model.wording)
     doc.sections.append(data_section(ctx, length_unit, accel))
     if ctx.planar:
-        steps = refine(ctx, solution_order(sol))
+        steps = copies(ctx, refine(ctx, solution_order(sol)))
         doc.sections.append(structure_section(ctx, steps))
         placed = position_section(ctx)
         if placed is not None:

@@ -31,6 +31,7 @@ def centres_section(ctx: Ctx) -> Section:
     order = all_centres(ctx.sol)
     found = {frozenset(c.pair): c for c in order}
     made = {}
+    deps: dict[frozenset, list[frozenset]] = {}
     for key in found:
         c = found[key]
         note = CentreNote(c.pair, _clean(ctx, c.value), c.how, list(c.via))
@@ -42,19 +43,25 @@ def centres_section(ctx: Ctx) -> Section:
             x = next(b for b in c.pair if b != welded)
             note.same = {"pair": (x, c.via[1]), "welded": welded,
                          **_clean(ctx, found[frozenset((x, c.via[1]))].value)}
+            deps[key] = [frozenset((x, c.via[1]))]
         elif c.how == "kennedy":
             _kennedy(ctx, note, found, order[:order.index(c)])
         elif c.how == "lines":
             note.via = [_line_reason(ctx, c, kind, name, found) for kind, name in c.lines]
+            deps[key] = [frozenset(p) for kind, name in c.lines if kind == "third"
+                         for p in ((c.pair[0], name), (name, c.pair[1]))]
         elif c.how == "velocities" and c.finite:
             note.witnesses = _witnesses(ctx, c.pair[1], c.pair[0])
             _axles(ctx, note)
             if note.how == "velocities" and len(note.witnesses) < 2:
                 _field(ctx, note)
         made[key] = note
+        if note.how in ("kennedy", "proportional"):
+            a, b = note.pair
+            deps[key] = [frozenset(p) for k in note.via for p in ((a, k), (k, b))]
     asked = {frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target)) for q in ctx.model.questions
              if q.kind == "icr"}
-    for key in _chosen(ctx, made):
+    for key in _chosen(ctx, made, deps, asked):
         sec.blocks.append(made[key])
         if key in asked and made[key].how in ("kennedy", "lines", "weld") and made[key].value.get("point"):
             check = CentreNote(made[key].pair, made[key].value, "check")
@@ -174,22 +181,24 @@ def _point_name(ctx: Ctx, body: str, where) -> str | None:
     return None
 
 
-def _chosen(ctx: Ctx, notes: dict) -> list[frozenset]:
-    """Every pair for small mechanisms; else the frame's pairs and the centres their notes
-    are found from (the lines' third bodies), so that each centre named is explained."""
+def _chosen(ctx: Ctx, notes: dict, deps: dict, asked: set) -> list[frozenset]:
+    """The centres to write: when the questions name centres, those and the centres their
+    notes are found from (the notes give no other: C5-1.4 places the planet's centre from
+    the carrier's, the ring's and the contact's, and says nothing of the other planets');
+    else every pair for small mechanisms, or the frame's pairs and what they are found from,
+    so that each centre named is explained."""
     keys = list(notes)
-    if len(keys) <= MAX_ALL:
+    if asked and not ctx.model.default_questions:
+        wanted = [k for k in keys if k in asked]
+    elif len(keys) <= MAX_ALL:
         return keys
-    wanted = [k for k in keys if ctx.frame in k]
+    else:
+        wanted = [k for k in keys if ctx.frame in k]
     i = 0
     while i < len(wanted):
-        note = notes[wanted[i]]
-        if note.how in ("kennedy", "proportional"):
-            a, b = note.pair
-            for k in note.via:
-                for key in (frozenset((a, k)), frozenset((k, b))):
-                    if key in notes and key not in wanted:
-                        wanted.append(key)
+        for key in deps.get(wanted[i], []):
+            if key in notes and key not in wanted:
+                wanted.append(key)
         i += 1
     return [k for k in keys if k in wanted]
 

@@ -16,6 +16,7 @@ from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, V
 from .group import group_blocks
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
+from .copies import copy_of
 from .kinds import kind_key, knife_edge, pin_only, rolls, turns
 from .order import Step
 from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
@@ -77,6 +78,9 @@ class PlanarSteps:
         builder = {"input": self.input, "RRR": self.rrr, "RRP": self.dyad_rp, "RPR": self.rpr,
                    "PRP": self.prp}.get(step.kind)
         blocks = self.drivers(step)
+        if step.kind == "copy":
+            self.used.update(step.joints)
+            return blocks + self.copied(step) + self.carry(step)
         if step.kind == "other":
             higher = higher_pair_steps(self, step)
             if higher is not None:
@@ -204,6 +208,25 @@ class PlanarSteps:
         side1 = [self.point(pin, k1)] + slide_terms(ctx, lv, k1, body, pin, guide(first), first.id)
         eq = self.equation(self.target(pin, body, known=False), [side1, side2], pin, body)
         return [eq, self.same(body, k1, first)]
+
+    def copied(self, step: Step) -> list:
+        """Bodies that repeat one found before, turned about a fixed centre (the notes' "the
+        same for each planet"): said once each, with the rate they share (`copies`)."""
+        out: list = []
+        for b in step.bodies:
+            c = copy_of(self.ctx, b, sorted(self.known))
+            if c is None:               # cannot happen: the step was made of copies
+                out.append(self.rate(b))
+                continue
+            sym = omega_sym if self.level == "v" else alpha_sym
+            value = self.ctx.omega(b) if self.level == "v" else self.ctx.alpha(b)
+            out.append(msg("copy.same", body=body_(b), original=body_(c.original), centre=point(c.centre),
+                           angle=Value(round(c.angle, 6), "deg"), accel=int(self.level == "a")))
+            out.append(Derived(sym(b), [sym(c.original)], self.ctx.value(value, LEVEL_UNIT[self.level]), b,
+                               "omega" if self.level == "v" else "alpha", not self.ctx.symbolic))
+            self.done.update(self.ctx.point_label(p, b) for p in self.ctx.model.bodies[b].points
+                             if self.ctx.motion_key(p, b) in {self.ctx.motion_key(p, k) for k in self.known})
+        return out
 
     # groups that are not dyads ------------------------------------------------------------
     def other(self, step: Step) -> list:

@@ -157,6 +157,7 @@ kind-RRP = díade RRP
 kind-RPR = díade RPR
 kind-PRP = díade PRP
 kind-other = grup resolt conjuntament
+kind-copy = igual que un sòlid ja resolt
 step-title = Pas { $n }: { $kind } — { $bodies }
 step-fixed = { $bodies } { $bodies_n ->
         [one] està unit
@@ -415,6 +416,13 @@ group-wheel_a = La roda { $joint } no llisca lateralment en cap instant i el seu
        *[other] de { $point }
     } té una part tangencial al pla i una de normal perpendicular al pla, { $w } × { $v }.
 how-translation = (es trasllada)
+copy-same = { $body } té els mateixos enllaços, amb els mateixos sòlids, i el mateix radi que { $original }, i ocupa el seu lloc després d’un gir de { $angle } al voltant { ELISION($centre) ->
+        [vowel] d’{ $centre }
+       *[other] de { $centre }
+    }: el seu moviment és el de { $original }, girat, amb la mateixa { $accel ->
+        [1] acceleració angular
+       *[other] velocitat angular
+    }:
 fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy i perpendiculars a rodes i ranures).
 fig-assur = El punt d’Assur { $point }: les rectes { $l1 } i { $l3 } (a traços) perllongades fins que es tallen; { $point } es pren com a punt de la barra ternària.
 fig-drawn_at = Dibuixat amb { $values }.

@@ -121,6 +121,7 @@ kind-RRP = RRP dyad
 kind-RPR = RPR dyad
 kind-PRP = PRP dyad
 kind-other = group solved together
+kind-copy = the same as a body found before
 step-title = Step { $n }: { $kind } — { $bodies }
 step-fixed = { $bodies } { $bodies_n -> 
         [one] is
@@ -244,6 +245,10 @@ how-weld = (weld { $joint }: one body)
 group-wheel_v = The wheel { $joint } does not slip sideways: the velocity of { $point } lies in the wheel's plane.
 group-wheel_a = The wheel { $joint } does not slip sideways at any instant, and its plane turns with { $body }: the acceleration of { $point } is a tangential part in the plane and a normal part across it, { $w } × { $v }.
 how-translation = (it translates)
+copy-same = { $body } is joined to the same bodies in the same way, with the same radius, as { $original }, and sits in its place turned { $angle } about { $centre }: it moves as { $original } does, turned, with the same angular { $accel ->
+        [1] acceleration
+       *[other] velocity
+    }:
 fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism, with the lines they are found on (dash-dot: Aronhold–Kennedy lines and the perpendiculars to wheels and slots).
 fig-assur = The Assur point { $point }: the lines { $l1 } and { $l3 } (dashed) drawn on until they meet; { $point } is taken as a point of the ternary link.
 fig-drawn_at = Drawn at { $values }.

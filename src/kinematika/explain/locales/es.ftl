@@ -121,6 +121,7 @@ kind-RRP = díada RRP
 kind-RPR = díada RPR
 kind-PRP = díada PRP
 kind-other = grupo resuelto en conjunto
+kind-copy = igual que un sólido ya resuelto
 step-title = Paso { $n }: { $kind } — { $bodies }
 step-fixed = { $bodies } { $bodies_n ->
         [one] está unido
@@ -259,6 +260,10 @@ how-weld = (unión rígida { $joint }: un solo sólido)
 group-wheel_v = La rueda { $joint } no desliza lateralmente: la velocidad de { $point } está en el plano de la rueda.
 group-wheel_a = La rueda { $joint } no desliza lateralmente en ningún instante y su plano gira con { $body }: la aceleración de { $point } tiene una parte tangencial en el plano y una normal perpendicular a él, { $w } × { $v }.
 how-translation = (se traslada)
+copy-same = { $body } tiene las mismas uniones, con los mismos sólidos, y el mismo radio que { $original }, y ocupa su lugar tras un giro de { $angle } alrededor de { $centre }: su movimiento es el de { $original }, girado, con la misma { $accel ->
+        [1] aceleración angular
+       *[other] velocidad angular
+    }:
 fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo, con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy y perpendiculares a ruedas y ranuras).
 fig-assur = El punto de Assur { $point }: las rectas { $l1 } y { $l3 } (a trazos) prolongadas hasta cortarse; { $point } se toma como punto del eslabón ternario.
 fig-drawn_at = Dibujado con { $values }.

@@ -124,6 +124,7 @@ kind-RRP = RRP diada
 kind-RPR = RPR diada
 kind-PRP = PRP diada
 kind-other = batera ebatzitako taldea
+kind-copy = aurretik ebatzitako solido baten berdina
 step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-fixed = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
         [one] dago: ez da mugitzen
@@ -244,6 +245,10 @@ how-weld = ({ $joint } lotura zurruna: solido bakarra)
 group-wheel_v = { $joint } gurpila ez da alboetara irristatzen: { $point } puntuaren abiadura gurpilaren planoan dago.
 group-wheel_a = { $joint } gurpila ez da inoiz alboetara irristatzen, eta haren planoa { $body } solidoarekin batera biratzen da: { $point } puntuaren azelerazioak zati tangentzial bat du planoan eta zati normal bat planoarekiko perpendikularra, { $w } × { $v }.
 how-translation = (traslatzen da)
+copy-same = { $body } solido berberei lotuta dago, { $original } bezala eta erradio berarekin, eta haren lekuan dago, { $centre } puntuaren inguruan { $angle } biratuta: { $original } bezala mugitzen da, biratuta, { $accel ->
+        [1] azelerazio angeluar
+       *[other] abiadura angeluar
+    } berarekin:
 fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak eta gurpilen eta arteken perpendikularrak).
 fig-assur = { $point } Assur puntua: { $l1 } eta { $l3 } zuzenak (marra etenez) ebaki arte luzatuta; { $point } barra hirutarraren puntutzat hartzen da.
 fig-drawn_at = Balio hauekin marraztua: { $values }.
