@@ -101,3 +101,123 @@ def test_the_centres_section_holds_what_is_asked():
     placed = next(n for n in notes if frozenset(n.pair) == frozenset(("ground", "planet1")))
     needed = {frozenset(p) for k in placed.via for p in (("ground", k), (k, "planet1"))}
     assert needed <= pairs
+
+
+# -- the notes' order: the centres first where the notes find the velocities from them ----------------------------
+def _centre_name(sol, body: str) -> str:
+    from kinematika.draw.names import pair_tag
+
+    return "I" + pair_tag(sol.model, sol.model.frame, body)
+
+
+@pytest.mark.parametrize("name,body", [
+    ("seed_c5_1_1_pulley_on_cable", "pulley"),      # C5-1.1: the pulley's centre where the strands meet
+    ("seed_c5_1_2_bar_on_inclined_wheels", "OJ"),   # C5-1.2: OJ's from OQ's and the vertical through J
+    ("seed_c5_1_3_bar_in_sleeve", "bar"),           # C5-1.3: the bar's on OQ's line and the normal through J
+    ("seed_c5_e3_wheels_with_rod", "rod"),          # C5-E.3: the rod's where the perpendiculars meet
+])
+def test_the_centres_come_first_and_give_the_velocities(name, body):
+    """The notes place these centres from the joints alone and then write each velocity as
+    a rotation about its centre: the centres' section comes before the velocities, and the
+    body's ω is read off an equation that starts at its centre (v_Q = v_I + ω × IQ); no
+    check of the centre by the velocities follows (it would be circular)."""
+    sol, doc = explained(name)
+    keys = [s.title.key for s in doc.sections]
+    assert keys.index("sec.centres") < keys.index("sec.velocities")
+    assert not any(isinstance(b, CentreNote) and b.how == "check" for s in doc.sections for b in blocks(s))
+    centre = _centre_name(sol, body)
+    found = [d for d in blocks(section(doc, "sec.velocities")) if isinstance(d, Derived) and d.body == body
+             and d.kind == "omega" and d.source is not None]
+    assert found, f"{body}: no ω read off an equation"
+    eq = next(e for e in blocks(section(doc, "sec.velocities")) if isinstance(e, Equation)
+              and any(t is found[0].source for side in e.sides for t in side))
+    side = next(side for side in eq.sides if found[0].source in side)
+    assert side[0].sym.sub == centre and all(x == 0 for x in side[0].value)
+
+
+@pytest.mark.parametrize("name", ["seed_c5_e2_gear_change", "seed_c5_e1_cavity"])
+def test_centres_at_joints_come_first(name):
+    """C5-E.2 (the arm's and the ring's centres at O, the planets' at their contacts with
+    the fixed sun) and C5-E.1 (the wheels' at the contact with the track): the notes give
+    these centres first, then the rates from them."""
+    _, doc = explained(name)
+    keys = [s.title.key for s in doc.sections]
+    assert keys.index("sec.centres") < keys.index("sec.velocities")
+
+
+@pytest.mark.parametrize("name", ["seed_001_r_pairs", "seed_c5_1_6_belt", "seed_c5_1_4_epicyclic"])
+def test_velocities_first_where_the_notes_do(name):
+    """The slides ask no centre; C5-1.6 finds the pulley's rate by composing from the arm and
+    its centre from that rate; C5-1.4's planet centre comes from the speeds of its centre and
+    contact: velocities first, the centres (if any) after them."""
+    _, doc = explained(name)
+    keys = [s.title.key for s in doc.sections]
+    assert "sec.centres" not in keys or keys.index("sec.centres") > keys.index("sec.velocities")
+
+
+@pytest.mark.parametrize("name,body", [
+    ("seed_c5_1_7_semicylinder", "wheel"),     # C5-1.7: "ja que J és el CIR", v_C and v_P at once
+    ("seed_c5_1_8_contact_points", "wheel"),
+    ("seed_c5_e1_cavity", "wheels"),
+])
+def test_a_wheel_on_a_fixed_body_turns_about_its_contact(name, body):
+    """A wheel rolling on a fixed body has its contact at rest: the notes take it as the
+    wheel's centre. The explanation says so in a sentence (v_J∈wheel = 0) and starts the
+    wheel's velocities there; it never writes the empty equation v_J∈wheel = v_J∈ground."""
+    sol, doc = explained(name)
+    velocities = blocks(section(doc, "sec.velocities"))
+    said = [i for i, b in enumerate(velocities) if isinstance(b, Msg) and b.key == "rolling.centre"]
+    assert len(said) == 1
+    frame = sol.model.frame
+    for i, eq in enumerate(velocities):
+        if not isinstance(eq, Equation):
+            continue
+        for side in eq.sides:
+            assert not (len(side) == 1 and side[0].sym.sub.endswith(f"∈{frame}")), "v_J∈b = v_J∈ground"
+        if any(t.sym.sub.endswith(f"∈{body}") and t.kind == "point" for side in eq.sides for t in side[:1]):
+            assert i > said[0]
+
+
+@pytest.mark.parametrize("name,body,points", [
+    ("seed_c5_e6_bicycle", "frame", ["F", "K"]),        # C5-E.6: "el quadre només es trasllada"
+    ("seed_c5_e5_unequal_wheels", "chassis", ["B", "D"]),
+])
+def test_a_body_that_does_not_turn_moves_its_points_alike(name, body, points):
+    """Once ω of the chassis is found zero, its other points move as the one known: the
+    explanation says the body translates and writes v_K = v_H, not v_K = v_H + 0 × HK."""
+    _, doc = explained(name)
+    velocities = blocks(section(doc, "sec.velocities"))
+    assert any(isinstance(b, Msg) and b.key == "translation.same" and b.args["body"].text == body
+               for b in velocities)
+    for p in points:
+        eq = next(e for e in velocities if isinstance(e, Equation) and e.target.sym.sub.split("∈")[0] == p)
+        assert len(eq.sides) == 1 and len(eq.sides[0]) == 1 and eq.sides[0][0].kind == "point"
+
+
+def test_the_chain_is_not_worked_where_nothing_asks_it():
+    """C5-E.6 asks the pedals: the notes use the chain only through ρ ω = ρ ω seen from the
+    frame. No equation, no no-slip sentence, no geometric point of the chain's contacts
+    (J7, J8) is written at either level."""
+    _, doc = explained("seed_c5_e6_bicycle")
+    for key in ("sec.velocities", "sec.accelerations"):
+        for b in blocks(section(doc, key)):
+            if isinstance(b, Equation):
+                assert not any("J7" in t.sym.sub or "J8" in t.sym.sub
+                               for t in [b.target] + [t for side in b.sides for t in side]), b.target.sym
+            if isinstance(b, Msg) and "joint" in b.args:
+                assert b.args["joint"].text not in ("j7", "j8"), b.key
+
+
+def test_the_bar_slides_on_its_support_one_way_round():
+    """C5-1.3: the bar slides on the support; its relative velocity v_Q∈bar/support is found
+    in the velocities (the support seen as the moving frame), the Coriolis term of the
+    accelerations uses that same quantity, and the composition of E reads its relative part
+    off it (the bar does not turn on the support)."""
+    _, doc = explained("seed_c5_1_3_bar_in_sleeve")
+    slides = {(b.level, t.sym.sub) for s in ("sec.velocities", "sec.accelerations") for b in blocks(section(doc, s))
+              if isinstance(b, Equation) for side in b.sides for t in side if t.kind == "slide"}
+    assert ("v", "Q∈bar/support") in slides and ("a", "Q∈bar/support") in slides
+    assert not any(sub.endswith("support/bar") for _, sub in slides)
+    said = [b for b in blocks(section(doc, "sec.composition")) if isinstance(b, Msg)
+            and b.key == "composition.slide_seen"]
+    assert [m.args["seen"].sub for m in said] == ["Q∈bar/support", "Q∈bar/support"]

@@ -16,7 +16,7 @@ from .answers import answers_section, curvature_section, relative_rates
 from .checks import checks_section
 from .contacts import contact_section
 from .copies import copies
-from .centres import centres_section
+from .centres import centre_sites, centres_first, centres_section
 from .context import Ctx, omega_sym
 from .data import data_section
 from .document import Ann, Document, Equation, Msg, Name, Section, Sym, msg
@@ -28,6 +28,7 @@ from .polygon import level_polygon, polygon
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
 from .structure import structure_section, values_table
+from .translating import translations
 
 
 def build(sol: Solution, length_unit: str = "m") -> Document:
@@ -45,6 +46,12 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
         placed = position_section(ctx)
         if placed is not None:
             doc.sections.append(placed)
+        first = centres_first(ctx)
+        if first:                          # the notes' order: the centres, then the velocities from them
+            sites, ctx.translating = centre_sites(ctx)
+            ctx.centre_sites = {name: b for name, (b, _) in sites.items()}
+            ctx.centre_points = {name for name in sites if name not in ctx.inst.points}
+            doc.sections.append(centres_section(ctx, "first"))
         for level in wanted:
             sec = PlanarSteps(ctx, steps, level).section()
             levels.append(sec)
@@ -59,8 +66,18 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
         checked = checks_section(ctx)
         if checked is not None:
             doc.sections.append(checked)
-        if ctx.model.default_questions or any(q.kind == "icr" for q in ctx.model.questions):
+        if first:
+            rest = centres_section(ctx, "rest")
+            if rest is not None:
+                doc.sections.append(rest)
+        elif ctx.model.default_questions or any(q.kind == "icr" for q in ctx.model.questions):
             doc.sections.append(centres_section(ctx))      # only what is asked (the slides ask none)
+        for sec, level in zip(levels, wanted):
+            for eq in _equations(sec):
+                for t in (t for side in eq.sides for t in side if t.kind == "slide"):
+                    m = RELATIVE.match(t.sym.sub)
+                    if m:
+                        ctx.slides_seen.setdefault((level, m.group(2), m.group(3)), t.sym)
     else:
         doc.sections.append(structure_section(ctx, []))
         doc.sections.append(rates_section(ctx, accel))
@@ -71,6 +88,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
     for eq in doc.equations():
         found_forward(eq)
     prune(ctx, doc)
+    translations(ctx, doc)
     said = relative_convention(doc)
     if said is not None:
         doc.sections[0].blocks.insert(2, said)

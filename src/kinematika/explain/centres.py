@@ -9,6 +9,7 @@ each one follows."""
 from __future__ import annotations
 
 from itertools import combinations
+from typing import Optional
 
 from ..questions.centres import all_centres, centre_line, same_line
 from .context import Ctx
@@ -18,18 +19,52 @@ from .document import CentreNote, Section, Sym, msg
 MAX_ALL = 10        # above this many pairs, only the centres relative to the frame (and what they need)
 
 
-def centres_section(ctx: Ctx) -> Section:
+STRUCTURAL = ("joint", "weld", "kennedy", "lines")     # placed before any velocity is known
+
+
+def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
     """The section of instant centres: the drawing with the centres, then, for each pair of
-    bodies (only those with the frame, and what they need, when there are many), how its centre
-    follows — at a joint, by Aronhold–Kennedy from two lines that meet, or where the
-    perpendiculars to two velocities meet."""
+    bodies (what the questions name and what it is found from; else those with the frame,
+    and what they need, when there are many), how its centre follows — at a joint, by
+    Aronhold–Kennedy from two lines that meet, or where the perpendiculars to two velocities
+    meet. When the notes place the centres first (`centres_first`), `part` "first" is the
+    centres the structure places, before the velocities, and "rest" those found from the
+    velocities, after them (None when there are none)."""
     from .structure import drawing
 
-    sec = Section(msg("sec.centres"))
-    sec.add(msg("centres.intro", example=Sym("I", "13", vector=False)))
-    sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False))
+    made, chosen, asked = _notes(ctx)
+    first = [k for k in chosen if _placed(ctx, made[k])]
+    keys = {"all": chosen, "first": first, "rest": [k for k in chosen if k not in first]}[part]
+    if part == "rest" and not keys:
+        return None
+    sec = Section(msg("sec.centres" if part != "rest" else "sec.centres_v"))
+    if part != "rest":
+        sec.add(msg("centres.intro", example=Sym("I", "13", vector=False)))
+    if part == "all" or (part == "first") == (len(first) == len(chosen)) or part == "rest":
+        sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False))
+    for key in keys:
+        sec.blocks.append(made[key])
+        if part == "all" and key in asked and made[key].how in ("kennedy", "lines", "weld") \
+                and made[key].value.get("point"):
+            check = CentreNote(made[key].pair, made[key].value, "check")
+            if _field(ctx, check):
+                sec.blocks.append(check)
+    return sec
+
+
+def _placed(ctx: Ctx, note: CentreNote) -> bool:
+    """Whether the structure places the centre, with no velocity (the engine's way, before
+    the explanation reads a wheel's axle off a velocity)."""
+    return note.how in STRUCTURAL and ctx.centre_how.get(frozenset(note.pair)) in STRUCTURAL
+
+
+def _notes(ctx: Ctx) -> tuple[dict, list, set]:
+    """Every centre's note (how it follows), the pairs to write, the pairs asked; once."""
+    if ctx.centre_notes is not None:
+        return ctx.centre_notes
     order = all_centres(ctx.sol)
     found = {frozenset(c.pair): c for c in order}
+    ctx.centre_how = {key: c.how for key, c in found.items()}
     made = {}
     deps: dict[frozenset, list[frozenset]] = {}
     for key in found:
@@ -61,13 +96,51 @@ def centres_section(ctx: Ctx) -> Section:
             deps[key] = [frozenset(p) for k in note.via for p in ((a, k), (k, b))]
     asked = {frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target)) for q in ctx.model.questions
              if q.kind == "icr"}
-    for key in _chosen(ctx, made, deps, asked):
-        sec.blocks.append(made[key])
-        if key in asked and made[key].how in ("kennedy", "lines", "weld") and made[key].value.get("point"):
-            check = CentreNote(made[key].pair, made[key].value, "check")
-            if _field(ctx, check):
-                sec.blocks.append(check)
-    return sec
+    ctx.centre_notes = (made, _chosen(ctx, made, deps, asked), asked)
+    return ctx.centre_notes
+
+
+def centres_first(ctx: Ctx) -> bool:
+    """Whether the explanation places the instant centres before the velocities and finds
+    the velocities from them, as the notes do where they ask for centres the structure
+    gives (C5-1.1's pulley where the strands meet, C5-E.3's rod, C5-E.2's planets at their
+    contacts with the fixed sun): the questions name a centre relative to the frame that
+    the structure places. Not where a belt or chain gives a wheel's rate: the notes find
+    that rate by composing from the arm, and the wheel's centre from it (C5-1.6)."""
+    from .drives import drives
+
+    if ctx.model.default_questions or not ctx.planar or drives(ctx):
+        return False
+    made, _, asked = _notes(ctx)
+    return any(ctx.frame in key and key in made and _placed(ctx, made[key]) for key in asked)
+
+
+def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, CentreNote]]:
+    """The centres relative to the frame that the first centres section places by a
+    construction (Aronhold–Kennedy, a joint's line), for the velocity steps to start from:
+    {name: (body, point)} of those at a point (a point of the body there keeps its name,
+    else I14), and {body: note} of those at infinity (the body translates)."""
+    if not centres_first(ctx):
+        return {}, {}
+    from ..draw.names import pair_tag
+
+    made, chosen, _ = _notes(ctx)
+    points: dict[str, tuple[str, tuple]] = {}
+    still: dict[str, CentreNote] = {}
+    for key in chosen:
+        note = made[key]
+        if ctx.frame not in key or note.how not in ("kennedy", "lines") or not _placed(ctx, note):
+            continue
+        body = next(b for b in note.pair if b != ctx.frame)
+        where = note.value.get("point")
+        if where is None:
+            if note.value.get("direction") is not None:
+                still[body] = note
+            continue
+        name = _point_name(ctx, body, where) or "I" + pair_tag(ctx.model, ctx.frame, body)
+        ctx.name_position(name, tuple(where))
+        points[name] = (body, tuple(where))
+    return points, still
 
 
 def _field(ctx: Ctx, note: CentreNote) -> bool:

@@ -30,6 +30,12 @@ class Ctx:
         self.worked: set[str] = set()        # derivations written once in the document (a bar's ω)
         self._contacts: dict[str, str] = {}
         self._drawn: Any = None
+        self.centre_notes: Any = None        # the instant centres' notes (`centres._notes`), once
+        self.centre_how: dict = {}           # how the engine places each pair's centre
+        self.centre_points: set[str] = set() # instant centres the velocity steps start from (I14)
+        self.centre_sites: dict[str, str] = {}   # ... and those at a point of the body (P): name -> body
+        self.translating: dict[str, Any] = {}    # bodies whose centre is at infinity -> its note
+        self.slides_seen: dict[tuple, Any] = {}  # (level, body, guide body) -> a slide's symbol written in the steps
 
     # positions -----------------------------------------------------------------------------
     def pos(self, name: str) -> tuple:
@@ -160,6 +166,8 @@ class Ctx:
     def point_label(self, point: str, body: str) -> str:
         """`B` when B is one point of every body carrying it, else `B∈body`."""
         if point in self.inst.points and self.shared(point) and body in self.model.carriers(point):
+            return point
+        if point in self.centre_points:              # an instant centre: the point of its body there
             return point
         return f"{point}∈{body}"
 

@@ -139,10 +139,7 @@ def copy_of(ctx: Ctx, body: str, earlier: list[str]) -> Optional[Copy]:
 
 def _same_motion(ctx: Ctx, b: str, a: str) -> bool:
     """The check: b turns as a does (ω, and α where there are accelerations)."""
-    for x, y in ((ctx.omega(b), ctx.omega(a)), (ctx.alpha(b), ctx.alpha(a))):
-        if not ctx.is_zero(x - y, "rate"):
-            return False
-    return True
+    return all(ctx.is_zero(x - y, "rate") for x, y in ((ctx.omega(b), ctx.omega(a)), (ctx.alpha(b), ctx.alpha(a))))
 
 
 def _centre_name(ctx: Ctx, z: tuple) -> str:

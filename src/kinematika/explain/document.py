@@ -137,6 +137,8 @@ class Equation:
     figure: bool = True                          # draw its polygon (planar)
     polygon: Optional["Figure"] = None           # filled in by the builder
     position: Optional[tuple] = None             # where the point is, when it has no name
+    owned: list = field(default_factory=list, repr=False)    # the sentences written for it alone (a contact's rule)
+    contacts: list = field(default_factory=list, repr=False) # the contact points they are about
 
 
 @dataclass

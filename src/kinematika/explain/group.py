@@ -95,6 +95,14 @@ class Path:
 
 
 @dataclass
+class Still:
+    """`body` translates: its instant centre relative to the frame is at infinity (placed
+    by the structure before the velocities), so its ω is zero."""
+
+    body: str
+
+
+@dataclass
 class Same:
     """ω (α) of `body` from `other`'s: a weld, a prismatic pair, a driven pin or ω driver."""
 
@@ -109,7 +117,7 @@ class Planner:
     """The order of the equations that find a group's bodies at one level ('v' or 'a')."""
 
     def __init__(self, ctx: Ctx, group: list[str], known: set[str], level: str,
-                 rates: Optional[set[str]] = None) -> None:
+                 rates: Optional[set[str]] = None, centres: bool = False) -> None:
         self.ctx, self.level = ctx, level
         self.group = [b for b in group if b != ctx.frame]
         self.determined = set(known) | {ctx.frame}
@@ -119,12 +127,31 @@ class Planner:
         self.slides: set[str] = set()               # slots and guides whose relative speed is known
         self.events: list = []                      # Path and Same, in order
         self.used: list[str] = []                   # joints written, in order
+        self.still: dict[str, tuple[Joint, str]] = {}   # label of a contact at rest -> (joint, fixed body)
         self._labels: dict[Site, str] = {}
         self.sites = {b: self._sites(b) for b in ctx.model.bodies}
         for b in self.determined:
             self.full.update(self.label(s) for s in self.sites[b])
+        if centres and level == "v":
+            self._centres()
         self._given()
         self._propagate()
+
+    def _centres(self) -> None:
+        """The instant centres placed before the velocities (`centres.centre_sites`): each a
+        point of its body with zero velocity, where routes may start (v_A = v_I14 + ω × I14-A,
+        the notes' rotation about the centre); a body whose centre is at infinity translates."""
+        group = set(self.group)
+        for name, body in self.ctx.centre_sites.items():
+            if body in group and body not in self.determined:
+                site = Site(name, body)
+                if site not in self.sites[body]:
+                    self.sites[body].append(site)
+                self.full.add(self.label(site))
+        for body in self.ctx.translating:
+            if body in group and body not in self.rates:
+                self.rates.add(body)
+                self.events.append(Still(body))
 
     # what is known -------------------------------------------------------------------------
     def label(self, s: Site) -> str:
@@ -272,8 +299,8 @@ class Planner:
                 moves += [(seg, nxt, turns) for seg, nxt in self._crossings(site, visited)]
                 for seg, nxt, t in moves:
                     label = self.label(nxt)
-                    if label == self.label(start):
-                        continue
+                    if label == self.label(start) or (seg.kind == "cross" and label in self.still):
+                        continue                # a contact at rest is known as it is, not crossed into
                     route = segs + (seg,)
                     out.setdefault(label, []).append(Route(start, route, t))
                     if self.state(nxt) == "none":
@@ -337,23 +364,61 @@ class Planner:
         if not found:
             return None
         order = {id(p): i for i, p in enumerate(found)}
-        return min(found, key=lambda p: (not p.finds, len(p.routes), p.turns, -p.unknowns,
-                                         -self._end_rank(p), order[id(p)]))
+        def key(p: Path) -> tuple:      # a rotation about a point at rest finds ω alone, as the notes do
+            rest = self._from_rest(p)
+            return (not p.finds, len(p.routes), not rest, p.turns, p.unknowns if rest else -p.unknowns,
+                    self._against(p), -self._end_rank(p), order[id(p)])
+        return min(found, key=key)
 
-    def _end_rank(self, p: Path) -> int:
+    def _against(self, p: Path) -> int:
+        """How many guides the equation crosses from the slider into the guide's body: the
+        notes say the slider slides on the guide (v_Q = v_Q∈support + v_Q∈bar/support), so
+        that way round reads first."""
+        return sum(1 for r in p.routes for g in r.segs
+                   if g.kind == "cross" and g.joint is not None and guided(g.joint) and g.frm == g.joint.b)
+
+    def _from_rest(self, p: Path) -> bool:
+        """Whether the equation starts at a point at rest: an instant centre placed before
+        (v_O = v_I17 + ω_7 × I17-O), or a contact on a fixed body — the notes' way, a
+        velocity as a rotation about the centre."""
+        return any(self.label(r.start) in self.still or r.start.point in self.ctx.centre_sites for r in p.routes)
+
+    def _end_rank(self, p: Path) -> float:
         """Which end reads best as the equation's left side: a point partly known, then a
         point of a known body (0 of the ground, a contact of a known wheel)."""
+        label = self.label(p.end)
+        if label in self.still or p.end.point in self.ctx.centre_sites:
+            return -1                   # a point at rest starts an equation, it does not end one
+        own = 0.5 if p.end.point in self.ctx.model.bodies[p.end.body].points else 0.0     # Q of the bar, not S
         if p.known[p.end][0] == "partial":
-            return 2
-        return 1 if p.end.body in self.determined else 0
+            return 2 + own
+        return (1 if p.end.body in self.determined else 0) + own
 
     # writing an equation -------------------------------------------------------------------
     def run(self) -> bool:
-        """Plan until the group is known; False when no equation can go on."""
+        """Plan until the group is known; False when no equation can go on. At velocities,
+        then the relative velocity of each slide found by no equation (the bar's in its
+        sleeve, once the bar's ω came from its instant centre): the composition v_Q∈b =
+        v_Q∈a + v_Q∈b/a, which the accelerations' Coriolis term needs."""
         while not self.complete():
             if self.step() is None:
                 return False
+        while self.level == "v" and self._open_slides():
+            if self.step() is None:
+                break
         return True
+
+    def _open_slides(self) -> bool:
+        """Whether a guide that turns, inside the group, has its relative speed still
+        unwritten while accelerations are explained (its Coriolis term needs it)."""
+        from .needs import accelerations_asked
+
+        ctx, group = self.ctx, set(self.group)
+        if not accelerations_asked(ctx):
+            return False
+        return any(guided(j) and {j.a, j.b} & group and {j.a, j.b} <= (group | self.determined)
+                   and not ctx.fixed(j.a) and not self._driven(j) and j.id not in self.slides
+                   for j in ctx.model.joints)
 
     def step(self) -> Optional[Path]:
         """Write the best equation, mark what it finds and what follows; None when stuck."""
@@ -376,8 +441,28 @@ class Planner:
     def _use(self, joints: list[str]) -> None:
         self.used += [j for j in joints if j not in self.used]
 
+    def _still_contacts(self) -> None:
+        """A body rolling without slipping on a fixed one (the ground, a track): its point at
+        the contact has no velocity — it is the body's instant centre, as the notes take it
+        (C5-1.7: "ja que J és el CIR"). Velocities only: the point's acceleration is not zero."""
+        if self.level != "v":
+            return
+        ctx, group = self.ctx, set(self.group)
+        for j in ctx.model.joints:
+            if not rolls(j) or ctx.sol.geometry(j.id).contact is None:
+                continue
+            for fixed, body in ((j.a, j.b), (j.b, j.a)):
+                if body in group and fixed in self.determined and ctx.fixed(fixed):
+                    label = self.label(Site(ctx.contact(j), body))
+                    if label not in self.full:
+                        self.full.add(label)
+                        self.still[label] = (j, fixed)
+                        self._use([j.id])
+
     def _propagate(self) -> None:
-        """What follows at once: shared rates, and bodies with a known point and ω."""
+        """What follows at once: shared rates, bodies with a known point and ω, and the
+        contact points at rest of bodies rolling on fixed ones."""
+        self._still_contacts()
         changed = True
         while changed:
             changed = False
@@ -486,7 +571,8 @@ class Writer:
         reads (ω or α), and each rate carried from another body."""
         out: list = []
         for ev in self.plan.events:
-            out += self.path(ev) if isinstance(ev, Path) else [self.same(ev)]
+            out += self.path(ev) if isinstance(ev, Path) else [self.still(ev)] if isinstance(ev, Still) \
+                else [self.same(ev)]
         return out
 
     def label(self, s: Site) -> str:
@@ -505,12 +591,16 @@ class Writer:
             wheel = p.known[s][1].get("wheel")
             if wheel is not None:
                 out += self.condition(wheel, s)
+        contacts: list[str] = []
         for r in p.routes:
             for seg in r.segs:
                 if seg.joint is not None:
                     out += self.condition(seg.joint, Site(seg.p, seg.body))
+                    if rolls(seg.joint):
+                        contacts.append(ctx.contact(seg.joint))
                     if lv == "a" and rolls(seg.joint):
                         out += geometric_blocks(ctx, seg.joint, ps.geometric, (seg.body, seg.frm))
+        owned = list(out)
         for s in [r.start for r in p.routes] + [p.end]:
             out += self.known_first(s, p)
         sides, reads = [], {}
@@ -529,7 +619,8 @@ class Writer:
             target = Term(Sym(lv, self.label(p.end)), _total(end), Ann("?"), Ann("?"), unknown=True, kind="point")
             sides.insert(0, end)
         position = None if p.end.point in ctx.inst.points else ctx.pos(p.end.point)
-        out.append(Equation(target, sides, lv, ctx.ref(p.end.point, p.end.body), position=position))
+        out.append(Equation(target, sides, lv, ctx.ref(p.end.point, p.end.body), position=position,
+                            owned=owned if contacts else [], contacts=contacts))
         ps.done.add(self.label(p.end))
         ps.done.update(t.sym.sub for side in sides for t in side if t.kind == "point" and not t.sym.sup)
         for body in p.finds:
@@ -549,6 +640,14 @@ class Writer:
         state, spec = p.known.get(s, ("full", {}))
         if s.body == ctx.frame or label in ps.done or state != "full" or spec or self._given(s):
             return []
+        if label in self.plan.still:             # a contact at rest: the body's instant centre
+            ps.done.add(label)
+            j, fixed = self.plan.still[label]
+            ps.used.add(j.id)
+            return [still_contact(ctx, j, fixed, s.body)]
+        rest = ps.at_rest(s.point, s.body)       # an instant centre placed in the centres section
+        if rest:
+            return rest
         if ctx.fixed(s.body):              # a point of a body welded to the frame: it does not move
             ps.done.add(label)
             return [msg("contact.fixed", point=point_name(s.point), body=body_name(s.body), sym=Sym(lv, label))]
@@ -562,10 +661,11 @@ class Writer:
             if start is None or ctx.motion_key(*start) == key:
                 continue
             q, owner = start
+            said = ps.at_rest(q, owner)
             side = [point_term(ctx, lv, q, owner, True)] + rotation_terms(ctx, lv, body, q, s.point, False)
             eq = ps.equation(point_term(ctx, lv, s.point, body, True), [side], s.point, body)
             eq.position = None if s.point in ctx.inst.points else ctx.pos(s.point)
-            return [eq]
+            return said + [eq]
         return []
 
     def _given(self, s: Site) -> bool:
@@ -668,6 +768,13 @@ class Writer:
                                unknown)
         return []
 
+    def still(self, s: Still) -> Derived:
+        """ω = 0 of a body whose instant centre is at infinity: it translates."""
+        ctx = self.ctx
+        centre = Sym("I", f"{ctx.frame},{s.body}", vector=False)
+        return Derived(omega_sym(s.body), [msg("how.centre_infinity", centre=centre)], ctx.value(ctx.omega(s.body), "rate"),
+                       s.body, "omega", False)
+
     def same(self, s: Same) -> Derived:
         """ω (α) shared across a weld or a prismatic pair, or through a driven joint."""
         ctx, lv = self.ctx, self.level
@@ -687,6 +794,22 @@ class Writer:
                        "omega" if lv == "v" else "alpha", not ctx.symbolic)
 
 
+def still_contact(ctx: Ctx, j: Joint, fixed: str, body: str):
+    """The sentence that a body rolling on a fixed one has its contact point at rest: its
+    instant centre (v_J∈b = 0)."""
+    name = ctx.contact(j)
+    return msg("rolling.centre", joint=joint_name(j.id), a=body_name(fixed), b=body_name(body), point=point_name(name),
+               sym=Sym("v", ctx.point_label(name, body)))
+
+
+def centre_site(ctx: Ctx, name: str, body: str):
+    """The sentence that the instant centre placed before (a point of the body there, or
+    I14) has no velocity."""
+    key = "centre.site_i" if name in ctx.centre_points else "centre.site"
+    return msg(key, point=point_name(name), body=body_name(body), frame=body_name(ctx.frame),
+               centre=Sym("I", f"{ctx.frame},{body}", vector=False), sym=Sym("v", ctx.point_label(name, body)))
+
+
 def _total(terms: list[Term]) -> tuple:
     out = terms[0].value
     for t in terms[1:]:
@@ -699,7 +822,7 @@ def group_blocks(ps, step) -> Optional[list]:
     belt or chain drive whose carrier and one wheel are known gives the other wheel's rate
     first, as the notes find it (`drives`); the planner then knows those rates."""
     given, rates = drive_blocks(ps.ctx, step.bodies, set(ps.known), ps.level)
-    plan = Planner(ps.ctx, step.bodies, set(ps.known), ps.level, rates)
+    plan = Planner(ps.ctx, step.bodies, set(ps.known), ps.level, rates, centres=True)
     if not plan.run():
         return None
     ps.ctx.worked.update(f"drive:{b}" for b in rates)

@@ -10,9 +10,11 @@ stay. A model without questions asks for everything, and keeps everything.
 """
 from __future__ import annotations
 
+import re
+
 from ..model.model import ACCELERATION_QUESTIONS, POINT_QUESTIONS
 from .context import Ctx
-from .document import CentreNote, Document, Equation, Section
+from .document import CentreNote, Document, Equation, Msg, Section
 
 LEVELS = ("sec.velocities", "sec.accelerations")
 
@@ -29,10 +31,35 @@ def prune(ctx: Ctx, doc: Document) -> None:
     if ctx.model.default_questions:
         return
     asked = _asked_points(ctx)
-    for sec in doc.sections:
+    for sec in reversed(doc.sections):       # the later first: what they drop, the earlier need not keep
         if sec.title.key in LEVELS:
             used, terms = _used_after(doc, sec)
             _prune_section(sec, "v" if sec.title.key == LEVELS[0] else "a", asked, used, terms)
+            _drop_unused_rest(sec)
+
+
+AT_REST = ("rolling.centre", "centre.site", "centre.site_i")
+
+
+def _drop_unused_rest(sec: Section) -> None:
+    """A sentence that a point is at rest (a contact on a fixed body, an instant centre)
+    goes with the equations that start from it: none left, the sentence goes too (the belt
+    touching the fixed pulley, which nothing asks)."""
+    used = {(t.sym.base, t.sym.sub) for b in _blocks(sec) if isinstance(b, Equation)
+            for t in [b.target] + [t for side in b.sides for t in side]}
+    for holder, block in _messages(sec):
+        if block.key in AT_REST and (block.args["sym"].base, block.args["sym"].sub) not in used:
+            holder.blocks.remove(block)
+
+
+def _messages(sec: Section) -> list:
+    out: list = []
+    for b in sec.blocks:
+        if isinstance(b, Section):
+            out += _messages(b)
+        elif isinstance(b, Msg):
+            out.append((sec, b))
+    return out
 
 
 def _asked_points(ctx: Ctx) -> set[str]:
@@ -57,11 +84,8 @@ def _used_after(doc: Document, sec: Section) -> tuple[set[str], set[tuple]]:
     terms: set[tuple] = set()
     started = False
     for s in doc.sections:
-        if s is sec:
+        if s is sec:                       # what the section itself needs, `_prune_section` finds
             started = True
-            for b in _blocks(s):           # a velocity written among the accelerations
-                if isinstance(b, Equation) and sec.title.key == LEVELS[0] and b.level == "v":
-                    terms.update(_point_terms(b))
             continue
         if not started:
             continue
@@ -94,14 +118,50 @@ def _prune_section(sec: Section, level: str, asked: set[str], used: set[str], te
     needed = set(used) | set(asked)
     needed_labels: set[tuple] = set(terms)
     holders = [(h, eq) for h, eq in _holders(sec) if eq.level == level]
+    dropped = []
     for holder, eq in reversed(holders):
         forward = not any(t.unknown for side in eq.sides for t in side)
         label = (eq.target.sym.base, eq.target.sym.sub)
         point = _point_of(eq.target.sym.sub)
         if forward and eq.target.kind == "point" and label not in needed_labels and point not in needed:
             holder.blocks.remove(eq)
+            dropped.append(eq)
             continue
         needed_labels.update(_point_terms(eq))      # v_J7∈4 = v_K + …: its known left side too
+    _drop_orphans(sec, dropped)
+
+
+def _names(eq: Equation) -> set[str]:
+    """The point names an equation's terms mention (J7 in v_J7∈4, a_{J7∈7/4}, v_{J7-H})."""
+    out: set[str] = set()
+    for t in [eq.target] + [t for side in eq.sides for t in side]:
+        out.update(x for x in re.split(r"[∈/,\-]", t.sym.sub) if x)
+    return out
+
+
+def _drop_orphans(sec: Section, dropped: list[Equation]) -> None:
+    """The sentences written for a dropped equation alone — a contact's no-slip, the rule of
+    its geometric point and that point's velocity — go with it, when no equation left in
+    the section speaks of that contact (the chain's J7 on the pinion, which nothing asks)."""
+    if not dropped:
+        return
+    left = set().union(*[_names(b) for b in _blocks(sec) if isinstance(b, Equation)
+                         and not any(b in eq.owned for eq in dropped)] or [set()])
+    for eq in dropped:
+        if not eq.owned or set(eq.contacts) & left:
+            continue
+        for holder, block in _owned_holders(sec, eq.owned):
+            holder.blocks.remove(block)
+
+
+def _owned_holders(sec: Section, owned: list) -> list:
+    out: list = []
+    for b in sec.blocks:
+        if isinstance(b, Section):
+            out += _owned_holders(b, owned)
+        elif any(b is o for o in owned):
+            out.append((sec, b))
+    return out
 
 
 def _holders(sec: Section) -> list[tuple[Section, Equation]]:

@@ -13,7 +13,7 @@ from typing import Optional
 from ..model.model import Joint, PointPair
 from .context import Ctx, alpha_sym, omega_sym, segment
 from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
-from .group import group_blocks
+from .group import centre_site, group_blocks, still_contact
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
 from .copies import copy_of
@@ -80,7 +80,7 @@ class PlanarSteps:
         blocks = self.drivers(step)
         if step.kind == "copy":
             self.used.update(step.joints)
-            return blocks + self.copied(step) + self.carry(step)
+            return blocks + self.copied(step) + self.carry(step, fallback=False)
         if step.kind == "other":
             higher = higher_pair_steps(self, step)
             if higher is not None:
@@ -353,9 +353,11 @@ class PlanarSteps:
         return Derived(sym, [], ctx.value(value, LEVEL_UNIT[self.level]), body,
                        "omega" if self.level == "v" else "alpha", not ctx.symbolic)
 
-    def carry(self, step: Step) -> list:
+    def carry(self, step: Step, fallback: bool = True) -> list:
         """The motion of the other points of the step's bodies: v_P = v_Q + ω × QP, each
-        body from a point already written (bodies whose points follow from another's last)."""
+        body from a point already written (bodies whose points follow from another's last);
+        without `fallback`, a body with no point written is left to the bodies pinned to it
+        (a planet said to be the same as another: its centre is the carrier's)."""
         ctx, out = self.ctx, []
         pending = [b for b in step.bodies if ctx.model.bodies[b].points]
         while pending:
@@ -363,7 +365,11 @@ class PlanarSteps:
             body = ready[0] if ready else pending[0]
             pending.remove(body)
             found = self.anchor(body)
+            if found is None and not fallback:
+                continue
             q, owner = found if found is not None else (ctx.model.bodies[body].points[0], body)
+            if found is not None:
+                out += self.at_rest(q, owner)
             if found is None:                   # nothing written of it: the group's value
                 self.done.add(ctx.point_label(q, body))
                 unit = "speed" if self.level == "v" else "accel"
@@ -383,6 +389,10 @@ class PlanarSteps:
         its points, or one pinned to it (B∈rocker for B∈N), else another material point of
         it (a contact J∈body); None when none is."""
         ctx = self.ctx
+        if self.level == "v":                   # its instant centre, placed before the velocities
+            for name, b in ctx.centre_sites.items():
+                if b == body:
+                    return name, body
         written: dict[str, tuple[str, str]] = {}
         for label in sorted(self.done):
             name, _, owner = label.partition("∈")
@@ -400,6 +410,40 @@ class PlanarSteps:
         for name, owner in written.values():
             if owner == body:
                 return name, body
+        still = self.still_joint(body)
+        if still is not None:                   # rolling on a fixed body: its contact is at rest
+            return ctx.contact(still[0]), body
+        return None
+
+    def at_rest(self, q: str, body: str) -> list:
+        """The sentence that point q of `body` has no velocity, the first time an equation
+        starts from it: an instant centre placed before the velocities, or the contact of a
+        body rolling on a fixed one."""
+        ctx = self.ctx
+        label = ctx.point_label(q, body)
+        if self.level != "v" or label in self.done:
+            return []
+        if ctx.centre_sites.get(q) == body:
+            self.done.add(label)
+            return [centre_site(ctx, q, body)]
+        still = self.still_joint(body)
+        if still is not None and q == ctx.contact(still[0]):
+            self.done.add(label)
+            self.used.add(still[0].id)
+            return [still_contact(ctx, still[0], still[1], body)]
+        return []
+
+    def still_joint(self, body: str) -> Optional[tuple[Joint, str]]:
+        """(joint, fixed body) of a rolling contact of `body` on a fixed body, at velocities:
+        its contact point is at rest, the body's instant centre."""
+        ctx = self.ctx
+        if self.level != "v":
+            return None
+        for j in ctx.model.joints:
+            if rolls(j) and ctx.sol.geometry(j.id).contact is not None:
+                for fixed, b in ((j.a, j.b), (j.b, j.a)):
+                    if b == body and fixed in self.known and ctx.fixed(fixed):
+                        return j, fixed
         return None
 
 

@@ -16,7 +16,7 @@ from ..questions.decompose import decompose
 from .context import Ctx, alpha_sym, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Names, Section, Sym, Term, Value, msg
 from .terms import KNOWN, point_term, relative_name, rotation_terms, target_term
-from .kinds import guided, pin_only, rolls
+from .kinds import guided, pin_only, rolls, slider
 
 
 def carriers(ctx: Ctx) -> list[tuple[str, Optional[str], Optional[str]]]:
@@ -274,6 +274,11 @@ def _relative(ctx: Ctx, level: str, ref: PointRef, moving: str, pivot: Optional[
     value = ctx.clean(ctx.vel(body, p, moving) if level == "v" else ctx.acc(body, p, moving), unit)
     joint = next((j for j in ctx.model.joints if {j.a, j.b} == {body, moving}), None)
     if joint is not None and guided(joint):
+        seen = ctx.slides_seen.get((level, body, moving)) if slider(joint) else None
+        if seen is not None:            # a slider does not turn on its guide: one relative motion, found above
+            return [msg("composition.slide_seen", sym=sym, seen=seen, value=Value(value, unit),
+                        joint=Name(joint.id, "joint"), point=Name(p), body=Name(body, "body"),
+                        frame=Name(moving, "body"))]
         return [msg("composition.slide", sym=sym, value=Value(value, unit), joint=Name(joint.id, "joint"),
                     point=Name(p))]
     if joint is not None and joint.at and not _apart(ctx, joint.at, p):

@@ -237,6 +237,16 @@ rolling-kept = enllaç { $joint }: el contacte es manté: a { $point } les accel
         [vowel] d’{ $a }
        *[other] de { $a }
     } només difereixen en un terme segons la normal comuna.
+rolling-centre = enllaç { $joint }: { $b } { COUNT($b) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre { $a }, que no es mou: el punt { $point } { ELISION($b) ->
+        [vowel] d’{ $b }
+       *[other] de { $b }
+    } al contacte no té velocitat, { $sym } = 0; per tant, és el CIR { ELISION($b) ->
+        [vowel] d’{ $b }
+       *[other] de { $b }
+    }.
 dir-guide = guia { $joint }
 dir-normal = normal
 how-prismatic = (enllaç prismàtic { $joint }: sense rotació relativa)
@@ -379,6 +389,7 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
        *[other] de { $frame }
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 composition-slide = { $point } llisca al llarg de la guia de l’enllaç { $joint }: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
+composition-slide_seen = { $point } llisca al llarg de la guia de l’enllaç { $joint }; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat més amunt: { $sym } = { $seen } = { $value }.
 composition-pin = { $point } és el passador de l’enllaç { $joint }, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)
@@ -416,6 +427,16 @@ group-wheel_a = La roda { $joint } no llisca lateralment en cap instant i el seu
        *[other] de { $point }
     } té una part tangencial al pla i una de normal perpendicular al pla, { $w } × { $v }.
 how-translation = (es trasllada)
+translation-same = { $body } { COUNT($body) ->
+        [many] no giren
+       *[one] no gira
+    } ({ $w } = 0{ $accel ->
+        [1] , { $a } = 0
+       *[other] {""}
+    }): es trasllada, i tots els seus punts tenen la mateixa { $accel ->
+        [1] acceleració
+       *[other] velocitat
+    }:
 copy-same = { $body } té els mateixos enllaços, amb els mateixos sòlids, i el mateix radi que { $original }, i ocupa el seu lloc després d’un gir de { $angle } al voltant { ELISION($centre) ->
         [vowel] d’{ $centre }
        *[other] de { $centre }
@@ -468,6 +489,10 @@ centre-line-slot_fixed = la normal a { $point } a la recta { ELISION($a) ->
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
 centre-field = cap enllaç ni cap recta d’Aronhold–Kennedy no el situa abans de conèixer les velocitats; amb elles, 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 centre-check = Comprovació amb les velocitats trobades: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value }, el mateix punt: { $centre } és { $where }
+sec-centres_v = CIR trobats a partir de les velocitats
+how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
+centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
+centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte
 geom-rule = La regla de tot contacte de rodolament: la condició de no lliscament es compleix a cada instant al punt geomètric de contacte (aquí { $geom }), que es mou; derivant-la al llarg d’aquest punt s’obté { $rule }: les components tangencials de les dues acceleracions són iguals i les normals difereixen en aquest terme, segons la normal comuna. Cal la velocitat del punt geomètric:
 geom-bar = { $geom }, el punt geomètric de contacte de l’enllaç { $joint }, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, a la mateixa fracció, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:

@@ -159,6 +159,7 @@ cond-spherical = joint { $joint }, ball joint at { $point }: { $point } is one p
 cond-cylindrical = joint { $joint }, cylindrical: { $b } turns about and slides along the axis of { $a }.
 rolling-noslip = joint { $joint }: { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity.
 rolling-kept = joint { $joint }: the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
+rolling-centre = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
 dir-guide = guide { $joint }
 dir-normal = normal
 how-prismatic = (prismatic pair { $joint }: no relative rotation)
@@ -226,6 +227,7 @@ ans-pole_velocity = velocity of I along the centrodes
 centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along the guide of joint { $joint }: its relative motion is along the guide, { $sym } = { $value }.
+composition-slide_seen = { $point } slides along the guide of joint { $joint }; { $body } does not turn relative to { $frame }, so all its points have the relative motion found above: { $sym } = { $seen } = { $value }.
 composition-pin = { $point } is the pin of joint { $joint }, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
@@ -245,6 +247,13 @@ how-weld = (weld { $joint }: one body)
 group-wheel_v = The wheel { $joint } does not slip sideways: the velocity of { $point } lies in the wheel's plane.
 group-wheel_a = The wheel { $joint } does not slip sideways at any instant, and its plane turns with { $body }: the acceleration of { $point } is a tangential part in the plane and a normal part across it, { $w } × { $v }.
 how-translation = (it translates)
+translation-same = { $body } does not turn ({ $w } = 0{ $accel ->
+        [1] , { $a } = 0
+       *[other] {""}
+    }): it translates, and all its points have one { $accel ->
+        [1] acceleration
+       *[other] velocity
+    }:
 copy-same = { $body } is joined to the same bodies in the same way, with the same radius, as { $original }, and sits in its place turned { $angle } about { $centre }: it moves as { $original } does, turned, with the same angular { $accel ->
         [1] acceleration
        *[other] velocity
@@ -288,6 +297,10 @@ centre-line-slot_fixed = the normal at { $point } to the line of { $a } along wh
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
 centre-field = no joint and no Aronhold–Kennedy line places it before the velocities are known; with them, 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-check = Check with the velocities found above: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value }, the same point: { $centre } is { $where }
+sec-centres_v = Instant centres found from the velocities
+how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
+centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
+centre-site_i = The instant centre { $centre } of { $body } relative to { $frame }, placed above, has no velocity: { $sym } = 0.
 sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
 geom-bar = { $geom }, the geometric contact point of joint { $joint }, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always at the same fraction of it, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:

@@ -171,6 +171,10 @@ rolling-noslip = par { $joint }: { $b } { COUNT($b) ->
        *[one] rueda
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
 rolling-kept = par { $joint }: el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
+rolling-centre = par { $joint }: { $b } { COUNT($b) ->
+        [many] ruedan
+       *[one] rueda
+    } sin deslizar sobre { $a }, que no se mueve: el punto { $point } de { $b } en el contacto no tiene velocidad, { $sym } = 0, así que es el CIR de { $b }.
 dir-guide = guía { $joint }
 dir-normal = normal
 how-prismatic = (par prismático { $joint }: sin rotación relativa)
@@ -241,6 +245,7 @@ ans-pole_velocity = velocidad de I a lo largo de la base y la ruleta
 centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de la guía del par { $joint }: su movimiento relativo sigue la guía, { $sym } = { $value }.
+composition-slide_seen = { $point } desliza a lo largo de la guía del par { $joint }; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado arriba: { $sym } = { $seen } = { $value }.
 composition-pin = { $point } es el pasador del par { $joint }, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)
@@ -260,6 +265,13 @@ how-weld = (unión rígida { $joint }: un solo sólido)
 group-wheel_v = La rueda { $joint } no desliza lateralmente: la velocidad de { $point } está en el plano de la rueda.
 group-wheel_a = La rueda { $joint } no desliza lateralmente en ningún instante y su plano gira con { $body }: la aceleración de { $point } tiene una parte tangencial en el plano y una normal perpendicular a él, { $w } × { $v }.
 how-translation = (se traslada)
+translation-same = { $body } no gira ({ $w } = 0{ $accel ->
+        [1] , { $a } = 0
+       *[other] {""}
+    }): se traslada, y todos sus puntos tienen la misma { $accel ->
+        [1] aceleración
+       *[other] velocidad
+    }:
 copy-same = { $body } tiene las mismas uniones, con los mismos sólidos, y el mismo radio que { $original }, y ocupa su lugar tras un giro de { $angle } alrededor de { $centre }: su movimiento es el de { $original }, girado, con la misma { $accel ->
         [1] aceleración angular
        *[other] velocidad angular
@@ -303,6 +315,10 @@ centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
 centre-field = ningún par ni ninguna recta de Aronhold–Kennedy lo sitúan antes de conocer las velocidades; con ellas, 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
 centre-check = Comprobación con las velocidades halladas: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value }, el mismo punto: { $centre } está { $where }
+sec-centres_v = CIR hallados a partir de las velocidades
+how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
+centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
+centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto
 geom-rule = La regla de todo contacto de rodadura: la condición de no deslizamiento se cumple en cada instante en el punto geométrico de contacto (aquí { $geom }), que se mueve; derivándola a lo largo de él se obtiene { $rule }: las componentes tangenciales de las dos aceleraciones son iguales y las normales difieren en este término, según la normal común. Hace falta la velocidad del punto geométrico:
 geom-bar = { $geom }, el punto geométrico de contacto del par { $joint }, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, en la misma fracción de ella, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:

@@ -159,6 +159,7 @@ cond-spherical = { $joint } lotura, esferikoa { $point } puntuan: { $point } { $
 cond-cylindrical = { $joint } lotura, zilindrikoa: { $b } solidoa { $a } solidoaren ardatzaren inguruan biratzen eta haren luzeran irristatzen da.
 rolling-noslip = { $joint } lotura: { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute.
 rolling-kept = { $joint } lotura: kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak.
+rolling-centre = { $joint } lotura: { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe, eta { $a } solidoa ez da mugitzen: kontaktuko { $point } puntuak, { $b } solidoarenak, ez du abiadurarik, { $sym } = 0; beraz, { $b } solidoaren biraketa-zentro instantaneoa da.
 dir-guide = { $joint } gida
 dir-normal = normala
 how-prismatic = ({ $joint } lotura prismatikoa: biraketa erlatiborik gabe)
@@ -226,6 +227,7 @@ ans-pole_velocity = I zentroaren abiadura polodietan zehar
 centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
+composition-slide_seen = { $point } puntua { $joint } loturaren gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek goian aurkitutako mugimendu erlatiboa dute: { $sym } = { $seen } = { $value }.
 composition-pin = { $point } puntua { $joint } loturaren ardatza da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
@@ -245,6 +247,13 @@ how-weld = ({ $joint } lotura zurruna: solido bakarra)
 group-wheel_v = { $joint } gurpila ez da alboetara irristatzen: { $point } puntuaren abiadura gurpilaren planoan dago.
 group-wheel_a = { $joint } gurpila ez da inoiz alboetara irristatzen, eta haren planoa { $body } solidoarekin batera biratzen da: { $point } puntuaren azelerazioak zati tangentzial bat du planoan eta zati normal bat planoarekiko perpendikularra, { $w } × { $v }.
 how-translation = (traslatzen da)
+translation-same = { $body } solidoa ez da biratzen ({ $w } = 0{ $accel ->
+        [1] , { $a } = 0
+       *[other] {""}
+    }): traslatzen da, eta haren puntu guztiek { $accel ->
+        [1] azelerazio
+       *[other] abiadura
+    } bera dute:
 copy-same = { $body } solido berberei lotuta dago, { $original } bezala eta erradio berarekin, eta haren lekuan dago, { $centre } puntuaren inguruan { $angle } biratuta: { $original } bezala mugitzen da, biratuta, { $accel ->
         [1] azelerazio angeluar
        *[other] abiadura angeluar
@@ -288,6 +297,10 @@ centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko norm
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
 centre-field = ez lotura batek ez Aronhold–Kennedyren zuzen batek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-check = Egiaztapena aurkitutako abiadurekin: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du, puntu bera: { $centre }, { $where }
+sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
+how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
+centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
+centre-site_i = { $body } solidoaren { $centre } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
 geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
 geom-bar = { $geom }, { $joint } loturaren kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, zati berean, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
