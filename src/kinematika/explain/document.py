@@ -153,6 +153,7 @@ class Derived:
     sense: bool = False                           # say counter-clockwise / clockwise
     source: Optional[Term] = None                 # the term it is read from: ω × r or α × r
     arm: Optional[tuple] = None                   # r, with source.value = value k × r
+    remark: Optional[Msg] = None                  # why, after the value: ω_2 = 0 (its centre is at infinity)
 
 
 @dataclass

@@ -33,7 +33,7 @@ import numpy as np
 from ..algebra.vectors import dot, scale, sub
 from ..model.model import Joint
 from .context import Ctx, alpha_sym, omega_sym
-from .document import (Ann, Derived, Equation, Sym, Term, Value, body as body_name, joint as joint_name, msg,
+from .document import (Ann, Derived, Equation, Msg, Sym, Term, Value, body as body_name, joint as joint_name, msg,
                        point as point_name)
 from .order import jointed
 from .contacts import geometric_blocks
@@ -619,6 +619,15 @@ class Writer:
             target = Term(Sym(lv, self.label(p.end)), _total(end), Ann("?"), Ann("?"), unknown=True, kind="point")
             sides.insert(0, end)
         position = None if p.end.point in ctx.inst.points else ctx.pos(p.end.point)
+        crossing = _crossing_only(p)
+        if lv == "v" and crossing is not None and len(sides) == 1 and len(sides[0]) == 1 and not p.finds:
+            ps.done.add(self.label(p.end))       # no slip says it: v_J10∈9 = v_J10∈8, in its sentence
+            out = [b for b in out if not (isinstance(b, Msg) and b.key == "rolling.noslip"
+                                          and b.args["joint"].text == crossing.id)]
+            out.append(msg("rolling.same", joint=joint_name(crossing.id), a=body_name(crossing.a),
+                           b=body_name(crossing.b), point=point_name(p.end.point), sym=target.sym,
+                           other=sides[0][0].sym))
+            return out
         out.append(Equation(target, sides, lv, ctx.ref(p.end.point, p.end.body), position=position,
                             owned=owned if contacts else [], contacts=contacts))
         ps.done.add(self.label(p.end))
@@ -772,8 +781,8 @@ class Writer:
         """ω = 0 of a body whose instant centre is at infinity: it translates."""
         ctx = self.ctx
         centre = Sym("I", f"{ctx.frame},{s.body}", vector=False)
-        return Derived(omega_sym(s.body), [msg("how.centre_infinity", centre=centre)], ctx.value(ctx.omega(s.body), "rate"),
-                       s.body, "omega", False)
+        return Derived(omega_sym(s.body), [], ctx.value(ctx.omega(s.body), "rate"), s.body, "omega", False,
+                       remark=msg("how.centre_infinity", centre=centre))
 
     def same(self, s: Same) -> Derived:
         """ω (α) shared across a weld or a prismatic pair, or through a driven joint."""
@@ -792,6 +801,15 @@ class Writer:
             how = [sym_of(s.other), sign, rel, " = ", sym_of(s.other), sign, rate]
         return Derived(sym_of(s.body), how, ctx.value(value, unit), s.body,
                        "omega" if lv == "v" else "alpha", not ctx.symbolic)
+
+
+def _crossing_only(p: Path) -> Optional[Joint]:
+    """The rolling joint of an equation that only crosses one contact (no turn): the
+    material points there have one velocity."""
+    if len(p.routes) != 1 or len(p.routes[0].segs) != 1:
+        return None
+    seg = p.routes[0].segs[0]
+    return seg.joint if seg.kind == "cross" and seg.joint is not None and rolls(seg.joint) else None
 
 
 def still_contact(ctx: Ctx, j: Joint, fixed: str, body: str):

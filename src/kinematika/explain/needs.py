@@ -117,9 +117,16 @@ def _prune_section(sec: Section, level: str, asked: set[str], used: set[str], te
     serves a term there: it stays, and so does what it uses)."""
     needed = set(used) | set(asked)
     needed_labels: set[tuple] = set(terms)
-    holders = [(h, eq) for h, eq in _holders(sec) if eq.level == level]
+    holders = [(h, eq) for h, eq in _holders(sec) if isinstance(eq, Msg) or eq.level == level]
     dropped = []
     for holder, eq in reversed(holders):
+        if isinstance(eq, Msg):             # no slip in a sentence, v_J∈9 = v_J∈8: a forward step too
+            target, other = eq.args["sym"], eq.args["other"]
+            if (target.base, target.sub) not in needed_labels and _point_of(target.sub) not in needed:
+                holder.blocks.remove(eq)
+            else:
+                needed_labels.add((other.base, other.sub))
+            continue
         forward = not any(t.unknown for side in eq.sides for t in side)
         label = (eq.target.sym.base, eq.target.sym.sub)
         point = _point_of(eq.target.sym.sub)
@@ -164,11 +171,13 @@ def _owned_holders(sec: Section, owned: list) -> list:
     return out
 
 
-def _holders(sec: Section) -> list[tuple[Section, Equation]]:
+def _holders(sec: Section) -> list[tuple[Section, Equation | Msg]]:
+    """The section's equations, and its no-slip sentences (`rolling.same`), in order, with
+    the section that holds each."""
     out: list = []
     for b in sec.blocks:
         if isinstance(b, Section):
             out += _holders(b)
-        elif isinstance(b, Equation):
+        elif isinstance(b, Equation) or (isinstance(b, Msg) and b.key == "rolling.same"):
             out.append((sec, b))
     return out

@@ -133,10 +133,21 @@ class PlanarSteps:
             out.append(msg("input.revolute", body=body_(body), point=point(j.at)))
             return out
         p = self.ctx.model.bodies[body].points[0]
-        side = [point_term(self.ctx, self.level, p, j.a if j.b == body else j.b)] + \
-            slide_terms(self.ctx, self.level, j.a if j.b == body else j.b, body, p, guide(j), j.id, False)
-        out += [msg("input.prismatic", body=body_(body), joint=joint(j.id)), self.equation(self.target(p, body, True), [side], p, body)]
+        holder = j.a if j.b == body else j.b
+        out.append(msg("input.prismatic", body=body_(body), joint=joint(j.id)))
+        if self.ctx.fixed(holder) and self.given_point(p, body):
+            self.done.add(self.ctx.point_label(p, body))      # "Given: v_A …" along a fixed guide says it all
+            return out
+        side = [point_term(self.ctx, self.level, p, holder)] + \
+            slide_terms(self.ctx, self.level, holder, body, p, guide(j), j.id, False)
+        out.append(self.equation(self.target(p, body, True), [side], p, body))
         return out
+
+    def given_point(self, p: str, body: str) -> bool:
+        """Whether a driver gives the velocity of point p of `body` (and its acceleration)."""
+        key = self.ctx.motion_key(p, body)
+        return any(d.kind == "velocity" and self.ctx.motion_key(d.point.point, d.point.body) == key
+                   for d in self.ctx.model.drivers)
 
     def rrr(self, step: Step, chain: list[Joint]) -> Optional[list]:
         """RRR: B, the pin of the two bodies, from each pivot: v_B = v_A + ω₁ × AB = v_C + ω₂ ×

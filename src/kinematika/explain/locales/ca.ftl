@@ -237,6 +237,10 @@ rolling-kept = enllaç { $joint }: el contacte es manté: a { $point } les accel
         [vowel] d’{ $a }
        *[other] de { $a }
     } només difereixen en un terme segons la normal comuna.
+rolling-same = enllaç { $joint }: { $b } { COUNT($b) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat, { $sym } = { $other }.
 rolling-centre = enllaç { $joint }: { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola

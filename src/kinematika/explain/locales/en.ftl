@@ -159,6 +159,7 @@ cond-spherical = joint { $joint }, ball joint at { $point }: { $point } is one p
 cond-cylindrical = joint { $joint }, cylindrical: { $b } turns about and slides along the axis of { $a }.
 rolling-noslip = joint { $joint }: { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity.
 rolling-kept = joint { $joint }: the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
+rolling-same = joint { $joint }: { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
 rolling-centre = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
 dir-guide = guide { $joint }
 dir-normal = normal

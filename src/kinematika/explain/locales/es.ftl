@@ -171,6 +171,10 @@ rolling-noslip = par { $joint }: { $b } { COUNT($b) ->
        *[one] rueda
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
 rolling-kept = par { $joint }: el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
+rolling-same = par { $joint }: { $b } { COUNT($b) ->
+        [many] ruedan
+       *[one] rueda
+    } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
 rolling-centre = par { $joint }: { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda

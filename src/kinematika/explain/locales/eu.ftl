@@ -159,6 +159,7 @@ cond-spherical = { $joint } lotura, esferikoa { $point } puntuan: { $point } { $
 cond-cylindrical = { $joint } lotura, zilindrikoa: { $b } solidoa { $a } solidoaren ardatzaren inguruan biratzen eta haren luzeran irristatzen da.
 rolling-noslip = { $joint } lotura: { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute.
 rolling-kept = { $joint } lotura: kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak.
+rolling-same = { $joint } lotura: { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute, { $sym } = { $other }.
 rolling-centre = { $joint } lotura: { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe, eta { $a } solidoa ez da mugitzen: kontaktuko { $point } puntuak, { $b } solidoarenak, ez du abiadurarik, { $sym } = 0; beraz, { $b } solidoaren biraketa-zentro instantaneoa da.
 dir-guide = { $joint } gida
 dir-normal = normala

@@ -401,6 +401,8 @@ class Renderer:
         text = " = ".join(parts)
         if d.sense and isinstance(d.value.value, float) and d.value.value != 0:
             text += " (" + self.message(Msg("sense.ccw" if d.value.value > 0 else "sense.cw")) + ")"
+        if d.remark is not None:
+            text += " " + self.message(d.remark)
         return text
 
     def term_line(self, t) -> str:
