@@ -221,3 +221,36 @@ def test_the_bar_slides_on_its_support_one_way_round():
     said = [b for b in blocks(section(doc, "sec.composition")) if isinstance(b, Msg)
             and b.key == "composition.slide_seen"]
     assert [m.args["seen"].sub for m in said] == ["Q∈bar/support", "Q∈bar/support"]
+
+
+def test_a_slider_given_on_a_fixed_guide_needs_no_equation():
+    """Seed 001's rolling pair: the slider's datum is v_A along the fixed guide; the slides
+    write nothing more for it (v_A = v_A∈1 + v_A∈S/1 would only repeat the datum)."""
+    _, doc = explained("seed_001_rolling_pair")
+    for key in ("sec.velocities", "sec.accelerations"):
+        first = steps(doc, key)[0]
+        assert not any(isinstance(b, Equation) for b in first.blocks), key
+        assert any(isinstance(b, Msg) and b.key.startswith("driver.") for b in first.blocks)
+
+
+def test_no_slip_between_moving_bodies_is_a_sentence():
+    """C5-1.5: the block leaves the last pulley at the pulley's speed; no slip says so in
+    the contact's sentence (v_J10∈9 = v_J10∈8), never as an equation of one term."""
+    sol, doc = explained("seed_c5_1_5_pulley_block")
+    velocities = blocks(section(doc, "sec.velocities"))
+    for eq in (b for b in velocities if isinstance(b, Equation)):
+        for side in eq.sides:
+            one = len(side) == 1 and side[0].kind == "point"
+            assert not (one and "∈" in side[0].sym.sub and "∈" in eq.target.sym.sub
+                        and side[0].sym.sub.split("∈")[0] == eq.target.sym.sub.split("∈")[0]), eq.target.sym
+    said = [b for b in velocities if isinstance(b, Msg) and b.key == "rolling.same"]
+    assert [m.args["joint"].text for m in said] == ["j10"]
+
+
+@pytest.mark.parametrize("name,body", [("seed_c5_2_2_articulated", "S1"), ("seed_c5_e4_upper_wheel", "chassis")])
+def test_a_translation_says_why_after_its_zero(name, body):
+    """ω = 0 of a body that translates reads "ω_2 = 0 (it translates)", the reason after the
+    value, never "ω_2 = (it translates) = 0"."""
+    _, doc = explained(name)
+    rates = [d for d in blocks(section(doc, "sec.velocities")) if isinstance(d, Derived) and d.body == body]
+    assert rates and all(not d.how and d.remark is not None for d in rates)

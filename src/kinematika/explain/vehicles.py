@@ -149,7 +149,8 @@ def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
             return _from_centre(ctx, b, centre, [why1, why2], witness)
     if len(lines) >= 2 and ctx.is_zero(ctx.omega(b), "rate"):
         return [msg("vehicle.translation", body=Name(b, "body"), point=Name(witness)),
-                Derived(omega_sym(b), [msg("how.translation")], ctx.value(ctx.omega(b), "rate"), b, "omega", False)]
+                Derived(omega_sym(b), [], ctx.value(ctx.omega(b), "rate"), b, "omega", False,
+                        remark=msg("how.translation"))]
     return None
 
 
