@@ -98,6 +98,8 @@ def test_a_bodys_index_is_written_everywhere():
     ({"index(nobody)": "N"}, "notation.index(nobody)"),
     ({"spin(j1)": {"symbol": "phidot", "radius": "r"}}, "notation.spin(j1)"),     # not a wheel
     ({"spin(j9)": {"symbol": "phidot", "radius": "r"}}, "notation.spin(j9)"),
+    ({"contact(j1)": "F"}, "notation.contact(j1)"),            # a pin has no contact to name
+    ({"contact(j9)": "F"}, "notation.contact(j9)"),
 ])
 def test_a_wrong_index_or_spin_is_an_error_naming_its_place(notation, place):
     from kinematika.errors import KinematikaError
@@ -105,3 +107,21 @@ def test_a_wrong_index_or_spin_is_an_error_naming_its_place(notation, place):
     with pytest.raises(KinematikaError) as err:
         kinematika.solve({**FOUR, "parameters": {"r": 1}, "notation": notation})
     assert err.value.where == place or place in str(err.value), (str(err.value), notation)
+
+
+def test_a_contact_is_named_as_the_notes_name_it():
+    """notation contact(j4): F — the slides' rolling pair writes its contact F (F_R, F_N):
+    the explanation's equations and sentences write F∈R and F∈N, never J; a contact name
+    that is not one to four letters or digits is an error naming its place."""
+    from kinematika.errors import KinematikaError
+
+    from .helpers import EXAMPLES
+
+    doc = build(kinematika.solve(EXAMPLES / "seed_001_rolling_pair.yaml"))
+    text = render(doc, "eu", "md", drawings=False)
+    assert "v_{F∈R}" in text and "v_{F∈N}" in text
+    assert "J∈" not in text and "J^geom" not in text
+    text = (EXAMPLES / "seed_001_rolling_pair.yaml").read_text().replace("contact(j4): F ", "contact(j4): F! ")
+    with pytest.raises(KinematikaError) as err:
+        kinematika.solve(text)
+    assert err.value.where == "notation.contact(j4)"

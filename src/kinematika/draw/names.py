@@ -91,11 +91,13 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
 def contact_name(model: Any, joint_id: str) -> str:
     """The name of a rolling or gear joint's contact point, as the text and the figures both
     write it: J when the model has one contact (the notes' J), else J and the joint's number
-    (J10 for joint j10, or its place among the contacts when ids are names); never a point's
-    name (a prime is added)."""
+    (J10 for joint j10, or its place among the contacts when ids are names), or the name the
+    model's notation gives it (`contact(j4): F`, the slides' F); never a point's name (a
+    prime is added)."""
     rolling = [j.id for j in model.joints if j.kind.touches]
     number = joint_id[1:] if re.fullmatch(r"j\d+", joint_id) else str(rolling.index(joint_id) + 1)
-    base = "J" if len(rolling) == 1 else f"J{number}"
+    named = getattr(getattr(model, "wording", None), "contacts", {}).get(joint_id)
+    base = named or ("J" if len(rolling) == 1 else f"J{number}")
     while base in model.points:
         base += "'"
     return base

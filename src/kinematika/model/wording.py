@@ -56,6 +56,7 @@ RATE = re.compile(r"^(omega|alpha)\((.+)\)$")
 SPELLING = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")      # a name sympy writes as a symbol
 INDEX_KEY = re.compile(r"^index\((.+)\)$")                # notation: index(BODY): N
 SPIN_KEY = re.compile(r"^spin\((.+)\)$")                  # notation: spin(JOINT): {symbol, radius}
+CONTACT_KEY = re.compile(r"^contact\((.+)\)$")            # notation: contact(JOINT): NAME
 INDEX = re.compile(r"^[A-Za-z0-9]{1,4}$")                 # a body's index as the notes write it
 
 
@@ -72,6 +73,7 @@ class Wording:
     notes: dict[str, list[str]] = field(default_factory=dict)           # lang -> notes
     indices: dict[str, dict[str, str]] = field(default_factory=dict)    # body -> lang|"*" -> its index
     spins: dict[str, tuple[str, str]] = field(default_factory=dict)     # wheel joint -> (symbol, radius)
+    contacts: dict[str, str] = field(default_factory=dict)              # rolling joint -> its contact's name
     symbols: dict[str, dict[str, str]] = field(default_factory=dict)    # key -> lang|"*" -> name
 
     def title(self, lang: str, default: str) -> str:
@@ -153,6 +155,11 @@ def read_wording(names: Any, notation: Any, bodies: dict, points: dict, paramete
         if spin is not None:
             out.spins[_spin_joint(spin.group(1).strip(), joints or {}, where)] = _spin(spelt, parameters, where)
             continue
+        contact = CONTACT_KEY.match(raw.strip())
+        if contact is not None:
+            out.contacts[_contact_joint(contact.group(1).strip(), joints or {}, where)] = _index(spelt, where,
+                                                                                                "contact-name-shape")
+            continue
         index = INDEX_KEY.match(raw.strip())
         if index is not None:
             b = _known(index.group(1).strip(), bodies, "body", where)
@@ -200,6 +207,18 @@ def _spin_joint(name: str, joints: dict, where: str) -> str:
     return name
 
 
+def _contact_joint(name: str, joints: dict, where: str) -> str:
+    """A rolling or gear joint (`contact(j4)`): its contact point is written as the notes
+    write it (the slides' F) in the explanation and its figures."""
+    from ..joints import KINDS
+
+    if name not in joints or not getattr(joints[name].kind, "touches", False):
+        touching = [j for j, joint in joints.items() if joint.kind.touches]
+        kinds = Names(sorted(k.name for k in KINDS.values() if k.touches), joined="or")
+        raise KinematikaError("schema", "contact-not-touching", where, text=name, kinds=kinds, joints=touching)
+    return name
+
+
 def _spin(spelt: Any, parameters: dict, where: str) -> tuple[str, str]:
     """{symbol: NAME, radius: PARAMETER}: how the spin is written and the wheel's radius."""
     if not isinstance(spelt, dict) or set(spelt) != {"symbol", "radius"}:
@@ -211,9 +230,9 @@ def _spin(spelt: Any, parameters: dict, where: str) -> tuple[str, str]:
     return _spelling(spelt["symbol"], f"{where}.symbol"), radius
 
 
-def _index(text: str, where: str) -> str:
+def _index(text: str, where: str, key: str = "index-shape") -> str:
     if not isinstance(text, str) or not INDEX.match(text):
-        raise KinematikaError("schema", "index-shape", where, index=str(text))
+        raise KinematikaError("schema", key, where, index=str(text))
     return text
 
 

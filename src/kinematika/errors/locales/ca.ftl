@@ -727,6 +727,7 @@ spin-not-wheel = l’enllaç '{ $joint }' no és una roda: només una roda té v
 spin-shape = un gir propi s’escriu {"{"}symbol: NOM, radius: PARÀMETRE{"}"} (symbol: phidot, radius: r)
 spin-radius-unknown = el radi '{ $radius }' no és un paràmetre (paràmetres: { $parameters })
 index-shape = '{ $index }' no és un índex de sòlid: d’una a quatre lletres o xifres (N, 1, R, T)
+contact-name-shape = '{ $index }' no és un nom de punt de contacte: d’una a quatre lletres o xifres (F, J, K2)
 
 ## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
 needs-draw-at = { $what ->

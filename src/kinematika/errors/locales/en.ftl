@@ -641,6 +641,7 @@ spin-not-wheel = joint '{ $joint }' is not a wheel: only a wheel has a spin
 spin-shape = a spin is {"{"}symbol: NAME, radius: PARAMETER{"}"} (symbol: phidot, radius: r)
 spin-radius-unknown = the radius '{ $radius }' is not a parameter (parameters: { $parameters })
 index-shape = '{ $index }' is not a body's index: one to four letters or digits (N, 1, R, T)
+contact-name-shape = '{ $index }' is not a contact's name: one to four letters or digits (F, J, K2)
 
 ## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
 needs-draw-at = { $what ->

@@ -727,6 +727,7 @@ spin-not-wheel = el par '{ $joint }' no es una rueda: solo una rueda tiene veloc
 spin-shape = un giro propio se escribe {"{"}symbol: NOMBRE, radius: PARÁMETRO{"}"} (symbol: phidot, radius: r)
 spin-radius-unknown = el radio '{ $radius }' no es un parámetro (parámetros: { $parameters })
 index-shape = '{ $index }' no es un índice de sólido: de una a cuatro letras o cifras (N, 1, R, T)
+contact-name-shape = '{ $index }' no es un nombre de punto de contacto: de una a cuatro letras o cifras (F, J, K2)
 
 ## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
 needs-draw-at = { $what ->

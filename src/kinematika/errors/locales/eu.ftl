@@ -730,6 +730,7 @@ spin-not-wheel = '{ $joint }' lotura ez da gurpil bat: gurpil batek bakarrik du 
 spin-shape = biraketa propioa honela idazten da: {"{"}symbol: IZENA, radius: PARAMETROA{"}"} (symbol: phidot, radius: r)
 spin-radius-unknown = '{ $radius }' erradioa ez da parametro bat (parametroak: { $parameters })
 index-shape = '{ $index }' ez da solido baten indizea: lau letra edo zifra gehienez (N, 1, R, T)
+contact-name-shape = '{ $index }' ez da kontaktu-puntu baten izena: lau letra edo zifra gehienez (F, J, K2)
 
 ## symbols at their draw_at numbers, travel, straight outlines (sweep/posing.py, sweep/plan.py, joints/touching.py)
 needs-draw-at = { $what ->
