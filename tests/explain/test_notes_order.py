@@ -179,7 +179,7 @@ def test_a_wheel_on_a_fixed_body_turns_about_its_contact(name, body):
 
 
 @pytest.mark.parametrize("name,body,points", [
-    ("seed_c5_e6_bicycle", "frame", ["F", "K"]),        # C5-E.6: "el quadre només es trasllada"
+    ("seed_c5_e6_bicycle", "frame", ["K"]),             # C5-E.6: "el quadre només es trasllada"
     ("seed_c5_e5_unequal_wheels", "chassis", ["B", "D"]),
 ])
 def test_a_body_that_does_not_turn_moves_its_points_alike(name, body, points):
@@ -254,3 +254,25 @@ def test_a_translation_says_why_after_its_zero(name, body):
     _, doc = explained(name)
     rates = [d for d in blocks(section(doc, "sec.velocities")) if isinstance(d, Derived) and d.body == body]
     assert rates and all(not d.how and d.remark is not None for d in rates)
+
+
+@pytest.mark.parametrize("name,centre,fixed_circle", [
+    ("seed_c5_1_7_semicylinder", "C", True),     # C5-1.7: C on a circle of radius 3r about O
+    ("seed_c5_1_8_contact_points", "C", True),   # C5-1.8: C's (1/3) r ω0² towards the cylinder's centre
+    ("seed_c5_e1_cavity", "C", True),            # C5-E.1: C on a circle of radius 2R about O
+    ("seed_c5_e6_bicycle", "H", False),          # C5-E.6: the hub on a straight line, α = v̇/R_roda
+])
+def test_a_wheel_on_a_fixed_body_is_accelerated_through_its_centre(name, centre, fixed_circle):
+    """The notes reach the acceleration of a wheel rolling on a fixed profile through its
+    centre's path: C keeps its distance from the profile, so a_C = v_C²/OC (towards O) +
+    α × JC — no geometric contact point, no contact term, in the wheel's step."""
+    _, doc = explained(name)
+    first = next(s for s in steps(doc, "sec.accelerations")
+                 if any(isinstance(b, Msg) and b.key.startswith("path.") for b in s.blocks))
+    said = next(b for b in first.blocks if isinstance(b, Msg) and b.key.startswith("path."))
+    assert said.key == ("path.circle" if fixed_circle else "path.line") and said.args["centre"].text == centre
+    assert not any(isinstance(b, Msg) and b.key.startswith(("geom.", "rolling.kept")) for b in first.blocks)
+    eq = next(b for b in first.blocks if isinstance(b, Equation) and b.target.sym.sub == centre)
+    kinds = [t.kind for side in eq.sides for t in side]
+    assert "contact" not in kinds and kinds.count("path") == (1 if fixed_circle else 0)
+    assert kinds[-1] == "tangential"

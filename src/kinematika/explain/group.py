@@ -32,7 +32,7 @@ import numpy as np
 
 from ..algebra.vectors import dot, scale, sub
 from ..model.model import Joint
-from .context import Ctx, alpha_sym, omega_sym
+from .context import Ctx, alpha_sym, omega_sym, segment
 from .document import (Ann, Derived, Equation, Msg, Sym, Term, Value, body as body_name, joint as joint_name, msg,
                        point as point_name)
 from .order import jointed
@@ -128,14 +128,34 @@ class Planner:
         self.events: list = []                      # Path and Same, in order
         self.used: list[str] = []                   # joints written, in order
         self.still: dict[str, tuple[Joint, str]] = {}   # label of a contact at rest -> (joint, fixed body)
+        self.centred: dict[str, tuple[str, str]] = {}     # at accelerations: joint -> (wheel, its centre)
         self._labels: dict[Site, str] = {}
         self.sites = {b: self._sites(b) for b in ctx.model.bodies}
         for b in self.determined:
             self.full.update(self.label(s) for s in self.sites[b])
         if centres and level == "v":
             self._centres()
+        if level == "a":
+            self._centred()
         self._given()
         self._propagate()
+
+    def _centred(self) -> None:
+        """At accelerations, a wheel rolling on a fixed body is reached through its centre C:
+        C keeps its distance from the fixed profile, so it moves on a circle about the
+        profile's centre (on a line along a straight one), and v_C = ω × JC at every instant —
+        the notes' road to a_C (C5-1.7: "trajectòria circular de radi 3r"; C5-E.1, E.6)."""
+        ctx, group = self.ctx, set(self.group)
+        for j in ctx.model.joints:
+            contact = ctx.sol.geometry(j.id).contact if rolls(j) else None
+            if contact is None:
+                continue
+            for fixed, body in ((j.a, j.b), (j.b, j.a)):
+                if body not in group or fixed not in self.determined or not ctx.fixed(fixed):
+                    continue
+                centre = path_centre(ctx, j, body)
+                if centre is not None and Site(centre, body) in self.sites[body]:
+                    self.centred[j.id] = (body, centre)
 
     def _centres(self) -> None:
         """The instant centres placed before the velocities (`centres.centre_sites`): each a
@@ -302,7 +322,9 @@ class Planner:
                     if label == self.label(start) or (seg.kind == "cross" and label in self.still):
                         continue                # a contact at rest is known as it is, not crossed into
                     route = segs + (seg,)
-                    out.setdefault(label, []).append(Route(start, route, t))
+                    into = seg.kind == "cross" and self.centred.get(seg.joint.id, ("",))[0] == nxt.body
+                    if not into:                # the wheel's contact point is no end: its centre is
+                        out.setdefault(label, []).append(Route(start, route, t))
                     if self.state(nxt) == "none":
                         seen = visited + ((nxt.body,) if nxt.body not in visited else ())
                         queue.append((nxt, seen, route, t, seg.kind))
@@ -366,9 +388,38 @@ class Planner:
         order = {id(p): i for i, p in enumerate(found)}
         def key(p: Path) -> tuple:      # a rotation about a point at rest finds ω alone, as the notes do
             rest = self._from_rest(p)
-            return (not p.finds, len(p.routes), not rest, p.turns, p.unknowns if rest else -p.unknowns,
-                    self._against(p), -self._end_rank(p), order[id(p)])
+            return (not p.finds, len(p.routes), self._off_centre(p), -self._via_centre(p), not rest, p.turns,
+                    p.unknowns if rest else -p.unknowns, self._against(p), -self._end_rank(p), order[id(p)])
         return min(found, key=key)
+
+    def _via_centre(self, p: Path) -> int:
+        """How many times the equation goes from a fixed body into a wheel and on to its
+        centre — the notes' a_C = v_C²/OC + α × JC (`_centred`)."""
+        n = 0
+        for r in p.routes:
+            for g, h in zip(r.segs, r.segs[1:]):
+                found = self.centred.get(g.joint.id) if g.kind == "cross" and g.joint is not None else None
+                if found is not None and found[0] == g.body and h.kind == "turn" and h.p == found[1]:
+                    n += 1
+        return n
+
+    def _off_centre(self, p: Path) -> int:
+        """How many times the equation enters a wheel on a fixed body and turns to another
+        point than its centre (the notes go through the centre: `_centred`)."""
+        if not self.centred:
+            return 0
+        ends = {(body, self.ctx.contact(self.ctx.model.joint(jid))): centre
+                for jid, (body, centre) in self.centred.items()}
+        n = 0
+        for r in p.routes:
+            for g in r.segs:
+                if g.kind != "turn":
+                    continue
+                for a, b in ((g.q, g.p), (g.p, g.q)):     # the wheel turned between its contact and another point
+                    centre = ends.get((g.body, a))
+                    if centre is not None and b != centre:
+                        n += 1
+        return n
 
     def _against(self, p: Path) -> int:
         """How many guides the equation crosses from the slider into the guide's body: the
@@ -593,8 +644,11 @@ class Writer:
                 out += self.condition(wheel, s)
         contacts: list[str] = []
         for r in p.routes:
-            for seg in r.segs:
+            for i, seg in enumerate(r.segs):
                 if seg.joint is not None:
+                    if self._centred(r, i):
+                        out += self.path_said(seg.joint, seg.body, r.segs[i + 1].p)
+                        continue
                     out += self.condition(seg.joint, Site(seg.p, seg.body))
                     if rolls(seg.joint):
                         contacts.append(ctx.contact(seg.joint))
@@ -606,7 +660,19 @@ class Writer:
         sides, reads = [], {}
         for r in p.routes:
             terms = self.site_terms(r.start, p)
-            for seg in r.segs:
+            skip = -1
+            for i, seg in enumerate(r.segs):
+                if i == skip:
+                    continue
+                if self._centred(r, i):         # J∈fixed, the contact, ω²·JC: the centre's path normal
+                    turn = r.segs[i + 1]
+                    made = self.seg_terms(turn, p)
+                    terms = self.path_terms(seg.joint, turn.body, turn.p, terms + self.seg_terms(seg, p) + made[:-1])
+                    terms.append(made[-1])
+                    skip = i + 1
+                    if turn.body in p.finds:
+                        reads.setdefault(turn.body, (turn, made[-1]))
+                    continue
                 made = self.seg_terms(seg, p)
                 terms += made
                 if seg.kind == "turn" and seg.body in p.finds and made:
@@ -636,6 +702,45 @@ class Writer:
             seg, term = reads[body]
             out.append(ps.read(body, term, seg.q, seg.p))
         return out + self.anchors(p)
+
+    def _centred(self, r: Route, i: int) -> bool:
+        """Whether piece i of the route crosses into a wheel on a fixed body that the route
+        then turns to its centre (at accelerations: `Planner._centred`)."""
+        seg = r.segs[i]
+        if self.level != "a" or seg.kind != "cross" or seg.joint is None or i + 1 >= len(r.segs):
+            return False
+        found = self.plan.centred.get(seg.joint.id)
+        nxt = r.segs[i + 1]
+        return found is not None and found[0] == seg.body and nxt.kind == "turn" and nxt.p == found[1]
+
+    def path_said(self, j: Joint, body: str, centre: str) -> list:
+        """The sentence of a wheel's centre on its path (once per joint and level)."""
+        ps, ctx = self.ps, self.ctx
+        if j.id in ps.used:
+            return []
+        ps.used.add(j.id)
+        fixed = j.a if j.b == body else j.b
+        name, o = ctx.contact(j), path_origin(ctx, j, fixed)
+        args = dict(joint=joint_name(j.id), a=body_name(fixed), b=body_name(body), centre=point_name(centre),
+                    point=point_name(name), vc=Sym("v", ctx.point_label(centre, body)), ac=Sym("a", centre),
+                    w=omega_sym(body), al=alpha_sym(body), arm=point_name(str(segment(name, centre))))
+        if o is None:
+            return [msg("path.line", **args)]
+        return [msg("path.circle", o=point_name(o), radius=point_name(str(segment(o, centre))), **args)]
+
+    def path_terms(self, j: Joint, body: str, centre: str, replaced: list[Term]) -> list[Term]:
+        """The centre's normal acceleration on its path, v_C² / OC towards O: the sum of the
+        terms it stands for (a_J∈fixed, the contact's term, ω²·JC), none on a straight path."""
+        ctx = self.ctx
+        fixed = j.a if j.b == body else j.b
+        o = path_origin(ctx, j, fixed)
+        if o is None:
+            return []
+        value = _total(replaced)
+        oc = segment(o, centre)
+        v = Sym("v", ctx.point_label(centre, body), vector=False)
+        return [Term(Sym("a", ctx.point_label(centre, body), "n"), ctx.clean(value, "accel"),
+                     Ann("M", [v, f"²/{oc}"]), Ann("para", segment(centre, o)), [v, f"² / {oc}"], False, "path")]
 
     def known_first(self, s: Site, p: Path) -> list:
         """A point of a body found earlier (in an earlier step, or by an earlier equation of
@@ -801,6 +906,30 @@ class Writer:
             how = [sym_of(s.other), sign, rel, " = ", sym_of(s.other), sign, rate]
         return Derived(sym_of(s.body), how, ctx.value(value, unit), s.body,
                        "omega" if lv == "v" else "alpha", not ctx.symbolic)
+
+
+def path_centre(ctx: Ctx, j: Joint, body: str) -> Optional[str]:
+    """The named centre of `body`'s circle in rolling joint j (a point of the body), or None."""
+    from .contacts import centre_name
+
+    contact = ctx.sol.geometry(j.id).contact
+    for b, c in getattr(contact, "centres", []):
+        if b == body:
+            name = centre_name(ctx, b, c)
+            return name if name in ctx.model.bodies[body].points else None
+    return None
+
+
+def path_origin(ctx: Ctx, j: Joint, fixed: str) -> Optional[str]:
+    """The centre of the fixed circle a wheel rolls on (its centre's path is a circle about
+    it), or None on a straight profile."""
+    from .contacts import centre_name
+
+    contact = ctx.sol.geometry(j.id).contact
+    for b, c in getattr(contact, "centres", []):
+        if b == fixed:
+            return centre_name(ctx, b, c)
+    return None
 
 
 def _crossing_only(p: Path) -> Optional[Joint]:

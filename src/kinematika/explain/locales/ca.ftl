@@ -237,6 +237,14 @@ rolling-kept = enllaç { $joint }: el contacte es manté: a { $point } les accel
         [vowel] d’{ $a }
        *[other] de { $a }
     } només difereixen en un terme segons la normal comuna.
+path-circle = enllaç { $joint }: { $b } { COUNT($b) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu la circumferència de radi { $radius } centrada a { $o }, de manera que { $ac } té una component normal { $vc }² / { $radius } cap a { $o }; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), la seva component tangencial és { $al } × { $arm }.
+path-line = enllaç { $joint }: { $b } { COUNT($b) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu una recta, sense acceleració normal; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), { $ac } = { $al } × { $arm }.
 rolling-same = enllaç { $joint }: { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola

@@ -159,6 +159,8 @@ cond-spherical = joint { $joint }, ball joint at { $point }: { $point } is one p
 cond-cylindrical = joint { $joint }, cylindrical: { $b } turns about and slides along the axis of { $a }.
 rolling-noslip = joint { $joint }: { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity.
 rolling-kept = joint { $joint }: the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
+path-circle = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vc }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
+path-line = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
 rolling-same = joint { $joint }: { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
 rolling-centre = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
 dir-guide = guide { $joint }

@@ -171,6 +171,14 @@ rolling-noslip = par { $joint }: { $b } { COUNT($b) ->
        *[one] rueda
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
 rolling-kept = par { $joint }: el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
+path-circle = par { $joint }: { $b } { COUNT($b) ->
+        [many] ruedan
+       *[one] rueda
+    } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vc }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
+path-line = par { $joint }: { $b } { COUNT($b) ->
+        [many] ruedan
+       *[one] rueda
+    } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
 rolling-same = par { $joint }: { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
