@@ -800,11 +800,18 @@ class Writer:
             route = next(r for r in p.routes if any(g.kind == "turn" and g.body == body for g in r.segs))
             x = points[0]
             terms = self.site_terms(route.start, p, known=True)
-            for g in route.segs:
+            for i, g in enumerate(route.segs):
                 if g.kind == "turn" and g.body == body:
                     if self.plan.apart(g.q, x) is not None:
-                        terms += rotation_terms(ctx, lv, body, g.q, x, False)
+                        made = rotation_terms(ctx, lv, body, g.q, x, False)
+                        if i > 0 and self._centred(route, i - 1) and x == g.p:     # the wheel's centre on its path
+                            j = route.segs[i - 1].joint
+                            terms = self.path_terms(j, body, x, terms + made[:-1]) + made[-1:]
+                        else:
+                            terms += made
                     break
+                if self._centred(route, i):
+                    continue            # its contact term goes into the centre's path normal
                 terms += self.seg_terms(g, p, known=True)
             out.append(ps.equation(point_term(ctx, lv, x, body, True), [terms], x, body))
         return out
