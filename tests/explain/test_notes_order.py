@@ -276,3 +276,15 @@ def test_a_wheel_on_a_fixed_body_is_accelerated_through_its_centre(name, centre,
     kinds = [t.kind for side in eq.sides for t in side]
     assert "contact" not in kinds and kinds.count("path") == (1 if fixed_circle else 0)
     assert kinds[-1] == "tangential"
+
+
+@pytest.mark.parametrize("name,body", [("seed_c5_1_6_belt", "pulley"), ("seed_c5_e6_bicycle", "chainring")])
+def test_a_belt_wheels_centre_comes_from_its_rate(name, body):
+    """C5-1.6 and C5-E.6 find the wheel's rate through the belt (chain) from the arm (frame)
+    and then its centre from that rate and one point's velocity, 0 = v_Q + ω × QI: the
+    centre's note is that construction, and no Aronhold–Kennedy line is written for it."""
+    sol, doc = explained(name)
+    keys = [s.title.key for s in doc.sections]
+    assert keys.index("sec.velocities") < keys.index("sec.centres")
+    notes = [b for b in blocks(section(doc, "sec.centres")) if isinstance(b, CentreNote)]
+    assert [(n.how, set(n.pair)) for n in notes] == [("rate", {sol.model.frame, body})]

@@ -90,6 +90,13 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
             _axles(ctx, note)
             if note.how == "velocities" and len(note.witnesses) < 2:
                 _field(ctx, note)
+        if note.how in ("kennedy", "lines") and ctx.frame in key and \
+                any(f"drive:{b}" in ctx.worked for b in key if b != ctx.frame):
+            by_rate = CentreNote(note.pair, note.value, "velocities")    # a belt's wheel: from the rate
+            if _field(ctx, by_rate):        # the drive gave (C5-1.6, E.6: 0 = v_Q + ω × QI)
+                by_rate.how = "rate"
+                note = by_rate
+                deps.pop(key, None)
         made[key] = note
         if note.how in ("kennedy", "proportional"):
             a, b = note.pair

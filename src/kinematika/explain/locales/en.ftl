@@ -299,6 +299,7 @@ centre-line-slot = the normal at { $point } to the slot of joint { $joint } (rel
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides (joint { $joint })
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
 centre-field = no joint and no Aronhold–Kennedy line places it before the velocities are known; with them, 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-rate = from the angular velocity the belt or chain gave above, as the notes find it: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-check = Check with the velocities found above: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)

@@ -299,6 +299,7 @@ centre-line-slot = { $joint } loturaren artekarekiko normala { $point } puntuan 
 centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala, zeinean zehar irristatzen baita ({ $joint } lotura)
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
 centre-field = ez lotura batek ez Aronhold–Kennedyren zuzen batek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+centre-rate = uhalak edo kateak goian emandako abiadura angeluarretik, apunteetan bezala: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-check = Egiaztapena aurkitutako abiadurekin: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)

@@ -439,6 +439,8 @@ class Renderer:
             why = self.proportional(c)
         elif c.how == "field":
             why = Msg("centre.field", self.field_args(c, name))
+        elif c.how == "rate":
+            why = Msg("centre.rate", self.field_args(c, name))
         elif len(c.witnesses) == 2:
             (p, vp), (q, vq) = c.witnesses
             why = Msg("centre.velocities", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
