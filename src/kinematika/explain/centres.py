@@ -94,7 +94,10 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
                 any(f"drive:{b}" in ctx.worked for b in key if b != ctx.frame):
             by_rate = CentreNote(note.pair, note.value, "velocities")    # a belt's wheel: from the rate
             if _field(ctx, by_rate):        # the drive gave (C5-1.6, E.6: 0 = v_Q + ω × QI)
+                from .drives import drives
+
                 by_rate.how = "rate"
+                by_rate.via = [d.line for d in drives(ctx) if set(key) & {d.a, d.b}][:1]
                 note = by_rate
                 deps.pop(key, None)
         made[key] = note

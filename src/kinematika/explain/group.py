@@ -723,6 +723,7 @@ class Writer:
         name, o = ctx.contact(j), path_origin(ctx, j, fixed)
         args = dict(joint=joint_name(j.id), a=body_name(fixed), b=body_name(body), centre=point_name(centre),
                     point=point_name(name), vc=Sym("v", ctx.point_label(centre, body)), ac=Sym("a", centre),
+                    vs=Sym("v", ctx.point_label(centre, body), vector=False),
                     w=omega_sym(body), al=alpha_sym(body), arm=point_name(str(segment(name, centre))))
         if o is None:
             return [msg("path.line", **args)]

@@ -240,7 +240,7 @@ rolling-kept = enllaç { $joint }: el contacte es manté: a { $point } les accel
 path-circle = enllaç { $joint }: { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
-    } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu la circumferència de radi { $radius } centrada a { $o }, de manera que { $ac } té una component normal { $vc }² / { $radius } cap a { $o }; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), la seva component tangencial és { $al } × { $arm }.
+    } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu la circumferència de radi { $radius } centrada a { $o }, de manera que { $ac } té una component normal { $vs }² / { $radius } cap a { $o }; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), la seva component tangencial és { $al } × { $arm }.
 path-line = enllaç { $joint }: { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
@@ -500,7 +500,10 @@ centre-line-slot_fixed = la normal a { $point } a la recta { ELISION($a) ->
     } per on llisca (enllaç { $joint })
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
 centre-field = cap enllaç ni cap recta d’Aronhold–Kennedy no el situa abans de conèixer les velocitats; amb elles, 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
-centre-rate = a partir de la velocitat angular que ha donat la corretja o la cadena, com als apunts: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+centre-rate = a partir de la velocitat angular trobada més amunt a través { ELISION($line) ->
+        [vowel] d’{ $line }
+       *[other] de { $line }
+    }: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 centre-check = Comprovació amb les velocitats trobades: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)

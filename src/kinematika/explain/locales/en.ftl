@@ -159,7 +159,7 @@ cond-spherical = joint { $joint }, ball joint at { $point }: { $point } is one p
 cond-cylindrical = joint { $joint }, cylindrical: { $b } turns about and slides along the axis of { $a }.
 rolling-noslip = joint { $joint }: { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity.
 rolling-kept = joint { $joint }: the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
-path-circle = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vc }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
+path-circle = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
 path-line = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
 rolling-same = joint { $joint }: { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
 rolling-centre = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
@@ -299,7 +299,7 @@ centre-line-slot = the normal at { $point } to the slot of joint { $joint } (rel
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides (joint { $joint })
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
 centre-field = no joint and no Aronhold–Kennedy line places it before the velocities are known; with them, 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
-centre-rate = from the angular velocity the belt or chain gave above, as the notes find it: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-rate = from the angular velocity found above through { $line }: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-check = Check with the velocities found above: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)

@@ -174,7 +174,7 @@ rolling-kept = par { $joint }: el contacto se mantiene: en { $point } las aceler
 path-circle = par { $joint }: { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
-    } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vc }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
+    } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vs }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
 path-line = par { $joint }: { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
@@ -326,7 +326,7 @@ centre-line-slot = la normal en { $point } a la ranura del par { $joint } (respe
 centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza (par { $joint })
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
 centre-field = ningún par ni ninguna recta de Aronhold–Kennedy lo sitúan antes de conocer las velocidades; con ellas, 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
-centre-rate = a partir de la velocidad angular que ha dado la correa o la cadena, como en los apuntes: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
+centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
 centre-check = Comprobación con las velocidades halladas: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)

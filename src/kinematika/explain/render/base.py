@@ -440,7 +440,7 @@ class Renderer:
         elif c.how == "field":
             why = Msg("centre.field", self.field_args(c, name))
         elif c.how == "rate":
-            why = Msg("centre.rate", self.field_args(c, name))
+            why = Msg("centre.rate", {**self.field_args(c, name), "line": Name(c.via[0] if c.via else "", "body")})
         elif len(c.witnesses) == 2:
             (p, vp), (q, vq) = c.witnesses
             why = Msg("centre.velocities", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
