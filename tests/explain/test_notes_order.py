@@ -145,11 +145,12 @@ def test_centres_at_joints_come_first(name):
     assert keys.index("sec.centres") < keys.index("sec.velocities")
 
 
-@pytest.mark.parametrize("name", ["seed_001_r_pairs", "seed_c5_1_6_belt", "seed_c5_1_4_epicyclic"])
+@pytest.mark.parametrize("name", ["seed_001_r_pairs", "seed_c5_1_6_belt", "seed_c5_1_4_epicyclic", "four_bar"])
 def test_velocities_first_where_the_notes_do(name):
     """The slides ask no centre; C5-1.6 finds the pulley's rate by composing from the arm and
     its centre from that rate; C5-1.4's planet centre comes from the speeds of its centre and
-    contact: velocities first, the centres (if any) after them."""
+    contact; a four-bar's coupler comes from its dyad's equation (its centre follows):
+    velocities first, the centres (if any) after them."""
     _, doc = explained(name)
     keys = [s.title.key for s in doc.sections]
     assert "sec.centres" not in keys or keys.index("sec.centres") > keys.index("sec.velocities")

@@ -46,7 +46,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
         placed = position_section(ctx)
         if placed is not None:
             doc.sections.append(placed)
-        first = centres_first(ctx)
+        first = centres_first(ctx, steps)
         if first:                          # the notes' order: the centres, then the velocities from them
             sites, ctx.translating = centre_sites(ctx)
             ctx.centre_sites = {name: b for name, (b, _) in sites.items()}

@@ -110,19 +110,26 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
     return ctx.centre_notes
 
 
-def centres_first(ctx: Ctx) -> bool:
+def centres_first(ctx: Ctx, steps: Optional[list] = None) -> bool:
     """Whether the explanation places the instant centres before the velocities and finds
     the velocities from them, as the notes do where they ask for centres the structure
     gives (C5-1.1's pulley where the strands meet, C5-E.3's rod, C5-E.2's planets at their
     contacts with the fixed sun): the questions name a centre relative to the frame that
     the structure places. Not where a belt or chain gives a wheel's rate: the notes find
-    that rate by composing from the arm, and the wheel's centre from it (C5-1.6)."""
+    that rate by composing from the arm, and the wheel's centre from it (C5-1.6); nor where
+    the body is solved by a dyad (a four-bar's coupler: the dyad's equation gives its ω, and
+    its centre follows). `steps` is the order of solution; without it, every body counts."""
     from .drives import drives
 
     if ctx.model.default_questions or not ctx.planar or drives(ctx):
         return False
+    if ctx.centre_first_memo is not None:
+        return ctx.centre_first_memo
+    grouped = None if steps is None else {b for st in steps if st.kind in ("other", "copy") for b in st.bodies}
     made, _, asked = _notes(ctx)
-    return any(ctx.frame in key and key in made and _placed(ctx, made[key]) for key in asked)
+    ctx.centre_first_memo = any(ctx.frame in key and key in made and _placed(ctx, made[key])
+                                and (grouped is None or (set(key) - {ctx.frame}) <= grouped) for key in asked)
+    return ctx.centre_first_memo
 
 
 def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, CentreNote]]:
@@ -130,7 +137,7 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
     construction (Aronhold–Kennedy, a joint's line), for the velocity steps to start from:
     {name: (body, point)} of those at a point (a point of the body there keeps its name,
     else I14), and {body: note} of those at infinity (the body translates)."""
-    if not centres_first(ctx):
+    if not centres_first(ctx):       # decided by the builder with the order of solution
         return {}, {}
     from ..draw.names import pair_tag
 
@@ -147,7 +154,11 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
             if note.value.get("direction") is not None:
                 still[body] = note
             continue
-        name = _point_name(ctx, body, where) or "I" + pair_tag(ctx.model, ctx.frame, body)
+        name = _point_name(ctx, body, where)
+        if name is None:
+            name = "I" + pair_tag(ctx.model, ctx.frame, body)
+            while name in ctx.inst.points:          # never a point's name
+                name += "'"
         ctx.name_position(name, tuple(where))
         points[name] = (body, tuple(where))
     return points, still

@@ -36,6 +36,7 @@ class Ctx:
         self.centre_sites: dict[str, str] = {}   # ... and those at a point of the body (P): name -> body
         self.translating: dict[str, Any] = {}    # bodies whose centre is at infinity -> its note
         self.slides_seen: dict[tuple, Any] = {}  # (level, body, guide body) -> a slide's symbol written in the steps
+        self.centre_first_memo: Optional[bool] = None    # the centres before the velocities (`centres.centres_first`)
 
     # positions -----------------------------------------------------------------------------
     def pos(self, name: str) -> tuple:
