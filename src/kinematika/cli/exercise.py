@@ -25,8 +25,9 @@ def exercise(model: Path = ModelArg,
                                                         "variants)"),
              lang: str = typer.Option("en", "--lang", help="the statements' language: en, es, ca or eu"),
              output: Path = typer.Option(..., "-o", "--output", help="the folder to write"),
-             students: Optional[Path] = typer.Option(None, "--students", help="a CSV whose first column "
-                                                     "names the students (one sheet each)"),
+             students: Optional[Path] = typer.Option(None, "--students", help="the class as Moodle "
+                                                     "exports it: ids in the first column, then names "
+                                                     "and e-mails (one variant and sheet each)"),
              solutions: bool = typer.Option(True, "--solutions/--no-solutions",
                                             help="worked solutions in the key and the quiz's feedback"),
              pdf: bool = typer.Option(True, "--pdf/--no-pdf", help="print the sheets and the key to PDF "
@@ -38,12 +39,14 @@ def exercise(model: Path = ModelArg,
     from ..model.files import load_model
 
     def work() -> list[str]:
+        from ..exercise.roster import read_class
+
         _folder(output)
-        names = _names(students) if students is not None else None
-        ex = make_exercise(load_model(model), vary, count or (len(names) if names else DEFAULT_COUNT),
-                           seed, lang, source=model)
+        roster = read_class(students) if students is not None else None
+        ex = make_exercise(load_model(model), vary, count or (len(roster) if roster else DEFAULT_COUNT),
+                           seed, lang, source=model, students=roster)
         with writing(output, "-o"):
-            return write_exercise(ex, output, names, solutions, pdf)
+            return write_exercise(ex, output, solutions, pdf)
 
     for note in guarded(False, work):
         print(note, file=sys.stderr)
@@ -57,24 +60,11 @@ def _folder(output: Path) -> None:
         raise cannot_write(output, f"there is no folder {output.parent}", "-o")
 
 
-def _names(path: Path) -> list[str]:
-    """The first column of a CSV after its header: the students' names."""
-    from ..errors import KinematikaError
-    from ..exercise.folder import read_csv
-
-    rows = read_csv(path, [])
-    if not rows:
-        raise KinematikaError("usage", f"{path.name} names no students (a header, then one per row)",
-                              "--students")
-    first = next(iter(rows[0]))
-    names = [r[first] for r in rows if r.get(first)]
-    return names
-
-
 @app.command()
 def grade(folder: Path = typer.Argument(..., help="the folder `kinematika exercise` wrote",
                                         show_default=False),
-          answers: Path = typer.Argument(..., help="the answers: student,variant,question,value",
+          answers: Path = typer.Argument(..., help="the answers: student,variant,question,value "
+                                              "(, or ; separated, UTF-8 or cp1252)",
                                          show_default=False),
           as_json: bool = JsonOpt,
           gradebook: Optional[Path] = typer.Option(None, "--gradebook", help="also write a CSV Moodle's "
@@ -96,5 +86,7 @@ def grade(folder: Path = typer.Argument(..., help="the folder `kinematika exerci
     result = guarded(as_json, work)
     if as_json:
         print_json(result)
+        for u in result["unreadable"]:
+            print(f"{answers.name}:{u['line']}: not read: {u['error']}", file=sys.stderr)
     else:
-        sys.stdout.write(summary_text(result))
+        sys.stdout.write(summary_text(result, answers.name))

@@ -9,7 +9,7 @@
     key.html        the answer key with the worked solutions; key.pdf likewise
     figures/        each variant's figure (variant-001.png …)
     links.txt       variant, then the link fragment that opens it in the page (`kinematika app`)
-    students.csv    student,variant (when the students are named)
+    students.csv    student,variant (with `--students`: who was given which variant)
 
 `kinematika grade DIR` reads it back: the model, exercise.json and variants.csv give the
 variants again (solved again by the same solver), and key.csv must agree with them.
@@ -32,11 +32,11 @@ from .variants import parse_vary
 AGREE = 1e-9           # key.csv and the model solved again agree to this (relative to the value's size)
 
 
-def write_exercise(ex: Exercise, out: Path, names: Optional[list[str]] = None, solutions: bool = True,
-                   pdf: bool = True) -> list[str]:
-    """Write the folder; the notes to show (what was written, what was skipped)."""
+def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = True) -> list[str]:
+    """Write the folder; the notes to show (what was written, what was skipped or narrowed)."""
     from .figure import dimensions_of, figure_png
     from .moodle import quiz_xml
+    from .roster import students_csv
     from .sheets import key_html, sheets_html, students_for
     from .solutions import solution_html
 
@@ -46,7 +46,7 @@ def write_exercise(ex: Exercise, out: Path, names: Optional[list[str]] = None, s
     for v in ex.variants:
         figures[v.number] = figure_png(v.solution, dimensions_of(ex, v.solution, v.all_stated(ex), ex.lang), ex.lang)
         (out / "figures" / f"variant-{v.number:03d}.png").write_bytes(figures[v.number])
-        mistakes[v.number] = ex.mistakes(v)
+        mistakes[v.number] = v.mistaken
         if solutions:
             worked[v.number] = solution_html(ex, v, ex.lang)
     _text(out / "variants.csv", variants_csv(ex))
@@ -55,15 +55,14 @@ def write_exercise(ex: Exercise, out: Path, names: Optional[list[str]] = None, s
         (out / ex.source.name).write_bytes(ex.source.read_bytes())
     _text(out / "exercise.json", json.dumps(meta(ex), ensure_ascii=False, indent=1) + "\n")
     _text(out / "quiz.xml", quiz_xml(ex, figures, worked if solutions else None, mistakes))
-    students = students_for(ex, names)
-    if names:
-        _text(out / "students.csv", "student,variant\n" + "".join(
-            f"{_csv_field(s.label)},{s.variant}\n" for s in students))
+    students = students_for(ex)
+    if ex.students:
+        _text(out / "students.csv", students_csv(ex.students))
     if ex.source is not None:
         _text(out / "links.txt", "".join(f"{v.number}\t{page_link(ex, v.number)}\n" for v in ex.variants))
     _text(out / "sheets.html", sheets_html(ex, figures, students))
     _text(out / "key.html", key_html(ex, figures, worked))
-    notes = [f"wrote {len(ex.variants)} variants to {out}"]
+    notes = [*ex.notes, f"wrote {len(ex.variants)} variants to {out}"]
     if pdf:
         from .printing import missing, print_pdfs
 
@@ -128,7 +127,7 @@ def key_csv(ex: Exercise) -> str:
     tolerance)."""
     lines = ["variant,question,value,tolerance"]
     for v in ex.variants:
-        lines += [f"{v.number},{r.question},{value_text(r.value)},{ex.tolerance!r}" for r in v.rows]
+        lines += [f"{v.number},{r.question},{value_text(r.value)},{round(v.tolerance_of(r), 6)!r}" for r in v.rows]
     return "\n".join(lines) + "\n"
 
 
@@ -152,8 +151,12 @@ def load_exercise(folder: Path) -> Exercise:
     for number, stated in enumerate(_variants(folder / "variants.csv", [v.name for v in ex.varies]), start=1):
         variant = ex.solve(stated)
         variant.number = number
+        ex.judged(variant)
         ex.variants.append(variant)
     _check_key(ex, folder / "key.csv")
+    from .roster import read_students
+
+    ex.students = read_students(folder / "students.csv", len(ex.variants)) or []
     return ex
 
 

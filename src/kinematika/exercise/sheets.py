@@ -5,11 +5,11 @@ made to print on A4 (`@page`), one sheet per page; `printing` turns them into PD
 from __future__ import annotations
 
 import base64
-from dataclasses import dataclass
 from html import escape
-from typing import Any, Optional
+from typing import Any
 
 from .catalogue import catalogue
+from .roster import Student
 from .statement import asked, statement_html, units_note
 from .stated import number_text
 
@@ -37,20 +37,11 @@ font-variant-numeric:tabular-nums}
 """
 
 
-@dataclass(frozen=True)
-class Student:
-    """A sheet's student: the name (or number) printed on it and the variant they get."""
-
-    label: str
-    variant: int
-
-
-def students_for(exercise: Any, names: Optional[list[str]]) -> list[Student]:
-    """One student per variant (numbered), or the named students dealt the variants in turn."""
-    count = len(exercise.variants)
-    if not names:
-        return [Student(str(v.number), v.number) for v in exercise.variants]
-    return [Student(name, i % count + 1) for i, name in enumerate(names)]
+def students_for(exercise: Any) -> list[Student]:
+    """The sheets' students: the class with their variants, else one unnamed sheet per variant."""
+    if exercise.students:
+        return list(exercise.students)
+    return [Student("", variant=v.number) for v in exercise.variants]
 
 
 def png_uri(data: bytes) -> str:

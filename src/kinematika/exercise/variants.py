@@ -7,7 +7,8 @@ from the grids by numpy's generator seeded with `--seed` alone, so that the same
 the same variants on any machine. A drawn variant is kept when
 
 - it is new (no two variants have the same data),
-- the mechanism assembles with it (its points can be constructed and the joints hold), and
+- the mechanism assembles with it (its points can be constructed and the joints hold),
+- its usual mistakes can be told from the right answer (`margins`), and
 - it is not near a dead point: the condition number of the dimensionless constraint
   Jacobian, which the solver measures anyway (`engine.mobility`, the `singular` error at
   1e10), is at most `MAX_CONDITION`. Well-placed linkages measure 5 to 25 (the four-bar
@@ -89,7 +90,7 @@ class Drawn:
     """A candidate's fate: kept (with what the acceptance returned) or why not."""
 
     kept: Any = None
-    reason: Optional[str] = None       # "assembly", "dead-point"
+    reason: Optional[str] = None       # "assembly", "dead-point", "mistake-close"
 
 
 def draw_variants(varies: list[Vary], count: int, seed: int,
@@ -111,7 +112,7 @@ def draw_variants(varies: list[Vary], count: int, seed: int,
     rng = np.random.default_rng(seed)
     seen: set[tuple[int, ...]] = set()
     out: list[tuple[dict[str, Decimal], Any]] = []
-    failed = {"assembly": 0, "dead-point": 0}
+    failed = {"assembly": 0, "dead-point": 0, "mistake-close": 0}
     tries = TRIES * count + 200
     while len(out) < count and tries > 0 and len(seen) < total:
         tries -= 1
@@ -128,5 +129,6 @@ def draw_variants(varies: list[Vary], count: int, seed: int,
     if len(out) < count:
         raise KinematikaError("assembly", f"only {len(out)} of {count} variants found in {len(seen)} "
                               f"drawn: {failed['assembly']} do not assemble, {failed['dead-point']} "
-                              f"are near a dead point; change the intervals", "--vary")
+                              f"are near a dead point, {failed['mistake-close']} cannot tell a usual mistake from the "
+                              f"right answer; change the intervals", "--vary")
     return out

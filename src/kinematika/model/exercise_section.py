@@ -9,6 +9,7 @@ statement gives its data in.
       length: m                                 # the model's length unit (default m)
       ask: [1, 2, 4]                            # the graded questions, 1-based (default: all)
       tolerance: 0.01                           # relative (default 0.01)
+      weights: [1, 1, 2]                        # each graded question's weight (default: equal)
       dimensions: [{between: [A, E], along: x, label: ex}]    # more marks on the figure
 
 A statement's `{name}` is the parameter's value as stated (`400 mm`, `30°`).
@@ -98,6 +99,7 @@ class ExerciseSection:
     ask: Optional[tuple[int, ...]] = None          # 1-based positions in the model's `ask`
     tolerance: float = 0.01
     dimensions: tuple[DimensionMark, ...] = ()
+    weights: dict[int, float] = field(default_factory=dict)     # 1-based question -> its weight
 
     def unit(self, name: str) -> Optional[Unit]:
         """The unit parameter `name` is stated in (None: a plain number in the model's units)."""
@@ -141,6 +143,7 @@ def exercise_section(raw: Any, params: dict[str, Parameter], questions: int,
     if not 0 < tolerance < 1:
         raise KinematikaError("schema", f"the tolerance is relative, between 0 and 1: got {tolerance:g}",
                               "exercise.tolerance")
+    weights = _weights(raw.weights, ask or tuple(range(1, questions + 1)))
     marks = []
     for i, d in enumerate(raw.dimensions):
         where = f"exercise.dimensions[{i}]"
@@ -148,7 +151,21 @@ def exercise_section(raw: Any, params: dict[str, Parameter], questions: int,
             if name not in points:
                 raise KinematikaError("schema", f"unknown point {name!r}", f"{where}.between")
         marks.append(DimensionMark(tuple(d.between), d.along or "aligned", d.label))
-    return ExerciseSection(statement, units, dict(raw.title), length, ask, tolerance, tuple(marks))
+    return ExerciseSection(statement, units, dict(raw.title), length, ask, tolerance, tuple(marks), weights)
+
+
+def _weights(raw: Any, graded: tuple[int, ...]) -> dict[int, float]:
+    """Each graded question's weight, by its number: one positive number per graded question,
+    in order."""
+    if raw is None:
+        return {}
+    if len(raw) != len(graded):
+        raise KinematikaError("schema", f"give one weight per graded question: {len(graded)}, got {len(raw)}",
+                              "exercise.weights")
+    for i, w in enumerate(raw):
+        if not (w > 0 and math.isfinite(w)):
+            raise KinematikaError("schema", f"a weight is a positive number, got {w!r}", f"exercise.weights[{i}]")
+    return {k: float(w) for k, w in zip(graded, raw)}
 
 
 def _unit(text: str, where: str) -> Unit:
