@@ -69,6 +69,8 @@ def grade(folder: Path = typer.Argument(..., help="the folder `kinematika exerci
           as_json: bool = JsonOpt,
           gradebook: Optional[Path] = typer.Option(None, "--gradebook", help="also write a CSV Moodle's "
                                                    "gradebook imports (student,grade out of 100)"),
+          carry: bool = typer.Option(True, "--carry/--no-carry", help="credit a later answer that "
+                                     "follows from the student's own earlier wrong one"),
           ) -> None:
     """Mark a class's answers: right within the key's tolerance, and each wrong one named by the
     usual mistake whose value it equals (Coriolis left out, degrees as radians, ...)."""
@@ -76,7 +78,7 @@ def grade(folder: Path = typer.Argument(..., help="the folder `kinematika exerci
     from ..exercise.grading import gradebook_csv, summary_text
 
     def work() -> dict:
-        result = mark(load_exercise(folder), answers)
+        result = mark(load_exercise(folder), answers, carry)
         if gradebook is not None:
             target = output_file(gradebook, "--gradebook")
             with writing(target, "--gradebook"):

@@ -1,119 +1,155 @@
 """Error carried forward: a later answer that follows from the student's own earlier wrong
 answer earns its marks, as a teacher marks a worked solution.
 
-The engine solves the problem again from the student's value. At the velocity level the
-given motion's rates scale every velocity and ω together (the velocity problem is linear
-and homogeneous in the drivers' rates), so a student's wrong velocity or ω is the answer of
-the mechanism driven at the rates scaled by (their value / the right value): that mechanism
-is solved again, accelerations included, and each later answer is compared with it. At the
-acceleration level, for a mechanism with one driver, the acceleration answers are affine in
-the driver's acceleration: the one that gives the student's wrong acceleration is found from
-two solutions and the mechanism solved again with it (in the right velocities and in the
-student's carried ones).
+The engine gives the problem's answers for any given motion from three solutions of the
+variant, because of how the problem is built: the velocity problem is linear and
+homogeneous in the drivers' rates, and the acceleration problem is linear in the drivers'
+accelerations plus terms quadratic in the velocities (ω², the Coriolis 2 ω × v_rel). So with
+the rates scaled by f and the one driver's acceleration changed by δ,
 
-"Later" is later in the statement's order of questions. The earlier answer stays wrong; a
-later one is credited only when it matches the world of an earlier wrong one, within its
-box's margin.
+    velocities, ω:       f · V
+    accelerations, α:    f² · A₀ + A_given + δ · A₁
+
+where V and A₀ are the answers with the given rates and no driver acceleration, A_given the
+answers at rest with the given driver accelerations, and A₁ those with a unit one (one
+driver). A student's wrong velocity or ω is the answer of the rates scaled by their value
+over the right one (f); a wrong acceleration or α, for one driver, the answer of the δ that
+gives it, in the right velocities or in the student's carried ones. Each later answer is
+compared with that world within its box's margin.
+
+"Later" is later in the statement's order of questions; the earlier answer stays wrong. Only
+answers linear in those fields (velocities, accelerations, ω, α and their decompositions)
+carry; centres, curvatures and intrinsic components are marked as they are.
 """
 from __future__ import annotations
 
 import dataclasses
-from typing import Any, Callable, Optional
+import math
+from dataclasses import dataclass
+from typing import Any, Optional
 
+from ..errors import KinematikaError
 from ..expressions import Expr, parse
 from .key import Row
 
 VELOCITY_LEVEL = ("velocity", "omega")
 ACCELERATION_LEVEL = ("acceleration", "alpha")
+LINEAR = ("velocity", "acceleration", "omega", "alpha", "decompose")   # questions whose answers carry
+FLOOR = 0.01                  # a carried answer's margin: at least this share of the right one's
 NOISE = 1e-9
 
 
-def carried(exercise: Any, variant: Any, wrong: dict[str, float]) -> dict[str, str]:
-    """The wrong answers (question -> the student's value in the model's units) that follow
-    from an earlier wrong one: question -> the question they follow from."""
-    if not wrong:
-        return {}
+@dataclass
+class Basis:
+    """The variant's answers that make any carried world: V and A₀ (given rates, no driver
+    acceleration), A_given (at rest, the given driver accelerations), A₁ (at rest, a unit
+    acceleration of the one driver; None with several drivers)."""
+
+    rates: dict[str, float]
+    accelerations: dict[str, float]
+    given: dict[str, float]
+    unit: Optional[dict[str, float]]
+
+    def world(self, factor: float, extra: float = 0.0) -> dict[str, float]:
+        """The answers with the rates times `factor` and the driver's acceleration plus `extra`."""
+        out = {q: factor * v for q, v in self.rates.items()}
+        for q, a in self.accelerations.items():
+            out[q] = factor ** 2 * a + self.given[q] + (extra * self.unit[q] if self.unit else 0.0)
+        return out
+
+
+def basis(exercise: Any, variant: Any) -> Optional[Basis]:
+    """The variant's basis (three or four solutions), or None when its drivers are not
+    scalar rates (a vector driver) or a solution fails."""
     from ..sweep.posing import prepare
 
     model = prepare(exercise.model, set=variant.sets)
     drivers = list(model.drivers)
     if not drivers or not all(isinstance(d.value, Expr) for d in drivers):
-        return {}
-    rows = {r.question: r for r in variant.rows}
-    solve = _solver(exercise)
-    out: dict[str, str] = {}
+        return None
+    kinds = [q.kind for q in exercise.model.questions]
+    linear = {r.question for r in variant.rows if kinds[r.ask - 1] in LINEAR}
 
-    def credit(source: Row, world: dict[str, Row], level: tuple[str, ...] = VELOCITY_LEVEL + ACCELERATION_LEVEL) -> None:
-        for question, value in wrong.items():
-            row = rows[question]
-            there = world.get(question)
-            if question in out or row.ask <= source.ask or there is None or row.kind not in level + ("position",):
-                continue
-            if abs(value - there.value) <= there.margin(variant.tolerance_of(row)):
-                out[question] = source.question
+    def solved(rate: Optional[str], accel: Optional[str]) -> Optional[dict[str, float]]:
+        changed = [dataclasses.replace(d, value=parse(rate) if rate is not None else d.value,
+                                       accel=parse(accel) if accel is not None else d.accel) for d in drivers]
+        try:
+            rows = _rows(exercise, dataclasses.replace(model, drivers=changed))
+        except KinematikaError:
+            return None
+        return {q: v for q, v in rows.items() if q in linear}
 
-    velocity_worlds: list[tuple[Optional[Row], Any]] = [(None, model)]
-    for question, value in sorted(wrong.items(), key=lambda qv: _order(rows[qv[0]])):
-        source = rows[question]
-        if source.kind not in VELOCITY_LEVEL or abs(source.value) <= variant.margin(source):
-            continue
-        scaled = _scaled(model, value / source.value)
-        world = solve(scaled)
-        if world is not None:
-            credit(source, world)
-            velocity_worlds.append((source, scaled))
-    if len(drivers) == 1 and drivers[0].accel is not None and isinstance(drivers[0].accel, Expr):
-        for question, value in sorted(wrong.items(), key=lambda qv: _order(rows[qv[0]])):
-            source = rows[question]
-            if source.kind not in ACCELERATION_LEVEL:
-                continue
-            for _, base in velocity_worlds:
-                world = _accelerated(base, question, value, solve)
-                if world is not None:
-                    credit(source, world, ACCELERATION_LEVEL)
-    return out
+    at_rates = solved(None, "0")
+    at_rest = solved("0", None)
+    if at_rates is None or at_rest is None:
+        return None
+    level = {r.question: r.kind for r in variant.rows}
+    rates = {q: v for q, v in at_rates.items() if level[q] in VELOCITY_LEVEL}
+    accelerations = {q: v for q, v in at_rates.items() if level[q] in ACCELERATION_LEVEL}
+    unit = None
+    if len(drivers) == 1 and drivers[0].accel is not None:
+        pushed = solved("0", f"({drivers[0].accel.text})+1")
+        if pushed is not None:
+            unit = {q: pushed[q] - at_rest[q] for q in accelerations}
+    return Basis(rates, accelerations, {q: at_rest[q] for q in accelerations}, unit)
 
 
-def _order(row: Row) -> tuple[int, str]:
-    return row.ask, row.question
-
-
-def _solver(exercise: Any) -> Callable[[Any], Optional[dict[str, Row]]]:
-    from ..errors import KinematikaError
+def _rows(exercise: Any, model: Any) -> dict[str, float]:
     from .build import _answers_and_floors
     from .key import key_rows
 
+    answers, floors = _answers_and_floors(model)
     kinds = [q.kind for q in exercise.model.questions]
-
-    def solve(model: Any) -> Optional[dict[str, Row]]:
-        try:
-            answers, floors = _answers_and_floors(model)
-        except KinematikaError:
-            return None
-        return {r.question: r for r in key_rows(answers, kinds, exercise.asks, floors)}
-    return solve
+    return {r.question: r.value for r in key_rows(answers, kinds, exercise.asks, floors)}
 
 
-def _scaled(model: Any, factor: float) -> Any:
-    """The model with every driver's rate times `factor` (its accelerations as given)."""
-    drivers = [dataclasses.replace(d, value=parse(f"({d.value.text})*({factor!r})")) for d in model.drivers]
-    return dataclasses.replace(model, drivers=drivers)
+def carried(exercise: Any, variant: Any, wrong: dict[str, float], base: Optional[Basis]) -> dict[str, str]:
+    """The wrong answers (question -> the student's value in the model's units) that follow
+    from an earlier wrong one: question -> the question they follow from."""
+    if not wrong or base is None:
+        return {}
+    rows = {r.question: r for r in variant.rows}
+    out: dict[str, str] = {}
+    order = sorted((q for q in wrong if q in base.rates or q in base.accelerations), key=lambda q: (rows[q].ask, q))
+
+    def credit(source: Row, world: dict[str, float], level: tuple[str, ...]) -> None:
+        sizes = _sizes(world, rows)
+        for question, value in wrong.items():
+            row = rows[question]
+            if question in out or row.ask <= source.ask or question not in world or row.kind not in level:
+                continue
+            if abs(value - world[question]) <= variant.tolerance_of(row) * sizes[question]:
+                out[question] = source.question
+
+    factors = [1.0]
+    for question in order:
+        source = rows[question]
+        if question in base.rates and abs(source.value) > variant.margin(source):
+            f = wrong[question] / base.rates[question]
+            factors.append(f)
+            credit(source, base.world(f), VELOCITY_LEVEL + ACCELERATION_LEVEL)
+    if base.unit is not None:
+        for question in order:
+            source = rows[question]
+            slope = base.unit.get(question, 0.0)
+            if question not in base.accelerations or abs(slope) <= NOISE * max(source.size, 1e-300):
+                continue
+            for f in factors:
+                at = base.world(f)[question]
+                credit(source, base.world(f, (wrong[question] - at) / slope), ACCELERATION_LEVEL)
+    return out
 
 
-def _accelerated(model: Any, question: str, value: float,
-                 solve: Callable[[Any], Optional[dict[str, Row]]]) -> Optional[dict[str, Row]]:
-    """The one driver's acceleration that makes answer `question` equal `value` (the answer
-    is affine in it), and the mechanism solved with it; None when the answer does not depend
-    on it."""
-    d = model.drivers[0]
-
-    def with_accel(extra: float) -> Any:
-        return dataclasses.replace(model, drivers=[dataclasses.replace(d, accel=parse(f"({d.accel.text})+({extra!r})"))])
-
-    at0, at1 = solve(model), solve(with_accel(1.0))
-    if at0 is None or at1 is None or question not in at0:
-        return None
-    slope = at1[question].value - at0[question].value
-    if abs(slope) <= NOISE * max(at0[question].size, 1e-300):
-        return None
-    return solve(with_accel((value - at0[question].value) / slope))
+def _sizes(world: dict[str, float], rows: dict[str, Row]) -> dict[str, float]:
+    """Each carried answer's size: its vector's magnitude in that world (at least `FLOOR` of
+    the right answer's size)."""
+    groups: dict[str, list[str]] = {}
+    for q in world:
+        stem, _, axis = q.rpartition(".")
+        groups.setdefault(stem if stem and axis in "xyz" else q, []).append(q)
+    out = {}
+    for members in groups.values():
+        size = math.sqrt(sum(world[q] ** 2 for q in members))
+        for q in members:
+            out[q] = max(size, FLOOR * rows[q].size)
+    return out

@@ -87,10 +87,20 @@ def diagnose(right: Row, mistakes: list[Mistaken], value: float, tolerance: floa
 
 
 class Marker:
-    """Marks answers of an exercise's variants (their mistakes solved once, when drawn)."""
+    """Marks answers of an exercise's variants (their mistakes solved once, when drawn; the
+    solutions that carry a student's error forward once per variant)."""
 
     def __init__(self, exercise: Exercise) -> None:
         self.exercise = exercise
+        self._bases: dict[int, Any] = {}
+
+    def basis(self, variant: Variant) -> Any:
+        """The variant's `carried.Basis`, solved once."""
+        from .carried import basis
+
+        if variant.number not in self._bases:
+            self._bases[variant.number] = basis(self.exercise, variant)
+        return self._bases[variant.number]
 
     def mistakes(self, variant: Variant) -> list[Mistaken]:
         """The usual mistakes' answers for `variant` (solved when it was drawn or read)."""
@@ -177,11 +187,11 @@ def _answer(exercise: Exercise, line: Line, assigned: dict[str, int]) -> Answer:
     return Answer(line.number, student, number, cells["question"], cells["value"])
 
 
-def grade(exercise: Exercise, answers: Path) -> dict[str, Any]:
+def grade(exercise: Exercise, answers: Path, carry: bool = True) -> dict[str, Any]:
     """The contract's grading JSON: `students` (score, variant, answers), `unknown` (ids not on
     the class list), `unreadable` (rows not read: line and error) and a summary per question
-    (`questions`)."""
-    from .carried import carried
+    (`questions`); with `carry`, later answers that follow from a student's earlier wrong one
+    are credited (`carried`)."""
     from .weights import row_weights
 
     marker = Marker(exercise)
@@ -208,7 +218,7 @@ def grade(exercise: Exercise, answers: Path) -> dict[str, Any]:
             mark = marker.mark(student, variant, a.question, a.text, where)
             if mark is not None:
                 marks.append(mark)
-        marks = _sense_checked(_carried(marks, exercise, variant, carried), variant)
+        marks = _sense_checked(_carried(marks, marker, variant) if carry else marks, variant)
         weights = row_weights(variant.rows, exercise.section.weights)
         total = sum(weights.values())
         got = sum(weights[m.question] for m in marks if m.correct and m.variant == number)
@@ -226,13 +236,15 @@ def _most_answered(answers: list[Answer]) -> int:
     return next(a.variant for a in answers if counts[a.variant] == best)
 
 
-def _carried(marks: list[Mark], exercise: Exercise, variant: Variant, carried: Any) -> list[Mark]:
+def _carried(marks: list[Mark], marker: Marker, variant: Variant) -> list[Mark]:
     """The marks with the wrong answers that follow from an earlier wrong one credited."""
     import dataclasses
 
+    from .carried import carried
+
     wrong = {m.question: m.value for m in marks if m.variant == variant.number and not m.correct
              and m.value is not None and m.diagnosis != "wrong-unit"}
-    follows = carried(exercise, variant, wrong)
+    follows = carried(marker.exercise, variant, wrong, marker.basis(variant) if wrong else None)
     return [dataclasses.replace(m, correct=True, diagnosis=None, carried_from=follows[m.question])
             if m.variant == variant.number and m.question in follows and not m.correct else m for m in marks]
 

@@ -33,11 +33,11 @@ from typing import Any, Callable
 from .key import Row
 from .mistakes import Mistaken
 
-ROUNDING = 0.0025         # half the largest relative change of a number rounded to 3 significant figures
+ROUNDING = 0.004          # a number rounded to 3 significant figures moves by up to 0.5 %, 0.1 % on average
 APART = 1.5               # a mistake's answer must lie this many (right + wrong) margins away
 FLOOR = 0.005             # a narrowed margin keeps at least this (relative), plus the rounding allowance
 NOISE = 1e-6              # a change smaller than this (relative) is no change
-SENSITIVE = 0.05          # an answer that rounding moves by more than this is no hand exercise
+SENSITIVE = 0.08          # an answer that rounding moves by more than this is no hand exercise
 
 
 @dataclass
@@ -63,7 +63,7 @@ def allowances(rows: list[Row], parameters: dict[str, float],
             continue
         try:
             changed = {r.question: r.value for r in solve_with(name, value * (1 + ROUNDING))}
-        except Exception:          # noqa: BLE001 - a datum the mechanism cannot take changed adds nothing
+        except Exception:
             continue
         for r in rows:
             if r.question in changed:
