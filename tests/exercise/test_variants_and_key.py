@@ -123,8 +123,11 @@ def test_variants_csv_and_key_csv_are_the_contracts(p_pair30):
     assert key[0] == "variant,question,value,tolerance"
     questions = [line.split(",")[1] for line in key[1:11]]
     assert questions == ["q1", "q2", "q3.x", "q3.y", "q4.x", "q4.y", "q5.x", "q5.y", "q6.x", "q6.y"]
-    # each box's tolerance: the section's 1 % plus the rounding allowance, or narrowed to tell a
-    # mistake apart, but never below 0.5 % (margins.FLOOR)
+    # each box's tolerance: the section's 1 % plus the rounding allowance (at most 8 %: a variant
+    # more sensitive is not drawn), or narrowed to tell a mistake apart, never below 0.5 %
+    from kinematika.exercise.margins import FLOOR, SENSITIVE
+
     tolerances = [float(line.split(",")[3]) for line in key[1:]]
-    assert all(0.005 <= t <= 0.06 for t in tolerances) and sum(t >= 0.01 for t in tolerances) > len(tolerances) / 2
+    assert all(FLOOR <= t <= 0.01 + SENSITIVE for t in tolerances)
+    assert sum(t >= 0.01 for t in tolerances) > len(tolerances) / 2
     assert len(key) == 1 + 30 * 10
