@@ -32,10 +32,17 @@ def exercise(model: Path = ModelArg,
                                             help="worked solutions in the key and the quiz's feedback"),
              pdf: bool = typer.Option(True, "--pdf/--no-pdf", help="print the sheets and the key to PDF "
                                                                    "(Chromium)"),
+             split: bool = typer.Option(False, "--split", help="the Moodle quiz with a question per "
+                                        "graded part (a category each)"),
+             unit_penalty: Optional[float] = typer.Option(None, "--unit-penalty", min=0.0, max=1.0,
+                                                          help="in the Moodle quiz, a right number in "
+                                                               "another unit of its kind (mm/s for m/s) "
+                                                               "loses this share of its grade"),
              ) -> None:
     """Variants of MODEL's problem for every student: a Moodle quiz, sheets, a key with worked
     solutions, variants.csv and key.csv (see docs/exercises.md)."""
     from ..exercise import make_exercise, write_exercise
+    from ..exercise.moodle import QuizOptions
     from ..model.files import load_model
 
     def work() -> list[str]:
@@ -46,7 +53,7 @@ def exercise(model: Path = ModelArg,
         ex = make_exercise(load_model(model), vary, count or (len(roster) if roster else DEFAULT_COUNT),
                            seed, lang, source=model, students=roster)
         with writing(output, "-o"):
-            return write_exercise(ex, output, solutions, pdf)
+            return write_exercise(ex, output, solutions, pdf, QuizOptions(split, unit_penalty))
 
     for note in guarded(False, work):
         print(note, file=sys.stderr)

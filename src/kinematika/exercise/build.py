@@ -72,8 +72,9 @@ class Exercise:
 
     @property
     def title(self) -> str:
-        """The exercise's title in its language: the section's, else the model's name."""
-        return self.section.title.get(self.lang, self.model.name)
+        """The exercise's title in its language: the section's, else the model's title in
+        that language (`names:`), else its name."""
+        return self.section.title.get(self.lang) or self.model.wording.title(self.lang, self.model.name)
 
     @property
     def tolerance(self) -> float:

@@ -26,14 +26,17 @@ from typing import Any
 from ..errors import KinematikaError
 from .build import DEFAULT_SECTION, Exercise
 from .key import value_text
+from .moodle import QuizOptions
 from .stated import plain_decimal
 from .variants import parse_vary
 
 AGREE = 1e-9           # key.csv and the model solved again agree to this (relative to the value's size)
 
 
-def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = True) -> list[str]:
-    """Write the folder; the notes to show (what was written, what was skipped or narrowed)."""
+def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = True,
+                   quiz: Optional[QuizOptions] = None) -> list[str]:
+    """Write the folder; the notes to show (what was written, what was skipped or narrowed).
+    `quiz` holds Moodle's options (a question per part, a penalty for a wrong unit)."""
     from .figure import dimensions_of, figure_png
     from .moodle import quiz_xml
     from .roster import students_csv
@@ -54,7 +57,7 @@ def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = 
     if ex.source is not None:
         (out / ex.source.name).write_bytes(ex.source.read_bytes())
     _text(out / "exercise.json", json.dumps(meta(ex), ensure_ascii=False, indent=1) + "\n")
-    _text(out / "quiz.xml", quiz_xml(ex, figures, worked if solutions else None, mistakes))
+    _text(out / "quiz.xml", quiz_xml(ex, figures, worked if solutions else None, mistakes, quiz or QuizOptions()))
     students = students_for(ex)
     if ex.students:
         _text(out / "students.csv", students_csv(ex.students))
