@@ -102,7 +102,7 @@ def test_each_sheet_states_its_variants_data_and_asks_every_number(folders, p_pa
     for page, v in zip(pages, p_pair30.variants):
         s = f"{v.stated['s'].normalize():f}"
         assert f"AB = {s}\u00a0mm" in page and f"β = {v.stated['beta'].normalize():f}°" in page
-        assert re.findall(r'<td class="id">([^<]+)</td>', page) == [r.question for r in v.rows]
+        assert re.findall(r'<td class="box" data-q="([^"]+)">', page) == [r.question for r in v.rows]
         assert page.count("data:image/png;base64,") == 1
 
 
@@ -112,4 +112,4 @@ def test_the_key_lists_every_value_and_its_margin(folders, four_bar30):
     assert len(pages) == 30
     first = pages[0]
     for r in four_bar30.variants[0].rows:
-        assert f"<td>{r.question}</td>" in first
+        assert f"<code class=\"id\">{r.question}</code>" in first

@@ -73,8 +73,8 @@ def sheets_html(exercise: Any, figures: dict[int, bytes], students: list[Student
                 first = i == 0
                 rows.append(f'<tr><td class="n">{f"{a.number}." if first else ""}</td>'
                             f"<td>{escape(a.words) if first else ''}</td><td>{escape(words)}</td>"
-                            f'<td class="box"></td><td class="unit">{escape(row.unit(exercise.section.length.name))}</td>'
-                            f'<td class="id">{escape(row.question)}</td></tr>')
+                            f'<td class="box" data-q="{escape(row.question)}"></td>'
+                            f'<td class="unit">{escape(row.unit(exercise.section.length.name))}</td></tr>')
         pages.append(
             f'<section class="sheet">{_header(exercise, v.number, lang)}'
             f'<p class="student"><span>{escape(cat.format("sheet-student"))}: <b>{escape(s.label)}</b></span>'
@@ -97,7 +97,7 @@ def key_html(exercise: Any, figures: dict[int, bytes], solutions: dict[int, str]
         rows = []
         for a in asked(exercise, v.rows, lang):
             for row, words in a.parts:
-                rows.append(f"<tr><td>{escape(row.question)}</td><td>{escape(a.words)}</td><td>{escape(words)}</td>"
+                rows.append(f"<tr><td><code class=\"id\">{escape(row.question)}</code></td><td>{escape(a.words)}</td><td>{escape(words)}</td>"
                             f'<td class="num">{number_text(row.value, lang)}</td>'
                             f'<td class="num">{number_text(row.margin(exercise.tolerance), lang, 2)}</td>'
                             f"<td>{escape(row.unit(unit))}</td></tr>")
