@@ -218,7 +218,7 @@ def grade(exercise: Exercise, answers: Path, carry: bool = True) -> dict[str, An
             mark = marker.mark(student, variant, a.question, a.text, where)
             if mark is not None:
                 marks.append(mark)
-        marks = _sense_checked(_carried(marks, marker, variant) if carry else marks, variant)
+        marks = checked(marks, marker, variant, carry)
         weights = row_weights(variant.rows, exercise.section.weights)
         total = sum(weights.values())
         got = sum(weights[m.question] for m in marks if m.correct and m.variant == number)
@@ -234,6 +234,13 @@ def _most_answered(answers: list[Answer]) -> int:
     counts = Counter(a.variant for a in answers)
     best = max(counts.values())
     return next(a.variant for a in answers if counts[a.variant] == best)
+
+
+def checked(marks: list[Mark], marker: Marker, variant: Variant, carry: bool = True) -> list[Mark]:
+    """One student's marks of their variant made final: later answers that follow from an
+    earlier wrong one credited (with `carry`), and `sense-reversed` kept only where the
+    student's other answers show it too."""
+    return _sense_checked(_carried(marks, marker, variant) if carry else marks, variant)
 
 
 def _carried(marks: list[Mark], marker: Marker, variant: Variant) -> list[Mark]:
