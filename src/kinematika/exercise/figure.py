@@ -3,9 +3,14 @@ data marked as dimensions and no answer drawn (no vectors, centres or circles).
 
 The dimensions are the data the model is built from, as a statement's figure shows them:
 each construction's lengths and angles (a polar point's distance and angle, the radii of
-circles that meet), and the coordinates of fixed points written with parameters, measured
-from the point at the origin; `exercise.dimensions` adds others. A dimension given by a
-parameter reads `s = 400 mm`, as the statement states it; any other its value.
+circles that meet, the distance of a guide line given by a parameter), and the coordinates
+of fixed points written with parameters, measured from the point at the origin;
+`exercise.dimensions` adds others. A dimension given by a parameter reads as the statement
+states it, with the model's notation (`θ = 35°` for a parameter `th` the model writes
+`theta`; `s = 400 mm`); any other its value in the statement's units (mm when the statement
+gives its lengths in mm). An angle of zero from a construction's own reference line (a
+point on the line O4→A) is no datum and is not drawn. A length is drawn on the side of its
+bar where fewer points and marks stand, so that its text does not sit on a pivot.
 """
 from __future__ import annotations
 
@@ -14,7 +19,7 @@ import math
 from decimal import Decimal
 from typing import Any, Optional
 
-from ..draw.dimensions import Dimension
+from ..draw.dimensions import RADIUS, Dimension
 from ..model.constructions import CircleLine, Polar, TwoCircles
 from ..expressions import Expr
 from .stated import number_text, stated_text
@@ -23,8 +28,17 @@ WIDTH = 4.6         # inches: printed about at its size, so that its text reads 
 DPI = 150
 
 
+def statement_figure(exercise: Any, variant: Any, lang: str) -> bytes:
+    """A variant's statement figure (PNG): the mechanism, its data as dimensions and the
+    given rotations as arrows."""
+    stated = variant.all_stated(exercise)
+    dimensions = dimensions_of(exercise, variant.solution, stated, lang)
+    return figure_png(variant.solution, dimensions + rates_of(exercise, variant.solution, stated, lang, dimensions), lang)
+
+
 def figure_png(sol: Any, dimensions: list[Dimension], lang: str) -> bytes:
-    """The statement's figure as PNG bytes."""
+    """The statement's figure as PNG bytes: at print resolution, in a palette of `COLOURS`
+    colours (a line drawing: a third of the bytes of full colour, the same to the eye)."""
     from ..draw import DrawOptions, draw
     from ..draw.lock import MATPLOTLIB
 
@@ -32,8 +46,21 @@ def figure_png(sol: Any, dimensions: list[Dimension], lang: str) -> bytes:
                           bare=True, lang=lang, width=WIDTH, dimensions=dimensions)
     out = io.BytesIO()
     with MATPLOTLIB:
-        draw(sol, None, options).savefig(out, format="png", dpi=DPI, facecolor="white", bbox_inches="tight",
-                                         pad_inches=0.08, metadata={"Software": None})
+        draw(sol, None, options).savefig(out, format="png", dpi=DPI, facecolor="white", bbox_inches="tight", pad_inches=0.08,
+                    metadata={"Software": None})
+    return _palette(out.getvalue())
+
+
+COLOURS = 64
+
+
+def _palette(png: bytes) -> bytes:
+    """A PNG in an adaptive palette of `COLOURS` colours, optimised."""
+    from PIL import Image
+
+    image = Image.open(io.BytesIO(png)).convert("RGB").quantize(COLOURS, method=Image.Quantize.MEDIANCUT)
+    out = io.BytesIO()
+    image.save(out, format="PNG", optimize=True)
     return out.getvalue()
 
 
@@ -46,15 +73,32 @@ class Labels:
         self.lang = lang
 
     def of(self, name: Optional[str], value: float, angle: bool) -> str:
-        """`name = value unit` for a parameter `name`, else `value` in degrees or lengths."""
+        """`name = value unit` for a parameter `name` (written as the model's notation writes
+        it), else `value` in degrees or in the statement's length unit."""
         from ..explain.render.names import unicode_name
 
         if name in self.stated:
             unit = self.exercise.unit_of(name)
-            return f"{unicode_name(name)} = {stated_text(self.stated[name], unit, self.lang)}"
+            spelt = self.exercise.model.wording.symbol(name, self.lang) or name
+            return f"{unicode_name(spelt)} = {stated_text(self.stated[name], unit, self.lang)}"
         if angle:
             return f"{number_text(math.degrees(value), self.lang, 4)}°"
-        return f"{number_text(value, self.lang, 4)}\u00a0{self.exercise.section.length.name}"
+        unit = statement_length(self.exercise)
+        shown = value * self.exercise.section.length.size / unit.size
+        return f"{number_text(shown, self.lang, 4)}\u00a0{unit.shown}"
+
+
+def statement_length(exercise: Any) -> Any:
+    """The unit the statement gives its lengths in: the one its length parameters are stated
+    in most, else the model's."""
+    from collections import Counter
+
+    units = Counter(u.name for u in exercise.section.units.values() if u.kind == "length")
+    if not units:
+        return exercise.section.length
+    from ..model.exercise_section import UNITS
+
+    return UNITS[units.most_common(1)[0][0]]
 
 
 def dimensions_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str) -> list[Dimension]:
@@ -66,18 +110,25 @@ def dimensions_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str
     at = {name: tuple(float(c) for c in inst.points[name]) for name in model.points}
     out: list[Dimension] = []
     seen: set = set()
+    done: set[str] = set()              # each parameter dimensioned once
 
-    def length(p: str, q: str, name: Optional[str], along: str = "aligned", text: Optional[str] = None,
-               side: Optional[str] = None) -> None:
-        key = (frozenset((p, q)), along)
-        if key in seen or at[p] == at[q]:
+    def length(p: Any, q: Any, expr: Optional[Expr], along: str = "aligned", text: Optional[str] = None) -> None:
+        name = _name(expr) if expr is not None else None
+        if text is None and (name in done or (name is None and expr is not None and expr.names())):
+            return                      # a parameter already shown, or a length that follows from the data
+        a, b = (at[p] if isinstance(p, str) else p), (at[q] if isinstance(q, str) else q)
+        key = (frozenset((a, b)), along)
+        if key in seen or a == b:
             return
         seen.add(key)
+        if name is not None:
+            done.add(name)
         if along == "aligned":
-            gap = math.dist(at[p], at[q])
+            gap = math.dist(a, b)
         else:
-            gap = abs(at[q]["xy".index(along)] - at[p]["xy".index(along)])
-        out.append(Dimension("length", at[p], at[q], text or labels.of(name, gap, False), along, side=side))
+            gap = abs(b["xy".index(along)] - a["xy".index(along)])
+        side = _clear_side(a, b, list(at.values()), out) if along == "aligned" else None
+        out.append(Dimension("length", a, b, text or labels.of(name, gap, False), along, side=side))
 
     origin = next((name for name, c in model.points.items() if isinstance(c, tuple)
                    and all(e.text.strip() in ("0", "0.0") for e in c)), None)
@@ -88,24 +139,180 @@ def dimensions_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str
                 a, b = at[c.reference[0]], at[c.reference[1]]
                 reference = math.atan2(b[1] - a[1], b[0] - a[0])
             sweep = math.remainder(float(inst.value(c.angle, f"points.{name}.angle")), 2 * math.pi)
-            # the length on the side of the arm away from the angle's arc
-            length(c.origin, name, _name(c.distance), side="left" if sweep >= 0 else "right")
-            out.append(Dimension("angle", at[c.origin], at[name], labels.of(_name(c.angle), sweep, True),
-                                 reference=reference, sweep=sweep))
+            length(c.origin, name, c.distance)
+            if _name(c.angle) in stated and _name(c.angle) not in done:      # the data only
+                done.add(_name(c.angle))
+                out.append(Dimension("angle", at[c.origin], at[name], labels.of(_name(c.angle), sweep, True),
+                                     reference=reference, sweep=sweep))
         elif isinstance(c, TwoCircles):
             for centre, radius in zip(c.centers, c.radii):
                 if isinstance(centre, str):
-                    length(centre, name, _name(radius))
-        elif isinstance(c, CircleLine) and isinstance(c.center, str):
-            length(c.center, name, _name(c.radius))
+                    length(centre, name, radius)
+        elif isinstance(c, CircleLine):
+            if isinstance(c.center, str):
+                length(c.center, name, c.radius)
+            _guide(name, c.line, origin, length)
         elif isinstance(c, tuple) and origin is not None and name != origin:
             for axis, expr in zip("xy", c):
                 if expr.names():
-                    length(origin, name, _name(expr), axis)
+                    length(origin, name, expr, axis)
+    _radii(model, inst, at, done, length, out)
     for mark in exercise.section.dimensions:
         named = mark.label if mark.label in stated else None
-        length(*mark.between, named, mark.along, None if named else mark.label)
+        length(*mark.between, _parsed(named), mark.along, None if named else mark.label)
     return out
+
+
+def _parsed(name: Optional[str]) -> Optional[Expr]:
+    from ..expressions import parse
+
+    return parse(name) if name else None
+
+
+def _radii(model: Any, inst: Any, at: dict, done: set, length: Any, out: list) -> None:
+    """A body's circle whose radius is a parameter not yet shown (the planets' r): its radius,
+    on the circle and towards the direction where the figure is clearest."""
+    taken = list(at.values()) + [((d.start[0] + d.end[0]) / 2, (d.start[1] + d.end[1]) / 2) for d in out]
+    found: dict[str, list] = {}
+    for body in model.bodies.values():
+        for shape in body.shapes:
+            radius, centre = getattr(shape, "radius", None), getattr(shape, "center_point", None)
+            if isinstance(radius, Expr) and centre in at and _name(radius) is not None and _name(radius) not in done:
+                found.setdefault(_name(radius), []).append((radius, centre, float(inst.value(
+                    radius, f"bodies.{body.name}.radius"))))
+
+    def clear(c: tuple, r: float, a: int) -> float:
+        mid = (c[0] + 0.55 * r * math.cos(math.radians(a)), c[1] + 0.55 * r * math.sin(math.radians(a)))
+        return min((math.dist(mid, q) for q in taken), default=0.0)
+
+    for circles in found.values():
+        radius, centre, r, angle = max(((e, c, r, a) for e, c, r in circles for a in range(0, 360, 30)),
+                                       key=lambda t: clear(at[t[1]], t[2], t[3]))
+        c = at[centre]
+        length(centre, (c[0] + r * math.cos(math.radians(angle)), c[1] + r * math.sin(math.radians(angle))), radius)
+
+
+def rates_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str,
+             dimensions: list[Dimension]) -> list[Dimension]:
+    """The given rotations (a body's ω, and α, relative to the frame about its fixed pivot) as
+    curved arrows about the pivot (an angle's mark of `draw.dimensions`: an arc with its head
+    at the end, in the sense of the rotation, and its text), their text where the figure is
+    clearest, so that the figure's labels keep off them as off the other marks."""
+    model, inst = sol.model, sol.inst
+    if model.dimension != 2:
+        return []
+    at = {name: tuple(float(c) for c in inst.points[name]) for name in model.points}
+    size = max((math.dist(p, q) for p in at.values() for q in at.values()), default=1.0) or 1.0
+    taken = list(at.values()) + [_mark_point(d, size) for d in dimensions]
+    out: list[Dimension] = []
+    for d in model.drivers:
+        if d.kind != "omega" or d.relative_to not in (None, model.frame) or not isinstance(d.value, Expr):
+            continue
+        pivot = next((j.at for j in model.joints if j.kind.pins and j.kind.centre == "pin" and {j.a, j.b} == {d.body, model.frame}
+                      and isinstance(j.at, str)), None)
+        if pivot is None:
+            continue
+        value = float(inst.value(d.value, f"{d.where}.value"))
+        if value == 0:
+            continue
+        radius = _arrow_radius(model.bodies[d.body], pivot, at, inst, size)
+        text = _rate_text(exercise, d, value, stated, lang)
+        angle = max(range(0, 360, 45), key=lambda a: _clearance(at[pivot], radius, a, taken))
+        sweep = math.copysign(SWEEP, value)
+        start = math.radians(angle) - sweep / 2
+        arm = radius / 0.6                       # draw.dimensions draws an angle's arc at 0.6 of its arm
+        end = (at[pivot][0] + arm * math.cos(start + sweep), at[pivot][1] + arm * math.sin(start + sweep))
+        out.append(Dimension("angle", at[pivot], end, text, reference=start, sweep=sweep))
+        taken.append(_text_point(at[pivot], radius, angle))
+    return out
+
+
+SWEEP = math.radians(100)          # a rotation's arrow: this much of a turn
+
+
+def _mark_point(d: Dimension, size: float) -> tuple[float, float]:
+    """Where a dimension's text stands, about: a length's middle, an angle's arc's middle."""
+    if d.kind != "angle":
+        return (d.start[0] + d.end[0]) / 2, (d.start[1] + d.end[1]) / 2
+    arm = math.dist(d.start, d.end)
+    mid = d.reference + (d.sweep or 0.0) / 2
+    r = min(RADIUS * size, 0.6 * arm) * 1.3
+    return d.start[0] + r * math.cos(mid), d.start[1] + r * math.sin(mid)
+
+
+def _arrow_radius(body: Any, pivot: str, at: dict, inst: Any, size: float) -> float:
+    for shape in body.shapes:
+        if getattr(shape, "center_point", None) == pivot and getattr(shape, "radius", None) is not None:
+            return 1.12 * float(inst.value(shape.radius, f"bodies.{body.name}.radius"))
+    reach = max((math.dist(at[pivot], at[p]) for p in body.points if p in at), default=0.0)
+    return min(max(0.3 * reach, 0.045 * size), 0.1 * size)      # inside an angle's arc (draw.dimensions)
+
+
+def _rate_text(exercise: Any, d: Any, value: float, stated: dict[str, Decimal], lang: str) -> str:
+    """`ω = 6 rad/s` (the datum as stated, its sense drawn), with `α = −2 rad/s²` when given."""
+    names = sorted(d.value.names() & set(stated))
+    unit = exercise.unit_of(names[0]) if len(names) == 1 else None
+    shown = stated_text(abs(stated[names[0]]), unit, lang) if len(names) == 1 else f"{number_text(abs(value), lang, 4)}"
+    text = f"ω = {shown}" + ("" if len(names) == 1 and unit is not None else "\u00a0rad/s")
+    if isinstance(d.accel, Expr):
+        accel = sorted(d.accel.names() & set(stated))
+        if len(accel) == 1 and stated[accel[0]] != 0:
+            text += f", α = {stated_text(stated[accel[0]], exercise.unit_of(accel[0]), lang)}"
+    return text
+
+
+def _text_point(pivot: tuple, radius: float, angle: float) -> tuple[float, float]:
+    a = math.radians(angle)
+    return pivot[0] + 1.4 * radius * math.cos(a), pivot[1] + 1.4 * radius * math.sin(a)
+
+
+def _clearance(pivot: tuple, radius: float, angle: float, taken: list[tuple]) -> float:
+    """How far the arrow's text (at `angle`) stands from the nearest point or mark."""
+    p = _text_point(pivot, radius, angle)
+    return min((math.dist(p, q) for q in taken), default=math.inf)
+
+
+def _guide(name: str, line: Any, origin: Optional[str], length: Any) -> None:
+    """A guide line through a point given by parameters (`{through: [0, h], direction: [1, 0]}`)
+    dimensioned from the point at the origin to the point `name` on it, along the axis across
+    the line (its height for a horizontal guide)."""
+    if origin is None or not isinstance(line.through, tuple) or line.direction is None:
+        return
+    direction = [e.text.strip() for e in line.direction]
+    for axis, across in (("y", 1), ("x", 0)):           # a horizontal line ([1, 0]): its height (y)
+        if direction[across] not in ("0", "0.0"):
+            continue
+        expr = line.through[across]
+        if expr.names():
+            length(origin, name, expr, axis)
+
+
+def _clear_side(a: tuple, b: tuple, points: list[tuple], marks: list[Dimension]) -> Optional[str]:
+    """The side (left or right of a→b) where a length's text, drawn `OFFSET` off its bar
+    (draw.dimensions), stands clearer of the points and of the texts of the marks already
+    placed; None (away from the mechanism's centre) when both are as clear."""
+    import numpy as np
+
+    from ..draw.dimensions import OFFSET, placed
+
+    span = math.dist(a, b)
+    size = max((math.dist(p, q) for p in points for q in points), default=span) or span
+    if span == 0:
+        return None
+    centre = np.mean(np.array(points), axis=0)
+    texts = [tuple(placed(m, size, centre).text_at) for m in marks]
+    mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    left = (-(b[1] - a[1]) / span, (b[0] - a[0]) / span)
+
+    def crowd(sign: float) -> float:
+        at = (mid[0] + sign * left[0] * (OFFSET + 0.03) * size, mid[1] + sign * left[1] * (OFFSET + 0.03) * size)
+        near = [math.dist(at, q) for q in [*points, *texts] if q not in (a, b)]
+        return sum(max(0.0, 0.15 * size - d) for d in near)
+
+    lc, rc = crowd(1.0), crowd(-1.0)
+    if abs(lc - rc) <= 1e-9 * size:
+        return None
+    return "left" if lc < rc else "right"
 
 
 def _name(expr: Expr) -> Optional[str]:

@@ -37,7 +37,7 @@ def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = 
                    quiz: Optional[QuizOptions] = None) -> list[str]:
     """Write the folder; the notes to show (what was written, what was skipped or narrowed).
     `quiz` holds Moodle's options (a question per part, a penalty for a wrong unit)."""
-    from .figure import dimensions_of, figure_png
+    from .figure import statement_figure
     from .moodle import quiz_xml
     from .roster import students_csv
     from .sheets import key_html, sheets_html, students_for
@@ -47,7 +47,7 @@ def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = 
     (out / "figures").mkdir(exist_ok=True)
     figures, worked, mistakes = {}, {}, {}
     for v in ex.variants:
-        figures[v.number] = figure_png(v.solution, dimensions_of(ex, v.solution, v.all_stated(ex), ex.lang), ex.lang)
+        figures[v.number] = statement_figure(ex, v, ex.lang)
         (out / "figures" / f"variant-{v.number:03d}.png").write_bytes(figures[v.number])
         mistakes[v.number] = v.mistaken
         if solutions:
@@ -130,7 +130,7 @@ def key_csv(ex: Exercise) -> str:
     tolerance)."""
     lines = ["variant,question,value,tolerance"]
     for v in ex.variants:
-        lines += [f"{v.number},{r.question},{value_text(r.value)},{round(v.tolerance_of(r), 6)!r}" for r in v.rows]
+        lines += [f"{v.number},{r.question},{value_text(r.value)},{v.tolerance_of(r)!r}" for r in v.rows]
     return "\n".join(lines) + "\n"
 
 

@@ -151,11 +151,8 @@ def cloze(row: Row, tolerance: float, mistakes: list[Mistaken], lang: str, weigh
     margin = row.margin(tolerance)
     alternatives = [f"={value_text(row.value)}:{value_text(margin)}#{cloze_text(cat.format('feedback-right'))}"]
     taken = [(row.value, margin)]
-    for kind, value, wrong_margin in distinct_mistakes(row, tolerance, mistakes):
-        alternatives.append(f"%0%{value_text(value)}:{value_text(wrong_margin)}"
-                            f"#{cloze_text(cat.format('mistake-' + kind))}")
-        taken.append((value, wrong_margin))
     if options.unit_penalty is not None and section is not None:
+        # first, so that the right number in mm/s is credited, not taken for the data's mm as m
         credit = _percent(1 - options.unit_penalty)
         for unit, value, factor in other_units(row, section):
             m = margin * factor
@@ -163,6 +160,11 @@ def cloze(row: Row, tolerance: float, mistakes: list[Mistaken], lang: str, weigh
                 alternatives.append(f"%{credit}%{value_text(value)}:{value_text(m)}#" + cloze_text(cat.format(
                     "feedback-unit", {"unit": unit, "asked": row.unit(section.length.name)})))
                 taken.append((value, m))
+    for kind, value, wrong_margin in distinct_mistakes(row, tolerance, mistakes):
+        if all(abs(value - v) > wrong_margin + w for v, w in taken):
+            alternatives.append(f"%0%{value_text(value)}:{value_text(wrong_margin)}"
+                                f"#{cloze_text(cat.format('mistake-' + kind))}")
+            taken.append((value, wrong_margin))
     return "{" + str(weight) + ":NUMERICAL:" + "~".join(alternatives) + "}"
 
 

@@ -94,11 +94,11 @@ def exercise_answer(req: Any) -> dict[str, Any]:
 
 def _statement(ex: Any, variant: Any, lang: str) -> dict[str, Any]:
     from ..exercise.catalogue import catalogue
-    from ..exercise.figure import dimensions_of, figure_png
+    from ..exercise.figure import statement_figure
     from ..exercise.statement import asked, statement_html, units_note
 
     stated = variant.all_stated(ex)
-    png = figure_png(variant.solution, dimensions_of(ex, variant.solution, stated, lang), lang)
+    png = statement_figure(ex, variant, lang)
     cat = catalogue(lang)
     words = {key: cat.format(key) for key in ("sheet-find", "page-check", "page-show", "page-your-answer",
                                                "page-link")}
