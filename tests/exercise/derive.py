@@ -90,7 +90,7 @@ def three_figures(x):
         v = float(v)
         if v == 0 or not math.isfinite(v):
             return v
-        return round(v, 2 - int(math.floor(math.log10(abs(v)))))
+        return round(v, 2 - math.floor(math.log10(abs(v))))
     x = np.asarray(x, dtype=float)
     return np.vectorize(one)(x) if x.ndim else one(x)
 

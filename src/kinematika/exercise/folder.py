@@ -21,7 +21,7 @@ import io
 import json
 from decimal import Decimal, InvalidOperation
 from pathlib import Path
-from typing import Any
+from typing import Any, Optional
 
 from ..errors import KinematikaError
 from .build import DEFAULT_SECTION, Exercise
