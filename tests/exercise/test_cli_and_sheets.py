@@ -108,8 +108,11 @@ def test_each_sheet_states_its_variants_data_and_asks_every_number(folders, p_pa
 
 def test_the_key_lists_every_value_and_its_margin(folders, four_bar30):
     key = (folders["four_bar"] / "key.html").read_text(encoding="utf-8")
-    pages = key.split('<section class="sheet">')[1:]
+    pages = key.split('<section class="sheet variant"')[1:]
     assert len(pages) == 30
     first = pages[0]
     for r in four_bar30.variants[0].rows:
         assert f"<code class=\"id\">{r.question}</code>" in first
+    # the contents: every variant linked to its pages
+    contents = key.split('<section class="sheet" id="contents">')[1].split("</section>")[0]
+    assert re.findall(r'href="#variant-(\d+)"', contents) == [str(n) for n in range(1, 31)]

@@ -53,10 +53,17 @@ def exercise(model: Path = ModelArg,
         ex = make_exercise(load_model(model), vary, count or (len(roster) if roster else DEFAULT_COUNT),
                            seed, lang, source=model, students=roster)
         with writing(output, "-o"):
-            return write_exercise(ex, output, solutions, pdf, QuizOptions(split, unit_penalty))
+            return write_exercise(ex, output, solutions, pdf, QuizOptions(split, unit_penalty), _progress)
 
     for note in guarded(False, work):
         print(note, file=sys.stderr)
+
+
+def _progress(done: int, total: int) -> None:
+    """The figures and worked solutions made so far, on a terminal's one line."""
+    if sys.stderr.isatty():
+        print(f"\rfigures and worked solutions: {done}/{total}", end="\n" if done == total else "",
+              file=sys.stderr, flush=True)
 
 
 def _folder(output: Path) -> None:

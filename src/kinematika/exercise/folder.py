@@ -21,7 +21,7 @@ import io
 import json
 from decimal import Decimal, InvalidOperation
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any, Callable, Iterator, Optional
 
 from ..errors import KinematikaError
 from .build import DEFAULT_SECTION, Exercise
@@ -34,24 +34,25 @@ AGREE = 1e-9           # key.csv and the model solved again agree to this (relat
 
 
 def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = True,
-                   quiz: Optional[QuizOptions] = None) -> list[str]:
+                   quiz: Optional[QuizOptions] = None,
+                   progress: Optional[Callable[[int, int], None]] = None) -> list[str]:
     """Write the folder; the notes to show (what was written, what was skipped or narrowed).
-    `quiz` holds Moodle's options (a question per part, a penalty for a wrong unit)."""
-    from .figure import statement_figure
+    `quiz` holds Moodle's options (a question per part, a penalty for a wrong unit);
+    `progress(done, total)` is told as the variants' figures and solutions are made."""
     from .moodle import quiz_xml
     from .roster import students_csv
     from .sheets import key_html, sheets_html, students_for
-    from .solutions import solution_html
 
     out.mkdir(exist_ok=True)
     (out / "figures").mkdir(exist_ok=True)
     figures, worked, mistakes = {}, {}, {}
-    for v in ex.variants:
-        figures[v.number] = statement_figure(ex, v, ex.lang)
-        (out / "figures" / f"variant-{v.number:03d}.png").write_bytes(figures[v.number])
-        mistakes[v.number] = v.mistaken
+    for number, (png, solution) in drawn(ex, solutions, progress):
+        figures[number] = png
+        (out / "figures" / f"variant-{number:03d}.png").write_bytes(png)
         if solutions:
-            worked[v.number] = solution_html(ex, v, ex.lang)
+            worked[number] = solution
+    for v in ex.variants:
+        mistakes[v.number] = v.mistaken
     _text(out / "variants.csv", variants_csv(ex))
     _text(out / "key.csv", key_csv(ex))
     if ex.source is not None:
@@ -75,6 +76,60 @@ def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = 
         else:
             notes.append(reason)
     return notes
+
+
+WORKERS_FROM = 4          # variants from which the figures and solutions are made in parallel
+
+
+def drawn(ex: Exercise, solutions: bool, progress: Optional[Callable[[int, int], None]] = None
+          ) -> Iterator[tuple[int, tuple[bytes, str]]]:
+    """Each variant's statement figure (PNG) and worked solution (HTML, '' without
+    `solutions`), in the variants' order: in a process per core when there are several
+    cores and variants and this process runs no other thread (forked processes that hold
+    the exercise; the same bytes as made one by one), else one by one."""
+    import os
+    import sys
+    import threading
+
+    numbers = [v.number for v in ex.variants]
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    total = len(numbers)
+    alone = threading.active_count() == 1          # a fork copies no other thread's held lock
+    if cores < 2 or total < WORKERS_FROM or not alone or not sys.platform.startswith("linux"):
+        for done, n in enumerate(numbers, start=1):
+            yield n, _drawn_one(ex, n, solutions)
+            if progress:
+                progress(done, total)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    global _FORKED
+    _FORKED = (ex, solutions)
+    try:
+        with ProcessPoolExecutor(min(cores, total), mp_context=multiprocessing.get_context("fork")) as pool:
+            for done, (n, made) in enumerate(zip(numbers, pool.map(_drawn_forked, numbers)), start=1):
+                yield n, made
+                if progress:
+                    progress(done, total)
+    finally:
+        _FORKED = None
+
+
+_FORKED: Any = None          # the exercise the forked workers draw (set before the fork)
+
+
+def _drawn_forked(number: int) -> tuple[bytes, str]:
+    ex, solutions = _FORKED
+    return _drawn_one(ex, number, solutions)
+
+
+def _drawn_one(ex: Exercise, number: int, solutions: bool) -> tuple[bytes, str]:
+    from .figure import statement_figure
+    from .solutions import solution_html
+
+    v = ex.variant(number)
+    return statement_figure(ex, v, ex.lang), (solution_html(ex, v, ex.lang) if solutions else "")
 
 
 def page_link(ex: Exercise, number: int) -> str:

@@ -58,7 +58,8 @@ def _print_pdfs(pages: list[tuple[Path, Path]]) -> None:
             page.set_default_timeout(PRINT_SECONDS * 1000)
             for html, pdf in pages:
                 page.goto(html.resolve().as_uri(), wait_until="load")
-                page.pdf(path=str(pdf), format="A4", print_background=True, prefer_css_page_size=True)
+                page.pdf(path=str(pdf), format="A4", print_background=True, prefer_css_page_size=True,
+                         outline=True)      # bookmarks from the headings (tagging would double the size)
         finally:
             browser.close()
 

@@ -142,6 +142,12 @@ key-solution = Resolució pas a pas
 key-question = pregunta
 key-value = valor
 key-margin = correcte dins de ±
+key-common = La resolució: la part comuna a totes les variants
+key-see-common = L’estructura del mecanisme i l’ordre de resolució són els mateixos a totes les variants: vegeu les primeres pàgines.
+key-students = Assignada a
+key-variant = Variant
+key-data = Dades
+key-contents = Índex
 
 feedback-right = Correcte.
 feedback-wrong = No és correcte: vegeu la resolució pas a pas.

@@ -69,6 +69,12 @@ key-solution = Worked solution
 key-question = question
 key-value = value
 key-margin = right within ±
+key-common = The worked solution: the part every variant shares
+key-see-common = The structure of the mechanism and the order of solution are the same in every variant: see the first pages.
+key-students = Given to
+key-variant = Variant
+key-data = Data
+key-contents = Contents
 
 feedback-right = Right.
 feedback-wrong = Not right: see the worked solution.

@@ -70,6 +70,12 @@ key-solution = Resolución paso a paso
 key-question = pregunta
 key-value = valor
 key-margin = correcto dentro de ±
+key-common = La resolución: la parte común a todas las variantes
+key-see-common = La estructura del mecanismo y el orden de resolución son los mismos en todas las variantes: véanse las primeras páginas.
+key-students = Asignada a
+key-variant = Variante
+key-data = Datos
+key-contents = Índice
 
 feedback-right = Correcto.
 feedback-wrong = No es correcto: vea la resolución paso a paso.

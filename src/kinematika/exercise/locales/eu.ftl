@@ -70,6 +70,12 @@ key-solution = Ebazpena urratsez urrats
 key-question = galdera
 key-value = balioa
 key-margin = onartutako tartea ±
+key-common = Ebazpena: aldaera guztiek partekatzen duten zatia
+key-see-common = Mekanismoaren egitura eta ebazpen-ordena berberak dira aldaera guztietan: ikusi lehen orriak.
+key-students = Nori eman zaion
+key-variant = Aldaera
+key-data = Datuak
+key-contents = Aurkibidea
 
 feedback-right = Zuzena.
 feedback-wrong = Ez da zuzena: ikusi ebazpena urratsez urrats.
