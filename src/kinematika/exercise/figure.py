@@ -24,7 +24,8 @@ from ..model.constructions import CircleLine, Polar, TwoCircles
 from ..expressions import Expr
 from .stated import number_text, stated_text
 
-WIDTH = 4.6         # inches: printed about at its size, so that its text reads as 9 pt
+WIDTH = 4.6         # inches: printed at its size, so that its text reads as 9 pt
+HEIGHT = 4.4        # inches: at most this tall (a tall mechanism is drawn narrower, its text as large)
 DPI = 150
 
 
@@ -43,7 +44,7 @@ def figure_png(sol: Any, dimensions: list[Dimension], lang: str) -> bytes:
     from ..draw.lock import MATPLOTLIB
 
     options = DrawOptions(velocities=False, accelerations=False, centres=False, curvature=False,
-                          bare=True, lang=lang, width=WIDTH, dimensions=dimensions)
+                          bare=True, lang=lang, width=_width(sol), dimensions=dimensions)
     out = io.BytesIO()
     with MATPLOTLIB:
         draw(sol, None, options).savefig(out, format="png", dpi=DPI, facecolor="white", bbox_inches="tight", pad_inches=0.08,
@@ -52,6 +53,24 @@ def figure_png(sol: Any, dimensions: list[Dimension], lang: str) -> bytes:
 
 
 COLOURS = 64
+
+
+def _width(sol: Any) -> float:
+    """The figure's width (inches): `WIDTH`, or less for a tall mechanism, so that it is at most
+    `HEIGHT` tall at the same size of text (draw.figure keeps the axes' height between 0.5
+    and 1.25 of their width)."""
+    points = [tuple(float(c) for c in p[:2]) for p in sol.inst.points.values()]
+    if len(points) < 2:
+        return WIDTH
+    span_x = max(p[0] for p in points) - min(p[0] for p in points)
+    span_y = max(p[1] for p in points) - min(p[1] for p in points)
+    aspect = min(max(span_y / span_x if span_x > 0 else 1.25, 0.5), 1.25)
+    return min(WIDTH, HEIGHT / (0.96 * aspect))
+
+
+def printed_width(png: bytes) -> float:
+    """How wide a figure prints at its own size (inches): its pixels over `DPI`."""
+    return int.from_bytes(png[16:20], "big") / DPI if png[:8] == b"\x89PNG\r\n\x1a\n" else WIDTH
 
 
 def _palette(png: bytes) -> bytes:

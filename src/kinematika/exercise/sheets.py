@@ -32,11 +32,11 @@ margin-bottom:3mm;gap:4mm}
 header h1{font-size:14pt;margin:0}header .variant{font-size:11pt;color:#1f5fa8;font-weight:bold;white-space:nowrap}
 p.student{display:flex;gap:4mm;margin:2mm 0 3mm;align-items:baseline}
 p.student b{font-size:11.5pt}p.student span.line{flex:1;border-bottom:1px solid #555}
-figure{margin:1mm 0;text-align:center}figure img{max-width:100%;max-height:100mm}
+figure{margin:1mm 0;text-align:center}figure img{max-width:100%}
 p.note{font-size:9pt;color:#444}
 h2{font-size:11.5pt;margin:4mm 0 1mm;border-bottom:1px solid #ccc}
 table.answers{border-collapse:collapse;width:100%}
-table.answers td{padding:1.2mm 1.5mm;vertical-align:bottom}
+table.answers td{padding:.9mm 1.5mm;vertical-align:bottom}
 table.answers td.n{font-weight:bold;width:6mm}
 table.answers td.box{border-bottom:1px solid #333;width:34mm}
 table.answers td.unit{width:16mm}
@@ -59,7 +59,6 @@ div.key-solution .kinematika-solution figure svg{width:100%!important;max-width:
 div.key-solution .kinematika-solution figcaption{font-size:8pt}
 div.key-solution .kinematika-solution table{font-size:8pt}
 div.key-solution .kinematika-solution table.eq{font-size:7.4pt;max-width:100%}
-section.variant figure img{max-height:75mm}
 p.common{font-size:9pt;color:#555;font-style:italic}
 """
 
@@ -69,6 +68,13 @@ def students_for(exercise: Any) -> list[Student]:
     if exercise.students:
         return list(exercise.students)
     return [Student("", variant=v.number) for v in exercise.variants]
+
+
+def figure_tag(data: bytes, alt: str) -> str:
+    """A statement figure printed at its own size (its text at 9 pt), never wider than the page."""
+    from .figure import printed_width
+
+    return f'<figure><img src="{png_uri(data)}" alt="{escape(alt)}" style="width:{printed_width(data):.2f}in"></figure>'
 
 
 def png_uri(data: bytes) -> str:
@@ -109,7 +115,7 @@ def sheets_html(exercise: Any, figures: dict[int, bytes], students: list[Student
         pages.append(
             f'<section class="sheet">{_header(exercise, v.number, lang)}<p class="student">{who}</p>'
             f"{statement_html(exercise, v.all_stated(exercise), lang)}"
-            f'<figure><img src="{png_uri(figures[v.number])}" alt="{escape(exercise.title)}"></figure>'
+            f"{figure_tag(figures[v.number], exercise.title)}"
             f'<p class="note">{escape(units_note(exercise, lang))}</p>'
             f"<h2>{escape(cat.format('sheet-find'))}</h2>"
             f'<table class="answers">{"".join(rows)}</table></section>\n')
@@ -152,7 +158,7 @@ def key_html(exercise: Any, figures: dict[int, bytes], solutions: dict[int, str]
         pages.append(
             f'<section class="sheet variant" id="variant-{v.number}">{_header(exercise, v.number, lang, "key-title")}{who}'
             f"{statement_html(exercise, v.all_stated(exercise), lang)}"
-            f'<figure><img src="{png_uri(figures[v.number])}" alt="{escape(exercise.title)}"></figure>'
+            f"{figure_tag(figures[v.number], exercise.title)}"
             f"<h2>{escape(cat.format('key-values'))}</h2>"
             f'<table class="key"><tr>{head}<th></th></tr>{"".join(rows)}</table>'
             + (f"<h2>{escape(cat.format('key-solution'))}</h2><div class=\"key-solution\">{solution}</div>"
