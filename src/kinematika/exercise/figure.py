@@ -15,6 +15,7 @@ bar where fewer points and marks stand, so that its text does not sit on a pivot
 from __future__ import annotations
 
 import io
+import itertools
 import math
 from decimal import Decimal
 from typing import Any, Optional
@@ -223,7 +224,8 @@ def rates_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str,
         return []
     at = {name: tuple(float(c) for c in inst.points[name]) for name in model.points}
     size = max((math.dist(p, q) for p in at.values() for q in at.values()), default=1.0) or 1.0
-    taken = list(at.values()) + [_mark_point(d, size) for d in dimensions]
+    taken = (list(at.values()) + [_mark_point(d, size) for d in dimensions] + _mark_lines(dimensions, at, size)
+             + _bars(model, at))
     out: list[Dimension] = []
     for d in model.drivers:
         if d.kind != "omega" or d.relative_to not in (None, model.frame) or not isinstance(d.value, Expr):
@@ -237,7 +239,7 @@ def rates_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str,
             continue
         radius = _arrow_radius(model.bodies[d.body], pivot, at, inst, size)
         text = _rate_text(exercise, d, value, stated, lang)
-        angle = max(range(0, 360, 45), key=lambda a: _clearance(at[pivot], radius, a, taken))
+        angle = max(range(0, 360, 15), key=lambda a: _clearance(at[pivot], radius, a, taken, len(text) * size / 60))
         sweep = math.copysign(SWEEP, value)
         start = math.radians(angle) - sweep / 2
         arm = radius / 0.6                       # draw.dimensions draws an angle's arc at 0.6 of its arm
@@ -248,6 +250,21 @@ def rates_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str,
 
 
 SWEEP = math.radians(100)          # a rotation's arrow: this much of a turn
+
+
+def _mark_lines(dimensions: list[Dimension], at: dict, size: float) -> list[tuple[float, float]]:
+    """Points along the lines and arcs the dimensions draw (draw.dimensions.placed), a text
+    must keep off them too."""
+    import numpy as np
+
+    from ..draw.dimensions import placed
+
+    centre = np.mean(np.array(list(at.values())), axis=0)
+    out = []
+    for d in dimensions:
+        arrow = placed(d, size, centre).arrow
+        out += [tuple(p) for p in arrow[:: max(1, len(arrow) // 6)]] + [tuple(arrow[-1])]
+    return out
 
 
 def _mark_point(d: Dimension, size: float) -> tuple[float, float]:
@@ -286,10 +303,23 @@ def _text_point(pivot: tuple, radius: float, angle: float) -> tuple[float, float
     return pivot[0] + 1.4 * radius * math.cos(a), pivot[1] + 1.4 * radius * math.sin(a)
 
 
-def _clearance(pivot: tuple, radius: float, angle: float, taken: list[tuple]) -> float:
-    """How far the arrow's text (at `angle`) stands from the nearest point or mark."""
+def _clearance(pivot: tuple, radius: float, angle: float, taken: list[tuple], width: float) -> float:
+    """How far the arrow's text (at `angle`, `width` long, running away from the pivot as
+    draw.dimensions sets an angle's text) stands from the nearest point, bar or mark."""
     p = _text_point(pivot, radius, angle)
-    return min((math.dist(p, q) for q in taken), default=math.inf)
+    way = 1.0 if math.cos(math.radians(angle)) >= 0 else -1.0
+    along = [(p[0] + way * width * k / 4, p[1]) for k in range(5)]
+    return min((math.dist(a, q) for a in along for q in taken), default=math.inf)
+
+
+def _bars(model: Any, at: dict) -> list[tuple[float, float]]:
+    """Points along each body's bars (between its points), a text must not sit on."""
+    out = []
+    for body in model.bodies.values():
+        pts = [at[p] for p in body.points if p in at]
+        for a, b in itertools.pairwise(pts):
+            out += [(a[0] + (b[0] - a[0]) * k / 6, a[1] + (b[1] - a[1]) * k / 6) for k in range(1, 6)]
+    return out
 
 
 def _guide(name: str, line: Any, origin: Optional[str], length: Any) -> None:
