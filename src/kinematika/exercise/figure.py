@@ -46,11 +46,45 @@ def figure_png(sol: Any, dimensions: list[Dimension], lang: str) -> bytes:
 
     options = DrawOptions(velocities=False, accelerations=False, centres=False, curvature=False,
                           bare=True, lang=lang, width=_width(sol), dimensions=dimensions)
-    out = io.BytesIO()
     with MATPLOTLIB:
-        draw(sol, None, options).savefig(out, format="png", dpi=DPI, facecolor="white", bbox_inches="tight", pad_inches=0.08,
-                    metadata={"Software": None})
-    return _palette(out.getvalue())
+        return _palette(_rendered(draw(sol, None, options)))
+
+
+PAD = 0.08          # inches of white around the drawing
+ROOM = 0.6          # inches added around the figure before drawing it, for texts past its edges
+
+
+def _rendered(fig: Any) -> Any:
+    """The figure drawn once at `DPI` and cropped to its drawing plus `PAD` (what
+    `savefig(bbox_inches="tight")` gives, which draws it twice); a drawing that reaches past
+    the figure's edges is saved the tight way (an RGB image either way)."""
+    import math as m
+
+    import numpy as np
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from PIL import Image
+
+    fig.set_dpi(DPI)
+    fig.patch.set_facecolor("white")
+    width, height = fig.get_size_inches()          # room around, for texts past the edges
+    for ax in fig.axes:
+        x, y, w, h = ax.get_position().bounds
+        ax.set_position(((x * width + ROOM) / (width + 2 * ROOM), (y * height + ROOM) / (height + 2 * ROOM),
+                         w * width / (width + 2 * ROOM), h * height / (height + 2 * ROOM)))
+    fig.set_size_inches(width + 2 * ROOM, height + 2 * ROOM)
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    box = fig.get_tightbbox(canvas.get_renderer())
+    width, height = fig.get_size_inches()
+    if box.x0 < 0 or box.y0 < 0 or box.x1 > width or box.y1 > height:
+        out = io.BytesIO()
+        fig.savefig(out, format="png", dpi=DPI, facecolor="white", bbox_inches="tight", pad_inches=PAD)
+        return Image.open(io.BytesIO(out.getvalue())).convert("RGB")
+    pixels = np.asarray(canvas.buffer_rgba())[:, :, :3]
+    rows, cols = pixels.shape[:2]
+    left, right = max(0, m.floor((box.x0 - PAD) * DPI)), min(cols, m.ceil((box.x1 + PAD) * DPI))
+    top, bottom = max(0, m.floor((height - box.y1 - PAD) * DPI)), min(rows, m.ceil((height - box.y0 + PAD) * DPI))
+    return Image.fromarray(np.ascontiguousarray(pixels[top:bottom, left:right]))
 
 
 COLOURS = 64
@@ -74,14 +108,14 @@ def printed_width(png: bytes) -> float:
     return int.from_bytes(png[16:20], "big") / DPI if png[:8] == b"\x89PNG\r\n\x1a\n" else WIDTH
 
 
-def _palette(png: bytes) -> bytes:
-    """A PNG in an adaptive palette of `COLOURS` colours (Pillow's fast octree: a sixth of the
-    time of median cut, the same size to a few per cent)."""
+def _palette(picture: Any) -> bytes:
+    """An RGB image as a PNG in an adaptive palette of `COLOURS` colours (Pillow's fast octree:
+    a sixth of the time of median cut, the same size to a few per cent)."""
     from PIL import Image
 
-    image = Image.open(io.BytesIO(png)).convert("RGB").quantize(COLOURS, method=Image.Quantize.FASTOCTREE)
+    image = picture.quantize(COLOURS, method=Image.Quantize.FASTOCTREE)
     out = io.BytesIO()
-    image.save(out, format="PNG", compress_level=9)
+    image.save(out, format="PNG", compress_level=6)
     return out.getvalue()
 
 
