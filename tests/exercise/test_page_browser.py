@@ -47,7 +47,7 @@ def _drive(url, fragment, v, mistakes, tmp_path):
         page = browser.new_page(viewport={"width": 1000, "height": 1400})
         page.set_default_timeout(BROWSER_WAIT)      # a hang detector: the page's own requests run too
         seen = []
-        page.on("response", seen.append)
+        page.on("response", lambda r: seen.append(r))  # noqa: PLW0108 - Playwright wraps a Python function
         page.goto(url + fragment)
         page.get_by_test_id("exercise-input-q1").wait_for()         # drawn from the statement's answer
         # the page is the exercise alone: nothing of the builder, nothing that solves
