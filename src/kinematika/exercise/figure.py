@@ -114,6 +114,9 @@ def _palette(picture: Any) -> bytes:
     from PIL import Image
 
     image = picture.quantize(COLOURS, method=Image.Quantize.FASTOCTREE)
+    palette = image.getpalette()
+    image.putpalette([255 if all(c >= 250 for c in palette[i - i % 3:i - i % 3 + 3]) else v
+                      for i, v in enumerate(palette)])          # the paper stays pure white
     out = io.BytesIO()
     image.save(out, format="PNG", compress_level=6)
     return out.getvalue()
