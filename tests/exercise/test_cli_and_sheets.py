@@ -93,7 +93,19 @@ def test_the_class_gets_its_variants_and_its_names_on_the_sheets(tmp_path):
     assert sheets.count('<section class="sheet">') == 3
     assert all(n in sheets for n in ("Ane Etxeberria", "Jon Agirre", "Miren Lasa"))
     assert "Quadrilàter articulat" in sheets and catalogue("ca").format("sheet-find") in sheets
-
+    # grade reads the class back: 103 has no row (0), 999 is not on the list, 101 answers
+    # another's variant; the file as Excel saves it in Catalan (; and cp1252)
+    other = next(s.variant for s in dealt if s.id == "102")
+    mine = next(s.variant for s in dealt if s.id == "101")
+    answers = tmp_path / "answers.csv"
+    answers.write_bytes((f"student;variant;question;value\n101;{3 - mine};q1;1,5\n102;{other};q1;2\n"
+                         f"999;{other};q1;2\n").encode("cp1252"))
+    graded = runner.invoke(app, ["grade", str(out), str(answers), "--json"])
+    assert graded.exit_code == 0, graded.output
+    result = json.loads(graded.stdout)
+    assert result["unknown"] == ["999"] and result["unreadable"] == []
+    assert set(result["students"]) == {"101", "102", "103"} and result["students"]["103"]["score"] == 0
+    assert result["students"]["101"]["answers"][0]["diagnosis"] == "wrong-variant"
 
 def test_each_sheet_states_its_variants_data_and_asks_every_number(folders, p_pair30):
     sheets = (folders["p_pair"] / "sheets.html").read_text(encoding="utf-8")
