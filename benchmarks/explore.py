@@ -126,13 +126,14 @@ def path_error(path: np.ndarray, points: np.ndarray) -> float:
 
 def kinematika_synthesis(budget: float, seed: int) -> dict:
     from kinematika.explore.synthesis import synthesize
+    from kinematika.explore.synthesis.task import make_task
 
     pts = targets()
     text = "".join(f"{float(p.real)!r},{float(p.imag)!r}\n" for p in pts)
     vary = [f"{k}={lo}:{hi}" for k, (lo, hi) in BOUNDS.items()]
+    task = make_task("path", "t.csv", text, "--target", point="P")
     start = time.perf_counter()
-    result = synthesize(MODEL, vary, "path_error:P=t.csv", population=45, generations=100_000, seed=seed,
-                        files={"t.csv": text}, seconds=budget, target=None)
+    result = synthesize(MODEL, vary, task, population=45, generations=None, seed=seed, seconds=budget)
     wall = time.perf_counter() - start
     return {"history": result.history, "best": result.errors[0], "design": result.designs[0],
             "evaluated": result.evaluated, "wall": wall}

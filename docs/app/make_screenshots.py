@@ -7,6 +7,7 @@ at a few moments of its use. Needs Chromium (`bash scripts/browser.sh`).
 """
 from __future__ import annotations
 
+import math
 import re
 import subprocess
 import sys
@@ -104,11 +105,89 @@ def phone_shot(browser, url: str) -> None:
     phone.close()
 
 
+def as_a_student(browser, url: str) -> None:
+    """The page as a student meets it (issue 35), at 1400 × 900 and 390 × 844, in Basque and
+    Catalan: building with a hint (not an error) of what is missing, a renamed rod, one word
+    for its length; the crank turned by hand; on a phone, the properties by the figure and
+    every answer in the panel."""
+    sys.path.insert(0, str(ROOT))
+    from tests.web import test_build as tb
+
+    page = browser.new_page(viewport={"width": 1400, "height": 900}, bypass_csp=True)
+    page.goto(url)
+    ready(page)
+    page.get_by_test_id("ui-language").select_option("eu")
+    ready(page)
+    tb.step(page, lambda: page.get_by_test_id("new-model").click())
+    tb.tool(page, "pivot", lambda: tb.click_at(page, (0, 0)))
+    tb.tool(page, "link", lambda: tb.click_point(page, "O1"), lambda: tb.click_at(page, (0.04, 0.02)))
+    tb.typed(page, "prop-length", "50 mm")
+    tb.typed(page, "prop-angle", "30")
+    tb.tool(page, "link", lambda: tb.click_point(page, "A"), lambda: tb.click_at(page, (0.18, 0.0)))
+    tb.typed(page, "prop-length", "150 mm")
+    tb.tool(page, "slider", lambda: tb.click_point(page, "B"))
+    page.get_by_test_id("tool-select").click()
+    page.wait_for_timeout(500)
+    page.screenshot(path=HERE / "building.eu.png")
+    tb.selected(page, lambda: tb.click_body(page, "O1", "A"), "barra1")
+    page.get_by_test_id("properties").get_by_test_id("input-omega").fill("10")
+    tb.step(page, lambda: page.get_by_test_id("set-input").click())
+    tb.selected(page, lambda: tb.click_body(page, "A", "B"), "barra2")
+    field = page.get_by_test_id("properties").locator("input[data-testid=rename]")
+    tb.step(page, lambda: (field.fill("biela"), field.press("Enter")))
+    tb.selected(page, lambda: tb.click_point(page, "B"), "B")
+    tb.step(page, lambda: page.get_by_test_id("ask-velocity").click())
+    page.wait_for_timeout(1500)
+    page.screenshot(path=HERE / "student.eu.png")
+    page.close()
+
+    page = browser.new_page(viewport={"width": 1400, "height": 900}, bypass_csp=True)
+    page.goto(url)
+    ready(page)
+    page.get_by_test_id("ui-language").select_option("ca")
+    ready(page)
+    page.locator("#new-menu summary").click()
+    tb.step(page, lambda: page.get_by_test_id("new-slider-crank").click())
+    page.get_by_test_id("by-hand").click()
+    box = page.locator('#figure [data-handle="A"]').bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for i in range(1, 13):                        # the crank (50 mm at 30°) turned by hand, 120°
+        t = math.radians(30 + 10 * i)
+        page.mouse.move(*page.evaluate(f"window.kinematika.toScreen([{0.05 * math.cos(t)}, {0.05 * math.sin(t)}])"))
+    page.mouse.up()
+    page.wait_for_timeout(1500)
+    page.screenshot(path=HERE / "by-hand.ca.png")
+    page.close()
+
+    for lang in ("eu", "ca"):
+        phone = browser.new_page(viewport={"width": 390, "height": 844}, bypass_csp=True)
+        phone.goto(url)
+        ready(phone)
+        phone.get_by_test_id("ui-language").select_option(lang)
+        ready(phone)
+        phone.wait_for_timeout(800)
+        handle = phone.locator('#figure [data-handle="B"]').bounding_box()
+        phone.mouse.click(handle["x"] + handle["width"] / 2, handle["y"] + handle["height"] / 2)
+        phone.wait_for_timeout(1200)
+        phone.screenshot(path=HERE / f"phone-properties.{lang}.png")
+        phone.get_by_test_id("close-properties").click()
+        phone.locator("#answers").scroll_into_view_if_needed()
+        phone.evaluate("document.querySelector('.answers-panel').scrollIntoView({block: 'start'})")
+        phone.wait_for_timeout(500)
+        phone.screenshot(path=HERE / f"phone-answers.{lang}.png")
+        phone.close()
+
+
 def main() -> None:
     proc, url = serve()
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path="/usr/bin/chromium", args=FLAGS)
+            if "--student" in sys.argv:          # only the page as a student meets it
+                as_a_student(browser, url)
+                return
             page = browser.new_page(viewport={"width": 1440, "height": 1000}, bypass_csp=True)
             page.goto(url)
             ready(page)

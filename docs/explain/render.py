@@ -15,7 +15,10 @@ from pathlib import Path
 
 from PIL import Image, ImageChops
 
-from kinematika.explain import explain
+import functools
+
+import kinematika
+from kinematika.explain import build, render
 
 HERE = Path(__file__).resolve().parent
 EXAMPLES = HERE.parents[1] / "examples"
@@ -42,6 +45,13 @@ def shoot(page, html: Path, png: Path) -> None:
     image.crop((0, 0, WIDTH, min(image.size[1], box[3] + 40))).quantize(colors=64).save(png, optimize=True)
 
 
+@functools.lru_cache(maxsize=None)
+def document(name: str):
+    """The explanation of an example, built once for all its languages (what `kinematika
+    explain` builds before rendering it in one)."""
+    return build(kinematika.solve(EXAMPLES / f"{name}.yaml"))
+
+
 def main() -> None:
     from playwright.sync_api import sync_playwright
 
@@ -54,7 +64,7 @@ def main() -> None:
         page = browser.new_page(viewport={"width": WIDTH, "height": 1200})
         for name, lang in jobs(args.names, args.lang):
             html = HERE / f"{name}.{lang}.html"
-            html.write_text(explain(EXAMPLES / f"{name}.yaml", lang=lang, fmt="html"), encoding="utf-8")
+            html.write_text(render(document(name), lang, "html"), encoding="utf-8")
             shoot(page, html, HERE / f"{name}.{lang}.png")
             print(html.with_suffix(".png").name, flush=True)
         browser.close()

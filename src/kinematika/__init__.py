@@ -19,7 +19,7 @@ __version__ = "0.1.0"
 _EXPORTS = {
     "solve": "api", "answers": "api", "as_model": "api", "load_model": "model.files",
     "Mechanism": "api", "Solution": "solution", "KinematikaError": "errors",
-    "run_sweep": "sweep",
+    "run_sweep": "sweep", "run_simulation": "simulate",
 }
 __all__ = [*sorted(_EXPORTS), "__version__"]  # noqa: PLE0604 (the names _EXPORTS lists)
 

@@ -21,7 +21,7 @@ from contextlib import contextmanager, nullcontext
 from typing import Any, Callable, ContextManager, Iterator, TypeVar
 
 from . import memo
-from .errors import KinematikaError
+from .errors import KinematikaError, Said
 from . import limits
 from .limits import symbolic_seconds
 
@@ -90,11 +90,11 @@ def exact_work(model: Any, symbolic: bool | None = None) -> ContextManager:
     with `symbolic`, or a parameter without a value); numbers need none. The error's advice
     names what the user did: the option, or the parameters left as symbols."""
     if symbolic:
-        return budget("the exact formulas", why="--symbolic")
+        return budget("exact-formulas", why="--symbolic")
     free = [name for name, p in model.parameters.items() if p.value is None]
     if not free:
         return nullcontext()
-    return budget("the exact formulas", why="null:" + ", ".join(free))
+    return budget("exact-formulas", why="null:" + ", ".join(free))
 
 
 def check(stage: str = "") -> None:
@@ -166,22 +166,21 @@ def _time_up(signum: int, frame: Any) -> None:
 
 def _over(counted: bool = False) -> OverBudget:
     _, what, seconds, stage, _, why, _ = _state()[-1]
-    at = f" ({stage})" if stage else ""
-    cost = (f"more than {limits.EXACT_WORK:,} steps of exact algebra".replace(",", " ") if counted
-            else f"longer than {seconds:g} s of CPU time")
-    return OverBudget("limit", f"finding {what} takes {cost}{at}: they are too large; {_advice(why)}", "")
+    return OverBudget("limit", "over-budget", "", what=Said.of(what, {}), counted=str(counted).lower(),
+                      steps=f"{limits.EXACT_WORK:,}".replace(",", " "), seconds=float(seconds),
+                      staged=str(bool(stage)).lower(), stage=Said.of(stage or "nothing", {}), advice=_advice(why))
 
 
-def _advice(why: str) -> str:
+def _advice(why: str) -> Said:
     """What to change, from what made the work exact: the option, or symbols in the model."""
     if why == "--symbolic":
-        return "give some parameters numbers, or solve without --symbolic"
+        return Said("advice-symbolic")
     if why.startswith("null:"):
         names = why[5:]
         if len(names) > 60:
             names = names[:59] + "…"
-        return f"give numbers to some of the parameters left as symbols (null: {names})"
-    return "give some parameters numbers"
+        return Said("advice-null", names=names)
+    return Said("advice-numbers")
 
 
 def _arm(end: float) -> Any:

@@ -16,18 +16,19 @@ from .api import ModelLike, prepare
 @dataclass(frozen=True)
 class How:
     """The model a command analyses: its text's format and the `--set`, `--move` and
-    `--assembly` choices (see `api.prepare`)."""
+    `--assembly` choices (see `api.prepare`), and for the page a row of its sweep (`row`)."""
 
     fmt: Optional[str] = None
     set: Mapping[str, Any] = field(default_factory=dict)
     move: Mapping[str, Any] = field(default_factory=dict)
     assembly: Optional[int] = None
+    row: Optional[int] = None
 
     def model(self, source: ModelLike) -> Any:
         """The prepared model `source` with these choices (`api.prepare`: parsed, values set,
         moved, assembly chosen)."""
         return prepare(source, fmt=self.fmt, set=self.set or None, move=self.move or None,
-                       assembly=self.assembly)
+                       assembly=self.assembly, row=self.row)
 
 
 AS_GIVEN = How()
@@ -71,6 +72,18 @@ def sweep_run(source: ModelLike, joint: Optional[str] = None, by: Optional[float
 
     sweeper = Sweeper(how.model(source), joint)
     return sweeper, sweeper.run(by, steps, skip_bad, progress=progress)
+
+
+def simulate_run(source: ModelLike, time: Optional[float] = None, steps: Optional[int] = None,
+                 method: Optional[str] = None, progress: Any = False, how: How = AS_GIVEN,
+                 default_time: Optional[float] = None) -> tuple[Any, Any]:
+    """`kinematika simulate`: the `Simulator` (for the summary) and its `SimulationResult`
+    (whose `to_json()` is the answer); a motion that stops early raises
+    `simulate.run.SimulationStopped`, which holds the rows before (`result`)."""
+    from .simulate.run import Simulator
+
+    simulator = Simulator(how.model(source), default_time)
+    return simulator, simulator.run(time, steps, method, progress)
 
 
 def assemblies_data(source: ModelLike, how: How = AS_GIVEN) -> dict:

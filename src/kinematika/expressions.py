@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
 from . import limits
+from .errors import Said, parser_problem
 from .text import brief
 
 MAX_LENGTH = limits.EXPRESSION_CHARS
@@ -74,7 +75,7 @@ def _restore(tree: ast.AST, names: dict[str, str], source: str) -> None:
     for node in ast.walk(tree):
         if isinstance(node, ast.Name):
             if node.id not in names:
-                raise ExpressionError(f"cannot read expression {brief(source)}")
+                raise ExpressionError("expr-unreadable-bare", source=brief(source))
             node.id = names[node.id]
         elif isinstance(node, ast.Attribute):
             node.attr = names.get(node.attr, node.attr)
@@ -83,7 +84,15 @@ def _restore(tree: ast.AST, names: dict[str, str], source: str) -> None:
 
 
 class ExpressionError(ValueError):
-    """An expression that cannot be read; the caller adds the place."""
+    """An expression that cannot be read; the caller adds the place. Its message is a key
+    of the errors' catalogue and its arguments (`said`), as a `KinematikaError`'s."""
+
+    def __init__(self, message: "str | Said", /, **args: Any) -> None:
+        self.said = Said.of(message, args)
+        super().__init__(self.said)
+
+    def __str__(self) -> str:
+        return self.said.said()
 
 
 @dataclass(frozen=True)
@@ -108,25 +117,25 @@ class Expr:
 def parse(text: str | int | float) -> Expr:
     """Parse a number or an expression string into a checked `Expr`."""
     if isinstance(text, bool):
-        raise ExpressionError(f"expected a number or an expression, got {brief(text)}")
+        raise ExpressionError("expr-expected", got=brief(text))
     if isinstance(text, (int, float)):
         if not _finite(text):
-            got = repr(text) if isinstance(text, float) else f"an integer of {text.bit_length()} bits"
-            raise ExpressionError(f"expected a finite number in the range of floats, got {got}")
+            got = repr(text) if isinstance(text, float) else Said("integer-bits", bits=text.bit_length())
+            raise ExpressionError("expr-not-finite", got=got)
         return Expr(repr(text), ast.Constant(text))
     if not isinstance(text, str):
-        raise ExpressionError(f"expected a number or an expression, got {brief(text)}")
+        raise ExpressionError("expr-expected", got=brief(text))
     source = text.strip()
     if not source:
-        raise ExpressionError("empty expression")
+        raise ExpressionError("expr-empty")
     if len(source) > MAX_LENGTH:
-        raise ExpressionError(f"expression longer than {MAX_LENGTH} characters")
+        raise ExpressionError("expr-too-long", limit=MAX_LENGTH)
     plain, names = _placeholders(source)
     try:
         tree = ast.parse(plain, mode="eval").body
     except (SyntaxError, ValueError, RecursionError, MemoryError) as err:
         detail = getattr(err, "msg", None) or "unreadable"
-        raise ExpressionError(f"cannot read expression {brief(source)}: {detail}") from None
+        raise ExpressionError("expr-unreadable", source=brief(source), detail=parser_problem(detail)) from None
     _restore(tree, names, source)
     _check(tree, source, 0)
     return Expr(source, tree)
@@ -134,12 +143,12 @@ def parse(text: str | int | float) -> Expr:
 
 def _check(node: ast.AST, source: str, depth: int) -> None:
     if depth > MAX_DEPTH:
-        raise ExpressionError(f"expression {brief(source)} is nested too deeply")
+        raise ExpressionError("expr-too-deep", source=brief(source))
     if isinstance(node, ast.Constant):
         if isinstance(node.value, bool) or not isinstance(node.value, (int, float)):
-            raise ExpressionError(f"in {brief(source)}: only numbers may be written as constants")
+            raise ExpressionError("expr-constant", source=brief(source))
         if not _finite(node.value):
-            raise ExpressionError(f"in {brief(source)}: a number is too large")
+            raise ExpressionError("expr-number-too-large", source=brief(source))
         return
     if isinstance(node, ast.Name):
         return
@@ -153,14 +162,14 @@ def _check(node: ast.AST, source: str, depth: int) -> None:
     if isinstance(node, ast.Call):
         name = node.func.id if isinstance(node.func, ast.Name) else None
         if name not in FUNCTIONS:
-            raise ExpressionError(f"in {brief(source)}: unknown function {brief(ast.unparse(node.func))} "
-                                  f"(known: {', '.join(sorted(FUNCTIONS))})")
+            raise ExpressionError("expr-unknown-function", source=brief(source), function=brief(ast.unparse(node.func)),
+                                  known=sorted(FUNCTIONS))
         if node.keywords or len(node.args) != FUNCTIONS[name]:
-            raise ExpressionError(f"in {brief(source)}: {name} takes {FUNCTIONS[name]} argument(s)")
+            raise ExpressionError("expr-arguments", source=brief(source), function=name, count=FUNCTIONS[name])
         for arg in node.args:
             _check(arg, source, depth + 1)
         return
-    raise ExpressionError(f"in {brief(source)}: {brief(ast.unparse(node))} is not allowed in an expression")
+    raise ExpressionError("expr-not-allowed", source=brief(source), part=brief(ast.unparse(node)))
 
 
 def _finite(value: int | float) -> bool:
@@ -198,7 +207,7 @@ def _eval(node: ast.AST, env: Mapping[str, Any], backend: Any, source: str) -> A
             return env[name]
         if name in CONSTANTS:
             return backend.pi
-        raise ExpressionError(f"in {brief(source)}: unknown name {brief(name)} (not a parameter)")
+        raise ExpressionError("expr-unknown-name", source=brief(source), name=brief(name))
     if isinstance(node, ast.UnaryOp):
         value = _eval(node.operand, env, backend, source)
         return -value if isinstance(node.op, ast.USub) else value
@@ -213,7 +222,8 @@ def _eval(node: ast.AST, env: Mapping[str, Any], backend: Any, source: str) -> A
         if isinstance(result, float) and result == 0 and node.func.id == "exp":
             raise OverflowError("the value is too small for floating-point numbers")
     except (ValueError, ZeroDivisionError, OverflowError) as err:
-        raise ExpressionError(f"in {brief(source)}: {node.func.id} cannot be evaluated ({err})") from None
+        raise ExpressionError("expr-function-fails", source=brief(source), function=node.func.id,
+                              why=parser_problem(str(err))) from None
     return backend.check(result, source)
 
 
@@ -233,18 +243,17 @@ def _magnitude(value: Any) -> float:
 
 def _binary(op: str, left: Any, right: Any, backend: Any, source: str) -> Any:
     if op == "**" and not getattr(right, "free_symbols", None) and _magnitude(right) > MAX_EXPONENT:
-        raise ExpressionError(f"in {brief(source)}: the exponent {_magnitude(right):g} is too large "
-                              f"(at most {MAX_EXPONENT} in absolute value)")
+        raise ExpressionError("expr-exponent", source=brief(source), exponent=float(_magnitude(right)),
+                              limit=MAX_EXPONENT)
     try:
         result = _OPS[op](left, right)
     except ZeroDivisionError:
-        raise ExpressionError(f"in {brief(source)}: division by zero") from None
+        raise ExpressionError("expr-division-by-zero", source=brief(source)) from None
     except OverflowError:
-        raise ExpressionError(f"in {brief(source)}: the value is too large") from None
+        raise ExpressionError("expr-too-large", source=brief(source)) from None
     if isinstance(result, complex):
-        raise ExpressionError(f"in {brief(source)}: the value is not real")
+        raise ExpressionError("expr-not-real", source=brief(source))
     if isinstance(result, float) and result == 0 and left != 0 and (op != "*" or right != 0) \
             and op in ("*", "/", "**"):
-        raise ExpressionError(f"in {brief(source)}: the value is too small for floating-point "
-                              "numbers (it would be taken as 0)")
+        raise ExpressionError("expr-underflow", source=brief(source))
     return backend.check(result, source)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import importlib
 from types import ModuleType
+from typing import Any
 
 from .errors import KinematikaError
 
@@ -28,16 +29,16 @@ def install_hint(extra: str) -> str:
     return f".venv/bin/pip install -e '.[{extra}]' (or pip install 'kinematika[{extra}]')"
 
 
-def missing(module: str, what: str, where: str = "", extra: str | None = None) -> KinematikaError:
+def missing(module: str, what: Any, where: str = "", extra: str | None = None) -> KinematikaError:
     """The error for `what` (a command or a feature) needing `module`, which is not installed;
     `extra` names the extra to install when it is not the module's usual one (`EXTRA`)."""
     top = module.partition(".")[0]
     extra = extra or EXTRA.get(top)
-    how = f"install it with {install_hint(extra)}" if extra else f"install it with pip install {top}"
-    return KinematikaError("usage", f"{what} needs {top}, which is not installed: {how}", where)
+    how = install_hint(extra) if extra else f"pip install {top}"
+    return KinematikaError("usage", "module-missing", where, what=what, module=top, command=how)
 
 
-def need(module: str, what: str, where: str = "", extra: str | None = None) -> ModuleType:
+def need(module: str, what: Any, where: str = "", extra: str | None = None) -> ModuleType:
     """`module`, imported; if it is not installed, the `missing` error for `what`."""
     try:
         return importlib.import_module(module)

@@ -32,6 +32,19 @@ SCALE = 1e50                 # lengths and rates (ω, v/length, √(a/length)) b
 # sweeps -----------------------------------------------------------------------------------
 SWEEP_STEPS = 10_000_000     # increments of one sweep
 SWEEP_VALUES = 32_000_000    # rows × numbers per row held at once: 480 000 rows of a four-bar (under 1 GB on every path)
+SWEEP_LIMITS = 10_000        # limit positions one sweep passes through (a four-bar's cycle has 2;
+                             # the motion stops when it is back at the drawing)
+CONTINUATION_STEPS = 2_000   # arclength steps between two rows of a sweep on Newton's path (a limit
+                             # position of the examples takes under 50)
+SWEEP_TRAVEL = 1_000_000     # a sweep's or a move's travel (`by`, a `move` amount): at most this many turns of a
+                             # revolute, or times the mechanism's size along a prismatic (angles stay exact to 1e-9 rad)
+
+# motion in time (`kinematika simulate`) ----------------------------------------------------
+SIMULATE_STEPS = 1_000_000   # rows of one simulation (each is solved by the engine: about a millisecond)
+SIMULATE_EVALUATIONS = 200_000   # velocity solutions the ODE solver may ask for in one simulation (a smooth
+                             # motion takes a few per second of motion: the tractor and trailer over
+                             # 60 s, a few hundred); beyond, the motion is too stiff or too nearly
+                             # singular to follow, and the rows computed so far are kept
 
 # symbolic work ----------------------------------------------------------------------------
 EXACT_WORK = 1_500_000       # steps of exact algebra a command may take (terms formed, products of
@@ -59,7 +72,7 @@ PAGE_SWEEP_STEPS = 20_000    # increments of a sweep asked through the API
 ANSWER_CACHE_BYTES = 64_000_000   # answers kept for identical requests (a class opening one example)
 
 # messages ---------------------------------------------------------------------------------
-MESSAGE_CHARS = 200          # an error message is one line, cut beyond this (with …)
+MESSAGE_CHARS = 300          # an error message is one line, cut beyond this (with …): a translation runs longer
 WHERE_CHARS = 120            # an error's place (a file path, `joints[2] (j3)`) likewise
 
 

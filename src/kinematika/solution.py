@@ -78,8 +78,7 @@ class Solution:
         names = [body] if relative_to is None else [body, relative_to]
         for name in names:
             if not isinstance(name, str) or name not in self.model.bodies:
-                raise KinematikaError("schema", f"unknown body {name!r} (bodies: "
-                                      f"{', '.join(self.model.bodies)})")
+                raise KinematikaError("schema", "unknown-body", "", body=name, bodies=list(self.model.bodies))
         frame = self.frame_of(relative_to)
         if self.exact is not None and frame is not None:
             return self.exact.state(body, frame)

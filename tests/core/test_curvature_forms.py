@@ -47,6 +47,21 @@ def test_every_length_a_symbol_the_radii_are_the_links():
     assert [exact(x) for x in relative["center"]] == [a * sympy.cos(theta), a * sympy.sin(theta)]
 
 
+def test_the_couplers_b_moves_on_the_rockers_circle():
+    """Issue 31: every length a symbol, the curvature of B's path on the coupler (relative to
+    the ground). B is the rocker's pin, so B@coupler moves as B@rocker: on the circle of
+    radius c about O4 = (d, 0) — the answer was a formula of 37 000 characters equal to c."""
+    (coupler,) = answers(["theta", "a", "b", "c", "d"], [{"curvature": "B@coupler"}])
+    assert coupler["radius"] == "c"
+    assert [exact(x) for x in coupler["center"]] == [d, 0]
+
+
+def test_the_couplers_b_relative_to_the_rocker_is_at_rest():
+    """Seen from the rocker, the coupler's B stays where it is: a point at rest, no circle."""
+    (seen,) = answers(["a", "b", "c", "d"], [{"curvature": "B@coupler", "relative_to": "rocker"}])
+    assert seen == {"radius": None, "rest": True}
+
+
 def test_a_point_of_the_rod_keeps_the_curvature_of_its_path():
     """The rod's midpoint M of the offset slider-crank (r = 3, l = 11, e = −2) with θ a
     symbol (the rod has no pin to the ground): its radius against ρ = (x'² + y'²)^{3/2} /

@@ -4,10 +4,12 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
 from kinematika import KinematikaError, solve
+from kinematika.commands import solve_data
 from kinematika.model.files import parse_text
 
 from .models import four_bar
@@ -142,6 +144,43 @@ def test_restated_rate_with_a_contradicting_alpha_is_a_conflict():
     err = error_of(four_bar(drivers=[{"omega": "crank", "value": 10},
                                      {"omega": "rocker", "value": repr(w4)}]))
     assert err.kind == "mobility" and "α of rocker = 0" in err.message
+
+
+def _rigid_epicyclic(drivers: list) -> dict:
+    """The notes' epicyclic train (C5-1.4: sun r, ring 3r, three planets r on a carrier at 2r)
+    in numbers, r = 0.05, with the given drivers."""
+    import yaml
+
+    examples = Path(__file__).resolve().parents[2] / "examples"
+    tree = yaml.safe_load((examples / "seed_c5_1_4_epicyclic.yaml").read_text())
+    tree["parameters"] = {"r": 0.05, "w": 10}
+    tree.pop("draw_at")
+    tree["drivers"] = drivers
+    return tree
+
+
+@pytest.mark.parametrize("symbolic", [False, True])
+def test_a_train_driven_rigidly_is_no_conflict(symbolic):
+    """Carrier and ring driven at the same rate w: the planets cannot turn on the carrier, so
+    the whole train turns as one body at w (sun and planets too), and A1 = (0, −2r) moves at
+    w k × A1 = (2rw, 0), by hand. Redundant (three planets) and consistent: never a conflict
+    (the acceleration system's right side is all round-off there)."""
+    tree = _rigid_epicyclic([{"omega": "carrier", "value": "w"}, {"omega": "ring", "value": "w"}])
+    if symbolic:
+        tree["parameters"] = {"r": None, "w": None}
+    data = solve_data(tree)
+    w = "w" if symbolic else 10.0
+    for body in ("carrier", "ring", "sun", "planet1", "planet2", "planet3"):
+        assert data["bodies"][body] == {"omega": w, "alpha": "0" if symbolic else 0.0}
+    assert data["points"]["A1@carrier"]["velocity"] == (["2*r*w", "0"] if symbolic else [1.0, 0.0])
+
+
+def test_a_third_consistent_driver_of_a_rigid_train_is_accepted_and_a_contradicting_alpha_is_not():
+    rigid = [{"omega": "carrier", "value": "w"}, {"omega": "ring", "value": "w"}]
+    sol = solve(_rigid_epicyclic(rigid + [{"omega": "sun", "value": "w", "alpha": 0}]))
+    assert sol.omega("planet2") == pytest.approx(10, rel=1e-12)
+    err = error_of(_rigid_epicyclic(rigid + [{"omega": "sun", "value": "w", "alpha": 1}]))
+    assert err.kind == "mobility" and "α of sun = 1" in err.message
 
 
 def test_dead_point_is_singular():

@@ -90,7 +90,7 @@ def test_the_records_have_schemas_fields_and_defaults():
                                                      "CirclesSpec", "CircleLineSpec", "LineSpec", "LinesSpec",
                                                      "BodySpec", "CircleSpec", "DiscSpec", "PlaneSpec", "CurveSpec",
                                                      "JointSpec", "OmegaDriver", "JointDriver", "VelocityDriver",
-                                                     "QuestionSpec", "SweepSpec",
+                                                     "QuestionSpec", "SweepSpec", "SimulateSpec",
                                                      "ExerciseSpec", "DimensionSpec", "LanguageNames"}  # all but the cam's design
 
 

@@ -177,7 +177,7 @@ def test_a_file_without_the_columns_is_one_error(p_pair30, tmp_path):
 @pytest.mark.parametrize("bad, why", [
     ("x,99,q1,1", "no variant 99"),
     ("x,1,q9,1", "'q9' is not asked"),
-    ("x,1,q1,2", "again (first on line 2)"),
+    ("x,1,q1,2", "twice (first on line 2)"),
     (",1,q1,2", "without a student"),
     ("x,one,q1,2", "is not a number"),
     ("x,1,q1,1,2,3", "6 fields"),

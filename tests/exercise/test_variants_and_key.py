@@ -155,7 +155,7 @@ def test_mistakes_that_barely_differ_are_told_apart_or_their_variant_not_drawn(p
                 if gap <= min(tol, NOISE + p_pair30.tolerance):
                     continue                                   # a change no margin sees
                 assert gap >= APART * tol * (1 + min(1.0, wrong[0].size / size)) * (1 - 1e-9), (v.number, m.kind)
-    said = p_pair30.notes
+    said = [str(n) for n in p_pair30.notes]
     assert said and all(n.startswith(("not drawn: ", "variant ")) for n in said)
     for n in (n for n in said if n.startswith("variant ")):
         number, stem = int(n.split()[1].rstrip(":")), n.split("margin of ")[1].split()[0]

@@ -118,7 +118,7 @@ def unknowns(sol, ctx, eq, dim) -> tuple[dict, list]:
                 cols += own
     if len(eq.sides) == 1 and marks(eq.target):
         distinct[("target",)] = marks(eq.target)
-        cols += list(np.eye(dim)) if eq.target.dir.code == "?" else []
+        cols += column(sol, ctx, eq, eq.target, dim)       # its magnitude along a known line, or all
     return distinct, cols
 
 
@@ -169,7 +169,8 @@ def test_a_term_found_before_is_known(name):
 SEEDS = sorted(p.stem for p in (Path(__file__).resolve().parents[2] / "examples").glob("seed_*.yaml"))
 
 
-SAYS_MOTION = ("driver.along", "driver.velocity", "group.wheel_a", "vehicle.driven", "vehicle.translation")
+SAYS_MOTION = ("driver.along", "driver.velocity", "group.wheel_a", "vehicle.driven", "vehicle.translation",
+               "contact.fixed")            # a point of a body welded to the frame does not move
 
 
 def _said(b) -> set[str]:

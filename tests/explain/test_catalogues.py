@@ -19,11 +19,11 @@ SOURCE = Path(explain_package.__file__).resolve().parent
 # keys built at run time from a name (f"kind.{step.kind}" ...): the families and their members
 FAMILIES = {
     "kind": ["input", "RRR", "RRP", "RPR", "PRP", "other"],
-    "joint": list(KINDS),                                   # every kind of joint has its name
+    "joint": list(KINDS) + ["slot_fixed"],                  # every kind of joint has its name (kinds.kind_key)
     "shape": ["circle", "line", "disc", "plane", "curveshape", "camshape"],
-    "cond": [k.name for k in KINDS.values() if not k.rolls],  # rolling pairs are written out
+    "cond": [k.name for k in KINDS.values() if not k.rolls] + ["slot_fixed"],  # rolling pairs are written out
     "centre.joint": [k.name for k in KINDS.values() if k.centre in FIXED],
-    "centre.line": ["slot", "wheel", "normal"],
+    "centre.line": ["slot", "wheel", "normal", "slot_fixed"],
     "ask": ["icr", "axis", "pole", "curvature", "intrinsic", "inflection"],
     "ans": ["point", "direction", "center", "tangent", "slide"],
     "centre.proportional": ["between", "outside"],

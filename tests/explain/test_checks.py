@@ -44,23 +44,40 @@ def test_pulley_train_ratio():
     _, doc = explained("pulley_train")
     train = checks(doc, "check.train")
     assert len(train) == 1 and value(train[0].args["value"]) == pytest.approx(0.1)
-    assert [value(m.args["ratio"].items[-1]) for m in checks(doc, "check.belt")] == pytest.approx([0.25, 0.4])
+    assert [float(x) for x in drive_ratio(doc)] == pytest.approx([0.25, 0.4] * 2)     # ω, then α
+
+
+def drive_ratio(doc) -> list:
+    """The ratio each drive step writes: ω_b/K = (ratio) · ω_a/K."""
+    from kinematika.explain.document import Derived, Value
+
+    return [d.how[0].value for d in doc.blocks() if isinstance(d, Derived) and d.how and isinstance(d.how[0], Value)
+            and len(d.how) == 3 and d.how[1] == " · "]
 
 
 def test_bicycle_chain_as_the_notes_write_it():
-    """r Ω_pinyó = R Ω_plat: the chainring turns at r/R of the sprocket, seen from the frame."""
+    """r Ω_pinyó = R Ω_plat, the step that gives the chainring's rate (not a check after it):
+    seen from the frame, the chainring turns at r/R of the sprocket."""
     sol, doc = explained("seed_c5_e6_bicycle")
-    belt = checks(doc, "check.belt")
-    assert len(belt) == 1
+    assert len(checks(doc, "drive.relation")) == 1 and not checks(doc, "check.belt")
     r, R = (next(s for s in sol.inst.env.values() if str(s) == n) for n in ("r", "R"))
-    assert sympy.simplify(belt[0].args["ratio"].items[-1].value - r / R) == 0
+    ratios = drive_ratio(doc)
+    assert len(ratios) == 2 and all(sympy.simplify(x - r / R) == 0 for x in ratios)     # ω, then α
 
 
 def test_moving_pulley_seen_from_the_arm():
-    """C5-1.6: from the arm, 2r ω_ground = r ω_pulley, so the pulley turns at twice the fixed one."""
-    _, doc = explained("seed_c5_1_6_belt")
-    belt = checks(doc, "check.belt")
-    assert len(belt) == 1 and value(belt[0].args["ratio"].items[-1]) == 2
+    """C5-1.6: from the arm, 2r ω_ground/arm = r ω_pulley/arm, so the pulley turns at twice the
+    fixed one relative to the arm: ω_3/2 = 2 ω_1/2 = −2ω, then ω_3 = ω_3/2 + ω_2 = −ω (the
+    notes' ⊗2ω + ⊙ω = ⊗ω)."""
+    sol, doc = explained("seed_c5_1_6_belt")
+    assert len(checks(doc, "drive.relation")) == 1 and not checks(doc, "check.belt")
+    assert [float(x) for x in drive_ratio(doc)] == [2]         # velocities only: nothing asks α
+    from kinematika.explain.document import Derived
+
+    w = next(s for s in sol.inst.env.values() if str(s) == "w")
+    composed = [d for d in doc.derived() if d.sym.sub == "pulley" and d.how and d.how[-1].sub == "arm"]
+    assert len(composed) == 1 and sympy.simplify(composed[0].value.value + w) == 0
+    assert isinstance(composed[0], Derived)
 
 
 def test_quick_return_time_ratio():

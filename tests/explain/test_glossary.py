@@ -60,7 +60,8 @@ def test_the_notes_examples_name_their_bodies_by_the_glossary(lang):
     for path in sorted(EXAMPLES.glob("seed_*.yaml")) + sorted(EXAMPLES.glob("fan_*.yaml")):
         names = (yaml.safe_load(path.read_text(encoding="utf-8")).get("names") or {}).get(lang) or {}
         words = " ".join([names.get("title", "")] + list(names.get("bodies", {}).values())
-                         + list(names.get("points", {}).values()))
+                         + list(names.get("points", {}).values()) + list(names.get("parameters", {}).values())
+                         + list(names.get("data", [])) + list(names.get("notes", [])))
         assert names, (path.stem, lang, "no names in this language")
         for variant in avoid:
             assert not found(variant, words), (path.stem, lang, variant)

@@ -66,3 +66,42 @@ def test_names_styled_per_format():
     assert "<i>ω</i><sub>3</sub>" in page and "<i>I</i><sub>13</sub>" in page
     assert "\\emph{coupler}" in render(fb, "en", "tex")
     assert "*coupler*" in render(fb, "en", "md", drawings=False)
+
+
+FOUR = {"points": {"O2": [0, 0], "A": [0, 1], "B": [3, 2], "O4": [4, 0]},
+        "bodies": {"ground": ["O2", "O4"], "crank": ["O2", "A"], "coupler": ["A", "B"], "rocker": ["B", "O4"]},
+        "joints": [{"type": "revolute", "bodies": ["ground", "crank"], "at": "O2"},
+                   {"type": "revolute", "bodies": ["crank", "coupler"], "at": "A"},
+                   {"type": "revolute", "bodies": ["coupler", "rocker"], "at": "B"},
+                   {"type": "revolute", "bodies": ["rocker", "ground"], "at": "O4"}],
+        "drivers": [{"omega": "crank", "value": 10}],
+        "ask": [{"omega": "coupler"}, {"velocity": "B", "relative_to": "crank"}, {"icr": "coupler"}]}
+
+
+def test_a_bodys_index_is_written_everywhere():
+    """notation index(coupler): N — ω_N, v_B∈N/2, I_1N in the text; (N) in the figure's
+    numbering; the other bodies keep their numbers."""
+    sol = kinematika.solve({**FOUR, "notation": {"index(coupler)": "N"}})
+    doc = build(sol)
+    text = render(doc, "en", "md", drawings=False)
+    assert "ω_N" in text and "v_{B∈N/2}" in text and "I_1N" in text and "ω_3" not in text
+    from kinematika.draw.scene import build_scene, numbering
+    from kinematika.draw.options import DrawOptions
+
+    scene = build_scene(sol.inst, sol, DrawOptions(lang="en", bare=True, centres=True))
+    assert ("N", "coupler") in numbering(scene) and (2, "crank") in numbering(scene)
+
+
+@pytest.mark.parametrize("notation, place", [
+    ({"index(coupler)": "2"}, "notation.index(coupler)"),                 # the crank is 2
+    ({"index(coupler)": "N!"}, "notation.index(coupler)"),
+    ({"index(nobody)": "N"}, "notation.index(nobody)"),
+    ({"spin(j1)": {"symbol": "phidot", "radius": "r"}}, "notation.spin(j1)"),     # not a wheel
+    ({"spin(j9)": {"symbol": "phidot", "radius": "r"}}, "notation.spin(j9)"),
+])
+def test_a_wrong_index_or_spin_is_an_error_naming_its_place(notation, place):
+    from kinematika.errors import KinematikaError
+
+    with pytest.raises(KinematikaError) as err:
+        kinematika.solve({**FOUR, "parameters": {"r": 1}, "notation": notation})
+    assert err.value.where == place or place in str(err.value), (str(err.value), notation)

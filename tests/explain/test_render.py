@@ -76,7 +76,7 @@ def test_latex_compiles(tmp_path):
     assert (tmp_path / "p.pdf").stat().st_size > 10000
 
 
-@pytest.mark.parametrize("name, drawings", [("quick_return", 2), ("fan_composition", 1), ("seed_c5_2_1_tricycle", 2)])
+@pytest.mark.parametrize("name, drawings", [("quick_return", 1), ("fan_composition", 1), ("seed_c5_2_1_tricycle", 2)])   # centres only when asked
 def test_figures_are_the_draw_figures(name, drawings):
     """The mechanism (3D too) and its instant centres as `kinematika draw` draws them, bare
     (captions in the page's language), ids unique across the page; a symbolic model's

@@ -24,6 +24,8 @@ ENGLISH = {"carrier", "sun", "ring", "planet", "block", "blades", "blade", "shaf
            "front", "upper", "lower", "plane", "roll", "steer", "sleeve", "cylinder", "semicylinder", "fixed",
            "moving", "left", "right", "guide", "track", "cavity", "vehicle", "bicycle", "tricycle", "fan",
            "transmission", "epicyclic", "contact", "connecting", "gear", "change", "articulated", "unequal"}
+# words spelt alike in English and in the language (a Spanish or Catalan cable is a cable)
+ALIKE = {"es": {"cable"}, "ca": {"cable"}, "eu": set()}
 WORD = re.compile(r"[A-Za-zÀ-ÿ·]+")
 
 
@@ -38,7 +40,7 @@ def text(name: str, lang: str) -> str:
 @pytest.mark.parametrize("name", NOTES)
 def test_no_english_mechanism_word(name, lang):
     sol, _ = explained(name)
-    found = sorted({w for w in WORD.findall(text(name, lang)) if w.lower() in ENGLISH})
+    found = sorted({w for w in WORD.findall(text(name, lang)) if w.lower() in ENGLISH - ALIKE[lang]})
     assert not found, f"English in the {lang} explanation of {name}: {found}"
     labels = [b.label for b in build_scene(sol.inst, sol, DrawOptions(lang=lang, bare=True)).bodies.values()]
     stray = sorted({w for label in labels for w in WORD.findall(label) if w.lower() in ENGLISH})

@@ -21,13 +21,13 @@ SYNTAX = [
     (r"\b(body_a|body_b|tangential_vector|normal_vector|rates_summary)\b", "an answer's key"),
     (r"\b(geometric|velocity|acceleration|total|drag|relative|coriolis)\.(velocity|acceleration|drag|relative|total|coriolis)\b",
      "an answer's key path"),
-    (r"\b(deg|cos|sin|tan|sqrt|atan2?)\(", "an expression as written"),
+    (r"\b(deg|sqrt|atan2?)\(|\b(cos|sin|tan)\([^)]*(deg\(|\*)", "an expression as written"),   # sin(β) is math
     (r"\w\*\w|\*\*", "a product written as in the model"),
     (r"\b(Abs|sign|Piecewise|atan2)\(", "a function written as sympy prints it"),
     (r"\bpi\b", "π written as pi"),
     (r"\b(None|True|False)\b", "a Python value"),
     (r"\b(Name|Msg|Sym|Value|Inline)\(", "a Python object"),
-    (r"[{}]\s*\$?\w+\s*[{}]", "a placeholder"),
+    (r"\{\s*\$\w+\s*\}|\{\s*\w+\s*\}(?!\S)", "a placeholder"),     # not a subscript in braces: v_{A∈2/3}
 ]
 PASTED_PLURAL = re.compile(r"\w\((s|es|ons|ak|ek)\)")
 WORD = re.compile(r"[A-Za-zÀ-ÿ’']+")
@@ -55,10 +55,14 @@ def english_words(lang: str) -> set[str]:
     return words("en") - words(lang) - {w.lower() for w in SHARED}
 
 
-def model_words(sol) -> set[str]:
+def model_words(sol, lang: str | None = None) -> set[str]:
     """The model's own names (bodies, points, joints, parameters): the user's words."""
     m = sol.model
     names = list(m.bodies) + list(sol.inst.points) + [j.id for j in m.joints] + list(m.parameters)
+    if lang is not None:                 # the model's own words in the language (names.LANG)
+        w = m.wording
+        names += list(w.points.get(lang, {}).values()) + list(w.parameters.get(lang, {}).values())
+        names += w.data.get(lang, []) + w.notes.get(lang, []) + list(w.bodies.get(lang, {}).values())
     return {w.lower() for n in names for w in WORD.findall(n)}
 
 
@@ -81,7 +85,7 @@ def test_reads_as_text(name, lang, fmt):
     m = PASTED_PLURAL.search(text)
     assert m is None, f"a pasted plural: …{text[max(0, m.start() - 40):m.end() + 20]}…"
     if lang != "en":
-        english = english_words(lang) - model_words(sol)
+        english = english_words(lang) - model_words(sol, lang)
         stray = sorted({w for w in WORD.findall(text) if w.lower() in english})
         assert not stray, f"English words in the {lang} text: {stray}"
 

@@ -1,5 +1,6 @@
-"""The batch kernel (designs × positions) gives, design by design, the numbers of `run_sweep`
-on the same model with the same parameter values, including where a sweep stops and why."""
+"""The batch kernel (designs × positions) gives, design by design, the numbers of a sweep
+on the same model with the same parameter values over its input's coordinate (not through
+limit positions, as `explore` sweeps), including where a sweep stops and why."""
 from __future__ import annotations
 
 import numpy as np
@@ -8,7 +9,7 @@ import pytest
 from kinematika.api import as_model
 from kinematika.errors import KinematikaError
 from kinematika.model.overrides import with_parameters
-from kinematika.sweep import run_sweep
+from kinematika.sweep.run import Sweeper
 from kinematika.sweep.batch import BatchSweeper, describe
 
 from .models import FOUR_BAR, QUICK_RETURN, SLIDER_CRANK
@@ -23,15 +24,17 @@ CASES = {
 
 
 def per_design(text: str, values: dict[str, float]):
-    """run_sweep of the model with the design's values, and the error it stops with (if any)."""
+    """The sweep of the model with the design's values over the input's coordinate (not
+    through limit positions: a study's cycle, as `explore` sweeps a design the batch kernel
+    does not take), and the error it stops with (if any)."""
     model = with_parameters(as_model(text), {k: repr(v) for k, v in values.items()})
     try:
-        run_sweep(model, steps=72)
+        Sweeper(model).run(steps=72, through=False)
         reason = ""
     except KinematikaError as err:
         reason = describe(err)
     try:
-        return run_sweep(model, steps=72, skip_bad=True), reason
+        return Sweeper(model).run(steps=72, skip_bad=True, through=False), reason
     except KinematikaError:
         return None, reason
 

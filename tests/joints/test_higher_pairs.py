@@ -110,15 +110,17 @@ def test_an_oscillating_roller_follower_turns_as_its_program_says():
     assert alpha == pytest.approx(-dds * W * W, abs=1e-7)
 
 
-def test_a_sweep_of_the_cam_follows_the_program_over_a_turn():
+@pytest.mark.parametrize("contact, lowest", [("roller", 50), ("knife", 40), ("flat", 80)])
+def test_a_sweep_of_the_cam_follows_the_program_over_a_turn(contact, lowest):
+    """The follower's height over a turn: its lowest (the prime or base circle) + s(θ)."""
     s0 = cycloidal(112.5)[0]
-    _, result = sweep_run(cam_model(112.5, "roller", s=s0), steps=48)
+    _, result = sweep_run(cam_model(112.5, contact, s=s0), steps=48)
     y = np.asarray(result.points["F@follower"]["position"])[:, 1]
     expected = []
     for c in np.asarray(result.coordinate):
         th = (112.5 + c) % 360
         s = 0.0 if th < 90 else cycloidal(th)[0] if th < 180 else H if th < 270 else return_345(th)[0]
-        expected.append(50 + s)
+        expected.append(lowest + s)
     assert y == pytest.approx(expected, abs=1e-7)
 
 

@@ -29,10 +29,12 @@ ALLOWED_WORDS = {           # the same words meaning something else, with where 
                 "draw/results.py", "draw/marks.py", "draw/scene.py", "explain/answers.py", "explain/terms.py",
                 "explain/contacts.py", "explain/needs.py", "web/static/js/figure.js", "questions/__init__.py",
                 "questions/centres.py", "report/json_answer.py",
+                "report/units.py",                  # the `contact` question's unit
+                "web/rename.py",                    # a renamed body in a `contact` question
                 "cli/cam.py"),                      # a cam design's follower: its `contact` (roller, flat)
     "cam": ("model/build.py", "model/schema.py", "model/shape.py", "model/generate_shape.py",
             "cli/cam.py",                           # the `kinematika cam` answer's key
-            "web/palette.py"),                      # a body's `cam:` shape
+            "web/palette.py", "web/rename.py"),     # a body's `cam:` shape
     # how a centre was found (`Centre.how`): through a weld
     "weld": ("questions/centres.py", "explain/centres.py", "explain/render/base.py", "report/centres_table.py"),
     # a body's kind: a pitch circle, and the default names of new bodies in the page's languages

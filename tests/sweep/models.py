@@ -115,3 +115,20 @@ def copy_tree(tree: dict, **changes) -> dict:
     out = copy.deepcopy(tree)
     out.update(copy.deepcopy(changes))
     return out
+
+
+def rocker_driven_tree(ground=4.0, crank=1.0, coupler=4.0, rocker=3.0, rocker_deg=120.0, w=1.0,
+                       side=1.0):
+    """A four-bar O2-A-B-O4 driven from its rocker O4B (drawn at `rocker_deg`, absolute), A on
+    the left (`side` +1) or the right of the line from O2 to B."""
+    b = (ground + rocker * math.cos(math.radians(rocker_deg)), rocker * math.sin(math.radians(rocker_deg)))
+    a = circle_meet((0.0, 0.0), crank, b, coupler, side)
+    return {"name": "Rocker-driven four-bar",
+            "points": {"O2": [0, 0], "A": list(a), "B": list(b), "O4": [ground, 0]},
+            "bodies": {"ground": ["O2", "O4"], "crank": ["O2", "A"], "coupler": ["A", "B"],
+                       "rocker": ["B", "O4"]},
+            "joints": [{"type": "revolute", "bodies": ["ground", "crank"], "at": "O2"},
+                       {"type": "revolute", "bodies": ["crank", "coupler"], "at": "A"},
+                       {"type": "revolute", "bodies": ["coupler", "rocker"], "at": "B"},
+                       {"type": "revolute", "bodies": ["ground", "rocker"], "at": "O4"}],
+            "drivers": [{"omega": "rocker", "value": w}]}

@@ -31,7 +31,7 @@ def test_sweep_stops_with_an_assembly_error_naming_the_increment(general):
     limit = _reach_limits()                      # 133.4°: rows beyond 43.4° of travel fail
     first_bad = math.ceil((limit - 90) / 10)
     with pytest.raises(KinematikaError) as err:
-        sweeper.run(by=360, steps=36)
+        sweeper.run(by=360, steps=36, through=False)
     assert err.value.kind == "assembly"
     assert f"increment {first_bad} (j1 = {10 * first_bad} deg" in str(err.value)
     assert "--skip-bad" in str(err.value)
@@ -42,7 +42,7 @@ def test_skip_bad_leaves_the_rows_empty(general):
     sweeper = Sweeper(four_bar_tree(**TRIPLE_ROCKER, crank_deg=90, side=1.0))
     if general:
         sweeper.closed = None
-    result = sweeper.run(by=360, steps=36, skip_bad=True)
+    result = sweeper.run(by=360, steps=36, skip_bad=True, through=False)
     travel = result.coordinate
     # assemblable while |θ| <= limit (θ = 90° + travel, taken in (−180°, 180°])
     theta = (90 + travel + 180) % 360 - 180

@@ -12,8 +12,9 @@ from typer.testing import CliRunner
 
 from kinematika.cli import app
 from kinematika.sweep import run_sweep
+from kinematika.sweep.run import Sweeper
 
-from .models import four_bar_tree, slider_crank_tree
+from .models import four_bar_tree, rocker_driven_tree, slider_crank_tree
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
@@ -97,19 +98,21 @@ def test_cli_json_csv_and_summary(tmp_path):
 
 def test_cli_errors_are_one_line_with_status_2(tmp_path):
     runner = CliRunner()
-    model = _model_file(tmp_path, four_bar_tree(crank=2.5, coupler=3.0, rocker=3.0, side=1.0))
-    out = runner.invoke(app, ["sweep", model, "--steps", "36"])
+    # driven from its rocker, the crank-rocker 4, 1, 4, 3 is at a dead point at 90° (a 3-4-5
+    # triangle O2-O4-B with crank and coupler in line): the row at -30 lands on it
+    model = _model_file(tmp_path, rocker_driven_tree())
+    out = runner.invoke(app, ["sweep", model, "--by", "-30", "--steps", "3"])
     assert out.exit_code == 2
-    assert out.stderr.strip().startswith("error (assembly): sweep: the mechanism cannot be assembled "
-                                         "at increment 5 (j1 = 50 deg")
-    out = runner.invoke(app, ["sweep", model, "--steps", "36", "--json"])
-    assert json.loads(out.stdout)["error"]["kind"] == "assembly"
+    assert out.stderr.strip().startswith("error (singular): sweep: the configuration at increment 3 "
+                                         "(j4 = -30 deg) is singular")
+    out = runner.invoke(app, ["sweep", model, "--by", "-30", "--steps", "3", "--json"])
+    assert json.loads(out.stdout)["error"]["kind"] == "singular"
     out = runner.invoke(app, ["sweep", model, "--joint", "j2", "--json"])
     assert json.loads(out.stdout)["error"] == {
-        "kind": "usage", "message": "joint 'j2' is not driven; a sweep advances a driven joint: j1",
+        "kind": "usage", "message": "joint 'j2' is not driven; a sweep advances a driven joint: j4",
         "where": "--joint"}
-    out = runner.invoke(app, ["sweep", model, "--steps", "36", "--skip-bad", "--json"])
-    assert out.exit_code == 0 and None in json.loads(out.stdout)["bodies"]["rocker"]["omega"]
+    out = runner.invoke(app, ["sweep", model, "--by", "-30", "--steps", "3", "--skip-bad", "--json"])
+    assert out.exit_code == 0 and json.loads(out.stdout)["bodies"]["crank"]["omega"][3] is None
 
 
 def test_cli_plot_to_a_format_matplotlib_cannot_write_is_a_clean_error(tmp_path):
@@ -122,13 +125,20 @@ def test_cli_plot_to_a_format_matplotlib_cannot_write_is_a_clean_error(tmp_path)
 
 # the fast writers: the same document, without a Python float per number -------------------------
 def _bad_rows_result():
-    return run_sweep(four_bar_tree(crank=2.5, coupler=3.0, rocker=3.0, side=1.0), steps=36,
-                     skip_bad=True)
+    """The triple rocker moved as `move` moves it (not through its limit positions): rows
+    beyond them are bad."""
+    return Sweeper(four_bar_tree(crank=2.5, coupler=3.0, rocker=3.0, side=1.0)).run(
+        steps=36, skip_bad=True, through=False)
+
+
+def _limits_result():
+    return run_sweep(four_bar_tree(crank=2.5, coupler=3.0, rocker=3.0, side=1.0), steps=36)
 
 
 @pytest.mark.parametrize("make", [lambda: run_sweep(four_bar_tree(), steps=24),
                                   lambda: run_sweep(EXAMPLES / "rssr_spatial_four_bar.yaml", steps=6),
-                                  _bad_rows_result], ids=["four-bar", "3d", "bad-rows"])
+                                  _bad_rows_result, _limits_result],
+                         ids=["four-bar", "3d", "bad-rows", "limits"])
 def test_the_json_pieces_are_the_json_document(make):
     result = make()
     assert json.loads(b"".join(result.json_chunks())) == result.to_json()

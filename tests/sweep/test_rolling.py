@@ -48,3 +48,19 @@ def test_pinion_drives_a_rack():
     assert result.points["R@rack"]["position"][:, 0] == pytest.approx(0.5 * theta, abs=1e-9)
     assert result.points["R@rack"]["velocity"][:, 0] == pytest.approx(np.full(7, 1.0), abs=1e-9)
     assert math.isclose(result.points["R@rack"]["position"][-1, 1], -0.5, abs_tol=1e-12)
+
+
+def test_the_roller_under_a_lever_sweeps_along_its_slider():
+    """examples/seed_001_rolling_pair.yaml (its sweep: the slider 0.3 m on): the lever's line
+    through B touches the roller (radius ρ, centre A at x from B), so sin β = ρ/x; then
+    ω_N = dβ/dt = −v tan β / x, and no slip at the contact gives ω_R = v cos β / ρ (the slides)."""
+    from pathlib import Path
+
+    result = run_sweep(Path(__file__).resolve().parents[2] / "examples" / "seed_001_rolling_pair.yaml")
+    assert len(result) == 61 and result.ok.all()
+    rho, v = 0.1, 0.5
+    x = 0.2 + np.asarray(result.coordinate)
+    beta = np.arcsin(rho / x)
+    assert result.bodies["N"]["angle"] == pytest.approx(np.degrees(beta - math.radians(30)), abs=1e-8)
+    assert result.bodies["N"]["omega"] == pytest.approx(-v * np.tan(beta) / x, abs=1e-9)
+    assert result.bodies["R"]["omega"] == pytest.approx(v * np.cos(beta) / rho, abs=1e-9)

@@ -114,7 +114,7 @@ def test_help_pages_are_served_and_nothing_else(client):
 
 def test_every_language_has_every_word_of_the_page(client):
     """The same messages in every catalogue, with the same variables, no selectors (the page
-    fills variables itself), and a name and a tip for every palette kind."""
+    fills variables itself), and a name, a tip and a hint for each click of every palette kind."""
     english = page_catalogue("en")
     for lang in LANGS:
         cat = page_catalogue(lang)
@@ -125,6 +125,8 @@ def test_every_language_has_every_word_of_the_page(client):
             assert set(re.findall(r"\{\$\w+\}", words[key])) == set(re.findall(r"\{\$\w+\}", text)), (lang, key)
         for tool in TOOLS:
             assert f"tool-{tool.kind}" in words and f"tool-{tool.kind}-tip" in words
+            for n in range(1, len(tool.picks) + 1):           # what each click of the tool takes
+                assert f"pick-{tool.kind}-{n}" in words, (lang, tool.kind, n)
     assert client.get("/api/strings/xx").status_code == 404
     kinds = [t["kind"] for t in client.get("/api/palette").json()["tools"]]
     assert kinds == [t.kind for t in TOOLS] and len(set(kinds)) == len(kinds)

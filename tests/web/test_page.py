@@ -220,8 +220,8 @@ def test_dragging_a_point_changes_the_text(page):
     page.mouse.move(x + 20, y - 30, steps=6)
     page.mouse.up()
     page.wait_for_function("() => !document.querySelector('[data-testid=model-editor]').value.includes('theta2: deg(90)')")
-    page.wait_for_timeout(400)
-    ready(page)
+    page.wait_for_function("() => !window.kinematika.figure.drag && document.getElementById('busy').hidden")
+    ready(page)                                      # the drag's last edit solved (no edit under way)
     text = page.get_by_test_id("model-editor").input_value()
     # A is the crank's end by construction (a from O2 at theta2): the drag edits those two
     params = yaml.safe_load(text)["parameters"]

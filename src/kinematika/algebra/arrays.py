@@ -41,7 +41,7 @@ class Arrays:
     def symbol(self, name: str, positive: bool = True) -> np.ndarray:
         """A varied parameter: its array of values."""
         if name not in self.values:
-            raise ExpressionError(f"parameter {name!r} has no value")
+            raise ExpressionError("parameter-no-value", name=name)
         return self.values[name]
 
     def sqrt(self, x: Any) -> Any:

@@ -42,13 +42,13 @@ class Numeric:
         """A computed value must be finite: an infinity or NaN is an error naming the expression
         `source`."""
         if isinstance(value, float) and not math.isfinite(value):
-            raise ExpressionError(f"in {brief(source)}: the value is not finite")
+            raise ExpressionError("expr-not-finite-value", source=brief(source))
         return value
 
     def symbol(self, name: str, positive: bool = True) -> float:
         """A parameter without a value cannot be a float: the error says so (the `Symbolic`
         backend makes it a symbol)."""
-        raise ExpressionError(f"parameter {name!r} has no value")
+        raise ExpressionError("parameter-no-value", name=name)
 
     def sqrt(self, x: float) -> float:
         """√x; round-off below zero (> −1e-12) is 0, a real negative an error."""
@@ -94,9 +94,7 @@ class Symbolic:
         digits above and below the fraction bar, so that exact work stays bounded."""
         exact = self.sp.Integer(value) if isinstance(value, int) else self.sp.Rational(repr(value))
         if max(abs(exact.p), exact.q).bit_length() > MAX_BITS:
-            raise ExpressionError(f"the number {brief(value, 30)} has too many digits for exact "
-                                  f"formulas (more than {limits.EXACT_DIGITS} as a fraction): round "
-                                  "it, or solve with numbers")
+            raise ExpressionError("number-too-many-digits", number=brief(value, 30), limit=limits.EXACT_DIGITS)
         return exact
 
     def function(self, name: str) -> Callable[..., Any]:
@@ -119,19 +117,17 @@ class Symbolic:
         if not isinstance(value, sp.Basic):
             return value
         if value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
-            raise ExpressionError(f"in {brief(source)}: the value is not finite")
+            raise ExpressionError("expr-not-finite-value", source=brief(source))
         if any(max(abs(r.p), r.q).bit_length() > MAX_BITS for r in value.atoms(sp.Rational)):
-            raise ExpressionError(f"in {brief(source)}: the value has too many digits for exact "
-                                  f"formulas (more than {limits.EXACT_DIGITS})")
+            raise ExpressionError("expr-too-many-digits", source=brief(source), limit=limits.EXACT_DIGITS)
         if not value.is_number:
             if degree(value) > limits.DEGREE:
-                raise ExpressionError(f"in {brief(source)}: the formula's degree in the symbols is "
-                                      f"above {limits.DEGREE}: too high for exact formulas")
+                raise ExpressionError("expr-degree", source=brief(source), limit=limits.DEGREE)
             return value
         if value.is_real is False:
-            raise ExpressionError(f"in {brief(source)}: the value is not real")
+            raise ExpressionError("expr-not-real", source=brief(source))
         if not math.isfinite(abs(complex(value))):
-            raise ExpressionError(f"in {brief(source)}: the value is too large")
+            raise ExpressionError("expr-too-large", source=brief(source))
         return value
 
     def symbol(self, name: str, positive: bool = True) -> Any:

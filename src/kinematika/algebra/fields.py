@@ -689,7 +689,7 @@ def canonical(e: Any) -> Any:
 
     from ..budget import check
 
-    check("simplifying the formulas")
+    check("stage-simplifying")
     e = sympy.sympify(e)
     if e.is_Atom:
         return e

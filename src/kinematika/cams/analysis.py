@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from ..curves.base import cross
-from ..errors import KinematikaWarning
+from ..errors import KinematikaWarning, Num
 from ..curves.jet import Jet
 from .profile import DiscCam, PlateCam
 
@@ -169,12 +169,11 @@ class CamAnalysis:
         for j in self.cam.program.jumps():
             order = 1 if j.quantity == "velocity" else 2
             size = j.amount * self.speed**order
-            what = "infinite acceleration" if order == 1 else "infinite jerk"
             at = _abscissa(self.cam, j.at)
             place = "°" if not isinstance(self.cam, PlateCam) else f" {units}"
             out.append(KinematikaWarning(
-                f"the {j.quantity} jumps by {size:+.4g} {unit}/s{'²' if order == 2 else ''} at {at:g}{place} "
-                f"({what}: the fundamental law of cam design is broken)", f"program[{j.before}]→[{j.after}]"))
+                "cam-jump", f"program[{j.before}]→[{j.after}]", quantity=j.quantity, size=Num(size, "+.4g"),
+                unit=f"{unit}/s{'²' if order == 2 else ''}", at=Num(at, "g"), place=place))
         return out
 
 

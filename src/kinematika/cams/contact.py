@@ -28,6 +28,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from ..curves import Curve
 from .follower import Follower, Translating
+from ..errors import Said
 
 SAMPLES = 2048
 
@@ -88,7 +89,7 @@ def position(curve: Curve, follower: Follower, theta: float, sense: int = 1) -> 
     value = _touch(follower, q)
     i = int(np.argmax(value))
     if not np.isfinite(value[i]):
-        raise ValueError("the follower does not reach the cam")
+        raise ValueError(Said("cam-follower-misses"))
 
     def minus(x: float) -> float:
         return -float(_touch(follower, _turned(curve, theta, sense, np.array(x))))
@@ -116,7 +117,7 @@ def _knife(curve: Curve, follower: Follower, theta: float, sense: int, u: np.nda
         root = brentq(g, lo, hi, xtol=1e-14) if g(lo) * g(hi) < 0 else lo
         best = max(best, float(_knife_coordinate(follower, _turned(curve, theta, sense, np.array(root)))))
     if not np.isfinite(best):
-        raise ValueError("the knife edge's path misses the cam")
+        raise ValueError(Said("cam-knife-misses"))
     return best
 
 

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..errors import Said
 from ..extras import need
 from .analysis import CamAnalysis
 
@@ -101,7 +102,7 @@ def write_dxf(analysis: CamAnalysis, path: Path, units: str = "mm") -> None:
     """A DXF (R2010) with the profile as a closed LWPOLYLINE of 1 440 points (layer PROFILE;
     chord error R(1 − cos(π/1440)) ≈ 2.4e-6·R), the pitch curve (PITCH), the base circle and
     the centre (BASE): a workshop's CAD opens it at true size. Needs ezdxf (the `cad` extra)."""
-    ezdxf = need("ezdxf", "writing DXF", "--dxf", extra="cad")
+    ezdxf = need("ezdxf", Said("writing-dxf"), "--dxf", extra="cad")
     doc = ezdxf.new("R2010")
     doc.header["$INSUNITS"] = DXF_UNITS.get(units, 0)
     for name, colour in (("PROFILE", 7), ("PITCH", 5), ("BASE", 8)):

@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import make_interp_spline
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, said_of
 from .contact import positions
 from .follower import Follower, Translating
 from .laws import Law
@@ -70,14 +70,13 @@ def measured_design(spec: Any) -> Any:
     from .spec import CamDesign, _speed, follower
 
     if spec.cam.kind != "disc":
-        raise KinematikaError("schema", "a cam given by profile points is a disc cam", "cam.kind")
+        raise KinematikaError("schema", "cam-profile-disc", "cam.kind")
     if spec.cam.base is not None:
-        raise KinematikaError("schema", "a cam given by profile points has the base circle its profile "
-                              "gives: leave out 'base'", "cam.base")
+        raise KinematikaError("schema", "cam-profile-base", "cam.base")
     moving = follower(spec.follower)
     try:
         cam = measured_cam(np.array(spec.profile, dtype=float), moving, 1 if spec.cam.rotation == "ccw" else -1,
                            spec.samples)
     except ValueError as err:
-        raise KinematikaError("geometry", str(err), "profile") from None
+        raise KinematikaError("geometry", said_of(err), "profile") from None
     return CamDesign(cam, _speed(spec, False), spec.units, spec.samples, spec.title or "", spec)

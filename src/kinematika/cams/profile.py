@@ -32,6 +32,7 @@ from ..curves import CamProfile, Spline, jet
 from ..curves.jet import Jet
 from .follower import Follower
 from .program import Program
+from ..errors import Said
 
 
 def _offset_inwards(pitch: CamProfile, radius: float, tau: int, name: str) -> CamProfile:
@@ -152,7 +153,7 @@ class PlateCam(DiscCam):
         return np.asarray(vectors, dtype=float)
 
     def _envelope(self) -> CamProfile:
-        raise ValueError("a flat-faced follower cannot follow a translating cam")
+        raise ValueError(Said("cam-flat-translating"))
 
 
 def measured(points: np.ndarray) -> Spline:

@@ -32,7 +32,7 @@ from typing import Annotated, Any, Literal, Optional, Union
 
 from pydantic import BaseModel, ConfigDict, Field, StrictFloat, StrictInt, ValidationError
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, Said, pydantic_choices, pydantic_problem
 from ..text import brief
 from . import laws as law_table
 from .follower import Flat, Follower, Knife, Oscillating, Roller, Translating
@@ -142,26 +142,24 @@ def follower(spec: FollowerSpec, where: str = "follower") -> Follower:
     if spec.motion == "translating":
         for key in ("pivot", "arm"):
             if getattr(spec, key) is not None:
-                raise KinematikaError("schema", f"a translating follower has no {key!r}", f"{where}.{key}")
+                raise KinematikaError("schema", "cam-translating-no-key", f"{where}.{key}", key=key)
         return Translating(contact, float(spec.offset))
     if spec.offset:
-        raise KinematikaError("schema", "an oscillating follower has no 'offset' (place its pivot)", f"{where}.offset")
+        raise KinematikaError("schema", "cam-oscillating-no-offset", f"{where}.offset")
     if spec.pivot is None:
-        raise KinematikaError("schema", "an oscillating follower needs 'pivot' (its distance from the cam's centre)",
-                              where)
+        raise KinematikaError("schema", "cam-oscillating-pivot", where)
     if spec.arm is None and not contact.touches_with_face:
-        raise KinematikaError("schema", "an oscillating follower needs 'arm' (pivot to roller centre or knife edge)",
-                              where)
+        raise KinematikaError("schema", "cam-oscillating-arm", where)
     return Oscillating(contact, float(spec.pivot), float(spec.arm or spec.pivot))
 
 
 def _contact(spec: FollowerSpec, where: str) -> Knife | Roller | Flat:
     if spec.contact == "roller":
         if spec.radius is None:
-            raise KinematikaError("schema", "a roller follower needs 'radius'", where)
+            raise KinematikaError("schema", "cam-roller-radius", where)
         return Roller(float(spec.radius))
     if spec.radius is not None:
-        raise KinematikaError("schema", f"a {spec.contact} follower has no 'radius'", f"{where}.radius")
+        raise KinematikaError("schema", "cam-no-radius", f"{where}.radius", contact=spec.contact)
     if spec.contact == "flat":
         return Flat(float(spec.face))
     return Knife()
@@ -179,25 +177,22 @@ def program(segments: list[SegmentSpec], angular: bool, periodic: bool, where: s
         if seg.law != "polynomial":
             for key in ("start", "end"):
                 if getattr(seg, key) is not None:
-                    raise KinematikaError("schema", f"only a polynomial segment takes {key!r} conditions",
-                                          f"{place}.{key}")
+                    raise KinematikaError("schema", "cam-polynomial-only", f"{place}.{key}", key=key)
         end = s if seg.to is None else float(seg.to) * unit
         if seg.law == "dwell":
             if seg.to is not None and abs(end - s) > 1e-12 * max(1.0, abs(s)):
-                raise KinematikaError("schema", "a dwell keeps the follower still: leave out 'to'", f"{place}.to")
+                raise KinematikaError("schema", "cam-dwell-to", f"{place}.to")
             steps.append((law_table.DWELL, beta, 0.0, "dwell"))
             continue
         if seg.to is None:
-            raise KinematikaError("schema", f"a {seg.law} segment needs 'to' (the displacement at its end)", place)
+            raise KinematikaError("schema", "cam-segment-to", place, law=seg.law)
         if end < -1e-12:
-            raise KinematikaError("schema", "the follower would go below its lowest position (s < 0, "
-                                  "inside the base circle)", f"{place}.to")
+            raise KinematikaError("schema", "cam-below-lowest", f"{place}.to")
         rise = end - s
         if seg.law == "polynomial":
             steps.append(_polynomial(seg, beta, rise, unit, place))
         elif rise == 0:
-            raise KinematikaError("schema", f"a {seg.law} segment must move the follower: 'to' equals the "
-                                  f"displacement it starts from (use a dwell)", f"{place}.to")
+            raise KinematikaError("schema", "cam-segment-still", f"{place}.to", law=seg.law)
         else:
             steps.append((law_table.law_named(seg.law), beta, rise, "rise" if rise > 0 else "return"))
         s = end
@@ -205,10 +200,9 @@ def program(segments: list[SegmentSpec], angular: bool, periodic: bool, where: s
     if periodic:
         total = sum(float(seg.over) for seg in segments)
         if abs(total - 360.0) > 1e-6:
-            raise KinematikaError("schema", f"the segments span {total:g}°; a disc cam's program spans 360°", where)
+            raise KinematikaError("schema", "cam-span", where, total=total)
         if abs(s) > 1e-9 * max([1.0] + [abs(st[2]) for st in steps]):
-            raise KinematikaError("schema", f"the program ends at s = {s / unit:g}, not where it starts (0): "
-                                  f"a disc cam's motion repeats every turn", f"{where}[{len(segments) - 1}].to")
+            raise KinematikaError("schema", "cam-program-ends", f"{where}[{len(segments) - 1}].to", end=s / unit)
     return built
 
 
@@ -226,7 +220,7 @@ def _polynomial(seg: SegmentSpec, beta: float, rise: float, unit: float, place: 
     try:
         law = law_table.Polynomial.through(ends[0], ends[1])
     except Exception:       # a singular system cannot happen for conditions at two ends
-        raise KinematikaError("schema", "these boundary conditions have no polynomial", place) from None
+        raise KinematikaError("schema", "cam-no-polynomial", place) from None
     return (law, beta, rise, "polynomial", scale)
 
 
@@ -234,13 +228,13 @@ def design(spec: CamFileSpec) -> CamDesign:
     """The cam a checked file describes (geometry checked: the follower can touch the base
     circle, the arm stays clear of the line of centres, …)."""
     if (spec.program is None) == (spec.profile is None):
-        raise KinematikaError("schema", "give the cam's motion as 'program' or its shape as 'profile' (one of them)")
+        raise KinematikaError("schema", "cam-program-or-profile")
     if spec.profile is not None:
         from .measured import measured_design
 
         return measured_design(spec)
     if spec.cam.base is None:
-        raise KinematikaError("schema", "missing key 'base' (the base circle's radius)", "cam")
+        raise KinematikaError("schema", "cam-base-missing", "cam")
     plate = spec.cam.kind == "translating"
     moving = follower(spec.follower)
     motion = program(spec.program or [], moving.angular, not plate)
@@ -255,12 +249,10 @@ def design(spec: CamFileSpec) -> CamDesign:
 def _speed(spec: CamFileSpec, plate: bool) -> float:
     given = {k: v for k, v in spec.speed.model_dump().items() if v is not None}
     if len(given) != 1:
-        raise KinematikaError("schema", "give the cam's speed once: omega (rad/s), rpm, or velocity "
-                              "(a translating cam)", "speed")
+        raise KinematikaError("schema", "cam-speed-once", "speed")
     (key, value), = given.items()
     if plate != (key == "velocity"):
-        what = "a translating cam's speed is its 'velocity'" if plate else "a disc cam's speed is 'omega' or 'rpm'"
-        raise KinematikaError("schema", what, f"speed.{key}")
+        raise KinematikaError("schema", "cam-speed-translating" if plate else "cam-speed-disc", f"speed.{key}")
     return float(value) * (2 * math.pi / 60 if key == "rpm" else 1.0)
 
 
@@ -268,36 +260,32 @@ def check_layout(moving: Follower, base: float, motion: Program | None, plate: b
     """The follower's dimensions fit the cam (one-line errors naming the follower's key)."""
     if plate:
         if moving.angular:
-            raise KinematikaError("schema", "a translating cam drives a translating follower", "follower.motion")
+            raise KinematikaError("schema", "cam-plate-translating", "follower.motion")
         if moving.contact.touches_with_face:
-            raise KinematikaError("schema", "a flat face cannot follow a translating cam (use a roller or a "
-                                  "knife edge)", "follower.contact")
+            raise KinematikaError("schema", "cam-plate-flat", "follower.contact")
         if moving.offset:
-            raise KinematikaError("schema", "a translating cam's follower has no offset", "follower.offset")
+            raise KinematikaError("schema", "cam-plate-offset", "follower.offset")
         return
     rp = moving.prime(base)
     if isinstance(moving, Translating):
         if abs(moving.offset) >= rp:
-            raise KinematikaError("schema", f"the offset {moving.offset:g} must be smaller than the prime circle's "
-                                  f"radius {rp:g}", "follower.offset")
+            raise KinematikaError("schema", "cam-offset-prime", "follower.offset", offset=float(moving.offset),
+                                  radius=float(rp))
         return
     a, l = moving.pivot, moving.arm
     if moving.contact.touches_with_face:
         if base + moving.contact.face >= a or base + moving.contact.face <= 0:
-            raise KinematikaError("schema", "the face cannot touch the base circle: need 0 < base + face < pivot",
-                                  "follower.pivot")
+            raise KinematikaError("schema", "cam-face-base", "follower.pivot")
     elif not abs(a - l) < rp < a + l:
-        raise KinematikaError("schema", f"the arm cannot reach the prime circle (radius {rp:g}): need "
-                              f"|pivot − arm| < {rp:g} < pivot + arm", "follower.arm")
+        raise KinematikaError("schema", "cam-arm-reach", "follower.arm", radius=float(rp))
     if motion is not None:
         import numpy as np
 
         top = float(np.max(motion.motion(np.linspace(0, motion.period, 2001))[0]))
         reach = math.pi / 2 if moving.contact.touches_with_face else math.pi
         if moving.start(base) + top >= reach:
-            raise KinematikaError("schema", f"the program turns the arm {math.degrees(top):g}° from "
-                                  f"{math.degrees(moving.start(base)):.4g}°, past {math.degrees(reach):g}° "
-                                  f"(where the follower loses the cam)", "program")
+            raise KinematikaError("schema", "cam-arm-past", "program", turn=math.degrees(top),
+                                  start=Num(math.degrees(moving.start(base)), ".4g"), reach=math.degrees(reach))
 
 
 # --- reading --------------------------------------------------------------------------------
@@ -305,8 +293,7 @@ def check_layout(moving: Follower, base: float, motion: Program | None, plate: b
 def parse(tree: Any) -> CamFileSpec:
     """A file's tree checked; a schema error names the place (`program[2].over`)."""
     if not isinstance(tree, dict):
-        raise KinematikaError("schema", "a cam file is a mapping with keys cam, follower, program (or profile), "
-                              "speed")
+        raise KinematikaError("schema", "cam-file-mapping")
     try:
         return CamFileSpec.model_validate(tree)
     except ValidationError as err:
@@ -324,11 +311,11 @@ def _schema_error(err: ValidationError) -> KinematikaError:
             where += ("." if where else "") + str(part)
     kind, last = first["type"], (first["loc"][-1] if first["loc"] else "")
     if kind == "extra_forbidden":
-        message = f"unknown key {last!r}"
+        message = Said("unknown-key", key=last)
     elif kind == "missing":
-        message = f"missing key {last!r}"
+        message = Said("missing-key", key=last)
     elif kind == "literal_error":
-        message = f"{brief(first['input'])} is not one of {first['ctx']['expected']}"
+        message = Said("not-one-of", value=brief(first['input']), expected=pydantic_choices(first['ctx']['expected']))
     else:
-        message = f"{brief(first.get('input'))}: {first['msg'].lower()}"
+        message = Said("value-problem", value=brief(first.get('input')), problem=pydantic_problem(first, lower=True))
     return KinematikaError("schema", message, where)

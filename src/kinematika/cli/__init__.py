@@ -31,8 +31,10 @@ def _main() -> None:
             stream.reconfigure(errors="backslashreplace")
     import warnings
 
-    from ..errors import KinematikaWarning
+    from ..errors import KinematikaWarning, speak
+    from ..languages import from_command_line
 
+    speak(from_command_line(sys.argv[1:], os.environ))    # errors and warnings: --lang, else the locale
     if not os.environ.get("KINEMATIKA_DEBUG"):   # the output is the answer or one error line
         warnings.simplefilter("ignore")
     warnings.simplefilter("default", KinematikaWarning)     # ... and a line per likely mistake
@@ -61,8 +63,11 @@ def _main() -> None:
 
 def _warning_line(message: Any, category: type, filename: str, lineno: int, file: Any = None,
                   line: Any = None) -> None:
-    """A warning on standard error as one line: `warning: points.A.angle: ...`."""
-    print(f"warning: {message}", file=sys.stderr)
+    """A warning on standard error as one line: `warning: points.A.angle: ...` (in the
+    language of messages)."""
+    from ..errors import Said
+
+    print(Said("warning-line", text=str(message)), file=sys.stderr)
 
 
 def _status(code: Any) -> int:
@@ -74,7 +79,7 @@ def _status(code: Any) -> int:
 
 def _application() -> Any:
     """The typer application, with every command registered (imports typer and the commands)."""
-    from . import assemblies, cam, centres, draw, exercise, explain, explore, page, solve, sweep  # noqa: F401  (each registers)
+    from . import assemblies, cam, centres, draw, exercise, explain, explore, page, simulate, solve, sweep  # noqa: F401  (each registers)
     from .app import app
 
     return app
@@ -104,7 +109,9 @@ def _typer_main() -> None:
     try:
         code = app(standalone_mode=False)
     except typer.Abort:
-        print("aborted", file=sys.stderr)
+        from ..errors import Said
+
+        print(Said("aborted"), file=sys.stderr)
         sys.exit(1)
     except Exception as err:  # click's UsageError / BadParameter, vendored or not
         if not (hasattr(err, "exit_code") and hasattr(err, "format_message")):
@@ -115,6 +122,7 @@ def _typer_main() -> None:
 
 def _usage_error(err) -> None:
     """Report a command-line usage error in the contract's shape and exit with its status."""
+    from ..errors import Said
     from ..limits import MESSAGE_CHARS
     from ..text import shown
     from .shared import print_json
@@ -122,13 +130,32 @@ def _usage_error(err) -> None:
     param = getattr(err, "param", None)
     where = getattr(err, "param_hint", None) or (param.opts[0] if getattr(param, "opts", None) else "")
     where = shown(where if isinstance(where, str) else " / ".join(where), 60)
-    message = shown(" ".join(err.format_message().split()), MESSAGE_CHARS)
-    if not message:                   # `kinematika` alone: the help has been shown
+    text = " ".join(err.format_message().split())
+    if not text:                      # `kinematika` alone: the help has been shown
         sys.exit(err.exit_code)
+    message = shown(_click_said(err, text, where.strip("'")), MESSAGE_CHARS)
     if "--json" in sys.argv[1:]:
         print_json({"error": {"kind": "usage", "message": message, "where": where.strip("'")}})
     else:
         ctx = getattr(err, "ctx", None)
         command = getattr(ctx, "command_path", None) or "kinematika"
-        print(f"error (usage): {message} (see {command} --help)", file=sys.stderr)
+        print(Said("usage-line", text=message, command=command), file=sys.stderr)
     sys.exit(err.exit_code if err.exit_code else 2)
+
+
+def _click_said(err: Any, text: str, where: str) -> Any:
+    """click's complaint about a command line, said in the language of messages: by its kind
+    (an unknown option, a missing argument, a value of the wrong type, …) where the
+    catalogue says it, else in click's own (English) words."""
+    from ..errors import Names, Said
+
+    code = type(err).__name__
+    args: dict[str, Any] = {"name": where}
+    if code == "NoSuchOption":
+        found = sorted(getattr(err, "possibilities", None) or [])
+        args.update(name=err.option_name, suggestions=Names(found, joined="or"), count=len(found))
+    elif code == "UsageError" and text.startswith("Got unexpected extra argument"):
+        code = "ExtraArgument"
+    elif code == "UsageError" and text.startswith("No such command"):
+        code, args["name"] = "NoSuchCommand", text.partition("'")[2].rpartition("'")[0]
+    return Said("click", code=code, text=text, **args)

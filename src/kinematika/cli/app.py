@@ -24,6 +24,19 @@ MoveOpt = typer.Option(None, "--move", metavar="JOINT=AMOUNT",
                             "length, repeatable), as a sweep reaches it")
 AssemblyOpt = typer.Option(None, "--assembly", min=1, metavar="N",
                            help="analyse assembly N (see `kinematika assemblies`)")
+MessagesOpt = typer.Option(None, "--lang", metavar="LANG",
+                           help="the language of errors and warnings: en, es, ca or eu (default: the "
+                                "locale's, from LC_ALL, LC_MESSAGES or LANG; else en)")
+
+
+def messages(lang: Optional[str], as_json: bool = False) -> None:
+    """`--lang`'s value checked: a language kinematika speaks, else the `usage` error. The
+    language itself is chosen when the command line is read (`cli.main`), so that every
+    message, the options' own included, is said in it."""
+    if lang is not None:
+        from ..languages import known
+
+        guarded(as_json, lambda: known(lang, "--lang", "usage"))
 
 
 def how(sets: Optional[list[str]] = None, moves: Optional[list[str]] = None,
@@ -41,7 +54,7 @@ def pairs(items: Optional[list[str]], option: str) -> dict[str, str]:
     for item in items or []:
         name, sep, value = item.partition("=")
         if not sep or not name.strip() or not value.strip():
-            raise KinematikaError("usage", f"{option} expects NAME=VALUE, got {item!r}", option)
+            raise KinematikaError("usage", "option-name-value", option, option=option, got=repr(item))
         out[name.strip()] = value.strip()
     return out
 

@@ -7,7 +7,7 @@ from typing import Any, Optional
 import typer
 
 from ..text import shown
-from .app import JsonOpt, app, respond
+from .app import JsonOpt, MessagesOpt, app, messages, respond
 from .shared import output_file, writing
 
 FIGURES = ("png", "svg", "pdf")
@@ -33,9 +33,11 @@ def cam(
     drawing: Optional[Path] = typer.Option(None, "--drawing", help="write the cam's drawing: profile, pitch "
                                            "curve, base circle, follower (PNG, SVG, PDF)"),
     as_json: bool = JsonOpt,
+    lang: Optional[str] = MessagesOpt,
 ) -> None:
     """A cam from its motion program (or measured profile) and follower: the largest pressure
     angle, the smallest radius of curvature, undercutting, the program's jumps; files on request."""
+    messages(lang, as_json)
     _figure_path(plot, "--plot")
     _figure_path(drawing, "--drawing")
 
@@ -83,7 +85,7 @@ def _show(data: dict) -> None:
     """The summary as a few lines of text; warnings (jumps) on standard error."""
     import warnings
 
-    from ..errors import KinematikaWarning
+    from ..errors import KinematikaWarning, Said
 
     u, plate = data["units"], data["cam"]["kind"] == "translating"
     at = (lambda x: f"{x:.4g} {u}") if plate else (lambda x: f"{x:.4g}°")
@@ -114,4 +116,4 @@ def _show(data: dict) -> None:
     for path in data["written"]:
         print(f"wrote {shown(path)}")
     for w in data.get("warnings", []):
-        warnings.warn(KinematikaWarning(w["message"], w["where"]), stacklevel=1)
+        warnings.warn(KinematikaWarning(Said.text_of(w["message"]), w["where"]), stacklevel=1)

@@ -8,7 +8,8 @@ from typing import Optional
 
 import typer
 
-from .app import JsonOpt, ModelArg, app
+from ..errors import Said
+from .app import JsonOpt, MessagesOpt, ModelArg, app, messages
 from .shared import cannot_write, guarded, output_file, print_json, writing
 
 DEFAULT_COUNT = 30
@@ -62,16 +63,16 @@ def exercise(model: Path = ModelArg,
 def _progress(done: int, total: int) -> None:
     """The figures and worked solutions made so far, on a terminal's one line."""
     if sys.stderr.isatty():
-        print(f"\rfigures and worked solutions: {done}/{total}", end="\n" if done == total else "",
+        print("\r" + Said("exercise-progress", done=done, total=total).said(), end="\n" if done == total else "",
               file=sys.stderr, flush=True)
 
 
 def _folder(output: Path) -> None:
     """A folder can be written at `output` (made if missing), else an `output` error."""
     if output.exists() and not output.is_dir():
-        raise cannot_write(output, "it is a file", "-o")
+        raise cannot_write(output, Said("it-is-a-file"), "-o")
     if not output.parent.is_dir():
-        raise cannot_write(output, f"there is no folder {output.parent}", "-o")
+        raise cannot_write(output, Said("no-folder", folder=str(output.parent)), "-o")
 
 
 @app.command()
@@ -85,11 +86,13 @@ def grade(folder: Path = typer.Argument(..., help="the folder `kinematika exerci
                                                    "gradebook imports (student,grade out of 100)"),
           carry: bool = typer.Option(True, "--carry/--no-carry", help="credit a later answer that "
                                      "follows from the student's own earlier wrong one"),
+          lang: Optional[str] = MessagesOpt,
           ) -> None:
     """Mark a class's answers: right within the key's tolerance, and each wrong one named by the
     usual mistake whose value it equals (Coriolis left out, degrees as radians, ...)."""
+    messages(lang, as_json)
     from ..exercise import grade as mark, load_exercise
-    from ..exercise.grading import gradebook_csv, summary_text
+    from ..exercise.grading import gradebook_csv, not_read, summary_text
 
     def work() -> dict:
         result = mark(load_exercise(folder), answers, carry)
@@ -103,6 +106,6 @@ def grade(folder: Path = typer.Argument(..., help="the folder `kinematika exerci
     if as_json:
         print_json(result)
         for u in result["unreadable"]:
-            print(f"{answers.name}:{u['line']}: not read: {u['error']}", file=sys.stderr)
+            print(not_read(answers.name, u), file=sys.stderr)
     else:
         sys.stdout.write(summary_text(result, answers.name))

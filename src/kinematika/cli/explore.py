@@ -7,7 +7,7 @@ from typing import Optional
 
 import typer
 
-from .app import ModelArg, app, guarded, output_file
+from .app import MessagesOpt, ModelArg, app, guarded, messages, output_file
 
 
 @app.command()
@@ -34,9 +34,11 @@ def explore(model: Path = ModelArg,
                                                 help="positions per design"),
             chunk: Optional[int] = typer.Option(None, "--chunk", min=1, help="designs per chunk "
                                                 "(written as they finish)"),
+            lang: Optional[str] = MessagesOpt,
             ) -> None:
     """Evaluate many designs of MODEL (values of its parameters) and write one row each: the
     parameters, whether it assembles (and why not), and the metrics."""
+    messages(lang)
     from ..explore.evaluate import Sweep
     from ..explore.study import Parts, make_study, resume_note, write_study
     from ..sweep.progress import reporter
@@ -75,105 +77,125 @@ def synthesize(model: Path = ModelArg,
                output_body: Optional[str] = typer.Option(None, "--output", help="the body whose rotation "
                                                          "follows the function"),
                over: str = typer.Option("0:90", "--over", help="the input's range of the function "
-                                        "(LOW:HIGH, degrees from the drawn position)"),
+                                        "(LOW:HIGH, degrees from the input's zero)"),
                points: int = typer.Option(7, "--points", min=2, help="precision points of the "
                                           "function (Chebyshev spacing)"),
+               timing: Optional[str] = typer.Option(None, "--timing", help="JOINT[=START]: the targets' "
+                                                    "input column is the joint's travel from the first "
+                                                    "target, met START from the drawn configuration "
+                                                    "(free without =START)"),
+               objective: str = typer.Option("max", "--objective", help="sse (the sum of the squared "
+                                             "errors) or max (the largest error)"),
+               require: list[str] = typer.Option([], "--require", help="crank-rocker, ordered or "
+                                                 "transmission=DEG (repeat)"),
+               output_zero: Optional[str] = typer.Option(None, "--output-zero", help="function "
+                                                         "generation: the output's zero, 'free' or "
+                                                         "its line's absolute angle (degrees); default "
+                                                         "its drawn position"),
+               seconds: Optional[float] = typer.Option(None, "--seconds", min=0.0, help="stop after S "
+                                                       "seconds of wall time and write what was found"),
                population: int = typer.Option(40, "--population", min=4, help="designs per generation"),
-               generations: int = typer.Option(200, "--generations", min=1, help="at most this many"),
+               generations: Optional[int] = typer.Option(None, "--generations", min=1, help="at most this "
+                                                         "many in all (default 200, or no limit with "
+                                                         "--seconds)"),
                seed: int = typer.Option(0, "--seed", help="the optimiser's seed"),
                best: int = typer.Option(3, "--best", min=1, help="how many distinct designs to keep"),
                out: Path = typer.Option(..., "-o", "--output-dir", help="folder for the best designs' "
-                                        "model files"),
+                                        "model files and designs.csv"),
                plot: Optional[Path] = typer.Option(None, "--plot", help="draw the best designs over "
                                                    "the targets to FILE"),
                steps: Optional[int] = typer.Option(None, "--steps", min=1, max=100_000,
-                                                   help="positions per design"),
+                                                   help="positions per design (models other than a "
+                                                   "four-bar)"),
+               lang: Optional[str] = MessagesOpt,
                ) -> None:
     """Choose parameter values so that a point follows target points (path generation), a body's
     rotation follows a function of the input's (function generation) or a body passes through
     poses (motion generation); write the best designs as model files."""
-    from ..explore.evaluate import Sweep
+    messages(lang)
     from ..explore.synthesis import synthesize as run, write_designs
 
     def work():
-        objective, files = _objective(model, target, target_function, target_motion, point, output_body,
-                                      over, points)
-        result = run(model, vary, objective, population, generations, seed, best, Sweep(steps=steps),
-                     files=files)
-        if not result.designs:
-            from ..errors import KinematikaError
-
-            raise KinematikaError("assembly", "no design of the intervals completes its cycle", "--vary")
+        task = _task(model, target, target_function, target_motion, point, output_body, over, points, timing,
+                     objective, require, output_zero)
+        result = run(model, vary, task, population, generations, seed, best, seconds, steps)
         written = write_designs(model, result, out)
         if plot is not None:
-            _plot_synthesis(model, result, point, output_file(plot, "--plot"), files, objective)
+            _plot_synthesis(model, result, task, output_file(plot, "--plot"))
         return result, written
 
     result, written = guarded(False, work)
-    for path, design, error in zip(written, result.designs, result.errors):
+    for i, (path, design, error) in enumerate(zip(written, result.designs, result.errors)):
         values = ", ".join(f"{k} = {v:.6g}" for k, v in design.items())
-        print(f"{path}: {values}; {result.objective} = {error:.6g}")
+        extra = "".join(f"; {name} = {v[i]:.6g}" for name, v in (("start", result.starts),
+                                                                  ("output zero", result.zeros))
+                        if v and v[i] is not None)
+        print(f"{path}: {values}{extra}; {result.objective} = {error:.6g}")
     print(f"({result.evaluated} designs evaluated)")
 
 
-def _objective(model: Path, target, function, motion, point, body, over, points) -> tuple[str, dict]:
-    """The metric to minimise and the target files' text."""
+def _task(model: Path, target, function, motion, point, body, over, points, timing, objective, require,
+          output_zero):
+    """The task as posed on the command line (`explore.synthesis.task`)."""
     from ..errors import KinematikaError
+    from ..explore.synthesis.task import (make_task, parse_objective, parse_output_zero, parse_requirements,
+                                          parse_timing)
 
     given = [x for x in (target, function, motion) if x is not None]
     if len(given) != 1:
-        raise KinematikaError("usage", "give one of --target (path), --target-function (function) or "
-                              "--target-motion (motion)", "--target")
+        raise KinematikaError("usage", "synthesis-one-target", "--target")
+    options = dict(objective=parse_objective(objective), timing=parse_timing(timing),
+                   requires=parse_requirements(list(require)))
     if function is not None:
         if not body:
-            raise KinematikaError("usage", "function generation needs --output BODY", "--output")
+            raise KinematikaError("usage", "function-needs-output", "--output")
+        zero = parse_output_zero(output_zero)
         if function.lower().endswith(".csv"):
-            name = Path(function).name
-            return f"structural_error:{body}={name}", {name: _target_text(Path(function), "--target-function")}
+            path = Path(function)
+            return make_task("function", path.name, _target_text(path, "--target-function"), "--target-function",
+                             body=body, output_zero=zero, **options)
         from ..explore.designs import parse_vary
         from ..explore.synthesis import function_targets
 
         span = parse_vary(f"x={over}")
-        return f"structural_error:{body}=function.csv", {
-            "function.csv": function_targets(function, (span.low, span.high), points)}
+        return make_task("function", "function.csv", function_targets(function, (span.low, span.high), points),
+                         "--target-function", body=body, output_zero=zero, **options)
+    if output_zero is not None:
+        raise KinematikaError("usage", "output-zero-function-only", "--output-zero")
     if not point:
-        raise KinematikaError("usage", "path and motion generation need --point P", "--point")
-    kind = "path_error" if target is not None else "motion_error"
-    path = target if target is not None else motion
-    option = "--target" if target is not None else "--target-motion"
-    return f"{kind}:{point}={path.name}", {path.name: _target_text(path, option)}
+        raise KinematikaError("usage", "path-needs-point", "--point")
+    kind, path, option = ("path", target, "--target") if target is not None else ("motion", motion, "--target-motion")
+    return make_task(kind, path.name, _target_text(path, option), option, point=point, **options)
 
 
 def _target_text(path: Path, option: str) -> str:
     """A target file named on the command line (relative to the working folder), as text."""
-    from ..errors import KinematikaError
+    from ..errors import KinematikaError, reason
 
     if path.suffix.lower() != ".csv":
-        raise KinematikaError("usage", f"{path.name}: a target file is a .csv file", option)
+        raise KinematikaError("usage", "target-csv", option, name=path.name)
     try:
         return path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as err:
-        raise KinematikaError("usage", f"cannot read {path}: {getattr(err, 'strerror', None) or err}",
-                              option) from None
+    except OSError as err:
+        raise KinematikaError("usage", "cannot-read", option, path=str(path), reason=reason(err)) from None
+    except UnicodeDecodeError:
+        raise KinematikaError("usage", "csv-not-utf8", option, name=str(path)) from None
 
 
-def _plot_synthesis(model: Path, result, point, plot: Path, files: dict, objective: str) -> None:
+def _plot_synthesis(model: Path, result, task, plot: Path) -> None:
     """Path and motion generation: the paths over the targets; function: rotation over targets."""
-    from ..api import as_model
-    from ..explore.metrics import read_table
-    from ..explore.plots import function_over_targets, paths_over_targets
-    from ..explore.study import _target_files
+    import numpy as np
 
-    kind, _, rest = objective.partition(":")
-    name = rest.partition("=")[2]
-    texts = dict(_target_files((objective,), model.parent, files))
-    table = read_table(name, texts, "--plot", 2)
-    labels = [f"{i + 1}: {objective.partition('=')[0]} = {e:.3g}" for i, e in enumerate(result.errors)]
+    from ..api import as_model
+    from ..explore.plots import function_over_targets, paths_over_targets
+
+    labels = [f"{i + 1}: {result.objective} = {e:.3g}" for i, e in enumerate(result.errors)]
     m = as_model(model)
-    if kind == "structural_error":
-        function_over_targets(m, result.designs, rest.partition("=")[0], table, plot, labels)
+    if task.kind == "function":
+        function_over_targets(m, result.designs, task.body, np.column_stack([task.inputs, task.angle]), plot,
+                              labels)
     else:
-        paths_over_targets(m, result.designs, point, table[:, 0] + 1j * table[:, 1], plot, labels)
+        paths_over_targets(m, result.designs, task.point, task.xy, plot, labels)
 
 
 @app.command("plot-study")
@@ -185,8 +207,10 @@ def plot_study(study: Path = typer.Argument(..., help="a study's rows (.parquet 
                maximize: list[str] = typer.Option([], "--maximize", help="a metric of --pareto for "
                                                   "which higher is better"),
                output: Path = typer.Option(..., "-o", help="the figure (.png, .svg, .pdf)"),
+               lang: Optional[str] = MessagesOpt,
                ) -> None:
     """Draw a study: a metric's map over two parameters, or two metrics and their Pareto front."""
+    messages(lang)
     from ..errors import KinematikaError
 
     def work() -> str:
@@ -195,7 +219,7 @@ def plot_study(study: Path = typer.Argument(..., help="a study's rows (.parquet 
         table = _read_study(study)
         out = output_file(output, "-o")
         if (map_ is None) == (pareto is None):
-            raise KinematikaError("usage", "give --map X,Y,METRIC or --pareto M1,M2", "--map")
+            raise KinematikaError("usage", "map-or-pareto", "--map")
         if map_ is not None:
             names = _split(map_, 3, "--map")
             plots.metric_map(table, *names, out)
@@ -212,7 +236,7 @@ def _split(text: str, count: int, option: str) -> list[str]:
 
     names = [n.strip() for n in _split_names(text)]
     if len(names) != count or not all(names):
-        raise KinematikaError("usage", f"{option} takes {count} names separated by commas", option)
+        raise KinematikaError("usage", "option-names-count", option, option=option, count=count)
     return names
 
 
@@ -222,7 +246,7 @@ def _split_names(text: str) -> list[str]:
 
 
 def _read_study(path: Path):
-    from ..errors import KinematikaError
+    from ..errors import KinematikaError, said_of
     from ..extras import need
 
     need("pyarrow", "plot-study")
@@ -236,4 +260,4 @@ def _read_study(path: Path):
 
         return pq.read_table(path).to_pandas()
     except (OSError, ValueError) as err:
-        raise KinematikaError("usage", f"cannot read the study {path}: {err}", str(path)) from None
+        raise KinematikaError("usage", "study-unreadable", str(path), path=str(path), reason=said_of(err)) from None

@@ -11,8 +11,8 @@ from typing import Optional
 
 import typer
 
-from ..errors import KinematikaError
-from .app import app, guarded
+from ..errors import KinematikaError, Said, reason
+from .app import MessagesOpt, app, guarded, messages
 import contextlib
 
 LOOPBACK = ("127.0.0.1", "localhost", "::1")
@@ -29,8 +29,11 @@ def serve(
     no_browser: bool = typer.Option(False, "--no-browser", help="do not open a browser"),
     workers: int = typer.Option(1, "--workers", min=1, max=16, help="server processes (a class: "
                                 "one per core)"),
+    lang: Optional[str] = MessagesOpt,
 ) -> None:
-    """The interactive page: edit a model, see it move, its answers and explanation."""
+    """The interactive page: edit a model, see it move, its answers and explanation (the
+    page's messages are in the page's language; `--lang` is this command's own)."""
+    messages(lang)
     from ..web.server import bundled_examples, create_app
 
     start = guarded(False, lambda: _start(model))
@@ -38,9 +41,8 @@ def serve(
     sock = guarded(False, lambda: _bind(host, port))
     local = host in LOOPBACK
     if not local:
-        print(f"warning: serving on {host}: anyone who can reach this machine on port "
-              f"{sock.getsockname()[1]} can use the page (it reads no file, but it computes "
-              "for them)", file=sys.stderr)
+        print(Said("warning-line", text=Said("serving-open", host=host, port=sock.getsockname()[1])),
+              file=sys.stderr)
     url = f"http://{'127.0.0.1' if host in ('0.0.0.0', '::') else _url_host(host)}:{sock.getsockname()[1]}/"
     hosts = ["127.0.0.1", "localhost"] if local else None
     if workers == 1:
@@ -58,13 +60,12 @@ def _start(model: Optional[Path]):
         return Start()
     fmt = FORMATS.get(model.suffix.lower())
     if fmt is None:
-        raise KinematikaError("syntax", f"unknown file type {model.suffix or '(none)'!r}: a model "
-                              f"file ends in {', '.join(FORMATS)}", str(model))
+        raise KinematikaError("syntax", "file-type-unknown", str(model), suffix=repr(model.suffix or '(none)'),
+                              noun="model-file", suffixes=list(FORMATS))
     try:
         text = read_bytes(model, str(model)).decode("utf-8-sig")
     except UnicodeDecodeError as err:
-        raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})",
-                              str(model)) from None
+        raise KinematikaError("syntax", "file-not-utf8", str(model), byte=err.start + 1) from None
     return Start(text=text, fmt=fmt, name=model.name)
 
 
@@ -77,8 +78,8 @@ def _bind(host: str, port: int) -> socket.socket:
         sock.bind((host, port))
         sock.listen(128)
     except OSError as err:
-        raise KinematikaError("usage", f"cannot serve on {host}:{port}: {err.strerror or err}",
-                              "--port" if port else "--host") from None
+        raise KinematikaError("usage", "cannot-serve", "--port" if port else "--host", address=f"{host}:{port}",
+                              reason=reason(err)) from None
     sock.set_inheritable(True)
     return sock
 

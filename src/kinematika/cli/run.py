@@ -15,15 +15,28 @@ SWEEP_FORMATS = ("json", "csv", "npz", "parquet")
 
 
 def solve_command(model: Path, as_json: bool = False, symbolic: bool = False, how: Any = None) -> None:
-    """Velocity and acceleration of every point and body at the instant, and the answers."""
+    """Velocity and acceleration of every point and body at the instant, and the answers
+    (the tables in the model's units)."""
     from ..commands import AS_GIVEN, solve_data
+
+    if as_json:
+        respond(True, lambda: solve_data(model, symbolic or None, _how(how) or AS_GIVEN), print)
+        return
+    length = {}
+
+    def compute() -> dict:
+        from ..report.units import length_of
+
+        prepared = (_how(how) or AS_GIVEN).model(model)
+        length["unit"] = length_of(prepared)
+        return solve_data(prepared, symbolic or None, AS_GIVEN)
 
     def show(data: dict) -> None:
         from ..report.tables import print_solution
 
-        print_solution(data)
+        print_solution(data, length=length["unit"])
 
-    respond(as_json, lambda: solve_data(model, symbolic or None, _how(how) or AS_GIVEN), show)
+    respond(False, compute, show)
 
 
 def centres_command(model: Path, as_json: bool = False, symbolic: bool = False, how: Any = None) -> None:
@@ -50,8 +63,13 @@ def sweep_command(model: Path, joint: Optional[str] = None, by: Optional[float] 
     kind = guarded(as_json, lambda: _format(output, fmt))
     def run():
         with options_named(sweep_options(joint, by, steps)):
-            return sweep_run(model, joint, by, steps, skip_bad, progress=not as_json,
-                             how=_how(how) or AS_GIVEN)
+            try:
+                return sweep_run(model, joint, by, steps, skip_bad, progress=not as_json,
+                                 how=_how(how) or AS_GIVEN)
+            except KinematikaError as err:
+                if getattr(err, "partial", None) is not None:
+                    _kept(err, csv, output, kind, plot, as_json)
+                raise
 
     sweeper, result = guarded(as_json, run)
     if csv is not None:
@@ -79,17 +97,38 @@ def sweep_command(model: Path, joint: Optional[str] = None, by: Optional[float] 
     print("\n".join(shown(line) for line in lines))
 
 
+def _kept(err: KinematikaError, csv: Optional[Path], output: Optional[Path], kind: Optional[str],
+          plot: Optional[Path], as_json: bool) -> None:
+    """A motion that could not be followed further: the rows computed before are written
+    where the rows were asked for (`--csv`, `-o`, `--plot`), and with `--json` printed beside
+    the error (`{"error": ..., "partial": <the sweep's JSON>}`); the error follows."""
+    partial = err.partial                  # type: ignore[attr-defined]
+    if csv is not None:
+        guarded(as_json, lambda: _write(partial, csv, "csv", "--csv"))
+    if output is not None:
+        guarded(as_json, lambda: _write(partial, output, kind))
+    if plot is not None and len(partial):
+        guarded(as_json, lambda: _plot(partial, plot, None))
+    if as_json:
+        import orjson
+
+        write_stdout(b'{"error":' + orjson.dumps(err.as_json()["error"]) + b',"partial":')
+        for piece in partial.json_chunks():
+            write_stdout(piece)
+        write_stdout(b"}\n")
+        sys.exit(2)
+
+
 def _format(output: Optional[Path], fmt: Optional[str]) -> Optional[str]:
     """The format of `-o FILE`: `--format`, else the file's suffix."""
     if fmt is not None and output is None:
-        raise KinematikaError("usage", f"--format {fmt} needs -o FILE, the file to write", "--format")
+        raise KinematikaError("usage", "format-needs-output", "--format", format=fmt)
     if output is None:
         return None
     kind = fmt or output.suffix.lower().lstrip(".")
     if kind not in SWEEP_FORMATS:
-        raise KinematikaError("usage", f"{kind or output.name!r} is not a sweep format: give "
-                              f"--format {'|'.join(SWEEP_FORMATS)} or a file ending in one of them",
-                              "--format" if fmt else "-o")
+        raise KinematikaError("usage", "sweep-format", "--format" if fmt else "-o", got=repr(kind or output.name),
+                              formats="|".join(SWEEP_FORMATS))
     return kind
 
 

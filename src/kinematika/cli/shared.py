@@ -9,7 +9,8 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Callable, Iterator, NoReturn
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
+from ..errors import reason as os_reason
 from ..limits import MESSAGE_CHARS
 from ..report.json_text import json_bytes
 from ..text import clip_middle, shown
@@ -20,11 +21,11 @@ def fail(err: KinematikaError, as_json: bool) -> NoReturn:
     An error whose place is a command-line option (`--lang`, `--set w`) is a `usage` error,
     whichever part of the program found it: one kind of mistake, one kind of error."""
     if err.where.startswith("-") and err.kind not in ("usage", "output"):
-        err = KinematikaError("usage", err.message, err.where)
+        err = KinematikaError("usage", err.said, err.where)
     if as_json:
         print_json(err.as_json())
     else:
-        print(f"error ({err.kind}): {err}", file=sys.stderr)
+        print(Said("error-line", kind=err.kind, text=str(err)), file=sys.stderr)
     sys.exit(2)
 
 
@@ -35,33 +36,32 @@ def guarded(as_json: bool, work: Callable[[], Any]) -> Any:
     except KinematikaError as err:
         fail(err, as_json)
     except OSError as err:            # reading is checked where models are read: this is writing
-        fail(_write_error(err.filename or "the output file", err), as_json)
+        fail(_write_error(err.filename or Said("the-output-file"), err), as_json)
     except MemoryError:
-        fail(KinematikaError("limit", "the work needs more memory than this machine gives; make "
-                             "the model or the sweep smaller"), as_json)
+        fail(KinematikaError("limit", "out-of-memory"), as_json)
     except Exception as err:
         if os.environ.get("KINEMATIKA_DEBUG"):
             raise
         detail = shown(f"{type(err).__name__}: {err}", MESSAGE_CHARS - 80)
-        message = f"internal error ({detail}); rerun with KINEMATIKA_DEBUG=1 and report it"
+        message = str(Said("internal-error", detail=detail))
         if as_json:
             print_json({"error": {"kind": "internal", "message": message, "where": ""}})
         else:
-            print(f"error: {message}", file=sys.stderr)
+            print(Said("internal-line", text=message), file=sys.stderr)
         sys.exit(1)
 
 
 PATH_CHARS = 90       # a path in an error is cut in the middle to this, so the reason shows
 
 
-def cannot_write(path: Any, reason: str, option: str = "") -> KinematikaError:
+def cannot_write(path: Any, reason: Any, option: str = "") -> KinematikaError:
     """An `output` error: the file (a long path cut in the middle, its name kept), why it
-    cannot be written, and the option that named it."""
-    return KinematikaError("output", f"cannot write {clip_middle(shown(path), PATH_CHARS)}: {reason}", option)
+    cannot be written (a message), and the option that named it."""
+    return KinematikaError("output", "cannot-write", option, path=clip_middle(shown(path), PATH_CHARS), reason=reason)
 
 
 def _write_error(path: Any, err: OSError, option: str = "") -> KinematikaError:
-    return cannot_write(path, str(err.strerror or err), option)
+    return cannot_write(path, os_reason(err), option)
 
 
 @contextmanager
@@ -84,7 +84,7 @@ def options_named(given: dict[str, tuple[str, Any]]) -> Iterator[None]:
         option, value = given.get(err.where, (None, None))
         if option is None or value is None:
             raise
-        raise KinematikaError("usage", err.message, option) from None
+        raise KinematikaError("usage", err.said, option) from None
 
 
 def sweep_options(joint: Any, by: Any, steps: Any) -> dict:
@@ -97,9 +97,9 @@ def output_file(path: Path, option: str) -> Path:
     parent = path.parent
     try:
         if not parent.is_dir():
-            raise cannot_write(path, f"there is no folder {clip_middle(shown(parent), PATH_CHARS // 2)}", option)
+            raise cannot_write(path, Said("no-folder", folder=clip_middle(shown(parent), PATH_CHARS // 2)), option)
         if path.is_dir():
-            raise cannot_write(path, "it is a folder", option)
+            raise cannot_write(path, Said("it-is-a-folder"), option)
     except OSError as err:                  # a name too long, a folder that cannot be read
         raise _write_error(path, err, option) from None
     return path

@@ -6,7 +6,7 @@ from typing import Optional
 
 import typer
 
-from .app import AssemblyOpt, JsonOpt, ModelArg, MoveOpt, SetOpt, app, how
+from .app import AssemblyOpt, JsonOpt, MessagesOpt, ModelArg, MoveOpt, SetOpt, app, how, messages
 from .run import sweep_command
 
 
@@ -27,9 +27,10 @@ def sweep(model: Path = ModelArg,
           fmt: Optional[str] = typer.Option(None, "--format", help="the format of -o: json, csv, npz "
                                             "(numpy) or parquet (needs pyarrow)"),
           sets: Optional[list[str]] = SetOpt, moves: Optional[list[str]] = MoveOpt,
-          assembly: Optional[int] = AssemblyOpt,
+          assembly: Optional[int] = AssemblyOpt, lang: Optional[str] = MessagesOpt,
           ) -> None:
     """Positions, velocities and accelerations over a range of a driven joint (default: the
     model's `sweep:` section, else a full turn in 360 steps)."""
+    messages(lang, as_json)
     sweep_command(model, joint, by, steps, as_json, csv, skip_bad, plot, output, fmt,
                   lambda: how(sets, moves, assembly))

@@ -22,6 +22,7 @@ from abc import ABC, abstractmethod
 from typing import Union
 
 import numpy as np
+from ..errors import Said
 
 Param = Union[float, np.ndarray]
 
@@ -105,7 +106,7 @@ class Curve(ABC):
         last point is its first)."""
         a, b = self.domain
         if not (np.isfinite(a) and np.isfinite(b)):
-            raise ValueError("an unbounded curve has no points to draw: give it a finite domain")
+            raise ValueError(Said("curve-unbounded"))
         return self.point(np.linspace(a, b, n))
 
     def nearest(self, p: np.ndarray) -> Param:

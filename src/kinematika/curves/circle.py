@@ -6,6 +6,7 @@ import math
 import numpy as np
 
 from .base import Curve, Param
+from ..errors import Said
 
 
 class Circle(Curve):
@@ -16,7 +17,7 @@ class Circle(Curve):
 
     def __init__(self, center: np.ndarray, radius: float) -> None:
         if not radius > 0:
-            raise ValueError("a circle's radius must be positive")
+            raise ValueError(Said("circle-radius-positive"))
         self.center = np.asarray(center, dtype=float)
         self.radius = float(radius)
 
@@ -64,7 +65,7 @@ class Arc(Circle):
     def __init__(self, center: np.ndarray, radius: float, a0: float, a1: float) -> None:
         super().__init__(center, radius)
         if not (a0 < a1 <= a0 + 2 * math.pi):
-            raise ValueError("an arc runs counter-clockwise from a0 to a1, with a0 < a1 ≤ a0 + 2π")
+            raise ValueError(Said("arc-angles"))
         self.a0, self.a1 = float(a0), float(a1)
 
     @property

@@ -4,6 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from .base import Curve, Param
+from ..errors import Said
 
 
 class Line(Curve):
@@ -15,7 +16,7 @@ class Line(Curve):
         d = np.asarray(direction, dtype=float)
         size = float(np.hypot(*d))
         if not size > 0:
-            raise ValueError("a line's direction must not be zero")
+            raise ValueError(Said("curve-line-direction"))
         self.through = np.asarray(through, dtype=float)
         self.direction = d / size
         self._domain = (float(domain[0]), float(domain[1]))

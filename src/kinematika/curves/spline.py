@@ -5,6 +5,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from .base import Curve, Param
+from ..errors import Said
 
 
 class Spline(Curve):
@@ -18,17 +19,17 @@ class Spline(Curve):
     def __init__(self, points: np.ndarray, closed: bool = False) -> None:
         pts = np.asarray(points, dtype=float)
         if pts.ndim != 2 or pts.shape[1] != 2:
-            raise ValueError("a spline's points are a list of (x, y) pairs")
+            raise ValueError(Said("spline-points"))
         if closed and len(pts) > 1 and np.allclose(pts[0], pts[-1]):
             pts = pts[:-1]                   # the closing point is implied
         need = 3 if closed else 2
         if len(pts) < need:
-            raise ValueError(f"a {'closed' if closed else 'open'} spline needs at least {need} points")
+            raise ValueError(Said("spline-too-few", closed=str(closed).lower(), need=need))
         if closed:
             pts = np.vstack([pts, pts[:1]])
         chords = np.linalg.norm(np.diff(pts, axis=0), axis=1)
         if np.any(chords <= 1e-12 * max(1.0, float(np.max(np.abs(pts))))):
-            raise ValueError("a spline's consecutive points must differ")
+            raise ValueError(Said("spline-points-differ"))
         self.closed = closed
         self.knots = np.concatenate([[0.0], np.cumsum(chords)])
         self.data = pts

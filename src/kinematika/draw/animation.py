@@ -47,6 +47,20 @@ def animate(source: Any, path: Path | str, joint: Optional[str] = None, by: Opti
     path = Path(path)
     writer = _writer(path, fps)
     film = Film.of(source, joint, by, steps, frames, options, trace, skip_bad)
+    return _render(film, writer, path, progress)
+
+
+def animate_rows(model: Any, result: Any, path: Path | str, frames: int = 120, fps: int = 20,
+                 options: Optional[DrawOptions] = None, trace: Optional[list[str]] = None,
+                 progress: bool | Callable[[int, int], None] = False) -> Path:
+    """Render rows of a motion already computed (`result`, a sweep's or a simulation's, of the
+    `Model` `model`) to `path` (.gif/.mp4), as `animate` renders a sweep."""
+    path = Path(path)
+    writer = _writer(path, fps)
+    return _render(Film.of_rows(model, result, frames, options, trace), writer, path, progress)
+
+
+def _render(film: "Film", writer: Any, path: Path, progress: bool | Callable[[int, int], None]) -> Path:
     from ..sweep.progress import reporter
 
     report = reporter(progress, len(film.rows), "rendering frames")
@@ -78,16 +92,23 @@ class Film:
         once with `options`' live vectors and the `trace`d points' paths, ready for `show`."""
         from ..model.source import as_model
         from ..sweep import run_sweep
+
+        model = as_model(source)
+        _planar(model)
+        result = run_sweep(model, joint=joint, by=by, steps=steps, skip_bad=skip_bad)
+        return cls.of_rows(model, result, frames, options, trace)
+
+    @classmethod
+    def of_rows(cls, model: Any, result: Any, frames: int = 120, options: Optional[DrawOptions] = None,
+                trace: Optional[list[str]] = None) -> "Film":
+        """The film of rows already computed (`result`: a sweep's or a simulation's) of the
+        planar `Model` `model`, its drawn instant painted once (see `of`)."""
         from ..sweep.posing import solved as solve
         from .figure import new_figure
         from .scene import build_scene
 
-        model = as_model(source)
-        if model.dimension != 2:
-            raise KinematikaError("schema", "animate draws planar models; draw a 3D model's "
-                                  "instant with `kinematika draw`", "dimension")
+        _planar(model)
         options = options or DrawOptions()
-        result = run_sweep(model, joint=joint, by=by, steps=steps, skip_bad=skip_bad)
         rows = _rows(result, frames)
         sol = solve(model)
         still = DrawOptions(**{**options.__dict__, "velocities": False, "accelerations": False,
@@ -115,16 +136,24 @@ class Film:
         x, label = self.axis
         if label is not None:
             return f"{label} θ = {float(x[k]) % 360:.0f}°"
+        if getattr(self.motion.result, "unit", "deg") == "s":
+            return _coordinate(self.motion.result, k)
         return f"{self.motion.result.joint} {_coordinate(self.motion.result, k)}"
+
+
+def _planar(model: Any) -> None:
+    if model.dimension != 2:
+        raise KinematikaError("schema", "animate-planar", "dimension")
 
 
 def _reading(result: Any) -> tuple[Any, Optional[str]]:
     """(values, body) of the driving crank's absolute angle, or (None, None) when the sweep
     does not turn a body from the frame."""
-    from .plots import _driver, _moving_bodies, body_angle
+    from ..sweep.angles import body_angle, driving_body
+    from .plots import _moving_bodies
 
     angles = {n: a for n in _moving_bodies(result) if (a := body_angle(result, n)) is not None}
-    driver = _driver(result, angles)
+    driver = driving_body(result, angles)
     return (angles[driver], driver) if driver is not None else (None, None)
 
 
@@ -137,10 +166,7 @@ def _writer(path: Path, fps: int) -> Any:
     if fmt == "gif":
         return animation.PillowWriter(fps=fps)
     if not animation.writers.is_available("ffmpeg"):
-        raise KinematikaError("output", "writing .mp4 needs the ffmpeg program, which is not "
-                              "installed (on Debian or Ubuntu: apt install ffmpeg; with conda: "
-                              "conda install ffmpeg); or write a .gif, which needs nothing more",
-                              str(path))
+        raise KinematikaError("output", "ffmpeg-missing", str(path))
     return animation.FFMpegWriter(fps=fps, bitrate=1800)
 
 
@@ -148,7 +174,7 @@ def _rows(result: Any, frames: int) -> list[int]:
     """The rows to show: assembled ones, at most `frames`, evenly spread."""
     ok = np.flatnonzero(np.asarray(result.ok, dtype=bool))
     if not len(ok):
-        raise KinematikaError("assembly", "no position of the sweep could be assembled")
+        raise KinematikaError("assembly", "sweep-none-assembled")
     if len(ok) <= frames:
         return [int(k) for k in ok]
     pick = np.unique(np.round(np.linspace(0, len(ok) - 1, frames)).astype(int))
@@ -158,6 +184,8 @@ def _rows(result: Any, frames: int) -> list[int]:
 def _coordinate(result: Any, k: int) -> str:
     unit = getattr(result, "unit", "deg")
     x = float(result.coordinate[k])
+    if unit == "s":
+        return f"t = {x:.4g} s"
     return f"{x:+.0f}°" if unit == "deg" else f"{x:+.4g}"
 
 
@@ -279,7 +307,7 @@ class Motion:
             for name in trace:
                 key = name if name in self.result.points else model_points.get(name)
                 if key is None:
-                    raise KinematikaError("schema", f"unknown point {name!r} to trace", "--trace")
+                    raise KinematikaError("schema", "trace-unknown-point", "--trace", point=name)
                 keys.append(key)
         else:
             keys = [v.ref for v in self.live] or list(self.result.points)

@@ -81,7 +81,7 @@ def _body(cv: Canvas, body: BodyView) -> None:
     if anchor is None and pts:
         anchor = pts[0]
     if anchor is not None:
-        name = plain(noun(body.label or body.name)) + (f" ({body.number})" if cv.scene.numbered else "")
+        name = plain(noun(body.label or body.name)) + (f" ({body.index or body.number})" if cv.scene.numbered else "")
         cv.label(anchor, name, body.colour, 5, f"body:{body.name}", style="italic")
 
 

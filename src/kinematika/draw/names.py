@@ -19,9 +19,32 @@ FORMULA_CHARS = 24            # longer formulas (as plain text) are shown by the
 
 
 def body_numbers(model: Any) -> dict[str, int]:
-    """The notes' numbering: the frame 1, the other bodies 2, 3, … in the file's order."""
+    """The notes' numbering: the frame 1, the other bodies 2, 3, … in the file's order (the
+    order bodies are listed and coloured in)."""
     order = [model.frame] + [b for b in model.bodies if b != model.frame]
     return {name: k for k, name in enumerate(order, start=1)}
+
+
+def body_labels(model: Any, lang: Optional[str] = None) -> dict[str, str]:
+    """How the text and the figures write each body in a subscript (ω_3, v_B∈3, I_13): the
+    index the model's notation gives it (`notation: index(wheel1): "1"`, the notes' ω_N,
+    Ω of roda 1), else its number (`body_numbers`)."""
+    wording = getattr(model, "wording", None)
+    out = {}
+    for name, k in body_numbers(model).items():
+        index = wording.index(name, lang) if wording is not None else None
+        out[name] = index if index is not None else str(k)
+    return out
+
+
+def pair_tag(model: Any, a: str, b: str, lang: Optional[str] = None) -> str:
+    """The subscript of a pair of bodies, in the numbering's order: 13, 2N, or 2,11 when a
+    body's label has more than one character."""
+    numbers, labels = body_numbers(model), body_labels(model, lang)
+    x, y = sorted((a, b), key=lambda n: numbers[n])
+    if all(len(t) == 1 for t in labels.values()):
+        return labels[x] + labels[y]
+    return f"{labels[x]},{labels[y]}"
 
 
 def plain(text: str) -> str:
@@ -37,8 +60,8 @@ def _roman(name: str) -> str:
     return r"\mathrm{" + name.replace("_", r"\_").replace(" ", r"\ ") + "}"
 
 
-def subscript(letter: str, name: str, body: Optional[int] = None,
-              relative: Optional[int] = None) -> str:
+def subscript(letter: str, name: str, body: Optional[str] = None,
+              relative: Optional[str] = None) -> str:
     """`letter` with the subscript `name` (a point or a tag), `∈body` and `/relative`:
     $v_{\\mathrm{B}∈3/2}$. A name mathtext cannot take is written plainly: v(name∈3/2)."""
     tail = (f"∈{body}" if body is not None else "") + (f"/{relative}" if relative is not None
@@ -54,15 +77,15 @@ def subscript(letter: str, name: str, body: Optional[int] = None,
 
 
 def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
-                 relative_to: Optional[str] = None) -> str:
+                 relative_to: Optional[str] = None, lang: Optional[str] = None) -> str:
     """`letter` for the material point `point` of `body` (None, or one whose motion all the
     point's carriers share: the bare name), relative to `relative_to` (None or the frame:
     absolute)."""
-    numbers = body_numbers(model)
-    if body is not None and model.share_motion(point, model.carriers(point)):
-        body = None
-    rel = None if relative_to in (None, model.frame) else numbers[relative_to]
-    return subscript(letter, point, None if body is None else numbers[body], rel)
+    labels = body_labels(model, lang)
+    rel = None if relative_to in (None, model.frame) else labels[relative_to]
+    if body is not None and rel is None and model.share_motion(point, model.carriers(point)):
+        body = None          # a relative motion names its body always (v_P∈3/2, as the text does)
+    return subscript(letter, point, None if body is None else labels[body], rel)
 
 
 def contact_name(model: Any, joint_id: str) -> str:
@@ -78,13 +101,10 @@ def contact_name(model: Any, joint_id: str) -> str:
     return base
 
 
-def pair_symbol(letter: str, model: Any, a: str, b: str) -> str:
-    """`letter` for a pair of bodies by their numbers, smaller first: $I_{13}$ (I_{2,11}
-    once a number has two digits)."""
-    numbers = body_numbers(model)
-    x, y = sorted((numbers[a], numbers[b]))
-    tag = f"{x}{y}" if max(numbers.values()) < 10 else f"{x},{y}"
-    return subscript(letter, tag)
+def pair_symbol(letter: str, model: Any, a: str, b: str, lang: Optional[str] = None) -> str:
+    """`letter` for a pair of bodies by their labels, in the numbering's order: $I_{13}$
+    (I_{2,11} once a label has two characters; `pair_tag`)."""
+    return subscript(letter, pair_tag(model, a, b, lang))
 
 
 def formula(expr: Any, value: float, lang: Optional[str] = None, spelt: Optional[dict] = None) -> str:

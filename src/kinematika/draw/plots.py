@@ -4,7 +4,8 @@ The horizontal axis is the driving coordinate: the absolute angle θ of a crank 
 the frame (the angle of the line from its pivot to its next point, from the x axis), else
 the driven joint's increment. The panels, each only when it has something to show:
 
-- the absolute angles of the bodies that swing (degrees); bodies that turn fully have a
+- the absolute angles θ of the bodies that swing (degrees, each body's line from the x axis,
+  as the summary of `kinematika sweep` gives them: `sweep.angles`); bodies that turn fully have a
   panel of their own, so that a 0–360° turn does not flatten a ±30° rocker;
 - ω and α of the moving bodies (signed, counter-clockwise positive);
 - for points running on a straight line (a ram, a piston): their position along the line,
@@ -15,7 +16,9 @@ the driven joint's increment. The panels, each only when it has something to sho
   their speed and their tangential acceleration (signed: speeding up or slowing down).
 
 Lengths are in the model's unit, times in seconds. Dead points are dashed red vertical
-lines across every panel; rows the sweep could not assemble leave gaps. The frame and
+lines across every panel; rows the sweep could not assemble leave gaps. A motion through
+the input's limit positions runs back along the axis there (a rocker's cycle is a loop):
+those positions are dotted vertical lines. The frame and
 points at rest are left out; points moving alike (a pin of two bodies) appear once, under
 their bare name.
 """
@@ -30,6 +33,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from ..errors import KinematikaError
+from ..sweep.angles import angles_of, input_axis
 from .style import BODY_COLOURS, INK
 
 MAX_POINTS = 6
@@ -87,6 +91,9 @@ def plot_sweep(result: Any, path: Optional[Path | str] = None, model: Any = None
         for d in getattr(result, "dead_points", []) or []:
             x = _dead_x(reading, result, float(d))
             ax.axvline(x, color=DEAD, lw=1.0, ls="--", gid=f"dead:{float(d):g}")
+        for d in getattr(result, "limits", []) or []:
+            x = _dead_x(reading, result, float(d))
+            ax.axvline(x, color=INK, lw=0.9, ls=":", gid=f"limit:{float(d):g}")
         if panel.series:
             ax.legend(fontsize=8, ncol=min(len(panel.series), 6), loc="best", framealpha=0.85)
         if panel.note:
@@ -97,6 +104,8 @@ def plot_sweep(result: Any, path: Optional[Path | str] = None, model: Any = None
     title = getattr(result, "name", "Sweep")
     if getattr(result, "dead_points", None):
         title += "  (dashed red: dead points)"
+    if getattr(result, "limits", None):
+        title += "  (dotted: limit positions, where the input runs back)"
     fig.suptitle(title.replace("$", r"\$"), fontsize=12, weight="bold", color=INK)
     fig.tight_layout(rect=(0, 0, 1, 0.985))
     if path is not None:
@@ -110,19 +119,13 @@ def plot_sweep(result: Any, path: Optional[Path | str] = None, model: Any = None
 def read_sweep(result: Any, model: Any = None) -> Reading:
     """The horizontal axis and the panels of `result`."""
     bodies = _moving_bodies(result)
-    angles = {name: a for name in bodies if (a := body_angle(result, name)) is not None}
-    driver = _driver(result, angles)
-    if driver is not None:
-        x, xlabel = angles[driver], f"{driver} angle θ (deg)"
-    else:
-        x = np.asarray(result.coordinate, dtype=float)
-        unit = getattr(result, "unit", "deg")
-        xlabel = f"{getattr(result, 'joint', 'joint')} from the drawn position " \
-                 f"({'deg' if unit == 'deg' else 'length'})"
-    reading = Reading(x, xlabel)
+    angles = angles_of(result, list(bodies))
+    axis = input_axis(result, angles)
+    x, driver = axis.x, axis.driver
+    reading = Reading(x, axis.label)
     swinging = {n: a for n, a in angles.items() if n != driver and _span(a) <= TURNING}
     turning = {n: a for n, a in angles.items() if n != driver and _span(a) > TURNING}
-    for group, label in ((swinging, "angle (deg)"), (turning, "angle, turning bodies (deg)")):
+    for group, label in ((swinging, "angle θ (deg)"), (turning, "angle θ, turning bodies (deg)")):
         if group:
             reading.panels.append(Panel("angle", label, [Series(n, a) for n, a in group.items()]))
     reading.panels.append(Panel("omega", "ω (rad/s)",
@@ -163,44 +166,6 @@ def _moving_bodies(result: Any) -> dict[str, dict]:
                               np.nanmax(np.abs(angle), initial=0.0) > 0):
             out[name] = data
     return out
-
-
-def body_angle(result: Any, body: str) -> Optional[np.ndarray]:
-    """The absolute angle (degrees, continuous) of the body's line: from its fixed pivot (or
-    its first point) to its next point elsewhere; None for a body with one point (planar)."""
-    keys = [k for k in result.points if k.partition("@")[2] == body]
-    pos = {k: np.asarray(result.points[k]["position"], dtype=float)[:, :2] for k in keys}
-    if not pos or getattr(result, "dimension", 2) != 2:
-        return None
-    scale = max(float(np.nanmax(np.abs(p))) for p in pos.values()) or 1.0
-    fixed = [k for k, p in pos.items() if np.nanmax(np.abs(p - p[0]), initial=0.0) <= 1e-9 * scale]
-    origin = fixed[0] if fixed else keys[0]
-    other = next((k for k in keys if np.linalg.norm(pos[k][0] - pos[origin][0]) > 1e-9 * scale),
-                 None)
-    if other is None:
-        return None
-    d = pos[other] - pos[origin]
-    return _unwrap_degrees(np.arctan2(d[:, 1], d[:, 0]))
-
-
-def _unwrap_degrees(rad: np.ndarray) -> np.ndarray:
-    """Continuous angles in degrees; NaN rows (not assembled) stay NaN."""
-    out = np.full(len(rad), np.nan)
-    ok = np.isfinite(rad)
-    out[ok] = np.degrees(np.unwrap(rad[ok]))
-    return out
-
-
-def _driver(result: Any, angles: dict[str, np.ndarray]) -> Optional[str]:
-    """The body the sweep turns from the frame: its angle advances with the coordinate."""
-    if getattr(result, "unit", "deg") != "deg":
-        return None
-    x = np.asarray(result.coordinate, dtype=float)
-    for name, a in angles.items():
-        ok = np.isfinite(a) & np.isfinite(x)
-        if ok.sum() >= 2 and np.allclose(a[ok] - a[ok][0], x[ok] - x[ok][0], atol=1e-6):
-            return name
-    return None
 
 
 def _span(a: np.ndarray) -> float:
@@ -374,9 +339,10 @@ def _dead_x(reading: Reading, result: Any, coordinate: float) -> float:
     """Where a dead point (given in the sweep's coordinate) lies on the plots' axis."""
     xs = np.asarray(result.coordinate, dtype=float)
     ok = np.isfinite(reading.x) & np.isfinite(xs)
-    if ok.sum() < 2 or np.array_equal(reading.x[ok], xs[ok]):
+    if ok.sum() < 2 or np.array_equal(reading.x[ok], xs[ok]) or np.ptp(xs[ok]) == 0:
         return coordinate
-    return float(np.interp(coordinate, xs[ok], reading.x[ok]))
+    slope, offset = np.polyfit(xs[ok], reading.x[ok], 1)    # the driver's angle: θ0 ± coordinate
+    return float(offset + slope * coordinate)
 
 
 def _degrees_locator() -> Any:
@@ -389,8 +355,7 @@ def _format(path: Path) -> str:
     """The format of `path` by its suffix; one matplotlib cannot write is refused up front."""
     fmt = path.suffix.lower().lstrip(".") or "png"
     if fmt not in FigureCanvasAgg.get_supported_filetypes():
-        raise KinematikaError("usage", f"cannot plot to {path.name!r}: give a .png, .svg or "
-                              ".pdf file", str(path))
+        raise KinematikaError("usage", "plot-format", str(path), name=path.name)
     return fmt
 
 

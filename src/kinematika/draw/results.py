@@ -14,7 +14,7 @@ from ..model.model import POINT_QUESTIONS, PointRef
 from ..questions import answer
 from .options import DrawOptions
 from .geometry import perpendicular
-from .names import (bare, body_numbers, contact_name, equation, formula, pair_symbol, plain, point_symbol,
+from .names import (bare, body_labels, contact_name, equation, formula, pair_symbol, point_symbol,
                     subscript, value_text)
 from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView,
                     vector_label)
@@ -31,7 +31,7 @@ def add_results(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> N
     _centres(scene, sol, options, num)
     if options.curvature is not False:
         _curvatures(scene, sol, num, options.lang)
-    _other_marks(scene, sol, num)
+    _other_marks(scene, sol, num, options.lang)
 
 
 # vectors ---------------------------------------------------------------------------------
@@ -45,7 +45,7 @@ def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
             if _negligible(sol, kind, value):
                 vec = np.zeros_like(vec)      # round-off, not a vector to draw
             origin = num.page(sol.position(ref))
-            label = vector_label(kind, sol.model, ref, rel)
+            label = vector_label(kind, sol.model, ref, rel, options.lang)
             if any(v.kind == kind and v.label == label and np.allclose(v.origin, origin, atol=tol)
                    and np.allclose(v.value, num.proj(vec), atol=1e-9 * (1 + v.magnitude))
                    for v in scene.vectors):
@@ -241,7 +241,7 @@ def _asked_centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -
     if options.centres is False:
         return
     if options.centres and scene.dim == 2:
-        _all_centres(scene, sol, num)
+        _all_centres(scene, sol, num, options.lang)
         return
     if options.centres:
         scene.notes.append("instant centres are planar: not drawn for a 3D model")
@@ -250,7 +250,7 @@ def _asked_centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -
         if q.kind != "icr":
             continue
         name = q.target if not q.relative_to else f"{q.target}/{q.relative_to}"
-        label = pair_symbol("I", model, q.relative_to or model.frame, q.target)
+        label = pair_symbol("I", model, q.relative_to or model.frame, q.target, options.lang)
         _add_centre(scene, num, answer(sol, q), f"icr:{name}", label,
                     (q.relative_to or model.frame, q.target))
 
@@ -266,7 +266,7 @@ def _add_centre(scene: Scene, num: Numbers, value: dict, key: str, label: str,
         scene.marks.append(MarkView("icr", key, label, direction=d / np.linalg.norm(d), pair=pair))
 
 
-def _all_centres(scene: Scene, sol: Any, num: Numbers) -> None:
+def _all_centres(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None) -> None:
     """Every centre, labelled I₁₃ by body numbers, with the Kennedy lines that found them."""
     from ..questions.centres import all_centres
 
@@ -275,7 +275,7 @@ def _all_centres(scene: Scene, sol: Any, num: Numbers) -> None:
     by_pair = {frozenset(c.pair): c for c in centres}
     for c in centres:
         a, b = sorted(c.pair, key=number.get)
-        _add_centre(scene, num, c.value, f"centre:{a}-{b}", pair_symbol("I", sol.model, a, b),
+        _add_centre(scene, num, c.value, f"centre:{a}-{b}", pair_symbol("I", sol.model, a, b, lang),
                     (a, b))
     for c in centres:
         if c.how != "kennedy":
@@ -303,7 +303,7 @@ def _curvatures(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None
     for q in sol.model.questions:
         if q.kind != "curvature":
             continue
-        name = point_symbol("ρ", sol.model, q.target.point, q.target.body, q.relative_to)
+        name = point_symbol("ρ", sol.model, q.target.point, q.target.body, q.relative_to, lang)
         value = answer(sol, q)
         if value.get("rest"):
             scene.notes.append(f"{bare(name)} is at rest: no path curvature")
@@ -335,12 +335,25 @@ def _circle(num: Numbers, centre: np.ndarray, p: np.ndarray, v: np.ndarray) -> n
 
 
 # poles, contacts, screw axes ---------------------------------------------------------------
-def _other_marks(scene: Scene, sol: Any, num: Numbers) -> None:
+def _axis_label(model: Any, q: Any, lang: Optional[str]) -> str:
+    """A screw axis in the course's words with its bodies as the text writes them
+    (EIRL with 3/2 as its subscript: the blades relative to the block), never English words
+    in another language's figure."""
+    from ..model.wording import SCREW_AXIS
+
+    labels = body_labels(model, lang)
+    word = SCREW_AXIS.get(lang or "en", SCREW_AXIS["en"]).replace(" ", r"\ ")
+    rel = q.relative_to if q.relative_to not in (None, model.frame) else None
+    tag = labels[q.target] + (f"/{labels[rel]}" if rel else "")
+    return "$\\mathrm{" + word + "}_{\\mathrm{" + tag + "}}$"
+
+
+def _other_marks(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None) -> None:
     for q in sol.model.questions:
         if q.kind == "pole":
             value = answer(sol, q)
             if value.get("point") is not None:
-                label = subscript("Γ", str(body_numbers(sol.model)[q.target]))
+                label = subscript("Γ", body_labels(sol.model, lang)[q.target])
                 scene.marks.append(MarkView("pole", f"pole:{q.target}", label,
                                             point=num.page(value["point"]), pair=(q.target,)))
         elif q.kind == "contact":
@@ -352,5 +365,5 @@ def _other_marks(scene: Scene, sol: Any, num: Numbers) -> None:
         elif q.kind == "axis" and scene.dim == 3:
             value = answer(sol, q)
             if value.get("point") is not None:
-                scene.axes.append(AxisView(f"axis:{q.target}", f"axis of {plain(str(q.target))}",
+                scene.axes.append(AxisView(f"axis:{q.target}", _axis_label(sol.model, q, lang),
                                            num.page(value["point"]), num.page(value["direction"])))

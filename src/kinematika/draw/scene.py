@@ -21,7 +21,7 @@ from ..joints import kind as joint_kind
 from ..model.model import PointRef
 from .options import DrawOptions
 from .projection import Projection, projection
-from .names import body_numbers, listed, numbered, point_symbol, value_text
+from .names import body_labels, body_numbers, listed, numbered, point_symbol, value_text
 from .skeleton import add_skeletons
 from .style import body_colour
 
@@ -62,6 +62,7 @@ class BodyView:
     skeleton: list[Vec] = field(default_factory=list)  # polylines drawn as its bars, if any
     label: str = ""                        # its name as the figure writes it (the model's
                                            # name in the figure's language, else its own)
+    index: str = ""                        # how labels write it: its number, or the model's index
 
 
 @dataclass
@@ -230,10 +231,11 @@ def _number_bodies(scene: Scene, always: bool = False) -> None:
     scene.notes.insert(0, numbering_note(scene))
 
 
-def numbering(scene: Scene) -> list[tuple[int, str]]:
-    """The bodies' numbers with the names the figure gives them (their label, else their
-    name), in order."""
-    return [(b.number, b.label or b.name) for b in sorted(scene.bodies.values(), key=lambda b: b.number)]
+def numbering(scene: Scene) -> list[tuple[Any, str]]:
+    """The bodies' numbers (or the indices the model's notation gives them) with the names the
+    figure gives them (their label, else their name), in order."""
+    return [(b.index if b.index and b.index != str(b.number) else b.number, b.label or b.name)
+            for b in sorted(scene.bodies.values(), key=lambda b: b.number)]
 
 
 def numbering_note(scene: Scene) -> str:
@@ -255,8 +257,7 @@ def drawing_values(inst: Instant) -> dict:
         for name, vec in inst.points.items():
             if any(abs(complex(c.xreplace(at) if hasattr(c, "xreplace") else c).imag) > 1e-12
                    for c in vec):
-                raise KinematikaError("schema", f"the model cannot be drawn at these values: "
-                                      f"point {name} is not real there", "draw_at")
+                raise KinematikaError("schema", "draw-at-not-real", "draw_at", point=name)
     return values
 
 
@@ -302,13 +303,14 @@ class Numbers:
 def _bodies(inst: Instant, num: Numbers, lang: Optional[str] = None) -> dict[str, BodyView]:
     model = inst.model
     out = {}
+    labels = body_labels(model, lang)
     for name, number in body_numbers(model).items():
         body = model.bodies[name]
         frame = name == model.frame
         points = {p: num.page(inst.points[p]) for p in body.points}
         shapes = [view for s in inst.shapes.get(name, []) for view in _shapes(s, num)]
         out[name] = BodyView(name, number, "#424242" if frame else body_colour(number), frame,
-                             points, shapes, label=model.wording.body(name, lang))
+                             points, shapes, label=model.wording.body(name, lang), index=labels[name])
     for j in model.joints:
         for name in _passing(model, j):
             out[j.a].passing.append(name)
@@ -514,8 +516,9 @@ def _nearest_shape(shapes: list[ShapeView], p: Vec) -> Optional[ShapeView]:
     return best if best is not None and gap(best) < math.inf else None
 
 
-def vector_label(kind: str, model: Any, ref: PointRef, relative_to: Optional[str]) -> str:
+def vector_label(kind: str, model: Any, ref: PointRef, relative_to: Optional[str],
+                 lang: Optional[str] = None) -> str:
     """$v_B$, $a_{B∈3}$ (B of body 3, when B's carriers move differently), $v_{B∈3/2}$
-    (relative to body 2)."""
+    (relative to body 2); bodies by their labels (`names.body_labels`)."""
     return point_symbol("v" if kind == "velocity" else "a", model, ref.point, ref.body,
-                        relative_to)
+                        relative_to, lang)

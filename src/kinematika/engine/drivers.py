@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..algebra.vectors import dot, sub
+from ..errors import Said
 from ..model.model import Driver
 from .instant import Instant
 from ..joints import AXES, JointGeometry
@@ -21,7 +22,8 @@ def driver_rows(inst: Instant, d: Driver, geos: dict[str, JointGeometry], lv: Le
     if d.kind == "joint":
         geo = geos[d.joint]
         value = inst.value(given, where)
-        return [Row(as_lin(joint_rate(geo, lv) - value), f"rate of joint {d.joint} = {given.text}", where, True)]
+        return [Row(as_lin(joint_rate(geo, lv) - value), Said("row-joint-rate", joint=d.joint, value=given.text),
+                    where, True)]
     return _velocity(inst, d, lv, given, where)
 
 
@@ -30,16 +32,17 @@ def _omega(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> list[
     rel = d.relative_to
     motion = sp.rot_sub(lv.omega(d.body), lv.omega(rel)) if rel else lv.omega(d.body)
     name = "α" if lv.accel else "ω"
-    label = f"{name} of {d.body}" + (f" relative to {rel}" if rel else "")
+    label = Said("row-rate-relative", name=name, body=d.body, relative=rel) if rel else Said("row-rate", name=name,
+                                                                                              body=d.body)
     if sp.dim == 2:
         value = inst.value(given, where)
-        return [Row(as_lin(motion - value), f"{label} = {given.text}", where, True)]
+        return [Row(as_lin(motion - value), Said("row-equals", label=label, value=given.text), where, True)]
     value = inst.vector(given, where)
     if rel and lv.accel:
         # α_rel = α − α_F − ω_F × ω_rel, the derivative seen from F
         w_rel = sp.rot_sub(lv.w(d.body), lv.w(rel))
         motion = sub(motion, sp.cross_ww(lv.w(rel), w_rel))
-    return [Row(as_lin(m - v), f"{label} ({AXES[i]}) = {given[i].text}", where, True)
+    return [Row(as_lin(m - v), Said("row-component", label=label, axis=AXES[i], value=given[i].text), where, True)
             for i, (m, v) in enumerate(zip(motion, value))]
 
 
@@ -57,10 +60,11 @@ def _velocity(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> li
     if d.along is not None:
         u = _reference_direction(inst, rel or inst.model.frame, d.along, f"{where}.along")
         value = inst.value(given, where)
-        return [Row(as_lin(dot(motion, u) - value), f"{name} of {ref} along the given direction = "
-                    f"{given.text}", where, True)]
+        return [Row(as_lin(dot(motion, u) - value), Said("row-point-along", name=name, point=str(ref),
+                                                         value=given.text), where, True)]
     value = inst.vector(given, where)
-    return [Row(as_lin(m - v), f"{name} of {ref} ({AXES[i]}) = {given[i].text}", where, True)
+    label = Said("row-point", name=name, point=str(ref))
+    return [Row(as_lin(m - v), Said("row-component", label=label, axis=AXES[i], value=given[i].text), where, True)
             for i, (m, v) in enumerate(zip(motion, value))]
 
 

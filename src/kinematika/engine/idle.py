@@ -9,6 +9,7 @@ so that the rest of the mechanism is solved with the drivers a user would write.
 from __future__ import annotations
 
 from ..algebra.vectors import dot, sub
+from ..errors import Said
 from .instant import Instant
 from .joints import Row
 from .levels import Level
@@ -39,5 +40,5 @@ def idle_rows(inst: Instant, lv: Level) -> list[Row]:
     for body, a, b in idle_links(inst):
         ab = sub(inst.points[b], inst.points[a])
         rows.append(Row(as_lin(dot(lv.omega(body), ab)),
-                        f"no idle spin of {body} about {a}{b}", f"bodies.{body}"))
+                        Said("row-idle", body=body, axis=f"{a}{b}"), f"bodies.{body}"))
     return rows

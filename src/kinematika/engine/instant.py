@@ -13,7 +13,7 @@ from typing import Any, Optional
 
 from ..algebra.backend import Numeric, Symbolic, probe_values
 from ..algebra.vectors import Space, dot, sub
-from ..errors import KinematikaError
+from ..errors import KinematikaError, said_of
 from ..model import model as m
 from ..expressions import Expr, ExpressionError, evaluate
 from ..shapes import Cam, Circle, Curve, Disc, Line, Plane
@@ -60,7 +60,7 @@ class Instant:
         try:
             return evaluate(expr, self.env, self.backend)
         except ExpressionError as err:
-            raise KinematikaError("schema", str(err), where) from None
+            raise KinematikaError("schema", err.said, where) from None
 
     def vector(self, exprs: tuple, where: str) -> tuple:
         """Each component of `exprs` evaluated (`value`), its place named ``where[i]`` in an
@@ -72,16 +72,14 @@ class Instant:
         schema error at `where`."""
         size = math.hypot(*self.numvec(vec))          # no squares to underflow or overflow
         if not 0 < size < math.inf:
-            raise KinematikaError("schema", "a direction cannot be the zero vector", where)
+            raise KinematikaError("schema", "direction-zero", where)
         if not self.symbolic:
             return tuple(c / size for c in vec)
         try:
             norm = self.backend.sqrt(dot(vec, vec))
             return tuple(self.backend.simplify(c / norm) for c in vec)
         except ValueError as err:   # sympy's integer factoring fails on some 100-digit norms
-            raise KinematikaError("schema", "this direction cannot be made a unit vector exactly: its "
-                                  "components are too far apart in size (write the small one as 0)",
-                                  where) from err
+            raise KinematikaError("schema", "direction-not-exact", where) from err
 
     def direction(self, d: m.Direction, where: str) -> tuple:
         """A unit direction from the model: two points (from `start` to `end`, which must
@@ -89,8 +87,7 @@ class Instant:
         if isinstance(d, m.PointPair):
             gap = sub(self.points[d.end], self.points[d.start])
             if math.hypot(*self.numvec(gap)) <= 1e-12 * self.scale:
-                raise KinematikaError("schema", f"a direction needs two different points: {d.start} and "
-                                      f"{d.end} coincide", where)
+                raise KinematikaError("schema", "direction-points-coincide", where, start=d.start, end=d.end)
             return self.unit(gap, where)
         return self.unit(self.vector(d, where), where)
 
@@ -115,8 +112,7 @@ class Instant:
         z = complex_value(x, self.probe)      # each shared subformula once (long exact numbers)
         if z.imag == 0 or abs(z.imag) <= 1e-12 * abs(z.real):
             return z.real
-        raise KinematikaError("schema", "a value is not a real number for the symbols' values "
-                              "(the square root or a power of a negative quantity?)", "parameters")
+        raise KinematikaError("schema", "value-not-real", "parameters")
 
     def numvec(self, v: tuple) -> tuple:
         """A vector's components as floats (a symbolic one at the probe values), to measure and
@@ -164,14 +160,12 @@ def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict
     while pending:
         ready = [p for p in pending.values() if p.value.names() <= set(env) | {"pi"}]
         if not ready:
-            names = ", ".join(pending)
-            raise KinematikaError("schema", f"parameters refer to each other in a cycle: {names}",
-                                  "parameters")
+            raise KinematikaError("schema", "parameters-cycle", "parameters", names=list(pending))
         for p in ready:
             try:
                 env[p.name] = evaluate(p.value, env, backend)
             except ExpressionError as err:
-                raise KinematikaError("schema", str(err), f"parameters.{p.name}") from None
+                raise KinematikaError("schema", err.said, f"parameters.{p.name}") from None
             del pending[p.name]
     probe = probe_values([v for v in env.values() if getattr(v, "is_Symbol", False)])
     probe.update({s: v for s, v in at_given.items() if v is not None})
@@ -213,8 +207,7 @@ def _real_probe(points: dict[str, tuple], probe: dict, names: dict | None = None
         values = list(at.values())[len(probe):] + [complex(c.xreplace(at)) for c in coords]
         if all(math.isfinite(v.real) and abs(v.imag) <= 1e-12 * (1 + abs(v.real)) for v in values):
             return {**probe, **{s: complex(v).real for s, v in at.items() if s in names}}
-    raise KinematikaError("geometry", "the points are not real for any values of the symbols "
-                          "tried (a square root of a negative number?)", "points")
+    raise KinematikaError("geometry", "points-not-real", "points")
 
 
 def named_values(names: dict, probe: dict) -> dict:
@@ -284,8 +277,7 @@ def _shape(inst: Instant, s: m.Shape, body: str) -> Any:
         return Plane(_at(inst, s.through, s.through_point, body),
                      inst.body_direction(body, s.normal, f"{where}.plane.normal"), s.through_point)
     if inst.symbolic:
-        raise KinematikaError("schema", "curves and cams are drawn from numbers: give the parameters "
-                              "their values (or solve without --symbolic)", where)
+        raise KinematikaError("schema", "curves-need-numbers", where)
     if isinstance(s, m.CurveShape):
         return _curve(inst, s, body, where)
     return _cam(inst, s, body, where)
@@ -301,8 +293,7 @@ def _curve(inst: Instant, s: m.CurveShape, body: str, where: str) -> Curve:
     try:
         spline = Spline(pts, closed=s.closed)
     except ValueError as err:
-        raise KinematikaError("geometry", f"the curve cannot be drawn through its points: {err}",
-                              f"{where}.curve") from None
+        raise KinematikaError("geometry", "curve-through-points", f"{where}.curve", why=said_of(err)) from None
     return Curve(spline, role="curve")
 
 
@@ -350,6 +341,6 @@ def _at(inst: Instant, coords: tuple, point: Optional[str], body: str) -> tuple:
 def _radius(inst: Instant, expr: Expr, where: str) -> Any:
     r = inst.value(expr, f"{where}.radius")
     if inst.num(r) <= 0:
-        raise KinematikaError("schema", f"a radius must be positive, got {inst.num(r):g}", where)
+        raise KinematikaError("schema", "radius-positive", where, radius=float(inst.num(r)))
     return r
 

@@ -8,7 +8,9 @@ velocity level linear in (ω, v₀); at the acceleration level the same coeffici
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
+from ..errors import Said
 from ..joints import JointGeometry
 from ..model.model import Joint
 from .instant import Instant
@@ -18,12 +20,14 @@ from .linear import Lin
 
 @dataclass
 class Row:
-    """One scalar condition that must vanish, with a label for messages and explanations."""
+    """One scalar condition that must vanish, with a label for messages (a message of the
+    errors' catalogue, said in the language in use) and the joint it belongs to."""
 
     lin: Lin
-    label: str
+    label: Any
     where: str
     driver: bool = False
+    joint: str = ""
 
 
 def joint_geometry(inst: Instant, joint: Joint) -> JointGeometry:
@@ -37,7 +41,7 @@ def joint_rows(geo: JointGeometry, lv: Level) -> list[Row]:
     for lin, label in geo.joint.kind.rows(geo, lv):
         if not isinstance(lin, Lin):
             lin = Lin(const=lin)
-        out.append(Row(lin, f"{geo.joint.id}: {label}", geo.joint.where))
+        out.append(Row(lin, Said("row-joint", id=geo.joint.id, label=label), geo.joint.where, joint=geo.joint.id))
     return out
 
 

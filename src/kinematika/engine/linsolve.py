@@ -40,11 +40,12 @@ def analyse(a: np.ndarray, is_driver: np.ndarray, translation_columns: np.ndarra
     `restating()`, when given, marks the driver rows that only restate a joint."""
     m, n = a.shape
     scaled = scale_system(a, translation_columns, length)
-    diag = diagnose(scaled.matrix, is_driver)
+    # one SVD for the solve and the diagnosis (an underdetermined system is only diagnosed)
+    u, s, vt = np.linalg.svd(scaled.matrix, full_matrices=False) if m >= n else (None, None, None)
+    diag = diagnose(scaled.matrix, is_driver, s if scaled.matrix.size else None)
     if m < n or diag.condition_number > SINGULAR_CONDITION:
         raise underdetermined_error(scaled.matrix, is_driver, labels, wheres, body_of, diag,
                                     restating() if restating else None)
-    u, s, vt = np.linalg.svd(scaled.matrix, full_matrices=False)
     rows, blocks = list(range(m)), []
     if want_blocks:
         rows = independent_rows(scaled.matrix, n)
@@ -56,8 +57,12 @@ CONSISTENT = 1e-6   # relative residual of redundant conditions that still agree
 
 
 def solve_numeric(an: Analysis | SparseAnalysis, b: np.ndarray, labels: list[str], wheres: list[str],
-                  is_driver: np.ndarray, check: bool = True) -> np.ndarray:
-    """Least squares with the analysis' SVD (or sparse LU); a residual means conflicting conditions."""
+                  is_driver: np.ndarray, check: bool = True, natural: float = 0.0) -> np.ndarray:
+    """Least squares with the analysis' SVD (or sparse LU); a residual means conflicting
+    conditions. It is measured against the size of the right side and of the solution, and
+    at least against `natural`, the size they have in the mechanism's own units (its rate, or
+    the rate squared for accelerations): a right side that is all round-off (a train turning
+    rigidly at a constant rate: every acceleration term cancels) is no conflict."""
     bs = b * an.scaled.row_scale
     if isinstance(an, SparseAnalysis):
         xs = an.lu.refined(bs) if isinstance(an.lu, BlockLU) else an.lu.solve(bs)
@@ -67,7 +72,7 @@ def solve_numeric(an: Analysis | SparseAnalysis, b: np.ndarray, labels: list[str
     if check:
         residual = an.scaled.matrix @ xs - bs
         top = 1.0 if isinstance(an, SparseAnalysis) else np.abs(an.scaled.matrix).max(initial=0.0)
-        size = max(np.abs(bs).max(initial=0.0), top * np.abs(xs).max(initial=0.0), 1e-300)
+        size = max(np.abs(bs).max(initial=0.0), top * np.abs(xs).max(initial=0.0), natural, 1e-300)
         if np.abs(residual).max(initial=0.0) > CONSISTENT * size:
             raise conflict_error(residual, labels, wheres, is_driver, an.diagnosis)
     return xs * an.scaled.col_scale
@@ -125,9 +130,7 @@ def analyse_sparse(a: SparseRows, is_driver: np.ndarray, translation_columns: np
                 return SparseAnalysis(Scaled(scaled, row, col), lu, Diagnosis(n, given, given, cond),
                                       list(range(m)))
     if n > DENSE_DIAGNOSIS:
-        raise KinematikaError("singular", f"the {m}×{n} constraint Jacobian is singular or not square "
-                              "(sparse LU); the system is too large to say which conditions are "
-                              "missing or dependent", "drivers")
+        raise KinematikaError("singular", "jacobian-singular-large", "drivers", rows=m, columns=n)
     return analyse(a.toarray(), is_driver, translation_columns, length, labels, wheres, body_of,
                    restating=restating)
 
@@ -376,8 +379,7 @@ def _matching(pattern: np.ndarray) -> list[int]:
 
     for i in range(n):
         if not augment(i, set()):
-            raise KinematikaError("singular", "the system has no structurally independent set of "
-                                  "conditions for every unknown", "drivers")
+            raise KinematikaError("singular", "structurally-singular", "drivers")
     match = [0] * n
     for c, i in col_owner.items():
         match[i] = int(c)

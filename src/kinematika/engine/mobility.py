@@ -10,8 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import KinematikaError
-from ..text import names
+from ..errors import KinematikaError, Names, Num, Said
 
 SINGULAR_CONDITION = 1e10
 
@@ -58,16 +57,18 @@ class Diagnosis:
     condition_number: float
 
 
-def diagnose(scaled: np.ndarray, is_driver: np.ndarray) -> Diagnosis:
+def diagnose(scaled: np.ndarray, is_driver: np.ndarray, s: np.ndarray | None = None) -> Diagnosis:
     """The `Diagnosis` of a scaled system whose driver rows are marked by `is_driver`: ranks
-    from one SVD, dof = n − rank(joints), driver conditions = rank(all) − rank(joints)."""
+    by singular values (`s`, the whole matrix's when the caller has them), dof = n −
+    rank(joints), driver conditions = rank(all) − rank(joints)."""
     n = scaled.shape[1]
-    s = np.linalg.svd(scaled, compute_uv=False) if scaled.size else np.zeros(0)
+    if s is None:
+        s = np.linalg.svd(scaled, compute_uv=False) if scaled.size else np.zeros(0)
     top = s[0] if s.size else 0.0
     smallest = s[n - 1] if s.size >= n and n > 0 else 0.0
     cond = float(top / smallest) if smallest > 0 else float("inf")
     joints = numeric_rank(scaled[~is_driver], top)
-    total = numeric_rank(scaled, top)
+    total = int(np.sum(s > top / SINGULAR_CONDITION)) if top > 0 else 0
     return Diagnosis(n, n - joints, total - joints, cond)
 
 
@@ -82,17 +83,12 @@ def underdetermined_error(scaled: np.ndarray, is_driver: np.ndarray, labels: lis
     free = _free_bodies(scaled, body_of)
     if given >= diag.dof > 0 and diag.conditions < given:
         dependent = _dependent_drivers(scaled, is_driver, labels, wheres)
-        verb = "depends" if len(dependent) == 1 else "depend"
         return KinematikaError(
-            "singular",
-            f"a dead point: the drivers do not fix the motion here; {names(dependent, 3) or 'the drivers'} "
-            f"{verb} on the joints (condition number {_fmt(diag.condition_number)} of the "
-            f"dimensionless Jacobian, limit {SINGULAR_CONDITION:.0e})", "drivers")
+            "singular", "dead-point", "drivers", count=len(dependent), drivers=Names(dependent, 3),
+            condition=_fmt(diag.condition_number), limit=Num(SINGULAR_CONDITION, ".0e"))
     return KinematikaError(
-        "mobility",
-        f"the mechanism has {_plural(diag.dof, 'degree')} of freedom but the drivers give "
-        f"{_plural(diag.conditions, 'independent condition')}; left free: "
-        f"{names(free, 6) or 'some motion'}", "drivers")
+        "mobility", "mobility-free", "drivers", dof=diag.dof, conditions=diag.conditions, count=len(free),
+        free=Names(free, 6))
 
 
 def conflict_error(residual: np.ndarray, labels: list[str], wheres: list[str],
@@ -100,27 +96,22 @@ def conflict_error(residual: np.ndarray, labels: list[str], wheres: list[str],
     """Some conditions cannot hold together: name the drivers involved (else the joints)."""
     order = np.argsort(-np.abs(residual))
     worst = [int(i) for i in order if abs(residual[i]) > 1e-6 * max(abs(residual).max(), 1e-300)]
-    drivers = _unique(f"{wheres[i]} ({labels[i]})" for i in worst if is_driver[i])
+    drivers = _unique(Said("row-driver", where=wheres[i], label=labels[i]) for i in worst if is_driver[i])
     joints = _unique(labels[i] for i in worst if not is_driver[i])
     named = drivers or joints
     given = int(is_driver.sum())
     return KinematikaError(
-        "mobility",
-        f"the drivers conflict, their values do not agree with each other or the joints: "
-        f"{'; '.join(named[:3])} ({_plural(diag.dof, 'degree')} of freedom; "
-        f"{_plural(given, 'driver condition')}, {diag.conditions} independent)", "drivers")
+        "mobility", "drivers-conflict", "drivers", named=Names(named[:3], None, joined=";"), dof=diag.dof,
+        given=given, conditions=diag.conditions)
 
 
-def _unique(items: Any) -> list[str]:
-    out: list[str] = []
+def _unique(items: Any) -> list:
+    out: list = []
     for item in items:
         if item not in out:
             out.append(item)
     return out
 
-
-def _plural(n: int, word: str) -> str:
-    return f"{n} {word}{'' if n == 1 else 's'}"
 
 
 def _free_bodies(scaled: np.ndarray, body_of: list[str]) -> list[str]:
@@ -138,10 +129,10 @@ def _free_bodies(scaled: np.ndarray, body_of: list[str]) -> list[str]:
 
 
 def _dependent_drivers(scaled: np.ndarray, is_driver: np.ndarray, labels: list[str],
-                       wheres: list[str]) -> list[str]:
+                       wheres: list[str]) -> list[Said]:
     """Drivers whose rows lie (numerically) in the span of the joints' rows."""
     joints = scaled[~is_driver]
-    out: list[str] = []
+    out: list[Said] = []
     for i in np.flatnonzero(is_driver):
         row = scaled[i]
         if joints.size:
@@ -149,11 +140,11 @@ def _dependent_drivers(scaled: np.ndarray, is_driver: np.ndarray, labels: list[s
             gap = np.linalg.norm(joints.T @ coef - row)
         else:
             gap = np.linalg.norm(row)
-        text = f"{wheres[i]} ({labels[i]})"
+        text = Said("row-driver", where=wheres[i], label=labels[i])
         if gap < 1e-8 * max(np.linalg.norm(row), 1e-300) and text not in out:
             out.append(text)
     return out
 
 
-def _fmt(x: float) -> str:
-    return "infinite" if not np.isfinite(x) else f"{x:.3g}"
+def _fmt(x: float) -> "Said | Num":
+    return Said("infinite") if not np.isfinite(x) else Num(x, ".3g")

@@ -12,7 +12,7 @@ import math
 import warnings
 from typing import TYPE_CHECKING, Any, Optional
 
-from ..errors import KinematikaError, KinematikaWarning
+from ..errors import KinematikaError, KinematikaWarning, Names, Num, Said
 from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
                                    TwoCircles, TwoLines, construction_order, uses)
 
@@ -144,9 +144,8 @@ def angle_warnings(inst: "Instant") -> list[KinematikaWarning]:
         except (TypeError, ValueError, OverflowError):
             continue
         if math.isfinite(angle) and abs(angle) > TURN * (1 + 1e-9):
-            out.append(KinematikaWarning(
-                f"the angle {angle:g} is in radians: {math.degrees(angle):.0f}°, {abs(angle) / TURN:.1f} "
-                f"turns; for {angle:g}° write deg({angle:g})", where))
+            out.append(KinematikaWarning("angle-in-radians", where, angle=angle, degrees=Num(math.degrees(angle), ".0f"),
+                                         turns=Num(abs(angle) / TURN, ".1f"), written=f"{angle:g}"))
     for w in out:
         warnings.warn(w, stacklevel=3)
     return out
@@ -235,9 +234,8 @@ def _check_size(coords: tuple, name: str, where: str) -> None:
 
     size = _size(coords)
     if size > POINT_OPS:
-        raise KinematikaError("limit", f"the exact coordinates of {name} would have about {size:,} "
-                              f"operations (more than {POINT_OPS:,}): too large for formulas; give "
-                              "more parameters numbers, or solve without --symbolic", where)
+        raise KinematikaError("limit", "point-too-large", where, point=name, size=Num(size, ","),
+                              limit=Num(POINT_OPS, ","))
 
 
 class _Builder:
@@ -274,15 +272,13 @@ class _Builder:
     def length(self, expr: Any, field: str, what: str) -> Any:
         r = self.value(expr, field)
         if not self.bk.symbolic and r <= 0:
-            raise KinematikaError("schema", f"{what} must be positive, got {r:.6g}",
-                                  f"{self.where}.{field}")
+            raise KinematikaError("schema", "length-positive", f"{self.where}.{field}", what=what, value=Num(r, ".6g"))
         return r
 
     def unit_from(self, p: tuple, q: tuple, field: str) -> tuple:
         d = (q[0] - p[0], q[1] - p[1])
         if _coincide(self, d, p + q):
-            raise KinematikaError("geometry", "the two points that give the direction coincide",
-                                  f"{self.where}.{field}")
+            raise KinematikaError("geometry", "direction-points-same", f"{self.where}.{field}")
         norm = self.bk.sqrt(d[0] * d[0] + d[1] * d[1]) if self.bk.symbolic else math.hypot(*d)
         return (d[0] / norm, d[1] / norm)
 
@@ -308,8 +304,8 @@ class _Builder:
 
     def circles(self, c: TwoCircles) -> tuple:
         p, q = self.at(c.centers[0], "circles[0][0]"), self.at(c.centers[1], "circles[1][0]")
-        r1 = self.length(c.radii[0], "circles[0][1]", "a radius")
-        r2 = self.length(c.radii[1], "circles[1][1]", "a radius")
+        r1 = self.length(c.radii[0], "circles[0][1]", "radius")
+        r2 = self.length(c.radii[1], "circles[1][1]", "radius")
         dx, dy = q[0] - p[0], q[1] - p[1]
         d2 = dx * dx + dy * dy
         k = r1 * r1 - r2 * r2 + d2
@@ -323,7 +319,7 @@ class _Builder:
         right = (base[0] + h * dy, base[1] - h * dx)
         names = {"left": left, "right": right}
         label = f"{_name(c.centers[0])}→{_name(c.centers[1])}"
-        return self.choose(c.side, c.near, names, disc, f", one on each side of {label}", tangent)
+        return self.choose(c.side, c.near, names, disc, Said("fit-each-side", line=label), tangent)
 
     def _circles_meet(self, c: TwoCircles, p: tuple, q: tuple, r1: float, r2: float, d2: float,
                       disc: float) -> tuple[float, bool]:
@@ -331,25 +327,24 @@ class _Builder:
         tolerance; a `geometry` error when they do not meet."""
         d = d2 ** 0.5
         if d <= 1e-12 * max(r1, r2):
-            raise KinematikaError("geometry", f"the circles about {_name(c.centers[0])} and "
-                                  f"{_name(c.centers[1])} have the same centre", self.where)
+            raise KinematikaError("geometry", "circles-same-centre", self.where, a=_name(c.centers[0]),
+                                  b=_name(c.centers[1]))
         tol = TOLERANCE * max(d, r1, r2)
-        about = f"the circles about {_name(c.centers[0])} ({r1:.6g}) and {_name(c.centers[1])} ({r2:.6g})"
+        about = dict(a=_name(c.centers[0]), ra=Num(r1, ".6g"), b=_name(c.centers[1]), rb=Num(r2, ".6g"),
+                     d=Num(d, ".6g"))
         if d - (r1 + r2) > tol:
-            raise KinematikaError("geometry", f"{about} do not meet: centres {d:.6g} apart, "
-                                  f"{d - (r1 + r2):.6g} more than {r1:.6g} + {r2:.6g}", self.where)
+            raise KinematikaError("geometry", "circles-apart", self.where, gap=Num(d - (r1 + r2), ".6g"), **about)
         if abs(r1 - r2) - d > tol:
             inner, outer = (_name(c.centers[0]), _name(c.centers[1])) if r1 < r2 else \
                 (_name(c.centers[1]), _name(c.centers[0]))
-            raise KinematikaError("geometry", f"{about} do not meet: the circle about {inner} lies "
-                                  f"inside the one about {outer} (centres {d:.6g} apart, "
-                                  f"{abs(r1 - r2) - d:.6g} less than |{r1:.6g} − {r2:.6g}|)", self.where)
+            raise KinematikaError("geometry", "circles-inside", self.where, inner=inner, outer=outer,
+                                  gap=Num(abs(r1 - r2) - d, ".6g"), **about)
         tangent = abs(d - (r1 + r2)) <= tol or abs(abs(r1 - r2) - d) <= tol
         return max(disc, 0.0), tangent
 
     def circle_line(self, c: CircleLine) -> tuple:
         p = self.at(c.center, "circle[0]")
-        r = self.length(c.radius, "circle[1]", "a radius")
+        r = self.length(c.radius, "circle[1]", "radius")
         q, d = self.line(c.line, "line")
         w = (q[0] - p[0], q[1] - p[1])
         dd = d[0] * d[0] + d[1] * d[1]
@@ -362,19 +357,18 @@ class _Builder:
         ahead, behind = ((-dw + root) / dd, (-dw - root) / dd)
         names = {"ahead": (q[0] + ahead * d[0], q[1] + ahead * d[1]),
                  "behind": (q[0] + behind * d[0], q[1] + behind * d[1])}
-        return self.choose(c.side, c.near, names, disc, f" on the line {_line_name(c.line)}", tangent)
+        return self.choose(c.side, c.near, names, disc, Said("fit-on-line", line=_line_name(c.line)), tangent)
 
     def _line_meets(self, c: CircleLine, p: tuple, r: float, q: tuple, d: tuple, dd: float,
                     disc: float) -> tuple[float, bool]:
         """As `_circles_meet`, for a circle and a line."""
         if dd <= 0:
-            raise KinematikaError("schema", "a line's direction cannot be the zero vector",
-                                  f"{self.where}.line")
+            raise KinematikaError("schema", "line-direction-zero", f"{self.where}.line")
         dist = abs((p[0] - q[0]) * d[1] - (p[1] - q[1]) * d[0]) / dd ** 0.5
         if dist - r > TOLERANCE * max(r, dist):
-            raise KinematikaError("geometry", f"the circle about {_name(c.center)} ({r:.6g}) misses "
-                                  f"the line {_line_name(c.line)}: the line is {dist:.6g} from "
-                                  f"{_name(c.center)}, {dist - r:.6g} more than the radius", self.where)
+            raise KinematikaError("geometry", "circle-misses-line", self.where, centre=_name(c.center),
+                                  radius=Num(r, ".6g"), line=_line_name(c.line), distance=Num(dist, ".6g"),
+                                  gap=Num(dist - r, ".6g"))
         return max(disc, 0.0), abs(dist - r) <= TOLERANCE * max(r, dist)
 
     def lines(self, c: TwoLines) -> tuple:
@@ -382,8 +376,8 @@ class _Builder:
         cross = d1[0] * d2[1] - d1[1] * d2[0]
         scale = (self.num(d1[0] ** 2 + d1[1] ** 2) * self.num(d2[0] ** 2 + d2[1] ** 2)) ** 0.5
         if abs(self.num(cross)) <= 1e-12 * scale or (self.bk.symbolic and self.bk.simplify(cross) == 0):
-            raise KinematikaError("geometry", f"the lines {_line_name(c.lines[0])} and "
-                                  f"{_line_name(c.lines[1])} are parallel: they do not meet", self.where)
+            raise KinematikaError("geometry", "lines-parallel", self.where, a=_line_name(c.lines[0]),
+                                  b=_line_name(c.lines[1]))
         return line_meet(q1, d1, q2, d2, cross)
 
     def line(self, line: LineDef, field: str) -> tuple[tuple, tuple]:
@@ -392,19 +386,17 @@ class _Builder:
         if line.direction is not None:
             d = self.inst.vector(line.direction, f"{self.where}.{field}.direction")
             if self.num(d[0]) == 0 and self.num(d[1]) == 0:
-                raise KinematikaError("schema", "a line's direction cannot be the zero vector",
-                                      f"{self.where}.{field}.direction")
+                raise KinematikaError("schema", "line-direction-zero", f"{self.where}.{field}.direction")
             return q, d
         r = self.at(line.toward, f"{field}[1]")
         d = (r[0] - q[0], r[1] - q[1])
         if _coincide(self, d, q + r):
-            raise KinematikaError("geometry", f"the line {_line_name(line)} is given by two points "
-                                  "that coincide", f"{self.where}.{field}")
+            raise KinematikaError("geometry", "line-points-coincide", f"{self.where}.{field}", line=_line_name(line))
         return q, d
 
     # branches ------------------------------------------------------------------------
     def choose(self, side: Optional[str], near: Optional[tuple], options: dict[str, tuple],
-               disc: Any, relation: str, tangent: bool = False) -> tuple:
+               disc: Any, relation: Any, tangent: bool = False) -> tuple:
         """The intersection named by `side`, or nearest `near`; without either, the only one
         (tangent: the two meet within the tolerance, so their midpoint) or a `geometry`
         error listing both."""
@@ -419,9 +411,9 @@ class _Builder:
         if self.num(disc) == 0:
             return first
         keys = list(options)
-        shown = " and ".join(f"{_coords(self, p)} ({k})" for k, p in zip(keys, (first, second)))
-        raise KinematikaError("geometry", f"two points fit{relation}: {shown}; choose one with "
-                              f"side: {keys[0]} or {keys[1]}, or near: [x, y]", self.where)
+        shown = Names([f"{_coords(self, p)} ({k})" for k, p in zip(keys, (first, second))], joined="and")
+        raise KinematikaError("geometry", "two-points-fit", self.where, relation=relation, points=shown,
+                              first=keys[0], second=keys[1])
 
 
 def _quarter_turns(angle: float, cos: float, sin: float) -> tuple[float, float]:

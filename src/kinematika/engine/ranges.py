@@ -12,16 +12,15 @@ import math
 from typing import Any
 
 from .. import limits
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, Said
 
 
 def check_size(size: float) -> None:
     """The model's length scale within the range (`limits.SCALE`)."""
     if not 1 / limits.SCALE <= size <= limits.SCALE:
-        shown = f"{size:.3g}" if math.isfinite(size) else "beyond what floats hold"
-        raise KinematikaError("schema", f"the model's size is {shown}: kinematika computes with "
-                              f"lengths between {1 / limits.SCALE:g} and {limits.SCALE:g}, in any "
-                              "unit; write the lengths in another unit", "points")
+        shown = Num(size, ".3g") if math.isfinite(size) else Said("beyond-floats")
+        raise KinematikaError("schema", "model-size-range", "points", size=shown, low=1 / limits.SCALE,
+                              high=float(limits.SCALE))
 
 
 def check_rates(inst: Any) -> float:
@@ -43,8 +42,6 @@ def check_rates(inst: Any) -> float:
             if not rate <= largest:
                 largest, where = rate, d.where
     if largest and not 1 / limits.SCALE <= largest <= limits.SCALE:
-        raise KinematikaError("schema", f"the drivers' values are out of range for this mechanism (a "
-                              f"rate of {largest:.3g} per unit of time): kinematika computes with rates "
-                              f"between {1 / limits.SCALE:g} and {limits.SCALE:g}; write the times in "
-                              "another unit", where)
+        raise KinematikaError("schema", "rates-range", where, rate=Num(largest, ".3g"), low=1 / limits.SCALE,
+                              high=float(limits.SCALE))
     return largest

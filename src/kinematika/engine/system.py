@@ -121,22 +121,22 @@ class InstantSolver:
         return out
 
     def solve_linear(self, b: list[Any], check: bool = True,
-                     labels: list[str] | None = None) -> list[Any]:
-        """The solution of A x = b with the analysed matrix (exact for a symbolic instant)."""
+                     labels: list[str] | None = None, level: int = 0) -> list[Any]:
+        """The solution of A x = b with the analysed matrix (exact for a symbolic instant).
+        `level` 1 (velocities) or 2 (accelerations): the right side's natural size is the
+        model's rate to that power (`linsolve.solve_numeric`'s check of redundant rows)."""
         inst = self.inst
         b_num = np.array([inst.num(v) for v in b], dtype=float)
         with np.errstate(all="ignore"):
             x_num = solve_numeric(self.analysis, b_num, labels or self.labels, self.wheres,
-                                  self.is_driver, check)
+                                  self.is_driver, check, inst.rate ** level if level else 0.0)
         if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
-            raise KinematikaError("schema", "the model's values are too large: its velocities or "
-                                  "accelerations overflow the range of floating-point numbers",
-                                  "drivers")
+            raise KinematikaError("schema", "values-overflow", "drivers")
         if not inst.symbolic:
             return x_num.tolist()
         from ..budget import check as within_budget
 
-        within_budget("solving the equations exactly")
+        within_budget("stage-solving")
         exact = solve_symbolic(self.analysis, self.a_sym, b, self.a_num)
         rate = max(inst.rate, inst.rate ** 2)        # the size of rates and their squares
         inst.backend.check_against(exact, x_num, inst.probe, rate * max(1.0, inst.scale))
@@ -154,12 +154,12 @@ class InstantSolver:
         # symbols are solved as written (as fast, and their points' motions read shorter)
         if inst.symbolic and (self.space.dim == 2 or not inst.probe):
             return self._solve_exact()
-        x_v = self.solve_linear(self.b_v, check=True)
+        x_v = self.solve_linear(self.b_v, check=True, level=1)
         velocities = self._motion(x_v, None)
         # the acceleration system has the same matrix: only its known terms are built
         rows_a = self.rows(AccelerationLevel(KnownTerms(u), inst.ref, velocities))
         # redundant conditions must agree at this level too: an α the joints forbid is a conflict
-        x_a = self.solve_linear([-r.lin.const for r in rows_a], labels=[r.label for r in rows_a])
+        x_a = self.solve_linear([-r.lin.const for r in rows_a], labels=[r.label for r in rows_a], level=2)
         return self._motion(x_v, x_a)
 
     def _solve_exact(self) -> Motion:
@@ -217,11 +217,10 @@ class InstantSolver:
 
         b_num = np.array([standin.num(v) for v in b], dtype=float)
         with np.errstate(all="ignore"):
-            x_num = solve_numeric(self.analysis, b_num, labels, self.wheres, self.is_driver, True)
+            x_num = solve_numeric(self.analysis, b_num, labels, self.wheres, self.is_driver, True,
+                                  self.inst.rate ** (1 if prefix == "v" else 2))
         if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
-            raise KinematikaError("schema", "the model's values are too large: its velocities or "
-                                  "accelerations overflow the range of floating-point numbers",
-                                  "drivers")
+            raise KinematikaError("schema", "values-overflow", "drivers")
 
         def name(column: int, value: Any) -> Any:
             (out,), known = stand_in_values([value], standin, f"{prefix}{column}_")

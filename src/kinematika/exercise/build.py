@@ -12,7 +12,7 @@ from decimal import Decimal
 from pathlib import Path
 from typing import Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, Said
 from ..model.exercise_section import ExerciseSection, Unit
 from ..model.model import Model
 from .key import Row, floors_of, graded, key_rows
@@ -62,7 +62,7 @@ class Exercise:
     variants: list[Variant] = field(default_factory=list)
     source: Optional[Path] = None
     students: list = field(default_factory=list)        # roster.Student, with their variants
-    notes: list[str] = field(default_factory=list)      # what drawing the variants skipped or narrowed
+    notes: list[Said] = field(default_factory=list)     # what drawing the variants skipped or narrowed
 
     @property
     def asks(self) -> list[int]:
@@ -155,8 +155,7 @@ class Exercise:
         """Variant `number` (1-based); a number outside 1 … count is a usage error naming the
         range."""
         if not 1 <= number <= len(self.variants):
-            raise KinematikaError("usage", f"there is no variant {number} (variants 1 to "
-                                  f"{len(self.variants)})", "variant")
+            raise KinematikaError("usage", "variant-missing", "variant", number=number, count=len(self.variants))
         return self.variants[number - 1]
 
 
@@ -185,16 +184,14 @@ def make_exercise(model: Model, vary: list[str], count: int, seed: int, lang: st
     varies = [parse_vary(text) for text in vary]
     for v in varies:
         if v.name not in model.parameters:
-            raise KinematikaError("usage", f"--vary {v.name}: unknown parameter (parameters: "
-                                  f"{', '.join(model.parameters) or 'none'})", "--vary")
+            raise KinematikaError("usage", "vary-unknown-parameter", "--vary", name=v.name,
+                                  parameters=list(model.parameters))
     ex = Exercise(model, section, varies, seed, lang, source=source)
     if not varies:
-        raise KinematikaError("usage", "name at least one parameter to vary (--vary NAME=LOW:HIGH[:STEP])",
-                              "--vary")
+        raise KinematikaError("usage", "vary-none-step", "--vary")
     varied = {v.name for v in varies}
     if any(p.value is None and p.name not in varied for p in model.parameters.values()):
-        raise KinematikaError("usage", "an exercise needs numbers: give every symbolic parameter a "
-                              "value (or vary it)", "--vary")
+        raise KinematikaError("usage", "exercise-needs-numbers", "--vary")
 
     def accept(stated: dict[str, Decimal]) -> Drawn:
         try:
@@ -226,18 +223,19 @@ def make_exercise(model: Model, vary: list[str], count: int, seed: int, lang: st
     return ex
 
 
-def close_note(stated: dict[str, Decimal], close: tuple) -> str:
-    """Why a drawn variant was left out: a mistake's answer too close to the right one."""
+def close_note(stated: dict[str, Decimal], close: tuple) -> Said:
+    """Why a drawn variant was left out: a mistake's answer too close to the right one (the
+    gap in per cent, 2 significant figures)."""
     from .stated import plain_decimal
 
     question, kind, gap = close
     data = ", ".join(f"{k}={plain_decimal(v)}" for k, v in stated.items())
     if kind == "rounding":
-        return f"not drawn: {data}: rounding the data to 3 figures moves {question} by {100 * gap:.2g} %"
-    return f"not drawn: {data}: {kind} gives {question} within {100 * gap:.2g} % of the right answer"
+        return Said("exercise-not-drawn-rounding", data=data, question=question, gap=Num(100 * gap, ".2g"))
+    return Said("exercise-not-drawn-mistake", data=data, kind=kind, question=question, gap=Num(100 * gap, ".2g"))
 
 
-def narrowed_note(number: int, question: str, kind: str, gap: float, tolerance: float) -> str:
+def narrowed_note(number: int, question: str, kind: str, gap: float, tolerance: float) -> Said:
     """A variant whose box was narrowed to tell a mistake apart."""
-    return (f"variant {number}: the margin of {question} narrowed to {100 * tolerance:.2g} % to tell "
-            f"{kind} apart (it gives {100 * gap:.2g} % off)")
+    return Said("exercise-narrowed", number=number, question=question, tolerance=Num(100 * tolerance, ".2g"),
+                kind=kind, gap=Num(100 * gap, ".2g"))

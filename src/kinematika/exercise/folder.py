@@ -23,7 +23,7 @@ from decimal import Decimal, InvalidOperation
 from pathlib import Path
 from typing import Any, Callable, Iterator, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said, parser_problem, reason
 from .build import DEFAULT_SECTION, Exercise
 from .key import value_text
 from .moodle import QuizOptions
@@ -35,7 +35,7 @@ AGREE = 1e-9           # key.csv and the model solved again agree to this (relat
 
 def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = True,
                    quiz: Optional[QuizOptions] = None,
-                   progress: Optional[Callable[[int, int], None]] = None) -> list[str]:
+                   progress: Optional[Callable[[int, int], None]] = None) -> list[Said]:
     """Write the folder; the notes to show (what was written, what was skipped or narrowed).
     `quiz` holds Moodle's options (a question per part, a penalty for a wrong unit);
     `progress(done, total)` is told as the variants' figures and solutions are made."""
@@ -66,7 +66,7 @@ def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = 
         _text(out / "links.txt", "".join(f"{v.number}\t{page_link(ex, v.number)}\n" for v in ex.variants))
     _text(out / "sheets.html", sheets_html(ex, figures, students))
     _text(out / "key.html", key_html(ex, figures, worked))
-    notes = [*ex.notes, f"wrote {len(ex.variants)} variants to {out}"]
+    notes = [*ex.notes, Said("exercise-wrote", count=len(ex.variants), folder=str(out))]
     if pdf:
         from .printing import missing, print_pdfs
 
@@ -197,13 +197,13 @@ def load_exercise(folder: Path) -> Exercise:
     info = _json(folder / "exercise.json")
     model_name = info.get("model")
     if not isinstance(model_name, str) or "/" in model_name or "\\" in model_name:
-        raise KinematikaError("usage", "exercise.json does not name the model file", str(folder))
+        raise KinematikaError("usage", "exercise-no-model", str(folder))
     model_path = folder / model_name
     model = load_model(model_path)
     try:
         vary, seed, lang = list(info["vary"]), int(info["seed"]), str(info["lang"])
     except (KeyError, TypeError, ValueError):
-        raise KinematikaError("usage", "exercise.json lacks vary, seed or lang", str(folder)) from None
+        raise KinematikaError("usage", "exercise-lacks", str(folder)) from None
     ex = Exercise(model, model.exercise or DEFAULT_SECTION, [parse_vary(t) for t in vary], seed, lang,
                   source=model_path)
     for number, stated in enumerate(_variants(folder / "variants.csv", [v.name for v in ex.varies]), start=1):
@@ -222,12 +222,12 @@ def _json(path: Path) -> dict:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except OSError as err:
-        raise KinematikaError("usage", f"cannot read {path}: {err.strerror or err} (is it a folder "
-                              "`kinematika exercise` wrote?)", str(path)) from None
+        raise KinematikaError("usage", "exercise-cannot-read", str(path), path=str(path), reason=reason(err)) from None
     except ValueError as err:
-        raise KinematikaError("syntax", f"{path.name} is not JSON: {err}", str(path)) from None
+        raise KinematikaError("syntax", "file-not-json", str(path), name=path.name,
+                              problem=parser_problem(str(err))) from None
     if not isinstance(data, dict):
-        raise KinematikaError("syntax", f"{path.name} is not a JSON object", str(path))
+        raise KinematikaError("syntax", "file-not-json-object", str(path), name=path.name)
     return data
 
 
@@ -237,15 +237,15 @@ def read_csv(path: Path, columns: list[str]) -> list[dict[str, str]]:
     try:
         text = path.read_text(encoding="utf-8-sig")
     except OSError as err:
-        raise KinematikaError("usage", f"cannot read {path}: {err.strerror or err}", str(path)) from None
+        raise KinematikaError("usage", "cannot-read", str(path), path=str(path), reason=reason(err)) from None
     except UnicodeDecodeError:
-        raise KinematikaError("syntax", f"{path.name} is not UTF-8 text", str(path)) from None
+        raise KinematikaError("syntax", "csv-not-utf8", str(path), name=path.name) from None
     reader = csv.DictReader(io.StringIO(text))
     header = [h.strip() for h in reader.fieldnames or []]
     lacking = [c for c in columns if c not in header]
     if lacking:
-        raise KinematikaError("syntax", f"{path.name} has no column {lacking[0]!r} (its header: "
-                              f"{','.join(header) or 'none'})", path.name)
+        raise KinematikaError("syntax", "csv-no-column", path.name, name=path.name, column=lacking[0],
+                              header=",".join(header), count=len(header))
     rows = []
     for row in reader:
         rows.append({(k or "").strip(): (v or "").strip() if isinstance(v, str) else "" for k, v in row.items()})
@@ -260,10 +260,9 @@ def _variants(path: Path, names: list[str]) -> list[dict[str, Decimal]]:
                 raise ValueError
             out.append({n: Decimal(row[n]) for n in names})
         except (ValueError, InvalidOperation):
-            raise KinematikaError("syntax", "variants are numbered 1, 2, … with a value of each varied "
-                                  "parameter", f"{path.name}:{i}") from None
+            raise KinematikaError("syntax", "variants-numbered", f"{path.name}:{i}") from None
     if not out:
-        raise KinematikaError("syntax", "no variants", path.name)
+        raise KinematikaError("syntax", "variants-none", path.name)
     return out
 
 
@@ -279,6 +278,4 @@ def _check_key(ex: Exercise, path: Path) -> None:
             except ValueError:
                 agree = False
             if not agree:
-                raise KinematikaError("usage", f"key.csv does not match the model solved again (variant "
-                                      f"{v.number}, {r.question}): was the model or the key edited?",
-                                      path.name)
+                raise KinematikaError("usage", "key-mismatch", path.name, variant=v.number, question=r.question)

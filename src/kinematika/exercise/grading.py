@@ -31,7 +31,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Names, Said
 from .build import Exercise, Variant
 from .key import Row
 from .mistakes import Mistaken
@@ -127,9 +127,8 @@ class Marker:
         """The key row `question` of `variant`; a usage error at `where` when it is not asked."""
         row = next((r for r in variant.rows if r.question == question), None)
         if row is None:
-            asked = ", ".join(r.question for r in variant.rows)
-            raise KinematikaError("usage", f"{question!r} is not asked in variant {variant.number} "
-                                  f"(its questions: {asked})", where)
+            raise KinematikaError("usage", "question-not-asked", where, question=question, variant=variant.number,
+                                  asked=[r.question for r in variant.rows])
         return row
 
 
@@ -157,12 +156,13 @@ def read_answers(exercise: Exercise, path: Path, assigned: dict[str, int]) -> tu
         try:
             answer = _answer(exercise, line, assigned)
         except KinematikaError as err:
-            bad.append(Unreadable(line.number, err.message))
+            bad.append(Unreadable(line.number, err.said))
             continue
         key = (answer.student, answer.variant, answer.question)
         if key in seen:
-            bad.append(Unreadable(line.number, f"{answer.student} answers {answer.question} of variant "
-                                  f"{answer.variant} again (first on line {seen[key]})"))
+            bad.append(Unreadable(line.number, Said("answered-twice", student=answer.student,
+                                                    question=answer.question, variant=answer.variant,
+                                                    first=seen[key])))
             continue
         seen[key] = line.number
         out.append(answer)
@@ -173,7 +173,7 @@ def _answer(exercise: Exercise, line: Line, assigned: dict[str, int]) -> Answer:
     cells = line.cells
     student = cells["student"]
     if not student:
-        raise KinematikaError("usage", "a row without a student")
+        raise KinematikaError("usage", "row-no-student")
     text = cells["variant"]
     if not text and student in assigned:
         number = assigned[student]
@@ -181,7 +181,7 @@ def _answer(exercise: Exercise, line: Line, assigned: dict[str, int]) -> Answer:
         try:
             number = int(text)
         except ValueError:
-            raise KinematikaError("usage", f"variant {text!r} is not a number") from None
+            raise KinematikaError("usage", "variant-not-number", got=repr(text)) from None
     variant = exercise.variant(number)
     Marker.row(variant, cells["question"], "")
     return Answer(line.number, student, number, cells["question"], cells["value"])
@@ -309,18 +309,31 @@ def gradebook_csv(result: dict[str, Any]) -> str:
 
 
 def summary_text(result: dict[str, Any], answers: str = "answers.csv") -> str:
-    """The teacher's summary: per question, how many right and which mistakes how often; then
-    each student's score; then the students not on the list and the rows not read."""
-    lines = ["question   answers  right  carried  mistakes"]
+    """The teacher's summary, its headings in the language in use: per question, how many
+    right and which mistakes how often; then each student's score; then the students not on
+    the list and the rows not read."""
+    def heading(column: str) -> str:
+        return Said("grade-column", column=column).said()
+
+    q, n, r, c, m, s_, v, sc = (heading(k) for k in ("question", "answers", "right", "carried", "mistakes",
+                                                     "student", "variant", "score"))
+    wq = max([10, len(q), *(len(k) for k in result["questions"])])
+    wn, wr, wc = max(7, len(n)), max(5, len(r)), max(7, len(c))
+    lines = [f"{q:<{wq}} {n:>{wn}}  {r:>{wr}}  {c:>{wc}}  {m}"]
     for question, s in result["questions"].items():
-        named = ", ".join(f"{kind} ×{n}" for kind, n in s["mistakes"].items()) or "—"
-        lines.append(f"{question:<10} {s['answers']:>7}  {s['right']:>5}  {s['carried']:>7}  {named}")
+        named = ", ".join(f"{kind} ×{k}" for kind, k in s["mistakes"].items()) or "—"
+        lines.append(f"{question:<{wq}} {s['answers']:>{wn}}  {s['right']:>{wr}}  {s['carried']:>{wc}}  {named}")
     lines.append("")
-    lines.append("student    variant  score")
+    ws, wv = max([10, len(s_), *(len(k) for k in result["students"])]), max(7, len(v))
+    lines.append(f"{s_:<{ws}} {v:>{wv}}  {sc}")
     for student, data in result["students"].items():
-        lines.append(f"{student:<10} {data['variant']:>7}  {100 * data['score']:5.1f} %")
+        lines.append(f"{student:<{ws}} {data['variant']:>{wv}}  {100 * data['score']:5.1f} %")
     if result["unknown"]:
-        lines += ["", "not on the class list (left out): " + ", ".join(result["unknown"])]
-    for u in result["unreadable"]:
-        lines.append(f"{answers}:{u['line']}: not read: {u['error']}")
+        lines += ["", Said("students-unknown", students=Names(result["unknown"], None)).said()]
+    lines += [not_read(answers, u) for u in result["unreadable"]]
     return "\n".join(lines) + "\n"
+
+
+def not_read(answers: str, unreadable: dict[str, Any]) -> str:
+    """The line that says a row of the answers file was not read, and why."""
+    return Said("row-not-read", place=f"{answers}:{unreadable['line']}", error=unreadable["error"]).said()

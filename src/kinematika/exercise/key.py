@@ -21,16 +21,11 @@ from dataclasses import dataclass
 from typing import Any, Iterator, Optional
 
 from ..report.json_answer import FIELD_KINDS
+from ..report.units import ANSWER_KINDS, unit
 
 AXES = "xyz"
 FLOOR = 0.01      # a value is measured against at least 1 % of the mechanism's scale of its kind
-# the unit of each kind of quantity, from the model's length unit L
-KIND_UNITS = {"position": "{L}", "velocity": "{L}/s", "acceleration": "{L}/s²", "omega": "rad/s",
-              "alpha": "rad/s²"}
-QUESTION_KINDS = {"velocity": "velocity", "acceleration": "acceleration", "omega": "omega",
-                  "alpha": "alpha", "icr": "position", "curvature": "position", "pole": "position",
-                  "axis": "position", "contact": "velocity", "decompose": "velocity",
-                  "intrinsic": "acceleration", "inflection": "position"}
+QUESTION_KINDS = ANSWER_KINDS                  # the kind each question answers (`report.units`)
 
 
 @dataclass(frozen=True)
@@ -51,7 +46,7 @@ class Row:
     def unit(self, length: str) -> str:
         """The row's unit from the model's length unit `length`: "mm/s²" for an acceleration in
         mm, "rad/s" for ω."""
-        return KIND_UNITS.get(self.kind, "").replace("{L}", length)
+        return unit(self.kind, length)
 
 
 def rows_of(ask: int, kind: str, value: Any, floors: dict[str, float]) -> list[Row]:

@@ -49,7 +49,7 @@ def read_class(path: Path) -> list[Student]:
 
     table = read_table(path, [])
     if not table.header or not table.header[0]:
-        raise KinematikaError("usage", f"{path.name}: the first column must hold the students' ids", "--students")
+        raise KinematikaError("usage", "students-first-column", "--students", name=path.name)
     ident = table.header[0]
     names = [h for h in table.header[1:] if any(w in h for w in NAME_WORDS) and not any(w in h for w in MAIL_WORDS)]
     mail = column(table, *MAIL_WORDS)
@@ -60,16 +60,15 @@ def read_class(path: Path) -> list[Student]:
         if not sid:
             continue
         if sid in seen:
-            raise KinematikaError("usage", f"student {sid!r} is listed twice (lines {seen[sid]} and "
-                                  f"{line.number})", f"{path.name}:{line.number}")
+            raise KinematikaError("usage", "student-twice", f"{path.name}:{line.number}", student=sid,
+                                  first=seen[sid], line=line.number)
         seen[sid] = line.number
         email = line.cells.get(mail, "") if mail else next(
             (c for c in line.cells.values() if "@" in c and " " not in c.strip()), "")
         name = " ".join(line.cells[h] for h in names if line.cells[h])
         out.append(Student(sid, name, email))
     if not out:
-        raise KinematikaError("usage", f"{path.name} names no students (a header, then one per row)",
-                              "--students")
+        raise KinematikaError("usage", "students-none", "--students", name=path.name)
     return out
 
 
@@ -106,7 +105,7 @@ def read_students(path: Path, count: int) -> Optional[list[Student]]:
             if not 1 <= variant <= count:
                 raise ValueError
         except ValueError:
-            raise KinematikaError("usage", f"variant {line.cells['variant']!r} is not one of 1 to {count}",
-                                  f"{path.name}:{line.number}") from None
+            raise KinematikaError("usage", "student-variant-range", f"{path.name}:{line.number}",
+                                  got=line.cells['variant'], count=count) from None
         out.append(Student(line.cells["student"], variant=variant))
     return out

@@ -27,8 +27,8 @@ def statement_html(exercise: Any, stated: dict, lang: str) -> str:
     text = exercise.section.statement.get(lang)
     if text is None:
         if exercise.section.statement:
-            raise KinematikaError("usage", f"the exercise section has no statement in {lang!r} (it has "
-                                  f"{', '.join(exercise.section.statement)})", "--lang")
+            raise KinematikaError("usage", "statement-missing", "--lang", lang=lang,
+                                  langs=list(exercise.section.statement))
         return f"<p>{escape(default_statement(exercise, stated, lang))}</p>"
 
     def value(match: Any) -> str:

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said, reason
 
 SEPARATORS = (",", ";", "\t")
 
@@ -36,14 +36,15 @@ class Line:
 
 @dataclass(frozen=True)
 class Unreadable:
-    """A row that could not be read: its line number and why (one line)."""
+    """A row that could not be read: its line number and why (a message of the errors'
+    catalogue, said in the language in use when it is read)."""
 
     number: int
-    message: str
+    message: Said
 
     def as_json(self) -> dict:
         """`{"line": N, "error": "..."}`, as `grade --json` lists it."""
-        return {"line": self.number, "error": self.message}
+        return {"line": self.number, "error": self.message.said()}
 
 
 @dataclass
@@ -89,18 +90,18 @@ def read_table(path: Path, columns: list[str], optional: tuple[str, ...] = (),
     try:
         text = decoded(path.read_bytes())
     except OSError as err:
-        raise KinematikaError("usage", f"cannot read {path}: {err.strerror or err}", str(path)) from None
+        raise KinematikaError("usage", "table-unreadable", str(path), path=str(path), reason=reason(err)) from None
     lines = text.splitlines()
     first = next((i for i, line in enumerate(lines) if line.strip()), None)
     if first is None:
-        raise KinematikaError("syntax", f"{path.name} is empty (a header, then one row per line)", path.name)
+        raise KinematikaError("syntax", "table-empty", path.name, name=path.name)
     sep = separator(lines[first])
     reader = csv.reader(io.StringIO("\n".join(lines[first:])), delimiter=sep)
     header = [h.strip().lower() for h in next(reader)]
     lacking = [c for c in columns if c not in header]
     if lacking:
-        raise KinematikaError("syntax", f"{path.name} has no column {lacking[0]!r} (its header: "
-                              f"{sep.join(header) or 'none'}; columns: {', '.join(columns)})", path.name)
+        raise KinematikaError("syntax", "table-no-column", path.name, name=path.name, column=lacking[0],
+                              header=[h for h in header if h], columns=columns)
     table = Table(path.name, header)
     for cells in reader:
         number = first + reader.line_num
@@ -109,8 +110,7 @@ def read_table(path: Path, columns: list[str], optional: tuple[str, ...] = (),
         if len(cells) == len(header) + 1 and decimal_last and _digits(cells[-2]) and _digits(cells[-1]):
             cells = [*cells[:-2], f"{cells[-2]},{cells[-1]}"]
         if len(cells) > len(header) and any(c.strip() for c in cells[len(header):]):
-            table.unreadable.append(Unreadable(number, f"{len(cells)} fields, the header has "
-                                               f"{len(header)} (a value with a comma needs quotes)"))
+            table.unreadable.append(Unreadable(number, Said("row-fields", count=len(cells), header=len(header))))
             continue
         row = {h: (cells[i].strip() if i < len(cells) else "") for i, h in enumerate(header)}
         for c in optional:

@@ -64,16 +64,13 @@ def parse_vary(text: str) -> Vary:
         if not all(x.is_finite() for x in (low, high, step)):
             raise InvalidOperation
     except (InvalidOperation, ValueError):
-        raise KinematikaError("usage", f"--vary expects NAME=LOW:HIGH[:STEP] (as s=300:500:10), got "
-                              f"{text!r}", "--vary") from None
+        raise KinematikaError("usage", "vary-step-form", "--vary", got=repr(text)) from None
     name = name.strip()
     if high < low or step <= 0:
-        raise KinematikaError("usage", f"--vary {name}: give LOW <= HIGH and a positive STEP, got "
-                              f"{rest}", "--vary")
+        raise KinematikaError("usage", "vary-step-interval", "--vary", name=name, got=rest)
     vary = Vary(name, low, high, step)
     if vary.count > MAX_GRID:
-        raise KinematikaError("usage", f"--vary {name}: {vary.count} values on the grid, at most "
-                              f"{MAX_GRID}: take a larger step", "--vary")
+        raise KinematikaError("usage", "vary-grid-large", "--vary", name=name, count=vary.count, limit=MAX_GRID)
     return vary
 
 
@@ -102,13 +99,12 @@ def draw_variants(varies: list[Vary], count: int, seed: int,
 
     names = [v.name for v in varies]
     if len(set(names)) != len(names):
-        raise KinematikaError("usage", f"a parameter is varied twice: {', '.join(names)}", "--vary")
+        raise KinematikaError("usage", "varied-twice", "--vary", names=names)
     if not 1 <= count <= MAX_VARIANTS:
-        raise KinematikaError("usage", f"--count takes 1 to {MAX_VARIANTS} variants, got {count}", "--count")
+        raise KinematikaError("usage", "count-range", "--count", limit=MAX_VARIANTS, got=count)
     total = math.prod(v.count for v in varies)
     if total < count:
-        raise KinematikaError("usage", f"the grids hold {total} different variants, fewer than "
-                              f"--count {count}: widen an interval or take smaller steps", "--vary")
+        raise KinematikaError("usage", "grids-too-small", "--vary", total=total, count=count)
     rng = np.random.default_rng(seed)
     seen: set[tuple[int, ...]] = set()
     out: list[tuple[dict[str, Decimal], Any]] = []
@@ -127,8 +123,7 @@ def draw_variants(varies: list[Vary], count: int, seed: int,
             continue
         out.append((stated, drawn.kept))
     if len(out) < count:
-        raise KinematikaError("assembly", f"only {len(out)} of {count} variants found in {len(seen)} "
-                              f"drawn: {failed['assembly']} do not assemble, {failed['dead-point']} "
-                              f"are near a dead point, {failed['mistake-close']} cannot tell a usual mistake from the "
-                              f"right answer; change the intervals", "--vary")
+        raise KinematikaError("assembly", "variants-few", "--vary", found=len(out), count=count, drawn=len(seen),
+                              apart=failed['assembly'], dead=failed['dead-point'],
+                              close=failed['mistake-close'])
     return out

@@ -9,7 +9,7 @@ from ..questions import answer
 from ..questions.curvature import intrinsic
 from .context import Ctx, alpha_sym, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Told, Value, msg
-from .terms import KNOWN
+from .terms import KNOWN, relative_name
 
 UNITS = {"velocity": "speed", "acceleration": "accel", "omega": "rate", "alpha": "rate2",
          "drag": None, "relative": None, "coriolis": None, "total": None, "point": "len",
@@ -32,6 +32,10 @@ def answers_section(ctx: Ctx) -> Section:
         row = [question_label(ctx, q), answer_items(ctx, q, answer(ctx.sol, q))]
         if row not in rows:        # a fixed point asked of every body it belongs to: once
             rows.append(row)
+    if ctx.planar:                 # the spins the notes ask of a vehicle's wheels (notation spin(j))
+        from .vehicles import spin_values
+
+        rows += [[spin, [("", value)]] for _, _, spin, value in spin_values(ctx)]
     if rows:
         sec.add(Table([msg("col.question"), msg("col.answer")], rows))
     else:
@@ -51,9 +55,9 @@ def _label(ctx: Ctx, ref: PointRef) -> str:
 def question_label(ctx: Ctx, q) -> Any:
     """The asked quantity as a symbol, or a sentence for the compound questions."""
     rel = ctx.rel(q.relative_to)
-    tail = f"/{rel}" if rel else ""
     if q.kind in ("velocity", "acceleration"):
-        return Sym(q.kind[0], _label(ctx, _ref(ctx, q)) + tail)
+        ref = _ref(ctx, q)
+        return Sym(q.kind[0], relative_name(ref.point, ref.body, rel) if rel else _label(ctx, ref))
     if q.kind == "omega":
         return omega_sym(q.target, rel, vector=not ctx.planar)
     if q.kind == "alpha":
@@ -106,10 +110,12 @@ def _part_label(ctx: Ctx, q, key: str, sub: str | None) -> Any:
             return Sym(level, f"{name}∈{j.b}")
         if key == "geometric":
             return geometric_sym(level, name)
-    if q.kind == "intrinsic":
+    if q.kind == "intrinsic":            # scalars told from vectors by how they are written
         p = _label(ctx, _ref(ctx, q))
-        symbols = {"speed": Sym("v", p, vector=False), "tangential": Sym("a", p, "t", vector=False),
-                   "normal": Sym("a", p, "n", vector=False), "tangential_vector": Sym("a", p, "t"),
+        t = Sym("t", vector=True)
+        symbols = {"speed": Inline(["|", Sym("v", p), "|"]), "tangent": Inline([msg("ans.tangent"), " ", t]),
+                   "tangential": Inline([Sym("a", p, "t"), " · ", t]),
+                   "normal": Inline(["|", Sym("a", p, "n"), "|"]), "tangential_vector": Sym("a", p, "t"),
                    "normal_vector": Sym("a", p, "n")}
         if key in symbols:
             return symbols[key]
@@ -138,6 +144,8 @@ def relative_rates(ctx: Ctx) -> list[Derived]:
         rel = ctx.rel(q.relative_to)
         if q.kind not in ("omega", "alpha") or rel is None or not ctx.planar:
             continue
+        if f"relative:{q.target}/{rel}" in ctx.worked:
+            continue            # a step found it (a belt seen from its arm): not again, backwards
         sym = omega_sym if q.kind == "omega" else alpha_sym
         get = ctx.omega if q.kind == "omega" else ctx.alpha
         unit = "rate" if q.kind == "omega" else "rate2"

@@ -7,14 +7,18 @@ velocities and accelerations, composition of motions, answers.
 """
 from __future__ import annotations
 
+import re
+from typing import Optional
+
 from ..draw.names import body_numbers
 from ..solution import Solution
 from .answers import answers_section, curvature_section, relative_rates
 from .checks import checks_section
 from .contacts import contact_section
 from .centres import centres_section
-from .context import Ctx
-from .document import Ann, Document, Equation, Section, msg
+from .context import Ctx, omega_sym
+from .data import data_section
+from .document import Ann, Document, Equation, Msg, Name, Section, Sym, msg
 from .group import refine
 from .order import solution_order
 from .planar import PlanarSteps
@@ -33,10 +37,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
     levels: list[Section] = []
     doc = Document(sol.model.name, sol.symbolic, sol.space.dim, length_unit,
                    numbers=body_numbers(sol.model), wording=sol.model.wording)
-    intro = Section(msg("sec.data"))
-    intro.add(msg("data.symbolic" if sol.symbolic else "data.numeric", unit=length_unit))
-    intro.add(msg("data.planar" if sol.space.dim == 2 else "data.spatial"))
-    doc.sections.append(intro)
+    doc.sections.append(data_section(ctx, length_unit, accel))
     if ctx.planar:
         steps = refine(ctx, solution_order(sol))
         doc.sections.append(structure_section(ctx, steps))
@@ -57,7 +58,8 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
         checked = checks_section(ctx)
         if checked is not None:
             doc.sections.append(checked)
-        doc.sections.append(centres_section(ctx))
+        if ctx.model.default_questions or any(q.kind == "icr" for q in ctx.model.questions):
+            doc.sections.append(centres_section(ctx))      # only what is asked (the slides ask none)
     else:
         doc.sections.append(structure_section(ctx, []))
         doc.sections.append(rates_section(ctx, accel))
@@ -68,6 +70,9 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
     for eq in doc.equations():
         found_forward(eq)
     prune(ctx, doc)
+    said = relative_convention(doc)
+    if said is not None:
+        doc.sections[0].blocks.insert(2, said)
     for sec, level in zip(levels, wanted):
         level_polygons(ctx, sec, level)
     in_levels = {id(e) for sec in levels for e in _equations(sec)}
@@ -94,6 +99,24 @@ def level_polygons(ctx: Ctx, sec: Section, level: str) -> None:
         drawn = level_polygon(ctx, _equations(step), level, step=True)
         if drawn is not None:
             step.add(drawn)
+
+
+RELATIVE = re.compile(r"^([^∈/,]+)∈([^∈/,]+)/([^∈/,]+)$")
+
+
+def relative_convention(doc: Document) -> Optional[Msg]:
+    """The one convention of relative quantities, said once in the Data section when the
+    explanation writes any: v_A∈4/2 is the velocity of A as a point of 4 seen from 2 (never
+    its opposite, whatever the equation's route), ω_4/2 = the rate of 4 relative to 2."""
+    numbers = doc.numbers
+    for eq in doc.equations():
+        for t in [eq.target] + [t for side in eq.sides for t in side]:
+            m = RELATIVE.match(t.sym.sub)
+            if m and m.group(2) in numbers and m.group(3) in numbers:
+                point_, b, a = m.groups()
+                return msg("data.relative", v=Sym("v", t.sym.sub), point=Name(point_), b=Name(b, "index"),
+                           a=Name(a, "index"), w=omega_sym(b, a))
+    return None
 
 
 def found_forward(eq: Equation) -> None:

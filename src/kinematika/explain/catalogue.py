@@ -58,7 +58,20 @@ def elision(value: Any) -> str:
     return "vowel" if first.lower() in "aeiouàèéíòóúh" else "other"
 
 
-FUNCTIONS = {"ELISION": elision}
+PLURAL_NAME = re.compile(r"(?i)^(els|les|los|las) |\s(i|y|and|eta)\s")
+
+
+def count(value: Any) -> str:
+    """`many` when a name stands for several things and a verb after it is plural: a list of
+    names, a name with a plural article (els pedals, les rodes, los dientes) or two names
+    joined by "and" (el plat i els pedals); else `one`."""
+    if getattr(value, "n_names", 1) > 1:
+        return "many"
+    text = str(getattr(value, "plain", value)).strip()
+    return "many" if PLURAL_NAME.search(text) else "one"
+
+
+FUNCTIONS = {"ELISION": elision, "COUNT": count}
 
 
 class Catalogue:
@@ -81,12 +94,12 @@ class Catalogue:
     def format(self, key: str, args: dict[str, Any] | None = None) -> str:
         """The message `key` with its variables filled (strings or numbers)."""
         if not self.has(key):
-            raise KinematikaError("schema", f"no message {key!r} in the {self.lang!r} catalogue", "explain")
+            raise KinematikaError("schema", "catalogue-no-message", "explain", key=key, lang=self.lang)
         message = self.bundle.get_message(fluent_id(key))
         text, errors = self.bundle.format_pattern(message.value, args or {})
         if errors:
-            raise KinematikaError("schema", f"message {key!r} of the {self.lang!r} catalogue: {errors[0]}",
-                                  "explain")
+            raise KinematikaError("schema", "catalogue-message-error", "explain", key=key, lang=self.lang,
+                                  problem=str(errors[0]))
         return text
 
     def get(self, key: str) -> str:

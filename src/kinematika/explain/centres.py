@@ -12,7 +12,7 @@ from itertools import combinations
 
 from ..questions.centres import all_centres, centre_line, same_line
 from .context import Ctx
-from .kinds import knife_edge, line_kind
+from .kinds import knife_edge, line_kind, on_fixed_line
 from .document import CentreNote, Section, Sym, msg
 
 MAX_ALL = 10        # above this many pairs, only the centres relative to the frame (and what they need)
@@ -105,7 +105,9 @@ def _line_reason(ctx: Ctx, c, kind: str, name: str, found: dict):
         return msg("centre.line.kennedy", l=[Sym("I", f"{a},{name}", vector=False), Sym("I", f"{name},{b}", vector=False)],
                    k=Name(name, "body"))
     j = ctx.model.joint(name)
-    return msg(f"centre.line.{line_kind(j)}", joint=Name(j.id, "joint"), point=Name(j.at or ctx.contact(j)))
+    kind = "slot_fixed" if on_fixed_line(j, ctx.frame) else line_kind(j)
+    return msg(f"centre.line.{kind}", joint=Name(j.id, "joint"), point=Name(j.at or ctx.contact(j)),
+               a=Name(j.a, "body"))
 
 
 def _kennedy(ctx: Ctx, note: CentreNote, found: dict, before: list) -> None:

@@ -5,22 +5,25 @@
   the train is an ordinary one, so (ω_s1 − ω_c)/(ω_s2 − ω_c) = ∓ρ_s2/ρ_s1 (minus through
   one external and one internal mesh, the sun and the ring: −3 in C5-1.4 and C5-E.2).
 - The ratio of a belt or chain drive, seen from the body that carries both axles: the belt
-  does not slip on either wheel, so ρ_a ω_a = ρ_b ω_b (the notes' bicycle: r Ω_pinyó =
-  R Ω_plat; the pulley train's ω₄/ω₁ = (r₁/r₂)(r₃/r₄), through a weld).
+  does not slip on either wheel, so ρ_a ω_a = ρ_b ω_b (the pulley train's ω₄/ω₁ =
+  (r₁/r₂)(r₃/r₄), through a weld) — unless the relation itself found the rate in a step
+  (`drives`: the notes' bicycle, r Ω_pinyó = R Ω_plat, and C5-1.6), where a check of it
+  by itself would be circular.
 - The time ratio of a quick-return (a crank pin in the slot of a lever pivoted on the
   frame): the lever is at an end of its swing when the slot is tangent to the crank's
   circle, so the two strokes take the crank angles 360° − 2θ and 2θ, cos θ = r/d.
 
-Every value is computed from the geometry and the solver's ω; the check says they agree.
+Every value is computed from the geometry and the rates found; the check says they agree.
 """
 from __future__ import annotations
 
 import math
-from typing import Any, Optional
+from typing import Optional
 
 from .context import Ctx, omega_sym
-from .document import Inline, Name, Section, Sym, Value, msg
-from .kinds import crossed_by_a_slot, pins, rolls, welds
+from .document import Inline, Name, Section, Value, msg
+from .drives import circle, drives, pivot, rho, same_place, simplified
+from .kinds import crossed_by_a_slot, rolls, welds
 
 
 def checks_section(ctx: Ctx) -> Optional[Section]:
@@ -35,41 +38,11 @@ def checks_section(ctx: Ctx) -> Optional[Section]:
     return sec
 
 
-# geometry read off the model ------------------------------------------------------------------
-def _circle(ctx: Ctx, body: str) -> Optional[tuple]:
-    """(centre, radius) of the body's circle (the first), else None."""
-    for shape in ctx.inst.shapes.get(body, []):
-        if hasattr(shape, "radius") and hasattr(shape, "center"):
-            return shape.center, shape.radius
-    return None
-
-
-def _same(ctx: Ctx, p: tuple, q: tuple) -> bool:
-    a, b = ctx.num(tuple(p)), ctx.num(tuple(q))
-    return math.dist(a, b) <= 1e-9 * ctx.inst.scale
-
-
-def _pivot(ctx: Ctx, body: str, on: str) -> Optional[tuple]:
-    """Where `body` is pinned to `on` (a revolute between them), else None."""
-    for j in ctx.model.joints:
-        if pins(j) and {j.a, j.b} == {body, on} and j.at:
-            return ctx.pos(j.at)
-    return None
-
-
-def _simplified(ctx: Ctx, x: Any) -> Any:
-    if not ctx.symbolic:
-        return x
-    import sympy
-
-    return sympy.nsimplify(sympy.simplify(x)) if not getattr(x, "free_symbols", None) else sympy.simplify(x)
-
-
-def _rho(ctx: Ctx, body: str) -> Sym:
-    """ρ of a body's circle, by the body's number as the notes and figures number bodies."""
-    from ..draw.names import body_numbers
-
-    return Sym("ρ", str(body_numbers(ctx.model)[body]), vector=False, fixed=True)
+# geometry read off the model (drives.py) ------------------------------------------------------
+_circle = circle
+_pivot = pivot
+_simplified = simplified
+_same = same_place
 
 
 # Willis -------------------------------------------------------------------------------------
@@ -109,12 +82,12 @@ def _willis_blocks(ctx: Ctx, carrier: str, planet: str, first: tuple, second: tu
     ratio = _simplified(ctx, (w1 - wc) / (w2 - wc)) if not ctx.is_zero(w2 - wc, "rate") else None
     ws = [omega_sym(b) for b in (s1, carrier, s2, carrier)]
     formula = Inline(["(", ws[0], " − ", ws[1], ") / (", ws[2], " − ", ws[3], ")"])
-    radii = Inline(["−" if sign < 0 else "", _rho(ctx, s2), " / ", _rho(ctx, s1)])
+    radii = Inline(["−" if sign < 0 else "", rho(s2), " / ", rho(s1)])
     values = Inline(["(", Value(ctx.clean(w1, "rate"), ""), " − ", Value(ctx.clean(wc, "rate"), ""), ") / (",
                      Value(ctx.clean(w2, "rate"), ""), " − ", Value(ctx.clean(wc, "rate"), ""), ")"])
     return [msg("check.willis", carrier=Name(carrier, "body"), planet=Name(planet, "body"), s1=Name(s1, "body"),
-                s2=Name(s2, "body"), formula=formula, radii=radii, r1=Inline([_rho(ctx, s1), " = ", Value(r1, "len")]),
-                r2=Inline([_rho(ctx, s2), " = ", Value(r2, "len")]), train=Value(train, ""),
+                s2=Name(s2, "body"), formula=formula, radii=radii, r1=Inline([rho(s1), " = ", Value(r1, "len")]),
+                r2=Inline([rho(s2), " = ", Value(r2, "len")]), train=Value(train, ""),
                 values=values, ratio=Value(ratio if ratio is not None else train, ""))]
 
 
@@ -126,75 +99,30 @@ def _mesh_sign(ctx: Ctx, j) -> int:
 
 # belts and chains ---------------------------------------------------------------------------
 def belts(ctx: Ctx) -> list:
-    """Each line body rolling on two circles whose bodies are pinned to one body K (their
-    axles' carrier): ρ_a ω_a/K = ρ_b ω_b/K; a train of them through welds, its ratio."""
+    """Each belt or chain drive (`drives.drives`) whose relation no step used to find a rate:
+    ρ_a ω_a/K = ρ_b ω_b/K checked against the rates found; a train of them through welds,
+    its ratio."""
     out: list = []
     links: list[tuple] = []
-    for line in ctx.model.bodies:
-        if line == ctx.frame:
-            continue                # the ground under two wheels is no belt
-        wheels = [(j.a if j.b == line else j.b) for j in ctx.model.joints if rolls(j) and line in (j.a, j.b)]
-        wheels = [w for w in wheels if _circle(ctx, w) is not None]
-        if len(wheels) != 2 or not _is_line(ctx, line):
-            continue
-        a, b = wheels
-        holder = _common_holder(ctx, a, b)
-        if holder is None:
-            continue
+    for d in drives(ctx):
+        a, b, holder, sign = d.a, d.b, d.holder, d.sign
         ra, rb = _circle(ctx, a)[1], _circle(ctx, b)[1]
-        sign = 1 if _same_side(ctx, line, a, b) else -1
-        wa, wb = ctx.omega(a, holder), ctx.omega(b, holder)
         ratio = _simplified(ctx, sign * ra / rb)
+        links.append((a, b, ratio, holder))
+        if f"drive:{b}" in ctx.worked or f"drive:{a}" in ctx.worked:
+            continue                # the relation found the rate: no check of it by itself
+        wa, wb = ctx.omega(a, holder), ctx.omega(b, holder)
         rel = [omega_sym(x, ctx.rel(holder)) for x in (a, b)]
-        out.append(msg("check.belt", line=Name(line, "body"), a=Name(a, "body"), b=Name(b, "body"),
+        out.append(msg("check.belt", line=Name(d.line, "body"), a=Name(a, "body"), b=Name(b, "body"),
                        holder=Name(holder, "body"),
-                       equation=Inline([_rho(ctx, a), " ", rel[0], " = ", "" if sign > 0 else "−",
-                                        _rho(ctx, b), " ", rel[1]]),
-                       ratio=Inline([rel[1], " / ", rel[0], " = ", "" if sign > 0 else "−", _rho(ctx, a), " / ",
-                                     _rho(ctx, b), " = ", Value(ratio, "")]),
+                       equation=Inline([rho(a), " ", rel[0], " = ", "" if sign > 0 else "−",
+                                        rho(b), " ", rel[1]]),
+                       ratio=Inline([rel[1], " / ", rel[0], " = ", "" if sign > 0 else "−", rho(a), " / ",
+                                     rho(b), " = ", Value(ratio, "")]),
                        values=Inline([rel[1], " = ", Value(ctx.clean(wb, "rate"), "rate"), ", ", rel[0], " = ",
                                       Value(ctx.clean(wa, "rate"), "rate")])))
-        links.append((a, b, ratio, holder))
     out += _train(ctx, links)
     return out
-
-
-def _is_line(ctx: Ctx, body: str) -> bool:
-    return any(hasattr(s, "direction") for s in ctx.inst.shapes.get(body, []))
-
-
-def _common_holder(ctx: Ctx, a: str, b: str) -> Optional[str]:
-    """The body both wheels turn on, each about its circle's centre (the frame, the bicycle's
-    frame, the arm of C5-1.6 that carries the moving pulley and turns about the fixed one);
-    a wheel welded to a pinned body (the sprocket on the rear wheel) turns with it."""
-    for k in ctx.model.bodies:
-        if k in (a, b):
-            continue
-        if all(_turns_on(ctx, w, k) for w in (a, b)):
-            return k
-    return None
-
-
-def _turns_on(ctx: Ctx, wheel: str, k: str) -> bool:
-    """Whether `wheel` (or a body welded to it) is pinned to k at the wheel's centre."""
-    centre = _circle(ctx, wheel)[0]
-    same = {wheel} | {(j.b if j.a == wheel else j.a) for j in ctx.model.joints if welds(j) and wheel in (j.a, j.b)}
-    for w in same:
-        pivot = _pivot(ctx, w, k)
-        if pivot is not None and _same(ctx, pivot, centre):
-            return True
-    return False
-
-
-def _same_side(ctx: Ctx, line: str, a: str, b: str) -> bool:
-    """Whether the two circles are on one side of the belt's line (an open belt)."""
-    shape = next(s for s in ctx.inst.shapes[line] if hasattr(s, "direction"))
-    d, p = ctx.num(tuple(shape.direction)), ctx.num(tuple(shape.through))
-
-    def side(w: str) -> float:
-        c = ctx.num(tuple(_circle(ctx, w)[0]))
-        return d[0] * (c[1] - p[1]) - d[1] * (c[0] - p[0])
-    return side(a) * side(b) > 0
 
 
 def _train(ctx: Ctx, links: list) -> list:
@@ -216,7 +144,7 @@ def _train(ctx: Ctx, links: list) -> list:
     w0, w1 = omega_sym(first, ctx.rel(holder)), omega_sym(last, ctx.rel(holder))
     factors: list = []
     for i, (a, b, _, _) in enumerate(chain):
-        factors += (["·"] if i else []) + ["(", _rho(ctx, a), " / ", _rho(ctx, b), ")"]
+        factors += (["·"] if i else []) + ["(", rho(a), " / ", rho(b), ")"]
     value = _simplified(ctx, ctx.omega(last, holder) / ctx.omega(first, holder))
     return [msg("check.train", ratio=Inline([w1, " / ", w0, " = "] + factors + [" = ", Value(product, "")]),
                 value=Value(value, ""))]

@@ -210,7 +210,7 @@ def _material(ctx: Ctx, bar: Bar, body: str, level: str) -> list:
     """The body's material point at J from its circle's centre (or a point of it): the
     rigid-body field; a point of the fixed body has neither velocity nor acceleration."""
     name = bar.name
-    if body == ctx.frame:
+    if ctx.fixed(body):
         return [msg("contact.fixed", point=Name(name), body=Name(body, "body"),
                     sym=Sym(level, f"{name}∈{body}"))]
     centre = bar.c1 if body == bar.b1 else bar.c2 if body == bar.b2 else None

@@ -136,6 +136,22 @@ class Ctx:
         (`scale_of`)."""
         return self.sol.is_zero(x, self.scale_of(unit))
 
+    def fixed(self, body: str) -> bool:
+        """Whether `body` does not move: the frame, or a body welded to it (C5-1.2's inclined
+        planes): its points have neither velocity nor acceleration, said, not derived."""
+        if not hasattr(self, "_fixed"):
+            from .kinds import welds
+
+            fixed, grew = {self.frame}, True
+            while grew:
+                grew = False
+                for j in self.model.joints:
+                    if welds(j) and len({j.a, j.b} & fixed) == 1:
+                        fixed |= {j.a, j.b}
+                        grew = True
+            self._fixed = fixed
+        return body in self._fixed
+
     # names -----------------------------------------------------------------------------------
     def shared(self, point: str) -> bool:
         """Whether every body carrying `point` moves alike there (a bare name is enough)."""

@@ -27,6 +27,7 @@ class Sym:
     vector: bool = True
     sub_key: str = ""
     fixed: bool = False            # written as given (a model's notation): no body numbers
+    of_body: bool = False          # the subscript is a body's name (ρ of a wheel): written by its label
 
 
 @dataclass(frozen=True)
@@ -230,10 +231,20 @@ class CentreNote:
     arm: Optional[tuple] = None                    # field, check: QI = k × v_Q / ω
 
 
+@dataclass(frozen=True)
+class Described:
+    """What the model says of one of its things in the reader's language (`names`): what a
+    point is (`kind` point) or a parameter (`kind` parameter); empty when it does not say."""
+
+    kind: str
+    name: str
+
+
 @dataclass
 class Told:
     """What the model tells in the reader's language (its `names`): `points`, a table of
-    what its points are; `notes`, its notes on the printed statement."""
+    what its points are; `data`, its statements of the data (the geometry it chose);
+    `notes`, its notes on the printed statement."""
 
     kind: str
     points: list = field(default_factory=list)     # the model's point names, in order

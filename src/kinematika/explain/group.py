@@ -37,7 +37,9 @@ from .document import (Ann, Derived, Equation, Sym, Term, Value, body as body_na
                        point as point_name)
 from .order import jointed
 from .contacts import geometric_blocks
-from .kinds import crossed_by_a_slot, guided, knife_edge, pin_only, rolls, same_rate, slider, welds
+from .drives import drive_blocks
+from .kinds import (crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls, same_rate,
+                    slider, welds)
 from .terms import contact_term, point_term, rotation_terms, slide_terms
 
 MAX_TURNS = 3           # rotations along one route at most
@@ -106,11 +108,12 @@ class Same:
 class Planner:
     """The order of the equations that find a group's bodies at one level ('v' or 'a')."""
 
-    def __init__(self, ctx: Ctx, group: list[str], known: set[str], level: str) -> None:
+    def __init__(self, ctx: Ctx, group: list[str], known: set[str], level: str,
+                 rates: Optional[set[str]] = None) -> None:
         self.ctx, self.level = ctx, level
         self.group = [b for b in group if b != ctx.frame]
         self.determined = set(known) | {ctx.frame}
-        self.rates = set(self.determined)
+        self.rates = set(self.determined) | set(rates or ())       # rates known (a drive's)
         self.full: set[str] = set()                 # labels of points whose motion is known
         self.partial: dict[str, dict] = {}          # label -> {"wheel": joint, "driver": driver}
         self.slides: set[str] = set()               # slots and guides whose relative speed is known
@@ -546,6 +549,9 @@ class Writer:
         state, spec = p.known.get(s, ("full", {}))
         if s.body == ctx.frame or label in ps.done or state != "full" or spec or self._given(s):
             return []
+        if ctx.fixed(s.body):              # a point of a body welded to the frame: it does not move
+            ps.done.add(label)
+            return [msg("contact.fixed", point=point_name(s.point), body=body_name(s.body), sym=Sym(lv, label))]
         key = ctx.motion_key(s.point, s.body)
         for body in [s.body] + [b for b in ctx.model.carriers(s.point) if b != s.body]:
             if body == ctx.frame:
@@ -604,7 +610,7 @@ class Writer:
         if knife_edge(j):
             return [msg("group.wheel_v" if lv == "v" else "group.wheel_a", joint=joint_name(j.id),
                         point=point_name(j.at), body=body_name(j.b), w=omega_sym(j.b), v=Sym("v", self.label(s)))]
-        return [msg(f"cond.{j.kind.name}", joint=joint_name(j.id), a=body_name(j.a), b=body_name(j.b),
+        return [msg(f"cond.{kind_key(j, self.ctx.frame)}", joint=joint_name(j.id), a=body_name(j.a), b=body_name(j.b),
                     point=point_name(j.at or ""))]
 
     def site_terms(self, s: Site, p: Path, known: bool = False) -> list[Term]:
@@ -656,7 +662,9 @@ class Writer:
             return [contact_term(ctx, seg.p, seg.body, seg.frm)] if lv == "a" else []
         if guided(j):
             unknown = not known and not self.plan._driven(j) and j.id not in p.slides
-            return slide_terms(ctx, lv, seg.frm, seg.body, seg.p, msg("dir.guide", joint=joint_name(j.id)), j.id,
+            line = (Value(ctx.clean(ctx.sol.geometry(j.id).along, ""), "") if on_fixed_line(j, ctx.frame)
+                    else msg("dir.guide", joint=joint_name(j.id)))       # a fixed line: its direction
+            return slide_terms(ctx, lv, seg.frm, seg.body, seg.p, line, j.id,
                                unknown)
         return []
 
@@ -687,8 +695,12 @@ def _total(terms: list[Term]) -> tuple:
 
 
 def group_blocks(ps, step) -> Optional[list]:
-    """The blocks of an `other` step by the planner, or None when it cannot go through."""
-    plan = Planner(ps.ctx, step.bodies, set(ps.known), ps.level)
+    """The blocks of an `other` step by the planner, or None when it cannot go through. A
+    belt or chain drive whose carrier and one wheel are known gives the other wheel's rate
+    first, as the notes find it (`drives`); the planner then knows those rates."""
+    given, rates = drive_blocks(ps.ctx, step.bodies, set(ps.known), ps.level)
+    plan = Planner(ps.ctx, step.bodies, set(ps.known), ps.level, rates)
     if not plan.run():
         return None
-    return Writer(ps, plan).blocks()
+    ps.ctx.worked.update(f"drive:{b}" for b in rates)
+    return given + Writer(ps, plan).blocks()

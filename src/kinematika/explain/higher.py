@@ -24,7 +24,7 @@ from ..shapes import Circle
 from .context import Ctx
 from .document import Ann, Msg, Sym, Term, point
 from .order import Step
-from .terms import rotation_terms, slide_terms
+from .terms import relative_name, rotation_terms, slide_terms
 
 
 @dataclass
@@ -72,12 +72,13 @@ def path_terms(ctx: Ctx, level: str, p: Path, tag: str) -> list[Term]:
     a_rel = ctx.acc(p.mover, p.pin, p.holder)
     along = scale(dot(a_rel, p.tangent), p.tangent)
     across = sub(a_rel, along)
-    rel = Sym("v", tag, sub_key="sub.rel")
+    name = relative_name(p.pin, p.mover, p.holder)
+    rel = Sym("v", name)
     centre = Msg("dir.centre", {"point": "C"})
     coriolis = slide_terms(ctx, level, p.holder, p.mover, p.pin, tangent, tag)[-1]   # as a straight slide's
-    return [Term(Sym("a", tag, "t", sub_key="sub.rel"), ctx.clean(along, "accel"), Ann("?"), Ann("para", tangent),
+    return [Term(Sym("a", name, "t"), ctx.clean(along, "accel"), Ann("?"), Ann("para", tangent),
                  [], True, "slide"),
-            Term(Sym("a", tag, "n", sub_key="sub.rel"), ctx.clean(across, "accel"), Ann("M", [rel, "²/ρ"]),
+            Term(Sym("a", name, "n"), ctx.clean(across, "accel"), Ann("M", [rel, "²/ρ"]),
                  Ann("para", centre), [rel, "² / ρ"], False, "curvature"),
             coriolis]
 

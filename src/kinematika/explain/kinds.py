@@ -26,6 +26,18 @@ def crossed_by_a_slot(j: Any) -> bool:
     return j.kind.chain == "PR"
 
 
+def on_fixed_line(j: Any, frame: str) -> bool:
+    """A point sliding along a line of the frame (a slot whose slotted body is the frame):
+    the notes' bar end on the floor (C5-1.2), a contact with sliding, not a pin in a slot."""
+    return crossed_by_a_slot(j) and j.a == frame
+
+
+def kind_key(j: Any, frame: str) -> str:
+    """The name a joint goes by, from its kind and the bodies it joins: `slot_fixed` for a
+    point sliding on a line of the frame, else its kind's name."""
+    return "slot_fixed" if on_fixed_line(j, frame) else j.kind.name
+
+
 def slider(j: Any) -> bool:
     """A prismatic pair (the chain P): the bodies slide along a straight guide and turn together."""
     return j.kind.chain == "P"

@@ -89,7 +89,7 @@ def dyad(sol: Solution, step: Step, known: set[str]) -> Step:
 
 def _joints_of(sol: Solution, rows: list, bodies: list[str]) -> list[str]:
     """The joints of the block's rows that touch its new bodies."""
-    found = {r.label.partition(":")[0] for r in rows if not r.driver}
+    found = {r.joint for r in rows if not r.driver}
     return [j.id for j in sol.model.joints if j.id in found and {j.a, j.b} & set(bodies)]
 
 

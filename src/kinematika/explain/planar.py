@@ -16,11 +16,11 @@ from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, V
 from .group import group_blocks
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
-from .kinds import knife_edge, pin_only, rolls, turns
+from .kinds import kind_key, knife_edge, pin_only, rolls, turns
 from .order import Step
 from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
-from .vehicles import wheel_route
+from .vehicles import spins, wheel_route
 
 body_ = body
 
@@ -50,7 +50,11 @@ class PlanarSteps:
         for i, step in enumerate(merge_vehicles(self.ctx, self.steps), 1):
             sub = Section(msg("step.title", n=i, kind=msg(f"kind.{step.kind}"),
                               bodies=names(step.bodies, "body")), level=3)
-            sub.blocks = self.step(step)
+            if all(self.ctx.fixed(b) for b in step.bodies):       # welded to the frame: said, not solved
+                sub.blocks = [msg("step.fixed", bodies=names(step.bodies, "body"), frame=body(self.ctx.frame))]
+                self.used.update(step.joints)
+            else:
+                sub.blocks = self.step(step)
             sec.blocks.append(sub)
             self.known.update(step.bodies)
         if self.level == "a" and self.ctx.symbolic and self.ctx.inst.names:
@@ -91,7 +95,7 @@ class PlanarSteps:
                 self.used.update(step.joints)
                 for b in step.bodies:
                     self.done.update(self.ctx.point_label(p, b) for p in self.ctx.model.bodies[b].points)
-                return blocks + route
+                return blocks + route + spins(self.ctx, step.bodies)
         if builder is not None and (step.source == "assur" or step.kind != "input"):
             made = builder(step, chain)
             if made is not None:
@@ -215,7 +219,7 @@ class PlanarSteps:
             if rolls(j):
                 out += self.rolling(j, group)
             else:
-                out.append(condition_msg(j, self.level))
+                out.append(condition_msg(j, self.level, self.ctx.frame))
         out += [self.read_from(b, out) for b in step.bodies]
         return out
 
@@ -404,9 +408,11 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
     given = d.accel if level == "a" else d.value
     inst, where = ctx.inst, d.where
     if d.kind == "omega":
-        sym = omega_sym(d.body, d.relative_to) if level == "v" else alpha_sym(d.body, d.relative_to)
+        vector = isinstance(given, tuple)           # a spatial rate: a vector
+        sym = (omega_sym if level == "v" else alpha_sym)(d.body, d.relative_to, vector=vector)
         unit = "rate" if level == "v" else "rate2"
-        return msg("driver.omega", sym=sym, value=Value(ctx.clean(inst.value(given, where), unit), unit))
+        value = inst.vector(given, where) if vector else inst.value(given, where)
+        return msg("driver.omega", sym=sym, value=Value(ctx.clean(value, unit), unit))
     if d.kind == "joint":
         turning = turns(ctx.model.joint(d.joint))
         unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")
@@ -424,9 +430,10 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
     return msg("driver.velocity", sym=sym, value=Value(ctx.clean(inst.vector(given, where), unit), unit))
 
 
-def condition_msg(j: Joint, level: str) -> Msg:
-    """A joint's condition in words (for groups solved together)."""
-    return msg(f"cond.{j.kind.name}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))
+def condition_msg(j: Joint, level: str, frame: str = "") -> Msg:
+    """A joint's condition in words (for groups solved together), named from its kind and
+    the bodies it joins (`kinds.kind_key`)."""
+    return msg(f"cond.{kind_key(j, frame)}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))
 
 
 def merge_vehicles(ctx: Ctx, steps: list[Step]) -> list[Step]:

@@ -15,8 +15,8 @@ from ..model.model import PointRef, Question
 from ..questions.decompose import decompose
 from .context import Ctx, alpha_sym, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Names, Section, Sym, Term, Value, msg
-from .terms import KNOWN, point_term, rotation_terms, target_term
-from .kinds import guided, pin_only
+from .terms import KNOWN, point_term, relative_name, rotation_terms, target_term
+from .kinds import guided, pin_only, rolls
 
 
 def carriers(ctx: Ctx) -> list[tuple[str, Optional[str], Optional[str]]]:
@@ -228,7 +228,8 @@ def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> l
                                         Sym("v", p, sub_key="sub.rel")], kind="coriolis"))
         target = Term(Sym(level, p), ctx.clean(got["total"], unit), *KNOWN, kind="point")
         out += [msg("composition.drag")] + _drag(ctx, level, p, moving, pivot, drag.sym)
-        out += [msg("composition.relative")] + _relative(ctx, level, ref, moving, pivot, rel.sym)
+        out += [msg("composition.relative", sym=rel.sym, rel=Sym(level, relative_name(p, body, moving)))]
+        out += _relative(ctx, level, ref, moving, pivot, rel.sym)
         out.append(Equation(target, [side], level, ref, figure=ctx.planar))   # the parts found, their sum
     return out
 
@@ -278,12 +279,19 @@ def _relative(ctx: Ctx, level: str, ref: PointRef, moving: str, pivot: Optional[
     if joint is not None and joint.at and not _apart(ctx, joint.at, p):
         return [msg("composition.pin", sym=sym, point=Name(p), joint=Name(joint.id, "joint"))]
     q = joint.at if joint is not None and joint.at else pivot
+    said: list = []
+    if joint is not None and rolls(joint) and ctx.sol.geometry(joint.id).contact is not None:
+        # rolling without slip: seen from the moving body the contact is the body's centre
+        q = ctx.contact(joint)
+        if level == "v":
+            said = [msg("composition.rolls", body=Name(body, "body"), frame=Name(moving, "body"), point=Name(q),
+                        sym=Sym("v", relative_name(q, body, moving)))]
     target = _relabel(target_term(ctx, level, p, body, True, moving), sym)
     if not _apart(ctx, q, p):
-        return [Equation(target, [[target_term(ctx, level, p, body, True, moving)]], level, ref, moving,
-                         figure=False)]
+        return said + [Equation(target, [[target_term(ctx, level, p, body, True, moving)]], level, ref, moving,
+                                figure=False)]
     side = [target_term(ctx, level, q, body, True, moving)] + rotation_terms(ctx, level, body, q, p, False, moving)
-    return [Equation(target, [side], level, ref, moving, figure=False)]
+    return said + [Equation(target, [side], level, ref, moving, figure=False)]
 
 
 def _relabel(term: Term, sym: Sym) -> Term:

@@ -6,7 +6,8 @@ from __future__ import annotations
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
-from .document import Arrow, Drawing, Figure, Inline, Name, Section, Table, Told, Value, body, joint, msg, names, point
+from .kinds import kind_key
+from .document import Arrow, Drawing, Figure, Inline, Name, Section, Table, Value, body, joint, msg, names, point
 from .order import Step
 
 
@@ -18,15 +19,14 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model, sol = ctx.model, ctx.sol
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
-    bodies = [[str(numbers[name]), msg("structure.frame", body=Name(name, "body", bare=True)) if name == ctx.frame
+    bodies = [[Name(name, "index"), msg("structure.frame", body=Name(name, "body", bare=True)) if name == ctx.frame
                else Name(name, "body", bare=True),
                [point(p) for p in b.points],
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
-    joints = [[joint(j.id), msg(f"joint.{j.kind.name}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
+    joints = [[joint(j.id), msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]
-    sec.add(Told("points", list(model.points)))
     sec.add(Table([msg("col.joint"), msg("col.type"), msg("col.bodies"), msg("col.where")], joints))
     d = sol.diagnosis
     sec.add(msg("structure.dof", n=d.n, moving=len(model.moving_bodies), rank=d.n - d.dof, dof=d.dof,

@@ -30,7 +30,7 @@ def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: boo
     """ω × QP at the velocity level; ω × (ω × QP) and α × QP at the acceleration level."""
     sp, r, seg, back = ctx.space, ctx.r(q, p), segment(q, p), segment(p, q)
     w = omega_sym(body, relative_to, vector=not ctx.planar)
-    name = segment(p, q) + (f"/{relative_to}" if relative_to else "")
+    name = segment(p, q) + (f",{body}/{relative_to}" if relative_to else "")
     if level == "v":
         value = sp.cross(ctx.omega(body, relative_to), r)
         mag = Ann("?") if unknown else Ann("M", [w, f"·{seg}"] if ctx.planar else "")
@@ -50,19 +50,21 @@ def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: boo
 
 
 def slide_terms(ctx: Ctx, level: str, frame: str, moving: str, point: str, guide: Msg,
-                tag: str, unknown: bool = True) -> list[Term]:
-    """The motion of P∈moving relative to `frame` along a guide; with Coriolis for accelerations."""
+                tag: str = "", unknown: bool = True) -> list[Term]:
+    """The motion of P∈moving relative to `frame` along a guide, v_P∈moving/frame (named with
+    both bodies, so that its sense is the written one); with Coriolis for accelerations."""
     v_rel = ctx.vel(moving, point, frame)
-    rel = Sym("v", tag, sub_key="sub.rel")
+    name = relative_name(point, moving, frame)
+    rel = Sym("v", name)
     mag = Ann("?") if unknown else Ann("M")
     if level == "v":
         return [Term(rel, ctx.clean(v_rel, "speed"), mag, Ann("para", guide), [], unknown, "slide")]
     a_rel = ctx.acc(moving, point, frame)
     w = omega_sym(frame, vector=not ctx.planar)
     coriolis = scale(2, ctx.space.cross(ctx.omega(frame), v_rel))
-    return [Term(Sym("a", tag, sub_key="sub.rel"), ctx.clean(a_rel, "accel"), mag,
+    return [Term(Sym("a", name), ctx.clean(a_rel, "accel"), mag,
                  Ann("para", guide), [], unknown, "slide"),
-            Term(Sym("a", tag, sub_key="sub.cor"), ctx.clean(coriolis, "accel"),
+            Term(Sym("a", name, sub_key="sub.cor"), ctx.clean(coriolis, "accel"),
                  Ann("M", ["2·", w, "·", rel]), Ann("perp", guide), ["2 ", w, " × ", rel], False,
                  "coriolis")]
 
@@ -74,15 +76,21 @@ def target_term(ctx: Ctx, level: str, point: str, body: str, known: bool,
     if relative_to is not None:
         value = ctx.vel(body, point, relative_to) if level == "v" else ctx.acc(body, point, relative_to)
         t.value = ctx.clean(value, UNIT[level])
-        t.sym = Sym(level, f"{t.sym.sub}/{relative_to}")
+        t.sym = Sym(level, relative_name(point, body, relative_to))
     return t
+
+
+def relative_name(point: str, body: str, relative_to: str) -> str:
+    """The subscript of the motion of `body`'s point `point` relative to `relative_to`:
+    A∈4/2, written with both bodies (never v_A/2, which reads as half of v_A)."""
+    return f"{point}∈{body}/{relative_to}"
 
 
 def contact_term(ctx: Ctx, name: str, body: str, other: str) -> Term:
     """a_J∈body − a_J∈other at a rolling contact without slip: along the common normal,
     ω_body/other × (v_J∈other − v_J^geom), with v_J^geom the velocity of the geometric contact
     point (derived where the term is used: `contacts.geometric_blocks`)."""
-    return Term(Sym("a", f"{name}∈{body}/{other}"), ctx.clean(ctx.acc(body, name, other), "accel"),
+    return Term(Sym("a", relative_name(name, body, other)), ctx.clean(ctx.acc(body, name, other), "accel"),
                 Ann("M"), Ann("para", Msg("dir.normal", {})),
                 [omega_sym(body, other), " × (", Sym("v", f"{name}∈{other}"), " − ", Sym("v", name, "geom"), ")"],
                 False, "contact")

@@ -48,6 +48,43 @@ def wheel_route(ctx: Ctx, group: list[str], known: set[str], level: str) -> Opti
     return out if len(solved) == len(group) else None
 
 
+def spins(ctx: Ctx, bodies: list[str]) -> list:
+    """The spin of each wheel of `bodies` whose radius the model gives (`notation: spin(j3)`):
+    it rolls without slipping, so its centre's speed along its plane is r φ̇ (the notes'
+    tricycle, C5-2.1: φ̇ = v₀ (L − s)/(√2 L r))."""
+    out: list = []
+    for jid, body, spin, value in spin_values(ctx):
+        if body not in bodies:
+            continue
+        j = ctx.model.joint(jid)
+        radius = ctx.model.wording.spins[jid][1]
+        out.append(msg("vehicle.spin", joint=Name(j.id, "joint"), point=Name(j.at), radius=Name(radius, "param"),
+                       spin=spin))
+        out.append(Derived(spin, [Sym("v", ctx.point_label(j.at, body), vector=False), " / ", Name(radius, "param")],
+                           value, body, "spin", not ctx.symbolic))
+    return out
+
+
+def spin_values(ctx: Ctx) -> list[tuple]:
+    """(joint, body, symbol, value) of each wheel spin the model's notation asks for: the
+    speed of the wheel's centre along its plane over its radius."""
+    from ..algebra.vectors import dot
+    from .render.names import written
+
+    out = []
+    for jid, (symbol, radius) in ctx.model.wording.spins.items():
+        j = ctx.model.joint(jid)
+        body = j.b if j.a == ctx.frame else j.a
+        if not j.at:
+            continue
+        speed = dot(ctx.vel(body, j.at), ctx.sol.geometry(j.id).along)
+        r = ctx.inst.env[radius]
+        value = ctx.inst.backend.simplify(speed / r) if ctx.symbolic else speed / r
+        w = written(symbol)
+        out.append((jid, body, Sym(w.base, w.sub, vector=False, fixed=True), ctx.value(value, "rate")))
+    return out
+
+
 def _known_speeds(ctx: Ctx, known: set[str]) -> dict[str, tuple]:
     """Velocities already known: every point of a known body (shared points by name)."""
     out = {}

@@ -38,11 +38,9 @@ def parse_vary(text: str) -> Vary:
             raise ValueError
         lo, hi = float(low), float(high)
     except ValueError:
-        raise KinematikaError("usage", f"--vary expects NAME=LOW:HIGH (as a=1:5), got {text!r}",
-                              "--vary") from None
+        raise KinematikaError("usage", "vary-form", "--vary", got=repr(text)) from None
     if not (math.isfinite(lo) and math.isfinite(hi)) or hi < lo:
-        raise KinematikaError("usage", f"--vary {name.strip()}: the interval must be finite with "
-                              f"LOW <= HIGH, got {lo:g}:{hi:g}", "--vary")
+        raise KinematikaError("usage", "vary-interval", "--vary", name=name.strip(), got=f"{lo:g}:{hi:g}")
     return Vary(name.strip(), lo, hi)
 
 
@@ -57,17 +55,16 @@ class Designs:
 
     def __post_init__(self) -> None:
         if not self.vary:
-            raise KinematikaError("usage", "name at least one parameter to vary (--vary NAME=LOW:HIGH)",
-                                  "--vary")
+            raise KinematikaError("usage", "vary-none", "--vary")
         names = [v.name for v in self.vary]
         if len(set(names)) != len(names):
-            raise KinematikaError("usage", f"a parameter is varied twice: {', '.join(names)}", "--vary")
+            raise KinematikaError("usage", "varied-twice", "--vary", names=names)
         if (self.grid is None) == (self.samples is None):
-            raise KinematikaError("usage", "give either --grid N or --samples N", "--grid")
+            raise KinematikaError("usage", "grid-or-samples", "--grid")
         if (self.grid is not None and self.grid < 1) or (self.samples is not None and self.samples < 1):
-            raise KinematikaError("usage", "--grid and --samples take a positive number", "--grid")
+            raise KinematikaError("usage", "grid-positive", "--grid")
         if self.count > MAX_DESIGNS:
-            raise KinematikaError("usage", f"{self.count} designs: at most {MAX_DESIGNS}", "--grid")
+            raise KinematikaError("usage", "designs-too-many", "--grid", count=self.count, limit=MAX_DESIGNS)
 
     @property
     def names(self) -> list[str]:

@@ -46,8 +46,7 @@ class Evaluator:
         self.metrics: list[Metric] = [parse_metric(m, self.context, files) for m in metrics]
         names = [m.name for m in self.metrics]
         if len(set(names)) != len(names) or set(names) & ({"assembles", "reason"} | set(self.varied)):
-            raise KinematikaError("usage", "each metric once, and none named as a parameter or "
-                                  "'assembles'/'reason'", "--metric")
+            raise KinematikaError("usage", "metrics-once", "--metric")
 
     @property
     def columns(self) -> list[str]:
@@ -95,10 +94,10 @@ class Evaluator:
         try:
             sweeper = Sweeper(model, s.joint)
             try:
-                result = sweeper.run(s.by, s.steps)
-            except KinematikaError as err:
+                result = sweeper.run(s.by, s.steps, through=False)   # a cycle of the input, as
+            except KinematikaError as err:                           # the batch kernel sweeps it
                 out.reason[d] = describe(err)
-                result = sweeper.run(s.by, s.steps, skip_bad=True)
+                result = sweeper.run(s.by, s.steps, skip_bad=True, through=False)
         except KinematikaError as err:
             out.assembles[d] = False
             out.reason[d] = describe(err)
@@ -135,9 +134,7 @@ def _check_parameters(model: Model, varied: list[str]) -> None:
     """Every varied name is a parameter; every other parameter has a value."""
     for name in varied:
         if name not in model.parameters:
-            known = ", ".join(model.parameters) or "none"
-            raise KinematikaError("usage", f"unknown parameter {name!r} (parameters: {known})", "--vary")
+            raise KinematikaError("usage", "unknown-parameter", "--vary", name=name, parameters=list(model.parameters))
     symbols = [n for n, p in model.parameters.items() if p.value is None and n not in varied]
     if symbols:
-        raise KinematikaError("usage", f"a study needs numbers: give a value to {', '.join(symbols)} "
-                              "or vary it", "--vary")
+        raise KinematikaError("usage", "study-needs-numbers", "--vary", names=symbols)

@@ -34,6 +34,7 @@ from ..errors import KinematikaError
 from ..model.model import Model, PointRef
 from ..structure.assur import Group
 from .cycle import Cycle
+from .fourbar import grashof_of
 
 CLASSES = ("crank-rocker", "double-crank", "double-rocker", "rocker-crank", "change-point", "non-grashof")
 AT_INPUT = {"angle": "body", "omega": "body", "alpha": "body",
@@ -106,8 +107,7 @@ def parse_metric(text: str, ctx: Context, files: Optional[dict[str, str]] = None
         ref = _point(ctx, target, where)
         points = ctx.model.bodies[ref.body].points
         if len(points) < 2:
-            raise KinematikaError("usage", f"motion_error: body {ref.body!r} needs two points to have "
-                                  "an orientation", where)
+            raise KinematikaError("usage", "motion-error-two-points", where, body=ref.body)
         poses = read_table(arg.strip(), files, where, 3)
         return Metric(text, lambda c: motion_error(c, ref, points, poses), data=poses)
     if kind == "structural_error" and colon and arg:
@@ -117,19 +117,13 @@ def parse_metric(text: str, ctx: Context, files: Optional[dict[str, str]] = None
         return Metric(text, lambda c: structural_error(c, body, table), data=table)
     if kind in AT_INPUT and colon and arg:
         return _at_input(text, kind, ctx, target, arg, where)
-    raise KinematikaError("usage", f"unknown metric {text!r}; metrics: grashof, transmission, "
-                          "dead_points, time_ratio[:BODY], range:BODY, peak_omega:BODY, peak_alpha:BODY, "
-                          "peak_speed:POINT, peak_accel:POINT, path_error:POINT=FILE.csv, "
-                          "motion_error:POINT=FILE.csv, "
-                          "structural_error:BODY=FILE.csv, angle|omega|alpha:BODY=X, "
-                          "speed|accel|x|y:POINT=X", "--metric")
+    raise KinematikaError("usage", "metric-unknown", "--metric", metric=text)
 
 
 # names ---------------------------------------------------------------------------------------
 def _body(ctx: Context, name: str, where: str) -> str:
     if name not in ctx.model.bodies:
-        raise KinematikaError("usage", f"unknown body {name!r} (bodies: {', '.join(ctx.model.bodies)})",
-                              where)
+        raise KinematikaError("usage", "unknown-body", where, body=name, bodies=list(ctx.model.bodies))
     return name
 
 
@@ -137,7 +131,7 @@ def _point(ctx: Context, name: str, where: str) -> PointRef:
     try:
         return ctx.model.resolve_point(name, where)
     except KinematikaError as err:
-        raise KinematikaError("usage", err.message, where) from None
+        raise KinematikaError("usage", err.said, where) from None
 
 
 # linkages ------------------------------------------------------------------------------------
@@ -145,14 +139,19 @@ def four_bar_roles(ctx: Context, where: str = "--metric grashof") -> dict[str, s
     """The point names O2, A, B, O4 of a four-bar driven at its crank (structure only)."""
     roles = _linkage(ctx)
     if roles is None or roles["kind"] != "four-bar":
-        raise KinematikaError("usage", "grashof needs a model whose moving loop is a four-bar driven "
-                              "at its crank", where)
+        raise KinematikaError("usage", "grashof-four-bar", where)
     return roles
 
 
 def _linkage(ctx: Context) -> Optional[dict[str, Any]]:
     """Four-bar (input crank + RRR closing on the frame) or slider-crank (+ RRP on the frame)."""
-    groups, model = ctx.groups, ctx.model
+    return linkage_roles(ctx.model, ctx.groups)
+
+
+def linkage_roles(model: Model, groups: Optional[list[Group]]) -> Optional[dict[str, Any]]:
+    """The roles of a four-bar (an input crank and an RRR dyad closing on the frame) or a
+    slider-crank (an RRP dyad): the points O2, A, B (and O4), the crank, coupler and output
+    bodies, `kind`; None for any other mechanism."""
     if not groups or len(groups) != 2 or groups[0].kind != "input":
         return None
     first, dyad = groups
@@ -171,29 +170,20 @@ def _linkage(ctx: Context) -> Optional[dict[str, Any]]:
 def _linkage_output(ctx: Context, where: str) -> str:
     roles = _linkage(ctx)
     if roles is None:
-        raise KinematikaError("usage", "time_ratio without a body needs a four-bar or slider-crank; "
-                              "name the output (time_ratio:BODY)", where)
+        raise KinematikaError("usage", "time-ratio-linkage", where)
     return roles["output"]
 
 
 def grashof(c: Cycle, roles: dict[str, Any]) -> np.ndarray:
     """Grashof's class from the drawn lengths (s + l against p + q, then the shortest link)."""
     o2, a, b, o4 = (c.drawn(roles[k]) for k in ("O2", "A", "B", "O4"))
-    lengths = np.stack([np.abs(o4 - o2), np.abs(a - o2), np.abs(b - a), np.abs(o4 - b)])
-    s, l = lengths.min(axis=0), lengths.max(axis=0)
-    gap = (s + l) - (lengths.sum(axis=0) - s - l)
-    by_shortest = np.array(["double-crank", "crank-rocker", "double-rocker", "rocker-crank"], dtype=object)
-    out = by_shortest[np.argmin(lengths, axis=0)]
-    out = np.where(gap > 1e-9 * l, "non-grashof", out)
-    out = np.where(np.abs(gap) <= 1e-9 * l, "change-point", out)
-    return np.where(np.isfinite(gap), out, np.array(None, dtype=object))
+    return grashof_of(np.stack([np.abs(o4 - o2), np.abs(a - o2), np.abs(b - a), np.abs(o4 - b)]))
 
 
 def _transmission(ctx: Context, where: str) -> Callable[[Cycle], np.ndarray]:
     roles = _linkage(ctx)
     if roles is None:
-        raise KinematikaError("usage", "transmission needs a four-bar or slider-crank driven at its "
-                              "crank", where)
+        raise KinematikaError("usage", "transmission-linkage", where)
     coupler = roles["coupler"]
     a_ref, b_ref = PointRef(roles["A"], coupler), PointRef(roles["B"], coupler)
     if roles["kind"] == "four-bar":
@@ -229,16 +219,20 @@ def _peak(kind: str, ctx: Context, target: str, where: str) -> Callable[[Cycle],
 
 def path_error(path: np.ndarray, targets: np.ndarray) -> np.ndarray:
     """The largest distance from a target to the polyline through the path's rows (D, N)."""
+    return path_distances(path, targets).max(axis=1)
+
+
+def path_distances(path: np.ndarray, targets: np.ndarray) -> np.ndarray:
+    """Each target's distance to the polyline through the path's rows (D, N): (D, K)."""
     start, end = path[:, :-1], path[:, 1:]
     seg = end - start
     length2 = (seg * np.conj(seg)).real
-    worst = np.zeros(len(path))
-    for t in targets:
+    out = np.zeros((len(path), len(targets)))
+    for i, t in enumerate(targets):
         rel = t - start
         along = np.clip(np.where(length2 > 0, (rel * np.conj(seg)).real / length2, 0.0), 0.0, 1.0)
-        nearest = np.nanmin(np.abs(rel - along * seg), axis=1)
-        worst = np.maximum(worst, nearest)
-    return worst
+        out[:, i] = np.nanmin(np.abs(rel - along * seg), axis=1)
+    return out
 
 
 def motion_error(c: Cycle, ref: PointRef, points: list[str], poses: np.ndarray) -> np.ndarray:
@@ -246,16 +240,20 @@ def motion_error(c: Cycle, ref: PointRef, points: list[str], poses: np.ndarray) 
     over the cycle: √(|ΔP|² + (ρ Δφ)²), φ the direction of the body's line from its first point to
     its second, ρ the body's size (its largest distance between two points): an angle error
     counts as the displacement it gives the body's far end."""
+    return pose_distances(c, ref, points, poses).max(axis=1)
+
+
+def pose_distances(c: Cycle, ref: PointRef, points: list[str], poses: np.ndarray) -> np.ndarray:
+    """Each target pose's distance to the nearest pose over the cycle (as `motion_error`): (D, K)."""
     pos = c.motion(ref)[0]
     drawn = [c.drawn(p) for p in points]
     phi = np.angle(drawn[1] - drawn[0])[:, None] + np.radians(c.angle(ref.body))
     size = np.max([np.abs(p - q) for p in drawn for q in drawn], axis=0)[:, None]
-    worst = np.zeros(len(pos))
-    for x, y, angle in poses:
+    out = np.zeros((len(pos), len(poses)))
+    for i, (x, y, angle) in enumerate(poses):
         turn = np.angle(np.exp(1j * (phi - math.radians(angle))))
-        gap = np.sqrt(np.abs(pos - complex(x, y)) ** 2 + (size * turn) ** 2)
-        worst = np.maximum(worst, np.nanmin(gap, axis=1))
-    return worst
+        out[:, i] = np.nanmin(np.sqrt(np.abs(pos - complex(x, y)) ** 2 + (size * turn) ** 2), axis=1)
+    return out
 
 
 def time_ratio(c: Cycle, body: str, refs: list[PointRef]) -> np.ndarray:
@@ -308,8 +306,12 @@ _QUARTIC = np.linalg.inv(np.vander(np.arange(-2.0, 3.0), 5, increasing=True))
 def structural_error(c: Cycle, body: str, table: np.ndarray) -> np.ndarray:
     """The largest |rotation(x) − target| over the table's (x, target) rows (degrees), the
     rotation interpolated linearly between the sweep's rows."""
-    got = _interpolate(c.coordinate, c.angle(body), table[:, 0])
-    return np.max(np.abs(got - table[None, :, 1]), axis=1)
+    return rotation_errors(c, body, table).max(axis=1)
+
+
+def rotation_errors(c: Cycle, body: str, table: np.ndarray) -> np.ndarray:
+    """Each row's |rotation(x) − target| (degrees; as `structural_error`): (D, K)."""
+    return np.abs(_interpolate(c.coordinate, c.angle(body), table[:, 0]) - table[None, :, 1])
 
 
 def _interpolate(coordinate: np.ndarray, values: np.ndarray, x: np.ndarray) -> np.ndarray:
@@ -328,8 +330,8 @@ def _at_input(text: str, kind: str, ctx: Context, target: str, arg: str, where: 
     try:
         x = float(arg)
     except ValueError:
-        raise KinematikaError("usage", f"{kind}:{target}=X takes the input's position X (a number, "
-                              f"{ctx.unit} from the drawn position), got {arg!r}", where) from None
+        raise KinematikaError("usage", "metric-at-input", where, metric=f"{kind}:{target}", unit=ctx.unit,
+                              got=repr(arg)) from None
     _inside(ctx, np.array([x]), where)
     if AT_INPUT[kind] == "body":
         body = _body(ctx, target, where)
@@ -349,21 +351,19 @@ def _at_input(text: str, kind: str, ctx: Context, target: str, arg: str, where: 
 def _inside(ctx: Context, x: np.ndarray, where: str) -> None:
     low, high = sorted((ctx.coordinate[0], ctx.coordinate[-1]))
     if (x < low - 1e-9).any() or (x > high + 1e-9).any():
-        raise KinematikaError("usage", f"the input must lie in the sweep's range {low:g} to {high:g} "
-                              f"{ctx.unit}", where)
+        raise KinematikaError("usage", "input-outside-sweep", where, low=float(low), high=float(high), unit=ctx.unit)
 
 
 def _full_turn(ctx: Context, where: str) -> None:
     if ctx.unit != "deg" or abs(abs(ctx.coordinate[-1]) - 360.0) > 1e-9:
-        raise KinematikaError("usage", "time_ratio needs the sweep of a full turn of the crank "
-                              "(by: 360)", where)
+        raise KinematikaError("usage", "time-ratio-full-turn", where)
 
 
 # target files --------------------------------------------------------------------------------
 def read_table(name: str, files: dict[str, str], where: str, columns: int) -> np.ndarray:
     """The numeric rows of a CSV file's text (a header line is skipped), `columns` numbers each."""
     if name not in files:
-        raise KinematikaError("usage", f"{name}: a target file is a .csv file", where)
+        raise KinematikaError("usage", "target-csv", where, name=name)
     rows: list[list[float]] = []
     for i, row in enumerate(csv.reader(io.StringIO(files[name]))):
         cells = [c.strip() for c in row if c.strip()]
@@ -374,14 +374,12 @@ def read_table(name: str, files: dict[str, str], where: str, columns: int) -> np
         except ValueError:
             if not rows and i == 0:
                 continue                                # a header
-            raise KinematikaError("usage", f"{name}, line {i + 1}: expected numbers, got {row!r}",
-                                  where) from None
+            raise KinematikaError("usage", "table-not-numbers", where, name=name, line=i + 1, got=repr(row)) from None
         if len(numbers) < columns or not all(map(math.isfinite, numbers)):
-            raise KinematikaError("usage", f"{name}, line {i + 1}: expected {columns} finite numbers",
-                                  where)
+            raise KinematikaError("usage", "table-columns", where, name=name, line=i + 1, columns=columns)
         rows.append(numbers[:columns])
     if not rows:
-        raise KinematikaError("usage", f"{name} holds no rows of numbers", where)
+        raise KinematikaError("usage", "table-empty", where, name=name)
     return np.array(rows, dtype=float)
 
 

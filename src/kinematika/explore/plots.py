@@ -8,7 +8,7 @@ from typing import Any, Iterable, Optional
 
 import numpy as np
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, said_of
 
 GREY = "#c8c8c8"
 
@@ -26,7 +26,7 @@ def _save(fig: Any, path: Path) -> None:
     try:
         fig.savefig(path, bbox_inches="tight")
     except ValueError as err:                     # a format matplotlib cannot write
-        raise KinematikaError("output", f"cannot write {path}: {err}", str(path)) from None
+        raise KinematikaError("output", "cannot-write", str(path), path=str(path), reason=said_of(err)) from None
     finally:
         import matplotlib.pyplot as plt
 
@@ -35,8 +35,7 @@ def _save(fig: Any, path: Path) -> None:
 
 def _column(table: Any, name: str, where: str) -> Any:
     if name not in table.columns:
-        raise KinematikaError("usage", f"the study has no column {name!r} (columns: "
-                              f"{', '.join(map(str, table.columns))})", where)
+        raise KinematikaError("usage", "study-no-column", where, name=name, columns=list(map(str, table.columns)))
     return table[name]
 
 

@@ -23,7 +23,7 @@ from typing import Any, Callable, Iterable, Optional
 
 import numpy as np
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said, reason
 from ..memory import arrays_on_heap
 from .designs import Designs, Vary
 from .evaluate import Evaluator, Sweep
@@ -139,8 +139,7 @@ def _in_processes(study: Study, pending: list[int], done: Callable[[int, Any], N
                     done(running.pop(future), future.result())
                     running.update({pool.submit(run_chunk, study, i): i for i in _take(todo, 1)})
         except BrokenProcessPool:
-            raise KinematikaError("limit", "a worker process of the study ended abruptly (out of memory?): "
-                                  "try fewer --workers or a smaller --chunk", "--workers") from None
+            raise KinematikaError("limit", "study-worker-died", "--workers") from None
         except BaseException:
             for future in running:
                 future.cancel()
@@ -151,13 +150,13 @@ def _on_scheduler(study: Study, pending: list[int], done: Callable[[int, Any], N
     """The chunks on a Dask cluster: `scheduler` is its address or a Client."""
     from ..extras import need
 
-    distributed = need("dask.distributed", "a study on a Dask cluster", "--scheduler")
+    distributed = need("dask.distributed", Said("study-on-dask"), "--scheduler")
     if isinstance(scheduler, str):
         try:
             client = distributed.Client(scheduler, timeout="20s")
         except OSError as err:
-            raise KinematikaError("usage", f"cannot reach the Dask scheduler at {scheduler}: {err}",
-                                  "--scheduler") from None
+            raise KinematikaError("usage", "dask-unreachable", "--scheduler", scheduler=scheduler,
+                                  reason=reason(err)) from None
     else:
         client = scheduler
     try:
@@ -210,16 +209,13 @@ class Parts:
         leaves nothing."""
         if self.folder.exists():
             if not resume:
-                raise KinematikaError("usage", f"{self.folder} holds an interrupted study: add --resume "
-                                      "to continue it, or delete that folder to start again", "--resume")
+                raise KinematikaError("usage", "study-interrupted", "--resume", folder=str(self.folder))
             try:
                 signature = json.loads(self.manifest.read_text())["signature"]
             except (OSError, ValueError, KeyError):
                 signature = None
             if signature != self.study.signature:
-                raise KinematikaError("usage", f"{self.folder} holds a different study (another model, "
-                                      "parameters, designs or metrics): delete it to start again",
-                                      "--resume")
+                raise KinematikaError("usage", "study-different", "--resume", folder=str(self.folder))
             return self.written()
         return set()
 
@@ -278,7 +274,7 @@ def write_study(study: Study, output: Path, resume: bool = False, scheduler: Any
     an error keeps the chunks it finished and its error says how to resume; one that
     finished none leaves no folder behind."""
     if output.suffix.lower() not in (".parquet", ".csv"):
-        raise KinematikaError("usage", f"the output is a .parquet or .csv file, got {output.name}", "-o")
+        raise KinematikaError("usage", "study-output", "-o", name=output.name)
     parts = Parts(output, study)
     finished = parts.open(resume)
     count = sum(np.subtract(*study.bounds(i)[::-1]) for i in finished)
@@ -295,16 +291,16 @@ def write_study(study: Study, output: Path, resume: bool = False, scheduler: Any
     try:
         compute(study, [i for i in range(study.chunks) if i not in finished], done, scheduler, workers)
     except KinematikaError as err:
-        raise KinematikaError(err.kind, err.message + resume_note(parts), err.where) from None
+        raise KinematikaError(err.kind, "study-stopped", err.where, problem=err.said, note=resume_note(parts)) from None
     parts.join()
 
 
-def resume_note(parts: Parts) -> str:
+def resume_note(parts: Parts) -> Said:
     """What an interrupted study left: nothing, or the finished designs and how to go on."""
     if not parts.folder.exists():
-        return ""
+        return Said("nothing")
     kept = sum(np.subtract(*parts.study.bounds(i)[::-1]) for i in parts.written())
-    return f"; {kept} designs are kept in {parts.folder.name}: run again with --resume to go on"
+    return Said("study-kept", kept=int(kept), folder=parts.folder.name)
 
 
 def collect(study: Study, scheduler: Any = None, workers: Optional[int] = None,
@@ -364,14 +360,14 @@ def _model_text(source: Any) -> tuple[str, str, Path]:
         try:
             text = path.read_text(encoding="utf-8")
         except OSError as err:
-            raise KinematikaError("syntax", f"cannot read {path}: {err.strerror or err}", str(path)) from None
+            raise KinematikaError("syntax", "cannot-read", str(path), path=str(path), reason=reason(err)) from None
         fmt = {".toml": "toml", ".json": "json"}.get(path.suffix.lower(), "yaml")
         return text, fmt, path.parent
     if isinstance(source, str):
         return source, "yaml", Path(".")
     if isinstance(source, dict):
         return json.dumps(source), "json", Path(".")
-    raise KinematikaError("usage", "a study needs a model file or a model's text", "model")
+    raise KinematikaError("usage", "study-needs-model", "model")
 
 
 def _target_files(metrics: tuple[str, ...], base: Path, given: dict[str, str]) -> tuple[tuple[str, str], ...]:
@@ -387,6 +383,5 @@ def _target_files(metrics: tuple[str, ...], base: Path, given: dict[str, str]) -
             try:
                 out[name] = path.read_text(encoding="utf-8")
             except OSError as err:
-                raise KinematikaError("usage", f"cannot read {name}: {err.strerror or err}",
-                                      f"--metric {m}") from None
+                raise KinematikaError("usage", "cannot-read", f"--metric {m}", path=name, reason=reason(err)) from None
     return tuple(sorted(out.items()))

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping
 from importlib import import_module
 
-from .base import AXES, JointGeometry, JointKind, Rows, rounding_hint
+from .base import AXES, Holonomic, JointGeometry, JointKind, Rows, rounding_hint
 
 MODULES = {                        # the kind's name in model files -> its module
     "revolute": "revolute",
@@ -52,7 +52,7 @@ class Registry(Mapping):
 
 KINDS: Mapping[str, JointKind] = Registry()
 
-__all__ = ["AXES", "KINDS", "MODULES", "JointGeometry", "JointKind", "Rows", "kind", "rounding_hint"]
+__all__ = ["AXES", "KINDS", "MODULES", "Holonomic", "JointGeometry", "JointKind", "Rows", "kind", "rounding_hint"]
 
 
 def kind(name: str) -> JointKind:

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, ClassVar, Optional
 
 from ..algebra.vectors import dot, sub
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Names, Num, Said
 from . import positions
 
 AXES = "xyz"
@@ -52,7 +52,22 @@ class JointGeometry:
     roller: float = 0.0                     # a cam follower's roller radius (drawn about `at`)
 
 
-Rows = list[tuple[Any, str]]
+Rows = list[tuple[Any, Said]]          # each condition and its message (errors' catalogue)
+
+
+@dataclass
+class Holonomic:
+    """The part of a joint's condition that is on positions alone, which a motion followed in
+    time (`simulate`) keeps its poses on by projection.
+
+    `values(q, 0.0)` is the residual at the poses `q` (zero on the condition), with the
+    signature of `JointKind.residual`'s functions (whose `aux` and `key`, when they carry them,
+    are kept); `weights(q)` says how the rate of each value is made of the joint's engine rows
+    (one list of weights per value), so that the Jacobian of the values is those weights times
+    the engine's velocity matrix; None: the values are the rows themselves, one for one."""
+
+    values: Callable[[Any, float], list]
+    weights: Optional[Callable[[Any], list]] = None
 
 
 class JointKind:
@@ -76,6 +91,9 @@ class JointKind:
     pitch: ClassVar[bool] = False           # its circles are pitch circles (gears: drawn dash-dot)
     knife_edge: ClassVar[bool] = False      # the point `at` of b moves only along `along`, fixed in b
                                             # (a vehicle's wheel: no slip sideways)
+    velocity_only: ClassVar[tuple[int, ...]] = ()   # the dimensions in which its condition is on
+                                            # velocities only (non-holonomic: a motion with it
+                                            # is followed in time, `simulate`, not swept)
     along_in: ClassVar[str] = "a"           # the body `along` is fixed in
     centre: ClassVar[str] = ""              # where it puts the relative instant centre of its two
                                             # bodies by itself: "pin" (at `at`), "contact" (the
@@ -121,10 +139,14 @@ class JointKind:
     def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Callable[[Any, float], list]:
         """The condition itself, for sweeps (`joints.positions`): a function of a pose and the
         increment whose rows are the integrals of `rows`, row for row."""
-        spatial = " in 3D" if inst.space.dim == 3 else ""
-        raise KinematikaError("schema", f"a sweep cannot follow a {self.name} joint{spatial}: its "
-                              "condition is on velocities only, so the positions depend on the path "
-                              "taken", geo.joint.where)
+        raise KinematikaError("schema", "sweep-velocity-only", geo.joint.where, kind=self.name, dim=inst.space.dim,
+                              in_time=str(inst.space.dim in self.velocity_only).lower())
+
+    def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
+        """The condition's part on positions (`Holonomic`), for a motion integrated in time: the
+        whole condition (`residual`, row for row the engine's) unless the kind is constrained
+        on velocities only (a knife edge, a disc rolling on a plane), which says what is left."""
+        return Holonomic(self.residual(inst, geo, ref))
 
     def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Callable[[Any, float], list]:
         """The position form of a driver of the joint's rate: the coordinate's change from
@@ -150,25 +172,23 @@ class JointKind:
         """The joint's keys for this kind in a model of `dim` dimensions: its model exists,
         the keys it needs are given and no other (a `schema` error naming the joint)."""
         if dim not in self.dimensions:
-            model = "3D" if dim == 2 else "planar"
-            raise KinematikaError("schema", f"a {self.name} joint belongs to a {model} model", where)
+            raise KinematikaError("schema", "joint-other-dimension", where, kind=self.name, dim=dim)
         for key, need in self.fields.items():
             if given.get(key) is None and (need == "required" or (need == "required in 3D" and dim == 3)):
-                raise KinematikaError("schema", f"a {self.name} joint needs `{key}`", where)
+                raise KinematikaError("schema", "joint-needs-key", where, kind=self.name, key=key)
         for key, value in given.items():
             wanted = self.fields.get(key)
             allowed = wanted in ("required", "optional") or (wanted is not None and dim == 3)
             if value is not None and not allowed:
                 if key == "internal":
-                    owners = " and ".join(sorted(k.name for k in kinds() if "internal" in k.fields))
-                    raise KinematikaError("schema", f"`internal` belongs to {owners} joints", where)
-                planar = " in a planar model (rotations are about z)" if key == "axis" and dim == 2 else ""
-                raise KinematikaError("schema", f"a {self.name} joint has no `{key}`{planar}", where)
+                    owners = Names(sorted(k.name for k in kinds() if "internal" in k.fields), joined="and")
+                    raise KinematikaError("schema", "internal-owners", where, owners=owners)
+                raise KinematikaError("schema", "joint-no-key", where, kind=self.name, key=key,
+                                      planar=str(key == "axis" and dim == 2).lower())
 
     def no_rate(self, where: str) -> KinematikaError:
         """The error for a driver of this kind's rate, which it has not (`coordinate` None)."""
-        return KinematikaError("schema", f"a {self.name} joint has no rate to drive; drive a "
-                               "body's omega or a point's velocity", where)
+        return KinematikaError("schema", "joint-no-rate", where, kind=self.name)
 
     # drawn -----------------------------------------------------------------------------------
     def symbol(self, view: Any, ctx: Any) -> list:
@@ -208,13 +228,13 @@ def kinds() -> list[JointKind]:
     return list(KINDS.values())
 
 
-def rounding_hint(gap: float, scale: float, point: str) -> str:
+def rounding_hint(gap: float, scale: float, point: "str | Said") -> Said:
     """For a gap small next to the model (coordinates rounded by hand, most likely): the
-    tolerance, and how to avoid the rounding."""
+    tolerance, and how to avoid the rounding (`point`: a point's name, or the contact as
+    a message); else nothing."""
     if abs(gap) > 1e-3 * scale:
-        return ""
-    return (f", more than the tolerance {1e-6 * scale:.2g} (1e-6 of the model's size): write "
-            f"{point} by construction, or with more digits")
+        return Said("nothing")
+    return Said("rounding-hint", tolerance=Num(1e-6 * scale, ".2g"), point=point)
 
 
 def off_line(inst: Any, joint: Any, geo: JointGeometry) -> None:
@@ -226,6 +246,5 @@ def off_line(inst: Any, joint: Any, geo: JointGeometry) -> None:
     start = inst.points[along.start]
     gap = inst.num(dot(sub(geo.at, start), geo.perps[0]))
     if abs(gap) > 1e-6 * inst.scale:
-        raise KinematikaError("geometry", f"slot point {joint.at!r} is off the line "
-                              f"{along.start}{along.end}: gap {gap:.6g}"
-                              + rounding_hint(gap, inst.scale, joint.at), joint.where)
+        raise KinematikaError("geometry", "slot-off-line", joint.where, point=joint.at, line=f"{along.start}{along.end}",
+                              gap=Num(gap, ".6g"), hint=rounding_hint(gap, inst.scale, joint.at))

@@ -31,7 +31,7 @@ class Cam(Contact):
 
     name = "cam"
     summary = "the first body's cam drives the second, its follower (knife edge or roller at `at`, or flat face)"
-    keeps = "the follower {b} keeps touching the cam {a}"
+    keeps = "row-cam-touching"
 
     def conditions(self, dim: int) -> int:
         """One: the follower keeps touching the cam (a higher pair, planar only)."""
@@ -44,19 +44,16 @@ class Cam(Contact):
         or an edge without `at` is a schema error naming the joint."""
         cams = [s for s in inst.shapes[joint.a] if isinstance(s, CamShape)]
         if not cams:
-            raise KinematikaError("schema", f"a cam joint's first body carries the cam: give {joint.a!r} a "
-                                  "`cam:` shape", joint.where)
+            raise KinematikaError("schema", "cam-joint-first-body", joint.where, body=joint.a)
         cam = cams[0]
         contact = cam.design.follower.contact
         if contact.touches_with_face:
             faces = [s for s in inst.shapes[joint.b] if isinstance(s, Line)]
             if not faces:
-                raise KinematikaError("schema", f"a flat-faced follower touches with its face: give {joint.b!r} "
-                                      "a `line` (the face)", joint.where)
+                raise KinematikaError("schema", "cam-joint-face", joint.where, body=joint.b)
             return [cam.profile], faces
         if joint.at is None:
-            what = "roller's centre" if contact.radius > 0 else "knife edge"
-            raise KinematikaError("schema", f"a cam joint needs `at`: the follower's {what}", joint.where)
+            raise KinematikaError("schema", "cam-joint-at", joint.where, roller=str(contact.radius > 0).lower())
         geo.roller = float(contact.radius)
         curve = cam.pitch if contact.radius > 0 else cam.profile
         return [curve], outlines(inst, joint, joint.b, joint.at)

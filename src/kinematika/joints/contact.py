@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from ..errors import Said
 from . import symbols
 from .base import JointGeometry, JointKind, Rows
 from .touching import Follow, find_touch, outlines, touch_row
@@ -29,19 +30,19 @@ class Contact(JointKind):
     centre_line = "normal"                 # the common normal at the contact
     fields = {"at": "optional"}
     point_on = "b"
-    keeps = "{b} keeps touching {a}"
+    keeps = "row-touching"          # the message of its condition (errors' catalogue)
     """The condition's words (a row's label), with the bodies' names."""
 
     def conditions(self, dim: int) -> int:
         """One: the outlines keep touching; sliding along the tangent is free."""
         return 1
 
-    def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
+    def prepare(self, inst: Any, joint: Any, near: Any = None, touching: bool = True) -> JointGeometry:
         """Where the two outlines touch at this instant: the contact J, common normal n and
         radii of curvature (`geo.contact`), the branch nearest `near` when given."""
         geo = super().prepare(inst, joint)
         first, second = self.outlines(inst, joint, geo)
-        geo.contact = find_touch(inst, joint, first, second, near)
+        geo.contact = find_touch(inst, joint, first, second, near, touching)
         return geo
 
     def outlines(self, inst: Any, joint: Any, geo: JointGeometry) -> tuple[list, list]:
@@ -50,14 +51,16 @@ class Contact(JointKind):
         return outlines(inst, joint, joint.a), outlines(inst, joint, joint.b, joint.at)
 
     def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
-        """Found anew at the pose, near the sweep's last contact on the curve."""
-        return self.prepare(inst, geo.joint, hint)
+        """Found anew at the pose, near the sweep's last contact on the curve (whether the
+        outlines touch there is for the caller to judge: a sweep's residual, a simulation's
+        projection)."""
+        return self.prepare(inst, geo.joint, hint, touching=False)
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
         """(v_Jb − v_Ja)·n = 0: no approach along the common normal (at the acceleration level
         with the curvature terms, `touching.touch_row`)."""
         j = geo.joint
-        return [(touch_row(lv, j.a, j.b, geo.contact), self.keeps.format(a=j.a, b=j.b))]
+        return [(touch_row(lv, j.a, j.b, geo.contact), Said(self.keeps, a=j.a, b=j.b))]
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """The contact point (a still figure only)."""

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from ..shapes import Circle, Curve
 from . import symbols
 from .derivatives import sliding
@@ -45,7 +45,7 @@ class CurvedSlot(JointKind):
         rotation are free."""
         return 1
 
-    def prepare(self, inst: Any, joint: Any, near: Optional[float] = None) -> JointGeometry:
+    def prepare(self, inst: Any, joint: Any, near: Any = None, touching: bool = True) -> JointGeometry:
         """The pin `at` on the first body's circle or curve at this instant: the contact (normal
         n, radius of curvature ρ) and `along`, the slot's tangent t = n turned a quarter turn (a
         circle's normal points outward, a curve's is its own). A first body without a circle or
@@ -53,22 +53,23 @@ class CurvedSlot(JointKind):
         geo = super().prepare(inst, joint)
         curves = [s for s in inst.shapes[joint.a] if isinstance(s, (Circle, Curve))]
         if not curves:
-            raise KinematikaError("schema", f"a curved slot is cut along a circle or curve of {joint.a!r}: "
-                                  "give that body one", joint.where)
-        geo.contact = find_touch(inst, joint, curves, outlines(inst, joint, joint.b, joint.at), near)
+            raise KinematikaError("schema", "curved-slot-outline", joint.where, body=joint.a)
+        geo.contact = find_touch(inst, joint, curves, outlines(inst, joint, joint.b, joint.at), near, touching)
         n = geo.contact.normal               # a circle's: outward; a curve's: its own normal
         geo.along = (-n[1], n[0]) if isinstance(geo.contact.outline_a, Circle) else (n[1], -n[0])
         return geo
 
     def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
-        """Found anew at the pose, near the sweep's last contact on the curve."""
-        return self.prepare(inst, geo.joint, hint)
+        """Found anew at the pose, near the sweep's last contact on the curve (whether the
+        outlines touch there is for the caller to judge: a sweep's residual, a simulation's
+        projection)."""
+        return self.prepare(inst, geo.joint, hint, touching=False)
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
         """v_rel·n = 0 at the pin: its relative velocity is along the slot; at the acceleration
         level with the normal part v_rel²/ρ and Coriolis (`touching.touch_row`)."""
         j = geo.joint
-        return [(touch_row(lv, j.a, j.b, geo.contact), f"{j.at}@{j.b} stays in the curved slot of {j.a}")]
+        return [(touch_row(lv, j.a, j.b, geo.contact), Said("row-curved-slot", point=f"{j.at}@{j.b}", body=j.a))]
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """The pin of the second body (the slot's curve is drawn as the first body's shape)."""

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from . import symbols
 from .base import JointGeometry, JointKind, Rows
 from .derivatives import sliding, turning
@@ -42,9 +42,9 @@ class Cylindrical(JointKind):
         """(ω_b − ω_a)·nₖ = 0 and v_rel·nₖ = 0 at `at`, for the axis's two normals nₖ (four
         rows)."""
         j = geo.joint
-        rows = [(turning(lv, j.a, j.b, p), f"relative rotation only about the axis ({k + 1})")
+        rows = [(turning(lv, j.a, j.b, p), Said("row-turning-axis", n=k + 1))
                 for k, p in enumerate(geo.perps)]
-        rows += [(sliding(lv, j.a, j.b, geo.at, p), f"relative sliding only along the axis ({k + 1})")
+        rows += [(sliding(lv, j.a, j.b, geo.at, p), Said("row-sliding-axis", n=k + 1))
                  for k, p in enumerate(geo.perps)]
         return rows
 
@@ -61,9 +61,7 @@ class Cylindrical(JointKind):
         """The error for a joint-rate driver: a cylindrical joint has two rates, so the user is
         told to drive a body's omega relative to the other body and a point's velocity along the
         axis."""
-        return KinematikaError("schema", "a cylindrical joint has two rates (turning and sliding): drive "
-                               "the body's omega relative_to the other body and a point's velocity along "
-                               "the axis", where)
+        return KinematikaError("schema", "cylindrical-two-rates", where)
 
     def add(self, m: Any, a: str, b: str, at: str, axis: Any, id: Optional[str] = None) -> str:
         """`b` turns about and slides along `axis` through point `at`, fixed in `a`."""

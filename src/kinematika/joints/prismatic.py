@@ -14,6 +14,7 @@ from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import same_rotation, sliding
 from .positions import across
+from ..errors import Said
 
 
 class Prismatic(JointKind):
@@ -49,9 +50,9 @@ class Prismatic(JointKind):
         term 2 v_rel·(ω_a × n)."""
         j = geo.joint
         q = geo.at if geo.at is not None else lv.ref
-        rows = [(c, "no relative rotation" + (f" ({AXES[i]})" if lv.space.dim == 3 else ""))
+        rows = [(c, Said("row-no-rotation-axis", axis=AXES[i]) if lv.space.dim == 3 else Said("row-no-rotation"))
                 for i, c in enumerate(same_rotation(lv, j.a, j.b))]
-        rows += [(sliding(lv, j.a, j.b, q, n), f"no relative motion across the guide ({k + 1})")
+        rows += [(sliding(lv, j.a, j.b, q, n), Said("row-across-guide", n=k + 1))
                  for k, n in enumerate(geo.perps)]
         return rows
 

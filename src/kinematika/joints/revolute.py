@@ -16,6 +16,7 @@ from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident, turning
 from .positions import axis_kept, coincide
+from ..errors import Said
 
 
 class Revolute(JointKind):
@@ -49,9 +50,9 @@ class Revolute(JointKind):
         """v_P(b) − v_P(a) = 0 at `at`, one row per component, and in 3D (ω_b − ω_a)·nₖ = 0 for
         the axis's two normals."""
         j = geo.joint
-        rows = [(c, f"{j.at}@{j.b} moves with {j.at}@{j.a} ({AXES[i]})")
+        rows = [(c, Said("row-moves-with", point=f"{j.at}@{j.b}", other=f"{j.at}@{j.a}", axis=AXES[i]))
                 for i, c in enumerate(coincident(lv, j.a, j.b, geo.at))]
-        rows += [(turning(lv, j.a, j.b, p), f"relative rotation only about the axis ({k + 1})")
+        rows += [(turning(lv, j.a, j.b, p), Said("row-turning-axis", n=k + 1))
                  for k, p in enumerate(geo.perps)]
         return rows
 

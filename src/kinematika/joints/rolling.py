@@ -13,12 +13,14 @@ from dataclasses import replace
 from typing import Any, Optional
 
 from ..algebra.vectors import sub
-from ..shapes import Circle
+from ..errors import Said
+from ..shapes import Circle, Disc, Plane
 from . import symbols
-from .base import AXES, JointGeometry, JointKind, Rows
+from .base import AXES, Holonomic, JointGeometry, JointKind, Rows
 from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
 from .rolling_contact import drawn_pair, find_contact
+from .tangency import circles_tangency
 
 
 class Rolling(JointKind):
@@ -28,6 +30,7 @@ class Rolling(JointKind):
     summary = "the bodies' shapes roll on each other without slipping"
     touches = True
     rolls = True
+    velocity_only = (3,)              # a disc on a plane: where it has rolled depends on the path
     centre = "contact"
     route = "contact"
     fields = {"at": "optional", "internal": "optional"}
@@ -46,8 +49,9 @@ class Rolling(JointKind):
 
     def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
         """The carried geometry with the contact found anew where the circles now touch (the
-        drawn contact point `at` does not travel with either body)."""
-        geo.contact = find_contact(inst, replace(geo.joint, at=None))
+        drawn contact point `at` does not travel with either body); whether they touch is for
+        the caller to judge (a sweep's residual, a simulation's projection)."""
+        geo.contact = find_contact(inst, replace(geo.joint, at=None), touching=False)
         return geo
 
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
@@ -59,7 +63,7 @@ class Rolling(JointKind):
             w_rel = sp.rot_sub(lv.w(j.b), lv.w(j.a))
             rolling_velocity = sub(lv.v(j.a, c.point), c.jdot(lv.motion))
             diff = sub(diff, sp.cross(w_rel, rolling_velocity))
-        return [(x, f"no slip at the contact of {j.a} and {j.b} ({AXES[i]})") for i, x in enumerate(diff)]
+        return [(x, Said("row-no-slip", body=j.a, other=j.b, axis=AXES[i])) for i, x in enumerate(diff)]
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """The contact point (a still figure only: it is no body's point)."""
@@ -80,10 +84,20 @@ class Rolling(JointKind):
         ca, cb = drawn_pair(inst, j)
         a, b = j.a, j.b
         if isinstance(ca, Circle) and isinstance(cb, Circle):
-            return _circles(j.id, a, b, ca, cb, geo.contact.kind)
+            return _circles(j.id, a, b, ca, cb)
         if isinstance(ca, Circle):
             return _on_line(ca, a, cb, b, -1.0)
         return _on_line(cb, b, ca, a, 1.0)
+
+    def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
+        """In the plane, the whole condition (`residual`). A disc on a plane rolls without
+        slipping on velocities only (where it has rolled to depends on the path), and keeps
+        touching on positions: the gap σ n·(C − P) − R |n − (n·a) a| (C the disc's centre, a its
+        axis, P and n the plane's point and normal, σ the side of the plane the disc is on), whose
+        rate is σ n·(v_J(disc) − v_J(plane)), the engine's rows along the normal."""
+        if inst.space.dim == 2:
+            return super().holonomic(inst, geo, ref)
+        return _disc_on_plane(inst, geo.joint)
 
     def add(self, m: Any, a: str, b: str, at: Optional[str] = None, id: Optional[str] = None) -> str:
         """The shapes of `a` and `b` roll on each other (touching at point `at`, if named)."""
@@ -93,10 +107,9 @@ class Rolling(JointKind):
 KIND = Rolling()
 
 
-def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle, contact: str) -> Any:
-    """Circle on circle, outside or inside (the contact's kind)."""
-    ra, rb = float(ca.radius), float(cb.radius)
-    rho_a, rho_b = signed_radii(contact, ra, rb, ra >= rb)
+def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle) -> Any:
+    """Circle on circle, outside or inside (as they touch at the drawing, `tangency`)."""
+    rho_a, rho_b = circles_tangency(ca, cb).places(float(ca.radius), float(cb.radius))
     gap = rho_a - rho_b
     d0 = differences(cb.center, ca.center)
     psi0 = math.atan2(d0[1], d0[0])
@@ -116,18 +129,34 @@ def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle, contact: str) -> 
     return circles
 
 
-def signed_radii(contact: str, ra: Any, rb: Any, a_outer: bool) -> tuple[Any, Any]:
-    """(ρa, ρb): two circles' radii signed so that their contact is Cₐ + ρₐ u = C_b + ρ_b u,
-    u the unit vector from centre a to centre b: outside each other (ra, −rb); inside,
-    (ra, rb) when a is the outer circle, (−ra, −rb) when b is."""
-    if contact == "external":
-        return ra, -rb
-    return (ra, rb) if a_outer else (-ra, -rb)
+def _disc_on_plane(inst: Any, j: Any) -> Holonomic:
+    """The gap between a disc and the plane it rolls on, and its rate's weights on the rows."""
+    import numpy as np
+
+    disc_body, plane_body = (j.a, j.b) if any(isinstance(s, Disc) for s in inst.shapes[j.a]) else (j.b, j.a)
+    disc = next(s for s in inst.shapes[disc_body] if isinstance(s, Disc))
+    plane = next(s for s in inst.shapes[plane_body] if isinstance(s, Plane))
+    c0, a0, r = (np.asarray(v, dtype=float) for v in (disc.center, disc.axis, (float(disc.radius),)))
+    p0, n0 = np.asarray(plane.through, dtype=float), np.asarray(plane.normal, dtype=float)
+    side = 1.0 if float(n0 @ (c0 - p0)) >= 0 else -1.0
+    sign = side if disc_body == j.b else -side          # the rows are v_J(b) − v_J(a)
+
+    def gap(q: Any, _: float) -> list:
+        a = np.asarray(q.turn(disc_body, tuple(a0)))
+        n = np.asarray(q.turn(plane_body, tuple(n0)))
+        centre = np.asarray(q.point(disc_body, tuple(c0))) - np.asarray(q.point(plane_body, tuple(p0)))
+        return [side * float(n @ centre) - float(r[0]) * float(np.linalg.norm(n - (n @ a) * a))]
+
+    def weights(q: Any) -> list:
+        return [[sign * float(x) for x in q.turn(plane_body, tuple(n0))]]
+
+    return Holonomic(gap, weights)
 
 
 def arc_slip(rho_a: Any, rho_b: Any, psi: Any, phi_a: Any, phi_b: Any) -> Any:
     """The arcs rolled on a's circle less those on b's, since the drawing, when the line of
-    centres has turned by ψ and the bodies by φa, φb: (ρa − ρb) ψ + ρb φb − ρa φa. Rolling
+    centres has turned by ψ and the bodies by φa, φb: (ρa − ρb) ψ + ρb φb − ρa φa, ρa and ρb
+    the contact's places along the line of centres (`tangency.Tangency.places`). Rolling
     without slipping keeps it 0 (on numbers, formulas or arrays): solved for φb, a planet
     (radius r) on a fixed sun (R) whose arm turns by ψ turns by (R + r) ψ / r, and together
     for every pair of a gear train, Willis's equations (`sweep.carried`)."""

@@ -11,9 +11,10 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 from ..algebra.vectors import add, cross3, dot, scale, sub
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, Said
 from ..shapes import Circle, Disc, Line, Plane
 from .base import rounding_hint
+from .tangency import circles_tangency, tangency
 from .touching import closest
 
 Instant = Any       # the instant (`engine.instant.Instant`): its shapes, points and algebra
@@ -36,35 +37,32 @@ class Contact:
     line_body: str = ""                            # circle–line: the body of the line
 
 
-def find_contact(inst: Instant, joint: Joint) -> Contact:
-    """The contact of `joint`; a `geometry` error names the gap when the shapes do not touch."""
+def find_contact(inst: Instant, joint: Joint, touching: bool = True) -> Contact:
+    """The contact of `joint`; a `geometry` error names the gap when the shapes do not touch
+    (unless not `touching`: a pose between a motion's steps, off the conditions by the
+    integrator's error, whose contact is the nearest pair of points)."""
     shapes_a, shapes_b = inst.shapes[joint.a], inst.shapes[joint.b]
     if not shapes_a or not shapes_b:
         missing = joint.a if not shapes_a else joint.b
-        kinds = "circle or line" if inst.space.dim == 2 else "disc or plane"
-        raise KinematikaError("schema", f"a {joint.type} joint needs a shape on both bodies: give "
-                              f"{missing!r} a {kinds}", joint.where)
+        raise KinematikaError("schema", "rolling-needs-shapes", joint.where, kind=joint.type, body=missing,
+                              dim=inst.space.dim)
     gap, contact = closest(shapes_a, shapes_b, lambda sa, sb: _pair(inst, joint, sa, sb), lambda c: c[0], joint,
-                           "these shapes cannot roll on each other")
+                           Said("shapes-cannot-roll"))
     tol = 1e-6 * inst.scale
-    if abs(gap) > tol:
-        raise KinematikaError("geometry", f"{joint.b!r} does not touch {joint.a!r}: gap {gap:.6g}"
-                              + rounding_hint(gap, inst.scale, "the contact or centre"), joint.where)
+    if touching and abs(gap) > tol:
+        raise KinematikaError("geometry", "no-touch", joint.where, body=joint.b, other=joint.a, gap=Num(gap, ".6g"),
+                              hint=rounding_hint(gap, inst.scale, Said("the-contact-or-centre")))
     if joint.at is not None:
         dist = max(abs(x) for x in inst.numvec(sub(inst.points[joint.at], contact.point)))
         if dist > tol:
-            raise KinematikaError("geometry", f"the contact is not at {joint.at!r}: it is "
-                                  f"{dist:.6g} away" + rounding_hint(dist, inst.scale, joint.at), joint.where)
+            raise KinematikaError("geometry", "contact-not-at", joint.where, point=joint.at, distance=Num(dist, ".6g"),
+                                  hint=rounding_hint(dist, inst.scale, joint.at))
     if joint.internal is not None:
         if contact.kind not in ("external", "internal"):
-            raise KinematikaError("schema", f"`internal` tells how two circles touch; this is a "
-                                  f"{contact.kind} contact", joint.where)
+            raise KinematikaError("schema", "internal-circles-only", joint.where, contact=contact.kind)
         if joint.internal != (contact.kind == "internal"):
-            said = "internal" if joint.internal else "external"
-            circles = "pitch circles" if joint.type == "gear" else "circles"
-            raise KinematikaError("geometry", f"the {joint.type} pair is declared {said} but its "
-                                  f"{circles} touch {'externally' if said == 'internal' else 'internally'}",
-                                  joint.where)
+            raise KinematikaError("geometry", "rolling-internal-wrong", joint.where, kind=joint.type,
+                                  said="internal" if joint.internal else "external")
     return contact
 
 
@@ -90,17 +88,8 @@ def _circles(inst: Instant, joint: Joint, ca: Circle, cb: Circle) -> tuple[float
     dist = inst.num(dot(d, d)) ** 0.5
     if dist <= 1e-12 * inst.scale:
         return None   # concentric circles never roll on each other
-    ra, rb = inst.num(ca.radius), inst.num(cb.radius)
-    gaps = {"external": dist - (ra + rb), "internal": dist - abs(ra - rb)}
-    kind = min(gaps, key=lambda k: abs(gaps[k]))
-    a_outer = ra >= rb
-    if kind == "external":
-        mu = ca.radius / (ca.radius + cb.radius)
-    elif a_outer:
-        mu = ca.radius / (ca.radius - cb.radius)
-    else:
-        mu = -ca.radius / (cb.radius - ca.radius)
-    mu = inst.backend.simplify(mu)
+    way = tangency(dist, inst.num(ca.radius), inst.num(cb.radius))
+    mu = inst.backend.simplify(way.ratio(ca.radius, cb.radius))
     point = add(ca.center, scale(mu, d))
     sa, sb = joint.a, joint.b
 
@@ -112,11 +101,9 @@ def _circles(inst: Instant, joint: Joint, ca: Circle, cb: Circle) -> tuple[float
         aa, ab = motion.point_acceleration(sa, ca.center), motion.point_acceleration(sb, cb.center)
         return add(aa, scale(mu, sub(ab, aa)))
 
-    unit = scale(1 / inst.backend.sqrt(dot(d, d)), d)
-    normal = unit if kind == "external" or a_outer else scale(-1, unit)
-    return gaps[kind], Contact(joint, point, kind, jdot, jddot,
-                               tuple(inst.backend.simplify(c) for c in normal),
-                               ((sa, ca.center), (sb, cb.center)), mu)
+    normal = scale(way.sense / inst.backend.sqrt(dot(d, d)), d)
+    return way.gap, Contact(joint, point, way.kind, jdot, jddot, tuple(inst.backend.simplify(c) for c in normal),
+                            ((sa, ca.center), (sb, cb.center)), mu)
 
 
 def _circle_line(inst: Instant, joint: Joint, c: Circle, cbody: str, ln: Line, lbody: str,
@@ -169,8 +156,7 @@ def _disc_plane(inst: Instant, joint: Joint, dc: Disc, dbody: str, pl: Plane,
     a, n = dc.axis, pl.normal
     m = sub(n, scale(dot(n, a), a))
     if inst.num(dot(m, m)) < 1e-18:
-        raise KinematikaError("geometry", f"disc {dbody!r} lies flat on the plane of {pbody!r}: it "
-                              "touches along its face, not at a point", joint.where)
+        raise KinematikaError("geometry", "disc-flat-on-plane", joint.where, disc=dbody, plane=pbody)
     bk = inst.backend
     side = 1 if inst.num(dot(sub(dc.center, pl.through), n)) >= 0 else -1
     # |m|² = 1 − (n·a)² for unit n, a: the short form keeps symbolic roots simple
@@ -225,17 +211,13 @@ def drawn_pair(inst: Instant, joint: Joint) -> tuple:
             if gap is not None and (best is None or gap < best[0]):
                 best = (gap, sa, sb)
     if best is None:
-        raise KinematikaError("schema", "a sweep follows rolling of circles and lines only", joint.where)
+        raise KinematikaError("schema", "sweep-rolling-only", joint.where)
     return best[1], best[2]
 
 
 def _drawn_gap(sa: Any, sb: Any) -> float | None:
-    import math
-
     if isinstance(sa, Circle) and isinstance(sb, Circle):
-        dist = math.dist(sa.center, sb.center)
-        ra, rb = float(sa.radius), float(sb.radius)
-        return min(abs(dist - ra - rb), abs(dist - abs(ra - rb)))
+        return abs(circles_tangency(sa, sb).gap)
     if isinstance(sa, Line):
         sa, sb = sb, sa
     if isinstance(sa, Circle) and isinstance(sb, Line):

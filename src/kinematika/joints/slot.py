@@ -16,6 +16,7 @@ from . import symbols
 from .base import JointGeometry, JointKind, Rows, off_line
 from .derivatives import sliding
 from .positions import across
+from ..errors import Said
 
 
 class Slot(JointKind):
@@ -49,7 +50,7 @@ class Slot(JointKind):
         """v_rel·n = 0 at the pin, n the slot's normal; the acceleration row adds the Coriolis
         term 2 v_rel·(ω_a × n)."""
         j = geo.joint
-        return [(sliding(lv, j.a, j.b, geo.at, geo.perps[0]), f"{j.at}@{j.b} stays on the slot of {j.a}")]
+        return [(sliding(lv, j.a, j.b, geo.at, geo.perps[0]), Said("row-slot", point=f"{j.at}@{j.b}", body=j.a))]
 
     def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
         """The pin's offset across the slot's line."""

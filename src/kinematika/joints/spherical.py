@@ -11,6 +11,7 @@ from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident
 from .positions import coincide
+from ..errors import Said
 
 
 class Spherical(JointKind):
@@ -32,7 +33,7 @@ class Spherical(JointKind):
     def rows(self, geo: JointGeometry, lv: Any) -> Rows:
         """v_P(b) − v_P(a) = 0 at the ball's centre, one row per component."""
         j = geo.joint
-        return [(c, f"{j.at}@{j.b} moves with {j.at}@{j.a} ({AXES[i]})")
+        return [(c, Said("row-moves-with", point=f"{j.at}@{j.b}", other=f"{j.at}@{j.a}", axis=AXES[i]))
                 for i, c in enumerate(coincident(lv, j.a, j.b, geo.at))]
 
     def symbol(self, view: Any, ctx: Any) -> list:

@@ -32,11 +32,13 @@ from typing import Any, Callable, Optional
 import numpy as np
 
 from ..algebra.vectors import add, dot, scale, sub
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, Said
 from ..shapes import Cam, Circle, Curve, Line
 from .base import rounding_hint
+from .curve_search import circle_contact, curves_contact, support
 from .derivatives import sliding
 from .positions import differences
+from .tangency import tangency
 
 
 @dataclass(frozen=True)
@@ -61,7 +63,7 @@ class Touch:
     outline_a: Any
     outline_b: Any
     side: float = 1.0                   # n = side × (a curve's own normal), at the drawing
-    param: Optional[float] = None       # a curve's parameter at J
+    param: Any = None                   # a curve's parameter at J (two curves: the pair (u, v))
     kind: str = "sliding"
     bodies: tuple = ("", "")            # the joint's bodies a, b (set by `find_touch`)
 
@@ -86,8 +88,7 @@ class Touch:
         """J̈ likewise (exact while the radii stay constant: points, circles, lines)."""
         for outline in (self.outline_a, self.outline_b):
             if isinstance(outline, Curve):
-                raise KinematikaError("schema", "the geometric contact point's acceleration on a general "
-                                      "curve needs its curvature's rate: ask for the bodies' points", "")
+                raise KinematikaError("schema", "contact-acceleration-curve", "")
         return self._moving(motion, "acceleration")
 
     def _moving(self, motion: Any, level: str) -> tuple:
@@ -116,8 +117,7 @@ def touch_row(lv: Any, a: str, b: str, t: Touch) -> Any:
     n = t.normal
     ca, cb = t.centre_a, t.centre_b
     if ca is None and cb is None:
-        raise KinematikaError("geometry", "two straight outlines touch along a line, not at a point: "
-                              "join them by a prismatic joint", "")
+        raise KinematikaError("geometry", "straight-outlines", "")
     if ca is None and cb is not None:       # a straight: b's centre slides along a's line
         return sliding(lv, a, b, cb, n)
     if cb is None and ca is not None:       # b straight: a's centre slides along b's line
@@ -142,35 +142,36 @@ def outlines(inst: Any, joint: Any, body: str, point: Optional[str] = None) -> l
 
 
 def closest(first: list, second: list, pair: Callable[[Any, Any], Any], gap: Callable[[Any], float],
-            joint: Any, cannot: str) -> Any:
+            joint: Any, cannot: Any) -> Any:
     """Of every pair (one outline of each body) that can touch, `pair(oa, ob)` not None, the
     one with the smallest |gap|; none at all is a `geometry` error naming the joint (`cannot`:
     why, in words)."""
     candidates = [made for oa in first for ob in second if (made := pair(oa, ob)) is not None]
     if not candidates:
-        raise KinematikaError("geometry", f"{joint.kind.name} between {joint.a!r} and {joint.b!r}: {cannot}",
-                              joint.where)
+        raise KinematikaError("geometry", "pair-cannot", joint.where, kind=joint.kind.name, body=joint.a,
+                              other=joint.b, why=cannot)
     return min(candidates, key=lambda c: abs(gap(c)))
 
 
-def find_touch(inst: Any, joint: Any, first: list, second: list, near: Optional[float] = None) -> Touch:
+def find_touch(inst: Any, joint: Any, first: list, second: list, near: Any = None,
+               touching: bool = True) -> Touch:
     """The touching pair of outlines of the joint's two bodies (the one with the smallest
-    gap), checked to touch: else a `geometry` error with the gap. `near`: a curve's parameter
-    close to the contact (a sweep's previous one), which spares the search along the curve."""
+    gap), checked to touch: else a `geometry` error with the gap (unless not `touching`: a
+    moved pose, whose caller judges the gap). `near`: a curve's parameter close to the
+    contact (a sweep's previous one), which spares the search along the curve."""
     if not first or not second:
         missing = joint.a if not first else joint.b
-        raise KinematikaError("schema", f"a {joint.kind.name} joint needs an outline on both bodies: give "
-                              f"{missing!r} a circle, line or curve (or name its point with `at`)", joint.where)
+        raise KinematikaError("schema", "touching-needs-outlines", joint.where, kind=joint.kind.name, body=missing)
     touch = closest(first, second, lambda oa, ob: _pair(inst, oa, ob, near), lambda t: t.gap, joint,
-                    "these outlines cannot touch at a point")
+                    Said("outlines-cannot-touch"))
     touch.bodies = (joint.a, joint.b)
-    if abs(touch.gap) > 1e-6 * inst.scale:
-        raise KinematikaError("geometry", f"{joint.b!r} does not touch {joint.a!r}: gap {touch.gap:.6g}"
-                              + rounding_hint(touch.gap, inst.scale, "the contact"), joint.where)
+    if touching and abs(touch.gap) > 1e-6 * inst.scale:
+        raise KinematikaError("geometry", "no-touch", joint.where, body=joint.b, other=joint.a, gap=Num(touch.gap, ".6g"),
+                              hint=rounding_hint(touch.gap, inst.scale, Said("the-contact")))
     return touch
 
 
-def _pair(inst: Any, oa: Any, ob: Any, near: Optional[float] = None) -> Optional[Touch]:
+def _pair(inst: Any, oa: Any, ob: Any, near: Any = None) -> Optional[Touch]:
     """The contact of outline oa (body a) and ob (body b), or None if they cannot touch."""
     if isinstance(oa, (Circle, Line)) and isinstance(ob, Point):
         return _point_exact(inst, oa, ob)
@@ -210,22 +211,22 @@ def _point_exact(inst: Any, oa: Any, p: Point) -> Touch:
 
 
 def _circles(inst: Any, ca: Circle, cb: Circle) -> Optional[Touch]:
-    """Circles touching outside (|Cb − Ca| = Ra + Rb) or one inside the other."""
+    """Circles touching outside each other or one inside the other (`tangency`): J on the
+    line of centres, n = σ u from a's material into b's, the radii signed by the way they
+    touch, so that Cₐ and C_b are the circles' centres."""
     bk = inst.backend
     d = sub(cb.center, ca.center)
     dist = bk.sqrt(dot(d, d))
-    if inst.num(dist) <= 1e-12 * inst.scale:
+    apart = float(inst.num(dist))
+    if apart <= 1e-12 * inst.scale:
         return None
     u = tuple(bk.simplify(c / dist) for c in d)
+    way = tangency(apart, float(inst.num(ca.radius)), float(inst.num(cb.radius)))
     ra, rb = ca.radius, cb.radius
-    gaps = {"external": inst.num(dist) - inst.num(ra + rb), "internal": inst.num(dist) - abs(inst.num(ra - rb))}
-    kind = min(gaps, key=lambda k: abs(gaps[k]))
-    if kind == "external":                    # J on the segment, n from a to b
-        return Touch(add(ca.center, scale(ra, u)), u, ra, rb, gaps[kind], ca, cb, kind="circles")
-    if inst.num(ra) >= inst.num(rb):          # b inside a: a concave towards b
-        return Touch(add(ca.center, scale(ra, u)), u, -ra, rb, gaps[kind], ca, cb, kind="circles")
-    n = scale(-1, u)                          # a inside b
-    return Touch(sub(ca.center, scale(ra, u)), n, ra, -rb, gaps[kind], ca, cb, kind="circles")
+    place_a, _ = way.places(ra, rb)
+    radius_a, radius_b = way.radii(ra, rb)
+    return Touch(add(ca.center, scale(place_a, u)), scale(way.sense, u), radius_a, radius_b, way.gap, ca, cb,
+                 kind="circles")
 
 
 def _circle_line(inst: Any, ln: Line, c: Circle) -> Touch:
@@ -238,30 +239,34 @@ def _circle_line(inst: Any, ln: Line, c: Circle) -> Touch:
     return Touch(sub(c.center, scale(c.radius, n)), n, None, c.radius, gap, ln, c, kind="circle-line")
 
 
-def _on_curve(inst: Any, curve: Curve, ob: Any, near: Optional[float] = None) -> Optional[Touch]:
-    """b's point, circle, line or curve touching a's curve (numeric)."""
-    if isinstance(ob, Point):
-        p = _floats(inst, ob.at)
-        u = curve.nearest(p, near)
-        n = curve.normal(u)
-        gap = float(np.dot(p - curve.point(u), n))
-        return _curve_touch(curve, u, 1.0, tuple(p), 0.0, gap, ob, "point-curve")
-    if isinstance(ob, Circle):
-        c = _floats(inst, ob.center)
-        u = curve.nearest(c, near)
+def _on_curve(inst: Any, curve: Curve, ob: Any, hint: Any = None) -> Optional[Touch]:
+    """b's point, circle, line or curve touching a's curve (numeric; `curve_search` finds
+    where, from a sweep's last contact `hint` when given: a parameter, or two for two
+    curves)."""
+    if isinstance(ob, Curve):
+        return _curves(curve, ob, hint if isinstance(hint, tuple) else None)
+    near = None if isinstance(hint, tuple) else hint
+    if isinstance(ob, (Point, Circle)):
+        c = _floats(inst, ob.at if isinstance(ob, Point) else ob.center)
+        r = 0.0 if isinstance(ob, Point) else float(inst.num(ob.radius))
+        u = circle_contact(curve, c, r, near)
         d = float(np.dot(c - curve.point(u), curve.normal(u)))
+        if isinstance(ob, Point):
+            return _curve_touch(curve, u, 1.0, tuple(c), 0.0, d, ob, "point-curve")
         side = 1.0 if d >= 0 else -1.0
-        r = float(inst.num(ob.radius))
         return _curve_touch(curve, u, side, tuple(curve.point(u)), r, abs(d) - r, ob, "circle-curve")
     if isinstance(ob, Line):
         q, e = _floats(inst, ob.through), _floats(inst, ob.direction)
         m = np.array([-e[1], e[0]])
-        heights = [(_support(curve, q, s * m), s) for s in (1.0, -1.0)]
-        (u, h), s = min(heights, key=lambda x: abs(x[0][1]))
+        toward = float(np.dot(curve.normal(near), m) * curve.curvature(near)) if near is not None else 0.0
+        if toward != 0.0:                         # followed: the curve's centre of curvature side
+            s = 1.0 if toward > 0 else -1.0
+            (u, h) = support(curve, q, s * m, near)
+        else:
+            heights = [(support(curve, q, s * m), s) for s in (1.0, -1.0)]
+            (u, h), s = min(heights, key=lambda x: abs(x[0][1]))
         side = float(np.sign(np.dot(curve.normal(u), -s * m)) or 1.0)
         return _curve_touch(curve, u, side, tuple(curve.point(u)), None, h, ob, "line-curve")
-    if isinstance(ob, Curve):
-        return _curves(curve, ob)
     return None
 
 
@@ -276,66 +281,43 @@ def _curve_touch(curve: Curve, u: float, side: float, point: tuple, radius_b: An
                  curve, ob, side, float(u), kind)
 
 
-def _support(curve: Curve, q: np.ndarray, m: np.ndarray) -> tuple[float, float]:
-    """The curve's point lowest along m from the line through q (a flat face touching a cam):
-    (u, height); sampled, then Newton on (r'·m) = 0."""
-    a, b = curve.curve.domain
-    grid = np.linspace(a, b, 2048, endpoint=not curve.curve.closed)
-    h = (curve.point(grid) - q) @ m
-    u = float(grid[int(np.argmin(h))])
-    for _ in range(50):
-        d1 = curve.curve.d1(u) @ _rot(curve.angle).T
-        d2 = curve.curve.d2(u) @ _rot(curve.angle).T
-        g, dg = float(d1 @ m), float(d2 @ m)
-        if dg <= 0:
-            break
-        step = g / dg
-        u = float(curve.curve.wrap(u - step))
-        if abs(step) < 1e-14 * max(1.0, abs(u)):
-            break
-    return u, float((curve.point(u) - q) @ m)
-
-
-def _curves(ca: Curve, cb: Curve) -> Optional[Touch]:
-    """Two curves: the closest pair of points (sampled, then Newton on both parameters)."""
-    pb = cb.points(512)
-    ua = np.array([ca.nearest(p) for p in pb[::8]])
-    gaps = np.linalg.norm(ca.point(ua) - pb[::8], axis=-1)
-    k = int(np.argmin(gaps))
-    u, v = float(ua[k]), float(cb.nearest(ca.point(ua[k])))
-    for _ in range(40):
-        u = ca.nearest(cb.point(v), near=u)
-        v2 = cb.nearest(ca.point(u), near=v)
-        if abs(v2 - v) < 1e-14 * max(1.0, abs(v)):
-            break
-        v = v2
+def _curves(ca: Curve, cb: Curve, near: Optional[tuple[float, float]] = None) -> Optional[Touch]:
+    """Two curves: where they touch (`curve_search.curves_contact`); n = ± a's normal towards
+    the side b's curve lies on near J (its centre of curvature's, or the side away from a's
+    when b is straight there: never the sign of a gap that is round-off while they touch),
+    b's radius of curvature ρb = (n_b·n)/κ_b along it."""
+    u, v = curves_contact(ca, cb, near)
     j = ca.point(u)
     n = ca.normal(u)
+    kb, nb = float(cb.curvature(v)), cb.normal(v)
+    towards = kb * float(np.dot(nb, n)) if abs(kb) >= 1e-12 else -float(ca.curvature(u))
+    side = -1.0 if towards < 0 else 1.0
     d = float(np.dot(cb.point(v) - j, n))
-    side = 1.0 if d >= 0 else -1.0
-    kb = float(cb.curvature(v))
-    nb = cb.normal(v)
     radius_b = None if abs(kb) < 1e-12 else float(np.dot(nb, side * n)) / kb
-    return _curve_touch(ca, u, side, tuple(j), radius_b, abs(d), cb, "curves")
+    touch = _curve_touch(ca, u, side, tuple(j), radius_b, abs(d), cb, "curves")
+    touch.param = (u, v)
+    return touch
 
 
 def _floats(inst: Any, v: Any) -> np.ndarray:
     return np.array([float(inst.num(x)) for x in v])
 
 
-def _rot(angle: float) -> np.ndarray:
-    c, s = math.cos(angle), math.sin(angle)
-    return np.array([[c, -s], [s, c]])
-
-
 # the position form -----------------------------------------------------------------------------
 @dataclass
 class Follow:
-    """The gap of a touching pair at a pose, for sweeps: the other outline brought into the
-    drawn place of the body whose outline is a curve (the pose's inverse for that body),
-    measured from the curve along the normal as at the drawing, its parameter followed from
-    the previous pose (`aux`). The gap is the same seen from either body, and its rate is the
-    row's (v_Jb − v_Ja)·n."""
+    """The gap of a touching pair at a pose, for sweeps, signed so that its rate is the
+    engine's row (v_Jb − v_Ja)·n (Newton's method takes the engine's matrix for its
+    Jacobian):
+
+    - circles, points: the centres Ca, Cb carried by their bodies keep their distance,
+      sign(L)·|Cb − Ca| − L with L = ρa + ρb (Cb − Ca = L n at the drawing);
+    - a line: the other's centre keeps its height above it, (Cb − Q)·n − ρb with n and Q
+      carried by the line's body (or (Ca − Q)·(−n) − ρa);
+    - a curve: the other outline brought into the drawn place of the curve's body (the
+      pose's inverse for it), the gap measured from the curve along the normal on the side
+      it had at the drawing, where they touch now (`curve_search`), its parameter followed
+      from the previous pose (`aux`)."""
 
     a: str
     b: str
@@ -350,49 +332,64 @@ class Follow:
             self.holder, self.curve, self.other, self.element = self.a, t.outline_a, self.b, t.outline_b
 
     def __call__(self, q: Any, _: float) -> list:
-        back = _inverse(q, self.holder)
         if isinstance(self.curve, Curve):
-            return [self._on_curve(q, back, q.aux.get(self.key, self.touch.param))]
-        return [self._exact(q, back)]
+            return [self._on_curve(q, q.aux.get(self.key, self.touch.param), gap=True)[0]]
+        return [self._exact(q)]
 
-    def aux(self, q: Any) -> Optional[float]:
-        """The curve parameter at this pose (remembered for the next one)."""
+    def aux(self, q: Any) -> Any:
+        """The curve parameter at this pose (two curves: both), remembered for the next one."""
         if not isinstance(self.curve, Curve):
             return None
-        back = _inverse(q, self.holder)
-        u0 = q.aux.get(self.key, self.touch.param)
-        if isinstance(self.element, (Point, Circle)):
-            at = self.element.at if isinstance(self.element, Point) else self.element.center
-            return self.curve.nearest(back(q.point(self.other, at)), near=u0)
-        return u0
+        return self._on_curve(q, q.aux.get(self.key, self.touch.param), gap=False)[1]
 
-    def _on_curve(self, q: Any, back: Any, u0: float) -> float:
+    def _on_curve(self, q: Any, u0: Any, gap: bool) -> tuple[float, Any]:
+        """(gap, parameter) of the element on the curve at pose q, from the parameter u0 (the
+        gap left 0 unless asked for: the parameter alone is what a sweep remembers)."""
         curve, ob, side = self.curve, self.element, self.touch.side
+        back = _inverse(q, self.holder)
         if isinstance(ob, (Point, Circle)):
-            at = ob.at if isinstance(ob, Point) else ob.center
-            p = back(q.point(self.other, at))
-            u = curve.nearest(p, near=u0)
+            p = back(q.point(self.other, ob.at if isinstance(ob, Point) else ob.center))
             radius = float(ob.radius) if isinstance(ob, Circle) else 0.0
-            return float(np.dot(p - curve.point(u), side * curve.normal(u))) - radius
+            u = circle_contact(curve, p, radius, near=u0)
+            return (float(np.dot(p - curve.point(u), side * curve.normal(u))) - radius if gap else 0.0), u
         if isinstance(ob, Line):
             through = back(q.point(self.other, ob.through))
             e = _turn_back(q, self.holder, q.turn(self.other, ob.direction))
             m = np.array([-e[1], e[0]])
             m = m if np.dot(m, side * curve.normal(u0)) < 0 else -m      # from the line towards the curve
-            return _support(curve, through, m)[1]
-        raise KinematikaError("schema", "a sweep follows a curve touching a point, a circle or a line", "")
+            u, height = support(curve, through, m, near=u0)
+            return height, u
+        assert isinstance(ob, Curve)
+        other = Curve(ob.curve, tuple(back(q.point(self.other, ob.origin))),
+                      ob.angle + _turned(q, self.other) - _turned(q, self.holder), ob.role)
+        u, v = curves_contact(curve, other, near=u0)
+        return (float(np.dot(other.point(v) - curve.point(u), side * curve.normal(u))) if gap else 0.0), (u, v)
 
-    def _exact(self, q: Any, back: Any) -> float:
-        oa, ob = self.curve, self.element
-        if isinstance(oa, Circle) and isinstance(ob, Point):
-            p = back(q.point(self.other, ob.at))
-            return float(np.linalg.norm(p - np.asarray(oa.center, dtype=float))) - float(oa.radius)
-        if isinstance(oa, Line) and isinstance(ob, Point):
-            p = back(q.point(self.other, ob.at))
-            n = np.array([-float(oa.direction[1]), float(oa.direction[0])])
-            return float(np.dot(p - np.asarray(oa.through, dtype=float), n))
-        raise KinematikaError("schema", "a sweep follows sliding contact of a point on a circle or line, or "
-                              "of an outline on a curve", "")
+    def _exact(self, q: Any) -> float:
+        t, a, b = self.touch, self.a, self.b
+        ca, cb = t.centre_a, t.centre_b
+        if ca is not None and cb is not None:
+            length = float(t.radius_a + t.radius_b)
+            d = np.subtract(q.point(b, _numbers(cb)), q.point(a, _numbers(ca)))
+            return math.copysign(1.0, length) * float(np.hypot(*d)) - length
+        if ca is None and cb is not None:          # a straight: b's centre above a's line
+            straight, other, centre, n, height = a, b, cb, _numbers(t.normal), float(t.radius_b)
+        elif ca is not None:                       # b straight: a's centre above b's line
+            straight, other, centre, n, height = b, a, ca, tuple(-x for x in _numbers(t.normal)), float(t.radius_a)
+        else:
+            raise KinematikaError("geometry", "two-straights-touch", "")
+        gap = np.subtract(q.point(other, _numbers(centre)), q.point(straight, _numbers(t.point)))
+        return float(np.dot(gap, q.turn(straight, n))) - height
+
+
+def _numbers(v: Any) -> tuple:
+    return tuple(float(x) for x in v)
+
+
+def _turned(q: Any, body: str) -> float:
+    """How far a body has turned at pose q from the drawing (radians)."""
+    ex = q.turn(body, (1.0, 0.0))
+    return math.atan2(float(ex[1]), float(ex[0]))
 
 
 def _inverse(q: Any, body: str) -> Any:

@@ -10,6 +10,7 @@ from typing import Any, Optional
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident, same_rotation
 from .positions import coincide
+from ..errors import Said
 
 
 class Weld(JointKind):
@@ -29,8 +30,8 @@ class Weld(JointKind):
         """ω_b − ω_a = 0 and v_R(b) − v_R(a) = 0 at the reference point R: the two bodies share
         one twist."""
         j = geo.joint
-        rows = [(c, f"{j.b} turns with {j.a}") for c in same_rotation(lv, j.a, j.b)]
-        rows += [(c, f"{j.b} moves with {j.a} ({AXES[i]})")
+        rows = [(c, Said("row-turns-with", body=j.b, other=j.a)) for c in same_rotation(lv, j.a, j.b)]
+        rows += [(c, Said("row-body-moves-with", body=j.b, other=j.a, axis=AXES[i]))
                  for i, c in enumerate(coincident(lv, j.a, j.b, lv.ref))]
         return rows
 

@@ -14,8 +14,9 @@ import numpy as np
 
 from ..algebra.vectors import dot, sub
 from . import symbols
-from .base import JointGeometry, JointKind, Rows
+from .base import Holonomic, JointGeometry, JointKind, Rows
 from .derivatives import coincident
+from ..errors import Said
 
 
 class Wheel(JointKind):
@@ -29,6 +30,7 @@ class Wheel(JointKind):
     centre = "normal"                 # on the normal to `along` at `at`
     centre_line = "wheel"                  # its axle
     knife_edge = True
+    velocity_only = (2,)
     route = "wheel"
     fields = {"at": "required", "along": "required"}
     point_on = "b"
@@ -48,7 +50,12 @@ class Wheel(JointKind):
         if lv.accel:
             v_rel = sub(lv.v(j.b, geo.at), lv.v(j.a, geo.at))
             row = row - dot(sp.cross(lv.w(j.a), v_rel), n) + dot(v_rel, sp.cross(lv.w(j.b), n))
-        return [(row, f"{j.at}@{j.b} has no sideways velocity relative to {j.a}")]
+        return [(row, Said("row-no-sideways", point=f"{j.at}@{j.b}", body=j.a))]
+
+    def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
+        """None of it: the condition is on velocities only (no sideways slip), so the wheel
+        may be anywhere; its place is where the motion in time has taken it."""
+        return Holonomic(lambda q, dq: [], lambda q: [])
 
     def symbol(self, view: Any, ctx: Any) -> list:
         """A knife edge seen from above: a narrow dark wheel along its rolling direction."""

@@ -10,15 +10,15 @@ import types
 import typing
 from typing import TYPE_CHECKING, Any, Iterable, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Names, Said, pydantic_choices, pydantic_problem
 from ..joints import KINDS
 from ..joints import kind as joint_kind
-from ..text import brief, names as name_list
+from ..text import brief
 from . import shape
 from .constructions import Construction, ConstructionReader, construction_order
 from ..expressions import Expr, ExpressionError, parse
 from .model import (QUESTION_KINDS, Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint,
-                    Line, Model, Parameter, Plane, PointPair, PointRef, Question, Shape, Sweep)
+                    Line, Model, Parameter, Plane, PointPair, PointRef, Question, Shape, Simulate, Sweep)
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
@@ -30,7 +30,7 @@ if TYPE_CHECKING:
 def build_model(tree: Any) -> Model:
     """Check a model tree and resolve it into a `Model`; raises `KinematikaError`."""
     if not isinstance(tree, dict):
-        raise KinematikaError("schema", "a model is a mapping with keys points, bodies, joints, drivers")
+        raise KinematikaError("schema", "model-mapping")
     spec = shape.spec_of(tree)         # plain checks first: pydantic only for files that may be wrong
     if spec is None:
         from pydantic import ValidationError
@@ -63,15 +63,15 @@ class _Builder:
         self.point_coords = points
         bodies = self.bodies()
         if spec.frame not in bodies:
-            raise KinematikaError("schema", f"there is no fixed body {spec.frame!r}: name one body "
-                                  f"{spec.frame!r} or set `frame:` to one of {_names(bodies)}", "bodies")
+            raise KinematikaError("schema", "frame-missing", "bodies", frame=spec.frame, bodies=_names(bodies))
         self.body_map = bodies
         self.body_points = {name: set(b.points) for name, b in bodies.items()}
         joints = self.joints()
         self.joint_list = joints
         model = Model(name=spec.name or "Mechanism", dimension=dimension, frame=spec.frame,
                       parameters=params, points=points, bodies=bodies, joints=joints,
-                      drivers=[], questions=[], sweep=self.sweep())
+                      drivers=[], questions=[], sweep=self.sweep(),
+                      simulate=self.simulate())
         self.model_ = model
         model.drivers = [self.driver(i, d) for i, d in enumerate(spec.drivers)]
         model.questions = self.questions()
@@ -97,7 +97,7 @@ class _Builder:
 
         joints = {j.id: j for j in self.joint_list}
         return read_wording(self.spec.names, self.spec.notation, self.body_map, self.point_coords, params, title,
-                            joints)
+                            joints, self.spec.frame)
 
     # parameters and points -------------------------------------------------------------
     def parameters(self) -> dict[str, Parameter]:
@@ -105,8 +105,7 @@ class _Builder:
         for name, raw in self.spec.parameters.items():
             where = f"parameters.{name}"
             if not name.isidentifier():
-                raise KinematikaError("schema", f"{name!r} is not a valid parameter name "
-                                      "(letters, digits and _, not starting with a digit)", where)
+                raise KinematikaError("schema", "parameter-name-invalid", where, name=name)
             positive = True
             if hasattr(raw, "symbolic"):         # a ParameterSpec (schema's or shape's)
                 positive = raw.positive
@@ -117,37 +116,35 @@ class _Builder:
             if p.value is not None:
                 unknown = p.value.names() - known
                 if unknown:
-                    raise KinematikaError("schema", f"unknown name {sorted(unknown)[0]!r} in "
-                                          f"{p.value.text!r}", f"parameters.{p.name}")
+                    raise KinematikaError("schema", "unknown-name-in", f"parameters.{p.name}", name=sorted(unknown)[0],
+                                          text=p.value.text)
         return out
 
     def expr(self, raw: Any, where: str) -> Expr:
         try:
             expr = parse(raw)
         except ExpressionError as err:
-            raise KinematikaError("schema", str(err), where) from None
+            raise KinematikaError("schema", err.said, where) from None
         unknown = expr.names() - set(getattr(self, "_param_names", ())) - {"pi"}
         if hasattr(self, "_param_names") and unknown:
-            raise KinematikaError("schema", f"unknown name {sorted(unknown)[0]!r} in {expr.text!r} "
-                                  f"(parameters: {', '.join(self._param_names) or 'none'})", where)
+            raise KinematikaError("schema", "unknown-name-in-parameters", where, name=sorted(unknown)[0],
+                                  text=expr.text, parameters=self._param_names)
         return expr
 
     def vector(self, raw: list, where: str, dims: Iterable[int] = (2, 3)) -> ExprVector:
         if len(raw) not in tuple(dims):
-            raise KinematikaError("schema", f"expected {' or '.join(map(str, dims))} components, "
-                                  f"got {len(raw)}", where)
+            raise KinematikaError("schema", "components-count", where, dims=Names(map(str, dims), joined="or"),
+                                  got=len(raw))
         return tuple(self.expr(v, f"{where}[{i}]") for i, v in enumerate(raw))
 
     def points(self, params: dict[str, Parameter]) -> dict[str, ExprVector | Construction]:
         self._param_names = list(params)
         if not self.spec.points:
-            raise KinematikaError("schema", "a model needs at least one point", "points")
+            raise KinematikaError("schema", "model-no-points", "points")
         for name in [*self.spec.points, *self.spec.bodies]:
             kind = "points" if name in self.spec.points else "bodies"
             if not name.strip() or "@" in name:
-                raise KinematikaError("schema", f"{name!r} cannot be a name: names are not empty "
-                                      "and have no '@' (it joins a point to its body: B@rocker)",
-                                      f"{kind}.{name}")
+                raise KinematikaError("schema", "name-invalid", f"{kind}.{name}", name=name)
         symbolic = any(p.value is None for p in params.values())
         reader = ConstructionReader(self.expr, self.vector, set(self.spec.points), symbolic)
         out: dict[str, ExprVector | Construction] = {}
@@ -161,13 +158,11 @@ class _Builder:
         sizes = {len(v) if isinstance(v, tuple) else 2 for v in points.values()}
         constructed = next((n for n, v in points.items() if not isinstance(v, tuple)), None)
         if constructed is not None and (3 in sizes or self.spec.dimension == 3):
-            raise KinematikaError("schema", "points by construction are planar; give a 3D "
-                                  "model's points as coordinates [x, y, z]", f"points.{constructed}")
+            raise KinematikaError("schema", "construction-planar", f"points.{constructed}")
         if self.spec.dimension is not None:
             if self.spec.dimension == 2 and 3 in sizes:
                 name = next(n for n, v in points.items() if len(v) == 3)
-                raise KinematikaError("schema", "a planar model (dimension 2) has 2 coordinates "
-                                      "per point", f"points.{name}")
+                raise KinematikaError("schema", "planar-two-coordinates", f"points.{name}")
             return self.spec.dimension
         return 3 if 3 in sizes else 2
 
@@ -183,19 +178,17 @@ class _Builder:
             seen: set[str] = set()
             twice = sorted({p for p in raw.points if p in seen or seen.add(p)})
             if twice:
-                raise KinematikaError("schema", f"point {twice[0]!r} is listed twice", where)
+                raise KinematikaError("schema", "point-listed-twice", where, point=twice[0])
             out[name] = Body(name, list(raw.points), self.shapes(raw, where))
         listed = {p for b in out.values() for p in b.points}
         for name in self.point_coords:
             if name not in listed:
-                raise KinematikaError("schema", f"point {name!r} is not carried by any body: "
-                                      "list it in a body's points", f"points.{name}")
+                raise KinematikaError("schema", "point-not-carried", f"points.{name}", point=name)
         return out
 
     def known_point(self, name: str, where: str) -> None:
         if name not in self.point_coords:
-            raise KinematikaError("schema", f"unknown point {name!r} (points: "
-                                  f"{', '.join(self.point_coords)})", where)
+            raise KinematikaError("schema", "unknown-point", where, point=name, points=list(self.point_coords))
 
     def location(self, raw: Any, where: str) -> tuple[ExprVector, Optional[str]]:
         """Coordinates, or a point's name (its coordinates are then read at the instant)."""
@@ -208,9 +201,7 @@ class _Builder:
         """A vector of the model's dimension: never padded or cut, so that a slip such as a 2D
         axis in a 3D model is an error rather than a different mechanism."""
         if len(vec) != self.dim:
-            kind = "planar" if self.dim == 2 else "3D"
-            raise KinematikaError("schema", f"a {kind} model needs {self.dim} {what}, got "
-                                  f"{len(vec)}", where)
+            raise KinematikaError("schema", "vector-size", where, dim=self.dim, what=what, got=len(vec))
         return vec
 
     def shapes(self, raw: schema.BodySpec, where: str) -> list[Shape]:
@@ -237,10 +228,9 @@ class _Builder:
         if raw.cam:
             shapes.append(self.cam(raw.cam, f"{where}.cam"))
         if self.dim == 2 and shapes and any(isinstance(s, (Disc, Plane)) for s in shapes):
-            raise KinematikaError("schema", "disc and plane shapes belong to 3D models; use circle "
-                                  "and line in a planar model", where)
+            raise KinematikaError("schema", "shapes-3d-only", where)
         if self.dim == 3 and any(isinstance(s, (CurveShape, CamShape)) for s in shapes):
-            raise KinematikaError("schema", "curves and cams belong to planar models", where)
+            raise KinematikaError("schema", "shapes-planar-only", where)
         return shapes
 
     def cam(self, raw: Any, where: str) -> CamShape:
@@ -255,14 +245,13 @@ class _Builder:
         try:
             made = design(spec)
         except KinematikaError as err:
-            raise KinematikaError(err.kind, err.message, f"{where}.{err.where}" if err.where else where) from None
+            raise KinematikaError(err.kind, err.said, f"{where}.{err.where}" if err.where else where) from None
         return CamShape(center, self.expr(raw.angle, f"{where}.angle"), self.expr(raw.layout, f"{where}.layout"),
                         made, cp)
 
     def known_body(self, name: Optional[str], where: str) -> str:
         if name not in self.body_map:
-            raise KinematikaError("schema", f"unknown body {name!r} (bodies: {_names(self.body_map)})",
-                                  where)
+            raise KinematikaError("schema", "unknown-body", where, body=name, bodies=_names(self.body_map))
         return name
 
     # joints -----------------------------------------------------------------------------
@@ -273,9 +262,9 @@ class _Builder:
             jid = raw.id if raw.id is not None else f"j{i + 1}"
             where = f"joints[{i}] ({jid})"
             if not jid.strip():
-                raise KinematikaError("schema", "a joint id is not empty", f"joints[{i}].id")
+                raise KinematikaError("schema", "joint-id-empty", f"joints[{i}].id")
             if jid in ids:
-                raise KinematikaError("schema", f"joint id {jid!r} is used twice", where)
+                raise KinematikaError("schema", "joint-id-twice", where, id=jid)
             ids.add(jid)
             out.append(self.joint(i, jid, raw, where))
         return out
@@ -283,7 +272,7 @@ class _Builder:
     def joint(self, i: int, jid: str, raw: schema.JointSpec, where: str) -> Joint:
         a, b = (self.known_body(name, f"{where}.bodies") for name in raw.bodies)
         if a == b:
-            raise KinematikaError("schema", f"a joint needs two different bodies, got {a!r} twice", where)
+            raise KinematikaError("schema", "joint-same-body", where, body=a)
         kind = joint_kind(raw.type)
         kind.check_fields({key: getattr(raw, key) for key in shape.JOINT_KEYS}, self.dim, where)
         at = raw.at
@@ -293,8 +282,8 @@ class _Builder:
             must = {"ab": (a, b), "b": (b,)}.get(kind.point_on, ())
             missing = [name for name in must if name not in carriers]
             if missing:
-                raise KinematikaError("geometry", f"the {kind.name} point {at!r} is not on body "
-                                      f"{missing[0]!r}: list {at!r} in its points", where)
+                raise KinematikaError("geometry", "joint-point-not-on-body", where, kind=kind.name, point=at,
+                                      body=missing[0])
         along = self.direction(raw.along, f"{where}.along") if raw.along is not None else None
         axis = self.direction(raw.axis, f"{where}.axis") if raw.axis is not None else None
         return Joint(jid, kind.name, a, b, i, at=at, along=along, axis=axis, internal=raw.internal)
@@ -303,7 +292,7 @@ class _Builder:
         """A direction as a vector, or as two points [P, Q] (from P to Q, at this instant)."""
         if len(raw) == 2 and all(isinstance(v, str) and v in self.point_coords for v in raw):
             if raw[0] == raw[1]:
-                raise KinematikaError("schema", "a direction needs two different points", where)
+                raise KinematikaError("schema", "direction-same-points", where)
             return PointPair(raw[0], raw[1])
         return self.check_size(self.vector(raw, where), where)
 
@@ -320,8 +309,7 @@ class _Builder:
         if hasattr(raw, "joint"):
             ids = [j.id for j in self.joint_list]
             if raw.joint not in ids:
-                raise KinematikaError("schema", f"unknown joint {raw.joint!r} (joints: {', '.join(ids)})",
-                                      f"{where}.joint")
+                raise KinematikaError("schema", "unknown-joint", f"{where}.joint", joint=raw.joint, joints=ids)
             joint = next(j for j in self.joint_list if j.id == raw.joint)
             if joint.kind.coordinate is None:
                 raise joint.kind.no_rate(where)
@@ -340,16 +328,14 @@ class _Builder:
 
     def scalar(self, raw: Any, where: str) -> Expr:
         if isinstance(raw, list):
-            raise KinematikaError("schema", "expected one number (the component along `along`), "
-                                  "got a vector", where)
+            raise KinematikaError("schema", "expected-one-number", where)
         return self.expr(raw, where)
 
     def full_vector(self, raw: Any, where: str, zero_ok: bool = False) -> ExprVector:
         if not isinstance(raw, list):
             if zero_ok and raw in (0, 0.0):
                 return tuple(self.expr(0, where) for _ in range(self.dim))
-            raise KinematikaError("schema", f"expected a vector of {self.dim} components "
-                                  "(or give `along` for one component)", where)
+            raise KinematikaError("schema", "expected-vector", where, dim=self.dim)
         return self.vector(raw, where, (self.dim,))
 
     def angular(self, raw: Any, where: str) -> Expr | ExprVector:
@@ -365,8 +351,7 @@ class _Builder:
         if self.spec.ask is None:
             return self.default_questions()
         if len(self.spec.ask) > MAX_QUESTIONS:
-            raise KinematikaError("schema", f"{len(self.spec.ask)} questions: at most "
-                                  f"{MAX_QUESTIONS} in one model", "ask")
+            raise KinematikaError("schema", "questions-too-many", "ask", count=len(self.spec.ask), limit=MAX_QUESTIONS)
         return [self.question(i, q) for i, q in enumerate(self.spec.ask)]
 
     def default_questions(self) -> list[Question]:
@@ -385,8 +370,7 @@ class _Builder:
         where = f"ask[{i}]"
         kinds = [k for k in QUESTION_KINDS if getattr(raw, k) is not None]
         if len(kinds) != 1:
-            raise KinematikaError("schema", "a question has exactly one of the keys "
-                                  f"{', '.join(QUESTION_KINDS)}", where)
+            raise KinematikaError("schema", "question-one-key", where, keys=list(QUESTION_KINDS))
         kind = kinds[0]
         text = getattr(raw, kind)
         rel = None if raw.relative_to is None else self.known_body(raw.relative_to, f"{where}.relative_to")
@@ -397,26 +381,23 @@ class _Builder:
             joint = next((j for j in self.joint_list if j.id == text), None)
             if joint is None or not joint.kind.touches:
                 touching = [j.id for j in self.joint_list if j.kind.touches]
-                kinds = " or ".join(sorted(k.name for k in KINDS.values() if k.touches))
-                raise KinematikaError("schema", f"{text!r} is not a {kinds} joint (those are: "
-                                      f"{', '.join(touching) or 'none'})", f"{where}.contact")
+                kinds = Names(sorted(k.name for k in KINDS.values() if k.touches), joined="or")
+                raise KinematikaError("schema", "contact-not-touching", f"{where}.contact", text=text, kinds=kinds,
+                                      joints=touching)
             target = text
         else:
             target = self.known_body(text, f"{where}.{kind}")
         moving = None
         if kind == "decompose":
             if raw.moving is None:
-                raise KinematikaError("schema", "a decompose question needs `moving: BODY`, the "
-                                      "moving frame", where)
+                raise KinematikaError("schema", "decompose-needs-moving", where)
             moving = self.known_body(raw.moving, f"{where}.moving")
         elif raw.moving is not None:
-            raise KinematikaError("schema", "`moving` belongs to decompose questions", where)
+            raise KinematikaError("schema", "moving-only-decompose", where)
         if kind in {"icr", "pole", "inflection"} and self.dim == 3:
-            raise KinematikaError("schema", f"{kind} is a planar question; ask for the screw `axis` "
-                                  "in 3D", where)
+            raise KinematikaError("schema", "question-planar-only", where, kind=kind)
         if kind == "axis" and self.dim == 2:
-            raise KinematikaError("schema", "the screw axis is a 3D question; ask for `icr` in a "
-                                  "planar model", where)
+            raise KinematikaError("schema", "question-3d-only", where)
         return Question(kind, i, target, echo, relative_to=rel, moving=moving)
 
     def move(self) -> dict[str, Expr]:
@@ -425,8 +406,8 @@ class _Builder:
         ids = {j.id for j in self.joint_list}
         for jid, raw in (self.spec.move or {}).items():
             if jid not in ids:
-                raise KinematikaError("schema", f"unknown joint {jid!r} (joints: "
-                                      f"{', '.join(j.id for j in self.joint_list)})", f"move.{jid}")
+                raise KinematikaError("schema", "unknown-joint", f"move.{jid}", joint=jid,
+                                      joints=[j.id for j in self.joint_list])
             out[jid] = self.expr(raw, f"move.{jid}")
         return out
 
@@ -435,14 +416,22 @@ class _Builder:
         if raw is None:
             return None
         if raw.joint is not None and raw.joint not in {j.id for j in self.joint_list}:
-            raise KinematikaError("schema", f"unknown joint {raw.joint!r}", "sweep.joint")
+            raise KinematikaError("schema", "unknown-joint-bare", "sweep.joint", joint=raw.joint)
         if raw.steps < 1:
-            raise KinematikaError("schema", "steps must be at least 1", "sweep.steps")
+            raise KinematikaError("schema", "steps-at-least-one", "sweep.steps")
         return Sweep(raw.joint, self.expr(raw.by, "sweep.by"), raw.steps)
 
+    def simulate(self) -> Optional[Simulate]:
+        raw = self.spec.simulate
+        if raw is None:
+            return None
+        if raw.steps < 1:
+            raise KinematikaError("schema", "steps-at-least-one", "simulate.steps")
+        return Simulate(self.expr(raw.time, "simulate.time"), raw.steps)
 
-def _names(items: Iterable[str]) -> str:
-    return name_list(items)
+
+def _names(items: Iterable[str]) -> Names:
+    return Names(items)
 
 
 # pydantic errors as one line -------------------------------------------------------------
@@ -506,11 +495,8 @@ def _schema_error(err: ValidationError, tree: Any) -> KinematikaError:
     first = min(errors, key=_rank)
     loc = _clean(first["loc"])
     where = _place(loc, tree)
-    message = _message(first, loc)
     others = len({tuple(_clean(e["loc"])) for e in errors}) - 1
-    if others > 0:
-        message += f" (and {others} more problem{'s' if others > 1 else ''})"
-    return KinematikaError("schema", message, where)
+    return KinematikaError("schema", "schema-problems", where, problem=_message(first, loc), others=max(others, 0))
 
 
 def _clean(loc: tuple) -> list:
@@ -551,17 +537,17 @@ def _place(loc: list, tree: Any) -> str:
     return out
 
 
-def _message(error: dict, loc: list) -> str:
+def _message(error: dict, loc: list) -> Said:
     kind = error["type"]
     last = loc[-1] if loc else ""
     if kind == "extra_forbidden" and loc[:1] == ["drivers"] and last in _driver_tags():
-        return f"a driver has exactly one of {', '.join(sorted(_driver_tags()))}; {last!r} is a second one"
+        return Said("driver-second-kind", kinds=sorted(_driver_tags()), key=last)
     if kind == "extra_forbidden":
-        return f"unknown key {last!r}"
+        return Said("unknown-key", key=last)
     if kind == "missing":
-        return f"missing key {last!r}"
+        return Said("missing-key", key=last)
     if kind == "literal_error":
-        return f"{brief(error['input'])} is not one of {error['ctx']['expected']}"
+        return Said("not-one-of", value=brief(error['input']), expected=pydantic_choices(error['ctx']['expected']))
     if kind in {"int_type", "float_type", "string_type", "union_tag_invalid"} or kind.endswith("_type"):
-        return f"unexpected value {brief(error.get('input'))}: {error['msg'].lower()}"
-    return error["msg"]
+        return Said("unexpected-value", value=brief(error.get('input')), problem=pydantic_problem(error, lower=True))
+    return pydantic_problem(error)

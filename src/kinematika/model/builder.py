@@ -39,8 +39,7 @@ class Mechanism:
     def __init__(self, name: str = "Mechanism", parameters: Optional[dict[str, Any]] = None,
                  dimension: Optional[int] = None, frame: str = "ground") -> None:
         if parameters is not None and not isinstance(parameters, Mapping):
-            raise KinematikaError("schema", "parameters are a mapping of names to values, got "
-                                  f"{type(parameters).__name__}", "parameters")
+            raise KinematikaError("schema", "parameters-mapping", "parameters", type=type(parameters).__name__)
         self.tree: dict[str, Any] = {"name": name, "parameters": dict(parameters or {}),
                                      "points": {}, "bodies": {}, "joints": [], "drivers": []}
         if dimension is not None:

@@ -112,8 +112,7 @@ def construction_order(points: Mapping[str, object], extra: Optional[Mapping[str
             return
         if state.get(name) == 1:
             cycle = path[path.index(name):] + [name]
-            raise KinematikaError("schema", "the constructions refer to each other in a cycle: "
-                                  + " → ".join(cycle), f"points.{name}")
+            raise KinematikaError("schema", "construction-cycle", f"points.{name}", cycle=" → ".join(cycle))
         state[name] = 1
         spec = points[name]
         before = [] if isinstance(spec, tuple) else uses(spec)
@@ -176,16 +175,13 @@ class ConstructionReader:
         name or another shape is a schema error at `where`."""
         if isinstance(raw, str):
             if raw not in self.known:
-                raise KinematikaError("schema", f"unknown point {raw!r} (points: "
-                                      f"{', '.join(sorted(self.known))})", where)
+                raise KinematikaError("schema", "unknown-point", where, point=raw, points=sorted(self.known))
             return raw
         if not isinstance(raw, list):
-            raise KinematikaError("schema", f"expected a point's name or coordinates [x, y], got "
-                                  f"{_short(raw)}", where)
+            raise KinematikaError("schema", "construction-point-expected", where, got=_short(raw))
         vec = self.vector(raw, where)
         if len(vec) != 2:
-            raise KinematikaError("schema", f"constructions are planar: coordinates [x, y], got "
-                                  f"{len(vec)} components", where)
+            raise KinematikaError("schema", "construction-coordinates", where, got=len(vec))
         return vec
 
     def circle(self, raw: list, where: str) -> tuple[Location, Expr]:
@@ -193,8 +189,7 @@ class ConstructionReader:
         number, not a list)."""
         center, radius = raw
         if isinstance(radius, list):
-            raise KinematikaError("schema", "a circle is [centre, radius]: the radius is one number",
-                                  f"{where}[1]")
+            raise KinematikaError("schema", "construction-circle-radius", f"{where}[1]")
         return self.loc(center, f"{where}[0]"), self.expr(radius, f"{where}[1]")
 
     def line(self, raw: object, where: str) -> LineDef:
@@ -203,12 +198,10 @@ class ConstructionReader:
         if type(raw).__name__ == "LineSpec":
             direction = raw.direction
             if len(direction) == 2 and all(isinstance(v, str) and v in self.known for v in direction):
-                raise KinematikaError("schema", "a line's direction is a vector; for a line through "
-                                      "two points write [P, Q]", f"{where}.direction")
+                raise KinematikaError("schema", "construction-line-direction", f"{where}.direction")
             vec = self.vector(direction, f"{where}.direction")
             if len(vec) != 2:
-                raise KinematikaError("schema", "constructions are planar: a direction [dx, dy]",
-                                      f"{where}.direction")
+                raise KinematikaError("schema", "construction-direction-planar", f"{where}.direction")
             return LineDef(self.loc(raw.through, f"{where}.through"), direction=vec)
         assert isinstance(raw, list)
         through, toward = (self.loc(p, f"{where}[{i}]") for i, p in enumerate(raw))
@@ -221,19 +214,17 @@ class ConstructionReader:
         if raw is None:
             return None
         if self.symbolic:
-            raise KinematikaError("schema", "`near` needs numbers; in a model with symbolic "
-                                  "parameters choose the intersection with `side`", f"{where}.near")
+            raise KinematikaError("schema", "near-symbolic", f"{where}.near")
         vec = self.vector(raw, f"{where}.near")
         if len(vec) != 2:
-            raise KinematikaError("schema", "`near` is a sketch point [x, y]", f"{where}.near")
+            raise KinematikaError("schema", "near-point", f"{where}.near")
         return vec[0], vec[1]
 
     @staticmethod
     def distinct(pair: tuple[Location, Location], where: str) -> None:
         """Two named points must differ (a line or a frame through P and P has no direction)."""
         if isinstance(pair[0], str) and pair[0] == pair[1]:
-            raise KinematikaError("schema", f"two different points are needed, got {pair[0]!r} twice",
-                                  where)
+            raise KinematikaError("schema", "two-points-same", where, point=pair[0])
 
 
 def _short(raw: object) -> str:

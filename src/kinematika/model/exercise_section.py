@@ -120,36 +120,32 @@ def exercise_section(raw: Any, params: dict[str, Parameter], questions: int,
         known(lang, where)
         for name in PLACEHOLDER.findall(text):
             if name not in params:
-                raise KinematikaError("schema", f"{{{name}}} is not a parameter (parameters: "
-                                      f"{', '.join(params) or 'none'})", where)
+                raise KinematikaError("schema", "statement-placeholder", where, name=name, parameters=list(params))
         statement[lang] = text
     units = {name: _unit(text, f"exercise.units.{name}") for name, text in raw.units.items()}
     for name in units:
         if name not in params:
-            raise KinematikaError("schema", f"unknown parameter {name!r} (parameters: "
-                                  f"{', '.join(params) or 'none'})", f"exercise.units.{name}")
+            raise KinematikaError("schema", "unknown-parameter", f"exercise.units.{name}", name=name,
+                                  parameters=list(params))
     length = _unit(raw.length, "exercise.length")
     if length.kind != "length":
-        raise KinematikaError("schema", f"{raw.length!r} is not a length unit (units: "
-                              f"{', '.join(LENGTHS)})", "exercise.length")
+        raise KinematikaError("schema", "unit-not-length", "exercise.length", unit=raw.length, units=list(LENGTHS))
     ask = None if raw.ask is None else tuple(raw.ask)
     for i, k in enumerate(ask or ()):
         if not 1 <= k <= questions:
-            raise KinematikaError("schema", f"question {k} does not exist: the model asks "
-                                  f"{questions} (numbered from 1)", f"exercise.ask[{i}]")
+            raise KinematikaError("schema", "question-missing", f"exercise.ask[{i}]", number=k, count=questions)
     if ask is not None and (not ask or len(set(ask)) != len(ask)):
-        raise KinematikaError("schema", "name each graded question once (at least one)", "exercise.ask")
+        raise KinematikaError("schema", "graded-once", "exercise.ask")
     tolerance = float(raw.tolerance)
     if not 0 < tolerance < 1:
-        raise KinematikaError("schema", f"the tolerance is relative, between 0 and 1: got {tolerance:g}",
-                              "exercise.tolerance")
+        raise KinematikaError("schema", "tolerance-relative", "exercise.tolerance", tolerance=tolerance)
     weights = _weights(raw.weights, ask or tuple(range(1, questions + 1)))
     marks = []
     for i, d in enumerate(raw.dimensions):
         where = f"exercise.dimensions[{i}]"
         for name in d.between:
             if name not in points:
-                raise KinematikaError("schema", f"unknown point {name!r}", f"{where}.between")
+                raise KinematikaError("schema", "unknown-point-bare", f"{where}.between", point=name)
         marks.append(DimensionMark(tuple(d.between), d.along or "aligned", d.label))
     return ExerciseSection(statement, units, dict(raw.title), length, ask, tolerance, tuple(marks), weights)
 
@@ -160,16 +156,15 @@ def _weights(raw: Any, graded: tuple[int, ...]) -> dict[int, float]:
     if raw is None:
         return {}
     if len(raw) != len(graded):
-        raise KinematikaError("schema", f"give one weight per graded question: {len(graded)}, got {len(raw)}",
-                              "exercise.weights")
+        raise KinematikaError("schema", "weights-count", "exercise.weights", count=len(graded), got=len(raw))
     for i, w in enumerate(raw):
         if not (w > 0 and math.isfinite(w)):
-            raise KinematikaError("schema", f"a weight is a positive number, got {w!r}", f"exercise.weights[{i}]")
+            raise KinematikaError("schema", "weight-positive", f"exercise.weights[{i}]", got=w)
     return {k: float(w) for k, w in zip(graded, raw)}
 
 
 def _unit(text: str, where: str) -> Unit:
     unit = UNITS.get(text.strip())
     if unit is None:
-        raise KinematikaError("schema", f"unknown unit {text!r} (units: {', '.join(NAMES)})", where)
+        raise KinematikaError("schema", "unknown-unit", where, unit=text, units=list(NAMES))
     return unit

@@ -17,20 +17,16 @@ def draw_values(raw: Optional[dict[str, Any]], params: dict[str, Parameter]) -> 
         where = f"draw_at.{name}"
         param = params.get(name)
         if param is None:
-            known = ", ".join(params) or "none"
-            raise KinematikaError("schema", f"unknown parameter {name!r} (parameters: {known})",
-                                  where)
+            raise KinematikaError("schema", "unknown-parameter", where, name=name, parameters=list(params))
         if param.value is not None:
-            raise KinematikaError("schema", f"{name!r} has a value already: draw_at gives "
-                                  "numbers to symbolic parameters (null)", where)
+            raise KinematikaError("schema", "draw-at-has-value", where, name=name)
         value = float(value)
         if not math.isfinite(value) or (param.positive and value <= 0):
-            raise KinematikaError("schema", f"{name!r} is drawn at {value:g}: give a finite"
-                                  f"{' positive' if param.positive else ''} number", where)
+            raise KinematikaError("schema", "draw-at-not-finite", where, name=name, value=value,
+                                  positive=str(param.positive).lower())
         if value != 0 and not 1 / limits.SCALE <= abs(value) <= limits.SCALE:
-            raise KinematikaError("schema", f"{name!r} is drawn at {value:g}: figures are drawn with "
-                                  f"numbers between {1 / limits.SCALE:g} and {limits.SCALE:g} in size",
-                                  where)
+            raise KinematikaError("schema", "draw-at-range", where, name=name, value=value, low=1 / limits.SCALE,
+                                  high=float(limits.SCALE))
         out[name] = value
     return out
 
@@ -40,10 +36,8 @@ def up_vector(raw: Optional[list], dimension: int) -> Optional[tuple[float, floa
     if raw is None:
         return None
     if dimension != 3:
-        raise KinematikaError("schema", "up names the vertical of a 3D model; a planar model is "
-                              "drawn in its own plane", "up")
+        raise KinematikaError("schema", "up-planar", "up")
     vec = tuple(float(c) for c in raw)
     if len(vec) != 3 or not all(math.isfinite(c) for c in vec) or math.hypot(*vec) == 0:
-        raise KinematikaError("schema", "up is a non-zero direction of 3 numbers, such as "
-                              "[0, 1, 0]", "up")
+        raise KinematikaError("schema", "up-direction", "up")
     return vec

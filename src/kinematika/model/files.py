@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from .. import limits
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said, parser_problem, reason
 from ..text import brief
 from .build import build_model
 from .model import Model
@@ -31,37 +31,34 @@ FORMATS = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
 def read_tree(path: str | Path) -> Any:
     """The file's content as plain data; a `syntax` error names the line when it can."""
     if not isinstance(path, (str, Path)):
-        raise KinematikaError("schema", f"a model is a file path, a dict or a Mechanism, "
-                              f"not {type(path).__name__}")
+        raise KinematikaError("schema", "model-not-a-path", type=type(path).__name__)
     path = Path(path)
     where = str(path)
-    text, kind = read_text(path, "a model file")
+    text, kind = read_text(path, "model-file")
     if kind == "yaml" and _only_comments(text):
-        raise KinematikaError("syntax", "the file is empty", where)
+        raise KinematikaError("syntax", "file-empty", where)
     tree = parse_text(text, kind, where)
     if not isinstance(tree, dict):
-        raise KinematikaError("schema", f"a model is a mapping with keys points, bodies, joints, "
-                              f"drivers; this file holds {_kind_of(tree)}", where)
+        raise KinematikaError("schema", "model-not-a-mapping", where, holds=_kind_of(tree))
     return tree
 
 
 def read_text(path: Path, noun: str) -> tuple[str, str]:
     """The text of a model or cam file and its kind (yaml, toml, json, by the suffix): at
     most `limits.FILE_BYTES`, UTF-8 (a byte-order mark allowed), not blank; each refusal a
-    `syntax` error naming the file (`noun` says what such a file is)."""
+    `syntax` error naming the file (`noun` says what such a file is: `model-file` or `cam-file`)."""
     where = str(path)
     kind = FORMATS.get(path.suffix.lower())
     if kind is None:
-        raise KinematikaError("syntax", f"unknown file type {brief(path.suffix or '(none)', 20)}: "
-                              f"{noun} ends in {', '.join(FORMATS)}", where)
+        raise KinematikaError("syntax", "file-type-unknown", where, suffix=brief(path.suffix or '(none)', 20),
+                              noun=noun, suffixes=list(FORMATS))
     data = read_bytes(path, where)
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError as err:
-        raise KinematikaError("syntax", f"the file is not UTF-8 text (byte {err.start + 1})",
-                              where) from None
+        raise KinematikaError("syntax", "file-not-utf8", where, byte=err.start + 1) from None
     if not text.strip():
-        raise KinematikaError("syntax", "the file is empty", where)
+        raise KinematikaError("syntax", "file-empty", where)
     return text, kind
 
 
@@ -72,22 +69,21 @@ def read_bytes(path: Path, where: str) -> bytes:
     try:
         fd = os.open(path, flags)
     except FileNotFoundError:
-        raise KinematikaError("syntax", "no such file", where) from None
+        raise KinematikaError("syntax", "file-missing", where) from None
     except OSError as err:
-        raise KinematikaError("syntax", f"cannot read the file: {err.strerror or err}", where) from None
+        raise KinematikaError("syntax", "file-unreadable", where, reason=reason(err)) from None
     try:
         mode = os.fstat(fd).st_mode
         if stat.S_ISDIR(mode):
-            raise KinematikaError("syntax", "this is a folder, not a model file", where)
+            raise KinematikaError("syntax", "file-is-a-folder", where)
         chunks = _read_regular(fd) if stat.S_ISREG(mode) else _read_stream(fd, where)
     except OSError as err:
-        raise KinematikaError("syntax", f"cannot read the file: {err.strerror or err}", where) from None
+        raise KinematikaError("syntax", "file-unreadable", where, reason=reason(err)) from None
     finally:
         os.close(fd)
     data = b"".join(chunks)
     if len(data) > limits.FILE_BYTES:
-        raise KinematikaError("syntax", f"the file is too large for a model (more than "
-                              f"{limits.FILE_BYTES} bytes)", where)
+        raise KinematikaError("syntax", "file-too-large", where, limit=limits.FILE_BYTES)
     return data
 
 
@@ -110,8 +106,7 @@ def _read_stream(fd: int, where: str) -> list[bytes]:
     while size <= limits.FILE_BYTES:
         left = deadline - time.monotonic()
         if left <= 0 or not select.select([fd], [], [], left)[0]:
-            raise KinematikaError("syntax", f"the file gave no end within {limits.READ_SECONDS:g} s "
-                                  "(a pipe or a device, not a model file)", where)
+            raise KinematikaError("syntax", "file-no-end", where, seconds=float(limits.READ_SECONDS))
         try:
             chunk = os.read(fd, min(1 << 20, limits.FILE_BYTES + 1 - size))
         except BlockingIOError:       # woken without data: wait again, within the time limit
@@ -123,8 +118,8 @@ def _read_stream(fd: int, where: str) -> list[bytes]:
     return chunks
 
 
-def _kind_of(tree: Any) -> str:
-    return {list: "a list", str: "a text", type(None): "nothing"}.get(type(tree), "a single value")
+def _kind_of(tree: Any) -> Said:
+    return Said("holds", what={list: "list", str: "text", type(None): "nothing"}.get(type(tree), "value"))
 
 
 def _only_comments(text: str) -> bool:
@@ -136,8 +131,7 @@ def parse_text(text: str, kind: str, where: str = "") -> Any:
     limits on nesting and aliases, its strings valid Unicode."""
     readers = {"json": _json, "toml": _toml, "yaml": _yaml}
     if len(text) > limits.FILE_BYTES:
-        raise KinematikaError("syntax", f"the text is too large for a model (more than "
-                              f"{limits.FILE_BYTES} characters)", where)
+        raise KinematikaError("syntax", "text-too-large", where, limit=limits.FILE_BYTES)
     if kind == "yaml":
         tree = _plain_yaml(text)
         if tree is not _UNUSUAL:
@@ -147,15 +141,13 @@ def parse_text(text: str, kind: str, where: str = "") -> Any:
     except RecursionError:
         raise _too_deep(where) from None
     except ValueError as err:       # e.g. an integer literal of thousands of digits
-        raise KinematikaError("syntax", f"unreadable {kind.upper()}: {err}", where) from None
+        raise KinematikaError("syntax", "text-unreadable", where, format=kind.upper(), detail=str(err)) from None
     check_tree(tree, where)
     return tree
 
 
 def _too_deep(where: str, line: int | None = None) -> KinematikaError:
-    at = f", line {line}" if line else ""
-    return KinematikaError("syntax", f"the file is nested too deeply to be a model (more than "
-                           f"{limits.NESTING} levels{at})", where)
+    return KinematikaError("syntax", "file-too-deep", where, levels=limits.NESTING, line=line or 0)
 
 
 def check_tree(tree: Any, where: str = "") -> None:
@@ -172,8 +164,8 @@ def check_tree(tree: Any, where: str = "") -> None:
         if isinstance(node, dict):
             long = next((k for k in node if isinstance(k, str) and len(k) > limits.NAME_CHARS), None)
             if long is not None:
-                raise KinematikaError("syntax", f"the name {brief(long, 30)} has {len(long)} "
-                                      f"characters: names have at most {limits.NAME_CHARS}", where)
+                raise KinematikaError("syntax", "name-too-long", where, name=brief(long, 30), length=len(long),
+                                      limit=limits.NAME_CHARS)
             children = [*node.keys(), *node.values()]
         elif isinstance(node, list):
             children = node
@@ -188,14 +180,11 @@ def _check_unicode(text: str, where: str) -> None:
     try:
         text.encode("utf-8")
     except UnicodeEncodeError:
-        raise KinematikaError("syntax", f"the text {brief(text, 30)} holds a lone surrogate, "
-                              "which is not Unicode text", where) from None
+        raise KinematikaError("syntax", "text-lone-surrogate", where, text=brief(text, 30)) from None
 
 
 def _duplicate(key: Any, where: str, line: int | None = None) -> KinematikaError:
-    at = f" at line {line}" if line else ""
-    return KinematikaError("syntax", f"duplicate key {brief(key)}{at}: each key may appear only once",
-                           where)
+    return KinematikaError("syntax", "key-duplicate", where, key=brief(key), line=line or 0)
 
 
 def _json(text: str, where: str) -> Any:
@@ -210,15 +199,15 @@ def _json(text: str, where: str) -> Any:
     try:
         return json.loads(text, object_pairs_hook=pairs)
     except json.JSONDecodeError as err:
-        raise KinematikaError("syntax", f"invalid JSON at line {err.lineno}, column {err.colno}: "
-                              f"{err.msg}", where) from None
+        raise KinematikaError("syntax", "json-invalid", where, line=err.lineno, column=err.colno,
+                              problem=parser_problem(err.msg)) from None
 
 
 def _toml(text: str, where: str) -> Any:
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as err:
-        raise KinematikaError("syntax", f"invalid TOML: {err}", where) from None
+        raise KinematikaError("syntax", "toml-invalid", where, problem=parser_problem(str(err))) from None
 
 
 def _yaml(text: str, where: str) -> Any:
@@ -233,8 +222,8 @@ def _yaml(text: str, where: str) -> Any:
         problem = getattr(err, "problem", None) or "unreadable"
         if "nesting depth" in problem:      # PyYAML ≥ 6.0.4 stops at its own depth first
             raise _too_deep(where, mark.line + 1 if mark else None) from None
-        at = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
-        raise KinematikaError("syntax", f"invalid YAML{at}: {problem}", where) from None
+        raise KinematikaError("syntax", "yaml-invalid", where, line=mark.line + 1 if mark else 0,
+                              column=mark.column + 1 if mark else 0, problem=parser_problem(problem)) from None
 
 
 _UNUSUAL = object()     # what `_plain_yaml` leaves to the full reader
@@ -357,15 +346,13 @@ def _check_events(yaml: Any, text: str, loader: type, where: str) -> None:
         elif isinstance(event, events.AliasEvent):
             if event.anchor not in sizes:
                 inside = any(frame[0] == event.anchor for frame in stack)
-                raise KinematikaError("syntax", f"the alias *{brief(event.anchor, 30)[1:-1]} at line "
-                                      f"{line} {'is inside what it names' if inside else 'names no anchor'}",
-                                      where)
+                raise KinematikaError("syntax", "yaml-alias-inside" if inside else "yaml-alias-unknown", where,
+                                      alias=brief(event.anchor, 30)[1:-1], line=line or 0)
             count, below = sizes[event.anchor]
             added += count - 1
             if added > limits.ALIAS_NODES:
-                raise KinematikaError("syntax", f"the aliases expand to more than "
-                                      f"{limits.ALIAS_NODES} values (at line {line}): too many "
-                                      "for a model", where)
+                raise KinematikaError("syntax", "yaml-aliases-too-many", where, limit=limits.ALIAS_NODES,
+                                      line=line or 0)
             close(None, count, below, line)
 
 
@@ -403,7 +390,7 @@ def load_cam(path: str | Path) -> Any:
     from ..cams.spec import design, parse
 
     path = Path(path)
-    text, kind = read_text(path, "a cam file")
+    text, kind = read_text(path, "cam-file")
     tree = parse_text(text, kind, str(path))
     if isinstance(tree, dict) and "bodies" in tree:
         return _model_cam(build_model(tree), str(path))
@@ -429,5 +416,5 @@ def _model_cam(model: Model, where: str) -> Any:
                                                  OverflowError):
                             speed = abs(float(evaluate(d.value, numeric_parameters(model), Numeric())))
                 return dataclasses.replace(shape.design, speed=speed, title=model.name)
-    raise KinematikaError("schema", "this model has no cam: give a body a `cam:` shape", where)
+    raise KinematikaError("schema", "model-no-cam", where)
 

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import TYPE_CHECKING, Any, Optional, Union
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Names
 from ..joints import JointKind
 from ..joints import kind as joint_kind
 from ..expressions import Expr
@@ -259,6 +259,15 @@ class Sweep:
 
 
 @dataclass
+class Simulate:
+    """A model's `simulate` section: how long its motion is followed in time (seconds) and in
+    how many equal steps of time."""
+
+    time: Expr
+    steps: int
+
+
+@dataclass
 class Model:
     """A mechanism parsed: its parameters, points (coordinates or constructions), bodies,
     joints, drivers and questions, with names resolved and expressions unevaluated; the engine
@@ -276,6 +285,7 @@ class Model:
     drivers: list[Driver]
     questions: list[Question]
     sweep: Optional[Sweep] = None
+    simulate: Optional[Simulate] = None                    # `kinematika simulate`: time, steps
     move: dict[str, Expr] = field(default_factory=dict)    # joint id -> advance (deg or length)
     turns: list[Turn] = field(default_factory=list)        # bodies carried from the drawing
     default_questions: bool = False   # no `ask` was written: every body and point is asked
@@ -311,29 +321,25 @@ class Model:
         if isinstance(text, PointRef):
             return text
         if not isinstance(text, str):
-            raise KinematikaError("schema", f"a point is named by a string such as 'B' or "
-                                  f"'B@rocker', got {text!r}", where)
+            raise KinematikaError("schema", "point-name-not-text", where, got=repr(text))
         point, at, body = text.partition("@")
         if at and not body:
             example = next(iter(self.carriers(point)), "body")
-            raise KinematikaError("schema", f"{text!r}: name the body after '@' (as in "
-                                  f"'{point}@{example}')", where)
+            raise KinematikaError("schema", "point-body-after-at", where, text=text, example=f"{point}@{example}")
         if point not in self.points:
-            raise KinematikaError("schema", f"unknown point {point!r} (points: "
-                                  f"{', '.join(self.points)})", where)
+            raise KinematikaError("schema", "unknown-point", where, point=point, points=list(self.points))
         carriers = self.carriers(point)
         if body:
             if body not in self.bodies:
-                raise KinematikaError("schema", f"unknown body {body!r} (bodies: "
-                                      f"{', '.join(self.bodies)})", where)
+                raise KinematikaError("schema", "unknown-body", where, body=body, bodies=list(self.bodies))
             if body not in carriers:
-                raise KinematikaError("schema", f"body {body!r} does not carry point {point!r} "
-                                      f"(carried by {', '.join(carriers)})", where)
+                raise KinematikaError("schema", "body-not-carrying", where, body=body, point=point,
+                                      carriers=carriers)
             return PointRef(point, body)
         if len(carriers) > 1 and not self.share_motion(point, carriers):
-            choices = " or ".join(f"{point}@{b}" for b in carriers)
-            raise KinematikaError("schema", f"point {point!r} is carried by {', '.join(carriers)}, "
-                                  f"which move differently there: write {choices}", where)
+            choices = Names([f"{point}@{b}" for b in carriers], joined="or")
+            raise KinematikaError("schema", "point-ambiguous", where, point=point, carriers=carriers,
+                                  choices=choices)
         return PointRef(point, carriers[0])
 
     def share_motion(self, point: str, carriers: list[str]) -> bool:

@@ -24,20 +24,18 @@ def with_parameters(model: Model, values: Mapping[str, Optional[str]]) -> Model:
     params = dict(model.parameters)
     for name, text in values.items():
         if name not in params:
-            known = ", ".join(params) or "none"
-            raise KinematikaError("usage", f"unknown parameter {name!r} (parameters: {known})",
-                                  "--set")
+            raise KinematikaError("usage", "unknown-parameter", "--set", name=name, parameters=list(params))
         if text is None or str(text).strip() == "null":
             params[name] = Parameter(name, None, params[name].positive)
             continue
         try:
             expr = parse(text)
         except ExpressionError as err:
-            raise KinematikaError("schema", str(err), f"--set {name}") from None
+            raise KinematikaError("schema", err.said, f"--set {name}") from None
         unknown = sorted(expr.names() - set(params) - {"pi"})
         if unknown:
-            raise KinematikaError("schema", f"unknown name {unknown[0]!r} in {text!r} (parameters: "
-                                  f"{', '.join(params) or 'none'})", f"--set {name}")
+            raise KinematikaError("schema", "unknown-name-in-parameters", f"--set {name}", name=unknown[0], text=text,
+                                  parameters=list(params))
         params[name] = Parameter(name, expr, params[name].positive)
     return dataclasses.replace(model, parameters=params)
 

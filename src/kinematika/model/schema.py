@@ -291,6 +291,14 @@ class SweepSpec(Strict):
     steps: StrictInt = 360
 
 
+class SimulateSpec(Strict):
+    """`simulate`: how long the motion is followed in time (seconds) and in how many equal
+    steps of time (default 200); `kinematika simulate`'s --time and --steps override it."""
+
+    time: Value
+    steps: StrictInt = 200
+
+
 class DimensionSpec(Strict):
     """A dimension drawn on an exercise's figure: the distance between two points, along x,
     along y or aligned with them (the default), labelled with a parameter or a text."""
@@ -319,13 +327,15 @@ class LanguageNames(Strict):
     bodies: dict[str, str] = Field(default_factory=dict)
     points: dict[str, str] = Field(default_factory=dict)
     joints: dict[str, str] = Field(default_factory=dict)
+    parameters: dict[str, str] = Field(default_factory=dict)
+    data: list[str] = Field(default_factory=list)
     notes: list[str] = Field(default_factory=list)
 
 
 class ModelSpec(Strict):
     """A model file as the contract writes it (docs/model-format.md): name and description,
     dimension (inferred when absent), the frame's name, parameters, points, bodies, joints,
-    drivers, questions (`ask`), and the optional `sweep`, `move`, `draw_at`, `up` and `exercise`
+    drivers, questions (`ask`), and the optional `sweep`, `simulate`, `move`, `draw_at`, `up` and `exercise`
     sections."""
 
     name: Optional[str] = None
@@ -339,6 +349,7 @@ class ModelSpec(Strict):
     drivers: list[DriverSpec] = Field(default_factory=list)
     ask: Optional[list[QuestionSpec]] = None
     sweep: Optional[SweepSpec] = None
+    simulate: Optional[SimulateSpec] = None
     move: Optional[dict[str, Value]] = None
     draw_at: Optional[dict[str, Union[StrictInt, StrictFloat]]] = None   # figures: symbols' values
     up: Optional[list[Union[StrictInt, StrictFloat]]] = None             # figures: the vertical (3D)

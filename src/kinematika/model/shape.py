@@ -136,6 +136,10 @@ SweepSpec, sweep_spec = record('SweepSpec', {
     'by': (value, 360),
     'steps': (exact(int), 360),
 })
+SimulateSpec, simulate_spec = record('SimulateSpec', {
+    'time': (value, REQUIRED),
+    'steps': (exact(int), 200),
+})
 DimensionSpec, dimension_spec = record('DimensionSpec', {
     'between': (listed(exact(str), 2, 2), REQUIRED),
     'along': (optional(one_of('x', 'y', 'aligned')), None),
@@ -156,6 +160,8 @@ LanguageNames, language_names = record('LanguageNames', {
     'bodies': (mapping(exact(str)), dict),
     'points': (mapping(exact(str)), dict),
     'joints': (mapping(exact(str)), dict),
+    'parameters': (mapping(exact(str)), dict),
+    'data': (listed(exact(str)), list),
     'notes': (listed(exact(str)), list),
 })
 ModelSpec, model_spec = record('ModelSpec', {
@@ -170,6 +176,7 @@ ModelSpec, model_spec = record('ModelSpec', {
     'drivers': (listed(driver_spec), list),
     'ask': (optional(listed(question_spec)), None),
     'sweep': (optional(sweep_spec), None),
+    'simulate': (optional(simulate_spec), None),
     'move': (optional(mapping(value)), None),
     'draw_at': (optional(mapping(exact(int, float))), None),
     'up': (optional(listed(exact(int, float))), None),
@@ -181,7 +188,8 @@ ModelSpec, model_spec = record('ModelSpec', {
 RECORDS = (
     ModelSpec, ParameterSpec, PolarSpec, FrameSpec, CirclesSpec, CircleLineSpec, LineSpec, LinesSpec,
     BodySpec, CircleSpec, DiscSpec, PlaneSpec, CurveSpec, JointSpec, OmegaDriver, JointDriver,
-    VelocityDriver, QuestionSpec, SweepSpec, ExerciseSpec, DimensionSpec, LanguageNames,
+    VelocityDriver, QuestionSpec, SweepSpec, SimulateSpec, ExerciseSpec, DimensionSpec,
+    LanguageNames,
 )
 
 

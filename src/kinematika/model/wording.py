@@ -7,6 +7,8 @@ figures say, and nothing else reads (the answers keep the model's own names).
         bodies: {carrier: el portador, sun: la roda central, ring: la corona}
         points: {A1: centre del primer satèl·lit}
         joints: {hub: boixa}               # a joint's id, as the text names it
+        parameters: {r: radi de la roda central}   # what a parameter is (the Data section)
+        data: ["La figura dels apunts s’ha perdut: …"]   # statements of the Data section
         notes: ["Els apunts donen …; el correcte és … perquè …"]
     notation:                             # how a quantity is written (sympy's spelling)
       w0: omega_0                         # a parameter: ω₀
@@ -14,6 +16,8 @@ figures say, and nothing else reads (the answers keep the model's own names).
       omega(block): omega_1               # ω of a body (relative to the frame): ω₁
       omega(blades/block): omega_2        # relative to another body: ω₂
       omega(blades): {eu: omega_aspak, ca: omega_aspes}   # per language
+      index(wheel1): "1"                  # a body's index in every symbol (ω_1, v_B∈1, I_12)
+      spin(j3): {symbol: phidot, radius: r}   # a knife-edge wheel's spin: φ̇ = v·e / r
 
 A written symbol is a name as sympy reads one (`omega_0` ω₀, `vdot` v̇, `R_roda`), so every
 format (HTML, Markdown, LaTeX, the figures' mathtext) sets it as it sets the model's own
@@ -25,7 +29,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Names
 from ..languages import known             # the explanations' languages (each has a catalogue)
 
 # the articles a name may begin with in Catalan and Spanish (`names.ca.bodies: {carrier: el
@@ -39,12 +43,20 @@ PART_SUBSCRIPTS = {"sub.rel": {"en": "rel", "es": "rel", "ca": "REL", "eu": "erl
                    "sub.cor": {"en": "Cor", "es": "Cor", "ca": "Cor", "eu": "Cor"}}
 
 
+# a screw axis as a figure labels it, in each course's words (the Catalan notes' EIRL, eix
+# instantani de rotació i lliscament; the Spanish EIR; the Basque ardatz instantaneoa)
+SCREW_AXIS = {"en": "ISA", "es": "EIR", "ca": "EIRL", "eu": "ardatz instantaneoa"}
+
+
 def part_subscript(key: str, lang: Optional[str]) -> str:
     """The subscript `key` (sub.rel, sub.drag, sub.cor) in `lang` (English when None)."""
     words = PART_SUBSCRIPTS[key]
     return words.get(lang or "en", words["en"])
 RATE = re.compile(r"^(omega|alpha)\((.+)\)$")
 SPELLING = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")      # a name sympy writes as a symbol
+INDEX_KEY = re.compile(r"^index\((.+)\)$")                # notation: index(BODY): N
+SPIN_KEY = re.compile(r"^spin\((.+)\)$")                  # notation: spin(JOINT): {symbol, radius}
+INDEX = re.compile(r"^[A-Za-z0-9]{1,4}$")                 # a body's index as the notes write it
 
 
 @dataclass
@@ -55,7 +67,11 @@ class Wording:
     bodies: dict[str, dict[str, str]] = field(default_factory=dict)     # lang -> body -> name
     points: dict[str, dict[str, str]] = field(default_factory=dict)     # lang -> point -> text
     joints: dict[str, dict[str, str]] = field(default_factory=dict)     # lang -> joint id -> name
+    parameters: dict[str, dict[str, str]] = field(default_factory=dict)  # lang -> parameter -> what it is
+    data: dict[str, list[str]] = field(default_factory=dict)            # lang -> statements of the data
     notes: dict[str, list[str]] = field(default_factory=dict)           # lang -> notes
+    indices: dict[str, dict[str, str]] = field(default_factory=dict)    # body -> lang|"*" -> its index
+    spins: dict[str, tuple[str, str]] = field(default_factory=dict)     # wheel joint -> (symbol, radius)
     symbols: dict[str, dict[str, str]] = field(default_factory=dict)    # key -> lang|"*" -> name
 
     def title(self, lang: str, default: str) -> str:
@@ -73,6 +89,16 @@ class Wording:
     def point(self, name: str, lang: Optional[str]) -> str:
         """What the point is, in `lang` ('' when the model does not say)."""
         return self.points.get(lang or "", {}).get(name, "")
+
+    def parameter(self, name: str, lang: Optional[str]) -> str:
+        """What the parameter is, in `lang` ('' when the model does not say)."""
+        return self.parameters.get(lang or "", {}).get(name, "")
+
+    def index(self, body: str, lang: Optional[str]) -> Optional[str]:
+        """The body's index as the notes write it (`notation: index(BODY)`), None when the
+        model gives none (the body is numbered)."""
+        spelt = self.indices.get(body)
+        return None if spelt is None else spelt.get(lang or "", spelt.get("*"))
 
     def symbol(self, key: str, lang: Optional[str]) -> Optional[str]:
         """How `key` is written in `lang`: a parameter's name, or `omega(body)`,
@@ -103,7 +129,7 @@ def noun(name: str, lang: Optional[str] = None) -> str:
 
 
 def read_wording(names: Any, notation: Any, bodies: dict, points: dict, parameters: dict,
-                 default_title: str, joints: Optional[dict] = None) -> Wording:
+                 default_title: str, joints: Optional[dict] = None, frame: str = "ground") -> Wording:
     """The checked `names:` and `notation:` sections (either may be None)."""
     out = Wording()
     for lang, spec in (names or {}).items():
@@ -117,9 +143,25 @@ def read_wording(names: Any, notation: Any, bodies: dict, points: dict, paramete
                             for p, t in (spec.points or {}).items()}
         out.joints[lang] = {_known(j, joints or {}, "joint", f"{where}.joints"): _text(t, f"{where}.joints.{j}")
                             for j, t in (spec.joints or {}).items()}
+        out.parameters[lang] = {_known(p, parameters, "parameter", f"{where}.parameters"):
+                                _text(t, f"{where}.parameters.{p}") for p, t in (spec.parameters or {}).items()}
+        out.data[lang] = [_text(t, f"{where}.data[{i}]") for i, t in enumerate(spec.data or [])]
         out.notes[lang] = [_text(t, f"{where}.notes[{i}]") for i, t in enumerate(spec.notes or [])]
     for raw, spelt in (notation or {}).items():
         where = f"notation.{raw}"
+        spin = SPIN_KEY.match(raw.strip())
+        if spin is not None:
+            out.spins[_spin_joint(spin.group(1).strip(), joints or {}, where)] = _spin(spelt, parameters, where)
+            continue
+        index = INDEX_KEY.match(raw.strip())
+        if index is not None:
+            b = _known(index.group(1).strip(), bodies, "body", where)
+            given = {"*": spelt} if isinstance(spelt, str) else dict(spelt)
+            for lang in given:
+                if lang != "*":
+                    _language(lang, f"{where}.{lang}")
+            out.indices[b] = {lang: _index(i, f"{where}.{lang}" if lang != "*" else where) for lang, i in given.items()}
+            continue
         key = _notation_key(raw, bodies, parameters, where)
         if isinstance(spelt, str):
             out.symbols[key] = {"*": _spelling(spelt, where)}
@@ -127,7 +169,52 @@ def read_wording(names: Any, notation: Any, bodies: dict, points: dict, paramete
             for lang in spelt:
                 _language(lang, f"{where}.{lang}")
             out.symbols[key] = {lang: _spelling(s, f"{where}.{lang}") for lang, s in spelt.items()}
+    _distinct_indices(out, [frame] + [b for b in bodies if b != frame])
     return out
+
+
+def _distinct_indices(out: Wording, order: list) -> None:
+    """No two bodies share an index, in any language (a given index against the numbers of
+    the others, too: a body left numbered keeps its place in the file)."""
+    if not out.indices:
+        return
+    from ..languages import LANGS
+
+    for lang in LANGS:
+        seen: dict[str, str] = {}
+        for k, b in enumerate(order, start=1):
+            spelt = out.indices.get(b)
+            text = str(k) if spelt is None else spelt.get(lang, spelt.get("*", str(k)))
+            if text in seen:
+                raise KinematikaError("schema", "index-twice", f"notation.index({b})", first=seen[text], second=b,
+                                      index=text)
+            seen[text] = b
+
+
+def _spin_joint(name: str, joints: dict, where: str) -> str:
+    """A knife-edge wheel's joint (`spin(j3)`): its spin is the speed of its point along its
+    plane over its radius."""
+    _known(name, joints, "joint", where)
+    if not getattr(joints[name].kind, "knife_edge", False):
+        raise KinematikaError("schema", "spin-not-wheel", where, joint=name)
+    return name
+
+
+def _spin(spelt: Any, parameters: dict, where: str) -> tuple[str, str]:
+    """{symbol: NAME, radius: PARAMETER}: how the spin is written and the wheel's radius."""
+    if not isinstance(spelt, dict) or set(spelt) != {"symbol", "radius"}:
+        raise KinematikaError("schema", "spin-shape", where)
+    radius = spelt["radius"]
+    if radius not in parameters:
+        raise KinematikaError("schema", "spin-radius-unknown", f"{where}.radius", radius=radius,
+                              parameters=Names(parameters))
+    return _spelling(spelt["symbol"], f"{where}.symbol"), radius
+
+
+def _index(text: str, where: str) -> str:
+    if not isinstance(text, str) or not INDEX.match(text):
+        raise KinematikaError("schema", "index-shape", where, index=str(text))
+    return text
 
 
 def _language(lang: str, where: str) -> None:
@@ -136,13 +223,13 @@ def _language(lang: str, where: str) -> None:
 
 def _text(text: str, where: str) -> str:
     if not text.strip():
-        raise KinematikaError("schema", "a name or a note is not empty", where)
+        raise KinematikaError("schema", "name-or-note-empty", where)
     return text.strip()
 
 
 def _known(name: str, known: dict, kind: str, where: str) -> str:
     if name not in known:
-        raise KinematikaError("schema", f"unknown {kind} {name!r} ({kind}s: {', '.join(known) or 'none'})", where)
+        raise KinematikaError("schema", f"unknown-{kind}", where, **{kind: name, f"{kind}s": list(known)})
     return name
 
 
@@ -152,14 +239,11 @@ def _notation_key(key: str, bodies: dict, parameters: dict, where: str) -> str:
     rate = RATE.match(key.strip())
     if rate is None:
         if key not in parameters:
-            raise KinematikaError("schema", f"{key!r} is neither a parameter (parameters: "
-                                  f"{', '.join(parameters) or 'none'}) nor omega(BODY), "
-                                  "omega(BODY/OTHER), alpha(…)", where)
+            raise KinematikaError("schema", "notation-key-unknown", where, key=key, parameters=list(parameters))
         return key
     parts = [b.strip() for b in rate.group(2).split("/")]
     if len(parts) > 2:
-        raise KinematikaError("schema", f"{key!r}: a rate is of one body, or of one body relative "
-                              "to another (omega(blades/block))", where)
+        raise KinematikaError("schema", "notation-rate-bodies", where, key=key)
     for b in parts:
         _known(b, bodies, "body", where)
     return f"{rate.group(1)}({'/'.join(parts)})"
@@ -172,6 +256,5 @@ def rate_key(kind: str, body: str, relative_to: Optional[str] = None) -> str:
 
 def _spelling(name: str, where: str) -> str:
     if not SPELLING.match(name):
-        raise KinematikaError("schema", f"{name!r} is not a symbol's name: letters, digits and _ "
-                              "as sympy spells them (omega_0 is ω₀, vdot is v̇, R_roda)", where)
+        raise KinematikaError("schema", "notation-spelling", where, name=name)
     return name

@@ -4,10 +4,12 @@ The normal acceleration aₙ = a − (a·v̂) v̂ points to the centre of curvat
 ρ = v²/|aₙ| from the point: centre = P + (v²/|aₙ|²) aₙ. In the plane this is
 P + (v·v)/(v × a) (k × v), with no absolute value needed.
 
-In exact answers, a point of a body pinned to the frame of reference moves on a circle
-about the pin: the centre is the pin and ρ = |P − pin| (the rocker's pin of a four-bar is
-at the rocker's length from its pivot, whatever the formulas of its speed), the shortest
-of that and the general form is given.
+In exact answers the structure is asked first: a material point that moves as a point of a
+body pinned to the frame of reference (its own body, or one joined to it by a pin there: the
+coupler's B is the rocker's pin) moves on a circle about that pin, so the centre is the pin
+and ρ = |P − pin| brought to its canonical form (the rocker's length of a four-bar, whatever
+the formulas of its speed), and the general form |v|³/|v × a| — long, and the costliest
+exact work of the answer — is not formed at all.
 """
 from __future__ import annotations
 
@@ -20,30 +22,35 @@ from ..solution import Solution
 
 def curvature(sol: Solution, q: Question) -> dict[str, Any]:
     """The curvature of material point `q.target`'s path seen from `q.relative_to`: ρ = v³/|v ×
-    a| and the centre P + (v·v)/(v × a) (k × v) (`path_curvature`); exactly, for a body pinned
-    to that frame, the pin and ρ = |P − pin| when that is shorter."""
+    a| and the centre P + (v·v)/(v × a) (k × v) (`path_curvature`); exactly, when the point
+    moves as a point of a body pinned to that frame, the pin and ρ = |P − pin|."""
     p = sol.position(q.target)
     v = sol.velocity(q.target, q.relative_to)
     a = sol.acceleration(q.target, q.relative_to)
-    out = path_curvature(sol, p, v, a)
-    pin = _pin(sol, q) if sol.symbolic and out.get("radius") is not None else None
-    if pin is not None:
-        out = {"radius": _shortest(_distance(p, pin), out["radius"]), "center": pin}
-    return out
+    pin = _pin(sol, q) if sol.symbolic else None
+    if pin is not None and not sol.is_zero(v, sol.speed_scale()):
+        return {"radius": _distance(p, pin), "center": pin}
+    return path_curvature(sol, p, v, a)
 
 
 def _pin(sol: Solution, q: Question) -> tuple | None:
-    """The place of a pin joining the point's body to the frame of reference (planar): the
-    point's path relative to that frame is a circle about it. None when there is none."""
+    """The place of a pin joining the frame of reference to a body the point moves with
+    (planar: its own body, or one pinned to it at the point): the point's path relative to
+    that frame is a circle about the pin. None when there is none."""
     model = sol.model
-    body = sol.point(q.target).body
+    ref = sol.point(q.target)
     frame = q.relative_to or model.frame
-    if sol.space.dim != 2 or body == frame:
+    if sol.space.dim != 2 or ref.body == frame:
         return None
-    for name in model.bodies[body].points:
-        classes = model.motion_classes(name, model.carriers(name))
-        if any(body in c and frame in c for c in classes):
-            return sol.position(name)
+    moving = next((c for c in model.motion_classes(ref.point, model.carriers(ref.point)) if ref.body in c),
+                  [ref.body])
+    for body in sorted(moving, key=lambda b: b != ref.body):      # its own body first
+        if body == frame:
+            return None                                           # the point is the frame's
+        for name in model.bodies[body].points:
+            classes = model.motion_classes(name, model.carriers(name))
+            if any(body in c and frame in c for c in classes):
+                return sol.position(name)
     return None
 
 
@@ -55,13 +62,6 @@ def _distance(p: tuple, q: tuple) -> Any:
 
     d = sub(p, q)
     return sympy.sqrt(canonical(dot(d, d)))
-
-
-def _shortest(*forms: Any) -> Any:
-    """The shortest of equal forms (in operations; the first on a tie)."""
-    from ..algebra.fields import ops
-
-    return min(forms, key=ops)
 
 
 def path_curvature(sol: Solution, p: tuple, v: tuple, a: tuple) -> dict[str, Any]:

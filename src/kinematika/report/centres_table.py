@@ -25,8 +25,7 @@ def centres_data(sol: Solution) -> dict[str, Any]:
     a joint, by Kennedy via two third bodies, or from the velocities), and the named quantities
     of a symbolic model. A 3D model is refused: it has screw axes instead."""
     if sol.space.dim != 2:
-        raise KinematikaError("schema", "instant centres are planar; ask for the screw `axis` of "
-                              "each body in 3D", "dimension")
+        raise KinematikaError("schema", "centres-planar", "dimension")
     fields = answer_scales(sol)[1]
     rows = []
     for c in all_centres(sol):

@@ -69,16 +69,21 @@ class FourBar:
         s, l = min(lengths), max(lengths)
         return s + l <= sum(lengths) - s - l + 1e-9 * l and min(self.ground, self.crank) == s
 
-    def summary(self) -> list[str]:
+    def summary(self, drawn: Optional[dict[str, float]] = None) -> list[str]:
         """Lines for the summary of `kinematika sweep`: the lengths, Grashof's classification,
-        the limit positions (crank angle from the drawing, rocker angle) and, when the crank
-        turns fully and both limits exist, the time ratio of the rocker's strokes, the larger
-        crank angle between the limits over the smaller."""
+        the limit positions and, when the crank turns fully and both limits exist, the time
+        ratio of the rocker's strokes, the larger crank angle between the limits over the
+        smaller. With the `drawn` angles θ of the crank and the rocker (from the x axis), a
+        limit position gives their angles θ there; else the turns from the drawing."""
         out = [f"four-bar: ground {self.ground:.6g}, crank {self.crank:.6g}, coupler "
                f"{self.coupler:.6g}, rocker {self.rocker:.6g}", f"  {self.grashof}"]
         for lim in self.limits:
-            out.append(f"  limit position ({lim.name}): crank at {lim.crank:.4g} deg from the drawn "
-                       f"position, rocker at {lim.output:+.4g} deg")
+            if drawn and "rocker" in drawn:
+                out.append(f"  limit position ({lim.name}): crank at θ = {drawn['crank'] + lim.crank:.4g} "
+                           f"deg, rocker at θ = {drawn['rocker'] + lim.output:.4g} deg")
+            else:
+                out.append(f"  limit position ({lim.name}): crank at {lim.crank:.4g} deg from the drawn "
+                           f"position, rocker at {lim.output:+.4g} deg")
         if len(self.limits) == 2 and self.crank_turns:
             a = (self.limits[1].crank - self.limits[0].crank) % 360.0
             ratio = max(a, 360 - a) / min(a, 360 - a) if 0 < a < 360 else float("nan")
@@ -117,10 +122,10 @@ class SliderCrank:
         e2 = self.offset ** 2
         return math.sqrt((self.rod + self.crank) ** 2 - e2) - math.sqrt((self.rod - self.crank) ** 2 - e2)
 
-    def summary(self) -> list[str]:
+    def summary(self, drawn: Optional[dict[str, float]] = None) -> list[str]:
         """Lines for the summary of `kinematika sweep`: the lengths and offset, whether the
-        crank turns fully, the stroke, and the limit positions (crank angle from the drawing,
-        slider travel)."""
+        crank turns fully, the stroke, and the limit positions (the crank's angle θ when its
+        `drawn` one is given, else its turn from the drawing; the slider's travel)."""
         turns = ("the crank turns fully (r + |e| <= l)" if self.crank_turns else
                  "the crank cannot turn fully (r + |e| > l): it rocks between dead points")
         out = [f"slider-crank: crank {self.crank:.6g}, connecting rod {self.rod:.6g}, offset "
@@ -128,8 +133,10 @@ class SliderCrank:
         if self.stroke is not None:
             out.append(f"  stroke {self.stroke:.6g}")
         for lim in self.limits:
-            out.append(f"  limit position ({lim.name}): crank at {lim.crank:.4g} deg from the drawn "
-                       f"position, slider at {lim.output:+.6g} from its drawn position")
+            crank = (f"crank at θ = {drawn['crank'] + lim.crank:.4g} deg" if drawn else
+                     f"crank at {lim.crank:.4g} deg from the drawn position")
+            out.append(f"  limit position ({lim.name}): {crank}, slider at {lim.output:+.6g} from its "
+                       "drawn position")
         return out
 
 

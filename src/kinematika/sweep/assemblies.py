@@ -63,12 +63,10 @@ def _drawn_only(model: Model) -> Assembly:
 def with_assembly(model: Model, number: Any) -> Model:
     """`model` posed on its assembly `number` (as `kinematika assemblies` numbers them)."""
     if isinstance(number, bool) or not isinstance(number, int):
-        raise KinematikaError("usage", f"an assembly is a whole number, got {number!r}", "--assembly")
+        raise KinematikaError("usage", "assembly-not-whole", "--assembly", got=repr(number))
     found = assemblies(model)
     if not 1 <= number <= len(found):
-        raise KinematikaError("usage", f"there is no assembly {number}: this mechanism has "
-                              f"{len(found)} at its drawn input (see `kinematika assemblies`)",
-                              "--assembly")
+        raise KinematikaError("usage", "assembly-missing", "--assembly", number=number, count=len(found))
     chosen = found[number - 1]
     return model if chosen.drawn else chosen.model
 
@@ -76,8 +74,7 @@ def with_assembly(model: Model, number: Any) -> Model:
 def _dyad_assemblies(model: Model, sweeper: Any) -> list[Assembly]:
     branches = sweeper.closed.branches()
     if len(branches) > MAX_DYADS:
-        raise KinematikaError("schema", f"{len(branches)} dyads close in two ways each: listing "
-                              f"2^{len(branches)} assemblies is beyond the limit of 2^{MAX_DYADS}")
+        raise KinematikaError("schema", "assemblies-too-many", "", dyads=len(branches), limit=MAX_DYADS)
     out: list[Assembly] = []
     turns: list[dict[str, float]] = []
     for sides in itertools.product((1.0, -1.0), repeat=len(branches)):

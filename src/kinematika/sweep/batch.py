@@ -20,7 +20,7 @@ from ..algebra.arrays import Arrays
 from ..algebra.vectors import Space
 from ..engine.array_positions import array_positions
 from ..engine.instant import Instant, _parameters
-from ..errors import KinematikaError
+from ..errors import KinematikaError, speaking
 from ..model.model import Model, Parameter, PointPair
 from ..structure.assur import assur_groups
 from .closed_form import ClosedForm, InputRates, Outcome, applicable
@@ -62,8 +62,10 @@ class Batch:
 
 
 def describe(err: KinematikaError) -> str:
-    """An error as the `reason` column writes it: 'kind: where: message'."""
-    return f"{err.kind}: {err}"
+    """An error as the `reason` column writes it: 'kind: where: message', in English
+    whatever the language of messages (a column of data is the same on every machine)."""
+    with speaking("en"):
+        return f"{err.kind}: {err}"
 
 
 class BatchSweeper:
@@ -94,8 +96,7 @@ class BatchSweeper:
         """The sweep's rows, the same for every design."""
         section = self.model.sweep
         if self.options[0] is None and section is not None and section.by.names() & set(self.varied):
-            raise KinematikaError("usage", f"the sweep's length ({section.by.text}) depends on a varied "
-                                  "parameter: give it as a number (--by)", "sweep.by")
+            raise KinematikaError("usage", "sweep-by-varied", "sweep.by", by=section.by.text)
         inst = self._instant({name: np.zeros(1) for name in self.varied})
         return make_plan(inst, self.joint.id, *self.options)
 

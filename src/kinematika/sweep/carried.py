@@ -29,9 +29,10 @@ import numpy as np
 
 from ..engine.instant import Instant, instantiate
 from ..engine.turns import moves_with, turn_for
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from ..expressions import parse
-from ..joints.rolling import arc_slip, signed_radii
+from ..joints.rolling import arc_slip
+from ..joints.tangency import circles_tangency
 from ..model.model import Model, Turn
 from ..shapes import Circle
 
@@ -73,19 +74,19 @@ def carried_turns(model: Model, inputs: list[Input], path: Path, values: dict[st
     return [t for t in turns if t.body in inputs_ or id(t) in used or fixture(model, t.body)]
 
 
-def fixture(model: Model, body: str) -> str:
+def fixture(model: Model, body: str) -> "Said | str":
     """What of `body` is fixed in it by numbers, which only its turn can carry (a shape's
-    place or direction, a joint's direction), or ''."""
+    place or direction, a joint's direction, as a message), or ''."""
     from ..model.model import PointPair
 
     for s in model.bodies[body].shapes:
         if any(getattr(s, k, ()) for k in ("center", "through")) or not all(
                 isinstance(getattr(s, k, None), (PointPair, type(None))) for k in ("direction", "axis", "normal")):
-            return f"{type(s).__name__.lower()}'s place"
+            return Said("fixture-shape", shape=type(s).__name__.lower())
     for j in model.joints:
         fixed_in = j.b if j.kind.along_in == "b" else j.a
         if fixed_in == body and j.along is not None and not isinstance(j.along, PointPair):
-            return f"joint {j.id}'s direction"
+            return Said("fixture-joint", joint=j.id)
     return ""
 
 
@@ -188,7 +189,7 @@ class _Finder:
             holders = self._holding(pair[0][1].center, pair[1][1].center, among=self.model.bodies) if pair else []
             if pair and holders:
                 (ca, na), (cb, nb) = pair
-                rho_a, rho_b = signed_radii(_contact(na, nb), ca.radius, cb.radius, na.radius >= nb.radius)
+                rho_a, rho_b = circles_tangency(na, nb).places(ca.radius, cb.radius)
                 equations.append(arc_slip(rho_a, rho_b, phi[holders[0]], phi[j.a], phi[j.b]))
         solutions = sympy.linsolve(equations, list(unknown.values())) if equations and unknown else sympy.EmptySet
         out: dict[str, Form] = {}
@@ -208,7 +209,7 @@ class _Finder:
         for ea, na in zip(self.inst.shapes[j.a], numeric[j.a]):
             for eb, nb in zip(self.inst.shapes[j.b], numeric[j.b]):
                 if isinstance(na, Circle) and isinstance(nb, Circle):
-                    gap = abs(_gap(na, nb))
+                    gap = abs(circles_tangency(na, nb).gap)
                     if best is None or gap < best[0]:
                         best = (gap, (ea, na), (eb, nb))
         return None if best is None else (best[1], best[2])
@@ -276,18 +277,6 @@ class _Finder:
             return False
         turn = np.arctan2(d[:, 1], d[:, 0]) - math.atan2(d[0, 1], d[0, 0])
         return self._agrees(body, turn)
-
-
-def _gap(a: Circle, b: Circle) -> float:
-    dist = math.dist(a.center, b.center)
-    return min(dist - (a.radius + b.radius), dist - abs(a.radius - b.radius), key=abs)
-
-
-def _contact(a: Circle, b: Circle) -> str:
-    """How two circles at the probe values touch: "external" or "internal"."""
-    dist = math.dist(a.center, b.center)
-    outside, inside = abs(dist - (a.radius + b.radius)), abs(dist - abs(a.radius - b.radius))
-    return "external" if outside <= inside else "internal"
 
 
 def _simplified(x: Any) -> Any:

@@ -16,12 +16,13 @@ solves D designs over N positions, each design on its own drawn branch (`sweep.b
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Optional
 
 import numpy as np
 
 from ..engine.motion import Motion
+from ..errors import Names
 from ..model.model import Driver, Joint, Model
 from ..structure.assur import Group
 
@@ -81,11 +82,13 @@ class Outcome:
     singular: np.ndarray           # bool: a dyad's directions parallel (|sin| < SINGULAR)
     failed: np.ndarray             # int: the first group (index in `groups`) that failed, or -1
     groups: list[Group]
+    margins: dict[int, np.ndarray] = field(default_factory=dict)   # per group: |sin| between its
+                                                                   # two unknown directions
 
-    def worst(self, k) -> str:
+    def worst(self, k) -> "Names | str":
         """The bodies of the group that failed first at row `k` (for messages), or ''."""
         index = int(self.failed[k])
-        return " and ".join(self.groups[index].bodies) if index >= 0 else ""
+        return Names(self.groups[index].bodies, joined="and") if index >= 0 else ""
 
 
 class InputRates:
@@ -154,14 +157,15 @@ class ClosedForm:
             frame.known[p] = (self.points[p], 0j, 0j)
         tracks = {self.model.frame: frame, self.input: self._input(q)}
         failures = _Failures()
+        margins = {}
         for index, (g, solver, chain) in enumerate(self.chains, start=1):
-            sing = solver(chain, tracks)
+            sing = margins[index] = solver(chain, tracks)
             theta = tracks[g.bodies[0]].theta
             if np.isnan(theta.sum()) or sing.min() < SINGULAR:      # rare: find the rows
                 failures.add(index, ~np.isnan(theta), sing < SINGULAR)
         shape = np.broadcast_shapes(np.shape(q), np.shape(self.rates.omega),
                                     *(np.shape(p) for p in self.points.values()))
-        return Outcome(tracks, *failures.masks(shape), self.groups)
+        return Outcome(tracks, *failures.masks(shape), self.groups, margins)
 
     def _input(self, q: np.ndarray) -> Track:
         """A crank turning by the increments about its pivot, or a slider moving along its guide."""

@@ -12,11 +12,11 @@ import dataclasses
 import math
 from typing import Any, Mapping
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, said_of
 from ..expressions import Expr, ExpressionError, evaluate, parse
 from ..model.model import Model
 from ..model.overrides import numeric_parameters
-from .plan import driven_joints
+from .plan import check_travel, driven_joints
 
 DEGREES_PER_STEP = 1.0          # continuation steps of a revolute
 LENGTHS_PER_STEP = 0.02         # of a prismatic, in model sizes
@@ -36,10 +36,22 @@ def moved(model: Model, amounts: Mapping[str, Any]) -> Model:
     if steps and any(p.value is None for p in model.parameters.values()):
         from .symbolic_move import symbolic_moved
 
-        return symbolic_moved(model, steps)
+        try:
+            return symbolic_moved(model, steps)
+        except KinematikaError as err:        # the symbols cannot follow: at the figure's numbers
+            if err.kind != "schema" or not _drawn_in_numbers(model):
+                raise
+            from .posing import at_draw_numbers
+
+            model, _ = at_draw_numbers(model, "move", said_of(err))
     for jid, amount, where in steps:
         model = _advance(model, jid, amount, where)
     return model
+
+
+def _drawn_in_numbers(model: Model) -> bool:
+    """Whether every symbol of the model has a `draw_at` number (its figure's)."""
+    return all(n in model.draw_at for n, p in model.parameters.items() if p.value is None)
 
 
 def _amount(model: Model, raw: Any, where: str) -> float:
@@ -50,21 +62,19 @@ def _amount(model: Model, raw: Any, where: str) -> float:
         expr = raw if isinstance(raw, Expr) else parse(raw)
         value = float(evaluate(expr, numeric_parameters(model), Numeric()))
     except ExpressionError as err:
-        raise KinematikaError("schema", f"{err} (a move is a number of degrees or lengths)",
-                              where) from None
+        raise KinematikaError("schema", "move-not-number", where, problem=err.said) from None
     if not math.isfinite(value):
-        raise KinematikaError("schema", "a move is a finite number", where)
+        raise KinematikaError("schema", "move-not-finite", where)
     return value
 
 
 def _check_driven(model: Model, jid: str, where: str) -> None:
     ids = [j.id for j in model.joints]
     if jid not in ids:
-        raise KinematikaError("schema", f"unknown joint {jid!r} (joints: {', '.join(ids)})", where)
+        raise KinematikaError("schema", "unknown-joint", where, joint=jid, joints=ids)
     driven = driven_joints(model)
     if jid not in driven:
-        raise KinematikaError("schema", f"joint {jid!r} is not driven; `move` advances a driven "
-                              f"joint ({', '.join(driven) or 'none here'})", where)
+        raise KinematikaError("schema", "move-not-driven", where, joint=jid, driven=list(driven), count=len(driven))
 
 
 def _advance(model: Model, jid: str, amount: float, where: str) -> Model:
@@ -79,10 +89,11 @@ def swept_to(model: Model, jid: str, amount: float) -> Any:
     from .run import Sweeper
 
     sweeper = Sweeper(model, jid)
+    check_travel(amount, model.joint(jid), sweeper.inst.scale, f"move.{jid}", "a move of")
     turns = model.joint(jid).kind.coordinate == "angle"
     per_step = DEGREES_PER_STEP if turns else LENGTHS_PER_STEP * sweeper.inst.scale
     steps = min(MAX_STEPS, max(1, math.ceil(abs(amount) / per_step)))
-    result = sweeper.run(amount, steps, skip_bad=True)
+    result = sweeper.run(amount, steps, skip_bad=True, through=False)   # to the coordinate, not through limits
     if not result.ok.all():
         raise _unreachable(result, jid, amount, "°" if turns else "")
     return result
@@ -95,5 +106,24 @@ def _unreachable(result: Any, jid: str, amount: float, unit: str) -> KinematikaE
     edges = [x for x in result.dead_points if abs(x) <= abs(amount) and x * amount >= 0]
     if edges:
         got = min(edges, key=abs)
-    return KinematikaError("assembly", f"{jid} cannot be moved {amount:g}{unit}: the mechanism meets "
-                           f"a dead point or comes apart after {got:.6g}{unit}", f"move.{jid}")
+    return KinematikaError("assembly", "move-unreachable", f"move.{jid}", joint=jid, amount=amount, unit=unit,
+                           got=Num(got, ".6g"))
+
+
+def at_row(model: Model, row: int) -> Model:
+    """`model` at row `row` of its sweep (its `sweep:` section, else a full turn in 360 steps;
+    rows that cannot be assembled skipped, as the page sweeps it): the last row of the sweep
+    of `row` steps of the same travel each, so through the limit positions it meets."""
+    from .posed import posed_model
+    from .run import Sweeper
+
+    if any(p.value is None for p in model.parameters.values()):
+        raise KinematikaError("schema", "row-needs-numbers", "row")
+    sweeper = Sweeper(model)
+    plan = sweeper.plan(None, None)
+    if row > plan.steps:
+        raise KinematikaError("usage", "row-out-of-range", "row", row=row, last=plan.steps)
+    result = sweeper.run(plan.by * row / plan.steps, row, skip_bad=True)
+    if not result.ok[-1]:
+        raise KinematikaError("assembly", "row-cannot-assemble", "row", row=row)
+    return posed_model(model, result, -1)

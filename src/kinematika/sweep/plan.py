@@ -15,7 +15,7 @@ from typing import Optional
 import numpy as np
 
 from .. import limits
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num
 from ..engine.instant import Instant
 from ..model.model import Driver, Joint, Model
 
@@ -67,24 +67,33 @@ def make_plan(inst: Instant, joint: Optional[str] = None, by: Optional[float] = 
         elif j.kind.coordinate == "angle":
             by = DEFAULT_BY
         else:
-            raise KinematikaError("schema", f"joint {j.id!r} is {j.kind.name}: give the sweep's length "
-                                  "(`by` in the model's sweep section, or --by)", "sweep.by")
+            raise KinematikaError("schema", "sweep-by-needed", "sweep.by", joint=j.id, kind=j.kind.name)
     steps = steps if steps is not None else (section.steps if section else DEFAULT_STEPS)
     if isinstance(steps, bool) or not isinstance(steps, numbers.Integral):
-        raise KinematikaError("schema", f"steps must be a whole number, got {steps!r}", "sweep.steps")
+        raise KinematikaError("schema", "steps-whole", "sweep.steps", got=repr(steps))
     if not 1 <= steps <= MAX_STEPS:
-        raise KinematikaError("schema", f"steps must be between 1 and {MAX_STEPS}, got {steps}",
-                              "sweep.steps")
+        raise KinematikaError("schema", "steps-range", "sweep.steps", limit=MAX_STEPS, got=int(steps))
     per_row = values_per_row(model)
     if (steps + 1) * per_row > limits.SWEEP_VALUES:
-        raise KinematikaError("schema", f"{steps} steps of {per_row} values each are more than a sweep "
-                              f"holds ({limits.SWEEP_VALUES} values): take at most "
-                              f"{max(limits.SWEEP_VALUES // per_row - 1, 1)} steps", "sweep.steps")
+        raise KinematikaError("schema", "steps-too-many-values", "sweep.steps", steps=int(steps), per_row=per_row,
+                              limit=limits.SWEEP_VALUES, most=max(limits.SWEEP_VALUES // per_row - 1, 1))
     if isinstance(by, bool) or not isinstance(by, numbers.Real):
-        raise KinematikaError("schema", f"by must be a number, got {by!r}", "sweep.by")
+        raise KinematikaError("schema", "by-number", "sweep.by", got=repr(by))
     if not math.isfinite(by):
-        raise KinematikaError("schema", "by must be a finite number", "sweep.by")
+        raise KinematikaError("schema", "by-finite", "sweep.by")
+    check_travel(float(by), j, inst.scale, "sweep.by", "by")
     return Plan(j, driver, float(by), int(steps))
+
+
+def check_travel(amount: float, joint: Joint, scale: float, where: str, what: str) -> None:
+    """A sweep's `by` or a move's amount within `limits.SWEEP_TRAVEL`: so many turns of a
+    revolute (degrees), or so many times the mechanism's size along a prismatic; beyond, the
+    angles and places would be round-off, so it is a `schema` error naming the limit."""
+    turns = joint.kind.coordinate == "angle"
+    most = limits.SWEEP_TRAVEL * (360.0 if turns else scale)
+    if not abs(amount) <= most:
+        raise KinematikaError("schema", "travel-too-far", where, what=what, amount=Num(amount, ".6g"),
+                              most=Num(most, ".6g"), turns=Num(limits.SWEEP_TRAVEL, ","), unit="angle" if turns else "length")
 
 
 def values_per_row(model: Model) -> int:
@@ -99,18 +108,15 @@ def swept_joint(model: Model, joint: Optional[str]) -> tuple[Joint, Driver]:
     """The joint to sweep (the first driven one unless named) and the driver that drives it."""
     driven = driven_joints(model)
     if not driven:
-        raise KinematikaError("schema", "no driven joint to sweep: drive a joint's rate, or the omega "
-                              "or velocity of a body joined to the frame by a revolute or prismatic "
-                              "joint", "sweep.joint")
+        raise KinematikaError("schema", "sweep-no-driven-joint", "sweep.joint")
     if joint is None:
         jid, driver = next(iter(driven.items()))
     else:
         if joint not in {j.id for j in model.joints}:
-            raise KinematikaError("schema", f"unknown joint {joint!r} (joints: "
-                                  f"{', '.join(j.id for j in model.joints)})", "sweep.joint")
+            raise KinematikaError("schema", "unknown-joint", "sweep.joint", joint=joint,
+                                  joints=[j.id for j in model.joints])
         if joint not in driven:
-            raise KinematikaError("schema", f"joint {joint!r} is not driven; a sweep advances a driven "
-                                  f"joint: {', '.join(driven)}", "sweep.joint")
+            raise KinematikaError("schema", "sweep-not-driven", "sweep.joint", joint=joint, driven=list(driven))
         jid, driver = joint, driven[joint]
     return model.joint(jid), driver
 

@@ -16,14 +16,15 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any
+from typing import Any, Optional
 
 import numpy as np
 
 from ..engine.instant import instantiate
 from ..errors import KinematikaError
 from ..expressions import Expr, parse
-from ..model.model import Body, Circle, Direction, Disc, Joint, Line, Model, Plane, PointPair
+from ..model.model import (Body, CamShape, Circle, CurveShape, Direction, Disc, Joint, Line, Model, Plane,
+                           PointPair)
 from .result import SweepResult
 
 
@@ -61,8 +62,7 @@ class _Pose:
             return drawn
         names = self.model.bodies[body].points
         if not names:
-            raise KinematikaError("schema", f"body {body!r} carries no point, so its shapes cannot "
-                                  "be moved: list one of its points", f"bodies.{body}")
+            raise KinematikaError("schema", "body-no-point", f"bodies.{body}", body=body)
         ref = names[0]
         return self.material(ref, body) + self.rot[body] @ (drawn - np.asarray(
             [float(c) for c in self.inst.points[ref]]))
@@ -77,32 +77,59 @@ class _Pose:
         drawn = np.asarray([float(c) for c in self.inst.direction(d, where)])
         return _numbers(self.rot[body] @ drawn)
 
+    def own(self, point: str, body: str) -> bool:
+        """Whether the point's name stands, at this row, for `body`'s material point."""
+        return point in self.model.bodies[body].points and self._belongs(point, body)
+
     def _belongs(self, point: str, body: str) -> bool:
         classes = self.model.motion_classes(point, self.model.carriers(point))
         return any(body in c and self.owner[point] in c for c in classes)
 
 
 def _moved_body(pose: _Pose, body: Body) -> Body:
+    """The body's shapes carried by it: centres and points moved, directions turned, a
+    disc cam's angle advanced by the body's turn (its program goes on as it turns: θ + σΔ,
+    as `sweep.poses` moves it), a curve through the body's own points kept through them."""
     where = f"bodies.{body.name}"
-    shapes = []
-    for s in body.shapes:
-        if isinstance(s, (Circle, Disc)):
-            center = () if s.center_point else _numbers(pose.carried(body.name, pose.inst.vector(s.center, where)))
-            if isinstance(s, Circle):
-                shapes.append(dataclasses.replace(s, center=center))
-            else:
-                shapes.append(dataclasses.replace(s, center=center,
-                                                  axis=pose.turned(body.name, s.axis, f"{where}.disc.axis")))
-        elif isinstance(s, Line):
-            through = () if s.through_point else _numbers(pose.carried(body.name, pose.inst.vector(s.through, where)))
-            shapes.append(dataclasses.replace(s, through=through, direction=pose.turned(
-                body.name, s.direction, f"{where}.line.direction")))
-        else:
-            assert isinstance(s, Plane)
-            through = () if s.through_point else _numbers(pose.carried(body.name, pose.inst.vector(s.through, where)))
-            shapes.append(dataclasses.replace(s, through=through, normal=pose.turned(
-                body.name, s.normal, f"{where}.plane.normal")))
-    return dataclasses.replace(body, points=list(body.points), shapes=shapes)
+    return dataclasses.replace(body, points=list(body.points),
+                               shapes=[_moved_shape(pose, body.name, s, where) for s in body.shapes])
+
+
+def _moved_shape(pose: _Pose, name: str, s: Any, where: str) -> Any:
+    def place(coords: tuple, point: Optional[str]) -> tuple:
+        return () if point else _numbers(pose.carried(name, pose.inst.vector(coords, where)))
+
+    if isinstance(s, Circle):
+        return dataclasses.replace(s, center=place(s.center, s.center_point))
+    if isinstance(s, Disc):
+        return dataclasses.replace(s, center=place(s.center, s.center_point),
+                                   axis=pose.turned(name, s.axis, f"{where}.disc.axis"))
+    if isinstance(s, Line):
+        return dataclasses.replace(s, through=place(s.through, s.through_point),
+                                   direction=pose.turned(name, s.direction, f"{where}.line.direction"))
+    if isinstance(s, Plane):
+        return dataclasses.replace(s, through=place(s.through, s.through_point),
+                                   normal=pose.turned(name, s.normal, f"{where}.plane.normal"))
+    if isinstance(s, CurveShape):
+        through = tuple(p if isinstance(p, str) and pose.own(p, name) else
+                        _numbers(pose.carried(name, pose.inst.points[p] if isinstance(p, str) else
+                                              pose.inst.vector(p, f"{where}.curve")))
+                        for p in s.through)
+        return dataclasses.replace(s, through=through)
+    assert isinstance(s, CamShape)
+    angle = s.angle
+    if not _translates(s.design.cam):
+        turned = math.radians(float(pose.result.bodies[name]["angle"][pose.row]))
+        drawn = float(pose.inst.value(s.angle, f"{where}.cam.angle"))
+        angle = parse(drawn + s.design.cam.sense * turned)
+    return dataclasses.replace(s, center=place(s.center, s.center_point), angle=angle)
+
+
+def _translates(design: Any) -> bool:
+    """A plate (translating) cam: it slides, and its program's place is its centre's."""
+    from ..cams.profile import PlateCam
+
+    return isinstance(design, PlateCam)
 
 
 def _moved_joint(pose: _Pose, j: Joint) -> Joint:
@@ -142,6 +169,6 @@ def _numbers(values: Any) -> tuple[Expr, ...]:
     for v in values:
         v = float(v)
         if not math.isfinite(v):
-            raise KinematikaError("assembly", "the mechanism cannot be assembled there")
+            raise KinematikaError("assembly", "cannot-assemble-there")
         out.append(parse(v + 0.0))
     return tuple(out)

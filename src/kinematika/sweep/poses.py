@@ -15,7 +15,7 @@ from typing import Any, Optional
 import numpy as np
 
 from ..engine.instant import Instant
-from ..shapes import Cam, Circle, Curve, Line
+from ..shapes import Cam, Circle, Curve, Disc, Line, Plane
 from ..joints import JointGeometry
 from ..engine.levels import Unknowns
 
@@ -199,6 +199,10 @@ def _moved_shape(s: Any, body: str, poses: Poses) -> Any:
         return Circle(poses.point(body, s.center), s.radius, s.center_point)
     if isinstance(s, Line):
         return Line(poses.point(body, s.through), poses.turn(body, s.direction), s.through_point)
+    if isinstance(s, Disc):
+        return Disc(poses.point(body, s.center), s.radius, poses.turn(body, s.axis), s.center_point)
+    if isinstance(s, Plane):
+        return Plane(poses.point(body, s.through), poses.turn(body, s.normal), s.through_point)
     if isinstance(s, Curve):
         return _moved_curve(s, body, poses)
     if isinstance(s, Cam):

@@ -3,13 +3,18 @@
 Row k is increment k: the drawn configuration is row 0. A row that could not be solved
 (`--skip-bad`) holds NaN in every array and False in `ok`; the JSON and CSV views write it
 as null / an empty cell.
+
+A motion followed through limit positions (`limit_positions`) runs its coordinate back at
+each: `limits` lists the coordinates where it turned, `travel` the distance travelled by
+the input up to each row (equal steps), and the JSON gains `"limits"`, the CSV and the
+columnar files a `travel_*` and a `limit_*` column.
 """
 from __future__ import annotations
 
 import csv
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any, Iterator, Optional
 
 import numpy as np
 
@@ -33,6 +38,11 @@ class SweepResult:
     dimension: int = 2
     method: str = "closed form"        # "closed form" (Assur groups) or "newton"
     frame: str = "ground"
+    limits: list[float] = field(default_factory=list)    # limit positions met, in order
+    limit_travel: list[float] = field(default_factory=list)   # the input's travel at each
+    travel: Optional[np.ndarray] = None   # (N,) the input's travel up to each row (with limits)
+    closed: bool = False                  # back at the drawn configuration after its limits
+    warnings: list = field(default_factory=list)   # KinematikaWarning: swept at draw_at numbers, ...
 
     def __len__(self) -> int:
         return len(self.coordinate)
@@ -44,11 +54,21 @@ class SweepResult:
         largest value of the same quantity) written as 0, as `solve` does.
         """
         scales = self.scales()
-        return {"coordinate": _column(clean(self.coordinate, np.abs(self.coordinate).max(initial=0.0))),
-                "bodies": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
-                           for name, values in self.bodies.items()},
-                "points": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
-                           for name, values in self.points.items()}}
+        out = {"coordinate": _column(clean(self.coordinate, np.abs(self.coordinate).max(initial=0.0))),
+               "bodies": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
+                          for name, values in self.bodies.items()},
+               "points": {name: {q: _column(clean(v, scales[q])) for q, v in values.items()}
+                          for name, values in self.points.items()}}
+        if self.limits:
+            out["limits"] = self._limits_column().tolist()
+        if self.warnings:                       # an extension, as `solve`'s: what to know of the rows
+            out["warnings"] = [w.as_json() for w in self.warnings]
+        return out
+
+    def _limits_column(self) -> np.ndarray:
+        """The limit positions, written as the coordinate is (12 digits)."""
+        values = np.asarray(self.limits, dtype=float)
+        return clean(values, max(np.abs(self.coordinate).max(initial=0.0), np.abs(values).max(initial=0.0)))
 
     def json_chunks(self) -> Iterator[bytes]:
         """The JSON of `to_json` as UTF-8 pieces, each column written by orjson straight from
@@ -83,7 +103,12 @@ class SweepResult:
                 for k, (q, v) in enumerate(values.items()):
                     yield (b"," if k else b"") + orjson.dumps(q) + b":" + column(v, scales[q])
                 yield b"}"
-        yield b"}}"
+        yield b"}"
+        if self.limits:
+            yield b',"limits":' + orjson.dumps(self._limits_column().tolist())
+        if self.warnings:
+            yield b',"warnings":' + orjson.dumps([w.as_json() for w in self.warnings])
+        yield b"}"
 
     def scales(self) -> dict[str, float]:
         """Each quantity's scale: its largest magnitude, or what the motion makes it at least
@@ -110,6 +135,8 @@ class SweepResult:
         """One (header, values) per scalar: coordinate, body quantities, point components."""
         axes = "xyz"
         cols = [(f"coordinate_{self.unit}", self.coordinate)]
+        if self.limits and self.travel is not None:
+            cols += [(f"travel_{self.unit}", self.travel), (f"limit_{self.unit}", self.passed())]
         for name, values in self.bodies.items():
             for q, v in values.items():
                 if v.ndim == 1:
@@ -120,6 +147,18 @@ class SweepResult:
             for q, v in values.items():
                 cols += [(f"{name}.{q}_{axes[i]}", v[:, i]) for i in range(v.shape[1])]
         return cols
+
+    def passed(self) -> np.ndarray:
+        """Per row, the limit position passed since the row before (NaN where none was; the
+        last one if several were)."""
+        out = np.full(len(self.coordinate), np.nan)
+        if not self.limits or self.travel is None:
+            return out
+        at = np.asarray(self.limit_travel, dtype=float)
+        rows = np.searchsorted(self.travel, at, side="left")
+        keep = rows < len(out)
+        out[rows[keep]] = np.asarray(self.limits, dtype=float)[keep]
+        return out
 
     def to_csv(self, path: str | Path) -> None:
         """One row per position, one column per scalar, a header; bad rows have empty cells."""
@@ -146,10 +185,11 @@ class SweepResult:
     def to_parquet(self, path: str | Path) -> None:
         """The CSV's columns in a Parquet file (raw values; bad rows null), with `ok`; needs
         pyarrow (`pip install 'kinematika[columnar]'`)."""
+        from ..errors import Said
         from ..extras import need
 
-        pa = need("pyarrow", "writing Parquet (or write .npz)", "-o", "columnar")
-        pq = need("pyarrow.parquet", "writing Parquet (or write .npz)", "-o", "columnar")
+        pa = need("pyarrow", Said("writing-parquet"), "-o", "columnar")
+        pq = need("pyarrow.parquet", Said("writing-parquet"), "-o", "columnar")
         names, arrays = ["ok"], [pa.array(self.ok)]
         for header, values in self.columns():
             names.append(header)

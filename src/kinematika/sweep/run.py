@@ -7,13 +7,14 @@ with continuation from the previous one and solved by the engine (`newton`).
 """
 from __future__ import annotations
 
+import warnings
 from typing import Any, Callable, Optional
 
 import numpy as np
 
 from ..engine.instant import instantiate
 from ..engine.system import InstantSolver
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, Said
 from ..memory import arrays_on_heap
 from ..model.model import Model, PointRef
 from .coincident import coincide
@@ -28,10 +29,11 @@ def run_sweep(source: Any, joint: Optional[str] = None, by: Optional[float] = No
               progress: bool | Progress = False) -> SweepResult:
     """Sweep `source` (a path, model tree, `Model` or `Mechanism`) over its driven joint.
 
-    `joint`, `by` (degrees or length), `steps` override the model's `sweep:` section. A row
-    that cannot be assembled or is singular raises `assembly`/`singular`, unless `skip_bad`,
-    which leaves it NaN. `progress`: True for a progress bar on a terminal, or a callable
-    `(done, total)`.
+    `joint`, `by` (degrees or length), `steps` override the model's `sweep:` section. At a
+    limit position the input runs back and the motion goes on (`limit_positions`). A row
+    that is singular, or a motion that cannot be followed, raises `singular`/`assembly`,
+    unless `skip_bad`, which leaves such rows NaN. `progress`: True for a progress bar on a
+    terminal, or a callable `(done, total)`.
     """
     return Sweeper(source, joint).run(by, steps, skip_bad, progress)
 
@@ -46,11 +48,9 @@ class Sweeper:
     def __init__(self, source: Any, joint: Optional[str] = None,
                  flips: Optional[dict[int, float]] = None) -> None:
         arrays_on_heap()                     # a sweep's speed is its own (`memory`)
-        model = _as_model(source)
-        symbols = [n for n, p in model.parameters.items() if p.value is None]
-        if symbols:
-            raise KinematikaError("schema", f"a sweep needs numbers: give a value to "
-                                  f"{', '.join(symbols)}", "parameters")
+        from .posing import at_draw_numbers
+
+        model, self.warnings = at_draw_numbers(_as_model(source), "sweep", warn=False)
         self.model = model
         self.inst = instantiate(model, False)
         self.joint, self.driver = swept_joint(model, joint if joint is not None else
@@ -63,7 +63,9 @@ class Sweeper:
         from ..structure.assur import assur_groups
 
         self.groups = assur_groups(model)
+        self._flips = dict(flips or {})
         self.closed = self._closed_form(flips)
+        self._forms: dict[tuple, Any] = {(): self.closed}
         self.motions = motion_classes(model)
         self.names = [str(r) for r in model.material_points()]
         self._plans: dict[tuple, Plan] = {}
@@ -87,6 +89,18 @@ class Sweeper:
         return ClosedForm.at_drawn(self.model, self.points, self.directions, self.groups, self.joint,
                                    self.drawn, flips)
 
+    def form(self, flips: dict[int, float]) -> Any:
+        """The closed form with the dyads in `flips` (group index → −1) closed the other way
+        than at the start (kept: a motion through limit positions comes back to each)."""
+        key = tuple(sorted((i, f) for i, f in flips.items() if f < 0))
+        if key not in self._forms:
+            from .closed_form import ClosedForm
+
+            sides = {i: self._flips.get(i, 1.0) * flips.get(i, 1.0) for i in range(1, len(self.groups))}
+            self._forms[key] = ClosedForm.at_drawn(self.model, self.points, self.directions, self.groups,
+                                                   self.joint, self.drawn, sides)
+        return self._forms[key]
+
     def linkage(self) -> Any:
         """The four-bar or slider-crank this mechanism is (`structure.linkages`), or None."""
         from ..structure.linkages import identify
@@ -100,18 +114,30 @@ class Sweeper:
         return "closed form" if self.closed is not None else "newton"
 
     def run(self, by: Optional[float] = None, steps: Optional[int] = None, skip_bad: bool = False,
-            progress: bool | Progress = False) -> SweepResult:
+            progress: bool | Progress = False, through: bool = True) -> SweepResult:
         """Sweep the joint's coordinate `by` in `steps` (None: the model's `sweep:` section, else
         a revolute's 360° in 360 steps) and return every row's angles, rates and point motions
-        with the dead points found; a position that cannot be assembled or is singular is an
-        error unless `skip_bad`, which leaves its row marked."""
+        with the dead points found. At a limit position the input runs back and the motion goes
+        on (`limit_positions`), unless not `through` (as `move` reaches a coordinate): then the
+        positions beyond cannot be assembled. A position that cannot be assembled or is
+        singular is an error unless `skip_bad`, which leaves its row marked."""
         plan = self.plan(by, steps)
         if self.closed is None:
             from .newton import newton_sweep
 
-            return newton_sweep(self, plan, skip_bad, progress)
+            return newton_sweep(self, plan, skip_bad, progress, through)
         out = self.closed.solve(plan.increments)
         ok = out.assembled & ~out.singular
+        if not ok.all() and through and not out.assembled.all():
+            k = int(np.argmin(out.assembled))
+            if skip_bad or ok[:k].all():
+                from .limit_positions import follow_closed
+
+                result = follow_closed(self, plan, skip_bad)
+                if not skip_bad and not result.ok.all():
+                    k = int(np.argmin(result.ok))
+                    raise bad_row(plan, k, "singular", at=float(result.coordinate[k]))
+                return result
         if not skip_bad and not ok.all():
             k = int(np.flatnonzero(~ok)[0])
             raise bad_row(plan, k, "singular" if out.singular[k] else "assembly", out.worst(k))
@@ -135,8 +161,12 @@ class Sweeper:
         return float(good)
 
     def result(self, plan: Plan, ok: np.ndarray, bodies: dict, motions: dict,
-               dead: list[float]) -> SweepResult:
-        """A `SweepResult` from per-body arrays and per-motion-class point arrays (NaN if bad)."""
+               dead: list[float], coordinate: Optional[np.ndarray] = None,
+               travel: Optional[np.ndarray] = None, limits: Any = None,
+               closed: bool = False) -> SweepResult:
+        """A `SweepResult` from per-body arrays and per-motion-class point arrays (NaN if bad);
+        a motion through limit positions gives its rows' `coordinate` and `travel`, and
+        `limits` (a `limit_positions.Zigzag`)."""
         bad = None if ok.all() else ~ok
         ordered = {b: _filled(bodies[b], bad) for b in self.model.bodies}
         pts: dict[str, dict[str, np.ndarray]] = {}
@@ -146,8 +176,15 @@ class Sweeper:
                 pts[ref] = arrays
         pts = {name: pts[name] for name in self.names}
         coincide(self.model, ordered, pts)
-        return SweepResult(plan.coordinate, plan.joint.id, ok, ordered, pts, dead,
-                           plan.unit, self.model.name, self.model.dimension, self.method, self.model.frame)
+        for note in self.warnings:          # said with the rows it is true of
+            warnings.warn(note, stacklevel=3)
+        out = SweepResult(plan.coordinate if coordinate is None else coordinate, plan.joint.id, ok,
+                          ordered, pts, dead, plan.unit, self.model.name, self.model.dimension,
+                          self.method, self.model.frame, warnings=list(self.warnings))
+        if limits is not None and limits.limits:
+            out.limits, out.limit_travel = list(limits.limits), list(limits.at)
+            out.travel, out.closed = travel, closed
+        return out
 
 
 def _rows(values: Any, bad: Optional[np.ndarray], n: int) -> np.ndarray:
@@ -198,23 +235,16 @@ def _as_model(source: Any) -> Model:
     return prepare(source)
 
 
-def bad_row(plan: Plan, k: int, kind: str, what: str = "") -> KinematikaError:
-    """The error for row k: `assembly` (cannot be assembled), `singular` (dead point), or
-    `mobility` (assembled, but the drivers as written contradict the moved joints)."""
-    at = f"increment {k} ({plan.joint.id} = {plan.coordinate[k]:.6g} {plan.unit})"
+def bad_row(plan: Plan, k: int, kind: str, what: str = "", at: Optional[float] = None) -> KinematikaError:
+    """The error for row k (at coordinate `at`, else the plan's row k): `assembly` (cannot be
+    assembled), `singular` (dead point), or `mobility` (assembled, but the drivers as written
+    contradict the moved joints)."""
+    value = plan.coordinate[k] if at is None else at
+    where = Said("sweep-at", k=k, joint=plan.joint.id, value=Num(value, ".6g"), unit=plan.unit)
     if kind == "mobility":
-        return KinematikaError(kind, f"the drivers as written contradict the joints at {at}: a vector "
-                               "driver (3D ω, a velocity) stays fixed in the ground axes as the "
-                               "mechanism turns; drive the joint's rate instead", "sweep")
-    if kind == "singular":
-        message = (f"the configuration at {at} is singular for the drivers (a dead point: "
-                   "condition number above 1e+10)")
-    else:
-        message = f"the mechanism cannot be assembled at {at}"
-    if what:
-        message += f": {what} cannot close the loop" if kind == "assembly" else f" ({what})"
-    message += "; use --skip-bad to skip such positions"
-    return KinematikaError(kind, message, "sweep")
+        return KinematikaError(kind, "sweep-drivers-contradict", "sweep", at=where)
+    return KinematikaError(kind, "sweep-singular" if kind == "singular" else "sweep-cannot-assemble", "sweep",
+                           at=where, what=what or "", said=str(bool(what)).lower())
 
 
 def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray,

@@ -18,7 +18,7 @@ import dataclasses
 import numpy as np
 
 from ..engine.instant import Instant, instantiate
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from ..expressions import parse
 from ..model.model import Model, Turn
 from .carried import Input, Path, carried_turns, fixture, placed
@@ -35,14 +35,12 @@ def symbolic_moved(model: Model, steps: list[Step]) -> Model:
             model = _moved_with_numbers(model, jid, amount)
         return model
     if model.dimension != 2:
-        raise KinematikaError("schema", "a 3D model with symbolic parameters cannot be moved: "
-                              "give its parameters values (--set NAME=VALUE)", where)
+        raise KinematikaError("schema", "move-symbolic-3d", where)
     if model.turns:
-        raise KinematikaError("schema", "a model with symbolic parameters is moved once: give "
-                              "all its moves together", where)
+        raise KinematikaError("schema", "move-symbolic-once", where)
     inputs = [_input(model, i, jid, amount, w) for i, (jid, amount, w) in enumerate(steps)]
     if len({i.turn.body for i in inputs}) < len(inputs):
-        raise KinematikaError("schema", "two moves turn the same body: give it one move", where)
+        raise KinematikaError("schema", "move-same-body", where)
     values = {str(s): repr(float(v)) for s, v in inst.probe.items() if s not in inst.names}
     path = _path(model, steps, values, where)
     turns = carried_turns(model, inputs, path, values, inst)
@@ -56,8 +54,7 @@ def _input(model: Model, index: int, jid: str, amount: float, where: str) -> Inp
     joint = model.joint(jid)
     frame = model.frame
     if frame not in (joint.a, joint.b):
-        raise KinematikaError("schema", f"joint {jid!r} does not join a body to the frame: move a "
-                              "model with symbolic parameters by its input joint", where)
+        raise KinematikaError("schema", "move-not-input", where, joint=jid)
     body = joint.b if joint.a == frame else joint.a
     sign = 1 if joint.a == frame else -1          # the coordinate is b relative to a
     value = repr(float(sign * amount))
@@ -101,8 +98,7 @@ def _path(model: Model, steps: list[Step], values: dict[str, str], where: str) -
         try:
             result = swept_to(current, jid, amount)
         except KinematikaError as err:
-            raise KinematikaError(err.kind, f"cannot move: at values of the symbols where the model "
-                                  f"holds ({_shown(values)}), {err.message}", where) from None
+            raise KinematikaError(err.kind, "move-at-values", where, values=_shown(values), problem=err.said) from None
         joint = model.joint(jid)
         sign = 1.0 if joint.a == model.frame else -1.0
         rows = np.asarray(result.coordinate, dtype=float)
@@ -135,24 +131,19 @@ def _check(posed: Model, path: Path, values: dict[str, str], where: str) -> None
     _check_fixtures(posed, path, where)
 
 
-def _why(model: Model, name: str, numerically: bool) -> str:
+def _why(model: Model, name: str, numerically: bool) -> Said:
     """Why point `name` does not follow the input: one line."""
     from ..engine.turns import turn_for
 
     if numerically:
-        return (f"cannot move exactly: point {name!r} follows the input in numbers, not in its "
-                "exact coordinates (give the parameters values)")
+        return Said("move-exact-numbers", point=name)
     owner = model.place_owner(name) if model.carriers(name) else None
     turn = turn_for(model, name)
     if turn is None and owner is not None and _rolls_on_a_line(model, owner):
-        return (f"cannot move exactly: point {name!r} is on {owner!r}, which rolls on a line: its turn "
-                "is the path of its centre over its radius, no closed form here (give the parameters values)")
+        return Said("move-exact-rolls", point=name, body=owner)
     if turn is None and owner is not None:
-        return (f"cannot move exactly: point {name!r} does not follow the input: no construction, rolling "
-                f"ratio or other body gives the pose of {owner!r} in closed form; write {name} by "
-                "construction (or give values)")
-    return (f"cannot move exactly: point {name!r} does not follow the input: it is constructed from points "
-            f"that do not move with {turn.body if turn else owner!r}; construct it from those (or give values)")
+        return Said("move-exact-no-form", point=name, body=owner)
+    return Said("move-exact-constructed", point=name, body=repr(turn.body if turn else owner))
 
 
 def _rolls_on_a_line(model: Model, body: str) -> bool:
@@ -176,9 +167,7 @@ def _check_fixtures(model: Model, path: Path, where: str) -> None:
             continue
         what = fixture(model, body)
         if what:
-            raise KinematikaError("schema", f"cannot move exactly: {body!r} turns with no closed form "
-                                  f"here, and its {what} is written in numbers; give it by points "
-                                  "(or give the parameters values)", where)
+            raise KinematikaError("schema", "move-exact-fixture", where, body=body, what=what)
 
 
 def _shown(values: dict[str, str]) -> str:

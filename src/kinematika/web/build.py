@@ -10,6 +10,7 @@ typed (`properties`: where in the text, what kind of quantity, its value now).
 """
 from __future__ import annotations
 
+import json
 import math
 from typing import Any, Optional
 
@@ -18,16 +19,17 @@ import numpy as np
 from ..errors import KinematikaError
 from . import document
 from .palette import Context, tool
+from .rename import name_in, rename
 from .tree import Tree, degrees, name_of, number
 
-ACTIONS = ("add", "set", "delete", "drive", "ask")
+ACTIONS = ("add", "set", "delete", "drive", "ask", "rename", "name")
 QUESTIONS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose")
 # the words new bodies are named with, per language (a name is an identifier in the text)
 NAMES = {
-    "en": {"link": "link", "slider": "slider", "wheel": "wheel", "gear": "gear"},
-    "es": {"link": "barra", "slider": "corredera", "wheel": "rueda", "gear": "engranaje"},
-    "ca": {"link": "barra", "slider": "corredora", "wheel": "roda", "gear": "engranatge"},
-    "eu": {"link": "barra", "slider": "irristaria", "wheel": "gurpila", "gear": "engranajea"},
+    "en": {"link": "link", "slider": "slider", "wheel": "wheel", "gear": "gear", "ground": "ground"},
+    "es": {"link": "barra", "slider": "corredera", "wheel": "rueda", "gear": "engranaje", "ground": "bancada"},
+    "ca": {"link": "barra", "slider": "corredora", "wheel": "roda", "gear": "engranatge", "ground": "terra"},
+    "eu": {"link": "barra", "slider": "irristaria", "wheel": "gurpila", "gear": "engranajea", "ground": "lurra"},
 }
 
 
@@ -35,8 +37,7 @@ def apply(text: str, fmt: str, op: dict[str, Any], lang: str = "en") -> tuple[st
     """The model's text after one action of the page (see the module's docstring), and the
     element to select then (`body:link1`, or None)."""
     if not isinstance(op, dict) or op.get("op") not in ACTIONS:
-        raise KinematikaError("usage", f"'op' is an object whose 'op' is one of {', '.join(ACTIONS)}",
-                              "op")
+        raise KinematikaError("usage", "build-op", "op", actions=list(ACTIONS))
     tree = Tree(document.load(text, fmt), fmt)
     action, selected = op["op"], None
     if action == "add":
@@ -44,10 +45,10 @@ def apply(text: str, fmt: str, op: dict[str, Any], lang: str = "en") -> tuple[st
         t = tool(str(op.get("kind")))
         if not isinstance(picks, list) or len(picks) != len(t.picks) or \
                 not all(_is_pick(p) for p in picks):
-            raise KinematikaError("usage", f"the {t.kind} tool takes {len(t.picks)} picks "
-                                  f"({', '.join(t.picks)})", "picks")
-        ctx = Context(tree, positions(text, fmt), NAMES.get(lang, NAMES["en"]),
-                      op.get("values") or {})
+            raise KinematikaError("usage", "tool-picks", "picks", tool=t.kind, count=len(t.picks), picks=list(t.picks))
+        words = NAMES.get(lang, NAMES["en"])
+        _name_the_frame(tree, words["ground"])
+        ctx = Context(tree, positions(text, fmt), words, op.get("values") or {})
         selected = t.write(ctx, picks)
     elif action == "set":
         for path in [op.get("path"), *(op.get("also") or [])]:
@@ -56,9 +57,20 @@ def apply(text: str, fmt: str, op: dict[str, Any], lang: str = "en") -> tuple[st
         _delete(tree, str(op.get("element", "")))
     elif action == "drive":
         _drive(tree, op)
+    elif action == "rename":
+        selected = rename(tree, str(op.get("element", "")), op.get("to"))
+    elif action == "name":
+        name_in(tree, str(op.get("element", "")), op.get("lang"), op.get("text"))
     else:
         _ask(tree, str(op.get("question", "")), str(op.get("target", "")))
     return document.dump(tree.root, fmt), selected
+
+
+def _name_the_frame(tree: Tree, word: str) -> None:
+    """A model whose first body is being placed: its fixed body is named in the student's
+    language (`frame: lurra`), unless the model names it already."""
+    if word != "ground" and tree.root.get("frame") is None and not (tree.root.get("bodies") or {}):
+        document.put(tree.root, "frame", word)
 
 
 def _is_pick(p: Any) -> bool:
@@ -125,7 +137,8 @@ def sketch(text: str, fmt: str) -> dict[str, Any]:
             "drivers": [document.plain(d) for d in tree.root.get("drivers") or []],
             "ask": [document.plain(a) for a in tree.root.get("ask") or []],
             "properties": properties(tree, values), "problem": problem,
-            "name": str(tree.root.get("name") or "")}
+            "name": str(tree.root.get("name") or ""),
+            "names": document.plain(tree.root.get("names") or {})}
 
 
 def rate_unit(joint_type: str) -> Optional[str]:
@@ -180,13 +193,30 @@ class _Values:
 def properties(tree: Tree, values: _Values) -> dict[str, list[dict[str, Any]]]:
     """Per element (`point:A`, `body:crank`, `driver:0`), its typed dimensions: a label key,
     the path of the value in the tree, the kind of quantity (`length`, `angle`, `rate`,
-    `accel`, `direction`), the value now (degrees for angles) and the text written."""
+    `accel`, `direction`), the value now (degrees for angles) and the text written.
+
+    One quantity has one word wherever it shows: the distance between two points of one
+    body is that body's `length` (`of`: the two points) on the body and on each point; a
+    slider's guide is typed on the slider only (its pin says where: a `note` row)."""
     out: dict[str, list[dict[str, Any]]] = {}
     points = tree.root.get("points") or {}
     for name in points:
         out[f"point:{name}"] = _point_properties(tree, values, str(name), points[name])
+    guides: dict[str, str] = {}                     # a guide's paths -> the body it is typed on
     for name in tree.root.get("bodies") or {}:
-        out[f"body:{name}"] = _body_properties(tree, values, str(name))
+        rows = _body_properties(tree, values, str(name))
+        out[f"body:{name}"] = rows
+        for row in rows:
+            if row.get("guide"):
+                for path in [row["path"], *row.get("also", [])]:
+                    guides[json.dumps(path)] = str(name)
+    for name in points:
+        rows = out[f"point:{name}"]
+        typed_on = {guides[json.dumps(r["path"])] for r in rows if json.dumps(r["path"]) in guides}
+        if typed_on:
+            out[f"point:{name}"] = [r for r in rows if json.dumps(r["path"]) not in guides] + \
+                [{"label": "prop-guide-on", "kind": "note", "about": b, "path": None, "value": None,
+                  "text": None, "parameter": None} for b in sorted(typed_on)]
     for i, d in enumerate(tree.root.get("drivers") or []):
         rows = []
         for key, kind in (("value", "rate"), ("rate", "rate"), ("alpha", "accel"), ("accel", "accel")):
@@ -224,6 +254,17 @@ def _degrees(raw: Any) -> Optional[float]:
     return None
 
 
+def _distance_row(tree: Tree, values: _Values, name: str, centre: Any, path: list,
+                  raw: Any) -> dict[str, Any]:
+    """A point's distance from `centre`: the `length` of the body that carries both (its
+    `of`: the two points), else its `distance` from the centre (`about`)."""
+    centre = str(centre)
+    shared = any(centre in pts and name in pts for pts in map(tree.body_points, map(str, tree.bodies())))
+    if shared:
+        return _row(values, "prop-length", path, "length", raw) | {"of": [centre, name]}
+    return _row(values, "prop-distance", path, "length", raw) | {"about": centre}
+
+
 def _point_properties(tree: Tree, values: _Values, name: str, spec: Any) -> list[dict[str, Any]]:
     base = ["points", name]
     if isinstance(spec, list) and len(spec) == 2:
@@ -232,14 +273,14 @@ def _point_properties(tree: Tree, values: _Values, name: str, spec: Any) -> list
     if not isinstance(spec, dict):
         return []
     if "from" in spec:
-        return [_row(values, "prop-distance", base + ["distance"], "length", spec["distance"]),
-                _row(values, "prop-angle", base + ["angle"], "angle", spec["angle"])]
+        return [_distance_row(tree, values, name, spec["from"], base + ["distance"], spec["distance"]),
+                _row(values, "prop-angle", base + ["angle"], "angle", spec["angle"])
+                | {"of": [str(spec["from"]), name]}]
     if "circles" in spec:
-        return [_row(values, "prop-radius", base + ["circles", i, 1], "length", c[1],) | {"about": str(c[0])}
+        return [_distance_row(tree, values, name, c[0], base + ["circles", i, 1], c[1])
                 for i, c in enumerate(spec["circles"])]
     if "circle" in spec:
-        rows = [_row(values, "prop-radius", base + ["circle", 1], "length", spec["circle"][1])
-                | {"about": str(spec["circle"][0])}]
+        rows = [_distance_row(tree, values, name, spec["circle"][0], base + ["circle", 1], spec["circle"][1])]
         line = spec.get("line")
         if isinstance(line, dict) and isinstance(line.get("through"), list):
             rows += [_row(values, "prop-line-x", base + ["line", "through", 0], "length", line["through"][0]),
@@ -261,37 +302,43 @@ def _direction_row(values: _Values, path: list, raw: Any) -> dict[str, Any]:
 
 
 def _body_properties(tree: Tree, values: _Values, body: str) -> list[dict[str, Any]]:
-    """A link's length and angle (where its end is placed from its other end), a wheel's or
-    gear's radius, a slider's guide."""
+    """A wheel's or gear's radius, a link's lengths and angles (where one of its points is
+    placed from another), a slider's guide (`guide`: typed here only). A value two rows
+    would type (a wheel's radius, which also places its centre) is typed once."""
     rows: list[dict[str, Any]] = []
     listed = tree.body_points(body)
     points = tree.root.get("points") or {}
-    for p in listed:
-        spec = points.get(p)
-        for row in _point_properties(tree, values, p, spec) if isinstance(spec, dict) else []:
-            about = row.get("about") or (str(spec.get("from")) if "from" in spec else None)
-            if about in listed and about != p:
-                label = {"prop-distance": "prop-length", "prop-radius": "prop-length"}.get(row["label"], row["label"])
-                if label in ("prop-length", "prop-angle"):
-                    rows.append({**row, "label": label, "of": [about, p]})
     shape = tree.bodies().get(body)
     if isinstance(shape, dict) and isinstance(shape.get("circle"), dict):
         rows.append(_row(values, "prop-radius", ["bodies", body, "circle", "radius"], "length",
                          shape["circle"]["radius"]))
+    for p in listed:
+        spec = points.get(p)
+        for row in _point_properties(tree, values, p, spec) if isinstance(spec, dict) else []:
+            if row["label"] in ("prop-length", "prop-angle") and all(q in listed for q in row["of"]):
+                rows.append(row)
     for i, j in enumerate(tree.root.get("joints") or []):
         if body != tree.frame and body in [str(b) for b in j.get("bodies", [])] and \
                 isinstance(j.get("along"), list) and \
                 not any(isinstance(c, str) and name_of(c) in points for c in j["along"]):
-            guide = _direction_row(values, ["joints", i, "along"], j["along"]) | {"label": "prop-guide"}
+            guide = _direction_row(values, ["joints", i, "along"], j["along"]) | {"label": "prop-guide",
+                                                                                   "guide": True}
             for p in listed:           # the pin's guide line, written on the point
                 spec = points.get(p)
                 if isinstance(spec, dict) and isinstance(spec.get("line"), dict):
-                    rows += [r for r in _point_properties(tree, values, p, spec)
+                    rows += [r | {"guide": True} for r in _point_properties(tree, values, p, spec)
                              if r["label"] in ("prop-line-x", "prop-line-y")]
                     if isinstance(spec["line"].get("direction"), list):
                         guide["also"] = [["points", p, "line", "direction"]]
             rows.append(guide)
-    return rows
+    seen: set[str] = set()
+    unique = []
+    for row in rows:
+        key = json.dumps(row["path"])
+        if key not in seen:
+            seen.add(key)
+            unique.append(row)
+    return unique
 
 
 # typing a dimension ------------------------------------------------------------------------------
@@ -300,13 +347,13 @@ def _set(tree: Tree, path: Any, value: Any, unit: Any) -> None:
     `deg(...)`; a direction (unit `direction`, degrees) as its unit vector; a value that
     names a parameter changes the parameter."""
     if not isinstance(path, list) or not path or not all(isinstance(k, (str, int)) for k in path):
-        raise KinematikaError("usage", "'path' is a list of keys and indices", "path")
+        raise KinematikaError("usage", "build-path", "path")
     if isinstance(value, bool) or not isinstance(value, (int, float, str)):
-        raise KinematikaError("usage", "'value' is a number or an expression", "value")
+        raise KinematikaError("usage", "build-value", "value")
     if isinstance(value, str) and not value.strip():
-        raise KinematikaError("usage", "'value' is empty", "value")
+        raise KinematikaError("usage", "build-value-empty", "value")
     if isinstance(value, (int, float)) and not math.isfinite(value):
-        raise KinematikaError("usage", "'value' is not a finite number", "value")
+        raise KinematikaError("usage", "build-value-finite", "value")
     parent, key = _locate(tree.root, path)
     if unit == "direction":
         a = math.radians(float(value))
@@ -345,7 +392,7 @@ def _step(node: Any, key: Any, path: list) -> Any:
             return node[key]
     except (IndexError, KeyError):
         pass
-    raise KinematikaError("usage", f"nothing at {'.'.join(map(str, path))} in the model", "path")
+    raise KinematikaError("usage", "build-nothing-at", "path", path=".".join(map(str, path)))
 
 
 # deleting ---------------------------------------------------------------------------------------
@@ -362,17 +409,16 @@ def _delete(tree: Tree, element: str) -> None:
         index = tree.joint_ids().index(name) if kind == "joint" and name in tree.joint_ids() else \
             (int(name) if name.isdigit() else -1)
         if not 0 <= index < len(items):
-            raise KinematikaError("usage", f"no {element} to delete", "element")
+            raise KinematikaError("usage", "delete-missing", "element", element=element)
         del items[index]
     else:
-        raise KinematikaError("usage", f"{element!r}: delete point:NAME, body:NAME, joint:ID, "
-                              "driver:N or ask:N", "element")
+        raise KinematikaError("usage", "delete-what", "element", element=repr(element))
 
 
 def _delete_point(tree: Tree, name: str) -> None:
     points = tree.points()
     if name not in points:
-        raise KinematikaError("usage", f"no point {name!r} to delete", "element")
+        raise KinematikaError("usage", "delete-no-point", "element", point=name)
     doomed, changed = {name}, True
     while changed:                                   # and every point built on a doomed one
         changed = False
@@ -403,7 +449,7 @@ def _delete_point(tree: Tree, name: str) -> None:
 def _delete_body(tree: Tree, name: str) -> None:
     bodies = tree.bodies()
     if name not in bodies or name == tree.frame:
-        raise KinematikaError("usage", f"no body {name!r} to delete (the ground stays)", "element")
+        raise KinematikaError("usage", "delete-no-body", "element", body=name)
     listed = tree.body_points(name)
     del bodies[name]
     ids = tree.joint_ids()
@@ -443,7 +489,7 @@ def _drive(tree: Tree, op: dict[str, Any]) -> None:
     rate, accel = op.get("value", 1), op.get("alpha", 0)
     for x in (rate, accel):
         if isinstance(x, bool) or not isinstance(x, (int, float, str)):
-            raise KinematikaError("usage", "a driver's value is a number or an expression", "value")
+            raise KinematikaError("usage", "driver-value", "value")
     if isinstance(body, str) and body in tree.bodies() and body != tree.frame:
         item = {"omega": body, "value": _value(rate), "alpha": _value(accel)}
         same = lambda d: str(d.get("omega")) == body and "relative_to" not in d
@@ -451,7 +497,7 @@ def _drive(tree: Tree, op: dict[str, Any]) -> None:
         item = {"joint": joint, "rate": _value(rate), "accel": _value(accel)}
         same = lambda d: str(d.get("joint")) == joint
     else:
-        raise KinematikaError("usage", "the input is a moving body or a joint of the model", "body")
+        raise KinematikaError("usage", "input-body-or-joint", "body")
     drivers = tree.drivers()
     for i, d in enumerate(drivers):
         if isinstance(d, dict) and same(d):
@@ -467,16 +513,15 @@ def _value(x: Any) -> Any:
 def _ask(tree: Tree, question: str, target: str) -> None:
     """Add a question about a point or a body (once)."""
     if question not in QUESTIONS:
-        raise KinematikaError("usage", f"{question!r}: a question is one of {', '.join(QUESTIONS)}",
-                              "question")
+        raise KinematikaError("usage", "question-kind", "question", question=repr(question), kinds=list(QUESTIONS))
     if not target:
-        raise KinematikaError("usage", "'target' names the point or body asked about", "target")
+        raise KinematikaError("usage", "question-target", "target")
     item = {question: target}
     if question == "decompose":
         base = target.split("@")[0]
         moving = next((b for b in tree.carriers(base) if b != tree.frame), None)
         if moving is None:
-            raise KinematikaError("usage", f"{target} is on no moving body", "target")
+            raise KinematikaError("usage", "target-not-moving", "target", target=target)
         item = {"decompose": target, "moving": moving}
     asks = tree.asks()
     if any(document.plain(a) == item for a in asks):

@@ -14,7 +14,7 @@ import io
 import json
 from typing import Any
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from ..model.files import parse_text
 
 FORMATS = ("yaml", "toml", "json")
@@ -23,14 +23,13 @@ FORMATS = ("yaml", "toml", "json")
 def load(text: str, fmt: str) -> Any:
     """The text as a round-trip tree (a mapping); an empty text is an empty mapping."""
     if fmt not in FORMATS:
-        raise KinematikaError("usage", f"{fmt!r}: a format is one of {', '.join(FORMATS)}", "format")
+        raise KinematikaError("usage", "format-one-of", "format", format=repr(fmt), formats=list(FORMATS))
     if not text.strip() or (fmt == "yaml" and all(
             not line.strip() or line.lstrip().startswith("#") for line in text.splitlines())):
         return _empty(fmt, text)
     plain = parse_text(text, fmt, "model")              # the bounds on untrusted input
     if not isinstance(plain, dict):
-        raise KinematikaError("schema", "a model is a mapping with keys points, bodies, joints, "
-                              "drivers", "model")
+        raise KinematikaError("schema", "model-mapping", "model")
     if fmt == "json":
         return plain
     if fmt == "toml":
@@ -72,7 +71,7 @@ def convert(text: str, fmt: str, to: str) -> str:
     """The model written in another format: the same tree (YAML comments cannot be kept in
     JSON; TOML and YAML keep the model's own, not its comments, across the change)."""
     if to not in FORMATS:
-        raise KinematikaError("usage", f"{to!r}: a format is one of {', '.join(FORMATS)}", "to")
+        raise KinematikaError("usage", "format-one-of", "to", format=repr(to), formats=list(FORMATS))
     if to == fmt:
         return text
     tree = plain(load(text, fmt))
@@ -148,21 +147,28 @@ def section(tree: Any, key: str, kind: type, fmt: str) -> Any:
     the format's examples put it (parameters, points, bodies, joints, drivers, ask)."""
     value = tree.get(key)
     if value is None:
-        value = _block_map(fmt) if kind is dict else _block_list(fmt)
-        rank = ORDER.index(key) if key in ORDER else len(ORDER)
-        keys = list(tree.keys())
-        at = next((i for i, k in enumerate(keys) if k in ORDER and ORDER.index(k) > rank), len(keys))
-        if hasattr(tree, "insert") and at < len(keys):
-            tree.insert(at, key, value)
-        elif isinstance(tree, dict) and not hasattr(tree, "insert") and at < len(keys) \
-                and type(tree) is dict:
-            items = list(tree.items())
-            tree.clear()
-            tree.update(items[:at] + [(key, value)] + items[at:])
-        else:
-            tree[key] = value
+        put(tree, key, _block_map(fmt) if kind is dict else _block_list(fmt))
         value = tree[key]
     return value
+
+
+def put(tree: Any, key: str, value: Any) -> None:
+    """Set the top-level `key` (a section or a value such as `frame`): a new key goes where
+    the format's examples put it (`ORDER`), an existing one keeps its place."""
+    if key in tree:
+        tree[key] = value
+        return
+    rank = ORDER.index(key) if key in ORDER else len(ORDER)
+    keys = list(tree.keys())
+    at = next((i for i, k in enumerate(keys) if k in ORDER and ORDER.index(k) > rank), len(keys))
+    if hasattr(tree, "insert") and at < len(keys):
+        tree.insert(at, key, value)
+    elif type(tree) is dict and at < len(keys):
+        items = list(tree.items())
+        tree.clear()
+        tree.update(items[:at] + [(key, value)] + items[at:])
+    else:
+        tree[key] = value
 
 
 def _block_map(fmt: str) -> Any:
@@ -265,9 +271,7 @@ def _toml_symbols(tree: dict) -> dict:
 def _check_toml(tree: Any, where: str = "") -> None:
     """TOML has no null: a symbolic parameter (`r: null`) cannot be written in it."""
     if tree is None:
-        raise KinematikaError("usage", f"{where or 'the model'} is null, which TOML cannot "
-                              "write (a symbolic parameter): keep this model in YAML or JSON",
-                              where)
+        raise KinematikaError("usage", "toml-null", where, place=where or Said("the-model"))
     if isinstance(tree, dict):
         for k, v in tree.items():
             _check_toml(v, f"{where}.{k}" if where else str(k))

@@ -19,7 +19,7 @@ from typing import Any, Optional
 
 import numpy as np
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, parser_problem
 
 Edit = tuple[int, int, str]                 # replace text[start:end] with the text
 
@@ -29,20 +29,18 @@ def move_point(text: str, fmt: str, point: str, to: tuple[float, float]) -> str:
     if fmt == "toml":
         start, end, kind = _toml_span(text, point)
         if kind != "list2":
-            raise KinematikaError("usage", f"{point} is constructed: drag it in a YAML or JSON model, "
-                                  "or edit its construction", f"points.{point}")
+            raise KinematikaError("usage", "drag-constructed", f"points.{point}", point=point)
         return text[:start] + _pair(to) + text[end:]
     root = _compose(text)
     node = _child(_child(root, "points"), point)
     if node is None:
-        raise KinematikaError("schema", f"no point {point!r} in the model", "points")
+        raise KinematikaError("schema", "no-point-in-model", "points", point=point)
     if _is_pair(node):
         edits = _coordinate_edits(text, root, node, point, to)
     elif _is_mapping(node):
         edits = _construction_edits(text, fmt, root, node, point, np.array(to, dtype=float))
     else:
-        raise KinematikaError("usage", f"{point} is not a planar point with two coordinates",
-                              f"points.{point}")
+        raise KinematikaError("usage", "drag-not-planar", f"points.{point}", point=point)
     for start, end, new in sorted(edits, reverse=True):
         text = text[:start] + new + text[end:]
     return text
@@ -60,16 +58,14 @@ def _coordinate_edits(text: str, root: Any, node: Any, point: str,
     edits = Edits(text, root, node, 1.0, False)
     for item, value in zip(node.value, to):
         if not isinstance(item, yaml.ScalarNode):
-            raise KinematikaError("usage", f"{point} is not a planar point with two coordinates",
-                                  f"points.{point}")
+            raise KinematikaError("usage", "drag-not-planar", f"points.{point}", point=point)
         raw = item.value.strip()
         if params is not None and _child(params, raw) is not None:
             edits.value_node(item, _short(value))
         elif _is_number(raw):
             edits.out.append((item.start_mark.index, _end(text, item), _short(value)))
         else:
-            raise KinematikaError("usage", f"{point} is placed by the formula {raw!r}: change its "
-                                  "parameters to move it", f"points.{point}")
+            raise KinematikaError("usage", "drag-formula", f"points.{point}", point=point, formula=repr(raw))
     return edits.out
 
 
@@ -135,8 +131,7 @@ def _construction_edits(text: str, fmt: str, root: Any, node: Any, point: str,
                          edits.length(float(np.linalg.norm(onto - centre))))
         edits.side(_child(node, "side"), "ahead" if (onto - foot) @ d >= 0 else "behind", onto)
     else:
-        raise KinematikaError("usage", f"{point} is where two lines meet: drag the points its "
-                              "lines go through", where)
+        raise KinematikaError("usage", "drag-lines-meet", where, point=point)
     return edits.out
 
 
@@ -196,7 +191,7 @@ def _compose(text: str) -> Any:
     try:
         return yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.YAMLError as err:
-        raise KinematikaError("syntax", f"the model cannot be read: {err}", "") from None
+        raise KinematikaError("syntax", "model-unreadable", "", problem=parser_problem(str(err))) from None
 
 
 def _child(node: Any, key: str) -> Optional[Any]:
@@ -261,5 +256,4 @@ def _toml_span(text: str, point: str) -> tuple[int, int, str]:
             if re.match(rf"\s*\"?{re.escape(point)}\"?\s*=\s*\{{", line):
                 return 0, 0, "mapping"
         offset += len(line)
-    raise KinematikaError("usage", f"the point {point!r} is not written as `{point} = [x, y]` "
-                          "in the [points] table", f"points.{point}")
+    raise KinematikaError("usage", "drag-toml-form", f"points.{point}", point=point)

@@ -28,7 +28,7 @@ def exercise_options(body: dict) -> dict[str, Any]:
     """The exercise keys of a request, checked (a wrong one is a `usage` error naming it)."""
     vary = body.get("vary") or []
     if not (isinstance(vary, list) and all(isinstance(v, str) for v in vary)):
-        raise KinematikaError("usage", "'vary' is a list of NAME=LOW:HIGH[:STEP] texts", "vary")
+        raise KinematikaError("usage", "request-vary", "vary")
     out: dict[str, Any] = {"vary": vary,
                            "seed": _whole(body, "seed", 0, 0, 2 ** 63 - 1),
                            "variant": _whole(body, "variant", 1, 1, MAX_VARIANT)}
@@ -36,14 +36,13 @@ def exercise_options(body: dict) -> dict[str, Any]:
     if answers is not None and not (isinstance(answers, dict) and
                                     all(isinstance(k, str) and isinstance(v, (str, int, float))
                                         and not isinstance(v, bool) for k, v in answers.items())):
-        raise KinematikaError("usage", "'answers' maps question ids (q2.y) to the typed numbers", "answers")
+        raise KinematikaError("usage", "request-answers", "answers")
     out["answers"] = None if answers is None else {k: str(v) for k, v in answers.items()}
     reveal = body.get("reveal", False)
     if not isinstance(reveal, bool):
-        raise KinematikaError("usage", "'reveal' is true or false", "reveal")
+        raise KinematikaError("usage", "request-reveal", "reveal")
     if reveal and not out["answers"]:
-        raise KinematikaError("usage", "the worked solution comes after a check: send the answers with it",
-                              "reveal")
+        raise KinematikaError("usage", "reveal-after-check", "reveal")
     out["reveal"] = reveal
     return out
 
@@ -51,7 +50,7 @@ def exercise_options(body: dict) -> dict[str, Any]:
 def _whole(body: dict, key: str, default: int, low: int, high: int) -> int:
     value = body.get(key, default)
     if not isinstance(value, int) or isinstance(value, bool) or not low <= value <= high:
-        raise KinematikaError("usage", f"{key!r} is a whole number, {low} to {high}", key)
+        raise KinematikaError("usage", "request-whole-range", key, key=key, low=low, high=high)
     return value
 
 
@@ -66,8 +65,7 @@ def exercise_answer(req: Any) -> dict[str, Any]:
     if vary:
         ex = make_exercise(model, vary, number, req.get("seed"), lang)
     elif number != 1:
-        raise KinematikaError("usage", "without 'vary' the exercise has one variant, the model's data",
-                              "variant")
+        raise KinematikaError("usage", "request-one-variant", "variant")
     else:
         ex = Exercise(model, model.exercise or DEFAULT_SECTION, [], req.get("seed"), lang)
         variant = ex.solve({})

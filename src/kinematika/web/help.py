@@ -32,7 +32,7 @@ def page_html(name: str) -> str | bytes:
     path = (DOCS / name).resolve()
     if not str(path).startswith(str(DOCS.resolve()) + "/") or path.suffix not in (".md", ".png") \
             or not path.is_file():
-        raise KinematikaError("usage", f"no document {name!r} (the help serves docs/*.md)", "name")
+        raise KinematikaError("usage", "help-no-document", "name", name=name)
     if path.suffix == ".png":
         return path.read_bytes()
     return _rendered(str(path), path.stat().st_mtime)

@@ -48,7 +48,7 @@ class Context:
         """Where a pick is: a named point's place now, or the coordinates clicked."""
         if isinstance(pick, str):
             if pick not in self.at:
-                raise KinematikaError("usage", f"no point {pick!r} placed yet", "picks")
+                raise KinematikaError("usage", "pick-no-point", "picks", point=pick)
             return self.at[pick]
         return np.array(pick, dtype=float)
 
@@ -121,7 +121,7 @@ def link(ctx: Context, picks: list[Pick]) -> str:
     body = ctx.body("link")
     if isinstance(end, str):
         if end == start:
-            raise KinematikaError("usage", "a link joins two different points", "picks")
+            raise KinematikaError("usage", "link-two-points", "picks")
         _close(ctx, end, start)
     else:
         end = _polar(ctx, start, ctx.place(end))
@@ -137,7 +137,7 @@ def _polar(ctx: Context, origin: str, to: np.ndarray) -> str:
     t = ctx.tree
     d = to - ctx.at[origin]
     if math.hypot(*d) == 0:
-        raise KinematikaError("usage", "a link needs some length: put its end elsewhere", "picks")
+        raise KinematikaError("usage", "link-length", "picks")
     name = t.fresh_point()
     t.points()[name] = t.map({"from": origin, "distance": number(math.hypot(*d)),
                               "angle": degrees(math.degrees(math.atan2(d[1], d[0])))})
@@ -153,8 +153,7 @@ def _by_distance(t: Any, point: str) -> Any:
     if not isinstance(spec, dict):
         return None
     if "from" not in spec or "reference" in spec:
-        raise KinematikaError("usage", f"{point} is already placed by two conditions: delete "
-                              "one of its links first", f"points.{point}")
+        raise KinematikaError("usage", "point-two-conditions", f"points.{point}", point=point)
     return spec
 
 
@@ -219,8 +218,7 @@ def slot(ctx: Context, picks: list[Pick]) -> str:
         pin = _new_point(ctx, pin)
     ends = t.body_points(slotted)[:2]
     if len(ends) < 2 or pin in ends:
-        raise KinematikaError("usage", f"the slot runs along two points of {slotted}: pick "
-                              "another body or another pin", "picks")
+        raise KinematikaError("usage", "slot-own-points", "picks", body=slotted)
     owner = t.owner(pin)
     d = ctx.at[ends[1]] - ctx.at[ends[0]]
     _guide(ctx, pin, t.list(ends), d / np.linalg.norm(d))
@@ -236,8 +234,7 @@ def plate(ctx: Context, picks: list[Pick]) -> str:
     t, body = ctx.tree, picks[0]["body"]
     ends = t.body_points(body)[:2]
     if len(ends) < 2:
-        raise KinematikaError("usage", f"{body} needs two points before a third is fixed to it",
-                              "picks")
+        raise KinematikaError("usage", "plate-two-points", "picks", body=body)
     p, q = ctx.at[ends[0]], ctx.at[ends[1]]
     u = (q - p) / np.linalg.norm(q - p)
     n = np.array([-u[1], u[0]])
@@ -257,14 +254,13 @@ def wheel(ctx: Context, picks: list[Pick]) -> str:
     t = ctx.tree
     if t.bodies().get(t.frame) is not None and isinstance(t.bodies()[t.frame], dict) \
             and "line" in t.bodies()[t.frame]:
-        raise KinematikaError("usage", "the ground has a track already: one straight track a model",
-                              "picks")
+        raise KinematikaError("usage", "track-once", "picks")
     contact = _new_point(ctx, picks[0], pivot=True)
     k = ctx.at[contact]
     c = ctx.place(picks[1])
     radius = float(np.linalg.norm(c - k))
     if radius == 0:
-        raise KinematikaError("usage", "put the wheel's centre away from its contact point", "picks")
+        raise KinematikaError("usage", "wheel-centre", "picks")
     angle = math.degrees(math.atan2(*(c - k)[::-1]))
     tangent = [number(math.cos(math.radians(angle - 90)), 12),
                number(math.sin(math.radians(angle - 90)), 12)]
@@ -291,7 +287,7 @@ def gear(ctx: Context, picks: list[Pick]) -> str:
     a, b = ctx.at[first], ctx.place(picks[1])
     gap = float(np.linalg.norm(b - a))
     if gap == 0:
-        raise KinematikaError("usage", "put the second gear's centre away from the first", "picks")
+        raise KinematikaError("usage", "gear-centre", "picks")
     ra, rb = t.fresh_parameter("r"), None
     t.set_parameter(ra, number(gap / 2))
     rb = t.fresh_parameter("r")
@@ -324,14 +320,12 @@ def curved_slot(ctx: Context, picks: list[Pick]) -> str:
         pin = _new_point(ctx, pin)
     body = t.bodies().get(slotted)
     if body is None:
-        raise KinematikaError("usage", f"no body {slotted!r}", "picks")
+        raise KinematikaError("usage", "no-body", "picks", body=slotted)
     if isinstance(body, dict) and any(k in body for k in ("circle", "curve", "cam", "line")):
-        raise KinematikaError("usage", f"{slotted} has an outline already: one slot a body",
-                              "picks")
+        raise KinematikaError("usage", "slot-outline-once", "picks", body=slotted)
     owner = t.owner(pin)
     if owner is None or owner == slotted:
-        raise KinematikaError("usage", f"the pin {pin} is on no other body than {slotted}: "
-                              "pick a pin of another body", "picks")
+        raise KinematikaError("usage", "pin-other-body", "picks", pin=pin, body=slotted)
     centre = picks[2]
     if not isinstance(centre, str):
         centre = t.fresh_point()
@@ -340,7 +334,7 @@ def curved_slot(ctx: Context, picks: list[Pick]) -> str:
         ctx.at[centre] = xy
     radius = float(np.linalg.norm(ctx.at[pin] - ctx.at[centre]))
     if radius == 0:
-        raise KinematikaError("usage", "the slot's centre cannot be the pin", "picks")
+        raise KinematikaError("usage", "slot-centre-pin", "picks")
     listed = t.body_points(slotted)
     t.bodies()[slotted] = t.map({"points": listed + ([centre] if centre not in listed else []),
                                  "circle": {"center": centre, "radius": number(radius)}})
@@ -354,12 +348,11 @@ def contact(ctx: Context, picks: list[Pick]) -> str:
     t = ctx.tree
     a, b = picks[0]["body"], picks[1]["body"]
     if a == b:
-        raise KinematikaError("usage", "a contact joins two different bodies", "picks")
+        raise KinematikaError("usage", "contact-two-bodies", "picks")
     for name in (a, b):
         body = t.bodies().get(name)
         if not (isinstance(body, dict) and any(k in body for k in ("circle", "line", "curve", "cam"))):
-            raise KinematikaError("usage", f"{name} has no outline (a circle, a line, a curve, a "
-                                  "cam) to touch with: write its shape in the text first", "picks")
+            raise KinematikaError("usage", "contact-no-outline", "picks", body=name)
     t.add_joint({"type": CONTACT, "bodies": t.list([a, b])})
     return f"body:{a}"
 
@@ -385,6 +378,5 @@ def tool(kind: str) -> Tool:
     """The palette's tool of a kind; an unknown kind is a `usage` error naming the known ones."""
     found: Optional[Tool] = BY_KIND.get(kind)
     if found is None:
-        raise KinematikaError("usage", f"unknown tool {kind!r} (the palette has "
-                              f"{', '.join(BY_KIND)})", "kind")
+        raise KinematikaError("usage", "tool-unknown", "kind", tool=kind, tools=list(BY_KIND))
     return found

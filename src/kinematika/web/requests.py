@@ -3,7 +3,8 @@
 Every endpoint takes `{"model": TEXT, "format": "yaml", "set": {...}, "move": {...},
 "assembly": N, "lang": "eu"}` (the contract), and each accepts a few more keys that mean
 what the command's options mean (`symbolic`, the sweep's `joint`, `by`, `steps`,
-`skip_bad`, the figure's `velocities`, `centres`, ...). A key the endpoint does not know,
+`skip_bad`, the figure's `velocities`, `centres`, ...), and `row` (the model posed at
+that row of its own sweep, through limit positions: what the page's slider shows). A key the endpoint does not know,
 or a value of the wrong type, is a `usage` error naming the key, like a wrong option on the
 command line.
 """
@@ -15,17 +16,18 @@ from dataclasses import dataclass, field
 from typing import Any, Optional
 
 from ..commands import How
-from ..errors import KinematikaError
+from ..errors import KinematikaError, parser_problem
 from ..limits import PAGE_SWEEP_STEPS
 
 FORMATS = ("yaml", "toml", "json")
 COMMON = ("model", "format", "set", "move", "assembly", "lang")
 EXTRA = {
-    "solve": ("symbolic",),
-    "centres": ("symbolic",),
+    "solve": ("symbolic", "row"),
+    "centres": ("symbolic", "row"),
     "sweep": ("joint", "by", "steps", "skip_bad", "as"),
-    "explain": ("symbolic", "length_unit"),
-    "draw": ("as", "velocities", "accelerations", "centres", "curvature", "labels", "points",
+    "simulate": ("time", "steps", "method", "as"),
+    "explain": ("symbolic", "length_unit", "row"),
+    "draw": ("row", "as", "velocities", "accelerations", "centres", "curvature", "labels", "points",
              "view", "width"),
     "edit": ("point", "to"),
     "assemblies": (),
@@ -34,7 +36,7 @@ EXTRA = {
     "sketch": (),
     "convert": ("to",),
 }
-AS = {"sweep": ("json", "csv"), "draw": ("data", "svg", "png")}
+AS = {"sweep": ("json", "csv"), "simulate": ("json", "csv"), "draw": ("data", "svg", "png")}
 
 
 @dataclass
@@ -56,23 +58,23 @@ def parse_body(endpoint: str, raw: bytes) -> Request:
     try:
         body = json.loads(raw.decode("utf-8"))
     except (UnicodeDecodeError, ValueError) as err:
-        raise KinematikaError("syntax", f"the request is not JSON: {err}", "request") from None
+        raise KinematikaError("syntax", "request-not-json", "request", problem=parser_problem(str(err))) from None
     if not isinstance(body, dict):
-        raise KinematikaError("usage", "the request is a JSON object with at least the key "
-                              "'model'", "request")
+        raise KinematikaError("usage", "request-object", "request")
     allowed = COMMON + EXTRA[endpoint]
     for key in body:
         if key not in allowed:
-            raise KinematikaError("usage", f"unknown key {key!r} for /api/{endpoint} (accepted: "
-                                  f"{', '.join(allowed)})", key)
+            raise KinematikaError("usage", "request-unknown-key", key, key=key, endpoint=endpoint,
+                                  accepted=list(allowed))
     model = body.get("model")
     if not isinstance(model, str):
-        raise KinematikaError("usage", "'model' is required: the model file's text", "model")
+        raise KinematikaError("usage", "request-model", "model")
     fmt = _choice(body, "format", FORMATS, "yaml")
     how = How(fmt=fmt, set=_assignments(body, "set"), move=_assignments(body, "move"),
-              assembly=_integer(body, "assembly", None, low=0))
+              assembly=_integer(body, "assembly", None, low=0),
+              row=_integer(body, "row", None, low=0, high=PAGE_SWEEP_STEPS))
     options = {k: v for k, v in body.items() if k not in ("model", "format", "set", "move",
-                                                          "assembly")}
+                                                          "assembly", "row")}
     return Request(endpoint, model, how, _options(endpoint, options))
 
 
@@ -91,6 +93,12 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         out["by"] = _number(body, "by")
         out["steps"] = _integer(body, "steps", None, low=1, high=PAGE_SWEEP_STEPS)
         out["skip_bad"] = bool(_flag(body, "skip_bad"))
+    elif endpoint == "simulate":
+        from ..simulate.run import METHODS
+
+        out["time"] = _number(body, "time")
+        out["steps"] = _integer(body, "steps", None, low=1, high=PAGE_SWEEP_STEPS)
+        out["method"] = _choice(body, "method", METHODS, METHODS[0])
     elif endpoint == "explain":
         out["length_unit"] = _text(body, "length_unit") or "m"
     elif endpoint == "draw":
@@ -100,12 +108,12 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         points = body.get("points")
         if points is not None and not (isinstance(points, list) and
                                        all(isinstance(p, str) for p in points)):
-            raise KinematikaError("usage", "'points' is a list of point names", "points")
+            raise KinematikaError("usage", "request-points", "points")
         out["points"] = points or None
         out["view"] = _choice(body, "view", ("iso", "top", "front", "side"), "iso")
         width = _number(body, "width")
         if width is not None and not 1 <= width <= 100:
-            raise KinematikaError("usage", "'width' is a figure width in inches, 1 to 100", "width")
+            raise KinematikaError("usage", "request-width", "width")
         out["width"] = width or 8.0
     elif endpoint == "exercise":
         from .exercise_api import exercise_options
@@ -113,7 +121,7 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         out.update(exercise_options(body))
     elif endpoint == "build":
         if not isinstance(body.get("op"), dict):
-            raise KinematikaError("usage", "'op' is the action: an object with its key 'op'", "op")
+            raise KinematikaError("usage", "request-op", "op")
         out["op"] = body["op"]
     elif endpoint == "convert":
         out["to"] = _choice(body, "to", FORMATS, "yaml")
@@ -121,10 +129,10 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         out["point"] = _text(body, "point")
         to = body.get("to")
         if not (isinstance(to, list) and len(to) == 2 and all(_finite(x) for x in to)):
-            raise KinematikaError("usage", "'to' is the point's new place [x, y]", "to")
+            raise KinematikaError("usage", "request-to", "to")
         out["to"] = (float(to[0]), float(to[1]))
         if not out["point"]:
-            raise KinematikaError("usage", "'point' names the point to move", "point")
+            raise KinematikaError("usage", "request-point", "point")
     return out
 
 
@@ -135,28 +143,28 @@ def _finite(x: Any) -> bool:
 def _choice(body: dict, key: str, choices: tuple, default: str) -> str:
     value = body.get(key, default)
     if value not in choices:
-        raise KinematikaError("usage", f"{value!r}: {key} is one of {', '.join(choices)}", key)
+        raise KinematikaError("usage", "request-choice", key, value=repr(value), key=key, choices=list(choices))
     return value
 
 
 def _flag(body: dict, key: str) -> Optional[bool]:
     value = body.get(key)
     if value is not None and not isinstance(value, bool):
-        raise KinematikaError("usage", f"{key!r} is true, false or null", key)
+        raise KinematikaError("usage", "request-flag", key, key=key)
     return value
 
 
 def _text(body: dict, key: str) -> Optional[str]:
     value = body.get(key)
     if value is not None and not isinstance(value, str):
-        raise KinematikaError("usage", f"{key!r} is a text", key)
+        raise KinematikaError("usage", "request-text", key, key=key)
     return value
 
 
 def _number(body: dict, key: str) -> Optional[float]:
     value = body.get(key)
     if value is not None and not _finite(value):
-        raise KinematikaError("usage", f"{key!r} is a number", key)
+        raise KinematikaError("usage", "request-number", key, key=key)
     return None if value is None else float(value)
 
 
@@ -167,8 +175,9 @@ def _integer(body: dict, key: str, default: Optional[int], low: int = 0,
         return None
     if not isinstance(value, int) or isinstance(value, bool) or value < low or \
             (high is not None and value > high):
-        bound = f"{low} to {high}" if high is not None else f"at least {low}"
-        raise KinematikaError("usage", f"{key!r} is a whole number, {bound}", key)
+        if high is not None:
+            raise KinematikaError("usage", "request-whole-range", key, key=key, low=low, high=high)
+        raise KinematikaError("usage", "request-whole-least", key, key=key, low=low)
     return value
 
 
@@ -178,7 +187,7 @@ def _assignments(body: dict, key: str) -> dict[str, str]:
     if value is None:
         return {}
     if not isinstance(value, dict):
-        raise KinematikaError("usage", f"{key!r} maps names to numbers or expressions", key)
+        raise KinematikaError("usage", "request-assignments", key, key=key)
     out = {}
     for name, v in value.items():
         if _finite(v):
@@ -186,5 +195,5 @@ def _assignments(body: dict, key: str) -> dict[str, str]:
         elif isinstance(v, str) and v.strip():
             out[name] = v
         else:
-            raise KinematikaError("usage", f"{key}.{name}: a number or an expression", key)
+            raise KinematikaError("usage", "request-assignment", key, key=f"{key}.{name}")
     return out

@@ -24,11 +24,12 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from .. import commands
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said, speaking
+from ..languages import LANGS
 from .. import limits
 from .requests import Request, parse_body
 
-ENDPOINTS = ("solve", "sweep", "centres", "explain", "draw", "edit", "assemblies", "exercise",
+ENDPOINTS = ("solve", "sweep", "simulate", "centres", "explain", "draw", "edit", "assemblies", "exercise",
              "build", "sketch", "convert")
 STATIC = resources.files("kinematika.web") / "static"
 EXAMPLES = resources.files("kinematika.web") / "examples"
@@ -50,12 +51,19 @@ class Start:
 
 
 class Failure(Exception):
-    """An answer other than 200: an HTTP status and the contract's error JSON."""
+    """An answer other than 200: an HTTP status and the contract's error JSON (its message a
+    key of the errors' catalogue and its arguments, said in the request's language)."""
 
-    def __init__(self, status: int, kind: str, message: str, where: str = "") -> None:
-        super().__init__(message)
+    def __init__(self, status: int, kind: str, message: "str | Said", where: str = "", /, **args: Any) -> None:
+        self.error = KinematikaError(kind, message, where, **args)
+        super().__init__(self.error.said)
         self.status = status
-        self.body = {"error": {"kind": kind, "message": message, "where": where}}
+        self.extra: dict[str, Any] = {}        # more of the answer beside the error (`partial` rows)
+
+    @property
+    def body(self) -> dict:
+        """The contract's error JSON, in the language in use (and `extra`)."""
+        return {**self.error.as_json(), **self.extra}
 
 
 def bundled_examples() -> dict[str, str]:
@@ -84,15 +92,26 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
     async def example(request: HttpRequest) -> Response:
         name = request.path_params["name"]
         if name not in start.examples:
-            return _failure(Failure(404, "usage", f"no bundled example {name!r}", "name"))
+            with speaking(_asked(request.query_params.get("lang"))):
+                return _failure(Failure(404, "usage", "no-example", "name", name=name))
         fmt = "toml" if name.endswith(".toml") else "yaml"
         return JSONResponse({"model": start.examples[name], "format": fmt, "name": name},
                             headers=SECURITY)
 
     def api(endpoint: str) -> Callable:
         async def handle(request: HttpRequest) -> Response:
+            """The answer; its errors in the request's `lang` (the body's, else the query's)."""
+            asked = request.query_params.get("lang")
             try:
                 raw = await _read_body(request)
+            except Failure as err:
+                with speaking(_asked(asked)):
+                    return _failure(err)
+            with speaking(_language_of(raw) or _asked(asked)):
+                return await answer(raw)
+
+        async def answer(raw: bytes) -> Response:
+            try:
                 req = parse_body(endpoint, raw)
                 key = (endpoint, raw)
                 kept = cache.get(key)
@@ -100,19 +119,19 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
                     status, media, body = kept
                 else:
                     if pool.statistics().tasks_waiting >= limits.WAITING:
-                        raise Failure(503, "limit", "the server is busy: try again in a moment")
+                        raise Failure(503, "limit", "server-busy")
                     with anyio.fail_after(limits.REQUEST_SECONDS):
                         status, media, body = await anyio.to_thread.run_sync(
                             _compute, req, limiter=pool, abandon_on_cancel=True)
                     if status == 200:
                         cache.put(key, (status, media, body))
             except KinematikaError as err:
-                return _error(400, err.as_json())
+                return _error(400, _answered(err))
             except Failure as err:
                 return _failure(err)
             except TimeoutError:
-                return _failure(Failure(503, "limit", f"the computation took longer than "
-                                        f"{limits.REQUEST_SECONDS:g} s and was given up", endpoint))
+                return _failure(Failure(503, "limit", "server-timeout", endpoint,
+                                        seconds=float(limits.REQUEST_SECONDS)))
             return Response(body, status_code=status, media_type=media, headers=SECURITY)
         return handle
 
@@ -127,14 +146,17 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
         try:
             return JSONResponse(page_strings(request.path_params["lang"]), headers=SECURITY)
         except KinematikaError as err:
-            return _error(404, err.as_json())
+            with speaking("en"):
+                return _error(404, err.as_json())
 
     async def template(request: HttpRequest) -> Response:
         from .templates import NAMES, template
 
         name = request.path_params["name"]
         if name not in NAMES:
-            return _failure(Failure(404, "usage", f"no template {name!r}", "name"))
+            asked = request.query_params.get("lang")
+            with speaking(_asked(asked)):
+                return _failure(Failure(404, "usage", "no-template", "name", name=name))
         return JSONResponse({"model": template(name, request.query_params.get("lang", "en")),
                              "format": "yaml", "name": name}, headers=SECURITY)
 
@@ -144,7 +166,8 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
         try:
             body = page_html(request.path_params.get("name", "model-format.md"))
         except KinematikaError as err:
-            return _error(404, err.as_json())
+            with speaking(_asked(request.query_params.get("lang"))):
+                return _error(404, err.as_json())
         if isinstance(body, bytes):
             return Response(body, media_type="image/png", headers=SECURITY)
         return Response(body, media_type="text/html; charset=utf-8", headers=SECURITY)
@@ -208,8 +231,7 @@ async def _read_body(request: HttpRequest) -> bytes:
     that is not declared JSON is refused (415): browsers then ask before a cross-site post."""
     kind = request.headers.get("content-type", "").split(";")[0].strip().lower()
     if kind != "application/json":
-        raise Failure(415, "usage", "send the request as JSON (Content-Type: application/json)",
-                      "request")
+        raise Failure(415, "usage", "request-content-type", "request")
     declared = request.headers.get("content-length")
     if declared is not None and declared.isdigit() and int(declared) > limits.REQUEST_BYTES:
         raise _too_large(int(declared))
@@ -223,8 +245,34 @@ async def _read_body(request: HttpRequest) -> bytes:
 
 
 def _too_large(size: int) -> Failure:
-    return Failure(413, "syntax", f"the request is too large ({size} bytes; at most "
-                   f"{limits.REQUEST_BYTES})", "request")
+    return Failure(413, "syntax", "request-too-large", "request", size=size, limit=limits.REQUEST_BYTES)
+
+
+def _asked(lang: Optional[str]) -> str:
+    """The query's `lang` when it is one kinematika speaks, else English: a request is said
+    in its own language, never in the server's locale."""
+    return lang if lang in LANGS else "en"
+
+
+def _language_of(raw: bytes) -> Optional[str]:
+    """The `lang` a request's JSON body asks its messages in (checked later with the rest of
+    the body), or None: errors found before the body is read (or in a body that is not
+    JSON) are said in the language of the query's `lang`, else in English (`_asked`)."""
+    try:
+        lang = json.loads(raw.decode("utf-8")).get("lang")
+    except (UnicodeDecodeError, ValueError, AttributeError):
+        return None
+    return lang if lang in LANGS else None
+
+
+def _answered(err: KinematikaError) -> dict:
+    """The error's JSON; a mechanism left free (`mobility-free`) also says its degrees of
+    freedom and the independent conditions its drivers give (`dof`, `conditions`), so the page
+    tells "add an input" from a real error in any language."""
+    body = err.as_json()
+    if err.said.key == "mobility-free":
+        body["error"].update(dof=int(err.said.args["dof"]), conditions=int(err.said.args["conditions"]))
+    return body
 
 
 def _error(status: int, body: dict) -> Response:
@@ -243,13 +291,15 @@ def _compute(req: Request) -> tuple[int, str, bytes]:
     """The answer to a checked request (in a worker thread): status, media type, body.
     Internal failures answer 500 with a short note, as the CLI does (never a traceback)."""
     try:
-        media, body = COMPUTE[req.endpoint](req)
-    except KinematikaError:
+        with speaking(req.get("lang") or "en"):
+            media, body = COMPUTE[req.endpoint](req)
+    except (KinematikaError, Failure):
         raise
     except Exception as err:
         if os.environ.get("KINEMATIKA_DEBUG"):
             raise
-        message = f"internal error ({type(err).__name__}: {err}); please report it"
+        with speaking(req.get("lang") or "en"):
+            message = str(Said("internal-error-page", detail=f"{type(err).__name__}: {err}"))
         return 500, JSON, commands.json_text({"error": {"kind": "internal", "message": message,
                                                         "where": ""}}).encode()
     return 200, media, body if isinstance(body, bytes) else body.encode("utf-8")
@@ -273,6 +323,25 @@ def _sweep(req: Request) -> tuple[str, str]:
         result.write_csv(out)
         return CSV, out.getvalue()
     return JSON, b"".join(result.json_chunks()) + b"\n"      # as `sweep --json` writes it
+
+
+def _simulate(req: Request) -> tuple[str, Any]:
+    """What `simulate --json` prints (or its CSV); a motion that stops early answers 400 with
+    the error and, under `partial`, the rows before it (as `simulate --json` prints them)."""
+    from ..simulate.run import SimulationStopped
+
+    try:
+        _, result = commands.simulate_run(req.model, req.get("time"), req.get("steps"), req.get("method"),
+                                          how=req.how)
+    except SimulationStopped as err:
+        failure = Failure(400, err.kind, err.said, err.where)
+        failure.extra["partial"] = json.loads(b"".join(err.result.json_chunks()))
+        raise failure from None
+    if req.get("as") == "csv":
+        out = io.StringIO(newline="")
+        result.write_csv(out)
+        return CSV, out.getvalue()
+    return JSON, b"".join(result.json_chunks()) + b"\n"      # as `simulate --json` writes it
 
 
 def _explain(req: Request) -> tuple[str, str]:
@@ -312,14 +381,30 @@ def _drawn(req: Request) -> tuple[str, Any]:
 
 
 def _input(model: Any) -> Optional[dict[str, Any]]:
-    """The joint a sweep (and the page's slider) advances, and its unit; None if none."""
+    """What the page's slider advances: the joint a sweep advances, and its unit; or, for a
+    model whose motion is followed in time (`simulate`), the time ("unit": "s") over which
+    and in how many steps; None if neither."""
+    from ..simulate.run import needs_time
     from ..sweep.plan import swept_joint
 
+    if needs_time(model):
+        return _time_input(model)
     try:
         joint, _ = swept_joint(model, model.sweep.joint if model.sweep else None)
     except KinematikaError:
-        return None
+        return _time_input(model) if model.simulate is not None else None
     return {"joint": joint.id, "unit": "deg" if joint.kind.coordinate == "angle" else "length"}
+
+
+def _time_input(model: Any) -> Optional[dict[str, Any]]:
+    """The page's slider over time: the model's `simulate` section, else `DEFAULT_TIME` s."""
+    from ..simulate.clock import DEFAULT_STEPS, DEFAULT_TIME, make_clock
+
+    try:
+        clock = make_clock(model, 0.0, None, None, DEFAULT_TIME)
+    except KinematikaError:
+        clock = make_clock(model, 0.0, DEFAULT_TIME, DEFAULT_STEPS)
+    return {"joint": None, "unit": "s", "time": clock.duration, "steps": clock.steps}
 
 
 def _edit(req: Request) -> tuple[str, str]:
@@ -359,6 +444,6 @@ def _exercise(req: Request) -> tuple[str, str]:
     return JSON, commands.json_text(exercise_answer(req))
 
 
-COMPUTE = {"solve": _solve, "centres": _centres, "sweep": _sweep, "explain": _explain,
+COMPUTE = {"solve": _solve, "centres": _centres, "sweep": _sweep, "simulate": _simulate, "explain": _explain,
            "draw": _draw, "edit": _edit, "assemblies": _assemblies, "exercise": _exercise,
            "build": _build, "sketch": _sketch, "convert": _convert}

@@ -37,7 +37,7 @@ def page_strings(lang: str) -> dict[str, Any]:
         names = set(VARIABLE.findall(_source(cat.source, key)))
         text, errors = cat.bundle.format_pattern(message.value, {n: f"{{${n}}}" for n in names})
         if errors:
-            raise KinematikaError("schema", f"page message {key!r} ({lang}): {errors[0]}", "strings")
+            raise KinematikaError("schema", "page-message-error", "strings", key=key, lang=lang, problem=str(errors[0]))
         messages[key] = text
     return {"lang": lang, "decimal": decimal_sign(lang), "messages": messages}
 

@@ -101,7 +101,7 @@ class Tree:
             for letter in LETTERS:
                 if letter + suffix not in used:
                     return letter + suffix
-        raise KinematikaError("usage", "no free point name", "points")
+        raise KinematikaError("usage", "no-free-point-name", "points")
 
     def fresh_body(self, prefix: str) -> str:
         """A body name not used yet: `prefix` numbered from 1 (crank1, crank2 ...)."""
@@ -138,7 +138,7 @@ class Tree:
 def number(x: float, digits: int = 6) -> float | int:
     """`x` to `digits` significant digits, as an integer when whole (0.15, 30, -0.02)."""
     if not math.isfinite(x):
-        raise KinematikaError("usage", f"{x} is not a finite number", "value")
+        raise KinematikaError("usage", "not-finite-number", "value", value=str(x))
     if x == 0:
         return 0
     rounded = float(f"{x:.{digits}g}")

@@ -2,10 +2,21 @@
 ## arrossegament, relativa, CIR). Cal conservar els marcadors entre claus.
 
 sec-data = Dades
-data-numeric = Els nombres són els del resolutor. Unitats: longituds en { $unit } (les del model), velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
+data-numeric = Unitats: longituds en { $unit }, velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
 data-planar = Moviment pla: les velocitats i acceleracions angulars tenen signe, positives en sentit antihorari.
+data-relative = Una magnitud relativa anomena els dos sòlids: { $v } és la velocitat del punt { $point } del sòlid { $b } vista des del sòlid { $a }, i { $w } la velocitat angular de { $b } respecte de { $a }.
 data-spatial = Les velocitats i acceleracions angulars són vectors (regla de la mà dreta al voltant de la seva direcció).
-data-symbolic = Les dades són símbols: cada valor és la fórmula exacta del resolutor. Les figures es dibuixen amb valors de mostra dels símbols.
+data-symbolic = Les dades són símbols, i cada resultat és una fórmula exacta en funció d’aquests. Les figures es dibuixen amb valors de mostra dels símbols, indicats sota cada figura.
+data-symbol = un símbol (qualsevol valor)
+data-constructed = situat per construcció (vegeu Posició)
+data-circle = centre { $centre }, radi { $radius }
+data-line = per { $through }, direcció { $direction }
+data-plane = per { $through }, normal { $direction }
+col-symbol = símbol
+col-value = valor
+col-position = posició
+col-shape = forma
+col-given = dades
 sec-structure = Estructura
 col-body = sòlid
 col-points = punts
@@ -25,7 +36,10 @@ structure-dof = Incògnites: { $n } components de velocitat { $moving ->
     }. Les condicions de velocitat dels enllaços tenen rang { $rank }, de manera que el mecanisme té { $dof ->
         [one] un grau
        *[other] { $dof } graus
-    } de llibertat (comptats pel rang); les dades de moviment donen { $conditions ->
+    } de llibertat ({ $dof ->
+        [one] comptat
+       *[other] comptats
+    } pel rang); les dades de moviment donen { $conditions ->
         [one] una condició independent
        *[other] { $conditions } condicions independents
     }.
@@ -36,6 +50,7 @@ shape-plane = pla
 joint-revolute = articulació (R)
 joint-prismatic = prismàtic (P)
 joint-slot = passador en ranura
+joint-slot_fixed = contacte amb lliscament (un punt sobre una recta fixa)
 joint-wheel = roda (sense lliscament lateral)
 joint-rolling = rodolament
 joint-gear = engranatge
@@ -45,20 +60,29 @@ joint-cylindrical = cilíndric
 fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
-    }; les fletxes blaves són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls; els sòlids estan numerats.
-fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts: en negre els termes coneguts{ $unknown ->
-        [1] , en vermell els trobats en aquest pas
-       *[other] {""}
-    }{ $result ->
-        [1] , en blau el resultat
-       *[other] {""}
+    }; { $format ->
+        [md] les fletxes
+       *[other] les fletxes blaves
+    } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls; els sòlids estan numerats.
+fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
+        [md] , els termes l’un darrere l’altre
+       *[other] : en negre els termes coneguts{ $unknown ->
+            [1] , en vermell els trobats en aquest pas
+           *[other] {""}
+        }{ $result ->
+            [1] , en blau el resultat
+           *[other] {""}
+        }
     }.
-fig-polygon_a = Polígon d’acceleracions des del pol o, a escala, amb els vèrtexs imatges dels punts: en negre els termes coneguts{ $unknown ->
-        [1] , en vermell els trobats en aquest pas
-       *[other] {""}
-    }{ $result ->
-        [1] , en blau el resultat
-       *[other] {""}
+fig-polygon_a = Polígon d’acceleracions des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
+        [md] , els termes l’un darrere l’altre
+       *[other] : en negre els termes coneguts{ $unknown ->
+            [1] , en vermell els trobats en aquest pas
+           *[other] {""}
+        }{ $result ->
+            [1] , en blau el resultat
+           *[other] {""}
+        }
     }.
 fig-sample = Dibuixat amb valors de mostra dels símbols.
 sec-position = Posició
@@ -134,9 +158,19 @@ kind-RPR = díade RPR
 kind-PRP = díade PRP
 kind-other = grup resolt conjuntament
 step-title = Pas { $n }: { $kind } — { $bodies }
+step-fixed = { $bodies } { $bodies_n ->
+        [one] està unit
+       *[other] estan units
+    } rígidament a { $frame }: no es { $bodies_n ->
+        [one] mou
+       *[other] mouen
+    }, i tots els seus punts tenen velocitat i acceleració nul·les.
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
-v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites; en vermell, els termes trobats en el pas.
+v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
+        [md] : els termes marcats amb ?, que troba el pas
+       *[other] ; en vermell, els termes trobats en el pas
+    }.
 a-intro = Conegudes les velocitats, tots els termes normals i de Coriolis són coneguts; les incògnites són els termes tangencials i relatius.
 a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
 driver-omega = Dada: { $sym } = { $value }.
@@ -144,8 +178,14 @@ driver-joint = Dada: la velocitat angular relativa a l’articulació { $joint }
 driver-joint_accel = Dada: l’acceleració angular relativa a l’articulació { $joint } és { $value }.
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
-input-revolute = { $body } gira al voltant del punt fix { $point }: els seus punts descriuen circumferències centrades a { $point }.
-input-prismatic = { $body } es trasllada sense girar al llarg de la guia de l’enllaç { $joint }.
+input-revolute = { $body } { COUNT($body) ->
+        [many] giren
+       *[one] gira
+    } al voltant del punt fix { $point }: els seus punts descriuen circumferències centrades a { $point }.
+input-prismatic = { $body } { COUNT($body) ->
+        [many] es traslladen
+       *[one] es trasllada
+    } sense girar al llarg de la guia de l’enllaç { $joint }.
 other-intro = Aquests sòlids es troben alhora a partir de les condicions dels seus enllaços:
 cond-revolute = enllaç { $joint }, articulació a { $point }: { $point } és un punt { ELISION($a) ->
         [vowel] d’{ $a }
@@ -154,11 +194,18 @@ cond-revolute = enllaç { $joint }, articulació a { $point }: { $point } és un
         [vowel] d’{ $b }
        *[other] de { $b }
     }.
-cond-prismatic = enllaç { $joint }, prismàtic: { $b } llisca sobre { $a } sense girar respecte { ELISION($a) ->
+cond-prismatic = enllaç { $joint }, prismàtic: { $b } { COUNT($b) ->
+        [many] llisquen
+       *[one] llisca
+    } sobre { $a } sense girar respecte { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     }.
 cond-slot = enllaç { $joint }, passador { $point } en ranura: la seva velocitat relativa al sòlid amb ranura segueix la ranura.
+cond-slot_fixed = enllaç { $joint }: el punt { $point } { ELISION($b) ->
+        [vowel] d’{ $b }
+       *[other] de { $b }
+    } llisca al llarg d’una recta solidària a { $a }: la seva velocitat segueix aquesta recta.
 cond-wheel = enllaç { $joint }, roda a { $point }: sense velocitat lateral respecte { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
@@ -171,11 +218,17 @@ cond-spherical = enllaç { $joint }, ròtula a { $point }: { $point } és un pun
         [vowel] d’{ $b }
        *[other] de { $b }
     }.
-cond-cylindrical = enllaç { $joint }, cilíndric: { $b } gira al voltant de l’eix { ELISION($a) ->
+cond-cylindrical = enllaç { $joint }, cilíndric: { $b } { COUNT($b) ->
+        [many] giren
+       *[one] gira
+    } al voltant de l’eix { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } i hi llisca.
-rolling-noslip = enllaç { $joint }: { $b } rodola sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
+rolling-noslip = enllaç { $joint }: { $b } { COUNT($b) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
 rolling-kept = enllaç { $joint }: el contacte es manté: a { $point } les acceleracions dels punts materials { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
@@ -230,7 +283,17 @@ composition-point = Punt { $point } { ELISION($body) ->
        *[other] de { $body }
     }, referència mòbil { $frame }:
 composition-drag = Arrossegament: el moviment del punt de la referència mòbil on és el punt:
-composition-relative = Relatiu: el moviment vist des de la referència mòbil:
+composition-relative = Relatiu: el moviment vist des de la referència mòbil, { $sym } = { $rel }:
+composition-rolls = { $body } { COUNT($body) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre { $frame } a { $point }: vist des { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }, { $point } és el CIR { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }, { $sym } = 0, i tots els seus punts giren al voltant d’aquest punt.
 sec-curvature = Curvatura de les trajectòries
 curvature-intro = L’acceleració es descompon en una part tangencial, segons la velocitat, i una de normal, perpendicular a ella; el radi de curvatura és { $rho }.
 curvature-point = Punt { $point }: velocitat { $v }.
@@ -330,6 +393,7 @@ vehicle-translation = Les rectes { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     } són paral·leles: el seu CIR és a l’infinit, es trasllada i tots els seus punts es mouen com { $point }.
+vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda a { $radius } { $spin }, la seva rotació pròpia al voltant del seu eix, de manera que:
 triad-intro = { $body } està subjectat per tres barres binàries, { $links }: cap equació vectorial d’un sol punt no té només dues incògnites. Com fan els textos per a una tríada, es pren el punt d’Assur { $point }, on es tallen les rectes { $l1 } i { $l3 }, com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -354,8 +418,20 @@ how-translation = (es trasllada)
 fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy i perpendiculars a rodes i ranures).
 fig-assur = El punt d’Assur { $point }: les rectes { $l1 } i { $l3 } (a traços) perllongades fins que es tallen; { $point } es pren com a punt de la barra ternària.
 fig-drawn_at = Dibuixat amb { $values }.
-fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt (blau) acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, les velocitats relatives de les equacions anteriors (negre), l’una darrere l’altra.
-fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt (blau) acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors (negre: normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
+fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt{ $format ->
+        [md] {""}
+       *[other] {" "}(blau)
+    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, les velocitats relatives de les equacions anteriors{ $format ->
+        [md] {""}
+       *[other] {" "}(negre)
+    }, l’una darrere l’altra.
+fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
+        [md] {""}
+       *[other] {" "}(blau)
+    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors ({ $format ->
+        [md] {""}
+       *[other] negre:{" "}
+    }normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
 col-number = núm.
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -377,6 +453,10 @@ centre-weld = l’enllaç { $joint } uneix rígidament { $body } i { $other }: s
     }, { $same },
 centre-line-kennedy = la recta que passa per { $l } (Aronhold–Kennedy, tercer sòlid { $k })
 centre-line-slot = la normal a la ranura de l’enllaç { $joint } a { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
+centre-line-slot_fixed = la normal a { $point } a la recta { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    } per on llisca (enllaç { $joint })
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
 centre-field = cap enllaç ni cap recta d’Aronhold–Kennedy no el situa abans de conèixer les velocitats; amb elles, 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 centre-check = Comprovació amb les velocitats trobades: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value }, el mateix punt: { $centre } és { $where }
@@ -399,8 +479,20 @@ contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }, que és fix, no es mou: { $sym } = 0.
-fig-step_v = Polígon de velocitats d’aquest pas, a escala: des del pol o, la velocitat de cada punt (blau) acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas (negre), l’un darrere l’altre.
-fig-step_a = Polígon d’acceleracions d’aquest pas, a escala: des del pol o, l’acceleració de cada punt (blau) acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas (negre), l’un darrere l’altre.
+fig-step_v = Polígon de velocitats d’aquest pas, a escala: des del pol o, la velocitat de cada punt{ $format ->
+        [md] {""}
+       *[other] {" "}(blau)
+    } acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas{ $format ->
+        [md] {""}
+       *[other] {" "}(negre)
+    }, l’un darrere l’altre.
+fig-step_a = Polígon d’acceleracions d’aquest pas, a escala: des del pol o, l’acceleració de cada punt{ $format ->
+        [md] {""}
+       *[other] {" "}(blau)
+    } acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas{ $format ->
+        [md] {""}
+       *[other] {" "}(negre)
+    }, l’un darrere l’altre.
 col-point = punt
 col-what = què és
 note-text = Nota: { $text }
@@ -408,11 +500,20 @@ sec-checks = Comprovacions
 check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->
         [vowel] d’{ $carrier }
        *[other] de { $carrier }
-    }, la transmissió és ordinària ({ $planet } engrana amb { $s1 } i amb { $s2 }, els eixos dels quals són els del portador), de manera que { $formula } = { $radii } = { $train }, amb { $r1 } i { $r2 }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.
+    }, la transmissió és ordinària ({ $planet } engrana amb { $s1 } i amb { $s2 }, els eixos dels quals porta { $carrier }), de manera que { $formula } = { $radii } = { $train }, amb { $r1 } i { $r2 }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.
 check-belt = Vista des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
     }, que porta els dos eixos, { $line } no llisca ni sobre { $a } ni sobre { $b }: { $equation }, de manera que { $ratio }; amb les velocitats angulars trobades, { $values }: coincideixen.
+how-translates = (es trasllada respecte { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    })
+drive-relation_a = Derivant, amb els radis constants: { $equation } (amb { $radii }):
+drive-relation = Vistos des { ELISION($holder) ->
+        [vowel] d’{ $holder }
+       *[other] de { $holder }
+    }, que porta els dos eixos, els eixos són fixos i { $line } es trasllada: no llisca sobre { $a } ni sobre { $b }, de manera que tots dos la mouen amb la mateixa velocitat, { $equation } (amb { $radii }):
 check-train = La relació de la transmissió és el producte de les de les seves etapes: { $ratio }; amb les velocitats angulars trobades, la relació val { $value }.
 check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la seva oscil·lació quan la ranura és tangent a la circumferència { ELISION($pin) ->
         [vowel] d’{ $pin }

@@ -2,10 +2,21 @@
 ## renderer with symbols, values or other messages; keep them in every translation.
 
 sec-data = Data
-data-numeric = The numbers are the solver's. Units: lengths in { $unit } (as in the model), velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
+data-numeric = Units: lengths in { $unit }, velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
 data-planar = Planar motion: angular velocities and accelerations are signed, counter-clockwise positive.
+data-relative = A relative quantity names both bodies: { $v } is the velocity of the point { $point } of body { $b } seen from body { $a }, and { $w } the angular velocity of { $b } relative to { $a }.
 data-spatial = Angular velocities and accelerations are vectors (right-hand rule about their direction).
-data-symbolic = The data are symbols: every value is the solver's exact formula. Figures are drawn at sample values of the symbols.
+data-symbolic = The data are symbols, and every result is an exact formula in them. The figures are drawn at sample values of the symbols, given under each figure.
+data-symbol = a symbol (any value)
+data-constructed = placed by construction (see Position)
+data-circle = centre { $centre }, radius { $radius }
+data-line = through { $through }, direction { $direction }
+data-plane = through { $through }, normal { $direction }
+col-symbol = symbol
+col-value = value
+col-position = position
+col-shape = shape
+col-given = data
 sec-structure = Structure
 col-body = body
 col-points = points
@@ -36,6 +47,7 @@ shape-plane = plane
 joint-revolute = revolute (R)
 joint-prismatic = prismatic (P)
 joint-slot = pin in slot
+joint-slot_fixed = sliding contact (a point on a fixed line)
 joint-wheel = wheel (knife edge)
 joint-rolling = rolling
 joint-gear = gear
@@ -45,20 +57,29 @@ joint-cylindrical = cylindrical
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
-    }; the blue arrows are the velocities of its points, to one scale, with their magnitudes; the bodies are numbered.
-fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points: known terms in black{ $unknown ->
-        [1] , terms found in this step in red
-       *[other] {""}
-    }{ $result ->
-        [1] , the result in blue
-       *[other] {""}
+    }; { $format ->
+        [md] the arrows
+       *[other] the blue arrows
+    } are the velocities of its points, to one scale, with their magnitudes; the bodies are numbered.
+fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
+        [md] , the terms head to tail
+       *[other] : known terms in black{ $unknown ->
+            [1] , terms found in this step in red
+           *[other] {""}
+        }{ $result ->
+            [1] , the result in blue
+           *[other] {""}
+        }
     }.
-fig-polygon_a = Acceleration polygon from the pole o, to scale, its vertices the images of the points: known terms in black{ $unknown ->
-        [1] , terms found in this step in red
-       *[other] {""}
-    }{ $result ->
-        [1] , the result in blue
-       *[other] {""}
+fig-polygon_a = Acceleration polygon from the pole o, to scale, its vertices the images of the points{ $format ->
+        [md] , the terms head to tail
+       *[other] : known terms in black{ $unknown ->
+            [1] , terms found in this step in red
+           *[other] {""}
+        }{ $result ->
+            [1] , the result in blue
+           *[other] {""}
+        }
     }.
 fig-sample = Drawn at sample values of the symbols.
 sec-position = Position
@@ -101,9 +122,22 @@ kind-RPR = RPR dyad
 kind-PRP = PRP dyad
 kind-other = group solved together
 step-title = Step { $n }: { $kind } — { $bodies }
+step-fixed = { $bodies } { $bodies_n -> 
+        [one] is
+       *[other] are
+    } welded to { $frame }: { $bodies_n ->
+        [one] it does
+       *[other] they do
+    } not move, and all { $bodies_n ->
+        [one] its
+       *[other] their
+    } points have zero velocity and acceleration.
 sec-velocities = Velocities
 sec-accelerations = Accelerations
-v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns; the terms found in the step are in red.
+v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
+        [md] : the terms marked ?, which the step finds
+       *[other] ; the terms found in the step are in red
+    }.
 a-intro = With the velocities known, every normal term and every Coriolis term is known; the tangential and relative terms are the unknowns.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
@@ -117,6 +151,7 @@ other-intro = These bodies are found together from the conditions of their joint
 cond-revolute = joint { $joint }, revolute at { $point }: { $point } is one point of { $a } and of { $b }.
 cond-prismatic = joint { $joint }, prismatic: { $b } slides along { $a } without turning relative to it.
 cond-slot = joint { $joint }, pin { $point } in a slot: its velocity relative to the slotted body is along the slot.
+cond-slot_fixed = joint { $joint }: the point { $point } of { $b } slides along a line fixed to { $a }: its velocity is along that line.
 cond-wheel = joint { $joint }, wheel at { $point }: no sideways velocity relative to { $a }.
 cond-weld = joint { $joint }: { $a } and { $b } move as one body.
 cond-spherical = joint { $joint }, ball joint at { $point }: { $point } is one point of { $a } and of { $b }.
@@ -155,7 +190,8 @@ sec-composition = Composition of motions
 composition-intro = The motion of a point is its drag motion (that of the point of the moving frame where it is) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
 composition-point = Point { $point } of { $body }, moving frame { $frame }:
 composition-drag = Drag: the motion of the point of the moving frame where the point is:
-composition-relative = Relative: the motion seen from the moving frame:
+composition-relative = Relative: the motion seen from the moving frame, { $sym } = { $rel }:
+composition-rolls = { $body } rolls on { $frame } without slipping at { $point }: seen from { $frame }, { $point } is the instant centre of { $body }, { $sym } = 0, and every point of { $body } turns about it.
 sec-curvature = Curvature of paths
 curvature-intro = The acceleration splits into a tangential part along the velocity and a normal part across it; the radius of curvature is { $rho }.
 curvature-point = Point { $point }: velocity { $v }.
@@ -195,6 +231,7 @@ vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $jo
 vehicle-line-velocity = the perpendicular to { $sym } at { $point }
 vehicle-centre = The centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel: its centre is at infinity, it translates, and every point moves as { $point }.
+vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $radius } { $spin }, its spin about its axle, so:
 triad-intro = { $body } is held by three binary links, { $links }: no vector equation of a single point has only two unknowns. As textbooks do for a triad, take the Assur point { $point }, where the lines { $l1 } and { $l3 } meet, as a point of { $body }:
 triad-collinear = On each side the two unknown terms are perpendicular to one line ({ $point } lies on { $l1 } and on { $l3 }), so each side has one unknown magnitude: two unknowns, and the polygon closes.
 triad-closure = With { $point } known as a point of the ternary link, its pin { $pin } closes as in a dyad:
@@ -210,8 +247,20 @@ how-translation = (it translates)
 fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism, with the lines they are found on (dash-dot: Aronhold–Kennedy lines and the perpendiculars to wheels and slots).
 fig-assur = The Assur point { $point }: the lines { $l1 } and { $l3 } (dashed) drawn on until they meet; { $point } is taken as a point of the ternary link.
 fig-drawn_at = Drawn at { $values }.
-fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point (blue) ends at its image, lettered as the point (a for A); between the images, the relative velocities of the equations above (black), head to tail.
-fig-level_a = Acceleration polygon, to scale: from the pole o, the acceleration of each point (blue) ends at its image, lettered as the point (a for A); between the images, the terms of the equations above (black: normal and tangential, relative and Coriolis), head to tail.
+fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point{ $format ->
+        [md] {""}
+       *[other] {" "}(blue)
+    } ends at its image, lettered as the point (a for A); between the images, the relative velocities of the equations above{ $format ->
+        [md] {""}
+       *[other] {" "}(black)
+    }, head to tail.
+fig-level_a = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
+        [md] {""}
+       *[other] {" "}(blue)
+    } ends at its image, lettered as the point (a for A); between the images, the terms of the equations above ({ $format ->
+        [md] {""}
+       *[other] black:{" "}
+    }normal and tangential, relative and Coriolis), head to tail.
 col-number = no.
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -230,6 +279,7 @@ higher-straight = The higher pair { $joint } is written as the motion of { $poin
 centre-weld = joint { $joint } welds { $body } to { $other }: they are one body, so the centre is that of { $other }, { $same },
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
 centre-line-slot = the normal at { $point } to the slot of joint { $joint } (relative to the slotted body, { $point } can only move along the slot)
+centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides (joint { $joint })
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
 centre-field = no joint and no Aronhold–Kennedy line places it before the velocities are known; with them, 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-check = Check with the velocities found above: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value }, the same point: { $centre } is { $where }
@@ -240,14 +290,29 @@ geom-foot = { $geom }, the geometric contact point of joint { $joint }, is the f
 contact-intro = At the contact { $point } of joint { $joint } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.
 contact-fixed = { $sym }: { $point } as a point of { $body }, which is fixed, does not move: { $sym } = 0.
-fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point (blue) ends at its image, lettered as the point; between the images, the terms of this step’s equations (black), head to tail.
-fig-step_a = Acceleration polygon of this step, to scale: from the pole o, the acceleration of each point (blue) ends at its image, lettered as the point; between the images, the terms of this step’s equations (black), head to tail.
+fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point{ $format ->
+        [md] {""}
+       *[other] {" "}(blue)
+    } ends at its image, lettered as the point; between the images, the terms of this step’s equations{ $format ->
+        [md] {""}
+       *[other] {" "}(black)
+    }, head to tail.
+fig-step_a = Acceleration polygon of this step, to scale: from the pole o, the acceleration of each point{ $format ->
+        [md] {""}
+       *[other] {" "}(blue)
+    } ends at its image, lettered as the point; between the images, the terms of this step’s equations{ $format ->
+        [md] {""}
+       *[other] {" "}(black)
+    }, head to tail.
 col-point = point
 col-what = what it is
 note-text = Note: { $text }
 sec-checks = Checks
-check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles are the carrier’s), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.
+check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } carries), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.
 check-belt = Seen from { $holder }, which carries both axles, { $line } does not slip on { $a } nor on { $b }: { $equation }, so { $ratio }; with the angular velocities found above, { $values }: they agree.
+how-translates = (it translates relative to { $body })
+drive-relation_a = Differentiating, with the radii constant: { $equation } (with { $radii }):
+drive-relation = Seen from { $holder }, which carries both axles, the axles are fixed and { $line } translates: it does not slip on { $a } nor on { $b }, so both move it at one speed, { $equation } (with { $radii }):
 check-train = The train’s ratio is the product of its stages’: { $ratio }; with the angular velocities found above, the ratio is { $value }.
 check-quick = Time ratio of the quick return: { $lever } is at an end of its swing when the slot is tangent to the circle of { $pin } (the crank { $o2 }{ $pin } perpendicular to { $o4 }{ $pin }), where cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Turning steadily, { $crank } sweeps 360° − 2θ = { $slow } in one stroke and 2θ = { $fast } in the other: time ratio { $ratio }.
 driver-slide = Given: the sliding velocity at joint { $joint } is { $value }.

@@ -2,10 +2,21 @@
 ## aceleración, arrastre, relativa, CIR). Conservar los marcadores entre llaves.
 
 sec-data = Datos
-data-numeric = Los números son los del resolvedor. Unidades: longitudes en { $unit } (las del modelo), velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
+data-numeric = Unidades: longitudes en { $unit }, velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
 data-planar = Movimiento plano: las velocidades y aceleraciones angulares llevan signo, positivas en sentido antihorario.
+data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } del sólido { $b } vista desde el sólido { $a }, y { $w } la velocidad angular de { $b } respecto de { $a }.
 data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
-data-symbolic = Los datos son símbolos: cada valor es la fórmula exacta del resolvedor. Las figuras se dibujan con valores de muestra de los símbolos.
+data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
+data-symbol = un símbolo (cualquier valor)
+data-constructed = situado por construcción (véase Posición)
+data-circle = centro { $centre }, radio { $radius }
+data-line = por { $through }, dirección { $direction }
+data-plane = por { $through }, normal { $direction }
+col-symbol = símbolo
+col-value = valor
+col-position = posición
+col-shape = forma
+col-given = datos
 sec-structure = Estructura
 col-body = sólido
 col-points = puntos
@@ -36,6 +47,7 @@ shape-plane = plano
 joint-revolute = de rotación (R)
 joint-prismatic = prismático (P)
 joint-slot = pasador en ranura
+joint-slot_fixed = contacto con deslizamiento (un punto sobre una recta fija)
 joint-wheel = rueda (sin deslizamiento lateral)
 joint-rolling = rodadura
 joint-gear = engranaje
@@ -45,20 +57,29 @@ joint-cylindrical = cilíndrico
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
-    }; las flechas azules son las velocidades de sus puntos, a una misma escala, con sus módulos; los sólidos están numerados.
-fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos: en negro los términos conocidos{ $unknown ->
-        [1] , en rojo los hallados en este paso
-       *[other] {""}
-    }{ $result ->
-        [1] , en azul el resultado
-       *[other] {""}
+    }; { $format ->
+        [md] las flechas
+       *[other] las flechas azules
+    } son las velocidades de sus puntos, a una misma escala, con sus módulos; los sólidos están numerados.
+fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
+        [md] , los términos uno tras otro
+       *[other] : en negro los términos conocidos{ $unknown ->
+            [1] , en rojo los hallados en este paso
+           *[other] {""}
+        }{ $result ->
+            [1] , en azul el resultado
+           *[other] {""}
+        }
     }.
-fig-polygon_a = Polígono de aceleraciones desde el polo o, a escala, con los vértices imágenes de los puntos: en negro los términos conocidos{ $unknown ->
-        [1] , en rojo los hallados en este paso
-       *[other] {""}
-    }{ $result ->
-        [1] , en azul el resultado
-       *[other] {""}
+fig-polygon_a = Polígono de aceleraciones desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
+        [md] , los términos uno tras otro
+       *[other] : en negro los términos conocidos{ $unknown ->
+            [1] , en rojo los hallados en este paso
+           *[other] {""}
+        }{ $result ->
+            [1] , en azul el resultado
+           *[other] {""}
+        }
     }.
 fig-sample = Dibujado con valores de muestra de los símbolos.
 sec-position = Posición
@@ -101,9 +122,19 @@ kind-RPR = díada RPR
 kind-PRP = díada PRP
 kind-other = grupo resuelto en conjunto
 step-title = Paso { $n }: { $kind } — { $bodies }
+step-fixed = { $bodies } { $bodies_n ->
+        [one] está unido
+       *[other] están unidos
+    } rígidamente a { $frame }: no se { $bodies_n ->
+        [one] mueve
+       *[other] mueven
+    }, y todos sus puntos tienen velocidad y aceleración nulas.
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
-v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas; en rojo, los términos hallados en el paso.
+v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas{ $format ->
+        [md] : los términos marcados con ?, que halla el paso
+       *[other] ; en rojo, los términos hallados en el paso
+    }.
 a-intro = Conocidas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
@@ -111,17 +142,33 @@ driver-joint = Dato: la velocidad angular relativa en el par { $joint } es { $va
 driver-joint_accel = Dato: la aceleración angular relativa en el par { $joint } es { $value }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
-input-revolute = { $body } gira alrededor del punto fijo { $point }: sus puntos describen circunferencias centradas en { $point }.
-input-prismatic = { $body } se traslada sin girar a lo largo de la guía del par { $joint }.
+input-revolute = { $body } { COUNT($body) ->
+        [many] giran
+       *[one] gira
+    } alrededor del punto fijo { $point }: sus puntos describen circunferencias centradas en { $point }.
+input-prismatic = { $body } { COUNT($body) ->
+        [many] se trasladan
+       *[one] se traslada
+    } sin girar a lo largo de la guía del par { $joint }.
 other-intro = Estos sólidos se hallan a la vez a partir de las condiciones de sus pares:
 cond-revolute = par { $joint }, de rotación en { $point }: { $point } es un punto de { $a } y de { $b }.
-cond-prismatic = par { $joint }, prismático: { $b } se desliza sobre { $a } sin girar respecto de él.
+cond-prismatic = par { $joint }, prismático: { $b } { COUNT($b) ->
+        [many] se deslizan
+       *[one] se desliza
+    } sobre { $a } sin girar respecto de él.
 cond-slot = par { $joint }, pasador { $point } en ranura: su velocidad relativa al sólido ranurado sigue la ranura.
+cond-slot_fixed = par { $joint }: el punto { $point } de { $b } desliza a lo largo de una recta fija a { $a }: su velocidad sigue esa recta.
 cond-wheel = par { $joint }, rueda en { $point }: sin velocidad lateral respecto de { $a }.
 cond-weld = par { $joint }: { $a } y { $b } se mueven como un solo sólido.
 cond-spherical = par { $joint }, esférico en { $point }: { $point } es un punto de { $a } y de { $b }.
-cond-cylindrical = par { $joint }, cilíndrico: { $b } gira alrededor del eje de { $a } y se desliza a lo largo de él.
-rolling-noslip = par { $joint }: { $b } rueda sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
+cond-cylindrical = par { $joint }, cilíndrico: { $b } { COUNT($b) ->
+        [many] giran
+       *[one] gira
+    } alrededor del eje de { $a } y se desliza a lo largo de él.
+rolling-noslip = par { $joint }: { $b } { COUNT($b) ->
+        [many] ruedan
+       *[one] rueda
+    } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
 rolling-kept = par { $joint }: el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
 dir-guide = guía { $joint }
 dir-normal = normal
@@ -155,7 +202,11 @@ sec-composition = Composición de movimientos
 composition-intro = El movimiento de un punto es el de arrastre (el del punto de la referencia móvil donde está) más el relativo a esa referencia, más, en aceleraciones, el término de Coriolis { $cor }.
 composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
 composition-drag = Arrastre: el movimiento del punto de la referencia móvil donde está el punto:
-composition-relative = Relativo: el movimiento visto desde la referencia móvil:
+composition-relative = Relativo: el movimiento visto desde la referencia móvil, { $sym } = { $rel }:
+composition-rolls = { $body } { COUNT($body) ->
+        [many] ruedan
+       *[one] rueda
+    } sin deslizar sobre { $frame } en { $point }: visto desde { $frame }, { $point } es el CIR de { $body }, { $sym } = 0, y todos sus puntos giran alrededor de él.
 sec-curvature = Curvatura de las trayectorias
 curvature-intro = La aceleración se descompone en una parte tangencial, según la velocidad, y una normal, perpendicular a ella; el radio de curvatura es { $rho }.
 curvature-point = Punto { $point }: velocidad { $v }.
@@ -195,6 +246,7 @@ vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el pun
 vehicle-line-velocity = la perpendicular a { $sym } por el punto { $point }
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
 vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
+vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $radius } { $spin }, su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
 triad-closure = Conocido { $point } como punto del eslabón ternario, su articulación { $pin } se cierra como en una díada:
@@ -210,8 +262,20 @@ how-translation = (se traslada)
 fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo, con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy y perpendiculares a ruedas y ranuras).
 fig-assur = El punto de Assur { $point }: las rectas { $l1 } y { $l3 } (a trazos) prolongadas hasta cortarse; { $point } se toma como punto del eslabón ternario.
 fig-drawn_at = Dibujado con { $values }.
-fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto (azul) acaba en su imagen, con la letra del punto (a para A); entre las imágenes, las velocidades relativas de las ecuaciones anteriores (negro), una tras otra.
-fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto (azul) acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores (negro: normales y tangenciales, relativos y de Coriolis), uno tras otro.
+fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto{ $format ->
+        [md] {""}
+       *[other] {" "}(azul)
+    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, las velocidades relativas de las ecuaciones anteriores{ $format ->
+        [md] {""}
+       *[other] {" "}(negro)
+    }, una tras otra.
+fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
+        [md] {""}
+       *[other] {" "}(azul)
+    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+        [md] {""}
+       *[other] negro:{" "}
+    }normales y tangenciales, relativos y de Coriolis), uno tras otro.
 col-number = n.º
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -230,6 +294,7 @@ higher-straight = El par superior { $joint } se escribe como el movimiento de { 
 centre-weld = el par { $joint } une rígidamente { $body } y { $other }: son un solo sólido, así que el CIR es el de { $other }, { $same },
 centre-line-kennedy = la recta que pasa por { $l } (Aronhold–Kennedy, tercer sólido { $k })
 centre-line-slot = la normal en { $point } a la ranura del par { $joint } (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
+centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza (par { $joint })
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
 centre-field = ningún par ni ninguna recta de Aronhold–Kennedy lo sitúan antes de conocer las velocidades; con ellas, 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
 centre-check = Comprobación con las velocidades halladas: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value }, el mismo punto: { $centre } está { $where }
@@ -240,14 +305,29 @@ geom-foot = { $geom }, el punto geométrico de contacto del par { $joint }, es e
 contact-intro = En el contacto { $point } del par { $joint } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
 contact-fixed = { $sym }: { $point } como punto de { $body }, que es fijo, no se mueve: { $sym } = 0.
-fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto (azul) acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso (negro), uno tras otro.
-fig-step_a = Polígono de aceleraciones de este paso, a escala: desde el polo o, la aceleración de cada punto (azul) acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso (negro), uno tras otro.
+fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto{ $format ->
+        [md] {""}
+       *[other] {" "}(azul)
+    } acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso{ $format ->
+        [md] {""}
+       *[other] {" "}(negro)
+    }, uno tras otro.
+fig-step_a = Polígono de aceleraciones de este paso, a escala: desde el polo o, la aceleración de cada punto{ $format ->
+        [md] {""}
+       *[other] {" "}(azul)
+    } acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso{ $format ->
+        [md] {""}
+       *[other] {" "}(negro)
+    }, uno tras otro.
 col-point = punto
 col-what = qué es
 note-text = Nota: { $text }
 sec-checks = Comprobaciones
-check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes son los del portasatélites), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
+check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes lleva { $carrier }), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
 check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas, { $values }: coinciden.
+how-translates = (se traslada respecto de { $body })
+drive-relation_a = Derivando, con los radios constantes: { $equation } (con { $radii }):
+drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos y { $line } se traslada: no desliza sobre { $a } ni sobre { $b }, así que ambos la mueven con la misma velocidad, { $equation } (con { $radii }):
 check-train = La relación de la transmisión es el producto de las de sus etapas: { $ratio }; con las velocidades angulares halladas, la relación vale { $value }.
 check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extremo de su oscilación cuando la ranura es tangente a la circunferencia de { $pin } (la manivela { $o2 }{ $pin } perpendicular a { $o4 }{ $pin }), donde cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Girando uniformemente, { $crank } barre 360° − 2θ = { $slow } en una carrera y 2θ = { $fast } en la otra: razón de tiempos { $ratio }.
 driver-slide = Dato: la velocidad de deslizamiento en el par { $joint } es { $value }.

@@ -2,10 +2,21 @@
 ## azelerazioa, arrastrea, erlatiboa). Giltza arteko markak bere horretan utzi.
 
 sec-data = Datuak
-data-numeric = Zenbakiak ebazleak emandakoak dira. Unitateak: luzerak { $unit }-tan (ereduarenak), abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
+data-numeric = Unitateak: luzerak { $unit }-tan, abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
 data-planar = Mugimendu laua: abiadura eta azelerazio angeluarrek zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
+data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $b } solidoaren { $point } puntuaren abiadura da { $a } solidotik ikusita, eta { $w } { $b } solidoaren abiadura angeluarra { $a } solidoarekiko.
 data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
-data-symbolic = Datuak ikurrak dira: balio bakoitza ebazlearen formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude.
+data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
+data-symbol = ikur bat (edozein balio)
+data-constructed = eraikuntzaz kokatua (ikus Posizioa)
+data-circle = zentroa { $centre }, erradioa { $radius }
+data-line = { $through } puntutik, { $direction } norabidean
+data-plane = { $through } puntutik, { $direction } normalarekin
+col-symbol = ikurra
+col-value = balioa
+col-position = posizioa
+col-shape = forma
+col-given = datuak
 sec-structure = Egitura
 col-body = solidoa
 col-points = puntuak
@@ -36,6 +47,7 @@ shape-plane = planoa
 joint-revolute = giltzadura (R)
 joint-prismatic = prismatikoa (P)
 joint-slot = ziria arteka batean
+joint-slot_fixed = irristadurazko kontaktua (puntu bat zuzen finko batean)
 joint-wheel = gurpila (alboko irristarik gabe)
 joint-rolling = errodadura
 joint-gear = engranajea
@@ -45,20 +57,29 @@ joint-cylindrical = zilindrikoa
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
-    }; gezi urdinak haren puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
-fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik: beltzez termino ezagunak{ $unknown ->
-        [1] , gorriz urrats honetan aurkitutakoak
-       *[other] {""}
-    }{ $result ->
-        [1] , urdinez emaitza
-       *[other] {""}
+    }; { $format ->
+        [md] geziak
+       *[other] gezi urdinak
+    } haren puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
+fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
+        [md] , terminoak bata bestearen ondoren
+       *[other] : beltzez termino ezagunak{ $unknown ->
+            [1] , gorriz urrats honetan aurkitutakoak
+           *[other] {""}
+        }{ $result ->
+            [1] , urdinez emaitza
+           *[other] {""}
+        }
     }.
-fig-polygon_a = Azelerazioen poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik: beltzez termino ezagunak{ $unknown ->
-        [1] , gorriz urrats honetan aurkitutakoak
-       *[other] {""}
-    }{ $result ->
-        [1] , urdinez emaitza
-       *[other] {""}
+fig-polygon_a = Azelerazioen poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
+        [md] , terminoak bata bestearen ondoren
+       *[other] : beltzez termino ezagunak{ $unknown ->
+            [1] , gorriz urrats honetan aurkitutakoak
+           *[other] {""}
+        }{ $result ->
+            [1] , urdinez emaitza
+           *[other] {""}
+        }
     }.
 fig-sample = Ikurren lagin-balioekin marraztua.
 sec-position = Posizioa
@@ -104,9 +125,19 @@ kind-RPR = RPR diada
 kind-PRP = PRP diada
 kind-other = batera ebatzitako taldea
 step-title = { $n }. urratsa: { $kind } — { $bodies }
+step-fixed = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
+        [one] dago: ez da mugitzen
+       *[other] daude: ez dira mugitzen
+    }, eta { $bodies_n ->
+        [one] haren
+       *[other] haien
+    } puntu guztien abiadura eta azelerazioa nuluak dira.
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
-v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu; gorriz, urratsean aurkitutako terminoak.
+v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
+        [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
+       *[other] ; gorriz, urratsean aurkitutako terminoak
+    }.
 a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
@@ -120,6 +151,7 @@ other-intro = Solido hauek batera aurkitzen dira beren loturen baldintzetatik:
 cond-revolute = { $joint } lotura, giltzadura { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
 cond-prismatic = { $joint } lotura, prismatikoa: { $b } solidoa { $a } solidoaren gainean irristatzen da, harekiko biratu gabe.
 cond-slot = { $joint } lotura, { $point } ziria arteka batean: artekadun solidoarekiko abiadura artekaren norabidean dago.
+cond-slot_fixed = { $joint } lotura: { $b } solidoaren { $point } puntua { $a } solidoari lotutako zuzen batean zehar irristatzen da: haren abiadura zuzen horren norabidean dago.
 cond-wheel = { $joint } lotura, gurpila { $point } puntuan: ez dago alboko abiadurarik { $a } solidoarekiko.
 cond-weld = { $joint } lotura: { $a } eta { $b } solido bakar bat bezala mugitzen dira.
 cond-spherical = { $joint } lotura, esferikoa { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
@@ -158,7 +190,8 @@ sec-composition = Mugimenduen konposizioa
 composition-intro = Puntu baten mugimendua arrastre-mugimendua da (erreferentzia mugikorrean puntuarekin bat datorren puntuarena) gehi erreferentzia horrekiko mugimendu erlatiboa, gehi, azelerazioetan, Coriolisen terminoa { $cor }.
 composition-point = { $body } solidoaren { $point } puntua, { $frame } erreferentzia mugikorra:
 composition-drag = Arrastrea: erreferentzia mugikorrean puntuarekin bat datorren puntuaren mugimendua:
-composition-relative = Erlatiboa: erreferentzia mugikorretik ikusten den mugimendua:
+composition-relative = Erlatiboa: erreferentzia mugikorretik ikusten den mugimendua, { $sym } = { $rel }:
+composition-rolls = { $body } solidoa { $frame } solidoaren gainean errodatzen da irristatu gabe { $point } puntuan: { $frame } solidotik ikusita, { $point } da { $body } solidoaren biraketa-zentro instantaneoa, { $sym } = 0, eta haren puntu guztiek haren inguruan biratzen dute.
 sec-curvature = Ibilbideen kurbadura
 curvature-intro = Azelerazioa bi zatitan banatzen da: abiaduraren norabideko zati tangentziala eta harekiko perpendikularra den zati normala; kurbadura-erradioa { $rho } da.
 curvature-point = { $point } puntua: abiadura { $v }.
@@ -196,8 +229,9 @@ composition-pin = { $point } puntua { $joint } loturaren ardatza da, bi solidoen
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
 vehicle-line-velocity = { $sym } abiadurarekiko perpendikularra { $point } puntuan
-vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira. { $body } solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
+vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
+vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $radius } { $spin } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
 triad-closure = { $point } barra hirutarraren puntu gisa ezaguna denez, haren { $pin } giltzadura diada batean bezala ixten da:
@@ -213,8 +247,20 @@ how-translation = (traslatzen da)
 fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak eta gurpilen eta arteken perpendikularrak).
 fig-assur = { $point } Assur puntua: { $l1 } eta { $l3 } zuzenak (marra etenez) ebaki arte luzatuta; { $point } barra hirutarraren puntutzat hartzen da.
 fig-drawn_at = Balio hauekin marraztua: { $values }.
-fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura (urdinez) haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen abiadura erlatiboak (beltzez), bata bestearen ondoren.
-fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa (urdinez) haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak (beltzez: normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
+fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
+        [md] {""}
+       *[other] {" "}(urdinez)
+    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen abiadura erlatiboak{ $format ->
+        [md] {""}
+       *[other] {" "}(beltzez)
+    }, bata bestearen ondoren.
+fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
+        [md] {""}
+       *[other] {" "}(urdinez)
+    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak ({ $format ->
+        [md] {""}
+       *[other] beltzez:{" "}
+    }normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
 col-number = zk.
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -233,6 +279,7 @@ higher-straight = { $joint } goi-mailako bikotea { $point } puntuaren mugimendu 
 centre-weld = { $joint } loturak { $body } eta { $other } zurrunki lotzen ditu: solido bakarra dira; beraz, zentroa { $other } solidoarena da, { $same },
 centre-line-kennedy = { $l } zentroetatik pasatzen den zuzena (Aronhold–Kennedy, { $k } hirugarren solidoa)
 centre-line-slot = { $joint } loturaren artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
+centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala, zeinean zehar irristatzen baita ({ $joint } lotura)
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
 centre-field = ez lotura batek ez Aronhold–Kennedyren zuzen batek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-check = Egiaztapena aurkitutako abiadurekin: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du, puntu bera: { $centre }, { $where }
@@ -243,14 +290,29 @@ geom-foot = { $geom }, { $joint } loturaren kontaktu-puntu geometrikoa, { $centr
 contact-intro = { $joint } loturaren { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen, solidoa finkoa baita: { $sym } = 0.
-fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura (urdina) haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak (beltza), bata bestearen atzetik.
-fig-step_a = Urrats honetako azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa (urdina) haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak (beltza), bata bestearen atzetik.
+fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
+        [md] {""}
+       *[other] {" "}(urdina)
+    } haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak{ $format ->
+        [md] {""}
+       *[other] {" "}(beltza)
+    }, bata bestearen atzetik.
+fig-step_a = Urrats honetako azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
+        [md] {""}
+       *[other] {" "}(urdina)
+    } haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak{ $format ->
+        [md] {""}
+       *[other] {" "}(beltza)
+    }, bata bestearen atzetik.
 col-point = puntua
 col-what = zer den
 note-text = Oharra: { $text }
 sec-checks = Egiaztapenak
-check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak eramailearenak dira); beraz, { $formula } = { $radii } = { $train }, { $r1 } eta { $r2 } izanik. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
+check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak { $carrier } solidoak daramatza); beraz, { $formula } = { $radii } = { $train }, { $r1 } eta { $r2 } izanik. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
 check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
+how-translates = ({ $body } solidoarekiko traslatzen da)
+drive-relation_a = Deribatuz, erradioak konstanteak direnez: { $equation } ({ $radii } izanik):
+drive-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira eta { $line } solidoa traslatzen da: ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean; beraz, biek abiadura berarekin mugitzen dute, { $equation } ({ $radii } izanik):
 check-train = Transmisioaren erlazioa etapen erlazioen biderkadura da: { $ratio }; aurkitutako abiadura angeluarrekin, erlazioa { $value } da.
 check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulunkaren mutur batean dago artekak { $pin } puntuaren zirkunferentzia ukitzen duenean ({ $o2 }{ $pin } biradera { $o4 }{ $pin } zuzenarekiko perpendikularra), non cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Abiadura konstantean biratuz, { $crank } solidoak 360° − 2θ = { $slow } egiten ditu kurtsa batean eta 2θ = { $fast } bestean: denbora-erlazioa { $ratio }.
 driver-slide = Datua: { $joint } loturako irristatze-abiadura { $value } da.

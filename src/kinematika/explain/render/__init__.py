@@ -18,5 +18,5 @@ def render(doc: Document, lang: str = "en", fmt: str = "md", drawings: bool = Tr
     `drawings=False` leaves out the `draw` figures (quick, for checking the text). Control
     characters in the model's names come out escaped (``\\x1b``), as everywhere names are shown."""
     if fmt not in FORMATS:
-        raise KinematikaError("schema", f"unknown format {fmt!r} (formats: {', '.join(FORMATS)})", "--format")
+        raise KinematikaError("schema", "unknown-format", "--format", format=fmt, formats=list(FORMATS))
     return shown_lines(FORMATS[fmt](doc, catalogue(lang), drawings).render())

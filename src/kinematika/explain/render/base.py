@@ -13,7 +13,7 @@ from ...text import shown
 from ...model.wording import ARTICLES, NO_ARTICLE, part_subscript
 from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Msg, Name, Names,
-                        Section, Sym, Table, Told, Value)
+                        Described, Section, Sym, Table, Told, Value)
 from .svg import Text, plain_text, sym_text
 
 TOKEN = "\ue000{}\ue001"
@@ -28,6 +28,7 @@ class Slot(str):
     variable's markup; `plain` is its text, for the catalogue's grammar (elision)."""
 
     plain: str = ""
+    n_names: int = 1            # how many names it holds (a verb after a list is plural)
 
 
 def plain(x: Any) -> str:
@@ -128,18 +129,20 @@ class Renderer:
                 args[f"{name}_n"] = len(x)
             slot = Slot(TOKEN.format(len(rendered)))
             slot.plain = self.plain(x)
+            slot.n_names = len(x) if isinstance(x, Names) else 1
             rendered.append(self.arg(x))
             values.append(x)
             args[name] = slot
+        args.setdefault("format", self.fmt)     # plain text (md) names no colours
         parts = TOKEN_RE.split(self.cat.format(m.key, args))
+        out = [self.esc(p) if i % 2 == 0 else rendered[int(p)] for i, p in enumerate(parts)]
         if lead and parts[0][:1].islower():
-            parts[0] = parts[0][0].upper() + parts[0][1:]
+            out[0] = self.esc(parts[0][0].upper() + parts[0][1:])
         elif lead and parts[0] == "" and len(parts) > 1:
-            i = int(parts[1])
-            first = values[i]
+            first = values[int(parts[1])]
             if isinstance(first, Name) and first.kind == "body":    # eu: Besoa O puntu finkoaren …
-                rendered[i] = self.capital(rendered[i])
-        return self.contracted("".join(self.esc(p) if i % 2 == 0 else rendered[int(p)] for i, p in enumerate(parts)))
+                out[1] = self.capital(out[1])                        # there only, not where it recurs
+        return self.contracted("".join(out))
 
     def capital(self, markup: str) -> str:
         """`markup` with its first letter (past the format's leading tags) a capital."""
@@ -168,6 +171,8 @@ class Renderer:
             if not rows:
                 return ""
             return self.table([self.message(Msg("col.point")), self.message(Msg("col.what"))], rows)
+        if t.kind == "data":
+            return "\n".join(self.para(self.esc(visible(n))) for n in self.wording.data.get(self.lang, []))
         notes = self.wording.notes.get(self.lang, [])
         return "\n".join(self.para(self.message(Msg("note.text", {"text": n}))) for n in notes)
 
@@ -197,6 +202,9 @@ class Renderer:
             return self.message(x)
         if isinstance(x, Inline):
             return self.inline(x.items)
+        if isinstance(x, Described):
+            said = self.wording.point if x.kind == "point" else self.wording.parameter
+            return self.esc(visible(said(x.name, self.lang)))
         if isinstance(x, (list, tuple)):
             return ", ".join(self.arg(i) for i in x)
         return self.esc(str(x))
@@ -224,6 +232,8 @@ class Renderer:
             return self.wording.joint(n.text, self.lang)
         if n.kind == "point" and "∈" in n.text:          # O∈wheels as the symbols write it: O∈3
             return self.numbered(Sym("", n.text))
+        if n.kind == "index":                            # a body's label in the structure's table
+            return self.labels().get(n.text, n.text)
         return n.text
 
     def articled(self, n: Name) -> tuple[str, str]:
@@ -263,23 +273,32 @@ class Renderer:
                     + self.sym(Sym("ω", f"{body}/{parent}", vector=s.vector)))
         return self.symbol(self.noted(s))
 
+    def labels(self) -> dict[str, str]:
+        """Each body as the symbols write it: the index the model's notation gives it in this
+        language (ω_N, ω_1 for wheel 1), else its number (ω_3), as the figures write it."""
+        if not hasattr(self, "_labels"):
+            self._labels = {b: self.wording.index(b, self.lang) or str(k) for b, k in self.doc.numbers.items()}
+        return self._labels
+
     def numbered(self, s: Sym) -> str:
-        """A symbol's subscript with its bodies by number, as the notes and the figures write
-        them: ω_3, ω_3/2, v_B∈3, v_A∈2/3, a_J∈3/1, I_13 (I_2,11 past nine bodies)."""
-        nums = self.doc.numbers
+        """A symbol's subscript with its bodies by their labels (`labels`), as the notes and the
+        figures write them: ω_3, ω_3/2, v_B∈3, v_A∈2/3, a_J∈3/1, I_13 (I_2,11 once a label has
+        two characters)."""
+        nums, labels = self.doc.numbers, self.labels()
         if not nums or not s.sub or s.fixed:
             return s.sub
-        if s.base in BODY_SUBS:
+        if s.base in BODY_SUBS or s.of_body:
             sep = "," if s.base in ("I", "ω×ω") else "/"
             parts = s.sub.split(sep)
             if not all(p in nums for p in parts):
                 return s.sub
             if s.base == "I":
-                ks = sorted(nums[p] for p in parts)
-                return "".join(map(str, ks)) if max(nums.values()) < 10 else ",".join(map(str, ks))
-            return sep.join(str(nums[p]) for p in parts)
-        head, *rest = re.split(r"([∈/])", s.sub)
-        return head + "".join(str(nums.get(t, t)) if i % 2 else t for i, t in enumerate(rest))
+                ks = sorted(parts, key=nums.get)
+                one = all(len(t) == 1 for t in labels.values())
+                return ("" if one else ",").join(labels[k] for k in ks)
+            return sep.join(labels[p] for p in parts)
+        head, *rest = re.split(r"([∈/,])", s.sub)
+        return head + "".join(labels.get(t, t) if i % 2 else t for i, t in enumerate(rest))
 
     def caption(self, fig: Figure) -> str:
         """A figure's caption, saying the numbers a symbolic model is drawn at (or that it is

@@ -12,7 +12,12 @@ from .svg import svg
 from .names import unicode_name
 from .unicode import unicode_formula
 
-MARKUP = re.compile(r"([\\`*_\[\]<>|])")       # what Markdown would read as markup
+# what Markdown would read as markup; an underscore inside a word (R_roda) is no emphasis
+# (CommonMark), so it stays as a reader writes it
+MARKUP = re.compile(r"([\\`*\[\]<>|]|(?<!\w)_|_(?!\w))")
+
+
+COMPOUND = "/,-∈"          # a subscript with these holds more than one name
 
 
 class MarkdownRenderer(Renderer):
@@ -42,8 +47,12 @@ class MarkdownRenderer(Renderer):
         return self.esc(article) + (f"*{text}*" if n.kind == "body" and not self.code else text)
 
     def symbol(self, s: Sym) -> str:
-        """A symbol in plain text: v_B, a_B^n."""
+        """A symbol in plain text: v_B, a_B^n; a subscript of more than one name in braces,
+        so that it cannot be read as a division or a difference: ω_{3/2}, v_{A∈3/2},
+        v_{rel,A}, v_{O2-A}."""
         sub = self.esc(self.sub_text(s)).replace("\\_", "_")
+        if any(c in sub for c in COMPOUND):
+            sub = "{" + sub + "}"
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
 
     def power(self, mantissa: str, exponent: int) -> str:

@@ -1,12 +1,17 @@
 // The page's calls to the JSON API (see docs/app.md): every answer is the CLI's.
 
-/** An API error: the contract's {kind, message, where} and the HTTP status. */
+/** An API error: the contract's {kind, message, where} and the HTTP status; `partial`, the
+ * rows a simulation computed before it stopped (or null); `dof` and `conditions`, a
+ * mechanism left free's degrees of freedom and its drivers' conditions (else undefined). */
 export class ApiError extends Error {
-  constructor(status, error) {
+  constructor(status, error, partial = null) {
     super(error.message);
     this.status = status;
     this.kind = error.kind;
     this.where = error.where || "";
+    this.partial = partial;
+    this.dof = error.dof;
+    this.conditions = error.conditions;
   }
 }
 
@@ -18,11 +23,13 @@ export async function post(endpoint, body, as = "json") {
     body: JSON.stringify(body),
   });
   if (!response.ok) {
-    let error = { kind: "internal", message: `HTTP ${response.status}`, where: "" };
+    let error = { kind: "internal", message: `HTTP ${response.status}`, where: "" }, partial = null;
     try {
-      error = (await response.json()).error || error;
+      const body = await response.json();
+      error = body.error || error;
+      partial = body.partial || null;
     } catch (_) { /* not JSON: keep the status */ }
-    throw new ApiError(response.status, error);
+    throw new ApiError(response.status, error, partial);
   }
   if (as === "blob") return response.blob();
   if (as === "text") return response.text();

@@ -21,6 +21,7 @@ export class Builder {
     this.sketch = { points: {}, bodies: {}, joints: [], drivers: [], ask: [], properties: {} };
     this.showGrid = true;
     this.pointerAt = null;
+    this.missing = null;           // what the model being built lacks (main.js: a hint's key)
     figure.onPick = (hit, at, e) => this.pick(hit, at, e);
     figure.onView = () => this.draw();
     figure.svg.addEventListener("pointermove", (e) => {
@@ -63,12 +64,12 @@ export class Builder {
     const tool = this.tools.find((x) => x.kind === this.tool);
     if (this.spatial) { this.hint.textContent = this.t("hint-3d"); return; }
     if (!tool) {
-      this.hint.textContent = this.sketch.problem ? this.t("hint-fix")
+      this.hint.textContent = this.sketch.problem ? this.t("hint-fix") : this.missing ? this.t(this.missing)
+        : this.byHand ? this.t("hint-by-hand")
         : Object.keys(this.sketch.points).length ? this.t("hint-select") : this.t("hint-empty");
       return;
     }
-    const need = tool.picks[this.picks.length];
-    this.hint.textContent = `${this.t(`tool-${tool.kind}`)}: ${this.t(`pick-${need}`)}`;
+    this.hint.textContent = `${this.t(`tool-${tool.kind}`)}: ${this.t(`pick-${tool.kind}-${this.picks.length + 1}`)}`;
   }
 
   // picks -------------------------------------------------------------------------------
@@ -126,7 +127,7 @@ export class Builder {
     this.sketch = sketch;
     this.solved = solved;
     this.spatial = dimension === 3;          // built by its text: no grid, no picks
-    if (this.selected && !this.exists(this.selected)) this.selected = null;
+    if (this.selected && !this.exists(this.selected)) this.select(null);
     this.draw();
     this.showProperties();
     this.say();
@@ -157,15 +158,8 @@ export class Builder {
     this.figure.svg.appendChild(root);                    // above the figure's content
     if (this.showGrid && !this.spatial) this.drawGrid(root, view, px);
     if (!this.solved) this.drawSketch(root, px);
-    const sel = this.selected && this.selected.split(/:(.*)/s);
-    if (sel && sel[0] === "point" && this.sketch.points[sel[1]]) {
-      const p = this.sketch.points[sel[1]];
-      el("circle", { cx: p[0], cy: -p[1], r: 11 * px, class: "selected" }, root);
-    } else if (sel && sel[0] === "body" && this.sketch.bodies[sel[1]]) {
-      const pts = this.sketch.bodies[sel[1]].points.map((n) => this.sketch.points[n]).filter(Boolean);
-      if (pts.length === 1) el("circle", { cx: pts[0][0], cy: -pts[0][1], r: 14 * px, class: "selected" }, root);
-      else el("polyline", { points: pts.map((p) => `${p[0]},${-p[1]}`).join(" "), class: "selected", fill: "none" }, root);
-    }
+    this.marked = el("g", { class: "marked" }, root);
+    this.follow();
     const placed = this.picks.map((p) => (typeof p === "string" ? this.sketch.points[p] : Array.isArray(p) ? p : null)).filter(Boolean);
     for (const p of placed) el("circle", { cx: p[0], cy: -p[1], r: 5 * px, class: "picked" }, root);
     if (placed.length && this.pointerAt) {
@@ -174,6 +168,24 @@ export class Builder {
       const len = Math.hypot(q[0] - p[0], q[1] - p[1]), ang = (Math.atan2(q[1] - p[1], q[0] - p[0]) * 180) / Math.PI;
       const label = el("text", { x: q[0] + 8 * px, y: -q[1] - 8 * px, "font-size": 12 * px, class: "rubber-label" }, root);
       label.textContent = `${num(len)} m, ${num(ang)}°`;
+    }
+  }
+
+  /** The selected element marked where the figure shows it now (the slider's row, the
+   * mechanism turned by hand), else where it is drawn. */
+  follow() {
+    const g = this.marked, px = this.figure.px || 0.01;
+    if (!g) return;
+    g.replaceChildren();
+    const sel = this.selected && this.selected.split(/:(.*)/s);
+    const at = (n) => (this.solved && this.figure.at(n)) || this.sketch.points[n];
+    if (sel && sel[0] === "point" && at(sel[1])) {
+      const p = at(sel[1]);
+      el("circle", { cx: p[0], cy: -p[1], r: 11 * px, class: "selected" }, g);
+    } else if (sel && sel[0] === "body" && this.sketch.bodies[sel[1]]) {
+      const pts = this.sketch.bodies[sel[1]].points.map(at).filter(Boolean);
+      if (pts.length === 1) el("circle", { cx: pts[0][0], cy: -pts[0][1], r: 14 * px, class: "selected" }, g);
+      else el("polyline", { points: pts.map((p) => `${p[0]},${-p[1]}`).join(" "), class: "selected", fill: "none" }, g);
     }
   }
 
@@ -218,8 +230,22 @@ export class Builder {
   // the properties panel -----------------------------------------------------------------
   select(key) {
     this.selected = key;
+    const sheet = this.panel.closest("section");
+    sheet?.classList.toggle("open", !!key);          // on a phone: a sheet under the figure (app.css)
     this.draw();
     this.showProperties();
+    if (key && sheet && getComputedStyle(sheet).position === "fixed") this.inSight(sheet);
+  }
+
+  /** On a phone, the figure above the properties' sheet: the page scrolled to it once the
+   * pointer is up (a drag that began with the selection is not moved under the finger). */
+  inSight(sheet) {
+    const scroll = () => {
+      const box = this.figure.svg.getBoundingClientRect(), top = sheet.getBoundingClientRect().top;
+      if (box.top < 0 || box.bottom > top) window.scrollBy(0, box.top - Math.max(0, top - box.height) / 2);
+    };
+    if (this.figure.svg.matches(":active")) window.addEventListener("pointerup", () => requestAnimationFrame(scroll), { once: true });
+    else requestAnimationFrame(scroll);
   }
 
   showProperties() {
@@ -238,6 +264,7 @@ export class Builder {
     title.textContent = this.t(`element-${kind}`, { name: shown(name) });
     title.dataset.testid = "selected";
     body.appendChild(title);
+    if (kind === "point" || kind === "body") body.appendChild(this.naming(kind, name));
     const rows = this.sketch.properties[key] || [];
     const form = document.createElement("div");
     form.className = "props";
@@ -261,10 +288,18 @@ export class Builder {
   }
 
   field(row) {
+    const about = row.of ? segment(row.of) : row.about ? shown(row.about) : "";
+    if (row.kind === "note") {                   // said here, typed elsewhere (a pin's guide)
+      const p = document.createElement("p");
+      p.className = "muted";
+      p.dataset.testid = row.label;
+      p.textContent = this.t(row.label, { about });
+      return p;
+    }
     const label = document.createElement("label");
     label.className = "prop";
     const words = document.createElement("span");
-    words.textContent = this.t(row.label, { about: row.about ? shown(row.about) : "", name: row.parameter ? shown(row.parameter) : "" });
+    words.textContent = this.t(row.label, { about, name: row.parameter ? shown(row.parameter) : "" });
     if (row.parameter) words.textContent += ` (${shown(row.parameter)})`;
     const input = document.createElement("input");
     input.type = "text";
@@ -284,6 +319,40 @@ export class Builder {
     input.addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); input.blur(); } });
     label.append(words, input, unit);
     return label;
+  }
+
+  /** The element's name (renamed everywhere the model names it) and its names per language
+   * (the model's `names:`: how the explanations call a body, what a point is). */
+  naming(kind, name) {
+    const box = document.createElement("div");
+    box.className = "naming";
+    const { label, input } = this.numberField(this.t("prop-name"), "rename", name, "");
+    input.inputMode = "text";
+    input.spellcheck = false;
+    input.addEventListener("change", () => {
+      const to = input.value.trim();
+      if (to && to !== name) this.act({ op: "rename", element: `${kind}:${name}`, to });
+    });
+    input.addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); input.blur(); } });
+    box.appendChild(label);
+    const more = document.createElement("details");
+    more.dataset.testid = "names-per-language";
+    const summary = document.createElement("summary");
+    summary.textContent = this.t(kind === "body" ? "names-body" : "names-point");
+    more.appendChild(summary);
+    const section = kind === "body" ? "bodies" : "points";
+    for (const o of document.querySelectorAll("#ui-language option")) {
+      const now = ((this.sketch.names || {})[o.value] || {})[section] || {};
+      const f = this.numberField(o.textContent, `name-${o.value}`, now[name] ?? "", "");
+      f.input.inputMode = "text";
+      f.input.addEventListener("change", () => this.act({ op: "name", element: `${kind}:${name}`, lang: o.value, text: f.input.value }));
+      f.input.addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); f.input.blur(); } });
+      more.appendChild(f.label);
+    }
+    more.open = this.namesOpen || false;
+    more.addEventListener("toggle", () => { this.namesOpen = more.open; });
+    box.appendChild(more);
+    return box;
   }
 
   /** Make a moving body the input: its ω and α. */
@@ -360,6 +429,11 @@ export class Builder {
     }
     return box;
   }
+}
+
+/** Two points as a segment's name: O2A for short names (as a textbook writes it), else O2–A. */
+export function segment([a, b]) {
+  return a.length <= 3 && b.length <= 3 ? `${shown(a)}${shown(b)}` : `${shown(a)}–${shown(b)}`;
 }
 
 function button(text, testid, onClick) {

@@ -1,6 +1,7 @@
 // The model editor: a plain textarea with line numbers, the error's line marked.
 
 const DEBOUNCE_MS = 250;
+const MEASURED_LINES = 3000;     // a longer text is numbered as if no line wrapped
 
 export class Editor {
   constructor(textarea, gutter, mark, onChange) {
@@ -16,6 +17,11 @@ export class Editor {
     });
     this.area.addEventListener("scroll", () => this.follow());
     this.area.addEventListener("keydown", (e) => this.indent(e));
+    this.rows = null;                            // screen rows of each line, when lines wrap
+    let width = 0;
+    new ResizeObserver(() => {
+      if (this.area.clientWidth !== width) { width = this.area.clientWidth; this.numberLines(); }
+    }).observe(this.area);
   }
 
   get text() { return this.area.value; }
@@ -29,18 +35,46 @@ export class Editor {
   }
 
   numberLines() {
-    const n = this.area.value.split("\n").length;
+    const text = this.area.value.split("\n");
+    this.rows = this.measure(text);
     const lines = [];
-    for (let i = 1; i <= n; i++) lines.push(i === this.badLine ? `<span class="bad">${i}</span>` : String(i));
+    for (let i = 1; i <= text.length; i++) {
+      lines.push(i === this.badLine ? `<span class="bad">${i}</span>` : String(i));
+      for (let r = 1; r < (this.rows ? this.rows[i - 1] : 1); r++) lines.push("");    // its wrapped rows
+    }
     this.gutter.innerHTML = lines.join("\n") + "\n";
     this.follow();
+  }
+
+  /** How many screen rows each line takes when the text wraps (a narrow screen: app.css),
+   * measured on a hidden copy of the text area's lines; null when lines do not wrap. */
+  measure(lines) {
+    const style = getComputedStyle(this.area);
+    if (style.whiteSpace === "pre" || lines.length > MEASURED_LINES || !this.area.clientWidth) return null;
+    const copy = document.createElement("div");
+    for (const k of ["font", "letterSpacing", "tabSize", "whiteSpace", "overflowWrap", "wordBreak", "paddingLeft", "paddingRight"]) {
+      copy.style[k] = style[k];
+    }
+    Object.assign(copy.style, { position: "absolute", visibility: "hidden", left: "-10000px", top: "0",
+                                width: `${this.area.clientWidth}px`, boxSizing: "border-box" });
+    for (const line of lines) {
+      const d = document.createElement("div");
+      d.textContent = line || "\u200b";
+      copy.appendChild(d);
+    }
+    document.body.appendChild(copy);
+    const h = parseFloat(style.lineHeight) || 19;
+    const rows = [...copy.children].map((d) => Math.max(1, Math.round(d.getBoundingClientRect().height / h)));
+    copy.remove();
+    return rows;
   }
 
   follow() {
     this.gutter.scrollTop = this.area.scrollTop;
     if (this.badLine) {
       const h = parseFloat(getComputedStyle(this.area).lineHeight) || 19;
-      this.mark.style.top = `${8 + (this.badLine - 1) * h - this.area.scrollTop}px`;
+      const before = this.rows ? this.rows.slice(0, this.badLine - 1).reduce((a, b) => a + b, 0) : this.badLine - 1;
+      this.mark.style.top = `${8 + before * h - this.area.scrollTop}px`;
     }
   }
 

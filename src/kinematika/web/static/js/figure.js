@@ -20,6 +20,8 @@ export class Figure {
     this.t = t;                  // the page's words (i18n.js)
     this.onPick = null;          // the builder's: a click on a point, a body or a place
     this.onView = null;          // called after the view changed (zoom, pan, a new frame)
+    this.onTurn = null;          // a point dragged along the motion (by hand, or with Shift): (name, at, phase)
+    this.byHand = false;         // every drag of a point moves the mechanism, not the model
     this.layers = { velocity: true, acceleration: true, centres: true, curvature: true, traces: true };
     this.scene = null;
     this.sweep = null;
@@ -599,12 +601,16 @@ export class Figure {
 
   /** Labels that would overlap are moved apart: the points' names stay; each arrow's,
    * centre's and curvature's label after them is shifted up or down (by its height, at most
-   * twice) to the first place where it overlaps no label already placed. */
+   * twice) to the first place where it overlaps no label already placed. A label that would
+   * stick out of the figure (an arrow's tip near its edge, on a narrow screen) is moved back
+   * inside it. */
   unclutter() {
     if (!this.g) return;
     const texts = [...this.pointLabels.map((pl) => pl.label),
       ...this.svg.querySelectorAll(".content .vectors text, .content .overlay text")];
     const placed = [];
+    const [x0, y0, x1, y1] = this.view, pad = 2 * this.px;
+    const inside = (lo, size, from, to) => (size > to - from ? 0 : Math.max(from - lo, 0) + Math.min(to - (lo + size), 0));
     for (const t of texts) {
       t.removeAttribute("transform");
       if (t.getAttribute("visibility") === "hidden" || !t.getClientRects().length) continue;
@@ -617,9 +623,11 @@ export class Figure {
         const clash = (d) => placed.some((q) => b.x < q.x + q.width && q.x < b.x + b.width &&
                                               b.y + d < q.y + q.height + gap && q.y < b.y + d + b.height + gap);
         dy = [0, b.height, -b.height, 2 * b.height, -2 * b.height].find((d) => !clash(d)) ?? 0;
-        if (dy) t.setAttribute("transform", `translate(0 ${dy})`);
       }
-      placed.push({ x: b.x, y: b.y + dy, width: b.width, height: b.height });
+      const dx = inside(b.x, b.width, x0 + pad, x1 - pad);       // user units: y is −model y
+      dy += inside(b.y + dy, b.height, -y1 + pad, -y0 - pad);
+      if (dx || dy) t.setAttribute("transform", `translate(${dx} ${dy})`);
+      placed.push({ x: b.x + dx, y: b.y + dy, width: b.width, height: b.height });
     }
   }
 
@@ -674,7 +682,11 @@ export class Figure {
       if (e.button === 0 && this.onPick && this.onPick(hit, at, e)) { e.preventDefault(); return; }
       e.preventDefault();
       svg.setPointerCapture(e.pointerId);
-      if (e.button === 0 && hit.point && this.canDrag(hit.point)) {
+      if (e.button === 0 && hit.point && (this.byHand || e.shiftKey) && this.onTurn) {
+        act = { kind: "turn", id: e.pointerId, name: hit.point };          // the mechanism moves, not the model
+        svg.classList.add("turning");
+        this.onTurn(hit.point, at, "start");
+      } else if (e.button === 0 && hit.point && this.canDrag(hit.point)) {
         this.hold();
         this.drag = { name: hit.point, at: this.toModel(e) };
         act = { kind: "drag", id: e.pointerId, x: e.clientX, y: e.clientY, moved: false };
@@ -684,7 +696,9 @@ export class Figure {
     });
     svg.addEventListener("pointermove", (e) => {
       if (!act || e.pointerId !== act.id) return;
-      if (act.kind === "drag") {
+      if (act.kind === "turn") {
+        this.onTurn(act.name, this.toModel(e, false), "move");
+      } else if (act.kind === "drag") {
         if (!act.moved && Math.hypot(e.clientX - act.x, e.clientY - act.y) < 3) return;   // a click, not a drag
         if (!act.moved) { act.moved = true; svg.classList.add("dragging"); this.onDrag(this.drag.name, null, false); }
         this.drag.at = this.toModel(e);
@@ -702,7 +716,10 @@ export class Figure {
       if (!act || e.pointerId !== act.id) return;
       const was = act;
       act = null;
-      if (was.kind === "drag" && !was.moved) {
+      if (was.kind === "turn") {
+        svg.classList.remove("turning");
+        this.onTurn(was.name, this.toModel(e, false), "end");
+      } else if (was.kind === "drag" && !was.moved) {
         this.drag = null;
       } else if (was.kind === "drag") {
         const name = this.drag.name, at = this.toModel(e);
@@ -720,6 +737,13 @@ export class Figure {
       e.preventDefault();
       this.zoom(e.deltaY > 0 ? 1.15 : 1 / 1.15, this.toModel(e, false));
     }, { passive: false });
+  }
+
+  /** Where point `name` is drawn now (its handle, at the row shown), or null. */
+  at(name) {
+    const pl = (this.pointLabels || []).find((x) => x.name === name);
+    if (!this.scene || !pl || !pl.handle || pl.handle.getAttribute("visibility") === "hidden") return null;
+    return [Number(pl.handle.getAttribute("cx")), -Number(pl.handle.getAttribute("cy"))];
   }
 
   /** A point can be dragged in a planar model (a 3D point is moved in its text). */

@@ -9,6 +9,7 @@ import { Plot } from "./plot.js";
 import { fragment, fromFragment } from "./link.js";
 import { num, shown } from "./svg.js";
 import { Builder } from "./builder.js";
+import { followRow, movingKey } from "./turn.js";
 import * as i18n from "./i18n.js";
 
 const t = i18n.t;
@@ -27,6 +28,7 @@ const answers = new Answers($("answers"), t);
 const plot = new Plot($("plot"), $("plot-pick"), t);
 const builder = new Builder(figure, $("palette"), $("properties-body"), $("build-hint"), t, build);
 const slider = $("input-slider");
+figure.onTurn = turn;
 window.kinematika = { state, timing, figure, builder,
   /** The page coordinates (CSS pixels) of a model point: for tests that click on the grid. */
   toScreen: ([x, y]) => {
@@ -36,7 +38,7 @@ window.kinematika = { state, timing, figure, builder,
 
 // the model -----------------------------------------------------------------------------
 function request(extra = {}) {
-  const body = { model: editor.text, format: state.fmt, ...extra };
+  const body = { model: editor.text, format: state.fmt, lang: state.lang, ...extra };
   if (state.assembly !== null) body.assembly = state.assembly;
   return body;
 }
@@ -48,14 +50,16 @@ async function analyse() {
   $("busy").hidden = false;
   const [solved, drawn, swept, sketched] = await Promise.allSettled([
     post("solve", request()), post("draw", request({ centres: true, lang: state.lang })),
-    post("sweep", request({ skip_bad: true })), post("sketch", { model: editor.text, format: state.fmt }),
+    post("sweep", request({ skip_bad: true })), post("sketch", { model: editor.text, format: state.fmt, lang: state.lang }),
   ]);
   if (gen !== state.gen) return;
   $("busy").hidden = true;
   const sketch = sketched.status === "fulfilled" ? sketched.value : null;
   if (solved.status === "rejected") {
     const blank = sketch && !Object.keys(sketch.points).length && !sketch.problem;
-    showError(blank ? null : solved.reason);
+    const missing = blank ? null : stillBuilding(solved.reason, sketch);
+    showError(blank || missing ? null : solved.reason);
+    showMissing(missing, solved.reason);
     showWarnings([]);
     stale(true);
     state.solution = null;
@@ -67,7 +71,7 @@ async function analyse() {
       $("coordinate").textContent = "–";
       $("model-name").textContent = shown(sketch.name || t("model"), 120);
       $("plot-box").hidden = true;
-      slider.disabled = $("play").disabled = true;
+      slider.disabled = $("play").disabled = $("by-hand").disabled = true;
       $("notes").textContent = "";
       if (blank) $("dof").textContent = t("dof", { n: "–" });
     }
@@ -75,13 +79,26 @@ async function analyse() {
     return;
   }
   showError(null);
+  showMissing(null);
   stale(false);
   state.solution = solved.value;
+  state.answered = true;
   showWarnings(state.solution.warnings || []);
   state.scene = drawn.status === "fulfilled" ? drawn.value : null;
   state.sweep = swept.status === "fulfilled" ? swept.value : null;
+  state.playBack = false;
   state.input = state.scene && state.scene.input;
   state.sweepError = swept.status === "rejected" ? swept.reason.message : null;
+  if (inTime()) {                    // a motion followed in time: its rows, as a sweep's
+    try {
+      state.sweep = rowsInTime(await post("simulate", request({ time: state.input.time, steps: state.input.steps })));
+      state.sweepError = null;
+    } catch (err) {
+      state.sweep = err.partial ? rowsInTime(err.partial) : null;
+      state.sweepError = err.message;
+    }
+    if (gen !== state.gen) return;
+  }
   state.explained = null;
   const name = shown(state.solution.name || t("model"), 120);
   $("model-name").textContent = name;
@@ -98,10 +115,10 @@ async function analyse() {
   if (state.scene) figure.set(state.scene, state.sweep, 0);
   else figure.clear(figure.keep || builder.box());
   answers.set(state.solution, state.sweep, frame, state.scene);
-  plot.set(state.sweep, state.input ? state.input.unit : "deg", frame);
+  plot.set(state.sweep, state.input ? state.input.unit : "deg", frame, state.scene);
   $("plot-box").hidden = !state.sweep;
   slider.max = String(rows - 1);
-  slider.disabled = $("play").disabled = !state.sweep;
+  slider.disabled = $("play").disabled = $("by-hand").disabled = !state.sweep;
   slider.title = state.sweepError ? t("no-sweep", { why: state.sweepError }) : "";
   setRow(state.row);
   if (sketch) builder.update(sketch, !!state.scene, state.solution.dimension);
@@ -117,7 +134,7 @@ async function analyse() {
 function stale(on) {
   figure.stale(on);
   $("answers").classList.toggle("stale", on);
-  $("answers-stale").hidden = !on || !state.solution;
+  $("answers-stale").hidden = !on || !state.answered;
   $("plot-box").classList.toggle("stale", on);
   if (on) {
     $("answers-where").textContent = "";
@@ -130,7 +147,7 @@ async function listAssemblies(gen) {
   const pick = $("assembly");
   let found = [];
   try {
-    found = (await post("assemblies", { model: editor.text, format: state.fmt })).assemblies;
+    found = (await post("assemblies", { model: editor.text, format: state.fmt, lang: state.lang })).assemblies;
   } catch (_) { /* none to offer: the model's own */ }
   if (gen !== state.gen) return;
   const options = [`<option value="">${escapeHtml(t("assembly-as-drawn"))}</option>`];
@@ -177,6 +194,29 @@ function showWarnings(list) {
   }));
 }
 
+/** What a model being built still lacks, when that is all that keeps it from being solved:
+ * a moving body (`missing-body`), an input (`missing-input`), another input for one more
+ * degree of freedom (`missing-more-input`); null for a real error. */
+function stillBuilding(err, sketch) {
+  if (!err || err.kind !== "mobility" || !sketch || sketch.problem) return null;
+  if (!Object.values(sketch.bodies).some((b) => !b.frame)) return "missing-body";
+  if (err.dof === undefined) return null;             // drivers that conflict: a real error
+  return sketch.drivers.length ? "missing-more-input" : "missing-input";
+}
+
+/** A hint (not an error) of what to add next; the degrees of freedom as the message says. */
+function showMissing(key, err = null) {
+  const box = $("missing");
+  box.hidden = !key;
+  box.textContent = key ? t(key) : "";
+  builder.missing = key;
+  builder.say();
+  if (!key) return;
+  const dof = $("dof");
+  dof.textContent = t("dof", { n: err && err.dof !== undefined && key !== "missing-body" ? err.dof : "–" });
+  dof.classList.remove("bad");
+}
+
 function showError(err) {
   const box = $("error");
   if (!err) {
@@ -200,8 +240,7 @@ function showError(err) {
   box.dataset.kind = err.kind || "";
   editor.markLine(errorLine(editor.text, err));
   const dof = $("dof");
-  const said = /(\d+) degrees? of freedom/.exec(err.message || "");
-  dof.textContent = t("dof", { n: said ? said[1] : "?" });
+  dof.textContent = t("dof", { n: err.dof !== undefined ? err.dof : "?" });
   dof.classList.add("bad");
 }
 
@@ -209,6 +248,7 @@ function load(text, fmt, name) {
   remember();
   figure.keep = null;
   builder.select(null);
+  forget();
   state.fmt = fmt || "yaml";
   state.name = (name || "model").replace(/\.(ya?ml|toml|json)$/, "");
   $("format").value = state.fmt;
@@ -218,10 +258,37 @@ function load(text, fmt, name) {
   analyse();
 }
 
+/** A new document (New, an example, a link): nothing of the last model stays on the page,
+ * neither its answers nor its plot nor its explanation. */
+function forget() {
+  state.sweep = state.scene = state.input = state.blank = null;
+  state.answered = false;                  // the answers panel holds nothing of this model yet
+  state.explained = state.explanation = null;
+  answers.clear();
+  plot.set(null);
+  $("plot-box").hidden = true;
+  $("answers-where").textContent = "";
+  $("answers-stale").hidden = true;
+  $("explanation-where").textContent = "";
+  $("explanation").srcdoc = "";
+}
+
 // the slider ----------------------------------------------------------------------------
+/** Whether the slider moves through time (a simulation's rows: `kinematika simulate`). */
+function inTime() {
+  return !!(state.input && state.input.unit === "s");
+}
+
+/** A simulation's rows read as a sweep's: its times as the coordinate. */
+function rowsInTime(rows) {
+  return { ...rows, coordinate: rows.time };
+}
+
+
 function coordinateText(k) {
   if (!state.sweep || !state.input) return t("drawn-position");
   const x = state.sweep.coordinate[k];
+  if (inTime()) return `t = ${num(x)} s`;
   return `${shown(state.input.joint, 40)} ${x >= 0 ? "+" : "−"}${num(Math.abs(x))}${state.input.unit === "deg" ? "°" : ""}`;
 }
 
@@ -231,6 +298,7 @@ function setRow(k) {
   state.row = k;
   slider.value = String(k);
   figure.show(k);
+  if (builder.selected) builder.follow();
   answers.show(k);
   plot.cursor(k);
   $("coordinate").textContent = coordinateText(k);
@@ -256,11 +324,11 @@ async function settle() {
   const k = state.row, gen = state.gen;
   if (!state.solution) return;             // a model being built: nothing solved to show
   explainSoon();
-  if (k === 0 || !state.sweep || !state.input) {
-    if (state.scene) place(state.scene, 0);
+  if (k === 0 || !state.sweep || !state.input || inTime()) {
+    if (state.scene && (k === 0 || !inTime())) place(state.scene, 0);
     return;
   }
-  const move = { move: { [state.input.joint]: state.sweep.coordinate[k] } };
+  const move = posedAt(k);
   try {
     const [sol, scene] = await Promise.all([post("solve", request(move)), post("draw", request({ ...move, centres: true }))]);
     if (gen !== state.gen || k !== state.row) return;
@@ -276,17 +344,50 @@ function place(scene, k) {
   else if (figure.sceneRow !== k || figure.scene !== scene) figure.set(scene, null, k);
 }
 
+/** How the API poses the model at sweep row k: `move` the input to the row's coordinate, or,
+ * for a motion through limit positions (where a coordinate is reached on two branches), the
+ * row itself (`row`: the sweep's row k, through the limit positions before it). */
+function posedAt(k) {
+  if (k === 0 || !state.input || !state.sweep || inTime()) return {};     // rows in time: posed at the drawing only
+  if (state.sweep.limits && state.sweep.limits.length) return { row: k };
+  return { move: { [state.input.joint]: state.sweep.coordinate[k] } };
+}
+
+/** A motion through limit positions that ends elsewhere than where it started is played
+ * back and forth (forward to its last row, then back); one that comes back (a full turn, a
+ * rocker's whole cycle) loops. */
+function backAndForth(sweep) {
+  if (!sweep.limits || !sweep.limits.length) return false;
+  if (sweep.bounces === undefined) {              // once a sweep
+    const last = sweep.coordinate.length - 1;
+    sweep.bounces = !Object.values(sweep.points).every(({ position: p }) => p[0] && p[last] &&
+      p[0].every((x, i) => Math.abs(x - p[last][i]) <= 1e-9 * Math.max(1, Math.abs(x))));
+  }
+  return sweep.bounces;
+}
+
 let playing = null;
 function play() {
   if (playing) { cancelAnimationFrame(playing.frame); playing = null; $("play").textContent = "▶"; return; }
   $("play").textContent = "❚❚";
-  playing = { last: null, pos: state.row };
+  // `phase` runs forward; played back and forth, phases past the last row are the way back
+  const rows0 = state.sweep.coordinate.length;
+  playing = { last: null, pos: state.row, phase: state.playBack ? 2 * (rows0 - 1) - state.row : state.row };
   const step = (now) => {       // `now`: the frame's time, which can precede the click's
     const rows = state.sweep.coordinate.length;
     const dt = playing.last === null ? 0 : Math.max(now - playing.last, 0);
-    playing.pos = (playing.pos + (dt / 1000) * ROWS_PER_SECOND * Number($("speed").value)) % rows;
+    const ahead = (dt / 1000) * ROWS_PER_SECOND * Number($("speed").value);
+    if (backAndForth(state.sweep) && rows > 1) {
+      const period = 2 * (rows - 1);
+      playing.phase = (playing.phase + ahead) % period;
+      state.playBack = playing.phase > rows - 1;
+      playing.pos = state.playBack ? period - playing.phase : playing.phase;
+      setRow(state.playBack ? Math.ceil(playing.pos) : Math.floor(playing.pos));
+    } else {
+      playing.pos = (playing.pos + ahead) % rows;
+      setRow(Math.floor(playing.pos));
+    }
     playing.last = now;
-    setRow(Math.floor(playing.pos));
     playing.frame = requestAnimationFrame(step);
   };
   playing.frame = requestAnimationFrame(step);
@@ -305,12 +406,12 @@ async function explain() {
   const key = `${gen}|${lang}|${k}`;
   if (state.explained === key || state.explaining === key || !state.solution) return;
   state.explaining = key;            // one request a position (an explanation can take seconds)
-  const move = k !== 0 && state.input && state.sweep ? { move: { [state.input.joint]: state.sweep.coordinate[k] } } : {};
-  let html, where = whereText(k);
+  const move = posedAt(k);
+  let html, where = inTime() && k !== 0 ? t("at-drawn-only") : whereText(k);
   try {
     html = await post("explain", request({ lang, ...move }), "text");
   } catch (err) {
-    if (!move.move) { html = null; where = err.message; } else {
+    if (!move.move && !move.row) { html = null; where = err.message; } else {
       try {
         html = await post("explain", request({ lang }), "text");
         where = t("at-drawn-only");
@@ -334,6 +435,7 @@ async function drag(name, to, final) {
   if (to === null) {                       // a drag starts: edits are made at the drawn position
     if (playing) play();
     if (state.row !== 0) setRow(0);
+    batch.begin();                           // the whole drag is one step of Undo
     return;
   }
   dragWanted = { name, to, final };
@@ -343,7 +445,7 @@ async function drag(name, to, final) {
     const job = dragWanted;
     dragWanted = null;
     try {
-      const answer = await post("edit", { model: editor.text, format: state.fmt, point: job.name, to: job.to });
+      const answer = await post("edit", { model: editor.text, format: state.fmt, lang: state.lang, point: job.name, to: job.to });
       setText(answer.model);
       await analyse();
     } catch (err) {
@@ -353,7 +455,35 @@ async function drag(name, to, final) {
   }
   dragBusy = false;
   figure.release();
-  if (!figure.drag) { listAssemblies(state.gen); explainSoon(); }
+  if (!figure.drag) { batch.end(); listAssemblies(state.gen); explainSoon(); }
+}
+
+// turning the mechanism by hand ----------------------------------------------------------------
+let turning = null;
+
+/** A point dragged along the motion (by hand, or with Shift): the mechanism follows it
+ * through the sweep's rows as far as it can move (turn.js); the model is not changed. */
+function turn(name, at, phase) {
+  if (phase === "start") {
+    if (playing) play();
+    const frame = state.scene && Object.keys(state.scene.bodies).find((b) => state.scene.bodies[b].frame);
+    const key = state.sweep && state.scene && state.scene.dimension === 2 ? movingKey(state.sweep, name, frame) : null;
+    turning = key ? { key } : null;
+    if (!key) toast(t(state.sweep ? "turn-fixed" : "turn-no-motion", { point: shown(name) }));
+    return;
+  }
+  if (!turning) return;
+  const k = followRow(state.sweep, turning.key, at, state.row);
+  if (k !== state.row) setRow(k);
+  if (phase === "end") turning = null;
+}
+
+function byHand(on) {
+  figure.byHand = on;
+  builder.byHand = on;
+  $("by-hand").setAttribute("aria-pressed", String(on));
+  $("figure").classList.toggle("hand", on);
+  builder.say();
 }
 
 // downloads and the link ----------------------------------------------------------------------
@@ -369,7 +499,7 @@ function save(blob, name) {
 
 async function download(what) {
   $("downloads").open = false;
-  const here = state.row !== 0 && state.input && state.sweep ? { move: { [state.input.joint]: state.sweep.coordinate[state.row] } } : {};
+  const here = posedAt(state.row);
   try {
     if (what === "model") save(new Blob([editor.text], { type: "text/plain" }), `${state.name}.${state.fmt === "yaml" ? "yaml" : state.fmt}`);
     else if (what === "svg" || what === "png") {
@@ -377,7 +507,8 @@ async function download(what) {
       try { blob = await post("draw", request({ ...here, as: what, centres: true }), "blob"); }
       catch (_) { blob = await post("draw", request({ as: what, centres: true }), "blob"); }
       save(blob, `${state.name}.${what}`);
-    } else if (what === "csv") save(await post("sweep", request({ skip_bad: true, as: "csv" }), "blob"), `${state.name}.csv`);
+    } else if (what === "csv" && inTime()) save(await post("simulate", request({ time: state.input.time, steps: state.input.steps, as: "csv" }), "blob"), `${state.name}.csv`);
+    else if (what === "csv") save(await post("sweep", request({ skip_bad: true, as: "csv" }), "blob"), `${state.name}.csv`);
     else if (what === "html") {
       if (!state.explanation) await explain();
       save(new Blob([state.explanation || ""], { type: "text/html" }), `${state.name}-${state.lang}.html`);
@@ -407,6 +538,8 @@ function toast(text) {
 // wiring ----------------------------------------------------------------------------------
 slider.addEventListener("input", () => { if (playing) play(); setRow(Number(slider.value)); });
 $("play").addEventListener("click", play);
+$("by-hand").addEventListener("click", () => byHand(!figure.byHand));
+$("close-properties").addEventListener("click", () => builder.select(null));
 for (const pick of document.querySelectorAll("[data-lang]")) {
   pick.addEventListener("change", (e) => setLanguage(e.target.value));
 }
@@ -441,8 +574,17 @@ document.addEventListener("keydown", (e) => {
 const past = [], future = [];       // earlier and undone states: [text, format]
 let last = null;
 
-/** Keep the state before a change, for undo (typing is kept once per pause). */
+/** One step of Undo for an action made of many edits (a drag): between `begin` and `end`
+ * the text changes without being remembered; `end` remembers the state before `begin`. */
+const batch = {
+  open: false,
+  begin() { remember(); this.open = true; },
+  end() { if (!this.open) return; this.open = false; remember(); },
+};
+
+/** Keep the state before a change, for undo (typing is kept once per pause; a drag once). */
 function remember() {
+  if (batch.open) return;
   const now = [editor.text, state.fmt];
   if (last !== null && (last[0] !== now[0] || last[1] !== now[1])) {
     past.push(last);
@@ -492,7 +634,7 @@ async function build(op) {
 async function convertTo(fmt) {
   if (fmt === state.fmt) return;
   try {
-    const answer = await post("convert", { model: editor.text, format: state.fmt, to: fmt });
+    const answer = await post("convert", { model: editor.text, format: state.fmt, lang: state.lang, to: fmt });
     state.fmt = fmt;
     setText(answer.model);
     analyse();
@@ -508,6 +650,7 @@ async function newModel(name) {
   $("example").value = "";
   history.replaceState(null, "", location.pathname);
   load(tpl.model, tpl.format, name === "blank" ? "model" : name);
+  state.blank = name === "blank" ? tpl.model : null;
   if (name === "blank") figure.clear([-0.1, -0.1, 0.3, 0.2]);
 }
 
@@ -519,7 +662,8 @@ async function setLanguage(code) {
   assemblyTitle();
   builder.say();
   builder.showProperties();
-  if (state.solution) analyse(); else explainSoon();
+  if (state.blank && editor.text === state.blank) newModel("blank");   // not begun: in the new language
+  else if (state.solution || editor.text.trim()) analyse(); else explainSoon();     // errors, warnings: said again
 }
 
 async function start() {

@@ -1,9 +1,12 @@
 // Chosen quantities against the input coordinate, from the sweep: one small chart each,
 // a cursor at the slider, dead points (where the sweep stops assembling) and limit
-// positions (where a body's ω changes sign: its angle is at an extreme) marked.
+// positions (where a body's ω changes sign: its angle is at an extreme) marked. A motion
+// through the input's limit positions runs its coordinate back there: its curves go back
+// over the axis (a rocker's cycle is a loop), and those positions are dotted lines.
 import { el, niceStep, num, shown } from "./svg.js";
+import { inputAxis, textbookAngles } from "./angles.js";
 
-const PAD = { left: 62, right: 74, top: 8, bottom: 34 };
+const PAD = { left: 62, right: 74, top: 8, bottom: 40 };
 const COLOURS = ["#1f5fa8", "#c62828", "#2e7d32", "#7b1fa2", "#ef6c00", "#00838f"];
 
 export class Plot {
@@ -16,13 +19,19 @@ export class Plot {
     new ResizeObserver(() => this.sweep && this.draw()).observe(svg);
   }
 
-  /** The quantities of a sweep (JSON), and which to show first. */
-  set(sweep, unit, frame) {
+  /** The quantities of a sweep (JSON), and which to show first; with the scene, each body's
+   * angle θ and the input as the command line's plot gives them (angles.js). */
+  set(sweep, unit, frame, scene = null) {
     this.sweep = sweep;
     this.row = 0;                  // the slider's row is set again after (a new sweep may be shorter)
     this.unit = unit;
     this.pick.replaceChildren();
     if (!sweep) { this.svg.replaceChildren(); return; }
+    const theta = textbookAngles(scene, sweep);
+    const axis = scene ? inputAxis(scene, sweep, theta) : { x: sweep.coordinate, driver: null };
+    this.xs = axis.x;
+    this.xlabel = axis.driver ? this.t("plot-input-angle", { body: shown(axis.driver) })
+      : this.t("plot-input", { joint: shown((scene && scene.input && scene.input.joint) || ""), unit: unit === "deg" ? "°" : "m" });
     const choices = [];
     const moving = Object.keys(sweep.bodies).filter((b) => b !== frame);
     const size = (xs) => xs.map((x) => (Array.isArray(x) ? Math.hypot(...x) : x));   // 3D: magnitudes
@@ -31,7 +40,8 @@ export class Plot {
       const q = sweep.bodies[b];
       const t = this.t, name = shown(b);
       if (planar) {
-        choices.push({ id: `${b}.angle`, label: t("plot-rotation", { body: name }), unit: "°", values: q.angle, body: b });
+        if (theta[b]) choices.push({ id: `${b}.angle`, label: t("plot-angle", { body: name }), unit: "°", values: theta[b], body: b });
+        else choices.push({ id: `${b}.angle`, label: t("plot-rotation", { body: name }), unit: "°", values: q.angle, body: b });
         choices.push({ id: `${b}.omega`, label: t("plot-omega", { body: name }), unit: "rad/s", values: q.omega });
         choices.push({ id: `${b}.alpha`, label: t("plot-alpha", { body: name }), unit: "rad/s²", values: q.alpha });
       } else {
@@ -78,7 +88,7 @@ export class Plot {
     const chosen = this.choices.filter((c) => this.chosen.has(c.id));
     const w = svg.clientWidth || 600, h = svg.clientHeight || 190;
     svg.setAttribute("viewBox", `0 0 ${w} ${h}`);
-    const xs = this.sweep.coordinate;
+    const xs = this.xs;
     const x0 = Math.min(...xs), x1 = Math.max(...xs);
     const X = (x) => PAD.left + ((x - x0) / (x1 - x0 || 1)) * (w - PAD.left - PAD.right);
     const band = (h - PAD.top - PAD.bottom) / Math.max(chosen.length, 1);
@@ -110,6 +120,7 @@ export class Plot {
       this.series.push({ c, X, Y, dot, value });
     });
     this.deadPoints(X, svg, h);
+    this.inputLimits(X, svg, h);
     const base = h - PAD.bottom;
     el("line", { x1: PAD.left, x2: w - PAD.right, y1: base, y2: base, stroke: "#9aa5ad" }, svg);
     for (const x of ticks(x0, x1, Math.max(2, Math.floor((w - PAD.left - PAD.right) / 70)))) {   // the input axis
@@ -118,7 +129,10 @@ export class Plot {
       tk.textContent = num(x);
     }
     const axis = el("text", { x: w - PAD.right + 4, y: base + 14, "font-size": 10.5, fill: "#5f6b73" }, svg);
-    axis.textContent = this.t("plot-input", { unit: this.unit === "deg" ? "°" : "m" });
+    axis.textContent = this.unit === "s" ? "t (s)" : this.xlabel;
+    axis.setAttribute("text-anchor", "end");
+    axis.setAttribute("x", w - PAD.right);
+    axis.setAttribute("y", base + 28);
     this.cursorLine = el("line", { y1: PAD.top, y2: h - PAD.bottom, stroke: "#263238", "stroke-width": 1 }, svg);
     this.X = X;
     this.cursor(this.row || 0);
@@ -126,7 +140,7 @@ export class Plot {
 
   /** Limit positions of a body: where its ω changes sign (its angle is at an extreme). */
   limits(c, X, Y, svg) {
-    const omega = this.sweep.bodies[c.body].omega, xs = this.sweep.coordinate;
+    const omega = this.sweep.bodies[c.body].omega, xs = this.xs;
     for (let k = 1; k < omega.length; k++) {
       const a = omega[k - 1], b = omega[k];
       if (a === null || b === null || !(a * b < 0)) continue;
@@ -142,13 +156,22 @@ export class Plot {
   /** Where the sweep stops assembling (edges of its null rows): a dashed red line. */
   deadPoints(X, svg, h) {
     const ok = Object.values(this.sweep.bodies)[0].angle.map((v) => v !== null);
-    const xs = this.sweep.coordinate;
+    const xs = this.xs;
     for (let k = 1; k < ok.length; k++) {
       if (ok[k] === ok[k - 1]) continue;
       const x = ok[k] ? xs[k] : xs[k - 1];
       el("line", { x1: X(x), x2: X(x), y1: PAD.top, y2: h - PAD.bottom, stroke: "#c62828", "stroke-dasharray": "4 3" }, svg);
       const t = el("text", { x: X(x) + 3, y: PAD.top + 10, "font-size": 10, fill: "#c62828" }, svg);
       t.textContent = this.t("dead-point");
+    }
+  }
+
+  /** Where the input cannot go further and runs back (the sweep's `limits`): dotted lines. */
+  inputLimits(X, svg, h) {
+    for (const x of this.sweep.limits || []) {
+      const m = el("g", { class: "input-limit" }, svg);
+      el("line", { x1: X(x), x2: X(x), y1: PAD.top, y2: h - PAD.bottom, stroke: "#263238", "stroke-dasharray": "1 3" }, m);
+      el("title", {}, m).textContent = this.t("input-limit", { input: num(x) });
     }
   }
 
@@ -160,7 +183,7 @@ export class Plot {
   cursor(k) {
     this.row = k;
     if (!this.sweep || !this.cursorLine) return;
-    const x = this.X(this.sweep.coordinate[k]);
+    const x = this.X(this.xs[k]);
     this.cursorLine.setAttribute("x1", x);
     this.cursorLine.setAttribute("x2", x);
     for (const s of this.series) {

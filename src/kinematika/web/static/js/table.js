@@ -3,6 +3,7 @@
 // answers (centres, curvature, relative motion) are those of the last solve, greyed while
 // the slider is away from the position that solve was made at.
 import { show, shown, num } from "./svg.js";
+import { referenceLine } from "./angles.js";
 
 const LONG = 22;      // characters: a longer value (a 3D vector, a formula, a decomposition) wraps in its cell
 const LIVE = { velocity: "points", acceleration: "points", omega: "bodies", alpha: "bodies" };
@@ -38,9 +39,10 @@ export class Answers {
       const planar = typeof b.omega === "number" || typeof b.omega === "string";
       const a = `bodies.${attr(name)}`;
       const tip = line ? attr(t("angle-tip", { line: `${shown(line.from)}${shown(line.to)}` })) : "";
-      rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" data-key="${a}.angle" title="${tip}"></td>` +
-                `<td class="v" data-key="${a}.rotation" title="${attr(t("rotation-tip"))}"></td>` +
-                `<td class="v" data-key="${a}.omega"></td><td class="v" data-key="${a}.alpha"></td></tr>`);
+      const h = (key) => `data-h="${attr(t(key))}"`;          // its column's heading, for a narrow screen
+      rows.push(`<tr><td class="q">${esc(name)}</td><td class="v" data-key="${a}.angle" ${h("angle-h")} title="${tip}"></td>` +
+                `<td class="v" data-key="${a}.rotation" ${h("rotation-h")} title="${attr(t("rotation-tip"))}"></td>` +
+                `<td class="v" data-key="${a}.omega" ${h("omega-h")}></td><td class="v" data-key="${a}.alpha" ${h("alpha-h")}></td></tr>`);
       const rotation = sw ? sw.angle : null;
       const since = rotation && planar && rotation.map((x) => (x === null ? null : x - (rotation[0] ?? 0)));
       const angle = line && planar ? (since ? since.map((x) => (x === null ? null : round(line.angle + x))) : null) : null;
@@ -54,7 +56,7 @@ export class Answers {
       const p = solution.points[key];
       const label = names.length > 1 ? `${esc(key.split("@")[0])} <span class="where">(${names.map((n) => esc(n.split("@")[1])).join(", ")})</span>` : esc(key);
       rows.push(`<tr><td class="q">${label}</td>` + ["position", "velocity", "acceleration"].map(
-        (q) => `<td class="v kind-${q}" data-key="points.${attr(key)}.${q}"${q === "position" ? "" : ' colspan="2"'}></td>`).join("") + "</tr>");
+        (q) => `<td class="v kind-${q}" data-key="points.${attr(key)}.${q}" data-h="${attr(t(`${q}-h`))}"${q === "position" ? "" : ' colspan="2"'}></td>`).join("") + "</tr>");
       for (const q of ["position", "velocity", "acceleration"]) {
         this.cells.push({ key: `points.${key}.${q}`, fixed: p[q], source: sweep && sweep.points[key] && sweep.points[key][q] });
       }
@@ -71,6 +73,13 @@ export class Answers {
     this.cells.forEach((c, i) => { c.td = tds[i]; });
     this.solvedRow = 0;
     this.show(0);
+  }
+
+  /** No answers (a new model, not solved yet). */
+  clear() {
+    this.cells = [];
+    this.solution = null;
+    this.root.replaceChildren();
   }
 
   /** The sweep's series an answer follows, or null when only a solve gives it. */
@@ -115,24 +124,6 @@ function section(...heads) {
 }
 
 const round = (x) => Number(x.toFixed(9));
-
-/** A body's reference line, as the sweep plots measure it (`draw.plots.body_angle`): from
- * its fixed pivot (a point the frame carries there too), else its first point, to the first
- * other point drawn elsewhere (a rocker's O4 → B); its angle from the x axis,
- * counter-clockwise, in (−180°, 180°]. */
-function referenceLine(body, bodies) {
-  if (!body || body.frame) return null;
-  const pts = Object.entries(body.points);
-  if (pts.length < 2 || pts[0][1].length !== 2) return null;
-  const size = Math.max(...pts.map(([, q]) => Math.hypot(q[0] - pts[0][1][0], q[1] - pts[0][1][1]))) || 1;
-  const frame = Object.values(bodies || {}).find((b) => b.frame);
-  const at = (name, q) => frame && frame.points[name] && Math.hypot(frame.points[name][0] - q[0], frame.points[name][1] - q[1]) <= 1e-9 * size;
-  const [from, p] = pts.find(([name, q]) => at(name, q)) || pts[0];
-  const other = pts.find(([, q]) => Math.hypot(q[0] - p[0], q[1] - p[1]) > 1e-9 * size);
-  if (!other) return null;
-  const q = other[1];
-  return { from, to: other[0], angle: (Math.atan2(q[1] - p[1], q[0] - p[0]) * 180) / Math.PI };
-}
 
 /** Material points that move alike over the whole sweep, shown once: [first key, keys]. */
 function groups(points, sweep) {

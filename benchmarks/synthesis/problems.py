@@ -1,0 +1,63 @@
+"""The four classical four-bar path-generation problems, their bounds, and the best errors
+published for them (the sum of squared distances between the targets and the coupler point).
+
+The papers' variables are those of `four_bar.yaml`: the crank's pivot (x0, y0), the ground
+line's angle theta0 (radians), the links r1 (ground), r2 (crank), r3 (coupler), r4 (rocker),
+and the coupler point (rcx, rcy) in the coupler's frame. Every problem requires a Grashof
+crank-rocker (the crank the shortest link); free-timing problems require the targets in
+order along the motion.
+
+Sources (the problems as every evolutionary-synthesis paper since Kunjur and Krishnamurty
+states them; the values compiled in kinematika's issue 32):
+
+- A. Kunjur, S. Krishnamurty, "Genetic algorithms in mechanism synthesis", Journal of
+  Applied Mechanisms and Robotics 4(2), 1997 — the 18-point closed curve;
+- J. A. Cabrera, A. Simon, M. Prado, "Optimal synthesis of mechanisms with genetic
+  algorithms", Mechanism and Machine Theory 37 (2002) — the arc with prescribed timing,
+  the closed curve, the straight line;
+- S. K. Acharyya, M. Mandal, "Performance of EAs for four-bar linkage synthesis", Mechanism
+  and Machine Theory 44 (2009) — the straight line, the ellipse;
+- W.-Y. Lin, "A GA–DE hybrid evolutionary algorithm for path synthesis of four-bar linkage",
+  Mechanism and Machine Theory 45 (2010) — the lowest errors of the four;
+- compiled again by S. Sleesongsom, S. Bureerat, Computational Intelligence and
+  Neuroscience 2018, 5462563, and by Appl. Sci. 12 (2022) 7368.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+TURN = 2 * math.pi
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A benchmark: its target file, the varied parameters' bounds, the parameters held at
+    the model's values, its timing and requirements, and the best published error."""
+
+    name: str
+    file: str
+    bounds: dict[str, tuple[float, float]]
+    published: float
+    source: str
+    timing: str = ""
+    requires: tuple[str, ...] = ("crank-rocker",)
+    fixed: dict[str, float] = field(default_factory=dict)
+
+
+def _box(link: tuple[float, float], other: tuple[float, float]) -> dict[str, tuple[float, float]]:
+    return {"x0": other, "y0": other, "theta0": (0.0, TURN), "r1": link, "r2": link, "r3": link, "r4": link,
+            "rcx": other, "rcy": other}
+
+
+PROBLEMS = [
+    Problem("Line6", "line6.csv", _box((5.0, 60.0), (-60.0, 60.0)), 4e-12,
+            "W.-Y. Lin 2010; Acharyya & Mandal's DE 0.015", requires=("crank-rocker", "ordered")),
+    Problem("Arc5", "arc5.csv", {k: v for k, v in _box((0.0, 50.0), (-50.0, 50.0)).items()
+                                 if k not in ("x0", "y0", "theta0")}, 1.3e-6,
+            "W.-Y. Lin 2010; Cabrera et al. 1.8e-6", timing="j1=30", fixed={"x0": 0.0, "y0": 0.0, "theta0": 0.0}),
+    Problem("Closed18", "closed18.csv", _box((0.0, 50.0), (-50.0, 50.0)), 0.016,
+            "W.-Y. Lin 2010; Cabrera et al. 0.034, Kunjur & Krishnamurty 0.066", timing="j1"),
+    Problem("Ellipse10", "ellipse10.csv", _box((0.0, 80.0), (-80.0, 80.0)), 4.0e-4, "W.-Y. Lin 2010",
+            requires=("crank-rocker", "ordered")),
+]

@@ -1,0 +1,232 @@
+"""The Data section: everything the solution uses, stated before it, as a statement states
+it (issue 30: a student redoes the whole solution from the page alone).
+
+- the units, or that the data are symbols; the sign convention of angular quantities;
+- what the model says of its data in the reader's language (`names.LANG.data`: the
+  geometry it chose where the notes' figure is lost, an assumption);
+- each parameter: its symbol, what it is (`names.LANG.parameters`) and its value with
+  its unit, the unit read off where the model uses it (a length in a point's coordinate
+  or a radius, an angle under `deg` or a cosine, a rate in an ω driver …);
+- each point: what it is and where it is (its coordinates, written in the parameters
+  when they are formulas: A = (ρ/sin β, 0) = (0.2, 0) m), or that it is placed by
+  construction (the Position section);
+- each body's shapes: a circle's centre and radius, a line's point and direction;
+- the given motion: each driver's value (and its acceleration when accelerations are
+  explained).
+
+Every value is the model's own, evaluated; nothing is solved here.
+"""
+from __future__ import annotations
+
+import ast
+from typing import Any, Optional
+
+from ..model.model import Circle, Disc, Line, Plane
+from .context import Ctx
+from .document import Inline, Name, Described, Section, Table, Told, Value, msg, point
+from .planar import driver_msg
+
+# the kinds of quantity a parameter may be, by where the model uses it
+DRIVER_UNIT = {("omega", "v"): "rate", ("omega", "a"): "rate2", ("velocity", "v"): "speed",
+               ("velocity", "a"): "accel"}
+
+
+def data_section(ctx: Ctx, length_unit: str, accelerations: bool) -> Section:
+    """The Data section of the explanation of `ctx`'s solution."""
+    sec = Section(msg("sec.data"))
+    sec.add(msg("data.symbolic" if ctx.symbolic else "data.numeric", unit=length_unit))
+    sec.add(msg("data.planar" if ctx.planar else "data.spatial"))
+    sec.add(Told("data"))
+    rows = parameter_rows(ctx)
+    if rows:
+        sec.add(Table([msg("col.symbol"), msg("col.what"), msg("col.value")], rows))
+    sec.add(Table([msg("col.point"), msg("col.what"), msg("col.position")], point_rows(ctx)))
+    rows = shape_rows(ctx)
+    if rows:
+        sec.add(Table([msg("col.body"), msg("col.shape"), msg("col.given")], rows))
+    given = [driver_msg(ctx, d, "v") for d in ctx.model.drivers]
+    if accelerations:
+        given += [driver_msg(ctx, d, "a") for d in ctx.model.drivers if d.accel is not None]
+    sec.add(*given)
+    return sec
+
+
+# parameters ---------------------------------------------------------------------------------
+def parameter_rows(ctx: Ctx) -> list:
+    """[symbol, what it is, value] of each parameter: a symbolic one is a symbol (its sample
+    value is given under each figure)."""
+    kinds = parameter_kinds(ctx.model)
+    rows = []
+    for name, p in ctx.model.parameters.items():
+        if p.value is None or (ctx.symbolic and name not in ctx.inst.env):
+            value: Any = msg("data.symbol")
+        else:
+            value = parameter_value(ctx, name, p.value, kinds.get(name, ""))
+        rows.append([Name(name, "param"), Described("parameter", name), value])
+    return rows
+
+
+def parameter_value(ctx: Ctx, name: str, expr, kind: str) -> Value:
+    """The parameter's value with its unit; an angle given in degrees in degrees."""
+    x = ctx.inst.env.get(name)
+    if x is None:
+        from ..expressions import evaluate
+
+        x = evaluate(expr, ctx.inst.env, ctx.inst.backend)
+    if kind == "angle" and "deg" in expr.calls():
+        import math
+
+        return Value(round(math.degrees(ctx.num(x)), 10), "deg")
+    return Value(ctx.clean(x, kind or ""), kind if kind in ("len", "speed", "accel", "rate", "rate2") else "")
+
+
+def parameter_kinds(model) -> dict[str, str]:
+    """What each parameter is a quantity of, read off where the model uses it alone (times a
+    number): a length (a point's coordinate, a distance, a radius), an angle (under `deg`, in a
+    cosine, a construction's angle), a rate, a speed … (a driver's value). A parameter used
+    as two kinds, or only in products with others (r·w), is left without a unit."""
+    found: dict[str, set] = {}
+
+    def note(expr, kind: str) -> None:
+        if expr is None:
+            return
+        for n in _alone(expr):
+            found.setdefault(n, set()).add(kind)
+        for n in _in_angles(expr):
+            found.setdefault(n, set()).add("angle")
+
+    for name, p in model.parameters.items():
+        if p.value is not None and "deg" in p.value.calls():
+            found.setdefault(name, set()).add("angle")
+    for spec in model.points.values():
+        for expr, kind in _point_exprs(spec):
+            note(expr, kind)
+    for b in model.bodies.values():
+        for s in b.shapes:
+            if isinstance(s, (Circle, Disc)):
+                note(s.radius, "len")
+                for e in s.center:
+                    note(e, "len")
+    for d in model.drivers:
+        if d.kind in ("omega", "velocity"):
+            for level, given in (("v", d.value), ("a", d.accel)):
+                for e in (given if isinstance(given, tuple) else (given,)):
+                    note(e, DRIVER_UNIT[(d.kind, level)])
+    return {n: next(iter(k)) for n, k in found.items() if len(k) == 1}
+
+
+def _point_exprs(spec) -> list[tuple]:
+    """A point's expressions with the kind each is: coordinates and distances are lengths,
+    a construction's angle an angle."""
+    if isinstance(spec, tuple):
+        return [(e, "len") for e in spec]
+    out = []
+    for field_, kind in (("distance", "len"), ("angle", "angle"), ("radius", "len"), ("at", "len"),
+                         ("radii", "len"), ("near", "len")):
+        value = getattr(spec, field_, None)
+        for e in (value if isinstance(value, tuple) else (value,)):
+            if e is not None and hasattr(e, "tree"):
+                out.append((e, kind))
+    return out
+
+
+def _alone(expr) -> set[str]:
+    """The parameter an expression is, up to a number's factor or sign (`r`, `3*r`, `-w`);
+    empty for anything else."""
+    node = expr.tree
+    while True:
+        if isinstance(node, ast.UnaryOp):
+            node = node.operand
+        elif isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Mult, ast.Div)):
+            if isinstance(node.left, ast.Constant):
+                node = node.right
+            elif isinstance(node.right, ast.Constant):
+                node = node.left
+            else:
+                return set()
+        else:
+            break
+    return {node.id} if isinstance(node, ast.Name) else set()
+
+
+def _in_angles(expr) -> set[str]:
+    """The parameters a trigonometric function or `deg` takes (angles)."""
+    out: set[str] = set()
+    for node in ast.walk(expr.tree):
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in \
+                ("cos", "sin", "tan", "deg"):
+            for arg in node.args:
+                out |= {n.id for n in ast.walk(arg) if isinstance(n, ast.Name)}
+    return out
+
+
+# points and shapes ----------------------------------------------------------------------------
+def point_rows(ctx: Ctx) -> list:
+    """[point, what it is, where]: a point given by coordinates at them (written in the
+    parameters when they are formulas), a constructed one placed in the Position section."""
+    rows = []
+    for name, spec in ctx.model.points.items():
+        if isinstance(spec, tuple):
+            where: Any = _coordinates(ctx, spec, ctx.pos(name))
+        else:
+            where = msg("data.constructed")
+        rows.append([point(name), Described("point", name), where])
+    return rows
+
+
+def _coordinates(ctx: Ctx, exprs: tuple, value: tuple) -> Any:
+    """(x, y) as given: the formula in the parameters, then its value (A = (ρ/sin β, 0) =
+    (0.2, 0) m); the value alone when the model writes numbers."""
+    shown = Value(ctx.clean(value, "len"), "len")
+    formula = _formula(ctx, exprs)
+    if formula is None or ctx.symbolic:
+        return shown
+    return Inline([Value(formula, ""), " = ", shown])
+
+
+def _formula(ctx: Ctx, exprs: tuple) -> Optional[tuple]:
+    """The expressions in the parameters' symbols (a numeric model's formulas), or None when
+    they are plain numbers."""
+    names = set().union(*(e.names() for e in exprs)) & set(ctx.model.parameters)
+    if not names:
+        return None
+    import sympy
+
+    from ..algebra.backend import Symbolic
+    from ..expressions import evaluate
+
+    env = {n: sympy.Symbol(n, positive=True) for n in ctx.model.parameters}
+    return tuple(evaluate(e, env, Symbolic()) for e in exprs)
+
+
+def shape_rows(ctx: Ctx) -> list:
+    """[body, shape, what defines it] of every shape: a circle's centre and radius, a line's
+    point and direction (a plane's, a disc's axis in space)."""
+    rows = []
+    for name, b in ctx.model.bodies.items():
+        for model_shape, shape in zip(b.shapes, ctx.inst.shapes.get(name, [])):
+            described = _shape(ctx, model_shape, shape)
+            if described is not None:
+                rows.append([Name(name, "body", bare=True), msg(f"shape.{type(model_shape).__name__.lower()}"),
+                             described])
+    return rows
+
+
+def _shape(ctx: Ctx, spec, shape) -> Any:
+    if isinstance(spec, (Circle, Disc)):
+        centre = point(spec.center_point) if spec.center_point else Value(ctx.clean(shape.center, "len"), "len")
+        radius = Value(ctx.clean(shape.radius, "len"), "len")
+        if not ctx.symbolic and spec.radius.names() & set(ctx.model.parameters):
+            radius = Inline([Value(_formula(ctx, (spec.radius,))[0], ""), " = ", radius])
+        return msg("data.circle", centre=centre, radius=radius)
+    if isinstance(spec, (Line, Plane)):
+        through_point = getattr(spec, "through_point", None)
+        through = point(through_point) if through_point else Value(ctx.clean(shape.through, "len"), "len")
+        d = getattr(spec, "direction", None) or getattr(spec, "normal", None)
+        direction: Any = Value(ctx.clean(tuple(getattr(shape, "direction", None) or shape.normal), ""), "")
+        if d is not None and isinstance(d, tuple) and not ctx.symbolic:
+            formula = _formula(ctx, d)
+            if formula is not None:
+                direction = Value(formula, "")
+        return msg("data.line" if isinstance(spec, Line) else "data.plane", through=through, direction=direction)
+    return None

@@ -1,0 +1,153 @@
+"""Explanations a teacher hands out as they are (issue 30): the notes' worked examples, in
+every language, speak of mechanics and not of the program, name no colour where the text
+is plain (Markdown), state every datum in their Data section and derive every asked
+quantity by an equation before the answers."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from kinematika.explain import render
+from kinematika.explain.catalogue import LANGS
+
+from .helpers import WORKED, explained
+from .test_text import plain_text
+
+# the program, as a student must never read it: the solver, in the four languages
+SOLVER = re.compile(r"(?i)\b(solver|resolutor|resolvedor|solucionador|ebazle\w*|programa|program)\b")
+# colours, which plain text (Markdown) does not show
+COLOURS = re.compile(r"(?i)\b(red|blue|black|green|grey|gray|rojo|roja|azul|azules|negro|verde|vermell|"
+                     r"blau|blava|blaves|blaus|negre|verd|gorri\w*|urdin\w*|beltz\w*|berde\w*)\b")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", WORKED)
+def test_no_explanation_mentions_the_solver(name, lang):
+    _, doc = explained(name)
+    for fmt in ("md", "html"):
+        text = plain_text(render(doc, lang, fmt, drawings=False), fmt)
+        found = SOLVER.search(text)
+        assert found is None, (name, lang, fmt, text[max(0, found.start() - 80):found.end() + 40])
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", WORKED)
+def test_no_markdown_mentions_colours(name, lang, monkeypatch):
+    from kinematika.explain.document import Drawing
+
+    monkeypatch.setattr(Drawing, "svg", lambda self, lang: "<svg/>")     # the captions, not the drawings
+    _, doc = explained(name)
+    text = plain_text(render(doc, lang, "md", drawings=True), "md")
+    found = COLOURS.search(text)
+    assert found is None, (name, lang, text[max(0, found.start() - 80):found.end() + 40])
+
+
+@pytest.mark.parametrize("name,lang,wrong,right", [
+    ("seed_c5_e1_cavity", "ca", "*rodes* rodola", "*rodes* rodolen"),
+    ("seed_c5_e1_cavity", "es", "*ruedas* rueda ", "*ruedas* ruedan"),
+])
+def test_a_verb_agrees_with_a_plural_body(name, lang, wrong, right):
+    """Catalan and Spanish: a plural body's name (les rodes) takes a plural verb."""
+    _, doc = explained(name)
+    text = render(doc, lang, "md", drawings=False)
+    assert wrong not in text and right in text
+
+
+def test_count_reads_plural_names():
+    from kinematika.explain.catalogue import count
+
+    assert [count(n) for n in ("les rodes", "el plat i els pedals", "la roda", "el portador", "los dientes",
+                               "las aspas", "el bloc")] == ["many", "many", "one", "one", "many", "many", "one"]
+
+
+def _data_text(doc, lang: str = "en") -> str:
+    """The Data section as a reader reads it (Markdown), up to the next section."""
+    text = render(doc, lang, "md", drawings=False)
+    start = text.index("\n## ")
+    return text[start:text.index("\n## ", start + 1)]
+
+
+def _number(x: float) -> str:
+    """A number as the explanation writes it in English: at most four significant digits."""
+    return f"{float(x):.4g}".replace("-", "−")
+
+
+@pytest.mark.parametrize("name", WORKED)
+def test_every_datum_is_stated_in_the_data_section(name):
+    """Read off the model file itself (not the explanation's code): every numeric parameter's
+    value, every point given by plain numbers, every driver's value and every circle's
+    radius appears in the Data section, with its unit where it has one; a parameter left a
+    symbol appears as its symbol."""
+    import yaml
+
+    from kinematika.explain.render.names import unicode_name
+
+    from .helpers import EXAMPLES
+
+    raw = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8"))
+    sol, doc = explained(name)
+    data = _data_text(doc)
+    notation = raw.get("notation") or {}
+    for pname, value in (raw.get("parameters") or {}).items():
+        if value is None:
+            spelt = notation.get(pname, pname)
+            spelt = spelt if isinstance(spelt, str) else spelt.get("en", pname)
+            assert unicode_name(spelt) in data, (name, pname)
+        elif isinstance(value, (int, float)):
+            assert _number(value) in data, (name, pname, value)
+        elif isinstance(value, str) and value.startswith("deg("):
+            assert _number(float(value[4:-1])) + "°" in data, (name, pname, value)
+    for pname, where in raw["points"].items():
+        if isinstance(where, list) and all(isinstance(c, (int, float)) for c in where):
+            written = "(" + ", ".join(_number(c) for c in where) + ")"
+            assert f"| {pname} |" in data and written in data, (name, pname, written)
+    for d in raw.get("drivers") or []:
+        for key in ("value", "alpha", "acceleration"):
+            given = d.get(key)
+            if isinstance(given, (int, float)):
+                assert _number(given) in data, (name, d, key)
+    for body, spec in raw["bodies"].items():
+        circle = spec.get("circle") if isinstance(spec, dict) else None
+        if circle is not None:
+            radius = circle["radius"]
+            if isinstance(radius, (int, float)):
+                shown = _number(radius) + " m"
+            elif radius in (raw.get("parameters") or {}):
+                spelt = notation.get(radius, radius)
+                shown = unicode_name(spelt if isinstance(spelt, str) else spelt.get("en", radius))
+            else:
+                shown = str(radius).replace("*", "·")
+            assert shown in data, (name, body, shown)
+
+
+def test_the_tricycles_spin_is_derived_as_the_notes_give_it():
+    """C5-2.1: with the steering at 45°, the chassis turns about I on the rear axle line, L to
+    the left of M, at ω = v₀/(√2 L); the left rear wheel's centre, L − s from I, moves at
+    ω (L − s) = r φ̇, so φ̇ = v₀ (L − s)/(√2 L r) (worked here by hand)."""
+    import sympy
+
+
+    sol, doc = explained("seed_c5_2_1_tricycle")
+    L, s, v0, r = (sympy.Symbol(n, positive=True) for n in ("L", "s", "v0", "r"))
+    by_hand = v0 * (L - s) / (sympy.sqrt(2) * L * r)
+    spins = [d for d in doc.derived() if d.kind == "spin"]
+    assert len(spins) == 1
+    env = {str(k): k for k in getattr(spins[0].value.value, "free_symbols", set())}
+    got = spins[0].value.value.subs({env[n]: sym for n, sym in zip(("L", "s", "v0", "r"), (L, s, v0, r)) if n in env})
+    assert sympy.simplify(got - by_hand) == 0
+    answers = render(doc, "en", "md", drawings=False).split("## Answers")[1]
+    assert "φ̇" in answers and "φ̇ = v_RL / *r*" not in answers
+
+
+def test_the_articulated_vehicles_wheel_spin_is_the_notes():
+    """C5-2.2: S1 translates at rω, so O does; S2 (at 45°) turns about I on its axle line at
+    ω_S2 = rω/(√2 a) (|OI| = √2 a); its inner wheel's centre W4, a/2 from the axle's midpoint
+    towards I, is a/2 from I and moves at ω_S2 a/2 = rω/(2√2) = r ω′: ω′ = ω/(2√2)."""
+    import sympy
+
+    _, doc = explained("seed_c5_2_2_articulated")
+    spins = [d for d in doc.derived() if d.kind == "spin"]
+    assert len(spins) == 1
+    w = next(s for s in spins[0].value.value.free_symbols if s.name == "w")
+    assert sympy.simplify(spins[0].value.value - w / (2 * sympy.sqrt(2))) == 0
