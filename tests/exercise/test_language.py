@@ -32,7 +32,7 @@ def words(path: Path) -> set[str]:
 
 
 def catalogue_words(lang: str) -> set[str]:
-    return words(SRC / "exercise" / "locales" / f"{lang}.ftl") | words(SRC / "explain" / "locales" / f"{lang}.ftl")
+    return set().union(*(words(SRC / part / "locales" / f"{lang}.ftl") for part in ("exercise", "explain", "errors")))
 
 
 def shown_text(page: str) -> str:

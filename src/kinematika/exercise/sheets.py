@@ -190,13 +190,15 @@ def _contents(exercise: Any, given: dict[int, list[Student]], lang: str) -> str:
             f'<table class="contents">{head}{"".join(rows)}</table></section>\n')
 
 
-_PART = re.compile(r"(?=<h2\b)")
+_PART = re.compile(r"(?=<h2\b)|(?=<figure\b)|(?<=</figure>)")     # sections, and a figure apart
 _OWN_IDS = re.compile(r"v\d{3}-")
 
 
 def split_common(solutions: dict[int, str]) -> tuple[str, dict[int, str]]:
-    """The parts (from one `<h2>` to the next) that are the same in every variant's solution,
-    once (with the solution's style), and each variant's solution without them."""
+    """The parts (from one `<h2>` to the next, a figure a part of its own) that are the same in
+    every variant's solution, once (with the solution's style), and each variant's solution
+    without them (a section whose text is shared but whose figure is drawn at the variant's
+    numbers keeps the figure in the variant's pages)."""
     if len(solutions) < 2:
         return "", solutions
     parts = {n: _parts(s) for n, s in solutions.items()}
@@ -215,7 +217,7 @@ def split_common(solutions: dict[int, str]) -> tuple[str, dict[int, str]]:
 
 def _parts(solution: str) -> tuple[str, list[str], str]:
     """A solution fragment as (its style, its parts: the text before the first `<h2>`, then
-    one per `<h2>`, and its closing tag)."""
+    one per `<h2>` with each figure apart, and its closing tag)."""
     m = re.match(r'<div class="kinematika-solution">(<style>.*?</style>)(.*)(</div>)\s*$', solution, re.S)
     if m is None:
         return "", [solution], ""
