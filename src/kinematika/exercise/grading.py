@@ -31,7 +31,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Optional
 
-from ..errors import KinematikaError, Names, Said
+from ..errors import KinematikaError, Names, Num, Said
 from .build import Exercise, Variant
 from .key import Row
 from .mistakes import Mistaken
@@ -327,7 +327,8 @@ def summary_text(result: dict[str, Any], answers: str = "answers.csv") -> str:
     ws, wv = max([10, len(s_), *(len(k) for k in result["students"])]), max(7, len(v))
     lines.append(f"{s_:<{ws}} {v:>{wv}}  {sc}")
     for student, data in result["students"].items():
-        lines.append(f"{student:<{ws}} {data['variant']:>{wv}}  {100 * data['score']:5.1f} %")
+        score = Said("grade-score", score=Num(100 * data["score"], ".1f")).said()
+        lines.append(f"{student:<{ws}} {data['variant']:>{wv}}  {score:>7}")
     if result["unknown"]:
         lines += ["", Said("students-unknown", students=Names(result["unknown"], None)).said()]
     lines += [not_read(answers, u) for u in result["unreadable"]]

@@ -590,6 +590,7 @@ grade-column = { $column ->
         [variant] variant
        *[score] nota
     }
+grade-score = { $score } %
 exercise-not-drawn-rounding = descartada: { $data }: arrodonir les dades a 3 xifres canvia { $question } un { $gap } %
 exercise-not-drawn-mistake = descartada: { $data }: l’error { $kind } dona { $question } a menys del { $gap } % de la resposta correcta
 exercise-narrowed = variant { $number }: el marge de { $question } s’estreny al { $tolerance } % per distingir l’error { $kind } (que se n’aparta un { $gap } %)

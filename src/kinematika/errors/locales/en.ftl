@@ -515,6 +515,7 @@ grade-column = { $column ->
         [variant] variant
        *[score] score
     }
+grade-score = { $score } %
 exercise-not-drawn-rounding = not drawn: { $data }: rounding the data to 3 figures moves { $question } by { $gap } %
 exercise-not-drawn-mistake = not drawn: { $data }: { $kind } gives { $question } within { $gap } % of the right answer
 exercise-narrowed = variant { $number }: the margin of { $question } narrowed to { $tolerance } % to tell { $kind } apart (it gives { $gap } % off)

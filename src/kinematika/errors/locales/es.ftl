@@ -590,6 +590,7 @@ grade-column = { $column ->
         [variant] variante
        *[score] nota
     }
+grade-score = { $score } %
 exercise-not-drawn-rounding = descartada: { $data }: redondear los datos a 3 cifras cambia { $question } un { $gap } %
 exercise-not-drawn-mistake = descartada: { $data }: el error { $kind } da { $question } a menos del { $gap } % de la respuesta correcta
 exercise-narrowed = variante { $number }: el margen de { $question } se estrecha al { $tolerance } % para distinguir el error { $kind } (que se aparta un { $gap } %)

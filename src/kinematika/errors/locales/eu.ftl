@@ -593,6 +593,7 @@ grade-column = { $column ->
         [variant] aldaera
        *[score] nota
     }
+grade-score = %{ $score }
 exercise-not-drawn-rounding = baztertua: { $data }: datuak 3 zifratara biribiltzean { $question } %{ $gap } aldatzen da
 exercise-not-drawn-mistake = baztertua: { $data }: { $kind } akatsarekin { $question } erantzun zuzenetik %{ $gap } baino gutxiagora dago
 exercise-narrowed = { $number }. aldaera: { $question } galderaren tartea %{ $tolerance } arte estutu da { $kind } akatsa bereizteko (akats horrek %{ $gap } aldentzen du)
