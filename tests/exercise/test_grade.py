@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 import random
+import re
 
 import pytest
 
@@ -192,6 +193,38 @@ def test_a_row_that_cannot_be_read_is_listed_with_its_line_and_the_others_are_gr
     assert [u["line"] for u in result["unreadable"]] == [3]
     assert why in result["unreadable"][0]["error"]
     assert result["students"]["x"]["answers"][0]["correct"] and result["students"]["y"]["answers"][0]["correct"]
+
+
+# the same rows, as a Basque and a Catalan teacher read them (the words written here by hand)
+SAID = {"eu": ["ikaslerik gabeko errenkada", "bi aldiz erantzuten du", "lehen aldiz 2. lerroan", "6 eremu",
+               "ez da irakurri", "goiburuak 4 ditu"],
+        "ca": ["una fila sense estudiant", "respon dues vegades", "a la línia 2", "6 camps", "no llegida",
+               "la capçalera en té 4"]}
+
+
+@pytest.mark.parametrize("lang", ["eu", "ca"])
+def test_the_rows_not_read_and_the_summary_are_said_in_the_teachers_language(p_pair30, tmp_path, lang):
+    from kinematika.errors import speaking
+    from kinematika.exercise.grading import summary_text
+
+    v = p_pair30.variants[0]
+    answers = tmp_path / "answers.csv"
+    answers.write_text(f"student,variant,question,value\nx,1,q1,{v.rows[0].value!r}\n,1,q1,2\nx,1,q1,3\n"
+                       "x,1,q1,1,2,3\n", encoding="utf-8")
+    with speaking(lang):
+        result = grade(p_pair30, answers)
+        text = summary_text(result, "answers.csv")
+    errors = " ".join(u["error"] for u in result["unreadable"])
+    assert [u["line"] for u in result["unreadable"]] == [3, 4, 5]
+    for words in SAID[lang]:
+        assert words in text, (words, text)
+    for english in ("without", "twice", "fields", "not read", "student    "):
+        assert english not in text and english not in errors
+    heading = {"eu": "ikaslea", "ca": "estudiant"}[lang]
+    assert re.search(rf"^{heading} +{dict(eu='aldaera', ca='variant')[lang]} +nota$", text, re.M)
+    # q1 right, one of the P pair's six questions, each the same weight: 1/6 = 16,7 %
+    assert len({r.question.split(".")[0] for r in v.rows}) == 6
+    assert re.search(r"^x +1 +" + {"eu": r"%16,7", "ca": r"16,7 %"}[lang] + "$", text, re.M), text
 
 
 def test_blank_and_unreadable_answers_keep_what_was_typed(p_pair30, tmp_path):
