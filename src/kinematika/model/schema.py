@@ -317,6 +317,7 @@ class ExerciseSpec(Strict):
     length: str = "m"
     ask: Optional[list[StrictInt]] = None
     tolerance: Union[StrictInt, StrictFloat] = 0.01
+    weights: Optional[list[Union[StrictInt, StrictFloat]]] = None
     dimensions: list[DimensionSpec] = Field(default_factory=list)
 class LanguageNames(Strict):
     """How a model's things are called in one language (`names.LANG`): explanations and
