@@ -114,7 +114,15 @@ class VelocityLevel(Level):
     def point(self, body: str, p: tuple) -> tuple:
         """v = v₀ + ω × (P − ref)."""
         r = sub(p, self.ref)
-        return add(self.u.trans(body), self.space.cross(self.u.rot(body), r))
+        o = self.u.offset.get(body) if self.space.dim == 2 and type(self.u) is Unknowns else None
+        if o is None:
+            return add(self.u.trans(body), self.space.cross(self.u.rot(body), r))
+        # a moving body in the plane: the same linear forms, written out (the terms in the
+        # order, and the constants of the type, that the products above give)
+        rx, ry = r
+        x = Lin({o + 1: 1}) if _is_zero(ry) else Lin({o + 1: 1, o: -1 * ry}, 0 + 0 * ry)
+        y = Lin({o + 2: 1}) if _is_zero(rx) else Lin({o + 2: 1, o: 1 * rx}, 0 + 0 * rx)
+        return (x, y)
 
 
 class AccelerationLevel(Level):
@@ -130,3 +138,8 @@ class AccelerationLevel(Level):
         w = self.w(body)
         centripetal = self.terms.normal_part(self.space.cross(w, self.space.cross(w, r)))
         return add(add(self.u.trans(body), self.space.cross(self.u.rot(body), r)), centripetal)
+
+
+def _is_zero(k: Any) -> bool:
+    """A factor that `Lin.__mul__` turns into the empty form (a plain zero number)."""
+    return isinstance(k, (int, float)) and k == 0

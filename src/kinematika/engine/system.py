@@ -96,12 +96,24 @@ class InstantSolver:
             self.analysis = analyse_sparse(self.a_num, self.is_driver, translation, inst.scale,
                                            self.labels, self.wheres, body_of, self._restating)
             return
-        a, self.b_v = self.matrix(rows_v)
-        self.a_sym = a
-        self.a_num = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), u.n)
+        if inst.symbolic:
+            a, self.b_v = self.matrix(rows_v)
+            self.a_sym = a
+            self.a_num = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), u.n)
+        else:                       # numbers: the matrix filled from the rows' terms at once
+            self.a_sym, self.b_v, self.a_num = None, [-r.lin.const for r in rows_v], self._numeric(rows_v)
         self.analysis = analyse(self.a_num, self.is_driver, translation, inst.scale, self.labels,
                                 self.wheres, body_of, want_blocks=inst.symbolic,
                                 restating=self._restating)
+
+    def _numeric(self, rows: list[Row]) -> np.ndarray:
+        """A of a numeric instance as floats, the entries the rows' terms give (others 0)."""
+        a = np.zeros((len(rows), self.unknowns.n))
+        num = self.inst.num
+        for i, row in enumerate(rows):
+            for col, coef in row.lin.terms.items():
+                a[i, col] = num(coef)
+        return a
 
     def _restating(self) -> np.ndarray:
         """The driver rows that restate what a joint between the same two bodies fixes in
