@@ -233,7 +233,7 @@ def test_the_fast_options_are_the_typer_commands_options():
     from kinematika.cli import app, fast_options, run as commands
 
     group = typer.main.get_command(app)
-    assert set(fast_options.OPTIONS) == {"solve", "centres", "sweep"}
+    assert set(fast_options.OPTIONS) == {"solve", "centres", "sweep", "simulate"}
     for name, table in fast_options.OPTIONS.items():
         command = group.commands[name]
         body = inspect.signature(getattr(commands, f"{name}_command")).parameters
@@ -289,6 +289,8 @@ def test_an_integer_option_bounded_on_one_side():
     ["sweep", "a.yaml", "--steps", "0"], ["sweep", "a.yaml", "--steps", "-3"], ["sweep", "a.yaml", "--steps", "10000001"],
     ["sweep", "a.yaml", "--by", "1_0"], ["sweep", "a.yaml", "--by"], ["sweep", "a.yaml", "--json=1"],
     ["draw", "a.yaml", "-o", "x.png"], ["sweep", "a.yaml", "--csv", ""], [],
+    ["simulate", "a.yaml", "--steps", "0"], ["simulate", "a.yaml", "--time", "1e"],
+    ["simulate", "a.yaml", "--set", "v=3"], ["simulate", "a.yaml", "--lang", "eu"],
 ])
 def test_the_fast_path_leaves_anything_unusual_to_typer(argv):
     assert fast.parse(argv) is None
@@ -312,7 +314,12 @@ def _fast(*args: str) -> subprocess.CompletedProcess:
     ["sweep", "{ex}/rssr_spatial_four_bar.yaml", "--steps=6", "--by", "-90", "--json"],
     ["sweep", "{ex}/four_bar.yaml", "--steps", "8"],
     ["solve", "{ex}/missing.yaml", "--json"],
-], ids=["solve-json", "solve", "centres", "sweep-json", "sweep-3d", "summary", "missing"])
+    ["simulate", "{ex}/tractor_trailer_turning.yaml", "--time", "2", "--steps", "4", "--json"],
+    ["simulate", "{ex}/tractor_trailer_turning.yaml", "--time=2", "--steps", "4"],
+    ["simulate", "{ex}/tractor_trailer.yaml", "--time", "5", "--steps", "5", "--json"],
+    ["simulate", "{ex}/tractor_trailer.yaml", "--time", "-1"],
+], ids=["solve-json", "solve", "centres", "sweep-json", "sweep-3d", "summary", "missing", "simulate-json",
+        "simulate", "simulate-stopped", "simulate-negative-time"])
 def test_the_fast_path_prints_what_typer_prints(args):
     from typer.testing import CliRunner
 

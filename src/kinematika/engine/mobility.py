@@ -55,7 +55,7 @@ class Diagnosis:
     rows' rank takes an SVD of its own, which a motion solved instant after instant never
     reads: it asks only for the condition number)."""
 
-    __slots__ = ("n", "condition_number", "_dof", "_conditions", "_ranks")
+    __slots__ = ("_conditions", "_dof", "_ranks", "condition_number", "n")
 
     def __init__(self, n: int, dof: Optional[int] = None, conditions: Optional[int] = None,
                  condition_number: float = math.inf, ranks: Optional[Callable[[], tuple[int, int]]] = None) -> None:
