@@ -376,6 +376,28 @@ def test_the_one_pass_yaml_reader_gives_what_yaml_load_gives(text):
         assert json.dumps(tree, default=str) == json.dumps(expected, default=str)
 
 
+NUMBER_TEXTS = ["0", "-0", "+7", "42", "007", "08", "0o17", "0x1f", "0b101", "1_000", "-1_0.5", "4.", "-4.50",
+                "+.5", ".5", "-.5", "1e5", "1.0e5", "1.0e+5", "1.0E-5", "00.5", "-0.0", "+0.", "12:30", "1:30.5",
+                "1.5.2", "9" * 30, "-" + "9" * 30 + ".25", "1" * 400 + ".0", ".inf", "-.Inf", ".nan", "1.5x", "'4.0'",
+                '"7"', "0.1000000000000000055511151231257827", "1.0e999", "-" + "1" * 400 + ".5"]
+
+
+@pytest.mark.parametrize("number", NUMBER_TEXTS)
+def test_the_one_pass_reader_reads_numbers_as_yaml_load_does(number):
+    """Plain decimal integers and numbers with a point are converted without the resolver's
+    search: the values (their types, signs, infinities) are yaml.load's, in a mapping and in a
+    list."""
+    import yaml
+
+    from kinematika.model.files import _UNUSUAL, _plain_yaml
+
+    for text in (f"a: {number}\n", f"- [{number}, {number}]\n"):
+        tree = _plain_yaml(text)
+        assert tree is not _UNUSUAL
+        expected = yaml.load(text, Loader=yaml.SafeLoader)
+        assert repr(tree) == repr(expected), text         # the values, their types and signs
+
+
 @pytest.mark.parametrize("path", EXAMPLE_FILES, ids=[p.stem for p in EXAMPLE_FILES])
 def test_every_example_is_read_in_one_pass_as_yaml_load_reads_it(path):
     import yaml
