@@ -42,9 +42,13 @@ def solve_command(model: Path, as_json: bool = False, symbolic: bool = False, ho
 def centres_command(model: Path, as_json: bool = False, symbolic: bool = False, how: Any = None) -> None:
     """All instant centres (planar), marking those found from joints and by Aronhold–Kennedy."""
     from ..commands import AS_GIVEN, centres_data
-    from ..report.centres_table import print_centres
 
-    respond(as_json, lambda: centres_data(model, symbolic or None, _how(how) or AS_GIVEN), print_centres)
+    def show(data: dict) -> None:
+        from ..report.centres_table import print_centres     # the table (and rich) only when shown
+
+        print_centres(data)
+
+    respond(as_json, lambda: centres_data(model, symbolic or None, _how(how) or AS_GIVEN), show)
 
 
 def _how(how: Any) -> Any:
