@@ -113,13 +113,13 @@ class VelocityLevel(Level):
 
     def point(self, body: str, p: tuple) -> tuple:
         """v = v₀ + ω × (P − ref)."""
-        r = sub(p, self.ref)
         o = self.u.offset.get(body) if self.space.dim == 2 and type(self.u) is Unknowns else None
         if o is None:
-            return add(self.u.trans(body), self.space.cross(self.u.rot(body), r))
+            return add(self.u.trans(body), self.space.cross(self.u.rot(body), sub(p, self.ref)))
         # a moving body in the plane: the same linear forms, written out (the terms in the
         # order, and the constants of the type, that the products above give)
-        rx, ry = r
+        ref = self.ref
+        rx, ry = p[0] - ref[0], p[1] - ref[1]
         x = Lin({o + 1: 1}) if _is_zero(ry) else Lin({o + 1: 1, o: -1 * ry}, 0 + 0 * ry)
         y = Lin({o + 2: 1}) if _is_zero(rx) else Lin({o + 2: 1, o: 1 * rx}, 0 + 0 * rx)
         return (x, y)
