@@ -51,17 +51,20 @@ class InstantSolver:
         out: list[Row] = []
         pairs: list = []          # the two bodies each joint row or driver row relates
         model = self.inst.model
+        paired = not lv.accel     # the same at both levels: taken at the velocity level
         for j in model.joints:
             rows = joint_rows(self.geos[j.id], lv)
             out += rows
-            pairs += [frozenset((j.a, j.b))] * len(rows)
+            if paired:
+                pairs += [frozenset((j.a, j.b))] * len(rows)
         for d in model.drivers:
             rows = driver_rows(self.inst, d, self.geos, lv)
             out += rows
             body = d.body if d.kind == "omega" else d.point.body if d.kind == "velocity" else None
             pairs += [frozenset((body, d.relative_to or model.frame)) if body else None] * len(rows)
         idle = idle_rows(self.inst, lv)
-        self.pairs = pairs + [None] * len(idle)
+        if paired:
+            self.pairs = pairs + [None] * len(idle)
         return out + idle
 
     def matrix(self, rows: list[Row]) -> tuple[list[list[Any]], list[Any]]:
