@@ -12,6 +12,8 @@
 
     .venv/bin/python benchmarks/start_up.py                 # 9 rounds, about a minute
     .venv/bin/python benchmarks/start_up.py --rounds 15 --only chain sweep
+    git archive OLD src | tar -x -C /tmp/old && \
+    .venv/bin/python benchmarks/start_up.py --against /tmp/old/src   # before and after, paired
 
 Each round runs every process once, in an order shuffled per round (seeded), so that each
 ratio is taken between runs made moments apart under the same load (paired runs); the
@@ -20,6 +22,10 @@ system) times. One warm-up round is not counted. kinematika's modules are compil
 bytecode first, as `pip install` does (PYTHONDONTWRITEBYTECODE would otherwise make every
 start compile them). The load average is printed at the start and the end: on the shared
 2-core machine, absolute times move with it by a factor of two or more; the ratios much less.
+
+`--against SRC` runs every kinematika process a second time in each round with another
+checkout's `src` first on PYTHONPATH (an older commit, say), and adds a table of both
+with the median of the paired ratios after / before.
 """
 from __future__ import annotations
 
@@ -37,10 +43,10 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 
 
-def run(cmd: list[str], ok: tuple[int, ...] = (0,)) -> tuple[float, float]:
+def run(cmd: list[str], ok: tuple[int, ...] = (0,), env: dict | None = None) -> tuple[float, float]:
     """Wall time and CPU time (user + system, s) of one whole process."""
     start = time.perf_counter()
-    child = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    child = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
     _, status, usage = os.wait4(child.pid, 0)
     wall = time.perf_counter() - start
     if os.waitstatus_to_exitcode(status) not in ok:
@@ -84,17 +90,27 @@ TABLE = [
 PEER_NAMES = {"numpy": "`import numpy`", "script": "the numpy script"}
 
 
-def compile_bytecode() -> None:
-    """kinematika's modules compiled to bytecode once, as `pip install` does."""
+def compile_bytecode(against: str | None = None) -> None:
+    """kinematika's modules compiled to bytecode once, as `pip install` does (and those of
+    the `--against` tree)."""
     import kinematika
 
-    subprocess.run([sys.executable, "-m", "compileall", "-q", str(Path(kinematika.__file__).parent)],
-                   check=True, stdout=subprocess.DEVNULL)
+    for tree in filter(None, (str(Path(kinematika.__file__).parent), against)):
+        subprocess.run([sys.executable, "-m", "compileall", "-q", tree], check=True, stdout=subprocess.DEVNULL)
 
 
-def measure(names: list[str], rounds: int, seed: int) -> dict[str, list[tuple[float, float]]]:
+BEFORE = "@before"      # the suffix of a process run with the `--against` tree
+
+
+def measure(names: list[str], rounds: int, seed: int, against: str | None = None
+            ) -> dict[str, list[tuple[float, float]]]:
     """`rounds` paired rounds (after one warm-up round): each process once per round, in a
-    shuffled order; every run's (wall, CPU)."""
+    shuffled order (with `against`, each kinematika process also with that tree first on
+    PYTHONPATH); every run's (wall, CPU)."""
+    old = None
+    if against:
+        old = dict(os.environ, PYTHONPATH=os.pathsep.join(filter(None, (against, os.environ.get("PYTHONPATH")))))
+        names = names + [n + BEFORE for n in names if n not in PEER_NAMES]
     times: dict[str, list[tuple[float, float]]] = {n: [] for n in names}
     shuffle = random.Random(seed)
     with tempfile.TemporaryDirectory() as folder:
@@ -103,8 +119,8 @@ def measure(names: list[str], rounds: int, seed: int) -> dict[str, list[tuple[fl
             order = list(names)
             shuffle.shuffle(order)
             for name in order:
-                cmd, ok = table[name]
-                result = run(cmd, ok)
+                cmd, ok = table[name.removesuffix(BEFORE)]
+                result = run(cmd, ok, old if name.endswith(BEFORE) else None)
                 if k:
                     times[name].append(result)
     return times
@@ -135,24 +151,55 @@ def report(times: dict[str, list[tuple[float, float]]]) -> list[str]:
     return lines
 
 
+def report_against(times: dict[str, list[tuple[float, float]]]) -> list[str]:
+    """Before (the `--against` tree) and after (this one), paired: medians and the median of
+    the paired ratios after / before, and each one's paired ratio to its peer."""
+    lines = ["| process | before: wall (CPU) | after: wall (CPU) | after / before, wall (CPU) | "
+             "before / peer | after / peer |", "| --- | --- | --- | --- | --- | --- |"]
+    for label, name, peer, _, _ in TABLE:
+        if name + BEFORE not in times:
+            continue
+        after, before = times[name], times[name + BEFORE]
+        cells = []
+        for runs in (before, after):
+            cells.append(f"{statistics.median(r[0] for r in runs) * 1e3:.0f} ms "
+                         f"({statistics.median(r[1] for r in runs) * 1e3:.0f} ms)")
+        wall = statistics.median(a[0] / b[0] for a, b in zip(after, before))
+        cpu = statistics.median(a[1] / b[1] for a, b in zip(after, before))
+        cells.append(f"{wall:.2f} ({cpu:.2f})")
+        for runs in (before, after):
+            if peer in times:
+                r = statistics.median(a[0] / b[0] for a, b in zip(runs, times[peer]))
+                cells.append(f"{r:.2f}× {PEER_NAMES[peer]}")
+            else:
+                cells.append("")
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--rounds", type=int, default=9)
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--only", nargs="+", choices=["chain", "solve", "sweep", "simulate", "stopping"],
                         help="measure only these (with their peers)")
+    parser.add_argument("--against", help="another checkout's src folder: each kinematika process run "
+                        "with it too, paired (before and after)")
     args = parser.parse_args()
     names = [name for _, name, _, _, _ in TABLE]
     if args.only:
         peers = {peer for _, name, peer, _, _ in TABLE if name in args.only and peer}
         names = [n for n in names if n in args.only or n in peers]
-    compile_bytecode()
+    compile_bytecode(args.against)
     start = os.getloadavg()
-    times = measure(names, args.rounds, args.seed)
+    times = measure(names, args.rounds, args.seed, args.against)
     end = os.getloadavg()
     print(f"{args.rounds} paired rounds on {os.cpu_count()} cores; load average {start[0]:.2f} at the start, "
           f"{end[0]:.2f} at the end\n")
     print("\n".join(report(times)))
+    if args.against:
+        print(f"\nBefore: {args.against} first on PYTHONPATH; after: this checkout.\n")
+        print("\n".join(report_against(times)))
 
 
 if __name__ == "__main__":
