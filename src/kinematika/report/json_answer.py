@@ -3,7 +3,6 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..questions import answer
 from ..solution import Solution
 from .values import numbers, plain
 
@@ -94,6 +93,8 @@ def _answer(sol: Solution, q: Any, bodies: dict, points: dict, scale: float,
             return _copy(bodies[q.target][q.kind])
         if q.kind in ("velocity", "acceleration") and str(q.target) in points:
             return _copy(points[str(q.target)][q.kind])
+    from ..questions import answer       # the questions' modules only for an answer not in the tables
+
     return plain(answer(sol, q), sol.symbolic, scale, fields)
 
 

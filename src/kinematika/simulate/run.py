@@ -263,8 +263,9 @@ class Rows:
     def projected(self, t: float, poses: Any) -> tuple[Any, float]:
         """`poses` brought back onto the joints' position conditions at time t, and the drift."""
         sim = self.sim
-        if sim.projection.size(poses) <= PROJECT_ABOVE:
-            return poses, sim.projection.size(poses)
+        drift = sim.projection.size(poses)
+        if drift <= PROJECT_ABOVE:
+            return poses, drift
 
         def matrix(q: Any) -> np.ndarray:
             a = sim.engine_at(t, q).a_num
