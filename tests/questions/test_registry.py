@@ -23,10 +23,9 @@ MOTION = {"velocity", "acceleration", "omega", "alpha"}
 NAMES = "|".join(sorted(set(MODULES) - MOTION, key=len, reverse=True))
 # a kind's name as a string literal: 'icr', "pole" (Python and the page's JavaScript)
 LITERAL = re.compile(rf"""(?<![\w.-])["']({NAMES})["']""")
-# a question's kind compared, or a kind compared with a kind's name: q.kind == …, question.kind
-# in (…), (q.kind, key) == …, q.kind[0], x.kind === "pole"
-COMPARED = re.compile(rf"""\b(q|question)\.kind\s*(==|!=|\bin\b|\bnot in\b|\[|,)"""
-                      rf"""|\.kind\s*(==|!=|===|!==)\s*["']({NAMES})["']""")
+# a question's kind compared or taken apart: q.kind == …, question.kind in (…), (q.kind, key)
+# == …, q.kind[0]; (any object's `kind` written as one of the other kinds' names is a literal)
+COMPARED = re.compile(r"""\b(q|question)\.kind\s*(==|!=|\bin\b|\bnot in\b|\[)|\(\s*(q|question)\.kind\s*,""")
 # directories where these words mean something else than a question
 OTHER_MEANINGS = {
     "questions": "the question kinds themselves",
@@ -35,21 +34,21 @@ OTHER_MEANINGS = {
 }
 ALLOWED_WORDS = {           # the same words meaning something else, with where and what
     # the generated plain check (its question record's keys, from `schema`)
-    **{name: ("model/shape.py",) for name in ("icr", "curvature", "decompose", "pole", "intrinsic", "inflection")},
+    **dict.fromkeys(("decompose", "intrinsic", "inflection"), ("model/shape.py",)),
     "contact": ("model/shape.py",
-                "draw/results.py", "draw/marks.py", "web/static/js/figure.js",    # a scene's contact mark
+                "draw/results.py", "draw/scene.py", "draw/marks.py", "web/static/js/figure.js",    # a scene's contact mark
                 "explain/terms.py",                 # a term's kind: a contact's motion
                 "cli/cam.py"),                      # a cam design's follower: its `contact` (roller, flat)
     "axis": ("model/shape.py", "model/schema.py",   # a joint's `axis` key
              "model/builder.py",                    # a disc's axis
              "web/rename.py",                       # a joint's `axis` through renamed points
              "web/static/js/builder.js"),           # a drawn axis' CSS class
-    "icr": ("draw/results.py", "draw/scene.py", "draw/marks.py", "draw/figure.py",   # a scene's centre
+    "icr": ("model/shape.py", "draw/results.py", "draw/scene.py", "draw/marks.py", "draw/figure.py",   # a scene's centre
             "web/static/js/figure.js"),                                               # mark (every centre)
-    "pole": ("draw/results.py", "draw/marks.py", "draw/figure.py", "web/static/js/figure.js",   # a scene's
+    "pole": ("model/shape.py", "draw/results.py", "draw/scene.py", "draw/marks.py", "draw/figure.py", "web/static/js/figure.js",   # a scene's
              "explain/answers.py",              # an inflection answer's `pole` field (its unit)   # pole mark
              "explain/polygon.py", "explain/render/svg.py"),   # a velocity polygon's pole
-    "curvature": ("draw/animation.py", "web/requests.py", "web/server.py",   # the figure's `curvature`
+    "curvature": ("model/shape.py", "draw/animation.py", "web/requests.py", "web/server.py",   # the figure's `curvature`
                   "web/scene_json.py", "web/static/js/figure.js",             # layer and its colour
                   "explain/higher.py"),             # a derivation's kind: ρ of a contact's path
 }
@@ -80,8 +79,9 @@ def test_no_module_writes_a_question_kinds_name():
 def test_the_tests_catch_a_kind_named_outside_its_module():
     """The two patterns see what they are for (a test that cannot fail is no test)."""
     assert COMPARED.search('if q.kind == "omega":') and COMPARED.search("if q.kind in POINT_QUESTIONS:")
-    assert COMPARED.search('mark.kind === "pole"') and COMPARED.search('Sym(q.kind[0], sub)')
+    assert COMPARED.search('(q.kind, key) == ("axis", "omega")') and COMPARED.search('Sym(q.kind[0], sub)')
     assert not COMPARED.search("kind = QUESTIONS[q.kind]") and not COMPARED.search('d.kind == "omega"')
+    assert not COMPARED.search("rows_of(k, q.kind, value)")
     assert LITERAL.search('QUESTIONS = ("velocity", "icr", "curvature")')
     assert not LITERAL.search('msg("ask.icr")') and not LITERAL.search('"velocity"')
 
@@ -176,3 +176,9 @@ def test_every_number_of_an_answer_is_in_a_declared_field(source):
     for q in sol.model.questions:
         value = kinematika.questions.answer(sol, q)
         assert not _undeclared(QUESTIONS[q.kind], value), (q.kind, _undeclared(QUESTIONS[q.kind], value))
+
+
+def test_the_questions_doc_has_a_row_per_kind_and_its_module():
+    text = (SRC.parents[1] / "docs" / "questions.md").read_text(encoding="utf-8")
+    rows = dict(re.findall(r"^\| `([a-z_]+)` \| `([a-z_]+\.py)` \|", text, re.M))
+    assert rows == {name: f"{type(kind).__module__.rsplit('.', 1)[1]}.py" for name, kind in QUESTIONS.items()}

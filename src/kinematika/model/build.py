@@ -11,7 +11,6 @@ import typing
 from typing import TYPE_CHECKING, Any, Iterable, Optional
 
 from ..errors import KinematikaError, Names, Said, pydantic_choices, pydantic_problem
-from ..joints import KINDS
 from ..joints import kind as joint_kind
 from ..questions import QUESTIONS
 from ..text import brief

@@ -22,7 +22,6 @@ def solution_json(sol: Solution) -> dict[str, Any]:
     Round-off is cleaned against the scale of each kind of quantity (lengths, speeds,
     accelerations, rates), so that a large acceleration never hides a real speed."""
     sym = sol.symbolic
-    length = sol.inst.scale
     scale, fields = answer_scales(sol)
     model = sol.model
     if sym:
