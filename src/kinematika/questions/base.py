@@ -70,6 +70,7 @@ class Solved(Protocol):
 
     model: Any
     inst: Any
+    solver: Any                        # the instant's solver: its joints' geometries (`geos`)
 
     @property
     def symbolic(self) -> bool:

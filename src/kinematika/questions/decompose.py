@@ -70,7 +70,7 @@ class Decompose(QuestionKind):
 
     def label(self, words: Words, q: Asked) -> Any:
         """The composition of the motion of the point, with the moving frame."""
-        return words.msg("ask.decompose", point=words.name(words.point(q)), frame=words.name(q.moving, "body"))
+        return words.msg("ask.decompose", point=words.name(words.point(q)), frame=words.name(q.moving or "", "body"))
 
     def part(self, words: Words, q: Asked, key: str, sub: Optional[str]) -> Any:
         """v_{arr,P}, a_{rel,P}, a_{Cor,P}, v_P: the part's word as the subscript."""
