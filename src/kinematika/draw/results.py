@@ -389,24 +389,31 @@ class Drawn:
             QUESTIONS[q.kind].draw(self, q)
 
     def arrow(self, q: Any, level: str) -> None:
+        """An arrow of the point's velocity or acceleration (`vector_targets`)."""
         self.arrows[level].append(q)
 
     def composition(self, q: Any) -> None:
+        """A composition's parts (`_decompositions`)."""
         self.compositions.append(q)
 
     def instant_centre(self, q: Any) -> None:
+        """An instant centre's mark (`_asked_centres`)."""
         self.centres.append(q)
 
     def path_circle(self, q: Any) -> None:
+        """A curvature circle (`_curvatures`)."""
         self.circles.append(q)
 
     def acceleration_pole(self, q: Any) -> None:
+        """A pole's mark Γ (`_pole`)."""
         self.marks.append((_pole, q))
 
     def contact_point(self, q: Any) -> None:
+        """A contact's mark J (`_contact`)."""
         self.marks.append((_contact, q))
 
     def screw_axis(self, q: Any) -> None:
+        """A screw axis, in a 3D figure (`_axis`)."""
         self.marks.append((_axis, q))
 
 

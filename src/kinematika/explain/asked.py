@@ -21,15 +21,19 @@ class Worked:
             QUESTIONS[q.kind].explain(self, q)
 
     def instant_centre(self, q: Any) -> None:
+        """Found (and checked) in the instant centres' section (`centres`)."""
         self.centres.append(q)
 
     def path_curvature(self, q: Any) -> None:
+        """Worked out in the curvature section (`answers.curvature_section`)."""
         self.curvatures.append(q)
 
     def contact_points(self, q: Any) -> None:
+        """Worked out in the contact section (`contacts.contact_section`)."""
         self.contacts.append(q)
 
     def composition(self, q: Any) -> None:
+        """Worked out as a composition of motions (`spatial.composition_section`)."""
         self.compositions.append(q)
 
 
