@@ -64,11 +64,11 @@ def answer(sol: Solved, q: Asked) -> Any:
 
 
 @functools.cache
-def field_kinds() -> dict[str, Optional[Quantity]]:
-    """The kind of quantity of every field a compound answer may have (`QuestionKind.fields`,
-    all kinds together: a field's name means the same in every answer). Not to be changed:
-    it is remembered."""
+def field_kinds(kinds: Optional[tuple[str, ...]] = None) -> dict[str, Optional[Quantity]]:
+    """The kind of quantity of every field a compound answer of `kinds` (names; default every
+    kind) may have (`QuestionKind.fields` together: a field's name means the same in every
+    answer). Only the kinds named are imported. Not to be changed: it is remembered."""
     out: dict[str, Optional[Quantity]] = {}
-    for kind in QUESTIONS.values():
-        out.update(kind.fields)
+    for name in MODULES if kinds is None else kinds:
+        out.update(QUESTIONS[name].fields)
     return out

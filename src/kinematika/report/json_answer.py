@@ -1,20 +1,20 @@
 """The contract's JSON answer of `kinematika solve MODEL --json`."""
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Optional
 
 from ..questions import QUESTIONS, answer, field_kinds
 from ..solution import Solution
 from .values import numbers, plain
 
 
-def answer_scales(sol: Solution) -> tuple[dict[str, float], dict[str, float]]:
-    """The scale of each kind of quantity, and of each field of compound answers (the kinds'
-    `fields`)."""
+def answer_scales(sol: Solution, kinds: Optional[tuple[str, ...]] = None) -> tuple[dict[str, float], dict[str, float]]:
+    """The scale of each kind of quantity, and of each field of the compound answers of
+    `kinds` (question kinds' names, default all: their `fields`)."""
     length = sol.inst.scale
     scale = {"position": length, "velocity": sol.speed_scale(), "acceleration": sol.accel_scale(),
              "omega": sol.rate_scale(), "alpha": sol.accel_scale() / length}
-    return scale, {field: scale[kind] if kind else 1.0 for field, kind in field_kinds().items()}
+    return scale, {field: scale[kind] if kind else 1.0 for field, kind in field_kinds(kinds).items()}
 
 
 def solution_json(sol: Solution) -> dict[str, Any]:
@@ -22,8 +22,8 @@ def solution_json(sol: Solution) -> dict[str, Any]:
     Round-off is cleaned against the scale of each kind of quantity (lengths, speeds,
     accelerations, rates), so that a large acceleration never hides a real speed."""
     sym = sol.symbolic
-    scale, fields = answer_scales(sol)
     model = sol.model
+    scale, fields = answer_scales(sol, tuple(dict.fromkeys(q.kind for q in model.questions)))
     if sym:
         bodies = {}
         for name in model.bodies:
