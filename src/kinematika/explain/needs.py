@@ -21,8 +21,7 @@ def accelerations_asked(ctx: Ctx) -> bool:
     """Whether anything asked needs accelerations: when only velocities, angular velocities
     and instant centres are asked (the epicyclic train, the pulleys, C5-E.3), the explanation
     stops at the velocities, as the notes do. A model without questions asks for everything."""
-    return ctx.model.default_questions or any(QUESTIONS[q.kind].level == "acceleration"
-                                                    for q in ctx.model.questions)
+    return ctx.model.default_questions or any(QUESTIONS[q.kind].level == "acceleration" for q in ctx.model.questions)
 
 
 def prune(ctx: Ctx, doc: Document) -> None:
