@@ -182,3 +182,21 @@ def test_the_questions_doc_has_a_row_per_kind_and_its_module():
     text = (SRC.parents[1] / "docs" / "questions.md").read_text(encoding="utf-8")
     rows = dict(re.findall(r"^\| `([a-z_]+)` \| `([a-z_]+\.py)` \|", text, re.M))
     assert rows == {name: f"{type(kind).__module__.rsplit('.', 1)[1]}.py" for name, kind in QUESTIONS.items()}
+
+
+def test_the_page_asks_what_the_kinds_offer():
+    """The builder's ask buttons are the kinds that say `page` (through `GET /api/palette`); a
+    kind that takes a moving body gets it; another kind is refused, naming those offered."""
+    from kinematika import KinematikaError
+    from kinematika.web.build import apply, offered_questions
+
+    assert offered_questions("point") == ["velocity", "acceleration", "curvature", "decompose"]
+    assert offered_questions("body") == ["omega", "alpha", "icr"]
+    text = ("points: {O: [0, 0], A: [1, 0], B: [2, 0]}\nbodies: {ground: [O], crank: [O, A], rod: [A, B]}\n"
+            "joints:\n  - {type: revolute, bodies: [ground, crank], at: O}\n"
+            "  - {type: revolute, bodies: [crank, rod], at: A}\n")
+    asked, _ = apply(text, "yaml", {"op": "ask", "question": "decompose", "target": "B@rod"})
+    assert "{decompose: B@rod, moving: rod}" in asked
+    with pytest.raises(KinematikaError) as info:
+        apply(text, "yaml", {"op": "ask", "question": "pole", "target": "rod"})
+    assert info.value.said.args["kinds"] == offered_questions()
