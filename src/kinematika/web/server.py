@@ -136,9 +136,11 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
         return handle
 
     async def palette(_: HttpRequest) -> Response:
+        from .build import offered_questions
         from .palette import TOOLS
 
-        return JSONResponse({"tools": [t.public() for t in TOOLS]}, headers=SECURITY)
+        questions = {about: offered_questions(about) for about in ("point", "body")}
+        return JSONResponse({"tools": [t.public() for t in TOOLS], "questions": questions}, headers=SECURITY)
 
     async def strings(request: HttpRequest) -> Response:
         from .strings import page_strings
