@@ -41,6 +41,8 @@ SOLVE = {
     "kinematika.model.shape", "kinematika.model.source", "kinematika.model.wording", "kinematika.report", "kinematika.report.json_answer",
     "kinematika.report.json_text", "kinematika.report.values", "kinematika.shapes", "kinematika.solution",
     "kinematika.sweep", "kinematika.sweep.posing", "kinematika.text",
+    # the question kinds' registry: an answer's tables read what each asked kind is (issue 34, part 3)
+    "kinematika.questions", "kinematika.questions.base", "kinematika.questions.motion",
 }
 QUESTIONS = {"kinematika.questions", "kinematika.questions.axis", "kinematika.questions.contact",
              "kinematika.questions.curvature", "kinematika.questions.decompose", "kinematika.questions.icr",

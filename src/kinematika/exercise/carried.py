@@ -30,11 +30,11 @@ from typing import Any, Optional
 
 from ..errors import KinematikaError
 from ..expressions import Expr, parse
+from ..questions import QUESTIONS
 from .key import Row
 
 VELOCITY_LEVEL = ("velocity", "omega")
 ACCELERATION_LEVEL = ("acceleration", "alpha")
-LINEAR = ("velocity", "acceleration", "omega", "alpha", "decompose")   # questions whose answers carry
 FLOOR = 0.01                  # a carried answer's margin: at least this share of the right one's
 NOISE = 1e-9
 
@@ -68,7 +68,7 @@ def basis(exercise: Any, variant: Any) -> Optional[Basis]:
     if not drivers or not all(isinstance(d.value, Expr) for d in drivers):
         return None
     kinds = [q.kind for q in exercise.model.questions]
-    linear = {r.question for r in variant.rows if kinds[r.ask - 1] in LINEAR}
+    linear = {r.question for r in variant.rows if QUESTIONS[kinds[r.ask - 1]].linear}
 
     def solved(rate: Optional[str], accel: Optional[str]) -> Optional[dict[str, float]]:
         changed = [dataclasses.replace(d, value=parse(rate) if rate is not None else d.value,

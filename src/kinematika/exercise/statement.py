@@ -15,6 +15,7 @@ from typing import Any
 
 from ..errors import KinematikaError
 from ..model.exercise_section import PLACEHOLDER
+from ..questions import QUESTIONS
 from .catalogue import catalogue
 from .key import Row
 from .stated import stated_text
@@ -89,7 +90,8 @@ def question_words(model: Any, q: Any, lang: str) -> str:
     if q.moving is not None:
         args["frame"] = wording.body(q.moving, lang)
     key = f"ask-{q.kind}" + ("-rel" if frame and cat.has(f"ask-{q.kind}-rel") else "")
-    if hasattr(target, "point") and "@" not in str(q.echo.get(q.kind, "@")) and cat.has(key + "-point"):
+    written = q.echo.get(QUESTIONS[q.kind].name, "@")      # the target as the file writes it
+    if hasattr(target, "point") and "@" not in str(written) and cat.has(key + "-point"):
         key += "-point"          # `{velocity: C}`: every body carrying C moves it alike
     if not cat.has(key):
         return cat.format("ask-other", {"n": q.index + 1})

@@ -20,6 +20,7 @@ class Acceleration(QuestionKind):
     level = "acceleration"
     unit_kind = "acceleration"
     column = True
+    linear = True
     page = True
 
     def answer(self, sol: Solved, q: Asked) -> Any:

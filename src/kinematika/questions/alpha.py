@@ -17,6 +17,7 @@ class Alpha(QuestionKind):
     level = "acceleration"
     unit_kind = "alpha"
     column = True
+    linear = True
     page = True
 
     def answer(self, sol: Solved, q: Asked) -> Any:

@@ -234,6 +234,8 @@ class QuestionKind:
                                             # `drag`) is of its parent's kind
     column: ClassVar[bool] = False          # the answer is a column of the answer's tables
     page: ClassVar[bool] = False            # the page's builder offers it
+    linear: ClassVar[bool] = False          # its answer is linear in the drivers' rates and
+                                            # accelerations (an exercise carries a wrong one)
 
     def answer(self, sol: Solved, q: Asked) -> Any:
         """The raw answer (backend scalars, nested in dicts for a compound answer)."""

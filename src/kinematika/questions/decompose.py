@@ -55,6 +55,7 @@ class Decompose(QuestionKind):
     unit_kind = "velocity"
     fields = {"velocity": "velocity", "acceleration": "acceleration", "coriolis": "acceleration"}
     page = True
+    linear = True
 
     def answer(self, sol: Solved, q: Asked) -> Any:
         """v = v_drag + v_rel, a = a_drag + a_rel + 2 ω_moving × v_rel (`decompose`)."""

@@ -16,6 +16,7 @@ class Omega(QuestionKind):
     summary = "the angular velocity of a body"
     unit_kind = "omega"
     column = True
+    linear = True
     page = True
 
     def answer(self, sol: Solved, q: Asked) -> Any:

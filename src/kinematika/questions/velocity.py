@@ -18,6 +18,7 @@ class Velocity(QuestionKind):
     about = "point"
     unit_kind = "velocity"
     column = True
+    linear = True
     page = True
 
     def answer(self, sol: Solved, q: Asked) -> Any:
