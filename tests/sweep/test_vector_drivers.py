@@ -84,3 +84,19 @@ def test_a_vector_driver_off_the_axis_is_left_as_written():
     with pytest.raises(KinematikaError) as err:
         run_sweep(tree, by=90, steps=2)
     assert err.value.kind == "mobility"
+
+
+def test_the_fan_posed_at_a_row_of_its_sweep_keeps_its_driver_along_the_turned_axis():
+    """The page's slider poses the model at a row of its sweep (`prepare(row=...)`): at
+    θ = 45° the blades' rate relative to the block is ω₂ e(45°), and their absolute ω and
+    α are the formulas above."""
+    from kinematika.sweep.posing import solved
+
+    sol = solved(EXAMPLES / "fan_composition.yaml", row=45)
+    theta = np.radians([45.0])
+    e = axis(theta)[0]
+    assert [float(c) for c in sol.omega("blades", "block")] == pytest.approx(W2 * e, abs=1e-12)
+    assert [float(c) for c in sol.omega("blades")] == pytest.approx(W1 * np.array([0, 1, 0]) + W2 * e, abs=1e-12)
+    assert [float(c) for c in sol.alpha("blades")] == pytest.approx(
+        A1 * np.array([0, 1, 0]) + A2 * e + W1 * W2 * np.array([-np.sin(theta[0]), 0, -np.cos(theta[0])]), abs=1e-12)
+    assert [float(c) for c in sol.position("P@blades")] == pytest.approx(blade_point(theta, 0 * theta)[0], abs=1e-12)

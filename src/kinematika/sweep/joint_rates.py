@@ -36,14 +36,15 @@ def with_joint_rates(model: Model, inst: Optional[Any] = None) -> Model:
         from ..engine.instant import instantiate
 
         inst = instantiate(model, False)
-    drivers = [_as_joint_rate(model, inst, d) or d for d in model.drivers]
+    drivers = [as_joint_rate(model, inst, d) or d for d in model.drivers]
     if all(a is b for a, b in zip(drivers, model.drivers)):
         return model
     return dataclasses.replace(model, drivers=drivers)
 
 
-def _as_joint_rate(model: Model, inst: Any, d: Driver) -> Optional[Driver]:
-    """Driver `d` as the rate of the revolute joining its bodies, or None."""
+def as_joint_rate(model: Model, inst: Any, d: Driver) -> Optional[Driver]:
+    """Driver `d` as the rate of the revolute joining its bodies (`inst` the drawn instant),
+    or None when it is not one."""
     if d.kind != "omega" or not isinstance(d.value, tuple):
         return None
     other = d.relative_to or model.frame
