@@ -58,3 +58,18 @@ def test_the_slider_moves_through_time_for_a_vehicle(client):
     assert data["input"] == {"joint": None, "unit": "s", "time": 10.0, "steps": 200}     # DEFAULT_TIME
     assert slider("four_bar.yaml")["unit"] == "deg"
     assert json.loads(json.dumps(slider("coin_rolling.yaml")))["unit"] == "s"
+
+
+def test_every_example_gives_the_page_its_slider():
+    """The page's slider for every bundled example (what `/api/draw` gives the page as its
+    `input`, read without drawing): the joint a sweep advances, or the time of its own
+    `simulate:` section, as tests/simulate/test_every_example.py says it moves."""
+    from kinematika.sweep.posing import prepare
+    from kinematika.web.server import _input
+    from tests.simulate.test_every_example import MOVES, TIME
+
+    for name, how in MOVES.items():
+        given = _input(prepare(EXAMPLES / f"{name}.yaml"))
+        assert given is not None, name
+        assert (given["unit"] == "s") == (how == TIME), (name, given)
+        assert how == TIME or given["joint"], name
