@@ -51,9 +51,12 @@ def as_joint_rate(model: Model, inst: Any, d: Driver) -> Optional[Driver]:
     joint = _revolute(model, d.body, other)
     if joint is None:
         return None
-    axis = [float(c) for c in inst.direction(joint.axis, f"{joint.where}.axis")]
-    value = [float(c) for c in inst.vector(d.value, f"{d.where}.value")]
-    accel = [float(c) for c in inst.vector(d.accel, f"{d.where}.alpha")] if isinstance(d.accel, tuple) else None
+    try:                       # numbers (a model with symbols is moved at its draw_at numbers)
+        axis = [float(c) for c in inst.direction(joint.axis, f"{joint.where}.axis")]
+        value = [float(c) for c in inst.vector(d.value, f"{d.where}.value")]
+        accel = [float(c) for c in inst.vector(d.accel, f"{d.where}.alpha")] if isinstance(d.accel, tuple) else None
+    except (TypeError, ValueError):
+        return None
     if not all(_along(v, axis) for v in (value, accel) if v is not None):
         return None
     sign = 1.0 if joint.b == d.body else -1.0         # the joint's coordinate: b relative to a
