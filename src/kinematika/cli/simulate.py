@@ -8,7 +8,7 @@ from typing import Optional
 import typer
 
 from ..limits import SIMULATE_STEPS
-from .app import AssemblyOpt, JsonOpt, MessagesOpt, ModelArg, MoveOpt, SetOpt, app, how, messages
+from .app import AssemblyOpt, FormatOpt, JsonOpt, MessagesOpt, ModelArg, MoveOpt, OutputOpt, SetOpt, app, how, messages
 from .run import simulate_command
 
 
@@ -25,10 +25,8 @@ def simulate(model: Path = ModelArg,
              plot: Optional[Path] = typer.Option(None, "--plot", help="draw the motion's curves to FILE"),
              animation: Optional[Path] = typer.Option(None, "--animate", help="draw the motion to FILE "
                                                       "(.gif, or .mp4 with ffmpeg; planar models)"),
-             output: Optional[Path] = typer.Option(None, "-o", "--output", help="write the rows to FILE "
-                                                   "(json, csv, npz or parquet: --format, else the suffix)"),
-             fmt: Optional[str] = typer.Option(None, "--format", help="the format of -o: json, csv, npz "
-                                               "(numpy) or parquet (needs pyarrow)"),
+             output: Optional[Path] = OutputOpt,
+             fmt: Optional[str] = FormatOpt,
              sets: Optional[list[str]] = SetOpt, moves: Optional[list[str]] = MoveOpt,
              assembly: Optional[int] = AssemblyOpt, lang: Optional[str] = MessagesOpt,
              ) -> None:
