@@ -48,7 +48,8 @@ QUESTIONS = {"kinematika.questions", "kinematika.questions.axis", "kinematika.qu
              "kinematika.questions.curvature", "kinematika.questions.decompose", "kinematika.questions.icr",
              "kinematika.questions.inflection", "kinematika.questions.motion", "kinematika.questions.pole"}
 SWEEP_RUN = {"kinematika.memory", "kinematika.sweep.coincident", "kinematika.sweep.plan", "kinematika.sweep.result",
-             "kinematika.sweep.run"}
+             "kinematika.sweep.run",
+             "kinematika.sweep.joint_rates"}       # a 3D ω along a revolute's axis is its rate (issue 31)
 SIMULATE = {"kinematika.simulate", "kinematika.simulate.clock", "kinematika.simulate.holonomic",
             "kinematika.simulate.result", "kinematika.simulate.run", "kinematika.simulate.state",
             "kinematika.simulate.timed", "kinematika.sweep.poses", "kinematika.sweep.progress"}
