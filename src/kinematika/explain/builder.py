@@ -13,6 +13,7 @@ from typing import Optional
 from ..draw.names import body_numbers
 from ..solution import Solution
 from .answers import answers_section, curvature_section, relative_rates
+from .asked import worked
 from .checks import checks_section
 from .contacts import contact_section
 from .copies import copies
@@ -70,7 +71,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
             rest = centres_section(ctx, "rest")
             if rest is not None:
                 doc.sections.append(rest)
-        elif ctx.model.default_questions or any(q.kind == "icr" for q in ctx.model.questions):
+        elif ctx.model.default_questions or worked(ctx).centres:
             doc.sections.append(centres_section(ctx))      # only what is asked (the slides ask none)
         for sec, level in zip(levels, wanted):
             for eq in _equations(sec):

@@ -12,6 +12,7 @@ from itertools import combinations
 from typing import Optional
 
 from ..questions.centres import all_centres, centre_line, same_line
+from .asked import worked
 from .context import Ctx
 from .kinds import knife_edge, line_kind, on_fixed_line
 from .document import CentreNote, Section, Sym, msg
@@ -104,8 +105,7 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
         if note.how in ("kennedy", "proportional"):
             a, b = note.pair
             deps[key] = [frozenset(p) for k in note.via for p in ((a, k), (k, b))]
-    asked = {frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target)) for q in ctx.model.questions
-             if q.kind == "icr"}
+    asked = {frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target)) for q in worked(ctx).centres}
     ctx.centre_notes = (made, _chosen(ctx, made, deps, asked), asked)
     return ctx.centre_notes
 
