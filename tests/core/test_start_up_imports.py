@@ -39,7 +39,7 @@ SOLVE = {
     "kinematika.model.builder", "kinematika.model.constructions", "kinematika.model.figure_hints",
     "kinematika.model.files", "kinematika.model.model", "kinematika.model.overrides", "kinematika.model.plain",
     "kinematika.model.shape", "kinematika.model.source", "kinematika.model.wording", "kinematika.report", "kinematika.report.json_answer",
-    "kinematika.report.json_text", "kinematika.report.values", "kinematika.shapes", "kinematika.solution",
+    "kinematika.report.json_text", "kinematika.report.values", "kinematika.registry", "kinematika.shapes", "kinematika.solution",
     "kinematika.sweep", "kinematika.sweep.posing", "kinematika.text",
     # the question kinds' registry: an answer's tables read what each asked kind is (issue 34, part 3)
     "kinematika.questions", "kinematika.questions.base", "kinematika.questions.motion",

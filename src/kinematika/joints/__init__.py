@@ -8,9 +8,9 @@ for (iterating `KINDS`): a command starts without importing kinds it does not ne
 """
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
-from importlib import import_module
+from collections.abc import Mapping
 
+from ..registry import Registry
 from .base import AXES, Holonomic, JointGeometry, JointKind, Rows, rounding_hint
 
 MODULES = {                        # the kind's name in model files -> its module
@@ -29,28 +29,7 @@ MODULES = {                        # the kind's name in model files -> its modul
 }
 
 
-class Registry(Mapping):
-    """The kinds by name, each imported on first use (then remembered: the engine asks a
-    joint's kind for every row)."""
-
-    def __init__(self) -> None:
-        self._loaded: dict[str, JointKind] = {}
-
-    def __getitem__(self, name: str) -> JointKind:
-        found = self._loaded.get(name)
-        if found is None:
-            module = MODULES[name]           # KeyError for an unknown kind, as a dict's
-            found = self._loaded[name] = import_module(f".{module}", __name__).KIND
-        return found
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(MODULES)
-
-    def __len__(self) -> int:
-        return len(MODULES)
-
-
-KINDS: Mapping[str, JointKind] = Registry()
+KINDS: Mapping[str, JointKind] = Registry(__name__, MODULES)   # each kind imported on first use
 
 __all__ = ["AXES", "KINDS", "MODULES", "Holonomic", "JointGeometry", "JointKind", "Rows", "kind", "rounding_hint"]
 

@@ -10,10 +10,10 @@ every kind is asked for (iterating `QUESTIONS`), as the joints' kinds are.
 from __future__ import annotations
 
 import functools
-from collections.abc import Iterator, Mapping
-from importlib import import_module
+from collections.abc import Mapping
 from typing import Any, Optional
 
+from ..registry import Registry
 from .base import About, Asked, Figure, Level, Quantity, QuestionKind, Solved, Steps, Words
 
 MODULES = {                        # the question's key in model files -> its module, in the
@@ -32,27 +32,7 @@ MODULES = {                        # the question's key in model files -> its mo
 }
 
 
-class Registry(Mapping):
-    """The kinds by name, each imported on first use (then remembered)."""
-
-    def __init__(self) -> None:
-        self._loaded: dict[str, QuestionKind] = {}
-
-    def __getitem__(self, name: str) -> QuestionKind:
-        found = self._loaded.get(name)
-        if found is None:
-            module = MODULES[name]           # KeyError for an unknown kind, as a dict's
-            found = self._loaded[name] = import_module(f".{module}", __name__).KIND
-        return found
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(MODULES)
-
-    def __len__(self) -> int:
-        return len(MODULES)
-
-
-QUESTIONS: Mapping[str, QuestionKind] = Registry()
+QUESTIONS: Mapping[str, QuestionKind] = Registry(__name__, MODULES)   # each kind imported on first use
 
 __all__ = ["MODULES", "QUESTIONS", "About", "Asked", "Figure", "Level", "Quantity", "QuestionKind", "Solved",
            "Steps", "Words", "answer", "field_kinds"]

@@ -68,9 +68,17 @@ def as_joint_rate(model: Model, inst: Any, d: Driver) -> Optional[Driver]:
 
 
 def _revolute(model: Model, a: Optional[str], b: str) -> Optional[Joint]:
-    """The one revolute joint between bodies a and b (None if there is none, or several)."""
-    found = [j for j in model.joints if j.kind.name == "revolute" and {j.a, j.b} == {a, b} and j.axis is not None]
+    """The one revolute joint between bodies a and b (None if there is none, or several): a
+    pin about an axis whose own coordinate is its angle (asked of the kind, not its name)."""
+    found = [j for j in model.joints if _turns_about_axis(j) and {j.a, j.b} == {a, b} and j.axis is not None]
     return found[0] if len(found) == 1 else None
+
+
+def _turns_about_axis(joint: Joint) -> bool:
+    """A revolute: the bodies share a pin, turn about one axis only (not a ball), and the
+    joint's coordinate is that angle."""
+    kind = joint.kind
+    return kind.pins and not kind.ball and not kind.slides and kind.coordinate == "angle"
 
 
 def _along(v: list[float], axis: list[float]) -> bool:
