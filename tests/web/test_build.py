@@ -19,11 +19,10 @@ from tests.conftest import BROWSER_WAIT
 pytestmark = pytest.mark.browser
 
 
-@pytest.fixture(scope="module")
-def shared_page(browser, server):
-    """One page for the module (a student goes on using it): each test starts from a blank
-    model or an example it opens itself."""
-    context = browser.new_context(viewport={"width": 1400, "height": 1000})
+def open_page(browser, server, height: int):
+    """A page 1400 px wide, loaded and settled, with the script errors it meets: (page, errors),
+    closed when the caller is done."""
+    context = browser.new_context(viewport={"width": 1400, "height": height})
     pg = context.new_page()
     pg.set_default_timeout(BROWSER_WAIT)          # a hang detector
     errors: list[str] = []
@@ -32,6 +31,13 @@ def shared_page(browser, server):
     settled(pg, 0)
     yield pg, errors
     context.close()
+
+
+@pytest.fixture(scope="module")
+def shared_page(browser, server):
+    """One page for the module (a student goes on using it): each test starts from a blank
+    model or an example it opens itself."""
+    yield from open_page(browser, server, 1000)
 
 
 @pytest.fixture

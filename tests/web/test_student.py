@@ -16,22 +16,14 @@ import pytest
 from kinematika.web.strings import page_strings
 from tests.conftest import BROWSER_WAIT
 
-from .test_build import blank, click_at, click_body, click_point, example, selected, settled, step, text, tool
+from .test_build import blank, click_at, open_page, click_body, click_point, example, selected, step, text, tool
 
 pytestmark = pytest.mark.browser
 
 
 @pytest.fixture(scope="module")
 def shared_page(browser, server):
-    context = browser.new_context(viewport={"width": 1400, "height": 900})
-    pg = context.new_page()
-    pg.set_default_timeout(BROWSER_WAIT)          # a hang detector
-    errors: list[str] = []
-    pg.on("pageerror", lambda e: errors.append(str(e)))
-    pg.goto(server.url)
-    settled(pg, 0)
-    yield pg, errors
-    context.close()
+    yield from open_page(browser, server, 900)
 
 
 @pytest.fixture

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..sweep.summary import peak_lines
 from .result import SimulationResult
 
 
@@ -37,23 +38,7 @@ def summary_lines(result: SimulationResult) -> list[str]:
             cells.append(f"{_span(v, scales.get(q, 0.0)):>{width}}")
         lines.append(f"{name:<14}" + "".join(cells))
     lines += ["", f"{'point':<14}{'max speed':>14}{'at (s)':>12}{'max acceleration':>20}{'at (s)':>12}"]
-    at = result.time[rows]
-    seen = set()
-    for name, values in result.points.items():
-        point, _, body = name.partition("@")
-        if body == result.frame:
-            continue
-        speed = np.linalg.norm(values["velocity"][rows], axis=1)
-        accel = np.linalg.norm(values["acceleration"][rows], axis=1)
-        speed = np.where(speed <= 1e-9 * scales["velocity"], 0.0, speed)
-        accel = np.where(accel <= 1e-9 * scales["acceleration"], 0.0, accel)
-        key = (round(float(np.nanmax(speed)), 9), round(float(np.nanmax(accel)), 9), point)
-        if key in seen:
-            continue            # the same material motion under another body's name
-        seen.add(key)
-        ks, ka = int(np.nanargmax(speed)), int(np.nanargmax(accel))
-        lines.append(f"{name:<14}{speed[ks]:>14.6g}{_when(speed, at, ks):>12}"
-                     f"{accel[ka]:>20.6g}{_when(accel, at, ka):>12}")
+    lines += peak_lines(result.points, result.frame, scales, result.time[rows], rows, steady="-")
     return lines
 
 
@@ -62,10 +47,3 @@ def _span(values: np.ndarray, scale: float) -> str:
     tol = 1e-9 * scale
     low, high = (0.0 if abs(x) <= tol else float(x) for x in (np.nanmin(values), np.nanmax(values)))
     return f" {low:.5g} .. {high:.5g}" if high - low > tol else f" {0.5 * (low + high):.5g}"
-
-
-def _when(values: np.ndarray, at: np.ndarray, k: int) -> str:
-    """When the largest value is reached; "-" when it does not vary."""
-    if np.nanmax(values) - np.nanmin(values) <= 1e-9 * max(float(np.nanmax(values)), 1e-300):
-        return "-"
-    return f"{at[k]:.6g}"

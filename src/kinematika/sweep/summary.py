@@ -57,21 +57,7 @@ def summary_lines(result: SweepResult, linkage: Any = None, groups: Optional[lis
             angle = " does not turn" if angle.strip() == "0" else f" turns{angle}"
         lines.append(f"{name:<14}{angle:>24}" + "".join(f"{_span(values[q], tops[q]):>26}" for q in ("omega", "alpha")))
     lines += ["", f"{'point':<14}{'max speed':>14}{'at':>12}{'max acceleration':>20}{'at':>12}"]
-    scales = result.scales()
-    seen = set()
-    for name, values in result.points.items():
-        point, _, body = name.partition("@")
-        if body == result.frame:
-            continue
-        speed = _quiet(np.linalg.norm(values["velocity"], axis=1), scales["velocity"])
-        accel = _quiet(np.linalg.norm(values["acceleration"], axis=1), scales["acceleration"])
-        key = (round(float(np.nanmax(speed)), 9), round(float(np.nanmax(accel)), 9), point)
-        if key in seen:
-            continue          # the same material motion under another body's name
-        seen.add(key)
-        ks, ka = int(np.nanargmax(speed)), int(np.nanargmax(accel))
-        lines.append(f"{name:<14}{speed[ks]:>14.6g}{_where(speed, at, ks):>12}"
-                     f"{accel[ka]:>20.6g}{_where(accel, at, ka):>12}")
+    lines += peak_lines(result.points, result.frame, result.scales(), at)
     lines += ["", "dead points: " + (", ".join(f"{axis.at(x):g} {unit}".strip() for x in result.dead_points)
                                      or "none in the range swept")]
     if linkage is not None:
@@ -126,11 +112,34 @@ def _quiet(values: np.ndarray, scale: float) -> np.ndarray:
     return np.where(np.abs(values) <= 1e-9 * scale, 0.0, values)
 
 
-def _where(values: np.ndarray, at: np.ndarray, k: int) -> str:
-    """Where the largest value is reached; "constant" when the value does not vary (a steady
-    crank pin): it is reached all along."""
-    if np.nanmax(values) - np.nanmin(values) <= 1e-9 * max(np.nanmax(values), 1e-300):
-        return "constant"
+def peak_lines(points: dict[str, dict[str, np.ndarray]], frame: str, scales: dict[str, float],
+               at: np.ndarray, rows: slice = slice(None), steady: str = "constant") -> list[str]:
+    """A line per moving point: its largest speed and acceleration and where (`at`, over
+    `rows`) each is reached — `steady` when it does not vary. A material point listed under
+    several bodies' names is given once (the same largest values)."""
+    lines: list[str] = []
+    seen = set()
+    for name, values in points.items():
+        point, _, body = name.partition("@")
+        if body == frame:
+            continue
+        speed = _quiet(np.linalg.norm(values["velocity"][rows], axis=1), scales["velocity"])
+        accel = _quiet(np.linalg.norm(values["acceleration"][rows], axis=1), scales["acceleration"])
+        key = (round(float(np.nanmax(speed)), 9), round(float(np.nanmax(accel)), 9), point)
+        if key in seen:
+            continue          # the same material motion under another body's name
+        seen.add(key)
+        ks, ka = int(np.nanargmax(speed)), int(np.nanargmax(accel))
+        lines.append(f"{name:<14}{speed[ks]:>14.6g}{_where(speed, at, ks, steady):>12}"
+                     f"{accel[ka]:>20.6g}{_where(accel, at, ka, steady):>12}")
+    return lines
+
+
+def _where(values: np.ndarray, at: np.ndarray, k: int, steady: str) -> str:
+    """Where the largest value is reached; `steady` ("constant") when the value does not vary
+    (a steady crank pin): it is reached all along."""
+    if np.nanmax(values) - np.nanmin(values) <= 1e-9 * max(float(np.nanmax(values)), 1e-300):
+        return steady
     return f"{at[k]:.6g}"
 
 
