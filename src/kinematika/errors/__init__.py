@@ -21,7 +21,23 @@ KINDS = ("syntax", "schema", "geometry", "mobility", "singular", "assembly",
          "limit")      # an extension: valid work beyond a documented limit (symbolic time)
 
 
-class KinematikaError(Exception):
+class _OneLine:
+    """What an error and a warning share: a `said` message and a `where`, written as one line
+    (`where: message`) in the language in use."""
+
+    said: Said
+    where: str
+
+    @property
+    def message(self) -> str:
+        """The message in the language in use."""
+        return shown(self.said.said(), MESSAGE_CHARS)
+
+    def __str__(self) -> str:
+        return f"{self.where}: {self.message}" if self.where else self.message
+
+
+class KinematikaError(_OneLine, Exception):
     """A problem with the user's model, reported as one line, never a traceback.
 
     `kind` is one of the contract's error kinds (the same English word in every language);
@@ -41,14 +57,6 @@ class KinematikaError(Exception):
         self.kind = kind
         self.where = where
 
-    @property
-    def message(self) -> str:
-        """The message in the language in use."""
-        return shown(self.said.said(), MESSAGE_CHARS)
-
-    def __str__(self) -> str:
-        return f"{self.where}: {self.message}" if self.where else self.message
-
     def __reduce__(self) -> tuple:
         return type(self), (self.kind, self.said, self.where)
 
@@ -57,7 +65,7 @@ class KinematikaError(Exception):
         return {"error": {"kind": self.kind, "message": self.message, "where": self.where}}
 
 
-class KinematikaWarning(UserWarning):
+class KinematikaWarning(_OneLine, UserWarning):
     """Input answered as written that is most likely a mistake (an angle of 30 rad where 30°
     was meant): a message (a catalogue's key and its arguments, as an error's) and a place,
     one line each. The command line prints it on standard error, the JSON answer lists it
@@ -68,14 +76,6 @@ class KinematikaWarning(UserWarning):
         self.said = Said.of(message, args)
         self.where = clip_middle(shown(where), WHERE_CHARS)
         super().__init__(self.said, self.where)
-
-    @property
-    def message(self) -> str:
-        """The message in the language in use."""
-        return shown(self.said.said(), MESSAGE_CHARS)
-
-    def __str__(self) -> str:
-        return f"{self.where}: {self.message}" if self.where else self.message
 
     def __reduce__(self) -> tuple:
         return type(self), (self.said, self.where)
