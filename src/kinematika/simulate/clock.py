@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import limits
 from ..errors import KinematikaError, Num
-from ..sweep.plan import values_per_row
+from ..sweep.plan import check_steps
 
 DEFAULT_STEPS = 200
 DEFAULT_TIME = 10.0          # seconds the page follows a model whose file gives no time
@@ -68,15 +68,7 @@ def make_clock(model: Any, start: float, time: Optional[float] = None, steps: Op
         steps = section.steps if section is not None else DEFAULT_STEPS
     if isinstance(time, bool) or not isinstance(time, numbers.Real) or not math.isfinite(time) or time <= 0:
         raise KinematikaError("schema", "simulate-time-positive", "simulate.time", got=_written(time))
-    if isinstance(steps, bool) or not isinstance(steps, numbers.Integral):
-        raise KinematikaError("schema", "steps-whole", "simulate.steps", got=repr(steps))
-    if not 1 <= steps <= MAX_STEPS:
-        raise KinematikaError("schema", "steps-range", "simulate.steps", limit=MAX_STEPS, got=int(steps))
-    per_row = values_per_row(model)
-    if (steps + 1) * per_row > limits.SWEEP_VALUES:
-        raise KinematikaError("schema", "simulate-steps-too-many", "simulate.steps", steps=int(steps),
-                              per_row=per_row, limit=limits.SWEEP_VALUES,
-                              most=max(limits.SWEEP_VALUES // per_row - 1, 1))
+    check_steps(model, steps, MAX_STEPS, "simulate.steps", "simulate-steps-too-many")
     if not math.isfinite(start + float(time)) or float(time) <= 1e-12 * max(1.0, abs(start)):
         raise KinematikaError("schema", "simulate-time-too-short", "simulate.time", time=_written(time),
                               start=float(start))

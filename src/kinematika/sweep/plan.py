@@ -10,7 +10,7 @@ import math
 import numbers
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Optional
+from typing import Any, Optional
 
 import numpy as np
 
@@ -69,20 +69,27 @@ def make_plan(inst: Instant, joint: Optional[str] = None, by: Optional[float] = 
         else:
             raise KinematikaError("schema", "sweep-by-needed", "sweep.by", joint=j.id, kind=j.kind.name)
     steps = steps if steps is not None else (section.steps if section else DEFAULT_STEPS)
-    if isinstance(steps, bool) or not isinstance(steps, numbers.Integral):
-        raise KinematikaError("schema", "steps-whole", "sweep.steps", got=repr(steps))
-    if not 1 <= steps <= MAX_STEPS:
-        raise KinematikaError("schema", "steps-range", "sweep.steps", limit=MAX_STEPS, got=int(steps))
-    per_row = values_per_row(model)
-    if (steps + 1) * per_row > limits.SWEEP_VALUES:
-        raise KinematikaError("schema", "steps-too-many-values", "sweep.steps", steps=int(steps), per_row=per_row,
-                              limit=limits.SWEEP_VALUES, most=max(limits.SWEEP_VALUES // per_row - 1, 1))
+    check_steps(model, steps, MAX_STEPS, "sweep.steps", "steps-too-many-values")
     if isinstance(by, bool) or not isinstance(by, numbers.Real):
         raise KinematikaError("schema", "by-number", "sweep.by", got=repr(by))
     if not math.isfinite(by):
         raise KinematikaError("schema", "by-finite", "sweep.by")
     check_travel(float(by), j, inst.scale, "sweep.by", "by")
     return Plan(j, driver, float(by), int(steps))
+
+
+def check_steps(model: Model, steps: Any, most: int, where: str, too_many: str) -> None:
+    """A number of steps a motion can take: a whole number in 1..`most`, whose rows
+    (steps + 1, each `values_per_row` numbers) fit in `limits.SWEEP_VALUES`; else a `schema`
+    error at `where` (`too_many`: the key saying how many steps would fit)."""
+    if isinstance(steps, bool) or not isinstance(steps, numbers.Integral):
+        raise KinematikaError("schema", "steps-whole", where, got=repr(steps))
+    if not 1 <= steps <= most:
+        raise KinematikaError("schema", "steps-range", where, limit=most, got=int(steps))
+    per_row = values_per_row(model)
+    if (steps + 1) * per_row > limits.SWEEP_VALUES:
+        raise KinematikaError("schema", too_many, where, steps=int(steps), per_row=per_row,
+                              limit=limits.SWEEP_VALUES, most=max(limits.SWEEP_VALUES // per_row - 1, 1))
 
 
 def check_travel(amount: float, joint: Joint, scale: float, where: str, what: str) -> None:
