@@ -105,7 +105,10 @@ export class Answers {
   show(k) {
     this.row = k;
     for (const c of this.cells) {
-      const live = c.source && c.source[k] !== undefined;
+      const solvedHere = (c.fixedRow ?? this.solvedRow) === k;
+      // a symbolic model's formulas stay at the row they were solved at (the sweep's numbers
+      // are those of draw_at); elsewhere the sweep's row is shown at once
+      const live = c.source && c.source[k] !== undefined && !(solvedHere && formula(c.fixed));
       const value = live ? c.source[k] : c.fixed;
       const held = !live && value !== null && (c.fixedRow ?? this.solvedRow) !== k;   // "–" is never held
       const text = shown(format(value, this.t), Infinity);
@@ -121,6 +124,12 @@ export class Answers {
 function section(...heads) {
   const span = (i) => (i === 1 && heads.length === 2 ? ' colspan="4"' : i > 1 && heads.length === 4 ? ' colspan="2"' : "");
   return `<tr class="section">${heads.map((h, i) => `<td${span(i)}>${esc(h)}</td>`).join("")}</tr>`;
+}
+
+/** Whether an answer holds an exact formula (a string among its numbers). */
+function formula(v) {
+  if (typeof v === "string") return true;
+  return v !== null && typeof v === "object" && Object.values(v).some(formula);
 }
 
 const round = (x) => Number(x.toFixed(9));
