@@ -88,14 +88,14 @@ def test_the_page_shows_a_mobility_error_and_the_radians_warning_in_its_language
         editor = page.get_by_test_id("model-editor")
         editor.fill(FREE)                 # a model still being built: a hint of what to add, not an error
         hint = page.get_by_test_id("missing")
-        hint.wait_for(state="visible")
+        server.wait(page, "() => !document.querySelector('[data-testid=missing]').hidden")
         assert words["missing"] in hint.inner_text().lower()
         assert page.get_by_test_id("dof").inner_text().lower() == words["dof"]
         assert page.get_by_test_id("error").is_hidden()
         editor.fill(CONFLICT)
         error = page.get_by_test_id("error")
-        page.wait_for_function("(w) => document.querySelector('[data-testid=error]').innerText.includes(w)",
-                               arg=words["error"])
+        server.wait(page, "(w) => document.querySelector('[data-testid=error]').innerText.includes(w)",
+                    words["error"])
         text = error.inner_text().lower()       # the kind is written in capitals (CSS)
         assert error.get_attribute("data-kind") == "mobility"
         assert words["kind"] in text and "drivers" in text and "degree" not in text and hint.is_hidden()
@@ -103,9 +103,8 @@ def test_the_page_shows_a_mobility_error_and_the_radians_warning_in_its_language
         page.screenshot(path=str(tmp_path / f"error-{lang}.png"))
         editor.fill(_radians())
         warning = page.get_by_test_id("warnings")
-        warning.wait_for(state="visible")
-        page.wait_for_function("(w) => document.querySelector('[data-testid=warnings]').innerText.includes(w)",
-                               arg=words["radians"])
+        server.wait(page, "(w) => { const box = document.querySelector('[data-testid=warnings]');"
+                          " return !box.hidden && box.innerText.includes(w); }", words["radians"])
         shown = warning.inner_text().lower()
         assert words["warning"] in shown and "points.a.angle" in shown and "deg(30)" in shown
         assert "radians" not in shown and "turns" not in shown

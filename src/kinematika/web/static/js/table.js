@@ -105,10 +105,11 @@ export class Answers {
   show(k) {
     this.row = k;
     for (const c of this.cells) {
-      const solvedHere = (c.fixedRow ?? this.solvedRow) === k;
-      // a symbolic model's formulas stay at the row they were solved at (the sweep's numbers
-      // are those of draw_at); elsewhere the sweep's row is shown at once
-      const live = c.source && c.source[k] !== undefined && !(solvedHere && formula(c.fixed));
+      // an answer asked in symbols stays the formula at the row it was solved at (the
+      // sweep's numbers are those of draw_at); the bodies' and points' rows, and every
+      // other row, follow the sweep at once
+      const exact = c.key.startsWith("answers.") && (c.fixedRow ?? this.solvedRow) === k && formula(c.fixed);
+      const live = c.source && c.source[k] !== undefined && !exact;
       const value = live ? c.source[k] : c.fixed;
       const held = !live && value !== null && (c.fixedRow ?? this.solvedRow) !== k;   // "–" is never held
       const text = shown(format(value, this.t), Infinity);
