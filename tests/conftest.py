@@ -13,9 +13,31 @@ import os
 from pathlib import Path
 from types import ModuleType
 
+import pytest
 from hypothesis import HealthCheck, settings
 
 DEEP = os.environ.get("KINEMATIKA_DEEP", "") not in ("", "0")
+
+deep_only = pytest.mark.skipif(not DEEP, reason="seconds of work: in a deep run (KINEMATIKA_DEEP=1)")
+"""A test whose work repeats what a quicker one shows, kept for the deep run."""
+
+
+def sampled(cases: list, keep) -> list:
+    """Every case in a deep run; in a default run those `keep` names (a set of names, or a
+    predicate on a case) — one of each kind the test tells apart, so that the 8-minute
+    suite still meets every kind and the deep run meets every case. Cases are compared by
+    their `stem`/`name`/`id`/str."""
+    if DEEP:
+        return list(cases)
+    def name(case) -> str:
+        for attr in ("stem", "name", "id"):
+            if isinstance(getattr(case, attr, None), str):
+                return getattr(case, attr)
+        return str(case)
+    chosen = [c for c in cases if (keep(c) if callable(keep) else name(c) in keep)]
+    assert chosen, f"none of {keep} among the cases"      # a renamed case is said, not skipped
+    return chosen
+
 
 _fixed = {"deadline": None, "derandomize": True, "database": None, "print_blob": True,
           "suppress_health_check": [HealthCheck.too_slow]}
@@ -36,6 +58,13 @@ HANG_CPU_SECONDS = 200.0
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"
+# one example of each kind of model (pairs, higher pairs, trains, vehicles, space, symbols,
+# groups that are not dyads): what a default run checks where a deep run checks every example
+KINDS = frozenset({
+    "four_bar", "slider_crank", "quick_return", "pin_in_circular_slot", "seed_001_rolling_pair",
+    "seed_c5_1_4_epicyclic", "eccentric_cam", "seed_c5_1_6_belt", "seed_c5_e6_bicycle",
+    "tractor_trailer", "spherical_four_bar", "fan_symbolic", "triad_six_bar",
+    "seed_c5_1_8_contact_points"})
 
 
 def hand_derivations() -> ModuleType:
