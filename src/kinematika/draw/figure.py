@@ -19,19 +19,19 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
-from .bodies import paint_bodies
 from .lock import MATPLOTLIB
 from .canvas import Canvas
 from .dimensions import avoid_dimensions, paint_dimensions, reach
 from .geometry import Box
-from .joints import paint_joints
-from .marks import KENNEDY, NORMAL, mark_groups, paint_axes, paint_curvatures, paint_marks
+from .marks import KENNEDY, NORMAL, mark_groups
+from .paint import paint
+from .picture import picture
 from ..text import shown
 from .names import bare, coordinates, plain
 from .options import DrawOptions
 from .scene import Scene
 from .style import (ACCELERATION, CENTRE, CURVATURE, INK, LONGEST, SHORTEST, TITLE_SIZE, VELOCITY)
-from .vectors import Arrow, arrows, paint_vectors
+from .vectors import Arrow, arrows
 
 REACH = 2.0          # the frame is at most this many times the mechanism with its arrows
 CLIP_MARGIN = 0.06   # infinite lines and far marks stop this far (drawing sizes) inside the axes
@@ -61,12 +61,8 @@ def _render(scene: Scene, options: DrawOptions) -> Figure:
                          len(notes), TRIAD if scene.dim == 3 else 0.0)
     view = _limits(ax).grow(-CLIP_MARGIN * scene.size)   # what the axes show, less a margin
     cv = Canvas(ax, scene, view, labels=options.labels, words=not options.bare, lang=options.lang)
-    paint_bodies(cv)
-    paint_joints(cv)
-    paint_curvatures(cv)
-    paint_axes(cv)
-    paint_marks(cv)
-    paint_vectors(cv, drawn)
+    paint(cv, picture(scene, view, drawn, labels=options.labels, words=not options.bare,
+                      lang=options.lang))
     if dimensions:
         paint_dimensions(ax, dimensions, scene.size, Box(*scene.box).centre)
         avoid_dimensions(cv.board, ax, dimensions, scene.size, Box(*scene.box).centre)

@@ -34,26 +34,58 @@ HATCH_BAND = 0.03
 
 @dataclass
 class Mark:
-    """One drawn primitive of a symbol, in page coordinates.
+    """One drawn primitive, in page coordinates: every figure is a list of them (a joint's
+    symbol, and the whole figure `draw.picture` builds), painted as they are by matplotlib
+    (`draw.paint`) and by the page (`web/static/js/figure.js`).
 
-    `colour` and `fill` are roles: "ink", "ground", "white", "none", or "body:NAME" (that
-    body's colour). `avoid` is how strongly labels keep off it (0: not at all), `radius`
-    how far around its points (points of the page)."""
+    `kind`: "polygon" (closed, filled and/or outlined; `hatch`: the frame's hatching),
+    "line" (a polyline), "dot" (a marker of `size` points at `points[0]`, its `shape` "o",
+    "D", "X" or "P"), "circle" (centre `points[0]`, radius `r` in model units), "ring" (the
+    band between radii `r - band` and `r`), "arrow" (from `points[0]` to `points[1]`, its
+    `head` "-|>" or "<|-|>" of `size` points, set `shift` points sideways), "text" (`text` at
+    `points[0]`, placed by the painter near it, towards `prefer` when given, clear of the
+    others in order of `priority`) and "clear" (nothing painted: a polyline that labels keep
+    off).
 
-    kind: str                           # "polygon", "line" or "dot"
+    `colour` (the stroke) and `fill` are colours or, in a joint's symbol, roles: "ink",
+    "ground", "white", "none", or "body:NAME" (that body's colour), which `draw.picture`
+    turns into colours. Widths and sizes are in points; `dash` is True (dash-dot, an axis) or
+    the lengths of dashes and gaps in line widths. `avoid` is how strongly labels keep off it
+    (0: not at all), `radius` how far around its points (points of the page). `moves_with`
+    is the body that carries it (an animation and the page move it with that body); `group`
+    ("ROLE:KEY") gathers the marks of one thing drawn (an instant centre's marker and label)
+    and `about` holds what the page needs to move it (a live arrow's swept point)."""
+
+    kind: str                           # see above
     points: Vec                         # (n, 2)
     colour: str = "ink"
     fill: str = "none"
     width: float = 1.3                  # line width, points
-    size: float = 0.0                   # a dot's diameter, points
+    size: float = 0.0                   # a dot's diameter, an arrow head's, a text's font, points
     hatch: bool = False                 # the frame's hatching
-    dash: bool = False                  # dash-dot (an axis)
-    zorder: int = 3
+    dash: Any = False                   # True: dash-dot (an axis); or dash lengths in line widths
+    zorder: float = 3
     moves_with: Optional[str] = None    # the body that carries it (None: fixed)
     gid: str = ""
     avoid: float = 1.0
     radius: float = 0.0
     still: bool = False                 # true of a still figure only (not moved with any body)
+    alpha: float = 1.0                  # opacity of the stroke and the fill
+    r: float = 0.0                      # a circle's or a ring's radius, model units
+    band: float = 0.0                   # a ring's width, model units
+    cap: str = ""                       # line ends: "round", "butt" or "" (projecting)
+    join: str = ""                      # corners: "round" or "" (miter)
+    shape: str = "o"                    # a dot's marker
+    head: str = ""                      # an arrow's heads
+    shift: float = 0.0                  # an arrow's sideways shift, points
+    text: str = ""                      # a text's words (matplotlib mathtext)
+    prefer: Optional[Vec] = None        # a text's preferred direction from its anchor
+    priority: int = 0                   # a text's order of placing (lower first)
+    weight: str = "normal"              # a text's font
+    style: str = "normal"
+    layer: str = ""                     # results the page switches: velocity, acceleration, centres, curvature
+    group: str = ""                     # ROLE:KEY of the thing it belongs to
+    about: Optional[dict] = None        # what the page needs to move it (a live arrow)
 
     def as_json(self) -> dict:
         """The mark as the page receives it."""
