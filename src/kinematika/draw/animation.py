@@ -22,7 +22,7 @@ from .geometry import Box
 from .options import DrawOptions
 from .scene import Scene, VectorView
 from .names import plain, value_text
-from .style import INK, KIND_COLOURS, POINT_LABEL, TITLE_SIZE
+from .style import INK, KIND_COLOURS, PATH, POINT_LABEL, TITLE_SIZE
 from .geometry import perpendicular, unit
 from ..joints.symbols import Mark
 from .paint import artist
@@ -278,7 +278,7 @@ class Motion:
         for ref in self._traced(trace):
             path = self.positions(ref)
             ax.plot(*path.T, lw=1.0, ls=(0, (3, 2)), color=POINT_LABEL, alpha=0.55, zorder=1)
-            line, = ax.plot([], [], lw=1.6, color="#6d4c41", alpha=0.9, zorder=2,
+            line, = ax.plot([], [], lw=1.6, color=PATH, alpha=0.9, zorder=2,
                             gid=f"trace:{ref}")
             self.traces.append((line, path))
         for v in self.live:

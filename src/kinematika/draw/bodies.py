@@ -56,12 +56,14 @@ def _body(ctx: Context, body: BodyView) -> None:
     if wheels and all(_on_wheel(p, wheels) for p in pts):
         _radii(ctx, body, pts, wheels)       # the disc is the body: mark its points by radii
         pts = []
+    side = None                              # a bar's label beside it, away from the mechanism
     if body.skeleton:
         _skeleton(ctx, body, body.colour)
         longest = max(body.skeleton, key=lambda line: float(np.ptp(np.asarray(line), axis=0).sum()))
         anchor, pts = np.asarray(longest)[len(longest) // 2], []
         if len(longest) == 2:
             anchor = (longest[0] + longest[1]) / 2
+            side = _beside(ctx, longest[0], longest[1])
     if len(pts) >= 3:
         hull = convex_hull(pts)
         if len(hull) >= 3 and _area(hull) > 1e-5 * ctx.size ** 2:
@@ -76,6 +78,7 @@ def _body(ctx: Context, body: BodyView) -> None:
                 zorder=2, gid=f"body:{body.name}", moves_with=body.name)
         ctx.avoid(*pts)
         anchor = (pts[0] + pts[1]) / 2
+        side = _beside(ctx, pts[0], pts[1])
     for shape in body.shapes:
         _moving_shape(ctx, body, shape)
         if anchor is None and shape.kind == "circle":
@@ -85,8 +88,21 @@ def _body(ctx: Context, body: BodyView) -> None:
     if anchor is not None:
         name = plain(noun(body.label or body.name)) + \
             (f" ({body.index or body.number})" if ctx.scene.numbered else "")
-        ctx.label(anchor, name, body.colour, 5, f"body:{body.name}", body=body.name,
-                  group=f"body:{body.name}", style="italic")
+        ctx.label(anchor, name, body.colour, 5, f"body:{body.name}", side, body=body.name,
+                  group=f"body:{body.name}", style="italic", radius=BAR_WIDTH / 2 if side is not None else 0.0)
+
+
+def _beside(ctx: Context, p: np.ndarray, q: np.ndarray) -> Optional[np.ndarray]:
+    """The side of the bar pq its name goes: across it, away from the moving bodies' centroid
+    (upwards when the bar passes through it)."""
+    d = np.asarray(q, dtype=float) - np.asarray(p, dtype=float)
+    if np.linalg.norm(d) <= 1e-12 * ctx.size:
+        return None
+    n = perpendicular(d / np.linalg.norm(d))
+    away = float(n @ ((p + q) / 2 - ctx.centroid()))
+    if abs(away) <= 1e-9 * ctx.size:
+        away = float(n[1]) or float(n[0])
+    return n if away > 0 else -n
 
 
 def _on_wheel(p: np.ndarray, wheels: list[ShapeView]) -> bool:
@@ -288,7 +304,7 @@ def _points(ctx: Context) -> None:
             if first:
                 named.add(name)
                 ctx.label(p, plain(name), POINT_LABEL, 3, f"point:{name}", body=mover,
-                          group=f"point:{name}", weight="bold")
+                          group=f"point:{name}", weight="bold", radius=2.0)
 
 
 def _distinct(pts: list, tol: float) -> list:

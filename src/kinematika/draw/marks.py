@@ -90,7 +90,7 @@ def _mark(ctx: Context, group: list[MarkView]) -> None:
                 layer="centres", group=f"mark:{mark.key}")
     ctx.avoid(p, weight=3.0, radius=5.0)
     ctx.label(p, group_label(group), COLOURS[mark.kind], 2, _key(group), layer="centres",
-              group=f"mark:{mark.key}")
+              group=f"mark:{mark.key}", radius=5.5)
 
 
 def _far_mark(ctx: Context, group: list[MarkView]) -> None:
@@ -106,7 +106,8 @@ def _far_mark(ctx: Context, group: list[MarkView]) -> None:
     at = coordinates(mark.point, ctx.size, ctx.lang)
     where = f"at {at}" if ctx.words else f"= {at}"
     ctx.label(tail, f"{group_label(group)} {where}", COLOURS[mark.kind], 2, _key(group), -d,
-              layer="centres", group=f"mark:{mark.key}")
+              layer="centres", group=f"mark:{mark.key}",
+              about={"name": group_label(group), "say": "far-off", "args": {"place": at}})
 
 
 def _infinite_mark(ctx: Context, group: list[MarkView]) -> None:
@@ -122,7 +123,9 @@ def _infinite_mark(ctx: Context, group: list[MarkView]) -> None:
             group=f"mark:{mark.key}")
     ctx.avoid(q - half, q + half, weight=3.0)
     ctx.label(q, f"{group_label(group)} {'at ∞' if ctx.words else '→ ∞'}", COLOURS[mark.kind], 2,
-              _key(group), np.array([-d[1], d[0]]), layer="centres", group=f"mark:{mark.key}")
+              _key(group), np.array([-d[1], d[0]]), layer="centres", group=f"mark:{mark.key}",
+              about={"name": group_label(group), "say": "at-infinity",
+                     "args": {"direction": coordinates(d, 1.0, ctx.lang)}})
 
 
 def _kennedy(ctx: Context, line, style: Optional[dict] = None) -> None:
@@ -164,7 +167,7 @@ def _curvature(ctx: Context, c: CurvatureView) -> None:
                 zorder=10, gid=f"curvature-centre:{c.ref}", layer="curvature", group=group)
         ctx.avoid(c.centre, weight=3.0, radius=4.5)
         ctx.label(c.centre, c.label, CURVATURE, 2, f"curvature:{c.ref}", layer="curvature",
-                  group=group)
+                  group=group, radius=4.5)
     else:
         seg = clip_segment(c.point, c.centre, ctx.view)
         ctx.label(c.point + 0.5 * (seg[1] - seg[0]) if seg is not None else c.point,

@@ -21,7 +21,7 @@ from ..joints import kind as joint_kind
 from ..joints.symbols import Mark, ring
 from .geometry import Box, clip_line
 from .scene import Scene
-from .style import GROUND, INK
+from .style import GROUND, INK, LABEL_SIZE
 
 
 class Context:
@@ -88,9 +88,11 @@ class Context:
               prefer: Any = None, body: Optional[str] = None, group: str = "", layer: str = "",
               **kw: Any) -> None:
         """A label at `anchor`, placed by the painter clear of the others (lower `priority`
-        first), towards `prefer` when given; none when labels are off."""
+        first), towards `prefer` when given, `radius` points clear of the anchor (a marker's
+        size); none when labels are off."""
         if not self.labels:
             return
+        kw.setdefault("size", LABEL_SIZE)
         self.add("text", [anchor], text=text, colour=colour, priority=priority, gid=gid,
                  prefer=None if prefer is None else np.asarray(prefer, dtype=float),
                  moves_with=body, group=group, layer=layer, zorder=20, **kw)

@@ -146,9 +146,9 @@ def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
         about = {"ref": v.ref, "kind": v.kind, "relative_to": v.relative_to, "symbol": v.label,
                  "at_point": arrow.tip_at_point, "origin": v.origin, "value": v.value,
                  "magnitude": v.magnitude}
+        ctx.add("arrow", [arrow.start, arrow.end], layer=layer, group=group, about=about,
+                **arrow_mark(arrow, v.key, shift))          # of no length: none drawn
         if arrow.drawn:
-            ctx.add("arrow", [arrow.start, arrow.end], layer=layer, group=group, about=about,
-                    **arrow_mark(arrow, v.key, shift))
             ctx.avoid(arrow.start, arrow.end, weight=3.0)
             tail = arrow.start if arrow.tip_at_point else arrow.end      # the label at the free end
             ctx.label(tail, text, colour, 1, v.key, arrow.end - arrow.start, layer=layer,
