@@ -218,8 +218,8 @@ export class Figure {
     const p = m.points, paint = this.paintOf(m);
     if (m.kind === "dot") {
       const half = (m.size / 2) * PT * this.px, [x, y] = p[0];
-      if (!SHAPES[m.shape]) return el("circle", { cx: x, cy: -y, r: half, ...paint }, parent);
-      return el("polygon", { points: poly(SHAPES[m.shape].map(([u, v]) => [x + u * half, y + v * half])), ...paint }, parent);
+      if (!SHAPES[m.shape]) return el("circle", { cx: x, cy: -y, r: half, ...paint, class: "dot" }, parent);
+      return el("polygon", { points: poly(SHAPES[m.shape].map(([u, v]) => [x + u * half, y + v * half])), ...paint, class: "dot" }, parent);
     }
     if (m.kind === "line") {
       if (p.some((q) => q[0] === null)) return el("path", { d: broken(p), ...paint, fill: "none" }, parent);
