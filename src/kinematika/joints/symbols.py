@@ -1,7 +1,8 @@
-"""How joints are drawn: each kind's `symbol` gives marks — polygons, lines and dots in the
-model's (page) coordinates, with their colours by role — that every figure paints as they
-are: matplotlib (`draw.joints`) and the page (`web/static/js/figure.js`) alike, so that no
-view redraws a joint symbol of its own.
+"""How joints are drawn, and the `Mark`, the primitive every figure is made of: each kind's
+`symbol` gives marks — polygons, lines and dots in the model's (page) coordinates, with
+their colours by role — which `draw.picture` puts in the figure beside the bodies' and the
+results' marks, and every painter paints as they are: matplotlib (`draw.paint`) and the page
+(`web/static/js/figure.js`) alike, so that no view redraws a joint symbol of its own.
 
 A symbol is fixed in the body it belongs to, so that an animation moves it with that body:
 a slider's block with the slider, its guide with the guiding body; a pin with the moving
@@ -12,8 +13,8 @@ The context a symbol is drawn in (duck-typed, given by the figure): `size` (the 
 size), `frame` (the fixed body), `still` (a still figure, not an animation's frame),
 `centroid()` (of the moving bodies' points: "away from the mechanism"), `points(body)`
 (its points on the page), `clip(p, d, inset)` (the part of the line through p along d inside
-the view, less `inset`, or None), `keep_out()` (closed outlines that fixed guides stop short
-of: the moving bodies' wheels and cams).
+the figure's reach, less `inset`, or None), `keep_out()` (closed outlines that fixed guides
+stop short of: the moving bodies' wheels and cams) — `draw.picture.Context`.
 """
 from __future__ import annotations
 
@@ -86,12 +87,6 @@ class Mark:
     layer: str = ""                     # results the page switches: velocity, acceleration, centres, curvature
     group: str = ""                     # ROLE:KEY of the thing it belongs to
     about: Optional[dict] = None        # what the page needs to move it (a live arrow)
-
-    def as_json(self) -> dict:
-        """The mark as the page receives it."""
-        return {"kind": self.kind, "points": self.points.tolist(), "colour": self.colour, "fill": self.fill,
-                "width": self.width, "size": self.size, "hatch": self.hatch, "dash": self.dash,
-                "zorder": self.zorder, "body": self.moves_with, "id": self.gid, "still": self.still}
 
 
 # shapes of symbols -------------------------------------------------------------------------

@@ -195,7 +195,7 @@ export class Figure {
     if (role === "joint") node.setAttribute("data-joint", key);
     if (role === "point") {
       node.setAttribute("data-point", key);
-      this.points.push({ name: key, body: m.body, xy: m.points[0], dot: node });
+      this.points.push({ name: key, body: m.body, xy: m.points[0] });
     }
     if (m.xyz) this.track(node, m);
   }
@@ -297,7 +297,7 @@ export class Figure {
   }
 
   /** How far (model units) a label stands from its anchor: `GAP` beyond its `radius`. */
-  gap(m) { return (GAP + (m.radius || 0)) * PT * this.px; }
+  gap(m) { return (GAP + ((m && m.radius) || 0)) * PT * this.px; }
 
   /** Keep `node` of a 3D mark to be placed from its model coordinates at every row. */
   track(node, m) {
