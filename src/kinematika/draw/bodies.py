@@ -88,7 +88,7 @@ def _body(ctx: Context, body: BodyView) -> None:
     if anchor is not None:
         name = plain(noun(body.label or body.name)) + \
             (f" ({body.index or body.number})" if ctx.scene.numbered else "")
-        ctx.label(anchor, name, body.colour, 5, f"body:{body.name}", side, body=body.name,
+        ctx.label(anchor, name, body.colour, 5, f"body:{body.name}", body=body.name, side=side,
                   group=f"body:{body.name}", style="italic", radius=BAR_WIDTH / 2 if side is not None else 0.0)
 
 

@@ -45,7 +45,8 @@ class Mark:
     band between radii `r - band` and `r`), "arrow" (from `points[0]` to `points[1]`, its
     `head` "-|>" or "<|-|>" of `size` points, set `shift` points sideways), "text" (`text` at
     `points[0]`, placed by the painter near it, towards `prefer` when given, clear of the
-    others in order of `priority`) and "clear" (nothing painted: a polyline that labels keep
+    others in order of `priority`; `side` is a good side for a painter that places labels
+    without weighing what is drawn, such as the page's) and "clear" (nothing painted: a polyline that labels keep
     off).
 
     `colour` (the stroke) and `fill` are colours or, in a joint's symbol, roles: "ink",
@@ -81,6 +82,7 @@ class Mark:
     shift: float = 0.0                  # an arrow's sideways shift, points
     text: str = ""                      # a text's words (matplotlib mathtext)
     prefer: Optional[Vec] = None        # a text's preferred direction from its anchor
+    side: Optional[Vec] = None          # where it goes for a painter that does not weigh the drawing
     priority: int = 0                   # a text's order of placing (lower first)
     weight: str = "normal"              # a text's font
     style: str = "normal"

@@ -103,7 +103,8 @@ def mark_data(m: Mark, lift: Any = None) -> dict[str, Any]:
              "layer": m.layer or None, "still": m.still or None}
     if m.kind == "text":
         extra.update(text=runs(m.text), priority=m.priority, weight=m.weight, style=m.style,
-                     prefer=None if m.prefer is None else _floats(m.prefer), radius=m.radius)
+                     prefer=None if m.prefer is None else _floats(m.prefer),
+                     side=None if m.side is None else _floats(m.side), radius=m.radius)
     if m.about:
         extra["about"] = {k: runs(v) if k in ("symbol", "name") else _value(v) for k, v in m.about.items()}
     if lift is not None and m.moves_with is not None:

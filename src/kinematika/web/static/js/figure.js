@@ -290,7 +290,7 @@ export class Figure {
     const node = runsText(parent, runs, { "font-size": m.size * PT * this.px, fill: m.colour,
       "font-weight": m.weight === "bold" ? "bold" : null, "font-style": m.style === "italic" ? "italic" : null,
       class: m.group && m.group.startsWith("point:") ? "point-label" : null });
-    placeText(node, m.points[0], this.gap(m), m.prefer);
+    placeText(node, m.points[0], this.gap(m), m.prefer || m.side);
     this.texts.push({ node, m, body: m.body, at: m.points[0] });
     if (m.xyz) this.tracked.push({ node, body: m.body, kind: "text", xyz: m.xyz, m });
     return node;
@@ -434,7 +434,7 @@ export class Figure {
     }
     for (const x of this.texts) {
       const p = this.placed(x.body, x.at);
-      if (p && !x.tracked) placeText(x.node, p, this.gap(x.m), x.m.prefer);
+      if (p && !x.tracked) placeText(x.node, p, this.gap(x.m), x.m.prefer || x.m.side);
       x.node.setAttribute("visibility", p ? "visible" : "hidden");
     }
     for (const pt of this.points) {
@@ -530,7 +530,7 @@ export class Figure {
       if (t.kind === "circle") {
         t.node.setAttribute("cx", pts[0][0]);
         t.node.setAttribute("cy", -pts[0][1]);
-      } else if (t.kind === "text") placeText(t.node, pts[0], this.gap(t.m), t.m.prefer);
+      } else if (t.kind === "text") placeText(t.node, pts[0], this.gap(t.m), t.m.prefer || t.m.side);
       else t.node.setAttribute("points", poly(pts));
     }
     for (const x of this.texts) x.tracked = !!(this.tracked.find((t) => t.node === x.node) && placed[x.body]);
