@@ -116,7 +116,7 @@ def mark_data(m: Mark, lift: Any = None) -> dict[str, Any]:
 def _lifter(scene: Scene, twin: Scene) -> Any:
     """For a 3D scene and its depth twin: a mark's points in space, when each is a point, a
     skeleton's vertex, a shape's vertex or centre, or a joint's place of the body it moves
-    with (else None); a label's anchor at the depth of the nearest of those."""
+    with (else None); a label's anchor at the depth of those nearest to it."""
     P = scene.projection.matrix
     towards = np.cross(P[0], P[1])
     tol = 1e-7 * scene.size
@@ -148,16 +148,21 @@ def _lifter(scene: Scene, twin: Scene) -> Any:
             for body in (joint.a, joint.b):
                 note(body, joint.at, deep.at)
 
-    def nearest(body: Optional[str], q: np.ndarray) -> Optional[list]:
-        near = min(depths.get(body, []), key=lambda qd: float(np.linalg.norm(qd[0] - q)), default=None)
-        return None if near is None else space(q, near[1])
+    def between(body: Optional[str], q: np.ndarray) -> Optional[list]:
+        """`q` at the depth of the body's known places, weighted by nearness (a bar's middle
+        at the mean of its ends')."""
+        known_here = depths.get(body, [])
+        if not known_here:
+            return None
+        w = np.array([1 / max(float(np.linalg.norm(p - q)), tol) ** 2 for p, _ in known_here])
+        return space(q, float(w @ np.array([d for _, d in known_here]) / w.sum()))
 
     def lift(m: Mark) -> Optional[list]:
         pts = np.asarray(m.points, dtype=float)
         out = [known.get((m.moves_with, *np.round(q / tol).astype(int))) if np.all(np.isfinite(q)) else None
                for q in pts]
         if m.kind == "text" and out[0] is None:
-            out = [nearest(m.moves_with, pts[0])]
+            out = [between(m.moves_with, pts[0])]
         return out if all(x is not None for x in out) else None
     return lift
 
