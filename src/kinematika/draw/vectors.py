@@ -150,8 +150,8 @@ def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
                 **arrow_mark(arrow, v.key, shift))          # of no length: none drawn
         if arrow.drawn:
             ctx.avoid(arrow.start, arrow.end, weight=3.0)
-            tail = arrow.start if arrow.tip_at_point else arrow.end      # the label at the free end
-            ctx.label(tail, text, colour, 1, v.key, arrow.end - arrow.start, layer=layer,
-                      group=group, about=said)
+            free, away = (arrow.start, arrow.start - arrow.end) if arrow.tip_at_point else \
+                (arrow.end, arrow.end - arrow.start)                # the label beyond the free end
+            ctx.label(free, text, colour, 1, v.key, away, layer=layer, group=group, about=said)
         else:
             ctx.label(arrow.start, text, colour, 1, v.key, layer=layer, group=group, about=said)

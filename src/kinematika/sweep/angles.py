@@ -49,7 +49,8 @@ def reference_line(points: dict[str, Any], frame: dict[str, Any]) -> Optional[Re
 
 def body_angle(result: Any, body: str) -> Optional[np.ndarray]:
     """The absolute angle (degrees, continuous) of the body's line (`reference_line`, at the
-    first assembled row) over the rows; None for a body with one point (planar)."""
+    first assembled row, the frame's points where the rows give them, else the body's points
+    that stay put) over the rows; None for a body with one point (planar)."""
     if getattr(result, "dimension", 2) != 2:
         return None
     frame = getattr(result, "frame", "ground")
@@ -59,6 +60,9 @@ def body_angle(result: Any, body: str) -> Optional[np.ndarray]:
              for k, v in result.points.items() if k.partition("@")[2] == frame}
     if not pos:
         return None
+    if not fixed:                 # rows without the frame's points: where it carries them is
+        scale = max(float(np.nanmax(np.abs(p))) for p in pos.values()) or 1.0    # where they stay
+        fixed = {n: p for n, p in pos.items() if np.nanmax(np.abs(p - p[0]), initial=0.0) <= 1e-9 * scale}
     ok = np.flatnonzero(np.all(np.isfinite(np.hstack(list(pos.values()))), axis=1))
     row = int(ok[0]) if len(ok) else 0
     line = reference_line({n: p[row] for n, p in pos.items()}, {n: p[row] for n, p in fixed.items()})

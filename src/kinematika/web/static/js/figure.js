@@ -368,7 +368,7 @@ export class Figure {
     const tip = add(origin, mul(value, factor));
     const [start, end] = flip ? [add(origin, sub(origin, tip)), origin] : [origin, tip];
     this.placeArrow(a.node, a.m, start, end);
-    placeText(a.label, flip ? start : end, GAP * PT * this.px, sub(end, start));
+    placeText(a.label, flip ? start : end, GAP * PT * this.px, flip ? sub(start, end) : sub(end, start));   // beyond the free end
     a.value.textContent = num(magnitude) + (enlarged ? ` ${this.t("enlarged")}` : "");
   }
 
