@@ -1,7 +1,9 @@
-"""The renders docs/exercises.md shows: a sheet and a page of the key in eu and ca, the
-four-bar's statement figure, one quiz question as Moodle shows it with three answers
-(right, the Coriolis term left out, degrees taken as radians), and the page's exercise mode
-with two answers checked. Needs Chromium.
+"""The renders docs/exercises.md shows: a Basque sheet of the quick-return with a student's
+name, the start of the Catalan key of the notes' epicyclic train (its contents and a
+variant), the statement figures of the quick-return, the epicyclic train and the four-bar,
+one quiz question as Moodle shows it with three answers (right, the Coriolis term left out,
+degrees taken as radians), and the page's exercise mode with two answers checked. Needs
+Chromium.
 
     .venv/bin/python scripts/exercise_renders.py [OUT]       (default docs/exercises)
 """
@@ -22,6 +24,10 @@ from tests.exercise.moodle_view import question_page  # noqa: E402
 
 P_PAIR = ROOT / "examples" / "exercises" / "p_pair_coriolis.yaml"
 FOUR_BAR = ROOT / "examples" / "exercises" / "four_bar.yaml"
+QUICK_RETURN = ROOT / "examples" / "exercises" / "quick_return.yaml"
+EPICYCLIC = ROOT / "examples" / "exercises" / "epicyclic.yaml"
+CLASS = ("ID zenbakia;Izena;Abizenak;Helbide elektronikoa\n"
+         "7001;Ane;Etxeberria Lasa;ane.etxeberria@ikasle.eus\n7002;Iñaki;Ibáñez Goñi;inaki.ibanez@ikasle.eus\n")
 WIDTH = 794                       # an A4 page's width at 96 px per inch
 
 
@@ -45,7 +51,7 @@ def page_render(work: Path, png: Path) -> None:
     write_exercise(ex, work / "page", solutions=False, pdf=False)
     fragment = (work / "page" / "links.txt").read_text().split("\t")[1].strip()
     v = ex.variants[0]
-    wrong = {m.kind: m for m in ex.mistakes(v)}["coriolis-omitted"].rows["q2"].value
+    wrong = {m.kind: m for m in v.mistaken}["coriolis-omitted"].rows["q2"].value
     server = PageServer(Start())
     try:
         with sync_playwright() as p:
@@ -56,34 +62,42 @@ def page_render(work: Path, png: Path) -> None:
             page.get_by_test_id("exercise-input-q2").fill(f"{wrong:.4g}".replace(".", ","))
             page.get_by_test_id("exercise-check").click()
             page.get_by_test_id("exercise-score").filter(has_text="10").wait_for()
-            page.screenshot(path=str(png))
+            page.screenshot(path=str(png), full_page=True)
             browser.close()
     finally:
         server.stop()
 
 
 def main(out: Path) -> None:
+    from kinematika.exercise.roster import read_class
+
     out.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp())
     shots = []
-    for lang in ("eu", "ca"):
-        ex = make_exercise(load_model(P_PAIR), ["s=300:500:10", "beta=20:40:1", "w=2:6:0.5"], 2, 7, lang,
-                           source=P_PAIR)
-        folder = work / lang
-        write_exercise(ex, folder, pdf=False)
-        shots += [(folder / "sheets.html", out / f"sheet-{lang}.png", 1122),
-                  (folder / "key.html", out / f"key-{lang}.png", 2200)]
-        if lang == "eu":
-            quiz = (folder / "quiz.xml").read_text(encoding="utf-8")
-            v = ex.variants[0]
-            mistakes = {m.kind: m for m in ex.mistakes(v)}
-            rows = [r.question for r in v.rows]
-            answers = {1: repr(v.rows[0].value),
-                       2: repr(mistakes["coriolis-omitted"].rows["q2"].value),
-                       rows.index("q5.x") + 1: repr(mistakes["degrees-as-radians"].rows["q5.x"].value)}
-            page = work / "moodle.html"
-            page.write_text(question_page(quiz, 1, answers), encoding="utf-8")
-            shots.append((page, out / "moodle-question-eu.png", 1500))
+    roster = work / "class.csv"
+    roster.write_bytes(CLASS.encode("cp1252"))                    # as Excel saves it in Basque
+    qr = make_exercise(load_model(QUICK_RETURN), ["th=20:160:5", "w=5:15:1"], 2, 11, "eu", source=QUICK_RETURN,
+                       students=read_class(roster))
+    write_exercise(qr, work / "qr", pdf=False)
+    shots.append((work / "qr" / "sheets.html", out / "sheet-eu.png", 1122))
+    shutil.copy(work / "qr" / "figures" / "variant-001.png", out / "figure-quick-return-eu.png")
+    ep = make_exercise(load_model(EPICYCLIC), ["r=30:80:5", "w=2:20:1"], 2, 11, "ca", source=EPICYCLIC)
+    write_exercise(ep, work / "ep", pdf=False)
+    shots.append((work / "ep" / "key.html", out / "key-ca.png", 2000))
+    shutil.copy(work / "ep" / "figures" / "variant-001.png", out / "figure-epicyclic-ca.png")
+    ex = make_exercise(load_model(P_PAIR), ["s=300:500:10", "beta=20:40:1", "w=2:6:0.5"], 2, 7, "eu",
+                       source=P_PAIR)
+    write_exercise(ex, work / "pp", pdf=False)
+    quiz = (work / "pp" / "quiz.xml").read_text(encoding="utf-8")
+    v = ex.variants[0]
+    mistakes = {m.kind: m for m in v.mistaken}
+    rows = [r.question for r in v.rows]
+    answers = {1: repr(v.rows[0].value),
+               2: repr(mistakes["coriolis-omitted"].rows["q2"].value),
+               rows.index("q5.x") + 1: repr(mistakes["degrees-as-radians"].rows["q5.x"].value)}
+    page = work / "moodle.html"
+    page.write_text(question_page(quiz, 1, answers), encoding="utf-8")
+    shots.append((page, out / "moodle-question-eu.png", 1500))
     fb = make_exercise(load_model(FOUR_BAR), ["a=25:35:1", "theta2=0:355:5"], 1, 3, "ca", source=FOUR_BAR)
     write_exercise(fb, work / "four_bar", solutions=False, pdf=False)
     shutil.copy(work / "four_bar" / "figures" / "variant-001.png", out / "figure-four-bar-ca.png")

@@ -29,6 +29,10 @@ settings.load_profile("deep" if DEEP else "default")
 # never red. Playwright counts in milliseconds.
 HANG_SECONDS = 120.0
 BROWSER_WAIT = int(HANG_SECONDS * 1000)
+# A page that waits on the server's computation (an exact solve of a large model, a long
+# simulation) is waited on by the server's CPU time, not the clock: what a loaded machine
+# stretches is the wall time, never the work. Past this much CPU time the work is a hang.
+HANG_CPU_SECONDS = 200.0
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"
@@ -51,3 +55,12 @@ def pytest_xdist_auto_num_workers(config) -> int:
     on 2 cores under two busy loops the suite took 412 s with two workers, 329 s with three
     (docs/testing.md)."""
     return (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1) + 1
+
+
+def pytest_runtest_logreport(report) -> None:
+    """With KINEMATIKA_DURATIONS=FILE, each test's phase, outcome and seconds are appended to
+    FILE as they finish (a run stopped half way still says where its time went)."""
+    path = os.environ.get("KINEMATIKA_DURATIONS")
+    if path and (report.when == "call" or report.outcome != "passed"):
+        with open(path, "a", encoding="utf-8") as out:
+            out.write(f"{report.duration:.2f}\t{report.outcome}\t{report.when}\t{report.nodeid}\n")

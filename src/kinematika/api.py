@@ -13,7 +13,6 @@ from typing import Any, Optional
 
 from .model.builder import Mechanism
 from .model.source import ModelLike, as_model
-from .questions import answer
 from .solution import Solution
 from .sweep.posing import prepare, solved
 
@@ -28,6 +27,8 @@ def solve(source: ModelLike, symbolic: bool | None = None, **options: Any) -> So
 
 def answers(sol: Solution) -> list[tuple[Any, Any]]:
     """Each question of the model with its raw answer, in order."""
+    from .questions import answer       # the questions' modules only when a model asks them
+
     return [(q, answer(sol, q)) for q in sol.model.questions]
 
 

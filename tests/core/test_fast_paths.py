@@ -233,7 +233,7 @@ def test_the_fast_options_are_the_typer_commands_options():
     from kinematika.cli import app, fast_options, run as commands
 
     group = typer.main.get_command(app)
-    assert set(fast_options.OPTIONS) == {"solve", "centres", "sweep"}
+    assert set(fast_options.OPTIONS) == {"solve", "centres", "sweep", "simulate"}
     for name, table in fast_options.OPTIONS.items():
         command = group.commands[name]
         body = inspect.signature(getattr(commands, f"{name}_command")).parameters
@@ -289,6 +289,8 @@ def test_an_integer_option_bounded_on_one_side():
     ["sweep", "a.yaml", "--steps", "0"], ["sweep", "a.yaml", "--steps", "-3"], ["sweep", "a.yaml", "--steps", "10000001"],
     ["sweep", "a.yaml", "--by", "1_0"], ["sweep", "a.yaml", "--by"], ["sweep", "a.yaml", "--json=1"],
     ["draw", "a.yaml", "-o", "x.png"], ["sweep", "a.yaml", "--csv", ""], [],
+    ["simulate", "a.yaml", "--steps", "0"], ["simulate", "a.yaml", "--time", "1e"],
+    ["simulate", "a.yaml", "--set", "v=3"], ["simulate", "a.yaml", "--lang", "eu"],
 ])
 def test_the_fast_path_leaves_anything_unusual_to_typer(argv):
     assert fast.parse(argv) is None
@@ -312,7 +314,12 @@ def _fast(*args: str) -> subprocess.CompletedProcess:
     ["sweep", "{ex}/rssr_spatial_four_bar.yaml", "--steps=6", "--by", "-90", "--json"],
     ["sweep", "{ex}/four_bar.yaml", "--steps", "8"],
     ["solve", "{ex}/missing.yaml", "--json"],
-], ids=["solve-json", "solve", "centres", "sweep-json", "sweep-3d", "summary", "missing"])
+    ["simulate", "{ex}/tractor_trailer_turning.yaml", "--time", "2", "--steps", "4", "--json"],
+    ["simulate", "{ex}/tractor_trailer_turning.yaml", "--time=2", "--steps", "4"],
+    ["simulate", "{ex}/tractor_trailer.yaml", "--time", "5", "--steps", "5", "--json"],
+    ["simulate", "{ex}/tractor_trailer.yaml", "--time", "-1"],
+], ids=["solve-json", "solve", "centres", "sweep-json", "sweep-3d", "summary", "missing", "simulate-json",
+        "simulate", "simulate-stopped", "simulate-negative-time"])
 def test_the_fast_path_prints_what_typer_prints(args):
     from typer.testing import CliRunner
 
@@ -367,6 +374,28 @@ def test_the_one_pass_yaml_reader_gives_what_yaml_load_gives(text):
         expected = yaml.load(text, Loader=yaml.SafeLoader)
         assert repr(tree) == repr(expected)
         assert json.dumps(tree, default=str) == json.dumps(expected, default=str)
+
+
+NUMBER_TEXTS = ["0", "-0", "+7", "42", "007", "08", "0o17", "0x1f", "0b101", "1_000", "-1_0.5", "4.", "-4.50",
+                "+.5", ".5", "-.5", "1e5", "1.0e5", "1.0e+5", "1.0E-5", "00.5", "-0.0", "+0.", "12:30", "1:30.5",
+                "1.5.2", "9" * 30, "-" + "9" * 30 + ".25", "1" * 400 + ".0", ".inf", "-.Inf", ".nan", "1.5x", "'4.0'",
+                '"7"', "0.1000000000000000055511151231257827", "1.0e999", "-" + "1" * 400 + ".5"]
+
+
+@pytest.mark.parametrize("number", NUMBER_TEXTS)
+def test_the_one_pass_reader_reads_numbers_as_yaml_load_does(number):
+    """Plain decimal integers and numbers with a point are converted without the resolver's
+    search: the values (their types, signs, infinities) are yaml.load's, in a mapping and in a
+    list."""
+    import yaml
+
+    from kinematika.model.files import _UNUSUAL, _plain_yaml
+
+    for text in (f"a: {number}\n", f"- [{number}, {number}]\n"):
+        tree = _plain_yaml(text)
+        assert tree is not _UNUSUAL
+        expected = yaml.load(text, Loader=yaml.SafeLoader)
+        assert repr(tree) == repr(expected), text         # the values, their types and signs
 
 
 @pytest.mark.parametrize("path", EXAMPLE_FILES, ids=[p.stem for p in EXAMPLE_FILES])

@@ -81,3 +81,31 @@ def rows(answers):
             for axis, x in zip("xy", v):
                 out[f"{q}.{axis}"] = (float(x), size)
     return out
+
+
+def three_figures(x):
+    """`x` (a number or an array) rounded to three significant figures, as a student writes
+    an intermediate result."""
+    def one(v):
+        v = float(v)
+        if v == 0 or not math.isfinite(v):
+            return v
+        return round(v, 2 - math.floor(math.log10(abs(v))))
+    x = np.asarray(x, dtype=float)
+    return np.vectorize(one)(x) if x.ndim else one(x)
+
+
+def p_pair_by_hand(s, beta, ex, ey, w, al):
+    """The P pair solved as a student does on paper: every intermediate (the guide's direction,
+    B, B − E, each term of the equations, ω_EB, ṡ, α_EB, s̈) and each answer rounded to three
+    significant figures before it is used."""
+    R = three_figures
+    u = R([math.cos(beta), math.sin(beta)])
+    B, E = R(s * u), np.array([ex, ey])
+    r = R(B - E)
+    m = np.column_stack([k(r), -u])
+    w_eb, sd = R(np.linalg.solve(m, R(w * k(B))))
+    rhs = R(al * k(B)) - R(w ** 2 * B) + R(2 * w * sd * k(u)) + R(w_eb ** 2 * r)
+    a_eb, sdd = R(np.linalg.solve(m, R(rhs)))
+    return {"q1": w_eb, "q2": a_eb, "q3": R(sd * u), "q4": R(sdd * u), "q5": R(w_eb * k(r)),
+            "q6": R(R(a_eb * k(r)) - R(w_eb ** 2 * r))}

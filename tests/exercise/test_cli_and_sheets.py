@@ -40,14 +40,14 @@ def test_grade_reads_the_folder_back_and_prints_the_contracts_json(folders, p_pa
     assert done.exit_code == 0, done.output
     result = json.loads(done.stdout)
     ana = result["students"]["ana"]
-    assert ana["score"] == pytest.approx(1 / 10)
-    assert ana["answers"][0] == {"variant": 5, "question": "q1", "value": rows["q1"], "correct": True,
-                                 "diagnosis": None}
+    assert ana["score"] == pytest.approx(1 / 6, abs=1e-6)          # q1 of six questions that weigh the same
+    assert ana["answers"][0] == {"variant": 5, "question": "q1", "typed": str(rows["q1"]), "value": rows["q1"],
+                                 "correct": True, "diagnosis": None}
     assert ana["answers"][1]["correct"] is False
     assert [a["diagnosis"] for a in result["students"]["bo"]["answers"]] == ["components-swapped"] * 2
-    assert list(csv.reader(book.read_text().splitlines())) == [["student", "grade"], ["ana", "10"], ["bo", "0"]]
+    assert list(csv.reader(book.read_text().splitlines())) == [["student", "grade"], ["ana", "16.67"], ["bo", "0"]]
     text = runner.invoke(app, ["grade", str(folders["p_pair"]), str(answers)])
-    assert text.exit_code == 0 and re.search(r"q3.x +1 +0  components-swapped ×1", text.stdout)
+    assert text.exit_code == 0 and re.search(r"q3.x +1 +0 +0  components-swapped ×1", text.stdout)
 
 
 def test_an_edited_key_is_refused(folders, tmp_path):
@@ -75,20 +75,37 @@ def test_exercise_errors_are_one_line(tmp_path, args, message):
     assert done.exit_code == 2 and message in done.output and len(done.output.strip().splitlines()) == 1
 
 
-def test_named_students_get_the_variants_in_turn(tmp_path):
+def test_the_class_gets_its_variants_and_its_names_on_the_sheets(tmp_path):
+    from kinematika.exercise.roster import Student, assigned
+
     names = tmp_path / "class.csv"
-    names.write_text("name\nAne\nJon\nMiren\n", encoding="utf-8")
+    names.write_bytes("Número de ID;Nombre;Apellido(s);Dirección de correo\n101;Ane;Etxeberria;ane@x.eus\n"
+                      "102;Jon;Agirre;jon@x.eus\n103;Miren;Lasa;miren@x.eus\n".encode("cp1252"))
     out = tmp_path / "out"
     done = runner.invoke(app, ["exercise", str(FOUR_BAR), "--vary", "a=25:35:1", "--count", "2",
                                "--students", str(names), "--lang", "ca", "--no-pdf", "--no-solutions",
                                "-o", str(out)])
     assert done.exit_code == 0, done.output
-    assert (out / "students.csv").read_text() == "student,variant\nAne,1\nJon,2\nMiren,1\n"
+    dealt = assigned([Student(i) for i in ("101", "102", "103")], 2, 0)
+    assert (out / "students.csv").read_text() == "student,variant\n" + "".join(
+        f"{s.id},{s.variant}\n" for s in dealt)
     sheets = (out / "sheets.html").read_text(encoding="utf-8")
     assert sheets.count('<section class="sheet">') == 3
-    assert all(f"<b>{n}</b>" in sheets for n in ("Ane", "Jon", "Miren"))
+    assert all(n in sheets for n in ("Ane Etxeberria", "Jon Agirre", "Miren Lasa"))
     assert "Quadrilàter articulat" in sheets and catalogue("ca").format("sheet-find") in sheets
-
+    # grade reads the class back: 103 has no row (0), 999 is not on the list, 101 answers
+    # another's variant; the file as Excel saves it in Catalan (; and cp1252)
+    other = next(s.variant for s in dealt if s.id == "102")
+    mine = next(s.variant for s in dealt if s.id == "101")
+    answers = tmp_path / "answers.csv"
+    answers.write_bytes((f"student;variant;question;value\n101;{3 - mine};q1;1,5\n102;{other};q1;2\n"
+                         f"999;{other};q1;2\n").encode("cp1252"))
+    graded = runner.invoke(app, ["grade", str(out), str(answers), "--json"])
+    assert graded.exit_code == 0, graded.output
+    result = json.loads(graded.stdout)
+    assert result["unknown"] == ["999"] and result["unreadable"] == []
+    assert set(result["students"]) == {"101", "102", "103"} and result["students"]["103"]["score"] == 0
+    assert result["students"]["101"]["answers"][0]["diagnosis"] == "wrong-variant"
 
 def test_each_sheet_states_its_variants_data_and_asks_every_number(folders, p_pair30):
     sheets = (folders["p_pair"] / "sheets.html").read_text(encoding="utf-8")
@@ -97,14 +114,17 @@ def test_each_sheet_states_its_variants_data_and_asks_every_number(folders, p_pa
     for page, v in zip(pages, p_pair30.variants):
         s = f"{v.stated['s'].normalize():f}"
         assert f"AB = {s}\u00a0mm" in page and f"β = {v.stated['beta'].normalize():f}°" in page
-        assert re.findall(r'<td class="id">([^<]+)</td>', page) == [r.question for r in v.rows]
+        assert re.findall(r'<td class="box" data-q="([^"]+)">', page) == [r.question for r in v.rows]
         assert page.count("data:image/png;base64,") == 1
 
 
 def test_the_key_lists_every_value_and_its_margin(folders, four_bar30):
     key = (folders["four_bar"] / "key.html").read_text(encoding="utf-8")
-    pages = key.split('<section class="sheet">')[1:]
+    pages = key.split('<section class="sheet variant"')[1:]
     assert len(pages) == 30
     first = pages[0]
     for r in four_bar30.variants[0].rows:
-        assert f"<td>{r.question}</td>" in first
+        assert f"<code class=\"id\">{r.question}</code>" in first
+    # the contents: every variant linked to its pages
+    contents = key.split('<section class="sheet" id="contents">')[1].split("</section>")[0]
+    assert re.findall(r'href="#variant-(\d+)"', contents) == [str(n) for n in range(1, 31)]

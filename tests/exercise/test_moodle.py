@@ -13,7 +13,7 @@ import pytest
 from hypothesis import given, strategies as st
 
 from kinematika.exercise.catalogue import catalogue
-from kinematika.exercise.figure import dimensions_of, figure_png
+from kinematika.exercise.figure import statement_figure
 from kinematika.exercise.folder import key_csv
 from kinematika.exercise.key import floors_of
 from kinematika.exercise.moodle import cloze_text, quiz_xml
@@ -28,8 +28,8 @@ MISTAKES = ("coriolis-omitted", "coriolis-doubled", "normal-omitted", "sense-rev
 def quiz(ex, solutions=False):
     figures, mistakes, worked = {}, {}, {}
     for v in ex.variants:
-        figures[v.number] = figure_png(v.solution, dimensions_of(ex, v.solution, v.all_stated(ex), ex.lang), ex.lang)
-        mistakes[v.number] = ex.mistakes(v)
+        figures[v.number] = statement_figure(ex, v, ex.lang)
+        mistakes[v.number] = v.mistaken
         if solutions:
             worked[v.number] = solution_html(ex, v, ex.lang)
     return quiz_xml(ex, figures, worked if solutions else None, mistakes)
@@ -41,13 +41,25 @@ def quizzes(p_pair30, four_bar30, folders):
             for name, ex in (("p_pair", p_pair30), ("four_bar", four_bar30))]
 
 
-def key_of(ex):
-    """key.csv as written: {variant: {question: value text}}."""
+def key_of(ex, column=2):
+    """key.csv as written: {variant: {question: value text}} (or its tolerance, `column` 3)."""
     out: dict = {}
     for line in key_csv(ex).splitlines()[1:]:
-        variant, question, value, _ = line.split(",")
-        out.setdefault(int(variant), {})[question] = value
+        cells = line.split(",")
+        out.setdefault(int(cells[0]), {})[cells[1]] = cells[column]
     return out
+
+
+def box_weights(questions):
+    """Each box's grade when every question (q2, whatever its parts) weighs the same: the
+    least whole numbers n / (the question's count of boxes)."""
+    counts = {}
+    for q in questions:
+        counts[q.split(".")[0]] = counts.get(q.split(".")[0], 0) + 1
+    whole = math.lcm(*counts.values())
+    weights = {q: whole // counts[q.split(".")[0]] for q in questions}
+    common = math.gcd(*weights.values())
+    return {q: w // common for q, w in weights.items()}
 
 
 def test_the_quizzes_are_moodle_xml_with_one_cloze_question_per_variant(quizzes):
@@ -84,7 +96,7 @@ def test_question_texts_are_cdata_and_their_figures_are_files_they_show(quizzes)
 
 def test_every_part_is_a_numerical_subquestion_of_the_keys_value_and_absolute_margin(quizzes):
     for ex, text in quizzes:
-        key = key_of(ex)
+        key, tolerances = key_of(ex), key_of(ex, 3)
         floors = {v.number: {r.question: floors_of(v.solution)[r.kind] for r in v.rows} for v in ex.variants}
         mistake_words = {catalogue(ex.lang).format(f"mistake-{k}") for k in MISTAKES}
         right_words = catalogue(ex.lang).format("feedback-right")
@@ -95,18 +107,20 @@ def test_every_part_is_a_numerical_subquestion_of_the_keys_value_and_absolute_ma
             questions = list(key[number])
             assert len(subs) == len(questions)
             values = {qn: float(v) for qn, v in key[number].items()}
+            weights = box_weights(questions)
             for question, sub in zip(questions, subs):
-                assert sub.qtype == "numerical" and sub.mark == "1"
+                assert sub.qtype == "numerical" and sub.mark == str(weights[question])
                 right, *wrong = sub.alternatives
                 assert right.fraction == 1 and right.answer == key[number][question]
                 assert right.feedback == right_words
                 stem = question.rsplit(".", 1)[0] if "." in question else question
                 size = math.hypot(*[x for qn, x in values.items() if qn == question or qn.startswith(stem + ".")])
-                # absolute: the relative tolerance times the size, never below 1 % of the
-                # mechanism's scale for the quantity (key.floors_of), as key.csv's rows say
+                # absolute: the box's relative tolerance (key.csv) times the size, never below
+                # 1 % of the mechanism's scale for the quantity (key.floors_of)
                 floor = floors[number][question]
-                assert float(right.tolerance) == pytest.approx(0.01 * max(size, floor), rel=1e-12)
-                assert float(right.tolerance) >= 0.01 * size * (1 - 1e-12)
+                relative = float(tolerances[number][question])
+                assert float(right.tolerance) == pytest.approx(relative * max(size, floor), rel=1e-5)
+                assert float(right.tolerance) >= 0.005 * size * (1 - 1e-12)
                 for w in wrong:
                     assert w.fraction == 0 and w.feedback in mistake_words
                     assert abs(float(w.answer) - float(right.answer)) > float(right.tolerance)
@@ -143,3 +157,44 @@ def test_a_feedback_text_reaches_moodle_as_its_html(text):
     assert [html.unescape(a.feedback) for a in subs[0].alternatives] == [text] * 2
     assert all("<" not in a.feedback for a in subs[0].alternatives)
     assert [a.answer for a in subs[0].alternatives] == ["1.5", "2"]
+
+
+def test_split_writes_a_question_per_graded_part_in_a_category_each(p_pair30):
+    from kinematika.exercise.moodle import QuizOptions
+
+    figures = {v.number: b"\x89PNG\r\n\x1a\n" for v in p_pair30.variants}
+    text = quiz_xml(p_pair30, figures, None, None, QuizOptions(split=True))
+    root = ET.fromstring(text.encode())
+    categories = [q.findtext("category/text") for q in root.findall("question[@type='category']")]
+    assert categories == [f"$course$/top/kinematika/P pair with Coriolis/question {k}" for k in range(1, 7)]
+    cloze = root.findall("question[@type='cloze']")
+    assert len(cloze) == 6 * 30 and len({q.findtext("idnumber") for q in cloze}) == 6 * 30
+    key = key_of(p_pair30)
+    for k in range(6):                               # part k+1 of variant 1 asks that question's numbers
+        _, subs = extract(cloze[30 * k].findtext("questiontext/text"))
+        asked = [q for q in key[1] if q.split(".")[0] == f"q{k + 1}"]
+        assert [s.alternatives[0].answer for s in subs] == [key[1][q] for q in asked]
+        assert validate(subs) == []
+
+
+def test_a_unit_penalty_gives_part_credit_for_the_right_number_in_another_unit(p_pair30):
+    from kinematika.exercise.moodle import QuizOptions
+
+    v = p_pair30.variants[0]
+    figures = {x.number: b"" for x in p_pair30.variants}
+    text = quiz_xml(p_pair30, figures, None, None, QuizOptions(unit_penalty=0.4))
+    first = ET.fromstring(text.encode()).findall("question[@type='cloze']")[0]
+    _, subs = extract(first.findtext("questiontext/text"))
+    by_question = dict(zip([r.question for r in v.rows], subs))
+    right = {r.question: r.value for r in v.rows}
+    speed = by_question["q5.x"].alternatives                         # a velocity in m/s
+    in_mm = [a for a in speed if "mm/s" in a.feedback]
+    assert len(in_mm) == 1 and in_mm[0].fraction == pytest.approx(0.6)
+    assert float(in_mm[0].answer) == pytest.approx(1000 * right["q5.x"], rel=1e-12)
+    rate = by_question["q1"].alternatives                            # ω in rad/s: rpm, °/s
+    rpm = [a for a in rate if "rpm" in a.feedback]
+    assert len(rpm) == 1 and float(rpm[0].answer) == pytest.approx(right["q1"] * 30 / math.pi, rel=1e-12)
+    assert validate(subs) == []
+    plain = quiz_xml(p_pair30, figures, None)                       # without the option: none
+    assert "mm/s" not in "".join(a.feedback for s in extract(ET.fromstring(plain.encode()).findall(
+        "question[@type='cloze']")[0].findtext("questiontext/text"))[1] for a in s.alternatives)

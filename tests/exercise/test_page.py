@@ -44,7 +44,7 @@ def test_the_statement_comes_without_the_key(client, p_pair30):
 
 def test_answers_are_marked_with_the_diagnoses_grade_gives(client, p_pair30):
     v = p_pair30.variants[2]
-    mistakes = {m.kind: m for m in p_pair30.mistakes(v)}
+    mistakes = {m.kind: m for m in v.mistaken}
     answers = {"q1": repr(v.rows[0].value).replace(".", ","), "q2": repr(mistakes["coriolis-omitted"].rows["q2"].value),
                "q3.x": "12345", "q3.y": ""}
     data = client.post("/api/exercise", json=body(answers=answers)).json()
@@ -58,9 +58,12 @@ def test_answers_are_marked_with_the_diagnoses_grade_gives(client, p_pair30):
     assert "solution" not in data
 
 
-def test_the_worked_solution_on_request(client):
-    data = client.post("/api/exercise", json=body(answers={}, reveal=True)).json()
+def test_the_worked_solution_comes_after_a_check(client):
+    data = client.post("/api/exercise", json=body(answers={"q1": "1"}, reveal=True)).json()
     assert data["solution"].startswith('<div class="kinematika-solution">') and "Abiadurak" in data["solution"]
+    for early in (body(reveal=True), body(answers={}, reveal=True)):
+        got = client.post("/api/exercise", json=early)
+        assert got.status_code == 400 and got.json()["error"]["where"] == "reveal"
 
 
 def test_without_vary_the_exercise_is_the_models_own_data(client):

@@ -1,6 +1,7 @@
 """The page's exercise mode in Chromium: a link of `kinematika exercise`'s links.txt opens a
-variant over the page, typed answers are checked (a right one, the Coriolis term left out)
-and the worked solution shown."""
+variant as the whole page — no model editor, no answers, no control that solves, and no
+response carrying a value of the key before Check — typed answers are checked (a right one,
+the Coriolis term left out) and the worked solution shown after the check."""
 from __future__ import annotations
 
 import pytest
@@ -26,7 +27,7 @@ def test_the_page_opens_a_link_checks_the_answers_and_shows_the_solution(tmp_pat
     write_exercise(ex, tmp_path, solutions=False, pdf=False)
     fragment = (tmp_path / "links.txt").read_text().splitlines()[1].split("\t")[1]
     v = ex.variants[1]
-    mistakes = {m.kind: m for m in ex.mistakes(v)}
+    mistakes = {m.kind: m for m in v.mistaken}
     server = PageServer(Start())
     try:
         in_own_thread(lambda: _drive(server.url, fragment, v, mistakes, tmp_path))
@@ -45,7 +46,24 @@ def _drive(url, fragment, v, mistakes, tmp_path):
         browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
         page = browser.new_page(viewport={"width": 1000, "height": 1400})
         page.set_default_timeout(BROWSER_WAIT)      # a hang detector: the page's own requests run too
+        seen = []
+        page.on("response", lambda r: seen.append(r))  # noqa: PLW0108 - Playwright wraps a Python function
         page.goto(url + fragment)
+        page.get_by_test_id("exercise-input-q1").wait_for()         # drawn from the statement's answer
+        # the page is the exercise alone: nothing of the builder, nothing that solves
+        ids = page.eval_on_selector_all("[data-testid]", "els => els.map(e => e.dataset.testid)")
+        assert "model-editor" not in ids and "answers" not in ids
+        assert all(i == "exercise" or i.startswith("exercise-") for i in ids), ids
+        assert page.locator("textarea, select").count() == 0
+        buttons = page.eval_on_selector_all("button", "els => els.map(e => e.dataset.testid)")
+        assert sorted(buttons) == ["exercise-check", "exercise-show"] and not page.get_by_test_id("exercise-show").is_visible()
+        # before Check: only the exercise's statement was asked for, and no response holds a key value
+        api = [r for r in seen if "/api/" in r.url]
+        assert [r.url.rsplit("/", 1)[1] for r in api] == ["exercise"]
+        text = api[0].text()
+        for r in v.rows:
+            for written in (f"{r.value:.4g}", f"{r.value:.4g}".replace(".", ","), repr(r.value)):
+                assert written not in text, (r.question, written)
         page.get_by_test_id("exercise-input-q1").fill(repr(v.rows[0].value).replace(".", ","))
         page.get_by_test_id("exercise-input-q2").fill(repr(mistakes["coriolis-omitted"].rows["q2"].value))
         page.get_by_test_id("exercise-check").click()
@@ -56,7 +74,7 @@ def _drive(url, fragment, v, mistakes, tmp_path):
         page.screenshot(path=str(tmp_path / "exercise-page.png"), full_page=True)
         page.get_by_test_id("exercise-show").click()
         page.locator("[data-testid=exercise-solution] iframe").wait_for()
-        page.wait_for_load_state("networkidle")        # no request left computing
+        page.wait_for_function("document.querySelector('[data-testid=exercise-solution] iframe').style.height !== ''")
         browser.close()
 
 

@@ -10,12 +10,16 @@ import pytest
 from fluent.syntax import FluentParser, ast as ftl
 
 import kinematika.explain as explain_package
+import kinematika.questions as questions_package
 from kinematika.explain.catalogue import LANGS, LOCALES, VARIABLE, catalogue
 from kinematika.joints import KINDS
 from kinematika.model.wording import PART_SUBSCRIPTS
+from kinematika.questions import QUESTIONS, QuestionKind
 from kinematika.questions.centres import FIXED
 
 SOURCE = Path(explain_package.__file__).resolve().parent
+# the question kinds write their names and their answers' parts in the explanation's words
+SOURCES = [SOURCE, Path(questions_package.__file__).resolve().parent]
 # keys built at run time from a name (f"kind.{step.kind}" ...): the families and their members
 FAMILIES = {
     "kind": ["input", "RRR", "RRP", "RPR", "PRP", "other"],
@@ -24,7 +28,7 @@ FAMILIES = {
     "cond": [k.name for k in KINDS.values() if not k.rolls] + ["slot_fixed"],  # rolling pairs are written out
     "centre.joint": [k.name for k in KINDS.values() if k.centre in FIXED],
     "centre.line": ["slot", "wheel", "normal", "slot_fixed"],
-    "ask": ["icr", "axis", "pole", "curvature", "intrinsic", "inflection"],
+    "ask": [k.name for k in QUESTIONS.values() if type(k).label is QuestionKind.label],   # `ask.NAME`
     "ans": ["point", "direction", "center", "tangent", "slide"],
     "centre.proportional": ["between", "outside"],
     "pos": ["left", "right", "ahead", "behind", "open", "crossed"],
@@ -46,7 +50,7 @@ def messages(lang: str) -> dict[str, str]:
 
 
 def literals() -> set[str]:
-    text = "\n".join(p.read_text(encoding="utf-8") for p in SOURCE.rglob("*.py"))
+    text = "\n".join(p.read_text(encoding="utf-8") for d in SOURCES for p in d.rglob("*.py"))
     return set(re.findall(r'"([a-zA-Z_]+\.[a-zA-Z_.]+)"', text))
 
 
@@ -69,7 +73,7 @@ def test_same_placeholders(lang):
 def test_no_unused_and_no_missing_keys():
     keys = set(messages("en"))
     used = {k for k in literals() if k in keys}
-    source = "".join(p.read_text(encoding="utf-8") for p in SOURCE.rglob("*.py"))
+    source = "".join(p.read_text(encoding="utf-8") for d in SOURCES for p in d.rglob("*.py"))
     for family, members in FAMILIES.items():
         assert f'f"{family}.' + "{" in source, f"no key of the family {family} is built in the code"
         used |= {f"{family}.{m}" for m in members}

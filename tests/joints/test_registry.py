@@ -27,7 +27,7 @@ ALLOWED_WORDS = {           # the same words meaning something else, with where 
     # a question (`contact`), a shape key (`cam:`), a touching pair's geometry (`.contact`)
     "contact": ("model/model.py", "model/schema.py", "model/shape.py", "model/build.py", "model/generate_shape.py",
                 "draw/results.py", "draw/marks.py", "draw/scene.py", "explain/answers.py", "explain/terms.py",
-                "explain/contacts.py", "explain/needs.py", "web/static/js/figure.js", "questions/__init__.py",
+                "explain/contacts.py", "explain/needs.py", "web/static/js/figure.js", "questions/__init__.py", "questions/contact.py",
                 "questions/centres.py", "report/json_answer.py",
                 "report/units.py",                  # the `contact` question's unit
                 "web/rename.py",                    # a renamed body in a `contact` question

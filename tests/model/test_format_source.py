@@ -13,8 +13,7 @@ from kinematika.cams.spec import CamFileSpec, CamSpec
 from kinematika.joints import KINDS
 from kinematika.model import schema
 from kinematika.model.build import build_model
-from kinematika.model.model import QUESTION_KINDS
-from kinematika.questions import ANSWERS
+from kinematika.questions import QUESTIONS, QuestionKind
 
 
 def test_a_joints_keys_are_those_its_kinds_declare():
@@ -61,8 +60,8 @@ def test_a_cams_base_circle_is_checked_as_in_a_cam_design_file():
 
 
 def test_the_questions_keys_are_the_question_kinds_and_each_has_its_answer():
-    assert list(schema.QuestionSpec.model_fields) == [*QUESTION_KINDS, "relative_to", "moving"]
-    assert set(ANSWERS) == set(QUESTION_KINDS)
+    assert list(schema.QuestionSpec.model_fields) == [*QUESTIONS, "relative_to", "moving"]
+    assert all(type(kind).answer is not QuestionKind.answer for kind in QUESTIONS.values())
 
 
 def _table_rows(doc: str, heading: str) -> dict[str, list[str]]:

@@ -6,6 +6,7 @@ up in time."""
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -185,3 +186,88 @@ def test_every_example_a_sweep_cannot_follow_moves_in_time():
         result = run_simulation(EXAMPLES / f"{name}.yaml", time=0.1, steps=2)
         assert len(result) == 3 and result.ok.all(), name
         assert result.drift.max() < 1e-8, name
+
+
+def test_a_wheel_rolls_once_round_a_cylinder():
+    """The notes' C5-1.8 (r = 0.1, w0 = 2, its draw_at) over its section, 6π/w0: a wheel of
+    radius r rolling outside a fixed circle of radius 2r at ω = −w0. The contact J = 2r u(ψ),
+    u(ψ) = (cos ψ, sin ψ), is the wheel's instant centre, so v_C = ω k × (C − J) = ω r u'(ψ);
+    C = 3r u(ψ) gives v_C = 3r ψ̇ u'(ψ): ψ̇ = ω/3, ψ = 90° − w0 t/3 — once round while the
+    wheel turns three times, its angle −w0 t continuous past every half turn (the line of
+    centres is read on the right sheet at every row); a_C = −3r ψ̇² u(ψ)."""
+    r, w0 = 0.1, 2.0
+    result = run_simulation(EXAMPLES / "seed_c5_1_8_contact_points.yaml", steps=12)
+    t = result.time
+    assert t[-1] == pytest.approx(6 * math.pi / w0)
+    psi = math.pi / 2 - w0 * t / 3
+    u = np.column_stack([np.cos(psi), np.sin(psi)])
+    c = result.points["C@wheel"]
+    assert c["position"] == pytest.approx(3 * r * u, abs=1e-8)
+    assert c["velocity"] == pytest.approx(r * w0 * np.column_stack([np.sin(psi), -np.cos(psi)]), abs=1e-8)
+    assert c["acceleration"] == pytest.approx(-3 * r * (w0 / 3) ** 2 * u, abs=1e-8)
+    assert result.bodies["wheel"]["angle"] == pytest.approx(np.degrees(-w0 * t), abs=1e-6)
+    assert result.drift.max() < 1e-8
+
+
+def test_the_wheels_with_a_rod_stop_where_the_pin_reaches_the_ground():
+    """The notes' C5-E.3 (R = 0.3, w = 2): wheels of radius R on the ground, centres 4R apart,
+    the rod (√26 R long) pinned at the top A of the left wheel and the rightmost point B of
+    the right one. Rolling, the left wheel turned by φ₁ (counter-clockwise) has its centre at
+    −R φ₁ and A at (−R φ₁ − R sin φ₁, R + R cos φ₁); the right one turned by φ₂ has B at
+    (4R − R φ₂ + R cos φ₂, R + R sin φ₂), whose rate in φ₂, (−R − R sin φ₂, R cos φ₂), is
+    zero at φ₂ = −90°: B on the ground, the right wheel's instant centre. There the rod's
+    length condition |A − B|² = 26 R² cannot be kept by the right wheel's turn, so the left
+    wheel's turn φ₁ is at its extreme (a limit position of the input): φ₁* solves
+    |A(φ₁) − (4R + R π/2, 0)|² = 26 R², and at ω = −w, t* = −φ₁*/w."""
+    from scipy.optimize import brentq
+
+    big, w = 0.3, 2.0
+
+    def gap(p1):
+        a = (-big * p1 - big * math.sin(p1), big + big * math.cos(p1))
+        return (a[0] - 4 * big - big * math.pi / 2) ** 2 + a[1] ** 2 - 26 * big * big
+
+    p1 = brentq(gap, -math.pi / 2, -0.1)
+    with pytest.raises(SimulationStopped) as stop:
+        run_simulation(EXAMPLES / "seed_c5_e3_wheels_with_rod.yaml", time=0.3, steps=3)
+    assert stop.value.kind == "singular"
+    assert f"t = {-p1 / w:.5g}" in stop.value.message
+    assert len(run_simulation(EXAMPLES / "seed_c5_e3_wheels_with_rod.yaml", steps=2)) == 3    # its 0.4/w s
+
+
+def test_the_pulley_on_a_cable_stops_at_the_end_of_its_sideways_travel():
+    """The notes' C5-1.1 (r = 0.1, v = 1): the cable, tied at G1 = (−2√3 r, 4r) and G2 =
+    (2√3 r, 4r), keeps its length ℓ(C) = t₁ + t₂ + r β (tangent lengths tᵢ = √(|Gᵢ − C|² − r²)
+    and the arc β wrapped under the pulley, from the left strand's tangent point at angle
+    atan2(G₁ − C) + acos(r/|G₁ − C|) round to the right one's at atan2(G₂ − C) − acos(r/|G₂ − C|)).
+    Pushed sideways, the centre runs on ℓ(C) = ℓ(0) until that curve stands vertical
+    (∂ℓ/∂y = 0): x* there, reached at t* = x*/v."""
+    from scipy.optimize import fsolve
+
+    r, v = 0.1, 1.0
+    g1, g2 = np.array([-2 * math.sqrt(3) * r, 4 * r]), np.array([2 * math.sqrt(3) * r, 4 * r])
+
+    def length(c):
+        out, angles = 0.0, []
+        for g, side in ((g1, 1.0), (g2, -1.0)):
+            d = g - c
+            size = math.hypot(*d)
+            out += math.sqrt(size * size - r * r)
+            angles.append(math.atan2(d[1], d[0]) + side * math.acos(r / size))
+        return out + r * ((angles[1] - angles[0]) % (2 * math.pi))
+
+    whole = length(np.zeros(2))
+
+    def fold(c):
+        h = 1e-6
+        return [length(c) - whole, (length(c + [0, h]) - length(c - [0, h])) / (2 * h)]
+
+    x, y = fsolve(fold, [0.45, 0.3], xtol=1e-12)
+    assert y > 0.2                               # it has climbed towards G2
+    with pytest.raises(SimulationStopped) as stop:
+        run_simulation(EXAMPLES / "seed_c5_1_1_pulley_on_cable.yaml", time=0.5, steps=5)
+    assert stop.value.kind == "singular"
+    found = float(re.search(r"t = ([0-9.]+) s", stop.value.message).group(1))
+    assert found == pytest.approx(x / v, abs=2e-5)
+    kept = stop.value.result
+    assert kept.points["C@pulley"]["position"][-1][0] == pytest.approx(0.4)      # the rows before it

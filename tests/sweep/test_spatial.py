@@ -47,9 +47,11 @@ def test_planar_four_bar_built_in_3d_matches_loop_closure():
     assert result.bodies["crank"]["angle"][-1] == pytest.approx([0, 0, 360], abs=1e-9)
 
 
-def test_fan_driven_by_a_fixed_vector_cannot_be_swept_but_by_its_joint_rate_can():
-    # the blades' ω relative to the block written as (0.5, 0, 0) in ground axes: once the block
-    # has turned about y, the hub axis is no longer x, so the drivers contradict the joints
+def test_fan_driven_by_a_vector_along_its_hub_is_swept_as_by_the_hubs_rate():
+    # the blades' ω relative to the block written as (0.5, 0, 0) in ground axes lies along the
+    # hub's axis at the drawing: it is the hub's rate (`sweep.joint_rates`), carried along as
+    # the block turns about y, and the sweep is the one driven by that rate. A vector off the
+    # hub's axis is no joint's rate: once the block has turned, it contradicts the joints.
     from kinematika import KinematikaError
 
     tree = {"dimension": 3, "points": {"B": [0, 0, 0], "C": [0.6, 0, 0], "P": [0.6, 0.3, 0]},
@@ -60,6 +62,8 @@ def test_fan_driven_by_a_fixed_vector_cannot_be_swept_but_by_its_joint_rate_can(
                         "axis": [1, 0, 0]}],
             "drivers": [{"joint": "shaft", "rate": 0.1},
                         {"omega": "blades", "relative_to": "block", "value": [0.5, 0, 0]}]}
+    by_vector = run_sweep(tree, by=90, steps=3)
+    tree["drivers"][1] = {"omega": "blades", "value": [0.5, 0.1, 0], "alpha": [0, 0, -0.05]}   # absolute: off the hub's axis
     for skip_bad in (False, True):
         with pytest.raises(KinematikaError) as err:
             run_sweep(tree, by=90, steps=3, skip_bad=skip_bad)
@@ -71,6 +75,10 @@ def test_fan_driven_by_a_fixed_vector_cannot_be_swept_but_by_its_joint_rate_can(
     psi = np.radians(result.coordinate)
     expect = np.column_stack([0.6 * np.cos(psi), np.full(4, 0.3), -0.6 * np.sin(psi)])
     assert result.points["P@blades"]["position"] == pytest.approx(expect, abs=1e-10)
+    for got in (by_vector, result):     # ω = 0.1 ŷ + 0.5 (cos ψ, 0, −sin ψ), the hub's axis turned
+        assert got.bodies["blades"]["omega"] == pytest.approx(
+            np.column_stack([0.5 * np.cos(psi), np.full(4, 0.1), -0.5 * np.sin(psi)]), abs=1e-12)
+    assert by_vector.points["P@blades"]["velocity"] == pytest.approx(result.points["P@blades"]["velocity"], abs=1e-12)
 
 
 def test_rssr_sweep_keeps_the_coupler_rigid_and_its_spin_idle():

@@ -9,7 +9,9 @@ import time
 import uvicorn
 
 from kinematika.web.server import Start, bundled_examples, create_app
-from tests.conftest import HANG_SECONDS
+from tests.conftest import HANG_CPU_SECONDS, HANG_SECONDS
+
+POLL_MS = 2000      # how long one look at the page waits before the server's work is counted
 
 
 class PageServer:
@@ -33,6 +35,35 @@ class PageServer:
                 raise RuntimeError("the page's server did not start")
             time.sleep(0.02)
 
+    def computing(self) -> bool:
+        """Whether a worker thread is computing an answer now."""
+        return any(_computing(t) for t in threading.enumerate())
+
+    def wait(self, page, condition: str, arg=None) -> None:
+        """Wait until the page's JavaScript `condition` holds, whatever the machine's load.
+        While the server computes (in this process), the wait is bounded by this process's
+        CPU time (`HANG_CPU_SECONDS` of it: the work itself, which load does not stretch);
+        while it is idle — the browser's own work, or a page waiting for nothing — by
+        `HANG_SECONDS` of wall time, far above what a page takes to paint."""
+        from playwright.sync_api import TimeoutError as PlaywrightTimeout
+
+        cpu, idle = time.process_time(), 0.0
+        while True:
+            began, busy = time.monotonic(), self.computing()
+            try:
+                page.wait_for_function(condition, arg=arg, timeout=POLL_MS)
+                return
+            except PlaywrightTimeout:
+                pass
+            if busy or self.computing():
+                if time.process_time() - cpu > HANG_CPU_SECONDS:
+                    raise AssertionError(f"the server computed for {HANG_CPU_SECONDS:.0f} s of CPU time "
+                                         f"and the page still waits for: {condition}")
+            else:
+                idle += time.monotonic() - began
+                if idle > HANG_SECONDS:
+                    raise AssertionError(f"the page waited {HANG_SECONDS:.0f} s with the server idle for: {condition}")
+
     def stop(self) -> None:
         """Stop serving, and wait for the computations of requests the browser abandoned
         (they go on in the server's worker threads, drawing with matplotlib): the tests that
@@ -40,10 +71,17 @@ class PageServer:
         self.server.should_exit = True
         self.thread.join(10)
         self.sock.close()
-        deadline = time.monotonic() + HANG_SECONDS
-        while any(_computing(t) for t in threading.enumerate()):
-            if time.monotonic() > deadline:
-                raise RuntimeError(f"the page's server still computes {HANG_SECONDS:.0f} s after it stopped")
+        self.idle("since it stopped")
+
+    def idle(self, since: str = "") -> None:
+        """Wait until no worker thread computes (requests a page left behind included), for
+        as long as it takes a loaded machine: bounded by `HANG_CPU_SECONDS` of this process's
+        CPU time, the work itself."""
+        cpu = time.process_time()
+        while self.computing():
+            if time.process_time() - cpu > HANG_CPU_SECONDS:
+                raise RuntimeError(f"the page's server still computes after {HANG_CPU_SECONDS:.0f} s of CPU time "
+                                   f"{since}".strip())
             time.sleep(0.05)
 
 

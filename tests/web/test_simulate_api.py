@@ -4,6 +4,9 @@ the slider moves through time for a model whose joints constrain velocities only
 from __future__ import annotations
 
 import json
+import math
+
+import pytest
 
 from typer.testing import CliRunner
 
@@ -48,6 +51,25 @@ def test_the_slider_moves_through_time_for_a_vehicle(client):
         return data["input"]
 
     assert slider("tractor_trailer_turning.yaml") == {"joint": None, "unit": "s", "time": 60.0, "steps": 300}
-    assert slider("tractor_trailer.yaml") == {"joint": None, "unit": "s", "time": 10.0, "steps": 200}
+    assert slider("tractor_trailer.yaml") == {"joint": None, "unit": "s", "time": 3.5, "steps": 200}
+    assert slider("seed_c5_1_8_contact_points.yaml")["time"] == pytest.approx(6 * math.pi / 2)   # 6π/w0 at draw_at
+    no_section = (EXAMPLES / "tractor_trailer.yaml").read_text(encoding="utf-8").replace("simulate: {time: 3.5}", "")
+    data = client.post("/api/draw", json={"model": no_section, "as": "data"}).json()
+    assert data["input"] == {"joint": None, "unit": "s", "time": 10.0, "steps": 200}     # DEFAULT_TIME
     assert slider("four_bar.yaml")["unit"] == "deg"
     assert json.loads(json.dumps(slider("coin_rolling.yaml")))["unit"] == "s"
+
+
+def test_every_example_gives_the_page_its_slider():
+    """The page's slider for every bundled example (what `/api/draw` gives the page as its
+    `input`, read without drawing): the joint a sweep advances, or the time of its own
+    `simulate:` section, as tests/simulate/test_every_example.py says it moves."""
+    from kinematika.sweep.posing import prepare
+    from kinematika.web.server import _input
+    from tests.simulate.test_every_example import MOVES, TIME
+
+    for name, how in MOVES.items():
+        given = _input(prepare(EXAMPLES / f"{name}.yaml"))
+        assert given is not None, name
+        assert (given["unit"] == "s") == (how == TIME), (name, given)
+        assert how == TIME or given["joint"], name

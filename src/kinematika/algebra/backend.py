@@ -7,7 +7,6 @@ sympy is imported only by `Symbolic`, so numeric work never pays for it.
 from __future__ import annotations
 
 import math
-import random
 from typing import Any, Callable
 
 from .. import limits
@@ -218,6 +217,10 @@ def probe_values(symbols: list[Any], seed: int = 7) -> dict[Any, float]:
     Used to find the structure (rank, independent rows, geometry gaps) of a symbolic model
     at a point where no accidental cancellation is to be expected.
     """
+    if not symbols:
+        return {}
+    import random           # symbolic models only: a numeric command never imports it
+
     rng = random.Random(seed)
     values = {}
     for s in symbols:

@@ -1,6 +1,6 @@
 """The `kinematika` command: one module per subcommand, all views of the one engine.
 
-`solve`, `centres` and `sweep` with plain options take a fast path (`fast`) that imports
+`solve`, `centres`, `sweep` and `simulate` with plain options take a fast path (`fast`) that imports
 only what they use; everything else goes through the typer application (`app`).
 """
 from __future__ import annotations
@@ -25,7 +25,7 @@ def main() -> None:
 
 
 def _main() -> None:
-    """`main` itself: the fast path for plain `solve`, `centres` and `sweep`, else typer."""
+    """`main` itself: the fast path for plain `solve`, `centres`, `sweep` and `simulate`, else typer."""
     for stream in (sys.stdout, sys.stderr):      # a terminal that cannot show a character
         if hasattr(stream, "reconfigure"):        # gets an escape, never an encoding error
             stream.reconfigure(errors="backslashreplace")

@@ -24,6 +24,10 @@ MoveOpt = typer.Option(None, "--move", metavar="JOINT=AMOUNT",
                             "length, repeatable), as a sweep reaches it")
 AssemblyOpt = typer.Option(None, "--assembly", min=1, metavar="N",
                            help="analyse assembly N (see `kinematika assemblies`)")
+OutputOpt = typer.Option(None, "-o", "--output", help="write the rows to FILE "
+                         "(json, csv, npz or parquet: --format, else the suffix)")
+FormatOpt = typer.Option(None, "--format", help="the format of -o: json, csv, npz "
+                         "(numpy) or parquet (needs pyarrow)")
 MessagesOpt = typer.Option(None, "--lang", metavar="LANG",
                            help="the language of errors and warnings: en, es, ca or eu (default: the "
                                 "locale's, from LC_ALL, LC_MESSAGES or LANG; else en)")

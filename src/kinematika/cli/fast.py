@@ -1,4 +1,4 @@
-"""The fast path of the command line: `solve`, `centres` and `sweep` with plain options are
+"""The fast path of the command line: `solve`, `centres`, `sweep` and `simulate` with plain options are
 read here, without importing typer (and the pydantic and click it brings), which would
 cost more than the work itself.
 

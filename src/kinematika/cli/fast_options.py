@@ -28,4 +28,16 @@ OPTIONS: dict[str, dict[str, tuple]] = {
         '--output': ('output', 'path'),
         '--format': ('fmt', 'text'),
     },
+    'simulate': {
+        '--time': ('time', 'float'),
+        '--steps': ('steps', 'int', 1, 1000000),
+        '--method': ('method', 'text'),
+        '--json': ('as_json', 'flag'),
+        '--csv': ('csv', 'path'),
+        '--plot': ('plot', 'path'),
+        '--animate': ('animation', 'path'),
+        '-o': ('output', 'path'),
+        '--output': ('output', 'path'),
+        '--format': ('fmt', 'text'),
+    },
 }

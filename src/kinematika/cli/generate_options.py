@@ -25,7 +25,7 @@ from . import fast, run
 
 TARGET = Path(__file__).with_name("fast_options.py")
 COMMAND = "python -m kinematika.cli.generate_options"
-COMMANDS = ("solve", "centres", "sweep")          # the commands the fast path reads
+COMMANDS = ("solve", "centres", "sweep", "simulate")          # the commands the fast path reads
 KINDS = {bool: fast.FLAG, str: fast.TEXT, Path: fast.PATH, int: fast.INT, float: fast.FLOAT}
 
 

@@ -1,4 +1,4 @@
-"""What `solve`, `centres` and `sweep` print once their options are read (the data from
+"""What `solve`, `centres`, `sweep` and `simulate` print once their options are read (the data from
 `kinematika.commands`), without the command-line framework: the typer commands and the
 fast path (`cli/fast.py`) call these."""
 from __future__ import annotations
@@ -9,7 +9,7 @@ from typing import Any, Optional
 
 from ..errors import KinematikaError
 from ..text import shown
-from .shared import guarded, options_named, output_file, respond, sweep_options, write_stdout, writing
+from .shared import fail, guarded, options_named, output_file, respond, sweep_options, write_stdout, writing
 
 SWEEP_FORMATS = ("json", "csv", "npz", "parquet")
 
@@ -42,9 +42,13 @@ def solve_command(model: Path, as_json: bool = False, symbolic: bool = False, ho
 def centres_command(model: Path, as_json: bool = False, symbolic: bool = False, how: Any = None) -> None:
     """All instant centres (planar), marking those found from joints and by Aronhold–Kennedy."""
     from ..commands import AS_GIVEN, centres_data
-    from ..report.centres_table import print_centres
 
-    respond(as_json, lambda: centres_data(model, symbolic or None, _how(how) or AS_GIVEN), print_centres)
+    def show(data: dict) -> None:
+        from ..report.centres_table import print_centres     # the table (and rich) only when shown
+
+        print_centres(data)
+
+    respond(as_json, lambda: centres_data(model, symbolic or None, _how(how) or AS_GIVEN), show)
 
 
 def _how(how: Any) -> Any:
@@ -149,6 +153,97 @@ def _plot(result, path: Path, model) -> None:
     path = output_file(path, "--plot")
     with writing(path, "--plot"):
         plot_sweep(result, path, model)
+
+
+def simulate_command(model: Path, time: Optional[float] = None, steps: Optional[int] = None,
+                     method: Optional[str] = None, as_json: bool = False, csv: Optional[Path] = None,
+                     plot: Optional[Path] = None, animation: Optional[Path] = None,
+                     output: Optional[Path] = None, fmt: Optional[str] = None, how: Any = None) -> None:
+    """Positions, velocities and accelerations in time: the motion integrated from the drawn
+    configuration (drivers as written, or expressions in the parameter t), for mechanisms whose
+    joints constrain velocities only (knife edges, discs rolling on a plane) and any other."""
+    kind = guarded(as_json, lambda: _format(output, fmt))
+    if animation is not None:
+        guarded(as_json, lambda: _animation_format(animation))
+    for path, option in ((csv, "--csv"), (output, "-o"), (plot, "--plot"), (animation, "--animate")):
+        if path is not None:                       # before the motion is followed, not after
+            guarded(as_json, lambda path=path, option=option: output_file(path, option))
+    simulator, result, stopped = guarded(as_json, lambda: _simulated(model, time, steps, method, as_json, how))
+    written = []
+    if csv is not None:
+        guarded(as_json, lambda: _write(result, csv, "csv", "--csv"))
+        written.append(f"wrote {len(result)} rows to {csv}")
+    if output is not None:
+        guarded(as_json, lambda: _write(result, output, kind, "-o"))
+        written.append(f"wrote {len(result)} rows to {output} ({kind})")
+    if plot is not None and len(result) > 1:
+        guarded(as_json, lambda: _plot(result, plot, simulator.model))
+        written.append(f"drew {plot}")
+    if animation is not None and len(result) > 1:
+        guarded(as_json, lambda: _animate(result, animation, simulator.model, not as_json))
+        written.append(f"drew {animation}")
+    if as_json:
+        if stopped is not None:
+            write_stdout(b'{"error":' + _error_json(stopped.as_json()["error"]) + b',"partial":')
+            for piece in result.json_chunks():
+                write_stdout(piece)
+            write_stdout(b"}\n")
+            sys.exit(2)
+        for piece in result.json_chunks():
+            write_stdout(piece)
+        write_stdout(b"\n")
+        return
+    from ..simulate.summary import summary_lines
+
+    lines = summary_lines(result)
+    if written:
+        lines += [""] + written
+    print("\n".join(shown(line) for line in lines))
+    if stopped is not None:
+        fail(stopped, False)
+
+
+def _simulated(model: Path, time: Any, steps: Any, method: Any, as_json: bool, how: Any) -> tuple[Any, Any, Any]:
+    """The simulator and its rows, and the error that stopped the motion early (or None)."""
+    from ..commands import AS_GIVEN, simulate_run
+    from ..simulate.run import SimulationStopped
+
+    given = {"simulate.time": ("--time", time), "simulate.steps": ("--steps", steps)}
+    with options_named(given):
+        try:
+            simulator, result = simulate_run(model, time, steps, method, progress=not as_json,
+                                             how=_how(how) or AS_GIVEN)
+        except SimulationStopped as err:
+            return _Stopped(err), err.result, err
+    return simulator, result, None
+
+
+class _Stopped:
+    """What the views need of a simulator whose motion stopped: its model (the result's)."""
+
+    def __init__(self, err: Any) -> None:
+        self.model = err.model
+
+
+def _error_json(data: Any) -> bytes:
+    from ..report.json_text import json_bytes
+
+    return json_bytes(data)
+
+
+def _animation_format(path: Path) -> None:
+    from ..draw.animation import FORMATS
+
+    if path.suffix.lower().lstrip(".") not in FORMATS:
+        raise KinematikaError("usage", "animation-file-type", "--animate", name=repr(path.name))
+
+
+def _animate(result: Any, path: Path, model: Any, progress: bool) -> None:
+    from ..draw.animation import animate_rows
+
+    path = output_file(path, "--animate")
+    with writing(path, "--animate"):
+        animate_rows(model, result, path, progress=progress)
 
 
 def flush_and_leave(code: int = 0) -> None:

@@ -6,7 +6,7 @@ from typing import Optional
 
 import typer
 
-from .app import AssemblyOpt, JsonOpt, MessagesOpt, ModelArg, MoveOpt, SetOpt, app, how, messages
+from .app import AssemblyOpt, FormatOpt, JsonOpt, MessagesOpt, ModelArg, MoveOpt, OutputOpt, SetOpt, app, how, messages
 from .run import sweep_command
 
 
@@ -22,10 +22,8 @@ def sweep(model: Path = ModelArg,
           skip_bad: bool = typer.Option(False, "--skip-bad", help="leave positions that cannot be "
                                         "assembled (or are singular) empty instead of stopping"),
           plot: Optional[Path] = typer.Option(None, "--plot", help="draw the sweep's curves to FILE"),
-          output: Optional[Path] = typer.Option(None, "-o", "--output", help="write the rows to FILE "
-                                                "(json, csv, npz or parquet: --format, else the suffix)"),
-          fmt: Optional[str] = typer.Option(None, "--format", help="the format of -o: json, csv, npz "
-                                            "(numpy) or parquet (needs pyarrow)"),
+          output: Optional[Path] = OutputOpt,
+          fmt: Optional[str] = FormatOpt,
           sets: Optional[list[str]] = SetOpt, moves: Optional[list[str]] = MoveOpt,
           assembly: Optional[int] = AssemblyOpt, lang: Optional[str] = MessagesOpt,
           ) -> None:

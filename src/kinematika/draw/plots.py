@@ -33,6 +33,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from ..errors import KinematikaError
+from ..questions import QUESTIONS
 from ..sweep.angles import angles_of, input_axis
 from .style import BODY_COLOURS, INK
 
@@ -239,8 +240,7 @@ def _asked(points: dict[str, dict], model: Any) -> list[str]:
     """The points to plot on curved paths: those the model asks about, else all."""
     if model is None or getattr(model, "default_questions", True):
         return list(points)
-    asked = [q.target for q in model.questions
-             if q.kind in ("velocity", "acceleration", "curvature", "intrinsic", "decompose")]
+    asked = [q.target for q in model.questions if QUESTIONS[q.kind].about == "point"]
     names = [n for n in points if any(n == str(t) or n == t.point for t in asked)]
     return names or list(points)
 

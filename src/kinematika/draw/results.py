@@ -10,8 +10,8 @@ from typing import Any, Optional
 
 import numpy as np
 
-from ..model.model import POINT_QUESTIONS, PointRef
-from ..questions import answer
+from ..model.model import PointRef
+from ..questions import QUESTIONS, answer
 from .options import DrawOptions
 from .geometry import perpendicular
 from .names import (bare, body_labels, contact_name, equation, formula, pair_symbol, point_symbol,
@@ -70,8 +70,8 @@ def vector_targets(sol: Any, options: DrawOptions, kind: str,
     nothing in particular: velocities at its moving points, no accelerations."""
     model = sol.model
     default = default_ask(model)
-    asked = [] if default else [(q.target, q.relative_to) for q in model.questions
-                                if q.kind == kind]
+    arrows = drawn_questions(model).arrows[kind]
+    asked = [] if default else [(q.target, q.relative_to) for q in arrows]
     if flag is False:
         return []
     if flag is None and not options.points and not default:
@@ -81,8 +81,8 @@ def vector_targets(sol: Any, options: DrawOptions, kind: str,
     if options.points:
         shown = [(model.resolve_point(p, "--points"), None) for p in options.points]
     else:
-        shown = [] if default else [(q.target, q.relative_to if q.kind == kind else None)
-                                    for q in model.questions if q.kind in POINT_QUESTIONS]
+        shown = [] if default else [(q.target, q.relative_to if any(q is a for a in arrows) else None)
+                                    for q in model.questions if QUESTIONS[q.kind].about == "point"]
         shown = shown or _moving_points(sol)
     return _unique(shown)
 
@@ -105,9 +105,7 @@ def _decompositions(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) 
 
     drawn = {v.kind for v in scene.vectors}
     words = _part_words(options.lang)
-    for q in sol.model.questions:
-        if q.kind != "decompose":
-            continue
+    for q in drawn_questions(sol.model).compositions:
         parts = decompose(sol, q)
         origin = num.page(sol.position(q.target))
         for kind in KINDS:
@@ -246,9 +244,7 @@ def _asked_centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -
     if options.centres:
         scene.notes.append("instant centres are planar: not drawn for a 3D model")
     model = sol.model
-    for q in model.questions:
-        if q.kind != "icr":
-            continue
+    for q in drawn_questions(model).centres:
         name = q.target if not q.relative_to else f"{q.target}/{q.relative_to}"
         label = pair_symbol("I", model, q.relative_to or model.frame, q.target, options.lang)
         _add_centre(scene, num, answer(sol, q), f"icr:{name}", label,
@@ -300,9 +296,7 @@ def _kennedy_line(num: Numbers, c1: dict, c2: dict, target: dict):
 
 # curvature -------------------------------------------------------------------------------
 def _curvatures(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None) -> None:
-    for q in sol.model.questions:
-        if q.kind != "curvature":
-            continue
+    for q in drawn_questions(sol.model).circles:
         name = point_symbol("ρ", sol.model, q.target.point, q.target.body, q.relative_to, lang)
         value = answer(sol, q)
         if value.get("rest"):
@@ -349,21 +343,80 @@ def _axis_label(model: Any, q: Any, lang: Optional[str]) -> str:
 
 
 def _other_marks(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None) -> None:
-    for q in sol.model.questions:
-        if q.kind == "pole":
-            value = answer(sol, q)
-            if value.get("point") is not None:
-                label = subscript("Γ", body_labels(sol.model, lang)[q.target])
-                scene.marks.append(MarkView("pole", f"pole:{q.target}", label,
-                                            point=num.page(value["point"]), pair=(q.target,)))
-        elif q.kind == "contact":
-            value = answer(sol, q)
-            if value.get("point") is not None:
-                name = contact_name(sol.model, q.target)
-                label = subscript("J", name[1:]) if name[1:].isdigit() else "$\\mathrm{" + name + "}$"
-                scene.marks.append(MarkView("contact", f"contact:{q.target}", label, point=num.page(value["point"])))
-        elif q.kind == "axis" and scene.dim == 3:
-            value = answer(sol, q)
-            if value.get("point") is not None:
-                scene.axes.append(AxisView(f"axis:{q.target}", _axis_label(sol.model, q, lang),
-                                           num.page(value["point"]), num.page(value["direction"])))
+    for mark, q in drawn_questions(sol.model).marks:
+        mark(scene, sol, num, lang, q)
+
+
+def _pole(scene: Scene, sol: Any, num: Numbers, lang: Optional[str], q: Any) -> None:
+    value = answer(sol, q)
+    if value.get("point") is not None:
+        label = subscript("Γ", body_labels(sol.model, lang)[q.target])
+        scene.marks.append(MarkView("pole", f"pole:{q.target}", label,
+                                    point=num.page(value["point"]), pair=(q.target,)))
+
+
+def _contact(scene: Scene, sol: Any, num: Numbers, lang: Optional[str], q: Any) -> None:
+    value = answer(sol, q)
+    if value.get("point") is not None:
+        name = contact_name(sol.model, q.target)
+        label = subscript("J", name[1:]) if name[1:].isdigit() else "$\\mathrm{" + name + "}$"
+        scene.marks.append(MarkView("contact", f"contact:{q.target}", label, point=num.page(value["point"])))
+
+
+def _axis(scene: Scene, sol: Any, num: Numbers, lang: Optional[str], q: Any) -> None:
+    if scene.dim != 3:
+        return
+    value = answer(sol, q)
+    if value.get("point") is not None:
+        scene.axes.append(AxisView(f"axis:{q.target}", _axis_label(sol.model, q, lang),
+                                   num.page(value["point"]), num.page(value["direction"])))
+
+
+# which questions are drawn how ---------------------------------------------------------------
+class Drawn:
+    """The model's questions by the way a figure draws them, each kind choosing its way
+    (`QuestionKind.draw`, a `questions.Figure`): arrows of each level at their points,
+    compositions' parts, instant centres, curvature circles, and marks (a pole, a contact
+    point, a screw axis) with the function that adds each, in the order asked."""
+
+    def __init__(self, questions: list) -> None:
+        self.arrows: dict[str, list] = {kind: [] for kind in KINDS}
+        self.compositions: list = []
+        self.centres: list = []
+        self.circles: list = []
+        self.marks: list = []
+        for q in questions:
+            QUESTIONS[q.kind].draw(self, q)
+
+    def arrow(self, q: Any, level: str) -> None:
+        """An arrow of the point's velocity or acceleration (`vector_targets`)."""
+        self.arrows[level].append(q)
+
+    def composition(self, q: Any) -> None:
+        """A composition's parts (`_decompositions`)."""
+        self.compositions.append(q)
+
+    def instant_centre(self, q: Any) -> None:
+        """An instant centre's mark (`_asked_centres`)."""
+        self.centres.append(q)
+
+    def path_circle(self, q: Any) -> None:
+        """A curvature circle (`_curvatures`)."""
+        self.circles.append(q)
+
+    def acceleration_pole(self, q: Any) -> None:
+        """A pole's mark Γ (`_pole`)."""
+        self.marks.append((_pole, q))
+
+    def contact_point(self, q: Any) -> None:
+        """A contact's mark J (`_contact`)."""
+        self.marks.append((_contact, q))
+
+    def screw_axis(self, q: Any) -> None:
+        """A screw axis, in a 3D figure (`_axis`)."""
+        self.marks.append((_axis, q))
+
+
+def drawn_questions(model: Any) -> Drawn:
+    """The model's questions by the way a figure draws them (`Drawn`)."""
+    return Drawn(model.questions)

@@ -37,11 +37,13 @@ def joint_geometry(inst: Instant, joint: Joint) -> JointGeometry:
 
 def joint_rows(geo: JointGeometry, lv: Level) -> list[Row]:
     """The joint's conditions at level `lv`, each a `Row` that must vanish."""
+    joint = geo.joint
+    where, name = joint.where, joint.id
     out = []
-    for lin, label in geo.joint.kind.rows(geo, lv):
+    for lin, label in joint.kind.rows(geo, lv):
         if not isinstance(lin, Lin):
             lin = Lin(const=lin)
-        out.append(Row(lin, Said("row-joint", id=geo.joint.id, label=label), geo.joint.where, joint=geo.joint.id))
+        out.append(Row(lin, Said("row-joint", id=name, label=label), where, joint=name))
     return out
 
 

@@ -113,8 +113,16 @@ class VelocityLevel(Level):
 
     def point(self, body: str, p: tuple) -> tuple:
         """v = v₀ + ω × (P − ref)."""
-        r = sub(p, self.ref)
-        return add(self.u.trans(body), self.space.cross(self.u.rot(body), r))
+        o = self.u.offset.get(body) if self.space.dim == 2 and type(self.u) is Unknowns else None
+        if o is None:
+            return add(self.u.trans(body), self.space.cross(self.u.rot(body), sub(p, self.ref)))
+        # a moving body in the plane: the same linear forms, written out (the terms in the
+        # order, and the constants of the type, that the products above give)
+        ref = self.ref
+        rx, ry = p[0] - ref[0], p[1] - ref[1]
+        x = Lin({o + 1: 1}) if _is_zero(ry) else Lin({o + 1: 1, o: -1 * ry}, 0 + 0 * ry)
+        y = Lin({o + 2: 1}) if _is_zero(rx) else Lin({o + 2: 1, o: 1 * rx}, 0 + 0 * rx)
+        return (x, y)
 
 
 class AccelerationLevel(Level):
@@ -126,7 +134,21 @@ class AccelerationLevel(Level):
 
     def point(self, body: str, p: tuple) -> tuple:
         """a = a₀ + α × r + ω × (ω × r), with ω known."""
+        if self.space.dim == 2 and type(self.u) is KnownTerms:
+            ref = self.ref
+            rx, ry = p[0] - ref[0], p[1] - ref[1]
+            w = self.w(body)
+            if type(rx) is float and type(ry) is float and type(w) is float:
+                # the known terms only, on floats: the sums below written out (a₀ and α × r
+                # are zeros, which leave 0.0 + the centripetal term)
+                c = self.terms.normal_part((-w * (w * rx), w * (-w * ry)))
+                return (0.0 + c[0], 0.0 + c[1])
         r = sub(p, self.ref)
         w = self.w(body)
         centripetal = self.terms.normal_part(self.space.cross(w, self.space.cross(w, r)))
         return add(add(self.u.trans(body), self.space.cross(self.u.rot(body), r)), centripetal)
+
+
+def _is_zero(k: Any) -> bool:
+    """A factor that `Lin.__mul__` turns into the empty form (a plain zero number)."""
+    return isinstance(k, (int, float)) and k == 0

@@ -40,7 +40,13 @@ class Lin:
         return Lin({k: -v for k, v in self.terms.items()}, -self.const)
 
     def __sub__(self, other: Any) -> "Lin":
-        return self + (-other)
+        # self + (-other), without the negated form: the same operations, term by term
+        if isinstance(other, Lin):
+            terms = dict(self.terms)
+            for k, v in other.terms.items():
+                terms[k] = terms[k] + (-v) if k in terms else -v
+            return Lin(terms, self.const + (-other.const))
+        return Lin(self.terms, self.const + (-other))
 
     def __rsub__(self, other: Any) -> "Lin":
         return (-self) + other

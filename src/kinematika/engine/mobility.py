@@ -5,8 +5,9 @@ length, rows equilibrated), so that ranks and the condition number compare like 
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Callable, Optional
 
 import numpy as np
 
@@ -45,31 +46,62 @@ def numeric_rank(a: np.ndarray, reference: float | None = None) -> int:
     return int(np.sum(s > top / SINGULAR_CONDITION)) if top > 0 else 0
 
 
-@dataclass
 class Diagnosis:
     """What the rank of the dimensionless matrix says: `n` unknowns, the degrees of freedom the
     joints leave (`dof` = n − rank of the joint rows), the independent conditions the drivers
-    add, and the condition number (the largest singular value over the n-th)."""
+    add, and the condition number (the largest singular value over the n-th).
 
-    n: int
-    dof: int                 # of the joints alone
-    conditions: int          # independent driver conditions
-    condition_number: float
+    `dof` and `conditions` may be given, or counted on first use by `ranks()` (the joint
+    rows' rank takes an SVD of its own, which a motion solved instant after instant never
+    reads: it asks only for the condition number)."""
+
+    __slots__ = ("_conditions", "_dof", "_ranks", "condition_number", "n")
+
+    def __init__(self, n: int, dof: Optional[int] = None, conditions: Optional[int] = None,
+                 condition_number: float = math.inf, ranks: Optional[Callable[[], tuple[int, int]]] = None) -> None:
+        self.n, self.condition_number = n, condition_number
+        self._dof, self._conditions, self._ranks = dof, conditions, ranks
+
+    def _count(self) -> None:
+        if self._dof is None or self._conditions is None:
+            joints, total = self._ranks()            # type: ignore[misc]
+            self._dof, self._conditions = self.n - joints, total - joints
+
+    @property
+    def dof(self) -> int:
+        """Degrees of freedom the joints alone leave: n − rank of the joint rows."""
+        self._count()
+        return self._dof                             # type: ignore[return-value]
+
+    @property
+    def conditions(self) -> int:
+        """Independent conditions the drivers add: rank of all rows − rank of the joint rows."""
+        self._count()
+        return self._conditions                      # type: ignore[return-value]
+
+    def __repr__(self) -> str:
+        return f"Diagnosis(n={self.n}, dof={self.dof}, conditions={self.conditions}, " \
+               f"condition_number={self.condition_number!r})"
 
 
 def diagnose(scaled: np.ndarray, is_driver: np.ndarray, s: np.ndarray | None = None) -> Diagnosis:
     """The `Diagnosis` of a scaled system whose driver rows are marked by `is_driver`: ranks
     by singular values (`s`, the whole matrix's when the caller has them), dof = n −
-    rank(joints), driver conditions = rank(all) − rank(joints)."""
+    rank(joints), driver conditions = rank(all) − rank(joints); the joint rows' rank is
+    counted when first asked for."""
     n = scaled.shape[1]
     if s is None:
         s = np.linalg.svd(scaled, compute_uv=False) if scaled.size else np.zeros(0)
     top = s[0] if s.size else 0.0
     smallest = s[n - 1] if s.size >= n and n > 0 else 0.0
     cond = float(top / smallest) if smallest > 0 else float("inf")
-    joints = numeric_rank(scaled[~is_driver], top)
-    total = int(np.sum(s > top / SINGULAR_CONDITION)) if top > 0 else 0
-    return Diagnosis(n, n - joints, total - joints, cond)
+
+    def ranks() -> tuple[int, int]:
+        joints = numeric_rank(scaled[~is_driver], top)
+        total = int(np.sum(s > top / SINGULAR_CONDITION)) if top > 0 else 0
+        return joints, total
+
+    return Diagnosis(n, condition_number=cond, ranks=ranks)
 
 
 def underdetermined_error(scaled: np.ndarray, is_driver: np.ndarray, labels: list[str],

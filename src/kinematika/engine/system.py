@@ -51,17 +51,20 @@ class InstantSolver:
         out: list[Row] = []
         pairs: list = []          # the two bodies each joint row or driver row relates
         model = self.inst.model
+        paired = not lv.accel     # the same at both levels: taken at the velocity level
         for j in model.joints:
             rows = joint_rows(self.geos[j.id], lv)
             out += rows
-            pairs += [frozenset((j.a, j.b))] * len(rows)
+            if paired:
+                pairs += [frozenset((j.a, j.b))] * len(rows)
         for d in model.drivers:
             rows = driver_rows(self.inst, d, self.geos, lv)
             out += rows
             body = d.body if d.kind == "omega" else d.point.body if d.kind == "velocity" else None
             pairs += [frozenset((body, d.relative_to or model.frame)) if body else None] * len(rows)
         idle = idle_rows(self.inst, lv)
-        self.pairs = pairs + [None] * len(idle)
+        if paired:
+            self.pairs = pairs + [None] * len(idle)
         return out + idle
 
     def matrix(self, rows: list[Row]) -> tuple[list[list[Any]], list[Any]]:
@@ -96,12 +99,24 @@ class InstantSolver:
             self.analysis = analyse_sparse(self.a_num, self.is_driver, translation, inst.scale,
                                            self.labels, self.wheres, body_of, self._restating)
             return
-        a, self.b_v = self.matrix(rows_v)
-        self.a_sym = a
-        self.a_num = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), u.n)
+        if inst.symbolic:
+            a, self.b_v = self.matrix(rows_v)
+            self.a_sym = a
+            self.a_num = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), u.n)
+        else:                       # numbers: the matrix filled from the rows' terms at once
+            self.a_sym, self.b_v, self.a_num = None, [-r.lin.const for r in rows_v], self._numeric(rows_v)
         self.analysis = analyse(self.a_num, self.is_driver, translation, inst.scale, self.labels,
                                 self.wheres, body_of, want_blocks=inst.symbolic,
                                 restating=self._restating)
+
+    def _numeric(self, rows: list[Row]) -> np.ndarray:
+        """A of a numeric instance as floats, the entries the rows' terms give (others 0)."""
+        a = np.zeros((len(rows), self.unknowns.n))
+        num = self.inst.num
+        for i, row in enumerate(rows):
+            for col, coef in row.lin.terms.items():
+                a[i, col] = num(coef)
+        return a
 
     def _restating(self) -> np.ndarray:
         """The driver rows that restate what a joint between the same two bodies fixes in

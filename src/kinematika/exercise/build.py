@@ -12,7 +12,7 @@ from decimal import Decimal
 from pathlib import Path
 from typing import Any, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Num, Said
 from ..model.exercise_section import ExerciseSection, Unit
 from ..model.model import Model
 from .key import Row, floors_of, graded, key_rows
@@ -33,6 +33,17 @@ class Variant:
     solution: Any
     answers: list[dict]
     rows: list[Row]
+    mistaken: list = field(default_factory=list)             # mistakes.Mistaken, in KINDS order
+    tolerances: dict[str, float] = field(default_factory=dict)  # question -> relative tolerance
+    narrowed: dict[str, tuple[str, float, float]] = field(default_factory=dict)   # q3 -> (mistake, gap, tolerance)
+
+    def tolerance_of(self, row: Row) -> float:
+        """The relative tolerance of one of its rows (`margins`)."""
+        return self.tolerances.get(row.question, 0.01)
+
+    def margin(self, row: Row) -> float:
+        """The absolute margin of a right answer of one of its rows."""
+        return row.margin(self.tolerance_of(row))
 
     def all_stated(self, exercise: "Exercise") -> dict[str, Decimal]:
         """Every parameter's value as stated: the varied ones', then the model's others."""
@@ -50,6 +61,8 @@ class Exercise:
     lang: str
     variants: list[Variant] = field(default_factory=list)
     source: Optional[Path] = None
+    students: list = field(default_factory=list)        # roster.Student, with their variants
+    notes: list[Said] = field(default_factory=list)     # what drawing the variants skipped or narrowed
 
     @property
     def asks(self) -> list[int]:
@@ -59,8 +72,9 @@ class Exercise:
 
     @property
     def title(self) -> str:
-        """The exercise's title in its language: the section's, else the model's name."""
-        return self.section.title.get(self.lang, self.model.name)
+        """The exercise's title in its language: the section's, else the model's title in
+        that language (`names:`), else its name."""
+        return self.section.title.get(self.lang) or self.model.wording.title(self.lang, self.model.name)
 
     @property
     def tolerance(self) -> float:
@@ -116,6 +130,27 @@ class Exercise:
                       variant.solution, variant.rows, _answers_and_floors)
         return mistakes_of(world)
 
+    def judged(self, variant: Variant) -> Optional[tuple]:
+        """Give `variant` its mistakes and its margins (`margins`); when it cannot tell a
+        usual mistake from the right answer, why: (question, mistake, relative gap)."""
+        from .margins import allowances, data_of, margins
+
+        variant.mistaken = self.mistakes(variant)
+        kinds = [q.kind for q in self.model.questions]
+
+        def solve_with(name: str, value: float) -> list[Row]:
+            from ..model.overrides import with_parameters
+            from ..sweep.posing import prepare
+
+            model = with_parameters(prepare(self.model, set=variant.sets), {name: repr(value)})
+            answers, floors = _answers_and_floors(model)
+            return key_rows(answers, kinds, self.asks, floors)
+
+        allowance = allowances(variant.rows, data_of(variant.solution), solve_with)
+        found = margins(variant.rows, allowance, variant.mistaken, self.tolerance)
+        variant.tolerances, variant.narrowed = found.tolerance, found.narrowed
+        return found.close or None
+
     def variant(self, number: int) -> Variant:
         """Variant `number` (1-based); a number outside 1 … count is a usage error naming the
         range."""
@@ -139,8 +174,9 @@ def _answers_and_floors(model: Model, terms: Any = None) -> tuple[list[dict], di
 
 
 def make_exercise(model: Model, vary: list[str], count: int, seed: int, lang: str,
-                  source: Optional[Path] = None) -> Exercise:
-    """`count` variants of `model`'s problem, drawn on the `--vary` grids with `seed`."""
+                  source: Optional[Path] = None, students: Optional[list] = None) -> Exercise:
+    """`count` variants of `model`'s problem, drawn on the `--vary` grids with `seed`; with
+    `students` (`roster.Student`), each given one of them (`roster.assigned`)."""
     from ..languages import known
 
     known(lang)
@@ -169,9 +205,37 @@ def make_exercise(model: Model, vary: list[str], count: int, seed: int, lang: st
         condition = variant.solution.diagnosis.condition_number
         if condition > MAX_CONDITION:
             return Drawn(reason="dead-point")
+        close = ex.judged(variant)
+        if close is not None:
+            ex.notes.append(close_note(stated, close))
+            return Drawn(reason="mistake-close")
         return Drawn(kept=variant)
 
     for number, (_, variant) in enumerate(draw_variants(varies, count, seed, accept), start=1):
         variant.number = number
         ex.variants.append(variant)
+        ex.notes += [narrowed_note(number, question, kind, gap, tolerance)
+                     for question, (kind, gap, tolerance) in variant.narrowed.items()]
+    if students:
+        from .roster import assigned
+
+        ex.students = assigned(students, len(ex.variants), seed)
     return ex
+
+
+def close_note(stated: dict[str, Decimal], close: tuple) -> Said:
+    """Why a drawn variant was left out: a mistake's answer too close to the right one (the
+    gap in per cent, 2 significant figures)."""
+    from .stated import plain_decimal
+
+    question, kind, gap = close
+    data = ", ".join(f"{k}={plain_decimal(v)}" for k, v in stated.items())
+    if kind == "rounding":
+        return Said("exercise-not-drawn-rounding", data=data, question=question, gap=Num(100 * gap, ".2g"))
+    return Said("exercise-not-drawn-mistake", data=data, kind=kind, question=question, gap=Num(100 * gap, ".2g"))
+
+
+def narrowed_note(number: int, question: str, kind: str, gap: float, tolerance: float) -> Said:
+    """A variant whose box was narrowed to tell a mistake apart."""
+    return Said("exercise-narrowed", number=number, question=question, tolerance=Num(100 * tolerance, ".2g"),
+                kind=kind, gap=Num(100 * gap, ".2g"))

@@ -9,7 +9,7 @@
     key.html        the answer key with the worked solutions; key.pdf likewise
     figures/        each variant's figure (variant-001.png …)
     links.txt       variant, then the link fragment that opens it in the page (`kinematika app`)
-    students.csv    student,variant (when the students are named)
+    students.csv    student,variant (with `--students`: who was given which variant)
 
 `kinematika grade DIR` reads it back: the model, exercise.json and variants.csv give the
 variants again (solved again by the same solver), and key.csv must agree with them.
@@ -21,49 +21,52 @@ import io
 import json
 from decimal import Decimal, InvalidOperation
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any, Callable, Iterator, Optional
 
-from ..errors import KinematikaError, parser_problem, reason
+from ..errors import KinematikaError, Said, parser_problem, reason
 from .build import DEFAULT_SECTION, Exercise
 from .key import value_text
+from .moodle import QuizOptions
 from .stated import plain_decimal
 from .variants import parse_vary
 
 AGREE = 1e-9           # key.csv and the model solved again agree to this (relative to the value's size)
 
 
-def write_exercise(ex: Exercise, out: Path, names: Optional[list[str]] = None, solutions: bool = True,
-                   pdf: bool = True) -> list[str]:
-    """Write the folder; the notes to show (what was written, what was skipped)."""
-    from .figure import dimensions_of, figure_png
+def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = True,
+                   quiz: Optional[QuizOptions] = None,
+                   progress: Optional[Callable[[int, int], None]] = None) -> list[Said]:
+    """Write the folder; the notes to show (what was written, what was skipped or narrowed).
+    `quiz` holds Moodle's options (a question per part, a penalty for a wrong unit);
+    `progress(done, total)` is told as the variants' figures and solutions are made."""
     from .moodle import quiz_xml
+    from .roster import students_csv
     from .sheets import key_html, sheets_html, students_for
-    from .solutions import solution_html
 
     out.mkdir(exist_ok=True)
     (out / "figures").mkdir(exist_ok=True)
     figures, worked, mistakes = {}, {}, {}
-    for v in ex.variants:
-        figures[v.number] = figure_png(v.solution, dimensions_of(ex, v.solution, v.all_stated(ex), ex.lang), ex.lang)
-        (out / "figures" / f"variant-{v.number:03d}.png").write_bytes(figures[v.number])
-        mistakes[v.number] = ex.mistakes(v)
+    for number, (png, solution) in drawn(ex, solutions, progress):
+        figures[number] = png
+        (out / "figures" / f"variant-{number:03d}.png").write_bytes(png)
         if solutions:
-            worked[v.number] = solution_html(ex, v, ex.lang)
+            worked[number] = solution
+    for v in ex.variants:
+        mistakes[v.number] = v.mistaken
     _text(out / "variants.csv", variants_csv(ex))
     _text(out / "key.csv", key_csv(ex))
     if ex.source is not None:
         (out / ex.source.name).write_bytes(ex.source.read_bytes())
     _text(out / "exercise.json", json.dumps(meta(ex), ensure_ascii=False, indent=1) + "\n")
-    _text(out / "quiz.xml", quiz_xml(ex, figures, worked if solutions else None, mistakes))
-    students = students_for(ex, names)
-    if names:
-        _text(out / "students.csv", "student,variant\n" + "".join(
-            f"{_csv_field(s.label)},{s.variant}\n" for s in students))
+    _text(out / "quiz.xml", quiz_xml(ex, figures, worked if solutions else None, mistakes, quiz or QuizOptions()))
+    students = students_for(ex)
+    if ex.students:
+        _text(out / "students.csv", students_csv(ex.students))
     if ex.source is not None:
         _text(out / "links.txt", "".join(f"{v.number}\t{page_link(ex, v.number)}\n" for v in ex.variants))
     _text(out / "sheets.html", sheets_html(ex, figures, students))
     _text(out / "key.html", key_html(ex, figures, worked))
-    notes = [f"wrote {len(ex.variants)} variants to {out}"]
+    notes = [*ex.notes, Said("exercise-wrote", count=len(ex.variants), folder=str(out))]
     if pdf:
         from .printing import missing, print_pdfs
 
@@ -73,6 +76,60 @@ def write_exercise(ex: Exercise, out: Path, names: Optional[list[str]] = None, s
         else:
             notes.append(reason)
     return notes
+
+
+WORKERS_FROM = 4          # variants from which the figures and solutions are made in parallel
+
+
+def drawn(ex: Exercise, solutions: bool, progress: Optional[Callable[[int, int], None]] = None
+          ) -> Iterator[tuple[int, tuple[bytes, str]]]:
+    """Each variant's statement figure (PNG) and worked solution (HTML, '' without
+    `solutions`), in the variants' order: in a process per core when there are several
+    cores and variants and this process runs no other thread (forked processes that hold
+    the exercise; the same bytes as made one by one), else one by one."""
+    import os
+    import sys
+    import threading
+
+    numbers = [v.number for v in ex.variants]
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    total = len(numbers)
+    alone = threading.active_count() == 1          # a fork copies no other thread's held lock
+    if cores < 2 or total < WORKERS_FROM or not alone or not sys.platform.startswith("linux"):
+        for done, n in enumerate(numbers, start=1):
+            yield n, _drawn_one(ex, n, solutions)
+            if progress:
+                progress(done, total)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    global _FORKED
+    _FORKED = (ex, solutions)
+    try:
+        with ProcessPoolExecutor(min(cores, total), mp_context=multiprocessing.get_context("fork")) as pool:
+            for done, (n, made) in enumerate(zip(numbers, pool.map(_drawn_forked, numbers)), start=1):
+                yield n, made
+                if progress:
+                    progress(done, total)
+    finally:
+        _FORKED = None
+
+
+_FORKED: Any = None          # the exercise the forked workers draw (set before the fork)
+
+
+def _drawn_forked(number: int) -> tuple[bytes, str]:
+    ex, solutions = _FORKED
+    return _drawn_one(ex, number, solutions)
+
+
+def _drawn_one(ex: Exercise, number: int, solutions: bool) -> tuple[bytes, str]:
+    from .figure import statement_figure
+    from .solutions import solution_html
+
+    v = ex.variant(number)
+    return statement_figure(ex, v, ex.lang), (solution_html(ex, v, ex.lang) if solutions else "")
 
 
 def page_link(ex: Exercise, number: int) -> str:
@@ -128,7 +185,7 @@ def key_csv(ex: Exercise) -> str:
     tolerance)."""
     lines = ["variant,question,value,tolerance"]
     for v in ex.variants:
-        lines += [f"{v.number},{r.question},{value_text(r.value)},{ex.tolerance!r}" for r in v.rows]
+        lines += [f"{v.number},{r.question},{value_text(r.value)},{v.tolerance_of(r)!r}" for r in v.rows]
     return "\n".join(lines) + "\n"
 
 
@@ -152,8 +209,12 @@ def load_exercise(folder: Path) -> Exercise:
     for number, stated in enumerate(_variants(folder / "variants.csv", [v.name for v in ex.varies]), start=1):
         variant = ex.solve(stated)
         variant.number = number
+        ex.judged(variant)
         ex.variants.append(variant)
     _check_key(ex, folder / "key.csv")
+    from .roster import read_students
+
+    ex.students = read_students(folder / "students.csv", len(ex.variants)) or []
     return ex
 
 

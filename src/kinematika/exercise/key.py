@@ -20,12 +20,10 @@ import math
 from dataclasses import dataclass
 from typing import Any, Iterator, Optional
 
-from ..report.json_answer import FIELD_KINDS
-from ..report.units import ANSWER_KINDS, unit
+from ..report.units import answer_kind, field_kind, unit
 
 AXES = "xyz"
 FLOOR = 0.01      # a value is measured against at least 1 % of the mechanism's scale of its kind
-QUESTION_KINDS = ANSWER_KINDS                  # the kind each question answers (`report.units`)
 
 
 @dataclass(frozen=True)
@@ -52,7 +50,7 @@ class Row:
 def rows_of(ask: int, kind: str, value: Any, floors: dict[str, float]) -> list[Row]:
     """The rows of question number `ask` (1-based) of `kind` with the answer `value` (the
     contract's JSON value); `floors` are the smallest sizes of each kind of quantity."""
-    return list(_walk(f"q{ask}", QUESTION_KINDS.get(kind, kind), value, ask, floors))
+    return list(_walk(f"q{ask}", answer_kind(kind) or kind, value, ask, floors))
 
 
 def _walk(name: str, kind: str, value: Any, ask: int, floors: dict[str, float]) -> Iterator[Row]:
@@ -69,7 +67,7 @@ def _walk(name: str, kind: str, value: Any, ask: int, floors: dict[str, float]) 
         return
     if isinstance(value, dict):
         for key, part in value.items():
-            part_kind = (FIELD_KINDS[key] or "unit") if key in FIELD_KINDS else kind
+            part_kind = field_kind(key, kind) or "unit"
             yield from _walk(f"{name}.{key}", part_kind, part, ask, floors)
 
 

@@ -29,6 +29,7 @@ from ..engine.terms import Terms
 from ..errors import KinematikaError, KinematikaWarning
 from ..expressions import Expr, parse
 from ..model.model import Joint, Model
+from ..questions import QUESTIONS
 from .key import Row, key_rows
 
 KINDS = ("coriolis-omitted", "coriolis-doubled", "normal-omitted", "sense-reversed", "drag-as-absolute",
@@ -166,7 +167,7 @@ def _drag(world: World, model: Model) -> Optional[Mistaken]:
         q = model.questions[k - 1]
         guide = guide_of(model, q.target.body, q.target.point)
         state, place = sol.state(guide), sol.position(q.target)
-        value = (sol.motion.velocity(state, place) if q.kind == "velocity"
+        value = (sol.motion.velocity(state, place) if QUESTIONS[q.kind].level == "velocity"
                  else sol.motion.acceleration(state, place))
         for row in rows_of(k, q.kind, [float(c) for c in value], floors):
             rows[row.question] = row
@@ -174,7 +175,8 @@ def _drag(world: World, model: Model) -> Optional[Mistaken]:
 
 
 def _drag_question(model: Model, q: Any) -> bool:
-    return (q.kind in ("velocity", "acceleration") and q.relative_to in (None, model.frame)
+    kind = QUESTIONS[q.kind]             # a point's velocity or acceleration, in the fixed frame
+    return (kind.column and kind.about == "point" and q.relative_to in (None, model.frame)
             and guide_of(model, q.target.body, q.target.point) is not None)
 
 

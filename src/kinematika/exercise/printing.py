@@ -11,6 +11,7 @@ import shutil
 from pathlib import Path
 from typing import Any, Callable, Optional
 
+from ..errors import Said
 from ..limits import PRINT_SECONDS
 
 CHROMIUM = "/usr/bin/chromium"
@@ -23,14 +24,14 @@ def chromium() -> Optional[str]:
     return CHROMIUM if Path(CHROMIUM).exists() else shutil.which("chromium")
 
 
-def missing() -> Optional[str]:
+def missing() -> Optional[Said]:
     """Why pages cannot be printed here (one line), or None when they can."""
     from ..extras import available, install_hint
 
     if not available("playwright.sync_api"):
-        return f"PDF skipped: Playwright is not installed ({install_hint('exercise')})"
+        return Said("pdf-skipped", program="Playwright", hint=install_hint("exercise"))
     if chromium() is None:
-        return "PDF skipped: Chromium is not installed (apt-get install chromium)"
+        return Said("pdf-skipped", program="Chromium", hint="apt-get install chromium")
     return None
 
 
@@ -58,7 +59,8 @@ def _print_pdfs(pages: list[tuple[Path, Path]]) -> None:
             page.set_default_timeout(PRINT_SECONDS * 1000)
             for html, pdf in pages:
                 page.goto(html.resolve().as_uri(), wait_until="load")
-                page.pdf(path=str(pdf), format="A4", print_background=True, prefer_css_page_size=True)
+                page.pdf(path=str(pdf), format="A4", print_background=True, prefer_css_page_size=True,
+                         outline=True)      # bookmarks from the headings (tagging would double the size)
         finally:
             browser.close()
 

@@ -15,6 +15,7 @@ from typing import Any
 
 from ..errors import KinematikaError
 from ..model.exercise_section import PLACEHOLDER
+from ..questions import QUESTIONS
 from .catalogue import catalogue
 from .key import Row
 from .stated import stated_text
@@ -67,36 +68,52 @@ def asked(exercise: Any, rows: list[Row], lang: str) -> list[Asked]:
         if not mine:
             continue
         q = model.questions[k - 1]
-        out.append(Asked(k, question_words(model, q, lang), [(r, part_words(r, lang)) for r in mine]))
+        out.append(Asked(k, question_words(model, q, lang), [(r, part_words(r, lang, model, q)) for r in mine]))
     return out
 
 
 def question_words(model: Any, q: Any, lang: str) -> str:
-    """A question in words: `angular velocity of rocker relative to M`."""
+    """A question in words, with the model's names in `lang` (`names:`): `the angular velocity
+    of the rocker relative to the guide`; Catalan and Spanish contract a preposition with a
+    name's article (`del portador`)."""
+    from ..explain.catalogue import CONTRACTIONS
+
     cat = catalogue(lang)
+    wording = model.wording
     frame = None if q.relative_to in (None, model.frame) else q.relative_to
-    args: dict[str, Any] = {"frame": frame or model.frame}
+    args: dict[str, Any] = {"frame": wording.body(frame or model.frame, lang)}
     target = q.target
     if hasattr(target, "point"):
-        args.update(point=target.point, body=target.body)
+        args.update(point=target.point, body=wording.body(target.body, lang))
     else:
-        args.update(body=str(target), joint=str(target))
+        args.update(body=wording.body(str(target), lang), joint=wording.joint(str(target), lang))
     if q.moving is not None:
-        args["frame"] = q.moving
+        args["frame"] = wording.body(q.moving, lang)
     key = f"ask-{q.kind}" + ("-rel" if frame and cat.has(f"ask-{q.kind}-rel") else "")
+    written = q.echo.get(QUESTIONS[q.kind].name, "@")      # the target as the file writes it
+    if hasattr(target, "point") and "@" not in str(written) and cat.has(key + "-point"):
+        key += "-point"          # `{velocity: C}`: every body carrying C moves it alike
     if not cat.has(key):
         return cat.format("ask-other", {"n": q.index + 1})
-    return cat.format(key, args)
+    text = cat.format(key, args)
+    for pattern, short in CONTRACTIONS.get(lang, ()):
+        text = pattern.sub(short, text)
+    return text
 
 
-def part_words(row: Row, lang: str) -> str:
-    """The words of one number of a question: `x`, `radius`, `drag velocity, x`."""
+def part_words(row: Row, lang: str, model: Any = None, q: Any = None) -> str:
+    """The words of one number of a question: `x`, `radius`, `drag velocity, x`; a contact's
+    point of one body named by that body (`body_a` of the joint's first body)."""
     cat = catalogue(lang)
     parts = row.question.split(".")[1:]
     words = []
     for p in parts:
         if p in COMPONENTS:
             words.append(p)
+        elif p in ("body_a", "body_b") and model is not None and q is not None:
+            joint = next((j for j in model.joints if j.id == str(q.target)), None)
+            body = (joint.a if p == "body_a" else joint.b) if joint is not None else p
+            words.append(cat.format("part-of-body", {"body": model.wording.body(body, lang)}))
         else:
             key = f"part-{p}"
             words.append(cat.format(key) if cat.has(key) else p)

@@ -7,7 +7,8 @@ from the grids by numpy's generator seeded with `--seed` alone, so that the same
 the same variants on any machine. A drawn variant is kept when
 
 - it is new (no two variants have the same data),
-- the mechanism assembles with it (its points can be constructed and the joints hold), and
+- the mechanism assembles with it (its points can be constructed and the joints hold),
+- its usual mistakes can be told from the right answer (`margins`), and
 - it is not near a dead point: the condition number of the dimensionless constraint
   Jacobian, which the solver measures anyway (`engine.mobility`, the `singular` error at
   1e10), is at most `MAX_CONDITION`. Well-placed linkages measure 5 to 25 (the four-bar
@@ -86,7 +87,7 @@ class Drawn:
     """A candidate's fate: kept (with what the acceptance returned) or why not."""
 
     kept: Any = None
-    reason: Optional[str] = None       # "assembly", "dead-point"
+    reason: Optional[str] = None       # "assembly", "dead-point", "mistake-close"
 
 
 def draw_variants(varies: list[Vary], count: int, seed: int,
@@ -107,7 +108,7 @@ def draw_variants(varies: list[Vary], count: int, seed: int,
     rng = np.random.default_rng(seed)
     seen: set[tuple[int, ...]] = set()
     out: list[tuple[dict[str, Decimal], Any]] = []
-    failed = {"assembly": 0, "dead-point": 0}
+    failed = {"assembly": 0, "dead-point": 0, "mistake-close": 0}
     tries = TRIES * count + 200
     while len(out) < count and tries > 0 and len(seen) < total:
         tries -= 1
@@ -123,5 +124,6 @@ def draw_variants(varies: list[Vary], count: int, seed: int,
         out.append((stated, drawn.kept))
     if len(out) < count:
         raise KinematikaError("assembly", "variants-few", "--vary", found=len(out), count=count, drawn=len(seen),
-                              apart=failed['assembly'], dead=failed['dead-point'])
+                              apart=failed['assembly'], dead=failed['dead-point'],
+                              close=failed['mistake-close'])
     return out

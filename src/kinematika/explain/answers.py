@@ -5,11 +5,13 @@ from __future__ import annotations
 from typing import Any
 
 from ..model.model import PointRef
-from ..questions import answer
+from ..questions import QUESTIONS, answer
 from ..questions.curvature import intrinsic
+from .asked import worked
 from .context import Ctx, alpha_sym, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Told, Value, msg
-from .terms import KNOWN, relative_name
+from .terms import KNOWN
+from .words import ExplainWords
 
 UNITS = {"velocity": "speed", "acceleration": "accel", "omega": "rate", "alpha": "rate2",
          "drag": None, "relative": None, "coriolis": None, "total": None, "point": "len",
@@ -17,10 +19,6 @@ UNITS = {"velocity": "speed", "acceleration": "accel", "omega": "rate", "alpha":
          "tangential": "accel", "normal": "accel", "tangential_vector": "accel",
          "normal_vector": "accel", "omega_axis": "rate", "slide": "speed", "pole": "len",
          "diameter": "len", "inflection_pole": "len", "pole_velocity": "speed"}
-INFLECTION = {"pole": "ans.inflection_pole", "center": "ans.inflection_center",
-              "diameter": "ans.inflection_diameter", "inflection_pole": "ans.inflection_point",
-              "pole_tangent": "ans.pole_tangent", "pole_normal": "ans.pole_normal",
-              "pole_velocity": "ans.pole_velocity"}
 
 
 def answers_section(ctx: Ctx) -> Section:
@@ -44,39 +42,16 @@ def answers_section(ctx: Ctx) -> Section:
     return sec
 
 
-def _ref(ctx: Ctx, q) -> PointRef:
-    return ctx.model.resolve_point(q.target) if isinstance(q.target, str) else q.target
-
-
-def _label(ctx: Ctx, ref: PointRef) -> str:
-    return ctx.point_label(ref.point, ref.body)
-
-
 def question_label(ctx: Ctx, q) -> Any:
-    """The asked quantity as a symbol, or a sentence for the compound questions."""
-    rel = ctx.rel(q.relative_to)
-    if q.kind in ("velocity", "acceleration"):
-        ref = _ref(ctx, q)
-        return Sym(q.kind[0], relative_name(ref.point, ref.body, rel) if rel else _label(ctx, ref))
-    if q.kind == "omega":
-        return omega_sym(q.target, rel, vector=not ctx.planar)
-    if q.kind == "alpha":
-        return alpha_sym(q.target, rel, vector=not ctx.planar)
-    frame = Name(rel or ctx.frame, "body")
-    if q.kind in ("icr", "axis", "pole", "inflection"):
-        return msg(f"ask.{q.kind}", body=Name(q.target, "body"), frame=frame)
-    if q.kind == "contact":
-        return msg("ask.contact", joint=Name(q.target, "joint"))
-    if q.kind == "decompose":
-        ref = _ref(ctx, q)
-        return msg("ask.decompose", point=Name(_label(ctx, ref)), frame=Name(q.moving, "body"))
-    return msg(f"ask.{q.kind}", point=Name(_label(ctx, _ref(ctx, q))), frame=frame)
+    """The asked quantity as a symbol, or a sentence for the compound questions (the kind's
+    `label`)."""
+    return QUESTIONS[q.kind].label(ExplainWords(ctx), q)
 
 
 def answer_items(ctx: Ctx, q, value: Any) -> list:
     """The answer as [(label, Value)]: a label is a symbol or a message, never a raw key."""
     if not isinstance(value, dict):
-        return [("", _value(ctx, value, UNITS.get(q.kind, "")))]
+        return [("", _value(ctx, value, UNITS.get(QUESTIONS[q.kind].unit_kind, "")))]
     if value.get("rest"):
         return [("", msg("ans.rest"))]
     if value.get("translation"):
@@ -87,45 +62,14 @@ def answer_items(ctx: Ctx, q, value: Any) -> list:
             for sub, w in v.items():
                 out.append((_part_label(ctx, q, key, sub), _value(ctx, w, UNITS[sub] if UNITS.get(sub) else UNITS[key] or "")))
         elif v is not None and key != "rest":
-            unit = "rate" if (q.kind, key) == ("axis", "omega") else ("speed" if key == "slide" else UNITS.get(key) or "")
-            out.append((_part_label(ctx, q, key, None), _value(ctx, v, unit)))
+            out.append((_part_label(ctx, q, key, None), _value(ctx, v, UNITS.get(key) or "")))
     return out
 
 
 def _part_label(ctx: Ctx, q, key: str, sub: str | None) -> Any:
-    if q.kind == "decompose":
-        ref = _ref(ctx, q)
-        level = "v" if key == "velocity" else "a"
-        word = {"drag": "sub.drag", "relative": "sub.rel", "coriolis": "sub.cor"}.get(sub or "", "")
-        return Sym(level, ref.point, sub_key=word)
-    if q.kind == "contact":
-        from .contacts import geometric_sym
-
-        j = ctx.model.joint(q.target)
-        level = "v" if sub == "velocity" else "a"
-        name = ctx.contact(j)
-        if key == "body_a":
-            return Sym(level, f"{name}∈{j.a}")
-        if key == "body_b":
-            return Sym(level, f"{name}∈{j.b}")
-        if key == "geometric":
-            return geometric_sym(level, name)
-    if q.kind == "intrinsic":            # scalars told from vectors by how they are written
-        p = _label(ctx, _ref(ctx, q))
-        t = Sym("t", vector=True)
-        symbols = {"speed": Inline(["|", Sym("v", p), "|"]), "tangent": Inline([msg("ans.tangent"), " ", t]),
-                   "tangential": Inline([Sym("a", p, "t"), " · ", t]),
-                   "normal": Inline(["|", Sym("a", p, "n"), "|"]), "tangential_vector": Sym("a", p, "t"),
-                   "normal_vector": Sym("a", p, "n")}
-        if key in symbols:
-            return symbols[key]
-    if q.kind == "inflection":
-        return msg(INFLECTION[key])
-    if q.kind == "curvature" and key == "radius":
-        return Sym("ρ", _label(ctx, _ref(ctx, q)), vector=False)
-    if q.kind == "axis" and key == "omega":
-        return omega_sym(q.target, ctx.rel(q.relative_to), vector=True)
-    return msg(f"ans.{key}")
+    """A part's label as the kind writes it (`part`), else the field's word."""
+    found = QUESTIONS[q.kind].part(ExplainWords(ctx), q, key, sub)
+    return found if found is not None else msg(f"ans.{key}")
 
 
 def _value(ctx: Ctx, value: Any, unit: str) -> Value:
@@ -142,21 +86,21 @@ def relative_rates(ctx: Ctx) -> list[Derived]:
     out: list[Derived] = []
     for q in ctx.model.questions:
         rel = ctx.rel(q.relative_to)
-        if q.kind not in ("omega", "alpha") or rel is None or not ctx.planar:
+        kind = QUESTIONS[q.kind]                  # a body's ω or α (its table's column)
+        if not (kind.column and kind.about == "body") or rel is None or not ctx.planar:
             continue
         if f"relative:{q.target}/{rel}" in ctx.worked:
             continue            # a step found it (a belt seen from its arm): not again, backwards
-        sym = omega_sym if q.kind == "omega" else alpha_sym
-        get = ctx.omega if q.kind == "omega" else ctx.alpha
-        unit = "rate" if q.kind == "omega" else "rate2"
+        sym, get = (omega_sym, ctx.omega) if kind.unit_kind == "omega" else (alpha_sym, ctx.alpha)
+        unit = UNITS[kind.unit_kind]
         out.append(Derived(sym(q.target, rel), [sym(q.target), " − ", sym(rel)], ctx.value(get(q.target, rel), unit),
-                           kind=q.kind, sense=not ctx.symbolic))
+                           kind=kind.unit_kind, sense=not ctx.symbolic))
     return out
 
 
 def curvature_section(ctx: Ctx) -> Section | None:
     """Each `curvature` question: the acceleration split along and across the velocity."""
-    asked = [q for q in ctx.model.questions if q.kind == "curvature" and ctx.planar]
+    asked = [q for q in worked(ctx).curvatures if ctx.planar]
     if not asked:
         return None
     sec = Section(msg("sec.curvature"))

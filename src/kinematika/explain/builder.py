@@ -13,6 +13,7 @@ from typing import Optional
 from ..draw.names import body_numbers
 from ..solution import Solution
 from .answers import answers_section, curvature_section, relative_rates
+from .asked import worked
 from .checks import checks_section
 from .contacts import contact_section
 from .centres import centres_section
@@ -58,7 +59,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
         checked = checks_section(ctx)
         if checked is not None:
             doc.sections.append(checked)
-        if ctx.model.default_questions or any(q.kind == "icr" for q in ctx.model.questions):
+        if ctx.model.default_questions or worked(ctx).centres:
             doc.sections.append(centres_section(ctx))      # only what is asked (the slides ask none)
     else:
         doc.sections.append(structure_section(ctx, []))

@@ -11,6 +11,7 @@ from __future__ import annotations
 from itertools import combinations
 
 from ..questions.centres import all_centres, centre_line, same_line
+from .asked import worked
 from .context import Ctx
 from .kinds import knife_edge, line_kind, on_fixed_line
 from .document import CentreNote, Section, Sym, msg
@@ -52,8 +53,7 @@ def centres_section(ctx: Ctx) -> Section:
             if note.how == "velocities" and len(note.witnesses) < 2:
                 _field(ctx, note)
         made[key] = note
-    asked = {frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target)) for q in ctx.model.questions
-             if q.kind == "icr"}
+    asked = {frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target)) for q in worked(ctx).centres}
     for key in _chosen(ctx, made):
         sec.blocks.append(made[key])
         if key in asked and made[key].how in ("kennedy", "lines", "weld") and made[key].value.get("point"):

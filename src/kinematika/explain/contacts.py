@@ -22,6 +22,7 @@ from __future__ import annotations
 from typing import Any, Optional
 
 from ..algebra.vectors import add, scale, sub
+from .asked import worked
 from .context import Ctx, omega_sym, segment
 from .document import Ann, Derived, Equation, Name, Section, Sym, Term, Value, joint as joint_name, msg
 from .kinds import rolls
@@ -183,8 +184,7 @@ def contact_section(ctx: Ctx) -> Optional[Section]:
     """Each `contact` question: the velocities and accelerations of the three coincident
     points, each from an equation (C5-1.8: the wheel's point, the ground's, and J^geom on
     the bar OC)."""
-    asked = [q for q in ctx.model.questions if q.kind == "contact" and ctx.planar
-             and rolls(ctx.model.joint(q.target))]
+    asked = [q for q in worked(ctx).contacts if ctx.planar and rolls(ctx.model.joint(q.target))]
     if not asked:
         return None
     sec = Section(msg("sec.contact"))

@@ -10,7 +10,7 @@ stay. A model without questions asks for everything, and keeps everything.
 """
 from __future__ import annotations
 
-from ..model.model import ACCELERATION_QUESTIONS, POINT_QUESTIONS
+from ..questions import QUESTIONS
 from .context import Ctx
 from .document import CentreNote, Document, Equation, Section
 
@@ -21,7 +21,7 @@ def accelerations_asked(ctx: Ctx) -> bool:
     """Whether anything asked needs accelerations: when only velocities, angular velocities
     and instant centres are asked (the epicyclic train, the pulleys, C5-E.3), the explanation
     stops at the velocities, as the notes do. A model without questions asks for everything."""
-    return ctx.model.default_questions or any(q.kind in ACCELERATION_QUESTIONS for q in ctx.model.questions)
+    return ctx.model.default_questions or any(QUESTIONS[q.kind].level == "acceleration" for q in ctx.model.questions)
 
 
 def prune(ctx: Ctx, doc: Document) -> None:
@@ -39,7 +39,7 @@ def _asked_points(ctx: Ctx) -> set[str]:
     """The point names the questions are about (any body's point of that name)."""
     out: set[str] = set()
     for q in ctx.model.questions:
-        if q.kind in POINT_QUESTIONS:
+        if QUESTIONS[q.kind].about == "point":
             ref = ctx.model.resolve_point(q.target) if isinstance(q.target, str) else q.target
             out.add(ref.point)
     return out

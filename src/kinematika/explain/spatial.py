@@ -12,7 +12,8 @@ from typing import Optional
 
 from ..algebra.vectors import dot
 from ..model.model import PointRef, Question
-from ..questions.decompose import decompose
+from ..questions.decompose import KIND as DECOMPOSE, decompose
+from .asked import worked
 from .context import Ctx, alpha_sym, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Names, Section, Sym, Term, Value, msg
 from .terms import KNOWN, point_term, relative_name, rotation_terms, target_term
@@ -212,7 +213,7 @@ def composition_section(ctx: Ctx, pairs: list[tuple[PointRef, str, Optional[str]
 
 def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> list:
     """The decomposition of the engine's `decompose`, with its drag and relative parts expanded."""
-    q = Question("decompose", -1, ref, {}, None, moving)
+    q = Question(DECOMPOSE.name, -1, ref, {}, None, moving)
     parts = decompose(ctx.sol, q)
     p, body = ref.point, ref.body
     out: list = [msg("composition.point", point=Name(p), body=Name(body, "body"), frame=Name(moving, "body"))]
@@ -303,8 +304,8 @@ def composition_pairs(ctx: Ctx) -> list[tuple[PointRef, str, Optional[str]]]:
     """The model's `decompose` questions (only what is asked: a composition nobody asked
     for, each point of each carried body, is noise)."""
     out = []
-    for q in ctx.model.questions:
-        if q.kind == "decompose" and q.relative_to in (None, ctx.frame):
+    for q in worked(ctx).compositions:
+        if q.relative_to in (None, ctx.frame):
             ref = ctx.model.resolve_point(q.target) if isinstance(q.target, str) else q.target
             out.append((ref, q.moving, _pivot(ctx, ref.body, q.moving)))
     return out

@@ -11,13 +11,13 @@ import typing
 from typing import TYPE_CHECKING, Any, Iterable, Optional
 
 from ..errors import KinematikaError, Names, Said, pydantic_choices, pydantic_problem
-from ..joints import KINDS
 from ..joints import kind as joint_kind
+from ..questions import QUESTIONS
 from ..text import brief
 from . import shape
 from .constructions import Construction, ConstructionReader, construction_order
 from ..expressions import Expr, ExpressionError, parse
-from .model import (QUESTION_KINDS, Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint,
+from .model import (Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint,
                     Line, Model, Parameter, Plane, PointPair, PointRef, Question, Shape, Simulate, Sweep)
 
 if TYPE_CHECKING:
@@ -356,49 +356,49 @@ class _Builder:
 
     def default_questions(self) -> list[Question]:
         """The contract's default: every body (ω, α) and every material point (v, a), the
-        fixed frame and its points included, in the file's order."""
+        fixed frame and its points included, in the file's order: the kinds whose answers
+        are the columns of the answer's tables (`QuestionKind.column`)."""
+        columns = [k for k in QUESTIONS.values() if k.column]
         out: list[Question] = []
         for body in self.body_map:
-            for kind in ("omega", "alpha"):
+            for kind in (k.name for k in columns if k.about == "body"):
                 out.append(Question(kind, len(out), body, {kind: body}))
         for ref in self.model_.material_points():
-            for kind in ("velocity", "acceleration"):
+            for kind in (k.name for k in columns if k.about == "point"):
                 out.append(Question(kind, len(out), ref, {kind: str(ref)}))
         return out
 
     def question(self, i: int, raw: schema.QuestionSpec) -> Question:
+        """A question of `ask`, checked as its kind says (`questions.QUESTIONS`): its target
+        a material point, a body or a joint, a `moving` body when it takes one, its models."""
         where = f"ask[{i}]"
-        kinds = [k for k in QUESTION_KINDS if getattr(raw, k) is not None]
-        if len(kinds) != 1:
-            raise KinematikaError("schema", "question-one-key", where, keys=list(QUESTION_KINDS))
-        kind = kinds[0]
-        text = getattr(raw, kind)
+        names = [k for k in QUESTIONS if getattr(raw, k) is not None]
+        if len(names) != 1:
+            raise KinematikaError("schema", "question-one-key", where, keys=list(QUESTIONS))
+        name = names[0]
+        kind = QUESTIONS[name]
+        text = getattr(raw, name)
         rel = None if raw.relative_to is None else self.known_body(raw.relative_to, f"{where}.relative_to")
         echo = raw.model_dump(exclude_none=True)
-        if kind in {"velocity", "acceleration", "curvature", "decompose", "intrinsic"}:
-            target: Any = self.point_ref(text, f"{where}.{kind}")
-        elif kind == "contact":
-            joint = next((j for j in self.joint_list if j.id == text), None)
-            if joint is None or not joint.kind.touches:
-                touching = [j.id for j in self.joint_list if j.kind.touches]
-                kinds = Names(sorted(k.name for k in KINDS.values() if k.touches), joined="or")
-                raise KinematikaError("schema", "contact-not-touching", f"{where}.contact", text=text, kinds=kinds,
-                                      joints=touching)
-            target = text
+        target: Any
+        if kind.about == "point":
+            target = self.point_ref(text, f"{where}.{name}")
+        elif kind.about == "joint":
+            target = kind.target_joint(text, self.joint_list, f"{where}.{name}")
         else:
-            target = self.known_body(text, f"{where}.{kind}")
+            target = self.known_body(text, f"{where}.{name}")
         moving = None
-        if kind == "decompose":
+        if kind.moving:
             if raw.moving is None:
                 raise KinematikaError("schema", "decompose-needs-moving", where)
             moving = self.known_body(raw.moving, f"{where}.moving")
         elif raw.moving is not None:
             raise KinematikaError("schema", "moving-only-decompose", where)
-        if kind in {"icr", "pole", "inflection"} and self.dim == 3:
-            raise KinematikaError("schema", "question-planar-only", where, kind=kind)
-        if kind == "axis" and self.dim == 2:
+        if self.dim not in kind.dimensions:
+            if self.dim == 3:
+                raise KinematikaError("schema", "question-planar-only", where, kind=name)
             raise KinematikaError("schema", "question-3d-only", where)
-        return Question(kind, i, target, echo, relative_to=rel, moving=moving)
+        return Question(name, i, target, echo, relative_to=rel, moving=moving)
 
     def move(self) -> dict[str, Expr]:
         """`move: {joint: amount}`: joints checked here, amounts evaluated when moving."""

@@ -9,6 +9,7 @@ statement gives its data in.
       length: m                                 # the model's length unit (default m)
       ask: [1, 2, 4]                            # the graded questions, 1-based (default: all)
       tolerance: 0.01                           # relative (default 0.01)
+      weights: [1, 1, 2]                        # each graded question's weight (default: equal)
       dimensions: [{between: [A, E], along: x, label: ex}]    # more marks on the figure
 
 A statement's `{name}` is the parameter's value as stated (`400 mm`, `30°`).
@@ -98,6 +99,7 @@ class ExerciseSection:
     ask: Optional[tuple[int, ...]] = None          # 1-based positions in the model's `ask`
     tolerance: float = 0.01
     dimensions: tuple[DimensionMark, ...] = ()
+    weights: dict[int, float] = field(default_factory=dict)     # 1-based question -> its weight
 
     def unit(self, name: str) -> Optional[Unit]:
         """The unit parameter `name` is stated in (None: a plain number in the model's units)."""
@@ -137,6 +139,7 @@ def exercise_section(raw: Any, params: dict[str, Parameter], questions: int,
     tolerance = float(raw.tolerance)
     if not 0 < tolerance < 1:
         raise KinematikaError("schema", "tolerance-relative", "exercise.tolerance", tolerance=tolerance)
+    weights = _weights(raw.weights, ask or tuple(range(1, questions + 1)))
     marks = []
     for i, d in enumerate(raw.dimensions):
         where = f"exercise.dimensions[{i}]"
@@ -144,7 +147,20 @@ def exercise_section(raw: Any, params: dict[str, Parameter], questions: int,
             if name not in points:
                 raise KinematikaError("schema", "unknown-point-bare", f"{where}.between", point=name)
         marks.append(DimensionMark(tuple(d.between), d.along or "aligned", d.label))
-    return ExerciseSection(statement, units, dict(raw.title), length, ask, tolerance, tuple(marks))
+    return ExerciseSection(statement, units, dict(raw.title), length, ask, tolerance, tuple(marks), weights)
+
+
+def _weights(raw: Any, graded: tuple[int, ...]) -> dict[int, float]:
+    """Each graded question's weight, by its number: one positive number per graded question,
+    in order."""
+    if raw is None:
+        return {}
+    if len(raw) != len(graded):
+        raise KinematikaError("schema", "weights-count", "exercise.weights", count=len(graded), got=len(raw))
+    for i, w in enumerate(raw):
+        if not (w > 0 and math.isfinite(w)):
+            raise KinematikaError("schema", "weight-positive", f"exercise.weights[{i}]", got=w)
+    return {k: float(w) for k, w in zip(graded, raw)}
 
 
 def _unit(text: str, where: str) -> Unit:

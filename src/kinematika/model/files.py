@@ -11,10 +11,10 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import select
 import stat
 import time
-import tomllib
 from pathlib import Path
 from typing import Any
 
@@ -204,6 +204,8 @@ def _json(text: str, where: str) -> Any:
 
 
 def _toml(text: str, where: str) -> Any:
+    import tomllib          # only for a TOML file (a YAML or JSON one never needs it)
+
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as err:
@@ -244,51 +246,56 @@ def _plain_yaml(text: str) -> Any:
     import yaml
 
     events = yaml.events
+    scalar_event, alias_event, document_start = events.ScalarEvent, events.AliasEvent, events.DocumentStartEvent
+    opening = {events.MappingStartEvent: True, events.SequenceStartEvent: False}
+    closing = (events.MappingEndEvent, events.SequenceEndEvent)
     scalar_node = yaml.ScalarNode
     parser = (getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader)(text)
+    next_event = parser.get_event               # None once the stream has ended
     constructors = parser.yaml_constructors
     resolved: dict[tuple, Any] = {}
     stack: list[list] = []            # open collections: [container, is_mapping, key, keys seen]
     root: Any = _UNUSUAL
     documents = 0
+    nesting = limits.NESTING
     try:
-        while parser.check_event():
-            event = parser.get_event()
+        while (event := next_event()) is not None:
             kind = type(event)
-            if kind is events.ScalarEvent:
+            if kind is scalar_event:
                 if event.anchor is not None or event.tag not in (None, "!"):
                     return _UNUSUAL
                 key = (event.value, event.implicit)
                 if key in resolved:
                     value = resolved[key]
                 else:
-                    tag = parser.resolve(scalar_node, event.value, event.implicit)
-                    if tag not in _PLAIN_TAGS:
-                        return _UNUSUAL
-                    value = constructors[tag](parser, scalar_node(tag, event.value, event.start_mark,
-                                                                   event.end_mark, event.style))
-                    if isinstance(value, str) and not value.isascii():
-                        try:
-                            value.encode("utf-8")
-                        except UnicodeEncodeError:
+                    value = _plain_number(event) if event.tag is None and event.implicit[0] else None
+                    if value is None:
+                        tag = parser.resolve(scalar_node, event.value, event.implicit)
+                        if tag not in _PLAIN_TAGS:
                             return _UNUSUAL
+                        value = constructors[tag](parser, scalar_node(tag, event.value, event.start_mark,
+                                                                       event.end_mark, event.style))
+                        if isinstance(value, str) and not value.isascii():
+                            try:
+                                value.encode("utf-8")
+                            except UnicodeEncodeError:
+                                return _UNUSUAL
                     if value == value:                # a NaN is never shared (nor a dict key)
                         resolved[key] = value
-            elif kind is events.MappingStartEvent or kind is events.SequenceStartEvent:
-                if (event.anchor is not None or event.tag not in (None, "!")
-                        or len(stack) >= limits.NESTING):
+            elif kind in opening:
+                if event.anchor is not None or event.tag not in (None, "!") or len(stack) >= nesting:
                     return _UNUSUAL
-                mapping = kind is events.MappingStartEvent
+                mapping = opening[kind]
                 stack.append([{} if mapping else [], mapping, _UNUSUAL, set() if mapping else None])
                 continue
-            elif kind is events.MappingEndEvent or kind is events.SequenceEndEvent:
+            elif kind in closing:
                 value = stack.pop()[0]
-            elif kind is events.DocumentStartEvent:
+            elif kind is document_start:
                 documents += 1
                 if documents > 1:
                     return _UNUSUAL
                 continue
-            elif kind is events.AliasEvent:
+            elif kind is alias_event:
                 return _UNUSUAL
             else:                                     # stream start and end, document end
                 continue
@@ -311,6 +318,23 @@ def _plain_yaml(text: str) -> Any:
     except (ValueError, TypeError, yaml.YAMLError):
         return _UNUSUAL
     return root
+
+
+_DECIMAL = re.compile(r"[-+]?(?:0|[1-9][0-9]*)\Z")       # what YAML 1.1 reads as a decimal integer ...
+_POINTED = re.compile(r"[-+]?[0-9]+\.[0-9]*\Z")          # ... and as a number with a point (no _, no exponent)
+
+
+def _plain_number(event: Any) -> Any:
+    """A plain scalar written as a decimal integer or a number with a point, as the YAML
+    loader reads it (`int(text)`, `float(text)`: the resolver's int and float patterns match
+    these texts, and its constructors give the same values), without the resolver's search;
+    None for any other text."""
+    text = event.value
+    if _POINTED.match(text):
+        return float(text)
+    if _DECIMAL.match(text):
+        return int(text)
+    return None
 
 
 def _check_events(yaml: Any, text: str, loader: type, where: str) -> None:

@@ -186,24 +186,14 @@ class Driver:
         return f"drivers[{self.index}]"
 
 
-# the kinds of question, each a key of a question in a model file (`ask:`)
-QUESTION_KINDS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose",
-                  "contact", "axis", "pole", "intrinsic", "inflection")
-# the questions about a point (their target names one) ...
-POINT_QUESTIONS = ("velocity", "acceleration", "curvature", "intrinsic", "decompose")
-# ... and those whose answers need accelerations (a composition and a contact question give
-# both; an inflection circle is where the normal acceleration vanishes)
-ACCELERATION_QUESTIONS = ("acceleration", "alpha", "curvature", "intrinsic", "decompose", "contact", "pole",
-                          "inflection")
-
-
 @dataclass
 class Question:
     """One question of `ask`: its `kind` (velocity, icr, curvature …), its target (a body, a
     material point or a joint id), the body it is asked `relative_to` and, for a decomposition,
-    the `moving` body; `echo` is the question as written, repeated in the answer."""
+    the `moving` body; `echo` is the question as written, repeated in the answer. What a kind
+    means is its module's (`kinematika.questions.QUESTIONS[kind]`): ask it, never its name."""
 
-    kind: str                      # one of QUESTION_KINDS
+    kind: str                      # a key of kinematika.questions.QUESTIONS
     index: int
     target: Union[str, PointRef]   # body name, material point or joint id
     echo: dict                     # the question as written, echoed in the answer

@@ -158,19 +158,21 @@ def record(name: str, fields: dict[str, tuple[Check, Any]],
     cls = type(name, (Record,), {"FIELDS": tuple(fields),
                                  "DEFAULTS": {k: d for k, (_, d) in fields.items()}})
     in_file = {(keys or {}).get(f, f): f for f in fields}
+    # (file key, field, its check, its default, whether the default is a factory), once
+    steps = [(key, field, *fields[field], callable(fields[field][1])) for key, field in in_file.items()]
+    known = in_file.keys()
 
     def check(x: Any) -> Record:
-        if type(x) is not dict or not all(k in in_file for k in x):
+        if type(x) is not dict or not x.keys() <= known:
             raise Refused
         out = {}
-        for key, field in in_file.items():
-            check_field, default = fields[field]
+        for key, field, check_field, default, factory in steps:
             if key in x:
                 out[field] = check_field(x[key])
             elif default is REQUIRED:
                 raise Refused
             else:
-                out[field] = default() if callable(default) else default
+                out[field] = default() if factory else default
         return cls(**out)
     return cls, check
 

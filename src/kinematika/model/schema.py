@@ -7,7 +7,7 @@ It is the one place the format is written: `shape`, the plain-Python check the f
 uses (pydantic is not imported there), is generated from these classes by
 `python -m kinematika.model.generate_shape`, and a test regenerates it and compares. A
 joint's keys are those its kinds declare (`JointKind.fields`, typed by `JOINT_KEY_TYPES`),
-the questions' keys are `model.QUESTION_KINDS`, and a body's `cam:` takes the cam-design
+the questions' keys are the registered question kinds (`questions.QUESTIONS`), and a body's `cam:` takes the cam-design
 file's own fields (`cams.spec`). See docs/architecture.md, "One source for the model format".
 """
 from __future__ import annotations
@@ -19,7 +19,7 @@ from pydantic import BaseModel, ConfigDict, Discriminator, Field, StrictBool, St
 
 from ..cams.spec import CamFileSpec, CamSpec
 from ..joints import KINDS
-from .model import QUESTION_KINDS
+from ..questions import QUESTIONS
 
 Value = Union[StrictInt, StrictFloat, str]
 Vector = list[Value]
@@ -278,7 +278,7 @@ DriverSpec = Annotated[
 QuestionSpec = create_model(
     "QuestionSpec", __base__=Strict, __module__=__name__,
     __doc__="One question; exactly one of the question keys is set (checked in `build`).",
-    **dict.fromkeys(QUESTION_KINDS, (Optional[str], None)),
+    **dict.fromkeys(QUESTIONS, (Optional[str], None)),
     relative_to=(Optional[str], None), moving=(Optional[str], None))
 
 
@@ -317,6 +317,7 @@ class ExerciseSpec(Strict):
     length: str = "m"
     ask: Optional[list[StrictInt]] = None
     tolerance: Union[StrictInt, StrictFloat] = 0.01
+    weights: Optional[list[Union[StrictInt, StrictFloat]]] = None
     dimensions: list[DimensionSpec] = Field(default_factory=list)
 class LanguageNames(Strict):
     """How a model's things are called in one language (`names.LANG`): explanations and

@@ -152,6 +152,7 @@ ExerciseSpec, exercise_spec = record('ExerciseSpec', {
     'length': (exact(str), 'm'),
     'ask': (optional(listed(exact(int))), None),
     'tolerance': (exact(int, float), 0.01),
+    'weights': (optional(listed(exact(int, float))), None),
     'dimensions': (listed(dimension_spec), list),
 })
 LanguageNames, language_names = record('LanguageNames', {

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from itertools import combinations
 from typing import Any, Optional
 
-from ..solution import Solution
+from .base import Solved
 from .icr import instant_centre
 
 
@@ -40,7 +40,7 @@ FIXED = ("pin", "contact", "infinity", "rest")     # a joint's own centre, found
                                                    # ("normal": only a line through it)
 
 
-def direct_centre(sol: Solution, a: str, b: str) -> Optional[tuple[str, str]]:
+def direct_centre(sol: Solved, a: str, b: str) -> Optional[tuple[str, str]]:
     """(how the joint places it, joint id) when a joint between a and b places their centre
     by itself (its kind's `centre`: at its pin, its contact, at infinity, or none at rest)."""
     for j in sol.model.joints:
@@ -49,7 +49,7 @@ def direct_centre(sol: Solution, a: str, b: str) -> Optional[tuple[str, str]]:
     return None
 
 
-def all_centres(sol: Solution) -> list[Centre]:
+def all_centres(sol: Solved) -> list[Centre]:
     """One `Centre` per pair of bodies: direct ones first, then in the order the structure
     finds them (welds, Kennedy, Kennedy with a joint's line), the rest from the velocities."""
     bodies = list(sol.model.bodies)
@@ -77,7 +77,7 @@ def all_centres(sol: Solution) -> list[Centre]:
     return out
 
 
-def _structural(sol: Solution, known: dict, bodies: list[str], a: str, b: str) -> Optional[Centre]:
+def _structural(sol: Solved, known: dict, bodies: list[str], a: str, b: str) -> Optional[Centre]:
     """The centre of (a, b) from centres already known: by a weld, by two Kennedy lines, or by
     Kennedy lines and the lines joints give; None when the structure does not yet fix it."""
     for x, y in ((a, b), (b, a)):
@@ -111,13 +111,13 @@ def crossed_by_a_normal(j: Any) -> bool:
     return bool(j.kind.guides_point or j.kind.centre == "normal")
 
 
-def _welded(sol: Solution, body: str) -> list[tuple[str, str]]:
+def _welded(sol: Solved, body: str) -> list[tuple[str, str]]:
     """(weld joint, other body) of each weld of `body`: the two are one rigid body."""
     return [(j.id, j.b if j.a == body else j.a) for j in sol.model.joints
             if body in (j.a, j.b) and j.kind.rigid]
 
 
-def _kennedy_line(sol: Solution, known: dict, a: str, k: str, b: str) -> Optional[tuple]:
+def _kennedy_line(sol: Solved, known: dict, a: str, k: str, b: str) -> Optional[tuple]:
     """(point, direction) as floats of the line through the centres a–k and k–b."""
     return centre_line(sol.inst, known[frozenset((a, k))].value, known[frozenset((k, b))].value)
 
@@ -138,7 +138,7 @@ def centre_line(inst: Any, c1: dict, c2: dict) -> Optional[tuple]:
     return None if (d[0] ** 2 + d[1] ** 2) ** 0.5 <= 1e-9 * inst.scale else (x, d)
 
 
-def _joint_line(sol: Solution, j: Any) -> Optional[tuple]:
+def _joint_line(sol: Solved, j: Any) -> Optional[tuple]:
     """(point, direction) as floats of the normal to a slot or a wheel's plane at its point,
     or of the common normal at a contact."""
     geo = sol.solver.geos.get(j.id)
@@ -166,7 +166,7 @@ def _floats(inst: Any, v: Any) -> tuple:
     return tuple(float(inst.num(c)) for c in v)
 
 
-def _pin(sol: Solution, found: tuple[str, str]) -> str | None:
+def _pin(sol: Solved, found: tuple[str, str]) -> str | None:
     """The point of a pin (its bodies' centre while they turn), else None."""
     how, jid = found
     if how != "pin":
@@ -179,7 +179,7 @@ def _is_line(known: dict[frozenset, Centre], a: str, k: str, b: str) -> bool:
     return not (known[frozenset((a, k))].value.get("rest") or known[frozenset((k, b))].value.get("rest"))
 
 
-def collinear(sol: Solution, c1: dict, c2: dict, c3: dict) -> bool:
+def collinear(sol: Solved, c1: dict, c2: dict, c3: dict) -> bool:
     """Whether three centres (finite or at infinity) lie on one line, at the model's scale."""
     h1, h2, h3 = (_homogeneous(c) for c in (c1, c2, c3))
     if h1 is None or h2 is None or h3 is None:

@@ -13,14 +13,13 @@ exact work of the answer — is not formed at all.
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Optional
 
 from ..algebra.vectors import add, dot, scale, sub
-from ..model.model import Question
-from ..solution import Solution
+from .base import Asked, Figure, QuestionKind, Solved, Steps, Words
 
 
-def curvature(sol: Solution, q: Question) -> dict[str, Any]:
+def curvature(sol: Solved, q: Asked) -> dict[str, Any]:
     """The curvature of material point `q.target`'s path seen from `q.relative_to`: ρ = v³/|v ×
     a| and the centre P + (v·v)/(v × a) (k × v) (`path_curvature`); exactly, when the point
     moves as a point of a body pinned to that frame, the pin and ρ = |P − pin|."""
@@ -33,7 +32,7 @@ def curvature(sol: Solution, q: Question) -> dict[str, Any]:
     return path_curvature(sol, p, v, a)
 
 
-def _pin(sol: Solution, q: Question) -> tuple | None:
+def _pin(sol: Solved, q: Asked) -> tuple | None:
     """The place of a pin joining the frame of reference to a body the point moves with
     (planar: its own body, or one pinned to it at the point): the point's path relative to
     that frame is a circle about the pin. None when there is none."""
@@ -64,7 +63,7 @@ def _distance(p: tuple, q: tuple) -> Any:
     return sympy.sqrt(canonical(dot(d, d)))
 
 
-def path_curvature(sol: Solution, p: tuple, v: tuple, a: tuple) -> dict[str, Any]:
+def path_curvature(sol: Solved, p: tuple, v: tuple, a: tuple) -> dict[str, Any]:
     """Radius and centre of curvature of a path through `p` with velocity `v` and acceleration
     `a`. In the plane ρ = |v|³/|v × a|, centre = P + (v·v)/(v × a) (k × v); in space aₙ = a −
     (a·v̂) v̂, ρ = v²/|aₙ|, centre = P + (v²/|aₙ|²) aₙ. A point at rest says `rest`; a zero
@@ -96,7 +95,7 @@ def _symbolic_radius(vv: Any, cross: Any) -> Any:
     return sympy.sqrt(canonical(vv)) ** 3 / sympy.Abs(canonical(cross))
 
 
-def intrinsic(sol: Solution, q: Question) -> dict[str, Any]:
+def intrinsic(sol: Solved, q: Asked) -> dict[str, Any]:
     """Speed, unit tangent, tangential (signed) and normal components of the acceleration."""
     v = sol.velocity(q.target, q.relative_to)
     a = sol.acceleration(q.target, q.relative_to)
@@ -109,3 +108,33 @@ def intrinsic(sol: Solution, q: Question) -> dict[str, Any]:
     an = sub(a, scale(at, t))
     return {"speed": speed, "tangent": t, "tangential": at, "normal": sol.norm(an),
             "tangential_vector": scale(at, t), "normal_vector": an}
+
+
+class Curvature(QuestionKind):
+    """The radius and centre of curvature of a point's path."""
+
+    name = "curvature"
+    summary = "the radius and centre of curvature of a material point's path"
+    about = "point"
+    level = "acceleration"
+    fields = {"radius": "position", "center": "position"}
+    page = True
+
+    def answer(self, sol: Solved, q: Asked) -> Any:
+        """ρ = |v|³/|v × a| and its centre (`curvature`)."""
+        return curvature(sol, q)
+
+    def draw(self, figure: Figure, q: Asked) -> None:
+        """The osculating circle."""
+        figure.path_circle(q)
+
+    def explain(self, steps: Steps, q: Asked) -> None:
+        """The curvature section: a = aᵗ + aⁿ, then ρ = |v|² / |aⁿ| (planar)."""
+        steps.path_curvature(q)
+
+    def part(self, words: Words, q: Asked, key: str, sub: Optional[str]) -> Any:
+        """ρ_C, a length, not a vector."""
+        return words.sym("ρ", words.point(q), vector=False) if key == "radius" else None
+
+
+KIND = Curvature()

@@ -6,14 +6,13 @@ question's base frame (ground by default), and their sum is checked against the 
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Optional
 
 from ..algebra.vectors import add, scale, sub
-from ..model.model import Question
-from ..solution import Solution
+from .base import Asked, Figure, QuestionKind, Solved, Steps, Words
 
 
-def decompose(sol: Solution, q: Question) -> dict[str, Any]:
+def decompose(sol: Solved, q: Asked) -> dict[str, Any]:
     """Point `q.target`'s motion seen from `q.relative_to`, composed through the moving body
     `q.moving`: v = v_drag + v_rel and a = a_drag + a_rel + a_Coriolis, a_Coriolis = 2 ω_moving
     × v_rel, each part and the total; the sums are checked against the total."""
@@ -37,6 +36,47 @@ def decompose(sol: Solution, q: Question) -> dict[str, Any]:
             "acceleration": {"drag": a_drag, "relative": a_rel, "coriolis": coriolis, "total": a_total}}
 
 
-def _check_sum(sol: Solution, parts: tuple, total: tuple, size: float) -> None:
+def _check_sum(sol: Solved, parts: tuple, total: tuple, size: float) -> None:
     if not sol.is_zero(sub(parts, total), max(size, 1e-300) * 1e3):
         raise AssertionError("decomposition does not add up to the total: an internal error")
+
+
+PARTS = {"drag": "sub.drag", "relative": "sub.rel", "coriolis": "sub.cor"}   # their subscripts' words
+
+
+class Decompose(QuestionKind):
+    """A point's motion composed through a moving body."""
+
+    name = "decompose"
+    summary = "a material point's velocity and acceleration as drag, relative and Coriolis parts"
+    about = "point"
+    moving = True
+    level = "acceleration"
+    unit_kind = "velocity"
+    fields = {"velocity": "velocity", "acceleration": "acceleration", "coriolis": "acceleration"}
+    page = True
+    linear = True
+
+    def answer(self, sol: Solved, q: Asked) -> Any:
+        """v = v_drag + v_rel, a = a_drag + a_rel + 2 ω_moving × v_rel (`decompose`)."""
+        return decompose(sol, q)
+
+    def draw(self, figure: Figure, q: Asked) -> None:
+        """Its drag (and Coriolis) arrows beside the point's own."""
+        figure.composition(q)
+
+    def explain(self, steps: Steps, q: Asked) -> None:
+        """Worked out as a composition of motions."""
+        steps.composition(q)
+
+    def label(self, words: Words, q: Asked) -> Any:
+        """The composition of the motion of the point, with the moving frame."""
+        return words.msg("ask.decompose", point=words.name(words.point(q)), frame=words.name(q.moving or "", "body"))
+
+    def part(self, words: Words, q: Asked, key: str, sub: Optional[str]) -> Any:
+        """v_{arr,P}, a_{rel,P}, a_{Cor,P}, v_P: the part's word as the subscript."""
+        level = "v" if key == "velocity" else "a"
+        return words.sym(level, words.ref(q).point, sub_key=PARTS.get(sub or "", ""))
+
+
+KIND = Decompose()

@@ -9,11 +9,10 @@ from __future__ import annotations
 from typing import Any
 
 from ..algebra.vectors import add
-from ..model.model import Question
-from ..solution import Solution
+from .base import Asked, Figure, QuestionKind, Solved, Steps
 
 
-def instant_centre(sol: Solution, body: str, relative_to: str | None,
+def instant_centre(sol: Solved, body: str, relative_to: str | None,
                    pin: str | None = None) -> dict[str, Any]:
     """The centre of `body`'s motion relative to `relative_to`; `pin` names the point of a
     revolute joint between them (their centre whenever they turn relative to each other)."""
@@ -31,7 +30,7 @@ def instant_centre(sol: Solution, body: str, relative_to: str | None,
     return {"point": add(sol.motion.ref, (-v0[1] / w, v0[0] / w))}
 
 
-def _in_stand_ins(sol: Solution, body: str, relative_to: str | None,
+def _in_stand_ins(sol: Solved, body: str, relative_to: str | None,
                   pin: str | None = None) -> dict[str, Any] | None:
     """The centre of a model with named coordinates (formulas past reading written out):
     the pin of a revolute joint between the two bodies as it stands, else k × v₀ / ω
@@ -48,7 +47,32 @@ def _in_stand_ins(sol: Solution, body: str, relative_to: str | None,
     return {"point": add(sol.motion.ref, world.reveal.vector((-v0[1] / w, v0[0] / w)))}
 
 
-def icr(sol: Solution, q: Question) -> dict[str, Any]:
+def icr(sol: Solved, q: Asked) -> dict[str, Any]:
     """The instant centre of body `q.name` relative to `q.relative_to`: P = ref + k × v₀ / ω, at
     infinity perpendicular to v₀ when ω = 0 (`instant_centre`)."""
     return instant_centre(sol, q.name, q.relative_to)
+
+
+class Icr(QuestionKind):
+    """A body's instant centre of rotation relative to another (planar)."""
+
+    name = "icr"
+    summary = "the instant centre of rotation of a body (planar)"
+    dimensions = (2,)
+    fields = {"point": "position", "direction": None}
+    page = True
+
+    def answer(self, sol: Solved, q: Asked) -> Any:
+        """P = ref + k × v₀ / ω, at infinity perpendicular to v₀ when ω = 0 (`icr`)."""
+        return icr(sol, q)
+
+    def draw(self, figure: Figure, q: Asked) -> None:
+        """A centre's mark, with the lines it lies on."""
+        figure.instant_centre(q)
+
+    def explain(self, steps: Steps, q: Asked) -> None:
+        """The instant centres' section finds it (Kennedy, a pin, the velocities) and checks it."""
+        steps.instant_centre(q)
+
+
+KIND = Icr()

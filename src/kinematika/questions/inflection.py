@@ -17,15 +17,14 @@ Euler–Savary equation (1/IP − 1/IC) sin ψ = 1/d.
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Optional
 
 from ..algebra.vectors import add, dot, scale
-from ..model.model import Question
-from ..solution import Solution
+from .base import Asked, QuestionKind, Solved, Words
 from .icr import instant_centre
 
 
-def inflection(sol: Solution, q: Question) -> dict[str, Any]:
+def inflection(sol: Solved, q: Asked) -> dict[str, Any]:
     """{pole: I, center, diameter, inflection_pole: W, pole_tangent, pole_normal, pole_velocity: u};
     for a body translating or at rest relative to the frame, no circle (`translation`,
     `rest`). A body turning about a fixed point (I does not move: u = 0) has the circle of
@@ -49,7 +48,7 @@ def inflection(sol: Solution, q: Question) -> dict[str, Any]:
             "pole_velocity": u}
 
 
-def _half(sol: Solution) -> Any:
+def _half(sol: Solved) -> Any:
     """1/2, exact in an exact solution."""
     if not sol.symbolic:
         return 0.5
@@ -58,7 +57,7 @@ def _half(sol: Solution) -> Any:
     return sympy.Rational(1, 2)
 
 
-def _length(sol: Solution, v: tuple) -> Any:
+def _length(sol: Solved, v: tuple) -> Any:
     """|v|: exactly, its square first brought to its canonical form."""
     if not sol.symbolic:
         return sol.norm(v)
@@ -69,5 +68,32 @@ def _length(sol: Solution, v: tuple) -> Any:
     return sympy.sqrt(canonical(dot(v, v)))
 
 
-def _unit(sol: Solution, v: tuple) -> tuple:
+def _unit(sol: Solved, v: tuple) -> tuple:
     return scale(1 / _length(sol, v), v)
+
+
+WORDS = {"pole": "ans.inflection_pole", "center": "ans.inflection_center", "diameter": "ans.inflection_diameter",
+         "inflection_pole": "ans.inflection_point", "pole_tangent": "ans.pole_tangent",
+         "pole_normal": "ans.pole_normal", "pole_velocity": "ans.pole_velocity"}   # the fields' words
+
+
+class Inflection(QuestionKind):
+    """A body's inflection circle and pole tangent (planar)."""
+
+    name = "inflection"
+    summary = "the inflection circle and pole tangent of a body (planar, Euler–Savary)"
+    dimensions = (2,)
+    level = "acceleration"
+    fields = {"pole": "position", "center": "position", "diameter": "position", "inflection_pole": "position",
+              "pole_tangent": None, "pole_normal": None, "pole_velocity": "velocity"}
+
+    def answer(self, sol: Solved, q: Asked) -> Any:
+        """The circle of diameter D = a_I / ω² through I, and the pole tangent (`inflection`)."""
+        return inflection(sol, q)
+
+    def part(self, words: Words, q: Asked, key: str, sub: Optional[str]) -> Any:
+        """Each field in the course's words (the inflection pole W, the pole tangent …)."""
+        return words.msg(WORDS[key])
+
+
+KIND = Inflection()

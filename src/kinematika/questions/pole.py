@@ -8,11 +8,10 @@ from __future__ import annotations
 from typing import Any
 
 from ..algebra.vectors import add
-from ..model.model import Question
-from ..solution import Solution
+from .base import Asked, Figure, QuestionKind, Solved
 
 
-def pole(sol: Solution, q: Question) -> dict[str, Any]:
+def pole(sol: Solved, q: Asked) -> dict[str, Any]:
     """The acceleration pole of body `q.name` relative to `q.relative_to` (planar): the point
     with a₀ + α k × r − ω² r = 0, r = ((ω² a_x − α a_y), (α a_x + ω² a_y)) / (ω⁴ + α²) from the
     reference; when ω = α = 0 the body translates: a uniform field says `uniform`, else the pole
@@ -30,3 +29,24 @@ def pole(sol: Solution, q: Question) -> dict[str, Any]:
     rx = (w2 * ax - al * ay) / det
     ry = (al * ax + w2 * ay) / det
     return {"point": add(sol.motion.ref, (rx, ry))}
+
+
+class Pole(QuestionKind):
+    """A body's acceleration pole (planar)."""
+
+    name = "pole"
+    summary = "the acceleration pole of a body: its point of zero acceleration (planar)"
+    dimensions = (2,)
+    level = "acceleration"
+    fields = {"point": "position", "direction": None}
+
+    def answer(self, sol: Solved, q: Asked) -> Any:
+        """r = ((ω² a_x − α a_y), (α a_x + ω² a_y)) / (ω⁴ + α²) from the reference (`pole`)."""
+        return pole(sol, q)
+
+    def draw(self, figure: Figure, q: Asked) -> None:
+        """A marked point Γ."""
+        figure.acceleration_pole(q)
+
+
+KIND = Pole()

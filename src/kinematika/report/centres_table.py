@@ -1,10 +1,7 @@
 """The table of instant centres (`kinematika centres`)."""
 from __future__ import annotations
 
-from typing import Any
-
-from rich.console import Console
-from rich.table import Table
+from typing import TYPE_CHECKING, Any
 
 from ..errors import KinematikaError
 from ..limits import NAME_CHARS
@@ -12,8 +9,10 @@ from ..questions.centres import all_centres
 from ..solution import Solution
 from ..text import markup
 from .json_answer import answer_scales, where
-from .tables import print_where, show
 from .values import plain
+
+if TYPE_CHECKING:
+    from rich.console import Console
 
 HOW = {"joint": "joint {}", "weld": "weld {} (one body with {})", "kennedy": "Kennedy via {}",
        "lines": "on the lines of {}", "velocities": "from the velocities"}
@@ -40,7 +39,12 @@ def centres_data(sol: Solution) -> dict[str, Any]:
 
 def print_centres(data: dict[str, Any], console: Console | None = None) -> None:
     """`centres_data` as a terminal table: bodies, centre and how it was found, then the named
-    quantities."""
+    quantities. (rich is imported here: `centres --json` never needs it.)"""
+    from rich.console import Console
+    from rich.table import Table
+
+    from .tables import print_where, show
+
     console = console or Console()
     table = Table(title=f"Instant centres — {markup(data['name'], NAME_CHARS)}", title_justify="left")
     for col in ("bodies", "centre", "found"):

@@ -1,29 +1,20 @@
 """The contract's JSON answer of `kinematika solve MODEL --json`."""
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Optional
 
-from ..questions import answer
+from ..questions import QUESTIONS, answer, field_kinds
 from ..solution import Solution
 from .values import numbers, plain
 
 
-# the kind of each field of a compound answer (None: a unit vector or a pure number)
-FIELD_KINDS = {"point": "position", "center": "position", "radius": "position",
-               "velocity": "velocity", "speed": "velocity", "slide": "velocity",
-               "acceleration": "acceleration", "tangential": "acceleration", "normal": "acceleration",
-               "tangential_vector": "acceleration", "normal_vector": "acceleration",
-               "coriolis": "acceleration", "omega": "omega", "direction": None, "tangent": None,
-               "pole": "position", "diameter": "position", "inflection_pole": "position",   # inflection
-               "pole_tangent": None, "pole_normal": None, "pole_velocity": "velocity"}
-
-
-def answer_scales(sol: Solution) -> tuple[dict[str, float], dict[str, float]]:
-    """The scale of each kind of quantity, and of each field of compound answers."""
+def answer_scales(sol: Solution, kinds: Optional[tuple[str, ...]] = None) -> tuple[dict[str, float], dict[str, float]]:
+    """The scale of each kind of quantity, and of each field of the compound answers of
+    `kinds` (question kinds' names, default all: their `fields`)."""
     length = sol.inst.scale
     scale = {"position": length, "velocity": sol.speed_scale(), "acceleration": sol.accel_scale(),
              "omega": sol.rate_scale(), "alpha": sol.accel_scale() / length}
-    return scale, {field: scale[kind] if kind else 1.0 for field, kind in FIELD_KINDS.items()}
+    return scale, {field: scale[kind] if kind else 1.0 for field, kind in field_kinds(kinds).items()}
 
 
 def solution_json(sol: Solution) -> dict[str, Any]:
@@ -31,9 +22,8 @@ def solution_json(sol: Solution) -> dict[str, Any]:
     Round-off is cleaned against the scale of each kind of quantity (lengths, speeds,
     accelerations, rates), so that a large acceleration never hides a real speed."""
     sym = sol.symbolic
-    length = sol.inst.scale
-    scale, fields = answer_scales(sol)
     model = sol.model
+    scale, fields = answer_scales(sol, tuple(dict.fromkeys(q.kind for q in model.questions)))
     if sym:
         bodies = {}
         for name in model.bodies:
@@ -47,7 +37,7 @@ def solution_json(sol: Solution) -> dict[str, Any]:
                                 "acceleration": plain(sol.acceleration(ref), sym, scale["acceleration"])}
     else:
         bodies, points = _numeric_tables(sol, scale)
-    answers = [{"ask": q.echo, "value": _answer(sol, q, bodies, points, scale.get(q.kind, length), fields)}
+    answers = [{"ask": q.echo, "value": _answer(sol, q, bodies, points, scale[QUESTIONS[q.kind].unit_kind], fields)}
                for q in model.questions]
     out = {"name": model.name, "dimension": model.dimension, "dof": sol.dof, "symbolic": sym,
            "bodies": bodies, "points": points, "answers": answers}
@@ -89,11 +79,12 @@ def _answer(sol: Solution, q: Any, bodies: dict, points: dict, scale: float,
     entries (a body's ω or α, a material point's velocity or acceleration, in the fixed
     frame, at the same scale), else answered and converted."""
     frame = q.relative_to in (None, sol.model.frame)
-    if not sol.symbolic and frame:
-        if q.kind in ("omega", "alpha") and q.target in bodies:
-            return _copy(bodies[q.target][q.kind])
-        if q.kind in ("velocity", "acceleration") and str(q.target) in points:
-            return _copy(points[str(q.target)][q.kind])
+    kind = QUESTIONS[q.kind]
+    if not sol.symbolic and frame and kind.column:          # its `unit_kind` names the column
+        if kind.about == "body" and q.target in bodies:
+            return _copy(bodies[q.target][kind.unit_kind])
+        if kind.about == "point" and str(q.target) in points:
+            return _copy(points[str(q.target)][kind.unit_kind])
     return plain(answer(sol, q), sol.symbolic, scale, fields)
 
 

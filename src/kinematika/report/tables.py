@@ -11,7 +11,7 @@ from rich.table import Table
 
 from ..limits import NAME_CHARS
 from ..text import markup
-from .units import ANSWER_KINDS, field_kind, unit
+from .units import answer_kind, field_kind, unit
 
 
 def show(value: Any) -> str:
@@ -59,7 +59,7 @@ def print_solution(data: dict, console: Console | None = None, length: str = "m"
     answers.add_column("answer")
     for entry in data["answers"]:
         kind = next(k for k in entry["ask"] if k not in ("relative_to", "moving"))
-        answers.add_row(markup(ask_text(entry["ask"])), markup(with_units(entry["value"], ANSWER_KINDS.get(kind), length)))
+        answers.add_row(markup(ask_text(entry["ask"])), markup(with_units(entry["value"], answer_kind(kind), length)))
     console.print(answers)
     print_where(data, console)
 

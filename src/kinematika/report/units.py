@@ -8,22 +8,22 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from .json_answer import FIELD_KINDS
+from ..questions import QUESTIONS, field_kinds
 
 # the unit of each kind of quantity, from the model's length unit L
 KIND_UNITS = {"position": "{L}", "velocity": "{L}/s", "acceleration": "{L}/s²", "omega": "rad/s",
               "alpha": "rad/s²"}
-# the kind of quantity each kind of question answers (the fields of a compound answer have
-# their own: `json_answer.FIELD_KINDS`)
-ANSWER_KINDS = {"velocity": "velocity", "acceleration": "acceleration", "omega": "omega",
-                "alpha": "alpha", "icr": "position", "curvature": "position", "pole": "position",
-                "axis": "position", "contact": "velocity", "decompose": "velocity",
-                "intrinsic": "acceleration", "inflection": "position"}
 
 
 def unit(kind: Optional[str], length: str = "m") -> str:
     """The unit of a kind of quantity (`velocity` → "m/s"); "" for none (a direction)."""
     return KIND_UNITS.get(kind or "", "").replace("{L}", length)
+
+
+def answer_kind(question: str) -> Optional[str]:
+    """The kind of quantity a kind of question answers (`QuestionKind.unit_kind`; the fields
+    of a compound answer have their own: `field_kind`); None for a key that is no question's."""
+    return QUESTIONS[question].unit_kind if question in QUESTIONS else None
 
 
 def length_of(model: Any) -> str:
@@ -34,5 +34,6 @@ def length_of(model: Any) -> str:
 
 def field_kind(name: str, parent: Optional[str]) -> Optional[str]:
     """The kind of a compound answer's field (`radius` a position, `coriolis` an
-    acceleration); a part of a decomposition (`drag`, `total`) is of its parent's kind."""
-    return FIELD_KINDS.get(name, parent)
+    acceleration: the question kinds' `fields`); a part of a decomposition (`drag`, `total`)
+    is of its parent's kind."""
+    return field_kinds().get(name, parent)

@@ -16,6 +16,7 @@ computed before it are kept (`SimulationStopped.result`).
 """
 from __future__ import annotations
 
+import bisect
 import math
 from typing import Any, Callable, Optional
 
@@ -27,6 +28,7 @@ from ..engine.system import InstantSolver
 from ..errors import KinematikaError, Names, Num, Said
 from ..model.model import Model
 from ..sweep.coincident import coincide
+from ..sweep.joint_rates import with_joint_rates
 from ..sweep.poses import moved_geometry, moved_instant
 from ..sweep.progress import reporter
 from ..sweep.result import QUANTITIES
@@ -87,6 +89,7 @@ class Simulator:
         from ..sweep.posing import prepare
 
         model, self.notes = at_numbers(prepare(source))
+        model = with_joint_rates(model)                # a 3D ω along a revolute: its rate
         self.timing = timing(model)
         self.notes += self.timing.notes
         self.model = self.timing.model
@@ -106,6 +109,7 @@ class Simulator:
         self.names = [str(r) for r in self.model.material_points()]
         self._last: tuple[Any, Any] = (None, None)          # (key, solver) of the last instant solved
         self.aux: dict = {}
+        self.aux_log = AuxLog()                              # the continuous angles at each step
         self.evaluations = 0                                 # velocity solutions asked for, this run
         self.failure: Optional[tuple[KinematikaError, float]] = None   # the last instant not solved
         self.reached = 0.0                                   # the last time a step reached
@@ -171,6 +175,7 @@ class Simulator:
         rows = Rows(self, clock)
         report = reporter(progress, len(clock.times), "simulating")
         self.evaluations, self.failure, self.reached, self.aux = 0, None, clock.start, {}
+        self.aux_log = AuxLog()
         rows.store(0, clock.start, self.state.poses(self.state.drawn()), self.solver, self.drawn, 0.0)
         report(1)
         stopped = None
@@ -203,6 +208,7 @@ class Simulator:
             size = self.projection.size(q)
             self.projection.keep(q)
             self.aux, self.reached = q.aux, max(self.reached, t)
+            self.aux_log.add(t, q.aux)
             self.failure = None                       # a step was taken past the failures so far
             return min(size, 1.0) - DRIFT_EVENT
 
@@ -244,6 +250,35 @@ class Simulator:
                                why=Said("simulate-integrator-stopped", message=message))
 
 
+class AuxLog:
+    """The continuous angles (a rolling pair's line of centres, `Projection.keep`) the
+    integration reached at each step, by time. A row is read after its stretch has been
+    integrated, when the angles kept are those of the stretch's end: it must be read with
+    those of the step nearest its time, else an angle that turned by more than half a turn
+    since would be read on another sheet (a wheel rolling round a cylinder, ψ past π)."""
+
+    def __init__(self) -> None:
+        self.times: list[float] = []
+        self.values: list[dict] = []
+
+    def add(self, t: float, aux: dict) -> None:
+        """Keep the angles reached at time t."""
+        k = bisect.bisect_left(self.times, t)
+        if k < len(self.times) and self.times[k] == t:
+            self.values[k] = dict(aux)
+            return
+        self.times.insert(k, t)
+        self.values.insert(k, dict(aux))
+
+    def near(self, t: float, default: dict) -> dict:
+        """The angles kept at the step nearest time t (`default` when none was kept)."""
+        if not self.times:
+            return default
+        k = bisect.bisect_left(self.times, t)
+        nearest = min((i for i in (k - 1, k) if 0 <= i < len(self.times)), key=lambda i: abs(self.times[i] - t))
+        return self.values[nearest]
+
+
 class Rows:
     """The rows of a simulation as they are computed: each projected onto the joints' position
     conditions and solved by the engine (velocities and accelerations)."""
@@ -263,8 +298,9 @@ class Rows:
     def projected(self, t: float, poses: Any) -> tuple[Any, float]:
         """`poses` brought back onto the joints' position conditions at time t, and the drift."""
         sim = self.sim
-        if sim.projection.size(poses) <= PROJECT_ABOVE:
-            return poses, sim.projection.size(poses)
+        drift = sim.projection.size(poses)
+        if drift <= PROJECT_ABOVE:
+            return poses, drift
 
         def matrix(q: Any) -> np.ndarray:
             a = sim.engine_at(t, q).a_num
@@ -275,7 +311,7 @@ class Rows:
     def next(self, t: float, y: np.ndarray) -> None:
         """Row `done` at time t from the integrated state y."""
         sim = self.sim
-        poses, drift = self.projected(t, sim.state.poses(y, sim.aux, self.before))
+        poses, drift = self.projected(t, sim.state.poses(y, sim.aux_log.near(t, sim.aux), self.before))
         try:
             solver = sim.engine_at(t, poses, accelerations=True)
             motion = solver.solve()

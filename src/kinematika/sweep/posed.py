@@ -140,7 +140,20 @@ def _moved_joint(pose: _Pose, j: Joint) -> Joint:
 
 
 def _moved_driver(pose: _Pose, d: Any) -> Any:
-    """A driver now: a velocity's direction is fixed in its frame of reference."""
+    """A driver now: a velocity's direction is fixed in its frame of reference; a 3D ω along
+    the axis of the revolute joining its bodies (that joint's rate, `joint_rates`) turns with
+    that axis."""
+    if d.kind == "omega" and isinstance(d.value, tuple):
+        from .joint_rates import as_joint_rate
+
+        if as_joint_rate(pose.model, pose.inst, d) is None:
+            return dataclasses.replace(d)
+        turn = pose.rot[d.relative_to or pose.model.frame]
+        value = _numbers(turn @ np.array([float(c) for c in pose.inst.vector(d.value, d.where)]))
+        accel = d.accel
+        if isinstance(accel, tuple):
+            accel = _numbers(turn @ np.array([float(c) for c in pose.inst.vector(accel, d.where)]))
+        return dataclasses.replace(d, value=value, accel=accel)
     if d.kind != "velocity" or d.along is None or d.relative_to is None:
         return dataclasses.replace(d)
     return dataclasses.replace(d, along=pose.turned(d.relative_to, d.along, f"{d.where}.along"))

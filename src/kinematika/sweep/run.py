@@ -18,6 +18,7 @@ from ..errors import KinematikaError, Num, Said
 from ..memory import arrays_on_heap
 from ..model.model import Model, PointRef
 from .coincident import coincide
+from .joint_rates import with_joint_rates
 from .plan import Plan, make_plan, swept_joint
 from .result import QUANTITIES, SweepResult
 
@@ -51,8 +52,10 @@ class Sweeper:
         from .posing import at_draw_numbers
 
         model, self.warnings = at_draw_numbers(_as_model(source), "sweep", warn=False)
+        inst = instantiate(model, False)
+        model = with_joint_rates(model, inst)          # a 3D ω along a revolute: its rate
         self.model = model
-        self.inst = instantiate(model, False)
+        self.inst = inst if inst.model is model else instantiate(model, False)
         self.joint, self.driver = swept_joint(model, joint if joint is not None else
                                               (model.sweep.joint if model.sweep else None))
         self.solver = InstantSolver(self.inst)

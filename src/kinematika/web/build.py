@@ -17,13 +17,13 @@ from typing import Any, Optional
 import numpy as np
 
 from ..errors import KinematikaError
+from ..questions import QUESTIONS
 from . import document
 from .palette import Context, tool
 from .rename import name_in, rename
 from .tree import Tree, degrees, name_of, number
 
 ACTIONS = ("add", "set", "delete", "drive", "ask", "rename", "name")
-QUESTIONS = ("velocity", "acceleration", "omega", "alpha", "icr", "curvature", "decompose")
 # the words new bodies are named with, per language (a name is an identifier in the text)
 NAMES = {
     "en": {"link": "link", "slider": "slider", "wheel": "wheel", "gear": "gear", "ground": "ground"},
@@ -139,6 +139,12 @@ def sketch(text: str, fmt: str) -> dict[str, Any]:
             "properties": properties(tree, values), "problem": problem,
             "name": str(tree.root.get("name") or ""),
             "names": document.plain(tree.root.get("names") or {})}
+
+
+def offered_questions(about: Optional[str] = None) -> list[str]:
+    """The kinds of question the page's builder offers (`QuestionKind.page`), of a point's or
+    a body's (`about`) or all, in the registry's order."""
+    return [k.name for k in QUESTIONS.values() if k.page and about in (None, k.about)]
 
 
 def rate_unit(joint_type: str) -> Optional[str]:
@@ -511,18 +517,19 @@ def _value(x: Any) -> Any:
 
 
 def _ask(tree: Tree, question: str, target: str) -> None:
-    """Add a question about a point or a body (once)."""
-    if question not in QUESTIONS:
-        raise KinematikaError("usage", "question-kind", "question", question=repr(question), kinds=list(QUESTIONS))
+    """Add a question about a point or a body (once): a kind the page offers (`page`)."""
+    offered = offered_questions()
+    if question not in offered:
+        raise KinematikaError("usage", "question-kind", "question", question=repr(question), kinds=offered)
     if not target:
         raise KinematikaError("usage", "question-target", "target")
     item = {question: target}
-    if question == "decompose":
+    if QUESTIONS[question].moving:
         base = target.split("@")[0]
         moving = next((b for b in tree.carriers(base) if b != tree.frame), None)
         if moving is None:
             raise KinematikaError("usage", "target-not-moving", "target", target=target)
-        item = {"decompose": target, "moving": moving}
+        item = {question: target, "moving": moving}
     asks = tree.asks()
     if any(document.plain(a) == item for a in asks):
         return

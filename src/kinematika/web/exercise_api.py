@@ -10,7 +10,8 @@ answers one variant of the model's exercise, as `kinematika exercise` draws it (
   (question id, words, unit) and the page's words — never the key's values;
 - with `answers`: each typed number marked as `grade` marks it (right within the tolerance,
   else the usual mistake it shows, by the same diagnoses), with the feedback's words;
-- with `"reveal": true`: also the worked solution (`explain --format html` of the variant).
+- with `"reveal": true` and answers (after a check): also the worked solution (`explain
+  --format html` of the variant). No response carries a key value before a check.
 """
 from __future__ import annotations
 
@@ -40,6 +41,8 @@ def exercise_options(body: dict) -> dict[str, Any]:
     reveal = body.get("reveal", False)
     if not isinstance(reveal, bool):
         raise KinematikaError("usage", "request-reveal", "reveal")
+    if reveal and not out["answers"]:
+        raise KinematikaError("usage", "reveal-after-check", "reveal")
     out["reveal"] = reveal
     return out
 
@@ -67,6 +70,7 @@ def exercise_answer(req: Any) -> dict[str, Any]:
         ex = Exercise(model, model.exercise or DEFAULT_SECTION, [], req.get("seed"), lang)
         variant = ex.solve({})
         variant.number = 1
+        ex.judged(variant)
         ex.variants.append(variant)
     variant = ex.variants[-1]
     variant.number = number
@@ -79,20 +83,20 @@ def exercise_answer(req: Any) -> dict[str, Any]:
         right = sum(1 for m in out["marks"] if m["correct"])
         out["score"] = {"right": right, "total": len(variant.rows),
                         "text": catalogue(lang).format("page-score", {"right": right, "total": len(variant.rows)})}
-    if req.get("reveal"):
-        from ..exercise.solutions import solution_html
+        if req.get("reveal"):
+            from ..exercise.solutions import solution_html
 
-        out["solution"] = solution_html(ex, variant, lang)
+            out["solution"] = solution_html(ex, variant, lang)
     return out
 
 
 def _statement(ex: Any, variant: Any, lang: str) -> dict[str, Any]:
     from ..exercise.catalogue import catalogue
-    from ..exercise.figure import dimensions_of, figure_png
+    from ..exercise.figure import statement_figure
     from ..exercise.statement import asked, statement_html, units_note
 
     stated = variant.all_stated(ex)
-    png = figure_png(variant.solution, dimensions_of(ex, variant.solution, stated, lang), lang)
+    png = statement_figure(ex, variant, lang)
     cat = catalogue(lang)
     words = {key: cat.format(key) for key in ("sheet-find", "page-check", "page-show", "page-your-answer",
                                                "page-link")}
@@ -107,19 +111,23 @@ def _statement(ex: Any, variant: Any, lang: str) -> dict[str, Any]:
 
 
 def _marks(ex: Any, variant: Any, answers: dict[str, str], lang: str) -> list[dict[str, Any]]:
-    """Each typed number marked as `grade` marks it, with the feedback's words."""
+    """Each typed number marked as `grade` marks it (its margin, the mistake it shows, an
+    error carried forward from an earlier answer), with the feedback's words."""
     from ..exercise.catalogue import catalogue
-    from ..exercise.grading import Marker
+    from ..exercise.grading import Marker, checked
 
     cat = catalogue(lang)
     marker = Marker(ex)
+    marks = [m for question, text in answers.items()
+             if (m := marker.mark("page", variant, question, text, f"answers.{question}")) is not None]
     out = []
-    for question, text in answers.items():
-        mark = marker.mark("page", variant, question, text, f"answers.{question}")
-        if mark is None:
-            continue
-        feedback = cat.format("feedback-right") if mark.correct else (
-            cat.format(f"mistake-{mark.diagnosis}") if mark.diagnosis else cat.format("feedback-wrong"))
-        out.append({"question": question, "value": mark.value, "correct": mark.correct,
+    for mark in checked(marks, marker, variant):
+        if mark.carried_from:
+            feedback = cat.format("feedback-carried", {"question": mark.carried_from})
+        elif mark.correct:
+            feedback = cat.format("feedback-right")
+        else:
+            feedback = cat.format(f"mistake-{mark.diagnosis}") if mark.diagnosis else cat.format("feedback-wrong")
+        out.append({"question": mark.question, "typed": mark.typed, "value": mark.value, "correct": mark.correct,
                     "diagnosis": mark.diagnosis, "feedback": feedback})
     return out

@@ -18,7 +18,7 @@ from typing import Any
 
 from ..errors import KinematikaError, Names
 from ..languages import LANGS
-from ..model.model import POINT_QUESTIONS
+from ..questions import QUESTIONS
 from . import document
 from .tree import Tree
 
@@ -87,9 +87,9 @@ def _rename_body(tree: Tree, old: str, new: str) -> None:
     for a in tree.existing("ask"):
         for key in list(a):
             value = str(a[key])
-            if key in POINT_QUESTIONS:
+            if _about(key) == "point":
                 a[key] = _at_body(value, old, new)
-            elif key != "contact" and value == old:         # a body's question, relative_to, moving
+            elif _about(key) != "joint" and value == old:   # a body's question, relative_to, moving
                 a[key] = new
     for entry in (tree.root.get("names") or {}).values():
         if isinstance(entry, dict) and isinstance(entry.get("bodies"), dict) and old in entry["bodies"]:
@@ -101,6 +101,13 @@ def _rename_body(tree: Tree, old: str, new: str) -> None:
             parts = [new if p == old else p for p in inside.split("/")]
             if "/".join(parts) != inside:
                 _rekey(notation, key, f"{rate}({'/'.join(parts)})")
+
+
+def _about(key: Any) -> str | None:
+    """What a question's key names (`QuestionKind.about`: a point, a body, a joint); None for
+    `relative_to`, `moving` or an unknown key."""
+    key = str(key)
+    return QUESTIONS[key].about if key in QUESTIONS else None
 
 
 def _at_body(ref: str, old: str, new: str) -> str:
@@ -146,7 +153,7 @@ def _rename_point(tree: Tree, old: str, new: str) -> None:
         if isinstance(d.get("velocity"), str):
             d["velocity"] = _point_at(d["velocity"], old, new)
     for a in tree.existing("ask"):
-        for key in [k for k in a if k in POINT_QUESTIONS]:
+        for key in [k for k in a if _about(k) == "point"]:
             a[key] = _point_at(str(a[key]), old, new)
     for entry in (tree.root.get("names") or {}).values():
         if isinstance(entry, dict) and isinstance(entry.get("points"), dict) and old in entry["points"]:

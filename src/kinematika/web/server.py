@@ -136,9 +136,11 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
         return handle
 
     async def palette(_: HttpRequest) -> Response:
+        from .build import offered_questions
         from .palette import TOOLS
 
-        return JSONResponse({"tools": [t.public() for t in TOOLS]}, headers=SECURITY)
+        questions = {about: offered_questions(about) for about in ("point", "body")}
+        return JSONResponse({"tools": [t.public() for t in TOOLS], "questions": questions}, headers=SECURITY)
 
     async def strings(request: HttpRequest) -> Response:
         from .strings import page_strings
@@ -398,11 +400,13 @@ def _input(model: Any) -> Optional[dict[str, Any]]:
 
 
 def _time_input(model: Any) -> Optional[dict[str, Any]]:
-    """The page's slider over time: the model's `simulate` section, else `DEFAULT_TIME` s."""
+    """The page's slider over time: the model's `simulate` section (written in its symbols:
+    at their `draw_at` numbers, as it is simulated), else `DEFAULT_TIME` s."""
     from ..simulate.clock import DEFAULT_STEPS, DEFAULT_TIME, make_clock
+    from ..simulate.run import at_numbers
 
     try:
-        clock = make_clock(model, 0.0, None, None, DEFAULT_TIME)
+        clock = make_clock(at_numbers(model)[0], 0.0, None, None, DEFAULT_TIME)
     except KinematikaError:
         clock = make_clock(model, 0.0, DEFAULT_TIME, DEFAULT_STEPS)
     return {"joint": None, "unit": "s", "time": clock.duration, "steps": clock.steps}

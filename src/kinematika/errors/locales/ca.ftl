@@ -560,14 +560,46 @@ key-mismatch = key.csv no coincideix amb el model resolt de nou (variant { $vari
 question-not-asked = '{ $question }' no es pregunta a la variant { $variant } (les seves preguntes: { $asked })
 row-no-student = una fila sense estudiant
 variant-not-number = la variant { $got } no és un nombre
-answered-twice = { $student } respon dues vegades { $question } de la variant { $variant }
+answered-twice = { $student } respon dues vegades { $question } de la variant { $variant } (la primera vegada a la línia { $first })
 statement-missing = la secció de l’exercici no té enunciat en '{ $lang }' (en té en { $langs })
 vary-step-form = --vary espera NAME=LOW:HIGH[:STEP] (com s=300:500:10), i hi ha { $got }
 vary-step-interval = --vary { $name }: dona LOW <= HIGH i un STEP positiu, i hi ha { $got }
 vary-grid-large = --vary { $name }: { $count } valors a la graella, com a molt { $limit }: pren un pas més gran
 count-range = --count admet d’1 a { $limit } variants, i hi ha { $got }
 grids-too-small = les graelles donen { $total } variants diferents, menys que --count { $count }: amplia un interval o pren passos més petits
-variants-few = només s’han trobat { $found } de { $count } variants entre { $drawn } sortejades: { $apart } no es munten, { $dead } són a prop d’un punt mort; canvia els intervals
+variants-few = només s’han trobat { $found } de { $count } variants entre { $drawn } sortejades: { $apart } no es munten, { $dead } són a prop d’un punt mort, { $close } no distingeixen un error habitual de la resposta correcta; canvia els intervals
+weights-count = dona un pes per a cada pregunta qualificada: { $count }, i hi ha { $got }
+weight-positive = un pes és un nombre positiu, i hi ha { $got }
+reveal-after-check = la resolució pas a pas es mostra després de comprovar: envia les respostes amb la petició
+students-first-column = { $name }: la primera columna ha de contenir els identificadors dels estudiants
+student-twice = l’estudiant { $student } apareix dues vegades a la llista (línies { $first } i { $line })
+student-variant-range = la variant { $got } no és entre 1 i { $count }
+table-unreadable = no es pot llegir { $path }: { $reason }
+table-empty = { $name } és buit (una capçalera i després una fila per línia)
+table-no-column = { $name } no té la columna '{ $column }' (la seva capçalera: { $header }; columnes: { $columns })
+row-fields = { $count } camps, però la capçalera en té { $header } (un valor amb una coma va entre cometes)
+row-not-read = { $place }: no llegida: { $error }
+students-unknown = no són a la llista de la classe (es deixen fora): { $students }
+grade-column = { $column ->
+        [question] pregunta
+        [answers] respostes
+        [right] correctes
+        [carried] derivades
+        [mistakes] errors
+        [student] estudiant
+        [variant] variant
+       *[score] nota
+    }
+grade-score = { $score } %
+exercise-not-drawn-rounding = descartada: { $data }: arrodonir les dades a 3 xifres canvia { $question } un { $gap } %
+exercise-not-drawn-mistake = descartada: { $data }: l’error { $kind } dona { $question } a menys del { $gap } % de la resposta correcta
+exercise-narrowed = variant { $number }: el marge de { $question } s’estreny al { $tolerance } % per distingir l’error { $kind } (que se n’aparta un { $gap } %)
+exercise-wrote = { $count } { $count ->
+        [one] variant escrita
+       *[other] variants escrites
+    } a { $folder }
+exercise-progress = figures i resolucions pas a pas: { $done }/{ $total }
+pdf-skipped = no es genera el PDF: { $program } no està instal·lat ({ $hint })
 
 ## figures i explicacions (draw/*.py, explain/*.py, web/strings.py)
 animate-planar = animate dibuixa models plans; dibuixa l’instant d’un model 3D amb `kinematika draw`

@@ -485,14 +485,46 @@ key-mismatch = key.csv does not match the model solved again (variant { $variant
 question-not-asked = '{ $question }' is not asked in variant { $variant } (its questions: { $asked })
 row-no-student = a row without a student
 variant-not-number = variant { $got } is not a number
-answered-twice = { $student } answers { $question } of variant { $variant } twice
+answered-twice = { $student } answers { $question } of variant { $variant } twice (first on line { $first })
 statement-missing = the exercise section has no statement in '{ $lang }' (it has { $langs })
 vary-step-form = --vary expects NAME=LOW:HIGH[:STEP] (as s=300:500:10), got { $got }
 vary-step-interval = --vary { $name }: give LOW <= HIGH and a positive STEP, got { $got }
 vary-grid-large = --vary { $name }: { $count } values on the grid, at most { $limit }: take a larger step
 count-range = --count takes 1 to { $limit } variants, got { $got }
 grids-too-small = the grids hold { $total } different variants, fewer than --count { $count }: widen an interval or take smaller steps
-variants-few = only { $found } of { $count } variants found in { $drawn } drawn: { $apart } do not assemble, { $dead } are near a dead point; change the intervals
+variants-few = only { $found } of { $count } variants found in { $drawn } drawn: { $apart } do not assemble, { $dead } are near a dead point, { $close } cannot tell a usual mistake from the right answer; change the intervals
+weights-count = give one weight per graded question: { $count }, got { $got }
+weight-positive = a weight is a positive number, got { $got }
+reveal-after-check = the worked solution comes after a check: send the answers with it
+students-first-column = { $name }: the first column must hold the students' ids
+student-twice = student { $student } is listed twice (lines { $first } and { $line })
+student-variant-range = variant { $got } is not one of 1 to { $count }
+table-unreadable = cannot read { $path }: { $reason }
+table-empty = { $name } is empty (a header, then one row per line)
+table-no-column = { $name } has no column '{ $column }' (its header: { $header }; columns: { $columns })
+row-fields = { $count } fields, the header has { $header } (a value with a comma needs quotes)
+row-not-read = { $place }: not read: { $error }
+students-unknown = not on the class list (left out): { $students }
+grade-column = { $column ->
+        [question] question
+        [answers] answers
+        [right] right
+        [carried] carried
+        [mistakes] mistakes
+        [student] student
+        [variant] variant
+       *[score] score
+    }
+grade-score = { $score } %
+exercise-not-drawn-rounding = not drawn: { $data }: rounding the data to 3 figures moves { $question } by { $gap } %
+exercise-not-drawn-mistake = not drawn: { $data }: { $kind } gives { $question } within { $gap } % of the right answer
+exercise-narrowed = variant { $number }: the margin of { $question } narrowed to { $tolerance } % to tell { $kind } apart (it gives { $gap } % off)
+exercise-wrote = wrote { $count } { $count ->
+        [one] variant
+       *[other] variants
+    } to { $folder }
+exercise-progress = figures and worked solutions: { $done }/{ $total }
+pdf-skipped = PDF skipped: { $program } is not installed ({ $hint })
 
 ## figures and explanations (draw/*.py, explain/*.py, web/strings.py)
 animate-planar = animate draws planar models; draw a 3D model's instant with `kinematika draw`

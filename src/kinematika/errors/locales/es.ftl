@@ -560,14 +560,46 @@ key-mismatch = key.csv no coincide con el modelo resuelto de nuevo (variante { $
 question-not-asked = '{ $question }' no se pregunta en la variante { $variant } (sus preguntas: { $asked })
 row-no-student = una fila sin estudiante
 variant-not-number = la variante { $got } no es un número
-answered-twice = { $student } responde dos veces { $question } de la variante { $variant }
+answered-twice = { $student } responde dos veces { $question } de la variante { $variant } (la primera vez en la línea { $first })
 statement-missing = la sección del ejercicio no tiene enunciado en '{ $lang }' (lo tiene en { $langs })
 vary-step-form = --vary espera NAME=LOW:HIGH[:STEP] (como s=300:500:10), y hay { $got }
 vary-step-interval = --vary { $name }: da LOW <= HIGH y un STEP positivo, y hay { $got }
 vary-grid-large = --vary { $name }: { $count } valores en la rejilla, como mucho { $limit }: toma un paso mayor
 count-range = --count admite de 1 a { $limit } variantes, y hay { $got }
 grids-too-small = las rejillas dan { $total } variantes distintas, menos que --count { $count }: amplía un intervalo o toma pasos más pequeños
-variants-few = solo se han hallado { $found } de { $count } variantes entre { $drawn } sorteadas: { $apart } no se montan, { $dead } están cerca de un punto muerto; cambia los intervalos
+variants-few = solo se han hallado { $found } de { $count } variantes entre { $drawn } sorteadas: { $apart } no se montan, { $dead } están cerca de un punto muerto, { $close } no distinguen un error habitual de la respuesta correcta; cambia los intervalos
+weights-count = da un peso por cada pregunta calificada: { $count }, y hay { $got }
+weight-positive = un peso es un número positivo, y hay { $got }
+reveal-after-check = la resolución paso a paso se muestra después de comprobar: envía las respuestas con la petición
+students-first-column = { $name }: la primera columna debe contener los identificadores de los estudiantes
+student-twice = el estudiante { $student } aparece dos veces en la lista (líneas { $first } y { $line })
+student-variant-range = la variante { $got } no está entre 1 y { $count }
+table-unreadable = no se puede leer { $path }: { $reason }
+table-empty = { $name } está vacío (una cabecera y luego una fila por línea)
+table-no-column = { $name } no tiene la columna '{ $column }' (su cabecera: { $header }; columnas: { $columns })
+row-fields = { $count } campos, pero la cabecera tiene { $header } (un valor con una coma va entre comillas)
+row-not-read = { $place }: no leída: { $error }
+students-unknown = no están en la lista de la clase (se dejan fuera): { $students }
+grade-column = { $column ->
+        [question] pregunta
+        [answers] respuestas
+        [right] correctas
+        [carried] derivadas
+        [mistakes] errores
+        [student] estudiante
+        [variant] variante
+       *[score] nota
+    }
+grade-score = { $score } %
+exercise-not-drawn-rounding = descartada: { $data }: redondear los datos a 3 cifras cambia { $question } un { $gap } %
+exercise-not-drawn-mistake = descartada: { $data }: el error { $kind } da { $question } a menos del { $gap } % de la respuesta correcta
+exercise-narrowed = variante { $number }: el margen de { $question } se estrecha al { $tolerance } % para distinguir el error { $kind } (que se aparta un { $gap } %)
+exercise-wrote = { $count } { $count ->
+        [one] variante escrita
+       *[other] variantes escritas
+    } en { $folder }
+exercise-progress = figuras y resoluciones paso a paso: { $done }/{ $total }
+pdf-skipped = no se genera el PDF: { $program } no está instalado ({ $hint })
 
 ## figuras y explicaciones (draw/*.py, explain/*.py, web/strings.py)
 animate-planar = animate dibuja modelos planos; dibuja el instante de un modelo 3D con `kinematika draw`

@@ -563,14 +563,43 @@ key-mismatch = key.csv ez dator bat berriro ebatzitako ereduarekin ({ $variant }
 question-not-asked = '{ $question }' ez da galdetzen { $variant }. aldaeran (haren galderak: { $asked })
 row-no-student = ikaslerik gabeko errenkada bat
 variant-not-number = { $got } aldaera ez da zenbaki bat
-answered-twice = { $student } ikasleak bi aldiz erantzuten du { $variant }. aldaerako { $question }
+answered-twice = { $student } ikasleak bi aldiz erantzuten du { $variant }. aldaerako { $question } (lehen aldiz { $first }. lerroan)
 statement-missing = ariketaren atalak ez du enuntziaturik '{ $lang }' hizkuntzan (hauetan du: { $langs })
 vary-step-form = --vary aukerak NAME=LOW:HIGH[:STEP] espero du (s=300:500:10 bezala), baina { $got } dago
 vary-step-interval = --vary { $name }: eman LOW <= HIGH eta STEP positibo bat, baina { $got } dago
 vary-grid-large = --vary { $name }: { $count } balio saretan, gehienez { $limit }: hartu urrats handiago bat
 count-range = --count aukerak 1etik { $limit }-ra bitarteko aldaerak onartzen ditu, baina { $got } dago
 grids-too-small = sareek { $total } aldaera desberdin ematen dituzte, --count { $count } baino gutxiago: zabaldu tarte bat edo hartu urrats txikiagoak
-variants-few = { $count } aldaeretatik { $found } baino ez dira aurkitu zozketatutako { $drawn } artean: { $apart } ez dira muntatzen, { $dead } puntu hil batetik gertu daude; aldatu tarteak
+variants-few = { $count } aldaeretatik { $found } baino ez dira aurkitu zozketatutako { $drawn } artean: { $apart } ez dira muntatzen, { $dead } puntu hil batetik gertu daude, { $close } aldaeratan ezin da ohiko akats bat erantzun zuzenetik bereizi; aldatu tarteak
+weights-count = eman pisu bat kalifikatutako galdera bakoitzeko: { $count }, baina { $got } dago
+weight-positive = pisua zenbaki positibo bat da, baina { $got } dago
+reveal-after-check = ebazpena urratsez urrats egiaztatu ondoren erakusten da: bidali erantzunak eskaerarekin batera
+students-first-column = { $name }: lehen zutabean ikasleen identifikatzaileek egon behar dute
+student-twice = { $student } ikaslea bi aldiz dago zerrendan ({ $first }. eta { $line }. lerroetan)
+student-variant-range = { $got } aldaera ez dago 1etik { $count }-ra bitartean
+table-unreadable = ezin da { $path } irakurri: { $reason }
+table-empty = { $name } hutsik dago (goiburu bat eta gero errenkada bat lerro bakoitzeko)
+table-no-column = { $name } fitxategiak ez du '{ $column }' zutaberik (haren goiburua: { $header }; zutabeak: { $columns })
+row-fields = { $count } eremu, baina goiburuak { $header } ditu (koma duen balio bat komatxo artean idazten da)
+row-not-read = { $place }: ez da irakurri: { $error }
+students-unknown = ez daude klaseko zerrendan (kanpoan utzi dira): { $students }
+grade-column = { $column ->
+        [question] galdera
+        [answers] erantzunak
+        [right] zuzenak
+        [carried] ondorioztatuak
+        [mistakes] akatsak
+        [student] ikaslea
+        [variant] aldaera
+       *[score] nota
+    }
+grade-score = %{ $score }
+exercise-not-drawn-rounding = baztertua: { $data }: datuak 3 zifratara biribiltzean { $question } %{ $gap } aldatzen da
+exercise-not-drawn-mistake = baztertua: { $data }: { $kind } akatsarekin { $question } erantzun zuzenetik %{ $gap } baino gutxiagora dago
+exercise-narrowed = { $number }. aldaera: { $question } galderaren tartea %{ $tolerance } arte estutu da { $kind } akatsa bereizteko (akats horrek %{ $gap } aldentzen du)
+exercise-wrote = { $count } aldaera idatzi dira { $folder } karpetan
+exercise-progress = irudiak eta ebazpenak urratsez urrats: { $done }/{ $total }
+pdf-skipped = ez da PDFa sortu: { $program } ez dago instalatuta ({ $hint })
 
 ## irudiak eta azalpenak (draw/*.py, explain/*.py, web/strings.py)
 animate-planar = animate aginduak eredu lauak marrazten ditu; marraztu 3D eredu baten unea `kinematika draw` aginduarekin

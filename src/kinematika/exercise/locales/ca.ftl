@@ -82,6 +82,18 @@ ask-axis = l’eix instantani de rotació i lliscament { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }
+ask-velocity-point = la velocitat del punt { $point }
+ask-velocity-rel-point = la velocitat del punt { $point } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }
+ask-acceleration-point = l’acceleració del punt { $point }
+ask-acceleration-rel-point = l’acceleració del punt { $point } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }
+ask-curvature-point = la curvatura de la trajectòria del punt { $point }
+ask-intrinsic-point = les acceleracions tangencial i normal del punt { $point }
 ask-other = pregunta { $n }
 
 part-point = posició
@@ -99,6 +111,24 @@ part-slide = velocitat de lliscament
 part-speed = celeritat
 part-tangential = tangencial
 part-normal = normal
+part-tangent = tangent unitària
+part-tangential_vector = vector acceleració tangencial
+part-normal_vector = vector acceleració normal
+part-geometric = punt de contacte geomètric
+part-pole = pol
+part-diameter = diàmetre de la circumferència d’inflexions
+part-inflection_pole = pol d’inflexions
+part-pole_tangent = tangent polar
+part-pole_normal = normal polar
+part-pole_velocity = velocitat del pol
+part-of-body = punt { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }
+ask-inflection = la circumferència d’inflexions i la tangent polar { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }
 
 sheet-title = Exercici
 sheet-student = Estudiant
@@ -112,6 +142,12 @@ key-solution = Resolució pas a pas
 key-question = pregunta
 key-value = valor
 key-margin = correcte dins de ±
+key-common = La resolució: la part comuna a totes les variants
+key-see-common = Les parts de la resolució comunes a totes les variants s’imprimeixen una sola vegada, al principi del solucionari.
+key-students = Assignada a
+key-variant = Variant
+key-data = Dades
+key-contents = Índex
 
 feedback-right = Correcte.
 feedback-wrong = No és correcte: vegeu la resolució pas a pas.
@@ -123,6 +159,10 @@ mistake-drag-as-absolute = Aquest és el moviment del punt coincident de la guia
 mistake-degrees-as-radians = Aquest és el valor que s’obté prenent com a radiants un angle donat en graus.
 mistake-units-mm-as-m = Aquest és el valor que s’obté prenent com a metres els mil·límetres de les dades.
 mistake-components-swapped = Les components estan intercanviades.
+feedback-unit = El nombre és correcte en { $unit }; la casella demana { $asked }.
+mistake-wrong-unit = La unitat no és d’aquesta magnitud (la casella demana la seva).
+mistake-wrong-variant = No és una pregunta de la teva variant: respon la variant que t’ha tocat.
+feedback-carried = Se segueix de la teva resposta anterior a { $question }: es dona per bona.
 
 page-check = Comprova
 page-show = Mostra la resolució pas a pas

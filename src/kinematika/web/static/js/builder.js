@@ -32,9 +32,11 @@ export class Builder {
     palette.querySelector("[data-tool=select]").addEventListener("click", () => this.choose("select"));
   }
 
-  /** The palette's tools, as the server lists them. */
-  setTools(tools) {
+  /** The palette's tools, and the questions asked of a selected point or body, as the server
+   * lists them (the kinds of question the builder offers). */
+  setTools(tools, questions = {}) {
     this.tools = tools;
+    this.questions = questions;
     for (const tool of tools) {
       const b = document.createElement("button");
       b.type = "button";
@@ -419,8 +421,7 @@ export class Builder {
     const h = document.createElement("h4");
     h.textContent = this.t("ask-title");
     box.appendChild(h);
-    const questions = kind === "point" ? ["velocity", "acceleration", "curvature", "decompose"]
-      : kind === "body" && !this.sketch.bodies[name]?.frame ? ["omega", "alpha", "icr"] : [];
+    const questions = kind === "body" && this.sketch.bodies[name]?.frame ? [] : this.questions?.[kind] ?? [];
     for (const q of questions) {
       const asked = this.sketch.ask.some((a) => a[q] === name);
       const b = button(this.t(`q-${q}`), `ask-${q}`, () => this.act({ op: "ask", question: q, target: name }));

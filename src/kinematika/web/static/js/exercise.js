@@ -1,9 +1,10 @@
 // The page's exercise mode (docs/exercises.md): a link `#exercise=1&format=…&model=…&vary=…
-// &seed=…&variant=…&lang=…` opens one variant of the model's exercise over the page: its
-// statement and figure and a box for each number asked. The answers are not on the page:
-// the typed numbers are checked by POST /api/exercise, which marks each one as `kinematika
-// grade` does (right within the tolerance, or the usual mistake it shows); then the worked
-// solution can be shown. Self-contained: the page's other scripts are not touched.
+// &seed=…&variant=…&lang=…` opens one variant of the model's exercise as the whole page (js/boot.js
+// starts this script instead of the builder's): its statement and figure and a box for each
+// number asked — no model editor, no answers, nothing that solves. The typed numbers are
+// checked by POST /api/exercise, which marks each one as `kinematika grade` does (right within
+// its margin, the usual mistake it shows, or following from an earlier answer); after a check
+// the worked solution can be shown. Every word comes from the server, in the class's language.
 import { post } from "./api.js";
 import { fragment, fromFragment } from "./link.js";
 
@@ -44,11 +45,18 @@ function request(ex, extra = {}) {
            lang: ex.lang, ...extra };
 }
 
-async function open(ex) {
+/** The page made the exercise alone: the builder's markup (editor, answers, menus) removed. */
+function alone(ex) {
+  document.documentElement.lang = ex.lang;
+  for (const sheet of document.querySelectorAll('link[rel="stylesheet"]')) sheet.remove();
   document.head.append(element("link", { rel: "stylesheet", href: "/static/exercise.css" }));
-  const panel = element("section", { class: "exercise", "data-testid": "exercise", role: "dialog" });
-  document.body.append(panel);
-  document.body.classList.add("exercise-open");      // the page behind neither scrolls nor shows
+  const panel = element("main", { class: "exercise", "data-testid": "exercise" });
+  document.body.replaceChildren(panel);
+  return panel;
+}
+
+async function open(ex) {
+  const panel = alone(ex);
   let shown;
   try {
     shown = await post("exercise", request(ex));
@@ -60,7 +68,7 @@ async function open(ex) {
   const inputs = new Map();
   const list = element("ol", { class: "exercise-asks" });
   for (const ask of shown.asks) {
-    const item = element("li", {}, element("span", { class: "words", text: ask.words }));
+    const item = element("li", { value: String(ask.number) }, element("span", { class: "words", text: ask.words }));
     for (const part of ask.parts) {
       const box = element("input", { type: "text", inputmode: "decimal", autocomplete: "off",
                                       "aria-label": `${ask.words} ${part.words}`.trim(),
@@ -83,18 +91,23 @@ async function open(ex) {
   const here = element("a", { "data-testid": "exercise-link", href: await link(ex, ex.variant),
                               text: shown.words["page-link"] });
   panel.append(
-    element("header", {}, element("h2", { text: shown.title }), element("span", { class: "variant", text: shown.words.variant }), here),
+    element("header", {}, element("h1", { text: shown.title }), element("span", { class: "variant", text: shown.words.variant }), here),
     statement, element("img", { src: shown.figure, alt: shown.title, class: "figure" }),
-    element("p", { class: "note", text: shown.note }), element("h3", { text: shown.words["sheet-find"] }),
+    element("p", { class: "note", text: shown.note }), element("h2", { text: shown.words["sheet-find"] }),
     list, element("p", { class: "actions" }, check, " ", score, " ", reveal), solution);
 
-  check.addEventListener("click", async () => {
+  let checked = null;                             // the answers of the last check
+  const typed = () => {
     const answers = {};
     for (const [question, { box }] of inputs) if (box.value.trim()) answers[question] = box.value.trim();
+    return answers;
+  };
+  check.addEventListener("click", async () => {
+    const answers = typed();
     check.disabled = true;
     try {
       const marked = await post("exercise", request(ex, { answers }));
-      for (const { mark, box } of inputs.values()) { mark.textContent = ""; box.className = ""; }
+      for (const { mark, box } of inputs.values()) { mark.textContent = ""; box.className = ""; delete mark.dataset.diagnosis; }
       for (const m of marked.marks) {
         const { box, mark } = inputs.get(m.question);
         box.className = m.correct ? "right" : "wrong";
@@ -103,7 +116,8 @@ async function open(ex) {
         if (m.diagnosis) mark.dataset.diagnosis = m.diagnosis;
       }
       score.textContent = marked.score.text;
-      reveal.hidden = false;
+      checked = answers;
+      reveal.hidden = Object.keys(answers).length === 0;
     } catch (err) {
       score.textContent = err.message;
     } finally {
@@ -111,8 +125,9 @@ async function open(ex) {
     }
   });
   reveal.addEventListener("click", async () => {
+    if (!checked) return;
     reveal.disabled = true;
-    const answered = await post("exercise", request(ex, { answers: {}, reveal: true }));
+    const answered = await post("exercise", request(ex, { answers: checked, reveal: true }));
     const frame = element("iframe", { title: shown.words["page-show"], sandbox: "allow-same-origin" });
     frame.srcdoc = `<!DOCTYPE html><meta charset="utf-8"><body style="font-family:serif">${answered.solution}</body>`;
     solution.replaceChildren(frame);

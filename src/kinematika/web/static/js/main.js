@@ -674,7 +674,7 @@ async function setLanguage(code) {
 
 async function start() {
   const [opening, palette] = await Promise.all([get("/api/start"), get("/api/palette")]);
-  builder.setTools(palette.tools);
+  builder.setTools(palette.tools, palette.questions);
   for (const pick of document.querySelectorAll("[data-lang]")) pick.value = state.lang;
   await i18n.use(state.lang);
   for (const name of opening.examples) {

@@ -1,0 +1,93 @@
+"""What the fast commands import: the listed modules, and no more (issue 34, part 5).
+
+A command's start is mostly its imports (`benchmarks/start_up.py` measures it against
+`python -c "import numpy"`), so each fast command line is run here with `python -X
+importtime`, whose report names every module imported, and the modules are compared with
+the lists below: kinematika's own, by name; the project's heavy libraries (none for an
+instant or a sweep, scipy for a motion in time); and how many other modules (the standard
+library's, and what the allowed libraries bring) may be loaded. Counts and names, never
+times: a test never depends on speed.
+
+A module added to a command's path on purpose is added to its list here, with the reason
+in the commit; one that arrived by accident (an import at the top of a module that only a
+view needs, a library imported where a function would do) is moved into the function that
+needs it.
+"""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+# what `solve --json` imports of kinematika (and `QUESTIONS` when the model asks a question whose
+# answer is not in the tables); the other commands list what they add
+SOLVE = {
+    "kinematika", "kinematika.algebra", "kinematika.algebra.backend", "kinematika.algebra.vectors",
+    "kinematika.api", "kinematika.budget", "kinematika.cli", "kinematika.cli.fast", "kinematika.cli.fast_options",
+    "kinematika.cli.run", "kinematika.cli.shared", "kinematika.commands", "kinematika.engine",
+    "kinematika.engine.blocks", "kinematika.engine.drivers", "kinematika.engine.idle", "kinematika.engine.instant",
+    "kinematika.engine.joints", "kinematika.engine.levels", "kinematika.engine.linear", "kinematika.engine.linsolve",
+    "kinematika.engine.mobility", "kinematika.engine.motion", "kinematika.engine.positions",
+    "kinematika.engine.ranges", "kinematika.engine.system", "kinematika.engine.terms", "kinematika.errors",
+    "kinematika.errors.said", "kinematika.expressions", "kinematika.joints", "kinematika.joints.base",
+    "kinematika.joints.derivatives", "kinematika.joints.positions", "kinematika.joints.symbols",
+    "kinematika.languages", "kinematika.limits", "kinematika.memo", "kinematika.model", "kinematika.model.build",
+    "kinematika.model.builder", "kinematika.model.constructions", "kinematika.model.figure_hints",
+    "kinematika.model.files", "kinematika.model.model", "kinematika.model.overrides", "kinematika.model.plain",
+    "kinematika.model.shape", "kinematika.model.source", "kinematika.model.wording", "kinematika.report", "kinematika.report.json_answer",
+    "kinematika.report.json_text", "kinematika.report.values", "kinematika.shapes", "kinematika.solution",
+    "kinematika.sweep", "kinematika.sweep.posing", "kinematika.text",
+    # the question kinds' registry: an answer's tables read what each asked kind is (issue 34, part 3)
+    "kinematika.questions", "kinematika.questions.base", "kinematika.questions.motion",
+}
+QUESTIONS = {"kinematika.questions", "kinematika.questions.axis", "kinematika.questions.contact",
+             "kinematika.questions.curvature", "kinematika.questions.decompose", "kinematika.questions.icr",
+             "kinematika.questions.inflection", "kinematika.questions.motion", "kinematika.questions.pole"}
+SWEEP_RUN = {"kinematika.memory", "kinematika.sweep.coincident", "kinematika.sweep.plan", "kinematika.sweep.result",
+             "kinematika.sweep.run",
+             "kinematika.sweep.joint_rates"}       # a 3D ω along a revolute's axis is its rate (issue 31)
+SIMULATE = {"kinematika.simulate", "kinematika.simulate.clock", "kinematika.simulate.holonomic",
+            "kinematika.simulate.result", "kinematika.simulate.run", "kinematika.simulate.state",
+            "kinematika.simulate.timed", "kinematika.sweep.poses", "kinematika.sweep.progress"}
+HEAVY = {"scipy", "sympy", "pydantic", "typer", "click", "rich", "matplotlib", "pyarrow", "starlette", "uvicorn",
+         "fluent", "babel", "dask", "distributed", "ezdxf", "playwright", "PIL", "pandas"}
+
+# command line, kinematika's modules, heavy libraries allowed, most other modules
+COMMANDS = {
+    "solve": (["solve", "{ex}/four_bar.yaml", "--json"], SOLVE | QUESTIONS, set(), 145),
+    "solve-no-questions": (["solve", "{ex}/spherical_four_bar.yaml", "--json"], SOLVE, set(), 145),
+    "centres": (["centres", "{ex}/four_bar.yaml", "--json"],
+                SOLVE | QUESTIONS | {"kinematika.questions.centres", "kinematika.report.centres_table"}, set(), 145),
+    "sweep": (["sweep", "{ex}/four_bar.yaml", "--steps", "8", "--json"],
+              SOLVE | SWEEP_RUN | {"kinematika.structure", "kinematika.structure.assur", "kinematika.sweep.closed_form"},
+              set(), 145),
+    "simulate": (["simulate", "{ex}/tractor_trailer_turning.yaml", "--time", "1", "--steps", "2", "--json"],
+                 SOLVE | SWEEP_RUN | SIMULATE, {"scipy"}, 245),
+}
+
+
+def imported(args: list[str]) -> list[str]:
+    """Every module the command line imports, as `python -X importtime` reports them."""
+    run = subprocess.run([sys.executable, "-X", "importtime", "-m", "kinematika", *args],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout + run.stderr
+    lines = [line for line in run.stderr.splitlines() if line.startswith("import time:")]
+    return [line.split("|")[2].strip() for line in lines if "self [us]" not in line]
+
+
+@pytest.mark.parametrize("command", list(COMMANDS))
+def test_a_fast_command_imports_only_its_listed_modules(command):
+    args, listed, heavy, most_others = COMMANDS[command]
+    modules = imported([a.format(ex=EXAMPLES) for a in args])
+    ours = {m for m in modules if m.split(".")[0] == "kinematika"}
+    assert not ours - listed, f"`kinematika {command}` imports modules not on its list: {sorted(ours - listed)}"
+    libraries = {m.split(".")[0] for m in modules} & HEAVY
+    assert libraries <= heavy, f"`kinematika {command}` imports {sorted(libraries - heavy)}"
+    others = [m for m in modules if m.split(".")[0] not in {"kinematika", "numpy", *heavy}]
+    assert len(others) <= most_others, (f"`kinematika {command}` imports {len(others)} other modules "
+                                        f"(at most {most_others})")
+    assert len(ours) >= len(listed) // 2          # the report was read (the lists are not vacuous)
