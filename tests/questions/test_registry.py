@@ -49,7 +49,7 @@ ALLOWED_WORDS = {           # the same words meaning something else, with where 
              "explain/answers.py",              # an inflection answer's `pole` field (its unit)   # pole mark
              "explain/polygon.py", "explain/render/svg.py"),   # a velocity polygon's pole
     "curvature": ("model/shape.py", "draw/animation.py", "web/requests.py", "web/server.py",   # the figure's `curvature`
-                  "web/scene_json.py", "web/static/js/figure.js",             # layer and its colour
+                  "web/scene_json.py", "web/static/js/figure.js", "draw/marks.py",   # layer and its colour
                   "explain/higher.py"),             # a derivation's kind: ρ of a contact's path
 }
 

@@ -178,6 +178,70 @@ def test_a_3d_scene_gives_what_it_draws_in_model_coordinates(client):
     assert "projection" not in post(client, "draw", model=(EXAMPLES / "four_bar.yaml").read_text()).json()
 
 
+def four_bar_b() -> tuple[float, float]:
+    """The four-bar's B by hand: |AB| = 4 from A = (0, 1), |O4B| = 3 from O4 = (4, 0), the
+    upper of the two points."""
+    ax, ay, ox, b, c = 0.0, 1.0, 4.0, 4.0, 3.0
+    d = math.hypot(ox - ax, ay)
+    along = (b * b - c * c + d * d) / (2 * d)
+    h = math.sqrt(b * b - along * along)
+    ux, uy = (ox - ax) / d, (0 - ay) / d
+    return max(((ax + along * ux - s * h * uy, ay + along * uy + s * h * ux) for s in (1, -1)),
+               key=lambda q: q[1])
+
+
+def test_draw_gives_each_bodys_reference_line_as_the_sweep_measures_it(client):
+    """The four-bar by hand: the crank O2A from its pivot O2 = (0, 0) to A = (0, 1), at 90°;
+    the rocker from its pivot O4 = (4, 0) to B (|AB| = 4, |O4B| = 3, the upper point), not
+    B → O4 as its points are listed; the coupler from its first point A (no pivot)."""
+    scene = post(client, "draw", model=(EXAMPLES / "four_bar.yaml").read_text()).json()
+    ax, ay, ox = 0.0, 1.0, 4.0
+    bx, by = four_bar_b()
+    bodies = scene["bodies"]
+    assert bodies["ground"]["reference"] is None
+    assert bodies["crank"]["reference"] == {"from": "O2", "to": "A", "grounded": True, "angle": pytest.approx(90.0)}
+    assert bodies["rocker"]["reference"] == {"from": "O4", "to": "B", "grounded": True,
+                                             "angle": pytest.approx(math.degrees(math.atan2(by, bx - ox)))}
+    assert bodies["coupler"]["reference"] == {"from": "A", "to": "B", "grounded": False,
+                                              "angle": pytest.approx(math.degrees(math.atan2(by - ay, bx - ax)))}
+
+
+def test_draw_gives_the_picture_for_the_frame_asked(client):
+    """The page's picture: the four-bar's marks (its pins at the joints' places, O2 = (0, 0)
+    and A = (0, 1) by construction), and, for a frame asked around the mechanism, the far
+    centre I13 (on the crank's line x = 0 and the rocker's line O4B, far above) marked by an
+    arrow inside that frame, pointing at it."""
+    text = (EXAMPLES / "four_bar.yaml").read_text()
+    picture = post(client, "draw", model=text, centres=True).json()["picture"]
+    pins = [m["points"][0] for m in picture["marks"] if m["kind"] == "dot" and m.get("id", "").startswith("joint:")]
+    assert [0.0, 0.0] in pins and [0.0, 1.0] in pins
+    frame = [-1.0, -1.0, 6.0, 5.0]
+    asked = post(client, "draw", model=text, centres=True, frame=frame).json()["picture"]
+    assert asked["frame"] == frame
+    far = next(m for m in asked["marks"] if m.get("id") == "centre:ground-coupler:far")
+    (x0, y0), (x1, y1) = far["points"]
+    bx, by = four_bar_b()
+    i13 = (0.0, 4.0 / (4.0 - bx) * by)                     # O4 + t (B − O4) where x = 0
+    assert all(frame[0] < x < frame[2] for x in (x0, x1)) and all(frame[1] < y < frame[3] for y in (y0, y1))
+    assert (x1 - x0) * (i13[1] - y1) - (y1 - y0) * (i13[0] - x1) == pytest.approx(0, abs=1e-9)
+    assert (x1 - x0) * (i13[0] - x1) + (y1 - y0) * (i13[1] - y1) > 0
+    for bad in ([0, 0, 1], [1, 0, 0, 1], [0, 0, "1", 1]):
+        answer = post(client, "draw", model=text, frame=bad)
+        assert answer.status_code == 400 and answer.json()["error"]["where"] == "frame"
+
+
+def test_a_3d_pictures_moving_marks_have_their_places_in_space(client):
+    """The spherical four-bar: each moving mark drawn at a point of the file has that point
+    in space (`xyz`), which the projection takes back to the mark's place on the page."""
+    scene = post(client, "draw", model=(EXAMPLES / "spherical_four_bar.yaml").read_text()).json()
+    P = scene["projection"]
+    lifted = [m for m in scene["picture"]["marks"] if m.get("xyz")]
+    assert lifted
+    for m in lifted:
+        for xyz, page in zip(m["xyz"], m["points"], strict=True):
+            assert [sum(r * x for r, x in zip(row, xyz)) for row in P] == pytest.approx(page, abs=1e-9)
+
+
 def test_the_page_and_its_files_are_served_with_a_strict_policy(client):
     page = client.get("/")
     assert page.status_code == 200 and 'data-testid="figure"' in page.text

@@ -3,8 +3,11 @@ centres and curvature circles (`draw`), its motion over a sweep (`animate`), swe
 (`plot_sweep`), and Jupyter's drawings (`jupyter`).
 
 Every figure reads results (a `Solution`, a sweep's arrays); given a model instead, `draw`
-and `animate` have it solved by the sweep layer (`sweep.posing`) first. Drawing uses
-matplotlib without a display (the Agg canvas): no window ever opens.
+and `animate` have it solved by the sweep layer (`sweep.posing`) first. What a figure shows
+is a `Scene` (`scene`); what it draws is a picture of marks (`picture`: the rules of how
+bodies, joints, centres, curvature and arrows are drawn), which `paint` paints with
+matplotlib and the page (`web/static/js/figure.js`) as SVG. Drawing uses matplotlib
+without a display (the Agg canvas): no window ever opens.
 """
 from __future__ import annotations
 

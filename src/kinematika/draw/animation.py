@@ -22,9 +22,11 @@ from .geometry import Box
 from .options import DrawOptions
 from .scene import Scene, VectorView
 from .names import plain, value_text
-from .style import INK, KIND_COLOURS, POINT_LABEL, TITLE_SIZE
+from .style import INK, KIND_COLOURS, PATH, POINT_LABEL, TITLE_SIZE
 from .geometry import perpendicular, unit
-from .vectors import arrow_for, arrow_patch, side_shifts
+from ..joints.symbols import Mark
+from .paint import artist
+from .vectors import arrow_for, arrow_mark, side_shifts
 from matplotlib.transforms import offset_copy
 
 FORMATS = ("gif", "mp4")
@@ -190,11 +192,12 @@ def _coordinate(result: Any, k: int) -> str:
 
 
 def _paint(cv: Canvas) -> None:
-    from .bodies import paint_bodies
-    from .joints import paint_joints
+    """The mechanism as a moving figure draws it (no labels, no results): each body's marks
+    placed through its transform."""
+    from .paint import paint
+    from .picture import picture
 
-    paint_bodies(cv)
-    paint_joints(cv)
+    paint(cv, picture(cv.scene, cv.view, still=False, labels=False, results=False))
 
 
 def _live_vectors(sol: Any, options: DrawOptions, result: Any) -> list[VectorView]:
@@ -275,12 +278,13 @@ class Motion:
         for ref in self._traced(trace):
             path = self.positions(ref)
             ax.plot(*path.T, lw=1.0, ls=(0, (3, 2)), color=POINT_LABEL, alpha=0.55, zorder=1)
-            line, = ax.plot([], [], lw=1.6, color="#6d4c41", alpha=0.9, zorder=2,
+            line, = ax.plot([], [], lw=1.6, color=PATH, alpha=0.9, zorder=2,
                             gid=f"trace:{ref}")
             self.traces.append((line, path))
         for v in self.live:
-            patch = arrow_patch(arrow_for(v, 1.0, 1.0, np.zeros(2), np.array([1.0, 0.0]), 1.0),
-                                v.key)
+            patch = artist(Mark("arrow", np.array([[0.0, 0.0], [1.0, 0.0]]),
+                                **arrow_mark(arrow_for(v, 1.0, 1.0, np.zeros(2), np.array([1.0, 0.0]), 1.0),
+                                             v.key)))
             ax.add_patch(patch)
             text = ax.annotate("", xy=(0, 0), xytext=(4, 4), textcoords="offset points",
                                fontsize=LABEL, color=KIND_COLOURS[v.kind], zorder=20,

@@ -3,154 +3,178 @@
 A body with two points is a bar; with three or more, the plate of their convex hull (a
 bar again when they are collinear). Circles are wheels (with two spokes, so that turning
 shows in an animation) or dash-dot pitch circles of gears. The frame is drawn in grey:
-its lines and circles hatched on the material's side.
+its lines and circles hatched on the material's side. What is drawn are marks
+(`draw.picture`), each in the body it moves with.
 """
 from __future__ import annotations
 
-import numpy as np
-from matplotlib.lines import Line2D
-from matplotlib.patches import Annulus, Circle, Polygon
+from typing import Optional
 
-from .canvas import Canvas
+import numpy as np
+
 from .geometry import clip_line, clip_segment, convex_hull, perpendicular
 from ..model.wording import noun
 from .names import plain
+from .picture import Context
 from .scene import BodyView, ShapeView
 from ..joints.symbols import HATCH_BAND
 from .style import BAR_WIDTH, GROUND, INK, POINT_LABEL
 
+DOTTED_SPHERE = (4.0, 3.0)      # the sphere of a spherical linkage: dashes, in line widths
 
-def paint_bodies(cv: Canvas) -> None:
+
+def draw_bodies(ctx: Context) -> None:
     """Every body as a textbook draws it: the frame's shapes hatched and its bars grey, each
     moving body's bars, plates, wheels and curves in its colour, then the points with their
     labels (a spherical linkage's sphere dashed behind)."""
-    if cv.scene.sphere is not None:
-        centre, radius = cv.scene.sphere
-        cv.add(Circle(centre, radius, fill=False, ec="#bdbdbd", lw=1.0, ls=(0, (4, 3)), zorder=0,
-                      gid="sphere"))
-    for body in cv.scene.bodies.values():
+    if ctx.scene.sphere is not None:
+        centre, radius = ctx.scene.sphere
+        ctx.add("circle", [centre], r=float(radius), colour="#bdbdbd", width=1.0,
+                dash=DOTTED_SPHERE, zorder=0, gid="sphere")
+    for body in ctx.scene.bodies.values():
         if body.frame:
             for shape in body.shapes:
-                _ground_shape(cv, shape)
-            _skeleton(cv, body, GROUND, 3.0)
+                _ground_shape(ctx, shape)
+            _skeleton(ctx, body, GROUND, 3.0)
         else:
-            _body(cv, body)
-    _points(cv)
+            _body(ctx, body)
+    _points(ctx)
 
 
-def _skeleton(cv: Canvas, body: BodyView, colour: str, width: float = BAR_WIDTH) -> None:
+def _skeleton(ctx: Context, body: BodyView, colour: str, width: float = BAR_WIDTH) -> None:
     """A body drawn as its bars (a carrier's arms, a chassis, a spherical link's arcs)."""
     for line in body.skeleton:
-        cv.add(Line2D(*np.asarray(line).T, lw=width, color=colour, alpha=0.9,
-                      solid_capstyle="round", solid_joinstyle="round", zorder=2,
-                      gid=f"body:{body.name}"), None if body.frame else body.name)
-        cv.board.avoid(*line)
+        ctx.add("line", line, width=width, colour=colour, alpha=0.9, cap="round", join="round",
+                zorder=2, gid=f"body:{body.name}", moves_with=None if body.frame else body.name)
+        ctx.avoid(*line)
 
 
-def _body(cv: Canvas, body: BodyView) -> None:
-    pts = _distinct(list(body.points.values()), 1e-9 * cv.size)
+def _body(ctx: Context, body: BodyView) -> None:
+    pts = _distinct(list(body.points.values()), 1e-9 * ctx.size)
     anchor = None
     wheels = [s for s in body.shapes if s.kind == "circle" and not s.ring]
     if wheels and all(_on_wheel(p, wheels) for p in pts):
-        _radii(cv, body, pts, wheels)       # the disc is the body: mark its points by radii
+        _radii(ctx, body, pts, wheels)       # the disc is the body: mark its points by radii
         pts = []
+    side = None                              # a bar's label beside it, away from the mechanism
     if body.skeleton:
-        _skeleton(cv, body, body.colour)
+        _skeleton(ctx, body, body.colour)
         longest = max(body.skeleton, key=lambda line: float(np.ptp(np.asarray(line), axis=0).sum()))
         anchor, pts = np.asarray(longest)[len(longest) // 2], []
         if len(longest) == 2:
             anchor = (longest[0] + longest[1]) / 2
+            side = _beside(ctx, longest[0], longest[1])
     if len(pts) >= 3:
         hull = convex_hull(pts)
-        if len(hull) >= 3 and _area(hull) > 1e-5 * cv.size ** 2:
-            cv.add(Polygon(hull, closed=True, fc=body.colour, ec=body.colour, alpha=0.38, lw=2.5,
-                           joinstyle="round", zorder=2, gid=f"body:{body.name}"), body.name)
-            cv.board.avoid(*hull, hull[0])
+        if len(hull) >= 3 and _area(hull) > 1e-5 * ctx.size ** 2:
+            ctx.add("polygon", hull, colour=body.colour, fill=body.colour, alpha=0.38, width=2.5,
+                    join="round", zorder=2, gid=f"body:{body.name}", moves_with=body.name)
+            ctx.avoid(*hull, hull[0])
             anchor = np.mean(hull, axis=0)
         else:
             pts = _extremes(pts)
     if len(pts) == 2:
-        cv.add(Line2D(*np.array(pts).T, lw=BAR_WIDTH, color=body.colour, alpha=0.9,
-                      solid_capstyle="round", zorder=2, gid=f"body:{body.name}"), body.name)
-        cv.board.avoid(*pts)
+        ctx.add("line", pts, width=BAR_WIDTH, colour=body.colour, alpha=0.9, cap="round",
+                zorder=2, gid=f"body:{body.name}", moves_with=body.name)
+        ctx.avoid(*pts)
         anchor = (pts[0] + pts[1]) / 2
+        side = _beside(ctx, pts[0], pts[1])
     for shape in body.shapes:
-        _moving_shape(cv, body, shape)
+        _moving_shape(ctx, body, shape)
         if anchor is None and shape.kind == "circle":
             anchor = shape_anchor(shape)
     if anchor is None and pts:
         anchor = pts[0]
     if anchor is not None:
-        name = plain(noun(body.label or body.name)) + (f" ({body.index or body.number})" if cv.scene.numbered else "")
-        cv.label(anchor, name, body.colour, 5, f"body:{body.name}", style="italic")
+        name = plain(noun(body.label or body.name)) + \
+            (f" ({body.index or body.number})" if ctx.scene.numbered else "")
+        ctx.label(anchor, name, body.colour, 5, f"body:{body.name}", body=body.name, side=side,
+                  group=f"body:{body.name}", style="italic", radius=BAR_WIDTH / 2 if side is not None else 0.0)
+
+
+def _beside(ctx: Context, p: np.ndarray, q: np.ndarray) -> Optional[np.ndarray]:
+    """The side of the bar pq its name goes: across it, away from the moving bodies' centroid
+    (upwards when the bar passes through it)."""
+    d = np.asarray(q, dtype=float) - np.asarray(p, dtype=float)
+    if np.linalg.norm(d) <= 1e-12 * ctx.size:
+        return None
+    n = perpendicular(d / np.linalg.norm(d))
+    away = float(n @ ((p + q) / 2 - ctx.centroid()))
+    if abs(away) <= 1e-9 * ctx.size:
+        away = float(n[1]) or float(n[0])
+    return n if away > 0 else -n
 
 
 def _on_wheel(p: np.ndarray, wheels: list[ShapeView]) -> bool:
     return any(np.linalg.norm(p - w.center) <= w.radius * (1 + 1e-6) for w in wheels)
 
 
-def _radii(cv: Canvas, body: BodyView, pts: list, wheels: list[ShapeView]) -> None:
+def _radii(ctx: Context, body: BodyView, pts: list, wheels: list[ShapeView]) -> None:
     """Lines from a wheel's centre to its marked points (a wheel's points are on its disc)."""
     for p in pts:
         w = min(wheels, key=lambda s: np.linalg.norm(p - s.center))
-        if np.linalg.norm(p - w.center) > 1e-9 * cv.size:
-            cv.add(Line2D(*np.array([w.center, p]).T, lw=2.0, color=body.colour, zorder=3,
-                          solid_capstyle="round"), body.name)
-            cv.board.avoid(w.center, p)
+        if np.linalg.norm(p - w.center) > 1e-9 * ctx.size:
+            ctx.add("line", [w.center, p], width=2.0, colour=body.colour, zorder=3, cap="round",
+                    moves_with=body.name)
+            ctx.avoid(w.center, p)
 
 
-def _moving_shape(cv: Canvas, body: BodyView, s: ShapeView) -> None:
-    gid = f"shape:{body.name}"
+def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
+    gid, name = f"shape:{body.name}", body.name
     if s.kind == "circle" and s.ring:
-        _ring_gear(cv, body, s)
+        _ring_gear(ctx, body, s)
     elif s.kind == "circle":
         gear = s.role == "gear"
-        cv.add(Circle(s.center, s.radius, fc=body.colour, alpha=0.18 if gear else 0.25, lw=0,
-                      zorder=1), body.name)
-        cv.add(Circle(s.center, s.radius, fill=False, ec=body.colour, lw=1.6 if gear else 2.2,
-                      ls="-." if gear else "-", zorder=3, gid=gid), body.name)
+        ctx.add("circle", [s.center], r=s.radius, colour="none", fill=body.colour,
+                alpha=0.18 if gear else 0.25, width=0, zorder=1, moves_with=name)
+        ctx.add("circle", [s.center], r=s.radius, colour=body.colour, width=1.6 if gear else 2.2,
+                dash=gear, zorder=3, gid=gid, moves_with=name)
         for d in (np.array([1.0, 0.0]), np.array([0.0, 1.0])):
-            spoke = np.array([s.center - 0.8 * s.radius * d, s.center + 0.8 * s.radius * d])
-            cv.add(Line2D(*spoke.T, lw=1.0, color=body.colour, alpha=0.8, zorder=3), body.name)
-        cv.board.avoid(*_ring(s.center, s.radius))
+            ctx.add("line", [s.center - 0.8 * s.radius * d, s.center + 0.8 * s.radius * d],
+                    width=1.0, colour=body.colour, alpha=0.8, zorder=3, moves_with=name)
+        ctx.avoid(*_ring(s.center, s.radius))
     elif s.kind == "line":
-        loop = belt_loop(cv, body, s)
+        loop = belt_loop(ctx, body, s)
         if loop is not None:
-            cv.add(Line2D(*np.array(loop).T, lw=2.6, color=body.colour, zorder=3.5, gid=gid), body.name)
-            cv.board.avoid(*loop)
+            ctx.add("line", loop, width=2.6, colour=body.colour, zorder=3.5, gid=gid, moves_with=name)
+            ctx.avoid(*loop)
             return
-        seg = _line_span(cv, body, s)
+        seg = _line_span(ctx, body, s)
         if seg is not None:
-            cv.add(Line2D(*np.array(seg).T, lw=2.2, color=body.colour, zorder=2, gid=gid), body.name)
-            cv.board.avoid(*seg)
+            ctx.add("line", seg, width=2.2, colour=body.colour, zorder=2, gid=gid, moves_with=name)
+            ctx.avoid(*seg)
     elif s.kind == "curve":
-        _moving_curve(cv, body, s, gid)
+        _moving_curve(ctx, body, s, gid)
     elif s.vertices is not None:
-        cv.add(Polygon(s.vertices, closed=True, fc=body.colour, ec=body.colour, alpha=0.3, lw=1.5,
-                       zorder=1, gid=gid), body.name)
-        cv.board.avoid(*s.vertices)
+        ctx.add("polygon", s.vertices, colour=body.colour, fill=body.colour, alpha=0.3, width=1.5,
+                zorder=1, gid=gid, moves_with=name)
+        ctx.avoid(*s.vertices)
 
 
-def _moving_curve(cv: Canvas, body: BodyView, s: ShapeView, gid: str) -> None:
+def _moving_curve(ctx: Context, body: BodyView, s: ShapeView, gid: str) -> None:
     """A body's curve: a cam's profile filled, its pitch curve dash-dot, a curve (a slot's
     path, a profile through points) as a line."""
     if s.role == "pitch":
-        cv.add(Line2D(*s.vertices.T, lw=1.0, ls="-.", color=body.colour, zorder=2), body.name)
+        ctx.add("line", s.vertices, width=1.0, dash=True, colour=body.colour, zorder=2,
+                moves_with=body.name)
         return
     if s.closed and s.role == "profile":
-        cv.add(Polygon(s.vertices, closed=True, fc=body.colour, alpha=0.2, lw=0, zorder=1), body.name)
-    cv.add(Line2D(*s.vertices.T, lw=2.2, color=body.colour, zorder=3, gid=gid), body.name)
-    cv.board.avoid(*s.vertices[::8])
-def belt_loop(cv: Canvas, body: BodyView, s: ShapeView):
+        ctx.add("polygon", s.vertices, colour="none", fill=body.colour, alpha=0.2, width=0,
+                zorder=1, moves_with=body.name)
+    ctx.add("line", s.vertices, width=2.2, colour=body.colour, zorder=3, gid=gid, moves_with=body.name)
+    ctx.avoid(*s.vertices[::8])
+
+
+def belt_loop(ctx: Context, body: BodyView, s: ShapeView) -> Optional[np.ndarray]:
     """A belt or chain: a line body rolling on two circles that lie on one side of it is the
     straight run of a loop wrapped round both (an open belt). The loop as a closed polyline:
     this run from contact to contact, the far side of the second circle, the other run (the
     first's mirror in the line of centres) and the far side of the first; None otherwise."""
     touching = []
-    for j in cv.scene.joints:
+    for j in ctx.scene.joints:
         if j.contact is None or body.name not in (j.a, j.b):
             continue
-        other = cv.scene.bodies.get(j.b if j.a == body.name else j.a)
+        other = ctx.scene.bodies.get(j.b if j.a == body.name else j.a)
         circles = [c for c in (other.shapes if other else []) if c.kind == "circle"]
         if not circles:
             return None
@@ -163,7 +187,7 @@ def belt_loop(cv: Canvas, body: BodyView, s: ShapeView):
     if float((c1.center - s.through) @ n) * float((c2.center - s.through) @ n) <= 0:
         return None                     # circles on both sides: a crossed strand, drawn straight
     axis = c2.center - c1.center
-    if np.linalg.norm(axis) <= 1e-9 * cv.size:
+    if np.linalg.norm(axis) <= 1e-9 * ctx.size:
         return None
     u = axis / np.linalg.norm(axis)
 
@@ -191,34 +215,34 @@ def _within(a0: float, sweep: float, angle: float) -> bool:
     return (angle - a0) % (2 * np.pi) <= sweep
 
 
-def _line_span(cv: Canvas, body: BodyView, s: ShapeView):
+def _line_span(ctx: Context, body: BodyView, s: ShapeView):
     """The part of a moving body's line worth drawing (a chain's run, a rack): over its
-    points and the contacts on it, a little beyond, inside the view."""
-    pts = list(body.points.values()) + [j.contact for j in cv.scene.joints
+    points and the contacts on it, a little beyond, inside the reach."""
+    pts = list(body.points.values()) + [j.contact for j in ctx.scene.joints
                                         if body.name in (j.a, j.b) and j.contact is not None]
     if not pts:
-        return clip_line(s.through, s.direction, cv.view)
+        return clip_line(s.through, s.direction, ctx.reach)
     ts = [float((p - s.through) @ s.direction) for p in pts]
-    margin = 0.1 * cv.size
+    margin = 0.1 * ctx.size
     return clip_segment(s.through + (min(ts) - margin) * s.direction,
-                        s.through + (max(ts) + margin) * s.direction, cv.view)
+                        s.through + (max(ts) + margin) * s.direction, ctx.reach)
 
 
-def _ring_gear(cv: Canvas, body: BodyView, s: ShapeView) -> None:
+def _ring_gear(ctx: Context, body: BodyView, s: ShapeView) -> None:
     """A ring (another circle rolls inside it): a band outside its circle, with ticks so
     that its turning shows."""
-    band = min(HATCH_BAND * 1.5 * cv.size, 0.3 * s.radius)
-    cv.add(Annulus(s.center, s.radius + band, band, fc=body.colour, alpha=0.45, lw=0, zorder=1),
-           body.name)
-    cv.add(Circle(s.center, s.radius, fill=False, ec=body.colour, lw=2.2,
-                  ls="-." if s.role == "gear" else "-", zorder=3, gid=f"shape:{body.name}"),
-           body.name)
+    band = min(HATCH_BAND * 1.5 * ctx.size, 0.3 * s.radius)
+    name = body.name
+    ctx.add("ring", [s.center], r=s.radius + band, band=band, colour="none", fill=body.colour,
+            alpha=0.45, width=0, zorder=1, moves_with=name)
+    ctx.add("circle", [s.center], r=s.radius, colour=body.colour, width=2.2, dash=s.role == "gear",
+            zorder=3, gid=f"shape:{name}", moves_with=name)
     for t in np.linspace(0, 2 * np.pi, 12, endpoint=False):
         d = np.array([np.cos(t), np.sin(t)])
-        tick = np.array([s.center + s.radius * d, s.center + (s.radius + band) * d])
-        cv.add(Line2D(*tick.T, lw=1.0, color=body.colour, zorder=2), body.name)
-    cv.board.avoid(*_ring(s.center, s.radius))
-    cv.board.avoid(*_ring(s.center, s.radius + band))
+        ctx.add("line", [s.center + s.radius * d, s.center + (s.radius + band) * d], width=1.0,
+                colour=body.colour, zorder=2, moves_with=name)
+    ctx.avoid(*_ring(s.center, s.radius))
+    ctx.avoid(*_ring(s.center, s.radius + band))
 
 
 def shape_anchor(s: ShapeView) -> np.ndarray:
@@ -227,55 +251,60 @@ def shape_anchor(s: ShapeView) -> np.ndarray:
     return s.center + (1.0 if s.ring else 0.6) * s.radius * d
 
 
-def _ground_shape(cv: Canvas, s: ShapeView) -> None:
-    band = HATCH_BAND * cv.size
+def _ground_shape(ctx: Context, s: ShapeView) -> None:
+    band = HATCH_BAND * ctx.size
     if s.kind == "line":
-        seg = clip_line(s.through, s.direction, cv.view.grow(-band))
+        seg = clip_line(s.through, s.direction, ctx.reach.grow(-band))
         if seg is None:
             return
         n = perpendicular(s.direction)
         towards = s.hatch_towards if s.hatch_towards is not None else \
-            s.through - cv.moving_centroid()
-        hatched_edge(cv, *seg, n if float(n @ towards) >= 0 else -n, "ground:line")
+            s.through - ctx.centroid()
+        hatched_edge(ctx, *seg, n if float(n @ towards) >= 0 else -n, "ground:line")
     elif s.kind == "circle":
         outer = s.radius if s.material_inside else s.radius + min(band, s.radius)
         width = min(band, 0.5 * s.radius)
-        cv.add(Circle(s.center, s.radius, fill=False, ec=GROUND, lw=1.8, zorder=2,
-                      gid="ground:circle"))
-        cv.add(Annulus(s.center, outer, width, fill=False, ec=GROUND, lw=0, hatch="////", zorder=1))
-        cv.board.avoid(*_ring(s.center, s.radius))
+        ctx.add("circle", [s.center], r=s.radius, colour=GROUND, width=1.8, zorder=2,
+                gid="ground:circle")
+        ctx.add("ring", [s.center], r=outer, band=width, colour=GROUND, width=0, hatch=True,
+                zorder=1)
+        ctx.avoid(*_ring(s.center, s.radius))
     elif s.kind == "curve":
-        cv.add(Line2D(*s.vertices.T, lw=1.8, color=GROUND, zorder=2, gid="ground:curve"))
-        cv.board.avoid(*s.vertices[::8])
+        ctx.add("line", s.vertices, width=1.8, colour=GROUND, zorder=2, gid="ground:curve")
+        ctx.avoid(*s.vertices[::8])
     elif s.vertices is not None:
-        cv.add(Polygon(s.vertices, closed=True, fc="#f0f0f0", ec="#9e9e9e", lw=1.0, zorder=0,
-                       gid="ground:plane"))
+        ctx.add("polygon", s.vertices, fill="#f0f0f0", colour="#9e9e9e", width=1.0, zorder=0,
+                gid="ground:plane")
 
 
-def hatched_edge(cv: Canvas, p: np.ndarray, q: np.ndarray, side: np.ndarray, gid: str) -> None:
+def hatched_edge(ctx: Context, p: np.ndarray, q: np.ndarray, side: np.ndarray, gid: str) -> None:
     """A fixed edge from p to q, hatched on `side` (where the frame's material is)."""
-    band = HATCH_BAND * cv.size
-    cv.add(Line2D(*np.array([p, q]).T, lw=1.8, color=GROUND, zorder=2, gid=gid))
-    cv.add(Polygon([p, q, q + band * side, p + band * side], closed=True, fill=False,
-                   ec=GROUND, lw=0, hatch="////", zorder=1))
-    cv.board.avoid(p, q)
-    cv.board.avoid(p + 0.5 * band * side, q + 0.5 * band * side, weight=0.7)
-    cv.board.avoid(p + band * side, q + band * side, weight=0.7)
+    band = HATCH_BAND * ctx.size
+    ctx.add("line", [p, q], width=1.8, colour=GROUND, zorder=2, gid=gid)
+    ctx.add("polygon", [p, q, q + band * side, p + band * side], colour=GROUND, width=0,
+            hatch=True, zorder=1)
+    ctx.avoid(p, q)
+    ctx.avoid(p + 0.5 * band * side, q + 0.5 * band * side, weight=0.7)
+    ctx.avoid(p + band * side, q + band * side, weight=0.7)
 
 
-def _points(cv: Canvas) -> None:
-    """A dot at every point, and its name once (points shared by bodies are one place)."""
+def _points(ctx: Context) -> None:
+    """A dot at every point, and its name once (points shared by bodies are one place): the
+    first dot of each name is the point's (`point:NAME`, what the page drags)."""
     named: set[str] = set()
-    for body in cv.scene.bodies.values():
+    for body in ctx.scene.bodies.values():
         for name, p in body.points.items():
             if name in body.passing:
                 continue
-            cv.add(Line2D([p[0]], [p[1]], marker="o", ms=3.2, color=INK, zorder=4),
-                   None if body.frame else body.name)
-            cv.board.avoid(p, weight=2.0, radius=2.0)
-            if name not in named:
+            mover = None if body.frame else body.name
+            first = name not in named
+            ctx.add("dot", [p], colour=INK, fill=INK, width=1.0, size=3.2, zorder=4,
+                    moves_with=mover, group=f"point:{name}" if first else "")
+            ctx.avoid(p, weight=2.0, radius=2.0)
+            if first:
                 named.add(name)
-                cv.label(p, plain(name), POINT_LABEL, 3, f"point:{name}", weight="bold")
+                ctx.label(p, plain(name), POINT_LABEL, 3, f"point:{name}", body=mover,
+                          group=f"point:{name}", weight="bold", radius=2.0)
 
 
 def _distinct(pts: list, tol: float) -> list:

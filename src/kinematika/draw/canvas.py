@@ -52,10 +52,6 @@ class Canvas:
             self.moving.setdefault(body, []).append(artist)
         return artist
 
-    def moving_centroid(self) -> Any:
-        """The centroid of the moving bodies' points (where "away from the mechanism" starts)."""
-        return moving_centroid(self.scene, self.view)
-
     def label(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
               prefer: Any = None, **kw: Any) -> None:
         """Put a label on the board at `anchor` (placed when the figure is finished, clear of
@@ -63,11 +59,3 @@ class Canvas:
         if self.labels:
             self.board.add(anchor, text, colour, priority, gid, prefer, **kw)
 
-
-def moving_centroid(scene: Scene, view: Box) -> Any:
-    """The centroid of the moving bodies' points (where "away from the mechanism" starts), or
-    the view's centre when nothing moves."""
-    import numpy as np
-
-    pts = [p for b in scene.bodies.values() if not b.frame for p in b.points.values()]
-    return np.mean(pts, axis=0) if pts else view.centre

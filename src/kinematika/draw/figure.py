@@ -19,21 +19,24 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
-from .bodies import paint_bodies
 from .lock import MATPLOTLIB
 from .canvas import Canvas
 from .dimensions import avoid_dimensions, paint_dimensions, reach
 from .geometry import Box
-from .joints import paint_joints
-from .marks import KENNEDY, NORMAL, mark_groups, paint_axes, paint_curvatures, paint_marks
+from .marks import KENNEDY, NORMAL, mark_groups
+from .paint import paint
+from .picture import picture
 from ..text import shown
 from .names import bare, coordinates, plain
 from .options import DrawOptions
 from .scene import Scene
 from .style import (ACCELERATION, CENTRE, CURVATURE, INK, LONGEST, SHORTEST, TITLE_SIZE, VELOCITY)
-from .vectors import Arrow, arrows, paint_vectors
+from .vectors import Arrow, arrows
 
 REACH = 2.0          # the frame is at most this many times the mechanism with its arrows
+BEYOND = 3.0         # drawing sizes a zoomable figure's infinite lines reach past its frame
+ZOOMABLE_REACH = 1.5  # REACH of a zoomable figure's first frame (a page's box of fixed shape)
+ZOOMABLE_MARGIN = 0.22  # its room for labels (placed without measuring the drawing: more room)
 CLIP_MARGIN = 0.06   # infinite lines and far marks stop this far (drawing sizes) inside the axes
 LABEL_MARGIN = 0.12  # room kept around the framed content for labels
 ASPECT = (0.5, 1.25)  # bounds of the axes' height/width
@@ -61,12 +64,8 @@ def _render(scene: Scene, options: DrawOptions) -> Figure:
                          len(notes), TRIAD if scene.dim == 3 else 0.0)
     view = _limits(ax).grow(-CLIP_MARGIN * scene.size)   # what the axes show, less a margin
     cv = Canvas(ax, scene, view, labels=options.labels, words=not options.bare, lang=options.lang)
-    paint_bodies(cv)
-    paint_joints(cv)
-    paint_curvatures(cv)
-    paint_axes(cv)
-    paint_marks(cv)
-    paint_vectors(cv, drawn)
+    paint(cv, picture(scene, view, drawn, labels=options.labels, words=not options.bare,
+                      lang=options.lang))
     if dimensions:
         paint_dimensions(ax, dimensions, scene.size, Box(*scene.box).centre)
         avoid_dimensions(cv.board, ax, dimensions, scene.size, Box(*scene.box).centre)
@@ -77,6 +76,25 @@ def _render(scene: Scene, options: DrawOptions) -> Figure:
         _title(fig, options.title or scene.name)
         _legend(fig, scene, drawn, notes)
     return fig
+
+
+def zoomable(scene: Scene, options: Optional[DrawOptions] = None,
+             frame: Optional[Box] = None) -> tuple[list, Box]:
+    """The picture of a figure that is zoomed and panned (the page's) showing `frame`, and
+    that frame; without one, the box it frames first, laid out as a still figure is (the
+    mechanism, its arrows and the results within `ZOOMABLE_REACH`, with room for labels).
+    Its infinite lines reach `BEYOND` drawing sizes past the frame."""
+    options = options or DrawOptions()
+    drawn = arrows(scene.vectors, scene.size, bars(scene))
+    if frame is None:
+        view = framed_box(scene, drawn, ZOOMABLE_REACH).grow(ZOOMABLE_MARGIN * scene.size)
+        frame = view.grow(CLIP_MARGIN * scene.size)
+    else:
+        view = frame.grow(-CLIP_MARGIN * scene.size) if min(frame.width, frame.height) > \
+            4 * CLIP_MARGIN * scene.size else frame
+    marks = picture(scene, view, drawn, labels=options.labels, lang=options.lang,
+                    reach=frame.grow(BEYOND * scene.size))
+    return marks, frame
 
 
 def bars(scene: Scene) -> list:
@@ -94,12 +112,12 @@ def bars(scene: Scene) -> list:
     return out
 
 
-def framed_box(scene: Scene, drawn: list[Arrow]) -> Box:
+def framed_box(scene: Scene, drawn: list[Arrow], reach: float = REACH) -> Box:
     """The mechanism and its arrows, and, nearest first, the results that fit while the
-    frame stays within `REACH` times the size of the mechanism with its arrows (a centre
+    frame stays within `reach` times the size of the mechanism with its arrows (a centre
     farther off is shown at the edge, so that it does not shrink the mechanism)."""
     box = Box(*scene.box).union([a.end for a in drawn] + [a.start for a in drawn])
-    limit = REACH * max(box.width, box.height, scene.size)
+    limit = reach * max(box.width, box.height, scene.size)
     extras = [[m.point] for m in scene.marks if m.point is not None]
     for c in scene.curvatures:
         extras += [list(c.circle), [c.centre]]

@@ -11,39 +11,38 @@ from __future__ import annotations
 from typing import Optional
 
 import numpy as np
-from matplotlib.lines import Line2D
-from matplotlib.patches import FancyArrowPatch
 
-from .canvas import Canvas
 from .geometry import clip_line, clip_polyline, clip_segment, edge_point, unit
+from .picture import Context
 from .scene import CurvatureView, MarkView
 from .names import coordinates
 from .style import ACCELERATION, CENTRE, CURVATURE, INK
 
-MARKERS = {"icr": dict(marker="o", ms=9, mfc="white", mec=CENTRE, mew=2.2),
-           "pole": dict(marker="D", ms=7, mfc="white", mec=ACCELERATION, mew=2.0),
-           "contact": dict(marker="X", ms=7, mfc=INK, mec="white", mew=0.8)}
+MARKERS = {"icr": dict(shape="o", size=9, fill="white", colour=CENTRE, width=2.2),
+           "pole": dict(shape="D", size=7, fill="white", colour=ACCELERATION, width=2.0),
+           "contact": dict(shape="X", size=7, fill=INK, colour="white", width=0.8)}
 COLOURS = {"icr": CENTRE, "pole": ACCELERATION, "contact": INK}
 KENNEDY = dict(lw=0.9, ls=(0, (6, 4)), color=CENTRE, alpha=0.65, zorder=1)
 NORMAL = dict(lw=1.1, ls=(0, (8, 3, 1.5, 3)), color=CENTRE, alpha=0.85, zorder=1)
+DOTTED = (1.0, 1.65)            # matplotlib's ":" in line widths
 
 
-def paint_marks(cv: Canvas) -> None:
+def draw_marks(ctx: Context) -> None:
     """Instant centres, acceleration poles and contacts (a far one at the view's edge pointing
     towards it, one at infinity as a double arrow along its direction), then the
     Aronhold–Kennedy lines and the wheels' and slots' normals."""
-    for group in mark_groups(cv.scene.marks, cv.size):
+    for group in mark_groups(ctx.scene.marks, ctx.size):
         mark = group[0]
         if mark.point is None:
-            _infinite_mark(cv, group)
-        elif cv.view.contains(mark.point):
-            _mark(cv, group)
+            _infinite_mark(ctx, group)
+        elif ctx.view.contains(mark.point):
+            _mark(ctx, group)
         else:
-            _far_mark(cv, group)
-    for line in cv.scene.kennedy:
-        _kennedy(cv, line)
-    for line in cv.scene.normals:
-        _kennedy(cv, line, NORMAL)
+            _far_mark(ctx, group)
+    for line in ctx.scene.kennedy:
+        _kennedy(ctx, line)
+    for line in ctx.scene.normals:
+        _kennedy(ctx, line, NORMAL)
 
 
 def mark_groups(marks: list[MarkView], size: float) -> list[list[MarkView]]:
@@ -80,97 +79,116 @@ def _key(group: list[MarkView]) -> str:
     return "+".join(m.key for m in group)
 
 
-def _mark(cv: Canvas, group: list[MarkView]) -> None:
+def _mark(ctx: Context, group: list[MarkView]) -> None:
     mark = group[0]
     p = mark.point
     for m in group:
-        cv.add(Line2D([p[0]], [p[1]], zorder=11, gid=f"{m.key}", **MARKERS[m.kind]))
+        ctx.add("dot", [p], zorder=11, gid=f"{m.key}", layer="centres", group=f"mark:{m.key}",
+                **MARKERS[m.kind])
     if mark.kind == "icr":
-        cv.add(Line2D([p[0]], [p[1]], marker="o", ms=2.5, color=CENTRE, zorder=12))
-    cv.board.avoid(p, weight=3.0, radius=5.0)
-    cv.label(p, group_label(group), COLOURS[mark.kind], 2, _key(group))
+        ctx.add("dot", [p], size=2.5, colour=CENTRE, fill=CENTRE, width=1.0, zorder=12,
+                layer="centres", group=f"mark:{mark.key}")
+    ctx.avoid(p, weight=3.0, radius=5.0)
+    ctx.label(p, group_label(group), COLOURS[mark.kind], 2, _key(group), layer="centres",
+              group=f"mark:{mark.key}", radius=5.5)
 
 
-def _far_mark(cv: Canvas, group: list[MarkView]) -> None:
+def _far_mark(ctx: Context, group: list[MarkView]) -> None:
     """A mark beyond the view: an arrow at the edge pointing at it, labelled with its
     coordinates."""
     mark = group[0]
-    q = edge_point(cv.view, mark.point, 0.02 * cv.size)
+    q = edge_point(ctx.view, mark.point, 0.02 * ctx.size)
     d = unit(mark.point - q)
-    tail = q - 0.07 * cv.size * d
-    cv.add(FancyArrowPatch(tuple(tail), tuple(q), arrowstyle="-|>", mutation_scale=14, lw=1.8,
-                           color=COLOURS[mark.kind], zorder=11, gid=f"{mark.key}:far"))
-    cv.board.avoid(tail, q, weight=3.0)
-    at = coordinates(mark.point, cv.size, cv.lang)
-    where = f"at {at}" if cv.words else f"= {at}"
-    cv.label(tail, f"{group_label(group)} {where}", COLOURS[mark.kind], 2, _key(group), -d)
+    tail = q - 0.07 * ctx.size * d
+    ctx.add("arrow", [tail, q], head="-|>", size=14, width=1.8, colour=COLOURS[mark.kind],
+            zorder=11, gid=f"{mark.key}:far", layer="centres", group=f"mark:{mark.key}")
+    ctx.avoid(tail, q, weight=3.0)
+    at = coordinates(mark.point, ctx.size, ctx.lang)
+    where = f"at {at}" if ctx.words else f"= {at}"
+    ctx.label(tail, f"{group_label(group)} {where}", COLOURS[mark.kind], 2, _key(group), -d,
+              layer="centres", group=f"mark:{mark.key}",
+              about={"name": group_label(group), "say": "far-off", "args": {"place": at}})
 
 
-def _infinite_mark(cv: Canvas, group: list[MarkView]) -> None:
+def _infinite_mark(ctx: Context, group: list[MarkView]) -> None:
     """A centre at infinity: a double arrow at the edge of the view along its direction (it
     lies at infinity both ways), labelled with the centre's name and ∞."""
     mark = group[0]
     d = unit(np.asarray(mark.direction, dtype=float))
-    inset = 0.06 * cv.size
-    q = edge_point(cv.view, cv.view.centre + 1e6 * cv.size * d, inset)
-    half = 0.06 * cv.size * d
-    cv.add(FancyArrowPatch(q - half, q + half, arrowstyle="<|-|>", mutation_scale=14, lw=1.8,
-                           color=COLOURS[mark.kind], zorder=11, gid=f"{_key(group)}:infinity"))
-    cv.board.avoid(q - half, q + half, weight=3.0)
-    cv.label(q, f"{group_label(group)} {'at ∞' if cv.words else '→ ∞'}", COLOURS[mark.kind], 2, _key(group),
-             np.array([-d[1], d[0]]))
+    inset = 0.06 * ctx.size
+    q = edge_point(ctx.view, ctx.view.centre + 1e6 * ctx.size * d, inset)
+    half = 0.06 * ctx.size * d
+    ctx.add("arrow", [q - half, q + half], head="<|-|>", size=14, width=1.8,
+            colour=COLOURS[mark.kind], zorder=11, gid=f"{_key(group)}:infinity", layer="centres",
+            group=f"mark:{mark.key}")
+    ctx.avoid(q - half, q + half, weight=3.0)
+    ctx.label(q, f"{group_label(group)} {'at ∞' if ctx.words else '→ ∞'}", COLOURS[mark.kind], 2,
+              _key(group), np.array([-d[1], d[0]]), layer="centres", group=f"mark:{mark.key}",
+              about={"name": group_label(group), "say": "at-infinity",
+                     "args": {"direction": coordinates(d, 1.0, ctx.lang)}})
 
 
-def _kennedy(cv: Canvas, line, style: Optional[dict] = None) -> None:
+def _kennedy(ctx: Context, line, style: Optional[dict] = None) -> None:
     """The part of the line covering its centres (and a little beyond; up to the edge
-    towards one that lies off the view), inside the view."""
+    towards one that lies off the view), inside the reach."""
     d = unit(np.asarray(line.direction, dtype=float))
     ts = [float((a - line.through) @ d) for a in line.anchors]
-    margin = 0.12 * cv.size
+    margin = 0.12 * ctx.size
     if ts:
         seg = clip_segment(line.through + (min(ts) - margin) * d,
-                           line.through + (max(ts) + margin) * d, cv.view)
+                           line.through + (max(ts) + margin) * d, ctx.reach)
     else:
-        seg = clip_line(line.through, d, cv.view)
+        seg = clip_line(line.through, d, ctx.reach)
     if seg is not None:
-        cv.add(Line2D(*np.array(seg).T, **(style or KENNEDY), gid=line.key))
+        st = style or KENNEDY
+        ctx.add("line", seg, width=st["lw"], dash=st["ls"][1], colour=st["color"], alpha=st["alpha"],
+                zorder=st["zorder"], gid=line.key, layer="centres",
+                group=f"{'normal' if style is NORMAL else 'kennedy'}:{line.key}")
 
 
-def paint_curvatures(cv: Canvas) -> None:
+def draw_curvatures(ctx: Context) -> None:
     """Each asked curvature: the osculating circle of the point's path, its centre and the
     radius."""
-    for c in cv.scene.curvatures:
-        _curvature(cv, c)
+    for c in ctx.scene.curvatures:
+        _curvature(ctx, c)
 
 
-def _curvature(cv: Canvas, c: CurvatureView) -> None:
-    circle = clip_polyline(c.circle, cv.view)
-    cv.add(Line2D(*circle.T, lw=1.3, color=CURVATURE, alpha=0.9, zorder=3,
-                  gid=f"curvature:{c.ref}"))
-    seg = clip_segment(c.point, c.centre, cv.view)
+def _curvature(ctx: Context, c: CurvatureView) -> None:
+    group = f"curvature:{c.ref}"
+    circle = clip_polyline(c.circle, ctx.reach)
+    ctx.add("line", circle, width=1.3, colour=CURVATURE, alpha=0.9, zorder=3,
+            gid=f"curvature:{c.ref}", layer="curvature", group=group)
+    seg = clip_segment(c.point, c.centre, ctx.reach)
     if seg is not None:
-        cv.add(Line2D(*np.array(seg).T, lw=0.9, ls=":", color=CURVATURE, zorder=3))
-    if cv.view.contains(c.centre):
-        cv.add(Line2D([c.centre[0]], [c.centre[1]], marker="P", ms=8, color=CURVATURE, mec="white",
-                      mew=0.6, zorder=10, gid=f"curvature-centre:{c.ref}"))
-        cv.board.avoid(c.centre, weight=3.0, radius=4.5)
-        cv.label(c.centre, c.label, CURVATURE, 2, f"curvature:{c.ref}")
+        ctx.add("line", seg, width=0.9, dash=DOTTED, colour=CURVATURE, zorder=3, layer="curvature",
+                group=group)
+    if ctx.view.contains(c.centre):
+        ctx.add("dot", [c.centre], shape="P", size=8, colour="white", fill=CURVATURE, width=0.6,
+                zorder=10, gid=f"curvature-centre:{c.ref}", layer="curvature", group=group)
+        ctx.avoid(c.centre, weight=3.0, radius=4.5)
+        ctx.label(c.centre, c.label, CURVATURE, 2, f"curvature:{c.ref}", layer="curvature",
+                  group=group, radius=4.5)
     else:
-        cv.label(c.point + 0.5 * (seg[1] - seg[0]) if seg is not None else c.point,
-                 f"{c.label}, centre {coordinates(c.centre, cv.size, cv.lang)}", CURVATURE, 2, f"curvature:{c.ref}")
+        seg = clip_segment(c.point, c.centre, ctx.view)
+        ctx.label(c.point + 0.5 * (seg[1] - seg[0]) if seg is not None else c.point,
+                  f"{c.label}, centre {coordinates(c.centre, ctx.size, ctx.lang)}", CURVATURE, 2,
+                  f"curvature:{c.ref}", layer="curvature", group=group)
 
 
-def paint_axes(cv: Canvas) -> None:
+def draw_axes(ctx: Context) -> None:
     """3D screw axes, dash-dot across the view."""
-    for a in cv.scene.axes:
+    for a in ctx.scene.axes:
         d = a.direction
+        group = f"axis:{a.key}"
         if np.linalg.norm(d) < 1e-9:      # seen end-on: a point
-            cv.add(Line2D([a.point[0]], [a.point[1]], marker="o", ms=8, mfc="none", mec=CENTRE,
-                          zorder=10, gid=a.key))
-            cv.label(a.point, a.label, CENTRE, 2, a.key)
+            ctx.add("dot", [a.point], size=8, fill="none", colour=CENTRE, width=1.0, zorder=10,
+                    gid=a.key, layer="centres", group=group)
+            ctx.label(a.point, a.label, CENTRE, 2, a.key, layer="centres", group=group)
             continue
-        seg = clip_line(a.point, unit(d), cv.view)
+        seg = clip_line(a.point, unit(d), ctx.reach)
         if seg is not None:
-            cv.add(Line2D(*np.array(seg).T, lw=1.4, ls="-.", color=CENTRE, zorder=3, gid=a.key))
-            mid = (seg[0] + seg[1]) / 2
-            cv.label(mid, a.label, CENTRE, 2, a.key)
+            ctx.add("line", seg, width=1.4, dash=True, colour=CENTRE, zorder=3, gid=a.key,
+                    layer="centres", group=group)
+            shown = clip_line(a.point, unit(d), ctx.view) or seg
+            ctx.label((shown[0] + shown[1]) / 2, a.label, CENTRE, 2, a.key, layer="centres",
+                      group=group)

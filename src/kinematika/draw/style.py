@@ -14,6 +14,7 @@ CURVATURE = "#2e7d32"
 GROUND = "#424242"
 INK = "#212121"
 POINT_LABEL = "#37474f"
+PATH = "#6d4c41"             # a point's path over a motion (a coupler curve)
 DIMENSION = "#455a64"        # a statement's dimension marks (lengths, angles)
 BODY_COLOURS = ("#78909c", "#c49a3a", "#8d6e63", "#5f8a8b", "#b0855c", "#9e9d24",
                 "#a1887f", "#607d8b", "#d08c60", "#7e6b8f")

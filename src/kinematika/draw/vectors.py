@@ -12,11 +12,9 @@ from dataclasses import dataclass
 from typing import Optional
 
 import numpy as np
-from matplotlib.patches import FancyArrowPatch
-from matplotlib.transforms import offset_copy
 
-from .canvas import Canvas
-from .geometry import perpendicular, unit
+from .geometry import unit
+from .picture import Context
 from .scene import VectorView
 from .names import equation
 from .style import KIND_COLOURS, LONGEST, SHORTEST
@@ -125,34 +123,35 @@ def side_shifts(drawn: list[Arrow], size: float) -> list[float]:
     return shifts
 
 
-def arrow_patch(arrow: Arrow, gid: str) -> FancyArrowPatch:
-    """The matplotlib arrow of `arrow` in its kind's colour (velocities above accelerations)."""
-    colour = KIND_COLOURS[arrow.view.kind]
-    return FancyArrowPatch(tuple(arrow.start), tuple(arrow.end), arrowstyle="-|>",
-                           mutation_scale=15, lw=2.2, color=colour, shrinkA=0, shrinkB=0,
-                           zorder=10 if arrow.view.kind == "velocity" else 9, gid=gid)
+def arrow_mark(arrow: Arrow, gid: str, shift: float = 0.0) -> dict:
+    """The arrow of `arrow` as a mark's fields, in its kind's colour (velocities above
+    accelerations), set `shift` points sideways."""
+    return dict(head="-|>", size=15, width=2.2, colour=KIND_COLOURS[arrow.view.kind],
+                zorder=10 if arrow.view.kind == "velocity" else 9, gid=gid, shift=shift)
 
 
-def paint_vectors(cv: Canvas, drawn: list[Arrow]) -> None:
-    """Draw the arrows and label each at its tip (`v_B = …`, "enlarged" when it is); arrows from
+def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
+    """The arrows, each labelled at its tip (`v_B = …`, "enlarged" when it is); arrows from
     one point in nearly one direction are set side by side, and a zero vector gets its label at
-    the point."""
-    shifts = side_shifts(drawn, cv.size)
+    the point. The page moves an absolute vector's arrow over the sweep (`about`: the swept
+    point, the symbol, whether it is drawn ending at its point)."""
+    shifts = side_shifts(drawn, ctx.size)
     for arrow, shift in zip(drawn, shifts):
         v = arrow.view
         colour = KIND_COLOURS[v.kind]
-        text = equation(v.label, "0" if arrow.zero else v.text)
-        if arrow.enlarged and cv.words:
-            text += " (enlarged)"
+        name = equation(v.label, "0" if arrow.zero else v.text)
+        said = {"name": name, "say": "enlarged", "args": {}} if arrow.enlarged else None
+        text = name + (" (enlarged)" if arrow.enlarged and ctx.words else "")
+        group, layer = f"vector:{v.key}", v.kind
+        about = {"ref": v.ref, "kind": v.kind, "relative_to": v.relative_to, "symbol": v.label,
+                 "at_point": arrow.tip_at_point, "origin": v.origin, "value": v.value,
+                 "magnitude": v.magnitude}
+        ctx.add("arrow", [arrow.start, arrow.end], layer=layer, group=group, about=about,
+                **arrow_mark(arrow, v.key, shift))          # of no length: none drawn
         if arrow.drawn:
-            patch = arrow_patch(arrow, v.key)
-            if shift:
-                n = perpendicular(unit(arrow.end - arrow.start)) * shift
-                patch.set_transform(offset_copy(cv.ax.transData, fig=cv.ax.figure, x=n[0],
-                                                y=n[1], units="points"))
-            cv.ax.add_patch(patch)
-            cv.board.avoid(arrow.start, arrow.end, weight=3.0)
-            tail = arrow.start if arrow.tip_at_point else arrow.end      # the label at the free end
-            cv.label(tail, text, colour, 1, v.key, arrow.end - arrow.start)
+            ctx.avoid(arrow.start, arrow.end, weight=3.0)
+            free, away = (arrow.start, arrow.start - arrow.end) if arrow.tip_at_point else \
+                (arrow.end, arrow.end - arrow.start)                # the label beyond the free end
+            ctx.label(free, text, colour, 1, v.key, away, layer=layer, group=group, about=said)
         else:
-            cv.label(arrow.start, text, colour, 1, v.key)
+            ctx.label(arrow.start, text, colour, 1, v.key, layer=layer, group=group, about=said)

@@ -1,7 +1,8 @@
-"""How joints are drawn: each kind's `symbol` gives marks — polygons, lines and dots in the
-model's (page) coordinates, with their colours by role — that every figure paints as they
-are: matplotlib (`draw.joints`) and the page (`web/static/js/figure.js`) alike, so that no
-view redraws a joint symbol of its own.
+"""How joints are drawn, and the `Mark`, the primitive every figure is made of: each kind's
+`symbol` gives marks — polygons, lines and dots in the model's (page) coordinates, with
+their colours by role — which `draw.picture` puts in the figure beside the bodies' and the
+results' marks, and every painter paints as they are: matplotlib (`draw.paint`) and the page
+(`web/static/js/figure.js`) alike, so that no view redraws a joint symbol of its own.
 
 A symbol is fixed in the body it belongs to, so that an animation moves it with that body:
 a slider's block with the slider, its guide with the guiding body; a pin with the moving
@@ -12,8 +13,8 @@ The context a symbol is drawn in (duck-typed, given by the figure): `size` (the 
 size), `frame` (the fixed body), `still` (a still figure, not an animation's frame),
 `centroid()` (of the moving bodies' points: "away from the mechanism"), `points(body)`
 (its points on the page), `clip(p, d, inset)` (the part of the line through p along d inside
-the view, less `inset`, or None), `keep_out()` (closed outlines that fixed guides stop short
-of: the moving bodies' wheels and cams).
+the figure's reach, less `inset`, or None), `keep_out()` (closed outlines that fixed guides
+stop short of: the moving bodies' wheels and cams) — `draw.picture.Context`.
 """
 from __future__ import annotations
 
@@ -34,32 +35,60 @@ HATCH_BAND = 0.03
 
 @dataclass
 class Mark:
-    """One drawn primitive of a symbol, in page coordinates.
+    """One drawn primitive, in page coordinates: every figure is a list of them (a joint's
+    symbol, and the whole figure `draw.picture` builds), painted as they are by matplotlib
+    (`draw.paint`) and by the page (`web/static/js/figure.js`).
 
-    `colour` and `fill` are roles: "ink", "ground", "white", "none", or "body:NAME" (that
-    body's colour). `avoid` is how strongly labels keep off it (0: not at all), `radius`
-    how far around its points (points of the page)."""
+    `kind`: "polygon" (closed, filled and/or outlined; `hatch`: the frame's hatching),
+    "line" (a polyline), "dot" (a marker of `size` points at `points[0]`, its `shape` "o",
+    "D", "X" or "P"), "circle" (centre `points[0]`, radius `r` in model units), "ring" (the
+    band between radii `r - band` and `r`), "arrow" (from `points[0]` to `points[1]`, its
+    `head` "-|>" or "<|-|>" of `size` points, set `shift` points sideways), "text" (`text` at
+    `points[0]`, placed by the painter near it, towards `prefer` when given, clear of the
+    others in order of `priority`; `side` is a good side for a painter that places labels
+    without weighing what is drawn, such as the page's) and "clear" (nothing painted: a polyline that labels keep
+    off).
 
-    kind: str                           # "polygon", "line" or "dot"
+    `colour` (the stroke) and `fill` are colours or, in a joint's symbol, roles: "ink",
+    "ground", "white", "none", or "body:NAME" (that body's colour), which `draw.picture`
+    turns into colours. Widths and sizes are in points; `dash` is True (dash-dot, an axis) or
+    the lengths of dashes and gaps in line widths. `avoid` is how strongly labels keep off it
+    (0: not at all), `radius` how far around its points (points of the page). `moves_with`
+    is the body that carries it (an animation and the page move it with that body); `group`
+    ("ROLE:KEY") gathers the marks of one thing drawn (an instant centre's marker and label)
+    and `about` holds what the page needs to move it (a live arrow's swept point)."""
+
+    kind: str                           # see above
     points: Vec                         # (n, 2)
     colour: str = "ink"
     fill: str = "none"
     width: float = 1.3                  # line width, points
-    size: float = 0.0                   # a dot's diameter, points
+    size: float = 0.0                   # a dot's diameter, an arrow head's, a text's font, points
     hatch: bool = False                 # the frame's hatching
-    dash: bool = False                  # dash-dot (an axis)
-    zorder: int = 3
+    dash: Any = False                   # True: dash-dot (an axis); or dash lengths in line widths
+    zorder: float = 3
     moves_with: Optional[str] = None    # the body that carries it (None: fixed)
     gid: str = ""
     avoid: float = 1.0
     radius: float = 0.0
     still: bool = False                 # true of a still figure only (not moved with any body)
-
-    def as_json(self) -> dict:
-        """The mark as the page receives it."""
-        return {"kind": self.kind, "points": self.points.tolist(), "colour": self.colour, "fill": self.fill,
-                "width": self.width, "size": self.size, "hatch": self.hatch, "dash": self.dash,
-                "zorder": self.zorder, "body": self.moves_with, "id": self.gid, "still": self.still}
+    alpha: float = 1.0                  # opacity of the stroke and the fill
+    r: float = 0.0                      # a circle's or a ring's radius, model units
+    band: float = 0.0                   # a ring's width, model units
+    cap: str = ""                       # line ends: "round", "butt" or "" (projecting)
+    join: str = ""                      # corners: "round" or "" (miter)
+    shape: str = "o"                    # a dot's marker
+    head: str = ""                      # an arrow's heads
+    shift: float = 0.0                  # an arrow's sideways shift, points
+    text: str = ""                      # a text's words (matplotlib mathtext)
+    prefer: Optional[Vec] = None        # a text's preferred direction from its anchor
+    side: Optional[Vec] = None          # where it goes for a painter that does not weigh the drawing
+    priority: int = 0                   # a text's order of placing (lower first)
+    weight: str = "normal"              # a text's font
+    style: str = "normal"
+    layer: str = ""                     # results the page switches: velocity, acceleration, centres, curvature
+    group: str = ""                     # ROLE:KEY of the thing it belongs to
+    about: Optional[dict] = None        # what the page needs to move it (a live arrow)
 
 
 # shapes of symbols -------------------------------------------------------------------------

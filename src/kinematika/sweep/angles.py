@@ -13,21 +13,62 @@ from typing import Any, Optional
 import numpy as np
 
 
+@dataclass
+class ReferenceLine:
+    """A body's line as a textbook measures its angle θ: from point `start` to point `end`,
+    `grounded` when `start` is its fixed pivot."""
+
+    start: str
+    end: str
+    grounded: bool
+
+    def angle(self, xy: dict[str, Any]) -> float:
+        """Its angle from the x axis, counter-clockwise, degrees in (−180°, 180°], with the
+        points at `xy` (name -> page position)."""
+        d = np.asarray(xy[self.end], dtype=float) - np.asarray(xy[self.start], dtype=float)
+        return float(np.degrees(np.arctan2(d[1], d[0])))
+
+
+def reference_line(points: dict[str, Any], frame: dict[str, Any]) -> Optional[ReferenceLine]:
+    """A body's reference line (its points `points`, name -> position, in the body's order;
+    the frame's `frame`): from its fixed pivot — its first point the frame carries at the same
+    place — else its first point, to its first other point drawn elsewhere; None for a body
+    with one place. The one rule of the sweep's angles (`body_angle`), the figure's scene and
+    the page's table and plot."""
+    xy = {name: np.asarray(p, dtype=float)[:2] for name, p in points.items()}
+    if len(xy) < 2 or any(len(np.asarray(p)) != 2 for p in points.values()):
+        return None
+    first = next(iter(xy.values()))
+    scale = max(float(np.linalg.norm(p - first)) for p in xy.values()) or 1.0
+    pinned = [name for name, p in xy.items() if name in frame and
+              np.linalg.norm(np.asarray(frame[name], dtype=float)[:2] - p) <= 1e-9 * scale]
+    start = pinned[0] if pinned else next(iter(xy))
+    end = next((name for name, p in xy.items() if np.linalg.norm(p - xy[start]) > 1e-9 * scale), None)
+    return None if end is None else ReferenceLine(start, end, bool(pinned))
+
+
 def body_angle(result: Any, body: str) -> Optional[np.ndarray]:
-    """The absolute angle (degrees, continuous) of the body's line: from its fixed pivot (or
-    its first point) to its next point elsewhere; None for a body with one point (planar)."""
-    keys = [k for k in result.points if k.partition("@")[2] == body]
-    pos = {k: np.asarray(result.points[k]["position"], dtype=float)[:, :2] for k in keys}
-    if not pos or getattr(result, "dimension", 2) != 2:
+    """The absolute angle (degrees, continuous) of the body's line (`reference_line`, at the
+    first assembled row, the frame's points where the rows give them, else the body's points
+    that stay put) over the rows; None for a body with one point (planar)."""
+    if getattr(result, "dimension", 2) != 2:
         return None
-    scale = max(float(np.nanmax(np.abs(p))) for p in pos.values()) or 1.0
-    fixed = [k for k, p in pos.items() if np.nanmax(np.abs(p - p[0]), initial=0.0) <= 1e-9 * scale]
-    origin = fixed[0] if fixed else keys[0]
-    other = next((k for k in keys if np.linalg.norm(pos[k][0] - pos[origin][0]) > 1e-9 * scale),
-                 None)
-    if other is None:
+    frame = getattr(result, "frame", "ground")
+    pos = {k.partition("@")[0]: np.asarray(v["position"], dtype=float)[:, :2]
+           for k, v in result.points.items() if k.partition("@")[2] == body}
+    fixed = {k.partition("@")[0]: np.asarray(v["position"], dtype=float)[:, :2]
+             for k, v in result.points.items() if k.partition("@")[2] == frame}
+    if not pos:
         return None
-    d = pos[other] - pos[origin]
+    if not fixed:                 # rows without the frame's points: where it carries them is
+        scale = max(float(np.nanmax(np.abs(p))) for p in pos.values()) or 1.0    # where they stay
+        fixed = {n: p for n, p in pos.items() if np.nanmax(np.abs(p - p[0]), initial=0.0) <= 1e-9 * scale}
+    ok = np.flatnonzero(np.all(np.isfinite(np.hstack(list(pos.values()))), axis=1))
+    row = int(ok[0]) if len(ok) else 0
+    line = reference_line({n: p[row] for n, p in pos.items()}, {n: p[row] for n, p in fixed.items()})
+    if line is None:
+        return None
+    d = pos[line.end] - pos[line.start]
     return unwrap_degrees(np.arctan2(d[:, 1], d[:, 0]))
 
 

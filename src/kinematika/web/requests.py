@@ -28,7 +28,7 @@ EXTRA = {
     "simulate": ("time", "steps", "method", "as"),
     "explain": ("symbolic", "length_unit", "row"),
     "draw": ("row", "as", "velocities", "accelerations", "centres", "curvature", "labels", "points",
-             "view", "width"),
+             "view", "width", "frame"),
     "edit": ("point", "to"),
     "assemblies": (),
     "exercise": ("vary", "seed", "variant", "answers", "reveal"),     # web.exercise_api
@@ -115,6 +115,11 @@ def _options(endpoint: str, body: dict) -> dict[str, Any]:
         if width is not None and not 1 <= width <= 100:
             raise KinematikaError("usage", "request-width", "width")
         out["width"] = width or 8.0
+        frame = body.get("frame")
+        if frame is not None and not (isinstance(frame, list) and len(frame) == 4 and all(_finite(x) for x in frame)
+                                      and frame[0] < frame[2] and frame[1] < frame[3]):
+            raise KinematikaError("usage", "request-frame", "frame")
+        out["frame"] = None if frame is None else [float(x) for x in frame]
     elif endpoint == "exercise":
         from .exercise_api import exercise_options
 

@@ -1,11 +1,13 @@
 """A drawing's `Scene` as JSON data, for the page to paint as SVG.
 
-Everything is in page coordinates of the model (floats; y up), as `draw` paints it: the
-bodies with their points and shapes, the joints, the arrows, the instant centres with
-their Aronhold–Kennedy lines, the curvature circles, the notes; and the figure's style
-(colours, symbol sizes as fractions of the drawing size), so that the page looks like the
-figures. Labels, written for matplotlib's mathtext (`$v_{\\mathrm{B}}$`), become runs of
-plain text and subscripts.
+Everything is in page coordinates of the model (floats; y up). What the page paints is the
+`picture`: the figure's marks as `draw.picture` makes them for `draw` (outlines, hatches,
+symbols, dots, arrows, texts, with their colours, widths, layers and the bodies they move
+with) and the box it frames first. Beside it, what the figure shows as data (the bodies
+with their points, shapes and reference lines, the joints, the arrows, the instant centres
+with their Aronhold–Kennedy lines, the curvature circles, the notes), which the page's
+legend, table and plot read. Labels, written for matplotlib's mathtext
+(`$v_{\\mathrm{B}}$`), become runs of plain text and subscripts.
 """
 from __future__ import annotations
 
@@ -17,14 +19,17 @@ from typing import Any, Optional
 import numpy as np
 
 from ..draw import style
-from ..draw.scene import Scene, numbering, numbering_note
-from ..joints.symbols import HATCH_BAND
+from ..draw.scene import BodyView, Scene, numbering, numbering_note
+from ..joints.symbols import HATCH_BAND, Mark
+from ..sweep.angles import reference_line
 
 
-
-def scene_data(scene: Scene, twin: Optional[Scene] = None) -> dict[str, Any]:
-    """The scene as plain data (lists of floats, texts, runs for labels); for a 3D model
-    with its depth `twin` (`depth_twin`), also the model coordinates of what is drawn."""
+def scene_data(scene: Scene, twin: Optional[Scene] = None, options: Any = None,
+               frame: Optional[list] = None) -> dict[str, Any]:
+    """The scene as plain data (lists of floats, texts, runs for labels) with its `picture`
+    drawn with `options` for the box `frame` (x0, y0, x1, y1; by default the one it lays out);
+    for a 3D model with its depth `twin` (`depth_twin`), also the model coordinates of what
+    is drawn."""
     data = {
         "name": scene.name, "dimension": scene.dim, "size": scene.size, "box": list(scene.box),
         "view": scene.projection.view,
@@ -32,10 +37,11 @@ def scene_data(scene: Scene, twin: Optional[Scene] = None) -> dict[str, Any]:
                           "points": {p: _floats(xy) for p, xy in b.points.items()},
                           "shapes": [_plain(s) for s in b.shapes],
                           "skeleton": [_floats(line) for line in getattr(b, "skeleton", [])],
-                          "passing": list(getattr(b, "passing", []))}
+                          "passing": list(getattr(b, "passing", [])),
+                          "reference": _reference(scene, b)}
                    for name, b in scene.bodies.items()},
         "joints": [_plain(j) for j in scene.joints],
-        "symbols": joint_symbols(scene),
+        "picture": picture_data(scene, options, twin, frame),
         "vectors": [{**_plain(v), "key": v.key, "label": runs(v.label)} for v in scene.vectors],
         "marks": [{**_plain(m), "label": runs(m.label)} for m in scene.marks],
         "kennedy": [_plain(k) for k in scene.kennedy],
@@ -53,14 +59,112 @@ def scene_data(scene: Scene, twin: Optional[Scene] = None) -> dict[str, Any]:
     return data
 
 
-def joint_symbols(scene: Scene) -> list[dict[str, Any]]:
-    """Every joint's symbol as the marks its kind draws (`joints.symbols`), for a view a
-    little larger than the mechanism: the page paints them as matplotlib does."""
-    from ..draw.geometry import Box
-    from ..draw.joints import scene_symbols
+def _reference(scene: Scene, body: BodyView) -> Optional[dict[str, Any]]:
+    """A planar moving body's reference line (`sweep.angles.reference_line`: the one its angle
+    θ is measured along in the table, the plot and the command line's sweep) and its angle at
+    the drawn position; None for the frame, a body with one place, or a 3D model."""
+    if body.frame or scene.dim != 2:
+        return None
+    line = reference_line(body.points, scene.frame.points)
+    if line is None:
+        return None
+    return {"from": line.start, "to": line.end, "grounded": line.grounded,
+            "angle": line.angle(body.points)}
 
-    view = Box(*scene.box).grow(0.6 * scene.size)
-    return [m.as_json() for m in scene_symbols(scene, view)]
+
+DASH_DOT = [6.4, 1.6, 1.0, 1.6]      # matplotlib's dash-dot, in line widths
+
+
+def picture_data(scene: Scene, options: Any = None, twin: Optional[Scene] = None,
+                 shown: Optional[list] = None) -> dict[str, Any]:
+    """The figure's marks as the page paints them (`draw.figure.zoomable`: laid out as a
+    still figure, its infinite lines reaching past the frame) for the box `shown`, else the
+    box it frames first, and that box; in a 3D scene, each moving mark's points also in space
+    (`xyz`), which the page turns with the sweep's rotations."""
+    from ..draw.figure import zoomable
+    from ..draw.geometry import Box
+
+    marks, frame = zoomable(scene, options, None if shown is None else Box(*shown))
+    lift = _lifter(scene, twin) if twin is not None else None
+    return {"marks": [mark_data(m, lift) for m in marks if m.kind != "clear"],
+            "frame": [frame.xmin, frame.ymin, frame.xmax, frame.ymax]}
+
+
+def mark_data(m: Mark, lift: Any = None) -> dict[str, Any]:
+    """One mark as the page receives it: what every mark has, and the fields of its kind
+    (a text's words as runs, a dash-dot as its dash lengths)."""
+    out: dict[str, Any] = {"kind": m.kind, "points": _floats(m.points), "colour": m.colour,
+                           "fill": m.fill, "width": m.width, "zorder": m.zorder, "body": m.moves_with}
+    extra = {"size": m.size, "alpha": m.alpha if m.alpha != 1.0 else None, "hatch": m.hatch or None,
+             "dash": DASH_DOT if m.dash is True else (list(m.dash) if m.dash else None),
+             "r": m.r or None, "band": m.band or None, "cap": m.cap or None, "join": m.join or None,
+             "shape": m.shape if m.kind == "dot" else None, "head": m.head or None,
+             "shift": m.shift or None, "id": m.gid or None, "group": m.group or None,
+             "layer": m.layer or None, "still": m.still or None}
+    if m.kind == "text":
+        extra.update(text=runs(m.text), priority=m.priority, weight=m.weight, style=m.style,
+                     prefer=None if m.prefer is None else _floats(m.prefer),
+                     side=None if m.side is None else _floats(m.side), radius=m.radius)
+    if m.about:
+        extra["about"] = {k: runs(v) if k in ("symbol", "name") else _value(v) for k, v in m.about.items()}
+    if lift is not None and m.moves_with is not None:
+        extra["xyz"] = lift(m)
+    out.update({k: v for k, v in extra.items() if v is not None})
+    return out
+
+
+def _lifter(scene: Scene, twin: Scene) -> Any:
+    """For a 3D scene and its depth twin: a mark's points in space, when each is a point, a
+    skeleton's vertex, a shape's vertex or centre, or a joint's place of the body it moves
+    with (else None); a label's anchor at the depth of those nearest to it."""
+    P = scene.projection.matrix
+    towards = np.cross(P[0], P[1])
+    tol = 1e-7 * scene.size
+    known: dict[tuple, list] = {}
+    depths: dict[Optional[str], list] = {}
+
+    def note(body: Optional[str], page: Any, deep: Any) -> None:
+        for q, d in zip(np.asarray(page, dtype=float).reshape(-1, 2), np.asarray(deep, dtype=float).reshape(-1, 2)):
+            if np.all(np.isfinite(q)) and np.all(np.isfinite(d)):
+                known[(body, *np.round(q / tol).astype(int))] = space(q, d[0])
+                depths.setdefault(body, []).append((q, d[0]))
+
+    def space(q: np.ndarray, depth: float) -> list:
+        return _floats(q[0] * P[0] + q[1] * P[1] + depth * towards)
+
+    for name, b in scene.bodies.items():
+        t = twin.bodies[name]
+        for p, xy in b.points.items():
+            note(name, xy, t.points[p])
+        for line, deep in zip(b.skeleton, t.skeleton):
+            note(name, line, deep)
+        for shape, deep in zip(b.shapes, t.shapes):
+            if shape.vertices is not None and deep.vertices is not None:
+                note(name, shape.vertices, deep.vertices)
+            if shape.center is not None and deep.center is not None:
+                note(name, shape.center, deep.center)
+    for joint, deep in zip(scene.joints, twin.joints):
+        if joint.at is not None and deep.at is not None:
+            for body in (joint.a, joint.b):
+                note(body, joint.at, deep.at)
+
+    def between(body: Optional[str], q: np.ndarray) -> Optional[list]:
+        """`q` at the depth of the body's known places, weighted by nearness (a bar's middle
+        at the mean of its ends')."""
+        known_here = depths.get(body, [])
+        if not known_here:
+            return None
+        w = np.array([1 / max(float(np.linalg.norm(p - q)), tol) ** 2 for p, _ in known_here])
+        return space(q, float(w @ np.array([d for _, d in known_here]) / w.sum()))
+
+    def lift(m: Mark) -> Optional[list]:
+        pts = np.asarray(m.points, dtype=float)
+        out = [known.get((m.moves_with, *np.round(q / tol).astype(int))) if np.all(np.isfinite(q)) else None
+               for q in pts]
+        if m.kind == "text" and out[0] is None:
+            out = [between(m.moves_with, pts[0])]
+        return out if all(x is not None for x in out) else None
+    return lift
 
 
 def depth_twin(scene: Scene, sol: Any, options: Any) -> Scene:
@@ -104,7 +208,7 @@ def _add_model_coordinates(data: dict, scene: Scene, twin: Scene) -> None:
 
 STYLE = {"velocity": style.VELOCITY, "acceleration": style.ACCELERATION, "centre": style.CENTRE,
          "curvature": style.CURVATURE, "ground": style.GROUND, "ink": style.INK,
-         "point_label": style.POINT_LABEL, "longest": style.LONGEST, "shortest": style.SHORTEST,
+         "point_label": style.POINT_LABEL, "path": style.PATH, "longest": style.LONGEST, "shortest": style.SHORTEST,
          "hatch_band": HATCH_BAND}
 
 

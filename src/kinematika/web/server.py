@@ -370,7 +370,8 @@ def _drawn(req: Request) -> tuple[str, Any]:
 
         sol, scene = commands.solved_scene(model, options)
         twin = depth_twin(scene, sol, options) if scene.dim == 3 else None
-        return JSON, commands.json_text({**scene_data(scene, twin), "input": _input(model)})
+        return JSON, commands.json_text({**scene_data(scene, twin, options, req.get("frame")),
+                                          "input": _input(model)})
     scene = commands.draw_scene(model, options)
     from ..draw.figure import render, svg_text
 

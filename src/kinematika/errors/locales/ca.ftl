@@ -690,6 +690,7 @@ request-unknown-key = clau desconeguda '{ $key }' per a /api/{ $endpoint } (adme
 request-model = 'model' és obligatori: el text del fitxer del model
 request-points = 'points' és una llista de noms de punts
 request-width = 'width' és l’amplada de la figura en polzades, d’1 a 100
+request-frame = 'frame' és la capsa que mostra la figura, [x0, y0, x1, y1] amb x0 < x1 i y0 < y1
 request-op = 'op' és l’acció: un objecte amb la seva clau 'op'
 request-to = 'to' és la nova posició del punt [x, y]
 request-point = 'point' anomena el punt per moure

@@ -615,6 +615,7 @@ request-unknown-key = unknown key '{ $key }' for /api/{ $endpoint } (accepted: {
 request-model = 'model' is required: the model file's text
 request-points = 'points' is a list of point names
 request-width = 'width' is a figure width in inches, 1 to 100
+request-frame = 'frame' is the box the figure shows, [x0, y0, x1, y1] with x0 < x1 and y0 < y1
 request-op = 'op' is the action: an object with its key 'op'
 request-to = 'to' is the point's new place [x, y]
 request-point = 'point' names the point to move

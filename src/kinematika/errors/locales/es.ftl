@@ -690,6 +690,7 @@ request-unknown-key = clave desconocida '{ $key }' para /api/{ $endpoint } (admi
 request-model = 'model' es obligatorio: el texto del archivo del modelo
 request-points = 'points' es una lista de nombres de puntos
 request-width = 'width' es el ancho de la figura en pulgadas, de 1 a 100
+request-frame = 'frame' es la caja que muestra la figura, [x0, y0, x1, y1] con x0 < x1 e y0 < y1
 request-op = 'op' es la acción: un objeto con su clave 'op'
 request-to = 'to' es la nueva posición del punto [x, y]
 request-point = 'point' nombra el punto que mover

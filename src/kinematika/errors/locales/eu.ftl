@@ -690,6 +690,7 @@ request-unknown-key = gako ezezaguna '{ $key }' /api/{ $endpoint } helbiderako (
 request-model = 'model' derrigorrezkoa da: eredu-fitxategiaren testua
 request-points = 'points' puntu-izenen zerrenda bat da
 request-width = 'width' irudiaren zabalera da hazbetetan, 1etik 100era
+request-frame = 'frame' irudiak erakusten duen kutxa da, [x0, y0, x1, y1], x0 < x1 eta y0 < y1 izanik
 request-op = 'op' ekintza da: bere 'op' gakoa duen objektu bat
 request-to = 'to' puntuaren kokapen berria da [x, y]
 request-point = 'point' gakoak mugitu beharreko puntua izendatzen du

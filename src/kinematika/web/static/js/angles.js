@@ -3,23 +3,12 @@
 // counter-clockwise; and the input on the same footing, the crank's angle θ when the sweep
 // turns a crank from the frame, else the driven joint's coordinate from the drawn position.
 
-/** A body's reference line, as the sweep plots measure it (`sweep.angles.body_angle`): from
- * its fixed pivot (a point the frame carries there too), else its first point, to the first
- * other point drawn elsewhere (a rocker's O4 → B); its angle from the x axis,
- * counter-clockwise, in (−180°, 180°]. */
-export function referenceLine(body, bodies) {
-  if (!body || body.frame) return null;
-  const pts = Object.entries(body.points);
-  if (pts.length < 2 || pts[0][1].length !== 2) return null;
-  const size = Math.max(...pts.map(([, q]) => Math.hypot(q[0] - pts[0][1][0], q[1] - pts[0][1][1]))) || 1;
-  const frame = Object.values(bodies || {}).find((b) => b.frame);
-  const at = (name, q) => frame && frame.points[name] && Math.hypot(frame.points[name][0] - q[0], frame.points[name][1] - q[1]) <= 1e-9 * size;
-  const [from, p] = pts.find(([name, q]) => at(name, q)) || pts[0];
-  const other = pts.find(([, q]) => Math.hypot(q[0] - p[0], q[1] - p[1]) > 1e-9 * size);
-  if (!other) return null;
-  const q = other[1];
-  return { from, to: other[0], grounded: !!at(from, p),
-           angle: (Math.atan2(q[1] - p[1], q[0] - p[0]) * 180) / Math.PI };
+/** A body's reference line as the scene gives it (`sweep.angles.reference_line`, the one
+ * the command line's sweep measures θ along): from its fixed pivot, else its first point, to
+ * the first other point drawn elsewhere (a rocker's O4 → B), with its angle from the x axis,
+ * counter-clockwise, in (−180°, 180°]; null for the frame, a body with one place, or 3D. */
+export function referenceLine(body) {
+  return (body && body.reference) || null;
 }
 
 /** Every planar body's angle θ at every row of the sweep: its drawn θ plus its rotation
@@ -28,7 +17,7 @@ export function textbookAngles(scene, sweep) {
   const out = {};
   if (!scene || !sweep || scene.dimension !== 2) return out;
   for (const [name, b] of Object.entries(sweep.bodies)) {
-    const line = referenceLine(scene.bodies[name], scene.bodies);
+    const line = referenceLine(scene.bodies[name]);
     if (!line || Array.isArray(b.angle.find((x) => x !== null))) continue;
     const a0 = b.angle[0] ?? 0;
     out[name] = b.angle.map((x) => (x === null ? null : Number((line.angle + x - a0).toFixed(9))));
@@ -41,7 +30,7 @@ export function textbookAngles(scene, sweep) {
 export function inputAxis(scene, sweep, angles) {
   const xs = sweep.coordinate;
   for (const [name, theta] of Object.entries(angles)) {
-    const line = referenceLine(scene.bodies[name], scene.bodies);
+    const line = referenceLine(scene.bodies[name]);
     if (!line || !line.grounded || !sweep.bodies[name]) continue;
     const rot = sweep.bodies[name].angle;
     if (rot.every((r, k) => r === null || Math.abs(r - (rot[0] ?? 0) - (xs[k] - xs[0])) < 1e-6)) {

@@ -1,15 +1,22 @@
-// The mechanism as SVG, painted from the API's scene (what `kinematika draw` paints) and
-// moved through the sweep's rows: each body turns by its swept `angle` about one of its
-// points, which goes to its swept position (as `kinematika animate` does). A 3D body turns
-// in space (its `angle` is a rotation vector) and is projected again: the scene gives the
-// model coordinates of what it draws (`…_xyz`) and the projection. Results that only
-// the scene holds (instant centres, Kennedy lines, curvature circles, relative vectors) are
-// shown at the position the scene was solved at.
-import { el, runsText, num, shown, pair } from "./svg.js";
+// The mechanism as SVG: the marks of the API's picture (`kinematika.draw.picture`, what
+// `kinematika draw` paints with matplotlib) painted as they are — outlines, hatches, symbols,
+// dots, arrows and labels in model coordinates, with their colours, widths and layers — and
+// moved through the sweep's rows: each body's marks turn by its swept `angle` about one of its
+// points, which goes to its swept position (as `kinematika animate` moves them). A 3D body's
+// marks turn in space (its `angle` is a rotation vector) from their model coordinates (`xyz`)
+// and are projected again. Results only the scene holds (instant centres, Kennedy lines,
+// curvature circles, relative vectors) are shown at the position the scene was solved at; the
+// arrows of swept points follow the sweep, to the scene's scale (`style.longest`, `shortest`).
+import { el, runsText, num, shown } from "./svg.js";
 
-const REACH = 0.6;      // drawing sizes around the mechanism within which results are framed (farther: at the edge)
-const MARGIN = 0.1;     // drawing sizes of margin around the framed content
-const KINDS = ["velocity", "acceleration"];
+const PT = 4 / 3;        // CSS pixels per point: a mark's widths and sizes are in points
+const HATCH = 3;         // points between the lines of a hatching (matplotlib's "////")
+const GAP = 3;           // points between a label and what it labels (its `radius` around its anchor)
+const MARGIN = 0.05;     // drawing sizes around the swept points' paths
+const CAPS = { round: "round", butt: "butt" };          // else matplotlib's "projecting"
+// a dot's marker outline in half sizes (matplotlib's "D", "P", "X"; "o" is a circle)
+const PLUS = [[-1, 3], [1, 3], [1, 1], [3, 1], [3, -1], [1, -1], [1, -3], [-1, -3], [-1, -1], [-3, -1], [-3, 1], [-1, 1]].map(([x, y]) => [x / 3, y / 3]);
+const SHAPES = { D: [[0, 1], [0.7, 0], [0, -1], [-0.7, 0]], P: PLUS, X: PLUS.map(([x, y]) => [(x - y) * Math.SQRT1_2, (x + y) * Math.SQRT1_2]) };
 
 export class Figure {
   constructor(svg, legend, notes, onDrag, t = (id) => id) {
@@ -91,19 +98,23 @@ export class Figure {
     this.size = (s && s.size) || 1;
     this.applyView(this.frameView());
     if (!s) { this.legend.innerHTML = ""; this.onView?.(); return; }
-    this.defs();
+    this.defs = el("defs", {}, this.content);
+    this.hatches = {};
     const g = (cls) => el("g", { class: cls }, this.content);
-    this.g = { ground: g("ground"), traces: g("traces"), bodies: g("bodies"), pins: g("pins"), overlay: g("overlay"),
+    this.g = { under: g("under"), traces: g("traces"), bodies: g("bodies"), pins: g("pins"), overlay: g("overlay"),
                vectors: g("vectors"), labels: g("labels"), handles: g("handles") };
-    this.anchors = {};
-    this.bodyGroups = {};
-    this.topGroups = {};        // a body's pins and rollers, above every body's outline
-    this.tracked = [];          // 3D: elements placed from model coordinates at every row
+    this.bodyGroups = {};       // body -> its groups, one in each layer it has marks in
+    this.texts = [];            // labels, placed at every row where their body is
+    this.tracked = [];          // 3D: marks placed from their model coordinates at every row
+    this.points = [];           // each point's dot, label and handle
+    for (const [name, b] of Object.entries(s.bodies)) if (!b.frame) this.group("bodies", name);
+    this.anchors = Object.fromEntries(Object.entries(s.bodies).map(([name, b]) => [name, this.anchor(name, b)]));
     this.paintTraces();
-    this.paintBodies();
-    this.paintJoints();
-    this.paintPoints();
-    this.liveVectors();
+    const live = this.liveGroups(s);
+    const still = s.picture.marks.filter((m) => !m.layer && !(m.still && this.sweep)).sort((m, n) => m.zorder - n.zorder);
+    for (const m of still) this.paintMechanism(m);
+    this.paintHandles();
+    this.liveVectors(live);
     this.overlayScene = this.scene;
     this.overlayRow = this.sceneRow;
     this.paintOverlay();
@@ -142,261 +153,157 @@ export class Figure {
   /** Keep the view as it is (a drag or a building step must not move the grid under the hand). */
   hold() { if (this.view) this.keep = [...this.view]; }
 
-  defs() {
-    const d = el("defs", {}, this.content);
-    const step = 0.012 * this.size;
-    const p = el("pattern", { id: "hatch", patternUnits: "userSpaceOnUse", width: step, height: step,
-                              patternTransform: "rotate(45)" }, d);
-    el("line", { x1: 0, y1: 0, x2: 0, y2: step, stroke: this.scene.style.ground, "stroke-width": step * 0.22,
-                 class: "model-width" }, p);
-  }
-
-  /** The box (model coordinates) the figure frames: the mechanism over the whole motion,
-   * its arrows, and the marks and circles within reach. */
+  /** The box (model coordinates) the figure frames: the picture's frame, and the paths of
+   * the swept points. */
   frameBox() {
-    const s = this.scene, size = this.size;
-    let [x0, y0, x1, y1] = s.box;
-    const add = (p) => {
-      if (!p || p[0] === null || p[1] === null) return;
-      x0 = Math.min(x0, p[0]); y0 = Math.min(y0, p[1]); x1 = Math.max(x1, p[0]); y1 = Math.max(y1, p[1]);
-    };
-    const reach = [s.box[0] - REACH * size, s.box[1] - REACH * size, s.box[2] + REACH * size, s.box[3] + REACH * size];
-    const inReach = (p) => p && p[0] >= reach[0] && p[0] <= reach[2] && p[1] >= reach[1] && p[1] <= reach[3];
-    if (this.sweep) {
-      for (const v of Object.values(this.sweep.points)) for (const p of v.position) add(p);
-    }
-    const longest = s.style.longest * size;
-    for (const v of s.vectors) {
-      add([v.origin[0] - longest, v.origin[1] - longest]);
-      add([v.origin[0] + longest, v.origin[1] + longest]);
-    }
-    for (const m of s.marks) if (m.point && inReach(m.point)) add(m.point);
-    for (const c of s.curvatures) {
-      if (c.circle.every(inReach)) c.circle.forEach(add);
-      else if (inReach(c.centre)) add(c.centre);
-    }
-    const m = MARGIN * size;
-    return [x0 - m, y0 - m, x1 + m, y1 + m];
-  }
-
-  /** The group of body `name` (the frame's: the ground layer); `top`: its group in the
-   * layer above all bodies (pins, rollers), moved with it. */
-  bodyGroup(name, top = false) {
-    const groups = top ? this.topGroups : this.bodyGroups;
-    if (!name || this.scene.bodies[name].frame) return top ? this.g.pins : this.g.ground;
-    if (!groups[name]) {
-      groups[name] = el("g", { class: top ? "body-pins" : "body", "data-body": name }, top ? this.g.pins : this.g.bodies);
-    }
-    return groups[name];
-  }
-
-  /** Body `name`'s groups: its outline's and its pins'. */
-  groupsOf(name) { return [this.bodyGroups[name], this.topGroups[name]].filter(Boolean); }
-
-  paintBodies() {
-    const s = this.scene;
-    if (s.sphere) {
-      const [c, r] = s.sphere;
-      el("circle", { cx: c[0], cy: -c[1], r, fill: "none", stroke: "#bdbdbd", "stroke-dasharray": "4 3" }, this.g.ground);
-    }
-    for (const [name, b] of Object.entries(s.bodies)) {
-      if (b.frame) {
-        for (const shape of b.shapes) this.groundShape(shape);
-        for (const line of b.skeleton || []) this.bar(this.g.ground, line, s.style.ground, 3);
-        continue;
-      }
-      const g = this.bodyGroup(name);
-      this.anchors[name] = this.anchor(name, b);
-      if (this.P && this.sweep && b.points_xyz) {
-        this.paintBody3(name, b, g);
-        continue;
-      }
-      if (b.skeleton && b.skeleton.length) {       // a carrier's arms, a chassis, a 3D body's bars
-        for (const shape of b.shapes) this.movingShape(g, b, shape);
-        for (const line of b.skeleton) this.bar(g, line, b.colour, 8);
-        continue;
-      }
-      const pts = distinct(Object.values(b.points), 1e-9 * this.size);
-      const wheels = b.shapes.filter((x) => x.kind === "circle" && !x.ring);
-      for (const shape of b.shapes) this.movingShape(g, b, shape);
-      if (wheels.length && pts.every((p) => wheels.some((w) => dist(p, w.center) <= w.radius * (1 + 1e-6)))) {
-        for (const p of pts) {
-          const w = wheels.reduce((a, c) => (dist(p, c.center) < dist(p, a.center) ? c : a));
-          el("line", { ...seg(w.center, p), stroke: b.colour, "stroke-width": 2, "stroke-linecap": "round" }, g);
-        }
-        continue;
-      }
-      const hull = pts.length >= 3 ? convexHull(pts) : pts;
-      if (hull.length >= 3 && area(hull) > 1e-5 * this.size ** 2) {
-        el("polygon", { points: poly(hull), fill: b.colour, "fill-opacity": 0.38, stroke: b.colour,
-                        "stroke-width": 2.5, "stroke-linejoin": "round", class: "shape" }, g);
-      } else if (pts.length >= 2) {
-        const [p, q] = extremes(pts);
-        el("line", { ...seg(p, q), stroke: b.colour, "stroke-opacity": 0.9, "stroke-width": 8,
-                     "stroke-linecap": "round", class: "shape" }, g);
+    let [x0, y0, x1, y1] = this.scene.picture.frame;
+    const m = MARGIN * this.size;
+    for (const v of Object.values(this.sweep ? this.sweep.points : {})) {
+      for (const p of v.position) {
+        if (!p) continue;
+        x0 = Math.min(x0, p[0] - m); y0 = Math.min(y0, p[1] - m); x1 = Math.max(x1, p[0] + m); y1 = Math.max(y1, p[1] + m);
       }
     }
+    return [x0, y0, x1, y1];
   }
 
-  /** A 3D body, its parts kept with their model coordinates to be moved (`move3`). */
-  paintBody3(name, b, g) {
-    for (const [i, shape] of b.shapes.entries()) {
-      const node = this.movingShape(g, b, shape);
-      if (node && shape.vertices_xyz) this.track(node, name, "points", shape.vertices_xyz);
-    }
-    if (b.skeleton && b.skeleton.length) {
-      b.skeleton.forEach((line, i) => this.track(this.bar(g, line, b.colour, 8), name, "points", b.skeleton_xyz[i]));
-      return;
-    }
-    const pts = distinct(Object.values(b.points_xyz), 1e-9 * this.size);
-    if (pts.length < 2) return;
-    const [p, q] = extremes(pts);
-    const line = el("line", { stroke: b.colour, "stroke-opacity": 0.9, "stroke-width": 8, "stroke-linecap": "round",
-                              class: "shape" }, g);
-    this.track(line, name, "line", [p, q]);
+  /** The group of body `name` in `layer` (under, bodies, pins; the layer itself for the
+   * frame), which the body's placement moves. */
+  group(layer, name) {
+    if (!name || this.scene.bodies[name].frame) return this.g[layer];
+    const groups = (this.bodyGroups[name] ||= {});
+    const cls = { under: "body-under", bodies: "body", pins: "body-pins" }[layer];
+    return (groups[layer] ||= el("g", { class: cls, "data-body": name }, this.g[layer]));
   }
 
-  /** Keep `node` of `body` to be placed from its model coordinates `xyz` at every row (3D). */
-  track(node, body, kind, xyz) {
-    if (this.P && this.sweep && body && xyz) this.tracked.push({ node, body, kind, xyz });
-    return node;
-  }
-
-  bar(g, line, colour, width) {
-    return el("polyline", { points: poly(line), fill: "none", stroke: colour, "stroke-opacity": 0.9, "stroke-width": width,
-                     "stroke-linecap": "round", "stroke-linejoin": "round", class: "shape" }, g);
-  }
+  /** Body `name`'s groups. */
+  groupsOf(name) { return Object.values(this.bodyGroups[name] || {}); }
 
   /** The material point a body's placement follows: its first swept point. */
   anchor(name, b) {
-    if (!this.sweep) return null;
+    if (!this.sweep || b.frame) return null;
     for (const p of Object.keys(b.points)) if (this.sweep.points[`${p}@${name}`]) return p;
     return null;
   }
 
-  groundShape(sh) {
-    const s = this.scene, band = s.style.hatch_band * this.size, g = this.g.ground;
-    if (sh.kind === "line") {
-      const far = 10 * this.size;
-      const p = add(sh.through, mul(sh.direction, -far)), q = add(sh.through, mul(sh.direction, far));
-      let n = [-sh.direction[1], sh.direction[0]];
-      const towards = sh.hatch_towards || sub(sh.through, this.movingCentroid());
-      if (dot(n, towards) < 0) n = mul(n, -1);
-      this.hatchedEdge(g, p, q, n, band);
-    } else if (sh.kind === "circle") {
-      el("circle", { cx: sh.center[0], cy: -sh.center[1], r: sh.radius, fill: "none", stroke: s.style.ground,
-                     "stroke-width": 1.8 }, g);
-      const width = Math.min(band, 0.5 * sh.radius);
-      const r = sh.material_inside ? sh.radius - width / 2 : sh.radius + width / 2;
-      el("circle", { cx: sh.center[0], cy: -sh.center[1], r, fill: "none", stroke: "url(#hatch)",
-                     "stroke-width": width, class: "model-width" }, g);
-    } else if (sh.vertices) {
-      el("polygon", { points: poly(sh.vertices), fill: "#f0f0f0", stroke: "#9e9e9e", "stroke-width": 1 }, g);
+  /** A mark of the mechanism, in its body's group (texts above everything, moved with it). */
+  paintMechanism(m) {
+    if (m.kind === "text") { this.label(m, this.g.labels); return; }
+    const layer = m.zorder >= 5 ? "pins" : m.zorder < 2 || !m.body ? "under" : "bodies";
+    const node = this.mark(m, this.group(layer, m.body));
+    const [role, key] = split(m.group);
+    if (role === "joint") node.setAttribute("data-joint", key);
+    if (role === "point") {
+      node.setAttribute("data-point", key);
+      this.points.push({ name: key, body: m.body, xy: m.points[0] });
+    }
+    if (m.xyz) this.track(node, m);
+  }
+
+  /** A draggable handle at every point (a 3D point is moved in the text), with its label. */
+  paintHandles() {
+    for (const pt of this.points) {
+      const text = this.texts.find((x) => x.m.group === `point:${pt.name}`);
+      [pt.label, pt.labelMark] = text ? [text.node, text.m] : [null, null];
+      if (this.scene.dimension !== 2) continue;
+      pt.handle = el("circle", { r: 9 * this.px, class: "draggable", "data-handle": pt.name }, this.g.handles);
+      el("title", {}, pt.handle).textContent = this.t("handle-tip", { point: shown(pt.name) });
     }
   }
 
-  hatchedEdge(g, p, q, side, band) {
-    el("polygon", { points: poly([p, q, add(q, mul(side, band)), add(p, mul(side, band))]),
-                    fill: "url(#hatch)", stroke: "none" }, g);
-    el("line", { ...seg(p, q), stroke: this.scene.style.ground, "stroke-width": 1.8 }, g);
-  }
-
-  movingShape(g, b, sh) {
-    if (sh.kind === "circle") {
-      const gear = sh.role === "gear";
-      const c = { cx: sh.center[0], cy: -sh.center[1] };
-      if (sh.ring) {
-        const band = Math.min(1.5 * this.scene.style.hatch_band * this.size, 0.3 * sh.radius);
-        el("circle", { ...c, r: sh.radius + band / 2, fill: "none", stroke: b.colour, "stroke-opacity": 0.45,
-                       "stroke-width": band, class: "model-width" }, g);
-      } else {
-        el("circle", { ...c, r: sh.radius, fill: b.colour, "fill-opacity": gear ? 0.18 : 0.25, stroke: "none" }, g);
-        for (const d of [[1, 0], [0, 1]]) {
-          el("line", { ...seg(add(sh.center, mul(d, -0.8 * sh.radius)), add(sh.center, mul(d, 0.8 * sh.radius))),
-                       stroke: b.colour, "stroke-width": 1, "stroke-opacity": 0.8 }, g);
-        }
-      }
-      el("circle", { ...c, r: sh.radius, fill: "none", stroke: b.colour, "stroke-width": gear ? 1.6 : 2.2,
-                     "stroke-dasharray": gear ? "10 3 2 3" : null }, g);
-    } else if (sh.kind === "line") {
-      const far = 10 * this.size;
-      el("line", { ...seg(add(sh.through, mul(sh.direction, -far)), add(sh.through, mul(sh.direction, far))),
-                   stroke: b.colour, "stroke-width": 2.2 }, g);
-    } else if (sh.vertices) {
-      return el("polygon", { points: poly(sh.vertices), fill: b.colour, "fill-opacity": 0.3, stroke: b.colour,
-                             "stroke-width": 1.5 }, g);
-    }
-    return null;
-  }
-
-  movingCentroid() {
-    const pts = [];
-    for (const b of Object.values(this.scene.bodies)) if (!b.frame) pts.push(...Object.values(b.points));
-    if (!pts.length) return [0, 0];
-    return mul(pts.reduce(add, [0, 0]), 1 / pts.length);
-  }
-
-  frame() { return Object.keys(this.scene.bodies).find((n) => this.scene.bodies[n].frame); }
-
-  /** Every joint's symbol as its kind draws it (the scene's `symbols`: polygons, lines and
-   * dots, `kinematika.joints.symbols`), each in the body it moves with, lowest first; the
-   * marks of a still figure only (a contact point) are left out while a motion is shown. */
-  paintJoints() {
-    const marks = [...(this.scene.symbols || [])].sort((m, n) => m.zorder - n.zorder);
-    for (const m of marks) {
-      if (m.still && this.sweep) continue;
-      const node = this.mark(m, this.bodyGroup(m.body, m.zorder >= 5));
-      const joint = m.id.startsWith("joint:") && this.scene.joints.find((j) => `joint:${j.id}` === m.id);
-      if (m.kind === "dot" && joint) this.track(node, m.body, "circle", joint.at_xyz);
-    }
-  }
-
-  /** A colour role of a mark (ink, ground, white, none, body:NAME) as a colour. */
-  role(name) {
-    const st = this.scene.style;
-    if (name.startsWith("body:")) return this.scene.bodies[name.slice(5)].colour;
-    return { ink: st.ink, ground: st.ground, white: "white", none: "none" }[name] || name;
-  }
-
-  /** One mark: a dot (its size in points), a line or a polygon (hatched: the frame's material). */
-  mark(m, g) {
-    const stroke = this.role(m.colour), fill = this.role(m.fill), id = m.id.startsWith("joint:") ? m.id.slice(6) : null;
+  /** One mark as SVG (`kinematika.joints.symbols.Mark`) in `parent`: a dot (a marker of its
+   * size in points), a line, a polygon (hatched: the frame's material), a circle, a ring, an
+   * arrow; a text is a label. */
+  mark(m, parent) {
+    const p = m.points, paint = this.paintOf(m);
     if (m.kind === "dot") {
-      const [p] = m.points;
-      return el("circle", { cx: p[0], cy: -p[1], r: (m.size / 2 + m.width / 2) * 1.1 * this.px, fill,
-                            stroke: m.width ? stroke : "none", "stroke-width": m.width, "data-joint": id,
-                            class: m.size >= 5 ? "pin" : null }, g);
+      const half = (m.size / 2) * PT * this.px, [x, y] = p[0];
+      if (!SHAPES[m.shape]) return el("circle", { cx: x, cy: -y, r: half, ...paint, class: "dot" }, parent);
+      return el("polygon", { points: poly(SHAPES[m.shape].map(([u, v]) => [x + u * half, y + v * half])), ...paint, class: "dot" }, parent);
     }
     if (m.kind === "line") {
-      return el("polyline", { points: poly(m.points), fill: "none", stroke, "stroke-width": m.width,
-                              "stroke-dasharray": m.dash ? "10 3 2 3" : null, "data-joint": id }, g);
+      if (p.some((q) => q[0] === null)) return el("path", { d: broken(p), ...paint, fill: "none" }, parent);
+      return el("polyline", { points: poly(p), ...paint, fill: "none" }, parent);
     }
-    return el("polygon", { points: poly(m.points), fill: m.hatch ? "url(#hatch)" : fill,
-                           stroke: m.hatch || !m.width ? "none" : stroke, "stroke-width": m.width, "data-joint": id }, g);
+    if (m.kind === "polygon") return el("polygon", { points: poly(p), ...paint }, parent);
+    if (m.kind === "circle") return el("circle", { cx: p[0][0], cy: -p[0][1], r: m.r, ...paint }, parent);
+    if (m.kind === "ring") {
+      return el("circle", { cx: p[0][0], cy: -p[0][1], r: m.r - m.band / 2, fill: "none", stroke: paint.fill,
+                            "stroke-opacity": paint["fill-opacity"], "stroke-width": m.band, class: "model-width" }, parent);
+    }
+    if (m.kind === "arrow") return this.arrow(m, p[0], p[1], parent);
+    return this.label(m, parent);
   }
 
-  /** A dot at every point (draggable at the position the scene was solved at) and its name. */
-  paintPoints() {
-    this.pointLabels = [];
-    const named = new Set();
-    for (const [name, b] of Object.entries(this.scene.bodies)) {
-      for (const [p, xy] of Object.entries(b.points)) {
-        if (named.has(p)) continue;
-        named.add(p);
-        const g = this.bodyGroup(b.frame ? null : name);
-        const dot = el("circle", { cx: xy[0], cy: -xy[1], r: 3.2 * this.px, fill: this.scene.style.ink, "data-point": p }, g);
-        if (!b.frame) this.track(dot, name, "circle", b.points_xyz && b.points_xyz[p]);
-        const label = el("text", { "font-size": 12 * this.px, "font-weight": "bold", fill: this.scene.style.point_label,
-                                   class: "point-label" }, this.g.labels);
-        label.textContent = shown(p);
-        let handle = null;                      // a 3D point is moved in the text (edit takes x, y)
-        if (this.scene.dimension === 2) {
-          handle = el("circle", { r: 9 * this.px, class: "draggable", "data-handle": p }, this.g.handles);
-          el("title", {}, handle).textContent = this.t("handle-tip", { point: shown(p) });
-        }
-        this.pointLabels.push({ label, handle, name: p, body: name, frame: b.frame, xy });
-      }
+  /** A mark's fill and stroke: its colours, opacity, width in points, dashes in line widths. */
+  paintOf(m) {
+    const a = m.alpha ?? 1, stroked = m.width > 0 && !m.hatch && m.colour !== "none";
+    return { fill: m.hatch ? this.hatch(m.colour) : m.fill, "fill-opacity": a < 1 ? a : null,
+             stroke: stroked ? m.colour : "none", "stroke-opacity": a < 1 ? a : null, "stroke-width": stroked ? m.width * PT : null,
+             "stroke-dasharray": m.dash && stroked ? m.dash.map((d) => d * m.width * PT).join(" ") : null,
+             "stroke-linecap": CAPS[m.cap] || "square", "stroke-linejoin": m.join === "round" ? "round" : null };
+  }
+
+  /** The hatching in `colour` (a pattern of lines a few points apart). */
+  hatch(colour) {
+    if (!this.hatches[colour]) {
+      const id = `hatch${Object.keys(this.hatches).length}`, step = HATCH * PT * this.px;
+      const p = el("pattern", { id, patternUnits: "userSpaceOnUse", width: step, height: step, patternTransform: "rotate(45)" }, this.defs);
+      el("line", { x1: 0, y1: 0, x2: 0, y2: step, stroke: colour, "stroke-width": PT * this.px, class: "model-width" }, p);
+      this.hatches[colour] = `url(#${id})`;
     }
+    return this.hatches[colour];
+  }
+
+  /** An arrow from `start` to `end` with its heads (`-|>` or `<|-|>`, of its size in points),
+   * set its `shift` (points) sideways. */
+  arrow(m, start, end, parent) {
+    const g = el("g", { class: `arrow kind-${m.layer}` }, parent);
+    const paint = { stroke: m.colour, "stroke-width": m.width * PT };
+    el("polyline", { fill: "none", ...paint, "stroke-linecap": "butt" }, g);
+    el("polygon", { fill: m.colour, ...paint }, g);
+    if (m.head === "<|-|>") el("polygon", { fill: m.colour, ...paint }, g);
+    this.placeArrow(g, m, start, end);
+    return g;
+  }
+
+  placeArrow(g, m, start, end) {
+    const len = Math.hypot(end[0] - start[0], end[1] - start[1]);
+    g.setAttribute("visibility", len > 0 ? "visible" : "hidden");
+    if (!(len > 0)) return;
+    const d = [(end[0] - start[0]) / len, (end[1] - start[1]) / len], n = [-d[1], d[0]];
+    const shift = mul(n, (m.shift || 0) * PT * this.px);
+    const hl = 0.4 * m.size * PT * this.px, hw = 0.2 * m.size * PT * this.px;
+    const [a, b] = [add(start, shift), add(end, shift)];
+    const head = (tip, dir) => { const back = add(tip, mul(dir, -hl)); return [tip, add(back, mul(n, hw)), add(back, mul(n, -hw))]; };
+    const [line, ...heads] = g.children;
+    const both = m.head === "<|-|>";
+    line.setAttribute("points", poly([both ? add(a, mul(d, hl)) : a, add(b, mul(d, -hl))]));
+    heads[0].setAttribute("points", poly(head(b, d)));
+    if (both) heads[1].setAttribute("points", poly(head(a, mul(d, -1))));
+  }
+
+  /** A label at its anchor, towards its preferred side (up and right by default); one that
+   * says words in the page's language (`about.say`) gets them. */
+  label(m, parent) {
+    const runs = m.about && m.about.say ? [...m.about.name, { t: ` ${this.t(m.about.say, m.about.args || {})}` }] : m.text;
+    const node = runsText(parent, runs, { "font-size": m.size * PT * this.px, fill: m.colour,
+      "font-weight": m.weight === "bold" ? "bold" : null, "font-style": m.style === "italic" ? "italic" : null,
+      class: m.group && m.group.startsWith("point:") ? "point-label" : null });
+    placeText(node, m.points[0], this.gap(m), m.prefer || m.side);
+    this.texts.push({ node, m, body: m.body, at: m.points[0] });
+    if (m.xyz) this.tracked.push({ node, body: m.body, kind: "text", xyz: m.xyz, m });
+    return node;
+  }
+
+  /** How far (model units) a label stands from its anchor: `GAP` beyond its `radius`. */
+  gap(m) { return (GAP + ((m && m.radius) || 0)) * PT * this.px; }
+
+  /** Keep `node` of a 3D mark to be placed from its model coordinates at every row. */
+  track(node, m) {
+    if (!this.P || !this.sweep || !m.body) return;
+    const kind = m.kind === "circle" || (m.kind === "dot" && !SHAPES[m.shape]) ? "circle" : m.kind === "line" || m.kind === "polygon" ? "points" : null;
+    if (kind) this.tracked.push({ node, body: m.body, kind, xyz: m.xyz });
   }
 
   /** The full path of every moving point over the sweep (coupler curves), faint. */
@@ -405,6 +312,7 @@ export class Figure {
     const seen = [];
     const asked = new Set(this.scene.vectors.map((v) => v.ref));
     const keys = Object.keys(this.sweep.points).sort((a, b) => asked.has(b) - asked.has(a));
+    const colour = this.scene.style.path;
     for (const key of keys) {
       const v = this.sweep.points[key];
       const path = v.position.filter((p) => p !== null);
@@ -414,116 +322,75 @@ export class Figure {
       if (seen.some((q) => q.length === path.length && q.every((p, i) => dist(p, path[i]) < 1e-9 * this.size))) continue;
       seen.push(path);
       const strong = asked.has(key);      // the asked points' paths (coupler curves) stand out
-      el("polyline", { points: poly(path), fill: "none", stroke: "#6d4c41", "stroke-opacity": strong ? 0.75 : 0.4,
+      el("polyline", { points: poly(path), fill: "none", stroke: colour, "stroke-opacity": strong ? 0.75 : 0.4,
                        "stroke-width": strong ? 1.6 : 1.1, "stroke-dasharray": strong ? null : "4 3",
                        "data-trace": key }, this.g.traces);
     }
   }
 
-  /** The arrows that follow the sweep: the scene's absolute vectors of swept points. */
-  liveVectors() {
+  /** The groups of the arrows that follow the sweep (the absolute vectors of swept points). */
+  liveGroups(s) {
+    if (!this.sweep) return new Set();
+    return new Set(s.picture.marks.filter((m) => m.kind === "arrow" && m.about && !m.about.relative_to &&
+      this.sweep.points[m.about.ref]).map((m) => m.group));
+  }
+
+  /** The arrows that follow the sweep, each kind to one scale over the whole motion: the
+   * longest `style.longest` of the drawing, none shorter than `style.shortest` (enlarged). */
+  liveVectors(live) {
     this.arrows = [];
     this.largest = {};
-    for (const v of this.scene.vectors) {
-      const swept = this.sweep && !v.relative_to && this.sweep.points[v.ref];
-      this.largest[v.kind] = Math.max(this.largest[v.kind] || 0, v.magnitude);
-      if (swept) {
-        for (const x of swept.size[v.kind]) if (x) this.largest[v.kind] = Math.max(this.largest[v.kind], x);
-      }
+    const marks = this.scene.picture.marks.filter((m) => live.has(m.group));
+    for (const m of marks.filter((x) => x.kind === "arrow")) {
+      const { kind, ref, magnitude } = m.about;
+      this.largest[kind] = Math.max(this.largest[kind] || 0, magnitude, ...this.sweep.points[ref].size[kind].filter((x) => x));
+      const [, key] = split(m.group);
+      const g = el("g", { "data-vector": key }, this.g.vectors);
+      const text = marks.find((x) => x.kind === "text" && x.group === m.group);
+      const label = runsText(g, [...m.about.symbol, { t: " = " }], { "font-size": (text ? text.size : 9) * PT * this.px, fill: m.colour });
+      this.arrows.push({ m, g, node: this.arrow(m, m.points[0], m.points[1], g), label, value: el("tspan", {}, label), swept: this.sweep.points[ref] });
     }
-    for (const v of this.scene.vectors) this.arrows.push(this.arrowElements(v, this.g.vectors));
   }
 
-  arrowElements(v, parent) {
-    const colour = this.scene.style[v.kind];
-    const g = el("g", { class: `arrow kind-${v.kind}`, "data-vector": v.key }, parent);
-    const line = el("line", { stroke: colour, "stroke-width": 2.2 }, g);
-    const head = el("polygon", { fill: colour }, g);
-    const label = runsText(g, [...v.label, { t: " = " }], { "font-size": 12 * this.px, fill: colour });
-    const value = el("tspan", {}, label);
-    return { v, g, line, head, label, value, swept: this.sweep && !v.relative_to && this.sweep.points[v.ref] };
-  }
-
-  placeArrow(a, origin, value, magnitude) {
-    const st = this.scene.style, largest = this.largest[a.v.kind] || 0;
+  /** Arrow `a` at a row: from the point's place, its value to the kind's scale. */
+  placeLive(a, k) {
+    const { kind, at_point: flip } = a.m.about, st = this.scene.style;
+    const origin = a.swept.position[k], value = a.swept[kind][k], magnitude = a.swept.size[kind][k] || 0;
+    const largest = this.largest[kind] || 0;
     if (!origin || !value || largest <= 0 || magnitude <= 1e-9 * largest) {
-      a.line.setAttribute("visibility", "hidden");
-      a.head.setAttribute("visibility", "hidden");
-      if (origin) placeText(a.label, origin, [6 * this.px, 6 * this.px]);
+      this.placeArrow(a.node, a.m, origin || [0, 0], origin || [0, 0]);
+      if (origin) placeText(a.label, origin, GAP * PT * this.px, null);
       a.value.textContent = "0";
       return;
     }
-    let factor = (st.longest * this.size) / largest;
-    let enlarged = false;
+    let factor = (st.longest * this.size) / largest, enlarged = false;
     if (magnitude * factor < st.shortest * this.size) { factor = (st.shortest * this.size) / magnitude; enlarged = true; }
     const tip = add(origin, mul(value, factor));
-    const d = unit(value), n = [-d[1], d[0]];
-    const hl = 11 * this.px, hw = 4.5 * this.px;
-    const back = add(tip, mul(d, -hl));
-    a.line.setAttribute("visibility", "visible");
-    a.head.setAttribute("visibility", "visible");
-    setSeg(a.line, origin, back);
-    a.head.setAttribute("points", poly([tip, add(back, mul(n, hw)), add(back, mul(n, -hw))]));
-    placeText(a.label, tip, mul(d, 6 * this.px), d);
-    a.value.textContent = num(magnitude) + (enlarged ? ` (${this.t("enlarged")})` : "");
+    const [start, end] = flip ? [add(origin, sub(origin, tip)), origin] : [origin, tip];
+    this.placeArrow(a.node, a.m, start, end);
+    placeText(a.label, flip ? start : end, GAP * PT * this.px, flip ? sub(start, end) : sub(end, start));   // beyond the free end
+    a.value.textContent = num(magnitude) + (enlarged ? ` ${this.t("enlarged")}` : "");
   }
 
+  /** The results of the scene solved at the overlay's row: centres, Kennedy lines,
+   * curvature, and the vectors that do not follow the sweep, each thing in its group. */
   paintOverlay() {
-    const s = this.overlayScene, st = s.style;
+    const s = this.overlayScene;
     const g = this.g.overlay;
     g.replaceChildren();
     this.overlayParts = { centres: el("g", { class: "centres" }, g), curvature: el("g", { class: "curvature" }, g),
-                          vectors: el("g", { class: "relative" }, this.g.overlay) };
-    const far = 10 * this.size;
-    for (const k of [...s.kennedy, ...(s.normals || [])]) {     // Kennedy lines; wheel and slot normals
-      const d = unit(k.direction), normal = k.key.startsWith("normal:");
-      el("line", { ...seg(add(k.through, mul(d, -far)), add(k.through, mul(d, far))), stroke: st.centre,
-                   "stroke-width": normal ? 1.1 : 0.9, "stroke-dasharray": normal ? "8 3 1.5 3" : "6 4",
-                   "stroke-opacity": 0.8, [normal ? "data-normal" : "data-kennedy"]: k.key },
-         this.overlayParts.centres);
+                          vectors: el("g", { class: "relative" }, g) };
+    const live = this.liveGroups(s), groups = {};
+    const marks = s.picture.marks.filter((m) => m.layer && !live.has(m.group)).sort((m, n) => m.zorder - n.zorder);
+    for (const m of marks) {
+      const part = this.overlayParts[m.layer] || this.overlayParts.vectors;
+      const [role, key] = split(m.group);
+      const parent = role ? (groups[m.group] ||= el("g", { [`data-${role}`]: key }, part)) : part;
+      this.mark(m, parent);
     }
-    const [x0, y0, x1, y1] = this.view, inset = 14 * this.px;
-    for (const m of s.marks) {
-      if (!m.point || m.rest) continue;
-      const colour = m.kind === "pole" ? st.acceleration : m.kind === "contact" ? st.ink : st.centre;
-      const inside = m.point[0] >= x0 && m.point[0] <= x1 && m.point[1] >= y0 && m.point[1] <= y1;
-      const p = inside ? m.point : [clamp(m.point[0], x0 + inset, x1 - inset), clamp(m.point[1], y0 + inset, y1 - inset)];
-      const mg = el("g", { "data-mark": m.key }, this.overlayParts.centres);
-      if (inside) {
-        el("circle", { cx: p[0], cy: -p[1], r: 5.5 * this.px, fill: "white", stroke: colour, "stroke-width": 2.2 }, mg);
-        el("circle", { cx: p[0], cy: -p[1], r: 1.4 * this.px, fill: colour }, mg);
-      } else {
-        const d = unit(sub(m.point, p));
-        const n = [-d[1], d[0]], r = 7 * this.px;
-        el("polygon", { points: poly([add(p, mul(d, r)), add(p, add(mul(d, -r / 2), mul(n, r * 0.8))),
-                                      add(p, add(mul(d, -r / 2), mul(n, -r * 0.8)))]), fill: colour }, mg);
-      }
-      const scale = Math.max(this.size, Math.hypot(...m.point));       // round-off as 0
-      const runs = inside ? m.label : [...m.label, { t: ` ${this.t("far-off", { place: pair([num(m.point[0], scale), num(m.point[1], scale)]) })}` }];
-      const t = runsText(mg, runs, { "font-size": 12 * this.px, fill: colour });
-      const inward = unit(sub(this.centre(), p));
-      if (inside) placeText(t, p, [7 * this.px, -7 * this.px], [1, -1]);
-      else placeText(t, p, mul(inward, 12 * this.px), inward);
-    }
-    for (const c of s.curvatures) {
-      const cg = el("g", { "data-curvature": c.ref }, this.overlayParts.curvature);
-      el("polyline", { points: poly(c.circle), fill: "none", stroke: st.curvature, "stroke-width": 1.3 }, cg);
-      el("line", { ...seg(c.point, c.centre), stroke: st.curvature, "stroke-width": 0.8, "stroke-dasharray": "3 3" }, cg);
-      el("circle", { cx: c.centre[0], cy: -c.centre[1], r: 2.5 * this.px, fill: st.curvature }, cg);
-      placeText(runsText(cg, c.label, { "font-size": 12 * this.px, fill: st.curvature }), c.centre, [6 * this.px, -12 * this.px]);
-    }
-    this.overlayArrows = [];
-    for (const v of s.vectors) {
-      if (v.relative_to || !this.sweep || !this.sweep.points[v.ref]) {
-        const a = this.arrowElements(v, this.overlayParts.vectors);
-        this.placeArrow(a, v.origin, v.value, v.magnitude);
-        this.overlayArrows.push(a);
-      }
-    }
+    this.overlayArrows = [...this.overlayParts.vectors.children];
     this.applyLayers();
   }
-
-  centre() { const [x0, y0, x1, y1] = this.view; return [(x0 + x1) / 2, (y0 + y1) / 2]; }
 
   /** Show or hide the layers (as switched, and the scene-only results away from their row). */
   applyLayers() {
@@ -532,9 +399,9 @@ export class Figure {
     if (this.overlayParts) {
       visible(this.overlayParts.centres, this.layers.centres && showOverlay);
       visible(this.overlayParts.curvature, this.layers.curvature && showOverlay);
-      for (const a of this.overlayArrows) visible(a.g, this.layers[a.v.kind] && showOverlay);
+      for (const a of this.overlayArrows) visible(a, this.layers[kindOf(a)] !== false && showOverlay);
     }
-    for (const a of this.arrows) visible(a.g, this.layers[a.v.kind] && !!a.swept);
+    for (const a of this.arrows) visible(a.g, this.layers[a.m.layer]);
   }
 
   paintLegend() {
@@ -546,7 +413,7 @@ export class Figure {
     if (this.scene.marks.some((m) => m.kind === "icr")) items.push(`<li><i class="ring"></i>${t("legend-centre")}</li>`);
     if (this.scene.kennedy.length) items.push(`<li><i class="dash"></i>${t("legend-kennedy")}</li>`);
     if (this.scene.curvatures.length) items.push(`<li><i style="background:var(--curvature)"></i>${t("legend-curvature")}</li>`);
-    if (this.sweep) items.push(`<li><i style="background:#6d4c41;opacity:.5"></i>${t("legend-path")}</li>`);
+    if (this.sweep) items.push(`<li><i style="background:${this.scene.style.path};opacity:.5"></i>${t("legend-path")}</li>`);
     if (this.scene.dimension === 2) items.push(`<li class="hint">${t("legend-drag")}</li>`);
     this.legend.innerHTML = items.join("");
   }
@@ -557,57 +424,65 @@ export class Figure {
     this.row = k;
     if (!this.scene) return;
     const sw = this.sweep;
+    this.places = {};
     if (sw) {
       const ok = sw.coordinate[k] !== undefined && Object.values(sw.bodies)[0]?.angle[k] !== null;
       this.svg.classList.toggle("unassembled", !ok);
       if (this.P) this.move3(k);
-      else for (const name of Object.keys(this.bodyGroups)) {
-        const anchor = this.anchors[name];
-        if (!anchor) continue;
-        const p0 = this.scene.bodies[name].points[anchor];
-        const pk = sw.points[`${anchor}@${name}`].position[k];
-        const a0 = sw.bodies[name].angle[this.sceneRow], ak = sw.bodies[name].angle[k];
-        const here = pk && ak !== null && a0 !== null;
-        for (const x of this.groupsOf(name)) visible(x, here);
-        if (!here) continue;
-        const placed = `translate(${pk[0]} ${-pk[1]}) rotate(${-(ak - a0)}) translate(${-p0[0]} ${p0[1]})`;
-        for (const x of this.groupsOf(name)) x.setAttribute("transform", placed);
-      }
-      for (const a of this.arrows) {
-        if (!a.swept) continue;
-        this.placeArrow(a, a.swept.position[k], a.swept[a.v.kind][k], a.swept.size[a.v.kind][k] || 0);
-      }
-    } else {
-      for (const a of this.arrows) this.placeArrow(a, a.v.origin, a.v.value, a.v.magnitude);
+      else for (const name of Object.keys(this.bodyGroups)) this.move2(name, k);
+      for (const a of this.arrows) this.placeLive(a, k);
     }
-    for (const pl of this.pointLabels) {
-      let p = pl.xy;
-      if (sw && !pl.frame) {
-        const swept = sw.points[`${pl.name}@${pl.body}`];
-        p = swept ? swept.position[k] : null;
+    for (const x of this.texts) {
+      const p = this.placed(x.body, x.at);
+      if (p && !x.tracked) placeText(x.node, p, this.gap(x.m), x.m.prefer || x.m.side);
+      x.node.setAttribute("visibility", p ? "visible" : "hidden");
+    }
+    for (const pt of this.points) {
+      let p = this.placed(pt.body, pt.xy);
+      if (this.drag && this.drag.name === pt.name) {                     // under the hand
+        p = this.drag.at;
+        if (pt.label) placeText(pt.label, p, this.gap(pt.labelMark), null);
       }
-      if (this.drag && this.drag.name === pl.name) p = this.drag.at;      // under the hand
-      if (p) {
-        placeText(pl.label, p, [5 * this.px, 5 * this.px]);
-        pl.handle?.setAttribute("cx", p[0]);
-        pl.handle?.setAttribute("cy", -p[1]);
-      }
-      pl.label.setAttribute("visibility", p ? "visible" : "hidden");
-      pl.handle?.setAttribute("visibility", p ? "visible" : "hidden");
+      pt.handle?.setAttribute("cx", p ? p[0] : 0);
+      pt.handle?.setAttribute("cy", p ? -p[1] : 0);
+      pt.handle?.setAttribute("visibility", p ? "visible" : "hidden");
     }
     this.applyLayers();
     this.unclutter();
   }
 
-  /** Labels that would overlap are moved apart: the points' names stay; each arrow's,
-   * centre's and curvature's label after them is shifted up or down (by its height, at most
-   * twice) to the first place where it overlaps no label already placed. A label that would
-   * stick out of the figure (an arrow's tip near its edge, on a narrow screen) is moved back
-   * inside it. */
+  /** A 2D body at row `k`: turned by its swept angle since the scene's row about its anchor,
+   * which goes to its swept place. */
+  move2(name, k) {
+    const anchor = this.anchors[name], sw = this.sweep;
+    if (!anchor) return;
+    const p0 = this.scene.bodies[name].points[anchor];
+    const pk = sw.points[`${anchor}@${name}`].position[k];
+    const a0 = sw.bodies[name].angle[this.sceneRow], ak = sw.bodies[name].angle[k];
+    const here = pk && ak !== null && a0 !== null;
+    for (const x of this.groupsOf(name)) visible(x, here);
+    if (!here) { this.places[name] = null; return; }
+    const turn = ((ak - a0) * Math.PI) / 180, c = Math.cos(turn), s = Math.sin(turn);
+    this.places[name] = (p) => [pk[0] + c * (p[0] - p0[0]) - s * (p[1] - p0[1]), pk[1] + s * (p[0] - p0[0]) + c * (p[1] - p0[1])];
+    const placed = `translate(${pk[0]} ${-pk[1]}) rotate(${-(ak - a0)}) translate(${-p0[0]} ${p0[1]})`;
+    for (const x of this.groupsOf(name)) x.setAttribute("transform", placed);
+  }
+
+  /** Where a point of `body` drawn at `p` is at the row shown (null: the body is not there). */
+  placed(body, p) {
+    if (!body || !(body in this.places)) return p;
+    const f = this.places[body];
+    return f ? f(p) : null;
+  }
+
+  /** Labels that would overlap are moved apart: the points' names stay; each other label
+   * after them is shifted up or down (by its height, at most twice) to the first place where
+   * it overlaps no label already placed. A label that would stick out of the figure (an
+   * arrow's tip near its edge, on a narrow screen) is moved back inside it. */
   unclutter() {
     if (!this.g) return;
-    const texts = [...this.pointLabels.map((pl) => pl.label),
-      ...this.svg.querySelectorAll(".content .vectors text, .content .overlay text")];
+    const named = this.points.map((pt) => pt.label).filter(Boolean);
+    const texts = [...named, ...this.svg.querySelectorAll(".content .labels text:not(.point-label), .content .vectors text, .content .overlay text")];
     const placed = [];
     const [x0, y0, x1, y1] = this.view, pad = 2 * this.px;
     const inside = (lo, size, from, to) => (size > to - from ? 0 : Math.max(from - lo, 0) + Math.min(to - (lo + size), 0));
@@ -616,7 +491,7 @@ export class Figure {
       if (t.getAttribute("visibility") === "hidden" || !t.getClientRects().length) continue;
       const b = t.getBBox();
       if (!b.width) continue;
-      const fixed = this.pointLabels.some((pl) => pl.label === t);
+      const fixed = named.includes(t);
       let dy = 0;
       if (!fixed) {
         const gap = 0.15 * b.height;
@@ -631,9 +506,9 @@ export class Figure {
     }
   }
 
-  /** The 3D bodies at sweep row `k`: each tracked part turned in space by the body's
-   * rotation since the scene's row (R_k R_s^T, from the rotation vectors), about its anchor
-   * point carried to its swept place, and projected on the page. */
+  /** The 3D bodies at sweep row `k`: each tracked mark turned in space by its body's rotation
+   * since the scene's row (R_k R_s^T, from the rotation vectors), about its anchor point
+   * carried to its swept place, and projected on the page. */
   move3(k) {
     const placed = {}, P = this.P, s = this.sceneRow;
     for (const name of Object.keys(this.bodyGroups)) {
@@ -651,16 +526,14 @@ export class Figure {
     for (const t of this.tracked) {
       const m = placed[t.body];
       if (!m) continue;
-      if (t.kind === "circle") {
-        const p = apply(m.A, t.xyz);
-        t.node.setAttribute("cx", p[0] + m.c[0]);
-        t.node.setAttribute("cy", -(p[1] + m.c[1]));
-        continue;
-      }
       const pts = t.xyz.map((x) => { const p = apply(m.A, x); return [p[0] + m.c[0], p[1] + m.c[1]]; });
-      if (t.kind === "line") setSeg(t.node, pts[0], pts[1]);
+      if (t.kind === "circle") {
+        t.node.setAttribute("cx", pts[0][0]);
+        t.node.setAttribute("cy", -pts[0][1]);
+      } else if (t.kind === "text") placeText(t.node, pts[0], this.gap(t.m), t.m.prefer || t.m.side);
       else t.node.setAttribute("points", poly(pts));
     }
+    for (const x of this.texts) x.tracked = !!(this.tracked.find((t) => t.node === x.node) && placed[x.body]);
   }
 
   // the pointer: dragging a point, picking for the builder, panning ---------------------------
@@ -741,24 +614,22 @@ export class Figure {
 
   /** Where point `name` is drawn now (its handle, at the row shown), or null. */
   at(name) {
-    const pl = (this.pointLabels || []).find((x) => x.name === name);
-    if (!this.scene || !pl || !pl.handle || pl.handle.getAttribute("visibility") === "hidden") return null;
-    return [Number(pl.handle.getAttribute("cx")), -Number(pl.handle.getAttribute("cy"))];
+    const pt = (this.points || []).find((x) => x.name === name);
+    if (!this.scene || !pt || !pt.handle || pt.handle.getAttribute("visibility") === "hidden") return null;
+    return [Number(pt.handle.getAttribute("cx")), -Number(pt.handle.getAttribute("cy"))];
   }
 
   /** A point can be dragged in a planar model (a 3D point is moved in its text). */
   canDrag(name) { return !this.scene || this.scene.dimension === 2; }
 
-  /** The dragged point's handle, dot and label at the pointer (whatever was repainted). */
+  /** The dragged point's handle and label at the pointer (whatever was repainted). */
   placeDragged() {
     const d = this.drag;
-    if (!d) return;
-    const pl = (this.pointLabels || []).find((x) => x.name === d.name);
-    if (pl) {
-      pl.handle?.setAttribute("cx", d.at[0]);
-      pl.handle?.setAttribute("cy", -d.at[1]);
-      placeText(pl.label, d.at, [5 * this.px, 5 * this.px]);
-    }
+    const pt = d && (this.points || []).find((x) => x.name === d.name);
+    if (!pt) return;
+    pt.handle?.setAttribute("cx", d.at[0]);
+    pt.handle?.setAttribute("cy", -d.at[1]);
+    if (pt.label) placeText(pt.label, d.at, this.gap(pt.labelMark), null);
   }
 
   /** The drag is over once its last edit has been solved and drawn. */
@@ -775,7 +646,7 @@ export class Figure {
   }
 }
 
-// geometry ------------------------------------------------------------------------------
+// moving with the sweep -----------------------------------------------------------------
 /** The sweep with its points on the page (3D: projected by P) and the sizes of their
  * velocities and accelerations (in space), which the arrows' scale reads. */
 function onPage(sweep, P) {
@@ -807,58 +678,26 @@ const apply = (m, x) => m.map((row) => row[0] * x[0] + row[1] * x[1] + row[2] * 
 const add = (p, q) => [p[0] + q[0], p[1] + q[1]];
 const sub = (p, q) => [p[0] - q[0], p[1] - q[1]];
 const mul = (p, s) => [p[0] * s, p[1] * s];
-const dot = (p, q) => p[0] * q[0] + p[1] * q[1];
 const dist = (p, q) => Math.hypot(...p.map((x, i) => x - q[i]));      // in the plane or in space
-const unit = (p) => { const n = Math.hypot(p[0], p[1]) || 1; return [p[0] / n, p[1] / n]; };
-const clamp = (x, lo, hi) => Math.min(Math.max(x, lo), hi);
 const poly = (pts) => pts.map((p) => `${p[0]},${-p[1]}`).join(" ");
-const seg = (p, q) => ({ x1: p[0], y1: -p[1], x2: q[0], y2: -q[1] });
+/** A polyline broken where a point is null (outside the picture's reach). */
+const broken = (pts) => pts.map((p, i) => (p[0] === null ? "" : `${i && pts[i - 1][0] !== null ? "L" : "M"}${p[0]},${-p[1]}`)).join(" ");
+/** A mark's group "ROLE:KEY" as [role, key]. */
+const split = (group) => { if (!group) return [null, null]; const i = group.indexOf(":"); return [group.slice(0, i), group.slice(i + 1)]; };
+const kindOf = (g) => g.dataset.vector?.split(":")[0];
 
 /** Display a group or not (`display`, which its children cannot override). */
 function visible(node, on) {
   node.style.display = on ? "" : "none";
 }
 
-function setSeg(line, p, q) {
-  line.setAttribute("x1", p[0]); line.setAttribute("y1", -p[1]);
-  line.setAttribute("x2", q[0]); line.setAttribute("y2", -q[1]);
-}
-
-/** Put a label at `p` + `offset` (model units), anchored away from `towards` when given. */
-function placeText(text, p, offset, towards = null) {
-  text.setAttribute("x", p[0] + offset[0]);
-  text.setAttribute("y", -(p[1] + offset[1]));
-  const c = towards ? towards[0] : 1, s = towards ? towards[1] : 1;
+/** Put a label `gap` (model units) from `p` towards `towards` (up and right when null),
+ * anchored on the side it leaves from. */
+function placeText(text, p, gap, towards) {
+  const n = towards ? Math.hypot(towards[0], towards[1]) : 0;
+  const [c, s] = n > 0 ? [towards[0] / n, towards[1] / n] : [Math.SQRT1_2, Math.SQRT1_2];
+  text.setAttribute("x", p[0] + c * gap);
+  text.setAttribute("y", -(p[1] + s * gap));
   text.setAttribute("text-anchor", c > 0.3 ? "start" : c < -0.3 ? "end" : "middle");
   text.setAttribute("dominant-baseline", s > 0.3 ? "text-after-edge" : s < -0.3 ? "hanging" : "middle");
-}
-
-function distinct(pts, tol) {
-  const out = [];
-  for (const p of pts) if (out.every((q) => dist(p, q) > tol)) out.push(p);
-  return out;
-}
-
-function extremes(pts) {
-  let best = [pts[0], pts[1]], d = -1;
-  for (let i = 0; i < pts.length; i++) for (let j = i + 1; j < pts.length; j++) {
-    const e = dist(pts[i], pts[j]);
-    if (e > d) { d = e; best = [pts[i], pts[j]]; }
-  }
-  return best;
-}
-
-function convexHull(pts) {
-  const p = [...pts].sort((a, b) => a[0] - b[0] || a[1] - b[1]);
-  const cross = (o, a, b) => (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-  const lower = [], upper = [];
-  for (const q of p) { while (lower.length >= 2 && cross(lower.at(-2), lower.at(-1), q) <= 0) lower.pop(); lower.push(q); }
-  for (const q of p.reverse()) { while (upper.length >= 2 && cross(upper.at(-2), upper.at(-1), q) <= 0) upper.pop(); upper.push(q); }
-  return lower.slice(0, -1).concat(upper.slice(0, -1));
-}
-
-function area(h) {
-  let s = 0;
-  for (let i = 0; i < h.length; i++) { const p = h[i], q = h[(i + 1) % h.length]; s += p[0] * q[1] - q[0] * p[1]; }
-  return Math.abs(s) / 2;
 }

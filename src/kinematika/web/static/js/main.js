@@ -43,13 +43,19 @@ function request(extra = {}) {
   return body;
 }
 
+/** The box the figure keeps showing (a zoom, a pan, a drag), for the scene's picture to be
+ * drawn for it; none when the figure frames the scene. */
+function keptFrame() {
+  return figure.keep && figure.view ? { frame: figure.view } : {};
+}
+
 /** Solve, draw and sweep the model in the editor (stale answers are dropped), and sketch
  * it for the builder (where its points are, solvable or not yet). */
 async function analyse() {
   const gen = ++state.gen;
   $("busy").hidden = false;
   const [solved, drawn, swept, sketched] = await Promise.allSettled([
-    post("solve", request()), post("draw", request({ centres: true, lang: state.lang })),
+    post("solve", request()), post("draw", request({ centres: true, lang: state.lang, ...keptFrame() })),
     post("sweep", request({ skip_bad: true })), post("sketch", { model: editor.text, format: state.fmt, lang: state.lang }),
   ]);
   if (gen !== state.gen) return;
@@ -330,7 +336,7 @@ async function settle() {
   }
   const move = posedAt(k);
   try {
-    const [sol, scene] = await Promise.all([post("solve", request(move)), post("draw", request({ ...move, centres: true }))]);
+    const [sol, scene] = await Promise.all([post("solve", request(move)), post("draw", request({ ...move, centres: true, frame: figure.view }))]);
     if (gen !== state.gen || k !== state.row) return;
     answers.resolved(sol, k);
     place(scene, k);

@@ -34,7 +34,7 @@ export class Answers {
     });
     rows.push(section(t("body"), t("angle-h"), t("rotation-h"), t("omega-h"), t("alpha-h")));
     for (const [name, b] of Object.entries(solution.bodies)) {
-      const line = scene && referenceLine(scene.bodies[name], scene.bodies);
+      const line = scene && referenceLine(scene.bodies[name]);
       const sw = sweep && sweep.bodies[name];
       const planar = typeof b.omega === "number" || typeof b.omega === "string";
       const a = `bodies.${attr(name)}`;

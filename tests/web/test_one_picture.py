@@ -1,0 +1,208 @@
+"""One scene, painted twice: the page's figure (`figure.js`, in Chromium) and the matplotlib
+painter (`draw.paint`) paint the same picture (`draw.picture`'s marks), primitive by primitive.
+
+For several examples the page loads the model, paints the scene `/api/draw` gave it as it is
+(no motion: `figure.set(scene, null)`), and the SVG elements it made are read back: how many
+of each kind (dots, lines, polygons, circles, rings, arrows, texts), where (model
+coordinates), in which colours. The same model, drawn with the page's options, is painted by
+matplotlib into a figure, and its artists are read back the same way. Neither side is
+compared with numbers the other produced: each is read from what it painted.
+"""
+from __future__ import annotations
+
+import math
+from collections import Counter
+
+import numpy as np
+import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.colors import to_hex
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.patches import Annulus, Circle, FancyArrowPatch, Polygon
+
+from kinematika import commands
+from kinematika.draw import DrawOptions
+from kinematika.draw.canvas import Canvas
+from kinematika.draw.figure import zoomable
+from kinematika.draw.lock import MATPLOTLIB
+from kinematika.draw.paint import paint
+from kinematika.web.scene_json import _unmath
+from tests.conftest import BROWSER_WAIT, EXAMPLES
+
+from .test_build import example, settled
+
+pytestmark = pytest.mark.browser
+
+
+@pytest.fixture(scope="module")
+def page(browser, server):
+    context = browser.new_context(viewport={"width": 1400, "height": 900})
+    pg = context.new_page()
+    pg.set_default_timeout(BROWSER_WAIT)          # a hang detector
+    errors: list[str] = []
+    pg.on("pageerror", lambda e: errors.append(str(e)))
+    pg.goto(server.url)
+    settled(pg, 0)
+    yield pg
+    context.close()
+    assert not errors, errors
+
+PT = 4 / 3                     # the page's CSS pixels per point (figure.js)
+EXAMPLES_DRAWN = ["four_bar", "eccentric_cam", "planetary_gears", "slider_crank",
+                  "quick_return", "pin_in_circular_slot", "robot_arm_3d"]
+
+READ_SVG = """() => {
+  const f = window.kinematika.figure;
+  f.set(window.kinematika.state.scene, null, 0);          // the picture as given, no motion
+  const root = document.querySelector('#figure .content');
+  const pts = (s) => s.trim().split(/\\s+/).map((p) => p.split(',').map(Number)).map(([x, y]) => [x, -y]);
+  const path = (d) => d.trim().split(/\\s+/).filter(Boolean).map((s) => s.slice(1).split(',').map(Number)).map(([x, y]) => [x, -y]);
+  const out = [];
+  for (const layer of ['under', 'bodies', 'pins', 'overlay', 'labels', 'vectors']) {
+    for (const n of root.querySelectorAll(`:scope > g.${layer} *`)) {
+      const tag = n.tagName;
+      if (tag === 'tspan' || tag === 'title' || (n.closest('g.arrow') && n !== n.closest('g.arrow'))) continue;
+      if (tag === 'g' && !n.classList.contains('arrow')) continue;
+      const stroke = n.getAttribute('stroke'), fill = n.getAttribute('fill');
+      if (tag === 'g') {
+        const [line, ...heads] = n.children;
+        out.push({ kind: 'arrow', hidden: n.getAttribute('visibility') === 'hidden', line: pts(line.getAttribute('points') || ''),
+                   heads: heads.map((h) => pts(h.getAttribute('points') || '')), stroke: line.getAttribute('stroke') });
+      } else if (tag === 'text') out.push({ kind: 'text', content: n.textContent });
+      else if (tag === 'circle' && n.classList.contains('dot')) out.push({ kind: 'dot', at: [+n.getAttribute('cx'), -n.getAttribute('cy')], fill });
+      else if (tag === 'polygon' && n.classList.contains('dot')) {
+        const p = pts(n.getAttribute('points'));
+        out.push({ kind: 'dot', at: [p.reduce((s, q) => s + q[0], 0) / p.length, p.reduce((s, q) => s + q[1], 0) / p.length], fill });
+      } else if (tag === 'circle' && n.classList.contains('model-width')) {
+        out.push({ kind: 'ring', at: [+n.getAttribute('cx'), -n.getAttribute('cy')], r: +n.getAttribute('r') + n.getAttribute('stroke-width') / 2 });
+      } else if (tag === 'circle') out.push({ kind: 'circle', at: [+n.getAttribute('cx'), -n.getAttribute('cy')], r: +n.getAttribute('r'), stroke });
+      else if (tag === 'polyline') out.push({ kind: 'line', points: pts(n.getAttribute('points')), stroke });
+      else if (tag === 'path') out.push({ kind: 'line', points: path(n.getAttribute('d')), stroke });
+      else if (tag === 'polygon') out.push({ kind: 'polygon', points: pts(n.getAttribute('points')), stroke, fill });
+      else out.push({ kind: tag });
+    }
+  }
+  return { prims: out, px: f.px, frame: window.kinematika.state.scene.picture.frame,
+           lang: window.kinematika.state.lang };
+}"""
+
+
+def matplotlib_prims(name: str, lang: str) -> tuple[list[dict], list, list[float], float]:
+    """The example drawn as the page asks (`centres`, its language), its marks painted by
+    matplotlib, read back from the artists and the label board; the marks and the frame."""
+    options = DrawOptions(centres=True, lang=lang)
+    _, scene = commands.solved_scene(EXAMPLES / f"{name}.yaml", options)
+    marks, frame = zoomable(scene, options)
+    with MATPLOTLIB:
+        fig = Figure(figsize=(8, 6))
+        FigureCanvasAgg(fig)
+        ax = fig.add_axes((0, 0, 1, 1))
+        ax.set_xlim(frame.xmin, frame.xmax)
+        ax.set_ylim(frame.ymin, frame.ymax)
+        cv = Canvas(ax, scene, frame)
+        paint(cv, marks)
+        out = [_artist(a) for a in ax.lines + ax.patches]
+        out += [{"kind": "text", "content": _unmath(label.text)} for label in cv.board.labels]
+    return out, marks, [frame.xmin, frame.ymin, frame.xmax, frame.ymax], scene.size
+
+
+def _artist(a) -> dict:
+    if isinstance(a, Line2D):
+        xy = np.asarray(a.get_xydata(), dtype=float)
+        if a.get_marker() not in (None, "None", "") and a.get_linestyle() in ("None", "", " "):
+            return {"kind": "dot", "at": xy[0], "fill": to_hex(a.get_markerfacecolor()) if a.get_markerfacecolor() != "none" else "none"}
+        return {"kind": "line", "points": xy[np.all(np.isfinite(xy), axis=1)], "stroke": to_hex(a.get_color())}
+    if isinstance(a, FancyArrowPatch):
+        return {"kind": "arrow", "ends": np.asarray(a._posA_posB, dtype=float)}
+    if isinstance(a, Annulus):
+        return {"kind": "ring", "at": np.asarray(a.get_center()), "r": max(a.get_radii())}
+    if isinstance(a, Circle):
+        return {"kind": "circle", "at": np.asarray(a.get_center()), "r": a.get_radius(),
+                "stroke": to_hex(a.get_edgecolor()) if a.get_linewidth() > 0 else "none"}
+    if isinstance(a, Polygon):
+        return {"kind": "polygon", "points": _open(a.get_xy())}
+    raise AssertionError(f"an artist of no mark: {a!r}")
+
+
+def _open(points) -> np.ndarray:
+    """A closed outline's vertices, the first not repeated at the end (matplotlib closes a
+    polygon by repeating it unless it already is)."""
+    pts = np.asarray(points, dtype=float)
+    return pts[:-1] if len(pts) > 1 and np.allclose(pts[0], pts[-1], rtol=0, atol=1e-12 * (1 + np.abs(pts).max())) else pts
+
+
+def _hex(colour: str) -> str:
+    """A colour as #rrggbb ("none" and patterns as they are)."""
+    return colour if colour in (None, "none") or colour.startswith("url(") else to_hex(colour)
+
+
+def _key(p) -> tuple:
+    return tuple(np.round(np.asarray(p, dtype=float).ravel()[:2], 6))
+
+
+@pytest.mark.parametrize("name", EXAMPLES_DRAWN)
+def test_the_page_and_matplotlib_paint_the_same_primitives(page, name):
+    page.evaluate("window.kinematika.figure.keep = null")
+    gen = page.evaluate("window.kinematika.state.gen")
+    example(page, f"{name}.yaml")
+    settled(page, gen)
+    svg = page.evaluate(READ_SVG)
+    mpl, marks, frame, size = matplotlib_prims(name, svg["lang"])
+    assert svg["frame"] == pytest.approx(frame, abs=1e-9 * size)
+    page_prims = [p for p in svg["prims"] if not p.get("hidden")]
+    for p in page_prims:
+        if p["kind"] == "polygon":
+            p["points"] = _open(p["points"])
+    assert Counter(p["kind"] for p in page_prims) == Counter(p["kind"] for p in mpl), name
+    tol = 1e-6 * size
+
+    def close(a, b) -> bool:
+        return np.allclose(np.asarray(a, dtype=float), np.asarray(b, dtype=float), atol=tol, rtol=0)
+
+    def pair(kind: str, key, same) -> None:
+        """Every primitive of `kind` on the page has one in matplotlib at the same place."""
+        mine = sorted((p for p in page_prims if p["kind"] == kind), key=key)
+        theirs = sorted((p for p in mpl if p["kind"] == kind), key=key)
+        for a, b in zip(mine, theirs):
+            assert same(a, b), f"{name}: {kind} {a} ≠ {b}"
+
+    pair("dot", lambda p: (_key(p["at"]), _hex(p["fill"])),
+         lambda a, b: close(a["at"], b["at"]) and _hex(a["fill"]) == _hex(b["fill"]))
+    pair("circle", lambda p: (_key(p["at"]), round(p["r"], 6)),
+         lambda a, b: close(a["at"], b["at"]) and math.isclose(a["r"], b["r"], abs_tol=tol))
+    pair("ring", lambda p: (_key(p["at"]), round(p["r"], 6)),
+         lambda a, b: close(a["at"], b["at"]) and math.isclose(a["r"], b["r"], abs_tol=tol))
+    pair("polygon", lambda p: (len(p["points"]), _key(p["points"][0])),
+         lambda a, b: close(a["points"], b["points"]))
+    pair("line", lambda p: (len(p["points"]), _key(p["points"][0]), _key(p["points"][-1]), _hex(p["stroke"])),
+         lambda a, b: close(a["points"], b["points"]) and _hex(a["stroke"]) == _hex(b["stroke"]))
+    # an arrow: its tip where the mark ends, its tail where it starts (double-headed: both
+    # tips), set sideways by its mark's shift (points, at the page's scale)
+    def arrow_ends(a: dict) -> np.ndarray:
+        tip, tail = np.array(a["heads"][0][0]), np.array(a["heads"][1][0] if len(a["heads"]) > 1 else a["line"][0])
+        return np.array([tail, tip])
+
+    def offset(m) -> np.ndarray:
+        d = (m.points[1] - m.points[0]) / np.linalg.norm(m.points[1] - m.points[0])
+        return np.array([-d[1], d[0]]) * m.shift * PT * svg["px"]
+
+    drawn = [m for m in marks if m.kind == "arrow" and np.linalg.norm(m.points[1] - m.points[0]) > 0]
+    painted = [b["ends"] for b in mpl if b["kind"] == "arrow"]
+    for a in (p for p in page_prims if p["kind"] == "arrow"):
+        ends = arrow_ends(a)
+        k = next((k for k, b in enumerate(painted) for m in drawn
+                  if close(b, m.points) and close(ends, b + offset(m))), None)
+        assert k is not None, f"{name}: an arrow {ends} not in matplotlib"
+        painted.pop(k)
+    # texts: the same labels (a label that says words in the page's language, such as a far
+    # centre's "far off at", begins with the same name)
+    said = {_unmath(m.text): _unmath(m.about["name"]) for m in marks
+            if m.kind == "text" and m.about and m.about.get("say")}
+    mine = Counter(p["content"] for p in page_prims if p["kind"] == "text")
+    theirs = Counter(p["content"] for p in mpl if p["kind"] == "text")
+    for text, n in theirs.items():
+        if text in said:
+            assert sum(k for t, k in mine.items() if t.startswith(said[text] + " ")) >= n, (name, text)
+        else:
+            assert mine[text] == n, (name, text, mine)
