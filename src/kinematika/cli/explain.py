@@ -21,6 +21,9 @@ def explain(model: Path = ModelArg, lang: str = LangOpt, fmt: str = FormatOpt,
             length_unit: str = UnitOpt, sets: Optional[list[str]] = SetOpt,
             moves: Optional[list[str]] = MoveOpt, assembly: Optional[int] = AssemblyOpt) -> None:
     """Step-by-step solution: structure, vector equations with M/D/?, polygons, centres."""
+    from ..languages import known
+
+    guarded(False, lambda: known(lang, "--lang", "usage"))      # before the explanation's imports (2 s)
     from ..commands import explain_text
 
     text = guarded(False, lambda: explain_text(model, lang, fmt, symbolic or None, length_unit,
