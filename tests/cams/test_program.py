@@ -19,6 +19,8 @@ from kinematika.cams.export import COLUMNS, csv_text, svg_text, write_dxf
 from kinematika.cams.program import build
 from kinematika.cams.spec import design, parse
 from kinematika.errors import KinematikaError
+
+from fuzz.forks import run_forked
 from tests.conftest import ROOT
 
 D = math.radians
@@ -151,9 +153,15 @@ def test_the_dxf_reads_back_with_its_profile_on_the_cam(norton, tmp_path):
 
 # --- the command ------------------------------------------------------------------------------
 
-def run(*args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "kinematika", "cam", *args], capture_output=True, text=True,
-                          cwd=ROOT, timeout=600)
+def run(*args: str, fresh: bool = False) -> subprocess.CompletedProcess:
+    """`kinematika cam ARGS` in a process of its own: a fresh `python -m kinematika` with
+    `fresh`, else a fork of this process (`fuzz.forks`: the same `cli.main`, its own streams
+    and exit status, without the start-up)."""
+    if fresh:
+        return subprocess.run([sys.executable, "-m", "kinematika", "cam", *args], capture_output=True,
+                              text=True, cwd=ROOT, timeout=600)
+    done = run_forked(["cam", *args], cwd=ROOT)
+    return subprocess.CompletedProcess(done.args, done.status, done.stdout, done.stderr)
 
 
 def test_the_command_summarises_warns_and_writes(tmp_path):
@@ -165,7 +173,7 @@ def test_the_command_summarises_warns_and_writes(tmp_path):
     # the SHM jump in time units: π²h/(2β²)·ω² = 50·4π² mm/s²
     assert abs(data["jumps"][0]["amount"]) == pytest.approx(50 * 4 * math.pi**2)
     assert (tmp_path / "c.csv").stat().st_size > 0 and (tmp_path / "p.png").read_bytes()[:4] == b"\x89PNG"
-    text = run(str(NORTON))
+    text = run(str(NORTON), fresh=True)         # a new process prints nothing but the summary
     assert text.returncode == 0 and "largest pressure angle" in text.stdout and text.stderr == ""
 
 

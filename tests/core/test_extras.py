@@ -1,13 +1,19 @@
 """Optional dependencies hidden in turn: each command that uses one either runs without it
 or says in one line what to install (in the README's terms) and exits with status 2; never
-an internal error. And a study stopped half way leaves only what can be resumed."""
+an internal error. And a study stopped half way leaves only what can be resumed.
+
+A command runs in a process of its own: a fork of this one with the modules hidden
+(`without`), or, for a study in local processes, a fresh interpreter that never had dask
+(`fresh_without`)."""
 from __future__ import annotations
 
 import subprocess
 import sys
+from contextlib import contextmanager
 
 import pytest
 
+from fuzz.forks import run_forked
 from tests.conftest import ROOT
 
 FAMILY = ROOT / "docs" / "explore" / "four_bar_family.yaml"
@@ -27,14 +33,37 @@ if __name__ == "__main__":
 """
 
 
-def without(hidden: str, *args: str, cwd=ROOT) -> subprocess.CompletedProcess:
-    """`kinematika ARGS` with the modules `hidden` (comma-separated) not importable."""
+def fresh_without(hidden: str, *args: str, cwd=ROOT) -> subprocess.CompletedProcess:
+    """`kinematika ARGS` in a fresh interpreter with the modules `hidden` (comma-separated)
+    not importable."""
     return subprocess.run([sys.executable, "-c", RUN, hidden, *args], cwd=cwd, capture_output=True,
                           text=True, timeout=600)
 
 
-def one_line(done: subprocess.CompletedProcess) -> str:
-    assert done.returncode == 2, done.stderr
+@contextmanager
+def hidden_modules(hidden: str):
+    """The modules `hidden` (comma-separated) and their submodules not importable in the
+    block (an import of one raises ImportError, as if it were not installed)."""
+    names = [n for n in hidden.split(",") if n]
+    saved = {k: v for k, v in sys.modules.items() if any(k == n or k.startswith(n + ".") for n in names)}
+    sys.modules.update(dict.fromkeys([*saved, *names]))
+    try:
+        yield
+    finally:
+        for n in names:
+            sys.modules.pop(n, None)
+        sys.modules.update(saved)
+
+
+def without(hidden: str, *args: str, cwd=ROOT):
+    """`kinematika ARGS` in a forked process (`fuzz.forks`) with the modules `hidden` not
+    importable: its status, standard output and error."""
+    with hidden_modules(hidden):
+        return run_forked(list(args), cwd=cwd)
+
+
+def one_line(done) -> str:
+    assert done.status == 2, done.stderr
     lines = done.stderr.strip().splitlines()
     assert len(lines) == 1 and "Traceback" not in done.stderr and "internal error" not in done.stderr, done.stderr
     return lines[0]
@@ -55,9 +84,9 @@ def test_a_study_without_dask_runs_in_local_processes(tmp_path):
     import pyarrow.parquet as pq
 
     alone = without("", *STUDY, "--workers", "1", "--chunk", "40", "-o", str(tmp_path / "one.parquet"))
-    pooled = without("dask,distributed", *STUDY, "--workers", "2", "--chunk", "40",
-                     "-o", str(tmp_path / "two.parquet"))
-    assert alone.returncode == 0 and pooled.returncode == 0, pooled.stderr
+    pooled = fresh_without("dask,distributed", *STUDY, "--workers", "2", "--chunk", "40",
+                           "-o", str(tmp_path / "two.parquet"))
+    assert alone.status == 0 and pooled.returncode == 0, pooled.stderr
     one, two = pq.read_table(tmp_path / "one.parquet"), pq.read_table(tmp_path / "two.parquet")
     assert one.num_rows == 144 and one.equals(two)          # 12 × 12 designs, the same rows
 
@@ -120,7 +149,7 @@ def test_a_study_that_computed_nothing_leaves_nothing(monkeypatch, tmp_path):
     assert info.value.message == "cannot reach the Dask scheduler at tcp://nowhere:8786"
     assert list(tmp_path.iterdir()) == []
     monkeypatch.undo()
-    write_study(study, out)                                  # the next run is not refused
+    write_study(study, out, workers=1)                       # the next run is not refused
     assert out.exists()
 
 
@@ -130,7 +159,7 @@ def test_a_study_that_computed_part_says_how_to_resume(monkeypatch, tmp_path):
     study, out, info = _stopped_study(monkeypatch, tmp_path, 2)
     assert info.value.message.endswith("; 80 designs are kept in s.parquet.parts: run again with --resume to go on")
     monkeypatch.undo()
-    write_study(study, out, resume=True)
+    write_study(study, out, resume=True, workers=1)
     import pyarrow.parquet as pq
 
     assert pq.read_table(out).num_rows == 144 and not (tmp_path / "s.parquet.parts").exists()
@@ -143,7 +172,7 @@ def test_a_dxf_without_ezdxf_says_what_to_install(tmp_path):
     assert "needs ezdxf, which is not installed" in line and "'.[cad]'" in line
     done = without("ezdxf", "cam", str(ROOT / "examples" / "cam_roller_follower.yaml"),
                    "--csv", str(tmp_path / "cam.csv"))
-    assert done.returncode == 0 and (tmp_path / "cam.csv").exists()
+    assert done.status == 0 and (tmp_path / "cam.csv").exists()
 
 
 def test_sheets_without_playwright_are_written_as_html_and_say_why(tmp_path):
@@ -151,6 +180,6 @@ def test_sheets_without_playwright_are_written_as_html_and_say_why(tmp_path):
     it the quiz, the key and the HTML sheets are written, and one line says what to install."""
     done = without("playwright,playwright.sync_api", "exercise", str(ROOT / "examples" / "exercises" / "four_bar.yaml"),
                    "--vary", "a=40:60:5", "--count", "2", "--seed", "1", "--no-solutions", "-o", str(tmp_path / "ex"))
-    assert done.returncode == 0, done.stderr
+    assert done.status == 0, done.stderr
     assert "PDF skipped: Playwright is not installed (.venv/bin/pip install -e '.[exercise]'" in done.stdout + done.stderr
     assert {"quiz.xml", "key.csv", "sheets.html"} <= {p.name for p in (tmp_path / "ex").iterdir()}

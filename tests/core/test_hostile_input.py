@@ -4,14 +4,15 @@ from __future__ import annotations
 
 import json
 import math
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 import yaml
 
 from kinematika import KinematikaError, Mechanism, run_sweep, solve
+
+from fuzz.contract import Run, run_cli
+from fuzz.forks import run_forked
 
 from .models import four_bar, four_bar_closed_form
 
@@ -24,8 +25,10 @@ def error_of(source) -> KinematikaError:
     return info.value
 
 
-def cli(*args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "kinematika", *args], capture_output=True, text=True)
+def cli(*args: str, fresh: bool = False) -> Run:
+    """`kinematika ARGS` in a process of its own: a fork of this one (`fuzz.forks`, the
+    modules already imported), or with `fresh` a new `python -m kinematika`."""
+    return run_cli(list(args)) if fresh else run_forked(list(args))
 
 
 # files ------------------------------------------------------------------------------------
@@ -110,7 +113,7 @@ def test_a_large_rate_is_not_rounded_away_by_a_larger_acceleration(tmp_path):
     path = tmp_path / "fast.json"
     path.write_text(json.dumps(four_bar(parameters={"w2": 1e12},
                                         drivers=[{"omega": "crank", "value": "w2", "alpha": 1e14}])))
-    out = cli("solve", str(path), "--json")
+    out = cli("solve", str(path), "--json", fresh=True)
     data = json.loads(out.stdout)
     w3, _, _, _ = four_bar_closed_form(w2=1e12)
     assert data["bodies"]["crank"]["omega"] == pytest.approx(1e12)
@@ -180,11 +183,11 @@ def test_the_api_reads_a_model_given_as_text():
 def test_usage_errors_follow_json_and_exit_2():
     model = str(EXAMPLES / "four_bar.yaml")
     out = cli("sweep", model, "--steps", "abc", "--json")
-    assert out.returncode == 2
+    assert out.status == 2
     error = json.loads(out.stdout)["error"]
     assert (error["kind"], error["where"]) == ("usage", "--steps")
     plain = cli("sweep", model, "--steps", "abc")
-    assert plain.returncode == 2 and "Traceback" not in plain.stderr
+    assert plain.status == 2 and "Traceback" not in plain.stderr
     assert plain.stderr.startswith("error (usage): Invalid value for '--steps'")
     assert len(plain.stderr.strip().splitlines()) == 1
 
@@ -198,7 +201,7 @@ def test_usage_errors_follow_json_and_exit_2():
 def test_writing_into_a_missing_folder_is_an_output_error(tmp_path, args):
     model, missing = str(EXAMPLES / "four_bar.yaml"), str(tmp_path / "nowhere")
     out = cli(*(a.format(model=model, missing=missing) for a in args))
-    assert out.returncode == 2 and "Traceback" not in out.stderr
+    assert out.status == 2 and "Traceback" not in out.stderr
     assert out.stderr.startswith("error (output):") and "there is no folder" in out.stderr
 
 
@@ -209,7 +212,7 @@ def test_out_of_range_options_are_usage_errors(tmp_path, args):
     output = ["-o", str(tmp_path / ("x.gif" if command == "animate" else "x.png"))]
     out = cli(command, str(EXAMPLES / "four_bar.yaml"), *options,
               *(output if command != "sweep" else []))
-    assert out.returncode == 2 and out.stderr.startswith("error (usage):")
+    assert out.status == 2 and out.stderr.startswith("error (usage):")
     assert math.isfinite(len(out.stderr)) and "Traceback" not in out.stderr
 
 

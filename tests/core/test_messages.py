@@ -16,6 +16,7 @@ import re
 import subprocess
 import sys
 from pathlib import Path
+from unittest import mock
 
 import pytest
 from fluent.syntax import ast as fluent
@@ -25,6 +26,8 @@ from kinematika import KinematikaError
 from kinematika.errors import KinematikaWarning, Said, speaking
 from kinematika.errors.said import LOCALES
 from kinematika.languages import LANGS, from_command_line, from_locale
+
+from fuzz.forks import run_forked
 
 from .models import four_bar
 
@@ -335,11 +338,18 @@ def test_the_command_line_takes_lang_else_the_locale(environ, argv, lang):
         assert from_locale(environ) == lang
 
 
-def _kinematika(*args: str, lang_env: str = "C.UTF-8") -> subprocess.CompletedProcess:
+def _kinematika(*args: str, lang_env: str = "C.UTF-8", fresh: bool = False) -> subprocess.CompletedProcess:
+    """`kinematika ARGS` in a process of its own under the locale `lang_env`: a fresh
+    `python -m kinematika` with `fresh`, else a fork of this process (`fuzz.forks`: the same
+    `cli.main`, which reads the environment as a new process does, without the start-up)."""
     env = {k: v for k, v in os.environ.items() if k not in ("LC_ALL", "LC_MESSAGES", "LANGUAGE")}
     env["LANG"] = lang_env
-    return subprocess.run([sys.executable, "-m", "kinematika", *args], capture_output=True, text=True, env=env,
-                          timeout=300)
+    if fresh:
+        return subprocess.run([sys.executable, "-m", "kinematika", *args], capture_output=True, text=True,
+                              env=env, timeout=300)
+    with mock.patch.dict(os.environ, env, clear=True):
+        run = run_forked(list(args))
+    return subprocess.CompletedProcess(run.args, run.status, run.stdout, run.stderr)
 
 
 @pytest.fixture
@@ -359,7 +369,7 @@ def models(tmp_path):
 def test_the_command_line_says_errors_and_warnings_in_basque(models, how):
     free, radians = models
     extra, env = (["--lang", "eu"], "C.UTF-8") if how == "--lang" else ([], "eu_ES.UTF-8")
-    run = _kinematika("solve", str(free), *extra, lang_env=env)
+    run = _kinematika("solve", str(free), *extra, lang_env=env, fresh=how == "LANG")      # the locale in a new process
     assert run.returncode == 2
     assert run.stderr.startswith("errorea (mobility): drivers: mekanismoak askatasun-gradu 1 du, baina eragileek "
                                  "0 baldintza independente ematen dituzte"), run.stderr

@@ -1,5 +1,6 @@
-"""The fuzzing campaign (`campaign.py`) in the test suite: a few dozen generated inputs on
-every run (each through the command line in its own process), a thousand in a deep run.
+"""The fuzzing campaign (`campaign.py`) in the test suite: 15 generated inputs on every run,
+among them one of each class (each through the command line in its own process), a
+thousand in a deep run.
 
 The inputs are drawn from a fixed seed, so every run of the suite, on any day, checks the
 same inputs (a failure names its seed and number: `tests/fuzz/campaign.py --seed S --case N`
@@ -23,14 +24,16 @@ from .cases import CLASSES, case
 from .contract import check_run
 from .forks import run_forked
 
-SEED = 20261127          # the suite's campaign: the same inputs on every run and every day
+SEED = 20261128          # the suite's campaign: the same inputs on every run and every day; its
+                         # first 15 hold every class of input
+DEFAULT_COUNT = 15
 
 
 def _count() -> int:
     raw = os.environ.get("KINEMATIKA_FUZZ", "")
     if raw.isdigit():
         return int(raw)
-    return 1000 if DEEP else 30
+    return 1000 if DEEP else DEFAULT_COUNT
 
 
 def _seed() -> int:
@@ -48,6 +51,8 @@ def test_the_campaign_meets_the_contract():
 def test_every_class_of_input_is_drawn():
     drawn = {case(0, n).klass for n in range(200)}
     assert drawn == set(CLASSES)
+    # the suite's few inputs are one of each class at least
+    assert {case(SEED, n).klass for n in range(DEFAULT_COUNT)} == set(CLASSES)
 
 
 def test_a_forked_run_is_a_separate_process_with_its_own_status_and_streams(tmp_path):

@@ -2,6 +2,11 @@
 exhaustion, tracebacks, terminal injection, wrong answers, inconsistent messages. Each runs
 the real path (a file on disk, the command line where the class lives there) and checks
 the outcome against the contract, with values derived by hand where an answer is expected.
+
+The command line runs in a process of its own: a fork of this one (`forks.run_forked`:
+its own streams, exit status, limits, with the modules already imported) for most cases,
+and a fresh `python -m kinematika` (`contract.run_cli`) for one case of each path — the
+fast path, typer's, a figure — so that the real executable is met too.
 """
 from __future__ import annotations
 
@@ -23,6 +28,7 @@ from kinematika.text import brief, markup, shown
 
 from core.models import four_bar as core_four_bar
 from .contract import EXAMPLES, call, check_error, check_run, run_cli
+from .forks import run_forked
 from .mutations import alias_bomb, rename
 from .scaling import is_close, expected, numeric, scaled
 
@@ -103,8 +109,8 @@ def test_a_sweep_too_large_to_hold_is_a_clear_error_from_the_file_or_the_options
     # 4 bodies × (angle, ω, α) + 8 material points × 3 planar vectors = 60 numbers a row
     assert (err.kind, err.where) == ("schema", "sweep.steps")
     assert "of 60 values each" in err.message and f"at most {limits.SWEEP_VALUES // 60 - 1} steps" in err.message
-    run = run_cli(["sweep", str(write(tmp_path, "four_bar.json", four_bar())), "--steps", "9000000",
-                   "--json"])
+    run = run_forked(["sweep", str(write(tmp_path, "four_bar.json", four_bar())), "--steps", "9000000",
+                      "--json"])
     check_run(run)
     assert json.loads(run.stdout)["error"]["where"] == "--steps"
 
@@ -187,7 +193,7 @@ def test_a_long_name_is_refused_and_a_long_title_is_shown_cut(tmp_path):
     assert err.kind == "syntax" and f"names have at most {limits.NAME_CHARS}" in err.message
     tree = four_bar()
     tree["name"] = "x" * 30_000
-    run = run_cli(["solve", str(write(tmp_path, "title.json", tree))])
+    run = run_forked(["solve", str(write(tmp_path, "title.json", tree))])
     check_run(run)
     assert "x" * limits.NAME_CHARS not in run.stdout.replace("\n", "")
 
@@ -200,7 +206,7 @@ def test_a_lone_surrogate_is_refused_not_a_crash(tmp_path):
     path.write_text(json.dumps(tree))           # ASCII JSON with the escape \ud800
     err = error_of(path)
     assert err.kind == "syntax" and "lone surrogate" in err.message
-    check_run(run_cli(["solve", str(path)]))
+    check_run(run_forked(["solve", str(path)]))
 
 
 @pytest.mark.parametrize("name", ["[/]", "[bold]x[/bold]", "\x1b]0;owned\x07\x1b[2J", "a\rb"])
@@ -208,12 +214,12 @@ def test_names_are_printed_as_written_never_as_markup_or_terminal_codes(tmp_path
     tree = rename(four_bar(), "coupler", name + "c")
     tree["name"] = name
     text = json.dumps(tree)
-    run = run_cli(["solve", str(write(tmp_path, "names.json", text))])
+    run = run_forked(["solve", str(write(tmp_path, "names.json", text))])
     check_run(run)
     assert run.status == 0
     assert "\x1b" not in run.stdout and "\x07" not in run.stdout and "\r" not in run.stdout
     assert shown(name) in run.stdout                            # the escaped name, literally
-    run = run_cli(["centres", str(write(tmp_path, "names.json", text))])
+    run = run_forked(["centres", str(write(tmp_path, "names.json", text))])
     check_run(run)
     assert "\x1b" not in run.stdout and shown(name + "c") in run.stdout
 
@@ -241,7 +247,7 @@ def test_the_assemblies_table_shows_names_as_written(tmp_path, name):
     # printed control characters raw
     tree = four_bar()
     tree["name"] = name
-    run = run_cli(["assemblies", str(write(tmp_path, "named.json", tree))])
+    run = run_forked(["assemblies", str(write(tmp_path, "named.json", tree))])
     check_run(run)
     assert run.status == 0 and shown(name) in run.stdout.replace("\n", "")
     assert not any(c in run.stdout for c in "\x7f\x1b\x07\u202e\ufeff")
@@ -334,10 +340,17 @@ def test_a_path_with_a_newline_gives_one_line(tmp_path):
 
 
 @pytest.mark.parametrize("name", ["emoji.png", "cjk.png"])
-def test_figures_of_names_without_glyphs_print_no_warnings(tmp_path, name):
+def test_figures_of_names_without_glyphs_print_no_warnings(tmp_path, monkeypatch, name):
     label = {"emoji.png": "😀\r", "cjk.png": "中文"}[name]
     text = json.dumps(rename(four_bar(), "coupler", label))
-    run = run_cli(["draw", str(write(tmp_path, "glyphs.json", text)), "-o", str(tmp_path / name)])
+    args = ["draw", str(write(tmp_path, "glyphs.json", text)), "-o", str(tmp_path / name)]
+    if name == "emoji.png":         # a fresh process: matplotlib's first font lookups happen in it
+        run = run_cli(args)
+    else:                           # a fork, whose log records reach its standard error as a fresh one's do
+        import logging
+
+        monkeypatch.setattr(logging.root, "handlers", [])
+        run = run_forked(args)
     check_run(run)
     assert run.status == 0 and "Warning" not in run.stderr and run.stderr.strip() == ""
 
@@ -442,7 +455,7 @@ def test_the_top_of_a_huge_rolling_wheel_has_a_curved_path():
 ])
 def test_every_bad_command_line_value_is_a_usage_error(tmp_path, args, where):
     args = [a.format(model=EXAMPLES / "four_bar.yaml", tmp=tmp_path) for a in args]
-    run = run_cli(args)
+    run = (run_cli if where == "--steps" else run_forked)(args)     # one in a fresh process
     check_run(run)
     assert run.status == 2 and run.stderr.startswith("error (usage):"), run.stderr
     assert where in run.stderr
@@ -451,7 +464,7 @@ def test_every_bad_command_line_value_is_a_usage_error(tmp_path, args, where):
 def test_an_output_error_names_the_file(tmp_path):
     if not os.path.exists("/dev/full"):
         pytest.skip("no /dev/full")
-    run = run_cli(["explain", str(EXAMPLES / "four_bar.yaml"), "-o", "/dev/full"])
+    run = run_forked(["explain", str(EXAMPLES / "four_bar.yaml"), "-o", "/dev/full"])
     check_run(run)
     assert run.stderr.startswith("error (output): -o: cannot write /dev/full: ")
 
@@ -577,5 +590,5 @@ def test_drawing_a_model_with_symbols_keeps_the_budget_of_solve(monkeypatch, tmp
     with pytest.raises(OverBudget) as info:
         draw_scene(path)
     check_error(info.value)
-    run = run_cli(["draw", str(path), "-o", str(tmp_path / "leg.svg")])
+    run = run_forked(["draw", str(path), "-o", str(tmp_path / "leg.svg")])
     assert run.status == 2 and "error (limit)" in run.stderr, run.stderr
