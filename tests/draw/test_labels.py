@@ -1,4 +1,5 @@
-"""Labels read and the drawing fits, on every example and on random linkages drawn with
+"""Labels read and the drawing fits, on one example of each kind (every example in a deep
+run) and on random linkages drawn with
 every instant centre and every acceleration (the most crowded figure a model gives): no
 label covers another by more than a fifth of the smaller (text extents as matplotlib
 measures them), no leader line runs through a label, nothing lies outside the figure.
@@ -17,20 +18,23 @@ from kinematika.draw.labels import LabelBoard, text_extent
 from kinematika.errors import KinematikaError
 
 from properties.mechanisms import linkages
+from tests.conftest import DEEP, KINDS, sampled
 from .artists import label_faults, outside_faults
 
 EXAMPLES = sorted((Path(__file__).parents[2] / "examples").glob("*.yaml"))
 CROWDED = DrawOptions(centres=True, accelerations=True)
+# a crowded figure takes a second or more to lay out: a few random ones by default
+DRAWN = 12 if DEEP else 4
 
 
-@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", sampled(EXAMPLES, KINDS), ids=lambda p: p.stem)
 def test_every_example_reads(path):
     fig = draw(path, options=CROWDED)
     assert label_faults(fig) == []
     assert outside_faults(fig) == []
 
 
-@settings(max_examples=12)
+@settings(max_examples=DRAWN)
 @given(linkages)
 def test_random_linkages_read(m):
     fig = draw(m.tree, options=CROWDED)
@@ -41,7 +45,7 @@ def test_random_linkages_read(m):
 SYMBOLIC = [p for p in EXAMPLES if "draw_at" in p.read_text(encoding="utf-8")]
 
 
-@settings(max_examples=12)
+@settings(max_examples=DRAWN)
 @given(st.sampled_from(SYMBOLIC), st.data())
 def test_symbolic_examples_at_other_sizes_read(path, data):
     """Models of the examples' kinds: each symbolic example drawn at its draw_at values

@@ -12,10 +12,14 @@ from kinematika.draw.options import DrawOptions
 from kinematika.draw.scene import build_scene
 from kinematika.explain import render
 
+from tests.conftest import KINDS, sampled
+
 from .helpers import EXAMPLES, explained
 from .test_text import plain_text
 
-NOTES = sorted(p.stem for p in EXAMPLES.glob("seed_*.yaml")) + sorted(p.stem for p in EXAMPLES.glob("fan_*.yaml"))
+# the notes' examples of each kind (every one in a deep run)
+NOTES = sampled(sorted(p.stem for p in EXAMPLES.glob("seed_*.yaml")) + sorted(p.stem for p in EXAMPLES.glob("fan_*.yaml")),
+                KINDS)
 # the English words the models' names are made of (bodies, joints, points): none may reach a
 # translated explanation
 ENGLISH = {"carrier", "sun", "ring", "planet", "block", "blades", "blade", "shaft", "hub", "sprocket",

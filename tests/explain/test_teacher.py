@@ -11,8 +11,13 @@ import pytest
 from kinematika.explain import render
 from kinematika.explain.catalogue import LANGS
 
+from tests.conftest import KINDS, sampled
+
 from .helpers import WORKED, explained
 from .test_text import plain_text
+
+# the notes' examples of each kind (every one in a deep run)
+NOTES = sampled(WORKED, KINDS)
 
 # the program, as a student must never read it: the solver, in the four languages
 SOLVER = re.compile(r"(?i)\b(solver|resolutor|resolvedor|solucionador|ebazle\w*|programa|program)\b")
@@ -22,7 +27,7 @@ COLOURS = re.compile(r"(?i)\b(red|blue|black|green|grey|gray|rojo|roja|azul|azul
 
 
 @pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", WORKED)
+@pytest.mark.parametrize("name", NOTES)
 def test_no_explanation_mentions_the_solver(name, lang):
     _, doc = explained(name)
     for fmt in ("md", "html"):
@@ -32,7 +37,7 @@ def test_no_explanation_mentions_the_solver(name, lang):
 
 
 @pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", WORKED)
+@pytest.mark.parametrize("name", NOTES)
 def test_no_markdown_mentions_colours(name, lang, monkeypatch):
     from kinematika.explain.document import Drawing
 
@@ -73,7 +78,7 @@ def _number(x: float) -> str:
     return f"{float(x):.4g}".replace("-", "−")
 
 
-@pytest.mark.parametrize("name", WORKED)
+@pytest.mark.parametrize("name", NOTES)
 def test_every_datum_is_stated_in_the_data_section(name):
     """Read off the model file itself (not the explanation's code): every numeric parameter's
     value, every point given by plain numbers, every driver's value and every circle's

@@ -18,6 +18,9 @@ from kinematika.report.json_answer import solution_json
 from kinematika.sweep import run_sweep
 from kinematika.sweep.assemblies import assemblies
 
+from tests.conftest import DEEP
+from tests.model.test_cases import kinematika as run_cli
+
 from .test_constructions import four_bar_tree, freudenstein, norton_rates, slider_crank_tree
 import itertools
 
@@ -181,16 +184,16 @@ def test_every_assembly_keeps_every_body_rigid_and_differs_from_the_others(name,
 
 
 def test_assembly_option_on_the_command_line(tmp_path):
+    """`assemblies` in a child process, as a user runs it; the options' errors in this
+    process (click's runner: the same command and JSON, without an interpreter's start-up)."""
     out = subprocess.run([sys.executable, "-m", "kinematika", "assemblies", str(EXAMPLES / "four_bar.yaml"),
                           "--json"], capture_output=True, text=True, check=True)
     data = json.loads(out.stdout)
     assert [a["number"] for a in data["assemblies"]] == [1, 2]
-    out = subprocess.run([sys.executable, "-m", "kinematika", "solve", str(EXAMPLES / "four_bar.yaml"),
-                          "--assembly", "3", "--json"], capture_output=True, text=True)
-    assert out.returncode == 2 and json.loads(out.stdout)["error"]["kind"] == "usage"
-    out = subprocess.run([sys.executable, "-m", "kinematika", "solve", str(EXAMPLES / "four_bar.yaml"),
-                          "--move", "j1", "--json"], capture_output=True, text=True)
-    assert out.returncode == 2 and json.loads(out.stdout)["error"] == {
+    code, out = run_cli("solve", str(EXAMPLES / "four_bar.yaml"), "--assembly", "3", "--json")
+    assert code == 2 and out["error"]["kind"] == "usage"
+    code, out = run_cli("solve", str(EXAMPLES / "four_bar.yaml"), "--move", "j1", "--json")
+    assert code == 2 and out["error"] == {
         "kind": "usage", "message": "--move expects NAME=VALUE, got 'j1'", "where": "--move"}
 
 
@@ -244,8 +247,10 @@ def test_a_symbolic_point_that_does_not_follow_the_input_is_refused():
     assert info.value.where == "move.j1" and "'B'" in info.value.message
 
 
-@pytest.mark.parametrize("name, count", [("triad_six_bar", 2), ("spherical_four_bar", 2),
-                                         ("rssr_spatial_four_bar", 2)])
+# each search is seconds of work: a planar triad and a spherical group by default, the spatial
+# RSSR too in a deep run
+@pytest.mark.parametrize("name, count", [("triad_six_bar", 2), ("spherical_four_bar", 2)]
+                         + ([("rssr_spatial_four_bar", 2)] if DEEP else []))
 def test_assemblies_of_groups_that_are_not_dyads_are_found_and_rigid(name, count):
     from kinematika.engine.instant import instantiate
 
@@ -276,9 +281,10 @@ def test_models_without_a_held_input_or_with_symbols_list_the_drawn_assembly(nam
 
 @functools.lru_cache(maxsize=None)
 def _four_bar_with_symbolic_crank() -> dict:
-    out = subprocess.run([sys.executable, "-m", "kinematika", "solve", str(EXAMPLES / "four_bar.yaml"),
-                          "--set", "theta2=null", "--json"], capture_output=True, text=True, check=True)
-    return json.loads(out.stdout)
+    """`kinematika solve four_bar.yaml --set theta2=null --json`, once (in this process)."""
+    code, out = run_cli("solve", str(EXAMPLES / "four_bar.yaml"), "--set", "theta2=null", "--json")
+    assert code == 0, out
+    return out
 
 
 @pytest.mark.parametrize("theta", [20.0, 90.0, 200.0, 321.0])

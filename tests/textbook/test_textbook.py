@@ -4,8 +4,9 @@ slider-cranks, inversions, quick-returns, Geneva wheels, pins in slots, six-bars
 Stephenson, a triad), gear trains, rolling wheels, spatial linkages and vehicles; `move`,
 symbolic inputs and error cases among them.
 
-Each NAME.yaml is run as the contract's outside tests run it, `kinematika solve NAME.yaml
---json`, and compared under check-cases' rules with NAME.expect.json, which holds the hand
+Each NAME.yaml is run by `kinematika solve NAME.yaml --json` (in this process by click's
+runner; in a deep run also in a child process, as the contract's outside tests run it, which
+tests/model/test_cases.py does on a few cases in a default run), and compared under check-cases' rules with NAME.expect.json, which holds the hand
 derivation of tests/textbook/derive.py (never kinematika's numbers). The other commands a
 student uses on these problems (centres, assemblies, --set, --move, --symbolic) are
 checked against derivations of their own below.
@@ -13,16 +14,14 @@ checked against derivations of their own below.
 from __future__ import annotations
 
 import importlib.util
-import json
 import math
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
+from tests.conftest import deep_only, sampled
 from tests.model.test_cases import (_matches, case_through_the_command_line, every_case_derived,
-                                    expectation_is_derivation)
+                                    expectation_is_derivation, kinematika)
 
 HERE = Path(__file__).resolve().parent
 _spec = importlib.util.spec_from_file_location("textbook_derive", HERE / "derive.py")
@@ -31,10 +30,8 @@ _spec.loader.exec_module(derive)
 NAMES = sorted(p.stem for p in HERE.glob("*.yaml"))
 
 
-def kinematika(*args: str) -> tuple[int, dict]:
-    run = subprocess.run([sys.executable, "-m", "kinematika", *args], capture_output=True, text=True, timeout=300)
-    assert "Traceback" not in run.stdout + run.stderr, run.stderr
-    return run.returncode, json.loads(run.stdout)
+# a symbolic case whose solve takes seconds; the other symbolic cases are of its kind
+SLOW = {"geneva_symbolic_theta"}
 
 
 def test_every_case_has_its_derivation_and_expectation():
@@ -46,9 +43,15 @@ def test_the_expectation_is_the_hand_derivation(name):
     expectation_is_derivation(HERE, derive, name)
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", sampled(NAMES, lambda n: n not in SLOW))
 def test_case_through_the_command_line(name):
     case_through_the_command_line(HERE, name)
+
+
+@deep_only
+@pytest.mark.parametrize("name", NAMES)
+def test_case_through_a_child_process(name):
+    case_through_the_command_line(HERE, name, child=True)
 
 
 # the other commands on these problems --------------------------------------------------------

@@ -1,5 +1,6 @@
-"""The page's JSON API answers exactly what the command line prints, byte for byte, for every
-bundled example (the contract's section "The page's JSON API"); a file of its own, so that
+"""The page's JSON API answers exactly what the command line prints, byte for byte, for one
+bundled example of each kind (every example in a deep run; the contract's section "The
+page's JSON API"); a file of its own, so that
 the suite's workers share this long list with the rest of tests/web."""
 from __future__ import annotations
 
@@ -7,11 +8,11 @@ import json
 
 import pytest
 
-from tests.conftest import EXAMPLES
+from tests.conftest import EXAMPLES, KINDS, sampled
 
 from .test_api import post, run_cli
 
-EXAMPLE_FILES = sorted(EXAMPLES.glob("*.yaml"))
+EXAMPLE_FILES = sampled(sorted(EXAMPLES.glob("*.yaml")), KINDS)
 SWEEP_STEPS = 24          # the whole motion in few rows: the same rows either way is what counts
 
 
