@@ -4,6 +4,8 @@ not a long formula) and its centre the pin; a point of a body with no such pin k
 general answer, checked here against the curvature of its path written out by hand."""
 from __future__ import annotations
 
+import functools
+
 import pytest
 import sympy
 
@@ -24,6 +26,16 @@ def answers(symbols, ask):
     return [x["value"] for x in solution_json(kinematika.solve(tree))["answers"]]
 
 
+@functools.cache
+def every_length_a_symbol() -> list:
+    """The four-bar with a, b, c, d and θ symbols, asked the curvature of B's path: on the
+    rocker, on the coupler relative to the crank, to the ground and to the rocker (solved
+    once for the tests that read them: each solve is seconds)."""
+    return answers(["theta", "a", "b", "c", "d"],
+                   [{"curvature": "B@rocker"}, {"curvature": "B@coupler", "relative_to": "crank"},
+                    {"curvature": "B@coupler"}, {"curvature": "B@coupler", "relative_to": "rocker"}])
+
+
 def exact(text):
     return sympy.sympify(text, locals=NAMES)
 
@@ -40,8 +52,7 @@ def test_every_length_a_symbol_the_radii_are_the_links():
     """All of a, b, c, d and θ symbols: B's path relative to the ground is the circle of
     radius c about O4 = (d, 0); relative to the crank, the circle of radius b about A =
     a (cos θ, sin θ) (the coupler turns about A on the crank)."""
-    rocker, relative = answers(["theta", "a", "b", "c", "d"],
-                               [{"curvature": "B@rocker"}, {"curvature": "B@coupler", "relative_to": "crank"}])
+    rocker, relative = every_length_a_symbol()[:2]
     assert exact(rocker["radius"]) == c and [exact(x) for x in rocker["center"]] == [d, 0]
     assert exact(relative["radius"]) == b
     assert [exact(x) for x in relative["center"]] == [a * sympy.cos(theta), a * sympy.sin(theta)]
@@ -51,14 +62,15 @@ def test_the_couplers_b_moves_on_the_rockers_circle():
     """Issue 31: every length a symbol, the curvature of B's path on the coupler (relative to
     the ground). B is the rocker's pin, so B@coupler moves as B@rocker: on the circle of
     radius c about O4 = (d, 0) — the answer was a formula of 37 000 characters equal to c."""
-    (coupler,) = answers(["theta", "a", "b", "c", "d"], [{"curvature": "B@coupler"}])
+    coupler = every_length_a_symbol()[2]
     assert coupler["radius"] == "c"
     assert [exact(x) for x in coupler["center"]] == [d, 0]
 
 
 def test_the_couplers_b_relative_to_the_rocker_is_at_rest():
-    """Seen from the rocker, the coupler's B stays where it is: a point at rest, no circle."""
-    (seen,) = answers(["a", "b", "c", "d"], [{"curvature": "B@coupler", "relative_to": "rocker"}])
+    """Seen from the rocker, the coupler's B stays where it is: a point at rest, no circle
+    (every length and θ a symbol)."""
+    seen = every_length_a_symbol()[3]
     assert seen == {"radius": None, "rest": True}
 
 

@@ -6,12 +6,14 @@ from __future__ import annotations
 import random
 from pathlib import Path
 
+import mpmath
 import pytest
 import sympy as sp
 
 import kinematika
 from kinematika.algebra.fields import ExactField, canonical
 from kinematika.report.values import formula
+from tests.conftest import sampled
 
 ROOT = Path(__file__).resolve().parents[2]
 R, rho, w, b = sp.symbols("R rho w beta", positive=True)
@@ -40,7 +42,7 @@ def random_expressions(seed: int, count: int) -> list:
     return [build(3) for _ in range(count)]
 
 
-@pytest.mark.parametrize("seed", [1, 2])
+@pytest.mark.parametrize("seed", sampled([1, 2], lambda seed: seed == 1))      # both in a deep run
 def test_canonical_forms_equal_their_input(seed):
     at = {R: 0.7, rho: 1.3, b: 0.4, w: 2.1, x: -0.8}
     for e in random_expressions(seed, 60):
@@ -64,6 +66,19 @@ def test_division_goes_through_conjugates():
     assert sp.simplify(field.back(value) - (sp.sqrt(x ** 2 + 1) - x)) == 0
 
 
+def value(e, at: dict) -> float:
+    """A formula's number at `at` {symbol: number}, at 30 digits (lambdify to mpmath: what
+    `evalf(subs=...)` gives, in a tenth of the time on these long derivatives)."""
+    with mpmath.workdps(30):
+        return float(sp.lambdify(list(at), e, "mpmath")(*[mpmath.mpf(str(v)) for v in at.values()]))
+
+
+@pytest.fixture(scope="module")
+def quick_return():
+    """examples/quick_return.yaml, every parameter a symbol, solved once for this file."""
+    return kinematika.solve(ROOT / "examples" / "quick_return.yaml", symbolic=True)
+
+
 def quick_return_by_differentiation():
     """ω of the rocker and of the link: the time derivatives of their angles, from the
     positions the example's parameters define (θ̇ = w)."""
@@ -77,8 +92,8 @@ def quick_return_by_differentiation():
     return (r, c, L, l, h, th, ww), rocker, link
 
 
-def test_quick_return_formulas_are_the_derivatives_of_its_positions():
-    sol = kinematika.solve(ROOT / "examples" / "quick_return.yaml", symbolic=True)
+def test_quick_return_formulas_are_the_derivatives_of_its_positions(quick_return):
+    sol = quick_return
     names, rocker, link = quick_return_by_differentiation()
     symbols = {str(s): s for s in names}
     shown = {body: formula(sol.omega(body)) for body in ("rocker", "link")}
@@ -86,14 +101,14 @@ def test_quick_return_formulas_are_the_derivatives_of_its_positions():
                    {"r": 0.12, "c": 0.35, "L": 0.6, "l": 0.3, "h": 0.55, "th": 1.9, "w": 3}):
         at = {symbols[k]: v for k, v in values.items()}
         for body, expected in (("rocker", rocker), ("link", link)):
-            got = sp.sympify(shown[body], locals=symbols).evalf(subs=at)
-            assert float(got) == pytest.approx(float(expected.evalf(subs=at)), rel=1e-9)
+            got = value(sp.sympify(shown[body], locals=symbols), at)
+            assert got == pytest.approx(value(expected, at), rel=1e-9)
     # compact: the link's ω is one product of the link's and rocker's quantities
     assert len(shown["link"]) < 200, shown["link"]
 
 
-def test_a_point_shared_by_two_bodies_reads_the_same_from_both():
-    sol = kinematika.solve(ROOT / "examples" / "quick_return.yaml", symbolic=True)
+def test_a_point_shared_by_two_bodies_reads_the_same_from_both(quick_return):
+    sol = quick_return
     assert [formula(v) for v in sol.velocity("B@rocker")] == [formula(v) for v in sol.velocity("B@link")]
 
 
@@ -118,8 +133,8 @@ def test_four_bar_by_lengths_at_a_general_angle_is_the_derivative_of_its_positio
                    {"a": 2.25, "b": 6.1, "c": 4.35, "d": 5.2, "theta": 2.4, "w": -0.7}):
         at = {symbols[k]: v for k, v in values.items()}
         for body, expected in (("coupler", coupler), ("rocker", rocker)):
-            got = float(sp.sympify(shown[body], locals=symbols).evalf(subs=at))
-            assert got == pytest.approx(float(expected.evalf(subs=at)), rel=1e-9)
+            got = value(sp.sympify(shown[body], locals=symbols), at)
+            assert got == pytest.approx(value(expected, at), rel=1e-9)
     # one root, written once as a textbook writes it: 4b²f² − (f² + b² − c²)²
     assert len({str(r) for r in sp.sympify(shown["coupler"], locals=symbols).atoms(sp.Pow)
                 if r.exp == sp.S.Half}) == 1

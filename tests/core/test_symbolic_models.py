@@ -5,8 +5,10 @@ angle and differentiated in time by mpmath at 40 digits (tests/cases/derive.py's
 `motion`), d/dt = ω d/dθ and d²/dt² = ω² d²/dθ² + α d/dθ. The textbook cases of
 tests/cases, solved with every parameter a symbol, equal their hand derivations at the
 cases' values. Also: formulas are exact (no floats), and mechanisms whose formulas written
-out would be too long (Jansen's leg in its 15 lengths, the textbook's Watt six-bar, triad
-and spherical four-bar) answer with named coordinates, equal to their hand derivations."""
+out would be too long (the top of Jansen's leg in its lengths; in a deep run the whole leg
+in its 15 lengths, the textbook's Watt six-bar, triad and spherical four-bar) answer with
+named coordinates, equal to their hand derivations. A default run checks one model or case
+of each kind, at the model's own values; a deep run every model and case, at two sets."""
 from __future__ import annotations
 
 import math
@@ -18,7 +20,7 @@ import sympy as sp
 
 from kinematika.commands import solve_data
 from kinematika.errors import KinematikaError
-from tests.conftest import DEEP, hand_derivations
+from tests.conftest import DEEP, deep_only, hand_derivations, sampled
 
 ROOT = Path(__file__).resolve().parents[2]
 MODELS = ROOT / "benchmarks" / "models" / "symbolic"
@@ -90,6 +92,7 @@ def test_in_line_slider_crank():
     same(answers("slider_crank_general", at), [[v[0], 0], [a[0], 0], v[1], a[1]])
 
 
+@deep_only                  # the inverted slider-crank's case tb_inverted_slider_crank is in a default run
 @pytest.mark.parametrize("at", sets(dict(r=0.1, d=0.3, theta=1.0471975511965976, w=20, al=5),
                                      dict(r=1.3, d=0.8, theta=2.7, w=-1.5, al=0.3)))
 def test_inverted_slider_crank(at):
@@ -109,6 +112,7 @@ def test_inverted_slider_crank(at):
     same(got[4], [-al4 * rho * u[1] - w4 ** 2 * rho * u[0], al4 * rho * u[0] - w4 ** 2 * rho * u[1]])
 
 
+@deep_only         # a quick return's slotted lever: tb_crank_shaper, a rod on a line: the slider-cranks
 @pytest.mark.parametrize("at", sets(dict(r=0.2, d=0.1, R=0.15, l=0.45, theta=1.0471975511965976, w=5),
                                      dict(r=1.1, d=0.35, R=0.6, l=2.0, theta=3.9, w=2)))
 def test_whitworth(at):
@@ -147,6 +151,7 @@ def test_watt_six_bar_at_a_general_angle(at):
     same(answers("watt_six_bar_theta", at), [w6, al6])
 
 
+@deep_only     # 30 s: B of a four-bar is tb_fourbar_crossed_near's, a point off a line tb_crank_shaper's
 @pytest.mark.parametrize("at", sets(dict(a=3, b=7.5, c=8, d=9, p=4, delta=0.5235987755982988,
                                           theta=2.0943951023931957, w=10),
                                      dict(a=1.2, b=3.1, c=2.6, d=2.9, p=1.7, delta=-0.4, theta=0.8, w=-2)))
@@ -171,6 +176,11 @@ def test_four_bar_coupler_point(at):
 HEAVY = {"tb_fourbar_coupler_point", "tb_fourbar_inclined_ground", "tb_watt_six_bar"}   # long
 NUMERIC_CASES = [pytest.param(n, marks=pytest.mark.slow) if n in HEAVY else n for n in sorted(derive.NUMERIC)
                  if DEEP or n not in HEAVY]        # formulas: seconds to read back; in a deep run
+# a default run: one case of each kind not met by the models above (a six-bar is the Watt
+# six-bar's, an offset slider-crank test_offset_slider_crank's, a Whitworth's rod on a line
+# the slider-cranks'); every case in a deep run
+SHOWN_ABOVE = {"tb_stephenson_six_bar", "tb_whitworth", "tb_slider_crank_offset"}
+NUMERIC_CASES = sampled(NUMERIC_CASES, lambda n: n not in SHOWN_ABOVE)
 
 
 @pytest.mark.parametrize("name", NUMERIC_CASES)
@@ -256,6 +266,44 @@ def jansen_points(t, at=JANSEN) -> dict:
     return pts
 
 
+def jansen_top() -> dict:
+    """Jansen's leg (examples/jansen_leg.yaml) cut to its crank and top triangle: O-A, A-B
+    and Z-B-E, two circle intersections in a chain (B, then E from B's roots), asked E's
+    velocity and acceleration. Every length a symbol, E's coordinates written out pass the
+    limit: the smallest piece of the leg that answers with named coordinates."""
+    import yaml
+
+    tree = yaml.safe_load((ROOT / "examples" / "jansen_leg.yaml").read_text())
+    tree["parameters"] = {k: tree["parameters"][k] for k in TOP}
+    tree["points"] = {k: tree["points"][k] for k in "ZOABE"}
+    tree["bodies"] = {k: tree["bodies"][k] for k in ("ground", "crank", "upper", "top")}
+    tree["joints"] = tree["joints"][:4]
+    tree["ask"] = [{"velocity": "E"}, {"acceleration": "E"}]
+    del tree["sweep"]
+    return tree
+
+
+TOP = ["a", "l", "m", "j", "b", "d", "e", "theta", "w"]
+
+
+def test_jansen_legs_top_in_its_lengths_answers_with_named_coordinates():
+    """The top of Jansen's leg (`jansen_top`) with every length and the crank angle symbols
+    answers in named coordinates (x_B, y_B, x_E, y_E under `where`, each a short formula
+    in the lengths and the names before it), and its formulas, evaluated there, are E's
+    motion by hand: two circle intersections in a chain, differentiated by mpmath. (The
+    whole leg, eight times the work, in a deep run.)"""
+    at = {k: JANSEN[k] for k in TOP}
+    out = solve_data(jansen_top(), True)
+    assert list(out["where"]) == ["x_B", "y_B", "x_E", "y_E"]
+    assert max(len(text) for text in out["where"].values()) < 2000        # each one short
+    place, v, acc = motion(lambda t: jansen_points(t)["E"], at["theta"], at["w"])
+    names = named(out, at)
+    got = [written(a["value"], at, names) for a in out["answers"]]
+    same(got, [v, acc], rel=1e-9)
+    same(written(out["points"]["E@top"]["position"], at, names), place, rel=1e-9)
+
+
+@deep_only
 def test_jansen_leg_in_its_15_lengths_answers_with_named_coordinates():
     """Jansen's leg with every length and the crank angle symbols: written out, the foot's
     coordinates alone would have 160 000 operations; the answer names the coordinates of
@@ -353,11 +401,12 @@ def test_jansen_leg_centres_with_named_coordinates():
 def test_a_point_too_long_even_in_named_coordinates_is_refused_by_name(monkeypatch):
     """Past `limits.POINT_OPS` even in named coordinates a constructed point is a `limit`
     error naming it, before any time goes into it (no model comes near 2 000: here the
-    limit is lowered to 40, which Jansen's leg passes at its first named point, E)."""
+    limit is lowered to 40, which Jansen's leg passes at its first named point, E: its top,
+    `jansen_top`, as the whole leg)."""
     from kinematika import limits
 
     monkeypatch.setattr(limits, "POINT_OPS", 40)
     with pytest.raises(KinematikaError) as err:
-        solve_data(ROOT / "examples" / "jansen_leg.yaml", True)
+        solve_data(jansen_top(), True)
     assert err.value.kind == "limit" and err.value.where == "points.E"
     assert "numbers" in str(err.value) and "--symbolic" in str(err.value)
