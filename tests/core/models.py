@@ -3,6 +3,9 @@ from __future__ import annotations
 
 import copy
 import math
+from pathlib import Path
+
+import yaml
 
 # Crank-rocker: ground 4, crank 1, coupler 4, rocker 3; crank vertical, B on the open branch.
 BX = (48 + 8 * math.sqrt(2)) / 17
@@ -56,3 +59,24 @@ def four_bar_closed_form(w2: float = 10.0, al2: float = 0.0):
                   for p, a, b, c in zip(perp(oa), oa, ab, o4b))
     a3, a4 = solve2(perp(ab), tuple(-c for c in perp(o4b)), known)
     return w3, w4, a3, a4
+
+
+JANSEN_TOP = ("a", "l", "m", "j", "b", "d", "e", "theta", "w")     # the top's parameters
+
+
+def jansen(top: bool = True, theta_symbol: bool = True) -> dict:
+    """Jansen's leg (examples/jansen_leg.yaml), its crank angle a symbol; with `top`, cut to
+    its crank and top triangle (O-A, A-B, Z-B-E: two circle intersections in a chain, B then
+    E from B's roots), asked E's velocity and acceleration — the smallest piece of the leg
+    whose exact answers take named coordinates, a quarter of the whole leg's work."""
+    tree = yaml.safe_load((Path(__file__).resolve().parents[2] / "examples" / "jansen_leg.yaml").read_text())
+    if theta_symbol:
+        tree["parameters"]["theta"] = None
+    if top:
+        tree["parameters"] = {k: tree["parameters"][k] for k in JANSEN_TOP}
+        tree["points"] = {k: tree["points"][k] for k in "ZOABE"}
+        tree["bodies"] = {k: tree["bodies"][k] for k in ("ground", "crank", "upper", "top")}
+        tree["joints"] = tree["joints"][:4]
+        tree["ask"] = [{"velocity": "E"}, {"acceleration": "E"}]
+        del tree["sweep"]
+    return tree

@@ -15,6 +15,7 @@ import yaml
 
 from kinematika import budget
 from tests.conftest import sampled
+from tests.core.models import jansen
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -42,20 +43,8 @@ def _solve(model: Path, slower: float, hash_seed: str) -> dict:
 
 
 def jansen_model(whole: bool) -> dict:
-    """Jansen's leg (examples/jansen_leg.yaml) with its crank angle a symbol; unless `whole`,
-    cut to its crank and top triangle (O-A, A-B, Z-B-E: two circle intersections in a chain,
-    the smallest piece of it whose formulas take named coordinates)."""
-    tree = yaml.safe_load((ROOT / "examples" / "jansen_leg.yaml").read_text())
-    tree["parameters"]["theta"] = None
-    if not whole:
-        tree["parameters"] = {k: v for k, v in tree["parameters"].items()
-                              if k in ("a", "l", "m", "j", "b", "d", "e", "theta", "w")}
-        tree["points"] = {k: tree["points"][k] for k in "ZOABE"}
-        tree["bodies"] = {k: tree["bodies"][k] for k in ("ground", "crank", "upper", "top")}
-        tree["joints"] = tree["joints"][:4]
-        tree["ask"] = [{"velocity": "E"}, {"acceleration": "E"}]
-        del tree["sweep"]
-    return tree
+    """Jansen's leg with its crank angle a symbol, or its top (`tests.core.models.jansen`)."""
+    return jansen(top=not whole)
 
 
 @pytest.mark.parametrize("part", sampled(["top", "whole"], {"top"}))

@@ -21,6 +21,7 @@ import sympy as sp
 from kinematika.commands import solve_data
 from kinematika.errors import KinematikaError
 from tests.conftest import DEEP, deep_only, hand_derivations, sampled
+from tests.core.models import JANSEN_TOP, jansen
 
 ROOT = Path(__file__).resolve().parents[2]
 MODELS = ROOT / "benchmarks" / "models" / "symbolic"
@@ -267,23 +268,12 @@ def jansen_points(t, at=JANSEN) -> dict:
 
 
 def jansen_top() -> dict:
-    """Jansen's leg (examples/jansen_leg.yaml) cut to its crank and top triangle: O-A, A-B
-    and Z-B-E, two circle intersections in a chain (B, then E from B's roots), asked E's
-    velocity and acceleration. Every length a symbol, E's coordinates written out pass the
-    limit: the smallest piece of the leg that answers with named coordinates."""
-    import yaml
-
-    tree = yaml.safe_load((ROOT / "examples" / "jansen_leg.yaml").read_text())
-    tree["parameters"] = {k: tree["parameters"][k] for k in TOP}
-    tree["points"] = {k: tree["points"][k] for k in "ZOABE"}
-    tree["bodies"] = {k: tree["bodies"][k] for k in ("ground", "crank", "upper", "top")}
-    tree["joints"] = tree["joints"][:4]
-    tree["ask"] = [{"velocity": "E"}, {"acceleration": "E"}]
-    del tree["sweep"]
-    return tree
+    """The top of Jansen's leg (`tests.core.models.jansen`) as given: every length a symbol
+    when solved with `symbolic`, E's coordinates written out pass the limit."""
+    return jansen(top=True, theta_symbol=False)
 
 
-TOP = ["a", "l", "m", "j", "b", "d", "e", "theta", "w"]
+TOP = list(JANSEN_TOP)
 
 
 def test_jansen_legs_top_in_its_lengths_answers_with_named_coordinates():

@@ -17,6 +17,7 @@ from kinematika.explain import build, render
 from kinematika.explain.render.names import html_name, latex_name, unicode_name
 
 from tests.conftest import sampled
+from tests.core.models import jansen as jansen_model
 
 from .helpers import EXAMPLES
 
@@ -150,16 +151,7 @@ PARTS = {"top": ("B", "E"), "whole": ("B", "E", "D", "F", "P")}
 def jansen(request):
     """Jansen's leg (or its top) with its crank angle a symbol: its points' coordinates are
     named."""
-    tree = yaml.safe_load((EXAMPLES / "jansen_leg.yaml").read_text())
-    tree["parameters"]["theta"] = None
-    if request.param == "top":
-        tree["parameters"] = {k: v for k, v in tree["parameters"].items()
-                              if k in ("a", "l", "m", "j", "b", "d", "e", "theta", "w")}
-        tree["points"] = {k: tree["points"][k] for k in "ZOABE"}
-        tree["bodies"] = {k: tree["bodies"][k] for k in ("ground", "crank", "upper", "top")}
-        tree["joints"] = tree["joints"][:4]
-        tree["ask"] = [{"velocity": "E"}, {"acceleration": "E"}]
-        del tree["sweep"]
+    tree = jansen_model(top=request.param == "top")
     return request.param, build(kinematika.solve(tree))
 
 
