@@ -21,6 +21,7 @@ import yaml
 from typer.testing import CliRunner
 
 from kinematika.cli import app as cli       # the typer application, every command registered
+from tests.core.models import jansen
 from tests.conftest import BROWSER_WAIT, EXAMPLES
 
 from .conftest import CHROMIUM, FLAGS, _chromium_or_skip  # noqa: F401 - used by other modules too
@@ -442,31 +443,7 @@ def test_a_3d_figure_follows_the_slider(page, capsys):
 # Jansen's leg cut to its first loop and top triangle (its crank, A-B and the triangle Z-B-E):
 # two circle intersections in a chain, the second drawn from the first's roots of its
 # decimal lengths, enough for named coordinates at a quarter of the whole leg's work
-JANSEN_TOP = """\
-name: Jansen leg, its top
-parameters: {a: 38, l: 7.8, m: 15, j: 50, b: 41.5, d: 40.1, e: 55.8, theta: null, w: 1}
-points:
-  Z: [0, 0]
-  O: [a, l]
-  A: {from: O, distance: m, angle: theta}
-  B: {circles: [[Z, b], [A, j]], side: left}
-  E: {circles: [[Z, d], [B, e]], side: left}
-bodies:
-  ground: [Z, O]
-  crank: [O, A]
-  upper: [A, B]
-  top: [Z, B, E]
-joints:
-  - {type: revolute, bodies: [ground, crank], at: O}
-  - {type: revolute, bodies: [crank, upper], at: A}
-  - {type: revolute, bodies: [upper, top], at: B}
-  - {type: revolute, bodies: [top, ground], at: Z}
-drivers:
-  - {omega: crank, value: w, alpha: 0}
-ask:
-  - {velocity: E}
-  - {acceleration: E}
-"""
+JANSEN_TOP = yaml.safe_dump(jansen(), sort_keys=False)      # its crank angle a symbol
 
 
 def test_named_quantities_of_long_formulas_are_listed(page, server, tmp_path):
