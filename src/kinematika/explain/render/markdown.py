@@ -7,7 +7,8 @@ import re
 from typing import Any
 
 from ..document import Drawing, Equation, Figure, Name, Sym
-from .base import Renderer, visible
+from ...text import shown_lines
+from .base import Renderer
 from .svg import svg
 from .names import unicode_name
 from .unicode import unicode_formula
@@ -31,7 +32,7 @@ class MarkdownRenderer(Renderer):
     def esc(self, text: str) -> str:
         """Text with Markdown's markup characters escaped (inside an equation's code block only
         a backquote is changed), control characters shown."""
-        text = visible(text)
+        text = shown_lines(text)
         if self.code:
             return text.replace("`", "ʼ")
         return MARKUP.sub(r"\\\1", text)

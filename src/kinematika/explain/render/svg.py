@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from html import escape
 from typing import Callable, Optional
 
+from ...text import shown_lines
 from ..document import Figure, Sym
 
 COLOURS = {"known": "#222222", "unknown": "#c0392b", "result": "#1f5fa8", "velocity": "#2e8b57",
@@ -278,11 +279,9 @@ def embedded(text: str, prefix: str) -> str:
     XML prologue, doctype or comments, no control character (a model's names make ids),
     every id and reference to it prefixed and every id unique, its size set by the page's
     style from its viewBox."""
-    from .base import visible
-
     text = re.sub(r"<\?xml[^>]*>\s*|<!DOCTYPE[^>]*>\s*", "", text)
     text = re.sub(r"<!--.*?-->", "", text, flags=re.S)     # matplotlib's comments (the labels' text)
-    text = visible(text)                                   # control characters of names in ids
+    text = shown_lines(text)                                   # control characters of names in ids
     seen: dict[str, int] = {}
 
     def unique(m) -> str:          # a figure may give several artists one gid (body:crank)
