@@ -35,7 +35,7 @@ from ..errors import KinematikaError, Names, Num, Said
 from .build import Exercise, Variant
 from .key import Row
 from .mistakes import Mistaken
-from .table import Line, Unreadable
+from .table import Line, Unreadable, csv_field, read_table
 from .typed import in_model_units, read_typed
 
 WHOLE_WORLD = ("sense-reversed",)      # a mistake a student makes everywhere or nowhere
@@ -145,8 +145,6 @@ class Answer:
 
 def read_answers(exercise: Exercise, path: Path, assigned: dict[str, int]) -> tuple[list[Answer], list[Unreadable]]:
     """The rows of `ANSWERS.csv` that can be read, and the others with their line numbers."""
-    from .table import read_table
-
     table = read_table(path, ["student", "question", "value"] + ([] if assigned else ["variant"]),
                        optional=("variant",), decimal_last=True)
     bad = list(table.unreadable)
@@ -300,11 +298,9 @@ def summary(exercise: Exercise, marks: list[Mark]) -> dict[str, Any]:
 def gradebook_csv(result: dict[str, Any]) -> str:
     """A CSV Moodle's gradebook imports (Grades → Import → CSV file): `student` (map it to
     the users' ID number, username or email) and `grade`, the score out of 100."""
-    from .folder import _csv_field
-
     lines = ["student,grade"]
     for student, data in result["students"].items():
-        lines.append(f"{_csv_field(student)},{round(100 * data['score'], 2):g}")
+        lines.append(f"{csv_field(student)},{round(100 * data['score'], 2):g}")
     return "\n".join(lines) + "\n"
 
 

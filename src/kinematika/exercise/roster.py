@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Optional
 
 from ..errors import KinematikaError
+from .table import column, csv_field, read_table
 
 STREAM = 0x5EED              # the shuffle's stream, apart from the variants' own draw
 # words of a column that holds a name, in en, es, ca, eu (and Moodle's column names)
@@ -45,8 +46,6 @@ class Student:
 def read_class(path: Path) -> list[Student]:
     """The students of a class list (its first column the ids); a usage error naming the
     file when it names none or names one twice."""
-    from .table import column, read_table
-
     table = read_table(path, [])
     if not table.header or not table.header[0]:
         raise KinematikaError("usage", "students-first-column", "--students", name=path.name)
@@ -85,16 +84,12 @@ def assigned(students: list[Student], count: int, seed: int) -> list[Student]:
 
 def students_csv(students: list[Student]) -> str:
     """`students.csv`: `student,variant`, one row per student."""
-    from .folder import _csv_field
-
-    return "student,variant\n" + "".join(f"{_csv_field(s.id)},{s.variant}\n" for s in students)
+    return "student,variant\n" + "".join(f"{csv_field(s.id)},{s.variant}\n" for s in students)
 
 
 def read_students(path: Path, count: int) -> Optional[list[Student]]:
     """The class of a folder's `students.csv` (None when there is none); a variant outside
     1…`count` is an error naming the line."""
-    from .table import read_table
-
     if not path.exists():
         return None
     table = read_table(path, ["student", "variant"])
