@@ -11,27 +11,16 @@ from many starting poses, and the distinct real solutions found are listed.
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, field
 from typing import Any, Optional
 
 import numpy as np
 
 from ..errors import KinematikaError
 from ..model.model import Model
+from .assembly import Assembly
 from .posed import posed_model
 
 MAX_DYADS = 12               # 4096 closures: beyond this, listing them helps nobody
-
-
-@dataclass
-class Assembly:
-    """One way the mechanism closes at the drawn input."""
-
-    number: int
-    drawn: bool
-    closures: list[str]                       # how each dyad closes, in words
-    model: Model                              # the mechanism posed on this assembly
-    points: dict[str, tuple] = field(default_factory=dict)   # every point's place
 
 
 def assemblies(model: Model) -> list[Assembly]:

@@ -14,13 +14,14 @@ import numpy as np
 
 from ..engine.instant import instantiate
 from ..engine.system import InstantSolver
-from ..errors import KinematikaError, Num, Said
 from ..memory import arrays_on_heap
 from ..model.model import Model, PointRef
+from ..structure.assur import assur_groups
 from .coincident import coincide
 from .joint_rates import with_joint_rates
-from .plan import Plan, make_plan, swept_joint
-from .result import QUANTITIES, SweepResult
+from .closed_form import ClosedForm, applicable, series
+from .plan import Plan, bad_row, make_plan, swept_joint
+from .result import QUANTITIES, SweepResult, dead_points
 
 Progress = Callable[[int, int], None]
 
@@ -63,8 +64,6 @@ class Sweeper:
         self.points = {k: tuple(float(c) for c in v) for k, v in self.inst.points.items()}
         self.directions = {jid: tuple(float(c) for c in g.along) for jid, g in self.solver.geos.items()
                            if g.along is not None}
-        from ..structure.assur import assur_groups
-
         self.groups = assur_groups(model)
         self._flips = dict(flips or {})
         self.closed = self._closed_form(flips)
@@ -85,8 +84,6 @@ class Sweeper:
 
     def _closed_form(self, flips: Optional[dict[int, float]] = None) -> Any:
         """The closed form of this mechanism (dyads closed as drawn, or as `flips` say)."""
-        from .closed_form import ClosedForm, applicable
-
         if not applicable(self.model, self.groups, self.joint, self.driver):
             return None
         return ClosedForm.at_drawn(self.model, self.points, self.directions, self.groups, self.joint,
@@ -97,8 +94,6 @@ class Sweeper:
         than at the start (kept: a motion through limit positions comes back to each)."""
         key = tuple(sorted((i, f) for i, f in flips.items() if f < 0))
         if key not in self._forms:
-            from .closed_form import ClosedForm
-
             sides = {i: self._flips.get(i, 1.0) * flips.get(i, 1.0) for i in range(1, len(self.groups))}
             self._forms[key] = ClosedForm.at_drawn(self.model, self.points, self.directions, self.groups,
                                                    self.joint, self.drawn, sides)
@@ -145,8 +140,8 @@ class Sweeper:
             k = int(np.flatnonzero(~ok)[0])
             raise bad_row(plan, k, "singular" if out.singular[k] else "assembly", out.worst(k))
         n = len(ok)
-        bodies = {b: {"angle": _series(np.degrees(t.theta), n), "omega": _series(t.omega, n),
-                      "alpha": _series(t.alpha, n)} for b, t in out.tracks.items()}
+        bodies = {b: {"angle": series(np.degrees(t.theta), n), "omega": series(t.omega, n),
+                      "alpha": series(t.alpha, n)} for b, t in out.tracks.items()}
         points = {(name, body): out.tracks[body].point(name) for name, body, _ in self.motions}
         dead = dead_points(plan.coordinate, ok, out.singular, self._edge if not ok.all() else None)
         return self.result(plan, ok, bodies, points, dead)
@@ -204,15 +199,6 @@ def _rows(values: Any, bad: Optional[np.ndarray], n: int) -> np.ndarray:
     return values if bad is None else np.where(bad[:, None], np.nan, values)
 
 
-def _series(values: Any, n: int) -> np.ndarray:
-    """Values over the rows: an array as it is, a constant as a read-only stride-0 view."""
-    if isinstance(values, np.ndarray) and values.shape == (n,):
-        return values
-    from .closed_form import const
-
-    return const(float(values), n)
-
-
 def _filled(values: dict[str, Any], bad: Optional[np.ndarray]) -> dict[str, np.ndarray]:
     if bad is None:
         return {q: values[q] for q in ("angle", "omega", "alpha")}
@@ -236,31 +222,3 @@ def _as_model(source: Any) -> Model:
     from .posing import prepare
 
     return prepare(source)
-
-
-def bad_row(plan: Plan, k: int, kind: str, what: str = "", at: Optional[float] = None) -> KinematikaError:
-    """The error for row k (at coordinate `at`, else the plan's row k): `assembly` (cannot be
-    assembled), `singular` (dead point), or `mobility` (assembled, but the drivers as written
-    contradict the moved joints)."""
-    value = plan.coordinate[k] if at is None else at
-    where = Said("sweep-at", k=k, joint=plan.joint.id, value=Num(value, ".6g"), unit=plan.unit)
-    if kind == "mobility":
-        return KinematikaError(kind, "sweep-drivers-contradict", "sweep", at=where)
-    return KinematikaError(kind, "sweep-singular" if kind == "singular" else "sweep-cannot-assemble", "sweep",
-                           at=where, what=what or "", said=str(bool(what)).lower())
-
-
-def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray,
-                refine: Optional[Callable[[float, float], float]] = None) -> list[float]:
-    """Where the motion stops being possible: singular rows, and at each edge of a gap the
-    last row that could be assembled (or, with `refine(good, bad)`, the edge found between)."""
-    if ok.all():
-        return []
-    out = [float(x) for x in coordinate[singular]]
-    edges = np.flatnonzero(ok[:-1] != ok[1:])
-    for k in edges:
-        good, bad = (k, k + 1) if ok[k] else (k + 1, k)
-        if not singular[bad]:            # a singular row is itself the dead point
-            edge = float(coordinate[good])
-            out.append(refine(edge, float(coordinate[bad])) if refine else edge)
-    return sorted(set(out))
