@@ -1,4 +1,5 @@
-"""`run_sweep`: the motion over a range of a driven joint's coordinate.
+"""The motion over a range of a driven joint's coordinate (`Sweeper`; `posing.run_sweep`
+reads and poses a model, then sweeps it here).
 
 The drawn instant is solved first by the engine (which checks the model). Then, when the
 mechanism is a driven crank or slider followed by dyads, every position is solved at once
@@ -16,43 +17,29 @@ from ..engine.instant import instantiate
 from ..engine.system import InstantSolver
 from ..memory import arrays_on_heap
 from ..model.model import Model, PointRef
-from ..structure.assur import assur_groups
+from ..model.overrides import at_draw_numbers
+from ..model.source import as_model
 from .coincident import coincide
 from .joint_rates import with_joint_rates
-from .closed_form import ClosedForm, applicable, series
 from .plan import Plan, bad_row, make_plan, swept_joint
 from .result import QUANTITIES, SweepResult, dead_points
 
 Progress = Callable[[int, int], None]
 
 
-def run_sweep(source: Any, joint: Optional[str] = None, by: Optional[float] = None,
-              steps: Optional[int] = None, skip_bad: bool = False,
-              progress: bool | Progress = False) -> SweepResult:
-    """Sweep `source` (a path, model tree, `Model` or `Mechanism`) over its driven joint.
-
-    `joint`, `by` (degrees or length), `steps` override the model's `sweep:` section. At a
-    limit position the input runs back and the motion goes on (`limit_positions`). A row
-    that is singular, or a motion that cannot be followed, raises `singular`/`assembly`,
-    unless `skip_bad`, which leaves such rows NaN. `progress`: True for a progress bar on a
-    terminal, or a callable `(done, total)`.
-    """
-    return Sweeper(source, joint).run(by, steps, skip_bad, progress)
-
-
 class Sweeper:
     """A model analysed once for sweeps of one driven joint; `run` sweeps it (again and again).
 
     The analysis solves the drawn instant with the engine and decomposes the mechanism into
-    Assur groups; a sweep then costs only the positions themselves.
+    Assur groups; a sweep then costs only the positions themselves. `source` (a path, model
+    tree, `Model` or `Mechanism`) is swept as drawn: a model's own `move:` is made by
+    `posing.prepare` (as `run_sweep` does) or `move.as_written`.
     """
 
     def __init__(self, source: Any, joint: Optional[str] = None,
                  flips: Optional[dict[int, float]] = None) -> None:
         arrays_on_heap()                     # a sweep's speed is its own (`memory`)
-        from .posing import at_draw_numbers
-
-        model, self.warnings = at_draw_numbers(_as_model(source), "sweep", warn=False)
+        model, self.warnings = at_draw_numbers(as_model(source), "sweep", warn=False)
         inst = instantiate(model, False)
         model = with_joint_rates(model, inst)          # a 3D ω along a revolute: its rate
         self.model = model
@@ -64,6 +51,8 @@ class Sweeper:
         self.points = {k: tuple(float(c) for c in v) for k, v in self.inst.points.items()}
         self.directions = {jid: tuple(float(c) for c in g.along) for jid, g in self.solver.geos.items()
                            if g.along is not None}
+        from ..structure.assur import assur_groups      # start-up: simulate reads this module, sweeps nothing
+
         self.groups = assur_groups(model)
         self._flips = dict(flips or {})
         self.closed = self._closed_form(flips)
@@ -84,6 +73,8 @@ class Sweeper:
 
     def _closed_form(self, flips: Optional[dict[int, float]] = None) -> Any:
         """The closed form of this mechanism (dyads closed as drawn, or as `flips` say)."""
+        from .closed_form import ClosedForm, applicable     # start-up, as `assur_groups`
+
         if not applicable(self.model, self.groups, self.joint, self.driver):
             return None
         return ClosedForm.at_drawn(self.model, self.points, self.directions, self.groups, self.joint,
@@ -94,6 +85,8 @@ class Sweeper:
         than at the start (kept: a motion through limit positions comes back to each)."""
         key = tuple(sorted((i, f) for i, f in flips.items() if f < 0))
         if key not in self._forms:
+            from .closed_form import ClosedForm
+
             sides = {i: self._flips.get(i, 1.0) * flips.get(i, 1.0) for i in range(1, len(self.groups))}
             self._forms[key] = ClosedForm.at_drawn(self.model, self.points, self.directions, self.groups,
                                                    self.joint, self.drawn, sides)
@@ -139,6 +132,8 @@ class Sweeper:
         if not skip_bad and not ok.all():
             k = int(np.flatnonzero(~ok)[0])
             raise bad_row(plan, k, "singular" if out.singular[k] else "assembly", out.worst(k))
+        from .closed_form import series
+
         n = len(ok)
         bodies = {b: {"angle": series(np.degrees(t.theta), n), "omega": series(t.omega, n),
                       "alpha": series(t.alpha, n)} for b, t in out.tracks.items()}
@@ -215,10 +210,3 @@ def motion_classes(model: Model) -> list[tuple[str, str, list[str]]]:
     return [(point, members[0], [str(PointRef(point, b)) for b in members])
             for point in model.points
             for members in model.motion_classes(point, model.carriers(point))]
-
-
-def _as_model(source: Any) -> Model:
-    """The model to sweep: read, and posed where its file says (`move`)."""
-    from .posing import prepare
-
-    return prepare(source)

@@ -21,6 +21,9 @@ from ..engine.instant import Instant, instantiate
 from ..errors import KinematikaError, Said
 from ..expressions import parse
 from ..model.model import Model, Turn
+from ..model.overrides import with_parameters
+from .advance import advanced, swept_to
+from .posed import posed_model
 from .carried import Input, Path, carried_turns, fixture, placed
 
 Step = tuple[str, float, str]          # joint id, amount (degrees or length), where
@@ -74,20 +77,13 @@ def _geometry_has_symbols(inst: Instant) -> bool:
 
 def _moved_with_numbers(model: Model, jid: str, amount: float) -> Model:
     """A model whose symbols are only rates moves as its numeric twin; the symbols stay."""
-    from ..model.overrides import with_parameters
-    from .move import moved
-
     symbols = {name: "1" for name, p in model.parameters.items() if p.value is None}
-    twin = moved(with_parameters(dataclasses.replace(model, move={}), symbols), {jid: amount})
+    twin = advanced(with_parameters(dataclasses.replace(model, move={}), symbols), jid, amount, f"move.{jid}")
     return dataclasses.replace(twin, parameters=model.parameters)
 
 
 def _path(model: Model, steps: list[Step], values: dict[str, str], where: str) -> Path:
     """The move made numerically at the probe values, one sweep per step, rows end to end."""
-    from ..model.overrides import with_parameters
-    from .move import swept_to
-    from .posed import posed_model
-
     current = with_parameters(dataclasses.replace(model, move={}), values)
     angles: dict[str, list] = {b: [] for b in model.bodies}
     places: dict[str, list] = {}
