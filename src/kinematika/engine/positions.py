@@ -9,9 +9,11 @@ construction that cannot be drawn is a `geometry` error naming the point and by 
 from __future__ import annotations
 
 import math
+import re
 import warnings
 from typing import Any, Optional, Protocol
 
+from ..limits import POINT_OPS
 from ..errors import KinematikaError, KinematikaWarning, Names, Num, Said
 from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
                                    TwoCircles, TwoLines, construction_order, uses)
@@ -256,8 +258,6 @@ def name_point(inst: Evaluated, point: str, coords: tuple) -> tuple:
 
 def fresh_name(inst: Evaluated, wanted: str, taken: set[str] | None = None) -> str:
     """An identifier for a named quantity, free among the parameters, the names and `taken`."""
-    import re
-
     base = re.sub(r"\W", "_", wanted)
     taken = (set(inst.model.parameters) | {str(s) for s in inst.names} | {"pi", "E", "I", "oo"}
              | (taken or set()))
@@ -277,8 +277,6 @@ def _size(coords: tuple) -> int:
 def _check_size(coords: tuple, name: str, where: str) -> None:
     """A `limit` error when a constructed point's exact coordinates are past reading even
     in named coordinates (`_bounded`), before any time goes into them."""
-    from ..limits import POINT_OPS
-
     size = _size(coords)
     if size > POINT_OPS:
         raise KinematikaError("limit", "point-too-large", where, point=name, size=Num(size, ","),

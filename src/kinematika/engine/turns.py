@@ -16,7 +16,7 @@ from dataclasses import replace
 from typing import Any, Optional, Protocol
 
 from ..algebra.vectors import dot, sub
-from ..expressions import Expr
+from ..expressions import Expr, parse
 from ..model.model import Direction, Model, Turn
 
 
@@ -70,7 +70,6 @@ def turned_polar(model: Model, name: str, spec: Any) -> Any:
     """A polar point from a point of the body whose turn places it (`turn_for`), that turn an
     angle: the same polar point with its angle advanced by the turn's (a crank pin at θ,
     the crank turned 30°, is at θ + 30°); None for any other point."""
-    from ..expressions import parse
     from ..model.constructions import Polar
 
     turn = turn_for(model, name)

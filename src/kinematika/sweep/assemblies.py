@@ -15,6 +15,7 @@ from typing import Any, Optional
 
 import numpy as np
 
+from ..engine.instant import instantiate
 from ..errors import KinematikaError
 from ..model.model import Model
 from .assembly import Assembly
@@ -41,8 +42,6 @@ def assemblies(model: Model) -> list[Assembly]:
 
 def _drawn_only(model: Model) -> Assembly:
     """The drawn assembly, its points at the probe values when symbolic (for the listing)."""
-    from ..engine.instant import instantiate
-
     inst = instantiate(model)
     points = {str(r): inst.numvec(inst.points[r.point]) for r in model.material_points()}
     return Assembly(1, True, [], model, points)

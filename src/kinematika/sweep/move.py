@@ -12,6 +12,7 @@ import dataclasses
 import math
 from typing import Any, Mapping
 
+from ..algebra.backend import Numeric
 from ..errors import KinematikaError, said_of
 from ..expressions import Expr, ExpressionError, evaluate, parse
 from ..model.model import Model
@@ -21,6 +22,7 @@ from .plan import driven_joints
 from .posed import posed_model
 from .run import Sweeper
 from .symbolic_move import symbolic_moved
+
 
 def moved(model: Model, amounts: Mapping[str, Any]) -> Model:
     """`model` with each joint in `amounts` advanced by its amount (numbers or expressions)."""
@@ -56,8 +58,6 @@ def _drawn_in_numbers(model: Model) -> bool:
 
 def _amount(model: Model, raw: Any, where: str) -> float:
     """The amount as a number: an expression over the parameters that have values."""
-    from ..algebra.backend import Numeric
-
     try:
         expr = raw if isinstance(raw, Expr) else parse(raw)
         value = float(evaluate(expr, numeric_parameters(model), Numeric()))

@@ -20,6 +20,7 @@ from .assembler import Assembler
 from .assembly import Assembly
 from .plan import make_plan
 from .posed import posed_model
+from .poses import Poses, SpatialPoses, exp_rotation
 from .result import SweepResult
 
 STARTS = 48                 # random starting poses
@@ -65,8 +66,6 @@ class _Search:
         self.scale = sweeper.inst.scale
 
     def poses(self, x: np.ndarray) -> Any:
-        from .poses import Poses, SpatialPoses, exp_rotation
-
         ref = self.sweeper.inst.ref
         w = self.width
         if self.planar:
