@@ -295,8 +295,6 @@ def check_layout(moving: Follower, base: float, motion: Program | None, plate: b
     elif not abs(a - l) < rp < a + l:
         raise KinematikaError("schema", "cam-arm-reach", "follower.arm", radius=float(rp))
     if motion is not None:
-        import numpy as np
-
         top = float(np.max(motion.motion(np.linspace(0, motion.period, 2001))[0]))
         reach = math.pi / 2 if moving.contact.touches_with_face else math.pi
         if moving.start(base) + top >= reach:

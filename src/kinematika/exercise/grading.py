@@ -26,6 +26,7 @@ beside a right ω is not a reversed ω).
 """
 from __future__ import annotations
 
+import dataclasses
 from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
@@ -243,8 +244,6 @@ def checked(marks: list[Mark], marker: Marker, variant: Variant, carry: bool = T
 
 def _carried(marks: list[Mark], marker: Marker, variant: Variant) -> list[Mark]:
     """The marks with the wrong answers that follow from an earlier wrong one credited."""
-    import dataclasses
-
     from .carried import carried
 
     wrong = {m.question: m.value for m in marks if m.variant == variant.number and not m.correct
@@ -257,8 +256,6 @@ def _carried(marks: list[Mark], marker: Marker, variant: Variant) -> list[Mark]:
 def _sense_checked(marks: list[Mark], variant: Variant) -> list[Mark]:
     """A whole-world diagnosis (`sense-reversed`) kept only when no answer of the student is
     right where that mistake would have changed it."""
-    import dataclasses
-
     right = {m.question for m in marks if m.correct and not m.carried_from and m.variant == variant.number}
     rows = {r.question: r for r in variant.rows}
     out = []

@@ -14,9 +14,12 @@ variants than students they are dealt again in the same order. `students.csv`
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Optional
+
+import numpy as np
 
 from ..errors import KinematikaError
 from .table import column, csv_field, read_table
@@ -74,10 +77,6 @@ def read_class(path: Path) -> list[Student]:
 def assigned(students: list[Student], count: int, seed: int) -> list[Student]:
     """The students each with a variant 1…`count`: the variants shuffled with `seed` and
     dealt in the list's order (again from the start when there are more students)."""
-    import dataclasses
-
-    import numpy as np
-
     order = [int(k) + 1 for k in np.random.default_rng([STREAM, seed]).permutation(count)]
     return [dataclasses.replace(s, variant=order[i % count]) for i, s in enumerate(students)]
 

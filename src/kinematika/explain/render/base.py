@@ -10,10 +10,11 @@ from babel.lists import format_list
 from ...numerals import DECIMAL, decimal_sign, separator, written
 from ...text import shown_lines
 
-from ...model.wording import ARTICLES, NO_ARTICLE, part_subscript
+from ...model.wording import ARTICLES, NO_ARTICLE, Wording, part_subscript, rate_key
 from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Msg, Name, Names,
                         Described, Section, Sym, Table, Told, Value)
+from .names import written as written_name
 from .svg import Text, plain_text, sym_text
 
 TOKEN = "\ue000{}\ue001"
@@ -56,8 +57,6 @@ class Renderer:
     fmt = ""
 
     def __init__(self, doc: Document, cat: Catalogue, drawings: bool = True) -> None:
-        from ...model.wording import Wording
-
         self.doc = doc
         self.cat = cat
         self.lang = cat.lang
@@ -249,14 +248,11 @@ class Renderer:
         ω₂ for the blades' relative to the block), else as it is."""
         if s.fixed or s.base not in ("ω", "α") or not s.sub or s.sub_key:
             return s
-        from ...model.wording import rate_key
-        from .names import written
-
         parts = s.sub.split("/")
         spelt = self.wording.symbol(rate_key("omega" if s.base == "ω" else "alpha", *parts[:2]), self.lang)
         if spelt is None:
             return s
-        w = written(spelt)
+        w = written_name(spelt)
         return Sym(w.base, w.sub, w.sup or s.sup, s.vector, fixed=True)
 
     def sym(self, s: Sym) -> str:

@@ -15,7 +15,9 @@ from dataclasses import dataclass, field
 from html import escape
 from typing import Callable, Optional
 
-from ...text import shown_lines
+import numpy as np
+
+from ...text import shown, shown_lines
 from ..document import Figure, Sym
 
 COLOURS = {"known": "#222222", "unknown": "#c0392b", "result": "#1f5fa8", "velocity": "#2e8b57",
@@ -81,7 +83,6 @@ def plain_text(text: str) -> Text:
     """A plain label (a point's name), control characters shown, escaped for SVG, with its
     measured size."""
     from ...draw.labels import text_extent
-    from ...text import shown
 
     text = shown(text)
     w, h = text_extent(text, FONT)
@@ -151,7 +152,6 @@ def _layout(fig: Figure, texts: dict, names: list) -> Layout:
 
 def _place(lay: Layout, items: list) -> list[Placed]:
     """The labels placed by the figures' LabelBoard on an axes of the figure's size."""
-    import numpy as np
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure as MplFigure
 
