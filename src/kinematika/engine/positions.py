@@ -13,7 +13,7 @@ import re
 import warnings
 from typing import Any, Optional, Protocol
 
-from ..limits import POINT_OPS
+from .. import limits
 from ..errors import KinematikaError, KinematikaWarning, Names, Num, Said
 from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
                                    TwoCircles, TwoLines, construction_order, uses)
@@ -278,9 +278,9 @@ def _check_size(coords: tuple, name: str, where: str) -> None:
     """A `limit` error when a constructed point's exact coordinates are past reading even
     in named coordinates (`_bounded`), before any time goes into them."""
     size = _size(coords)
-    if size > POINT_OPS:
+    if size > limits.POINT_OPS:
         raise KinematikaError("limit", "point-too-large", where, point=name, size=Num(size, ","),
-                              limit=Num(POINT_OPS, ","))
+                              limit=Num(limits.POINT_OPS, ","))
 
 
 class _Builder:
