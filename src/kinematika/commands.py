@@ -119,7 +119,7 @@ def solved_scene(source: ModelLike, options: Any = None, how: How = AS_GIVEN) ->
     is solved within the same budget as `solve` (its `limit` error past it)."""
     from .api import solve
     from .budget import exact_work
-    from .draw.scene import build_scene
+    from .draw.build import build_scene
 
     model = how.model(source)
     with exact_work(model):

@@ -10,7 +10,7 @@ import kinematika
 from kinematika.draw.geometry import Box
 from kinematika.draw.joints import scene_symbols
 from kinematika.draw.options import DrawOptions
-from kinematika.draw.scene import build_scene
+from kinematika.draw.build import build_scene
 from kinematika.joints.symbols import kept_out, ring
 from tests.conftest import EXAMPLES
 

@@ -148,7 +148,7 @@ def test_svg_ids_do_not_depend_on_the_hash_salt():
     import matplotlib
 
     from kinematika.draw.figure import _numbered_ids, render
-    from kinematika.draw.scene import build_scene
+    from kinematika.draw.build import build_scene
 
     sol = solve(four_bar_tree([{"velocity": "B"}]))
     fig = render(build_scene(sol.inst, sol, DrawOptions(centres=True)), DrawOptions(centres=True))

@@ -8,7 +8,7 @@ import numpy as np
 
 import kinematika
 from kinematika.draw.options import DrawOptions
-from kinematika.draw.scene import build_scene
+from kinematika.draw.build import build_scene
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 

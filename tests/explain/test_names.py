@@ -85,7 +85,8 @@ def test_a_bodys_index_is_written_everywhere():
     doc = build(sol)
     text = render(doc, "en", "md", drawings=False)
     assert "ω_N" in text and "v_{B∈N/2}" in text and "I_1N" in text and "ω_3" not in text
-    from kinematika.draw.scene import build_scene, numbering
+    from kinematika.draw.build import build_scene
+    from kinematika.draw.scene import numbering
     from kinematika.draw.options import DrawOptions
 
     scene = build_scene(sol.inst, sol, DrawOptions(lang="en", bare=True, centres=True))

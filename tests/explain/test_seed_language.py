@@ -9,7 +9,7 @@ import re
 import pytest
 
 from kinematika.draw.options import DrawOptions
-from kinematika.draw.scene import build_scene
+from kinematika.draw.build import build_scene
 from kinematika.explain import render
 
 from tests.conftest import KINDS, sampled

@@ -17,7 +17,6 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import make_interp_spline
 
-from ..errors import KinematikaError, said_of
 from .contact import positions
 from .follower import Follower, Translating
 from .laws import Law
@@ -63,20 +62,3 @@ def measured_cam(points: np.ndarray, follower: Follower, sense: int = 1, n: int 
     spline = make_interp_spline(np.append(thetas, TURN), np.append(s, s[0]), k=5, bc_type="periodic")
     program = Program((Segment(Sampled(spline), 0.0, TURN, 0.0, 0.0, "measured", 1.0),), periodic=True)
     return DiscCam(program, follower, base_from(follower, lowest), sense)
-
-
-def measured_design(spec: Any) -> Any:
-    """A `CamDesign` from a file with `profile:` points."""
-    from .spec import CamDesign, _speed, follower
-
-    if spec.cam.kind != "disc":
-        raise KinematikaError("schema", "cam-profile-disc", "cam.kind")
-    if spec.cam.base is not None:
-        raise KinematikaError("schema", "cam-profile-base", "cam.base")
-    moving = follower(spec.follower)
-    try:
-        cam = measured_cam(np.array(spec.profile, dtype=float), moving, 1 if spec.cam.rotation == "ccw" else -1,
-                           spec.samples)
-    except ValueError as err:
-        raise KinematikaError("geometry", said_of(err), "profile") from None
-    return CamDesign(cam, _speed(spec, False), spec.units, spec.samples, spec.title or "", spec)

@@ -30,9 +30,10 @@ import math
 from dataclasses import dataclass
 from typing import Annotated, Any, Literal, Optional, Union
 
+import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, StrictFloat, StrictInt, ValidationError
 
-from ..errors import KinematikaError, Num, Said, pydantic_choices, pydantic_problem
+from ..errors import KinematikaError, Num, Said, pydantic_choices, pydantic_problem, said_of
 from ..text import brief
 from . import laws as law_table
 from .follower import Flat, Follower, Knife, Oscillating, Roller, Translating
@@ -230,8 +231,6 @@ def design(spec: CamFileSpec) -> CamDesign:
     if (spec.program is None) == (spec.profile is None):
         raise KinematikaError("schema", "cam-program-or-profile")
     if spec.profile is not None:
-        from .measured import measured_design
-
         return measured_design(spec)
     if spec.cam.base is None:
         raise KinematikaError("schema", "cam-base-missing", "cam")
@@ -244,6 +243,23 @@ def design(spec: CamFileSpec) -> CamDesign:
     kind = PlateCam if plate else DiscCam
     cam = kind(motion, moving, float(spec.cam.base), sense)
     return CamDesign(cam, speed, spec.units, spec.samples, spec.title or "", spec)
+
+
+def measured_design(spec: CamFileSpec) -> CamDesign:
+    """A `CamDesign` from a file with `profile:` points (the cam through them: `measured.measured_cam`)."""
+    from .measured import measured_cam          # scipy.interpolate, for measured profiles only
+
+    if spec.cam.kind != "disc":
+        raise KinematikaError("schema", "cam-profile-disc", "cam.kind")
+    if spec.cam.base is not None:
+        raise KinematikaError("schema", "cam-profile-base", "cam.base")
+    moving = follower(spec.follower)
+    try:
+        cam = measured_cam(np.array(spec.profile, dtype=float), moving, 1 if spec.cam.rotation == "ccw" else -1,
+                           spec.samples)
+    except ValueError as err:
+        raise KinematikaError("geometry", said_of(err), "profile") from None
+    return CamDesign(cam, _speed(spec, False), spec.units, spec.samples, spec.title or "", spec)
 
 
 def _speed(spec: CamFileSpec, plate: bool) -> float:
@@ -279,8 +295,6 @@ def check_layout(moving: Follower, base: float, motion: Program | None, plate: b
     elif not abs(a - l) < rp < a + l:
         raise KinematikaError("schema", "cam-arm-reach", "follower.arm", radius=float(rp))
     if motion is not None:
-        import numpy as np
-
         top = float(np.max(motion.motion(np.linspace(0, motion.period, 2001))[0]))
         reach = math.pi / 2 if moving.contact.touches_with_face else math.pi
         if moving.start(base) + top >= reach:

@@ -30,7 +30,7 @@ def draw(source: Any, path: Optional[Path | str] = None, options: Optional[DrawO
     from ..solution import Solution
     from ..sweep.posing import solved as solve
     from .figure import render, save
-    from .scene import build_scene
+    from .build import build_scene
 
     from .lock import MATPLOTLIB
 

@@ -107,7 +107,7 @@ class Film:
         planar `Model` `model`, its drawn instant painted once (see `of`)."""
         from ..sweep.posing import solved as solve
         from .figure import new_figure
-        from .scene import build_scene
+        from .build import build_scene
 
         _planar(model)
         options = options or DrawOptions()

@@ -15,7 +15,7 @@ import numpy as np
 from .geometry import clip_line, clip_segment, convex_hull, perpendicular
 from ..model.wording import noun
 from .names import plain
-from .picture import Context
+from .context import Context
 from .scene import BodyView, ShapeView
 from ..joints.symbols import HATCH_BAND
 from .style import BAR_WIDTH, GROUND, INK, POINT_LABEL

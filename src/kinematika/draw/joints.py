@@ -7,7 +7,7 @@ from __future__ import annotations
 from ..joints import kind as joint_kind
 from ..joints.symbols import Mark
 from .geometry import Box
-from .picture import Context
+from .context import Context
 from .scene import Scene
 
 

@@ -26,7 +26,7 @@ def model_svg(model: Any, options: Optional[DrawOptions] = None) -> Optional[str
     from ..engine.instant import instantiate
     from ..sweep.posing import solved as solve
     from .figure import render, svg_text
-    from .scene import build_scene
+    from .build import build_scene
 
     options = options or DrawOptions(width=WIDTH)
     try:

@@ -13,7 +13,7 @@ from typing import Optional
 import numpy as np
 
 from .geometry import clip_line, clip_polyline, clip_segment, edge_point, unit
-from .picture import Context
+from .context import Context
 from .scene import CurvatureView, MarkView
 from .names import coordinates
 from .style import ACCELERATION, CENTRE, CURVATURE, INK

@@ -14,7 +14,7 @@ from typing import Optional
 import numpy as np
 
 from .geometry import unit
-from .picture import Context
+from .context import Context
 from .scene import VectorView
 from .names import equation
 from .style import KIND_COLOURS, LONGEST, SHORTEST

@@ -5,7 +5,7 @@ from typing import Any
 
 from ..algebra.vectors import dot, sub
 from ..errors import Said
-from ..model.model import Driver
+from ..model.model import Driver, PointPair
 from .instant import Instant
 from ..joints import AXES, JointGeometry
 from .joints import Row, joint_rate
@@ -72,8 +72,6 @@ def _reference_direction(inst: Instant, body: str, d: Any, where: str) -> tuple:
     """A velocity driver's `along`, fixed in its frame of reference `body`: as drawn, turned
     with that body in a moved model (`Model.turns`) or a sweep's pose (`Instant.body_turn`);
     two points give it at the instant anyway."""
-    from ..model.model import PointPair
-
     if inst.body_turn is not None and not isinstance(d, PointPair):
         return tuple(inst.body_turn(body, inst.direction(d, where)))
     return inst.body_direction(body, d, where)

@@ -18,6 +18,7 @@ from ..algebra.backend import Symbolic
 from ..shapes import Circle, Disc
 from .instant import Instant
 from .motion import BodyState, Motion
+from .positions import simple_coordinate
 
 
 @dataclass
@@ -75,7 +76,7 @@ def stand_in_instant(inst: Instant) -> tuple[Instant, dict]:
     for name, coords in inst.points.items():
         out = []
         for axis, c in zip("xyz", coords):
-            if _simple(c):
+            if simple_coordinate(c):
                 out.append(c)
                 continue
             s = sympy.Dummy(f"{name}_{axis}", real=True)
@@ -107,7 +108,7 @@ def stand_in_values(xs: list[Any], inst: Instant, prefix: str) -> tuple[list[Any
 
     out, values = [], {}
     for i, x in enumerate(xs):
-        if _simple(x):
+        if simple_coordinate(x):
             out.append(x)
             continue
         s = sympy.Dummy(f"{prefix}{i}", real=True)
@@ -117,22 +118,6 @@ def stand_in_values(xs: list[Any], inst: Instant, prefix: str) -> tuple[list[Any
     return out, values
 
 
-STAND_IN_OPS = 12     # coordinates larger than this, or with a root of a formula, stand in
-
-
-def _simple(c: Any) -> bool:
-    """A coordinate that costs nothing to carry: small, and free of roots of formulas
-    (a number like √3 is fine); standing in for it would only hide its simple form."""
-    import sympy
-
-    if isinstance(c, (int, float)) or c.is_Number or c.is_Symbol:
-        return True
-    if any(p.exp.is_Rational and not p.exp.is_Integer and p.base.free_symbols
-           for p in c.atoms(sympy.Pow)):
-        return False
-    from ..algebra.fields import ops
-
-    return ops(c) <= STAND_IN_OPS
 
 
 def _moved_shape(shape: Any, points: dict[str, tuple]) -> Any:

@@ -9,21 +9,53 @@ construction that cannot be drawn is a `geometry` error naming the point and by 
 from __future__ import annotations
 
 import math
+import re
 import warnings
-from typing import TYPE_CHECKING, Any, Optional
+from typing import Any, Optional, Protocol
 
+from .. import limits
 from ..errors import KinematikaError, KinematikaWarning, Names, Num, Said
 from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
                                    TwoCircles, TwoLines, construction_order, uses)
 
-if TYPE_CHECKING:
-    from .instant import Instant
+from ..expressions import Expr
+from ..model.model import Direction, Model
+
+
+class Evaluated(Protocol):
+    """What placing the points reads and records of an instant (`instant.Instant`): the
+    model, the backend and whether it is exact, the values of parameters, vectors and
+    directions, the turns' pivots where drawn, and the named quantities (`names`) with
+    their values at the probe (`probe`), which naming a compound coordinate adds to."""
+
+    model: Model
+    backend: Any
+    drawn: dict
+    points: dict[str, tuple]
+    names: dict
+    probe: dict
+
+    @property
+    def symbolic(self) -> bool:
+        """Whether the instant computes on exact formulas."""
+
+    def value(self, expr: Expr, where: str) -> Any:
+        """`expr` evaluated on the instant's parameters."""
+
+    def vector(self, exprs: tuple, where: str) -> tuple:
+        """Each component of `exprs` evaluated."""
+
+    def direction(self, d: Direction, where: str) -> tuple:
+        """A unit direction of the model."""
+
+    def num(self, x: Any) -> float:
+        """A scalar as a float (a symbolic one at the probe values)."""
 
 TOLERANCE = 1e-6        # relative: circles this close to touching meet in one point
 TURN = 2 * math.pi
 
 
-def positions(inst: "Instant", builder: Optional[type] = None) -> dict[str, tuple]:
+def positions(inst: Evaluated, builder: Optional[type] = None) -> dict[str, tuple]:
     """Every point's coordinates at the instant, in the model's order; `builder` evaluates
     the constructions (`_Builder`, or the per-design arrays' in `array_positions`). A moved
     model (`Model.turns`) places its points by `_Moving`."""
@@ -37,7 +69,7 @@ def positions(inst: "Instant", builder: Optional[type] = None) -> dict[str, tupl
     return {name: out[name] for name in model.points}
 
 
-def _place(inst: "Instant", builder: type, name: str, spec: Any, out: dict[str, tuple]) -> tuple:
+def _place(inst: Evaluated, builder: type, name: str, spec: Any, out: dict[str, tuple]) -> tuple:
     """A point as written: its coordinates, or its construction from the points in `out`."""
     where = f"points.{name}"
     if isinstance(spec, tuple):
@@ -59,7 +91,7 @@ class _Moving:
 
     The drawn places of the turns' pivots are kept in `inst.drawn`."""
 
-    def __init__(self, inst: "Instant", builder: type) -> None:
+    def __init__(self, inst: Evaluated, builder: type) -> None:
         from .turns import turn_for
 
         self.inst, self.builder, self.model = inst, builder, inst.model
@@ -126,7 +158,7 @@ class _Moving:
 NAME_OPS = 400      # a constructed point whose exact coordinates would be longer is named
 
 
-def angle_warnings(inst: "Instant") -> list[KinematikaWarning]:
+def angle_warnings(inst: Evaluated) -> list[KinematikaWarning]:
     """A warning for every drawing angle (a polar point's `angle`) that is a number more than
     one turn (2π) from zero: angles are radians, so `angle: 30` is 30 rad (1719°, 4.8 turns),
     most likely 30° written without `deg()`. The model is answered as written; the warning
@@ -167,7 +199,7 @@ def _angle_stated(expr: Any, parameters: dict, seen: set) -> bool:
     return False
 
 
-def _bounded(inst: "Instant", builder: type, spec: Construction, built: tuple, name: str,
+def _bounded(inst: Evaluated, builder: type, spec: Construction, built: tuple, name: str,
              out: dict[str, tuple], where: str) -> tuple:
     """The exact coordinates of a constructed point, bounded: when written out they would
     pass `NAME_OPS` operations (each circle intersection writes the points it is drawn from
@@ -187,17 +219,34 @@ def _bounded(inst: "Instant", builder: type, spec: Construction, built: tuple, n
     return name_point(inst, name, tuple(inst.backend.simplify(c) for c in built))
 
 
-def name_point(inst: "Instant", point: str, coords: tuple) -> tuple:
+STAND_IN_OPS = 12     # coordinates larger than this, or with a root of a formula, stand in
+
+
+def simple_coordinate(c: Any) -> bool:
+    """A coordinate that costs nothing to carry: small, and free of roots of formulas
+    (a number like √3 is fine); standing in for it would only hide its simple form."""
+    import sympy
+
+    if isinstance(c, (int, float)) or c.is_Number or c.is_Symbol:
+        return True
+    if any(p.exp.is_Rational and not p.exp.is_Integer and p.base.free_symbols
+           for p in c.atoms(sympy.Pow)):
+        return False
+    from ..algebra.fields import ops
+
+    return ops(c) <= STAND_IN_OPS
+
+
+def name_point(inst: Evaluated, point: str, coords: tuple) -> tuple:
     """`coords` with each compound coordinate replaced by a named symbol (x_P, y_P), whose
     formula and value at the probe `inst` records."""
     import sympy
 
     from ..algebra.evaluate import complex_value
-    from .exact import _simple
 
     out = []
     for axis, c in zip("xyz", coords):
-        if _simple(c) or c in inst.names:
+        if simple_coordinate(c) or c in inst.names:
             out.append(c)
             continue
         symbol = sympy.Symbol(fresh_name(inst, f"{axis}_{point}"), real=True)
@@ -207,10 +256,8 @@ def name_point(inst: "Instant", point: str, coords: tuple) -> tuple:
     return tuple(out)
 
 
-def fresh_name(inst: "Instant", wanted: str, taken: set[str] | None = None) -> str:
+def fresh_name(inst: Evaluated, wanted: str, taken: set[str] | None = None) -> str:
     """An identifier for a named quantity, free among the parameters, the names and `taken`."""
-    import re
-
     base = re.sub(r"\W", "_", wanted)
     taken = (set(inst.model.parameters) | {str(s) for s in inst.names} | {"pi", "E", "I", "oo"}
              | (taken or set()))
@@ -230,18 +277,16 @@ def _size(coords: tuple) -> int:
 def _check_size(coords: tuple, name: str, where: str) -> None:
     """A `limit` error when a constructed point's exact coordinates are past reading even
     in named coordinates (`_bounded`), before any time goes into them."""
-    from ..limits import POINT_OPS
-
     size = _size(coords)
-    if size > POINT_OPS:
+    if size > limits.POINT_OPS:
         raise KinematikaError("limit", "point-too-large", where, point=name, size=Num(size, ","),
-                              limit=Num(POINT_OPS, ","))
+                              limit=Num(limits.POINT_OPS, ","))
 
 
 class _Builder:
     """Evaluates one construction; `points` holds the points already placed."""
 
-    def __init__(self, inst: "Instant", points: dict[str, tuple], where: str) -> None:
+    def __init__(self, inst: Evaluated, points: dict[str, tuple], where: str) -> None:
         self.inst, self.points, self.where = inst, points, where
         self.bk = inst.backend
 

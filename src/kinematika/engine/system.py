@@ -23,6 +23,7 @@ from .motion import BodyState, Motion
 from .terms import MECHANICS, Terms
 from .linsolve import (LARGE, Analysis, SparseAnalysis, analyse, analyse_sparse, solve_numeric,
                        solve_symbolic, sparse_matrix)
+from .positions import fresh_name
 
 
 class InstantSolver:
@@ -205,8 +206,6 @@ class InstantSolver:
         long with it written in: omega_BODY (omega_BODY_x in 3D), v0x_BODY for the velocity
         of the body's point at the origin."""
         import sympy
-
-        from .positions import fresh_name
 
         u, rot = self.unknowns, self.space.rot
         out = {}

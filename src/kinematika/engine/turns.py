@@ -13,13 +13,28 @@ of a body its place moves with, never one taken from the point itself.
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import TYPE_CHECKING, Any, Optional
+from typing import Any, Optional, Protocol
 
 from ..algebra.vectors import dot, sub
-from ..model.model import Model, Turn
+from ..expressions import Expr, parse
+from ..model.model import Direction, Model, Turn
 
-if TYPE_CHECKING:
-    from .instant import Instant
+
+class Placed(Protocol):
+    """What turning a body's points reads of an instant (`instant.Instant`): the model, the
+    backend, the turns' pivots where drawn (`drawn`) and the points where they are now
+    (`points`), and its parameters' values and directions."""
+
+    model: Model
+    backend: Any
+    drawn: dict
+    points: dict[str, tuple]
+
+    def value(self, expr: Expr, where: str) -> Any:
+        """`expr` evaluated on the instant's parameters."""
+
+    def direction(self, d: Direction, where: str) -> tuple:
+        """A unit direction of the model."""
 
 
 def turn_for(model: Model, name: str) -> Optional[Turn]:
@@ -55,7 +70,6 @@ def turned_polar(model: Model, name: str, spec: Any) -> Any:
     """A polar point from a point of the body whose turn places it (`turn_for`), that turn an
     angle: the same polar point with its angle advanced by the turn's (a crank pin at θ,
     the crank turned 30°, is at θ + 30°); None for any other point."""
-    from ..expressions import parse
     from ..model.constructions import Polar
 
     turn = turn_for(model, name)
@@ -65,7 +79,7 @@ def turned_polar(model: Model, name: str, spec: Any) -> Any:
     return replace(spec, angle=parse(f"({spec.angle.text}) + ({turn.angle.text})"))
 
 
-def rotation(inst: "Instant", turn: Turn, now: dict[str, tuple]) -> tuple[Any, Any]:
+def rotation(inst: Placed, turn: Turn, now: dict[str, tuple]) -> tuple[Any, Any]:
     """(cos, sin) of the turn's rotation (1, 0 for a shift)."""
     bk = inst.backend
     if turn.angle is not None:
@@ -80,7 +94,7 @@ def rotation(inst: "Instant", turn: Turn, now: dict[str, tuple]) -> tuple[Any, A
     return bk.simplify(along / norm), bk.simplify(across / norm)
 
 
-def carry(inst: "Instant", turn: Turn, p: tuple, now: dict[str, tuple]) -> tuple:
+def carry(inst: Placed, turn: Turn, p: tuple, now: dict[str, tuple]) -> tuple:
     """The drawn place `p` of a point of the turned body, now (`now`: the present places)."""
     bk = inst.backend
     if turn.pivot is None:
@@ -94,7 +108,7 @@ def carry(inst: "Instant", turn: Turn, p: tuple, now: dict[str, tuple]) -> tuple
     return tuple(bk.simplify(v) for v in (o[0] + c * dx - s * dy, o[1] + s * dx + c * dy))
 
 
-def turn_offset(inst: "Instant", turn: Turn, origin: tuple, p: tuple, now: dict[str, tuple]) -> tuple:
+def turn_offset(inst: Placed, turn: Turn, origin: tuple, p: tuple, now: dict[str, tuple]) -> tuple:
     """`p` turned about `origin` by the turn's rotation (an offset drawn in the body)."""
     bk = inst.backend
     c, s = rotation(inst, turn, now)
@@ -102,7 +116,7 @@ def turn_offset(inst: "Instant", turn: Turn, origin: tuple, p: tuple, now: dict[
     return tuple(bk.simplify(v) for v in (origin[0] + c * dx - s * dy, origin[1] + s * dx + c * dy))
 
 
-def turned(inst: "Instant", body: str, u: tuple) -> tuple:
+def turned(inst: Placed, body: str, u: tuple) -> tuple:
     """A direction fixed in `body`, turned with it by its turn (unit stays unit)."""
     turn = next((t for t in inst.model.turns if t.body == body), None)
     if turn is None or turn.pivot is None:

@@ -155,12 +155,6 @@ def _text(path: Path, text: str) -> None:
     path.write_text(text, encoding="utf-8", newline="")
 
 
-def _csv_field(text: str) -> str:
-    buf = io.StringIO()
-    csv.writer(buf, lineterminator="").writerow([text])
-    return buf.getvalue()
-
-
 def meta(ex: Exercise) -> dict[str, Any]:
     """`exercise.json`: the model's file name, the `--vary` options (NAME=LOW:HIGH:STEP), the
     count of variants, the seed and the language — what makes the same exercise again."""

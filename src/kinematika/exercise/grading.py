@@ -26,6 +26,7 @@ beside a right ω is not a reversed ω).
 """
 from __future__ import annotations
 
+import dataclasses
 from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
@@ -35,7 +36,7 @@ from ..errors import KinematikaError, Names, Num, Said
 from .build import Exercise, Variant
 from .key import Row
 from .mistakes import Mistaken
-from .table import Line, Unreadable
+from .table import Line, Unreadable, csv_field, read_table
 from .typed import in_model_units, read_typed
 
 WHOLE_WORLD = ("sense-reversed",)      # a mistake a student makes everywhere or nowhere
@@ -145,8 +146,6 @@ class Answer:
 
 def read_answers(exercise: Exercise, path: Path, assigned: dict[str, int]) -> tuple[list[Answer], list[Unreadable]]:
     """The rows of `ANSWERS.csv` that can be read, and the others with their line numbers."""
-    from .table import read_table
-
     table = read_table(path, ["student", "question", "value"] + ([] if assigned else ["variant"]),
                        optional=("variant",), decimal_last=True)
     bad = list(table.unreadable)
@@ -245,8 +244,6 @@ def checked(marks: list[Mark], marker: Marker, variant: Variant, carry: bool = T
 
 def _carried(marks: list[Mark], marker: Marker, variant: Variant) -> list[Mark]:
     """The marks with the wrong answers that follow from an earlier wrong one credited."""
-    import dataclasses
-
     from .carried import carried
 
     wrong = {m.question: m.value for m in marks if m.variant == variant.number and not m.correct
@@ -259,8 +256,6 @@ def _carried(marks: list[Mark], marker: Marker, variant: Variant) -> list[Mark]:
 def _sense_checked(marks: list[Mark], variant: Variant) -> list[Mark]:
     """A whole-world diagnosis (`sense-reversed`) kept only when no answer of the student is
     right where that mistake would have changed it."""
-    import dataclasses
-
     right = {m.question for m in marks if m.correct and not m.carried_from and m.variant == variant.number}
     rows = {r.question: r for r in variant.rows}
     out = []
@@ -300,11 +295,9 @@ def summary(exercise: Exercise, marks: list[Mark]) -> dict[str, Any]:
 def gradebook_csv(result: dict[str, Any]) -> str:
     """A CSV Moodle's gradebook imports (Grades → Import → CSV file): `student` (map it to
     the users' ID number, username or email) and `grade`, the score out of 100."""
-    from .folder import _csv_field
-
     lines = ["student,grade"]
     for student, data in result["students"].items():
-        lines.append(f"{_csv_field(student)},{round(100 * data['score'], 2):g}")
+        lines.append(f"{csv_field(student)},{round(100 * data['score'], 2):g}")
     return "\n".join(lines) + "\n"
 
 

@@ -14,11 +14,15 @@ variants than students they are dealt again in the same order. `students.csv`
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Optional
 
+import numpy as np
+
 from ..errors import KinematikaError
+from .table import column, csv_field, read_table
 
 STREAM = 0x5EED              # the shuffle's stream, apart from the variants' own draw
 # words of a column that holds a name, in en, es, ca, eu (and Moodle's column names)
@@ -45,8 +49,6 @@ class Student:
 def read_class(path: Path) -> list[Student]:
     """The students of a class list (its first column the ids); a usage error naming the
     file when it names none or names one twice."""
-    from .table import column, read_table
-
     table = read_table(path, [])
     if not table.header or not table.header[0]:
         raise KinematikaError("usage", "students-first-column", "--students", name=path.name)
@@ -75,26 +77,18 @@ def read_class(path: Path) -> list[Student]:
 def assigned(students: list[Student], count: int, seed: int) -> list[Student]:
     """The students each with a variant 1…`count`: the variants shuffled with `seed` and
     dealt in the list's order (again from the start when there are more students)."""
-    import dataclasses
-
-    import numpy as np
-
     order = [int(k) + 1 for k in np.random.default_rng([STREAM, seed]).permutation(count)]
     return [dataclasses.replace(s, variant=order[i % count]) for i, s in enumerate(students)]
 
 
 def students_csv(students: list[Student]) -> str:
     """`students.csv`: `student,variant`, one row per student."""
-    from .folder import _csv_field
-
-    return "student,variant\n" + "".join(f"{_csv_field(s.id)},{s.variant}\n" for s in students)
+    return "student,variant\n" + "".join(f"{csv_field(s.id)},{s.variant}\n" for s in students)
 
 
 def read_students(path: Path, count: int) -> Optional[list[Student]]:
     """The class of a folder's `students.csv` (None when there is none); a variant outside
     1…`count` is an error naming the line."""
-    from .table import read_table
-
     if not path.exists():
         return None
     table = read_table(path, ["student", "variant"])

@@ -127,3 +127,11 @@ def _digits(text: str) -> bool:
 def column(table: Table, *words: str) -> Optional[str]:
     """The first column of the table whose name contains one of `words` (lower case)."""
     return next((h for h in table.header if any(w in h for w in words)), None)
+
+
+def csv_field(text: str) -> str:
+    """`text` as one field of a CSV row, quoted as the csv module quotes it (when it holds a
+    comma, a quote or a line break)."""
+    buf = io.StringIO()
+    csv.writer(buf, lineterminator="").writerow([text])
+    return buf.getvalue()

@@ -24,7 +24,7 @@ from ..shapes import Circle
 from .context import Ctx
 from .document import Ann, Msg, Sym, Term, point
 from .order import Step
-from .terms import relative_name, rotation_terms, slide_terms
+from .terms import guide, relative_name, rotation_terms, slide_terms
 
 
 @dataclass
@@ -109,8 +109,6 @@ def higher_pair_steps(steps: Any, step: Step) -> Optional[list]:
         o = first.at
         turning = [steps.point(o, body)] + rotation_terms(ctx, level, body, o, pin, True)
     else:                                                  # it slides on k along the guide
-        from .planar import guide
-
         turning = [steps.point(pin, k)] + slide_terms(ctx, level, k, body, pin, guide(first), first.id)
     relative = path_terms(ctx, level, path, pair.id)
     if path.mover == body:                                 # the body carries the pin

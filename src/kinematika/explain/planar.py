@@ -19,7 +19,7 @@ from .contacts import geometric_blocks
 from .copies import copy_of
 from .kinds import kind_key, knife_edge, pin_only, rolls, turns
 from .order import Step
-from .terms import contact_term, point_term, rotation_terms, slide_terms, target_term
+from .terms import contact_term, guide, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
 from .vehicles import spins, wheel_route
 
@@ -476,9 +476,6 @@ def driven(ctx: Ctx, d) -> list[str]:
     return ctx.model.carriers(point) if ctx.shared(point) else [d.point.body]
 
 
-def guide(j: Joint) -> Msg:
-    """The direction of joint `j`'s guide, as a message ("guide j3")."""
-    return msg("dir.guide", joint=joint(j.id))
 
 
 def driver_msg(ctx: Ctx, d, level: str) -> Msg:

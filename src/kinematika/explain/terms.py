@@ -9,8 +9,9 @@ normal terms ∥ PQ, relative terms ∥ the guide, Coriolis terms ⊥ the guide.
 from __future__ import annotations
 
 from ..algebra.vectors import scale
+from ..model.model import Joint
 from .context import Ctx, alpha_sym, omega_sym, segment
-from .document import Ann, Msg, Sym, Term
+from .document import Ann, Msg, Sym, Term, joint, msg
 
 UNIT = {"v": "speed", "a": "accel"}
 KNOWN = (Ann("M"), Ann("D"))
@@ -47,6 +48,11 @@ def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: boo
             Term(Sym("a", name, "t"), ctx.clean(tangential, "accel"),
                  Ann("?") if unknown else Ann("M", [al, f"·{seg}"] if ctx.planar else ""), Ann("perp", seg),
                  [al, f" × {seg}"], unknown, "tangential")]
+
+
+def guide(j: Joint) -> Msg:
+    """The direction of joint `j`'s guide, as a message ("guide j3")."""
+    return msg("dir.guide", joint=joint(j.id))
 
 
 def slide_terms(ctx: Ctx, level: str, frame: str, moving: str, point: str, guide: Msg,

@@ -87,12 +87,13 @@ class Evaluator:
 
     def _alone(self, values: dict[str, float], out: "Rows", d: int) -> None:
         """One design through `run_sweep`: its reason if it fails, its metrics otherwise."""
+        from ..sweep.move import as_written
         from ..sweep.run import Sweeper
 
         model = with_parameters(self.model, {k: repr(v) for k, v in values.items()})
         s = self.sweep
         try:
-            sweeper = Sweeper(model, s.joint)
+            sweeper = Sweeper(as_written(model), s.joint)
             try:
                 result = sweeper.run(s.by, s.steps, through=False)   # a cycle of the input, as
             except KinematikaError as err:                           # the batch kernel sweeps it

@@ -14,7 +14,7 @@ size), `frame` (the fixed body), `still` (a still figure, not an animation's fra
 `centroid()` (of the moving bodies' points: "away from the mechanism"), `points(body)`
 (its points on the page), `clip(p, d, inset)` (the part of the line through p along d inside
 the figure's reach, less `inset`, or None), `keep_out()` (closed outlines that fixed guides
-stop short of: the moving bodies' wheels and cams) — `draw.picture.Context`.
+stop short of: the moving bodies' wheels and cams) — `draw.context.Context`.
 """
 from __future__ import annotations
 

@@ -20,11 +20,10 @@ import math
 import re
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any, Optional
+from typing import Any, Collection, Optional
 
 from ..errors import KinematikaError
 from ..languages import known
-from .model import Parameter
 
 PLACEHOLDER = re.compile(r"\{(\w+)\}")
 
@@ -106,10 +105,10 @@ class ExerciseSection:
         return self.units.get(name)
 
 
-def exercise_section(raw: Any, params: dict[str, Parameter], questions: int,
+def exercise_section(raw: Any, params: Collection[str], questions: int,
                      points: Any) -> Optional[ExerciseSection]:
-    """The section checked against the model: known parameters, languages, units, questions
-    and points; None when the model has none."""
+    """The section checked against the model: known parameters (`params`, their names),
+    languages, units, questions and points; None when the model has none."""
     if raw is None:
         return None
     for lang in raw.title:

@@ -10,9 +10,10 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
+import warnings
 from typing import Mapping, Optional
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, KinematikaWarning, Names, Said
 from ..expressions import ExpressionError, evaluate, parse
 from .model import Model, Parameter
 
@@ -57,3 +58,25 @@ def numeric_parameters(model: Model) -> dict[str, float]:
                 del pending[name]
                 progress = True
     return env
+
+
+def at_draw_numbers(model: Model, what: str, why: Optional[Said] = None,
+                    warn: bool = True) -> tuple[Model, list[KinematikaWarning]]:
+    """`model`'s symbols given their `draw_at` numbers, for the work that needs numbers (`what`:
+    `sweep`; `move`, a move the symbols cannot follow exactly), and the warning that says so
+    (`why`, when given, ends it), issued as a Python warning (the command line prints it)
+    unless `warn` is False (the caller issues it once the work is under way).
+    A symbol without a `draw_at` number is a `schema` error naming it."""
+    symbols = [n for n, p in model.parameters.items() if p.value is None]
+    if not symbols:
+        return model, []
+    missing = [n for n in symbols if n not in model.draw_at]
+    if missing:
+        raise KinematikaError("schema", "needs-draw-at", "parameters", what=what, names=Names(missing))
+    values = {n: repr(float(model.draw_at[n])) for n in symbols}
+    shown = ", ".join(f"{n} = {model.draw_at[n]:g}" for n in symbols)
+    note = KinematikaWarning("at-draw-numbers", "draw_at", what=what, values=shown, why=why or "",
+                             said=str(why is not None).lower())
+    if warn:
+        warnings.warn(note, stacklevel=2)
+    return with_parameters(model, values), [note]

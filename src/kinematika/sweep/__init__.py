@@ -12,7 +12,7 @@ from __future__ import annotations
 from importlib import import_module
 from typing import Any
 
-_EXPORTS = {"SweepResult": "result", "run_sweep": "run"}
+_EXPORTS = {"SweepResult": "result", "run_sweep": "posing"}
 __all__ = ["SweepResult", "run_sweep"]
 
 

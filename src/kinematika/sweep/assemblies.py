@@ -11,50 +11,37 @@ from many starting poses, and the distinct real solutions found are listed.
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, field
 from typing import Any, Optional
 
 import numpy as np
 
+from ..engine.instant import instantiate
 from ..errors import KinematikaError
 from ..model.model import Model
+from .assembly import Assembly
+from .move import as_written
+from .plan import driven_joints
 from .posed import posed_model
+from .run import Sweeper
+from .search import searched_assemblies
 
 MAX_DYADS = 12               # 4096 closures: beyond this, listing them helps nobody
-
-
-@dataclass
-class Assembly:
-    """One way the mechanism closes at the drawn input."""
-
-    number: int
-    drawn: bool
-    closures: list[str]                       # how each dyad closes, in words
-    model: Model                              # the mechanism posed on this assembly
-    points: dict[str, tuple] = field(default_factory=dict)   # every point's place
 
 
 def assemblies(model: Model) -> list[Assembly]:
     """Every assembly of `model` at its drawn input; the drawn one is marked. A model whose
     position analysis needs numbers it does not have (symbols), or that has no driven joint
     to hold at its input (a vehicle driven by a speed), lists the drawn assembly only."""
-    from .plan import driven_joints
-    from .run import Sweeper
-
     if any(p.value is None for p in model.parameters.values()) or not driven_joints(model):
         return [_drawn_only(model)]
-    sweeper = Sweeper(model)
+    sweeper = Sweeper(as_written(model))           # on its own `move:`, as a file is posed
     if sweeper.closed is not None:
         return _dyad_assemblies(model, sweeper)
-    from .search import searched_assemblies
-
     return searched_assemblies(model, sweeper)
 
 
 def _drawn_only(model: Model) -> Assembly:
     """The drawn assembly, its points at the probe values when symbolic (for the listing)."""
-    from ..engine.instant import instantiate
-
     inst = instantiate(model)
     points = {str(r): inst.numvec(inst.points[r.point]) for r in model.material_points()}
     return Assembly(1, True, [], model, points)

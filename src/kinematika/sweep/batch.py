@@ -11,6 +11,7 @@ rows and says why a design fails in the contract's words.
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from typing import Any, Optional
 
@@ -24,8 +25,7 @@ from ..errors import KinematikaError, speaking
 from ..model.model import Model, Parameter, PointPair
 from ..structure.assur import assur_groups
 from .closed_form import ClosedForm, InputRates, Outcome, applicable
-from .plan import Plan, make_plan, swept_joint
-from .run import bad_row
+from .plan import Plan, bad_row, make_plan, swept_joint
 
 SLOT_GAP = 1e-6          # relative to the model's size, as the engine checks a slot's pin
 
@@ -174,8 +174,6 @@ class BatchSweeper:
 
 def model_with_symbols(model: Model, varied: list[str]) -> Model:
     """A copy of `model` whose varied parameters have no value (each design gives one)."""
-    import dataclasses
-
     params = dict(model.parameters)
     for name in varied:
         params[name] = Parameter(name, None, params[name].positive)

@@ -33,7 +33,7 @@ from ..errors import KinematikaError, Said
 from ..expressions import parse
 from ..joints.rolling import arc_slip
 from ..joints.tangency import circles_tangency
-from ..model.model import Model, Turn
+from ..model.model import Model, PointPair, Turn
 from ..shapes import Circle
 
 ANGLE_TOLERANCE = 1e-6          # radians: a candidate's turn against the sweep's, every row
@@ -77,8 +77,6 @@ def carried_turns(model: Model, inputs: list[Input], path: Path, values: dict[st
 def fixture(model: Model, body: str) -> "Said | str":
     """What of `body` is fixed in it by numbers, which only its turn can carry (a shape's
     place or direction, a joint's direction, as a message), or ''."""
-    from ..model.model import PointPair
-
     for s in model.bodies[body].shapes:
         if any(getattr(s, k, ()) for k in ("center", "through")) or not all(
                 isinstance(getattr(s, k, None), (PointPair, type(None))) for k in ("direction", "axis", "normal")):

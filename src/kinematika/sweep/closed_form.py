@@ -17,7 +17,7 @@ solves D designs over N positions, each design on its own drawn branch (`sweep.b
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Optional
+from typing import Any, Optional
 
 import numpy as np
 
@@ -224,6 +224,13 @@ def const(value: complex | float, n: int) -> np.ndarray:
     out = np.ndarray((n,), arr.dtype, arr, strides=(0,))
     out.flags.writeable = False
     return out
+
+
+def series(values: Any, n: int) -> np.ndarray:
+    """Values over the rows: an array as it is, a constant as a read-only stride-0 view."""
+    if isinstance(values, np.ndarray) and values.shape == (n,):
+        return values
+    return const(float(values), n)
 
 
 # the dyads --------------------------------------------------------------------------------

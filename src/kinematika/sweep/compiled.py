@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Optional
+from typing import Optional
 
 import numpy as np
 
@@ -38,9 +38,7 @@ from ..engine.idle import idle_links
 from .plan import Plan
 from .rigid import LinearVectors, perpendicular, rotation_vectors, stepped
 from .stacked import Regular, Twists, cross, dot, norm1, refined, times
-
-if TYPE_CHECKING:
-    from .run import Sweeper
+from .swept import Swept
 
 COARSE_STEP = 0.15          # rad between coarse positions
 AHEAD = 5                   # coarse positions solved at once from the last one
@@ -64,7 +62,7 @@ class _Pairs:
 class CompiledNewton:
     """The constraint pattern of one mechanism as arrays; `sweep` solves every position."""
 
-    def __init__(self, sweeper: "Sweeper", plan: Plan) -> None:
+    def __init__(self, sweeper: Swept, plan: Plan) -> None:
         inst, u = sweeper.inst, sweeper.solver.unknowns
         model = inst.model
         self.bodies = list(u.bodies)
@@ -528,7 +526,7 @@ class CompiledNewton:
         return -np.concatenate(known, axis=1)[:, self.keep]
 
 
-def supported(sweeper: "Sweeper") -> bool:
+def supported(sweeper: Swept) -> bool:
     """A spatial mechanism of revolute and spherical joints, every driver a revolute's rate."""
     model = sweeper.model
     if model.dimension != 3 or not model.drivers:
@@ -538,7 +536,7 @@ def supported(sweeper: "Sweeper") -> bool:
             and all(d.kind == "joint" and joints[d.joint].kind.coordinate == "angle" for d in model.drivers))
 
 
-def compiled_sweep(sweeper: "Sweeper", plan: Plan):
+def compiled_sweep(sweeper: Swept, plan: Plan):
     """The sweep's `SweepResult` by the compiled path, or None when the general one must run."""
     if not supported(sweeper) or plan.steps < 1:
         return None

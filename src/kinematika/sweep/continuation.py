@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Callable, Optional
+from typing import Any, Callable, Optional
 
 import numpy as np
 
@@ -29,17 +29,16 @@ from .. import limits as bounds
 from ..engine.levels import VelocityLevel
 from ..engine.system import InstantSolver
 from ..errors import KinematikaError, Said, said_of
+from .assembler import Assembler
 from .poses import moved_geometry, moved_instant
 
-if TYPE_CHECKING:
-    from .newton import Assembler
 
 CORRECTIONS = 8          # Newton iterations of one corrector
 SEARCH = 60              # regula-falsi iterations locating a limit position or a target
 MIN_STEP = 1e-10         # the smallest continuation step (dimensionless arclength)
 RANK = 1e-9              # J's n-th singular value over its largest: below, J has lost rank
 RUNAWAY = 1e3            # a body this many model sizes away: the motion runs off to infinity
-TOLERANCE = 1e-12        # a converged correction (dimensionless), as `newton.TOLERANCE`
+TOLERANCE = 1e-12        # a converged correction (dimensionless), as `assembler.TOLERANCE`
 
 
 @dataclass
@@ -71,7 +70,7 @@ class CannotFollow(Exception):
 class Curve:
     """The configuration curve of one Newton sweep: points, tangents and searches on it."""
 
-    def __init__(self, asm: "Assembler", turns: bool) -> None:
+    def __init__(self, asm: Assembler, turns: bool) -> None:
         self.asm = asm
         u = asm.unknowns
         size = asm.scale
@@ -200,7 +199,7 @@ class Passage:
     limits: list[tuple[float, float]]
 
 
-def advance(asm: "Assembler", poses: Any, q: float, d: float, travel: float, step: float,
+def advance(asm: Assembler, poses: Any, q: float, d: float, travel: float, step: float,
             turns: bool) -> Passage:
     """From the assembled `poses` at q, follow the curve with q running in direction d
     (±1) until q has travelled `travel` (radians or length) in all, turning back at every
@@ -263,7 +262,7 @@ def _land(curve: Curve, base: Point, start: tuple[float, Point], end: tuple[floa
     return Passage(poses, target, d, passed)
 
 
-def _distance(asm: "Assembler", poses: Any) -> float:
+def _distance(asm: Assembler, poses: Any) -> float:
     """How far the bodies have gone from the drawing, in model sizes (their reference
     point's displacement)."""
     ref = tuple(float(c) for c in asm.base.ref)
@@ -277,7 +276,7 @@ def _stuck(here: Point) -> CannotFollow:
     return CannotFollow(here.q, "assembly", Said("follow-stuck"))
 
 
-def _matrix(asm: "Assembler", poses: Any) -> np.ndarray:
+def _matrix(asm: Assembler, poses: Any) -> np.ndarray:
     """The engine's velocity matrix at `poses` (the constraints' Jacobian in pose
     coordinates), without its analysis (which refuses a dead point)."""
     inst = moved_instant(asm.base, poses, asm.owners)

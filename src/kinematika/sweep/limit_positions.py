@@ -25,17 +25,16 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Optional
+from typing import Any, Optional
 
 import numpy as np
 
 from .. import limits as bounds
 from ..errors import KinematikaError, Names, Num, Said
+from .closed_form import series
 from .plan import Plan
-
-if TYPE_CHECKING:
-    from .result import SweepResult
-    from .run import Sweeper
+from .result import SweepResult, dead_points
+from .swept import Swept
 
 EDGE_LEVELS = 8          # bisection levels of 64 between a row that assembles and one that does not:
                          # 64⁻⁸ ≈ 3e-15 of a step
@@ -103,7 +102,7 @@ def not_followed(plan: Plan, q: float, travel: float, why: Said, kind: str = "as
                            unit=plan.unit, travel=Num(travel, ".6g"), why=why)
 
 
-def with_rows(err: KinematikaError, partial: Optional["SweepResult"]) -> KinematikaError:
+def with_rows(err: KinematikaError, partial: Optional[SweepResult]) -> KinematikaError:
     """`err` carrying the rows computed so far (`partial`): the command line writes them."""
     err.partial = partial                     # type: ignore[attr-defined]
     return err
@@ -121,13 +120,13 @@ class _Run:
     end: Optional[float]            # the limit position (or the drawing) it ends at
 
 
-def follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResult":
+def follow_closed(sweeper: Swept, plan: Plan, skip_bad: bool) -> SweepResult:
     """The sweep of a dyad mechanism through its limit positions (closed form, run by run)."""
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):   # rows at the edges
         return _follow_closed(sweeper, plan, skip_bad)
 
 
-def _follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResult":
+def _follow_closed(sweeper: Swept, plan: Plan, skip_bad: bool) -> SweepResult:
     zig = Zigzag(plan)
     scale = math.pi / 180 if plan.turns else 1.0
     runs: list[_Run] = []
@@ -176,7 +175,7 @@ def _follow_closed(sweeper: "Sweeper", plan: Plan, skip_bad: bool) -> "SweepResu
     return _closed_result(sweeper, plan, zig, runs, closed)
 
 
-def _edge(sweeper: "Sweeper", flips: dict[int, float], good: float, bad: float, failed: int,
+def _edge(sweeper: Swept, flips: dict[int, float], good: float, bad: float, failed: int,
           scale: float, step: float) -> tuple[float, Optional[int]]:
     """Where between a coordinate that assembles (`good`) and one that does not (`bad`, where
     group `failed` fails first) the motion turns, to about 1e-15 of the step, and the dyad
@@ -220,11 +219,9 @@ def _fold(form: Any, group: int, good: float, d: float, step: float, scale: floa
     return good - d * e if abs(e) < 1e-5 * step else good
 
 
-def _closed_result(sweeper: "Sweeper", plan: Plan, zig: Zigzag, runs: list[_Run], closed: bool) -> "SweepResult":
+def _closed_result(sweeper: Swept, plan: Plan, zig: Zigzag, runs: list[_Run], closed: bool) -> SweepResult:
     """The rows of the runs, each solved with its dyads' sides; every body's angle continued
     from run to run through the limit position between them."""
-    from .run import _series, dead_points
-
     scale = math.pi / 180 if plan.turns else 1.0
     model = sweeper.model
     pieces: list[dict] = []
@@ -239,12 +236,12 @@ def _closed_result(sweeper: "Sweeper", plan: Plan, zig: Zigzag, runs: list[_Run]
         piece = {"ok": (np.asarray(out.assembled, bool) & ~np.asarray(out.singular, bool)) & np.ones(n, bool),
                  "singular": np.asarray(out.singular, bool) & np.ones(n, bool), "bodies": {}, "points": {}}
         for b, track in out.tracks.items():
-            theta = np.array(_series(track.theta, n), dtype=float)
+            theta = np.array(series(track.theta, n), dtype=float)
             if b in offsets and np.isfinite(theta[0]):   # continued from the run before (through
                 theta += 2 * math.pi * round((offsets[b] - theta[0]) / (2 * math.pi))   # its limit)
             if np.isfinite(theta[-1]):
                 offsets[b] = float(theta[-1])
-            piece["bodies"][b] = (theta, _series(track.omega, n), _series(track.alpha, n))
+            piece["bodies"][b] = (theta, series(track.omega, n), series(track.alpha, n))
         for name, body, _ in sweeper.motions:
             piece["points"][name, body] = tuple(np.broadcast_to(np.asarray(x, dtype=complex), (n,))
                                                 for x in out.tracks[body].point(name))

@@ -12,15 +12,16 @@ import dataclasses
 import math
 from typing import Any, Mapping
 
-from ..errors import KinematikaError, Num, said_of
+from ..algebra.backend import Numeric
+from ..errors import KinematikaError, said_of
 from ..expressions import Expr, ExpressionError, evaluate, parse
 from ..model.model import Model
-from ..model.overrides import numeric_parameters
-from .plan import check_travel, driven_joints
-
-DEGREES_PER_STEP = 1.0          # continuation steps of a revolute
-LENGTHS_PER_STEP = 0.02         # of a prismatic, in model sizes
-MAX_STEPS = 200_000
+from ..model.overrides import at_draw_numbers, numeric_parameters
+from .advance import advanced
+from .plan import driven_joints
+from .posed import posed_model
+from .run import Sweeper
+from .symbolic_move import symbolic_moved
 
 
 def moved(model: Model, amounts: Mapping[str, Any]) -> Model:
@@ -34,19 +35,20 @@ def moved(model: Model, amounts: Mapping[str, Any]) -> Model:
         if amount != 0:
             steps.append((jid, amount, where))
     if steps and any(p.value is None for p in model.parameters.values()):
-        from .symbolic_move import symbolic_moved
-
         try:
             return symbolic_moved(model, steps)
         except KinematikaError as err:        # the symbols cannot follow: at the figure's numbers
             if err.kind != "schema" or not _drawn_in_numbers(model):
                 raise
-            from .posing import at_draw_numbers
-
             model, _ = at_draw_numbers(model, "move", said_of(err))
     for jid, amount, where in steps:
-        model = _advance(model, jid, amount, where)
+        model = advanced(model, jid, amount, where)
     return model
+
+
+def as_written(model: Model) -> Model:
+    """`model` moved where its own `move:` section says (as `posing.prepare` poses a file)."""
+    return moved(model, model.move) if model.move else model
 
 
 def _drawn_in_numbers(model: Model) -> bool:
@@ -56,8 +58,6 @@ def _drawn_in_numbers(model: Model) -> bool:
 
 def _amount(model: Model, raw: Any, where: str) -> float:
     """The amount as a number: an expression over the parameters that have values."""
-    from ..algebra.backend import Numeric
-
     try:
         expr = raw if isinstance(raw, Expr) else parse(raw)
         value = float(evaluate(expr, numeric_parameters(model), Numeric()))
@@ -77,46 +77,10 @@ def _check_driven(model: Model, jid: str, where: str) -> None:
         raise KinematikaError("schema", "move-not-driven", where, joint=jid, driven=list(driven), count=len(driven))
 
 
-def _advance(model: Model, jid: str, amount: float, where: str) -> Model:
-    from .posed import posed_model
-
-    return posed_model(model, swept_to(model, jid, amount), -1)
-
-
-def swept_to(model: Model, jid: str, amount: float) -> Any:
-    """The sweep of joint `jid` from the drawing to `amount` (a row a degree, or a 50th of
-    the model's size), every row assembled, else the `assembly` error saying how far."""
-    from .run import Sweeper
-
-    sweeper = Sweeper(model, jid)
-    check_travel(amount, model.joint(jid), sweeper.inst.scale, f"move.{jid}", "a move of")
-    turns = model.joint(jid).kind.coordinate == "angle"
-    per_step = DEGREES_PER_STEP if turns else LENGTHS_PER_STEP * sweeper.inst.scale
-    steps = min(MAX_STEPS, max(1, math.ceil(abs(amount) / per_step)))
-    result = sweeper.run(amount, steps, skip_bad=True, through=False)   # to the coordinate, not through limits
-    if not result.ok.all():
-        raise _unreachable(result, jid, amount, "°" if turns else "")
-    return result
-
-
-def _unreachable(result: Any, jid: str, amount: float, unit: str) -> KinematikaError:
-    """How far the joint got before the first position that cannot be assembled."""
-    bad = int((~result.ok).nonzero()[0][0])
-    got = float(result.coordinate[max(bad - 1, 0)])
-    edges = [x for x in result.dead_points if abs(x) <= abs(amount) and x * amount >= 0]
-    if edges:
-        got = min(edges, key=abs)
-    return KinematikaError("assembly", "move-unreachable", f"move.{jid}", joint=jid, amount=amount, unit=unit,
-                           got=Num(got, ".6g"))
-
-
 def at_row(model: Model, row: int) -> Model:
     """`model` at row `row` of its sweep (its `sweep:` section, else a full turn in 360 steps;
     rows that cannot be assembled skipped, as the page sweeps it): the last row of the sweep
     of `row` steps of the same travel each, so through the limit positions it meets."""
-    from .posed import posed_model
-    from .run import Sweeper
-
     if any(p.value is None for p in model.parameters.values()):
         raise KinematikaError("schema", "row-needs-numbers", "row")
     sweeper = Sweeper(model)

@@ -12,153 +12,28 @@ that solution's matrix is the Jacobian for the next increment.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Callable, Optional
+from typing import Any, Callable, Optional
 
 import numpy as np
 
 from ..engine.motion import Motion
 from ..engine.system import InstantSolver
 from ..errors import KinematikaError
-from .constraints import residual_functions
-from .plan import Plan
-from .poses import Poses, SpatialPoses, moved_geometry, moved_instant
+from .assembler import Assembler, NotAssembled
+from .compiled import compiled_sweep
+from .continuation import CannotFollow, advance
+from .limit_positions import Zigzag, not_followed, with_rows
+from .plan import Plan, bad_row
+from .poses import Poses
 from .progress import reporter
-from .result import SweepResult
+from .result import SweepResult, dead_points
+from .swept import Swept
 
-if TYPE_CHECKING:
-    from .run import Sweeper
-
-MAX_HALVINGS = 10
-CHORD_ITERATIONS = 25
-NEWTON_ITERATIONS = 40
-TOLERANCE = 1e-12       # step size, dimensionless (rotations; translations / length scale)
-
-
-class Assembler:
-    """Assembles the mechanism at any increment of the swept coordinate, by continuation."""
-
-    def __init__(self, sweeper: "Sweeper", plan: Plan) -> None:
-        inst = sweeper.inst
-        self.base = inst
-        self.base_geos = sweeper.solver.geos
-        self.unknowns = sweeper.solver.unknowns
-        self.owners = _owners(inst.model)
-        self.functions = residual_functions(inst, self.base_geos, plan)
-        self.scale = inst.scale
-        u = self.unknowns
-        self.translation = np.array([(c % u.width) >= u.space.rot for c in range(u.n)], dtype=bool)
-        self.poses_class = Poses if inst.space.dim == 2 else SpatialPoses
-        _check_rows(sweeper.solver, self.functions)
-
-    def residual(self, poses: Poses, dq: float) -> np.ndarray:
-        """Every joint's position residual at `poses`, with the swept coordinate advanced by
-        `dq`, as one vector (zero when the mechanism is assembled there)."""
-        return np.array([x for _, f in self.functions for x in f(poses, dq)], dtype=float)
-
-    def solver_at(self, poses: Poses) -> InstantSolver:
-        """The engine at `poses`, its matrix analysed (raises `singular` at a dead point)."""
-        inst = moved_instant(self.base, poses, self.owners)
-        geos = {jid: moved_geometry(g, poses, inst) for jid, g in self.base_geos.items()}
-        solver = InstantSolver(inst, geos)
-        solver.prepare()
-        return solver
-
-    def size(self, dx: np.ndarray) -> float:
-        """The size of a Newton step, dimensionless: the largest rotation (radians) or
-        translation over the model's length scale, compared with `TOLERANCE`."""
-        return float(np.abs(np.where(self.translation, dx / self.scale, dx)).max(initial=0.0))
-
-    def step(self, poses: Poses, solver: InstantSolver, dq_from: float, dq_to: float,
-             depth: int = 0) -> tuple[Poses, InstantSolver]:
-        """The poses at increment `dq_to`, from the assembled `poses` at `dq_from`."""
-        found = self._corrected(poses, solver, dq_to)
-        if found is not None:
-            return found, self.solver_at(found)
-        if depth >= MAX_HALVINGS:
-            raise _NotAssembled()
-        middle = 0.5 * (dq_from + dq_to)
-        half, half_solver = self.step(poses, solver, dq_from, middle, depth + 1)
-        return self.step(half, half_solver, middle, dq_to, depth + 1)
-
-    def _corrected(self, poses: Poses, solver: InstantSolver, dq: float) -> Optional[Poses]:
-        """Chord iterations from `poses` with the matrix of `solver`; None when they fail."""
-        current = poses
-        first, last = None, math.inf
-        for _ in range(CHORD_ITERATIONS):
-            r = self.residual(current, dq)
-            dx = -np.asarray(solver.solve_linear(list(r), check=False))
-            size = self.size(dx)
-            if not math.isfinite(size) or size > 2 * last + 1e-9:
-                return None
-            current = current.stepped(dx, self.unknowns)
-            if first is None:
-                first = size                    # the predictor
-            elif size > 0.3 * first + 1e-9:
-                return None                     # the correction rivals the step: a jump
-            if size < TOLERANCE or (size < 1e3 * TOLERANCE and size > 0.5 * last):
-                self.keep_aux(current)         # converged (or stalled at round-off)
-                return current
-            last = size
-        return None
-
-    def assemble(self, poses: Poses, dq: float) -> tuple[Poses, InstantSolver]:
-        """Newton's method from any nearby poses (after a gap of skipped rows): the Jacobian
-        rebuilt at each iterate and steps limited to 0.3 rad (0.3 of the model's length)."""
-        current = poses
-        for _ in range(NEWTON_ITERATIONS):
-            try:
-                solver = self.solver_at(current)
-            except KinematikaError:
-                break
-            dx = -np.asarray(solver.solve_linear(list(self.residual(current, dq)), check=False))
-            size = self.size(dx)
-            if not math.isfinite(size):
-                break
-            if size < TOLERANCE:
-                self.keep_aux(current)
-                return current, solver
-            current = current.stepped(dx * min(1.0, 0.3 / size), self.unknowns)
-        raise _NotAssembled()
-
-    def keep_aux(self, poses: Poses) -> None:
-        """Record the continuous angles (rolling joints) of the newly assembled poses."""
-        for _, f in self.functions:
-            if hasattr(f, "aux"):
-                poses.aux[f.key] = f.aux(poses)
-
-
-class _NotAssembled(Exception):
-    pass
-
-
-def _owners(model: Any) -> dict[str, str]:
-    """Which body's material point stands for each point name in a moved instant."""
-    owners = {p: (model.carriers(p) or [model.frame])[0] for p in model.points}
-    for d in model.drivers:
-        if d.kind == "velocity":
-            owners[d.point.point] = d.point.body
-    return owners
-
-
-def _check_rows(solver: InstantSolver, functions: list) -> None:
-    """The constraints must match the engine's rows one for one (by place)."""
-    if solver.analysis is None:
-        solver.prepare()
-    engine = [r.where for r in solver.rows_v]
-    kind = Poses if solver.space.dim == 2 else SpatialPoses
-    poses = kind.drawn(solver.inst.ref, list(solver.unknowns.offset))
-    ours = [where for where, f in functions for _ in f(poses, 0.0)]
-    if engine != ours:
-        raise RuntimeError(f"position constraints do not match the engine rows: {ours} != {engine}")
-
-
-def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
+def newton_sweep(sweeper: Swept, plan: Plan, skip_bad: bool,
                  progress: bool | Callable[[int, int], None], through: bool = True) -> SweepResult:
     """Every row of the plan by continuation, solved by the engine; NaN rows if skipped. At
     a limit position (a row that cannot be reached by stepping the coordinate) the curve is
     followed by arclength (`continuation`) and the input runs back, unless not `through`."""
-    from .compiled import compiled_sweep
-    from .run import bad_row
 
     fast = compiled_sweep(sweeper, plan)       # spatial R/S linkages: all positions as arrays
     if fast is not None:
@@ -191,7 +66,7 @@ def newton_sweep(sweeper: "Sweeper", plan: Plan, skip_bad: bool,
                 rows.coordinate[k] = q
                 report(k + 1)
                 continue
-            except (_NotAssembled, KinematikaError) as err:
+            except (NotAssembled, KinematikaError) as err:
                 kind = err.kind if isinstance(err, KinematikaError) else "assembly"
                 kind = "assembly" if kind not in ("singular", "assembly") else kind
                 if not skip_bad:
@@ -231,7 +106,6 @@ class _CannotFollow(Exception):
         self.q, self.travel, self.kind, self.why = q, travel, kind, why
 
     def error(self, plan: Plan, zig: Any, partial: SweepResult) -> KinematikaError:
-        from .limit_positions import not_followed, with_rows
 
         return with_rows(not_followed(plan, self.q, self.travel, self.why, self.kind), partial)
 
@@ -244,10 +118,9 @@ def _reach(asm: Assembler, good: tuple, q: float, zig: Any, k: int, scale: float
     try:
         found, found_solver = asm.step(poses, solver, q_good * scale, q * scale)
         return found, found_solver, q
-    except _NotAssembled:
+    except NotAssembled:
         if not through:
             raise
-    from .continuation import CannotFollow, advance
 
     travel = zig.travel(k) - (zig.travel0 + abs(q_good - zig.start))
     try:
@@ -260,7 +133,7 @@ def _reach(asm: Assembler, good: tuple, q: float, zig: Any, k: int, scale: float
     return way.poses, asm.solver_at(way.poses), way.q / scale
 
 
-def _home(sweeper: "Sweeper", asm: Assembler, zig: Any, before: tuple, after: tuple,
+def _home(sweeper: Swept, asm: Assembler, zig: Any, before: tuple, after: tuple,
           scale: float, turned: bool) -> Optional[tuple]:
     """After a limit position: the drawn configuration, if the run from the row `before` (or
     from the limit position, if it `turned` on the way) to the row `after` passes it (the
@@ -272,7 +145,7 @@ def _home(sweeper: "Sweeper", asm: Assembler, zig: Any, before: tuple, after: tu
     poses, solver, q = after
     try:
         found, found_solver = asm.step(poses, solver, q * scale, home * scale)
-    except (_NotAssembled, KinematikaError):
+    except (NotAssembled, KinematikaError):
         return None
     size = asm.scale
     for name, body, _ in sweeper.motions:
@@ -285,8 +158,7 @@ def _home(sweeper: "Sweeper", asm: Assembler, zig: Any, before: tuple, after: tu
 class _Rows:
     """The arrays of a Newton sweep's rows, filled one by one (and cut where the cycle closes)."""
 
-    def __init__(self, sweeper: "Sweeper", plan: Plan) -> None:
-        from .limit_positions import Zigzag
+    def __init__(self, sweeper: Swept, plan: Plan) -> None:
 
         self.sweeper, self.plan = sweeper, plan
         self.zig = Zigzag(plan)
@@ -314,7 +186,6 @@ class _Rows:
         return self.result()
 
     def result(self) -> SweepResult:
-        from .run import dead_points
 
         end = self.end
         cut = slice(0, end)
@@ -330,7 +201,7 @@ class _Rows:
                                    closed=self.closed)
 
 
-def _store(sweeper: "Sweeper", poses: Poses, motion: Motion, k: int, bodies: dict, motions: dict) -> None:
+def _store(sweeper: Swept, poses: Poses, motion: Motion, k: int, bodies: dict, motions: dict) -> None:
     for b, values in bodies.items():
         s = motion.states[b]
         values["angle"][k] = np.degrees(poses.angle(b))

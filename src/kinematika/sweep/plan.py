@@ -15,7 +15,7 @@ from typing import Any, Optional
 import numpy as np
 
 from .. import limits
-from ..errors import KinematikaError, Num
+from ..errors import KinematikaError, Num, Said
 from ..engine.instant import Instant
 from ..model.model import Driver, Joint, Model
 
@@ -152,3 +152,15 @@ def driven_joints(model: Model) -> dict[str, Driver]:
             if other in bodies and other != frame and j.kind.sweepable and j.kind.coordinate in coordinates:
                 out.setdefault(j.id, d)
     return out
+
+
+def bad_row(plan: Plan, k: int, kind: str, what: str = "", at: Optional[float] = None) -> KinematikaError:
+    """The error for row k (at coordinate `at`, else the plan's row k): `assembly` (cannot be
+    assembled), `singular` (dead point), or `mobility` (assembled, but the drivers as written
+    contradict the moved joints)."""
+    value = plan.coordinate[k] if at is None else at
+    where = Said("sweep-at", k=k, joint=plan.joint.id, value=Num(value, ".6g"), unit=plan.unit)
+    if kind == "mobility":
+        return KinematikaError(kind, "sweep-drivers-contradict", "sweep", at=where)
+    return KinematikaError(kind, "sweep-singular" if kind == "singular" else "sweep-cannot-assemble", "sweep",
+                           at=where, what=what or "", said=str(bool(what)).lower())

@@ -1,19 +1,20 @@
 """The model a command analyses, posed as asked: parameters given values (`set`), the
 assembly chosen (`assembly`), driven joints advanced (`move`, the file's own `move:` section
-first) — and that model solved. Posing moves the mechanism as a sweep does, so it lives in
+first) — and that model solved (`solved`) or swept (`run_sweep`). Posing moves the mechanism as a sweep does, so it lives in
 the sweep layer; every view (the command line, Python, the page, explanations, figures)
 comes here through `kinematika.api`."""
 from __future__ import annotations
 
-import warnings
-from typing import Any, Mapping, Optional
+from typing import TYPE_CHECKING, Any, Callable, Mapping, Optional
 
 from ..engine.terms import MECHANICS, Terms
-from ..errors import KinematikaError, KinematikaWarning, Names, Said
 from ..model.model import Model
 from ..model.overrides import with_parameters
 from ..model.source import ModelLike, as_model
 from ..solution import Solution, solve_model
+
+if TYPE_CHECKING:
+    from .result import SweepResult
 
 
 def prepare(source: ModelLike, *, fmt: Optional[str] = None,
@@ -41,31 +42,26 @@ def prepare(source: ModelLike, *, fmt: Optional[str] = None,
     return model
 
 
-def at_draw_numbers(model: Model, what: str, why: Optional[Said] = None,
-                    warn: bool = True) -> tuple[Model, list[KinematikaWarning]]:
-    """`model`'s symbols given their `draw_at` numbers, for the work that needs numbers (`what`:
-    `sweep`; `move`, a move the symbols cannot follow exactly), and the warning that says so
-    (`why`, when given, ends it), issued as a Python warning (the command line prints it)
-    unless `warn` is False (the caller issues it once the work is under way).
-    A symbol without a `draw_at` number is a `schema` error naming it."""
-    symbols = [n for n, p in model.parameters.items() if p.value is None]
-    if not symbols:
-        return model, []
-    missing = [n for n in symbols if n not in model.draw_at]
-    if missing:
-        raise KinematikaError("schema", "needs-draw-at", "parameters", what=what, names=Names(missing))
-    values = {n: repr(float(model.draw_at[n])) for n in symbols}
-    shown = ", ".join(f"{n} = {model.draw_at[n]:g}" for n in symbols)
-    note = KinematikaWarning("at-draw-numbers", "draw_at", what=what, values=shown, why=why or "",
-                             said=str(why is not None).lower())
-    if warn:
-        warnings.warn(note, stacklevel=2)
-    return with_parameters(model, values), [note]
-
-
 def solved(source: ModelLike, symbolic: bool | None = None, terms: Terms = MECHANICS,
            **options: Any) -> Solution:
     """`source` prepared (`options` as `prepare`'s) and solved: numerically, or exactly when
     it has symbols (or `symbolic`); with `terms`, as a student with that mistake would
     (`engine.terms`)."""
     return solve_model(prepare(source, **options), symbolic, terms)
+
+
+def run_sweep(source: Any, joint: Optional[str] = None, by: Optional[float] = None,
+              steps: Optional[int] = None, skip_bad: bool = False,
+              progress: bool | Callable[[int, int], None] = False) -> SweepResult:
+    """Sweep `source` (a path, model tree, `Model` or `Mechanism`) over its driven joint.
+
+    `joint`, `by` (degrees or length), `steps` override the model's `sweep:` section. At a
+    limit position the input runs back and the motion goes on (`limit_positions`). A row
+    that is singular, or a motion that cannot be followed, raises `singular`/`assembly`,
+    unless `skip_bad`, which leaves such rows NaN. `progress`: True for a progress bar on a
+    terminal, or a callable `(done, total)`. The model is read and posed where its file says
+    (`prepare`: its `move:`), then swept (`run.Sweeper`).
+    """
+    from .run import Sweeper        # start-up: posing a model for one instant loads no sweep
+
+    return Sweeper(prepare(source), joint).run(by, steps, skip_bad, progress)

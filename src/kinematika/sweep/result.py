@@ -14,7 +14,7 @@ from __future__ import annotations
 import csv
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Iterator, Optional
+from typing import Any, Callable, Iterator, Optional
 
 import numpy as np
 
@@ -244,3 +244,19 @@ def _column(values: np.ndarray) -> list:
     if values.ndim == 1:
         return [None if x != x else x for x in out]
     return [None if row[0] != row[0] else row for row in out]
+
+
+def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray,
+                refine: Optional[Callable[[float, float], float]] = None) -> list[float]:
+    """Where the motion stops being possible: singular rows, and at each edge of a gap the
+    last row that could be assembled (or, with `refine(good, bad)`, the edge found between)."""
+    if ok.all():
+        return []
+    out = [float(x) for x in coordinate[singular]]
+    edges = np.flatnonzero(ok[:-1] != ok[1:])
+    for k in edges:
+        good, bad = (k, k + 1) if ok[k] else (k + 1, k)
+        if not singular[bad]:            # a singular row is itself the dead point
+            edge = float(coordinate[good])
+            out.append(refine(edge, float(coordinate[bad])) if refine else edge)
+    return sorted(set(out))

@@ -1,4 +1,5 @@
-"""`run_sweep`: the motion over a range of a driven joint's coordinate.
+"""The motion over a range of a driven joint's coordinate (`Sweeper`; `posing.run_sweep`
+reads and poses a model, then sweeps it here).
 
 The drawn instant is solved first by the engine (which checks the model). Then, when the
 mechanism is a driven crank or slider followed by dyads, every position is solved at once
@@ -14,44 +15,31 @@ import numpy as np
 
 from ..engine.instant import instantiate
 from ..engine.system import InstantSolver
-from ..errors import KinematikaError, Num, Said
 from ..memory import arrays_on_heap
 from ..model.model import Model, PointRef
+from ..model.overrides import at_draw_numbers
+from ..model.source import as_model
 from .coincident import coincide
 from .joint_rates import with_joint_rates
-from .plan import Plan, make_plan, swept_joint
-from .result import QUANTITIES, SweepResult
+from .plan import Plan, bad_row, make_plan, swept_joint
+from .result import QUANTITIES, SweepResult, dead_points
 
 Progress = Callable[[int, int], None]
-
-
-def run_sweep(source: Any, joint: Optional[str] = None, by: Optional[float] = None,
-              steps: Optional[int] = None, skip_bad: bool = False,
-              progress: bool | Progress = False) -> SweepResult:
-    """Sweep `source` (a path, model tree, `Model` or `Mechanism`) over its driven joint.
-
-    `joint`, `by` (degrees or length), `steps` override the model's `sweep:` section. At a
-    limit position the input runs back and the motion goes on (`limit_positions`). A row
-    that is singular, or a motion that cannot be followed, raises `singular`/`assembly`,
-    unless `skip_bad`, which leaves such rows NaN. `progress`: True for a progress bar on a
-    terminal, or a callable `(done, total)`.
-    """
-    return Sweeper(source, joint).run(by, steps, skip_bad, progress)
 
 
 class Sweeper:
     """A model analysed once for sweeps of one driven joint; `run` sweeps it (again and again).
 
     The analysis solves the drawn instant with the engine and decomposes the mechanism into
-    Assur groups; a sweep then costs only the positions themselves.
+    Assur groups; a sweep then costs only the positions themselves. `source` (a path, model
+    tree, `Model` or `Mechanism`) is swept as drawn: a model's own `move:` is made by
+    `posing.prepare` (as `run_sweep` does) or `move.as_written`.
     """
 
     def __init__(self, source: Any, joint: Optional[str] = None,
                  flips: Optional[dict[int, float]] = None) -> None:
         arrays_on_heap()                     # a sweep's speed is its own (`memory`)
-        from .posing import at_draw_numbers
-
-        model, self.warnings = at_draw_numbers(_as_model(source), "sweep", warn=False)
+        model, self.warnings = at_draw_numbers(as_model(source), "sweep", warn=False)
         inst = instantiate(model, False)
         model = with_joint_rates(model, inst)          # a 3D ω along a revolute: its rate
         self.model = model
@@ -63,7 +51,7 @@ class Sweeper:
         self.points = {k: tuple(float(c) for c in v) for k, v in self.inst.points.items()}
         self.directions = {jid: tuple(float(c) for c in g.along) for jid, g in self.solver.geos.items()
                            if g.along is not None}
-        from ..structure.assur import assur_groups
+        from ..structure.assur import assur_groups      # start-up: simulate reads this module, sweeps nothing
 
         self.groups = assur_groups(model)
         self._flips = dict(flips or {})
@@ -85,7 +73,7 @@ class Sweeper:
 
     def _closed_form(self, flips: Optional[dict[int, float]] = None) -> Any:
         """The closed form of this mechanism (dyads closed as drawn, or as `flips` say)."""
-        from .closed_form import ClosedForm, applicable
+        from .closed_form import ClosedForm, applicable     # start-up, as `assur_groups`
 
         if not applicable(self.model, self.groups, self.joint, self.driver):
             return None
@@ -144,9 +132,11 @@ class Sweeper:
         if not skip_bad and not ok.all():
             k = int(np.flatnonzero(~ok)[0])
             raise bad_row(plan, k, "singular" if out.singular[k] else "assembly", out.worst(k))
+        from .closed_form import series
+
         n = len(ok)
-        bodies = {b: {"angle": _series(np.degrees(t.theta), n), "omega": _series(t.omega, n),
-                      "alpha": _series(t.alpha, n)} for b, t in out.tracks.items()}
+        bodies = {b: {"angle": series(np.degrees(t.theta), n), "omega": series(t.omega, n),
+                      "alpha": series(t.alpha, n)} for b, t in out.tracks.items()}
         points = {(name, body): out.tracks[body].point(name) for name, body, _ in self.motions}
         dead = dead_points(plan.coordinate, ok, out.singular, self._edge if not ok.all() else None)
         return self.result(plan, ok, bodies, points, dead)
@@ -204,15 +194,6 @@ def _rows(values: Any, bad: Optional[np.ndarray], n: int) -> np.ndarray:
     return values if bad is None else np.where(bad[:, None], np.nan, values)
 
 
-def _series(values: Any, n: int) -> np.ndarray:
-    """Values over the rows: an array as it is, a constant as a read-only stride-0 view."""
-    if isinstance(values, np.ndarray) and values.shape == (n,):
-        return values
-    from .closed_form import const
-
-    return const(float(values), n)
-
-
 def _filled(values: dict[str, Any], bad: Optional[np.ndarray]) -> dict[str, np.ndarray]:
     if bad is None:
         return {q: values[q] for q in ("angle", "omega", "alpha")}
@@ -229,38 +210,3 @@ def motion_classes(model: Model) -> list[tuple[str, str, list[str]]]:
     return [(point, members[0], [str(PointRef(point, b)) for b in members])
             for point in model.points
             for members in model.motion_classes(point, model.carriers(point))]
-
-
-def _as_model(source: Any) -> Model:
-    """The model to sweep: read, and posed where its file says (`move`)."""
-    from .posing import prepare
-
-    return prepare(source)
-
-
-def bad_row(plan: Plan, k: int, kind: str, what: str = "", at: Optional[float] = None) -> KinematikaError:
-    """The error for row k (at coordinate `at`, else the plan's row k): `assembly` (cannot be
-    assembled), `singular` (dead point), or `mobility` (assembled, but the drivers as written
-    contradict the moved joints)."""
-    value = plan.coordinate[k] if at is None else at
-    where = Said("sweep-at", k=k, joint=plan.joint.id, value=Num(value, ".6g"), unit=plan.unit)
-    if kind == "mobility":
-        return KinematikaError(kind, "sweep-drivers-contradict", "sweep", at=where)
-    return KinematikaError(kind, "sweep-singular" if kind == "singular" else "sweep-cannot-assemble", "sweep",
-                           at=where, what=what or "", said=str(bool(what)).lower())
-
-
-def dead_points(coordinate: np.ndarray, ok: np.ndarray, singular: np.ndarray,
-                refine: Optional[Callable[[float, float], float]] = None) -> list[float]:
-    """Where the motion stops being possible: singular rows, and at each edge of a gap the
-    last row that could be assembled (or, with `refine(good, bad)`, the edge found between)."""
-    if ok.all():
-        return []
-    out = [float(x) for x in coordinate[singular]]
-    edges = np.flatnonzero(ok[:-1] != ok[1:])
-    for k in edges:
-        good, bad = (k, k + 1) if ok[k] else (k + 1, k)
-        if not singular[bad]:            # a singular row is itself the dead point
-            edge = float(coordinate[good])
-            out.append(refine(edge, float(coordinate[bad])) if refine else edge)
-    return sorted(set(out))

@@ -16,6 +16,11 @@ from typing import Any
 import numpy as np
 
 from ..model.model import Model
+from .assembler import Assembler
+from .assembly import Assembly
+from .plan import make_plan
+from .posed import posed_model
+from .poses import Poses, SpatialPoses, exp_rotation
 from .result import SweepResult
 
 STARTS = 48                 # random starting poses
@@ -28,9 +33,6 @@ SEED = 20261124
 
 def searched_assemblies(model: Model, sweeper: Any) -> list:
     """The assemblies found, in a stable order; the drawn one marked."""
-    from .assemblies import Assembly
-    from .posed import posed_model
-
     drawn = _places_of(model, sweeper, None)
     if not _searchable(model):
         return [Assembly(1, True, [], model, drawn)]
@@ -56,9 +58,6 @@ class _Search:
     """Least squares on the position constraints over the moving bodies' poses."""
 
     def __init__(self, model: Model, sweeper: Any) -> None:
-        from .newton import Assembler
-        from .plan import make_plan
-
         self.model, self.sweeper = model, sweeper
         self.asm = Assembler(sweeper, make_plan(sweeper.inst, sweeper.joint.id, 0.0, 1))
         self.bodies = list(self.asm.unknowns.offset)
@@ -67,8 +66,6 @@ class _Search:
         self.scale = sweeper.inst.scale
 
     def poses(self, x: np.ndarray) -> Any:
-        from .poses import Poses, SpatialPoses, exp_rotation
-
         ref = self.sweeper.inst.ref
         w = self.width
         if self.planar:

@@ -18,10 +18,14 @@ import dataclasses
 import numpy as np
 
 from ..engine.instant import Instant, instantiate
+from ..engine.turns import turn_for
 from ..errors import KinematikaError, Said
 from ..expressions import parse
-from ..model.model import Model, Turn
+from ..model.model import Line, Model, Turn
+from ..model.overrides import with_parameters
+from .advance import advanced, swept_to
 from .carried import Input, Path, carried_turns, fixture, placed
+from .posed import posed_model
 
 Step = tuple[str, float, str]          # joint id, amount (degrees or length), where
 
@@ -74,20 +78,13 @@ def _geometry_has_symbols(inst: Instant) -> bool:
 
 def _moved_with_numbers(model: Model, jid: str, amount: float) -> Model:
     """A model whose symbols are only rates moves as its numeric twin; the symbols stay."""
-    from ..model.overrides import with_parameters
-    from .move import moved
-
     symbols = {name: "1" for name, p in model.parameters.items() if p.value is None}
-    twin = moved(with_parameters(dataclasses.replace(model, move={}), symbols), {jid: amount})
+    twin = advanced(with_parameters(dataclasses.replace(model, move={}), symbols), jid, amount, f"move.{jid}")
     return dataclasses.replace(twin, parameters=model.parameters)
 
 
 def _path(model: Model, steps: list[Step], values: dict[str, str], where: str) -> Path:
     """The move made numerically at the probe values, one sweep per step, rows end to end."""
-    from ..model.overrides import with_parameters
-    from .move import swept_to
-    from .posed import posed_model
-
     current = with_parameters(dataclasses.replace(model, move={}), values)
     angles: dict[str, list] = {b: [] for b in model.bodies}
     places: dict[str, list] = {}
@@ -133,8 +130,6 @@ def _check(posed: Model, path: Path, values: dict[str, str], where: str) -> None
 
 def _why(model: Model, name: str, numerically: bool) -> Said:
     """Why point `name` does not follow the input: one line."""
-    from ..engine.turns import turn_for
-
     if numerically:
         return Said("move-exact-numbers", point=name)
     owner = model.place_owner(name) if model.carriers(name) else None
@@ -149,8 +144,6 @@ def _why(model: Model, name: str, numerically: bool) -> Said:
 def _rolls_on_a_line(model: Model, body: str) -> bool:
     """Whether `body` rolls with a circle on a line (either body's), which `carried` does not
     follow: its turn depends on the path of its centre."""
-    from ..model.model import Line
-
     for j in model.joints:
         if j.kind.rolls and body in (j.a, j.b):
             if any(isinstance(s, Line) for b in (j.a, j.b) for s in model.bodies[b].shapes):

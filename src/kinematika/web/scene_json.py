@@ -173,7 +173,7 @@ def depth_twin(scene: Scene, sol: Any, options: Any) -> Scene:
     with it, every drawn coordinate has its point in space, which the page turns with the
     sweep's rotations so that the figure follows the slider."""
     from ..draw.projection import Projection
-    from ..draw.scene import build_scene
+    from ..draw.build import build_scene
 
     P = scene.projection.matrix
     towards = np.cross(P[0], P[1])

@@ -8,12 +8,13 @@ from typing import Any
 from babel.lists import format_list
 
 from ...numerals import DECIMAL, decimal_sign, separator, written
-from ...text import shown
+from ...text import shown_lines
 
-from ...model.wording import ARTICLES, NO_ARTICLE, part_subscript
+from ...model.wording import ARTICLES, NO_ARTICLE, Wording, part_subscript, rate_key
 from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Msg, Name, Names,
                         Described, Section, Sym, Table, Told, Value)
+from .names import written as written_name
 from .svg import Text, plain_text, sym_text
 
 TOKEN = "\ue000{}\ue001"
@@ -45,12 +46,6 @@ UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "r
 BODY_SUBS = ("ω", "α", "I", "ω×ω")          # symbols whose subscript is made of bodies
 
 
-def visible(text: str) -> str:
-    """Text with its control characters (but for line breaks) shown as escapes: a name
-    never drives a terminal, a page or a reader's eye (issue 12's `text.shown`)."""
-    return "\n".join(shown(line) for line in text.split("\n"))
-
-
 class Renderer:
     """Turns a `Document` into text in one language.
 
@@ -62,8 +57,6 @@ class Renderer:
     fmt = ""
 
     def __init__(self, doc: Document, cat: Catalogue, drawings: bool = True) -> None:
-        from ...model.wording import Wording
-
         self.doc = doc
         self.cat = cat
         self.lang = cat.lang
@@ -76,7 +69,7 @@ class Renderer:
     def render(self) -> str:
         """The whole document as one page of the format: its title (the model's, in the
         reader's language when it gives one), then every section."""
-        body = [self.heading(1, self.esc(visible(self.wording.title(self.lang, self.doc.title))))]
+        body = [self.heading(1, self.esc(shown_lines(self.wording.title(self.lang, self.doc.title))))]
         body += [self.section(s) for s in self.doc.sections]
         return self.page("\n".join(body))
 
@@ -172,7 +165,7 @@ class Renderer:
                 return ""
             return self.table([self.message(Msg("col.point")), self.message(Msg("col.what"))], rows)
         if t.kind == "data":
-            return "\n".join(self.para(self.esc(visible(n))) for n in self.wording.data.get(self.lang, []))
+            return "\n".join(self.para(self.esc(shown_lines(n))) for n in self.wording.data.get(self.lang, []))
         notes = self.wording.notes.get(self.lang, [])
         return "\n".join(self.para(self.message(Msg("note.text", {"text": n}))) for n in notes)
 
@@ -204,7 +197,7 @@ class Renderer:
             return self.inline(x.items)
         if isinstance(x, Described):
             said = self.wording.point if x.kind == "point" else self.wording.parameter
-            return self.esc(visible(said(x.name, self.lang)))
+            return self.esc(shown_lines(said(x.name, self.lang)))
         if isinstance(x, (list, tuple)):
             return ", ".join(self.arg(i) for i in x)
         return self.esc(str(x))
@@ -255,14 +248,11 @@ class Renderer:
         ω₂ for the blades' relative to the block), else as it is."""
         if s.fixed or s.base not in ("ω", "α") or not s.sub or s.sub_key:
             return s
-        from ...model.wording import rate_key
-        from .names import written
-
         parts = s.sub.split("/")
         spelt = self.wording.symbol(rate_key("omega" if s.base == "ω" else "alpha", *parts[:2]), self.lang)
         if spelt is None:
             return s
-        w = written(spelt)
+        w = written_name(spelt)
         return Sym(w.base, w.sub, w.sup or s.sup, s.vector, fixed=True)
 
     def sym(self, s: Sym) -> str:
@@ -334,7 +324,7 @@ class Renderer:
         """The subscript of a symbol: the language's word for a part of a motion (arr, rel,
         Cor: `model.wording.PART_SUBSCRIPTS`) and the name."""
         word = part_subscript(s.sub_key, self.lang) if s.sub_key else ""
-        return visible(",".join(p for p in (word, self.numbered(s)) if p))
+        return shown_lines(",".join(p for p in (word, self.numbered(s)) if p))
 
     # values ---------------------------------------------------------------------------------
     def value(self, v: Value) -> str:

@@ -7,7 +7,8 @@ from html import escape
 from typing import Any
 
 from ..document import Drawing, Equation, Figure, Name, Sym
-from .base import Renderer, visible
+from ...text import shown_lines
+from .base import Renderer
 from .svg import embedded, svg
 from .names import html_name
 from .unicode import unicode_formula
@@ -43,7 +44,7 @@ class HtmlRenderer(Renderer):
 
     def esc(self, text: str) -> str:
         """Text escaped; a letter with a combining mark (θ̇ in a note) in the sans font."""
-        return MARKED.sub(r'<span class="mk">\1</span>', escape(visible(text), quote=False))
+        return MARKED.sub(r'<span class="mk">\1</span>', escape(shown_lines(text), quote=False))
 
     def name(self, n: Name) -> str:
         """Points upright and sans serif (as the figures letter them), bodies in italics,
@@ -72,7 +73,7 @@ class HtmlRenderer(Renderer):
     def page(self, body: str) -> str:
         """The HTML page around `body`: the language, the title, the inline CSS."""
         return (f'<!DOCTYPE html>\n<html lang="{self.cat.lang}">\n<head>\n<meta charset="utf-8">\n'
-                f"<title>{escape(visible(self.wording.title(self.lang, self.doc.title)), quote=False)}</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
+                f"<title>{escape(shown_lines(self.wording.title(self.lang, self.doc.title)), quote=False)}</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
                 f"{body}\n</body>\n</html>\n")
 
     def heading(self, level: int, text: str) -> str:

@@ -5,7 +5,8 @@ from __future__ import annotations
 from typing import Any
 
 from ..document import Equation, Figure, Name, Sym
-from .base import DECIMAL, Renderer, visible
+from ...text import shown_lines
+from .base import DECIMAL, Renderer
 from .svg import COLOURS, MARGIN, WIDTH, Text, layout, nice
 from .names import latex_name
 from .unicode import latex_formula
@@ -62,7 +63,7 @@ class LatexRenderer(Renderer):
     def esc(self, text: str) -> str:
         """Text for LaTeX: specials escaped, math characters in math mode, control characters
         shown."""
-        return tex_text(visible(text))
+        return tex_text(shown_lines(text))
 
     def name(self, n: Name) -> str:
         """Points and joints sans serif, bodies emphasised, parameters as symbols in math

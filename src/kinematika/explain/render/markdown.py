@@ -7,7 +7,9 @@ import re
 from typing import Any
 
 from ..document import Drawing, Equation, Figure, Name, Sym
-from .base import Renderer, visible
+from ...text import shown_lines
+from .base import Renderer
+from .html import LONG
 from .svg import svg
 from .names import unicode_name
 from .unicode import unicode_formula
@@ -31,7 +33,7 @@ class MarkdownRenderer(Renderer):
     def esc(self, text: str) -> str:
         """Text with Markdown's markup characters escaped (inside an equation's code block only
         a backquote is changed), control characters shown."""
-        text = visible(text)
+        text = shown_lines(text)
         if self.code:
             return text.replace("`", "ʼ")
         return MARKUP.sub(r"\\\1", text)
@@ -92,8 +94,6 @@ class MarkdownRenderer(Renderer):
     def _block(self, eq: Equation) -> str:
         """Three lines (M/D/? over and under each term); a long equation one side to a block
         of three lines, each further block starting with =."""
-        from .html import LONG
-
         groups: list[list[tuple]] = [[(self.ann(eq.target.mag), self.sym(eq.target.sym), self.ann(eq.target.dir))]]
         long = sum(len(side) for side in eq.sides) > LONG
         for side in eq.sides:

@@ -15,6 +15,9 @@ from dataclasses import dataclass, field
 from html import escape
 from typing import Callable, Optional
 
+import numpy as np
+
+from ...text import shown, shown_lines
 from ..document import Figure, Sym
 
 COLOURS = {"known": "#222222", "unknown": "#c0392b", "result": "#1f5fa8", "velocity": "#2e8b57",
@@ -80,7 +83,6 @@ def plain_text(text: str) -> Text:
     """A plain label (a point's name), control characters shown, escaped for SVG, with its
     measured size."""
     from ...draw.labels import text_extent
-    from ...text import shown
 
     text = shown(text)
     w, h = text_extent(text, FONT)
@@ -150,7 +152,6 @@ def _layout(fig: Figure, texts: dict, names: list) -> Layout:
 
 def _place(lay: Layout, items: list) -> list[Placed]:
     """The labels placed by the figures' LabelBoard on an axes of the figure's size."""
-    import numpy as np
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure as MplFigure
 
@@ -278,11 +279,9 @@ def embedded(text: str, prefix: str) -> str:
     XML prologue, doctype or comments, no control character (a model's names make ids),
     every id and reference to it prefixed and every id unique, its size set by the page's
     style from its viewBox."""
-    from .base import visible
-
     text = re.sub(r"<\?xml[^>]*>\s*|<!DOCTYPE[^>]*>\s*", "", text)
     text = re.sub(r"<!--.*?-->", "", text, flags=re.S)     # matplotlib's comments (the labels' text)
-    text = visible(text)                                   # control characters of names in ids
+    text = shown_lines(text)                                   # control characters of names in ids
     seen: dict[str, int] = {}
 
     def unique(m) -> str:          # a figure may give several artists one gid (body:crank)

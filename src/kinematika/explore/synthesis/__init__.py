@@ -145,7 +145,7 @@ def follows_a_turn(model, values: dict[str, float], joint: Optional[str]) -> boo
     """Whether the contract's sweep follows the design over a full turn of its input in
     CHECK_STEPS steps (the check every written design passes)."""
     from ...model.overrides import with_parameters
-    from ...sweep.run import run_sweep
+    from ...sweep.posing import run_sweep
 
     try:
         run_sweep(with_parameters(model, {k: repr(v) for k, v in values.items()}), joint, 360.0, CHECK_STEPS)
