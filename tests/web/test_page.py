@@ -340,12 +340,12 @@ def test_the_page_runs_under_its_own_security_policy(browser, server):
 
 @pytest.mark.parametrize("name", ["slider_crank.yaml", "quick_return.yaml", "planetary_gears.yaml",
                                   "robot_arm_3d.yaml", "fan_symbolic.yaml"])
-def test_every_kind_of_model_is_shown(page, name):
+def test_every_kind_of_model_is_shown(page, server, name):
     """A prismatic joint, a slot, gears, a 3D model, a symbolic one: drawn, with
     the slider over the sweep when there is one (and off, saying why, when there is none)."""
     gen = page.evaluate("window.kinematika.state.gen")
     page.get_by_test_id("example").select_option(name)
-    page.wait_for_function(f"() => window.kinematika.state.gen > {gen} && document.getElementById('busy').hidden")
+    server.wait(page, "(gen) => window.kinematika.state.gen > gen && document.getElementById('busy').hidden", gen)
     assert page.get_by_test_id("error").is_hidden()
     cli_json = json.loads(CliRunner().invoke(cli, ["solve", str(EXAMPLES / name), "--json"]).stdout)
     assert page.get_by_test_id("dof").inner_text() == f"DOF {cli_json['dof']}"
