@@ -38,7 +38,7 @@ ALLOWED_WORDS = {           # the same words meaning something else, with where 
     # how a centre was found (`Centre.how`): through a weld
     "weld": ("questions/centres.py", "explain/centres.py", "explain/render/base.py", "report/centres_table.py"),
     # a body's kind: a pitch circle, and the default names of new bodies in the page's languages
-    "gear": ("draw/scene.py", "draw/bodies.py", "web/static/js/figure.js", "web/build.py", "web/palette.py"),
+    "gear": ("draw/scene.py", "draw/build.py", "draw/bodies.py", "web/static/js/figure.js", "web/build.py", "web/palette.py"),
     "wheel": ("explain/group.py",                   # what a partly known point's motion comes from
               "web/build.py", "web/palette.py",
               "web/static/js/figure.js"),            # the browser's mouse-wheel event
