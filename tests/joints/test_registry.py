@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 
 from kinematika.joints import KINDS, MODULES, JointKind
+from tests.source_scan import names_written, source_lines
 
-SRC = Path(__file__).resolve().parents[2] / "src" / "kinematika"
 NAMES = "|".join(sorted(MODULES, key=len, reverse=True))
 # a kind's name as a string literal: 'revolute', "cam" (Python and the page's JavaScript)
 LITERAL = re.compile(rf"""(?<![\w.-])["']({NAMES})["']""")
@@ -45,26 +45,15 @@ ALLOWED_WORDS = {           # the same words meaning something else, with where 
 }
 
 
-def _sources() -> list[Path]:
-    return [p for p in sorted(SRC.rglob("*")) if p.suffix in (".py", ".js")
-            and p.relative_to(SRC).parts[0] not in OTHER_MEANINGS]
-
 
 def test_no_module_compares_a_joints_type():
-    found = [f"{p.relative_to(SRC)}:{i}: {line.strip()}" for p in _sources()
-             for i, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1)
-             if COMPARED.search(line) and "joint" in line.lower() + p.name]
+    found = [f"{rel}:{i}: {line.strip()}" for rel, i, line in source_lines(OTHER_MEANINGS)
+             if COMPARED.search(line) and "joint" in line.lower() + Path(rel).name]
     assert not found, "\n".join(found)
 
 
 def test_no_module_writes_a_kinds_name():
-    found = []
-    for p in _sources():
-        rel = str(p.relative_to(SRC))
-        for i, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1):
-            for m in LITERAL.finditer(line):
-                if rel not in ALLOWED_WORDS.get(m.group(1), ()):
-                    found.append(f"{rel}:{i}: {line.strip()}")
+    found = names_written(OTHER_MEANINGS, LITERAL, ALLOWED_WORDS)
     assert not found, "\n".join(found)
 
 

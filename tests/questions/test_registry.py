@@ -12,8 +12,8 @@ import pytest
 import kinematika
 from kinematika.questions import MODULES, QUESTIONS, Figure, QuestionKind, Steps, field_kinds
 from kinematika.questions.base import About, Level, Quantity
+from tests.source_scan import SRC, names_written, source_lines
 
-SRC = Path(__file__).resolve().parents[2] / "src" / "kinematika"
 # velocity, acceleration, omega and alpha are also the motion's own words everywhere: a
 # point's velocity and acceleration, a body's ω and α (the answer's table columns, the
 # drivers' kinds, the levels of a solution, the arrows of a figure, a sweep's columns). Their
@@ -54,25 +54,15 @@ ALLOWED_WORDS = {           # the same words meaning something else, with where 
 }
 
 
-def _sources() -> list[Path]:
-    return [p for p in sorted(SRC.rglob("*")) if p.suffix in (".py", ".js")
-            and p.relative_to(SRC).parts[0] not in OTHER_MEANINGS]
-
 
 def test_no_module_compares_a_questions_kind():
-    found = [f"{p.relative_to(SRC)}:{i}: {line.strip()}" for p in _sources()
-             for i, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1) if COMPARED.search(line)]
+    found = [f"{rel}:{i}: {line.strip()}" for rel, i, line in source_lines(OTHER_MEANINGS)
+             if COMPARED.search(line)]
     assert not found, "\n".join(found)
 
 
 def test_no_module_writes_a_question_kinds_name():
-    found = []
-    for p in _sources():
-        rel = str(p.relative_to(SRC))
-        for i, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1):
-            for m in LITERAL.finditer(line):
-                if rel not in ALLOWED_WORDS.get(m.group(1), ()):
-                    found.append(f"{rel}:{i}: {line.strip()}")
+    found = names_written(OTHER_MEANINGS, LITERAL, ALLOWED_WORDS)
     assert not found, "\n".join(found)
 
 
