@@ -11,7 +11,7 @@ from kinematika import KinematikaError
 from kinematika.sweep import run_sweep
 from kinematika.sweep.run import Sweeper
 
-from .models import circle_meet, four_bar_tree
+from .models import four_bar_tree, rocker_driven_tree
 
 # non-Grashof (2.5 + 4 > 3 + 3): the "crank" cannot turn fully
 TRIPLE_ROCKER = dict(ground=4.0, crank=2.5, coupler=3.0, rocker=3.0)
@@ -65,16 +65,7 @@ def test_skip_bad_leaves_the_rows_empty(general):
 def test_a_sweep_onto_a_dead_point_is_singular():
     # Driven from the rocker, the crank-rocker 4, 1, 4, 3 stops where crank and coupler are in
     # line: |O2B| = 5 makes O2-O4-B a 3-4-5 triangle, the rocker straight up (90°).
-    b = (4 + 3 * math.cos(math.radians(120)), 3 * math.sin(math.radians(120)))
-    a = circle_meet((0, 0), 1.0, b, 4.0, 1.0)
-    tree = {"points": {"O2": [0, 0], "A": list(a), "B": list(b), "O4": [4, 0]},
-            "bodies": {"ground": ["O2", "O4"], "crank": ["O2", "A"], "coupler": ["A", "B"],
-                       "rocker": ["B", "O4"]},
-            "joints": [{"type": "revolute", "bodies": ["ground", "crank"], "at": "O2"},
-                       {"type": "revolute", "bodies": ["crank", "coupler"], "at": "A"},
-                       {"type": "revolute", "bodies": ["coupler", "rocker"], "at": "B"},
-                       {"type": "revolute", "bodies": ["ground", "rocker"], "at": "O4"}],
-            "drivers": [{"omega": "rocker", "value": 1.0}]}
+    tree = rocker_driven_tree()          # ground 4, crank 1, coupler 4, rocker 3 at 120°, A on the left
     with pytest.raises(KinematikaError) as err:
         run_sweep(tree, by=-30, steps=3)
     assert err.value.kind == "singular"
