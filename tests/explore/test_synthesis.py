@@ -251,8 +251,8 @@ def poses_of(o2, o4, a, b, c, p, kappa, angles):
 
 def pose_error(params, poses):
     """Each pose's distance to the written design's nearest pose over a turn (dense grid, then
-    a bounded scalar minimisation): √(|ΔP|² + (ρ Δφ)²), ρ the coupler's size."""
-    from scipy.optimize import minimize
+    a bounded scalar minimisation between the grid's neighbours): √(|ΔP|² + (ρ Δφ)²), ρ the coupler's size."""
+    from scipy.optimize import minimize_scalar
 
     o2, o4 = complex(params["x2"], params["y2"]), complex(params["x4"], params["y4"])
     a, b, c, kappa = params["a"], params["b"], params["c"], params["kappa"]
@@ -272,8 +272,10 @@ def pose_error(params, poses):
     for target, angle in poses:
         values = [distance(t, target, angle) for t in grid]
         k = int(np.argmin(values))
-        sol = minimize(lambda t, target=target, angle=angle: distance(t[0], target, angle) ** 2, [grid[k]],
-                       method="Nelder-Mead", options={"xatol": 1e-16, "fatol": 1e-34, "maxiter": 2000})
+        step = grid[1] - grid[0]          # the offset from the grid's best, so that Brent's tolerance
+        sol = minimize_scalar(             # (relative to the variable) is far below the 1e-8 asked
+            lambda u, t0=grid[k], target=target, angle=angle: distance(t0 + u, target, angle) ** 2,
+            bounds=(-step, step), method="bounded", options={"xatol": 1e-15, "maxiter": 500})
         errors.append(min(math.sqrt(sol.fun), values[k]))
     return max(errors)
 
