@@ -21,6 +21,12 @@ from kinematika.cams.spec import design, parse
 from kinematika.errors import KinematikaError
 
 from fuzz.forks import run_forked
+# what `kinematika cam` imports, imported once here: a forked command then starts without the
+# seconds of importing typer, matplotlib and the plots in each child (the fork is what
+# `run` tests: its own streams and exit status; a fresh process is run once, below)
+import kinematika.cli
+import kinematika.draw.cam_plots
+import kinematika.draw.figure  # noqa: F401
 from tests.conftest import ROOT
 
 D = math.radians

@@ -10,6 +10,8 @@ import pytest
 
 from kinematika.explain.document import CentreNote, Derived, Equation, Msg, Section
 
+from tests.conftest import sampled
+
 from .helpers import explained
 
 
@@ -179,10 +181,11 @@ def test_a_wheel_on_a_fixed_body_turns_about_its_contact(name, body):
             assert i > said[0]
 
 
-@pytest.mark.parametrize("name,body,points", [
+# the bicycle by default, both in a deep run (the same sentence and equations)
+@pytest.mark.parametrize("name,body,points", sampled([
     ("seed_c5_e6_bicycle", "frame", ["K"]),             # C5-E.6: "el quadre només es trasllada"
     ("seed_c5_e5_unequal_wheels", "chassis", ["B", "D"]),
-])
+], lambda case: case[0] == "seed_c5_e6_bicycle"))
 def test_a_body_that_does_not_turn_moves_its_points_alike(name, body, points):
     """Once ω of the chassis is found zero, its other points move as the one known: the
     explanation says the body translates and writes v_K = v_H, not v_K = v_H + 0 × HK."""
@@ -248,7 +251,9 @@ def test_no_slip_between_moving_bodies_is_a_sentence():
     assert [m.args["joint"].text for m in said] == ["j10"]
 
 
-@pytest.mark.parametrize("name,body", [("seed_c5_2_2_articulated", "S1"), ("seed_c5_e4_upper_wheel", "chassis")])
+# the articulated bar by default, both in a deep run (the same remark after the same zero)
+@pytest.mark.parametrize("name,body", sampled([("seed_c5_2_2_articulated", "S1"), ("seed_c5_e4_upper_wheel", "chassis")],
+                                              lambda case: case[0] == "seed_c5_2_2_articulated"))
 def test_a_translation_says_why_after_its_zero(name, body):
     """ω = 0 of a body that translates reads "ω_2 = 0 (it translates)", the reason after the
     value, never "ω_2 = (it translates) = 0"."""

@@ -40,11 +40,11 @@ def cluster():
 def test_a_cluster_of_two_workers_gives_the_rows_of_one_process(model, cluster):
     from dask.distributed import Client
 
-    here = ke.explore(model, VARY, METRICS, samples=200, seed=4, chunk=50, workers=1)
+    here = ke.explore(model, VARY, METRICS, samples=100, seed=4, chunk=25, workers=1)
     with Client(cluster) as client:
-        there = ke.explore(model, VARY, METRICS, samples=200, seed=4, chunk=50, scheduler=client)
-    pd.testing.assert_frame_equal(here, there)
-    assert here["assembles"].sum() > 60 and (here["reason"] != "").sum() > 10
+        there = ke.explore(model, VARY, METRICS, samples=100, seed=4, chunk=25, scheduler=client)
+    pd.testing.assert_frame_equal(here, there)           # four chunks, rows of both kinds:
+    assert here["assembles"].sum() > 30 and (here["reason"] != "").sum() > 5
 
 
 def test_the_command_on_a_scheduler_address_writes_the_same_rows(model, cluster, tmp_path):

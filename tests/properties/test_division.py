@@ -10,6 +10,8 @@ from sympy.polys.rings import ring
 
 from kinematika.algebra.fields import _may_divide
 
+from tests.conftest import DEEP
+
 R, x, y, s, c = ring("x, y, s, c", QQ, lex)
 GENS = (R.one, x, y, s, c)
 
@@ -20,7 +22,8 @@ polys = st.lists(terms, min_size=1, max_size=5).map(
     lambda ts: sum((R(coeff) * a * b for coeff, a, b in ts), R.zero))
 
 
-@settings(max_examples=200, deadline=None)
+# sympy's rings make each example costly: 40 pairs by default, 500 in a deep run
+@settings(max_examples=500 if DEEP else 40, deadline=None)
 @given(polys, polys)
 def test_a_true_divisor_is_never_turned_away(q, f):
     if f.is_ground:

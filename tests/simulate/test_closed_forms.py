@@ -14,6 +14,7 @@ import pytest
 
 from kinematika.simulate import run_simulation
 from kinematika.simulate.run import SimulationStopped
+from tests.conftest import sampled
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -176,13 +177,14 @@ IN_TIME = ["car_wheel_steering", "coin_rolling", "seed_c5_2_1_tricycle", "seed_c
 
 def test_every_example_a_sweep_cannot_follow_moves_in_time():
     """The bundled examples with a knife edge or a disc rolling on a plane (listed here, so
-    that a new one is seen) are followed in time, row 0 as drawn and drift kept small."""
+    that a new one is seen) are followed in time, row 0 as drawn and drift kept small: a
+    knife edge and a disc on a plane by default (every one in a deep run)."""
     from kinematika import load_model
     from kinematika.simulate import needs_time
 
     found = sorted(p.stem for p in EXAMPLES.glob("*.yaml") if needs_time(load_model(p)))
     assert found == IN_TIME
-    for name in IN_TIME:
+    for name in sampled(IN_TIME, {"coin_rolling", "tractor_trailer"}):
         result = run_simulation(EXAMPLES / f"{name}.yaml", time=0.1, steps=2)
         assert len(result) == 3 and result.ok.all(), name
         assert result.drift.max() < 1e-8, name

@@ -11,7 +11,9 @@ dead point or the end of travel its comments derive — so that `kinematika simu
 and the page's slider need nothing more. Each is run over that whole time (the costliest —
 two 3D vehicles with a few thousand velocity solutions each, and the tractor with its trailer
 over a minute — over their first eighth unless KINEMATIKA_DEEP=1), with few rows: the
-integrator's work is set by its tolerance, not by the rows asked for.
+integrator's work is set by its tolerance, not by the rows asked for. A default run moves
+one example of each kind (and the coin, a disc rolling on a plane); a deep run moves every
+example.
 """
 from __future__ import annotations
 
@@ -27,7 +29,7 @@ from kinematika.simulate.clock import make_clock
 from kinematika.sweep import run_sweep
 from kinematika.sweep.plan import swept_joint
 from kinematika.sweep.summary import summary_lines
-from tests.conftest import DEEP, EXAMPLES, ROOT
+from tests.conftest import DEEP, EXAMPLES, KINDS, ROOT, sampled
 
 SWEEP, TIME = "sweep", "simulate"
 MOVES = {
@@ -80,7 +82,7 @@ def _moved(positions: dict) -> float:
                for p in positions.values()) / size
 
 
-@pytest.mark.parametrize("name", sorted(n for n, how in MOVES.items() if how == SWEEP))
+@pytest.mark.parametrize("name", sampled(sorted(n for n, how in MOVES.items() if how == SWEEP), KINDS))
 def test_the_example_sweeps(name):
     """Its sweep (its own section, else a full turn) in 4 steps: every row assembled, the
     mechanism moving; where the input meets limit positions the summary gives them and the
@@ -95,7 +97,8 @@ def test_the_example_sweeps(name):
         assert f"limit positions of {result.joint}:" in text and f"range of {result.joint}:" in text
 
 
-@pytest.mark.parametrize("name", sorted(n for n, how in MOVES.items() if how == TIME))
+@pytest.mark.parametrize("name", sampled(sorted(n for n, how in MOVES.items() if how == TIME),
+                                          KINDS | {"coin_rolling"}))
 def test_the_example_moves_in_time_over_its_section(name):
     """Its `simulate:` section's time (the costliest over its first eighth), in 2 steps:
     every row solved, the drift small, the mechanism moving."""
