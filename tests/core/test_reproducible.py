@@ -43,20 +43,14 @@ def _solve(model: Path, slower: float, hash_seed: str) -> dict:
 
 
 def jansen_model(whole: bool) -> dict:
-    """Jansen's leg with its crank angle a symbol, or its top (`tests.core.models.jansen`)
-    with its lengths rounded to whole numbers: the same chain of roots (B, then E from B's
-    roots, in named coordinates) at half the exact algebra of the decimal lengths."""
-    if whole:
-        return jansen(top=False)
-    tree = jansen(top=True)
-    tree["parameters"].update(l=8, b=42, d=40, e=56)
-    return tree
+    """Jansen's leg with its crank angle a symbol, or its top (`tests.core.models.jansen`)."""
+    return jansen(top=not whole)
 
 
 @pytest.mark.parametrize("part", sampled(["top", "whole"], {"top"}))
 def test_formulas_do_not_depend_on_the_clock_or_the_hashes(tmp_path, part):
-    """Jansen's leg's top with whole-number lengths (the whole leg in a deep run, many times
-    the work) with its crank angle a symbol (named coordinates, many optional rewritings): the same
+    """Jansen's leg's top (the whole leg in a deep run, 8 times the work) with every length
+    and its crank angle symbols (named coordinates, many optional rewritings): the same
     answer, formula for formula and key for key, when the clocks run three times as fast and
     the string hashes differ (it differed from run to run when the rewritings had 1 s of
     processor time in all)."""
