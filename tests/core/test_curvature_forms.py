@@ -12,6 +12,7 @@ import sympy
 import kinematika
 from kinematika.report.json_answer import solution_json
 
+from tests.conftest import deep_only
 from tests.model.test_constructions import four_bar_tree, slider_crank_tree
 
 theta, a, b, c, d = sympy.symbols("theta a b c d", positive=True)
@@ -40,6 +41,7 @@ def exact(text):
     return sympy.sympify(text, locals=NAMES)
 
 
+@deep_only     # 13 s: B@rocker's radius c about the pin is test_every_length_a_symbol_the_radii_are_the_links's
 def test_the_rockers_pin_is_at_the_rockers_length_however_long_its_speed():
     """The issue's case: the crank angle θ and the rocker's length c symbols; B moves on the
     circle of radius c about O4 = (5.2, 0) (the rocker turns about O4)."""

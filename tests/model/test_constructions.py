@@ -15,7 +15,7 @@ import sympy
 import kinematika
 from kinematika import KinematikaError
 from kinematika.report.json_answer import solution_json
-from tests.conftest import hand_derivations
+from tests.conftest import deep_only, hand_derivations
 
 _hand = hand_derivations()
 
@@ -188,6 +188,9 @@ def test_symbolic_slider_crank_at_general_angle():
     assert vc[1] == "0"
 
 
+# seconds: a four-bar built by its circles at a general crank angle against Freudenstein and
+# Norton at five angles is also tests/examples/test_from_a_problem.py's symbolic crank angle
+@deep_only
 def test_symbolic_four_bar_at_general_crank_angle_is_freudenstein():
     th, w = sympy.symbols("theta w", positive=True)
     tree = four_bar_tree(a=2, b=7, c=9, d=6)

@@ -306,8 +306,20 @@ def test_set_null_makes_the_crank_angle_a_symbol(theta):
 
 
 def test_set_null_through_the_api_and_a_bad_set_value():
-    js = solution_json(kinematika.solve(prepare((EXAMPLES / "four_bar.yaml").read_text(), set={"theta2": None})))
+    """`set` in the API makes a parameter a symbol as `--set NAME=null` does (here the crank's
+    speed w2, a formula linear in it: the crank angle's longer formulas are the command
+    line's test above); a value that is no number is refused by name."""
+    import sympy
+
+    js = solution_json(kinematika.solve(prepare((EXAMPLES / "four_bar.yaml").read_text(), set={"w2": None})))
     assert js["symbolic"] is True
+    values = {next(iter(a["ask"].items())): a["value"] for a in js["answers"]}
+    t2 = math.radians(90)
+    t3, t4 = freudenstein(1, 4, 3, 4, t2)
+    w3, w4, _, _ = norton_rates(1, 4, 3, t2, t3, t4, 10.0, 0.0)
+    at = {sympy.Symbol("w2"): 10}
+    assert float(sympy.sympify(values[("omega", "coupler")]).subs(at)) == pytest.approx(w3, rel=1e-9)
+    assert float(sympy.sympify(values[("omega", "rocker")]).subs(at)) == pytest.approx(w4, rel=1e-9)
     with pytest.raises(KinematikaError) as err:
         prepare((EXAMPLES / "four_bar.yaml").read_text(), set={"theta2": "nul"})
     assert "nul" in err.value.message

@@ -191,6 +191,7 @@ def test_a_coupler_point_written_by_numbers_turns_with_the_coupler():
     tree["points"]["P"] = [2, 4]
     tree["bodies"]["coupler"] = ["A", "B", "P"]
     inst = instantiate(prepare(tree, move={"j1": 30}))
+    at = _evaluator(inst.names, inst.points["P"])
     for t in (0.4, 1.1, 2.0):
         t3, _ = freudenstein(2.25, 6.1, 4.35, 5.2, t)
         t3m, _ = freudenstein(2.25, 6.1, 4.35, 5.2, t + math.pi / 6)
@@ -198,18 +199,29 @@ def test_a_coupler_point_written_by_numbers_turns_with_the_coupler():
         d, turn = (2 - A0[0], 4 - A0[1]), t3m - t3
         expected = (A1[0] + math.cos(turn) * d[0] - math.sin(turn) * d[1],
                     A1[1] + math.sin(turn) * d[0] + math.cos(turn) * d[1])
-        got = [_value(c, inst.names, t) for c in inst.points["P"]]
+        got = at(t)
         assert got == pytest.approx(expected, abs=1e-9)
 
 
-def _value(expr, names, t):
-    """A coordinate in named quantities (x_P …, each defined by the earlier ones) at θ = t,
-    at 30 digits (lambdify to mpmath: what `evalf(subs=...)` gives, in less time)."""
-    values = {sympy.Symbol("theta", positive=True): mpmath.mpf(t)}
-    with mpmath.workdps(30):
-        for symbol, definition in names.items():
-            values[symbol] = mpmath.re(sympy.lambdify(list(values), definition, "mpmath")(*values.values()))
-        return float(mpmath.re(sympy.lambdify(list(values), expr, "mpmath")(*values.values())))
+def _evaluator(names, exprs):
+    """Coordinates in named quantities (x_P …, each defined by the earlier ones) as a function
+    of θ, at 30 digits (each formula turned into an mpmath function once: what
+    `evalf(subs=...)` gives, in less time)."""
+    theta_ = sympy.Symbol("theta", positive=True)
+    symbols = [theta_]
+    steps = []
+    for symbol, definition in names.items():
+        steps.append(sympy.lambdify(list(symbols), definition, "mpmath"))
+        symbols.append(symbol)
+    finals = [sympy.lambdify(list(symbols), e, "mpmath") for e in exprs]
+
+    def at(t):
+        with mpmath.workdps(30):
+            values = [mpmath.mpf(t)]
+            for step in steps:
+                values.append(mpmath.re(step(*values)))
+            return [float(mpmath.re(f(*values))) for f in finals]
+    return at
 
 
 def test_a_wheel_rolling_on_a_line_says_why_it_cannot_move_exactly():
