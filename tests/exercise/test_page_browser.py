@@ -23,10 +23,10 @@ def test_the_page_opens_a_link_checks_the_answers_and_shows_the_solution(tmp_pat
         pytest.skip("Chromium is not installed (bash scripts/browser.sh)")
     from .conftest import make
 
-    ex = make(P_PAIR, P_PAIR_VARY, 2, 7, "eu")
+    ex = make(P_PAIR, P_PAIR_VARY, 1, 7, "eu")            # one variant: the page opens one link
     write_exercise(ex, tmp_path, solutions=False, pdf=False)
-    fragment = (tmp_path / "links.txt").read_text().splitlines()[1].split("\t")[1]
-    v = ex.variants[1]
+    fragment = (tmp_path / "links.txt").read_text().splitlines()[0].split("\t")[1]
+    v = ex.variants[0]
     mistakes = {m.kind: m for m in v.mistaken}
     server = PageServer(Start())
     try:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import statistics
 from contextlib import contextmanager
 from pathlib import Path
@@ -452,7 +453,10 @@ def test_named_quantities_of_long_formulas_are_listed(page, server, tmp_path):
     name's formula, as the CLI's answer does (the whole leg shows the same, at four times
     the server's work). The exact solve takes the server seconds of CPU time, which a
     loaded machine stretches: the page is waited on by the server's CPU time, not by the
-    clock (`PageServer.wait`)."""
+    clock (`PageServer.wait`). Its figure (exact centres: as long again) and explanation are
+    not asked for here, each test's matter of its own: the page's requests for them are
+    refused, which it takes as any such failure."""
+    page.route(re.compile(r".*/api/(draw|explain)$"), lambda route: route.abort())
     page.get_by_test_id("model-editor").fill(JANSEN_TOP)
     server.wait(page, "() => !!document.querySelector('td[data-key=\"where.x_E\"]')"
                       " && document.getElementById('busy').hidden")
@@ -462,19 +466,18 @@ def test_named_quantities_of_long_formulas_are_listed(page, server, tmp_path):
     assert list(cli_json["where"]) == ["x_B", "y_B", "x_E", "y_E"]
     for name in cli_json["where"]:
         assert cell(page, f"where.{name}") == cli_json["where"][name]
-    server.wait(page, EXPLAINED)        # its explanation too, before the next test shares the
-    server.idle()                       # server
+    server.idle()                       # before the next test shares the server
 
 
 def test_a_slow_drag_ends_under_the_pointer(page):
-    """A hand drags the crank's end A slowly, hesitating: fifteen small moves, each followed
+    """A hand drags the crank's end A slowly, hesitating: six small moves, each followed
     by a pause long enough for the page to edit, solve and redraw (most of a second). The
     drag holds the pointer through every redraw, and at the end A is drawn under the
     pointer (the view is kept while dragging), its text changed through the crank's
     parameters (a, theta2), never replaced by numbers."""
     x, y = grab(page, "A")
-    for i in range(1, 16):
-        page.mouse.move(x + 4 * i, y - 3 * i)
+    for i in range(1, 7):
+        page.mouse.move(x + 10 * i, y - 7.5 * i)
         page.wait_for_timeout(500)                 # the hand hesitates; the page re-solves
     page.mouse.up()
     page.wait_for_function("() => !window.kinematika.figure.drag && document.getElementById('busy').hidden",

@@ -6,6 +6,9 @@ swings: its default sweep runs 62.8° up to a limit position, 245.7° down to th
 as over any sweep; played, it goes to the last row and comes back (it does not jump to the
 first); at rest past a limit position the page solves that row on the branch it is on
 (the API's `row`), not the drawn branch `move` would give at the same coordinate.
+
+Both tests share one page with the pin loaded and one CLI sweep (a module's fixtures): the
+row solved at rest first, then the playing, whose clock of the test's own stays installed.
 """
 from __future__ import annotations
 
@@ -15,9 +18,9 @@ import pytest
 from typer.testing import CliRunner
 
 from kinematika.cli import app as cli
-from tests.conftest import EXAMPLES
+from tests.conftest import BROWSER_WAIT, EXAMPLES
 
-from .test_page import cell, page, set_row  # noqa: F401 - the page fixture
+from .test_page import cell, ready, set_row
 
 pytestmark = pytest.mark.browser
 PIN = "pin_in_circular_slot.yaml"
@@ -30,10 +33,41 @@ def _open(pg, name: str) -> None:
                          " && window.kinematika.state.sweep")
 
 
-def test_a_swinging_input_is_played_back_and_forth(page):  # noqa: F811
-    rows = json.loads(CliRunner().invoke(cli, ["sweep", str(EXAMPLES / PIN), "--json", "--skip-bad"]).stdout)
+@pytest.fixture(scope="module")
+def rows() -> dict:
+    """The pin's sweep as the CLI answers it, once for the module."""
+    return json.loads(CliRunner().invoke(cli, ["sweep", str(EXAMPLES / PIN), "--json", "--skip-bad"]).stdout)
+
+
+@pytest.fixture(scope="module")
+def pin(browser, server):
+    """One page with the pin loaded, for both tests (the page fixture's checks of errors)."""
+    context = browser.new_context(viewport={"width": 1400, "height": 1000})
+    pg = context.new_page()
+    pg.set_default_timeout(BROWSER_WAIT)
+    errors: list[str] = []
+    pg.on("pageerror", lambda e: errors.append(str(e)))
+    pg.goto(server.url)
+    ready(pg)
+    _open(pg, PIN)
+    yield pg
+    context.close()
+    assert not errors, errors
+
+
+def test_at_rest_past_a_limit_the_row_is_solved_on_its_branch(pin, rows):
+    k = 200                                         # on the way down, past the limit at 62.8°
+    set_row(pin, k)
+    pin.wait_for_function("() => !document.querySelector('[data-testid=answers] td.held')")
+    assert cell(pin, "bodies.rocker.omega") == pytest.approx(rows["bodies"]["rocker"]["omega"][k], rel=1e-8)
+    assert cell(pin, "points.C@rocker.position") == pytest.approx(
+        rows["points"]["C@rocker"]["position"][k], abs=1e-9)
+
+
+def test_a_swinging_input_is_played_back_and_forth(pin, rows):
+    """After the test above (the same page): its clock is the test's own from here on."""
+    page = pin
     last = len(rows["coordinate"]) - 1
-    _open(page, PIN)
     slider = page.get_by_test_id("input-slider")
     assert slider.get_attribute("max") == str(last)
     assert page.evaluate("window.kinematika.state.sweep.limits") == pytest.approx(rows["limits"])
@@ -58,13 +92,3 @@ def test_a_swinging_input_is_played_back_and_forth(page):  # noqa: F811
     assert seen[top:] == sorted(seen[top:], reverse=True)   # then back, row by row
     assert seen[-1] < last - 60                             # never jumped to the first rows
 
-
-def test_at_rest_past_a_limit_the_row_is_solved_on_its_branch(page):  # noqa: F811
-    rows = json.loads(CliRunner().invoke(cli, ["sweep", str(EXAMPLES / PIN), "--json", "--skip-bad"]).stdout)
-    _open(page, PIN)
-    k = 200                                         # on the way down, past the limit at 62.8°
-    set_row(page, k)
-    page.wait_for_function("() => !document.querySelector('[data-testid=answers] td.held')")
-    assert cell(page, "bodies.rocker.omega") == pytest.approx(rows["bodies"]["rocker"]["omega"][k], rel=1e-8)
-    assert cell(page, "points.C@rocker.position") == pytest.approx(
-        rows["points"]["C@rocker"]["position"][k], abs=1e-9)
