@@ -50,7 +50,8 @@ def page(browser, server):
 
 PT = 4 / 3                     # the page's CSS pixels per point (figure.js)
 EXAMPLES_DRAWN = ["four_bar", "eccentric_cam", "planetary_gears", "slider_crank",
-                  "quick_return", "pin_in_circular_slot", "robot_arm_3d"]
+                  "quick_return", "pin_in_circular_slot", "robot_arm_3d",
+                  "seed_c5_1_4_epicyclic"]
 # a default run: a linkage, a cam's profile, gears, a slider's block, an arc slot, a 3D
 # projection; a second slider in a deep run
 DRAWN = sampled(EXAMPLES_DRAWN, {"four_bar", "eccentric_cam", "planetary_gears", "slider_crank",
@@ -73,7 +74,8 @@ READ_SVG = """() => {
         const [line, ...heads] = n.children;
         out.push({ kind: 'arrow', hidden: n.getAttribute('visibility') === 'hidden', line: pts(line.getAttribute('points') || ''),
                    heads: heads.map((h) => pts(h.getAttribute('points') || '')), stroke: line.getAttribute('stroke') });
-      } else if (tag === 'text') out.push({ kind: 'text', content: n.textContent });
+      } else if (tag === 'text') out.push({ kind: 'text', content: [...n.children].map(
+          (t) => (t.hasAttribute('data-line') ? '\\n' : '') + t.textContent).join('') });
       else if (tag === 'circle' && n.classList.contains('dot')) out.push({ kind: 'dot', at: [+n.getAttribute('cx'), -n.getAttribute('cy')], fill });
       else if (tag === 'polygon' && n.classList.contains('dot')) {
         const p = pts(n.getAttribute('points'));

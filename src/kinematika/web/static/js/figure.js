@@ -7,7 +7,7 @@
 // and are projected again. Results only the scene holds (instant centres, Kennedy lines,
 // curvature circles, relative vectors) are shown at the position the scene was solved at; the
 // arrows of swept points follow the sweep, to the scene's scale (`style.longest`, `shortest`).
-import { el, runsText, num, shown } from "./svg.js";
+import { el, runsText, placeLines, num, shown } from "./svg.js";
 
 const PT = 4 / 3;        // CSS pixels per point: a mark's widths and sizes are in points
 const HATCH = 3;         // points between the lines of a hatching (matplotlib's "////")
@@ -700,4 +700,5 @@ function placeText(text, p, gap, towards) {
   text.setAttribute("y", -(p[1] + s * gap));
   text.setAttribute("text-anchor", c > 0.3 ? "start" : c < -0.3 ? "end" : "middle");
   text.setAttribute("dominant-baseline", s > 0.3 ? "text-after-edge" : s < -0.3 ? "hanging" : "middle");
+  placeLines(text);
 }

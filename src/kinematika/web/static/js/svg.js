@@ -29,19 +29,35 @@ export function shown(text, limit = NAME_CHARS) {
   return s;
 }
 
-/** A label from runs ([{t: "v"}, {sub: "B"}, {t: " = 9.25"}]) as SVG tspans. */
+/** A label from runs ([{t: "v"}, {sub: "B"}, {t: " = 9.25"}]) as SVG tspans. A line break
+ * in a text run (a group of coincident centres written a few to a line, as matplotlib
+ * writes it) starts a new line: the next tspan is marked `data-line`, one line lower, and
+ * `placeLines` puts it at the text's x (an empty tspan would not move the text: the break
+ * goes on the first one with characters). */
 export function runsText(parent, runs, attrs) {
   const text = el("text", attrs, parent);
+  let broken = false;
+  const span = (content, more = {}) => {
+    const s = el("tspan", broken ? { ...more, dy: "1.2em", "data-line": "" } : more, text);
+    s.textContent = shown(content);
+    broken = false;
+  };
   for (const run of runs) {
     if (run.sub !== undefined) {
-      const s = el("tspan", { "baseline-shift": "sub", "font-size": "75%" }, text);
-      s.textContent = shown(run.sub);
-    } else {
-      const s = el("tspan", {}, text);
-      s.textContent = shown(run.t);
+      span(run.sub, { "baseline-shift": "sub", "font-size": "75%" });
+      continue;
     }
+    String(run.t).split("\n").forEach((line, i) => {
+      if (i > 0) broken = true;
+      if (line) span(line);
+    });
   }
   return text;
+}
+
+/** A text's later lines at its x (SVG does not break lines itself). */
+export function placeLines(text) {
+  for (const line of text.querySelectorAll("tspan[data-line]")) line.setAttribute("x", text.getAttribute("x"));
 }
 
 let DECIMAL = ".";          // the page's language's decimal mark (i18n.js sets it)
