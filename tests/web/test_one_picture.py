@@ -53,9 +53,9 @@ EXAMPLES_DRAWN = ["four_bar", "eccentric_cam", "planetary_gears", "slider_crank"
                   "quick_return", "pin_in_circular_slot", "robot_arm_3d",
                   "seed_c5_1_4_epicyclic"]
 # a default run: a linkage, a cam's profile, gears, a slider's block, an arc slot, a 3D
-# projection; a second slider in a deep run
+# projection, a train's coincident centres (a label on two lines); a second slider in a deep run
 DRAWN = sampled(EXAMPLES_DRAWN, {"four_bar", "eccentric_cam", "planetary_gears", "slider_crank",
-                                 "pin_in_circular_slot", "robot_arm_3d"})
+                                 "pin_in_circular_slot", "robot_arm_3d", "seed_c5_1_4_epicyclic"})
 
 READ_SVG = """() => {
   const f = window.kinematika.figure;
