@@ -267,6 +267,18 @@ def jansen_points(t, at=JANSEN) -> dict:
     return pts
 
 
+def matches_the_leg_by_hand(out: dict, at: dict, point: str, key: str) -> None:
+    """Each named coordinate is a short formula, and the answers (velocity, acceleration of
+    `point`) and its position, evaluated at `at` through the names, are the leg's motion by
+    hand (`jansen_points`, differentiated by mpmath)."""
+    assert max(len(text) for text in out["where"].values()) < 2000        # each one short
+    place, v, acc = motion(lambda t: jansen_points(t)[point], at["theta"], at["w"])
+    names = named(out, at)
+    got = [written(a["value"], at, names) for a in out["answers"]]
+    same(got, [v, acc], rel=1e-9)
+    same(written(out["points"][key]["position"], at, names), place, rel=1e-9)
+
+
 def jansen_top() -> dict:
     """The top of Jansen's leg (`tests.core.models.jansen`) as given: every length a symbol
     when solved with `symbolic`, E's coordinates written out pass the limit."""
@@ -285,12 +297,7 @@ def test_jansen_legs_top_in_its_lengths_answers_with_named_coordinates():
     at = {k: JANSEN[k] for k in TOP}
     out = solve_data(jansen_top(), True)
     assert list(out["where"]) == ["x_B", "y_B", "x_E", "y_E"]
-    assert max(len(text) for text in out["where"].values()) < 2000        # each one short
-    place, v, acc = motion(lambda t: jansen_points(t)["E"], at["theta"], at["w"])
-    names = named(out, at)
-    got = [written(a["value"], at, names) for a in out["answers"]]
-    same(got, [v, acc], rel=1e-9)
-    same(written(out["points"]["E@top"]["position"], at, names), place, rel=1e-9)
+    matches_the_leg_by_hand(out, at, "E", "E@top")
 
 
 @deep_only
@@ -303,12 +310,7 @@ def test_jansen_leg_in_its_15_lengths_answers_with_named_coordinates():
     at = JANSEN
     out = solve_data(ROOT / "examples" / "jansen_leg.yaml", True)
     assert {"x_F", "y_F", "x_P", "y_P"} <= set(out["where"])
-    assert max(len(text) for text in out["where"].values()) < 2000        # each one short
-    place, v, acc = motion(lambda t: jansen_points(t)["P"], at["theta"], at["w"])
-    names = named(out, at)
-    got = [written(a["value"], at, names) for a in out["answers"]]
-    same(got, [v, acc], rel=1e-9)
-    same(written(out["points"]["P@foot"]["position"], at, names), place, rel=1e-9)
+    matches_the_leg_by_hand(out, at, "P", "P@foot")
 
 
 TEXTBOOK = ROOT / "tests" / "textbook"
