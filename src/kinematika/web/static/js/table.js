@@ -108,10 +108,11 @@ export class Answers {
       // an answer asked in symbols stays the formula at the row it was solved at (the
       // sweep's numbers are those of draw_at); the bodies' and points' rows, and every
       // other row, follow the sweep at once
-      const exact = c.key.startsWith("answers.") && (c.fixedRow ?? this.solvedRow) === k && formula(c.fixed);
+      const solvedHere = (c.fixedRow ?? this.solvedRow) === k;
+      const exact = c.key.startsWith("answers.") && solvedHere && formula(c.fixed);
       const live = c.source && c.source[k] !== undefined && !exact;
       const value = live ? c.source[k] : c.fixed;
-      const held = !live && value !== null && (c.fixedRow ?? this.solvedRow) !== k;   // "–" is never held
+      const held = !live && value !== null && !solvedHere;   // "–" is never held
       const text = shown(format(value, this.t), Infinity);
       c.td.textContent = text;
       c.td.classList.toggle("long", text.length > LONG);
