@@ -62,7 +62,8 @@ class PageServer:
             else:
                 idle += time.monotonic() - began
                 if idle > HANG_SECONDS:
-                    raise AssertionError(f"the page waited {HANG_SECONDS:.0f} s with the server idle for: {condition}")
+                    raise AssertionError(f"the page waited {HANG_SECONDS:.0f} s with the server idle for: {condition}; "
+                                         f"the page then: {_seen(page)}")
 
     def stop(self) -> None:
         """Stop serving, and wait for the computations of requests the browser abandoned
@@ -83,6 +84,15 @@ class PageServer:
                 raise RuntimeError(f"the page's server still computes after {HANG_CPU_SECONDS:.0f} s of CPU time "
                                    f"{since}".strip())
             time.sleep(0.05)
+
+
+def _seen(page) -> str:
+    """What the page shows of its state, for a wait that failed to say why."""
+    return page.evaluate("""() => { const s = window.kinematika && window.kinematika.state;
+        const text = (id) => { const e = document.getElementById(id); return e ? (e.hidden ? "(hidden)" : e.textContent) : null; };
+        return JSON.stringify({gen: s && s.gen, solution: !!(s && s.solution), sweep: !!(s && s.sweep),
+            sweepError: s && s.sweepError, input: s && s.input, busy: text("busy"), error: text("error"),
+            example: document.getElementById("example").value, notes: text("notes")}); }""")
 
 
 def _computing(thread: threading.Thread) -> bool:
