@@ -178,10 +178,10 @@ def table(results: dict[str, list[dict]], args, load: float) -> str:
         ok = [r for r in runs if "sse" in r]
         errors = [r["sse"] for r in ok]
         valid = all(not r["broken"] for r in ok) and len(ok) == len(runs)
-        best = f"{min(errors):.4g}" if errors else "—"
-        median = f"{statistics.median(errors):.4g}" if errors else "—"
+        best = f"{min(errors):.8g}" if errors else "—"
+        median = f"{statistics.median(errors):.8g}" if errors else "—"
         walls = [r["wall"] for r in runs]
-        lines.append(f"| {name} | {p.published:.2g} ({p.source}) | {best} | {median} | "
+        lines.append(f"| {name} | {p.published:.8g} ({p.source}) | {best} | {median} | "
                      f"{min(walls):.0f}–{max(walls):.0f} s | {len(runs)} | {'yes' if valid else 'NO'} |")
     lines.append("")
     lines.append(f"`--seconds {args.seconds:g}`, seeds 0–{args.seeds - 1}; load average at the start {load:.1f} "

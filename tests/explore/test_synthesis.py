@@ -116,6 +116,42 @@ def test_free_timing_targets_are_met_in_order_by_a_crank_rocker(tmp_path):
     assert sse < 1e-12
 
 
+# The best Ellipse10 design compiled in the public code of Nguyen-Van et al. (Symmetry 14 (2022)
+# 381; CheckCase5.m, third column): r1, r2, r3, r4, rcx, rcy, x0, y0, theta0, then the ten crank
+# angles θ2 (radians from the ground line), and the published table of targets it was scored on.
+PUBLISHED_ELLIPSE = (80.0, 8.045662, 50.81902, 42.20801, -10.63697, -2.29109, 8.494813, -0.7579678, 3.88921,
+                     (2.449437, 3.153969, 3.837114, 4.520171, 5.204799, 5.898536, 0.316204, 1.023555, 1.738992,
+                      2.449437))
+ELLIPSE_TABLE = (20 + 10j, 17.66 + 15.142j, 11.736 + 17.878j, 5 + 16.928j, 0.60307 + 12.736j, 0.60307 + 7.2638j,
+                 5 + 3.0718j, 11.736 + 2.1215j, 17.66 + 4.8577j, 20 + 10j)
+
+
+def test_the_published_ellipse_design_scores_the_same_by_the_papers_formula_and_the_contracts_solver(tmp_path):
+    """The papers' own closed form — the loop closure solved for the coupler's angle by the
+    half-angle tangent, θ3 = 2 atan((−E − √(E² − 4DF)) / 2D) with their K1, K4, K5 — and the
+    contract's solver on the papers' model (B on the left), the crank turned θ2 from the drawn
+    configuration, give the same points: the published design's error, 4.02e-4 on the table."""
+    import kinematika
+
+    r1, r2, r3, r4, rcx, rcy, x0, y0, th0, th2 = PUBLISHED_ELLIPSE
+    th2 = np.array(th2)
+    k1, k4, k5 = r1 / r2, r1 / r3, (r4 ** 2 - r1 ** 2 - r2 ** 2 - r3 ** 2) / (2 * r3 * r2)
+    d = np.cos(th2) - k1 + k4 * np.cos(th2) + k5
+    e = -2 * np.sin(th2)
+    f = k1 + (k4 - 1) * np.cos(th2) + k5
+    th3 = 2 * np.arctan((-e - np.sqrt(e * e - 4 * d * f)) / (2 * d))
+    papers = complex(x0, y0) + np.exp(1j * th0) * (r2 * np.exp(1j * th2) + complex(rcx, rcy) * np.exp(1j * th3))
+    values = dict(zip(("r1", "r2", "r3", "r4", "rcx", "rcy", "x0", "y0", "theta0"), PUBLISHED_ELLIPSE[:9]))
+    model = PAPERS.replace("{x0: 0, y0: 0, theta0: 0, r1: 4, r2: 1, r3: 3.5, r4: 3, rcx: 1.5, rcy: 1, theta2: 0}",
+                           "{" + ", ".join(f"{k}: {v!r}" for k, v in values.items()) + ", theta2: 0}")
+    (tmp_path / "m.yaml").write_text(model)
+    ours = np.array([complex(*kinematika.solve(str(tmp_path / "m.yaml"), move={"j1": math.degrees(q)})
+                             .position("P@coupler")[:2]) for q in th2])
+    assert np.allclose(ours, papers, atol=1e-9)
+    sse = float(np.sum(np.abs(papers - np.array(ELLIPSE_TABLE)) ** 2))
+    assert sse == pytest.approx(4.02e-4, rel=1e-3)
+
+
 def test_a_transmission_angle_requirement_holds_over_the_whole_turn(tmp_path):
     """`--require transmission=40 --require crank-rocker`: the written design's least
     transmission angle, over a dense turn of the test's own closure (min(μ, 180° − μ), μ
