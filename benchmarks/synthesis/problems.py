@@ -33,7 +33,7 @@ y = 10 + 8 sin t at t = 0°, 40°, …, 360° written to five significant digits
 [−80, 80], angles in [0, 2π], Grashof and the angles in cyclic order. The best design
 compiled there (CheckCase5.m, third column) scores 4.0199221e-4 on that table (4.0676916e-4
 on the exact ellipse); polished, it is 4.0199205e-4 with r1 at its bound 80 — the design
-kinematika writes on every seed. The "≈ 4.0e-4" quoted for W.-Y. Lin is that figure: Lin's
+kinematika writes. The "≈ 4.0e-4" quoted for W.-Y. Lin is that figure: Lin's
 design as compiled there scores 2.97e-3 (and only on the other assembly branch), so the
 value is credited to the compilation, not to Lin. On the exact ellipse the same basin's
 optimum is 4.0553e-4: the 1.4 % is the rounding of the targets, not the search.
