@@ -77,4 +77,7 @@ PROBLEMS = [
     Problem("Ellipse10", "ellipse10.csv", _box((0.0, 80.0), (-80.0, 80.0)), 4.0199221e-4,
             "the best design compiled by Nguyen-Van et al. 2022, on the published table; HCDJ 4.2014e-4",
             requires=("crank-rocker", "ordered")),
+    Problem("Ellipse10-exact", "ellipse10_exact.csv", _box((0.0, 80.0), (-80.0, 80.0)), 4.0676916e-4,
+            "the same compiled design scored on the exact ellipse (the problem as issue 32 states it)",
+            requires=("crank-rocker", "ordered")),
 ]
