@@ -11,6 +11,8 @@ from kinematika.explain import build, render
 from kinematika.explain.catalogue import LANGS
 from kinematika.explain.document import Msg, Section
 
+from tests.conftest import KINDS, sampled
+
 from .helpers import ALL, EXAMPLES, explained
 
 
@@ -27,7 +29,10 @@ def constructed(sol) -> list[str]:
     return [n for n, spec in sol.model.points.items() if not isinstance(spec, tuple)]
 
 
-@pytest.mark.parametrize("name", ALL)
+# one example of each kind, with Jansen's leg (a point on the right of its circles) and the
+# articulated vehicle (a point placed in a frame): every sentence of the section; every
+# example in a deep run
+@pytest.mark.parametrize("name", sampled(ALL, KINDS | {"jansen_leg", "seed_c5_2_2_articulated"}))
 def test_every_constructed_point_is_told(name):
     sol, doc = explained(name)
     if sol.space.dim != 2:

@@ -81,7 +81,7 @@ def test_a_timed_path_is_met_exactly_and_the_sweep_agrees(tmp_path):
     targets = write(tmp_path / "t.csv", "x,y,input", [(p.real, p.imag, 15 * i) for i, p in enumerate(points)])
     out = invoke(tmp_path, PAPERS, "--vary", "r1=1:6", "--vary", "r2=1:6", "--vary", "r3=1:6", "--vary", "r4=1:6",
                  "--vary", "rcx=-3:3", "--vary", "rcy=-3:3", "--target", targets, "--point", "P",
-                 "--timing", "j1=30", "--objective", "sse", "--generations", "40", "--best", "1")
+                 "--timing", "j1=30", "--objective", "sse", "--generations", "5", "--best", "1")
     assert out.exit_code == 0, out.output
     rows = run_sweep(as_model(tmp_path / "out" / "best-1.yaml"), by=90, steps=6).points["P@coupler"]["position"]
     got = rows[2:, 0] + 1j * rows[2:, 1]
@@ -343,7 +343,7 @@ def test_a_weight_column_weighs_the_errors_and_designs_csv_lists_the_designs(tmp
         out = CliRunner().invoke(app, ["synthesize", str(tmp_path / "m.yaml"), "--vary", "r1=1:6", "--vary", "r2=1:6",
                                        "--vary", "r3=1:6", "--vary", "r4=1:6", "--vary", "rcx=-3:3", "--vary",
                                        "rcy=-3:3", "--target", targets, "--point", "P", "--timing", "j1=0",
-                                       "--objective", "sse", "--generations", "20", "--best", "1", "-o",
+                                       "--objective", "sse", "--generations", "3", "--best", "1", "-o",
                                        str(tmp_path / folder)])
         assert out.exit_code == 0, out.output
         sweep = run_sweep(as_model(tmp_path / folder / "best-1.yaml"), by=90, steps=3).points["P@coupler"]["position"]

@@ -1,6 +1,6 @@
-"""The fuzzing campaign (`campaign.py`) in the test suite: 15 generated inputs on every run,
-among them one of each class (each through the command line in its own process), a
-thousand in a deep run.
+"""The fuzzing campaign (`campaign.py`) in the test suite: 7 generated inputs on every run,
+one of each class (each through the command line in its own process, one of them a fresh
+`python -m kinematika`), a thousand in a deep run.
 
 The inputs are drawn from a fixed seed, so every run of the suite, on any day, checks the
 same inputs (a failure names its seed and number: `tests/fuzz/campaign.py --seed S --case N`
@@ -24,9 +24,11 @@ from .cases import CLASSES, case
 from .contract import check_run
 from .forks import run_forked
 
-SEED = 20261128          # the suite's campaign: the same inputs on every run and every day; its
-                         # first 15 hold every class of input
-DEFAULT_COUNT = 15
+SEED = 20261744          # the suite's campaign: the same inputs on every run and every day; its
+                         # first 7 are one of each class of input (the first seed from 20261128
+                         # on whose first 7 are: 20261128 needed 15)
+DEFAULT_COUNT = 7
+DEEP_SEED = 20261128     # the deep run's thousand inputs, as they were
 
 
 def _count() -> int:
@@ -38,18 +40,18 @@ def _count() -> int:
 
 def _seed() -> int:
     raw = os.environ.get("KINEMATIKA_FUZZ_SEED", "")
-    return int(raw) if raw.isdigit() else SEED
+    return int(raw) if raw.isdigit() else DEEP_SEED if DEEP else SEED
 
 
 def test_the_campaign_meets_the_contract():
     count = _count()
-    summary = run(count, _seed(), workers=2, fresh_every=25 if count >= 100 else 10, examples=count >= 1000)
+    summary = run(count, _seed(), workers=2, fresh_every=25 if count >= 100 else min(10, count), examples=count >= 1000)
     print("\n" + summary.report())
     assert not summary.failures, summary.report()
 
 
 def test_every_class_of_input_is_drawn():
-    drawn = {case(0, n).klass for n in range(200)}
+    drawn = {case(0, n).klass for n in range(50)}       # seed 0 meets the last class at input 16
     assert drawn == set(CLASSES)
     # the suite's few inputs are one of each class at least
     assert {case(SEED, n).klass for n in range(DEFAULT_COUNT)} == set(CLASSES)

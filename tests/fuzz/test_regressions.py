@@ -27,6 +27,7 @@ from kinematika.expressions import parse
 from kinematika.text import brief, markup, shown
 
 from core.models import four_bar as core_four_bar
+from tests.conftest import sampled
 from .contract import EXAMPLES, call, check_error, check_run, run_cli
 from .forks import run_forked
 from .mutations import alias_bomb, rename
@@ -209,7 +210,9 @@ def test_a_lone_surrogate_is_refused_not_a_crash(tmp_path):
     check_run(run_forked(["solve", str(path)]))
 
 
-@pytest.mark.parametrize("name", ["[/]", "[bold]x[/bold]", "\x1b]0;owned\x07\x1b[2J", "a\rb"])
+# one name of each kind in a default run (markup, terminal codes); every name in a deep run
+@pytest.mark.parametrize("name", sampled(["[/]", "[bold]x[/bold]", "\x1b]0;owned\x07\x1b[2J", "a\rb"],
+                                         {"[/]", "\x1b]0;owned\x07\x1b[2J"}))
 def test_names_are_printed_as_written_never_as_markup_or_terminal_codes(tmp_path, name):
     tree = rename(four_bar(), "coupler", name + "c")
     tree["name"] = name
@@ -241,7 +244,9 @@ def test_explanations_show_names_with_control_characters_escaped(fmt):
     assert re.search(f"x{slash}x7f{slash}x9b{slash}x0b", text) and re.search(f"c{slash}x1b", text)
 
 
-@pytest.mark.parametrize("name", ["x\ufeff\u202e[/]", "\x7f[bold]", "\x1b]0;owned\x07"])
+# format characters with markup, and terminal codes, in a default run; every name in a deep run
+@pytest.mark.parametrize("name", sampled(["x\ufeff\u202e[/]", "\x7f[bold]", "\x1b]0;owned\x07"],
+                                         {"x\ufeff\u202e[/]", "\x1b]0;owned\x07"}))
 def test_the_assemblies_table_shows_names_as_written(tmp_path, name):
     # found by the campaign: its title was read as rich markup ('[/]': MarkupError) and
     # printed control characters raw

@@ -17,6 +17,7 @@ Every expected number is derived by hand from the geometry, independently of the
 from __future__ import annotations
 
 import csv
+import functools
 import itertools
 import io
 import json
@@ -53,9 +54,15 @@ def _side(p, q, r) -> float:
 SWING = (90.0, math.degrees(math.acos(-2 / 3)))          # the rocker's limits, absolute
 
 
+@functools.cache
+def _rocker_cycle(general: bool):
+    """The rocker-driven crank-rocker's whole cycle, swept once for the tests that read it."""
+    return _sweeper(rocker_driven_tree(rocker_deg=120.0), general).run()
+
+
 @pytest.mark.parametrize("general", [False, True], ids=PATHS)
 def test_a_rocker_driven_crank_rocker_swings_between_its_limits_and_closes_its_cycle(general):
-    result = _sweeper(rocker_driven_tree(rocker_deg=120.0), general).run()
+    result = _rocker_cycle(general)
     low, high = (x - 120.0 for x in SWING)
     # up first (by > 0) to the folded limit, back to the extended one, then up to the drawing
     assert result.limits == pytest.approx([high, low], abs=1e-9)
@@ -78,7 +85,7 @@ def test_a_rocker_driven_crank_rocker_swings_between_its_limits_and_closes_its_c
 
 @pytest.mark.parametrize("general", [False, True], ids=PATHS)
 def test_past_each_limit_the_crank_is_on_the_other_side_and_its_rates_are_the_loop_closures(general):
-    result = _sweeper(rocker_driven_tree(rocker_deg=120.0), general).run()
+    result = _rocker_cycle(general)
     o4 = np.array([4.0, 0.0])
     # the rows of each run: up to the first limit, back to the second, then up again
     runs = np.searchsorted(result.travel, result.limit_travel)

@@ -70,7 +70,12 @@ def test_another_address_is_served_with_a_warning():
 
 
 def test_a_model_that_cannot_be_read_is_refused():
-    done = subprocess.run([sys.executable, "-m", "kinematika", "app", "no_such_model.yaml",
-                           "--no-browser"], cwd=ROOT, capture_output=True, text=True, timeout=60)
-    assert done.returncode == 2
+    """Refused before any server starts: in-process (the command's own code, as a child
+    process runs it; the two tests above run the child process)."""
+    from typer.testing import CliRunner
+
+    from kinematika.cli import app as cli
+
+    done = CliRunner().invoke(cli, ["app", "no_such_model.yaml", "--no-browser"])
+    assert done.exit_code == 2
     assert done.stderr.strip() == "error (syntax): no_such_model.yaml: no such file"
