@@ -28,6 +28,7 @@ from ..errors import KinematikaError, Said, speaking
 from ..languages import LANGS
 from .. import limits
 from .requests import Request, parse_body
+from .warm import warmed
 
 ENDPOINTS = ("solve", "sweep", "simulate", "centres", "explain", "draw", "edit", "assemblies", "exercise",
              "build", "sketch", "convert")
@@ -111,6 +112,7 @@ def create_app(start: Optional[Start] = None, hosts: Optional[list[str]] = None,
                 return await answer(raw)
 
         async def answer(raw: bytes) -> Response:
+            warmed()            # the first request imports the libraries, alone (see web/warm.py)
             try:
                 req = parse_body(endpoint, raw)
                 key = (endpoint, raw)
