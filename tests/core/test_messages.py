@@ -86,7 +86,10 @@ def _said_keys() -> list[tuple[str, int, str]]:
     """Every message a call in the source names: (file, line, key or a key's pattern)."""
     out = []
     for path in sorted(SRC.rglob("*.py")):
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        text = path.read_text(encoding="utf-8")
+        if not any(name in text for name in RAISERS):     # no call to name: nothing to parse
+            continue
+        for node in ast.walk(ast.parse(text)):
             if not isinstance(node, ast.Call):
                 continue
             name = getattr(node.func, "id", None) or getattr(node.func, "attr", None)

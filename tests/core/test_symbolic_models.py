@@ -34,9 +34,31 @@ def sets(*values: dict) -> list:
     return list(values if DEEP else values[:1])
 
 
+def answered(source, *points: str) -> dict:
+    """What `kinematika solve MODEL --symbolic --json` (`commands.solve_data`) shows, in
+    process, of what these tests read: `symbolic`, the answers, the named quantities of
+    `where` and the positions of `points`, each written as the answer writes it, within the
+    command's budget of exact work — without its tables of every point's velocity and
+    acceleration, seconds of formulas no test here reads."""
+    from kinematika.api import prepare, solve
+    from kinematika.budget import exact_work
+    from kinematika.questions import answer
+    from kinematika.report.json_answer import where
+    from kinematika.report.values import plain
+
+    model = prepare(source)
+    with exact_work(model, True):
+        sol = solve(model, True)
+        out = {"symbolic": sol.symbolic,
+               "answers": [{"value": plain(answer(sol, q), True)} for q in model.questions],
+               "points": {ref: {"position": plain(sol.position(ref), True)} for ref in points}}
+        named = where(sol)
+    return out | ({"where": named} if named else {})
+
+
 def shown(name: str) -> dict:
-    """`kinematika solve MODEL --symbolic --json`'s answers, in process."""
-    return solve_data(MODELS / f"{name}.yaml", True)
+    """`kinematika solve MODEL --symbolic --json`'s answers, in process (`answered`)."""
+    return answered(MODELS / f"{name}.yaml")
 
 
 def numbers(value, at: dict):
@@ -197,7 +219,7 @@ def test_textbook_case_with_every_parameter_a_symbol(name):
     at: dict = {}
     for p in model.parameters.values():                 # the cases' parameters are plain values
         at[p.name] = evaluate(p.value, dict(at), Numeric())
-    out = solve_data(path, True)
+    out = answered(path)
     assert out["symbolic"] is True
     expected = derive.expected(name)["answers"]
     names = named(out, at)               # exact numbers: long accelerations in named velocities
@@ -295,7 +317,7 @@ def test_jansen_legs_top_in_its_lengths_answers_with_named_coordinates():
     motion by hand: two circle intersections in a chain, differentiated by mpmath. (The
     whole leg, eight times the work, in a deep run.)"""
     at = {k: JANSEN[k] for k in TOP}
-    out = solve_data(jansen_top(), True)
+    out = answered(jansen_top(), "E@top")
     assert list(out["where"]) == ["x_B", "y_B", "x_E", "y_E"]
     matches_the_leg_by_hand(out, at, "E", "E@top")
 
@@ -308,7 +330,7 @@ def test_jansen_leg_in_its_15_lengths_answers_with_named_coordinates():
     and the names before it, under `where`) and its formulas, evaluated there, are the foot's
     motion by hand: five circle intersections in a chain, differentiated by mpmath."""
     at = JANSEN
-    out = solve_data(ROOT / "examples" / "jansen_leg.yaml", True)
+    out = answered(ROOT / "examples" / "jansen_leg.yaml", "P@foot")
     assert {"x_F", "y_F", "x_P", "y_P"} <= set(out["where"])
     matches_the_leg_by_hand(out, at, "P", "P@foot")
 
@@ -334,7 +356,7 @@ def test_textbook_mechanism_with_long_formulas(name):
     at: dict = {}
     for p in as_model(path).parameters.values():
         at[p.name] = float(evaluate(p.value, dict(at), Numeric()))
-    out = solve_data(path, True)
+    out = answered(path)
     assert out["symbolic"] is True
     names = named(out, at)
     expected = json.loads((TEXTBOOK / f"{name}.expect.json").read_text())["answers"]

@@ -23,9 +23,9 @@ from .artists import label_faults, outside_faults
 
 EXAMPLES = sorted((Path(__file__).parents[2] / "examples").glob("*.yaml"))
 CROWDED = DrawOptions(centres=True, accelerations=True)
-# a crowded figure takes a second or more to lay out: a few random ones by default (the
+# a crowded figure takes a second or more to lay out: two random ones by default (the
 # examples above already draw one of each kind at its own proportions)
-DRAWN = 12 if DEEP else 3
+DRAWN = 12 if DEEP else 2
 
 
 @pytest.mark.parametrize("path", sampled(EXAMPLES, KINDS), ids=lambda p: p.stem)

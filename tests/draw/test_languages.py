@@ -23,7 +23,7 @@ from kinematika.explain.catalogue import catalogue
 from kinematika.explain.document import Drawing, Section
 from kinematika.explain.render.html import HtmlRenderer
 from kinematika.explain.render.svg import embedded
-from tests.conftest import EXAMPLES
+from tests.conftest import EXAMPLES, sampled
 
 FOUR_BAR = EXAMPLES / "four_bar.yaml"
 
@@ -60,7 +60,9 @@ def test_the_four_bar_by_hand_is_what_the_figures_round():
     assert round(hand["I13"], 1) == 23.1
 
 
-@pytest.mark.parametrize("lang", ["es", "ca", "eu"])
+# one comma language (every one in a deep run): the figures in Basque and Catalan are the
+# command line's and the animation's below
+@pytest.mark.parametrize("lang", sampled(["es", "ca", "eu"], {"es"}))
 def test_a_figure_in_a_comma_language_writes_decimal_commas(lang):
     sol = solve(FOUR_BAR)
     shown = texts(svg(sol, centres=True, lang=lang))
