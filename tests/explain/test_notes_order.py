@@ -12,7 +12,7 @@ from kinematika.explain.document import CentreNote, Derived, Equation, Msg, Sect
 
 from tests.conftest import sampled
 
-from .helpers import explained
+from .helpers import explained, num
 
 
 def section(doc, key: str) -> Section:
@@ -294,3 +294,52 @@ def test_a_belt_wheels_centre_comes_from_its_rate(name, body):
     assert keys.index("sec.velocities") < keys.index("sec.centres")
     notes = [b for b in blocks(section(doc, "sec.centres")) if isinstance(b, CentreNote)]
     assert [(n.how, set(n.pair)) for n in notes] == [("rate", {sol.model.frame, body})]
+
+
+# -- what nobody asks is not worked out ----------------------------------------------------------------------------
+def _meet(p1, d1, p2, d2):
+    """Where the lines p1 + t d1 and p2 + u d2 cross (by hand: Cramer's rule)."""
+    det = d1[0] * (-d2[1]) - d1[1] * (-d2[0])
+    rx, ry = p2[0] - p1[0], p2[1] - p1[1]
+    t = (rx * (-d2[1]) - ry * (-d2[0])) / det
+    return (p1[0] + t * d1[0], p1[1] + t * d1[1])
+
+
+def test_a_rate_nobody_asks_is_not_worked_out():
+    """C5-1.2 asks the centres of OQ, OJ and the left wheel, ω of OJ and v_J: the notes place
+    OQ's centre where the normals to the planes through the wheels' centres meet, and never
+    work out how fast the wheels turn. No equation turns with a wheel, no ω of a wheel is read
+    off anything, the rates' table and the step's title leave the wheels out; what is asked
+    equals the construction by hand: O and Q at r along the planes' normals from contacts
+    s = 2 from the corner, I_OQ where the normals meet, I_OJ on the line I_OQ–O and the
+    vertical through J = (−5, 2), ω_OJ = ω_OQ·|I_OQ O| / |I_OJ O| turned the other way
+    (O lies between the two centres), v_J = ω_OJ × I_OJ J."""
+    import math
+
+    sol, doc = explained("seed_c5_1_2_bar_on_inclined_wheels")
+    velocities = blocks(section(doc, "sec.velocities"))
+    for eq in (b for b in velocities if isinstance(b, Equation)):
+        assert not turning_bodies(eq) & {"wheel1", "wheel2"}, eq.target.sym
+    assert not [d for d in doc.derived() if d.body in ("wheel1", "wheel2")]
+    summary = next(s for s in doc.sections if s.title.key.startswith("sec.rates_summary"))
+    table = next(b for b in summary.blocks if hasattr(b, "rows"))
+    assert [r[0].text for r in table.rows] == ["plane1", "plane2", "OQ", "OJ"]
+    step = next(s for s in steps(doc) if "OQ" in [n.text for n in s.title.args["bodies"].items])
+    assert [n.text for n in step.title.args["bodies"].items] == ["OQ"]
+    # by hand
+    c30, s30, c45 = math.sqrt(3) / 2, 0.5, math.sqrt(2) / 2
+    k1, k2 = (-2 * c30, 2 * s30), (2 * c45, 2 * c45)
+    n1, n2 = (s30, c30), (-c45, c45)                      # the planes' normals, upwards
+    o = (k1[0] + n1[0], k1[1] + n1[1])
+    i16 = _meet(k1, n1, k2, n2)
+    i17 = _meet(i16, (o[0] - i16[0], o[1] - i16[1]), (-5.0, 2.0), (0.0, 1.0))
+    w7 = -1.0 * math.dist(i16, o) / math.dist(i17, o)
+    v_j = (-w7 * (2.0 - i17[1]), 0.0)
+    rate = next(d for d in doc.derived() if d.body == "OJ" and d.kind == "omega")
+    assert math.isclose(num(sol, rate.value.value), w7, rel_tol=1e-9)
+    eq = next(b for b in velocities if isinstance(b, Equation) and b.target.sym.sub.startswith("J"))
+    assert all(math.isclose(a, b, abs_tol=1e-9) for a, b in zip(num(sol, eq.target.value), v_j))
+    centres = {frozenset(n.pair): n for n in blocks(section(doc, "sec.centres")) if isinstance(n, CentreNote)}
+    for body, hand in (("OQ", i16), ("OJ", i17)):
+        got = centres[frozenset((sol.model.frame, body))].value
+        assert all(math.isclose(num(sol, a), b, abs_tol=1e-9) for a, b in zip(got["point"], hand)), (body, got)
