@@ -238,8 +238,10 @@ def test_a_slider_given_on_a_fixed_guide_needs_no_equation():
 
 
 def test_no_slip_between_moving_bodies_is_a_sentence():
-    """C5-1.5: the block leaves the last pulley at the pulley's speed; no slip says so in
-    the contact's sentence (v_J10∈9 = v_J10∈8), never as an equation of one term."""
+    """C5-1.5: each strand takes the speed of the pulley before it at their contact ("aquesta
+    velocitat es transmet a tots els punts del segon tram": j2, j5, j7), and the block leaves
+    the last pulley at the pulley's speed (j10); no slip says so in the contact's sentence
+    (v_J10∈9 = v_J10∈8), never as an equation of one term."""
     sol, doc = explained("seed_c5_1_5_pulley_block")
     velocities = blocks(section(doc, "sec.velocities"))
     for eq in (b for b in velocities if isinstance(b, Equation)):
@@ -248,7 +250,7 @@ def test_no_slip_between_moving_bodies_is_a_sentence():
             assert not (one and "∈" in side[0].sym.sub and "∈" in eq.target.sym.sub
                         and side[0].sym.sub.split("∈")[0] == eq.target.sym.sub.split("∈")[0]), eq.target.sym
     said = [b for b in velocities if isinstance(b, Msg) and b.key == "rolling.same"]
-    assert [m.args["joint"].text for m in said] == ["j10"]
+    assert [m.args["joint"].text for m in said] == ["j2", "j5", "j7", "j10"]
 
 
 # the articulated bar by default, both in a deep run (the same remark after the same zero)
@@ -343,3 +345,44 @@ def test_a_rate_nobody_asks_is_not_worked_out():
     for body, hand in (("OQ", i16), ("OJ", i17)):
         got = centres[frozenset((sol.model.frame, body))].value
         assert all(math.isclose(num(sol, a), b, abs_tol=1e-9) for a, b in zip(got["point"], hand)), (body, got)
+
+
+def test_a_strand_between_two_pulleys_translates_at_once():
+    """C5-1.5: "en no haver-hi moviment pendular" the notes take every strand as translating
+    and carry the velocity along it (↓2v over strand 2, ↑2v over strand 3), then turn each
+    pulley about its axle. The explanation says ω = 0 of each strand before any equation
+    (it is tangent to two pulleys whose centres move alike across it), no equation turns
+    with a strand, and each pulley's ω is read off an equation where it is the one rate unknown. By hand
+    (y up, pulleys of radius r side by side, v_C1 = ↓v, v_C3 = ↓2v): pulley 1 turns about its
+    contact with the tied strand, ω_1 = −v/r, so its right side moves ↓2v; strand 2 carries
+    it to pulley 2's left side, ω_2 = 2v/r (axle fixed), right side ↑2v; strand 3 to pulley
+    3's left side: ↑2v = ↓2v + ω_3 r, ω_3 = −4v/r; its right side ↓2v − 4v = ↓6v; pulley 4,
+    ω_4 = 6v/r, sends the block up at 6v."""
+    import sympy
+
+    sol, doc = explained("seed_c5_1_5_pulley_block")
+    velocities = blocks(section(doc, "sec.velocities"))
+    strands = ["strand2", "strand3", "strand4"]
+    said = [i for i, b in enumerate(velocities) if isinstance(b, Derived) and b.body in strands]
+    assert [velocities[i].body for i in said] == strands
+    assert all(velocities[i].remark.key == "how.tangent" for i in said)
+    for eq in (b for b in velocities if isinstance(b, Equation)):
+        turning = {t.how[0].sub for side in eq.sides for t in side
+                   if t.kind == "rotation" and t.how and getattr(t.how[0], "base", "") == "ω"}
+        assert not turning & set(strands), eq.target.sym
+    r, v = sympy.symbols("r v", positive=True)
+    hand = {"pulley1": -v / r, "pulley2": 2 * v / r, "pulley3": -4 * v / r, "pulley4": 6 * v / r}
+    env = {}
+    for body, rate in hand.items():
+        d = next(b for b in velocities if isinstance(b, Derived) and b.body == body and b.kind == "omega")
+        assert d.source is not None and sum(t.unknown and t.kind == "rotation" for e in velocities
+                                            if isinstance(e, Equation)
+                                            and any(t is d.source for s in e.sides for t in s)
+                                            for s in e.sides for t in s) == 1, body
+        env.update({str(x): x for x in getattr(d.value.value, "free_symbols", ())})
+        got = sympy.sympify(d.value.value).subs({env.get("r", r): r, env.get("v", v): v})
+        assert sympy.simplify(got - rate) == 0, body
+    for point, vy in (("T2", -2 * v), ("K", 6 * v)):
+        eq = next(b for b in velocities if isinstance(b, Equation) and b.target.sym.sub == point)
+        got = sympy.sympify(eq.target.value[1]).subs({env.get("r", r): r, env.get("v", v): v})
+        assert sympy.simplify(got - vy) == 0 and eq.target.value[0] == 0, point

@@ -103,6 +103,17 @@ class Still:
 
 
 @dataclass
+class Tangent:
+    """`body`, a line, rolls on two circles whose centres `centres` are known and move alike
+    across it: it stays tangent to both, so it does not turn (C5-1.5's strands: "en no
+    haver-hi moviment pendular")."""
+
+    body: str
+    circles: tuple
+    centres: tuple
+
+
+@dataclass
 class Same:
     """ω (α) of `body` from `other`'s: a weld, a prismatic pair, a driven pin or ω driver."""
 
@@ -129,6 +140,8 @@ class Planner:
         self.used: list[str] = []                   # joints written, in order
         self.still: dict[str, tuple[Joint, str]] = {}   # label of a contact at rest -> (joint, fixed body)
         self.centred: dict[str, tuple[str, str]] = {}     # at accelerations: joint -> (wheel, its centre)
+        self.centred_steps = centres                # planning a step's equations (not the order's groups)
+        self.tangent: set[str] = set()              # lines found not to turn (`_tangents`)
         self._labels: dict[Site, str] = {}
         self.sites = {b: self._sites(b) for b in ctx.model.bodies}
         for b in self.determined:
@@ -388,9 +401,15 @@ class Planner:
         order = {id(p): i for i, p in enumerate(found)}
         def key(p: Path) -> tuple:      # a rotation about a point at rest finds ω alone, as the notes do
             rest = self._from_rest(p)
-            return (not p.finds, len(p.routes), self._off_centre(p), -self._via_centre(p), not rest, p.turns,
+            return (self._across_tangent(p), not p.finds, len(p.routes), self._off_centre(p), -self._via_centre(p), not rest, p.turns,
                     p.unknowns if rest else -p.unknowns, self._against(p), -self._end_rank(p), order[id(p)])
         return min(found, key=key)
+
+    def _across_tangent(self, p: Path) -> int:
+        """How many times the equation turns with a line found not to turn (`_tangents`):
+        the notes carry a velocity along the strand as it is (its points move alike) and
+        write the pulley's rotation from there, one body at a time."""
+        return sum(1 for r in p.routes for g in r.segs if g.kind == "turn" and g.body in self.tangent)
 
     def _via_centre(self, p: Path) -> int:
         """How many times the equation goes from a fixed body into a wheel and on to its
@@ -510,10 +529,45 @@ class Planner:
                         self.still[label] = (j, fixed)
                         self._use([j.id])
 
+    def _tangents(self) -> None:
+        """A line rolling on two circles (a strand of cable between two pulleys) keeps its
+        distance r from both centres C_a, C_b: the components of v_Ca and v_Cb across the line
+        differ by ω_line times the distance between its two contacts. With both centres known
+        and moving alike across it (the pulleys' axles fixed, or hanging in the cable), the
+        line does not turn: it translates, as the notes take each strand (C5-1.5). Said at
+        velocities, in the steps (the order of solution is the block-triangular one)."""
+        if self.level != "v" or not self.centred_steps:
+            return
+        ctx = self.ctx
+        for body in self.group:
+            if body in self.rates:
+                continue
+            held = []
+            for j in ctx.model.joints:
+                contact = ctx.sol.geometry(j.id).contact if rolls(j) else None
+                if contact is None or contact.kind != "circle-line" or contact.line_body != body:
+                    continue
+                (circle, c), = contact.centres
+                from .contacts import centre_name
+
+                name = centre_name(ctx, circle, c)
+                if name in ctx.model.bodies[circle].points and self.label(Site(name, circle)) in self.full:
+                    held.append((circle, name, contact))
+            if len(held) < 2 or not ctx.is_zero(ctx.omega(body), "rate"):
+                continue
+            (a, ca, first), (b, cb, second) = held[:2]
+            n = first.normal
+            across = sum(x * (u - w) for x, u, w in zip(n, ctx.vel(a, ca), ctx.vel(b, cb)))
+            if ctx.is_zero(across, "speed") and self.apart(ctx.contact(first.joint), ctx.contact(second.joint)):
+                self.rates.add(body)
+                self.tangent.add(body)
+                self.events.append(Tangent(body, (a, b), (ca, cb)))
+
     def _propagate(self) -> None:
         """What follows at once: shared rates, bodies with a known point and ω, and the
         contact points at rest of bodies rolling on fixed ones."""
         self._still_contacts()
+        self._tangents()
         changed = True
         while changed:
             changed = False
@@ -622,6 +676,9 @@ class Writer:
         reads (ω or α), and each rate carried from another body."""
         out: list = []
         for ev in self.plan.events:
+            if isinstance(ev, Tangent):
+                out.append(self.tangent(ev))
+                continue
             out += self.path(ev) if isinstance(ev, Path) else [self.still(ev)] if isinstance(ev, Still) \
                 else [self.same(ev)]
         return out
@@ -896,6 +953,13 @@ class Writer:
         centre = Sym("I", f"{ctx.frame},{s.body}", vector=False)
         return Derived(omega_sym(s.body), [], ctx.value(ctx.omega(s.body), "rate"), s.body, "omega", False,
                        remark=msg("how.centre_infinity", centre=centre))
+
+    def tangent(self, t: Tangent) -> Derived:
+        """ω = 0 of a line tangent to two circles whose centres move alike across it."""
+        ctx = self.ctx
+        return Derived(omega_sym(t.body), [], ctx.value(ctx.omega(t.body), "rate"), t.body, "omega", False,
+                       remark=msg("how.tangent", a=body_name(t.circles[0]), b=body_name(t.circles[1]),
+                                  ca=point_name(t.centres[0]), cb=point_name(t.centres[1])))
 
     def same(self, s: Same) -> Derived:
         """ω (α) shared across a weld or a prismatic pair, or through a driven joint."""

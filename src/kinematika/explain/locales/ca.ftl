@@ -507,6 +507,7 @@ centre-rate = a partir de la velocitat angular trobada més amunt a través { EL
 centre-check = Comprovació amb les velocitats trobades: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
+how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
 centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte

@@ -303,6 +303,7 @@ centre-rate = from the angular velocity found above through { $line }: 0 = { $v 
 centre-check = Check with the velocities found above: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
+how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
 centre-site_i = The instant centre { $centre } of { $body } relative to { $frame }, placed above, has no velocity: { $sym } = 0.
 sec-contact = Contact points

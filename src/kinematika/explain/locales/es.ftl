@@ -330,6 +330,7 @@ centre-rate = a partir de la velocidad angular hallada arriba a través de { $li
 centre-check = Comprobación con las velocidades halladas: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
+how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
 centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto

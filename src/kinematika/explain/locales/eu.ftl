@@ -303,6 +303,7 @@ centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarreti
 centre-check = Egiaztapena aurkitutako abiadurekin: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
+how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiadura bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
 centre-site_i = { $body } solidoaren { $centre } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
