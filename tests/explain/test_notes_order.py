@@ -386,3 +386,97 @@ def test_a_strand_between_two_pulleys_translates_at_once():
         eq = next(b for b in velocities if isinstance(b, Equation) and b.target.sym.sub == point)
         got = sympy.sympify(eq.target.value[1]).subs({env.get("r", r): r, env.get("v", v): v})
         assert sympy.simplify(got - vy) == 0 and eq.target.value[0] == 0, point
+
+
+@pytest.mark.parametrize("name,wheel,known,holder", [
+    ("seed_c5_e4_upper_wheel", "upper", "wheel1", "chassis"),      # C5-E.4: α = v̇/R of the upper wheel
+    ("seed_c5_e5_unequal_wheels", "wheel1", "wheelR", "chassis"),  # C5-E.5: wheel 1 on wheel R, seen from the chassis
+])
+def test_wheels_on_one_carrier_are_accelerated_by_their_rates(name, wheel, known, holder):
+    """Two moving wheels rolling on each other, both axles on one body: seen from it they
+    are a pair of gears at every instant, ρ_a ω_a/K = ∓ρ_b ω_b/K, so the notes differentiate
+    the relation of the rates (C5-E.4: "α = v̇/R") and never go through the contact's
+    geometric point: at accelerations the wheel's α is said by that relation before any
+    equation, and no geometric point nor contact term is written."""
+    _, doc = explained(name)
+    accel = blocks(section(doc, "sec.accelerations"))
+    said = [i for i, b in enumerate(accel) if isinstance(b, Msg) and b.key in ("pair.relation", "drive.relation_a")]
+    assert len(said) == 1
+    m = accel[said[0]]
+    if m.key == "pair.relation":            # said here first (the velocities turned the wheel about its centre)
+        assert (m.args["a"].text, m.args["b"].text, m.args["holder"].text) == (known, wheel, holder)
+    else:                                   # said at velocities, differentiated here
+        first = [b for b in blocks(section(doc, "sec.velocities")) if isinstance(b, Msg) and b.key == "pair.relation_v"]
+        assert [(b.args["a"].text, b.args["b"].text, b.args["holder"].text) for b in first] == [(known, wheel, holder)]
+    rate = next(i for i, b in enumerate(accel) if isinstance(b, Derived) and b.body == wheel and b.kind == "alpha")
+    assert rate > said[0] and accel[rate].how[0].sub == f"{wheel}/{holder}"
+    for b in accel:
+        if isinstance(b, Msg):
+            assert not b.key.startswith(("geom.", "rolling.kept")), b.key
+        if isinstance(b, Equation):
+            assert not any(t.kind == "contact" or "geom" in t.sym.sup for side in b.sides for t in side), b.target.sym
+
+
+def test_the_upper_wheels_top_by_hand():
+    """C5-E.4 by hand (x to the right, y up): the chassis translates with a_U = (−v̇, 0); the
+    upper wheel turns at ω = −v/R (clockwise, about its top P) at every instant, so
+    α = −v̇/R; P = U + R ŷ: a_P = a_U − ω² R ŷ + α ẑ × R ŷ = (−v̇, 0) + (0, −v²/R) + (v̇, 0)
+    = (0, −v²/R), the notes' ↓v²/R."""
+    import sympy
+
+    sol, doc = explained("seed_c5_e4_upper_wheel")
+    accel = blocks(section(doc, "sec.accelerations"))
+    d = next(b for b in accel if isinstance(b, Derived) and b.body == "upper" and b.kind == "alpha")
+    env = {str(x): x for x in sympy.sympify(d.value.value).free_symbols}
+    R, vd = env["R"], env["vd"]
+    assert sympy.simplify(d.value.value + vd / R) == 0
+    eq = next(b for b in accel if isinstance(b, Equation) and b.target.sym.sub == "P")
+    v = next(x for x in sympy.sympify(eq.target.value[1]).free_symbols if x.name == "v")
+    assert sympy.simplify(eq.target.value[0]) == 0 and sympy.simplify(eq.target.value[1] + v ** 2 / R) == 0
+
+
+def test_wheel_one_is_composed_relative_to_the_chassis():
+    """C5-E.5: "l'anàlisi cinemàtica de la roda petita respecte del xassís és immediata, i una
+    composició de moviments permet obtenir-la respecte del terra", then 0 = v_C + Ω × CI gives
+    d = r1. Seen from the chassis (axles fixed) wheel R and wheel 1 are gears: ω_1/c =
+    −(R/r1) ω_R/c; with ω_R = −v/R (it rolls on the ground, moving right) and ω_c = 0,
+    ω_1 = ω_1/c + ω_c = v/r1 (counter-clockwise, the notes' ⊙ v/r1); its centre
+    I = C + (0, d) with 0 = v + (v/r1)·(−d): d = r1, its top point. No equation crosses the
+    contact between the wheels at velocities."""
+    import sympy
+
+    sol, doc = explained("seed_c5_e5_unequal_wheels")
+    velocities = blocks(section(doc, "sec.velocities"))
+    assert [b.args["b"].text for b in velocities if isinstance(b, Msg) and b.key == "pair.relation_v"] == ["wheel1"]
+    w1 = next(b for b in velocities if isinstance(b, Derived) and b.body == "wheel1")
+    assert [getattr(x, "sub", x) for x in w1.how] == ["wheel1/chassis", " + ", "chassis"]
+    env = {str(x): x for x in sympy.sympify(w1.value.value).free_symbols}
+    v, r1 = env["v"], next(x for n, x in env.items() if n.startswith("r"))
+    assert sympy.simplify(w1.value.value - v / r1) == 0
+    for eq in (b for b in velocities if isinstance(b, Equation)):
+        assert not any("J6" in t.sym.sub for t in [eq.target] + [t for side in eq.sides for t in side]), eq.target.sym
+    note = next(n for n in blocks(section(doc, "sec.centres")) if isinstance(n, CentreNote) and "wheel1" in n.pair)
+    assert note.how == "rate" and note.via == ["wheelR"]
+    (q, _), = note.witnesses
+    assert q == "D" and sympy.simplify(note.arm[0]) == 0 and sympy.simplify(note.arm[1] - r1) == 0
+
+
+def test_a_chassis_on_two_wheels_on_one_line_slides_along_it():
+    """C5-E.4: "el xassís té un moviment de translació": its pins A1 and A2 are the centres of
+    wheels rolling on the flat ground, both at height R, so both run on one horizontal line
+    and the chassis slides along it at every instant: α = 0 said before any equation (never a
+    three-sided equation for it), no equation turns with it at accelerations, and the left
+    wheel's α follows from a_A1 = a_U: by hand (−v̇, 0) = α ẑ × (R ŷ) = (−α R, 0), α = v̇/R."""
+    import sympy
+
+    _, doc = explained("seed_c5_e4_upper_wheel")
+    accel = blocks(section(doc, "sec.accelerations"))
+    first = next(i for i, b in enumerate(accel) if isinstance(b, Derived) and b.body == "chassis")
+    assert accel[first].remark.key == "how.glides" and not accel[first].how
+    assert {accel[first].remark.args["p"].text, accel[first].remark.args["q"].text} == {"A1", "A2"}
+    assert not any(isinstance(b, Equation) for b in accel[:first])
+    for eq in (b for b in accel if isinstance(b, Equation)):
+        assert not any(t.how and getattr(t.how[0], "sub", "") == "chassis" for side in eq.sides for t in side)
+    d = next(b for b in accel if isinstance(b, Derived) and b.body == "wheel1" and b.kind == "alpha")
+    env = {str(x): x for x in sympy.sympify(d.value.value).free_symbols}
+    assert sympy.simplify(d.value.value - env["vd"] / env["R"]) == 0

@@ -37,7 +37,7 @@ from .document import (Ann, Derived, Equation, Msg, Sym, Term, Value, body as bo
                        point as point_name)
 from .order import jointed
 from .contacts import geometric_blocks
-from .drives import drive_blocks
+from .drives import drive_blocks, pair_blocks
 from .kinds import (crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls, same_rate,
                     slider, welds)
 from .terms import contact_term, point_term, rotation_terms, slide_terms
@@ -103,6 +103,17 @@ class Still:
 
 
 @dataclass
+class Glides:
+    """`body` carries the centres p and q of two wheels rolling on fixed straight profiles,
+    all along one line: both centres run on that line at every instant, so the body slides
+    along it and does not turn (α = 0 at accelerations, C5-E.4's chassis)."""
+
+    body: str
+    p: str
+    q: str
+
+
+@dataclass
 class Tangent:
     """`body`, a line, rolls on two circles whose centres `centres` are known and move alike
     across it: it stays tangent to both, so it does not turn (C5-1.5's strands: "en no
@@ -143,6 +154,7 @@ class Planner:
         self.centred_steps = centres                # planning a step's equations (not the order's groups)
         self.tangent: set[str] = set()              # lines found not to turn (`_tangents`)
         self._labels: dict[Site, str] = {}
+        self.gliding: set[str] = set()              # bodies that translate: their turns add no term
         self.sites = {b: self._sites(b) for b in ctx.model.bodies}
         for b in self.determined:
             self.full.update(self.label(s) for s in self.sites[b])
@@ -150,6 +162,7 @@ class Planner:
             self._centres()
         if level == "a":
             self._centred()
+            self._glides()
         self._given()
         self._propagate()
 
@@ -170,6 +183,35 @@ class Planner:
                 if centre is not None and Site(centre, body) in self.sites[body]:
                     self.centred[j.id] = (body, centre)
 
+    def _glides(self) -> None:
+        """At accelerations, a body pinned at the centres of two wheels that roll on fixed
+        straight profiles, the two centres on one line along the profiles: each centre runs on
+        that line (it keeps its distance from its profile), so the body slides along it at
+        every instant and α = 0 — the notes' "el xassís té un moviment de translació", said,
+        not solved from a three-sided equation."""
+        ctx, group = self.ctx, set(self.group)
+        straight = []
+        for jid, (wheel, centre) in self.centred.items():
+            j = ctx.model.joint(jid)
+            fixed = j.a if j.b == wheel else j.b
+            contact = ctx.sol.geometry(jid).contact
+            if path_origin(ctx, j, fixed) is None and contact.kind == "circle-line":
+                straight.append((centre, ctx.num(tuple(contact.normal))))
+        for body in self.group:
+            if body in self.rates or body not in group:
+                continue
+            held = [(c, n) for c, n in straight if c in ctx.model.bodies[body].points]
+            if len(held) < 2:
+                continue
+            (p, n1), (q, n2) = held[:2]
+            a, b = ctx.num(ctx.pos(p)), ctx.num(ctx.pos(q))
+            across = abs(n1[0] * n2[1] - n1[1] * n2[0]) + abs((b[0] - a[0]) * n1[0] + (b[1] - a[1]) * n1[1])
+            if across <= 1e-9 * ctx.inst.scale and self.apart(p, q) is not None \
+                    and ctx.is_zero(ctx.alpha(body), "rate2") and ctx.is_zero(ctx.omega(body), "rate"):
+                self.rates.add(body)
+                self.gliding.add(body)
+                self.events.append(Glides(body, p, q))
+
     def _centres(self) -> None:
         """The instant centres placed before the velocities (`centres.centre_sites`): each a
         point of its body with zero velocity, where routes may start (v_A = v_I14 + ω × I14-A,
@@ -184,6 +226,7 @@ class Planner:
         for body in self.ctx.translating:
             if body in group and body not in self.rates:
                 self.rates.add(body)
+                self.gliding.add(body)      # it translates: its points move alike, no ω × r is written
                 self.events.append(Still(body))
 
     # what is known -------------------------------------------------------------------------
@@ -679,6 +722,9 @@ class Writer:
             if isinstance(ev, Tangent):
                 out.append(self.tangent(ev))
                 continue
+            if isinstance(ev, Glides):
+                out.append(self.glides(ev))
+                continue
             out += self.path(ev) if isinstance(ev, Path) else [self.still(ev)] if isinstance(ev, Still) \
                 else [self.same(ev)]
         return out
@@ -705,6 +751,7 @@ class Writer:
                 if seg.joint is not None:
                     if self._centred(r, i):
                         out += self.path_said(seg.joint, seg.body, r.segs[i + 1].p)
+                        contacts.append(ctx.contact(seg.joint))     # the sentence goes with the equation
                         continue
                     out += self.condition(seg.joint, Site(seg.p, seg.body))
                     if rolls(seg.joint):
@@ -933,8 +980,8 @@ class Writer:
         accelerations); a pin adds nothing."""
         ctx, lv = self.ctx, self.level
         if seg.kind == "turn":
-            if self.plan.apart(seg.q, seg.p) is None:
-                return []
+            if self.plan.apart(seg.q, seg.p) is None or seg.body in self.plan.gliding:
+                return []               # a body that slides along a line moves its points alike
             return rotation_terms(ctx, lv, seg.body, seg.q, seg.p, not known and seg.body not in p.rates)
         j = seg.joint
         if rolls(j):
@@ -953,6 +1000,12 @@ class Writer:
         centre = Sym("I", f"{ctx.frame},{s.body}", vector=False)
         return Derived(omega_sym(s.body), [], ctx.value(ctx.omega(s.body), "rate"), s.body, "omega", False,
                        remark=msg("how.centre_infinity", centre=centre))
+
+    def glides(self, g: Glides) -> Derived:
+        """α = 0 of a body sliding along the line of two wheels' centres."""
+        ctx = self.ctx
+        return Derived(alpha_sym(g.body), [], ctx.value(ctx.alpha(g.body), "rate2"), g.body, "alpha", False,
+                       remark=msg("how.glides", p=point_name(g.p), q=point_name(g.q), line=point_name(str(segment(g.p, g.q)))))
 
     def tangent(self, t: Tangent) -> Derived:
         """ω = 0 of a line tangent to two circles whose centres move alike across it."""
@@ -1041,6 +1094,8 @@ def group_blocks(ps, step) -> Optional[list]:
     belt or chain drive whose carrier and one wheel are known gives the other wheel's rate
     first, as the notes find it (`drives`); the planner then knows those rates."""
     given, rates = drive_blocks(ps.ctx, step.bodies, set(ps.known), ps.level)
+    geared, more = pair_blocks(ps.ctx, [b for b in step.bodies if b not in rates], set(ps.known), ps.level)
+    given, rates = given + geared, rates | more
     plan = Planner(ps.ctx, step.bodies, set(ps.known), ps.level, rates, centres=True)
     if not plan.run():
         return None

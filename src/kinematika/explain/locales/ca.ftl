@@ -508,6 +508,7 @@ centre-check = Comprovació amb les velocitats trobades: 0 = { $v } + { $w } × 
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
+how-glides = ({ $p } i { $q } recorren a cada instant la recta { $line }: llisca al llarg d’ella i no gira)
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
 centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte
@@ -559,6 +560,14 @@ how-translates = (es trasllada respecte { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     })
+pair-relation_v = Vistos des { ELISION($holder) ->
+        [vowel] d’{ $holder }
+       *[other] de { $holder }
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen l’un sobre l’altre (enllaç { $joint }), de manera que { $equation } (amb { $radii }):
+pair-relation = Vistos des { ELISION($holder) ->
+        [vowel] d’{ $holder }
+       *[other] de { $holder }
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen l’un sobre l’altre (enllaç { $joint }), de manera que { $equation } a cada instant; derivant, amb els radis constants, { $derived } (amb { $radii }):
 drive-relation_a = Derivant, amb els radis constants: { $equation } (amb { $radii }):
 drive-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }

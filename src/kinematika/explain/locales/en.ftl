@@ -304,6 +304,7 @@ centre-check = Check with the velocities found above: 0 = { $v } + { $w } × { $
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)
+how-glides = ({ $p } and { $q } both run on the line { $line } at every instant: it slides along it and does not turn)
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
 centre-site_i = The instant centre { $centre } of { $body } relative to { $frame }, placed above, has no velocity: { $sym } = 0.
 sec-contact = Contact points
@@ -334,6 +335,8 @@ sec-checks = Checks
 check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } carries), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.
 check-belt = Seen from { $holder }, which carries both axles, { $line } does not slip on { $a } nor on { $b }: { $equation }, so { $ratio }; with the angular velocities found above, { $values }: they agree.
 how-translates = (it translates relative to { $body })
+pair-relation_v = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other (joint { $joint }), so { $equation } (with { $radii }):
+pair-relation = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other (joint { $joint }), so { $equation } at every instant; differentiating, with the radii constant, { $derived } (with { $radii }):
 drive-relation_a = Differentiating, with the radii constant: { $equation } (with { $radii }):
 drive-relation = Seen from { $holder }, which carries both axles, the axles are fixed and { $line } translates: it does not slip on { $a } nor on { $b }, so both move it at one speed, { $equation } (with { $radii }):
 check-train = The train’s ratio is the product of its stages’: { $ratio }; with the angular velocities found above, the ratio is { $value }.

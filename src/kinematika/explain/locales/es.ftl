@@ -331,6 +331,7 @@ centre-check = Comprobación con las velocidades halladas: 0 = { $v } + { $w } �
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)
+how-glides = ({ $p } y { $q } recorren en todo instante la recta { $line }: desliza a lo largo de ella y no gira)
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
 centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto
@@ -361,6 +362,8 @@ sec-checks = Comprobaciones
 check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes lleva { $carrier }), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
 check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas, { $values }: coinciden.
 how-translates = (se traslada respecto de { $body })
+pair-relation_v = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí (par { $joint }), de modo que { $equation } (con { $radii }):
+pair-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí (par { $joint }), de modo que { $equation } en todo instante; derivando, con los radios constantes, { $derived } (con { $radii }):
 drive-relation_a = Derivando, con los radios constantes: { $equation } (con { $radii }):
 drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos y { $line } se traslada: no desliza sobre { $a } ni sobre { $b }, así que ambos la mueven con la misma velocidad, { $equation } (con { $radii }):
 check-train = La relación de la transmisión es el producto de las de sus etapas: { $ratio }; con las velocidades angulares halladas, la relación vale { $value }.
