@@ -406,6 +406,10 @@ composition-pin = { $point } és el passador de l’enllaç { $joint }, punt de 
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)
 vehicle-line-velocity = la perpendicular a { $sym } pel punt { $point }
+vehicle-equiprojective = Per la propietat d’equiprojectivitat ({ $q } i { $p } són punts { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }), les seves velocitats tenen la mateixa component segons { $seg }: { $vp } · { $seg } = { $vq } · { $seg }. { $p } és a l’eix de la roda { $joint }, de manera que { $vp } té la direcció del pla de la roda: { $vp } = { $value }, de mòdul { $speed }.
 vehicle-centre = El CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
