@@ -156,7 +156,7 @@ def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
     if len(lines) >= 2 and ctx.is_zero(ctx.omega(b), "rate"):
         return [msg("vehicle.translation", body=Name(b, "body"), point=Name(witness)),
                 Derived(omega_sym(b), [], ctx.value(ctx.omega(b), "rate"), b, "omega", False,
-                        remark=msg("how.translation"))]
+                        remark=msg("how.translation"))] + _carried(ctx, b, witness)
     return None
 
 
@@ -219,6 +219,19 @@ def _magnitude(ctx: Ctx, v: tuple):
 
         return sympy.simplify(sympy.sqrt(sympy.expand(v[0] ** 2 + v[1] ** 2)))
     return _size(v)
+
+
+def _carried(ctx: Ctx, b: str, witness: str) -> list:
+    """v_P = v_W of each pin b shares with another body (C5-2.2's O: "la velocitat del punt
+    d'articulació O també és rω"): a translating body moves its points alike."""
+    value = ctx.clean(ctx.vel(b, witness), "speed")
+    out = []
+    for p in ctx.model.bodies[b].points:
+        if p != witness and len(ctx.model.carriers(p)) > 1:
+            target = Term(Sym("v", ctx.point_label(p, b)), value, Ann("?"), Ann("?"), unknown=True, kind="point")
+            side = Term(Sym("v", ctx.point_label(witness, b)), value, Ann("M"), Ann("D"), kind="point")
+            out.append(Equation(target, [[side]], "v", ctx.ref(p, b), figure=False))
+    return out
 
 
 def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speeds: Optional[dict] = None) -> list:
