@@ -12,7 +12,7 @@ from kinematika.explain.document import CentreNote, Derived, Equation, Msg, Sect
 
 from tests.conftest import sampled
 
-from .helpers import explained
+from .helpers import explained, num
 
 
 def section(doc, key: str) -> Section:
@@ -238,8 +238,10 @@ def test_a_slider_given_on_a_fixed_guide_needs_no_equation():
 
 
 def test_no_slip_between_moving_bodies_is_a_sentence():
-    """C5-1.5: the block leaves the last pulley at the pulley's speed; no slip says so in
-    the contact's sentence (v_J10∈9 = v_J10∈8), never as an equation of one term."""
+    """C5-1.5: each strand takes the speed of the pulley before it at their contact ("aquesta
+    velocitat es transmet a tots els punts del segon tram": j2, j5, j7), and the block leaves
+    the last pulley at the pulley's speed (j10); no slip says so in the contact's sentence
+    (v_J10∈9 = v_J10∈8), never as an equation of one term."""
     sol, doc = explained("seed_c5_1_5_pulley_block")
     velocities = blocks(section(doc, "sec.velocities"))
     for eq in (b for b in velocities if isinstance(b, Equation)):
@@ -248,7 +250,7 @@ def test_no_slip_between_moving_bodies_is_a_sentence():
             assert not (one and "∈" in side[0].sym.sub and "∈" in eq.target.sym.sub
                         and side[0].sym.sub.split("∈")[0] == eq.target.sym.sub.split("∈")[0]), eq.target.sym
     said = [b for b in velocities if isinstance(b, Msg) and b.key == "rolling.same"]
-    assert [m.args["joint"].text for m in said] == ["j10"]
+    assert [m.args["joint"].text for m in said] == ["j2", "j5", "j7", "j10"]
 
 
 # the articulated bar by default, both in a deep run (the same remark after the same zero)
@@ -294,3 +296,218 @@ def test_a_belt_wheels_centre_comes_from_its_rate(name, body):
     assert keys.index("sec.velocities") < keys.index("sec.centres")
     notes = [b for b in blocks(section(doc, "sec.centres")) if isinstance(b, CentreNote)]
     assert [(n.how, set(n.pair)) for n in notes] == [("rate", {sol.model.frame, body})]
+
+
+# -- what nobody asks is not worked out ----------------------------------------------------------------------------
+def _meet(p1, d1, p2, d2):
+    """Where the lines p1 + t d1 and p2 + u d2 cross (by hand: Cramer's rule)."""
+    det = d1[0] * (-d2[1]) - d1[1] * (-d2[0])
+    rx, ry = p2[0] - p1[0], p2[1] - p1[1]
+    t = (rx * (-d2[1]) - ry * (-d2[0])) / det
+    return (p1[0] + t * d1[0], p1[1] + t * d1[1])
+
+
+def test_a_rate_nobody_asks_is_not_worked_out():
+    """C5-1.2 asks the centres of OQ, OJ and the left wheel, ω of OJ and v_J: the notes place
+    OQ's centre where the normals to the planes through the wheels' centres meet, and never
+    work out how fast the wheels turn. No equation turns with a wheel, no ω of a wheel is read
+    off anything, the rates' table and the step's title leave the wheels out; what is asked
+    equals the construction by hand: O and Q at r along the planes' normals from contacts
+    s = 2 from the corner, I_OQ where the normals meet, I_OJ on the line I_OQ–O and the
+    vertical through J = (−5, 2), ω_OJ = ω_OQ·|I_OQ O| / |I_OJ O| turned the other way
+    (O lies between the two centres), v_J = ω_OJ × I_OJ J."""
+    import math
+
+    sol, doc = explained("seed_c5_1_2_bar_on_inclined_wheels")
+    velocities = blocks(section(doc, "sec.velocities"))
+    for eq in (b for b in velocities if isinstance(b, Equation)):
+        assert not turning_bodies(eq) & {"wheel1", "wheel2"}, eq.target.sym
+    assert not [d for d in doc.derived() if d.body in ("wheel1", "wheel2")]
+    summary = next(s for s in doc.sections if s.title.key.startswith("sec.rates_summary"))
+    table = next(b for b in summary.blocks if hasattr(b, "rows"))
+    assert [r[0].text for r in table.rows] == ["plane1", "plane2", "OQ", "OJ"]
+    step = next(s for s in steps(doc) if "OQ" in [n.text for n in s.title.args["bodies"].items])
+    assert [n.text for n in step.title.args["bodies"].items] == ["OQ"]
+    # by hand
+    c30, s30, c45 = math.sqrt(3) / 2, 0.5, math.sqrt(2) / 2
+    k1, k2 = (-2 * c30, 2 * s30), (2 * c45, 2 * c45)
+    n1, n2 = (s30, c30), (-c45, c45)                      # the planes' normals, upwards
+    o = (k1[0] + n1[0], k1[1] + n1[1])
+    i16 = _meet(k1, n1, k2, n2)
+    i17 = _meet(i16, (o[0] - i16[0], o[1] - i16[1]), (-5.0, 2.0), (0.0, 1.0))
+    w7 = -1.0 * math.dist(i16, o) / math.dist(i17, o)
+    v_j = (-w7 * (2.0 - i17[1]), 0.0)
+    rate = next(d for d in doc.derived() if d.body == "OJ" and d.kind == "omega")
+    assert math.isclose(num(sol, rate.value.value), w7, rel_tol=1e-9)
+    eq = next(b for b in velocities if isinstance(b, Equation) and b.target.sym.sub.startswith("J"))
+    assert all(math.isclose(a, b, abs_tol=1e-9) for a, b in zip(num(sol, eq.target.value), v_j))
+    centres = {frozenset(n.pair): n for n in blocks(section(doc, "sec.centres")) if isinstance(n, CentreNote)}
+    for body, hand in (("OQ", i16), ("OJ", i17)):
+        got = centres[frozenset((sol.model.frame, body))].value
+        assert all(math.isclose(num(sol, a), b, abs_tol=1e-9) for a, b in zip(got["point"], hand)), (body, got)
+
+
+def test_a_strand_between_two_pulleys_translates_at_once():
+    """C5-1.5: "en no haver-hi moviment pendular" the notes take every strand as translating
+    and carry the velocity along it (↓2v over strand 2, ↑2v over strand 3), then turn each
+    pulley about its axle. The explanation says ω = 0 of each strand before any equation
+    (it is tangent to two pulleys whose centres move alike across it), no equation turns
+    with a strand, and each pulley's ω is read off an equation where it is the one rate unknown. By hand
+    (y up, pulleys of radius r side by side, v_C1 = ↓v, v_C3 = ↓2v): pulley 1 turns about its
+    contact with the tied strand, ω_1 = −v/r, so its right side moves ↓2v; strand 2 carries
+    it to pulley 2's left side, ω_2 = 2v/r (axle fixed), right side ↑2v; strand 3 to pulley
+    3's left side: ↑2v = ↓2v + ω_3 r, ω_3 = −4v/r; its right side ↓2v − 4v = ↓6v; pulley 4,
+    ω_4 = 6v/r, sends the block up at 6v."""
+    import sympy
+
+    sol, doc = explained("seed_c5_1_5_pulley_block")
+    velocities = blocks(section(doc, "sec.velocities"))
+    strands = ["strand2", "strand3", "strand4"]
+    said = [i for i, b in enumerate(velocities) if isinstance(b, Derived) and b.body in strands]
+    assert [velocities[i].body for i in said] == strands
+    assert all(velocities[i].remark.key == "how.tangent" for i in said)
+    for eq in (b for b in velocities if isinstance(b, Equation)):
+        turning = {t.how[0].sub for side in eq.sides for t in side
+                   if t.kind == "rotation" and t.how and getattr(t.how[0], "base", "") == "ω"}
+        assert not turning & set(strands), eq.target.sym
+    r, v = sympy.symbols("r v", positive=True)
+    hand = {"pulley1": -v / r, "pulley2": 2 * v / r, "pulley3": -4 * v / r, "pulley4": 6 * v / r}
+    env = {}
+    for body, rate in hand.items():
+        d = next(b for b in velocities if isinstance(b, Derived) and b.body == body and b.kind == "omega")
+        assert d.source is not None and sum(t.unknown and t.kind == "rotation" for e in velocities
+                                            if isinstance(e, Equation)
+                                            and any(t is d.source for s in e.sides for t in s)
+                                            for s in e.sides for t in s) == 1, body
+        env.update({str(x): x for x in getattr(d.value.value, "free_symbols", ())})
+        got = sympy.sympify(d.value.value).subs({env.get("r", r): r, env.get("v", v): v})
+        assert sympy.simplify(got - rate) == 0, body
+    for point, vy in (("T2", -2 * v), ("K", 6 * v)):
+        eq = next(b for b in velocities if isinstance(b, Equation) and b.target.sym.sub == point)
+        got = sympy.sympify(eq.target.value[1]).subs({env.get("r", r): r, env.get("v", v): v})
+        assert sympy.simplify(got - vy) == 0 and eq.target.value[0] == 0, point
+
+
+@pytest.mark.parametrize("name,wheel,known,holder", [
+    ("seed_c5_e4_upper_wheel", "upper", "wheel1", "chassis"),      # C5-E.4: α = v̇/R of the upper wheel
+    ("seed_c5_e5_unequal_wheels", "wheel1", "wheelR", "chassis"),  # C5-E.5: wheel 1 on wheel R, seen from the chassis
+])
+def test_wheels_on_one_carrier_are_accelerated_by_their_rates(name, wheel, known, holder):
+    """Two moving wheels rolling on each other, both axles on one body: seen from it they
+    are a pair of gears at every instant, ρ_a ω_a/K = ∓ρ_b ω_b/K, so the notes differentiate
+    the relation of the rates (C5-E.4: "α = v̇/R") and never go through the contact's
+    geometric point: at accelerations the wheel's α is said by that relation before any
+    equation, and no geometric point nor contact term is written."""
+    _, doc = explained(name)
+    accel = blocks(section(doc, "sec.accelerations"))
+    said = [i for i, b in enumerate(accel) if isinstance(b, Msg) and b.key in ("pair.relation", "drive.relation_a")]
+    assert len(said) == 1
+    m = accel[said[0]]
+    if m.key == "pair.relation":            # said here first (the velocities turned the wheel about its centre)
+        assert (m.args["a"].text, m.args["b"].text, m.args["holder"].text) == (known, wheel, holder)
+    else:                                   # said at velocities, differentiated here
+        first = [b for b in blocks(section(doc, "sec.velocities")) if isinstance(b, Msg) and b.key == "pair.relation_v"]
+        assert [(b.args["a"].text, b.args["b"].text, b.args["holder"].text) for b in first] == [(known, wheel, holder)]
+    rate = next(i for i, b in enumerate(accel) if isinstance(b, Derived) and b.body == wheel and b.kind == "alpha")
+    assert rate > said[0] and accel[rate].how[0].sub == f"{wheel}/{holder}"
+    for b in accel:
+        if isinstance(b, Msg):
+            assert not b.key.startswith(("geom.", "rolling.kept")), b.key
+        if isinstance(b, Equation):
+            assert not any(t.kind == "contact" or "geom" in t.sym.sup for side in b.sides for t in side), b.target.sym
+
+
+def test_the_upper_wheels_top_by_hand():
+    """C5-E.4 by hand (x to the right, y up): the chassis translates with a_U = (−v̇, 0); the
+    upper wheel turns at ω = −v/R (clockwise, about its top P) at every instant, so
+    α = −v̇/R; P = U + R ŷ: a_P = a_U − ω² R ŷ + α ẑ × R ŷ = (−v̇, 0) + (0, −v²/R) + (v̇, 0)
+    = (0, −v²/R), the notes' ↓v²/R."""
+    import sympy
+
+    sol, doc = explained("seed_c5_e4_upper_wheel")
+    accel = blocks(section(doc, "sec.accelerations"))
+    d = next(b for b in accel if isinstance(b, Derived) and b.body == "upper" and b.kind == "alpha")
+    env = {str(x): x for x in sympy.sympify(d.value.value).free_symbols}
+    R, vd = env["R"], env["vd"]
+    assert sympy.simplify(d.value.value + vd / R) == 0
+    eq = next(b for b in accel if isinstance(b, Equation) and b.target.sym.sub == "P")
+    v = next(x for x in sympy.sympify(eq.target.value[1]).free_symbols if x.name == "v")
+    assert sympy.simplify(eq.target.value[0]) == 0 and sympy.simplify(eq.target.value[1] + v ** 2 / R) == 0
+
+
+def test_wheel_one_is_composed_relative_to_the_chassis():
+    """C5-E.5: "l'anàlisi cinemàtica de la roda petita respecte del xassís és immediata, i una
+    composició de moviments permet obtenir-la respecte del terra", then 0 = v_C + Ω × CI gives
+    d = r1. Seen from the chassis (axles fixed) wheel R and wheel 1 are gears: ω_1/c =
+    −(R/r1) ω_R/c; with ω_R = −v/R (it rolls on the ground, moving right) and ω_c = 0,
+    ω_1 = ω_1/c + ω_c = v/r1 (counter-clockwise, the notes' ⊙ v/r1); its centre
+    I = C + (0, d) with 0 = v + (v/r1)·(−d): d = r1, its top point. No equation crosses the
+    contact between the wheels at velocities."""
+    import sympy
+
+    sol, doc = explained("seed_c5_e5_unequal_wheels")
+    velocities = blocks(section(doc, "sec.velocities"))
+    assert [b.args["b"].text for b in velocities if isinstance(b, Msg) and b.key == "pair.relation_v"] == ["wheel1"]
+    w1 = next(b for b in velocities if isinstance(b, Derived) and b.body == "wheel1")
+    assert [getattr(x, "sub", x) for x in w1.how] == ["wheel1/chassis", " + ", "chassis"]
+    env = {str(x): x for x in sympy.sympify(w1.value.value).free_symbols}
+    v, r1 = env["v"], next(x for n, x in env.items() if n.startswith("r"))
+    assert sympy.simplify(w1.value.value - v / r1) == 0
+    for eq in (b for b in velocities if isinstance(b, Equation)):
+        assert not any("J6" in t.sym.sub for t in [eq.target] + [t for side in eq.sides for t in side]), eq.target.sym
+    note = next(n for n in blocks(section(doc, "sec.centres")) if isinstance(n, CentreNote) and "wheel1" in n.pair)
+    assert note.how == "rate" and note.via == ["wheelR"]
+    (q, _), = note.witnesses
+    assert q == "D" and sympy.simplify(note.arm[0]) == 0 and sympy.simplify(note.arm[1] - r1) == 0
+
+
+def test_a_chassis_on_two_wheels_on_one_line_slides_along_it():
+    """C5-E.4: "el xassís té un moviment de translació": its pins A1 and A2 are the centres of
+    wheels rolling on the flat ground, both at height R, so both run on one horizontal line
+    and the chassis slides along it at every instant: α = 0 said before any equation (never a
+    three-sided equation for it), no equation turns with it at accelerations, and the left
+    wheel's α follows from a_A1 = a_U: by hand (−v̇, 0) = α ẑ × (R ŷ) = (−α R, 0), α = v̇/R."""
+    import sympy
+
+    _, doc = explained("seed_c5_e4_upper_wheel")
+    accel = blocks(section(doc, "sec.accelerations"))
+    first = next(i for i, b in enumerate(accel) if isinstance(b, Derived) and b.body == "chassis")
+    assert accel[first].remark.key == "how.glides" and not accel[first].how
+    assert {accel[first].remark.args["p"].text, accel[first].remark.args["q"].text} == {"A1", "A2"}
+    assert not any(isinstance(b, Equation) for b in accel[:first])
+    for eq in (b for b in accel if isinstance(b, Equation)):
+        assert not any(t.how and getattr(t.how[0], "sub", "") == "chassis" for side in eq.sides for t in side)
+    d = next(b for b in accel if isinstance(b, Derived) and b.body == "wheel1" and b.kind == "alpha")
+    env = {str(x): x for x in sympy.sympify(d.value.value).free_symbols}
+    assert sympy.simplify(d.value.value - env["vd"] / env["R"]) == 0
+
+
+def test_the_trailing_chassis_goes_by_equiprojectivity():
+    """C5-2.2: S1 translates, so v_O = rω along it; "la propietat d'equiprojectivitat permet
+    obtenir la velocitat del punt mig de l'eix (P)", then S2's centre, and its ω "a partir de
+    la velocitat de P i del CIR". By hand (S1 along x, S2 trailing at 45°, OP2 = a): P2 moves
+    along S2's wheels, e = (1, 1)/√2, and (v_P2 − v_O) · OP2 = 0 with v_O = (rω, 0) gives
+    v_P2 = (rω/√2) e = (rω/2, rω/2); the centre I = (0, −√2 a) (S2's axle and the
+    perpendicular to v_O at O), I P2 = (−a/√2, a/√2), so ω_S2 = −√2 rω / (2a). The
+    tricycle (C5-2.1), whose front wheel's velocity is a datum, keeps the notes' road there:
+    the centre first, then every point about it."""
+    import sympy
+
+    sol, doc = explained("seed_c5_2_2_articulated")
+    velocities = blocks(section(doc, "sec.velocities"))
+    said = [i for i, b in enumerate(velocities) if isinstance(b, Msg) and b.key == "vehicle.equiprojective"]
+    centre = next(i for i, b in enumerate(velocities) if isinstance(b, Msg) and b.key == "vehicle.centre"
+                  and b.args["body"].text == "S2")
+    assert len(said) == 1 and said[0] < centre
+    m = velocities[said[0]]
+    assert (m.args["q"].text, m.args["p"].text) == ("O", "P2")
+    env = {str(x): x for c in m.args["value"].value for x in sympy.sympify(c).free_symbols}
+    r, w, a = env["r"], env["w"], None
+    assert all(sympy.simplify(c - r * w / 2) == 0 for c in m.args["value"].value)
+    rate = next(b for b in velocities if isinstance(b, Derived) and b.body == "S2" and b.kind == "omega")
+    a = next(x for x in sympy.sympify(rate.value.value).free_symbols if x.name == "a")
+    assert sympy.simplify(rate.value.value + sympy.sqrt(2) * r * w / (2 * a)) == 0
+    eq = next(e for e in velocities if isinstance(e, Equation) and any(t is rate.source for s in e.sides for t in s))
+    assert eq.target.sym.sub.split("∈")[0] == "P2"
+    _, tricycle = explained("seed_c5_2_1_tricycle")
+    assert not any(isinstance(b, Msg) and b.key == "vehicle.equiprojective" for b in tricycle.blocks())

@@ -72,6 +72,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
             if rest is not None:
                 doc.sections.append(rest)
         elif ctx.model.default_questions or worked(ctx).centres:
+            ctx.centre_notes = None         # read again: a rate the steps found gives a centre (0 = v_Q + ω × QI)
             doc.sections.append(centres_section(ctx))      # only what is asked (the slides ask none)
         for sec, level in zip(levels, wanted):
             for eq in _equations(sec):

@@ -91,14 +91,18 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
             _axles(ctx, note)
             if note.how == "velocities" and len(note.witnesses) < 2:
                 _field(ctx, note)
-        if note.how in ("kennedy", "lines") and ctx.frame in key and \
+        if note.how in ("kennedy", "lines", "velocities", "proportional") and ctx.frame in key and \
                 any(f"drive:{b}" in ctx.worked for b in key if b != ctx.frame):
             by_rate = CentreNote(note.pair, note.value, "velocities")    # a belt's wheel: from the rate
             if _field(ctx, by_rate):        # the drive gave (C5-1.6, E.6: 0 = v_Q + ω × QI)
                 from .drives import drives
 
                 by_rate.how = "rate"
-                by_rate.via = [d.line for d in drives(ctx) if set(key) & {d.a, d.b}][:1]
+                from .drives import pairs
+
+                by_rate.via = ([d.line for d in drives(ctx) if set(key) & {d.a, d.b}]      # the belt, the chain
+                               + [d.a if d.b in key else d.b for d in pairs(ctx)
+                                  if set(key) & {d.a, d.b} and f"pair:{d.joint}" in ctx.worked])[:1]   # the other wheel
                 note = by_rate
                 deps.pop(key, None)
         made[key] = note

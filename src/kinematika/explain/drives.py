@@ -14,6 +14,13 @@ frame by the composition of rotations, relative + drag = absolute (C5-1.6's ⊗2
 
 The run itself turns with K (ω_run = ω_K). At accelerations the same holds of α (the radii
 do not change). Every value written is the solver's; the step only says how it follows.
+
+Two wheels rolling on each other with their axles on one body K (C5-E.4's upper wheel on
+the lower ones, all on the chassis) are a pair of gears seen from K: ρ_a ω_a/K = ∓ ρ_b ω_b/K
+(− outside each other, + one inside the other) at every instant, so at accelerations the
+notes differentiate it (α = v̇/R) rather than go through the contact's geometric point:
+
+    ρ_a α_a/K = ∓ ρ_b α_b/K,   α_b = α_b/K + α_K
 """
 from __future__ import annotations
 
@@ -95,6 +102,96 @@ def drive_blocks(ctx: Ctx, bodies: list[str], known: set[str], level: str) -> tu
         out += _relation(ctx, d, a, b, level)
         found |= {b, d.line}
     return out, found
+
+
+@dataclass(frozen=True)
+class Pair:
+    """Wheels `a` and `b` rolling on each other at `joint`, their axles both on `holder`;
+    `sign` −1 outside each other (they turn opposite ways seen from the holder), +1 inside."""
+
+    joint: str
+    a: str
+    b: str
+    holder: str
+    sign: int
+
+
+def pairs(ctx: Ctx) -> list[Pair]:
+    """Every pair of moving wheels rolling on each other on one carrier's axles (none in
+    space)."""
+    if not ctx.planar:
+        return []
+    out = []
+    for j in ctx.model.joints:
+        contact = ctx.sol.geometry(j.id).contact if rolls(j) else None
+        if contact is None or contact.kind not in ("external", "internal") or circle(ctx, j.a) is None \
+                or circle(ctx, j.b) is None or ctx.fixed(j.a) or ctx.fixed(j.b):
+            continue                # a wheel on a fixed profile goes by its centre's path (`group._centred`)
+        holder = _common_holder(ctx, j.a, j.b)
+        if holder is not None:
+            out.append(Pair(j.id, j.a, j.b, holder, 1 if contact.kind == "internal" else -1))
+    return out
+
+
+def pair_blocks(ctx: Ctx, bodies: list[str], known: set[str], level: str) -> tuple[list, set[str]]:
+    """The rates of the step's `bodies` that a pair of wheels on one carrier gives from a
+    wheel already `known` (the carrier known too), as the notes compose them (C5-E.5: "la
+    roda petita respecte del xassís és immediata, i una composició de moviments permet
+    obtenir-la respecte del terra"): the relation seen from the carrier, then the rates
+    (`Pair`); at accelerations the relation differentiated (C5-E.4's α = v̇/R). At
+    velocities not for a wheel whose instant centre the structure placed first: the notes
+    turn it about that centre (C5-E.4's P)."""
+    out: list = []
+    found: set[str] = set()
+    have = set(known) | {ctx.frame}
+    for d in pairs(ctx):
+        if d.holder not in have:
+            continue
+        a, b = (d.a, d.b) if d.a in have else (d.b, d.a) if d.b in have else (None, None)
+        if a is None or b not in bodies or b in found:
+            continue
+        if level == "v" and b in ctx.centre_sites.values():
+            continue
+        out += _pair(ctx, d, a, b, level)
+        found.add(b)
+    return out, found
+
+
+def _pair(ctx: Ctx, d: Pair, a: str, b: str, level: str) -> list:
+    """ρ_a ω_a/K = ∓ ρ_b ω_b/K seen from K (differentiated at accelerations); the known
+    wheel's rate relative to K, the other's, and its own by composition (relative + drag)."""
+    k = ctx.rel(d.holder)
+    ra, rb = circle(ctx, a)[1], circle(ctx, b)[1]
+    minus = "" if d.sign > 0 else "−"
+    sym = omega_sym if level == "v" else alpha_sym
+    get = ctx.omega if level == "v" else ctx.alpha
+    unit = "rate" if level == "v" else "rate2"
+    kind = "omega" if level == "v" else "alpha"
+    w_a, w_b = omega_sym(a, k), omega_sym(b, k)
+    r_a, r_b = sym(a, k), sym(b, k)
+    ctx.worked.update({f"relative:{a}/{d.holder}", f"relative:{b}/{d.holder}"})
+    sense = not ctx.symbolic
+    radii = Inline([rho(a), " = ", Value(ra, "len"), ", ", rho(b), " = ", Value(rb, "len")])
+    relation = Inline([rho(a), " ", w_a, " = ", minus, rho(b), " ", w_b])
+    derived = Inline([rho(a), " ", r_a, " = ", minus, rho(b), " ", r_b])
+    names = dict(holder=Name(d.holder, "body"), joint=Name(d.joint, "joint"), a=Name(a, "body"), b=Name(b, "body"),
+                 radii=radii)
+    if level == "v":
+        ctx.worked.update({f"pair:{d.joint}", f"drive:{b}"})
+        out: list = [msg("pair.relation_v", equation=relation, **names)]
+    elif f"pair:{d.joint}" in ctx.worked:
+        out = [msg("drive.relation_a", equation=derived, radii=radii)]
+    else:
+        out = [msg("pair.relation", equation=relation, derived=derived, **names)]
+    if k is not None:
+        out.append(Derived(r_a, [sym(a), " − ", sym(d.holder)], ctx.value(get(a, d.holder), unit), "", kind, sense))
+    ratio = simplified(ctx, d.sign * ra / rb)
+    one = ctx.is_zero(ratio - 1, "") or ctx.is_zero(ratio + 1, "")
+    how = ([] if ctx.is_zero(ratio - 1, "") else ["−"]) + [r_a] if one else [Value(ratio, ""), " · ", r_a]
+    out.append(Derived(r_b, how, ctx.value(get(b, d.holder), unit), b if k is None else "", kind, sense))
+    if k is not None:
+        out.append(Derived(sym(b), [r_b, " + ", sym(d.holder)], ctx.value(get(b), unit), b, kind, sense))
+    return out
 
 
 def _relation(ctx: Ctx, d: Drive, a: str, b: str, level: str) -> list:

@@ -37,7 +37,7 @@ from .document import (Ann, Derived, Equation, Msg, Sym, Term, Value, body as bo
                        point as point_name)
 from .order import jointed
 from .contacts import geometric_blocks
-from .drives import drive_blocks
+from .drives import drive_blocks, pair_blocks
 from .kinds import (crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls, same_rate,
                     slider, welds)
 from .terms import contact_term, point_term, rotation_terms, slide_terms
@@ -103,6 +103,28 @@ class Still:
 
 
 @dataclass
+class Glides:
+    """`body` carries the centres p and q of two wheels rolling on fixed straight profiles,
+    all along one line: both centres run on that line at every instant, so the body slides
+    along it and does not turn (α = 0 at accelerations, C5-E.4's chassis)."""
+
+    body: str
+    p: str
+    q: str
+
+
+@dataclass
+class Tangent:
+    """`body`, a line, rolls on two circles whose centres `centres` are known and move alike
+    across it: it stays tangent to both, so it does not turn (C5-1.5's strands: "en no
+    haver-hi moviment pendular")."""
+
+    body: str
+    circles: tuple
+    centres: tuple
+
+
+@dataclass
 class Same:
     """ω (α) of `body` from `other`'s: a weld, a prismatic pair, a driven pin or ω driver."""
 
@@ -129,7 +151,10 @@ class Planner:
         self.used: list[str] = []                   # joints written, in order
         self.still: dict[str, tuple[Joint, str]] = {}   # label of a contact at rest -> (joint, fixed body)
         self.centred: dict[str, tuple[str, str]] = {}     # at accelerations: joint -> (wheel, its centre)
+        self.centred_steps = centres                # planning a step's equations (not the order's groups)
+        self.tangent: set[str] = set()              # lines found not to turn (`_tangents`)
         self._labels: dict[Site, str] = {}
+        self.gliding: set[str] = set()              # bodies that translate: their turns add no term
         self.sites = {b: self._sites(b) for b in ctx.model.bodies}
         for b in self.determined:
             self.full.update(self.label(s) for s in self.sites[b])
@@ -137,6 +162,7 @@ class Planner:
             self._centres()
         if level == "a":
             self._centred()
+            self._glides()
         self._given()
         self._propagate()
 
@@ -157,6 +183,35 @@ class Planner:
                 if centre is not None and Site(centre, body) in self.sites[body]:
                     self.centred[j.id] = (body, centre)
 
+    def _glides(self) -> None:
+        """At accelerations, a body pinned at the centres of two wheels that roll on fixed
+        straight profiles, the two centres on one line along the profiles: each centre runs on
+        that line (it keeps its distance from its profile), so the body slides along it at
+        every instant and α = 0 — the notes' "el xassís té un moviment de translació", said,
+        not solved from a three-sided equation."""
+        ctx, group = self.ctx, set(self.group)
+        straight = []
+        for jid, (wheel, centre) in self.centred.items():
+            j = ctx.model.joint(jid)
+            fixed = j.a if j.b == wheel else j.b
+            contact = ctx.sol.geometry(jid).contact
+            if path_origin(ctx, j, fixed) is None and contact.kind == "circle-line":
+                straight.append((centre, ctx.num(tuple(contact.normal))))
+        for body in self.group:
+            if body in self.rates or body not in group:
+                continue
+            held = [(c, n) for c, n in straight if c in ctx.model.bodies[body].points]
+            if len(held) < 2:
+                continue
+            (p, n1), (q, n2) = held[:2]
+            a, b = ctx.num(ctx.pos(p)), ctx.num(ctx.pos(q))
+            across = abs(n1[0] * n2[1] - n1[1] * n2[0]) + abs((b[0] - a[0]) * n1[0] + (b[1] - a[1]) * n1[1])
+            if across <= 1e-9 * ctx.inst.scale and self.apart(p, q) is not None \
+                    and ctx.is_zero(ctx.alpha(body), "rate2") and ctx.is_zero(ctx.omega(body), "rate"):
+                self.rates.add(body)
+                self.gliding.add(body)
+                self.events.append(Glides(body, p, q))
+
     def _centres(self) -> None:
         """The instant centres placed before the velocities (`centres.centre_sites`): each a
         point of its body with zero velocity, where routes may start (v_A = v_I14 + ω × I14-A,
@@ -171,6 +226,7 @@ class Planner:
         for body in self.ctx.translating:
             if body in group and body not in self.rates:
                 self.rates.add(body)
+                self.gliding.add(body)      # it translates: its points move alike, no ω × r is written
                 self.events.append(Still(body))
 
     # what is known -------------------------------------------------------------------------
@@ -388,9 +444,15 @@ class Planner:
         order = {id(p): i for i, p in enumerate(found)}
         def key(p: Path) -> tuple:      # a rotation about a point at rest finds ω alone, as the notes do
             rest = self._from_rest(p)
-            return (not p.finds, len(p.routes), self._off_centre(p), -self._via_centre(p), not rest, p.turns,
+            return (self._across_tangent(p), not p.finds, len(p.routes), self._off_centre(p), -self._via_centre(p), not rest, p.turns,
                     p.unknowns if rest else -p.unknowns, self._against(p), -self._end_rank(p), order[id(p)])
         return min(found, key=key)
+
+    def _across_tangent(self, p: Path) -> int:
+        """How many times the equation turns with a line found not to turn (`_tangents`):
+        the notes carry a velocity along the strand as it is (its points move alike) and
+        write the pulley's rotation from there, one body at a time."""
+        return sum(1 for r in p.routes for g in r.segs if g.kind == "turn" and g.body in self.tangent)
 
     def _via_centre(self, p: Path) -> int:
         """How many times the equation goes from a fixed body into a wheel and on to its
@@ -510,10 +572,45 @@ class Planner:
                         self.still[label] = (j, fixed)
                         self._use([j.id])
 
+    def _tangents(self) -> None:
+        """A line rolling on two circles (a strand of cable between two pulleys) keeps its
+        distance r from both centres C_a, C_b: the components of v_Ca and v_Cb across the line
+        differ by ω_line times the distance between its two contacts. With both centres known
+        and moving alike across it (the pulleys' axles fixed, or hanging in the cable), the
+        line does not turn: it translates, as the notes take each strand (C5-1.5). Said at
+        velocities, in the steps (the order of solution is the block-triangular one)."""
+        if self.level != "v" or not self.centred_steps:
+            return
+        ctx = self.ctx
+        for body in self.group:
+            if body in self.rates:
+                continue
+            held = []
+            for j in ctx.model.joints:
+                contact = ctx.sol.geometry(j.id).contact if rolls(j) else None
+                if contact is None or contact.kind != "circle-line" or contact.line_body != body:
+                    continue
+                (circle, c), = contact.centres
+                from .contacts import centre_name
+
+                name = centre_name(ctx, circle, c)
+                if name in ctx.model.bodies[circle].points and self.label(Site(name, circle)) in self.full:
+                    held.append((circle, name, contact))
+            if len(held) < 2 or not ctx.is_zero(ctx.omega(body), "rate"):
+                continue
+            (a, ca, first), (b, cb, second) = held[:2]
+            n = first.normal
+            across = sum(x * (u - w) for x, u, w in zip(n, ctx.vel(a, ca), ctx.vel(b, cb)))
+            if ctx.is_zero(across, "speed") and self.apart(ctx.contact(first.joint), ctx.contact(second.joint)):
+                self.rates.add(body)
+                self.tangent.add(body)
+                self.events.append(Tangent(body, (a, b), (ca, cb)))
+
     def _propagate(self) -> None:
         """What follows at once: shared rates, bodies with a known point and ω, and the
         contact points at rest of bodies rolling on fixed ones."""
         self._still_contacts()
+        self._tangents()
         changed = True
         while changed:
             changed = False
@@ -622,6 +719,12 @@ class Writer:
         reads (ω or α), and each rate carried from another body."""
         out: list = []
         for ev in self.plan.events:
+            if isinstance(ev, Tangent):
+                out.append(self.tangent(ev))
+                continue
+            if isinstance(ev, Glides):
+                out.append(self.glides(ev))
+                continue
             out += self.path(ev) if isinstance(ev, Path) else [self.still(ev)] if isinstance(ev, Still) \
                 else [self.same(ev)]
         return out
@@ -648,6 +751,7 @@ class Writer:
                 if seg.joint is not None:
                     if self._centred(r, i):
                         out += self.path_said(seg.joint, seg.body, r.segs[i + 1].p)
+                        contacts.append(ctx.contact(seg.joint))     # the sentence goes with the equation
                         continue
                     out += self.condition(seg.joint, Site(seg.p, seg.body))
                     if rolls(seg.joint):
@@ -876,8 +980,8 @@ class Writer:
         accelerations); a pin adds nothing."""
         ctx, lv = self.ctx, self.level
         if seg.kind == "turn":
-            if self.plan.apart(seg.q, seg.p) is None:
-                return []
+            if self.plan.apart(seg.q, seg.p) is None or seg.body in self.plan.gliding:
+                return []               # a body that slides along a line moves its points alike
             return rotation_terms(ctx, lv, seg.body, seg.q, seg.p, not known and seg.body not in p.rates)
         j = seg.joint
         if rolls(j):
@@ -896,6 +1000,19 @@ class Writer:
         centre = Sym("I", f"{ctx.frame},{s.body}", vector=False)
         return Derived(omega_sym(s.body), [], ctx.value(ctx.omega(s.body), "rate"), s.body, "omega", False,
                        remark=msg("how.centre_infinity", centre=centre))
+
+    def glides(self, g: Glides) -> Derived:
+        """α = 0 of a body sliding along the line of two wheels' centres."""
+        ctx = self.ctx
+        return Derived(alpha_sym(g.body), [], ctx.value(ctx.alpha(g.body), "rate2"), g.body, "alpha", False,
+                       remark=msg("how.glides", p=point_name(g.p), q=point_name(g.q), line=point_name(str(segment(g.p, g.q)))))
+
+    def tangent(self, t: Tangent) -> Derived:
+        """ω = 0 of a line tangent to two circles whose centres move alike across it."""
+        ctx = self.ctx
+        return Derived(omega_sym(t.body), [], ctx.value(ctx.omega(t.body), "rate"), t.body, "omega", False,
+                       remark=msg("how.tangent", a=body_name(t.circles[0]), b=body_name(t.circles[1]),
+                                  ca=point_name(t.centres[0]), cb=point_name(t.centres[1])))
 
     def same(self, s: Same) -> Derived:
         """ω (α) shared across a weld or a prismatic pair, or through a driven joint."""
@@ -977,6 +1094,8 @@ def group_blocks(ps, step) -> Optional[list]:
     belt or chain drive whose carrier and one wheel are known gives the other wheel's rate
     first, as the notes find it (`drives`); the planner then knows those rates."""
     given, rates = drive_blocks(ps.ctx, step.bodies, set(ps.known), ps.level)
+    geared, more = pair_blocks(ps.ctx, [b for b in step.bodies if b not in rates], set(ps.known), ps.level)
+    given, rates = given + geared, rates | more
     plan = Planner(ps.ctx, step.bodies, set(ps.known), ps.level, rates, centres=True)
     if not plan.run():
         return None

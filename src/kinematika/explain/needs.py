@@ -5,8 +5,11 @@ A forward evaluation in the velocity or acceleration steps (v_P = v_Q + ω × QP
 known) is kept when its point is asked (its velocity, acceleration, curvature, intrinsic
 components or composition), when a later equation uses it as a known term, or when an
 instant centre is found from it; the others are dropped, last first, so that a chain of
-points nobody needs goes as a whole. Equations that find an unknown (an ω, a slide) always
-stay. A model without questions asks for everything, and keeps everything.
+points nobody needs goes as a whole. An equation that finds only the rate (ω or α) of a body
+nobody asks about, whose rate no later step uses, goes too, with the value read off it and
+its row of the rates' table (C5-1.2: the notes place the wheels' centres at their contacts
+and never work out how fast they turn); other equations that find an unknown (a slide, a
+point) always stay. A model without questions asks for everything, and keeps everything.
 """
 from __future__ import annotations
 
@@ -14,7 +17,7 @@ import re
 
 from ..questions import QUESTIONS
 from .context import Ctx
-from .document import CentreNote, Document, Equation, Msg, Section
+from .document import CentreNote, Derived, Document, Equation, Inline, Msg, Names, Section, Sym, Table, Term
 
 LEVELS = ("sec.velocities", "sec.accelerations")
 
@@ -31,11 +34,17 @@ def prune(ctx: Ctx, doc: Document) -> None:
     if ctx.model.default_questions:
         return
     asked = _asked_points(ctx)
+    bodies = _asked_bodies(ctx)
+    unworked: dict[str, set[str]] = {}
     for sec in reversed(doc.sections):       # the later first: what they drop, the earlier need not keep
         if sec.title.key in LEVELS:
             used, terms = _used_after(doc, sec)
-            _prune_section(sec, "v" if sec.title.key == LEVELS[0] else "a", asked, used, terms)
+            rates = _rates_after(ctx, doc, sec) | bodies
+            level = "v" if sec.title.key == LEVELS[0] else "a"
+            unworked[level] = _prune_section(sec, level, asked, used, terms, rates)
             _drop_unused_rest(sec)
+            _untitle(sec, unworked[level])
+    _drop_rows(doc, unworked.get("v", set()), unworked.get("a", set()))
 
 
 AT_REST = ("rolling.centre", "centre.site", "centre.site_i")
@@ -70,6 +79,109 @@ def _asked_points(ctx: Ctx) -> set[str]:
             ref = ctx.model.resolve_point(q.target) if isinstance(q.target, str) else q.target
             out.add(ref.point)
     return out
+
+
+def _asked_bodies(ctx: Ctx) -> set[str]:
+    """The bodies whose rate an answer needs: every body a question names (its ω, its α, the
+    body of an asked point, a contact's two bodies), except an instant centre's, which the
+    centres section places from the joints (its rate, when the centre is found from it, is
+    a use of that rate: `_rates_after`)."""
+    out: set[str] = set()
+    for q in ctx.model.questions:
+        about = QUESTIONS[q.kind].about
+        if about == "point":
+            ref = ctx.model.resolve_point(q.target) if isinstance(q.target, str) else q.target
+            out.add(ref.body)
+        elif about == "joint":
+            j = ctx.model.joint(q.name)
+            out.update((j.a, j.b))
+        elif q.kind != "icr":
+            out.add(q.name)
+        for b in (q.relative_to, getattr(q, "moving", None)):
+            if b:
+                out.add(b)
+    return out
+
+
+def _syms(x, out: set) -> set:
+    """Every symbol in a block or its parts (terms, formulas, message arguments)."""
+    if isinstance(x, Sym):
+        out.add((x.base, x.sub))
+    elif isinstance(x, (list, tuple)):
+        for y in x:
+            _syms(y, out)
+    elif isinstance(x, dict):
+        for y in x.values():
+            _syms(y, out)
+    elif isinstance(x, (Msg,)):
+        _syms(x.args, out)
+    elif isinstance(x, (Inline, Names)):
+        _syms(x.items, out)
+    elif isinstance(x, Term):
+        _syms([x.sym, x.how, x.mag.ref, x.dir.ref], out)
+    elif isinstance(x, Equation):
+        _syms([x.target] + [t for side in x.sides for t in side], out)
+    elif isinstance(x, Derived):
+        _syms([x.how, x.remark], out)
+    elif isinstance(x, Table):
+        _syms([x.header, x.rows], out)
+    elif isinstance(x, Section):
+        _syms([x.title, x.blocks], out)
+    return out
+
+
+def _rate_bodies(ctx: Ctx, syms: set) -> set[str]:
+    """The bodies whose ω or α (absolute or relative: ω_3/2 needs ω_3) the symbols name."""
+    return {part for base, sub in syms if base in ("ω", "α") for part in sub.split("/") if part in ctx.model.bodies}
+
+
+def _rates_after(ctx: Ctx, doc: Document, sec: Section) -> set[str]:
+    """The bodies whose rate the rest of the document uses: in an equation, a value read
+    off one, a sentence, a check; an instant centre found from a rate (0 = v_Q + ω × QI)."""
+    syms: set = set()
+    out: set[str] = set()
+    for s in doc.sections[doc.sections.index(sec) + 1:]:
+        if s.title.key in ("sec.rates_summary", "sec.rates_summary_v", "sec.answers"):
+            continue                    # they list the rates found, they do not use them
+        for b in _blocks(s):
+            if isinstance(b, CentreNote):
+                if b.rate is not None or b.how in ("rate", "field", "check"):
+                    out.update(x for x in b.pair if x != ctx.frame)
+            else:
+                _syms(b, syms)
+    return out | _rate_bodies(ctx, syms)
+
+
+def _drop_rows(doc: Document, bodies: set[str], alphas: set[str]) -> None:
+    """The rates' table lists what the explanation found: a body whose ω was not worked out
+    has no row, one whose α was not, no α (—); the order of solution names the bodies each
+    step works out."""
+    if not bodies and not alphas:
+        return
+    for s in doc.sections:
+        if s.title.key in ("sec.rates_summary", "sec.rates_summary_v"):
+            for t in (b for b in s.blocks if isinstance(b, Table)):
+                t.rows = [r for r in t.rows if getattr(r[0], "text", None) not in bodies]
+                for r in t.rows:
+                    if len(r) > 2 and getattr(r[0], "text", None) in alphas:
+                        r[2] = "—"
+        if s.title.key == "sec.structure":
+            for m in (b for b in _blocks(s) if isinstance(b, Msg) and b.key == "order.item"):
+                _unname(m, bodies)
+
+
+def _untitle(sec: Section, bodies: set[str]) -> None:
+    """A step's title names the bodies it works out: not one whose rate went unworked."""
+    for step in (b for b in sec.blocks if isinstance(b, Section)):
+        _unname(step.title, bodies)
+
+
+def _unname(m: Msg, bodies: set[str]) -> None:
+    named = m.args.get("bodies")
+    if bodies and isinstance(named, Names):
+        left = [n for n in named.items if getattr(n, "text", n) not in bodies]
+        if left and len(left) < len(named.items):
+            m.args["bodies"] = Names(left)
 
 
 def _point_of(label: str) -> str:
@@ -111,15 +223,29 @@ def _blocks(sec: Section) -> list:
     return out
 
 
-def _prune_section(sec: Section, level: str, asked: set[str], used: set[str], terms: set[tuple]) -> None:
+def _prune_section(sec: Section, level: str, asked: set[str], used: set[str], terms: set[tuple],
+                   rates: set[str]) -> set[str]:
     """Walk the section's equations of its level from the last: keep what is needed and what
     it uses (a velocity worked out among the accelerations, the geometric contact point's,
-    serves a term there: it stays, and so does what it uses)."""
+    serves a term there: it stays, and so does what it uses). The bodies whose rate an
+    equation found and which went with it are returned."""
     needed = set(used) | set(asked)
     needed_labels: set[tuple] = set(terms)
-    holders = [(h, eq) for h, eq in _holders(sec) if isinstance(eq, Msg) or eq.level == level]
+    rates = set(rates)
+    holders = [(h, eq) for h, eq in _holders(sec) if not isinstance(eq, Equation) or eq.level == level]
     dropped = []
+    unneeded: dict[int, tuple] = {}          # id of the term a rate nobody needs is read off -> (holder, value)
+    unworked: set[str] = set()
     for holder, eq in reversed(holders):
+        if isinstance(eq, Derived):
+            if eq.source is not None and eq.body not in rates:
+                unneeded[id(eq.source)] = (holder, eq)
+            else:
+                rates |= _rate_bodies_of(_syms([eq.how, eq.remark], set()))
+            continue
+        if isinstance(eq, Msg) and eq.key != "rolling.same":
+            rates |= _rate_bodies_of(_syms(eq, set()))
+            continue
         if isinstance(eq, Msg):             # no slip in a sentence, v_J∈9 = v_J∈8: a forward step too
             target, other = eq.args["sym"], eq.args["other"]
             if (target.base, target.sub) not in needed_labels and _point_of(target.sub) not in needed:
@@ -127,15 +253,36 @@ def _prune_section(sec: Section, level: str, asked: set[str], used: set[str], te
             else:
                 needed_labels.add((other.base, other.sub))
             continue
-        forward = not any(t.unknown for side in eq.sides for t in side)
+        unknowns = [t for side in eq.sides for t in side if t.unknown]
+        forward = not unknowns
         label = (eq.target.sym.base, eq.target.sym.sub)
         point = _point_of(eq.target.sym.sub)
         if forward and eq.target.kind == "point" and label not in needed_labels and point not in needed:
             holder.blocks.remove(eq)
             dropped.append(eq)
             continue
+        if unknowns and not eq.target.unknown and all(id(t) in unneeded for t in unknowns):
+            holder.blocks.remove(eq)            # it finds only rates nobody needs
+            dropped.append(eq)
+            for t in unknowns:
+                owner, value = unneeded.pop(id(t))
+                owner.blocks.remove(value)
+                unworked.add(value.body)
+            continue
         needed_labels.update(_point_terms(eq))      # v_J7∈4 = v_K + …: its known left side too
+        for t in (t for side in eq.sides for t in side if not t.unknown):
+            rates |= _rate_bodies_of(_syms(t.how, set()))
+        for t in unknowns:                  # its rate is read here after all: it stays
+            kept = unneeded.pop(id(t), None)
+            if kept is not None:
+                rates |= _rate_bodies_of(_syms(kept[1].how, set()))
     _drop_orphans(sec, dropped)
+    return unworked
+
+
+def _rate_bodies_of(syms: set) -> set[str]:
+    """The bodies whose ω or α the symbols name (subscripts split at /)."""
+    return {part for base, sub in syms if base in ("ω", "α") for part in sub.split("/") if part}
 
 
 def _names(eq: Equation) -> set[str]:
@@ -172,12 +319,12 @@ def _owned_holders(sec: Section, owned: list) -> list:
 
 
 def _holders(sec: Section) -> list[tuple[Section, Equation | Msg]]:
-    """The section's equations, and its no-slip sentences (`rolling.same`), in order, with
-    the section that holds each."""
+    """The section's equations, its sentences (the no-slip `rolling.same` a forward step) and
+    the rates read off its equations, in order, with the section that holds each."""
     out: list = []
     for b in sec.blocks:
         if isinstance(b, Section):
             out += _holders(b)
-        elif isinstance(b, Equation) or (isinstance(b, Msg) and b.key == "rolling.same"):
+        elif isinstance(b, (Equation, Msg)) or (isinstance(b, Derived) and b.kind in ("omega", "alpha")):
             out.append((sec, b))
     return out

@@ -4,8 +4,11 @@ A wheel that does not slip has no velocity across its plane, so the centre of th
 that carries it lies on the perpendicular to the wheel's plane at its contact (its axle
 line). Two such lines — or one, with the perpendicular to a point's known velocity — meet
 at the body's instant centre I; a known speed then gives ω (v_P = ω × IP) and every
-other point follows (v_Q = ω × IQ). A body pinned to one already known with a given
-joint rate turns at ω_known + rate.
+other point follows (v_Q = ω × IQ). An asked point on a wheel's axle moves along the
+wheel's plane: its speed follows from a known point Q of the body by equiprojectivity,
+(v_P − v_Q) · QP = 0, before the centre, and ω from it (the notes' C5-2.2: "la propietat
+d'equiprojectivitat permet obtenir la velocitat del punt mig de l'eix"). A body pinned to
+one already known with a given joint rate turns at ω_known + rate.
 """
 from __future__ import annotations
 
@@ -139,6 +142,9 @@ def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
                     and _size(ctx.num(speeds[p])) > TOL * ctx.scale_of("speed")), None)
     if witness is None:
         return None
+    said = _equiprojective(ctx, b, wheels, speeds, witness)
+    if said:
+        witness = said[0].args["p"].text
     for i, (p1, d1, why1) in enumerate(lines):
         for p2, d2, why2 in lines[i + 1:]:
             det = d1[0] * d2[1] - d1[1] * d2[0]
@@ -146,20 +152,95 @@ def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
                 continue
             t = ((p2[0] - p1[0]) * d2[1] - (p2[1] - p1[1]) * d2[0]) / det
             centre = (p1[0] + t * d1[0], p1[1] + t * d1[1])
-            return _from_centre(ctx, b, centre, [why1, why2], witness)
+            return said + _from_centre(ctx, b, centre, [why1, why2], witness, speeds)
     if len(lines) >= 2 and ctx.is_zero(ctx.omega(b), "rate"):
         return [msg("vehicle.translation", body=Name(b, "body"), point=Name(witness)),
                 Derived(omega_sym(b), [], ctx.value(ctx.omega(b), "rate"), b, "omega", False,
-                        remark=msg("how.translation"))]
+                        remark=msg("how.translation"))] + _carried(ctx, b, witness)
     return None
 
 
-def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str) -> list:
+def _equiprojective(ctx: Ctx, b: str, wheels: list, speeds: dict, q: str) -> list:
+    """The speed of an asked point P of b on a wheel's axle (the line through the contact
+    perpendicular to the wheel's plane e): v_P = s e, and equiprojectivity with the known
+    point Q, v_P · QP = v_Q · QP, gives s = (v_Q · QP) / (e · QP). Only where b's wheels give
+    one axle line and Q's velocity was carried from a body found before (C5-2.2's trailing
+    chassis, hitched at O to the one ahead): where Q's velocity is a datum (the tricycle's
+    front wheel, C5-2.1) the notes place the centre from it and turn every point about it.
+    Empty when no asked point is there, or QP is across the plane."""
+    from ..questions import QUESTIONS
+
+    asked = {ctx.model.resolve_point(x.target).point if isinstance(x.target, str) else x.target.point
+             for x in ctx.model.questions if QUESTIONS[x.kind].about == "point"}
+    key = ctx.motion_key(q, b)
+    if _axles(ctx, b, wheels) != 1 or any(d.kind == "velocity" and ctx.motion_key(d.point.point, d.point.body) == key
+                                          for d in ctx.model.drivers):
+        return []                           # a given velocity turns the body about its centre at once (C5-2.1)
+    for j in wheels:
+        if b not in (j.a, j.b):
+            continue
+        e = ctx.num(ctx.sol.geometry(j.id).along)
+        c = ctx.num(ctx.pos(j.at))
+        for p in ctx.model.bodies[b].points:
+            if p == q or p not in asked or p in speeds:
+                continue
+            x, qp = ctx.num(ctx.pos(p)), [a - z for a, z in zip(ctx.num(ctx.pos(p)), ctx.num(ctx.pos(q)))]
+            if abs((x[0] - c[0]) * e[0] + (x[1] - c[1]) * e[1]) > TOL * ctx.inst.scale:
+                continue                     # not on the axle
+            if abs(qp[0] * e[0] + qp[1] * e[1]) <= TOL * _size(qp):
+                continue
+            v = ctx.clean(ctx.vel(b, p), "speed")
+            speeds[p] = ctx.vel(b, p)
+            seg = Name(f"{q}{p}" if len(q) == 1 and len(p) == 1 else f"{q}-{p}")
+            return [msg("vehicle.equiprojective", q=Name(q), p=Name(p), body=Name(b, "body"), joint=Name(j.id, "joint"),
+                        seg=seg, vp=Sym("v", p), vq=Sym("v", q), value=Value(v, "speed"),
+                        speed=Value(_magnitude(ctx, v), "speed"))]
+    return []
+
+
+def _axles(ctx: Ctx, b: str, wheels: list) -> int:
+    """How many distinct axle lines b's wheels give (the two wheels of one axle give one)."""
+    lines: list[tuple] = []
+    for j in wheels:
+        if b not in (j.a, j.b):
+            continue
+        e, c = ctx.num(ctx.sol.geometry(j.id).along), ctx.num(ctx.pos(j.at))
+        same = any(abs(e[0] * f[1] - e[1] * f[0]) <= TOL and abs((c[0] - d[0]) * f[0] + (c[1] - d[1]) * f[1])
+                   <= TOL * ctx.inst.scale for f, d in lines)
+        if not same:
+            lines.append((e, c))
+    return len(lines)
+
+
+def _magnitude(ctx: Ctx, v: tuple):
+    """|v|, a formula for a symbolic model."""
+    if ctx.symbolic:
+        import sympy
+
+        return sympy.simplify(sympy.sqrt(sympy.expand(v[0] ** 2 + v[1] ** 2)))
+    return _size(v)
+
+
+def _carried(ctx: Ctx, b: str, witness: str) -> list:
+    """v_P = v_W of each pin b shares with another body (C5-2.2's O: "la velocitat del punt
+    d'articulació O també és rω"): a translating body moves its points alike."""
+    value = ctx.clean(ctx.vel(b, witness), "speed")
+    out = []
+    for p in ctx.model.bodies[b].points:
+        if p != witness and len(ctx.model.carriers(p)) > 1:
+            target = Term(Sym("v", ctx.point_label(p, b)), value, Ann("?"), Ann("?"), unknown=True, kind="point")
+            side = Term(Sym("v", ctx.point_label(witness, b)), value, Ann("M"), Ann("D"), kind="point")
+            out.append(Equation(target, [[side]], "v", ctx.ref(p, b), figure=False))
+    return out
+
+
+def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speeds: Optional[dict] = None) -> list:
     ident = Sym("I", f"{ctx.frame},{b}", vector=False)
     w = omega_sym(b)
     out: list = [msg("vehicle.centre", body=Name(b, "body"), first=why[0], second=why[1], centre=ident,
                      where=Value(ctx.clean(_exact_centre(ctx, b, centre), "len"), "len"))]
-    for k, p in enumerate([witness] + [q for q in ctx.model.bodies[b].points if q != witness]):
+    known = set(speeds or ()) - {witness}
+    for k, p in enumerate([witness] + [q for q in ctx.model.bodies[b].points if q != witness and q not in known]):
         arm = Inline([ident, " ", Name(p)])
         value = ctx.clean(ctx.vel(b, p), "speed")
         term = Term(Sym("v", f"{p}I"), value, Ann("?") if k == 0 else Ann("M", [w, "·", arm]),

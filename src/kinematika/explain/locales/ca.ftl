@@ -406,6 +406,10 @@ composition-pin = { $point } és el passador de l’enllaç { $joint }, punt de 
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)
 vehicle-line-velocity = la perpendicular a { $sym } pel punt { $point }
+vehicle-equiprojective = Per la propietat d’equiprojectivitat ({ $q } i { $p } són punts { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }), les seves velocitats tenen la mateixa component segons { $seg }: { $vp } · { $seg } = { $vq } · { $seg }. { $p } és a l’eix de la roda { $joint }, de manera que { $vp } té la direcció del pla de la roda: { $vp } = { $value }, de mòdul { $speed }.
 vehicle-centre = El CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -507,6 +511,8 @@ centre-rate = a partir de la velocitat angular trobada més amunt a través { EL
 centre-check = Comprovació amb les velocitats trobades: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
+how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
+how-glides = ({ $p } i { $q } recorren a cada instant la recta { $line }: llisca al llarg d’ella i no gira)
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
 centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte
@@ -558,6 +564,14 @@ how-translates = (es trasllada respecte { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     })
+pair-relation_v = Vistos des { ELISION($holder) ->
+        [vowel] d’{ $holder }
+       *[other] de { $holder }
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen l’un sobre l’altre (enllaç { $joint }), de manera que { $equation } (amb { $radii }):
+pair-relation = Vistos des { ELISION($holder) ->
+        [vowel] d’{ $holder }
+       *[other] de { $holder }
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen l’un sobre l’altre (enllaç { $joint }), de manera que { $equation } a cada instant; derivant, amb els radis constants, { $derived } (amb { $radii }):
 drive-relation_a = Derivant, amb els radis constants: { $equation } (amb { $radii }):
 drive-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
