@@ -10,6 +10,7 @@ from typing import Any, Optional
 
 import numpy as np
 
+from ..joints.capabilities import Centre
 from ..model.model import PointRef
 from ..questions import QUESTIONS, answer
 from .options import DrawOptions
@@ -186,7 +187,7 @@ def _normals(scene: Scene) -> None:
     the normal to the wheel's plane (to the slot) at the joint: the centre lies on it. Two
     wheels on one axle give one line."""
     for j in scene.joints:
-        if j.kind.centre != "normal" or j.at is None or j.along is None:
+        if j.kind.centre is not Centre.NORMAL or j.at is None or j.along is None:
             continue
         mark = next((m for m in scene.marks if m.kind == "icr" and not m.rest
                      and set(m.pair) == {j.a, j.b}), None)

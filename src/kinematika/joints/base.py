@@ -17,7 +17,10 @@ and lives in the kind's module, asked for by the rest of the package through thi
 - for structure and instant centres: the scalar conditions it imposes in the plane
   (`conditions`), its pairs in a group's name (`chain`: R, P, or PR), and where the relative
   instant centre of its two bodies is (`centre`);
-- how it is drawn, explained and built from Python (`route`, `builder`).
+- how it is drawn and built from Python (`symbol`, `builder`).
+
+The capabilities that are words, not yes/no, are typed in `joints.capabilities`
+(`Coordinate`, `Centre`, `Chain`, `Side`, `PointOn`, `Need`).
 
 The rows receive the level `lv` and the instant `inst` as arguments and only call their
 methods, so a joint module needs nothing of the engine (sympy's `Joint` and pinocchio's
@@ -33,6 +36,7 @@ from typing import Any, Callable, ClassVar, Optional
 from ..algebra.vectors import dot, sub
 from ..errors import KinematikaError, Names, Num, Said
 from . import positions
+from .capabilities import Centre, CentreLine, Chain, Coordinate, Need, PointOn, Side
 
 AXES = "xyz"
 
@@ -78,8 +82,8 @@ class JointKind:
     summary: ClassVar[str] = ""             # one line for the docs and messages
     dimensions: ClassVar[tuple[int, ...]] = (2, 3)   # the models it exists in
     # capabilities --------------------------------------------------------------------------
-    coordinate: ClassVar[Optional[str]] = None   # "angle" (degrees, rad/s) or "length": its own
-                                                 # coordinate, which drivers may give the rate of
+    coordinate: ClassVar[Optional[Coordinate]] = None   # an angle (degrees, rad/s) or a length:
+                                                 # its own coordinate, which drivers may give the rate of
     sweepable: ClassVar[bool] = False       # a sweep (and `move`) may advance that coordinate
     pins: ClassVar[bool] = False            # the bodies share the point `at` (its motion)
     ball: ClassVar[bool] = False            # ... and turn freely about it, every way (3D)
@@ -94,23 +98,27 @@ class JointKind:
     velocity_only: ClassVar[tuple[int, ...]] = ()   # the dimensions in which its condition is on
                                             # velocities only (non-holonomic: a motion with it
                                             # is followed in time, `simulate`, not swept)
-    along_in: ClassVar[str] = "a"           # the body `along` is fixed in
-    centre: ClassVar[str] = ""              # where it puts the relative instant centre of its two
-                                            # bodies by itself: "pin" (at `at`), "contact" (the
-                                            # contact point), "infinity" (normal to the sliding),
-                                            # "rest" (none: they move as one); "normal" (only a
-                                            # line: the common normal at the contact); "" none
-    chain: ClassVar[str] = ""               # the lower pairs it is in a chain, read from a to b:
-                                            # "R", "P", or "PR" for a pin in a slot (a slider
-                                            # block between); names dyads (RRR, RRP, …)
-    route: ClassVar[str] = "pair"           # how an explanation treats it (explain.group)
-    centre_line: ClassVar[str] = ""         # with centre "normal": which line, in the explanation's
+    along_in: ClassVar[Side] = Side.A       # the body `along` is fixed in
+    centre: ClassVar[Centre] = Centre.NONE  # where it puts the relative instant centre of its two
+                                            # bodies by itself: at `at` (PIN), at the contact
+                                            # point (CONTACT), normal to the sliding (INFINITY),
+                                            # none as they move as one (REST); only a line: the
+                                            # common normal at the contact (NORMAL)
+    chain: ClassVar[Chain] = Chain.NONE     # the lower pairs it is in a chain, read from a to b:
+                                            # R, P, or PR for a pin in a slot (a slider block
+                                            # between); names dyads (RRR, RRP, …)
+    centre_line: ClassVar[CentreLine] = ""         # with centre "normal": which line, in the explanation's
                                             # words (its message `centre-line-…`)
     # what the file says: each optional key of a joint and whether this kind needs it
     # ("required", "optional", "required in 3D" — and then absent in a planar model —,
     # "optional in 3D"; a key not listed is refused), and the bodies that must carry `at`
-    fields: ClassVar[dict[str, str]] = {}
-    point_on: ClassVar[str] = ""            # "ab": both bodies carry `at`; "b": the second one
+    fields: ClassVar[dict[str, Need]] = {}
+    point_on: ClassVar[PointOn] = PointOn.NONE   # the bodies that carry `at`: both, or the second
+
+    def along_body(self, joint: Any) -> str:
+        """The body the joint's `along` is fixed in (`along_in`): its `a`, or its `b` for a
+        knife edge."""
+        return joint.b if self.along_in is Side.B else joint.a
 
     def conditions(self, dim: int) -> int:
         """The independent scalar conditions it imposes on the pair's relative motion."""
@@ -125,8 +133,7 @@ class JointKind:
         if joint.at is not None:
             geo.at = inst.points[joint.at]
         if joint.along is not None:
-            fixed_in = joint.b if self.along_in == "b" else joint.a
-            geo.along = inst.body_direction(fixed_in, joint.along, f"{joint.where}.along")
+            geo.along = inst.body_direction(self.along_body(joint), joint.along, f"{joint.where}.along")
             geo.perps = sp.perpendiculars(geo.along, bk.sqrt)
         if joint.axis is not None:
             geo.axis = inst.direction(joint.axis, f"{joint.where}.axis")

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from .capabilities import Centre, PointOn
 from ..errors import Said
 from . import symbols
 from .base import JointGeometry, JointKind, Rows
@@ -25,11 +26,10 @@ class Contact(JointKind):
     summary = "the bodies' outlines (circles, lines, curves, a cam's profile, or point `at`) touch and may slide"
     dimensions = (2,)
     touches = True
-    route = "contact"
-    centre = "normal"
+    centre = Centre.NORMAL
     centre_line = "normal"                 # the common normal at the contact
     fields = {"at": "optional"}
-    point_on = "b"
+    point_on = PointOn.B
     keeps = "row-touching"          # the message of its condition (errors' catalogue)
     """The condition's words (a row's label), with the bodies' names."""
 

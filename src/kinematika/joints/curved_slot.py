@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from .capabilities import Centre, Coordinate, PointOn
 from ..errors import KinematikaError, Said
 from ..shapes import Circle, Curve
 from . import symbols
@@ -30,15 +31,14 @@ class CurvedSlot(JointKind):
     name = "curved_slot"
     summary = "point `at` of the second body slides along the first body's circle or curve; rotation free"
     dimensions = (2,)
-    coordinate = "length"
+    coordinate = Coordinate.LENGTH
     slides = True
     guides_point = True
     touches = True
-    route = "slot"
-    centre = "normal"
+    centre = Centre.NORMAL
     centre_line = "normal"                 # the common normal at the pin
     fields = {"at": "required"}
-    point_on = "b"
+    point_on = PointOn.B
 
     def conditions(self, dim: int) -> int:
         """One: the pin stays on the slot's curve; its motion along the slot and the relative

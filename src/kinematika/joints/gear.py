@@ -16,7 +16,6 @@ class Gear(Rolling):
 
     name = "gear"
     summary = "the pitch circles of the two bodies roll on each other (`internal` for a ring)"
-    route = "contact"
     pitch = True
 
     def conditions(self, dim: int) -> int:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from .capabilities import Centre, Chain, Coordinate
 from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import same_rotation, sliding
@@ -23,11 +24,10 @@ class Prismatic(JointKind):
     name = "prismatic"
     summary = "the second body slides along a direction fixed in the first; no relative rotation"
     sweepable = True
-    coordinate = "length"
+    coordinate = Coordinate.LENGTH
     slides = True
-    chain = "P"
-    centre = "infinity"
-    route = "slider"
+    chain = Chain.P
+    centre = Centre.INFINITY
     fields = {"along": "required", "axis": "optional in 3D"}
 
     def conditions(self, dim: int) -> int:

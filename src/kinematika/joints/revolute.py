@@ -12,6 +12,7 @@ from typing import Any, Optional
 
 import numpy as np
 
+from .capabilities import Centre, Chain, Coordinate, PointOn
 from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident, turning
@@ -25,13 +26,12 @@ class Revolute(JointKind):
     name = "revolute"
     summary = "the two bodies share point `at` and turn relative to each other about it"
     sweepable = True
-    coordinate = "angle"
+    coordinate = Coordinate.ANGLE
     pins = True
-    chain = "R"
-    centre = "pin"
-    route = "pin"
+    chain = Chain.R
+    centre = Centre.PIN
     fields = {"at": "required", "axis": "required in 3D"}
-    point_on = "ab"
+    point_on = PointOn.AB
 
     def conditions(self, dim: int) -> int:
         """Two in the plane (the point `at` shared), five in space (shared, and turning only

@@ -12,6 +12,7 @@ import math
 from dataclasses import replace
 from typing import Any, Optional
 
+from .capabilities import Centre
 from ..algebra.vectors import sub
 from ..errors import Said
 from ..shapes import Circle, Disc, Plane
@@ -31,8 +32,7 @@ class Rolling(JointKind):
     touches = True
     rolls = True
     velocity_only = (3,)              # a disc on a plane: where it has rolled depends on the path
-    centre = "contact"
-    route = "contact"
+    centre = Centre.CONTACT
     fields = {"at": "optional", "internal": "optional"}
 
     def conditions(self, dim: int) -> int:

@@ -12,6 +12,7 @@ from typing import Any, Optional
 
 import numpy as np
 
+from .capabilities import Centre, Chain, Coordinate, PointOn
 from . import symbols
 from .base import JointGeometry, JointKind, Rows, off_line
 from .derivatives import sliding
@@ -25,15 +26,14 @@ class Slot(JointKind):
     name = "slot"
     summary = "point `at` of the second body slides along a line fixed in the first; rotation free"
     dimensions = (2,)
-    coordinate = "length"
+    coordinate = Coordinate.LENGTH
     slides = True
     guides_point = True
-    chain = "PR"                   # the slot's line in a, a slider block, the pin of b
-    centre = "normal"                 # on the normal to `along` at `at`
+    chain = Chain.PR                   # the slot's line in a, a slider block, the pin of b
+    centre = Centre.NORMAL                 # on the normal to `along` at `at`
     centre_line = "slot"                   # the normal to the slot at the pin
-    route = "slot"
     fields = {"at": "required", "along": "required"}
-    point_on = "b"
+    point_on = PointOn.B
 
     def conditions(self, dim: int) -> int:
         """One: the pin stays on the slot's line; sliding along it and turning are free."""

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from .capabilities import PointOn
 from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident
@@ -22,9 +23,8 @@ class Spherical(JointKind):
     dimensions = (3,)
     pins = True
     ball = True
-    route = "pin"
     fields = {"at": "required"}
-    point_on = "ab"
+    point_on = PointOn.AB
 
     def conditions(self, dim: int) -> int:
         """Three: the centre `at` is shared; every relative rotation is free."""

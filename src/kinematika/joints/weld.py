@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from .capabilities import Centre
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident, same_rotation
 from .positions import coincide
@@ -19,8 +20,7 @@ class Weld(JointKind):
     name = "weld"
     summary = "the two bodies move as one"
     rigid = True
-    centre = "rest"
-    route = "weld"
+    centre = Centre.REST
 
     def conditions(self, dim: int) -> int:
         """Three in the plane, six in space: no relative motion at all."""

@@ -12,6 +12,7 @@ from typing import Any, Optional
 
 import numpy as np
 
+from .capabilities import Centre, PointOn, Side
 from ..algebra.vectors import dot, sub
 from . import symbols
 from .base import Holonomic, JointGeometry, JointKind, Rows
@@ -26,14 +27,13 @@ class Wheel(JointKind):
     summary = "knife edge: point `at` of the second body moves only along `along`, fixed in it"
     dimensions = (2,)
     guides_point = True
-    along_in = "b"
-    centre = "normal"                 # on the normal to `along` at `at`
+    along_in = Side.B
+    centre = Centre.NORMAL                 # on the normal to `along` at `at`
     centre_line = "wheel"                  # its axle
     knife_edge = True
     velocity_only = (2,)
-    route = "wheel"
     fields = {"at": "required", "along": "required"}
-    point_on = "b"
+    point_on = PointOn.B
 
     def conditions(self, dim: int) -> int:
         """One, non-holonomic: no sideways velocity of the wheel's point relative to the ground

@@ -228,7 +228,7 @@ def moved_geometry(geo: JointGeometry, poses: Poses, inst: Instant) -> JointGeom
     """A joint's drawn geometry carried by its bodies: `at` by the second body, directions by
     the body they are fixed in (the first; the second for a wheel)."""
     j = geo.joint
-    owner = j.b if j.kind.along_in == "b" else j.a
+    owner = j.kind.along_body(j)
     out = JointGeometry(j)
     if geo.at is not None:
         out.at = poses.point(j.b, geo.at)
