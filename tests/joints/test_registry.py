@@ -83,3 +83,17 @@ def test_every_kind_says_what_the_others_ask(name):
     module = __import__(f"kinematika.joints.{MODULES[name]}", fromlist=["KIND"])
     assert module.__doc__ and ("Condition" in module.__doc__ or "condition" in module.__doc__), \
         f"{name}: its module's docstring says its condition"
+
+
+def test_a_kind_without_its_hooks_cannot_be_made():
+    """`JointKind` is abstract in the hooks every kind must fill (`conditions`, `rows`, `add`):
+    a kind that forgets one fails where it is made (`KIND = Name()`), not at its first model."""
+    class Half(JointKind):
+        name = "half"
+
+        def conditions(self, dim: int) -> int:
+            return 1
+
+    with pytest.raises(TypeError, match="abstract"):
+        Half()
+    assert JointKind.__abstractmethods__ == {"conditions", "rows", "add"}

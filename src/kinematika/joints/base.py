@@ -30,13 +30,20 @@ from __future__ import annotations
 
 import functools
 import inspect
+from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
-from typing import Any, Callable, ClassVar, Optional
+from typing import TYPE_CHECKING, Any, Callable, ClassVar, Optional
 
 from ..algebra.vectors import dot, sub
 from ..errors import KinematikaError, Names, Num, Said
+from ..expressions import PointPair
 from . import positions
 from .capabilities import Centre, CentreLine, Chain, Coordinate, Need, PointOn, Side
+from .positions import Residual
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Pose, Scalar
+
+if TYPE_CHECKING:
+    from .symbols import Mark
 
 AXES = "xyz"
 
@@ -47,16 +54,31 @@ class JointGeometry:
     unit directions (fixed in body `a`, in `b` for a knife edge) and their unit normals,
     and the contact of a rolling pair."""
 
-    joint: Any
-    at: Any = None                          # a tuple of numbers or formulas, or None
-    along: Any = None                       # unit; fixed in body a (b for a `wheel`)
-    axis: Any = None                        # unit; fixed in body a
-    perps: list = field(default_factory=list)   # unit normals to `along` or `axis`
-    contact: Any = None                     # a touching pair's contact (`Contact`, `Touch`)
+    joint: ModelJoint
+    at: Optional[tuple] = None              # a tuple of numbers or formulas, or None
+    along: Optional[tuple] = None           # unit; fixed in body a (b for a `wheel`)
+    axis: Optional[tuple] = None            # unit; fixed in body a
+    perps: list[tuple] = field(default_factory=list)   # unit normals to `along` or `axis`
+    contact: object = None                  # a touching pair's contact (`touching.Touch`, `rolling_contact.Contact`)
     roller: float = 0.0                     # a cam follower's roller radius (drawn about `at`)
 
+    def point_at(self) -> tuple:
+        """`at`, for a kind whose joints carry it (their `fields` require it)."""
+        assert self.at is not None, f"{self.joint.where}: no point"
+        return self.at
 
-Rows = list[tuple[Any, Said]]          # each condition and its message (errors' catalogue)
+    def unit_along(self) -> tuple:
+        """`along`, for a kind whose joints carry it."""
+        assert self.along is not None, f"{self.joint.where}: no direction along"
+        return self.along
+
+    def unit_axis(self) -> tuple:
+        """`axis`, for a kind whose joints carry it (in 3D)."""
+        assert self.axis is not None, f"{self.joint.where}: no axis"
+        return self.axis
+
+
+Rows = list[tuple[Scalar, Said]]       # each condition (a linear form) and its message (errors' catalogue)
 
 
 @dataclass
@@ -70,13 +92,19 @@ class Holonomic:
     (one list of weights per value), so that the Jacobian of the values is those weights times
     the engine's velocity matrix; None: the values are the rows themselves, one for one."""
 
-    values: Callable[[Any, float], list]
-    weights: Optional[Callable[[Any], list]] = None
+    values: Residual
+    weights: Optional[Callable[[Pose], list]] = None
 
 
-class JointKind:
+class JointKind(ABC):
     """A kind of joint: its name in model files and everything it means (see the module's
-    docstring). One instance per kind, registered in `kinematika.joints.KINDS`."""
+    docstring). One instance per kind, registered in `kinematika.joints.KINDS`.
+
+    A new kind must fill `conditions`, `rows` and `add` (abstract: a kind without them cannot
+    be made) and set its `name`, `summary`, `fields` and capabilities; `prepare`, `residual`,
+    `holonomic`, `displacement`, `moved`, `rate` and `symbol` have defaults that a kind
+    overrides as it needs (sympy's `Joint` is the pattern: an abstract base whose subclasses
+    fill the hooks it calls). What the hooks receive is typed in `joints.seam`."""
 
     name: ClassVar[str] = ""
     summary: ClassVar[str] = ""             # one line for the docs and messages
@@ -115,17 +143,17 @@ class JointKind:
     fields: ClassVar[dict[str, Need]] = {}
     point_on: ClassVar[PointOn] = PointOn.NONE   # the bodies that carry `at`: both, or the second
 
-    def along_body(self, joint: Any) -> str:
+    def along_body(self, joint: ModelJoint) -> str:
         """The body the joint's `along` is fixed in (`along_in`): its `a`, or its `b` for a
         knife edge."""
         return joint.b if self.along_in is Side.B else joint.a
 
+    @abstractmethod
     def conditions(self, dim: int) -> int:
         """The independent scalar conditions it imposes on the pair's relative motion."""
-        raise NotImplementedError
 
     # at an instant ------------------------------------------------------------------------
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Instant, joint: ModelJoint) -> JointGeometry:
         """Evaluate the joint's point and directions, and check its geometry holds (else a
         `geometry` error naming the joint and the gap)."""
         sp, bk = inst.space, inst.backend
@@ -139,43 +167,43 @@ class JointKind:
             geo.axis = inst.direction(joint.axis, f"{joint.where}.axis")
         return geo
 
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+    @abstractmethod
+    def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """The conditions at the level `lv`, each (a linear form that must vanish, a label)."""
-        raise NotImplementedError
 
-    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Callable[[Any, float], list]:
+    def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """The condition itself, for sweeps (`joints.positions`): a function of a pose and the
         increment whose rows are the integrals of `rows`, row for row."""
         raise KinematikaError("schema", "sweep-velocity-only", geo.joint.where, kind=self.name, dim=inst.space.dim,
                               in_time=str(inst.space.dim in self.velocity_only).lower())
 
-    def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
+    def holonomic(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Holonomic:
         """The condition's part on positions (`Holonomic`), for a motion integrated in time: the
         whole condition (`residual`, row for row the engine's) unless the kind is constrained
         on velocities only (a knife edge, a disc rolling on a plane), which says what is left."""
         return Holonomic(self.residual(inst, geo, ref))
 
-    def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Callable[[Any, float], list]:
+    def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Residual:
         """The position form of a driver of the joint's rate: the coordinate's change from
         the drawing, less the sweep's increment when it is the swept one (a length here:
         the pin's or the reference point's offset along `along`)."""
         a, b = geo.joint.a, geo.joint.b
         p0 = geo.at if geo.at is not None else ref
         return lambda q, dq: [positions.dot(positions.differences(q.point(b, p0), q.point(a, p0)),
-                                            q.turn(a, geo.along)) - (dq if swept else 0.0)]
+                                            q.turn(a, geo.unit_along())) - (dq if swept else 0.0)]
 
-    def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
+    def moved(self, geo: JointGeometry, inst: Instant, hint: object = None) -> Optional[JointGeometry]:
         """The joint's geometry at a sweep's new pose, when it must be found anew there (a
         contact that moves along its outlines; `geo` is the geometry as its bodies carried
         it, `hint` what the sweep remembers of it); None: carried by its bodies as drawn."""
         return None
 
-    def rate(self, geo: JointGeometry, lv: Any) -> Any:
+    def rate(self, geo: JointGeometry, lv: Level) -> Scalar:
         """The rate of the joint's coordinate (b relative to a), or its derivative at the
         acceleration level; only for a kind with a `coordinate`."""
         raise self.no_rate(geo.joint.where)
 
-    def check_fields(self, given: dict[str, Any], dim: int, where: str) -> None:
+    def check_fields(self, given: dict[str, object], dim: int, where: str) -> None:
         """The joint's keys for this kind in a model of `dim` dimensions: its model exists,
         the keys it needs are given and no other (a `schema` error naming the joint)."""
         if dim not in self.dimensions:
@@ -198,23 +226,24 @@ class JointKind:
         return KinematikaError("schema", "joint-no-rate", where, kind=self.name)
 
     # drawn -----------------------------------------------------------------------------------
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[Mark]:
         """How a figure draws it (`joints.symbols.Mark`s): `view` its place on the page (its
         point, directions, contact), `ctx` the figure's (see `joints.symbols`)."""
         return []
 
     # from Python ---------------------------------------------------------------------------
-    def add(self, m: Any, a: str, b: str, *args: Any, **fields: Any) -> str:
+    @abstractmethod
+    def add(self, m: Mechanism, a: str, b: str, *args: Any, **fields: Any) -> str:
         """Add a joint of this kind between bodies `a` and `b` to the `Mechanism` `m`; its id.
-        Each kind names its own fields (`Revolute.add(m, a, b, at, axis=None, id=None)`)."""
-        return m.joint(self.name, a, b, *args, **fields)
+        Each kind names its own fields (`Revolute.add(m, a, b, at, axis=None, id=None)`), and
+        passes them on as `m.joint(self.name, a, b, id, **fields)`."""
 
     def builder(self) -> Callable[..., str]:
         """The `Mechanism` method named after this kind (`m.revolute(...)`): its `add`."""
         add, kind = type(self).add, self
 
         @functools.wraps(add)
-        def method(m: Any, *args: Any, **kwargs: Any) -> str:
+        def method(m: Mechanism, *args: Any, **kwargs: Any) -> str:
             return add(kind, m, *args, **kwargs)
 
         signature = inspect.signature(add)
@@ -244,14 +273,14 @@ def rounding_hint(gap: float, scale: float, point: "str | Said") -> Said:
     return Said("rounding-hint", tolerance=Num(1e-6 * scale, ".2g"), point=point)
 
 
-def off_line(inst: Any, joint: Any, geo: JointGeometry) -> None:
+def off_line(inst: Instant, joint: ModelJoint, geo: JointGeometry) -> None:
     """A slot's pin must lie on the slot's line PQ when the slot is given by two points:
     else a `geometry` error with the gap."""
     along = joint.along
-    if not hasattr(along, "start"):
+    if not isinstance(along, PointPair) or joint.at is None:
         return
     start = inst.points[along.start]
-    gap = inst.num(dot(sub(geo.at, start), geo.perps[0]))
+    gap = inst.num(dot(sub(geo.point_at(), start), geo.perps[0]))
     if abs(gap) > 1e-6 * inst.scale:
         raise KinematikaError("geometry", "slot-off-line", joint.where, point=joint.at, line=f"{along.start}{along.end}",
                               gap=Num(gap, ".6g"), hint=rounding_hint(gap, inst.scale, joint.at))

@@ -12,10 +12,10 @@ centre); the pressure angle is that normal's angle from the follower's direction
 """
 from __future__ import annotations
 
-from typing import Any
 
 import numpy as np
 
+from .seam import DrawContext, Instant, JointView, ModelJoint
 from ..errors import KinematikaError
 from ..shapes import Cam as CamShape
 from ..shapes import Line
@@ -37,7 +37,7 @@ class Cam(Contact):
         """One: the follower keeps touching the cam (a higher pair, planar only)."""
         return 1
 
-    def outlines(self, inst: Any, joint: Any, geo: JointGeometry) -> tuple[list, list]:
+    def outlines(self, inst: Instant, joint: ModelJoint, geo: JointGeometry) -> tuple[list, list]:
         """The cam's profile and the follower's flat face (its `line`), or the point `at` and
         the profile (a knife edge) or the pitch curve (a roller's centre; `geo.roller` its
         radius). A cam joint whose first body has no `cam:` shape, a flat face without a line
@@ -58,7 +58,7 @@ class Cam(Contact):
         curve = cam.pitch if contact.radius > 0 else cam.profile
         return [curve], outlines(inst, joint, joint.b, joint.at)
 
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """The follower's roller (a circle about its centre `at`, moving with it) or knife
         edge (a pin), and the contact point."""
         out = symbols.contact_dot(view, ctx)

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint
+from .positions import Residual
 from ..errors import KinematikaError, Said
 from . import symbols
 from .base import JointGeometry, JointKind, Rows
@@ -31,29 +33,29 @@ class Cylindrical(JointKind):
         forbidden (turning about it and sliding along it are free)."""
         return 4
 
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Instant, joint: ModelJoint) -> JointGeometry:
         """The axis's two unit normals n₁, n₂, across which neither rotation nor sliding is
         allowed."""
         geo = super().prepare(inst, joint)
-        geo.perps = inst.space.perpendiculars(geo.axis, inst.backend.sqrt)
+        geo.perps = inst.space.perpendiculars(geo.unit_axis(), inst.backend.sqrt)
         return geo
 
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+    def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """(ω_b − ω_a)·nₖ = 0 and v_rel·nₖ = 0 at `at`, for the axis's two normals nₖ (four
         rows)."""
         j = geo.joint
         rows = [(turning(lv, j.a, j.b, p), Said("row-turning-axis", n=k + 1))
                 for k, p in enumerate(geo.perps)]
-        rows += [(sliding(lv, j.a, j.b, geo.at, p), Said("row-sliding-axis", n=k + 1))
+        rows += [(sliding(lv, j.a, j.b, geo.point_at(), p), Said("row-sliding-axis", n=k + 1))
                  for k, p in enumerate(geo.perps)]
         return rows
 
-    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+    def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """The axis kept, the offset across it kept."""
         a, b = geo.joint.a, geo.joint.b
-        return lambda q, _: axis_kept(q, a, b, geo.axis, geo.perps) + across(q, a, b, geo.at, geo.perps)
+        return lambda q, _: axis_kept(q, a, b, geo.unit_axis(), geo.perps) + across(q, a, b, geo.point_at(), geo.perps)
 
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """A block on its guide, as a prismatic pair."""
         return symbols.block_on_guide(view, ctx)
 
@@ -63,7 +65,7 @@ class Cylindrical(JointKind):
         axis."""
         return KinematikaError("schema", "cylindrical-two-rates", where)
 
-    def add(self, m: Any, a: str, b: str, at: str, axis: Any, id: Optional[str] = None) -> str:
+    def add(self, m: Mechanism, a: str, b: str, at: str, axis: Any, id: Optional[str] = None) -> str:
         """`b` turns about and slides along `axis` through point `at`, fixed in `a`."""
         return m.joint(self.name, a, b, id, at=at, axis=axis)
 

@@ -6,8 +6,9 @@ Condition: v_J(b) = v_J(a) at the pitch point J (see `rolling`).
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Optional
 
+from .seam import Mechanism
 from .rolling import Rolling
 
 
@@ -23,7 +24,7 @@ class Gear(Rolling):
         are held by other joints (its rows are rolling's, v_J(b) = v_J(a))."""
         return 1
 
-    def add(self, m: Any, a: str, b: str, internal: bool = False,  # type: ignore[override]
+    def add(self, m: Mechanism, a: str, b: str, internal: bool = False,  # type: ignore[override]
             id: Optional[str] = None) -> str:
         """The pitch circles of `a` and `b` mesh (`internal=True` for a ring gear)."""
         return m.joint(self.name, a, b, id, internal=internal)

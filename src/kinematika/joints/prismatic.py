@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Scalar
+from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate
 from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
@@ -35,16 +37,16 @@ class Prismatic(JointKind):
         (only the slide along the guide is free)."""
         return 2 if dim == 2 else 5
 
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Instant, joint: ModelJoint) -> JointGeometry:
         """In 3D a prismatic pair given by its `axis` alone slides along that axis: `along` is
         the axis and the guide's normals its two perpendiculars."""
         geo = super().prepare(inst, joint)
         if inst.space.dim == 3 and geo.along is None:
             geo.along = geo.axis
-            geo.perps = inst.space.perpendiculars(geo.along, inst.backend.sqrt)
+            geo.perps = inst.space.perpendiculars(geo.unit_along(), inst.backend.sqrt)
         return geo
 
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+    def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """ω_b − ω_a = 0 (one row in the plane, three in space) and v_rel·n = 0 for each normal
         n of the guide, at `at` or the reference point; the acceleration rows add the Coriolis
         term 2 v_rel·(ω_a × n)."""
@@ -56,23 +58,23 @@ class Prismatic(JointKind):
                  for k, n in enumerate(geo.perps)]
         return rows
 
-    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+    def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """No relative rotation; the offset across the guide kept."""
         a, b = geo.joint.a, geo.joint.b
         p0 = geo.at if geo.at is not None else ref
         return lambda q, _: q.rotation_error(a, b) + across(q, a, b, p0, geo.perps)
 
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """A block on its guide (a fixed guide hatched)."""
         return symbols.block_on_guide(view, ctx)
 
-    def rate(self, geo: JointGeometry, lv: Any) -> Any:
+    def rate(self, geo: JointGeometry, lv: Level) -> Scalar:
         """(v_Qb − v_Qa)·u along the guide u (its derivative with the Coriolis term)."""
         j = geo.joint
         q = geo.at if geo.at is not None else lv.ref
-        return sliding(lv, j.a, j.b, q, geo.along)
+        return sliding(lv, j.a, j.b, q, geo.unit_along())
 
-    def add(self, m: Any, a: str, b: str, along: Any, id: Optional[str] = None) -> str:
+    def add(self, m: Mechanism, a: str, b: str, along: Any, id: Optional[str] = None) -> str:
         """`b` slides on `a` along `along` (a vector or two points): `m.prismatic("ground", "slider", along=(1, 0))`."""
         return m.joint(self.name, a, b, id, along=along)
 

@@ -12,6 +12,8 @@ from typing import Any, Optional
 
 import numpy as np
 
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Scalar
+from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate, PointOn
 from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
@@ -38,7 +40,7 @@ class Revolute(JointKind):
         about the axis)."""
         return 2 if dim == 2 else 5
 
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Instant, joint: ModelJoint) -> JointGeometry:
         """In 3D, the axis's two unit normals, about which the bodies may not turn relative to
         each other."""
         geo = super().prepare(inst, joint)
@@ -46,36 +48,36 @@ class Revolute(JointKind):
             geo.perps = inst.space.perpendiculars(geo.axis, inst.backend.sqrt)
         return geo
 
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+    def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """v_P(b) − v_P(a) = 0 at `at`, one row per component, and in 3D (ω_b − ω_a)·nₖ = 0 for
         the axis's two normals."""
         j = geo.joint
         rows = [(c, Said("row-moves-with", point=f"{j.at}@{j.b}", other=f"{j.at}@{j.a}", axis=AXES[i]))
-                for i, c in enumerate(coincident(lv, j.a, j.b, geo.at))]
+                for i, c in enumerate(coincident(lv, j.a, j.b, geo.point_at()))]
         rows += [(turning(lv, j.a, j.b, p), Said("row-turning-axis", n=k + 1))
                  for k, p in enumerate(geo.perps)]
         return rows
 
-    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+    def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """P_b − P_a at the pin (and the axis kept, in 3D)."""
-        a, b, p0 = geo.joint.a, geo.joint.b, geo.at
+        a, b, p0 = geo.joint.a, geo.joint.b, geo.point_at()
         if inst.space.dim == 2:
             return lambda q, _: coincide(q, a, b, p0)
-        return lambda q, _: coincide(q, a, b, p0) + axis_kept(q, a, b, geo.axis, geo.perps)
+        return lambda q, _: coincide(q, a, b, p0) + axis_kept(q, a, b, geo.unit_axis(), geo.perps)
 
-    def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Any:
+    def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Residual:
         """The angle turned about the axis since the drawing, less the increment."""
         a, b = geo.joint.a, geo.joint.b
         return lambda q, dq: [q.axis_angle_error(a, b, geo.axis, dq if swept else 0.0)]
 
-    def rate(self, geo: JointGeometry, lv: Any) -> Any:
+    def rate(self, geo: JointGeometry, lv: Level) -> Scalar:
         """ω_b − ω_a (planar), (ω_b − ω_a)·e about the axis e (3D)."""
         j, sp = geo.joint, lv.space
         if sp.dim == 2:
             return sp.rot_sub(lv.omega(j.b), lv.omega(j.a))
-        return turning(lv, j.a, j.b, geo.axis)
+        return turning(lv, j.a, j.b, geo.unit_axis())
 
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """A pin; on a fixed pivot's triangle when the frame is one of its bodies; its axis (3D)."""
         if view.at is None:
             return []
@@ -86,7 +88,7 @@ class Revolute(JointKind):
                                     moves_with=symbols.mover(view, ctx)))
         return out + symbols.pin(view, ctx)
 
-    def add(self, m: Any, a: str, b: str, at: str, axis: Any = None, id: Optional[str] = None) -> str:
+    def add(self, m: Mechanism, a: str, b: str, at: str, axis: Any = None, id: Optional[str] = None) -> str:
         """A pin between `a` and `b` at point `at` (about `axis` in 3D): `m.revolute("ground", "crank", at="O")`."""
         return m.joint(self.name, a, b, id, at=at, axis=axis)
 

@@ -12,6 +12,8 @@ import math
 from dataclasses import replace
 from typing import Any, Optional
 
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Pose
+from .positions import Residual
 from .capabilities import Centre
 from ..algebra.vectors import sub
 from ..errors import Said
@@ -20,7 +22,7 @@ from . import symbols
 from .base import AXES, Holonomic, JointGeometry, JointKind, Rows
 from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
-from .rolling_contact import drawn_pair, find_contact
+from .rolling_contact import contact_of, drawn_pair, find_contact
 from .tangency import circles_tangency
 
 
@@ -40,24 +42,24 @@ class Rolling(JointKind):
         v_J(b) = v_J(a))."""
         return 2 if dim == 2 else 3
 
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Instant, joint: ModelJoint) -> JointGeometry:
         """The contact of the two shapes at this instant (`geo.contact`: the point J, its
         normal, and its motion J̇ for the acceleration rows)."""
         geo = super().prepare(inst, joint)
         geo.contact = find_contact(inst, joint)
         return geo
 
-    def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
+    def moved(self, geo: JointGeometry, inst: Instant, hint: object = None) -> Optional[JointGeometry]:
         """The carried geometry with the contact found anew where the circles now touch (the
         drawn contact point `at` does not travel with either body); whether they touch is for
         the caller to judge (a sweep's residual, a simulation's projection)."""
         geo.contact = find_contact(inst, replace(geo.joint, at=None), touching=False)
         return geo
 
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+    def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """v_J(b) − v_J(a) = 0; a_J(b) − a_J(a) − ω_rel × (v_J(a) − J̇) = 0."""
         j, sp = geo.joint, lv.space
-        c = geo.contact
+        c = contact_of(geo)
         diff = coincident(lv, j.a, j.b, c.point)
         if lv.accel:
             w_rel = sp.rot_sub(lv.w(j.b), lv.w(j.a))
@@ -65,11 +67,11 @@ class Rolling(JointKind):
             diff = sub(diff, sp.cross(w_rel, rolling_velocity))
         return [(x, Said("row-no-slip", body=j.a, other=j.b, axis=AXES[i])) for i, x in enumerate(diff)]
 
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """The contact point (a still figure only: it is no body's point)."""
         return symbols.contact_dot(view, ctx)
 
-    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+    def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """Planar circles and lines: the contact kept (normal) and the arcs rolled equal
         (tangential), as one vector whose components are the engine's x and y rows.
 
@@ -89,7 +91,7 @@ class Rolling(JointKind):
             return _on_line(ca, a, cb, b, -1.0)
         return _on_line(cb, b, ca, a, 1.0)
 
-    def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
+    def holonomic(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Holonomic:
         """In the plane, the whole condition (`residual`). A disc on a plane rolls without
         slipping on velocities only (where it has rolled to depends on the path), and keeps
         touching on positions: the gap σ n·(C − P) − R |n − (n·a) a| (C the disc's centre, a its
@@ -99,7 +101,7 @@ class Rolling(JointKind):
             return super().holonomic(inst, geo, ref)
         return _disc_on_plane(inst, geo.joint)
 
-    def add(self, m: Any, a: str, b: str, at: Optional[str] = None, id: Optional[str] = None) -> str:
+    def add(self, m: Mechanism, a: str, b: str, at: Optional[str] = None, id: Optional[str] = None) -> str:
         """The shapes of `a` and `b` roll on each other (touching at point `at`, if named)."""
         return m.joint(self.name, a, b, id, at=at)
 
@@ -114,7 +116,7 @@ def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle) -> Any:
     d0 = differences(cb.center, ca.center)
     psi0 = math.atan2(d0[1], d0[0])
 
-    def circles(q: Any, _: float) -> list:
+    def circles(q: Pose, _: float) -> list:
         d = differences(q.point(b, cb.center), q.point(a, ca.center))
         dist = math.hypot(*d)
         u = (d[0] / dist, d[1] / dist)
@@ -129,7 +131,7 @@ def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle) -> Any:
     return circles
 
 
-def _disc_on_plane(inst: Any, j: Any) -> Holonomic:
+def _disc_on_plane(inst: Instant, j: Any) -> Holonomic:
     """The gap between a disc and the plane it rolls on, and its rate's weights on the rows."""
     import numpy as np
 
@@ -141,13 +143,13 @@ def _disc_on_plane(inst: Any, j: Any) -> Holonomic:
     side = 1.0 if float(n0 @ (c0 - p0)) >= 0 else -1.0
     sign = side if disc_body == j.b else -side          # the rows are v_J(b) − v_J(a)
 
-    def gap(q: Any, _: float) -> list:
+    def gap(q: Pose, _: float) -> list:
         a = np.asarray(q.turn(disc_body, tuple(a0)))
         n = np.asarray(q.turn(plane_body, tuple(n0)))
         centre = np.asarray(q.point(disc_body, tuple(c0))) - np.asarray(q.point(plane_body, tuple(p0)))
         return [side * float(n @ centre) - float(r[0]) * float(np.linalg.norm(n - (n @ a) * a))]
 
-    def weights(q: Any) -> list:
+    def weights(q: Pose) -> list:
         return [[sign * float(x) for x in q.turn(plane_body, tuple(n0))]]
 
     return Holonomic(gap, weights)
@@ -173,7 +175,7 @@ def _on_line(circle: Any, cbody: str, line: Any, lbody: str, sign: float) -> Any
     r = float(circle.radius)
     x0 = dot(rel0, e0)
 
-    def on_line(q: Any, _: float) -> list:
+    def on_line(q: Pose, _: float) -> list:
         e, n = q.turn(lbody, e0), q.turn(lbody, n0)
         rel = differences(q.point(cbody, circle.center), q.point(lbody, line.through))
         along = dot(rel, e) - x0 + side * r * (q.angle(cbody) - q.angle(lbody))

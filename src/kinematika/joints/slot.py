@@ -12,6 +12,8 @@ from typing import Any, Optional
 
 import numpy as np
 
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Scalar
+from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate, PointOn
 from . import symbols
 from .base import JointGeometry, JointKind, Rows, off_line
@@ -39,25 +41,25 @@ class Slot(JointKind):
         """One: the pin stays on the slot's line; sliding along it and turning are free."""
         return 1
 
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Instant, joint: ModelJoint) -> JointGeometry:
         """The slot's direction and normal at this instant; a slot given by two points must
         have the pin on their line (`off_line`: else a geometry error with the gap)."""
         geo = super().prepare(inst, joint)
         off_line(inst, joint, geo)
         return geo
 
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+    def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """v_rel·n = 0 at the pin, n the slot's normal; the acceleration row adds the Coriolis
         term 2 v_rel·(ω_a × n)."""
         j = geo.joint
-        return [(sliding(lv, j.a, j.b, geo.at, geo.perps[0]), Said("row-slot", point=f"{j.at}@{j.b}", body=j.a))]
+        return [(sliding(lv, j.a, j.b, geo.point_at(), geo.perps[0]), Said("row-slot", point=f"{j.at}@{j.b}", body=j.a))]
 
-    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+    def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """The pin's offset across the slot's line."""
         a, b = geo.joint.a, geo.joint.b
-        return lambda q, _: across(q, a, b, geo.at, geo.perps)
+        return lambda q, _: across(q, a, b, geo.point_at(), geo.perps)
 
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """The slot of the first body (a rounded outline along its line) and the pin in it."""
         if view.at is None or view.along is None:
             return []
@@ -77,12 +79,12 @@ class Slot(JointKind):
                                gid=f"slot:{view.id}", moves_with=None if view.a == ctx.frame else view.a)
         return [outline, *symbols.pin(view, ctx, body=None if view.b == ctx.frame else view.b)]
 
-    def rate(self, geo: JointGeometry, lv: Any) -> Any:
+    def rate(self, geo: JointGeometry, lv: Level) -> Scalar:
         """(v_Pb − v_Pa)·u along the slot u (its derivative with the Coriolis term)."""
         j = geo.joint
-        return sliding(lv, j.a, j.b, geo.at, geo.along)
+        return sliding(lv, j.a, j.b, geo.point_at(), geo.unit_along())
 
-    def add(self, m: Any, a: str, b: str, at: str, along: Any, id: Optional[str] = None) -> str:
+    def add(self, m: Mechanism, a: str, b: str, at: str, along: Any, id: Optional[str] = None) -> str:
         """Point `at` of `b` slides in a slot of `a` along `along`: `m.slot("rocker", "crank", at="A", along=("O4", "B"))`."""
         return m.joint(self.name, a, b, id, at=at, along=along)
 

@@ -5,8 +5,10 @@ Velocity rows: ω_b − ω_a = 0, v_R(b) − v_R(a) = 0 at the reference point R
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Optional
 
+from .seam import Instant, Level, Mechanism
+from .positions import Residual
 from .capabilities import Centre
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident, same_rotation
@@ -26,7 +28,7 @@ class Weld(JointKind):
         """Three in the plane, six in space: no relative motion at all."""
         return 3 if dim == 2 else 6
 
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+    def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """ω_b − ω_a = 0 and v_R(b) − v_R(a) = 0 at the reference point R: the two bodies share
         one twist."""
         j = geo.joint
@@ -35,12 +37,12 @@ class Weld(JointKind):
                  for i, c in enumerate(coincident(lv, j.a, j.b, lv.ref))]
         return rows
 
-    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+    def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """No relative rotation; the points at the reference coincide."""
         a, b = geo.joint.a, geo.joint.b
         return lambda q, _: q.rotation_error(a, b) + coincide(q, a, b, ref)
 
-    def add(self, m: Any, a: str, b: str, id: Optional[str] = None) -> str:
+    def add(self, m: Mechanism, a: str, b: str, id: Optional[str] = None) -> str:
         """`a` and `b` move as one body."""
         return m.joint(self.name, a, b, id)
 

@@ -12,6 +12,7 @@ from typing import Any, Optional
 
 import numpy as np
 
+from .seam import DrawContext, Instant, JointView, Level, Mechanism
 from .capabilities import Centre, PointOn, Side
 from ..algebra.vectors import dot, sub
 from . import symbols
@@ -40,24 +41,24 @@ class Wheel(JointKind):
         it runs on."""
         return 1
 
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+    def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """v_rel(Q_b)·n_b = 0, n_b the normal to `along` fixed in the wheel; at the acceleration
         level (a_Qb − a_Qa − ω_a × v_rel)·n + v_rel·(ω_b × n) = 0, the normal turning with the
         wheel."""
         j, sp = geo.joint, lv.space
         n = geo.perps[0]
-        row = dot(coincident(lv, j.a, j.b, geo.at), n)
+        row = dot(coincident(lv, j.a, j.b, geo.point_at()), n)
         if lv.accel:
-            v_rel = sub(lv.v(j.b, geo.at), lv.v(j.a, geo.at))
+            v_rel = sub(lv.v(j.b, geo.point_at()), lv.v(j.a, geo.point_at()))
             row = row - dot(sp.cross(lv.w(j.a), v_rel), n) + dot(v_rel, sp.cross(lv.w(j.b), n))
         return [(row, Said("row-no-sideways", point=f"{j.at}@{j.b}", body=j.a))]
 
-    def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
+    def holonomic(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Holonomic:
         """None of it: the condition is on velocities only (no sideways slip), so the wheel
         may be anywhere; its place is where the motion in time has taken it."""
         return Holonomic(lambda q, dq: [], lambda q: [])
 
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """A knife edge seen from above: a narrow dark wheel along its rolling direction."""
         if view.at is None or view.along is None:
             return []
@@ -66,7 +67,7 @@ class Wheel(JointKind):
         return [symbols.Mark("polygon", wheel, "ink", "ink", 1.0, zorder=5, gid=f"joint:{view.id}",
                              moves_with=symbols.mover(view, ctx))]
 
-    def add(self, m: Any, a: str, b: str, at: str, along: Any, id: Optional[str] = None) -> str:
+    def add(self, m: Mechanism, a: str, b: str, at: str, along: Any, id: Optional[str] = None) -> str:
         """A knife edge: point `at` of `b` moves relative to `a` only along `along`, fixed in `b`."""
         return m.joint(self.name, a, b, id, at=at, along=along)
 

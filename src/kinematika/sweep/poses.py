@@ -70,7 +70,7 @@ class Poses:
         """b's rotation relative to a, minus `target` (radians)."""
         return [self.angle(b) - (self.angle(a) if a else 0.0) - target]
 
-    def axis_angle_error(self, a: str, b: str, axis: tuple, target: float) -> float:
+    def axis_angle_error(self, a: str, b: str, axis: Optional[tuple], target: float) -> float:
         """b's rotation relative to a minus `target` (radians); in the plane every axis is the
         normal, so `axis` is not needed."""
         return self.angle(b) - self.angle(a) - target
@@ -136,8 +136,9 @@ class SpatialPoses:
             rel = rel @ target.T
         return log_rotation(rel).tolist()
 
-    def axis_angle_error(self, a: str, b: str, axis: tuple, target: float) -> float:
-        """The relative rotation about the joint's axis (fixed in a), minus `target`."""
+    def axis_angle_error(self, a: str, b: str, axis: Optional[tuple], target: float) -> float:
+        """The relative rotation about the joint's axis (fixed in a, given in 3D), minus `target`."""
+        assert axis is not None, "a turning joint in 3D has its axis"
         e = np.asarray(self.turn(a, axis))
         return float(log_rotation(exp_rotation(-target * e) @ self._relative(a, b)) @ e)
 
