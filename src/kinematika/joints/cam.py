@@ -9,6 +9,32 @@ curvature terms of the equivalent link). Over a cycle it reproduces the program:
 translating follower's s(θ), v = s'·θ̇, a = s''·θ̇² + s'·θ̈. The relative instant centre
 of cam and follower lies on the common normal at the contact (for a roller, through its
 centre); the pressure angle is that normal's angle from the follower's direction of motion.
+
+Example: a disc cam (base circle 40) with a translating knife-edge follower, rising 20 by
+simple harmonic motion over β = 90°, caught halfway (θ = 45°) while turning at ω = 3 rad/s.
+By hand, s = (h/2)(1 − cos πθ/β) = 10, so the edge F is at 40 + 10 = 50, and
+v = ω ds/dθ = ω (πh/2β) sin(πθ/β) = 3 × 20π/π × 1 = 60:
+
+    >>> import numpy as np, kinematika
+    >>> sol = kinematika.solve('''
+    ... points: {O: [0, 0], F: [0, 50]}
+    ... bodies:
+    ...   ground: [O]
+    ...   cam:
+    ...     points: [O]
+    ...     cam: {center: O, angle: deg(45), base: 40, rotation: ccw,
+    ...           follower: {motion: translating, contact: knife},
+    ...           program: [{law: harmonic, over: 90, to: 20}, {law: harmonic, over: 90, to: 0},
+    ...                     {law: dwell, over: 180}]}
+    ...   follower: [F]
+    ... joints:
+    ...   - {type: revolute, bodies: [ground, cam], at: O}
+    ...   - {type: prismatic, bodies: [ground, follower], along: [0, 1]}
+    ...   - {type: cam, bodies: [cam, follower], at: F}
+    ... drivers: [{omega: cam, value: 3}]
+    ... ''')
+    >>> np.allclose(sol.velocity("F"), (0, 60))
+    True
 """
 from __future__ import annotations
 

@@ -7,6 +7,20 @@ Condition: the contact is kept, one scalar condition (`touching`): at the veloci
 second derivative of the distance between the centres of curvature Ca and Cb (the pair's
 equivalent link), with the curvature terms. The sliding speed is (v_Jb − v_Ja)·t. The
 relative instant centre of the two bodies lies on the common normal at J.
+
+Example: an eccentric cam — a circle of radius 2 about C = (1, 0), turning at ω = 3 rad/s
+about O — under a flat-faced follower that slides vertically, touching it at (1, 2). By
+hand, the face stays at y = e sin θ + R, so it rises at e ω cos θ = 1 × 3 × 1 = 3:
+
+    >>> import numpy as np, kinematika
+    >>> m = kinematika.Mechanism("eccentric").point("O", 0, 0).point("C", 1, 0).point("F", 1, 2)
+    >>> m = m.body("ground", "O").body("cam", "O", "C", circle=("C", 2))
+    >>> m = m.body("follower", "F", line=("F", (1, 0)))
+    >>> pin = m.revolute("ground", "cam", at="O")
+    >>> guide = m.prismatic("ground", "follower", along=(0, 1))
+    >>> touch = m.contact("cam", "follower")
+    >>> np.allclose(m.drive_omega("cam", 3).solve().velocity("F"), (0, 3))
+    True
 """
 from __future__ import annotations
 

@@ -11,6 +11,18 @@ curvature (ρ its radius there) besides the drag and Coriolis terms:
 
 Its coordinate is the pin's displacement along the slot (arc length); the relative instant
 centre of the two bodies lies on the slot's normal at the pin.
+
+Example: a block whose pin P = (3, 4) runs in the ground's circular slot of radius 5 about
+O; the block does not turn and P's x-velocity is 4. By hand, v_P is along the slot, normal
+to OP: 3 v_x + 4 v_y = 0, so v_P = (4, −3), as every point of the block:
+
+    >>> import numpy as np, kinematika
+    >>> m = kinematika.Mechanism("arc").point("O", 0, 0).point("P", 3, 4).point("Q", 3, 0)
+    >>> m = m.body("ground", "O", circle=("O", 5)).body("block", "P", "Q")
+    >>> slot = m.curved_slot("ground", "block", at="P")
+    >>> sol = m.drive_omega("block", 0).drive_velocity("P", 4, along=(1, 0)).solve()
+    >>> np.allclose(sol.velocity("P"), (4, -3)), np.allclose(sol.velocity("Q"), (4, -3))
+    (True, True)
 """
 from __future__ import annotations
 

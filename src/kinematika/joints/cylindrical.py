@@ -5,6 +5,17 @@ Condition: (ω_b − ω_a) × e = 0 and (Q_b − Q_a) × e = 0 for the axis e th
 Velocity rows: (ω_b − ω_a)·nₖ = 0 and v_rel·nₖ = 0 for the axis's two normals.
 It has two coordinates (a turn and a slide): drive them by a body's omega and a point's
 velocity, not by a joint rate.
+
+Example: a sleeve on the z axis through O, turning at ω = (0, 0, 2) rad/s while its point
+A = (1, 0, 0) rises at 5. By hand, v_A = 5 e_z + ω × OA = (0, 0, 5) + (0, 2, 0) = (0, 2, 5):
+
+    >>> import numpy as np, kinematika
+    >>> m = kinematika.Mechanism("sleeve", dimension=3).point("O", 0, 0, 0).point("A", 1, 0, 0)
+    >>> m = m.body("ground", "O").body("sleeve", "O", "A")
+    >>> pair = m.cylindrical("ground", "sleeve", at="O", axis=(0, 0, 1))
+    >>> m = m.drive_omega("sleeve", (0, 0, 2)).drive_velocity("A", 5, along=(0, 0, 1))
+    >>> np.allclose(m.solve().velocity("A"), (0, 2, 5))
+    True
 """
 from __future__ import annotations
 

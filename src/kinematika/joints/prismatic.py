@@ -5,6 +5,17 @@ Condition: ω_b = ω_a, and (Q_b − Q_a)·n = 0 for the guide's normals n (fixe
 Velocity rows: ω_b − ω_a = 0, v_rel·n = 0; acceleration rows add the Coriolis term
 2 v_rel·(ω_a × n) (`derivatives.sliding`). Its coordinate is b's displacement along
 `along`; the relative instant centre is at infinity, perpendicular to `along`.
+
+Example: a slider on a guide along (3, 4), its joint driven at 2 (length per second). By
+hand, every point of the slider moves at 2 × (3, 4)/5 = (1.2, 1.6):
+
+    >>> import numpy as np, kinematika
+    >>> m = kinematika.Mechanism("slider").point("O", 0, 0).point("B", 1, 1)
+    >>> m = m.body("ground", "O").body("slider", "B")
+    >>> guide = m.prismatic("ground", "slider", along=(3, 4))
+    >>> sol = m.drive_joint(guide, 2).solve()
+    >>> np.allclose(sol.velocity("B"), (1.2, 1.6)), np.allclose(sol.omega("slider"), 0)
+    (True, True)
 """
 from __future__ import annotations
 

@@ -5,6 +5,17 @@ Condition: P_b = P_a at `at`; in 3D also (ω_b − ω_a) × e = 0 for the axis e
 Velocity rows: v_P(b) − v_P(a) = 0 (and (ω_b − ω_a)·nₖ = 0 for the axis's two normals).
 Its coordinate is the angle of b relative to a, counter-clockwise (about `axis`).
 The relative instant centre of the pair is `at`.
+
+Example: a crank OA = (2, 0) pinned to the ground at O, turning at ω = 3 rad/s. By hand,
+v_A = ω k × OA = 3 k × (2, 0) = (0, 6) and a_A = −ω² OA = (−18, 0):
+
+    >>> import numpy as np, kinematika
+    >>> m = kinematika.Mechanism("crank").point("O", 0, 0).point("A", 2, 0)
+    >>> m = m.body("ground", "O").body("crank", "O", "A")
+    >>> pin = m.revolute("ground", "crank", at="O")
+    >>> sol = m.drive_omega("crank", 3).solve()
+    >>> np.allclose(sol.velocity("A"), (0, 6)), np.allclose(sol.acceleration("A"), (-18, 0))
+    (True, True)
 """
 from __future__ import annotations
 

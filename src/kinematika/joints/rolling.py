@@ -5,6 +5,18 @@ have equal velocity.
 Condition: contact is kept and v_J(b) = v_J(a). Differentiating along the motion:
 a_J(b) − a_J(a) = ω_rel × (v_J(a) − J̇), J̇ the velocity of the geometric contact point
 (`contact.Contact.jdot`). The relative instant centre of the pair is J.
+
+Example: a wheel of radius 2 rolling on the ground's line y = 0, turning at ω = −3 rad/s
+(clockwise). By hand, the contact J is the instant centre: v_C = ω k × JC = −3 k × (0, 2)
+= (6, 0) at the centre, and twice that, (12, 0), at the top T:
+
+    >>> import numpy as np, kinematika
+    >>> m = kinematika.Mechanism("wheel").point("J", 0, 0).point("C", 0, 2).point("T", 0, 4)
+    >>> m = m.body("ground", "J", line=("J", (1, 0))).body("wheel", "J", "C", "T", circle=("C", 2))
+    >>> roll = m.rolling("ground", "wheel")
+    >>> sol = m.drive_omega("wheel", -3).solve()
+    >>> np.allclose(sol.velocity("C"), (6, 0)), np.allclose(sol.velocity("T"), (12, 0))
+    (True, True)
 """
 from __future__ import annotations
 

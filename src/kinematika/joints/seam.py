@@ -34,12 +34,15 @@ Vector = tuple
 class Backend(Protocol):
     """The instant's arithmetic: floats, or sympy for a symbolic model."""
 
-    @property
-    def symbolic(self) -> bool: ...
+    symbolic: bool
 
-    def sqrt(self, x: Scalar) -> Scalar: ...
+    def sqrt(self, x: Scalar) -> Scalar:
+        """√x, exactly in a symbolic model."""
+        ...
 
-    def simplify(self, x: Scalar) -> Scalar: ...
+    def simplify(self, x: Scalar) -> Scalar:
+        """x in its simplest form (a symbolic model's; a number as it is)."""
+        ...
 
 
 class ModelJoint(Protocol):
@@ -48,25 +51,19 @@ class ModelJoint(Protocol):
     inside circles), its kind's name (`type`) and where it is written (`where`, for errors)."""
 
     __dataclass_fields__: ClassVar[dict[str, Any]]   # a dataclass: `dataclasses.replace` makes a variant
+    id: str
+    type: str
+    a: str
+    b: str
+    at: Optional[str]
+    along: Optional[Direction]
+    axis: Optional[Direction]
+    internal: Optional[bool]
 
     @property
-    def id(self) -> str: ...
-    @property
-    def type(self) -> str: ...
-    @property
-    def a(self) -> str: ...
-    @property
-    def b(self) -> str: ...
-    @property
-    def at(self) -> Optional[str]: ...
-    @property
-    def along(self) -> Optional[Direction]: ...
-    @property
-    def axis(self) -> Optional[Direction]: ...
-    @property
-    def internal(self) -> Optional[bool]: ...
-    @property
-    def where(self) -> str: ...
+    def where(self) -> str:
+        """Where the joint is written, for errors: ``joints[2] (j3)``."""
+        ...
 
 
 class Instant(Protocol):
@@ -74,20 +71,17 @@ class Instant(Protocol):
     its arithmetic and its space, its scale (a characteristic length), where twists are
     taken (`ref`), and its directions made unit."""
 
+    backend: Backend
+    space: Space
+    points: dict[str, tuple]
+    shapes: dict[str, list]
+    scale: float
+    ref: tuple
+
     @property
-    def backend(self) -> Backend: ...
-    @property
-    def space(self) -> Space: ...
-    @property
-    def points(self) -> Mapping[str, tuple]: ...
-    @property
-    def shapes(self) -> Mapping[str, list]: ...
-    @property
-    def scale(self) -> float: ...
-    @property
-    def ref(self) -> tuple: ...
-    @property
-    def symbolic(self) -> bool: ...
+    def symbolic(self) -> bool:
+        """Whether its values are formulas (sympy), not numbers."""
+        ...
 
     def num(self, x: Scalar) -> float:
         """A scalar as a float (a symbolic one at the probe values)."""
@@ -110,30 +104,43 @@ class BodyState(Protocol):
     """A body's solved ω and α (`engine.motion.BodyState`)."""
 
     @property
-    def omega(self) -> Scalar: ...
+    def omega(self) -> Scalar:
+        """ω: a number in the plane, a vector in space."""
+        ...
+
     @property
-    def alpha(self) -> Scalar: ...
+    def alpha(self) -> Scalar:
+        """α, likewise."""
+        ...
 
 
 class Motion(Protocol):
     """The bodies' solved motion (`engine.motion.Motion`): their states and the motion of
     their material points."""
 
-    @property
-    def space(self) -> Space: ...
-    @property
-    def states(self) -> Mapping[str, BodyState]: ...
+    space: Space
 
-    def point_velocity(self, body: str, p: tuple) -> tuple: ...
+    @property
+    def states(self) -> Mapping[str, BodyState]:
+        """Each moving body's state (the frame has none)."""
+        ...
 
-    def point_acceleration(self, body: str, p: tuple) -> tuple: ...
+    def point_velocity(self, body: str, p: tuple) -> tuple:
+        """The velocity of `body`'s material point at `p`."""
+        ...
+
+    def point_acceleration(self, body: str, p: tuple) -> tuple:
+        """The acceleration of `body`'s material point at `p`."""
+        ...
 
 
 class Terms(Protocol):
     """The factors of the velocity-squared terms (`engine.terms.Terms`): mechanics' own, or a
     student's mistake modelled by a view."""
 
-    def coriolis_factor(self) -> float: ...
+    def coriolis_factor(self) -> float:
+        """The factor of the Coriolis term 2 ω × v_rel (1: mechanics)."""
+        ...
 
 
 class Level(Protocol):
@@ -142,97 +149,112 @@ class Level(Protocol):
     the unknowns; at the acceleration level (`accel`) the solved velocities `w`, `v` for the
     centripetal and Coriolis terms, and the `motion` they come from."""
 
-    @property
-    def accel(self) -> bool: ...
-    @property
-    def space(self) -> Space: ...
-    @property
-    def ref(self) -> tuple: ...
-    @property
-    def motion(self) -> Optional[Motion]: ...
-    @property
-    def terms(self) -> Terms: ...
+    accel: bool
+    space: Space
+    ref: tuple
 
-    def point(self, body: str, p: tuple) -> tuple: ...
+    @property
+    def motion(self) -> Optional[Motion]:
+        """The solved velocities (at the acceleration level)."""
+        ...
 
-    def omega(self, body: str) -> Scalar: ...
+    @property
+    def terms(self) -> Terms:
+        """The velocity-squared terms' factors."""
+        ...
 
-    def w(self, body: str) -> Scalar: ...
+    def point(self, body: str, p: tuple) -> tuple:
+        """The velocity (acceleration) of `body`'s material point at `p`, as linear forms."""
+        ...
 
-    def v(self, body: str, p: tuple) -> tuple: ...
+    def omega(self, body: str) -> Scalar:
+        """ω (α) of `body`, as linear forms."""
+        ...
+
+    def w(self, body: str) -> Scalar:
+        """The solved ω of `body`, for the acceleration level's terms."""
+        ...
+
+    def v(self, body: str, p: tuple) -> tuple:
+        """The solved velocity of `body`'s material point at `p`, likewise."""
+        ...
 
 
 class Pose(Protocol):
     """Where a sweep has moved the bodies (`sweep.poses.Poses`, `SpatialPoses`): the drawn
-    point P carried by a body, a drawn
-    direction turned with it, its rotation from the drawing, and the values a sweep
-    remembers between steps (`aux`: continued angles, a contact's parameter)."""
+    point P carried by a body, a drawn direction turned with it, its rotation from the
+    drawing, and the values a sweep remembers between steps (`aux`: continued angles, a
+    contact's parameter)."""
 
-    @property
-    def aux(self) -> dict: ...
+    aux: dict
 
-    def point(self, body: str, p0: tuple) -> tuple: ...
+    def point(self, body: str, p0: tuple) -> tuple:
+        """The material point of `body` drawn at `p0`, now."""
+        ...
 
-    def turn(self, body: str, vec: tuple) -> tuple: ...
+    def turn(self, body: str, vec: tuple) -> tuple:
+        """A direction fixed in `body`, drawn as `vec`, now."""
+        ...
 
-    def angle(self, body: str) -> Scalar: ...
+    def angle(self, body: str) -> Scalar:
+        """`body`'s rotation from its drawn pose (an angle; a rotation vector in space)."""
+        ...
 
     def rotation_error(self, a: Optional[str], b: str) -> list:
         """b's rotation relative to a (its rows, one in the plane, three in space)."""
         ...
 
-    def axis_angle_error(self, a: str, b: str, axis: Optional[tuple], target: float) -> Scalar: ...
+    def axis_angle_error(self, a: str, b: str, axis: Optional[tuple], target: float) -> Scalar:
+        """b's rotation relative to a about `axis` (fixed in a; None in the plane), less `target`."""
+        ...
 
 
 class JointView(Protocol):
     """A joint on the page (`draw.scene.JointView`): its place, directions (unit), the page
     image of a 3D axis, a slot's two ends, the contact, a follower's roller radius."""
 
-    @property
-    def id(self) -> str: ...
-    @property
-    def a(self) -> str: ...
-    @property
-    def b(self) -> str: ...
-    @property
-    def at(self) -> Optional[np.ndarray]: ...
-    @property
-    def along(self) -> Optional[np.ndarray]: ...
-    @property
-    def axis(self) -> Optional[np.ndarray]: ...
-    @property
-    def span(self) -> Optional[tuple[np.ndarray, np.ndarray]]: ...
-    @property
-    def contact(self) -> Optional[np.ndarray]: ...
-    @property
-    def radius(self) -> float: ...
+    id: str
+    a: str
+    b: str
+    at: Optional[np.ndarray]
+    along: Optional[np.ndarray]
+    axis: Optional[np.ndarray]
+    span: Optional[tuple[np.ndarray, np.ndarray]]
+    contact: Optional[np.ndarray]
+    radius: float
 
 
 class DrawContext(Protocol):
     """What a symbol asks of its figure (`draw.context.Context`; see `joints.symbols`)."""
 
-    @property
-    def size(self) -> float: ...
-    @property
-    def frame(self) -> str: ...
-    @property
-    def still(self) -> bool: ...
-    @property
-    def dim(self) -> int: ...
+    size: float
+    frame: str
+    still: bool
+    dim: int
 
-    def centroid(self) -> np.ndarray: ...
+    def centroid(self) -> np.ndarray:
+        """The centroid of the moving bodies' points: "away from the mechanism"."""
+        ...
 
-    def points(self, body: str) -> list: ...
+    def points(self, body: str) -> list:
+        """`body`'s points on the page."""
+        ...
 
-    def clip(self, p: np.ndarray, d: np.ndarray, inset: float) -> Optional[tuple]: ...
+    def clip(self, p: np.ndarray, d: np.ndarray, inset: float) -> Optional[tuple]:
+        """The part of the line through p along d inside the figure's reach, less `inset`."""
+        ...
 
-    def keep_out(self) -> list: ...
+    def keep_out(self) -> list:
+        """Closed outlines that fixed guides stop short of (moving wheels and cams)."""
+        ...
 
 
 class Mechanism(Protocol):
     """The Python builder (`model.builder.Mechanism`): a joint of any kind added by name."""
 
-    def joint(self, type: str, a: str, b: str, id: Optional[str] = None, **fields: Any) -> str: ...
+    def joint(self, type: str, a: str, b: str, id: Optional[str] = None, **fields: Any) -> str:
+        """Add a joint of kind `type` between `a` and `b`; its id."""
+        ...
 
 
 __all__ = ["Backend", "BodyState", "DrawContext", "Instant", "JointView", "Level", "Mechanism", "ModelJoint",

@@ -5,6 +5,20 @@ Condition: (P_b − S)·n = 0, S on the slot's line, n its normal (fixed in a).
 Velocity row: v_rel·n = 0; acceleration row: (a_Pb − a_Pa)·n + 2 v_rel·(ω_a × n) = 0,
 the Coriolis term (`derivatives.sliding`). Its coordinate is the pin's displacement along
 `along`; the relative instant centre lies on the normal to the slot through the pin.
+
+Example: a Scotch yoke. A crank OA = (0, 2) turns at ω = 3 rad/s; its pin A runs in a
+vertical slot of a yoke that slides along x. By hand, v_A = ω k × OA = (−6, 0), and the
+yoke takes the component of v_A across its slot: v_yoke = (−6, 0):
+
+    >>> import numpy as np, kinematika
+    >>> m = kinematika.Mechanism("yoke").point("O", 0, 0).point("A", 0, 2).point("B", 3, 0)
+    >>> m = m.body("ground", "O").body("crank", "O", "A").body("yoke", "B")
+    >>> pin = m.revolute("ground", "crank", at="O")
+    >>> guide = m.prismatic("ground", "yoke", along=(1, 0))
+    >>> slot = m.slot("yoke", "crank", at="A", along=(0, 1))
+    >>> sol = m.drive_omega("crank", 3).solve()
+    >>> np.allclose(sol.velocity("B"), (-6, 0))
+    True
 """
 from __future__ import annotations
 

@@ -2,6 +2,16 @@
 turn freely about it.
 
 Condition: P_b = P_a at `at`. Velocity rows: v_P(b) − v_P(a) = 0 (three components).
+
+Example: a link OA = (1, 0, 0) on a ball joint at O, turning at ω = (0, 0, 3) rad/s. By
+hand, v_A = ω × OA = (0, 3, 0):
+
+    >>> import numpy as np, kinematika
+    >>> m = kinematika.Mechanism("ball", dimension=3).point("O", 0, 0, 0).point("A", 1, 0, 0)
+    >>> m = m.body("ground", "O").body("link", "O", "A")
+    >>> ball = m.spherical("ground", "link", at="O")
+    >>> np.allclose(m.drive_omega("link", (0, 0, 3)).solve().velocity("A"), (0, 3, 0))
+    True
 """
 from __future__ import annotations
 

@@ -2,6 +2,17 @@
 
 Condition: ω_b = ω_a and the bodies' points at the reference coincide in motion.
 Velocity rows: ω_b − ω_a = 0, v_R(b) − v_R(a) = 0 at the reference point R.
+
+Example: an arm AB welded to a crank OA = (1, 0) that turns at ω = 3 rad/s about O. By
+hand, the arm turns with the crank (ω = 3) and B = (1, 2) moves at ω k × OB = (−6, 3):
+
+    >>> import math, numpy as np, kinematika
+    >>> m = kinematika.Mechanism("welded").point("O", 0, 0).point("A", 1, 0).point("B", 1, 2)
+    >>> m = m.body("ground", "O").body("crank", "O", "A").body("arm", "A", "B")
+    >>> pin, weld = m.revolute("ground", "crank", at="O"), m.weld("crank", "arm")
+    >>> sol = m.drive_omega("crank", 3).solve()
+    >>> math.isclose(sol.omega("arm"), 3), np.allclose(sol.velocity("B"), (-6, 3))
+    (True, True)
 """
 from __future__ import annotations
 

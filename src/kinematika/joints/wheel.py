@@ -5,6 +5,18 @@ seen from above, a skate).
 Condition (non-holonomic): v_rel(Q_b)·n_b = 0, n_b the normal to `along`, fixed in b.
 Acceleration: (a_Qb − a_Qa − ω_a × v_rel)·n + v_rel·(ω_b × n) = 0.
 The relative instant centre lies on the wheel's axle line (through `at`, along n_b).
+
+Example: a cart on a knife edge at P = (0, 0) along x, turning at ω = 2 rad/s with P
+moving forward at 3. By hand, v_P = (3, 0) (no slip sideways) and the point Q = (0, 1)
+of the cart moves at v_P + ω k × PQ = (3, 0) + 2 k × (0, 1) = (1, 0):
+
+    >>> import numpy as np, kinematika
+    >>> m = kinematika.Mechanism("cart").point("O", 0, 0).point("P", 0, 0).point("Q", 0, 1)
+    >>> m = m.body("ground", "O").body("cart", "P", "Q")
+    >>> edge = m.wheel("ground", "cart", at="P", along=(1, 0))
+    >>> sol = m.drive_omega("cart", 2).drive_velocity("P", 3, along=(1, 0)).solve()
+    >>> np.allclose(sol.velocity("P"), (3, 0)), np.allclose(sol.velocity("Q"), (1, 0))
+    (True, True)
 """
 from __future__ import annotations
 
