@@ -97,3 +97,11 @@ def test_a_kind_without_its_hooks_cannot_be_made():
     with pytest.raises(TypeError, match="abstract"):
         Half()
     assert JointKind.__abstractmethods__ == {"conditions", "rows", "add"}
+
+
+def test_the_docs_table_is_written_from_the_registry():
+    """docs/joints.md's table of the kinds is `joints.table`'s, written from the registry."""
+    from kinematika.joints import table
+
+    assert table.page(table.TARGET.read_text(encoding="utf-8")) == table.TARGET.read_text(encoding="utf-8"), \
+        f"docs/joints.md's table is out of date: run {table.COMMAND}"

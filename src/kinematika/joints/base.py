@@ -108,6 +108,7 @@ class JointKind(ABC):
 
     name: ClassVar[str] = ""
     summary: ClassVar[str] = ""             # one line for the docs and messages
+    condition: ClassVar[str] = ""           # its condition at the velocity level, one line for the docs
     dimensions: ClassVar[tuple[int, ...]] = (2, 3)   # the models it exists in
     # capabilities --------------------------------------------------------------------------
     coordinate: ClassVar[Optional[Coordinate]] = None   # an angle (degrees, rad/s) or a length:

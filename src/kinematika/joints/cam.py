@@ -57,6 +57,7 @@ class Cam(Contact):
 
     name = "cam"
     summary = "the first body's cam drives the second, its follower (knife edge or roller at `at`, or flat face)"
+    condition = "the follower's (v_Jb − v_Ja)·n = 0 on the cam"
     keeps = "row-cam-touching"
 
     def conditions(self, dim: int) -> int:

@@ -40,6 +40,7 @@ class Contact(JointKind):
 
     name = "contact"
     summary = "the bodies' outlines (circles, lines, curves, a cam's profile, or point `at`) touch and may slide"
+    condition = "(v_Jb − v_Ja)·n = 0 along the common normal"
     dimensions = (2,)
     touches = True
     centre = Centre.NORMAL

@@ -44,6 +44,7 @@ class CurvedSlot(JointKind):
 
     name = "curved_slot"
     summary = "point `at` of the second body slides along the first body's circle or curve; rotation free"
+    condition = "the pin's v_rel·n = 0 on the slot's curve"
     dimensions = (2,)
     coordinate = Coordinate.LENGTH
     slides = True

@@ -35,6 +35,7 @@ class Cylindrical(JointKind):
 
     name = "cylindrical"
     summary = "3D: turning about and sliding along `axis` through `at`"
+    condition = "(ω_b − ω_a)·nₖ = 0, v_rel·nₖ = 0 (3D)"
     dimensions = (3,)
     slides = True
     fields = {"at": "required", "axis": "required in 3D"}

@@ -30,6 +30,7 @@ class Gear(Rolling):
 
     name = "gear"
     summary = "the pitch circles of the two bodies roll on each other (`internal` for a ring)"
+    condition = "as rolling, on the pitch circles (one condition in a structure)"
     pitch = True
 
     def conditions(self, dim: int) -> int:

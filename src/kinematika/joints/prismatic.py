@@ -36,6 +36,7 @@ class Prismatic(JointKind):
 
     name = "prismatic"
     summary = "the second body slides along a direction fixed in the first; no relative rotation"
+    condition = "ω_b − ω_a = 0; v_rel·n = 0 across the guide"
     sweepable = True
     coordinate = Coordinate.LENGTH
     slides = True

@@ -38,6 +38,7 @@ class Revolute(JointKind):
 
     name = "revolute"
     summary = "the two bodies share point `at` and turn relative to each other about it"
+    condition = "v_P(b) − v_P(a) = 0 at `at` (and the axis kept, 3D)"
     sweepable = True
     coordinate = Coordinate.ANGLE
     pins = True

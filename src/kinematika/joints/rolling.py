@@ -43,6 +43,7 @@ class Rolling(JointKind):
 
     name = "rolling"
     summary = "the bodies' shapes roll on each other without slipping"
+    condition = "v_J(b) − v_J(a) = 0 at the contact"
     touches = True
     rolls = True
     velocity_only = (3,)              # a disc on a plane: where it has rolled depends on the path

@@ -41,6 +41,7 @@ class Slot(JointKind):
 
     name = "slot"
     summary = "point `at` of the second body slides along a line fixed in the first; rotation free"
+    condition = "v_rel·n = 0 at the pin"
     dimensions = (2,)
     coordinate = Coordinate.LENGTH
     slides = True

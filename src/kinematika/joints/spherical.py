@@ -32,6 +32,7 @@ class Spherical(JointKind):
 
     name = "spherical"
     summary = "3D ball joint: the bodies share point `at`"
+    condition = "v_P(b) − v_P(a) = 0 (3D)"
     dimensions = (3,)
     pins = True
     ball = True

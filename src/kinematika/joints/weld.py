@@ -32,6 +32,7 @@ class Weld(JointKind):
 
     name = "weld"
     summary = "the two bodies move as one"
+    condition = "ω_b − ω_a = 0; v(b) − v(a) = 0"
     rigid = True
     centre = Centre.REST
 

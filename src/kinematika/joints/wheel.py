@@ -38,6 +38,7 @@ class Wheel(JointKind):
 
     name = "wheel"
     summary = "knife edge: point `at` of the second body moves only along `along`, fixed in it"
+    condition = "v_rel·n_b = 0 (n_b fixed in the wheel)"
     dimensions = (2,)
     guides_point = True
     along_in = Side.B
