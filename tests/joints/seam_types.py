@@ -12,6 +12,7 @@ from kinematika.engine.levels import AccelerationLevel, VelocityLevel
 from kinematika.engine.motion import BodyState, Motion
 from kinematika.engine.terms import Terms
 from kinematika.joints import seam
+from kinematika.joints.base import ModelJoint
 from kinematika.model.builder import Mechanism
 from kinematika.model.model import Joint
 from kinematika.sweep.poses import Poses, SpatialPoses
@@ -28,7 +29,7 @@ def engine(inst: Instant, v: VelocityLevel, acc: AccelerationLevel, m: Motion, b
     return inst, v, acc, m, b, t
 
 
-def model(j: Joint, mech: Mechanism) -> tuple[seam.ModelJoint, seam.Mechanism]:
+def model(j: Joint, mech: Mechanism) -> tuple[ModelJoint, seam.Mechanism]:
     """The model's joint and the Python builder."""
     return j, mech
 

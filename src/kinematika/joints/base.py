@@ -32,7 +32,7 @@ import functools
 import inspect
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Callable, ClassVar, Optional
+from typing import TYPE_CHECKING, Any, Callable, ClassVar, Optional, Protocol
 
 from ..algebra.vectors import dot, sub
 from ..errors import KinematikaError, Names, Num, Said
@@ -40,12 +40,39 @@ from ..expressions import PointPair
 from . import positions
 from .capabilities import Centre, CentreLine, Chain, Coordinate, Need, PointOn, Side
 from .positions import Residual
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Pose, Scalar
+from ..expressions import Direction
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, Pose, Scalar
 
 if TYPE_CHECKING:
     from .symbols import Mark
 
 AXES = "xyz"
+
+
+class ModelJoint(Protocol):
+    """A joint as the model holds it (`model.model.Joint`): its bodies `a` and `b`, its point
+    `at` (a point's name), its directions `along` and `axis` as written, `internal` (circles
+    inside circles), its kind (`kind`, named `type`) and where it is written (`where`, for errors)."""
+
+    __dataclass_fields__: ClassVar[dict[str, Any]]   # a dataclass: `dataclasses.replace` makes a variant
+    id: str
+    type: str
+    a: str
+    b: str
+    at: Optional[str]
+    along: Optional[Direction]
+    axis: Optional[Direction]
+    internal: Optional[bool]
+
+    @property
+    def where(self) -> str:
+        """Where the joint is written, for errors: ``joints[2] (j3)``."""
+        ...
+
+    @property
+    def kind(self) -> JointKind:
+        """What its kind means (the engine asks it for the joint's rows)."""
+        ...
 
 
 @dataclass

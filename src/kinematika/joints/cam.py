@@ -41,12 +41,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from .seam import DrawContext, Instant, JointView, ModelJoint
+from .seam import DrawContext, Instant, JointView
 from ..errors import KinematikaError
 from ..shapes import Cam as CamShape
 from ..shapes import Line
 from . import symbols
-from .base import JointGeometry
+from .base import JointGeometry, ModelJoint
 from .contact import Contact
 from .touching import outlines
 

@@ -26,12 +26,12 @@ from __future__ import annotations
 
 from typing import Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint
+from .seam import DrawContext, Instant, JointView, Level, Mechanism
 from .positions import Residual
 from .capabilities import Centre, PointOn
 from ..errors import Said
 from . import symbols
-from .base import JointGeometry, JointKind, Rows
+from .base import JointGeometry, JointKind, ModelJoint, Rows
 from .touching import Follow, find_touch, outlines, touch_of, touch_row
 
 

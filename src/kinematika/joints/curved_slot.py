@@ -28,14 +28,14 @@ from __future__ import annotations
 
 from typing import Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Scalar
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 from .positions import Residual
 from .capabilities import Centre, Coordinate, PointOn
 from ..errors import KinematikaError, Said
 from ..shapes import Circle, Curve
 from . import symbols
 from .derivatives import sliding
-from .base import JointGeometry, JointKind, Rows
+from .base import JointGeometry, JointKind, ModelJoint, Rows
 from .touching import Follow, find_touch, outlines, touch_of, touch_row
 
 

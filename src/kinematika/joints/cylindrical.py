@@ -21,11 +21,11 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint
+from .seam import DrawContext, Instant, JointView, Level, Mechanism
 from .positions import Residual
 from ..errors import KinematikaError, Said
 from . import symbols
-from .base import JointGeometry, JointKind, Rows
+from .base import JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import sliding, turning
 from .positions import across, axis_kept
 

@@ -21,11 +21,11 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Scalar
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate
 from . import symbols
-from .base import AXES, JointGeometry, JointKind, Rows
+from .base import AXES, JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import same_rotation, sliding
 from .positions import across
 from ..errors import Said

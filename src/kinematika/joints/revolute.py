@@ -23,11 +23,11 @@ from typing import Any, Optional
 
 import numpy as np
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Scalar
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate, PointOn
 from . import symbols
-from .base import AXES, JointGeometry, JointKind, Rows
+from .base import AXES, JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import coincident, turning
 from .positions import axis_kept, coincide
 from ..errors import Said

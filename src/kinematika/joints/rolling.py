@@ -24,14 +24,14 @@ import math
 from dataclasses import replace
 from typing import Any, Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Pose
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, Pose
 from .positions import Residual
 from .capabilities import Centre
 from ..algebra.vectors import sub
 from ..errors import Said
 from ..shapes import Circle, Disc, Plane
 from . import symbols
-from .base import AXES, Holonomic, JointGeometry, JointKind, Rows
+from .base import AXES, Holonomic, JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
 from .rolling_contact import contact_of, drawn_pair, find_contact

@@ -4,8 +4,10 @@ engine, the sweeps, the figures and the builder, written as `Protocol`s.
 A kind's hooks (`JointKind.prepare`, `rows`, `residual`, `rate`, `symbol`, `add`, …) are
 given these objects and only call the members listed here; the classes that fill them live
 in the layers above (`engine.instant.Instant`, `engine.levels.Level`, `engine.motion.Motion`,
-`sweep.poses.Poses`, `model.model.Joint`, `draw.scene.JointView`, `draw.context.Context`,
-`model.builder.Mechanism`) and are checked against them by mypy where they are passed in.
+`sweep.poses.Poses`, `draw.scene.JointView`, `draw.context.Context`,
+`model.builder.Mechanism`) and are checked against them by mypy (tests/joints/seam_types.py).
+The joint itself, as the model holds it, is `base.ModelJoint` (beside `JointKind`, which it
+names).
 So a joint module imports nothing of the engine (as sympy's `Joint` is given its frames
 and pinocchio's joint models their data), and what a new kind may ask of the engine is
 this page.
@@ -18,7 +20,7 @@ sweeps) — the same formulas serve all four, so they stay untyped by name (`Sca
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, ClassVar, Optional, Protocol
+from typing import Any, Optional, Protocol
 
 import numpy as np
 
@@ -42,27 +44,6 @@ class Backend(Protocol):
 
     def simplify(self, x: Scalar) -> Scalar:
         """x in its simplest form (a symbolic model's; a number as it is)."""
-        ...
-
-
-class ModelJoint(Protocol):
-    """A joint as the model holds it (`model.model.Joint`): its bodies `a` and `b`, its point
-    `at` (a point's name), its directions `along` and `axis` as written, `internal` (circles
-    inside circles), its kind's name (`type`) and where it is written (`where`, for errors)."""
-
-    __dataclass_fields__: ClassVar[dict[str, Any]]   # a dataclass: `dataclasses.replace` makes a variant
-    id: str
-    type: str
-    a: str
-    b: str
-    at: Optional[str]
-    along: Optional[Direction]
-    axis: Optional[Direction]
-    internal: Optional[bool]
-
-    @property
-    def where(self) -> str:
-        """Where the joint is written, for errors: ``joints[2] (j3)``."""
         ...
 
 
@@ -257,5 +238,5 @@ class Mechanism(Protocol):
         ...
 
 
-__all__ = ["Backend", "BodyState", "DrawContext", "Instant", "JointView", "Level", "Mechanism", "ModelJoint",
-           "Motion", "Pose", "Scalar", "Terms", "Vector"]
+__all__ = ["Backend", "BodyState", "DrawContext", "Instant", "JointView", "Level", "Mechanism", "Motion", "Pose",
+           "Scalar", "Terms", "Vector"]

@@ -26,11 +26,11 @@ from typing import Any, Optional
 
 import numpy as np
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, ModelJoint, Scalar
+from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate, PointOn
 from . import symbols
-from .base import JointGeometry, JointKind, Rows, off_line
+from .base import JointGeometry, JointKind, ModelJoint, Rows, off_line
 from .derivatives import sliding
 from .positions import across
 from ..errors import Said

@@ -31,11 +31,11 @@ from typing import Any, Callable, Optional
 
 import numpy as np
 
-from .seam import Instant, Level, ModelJoint, Motion, Pose
+from .seam import Instant, Level, Motion, Pose
 from ..algebra.vectors import add, dot, scale, sub
 from ..errors import KinematikaError, Num, Said
 from ..shapes import Cam, Circle, Curve, Line
-from .base import JointGeometry, rounding_hint
+from .base import JointGeometry, ModelJoint, rounding_hint
 from .curve_search import circle_contact, curves_contact, support
 from .derivatives import sliding
 from .positions import differences
