@@ -52,6 +52,7 @@ def _placeholders(source: str) -> tuple[str, dict[str, str]]:
         c = source[i]
         if c.isascii() and (c.isdigit() or (c == "." and source[i + 1:i + 2].isdigit())):
             match = _NUMBER.match(source, i)
+            assert match is not None                # a digit (or a point and a digit) starts one
             out.append(match.group())
             i = match.end()
         elif c == "_" or c.isidentifier():

@@ -271,7 +271,7 @@ def _all_centres(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = Non
     number = {name: b.number for name, b in scene.bodies.items()}
     by_pair = {frozenset(c.pair): c for c in centres}
     for c in centres:
-        a, b = sorted(c.pair, key=number.get)
+        a, b = sorted(c.pair, key=lambda name: number[name])
         _add_centre(scene, num, c.value, f"centre:{a}-{b}", pair_symbol("I", sol.model, a, b, lang),
                     (a, b))
     for c in centres:

@@ -45,8 +45,9 @@ def assur_groups(model: Model) -> Optional[list[Group]]:
     if model.dimension != 2:
         return None
     graph = _Graph(model)
-    inputs = [graph.input_of(d) for d in model.drivers]
-    if not inputs or any(g is None for g in inputs):
+    found = [graph.input_of(d) for d in model.drivers]
+    inputs = [g for g in found if g is not None]
+    if not inputs or len(inputs) < len(found):
         return None
     groups: list[Group] = []
     for g in inputs:

@@ -83,7 +83,7 @@ class SpatialPoses:
     from step to step (it may exceed a half turn: a crank's grows to 2π e after a turn).
     """
 
-    def __init__(self, ref: tuple, rot: dict, t: dict, rotvec: dict, aux: dict) -> None:
+    def __init__(self, ref: tuple | np.ndarray, rot: dict, t: dict, rotvec: dict, aux: dict) -> None:
         self.ref = np.asarray(ref, dtype=float)
         self.rot, self.t, self.rotvec, self.aux = rot, t, rotvec, aux
 

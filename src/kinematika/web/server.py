@@ -318,7 +318,7 @@ def _centres(req: Request) -> tuple[str, str]:
                                                           req.how))
 
 
-def _sweep(req: Request) -> tuple[str, str]:
+def _sweep(req: Request) -> tuple[str, str | bytes]:
     _, result = commands.sweep_run(req.model, req.get("joint"), req.get("by"), req.get("steps"),
                                    req.get("skip_bad"), how=req.how)
     if req.get("as") == "csv":
