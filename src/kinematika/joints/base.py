@@ -41,9 +41,9 @@ from . import positions
 from .capabilities import Centre, CentreLine, Chain, Coordinate, Need, PointOn, Side
 from .positions import Residual
 from ..expressions import Direction
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, Pose, Scalar
 
 if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism, Pose, Scalar
     from .symbols import Mark
 
 AXES = "xyz"
@@ -105,7 +105,7 @@ class JointGeometry:
         return self.axis
 
 
-Rows = list[tuple[Scalar, Said]]       # each condition (a linear form) and its message (errors' catalogue)
+Rows = list[tuple["Scalar", Said]]       # each condition (a linear form) and its message (errors' catalogue)
 
 
 @dataclass

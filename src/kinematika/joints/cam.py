@@ -38,10 +38,11 @@ v = ω ds/dθ = ω (πh/2β) sin(πθ/β) = 3 × 20π/π × 1 = 60:
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 
 import numpy as np
 
-from .seam import DrawContext, Instant, JointView
 from ..errors import KinematikaError
 from ..shapes import Cam as CamShape
 from ..shapes import Line
@@ -49,6 +50,9 @@ from . import symbols
 from .base import JointGeometry, ModelJoint
 from .contact import Contact
 from .touching import outlines
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView
 
 
 class Cam(Contact):

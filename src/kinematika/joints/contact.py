@@ -24,15 +24,17 @@ hand, the face stays at y = e sin θ + R, so it rises at e ω cos θ = 1 × 3 ×
 """
 from __future__ import annotations
 
-from typing import Optional
+from typing import TYPE_CHECKING, Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism
 from .positions import Residual
 from .capabilities import Centre, PointOn
 from ..errors import Said
 from . import symbols
 from .base import JointGeometry, JointKind, ModelJoint, Rows
 from .touching import Follow, find_touch, outlines, touch_of, touch_row
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism
 
 
 class Contact(JointKind):

@@ -26,9 +26,8 @@ to OP: 3 v_x + 4 v_y = 0, so v_P = (4, −3), as every point of the block:
 """
 from __future__ import annotations
 
-from typing import Optional
+from typing import TYPE_CHECKING, Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 from .positions import Residual
 from .capabilities import Centre, Coordinate, PointOn
 from ..errors import KinematikaError, Said
@@ -37,6 +36,9 @@ from . import symbols
 from .derivatives import sliding
 from .base import JointGeometry, JointKind, ModelJoint, Rows
 from .touching import Follow, find_touch, outlines, touch_of, touch_row
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 
 
 class CurvedSlot(JointKind):

@@ -19,15 +19,17 @@ A = (1, 0, 0) rises at 5. By hand, v_A = 5 e_z + ω × OA = (0, 0, 5) + (0, 2, 0
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism
 from .positions import Residual
 from ..errors import KinematikaError, Said
 from . import symbols
 from .base import JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import sliding, turning
 from .positions import across, axis_kept
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism
 
 
 class Cylindrical(JointKind):

@@ -7,10 +7,12 @@ velocities (the centripetal ones come with `lv.point`; the Coriolis ones are add
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from .seam import Level
 from ..algebra.vectors import dot, sub
+
+if TYPE_CHECKING:
+    from .seam import Level
 
 
 def coincident(lv: Level, a: str, b: str, p: tuple) -> tuple:

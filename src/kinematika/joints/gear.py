@@ -19,10 +19,12 @@ at ω1 = 4 rad/s. By hand, the pitch point has one velocity on both: ω1 r1 = �
 """
 from __future__ import annotations
 
-from typing import Optional
+from typing import TYPE_CHECKING, Optional
 
-from .seam import Mechanism
 from .rolling import Rolling
+
+if TYPE_CHECKING:
+    from .seam import Mechanism
 
 
 class Gear(Rolling):

@@ -6,11 +6,13 @@ drawn point P carried by body, `q.turn(body, e)` a drawn direction turned with i
 from __future__ import annotations
 
 import math
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
-from .seam import Pose
+if TYPE_CHECKING:
+    from .seam import Pose
 
-Residual = Callable[[Pose, float], list]     # (poses, increment) -> residual rows
+
+Residual = Callable[["Pose", float], list]     # (poses, increment) -> residual rows
 
 
 def differences(p: Any, r: Any) -> list:

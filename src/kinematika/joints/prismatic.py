@@ -19,9 +19,8 @@ hand, every point of the slider moves at 2 × (3, 4)/5 = (1.2, 1.6):
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate
 from . import symbols
@@ -29,6 +28,9 @@ from .base import AXES, JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import same_rotation, sliding
 from .positions import across
 from ..errors import Said
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 
 
 class Prismatic(JointKind):

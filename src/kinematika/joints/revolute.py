@@ -19,11 +19,10 @@ v_A = ω k × OA = 3 k × (2, 0) = (0, 6) and a_A = −ω² OA = (−18, 0):
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate, PointOn
 from . import symbols
@@ -31,6 +30,9 @@ from .base import AXES, JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import coincident, turning
 from .positions import axis_kept, coincide
 from ..errors import Said
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 
 
 class Revolute(JointKind):

@@ -22,9 +22,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, Pose
 from .positions import Residual
 from .capabilities import Centre
 from ..algebra.vectors import sub
@@ -36,6 +35,9 @@ from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
 from .rolling_contact import contact_of, drawn_pair, find_contact
 from .tangency import circles_tangency
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism, Pose
 
 
 class Rolling(JointKind):

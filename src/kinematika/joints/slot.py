@@ -22,11 +22,10 @@ yoke takes the component of v_A across its slot: v_yoke = (−6, 0):
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate, PointOn
 from . import symbols
@@ -34,6 +33,9 @@ from .base import JointGeometry, JointKind, ModelJoint, Rows, off_line
 from .derivatives import sliding
 from .positions import across
 from ..errors import Said
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 
 
 class Slot(JointKind):

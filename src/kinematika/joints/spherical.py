@@ -15,9 +15,8 @@ hand, v_A = ω × OA = (0, 3, 0):
 """
 from __future__ import annotations
 
-from typing import Optional
+from typing import TYPE_CHECKING, Optional
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism
 from .positions import Residual
 from .capabilities import PointOn
 from . import symbols
@@ -25,6 +24,9 @@ from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident
 from .positions import coincide
 from ..errors import Said
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism
 
 
 class Spherical(JointKind):

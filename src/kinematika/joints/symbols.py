@@ -20,11 +20,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
 
-from .seam import DrawContext, JointView
+if TYPE_CHECKING:
+    from .seam import DrawContext, JointView
+
 
 Vec = np.ndarray
 

@@ -27,11 +27,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Callable, Optional
+from typing import TYPE_CHECKING, Any, Callable, Optional
 
 import numpy as np
 
-from .seam import Instant, Level, Motion, Pose
 from ..algebra.vectors import add, dot, scale, sub
 from ..errors import KinematikaError, Num, Said
 from ..shapes import Cam, Circle, Curve, Line
@@ -40,6 +39,9 @@ from .curve_search import circle_contact, curves_contact, support
 from .derivatives import sliding
 from .positions import differences
 from .tangency import tangency
+
+if TYPE_CHECKING:
+    from .seam import Instant, Level, Motion, Pose
 
 
 @dataclass(frozen=True)

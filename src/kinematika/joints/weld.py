@@ -16,15 +16,17 @@ hand, the arm turns with the crank (ω = 3) and B = (1, 2) moves at ω k × OB =
 """
 from __future__ import annotations
 
-from typing import Optional
+from typing import TYPE_CHECKING, Optional
 
-from .seam import Instant, Level, Mechanism
 from .positions import Residual
 from .capabilities import Centre
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident, same_rotation
 from .positions import coincide
 from ..errors import Said
+
+if TYPE_CHECKING:
+    from .seam import Instant, Level, Mechanism
 
 
 class Weld(JointKind):

@@ -20,17 +20,19 @@ of the cart moves at v_P + ω k × PQ = (3, 0) + 2 k × (0, 1) = (1, 0):
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
 
-from .seam import DrawContext, Instant, JointView, Level, Mechanism
 from .capabilities import Centre, PointOn, Side
 from ..algebra.vectors import dot, sub
 from . import symbols
 from .base import Holonomic, JointGeometry, JointKind, Rows
 from .derivatives import coincident
 from ..errors import Said
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism
 
 
 class Wheel(JointKind):
