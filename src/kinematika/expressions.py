@@ -16,7 +16,7 @@ import ast
 import math
 import re
 from dataclasses import dataclass
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, Mapping, Union
 
 from . import limits
 from .errors import Said, parser_problem
@@ -52,6 +52,7 @@ def _placeholders(source: str) -> tuple[str, dict[str, str]]:
         c = source[i]
         if c.isascii() and (c.isdigit() or (c == "." and source[i + 1:i + 2].isdigit())):
             match = _NUMBER.match(source, i)
+            assert match is not None                # a digit (or a point and a digit) starts one
             out.append(match.group())
             i = match.end()
         elif c == "_" or c.isidentifier():
@@ -112,6 +113,23 @@ class Expr:
         """The functions it calls (`deg`, `sqrt`, …)."""
         return {node.func.id for node in ast.walk(self.tree)
                 if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)}
+
+
+ExprVector = tuple[Expr, ...]
+"""A point's or direction's coordinates, each an expression."""
+
+
+@dataclass(frozen=True)
+class PointPair:
+    """A direction given by two points, from `start` to `end`."""
+
+    start: str
+    end: str
+
+
+Direction = Union[ExprVector, PointPair]
+"""A direction as a model writes it: its components, or two points (`model.model` keeps
+it; the joints' hooks receive it, so it sits below both)."""
 
 
 def parse(text: str | int | float) -> Expr:

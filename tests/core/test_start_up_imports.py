@@ -34,6 +34,7 @@ SOLVE = {
     "kinematika.engine.mobility", "kinematika.engine.motion", "kinematika.engine.positions",
     "kinematika.engine.ranges", "kinematika.engine.system", "kinematika.engine.terms", "kinematika.errors",
     "kinematika.errors.said", "kinematika.expressions", "kinematika.joints", "kinematika.joints.base",
+    "kinematika.joints.capabilities",       # the capabilities' words, typed (issue 34, part 2)
     "kinematika.joints.derivatives", "kinematika.joints.positions", "kinematika.joints.symbols",
     "kinematika.languages", "kinematika.limits", "kinematika.memo", "kinematika.model", "kinematika.model.build",
     "kinematika.model.builder", "kinematika.model.constructions", "kinematika.model.figure_hints",

@@ -125,7 +125,8 @@ class CamAnalysis:
 
     def ranges(self, mask: np.ndarray, values: np.ndarray) -> list[Range]:
         """The stretches of the cycle where `mask` holds, with the smallest value there."""
-        out, x = [], self.angle
+        out: list[Range] = []
+        x = self.angle
         idx = np.flatnonzero(mask)
         if not len(idx):
             return out

@@ -46,7 +46,7 @@ def exercise(model: Path = ModelArg,
     from ..exercise.moodle import QuizOptions
     from ..model.files import load_model
 
-    def work() -> list[str]:
+    def work() -> list:
         from ..exercise.roster import read_class
 
         _folder(output)

@@ -1,8 +1,13 @@
 """A smooth curve through given points: a cubic spline in a chord-length parameter."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 from scipy.interpolate import CubicSpline
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 from .base import Curve, Param
 from ..errors import Said
@@ -16,7 +21,7 @@ class Spline(Curve):
     round), u ∈ [0, L_chords). r' and r'' are the splines' derivatives (r'' is piecewise linear,
     so the curvature is continuous)."""
 
-    def __init__(self, points: np.ndarray, closed: bool = False) -> None:
+    def __init__(self, points: ArrayLike, closed: bool = False) -> None:
         pts = np.asarray(points, dtype=float)
         if pts.ndim != 2 or pts.shape[1] != 2:
             raise ValueError(Said("spline-points"))

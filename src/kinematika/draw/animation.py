@@ -315,7 +315,8 @@ class Motion:
                 keys.append(key)
         else:
             keys = [v.ref for v in self.live] or list(self.result.points)
-        out, seen = [], []
+        out: list = []
+        seen: list = []
         for key in keys:
             path = self.positions(key)
             spread = np.nanmax(np.linalg.norm(path - path[0], axis=1)) if len(path) else 0.0

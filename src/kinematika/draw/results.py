@@ -10,6 +10,7 @@ from typing import Any, Optional
 
 import numpy as np
 
+from ..joints.capabilities import Centre
 from ..model.model import PointRef
 from ..questions import QUESTIONS, answer
 from .options import DrawOptions
@@ -186,7 +187,7 @@ def _normals(scene: Scene) -> None:
     the normal to the wheel's plane (to the slot) at the joint: the centre lies on it. Two
     wheels on one axle give one line."""
     for j in scene.joints:
-        if j.kind.centre != "normal" or j.at is None or j.along is None:
+        if j.kind.centre is not Centre.NORMAL or j.at is None or j.along is None:
             continue
         mark = next((m for m in scene.marks if m.kind == "icr" and not m.rest
                      and set(m.pair) == {j.a, j.b}), None)
@@ -270,7 +271,7 @@ def _all_centres(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = Non
     number = {name: b.number for name, b in scene.bodies.items()}
     by_pair = {frozenset(c.pair): c for c in centres}
     for c in centres:
-        a, b = sorted(c.pair, key=number.get)
+        a, b = sorted(c.pair, key=lambda name: number[name])
         _add_centre(scene, num, c.value, f"centre:{a}-{b}", pair_symbol("I", sol.model, a, b, lang),
                     (a, b))
     for c in centres:

@@ -54,7 +54,7 @@ def _carrier(scene: Any, model: Any, name: str) -> bool:
                for s in other.shapes if s.kind == "circle" and not s.ring]
     at_centres = sum(any(np.linalg.norm(p - c) <= 1e-9 * scene.size for c in centres)
                      for p in body.points.values())
-    wheels = sum(j.kind.along_in == "b" and name in (j.a, j.b) for j in model.joints)   # knife edges
+    wheels = sum(j.kind.knife_edge and name in (j.a, j.b) for j in model.joints)   # knife edges
     return at_centres + wheels >= 2
 
 

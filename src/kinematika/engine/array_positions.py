@@ -75,6 +75,7 @@ class _ArrayBuilder(_Builder):
             d = self.inst.vector(line.direction, f"{self.where}.{field}.direction")
             zero = (np.asarray(d[0]) == 0) & (np.asarray(d[1]) == 0)
         else:
+            assert line.toward is not None              # a line has a direction or a second point
             r = self.at(line.toward, f"{field}[1]")
             d = (r[0] - q[0], r[1] - q[1])
             big = _largest([1.0] + [c * c for c in q + r])

@@ -203,7 +203,8 @@ def _match(rows: list[list[int]], n: int, budget: int) -> Optional[list[int]]:
     for root in range(n):
         if row_col[root] >= 0:
             continue
-        stack, pos, via, seen = [root], [0], [], set()
+        stack, pos, seen = [root], [0], set()
+        via: list[int] = []
         found = -1
         while stack:
             r = stack[-1]

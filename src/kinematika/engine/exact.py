@@ -53,7 +53,8 @@ class RevealedState:
     __slots__ = ("_done", "_raw", "_reveal")
 
     def __init__(self, raw: BodyState, reveal: "Reveal") -> None:
-        self._raw, self._reveal, self._done = raw, reveal, {}
+        self._raw, self._reveal = raw, reveal
+        self._done: dict[str, Any] = {}
 
     def _get(self, name: str) -> Any:
         if name not in self._done:

@@ -29,7 +29,7 @@ def idle_links(inst: Instant) -> list[tuple[str, str, str]]:
         if body in driven or len(joints) != 2 or not all(j.kind.ball for j in joints):
             continue
         a, b = (j.at for j in joints)
-        if a != b:
+        if a != b and a is not None and b is not None:      # (a ball joint has its point)
             out.append((body, a, b))
     return out
 

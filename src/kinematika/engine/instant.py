@@ -147,7 +147,7 @@ def instantiate(model: m.Model, symbolic: bool | None = None) -> Instant:
 
 def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict, dict]:
     env: dict[str, Any] = {}
-    at_given: dict[Any, float] = {}
+    at_given: dict[Any, Optional[float]] = {}
     pending = dict(model.parameters)
     for name, p in list(pending.items()):
         # forced symbols: the parameters given values; those defined from others stay formulas
@@ -158,10 +158,11 @@ def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict
             if p.value is not None:
                 at_given[env[name]] = _given_value(p, backend)
     while pending:
-        ready = [p for p in pending.values() if p.value.names() <= set(env) | {"pi"}]
+        ready = [p for p in pending.values() if p.value is not None and p.value.names() <= set(env) | {"pi"}]
         if not ready:
             raise KinematikaError("schema", "parameters-cycle", "parameters", names=list(pending))
         for p in ready:
+            assert p.value is not None                  # those without a value are symbols, above
             try:
                 env[p.name] = evaluate(p.value, env, backend)
             except ExpressionError as err:
@@ -175,6 +176,8 @@ def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict
 def _given_value(p: m.Parameter, backend: Any) -> float | None:
     """The value a forced symbol was given, to probe the model where its geometry holds;
     None (a generic probe) for 0 or a sign its symbol cannot take."""
+    if p.value is None:
+        return None
     try:
         value = float(evaluate(p.value, {}, backend))
     except (ExpressionError, TypeError, ValueError):

@@ -95,14 +95,23 @@ class Level:
     def w(self, body: str) -> Any:
         """The solved ω of `body` (zero for the frame), for the acceleration level's centripetal
         and Coriolis terms."""
-        return self.motion.states[body].omega if body in self.motion.states else self.space.rot_zero()
+        motion = self.solved()
+        return motion.states[body].omega if body in motion.states else self.space.rot_zero()
 
     def v(self, body: str, p: tuple) -> tuple:
         """The solved velocity of `body`'s material point at `p`, v = v₀ + ω × (P − ref) (zero
         for the frame), for the Coriolis terms."""
-        if body not in self.motion.states:
+        motion = self.solved()
+        if body not in motion.states:
             return self.space.zero()
-        return self.motion.velocity(self.motion.states[body], p)
+        return motion.velocity(motion.states[body], p)
+
+    def solved(self) -> Motion:
+        """The solved velocities the acceleration level is written with (a velocity level,
+        which has none, asks for them only by mistake)."""
+        if self.motion is None:
+            raise TypeError("the velocity level has no solved velocities")
+        return self.motion
 
 
 class VelocityLevel(Level):

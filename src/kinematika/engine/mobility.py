@@ -173,7 +173,7 @@ def _dependent_drivers(scaled: np.ndarray, is_driver: np.ndarray, labels: list[s
         else:
             gap = np.linalg.norm(row)
         text = Said("row-driver", where=wheres[i], label=labels[i])
-        if gap < 1e-8 * max(np.linalg.norm(row), 1e-300) and text not in out:
+        if gap < 1e-8 * max(float(np.linalg.norm(row)), 1e-300) and text not in out:
             out.append(text)
     return out
 

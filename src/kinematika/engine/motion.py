@@ -66,7 +66,7 @@ class Motion:
         normal = self.terms.normal_part(sp.cross(state.omega, sp.cross(state.omega, r)))
         return add(add(state.a0, sp.cross(state.alpha, r)), normal)
 
-    def arrays(self) -> tuple[Any, Any, Any, Any]:
+    def arrays(self) -> tuple[Any, ...]:
         """ω, v₀, α, a₀ of every body (the order of `states`) as float arrays of one row per
         body (ω and α with one column in the plane, three in space); numeric motions."""
         import numpy as np

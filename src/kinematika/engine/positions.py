@@ -433,6 +433,7 @@ class _Builder:
             if self.num(d[0]) == 0 and self.num(d[1]) == 0:
                 raise KinematikaError("schema", "line-direction-zero", f"{self.where}.{field}.direction")
             return q, d
+        assert line.toward is not None                  # a line has a direction or a second point
         r = self.at(line.toward, f"{field}[1]")
         d = (r[0] - q[0], r[1] - q[1])
         if _coincide(self, d, q + r):
@@ -479,7 +480,7 @@ def _line_name(line: LineDef) -> str:
     if line.toward is not None:
         a, b = _name(line.through), _name(line.toward)
         return a + b if isinstance(line.through, str) and isinstance(line.toward, str) else f"{a}–{b}"
-    return f"through {_name(line.through)} along (" + ", ".join(e.text for e in line.direction) + ")"
+    return f"through {_name(line.through)} along (" + ", ".join(e.text for e in line.direction or ()) + ")"
 
 
 def _coords(builder: _Builder, p: tuple) -> str:

@@ -85,7 +85,7 @@ def rotation(inst: Placed, turn: Turn, now: dict[str, tuple]) -> tuple[Any, Any]
     if turn.angle is not None:
         t = inst.value(turn.angle, "move")
         return bk.function("cos")(t), bk.function("sin")(t)
-    if turn.toward is None:
+    if turn.toward is None or turn.pivot is None:
         return 1, 0
     d0 = sub(inst.drawn[turn.toward], inst.drawn[turn.pivot])
     d = sub(now[turn.toward], now[turn.pivot])

@@ -21,6 +21,7 @@ from decimal import Decimal
 from typing import Any, Optional
 
 from ..draw.dimensions import RADIUS, Dimension
+from ..joints.capabilities import Centre
 from ..model.constructions import CircleLine, Polar, TwoCircles
 from ..expressions import Expr
 from .stated import number_text, stated_text
@@ -267,7 +268,7 @@ def rates_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str,
     for d in model.drivers:
         if d.kind != "omega" or d.relative_to not in (None, model.frame) or not isinstance(d.value, Expr):
             continue
-        pivot = next((j.at for j in model.joints if j.kind.pins and j.kind.centre == "pin" and {j.a, j.b} == {d.body, model.frame}
+        pivot = next((j.at for j in model.joints if j.kind.pins and j.kind.centre is Centre.PIN and {j.a, j.b} == {d.body, model.frame}
                       and isinstance(j.at, str)), None)
         if pivot is None:
             continue

@@ -52,7 +52,7 @@ def read_typed(text: str) -> Typed:
                    lambda m: "e" + m.group(1).translate(SUPERSCRIPTS), clean)
     m = NUMBER.match(clean)
     number = _number(m.group(0).replace(" ", "")) if m else None
-    if number is None:
+    if m is None or number is None:
         return Typed(text, None, "", None)
     rest = clean[m.end():].strip()
     return Typed(text, number, rest, unit_named(rest) if rest else None)

@@ -17,7 +17,10 @@ and lives in the kind's module, asked for by the rest of the package through thi
 - for structure and instant centres: the scalar conditions it imposes in the plane
   (`conditions`), its pairs in a group's name (`chain`: R, P, or PR), and where the relative
   instant centre of its two bodies is (`centre`);
-- how it is drawn, explained and built from Python (`route`, `builder`).
+- how it is drawn and built from Python (`symbol`, `builder`).
+
+The capabilities that are words, not yes/no, are typed in `joints.capabilities`
+(`Coordinate`, `Centre`, `Chain`, `Side`, `PointOn`, `Need`).
 
 The rows receive the level `lv` and the instant `inst` as arguments and only call their
 methods, so a joint module needs nothing of the engine (sympy's `Joint` and pinocchio's
@@ -27,14 +30,49 @@ from __future__ import annotations
 
 import functools
 import inspect
+from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
-from typing import Any, Callable, ClassVar, Optional
+from typing import TYPE_CHECKING, Any, Callable, ClassVar, Optional, Protocol
 
 from ..algebra.vectors import dot, sub
 from ..errors import KinematikaError, Names, Num, Said
+from ..expressions import PointPair
 from . import positions
+from .capabilities import Centre, CentreLine, Chain, Coordinate, Need, PointOn, Side
+from .positions import Residual
+from ..expressions import Direction
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism, Pose, Scalar
+    from .symbols import Mark
 
 AXES = "xyz"
+
+
+class ModelJoint(Protocol):
+    """A joint as the model holds it (`model.model.Joint`): its bodies `a` and `b`, its point
+    `at` (a point's name), its directions `along` and `axis` as written, `internal` (circles
+    inside circles), its kind (`kind`, named `type`) and where it is written (`where`, for errors)."""
+
+    __dataclass_fields__: ClassVar[dict[str, Any]]   # a dataclass: `dataclasses.replace` makes a variant
+    id: str
+    type: str
+    a: str
+    b: str
+    at: Optional[str]
+    along: Optional[Direction]
+    axis: Optional[Direction]
+    internal: Optional[bool]
+
+    @property
+    def where(self) -> str:
+        """Where the joint is written, for errors: ``joints[2] (j3)``."""
+        ...
+
+    @property
+    def kind(self) -> JointKind:
+        """What its kind means (the engine asks it for the joint's rows)."""
+        ...
 
 
 @dataclass
@@ -43,16 +81,31 @@ class JointGeometry:
     unit directions (fixed in body `a`, in `b` for a knife edge) and their unit normals,
     and the contact of a rolling pair."""
 
-    joint: Any
-    at: Any = None                          # a tuple of numbers or formulas, or None
-    along: Any = None                       # unit; fixed in body a (b for a `wheel`)
-    axis: Any = None                        # unit; fixed in body a
-    perps: list = field(default_factory=list)   # unit normals to `along` or `axis`
-    contact: Any = None                     # a touching pair's contact (`Contact`, `Touch`)
+    joint: ModelJoint
+    at: Optional[tuple] = None              # a tuple of numbers or formulas, or None
+    along: Optional[tuple] = None           # unit; fixed in body a (b for a `wheel`)
+    axis: Optional[tuple] = None            # unit; fixed in body a
+    perps: list[tuple] = field(default_factory=list)   # unit normals to `along` or `axis`
+    contact: object = None                  # a touching pair's contact (`touching.Touch`, `rolling_contact.Contact`)
     roller: float = 0.0                     # a cam follower's roller radius (drawn about `at`)
 
+    def point_at(self) -> tuple:
+        """`at`, for a kind whose joints carry it (their `fields` require it)."""
+        assert self.at is not None, f"{self.joint.where}: no point"
+        return self.at
 
-Rows = list[tuple[Any, Said]]          # each condition and its message (errors' catalogue)
+    def unit_along(self) -> tuple:
+        """`along`, for a kind whose joints carry it."""
+        assert self.along is not None, f"{self.joint.where}: no direction along"
+        return self.along
+
+    def unit_axis(self) -> tuple:
+        """`axis`, for a kind whose joints carry it (in 3D)."""
+        assert self.axis is not None, f"{self.joint.where}: no axis"
+        return self.axis
+
+
+Rows = list[tuple["Scalar", Said]]       # each condition (a linear form) and its message (errors' catalogue)
 
 
 @dataclass
@@ -66,20 +119,27 @@ class Holonomic:
     (one list of weights per value), so that the Jacobian of the values is those weights times
     the engine's velocity matrix; None: the values are the rows themselves, one for one."""
 
-    values: Callable[[Any, float], list]
-    weights: Optional[Callable[[Any], list]] = None
+    values: Residual
+    weights: Optional[Callable[[Pose], list]] = None
 
 
-class JointKind:
+class JointKind(ABC):
     """A kind of joint: its name in model files and everything it means (see the module's
-    docstring). One instance per kind, registered in `kinematika.joints.KINDS`."""
+    docstring). One instance per kind, registered in `kinematika.joints.KINDS`.
+
+    A new kind must fill `conditions`, `rows` and `add` (abstract: a kind without them cannot
+    be made) and set its `name`, `summary`, `fields` and capabilities; `prepare`, `residual`,
+    `holonomic`, `displacement`, `moved`, `rate` and `symbol` have defaults that a kind
+    overrides as it needs (sympy's `Joint` is the pattern: an abstract base whose subclasses
+    fill the hooks it calls). What the hooks receive is typed in `joints.seam`."""
 
     name: ClassVar[str] = ""
     summary: ClassVar[str] = ""             # one line for the docs and messages
+    condition: ClassVar[str] = ""           # its condition at the velocity level, one line for the docs
     dimensions: ClassVar[tuple[int, ...]] = (2, 3)   # the models it exists in
     # capabilities --------------------------------------------------------------------------
-    coordinate: ClassVar[Optional[str]] = None   # "angle" (degrees, rad/s) or "length": its own
-                                                 # coordinate, which drivers may give the rate of
+    coordinate: ClassVar[Optional[Coordinate]] = None   # an angle (degrees, rad/s) or a length:
+                                                 # its own coordinate, which drivers may give the rate of
     sweepable: ClassVar[bool] = False       # a sweep (and `move`) may advance that coordinate
     pins: ClassVar[bool] = False            # the bodies share the point `at` (its motion)
     ball: ClassVar[bool] = False            # ... and turn freely about it, every way (3D)
@@ -94,30 +154,34 @@ class JointKind:
     velocity_only: ClassVar[tuple[int, ...]] = ()   # the dimensions in which its condition is on
                                             # velocities only (non-holonomic: a motion with it
                                             # is followed in time, `simulate`, not swept)
-    along_in: ClassVar[str] = "a"           # the body `along` is fixed in
-    centre: ClassVar[str] = ""              # where it puts the relative instant centre of its two
-                                            # bodies by itself: "pin" (at `at`), "contact" (the
-                                            # contact point), "infinity" (normal to the sliding),
-                                            # "rest" (none: they move as one); "normal" (only a
-                                            # line: the common normal at the contact); "" none
-    chain: ClassVar[str] = ""               # the lower pairs it is in a chain, read from a to b:
-                                            # "R", "P", or "PR" for a pin in a slot (a slider
-                                            # block between); names dyads (RRR, RRP, …)
-    route: ClassVar[str] = "pair"           # how an explanation treats it (explain.group)
-    centre_line: ClassVar[str] = ""         # with centre "normal": which line, in the explanation's
+    along_in: ClassVar[Side] = Side.A       # the body `along` is fixed in
+    centre: ClassVar[Centre] = Centre.NONE  # where it puts the relative instant centre of its two
+                                            # bodies by itself: at `at` (PIN), at the contact
+                                            # point (CONTACT), normal to the sliding (INFINITY),
+                                            # none as they move as one (REST); only a line: the
+                                            # common normal at the contact (NORMAL)
+    chain: ClassVar[Chain] = Chain.NONE     # the lower pairs it is in a chain, read from a to b:
+                                            # R, P, or PR for a pin in a slot (a slider block
+                                            # between); names dyads (RRR, RRP, …)
+    centre_line: ClassVar[CentreLine] = ""         # with centre "normal": which line, in the explanation's
                                             # words (its message `centre-line-…`)
     # what the file says: each optional key of a joint and whether this kind needs it
     # ("required", "optional", "required in 3D" — and then absent in a planar model —,
     # "optional in 3D"; a key not listed is refused), and the bodies that must carry `at`
-    fields: ClassVar[dict[str, str]] = {}
-    point_on: ClassVar[str] = ""            # "ab": both bodies carry `at`; "b": the second one
+    fields: ClassVar[dict[str, Need]] = {}
+    point_on: ClassVar[PointOn] = PointOn.NONE   # the bodies that carry `at`: both, or the second
 
+    def along_body(self, joint: ModelJoint) -> str:
+        """The body the joint's `along` is fixed in (`along_in`): its `a`, or its `b` for a
+        knife edge."""
+        return joint.b if self.along_in is Side.B else joint.a
+
+    @abstractmethod
     def conditions(self, dim: int) -> int:
         """The independent scalar conditions it imposes on the pair's relative motion."""
-        raise NotImplementedError
 
     # at an instant ------------------------------------------------------------------------
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Instant, joint: ModelJoint) -> JointGeometry:
         """Evaluate the joint's point and directions, and check its geometry holds (else a
         `geometry` error naming the joint and the gap)."""
         sp, bk = inst.space, inst.backend
@@ -125,50 +189,49 @@ class JointKind:
         if joint.at is not None:
             geo.at = inst.points[joint.at]
         if joint.along is not None:
-            fixed_in = joint.b if self.along_in == "b" else joint.a
-            geo.along = inst.body_direction(fixed_in, joint.along, f"{joint.where}.along")
+            geo.along = inst.body_direction(self.along_body(joint), joint.along, f"{joint.where}.along")
             geo.perps = sp.perpendiculars(geo.along, bk.sqrt)
         if joint.axis is not None:
             geo.axis = inst.direction(joint.axis, f"{joint.where}.axis")
         return geo
 
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+    @abstractmethod
+    def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """The conditions at the level `lv`, each (a linear form that must vanish, a label)."""
-        raise NotImplementedError
 
-    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Callable[[Any, float], list]:
+    def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """The condition itself, for sweeps (`joints.positions`): a function of a pose and the
         increment whose rows are the integrals of `rows`, row for row."""
         raise KinematikaError("schema", "sweep-velocity-only", geo.joint.where, kind=self.name, dim=inst.space.dim,
                               in_time=str(inst.space.dim in self.velocity_only).lower())
 
-    def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
+    def holonomic(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Holonomic:
         """The condition's part on positions (`Holonomic`), for a motion integrated in time: the
         whole condition (`residual`, row for row the engine's) unless the kind is constrained
         on velocities only (a knife edge, a disc rolling on a plane), which says what is left."""
         return Holonomic(self.residual(inst, geo, ref))
 
-    def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Callable[[Any, float], list]:
+    def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Residual:
         """The position form of a driver of the joint's rate: the coordinate's change from
         the drawing, less the sweep's increment when it is the swept one (a length here:
         the pin's or the reference point's offset along `along`)."""
         a, b = geo.joint.a, geo.joint.b
         p0 = geo.at if geo.at is not None else ref
         return lambda q, dq: [positions.dot(positions.differences(q.point(b, p0), q.point(a, p0)),
-                                            q.turn(a, geo.along)) - (dq if swept else 0.0)]
+                                            q.turn(a, geo.unit_along())) - (dq if swept else 0.0)]
 
-    def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
+    def moved(self, geo: JointGeometry, inst: Instant, hint: object = None) -> Optional[JointGeometry]:
         """The joint's geometry at a sweep's new pose, when it must be found anew there (a
         contact that moves along its outlines; `geo` is the geometry as its bodies carried
         it, `hint` what the sweep remembers of it); None: carried by its bodies as drawn."""
         return None
 
-    def rate(self, geo: JointGeometry, lv: Any) -> Any:
+    def rate(self, geo: JointGeometry, lv: Level) -> Scalar:
         """The rate of the joint's coordinate (b relative to a), or its derivative at the
         acceleration level; only for a kind with a `coordinate`."""
         raise self.no_rate(geo.joint.where)
 
-    def check_fields(self, given: dict[str, Any], dim: int, where: str) -> None:
+    def check_fields(self, given: dict[str, object], dim: int, where: str) -> None:
         """The joint's keys for this kind in a model of `dim` dimensions: its model exists,
         the keys it needs are given and no other (a `schema` error naming the joint)."""
         if dim not in self.dimensions:
@@ -191,23 +254,24 @@ class JointKind:
         return KinematikaError("schema", "joint-no-rate", where, kind=self.name)
 
     # drawn -----------------------------------------------------------------------------------
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[Mark]:
         """How a figure draws it (`joints.symbols.Mark`s): `view` its place on the page (its
         point, directions, contact), `ctx` the figure's (see `joints.symbols`)."""
         return []
 
     # from Python ---------------------------------------------------------------------------
-    def add(self, m: Any, a: str, b: str, *args: Any, **fields: Any) -> str:
+    @abstractmethod
+    def add(self, m: Mechanism, a: str, b: str, *args: Any, **fields: Any) -> str:
         """Add a joint of this kind between bodies `a` and `b` to the `Mechanism` `m`; its id.
-        Each kind names its own fields (`Revolute.add(m, a, b, at, axis=None, id=None)`)."""
-        return m.joint(self.name, a, b, *args, **fields)
+        Each kind names its own fields (`Revolute.add(m, a, b, at, axis=None, id=None)`), and
+        passes them on as `m.joint(self.name, a, b, id, **fields)`."""
 
     def builder(self) -> Callable[..., str]:
         """The `Mechanism` method named after this kind (`m.revolute(...)`): its `add`."""
         add, kind = type(self).add, self
 
         @functools.wraps(add)
-        def method(m: Any, *args: Any, **kwargs: Any) -> str:
+        def method(m: Mechanism, *args: Any, **kwargs: Any) -> str:
             return add(kind, m, *args, **kwargs)
 
         signature = inspect.signature(add)
@@ -237,14 +301,14 @@ def rounding_hint(gap: float, scale: float, point: "str | Said") -> Said:
     return Said("rounding-hint", tolerance=Num(1e-6 * scale, ".2g"), point=point)
 
 
-def off_line(inst: Any, joint: Any, geo: JointGeometry) -> None:
+def off_line(inst: Instant, joint: ModelJoint, geo: JointGeometry) -> None:
     """A slot's pin must lie on the slot's line PQ when the slot is given by two points:
     else a `geometry` error with the gap."""
     along = joint.along
-    if not hasattr(along, "start"):
+    if not isinstance(along, PointPair) or joint.at is None:
         return
     start = inst.points[along.start]
-    gap = inst.num(dot(sub(geo.at, start), geo.perps[0]))
+    gap = inst.num(dot(sub(geo.point_at(), start), geo.perps[0]))
     if abs(gap) > 1e-6 * inst.scale:
         raise KinematikaError("geometry", "slot-off-line", joint.where, point=joint.at, line=f"{along.start}{along.end}",
                               gap=Num(gap, ".6g"), hint=rounding_hint(gap, inst.scale, joint.at))

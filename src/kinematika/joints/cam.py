@@ -9,10 +9,37 @@ curvature terms of the equivalent link). Over a cycle it reproduces the program:
 translating follower's s(θ), v = s'·θ̇, a = s''·θ̇² + s'·θ̈. The relative instant centre
 of cam and follower lies on the common normal at the contact (for a roller, through its
 centre); the pressure angle is that normal's angle from the follower's direction of motion.
+
+Example: a disc cam (base circle 40) with a translating knife-edge follower, rising 20 by
+simple harmonic motion over β = 90°, caught halfway (θ = 45°) while turning at ω = 3 rad/s.
+By hand, s = (h/2)(1 − cos πθ/β) = 10, so the edge F is at 40 + 10 = 50, and
+v = ω ds/dθ = ω (πh/2β) sin(πθ/β) = 3 × 20π/π × 1 = 60:
+
+    >>> import numpy as np, kinematika
+    >>> sol = kinematika.solve('''
+    ... points: {O: [0, 0], F: [0, 50]}
+    ... bodies:
+    ...   ground: [O]
+    ...   cam:
+    ...     points: [O]
+    ...     cam: {center: O, angle: deg(45), base: 40, rotation: ccw,
+    ...           follower: {motion: translating, contact: knife},
+    ...           program: [{law: harmonic, over: 90, to: 20}, {law: harmonic, over: 90, to: 0},
+    ...                     {law: dwell, over: 180}]}
+    ...   follower: [F]
+    ... joints:
+    ...   - {type: revolute, bodies: [ground, cam], at: O}
+    ...   - {type: prismatic, bodies: [ground, follower], along: [0, 1]}
+    ...   - {type: cam, bodies: [cam, follower], at: F}
+    ... drivers: [{omega: cam, value: 3}]
+    ... ''')
+    >>> np.allclose(sol.velocity("F"), (0, 60))
+    True
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING
+
 
 import numpy as np
 
@@ -20,9 +47,12 @@ from ..errors import KinematikaError
 from ..shapes import Cam as CamShape
 from ..shapes import Line
 from . import symbols
-from .base import JointGeometry
+from .base import JointGeometry, ModelJoint
 from .contact import Contact
 from .touching import outlines
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView
 
 
 class Cam(Contact):
@@ -31,13 +61,14 @@ class Cam(Contact):
 
     name = "cam"
     summary = "the first body's cam drives the second, its follower (knife edge or roller at `at`, or flat face)"
+    condition = "the follower's (v_Jb − v_Ja)·n = 0 on the cam"
     keeps = "row-cam-touching"
 
     def conditions(self, dim: int) -> int:
         """One: the follower keeps touching the cam (a higher pair, planar only)."""
         return 1
 
-    def outlines(self, inst: Any, joint: Any, geo: JointGeometry) -> tuple[list, list]:
+    def outlines(self, inst: Instant, joint: ModelJoint, geo: JointGeometry) -> tuple[list, list]:
         """The cam's profile and the follower's flat face (its `line`), or the point `at` and
         the profile (a knife edge) or the pitch curve (a roller's centre; `geo.roller` its
         radius). A cam joint whose first body has no `cam:` shape, a flat face without a line
@@ -58,7 +89,7 @@ class Cam(Contact):
         curve = cam.pitch if contact.radius > 0 else cam.profile
         return [curve], outlines(inst, joint, joint.b, joint.at)
 
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """The follower's roller (a circle about its centre `at`, moving with it) or knife
         edge (a pin), and the contact point."""
         out = symbols.contact_dot(view, ctx)

@@ -7,17 +7,20 @@ velocities (the centripetal ones come with `lv.point`; the Coriolis ones are add
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..algebra.vectors import dot, sub
 
+if TYPE_CHECKING:
+    from .seam import Level
 
-def coincident(lv: Any, a: str, b: str, p: tuple) -> tuple:
+
+def coincident(lv: Level, a: str, b: str, p: tuple) -> tuple:
     """v_P(b) − v_P(a) (or the accelerations): zero when both bodies share P."""
     return sub(lv.point(b, p), lv.point(a, p))
 
 
-def sliding(lv: Any, a: str, b: str, q: tuple, e: tuple) -> Any:
+def sliding(lv: Level, a: str, b: str, q: tuple, e: tuple) -> Any:
     """d/dt [(Q_b − Q_a)·e], e fixed in a: the relative motion of Q along e.
 
     Velocity: v_rel·e. Acceleration: (a_Qb − a_Qa)·e + 2 v_rel·(ω_a × e), the Coriolis term
@@ -30,7 +33,7 @@ def sliding(lv: Any, a: str, b: str, q: tuple, e: tuple) -> Any:
     return row
 
 
-def turning(lv: Any, a: str, b: str, e: tuple) -> Any:
+def turning(lv: Level, a: str, b: str, e: tuple) -> Any:
     """d/dt [(ω_b − ω_a)·e], e fixed in a (3D): (α_b − α_a)·e + ω_rel·(ω_a × e)."""
     sp = lv.space
     row = sp.rot_dot(sp.rot_sub(lv.omega(b), lv.omega(a)), e)
@@ -40,7 +43,7 @@ def turning(lv: Any, a: str, b: str, e: tuple) -> Any:
     return row
 
 
-def same_rotation(lv: Any, a: str, b: str) -> list:
+def same_rotation(lv: Level, a: str, b: str) -> list:
     """ω_b − ω_a (α_b − α_a) component by component."""
     sp = lv.space
     return list(sp.rot_components(sp.rot_sub(lv.omega(b), lv.omega(a))))

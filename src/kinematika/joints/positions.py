@@ -6,9 +6,13 @@ drawn point P carried by body, `q.turn(body, e)` a drawn direction turned with i
 from __future__ import annotations
 
 import math
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
-Residual = Callable[[Any, float], list]      # (poses, increment) -> residual rows
+if TYPE_CHECKING:
+    from .seam import Pose
+
+
+Residual = Callable[["Pose", float], list]     # (poses, increment) -> residual rows
 
 
 def differences(p: Any, r: Any) -> list:
@@ -22,18 +26,18 @@ def dot(p: Any, r: Any) -> float:
     return sum(x * y for x, y in zip(p, r))
 
 
-def coincide(q: Any, a: str, b: str, p0: tuple) -> list:
+def coincide(q: Pose, a: str, b: str, p0: tuple) -> list:
     """The material points of a and b drawn at p0, apart by this much (pins, welds)."""
     return differences(q.point(b, p0), q.point(a, p0))
 
 
-def across(q: Any, a: str, b: str, p0: tuple, perps: list) -> list:
+def across(q: Pose, a: str, b: str, p0: tuple, perps: list) -> list:
     """The offset of b's point from a's across each direction fixed in a (sliding pairs)."""
     gap = differences(q.point(b, p0), q.point(a, p0))
     return [dot(gap, q.turn(a, n)) for n in perps]
 
 
-def axis_kept(q: Any, a: str, b: str, axis: tuple, perps: list) -> list:
+def axis_kept(q: Pose, a: str, b: str, axis: tuple, perps: list) -> list:
     """3D: b's axis stays along a's: e_b·p₂ and e_b·p₁ (p₁, p₂ ⊥ e fixed in a), signed so that
     their rates are the engine's rows (ω_b − ω_a)·p₁ and (ω_b − ω_a)·p₂."""
     e = q.turn(b, axis)
@@ -45,7 +49,7 @@ def wrap(x: float) -> float:
     return (x + math.pi) % (2 * math.pi) - math.pi
 
 
-def continued(q: Any, key: str, psi0: float, d: Any) -> float:
+def continued(q: Pose, key: str, psi0: float, d: Any) -> float:
     """The angle of d, continued from the value remembered under `key` (no jump of 2π)."""
     psi = q.aux.get(key, psi0)
     return psi + wrap(math.atan2(d[1], d[0]) - psi)

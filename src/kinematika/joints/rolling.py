@@ -5,22 +5,39 @@ have equal velocity.
 Condition: contact is kept and v_J(b) = v_J(a). Differentiating along the motion:
 a_J(b) − a_J(a) = ω_rel × (v_J(a) − J̇), J̇ the velocity of the geometric contact point
 (`contact.Contact.jdot`). The relative instant centre of the pair is J.
+
+Example: a wheel of radius 2 rolling on the ground's line y = 0, turning at ω = −3 rad/s
+(clockwise). By hand, the contact J is the instant centre: v_C = ω k × JC = −3 k × (0, 2)
+= (6, 0) at the centre, and twice that, (12, 0), at the top T:
+
+    >>> import numpy as np, kinematika
+    >>> m = kinematika.Mechanism("wheel").point("J", 0, 0).point("C", 0, 2).point("T", 0, 4)
+    >>> m = m.body("ground", "J", line=("J", (1, 0))).body("wheel", "J", "C", "T", circle=("C", 2))
+    >>> roll = m.rolling("ground", "wheel")
+    >>> sol = m.drive_omega("wheel", -3).solve()
+    >>> np.allclose(sol.velocity("C"), (6, 0)), np.allclose(sol.velocity("T"), (12, 0))
+    (True, True)
 """
 from __future__ import annotations
 
 import math
 from dataclasses import replace
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
+from .positions import Residual
+from .capabilities import Centre
 from ..algebra.vectors import sub
 from ..errors import Said
 from ..shapes import Circle, Disc, Plane
 from . import symbols
-from .base import AXES, Holonomic, JointGeometry, JointKind, Rows
+from .base import AXES, Holonomic, JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
-from .rolling_contact import drawn_pair, find_contact
+from .rolling_contact import contact_of, drawn_pair, find_contact
 from .tangency import circles_tangency
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism, Pose
 
 
 class Rolling(JointKind):
@@ -28,11 +45,11 @@ class Rolling(JointKind):
 
     name = "rolling"
     summary = "the bodies' shapes roll on each other without slipping"
+    condition = "v_J(b) − v_J(a) = 0 at the contact"
     touches = True
     rolls = True
     velocity_only = (3,)              # a disc on a plane: where it has rolled depends on the path
-    centre = "contact"
-    route = "contact"
+    centre = Centre.CONTACT
     fields = {"at": "optional", "internal": "optional"}
 
     def conditions(self, dim: int) -> int:
@@ -40,24 +57,24 @@ class Rolling(JointKind):
         v_J(b) = v_J(a))."""
         return 2 if dim == 2 else 3
 
-    def prepare(self, inst: Any, joint: Any) -> JointGeometry:
+    def prepare(self, inst: Instant, joint: ModelJoint) -> JointGeometry:
         """The contact of the two shapes at this instant (`geo.contact`: the point J, its
         normal, and its motion J̇ for the acceleration rows)."""
         geo = super().prepare(inst, joint)
         geo.contact = find_contact(inst, joint)
         return geo
 
-    def moved(self, geo: JointGeometry, inst: Any, hint: Any = None) -> Optional[JointGeometry]:
+    def moved(self, geo: JointGeometry, inst: Instant, hint: object = None) -> Optional[JointGeometry]:
         """The carried geometry with the contact found anew where the circles now touch (the
         drawn contact point `at` does not travel with either body); whether they touch is for
         the caller to judge (a sweep's residual, a simulation's projection)."""
         geo.contact = find_contact(inst, replace(geo.joint, at=None), touching=False)
         return geo
 
-    def rows(self, geo: JointGeometry, lv: Any) -> Rows:
+    def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """v_J(b) − v_J(a) = 0; a_J(b) − a_J(a) − ω_rel × (v_J(a) − J̇) = 0."""
         j, sp = geo.joint, lv.space
-        c = geo.contact
+        c = contact_of(geo)
         diff = coincident(lv, j.a, j.b, c.point)
         if lv.accel:
             w_rel = sp.rot_sub(lv.w(j.b), lv.w(j.a))
@@ -65,11 +82,11 @@ class Rolling(JointKind):
             diff = sub(diff, sp.cross(w_rel, rolling_velocity))
         return [(x, Said("row-no-slip", body=j.a, other=j.b, axis=AXES[i])) for i, x in enumerate(diff)]
 
-    def symbol(self, view: Any, ctx: Any) -> list:
+    def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """The contact point (a still figure only: it is no body's point)."""
         return symbols.contact_dot(view, ctx)
 
-    def residual(self, inst: Any, geo: JointGeometry, ref: tuple) -> Any:
+    def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """Planar circles and lines: the contact kept (normal) and the arcs rolled equal
         (tangential), as one vector whose components are the engine's x and y rows.
 
@@ -89,7 +106,7 @@ class Rolling(JointKind):
             return _on_line(ca, a, cb, b, -1.0)
         return _on_line(cb, b, ca, a, 1.0)
 
-    def holonomic(self, inst: Any, geo: JointGeometry, ref: tuple) -> Holonomic:
+    def holonomic(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Holonomic:
         """In the plane, the whole condition (`residual`). A disc on a plane rolls without
         slipping on velocities only (where it has rolled to depends on the path), and keeps
         touching on positions: the gap σ n·(C − P) − R |n − (n·a) a| (C the disc's centre, a its
@@ -99,7 +116,7 @@ class Rolling(JointKind):
             return super().holonomic(inst, geo, ref)
         return _disc_on_plane(inst, geo.joint)
 
-    def add(self, m: Any, a: str, b: str, at: Optional[str] = None, id: Optional[str] = None) -> str:
+    def add(self, m: Mechanism, a: str, b: str, at: Optional[str] = None, id: Optional[str] = None) -> str:
         """The shapes of `a` and `b` roll on each other (touching at point `at`, if named)."""
         return m.joint(self.name, a, b, id, at=at)
 
@@ -114,7 +131,7 @@ def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle) -> Any:
     d0 = differences(cb.center, ca.center)
     psi0 = math.atan2(d0[1], d0[0])
 
-    def circles(q: Any, _: float) -> list:
+    def circles(q: Pose, _: float) -> list:
         d = differences(q.point(b, cb.center), q.point(a, ca.center))
         dist = math.hypot(*d)
         u = (d[0] / dist, d[1] / dist)
@@ -129,7 +146,7 @@ def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle) -> Any:
     return circles
 
 
-def _disc_on_plane(inst: Any, j: Any) -> Holonomic:
+def _disc_on_plane(inst: Instant, j: Any) -> Holonomic:
     """The gap between a disc and the plane it rolls on, and its rate's weights on the rows."""
     import numpy as np
 
@@ -141,13 +158,13 @@ def _disc_on_plane(inst: Any, j: Any) -> Holonomic:
     side = 1.0 if float(n0 @ (c0 - p0)) >= 0 else -1.0
     sign = side if disc_body == j.b else -side          # the rows are v_J(b) − v_J(a)
 
-    def gap(q: Any, _: float) -> list:
+    def gap(q: Pose, _: float) -> list:
         a = np.asarray(q.turn(disc_body, tuple(a0)))
         n = np.asarray(q.turn(plane_body, tuple(n0)))
         centre = np.asarray(q.point(disc_body, tuple(c0))) - np.asarray(q.point(plane_body, tuple(p0)))
         return [side * float(n @ centre) - float(r[0]) * float(np.linalg.norm(n - (n @ a) * a))]
 
-    def weights(q: Any) -> list:
+    def weights(q: Pose) -> list:
         return [[sign * float(x) for x in q.turn(plane_body, tuple(n0))]]
 
     return Holonomic(gap, weights)
@@ -173,7 +190,7 @@ def _on_line(circle: Any, cbody: str, line: Any, lbody: str, sign: float) -> Any
     r = float(circle.radius)
     x0 = dot(rel0, e0)
 
-    def on_line(q: Any, _: float) -> list:
+    def on_line(q: Pose, _: float) -> list:
         e, n = q.turn(lbody, e0), q.turn(lbody, n0)
         rel = differences(q.point(cbody, circle.center), q.point(lbody, line.through))
         along = dot(rel, e) - x0 + side * r * (q.angle(cbody) - q.angle(lbody))

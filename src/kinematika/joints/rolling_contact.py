@@ -13,7 +13,7 @@ from typing import Any, Callable
 from ..algebra.vectors import add, cross3, dot, scale, sub
 from ..errors import KinematikaError, Num, Said
 from ..shapes import Circle, Disc, Line, Plane
-from .base import rounding_hint
+from .base import JointGeometry, rounding_hint
 from .tangency import circles_tangency, tangency
 from .touching import closest
 
@@ -224,3 +224,9 @@ def _drawn_gap(sa: Any, sb: Any) -> float | None:
         n = (-sb.direction[1], sb.direction[0])
         return abs(abs(float(dot(sub(sa.center, sb.through), n))) - float(sa.radius))
     return None
+
+
+def contact_of(geo: JointGeometry) -> Contact:
+    """The contact a rolling pair's `prepare` found (`geo.contact`)."""
+    assert isinstance(geo.contact, Contact), f"{geo.joint.where}: no contact found"
+    return geo.contact

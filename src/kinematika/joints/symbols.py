@@ -20,9 +20,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from .seam import DrawContext, JointView
+
 
 Vec = np.ndarray
 
@@ -128,14 +132,14 @@ def ring(centre: Vec, radius: float, n: int = 61) -> Vec:
 
 
 # shared symbols ----------------------------------------------------------------------------
-def mover(view: Any, ctx: Any) -> Optional[str]:
+def mover(view: JointView, ctx: DrawContext) -> Optional[str]:
     """The body a symbol at the joint moves with: the second body unless it is the frame."""
     if view.b != ctx.frame:
         return view.b
     return view.a if view.a != ctx.frame else None
 
 
-def pin(view: Any, ctx: Any, centre_dot: bool = False, body: Any = "") -> list[Mark]:
+def pin(view: JointView, ctx: DrawContext, centre_dot: bool = False, body: Any = "") -> list[Mark]:
     """A pin at the joint, moving with `body` (by default the pair's moving body)."""
     p = np.asarray(view.at, dtype=float)[None, :]
     body = mover(view, ctx) if body == "" else body
@@ -146,7 +150,7 @@ def pin(view: Any, ctx: Any, centre_dot: bool = False, body: Any = "") -> list[M
     return out
 
 
-def support(p: Vec, ctx: Any) -> list[Mark]:
+def support(p: Vec, ctx: DrawContext) -> list[Mark]:
     """A fixed pivot: a triangle from the pin to a hatched base, below the pin (in a planar
     model, above it when the pin is clearly above the rest of the mechanism: it hangs)."""
     p = np.asarray(p, dtype=float)
@@ -164,7 +168,7 @@ def support(p: Vec, ctx: Any) -> list[Mark]:
                                       base - h * side + band * down]), "ground", width=0, hatch=True, zorder=1)]
 
 
-def hatched_edge(p: Vec, q: Vec, side: Vec, ctx: Any, gid: str) -> list[Mark]:
+def hatched_edge(p: Vec, q: Vec, side: Vec, ctx: DrawContext, gid: str) -> list[Mark]:
     """A fixed edge from p to q, hatched on `side` (where the frame's material is)."""
     band = HATCH_BAND * ctx.size
     return [Mark("line", np.array([p, q]), "ground", width=1.8, zorder=2, gid=gid),
@@ -172,7 +176,7 @@ def hatched_edge(p: Vec, q: Vec, side: Vec, ctx: Any, gid: str) -> list[Mark]:
                  hatch=True, zorder=1, avoid=0.7)]
 
 
-def block_on_guide(view: Any, ctx: Any) -> list[Mark]:
+def block_on_guide(view: JointView, ctx: DrawContext) -> list[Mark]:
     """A block (second body) on its guide (first body); a fixed guide is hatched."""
     along = view.along if view.along is not None else (unit(view.axis) if view.axis is not None else None)
     centre = slider_centre(view, ctx)
@@ -187,7 +191,7 @@ def block_on_guide(view: Any, ctx: Any) -> list[Mark]:
     return out
 
 
-def slider_centre(view: Any, ctx: Any) -> Optional[Vec]:
+def slider_centre(view: JointView, ctx: DrawContext) -> Optional[Vec]:
     """Where a slider's block is drawn: at the joint's point `at`, else at the centroid of the
     moving body's points (the slider's, else the guide's), else nowhere (None)."""
     if view.at is not None:
@@ -199,7 +203,7 @@ def slider_centre(view: Any, ctx: Any) -> Optional[Vec]:
     return None
 
 
-def guide(body: str, centre: Vec, along: Vec, height: float, ctx: Any) -> list[Mark]:
+def guide(body: str, centre: Vec, along: Vec, height: float, ctx: DrawContext) -> list[Mark]:
     """The guide a block slides on: the frame's hatched edge beside the block, or a bar of
     the guiding body over its points."""
     if body == ctx.frame:
@@ -212,8 +216,8 @@ def guide(body: str, centre: Vec, along: Vec, height: float, ctx: Any) -> list[M
     pts = list(ctx.points(body)) + [centre]
     ts = [float((p - centre) @ along) for p in pts]
     margin = 0.12 * ctx.size
-    seg = np.array([centre + (min(ts) - margin) * along, centre + (max(ts) + margin) * along])
-    return [Mark("line", seg, f"body:{body}", width=3.0, zorder=3, moves_with=body)]
+    line = np.array([centre + (min(ts) - margin) * along, centre + (max(ts) + margin) * along])
+    return [Mark("line", line, f"body:{body}", width=3.0, zorder=3, moves_with=body)]
 
 
 def kept_out(seg: tuple, base: Vec, along: Vec, outlines: list, margin: float) -> Optional[tuple]:
@@ -241,7 +245,7 @@ def kept_out(seg: tuple, base: Vec, along: Vec, outlines: list, margin: float) -
     return base + t0 * along, base + t1 * along
 
 
-def contact_dot(view: Any, ctx: Any) -> list[Mark]:
+def contact_dot(view: JointView, ctx: DrawContext) -> list[Mark]:
     """The contact point of a touching pair (a still figure only: it is no body's point)."""
     if view.contact is None or not ctx.still:
         return []

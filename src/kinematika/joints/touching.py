@@ -27,18 +27,21 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Callable, Optional
+from typing import TYPE_CHECKING, Any, Callable, Optional
 
 import numpy as np
 
 from ..algebra.vectors import add, dot, scale, sub
 from ..errors import KinematikaError, Num, Said
 from ..shapes import Cam, Circle, Curve, Line
-from .base import rounding_hint
+from .base import JointGeometry, ModelJoint, rounding_hint
 from .curve_search import circle_contact, curves_contact, support
 from .derivatives import sliding
 from .positions import differences
 from .tangency import tangency
+
+if TYPE_CHECKING:
+    from .seam import Instant, Level, Motion, Pose
 
 
 @dataclass(frozen=True)
@@ -78,20 +81,20 @@ class Touch:
         return None if self.radius_b is None else add(self.point, scale(self.radius_b, self.normal))
 
     # the geometric contact point (the `contact` question), bodies a and b given by the caller
-    def jdot(self, motion: Any) -> tuple:
+    def jdot(self, motion: Motion) -> tuple:
         """J̇, the velocity of the geometric contact point: on the line of the centres,
         J = Ca + μ(Cb − Ca) with μ = ρa/(ρa + ρb), so J̇ = v_Ca + μ(v_Cb − v_Ca); a point of b
         is the contact itself (J̇ = v_P); a straight outline carries the other's centre's foot."""
         return self._moving(motion, "velocity")
 
-    def jddot(self, motion: Any) -> tuple:
+    def jddot(self, motion: Motion) -> tuple:
         """J̈ likewise (exact while the radii stay constant: points, circles, lines)."""
         for outline in (self.outline_a, self.outline_b):
             if isinstance(outline, Curve):
                 raise KinematikaError("schema", "contact-acceleration-curve", "")
         return self._moving(motion, "acceleration")
 
-    def _moving(self, motion: Any, level: str) -> tuple:
+    def _moving(self, motion: Motion, level: str) -> tuple:
         a, b = self.bodies
         of = motion.point_velocity if level == "velocity" else motion.point_acceleration
         if self.radius_b == 0:
@@ -106,22 +109,25 @@ class Touch:
             if level == "acceleration":
                 al = state.alpha if state else 0
                 turn = add(motion.space.cross(al, n), motion.space.cross(w, turn))
+            assert centre is not None, "two straight outlines touch along a line, not at a point"
             return sub(of(body, centre), scale(radius, turn))
         mu = self.radius_a / (self.radius_a + self.radius_b)
-        va, vb = of(a, self.centre_a), of(b, self.centre_b)
+        ca, cb = self.centre_a, self.centre_b
+        assert ca is not None and cb is not None            # both radii given
+        va, vb = of(a, ca), of(b, cb)
         return add(va, scale(mu, sub(vb, va)))
 
 
-def touch_row(lv: Any, a: str, b: str, t: Touch) -> Any:
+def touch_row(lv: Level, a: str, b: str, t: Touch) -> Any:
     """The condition of keeping the contact at level `lv` (see the module's formulas)."""
     n = t.normal
     ca, cb = t.centre_a, t.centre_b
-    if ca is None and cb is None:
+    if ca is None or cb is None:
+        if cb is not None:                  # a straight: b's centre slides along a's line
+            return sliding(lv, a, b, cb, n)
+        if ca is not None:                  # b straight: a's centre slides along b's line
+            return sliding(lv, b, a, ca, scale(-1, n))
         raise KinematikaError("geometry", "straight-outlines", "")
-    if ca is None and cb is not None:       # a straight: b's centre slides along a's line
-        return sliding(lv, a, b, cb, n)
-    if cb is None and ca is not None:       # b straight: a's centre slides along b's line
-        return sliding(lv, b, a, ca, scale(-1, n))
     row = dot(sub(lv.point(b, cb), lv.point(a, ca)), n)
     if lv.accel:
         v = sub(lv.v(b, cb), lv.v(a, ca))
@@ -130,7 +136,7 @@ def touch_row(lv: Any, a: str, b: str, t: Touch) -> Any:
 
 
 # finding the contact -------------------------------------------------------------------------
-def outlines(inst: Any, joint: Any, body: str, point: Optional[str] = None) -> list:
+def outlines(inst: Instant, joint: ModelJoint, body: str, point: Optional[str] = None) -> list:
     """What `body` may touch with: its point `point` (a pin, a knife edge), or its shapes
     (a cam's profile)."""
     if point is not None:
@@ -142,18 +148,18 @@ def outlines(inst: Any, joint: Any, body: str, point: Optional[str] = None) -> l
 
 
 def closest(first: list, second: list, pair: Callable[[Any, Any], Any], gap: Callable[[Any], float],
-            joint: Any, cannot: Any) -> Any:
+            joint: ModelJoint, cannot: Any) -> Any:
     """Of every pair (one outline of each body) that can touch, `pair(oa, ob)` not None, the
     one with the smallest |gap|; none at all is a `geometry` error naming the joint (`cannot`:
     why, in words)."""
     candidates = [made for oa in first for ob in second if (made := pair(oa, ob)) is not None]
     if not candidates:
-        raise KinematikaError("geometry", "pair-cannot", joint.where, kind=joint.kind.name, body=joint.a,
+        raise KinematikaError("geometry", "pair-cannot", joint.where, kind=joint.type, body=joint.a,
                               other=joint.b, why=cannot)
     return min(candidates, key=lambda c: abs(gap(c)))
 
 
-def find_touch(inst: Any, joint: Any, first: list, second: list, near: Any = None,
+def find_touch(inst: Instant, joint: ModelJoint, first: list, second: list, near: Any = None,
                touching: bool = True) -> Touch:
     """The touching pair of outlines of the joint's two bodies (the one with the smallest
     gap), checked to touch: else a `geometry` error with the gap (unless not `touching`: a
@@ -161,7 +167,7 @@ def find_touch(inst: Any, joint: Any, first: list, second: list, near: Any = Non
     contact (a sweep's previous one), which spares the search along the curve."""
     if not first or not second:
         missing = joint.a if not first else joint.b
-        raise KinematikaError("schema", "touching-needs-outlines", joint.where, kind=joint.kind.name, body=missing)
+        raise KinematikaError("schema", "touching-needs-outlines", joint.where, kind=joint.type, body=missing)
     touch = closest(first, second, lambda oa, ob: _pair(inst, oa, ob, near), lambda t: t.gap, joint,
                     Said("outlines-cannot-touch"))
     touch.bodies = (joint.a, joint.b)
@@ -171,7 +177,7 @@ def find_touch(inst: Any, joint: Any, first: list, second: list, near: Any = Non
     return touch
 
 
-def _pair(inst: Any, oa: Any, ob: Any, near: Any = None) -> Optional[Touch]:
+def _pair(inst: Instant, oa: Any, ob: Any, near: Any = None) -> Optional[Touch]:
     """The contact of outline oa (body a) and ob (body b), or None if they cannot touch."""
     if isinstance(oa, (Circle, Line)) and isinstance(ob, Point):
         return _point_exact(inst, oa, ob)
@@ -196,7 +202,7 @@ def _flip(t: Optional[Touch]) -> Optional[Touch]:
                  t.side, t.param, t.kind + "*")
 
 
-def _point_exact(inst: Any, oa: Any, p: Point) -> Touch:
+def _point_exact(inst: Instant, oa: Any, p: Point) -> Touch:
     """A point of b on a's circle (a pin in a circular slot) or line (a pin in a straight one)."""
     bk = inst.backend
     if isinstance(oa, Circle):
@@ -210,7 +216,7 @@ def _point_exact(inst: Any, oa: Any, p: Point) -> Touch:
     return Touch(p.at, n, None, 0, gap, oa, p, kind="point-line")
 
 
-def _circles(inst: Any, ca: Circle, cb: Circle) -> Optional[Touch]:
+def _circles(inst: Instant, ca: Circle, cb: Circle) -> Optional[Touch]:
     """Circles touching outside each other or one inside the other (`tangency`): J on the
     line of centres, n = σ u from a's material into b's, the radii signed by the way they
     touch, so that Cₐ and C_b are the circles' centres."""
@@ -229,7 +235,7 @@ def _circles(inst: Any, ca: Circle, cb: Circle) -> Optional[Touch]:
                  kind="circles")
 
 
-def _circle_line(inst: Any, ln: Line, c: Circle) -> Touch:
+def _circle_line(inst: Instant, ln: Line, c: Circle) -> Touch:
     """A circle of b touching a's line: J the foot of its centre, n the line's normal towards it."""
     m = (-ln.direction[1], ln.direction[0])
     h = dot(sub(c.center, ln.through), m)
@@ -239,7 +245,7 @@ def _circle_line(inst: Any, ln: Line, c: Circle) -> Touch:
     return Touch(sub(c.center, scale(c.radius, n)), n, None, c.radius, gap, ln, c, kind="circle-line")
 
 
-def _on_curve(inst: Any, curve: Curve, ob: Any, hint: Any = None) -> Optional[Touch]:
+def _on_curve(inst: Instant, curve: Curve, ob: Any, hint: Any = None) -> Optional[Touch]:
     """b's point, circle, line or curve touching a's curve (numeric; `curve_search` finds
     where, from a sweep's last contact `hint` when given: a parameter, or two for two
     curves)."""
@@ -299,8 +305,14 @@ def _curves(ca: Curve, cb: Curve, near: Optional[tuple[float, float]] = None) ->
     return touch
 
 
-def _floats(inst: Any, v: Any) -> np.ndarray:
+def _floats(inst: Instant, v: Any) -> np.ndarray:
     return np.array([float(inst.num(x)) for x in v])
+
+
+def touch_of(geo: JointGeometry) -> Touch:
+    """The touch a contact or curved slot's `prepare` found (`geo.contact`)."""
+    assert isinstance(geo.contact, Touch), f"{geo.joint.where}: no touch found"
+    return geo.contact
 
 
 # the position form -----------------------------------------------------------------------------
@@ -331,18 +343,18 @@ class Follow:
         else:
             self.holder, self.curve, self.other, self.element = self.a, t.outline_a, self.b, t.outline_b
 
-    def __call__(self, q: Any, _: float) -> list:
+    def __call__(self, q: Pose, _: float) -> list:
         if isinstance(self.curve, Curve):
             return [self._on_curve(q, q.aux.get(self.key, self.touch.param), gap=True)[0]]
         return [self._exact(q)]
 
-    def aux(self, q: Any) -> Any:
+    def aux(self, q: Pose) -> Any:
         """The curve parameter at this pose (two curves: both), remembered for the next one."""
         if not isinstance(self.curve, Curve):
             return None
         return self._on_curve(q, q.aux.get(self.key, self.touch.param), gap=False)[1]
 
-    def _on_curve(self, q: Any, u0: Any, gap: bool) -> tuple[float, Any]:
+    def _on_curve(self, q: Pose, u0: Any, gap: bool) -> tuple[float, Any]:
         """(gap, parameter) of the element on the curve at pose q, from the parameter u0 (the
         gap left 0 unless asked for: the parameter alone is what a sweep remembers)."""
         curve, ob, side = self.curve, self.element, self.touch.side
@@ -365,7 +377,7 @@ class Follow:
         u, v = curves_contact(curve, other, near=u0)
         return (float(np.dot(other.point(v) - curve.point(u), side * curve.normal(u))) if gap else 0.0), (u, v)
 
-    def _exact(self, q: Any) -> float:
+    def _exact(self, q: Pose) -> float:
         t, a, b = self.touch, self.a, self.b
         ca, cb = t.centre_a, t.centre_b
         if ca is not None and cb is not None:
@@ -386,13 +398,13 @@ def _numbers(v: Any) -> tuple:
     return tuple(float(x) for x in v)
 
 
-def _turned(q: Any, body: str) -> float:
+def _turned(q: Pose, body: str) -> float:
     """How far a body has turned at pose q from the drawing (radians)."""
     ex = q.turn(body, (1.0, 0.0))
     return math.atan2(float(ex[1]), float(ex[0]))
 
 
-def _inverse(q: Any, body: str) -> Any:
+def _inverse(q: Pose, body: str) -> Any:
     """The map from where points are at pose q back to where body's drawn points were."""
     origin = np.asarray(q.point(body, (0.0, 0.0)), dtype=float)
     ex = np.asarray(q.turn(body, (1.0, 0.0)), dtype=float)
@@ -400,7 +412,7 @@ def _inverse(q: Any, body: str) -> Any:
     return lambda p: (np.asarray(p, dtype=float) - origin) @ r
 
 
-def _turn_back(q: Any, body: str, e: Any) -> np.ndarray:
+def _turn_back(q: Pose, body: str, e: Any) -> np.ndarray:
     ex = np.asarray(q.turn(body, (1.0, 0.0)), dtype=float)
     r = np.array([[ex[0], -ex[1]], [ex[1], ex[0]]])
     return np.asarray(e, dtype=float) @ r

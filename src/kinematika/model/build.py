@@ -279,7 +279,7 @@ class _Builder:
         if at is not None:
             self.known_point(at, f"{where}.at")
             carriers = [name for name in (a, b) if at in self.body_points[name]]
-            must = {"ab": (a, b), "b": (b,)}.get(kind.point_on, ())
+            must = kind.point_on.bodies(a, b)
             missing = [name for name in must if name not in carriers]
             if missing:
                 raise KinematikaError("geometry", "joint-point-not-on-body", where, kind=kind.name, point=at,

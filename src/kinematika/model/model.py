@@ -13,7 +13,8 @@ from typing import TYPE_CHECKING, Any, Optional, Union
 from ..errors import KinematikaError, Names
 from ..joints import JointKind
 from ..joints import kind as joint_kind
-from ..expressions import Expr
+from ..expressions import Direction, Expr, ExprVector
+from ..expressions import PointPair as PointPair      # re-exported: written `model.PointPair` across the package
 
 if TYPE_CHECKING:
     from .constructions import Construction
@@ -27,9 +28,6 @@ def _wording() -> "Wording":
     return Wording()
 
 
-ExprVector = tuple[Expr, ...]
-
-
 @dataclass(frozen=True)
 class PointRef:
     """A material point: the point `point` of body `body` (written ``point@body``)."""
@@ -39,17 +37,6 @@ class PointRef:
 
     def __str__(self) -> str:
         return f"{self.point}@{self.body}"
-
-
-@dataclass(frozen=True)
-class PointPair:
-    """A direction given by two points, from `start` to `end`."""
-
-    start: str
-    end: str
-
-
-Direction = Union[ExprVector, PointPair]
 
 
 @dataclass(frozen=True)

@@ -15,8 +15,12 @@ from dataclasses import dataclass, field
 from itertools import combinations
 from typing import Any, Optional
 
+from ..joints.capabilities import Centre as JointCentre
 from .base import Solved
 from .icr import instant_centre
+
+
+FIXED = tuple(c for c in JointCentre if c.placed)     # a joint's own centre, found without Kennedy
 
 
 @dataclass
@@ -36,15 +40,11 @@ class Centre:
         return self.value.get("point") is not None
 
 
-FIXED = ("pin", "contact", "infinity", "rest")     # a joint's own centre, found without Kennedy
-                                                   # ("normal": only a line through it)
-
-
-def direct_centre(sol: Solved, a: str, b: str) -> Optional[tuple[str, str]]:
+def direct_centre(sol: Solved, a: str, b: str) -> Optional[tuple[JointCentre, str]]:
     """(how the joint places it, joint id) when a joint between a and b places their centre
     by itself (its kind's `centre`: at its pin, its contact, at infinity, or none at rest)."""
     for j in sol.model.joints:
-        if {j.a, j.b} == {a, b} and j.kind.centre in FIXED:
+        if {j.a, j.b} == {a, b} and j.kind.centre.placed:
             return j.kind.centre, j.id
     return None
 
@@ -108,7 +108,7 @@ def crossed_by_a_normal(j: Any) -> bool:
     """Whether the joint puts the relative centre of its bodies on one line through it: the
     normal to a slot at its pin, the axle of a knife-edge wheel (no velocity across them),
     the common normal at a contact that slides (a cam)."""
-    return bool(j.kind.guides_point or j.kind.centre == "normal")
+    return bool(j.kind.guides_point or j.kind.centre is JointCentre.NORMAL)
 
 
 def _welded(sol: Solved, body: str) -> list[tuple[str, str]]:
@@ -166,10 +166,10 @@ def _floats(inst: Any, v: Any) -> tuple:
     return tuple(float(inst.num(c)) for c in v)
 
 
-def _pin(sol: Solved, found: tuple[str, str]) -> str | None:
+def _pin(sol: Solved, found: tuple[JointCentre, str]) -> str | None:
     """The point of a pin (its bodies' centre while they turn), else None."""
     how, jid = found
-    if how != "pin":
+    if how is not JointCentre.PIN:
         return None
     return next((j.at for j in sol.model.joints if j.id == jid and isinstance(j.at, str)), None)
 

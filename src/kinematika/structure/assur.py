@@ -45,8 +45,9 @@ def assur_groups(model: Model) -> Optional[list[Group]]:
     if model.dimension != 2:
         return None
     graph = _Graph(model)
-    inputs = [graph.input_of(d) for d in model.drivers]
-    if not inputs or any(g is None for g in inputs):
+    found = [graph.input_of(d) for d in model.drivers]
+    inputs = [g for g in found if g is not None]
+    if not inputs or len(inputs) < len(found):
         return None
     groups: list[Group] = []
     for g in inputs:
@@ -108,7 +109,7 @@ class _Graph:
             if b1 in self.known:
                 continue
             ends = self.attaching(b1)
-            if len(ends) == 2 and all(j.kind.chain for j in ends):
+            if len(ends) == 2 and all(j.kind.chain.pairs for j in ends):
                 group = _one_body_dyad(b1, ends)
                 if group is not None:
                     return group
@@ -160,11 +161,11 @@ def _other(j: Joint, body: str) -> str:
 
 def _lower(j: Joint) -> bool:
     """A revolute or prismatic pair: one letter of a dyad's name."""
-    return len(j.kind.chain) == 1
+    return j.kind.chain.pairs == 1
 
 
 def _letter(j: Joint) -> str:
-    return j.kind.chain
+    return j.kind.chain.value
 
 
 def dyad(b1: str, b2: str, j1: Joint, j2: Joint, j3: Joint) -> Optional[Group]:
@@ -182,13 +183,13 @@ def dyad(b1: str, b2: str, j1: Joint, j2: Joint, j3: Joint) -> Optional[Group]:
 
 def _one_body_dyad(body: str, ends: list[Joint]) -> Optional[Group]:
     """A body with a slot and a revolute or prismatic joint to known bodies."""
-    slots = [j for j in ends if len(j.kind.chain) == 2]
+    slots = [j for j in ends if j.kind.chain.pairs == 2]
     if len(slots) != 1:
         return None
     slot = slots[0]
     first = next(j for j in ends if j is not slot)
     # the slider block sits between the slot's line (fixed in slot.a) and its pin (on slot.b)
-    slot_letters = slot.kind.chain if slot.a == body else slot.kind.chain[::-1]
+    slot_letters = slot.kind.chain.read_from(slot.a == body)
     letters = _letter(first) + slot_letters
     kinds = {"RPR": "RPR", "RRP": "RRP", "PRP": "PRP"}
     kind = kinds.get(letters, "other")

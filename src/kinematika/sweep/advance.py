@@ -9,6 +9,7 @@ import math
 from typing import Any
 
 from ..errors import KinematikaError, Num
+from ..joints.capabilities import Coordinate
 from ..model.model import Model
 from .plan import check_travel
 from .posed import posed_model
@@ -29,7 +30,7 @@ def swept_to(model: Model, jid: str, amount: float) -> Any:
     the model's size), every row assembled, else the `assembly` error saying how far."""
     sweeper = Sweeper(model, jid)
     check_travel(amount, model.joint(jid), sweeper.inst.scale, f"move.{jid}", "a move of")
-    turns = model.joint(jid).kind.coordinate == "angle"
+    turns = model.joint(jid).kind.coordinate is Coordinate.ANGLE
     per_step = DEGREES_PER_STEP if turns else LENGTHS_PER_STEP * sweeper.inst.scale
     steps = min(MAX_STEPS, max(1, math.ceil(abs(amount) / per_step)))
     result = sweeper.run(amount, steps, skip_bad=True, through=False)   # to the coordinate, not through limits

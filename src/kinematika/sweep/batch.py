@@ -22,6 +22,7 @@ from ..algebra.vectors import Space
 from ..engine.array_positions import array_positions
 from ..engine.instant import Instant, _parameters
 from ..errors import KinematikaError, speaking
+from ..joints.capabilities import Coordinate
 from ..model.model import Model, Parameter, PointPair
 from ..structure.assur import assur_groups
 from .closed_form import ClosedForm, InputRates, Outcome, applicable
@@ -90,7 +91,7 @@ class BatchSweeper:
             return False
         if self.driver.kind not in ("omega", "joint"):
             return False
-        return self.driver.kind == "joint" or self.joint.kind.coordinate == "angle"
+        return self.driver.kind == "joint" or self.joint.kind.coordinate is Coordinate.ANGLE
 
     def _plan(self) -> Plan:
         """The sweep's rows, the same for every design."""
@@ -164,7 +165,7 @@ class BatchSweeper:
         accel = _column(inst.value(d.accel, f"{d.where}.accel"), size)[:, None]
         sign = 1.0 if d.kind == "omega" or j.a == frame else -1.0      # a joint's rate is b relative to a
         body = self.groups[0].bodies[0]
-        if j.kind.coordinate == "angle":
+        if j.kind.coordinate is Coordinate.ANGLE:
             return InputRates(j.at, sign * value, sign * accel, 0j, 0j)
         names = self.model.bodies[body].points
         origin = names[0] if names else next(iter(self.model.points))

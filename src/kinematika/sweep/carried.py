@@ -82,7 +82,7 @@ def fixture(model: Model, body: str) -> "Said | str":
                 isinstance(getattr(s, k, None), (PointPair, type(None))) for k in ("direction", "axis", "normal")):
             return Said("fixture-shape", shape=type(s).__name__.lower())
     for j in model.joints:
-        fixed_in = j.b if j.kind.along_in == "b" else j.a
+        fixed_in = j.kind.along_body(j)
         if fixed_in == body and j.along is not None and not isinstance(j.along, PointPair):
             return Said("fixture-joint", joint=j.id)
     return ""

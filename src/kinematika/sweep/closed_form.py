@@ -23,6 +23,7 @@ import numpy as np
 
 from ..engine.motion import Motion
 from ..errors import Names
+from ..joints.capabilities import Coordinate
 from ..model.model import Driver, Joint, Model
 from ..structure.assur import Group
 
@@ -107,7 +108,7 @@ def applicable(model: Model, groups: Optional[list[Group]], joint: Joint, driver
         return False
     if any(g.kind not in ("input",) + DYADS for g in groups):
         return False
-    if driver.kind == "velocity" and joint.kind.coordinate != "length":
+    if driver.kind == "velocity" and joint.kind.coordinate is not Coordinate.LENGTH:
         return False          # a point's speed on a crank: the crank's ω varies over the turn
     return groups[0].kind == "input" and groups[0].joints == [joint.id]
 
@@ -125,7 +126,7 @@ class ClosedForm:
         self.model, self.joint, self.groups = model, joint, groups
         self.points = points
         self.input = groups[0].bodies[0]
-        self.guide = directions[joint.id] if joint.kind.coordinate == "length" else 0j
+        self.guide = directions[joint.id] if joint.kind.coordinate is Coordinate.LENGTH else 0j
         flips = flips or {}
         self.chains = [(g, _SOLVERS[g.kind], _Chain(model, g, self.points, directions, flips.get(i, 1.0)))
                        for i, g in enumerate(groups[1:], start=1)]
@@ -173,7 +174,7 @@ class ClosedForm:
         sign = 1.0 if j.a == self.model.frame else -1.0      # the coordinate is j.b relative to j.a
         r = self.rates
         o0 = self.points[r.origin]
-        if j.kind.coordinate == "angle":
+        if j.kind.coordinate is Coordinate.ANGLE:
             theta = sign * q
             return Track(self.points, r.origin, theta, o0, r.v, r.a, r.omega, r.alpha, np.exp(1j * theta))
         return Track(self.points, r.origin, 0.0, o0 + (sign * self.guide) * q, r.v, r.a, 0.0, 0.0, 1 + 0j)
@@ -185,7 +186,7 @@ REF = "·ref"             # the drawn reference point, origin of an input slider
 def drawn_rates(model: Model, joint: Joint, body: str, points: dict[str, complex], drawn: Motion) -> InputRates:
     """The input's origin and its ω, α, v, a read from the engine's drawn instant."""
     state = drawn.states[body]
-    if joint.kind.coordinate == "angle":
+    if joint.kind.coordinate is Coordinate.ANGLE:
         origin = joint.at
     else:
         names = model.bodies[body].points

@@ -35,6 +35,7 @@ from typing import Optional
 import numpy as np
 
 from ..engine.idle import idle_links
+from ..joints.capabilities import Coordinate
 from .plan import Plan
 from .rigid import LinearVectors, perpendicular, rotation_vectors, stepped
 from .stacked import Regular, Twists, cross, dot, norm1, refined, times
@@ -533,7 +534,7 @@ def supported(sweeper: Swept) -> bool:
         return False
     joints = {j.id: j for j in model.joints}
     return (all(j.kind.pins for j in model.joints)
-            and all(d.kind == "joint" and joints[d.joint].kind.coordinate == "angle" for d in model.drivers))
+            and all(d.kind == "joint" and joints[d.joint].kind.coordinate is Coordinate.ANGLE for d in model.drivers))
 
 
 def compiled_sweep(sweeper: Swept, plan: Plan):

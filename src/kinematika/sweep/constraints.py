@@ -20,6 +20,7 @@ import numpy as np
 from ..engine.instant import Instant
 from ..engine.idle import idle_links
 from ..joints import JointGeometry
+from ..joints.capabilities import Coordinate
 from ..model.model import Driver
 from .plan import Plan
 from .poses import Poses, exp_rotation
@@ -65,7 +66,7 @@ def _driver(inst: Instant, d: Driver, geos: dict[str, JointGeometry], plan: Plan
         """The drawn point's displacement when the swept joint has turned or slid by dq."""
         if not swept or dq == 0.0:
             return [0.0] * len(p0)
-        if j.kind.coordinate == "length":
+        if j.kind.coordinate is Coordinate.LENGTH:
             return [sign * dq * c for c in geos[j.id].along]
         r = np.subtract(p0, geos[j.id].at)
         axis = np.asarray(geos[j.id].axis if spatial else (0.0, 0.0, 1.0))

@@ -21,6 +21,7 @@ import dataclasses
 from typing import Any, Optional
 
 from ..expressions import Expr, parse
+from ..joints.capabilities import Coordinate
 from ..model.model import Driver, Joint, Model
 
 PARALLEL = 1e-9            # |w × e| over |w|: a vector this close to the axis lies along it
@@ -78,7 +79,7 @@ def _turns_about_axis(joint: Joint) -> bool:
     """A revolute: the bodies share a pin, turn about one axis only (not a ball), and the
     joint's coordinate is that angle."""
     kind = joint.kind
-    return kind.pins and not kind.ball and not kind.slides and kind.coordinate == "angle"
+    return kind.pins and not kind.ball and not kind.slides and kind.coordinate is Coordinate.ANGLE
 
 
 def _along(v: list[float], axis: list[float]) -> bool:

@@ -17,6 +17,7 @@ import numpy as np
 from .. import limits
 from ..errors import KinematikaError, Num, Said
 from ..engine.instant import Instant
+from ..joints.capabilities import Coordinate
 from ..model.model import Driver, Joint, Model
 
 DEFAULT_BY = 360.0
@@ -37,7 +38,7 @@ class Plan:
     @property
     def turns(self) -> bool:
         """The swept coordinate is an angle (in degrees; radians in the geometry)."""
-        return self.joint.kind.coordinate == "angle"
+        return self.joint.kind.coordinate is Coordinate.ANGLE
 
     @property
     def unit(self) -> str:
@@ -64,7 +65,7 @@ def make_plan(inst: Instant, joint: Optional[str] = None, by: Optional[float] = 
     if by is None:
         if section is not None:
             by = float(inst.value(section.by, "sweep.by"))
-        elif j.kind.coordinate == "angle":
+        elif j.kind.coordinate is Coordinate.ANGLE:
             by = DEFAULT_BY
         else:
             raise KinematikaError("schema", "sweep-by-needed", "sweep.by", joint=j.id, kind=j.kind.name)
@@ -96,7 +97,7 @@ def check_travel(amount: float, joint: Joint, scale: float, where: str, what: st
     """A sweep's `by` or a move's amount within `limits.SWEEP_TRAVEL`: so many turns of a
     revolute (degrees), or so many times the mechanism's size along a prismatic; beyond, the
     angles and places would be round-off, so it is a `schema` error naming the limit."""
-    turns = joint.kind.coordinate == "angle"
+    turns = joint.kind.coordinate is Coordinate.ANGLE
     most = limits.SWEEP_TRAVEL * (360.0 if turns else scale)
     if not abs(amount) <= most:
         raise KinematikaError("schema", "travel-too-far", where, what=what, amount=Num(amount, ".6g"),
@@ -141,12 +142,12 @@ def driven_joints(model: Model) -> dict[str, Driver]:
         if d.relative_to not in (None, frame):
             continue
         if d.kind == "omega":        # a turning joint of the body to the frame
-            bodies, coordinates = {d.body}, ("angle",)
+            bodies, coordinates = {d.body}, (Coordinate.ANGLE,)
         else:                        # every body whose point moves as the driven one there
             point = d.point.point
             bodies = next(set(c) for c in model.motion_classes(point, model.carriers(point))
                           if d.point.body in c)
-            coordinates = ("angle", "length")
+            coordinates = (Coordinate.ANGLE, Coordinate.LENGTH)
         for j in model.joints:
             other = j.b if j.a == frame else j.a if j.b == frame else None
             if other in bodies and other != frame and j.kind.sweepable and j.kind.coordinate in coordinates:

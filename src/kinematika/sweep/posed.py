@@ -133,7 +133,7 @@ def _translates(design: Any) -> bool:
 
 
 def _moved_joint(pose: _Pose, j: Joint) -> Joint:
-    fixed_in = j.b if j.kind.along_in == "b" else j.a
+    fixed_in = j.kind.along_body(j)
     along = pose.turned(fixed_in, j.along, f"{j.where}.along") if j.along is not None else None
     axis = pose.turned(j.a, j.axis, f"{j.where}.axis") if j.axis is not None else None
     return dataclasses.replace(j, along=along, axis=axis)

@@ -70,7 +70,7 @@ class Poses:
         """b's rotation relative to a, minus `target` (radians)."""
         return [self.angle(b) - (self.angle(a) if a else 0.0) - target]
 
-    def axis_angle_error(self, a: str, b: str, axis: tuple, target: float) -> float:
+    def axis_angle_error(self, a: str, b: str, axis: Optional[tuple], target: float) -> float:
         """b's rotation relative to a minus `target` (radians); in the plane every axis is the
         normal, so `axis` is not needed."""
         return self.angle(b) - self.angle(a) - target
@@ -83,7 +83,7 @@ class SpatialPoses:
     from step to step (it may exceed a half turn: a crank's grows to 2π e after a turn).
     """
 
-    def __init__(self, ref: tuple, rot: dict, t: dict, rotvec: dict, aux: dict) -> None:
+    def __init__(self, ref: tuple | np.ndarray, rot: dict, t: dict, rotvec: dict, aux: dict) -> None:
         self.ref = np.asarray(ref, dtype=float)
         self.rot, self.t, self.rotvec, self.aux = rot, t, rotvec, aux
 
@@ -136,8 +136,9 @@ class SpatialPoses:
             rel = rel @ target.T
         return log_rotation(rel).tolist()
 
-    def axis_angle_error(self, a: str, b: str, axis: tuple, target: float) -> float:
-        """The relative rotation about the joint's axis (fixed in a), minus `target`."""
+    def axis_angle_error(self, a: str, b: str, axis: Optional[tuple], target: float) -> float:
+        """The relative rotation about the joint's axis (fixed in a, given in 3D), minus `target`."""
+        assert axis is not None, "a turning joint in 3D has its axis"
         e = np.asarray(self.turn(a, axis))
         return float(log_rotation(exp_rotation(-target * e) @ self._relative(a, b)) @ e)
 
@@ -228,7 +229,7 @@ def moved_geometry(geo: JointGeometry, poses: Poses, inst: Instant) -> JointGeom
     """A joint's drawn geometry carried by its bodies: `at` by the second body, directions by
     the body they are fixed in (the first; the second for a wheel)."""
     j = geo.joint
-    owner = j.b if j.kind.along_in == "b" else j.a
+    owner = j.kind.along_body(j)
     out = JointGeometry(j)
     if geo.at is not None:
         out.at = poses.point(j.b, geo.at)

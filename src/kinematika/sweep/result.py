@@ -180,7 +180,8 @@ class SweepResult:
     def to_npz(self, path: str | Path) -> None:
         """The CSV's columns as numpy arrays in one .npz file (raw values; bad rows NaN), with
         `ok`: `np.load(path)["B@coupler.velocity_x"]`."""
-        np.savez(path, ok=self.ok, **{h: np.ascontiguousarray(v) for h, v in self.columns()})
+        columns: dict[str, Any] = {h: np.ascontiguousarray(v) for h, v in self.columns()}
+        np.savez(path, ok=self.ok, **columns)
 
     def to_parquet(self, path: str | Path) -> None:
         """The CSV's columns in a Parquet file (raw values; bad rows null), with `ok`; needs

@@ -15,6 +15,7 @@ import numpy as np
 
 from ..engine.instant import instantiate
 from ..engine.system import InstantSolver
+from ..joints.capabilities import Coordinate
 from ..memory import arrays_on_heap
 from ..model.model import Model, PointRef
 from ..model.overrides import at_draw_numbers
@@ -144,7 +145,7 @@ class Sweeper:
     def _edge(self, good: float, bad: float) -> float:
         """Where between a row that can be assembled and one that cannot the motion stops:
         the closed form evaluated on finer and finer rows (to 1/4096 of the step)."""
-        scale = np.pi / 180 if self.joint.kind.coordinate == "angle" else 1.0
+        scale = np.pi / 180 if self.joint.kind.coordinate is Coordinate.ANGLE else 1.0
         for _ in range(2):
             between = np.linspace(good, bad, 65)
             out = self.closed.solve(between * scale)

@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from ..joints.capabilities import Side
 from ..model.model import Model
 from .assembler import Assembler
 from .assembly import Assembly
@@ -51,7 +52,7 @@ def searched_assemblies(model: Model, sweeper: Any) -> list:
 
 
 def _searchable(model: Model) -> bool:
-    return not any(j.kind.touches or j.kind.along_in == "b" for j in model.joints)
+    return not any(j.kind.touches or j.kind.along_in is Side.B for j in model.joints)
 
 
 class _Search:

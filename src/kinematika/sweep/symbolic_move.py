@@ -21,6 +21,7 @@ from ..engine.instant import Instant, instantiate
 from ..engine.turns import turn_for
 from ..errors import KinematikaError, Said
 from ..expressions import parse
+from ..joints.capabilities import Coordinate
 from ..model.model import Line, Model, Turn
 from ..model.overrides import with_parameters
 from .advance import advanced, swept_to
@@ -62,7 +63,7 @@ def _input(model: Model, index: int, jid: str, amount: float, where: str) -> Inp
     body = joint.b if joint.a == frame else joint.a
     sign = 1 if joint.a == frame else -1          # the coordinate is b relative to a
     value = repr(float(sign * amount))
-    if joint.kind.coordinate == "angle":
+    if joint.kind.coordinate is Coordinate.ANGLE:
         return Input(Turn(body, pivot=joint.at, angle=parse(f"deg({value})")), {index: 1})
     return Input(Turn(body, along=joint.along, shift=parse(value)), {})
 
@@ -99,7 +100,7 @@ def _path(model: Model, steps: list[Step], values: dict[str, str], where: str) -
         joint = model.joint(jid)
         sign = 1.0 if joint.a == model.frame else -1.0
         rows = np.asarray(result.coordinate, dtype=float)
-        rows = np.radians(rows) if joint.kind.coordinate == "angle" else rows
+        rows = np.radians(rows) if joint.kind.coordinate is Coordinate.ANGLE else rows
         block = np.tile(reached, (len(rows), 1))
         block[:, k] = sign * rows
         columns.append(block)

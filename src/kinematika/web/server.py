@@ -25,6 +25,7 @@ from starlette.staticfiles import StaticFiles
 
 from .. import commands
 from ..errors import KinematikaError, Said, speaking
+from ..joints.capabilities import Coordinate
 from ..languages import LANGS
 from .. import limits
 from .requests import Request, parse_body
@@ -319,7 +320,7 @@ def _centres(req: Request) -> tuple[str, str]:
                                                           req.how))
 
 
-def _sweep(req: Request) -> tuple[str, str]:
+def _sweep(req: Request) -> tuple[str, str | bytes]:
     _, result = commands.sweep_run(req.model, req.get("joint"), req.get("by"), req.get("steps"),
                                    req.get("skip_bad"), how=req.how)
     if req.get("as") == "csv":
@@ -398,7 +399,7 @@ def _input(model: Any) -> Optional[dict[str, Any]]:
         joint, _ = swept_joint(model, model.sweep.joint if model.sweep else None)
     except KinematikaError:
         return _time_input(model) if model.simulate is not None else None
-    return {"joint": joint.id, "unit": "deg" if joint.kind.coordinate == "angle" else "length"}
+    return {"joint": joint.id, "unit": "deg" if joint.kind.coordinate is Coordinate.ANGLE else "length"}
 
 
 def _time_input(model: Any) -> Optional[dict[str, Any]]:
