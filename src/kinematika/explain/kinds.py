@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..joints.capabilities import Chain, Coordinate
+
 
 def rolls(j: Any) -> bool:
     """A rolling contact (rolling or gear joint): two profiles touching without slip."""
@@ -23,7 +25,7 @@ def welds(j: Any) -> bool:
 def crossed_by_a_slot(j: Any) -> bool:
     """A pin in a straight slot (a slider block between: the chain PR): the pin's body slides
     along the slotted body and turns about the pin."""
-    return j.kind.chain == "PR"
+    return j.kind.chain is Chain.PR
 
 
 def on_fixed_line(j: Any, frame: str) -> bool:
@@ -40,28 +42,28 @@ def kind_key(j: Any, frame: str) -> str:
 
 def slider(j: Any) -> bool:
     """A prismatic pair (the chain P): the bodies slide along a straight guide and turn together."""
-    return j.kind.chain == "P"
+    return j.kind.chain is Chain.P
 
 
 def guided(j: Any) -> bool:
     """A straight guide, with a slider block (P) or a pin in a slot (PR): the motion of a
     point across it is relative sliding along the guide's direction."""
-    return j.kind.chain in ("P", "PR")
+    return j.kind.chain in (Chain.P, Chain.PR)
 
 
 def pin_only(j: Any) -> bool:
     """A planar or spatial pin about one axis (the chain R): not a ball joint."""
-    return j.kind.chain == "R"
+    return j.kind.chain is Chain.R
 
 
 def lower(j: Any) -> bool:
     """A pin or a slider (R or P): the pairs a dyad's name is made of."""
-    return j.kind.chain in ("R", "P")
+    return j.kind.chain in (Chain.R, Chain.P)
 
 
 def same_rate(j: Any) -> bool:
     """The two bodies turn together (a weld, or a prismatic pair): one ω, one α."""
-    return bool(j.kind.rigid) or j.kind.chain == "P"
+    return bool(j.kind.rigid) or j.kind.chain is Chain.P
 
 
 def knife_edge(j: Any) -> bool:
@@ -72,7 +74,7 @@ def knife_edge(j: Any) -> bool:
 def turns(j: Any) -> bool:
     """A joint whose driven rate is an angular velocity (a pin, a wheel, a cylindrical
     pair), not a sliding speed (a prismatic pair)."""
-    return j.kind.coordinate == "angle" or j.kind.pins or j.kind.knife_edge
+    return j.kind.coordinate is Coordinate.ANGLE or j.kind.pins or j.kind.knife_edge
 
 
 def line_kind(j: Any) -> str:

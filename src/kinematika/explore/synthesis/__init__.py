@@ -25,6 +25,7 @@ from typing import Any, Callable, Optional
 
 import numpy as np
 
+from ...joints.capabilities import Coordinate
 from ...errors import KinematikaError, Names, Said
 from ..designs import Vary, parse_vary
 from .general import function_targets
@@ -89,7 +90,7 @@ def _followed(m, result: Synthesis, best: int) -> Synthesis:
 
     joint, _ = swept_joint(m, m.sweep.joint if m.sweep else None)
     keep = [i for i, d in enumerate(result.designs)
-            if joint.kind.coordinate != "angle" or follows_a_turn(m, d, joint.id)][:best]
+            if joint.kind.coordinate is not Coordinate.ANGLE or follows_a_turn(m, d, joint.id)][:best]
     if not keep:
         raise KinematikaError("assembly", "synthesis-no-full-turn", "--vary")
     result.designs = [result.designs[i] for i in keep]

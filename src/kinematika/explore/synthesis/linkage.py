@@ -30,6 +30,7 @@ from ...algebra.vectors import Space
 from ...engine.array_positions import array_positions
 from ...engine.instant import Instant, _parameters
 from ...errors import KinematikaError
+from ...joints.capabilities import Coordinate as JointCoordinate
 from ...model.model import Model
 from ...structure.assur import assur_groups
 from ...sweep.batch import model_with_symbols
@@ -66,7 +67,7 @@ def four_bar_roles(model: Model) -> Optional[Roles]:
     if groups is None or roles is None or roles["kind"] != "four-bar":
         return None
     joint = model.joint(groups[0].joints[0])
-    if joint.kind.coordinate != "angle":
+    if joint.kind.coordinate is not JointCoordinate.ANGLE:
         return None
     sign = 1.0 if joint.a == model.frame else -1.0
     return Roles(roles["O2"], roles["A"], roles["B"], roles["O4"], roles["crank"], roles["coupler"],
