@@ -95,7 +95,7 @@ def _asked_bodies(ctx: Ctx) -> set[str]:
         elif about == "joint":
             j = ctx.model.joint(q.name)
             out.update((j.a, j.b))
-        elif q.kind != "icr":
+        elif QUESTIONS[q.kind].needs_rate:
             out.add(q.name)
         for b in (q.relative_to, getattr(q, "moving", None)):
             if b:

@@ -236,6 +236,8 @@ class QuestionKind:
     page: ClassVar[bool] = False            # the page's builder offers it
     linear: ClassVar[bool] = False          # its answer is linear in the drivers' rates and
                                             # accelerations (an exercise carries a wrong one)
+    needs_rate: ClassVar[bool] = True       # an explanation of it needs its body's ω (an instant
+                                            # centre's does not: the joints place it)
 
     def answer(self, sol: Solved, q: Asked) -> Any:
         """The raw answer (backend scalars, nested in dicts for a compound answer)."""

@@ -61,6 +61,7 @@ class Icr(QuestionKind):
     dimensions = (2,)
     fields = {"point": "position", "direction": None}
     page = True
+    needs_rate = False          # the centres section places it from the joints (Aronhold–Kennedy)
 
     def answer(self, sol: Solved, q: Asked) -> Any:
         """P = ref + k × v₀ / ω, at infinity perpendicular to v₀ when ω = 0 (`icr`)."""
