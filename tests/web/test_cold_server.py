@@ -38,10 +38,10 @@ CLIENT = textwrap.dedent("""
     def model(name):
         return {"model": (examples / name).read_text(), "format": "yaml", "lang": "en"}
 
-    asked = [(endpoint, {**model(name), **extra})
-             for name in ("four_bar.yaml", "seed_c5_2_2_articulated.yaml")
-             for endpoint, extra in (("solve", {}), ("draw", {"centres": True}), ("sweep", {"skip_bad": True}),
-                                     ("sketch", {}), ("explain", {}), ("assemblies", {}))]
+    first = (("solve", {}), ("draw", {"centres": True}), ("sweep", {"skip_bad": True}), ("sketch", {}))
+    asked = [(endpoint, {**model("four_bar.yaml"), **extra})
+             for endpoint, extra in first + (("explain", {}), ("assemblies", {}))]
+    asked += [(endpoint, {**model("seed_c5_2_2_articulated.yaml"), **extra}) for endpoint, extra in first]
     asked.append(("simulate", model("seed_c5_2_2_articulated.yaml")))
     threads = [threading.Thread(target=post, args=a) for a in asked]
     [t.start() for t in threads]
@@ -58,6 +58,6 @@ def test_a_cold_servers_first_requests_at_once_are_each_answered():
     answers = json.loads(done.stdout.strip().splitlines()[-1])
     # the vehicle's position depends on its path: a sweep refuses it (400, the contract's error), simulate follows it
     expected = sorted([[endpoint, 200, ""] for endpoint in ("solve", "draw", "sweep", "sketch", "explain", "assemblies")]
-                      + [[endpoint, 200, ""] for endpoint in ("solve", "draw", "sketch", "explain", "assemblies")]
+                      + [[endpoint, 200, ""] for endpoint in ("solve", "draw", "sketch")]
                       + [["simulate", 200, ""], ["sweep", 400, "schema"]])
     assert answers == expected
