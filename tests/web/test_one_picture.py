@@ -54,13 +54,11 @@ def page(browser, server):
     assert not errors, errors
 
 PT = 4 / 3                     # the page's CSS pixels per point (figure.js)
-EXAMPLES_DRAWN = ["four_bar", "eccentric_cam", "planetary_gears", "slider_crank",
-                  "quick_return", "pin_in_circular_slot", "robot_arm_3d",
-                  "seed_c5_1_4_epicyclic"]
 # a default run: a linkage, a cam's profile, gears, a slider's block, an arc slot, a 3D
-# projection, a train's coincident centres (a label on two lines); a second slider in a deep run
-DRAWN = sampled(EXAMPLES_DRAWN, {"four_bar", "eccentric_cam", "planetary_gears", "slider_crank",
-                                 "pin_in_circular_slot", "robot_arm_3d", "seed_c5_1_4_epicyclic"})
+# projection, a train's coincident centres (a label on two lines); a deep run every example
+DRAWN = sampled(sorted(p.stem for p in EXAMPLES.glob("*.yaml")),
+                {"four_bar", "eccentric_cam", "planetary_gears", "slider_crank",
+                 "pin_in_circular_slot", "robot_arm_3d", "seed_c5_1_4_epicyclic"})
 
 READ_SVG = """() => {
   const f = window.kinematika.figure;
