@@ -135,10 +135,16 @@ def _artist(a) -> dict:
 
 
 def _open(points) -> np.ndarray:
-    """A closed outline's vertices, the first not repeated at the end (matplotlib closes a
-    polygon by repeating it unless it already is)."""
+    """A closed outline's vertices, its closing vertex not repeated at the end. matplotlib
+    closes a polygon by repeating the first vertex unless the last is exactly it, SVG closes
+    it without repeating it; an outline the scene already closes (a 3D disc's circle, its last
+    vertex the first within round-off) then has one repeat more in matplotlib than on the
+    page. Each repeat draws a side of no length (invisible by construction), so every
+    trailing repeat is left off on both sides."""
     pts = np.asarray(points, dtype=float)
-    return pts[:-1] if len(pts) > 1 and np.allclose(pts[0], pts[-1], rtol=0, atol=1e-12 * (1 + np.abs(pts).max())) else pts
+    while len(pts) > 1 and np.allclose(pts[0], pts[-1], rtol=0, atol=1e-12 * (1 + np.abs(pts).max())):
+        pts = pts[:-1]
+    return pts
 
 
 def _hex(colour: str) -> str:
