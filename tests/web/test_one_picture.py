@@ -10,10 +10,12 @@ compared with numbers the other produced: each is read from what it painted.
 """
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections import Counter
 
+import matplotlib
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -70,11 +72,16 @@ READ_SVG = """() => {
   // a paint as written: a colour, "none", or a hatching's pattern as "hatch COLOUR"
   const colour = (c) => { const m = /^url\\(#(.*)\\)$/.exec(c || '');
     return m ? 'hatch ' + root.querySelector(`pattern#${m[1]} line`).getAttribute('stroke') : (c || 'none'); };
+  // a hatching's lines: how far apart across them, how wide (points); the pattern is turned
+  // 45°, its lines along its height, so its width is the distance across them
+  const hatching = (c) => { const m = /^url\\(#(.*)\\)$/.exec(c || ''); if (!m) return null;
+    const p = root.querySelector(`pattern#${m[1]}`);
+    return [p.getAttribute('width') / pt, p.querySelector('line').getAttribute('stroke-width') / pt]; };
   // how an element is painted: its stroke (colour, width and dashes in points, ends, corners),
   // its fill, its opacity
   const look = (n, stroke = n.getAttribute('stroke') || 'none', fill = n.getAttribute('fill')) => {
     const on = stroke !== 'none', dash = n.getAttribute('stroke-dasharray');
-    return { stroke: colour(stroke), width: on ? n.getAttribute('stroke-width') / PT : 0, fill: colour(fill),
+    return { stroke: colour(stroke), width: on ? n.getAttribute('stroke-width') / PT : 0, fill: colour(fill), hatching: hatching(fill),
              alpha: +(n.getAttribute('fill-opacity') ?? n.getAttribute('stroke-opacity') ?? 1),
              dash: on && dash ? dash.split(/\\s+/).map((d) => d / PT) : null,
              cap: n.getAttribute('stroke-linecap') || 'butt', join: n.getAttribute('stroke-linejoin') || 'miter' };
@@ -157,13 +164,14 @@ def _artist(a) -> dict:
                 _open(marker.get_path().transformed(marker.get_transform()).to_polygons()[0]) * a.get_markersize()
             mfc, on = a.get_markerfacecolor(), a.get_markeredgewidth() > 0
             return {"kind": "dot", "at": xy[0], "look": {
-                "fill": "none" if mfc == "none" else to_hex(mfc), "stroke": to_hex(a.get_markeredgecolor()) if on else "none",
+                "fill": "none" if mfc == "none" else to_hex(mfc), "hatching": None,
+                "stroke": to_hex(a.get_markeredgecolor()) if on else "none",
                 "width": a.get_markeredgewidth() if on else 0, "alpha": alpha, "dash": None, "cap": None,
                 "join": None if outline is None else marker.get_joinstyle(),
                 "size": a.get_markersize() if outline is None else None, "outline": outline}}
         dashed = a._dash_pattern[1] is not None
         return {"kind": "line", "points": xy[np.all(np.isfinite(xy), axis=1)], "look": {
-            "stroke": to_hex(a.get_color()), "width": a.get_linewidth(), "fill": "none", "alpha": alpha,
+            "stroke": to_hex(a.get_color()), "width": a.get_linewidth(), "fill": "none", "hatching": None, "alpha": alpha,
             "dash": a._dash_pattern[1] if dashed else None,
             "cap": a.get_dash_capstyle() if dashed else a.get_solid_capstyle(),
             "join": a.get_dash_joinstyle() if dashed else a.get_solid_joinstyle()}}
@@ -194,9 +202,29 @@ def _patch_look(a) -> dict:
     hatch = getattr(a, "get_hatchcolor", lambda: a._hatch_color)()
     fill = f"hatch {to_hex(hatch)}" if a.get_hatch() else to_hex(a.get_facecolor()) if a.get_fill() else "none"
     return {"stroke": to_hex(ec) if on else "none", "width": a.get_linewidth() if on else 0, "fill": fill,
+            "hatching": _hatching(a.get_hatch()) if a.get_hatch() else None,
             "alpha": 1 if a.get_alpha() is None else a.get_alpha(),
             "dash": a._dash_pattern[1] if on and a._dash_pattern[1] is not None else None,
             "cap": a.get_capstyle(), "join": a.get_joinstyle()}
+
+
+@functools.cache
+def _hatching(hatch: str) -> list[float]:
+    """How matplotlib paints a hatching, measured on what it paints: a hatched square drawn at
+    72 dpi (a pixel a point), its lines' period along a row of pixels, which for lines rising
+    at 45° is √2 times their distance across them (points); their width, matplotlib's
+    `hatch.linewidth`."""
+    with MATPLOTLIB:
+        fig = Figure(figsize=(2, 2), dpi=72)
+        canvas = FigureCanvasAgg(fig)
+        ax = fig.add_axes((0, 0, 1, 1))
+        ax.set_axis_off()
+        ax.add_patch(Polygon([[0, 0], [1, 0], [1, 1], [0, 1]], transform=ax.transAxes, fill=False, lw=0, hatch=hatch))
+        canvas.draw()
+        row = np.asarray(canvas.buffer_rgba())[72, :, 0]
+        dark = np.flatnonzero(np.diff((row < 128).astype(int)) == 1)      # where each line begins
+        assert len(dark) > 4, dark
+        return [float(np.mean(np.diff(dark))) / math.sqrt(2), float(matplotlib.rcParams["hatch.linewidth"])]
 
 
 def _same_look(a: dict, b: dict) -> bool:
@@ -213,6 +241,9 @@ def _same_look(a: dict, b: dict) -> bool:
                 return False
         elif k in ("cap", "join"):
             if CAP.get(str(x), str(x)) != CAP.get(str(y), str(y)):
+                return False
+        elif k == "hatching":           # matplotlib's measured in whole pixels (`_hatching`)
+            if not np.allclose(x, y, rtol=1e-3, atol=0):
                 return False
         elif isinstance(x, str) or isinstance(y, str):
             if x != y:

@@ -12,6 +12,7 @@ import functools
 from typing import Any, Optional
 
 import numpy as np
+from matplotlib.backend_bases import GraphicsContextBase
 from matplotlib.lines import Line2D
 from matplotlib.markers import MarkerStyle
 from matplotlib.patches import Annulus, Circle, FancyArrowPatch, Polygon
@@ -117,8 +118,24 @@ def _filled(m: Mark) -> dict:
     """A patch's fill and edge: a hatched patch has no fill, its hatching in its colour."""
     fill = m.fill != "none" and not m.hatch
     return dict(fill=fill, fc=m.fill if fill else None, ec=_colour(m.colour), lw=m.width,
-                hatch="////" if m.hatch else None, alpha=_alpha(m), zorder=m.zorder,
+                hatch=HATCH if m.hatch else None, alpha=_alpha(m), zorder=m.zorder,
                 capstyle=m.cap or "butt")
+
+
+HATCH = "////"          # the frame's hatching: lines rising to the right
+
+
+@functools.cache
+def hatching() -> dict[str, float]:
+    """The frame's hatching as matplotlib paints it, for the page to paint the same: the
+    distance between its lines across them and their width, in points — read from
+    matplotlib's own hatch path (drawn in tiles of one inch, 72 points; its lines run along
+    (1, 1), so a line's offset across them is (x − y)/√2)."""
+    gc = GraphicsContextBase()
+    gc.set_hatch(HATCH)
+    v = gc.get_hatch_path().vertices
+    steps = np.diff(np.sort((v[:, 0] - v[:, 1]) / np.sqrt(2)))
+    return {"spacing": float(steps[steps > 1e-9].min() * 72), "width": float(gc.get_hatch_linewidth())}
 
 
 def _polygon(m: Mark, pts: np.ndarray) -> Polygon:

@@ -19,7 +19,7 @@ from typing import Any, Optional
 import numpy as np
 
 from ..draw import style
-from ..draw.paint import marker_outline
+from ..draw.paint import hatching, marker_outline
 from ..draw.scene import BodyView, Scene, numbering, numbering_note
 from ..joints.symbols import HATCH_BAND, Mark
 from ..sweep.angles import reference_line
@@ -212,7 +212,7 @@ def _add_model_coordinates(data: dict, scene: Scene, twin: Scene) -> None:
 STYLE = {"velocity": style.VELOCITY, "acceleration": style.ACCELERATION, "centre": style.CENTRE,
          "curvature": style.CURVATURE, "ground": style.GROUND, "ink": style.INK,
          "point_label": style.POINT_LABEL, "path": style.PATH, "longest": style.LONGEST, "shortest": style.SHORTEST,
-         "hatch_band": HATCH_BAND}
+         "hatch_band": HATCH_BAND, "hatch": hatching()}
 
 
 def runs(label: str) -> list[dict[str, str]]:

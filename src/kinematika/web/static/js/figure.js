@@ -10,7 +10,6 @@
 import { el, runsText, placeLines, num, shown } from "./svg.js";
 
 const PT = 4 / 3;        // CSS pixels per point: a mark's widths and sizes are in points
-const HATCH = 3;         // points between the lines of a hatching (matplotlib's "////")
 const GAP = 3;           // points between a label and what it labels (its `radius` around its anchor)
 const MARGIN = 0.05;     // drawing sizes around the swept points' paths
 const CAPS = { round: "round", butt: "butt", projecting: "square" };   // matplotlib's names
@@ -241,12 +240,14 @@ export class Figure {
              "stroke-linecap": CAPS[m.cap] || "square", "stroke-linejoin": m.join === "round" ? "round" : null };
   }
 
-  /** The hatching in `colour` (a pattern of lines a few points apart). */
+  /** The hatching in `colour`: lines rising to the right, as far apart and as wide (points)
+   * as the scene's `style.hatch` says (matplotlib's). */
   hatch(colour) {
     if (!this.hatches[colour]) {
-      const id = `hatch${Object.keys(this.hatches).length}`, step = HATCH * PT * this.px;
+      const { spacing, width } = this.scene.style.hatch;
+      const id = `hatch${Object.keys(this.hatches).length}`, step = spacing * PT * this.px;
       const p = el("pattern", { id, patternUnits: "userSpaceOnUse", width: step, height: step, patternTransform: "rotate(45)" }, this.defs);
-      el("line", { x1: 0, y1: 0, x2: 0, y2: step, stroke: colour, "stroke-width": PT * this.px, class: "model-width" }, p);
+      el("line", { x1: 0, y1: 0, x2: 0, y2: step, stroke: colour, "stroke-width": width * PT * this.px, class: "model-width" }, p);
       this.hatches[colour] = `url(#${id})`;
     }
     return this.hatches[colour];
