@@ -1,10 +1,12 @@
 """One scene, painted twice: the page's figure (`figure.js`, in Chromium) and the matplotlib
 painter (`draw.paint`) paint the same picture (`draw.picture`'s marks), primitive by primitive.
 
-For several examples the page loads the model, paints the scene `/api/draw` gave it as it is
-(no motion: `figure.set(scene, null)`), and the SVG elements it made are read back: how many
-of each kind (dots, lines, polygons, circles, rings, arrows, texts), where (model
-coordinates), in which colours. The same model, drawn with the page's options, is painted by
+For seven examples (every example in a deep run) the page loads the model, paints the scene
+`/api/draw` gave it as it is (no motion: `figure.set(scene, null)`), and the SVG elements it
+made are read back: how many of each kind (dots, lines, polygons, circles, rings, arrows,
+texts), where (model coordinates), and how (stroke and fill colours, a hatching's colour,
+spacing and width, widths, opacity, dashes, ends and corners in points, a marker's outline,
+arrow heads, a label's colour and font). The same model, drawn with the page's options, is painted by
 matplotlib into a figure, and its artists are read back the same way. Neither side is
 compared with numbers the other produced: each is read from what it painted.
 """
