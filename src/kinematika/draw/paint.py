@@ -8,10 +8,13 @@ mark with an `avoid` weight, is kept clear of by the labels.
 """
 from __future__ import annotations
 
+import functools
 from typing import Any, Optional
 
 import numpy as np
+from matplotlib.backend_bases import GraphicsContextBase
 from matplotlib.lines import Line2D
+from matplotlib.markers import MarkerStyle
 from matplotlib.patches import Annulus, Circle, FancyArrowPatch, Polygon
 from matplotlib.transforms import offset_copy
 
@@ -92,17 +95,47 @@ def _dot(m: Mark, pts: np.ndarray) -> Line2D:
                   mec=_colour(m.colour), mew=m.width, ls="", alpha=_alpha(m), zorder=m.zorder)
 
 
+@functools.cache
+def marker_outline(shape: str) -> Optional[tuple[tuple[float, float], ...]]:
+    """The outline of a dot's marker `shape` ("D", "X", "P") as matplotlib paints it, its
+    vertices in units of the marker's size (points) about its centre; None for a circle ("o").
+    The page paints a dot from these vertices, so both painters draw the one marker."""
+    if shape == "o":
+        return None
+    style = MarkerStyle(shape)
+    outline = style.get_path().transformed(style.get_transform()).to_polygons()[0]
+    return tuple((float(u), float(v)) for u, v in outline[:-1])   # closed: the first not repeated
+
+
 def _line(m: Mark, pts: np.ndarray) -> Line2D:
+    cap, join = m.cap or "projecting", m.join or "miter"
     return Line2D(*pts.T, lw=m.width, ls=_dashes(m), color=m.colour, alpha=_alpha(m),
-                  solid_capstyle=m.cap or "projecting", solid_joinstyle=m.join or "miter",
-                  zorder=m.zorder)
+                  solid_capstyle=cap, dash_capstyle=cap, solid_joinstyle=join,
+                  dash_joinstyle=join, zorder=m.zorder)
 
 
 def _filled(m: Mark) -> dict:
     """A patch's fill and edge: a hatched patch has no fill, its hatching in its colour."""
     fill = m.fill != "none" and not m.hatch
     return dict(fill=fill, fc=m.fill if fill else None, ec=_colour(m.colour), lw=m.width,
-                hatch="////" if m.hatch else None, alpha=_alpha(m), zorder=m.zorder)
+                hatch=HATCH if m.hatch else None, alpha=_alpha(m), zorder=m.zorder,
+                capstyle=m.cap or "butt")
+
+
+HATCH = "////"          # the frame's hatching: lines rising to the right
+
+
+@functools.cache
+def hatching() -> dict[str, float]:
+    """The frame's hatching as matplotlib paints it, for the page to paint the same: the
+    distance between its lines across them and their width, in points — read from
+    matplotlib's own hatch path (drawn in tiles of one inch, 72 points; its lines run along
+    (1, 1), so a line's offset across them is (x − y)/√2)."""
+    gc = GraphicsContextBase()
+    gc.set_hatch(HATCH)
+    v = gc.get_hatch_path().vertices
+    steps = np.diff(np.sort((v[:, 0] - v[:, 1]) / np.sqrt(2)))
+    return {"spacing": float(steps[steps > 1e-9].min() * 72), "width": float(gc.get_hatch_linewidth())}
 
 
 def _polygon(m: Mark, pts: np.ndarray) -> Polygon:

@@ -41,7 +41,17 @@ def picture(scene: Scene, view: Box, drawn: Optional[list] = None, still: bool =
         draw_axes(ctx)
         draw_marks(ctx)
         draw_vectors(ctx, drawn or [])
-    return ctx.marks
+    return [dataclasses.replace(m, cap=cap_of(m)) for m in ctx.marks]
+
+
+def cap_of(m: Mark) -> str:
+    """The ends of a mark's strokes (its dashes' too), named for both painters: the mark's
+    own, else butt for a dashed mark or an outline (a dash-dot's dot is one line width
+    long, its gaps as drawn) and projecting for a solid line — how matplotlib has always
+    painted them."""
+    if m.cap:
+        return m.cap
+    return "projecting" if m.kind == "line" and not m.dash else "butt"
 
 
 def draw_joints(ctx: Context) -> None:

@@ -79,7 +79,7 @@ class Mark:
     alpha: float = 1.0                  # opacity of the stroke and the fill
     r: float = 0.0                      # a circle's or a ring's radius, model units
     band: float = 0.0                   # a ring's width, model units
-    cap: str = ""                       # line ends: "round", "butt" or "" (projecting)
+    cap: str = ""                       # stroke ends: "round", "butt", "projecting"; "" (`draw.picture.cap_of`)
     join: str = ""                      # corners: "round" or "" (miter)
     shape: str = "o"                    # a dot's marker
     head: str = ""                      # an arrow's heads

@@ -19,6 +19,7 @@ from typing import Any, Optional
 import numpy as np
 
 from ..draw import style
+from ..draw.paint import hatching, marker_outline
 from ..draw.scene import BodyView, Scene, numbering, numbering_note
 from ..joints.symbols import HATCH_BAND, Mark
 from ..sweep.angles import reference_line
@@ -92,13 +93,15 @@ def picture_data(scene: Scene, options: Any = None, twin: Optional[Scene] = None
 
 def mark_data(m: Mark, lift: Any = None) -> dict[str, Any]:
     """One mark as the page receives it: what every mark has, and the fields of its kind
-    (a text's words as runs, a dash-dot as its dash lengths)."""
+    (a text's words as runs, a dash-dot as its dash lengths, a dot's marker as matplotlib's
+    outline of it)."""
     out: dict[str, Any] = {"kind": m.kind, "points": _floats(m.points), "colour": m.colour,
                            "fill": m.fill, "width": m.width, "zorder": m.zorder, "body": m.moves_with}
     extra = {"size": m.size, "alpha": m.alpha if m.alpha != 1.0 else None, "hatch": m.hatch or None,
              "dash": DASH_DOT if m.dash is True else (list(m.dash) if m.dash else None),
              "r": m.r or None, "band": m.band or None, "cap": m.cap or None, "join": m.join or None,
-             "shape": m.shape if m.kind == "dot" else None, "head": m.head or None,
+             "shape": m.shape if m.kind == "dot" else None,
+             "outline": marker_outline(m.shape) if m.kind == "dot" else None, "head": m.head or None,
              "shift": m.shift or None, "id": m.gid or None, "group": m.group or None,
              "layer": m.layer or None, "still": m.still or None}
     if m.kind == "text":
@@ -209,7 +212,7 @@ def _add_model_coordinates(data: dict, scene: Scene, twin: Scene) -> None:
 STYLE = {"velocity": style.VELOCITY, "acceleration": style.ACCELERATION, "centre": style.CENTRE,
          "curvature": style.CURVATURE, "ground": style.GROUND, "ink": style.INK,
          "point_label": style.POINT_LABEL, "path": style.PATH, "longest": style.LONGEST, "shortest": style.SHORTEST,
-         "hatch_band": HATCH_BAND}
+         "hatch_band": HATCH_BAND, "hatch": hatching()}
 
 
 def runs(label: str) -> list[dict[str, str]]:

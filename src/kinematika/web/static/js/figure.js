@@ -10,13 +10,9 @@
 import { el, runsText, placeLines, num, shown } from "./svg.js";
 
 const PT = 4 / 3;        // CSS pixels per point: a mark's widths and sizes are in points
-const HATCH = 3;         // points between the lines of a hatching (matplotlib's "////")
 const GAP = 3;           // points between a label and what it labels (its `radius` around its anchor)
 const MARGIN = 0.05;     // drawing sizes around the swept points' paths
-const CAPS = { round: "round", butt: "butt" };          // else matplotlib's "projecting"
-// a dot's marker outline in half sizes (matplotlib's "D", "P", "X"; "o" is a circle)
-const PLUS = [[-1, 3], [1, 3], [1, 1], [3, 1], [3, -1], [1, -1], [1, -3], [-1, -3], [-1, -1], [-3, -1], [-3, 1], [-1, 1]].map(([x, y]) => [x / 3, y / 3]);
-const SHAPES = { D: [[0, 1], [0.7, 0], [0, -1], [-0.7, 0]], P: PLUS, X: PLUS.map(([x, y]) => [(x - y) * Math.SQRT1_2, (x + y) * Math.SQRT1_2]) };
+const CAPS = { round: "round", butt: "butt", projecting: "square" };   // matplotlib's names
 
 export class Figure {
   constructor(svg, legend, notes, onDrag, t = (id) => id) {
@@ -212,14 +208,14 @@ export class Figure {
   }
 
   /** One mark as SVG (`kinematika.joints.symbols.Mark`) in `parent`: a dot (a marker of its
-   * size in points), a line, a polygon (hatched: the frame's material), a circle, a ring, an
-   * arrow; a text is a label. */
+   * size in points: a circle, or its `outline` in sizes), a line, a polygon (hatched: the
+   * frame's material), a circle, a ring, an arrow; a text is a label. */
   mark(m, parent) {
     const p = m.points, paint = this.paintOf(m);
     if (m.kind === "dot") {
-      const half = (m.size / 2) * PT * this.px, [x, y] = p[0];
-      if (!SHAPES[m.shape]) return el("circle", { cx: x, cy: -y, r: half, ...paint, class: "dot" }, parent);
-      return el("polygon", { points: poly(SHAPES[m.shape].map(([u, v]) => [x + u * half, y + v * half])), ...paint, class: "dot" }, parent);
+      const size = m.size * PT * this.px, [x, y] = p[0];
+      if (!m.outline) return el("circle", { cx: x, cy: -y, r: size / 2, ...paint, class: "dot" }, parent);
+      return el("polygon", { points: poly(m.outline.map(([u, v]) => [x + u * size, y + v * size])), ...paint, class: "dot" }, parent);
     }
     if (m.kind === "line") {
       if (p.some((q) => q[0] === null)) return el("path", { d: broken(p), ...paint, fill: "none" }, parent);
@@ -244,12 +240,14 @@ export class Figure {
              "stroke-linecap": CAPS[m.cap] || "square", "stroke-linejoin": m.join === "round" ? "round" : null };
   }
 
-  /** The hatching in `colour` (a pattern of lines a few points apart). */
+  /** The hatching in `colour`: lines rising to the right, as far apart and as wide (points)
+   * as the scene's `style.hatch` says (matplotlib's). */
   hatch(colour) {
     if (!this.hatches[colour]) {
-      const id = `hatch${Object.keys(this.hatches).length}`, step = HATCH * PT * this.px;
+      const { spacing, width } = this.scene.style.hatch;
+      const id = `hatch${Object.keys(this.hatches).length}`, step = spacing * PT * this.px;
       const p = el("pattern", { id, patternUnits: "userSpaceOnUse", width: step, height: step, patternTransform: "rotate(45)" }, this.defs);
-      el("line", { x1: 0, y1: 0, x2: 0, y2: step, stroke: colour, "stroke-width": PT * this.px, class: "model-width" }, p);
+      el("line", { x1: 0, y1: 0, x2: 0, y2: step, stroke: colour, "stroke-width": width * PT * this.px, class: "model-width" }, p);
       this.hatches[colour] = `url(#${id})`;
     }
     return this.hatches[colour];
@@ -302,7 +300,7 @@ export class Figure {
   /** Keep `node` of a 3D mark to be placed from its model coordinates at every row. */
   track(node, m) {
     if (!this.P || !this.sweep || !m.body) return;
-    const kind = m.kind === "circle" || (m.kind === "dot" && !SHAPES[m.shape]) ? "circle" : m.kind === "line" || m.kind === "polygon" ? "points" : null;
+    const kind = m.kind === "circle" || (m.kind === "dot" && !m.outline) ? "circle" : m.kind === "line" || m.kind === "polygon" ? "points" : null;
     if (kind) this.tracked.push({ node, body: m.body, kind, xyz: m.xyz });
   }
 
