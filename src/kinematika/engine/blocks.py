@@ -241,15 +241,16 @@ def _match(rows: list[list[int]], n: int, budget: int) -> Optional[list[int]]:
 
 
 def tarjan(n: int, deps: Sequence[Sequence[int]]) -> list[list[int]]:
-    """Strongly connected components, each after the components it depends on."""
-    index: dict[int, int] = {}
-    low: dict[int, int] = {}
+    """Strongly connected components, each after the components it depends on (iterative,
+    the vertices' index and low-link in lists: one pass, linear in the edges)."""
+    index = [-1] * n                # -1: not visited yet
+    low = [0] * n
+    on_stack = [False] * n
     stack: list[int] = []
-    on_stack: set[int] = set()
     out: list[list[int]] = []
     counter = 0
     for root in range(n):
-        if root in index:
+        if index[root] >= 0:
             continue
         work = [(root, 0)]
         while work:
@@ -258,29 +259,31 @@ def tarjan(n: int, deps: Sequence[Sequence[int]]) -> list[list[int]]:
                 index[v] = low[v] = counter
                 counter += 1
                 stack.append(v)
-                on_stack.add(v)
+                on_stack[v] = True
             recurse = False
-            for k in range(i, len(deps[v])):
-                w = deps[v][k]
-                if w not in index:
+            edges = deps[v]
+            for k in range(i, len(edges)):
+                w = edges[k]
+                if index[w] < 0:
                     work.append((v, k + 1))
                     work.append((w, 0))
                     recurse = True
                     break
-                if w in on_stack:
-                    low[v] = min(low[v], index[w])
+                if on_stack[w] and index[w] < low[v]:
+                    low[v] = index[w]
             if recurse:
                 continue
             if low[v] == index[v]:
                 comp = []
                 while True:
                     w = stack.pop()
-                    on_stack.discard(w)
+                    on_stack[w] = False
                     comp.append(w)
                     if w == v:
                         break
                 out.append(sorted(comp))
             if work:
                 parent = work[-1][0]
-                low[parent] = min(low[parent], low[v])
+                if low[v] < low[parent]:
+                    low[parent] = low[v]
     return out

@@ -47,6 +47,17 @@ def joint_rows(geo: JointGeometry, lv: Level) -> list[Row]:
     return out
 
 
+def joint_known_terms(geo: JointGeometry, lv: Level) -> list[tuple[Any, Said]]:
+    """The joint's conditions at level `lv` as (minus the row's constant, its label): the
+    right side b of `joint_rows`'s rows with their labels, without the `Row`s. What the
+    acceleration level needs, whose matrix is the velocity level's (half the work of its
+    rows on a 1000-body chain)."""
+    joint = geo.joint
+    name = joint.id
+    return [(-(lin.const if isinstance(lin, Lin) else lin), Said("row-joint", id=name, label=label))
+            for lin, label in joint.kind.rows(geo, lv)]
+
+
 def joint_rate(geo: JointGeometry, lv: Level) -> Lin:
     """The rate of a joint's coordinate (second body relative to the first), or its derivative."""
     return geo.joint.kind.rate(geo, lv)

@@ -17,7 +17,7 @@ from .drivers import driver_rows
 from .idle import idle_rows
 from .instant import Instant
 from ..joints import JointGeometry
-from .joints import Row, joint_geometry, joint_rows
+from .joints import Row, joint_geometry, joint_known_terms, joint_rows
 from .levels import AccelerationLevel, KnownTerms, Level, Unknowns, VelocityLevel
 from .motion import BodyState, Motion
 from .terms import MECHANICS, Terms
@@ -173,10 +173,26 @@ class InstantSolver:
         x_v = self.solve_linear(self.b_v, check=True, level=1)
         velocities = self._motion(x_v, None)
         # the acceleration system has the same matrix: only its known terms are built
-        rows_a = self.rows(AccelerationLevel(KnownTerms(u), inst.ref, velocities))
+        b_a, labels_a = self.known_terms(AccelerationLevel(KnownTerms(u), inst.ref, velocities))
         # redundant conditions must agree at this level too: an α the joints forbid is a conflict
-        x_a = self.solve_linear([-r.lin.const for r in rows_a], labels=[r.label for r in rows_a], level=2)
+        x_a = self.solve_linear(b_a, labels=labels_a, level=2)
         return self._motion(x_v, x_a)
+
+    def known_terms(self, lv: Level) -> tuple[list[Any], list[Any]]:
+        """The right side b of the rows at level `lv` and their labels, in `rows`'s order: the
+        same numbers and labels as `rows(lv)` gives, the joints' without building their `Row`s
+        (the acceleration level, whose matrix is the velocity level's)."""
+        b: list[Any] = []
+        labels: list[Any] = []
+        for j in self.inst.model.joints:
+            for value, label in joint_known_terms(self.geos[j.id], lv):
+                b.append(value)
+                labels.append(label)
+        for r in [*(r for d in self.inst.model.drivers for r in driver_rows(self.inst, d, self.geos, lv)),
+                  *idle_rows(self.inst, lv)]:
+            b.append(-r.lin.const)
+            labels.append(r.label)
+        return b, labels
 
     def _solve_exact(self) -> Motion:
         """Both levels solved with the coordinates as stand-ins (`engine.exact`), then the

@@ -254,7 +254,12 @@ def _plain_yaml(text: str) -> Any:
     next_event = parser.get_event               # None once the stream has ended
     constructors = parser.yaml_constructors
     resolved: dict[tuple, Any] = {}
-    stack: list[list] = []            # open collections: [container, is_mapping, key, keys seen]
+    stack: list[tuple] = []           # the open collections around the innermost: (it, is_mapping, its key)
+    container: Any = None             # the innermost open collection (None: at the top)
+    is_mapping = False
+    key: Any = _UNUSUAL               # the innermost mapping's key awaiting its value
+    key_types = (str, int, float, bool, type(None))
+    name_chars = limits.NAME_CHARS
     root: Any = _UNUSUAL
     documents = 0
     nesting = limits.NESTING
@@ -264,10 +269,9 @@ def _plain_yaml(text: str) -> Any:
             if kind is scalar_event:
                 if event.anchor is not None or event.tag not in (None, "!"):
                     return _UNUSUAL
-                key = (event.value, event.implicit)
-                if key in resolved:
-                    value = resolved[key]
-                else:
+                text_key = (event.value, event.implicit)
+                value = resolved.get(text_key, _UNUSUAL)
+                if value is _UNUSUAL:
                     value = _plain_number(event) if event.tag is None and event.implicit[0] else None
                     if value is None:
                         tag = parser.resolve(scalar_node, event.value, event.implicit)
@@ -281,15 +285,18 @@ def _plain_yaml(text: str) -> Any:
                             except UnicodeEncodeError:
                                 return _UNUSUAL
                     if value == value:                # a NaN is never shared (nor a dict key)
-                        resolved[key] = value
+                        resolved[text_key] = value
             elif kind in opening:
                 if event.anchor is not None or event.tag not in (None, "!") or len(stack) >= nesting:
                     return _UNUSUAL
-                mapping = opening[kind]
-                stack.append([{} if mapping else [], mapping, _UNUSUAL, set() if mapping else None])
+                stack.append((container, is_mapping, key))
+                is_mapping = opening[kind]
+                container = {} if is_mapping else []
+                key = _UNUSUAL
                 continue
             elif kind in closing:
-                value = stack.pop()[0]
+                value = container
+                container, is_mapping, key = stack.pop()
             elif kind is document_start:
                 documents += 1
                 if documents > 1:
@@ -299,22 +306,18 @@ def _plain_yaml(text: str) -> Any:
                 return _UNUSUAL
             else:                                     # stream start and end, document end
                 continue
-            if not stack:
+            if container is None:
                 root = value
-                continue
-            top = stack[-1]
-            if not top[1]:
-                top[0].append(value)
-            elif top[2] is _UNUSUAL:                  # a key
-                if (not isinstance(value, (str, int, float, bool, type(None)))
-                        or value in top[3]
-                        or (isinstance(value, str) and len(value) > limits.NAME_CHARS)):
+            elif not is_mapping:
+                container.append(value)
+            elif key is _UNUSUAL:                     # a key: every earlier key has its value by now
+                if (not isinstance(value, key_types) or value in container
+                        or (isinstance(value, str) and len(value) > name_chars)):
                     return _UNUSUAL
-                top[3].add(value)
-                top[2] = value
+                key = value
             else:
-                top[0][top[2]] = value
-                top[2] = _UNUSUAL
+                container[key] = value
+                key = _UNUSUAL
     except (ValueError, TypeError, yaml.YAMLError):
         return _UNUSUAL
     return root
