@@ -19,8 +19,11 @@ from .test_text import plain_text
 # the notes' examples of each kind (every one in a deep run)
 NOTES = sampled(WORKED, KINDS)
 
-# the program, as a student must never read it: the solver, in the four languages
-SOLVER = re.compile(r"(?i)\b(solver|resolutor|resolvedor|solucionador|ebazle\w*|programa|program)\b")
+# the program, as a student must never read it: the solver, its method (the velocity
+# equations' block-triangular form) and the rank that counts the degrees of freedom, in the
+# four languages
+SOLVER = re.compile(r"(?i)\b(solver|resolutor|resolvedor|solucionador|ebazle\w*|programa|program|"
+                    r"\w*triang\w*|rank|rango|rang|heina\w*)\b")
 # colours, which plain text (Markdown) does not show
 COLOURS = re.compile(r"(?i)\b(red|blue|black|green|grey|gray|rojo|roja|azul|azules|negro|verde|vermell|"
                      r"blau|blava|blaves|blaus|negre|verd|gorri\w*|urdin\w*|beltz\w*|berde\w*)\b")

@@ -33,13 +33,10 @@ structure-frame = { $body } (fix)
 structure-dof = Incògnites: { $n } components de velocitat { $moving ->
         [one] d’un sòlid mòbil
        *[other] de { $moving } sòlids mòbils
-    }. Les condicions de velocitat dels enllaços tenen rang { $rank }, de manera que el mecanisme té { $dof ->
+    }. Els enllaços imposen { $rank } condicions independents, de manera que el mecanisme té { $dof ->
         [one] un grau
        *[other] { $dof } graus
-    } de llibertat ({ $dof ->
-        [one] comptat
-       *[other] comptats
-    } pel rang); les dades de moviment donen { $conditions ->
+    } de llibertat; les dades de moviment donen { $conditions ->
         [one] una condició independent
        *[other] { $conditions } condicions independents
     }.
@@ -143,7 +140,7 @@ pos-crossed = la configuració creuada (les barres es creuen)
 
 sec-order = Ordre de resolució
 order-assur = El mecanisme es descompon en les seves entrades i grups d’Assur (díades); cada grup es resol a partir de sòlids ja coneguts:
-order-blocks = El mecanisme no es descompon en díades a partir de manovelles o corredores motores, de manera que l’ordre surt de la forma triangular per blocs de les equacions de velocitat; cada grup es troba a partir dels sòlids ja coneguts:
+order-blocks = Cada grup es troba a partir dels sòlids ja coneguts, en aquest ordre:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
         [one] enllaç
        *[other] enllaços

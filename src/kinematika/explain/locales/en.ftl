@@ -33,10 +33,10 @@ structure-frame = { $body } (fixed)
 structure-dof = Unknowns: { $n } velocity components of { $moving ->
         [one] one moving body
        *[other] { $moving } moving bodies
-    }. The velocity conditions of the joints have rank { $rank }, so the mechanism has { $dof ->
+    }. The joints impose { $rank } independent conditions on them, so the mechanism has { $dof ->
         [one] one degree
        *[other] { $dof } degrees
-    } of freedom (counted by rank); the drivers give { $conditions ->
+    } of freedom; the drivers give { $conditions ->
         [one] one independent condition
        *[other] { $conditions } independent conditions
     }.
@@ -110,7 +110,7 @@ pos-crossed = the crossed assembly (the links cross)
 
 sec-order = Order of solution
 order-assur = The mechanism is decomposed into its inputs and Assur groups (dyads); each group is solved from bodies already known:
-order-blocks = The mechanism does not decompose from driven cranks or sliders into dyads, so the order comes from the block-triangular form of the velocity equations; each group is found from the bodies already known:
+order-blocks = Each group is found from the bodies already known, in this order:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
         [one] joint
        *[other] joints

@@ -33,10 +33,10 @@ structure-frame = { $body } (fijo)
 structure-dof = Incógnitas: { $n } componentes de velocidad de { $moving ->
         [one] un sólido móvil
        *[other] { $moving } sólidos móviles
-    }. Las condiciones de velocidad de los pares tienen rango { $rank }, así que el mecanismo tiene { $dof ->
+    }. Los pares imponen { $rank } condiciones independientes, así que el mecanismo tiene { $dof ->
         [one] un grado
        *[other] { $dof } grados
-    } de libertad (contados por el rango); los datos de movimiento dan { $conditions ->
+    } de libertad; los datos de movimiento dan { $conditions ->
         [one] una condición independiente
        *[other] { $conditions } condiciones independientes
     }.
@@ -110,7 +110,7 @@ pos-crossed = la configuración cruzada (las barras se cruzan)
 
 sec-order = Orden de resolución
 order-assur = El mecanismo se descompone en sus entradas y grupos de Assur (díadas); cada grupo se resuelve a partir de sólidos ya conocidos:
-order-blocks = El mecanismo no se descompone en díadas a partir de manivelas o correderas motoras, así que el orden sale de la forma triangular por bloques de las ecuaciones de velocidad; cada grupo se halla a partir de los sólidos ya conocidos:
+order-blocks = Cada grupo se halla a partir de los sólidos ya conocidos, en este orden:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
         [one] par
        *[other] pares

@@ -33,10 +33,10 @@ structure-frame = { $body } (finkoa)
 structure-dof = Ezezagunak: { $moving ->
         [one] solido mugikor baten
        *[other] { $moving } solido mugikorren
-    } { $n } abiadura-osagai. Loturen abiadura-baldintzen heina { $rank } da; beraz, mekanismoak { $dof ->
+    } { $n } abiadura-osagai. Loturek { $rank } baldintza independente ezartzen dituzte; beraz, mekanismoak { $dof ->
         [one] askatasun-gradu bat du
        *[other] { $dof } askatasun-gradu ditu
-    } (heinaren bidez zenbatuta); eragileek { $conditions ->
+    }; eragileek { $conditions ->
         [one] baldintza independente bat ematen dute
        *[other] { $conditions } baldintza independente ematen dituzte
     }.
@@ -110,7 +110,7 @@ pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
 order-assur = Mekanismoa bere sarreretan eta Assur taldeetan (diadetan) deskonposatzen da; talde bakoitza jadanik ezagunak diren solidoetatik ebazten da:
-order-blocks = Mekanismoa ez da diadetan deskonposatzen biradera edo irristagailu eragileetatik abiatuta; beraz, ordena abiadura-ekuazioen bloke-triangeluar formatik dator, eta talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da:
+order-blocks = Talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da, ordena honetan:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints } { $joints_n ->
         [one] lotura
        *[other] loturak
