@@ -62,6 +62,24 @@ def test_a_verb_agrees_with_a_plural_body(name, lang, wrong, right):
     assert wrong not in text and right in text
 
 
+
+@pytest.mark.parametrize("name,lang,wrong,right", [
+    # two wheels (les rodes, feminine) do not slip "l'un sobre l'altre": between themselves
+    ("seed_c5_e4_upper_wheel", "ca", "no llisquen l’un sobre l’altre", "no llisquen entre si"),
+    # a belt's two pulleys: their rims have one speed (not "both move with the same speed")
+    ("seed_c5_1_6_belt", "eu", "biek abiadura berarekin mugitzen dute", "bien periferiek abiadura bera dute"),
+    ("seed_c5_1_6_belt", "ca", "tots dos la mouen", "les seves perifèries tenen la mateixa velocitat"),
+    # the normal to the floor's line through the point that slides on it
+    ("seed_c5_1_2_bar_on_inclined_wheels", "ca", "a la normal a J a la recta", "a la normal a la recta del *terra* per J"),
+    # a body's name stripped of its article keeps no stray article of its own
+    ("seed_c5_1_5_pulley_block", "ca", "del *sostre i el tram 1*", "del *sostre amb el tram 1*"),
+])
+def test_the_notes_grammar(name, lang, wrong, right):
+    """Catalan and Basque as the notes write them (issue 30's audit, its grammar points)."""
+    _, doc = explained(name)
+    text = render(doc, lang, "md", drawings=False)
+    assert wrong not in text and right in text
+
 def test_count_reads_plural_names():
     from kinematika.explain.catalogue import count
 

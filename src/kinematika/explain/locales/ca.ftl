@@ -494,11 +494,11 @@ centre-weld = l’enllaç { $joint } uneix rígidament { $body } i { $other }: s
        *[other] de { $other }
     }, { $same },
 centre-line-kennedy = la recta que passa per { $l } (Aronhold–Kennedy, tercer sòlid { $k })
-centre-line-slot = la normal a la ranura de l’enllaç { $joint } a { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
-centre-line-slot_fixed = la normal a { $point } a la recta { ELISION($a) ->
+centre-line-slot = la normal a la ranura de l’enllaç { $joint } per { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
+centre-line-slot_fixed = la normal a la recta { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
-    } per on llisca (enllaç { $joint })
+    } per { $point }, el punt que hi llisca (enllaç { $joint })
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
 centre-field = cap enllaç ni cap recta d’Aronhold–Kennedy no el situa abans de conèixer les velocitats; amb elles, 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 centre-rate = a partir de la velocitat angular trobada més amunt a través { ELISION($line) ->
@@ -564,16 +564,16 @@ how-translates = (es trasllada respecte { ELISION($body) ->
 pair-relation_v = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen l’un sobre l’altre (enllaç { $joint }), de manera que { $equation } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si (enllaç { $joint }), de manera que { $equation } (amb { $radii }):
 pair-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen l’un sobre l’altre (enllaç { $joint }), de manera que { $equation } a cada instant; derivant, amb els radis constants, { $derived } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si (enllaç { $joint }), de manera que { $equation } a cada instant; derivant, amb els radis constants, { $derived } (amb { $radii }):
 drive-relation_a = Derivant, amb els radis constants: { $equation } (amb { $radii }):
 drive-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos i { $line } es trasllada: no llisca sobre { $a } ni sobre { $b }, de manera que tots dos la mouen amb la mateixa velocitat, { $equation } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos i { $line } es trasllada: no llisca sobre { $a } ni sobre { $b }, de manera que les seves perifèries tenen la mateixa velocitat, { $equation } (amb { $radii }):
 check-train = La relació de la transmissió és el producte de les de les seves etapes: { $ratio }; amb les velocitats angulars trobades, la relació val { $value }.
 check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la seva oscil·lació quan la ranura és tangent a la circumferència { ELISION($pin) ->
         [vowel] d’{ $pin }
