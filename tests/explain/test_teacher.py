@@ -177,3 +177,25 @@ def test_the_articulated_vehicles_wheel_spin_is_the_notes():
     assert len(spins) == 1
     w = next(s for s in spins[0].value.value.free_symbols if s.name == "w")
     assert sympy.simplify(spins[0].value.value - w / (2 * sympy.sqrt(2))) == 0
+
+
+def test_a_chassis_on_one_axle_translates_because_its_wheels_share_a_velocity():
+    """C5-2.2: S1's two wheels lie on one axle line (their lines coincide, they do not run
+    parallel), so the lines cannot place its centre; W1 and W2 are both given (rω; 0), and
+    two points with one velocity (v_W2 = v_W1 + ω × W1W2, W1W2 ≠ 0) give ω = 0: it translates."""
+    _, doc = explained("seed_c5_2_2_articulated")
+    said = [b for s in doc.sections for b in _walk(s) if getattr(b, "key", "").startswith("vehicle.translation")]
+    assert [m.key for m in said] == ["vehicle.translation_equal"]
+    assert {said[0].args["p"].text, said[0].args["q"].text} == {"W1", "W2"}
+    for lang, words in (("ca", "tenen la mateixa velocitat"), ("eu", "abiadura bera dute")):
+        text = render(doc, lang, "md", drawings=False)
+        assert words in text and "paral·leles: el seu CIR" not in text and "zuzenak paraleloak dira" not in text
+
+
+def _walk(section):
+    """Every block of a section and of its subsections."""
+    for b in section.blocks:
+        if hasattr(b, "blocks") and hasattr(b, "title"):
+            yield from _walk(b)
+        else:
+            yield b

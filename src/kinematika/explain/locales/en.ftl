@@ -93,6 +93,7 @@ pos-carried = { $point } is carried with { $body }: { $point } = { $at }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
 pos-frame = { $point } is { $x } from { $origin } along { $line } and { $y } across it, to its left: { $point } = { $at }.
+pos-frame_right = { $point } is { $x } from { $origin } along { $line } and { $y } across it, to its right: { $point } = { $at }.
 pos-frame_on = { $point } is { $x } from { $origin } along { $line }: { $point } = { $at }.
 pos-circles = { $point } is at distance { $r1 } from { $c1 } and { $r2 } from { $c2 }: the intersection of two circles, about { $c1 } and about { $c2 }. Of the two points where they meet, it is { $which }: { $point } = { $at }.
 pos-circle_line = { $point } is at distance { $r } from { $c } on the line { $line }: the intersection of a circle about { $c } and a line. Of the two points where they meet, it is { $which }: { $point } = { $at }.
@@ -238,6 +239,7 @@ vehicle-line-velocity = the perpendicular to { $sym } at { $point }
 vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg } = { $vq } · { $seg }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel’s plane: { $vp } = { $value }, of magnitude { $speed }.
 vehicle-centre = The centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel: its centre is at infinity, it translates, and every point moves as { $point }.
+vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = { $vq } = { $value }: { $body } does not turn (its centre is at infinity), it translates, and every point moves as { $p }.
 vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $radius } { $spin }, its spin about its axle, so:
 triad-intro = { $body } is held by three binary links, { $links }: no vector equation of a single point has only two unknowns. As textbooks do for a triad, take the Assur point { $point }, where the lines { $l1 } and { $l3 } meet, as a point of { $body }:
 triad-collinear = On each side the two unknown terms are perpendicular to one line ({ $point } lies on { $l1 } and on { $l3 }), so each side has one unknown magnitude: two unknowns, and the polygon closes.

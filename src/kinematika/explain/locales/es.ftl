@@ -93,6 +93,7 @@ pos-carried = { $point } se mueve con { $body }: { $point } = { $at }.
 pos-polar = { $point } está a una distancia { $distance } de { $origin }, a { $angle } del eje x: { $point } = { $at }.
 pos-polar_ref = { $point } está a una distancia { $distance } de { $origin }, a { $angle } de la dirección { $ref }: { $point } = { $at }.
 pos-frame = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su izquierda: { $point } = { $at }.
+pos-frame_right = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su derecha: { $point } = { $at }.
 pos-frame_on = { $point } está a { $x } de { $origin } según { $line }: { $point } = { $at }.
 pos-circles = { $point } está a una distancia { $r1 } de { $c1 } y { $r2 } de { $c2 }: la intersección de dos circunferencias, de centros { $c1 } y { $c2 }. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
 pos-circle_line = { $point } está a una distancia { $r } de { $c } sobre la recta { $line }: la intersección de una circunferencia de centro { $c } y una recta. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
@@ -265,6 +266,7 @@ vehicle-line-velocity = la perpendicular a { $sym } por el punto { $point }
 vehicle-equiprojective = Por la propiedad de equiproyectividad ({ $q } y { $p } son puntos de { $body }), sus velocidades tienen la misma componente según { $seg }: { $vp } · { $seg } = { $vq } · { $seg }. { $p } está en el eje de la rueda { $joint }, así que { $vp } tiene la dirección del plano de la rueda: { $vp } = { $value }, de módulo { $speed }.
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
 vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
+vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }: { $body } no gira (su CIR está en el infinito), se traslada y todos sus puntos se mueven como { $p }.
 vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $radius } { $spin }, su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
