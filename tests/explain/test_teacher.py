@@ -199,3 +199,22 @@ def _walk(section):
             yield from _walk(b)
         else:
             yield b
+
+
+@pytest.mark.parametrize("name,lines", [
+    ("seed_c5_1_2_bar_on_inclined_wheels", ["fig.normal.slot_fixed"]),   # J slides on the floor: no slot
+    ("seed_c5_2_2_articulated", ["fig.normal.wheel"]),                   # knife-edge wheels: their axles
+    ("four_bar", []),                                                    # pins only: Aronhold–Kennedy alone
+])
+def test_the_centres_caption_names_the_contacts_the_mechanism_has(name, lines):
+    """What the centres' figure says its lines are comes from the joints: C5-1.2's bar end J
+    on the floor is a point sliding on a fixed line, and its caption says so, never "slots"."""
+    from kinematika.explain.document import Drawing
+
+    _, doc = explained(name)
+    captions = [b.caption for s in doc.sections for b in _walk(s)
+                if isinstance(b, Drawing) and b.caption.key == "fig.centres"]
+    assert captions and all([m.key for m in c.args["normals"].items] == lines for c in captions)
+    if name.startswith("seed_c5_1_2"):
+        for lang, slot in (("ca", "ranures"), ("eu", "arteken")):
+            assert slot not in render(doc, lang, "md", drawings=True)

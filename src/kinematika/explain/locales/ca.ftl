@@ -462,7 +462,14 @@ copy-same = { $body } té els mateixos enllaços, amb els mateixos sòlids, i el
         [1] acceleració angular
        *[other] velocitat angular
     }:
-fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy i perpendiculars a rodes i ranures).
+fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy{ $normals_n ->
+        [0] {""}
+       *[other] {" "}i { $normals }
+    }).
+fig-normal-wheel = les perpendiculars a les rodes
+fig-normal-slot = les normals a les ranures
+fig-normal-slot_fixed = les normals a les rectes per on llisquen els punts
+fig-normal-normal = les normals comunes als contactes
 fig-assur = El punt d’Assur { $point }: les rectes { $l1 } i { $l3 } (a traços) perllongades fins que es tallen; { $point } es pren com a punt de la barra ternària.
 fig-drawn_at = Dibuixat amb { $values }.
 fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt{ $format ->

@@ -264,7 +264,14 @@ copy-same = { $body } is joined to the same bodies in the same way, with the sam
         [1] acceleration
        *[other] velocity
     }:
-fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism, with the lines they are found on (dash-dot: Aronhold–Kennedy lines and the perpendiculars to wheels and slots).
+fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism, with the lines they are found on (dash-dot: Aronhold–Kennedy lines{ $normals_n ->
+        [0] {""}
+       *[other] {" "}and { $normals }
+    }).
+fig-normal-wheel = the perpendiculars to the wheels
+fig-normal-slot = the normals to the slots
+fig-normal-slot_fixed = the normals to the lines the points slide on
+fig-normal-normal = the common normals at the contacts
 fig-assur = The Assur point { $point }: the lines { $l1 } and { $l3 } (dashed) drawn on until they meet; { $point } is taken as a point of the ternary link.
 fig-drawn_at = Drawn at { $values }.
 fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point{ $format ->

@@ -291,7 +291,14 @@ copy-same = { $body } tiene las mismas uniones, con los mismos sólidos, y el mi
         [1] aceleración angular
        *[other] velocidad angular
     }:
-fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo, con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy y perpendiculares a ruedas y ranuras).
+fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo, con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy{ $normals_n ->
+        [0] {""}
+       *[other] {" "}y { $normals }
+    }).
+fig-normal-wheel = las perpendiculares a las ruedas
+fig-normal-slot = las normales a las ranuras
+fig-normal-slot_fixed = las normales a las rectas por las que deslizan los puntos
+fig-normal-normal = las normales comunes en los contactos
 fig-assur = El punto de Assur { $point }: las rectas { $l1 } y { $l3 } (a trazos) prolongadas hasta cortarse; { $point } se toma como punto del eslabón ternario.
 fig-drawn_at = Dibujado con { $values }.
 fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto{ $format ->

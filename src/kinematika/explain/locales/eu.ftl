@@ -264,7 +264,14 @@ copy-same = { $body } solido berberei lotuta dago, { $original } bezala eta erra
         [1] azelerazio angeluar
        *[other] abiadura angeluar
     } berarekin:
-fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak eta gurpilen eta arteken perpendikularrak).
+fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak{ $normals_n ->
+        [0] {""}
+       *[other] {" "}eta { $normals }
+    }).
+fig-normal-wheel = gurpilen perpendikularrak
+fig-normal-slot = arteken perpendikularrak
+fig-normal-slot_fixed = puntuak irristatzen diren zuzenen perpendikularrak
+fig-normal-normal = kontaktuetako normal komunak
 fig-assur = { $point } Assur puntua: { $l1 } eta { $l3 } zuzenak (marra etenez) ebaki arte luzatuta; { $point } barra hirutarraren puntutzat hartzen da.
 fig-drawn_at = Balio hauekin marraztua: { $values }.
 fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
