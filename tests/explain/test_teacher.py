@@ -218,3 +218,33 @@ def test_the_centres_caption_names_the_contacts_the_mechanism_has(name, lines):
     if name.startswith("seed_c5_1_2"):
         for lang, slot in (("ca", "ranures"), ("eu", "arteken")):
             assert slot not in render(doc, lang, "md", drawings=True)
+
+
+def _points_table(text: str, header: str) -> dict[str, str]:
+    """The Data section's table of points (Markdown): point -> what it is."""
+    lines = text.split(f"| {header} |", 1)[1].split("\n\n", 1)[0].splitlines()[2:]
+    return {cells[1].strip(): cells[2].strip() for cells in (line.split("|") for line in lines)}
+
+
+@pytest.mark.parametrize("name", sampled(sorted(p for p in WORKED if p.startswith("seed_")),
+                                         KINDS | {"seed_001_r_pairs", "seed_c5_1_2_bar_on_inclined_wheels"}))
+def test_every_point_says_what_it_is(name):
+    """The Data section's "what it is" column is never empty for a point a body holds: where
+    the model's `names` do not say, its structure does (a circle's centre, a joint's point,
+    a point of its bodies)."""
+    _, doc = explained(name)
+    for lang, header in (("ca", "punt"), ("eu", "puntua")):
+        table = _points_table(render(doc, lang, "md", drawings=False), header)
+        assert table and all(table.values()), (name, lang, [p for p, w in table.items() if not w])
+
+
+def test_what_a_point_is_comes_from_the_joints_and_shapes():
+    """C5-1.2: O is the left wheel's centre (its circle's), J the bar's end sliding on the
+    floor (joint j8); the slides' r_pairs: B is the pin j5 between N and P."""
+    _, doc = explained("seed_c5_1_2_bar_on_inclined_wheels")
+    table = _points_table(render(doc, "ca", "md", drawings=False), "punt")
+    assert table["O"] == "centre de la *roda esquerra*"
+    assert table["J"].startswith("enllaç j8, contacte amb lliscament") and "*barra OJ*" in table["J"]
+    _, doc = explained("seed_001_r_pairs")
+    table = _points_table(render(doc, "eu", "md", drawings=False), "puntua")
+    assert table["B"].startswith("j5 lotura, giltzadura (R)")

@@ -559,6 +559,15 @@ fig-step_a = Polígon d’acceleracions d’aquest pas, a escala: des del pol o,
     }, l’un darrere l’altre.
 col-point = punt
 col-what = què és
+what-centre = centre { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }
+what-joint = enllaç { $joint }, { $kind }, entre { $a } i { $b }
+what-body = un punt { ELISION($bodies) ->
+        [vowel] d’{ $bodies }
+       *[other] de { $bodies }
+    }
 note-text = Nota: { $text }
 sec-checks = Comprovacions
 check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->

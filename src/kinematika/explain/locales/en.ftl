@@ -340,6 +340,9 @@ fig-step_a = Acceleration polygon of this step, to scale: from the pole o, the a
     }, head to tail.
 col-point = point
 col-what = what it is
+what-centre = centre of { $body }
+what-joint = joint { $joint }, { $kind }, between { $a } and { $b }
+what-body = a point of { $bodies }
 note-text = Note: { $text }
 sec-checks = Checks
 check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } carries), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.

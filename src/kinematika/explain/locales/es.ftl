@@ -367,6 +367,9 @@ fig-step_a = Polígono de aceleraciones de este paso, a escala: desde el polo o,
     }, uno tras otro.
 col-point = punto
 col-what = qué es
+what-centre = centro de { $body }
+what-joint = par { $joint }, { $kind }, entre { $a } y { $b }
+what-body = un punto de { $bodies }
 note-text = Nota: { $text }
 sec-checks = Comprobaciones
 check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes lleva { $carrier }), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.

@@ -340,6 +340,12 @@ fig-step_a = Urrats honetako azelerazioen poligonoa, eskalan: o polotik, puntu b
     }, bata bestearen atzetik.
 col-point = puntua
 col-what = zer den
+what-centre = { $body } solidoaren zentroa
+what-joint = { $joint } lotura, { $kind }, { $a } eta { $b } solidoen artean
+what-body = { $bodies } { $bodies_n ->
+        [one] solidoaren
+       *[other] solidoen
+    } puntua
 note-text = Oharra: { $text }
 sec-checks = Egiaztapenak
 check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak { $carrier } solidoak daramatza); beraz, { $formula } = { $radii } = { $train }, { $r1 } eta { $r2 } izanik. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
