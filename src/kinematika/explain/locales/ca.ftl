@@ -144,7 +144,7 @@ pos-crossed = la configuració creuada (les barres es creuen)
 
 sec-order = Ordre de resolució
 order-assur = El mecanisme es descompon en les seves entrades i grups d’Assur (díades); cada grup es resol a partir de sòlids ja coneguts:
-order-blocks = Cada grup es troba a partir dels sòlids ja coneguts, en aquest ordre:
+order-blocks = El mecanisme no es descompon en díades a partir de manovelles o corredores motores; cada grup es troba a partir dels sòlids ja coneguts, en aquest ordre:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
         [one] enllaç
        *[other] enllaços

@@ -111,7 +111,7 @@ pos-crossed = the crossed assembly (the links cross)
 
 sec-order = Order of solution
 order-assur = The mechanism is decomposed into its inputs and Assur groups (dyads); each group is solved from bodies already known:
-order-blocks = Each group is found from the bodies already known, in this order:
+order-blocks = The mechanism does not decompose from driven cranks or sliders into dyads; each group is found from the bodies already known, in this order:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
         [one] joint
        *[other] joints

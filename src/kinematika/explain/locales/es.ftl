@@ -111,7 +111,7 @@ pos-crossed = la configuración cruzada (las barras se cruzan)
 
 sec-order = Orden de resolución
 order-assur = El mecanismo se descompone en sus entradas y grupos de Assur (díadas); cada grupo se resuelve a partir de sólidos ya conocidos:
-order-blocks = Cada grupo se halla a partir de los sólidos ya conocidos, en este orden:
+order-blocks = El mecanismo no se descompone en díadas a partir de manivelas o correderas motoras; cada grupo se halla a partir de los sólidos ya conocidos, en este orden:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
         [one] par
        *[other] pares

@@ -111,7 +111,7 @@ pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
 order-assur = Mekanismoa bere sarreretan eta Assur taldeetan (diadetan) deskonposatzen da; talde bakoitza jadanik ezagunak diren solidoetatik ebazten da:
-order-blocks = Talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da, ordena honetan:
+order-blocks = Mekanismoa ez da diadetan deskonposatzen biradera edo irristagailu eragileetatik abiatuta; talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da, ordena honetan:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints } { $joints_n ->
         [one] lotura
        *[other] loturak
