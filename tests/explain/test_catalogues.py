@@ -28,6 +28,7 @@ FAMILIES = {
     "cond": [k.name for k in KINDS.values() if not k.rolls] + ["slot_fixed"],  # rolling pairs are written out
     "centre.joint": [k.name for k in KINDS.values() if k.centre in FIXED],
     "centre.line": ["slot", "wheel", "normal", "slot_fixed"],
+    "fig.normal": ["slot", "wheel", "normal", "slot_fixed"],   # the centres caption's lines (structure._normal_lines)
     "ask": [k.name for k in QUESTIONS.values() if type(k).label is QuestionKind.label],   # `ask.NAME`
     "ans": ["point", "direction", "center", "tangent", "slide"],
     "centre.proportional": ["between", "outside"],

@@ -140,3 +140,20 @@ def test_named_coordinates_are_defined_where_the_point_is_placed(monkeypatch):
     assert order.index("x_B") == order.index("B") + 1          # right after B's sentence
     accelerations = next(s for s in doc.sections if s.title.key == "sec.accelerations")
     assert any(getattr(b, "key", "") == "a.named" for b in accelerations.blocks)
+
+
+def test_an_offset_to_the_right_is_said_so():
+    """C5-2.2 places each wheel a/2 to one side of its axle's midpoint (`at: [a, -a/2]` is
+    to the right of O→P): the text says "a/2 … to its right", never "−a/2 … to its left"."""
+    import sympy
+
+    _, doc = explained("seed_c5_2_2_articulated")
+    told = sentences(doc)
+    sides = {p: told[p].key for p in ("W1", "W2", "W3", "W4")}
+    assert sides == {"W1": "pos.frame", "W2": "pos.frame_right", "W3": "pos.frame_right", "W4": "pos.frame"}
+    a = sympy.Symbol("a", positive=True)
+    for p in sides:
+        y = sympy.sympify(told[p].args["y"].value)
+        assert sympy.simplify(y.subs(dict.fromkeys(y.free_symbols, a)) - a / 2) == 0, p
+    text = render(doc, "ca", "md", drawings=False)
+    assert "a −a/2 en perpendicular" not in text and "a a/2 en perpendicular, a la seva dreta: W2" in text

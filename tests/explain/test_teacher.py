@@ -19,8 +19,11 @@ from .test_text import plain_text
 # the notes' examples of each kind (every one in a deep run)
 NOTES = sampled(WORKED, KINDS)
 
-# the program, as a student must never read it: the solver, in the four languages
-SOLVER = re.compile(r"(?i)\b(solver|resolutor|resolvedor|solucionador|ebazle\w*|programa|program)\b")
+# the program, as a student must never read it: the solver, its method (the velocity
+# equations' block-triangular form) and the rank that counts the degrees of freedom, in the
+# four languages
+SOLVER = re.compile(r"(?i)\b(solver|resolutor|resolvedor|solucionador|ebazle\w*|programa|program|"
+                    r"\w*triang\w*|rank|rango|rang|heina\w*)\b")
 # colours, which plain text (Markdown) does not show
 COLOURS = re.compile(r"(?i)\b(red|blue|black|green|grey|gray|rojo|roja|azul|azules|negro|verde|vermell|"
                      r"blau|blava|blaves|blaus|negre|verd|gorri\w*|urdin\w*|beltz\w*|berde\w*)\b")
@@ -58,6 +61,24 @@ def test_a_verb_agrees_with_a_plural_body(name, lang, wrong, right):
     text = render(doc, lang, "md", drawings=False)
     assert wrong not in text and right in text
 
+
+
+@pytest.mark.parametrize("name,lang,wrong,right", [
+    # two wheels (les rodes, feminine) do not slip "l'un sobre l'altre": between themselves
+    ("seed_c5_e4_upper_wheel", "ca", "no llisquen l’un sobre l’altre", "no llisquen entre si"),
+    # a belt's two pulleys: their rims have one speed (not "both move with the same speed")
+    ("seed_c5_1_6_belt", "eu", "biek abiadura berarekin mugitzen dute", "bien periferiek abiadura bera dute"),
+    ("seed_c5_1_6_belt", "ca", "tots dos la mouen", "les seves perifèries tenen la mateixa velocitat"),
+    # the normal to the floor's line through the point that slides on it
+    ("seed_c5_1_2_bar_on_inclined_wheels", "ca", "a la normal a J a la recta", "a la normal a la recta del *terra* per J"),
+    # a body's name stripped of its article keeps no stray article of its own
+    ("seed_c5_1_5_pulley_block", "ca", "del *sostre i el tram 1*", "del *sostre amb el tram 1*"),
+])
+def test_the_notes_grammar(name, lang, wrong, right):
+    """Catalan and Basque as the notes write them (issue 30's audit, its grammar points)."""
+    _, doc = explained(name)
+    text = render(doc, lang, "md", drawings=False)
+    assert wrong not in text and right in text
 
 def test_count_reads_plural_names():
     from kinematika.explain.catalogue import count
@@ -156,3 +177,74 @@ def test_the_articulated_vehicles_wheel_spin_is_the_notes():
     assert len(spins) == 1
     w = next(s for s in spins[0].value.value.free_symbols if s.name == "w")
     assert sympy.simplify(spins[0].value.value - w / (2 * sympy.sqrt(2))) == 0
+
+
+def test_a_chassis_on_one_axle_translates_because_its_wheels_share_a_velocity():
+    """C5-2.2: S1's two wheels lie on one axle line (their lines coincide, they do not run
+    parallel), so the lines cannot place its centre; W1 and W2 are both given (rω; 0), and
+    two points with one velocity (v_W2 = v_W1 + ω × W1W2, W1W2 ≠ 0) give ω = 0: it translates."""
+    _, doc = explained("seed_c5_2_2_articulated")
+    said = [b for s in doc.sections for b in _walk(s) if getattr(b, "key", "").startswith("vehicle.translation")]
+    assert [m.key for m in said] == ["vehicle.translation_equal"]
+    assert {said[0].args["p"].text, said[0].args["q"].text} == {"W1", "W2"}
+    for lang, words in (("ca", "tenen la mateixa velocitat"), ("eu", "abiadura bera dute")):
+        text = render(doc, lang, "md", drawings=False)
+        assert words in text and "paral·leles: el seu CIR" not in text and "zuzenak paraleloak dira" not in text
+
+
+def _walk(section):
+    """Every block of a section and of its subsections."""
+    for b in section.blocks:
+        if hasattr(b, "blocks") and hasattr(b, "title"):
+            yield from _walk(b)
+        else:
+            yield b
+
+
+@pytest.mark.parametrize("name,lines", [
+    ("seed_c5_1_2_bar_on_inclined_wheels", ["fig.normal.slot_fixed"]),   # J slides on the floor: no slot
+    ("seed_c5_2_2_articulated", ["fig.normal.wheel"]),                   # knife-edge wheels: their axles
+    ("four_bar", []),                                                    # pins only: Aronhold–Kennedy alone
+])
+def test_the_centres_caption_names_the_contacts_the_mechanism_has(name, lines):
+    """What the centres' figure says its lines are comes from the joints: C5-1.2's bar end J
+    on the floor is a point sliding on a fixed line, and its caption says so, never "slots"."""
+    from kinematika.explain.document import Drawing
+
+    _, doc = explained(name)
+    captions = [b.caption for s in doc.sections for b in _walk(s)
+                if isinstance(b, Drawing) and b.caption.key == "fig.centres"]
+    assert captions and all([m.key for m in c.args["normals"].items] == lines for c in captions)
+    if name.startswith("seed_c5_1_2"):
+        for lang, slot in (("ca", "ranures"), ("eu", "arteken")):
+            assert slot not in render(doc, lang, "md", drawings=True)
+
+
+def _points_table(text: str, header: str) -> dict[str, str]:
+    """The Data section's table of points (Markdown): point -> what it is."""
+    lines = text.split(f"| {header} |", 1)[1].split("\n\n", 1)[0].splitlines()[2:]
+    return {cells[1].strip(): cells[2].strip() for cells in (line.split("|") for line in lines)}
+
+
+@pytest.mark.parametrize("name", sampled(sorted(p for p in WORKED if p.startswith("seed_")),
+                                         KINDS | {"seed_001_r_pairs", "seed_c5_1_2_bar_on_inclined_wheels"}))
+def test_every_point_says_what_it_is(name):
+    """The Data section's "what it is" column is never empty for a point a body holds: where
+    the model's `names` do not say, its structure does (a circle's centre, a joint's point,
+    a point of its bodies)."""
+    _, doc = explained(name)
+    for lang, header in (("ca", "punt"), ("eu", "puntua")):
+        table = _points_table(render(doc, lang, "md", drawings=False), header)
+        assert table and all(table.values()), (name, lang, [p for p, w in table.items() if not w])
+
+
+def test_what_a_point_is_comes_from_the_joints_and_shapes():
+    """C5-1.2: O is the left wheel's centre (its circle's), J the bar's end sliding on the
+    floor (joint j8); the slides' r_pairs: B is the pin j5 between N and P."""
+    _, doc = explained("seed_c5_1_2_bar_on_inclined_wheels")
+    table = _points_table(render(doc, "ca", "md", drawings=False), "punt")
+    assert table["O"] == "centre de la *roda esquerra*"
+    assert table["J"].startswith("enllaç j8, contacte amb lliscament") and "*barra OJ*" in table["J"]
+    _, doc = explained("seed_001_r_pairs")
+    table = _points_table(render(doc, "eu", "md", drawings=False), "puntua")
+    assert table["B"].startswith("j5 lotura, giltzadura (R)")

@@ -23,7 +23,7 @@ from typing import Any, Optional
 
 from ..model.model import Circle, Disc, Line, Plane
 from .context import Ctx
-from .document import Inline, Name, Described, Section, Table, Told, Value, msg, point
+from .document import Inline, Msg, Name, Described, Section, Table, Told, Value, msg, names, point
 from .planar import driver_msg
 
 # the kinds of quantity a parameter may be, by where the model uses it
@@ -170,8 +170,25 @@ def point_rows(ctx: Ctx) -> list:
             where: Any = _coordinates(ctx, spec, ctx.pos(name))
         else:
             where = msg("data.constructed")
-        rows.append([point(name), Described("point", name), where])
+        rows.append([point(name), Described("point", name, what_point(ctx, name)), where])
     return rows
+
+
+def what_point(ctx: Ctx, name: str) -> Optional[Msg]:
+    """What a point is, from the model's structure, for a model that does not say it in
+    `names`: the centre of a body's circle, else the point of a joint (its kind and bodies),
+    else a point of the bodies that hold it; None when no body holds it."""
+    from .kinds import kind_key
+
+    for b, carrier in ctx.model.bodies.items():
+        if any(getattr(s, "center_point", None) == name for s in carrier.shapes):
+            return msg("what.centre", body=Name(b, "body"))
+    for j in ctx.model.joints:
+        if j.at == name:
+            return msg("what.joint", joint=Name(j.id, "joint"), kind=msg(f"joint.{kind_key(j, ctx.frame)}"),
+                       a=Name(j.a, "body"), b=Name(j.b, "body"))
+    holders = [b for b, carrier in ctx.model.bodies.items() if name in carrier.points]
+    return msg("what.body", bodies=names(holders, "body")) if holders else None
 
 
 def _coordinates(ctx: Ctx, exprs: tuple, value: tuple) -> Any:

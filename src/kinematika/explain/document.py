@@ -237,10 +237,12 @@ class CentreNote:
 @dataclass(frozen=True)
 class Described:
     """What the model says of one of its things in the reader's language (`names`): what a
-    point is (`kind` point) or a parameter (`kind` parameter); empty when it does not say."""
+    point is (`kind` point) or a parameter (`kind` parameter); when it does not say, `fallback`
+    (what the model's structure says of it: a wheel's centre, a joint's point), else empty."""
 
     kind: str
     name: str
+    fallback: Optional["Msg"] = None
 
 
 @dataclass

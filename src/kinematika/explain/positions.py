@@ -81,8 +81,13 @@ def _sentence(ctx: Ctx, name: str, c: Any) -> Msg:
     if isinstance(c, InFrame):
         across = ctx.clean(ctx.inst.value(c.at[1], "explain"), "len")
         key = "pos.frame_on" if not ctx.symbolic and across == 0 else "pos.frame"
+        y = _quantity(ctx, c.at[1], "len")
+        if key == "pos.frame" and _negative(across):
+            # an offset written negative is that length to the other side: −a/2 to its left
+            # reads a/2 to its right
+            key, y = "pos.frame_right", Value(ctx.clean(-across, "len"), "len")
         return msg(key, point=p, origin=_loc(ctx, c.origin), line=_pair(ctx, c.origin, c.toward),
-                   x=_quantity(ctx, c.at[0], "len"), y=_quantity(ctx, c.at[1], "len"), at=at)
+                   x=_quantity(ctx, c.at[0], "len"), y=y, at=at)
     if isinstance(c, TwoCircles):
         (c1, c2), (r1, r2) = c.centers, c.radii
         which = _which(ctx, c.side, c.near, a=_loc(ctx, c1), b=_loc(ctx, c2))
@@ -117,6 +122,14 @@ def _line(ctx: Ctx, line: LineDef) -> Any:
         return _pair(ctx, line.through, line.toward)
     d = ctx.clean(tuple(ctx.inst.value(e, "explain") for e in line.direction), "")
     return msg("pos.line_dir", through=_loc(ctx, line.through), dir=Value(d, ""))
+
+
+def _negative(x: Any) -> bool:
+    """Whether a length is written with a leading minus (a number below zero, or a formula
+    such as −a/2): sympy's `could_extract_minus_sign`, a reading of its form, not of values."""
+    import sympy
+
+    return bool(sympy.sympify(x).could_extract_minus_sign())
 
 
 def _quantity(ctx: Ctx, expr: Any, unit: str) -> Any:

@@ -7,7 +7,7 @@ from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
 from .kinds import kind_key
-from .document import Arrow, Drawing, Figure, Inline, Name, Section, Table, Value, body, joint, msg, names, point
+from .document import Arrow, Drawing, Figure, Inline, Name, Names, Section, Table, Value, body, joint, msg, names, point
 from .order import Step
 
 
@@ -69,7 +69,23 @@ def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
     fallback = mechanism_figure(ctx) if ctx.planar and caption == "fig.mechanism" else None
     values = {str(k): v for k, v in sorted(drawing_values(ctx.inst).items(), key=lambda kv: str(kv[0]))}
     options.setdefault("width", PRINT_WIDTH)
-    return Drawing(msg(caption, dim=ctx.space.dim), ctx.sol, options, fallback, values)
+    args: dict = {"dim": ctx.space.dim}
+    if caption == "fig.centres":
+        args["normals"] = Names([msg(f"fig.normal.{k}") for k in _normal_lines(ctx)])
+    return Drawing(msg(caption, **args), ctx.sol, options, fallback, values)
+
+
+def _normal_lines(ctx: Ctx) -> list[str]:
+    """The kinds of line, other than Aronhold–Kennedy's, that the centres' figure draws
+    centres on, in the model's order: each joint that puts its bodies' centre on a line
+    (`Centre.NORMAL`) says which (`centre_line`: a wheel's axle, a slot's normal, a contact's
+    common normal), and a slot in the frame is a point sliding on a fixed line (C5-1.2's
+    floor), not a slot — so the caption names only the contacts the mechanism has."""
+    from ..joints.capabilities import Centre
+
+    kinds = [kind_key(j, ctx.frame) if j.kind.centre_line == "slot" else j.kind.centre_line
+             for j in ctx.model.joints if j.kind.centre is Centre.NORMAL]
+    return list(dict.fromkeys(kinds))
 
 
 def mechanism_figure(ctx: Ctx) -> Figure:

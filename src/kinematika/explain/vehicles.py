@@ -154,9 +154,28 @@ def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
             centre = (p1[0] + t * d1[0], p1[1] + t * d1[1])
             return said + _from_centre(ctx, b, centre, [why1, why2], witness, speeds)
     if len(lines) >= 2 and ctx.is_zero(ctx.omega(b), "rate"):
-        return [msg("vehicle.translation", body=Name(b, "body"), point=Name(witness)),
+        twin = _twin(ctx, b, witness, speeds)
+        reason = (msg("vehicle.translation_equal", body=Name(b, "body"), p=Name(witness), q=Name(twin),
+                      vp=Sym("v", witness), vq=Sym("v", twin), value=Value(ctx.clean(speeds[witness], "speed"), "speed"))
+                  if twin else msg("vehicle.translation", body=Name(b, "body"), point=Name(witness)))
+        return [reason,
                 Derived(omega_sym(b), [], ctx.value(ctx.omega(b), "rate"), b, "omega", False,
                         remark=msg("how.translation"))] + _carried(ctx, b, witness)
+    return None
+
+
+def _twin(ctx: Ctx, b: str, witness: str, speeds: dict) -> Optional[str]:
+    """Another point of b whose known velocity equals the witness's: two points of a plane
+    body with one velocity (v_Q = v_P + ω × PQ, so ω × PQ = 0 and ω = 0) make it translate —
+    the reason to give where its lines coincide rather than run parallel (C5-2.2's chassis,
+    its two wheels on one axle). None when no such point is known."""
+    vw = ctx.num(speeds[witness])
+    pw = ctx.num(ctx.pos(witness))
+    for p in ctx.model.bodies[b].points:
+        if p == witness or p not in speeds or _size([a - z for a, z in zip(ctx.num(ctx.pos(p)), pw)]) <= TOL:
+            continue
+        if _size([a - z for a, z in zip(ctx.num(speeds[p]), vw)]) <= TOL * ctx.scale_of("speed"):
+            return p
     return None
 
 

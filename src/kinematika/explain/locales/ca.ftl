@@ -33,13 +33,10 @@ structure-frame = { $body } (fix)
 structure-dof = Incògnites: { $n } components de velocitat { $moving ->
         [one] d’un sòlid mòbil
        *[other] de { $moving } sòlids mòbils
-    }. Les condicions de velocitat dels enllaços tenen rang { $rank }, de manera que el mecanisme té { $dof ->
+    }. Els enllaços imposen { $rank } condicions independents, de manera que el mecanisme té { $dof ->
         [one] un grau
        *[other] { $dof } graus
-    } de llibertat ({ $dof ->
-        [one] comptat
-       *[other] comptats
-    } pel rang); les dades de moviment donen { $conditions ->
+    } de llibertat; les dades de moviment donen { $conditions ->
         [one] una condició independent
        *[other] { $conditions } condicions independents
     }.
@@ -108,6 +105,10 @@ pos-frame = { $point } és a { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
     } segons { $line } i a { $y } en perpendicular, a la seva esquerra: { $point } = { $at }.
+pos-frame_right = { $point } és a { $x } { ELISION($origin) ->
+        [vowel] d’{ $origin }
+       *[other] de { $origin }
+    } segons { $line } i a { $y } en perpendicular, a la seva dreta: { $point } = { $at }.
 pos-frame_on = { $point } és a { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
@@ -143,7 +144,7 @@ pos-crossed = la configuració creuada (les barres es creuen)
 
 sec-order = Ordre de resolució
 order-assur = El mecanisme es descompon en les seves entrades i grups d’Assur (díades); cada grup es resol a partir de sòlids ja coneguts:
-order-blocks = El mecanisme no es descompon en díades a partir de manovelles o corredores motores, de manera que l’ordre surt de la forma triangular per blocs de les equacions de velocitat; cada grup es troba a partir dels sòlids ja coneguts:
+order-blocks = El mecanisme no es descompon en díades a partir de manovelles o corredores motores; cada grup es troba a partir dels sòlids ja coneguts, en aquest ordre:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
         [one] enllaç
        *[other] enllaços
@@ -421,6 +422,7 @@ vehicle-translation = Les rectes { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     } són paral·leles: el seu CIR és a l’infinit, es trasllada i tots els seus punts es mouen com { $point }.
+vehicle-translation_equal = { $p } i { $q } tenen la mateixa velocitat, { $vp } = { $vq } = { $value }: { $body } no gira (el seu CIR és a l’infinit), es trasllada i tots els seus punts es mouen com { $p }.
 vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda a { $radius } { $spin }, la seva rotació pròpia al voltant del seu eix, de manera que:
 triad-intro = { $body } està subjectat per tres barres binàries, { $links }: cap equació vectorial d’un sol punt no té només dues incògnites. Com fan els textos per a una tríada, es pren el punt d’Assur { $point }, on es tallen les rectes { $l1 } i { $l3 }, com a punt { ELISION($body) ->
         [vowel] d’{ $body }
@@ -460,7 +462,14 @@ copy-same = { $body } té els mateixos enllaços, amb els mateixos sòlids, i el
         [1] acceleració angular
        *[other] velocitat angular
     }:
-fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy i perpendiculars a rodes i ranures).
+fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy{ $normals_n ->
+        [0] {""}
+       *[other] {" "}i { $normals }
+    }).
+fig-normal-wheel = les perpendiculars a les rodes
+fig-normal-slot = les normals a les ranures
+fig-normal-slot_fixed = les normals a les rectes per on llisquen els punts
+fig-normal-normal = les normals comunes als contactes
 fig-assur = El punt d’Assur { $point }: les rectes { $l1 } i { $l3 } (a traços) perllongades fins que es tallen; { $point } es pren com a punt de la barra ternària.
 fig-drawn_at = Dibuixat amb { $values }.
 fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt{ $format ->
@@ -497,11 +506,11 @@ centre-weld = l’enllaç { $joint } uneix rígidament { $body } i { $other }: s
        *[other] de { $other }
     }, { $same },
 centre-line-kennedy = la recta que passa per { $l } (Aronhold–Kennedy, tercer sòlid { $k })
-centre-line-slot = la normal a la ranura de l’enllaç { $joint } a { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
-centre-line-slot_fixed = la normal a { $point } a la recta { ELISION($a) ->
+centre-line-slot = la normal a la ranura de l’enllaç { $joint } per { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
+centre-line-slot_fixed = la normal a la recta { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
-    } per on llisca (enllaç { $joint })
+    } per { $point }, el punt que hi llisca (enllaç { $joint })
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
 centre-field = cap enllaç ni cap recta d’Aronhold–Kennedy no el situa abans de conèixer les velocitats; amb elles, 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 centre-rate = a partir de la velocitat angular trobada més amunt a través { ELISION($line) ->
@@ -550,6 +559,15 @@ fig-step_a = Polígon d’acceleracions d’aquest pas, a escala: des del pol o,
     }, l’un darrere l’altre.
 col-point = punt
 col-what = què és
+what-centre = centre { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }
+what-joint = enllaç { $joint }, { $kind }, entre { $a } i { $b }
+what-body = un punt { ELISION($bodies) ->
+        [vowel] d’{ $bodies }
+       *[other] de { $bodies }
+    }
 note-text = Nota: { $text }
 sec-checks = Comprovacions
 check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->
@@ -567,16 +585,16 @@ how-translates = (es trasllada respecte { ELISION($body) ->
 pair-relation_v = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen l’un sobre l’altre (enllaç { $joint }), de manera que { $equation } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si (enllaç { $joint }), de manera que { $equation } (amb { $radii }):
 pair-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen l’un sobre l’altre (enllaç { $joint }), de manera que { $equation } a cada instant; derivant, amb els radis constants, { $derived } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si (enllaç { $joint }), de manera que { $equation } a cada instant; derivant, amb els radis constants, { $derived } (amb { $radii }):
 drive-relation_a = Derivant, amb els radis constants: { $equation } (amb { $radii }):
 drive-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos i { $line } es trasllada: no llisca sobre { $a } ni sobre { $b }, de manera que tots dos la mouen amb la mateixa velocitat, { $equation } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos i { $line } es trasllada: no llisca sobre { $a } ni sobre { $b }, de manera que les seves perifèries tenen la mateixa velocitat, { $equation } (amb { $radii }):
 check-train = La relació de la transmissió és el producte de les de les seves etapes: { $ratio }; amb les velocitats angulars trobades, la relació val { $value }.
 check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la seva oscil·lació quan la ranura és tangent a la circumferència { ELISION($pin) ->
         [vowel] d’{ $pin }

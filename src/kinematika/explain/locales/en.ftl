@@ -33,10 +33,10 @@ structure-frame = { $body } (fixed)
 structure-dof = Unknowns: { $n } velocity components of { $moving ->
         [one] one moving body
        *[other] { $moving } moving bodies
-    }. The velocity conditions of the joints have rank { $rank }, so the mechanism has { $dof ->
+    }. The joints impose { $rank } independent conditions on them, so the mechanism has { $dof ->
         [one] one degree
        *[other] { $dof } degrees
-    } of freedom (counted by rank); the drivers give { $conditions ->
+    } of freedom; the drivers give { $conditions ->
         [one] one independent condition
        *[other] { $conditions } independent conditions
     }.
@@ -93,6 +93,7 @@ pos-carried = { $point } is carried with { $body }: { $point } = { $at }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
 pos-frame = { $point } is { $x } from { $origin } along { $line } and { $y } across it, to its left: { $point } = { $at }.
+pos-frame_right = { $point } is { $x } from { $origin } along { $line } and { $y } across it, to its right: { $point } = { $at }.
 pos-frame_on = { $point } is { $x } from { $origin } along { $line }: { $point } = { $at }.
 pos-circles = { $point } is at distance { $r1 } from { $c1 } and { $r2 } from { $c2 }: the intersection of two circles, about { $c1 } and about { $c2 }. Of the two points where they meet, it is { $which }: { $point } = { $at }.
 pos-circle_line = { $point } is at distance { $r } from { $c } on the line { $line }: the intersection of a circle about { $c } and a line. Of the two points where they meet, it is { $which }: { $point } = { $at }.
@@ -110,7 +111,7 @@ pos-crossed = the crossed assembly (the links cross)
 
 sec-order = Order of solution
 order-assur = The mechanism is decomposed into its inputs and Assur groups (dyads); each group is solved from bodies already known:
-order-blocks = The mechanism does not decompose from driven cranks or sliders into dyads, so the order comes from the block-triangular form of the velocity equations; each group is found from the bodies already known:
+order-blocks = The mechanism does not decompose from driven cranks or sliders into dyads; each group is found from the bodies already known, in this order:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
         [one] joint
        *[other] joints
@@ -238,6 +239,7 @@ vehicle-line-velocity = the perpendicular to { $sym } at { $point }
 vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg } = { $vq } · { $seg }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel’s plane: { $vp } = { $value }, of magnitude { $speed }.
 vehicle-centre = The centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel: its centre is at infinity, it translates, and every point moves as { $point }.
+vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = { $vq } = { $value }: { $body } does not turn (its centre is at infinity), it translates, and every point moves as { $p }.
 vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $radius } { $spin }, its spin about its axle, so:
 triad-intro = { $body } is held by three binary links, { $links }: no vector equation of a single point has only two unknowns. As textbooks do for a triad, take the Assur point { $point }, where the lines { $l1 } and { $l3 } meet, as a point of { $body }:
 triad-collinear = On each side the two unknown terms are perpendicular to one line ({ $point } lies on { $l1 } and on { $l3 }), so each side has one unknown magnitude: two unknowns, and the polygon closes.
@@ -262,7 +264,14 @@ copy-same = { $body } is joined to the same bodies in the same way, with the sam
         [1] acceleration
        *[other] velocity
     }:
-fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism, with the lines they are found on (dash-dot: Aronhold–Kennedy lines and the perpendiculars to wheels and slots).
+fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism, with the lines they are found on (dash-dot: Aronhold–Kennedy lines{ $normals_n ->
+        [0] {""}
+       *[other] {" "}and { $normals }
+    }).
+fig-normal-wheel = the perpendiculars to the wheels
+fig-normal-slot = the normals to the slots
+fig-normal-slot_fixed = the normals to the lines the points slide on
+fig-normal-normal = the common normals at the contacts
 fig-assur = The Assur point { $point }: the lines { $l1 } and { $l3 } (dashed) drawn on until they meet; { $point } is taken as a point of the ternary link.
 fig-drawn_at = Drawn at { $values }.
 fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point{ $format ->
@@ -331,6 +340,9 @@ fig-step_a = Acceleration polygon of this step, to scale: from the pole o, the a
     }, head to tail.
 col-point = point
 col-what = what it is
+what-centre = centre of { $body }
+what-joint = joint { $joint }, { $kind }, between { $a } and { $b }
+what-body = a point of { $bodies }
 note-text = Note: { $text }
 sec-checks = Checks
 check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } carries), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.

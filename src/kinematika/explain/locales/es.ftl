@@ -33,10 +33,10 @@ structure-frame = { $body } (fijo)
 structure-dof = Incógnitas: { $n } componentes de velocidad de { $moving ->
         [one] un sólido móvil
        *[other] { $moving } sólidos móviles
-    }. Las condiciones de velocidad de los pares tienen rango { $rank }, así que el mecanismo tiene { $dof ->
+    }. Los pares imponen { $rank } condiciones independientes, así que el mecanismo tiene { $dof ->
         [one] un grado
        *[other] { $dof } grados
-    } de libertad (contados por el rango); los datos de movimiento dan { $conditions ->
+    } de libertad; los datos de movimiento dan { $conditions ->
         [one] una condición independiente
        *[other] { $conditions } condiciones independientes
     }.
@@ -93,6 +93,7 @@ pos-carried = { $point } se mueve con { $body }: { $point } = { $at }.
 pos-polar = { $point } está a una distancia { $distance } de { $origin }, a { $angle } del eje x: { $point } = { $at }.
 pos-polar_ref = { $point } está a una distancia { $distance } de { $origin }, a { $angle } de la dirección { $ref }: { $point } = { $at }.
 pos-frame = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su izquierda: { $point } = { $at }.
+pos-frame_right = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su derecha: { $point } = { $at }.
 pos-frame_on = { $point } está a { $x } de { $origin } según { $line }: { $point } = { $at }.
 pos-circles = { $point } está a una distancia { $r1 } de { $c1 } y { $r2 } de { $c2 }: la intersección de dos circunferencias, de centros { $c1 } y { $c2 }. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
 pos-circle_line = { $point } está a una distancia { $r } de { $c } sobre la recta { $line }: la intersección de una circunferencia de centro { $c } y una recta. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
@@ -110,7 +111,7 @@ pos-crossed = la configuración cruzada (las barras se cruzan)
 
 sec-order = Orden de resolución
 order-assur = El mecanismo se descompone en sus entradas y grupos de Assur (díadas); cada grupo se resuelve a partir de sólidos ya conocidos:
-order-blocks = El mecanismo no se descompone en díadas a partir de manivelas o correderas motoras, así que el orden sale de la forma triangular por bloques de las ecuaciones de velocidad; cada grupo se halla a partir de los sólidos ya conocidos:
+order-blocks = El mecanismo no se descompone en díadas a partir de manivelas o correderas motoras; cada grupo se halla a partir de los sólidos ya conocidos, en este orden:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
         [one] par
        *[other] pares
@@ -265,6 +266,7 @@ vehicle-line-velocity = la perpendicular a { $sym } por el punto { $point }
 vehicle-equiprojective = Por la propiedad de equiproyectividad ({ $q } y { $p } son puntos de { $body }), sus velocidades tienen la misma componente según { $seg }: { $vp } · { $seg } = { $vq } · { $seg }. { $p } está en el eje de la rueda { $joint }, así que { $vp } tiene la dirección del plano de la rueda: { $vp } = { $value }, de módulo { $speed }.
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
 vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
+vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }: { $body } no gira (su CIR está en el infinito), se traslada y todos sus puntos se mueven como { $p }.
 vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $radius } { $spin }, su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
@@ -289,7 +291,14 @@ copy-same = { $body } tiene las mismas uniones, con los mismos sólidos, y el mi
         [1] aceleración angular
        *[other] velocidad angular
     }:
-fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo, con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy y perpendiculares a ruedas y ranuras).
+fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo, con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy{ $normals_n ->
+        [0] {""}
+       *[other] {" "}y { $normals }
+    }).
+fig-normal-wheel = las perpendiculares a las ruedas
+fig-normal-slot = las normales a las ranuras
+fig-normal-slot_fixed = las normales a las rectas por las que deslizan los puntos
+fig-normal-normal = las normales comunes en los contactos
 fig-assur = El punto de Assur { $point }: las rectas { $l1 } y { $l3 } (a trazos) prolongadas hasta cortarse; { $point } se toma como punto del eslabón ternario.
 fig-drawn_at = Dibujado con { $values }.
 fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto{ $format ->
@@ -358,6 +367,9 @@ fig-step_a = Polígono de aceleraciones de este paso, a escala: desde el polo o,
     }, uno tras otro.
 col-point = punto
 col-what = qué es
+what-centre = centro de { $body }
+what-joint = par { $joint }, { $kind }, entre { $a } y { $b }
+what-body = un punto de { $bodies }
 note-text = Nota: { $text }
 sec-checks = Comprobaciones
 check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes lleva { $carrier }), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
@@ -366,7 +378,7 @@ how-translates = (se traslada respecto de { $body })
 pair-relation_v = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí (par { $joint }), de modo que { $equation } (con { $radii }):
 pair-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí (par { $joint }), de modo que { $equation } en todo instante; derivando, con los radios constantes, { $derived } (con { $radii }):
 drive-relation_a = Derivando, con los radios constantes: { $equation } (con { $radii }):
-drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos y { $line } se traslada: no desliza sobre { $a } ni sobre { $b }, así que ambos la mueven con la misma velocidad, { $equation } (con { $radii }):
+drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos y { $line } se traslada: no desliza sobre { $a } ni sobre { $b }, así que sus periferias tienen la misma velocidad, { $equation } (con { $radii }):
 check-train = La relación de la transmisión es el producto de las de sus etapas: { $ratio }; con las velocidades angulares halladas, la relación vale { $value }.
 check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extremo de su oscilación cuando la ranura es tangente a la circunferencia de { $pin } (la manivela { $o2 }{ $pin } perpendicular a { $o4 }{ $pin }), donde cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Girando uniformemente, { $crank } barre 360° − 2θ = { $slow } en una carrera y 2θ = { $fast } en la otra: razón de tiempos { $ratio }.
 driver-slide = Dato: la velocidad de deslizamiento en el par { $joint } es { $value }.

@@ -33,10 +33,10 @@ structure-frame = { $body } (finkoa)
 structure-dof = Ezezagunak: { $moving ->
         [one] solido mugikor baten
        *[other] { $moving } solido mugikorren
-    } { $n } abiadura-osagai. Loturen abiadura-baldintzen heina { $rank } da; beraz, mekanismoak { $dof ->
+    } { $n } abiadura-osagai. Loturek { $rank } baldintza independente ezartzen dituzte; beraz, mekanismoak { $dof ->
         [one] askatasun-gradu bat du
        *[other] { $dof } askatasun-gradu ditu
-    } (heinaren bidez zenbatuta); eragileek { $conditions ->
+    }; eragileek { $conditions ->
         [one] baldintza independente bat ematen dute
        *[other] { $conditions } baldintza independente ematen dituzte
     }.
@@ -93,6 +93,7 @@ pos-carried = { $point } puntua { $body } solidoarekin mugitzen da: { $point } =
 pos-polar = { $point } puntua { $origin } puntutik { $distance } distantziara dago, x ardatzarekiko { $angle } angeluan: { $point } = { $at }.
 pos-polar_ref = { $point } puntua { $origin } puntutik { $distance } distantziara dago, { $ref } norabidearekiko { $angle } angeluan: { $point } = { $at }.
 pos-frame = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, ezkerretara: { $point } = { $at }.
+pos-frame_right = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, eskuinetara: { $point } = { $at }.
 pos-frame_on = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar: { $point } = { $at }.
 pos-circles = { $point } puntua { $c1 } puntutik { $r1 } distantziara eta { $c2 } puntutik { $r2 } distantziara dago: bi zirkunferentziaren ebakidura, { $c1 } eta { $c2 } zentrodunak. Ebakitzen diren bi puntuetatik, { $which } da: { $point } = { $at }.
 pos-circle_line = { $point } puntua { $c } puntutik { $r } distantziara dago, { $line } zuzenean: { $c } zentroko zirkunferentzia baten eta zuzen baten ebakidura. Ebakitzen diren bi puntuetatik, { $which } da: { $point } = { $at }.
@@ -110,7 +111,7 @@ pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
 order-assur = Mekanismoa bere sarreretan eta Assur taldeetan (diadetan) deskonposatzen da; talde bakoitza jadanik ezagunak diren solidoetatik ebazten da:
-order-blocks = Mekanismoa ez da diadetan deskonposatzen biradera edo irristagailu eragileetatik abiatuta; beraz, ordena abiadura-ekuazioen bloke-triangeluar formatik dator, eta talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da:
+order-blocks = Mekanismoa ez da diadetan deskonposatzen biradera edo irristagailu eragileetatik abiatuta; talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da, ordena honetan:
 order-item = { $n }. { $kind }: { $bodies } ({ $joints } { $joints_n ->
         [one] lotura
        *[other] loturak
@@ -238,6 +239,7 @@ vehicle-line-velocity = { $sym } abiadurarekiko perpendikularra { $point } puntu
 vehicle-equiprojective = Ekiproiektibitatearen propietatearengatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg } = { $vq } · { $seg }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago: { $vp } = { $value }, { $speed } moduluarekin.
 vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
+vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }: { $body } solidoa ez da biratzen (zentroa infinituan dago), traslatzen da, eta puntu guztiak { $p } bezala mugitzen dira.
 vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $radius } { $spin } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
@@ -262,7 +264,14 @@ copy-same = { $body } solido berberei lotuta dago, { $original } bezala eta erra
         [1] azelerazio angeluar
        *[other] abiadura angeluar
     } berarekin:
-fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak eta gurpilen eta arteken perpendikularrak).
+fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak{ $normals_n ->
+        [0] {""}
+       *[other] {" "}eta { $normals }
+    }).
+fig-normal-wheel = gurpilen perpendikularrak
+fig-normal-slot = arteken perpendikularrak
+fig-normal-slot_fixed = puntuak irristatzen diren zuzenen perpendikularrak
+fig-normal-normal = kontaktuetako normal komunak
 fig-assur = { $point } Assur puntua: { $l1 } eta { $l3 } zuzenak (marra etenez) ebaki arte luzatuta; { $point } barra hirutarraren puntutzat hartzen da.
 fig-drawn_at = Balio hauekin marraztua: { $values }.
 fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
@@ -331,6 +340,12 @@ fig-step_a = Urrats honetako azelerazioen poligonoa, eskalan: o polotik, puntu b
     }, bata bestearen atzetik.
 col-point = puntua
 col-what = zer den
+what-centre = { $body } solidoaren zentroa
+what-joint = { $joint } lotura, { $kind }, { $a } eta { $b } solidoen artean
+what-body = { $bodies } { $bodies_n ->
+        [one] solidoaren
+       *[other] solidoen
+    } puntua
 note-text = Oharra: { $text }
 sec-checks = Egiaztapenak
 check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak { $carrier } solidoak daramatza); beraz, { $formula } = { $radii } = { $train }, { $r1 } eta { $r2 } izanik. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
@@ -339,7 +354,7 @@ how-translates = ({ $body } solidoarekiko traslatzen da)
 pair-relation_v = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen ({ $joint } lotura); beraz, { $equation } ({ $radii } izanik):
 pair-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen ({ $joint } lotura); beraz, { $equation } une oro; deribatuz, erradioak konstanteak direnez, { $derived } ({ $radii } izanik):
 drive-relation_a = Deribatuz, erradioak konstanteak direnez: { $equation } ({ $radii } izanik):
-drive-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira eta { $line } solidoa traslatzen da: ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean; beraz, biek abiadura berarekin mugitzen dute, { $equation } ({ $radii } izanik):
+drive-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira eta { $line } solidoa traslatzen da: ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean; beraz, bien periferiek abiadura bera dute, { $equation } ({ $radii } izanik):
 check-train = Transmisioaren erlazioa etapen erlazioen biderkadura da: { $ratio }; aurkitutako abiadura angeluarrekin, erlazioa { $value } da.
 check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulunkaren mutur batean dago artekak { $pin } puntuaren zirkunferentzia ukitzen duenean ({ $o2 }{ $pin } biradera { $o4 }{ $pin } zuzenarekiko perpendikularra), non cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Abiadura konstantean biratuz, { $crank } solidoak 360° − 2θ = { $slow } egiten ditu kurtsa batean eta 2θ = { $fast } bestean: denbora-erlazioa { $ratio }.
 driver-slide = Datua: { $joint } loturako irristatze-abiadura { $value } da.

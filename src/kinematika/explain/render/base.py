@@ -196,8 +196,10 @@ class Renderer:
         if isinstance(x, Inline):
             return self.inline(x.items)
         if isinstance(x, Described):
-            said = self.wording.point if x.kind == "point" else self.wording.parameter
-            return self.esc(shown_lines(said(x.name, self.lang)))
+            said = (self.wording.point if x.kind == "point" else self.wording.parameter)(x.name, self.lang)
+            if not said and x.fallback is not None:
+                return self.message(x.fallback)
+            return self.esc(shown_lines(said))
         if isinstance(x, (list, tuple)):
             return ", ".join(self.arg(i) for i in x)
         return self.esc(str(x))
