@@ -6,7 +6,7 @@ from __future__ import annotations
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
-from .kinds import kind_key
+from .kinds import kind_key, on_fixed_line
 from .document import Arrow, Drawing, Figure, Inline, Name, Names, Section, Table, Value, body, joint, msg, names, point
 from .order import Step
 
@@ -83,7 +83,7 @@ def _normal_lines(ctx: Ctx) -> list[str]:
     floor), not a slot — so the caption names only the contacts the mechanism has."""
     from ..joints.capabilities import Centre
 
-    kinds = [kind_key(j, ctx.frame) if j.kind.centre_line == "slot" else j.kind.centre_line
+    kinds = [kind_key(j, ctx.frame) if on_fixed_line(j, ctx.frame) else j.kind.centre_line
              for j in ctx.model.joints if j.kind.centre is Centre.NORMAL]
     return list(dict.fromkeys(kinds))
 
