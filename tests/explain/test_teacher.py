@@ -52,18 +52,9 @@ def test_no_markdown_mentions_colours(name, lang, monkeypatch):
 
 
 @pytest.mark.parametrize("name,lang,wrong,right", [
+    # a plural body's name (les rodes, las ruedas) takes a plural verb
     ("seed_c5_e1_cavity", "ca", "*rodes* rodola", "*rodes* rodolen"),
     ("seed_c5_e1_cavity", "es", "*ruedas* rueda ", "*ruedas* ruedan"),
-])
-def test_a_verb_agrees_with_a_plural_body(name, lang, wrong, right):
-    """Catalan and Spanish: a plural body's name (les rodes) takes a plural verb."""
-    _, doc = explained(name)
-    text = render(doc, lang, "md", drawings=False)
-    assert wrong not in text and right in text
-
-
-
-@pytest.mark.parametrize("name,lang,wrong,right", [
     # two wheels (les rodes, feminine) do not slip "l'un sobre l'altre": between themselves
     ("seed_c5_e4_upper_wheel", "ca", "no llisquen l’un sobre l’altre", "no llisquen entre si"),
     # a belt's two pulleys: their rims have one speed (not "both move with the same speed")
@@ -75,7 +66,7 @@ def test_a_verb_agrees_with_a_plural_body(name, lang, wrong, right):
     ("seed_c5_1_5_pulley_block", "ca", "del *sostre i el tram 1*", "del *sostre amb el tram 1*"),
 ])
 def test_the_notes_grammar(name, lang, wrong, right):
-    """Catalan and Basque as the notes write them (issue 30's audit, its grammar points)."""
+    """Catalan, Spanish and Basque as the notes write them (issue 30's audit, its grammar points)."""
     _, doc = explained(name)
     text = render(doc, lang, "md", drawings=False)
     assert wrong not in text and right in text
