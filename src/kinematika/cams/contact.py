@@ -27,7 +27,7 @@ import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from ..curves import Curve
-from .follower import Follower, Translating
+from .follower import Flat, Follower, Translating
 from ..errors import Said
 
 SAMPLES = 2048
@@ -52,7 +52,7 @@ def _touch(follower: Follower, q: np.ndarray) -> np.ndarray:
         room = contact.radius**2 - dx**2
         return np.where(room >= 0, q[..., 1] + np.sqrt(np.maximum(room, 0.0)), -np.inf)
     a, arm = follower.pivot, follower.arm
-    if contact.touches_with_face:
+    if isinstance(contact, Flat):
         r = np.hypot(a - q[..., 0], q[..., 1])
         return np.arctan2(q[..., 1], a - q[..., 0]) + np.arcsin(np.clip(contact.face / r, -1, 1))
     d = q - np.array([a, 0.0])

@@ -15,7 +15,9 @@ Layout (the cam's centre O at the origin; Norton's and Shigley's figures):
 
 Each kind of contact (`Knife`, `Roller`, `Flat`) and each kind of motion (`Translating`,
 `Oscillating`) is a class; code asks them (`touches_with_face`, `radius`, `trace`, `face`,
-`direction`) and never compares names.
+`direction`) and never compares names. The flat face's own dimension (`Flat.face`) belongs
+to that class only: code that reads it narrows the contact by its class
+(`isinstance(contact, Flat)`), which is what a type checker follows.
 """
 from __future__ import annotations
 
@@ -122,7 +124,7 @@ class Oscillating:
     def start(self, base: float) -> float:
         """ψ₀: the arm's angle at s = 0 (roller or knife: |OB| = R_p; flat: the face tangent
         to the base circle)."""
-        if self.contact.touches_with_face:
+        if isinstance(self.contact, Flat):
             return math.asin((base + self.contact.face) / self.pivot)
         a, l, rp = self.pivot, self.arm, self.prime(base)
         return math.acos((a * a + l * l - rp * rp) / (2 * a * l))
@@ -135,7 +137,7 @@ class Oscillating:
     def face(self, s: Jet, base: float) -> tuple[Jet, Jet]:
         """The face: normal n = (sin ψ, cos ψ), at angle π/2 − ψ; distance a sin ψ − f."""
         psi = s + self.start(base)
-        return math.pi / 2 - psi, self.pivot * jet.sin(psi) - self.contact.face
+        return math.pi / 2 - psi, self.pivot * jet.sin(psi) - _setback(self.contact)
 
     def direction(self, point: np.ndarray, s: np.ndarray) -> np.ndarray:
         """The unit velocity of the arm's point at `point` as ψ grows: −J(X − A)/|X − A|
@@ -150,6 +152,12 @@ class Oscillating:
         psi = np.asarray(s) + self.start(base)
         r = np.asarray(point, dtype=float) - np.array([self.pivot, 0.0])
         return -r[..., 0] * np.cos(psi) + r[..., 1] * np.sin(psi)
+
+
+def _setback(contact: Contact) -> float:
+    """How far a flat face is moved towards the cam from the pivot's line (`Flat.face`); a
+    knife edge or a roller has no face: 0."""
+    return contact.face if isinstance(contact, Flat) else 0.0
 
 
 Follower = Translating | Oscillating

@@ -18,7 +18,7 @@ import numpy as np
 from scipy.interpolate import make_interp_spline
 
 from .contact import positions
-from .follower import Follower, Translating
+from .follower import Flat, Follower, Translating
 from .laws import Law
 from .profile import DiscCam, measured
 from .program import Program, Segment
@@ -46,7 +46,7 @@ def base_from(follower: Follower, lowest: float) -> float:
         if contact.touches_with_face:
             return lowest
         return math.hypot(lowest, follower.offset) - contact.radius
-    if contact.touches_with_face:
+    if isinstance(contact, Flat):
         return follower.pivot * math.sin(lowest) - contact.face
     b = np.array([follower.pivot - follower.arm * math.cos(lowest), follower.arm * math.sin(lowest)])
     return float(np.hypot(*b)) - contact.radius

@@ -137,7 +137,11 @@ class Program:
         return found
 
 
-def build(steps: Sequence[tuple], periodic: bool = True) -> Program:
+Step = tuple[Law, float, float, str] | tuple[Law, float, float, str, float]
+"""One step of a program to `build`: (law, span, rise, label), and a polynomial's scale."""
+
+
+def build(steps: Sequence[Step], periodic: bool = True) -> Program:
     """A program from (law, span, rise, label[, scale]) in order, starting at s = 0."""
     segments, start, s0 = [], 0.0, 0.0
     for law, span, rise, label, *scale in steps:

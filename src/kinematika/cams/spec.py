@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Annotated, Any, Literal, Optional, Union
+from typing import TYPE_CHECKING, Annotated, Any, Literal, Optional, Union
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, StrictFloat, StrictInt, ValidationError
@@ -36,13 +36,16 @@ from pydantic import BaseModel, ConfigDict, Field, StrictFloat, StrictInt, Valid
 from ..errors import KinematikaError, Num, Said, pydantic_choices, pydantic_problem, said_of
 from ..text import brief
 from . import laws as law_table
-from .follower import Flat, Follower, Knife, Oscillating, Roller, Translating
+from .follower import Contact, Flat, Follower, Knife, Oscillating, Roller, Translating
 from .profile import DiscCam, PlateCam
-from .program import Program, build
+from .program import Program, Step, build
 
 Number = Union[StrictInt, StrictFloat]
 Positive = Annotated[Number, Field(gt=0)]
-LawName = Literal[tuple(law_table.names())]     # type: ignore[valid-type]  # the laws' table
+if TYPE_CHECKING:
+    LawName = str       # a Literal built from the laws' table at run time: a type checker sees a name
+else:
+    LawName = Literal[tuple(law_table.names())]     # pydantic checks it is one of the table's
 
 
 class Strict(BaseModel):
@@ -154,7 +157,7 @@ def follower(spec: FollowerSpec, where: str = "follower") -> Follower:
     return Oscillating(contact, float(spec.pivot), float(spec.arm or spec.pivot))
 
 
-def _contact(spec: FollowerSpec, where: str) -> Knife | Roller | Flat:
+def _contact(spec: FollowerSpec, where: str) -> Contact:
     if spec.contact == "roller":
         if spec.radius is None:
             raise KinematikaError("schema", "cam-roller-radius", where)
@@ -171,7 +174,8 @@ def program(segments: list[SegmentSpec], angular: bool, periodic: bool, where: s
     length, or degrees for an `angular` (oscillating) follower, made radians."""
     unit = math.pi / 180 if angular else 1.0
     span_unit = math.pi / 180 if periodic else 1.0
-    steps, s = [], 0.0
+    steps: list[Step] = []
+    s = 0.0
     for i, seg in enumerate(segments):
         place = f"{where}[{i}]"
         beta = float(seg.over) * span_unit
@@ -207,7 +211,7 @@ def program(segments: list[SegmentSpec], angular: bool, periodic: bool, where: s
     return built
 
 
-def _polynomial(seg: SegmentSpec, beta: float, rise: float, unit: float, place: str) -> tuple:
+def _polynomial(seg: SegmentSpec, beta: float, rise: float, unit: float, place: str) -> Step:
     """The polynomial through S(0) = 0, S(1) = rise/scale and the given derivatives made
     normalised: S⁽ᵏ⁾ = β^k·(d^k s/dθ^k)/scale (scale = rise, or 1 for a segment that returns to
     where it began)."""
@@ -275,7 +279,7 @@ def _speed(spec: CamFileSpec, plate: bool) -> float:
 def check_layout(moving: Follower, base: float, motion: Program | None, plate: bool) -> None:
     """The follower's dimensions fit the cam (one-line errors naming the follower's key)."""
     if plate:
-        if moving.angular:
+        if not isinstance(moving, Translating):
             raise KinematikaError("schema", "cam-plate-translating", "follower.motion")
         if moving.contact.touches_with_face:
             raise KinematikaError("schema", "cam-plate-flat", "follower.contact")
@@ -289,7 +293,7 @@ def check_layout(moving: Follower, base: float, motion: Program | None, plate: b
                                   radius=float(rp))
         return
     a, l = moving.pivot, moving.arm
-    if moving.contact.touches_with_face:
+    if isinstance(moving.contact, Flat):
         if base + moving.contact.face >= a or base + moving.contact.face <= 0:
             raise KinematikaError("schema", "cam-face-base", "follower.pivot")
     elif not abs(a - l) < rp < a + l:

@@ -6,6 +6,7 @@ the language in use when it is read (`said.language`: English unless the command
 "Errors"."""
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 from ..limits import MESSAGE_CHARS, WHERE_CHARS
@@ -120,7 +121,7 @@ def parser_problem(text: str) -> Said:
     return Said("problem", code=code, text=text)
 
 
-def pydantic_problem(error: dict, lower: bool = False) -> Said:
+def pydantic_problem(error: Mapping[str, Any], lower: bool = False) -> Said:
     """What pydantic found wrong with a value (one of its `errors()`), said by the error's
     type and context (`too_short` and its `min_length`…) in every language the catalogue
     knows it, else in pydantic's own words (`lower`: its first letter small, as English
