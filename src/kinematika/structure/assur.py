@@ -85,11 +85,13 @@ class _Graph:
         """The driven body and its revolute or prismatic joint to the frame."""
         frame = self.model.frame
         if d.kind == "joint":
+            assert d.joint is not None          # a joint-rate driver names its joint (model.build)
             j = self.model.joint(d.joint)
             body = j.b if j.a == frame else j.a if j.b == frame else None
         elif d.kind == "omega" and d.relative_to in (None, frame):
             body = d.body
         elif d.kind == "velocity" and d.relative_to in (None, frame):
+            assert d.point is not None          # a velocity driver names its point (model.build)
             body = d.point.body
         else:
             return None

@@ -12,7 +12,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Optional, Union
 
-from ..model.model import Model
+from ..model.model import Joint, Model
 from .assur import Group
 
 
@@ -55,7 +55,7 @@ class FourBar:
             return "change point (s + l = p + q): the linkage can fold into a line"
         if gap > 0:
             return "non-Grashof (s + l > p + q): triple rocker, no link turns fully"
-        shortest = min(lengths, key=lengths.get)
+        shortest = min(lengths, key=lengths.__getitem__)
         return {"ground": "Grashof double crank (drag link): crank and rocker both turn fully",
                 "crank": "Grashof crank-rocker: the crank turns fully, the rocker oscillates",
                 "coupler": "Grashof double rocker: only the coupler turns fully",
@@ -157,22 +157,28 @@ def identify(model: Model, groups: Optional[list[Group]], points: dict[str, tupl
             or dyad.known != [first.bodies[0], model.frame]):
         return None          # e.g. an inverted slider-crank (RPR): its middle pair has no point
     j1, j2, j3 = (model.joint(j) for j in dyad.joints)
-    o, a, b = points[crank_joint.at], points[j1.at], points[j2.at]
+    o, a, b = points[_pin(crank_joint)], points[_pin(j1)], points[_pin(j2)]
     bodies = {"crank": first.bodies[0], "coupler": dyad.bodies[0], "output": dyad.bodies[1]}
     if dyad.kind == "RRR":
-        o4 = points[j3.at]
+        o4 = points[_pin(j3)]
         fb = FourBar(math.dist(o, o4), math.dist(o, a), math.dist(a, b), math.dist(b, o4), bodies,
                      {"O2": o, "A": a, "B": b, "O4": o4},
-                     {"O2": crank_joint.at, "A": j1.at, "B": j2.at, "O4": j3.at})
+                     {"O2": _pin(crank_joint), "A": _pin(j1), "B": _pin(j2), "O4": _pin(j3)})
         fb.limits = _four_bar_limits(fb)
         return fb
     u = directions[j3.id]                     # RRP: the slider's guide on the frame
     n = (-u[1], u[0])
     offset = (b[0] - o[0]) * n[0] + (b[1] - o[1]) * n[1]
     sc = SliderCrank(math.dist(o, a), math.dist(a, b), offset, bodies, {"O": o, "A": a, "B": b}, u,
-                     {"O": crank_joint.at, "A": j1.at, "B": j2.at})
+                     {"O": _pin(crank_joint), "A": _pin(j1), "B": _pin(j2)})
     sc.limits = _slider_limits(sc)
     return sc
+
+
+def _pin(joint: Joint) -> str:
+    """The point a revolute joint (an R of the groups' letters) turns about: its `at`."""
+    assert joint.at is not None, f"{joint.where}: a revolute joint has its point"
+    return joint.at
 
 
 def transmission_angle(linkage: Linkage, result: Any) -> Any:
