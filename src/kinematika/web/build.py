@@ -437,8 +437,8 @@ def _delete_point(tree: Tree, name: str) -> None:
     shrunk = set()
     for b in list(tree.bodies()):
         body = tree.bodies()[b]
-        listed = body.get("points") if isinstance(body, dict) else body
-        for p in [x for x in listed or [] if str(x) in doomed]:
+        listed = (body.get("points") if isinstance(body, dict) else body) or []
+        for p in [x for x in listed if str(x) in doomed]:
             listed.remove(p)
             shrunk.add(str(b))
     _remove(tree.existing("joints"), lambda j: str(j.get("at")) in doomed or bool(_uses(j.get("along")) & doomed))

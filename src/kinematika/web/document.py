@@ -109,10 +109,10 @@ def flow_yaml(tree: Any, depth: int = 0) -> Any:
             node.fa.set_flow_style()
         return node
     if isinstance(tree, list):
-        node = CommentedSeq(flow_yaml(v, depth + 1) for v in tree)
+        seq = CommentedSeq(flow_yaml(v, depth + 1) for v in tree)
         if depth >= 2 or all(not isinstance(v, (dict, list)) for v in tree):
-            node.fa.set_flow_style()
-        return node
+            seq.fa.set_flow_style()
+        return seq
     return tree
 
 

@@ -82,6 +82,7 @@ def _construction_edits(text: str, fmt: str, root: Any, node: Any, point: str,
                         to: np.ndarray) -> list[Edit]:
     from ..api import as_model
     from ..engine.instant import instantiate
+    from ..model.constructions import CircleLine, InFrame, Polar, TwoCircles
 
     model = as_model(text, "yaml")
     inst = instantiate(model, False)
@@ -94,9 +95,8 @@ def _construction_edits(text: str, fmt: str, root: Any, node: Any, point: str,
         return np.array([inst.num(c) for c in vec], dtype=float)
 
     spec = model.points[point]
-    kind = type(spec).__name__
     edits = Edits(text, root, node, size, fmt == "json")
-    if kind == "Polar":
+    if isinstance(spec, Polar):
         origin = at(spec.origin)
         d = to - origin
         angle = math.degrees(math.atan2(d[1], d[0]))
@@ -105,21 +105,21 @@ def _construction_edits(text: str, fmt: str, root: Any, node: Any, point: str,
             angle -= math.degrees(math.atan2(*(q - p)[::-1]))
         edits.value("distance", edits.length(float(np.hypot(*d))))
         edits.value("angle", f"deg({_short((angle + 180) % 360 - 180, 0.1)})", text=True)
-    elif kind == "InFrame":
+    elif isinstance(spec, InFrame):
         p, q = at(spec.origin), at(spec.toward)
         u = (q - p) / np.linalg.norm(q - p)
         n = np.array([-u[1], u[0]])
         edits.replace(_child(node, "at"), f"[{edits.length(float((to - p) @ u))}, "
                                            f"{edits.length(float((to - p) @ n))}]")
-    elif kind == "TwoCircles":
+    elif isinstance(spec, TwoCircles):
         c1, c2 = (at(c) for c in spec.centers)
-        circles = _child(node, "circles")
+        circles = _key(node, "circles")
         for i, c in enumerate((c1, c2)):
             edits.value_node(circles.value[i].value[1], edits.length(float(np.linalg.norm(to - c))))
         (ux, uy), (vx, vy) = c2 - c1, to - c1
         cross = float(ux * vy - uy * vx)
         edits.side(_child(node, "side"), "left" if cross > 0 else "right", to)
-    elif kind == "CircleLine":
+    elif isinstance(spec, CircleLine):
         centre = at(spec.center)
         line = spec.line
         through = at(line.through)
@@ -127,7 +127,7 @@ def _construction_edits(text: str, fmt: str, root: Any, node: Any, point: str,
         d = d / np.linalg.norm(d)
         onto = through + ((to - through) @ d) * d           # the point stays on its line
         foot = through + ((centre - through) @ d) * d
-        edits.value_node(_child(node, "circle").value[1],
+        edits.value_node(_key(node, "circle").value[1],
                          edits.length(float(np.linalg.norm(onto - centre))))
         edits.side(_child(node, "side"), "ahead" if (onto - foot) @ d >= 0 else "behind", onto)
     else:
@@ -201,6 +201,14 @@ def _child(node: Any, key: str) -> Optional[Any]:
         if getattr(k, "value", None) == key:
             return v
     return None
+
+
+def _key(node: Any, key: str) -> Any:
+    """The value under a key the schema requires of a construction (`circles`, `circle`): the
+    model was read from this same text, so it is there."""
+    found = _child(node, key)
+    assert found is not None, f"a checked construction has its {key!r}"
+    return found
 
 
 def _is_mapping(node: Any) -> bool:

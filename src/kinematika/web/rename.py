@@ -96,8 +96,8 @@ def _rename_body(tree: Tree, old: str, new: str) -> None:
             _rekey(entry["bodies"], old, new)
     notation = tree.root.get("notation")
     if isinstance(notation, dict):
-        for key in [k for k in notation if RATE_KEY.match(str(k))]:
-            rate, inside = RATE_KEY.match(str(key)).groups()
+        for key, rate_key in [(k, m) for k in notation if (m := RATE_KEY.match(str(k)))]:
+            rate, inside = rate_key.groups()
             parts = [new if p == old else p for p in inside.split("/")]
             if "/".join(parts) != inside:
                 _rekey(notation, key, f"{rate}({'/'.join(parts)})")
@@ -180,12 +180,12 @@ def _construction(spec: Any, old: str, new: str) -> None:
         spec["from"] = new
     for key in ("reference", "frame"):
         _replace_in_list(spec.get(key), old, new)
-    circles = spec.get("circles") if isinstance(spec.get("circles"), list) else []
-    for circle in [*circles, spec.get("circle")]:
+    circles = spec.get("circles")
+    for circle in [*(circles if isinstance(circles, list) else []), spec.get("circle")]:
         if isinstance(circle, list) and circle and str(circle[0]) == old:
             circle[0] = new
-    lines = spec.get("lines") if isinstance(spec.get("lines"), list) else []
-    for line in [*lines, spec.get("line")]:
+    lines = spec.get("lines")
+    for line in [*(lines if isinstance(lines, list) else []), spec.get("line")]:
         if isinstance(line, dict):
             if str(line.get("through")) == old:
                 line["through"] = new

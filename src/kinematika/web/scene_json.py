@@ -97,7 +97,7 @@ def mark_data(m: Mark, lift: Any = None) -> dict[str, Any]:
     outline of it)."""
     out: dict[str, Any] = {"kind": m.kind, "points": _floats(m.points), "colour": m.colour,
                            "fill": m.fill, "width": m.width, "zorder": m.zorder, "body": m.moves_with}
-    extra = {"size": m.size, "alpha": m.alpha if m.alpha != 1.0 else None, "hatch": m.hatch or None,
+    extra: dict[str, Any] = {"size": m.size, "alpha": m.alpha if m.alpha != 1.0 else None, "hatch": m.hatch or None,
              "dash": DASH_DOT if m.dash is True else (list(m.dash) if m.dash else None),
              "r": m.r or None, "band": m.band or None, "cap": m.cap or None, "join": m.join or None,
              "shape": m.shape if m.kind == "dot" else None,
@@ -141,15 +141,15 @@ def _lifter(scene: Scene, twin: Scene) -> Any:
             note(name, xy, t.points[p])
         for line, deep in zip(b.skeleton, t.skeleton):
             note(name, line, deep)
-        for shape, deep in zip(b.shapes, t.shapes):
-            if shape.vertices is not None and deep.vertices is not None:
-                note(name, shape.vertices, deep.vertices)
-            if shape.center is not None and deep.center is not None:
-                note(name, shape.center, deep.center)
-    for joint, deep in zip(scene.joints, twin.joints):
-        if joint.at is not None and deep.at is not None:
+        for shape, deep_shape in zip(b.shapes, t.shapes):
+            if shape.vertices is not None and deep_shape.vertices is not None:
+                note(name, shape.vertices, deep_shape.vertices)
+            if shape.center is not None and deep_shape.center is not None:
+                note(name, shape.center, deep_shape.center)
+    for joint, deep_joint in zip(scene.joints, twin.joints):
+        if joint.at is not None and deep_joint.at is not None:
             for body in (joint.a, joint.b):
-                note(body, joint.at, deep.at)
+                note(body, joint.at, deep_joint.at)
 
     def between(body: Optional[str], q: np.ndarray) -> Optional[list]:
         """`q` at the depth of the body's known places, weighted by nearness (a bar's middle
@@ -204,9 +204,9 @@ def _add_model_coordinates(data: dict, scene: Scene, twin: Scene) -> None:
                 plain["vertices_xyz"] = lift(shape.vertices, deep.vertices)
             if shape.center is not None:
                 plain["center_xyz"] = lift(shape.center, deep.center)
-    for joint, deep, plain in zip(scene.joints, twin.joints, data["joints"]):
-        if joint.at is not None and deep.at is not None:
-            plain["at_xyz"] = lift(joint.at, deep.at)
+    for joint, deep_joint, plain in zip(scene.joints, twin.joints, data["joints"]):
+        if joint.at is not None and deep_joint.at is not None:
+            plain["at_xyz"] = lift(joint.at, deep_joint.at)
 
 
 STYLE = {"velocity": style.VELOCITY, "acceleration": style.ACCELERATION, "centre": style.CENTRE,

@@ -34,6 +34,9 @@ def page_strings(lang: str) -> dict[str, Any]:
     messages = {}
     for key in cat.keys():  # noqa: SIM118 - the catalogue's ids in file order (Catalogue.keys)
         message = cat.bundle.get_message(key)
+        if message.value is None:       # a message of attributes only: the page shows none
+            raise KinematikaError("schema", "page-message-error", "strings", key=key, lang=lang,
+                                  problem="the message has no value")
         names = set(VARIABLE.findall(_source(cat.source, key)))
         text, errors = cat.bundle.format_pattern(message.value, {n: f"{{${n}}}" for n in names})
         if errors:
