@@ -135,8 +135,8 @@ def _usage_error(err) -> None:
     from ..text import shown
     from .shared import print_json
 
-    param = getattr(err, "param", None)
-    where = getattr(err, "param_hint", None) or (param.opts[0] if getattr(param, "opts", None) else "")
+    opts = getattr(getattr(err, "param", None), "opts", None)
+    where = getattr(err, "param_hint", None) or (opts[0] if opts else "")
     where = shown(where if isinstance(where, str) else " / ".join(where), 60)
     text = " ".join(err.format_message().split())
     if not text:                      # `kinematika` alone: the help has been shown

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import sys
+from functools import partial
 from pathlib import Path
 from typing import Optional
 
@@ -144,28 +145,28 @@ def _task(model: Path, target, function, motion, point, body, over, points, timi
     given = [x for x in (target, function, motion) if x is not None]
     if len(given) != 1:
         raise KinematikaError("usage", "synthesis-one-target", "--target")
-    options = dict(objective=parse_objective(objective), timing=parse_timing(timing),
-                   requires=parse_requirements(list(require)))
+    posed = partial(make_task, objective=parse_objective(objective), timing=parse_timing(timing),
+                    requires=parse_requirements(list(require)))
     if function is not None:
         if not body:
             raise KinematikaError("usage", "function-needs-output", "--output")
         zero = parse_output_zero(output_zero)
         if function.lower().endswith(".csv"):
             path = Path(function)
-            return make_task("function", path.name, _target_text(path, "--target-function"), "--target-function",
-                             body=body, output_zero=zero, **options)
+            return posed("function", path.name, _target_text(path, "--target-function"), "--target-function",
+                         body=body, output_zero=zero)
         from ..explore.designs import parse_vary
         from ..explore.synthesis import function_targets
 
         span = parse_vary(f"x={over}")
-        return make_task("function", "function.csv", function_targets(function, (span.low, span.high), points),
-                         "--target-function", body=body, output_zero=zero, **options)
+        return posed("function", "function.csv", function_targets(function, (span.low, span.high), points),
+                     "--target-function", body=body, output_zero=zero)
     if output_zero is not None:
         raise KinematikaError("usage", "output-zero-function-only", "--output-zero")
     if not point:
         raise KinematikaError("usage", "path-needs-point", "--point")
     kind, path, option = ("path", target, "--target") if target is not None else ("motion", motion, "--target-motion")
-    return make_task(kind, path.name, _target_text(path, option), option, point=point, **options)
+    return posed(kind, path.name, _target_text(path, option), option, point=point)
 
 
 def _target_text(path: Path, option: str) -> str:
@@ -218,15 +219,15 @@ def plot_study(study: Path = typer.Argument(..., help="a study's rows (.parquet 
 
         table = _read_study(study)
         out = output_file(output, "-o")
-        if (map_ is None) == (pareto is None):
-            raise KinematikaError("usage", "map-or-pareto", "--map")
-        if map_ is not None:
-            names = _split(map_, 3, "--map")
-            plots.metric_map(table, *names, out)
-            return f"drew {names[2]} over {names[0]} and {names[1]} to {out}"
-        names = _split(pareto, 2, "--pareto")
-        front = plots.pareto(table, *names, out, maximize)
-        return f"drew {len(front)} designs on the Pareto front to {out}"
+        if map_ is not None and pareto is None:
+            x, y, metric = _split(map_, 3, "--map")
+            plots.metric_map(table, x, y, metric, out)
+            return f"drew {metric} over {x} and {y} to {out}"
+        if pareto is not None and map_ is None:
+            first, second = _split(pareto, 2, "--pareto")
+            front = plots.pareto(table, first, second, out, maximize)
+            return f"drew {len(front)} designs on the Pareto front to {out}"
+        raise KinematikaError("usage", "map-or-pareto", "--map")
 
     print(guarded(False, work))
 

@@ -7,7 +7,7 @@ import sys
 import threading
 import webbrowser
 from pathlib import Path
-from typing import Optional
+from typing import Any, Optional
 
 import typer
 
@@ -124,7 +124,9 @@ def _run_workers(start, hosts: Optional[list[str]], workers: int, sock: socket.s
                                          "hosts": hosts})
     import inspect
 
-    patience = {"timeout_worker_healthcheck": 120}      # a busy worker is not a dead one
+    # a busy worker is not a dead one; a keyword of newer uvicorns only, so that it is looked up
+    # in the installed one's signature at run time (Any: no version's stubs know it statically)
+    patience: dict[str, Any] = {"timeout_worker_healthcheck": 120}
     patience = patience if "timeout_worker_healthcheck" in inspect.signature(uvicorn.Config).parameters else {}
     config = uvicorn.Config("kinematika.web.server:from_environment", factory=True,
                             workers=workers, log_level="warning", access_log=False,

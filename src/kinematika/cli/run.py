@@ -3,6 +3,7 @@
 fast path (`cli/fast.py`) call these."""
 from __future__ import annotations
 
+import functools
 import sys
 from pathlib import Path
 from typing import Any, Optional
@@ -109,7 +110,7 @@ def _kept(err: KinematikaError, csv: Optional[Path], output: Optional[Path], kin
     partial = err.partial                  # type: ignore[attr-defined]
     if csv is not None:
         guarded(as_json, lambda: _write(partial, csv, "csv", "--csv"))
-    if output is not None:
+    if output is not None and kind is not None:     # a format whenever -o is given (_format)
         guarded(as_json, lambda: _write(partial, output, kind))
     if plot is not None and len(partial):
         guarded(as_json, lambda: _plot(partial, plot, None))
@@ -167,7 +168,7 @@ def simulate_command(model: Path, time: Optional[float] = None, steps: Optional[
         guarded(as_json, lambda: _animation_format(animation))
     for path, option in ((csv, "--csv"), (output, "-o"), (plot, "--plot"), (animation, "--animate")):
         if path is not None:                       # before the motion is followed, not after
-            guarded(as_json, lambda path=path, option=option: output_file(path, option))
+            guarded(as_json, functools.partial(output_file, path, option))
     simulator, result, stopped = guarded(as_json, lambda: _simulated(model, time, steps, method, as_json, how))
     written = []
     if csv is not None:
