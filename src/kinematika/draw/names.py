@@ -25,14 +25,22 @@ def body_numbers(model: Any) -> dict[str, int]:
     return {name: k for k, name in enumerate(order, start=1)}
 
 
-def body_labels(model: Any, lang: Optional[str] = None) -> dict[str, str]:
-    """How the text and the figures write each body in a subscript (ω_3, v_B∈3, I_13): the
-    index the model's notation gives it (`notation: index(wheel1): "1"`, the notes' ω_N,
-    Ω of roda 1), else its number (`body_numbers`)."""
+def body_labels(model: Any, lang: Optional[str] = None, named: bool = True) -> dict[str, str]:
+    """How the text and the figures write each body in a subscript (ω_roda, v_B∈plat): the
+    index the model's notation gives it (`notation: index(wheel1): "1"`, the notes' ω_N),
+    else, when `named`, a subscript read off its name in `lang`
+    (`model.subscripts.named_labels`: ω_roda, ω_{roda sup}), else its number
+    (`body_numbers`): the instant centres (I_13) and the bodies' numbering in the figures
+    keep the numbers (`named` False)."""
     wording = getattr(model, "wording", None)
+    numbers = body_numbers(model)
+    if wording is None:
+        return {name: str(k) for name, k in numbers.items()}
+    if named:
+        return wording.labels(list(numbers), lang)
     out = {}
-    for name, k in body_numbers(model).items():
-        index = wording.index(name, lang) if wording is not None else None
+    for name, k in numbers.items():
+        index = wording.index(name, lang)
         out[name] = index if index is not None else str(k)
     return out
 
@@ -40,7 +48,7 @@ def body_labels(model: Any, lang: Optional[str] = None) -> dict[str, str]:
 def pair_tag(model: Any, a: str, b: str, lang: Optional[str] = None) -> str:
     """The subscript of a pair of bodies, in the numbering's order: 13, 2N, or 2,11 when a
     body's label has more than one character."""
-    numbers, labels = body_numbers(model), body_labels(model, lang)
+    numbers, labels = body_numbers(model), body_labels(model, lang, named=False)
     x, y = sorted((a, b), key=lambda n: numbers[n])
     if all(len(t) == 1 for t in labels.values()):
         return labels[x] + labels[y]

@@ -336,7 +336,7 @@ def _axis_label(model: Any, q: Any, lang: Optional[str]) -> str:
     in another language's figure."""
     from ..model.wording import SCREW_AXIS
 
-    labels = body_labels(model, lang)
+    labels = body_labels(model, lang, named=False)
     word = SCREW_AXIS.get(lang or "en", SCREW_AXIS["en"]).replace(" ", r"\ ")
     rel = q.relative_to if q.relative_to not in (None, model.frame) else None
     tag = labels[q.target] + (f"/{labels[rel]}" if rel else "")

@@ -8,7 +8,7 @@ from ..model.model import PointRef
 from ..questions import QUESTIONS, answer
 from ..questions.curvature import intrinsic
 from .asked import worked
-from .context import Ctx, alpha_sym, omega_sym
+from .context import Ctx, alpha_sym, composed, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Told, Value, msg
 from .terms import KNOWN
 from .words import ExplainWords
@@ -94,7 +94,8 @@ def relative_rates(ctx: Ctx) -> list[Derived]:
         sym, get = (omega_sym, ctx.omega) if kind.unit_kind == "omega" else (alpha_sym, ctx.alpha)
         unit = UNITS[kind.unit_kind]
         out.append(Derived(sym(q.target, rel), [sym(q.target), " − ", sym(rel)], ctx.value(get(q.target, rel), unit),
-                           kind=kind.unit_kind, sense=not ctx.symbolic))
+                           kind=kind.unit_kind, sense=not ctx.symbolic,
+                           lead=composed(sym(q.target), sym(q.target, rel), sym(rel), q.target == ctx.frame)))
     return out
 
 
