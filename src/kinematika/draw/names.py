@@ -69,18 +69,20 @@ def _roman(name: str) -> str:
 
 
 def subscript(letter: str, name: str, body: Optional[str] = None,
-              relative: Optional[str] = None) -> str:
-    """`letter` with the subscript `name` (a point or a tag), `∈body` and `/relative`:
-    $v_{\\mathrm{B}∈3/2}$. A name mathtext cannot take is written plainly: v(name∈3/2)."""
-    tail = (f"∈{body}" if body is not None else "") + (f"/{relative}" if relative is not None
+              relative: Optional[str] = None, rel_word: str = "rel") -> str:
+    """`letter` with the subscript `name` (a point or a tag), `∈body` and the reference
+    `relative` after the language's word for a relative motion (`rel_word`: rel, REL, erl;
+    never a slash, which reads as a fraction): $v_{\\mathrm{B}∈3\\ rel\\ 2}$. A name
+    mathtext cannot take is written plainly: v(name∈3 rel 2)."""
+    tail = (f"∈{body}" if body is not None else "") + (f" {rel_word} {relative}" if relative is not None
                                                        else "")
     if not _SIMPLE.match(name):
         return f"{letter}({plain(name)}{tail})"
     math = _roman(name)
     if body is not None:
-        math += r"{\in}" + str(body)
+        math += r"{\in}" + _roman(str(body))
     if relative is not None:
-        math += "/" + str(relative)
+        math += r"\ " + _roman(rel_word) + r"\ " + _roman(str(relative))
     return "$" + letter + "_{" + math + "}$"
 
 
@@ -93,7 +95,9 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
     rel = None if relative_to in (None, model.frame) else labels[relative_to]
     if body is not None and rel is None and model.share_motion(point, model.carriers(point)):
         body = None          # a relative motion names its body always (v_P∈3/2, as the text does)
-    return subscript(letter, point, None if body is None else labels[body], rel)
+    from ..model.wording import part_subscript
+
+    return subscript(letter, point, None if body is None else labels[body], rel, part_subscript("sub.rel", lang))
 
 
 def contact_name(model: Any, joint_id: str) -> str:

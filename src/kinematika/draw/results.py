@@ -298,7 +298,7 @@ def _kennedy_line(num: Numbers, c1: dict, c2: dict, target: dict):
 # curvature -------------------------------------------------------------------------------
 def _curvatures(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None) -> None:
     for q in drawn_questions(sol.model).circles:
-        name = point_symbol("ρ", sol.model, q.target.point, q.target.body, q.relative_to, lang)
+        name = point_symbol("ℜ", sol.model, q.target.point, q.target.body, q.relative_to, lang)
         value = answer(sol, q)
         if value.get("rest"):
             scene.notes.append(f"{bare(name)} is at rest: no path curvature")

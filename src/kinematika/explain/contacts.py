@@ -26,7 +26,7 @@ from .asked import worked
 from .context import Ctx, composed, omega_sym, read_off, segment
 from .document import Ann, Derived, Equation, Name, Section, Sym, Term, Value, joint as joint_name, msg
 from .kinds import rolls
-from .terms import point_term, rotation_terms
+from .terms import pair_name, point_term, rotation_terms
 
 KNOWN = (Ann("M"), Ann("D"))
 FOUND = (Ann("?"), Ann("?"))
@@ -103,7 +103,7 @@ class Bar:
         """The bar's ω × QP (or its normal and tangential accelerations), by value."""
         ctx, r = self.ctx, self.ctx.r(q, p)
         seg, back = segment(q, p), segment(p, q)
-        name = segment(p, q)
+        name = pair_name(p, q)
         if level == "v":
             mag = Ann("?") if unknown else Ann("M", [self.sym, f"·{seg}"])
             return [Term(Sym("v", name), ctx.clean(ctx.space.cross(self.omega, r), "speed"), mag, Ann("perp", seg),
