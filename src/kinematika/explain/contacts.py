@@ -166,7 +166,7 @@ def geometric_blocks(ctx: Ctx, j, done: set, pair: Optional[tuple[str, str]] = N
     bar = Bar(ctx, j)
     w = omega_sym(b, a)
     rel = Derived(w, [omega_sym(b), " − ", omega_sym(a)], ctx.value(ctx.omega(b, a), "rate"),
-                  lead=composed(omega_sym(b), w, omega_sym(a), b == ctx.frame))
+                  lead=None if a == ctx.frame else composed(omega_sym(b), w, omega_sym(a), b == ctx.frame))
     out: list = []
     if "rule" not in done:
         done.add("rule")
