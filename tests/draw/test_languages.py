@@ -66,7 +66,7 @@ def test_the_four_bar_by_hand_is_what_the_figures_round():
 def test_a_figure_in_a_comma_language_writes_decimal_commas(lang):
     sol = solve(FOUR_BAR)
     shown = texts(svg(sol, centres=True, lang=lang))
-    assert r"$v_{\mathrm{B}}$ = 9,25" in shown and r"$v_{\mathrm{B}{\in}3/2}$ = 41,8" in shown     # B∈3 seen from 2
+    assert r"$v_{\mathrm{B}}$ = 9,25" in shown and r"$v_{\mathrm{B}{\in}\mathrm{3}\ \mathrm{rel}\ \mathrm{2}}$ = 41,8" in shown     # B∈3 seen from 2
     assert r"$I_{\mathrm{13}}$ at (0; 23,1)" in shown        # components parted as in the text
     assert not [t for t in shown if re.search(r"\d\.\d", t)]
 

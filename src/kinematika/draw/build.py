@@ -72,7 +72,7 @@ def _values_note(values: dict, given: dict, lang: Optional[str] = None) -> str:
 def _bodies(inst: Instant, num: Numbers, lang: Optional[str] = None) -> dict[str, BodyView]:
     model = inst.model
     out = {}
-    labels = body_labels(model, lang)
+    labels = body_labels(model, lang, named=False)      # the figures' numbering (3)
     for name, number in body_numbers(model).items():
         body = model.bodies[name]
         frame = name == model.frame

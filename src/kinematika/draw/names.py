@@ -25,14 +25,22 @@ def body_numbers(model: Any) -> dict[str, int]:
     return {name: k for k, name in enumerate(order, start=1)}
 
 
-def body_labels(model: Any, lang: Optional[str] = None) -> dict[str, str]:
-    """How the text and the figures write each body in a subscript (ω_3, v_B∈3, I_13): the
-    index the model's notation gives it (`notation: index(wheel1): "1"`, the notes' ω_N,
-    Ω of roda 1), else its number (`body_numbers`)."""
+def body_labels(model: Any, lang: Optional[str] = None, named: bool = True) -> dict[str, str]:
+    """How the text and the figures write each body in a subscript (ω_roda, v_B∈plat): the
+    index the model's notation gives it (`notation: index(wheel1): "1"`, the notes' ω_N),
+    else, when `named`, a subscript read off its name in `lang`
+    (`model.subscripts.named_labels`: ω_roda, ω_{roda sup}), else its number
+    (`body_numbers`): the instant centres (I_13) and the bodies' numbering in the figures
+    keep the numbers (`named` False)."""
     wording = getattr(model, "wording", None)
+    numbers = body_numbers(model)
+    if wording is None:
+        return {name: str(k) for name, k in numbers.items()}
+    if named:
+        return wording.labels(list(numbers), lang)
     out = {}
-    for name, k in body_numbers(model).items():
-        index = wording.index(name, lang) if wording is not None else None
+    for name, k in numbers.items():
+        index = wording.index(name, lang)
         out[name] = index if index is not None else str(k)
     return out
 
@@ -40,7 +48,7 @@ def body_labels(model: Any, lang: Optional[str] = None) -> dict[str, str]:
 def pair_tag(model: Any, a: str, b: str, lang: Optional[str] = None) -> str:
     """The subscript of a pair of bodies, in the numbering's order: 13, 2N, or 2,11 when a
     body's label has more than one character."""
-    numbers, labels = body_numbers(model), body_labels(model, lang)
+    numbers, labels = body_numbers(model), body_labels(model, lang, named=False)
     x, y = sorted((a, b), key=lambda n: numbers[n])
     if all(len(t) == 1 for t in labels.values()):
         return labels[x] + labels[y]
@@ -61,18 +69,20 @@ def _roman(name: str) -> str:
 
 
 def subscript(letter: str, name: str, body: Optional[str] = None,
-              relative: Optional[str] = None) -> str:
-    """`letter` with the subscript `name` (a point or a tag), `∈body` and `/relative`:
-    $v_{\\mathrm{B}∈3/2}$. A name mathtext cannot take is written plainly: v(name∈3/2)."""
-    tail = (f"∈{body}" if body is not None else "") + (f"/{relative}" if relative is not None
+              relative: Optional[str] = None, rel_word: str = "rel") -> str:
+    """`letter` with the subscript `name` (a point or a tag), `∈body` and the reference
+    `relative` after the language's word for a relative motion (`rel_word`: rel, REL, erl;
+    never a slash, which reads as a fraction): $v_{\\mathrm{B}∈3\\ rel\\ 2}$. A name
+    mathtext cannot take is written plainly: v(name∈3 rel 2)."""
+    tail = (f"∈{body}" if body is not None else "") + (f" {rel_word} {relative}" if relative is not None
                                                        else "")
     if not _SIMPLE.match(name):
         return f"{letter}({plain(name)}{tail})"
     math = _roman(name)
     if body is not None:
-        math += r"{\in}" + str(body)
+        math += r"{\in}" + _roman(str(body))
     if relative is not None:
-        math += "/" + str(relative)
+        math += r"\ " + _roman(rel_word) + r"\ " + _roman(str(relative))
     return "$" + letter + "_{" + math + "}$"
 
 
@@ -85,7 +95,9 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
     rel = None if relative_to in (None, model.frame) else labels[relative_to]
     if body is not None and rel is None and model.share_motion(point, model.carriers(point)):
         body = None          # a relative motion names its body always (v_P∈3/2, as the text does)
-    return subscript(letter, point, None if body is None else labels[body], rel)
+    from ..model.wording import part_subscript
+
+    return subscript(letter, point, None if body is None else labels[body], rel, part_subscript("sub.rel", lang))
 
 
 def contact_name(model: Any, joint_id: str) -> str:

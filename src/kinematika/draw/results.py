@@ -298,7 +298,7 @@ def _kennedy_line(num: Numbers, c1: dict, c2: dict, target: dict):
 # curvature -------------------------------------------------------------------------------
 def _curvatures(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None) -> None:
     for q in drawn_questions(sol.model).circles:
-        name = point_symbol("ρ", sol.model, q.target.point, q.target.body, q.relative_to, lang)
+        name = point_symbol("ℜ", sol.model, q.target.point, q.target.body, q.relative_to, lang)
         value = answer(sol, q)
         if value.get("rest"):
             scene.notes.append(f"{bare(name)} is at rest: no path curvature")
@@ -336,7 +336,7 @@ def _axis_label(model: Any, q: Any, lang: Optional[str]) -> str:
     in another language's figure."""
     from ..model.wording import SCREW_AXIS
 
-    labels = body_labels(model, lang)
+    labels = body_labels(model, lang, named=False)
     word = SCREW_AXIS.get(lang or "en", SCREW_AXIS["en"]).replace(" ", r"\ ")
     rel = q.relative_to if q.relative_to not in (None, model.frame) else None
     tag = labels[q.target] + (f"/{labels[rel]}" if rel else "")

@@ -1,5 +1,5 @@
 """The model's questions answered, and the curvature of paths worked out (seed 002):
-a = aᵗ + aⁿ with aᵗ ∥ v and aⁿ ⊥ v, then ρ = v² / |aⁿ|."""
+a = aᵗ + aⁿ with aᵗ ∥ v and aⁿ ⊥ v, then ℜ = v² / |aⁿ| (the notes' ℜ: ρ is a circle's radius)."""
 from __future__ import annotations
 
 from typing import Any
@@ -8,7 +8,7 @@ from ..model.model import PointRef
 from ..questions import QUESTIONS, answer
 from ..questions.curvature import intrinsic
 from .asked import worked
-from .context import Ctx, alpha_sym, omega_sym
+from .context import Ctx, alpha_sym, composed, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Told, Value, msg
 from .terms import KNOWN
 from .words import ExplainWords
@@ -94,7 +94,8 @@ def relative_rates(ctx: Ctx) -> list[Derived]:
         sym, get = (omega_sym, ctx.omega) if kind.unit_kind == "omega" else (alpha_sym, ctx.alpha)
         unit = UNITS[kind.unit_kind]
         out.append(Derived(sym(q.target, rel), [sym(q.target), " − ", sym(rel)], ctx.value(get(q.target, rel), unit),
-                           kind=kind.unit_kind, sense=not ctx.symbolic))
+                           kind=kind.unit_kind, sense=not ctx.symbolic,
+                           lead=composed(sym(q.target), sym(q.target, rel), sym(rel), q.target == ctx.frame)))
     return out
 
 
@@ -104,7 +105,7 @@ def curvature_section(ctx: Ctx) -> Section | None:
     if not asked:
         return None
     sec = Section(msg("sec.curvature"))
-    sec.add(msg("curvature.intro", rho=Inline([Sym("ρ", vector=False), " = |", Sym("v"), "|² / |",
+    sec.add(msg("curvature.intro", rho=Inline([Sym("ℜ", vector=False), " = |", Sym("v"), "|² / |",
                                                Sym("a", sup="n"), "|"])))
     for q in asked:
         sec.blocks += curvature_steps(ctx, q)
@@ -113,7 +114,7 @@ def curvature_section(ctx: Ctx) -> Section | None:
 
 def curvature_steps(ctx: Ctx, q) -> list:
     """The curvature of a point's path as the notes work it out: its velocity, then a = aᵗ + aⁿ
-    with aᵗ ∥ v and aⁿ ⊥ v (the solver's split), then ρ = |v|² / |aⁿ| and the centre of
+    with aᵗ ∥ v and aⁿ ⊥ v (the solver's split), then ℜ = |v|² / |aⁿ| and the centre of
     curvature; a point at rest or a straight path (aⁿ = 0) is said so instead."""
     ref: PointRef = q.target
     rel = q.relative_to
@@ -135,7 +136,7 @@ def curvature_steps(ctx: Ctx, q) -> list:
         out.append(msg("curvature.straight", point=Name(label)))
         return out
     radius = Value(ctx.clean(result["radius"], "len"), "len")
-    out.append(Derived(Sym("ρ", label, vector=False), ["|", Sym("v", label), "|² / |", Sym("a", label, "n"), "|"],
+    out.append(Derived(Sym("ℜ", label, vector=False), ["|", Sym("v", label), "|² / |", Sym("a", label, "n"), "|"],
                        radius, kind="radius", source=normal, arm=ctx.clean(v, "speed")))
     out.append(msg("curvature.centre", point=Name(label), centre=Value(ctx.clean(result["center"], "len"), "len")))
     return out

@@ -135,8 +135,8 @@ def relative_convention(doc: Document) -> Optional[Msg]:
             m = RELATIVE.match(t.sym.sub)
             if m and m.group(2) in numbers and m.group(3) in numbers:
                 point_, b, a = m.groups()
-                return msg("data.relative", v=Sym("v", t.sym.sub), point=Name(point_), b=Name(b, "index"),
-                           a=Name(a, "index"), w=omega_sym(b, a))
+                return msg("data.relative", v=Sym("v", t.sym.sub), point=Name(point_), b=Name(b, "label"),
+                           a=Name(a, "label"), w=omega_sym(b, a))
     return None
 
 

@@ -23,10 +23,10 @@ from typing import Any, Optional
 
 from ..algebra.vectors import add, scale, sub
 from .asked import worked
-from .context import Ctx, omega_sym, segment
+from .context import Ctx, composed, omega_sym, read_off, segment
 from .document import Ann, Derived, Equation, Name, Section, Sym, Term, Value, joint as joint_name, msg
 from .kinds import rolls
-from .terms import point_term, rotation_terms
+from .terms import pair_name, point_term, rotation_terms
 
 KNOWN = (Ann("M"), Ann("D"))
 FOUND = (Ann("?"), Ann("?"))
@@ -103,7 +103,7 @@ class Bar:
         """The bar's ω × QP (or its normal and tangential accelerations), by value."""
         ctx, r = self.ctx, self.ctx.r(q, p)
         seg, back = segment(q, p), segment(p, q)
-        name = segment(p, q)
+        name = pair_name(p, q)
         if level == "v":
             mag = Ann("?") if unknown else Ann("M", [self.sym, f"·{seg}"])
             return [Term(Sym("v", name), ctx.clean(ctx.space.cross(self.omega, r), "speed"), mag, Ann("perp", seg),
@@ -130,7 +130,7 @@ class Bar:
             out.append(Equation(end, [[start] + turn], level, figure=False))
             sym = self.sym if level == "v" else self.alpha_sym
             value = self.omega if level == "v" else self.alpha
-            out.append(Derived(sym, [turn[-1].sym, f" / {segment(self.c1, self.c2)}"],
+            out.append(Derived(sym, read_off(ctx, turn[-1].sym, segment(self.c1, self.c2), value),
                                Value(ctx.clean(value, "rate" if level == "v" else "rate2"),
                                      "rate" if level == "v" else "rate2"),
                                "", "omega" if level == "v" else "alpha", not ctx.symbolic, turn[-1],
@@ -165,7 +165,8 @@ def geometric_blocks(ctx: Ctx, j, done: set, pair: Optional[tuple[str, str]] = N
     b, a = pair or (j.b, j.a)
     bar = Bar(ctx, j)
     w = omega_sym(b, a)
-    rel = Derived(w, [omega_sym(b), " − ", omega_sym(a)], ctx.value(ctx.omega(b, a), "rate"))
+    rel = Derived(w, [omega_sym(b), " − ", omega_sym(a)], ctx.value(ctx.omega(b, a), "rate"),
+                  lead=None if a == ctx.frame else composed(omega_sym(b), w, omega_sym(a), b == ctx.frame))
     out: list = []
     if "rule" not in done:
         done.add("rule")

@@ -201,6 +201,33 @@ def segment(q: str, p: str) -> Segment:
     return seg
 
 
+def read_off(ctx: "Ctx", term: Sym, length: Any, value: Any) -> list:
+    """How a rate is read off a rotation term, as the notes write it: a scalar relation of
+    magnitudes with the sense as a sign, ω = −|v_H-J| / JH (clockwise) or α = |aᵗ| / r,
+    never a vector divided by a vector (v_{O-I17} / I17-O)."""
+    sign = _sign(ctx, value)
+    return (["−"] if sign < 0 else []) + ["|", term, "| / ", length]
+
+
+def _sign(ctx: "Ctx", value: Any) -> int:
+    """The sign of a scalar as its value is written: a formula's leading minus (−v/R_roda,
+    whatever the symbols' values), a number's sign; 0 when it cannot be read."""
+    if getattr(value, "free_symbols", None):
+        return -1 if value.could_extract_minus_sign() else 1
+    try:
+        x = float(ctx.num(value))
+    except (TypeError, ValueError):
+        return 0
+    return -1 if x < 0 else (1 if x > 0 else 0)
+
+
+def composed(absolute: Sym, relative: Sym, drag: Sym, frame: bool = False) -> list:
+    """The composition of rotations in the notes' direction, relative + drag = absolute,
+    written before a relative rate is read off it: `ω_b = ω_b REL a + ω_a ⇒ ` (`0 = …` when
+    the body is the frame)."""
+    return (["0" if frame else absolute, " = ", relative, " + ", drag, " ⇒ "])
+
+
 def omega_sym(body: str, relative_to: Optional[str] = None, vector: bool = False) -> Sym:
     """ω of `body` (relative to another body when given); a vector in 3D."""
     sub_ = body if relative_to is None else f"{body}/{relative_to}"

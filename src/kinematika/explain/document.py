@@ -154,6 +154,7 @@ class Derived:
     source: Optional[Term] = None                 # the term it is read from: ω × r or α × r
     arm: Optional[tuple] = None                   # r, with source.value = value k × r
     remark: Optional[Msg] = None                  # why, after the value: ω_2 = 0 (its centre is at infinity)
+    lead: Optional[list] = None                   # written before: the composition it is read off (ω_b = ω_b REL a + ω_a ⇒)
 
 
 @dataclass

@@ -28,7 +28,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, Optional
 
-from .context import Ctx, alpha_sym, omega_sym
+from .context import Ctx, alpha_sym, composed, omega_sym
 from .document import Derived, Inline, Name, Sym, Value, msg
 from .kinds import pins, rolls, welds
 
@@ -184,7 +184,8 @@ def _pair(ctx: Ctx, d: Pair, a: str, b: str, level: str) -> list:
     else:
         out = [msg("pair.relation", equation=relation, derived=derived, **names)]
     if k is not None:
-        out.append(Derived(r_a, [sym(a), " − ", sym(d.holder)], ctx.value(get(a, d.holder), unit), "", kind, sense))
+        out.append(Derived(r_a, [sym(a), " − ", sym(d.holder)], ctx.value(get(a, d.holder), unit), "", kind, sense,
+                           lead=composed(sym(a), r_a, sym(d.holder), a == ctx.frame)))
     ratio = simplified(ctx, d.sign * ra / rb)
     one = ctx.is_zero(ratio - 1, "") or ctx.is_zero(ratio + 1, "")
     how = ([] if ctx.is_zero(ratio - 1, "") else ["−"]) + [r_a] if one else [Value(ratio, ""), " · ", r_a]
@@ -212,7 +213,8 @@ def _relation(ctx: Ctx, d: Drive, a: str, b: str, level: str) -> list:
     sense = not ctx.symbolic
     if k is not None:                  # ω_a = ω_a/K + ω_K: the known wheel's rate seen from K
         how = ["−", sym(d.holder)] if a == ctx.frame else [sym(a), " − ", sym(d.holder)]
-        out.append(Derived(rel_a, how, ctx.value(get(a, d.holder), unit), "", kind, sense))    # relative: no body's own
+        out.append(Derived(rel_a, how, ctx.value(get(a, d.holder), unit), "", kind, sense,    # relative: no body's own
+                           lead=composed(sym(a), rel_a, sym(d.holder), a == ctx.frame)))
     ratio = simplified(ctx, d.sign * ra / rb)
     out.append(Derived(rel_b, [Value(ratio, ""), " · ", rel_a], ctx.value(get(b, d.holder), unit),
                        b if k is None else "", kind, sense))

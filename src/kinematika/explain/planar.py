@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Optional
 
 from ..model.model import Joint, PointPair
-from .context import Ctx, alpha_sym, omega_sym, segment
+from .context import Ctx, alpha_sym, omega_sym, read_off, segment
 from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .group import centre_site, group_blocks, still_contact
 from .higher import higher_pair_steps
@@ -339,7 +339,7 @@ class PlanarSteps:
             sym, value = omega_sym(body), ctx.omega(body)
         else:
             sym, value = alpha_sym(body), ctx.alpha(body)
-        return Derived(sym, [term.sym, f" / {seg}"], ctx.value(value, LEVEL_UNIT[self.level]), body,
+        return Derived(sym, read_off(ctx, term.sym, seg, value), ctx.value(value, LEVEL_UNIT[self.level]), body,
                        "omega" if self.level == "v" else "alpha", not ctx.symbolic, term,
                        ctx.clean(ctx.r(q, p), "len"))
 

@@ -26,12 +26,24 @@ def point_term(ctx: Ctx, level: str, point: str, body: str, known: bool = True) 
                 unknown=not known, kind="point")
 
 
+# the pairs of points a relative velocity's subscript does not spell as one word: the C5
+# notes' AB is the absolute motion (v_AB(P), Ω_AB), so A relative to B is written v_{A-B}
+RESERVED_PAIRS = {"AB"}
+
+
+def pair_name(p: str, q: str) -> str:
+    """The subscript of p's motion about q on one body (v_BA, v_{O2-A}); apart, v_{A-B},
+    where the two names would spell the notes' word for the absolute motion."""
+    name = segment(p, q)
+    return f"{p}-{q}" if str(name) in RESERVED_PAIRS else name
+
+
 def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: bool,
                    relative_to: str | None = None) -> list[Term]:
     """ω × QP at the velocity level; ω × (ω × QP) and α × QP at the acceleration level."""
     sp, r, seg, back = ctx.space, ctx.r(q, p), segment(q, p), segment(p, q)
     w = omega_sym(body, relative_to, vector=not ctx.planar)
-    name = segment(p, q) + (f",{body}/{relative_to}" if relative_to else "")
+    name = pair_name(p, q) + (f",{body}/{relative_to}" if relative_to else "")
     if level == "v":
         value = sp.cross(ctx.omega(body, relative_to), r)
         mag = Ann("?") if unknown else Ann("M", [w, f"·{seg}"] if ctx.planar else "")

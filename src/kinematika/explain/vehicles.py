@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Optional
 
-from .context import Ctx, omega_sym
+from .context import Ctx, omega_sym, read_off
 from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, msg
 from .kinds import knife_edge, pin_only
 
@@ -267,7 +267,7 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
         target = Term(Sym("v", ctx.point_label(p, b)), value, Ann("M"), Ann("D"), kind="point")
         out.append(Equation(target, [[term]], "v", ctx.ref(p, b), figure=False))
         if k == 0:
-            out.append(Derived(w, [Sym("v", f"{p}I"), " / ", arm], ctx.value(ctx.omega(b), "rate"), b,
+            out.append(Derived(w, read_off(ctx, Sym("v", f"{p}I"), arm, ctx.omega(b)), ctx.value(ctx.omega(b), "rate"), b,
                                "omega", not ctx.symbolic, term, ctx.clean(_arm(ctx, b, p), "len")))
     return out
 

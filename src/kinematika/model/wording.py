@@ -102,6 +102,15 @@ class Wording:
         spelt = self.indices.get(body)
         return None if spelt is None else spelt.get(lang or "", spelt.get("*"))
 
+    def labels(self, order: list[str], lang: Optional[str]) -> dict[str, str]:
+        """Each body of `order` (the notes' numbering, the frame first) as the symbols write it
+        in `lang`: its index (`index`), else a subscript read off its name in `lang`
+        (`subscripts.named_labels`: ω_roda, ω_{roda sup}), else its number."""
+        from .subscripts import named_labels
+
+        given = {b: i for b in order if (i := self.index(b, lang)) is not None}
+        return named_labels(order, self.bodies.get(lang or "", {}), lang, given)
+
     def symbol(self, key: str, lang: Optional[str]) -> Optional[str]:
         """How `key` is written in `lang`: a parameter's name, or `omega(body)`,
         `omega(body/other)`, `alpha(…)`; None when the model does not say."""

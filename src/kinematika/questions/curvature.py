@@ -133,8 +133,8 @@ class Curvature(QuestionKind):
         steps.path_curvature(q)
 
     def part(self, words: Words, q: Asked, key: str, sub: Optional[str]) -> Any:
-        """ρ_C, a length, not a vector."""
-        return words.sym("ρ", words.point(q), vector=False) if key == "radius" else None
+        """ℜ_C (the notes' radius of curvature; ρ is a circle's radius), a length, not a vector."""
+        return words.sym("ℜ", words.point(q), vector=False) if key == "radius" else None
 
 
 KIND = Curvature()

@@ -227,7 +227,9 @@ class Renderer:
             return self.wording.joint(n.text, self.lang)
         if n.kind == "point" and "∈" in n.text:          # O∈wheels as the symbols write it: O∈3
             return self.numbered(Sym("", n.text))
-        if n.kind == "index":                            # a body's label in the structure's table
+        if n.kind == "index":                            # a body's number in the structure's table
+            return self.numbers().get(n.text, n.text)
+        if n.kind == "label":                            # a body as its symbols write it (ω_roda)
             return self.labels().get(n.text, n.text)
         return n.text
 
@@ -267,15 +269,33 @@ class Renderer:
 
     def labels(self) -> dict[str, str]:
         """Each body as the symbols write it: the index the model's notation gives it in this
-        language (ω_N, ω_1 for wheel 1), else its number (ω_3), as the figures write it."""
+        language (ω_N, ω_1 for wheel 1), else a subscript read off its name in this language
+        (ω_roda, ω_{roda sup}: `model.subscripts`), else its number (ω_3), as the figures
+        write it."""
         if not hasattr(self, "_labels"):
-            self._labels = {b: self.wording.index(b, self.lang) or str(k) for b, k in self.doc.numbers.items()}
+            order = sorted(self.doc.numbers, key=self.doc.numbers.get)
+            self._labels = self.wording.labels(order, self.lang)
         return self._labels
+
+    def numbers(self) -> dict[str, str]:
+        """Each body as the instant centres (I_13) and the structure's table number it: the
+        index the model's notation gives it, else its number."""
+        if not hasattr(self, "_numbers"):
+            self._numbers = {b: self.wording.index(b, self.lang) or str(k) for b, k in self.doc.numbers.items()}
+        return self._numbers
+
+    def relative(self, body: str, other: str) -> str:
+        """The subscript of a quantity of `body` relative to `other` (both labels): the
+        body, then the language's word for the relative motion (the notes' REL, the slides'
+        rel, erl) and the reference, `mòb REL braç`; never a slash, which reads as a
+        fraction."""
+        return f"{body} {part_subscript('sub.rel', self.lang)} {other}"
 
     def numbered(self, s: Sym) -> str:
         """A symbol's subscript with its bodies by their labels (`labels`), as the notes and the
-        figures write them: ω_3, ω_3/2, v_B∈3, v_A∈2/3, a_J∈3/1, I_13 (I_2,11 once a label has
-        two characters)."""
+        figures write them: ω_roda, ω_{mòb REL braç} (relative to another body), v_B∈plat,
+        v_{A∈N REL M}, a_J∈3; the instant centres by their numbers, I_13 (I_2,11 once a label
+        has two characters)."""
         nums, labels = self.doc.numbers, self.labels()
         if not nums or not s.sub or s.fixed:
             return s.sub
@@ -285,12 +305,20 @@ class Renderer:
             if not all(p in nums for p in parts):
                 return s.sub
             if s.base == "I":
+                numbers = self.numbers()
                 ks = sorted(parts, key=nums.get)
-                one = all(len(t) == 1 for t in labels.values())
-                return ("" if one else ",").join(labels[k] for k in ks)
+                one = all(len(t) == 1 for t in numbers.values())
+                return ("" if one else ",").join(numbers[k] for k in ks)
+            if sep == "/" and len(parts) == 2:
+                return self.relative(labels[parts[0]], labels[parts[1]])
             return sep.join(labels[p] for p in parts)
         head, *rest = re.split(r"([∈/,])", s.sub)
-        return head + "".join(labels.get(t, t) if i % 2 else t for i, t in enumerate(rest))
+        out = head
+        for i in range(0, len(rest), 2):
+            mark, name = rest[i], rest[i + 1] if i + 1 < len(rest) else ""
+            name = labels.get(name, name)
+            out += f" {part_subscript('sub.rel', self.lang)} {name}" if mark == "/" else mark + name
+        return out
 
     def caption(self, fig: Figure) -> str:
         """A figure's caption, saying the numbers a symbolic model is drawn at (or that it is
@@ -386,7 +414,7 @@ class Renderer:
     def derived(self, d: Derived) -> str:
         """A value read off an equation, `ω₃ = v_BA / AB = 2.5 rad/s`, with the sense
         (counter-clockwise or clockwise) when it is a nonzero number and the sense is asked."""
-        parts = [self.sym(d.sym)]
+        parts = [(self.inline(d.lead) if d.lead else "") + self.sym(d.sym)]
         if d.how:
             parts.append(self.inline(d.how))
         parts.append(self.value(d.value))

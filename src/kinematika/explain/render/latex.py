@@ -13,7 +13,7 @@ from .unicode import latex_formula
 
 TEXT = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
         "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
-MATH = {"ω": r"\omega", "α": r"\alpha", "ρ": r"\rho", "⊥": r"\perp", "∥": r"\parallel", "∈": r"\in",
+MATH = {"ω": r"\omega", "α": r"\alpha", "ρ": r"\rho", "ℜ": r"\Re", "⊥": r"\perp", "∥": r"\parallel", "∈": r"\in",
         "×": r"\times", "·": r"\cdot", "−": "-", "²": "^2", "³": "^3", "–": "\\text{--}", "→": r"\to",
         "—": "\\text{---}"}
 HEAD = r"""\documentclass[11pt]{article}

@@ -19,7 +19,7 @@ from .unicode import unicode_formula
 MARKUP = re.compile(r"([\\`*\[\]<>|]|(?<!\w)_|_(?!\w))")
 
 
-COMPOUND = "/,-∈"          # a subscript with these holds more than one name
+COMPOUND = "/,-∈ "         # a subscript with these holds more than one name (or words: roda sup)
 
 
 class MarkdownRenderer(Renderer):

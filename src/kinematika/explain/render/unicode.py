@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from typing import Any, Callable
 
+from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.str import StrPrinter
 
 from ...memo import Memo
@@ -30,6 +31,13 @@ class _Marking(StrPrinter):
             self.names.append(expr.name)
         return chr(MARK + self.names.index(expr.name))
 
+    def _print_Add(self, expr: Any, order: Any = None) -> str:
+        """A difference of two terms with its positive term first: r₂ − r₁, never −r₁ + r₂."""
+        terms = self._as_ordered_terms(expr, order=order)
+        if len(terms) == 2 and terms[0].could_extract_minus_sign() and not terms[1].could_extract_minus_sign():
+            return f"{self._print(terms[1])} - {self.parenthesize(-terms[0], PRECEDENCE['Add'] + 1)}"
+        return super()._print_Add(expr, order=order)
+
     def _print_Pi(self, expr: Any) -> str:
         return "π"
 
@@ -43,7 +51,7 @@ class _Marking(StrPrinter):
 def _marked(expr: Any) -> tuple[str, tuple[str, ...]]:
     """The Unicode formula with its symbols marked, and their names: printed once in a
     command (a long formula takes long to print), written out by each language and format."""
-    shown = tidy(expr)
+    shown = turned(tidy(expr))
     known = _MARKED.get(shown)
     if known is not None:
         return known
@@ -53,6 +61,25 @@ def _marked(expr: Any) -> tuple[str, tuple[str, ...]]:
     text = re.sub(r"sqrt\(([\w\U000F0000-\U000FFFFD]+)\)", r"√\1", text)
     text = text.replace("sqrt(", "√(").replace("**", "^").replace("*", "·")
     return _MARKED.put(shown, (text.replace(" - ", " − ").replace("-", "−"), tuple(names)))
+
+
+def turned(x: Any) -> Any:
+    """A product's minus taken into a difference of two terms, as the notes write their
+    results: −v(r₁ − r₂)/r₂ is v(r₂ − r₁)/r₂ (one sign fewer to read)."""
+    import sympy
+
+    factors = list(sympy.Mul.make_args(x))
+    if not x.is_Mul or sympy.S.NegativeOne not in factors:
+        return x
+    for f in factors:
+        base, power = f.as_base_exp()
+        if base.is_Add and len(base.args) == 2 and power in (1, -1) \
+                and sum(t.could_extract_minus_sign() for t in base.args) == 1:
+            rest = [g for g in factors if g is not f and g is not sympy.S.NegativeOne]
+            flipped = sympy.Add(*[-t for t in base.args], evaluate=False)
+            return sympy.Mul(*rest, flipped if power == 1 else sympy.Pow(flipped, power, evaluate=False),
+                             evaluate=False)
+    return x
 
 
 _MARKED = Memo(4096)    # a command's own memory (kinematika.memo), as sympy's printed texts

@@ -1,0 +1,118 @@
+"""A body's subscript in the symbols (ω_roda, v_B∈plat, α_M) when the model's notation gives
+it no index: read off the body's name in the page's language, as the course notes write
+their symbols (the slides' ω_N for "N elementua", the C5 chapter's Ω^roda, Ω^plat,
+Ω^{roda sup}, Ω^{roda1}), never the body's number in the file (ω_6 for pulley 3).
+
+The rule, for each body of a model that names its bodies in the language:
+
+1. a code in the name (a capital and up to three capitals or digits: the N of "element N",
+   the S1 of "xassís S1", the OQ of "barra OQ") that no other body's name holds is the
+   subscript: ω_N, ω_S1, ω_OQ;
+2. else the word the name is about (past its article and the language's small words; the
+   first thing of "el plat i els pedals"): the first word in Catalan and Spanish, the last
+   in English, the first not ending in -ko in Basque), when no other body's is that word:
+   ω_braç, ω_plat, ω_koroa, ω_wheel, ω_gurpila;
+3. else that word with the name's number (politja 1 -> politja1, "1. polea" -> polea1);
+4. else the name's words as written, as the notes' "roda sup": ω_{roda esquerra},
+   ω_{politja mòbil}, ω_{left wheel}, ω_{ezkerreko gurpila}.
+
+A body the language does not name is written by the model's own name when that is a plain
+word (ground, carrier), else by its number; so is any body whose subscript would still be
+another's. A model that names no body in the language keeps the numbers (ω_3, as its
+figures' numbering).
+"""
+from __future__ import annotations
+
+import re
+from typing import Optional
+
+# the small words a subscript leaves out, per language (the article is stripped first), and
+# the words that join two things in one name (el plat i els pedals): the subscript is the first's
+SMALL_WORDS = {"ca": {"de", "del", "dels", "d", "el", "la", "els", "les", "l", "a"},
+               "es": {"de", "del", "el", "la", "los", "las", "a"},
+               "en": {"of", "the", "a", "an"},
+               "eu": set()}
+JOINING = {"ca": {"i", "amb"}, "es": {"y", "con"}, "en": {"and", "with", "of"}, "eu": {"eta"}}
+CODE = re.compile(r"^[A-Z][A-Z0-9]{0,3}$")           # N, S1, OQ, O1A
+NUMBER = re.compile(r"^\d+\.?$")                      # 1 (satèl·lit 1), 1. (1. satelitea)
+PLAIN_ID = re.compile(r"^[A-Za-z][A-Za-z0-9]{0,11}$")  # a model's own name fit for a subscript
+ARTICLE = re.compile(r"(?i)^(?:(?:els|les|el|la|los|las)\s+|l['’]\s*)")
+
+
+def _words(name: str) -> list[str]:
+    """The name's words past its article."""
+    text = ARTICLE.sub("", name.strip(), count=1)
+    return [w.strip(",;:()") for w in re.split(r"\s+", text) if w.strip(",;:()")]
+
+
+def _head(content: list[str], lang: str) -> str:
+    """The word a name is about: the first in Catalan and Spanish (roda esquerra), the last
+    in English (left wheel), the first not ending in -ko in Basque (ezkerreko gurpila,
+    polea finkoa)."""
+    if lang == "en":
+        return content[-1]
+    if lang == "eu":
+        return next((w for w in content if not w.endswith("ko")), content[-1])
+    return content[0]
+
+
+def _candidates(name: str, lang: str) -> tuple[list[str], list[str]]:
+    """(codes, subscripts in the rule's order) of one name."""
+    small, joining = SMALL_WORDS.get(lang, set()), JOINING.get(lang, set())
+    words = _words(name)
+    cut = next((k for k, w in enumerate(words) if w.lower() in joining), len(words))
+    codes = [w for w in words if CODE.match(w)]
+    first = words[:cut]
+    numbers = [w.rstrip(".") for w in first if NUMBER.match(w)]
+    content = [w for w in first if not NUMBER.match(w) and not CODE.match(w)
+               and w.lower().replace("’", "'").split("'")[-1] not in small]
+    if not content:
+        return codes, []
+    head = _head(content, lang)
+    number = numbers[0] if len(numbers) == 1 else ""
+    out = [head]
+    if number:
+        out.append(head + number)
+    if len(content) > 1:
+        out.append(" ".join(content) + number)
+    return codes, out
+
+
+def named_labels(order: list[str], names: dict[str, str], lang: Optional[str],
+                 given: dict[str, str]) -> dict[str, str]:
+    """Each body's subscript by the rule above: `order` the bodies in the notes' numbering
+    (the frame first), `names` body -> its name in `lang` (empty: numbers), `given` the
+    bodies the model's notation indexes (kept, and never reused)."""
+    numbers = {b: str(k) for k, b in enumerate(order, start=1)}
+    if not names:
+        return {b: given.get(b, numbers[b]) for b in order}
+    lang = lang or "en"
+    free = [b for b in order if b not in given]
+    spelt = {b: names.get(b, "") for b in free}
+    found = {b: _candidates(spelt[b], lang) if spelt[b] else ([], []) for b in free}
+    taken = set(given.values())
+    out: dict[str, str] = {}
+    code_count: dict[str, int] = {}
+    for codes, _ in found.values():
+        for c in set(codes):
+            code_count[c] = code_count.get(c, 0) + 1
+    for b in free:
+        codes, words = found[b]
+        unique_codes = [c for c in codes if code_count[c] == 1 and c not in taken]
+        if unique_codes:
+            out[b] = unique_codes[0]
+            continue
+        others = [w for o in free if o != b for w in found[o][1][:1]]
+        for level, w in enumerate(words):
+            clash = w in others if level == 0 else any(w in found[o][1] for o in free if o != b)
+            if not clash and w not in taken:
+                out[b] = w
+                break
+        else:
+            if not spelt[b] and PLAIN_ID.match(b):
+                out[b] = b
+    labels = {**{b: given[b] for b in given if b in numbers}, **out}
+    written: dict[str, list[str]] = {}
+    for b, t in labels.items():
+        written.setdefault(t, []).append(b)
+    return {b: labels[b] if b in labels and len(written[labels[b]]) == 1 else numbers[b] for b in order}
