@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
+import numpy as np
+
 from ..algebra.vectors import Space, add, sub
 from .linear import Lin
 from .motion import Motion
@@ -46,6 +48,23 @@ class Unknowns:
     def body_of(self, column: int) -> str:
         """The body whose twist holds unknown number `column`."""
         return self.bodies[column // self.width]
+
+    def layout(self) -> tuple[np.ndarray, list[str]]:
+        """Which columns are translations (a bool array) and the body of each column: what
+        the analysis of the matrix reads; counted once per layout (a motion in time builds
+        the same layout at every instant)."""
+        key = (tuple(self.bodies), self.space.dim)
+        found = _LAYOUTS.get(key)
+        if found is None:
+            found = (np.array([(c % self.width) >= self.space.rot for c in range(self.n)], dtype=bool),
+                     [self.body_of(c) for c in range(self.n)])
+            found[0].flags.writeable = False          # shared: read, never written
+            if len(_LAYOUTS) < 64:
+                _LAYOUTS[key] = found
+        return found
+
+
+_LAYOUTS: dict[tuple, tuple[np.ndarray, list[str]]] = {}
 
 
 class KnownTerms(Unknowns):
@@ -122,13 +141,15 @@ class VelocityLevel(Level):
 
     def point(self, body: str, p: tuple) -> tuple:
         """v = v₀ + ω × (P − ref)."""
-        o = self.u.offset.get(body) if self.space.dim == 2 and type(self.u) is Unknowns else None
-        if o is None:
+        if self.space.dim != 2 or type(self.u) is not Unknowns:
             return add(self.u.trans(body), self.space.cross(self.u.rot(body), sub(p, self.ref)))
-        # a moving body in the plane: the same linear forms, written out (the terms in the
-        # order, and the constants of the type, that the products above give)
+        # in the plane: the same values, written out (the terms in the order, and the
+        # constants of the type, that the products above give)
+        o = self.u.offset.get(body)
         ref = self.ref
         rx, ry = p[0] - ref[0], p[1] - ref[1]
+        if o is None:               # the frame: v₀ = (0, 0) and ω = 0 (integers), so 0 + 0 k × r
+            return (0 + 0 * ry, 0 + 0 * rx)
         x = Lin({o + 1: 1}) if _is_zero(ry) else Lin({o + 1: 1, o: -1 * ry}, 0 + 0 * ry)
         y = Lin({o + 2: 1}) if _is_zero(rx) else Lin({o + 2: 1, o: 1 * rx}, 0 + 0 * rx)
         return (x, y)

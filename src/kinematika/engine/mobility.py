@@ -31,8 +31,8 @@ def scale_system(a: np.ndarray, translation_columns: np.ndarray, length: float) 
     and rows with rows."""
     col = np.where(translation_columns, length, 1.0)
     scaled = a * col
-    norms = np.abs(scaled).max(axis=1) if a.size else np.zeros(0)
-    row = np.where(norms > 0, 1.0 / np.where(norms > 0, norms, 1.0), 1.0)
+    norms = np.maximum.reduce(np.abs(scaled), axis=1) if a.size else np.zeros(0)   # (what .max does)
+    row = 1.0 / np.where(norms > 0, norms, 1.0)        # a zero (or unknown) row's scale: 1 / 1
     return Scaled(scaled * row[:, None], row, col)
 
 

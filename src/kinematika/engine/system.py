@@ -92,8 +92,7 @@ class InstantSolver:
         self.labels = [r.label for r in rows_v]
         self.wheres = [r.where for r in rows_v]
         self.is_driver = np.array([r.driver for r in rows_v], dtype=bool)
-        translation = np.array([(c % u.width) >= self.space.rot for c in range(u.n)], dtype=bool)
-        body_of = [u.body_of(c) for c in range(u.n)]
+        translation, body_of = u.layout()
         if not inst.symbolic and u.n > LARGE:
             self.a_sym, self.b_v = None, [-r.lin.const for r in rows_v]
             self.a_num = sparse_matrix(rows_v, u.n)
@@ -116,7 +115,7 @@ class InstantSolver:
         num = self.inst.num
         for i, row in enumerate(rows):
             for col, coef in row.lin.terms.items():
-                a[i, col] = num(coef)
+                a[i, col] = coef if type(coef) is float else num(coef)     # (a float is its own number)
         return a
 
     def _restating(self) -> np.ndarray:
@@ -142,7 +141,8 @@ class InstantSolver:
         `level` 1 (velocities) or 2 (accelerations): the right side's natural size is the
         model's rate to that power (`linsolve.solve_numeric`'s check of redundant rows)."""
         inst = self.inst
-        b_num = np.array([inst.num(v) for v in b], dtype=float)
+        num = inst.num
+        b_num = np.array([v if type(v) is float else num(v) for v in b], dtype=float)
         with np.errstate(all="ignore"):
             x_num = solve_numeric(self.analysis, b_num, labels or self.labels, self.wheres,
                                   self.is_driver, check, inst.rate ** level if level else 0.0)
