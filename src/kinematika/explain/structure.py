@@ -19,8 +19,7 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model, sol = ctx.model, ctx.sol
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
-    bodies = [[Name(name, "index"), msg("structure.frame", body=Name(name, "body", bare=True)) if name == ctx.frame
-               else Name(name, "body", bare=True),
+    bodies = [[Name(name, "index"), _body_cell(ctx, name),
                [point(p) for p in b.points],
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
@@ -28,19 +27,50 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     joints = [[joint(j.id), msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]
     sec.add(Table([msg("col.joint"), msg("col.type"), msg("col.bodies"), msg("col.where")], joints))
-    d = sol.diagnosis
-    sec.add(msg("structure.dof", n=d.n, moving=len(model.moving_bodies), rank=d.n - d.dof, dof=d.dof,
-                conditions=d.conditions))
+    welded = welded_to_frame(ctx)
+    if welded:
+        sec.add(msg("structure.welded", bodies=names(welded, "body"), bodies_n=len(welded), frame=body(ctx.frame)))
+    sec.add(msg("structure.dof", **dof_counts(ctx)))
     sec.add(drawing(ctx, "fig.mechanism", velocities=True, accelerations=False, centres=False, curvature=False))
     if not steps:
         return sec
     order = Section(msg("sec.order"), level=3)
     order.add(msg("order.assur" if steps and steps[0].source == "assur" else "order.blocks"))
-    for i, s in enumerate(steps, 1):
+    for i, s in enumerate([s for s in steps if not all(ctx.fixed(b) for b in s.bodies)], 1):
         order.add(msg("order.item", n=i, kind=msg(f"kind.{s.kind}"), bodies=names(s.bodies, "body"),
                       joints=names(s.joints, "joint"), known=names(s.known, "body")))
     sec.add(order)
     return sec
+
+
+def welded_to_frame(ctx: Ctx) -> list[str]:
+    """The bodies welded to the frame (directly or through other welds: C5-1.2's inclined
+    planes): they are part of the fixed body, not moving bodies — a weld leaves no relative
+    motion, so what is welded to the ground is ground."""
+    return [b for b in ctx.model.moving_bodies if ctx.fixed(b)]
+
+
+def dof_counts(ctx: Ctx) -> dict:
+    """The degrees-of-freedom sentence's numbers, the bodies welded to the frame counted with
+    it: each such body takes away its k velocity components (3 in the plane, 6 in space) and
+    the k independent conditions of its weld, which pin exactly those components — so the
+    unknowns n and the rank fall by k for each, and the degrees of freedom stay n − rank."""
+    d = ctx.sol.diagnosis
+    moving = len(ctx.model.moving_bodies)
+    k = d.n // moving if moving else 0
+    welded = len(welded_to_frame(ctx))
+    n = d.n - k * welded
+    return {"n": n, "moving": moving - welded, "rank": n - d.dof, "dof": d.dof, "conditions": d.conditions}
+
+
+def _body_cell(ctx: Ctx, name: str):
+    """The structure table's body: the frame marked fixed, a body welded to it marked part
+    of it (`welded_to_frame`)."""
+    if name == ctx.frame:
+        return msg("structure.frame", body=Name(name, "body", bare=True))
+    if ctx.fixed(name):
+        return msg("structure.fixed_part", body=Name(name, "body", bare=True), frame=body(ctx.frame))
+    return Name(name, "body", bare=True)
 
 
 def _where(ctx: Ctx, j) -> Inline | str:
@@ -124,5 +154,6 @@ def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
         return Value(ctx.clean(x if ctx.planar else tuple(x), unit), unit)
 
     rows = [[Name(b, "body", bare=True), value(ctx.omega(b), "rate")]
-            + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies]
+            + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies
+            if not ctx.fixed(b)]                  # a body welded to the frame is part of it
     return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)

@@ -30,6 +30,14 @@ col-alpha = acceleració angular
 col-question = pregunta
 col-answer = resposta
 structure-frame = { $body } (fix)
+structure-welded = { $bodies } { $bodies_n ->
+        [one] està unit
+       *[other] estan units
+    } rígidament a { $frame }: { $bodies_n ->
+        [one] forma part del sòlid fix, no és un sòlid mòbil
+       *[other] formen part del sòlid fix, no són sòlids mòbils
+    }; tots els seus punts tenen velocitat i acceleració nul·les.
+structure-fixed_part = { $body } (unit rígidament a { $frame }: fix)
 structure-dof = Incògnites: { $n } components de velocitat { $moving ->
         [one] d’un sòlid mòbil
        *[other] de { $moving } sòlids mòbils
@@ -160,13 +168,6 @@ kind-PRP = díade PRP
 kind-other = grup resolt conjuntament
 kind-copy = igual que un sòlid ja resolt
 step-title = Pas { $n }: { $kind } — { $bodies }
-step-fixed = { $bodies } { $bodies_n ->
-        [one] està unit
-       *[other] estan units
-    } rígidament a { $frame }: no es { $bodies_n ->
-        [one] mou
-       *[other] mouen
-    }, i tots els seus punts tenen velocitat i acceleració nul·les.
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
 v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->

@@ -30,6 +30,17 @@ col-alpha = angular acceleration
 col-question = question
 col-answer = answer
 structure-frame = { $body } (fixed)
+structure-welded = { $bodies } { $bodies_n ->
+        [one] is
+       *[other] are
+    } welded to { $frame }: part of the fixed body, not { $bodies_n ->
+        [one] a moving body
+       *[other] moving bodies
+    }; all { $bodies_n ->
+        [one] its
+       *[other] their
+    } points have zero velocity and acceleration.
+structure-fixed_part = { $body } (welded to { $frame }: fixed)
 structure-dof = Unknowns: { $n } velocity components of { $moving ->
         [one] one moving body
        *[other] { $moving } moving bodies
@@ -124,16 +135,6 @@ kind-PRP = PRP dyad
 kind-other = group solved together
 kind-copy = the same as a body found before
 step-title = Step { $n }: { $kind } — { $bodies }
-step-fixed = { $bodies } { $bodies_n -> 
-        [one] is
-       *[other] are
-    } welded to { $frame }: { $bodies_n ->
-        [one] it does
-       *[other] they do
-    } not move, and all { $bodies_n ->
-        [one] its
-       *[other] their
-    } points have zero velocity and acceleration.
 sec-velocities = Velocities
 sec-accelerations = Accelerations
 v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->

@@ -30,6 +30,14 @@ col-alpha = aceleración angular
 col-question = pregunta
 col-answer = respuesta
 structure-frame = { $body } (fijo)
+structure-welded = { $bodies } { $bodies_n ->
+        [one] está unido
+       *[other] están unidos
+    } rígidamente a { $frame }: { $bodies_n ->
+        [one] forma parte del sólido fijo, no es un sólido móvil
+       *[other] forman parte del sólido fijo, no son sólidos móviles
+    }; todos sus puntos tienen velocidad y aceleración nulas.
+structure-fixed_part = { $body } (unido rígidamente a { $frame }: fijo)
 structure-dof = Incógnitas: { $n } componentes de velocidad de { $moving ->
         [one] un sólido móvil
        *[other] { $moving } sólidos móviles
@@ -124,13 +132,6 @@ kind-PRP = díada PRP
 kind-other = grupo resuelto en conjunto
 kind-copy = igual que un sólido ya resuelto
 step-title = Paso { $n }: { $kind } — { $bodies }
-step-fixed = { $bodies } { $bodies_n ->
-        [one] está unido
-       *[other] están unidos
-    } rígidamente a { $frame }: no se { $bodies_n ->
-        [one] mueve
-       *[other] mueven
-    }, y todos sus puntos tienen velocidad y aceleración nulas.
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
 v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas{ $format ->

@@ -1,0 +1,63 @@
+"""What the independent audit of issue 30 found in C5-1.2 and C5-1.5, as rules (docs/explain.md,
+"The independent audit, and what was fixed after it"): a body welded to the ground is ground,
+the wheels drawn do not overlap, a fixed plane is drawn as the segment of ground it is, the
+centres' figure shows the centres the text uses, and every point an equation names is in the
+Data section's table of points."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from kinematika.explain import render
+
+from .helpers import WORKED, explained
+
+C5_1_2 = "seed_c5_1_2_bar_on_inclined_wheels"
+
+
+def test_a_body_welded_to_the_ground_is_not_a_moving_body():
+    """C5-1.2's planes are welded to the ground: the degrees-of-freedom sentence counts 4 moving
+    bodies (the wheels and the two bars: 12 velocity components, 11 independent conditions,
+    one degree of freedom — counted by hand: 2 rolling contacts × 2, 3 pins × 2, the floor's
+    1 + 1 … of which one is redundant as the engine's diagnosis says), the structure table
+    marks the planes fixed, and no step or rates' row is given to them."""
+    sol, doc = explained(C5_1_2)
+    text = render(doc, "en", "md", drawings=False)
+    assert "12 velocity components of 4 moving bodies" in text
+    assert "so the mechanism has one degree of freedom" in text
+    assert "*left plane* (welded to *ground*: fixed)" in text
+    assert "part of the fixed body, not moving bodies" in text
+    velocities = text.split("## Velocities", 1)[1].split("## Angular velocities", 1)[0]
+    assert "### Step 1: group solved together — *bar OQ*" in velocities
+    rates = text.split("## Angular velocities", 1)[1].split("##", 1)[0]
+    assert "plane" not in rates
+    for lang, words in (("ca", "4 sòlids mòbils"), ("eu", "4 solido mugikorren"), ("es", "4 sólidos móviles")):
+        assert words in render(doc, lang, "md", drawings=False), lang
+
+
+def _circles(sol) -> list[tuple[str, tuple, float]]:
+    """(body, centre, radius) of every circle as drawn (a symbolic model at its draw_at
+    values): the figure's own numbers."""
+    from kinematika.draw.build import build_scene
+
+    scene = build_scene(sol.inst, sol)
+    return [(b.name, tuple(float(c) for c in s.center), float(s.radius))
+            for b in scene.bodies.values() for s in b.shapes if s.kind == "circle"]
+
+
+@pytest.mark.parametrize("name", sorted(p for p in WORKED if p.startswith("seed_")))
+def test_no_two_wheels_overlap_at_the_drawn_instant(name):
+    """Two circles of different bodies either lie apart, touch (a contact), or one holds the
+    other (a ring): they never cross. C5-1.2's wheels at s = 2 crossed (|OQ| = 1.956 < 2r)."""
+    sol, _ = explained(name)
+    circles = _circles(sol)
+    assert len(circles) >= 2 or name != C5_1_2
+    for i, (a, ca, ra) in enumerate(circles):
+        for b, cb, rb in circles[i + 1:]:
+            if a == b:
+                continue
+            d = math.dist(ca, cb)
+            tol = 1e-9 * (ra + rb)
+            crossing = abs(ra - rb) + tol < d < ra + rb - tol
+            assert not crossing, (name, a, b, d, ra + rb)
