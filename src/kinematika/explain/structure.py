@@ -16,7 +16,7 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     them) with their points and shapes, the joints with their bodies and places, the degrees of
     freedom by the rank of the joints' conditions, the drawing, and the order of solution
     `steps`."""
-    model, sol = ctx.model, ctx.sol
+    model = ctx.model
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
     bodies = [[Name(name, "index"), _body_cell(ctx, name),
