@@ -61,3 +61,41 @@ def test_no_two_wheels_overlap_at_the_drawn_instant(name):
             tol = 1e-9 * (ra + rb)
             crossing = abs(ra - rb) + tol < d < ra + rb - tol
             assert not crossing, (name, a, b, d, ra + rb)
+
+
+def _drawings(doc, key: str) -> list:
+    from kinematika.explain.document import Drawing, Section
+
+    out: list = []
+
+    def walk(blocks) -> None:
+        for b in blocks:
+            if isinstance(b, Section):
+                walk(b.blocks)
+            elif isinstance(b, Drawing) and b.caption.key == key:
+                out.append(b)
+    walk(doc.sections)
+    return out
+
+
+@pytest.mark.parametrize("name", ["seed_c5_1_5_pulley_block", C5_1_2, "seed_c5_1_1_pulley_on_cable",
+                                  "seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"])
+def test_the_centres_figure_shows_only_the_centres_the_text_uses(name):
+    """The centres' figure marks no centre the text does not name (C5-1.5 drew all 36 pairs'
+    centres, ~30 of them unasked and unused, around the two the text writes: I_12, I_16)."""
+    from kinematika.draw.build import build_scene
+    from kinematika.draw.names import pair_tag
+    from kinematika.draw.options import DrawOptions
+
+    sol, doc = explained(name)
+    text = render(doc, "en", "md", drawings=False)
+    figures = _drawings(doc, "fig.centres")
+    assert figures, name
+    for fig in figures:
+        scene = build_scene(sol.inst, sol, DrawOptions(**fig.options))
+        drawn = [m.pair for m in scene.marks if m.kind == "icr"]
+        assert drawn, name
+        unused = [pair for pair in drawn if f"I_{pair_tag(sol.model, *pair)}" not in text]
+        assert not unused, (name, unused)
+    if name == "seed_c5_1_5_pulley_block":
+        assert sorted(pair_tag(sol.model, *m.pair) for m in scene.marks if m.kind == "icr") == ["12", "16"]
