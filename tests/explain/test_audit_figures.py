@@ -6,6 +6,7 @@ Data section's table of points."""
 from __future__ import annotations
 
 import math
+import re
 
 import pytest
 
@@ -99,3 +100,71 @@ def test_the_centres_figure_shows_only_the_centres_the_text_uses(name):
         assert not unused, (name, unused)
     if name == "seed_c5_1_5_pulley_block":
         assert sorted(pair_tag(sol.model, *m.pair) for m in scene.marks if m.kind == "icr") == ["12", "16"]
+
+
+CENTRE = re.compile(r"^I\d*$")         # an instant centre: defined in the centres section, not in Data
+
+
+def _defined(name: str, listed: set[str]) -> bool:
+    """A point name the table lists, a centre, or a segment of two of them (CJ, P2I, RLI)."""
+    if name in listed or CENTRE.match(name):
+        return True
+    return any((name[:k] in listed or CENTRE.match(name[:k])) and (name[k:] in listed or CENTRE.match(name[k:]))
+               for k in range(1, len(name)))
+
+
+@pytest.mark.parametrize("name", sorted(p for p in WORKED if p.startswith("seed_")))
+def test_every_point_an_equation_names_is_in_the_points_table(name):
+    """Every point the equations write (v_J4∈3, v_{C1-J1}, ω × CJ) is in the Data section's
+    table of points, with what it is — the model's points and the contact points the
+    explanation names (C5-1.5's J1 … J10 were in no table); instant centres are defined in
+    their own section."""
+    from kinematika.explain.data import points_named
+    from kinematika.explain.document import Table
+
+    _, doc = explained(name)
+    table = next(b for b in doc.sections[0].blocks if isinstance(b, Table)
+                 and getattr(b.header[0], "key", "") == "col.point")
+    listed = {row[0].text for row in table.rows}
+    missing = sorted(p for p in points_named(doc, frozenset(listed)) if not _defined(p, listed))
+    assert not missing, (name, missing)
+    assert all(row[1] is not None for row in table.rows)
+    if name == "seed_c5_1_5_pulley_block":
+        what = _points_table_en(doc)
+        assert what["T2"] == "the point of *strand 2* where it touches *pulley 2* (joint j4)"
+        assert what["J4"].startswith("contact point of joint j4 (rolling)")
+
+
+def _points_table_en(doc) -> dict[str, str]:
+    text = render(doc, "en", "md", drawings=False)
+    lines = text.split("| point |", 1)[1].split("\n\n", 1)[0].splitlines()[2:]
+    return {cells[1].strip(): cells[2].strip() for cells in (line.split("|") for line in lines)}
+
+
+@pytest.mark.parametrize("name", sorted(p for p in WORKED if p.startswith("seed_")))
+def test_no_polygon_piles_labels_on_one_point(name):
+    """A polygon writes the images that fall on one point as one label (a, b, d), at most
+    three names; a polygon whose arrows all lie on one line with more images on a point is
+    left out (C5-1.5's: eight vertical arrows, five contact points' images on one point)."""
+    from kinematika.explain.document import Figure, Section
+    from kinematika.explain.polygon import MAX_AT_POINT
+
+    _, doc = explained(name)
+    figures: list = []
+
+    def walk(blocks) -> None:
+        for b in blocks:
+            if isinstance(b, Section):
+                walk(b.blocks)
+            elif isinstance(b, Figure):
+                figures.append(b)
+    walk(doc.sections)
+    figures += [eq.polygon for eq in doc.equations() if eq.polygon is not None]
+    for fig in figures:
+        images = [(label, xy) for label, xy, kind in fig.points if kind == "image"]
+        for i, (a, p) in enumerate(images):
+            assert a.count(", ") + 1 <= MAX_AT_POINT, (name, a)
+            for b, q in images[i + 1:]:
+                assert math.dist(p, q) > 1e-9 * max(1.0, math.hypot(*p)), (name, a, b)
+    if name == "seed_c5_1_5_pulley_block":
+        assert not [f for f in figures if f.caption.key == "fig.level_v"]

@@ -565,6 +565,11 @@ what-centre = centre { ELISION($body) ->
        *[other] de { $body }
     }
 what-joint = enllaç { $joint }, { $kind }, entre { $a } i { $b }
+what-touching = el punt { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } on toca { $other } (enllaç { $joint })
+what-contact = punt de contacte de l’enllaç { $joint } ({ $kind }), entre { $a } i { $b }
 what-body = un punt { ELISION($bodies) ->
         [vowel] d’{ $bodies }
        *[other] de { $bodies }

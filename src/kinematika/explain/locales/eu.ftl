@@ -343,6 +343,8 @@ col-point = puntua
 col-what = zer den
 what-centre = { $body } solidoaren zentroa
 what-joint = { $joint } lotura, { $kind }, { $a } eta { $b } solidoen artean
+what-touching = { $body } solidoak { $other } ukitzen duen puntua ({ $joint } lotura)
+what-contact = { $joint } loturaren ukipen-puntua ({ $kind }), { $a } eta { $b } solidoen artean
 what-body = { $bodies } { $bodies_n ->
         [one] solidoaren
        *[other] solidoen
