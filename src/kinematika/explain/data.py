@@ -237,8 +237,22 @@ def contact_rows(ctx: Ctx, doc: Any) -> None:
         j = ctx.model.joint(jid)
         what = msg("what.contact", joint=Name(j.id, "joint"), kind=msg(f"joint.{kind_key(j, ctx.frame)}"),
                    a=Name(j.a, "body"), b=Name(j.b, "body"))
-        table.rows.append([point(name), what, Value(ctx.clean(ctx.pos(name), "len"), "len")])
+        where: Any = Value(ctx.clean(ctx.pos(name), "len"), "len")
+        at = _point_at(ctx, ctx.pos(name))
+        if at is not None:                  # the contact is a point the model names (E.3's J1): J1′ = J1 = (0, 0)
+            where = Inline([point(at), " = ", where])
+        table.rows.append([point(name), what, where])
         listed.add(name)
+
+
+def _point_at(ctx: Ctx, where: tuple) -> Optional[str]:
+    """The model's point at `where` at the instant, if any."""
+    if ctx.symbolic and not ctx.inst.env:
+        return None
+    here = ctx.num(where)
+    tol = 1e-9 * max(float(ctx.num(ctx.inst.scale)), 1e-300)
+    return next((p for p in ctx.model.points
+                 if max(abs(a - b) for a, b in zip(ctx.num(ctx.pos(p)), here)) <= tol), None)
 
 
 def points_named(doc: Any, known: frozenset = frozenset()) -> set[str]:
