@@ -3,6 +3,8 @@
 order of solution."""
 from __future__ import annotations
 
+from typing import Optional
+
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
@@ -101,11 +103,27 @@ def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
     options.setdefault("width", PRINT_WIDTH)
     args: dict = {"dim": ctx.space.dim}
     if caption == "fig.centres":
-        args["normals"] = Names([msg(f"fig.normal.{k}") for k in _normal_lines(ctx)])
+        kennedy, joints = _lines_drawn(ctx, options)
+        args["normals"] = Names([msg(f"fig.normal.{k}") for k in _normal_lines(ctx, joints)])
+        args["kennedy"] = int(kennedy)
     return Drawing(msg(caption, **args), ctx.sol, options, fallback, values)
 
 
-def _normal_lines(ctx: Ctx) -> list[str]:
+def _lines_drawn(ctx: Ctx, options: dict) -> tuple[bool, Optional[set]]:
+    """Whether the centres' figure draws Aronhold–Kennedy lines, and the joints whose normals
+    it draws (None: every joint's), read off the figure itself when it shows only some
+    centres (`centre_pairs`): its caption names only the lines it has (C5-1.5's two centres
+    stand on none)."""
+    if options.get("centre_pairs") is None:
+        return True, None
+    from ..draw.build import build_scene
+    from ..draw.options import DrawOptions
+
+    scene = build_scene(ctx.inst, ctx.sol, DrawOptions(**options))
+    return bool(scene.kennedy), {k.key.split(":", 1)[1] for k in scene.normals}
+
+
+def _normal_lines(ctx: Ctx, joints: Optional[set] = None) -> list[str]:
     """The kinds of line, other than Aronhold–Kennedy's, that the centres' figure draws
     centres on, in the model's order: each joint that puts its bodies' centre on a line
     (`Centre.NORMAL`) says which (`centre_line`: a wheel's axle, a slot's normal, a contact's
@@ -114,7 +132,7 @@ def _normal_lines(ctx: Ctx) -> list[str]:
     from ..joints.capabilities import Centre
 
     kinds = [kind_key(j, ctx.frame) if on_fixed_line(j, ctx.frame) else j.kind.centre_line
-             for j in ctx.model.joints if j.kind.centre is Centre.NORMAL]
+             for j in ctx.model.joints if j.kind.centre is Centre.NORMAL and (joints is None or j.id in joints)]
     return list(dict.fromkeys(kinds))
 
 

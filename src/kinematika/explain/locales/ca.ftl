@@ -463,10 +463,16 @@ copy-same = { $body } té els mateixos enllaços, amb els mateixos sòlids, i el
         [1] acceleració angular
        *[other] velocitat angular
     }:
-fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy{ $normals_n ->
-        [0] {""}
-       *[other] {" "}i { $normals }
-    }).
+fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , amb les rectes on es troben (traç i punt: { $normals }).
+        }
+       *[other] , amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy{ $normals_n ->
+            [0] {""}
+           *[other] {" "}i { $normals }
+        }).
+    }
 fig-normal-wheel = les perpendiculars a les rodes
 fig-normal-slot = les normals a les ranures
 fig-normal-slot_fixed = les normals a les rectes per on llisquen els punts

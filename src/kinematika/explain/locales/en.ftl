@@ -265,10 +265,16 @@ copy-same = { $body } is joined to the same bodies in the same way, with the sam
         [1] acceleration
        *[other] velocity
     }:
-fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism, with the lines they are found on (dash-dot: Aronhold–Kennedy lines{ $normals_n ->
-        [0] {""}
-       *[other] {" "}and { $normals }
-    }).
+fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , with the lines they are found on (dash-dot: { $normals }).
+        }
+       *[other] , with the lines they are found on (dash-dot: Aronhold–Kennedy lines{ $normals_n ->
+            [0] {""}
+           *[other] {" "}and { $normals }
+        }).
+    }
 fig-normal-wheel = the perpendiculars to the wheels
 fig-normal-slot = the normals to the slots
 fig-normal-slot_fixed = the normals to the lines the points slide on

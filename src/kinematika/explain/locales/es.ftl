@@ -292,10 +292,16 @@ copy-same = { $body } tiene las mismas uniones, con los mismos sólidos, y el mi
         [1] aceleración angular
        *[other] velocidad angular
     }:
-fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo, con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy{ $normals_n ->
-        [0] {""}
-       *[other] {" "}y { $normals }
-    }).
+fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , con las rectas en que se hallan (trazo y punto: { $normals }).
+        }
+       *[other] , con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy{ $normals_n ->
+            [0] {""}
+           *[other] {" "}y { $normals }
+        }).
+    }
 fig-normal-wheel = las perpendiculares a las ruedas
 fig-normal-slot = las normales a las ranuras
 fig-normal-slot_fixed = las normales a las rectas por las que deslizan los puntos

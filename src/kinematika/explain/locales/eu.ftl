@@ -265,10 +265,16 @@ copy-same = { $body } solido berberei lotuta dago, { $original } bezala eta erra
         [1] azelerazio angeluar
        *[other] abiadura angeluar
     } berarekin:
-fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak{ $normals_n ->
-        [0] {""}
-       *[other] {" "}eta { $normals }
-    }).
+fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , aurkitzeko zuzenekin (marra-puntua: { $normals }).
+        }
+       *[other] , aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak{ $normals_n ->
+            [0] {""}
+           *[other] {" "}eta { $normals }
+        }).
+    }
 fig-normal-wheel = gurpilen perpendikularrak
 fig-normal-slot = arteken perpendikularrak
 fig-normal-slot_fixed = puntuak irristatzen diren zuzenen perpendikularrak
