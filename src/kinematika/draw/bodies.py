@@ -21,6 +21,7 @@ from ..joints.symbols import HATCH_BAND
 from .style import BAR_WIDTH, GROUND, INK, POINT_LABEL
 
 DOTTED_SPHERE = (4.0, 3.0)      # the sphere of a spherical linkage: dashes, in line widths
+FALLING = "\\\\\\\\"              # matplotlib's hatching falling to the right, as dense as the frame's ////
 
 
 def draw_bodies(ctx: Context) -> None:
@@ -332,7 +333,7 @@ def _across(edge: np.ndarray) -> bool | str:
     to the right when the edge itself rises within 25° of 45° (C5-1.2's right plane) — hatching
     along the edge would read as a double line, not as ground."""
     angle = float(np.degrees(np.arctan2(edge[1], edge[0]))) % 180.0
-    return "\\\\" if abs(angle - 45.0) < 25.0 else True
+    return FALLING if abs(angle - 45.0) < 25.0 else True
 
 
 def hatched_edge(ctx: Context, p: np.ndarray, q: np.ndarray, side: np.ndarray, gid: str) -> None:
