@@ -313,7 +313,7 @@ def test_a_rate_nobody_asks_is_not_worked_out():
     work out how fast the wheels turn. No equation turns with a wheel, no ω of a wheel is read
     off anything, the rates' table and the step's title leave the wheels out; what is asked
     equals the construction by hand: O and Q at r along the planes' normals from contacts
-    s = 2 from the corner, I_OQ where the normals meet, I_OJ on the line I_OQ–O and the
+    s = 3 from the corner (the model's Data: at 2 the wheels overlapped), I_OQ where the normals meet, I_OJ on the line I_OQ–O and the
     vertical through J = (−5, 2), ω_OJ = ω_OQ·|I_OQ O| / |I_OJ O| turned the other way
     (O lies between the two centres), v_J = ω_OJ × I_OJ J."""
     import math
@@ -325,12 +325,13 @@ def test_a_rate_nobody_asks_is_not_worked_out():
     assert not [d for d in doc.derived() if d.body in ("wheel1", "wheel2")]
     summary = next(s for s in doc.sections if s.title.key.startswith("sec.rates_summary"))
     table = next(b for b in summary.blocks if hasattr(b, "rows"))
-    assert [r[0].text for r in table.rows] == ["plane1", "plane2", "OQ", "OJ"]
+    assert [r[0].text for r in table.rows] == ["OQ", "OJ"]       # the planes are ground (welded to it)
     step = next(s for s in steps(doc) if "OQ" in [n.text for n in s.title.args["bodies"].items])
     assert [n.text for n in step.title.args["bodies"].items] == ["OQ"]
     # by hand
     c30, s30, c45 = math.sqrt(3) / 2, 0.5, math.sqrt(2) / 2
-    k1, k2 = (-2 * c30, 2 * s30), (2 * c45, 2 * c45)
+    s = 3.0
+    k1, k2 = (-s * c30, s * s30), (s * c45, s * c45)
     n1, n2 = (s30, c30), (-c45, c45)                      # the planes' normals, upwards
     o = (k1[0] + n1[0], k1[1] + n1[1])
     i16 = _meet(k1, n1, k2, n2)

@@ -21,6 +21,7 @@ from ..joints.symbols import HATCH_BAND
 from .style import BAR_WIDTH, GROUND, INK, POINT_LABEL
 
 DOTTED_SPHERE = (4.0, 3.0)      # the sphere of a spherical linkage: dashes, in line widths
+FALLING = "\\\\\\\\"              # matplotlib's hatching falling to the right, as dense as the frame's ////
 
 
 def draw_bodies(ctx: Context) -> None:
@@ -36,6 +37,8 @@ def draw_bodies(ctx: Context) -> None:
             for shape in body.shapes:
                 _ground_shape(ctx, shape)
             _skeleton(ctx, body, GROUND, 3.0)
+        elif body.fixed:
+            _fixed_body(ctx, body)
         else:
             _body(ctx, body)
     _points(ctx)
@@ -251,6 +254,54 @@ def shape_anchor(s: ShapeView) -> np.ndarray:
     return s.center + (1.0 if s.ring else 0.6) * s.radius * d
 
 
+def _fixed_body(ctx: Context, body: BodyView) -> None:
+    """A body welded to the frame is ground (C5-1.2's inclined planes): its lines are drawn
+    as the pieces of ground they are — hatched segments over the points they hold and the
+    contacts on them (`_fixed_span`), never whole lines crossing the figure — its other
+    shapes as the frame's, its bars grey, its name beside it in the ground's grey."""
+    anchor, side = None, None
+    for s in body.shapes:
+        if s.kind != "line":
+            _ground_shape(ctx, s)
+            continue
+        seg = _fixed_span(ctx, body, s)
+        if seg is None:
+            continue
+        n = perpendicular(s.direction)
+        towards = s.hatch_towards if s.hatch_towards is not None else s.through - ctx.centroid()
+        side = n if float(n @ towards) >= 0 else -n
+        hatched_edge(ctx, *seg, side, f"ground:{body.name}")
+        anchor = (seg[0] + seg[1]) / 2
+    _skeleton(ctx, body, GROUND, 3.0)
+    if anchor is not None:
+        name = plain(noun(body.label or body.name)) + \
+            (f" ({body.index or body.number})" if ctx.scene.numbered else "")
+        ctx.label(anchor, name, GROUND, 5, f"body:{body.name}", side=side, group=f"body:{body.name}",
+                  style="italic")
+
+
+def _fixed_span(ctx: Context, body: BodyView, s: ShapeView):
+    """The piece of a fixed line worth drawing: from the body's own points on it (where the
+    piece ends, a plane's corner) to a wheel's radius beyond each contact on it (a tenth of
+    the figure when what touches it is no circle), inside the reach."""
+    n = perpendicular(s.direction)
+    own = [float((p - s.through) @ s.direction) for p in body.points.values()
+           if abs(float((p - s.through) @ n)) <= 1e-6 * ctx.size]
+    ts = list(own)
+    for j in ctx.scene.joints:
+        if body.name not in (j.a, j.b) or j.contact is None:
+            continue
+        other = ctx.scene.bodies.get(j.b if j.a == body.name else j.a)
+        reach = min((c.radius for c in (other.shapes if other else []) if c.kind == "circle"),
+                    default=0.1 * ctx.size)
+        t = float((j.contact - s.through) @ s.direction)
+        below, above = not own or t <= min(own), not own or t >= max(own)
+        ts += [t] + ([t - reach] if below else []) + ([t + reach] if above else [])
+    if len(ts) < 2:
+        return clip_line(s.through, s.direction, ctx.reach)
+    return clip_segment(s.through + min(ts) * s.direction, s.through + max(ts) * s.direction, ctx.reach)
+
+
 def _ground_shape(ctx: Context, s: ShapeView) -> None:
     band = HATCH_BAND * ctx.size
     if s.kind == "line":
@@ -277,12 +328,20 @@ def _ground_shape(ctx: Context, s: ShapeView) -> None:
                 gid="ground:plane")
 
 
+def _across(edge: np.ndarray) -> bool | str:
+    """The hatching of a fixed edge: the frame's lines rising to the right (True), or falling
+    to the right when the edge itself rises within 25° of 45° (C5-1.2's right plane) — hatching
+    along the edge would read as a double line, not as ground."""
+    angle = float(np.degrees(np.arctan2(edge[1], edge[0]))) % 180.0
+    return FALLING if abs(angle - 45.0) < 25.0 else True
+
+
 def hatched_edge(ctx: Context, p: np.ndarray, q: np.ndarray, side: np.ndarray, gid: str) -> None:
     """A fixed edge from p to q, hatched on `side` (where the frame's material is)."""
     band = HATCH_BAND * ctx.size
     ctx.add("line", [p, q], width=1.8, colour=GROUND, zorder=2, gid=gid)
     ctx.add("polygon", [p, q, q + band * side, p + band * side], colour=GROUND, width=0,
-            hatch=True, zorder=1)
+            hatch=_across(q - p), zorder=1)
     ctx.avoid(p, q)
     ctx.avoid(p + 0.5 * band * side, q + 0.5 * band * side, weight=0.7)
     ctx.avoid(p + band * side, q + band * side, weight=0.7)

@@ -80,10 +80,25 @@ def _bodies(inst: Instant, num: Numbers, lang: Optional[str] = None) -> dict[str
         shapes = [view for s in inst.shapes.get(name, []) for view in _shapes(s, num)]
         out[name] = BodyView(name, number, "#424242" if frame else body_colour(number), frame,
                              points, shapes, label=model.wording.body(name, lang), index=labels[name])
+    for name in welded_to_frame(model):
+        out[name].fixed = True
     for j in model.joints:
         for name in _passing(model, j):
             out[j.a].passing.append(name)
     return {name: out[name] for name in model.bodies}
+
+
+def welded_to_frame(model: Any) -> set[str]:
+    """The bodies welded to the frame, directly or through other welds (C5-1.2's inclined
+    planes): a weld leaves no relative motion, so they are ground and are drawn as it."""
+    fixed, grew = {model.frame}, True
+    while grew:
+        grew = False
+        for j in model.joints:
+            if j.kind.rigid and len({j.a, j.b} & fixed) == 1:
+                fixed |= {j.a, j.b}
+                grew = True
+    return fixed - {model.frame}
 
 
 def _passing(model: Any, j: Any) -> list[str]:
@@ -242,13 +257,15 @@ def _contacts(model: Any, geos: dict, num: Numbers):
 
 def _mark_ground_sides(bodies: dict[str, BodyView], model: Any, geos: dict, num: Numbers) -> None:
     """For a fixed shape another body rolls on, the side its material is on (for hatching):
-    away from the rolling body — outside a cavity, inside a drum, below a track."""
-    frame = bodies[model.frame]
+    away from the rolling body — outside a cavity, inside a drum, below a track. A body
+    welded to the frame is ground too (an inclined plane a wheel rolls on)."""
+    ground = {name for name, b in bodies.items() if b.frame or b.fixed}
     for j, contact, _ in _contacts(model, geos, num):
-        if model.frame not in (j.a, j.b) or not frame.shapes:
+        still = [name for name in (j.a, j.b) if name in ground]
+        if len(still) != 1 or not bodies[still[0]].shapes:
             continue
-        fixed = _nearest_shape(frame.shapes, contact)
-        partner = _nearest_shape(bodies[j.b if j.a == model.frame else j.a].shapes, contact)
+        fixed = _nearest_shape(bodies[still[0]].shapes, contact)
+        partner = _nearest_shape(bodies[j.b if j.a == still[0] else j.a].shapes, contact)
         if fixed is None:
             continue
         if fixed.kind == "line" and partner is not None and partner.kind == "circle":

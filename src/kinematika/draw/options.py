@@ -19,7 +19,9 @@ class DrawOptions:
     `velocity` / `acceleration` questions); True draws them at every shown point; False
     none. Shown points are `points` when given, else the points the questions name, else
     every point of a moving body. `centres`: None marks the centres the model asks for
-    (`icr`), True every instant centre with its Aronhold–Kennedy lines. `curvature`: None
+    (`icr`), True every instant centre with its Aronhold–Kennedy lines — or, with
+    `centre_pairs`, only the centres of those pairs of bodies and the lines that found them
+    from centres drawn (an explanation's figure shows the centres its text uses). `curvature`: None
     or True draws the curvature questions' circles. `labels`: names and magnitudes.
     """
 
@@ -27,6 +29,7 @@ class DrawOptions:
     accelerations: Auto = None
     centres: Auto = None
     curvature: Auto = None
+    centre_pairs: Optional[list] = None  # with centres=True: only these pairs (body, body)
     labels: bool = True
     points: Optional[list[str]] = None
     view: str = "iso"                 # 3D projection: iso, top, front, side

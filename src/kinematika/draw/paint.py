@@ -118,7 +118,7 @@ def _filled(m: Mark) -> dict:
     """A patch's fill and edge: a hatched patch has no fill, its hatching in its colour."""
     fill = m.fill != "none" and not m.hatch
     return dict(fill=fill, fc=m.fill if fill else None, ec=_colour(m.colour), lw=m.width,
-                hatch=HATCH if m.hatch else None, alpha=_alpha(m), zorder=m.zorder,
+                hatch=(m.hatch if isinstance(m.hatch, str) else HATCH) if m.hatch else None, alpha=_alpha(m), zorder=m.zorder,
                 capstyle=m.cap or "butt")
 
 

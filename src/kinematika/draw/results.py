@@ -179,7 +179,7 @@ def _centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
     _asked_centres(scene, sol, options, num)
     _normals(scene)
     if options.centres and scene.dim == 2:
-        _radii(scene, sol, num)
+        _radii(scene, sol, num, _pairs(options))
 
 
 def _normals(scene: Scene) -> None:
@@ -203,7 +203,12 @@ def _normals(scene: Scene) -> None:
             same.anchors += anchors
 
 
-def _radii(scene: Scene, sol: Any, num: Numbers) -> None:
+def _pairs(options: DrawOptions) -> Optional[set]:
+    """The pairs of bodies whose centres to draw (`DrawOptions.centre_pairs`), or None: all."""
+    return None if options.centre_pairs is None else {frozenset(p) for p in options.centre_pairs}
+
+
+def _radii(scene: Scene, sol: Any, num: Numbers, pairs: Optional[set] = None) -> None:
     """A centre found from velocities (a vehicle's unit): the line from it to each pin of
     its body, the perpendicular to that pin's velocity (the trailer's centre on the line
     through the tractor's centre and the hitch), unless a line already drawn is that one."""
@@ -211,7 +216,8 @@ def _radii(scene: Scene, sol: Any, num: Numbers) -> None:
 
     drawn = scene.normals + scene.kennedy
     for c in all_centres(sol):
-        if c.how != "velocities" or c.value.get("point") is None or sol.model.frame not in c.pair:
+        if c.how != "velocities" or c.value.get("point") is None or sol.model.frame not in c.pair \
+                or (pairs is not None and frozenset(c.pair) not in pairs):
             continue
         centre = num.page(c.value["point"])
         for j in scene.joints:
@@ -240,7 +246,7 @@ def _asked_centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -
     if options.centres is False:
         return
     if options.centres and scene.dim == 2:
-        _all_centres(scene, sol, num, options.lang)
+        _all_centres(scene, sol, num, options.lang, _pairs(options))
         return
     if options.centres:
         scene.notes.append("instant centres are planar: not drawn for a 3D model")
@@ -263,21 +269,29 @@ def _add_centre(scene: Scene, num: Numbers, value: dict, key: str, label: str,
         scene.marks.append(MarkView("icr", key, label, direction=d / np.linalg.norm(d), pair=pair))
 
 
-def _all_centres(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None) -> None:
-    """Every centre, labelled I₁₃ by body numbers, with the Kennedy lines that found them."""
+def _all_centres(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None,
+                 pairs: Optional[set] = None) -> None:
+    """Every centre (or those of `pairs`), labelled I₁₃ by body numbers, with the Kennedy
+    lines that found them (from two centres drawn)."""
     from ..questions.centres import all_centres
 
     centres = all_centres(sol)
     number = {name: b.number for name, b in scene.bodies.items()}
     by_pair = {frozenset(c.pair): c for c in centres}
+    shown = set(by_pair) if pairs is None else set(by_pair) & pairs
     for c in centres:
+        if frozenset(c.pair) not in shown:
+            continue
         a, b = sorted(c.pair, key=lambda name: number[name])
         _add_centre(scene, num, c.value, f"centre:{a}-{b}", pair_symbol("I", sol.model, a, b, lang),
                     (a, b))
     for c in centres:
-        if c.how != "kennedy":
+        if c.how not in ("kennedy", "lines") or frozenset(c.pair) not in shown:
             continue
-        for third in c.via:
+        thirds = c.via if c.how == "kennedy" else [name for kind, name in c.lines if kind == "third"]
+        for third in thirds:
+            if not {frozenset((c.pair[0], third)), frozenset((third, c.pair[1]))} <= shown:
+                continue
             line = _kennedy_line(num, by_pair[frozenset((c.pair[0], third))].value,
                                  by_pair[frozenset((third, c.pair[1]))].value, c.value)
             if line is not None:

@@ -58,6 +58,7 @@ class BodyView:
     label: str = ""                        # its name as the figure writes it (the model's
                                            # name in the figure's language, else its own)
     index: str = ""                        # how labels write it: its number, or the model's index
+    fixed: bool = False                    # welded to the frame (an inclined plane): drawn as ground
 
 
 @dataclass

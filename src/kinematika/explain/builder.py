@@ -19,13 +19,13 @@ from .contacts import contact_section
 from .copies import copies
 from .centres import centre_sites, centres_first, centres_section
 from .context import Ctx, omega_sym
-from .data import data_section
+from .data import contact_rows, data_section
 from .document import Ann, Document, Equation, Msg, Name, Section, Sym, msg
 from .group import refine
 from .order import solution_order
 from .planar import PlanarSteps
 from .needs import accelerations_asked, prune
-from .polygon import level_polygon, polygon
+from .polygon import degenerate, level_polygon, polygon
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
 from .structure import structure_section, values_table
@@ -91,6 +91,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
         found_forward(eq)
     prune(ctx, doc)
     translations(ctx, doc)
+    contact_rows(ctx, doc)
     said = relative_convention(doc)
     if said is not None:
         doc.sections[0].blocks.insert(2, said)
@@ -108,9 +109,10 @@ SPLIT = 14          # a level polygon with more arrows than this is drawn step b
 
 def level_polygons(ctx: Ctx, sec: Section, level: str) -> None:
     """The level's polygon at its end; one per step when a single one would be a star of
-    overlapping arrows (the epicyclic train's accelerations)."""
+    overlapping arrows (the epicyclic train's accelerations); none when it is `degenerate`
+    (its arrows on one line, its images piled up: C5-1.5's pulleys)."""
     whole = level_polygon(ctx, _equations(sec), level)
-    if whole is None:
+    if whole is None or degenerate(whole):         # a line of arrows with piled-up images: left out
         return
     steps = [b for b in sec.blocks if isinstance(b, Section)]
     if len(whole.arrows) <= SPLIT or len(steps) < 2:

@@ -42,7 +42,8 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
     if part != "rest":
         sec.add(msg("centres.intro", example=Sym("I", "13", vector=False)))
     if part == "all" or (part == "first") == (len(first) == len(chosen)) or part == "rest":
-        sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False))
+        sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False,
+                        centre_pairs=used_pairs(made, chosen)))
     for key in keys:
         sec.blocks.append(made[key])
         if part == "all" and key in asked and made[key].how in ("kennedy", "lines", "weld") \
@@ -51,6 +52,21 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
             if _field(ctx, check):
                 sec.blocks.append(check)
     return sec
+
+
+def used_pairs(made: dict, chosen: list) -> list[tuple[str, str]]:
+    """The pairs whose centres the text uses — those it writes and those their notes are
+    found from (a weld's other centre, Aronhold–Kennedy's two lines) — which are all the
+    centres' figure shows: a figure of every pair (C5-1.5's 36) hides the few the step needs."""
+    keys = list(chosen)
+    for key in chosen:
+        note = made[key]
+        if note.how in ("kennedy", "proportional"):
+            a, b = note.pair
+            keys += [frozenset(p) for k in note.via if isinstance(k, str) for p in ((a, k), (k, b))]
+        elif note.how == "weld" and note.same:
+            keys.append(frozenset(note.same["pair"]))
+    return [tuple(sorted(k)) for k in dict.fromkeys(keys) if len(k) == 2]
 
 
 def _placed(ctx: Ctx, note: CentreNote) -> bool:

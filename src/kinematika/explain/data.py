@@ -188,7 +188,90 @@ def what_point(ctx: Ctx, name: str) -> Optional[Msg]:
             return msg("what.joint", joint=Name(j.id, "joint"), kind=msg(f"joint.{kind_key(j, ctx.frame)}"),
                        a=Name(j.a, "body"), b=Name(j.b, "body"))
     holders = [b for b, carrier in ctx.model.bodies.items() if name in carrier.points]
+    touching = _touching(ctx, name, holders)
+    if touching is not None:
+        return touching
     return msg("what.body", bodies=names(holders, "body")) if holders else None
+
+
+def _touching(ctx: Ctx, name: str, holders: list[str]) -> Optional[Msg]:
+    """A point that is, at the instant, where a body holding it touches another (a rolling
+    joint's contact: C5-1.5's T2, where strand 2 leaves pulley 2): "the point of strand 2
+    where it touches pulley 2 (joint j4)". A body welded to the frame holds the frame's
+    points (C5-1.2's K1 on the left plane)."""
+    from .kinds import welds
+
+    if ctx.symbolic and not ctx.inst.env:
+        return None
+    where = ctx.num(ctx.pos(name))
+    tol = 1e-9 * max(float(ctx.num(ctx.inst.scale)), 1e-300)
+    for j in ctx.model.joints:
+        if not j.kind.touches or welds(j):
+            continue
+        contact = ctx.sol.geometry(j.id).contact
+        if contact is None or max(abs(a - b) for a, b in zip(ctx.num(contact.point), where)) > tol:
+            continue
+        for own, other in ((j.a, j.b), (j.b, j.a)):
+            if own in holders or any(ctx.fixed(h) and ctx.fixed(own) for h in holders):
+                held = own if own in holders else next(h for h in holders if ctx.fixed(h))
+                return msg("what.touching", body=Name(held, "body"), other=Name(other, "body"),
+                           joint=Name(j.id, "joint"))
+    return None
+
+
+def contact_rows(ctx: Ctx, doc: Any) -> None:
+    """The contact points the equations name (J1, J4 …: the explanation names them, the model
+    does not) join the Data section's table of points, with what they are and where, so
+    that every point an equation names is defined before it is used (C5-1.5's J1 … J10)."""
+    table = next((b for b in doc.sections[0].blocks if isinstance(b, Table)
+                  and getattr(b.header[0], "key", "") == "col.point"), None)
+    if table is None:
+        return
+    listed = {row[0].text for row in table.rows if isinstance(row[0], Name)}
+    used = points_named(doc, frozenset(ctx.model.points))
+    from .kinds import kind_key
+
+    for jid, name in ctx._contacts.items():
+        if name in listed or name not in used:
+            continue
+        j = ctx.model.joint(jid)
+        what = msg("what.contact", joint=Name(j.id, "joint"), kind=msg(f"joint.{kind_key(j, ctx.frame)}"),
+                   a=Name(j.a, "body"), b=Name(j.b, "body"))
+        where: Any = Value(ctx.clean(ctx.pos(name), "len"), "len")
+        at = _point_at(ctx, ctx.pos(name))
+        if at is not None:                  # the contact is a point the model names (E.3's J1): J1′ = J1 = (0, 0)
+            where = Inline([point(at), " = ", where])
+        table.rows.append([point(name), what, where])
+        listed.add(name)
+
+
+def _point_at(ctx: Ctx, where: tuple) -> Optional[str]:
+    """The model's point at `where` at the instant, if any."""
+    if ctx.symbolic and not ctx.inst.env:
+        return None
+    here = ctx.num(where)
+    tol = 1e-9 * max(float(ctx.num(ctx.inst.scale)), 1e-300)
+    return next((p for p in ctx.model.points
+                 if max(abs(a - b) for a, b in zip(ctx.num(ctx.pos(p)), here)) <= tol), None)
+
+
+def points_named(doc: Any, known: frozenset = frozenset()) -> set[str]:
+    """The point names the document's equations write, read off their symbols' subscripts:
+    v_J4∈3 → J4, v_{C1-J1} → C1 and J1, a segment of two one-letter names (CJ) → C and J
+    (unless it is a `known` point's name: RL)."""
+    import re
+
+    out: set[str] = set()
+    for eq in doc.equations():
+        for term in [eq.target] + [t for side in eq.sides for t in side]:
+            sub = term.sym.sub.split("/")[0].split(",")[0]
+            for part in re.split(r"[-,]", sub):
+                name = part.split("∈")[0].strip()
+                if name:
+                    out.add(name)
+                    if len(name) == 2 and name.isalpha() and name not in known:
+                        out |= {name[0], name[1]}
+    return out
 
 
 def _coordinates(ctx: Ctx, exprs: tuple, value: tuple) -> Any:

@@ -48,14 +48,16 @@ class PlanarSteps:
         title = "sec.velocities" if self.level == "v" else "sec.accelerations"
         sec = Section(msg(title))
         sec.add(msg("v.intro" if self.level == "v" else "a.intro"))
-        for i, step in enumerate(merge_vehicles(self.ctx, self.steps), 1):
+        i = 0
+        for step in merge_vehicles(self.ctx, self.steps):
+            if all(self.ctx.fixed(b) for b in step.bodies):  # welded to the frame: part of it, said in Structure
+                self.used.update(step.joints)
+                self.known.update(step.bodies)
+                continue
+            i += 1
             sub = Section(msg("step.title", n=i, kind=msg(f"kind.{step.kind}"),
                               bodies=names(step.bodies, "body")), level=3)
-            if all(self.ctx.fixed(b) for b in step.bodies):       # welded to the frame: said, not solved
-                sub.blocks = [msg("step.fixed", bodies=names(step.bodies, "body"), frame=body(self.ctx.frame))]
-                self.used.update(step.joints)
-            else:
-                sub.blocks = self.step(step)
+            sub.blocks = self.step(step)
             sec.blocks.append(sub)
             self.known.update(step.bodies)
         if self.level == "a" and self.ctx.symbolic and self.ctx.inst.names:

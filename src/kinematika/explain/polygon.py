@@ -19,6 +19,7 @@ from .document import Arrow, Equation, Figure, msg
 
 OFFSET = 0.035          # of the polygon's size: the gap between collinear arrows
 SAME = 1e-9             # relative: two points (or arrows) are one
+MAX_AT_POINT = 3        # images at one point, written as one label: more is no label a reader parses
 
 
 def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = False) -> Figure | None:
@@ -35,9 +36,23 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     key = ("fig.step_v" if level == "v" else "fig.step_a") if step else ("fig.level_v" if level == "v" else "fig.level_a")
     fig = Figure(msg(key), unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows = _separated(poly.arrows)
-    fig.points = [("o", (0.0, 0.0), "pole")] + [(name, xy, "image") for name, xy in poly.images.items()
-                                                 if not poly.at_pole(xy)]
+    fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
     return fig
+
+
+def degenerate(fig: Figure) -> bool:
+    """Whether a polygon constructs nothing and cannot be read: all its arrows lie along one
+    direction (no triangle closes: the equations' values say all it would) and more than
+    `MAX_AT_POINT` images fall on one point (C5-1.5's pulleys: five contact points' images
+    where the block's speed is, their labels piled up). Such a polygon is left out."""
+    dirs = [(a.end[0] - a.start[0], a.end[1] - a.start[1]) for a in fig.arrows]
+    dirs = [d for d in dirs if d != (0.0, 0.0)]
+    if not dirs:
+        return True
+    ux, uy = dirs[0]
+    along = all(abs(ux * vy - uy * vx) <= 1e-6 * math.hypot(ux, uy) * math.hypot(vx, vy) for vx, vy in dirs)
+    crowded = max((name.count(", ") + 1 for name, _, kind in fig.points if kind == "image"), default=0)
+    return along and crowded > MAX_AT_POINT
 
 
 def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
@@ -53,8 +68,7 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
                      unknown=int("unknown" in styles), result=int("result" in styles)),
                  arrows=_separated(poly.arrows), unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic,
                  values=ctx.drawn_values())
-    fig.points = [("o", (0.0, 0.0), "pole")] + [(n, xy, "image") for n, xy in poly.images.items()
-                                                 if not poly.at_pole(xy)]
+    fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
     return fig
 
 
@@ -69,6 +83,21 @@ class _Builder:
 
     def at_pole(self, xy: tuple) -> bool:
         return math.hypot(*xy) <= SAME * self._scale()
+
+    def image_points(self) -> list[tuple[str, tuple, str]]:
+        """The images off the pole, those at one point written as one label (a, b, d: C5-E.5's
+        chassis points, which move alike), so that no two labels fall on each other."""
+        groups: list[tuple[list[str], tuple]] = []
+        size = self._scale()
+        for name, xy in self.images.items():
+            if self.at_pole(xy):
+                continue
+            same = next((g for g in groups if math.hypot(g[1][0] - xy[0], g[1][1] - xy[1]) <= 1e-7 * size), None)
+            if same is None:
+                groups.append(([name], xy))
+            else:
+                same[0].append(name)
+        return [(", ".join(sorted(names)), xy, "image") for names, xy in groups]
 
     def _scale(self) -> float:
         pts = [p for a in self.arrows for p in (a.start, a.end)]

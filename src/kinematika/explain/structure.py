@@ -3,6 +3,8 @@
 order of solution."""
 from __future__ import annotations
 
+from typing import Optional
+
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
@@ -16,11 +18,10 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     them) with their points and shapes, the joints with their bodies and places, the degrees of
     freedom by the rank of the joints' conditions, the drawing, and the order of solution
     `steps`."""
-    model, sol = ctx.model, ctx.sol
+    model = ctx.model
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
-    bodies = [[Name(name, "index"), msg("structure.frame", body=Name(name, "body", bare=True)) if name == ctx.frame
-               else Name(name, "body", bare=True),
+    bodies = [[Name(name, "index"), _body_cell(ctx, name),
                [point(p) for p in b.points],
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
@@ -28,19 +29,50 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     joints = [[joint(j.id), msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]
     sec.add(Table([msg("col.joint"), msg("col.type"), msg("col.bodies"), msg("col.where")], joints))
-    d = sol.diagnosis
-    sec.add(msg("structure.dof", n=d.n, moving=len(model.moving_bodies), rank=d.n - d.dof, dof=d.dof,
-                conditions=d.conditions))
+    welded = welded_to_frame(ctx)
+    if welded:
+        sec.add(msg("structure.welded", bodies=names(welded, "body"), bodies_n=len(welded), frame=body(ctx.frame)))
+    sec.add(msg("structure.dof", **dof_counts(ctx)))
     sec.add(drawing(ctx, "fig.mechanism", velocities=True, accelerations=False, centres=False, curvature=False))
     if not steps:
         return sec
     order = Section(msg("sec.order"), level=3)
     order.add(msg("order.assur" if steps and steps[0].source == "assur" else "order.blocks"))
-    for i, s in enumerate(steps, 1):
+    for i, s in enumerate([s for s in steps if not all(ctx.fixed(b) for b in s.bodies)], 1):
         order.add(msg("order.item", n=i, kind=msg(f"kind.{s.kind}"), bodies=names(s.bodies, "body"),
                       joints=names(s.joints, "joint"), known=names(s.known, "body")))
     sec.add(order)
     return sec
+
+
+def welded_to_frame(ctx: Ctx) -> list[str]:
+    """The bodies welded to the frame (directly or through other welds: C5-1.2's inclined
+    planes): they are part of the fixed body, not moving bodies — a weld leaves no relative
+    motion, so what is welded to the ground is ground."""
+    return [b for b in ctx.model.moving_bodies if ctx.fixed(b)]
+
+
+def dof_counts(ctx: Ctx) -> dict:
+    """The degrees-of-freedom sentence's numbers, the bodies welded to the frame counted with
+    it: each such body takes away its k velocity components (3 in the plane, 6 in space) and
+    the k independent conditions of its weld, which pin exactly those components — so the
+    unknowns n and the rank fall by k for each, and the degrees of freedom stay n − rank."""
+    d = ctx.sol.diagnosis
+    moving = len(ctx.model.moving_bodies)
+    k = d.n // moving if moving else 0
+    welded = len(welded_to_frame(ctx))
+    n = d.n - k * welded
+    return {"n": n, "moving": moving - welded, "rank": n - d.dof, "dof": d.dof, "conditions": d.conditions}
+
+
+def _body_cell(ctx: Ctx, name: str):
+    """The structure table's body: the frame marked fixed, a body welded to it marked part
+    of it (`welded_to_frame`)."""
+    if name == ctx.frame:
+        return msg("structure.frame", body=Name(name, "body", bare=True))
+    if ctx.fixed(name):
+        return msg("structure.fixed_part", body=Name(name, "body", bare=True), frame=body(ctx.frame))
+    return Name(name, "body", bare=True)
 
 
 def _where(ctx: Ctx, j) -> Inline | str:
@@ -71,11 +103,27 @@ def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
     options.setdefault("width", PRINT_WIDTH)
     args: dict = {"dim": ctx.space.dim}
     if caption == "fig.centres":
-        args["normals"] = Names([msg(f"fig.normal.{k}") for k in _normal_lines(ctx)])
+        kennedy, joints = _lines_drawn(ctx, options)
+        args["normals"] = Names([msg(f"fig.normal.{k}") for k in _normal_lines(ctx, joints)])
+        args["kennedy"] = int(kennedy)
     return Drawing(msg(caption, **args), ctx.sol, options, fallback, values)
 
 
-def _normal_lines(ctx: Ctx) -> list[str]:
+def _lines_drawn(ctx: Ctx, options: dict) -> tuple[bool, Optional[set]]:
+    """Whether the centres' figure draws Aronhold–Kennedy lines, and the joints whose normals
+    it draws (None: every joint's), read off the figure itself when it shows only some
+    centres (`centre_pairs`): its caption names only the lines it has (C5-1.5's two centres
+    stand on none)."""
+    if options.get("centre_pairs") is None:
+        return True, None
+    from ..draw.build import build_scene
+    from ..draw.options import DrawOptions
+
+    scene = build_scene(ctx.inst, ctx.sol, DrawOptions(**options))
+    return bool(scene.kennedy), {k.key.split(":", 1)[1] for k in scene.normals}
+
+
+def _normal_lines(ctx: Ctx, joints: Optional[set] = None) -> list[str]:
     """The kinds of line, other than Aronhold–Kennedy's, that the centres' figure draws
     centres on, in the model's order: each joint that puts its bodies' centre on a line
     (`Centre.NORMAL`) says which (`centre_line`: a wheel's axle, a slot's normal, a contact's
@@ -84,7 +132,7 @@ def _normal_lines(ctx: Ctx) -> list[str]:
     from ..joints.capabilities import Centre
 
     kinds = [kind_key(j, ctx.frame) if on_fixed_line(j, ctx.frame) else j.kind.centre_line
-             for j in ctx.model.joints if j.kind.centre is Centre.NORMAL]
+             for j in ctx.model.joints if j.kind.centre is Centre.NORMAL and (joints is None or j.id in joints)]
     return list(dict.fromkeys(kinds))
 
 
@@ -136,5 +184,5 @@ def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
 
     rows = [[Name(b, "body", bare=True), value(ctx.omega(b), "rate")]
             + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies
-            if b not in belt_runs(ctx)]
+            if b not in belt_runs(ctx) and not ctx.fixed(b)]   # a weld to the frame: part of it
     return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)

@@ -68,7 +68,7 @@ class Mark:
     fill: str = "none"
     width: float = 1.3                  # line width, points
     size: float = 0.0                   # a dot's diameter, an arrow head's, a text's font, points
-    hatch: bool = False                 # the frame's hatching
+    hatch: bool | str = False           # the frame's hatching (a matplotlib pattern: across an edge)
     dash: Any = False                   # True: dash-dot (an axis); or dash lengths in line widths
     zorder: float = 3
     moves_with: Optional[str] = None    # the body that carries it (None: fixed)

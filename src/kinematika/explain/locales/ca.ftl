@@ -30,6 +30,14 @@ col-alpha = acceleració angular
 col-question = pregunta
 col-answer = resposta
 structure-frame = { $body } (fix)
+structure-welded = { $bodies } { $bodies_n ->
+        [one] està unit
+       *[other] estan units
+    } rígidament a { $frame }: { $bodies_n ->
+        [one] forma part del sòlid fix, no és un sòlid mòbil
+       *[other] formen part del sòlid fix, no són sòlids mòbils
+    }; tots els seus punts tenen velocitat i acceleració nul·les.
+structure-fixed_part = { $body } (unit rígidament a { $frame }: fix)
 structure-dof = Incògnites: { $n } components de velocitat { $moving ->
         [one] d’un sòlid mòbil
        *[other] de { $moving } sòlids mòbils
@@ -160,13 +168,6 @@ kind-PRP = díade PRP
 kind-other = grup resolt conjuntament
 kind-copy = igual que un sòlid ja resolt
 step-title = Pas { $n }: { $kind } — { $bodies }
-step-fixed = { $bodies } { $bodies_n ->
-        [one] està unit
-       *[other] estan units
-    } rígidament a { $frame }: no es { $bodies_n ->
-        [one] mou
-       *[other] mouen
-    }, i tots els seus punts tenen velocitat i acceleració nul·les.
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
 v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
@@ -462,10 +463,16 @@ copy-same = { $body } té els mateixos enllaços, amb els mateixos sòlids, i el
         [1] acceleració angular
        *[other] velocitat angular
     }:
-fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme, amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy{ $normals_n ->
-        [0] {""}
-       *[other] {" "}i { $normals }
-    }).
+fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , amb les rectes on es troben (traç i punt: { $normals }).
+        }
+       *[other] , amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy{ $normals_n ->
+            [0] {""}
+           *[other] {" "}i { $normals }
+        }).
+    }
 fig-normal-wheel = les perpendiculars a les rodes
 fig-normal-slot = les normals a les ranures
 fig-normal-slot_fixed = les normals a les rectes per on llisquen els punts
@@ -564,6 +571,11 @@ what-centre = centre { ELISION($body) ->
        *[other] de { $body }
     }
 what-joint = enllaç { $joint }, { $kind }, entre { $a } i { $b }
+what-touching = el punt { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } on toca { $other } (enllaç { $joint })
+what-contact = punt de contacte de l’enllaç { $joint } ({ $kind }), entre { $a } i { $b }
 what-body = un punt { ELISION($bodies) ->
         [vowel] d’{ $bodies }
        *[other] de { $bodies }

@@ -30,6 +30,17 @@ col-alpha = angular acceleration
 col-question = question
 col-answer = answer
 structure-frame = { $body } (fixed)
+structure-welded = { $bodies } { $bodies_n ->
+        [one] is
+       *[other] are
+    } welded to { $frame }: part of the fixed body, not { $bodies_n ->
+        [one] a moving body
+       *[other] moving bodies
+    }; all { $bodies_n ->
+        [one] its
+       *[other] their
+    } points have zero velocity and acceleration.
+structure-fixed_part = { $body } (welded to { $frame }: fixed)
 structure-dof = Unknowns: { $n } velocity components of { $moving ->
         [one] one moving body
        *[other] { $moving } moving bodies
@@ -124,16 +135,6 @@ kind-PRP = PRP dyad
 kind-other = group solved together
 kind-copy = the same as a body found before
 step-title = Step { $n }: { $kind } — { $bodies }
-step-fixed = { $bodies } { $bodies_n -> 
-        [one] is
-       *[other] are
-    } welded to { $frame }: { $bodies_n ->
-        [one] it does
-       *[other] they do
-    } not move, and all { $bodies_n ->
-        [one] its
-       *[other] their
-    } points have zero velocity and acceleration.
 sec-velocities = Velocities
 sec-accelerations = Accelerations
 v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
@@ -264,10 +265,16 @@ copy-same = { $body } is joined to the same bodies in the same way, with the sam
         [1] acceleration
        *[other] velocity
     }:
-fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism, with the lines they are found on (dash-dot: Aronhold–Kennedy lines{ $normals_n ->
-        [0] {""}
-       *[other] {" "}and { $normals }
-    }).
+fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , with the lines they are found on (dash-dot: { $normals }).
+        }
+       *[other] , with the lines they are found on (dash-dot: Aronhold–Kennedy lines{ $normals_n ->
+            [0] {""}
+           *[other] {" "}and { $normals }
+        }).
+    }
 fig-normal-wheel = the perpendiculars to the wheels
 fig-normal-slot = the normals to the slots
 fig-normal-slot_fixed = the normals to the lines the points slide on
@@ -342,6 +349,8 @@ col-point = point
 col-what = what it is
 what-centre = centre of { $body }
 what-joint = joint { $joint }, { $kind }, between { $a } and { $b }
+what-touching = the point of { $body } where it touches { $other } (joint { $joint })
+what-contact = contact point of joint { $joint } ({ $kind }), between { $a } and { $b }
 what-body = a point of { $bodies }
 note-text = Note: { $text }
 sec-checks = Checks

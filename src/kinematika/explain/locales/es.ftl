@@ -30,6 +30,14 @@ col-alpha = aceleración angular
 col-question = pregunta
 col-answer = respuesta
 structure-frame = { $body } (fijo)
+structure-welded = { $bodies } { $bodies_n ->
+        [one] está unido
+       *[other] están unidos
+    } rígidamente a { $frame }: { $bodies_n ->
+        [one] forma parte del sólido fijo, no es un sólido móvil
+       *[other] forman parte del sólido fijo, no son sólidos móviles
+    }; todos sus puntos tienen velocidad y aceleración nulas.
+structure-fixed_part = { $body } (unido rígidamente a { $frame }: fijo)
 structure-dof = Incógnitas: { $n } componentes de velocidad de { $moving ->
         [one] un sólido móvil
        *[other] { $moving } sólidos móviles
@@ -124,13 +132,6 @@ kind-PRP = díada PRP
 kind-other = grupo resuelto en conjunto
 kind-copy = igual que un sólido ya resuelto
 step-title = Paso { $n }: { $kind } — { $bodies }
-step-fixed = { $bodies } { $bodies_n ->
-        [one] está unido
-       *[other] están unidos
-    } rígidamente a { $frame }: no se { $bodies_n ->
-        [one] mueve
-       *[other] mueven
-    }, y todos sus puntos tienen velocidad y aceleración nulas.
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
 v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas{ $format ->
@@ -291,10 +292,16 @@ copy-same = { $body } tiene las mismas uniones, con los mismos sólidos, y el mi
         [1] aceleración angular
        *[other] velocidad angular
     }:
-fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo, con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy{ $normals_n ->
-        [0] {""}
-       *[other] {" "}y { $normals }
-    }).
+fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , con las rectas en que se hallan (trazo y punto: { $normals }).
+        }
+       *[other] , con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy{ $normals_n ->
+            [0] {""}
+           *[other] {" "}y { $normals }
+        }).
+    }
 fig-normal-wheel = las perpendiculares a las ruedas
 fig-normal-slot = las normales a las ranuras
 fig-normal-slot_fixed = las normales a las rectas por las que deslizan los puntos
@@ -369,6 +376,8 @@ col-point = punto
 col-what = qué es
 what-centre = centro de { $body }
 what-joint = par { $joint }, { $kind }, entre { $a } y { $b }
+what-touching = el punto de { $body } donde toca { $other } (par { $joint })
+what-contact = punto de contacto del par { $joint } ({ $kind }), entre { $a } y { $b }
 what-body = un punto de { $bodies }
 note-text = Nota: { $text }
 sec-checks = Comprobaciones

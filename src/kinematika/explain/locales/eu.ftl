@@ -30,6 +30,14 @@ col-alpha = azelerazio angeluarra
 col-question = galdera
 col-answer = erantzuna
 structure-frame = { $body } (finkoa)
+structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
+        [one] dago: solido finkoaren zati da, ez solido mugikorra
+       *[other] daude: solido finkoaren zati dira, ez solido mugikorrak
+    }; { $bodies_n ->
+        [one] haren
+       *[other] haien
+    } puntu guztien abiadura eta azelerazioa nuluak dira.
+structure-fixed_part = { $body } ({ $frame } solidoari zurrunki lotuta: finkoa)
 structure-dof = Ezezagunak: { $moving ->
         [one] solido mugikor baten
        *[other] { $moving } solido mugikorren
@@ -127,13 +135,6 @@ kind-PRP = PRP diada
 kind-other = batera ebatzitako taldea
 kind-copy = aurretik ebatzitako solido baten berdina
 step-title = { $n }. urratsa: { $kind } — { $bodies }
-step-fixed = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
-        [one] dago: ez da mugitzen
-       *[other] daude: ez dira mugitzen
-    }, eta { $bodies_n ->
-        [one] haren
-       *[other] haien
-    } puntu guztien abiadura eta azelerazioa nuluak dira.
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
 v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
@@ -264,10 +265,16 @@ copy-same = { $body } solido berberei lotuta dago, { $original } bezala eta erra
         [1] azelerazio angeluar
        *[other] abiadura angeluar
     } berarekin:
-fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean, aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak{ $normals_n ->
-        [0] {""}
-       *[other] {" "}eta { $normals }
-    }).
+fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , aurkitzeko zuzenekin (marra-puntua: { $normals }).
+        }
+       *[other] , aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak{ $normals_n ->
+            [0] {""}
+           *[other] {" "}eta { $normals }
+        }).
+    }
 fig-normal-wheel = gurpilen perpendikularrak
 fig-normal-slot = arteken perpendikularrak
 fig-normal-slot_fixed = puntuak irristatzen diren zuzenen perpendikularrak
@@ -342,6 +349,8 @@ col-point = puntua
 col-what = zer den
 what-centre = { $body } solidoaren zentroa
 what-joint = { $joint } lotura, { $kind }, { $a } eta { $b } solidoen artean
+what-touching = { $body } solidoak { $other } ukitzen duen puntua ({ $joint } lotura)
+what-contact = { $joint } loturaren ukipen-puntua ({ $kind }), { $a } eta { $b } solidoen artean
 what-body = { $bodies } { $bodies_n ->
         [one] solidoaren
        *[other] solidoen

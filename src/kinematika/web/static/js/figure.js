@@ -234,23 +234,25 @@ export class Figure {
   /** A mark's fill and stroke: its colours, opacity, width in points, dashes in line widths. */
   paintOf(m) {
     const a = m.alpha ?? 1, stroked = m.width > 0 && !m.hatch && m.colour !== "none";
-    return { fill: m.hatch ? this.hatch(m.colour) : m.fill, "fill-opacity": a < 1 ? a : null,
+    return { fill: m.hatch ? this.hatch(m.colour, typeof m.hatch === "string" && m.hatch.startsWith("\\")) : m.fill, "fill-opacity": a < 1 ? a : null,
              stroke: stroked ? m.colour : "none", "stroke-opacity": a < 1 ? a : null, "stroke-width": stroked ? m.width * PT : null,
              "stroke-dasharray": m.dash && stroked ? m.dash.map((d) => d * m.width * PT).join(" ") : null,
              "stroke-linecap": CAPS[m.cap] || "square", "stroke-linejoin": m.join === "round" ? "round" : null };
   }
 
-  /** The hatching in `colour`: lines rising to the right, as far apart and as wide (points)
-   * as the scene's `style.hatch` says (matplotlib's). */
-  hatch(colour) {
-    if (!this.hatches[colour]) {
+  /** The hatching in `colour`: lines rising to the right (falling, across a fixed edge that
+   * rises near 45°: the mark's hatch is matplotlib's backslashes), as far apart and as wide
+   * (points) as the scene's `style.hatch` says (matplotlib's). */
+  hatch(colour, falling = false) {
+    const key = `${colour}${falling ? "\\" : "/"}`;
+    if (!this.hatches[key]) {
       const { spacing, width } = this.scene.style.hatch;
       const id = `hatch${Object.keys(this.hatches).length}`, step = spacing * PT * this.px;
-      const p = el("pattern", { id, patternUnits: "userSpaceOnUse", width: step, height: step, patternTransform: "rotate(45)" }, this.defs);
+      const p = el("pattern", { id, patternUnits: "userSpaceOnUse", width: step, height: step, patternTransform: `rotate(${falling ? -45 : 45})` }, this.defs);
       el("line", { x1: 0, y1: 0, x2: 0, y2: step, stroke: colour, "stroke-width": width * PT * this.px, class: "model-width" }, p);
-      this.hatches[colour] = `url(#${id})`;
+      this.hatches[key] = `url(#${id})`;
     }
-    return this.hatches[colour];
+    return this.hatches[key];
   }
 
   /** An arrow from `start` to `end` with its heads (`-|>` or `<|-|>`, of its size in points),

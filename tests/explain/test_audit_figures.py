@@ -1,0 +1,170 @@
+"""What the independent audit of issue 30 found in C5-1.2 and C5-1.5, as rules (docs/explain.md,
+"The independent audit, and what was fixed after it"): a body welded to the ground is ground,
+the wheels drawn do not overlap, a fixed plane is drawn as the segment of ground it is, the
+centres' figure shows the centres the text uses, and every point an equation names is in the
+Data section's table of points."""
+from __future__ import annotations
+
+import math
+import re
+
+import pytest
+
+from kinematika.explain import render
+
+from .helpers import WORKED, explained
+
+C5_1_2 = "seed_c5_1_2_bar_on_inclined_wheels"
+
+
+def test_a_body_welded_to_the_ground_is_not_a_moving_body():
+    """C5-1.2's planes are welded to the ground: the degrees-of-freedom sentence counts 4 moving
+    bodies (the wheels and the two bars: 12 velocity components, 11 independent conditions,
+    one degree of freedom — counted by hand: 2 rolling contacts × 2, 3 pins × 2, the floor's
+    1 + 1 … of which one is redundant as the engine's diagnosis says), the structure table
+    marks the planes fixed, and no step or rates' row is given to them."""
+    sol, doc = explained(C5_1_2)
+    text = render(doc, "en", "md", drawings=False)
+    assert "12 velocity components of 4 moving bodies" in text
+    assert "so the mechanism has one degree of freedom" in text
+    assert "*left plane* (welded to *ground*: fixed)" in text
+    assert "part of the fixed body, not moving bodies" in text
+    velocities = text.split("## Velocities", 1)[1].split("## Angular velocities", 1)[0]
+    assert "### Step 1: group solved together — *bar OQ*" in velocities
+    rates = text.split("## Angular velocities", 1)[1].split("##", 1)[0]
+    assert "plane" not in rates
+    for lang, words in (("ca", "4 sòlids mòbils"), ("eu", "4 solido mugikorren"), ("es", "4 sólidos móviles")):
+        assert words in render(doc, lang, "md", drawings=False), lang
+
+
+def _circles(sol) -> list[tuple[str, tuple, float]]:
+    """(body, centre, radius) of every circle as drawn (a symbolic model at its draw_at
+    values): the figure's own numbers."""
+    from kinematika.draw.build import build_scene
+
+    scene = build_scene(sol.inst, sol)
+    return [(b.name, tuple(float(c) for c in s.center), float(s.radius))
+            for b in scene.bodies.values() for s in b.shapes if s.kind == "circle"]
+
+
+@pytest.mark.parametrize("name", sorted(p for p in WORKED if p.startswith("seed_")))
+def test_no_two_wheels_overlap_at_the_drawn_instant(name):
+    """Two circles of different bodies either lie apart, touch (a contact), or one holds the
+    other (a ring): they never cross. C5-1.2's wheels at s = 2 crossed (|OQ| = 1.956 < 2r)."""
+    sol, _ = explained(name)
+    circles = _circles(sol)
+    assert len(circles) >= 2 or name != C5_1_2
+    for i, (a, ca, ra) in enumerate(circles):
+        for b, cb, rb in circles[i + 1:]:
+            if a == b:
+                continue
+            d = math.dist(ca, cb)
+            tol = 1e-9 * (ra + rb)
+            crossing = abs(ra - rb) + tol < d < ra + rb - tol
+            assert not crossing, (name, a, b, d, ra + rb)
+
+
+def _drawings(doc, key: str) -> list:
+    from kinematika.explain.document import Drawing, Section
+
+    out: list = []
+
+    def walk(blocks) -> None:
+        for b in blocks:
+            if isinstance(b, Section):
+                walk(b.blocks)
+            elif isinstance(b, Drawing) and b.caption.key == key:
+                out.append(b)
+    walk(doc.sections)
+    return out
+
+
+@pytest.mark.parametrize("name", ["seed_c5_1_5_pulley_block", C5_1_2, "seed_c5_1_1_pulley_on_cable",
+                                  "seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"])
+def test_the_centres_figure_shows_only_the_centres_the_text_uses(name):
+    """The centres' figure marks no centre the text does not name (C5-1.5 drew all 36 pairs'
+    centres, ~30 of them unasked and unused, around the two the text writes: I_12, I_16)."""
+    from kinematika.draw.build import build_scene
+    from kinematika.draw.names import pair_tag
+    from kinematika.draw.options import DrawOptions
+
+    sol, doc = explained(name)
+    text = render(doc, "en", "md", drawings=False)
+    figures = _drawings(doc, "fig.centres")
+    assert figures, name
+    for fig in figures:
+        scene = build_scene(sol.inst, sol, DrawOptions(**fig.options))
+        drawn = [m.pair for m in scene.marks if m.kind == "icr"]
+        assert drawn, name
+        unused = [pair for pair in drawn if f"I_{pair_tag(sol.model, *pair)}" not in text]
+        assert not unused, (name, unused)
+    if name == "seed_c5_1_5_pulley_block":
+        assert sorted(pair_tag(sol.model, *m.pair) for m in scene.marks if m.kind == "icr") == ["12", "16"]
+
+
+CENTRE = re.compile(r"^I\d*$")         # an instant centre: defined in the centres section, not in Data
+
+
+def _defined(name: str, listed: set[str]) -> bool:
+    """A point name the table lists, a centre, or a segment of two of them (CJ, P2I, RLI)."""
+    if name in listed or CENTRE.match(name):
+        return True
+    return any((name[:k] in listed or CENTRE.match(name[:k])) and (name[k:] in listed or CENTRE.match(name[k:]))
+               for k in range(1, len(name)))
+
+
+@pytest.mark.parametrize("name", sorted(p for p in WORKED if p.startswith("seed_")))
+def test_every_point_an_equation_names_is_in_the_points_table(name):
+    """Every point the equations write (v_J4∈3, v_{C1-J1}, ω × CJ) is in the Data section's
+    table of points, with what it is — the model's points and the contact points the
+    explanation names (C5-1.5's J1 … J10 were in no table); instant centres are defined in
+    their own section."""
+    from kinematika.explain.data import points_named
+    from kinematika.explain.document import Table
+
+    _, doc = explained(name)
+    table = next(b for b in doc.sections[0].blocks if isinstance(b, Table)
+                 and getattr(b.header[0], "key", "") == "col.point")
+    listed = {row[0].text for row in table.rows}
+    missing = sorted(p for p in points_named(doc, frozenset(listed)) if not _defined(p, listed))
+    assert not missing, (name, missing)
+    assert all(row[1] is not None for row in table.rows)
+    if name == "seed_c5_1_5_pulley_block":
+        what = _points_table_en(doc)
+        assert what["T2"] == "the point of *strand 2* where it touches *pulley 2* (joint j4)"
+        assert what["J4"].startswith("contact point of joint j4 (rolling)")
+
+
+def _points_table_en(doc) -> dict[str, str]:
+    text = render(doc, "en", "md", drawings=False)
+    lines = text.split("| point |", 1)[1].split("\n\n", 1)[0].splitlines()[2:]
+    return {cells[1].strip(): cells[2].strip() for cells in (line.split("|") for line in lines)}
+
+
+@pytest.mark.parametrize("name", sorted(p for p in WORKED if p.startswith("seed_")))
+def test_no_polygon_piles_labels_on_one_point(name):
+    """A polygon writes the images that fall on one point as one label (a, b, d), at most
+    three names; a polygon whose arrows all lie on one line with more images on a point is
+    left out (C5-1.5's: eight vertical arrows, five contact points' images on one point)."""
+    from kinematika.explain.document import Figure, Section
+    from kinematika.explain.polygon import MAX_AT_POINT
+
+    _, doc = explained(name)
+    figures: list = []
+
+    def walk(blocks) -> None:
+        for b in blocks:
+            if isinstance(b, Section):
+                walk(b.blocks)
+            elif isinstance(b, Figure):
+                figures.append(b)
+    walk(doc.sections)
+    figures += [eq.polygon for eq in doc.equations() if eq.polygon is not None]
+    for fig in figures:
+        images = [(label, xy) for label, xy, kind in fig.points if kind == "image"]
+        for i, (a, p) in enumerate(images):
+            assert a.count(", ") + 1 <= MAX_AT_POINT, (name, a)
+            for b, q in images[i + 1:]:
+                assert math.dist(p, q) > 1e-9 * max(1.0, math.hypot(*p)), (name, a, b)
+    if name == "seed_c5_1_5_pulley_block":
+        assert not [f for f in figures if f.caption.key == "fig.level_v"]
