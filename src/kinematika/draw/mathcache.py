@@ -21,8 +21,9 @@ ORIGINAL: Any = None     # matplotlib's own `_parse_cached` (undecorated), once 
 
 def shared() -> None:
     """Make every `MathTextParser` use one cache per kind of output (once per process)."""
-    from matplotlib.mathtext import MathTextParser
+    from matplotlib.mathtext import MathTextParser as parser_class
 
+    MathTextParser: Any = parser_class          # its private cache is patched, untyped
     if getattr(MathTextParser, "_kinematika_shared", False):
         return
     parse = getattr(MathTextParser._parse_cached, "__wrapped__", None)
