@@ -2,7 +2,9 @@
 quick-return in Basque and the notes' epicyclic train in Catalan), measured.
 
 For each set: the whole command's wall time and CPU time (its own and its descendants': the
-worker processes and Chromium's, sampled), then, in this process, each phase's CPU time
+worker processes and Chromium's, sampled), when it wrote its milestone files (a timing log
+read from the files' times: the first figure, sheets.html, sheets.pdf, key.html, quiz.xml,
+key.pdf, in seconds from its start), then, in this process, each phase's CPU time
 (drawing the variants with their margins and mistakes; the statement figures; the worked
 solutions; the quiz, sheets and key as HTML) and Chromium's printing of the sheets and of the
 key (wall time, and CPU time sampled over its processes with psutil); the sizes of quiz.xml,
@@ -71,12 +73,28 @@ class TreeCPU:
 
 def whole(model: Path, vary: list[str], lang: str, count: int, out: Path, pdf: bool) -> tuple[float, float]:
     """The command's wall time and the CPU time of it and all its descendants."""
+    global STARTED
+    STARTED = time.time()
     start = time.perf_counter()
     args = [sys.executable, "-m", "kinematika", "exercise", str(model), *(a for v in vary for a in ("--vary", v)),
             "--count", str(count), "--seed", "11", "--lang", lang, "-o", str(out)] + ([] if pdf else ["--no-pdf"])
     with TreeCPU() as tree:
         subprocess.run(args, check=True, capture_output=True)
     return time.perf_counter() - start, tree.seconds
+
+
+STARTED = 0.0             # when the last command started (the clock of the files' times)
+MILESTONES = [("first figure", "figures/variant-001.png"), ("sheets.html", "sheets.html"),
+              ("sheets.pdf", "sheets.pdf"), ("key.html", "key.html"), ("quiz.xml", "quiz.xml"),
+              ("key.pdf", "key.pdf")]
+
+
+def timeline(folder: Path) -> str:
+    """When the command wrote each milestone file, in seconds from its start (a timing log
+    read from the files' times): the variants are drawn before the first figure, the
+    figures before sheets.html, the worked solutions before key.html."""
+    return ", ".join(f"{label} {(folder / name).stat().st_mtime - STARTED:.0f} s"
+                     for label, name in MILESTONES if (folder / name).exists())
 
 
 def phases(model: Path, vary: list[str], lang: str, count: int, out: Path, pdf: bool) -> dict[str, float]:
@@ -137,6 +155,7 @@ def main() -> None:
                   f"{(folder / 'sheets.pdf').stat().st_size / 1e6:.1f} MB, {pages(folder / 'sheets.pdf')} pages")
         else:
             print()
+        print(f"  written at: {timeline(folder)}")
         for phase, seconds in phases(model, vary, lang, args.count, work / f"{name}-phases", args.pdf).items():
             print(f"  {phase:<30} {seconds:6.1f} s")
     print(f"\nload average {os.getloadavg()[0]:.1f}")

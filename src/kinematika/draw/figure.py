@@ -20,6 +20,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 from .lock import MATPLOTLIB
+from .mathcache import shared as _shared_mathtext
 from .canvas import Canvas
 from .dimensions import avoid_dimensions, paint_dimensions, reach
 from .geometry import Box
@@ -37,6 +38,8 @@ REACH = 2.0          # the frame is at most this many times the mechanism with i
 BEYOND = 3.0         # drawing sizes a zoomable figure's infinite lines reach past its frame
 ZOOMABLE_REACH = 1.5  # REACH of a zoomable figure's first frame (a page's box of fixed shape)
 ZOOMABLE_MARGIN = 0.22  # its room for labels (placed without measuring the drawing: more room)
+_shared_mathtext()          # formulas laid out once per process, not once per figure
+
 CLIP_MARGIN = 0.06   # infinite lines and far marks stop this far (drawing sizes) inside the axes
 LABEL_MARGIN = 0.12  # room kept around the framed content for labels
 ASPECT = (0.5, 1.25)  # bounds of the axes' height/width

@@ -21,6 +21,7 @@ import io
 import json
 from decimal import Decimal, InvalidOperation
 from pathlib import Path
+from contextlib import contextmanager
 from typing import Any, Callable, Iterator, Optional
 
 from ..errors import KinematikaError, Said, parser_problem, reason
@@ -38,98 +39,132 @@ def write_exercise(ex: Exercise, out: Path, solutions: bool = True, pdf: bool = 
                    progress: Optional[Callable[[int, int], None]] = None) -> list[Said]:
     """Write the folder; the notes to show (what was written, what was skipped or narrowed).
     `quiz` holds Moodle's options (a question per part, a penalty for a wrong unit);
-    `progress(done, total)` is told as the variants' figures and solutions are made."""
-    from .moodle import quiz_xml
-    from .roster import students_csv
+    `progress(done, total)` is told as the variants' figures and solutions are made.
+
+    In the order that keeps both cores busy: the statement figures first (the sheets need
+    nothing else), then the worked solutions while Chromium, started as the figures are
+    drawn, prints the sheets; the key prints last while the quiz and the CSV files are
+    written."""
+    from .printing import missing
     from .sheets import key_html, sheets_html, students_for
 
     out.mkdir(exist_ok=True)
     (out / "figures").mkdir(exist_ok=True)
-    figures, worked, mistakes = {}, {}, {}
-    for number, (png, solution) in drawn(ex, solutions, progress):
-        figures[number] = png
-        (out / "figures" / f"variant-{number:03d}.png").write_bytes(png)
-        if solutions:
+    notes = [*ex.notes, Said("exercise-wrote", count=len(ex.variants), folder=str(out))]
+    cannot = missing() if pdf else None
+    if cannot is not None:
+        notes.append(cannot)
+    with made(ex, solutions) as (drawn_figures, worked_solutions), \
+            _printer(pdf and cannot is None) as printer:       # after the workers' fork
+        total = len(ex.variants) * (2 if solutions else 1)
+        figures, worked = {}, {}
+        for number, png in drawn_figures:
+            figures[number] = png
+            (out / "figures" / f"variant-{number:03d}.png").write_bytes(png)
+            if progress:
+                progress(len(figures), total)
+        _text(out / "sheets.html", sheets_html(ex, figures, students_for(ex)))
+        if printer is not None:
+            printer.submit(out / "sheets.html", out / "sheets.pdf")
+        for number, solution in worked_solutions:
             worked[number] = solution
-    for v in ex.variants:
-        mistakes[v.number] = v.mistaken
+            if progress:
+                progress(len(figures) + len(worked), total)
+        _text(out / "key.html", key_html(ex, figures, worked))
+        if printer is not None:
+            printer.submit(out / "key.html", out / "key.pdf")
+        _rest(ex, out, figures, worked if solutions else None, quiz)
+    return notes
+
+
+def _rest(ex: Exercise, out: Path, figures: dict[int, bytes], worked: Optional[dict[int, str]],
+          quiz: Optional[QuizOptions]) -> None:
+    """The quiz, the CSV files, the model, exercise.json and links.txt."""
+    from .moodle import quiz_xml
+    from .roster import students_csv
+
+    mistakes = {v.number: v.mistaken for v in ex.variants}
     _text(out / "variants.csv", variants_csv(ex))
     _text(out / "key.csv", key_csv(ex))
     if ex.source is not None:
         (out / ex.source.name).write_bytes(ex.source.read_bytes())
     _text(out / "exercise.json", json.dumps(meta(ex), ensure_ascii=False, indent=1) + "\n")
-    _text(out / "quiz.xml", quiz_xml(ex, figures, worked if solutions else None, mistakes, quiz or QuizOptions()))
-    students = students_for(ex)
+    _text(out / "quiz.xml", quiz_xml(ex, figures, worked, mistakes, quiz or QuizOptions()))
     if ex.students:
         _text(out / "students.csv", students_csv(ex.students))
     if ex.source is not None:
         _text(out / "links.txt", "".join(f"{v.number}\t{page_link(ex, v.number)}\n" for v in ex.variants))
-    _text(out / "sheets.html", sheets_html(ex, figures, students))
-    _text(out / "key.html", key_html(ex, figures, worked))
-    notes = [*ex.notes, Said("exercise-wrote", count=len(ex.variants), folder=str(out))]
-    if pdf:
-        from .printing import missing, print_pdfs
 
-        reason = missing()
-        if reason is None:
-            print_pdfs([(out / "sheets.html", out / "sheets.pdf"), (out / "key.html", out / "key.pdf")])
-        else:
-            notes.append(reason)
-    return notes
+
+@contextmanager
+def _printer(wanted: bool) -> Iterator[Any]:
+    """A `printing.Printer` running for the block when `wanted`, else None."""
+    if not wanted:
+        yield None
+        return
+    from .printing import Printer
+
+    with Printer() as printer:
+        yield printer
 
 
 WORKERS_FROM = 4          # variants from which the figures and solutions are made in parallel
 
 
-def drawn(ex: Exercise, solutions: bool, progress: Optional[Callable[[int, int], None]] = None
-          ) -> Iterator[tuple[int, tuple[bytes, str]]]:
-    """Each variant's statement figure (PNG) and worked solution (HTML, '' without
-    `solutions`), in the variants' order: in a process per core when there are several
-    cores and variants and this process runs no other thread (forked processes that hold
-    the exercise; the same bytes as made one by one), else one by one."""
+@contextmanager
+def made(ex: Exercise, solutions: bool) -> Iterator[tuple[Iterator[tuple[int, bytes]], Iterator[tuple[int, str]]]]:
+    """The variants' statement figures (PNG), then their worked solutions (HTML; none without
+    `solutions`), each in the variants' order, as (number, made) pairs: in a process per core
+    when there are several cores and variants and this process runs no other thread (forked
+    processes that hold the exercise, forked on entering the block; the same bytes as made
+    one by one), else one by one as they are read."""
     import os
     import sys
     import threading
 
     numbers = [v.number for v in ex.variants]
     cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
-    total = len(numbers)
     alone = threading.active_count() == 1          # a fork copies no other thread's held lock
-    if cores < 2 or total < WORKERS_FROM or not alone or not sys.platform.startswith("linux"):
-        for done, n in enumerate(numbers, start=1):
-            yield n, _drawn_one(ex, n, solutions)
-            if progress:
-                progress(done, total)
+    if cores < 2 or len(numbers) < WORKERS_FROM or not alone or not sys.platform.startswith("linux"):
+        yield (((n, _figure_of(ex, n)) for n in numbers),
+               ((n, _solution_of(ex, n)) for n in (numbers if solutions else [])))
         return
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
     global _FORKED
-    _FORKED = (ex, solutions)
+    _FORKED = ex
+    pool = ProcessPoolExecutor(min(cores, len(numbers)), mp_context=multiprocessing.get_context("fork"))
     try:
-        with ProcessPoolExecutor(min(cores, total), mp_context=multiprocessing.get_context("fork")) as pool:
-            for done, (n, made) in enumerate(zip(numbers, pool.map(_drawn_forked, numbers)), start=1):
-                yield n, made
-                if progress:
-                    progress(done, total)
+        figures = pool.map(_figure_forked, numbers)          # forks the workers, then queues
+        worked = pool.map(_solution_forked, numbers) if solutions else iter(())
+        yield zip(numbers, figures), zip(numbers, worked)
     finally:
+        pool.shutdown(wait=True, cancel_futures=True)
         _FORKED = None
 
 
 _FORKED: Any = None          # the exercise the forked workers draw (set before the fork)
 
 
-def _drawn_forked(number: int) -> tuple[bytes, str]:
-    ex, solutions = _FORKED
-    return _drawn_one(ex, number, solutions)
+def _figure_forked(number: int) -> bytes:
+    return _figure_of(_FORKED, number)
 
 
-def _drawn_one(ex: Exercise, number: int, solutions: bool) -> tuple[bytes, str]:
+def _solution_forked(number: int) -> str:
+    return _solution_of(_FORKED, number)
+
+
+def _figure_of(ex: Exercise, number: int) -> bytes:
     from .figure import statement_figure
+
+    return statement_figure(ex, ex.variant(number), ex.lang)
+
+
+def _solution_of(ex: Exercise, number: int) -> str:
     from .solutions import solution_html
 
-    v = ex.variant(number)
-    return statement_figure(ex, v, ex.lang), (solution_html(ex, v, ex.lang) if solutions else "")
+    return solution_html(ex, ex.variant(number), ex.lang)
 
 
 def page_link(ex: Exercise, number: int) -> str:

@@ -46,10 +46,49 @@ def in_own_thread(work: Callable[[], Any]) -> Any:
 
 def print_pdfs(pages: list[tuple[Path, Path]]) -> None:
     """Print each HTML file to its PDF (A4, backgrounds kept), with one browser."""
-    in_own_thread(lambda: _print_pdfs(pages))
+    with Printer() as printer:
+        for html, pdf in pages:
+            printer.submit(html, pdf)
 
 
-def _print_pdfs(pages: list[tuple[Path, Path]]) -> None:
+class Printer:
+    """One browser, in a thread of its own, printing the HTML files handed to it (`submit`)
+    one after the other while the caller goes on: started early, Chromium starts while the
+    figures are drawn, and the sheets print while the worked solutions are made. Leaving the
+    `with` block waits for every file and raises the printing's error, if any.
+
+    Start it after forking worker processes: a fork copies no other thread."""
+
+    def __init__(self) -> None:
+        import queue
+        import threading
+
+        self._jobs: "queue.Queue[Optional[tuple[Path, Path]]]" = queue.Queue()
+        self._thread = threading.Thread(target=self._run, name="kinematika-printer", daemon=True)
+        self._error: Optional[BaseException] = None
+
+    def __enter__(self) -> "Printer":
+        self._thread.start()
+        return self
+
+    def submit(self, html: Path, pdf: Path) -> None:
+        """Print `html` to `pdf` after the files handed before it."""
+        self._jobs.put((html, pdf))
+
+    def __exit__(self, kind: Any, *rest: Any) -> None:
+        self._jobs.put(None)
+        self._thread.join()
+        if self._error is not None and kind is None:
+            raise self._error
+
+    def _run(self) -> None:
+        try:
+            _print_jobs(self._jobs)
+        except BaseException as err:          # told to the caller when it leaves the block
+            self._error = err
+
+
+def _print_jobs(jobs: Any) -> None:
     from playwright.sync_api import sync_playwright
 
     with sync_playwright() as p:
@@ -57,7 +96,8 @@ def _print_pdfs(pages: list[tuple[Path, Path]]) -> None:
         try:
             page = browser.new_page()
             page.set_default_timeout(PRINT_SECONDS * 1000)
-            for html, pdf in pages:
+            while (job := jobs.get()) is not None:
+                html, pdf = job
                 page.goto(html.resolve().as_uri(), wait_until="load")
                 page.pdf(path=str(pdf), format="A4", print_background=True, prefer_css_page_size=True,
                          outline=True)      # bookmarks from the headings (tagging would double the size)
