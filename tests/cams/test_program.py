@@ -29,6 +29,8 @@ import kinematika.draw.cam_plots
 import kinematika.draw.figure  # noqa: F401
 from tests.conftest import ROOT
 
+pytestmark = pytest.mark.early      # minutes of work: handed to a worker before the shorter files (tests/conftest.py)
+
 D = math.radians
 NORTON = ROOT / "examples" / "cams" / "norton-double-dwell.yaml"
 SHM = ROOT / "examples" / "cams" / "norton-shm.yaml"

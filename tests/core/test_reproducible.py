@@ -17,6 +17,8 @@ from kinematika import budget
 from tests.conftest import sampled
 from tests.core.models import jansen
 
+pytestmark = pytest.mark.early      # minutes of work: handed to a worker before the shorter files (tests/conftest.py)
+
 ROOT = Path(__file__).resolve().parents[2]
 
 # the command line, with the clocks the budgets read running `factor` times as fast (the

@@ -23,6 +23,8 @@ from kinematika.errors import KinematikaError
 from tests.conftest import DEEP, deep_only, hand_derivations, sampled
 from tests.core.models import JANSEN_TOP, jansen
 
+pytestmark = pytest.mark.early      # minutes of work: handed to a worker before the shorter files (tests/conftest.py)
+
 ROOT = Path(__file__).resolve().parents[2]
 MODELS = ROOT / "benchmarks" / "models" / "symbolic"
 derive = hand_derivations()

@@ -21,6 +21,8 @@ from properties.mechanisms import linkages
 from tests.conftest import DEEP, KINDS, sampled
 from .artists import label_faults, outside_faults
 
+pytestmark = pytest.mark.early      # minutes of work: handed to a worker before the shorter files (tests/conftest.py)
+
 EXAMPLES = sorted((Path(__file__).parents[2] / "examples").glob("*.yaml"))
 CROWDED = DrawOptions(centres=True, accelerations=True)
 # a crowded figure takes a second or more to lay out: two random ones by default (the

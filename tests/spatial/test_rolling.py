@@ -11,6 +11,7 @@ point J' = v_C − R (T.z)' and J'' follow by differentiating in the fixed frame
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -28,7 +29,10 @@ from .derive import EXAMPLES, carried, assert_close, coordinates, fixed_point, t
 R_COIN = 0.05
 
 
+@functools.cache
 def _coin_on_board():
+    """The coin's vectors as numeric functions of the state, derived once in the process that
+    runs the tests (not while the suite is collected: the derivation takes seconds)."""
     th, psi, beta, phi, cx, cy, cz = coordinates("th psi beta phi cx cy cz")
     N = ReferenceFrame("N")
     board = N.orientnew("Bd", "Axis", (th, N.x))
@@ -63,7 +67,6 @@ def _coin_on_board():
     return funcs
 
 
-COIN = _coin_on_board()
 angle = st.floats(-math.pi, math.pi, allow_nan=False)
 lean = st.floats(-1.2, 1.2, allow_nan=False)
 rates = st.floats(-3, 3, allow_nan=False)
@@ -99,7 +102,7 @@ def test_coin_rolling_on_a_tilting_board(psi, beta, x, y, rates, fixed, below):
     turn = np.diag([1.0, -1.0, -1.0]) if below else np.eye(3)
     centre = (x, y, R_COIN * math.cos(beta))
     args = [*centre, 0, th1, th2, psi, psi1, psi2, beta, beta1, beta2, 0, phi1, phi2]
-    e = {k: turn @ np.array(f(*args)) for k, f in COIN.items()}
+    e = {k: turn @ np.array(f(*args)) for k, f in _coin_on_board().items()}
     centre = turn @ np.array(centre)
     sol = solve(coin_tree(centre, e["axis"], e["omega"], e["alpha"], th1, th2, on_ground=fixed))
     assert_close(sol.velocity("C"), e["v_C"], 1e-8)

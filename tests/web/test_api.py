@@ -12,6 +12,8 @@ from typer.testing import CliRunner
 from kinematika.cli import app as cli       # the typer application, every command registered
 from tests.conftest import DEEP, EXAMPLES
 
+pytestmark = pytest.mark.early      # minutes of work: handed to a worker before the shorter files (tests/conftest.py)
+
 EXAMPLE_FILES = sorted(EXAMPLES.glob("*.yaml"))
 # an explanation is seconds of work, written twice here; a run checks one model of each
 # kind of explanation (linkage, rolling, cam, vehicle, spatial, symbols: the epicyclic

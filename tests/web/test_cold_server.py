@@ -12,7 +12,11 @@ import sys
 import textwrap
 from pathlib import Path
 
+import pytest
+
 from tests.conftest import HANG_SECONDS
+
+pytestmark = pytest.mark.early      # minutes of work: handed to a worker before the shorter files (tests/conftest.py)
 
 ROOT = Path(__file__).resolve().parents[2]
 

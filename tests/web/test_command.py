@@ -12,6 +12,8 @@ import pytest
 
 from tests.conftest import EXAMPLES, HANG_SECONDS, ROOT
 
+pytestmark = pytest.mark.early      # minutes of work: handed to a worker before the shorter files (tests/conftest.py)
+
 WAIT = HANG_SECONDS     # seconds an answer may take before the test calls it a hang
 
 

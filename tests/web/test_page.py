@@ -27,7 +27,8 @@ from tests.conftest import BROWSER_WAIT, DEEP, EXAMPLES
 
 from .conftest import CHROMIUM, FLAGS, _chromium_or_skip  # noqa: F401 - used by other modules too
 
-pytestmark = pytest.mark.browser
+pytestmark = [pytest.mark.browser,
+              pytest.mark.early]     # minutes of work: handed to a worker before the shorter files (tests/conftest.py)
 FOUR_BAR = EXAMPLES / "four_bar.yaml"
 EXPLAINED = "() => { const s = window.kinematika.state; return s.explained === `${s.gen}|${s.lang}|${s.row}`; }"
 
