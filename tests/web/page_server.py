@@ -8,6 +8,7 @@ import time
 
 import uvicorn
 
+from kinematika.cli.page import KEEP_ALIVE
 from kinematika.web.server import Start, bundled_examples, create_app
 from tests.conftest import HANG_CPU_SECONDS, HANG_SECONDS
 
@@ -23,8 +24,11 @@ class PageServer:
         self.sock.bind(("127.0.0.1", 0))
         self.sock.listen(64)
         self.url = f"http://127.0.0.1:{self.sock.getsockname()[1]}/"
+        # the served page's keep-alive (`kinematika page`'s), not uvicorn's 5 s: on a loaded
+        # machine a test's pause between two requests passes 5 s, and a POST sent on a
+        # connection the server is closing failed (a page with no figure, once in a run)
         config = uvicorn.Config(create_app(start, hosts=["127.0.0.1", "localhost"]),
-                                log_level="warning", access_log=False)
+                                log_level="warning", access_log=False, timeout_keep_alive=KEEP_ALIVE)
         self.server = uvicorn.Server(config)
         self.thread = threading.Thread(target=self.server.run, kwargs={"sockets": [self.sock]},
                                        daemon=True)

@@ -15,13 +15,18 @@ export class ApiError extends Error {
   }
 }
 
-/** POST `body` to /api/`endpoint`; the answer as JSON, text or a Blob (`as`). */
+/** POST `body` to /api/`endpoint`; the answer as JSON, text or a Blob (`as`). A request
+ * that fails before any answer (a kept-alive connection the server closed as it was sent,
+ * which a browser does not retry for a POST) is sent once more: every endpoint's answer is
+ * a function of the body alone, so asking twice is safe. */
 export async function post(endpoint, body, as = "json") {
-  const response = await fetch(`/api/${endpoint}`, {
-    method: "POST",
-    headers: { "Content-Type": "application/json" },
-    body: JSON.stringify(body),
-  });
+  const init = { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) };
+  let response;
+  try {
+    response = await fetch(`/api/${endpoint}`, init);
+  } catch (_) {
+    response = await fetch(`/api/${endpoint}`, init);
+  }
   if (!response.ok) {
     let error = { kind: "internal", message: `HTTP ${response.status}`, where: "" }, partial = null;
     try {
