@@ -180,6 +180,12 @@ driver-joint = Dada: la velocitat angular relativa a l’articulació { $joint }
 driver-joint_accel = Dada: l’acceleració angular relativa a l’articulació { $joint } és { $value }.
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
+driver-whole = Dada: { $sym } = { $value }, { $heading }.
+heading-right = cap a la dreta
+heading-left = cap a l’esquerra
+heading-up = cap amunt
+heading-down = cap avall
+heading-along = segons { $along }
 input-revolute = { $body } { COUNT($body) ->
         [many] giren
        *[one] gira

@@ -147,6 +147,12 @@ driver-joint = Given: the relative angular velocity at joint { $joint } is { $va
 driver-joint_accel = Given: the relative angular acceleration at joint { $joint } is { $value }.
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
+driver-whole = Given: { $sym } = { $value }, { $heading }.
+heading-right = to the right
+heading-left = to the left
+heading-up = upwards
+heading-down = downwards
+heading-along = along { $along }
 input-revolute = { $body } turns about the fixed pivot { $point }: its points move on circles about { $point }.
 input-prismatic = { $body } slides without turning along the guide of joint { $joint }.
 other-intro = These bodies are found together from the conditions of their joints:

@@ -144,6 +144,12 @@ driver-joint = Dato: la velocidad angular relativa en el par { $joint } es { $va
 driver-joint_accel = Dato: la aceleración angular relativa en el par { $joint } es { $value }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
+driver-whole = Dato: { $sym } = { $value }, { $heading }.
+heading-right = hacia la derecha
+heading-left = hacia la izquierda
+heading-up = hacia arriba
+heading-down = hacia abajo
+heading-along = según { $along }
 input-revolute = { $body } { COUNT($body) ->
         [many] giran
        *[one] gira

@@ -147,6 +147,12 @@ driver-joint = Datua: { $joint } giltzadurako abiadura angeluar erlatiboa { $val
 driver-joint_accel = Datua: { $joint } giltzadurako azelerazio angeluar erlatiboa { $value } da.
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
+driver-whole = Datua: { $sym } = { $value }, { $heading }.
+heading-right = eskuinerantz
+heading-left = ezkerrerantz
+heading-up = gorantz
+heading-down = beherantz
+heading-along = { $along } norabidean
 input-revolute = { $body } { $point } puntu finkoaren inguruan biratzen da: haren puntuek { $point } zentrodun zirkunferentziak deskribatzen dituzte.
 input-prismatic = { $body } biratu gabe traslatzen da { $joint } loturaren gidan zehar.
 other-intro = Solido hauek batera aurkitzen dira beren loturen baldintzetatik:
