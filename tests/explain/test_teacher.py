@@ -246,7 +246,7 @@ SEEDS = sorted(p for p in WORKED if p.startswith("seed_"))
 
 
 @pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", sampled(SEEDS, KINDS))
+@pytest.mark.parametrize("name", SEEDS)
 def test_no_seed_names_aronhold_kennedy(name, lang, monkeypatch):
     """The notes never name Aronhold–Kennedy: they find a centre where the perpendiculars to
     two known velocities meet (C5-1.2's OQ from its wheels' centres, C5-E.3's rod), on the
@@ -326,13 +326,13 @@ def _chain_ends(eq) -> list[tuple[str, str]]:
                 at = point_of(t.sym.sub) if at is None else at
             elif t.kind == "rotation":          # v_PQ or v_{P-Q}: the velocity of P about Q
                 seg = str(t.sym.sub).split(",")[0]
-                at = point_of(seg.split("-")[0] if "-" in seg else seg[0])
+                at = target if seg.startswith(target) else point_of(seg.split("-")[0] if "-" in seg else seg[0])
         if at is not None:
             out.append((at, target))
     return out
 
 
-@pytest.mark.parametrize("name", sampled(SEEDS, KINDS))
+@pytest.mark.parametrize("name", SEEDS)
 def test_no_velocity_equation_mixes_two_points(name):
     """C5-E.4 wrote v_U = v_U^∥ + v_U^⊥ = v_{J4∈3} + v_{A1-J4}: the right side is the velocity
     of A1, not of U. Every side of a velocity equation is the velocity of the equation's own

@@ -16,7 +16,7 @@ from __future__ import annotations
 from typing import Any, Optional
 
 from .context import Ctx
-from .document import Msg, Value, msg
+from .document import Msg, msg
 
 
 def whole_along(ctx: Ctx, d: Any, level: str) -> bool:
