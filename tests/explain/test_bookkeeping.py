@@ -177,7 +177,7 @@ def test_a_term_found_before_is_known(name):
 SEEDS = sorted(p.stem for p in (Path(__file__).resolve().parents[2] / "examples").glob("seed_*.yaml"))
 
 
-SAYS_MOTION = ("driver.along", "driver.velocity", "group.wheel_a", "vehicle.driven", "vehicle.translation",
+SAYS_MOTION = ("driver.along", "driver.velocity", "driver.whole", "group.wheel_a", "vehicle.driven", "vehicle.translation",
                "contact.fixed",            # a point of a body welded to the frame does not move
                "rolling.centre", "centre.site", "centre.site_i",   # a contact at rest, an instant centre placed before
                "rolling.same")             # no slip: the two material points at a contact move alike

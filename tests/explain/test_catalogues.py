@@ -32,6 +32,7 @@ FAMILIES = {
     "ask": [k.name for k in QUESTIONS.values() if type(k).label is QuestionKind.label],   # `ask.NAME`
     "ans": ["point", "direction", "center", "tangent", "slide"],
     "centre.proportional": ["between", "outside"],
+    "centre.carried": ["between", "outside"],
     "pos": ["left", "right", "ahead", "behind", "open", "crossed"],
 }
 

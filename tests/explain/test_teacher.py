@@ -239,3 +239,118 @@ def test_what_a_point_is_comes_from_the_joints_and_shapes():
     _, doc = explained("seed_001_r_pairs")
     table = _points_table(render(doc, "eu", "md", drawings=False), "puntua")
     assert table["B"].startswith("j5 lotura, giltzadura (R)")
+
+
+# -- the notes' reasoning (issue 30, the audit's S2, S6 and C5-E.4) ---------------------------------------------------
+SEEDS = sorted(p for p in WORKED if p.startswith("seed_"))
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_no_seed_names_aronhold_kennedy(name, lang, monkeypatch):
+    """The notes never name Aronhold–Kennedy: they find a centre where the perpendiculars to
+    two known velocities meet (C5-1.2's OQ from its wheels' centres, C5-E.3's rod), on the
+    perpendicular to a guide (C5-1.3), or from speeds along one line (C5-1.4). No seed
+    explanation names the theorem, in its text or its figures' captions."""
+    from kinematika.explain.document import Drawing
+
+    monkeypatch.setattr(Drawing, "svg", lambda self, lang: "<svg/>")
+    _, doc = explained(name)
+    text = render(doc, lang, "md", drawings=True)
+    assert "Aronhold" not in text and "Kennedy" not in text, (name, lang)
+
+
+@pytest.mark.parametrize("name,lang,line", [
+    # C5-1.2: the centres of the wheels move parallel to the inclined planes; OQ's centre is
+    # where the perpendiculars to those velocities through the centres meet
+    ("seed_c5_1_2_bar_on_inclined_wheels", "en", "I_16: it lies on the perpendicular to v_O through O (O moves with "
+                                                 "*left wheel*, which turns about K1) and on the perpendicular to v_Q "
+                                                 "through Q (Q moves with *right wheel*, which turns about K2)"),
+    # C5-1.3: on OQ (the perpendicular to v_Q) and on the perpendicular to the bar through J
+    ("seed_c5_1_3_bar_in_sleeve", "ca", "I_13: és a la perpendicular a v_Q per Q (Q es mou amb l’*element OQ*, que gira "
+                                        "al voltant d’O) i a la perpendicular a la guia de l’enllaç j3 per J"),
+    # C5-E.3: the rod's pins move with the wheels about their contacts
+    ("seed_c5_e3_wheels_with_rod", "eu", "I_14: bi zuzen hauetan dago: A puntuan v_A abiadurarekiko perpendikularra"),
+    # C5-1.4: the planet's centre and its contact with the ring, carried about O
+    ("seed_c5_1_4_epicyclic", "en", "I_15: A1 moves with *carrier* about O, and J10 with *ring* about O"),
+])
+def test_a_centre_is_found_as_the_notes_find_it(name, lang, line):
+    _, doc = explained(name)
+    assert line in render(doc, lang, "md", drawings=False)
+
+
+# velocity drivers whose component is the point's whole motion (the notes' v_U = (←v)), by
+# hand from each statement: a wheel's centre on flat ground, a slider on its guide, a pulley's
+# centre on a vertical strand; and the one that truly is a component (the tricycle's front
+# wheel's acceleration has a normal part, the chassis turning about (0, L): v₀²/(√2 L)·…)
+WHOLE = {
+    "seed_c5_e4_upper_wheel": ["Given: v_U = (−v, 0), to the left.", "Given: a_U = (−v̇, 0), to the left."],
+    "seed_c5_e6_bicycle": ["Given: v_H = (v, 0), to the right.", "Given: a_H = (v̇, 0), to the right."],
+    "seed_c5_e5_unequal_wheels": ["Given: v_A = (v, 0), to the right."],
+    "seed_c5_1_5_pulley_block": ["Given: v_C1 = (0, −v), downwards.", "Given: v_C3 = (0, −2·v), downwards."],
+    "seed_001_rolling_pair": ["Given: v_A = (0.5, 0) m/s, to the right."],
+    "seed_c5_2_1_tricycle": ["Given: v_{F∈3} = (√2·v₀/2, √2·v₀/2), along (1, 1).",
+                             "Given: the component of a_{F∈3} along (1, 1) is 0."],
+}
+
+
+@pytest.mark.parametrize("name", sorted(WHOLE))
+def test_a_drivers_whole_velocity_is_stated_as_the_vector(name):
+    """S6: "the component of v_U along (1; 0) is −v" where the notes write v_U = (←v): a
+    datum that is the point's whole velocity is the vector, with its direction in words —
+    in the Data section and where the step states it; a true component stays one."""
+    _, doc = explained(name)
+    text = render(doc, "en", "md", drawings=False)
+    data = _data_text(doc)
+    for line in WHOLE[name]:
+        assert line in data, (name, line)
+    assert not re.search(r"component of v_", text), name
+    if name == "seed_c5_e4_upper_wheel":
+        eu = render(doc, "eu", "md", drawings=False)
+        assert "Datua: v_U = (−v; 0), ezkerrerantz." in eu
+
+
+def _chain_ends(eq) -> list[tuple[str, str]]:
+    """For each side of a velocity equation: (the point its sum is the velocity of, the
+    target's point). A side starts at a point Q (v_Q) and each rotation term ω × QP moves it to
+    P (v_PQ, written P-Q); components (v_P^∥, v_P^⊥) are of their own point."""
+    def point_of(sub: str) -> str:
+        return str(sub).split("∈")[0]
+
+    target = point_of(eq.target.sym.sub)
+    out = []
+    for side in eq.sides:
+        at = None
+        for t in side:
+            if t.kind == "point":
+                at = point_of(t.sym.sub) if at is None else at
+            elif t.kind == "rotation":          # v_PQ or v_{P-Q}: the velocity of P about Q
+                seg = str(t.sym.sub).split(",")[0]
+                at = target if seg.startswith(target) else point_of(seg.split("-")[0] if "-" in seg else seg[0])
+        if at is not None:
+            out.append((at, target))
+    return out
+
+
+@pytest.mark.parametrize("name", SEEDS)
+def test_no_velocity_equation_mixes_two_points(name):
+    """C5-E.4 wrote v_U = v_U^∥ + v_U^⊥ = v_{J4∈3} + v_{A1-J4}: the right side is the velocity
+    of A1, not of U. Every side of a velocity equation is the velocity of the equation's own
+    point: from a known point along relative terms that end there (v_A1 = v_J4∈3 + v_{A1-J4}),
+    or the velocity of a point of a body said to translate (v_A1 = v_U)."""
+    from kinematika.explain.document import Equation, Msg
+
+    _, doc = explained(name)
+    translating = False
+    for sec in doc.sections:
+        if sec.title.key != "sec.velocities":
+            continue
+        for b in _walk(sec):
+            if isinstance(b, Msg) and b.key in ("translation.same", "vehicle.translation", "vehicle.translation_equal",
+                                                "rolling.same"):
+                translating = True
+            if not isinstance(b, Equation) or b.target.kind != "point":
+                continue
+            for side, (at, target) in zip(b.sides, _chain_ends(b)):
+                single = len(side) == 1 and side[0].kind == "point"
+                assert at == target or (single and translating), (name, b.target.sym.sub, [t.sym.sub for t in side])

@@ -14,8 +14,8 @@ from typing import Optional
 from ..questions.centres import all_centres, centre_line, same_line
 from .asked import worked
 from .context import Ctx
-from .kinds import knife_edge, line_kind, on_fixed_line
-from .document import CentreNote, Section, Sym, msg
+from .kinds import guided, knife_edge, line_kind, on_fixed_line, rolls
+from .document import CentreNote, Msg, Name, Section, Sym, msg
 
 MAX_ALL = 10        # above this many pairs, only the centres relative to the frame (and what they need)
 
@@ -223,6 +223,9 @@ def _line_reason(ctx: Ctx, c, kind: str, name: str, found: dict):
 
     a, b = c.pair
     if kind == "third":
+        perp = _perpendicular(ctx, found, a, name, b)
+        if perp is not None:
+            return perp
         return msg("centre.line.kennedy", l=[Sym("I", f"{a},{name}", vector=False), Sym("I", f"{name},{b}", vector=False)],
                    k=Name(name, "body"))
     j = ctx.model.joint(name)
@@ -249,6 +252,8 @@ def _kennedy(ctx: Ctx, note: CentreNote, found: dict, before: list) -> None:
                 note.via = [k1, k2]
                 note.lines = [(_clean(ctx, found[frozenset((a, k))].value),
                                _clean(ctx, found[frozenset((k, b))].value)) for k in (k1, k2)]
+                perps = [_perpendicular(ctx, found, a, k, b) for k in (k1, k2)]
+                note.perps = perps if all(perps) else []
                 return
     ks = list(lines)[:2] or note.via
     for k1, k2 in combinations(lines, 2):       # the notes' choice: two points moving in opposite senses
@@ -261,16 +266,83 @@ def _kennedy(ctx: Ctx, note: CentreNote, found: dict, before: list) -> None:
                   for k in ks]
     note.how = "proportional"
     note.witnesses = []
+    note.pivots = []
     for k in ks:
         where = found[frozenset((k, b))].value.get("point")
         if where is not None:
-            note.witnesses.append((_point_name(ctx, b, where) or f"I:{k},{b}", ctx.clean(tuple(where), "len"),
+            note.witnesses.append((_site_name(ctx, where, (b, k)) or f"I:{k},{b}", ctx.clean(tuple(where), "len"),
                                    ctx.clean(_velocity_at(ctx, b, a, where), "speed")))
+            note.pivots.append(_pivot(ctx, found, a, k))
+    if a != ctx.frame or not all(note.pivots):
+        note.pivots = []
     if len(note.witnesses) == 2:
         u, w = (ctx.num(v) for _, _, v in note.witnesses)
         note.side = "between" if u[0] * w[0] + u[1] * w[1] < 0 else "outside"
     else:
         note.how = "velocities"
+
+
+def _perpendicular(ctx: Ctx, found: dict, a: str, k: str, b: str) -> Optional[Msg]:
+    """The line through the centre of b relative to the frame a that the third body k
+    gives, as the notes draw it (C5-1.2, 1.3, E.3, E.4), who never name Aronhold–Kennedy:
+    the centre I_kb is a point W that moves with k, and k turns about I_ak, so v_W ⊥ I_ak-W
+    and the centre of b lies on the perpendicular to v_W through W (when k translates, v_W
+    is k's one velocity). When b slides on k (I_kb at infinity), the point of b on the
+    perpendicular to the guide through I_ak slides along the guide relative to k and is
+    carried by k about I_ak along the guide too (the notes' v_REL ∥ v_ar, C5-1.3): its
+    velocity is along the guide, and the centre lies on that perpendicular. None for a
+    centre between two moving bodies (the notes construct none; there the three-centres
+    theorem says it), or when a point has no name to say it by."""
+    if b == ctx.frame:
+        a, b = b, a
+    if a != ctx.frame:
+        return None
+    pivot, site = found[frozenset((a, k))].value, found[frozenset((k, b))].value
+    if site.get("point") is not None:
+        w = _site_name(ctx, site["point"], (b, k))
+        if w is None:
+            return None
+        v = Sym("v", ctx.point_label(w, k))
+        if pivot.get("point") is None:
+            if pivot.get("direction") is None:
+                return None
+            return msg("centre.line.moves_still", v=v, point=Name(w), body=Name(k, "body"))
+        centre = _pivot(ctx, found, a, k)
+        return None if centre is None else msg("centre.line.moves", v=v, point=Name(w), body=Name(k, "body"),
+                                              pivot=centre)
+    guide = next((j for j in ctx.model.joints if {j.a, j.b} == {k, b} and guided(j)), None)
+    centre = _pivot(ctx, found, a, k) if pivot.get("point") is not None else None
+    if guide is None or centre is None:
+        return None
+    return msg("centre.line.guide", joint=Name(guide.id, "joint"), pivot=centre, b=Name(b, "body"),
+               body=Name(k, "body"))
+
+
+def _pivot(ctx: Ctx, found: dict, a: str, k: str):
+    """What k turns about relative to a, by its name: the point there (a pin O, a wheel's
+    contact J3), else the centre's symbol I_ak; None when k translates."""
+    where = found[frozenset((a, k))].value.get("point")
+    if where is None:
+        return None
+    name = _site_name(ctx, where, (k, a))
+    return Name(name) if name is not None else Sym("I", f"{a},{k}", vector=False)
+
+
+def _site_name(ctx: Ctx, where, bodies: tuple) -> Optional[str]:
+    """The name of the point at `where` of one of `bodies`: a model point there (a pin), else
+    the contact of a rolling joint of theirs there (J4); None when nothing is named there."""
+    for b in bodies:
+        name = _point_name(ctx, b, where)
+        if name is not None:
+            return name
+    x = ctx.num(tuple(where))
+    for j in ctx.model.joints:
+        if rolls(j) and set(bodies) & {j.a, j.b}:
+            contact = ctx.sol.geometry(j.id).contact
+            if contact is not None and sum((u - v) ** 2 for u, v in zip(x, ctx.num(tuple(contact.point)))) ** 0.5 \
+                    <= 1e-9 * ctx.inst.scale:
+                return ctx.contact(j)
+    return None
 
 
 def _witness_velocity(ctx: Ctx, found: dict, a: str, b: str, k: str):

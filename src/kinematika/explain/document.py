@@ -233,6 +233,8 @@ class CentreNote:
     same: Optional[dict] = None                    # weld: the centre of the body it is welded to
     rate: Any = None                               # field, check: ω of the pair
     arm: Optional[tuple] = None                    # field, check: QI = k × v_Q / ω
+    perps: list = field(default_factory=list)      # kennedy: each line as the notes draw it (Msg)
+    pivots: list = field(default_factory=list)     # proportional: what each witness turns about
 
 
 @dataclass(frozen=True)

@@ -38,6 +38,7 @@ from .document import (Ann, Derived, Equation, Msg, Sym, Term, Value, body as bo
 from .order import jointed
 from .contacts import geometric_blocks
 from .drives import drive_blocks, pair_blocks
+from .given import whole_along
 from .kinds import (crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls, same_rate,
                     slider, welds)
 from .terms import contact_term, point_term, rotation_terms, slide_terms
@@ -191,12 +192,15 @@ class Planner:
         not solved from a three-sided equation."""
         ctx, group = self.ctx, set(self.group)
         straight = []
-        for jid, (wheel, centre) in self.centred.items():
-            j = ctx.model.joint(jid)
-            fixed = j.a if j.b == wheel else j.b
-            contact = ctx.sol.geometry(jid).contact
-            if path_origin(ctx, j, fixed) is None and contact.kind == "circle-line":
-                straight.append((centre, ctx.num(tuple(contact.normal))))
+        for j in ctx.model.joints:      # every such wheel, in this group or not: the path is geometry
+            contact = ctx.sol.geometry(j.id).contact if rolls(j) else None
+            if contact is None or contact.kind != "circle-line":
+                continue
+            for fixed, wheel in ((j.a, j.b), (j.b, j.a)):
+                if ctx.fixed(fixed) and not ctx.fixed(wheel) and path_origin(ctx, j, fixed) is None:
+                    centre = path_centre(ctx, j, wheel)
+                    if centre is not None:
+                        straight.append((centre, ctx.num(tuple(contact.normal))))
         for body in self.group:
             if body in self.rates or body not in group:
                 continue
@@ -257,7 +261,7 @@ class Planner:
                 self.rates.add(d.body)
             elif d.kind == "velocity" and d.point.body not in self.determined:
                 label = ctx.motion_key(d.point.point, d.point.body)
-                if d.along is None:
+                if d.along is None or whole_along(ctx, d, self.level):     # a component that is the whole
                     self.full.add(label)
                 else:
                     self.partial.setdefault(label, {})["driver"] = d
@@ -693,7 +697,8 @@ def _recut(ctx: Ctx, run: list, known: set[str]) -> list:
         while True:
             new = [b for b in pool if b in plan.determined and b not in done]
             if new:
-                out.append(Step("other", new, plan.used[mark:], jointed(ctx.model, new, done), source=run[0].source))
+                out.append(Step("other", new, _joining(ctx, new, done, plan.used[mark:]), jointed(ctx.model, new, done),
+                                source=run[0].source))
                 mark = len(plan.used)
                 done |= set(new)
             if plan.complete() or plan.step() is None:
@@ -705,6 +710,18 @@ def _recut(ctx: Ctx, run: list, known: set[str]) -> list:
         out.append(Step(stuck.kind, bodies, stuck.joints, stuck.known, stuck.letters, stuck.source))
         done |= set(bodies)
     return out
+
+
+def _joining(ctx: Ctx, new: list[str], done: set[str], used: list[str]) -> list[str]:
+    """The joints a step's bodies are found through: those the planner used for it that
+    touch one of them; for a body found by carrying (a translating chassis' wheel, whose
+    joints an earlier equation already used), the joints between it and the bodies known
+    or found with it — never none (C5-E.4's right wheel: its contact and its pin)."""
+    mine = [j for j in used if {ctx.model.joint(j).a, ctx.model.joint(j).b} & set(new)]
+    if mine:
+        return mine
+    reach = set(new) | set(done)
+    return [j.id for j in ctx.model.joints if {j.a, j.b} & set(new) and {j.a, j.b} <= reach] or list(used)
 
 
 # the blocks of a planned group ------------------------------------------------------------------

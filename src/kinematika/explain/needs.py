@@ -171,9 +171,17 @@ def _drop_rows(doc: Document, bodies: set[str], alphas: set[str]) -> None:
 
 
 def _untitle(sec: Section, bodies: set[str]) -> None:
-    """A step's title names the bodies it works out: not one whose rate went unworked."""
+    """A step's title names the bodies it works out: not one whose rate went unworked; a
+    step left with nothing to say goes, and the steps after it are numbered on (C5-E.4's
+    right wheel at accelerations, which nothing asks: no "Step 2" with nothing under it)."""
+    sec.blocks = [b for b in sec.blocks if not (isinstance(b, Section) and b.title.key == "step.title"
+                                                and not b.blocks)]
+    n = 0
     for step in (b for b in sec.blocks if isinstance(b, Section)):
         _unname(step.title, bodies)
+        if step.title.key == "step.title" and isinstance(step.title.args.get("n"), int):
+            n += 1
+            step.title.args["n"] = n
 
 
 def _unname(m: Msg, bodies: set[str]) -> None:

@@ -17,6 +17,7 @@ from .group import centre_site, group_blocks, still_contact
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
 from .copies import copy_of
+from .given import sign_of, heading, whole_along
 from .kinds import kind_key, knife_edge, pin_only, rolls, turns
 from .order import Step
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms, target_term
@@ -116,6 +117,8 @@ class PlanarSteps:
             if d.index not in self.stated and set(driven(self.ctx, d)) & set(step.bodies):
                 self.stated.add(d.index)
                 out.append(driver_msg(self.ctx, d, self.level))
+                if whole_along(self.ctx, d, self.level):      # stated whole: a written point to go from
+                    self.done.add(self.ctx.point_label(d.point.point, d.point.body))
         return out
 
     def input(self, step: Step, chain: list[Joint]) -> Optional[list]:
@@ -502,9 +505,20 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
     if d.along is not None:
         along = (Inline([point(d.along.start), point(d.along.end)]) if isinstance(d.along, PointPair)
                  else Value(ctx.clean(inst.vector(d.along, where), ""), ""))
-        return msg("driver.along", sym=sym, value=Value(ctx.clean(inst.value(given, where), unit), unit),
-                   along=along)
-    return msg("driver.velocity", sym=sym, value=Value(ctx.clean(inst.vector(given, where), unit), unit))
+        size = inst.value(given, where)
+        if not whole_along(ctx, d, level):      # truly a component: the point also moves across
+            return msg("driver.along", sym=sym, value=Value(ctx.clean(size, unit), unit), along=along)
+        vector = tuple(size * c for c in inst.direction(d.along, where))      # the notes' v_U = (←v)
+        if sign_of(ctx, size) < 0:
+            along = (Inline([point(d.along.end), point(d.along.start)]) if isinstance(d.along, PointPair)
+                     else Value(ctx.clean(tuple(-c for c in inst.vector(d.along, where)), ""), ""))
+    else:
+        vector = inst.vector(given, where)
+        along = None
+    value = Value(ctx.clean(vector, unit), unit)
+    words = heading(ctx, vector, along)
+    return msg("driver.velocity", sym=sym, value=value) if words is None else \
+        msg("driver.whole", sym=sym, value=value, heading=words)
 
 
 def condition_msg(j: Joint, level: str, frame: str = "") -> Msg:

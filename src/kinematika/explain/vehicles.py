@@ -16,6 +16,7 @@ from typing import Optional
 
 from .context import Ctx, omega_sym, read_off
 from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, msg
+from .given import whole_along
 from .kinds import knife_edge, pin_only
 
 TOL = 1e-9
@@ -113,6 +114,8 @@ def _driven_wheel(ctx: Ctx, d, group: list[str], speeds: dict) -> list:
             if abs(e[0] * along[1] - e[1] * along[0]) <= 1e-9:
                 v = ctx.vel(d.point.body, p)
                 speeds[p] = v
+                if whole_along(ctx, d, "v"):     # the datum is stated whole already (given.py)
+                    return []
                 return [msg("vehicle.driven", point=Name(p), joint=Name(j.id, "joint"),
                             sym=Sym("v", p), value=Value(ctx.clean(v, "speed"), "speed"))]
     return []

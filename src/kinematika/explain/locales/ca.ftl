@@ -181,6 +181,12 @@ driver-joint = Dada: la velocitat angular relativa a l’articulació { $joint }
 driver-joint_accel = Dada: l’acceleració angular relativa a l’articulació { $joint } és { $value }.
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
+driver-whole = Dada: { $sym } = { $value }, { $heading }.
+heading-right = cap a la dreta
+heading-left = cap a l’esquerra
+heading-up = cap amunt
+heading-down = cap avall
+heading-along = segons { $along }
 input-revolute = { $body } { COUNT($body) ->
         [many] giren
        *[one] gira
@@ -278,7 +284,7 @@ centre-joint-gear = el contacte de les circumferències primitives de l’engran
 centre-joint-prismatic = l’enllaç { $joint } és prismàtic: el moviment relatiu és una translació i el CIR és a la perpendicular a la guia,
 centre-joint-weld = l’enllaç { $joint } uneix rígidament els dos sòlids:
 centre-kennedy = per Aronhold–Kennedy és a la recta que passa per { $l1 } (tercer sòlid { $k1 }) i a la recta que passa per { $l2 } (tercer sòlid { $k2 }); aquestes rectes es tallen
-centre-velocities = cap enllaç ni cap recta d’Aronhold–Kennedy no el situa abans de conèixer les velocitats; amb elles: les velocitats respecte { ELISION($frame) ->
+centre-velocities = els enllaços no el situen abans de conèixer les velocitats; amb elles: les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } { ELISION($p) ->
@@ -468,7 +474,7 @@ fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids
             [0] .
            *[other] , amb les rectes on es troben (traç i punt: { $normals }).
         }
-       *[other] , amb les rectes on es troben (traç i punt: rectes d’Aronhold–Kennedy{ $normals_n ->
+       *[other] , amb les rectes on es troben (traç i punt: rectes que passen per dos centres{ $normals_n ->
             [0] {""}
            *[other] {" "}i { $normals }
         }).
@@ -513,13 +519,54 @@ centre-weld = l’enllaç { $joint } uneix rígidament { $body } i { $other }: s
        *[other] de { $other }
     }, { $same },
 centre-line-kennedy = la recta que passa per { $l } (Aronhold–Kennedy, tercer sòlid { $k })
+centre-line-moves = la perpendicular a { $v } per { $point } ({ $point } es mou amb { $body }, que { COUNT($body) ->
+        [many] giren
+       *[one] gira
+    } al voltant { ELISION($pivot) ->
+        [vowel] d’{ $pivot }
+       *[other] de { $pivot }
+    })
+centre-line-moves_still = la perpendicular a { $v } per { $point } ({ $point } es mou amb { $body }, que es { COUNT($body) ->
+        [many] traslladen
+       *[one] trasllada
+    })
+centre-line-guide = la perpendicular a la guia de l’enllaç { $joint } per { $pivot } (el punt { ELISION($b) ->
+        [vowel] d’{ $b }
+       *[other] de { $b }
+    } que hi és llisca al llarg de la guia respecte { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }, i { $body } l’arrossega al voltant { ELISION($pivot) ->
+        [vowel] d’{ $pivot }
+       *[other] de { $pivot }
+    } també segons la guia: la seva velocitat segueix la guia)
+centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
+        [vowel] d’{ $c1 }
+       *[other] de { $c1 }
+    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+        [vowel] d’{ $c2 }
+       *[other] de { $c2 }
+    }: totes dues velocitats respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    } són perpendiculars a la recta que passa per { $p } i { $q } (passa pels punts al voltant dels quals giren), de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
+centre-carried-outside = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
+        [vowel] d’{ $c1 }
+       *[other] de { $c1 }
+    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+        [vowel] d’{ $c2 }
+       *[other] de { $c2 }
+    }: totes dues velocitats respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    } són perpendiculars a la recta que passa per { $p } i { $q } (passa pels punts al voltant dels quals giren), de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 centre-line-slot = la normal a la ranura de l’enllaç { $joint } per { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
 centre-line-slot_fixed = la normal a la recta { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } per { $point }, el punt que hi llisca (enllaç { $joint })
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
-centre-field = cap enllaç ni cap recta d’Aronhold–Kennedy no el situa abans de conèixer les velocitats; amb elles, 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+centre-field = els enllaços no el situen abans de conèixer les velocitats; amb elles, 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 centre-rate = a partir de la velocitat angular trobada més amunt a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }

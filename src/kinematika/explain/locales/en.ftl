@@ -148,6 +148,12 @@ driver-joint = Given: the relative angular velocity at joint { $joint } is { $va
 driver-joint_accel = Given: the relative angular acceleration at joint { $joint } is { $value }.
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
+driver-whole = Given: { $sym } = { $value }, { $heading }.
+heading-right = to the right
+heading-left = to the left
+heading-up = upwards
+heading-down = downwards
+heading-along = along { $along }
 input-revolute = { $body } turns about the fixed pivot { $point }: its points move on circles about { $point }.
 input-prismatic = { $body } slides without turning along the guide of joint { $joint }.
 other-intro = These bodies are found together from the conditions of their joints:
@@ -182,7 +188,7 @@ centre-joint-gear = the contact of the pitch circles of gear { $joint },
 centre-joint-prismatic = joint { $joint } is prismatic: the relative motion is a translation and the centre is perpendicular to the guide,
 centre-joint-weld = joint { $joint } welds the two bodies:
 centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines meet
-centre-velocities = no joint and no Aronhold–Kennedy line places it before the velocities are known; with them: the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
+centre-velocities = the joints do not place it before the velocities are known; with them: the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
 centre-lines = it lies on { $first } and on { $second }; these lines meet
 centre-omega = with the velocities found above, the angular velocity relative to { $frame } is zero: the relative motion is a translation and the centre is
 centre-at = at { $point }.
@@ -270,7 +276,7 @@ fig-centres = The instant centres (rings, I with the numbers of two bodies) on t
             [0] .
            *[other] , with the lines they are found on (dash-dot: { $normals }).
         }
-       *[other] , with the lines they are found on (dash-dot: Aronhold–Kennedy lines{ $normals_n ->
+       *[other] , with the lines they are found on (dash-dot: lines through two centres{ $normals_n ->
             [0] {""}
            *[other] {" "}and { $normals }
         }).
@@ -312,10 +318,15 @@ higher-intro = The higher pair { $joint } is written as the motion of { $point }
 higher-straight = The higher pair { $joint } is written as the motion of { $point } along a straight path relative to { $holder } (a slot along the tangent).
 centre-weld = joint { $joint } welds { $body } to { $other }: they are one body, so the centre is that of { $other }, { $same },
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
+centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
+centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
+centre-line-guide = the perpendicular to the guide of joint { $joint } through { $pivot } (the point of { $b } on it slides along the guide relative to { $body }, and { $body } carries it about { $pivot } along the guide too: its velocity is along the guide)
+centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
+centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 centre-line-slot = the normal at { $point } to the slot of joint { $joint } (relative to the slotted body, { $point } can only move along the slot)
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides (joint { $joint })
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
-centre-field = no joint and no Aronhold–Kennedy line places it before the velocities are known; with them, 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-field = the joints do not place it before the velocities are known; with them, 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-rate = from the angular velocity found above through { $line }: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-check = Check with the velocities found above: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities

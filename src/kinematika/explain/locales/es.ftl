@@ -145,6 +145,12 @@ driver-joint = Dato: la velocidad angular relativa en el par { $joint } es { $va
 driver-joint_accel = Dato: la aceleración angular relativa en el par { $joint } es { $value }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
+driver-whole = Dato: { $sym } = { $value }, { $heading }.
+heading-right = hacia la derecha
+heading-left = hacia la izquierda
+heading-up = hacia arriba
+heading-down = hacia abajo
+heading-along = según { $along }
 input-revolute = { $body } { COUNT($body) ->
         [many] giran
        *[one] gira
@@ -206,7 +212,7 @@ centre-joint-gear = el contacto de las circunferencias primitivas del engranaje 
 centre-joint-prismatic = el par { $joint } es prismático: el movimiento relativo es una traslación y el CIR está en la perpendicular a la guía,
 centre-joint-weld = el par { $joint } une rígidamente los dos sólidos:
 centre-kennedy = por Aronhold–Kennedy está en la recta que pasa por { $l1 } (tercer sólido { $k1 }) y en la recta que pasa por { $l2 } (tercer sólido { $k2 }); estas rectas se cortan
-centre-velocities = ningún par ni ninguna recta de Aronhold–Kennedy lo sitúan antes de conocer las velocidades; con ellas: las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
+centre-velocities = los pares no lo sitúan antes de conocer las velocidades; con ellas: las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
 centre-lines = está en { $first } y en { $second }; estas rectas se cortan
 centre-omega = con las velocidades halladas, la velocidad angular respecto de { $frame } es nula: el movimiento relativo es una traslación y el CIR está
 centre-at = en { $point }.
@@ -297,7 +303,7 @@ fig-centres = Los centros instantáneos (anillos, I con los números de dos sól
             [0] .
            *[other] , con las rectas en que se hallan (trazo y punto: { $normals }).
         }
-       *[other] , con las rectas en que se hallan (trazo y punto: rectas de Aronhold–Kennedy{ $normals_n ->
+       *[other] , con las rectas en que se hallan (trazo y punto: rectas que pasan por dos centros{ $normals_n ->
             [0] {""}
            *[other] {" "}y { $normals }
         }).
@@ -339,10 +345,21 @@ higher-intro = El par superior { $joint } se escribe como el movimiento de { $po
 higher-straight = El par superior { $joint } se escribe como el movimiento de { $point } por una trayectoria recta relativa a { $holder } (una ranura según la tangente).
 centre-weld = el par { $joint } une rígidamente { $body } y { $other }: son un solo sólido, así que el CIR es el de { $other }, { $same },
 centre-line-kennedy = la recta que pasa por { $l } (Aronhold–Kennedy, tercer sólido { $k })
+centre-line-moves = la perpendicular a { $v } por { $point } ({ $point } se mueve con { $body }, que { COUNT($body) ->
+        [many] giran
+       *[one] gira
+    } alrededor de { $pivot })
+centre-line-moves_still = la perpendicular a { $v } por { $point } ({ $point } se mueve con { $body }, que se { COUNT($body) ->
+        [many] trasladan
+       *[one] traslada
+    })
+centre-line-guide = la perpendicular a la guía del par { $joint } por { $pivot } (el punto de { $b } que está en ella desliza a lo largo de la guía respecto de { $body }, y { $body } lo arrastra alrededor de { $pivot } también según la guía: su velocidad sigue la guía)
+centre-carried-between = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q } (pasa por los puntos alrededor de los cuales giran), así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
+centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q } (pasa por los puntos alrededor de los cuales giran), así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 centre-line-slot = la normal en { $point } a la ranura del par { $joint } (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
 centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza (par { $joint })
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
-centre-field = ningún par ni ninguna recta de Aronhold–Kennedy lo sitúan antes de conocer las velocidades; con ellas, 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
+centre-field = los pares no lo sitúan antes de conocer las velocidades; con ellas, 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
 centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
 centre-check = Comprobación con las velocidades halladas: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades

@@ -148,6 +148,12 @@ driver-joint = Datua: { $joint } giltzadurako abiadura angeluar erlatiboa { $val
 driver-joint_accel = Datua: { $joint } giltzadurako azelerazio angeluar erlatiboa { $value } da.
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
+driver-whole = Datua: { $sym } = { $value }, { $heading }.
+heading-right = eskuinerantz
+heading-left = ezkerrerantz
+heading-up = gorantz
+heading-down = beherantz
+heading-along = { $along } norabidean
 input-revolute = { $body } { $point } puntu finkoaren inguruan biratzen da: haren puntuek { $point } zentrodun zirkunferentziak deskribatzen dituzte.
 input-prismatic = { $body } biratu gabe traslatzen da { $joint } loturaren gidan zehar.
 other-intro = Solido hauek batera aurkitzen dira beren loturen baldintzetatik:
@@ -182,7 +188,7 @@ centre-joint-gear = { $joint } engranajearen zirkunferentzia primitiboen kontakt
 centre-joint-prismatic = { $joint } lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta zentroa gidaren perpendikularrean dago,
 centre-joint-weld = { $joint } loturak bi solidoak zurrunki lotzen ditu:
 centre-kennedy = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean dago ({ $k1 } hirugarren solidoa) eta { $l2 } zentroetatik pasatzen denean ({ $k2 } hirugarren solidoa); zuzen horiek ebakitzen dira
-centre-velocities = ez lotura batek ez Aronhold–Kennedyren zuzen batek ez dute kokatzen abiadurak ezagutu aurretik; haiekin: { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
+centre-velocities = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin: { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
 centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek ebakitzen dira
 centre-omega = aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta zentroa
 centre-at = { $point } puntuan.
@@ -270,7 +276,7 @@ fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiek
             [0] .
            *[other] , aurkitzeko zuzenekin (marra-puntua: { $normals }).
         }
-       *[other] , aurkitzeko zuzenekin (marra-puntua: Aronhold–Kennedy zuzenak{ $normals_n ->
+       *[other] , aurkitzeko zuzenekin (marra-puntua: bi zentrotatik pasatzen diren zuzenak{ $normals_n ->
             [0] {""}
            *[other] {" "}eta { $normals }
         }).
@@ -312,10 +318,15 @@ higher-intro = { $joint } goi-mailako bikotea { $point } puntuaren mugimendu gis
 higher-straight = { $joint } goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko ibilbide zuzen batean (arteka bat ukitzailearen norabidean).
 centre-weld = { $joint } loturak { $body } eta { $other } zurrunki lotzen ditu: solido bakarra dira; beraz, zentroa { $other } solidoarena da, { $same },
 centre-line-kennedy = { $l } zentroetatik pasatzen den zuzena (Aronhold–Kennedy, { $k } hirugarren solidoa)
+centre-line-moves = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua { $body } solidoarekin mugitzen da, zeina { $pivot } puntuaren inguruan biratzen baita)
+centre-line-moves_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua { $body } solidoarekin mugitzen da, zeina traslatzen baita)
+centre-line-guide = { $pivot } puntuan { $joint } loturaren gidarekiko perpendikularra ({ $b } solidoak bertan duen puntua gidan zehar irristatzen da { $body } solidoarekiko, eta { $body } solidoak { $pivot } puntuaren inguruan eramaten du, hori ere gidaren norabidean: haren abiadura gidaren norabidean dago)
+centre-carried-between = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira (zuzen hori biratzen diren puntuetatik pasatzen da); beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
+centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira (zuzen hori biratzen diren puntuetatik pasatzen da); beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
 centre-line-slot = { $joint } loturaren artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
 centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala, zeinean zehar irristatzen baita ({ $joint } lotura)
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
-centre-field = ez lotura batek ez Aronhold–Kennedyren zuzen batek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+centre-field = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-check = Egiaztapena aurkitutako abiadurekin: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak

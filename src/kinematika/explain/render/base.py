@@ -40,6 +40,8 @@ def plain(x: Any) -> str:
         return plain(x.items[0]) if x.items else ""
     if isinstance(x, str):
         return x
+    if isinstance(x, Sym):          # read by its letter: I_16 is "i setze" (al voltant d'I_16)
+        return x.base + "_"
     return ""
 
 UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "rate2": "rad/s²"}
@@ -448,6 +450,8 @@ class Renderer:
             x, other = c.same["pair"]
             why = Msg("centre.weld", {"joint": Name(c.via[0], "joint"), "body": Name(c.same["welded"], "body"),
                                       "other": Name(other, "body"), "same": Sym("I", f"{x},{other}", vector=False)})
+        elif c.how == "kennedy" and c.perps:          # the notes' perpendiculars to known velocities
+            why = Msg("centre.lines", {"first": c.perps[0], "second": c.perps[1]})
         elif c.how == "kennedy":
             k1, k2 = c.via
             why = Msg("centre.kennedy", {"k1": Name(k1, "body"), "k2": Name(k2, "body"),
@@ -491,9 +495,12 @@ class Renderer:
         (p, _, vp), (q, _, vq) = c.witnesses
         names = [Sym("I", n[2:], vector=False) if n.startswith("I:") else Name(n) for n in (p, q)]
         lines = [[Sym("I", f"{a},{k}", vector=False), Sym("I", f"{k},{b}", vector=False)] for k in c.via]
-        return Msg(f"centre.proportional.{c.side}",
-                   {"l1": lines[0], "l2": lines[1], "frame": Name(a, "body"), "p": names[0], "q": names[1],
-                    "vp": Value(vp, "speed"), "vq": Value(vq, "speed")})
+        args = {"l1": lines[0], "l2": lines[1], "frame": Name(a, "body"), "p": names[0], "q": names[1],
+                "vp": Value(vp, "speed"), "vq": Value(vq, "speed")}
+        if c.pivots:        # the notes' words: each point turns with a body about its centre (C5-1.4)
+            return Msg(f"centre.carried.{c.side}", {**args, "k1": Name(c.via[0], "body"), "k2": Name(c.via[1], "body"),
+                                                     "c1": c.pivots[0], "c2": c.pivots[1]})
+        return Msg(f"centre.proportional.{c.side}", args)
 
     def where(self, value: dict) -> Msg:
         """Where a centre is, as a message: at a point, at infinity along a direction, or no

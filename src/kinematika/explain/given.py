@@ -1,0 +1,58 @@
+"""What a driver gives, as the notes state a datum: a point's velocity (acceleration) is a
+vector, written with its direction in words (C5-E.4: "the chassis moves to the left at v",
+v_U = (←v); C5-E.6: v_H = (→v)), not "the component of v_U along (1, 0)".
+
+A model states such a datum as a component along a direction (`velocity: U, along: [1, 0]`)
+when the mechanism itself fixes the rest: a wheel's centre on flat ground moves along it.
+The component is then the whole vector — the point's motion across the direction is zero
+whatever the driver's value — and the explanation writes it whole, in the Data section
+and in the equations (the point is known, M and D). It stays a component where the datum
+truly is one: where the point also moves across the direction (C5-1.1's pulley, pushed
+sideways while it climbs; the tricycle's front wheel's acceleration, which has a normal
+part as the chassis turns).
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from .context import Ctx
+from .document import Msg, msg
+
+
+def whole_along(ctx: Ctx, d: Any, level: str) -> bool:
+    """Whether a driver's component along a direction is the point's whole velocity (level
+    "v") or acceleration ("a"): the point's motion across the direction is zero."""
+    if d.kind != "velocity" or d.along is None:
+        return False
+    if level == "a" and d.accel is None:
+        return False
+    motion = ctx.vel(d.point.body, d.point.point) if level == "v" else ctx.acc(d.point.body, d.point.point)
+    e, x = ctx.inst.direction(d.along, d.where), motion
+    across = ((x[0] * e[1] - x[1] * e[0],) if len(x) == 2 else        # x × e: the part off the direction
+              (x[1] * e[2] - x[2] * e[1], x[2] * e[0] - x[0] * e[2], x[0] * e[1] - x[1] * e[0]))
+    return ctx.is_zero(across, "speed" if level == "v" else "accel")
+
+
+def heading(ctx: Ctx, vector: tuple, along: Any = None) -> Optional[Msg]:
+    """The direction of a given vector in words, as the notes draw it with an arrow: to the
+    right (→), to the left (←), upwards (↑), downwards (↓) for a vector along an axis; else
+    along the driver's direction `along` (as the model writes it, turned when the datum is
+    negative), or None. A symbol stands for a positive size, as in the notes (v_U = (←v) for
+    a component −v); a zero vector has none."""
+    signs = [sign_of(ctx, c) for c in vector]
+    if not any(signs):
+        return None
+    if len(vector) == 2 and signs[1] == 0:
+        return msg("heading.right" if signs[0] > 0 else "heading.left")
+    if len(vector) == 2 and signs[0] == 0:
+        return msg("heading.up" if signs[1] > 0 else "heading.down")
+    return None if along is None else msg("heading.along", along=along)
+
+
+def sign_of(ctx: Ctx, x: Any) -> int:
+    """0, 1 or −1: a number's sign; a formula's as written (−v is negative, v positive)."""
+    if ctx.is_zero(x, ""):
+        return 0
+    if ctx.symbolic and hasattr(x, "could_extract_minus_sign"):
+        return -1 if x.could_extract_minus_sign() else 1
+    return -1 if float(ctx.num(x)) < 0 else 1
