@@ -289,8 +289,8 @@ WHOLE = {
     "seed_c5_e5_unequal_wheels": ["Given: v_A = (v, 0), to the right."],
     "seed_c5_1_5_pulley_block": ["Given: v_C1 = (0, −v), downwards.", "Given: v_C3 = (0, −2·v), downwards."],
     "seed_001_rolling_pair": ["Given: v_A = (0.5, 0) m/s, to the right."],
-    "seed_c5_2_1_tricycle": ["Given: v_{F∈3} = (√2·v₀/2, √2·v₀/2), along (1, 1).",
-                             "Given: the component of a_{F∈3} along (1, 1) is 0."],
+    "seed_c5_2_1_tricycle": ["Given: v_{F∈wheel} = (√2·v₀/2, √2·v₀/2), along (1, 1).",
+                             "Given: the component of a_{F∈wheel} along (1, 1) is 0."],
 }
 
 
