@@ -88,8 +88,20 @@ class Printer:
             self._error = err
 
 
+def bookmarks(page: Any) -> list[tuple[str, str]]:
+    """The bookmarks a page asks for: each link `<a href="#ID" data-bookmark="TITLE">`, in
+    the page's order, as (TITLE, ID). Chromium writes a named destination for each id a link
+    points to, and `outline.add_outline` adds the bookmarks to it (Chromium's own outline
+    needs a tagged PDF, about twice the size)."""
+    found = page.eval_on_selector_all(
+        'a[data-bookmark][href^="#"]', "els => els.map(e => [e.dataset.bookmark, e.getAttribute('href').slice(1)])")
+    return [(str(title), str(dest)) for title, dest in found]
+
+
 def _print_jobs(jobs: Any) -> None:
     from playwright.sync_api import sync_playwright
+
+    from .outline import add_outline
 
     with sync_playwright() as p:
         browser = p.chromium.launch(executable_path=chromium(), args=FLAGS)
@@ -99,8 +111,8 @@ def _print_jobs(jobs: Any) -> None:
             while (job := jobs.get()) is not None:
                 html, pdf = job
                 page.goto(html.resolve().as_uri(), wait_until="load")
-                page.pdf(path=str(pdf), format="A4", print_background=True, prefer_css_page_size=True,
-                         outline=True)      # bookmarks from the headings (tagging would double the size)
+                page.pdf(path=str(pdf), format="A4", print_background=True, prefer_css_page_size=True)
+                add_outline(pdf, bookmarks(page))
         finally:
             browser.close()
 

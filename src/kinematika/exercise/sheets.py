@@ -3,7 +3,7 @@ statement, its figure and a box for each number asked), and the answer key. HTML
 print on A4 (`@page`), one sheet per page; `printing` turns them into PDF.
 
 The key is made to be searched and kept small: a table of contents first (each student, their
-variant and its data, linked to its pages; the PDF's bookmarks follow the headings), then
+variant and its data, linked to its pages, and a bookmark of the PDF for each), then
 the parts of the worked solution that are the same in every variant (the structure of the
 mechanism, the order of solution), printed once, then one section per variant: who was
 given it, its data and figure, the numbers with their margins and the rest of the worked
@@ -167,8 +167,14 @@ def key_html(exercise: Any, figures: dict[int, bytes], solutions: dict[int, str]
 
 
 def _contents(exercise: Any, given: dict[int, list[Student]], lang: str) -> str:
-    """The key's first page: each student (or each variant), the variant and its data, linked."""
+    """The key's first page: each student (or each variant), the variant and its data, linked;
+    each link names the PDF's bookmark to the variant's pages (`data-bookmark`: the student
+    and the variant, or the variant and its data), so a teacher finds a student's in the
+    viewer's side panel."""
     cat = catalogue(lang)
+
+    def variant(n: int) -> str:
+        return cat.format("sheet-variant", {"n": n})
     from ..explain.render.names import unicode_name
     from .stated import stated_text
 
@@ -179,12 +185,14 @@ def _contents(exercise: Any, given: dict[int, list[Student]], lang: str) -> str:
     if given:
         head = (f"<tr><th>{escape(cat.format('sheet-student'))}</th><th>{escape(cat.format('key-variant'))}</th>"
                 f"<th>{escape(cat.format('key-data'))}</th></tr>")
-        rows = [f'<tr><td>{escape(s.label)}</td><td><a href="#variant-{s.variant}">{s.variant}</a></td>'
+        rows = [f'<tr><td>{escape(s.label)}</td><td><a href="#variant-{s.variant}" '
+                f'data-bookmark="{escape(s.label)} — {escape(variant(s.variant))}">{s.variant}</a></td>'
                 f"<td>{escape(data[s.variant])}</td></tr>"
                 for s in sorted((s for ss in given.values() for s in ss), key=lambda s: (s.name or s.id).lower())]
     else:
         head = (f"<tr><th>{escape(cat.format('key-variant'))}</th><th>{escape(cat.format('key-data'))}</th></tr>")
-        rows = [f'<tr><td><a href="#variant-{n}">{n}</a></td><td>{escape(d)}</td></tr>' for n, d in data.items()]
+        rows = [f'<tr><td><a href="#variant-{n}" data-bookmark="{escape(variant(n))}: {escape(d)}">{n}</a></td>'
+                f"<td>{escape(d)}</td></tr>" for n, d in data.items()]
     return (f'<section class="sheet" id="contents"><header><h1>{escape(cat.format("key-title"))}: '
             f"{escape(exercise.title)}</h1></header><h2>{escape(cat.format('key-contents'))}</h2>"
             f'<table class="contents">{head}{"".join(rows)}</table></section>\n')
