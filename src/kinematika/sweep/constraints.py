@@ -38,6 +38,7 @@ class Remembering(Protocol):
         ...
 
     def aux(self, q: AnyPoses) -> Any:
+        """The value to remember at the assembled poses `q`."""
         ...
 
 
