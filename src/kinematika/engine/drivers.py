@@ -1,11 +1,9 @@
 """Drivers as rows: the known motion, at the velocity level (values) and acceleration level."""
 from __future__ import annotations
 
-from typing import Any
-
 from ..algebra.vectors import dot, sub
 from ..errors import Said
-from ..model.model import Driver, PointPair
+from ..model.model import Direction, Driver, PointPair
 from .instant import Instant
 from ..joints import AXES, JointGeometry
 from .joints import Row, joint_rate
@@ -15,40 +13,41 @@ from .linear import as_lin
 
 def driver_rows(inst: Instant, d: Driver, geos: dict[str, JointGeometry], lv: Level) -> list[Row]:
     """The driver's conditions: (its motion) − (its value) = 0."""
-    given = d.accel if lv.accel else d.value
     where = d.where
     if d.kind == "omega":
-        return _omega(inst, d, lv, given, where)
+        return _omega(inst, d, lv, where)
     if d.kind == "joint":
-        geo = geos[d.joint]
+        joint, given = d.driven_joint(), d.rate(lv.accel)
         value = inst.value(given, where)
-        return [Row(as_lin(joint_rate(geo, lv) - value), Said("row-joint-rate", joint=d.joint, value=given.text),
-                    where, True)]
-    return _velocity(inst, d, lv, given, where)
+        return [Row(as_lin(joint_rate(geos[joint], lv) - value), Said("row-joint-rate", joint=joint,
+                                                                      value=given.text), where, True)]
+    return _velocity(inst, d, lv, where)
 
 
-def _omega(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> list[Row]:
+def _omega(inst: Instant, d: Driver, lv: Level, where: str) -> list[Row]:
     sp = lv.space
-    rel = d.relative_to
-    motion = sp.rot_sub(lv.omega(d.body), lv.omega(rel)) if rel else lv.omega(d.body)
+    rel, body = d.relative_to, d.driven_body()
+    motion = sp.rot_sub(lv.omega(body), lv.omega(rel)) if rel else lv.omega(body)
     name = "α" if lv.accel else "ω"
-    label = Said("row-rate-relative", name=name, body=d.body, relative=rel) if rel else Said("row-rate", name=name,
-                                                                                              body=d.body)
+    label = Said("row-rate-relative", name=name, body=body, relative=rel) if rel else Said("row-rate", name=name,
+                                                                                            body=body)
     if sp.dim == 2:
-        value = inst.value(given, where)
-        return [Row(as_lin(motion - value), Said("row-equals", label=label, value=given.text), where, True)]
+        rate = d.rate(lv.accel)
+        value = inst.value(rate, where)
+        return [Row(as_lin(motion - value), Said("row-equals", label=label, value=rate.text), where, True)]
+    given = d.vector(lv.accel)
     value = inst.vector(given, where)
     if rel and lv.accel:
         # α_rel = α − α_F − ω_F × ω_rel, the derivative seen from F
-        w_rel = sp.rot_sub(lv.w(d.body), lv.w(rel))
+        w_rel = sp.rot_sub(lv.w(body), lv.w(rel))
         motion = sub(motion, sp.cross_ww(lv.w(rel), w_rel))
     return [Row(as_lin(m - v), Said("row-component", label=label, axis=AXES[i], value=given[i].text), where, True)
             for i, (m, v) in enumerate(zip(motion, value))]
 
 
-def _velocity(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> list[Row]:
+def _velocity(inst: Instant, d: Driver, lv: Level, where: str) -> list[Row]:
     sp = lv.space
-    ref, rel = d.point, d.relative_to
+    ref, rel = d.driven_point(), d.relative_to
     p = inst.points[ref.point]
     motion = lv.point(ref.body, p)
     if rel:
@@ -59,16 +58,18 @@ def _velocity(inst: Instant, d: Driver, lv: Level, given: Any, where: str) -> li
     name = "a" if lv.accel else "v"
     if d.along is not None:
         u = _reference_direction(inst, rel or inst.model.frame, d.along, f"{where}.along")
-        value = inst.value(given, where)
+        rate = d.rate(lv.accel)
+        value = inst.value(rate, where)
         return [Row(as_lin(dot(motion, u) - value), Said("row-point-along", name=name, point=str(ref),
-                                                         value=given.text), where, True)]
+                                                         value=rate.text), where, True)]
+    given = d.vector(lv.accel)
     value = inst.vector(given, where)
     label = Said("row-point", name=name, point=str(ref))
     return [Row(as_lin(m - v), Said("row-component", label=label, axis=AXES[i], value=given[i].text), where, True)
             for i, (m, v) in enumerate(zip(motion, value))]
 
 
-def _reference_direction(inst: Instant, body: str, d: Any, where: str) -> tuple:
+def _reference_direction(inst: Instant, body: str, d: Direction, where: str) -> tuple:
     """A velocity driver's `along`, fixed in its frame of reference `body`: as drawn, turned
     with that body in a moved model (`Model.turns`) or a sweep's pose (`Instant.body_turn`);
     two points give it at the instant anyway."""

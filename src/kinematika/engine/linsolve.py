@@ -24,7 +24,7 @@ from .mobility import (SINGULAR_CONDITION, Diagnosis, Scaled, conflict_error, di
 class Analysis:
     """The dimensionless matrix, its SVD, the independent rows and the block order."""
 
-    scaled: Any
+    scaled: Scaled[np.ndarray]
     u: np.ndarray
     s: np.ndarray
     vt: np.ndarray
@@ -41,11 +41,12 @@ def analyse(a: np.ndarray, is_driver: np.ndarray, translation_columns: np.ndarra
     m, n = a.shape
     scaled = scale_system(a, translation_columns, length)
     # one SVD for the solve and the diagnosis (an underdetermined system is only diagnosed)
-    u, s, vt = np.linalg.svd(scaled.matrix, full_matrices=False) if m >= n else (None, None, None)
-    diag = diagnose(scaled.matrix, is_driver, s if scaled.matrix.size else None)
-    if m < n or diag.condition_number > SINGULAR_CONDITION:
+    svd = np.linalg.svd(scaled.matrix, full_matrices=False) if m >= n else None
+    diag = diagnose(scaled.matrix, is_driver, svd[1] if svd is not None and scaled.matrix.size else None)
+    if svd is None or diag.condition_number > SINGULAR_CONDITION:
         raise underdetermined_error(scaled.matrix, is_driver, labels, wheres, body_of, diag,
                                     restating() if restating else None)
+    u, s, vt = svd
     rows, blocks = list(range(m)), []
     if want_blocks:
         rows = independent_rows(scaled.matrix, n)
@@ -96,7 +97,7 @@ DENSE_DIAGNOSIS = 3000   # largest system whose failure is explained with the de
 class SparseAnalysis:
     """A square, nonsingular, dimensionless sparse system factorised by LU."""
 
-    scaled: Scaled                      # .matrix is a scipy.sparse CSC matrix
+    scaled: Scaled[SparseRows]
     lu: Any
     diagnosis: Diagnosis
     rows: list[int]
@@ -161,7 +162,7 @@ def inverse_norm(lu: Any, n: int, steps: int = 5) -> float:
     parallel pairs in quadratic time) and always the same answer (no random vectors)."""
     with np.errstate(all="ignore"):
         x = np.full(n, 1.0 / n)
-        estimate, signs = 0.0, None
+        estimate, signs = 0.0, np.zeros(0)        # no signs yet: the first step never compares them
         for step in range(steps):
             y = lu.solve(x)
             size = float(np.abs(y).sum())
@@ -348,8 +349,8 @@ def independent_rows(a: np.ndarray, n: int) -> list[int]:
         residual = row.astype(float).copy()
         for q in basis:
             residual -= (q @ residual) * q
-        size = np.linalg.norm(residual)
-        if size > 1e-9 * max(np.linalg.norm(row), 1e-300):
+        size = float(np.linalg.norm(residual))
+        if size > 1e-9 * max(float(np.linalg.norm(row)), 1e-300):
             basis.append(residual / size)
             chosen.append(i)
             if len(chosen) == n:
@@ -365,7 +366,7 @@ def _blocks(a_rows: np.ndarray, rows: list[int]) -> list[tuple[list[int], list[i
     match = _matching(pattern)
     # row i is matched to column match[i]; unknown match[i] depends on the others of row i
     row_of_col = {c: i for i, c in enumerate(match)}
-    deps = {c: [int(k) for k in np.flatnonzero(pattern[row_of_col[c]]) if k != c] for c in range(n)}
+    deps = [[int(k) for k in np.flatnonzero(pattern[row_of_col[c]]) if k != c] for c in range(n)]
     order = tarjan(n, deps)
     return [([rows[row_of_col[c]] for c in comp], comp) for comp in order]
 
@@ -374,7 +375,7 @@ def _matching(pattern: np.ndarray) -> list[int]:
     """A perfect matching of rows to columns over the nonzeros (augmenting paths)."""
     n = pattern.shape[0]
     col_owner: dict[int, int] = {}
-    options = [list(np.flatnonzero(pattern[i])) for i in range(n)]
+    options = [[int(c) for c in np.flatnonzero(pattern[i])] for i in range(n)]
 
     def augment(i: int, seen: set[int]) -> bool:
         for c in options[i]:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Generic, Optional, TypeVar
 
 import numpy as np
 
@@ -15,17 +15,19 @@ from ..errors import KinematikaError, Names, Num, Said
 
 SINGULAR_CONDITION = 1e10
 
+Matrix = TypeVar("Matrix")       # a dense array, or the engine's sparse rows (`blocks.SparseRows`)
+
 
 @dataclass
-class Scaled:
+class Scaled(Generic[Matrix]):
     """A dimensionless copy of the system matrix: A_s = R A C."""
 
-    matrix: np.ndarray
+    matrix: Matrix
     row_scale: np.ndarray
     col_scale: np.ndarray
 
 
-def scale_system(a: np.ndarray, translation_columns: np.ndarray, length: float) -> Scaled:
+def scale_system(a: np.ndarray, translation_columns: np.ndarray, length: float) -> Scaled[np.ndarray]:
     """A dimensionless copy of A: translation columns times the model's `length` (C), then each
     row divided by its largest entry (R), so A_s = R A C compares rotations with translations
     and rows with rows."""

@@ -21,6 +21,7 @@ from .joints import Row, joint_geometry, joint_known_terms, joint_rows
 from .levels import AccelerationLevel, KnownTerms, Level, Unknowns, VelocityLevel
 from .motion import BodyState, Motion
 from .terms import MECHANICS, Terms
+from .blocks import SparseRows
 from .linsolve import (LARGE, Analysis, SparseAnalysis, analyse, analyse_sparse, solve_numeric,
                        solve_symbolic, sparse_matrix)
 from .positions import fresh_name
@@ -43,6 +44,11 @@ class InstantSolver:
                                                {j.id: joint_geometry(inst, j) for j in model.joints})
         self.analysis: Analysis | SparseAnalysis | None = None
         self.rows_v: list[Row] = []
+        # set by `prepare`: the velocity system A x = b_v (A exact for a symbolic instant, and as
+        # numbers: dense, or sparse for a large numeric one)
+        self.a_sym: list[list[Any]] | None
+        self.a_num: np.ndarray | SparseRows
+        self.b_v: list[Any]
         self.exact: Any = None      # a symbolic instant's solution in stand-ins (`engine.exact`)
 
     def rows(self, lv: Level) -> list[Row]:
@@ -61,7 +67,8 @@ class InstantSolver:
         for d in model.drivers:
             rows = driver_rows(self.inst, d, self.geos, lv)
             out += rows
-            body = d.body if d.kind == "omega" else d.point.body if d.kind == "velocity" else None
+            body = (d.driven_body() if d.kind == "omega" else d.driven_point().body if d.kind == "velocity"
+                    else None)
             pairs += [frozenset((body, d.relative_to or model.frame)) if body else None] * len(rows)
         idle = idle_rows(self.inst, lv)
         if paired:
@@ -95,17 +102,18 @@ class InstantSolver:
         translation, body_of = u.layout()
         if not inst.symbolic and u.n > LARGE:
             self.a_sym, self.b_v = None, [-r.lin.const for r in rows_v]
-            self.a_num = sparse_matrix(rows_v, u.n)
-            self.analysis = analyse_sparse(self.a_num, self.is_driver, translation, inst.scale,
+            self.a_num = sparse = sparse_matrix(rows_v, u.n)
+            self.analysis = analyse_sparse(sparse, self.is_driver, translation, inst.scale,
                                            self.labels, self.wheres, body_of, self._restating)
             return
         if inst.symbolic:
             a, self.b_v = self.matrix(rows_v)
             self.a_sym = a
-            self.a_num = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), u.n)
+            dense = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), u.n)
         else:                       # numbers: the matrix filled from the rows' terms at once
-            self.a_sym, self.b_v, self.a_num = None, [-r.lin.const for r in rows_v], self._numeric(rows_v)
-        self.analysis = analyse(self.a_num, self.is_driver, translation, inst.scale, self.labels,
+            self.a_sym, self.b_v, dense = None, [-r.lin.const for r in rows_v], self._numeric(rows_v)
+        self.a_num = dense
+        self.analysis = analyse(dense, self.is_driver, translation, inst.scale, self.labels,
                                 self.wheres, body_of, want_blocks=inst.symbolic,
                                 restating=self._restating)
 
@@ -122,7 +130,7 @@ class InstantSolver:
         """The driver rows that restate what a joint between the same two bodies fixes in
         every configuration (ω_x = 0 of a body turning about y): accepted, but not counted
         as conditions when the drivers are too few (`mobility`, not a dead point)."""
-        a = self.a_num.toarray() if hasattr(self.a_num, "toarray") else self.a_num
+        a = self.a_num.toarray() if isinstance(self.a_num, SparseRows) else self.a_num
         out = np.zeros(len(self.pairs), dtype=bool)
         for i, pair in enumerate(self.pairs):
             if not self.is_driver[i] or pair is None:
@@ -135,6 +143,17 @@ class InstantSolver:
             out[i] = np.linalg.norm(joints.T @ coef - row) <= 1e-9 * np.linalg.norm(row)
         return out
 
+    def _analysed(self) -> Analysis | SparseAnalysis:
+        """The analysis `prepare` made (every solve comes after it)."""
+        assert self.analysis is not None, "prepare() first"
+        return self.analysis
+
+    def _dense(self) -> tuple[Analysis, np.ndarray]:
+        """The dense analysis and numeric matrix of a symbolic instant, which is never kept
+        sparse (`prepare`): what the exact solve orders its blocks by."""
+        assert isinstance(self.analysis, Analysis) and isinstance(self.a_num, np.ndarray), "a dense system"
+        return self.analysis, self.a_num
+
     def solve_linear(self, b: list[Any], check: bool = True,
                      labels: list[str] | None = None, level: int = 0) -> list[Any]:
         """The solution of A x = b with the analysed matrix (exact for a symbolic instant).
@@ -144,7 +163,7 @@ class InstantSolver:
         num = inst.num
         b_num = np.array([v if type(v) is float else num(v) for v in b], dtype=float)
         with np.errstate(all="ignore"):
-            x_num = solve_numeric(self.analysis, b_num, labels or self.labels, self.wheres,
+            x_num = solve_numeric(self._analysed(), b_num, labels or self.labels, self.wheres,
                                   self.is_driver, check, inst.rate ** level if level else 0.0)
         if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
             raise KinematikaError("schema", "values-overflow", "drivers")
@@ -153,7 +172,9 @@ class InstantSolver:
         from ..budget import check as within_budget
 
         within_budget("stage-solving")
-        exact = solve_symbolic(self.analysis, self.a_sym, b, self.a_num)
+        analysis, a_num = self._dense()
+        assert self.a_sym is not None, "a symbolic instant keeps its exact matrix"
+        exact = solve_symbolic(analysis, self.a_sym, b, a_num)
         rate = max(inst.rate, inst.rate ** 2)        # the size of rates and their squares
         inst.backend.check_against(exact, x_num, inst.probe, rate * max(1.0, inst.scale))
         return exact
@@ -224,7 +245,7 @@ class InstantSolver:
         import sympy
 
         u, rot = self.unknowns, self.space.rot
-        out = {}
+        out: dict[Any, Any] = {}
         for column, s in enumerate(x_w):
             if s not in known:
                 continue
@@ -247,7 +268,7 @@ class InstantSolver:
 
         b_num = np.array([standin.num(v) for v in b], dtype=float)
         with np.errstate(all="ignore"):
-            x_num = solve_numeric(self.analysis, b_num, labels, self.wheres, self.is_driver, True,
+            x_num = solve_numeric(self._analysed(), b_num, labels, self.wheres, self.is_driver, True,
                                   self.inst.rate ** (1 if prefix == "v" else 2))
         if not (np.isfinite(b_num).all() and np.isfinite(x_num).all()):
             raise KinematikaError("schema", "values-overflow", "drivers")
@@ -257,7 +278,8 @@ class InstantSolver:
             values.update(known)
             return out
 
-        exact = solve_symbolic(self.analysis, a, b, self.a_num, name)
+        analysis, a_num = self._dense()
+        exact = solve_symbolic(analysis, a, b, a_num, name)
         rate = max(self.inst.rate, self.inst.rate ** 2)     # the size of rates and their squares
         standin.backend.check_against(exact, x_num, standin.probe, rate * max(1.0, self.inst.scale))
         return exact

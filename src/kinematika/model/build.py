@@ -8,13 +8,14 @@ from __future__ import annotations
 import functools
 import types
 import typing
-from typing import TYPE_CHECKING, Any, Iterable, Optional
+from typing import TYPE_CHECKING, Any, Iterable, Optional, TypeGuard
 
 from ..errors import KinematikaError, Names, Said, pydantic_choices, pydantic_problem
 from ..joints import kind as joint_kind
 from ..questions import QUESTIONS
 from ..text import brief
 from . import shape
+from .plain import Record
 from .constructions import Construction, ConstructionReader, construction_order
 from ..expressions import Expr, ExpressionError, parse
 from .model import (Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint,
@@ -22,6 +23,7 @@ from .model import (Body, CamShape, Circle, CurveShape, Direction, Disc, Driver,
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
+    from pydantic_core import ErrorDetails
 
     from . import schema
 
@@ -31,8 +33,8 @@ def build_model(tree: Any) -> Model:
     """Check a model tree and resolve it into a `Model`; raises `KinematikaError`."""
     if not isinstance(tree, dict):
         raise KinematikaError("schema", "model-mapping")
-    spec = shape.spec_of(tree)         # plain checks first: pydantic only for files that may be wrong
-    if spec is None:
+    spec: schema.ModelSpec | Record | None = shape.spec_of(tree)   # plain checks first: pydantic
+    if spec is None:                                              # only for files that may be wrong
         from pydantic import ValidationError
 
         from . import schema
@@ -48,7 +50,9 @@ MAX_QUESTIONS = 10_000      # a model is read by people; more is a mistake or an
 
 
 class _Builder:
-    def __init__(self, spec: schema.ModelSpec) -> None:
+    def __init__(self, spec: schema.ModelSpec | Record) -> None:
+        # `schema`'s classes, or `shape`'s records of the same names and fields (a file the
+        # plain checks accept): read alike
         self.spec = spec
 
     def model(self) -> Model:
@@ -107,7 +111,7 @@ class _Builder:
             if not name.isidentifier():
                 raise KinematikaError("schema", "parameter-name-invalid", where, name=name)
             positive = True
-            if hasattr(raw, "symbolic"):         # a ParameterSpec (schema's or shape's)
+            if _parameter_spec(raw):             # a ParameterSpec (schema's or shape's)
                 positive = raw.positive
                 raw = None if raw.symbolic else raw.value
             out[name] = Parameter(name, None if raw is None else self.expr(raw, where), positive)
@@ -161,7 +165,7 @@ class _Builder:
             raise KinematikaError("schema", "construction-planar", f"points.{constructed}")
         if self.spec.dimension is not None:
             if self.spec.dimension == 2 and 3 in sizes:
-                name = next(n for n, v in points.items() if len(v) == 3)
+                name = next(n for n, v in points.items() if isinstance(v, tuple) and len(v) == 3)
                 raise KinematikaError("schema", "planar-two-coordinates", f"points.{name}")
             return self.spec.dimension
         return 3 if 3 in sizes else 2
@@ -169,16 +173,19 @@ class _Builder:
     # bodies -----------------------------------------------------------------------------
     def bodies(self) -> dict[str, Body]:
         out: dict[str, Body] = {}
-        for name, raw in self.spec.bodies.items():
+        for name, written in self.spec.bodies.items():
             where = f"bodies.{name}"
-            if isinstance(raw, list):
-                raw = shape.BodySpec.make(points=raw)
+            raw = shape.BodySpec.make(points=written) if isinstance(written, list) else written
             for p in raw.points:
                 self.known_point(p, where)
             seen: set[str] = set()
-            twice = sorted({p for p in raw.points if p in seen or seen.add(p)})
+            twice: set[str] = set()
+            for p in raw.points:
+                if p in seen:
+                    twice.add(p)
+                seen.add(p)
             if twice:
-                raise KinematikaError("schema", "point-listed-twice", where, point=twice[0])
+                raise KinematikaError("schema", "point-listed-twice", where, point=sorted(twice)[0])
             out[name] = Body(name, list(raw.points), self.shapes(raw, where))
         listed = {p for b in out.values() for p in b.points}
         for name in self.point_coords:
@@ -204,7 +211,7 @@ class _Builder:
             raise KinematikaError("schema", "vector-size", where, dim=self.dim, what=what, got=len(vec))
         return vec
 
-    def shapes(self, raw: schema.BodySpec, where: str) -> list[Shape]:
+    def shapes(self, raw: schema.BodySpec | Record, where: str) -> list[Shape]:
         shapes: list[Shape] = []
         if raw.circle:
             center, cp = self.location(raw.circle.center, f"{where}.circle.center")
@@ -222,9 +229,9 @@ class _Builder:
             shapes.append(Plane(through, self.direction(raw.plane.normal,
                                                                f"{where}.plane.normal"), tp))
         if raw.curve:
-            through = tuple(self.location(p, f"{where}.curve.through[{i}]")
-                            for i, p in enumerate(raw.curve.through))
-            shapes.append(CurveShape(tuple(name or coords for coords, name in through), raw.curve.closed))
+            places = tuple(self.location(p, f"{where}.curve.through[{i}]")
+                           for i, p in enumerate(raw.curve.through))
+            shapes.append(CurveShape(tuple(name or coords for coords, name in places), raw.curve.closed))
         if raw.cam:
             shapes.append(self.cam(raw.cam, f"{where}.cam"))
         if self.dim == 2 and shapes and any(isinstance(s, (Disc, Plane)) for s in shapes):
@@ -236,12 +243,12 @@ class _Builder:
     def cam(self, raw: Any, where: str) -> CamShape:
         """A cam's profile: its design checked as a cam-design file's (`cams.spec.design`,
         errors named in the body), placed at its centre."""
-        from ..cams.spec import CamFileSpec, CamSpec, design
+        from ..cams.spec import CamFileSpec, CamSpec, SpeedSpec, design
 
         center, cp = self.location(raw.center, f"{where}.center")
         spec = CamFileSpec(cam=CamSpec(kind=raw.kind, base=raw.base, rotation=raw.rotation),
                            follower=raw.follower, program=raw.program, profile=raw.profile,
-                           speed={"velocity" if raw.kind == "translating" else "omega": 1.0})
+                           speed=SpeedSpec(velocity=1.0) if raw.kind == "translating" else SpeedSpec(omega=1.0))
         try:
             made = design(spec)
         except KinematikaError as err:
@@ -269,7 +276,7 @@ class _Builder:
             out.append(self.joint(i, jid, raw, where))
         return out
 
-    def joint(self, i: int, jid: str, raw: schema.JointSpec, where: str) -> Joint:
+    def joint(self, i: int, jid: str, raw: schema.JointSpec | Record, where: str) -> Joint:
         a, b = (self.known_body(name, f"{where}.bodies") for name in raw.bodies)
         if a == b:
             raise KinematikaError("schema", "joint-same-body", where, body=a)
@@ -368,7 +375,7 @@ class _Builder:
                 out.append(Question(kind, len(out), ref, {kind: str(ref)}))
         return out
 
-    def question(self, i: int, raw: schema.QuestionSpec) -> Question:
+    def question(self, i: int, raw: schema.QuestionSpec | Record) -> Question:
         """A question of `ask`, checked as its kind says (`questions.QUESTIONS`): its target
         a material point, a body or a joint, a `moving` body when it takes one, its models."""
         where = f"ask[{i}]"
@@ -490,6 +497,11 @@ def _point_tags() -> set[str]:
     return {*schema._point_kind.tags.values(), *schema._construction_kind.tags.values()}
 
 
+def _parameter_spec(raw: object) -> TypeGuard[schema.ParameterSpec | Record]:
+    """Whether a parameter is written in full (`{value, positive, symbolic}`), not as a value."""
+    return hasattr(raw, "symbolic")
+
+
 def _schema_error(err: ValidationError, tree: Any) -> KinematikaError:
     errors = err.errors()
     first = min(errors, key=_rank)
@@ -515,7 +527,7 @@ def _is_branch(part: Any) -> bool:
                                       or "[" in part or part.startswith(("function-", "constrained")))
 
 
-def _rank(error: dict) -> tuple:
+def _rank(error: ErrorDetails) -> tuple:
     # prefer unknown or missing keys and literal errors over union-member type mismatches
     order = {"extra_forbidden": 0, "missing": 1, "literal_error": 2, "driver_kind": 2,
              "construction_kind": 2}
@@ -537,7 +549,7 @@ def _place(loc: list, tree: Any) -> str:
     return out
 
 
-def _message(error: dict, loc: list) -> Said:
+def _message(error: ErrorDetails, loc: list) -> Said:
     kind = error["type"]
     last = loc[-1] if loc else ""
     if kind == "extra_forbidden" and loc[:1] == ["drivers"] and last in _driver_tags():

@@ -9,7 +9,7 @@ parsed constructions (expressions unevaluated) and reads them from the checked f
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable, Mapping, Optional, Union
+from typing import Any, Callable, Mapping, Optional, Protocol, TypeGuard, Union
 
 from ..errors import KinematikaError
 from ..expressions import Expr
@@ -87,7 +87,7 @@ KIND_NAMES = {Polar: "polar", InFrame: "frame", TwoCircles: "two circles", Circl
 
 def uses(c: Construction) -> list[str]:
     """The names of the points a construction is drawn from."""
-    locs: list[Location] = []
+    locs: list[Optional[Location]] = []
     if isinstance(c, Polar):
         locs = [c.origin, *(c.reference or ())]
     elif isinstance(c, InFrame):
@@ -101,7 +101,8 @@ def uses(c: Construction) -> list[str]:
     return [loc for loc in locs if isinstance(loc, str)]
 
 
-def construction_order(points: Mapping[str, object], extra: Optional[Mapping[str, list[str]]] = None) -> list[str]:
+def construction_order(points: Mapping[str, Union[ExprVector, Construction]],
+                       extra: Optional[Mapping[str, list[str]]] = None) -> list[str]:
     """Every point's name, each after the points its construction uses (and the points
     `extra` says it is placed from); a cycle is an error."""
     order: list[str] = []
@@ -130,6 +131,60 @@ ExprOf = Callable[[object, str], Expr]
 VectorOf = Callable[[list, str], ExprVector]
 
 
+# What the reader takes from each checked construction: one of `schema`'s classes or
+# `shape`'s records of the same name (values as written: numbers, expressions' text, point
+# names, [x, y] lists), told apart by the class's name.
+class PolarSpec(Protocol):
+    """`{from, distance, angle, reference}`: a polar construction."""
+
+    from_: object
+    distance: object
+    angle: object
+    reference: Optional[list]
+
+
+class FrameSpec(Protocol):
+    """`{frame: [P, Q], at: [x, y]}`: a point fixed in the frame of two points."""
+
+    frame: list
+    at: list
+
+
+class CirclesSpec(Protocol):
+    """`{circles: [[centre, radius], [centre, radius]], side, near}`."""
+
+    circles: list
+    side: Optional[str]
+    near: Optional[list]
+
+
+class CircleLineSpec(Protocol):
+    """`{circle: [centre, radius], line, side, near}`."""
+
+    circle: list
+    line: object
+    side: Optional[str]
+    near: Optional[list]
+
+
+class LinesSpec(Protocol):
+    """`{lines: [line, line]}`."""
+
+    lines: list
+
+
+class LineSpec(Protocol):
+    """`{through, direction}`: a line written in full."""
+
+    through: object
+    direction: list
+
+
+def _line_spec(raw: object) -> TypeGuard[LineSpec]:
+    """Whether `raw` is a line written in full (else [P, Q] through two points)."""
+    return type(raw).__name__ == "LineSpec"
+
+
 class ConstructionReader:
     """Turns a checked construction spec into a `Construction`, naming places in errors.
 
@@ -140,35 +195,51 @@ class ConstructionReader:
     def __init__(self, expr: ExprOf, vector: VectorOf, known: set[str], symbolic: bool) -> None:
         self.expr, self.vector, self.known, self.symbolic = expr, vector, known, symbolic
 
-    def read(self, spec: object, where: str) -> Construction:
+    def read(self, spec: Any, where: str) -> Construction:
         """The `Construction` a checked spec describes (polar, frame, two circles, circle and
         line, two lines), its points' names checked and its values parsed; `where` names the
         place in errors."""
         # the checked spec is one of `schema`'s classes or `shape`'s records of the same name
         kind = type(spec).__name__
         if kind == "PolarSpec":
-            ref = None
-            if spec.reference is not None:
-                ref = (self.loc(spec.reference[0], f"{where}.reference[0]"),
-                       self.loc(spec.reference[1], f"{where}.reference[1]"))
-                self.distinct(ref, f"{where}.reference")
-            return Polar(self.loc(spec.from_, f"{where}.from"), self.expr(spec.distance, f"{where}.distance"),
-                         self.expr(spec.angle, f"{where}.angle"), ref)
+            return self._polar(spec, where)
         if kind == "FrameSpec":
-            origin, toward = (self.loc(p, f"{where}.frame[{i}]") for i, p in enumerate(spec.frame))
-            self.distinct((origin, toward), f"{where}.frame")
-            at = self.vector(spec.at, f"{where}.at")
-            return InFrame(origin, toward, (at[0], at[1]))
+            return self._in_frame(spec, where)
         if kind == "CirclesSpec":
-            (c1, r1), (c2, r2) = (self.circle(c, f"{where}.circles[{i}]") for i, c in enumerate(spec.circles))
-            self.distinct((c1, c2), f"{where}.circles")
-            return TwoCircles((c1, c2), (r1, r2), spec.side, self.near(spec.near, where))
+            return self._two_circles(spec, where)
         if kind == "CircleLineSpec":
-            center, radius = self.circle(spec.circle, f"{where}.circle")
-            return CircleLine(center, radius, self.line(spec.line, f"{where}.line"), spec.side,
-                              self.near(spec.near, where))
+            return self._circle_line(spec, where)
         assert kind == "LinesSpec", kind
-        return TwoLines(tuple(self.line(l, f"{where}.lines[{i}]") for i, l in enumerate(spec.lines)))
+        return self._two_lines(spec, where)
+
+    def _polar(self, spec: PolarSpec, where: str) -> Polar:
+        ref = None
+        if spec.reference is not None:
+            ref = (self.loc(spec.reference[0], f"{where}.reference[0]"),
+                   self.loc(spec.reference[1], f"{where}.reference[1]"))
+            self.distinct(ref, f"{where}.reference")
+        return Polar(self.loc(spec.from_, f"{where}.from"), self.expr(spec.distance, f"{where}.distance"),
+                     self.expr(spec.angle, f"{where}.angle"), ref)
+
+    def _in_frame(self, spec: FrameSpec, where: str) -> InFrame:
+        origin, toward = (self.loc(p, f"{where}.frame[{i}]") for i, p in enumerate(spec.frame))
+        self.distinct((origin, toward), f"{where}.frame")
+        at = self.vector(spec.at, f"{where}.at")
+        return InFrame(origin, toward, (at[0], at[1]))
+
+    def _two_circles(self, spec: CirclesSpec, where: str) -> TwoCircles:
+        (c1, r1), (c2, r2) = (self.circle(c, f"{where}.circles[{i}]") for i, c in enumerate(spec.circles))
+        self.distinct((c1, c2), f"{where}.circles")
+        return TwoCircles((c1, c2), (r1, r2), spec.side, self.near(spec.near, where))
+
+    def _circle_line(self, spec: CircleLineSpec, where: str) -> CircleLine:
+        center, radius = self.circle(spec.circle, f"{where}.circle")
+        return CircleLine(center, radius, self.line(spec.line, f"{where}.line"), spec.side,
+                          self.near(spec.near, where))
+
+    def _two_lines(self, spec: LinesSpec, where: str) -> TwoLines:
+        first, second = (self.line(line, f"{where}.lines[{i}]") for i, line in enumerate(spec.lines))
+        return TwoLines((first, second))
 
     def loc(self, raw: object, where: str) -> Location:
         """A location: a known point's name, or planar coordinates [x, y] parsed; an unknown
@@ -195,7 +266,7 @@ class ConstructionReader:
     def line(self, raw: object, where: str) -> LineDef:
         """A `LineDef`: ``{through, direction}`` (a vector: two point names there mean [P, Q]
         was meant, said in the error) or [P, Q] through two distinct points."""
-        if type(raw).__name__ == "LineSpec":
+        if _line_spec(raw):
             direction = raw.direction
             if len(direction) == 2 and all(isinstance(v, str) and v in self.known for v in direction):
                 raise KinematikaError("schema", "construction-line-direction", f"{where}.direction")

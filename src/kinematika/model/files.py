@@ -349,7 +349,7 @@ def _check_events(yaml: Any, text: str, loader: type, where: str) -> None:
     stack: list[list] = []                    # open collections: [anchor, values, depth below]
     added = 0                                 # values the aliases add
 
-    def close(anchor: str | None, count: int, below: int, line: int) -> None:
+    def close(anchor: str | None, count: int, below: int, line: int | None) -> None:
         if anchor is not None:
             sizes[anchor] = (count, below)
         if stack:
@@ -386,23 +386,23 @@ def _check_events(yaml: Any, text: str, loader: type, where: str) -> None:
 def _unique_key_loader(yaml: Any, where: str) -> type:
     """PyYAML's safe loader (libyaml's C parser when available) that refuses a key
     repeated in one mapping."""
-    base = getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader
+    base: Any = getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader
 
-    class Loader(base):
-        def construct_mapping(self, node: Any, deep: bool = False) -> dict:
-            seen: set = set()
-            for key_node, _ in node.value:
-                key = self.construct_object(key_node, deep=deep)
-                try:
-                    repeated = key in seen
-                    seen.add(key)
-                except TypeError:             # an unhashable key: SafeLoader reports it
-                    break
-                if repeated:
-                    raise _duplicate(key, where, key_node.start_mark.line + 1)
-            return super().construct_mapping(node, deep=deep)
+    def construct_mapping(self: Any, node: Any, deep: bool = False) -> dict:
+        seen: set = set()
+        for key_node, _ in node.value:
+            key = self.construct_object(key_node, deep=deep)
+            try:
+                repeated = key in seen
+                seen.add(key)
+            except TypeError:             # an unhashable key: SafeLoader reports it
+                break
+            if repeated:
+                raise _duplicate(key, where, key_node.start_mark.line + 1)
+        return base.construct_mapping(self, node, deep=deep)      # (what super() gives in a class body)
 
-    return Loader
+    # made with type(): a class statement cannot take a base known only at run time
+    return type("Loader", (base,), {"construct_mapping": construct_mapping})
 
 
 def load_model(path: str | Path) -> Model:
@@ -439,9 +439,12 @@ def _model_cam(model: Model, where: str) -> Any:
                 speed = shape.design.speed
                 for d in model.drivers:
                     if d.kind == "omega" and d.body == body.name and d.relative_to in (None, model.frame):
+                        value = d.given()
+                        if isinstance(value, tuple):          # a spatial ω: no speed of a planar cam
+                            continue
                         with contextlib.suppress(ExpressionError, TypeError, ValueError, ZeroDivisionError,
                                                  OverflowError):
-                            speed = abs(float(evaluate(d.value, numeric_parameters(model), Numeric())))
+                            speed = abs(float(evaluate(value, numeric_parameters(model), Numeric())))
                 return dataclasses.replace(shape.design, speed=speed, title=model.name)
     raise KinematikaError("schema", "model-no-cam", where)
 

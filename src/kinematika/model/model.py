@@ -150,6 +150,12 @@ class Joint:
         """What this kind of joint means (`kinematika.joints`): ask it, never its name."""
         return joint_kind(self.type)
 
+    def point_at(self) -> str:
+        """The joint's point `at`, for a kind that has one (a pin, a slot, a contact): the
+        builder sets it for every such kind, so its absence is a bug, not the user's."""
+        assert self.at is not None, f"{self.where}: no point"
+        return self.at
+
 
 @dataclass
 class Driver:
@@ -171,6 +177,42 @@ class Driver:
     def where(self) -> str:
         """Where the driver is written, for errors: ``drivers[0]``."""
         return f"drivers[{self.index}]"
+
+    # The fields a driver has depend on its kind; these narrow them (the builder sets each
+    # kind's, so a missing one is a bug, not the user's).
+    def driven_body(self) -> str:
+        """The body whose ω an "omega" driver gives."""
+        assert self.body is not None, f"{self.where}: not an omega driver"
+        return self.body
+
+    def driven_joint(self) -> str:
+        """The id of the joint whose rate a "joint" driver gives."""
+        assert self.joint is not None, f"{self.where}: not a joint-rate driver"
+        return self.joint
+
+    def driven_point(self) -> PointRef:
+        """The material point whose velocity a "velocity" driver gives."""
+        assert self.point is not None, f"{self.where}: not a velocity driver"
+        return self.point
+
+    def given(self, accel: bool = False) -> Union[Expr, ExprVector]:
+        """The driver's value, or with `accel` its acceleration (set by the builder for every
+        driver: a number for a joint's rate, a planar ω or a velocity `along`, else a vector)."""
+        given = self.accel if accel else self.value
+        assert given is not None, f"{self.where}: no {'accel' if accel else 'value'}"
+        return given
+
+    def rate(self, accel: bool = False) -> Expr:
+        """`given` when it is one number (a joint's rate, a planar ω, a velocity `along`)."""
+        given = self.given(accel)
+        assert not isinstance(given, tuple), f"{self.where}: a vector, not one number"
+        return given
+
+    def vector(self, accel: bool = False) -> ExprVector:
+        """`given` when it is a vector (a spatial ω, a point's velocity)."""
+        given = self.given(accel)
+        assert isinstance(given, tuple), f"{self.where}: one number, not a vector"
+        return given
 
 
 @dataclass

@@ -47,14 +47,14 @@ def numeric_parameters(model: Model) -> dict[str, float]:
     from ..algebra.backend import Numeric
 
     env: dict[str, float] = {}
-    pending = {n: p for n, p in model.parameters.items() if p.value is not None}
+    pending = {n: p.value for n, p in model.parameters.items() if p.value is not None}
     progress = True
     while pending and progress:
         progress = False
-        for name, p in list(pending.items()):
-            if p.value.names() <= set(env) | {"pi"}:
+        for name, value in list(pending.items()):
+            if value.names() <= set(env) | {"pi"}:
                 with contextlib.suppress(ExpressionError, ValueError, OverflowError):
-                    env[name] = float(evaluate(p.value, env, Numeric()))
+                    env[name] = float(evaluate(value, env, Numeric()))
                 del pending[name]
                 progress = True
     return env

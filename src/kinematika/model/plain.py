@@ -8,7 +8,7 @@ decides, with its error messages. Nothing here imports pydantic: the fast path's
 """
 from __future__ import annotations
 
-from typing import Any, Callable, ClassVar, Optional
+from typing import TYPE_CHECKING, Any, Callable, ClassVar, Optional
 
 Check = Callable[[Any], Any]       # returns the checked value, or raises Refused
 
@@ -29,6 +29,11 @@ class Record:
 
     def __init__(self, **fields: Any) -> None:
         self.__dict__.update(fields)
+
+    if TYPE_CHECKING:
+        def __getattr__(self, name: str) -> Any:
+            """A field: the record's class declares its fields at run time (`record`), so to
+            the type checker each is what the `schema` class of the same name says."""
 
     @classmethod
     def make(cls, **given: Any) -> Record:

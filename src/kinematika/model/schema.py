@@ -13,7 +13,7 @@ file's own fields (`cams.spec`). See docs/architecture.md, "One source for the m
 from __future__ import annotations
 
 import copy
-from typing import Annotated, Any, Literal, Optional, Union
+from typing import TYPE_CHECKING, Annotated, Any, Literal, Optional, Union
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, StrictBool, StrictFloat, StrictInt, Tag, create_model
 
@@ -185,16 +185,33 @@ def _fields_of(spec: type[BaseModel], *names: str) -> dict[str, Any]:
     return {name: (fields[name].annotation, copy.copy(fields[name])) for name in names or fields}
 
 
-BodyCamSpec = create_model(
-    "BodyCamSpec", __base__=Strict, __module__=__name__,
-    __doc__="""A cam's profile fixed in the body: its motion program (or measured profile) and
+# Three specs are made by `create_model` from fields known only at run time (another spec's, the
+# registered kinds' and questions'). mypy cannot read such a class, so it reads the class each
+# stands for, declared under TYPE_CHECKING with the same fields (checked at run time all the
+# same: pydantic builds the real one).
+if TYPE_CHECKING:
+    from ..cams.spec import FollowerSpec, SegmentSpec
+
+    class BodyCamSpec(CamSpec):
+        """The cam on a body, as `create_model` makes it below."""
+
+        center: Location
+        angle: Value
+        layout: Value
+        follower: FollowerSpec
+        program: Optional[list[SegmentSpec]]
+        profile: Optional[list[list[Union[StrictInt, StrictFloat]]]]
+else:
+    BodyCamSpec = create_model(
+        "BodyCamSpec", __base__=Strict, __module__=__name__,
+        __doc__="""A cam's profile fixed in the body: its motion program (or measured profile) and
     follower as in a cam-design file (`kinematika.cams.spec`: the keys of its `cam:` and its
     `follower`, `program`, `profile`, with their checks), placed at `center`, turned by
     `angle` (the cam angle at this instant: where the program is) in the design frame, itself
     turned by `layout` in the model's axes (a translating follower rises along the frame's y
     axis).""",
-    center=(Location, ...), angle=(Value, 0), layout=(Value, 0),
-    **_fields_of(CamSpec), **_fields_of(CamFileSpec, "follower", "program", "profile"))
+        center=(Location, ...), angle=(Value, 0), layout=(Value, 0),
+        **_fields_of(CamSpec), **_fields_of(CamFileSpec, "follower", "program", "profile"))
 
 
 class BodySpec(Strict):
@@ -228,12 +245,25 @@ def _joint_keys() -> tuple[str, ...]:
 
 
 JOINT_KEYS = _joint_keys()
-JointSpec = create_model(
-    "JointSpec", __base__=Strict, __module__=__name__,
-    __doc__="A joint: its kind, its two bodies, its id, the keys its kinds declare, a description.",
-    type=(JointType, ...), bodies=(Annotated[list[str], Field(min_length=2, max_length=2)], ...),
-    id=(Optional[str], None), **{key: (Optional[JOINT_KEY_TYPES[key]], None) for key in JOINT_KEYS},
-    description=(Optional[str], None))
+if TYPE_CHECKING:
+    class JointSpec(Strict):
+        """A joint, as `create_model` makes it below: every key a kind may declare."""
+
+        type: str
+        bodies: list[str]
+        id: Optional[str]
+        at: Optional[str]
+        along: Optional[Vector]
+        axis: Optional[Vector]
+        internal: Optional[bool]
+        description: Optional[str]
+else:
+    JointSpec = create_model(
+        "JointSpec", __base__=Strict, __module__=__name__,
+        __doc__="A joint: its kind, its two bodies, its id, the keys its kinds declare, a description.",
+        type=(JointType, ...), bodies=(Annotated[list[str], Field(min_length=2, max_length=2)], ...),
+        id=(Optional[str], None), **{key: (Optional[JOINT_KEY_TYPES[key]], None) for key in JOINT_KEYS},
+        description=(Optional[str], None))
 
 
 class OmegaDriver(Strict):
@@ -275,11 +305,21 @@ DriverSpec = Annotated[
                   custom_error_message="a driver needs one of the keys omega, joint or velocity"),
 ]
 
-QuestionSpec = create_model(
-    "QuestionSpec", __base__=Strict, __module__=__name__,
-    __doc__="One question; exactly one of the question keys is set (checked in `build`).",
-    **dict.fromkeys(QUESTIONS, (Optional[str], None)),
-    relative_to=(Optional[str], None), moving=(Optional[str], None))
+if TYPE_CHECKING:
+    class QuestionSpec(Strict):
+        """One question, as `create_model` makes it below: a key per kind of question."""
+
+        relative_to: Optional[str]
+        moving: Optional[str]
+
+        def __getattr__(self, kind: str) -> Optional[str]:
+            ...
+else:
+    QuestionSpec = create_model(
+        "QuestionSpec", __base__=Strict, __module__=__name__,
+        __doc__="One question; exactly one of the question keys is set (checked in `build`).",
+        **dict.fromkeys(QUESTIONS, (Optional[str], None)),
+        relative_to=(Optional[str], None), moving=(Optional[str], None))
 
 
 class SweepSpec(Strict):

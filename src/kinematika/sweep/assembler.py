@@ -12,9 +12,9 @@ import numpy as np
 
 from ..engine.system import InstantSolver
 from ..errors import KinematikaError
-from .constraints import residual_functions
+from .constraints import remembers, residual_functions
 from .plan import Plan
-from .poses import Poses, SpatialPoses, moved_geometry, moved_instant
+from .poses import AnyPoses, Poses, SpatialPoses, moved_geometry, moved_instant
 from .swept import Swept
 
 MAX_HALVINGS = 10
@@ -39,12 +39,12 @@ class Assembler:
         self.poses_class = Poses if inst.space.dim == 2 else SpatialPoses
         _check_rows(sweeper.solver, self.functions)
 
-    def residual(self, poses: Poses, dq: float) -> np.ndarray:
+    def residual(self, poses: AnyPoses, dq: float) -> np.ndarray:
         """Every joint's position residual at `poses`, with the swept coordinate advanced by
         `dq`, as one vector (zero when the mechanism is assembled there)."""
         return np.array([x for _, f in self.functions for x in f(poses, dq)], dtype=float)
 
-    def solver_at(self, poses: Poses) -> InstantSolver:
+    def solver_at(self, poses: AnyPoses) -> InstantSolver:
         """The engine at `poses`, its matrix analysed (raises `singular` at a dead point)."""
         inst = moved_instant(self.base, poses, self.owners)
         geos = {jid: moved_geometry(g, poses, inst) for jid, g in self.base_geos.items()}
@@ -57,8 +57,8 @@ class Assembler:
         translation over the model's length scale, compared with `TOLERANCE`."""
         return float(np.abs(np.where(self.translation, dx / self.scale, dx)).max(initial=0.0))
 
-    def step(self, poses: Poses, solver: InstantSolver, dq_from: float, dq_to: float,
-             depth: int = 0) -> tuple[Poses, InstantSolver]:
+    def step(self, poses: AnyPoses, solver: InstantSolver, dq_from: float, dq_to: float,
+             depth: int = 0) -> tuple[AnyPoses, InstantSolver]:
         """The poses at increment `dq_to`, from the assembled `poses` at `dq_from`."""
         found = self._corrected(poses, solver, dq_to)
         if found is not None:
@@ -69,7 +69,7 @@ class Assembler:
         half, half_solver = self.step(poses, solver, dq_from, middle, depth + 1)
         return self.step(half, half_solver, middle, dq_to, depth + 1)
 
-    def _corrected(self, poses: Poses, solver: InstantSolver, dq: float) -> Optional[Poses]:
+    def _corrected(self, poses: AnyPoses, solver: InstantSolver, dq: float) -> Optional[AnyPoses]:
         """Chord iterations from `poses` with the matrix of `solver`; None when they fail."""
         current = poses
         first, last = None, math.inf
@@ -90,7 +90,7 @@ class Assembler:
             last = size
         return None
 
-    def assemble(self, poses: Poses, dq: float) -> tuple[Poses, InstantSolver]:
+    def assemble(self, poses: AnyPoses, dq: float) -> tuple[AnyPoses, InstantSolver]:
         """Newton's method from any nearby poses (after a gap of skipped rows): the Jacobian
         rebuilt at each iterate and steps limited to 0.3 rad (0.3 of the model's length)."""
         current = poses
@@ -109,10 +109,10 @@ class Assembler:
             current = current.stepped(dx * min(1.0, 0.3 / size), self.unknowns)
         raise NotAssembled()
 
-    def keep_aux(self, poses: Poses) -> None:
+    def keep_aux(self, poses: AnyPoses) -> None:
         """Record the continuous angles (rolling joints) of the newly assembled poses."""
         for _, f in self.functions:
-            if hasattr(f, "aux"):
+            if remembers(f):
                 poses.aux[f.key] = f.aux(poses)
 
 

@@ -24,8 +24,8 @@ from ..engine.instant import Instant, _parameters
 from ..errors import KinematikaError, speaking
 from ..joints.capabilities import Coordinate
 from ..model.model import Model, Parameter, PointPair
-from ..structure.assur import assur_groups
-from .closed_form import ClosedForm, InputRates, Outcome, applicable
+from ..structure.assur import Group, assur_groups
+from .closed_form import ClosedForm, InputRates, Outcome, Over, applicable
 from .plan import Plan, bad_row, make_plan, swept_joint
 
 SLOT_GAP = 1e-6          # relative to the model's size, as the engine checks a slot's pin
@@ -87,7 +87,7 @@ class BatchSweeper:
     def _batchable(self) -> bool:
         """Closed form, a driver whose rates are its values (ω or a joint's rate), and a sweep
         whose length does not depend on the design."""
-        if not applicable(self.model, self.groups, self.joint, self.driver):
+        if self.groups is None or not applicable(self.model, self.groups, self.joint, self.driver):
             return False
         if self.driver.kind not in ("omega", "joint"):
             return False
@@ -121,12 +121,17 @@ class BatchSweeper:
             rates = self._rates(inst, directions, size)
             for r in (rates.omega, rates.alpha, rates.v, rates.a):
                 drawn &= np.isfinite(np.broadcast_to(r, (size, 1))[:, 0])
-            closed = ClosedForm(self.model, {k: p[:, None] for k, p in points.items()},
-                                {k: u[:, None] for k, u in directions.items()}, self.groups, self.joint,
-                                rates)
+            columns: dict[str, Over] = {k: p[:, None] for k, p in points.items()}
+            along: dict[str, Over] = {k: u[:, None] for k, u in directions.items()}
+            closed = ClosedForm(self.model, columns, along, self._groups(), self.joint, rates)
             outcome = closed.solve(self.plan.increments[None, :])
         drawn &= outcome.assembled[:, 0] & ~outcome.singular[:, 0]
         return Batch(self.plan, outcome, drawn, points, directions)
+
+    def _groups(self) -> list[Group]:
+        """The inputs and Assur groups (a batchable model, which has a closed form, has them)."""
+        assert self.groups is not None, "a batchable model decomposes into groups"
+        return self.groups
 
     def _directions(self, inst: Instant, points: dict[str, np.ndarray], size: int) -> dict[str, np.ndarray]:
         """Each prismatic or slot joint's unit `along` (fixed in its first body), per design."""
@@ -147,26 +152,26 @@ class BatchSweeper:
         """Designs whose slot pins lie on their lines (else the engine's `geometry` error)."""
         size = len(next(iter(points.values())))
         holds = np.ones(size, dtype=bool)
-        slots = [j for j in self.model.joints if j.kind.guides_point and j.kind.slides
+        slots = [(j, j.along) for j in self.model.joints if j.kind.guides_point and j.kind.slides
                  and isinstance(j.along, PointPair)]
         if not slots:
             return holds
         stack = np.array(list(points.values()))
         scale = np.abs(stack - stack.mean(axis=0)).max(axis=0)
-        for j in slots:
-            gap = _cross(points[j.at] - points[j.along.start], directions[j.id])
+        for j, along in slots:
+            gap = _cross(points[j.point_at()] - points[along.start], directions[j.id])
             holds &= np.abs(gap) <= SLOT_GAP * scale
         return holds
 
     def _rates(self, inst: Instant, directions: dict[str, np.ndarray], size: int) -> InputRates:
         """The input's ω, α (crank) or v, a (slider) from its driver's values, per design."""
         d, j, frame = self.driver, self.joint, self.model.frame
-        value = _column(inst.value(d.value, f"{d.where}.value"), size)[:, None]
-        accel = _column(inst.value(d.accel, f"{d.where}.accel"), size)[:, None]
+        value = _column(inst.value(d.rate(), f"{d.where}.value"), size)[:, None]
+        accel = _column(inst.value(d.rate(accel=True), f"{d.where}.accel"), size)[:, None]
         sign = 1.0 if d.kind == "omega" or j.a == frame else -1.0      # a joint's rate is b relative to a
-        body = self.groups[0].bodies[0]
+        body = self._groups()[0].bodies[0]
         if j.kind.coordinate is Coordinate.ANGLE:
-            return InputRates(j.at, sign * value, sign * accel, 0j, 0j)
+            return InputRates(j.point_at(), sign * value, sign * accel, 0j, 0j)
         names = self.model.bodies[body].points
         origin = names[0] if names else next(iter(self.model.points))
         u = directions[j.id][:, None]

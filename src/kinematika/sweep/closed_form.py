@@ -17,7 +17,7 @@ solves D designs over N positions, each design on its own drawn branch (`sweep.b
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Optional
+from typing import Any, Literal, Optional, Union, overload
 
 import numpy as np
 
@@ -29,6 +29,8 @@ from ..structure.assur import Group
 
 DYADS = ("RRR", "RRP", "RPR", "PRP")
 SINGULAR = 1e-10        # |sin| of the angle between a dyad's two unknown directions
+
+Over = Union[np.ndarray, complex]     # a value over the rows: an array, or one number for all (a float too)
 
 
 class Track:
@@ -43,13 +45,13 @@ class Track:
 
     __slots__ = ("a", "alpha", "drawn", "known", "o", "omega", "origin0", "rot", "theta", "v")
 
-    def __init__(self, drawn: dict, origin0: str, theta: np.ndarray, o: np.ndarray, v: np.ndarray,
-                 a: np.ndarray, omega: np.ndarray, alpha: np.ndarray, rot: np.ndarray) -> None:
+    def __init__(self, drawn: dict, origin0: str, theta: Over, o: Over, v: Over,
+                 a: Over, omega: Over, alpha: Over, rot: Over) -> None:
         self.drawn, self.origin0, self.theta, self.o, self.v, self.a = drawn, origin0, theta, o, v, a
         self.omega, self.alpha, self.rot = omega, alpha, rot
         self.known: dict[str, tuple] = {}
 
-    def point(self, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def point(self, name: str) -> tuple[Over, Over, Over]:
         """Position, velocity and acceleration of the body's material point `name`."""
         if name in self.known:
             return self.known[name]
@@ -61,12 +63,12 @@ class Track:
         self.known[name] = out
         return out
 
-    def moved(self, origin0: str, o: np.ndarray, v: np.ndarray, a: np.ndarray) -> "Track":
+    def moved(self, origin0: str, o: Over, v: Over, a: Over) -> "Track":
         """A body turning with this one whose origin `origin0` has the motion o, v, a."""
         return Track(self.drawn, origin0, self.theta, o, v, a, self.omega, self.alpha, self.rot)
 
 
-def _turning(w: np.ndarray, al: np.ndarray) -> np.ndarray:
+def _turning(w: Over, al: Over) -> Over:
     """iα − ω²: a rigid body's acceleration of r is (iα − ω²) r."""
     return 1j * al - w * w
 
@@ -120,7 +122,7 @@ class ClosedForm:
     configuration, `rates` the input's motion; each may hold arrays of designs (D, 1).
     """
 
-    def __init__(self, model: Model, points: dict[str, complex], directions: dict[str, complex],
+    def __init__(self, model: Model, points: dict[str, Over], directions: dict[str, Over],
                  groups: list[Group], joint: Joint, rates: InputRates,
                  flips: Optional[dict[int, float]] = None) -> None:
         self.model, self.joint, self.groups = model, joint, groups
@@ -138,8 +140,8 @@ class ClosedForm:
                  flips: Optional[dict[int, float]] = None) -> "ClosedForm":
         """One design, its input's rates read from the engine's solution of the drawn instant;
         `flips` (group index → −1) close those dyads the other way than drawn (assemblies)."""
-        cpoints = {k: complex(*p) for k, p in points.items()}
-        cdirections = {k: complex(*u) for k, u in directions.items()}
+        cpoints: dict[str, Over] = {k: complex(*p) for k, p in points.items()}
+        cdirections: dict[str, Over] = {k: complex(*u) for k, u in directions.items()}
         rates = drawn_rates(model, joint, groups[0].bodies[0], cpoints, drawn)
         return cls(model, cpoints, cdirections, groups, joint, rates, flips)
 
@@ -162,7 +164,7 @@ class ClosedForm:
         for index, (g, solver, chain) in enumerate(self.chains, start=1):
             sing = margins[index] = solver(chain, tracks)
             theta = tracks[g.bodies[0]].theta
-            if np.isnan(theta.sum()) or sing.min() < SINGULAR:      # rare: find the rows
+            if np.isnan(np.sum(theta)) or sing.min() < SINGULAR:      # rare: find the rows
                 failures.add(index, ~np.isnan(theta), sing < SINGULAR)
         shape = np.broadcast_shapes(np.shape(q), np.shape(self.rates.omega),
                                     *(np.shape(p) for p in self.points.values()))
@@ -183,11 +185,11 @@ class ClosedForm:
 REF = "·ref"             # the drawn reference point, origin of an input slider that carries no point
 
 
-def drawn_rates(model: Model, joint: Joint, body: str, points: dict[str, complex], drawn: Motion) -> InputRates:
+def drawn_rates(model: Model, joint: Joint, body: str, points: dict[str, Over], drawn: Motion) -> InputRates:
     """The input's origin and its ω, α, v, a read from the engine's drawn instant."""
     state = drawn.states[body]
     if joint.kind.coordinate is Coordinate.ANGLE:
-        origin = joint.at
+        origin = joint.point_at()
     else:
         names = model.bodies[body].points
         origin = names[0] if names else REF
@@ -251,10 +253,15 @@ class _Chain:
 
     def at(self, j: Joint) -> str:
         """The name of the joint's point (a track's `point` takes names)."""
-        return j.at
+        return j.point_at()
 
     def drawn(self, j: Joint) -> complex:
-        return self.points[j.at]
+        return self.points[j.point_at()]
+
+    def second(self) -> str:
+        """The dyad's second body (every dyad but a one-body one with a slot has one)."""
+        assert self.b2 is not None, "a one-body dyad"
+        return self.b2
 
     def along(self, j: Joint) -> complex:
         return self.directions[j.id]
@@ -282,8 +289,9 @@ def _rrr(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
     vB = vA + r1 * (1j * w1)
     aB = aA + r1 * (1j * al1 - w1s)
     tr[c.b1] = _body(c.points, a, r10, l1, r1, A, vA, aA, w1, al1)
-    tr[c.b2] = _body(c.points, c_, r20, l2, r2, C, vC, aC, w2, al2)
-    tr[c.b1].known[b] = tr[c.b2].known[b] = (B, vB, aB)
+    b2 = c.second()
+    tr[b2] = _body(c.points, c_, r20, l2, r2, C, vC, aC, w2, al2)
+    tr[c.b1].known[b] = tr[b2].known[b] = (B, vB, aB)
     return sing
 
 
@@ -360,8 +368,8 @@ def _prp(c: _Chain, tr: dict[str, Track]) -> np.ndarray:
 _SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp}
 
 
-def _body(drawn: dict, origin: str, r0: complex, length2: float, r: np.ndarray, o: np.ndarray,
-          v: np.ndarray, a: np.ndarray, w: np.ndarray, al: np.ndarray) -> Track:
+def _body(drawn: dict, origin: str, r0: complex, length2: float, r: np.ndarray, o: Over,
+          v: Over, a: Over, w: np.ndarray, al: np.ndarray) -> Track:
     """A body whose drawn vector r0 (of squared length `length2`) is now r; its origin is the
     point named `origin`."""
     rot = r * (np.conjugate(r0) / length2)
@@ -411,10 +419,10 @@ def _cross(p, q):
     return p.real * q.imag - p.imag * q.real
 
 
-def _root(x: np.ndarray) -> np.ndarray:
+def _root(x: np.ndarray | float) -> np.ndarray:
     """√x, with round-off below zero taken as 0 and a real gap as NaN (cannot assemble)."""
     out = np.sqrt(np.maximum(x, 0.0))
-    gap = x < -1e-12
+    gap = np.asarray(x) < -1e-12
     if gap.any():
         out[gap] = np.nan
     return out
@@ -450,7 +458,17 @@ def _bridged(angle: np.ndarray, good: np.ndarray) -> np.ndarray:
     return np.nan_to_num(np.take_along_axis(angle, last, axis=-1), nan=0.0)
 
 
-def _solve2(c1: np.ndarray, c2: np.ndarray, rhs: np.ndarray,
+@overload
+def _solve2(c1: Over, c2: Over, rhs: Over, margin: Literal[False] = False) -> tuple[tuple, None]:
+    ...
+
+
+@overload
+def _solve2(c1: Over, c2: Over, rhs: Over, margin: Literal[True] | float) -> tuple[tuple, np.ndarray]:
+    ...
+
+
+def _solve2(c1: Over, c2: Over, rhs: Over,
             margin: bool | float = False) -> tuple[tuple, Optional[np.ndarray]]:
     """Real x, y with x c1 + y c2 = rhs (complex): Cramer's rule with cross products.
 

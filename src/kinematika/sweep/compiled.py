@@ -78,11 +78,13 @@ class CompiledNewton:
         for j in model.joints:
             g = geos[j.id]
             points.append(np.asarray(g.at, dtype=float))
-            pa.append(at(j.a)), pb.append(at(j.b))
+            pa.append(at(j.a))
+            pb.append(at(j.b))
             if j.kind.pins and not j.kind.ball:          # a pin about an axis: its turning rows
                 for p in g.perps:
                     perps.append(np.asarray(p, dtype=float))
-                    ra.append(at(j.a)), rb.append(at(j.b))
+                    ra.append(at(j.a))
+                    rb.append(at(j.b))
         self.p0 = np.array(points).reshape(-1, 3)
         self.coincide = _Pairs(np.array(pa, dtype=int), np.array(pb, dtype=int))
         self.perp0 = np.array(perps).reshape(-1, 3)
@@ -92,11 +94,12 @@ class CompiledNewton:
                                  for j in model.joints if j.kind.pins and not j.kind.ball]).reshape(-1, 3)
         axes, da, db, rates, accels, swept = [], [], [], [], [], []
         for d in model.drivers:
-            g = geos[d.joint]
+            g = geos[d.driven_joint()]
             axes.append(np.asarray(g.axis, dtype=float))
-            da.append(at(g.joint.a)), db.append(at(g.joint.b))
-            rates.append(float(inst.value(d.value, d.where)))
-            accels.append(float(inst.value(d.accel, d.where)))
+            da.append(at(g.joint.a))
+            db.append(at(g.joint.b))
+            rates.append(float(inst.value(d.rate(), d.where)))
+            accels.append(float(inst.value(d.rate(accel=True), d.where)))
             swept.append(d is plan.driver)
         self.drive_axis0 = np.array(axes).reshape(-1, 3)
         self.drive = _Pairs(np.array(da, dtype=int), np.array(db, dtype=int))
@@ -235,11 +238,11 @@ class CompiledNewton:
         entries = sorted((place[r] * self.n + c, f, s) for r, c, f, s in var + [(r, c, unit, s) for r, c, s in one]
                          if place[r] >= 0)
         at = np.array([e[0] for e in entries], dtype=int)
-        sign = np.array([e[2] for e in entries])
+        signs = np.array([e[2] for e in entries])
         rows = at // self.n
         starts = np.searchsorted(rows, np.arange(self.m))
-        self._layout = (at, np.array([e[1] for e in entries], dtype=int), sign,
-                        sign * self._column[at % self.n], starts, rows)
+        self._layout = (at, np.array([e[1] for e in entries], dtype=int), signs,
+                        signs * self._column[at % self.n], starts, rows)
         every_row = (np.diff(np.r_[starts, len(at)]) > 0).all()
         return len(np.unique(at)) == len(at) and bool(every_row)     # one writer each, no empty row
 
@@ -534,7 +537,8 @@ def supported(sweeper: Swept) -> bool:
         return False
     joints = {j.id: j for j in model.joints}
     return (all(j.kind.pins for j in model.joints)
-            and all(d.kind == "joint" and joints[d.joint].kind.coordinate is Coordinate.ANGLE for d in model.drivers))
+            and all(d.kind == "joint" and joints[d.driven_joint()].kind.coordinate is Coordinate.ANGLE
+                    for d in model.drivers))
 
 
 def compiled_sweep(sweeper: Swept, plan: Plan):

@@ -13,7 +13,7 @@ engine's velocity matrix is their Jacobian in the pose coordinates of `poses`:
 """
 from __future__ import annotations
 
-from typing import Callable
+from typing import Any, Callable, Optional, Protocol, TypeGuard
 
 import numpy as np
 
@@ -23,9 +23,28 @@ from ..joints import JointGeometry
 from ..joints.capabilities import Coordinate
 from ..model.model import Driver
 from .plan import Plan
-from .poses import Poses, exp_rotation
+from .poses import AnyPoses, Poses, SpatialPoses, exp_rotation
 
-Rows = Callable[[Poses, float], list]          # (poses, increment) -> residual rows
+Rows = Callable[[AnyPoses, float], list]       # (poses, increment) -> residual rows
+
+
+class Remembering(Protocol):
+    """A residual that carries a value from one assembled pose to the next (a rolling pair's
+    continued angle, a cam contact's curve parameter): `aux(q)`, kept in `q.aux[key]`."""
+
+    key: Any
+
+    def __call__(self, q: AnyPoses, dq: float) -> list:
+        ...
+
+    def aux(self, q: AnyPoses) -> Any:
+        """The value to remember at the assembled poses `q`."""
+        ...
+
+
+def remembers(f: Rows) -> TypeGuard[Remembering]:
+    """Whether the residual `f` carries a value to remember (it has `aux`)."""
+    return hasattr(f, "aux")
 
 
 def residual_functions(inst: Instant, geos: dict[str, JointGeometry], plan: Plan) -> list[tuple[str, Rows]]:
@@ -48,16 +67,13 @@ def _driver(inst: Instant, d: Driver, geos: dict[str, JointGeometry], plan: Plan
     j = plan.joint
     sign = 1.0 if j.a == inst.model.frame else -1.0      # the coordinate is j.b relative to j.a
     if d.kind == "joint":
-        geo = geos[d.joint]
+        geo = geos[d.driven_joint()]
         return geo.joint.kind.displacement(geo, inst.ref, swept)
     if d.kind == "omega":
-        rel = d.relative_to
-        if not spatial:
-            return lambda q, dq: q.rotation_error(rel, d.body, sign * dq if swept else 0.0)
-        axis = np.asarray(geos[j.id].axis if swept else (0, 0, 1), dtype=float)
-        return lambda q, dq: q.rotation_error(rel, d.body, exp_rotation(sign * dq * axis) if swept else None)
-    p0 = inst.points[d.point.point]
-    body, rel = d.point.body, d.relative_to
+        return _turning(d.relative_to, d.driven_body(), sign, swept, spatial, geos[j.id].axis)
+    point = d.driven_point()
+    p0 = inst.points[point.point]
+    body, rel = point.body, d.relative_to
     along = None
     if d.along is not None:        # fixed in the frame of reference (given as numbers or two points)
         along = tuple(float(c) for c in inst.direction(d.along, f"{d.where}.along"))
@@ -67,15 +83,15 @@ def _driver(inst: Instant, d: Driver, geos: dict[str, JointGeometry], plan: Plan
         if not swept or dq == 0.0:
             return [0.0] * len(p0)
         if j.kind.coordinate is Coordinate.LENGTH:
-            return [sign * dq * c for c in geos[j.id].along]
-        r = np.subtract(p0, geos[j.id].at)
+            return [sign * dq * c for c in geos[j.id].unit_along()]
+        r = np.subtract(p0, geos[j.id].point_at())
         axis = np.asarray(geos[j.id].axis if spatial else (0.0, 0.0, 1.0))
         if not spatial:
             r = np.append(r, 0.0)
         moved = exp_rotation(sign * dq * axis) @ r - r
         return moved[:len(p0)].tolist()
 
-    def velocity(q: Poses, dq: float) -> list:
+    def velocity(q: AnyPoses, dq: float) -> list:
         """The point's displacement relative to the frame of reference (along `along`, which
         turns with that frame: v_rel·u's integral, u fixed in it)."""
         moved = _sub(_sub(q.point(body, p0), q.point(rel, p0) if rel else p0), target(dq))
@@ -84,6 +100,23 @@ def _driver(inst: Instant, d: Driver, geos: dict[str, JointGeometry], plan: Plan
         return [_dot(moved, q.turn(rel, along) if rel else along)]
 
     return velocity
+
+
+def _turning(rel: Optional[str], body: str, sign: float, swept: bool, spatial: bool,
+             axis: Optional[tuple]) -> Rows:
+    """An omega driver's rows: `body`'s rotation relative to `rel` (the frame: None), less the
+    increment (about the swept joint's `axis` in space) when it is the swept driver."""
+    if not spatial:
+        def planar(q: AnyPoses, dq: float) -> list:
+            assert isinstance(q, Poses)
+            return q.rotation_error(rel, body, sign * dq if swept else 0.0)
+        return planar
+    turn = np.asarray(axis if swept else (0, 0, 1), dtype=float)
+
+    def spatial_rows(q: AnyPoses, dq: float) -> list:
+        assert isinstance(q, SpatialPoses)
+        return q.rotation_error(rel, body, exp_rotation(sign * dq * turn) if swept else None)
+    return spatial_rows
 
 
 def _sub(p, r) -> list:

@@ -24,7 +24,7 @@ from .compiled import compiled_sweep
 from .continuation import CannotFollow, advance
 from .limit_positions import Zigzag, not_followed, with_rows
 from .plan import Plan, bad_row
-from .poses import Poses
+from .poses import AnyPoses
 from .progress import reporter
 from .result import SweepResult, dead_points
 from .swept import Swept
@@ -201,7 +201,7 @@ class _Rows:
                                    closed=self.closed)
 
 
-def _store(sweeper: Swept, poses: Poses, motion: Motion, k: int, bodies: dict, motions: dict) -> None:
+def _store(sweeper: Swept, poses: AnyPoses, motion: Motion, k: int, bodies: dict, motions: dict) -> None:
     for b, values in bodies.items():
         s = motion.states[b]
         values["angle"][k] = np.degrees(poses.angle(b))

@@ -15,7 +15,7 @@ from typing import Any, Optional
 import numpy as np
 
 from .. import limits
-from ..errors import KinematikaError, Num, Said
+from ..errors import KinematikaError, Names, Num, Said
 from ..engine.instant import Instant
 from ..joints.capabilities import Coordinate
 from ..model.model import Driver, Joint, Model
@@ -85,11 +85,12 @@ def check_steps(model: Model, steps: Any, most: int, where: str, too_many: str) 
     error at `where` (`too_many`: the key saying how many steps would fit)."""
     if isinstance(steps, bool) or not isinstance(steps, numbers.Integral):
         raise KinematikaError("schema", "steps-whole", where, got=repr(steps))
-    if not 1 <= steps <= most:
-        raise KinematikaError("schema", "steps-range", where, limit=most, got=int(steps))
+    count = int(steps)
+    if not 1 <= count <= most:
+        raise KinematikaError("schema", "steps-range", where, limit=most, got=count)
     per_row = values_per_row(model)
-    if (steps + 1) * per_row > limits.SWEEP_VALUES:
-        raise KinematikaError("schema", too_many, where, steps=int(steps), per_row=per_row,
+    if (count + 1) * per_row > limits.SWEEP_VALUES:
+        raise KinematikaError("schema", too_many, where, steps=count, per_row=per_row,
                               limit=limits.SWEEP_VALUES, most=max(limits.SWEEP_VALUES // per_row - 1, 1))
 
 
@@ -135,18 +136,19 @@ def driven_joints(model: Model) -> dict[str, Driver]:
     frame = model.frame
     for d in model.drivers:
         if d.kind == "joint":
-            j = model.joint(d.joint)
+            j = model.joint(d.driven_joint())
             if j.kind.sweepable:
                 out.setdefault(j.id, d)
             continue
         if d.relative_to not in (None, frame):
             continue
+        coordinates: tuple[Coordinate, ...]
         if d.kind == "omega":        # a turning joint of the body to the frame
-            bodies, coordinates = {d.body}, (Coordinate.ANGLE,)
+            bodies, coordinates = {d.driven_body()}, (Coordinate.ANGLE,)
         else:                        # every body whose point moves as the driven one there
-            point = d.point.point
-            bodies = next(set(c) for c in model.motion_classes(point, model.carriers(point))
-                          if d.point.body in c)
+            ref = d.driven_point()
+            bodies = next(set(c) for c in model.motion_classes(ref.point, model.carriers(ref.point))
+                          if ref.body in c)
             coordinates = (Coordinate.ANGLE, Coordinate.LENGTH)
         for j in model.joints:
             other = j.b if j.a == frame else j.a if j.b == frame else None
@@ -155,7 +157,8 @@ def driven_joints(model: Model) -> dict[str, Driver]:
     return out
 
 
-def bad_row(plan: Plan, k: int, kind: str, what: str = "", at: Optional[float] = None) -> KinematikaError:
+def bad_row(plan: Plan, k: int, kind: str, what: Names | str = "",
+            at: Optional[float] = None) -> KinematikaError:
     """The error for row k (at coordinate `at`, else the plan's row k): `assembly` (cannot be
     assembled), `singular` (dead point), or `mobility` (assembled, but the drivers as written
     contradict the moved joints)."""

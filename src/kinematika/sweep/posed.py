@@ -22,16 +22,17 @@ import numpy as np
 
 from ..engine.instant import instantiate
 from ..errors import KinematikaError
-from ..expressions import Expr, parse
+from ..expressions import Expr, ExprVector, parse
 from ..model.model import (Body, CamShape, Circle, CurveShape, Direction, Disc, Joint, Line, Model, Plane,
                            PointPair)
+from ..model.constructions import Construction
 from .result import SweepResult
 
 
 def posed_model(model: Model, result: SweepResult, row: int = -1) -> Model:
     """`model` at row `row` of `result` (a sweep of it, or its assembly search)."""
     pose = _Pose(model, result, row)
-    points = {name: _numbers(pose.location(name)) for name in model.points}
+    points: dict[str, ExprVector | Construction] = {name: _numbers(pose.location(name)) for name in model.points}
     posed = dataclasses.replace(
         model, points=points, move={},
         bodies={name: _moved_body(pose, b) for name, b in model.bodies.items()},
@@ -57,14 +58,14 @@ class _Pose:
 
     def carried(self, body: str, drawn: tuple) -> np.ndarray:
         """Where the material point of `body` drawn at `drawn` is now."""
-        drawn = np.asarray([float(c) for c in drawn])
+        at = np.asarray([float(c) for c in drawn])
         if body == self.model.frame:
-            return drawn
+            return at
         names = self.model.bodies[body].points
         if not names:
             raise KinematikaError("schema", "body-no-point", f"bodies.{body}", body=body)
         ref = names[0]
-        return self.material(ref, body) + self.rot[body] @ (drawn - np.asarray(
+        return self.material(ref, body) + self.rot[body] @ (at - np.asarray(
             [float(c) for c in self.inst.points[ref]]))
 
     def turned(self, body: str, d: Direction, where: str) -> Direction:

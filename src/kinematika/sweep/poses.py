@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import copy
 import math
-from typing import Any, Optional
+from typing import Any, Optional, Union
 
 import numpy as np
 
@@ -143,6 +143,9 @@ class SpatialPoses:
         return float(log_rotation(exp_rotation(-target * e) @ self._relative(a, b)) @ e)
 
 
+AnyPoses = Union[Poses, SpatialPoses]     # the poses of a planar or of a spatial sweep
+
+
 def exp_rotation(w: np.ndarray) -> np.ndarray:
     """Rodrigues: the rotation by |w| about w."""
     angle = float(np.linalg.norm(w))
@@ -185,7 +188,7 @@ def _continued(r: np.ndarray, previous: np.ndarray) -> np.ndarray:
     return min(candidates, key=lambda c: float(np.linalg.norm(c - previous)))
 
 
-def moved_instant(base: Instant, poses: Poses, owners: dict[str, str]) -> Instant:
+def moved_instant(base: Instant, poses: AnyPoses, owners: dict[str, str]) -> Instant:
     """The drawn instant with every point and shape carried by its body to the new poses."""
     inst = copy.copy(base)           # as dataclasses.replace(base): the same fields, shared
     inst.body_turn = poses.turn
@@ -195,7 +198,7 @@ def moved_instant(base: Instant, poses: Poses, owners: dict[str, str]) -> Instan
     return inst
 
 
-def _moved_shape(s: Any, body: str, poses: Poses) -> Any:
+def _moved_shape(s: Any, body: str, poses: AnyPoses) -> Any:
     if isinstance(s, Circle):
         return Circle(poses.point(body, s.center), s.radius, s.center_point)
     if isinstance(s, Line):
@@ -214,18 +217,18 @@ def _moved_shape(s: Any, body: str, poses: Poses) -> Any:
     return s
 
 
-def _turned_by(body: str, poses: Poses) -> float:
+def _turned_by(body: str, poses: AnyPoses) -> float:
     """How far a planar body has turned from the drawing."""
     e = poses.turn(body, (1.0, 0.0))
     return math.atan2(e[1], e[0])
 
 
-def _moved_curve(s: Curve, body: str, poses: Poses) -> Curve:
+def _moved_curve(s: Curve, body: str, poses: AnyPoses) -> Curve:
     """A placed curve carried by its body: its origin moved, its axis turned."""
     return Curve(s.curve, tuple(poses.point(body, s.origin)), s.angle + _turned_by(body, poses), s.role)
 
 
-def moved_geometry(geo: JointGeometry, poses: Poses, inst: Instant) -> JointGeometry:
+def moved_geometry(geo: JointGeometry, poses: AnyPoses, inst: Instant) -> JointGeometry:
     """A joint's drawn geometry carried by its bodies: `at` by the second body, directions by
     the body they are fixed in (the first; the second for a wheel)."""
     j = geo.joint

@@ -76,9 +76,10 @@ class Sweeper:
         """The closed form of this mechanism (dyads closed as drawn, or as `flips` say)."""
         from .closed_form import ClosedForm, applicable     # start-up, as `assur_groups`
 
-        if not applicable(self.model, self.groups, self.joint, self.driver):
+        groups = self.groups
+        if groups is None or not applicable(self.model, groups, self.joint, self.driver):
             return None
-        return ClosedForm.at_drawn(self.model, self.points, self.directions, self.groups, self.joint,
+        return ClosedForm.at_drawn(self.model, self.points, self.directions, groups, self.joint,
                                    self.drawn, flips)
 
     def form(self, flips: dict[int, float]) -> Any:
@@ -88,8 +89,10 @@ class Sweeper:
         if key not in self._forms:
             from .closed_form import ClosedForm
 
-            sides = {i: self._flips.get(i, 1.0) * flips.get(i, 1.0) for i in range(1, len(self.groups))}
-            self._forms[key] = ClosedForm.at_drawn(self.model, self.points, self.directions, self.groups,
+            groups = self.groups
+            assert groups is not None, "a mechanism with a closed form decomposes into groups"
+            sides = {i: self._flips.get(i, 1.0) * flips.get(i, 1.0) for i in range(1, len(groups))}
+            self._forms[key] = ClosedForm.at_drawn(self.model, self.points, self.directions, groups,
                                                    self.joint, self.drawn, sides)
         return self._forms[key]
 
