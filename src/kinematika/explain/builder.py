@@ -162,7 +162,8 @@ def _name_terms(sec: Section) -> None:
     pruned: no Coriolis term is said known where none is written."""
     for m in sec.blocks:
         if isinstance(m, Msg) and m.key == "a.intro":
-            m.key += acceleration_terms(_equations(sec))
+            m.key = {"coriolis": "a.intro", "relative": "a.intro_relative",
+                     "normal": "a.intro_normal"}[acceleration_terms(_equations(sec))]
 
 
 def _equations(sec: Section) -> list[Equation]:
