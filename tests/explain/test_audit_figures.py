@@ -30,7 +30,7 @@ def test_a_body_welded_to_the_ground_is_not_a_moving_body():
     assert "*left plane* (welded to *ground*: fixed)" in text
     assert "part of the fixed body, not moving bodies" in text
     velocities = text.split("## Velocities", 1)[1].split("## Angular velocities", 1)[0]
-    assert "### Step 1: group solved together — *bar OQ*" in velocities
+    assert "### Step 1: *bar OQ*" in velocities
     rates = text.split("## Angular velocities", 1)[1].split("##", 1)[0]
     assert "plane" not in rates
     for lang, words in (("ca", "4 sòlids mòbils"), ("eu", "4 solido mugikorren"), ("es", "4 sólidos móviles")):

@@ -26,6 +26,7 @@ from .order import solution_order
 from .planar import PlanarSteps
 from .needs import accelerations_asked, prune
 from .polygon import degenerate, level_polygon, polygon
+from .terms import acceleration_terms
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
 from .structure import structure_section, values_table
@@ -97,6 +98,8 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
         doc.sections[0].blocks.insert(2, said)
     for sec, level in zip(levels, wanted):
         level_polygons(ctx, sec, level)
+        if level == "a":
+            _name_terms(sec)
     in_levels = {id(e) for sec in levels for e in _equations(sec)}
     for eq in doc.equations():
         if id(eq) not in in_levels:
@@ -151,6 +154,16 @@ def found_forward(eq: Equation) -> None:
         return
     eq.target.unknown = True
     eq.target.mag, eq.target.dir = Ann("?"), Ann("?")
+
+
+def _name_terms(sec: Section) -> None:
+    """The acceleration section's opening sentence names only the kinds of terms its
+    equations contain (`acceleration_terms`), read once the equations nothing needs are
+    pruned: no Coriolis term is said known where none is written."""
+    for m in sec.blocks:
+        if isinstance(m, Msg) and m.key == "a.intro":
+            m.key = {"coriolis": "a.intro", "relative": "a.intro_relative",
+                     "normal": "a.intro_normal"}[acceleration_terms(_equations(sec))]
 
 
 def _equations(sec: Section) -> list[Equation]:

@@ -166,20 +166,23 @@ def _drop_rows(doc: Document, bodies: set[str], alphas: set[str]) -> None:
                     if len(r) > 2 and getattr(r[0], "text", None) in alphas:
                         r[2] = "—"
         if s.title.key == "sec.structure":
-            for m in (b for b in _blocks(s) if isinstance(b, Msg) and b.key == "order.item"):
+            for m in (b for b in _blocks(s) if isinstance(b, Msg) and b.key in ("order.item", "order.item_group")):
                 _unname(m, bodies)
+
+
+STEP_TITLES = ("step.title", "step.title_group")
 
 
 def _untitle(sec: Section, bodies: set[str]) -> None:
     """A step's title names the bodies it works out: not one whose rate went unworked; a
     step left with nothing to say goes, and the steps after it are numbered on (C5-E.4's
     right wheel at accelerations, which nothing asks: no "Step 2" with nothing under it)."""
-    sec.blocks = [b for b in sec.blocks if not (isinstance(b, Section) and b.title.key == "step.title"
+    sec.blocks = [b for b in sec.blocks if not (isinstance(b, Section) and b.title.key in STEP_TITLES
                                                 and not b.blocks)]
     n = 0
     for step in (b for b in sec.blocks if isinstance(b, Section)):
         _unname(step.title, bodies)
-        if step.title.key == "step.title" and isinstance(step.title.args.get("n"), int):
+        if step.title.key in STEP_TITLES and isinstance(step.title.args.get("n"), int):
             n += 1
             step.title.args["n"] = n
 

@@ -29,6 +29,15 @@ body_ = body
 LEVEL_UNIT = {"v": "rate", "a": "rate2"}
 
 
+def step_title(n: int, step: Step) -> Msg:
+    """A step's title: its number and the bodies it finds, after the course's name for the
+    group when it has one (input, RRR dyad …); a group that is no named kind is titled by its
+    bodies alone, as a teacher writes it ("Step 1: rear wheel and sprocket"), not by the
+    program's "group solved together"."""
+    key = "step.title_group" if step.kind == "other" else "step.title"
+    return msg(key, n=n, kind=msg(f"kind.{step.kind}"), bodies=names(step.bodies, "body"))
+
+
 class PlanarSteps:
     """Builds the velocity or the acceleration section of a planar mechanism."""
 
@@ -56,8 +65,7 @@ class PlanarSteps:
                 self.known.update(step.bodies)
                 continue
             i += 1
-            sub = Section(msg("step.title", n=i, kind=msg(f"kind.{step.kind}"),
-                              bodies=names(step.bodies, "body")), level=3)
+            sub = Section(step_title(i, step), level=3)
             sub.blocks = self.step(step)
             sec.blocks.append(sub)
             self.known.update(step.bodies)

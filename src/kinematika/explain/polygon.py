@@ -16,6 +16,7 @@ import math
 
 from .context import Ctx
 from .document import Arrow, Equation, Figure, msg
+from .terms import acceleration_terms
 
 OFFSET = 0.035          # of the polygon's size: the gap between collinear arrows
 SAME = 1e-9             # relative: two points (or arrows) are one
@@ -34,6 +35,9 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     if not poly.arrows:
         return None
     key = ("fig.step_v" if level == "v" else "fig.step_a") if step else ("fig.level_v" if level == "v" else "fig.level_a")
+    if key == "fig.level_a":                # the caption names only the kinds of terms drawn
+        key = {"coriolis": "fig.level_a", "relative": "fig.level_a_relative",
+               "normal": "fig.level_a_normal"}[acceleration_terms(eqs)]
     fig = Figure(msg(key), unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()

@@ -9,7 +9,7 @@ from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
 from .kinds import kind_key, on_fixed_line
-from .document import Arrow, Drawing, Figure, Inline, Name, Names, Section, Table, Value, body, joint, msg, names, point
+from .document import Arrow, Drawing, Figure, Inline, Msg, Name, Names, Section, Table, Value, body, joint, msg, names, point
 from .order import Step
 
 
@@ -39,10 +39,19 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     order = Section(msg("sec.order"), level=3)
     order.add(msg("order.assur" if steps and steps[0].source == "assur" else "order.blocks"))
     for i, s in enumerate([s for s in steps if not all(ctx.fixed(b) for b in s.bodies)], 1):
-        order.add(msg("order.item", n=i, kind=msg(f"kind.{s.kind}"), bodies=names(s.bodies, "body"),
-                      joints=names(s.joints, "joint"), known=names(s.known, "body")))
+        order.add(order_item(i, s))
     sec.add(order)
     return sec
+
+
+def order_item(n: int, step: Step) -> Msg:
+    """One line of the order of solution: the bodies a step finds and the bodies they are
+    found from, after the course's name for the group when it has one (RRR dyad …). Its
+    joints are left to the step itself, and a group that is no named kind is said by its
+    bodies alone ("1. rear wheel and sprocket, from ground"), as a teacher writes it."""
+    key = "order.item_group" if step.kind == "other" else "order.item"
+    return msg(key, n=n, kind=msg(f"kind.{step.kind}"), bodies=names(step.bodies, "body"),
+               known=names(step.known, "body"))
 
 
 def welded_to_frame(ctx: Ctx) -> list[str]:

@@ -14,6 +14,18 @@ from .context import Ctx, alpha_sym, omega_sym, segment
 from .document import Ann, Msg, Sym, Term, joint, msg
 
 UNIT = {"v": "speed", "a": "accel"}
+
+
+def acceleration_terms(equations: list) -> str:
+    """Which kinds of acceleration terms the `equations` contain: "coriolis" (normal,
+    tangential, relative and Coriolis), "relative" (no Coriolis) or "normal" (normal and
+    tangential only), for choosing the message that names them: a sentence or a caption about the
+    acceleration terms names only the kinds written — a four-bar has no Coriolis term, and
+    saying its Coriolis terms are known tells a student of terms that are not there."""
+    kinds = {t.kind for eq in equations if eq.level == "a" for side in eq.sides for t in side}
+    if "coriolis" in kinds:
+        return "coriolis"
+    return "relative" if kinds & {"slide", "relative"} else "normal"
 KNOWN = (Ann("M"), Ann("D"))
 UNKNOWN = (Ann("?"), Ann("?"))
 

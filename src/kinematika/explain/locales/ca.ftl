@@ -153,10 +153,11 @@ pos-crossed = la configuració creuada (les barres es creuen)
 sec-order = Ordre de resolució
 order-assur = El mecanisme es descompon en les seves entrades i grups d’Assur (díades); cada grup es resol a partir de sòlids ja coneguts:
 order-blocks = El mecanisme no es descompon en díades a partir de manovelles o corredores motores; cada grup es troba a partir dels sòlids ja coneguts, en aquest ordre:
-order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
-        [one] enllaç
-       *[other] enllaços
-    } { $joints }), a partir { ELISION($known) ->
+order-item = { $n }. { $kind }: { $bodies }, a partir { ELISION($known) ->
+        [vowel] d’{ $known }
+       *[other] de { $known }
+    }.
+order-item_group = { $n }. { $bodies }, a partir { ELISION($known) ->
         [vowel] d’{ $known }
        *[other] de { $known }
     }.
@@ -168,6 +169,7 @@ kind-PRP = díade PRP
 kind-other = grup resolt conjuntament
 kind-copy = igual que un sòlid ja resolt
 step-title = Pas { $n }: { $kind } — { $bodies }
+step-title_group = Pas { $n }: { $bodies }
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
 v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
@@ -175,6 +177,8 @@ v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D 
        *[other] ; en vermell, els termes trobats en el pas
     }.
 a-intro = Conegudes les velocitats, tots els termes normals i de Coriolis són coneguts; les incògnites són els termes tangencials i relatius.
+a-intro_relative = Conegudes les velocitats, tots els termes normals són coneguts; les incògnites són els termes tangencials i relatius.
+a-intro_normal = Conegudes les velocitats, els termes normals són coneguts; les incògnites són els termes tangencials.
 a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
 driver-omega = Dada: { $sym } = { $value }.
 driver-joint = Dada: la velocitat angular relativa a l’articulació { $joint } és { $value }.
@@ -499,6 +503,20 @@ fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’accelerac
         [md] {""}
        *[other] negre:{" "}
     }normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
+fig-level_a_relative = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
+        [md] {""}
+       *[other] {" "}(blau)
+    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors ({ $format ->
+        [md] {""}
+       *[other] negre:{" "}
+    }normals i tangencials, i relatius), l’un darrere l’altre.
+fig-level_a_normal = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
+        [md] {""}
+       *[other] {" "}(blau)
+    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors ({ $format ->
+        [md] {""}
+       *[other] negre:{" "}
+    }normals i tangencials), l’un darrere l’altre.
 col-number = núm.
 
 # higher pairs (joints.contact, curved_slot, cam)

@@ -123,10 +123,8 @@ pos-crossed = the crossed assembly (the links cross)
 sec-order = Order of solution
 order-assur = The mechanism is decomposed into its inputs and Assur groups (dyads); each group is solved from bodies already known:
 order-blocks = The mechanism does not decompose from driven cranks or sliders into dyads; each group is found from the bodies already known, in this order:
-order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
-        [one] joint
-       *[other] joints
-    } { $joints }), from { $known }.
+order-item = { $n }. { $kind }: { $bodies }, from { $known }.
+order-item_group = { $n }. { $bodies }, from { $known }.
 kind-input = input (driven body)
 kind-RRR = RRR dyad
 kind-RRP = RRP dyad
@@ -135,6 +133,7 @@ kind-PRP = PRP dyad
 kind-other = group solved together
 kind-copy = the same as a body found before
 step-title = Step { $n }: { $kind } — { $bodies }
+step-title_group = Step { $n }: { $bodies }
 sec-velocities = Velocities
 sec-accelerations = Accelerations
 v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
@@ -142,6 +141,8 @@ v-intro = Each vector equation is annotated as in the notes: M magnitude known, 
        *[other] ; the terms found in the step are in red
     }.
 a-intro = With the velocities known, every normal term and every Coriolis term is known; the tangential and relative terms are the unknowns.
+a-intro_relative = With the velocities known, every normal term is known; the tangential and relative terms are the unknowns.
+a-intro_normal = With the velocities known, the normal terms are known; the tangential terms are the unknowns.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
 driver-joint = Given: the relative angular velocity at joint { $joint } is { $value }.
@@ -301,6 +302,20 @@ fig-level_a = Acceleration polygon, to scale: from the pole o, the acceleration 
         [md] {""}
        *[other] black:{" "}
     }normal and tangential, relative and Coriolis), head to tail.
+fig-level_a_relative = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
+        [md] {""}
+       *[other] {" "}(blue)
+    } ends at its image, lettered as the point (a for A); between the images, the terms of the equations above ({ $format ->
+        [md] {""}
+       *[other] black:{" "}
+    }normal and tangential, and relative), head to tail.
+fig-level_a_normal = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
+        [md] {""}
+       *[other] {" "}(blue)
+    } ends at its image, lettered as the point (a for A); between the images, the terms of the equations above ({ $format ->
+        [md] {""}
+       *[other] black:{" "}
+    }normal and tangential), head to tail.
 col-number = no.
 
 # higher pairs (joints.contact, curved_slot, cam)

@@ -120,10 +120,8 @@ pos-crossed = la configuración cruzada (las barras se cruzan)
 sec-order = Orden de resolución
 order-assur = El mecanismo se descompone en sus entradas y grupos de Assur (díadas); cada grupo se resuelve a partir de sólidos ya conocidos:
 order-blocks = El mecanismo no se descompone en díadas a partir de manivelas o correderas motoras; cada grupo se halla a partir de los sólidos ya conocidos, en este orden:
-order-item = { $n }. { $kind }: { $bodies } ({ $joints_n ->
-        [one] par
-       *[other] pares
-    } { $joints }), a partir de { $known }.
+order-item = { $n }. { $kind }: { $bodies }, a partir de { $known }.
+order-item_group = { $n }. { $bodies }, a partir de { $known }.
 kind-input = entrada (sólido motor)
 kind-RRR = díada RRR
 kind-RRP = díada RRP
@@ -132,6 +130,7 @@ kind-PRP = díada PRP
 kind-other = grupo resuelto en conjunto
 kind-copy = igual que un sólido ya resuelto
 step-title = Paso { $n }: { $kind } — { $bodies }
+step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
 v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas{ $format ->
@@ -139,6 +138,8 @@ v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conoc
        *[other] ; en rojo, los términos hallados en el paso
     }.
 a-intro = Conocidas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
+a-intro_relative = Conocidas las velocidades, todos los términos normales son conocidos; las incógnitas son los términos tangenciales y relativos.
+a-intro_normal = Conocidas las velocidades, los términos normales son conocidos; las incógnitas son los términos tangenciales.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
 driver-joint = Dato: la velocidad angular relativa en el par { $joint } es { $value }.
@@ -328,6 +329,20 @@ fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la acelerac
         [md] {""}
        *[other] negro:{" "}
     }normales y tangenciales, relativos y de Coriolis), uno tras otro.
+fig-level_a_relative = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
+        [md] {""}
+       *[other] {" "}(azul)
+    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+        [md] {""}
+       *[other] negro:{" "}
+    }normales y tangenciales, y relativos), uno tras otro.
+fig-level_a_normal = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
+        [md] {""}
+       *[other] {" "}(azul)
+    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+        [md] {""}
+       *[other] negro:{" "}
+    }normales y tangenciales), uno tras otro.
 col-number = n.º
 
 # higher pairs (joints.contact, curved_slot, cam)

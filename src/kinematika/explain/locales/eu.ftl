@@ -120,10 +120,11 @@ pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 sec-order = Ebazpen-ordena
 order-assur = Mekanismoa bere sarreretan eta Assur taldeetan (diadetan) deskonposatzen da; talde bakoitza jadanik ezagunak diren solidoetatik ebazten da:
 order-blocks = Mekanismoa ez da diadetan deskonposatzen biradera edo irristagailu eragileetatik abiatuta; talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da, ordena honetan:
-order-item = { $n }. { $kind }: { $bodies } ({ $joints } { $joints_n ->
-        [one] lotura
-       *[other] loturak
-    }), { $known } { $known_n ->
+order-item = { $n }. { $kind }: { $bodies }, { $known } { $known_n ->
+        [one] solidotik
+       *[other] solidoetatik
+    }.
+order-item_group = { $n }. { $bodies }, { $known } { $known_n ->
         [one] solidotik
        *[other] solidoetatik
     }.
@@ -135,6 +136,7 @@ kind-PRP = PRP diada
 kind-other = batera ebatzitako taldea
 kind-copy = aurretik ebatzitako solido baten berdina
 step-title = { $n }. urratsa: { $kind } — { $bodies }
+step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
 v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
@@ -142,6 +144,8 @@ v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua eza
        *[other] ; gorriz, urratsean aurkitutako terminoak
     }.
 a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
+a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
+a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
 driver-joint = Datua: { $joint } giltzadurako abiadura angeluar erlatiboa { $value } da.
@@ -301,6 +305,20 @@ fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azel
         [md] {""}
        *[other] beltzez:{" "}
     }normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
+fig-level_a_relative = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
+        [md] {""}
+       *[other] {" "}(urdinez)
+    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak ({ $format ->
+        [md] {""}
+       *[other] beltzez:{" "}
+    }normalak eta tangentzialak, eta erlatiboak), bata bestearen ondoren.
+fig-level_a_normal = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
+        [md] {""}
+       *[other] {" "}(urdinez)
+    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak ({ $format ->
+        [md] {""}
+       *[other] beltzez:{" "}
+    }normalak eta tangentzialak), bata bestearen ondoren.
 col-number = zk.
 
 # higher pairs (joints.contact, curved_slot, cam)
