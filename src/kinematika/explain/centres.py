@@ -186,8 +186,10 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
 
 def _field(ctx: Ctx, note: CentreNote) -> bool:
     """The centre from one point Q of the body and its angular velocity, as the notes find
-    the bicycle's pedals' centre: 0 = v_Q + ω × QI, so QI = k × v_Q / ω. False when the
-    body does not turn (a translation has its centre at infinity)."""
+    the bicycle's pedals' centre: 0 = v_Q + ω × QI, so QI = ω × v_Q / ω²: the centre lies on
+    the perpendicular to v_Q through Q, on the side v_Q turned 90° in the sense of ω points
+    to, at the distance |QI| = |v_Q| / |ω| (how the notes say it, C5-1.5, 1.6, 2.1). False when
+    the body does not turn (a translation has its centre at infinity)."""
     a, b = note.pair
     w = ctx.omega(b, a)
     if ctx.is_zero(w, "rate") or note.value.get("point") is None:
@@ -200,7 +202,17 @@ def _field(ctx: Ctx, note: CentreNote) -> bool:
     note.witnesses = [(q, ctx.clean(ctx.vel(b, q, a), "speed"))]
     note.rate = ctx.clean(w, "rate")
     note.arm = ctx.clean(tuple(c - p for c, p in zip(note.value["point"], ctx.pos(q))), "len")
+    note.distance = ctx.clean(_length(ctx, note.arm), "len")
     return True
+
+
+def _length(ctx: Ctx, v: tuple):
+    """|v| = √(Σ v_i²), a formula for a symbolic model."""
+    if ctx.symbolic:
+        import sympy
+
+        return sympy.simplify(sympy.sqrt(sympy.expand(sum(c ** 2 for c in v))))
+    return sum(float(c) ** 2 for c in v) ** 0.5
 
 
 def _field_point(ctx: Ctx, body: str, frame: str) -> str | None:

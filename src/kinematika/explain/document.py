@@ -72,9 +72,13 @@ class Name:
 
 @dataclass
 class Names:
-    """Several names as one message argument: a list with the language's "and"."""
+    """Several names as one message argument: a list with the language's "and". With `each`,
+    a catalogue message (its variable `$name`) is written around every name, so a preposition
+    applies to each of them, as Catalan and Spanish repeat it: "del pla esquerre i del pla
+    dret", not "del pla esquerre i el pla dret"."""
 
     items: list
+    each: str = ""
 
     def __len__(self) -> int:
         return len(self.items)
@@ -95,9 +99,19 @@ def joint(name: str) -> Name:
     return Name(name, "joint")
 
 
-def names(items, kind: str) -> Names:
-    """Several names of one kind (point, body, joint) as one message argument."""
-    return Names([Name(str(i), kind) for i in items])
+def names(items, kind: str, each: str = "") -> Names:
+    """Several names of one kind (point, body, joint) as one message argument; `each` a
+    catalogue message written around every name (see `Names`)."""
+    return Names([Name(str(i), kind) for i in items], each)
+
+
+@dataclass
+class Lead:
+    """An argument that begins a phrase (after "1." or "Step 1:"): a catalogue word, or a
+    name with its article (la barra OQ), is written with a capital ("1. La barra OQ, …");
+    a bare model name is left as the model spells it."""
+
+    item: Any
 
 
 @dataclass(frozen=True)
@@ -232,7 +246,8 @@ class CentreNote:
     side: str = ""                                 # proportional: the centre "between" or "outside" the witnesses
     same: Optional[dict] = None                    # weld: the centre of the body it is welded to
     rate: Any = None                               # field, check: ω of the pair
-    arm: Optional[tuple] = None                    # field, check: QI = k × v_Q / ω
+    arm: Optional[tuple] = None                    # field, check: QI = ω × v_Q / ω², v_Q turned 90° with ω
+    distance: Any = None                           # field, check: |QI| = |v_Q| / |ω|
     perps: list = field(default_factory=list)      # kennedy: each line as the notes draw it (Msg)
     pivots: list = field(default_factory=list)     # proportional: what each witness turns about
 

@@ -17,7 +17,7 @@ import re
 
 from ..questions import QUESTIONS
 from .context import Ctx
-from .document import CentreNote, Derived, Document, Equation, Inline, Msg, Names, Section, Sym, Table, Term
+from .document import CentreNote, Derived, Document, Equation, Inline, Lead, Msg, Names, Section, Sym, Table, Term
 
 LEVELS = ("sec.velocities", "sec.accelerations")
 
@@ -189,10 +189,13 @@ def _untitle(sec: Section, bodies: set[str]) -> None:
 
 def _unname(m: Msg, bodies: set[str]) -> None:
     named = m.args.get("bodies")
+    lead = isinstance(named, Lead)
+    named = named.item if lead else named
     if bodies and isinstance(named, Names):
         left = [n for n in named.items if getattr(n, "text", n) not in bodies]
         if left and len(left) < len(named.items):
-            m.args["bodies"] = Names(left)
+            kept = Names(left, named.each)
+            m.args["bodies"] = Lead(kept) if lead else kept
 
 
 def _point_of(label: str) -> str:

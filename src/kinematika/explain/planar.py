@@ -12,7 +12,7 @@ from typing import Optional
 
 from ..model.model import Joint, PointPair
 from .context import Ctx, alpha_sym, omega_sym, read_off, segment
-from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
+from .document import Ann, Derived, Equation, Inline, Lead, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .group import centre_site, group_blocks, still_contact
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
@@ -35,7 +35,8 @@ def step_title(n: int, step: Step) -> Msg:
     bodies alone, as a teacher writes it ("Step 1: rear wheel and sprocket"), not by the
     program's "group solved together"."""
     key = "step.title_group" if step.kind == "other" else "step.title"
-    return msg(key, n=n, kind=msg(f"kind.{step.kind}"), bodies=names(step.bodies, "body"))
+    bodies = names(step.bodies, "body")
+    return msg(key, n=n, kind=msg(f"kind.{step.kind}"), bodies=Lead(bodies) if step.kind == "other" else bodies)
 
 
 class PlanarSteps:

@@ -9,7 +9,7 @@ from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
 from .kinds import kind_key, on_fixed_line
-from .document import Arrow, Drawing, Figure, Inline, Msg, Name, Names, Section, Table, Value, body, joint, msg, names, point
+from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Table, Value, body, joint, msg, names, point
 from .order import Step
 
 
@@ -49,9 +49,11 @@ def order_item(n: int, step: Step) -> Msg:
     found from, after the course's name for the group when it has one (RRR dyad …). Its
     joints are left to the step itself, and a group that is no named kind is said by its
     bodies alone ("1. rear wheel and sprocket, from ground"), as a teacher writes it."""
-    key = "order.item_group" if step.kind == "other" else "order.item"
-    return msg(key, n=n, kind=msg(f"kind.{step.kind}"), bodies=names(step.bodies, "body"),
-               known=names(step.known, "body"))
+    group = step.kind == "other"
+    bodies = names(step.bodies, "body")
+    return msg("order.item_group" if group else "order.item", n=n,
+               kind=Lead(msg(f"kind.{step.kind}")), bodies=Lead(bodies) if group else bodies,
+               known=names(step.known, "body", each="order.from"))
 
 
 def welded_to_frame(ctx: Ctx) -> list[str]:

@@ -153,14 +153,12 @@ pos-crossed = la configuració creuada (les barres es creuen)
 sec-order = Ordre de resolució
 order-assur = El mecanisme es descompon en les seves entrades i grups d’Assur (díades); cada grup es resol a partir de sòlids ja coneguts:
 order-blocks = El mecanisme no es descompon en díades a partir de manovelles o corredores motores; cada grup es troba a partir dels sòlids ja coneguts, en aquest ordre:
-order-item = { $n }. { $kind }: { $bodies }, a partir { ELISION($known) ->
-        [vowel] d’{ $known }
-       *[other] de { $known }
-    }.
-order-item_group = { $n }. { $bodies }, a partir { ELISION($known) ->
-        [vowel] d’{ $known }
-       *[other] de { $known }
-    }.
+order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
+order-item_group = { $n }. { $bodies }, a partir { $known }.
+order-from = { ELISION($name) ->
+        [vowel] d’{ $name }
+       *[other] de { $name }
+    }
 kind-input = entrada (sòlid motor)
 kind-RRR = díade RRR
 kind-RRP = díade RRP
@@ -584,12 +582,21 @@ centre-line-slot_fixed = la normal a la recta { ELISION($a) ->
        *[other] de { $a }
     } per { $point }, el punt que hi llisca (enllaç { $joint })
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
-centre-field = els enllaços no el situen abans de conèixer les velocitats; amb elles, 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+centre-field = els enllaços no el situen abans de conèixer les velocitats; amb elles, és a la perpendicular a { $v } per { $q }, del costat cap on apunta { $v } girada 90° en el sentit de { $w }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 centre-rate = a partir de la velocitat angular trobada més amunt a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
-    }: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
-centre-check = Comprovació amb les velocitats trobades: 0 = { $v } + { $w } × { $arm } dona { $arm } = { $k } × { $v } / { $w } = { $value }, el mateix punt: { $centre } és { $where }
+    }: és a la perpendicular a { $v } per { $q }, del costat cap on apunta { $v } girada 90° en el sentit de { $w }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+centre-check = Comprovació amb les velocitats trobades: a la perpendicular a { $v } per { $q }, del costat cap on apunta { $v } girada 90° en el sentit de { $w }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)

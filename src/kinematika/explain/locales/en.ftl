@@ -125,6 +125,7 @@ order-assur = The mechanism is decomposed into its inputs and Assur groups (dyad
 order-blocks = The mechanism does not decompose from driven cranks or sliders into dyads; each group is found from the bodies already known, in this order:
 order-item = { $n }. { $kind }: { $bodies }, from { $known }.
 order-item_group = { $n }. { $bodies }, from { $known }.
+order-from = { $name }
 kind-input = input (driven body)
 kind-RRR = RRR dyad
 kind-RRP = RRP dyad
@@ -341,9 +342,9 @@ centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } wit
 centre-line-slot = the normal at { $point } to the slot of joint { $joint } (relative to the slotted body, { $point } can only move along the slot)
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides (joint { $joint })
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
-centre-field = the joints do not place it before the velocities are known; with them, 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
-centre-rate = from the angular velocity found above through { $line }: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
-centre-check = Check with the velocities found above: 0 = { $v } + { $w } × { $arm } gives { $arm } = { $k } × { $v } / { $w } = { $value }, the same point: { $centre } is { $where }
+centre-field = the joints do not place it before the velocities are known; with them, it lies on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-check = Check with the velocities found above: on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)

@@ -120,8 +120,9 @@ pos-crossed = la configuración cruzada (las barras se cruzan)
 sec-order = Orden de resolución
 order-assur = El mecanismo se descompone en sus entradas y grupos de Assur (díadas); cada grupo se resuelve a partir de sólidos ya conocidos:
 order-blocks = El mecanismo no se descompone en díadas a partir de manivelas o correderas motoras; cada grupo se halla a partir de los sólidos ya conocidos, en este orden:
-order-item = { $n }. { $kind }: { $bodies }, a partir de { $known }.
-order-item_group = { $n }. { $bodies }, a partir de { $known }.
+order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
+order-item_group = { $n }. { $bodies }, a partir { $known }.
+order-from = de { $name }
 kind-input = entrada (sólido motor)
 kind-RRR = díada RRR
 kind-RRP = díada RRP
@@ -374,9 +375,9 @@ centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $
 centre-line-slot = la normal en { $point } a la ranura del par { $joint } (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
 centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza (par { $joint })
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
-centre-field = los pares no lo sitúan antes de conocer las velocidades; con ellas, 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
-centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
-centre-check = Comprobación con las velocidades halladas: 0 = { $v } + { $w } × { $arm } da { $arm } = { $k } × { $v } / { $w } = { $value }, el mismo punto: { $centre } está { $where }
+centre-field = los pares no lo sitúan antes de conocer las velocidades; con ellas, está en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
+centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
+centre-check = Comprobación con las velocidades halladas: en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)

@@ -128,6 +128,7 @@ order-item_group = { $n }. { $bodies }, { $known } { $known_n ->
         [one] solidotik
        *[other] solidoetatik
     }.
+order-from = { $name }
 kind-input = sarrera (solido eragilea)
 kind-RRR = RRR diada
 kind-RRP = RRP diada
@@ -344,9 +345,9 @@ centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } 
 centre-line-slot = { $joint } loturaren artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
 centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala, zeinean zehar irristatzen baita ({ $joint } lotura)
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
-centre-field = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
-centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
-centre-check = Egiaztapena aurkitutako abiadurekin: 0 = { $v } + { $w } × { $arm } ekuazioak { $arm } = { $k } × { $v } / { $w } = { $value } ematen du, puntu bera: { $centre }, { $where }
+centre-field = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiadura bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)

@@ -12,7 +12,7 @@ from ...text import shown_lines
 
 from ...model.wording import ARTICLES, NO_ARTICLE, Wording, part_subscript, rate_key
 from ..catalogue import CONTRACTIONS, Catalogue
-from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Msg, Name, Names,
+from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names,
                         Described, Section, Sym, Table, Told, Value)
 from .names import written as written_name
 from .svg import Text, plain_text, sym_text
@@ -120,11 +120,12 @@ class Renderer:
             if isinstance(x, int) and not isinstance(x, bool):
                 args[name] = x
                 continue
-            if isinstance(x, Names):
-                args[f"{name}_n"] = len(x)
+            inner = x.item if isinstance(x, Lead) else x
+            if isinstance(inner, Names):
+                args[f"{name}_n"] = len(inner)
             slot = Slot(TOKEN.format(len(rendered)))
             slot.plain = self.plain(x)
-            slot.n_names = len(x) if isinstance(x, Names) else 1
+            slot.n_names = len(inner) if isinstance(inner, Names) else 1
             rendered.append(self.arg(x))
             values.append(x)
             args[name] = slot
@@ -177,6 +178,8 @@ class Renderer:
             return self.called(x)
         if isinstance(x, Names):
             return self.plain(x.items[0]) if x.items else ""
+        if isinstance(x, Lead):
+            return self.plain(x.item)
         return plain(x)
 
     def arg(self, x: Any) -> str:
@@ -186,7 +189,12 @@ class Renderer:
         if isinstance(x, Name):
             return self.name(x)
         if isinstance(x, Names):
-            return format_list([self.arg(i) for i in x.items], locale=self.cat.lang) if x.items else "—"
+            items = [self.message(Msg(x.each, {"name": i})) if x.each else self.arg(i) for i in x.items]
+            return format_list(items, locale=self.cat.lang) if items else "—"
+        if isinstance(x, Lead):
+            text = self.arg(x.item)
+            articled = ARTICLES.get(self.lang, NO_ARTICLE).match(self.plain(x.item))
+            return self.capital(text) if isinstance(x.item, Msg) or articled else text
         if isinstance(x, str):
             return self.esc(x)
         if isinstance(x, Sym):
@@ -475,7 +483,9 @@ class Renderer:
                                                 "where": self.where(c.value)}))
 
     def field_args(self, c: CentreNote, name: Sym) -> dict:
-        """0 = v_Q + ω × QI: the point Q, its velocity, ω and the arm QI = k × v_Q / ω."""
+        """0 = v_Q + ω × QI: the point Q, its velocity, ω, the arm QI and its length
+        |QI| = |v_Q| / |ω| (the centre on the perpendicular to v_Q through Q, on the side ω turns
+        v_Q to)."""
         a, b = c.pair
         (q, vq), = c.witnesses
         frame = a if a != self.doc_frame() else None
@@ -483,7 +493,7 @@ class Renderer:
         w = Sym("ω", b if frame is None else f"{b}/{a}", vector=False)
         arm = Inline([Name(q), name])
         return {"v": v, "w": w, "arm": arm, "vq": Value(vq, "speed"), "wv": Value(c.rate, "rate"),
-                "value": Value(c.arm, "len"), "k": Sym("k"), "centre": name, "where": self.where(c.value)}
+                "q": Name(q), "dist": Value(c.distance, "len"), "centre": name, "where": self.where(c.value)}
 
     def doc_frame(self) -> str:
         """The fixed body (numbered 1)."""
