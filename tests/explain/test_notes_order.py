@@ -66,7 +66,7 @@ def test_identical_planets_are_worked_once(name, original, repeated):
     assert set(rates) == set(repeated)
     assert all([x.sub for x in rates[b].how] == [original] for b in repeated)
     order = next(b for b in section(doc, "sec.structure").blocks if isinstance(b, Section))
-    kinds = [m.args["kind"].key for m in order.blocks if isinstance(m, Msg) and m.key == "order.item"]
+    kinds = [m.args["kind"].item.key for m in order.blocks if isinstance(m, Msg) and m.key == "order.item"]
     assert kinds.count("kind.copy") == 1
 
 
@@ -326,8 +326,8 @@ def test_a_rate_nobody_asks_is_not_worked_out():
     summary = next(s for s in doc.sections if s.title.key.startswith("sec.rates_summary"))
     table = next(b for b in summary.blocks if hasattr(b, "rows"))
     assert [r[0].text for r in table.rows] == ["OQ", "OJ"]       # the planes are ground (welded to it)
-    step = next(s for s in steps(doc) if "OQ" in [n.text for n in s.title.args["bodies"].items])
-    assert [n.text for n in step.title.args["bodies"].items] == ["OQ"]
+    step = next(s for s in steps(doc) if "OQ" in [n.text for n in s.title.args["bodies"].item.items])
+    assert [n.text for n in step.title.args["bodies"].item.items] == ["OQ"]
     # by hand
     c30, s30, c45 = math.sqrt(3) / 2, 0.5, math.sqrt(2) / 2
     s = 3.0
