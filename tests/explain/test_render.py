@@ -111,5 +111,16 @@ def test_numbers_as_each_language_writes_them():
     _, doc = explained("four_bar")
     en, es = render(doc, "en", "md", drawings=False), render(doc, "es", "md", drawings=False)
     assert "(−9.117, −1.576) m/s" in en and "(−9,117; −1,576) m/s" in es
-    assert "ω_3 = −\\|v_BA\\| / AB = −0,4516 rad/s" in render(doc, "ca", "md", drawings=False)
+    assert "ω_3 = −|v_BA| / AB = −0,4516 rad/s" in render(doc, "ca", "md", drawings=False)
     assert "0,4516" in render(doc, "eu", "html", drawings=False)
+
+
+def test_a_bar_is_escaped_in_a_tables_cell_only():
+    """Markdown as plain text: |v_A| reads as written in a sentence; inside a pipe table's cell
+    a bar would end the cell, so there (and only there) it is escaped."""
+    from kinematika.explain.render.markdown import MarkdownRenderer
+
+    r = MarkdownRenderer.__new__(MarkdownRenderer)
+    assert r.esc("AI = |v_A| / |ω|") == "AI = |v_A| / |ω|"
+    table = r.table(["what", "value"], [["|v_A|", "3"]])
+    assert "| \\|v_A\\| | 3 |" in table.splitlines()

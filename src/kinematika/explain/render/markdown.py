@@ -15,8 +15,10 @@ from .names import unicode_name
 from .unicode import unicode_formula
 
 # what Markdown would read as markup; an underscore inside a word (R_roda) is no emphasis
-# (CommonMark), so it stays as a reader writes it
-MARKUP = re.compile(r"([\\`*\[\]<>|]|(?<!\w)_|_(?!\w))")
+# (CommonMark), so it stays as a reader writes it; a bar is markup only in a table's cell
+# (`MarkdownRenderer.table` escapes it there), so |v_A| reads as it is written elsewhere
+MARKUP = re.compile(r"([\\`*\[\]<>]|(?<!\w)_|_(?!\w))")
+BAR = re.compile(r"(?<!\\)\|")
 
 
 COMPOUND = "/,-∈ "         # a subscript with these holds more than one name (or words: roda sup)
@@ -62,10 +64,8 @@ class MarkdownRenderer(Renderer):
         return f"{mantissa}·10^{exponent}"
 
     def formula(self, expr: Any) -> str:
-        """The Unicode formula; its bars |x| escaped outside code blocks, where a table
-        would read them as the end of a cell."""
-        text = self.decimals(unicode_formula(expr, lambda n: unicode_name(self.spelt(n))))
-        return text if self.code else text.replace("|", "\\|")
+        """The Unicode formula (its bars |x| as they are: a table's cell escapes them)."""
+        return self.decimals(unicode_formula(expr, lambda n: unicode_name(self.spelt(n))))
 
     def page(self, body: str) -> str:
         """The body as the whole page, ending with one newline."""
@@ -113,9 +113,9 @@ class MarkdownRenderer(Renderer):
         return "```\n" + "\n".join(blocks) + "\n```\n"
 
     def table(self, header: list[str], rows: list[list[str]]) -> str:
-        """A pipe table."""
+        """A pipe table; a bar inside a cell escaped, where it would end the cell."""
         def line(cells: list[str]) -> str:
-            return "| " + " | ".join(cells) + " |"
+            return "| " + " | ".join(BAR.sub(r"\\|", c) for c in cells) + " |"
         return "\n".join([line(header), line(["---"] * len(header))] + [line(r) for r in rows]) + "\n"
 
     def figure(self, fig: Figure) -> str:
