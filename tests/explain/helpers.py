@@ -16,12 +16,24 @@ EXAMPLES = ROOT / "examples"
 # the worked examples of the notes: seeds 000 (the fan), 001 and 002
 WORKED = sorted(p.stem for p in EXAMPLES.glob("*.yaml") if p.stem.startswith(("seed_", "fan_")))
 ALL = sorted(p.stem for p in EXAMPLES.glob("*.yaml"))
+# the notes' examples of seeds 001 and 002, and the languages an explanation is written in
+SEEDS = sorted(p.stem for p in EXAMPLES.glob("seed_*.yaml"))
+LANGS = ("en", "es", "ca", "eu")
 
 
 @functools.lru_cache(maxsize=None)
 def explained(name: str) -> tuple[kinematika.Solution, Document]:
     sol = kinematika.solve(EXAMPLES / f"{name}.yaml")
     return sol, build(sol)
+
+
+@functools.lru_cache(maxsize=None)
+def rendered(name: str, lang: str, fmt: str = "md", drawings: bool = True) -> str:
+    """An example's explanation written in `lang` and `fmt`, built and written once a run."""
+    from kinematika.explain import render
+
+    _, doc = explained(name)
+    return render(doc, lang, fmt, drawings=drawings)
 
 
 def num(sol: kinematika.Solution, x: Any) -> Any:

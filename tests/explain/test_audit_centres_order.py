@@ -4,26 +4,20 @@ a vector divided by a scalar; and Catalan/Spanish repeat the contracted preposit
 each body a step is found from ("a partir del pla esquerre i del pla dret")."""
 from __future__ import annotations
 
-import functools
 import re
 
 import pytest
 
-from kinematika.explain import render
 
-from .helpers import EXAMPLES, explained
+from .helpers import LANGS, SEEDS, rendered
 
-SEEDS = sorted(p.stem for p in EXAMPLES.glob("seed_*.yaml"))
-LANGS = ("en", "es", "ca", "eu")
 # the sentence that places a centre from one velocity, per language
 PERPENDICULAR = {"en": "on the perpendicular to", "es": "en la perpendicular a", "ca": "a la perpendicular a",
                  "eu": "perpendikularrean"}
 
 
-@functools.lru_cache(maxsize=None)
 def _text(name: str, lang: str) -> str:
-    _, doc = explained(name)
-    return render(doc, lang, "md")
+    return rendered(name, lang)
 
 
 def _centre_lines(text: str) -> list[str]:

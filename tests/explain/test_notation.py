@@ -9,11 +9,10 @@ import re
 
 import pytest
 
-from kinematika.explain import render
 from kinematika.explain.catalogue import LANGS
 from kinematika.model.subscripts import named_labels
 
-from .helpers import WORKED, explained
+from .helpers import WORKED, explained, rendered
 
 SEEDS = [n for n in WORKED if n.startswith("seed_")]
 # a rate written with a number for its body: ω_6, α_{3 REL 2}
@@ -25,8 +24,7 @@ VECTOR_OVER_VECTOR = re.compile(r"(?<![|\\])\b[va]_(\{[^}]*\}|[^\s|\\{²]+)(\^\w
 
 
 def _text(name: str, lang: str, fmt: str = "md") -> str:
-    _, doc = explained(name)
-    return render(doc, lang, fmt, drawings=False)
+    return rendered(name, lang, fmt, drawings=False)
 
 
 @pytest.mark.parametrize("lang", LANGS)

@@ -3,17 +3,13 @@ is titled by the bodies it finds, not by the program's "group solved together", 
 acceleration section says the Coriolis terms are known only where its equations have one."""
 from __future__ import annotations
 
-import functools
 
 import pytest
 
-from kinematika.explain import render
 from kinematika.explain.document import Equation, Figure, Section
 
-from .helpers import EXAMPLES, explained
+from .helpers import LANGS, SEEDS, explained, rendered
 
-SEEDS = sorted(p.stem for p in EXAMPLES.glob("seed_*.yaml"))
-LANGS = ("en", "es", "ca", "eu")
 # the program's word for a group that is no named kind, in each catalogue (before the fix)
 GROUP = {"en": "solved together", "es": "resuelto en conjunto", "ca": "resolt conjuntament", "eu": "batera ebatzitako"}
 # the acceleration section's sentence that says the Coriolis terms are known
@@ -24,10 +20,8 @@ CAPTION = {"en": "relative and Coriolis", "es": "relativos y de Coriolis", "ca":
            "eu": "erlatiboak eta Coriolisenak"}
 
 
-@functools.lru_cache(maxsize=None)
 def _text(name: str, lang: str) -> str:
-    _, doc = explained(name)
-    return render(doc, lang, "md")
+    return rendered(name, lang)
 
 
 def _accelerations(doc) -> Section | None:
