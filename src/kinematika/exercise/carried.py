@@ -88,7 +88,7 @@ def basis(exercise: Any, variant: Any) -> Optional[Basis]:
     accelerations = {q: v for q, v in at_rates.items() if level[q] in ACCELERATION_LEVEL}
     unit = None
     if len(drivers) == 1 and drivers[0].accel is not None:
-        pushed = solved("0", f"({drivers[0].accel.text})+1")
+        pushed = solved("0", f"({drivers[0].rate(accel=True).text})+1")
         if pushed is not None:
             unit = {q: pushed[q] - at_rest[q] for q in accelerations}
     return Basis(rates, accelerations, {q: at_rest[q] for q in accelerations}, unit)

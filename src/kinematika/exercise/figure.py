@@ -29,6 +29,7 @@ from .stated import number_text, stated_text
 WIDTH = 4.6         # inches: printed at its size, so that its text reads as 9 pt
 HEIGHT = 4.4        # inches: at most this tall (a tall mechanism is drawn narrower, its text as large)
 DPI = 150
+Point = tuple[float, float]         # a planar model's point, in model units
 
 
 def statement_figure(exercise: Any, variant: Any, lang: str) -> bytes:
@@ -166,12 +167,13 @@ def dimensions_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str
     if model.dimension != 2:
         return []
     labels = Labels(exercise, stated, lang)
-    at = {name: tuple(float(c) for c in inst.points[name]) for name in model.points}
+    at = {name: _planar(inst.points[name]) for name in model.points}
     out: list[Dimension] = []
     seen: set = set()
     done: set[str] = set()              # each parameter dimensioned once
 
-    def length(p: Any, q: Any, expr: Optional[Expr], along: str = "aligned", text: Optional[str] = None) -> None:
+    def length(p: str | Point, q: str | Point, expr: Optional[Expr], along: str = "aligned",
+               text: Optional[str] = None) -> None:
         name = _name(expr) if expr is not None else None
         if text is None and (name in done or (name is None and expr is not None and expr.names())):
             return                      # a parameter already shown, or a length that follows from the data
@@ -199,9 +201,10 @@ def dimensions_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str
                 reference = math.atan2(b[1] - a[1], b[0] - a[0])
             sweep = math.remainder(float(inst.value(c.angle, f"points.{name}.angle")), 2 * math.pi)
             length(c.origin, name, c.distance)
-            if _name(c.angle) in stated and _name(c.angle) not in done:      # the data only
-                done.add(_name(c.angle))
-                out.append(Dimension("angle", at[c.origin], at[name], labels.of(_name(c.angle), sweep, True),
+            angle = _name(c.angle)
+            if angle is not None and angle in stated and angle not in done:      # the data only
+                done.add(angle)
+                out.append(Dimension("angle", at[c.origin], at[name], labels.of(angle, sweep, True),
                                      reference=reference, sweep=sweep))
         elif isinstance(c, TwoCircles):
             for centre, radius in zip(c.centers, c.radii):
@@ -218,7 +221,8 @@ def dimensions_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str
     _radii(model, inst, at, done, length, out)
     for mark in exercise.section.dimensions:
         named = mark.label if mark.label in stated else None
-        length(*mark.between, _parsed(named), mark.along, None if named else mark.label)
+        p, q = mark.between
+        length(p, q, _parsed(named), mark.along, None if named else mark.label)
     return out
 
 
@@ -236,8 +240,9 @@ def _radii(model: Any, inst: Any, at: dict, done: set, length: Any, out: list) -
     for body in model.bodies.values():
         for shape in body.shapes:
             radius, centre = getattr(shape, "radius", None), getattr(shape, "center_point", None)
-            if isinstance(radius, Expr) and centre in at and _name(radius) is not None and _name(radius) not in done:
-                found.setdefault(_name(radius), []).append((radius, centre, float(inst.value(
+            if (isinstance(radius, Expr) and centre in at and (name := _name(radius)) is not None
+                    and name not in done):
+                found.setdefault(name, []).append((radius, centre, float(inst.value(
                     radius, f"bodies.{body.name}.radius"))))
 
     def clear(c: tuple, r: float, a: int) -> float:
@@ -260,7 +265,7 @@ def rates_of(exercise: Any, sol: Any, stated: dict[str, Decimal], lang: str,
     model, inst = sol.model, sol.inst
     if model.dimension != 2:
         return []
-    at = {name: tuple(float(c) for c in inst.points[name]) for name in model.points}
+    at = {name: _planar(inst.points[name]) for name in model.points}
     size = max((math.dist(p, q) for p in at.values() for q in at.values()), default=1.0) or 1.0
     taken = (list(at.values()) + [_mark_point(d, size) for d in dimensions] + _mark_lines(dimensions, at, size)
              + _bars(model, at))
@@ -401,6 +406,12 @@ def _clear_side(a: tuple, b: tuple, points: list[tuple], marks: list[Dimension])
     if abs(lc - rc) <= 1e-9 * size:
         return None
     return "left" if lc < rc else "right"
+
+
+def _planar(p: tuple) -> Point:
+    """A planar model's point as two floats (its coordinates on the instant's scalars)."""
+    x, y = p
+    return float(x), float(y)
 
 
 def _name(expr: Expr) -> Optional[str]:

@@ -176,10 +176,12 @@ def page_link(ex: Exercise, number: int) -> str:
     import zlib
     from urllib.parse import urlencode
 
+    source = ex.source
+    assert source is not None, "a link holds the model file: an exercise read from one"
     packer = zlib.compressobj(9, zlib.DEFLATED, -15)             # raw deflate, as the page's
-    packed = packer.compress(ex.source.read_bytes()) + packer.flush()
+    packed = packer.compress(source.read_bytes()) + packer.flush()
     model = base64.urlsafe_b64encode(packed).rstrip(b"=").decode()
-    suffix = ex.source.suffix.lower().lstrip(".")
+    suffix = source.suffix.lower().lstrip(".")
     fmt = {"yml": "yaml"}.get(suffix, suffix)
     query = urlencode([("exercise", "1"), *(("vary", m) for m in meta(ex)["vary"]), ("seed", ex.seed),
                        ("variant", number), ("lang", ex.lang)])
@@ -282,7 +284,7 @@ def read_csv(path: Path, columns: list[str]) -> list[dict[str, str]]:
 
 
 def _variants(path: Path, names: list[str]) -> list[dict[str, Decimal]]:
-    out = []
+    out: list[dict[str, Decimal]] = []
     for i, row in enumerate(read_csv(path, ["variant", *names]), start=2):
         try:
             if int(row["variant"]) != len(out) + 1:

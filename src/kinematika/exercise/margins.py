@@ -85,8 +85,8 @@ def margins(rows: list[Row], allowance: dict[str, float], mistakes: list[Mistake
             return out
         relative, floor = tolerance + extra, FLOOR + extra
         for m in mistakes:
-            wrong = [m.rows.get(r.question) for r in group]
-            if any(w is None for w in wrong):
+            wrong = [w for r in group if (w := m.rows.get(r.question)) is not None]
+            if len(wrong) < len(group):
                 continue
             gap = math.sqrt(sum((w.value - r.value) ** 2 for w, r in zip(wrong, group))) / size
             if gap <= min(relative, NOISE + tolerance):

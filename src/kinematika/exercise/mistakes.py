@@ -28,7 +28,7 @@ from typing import Any, Callable, Optional
 from ..engine.terms import Terms
 from ..errors import KinematikaError, KinematikaWarning
 from ..expressions import Expr, parse
-from ..model.model import Joint, Model
+from ..model.model import Joint, Model, PointRef, Question
 from ..questions import QUESTIONS
 from .key import Row, key_rows
 
@@ -165,8 +165,9 @@ def _drag(world: World, model: Model) -> Optional[Mistaken]:
     rows: dict[str, Row] = {}
     for k in graded:
         q = model.questions[k - 1]
-        guide = guide_of(model, q.target.body, q.target.point)
-        state, place = sol.state(guide), sol.position(q.target)
+        target = _point_of(q)
+        guide = guide_of(model, target.body, target.point)
+        state, place = sol.state(guide), sol.position(target)
         value = (sol.motion.velocity(state, place) if QUESTIONS[q.kind].level == "velocity"
                  else sol.motion.acceleration(state, place))
         for row in rows_of(k, q.kind, [float(c) for c in value], floors):
@@ -174,10 +175,17 @@ def _drag(world: World, model: Model) -> Optional[Mistaken]:
     return Mistaken("drag-as-absolute", rows)
 
 
-def _drag_question(model: Model, q: Any) -> bool:
+def _drag_question(model: Model, q: Question) -> bool:
     kind = QUESTIONS[q.kind]             # a point's velocity or acceleration, in the fixed frame
     return (kind.column and kind.about == "point" and q.relative_to in (None, model.frame)
-            and guide_of(model, q.target.body, q.target.point) is not None)
+            and guide_of(model, _point_of(q).body, _point_of(q).point) is not None)
+
+
+def _point_of(q: Question) -> PointRef:
+    """The material point a point question asks of (the builder makes its target one)."""
+    if not isinstance(q.target, PointRef):
+        raise TypeError(f"{q.where} asks of a body or a joint, not a material point")
+    return q.target
 
 
 # components ---------------------------------------------------------------------------------

@@ -67,7 +67,9 @@ def decoded(data: bytes) -> str:
         return data.decode("cp1252", errors=LATIN1)
 
 
-def _latin1(err: UnicodeDecodeError) -> tuple[str, int]:
+def _latin1(err: UnicodeError) -> tuple[str | bytes, int]:
+    if not isinstance(err, UnicodeDecodeError):     # registered for decoding only (`decoded`)
+        raise err
     return err.object[err.start:err.end].decode("latin-1"), err.end
 
 
