@@ -127,15 +127,15 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
     if s.kind == "circle" and s.ring:
         _ring_gear(ctx, body, s)
     elif s.kind == "circle":
-        gear = s.role == "gear"
-        ctx.add("circle", [s.center], r=s.radius, colour="none", fill=body.colour,
+        gear, centre = s.role == "gear", s.centre()
+        ctx.add("circle", [centre], r=s.radius, colour="none", fill=body.colour,
                 alpha=0.18 if gear else 0.25, width=0, zorder=1, moves_with=name)
-        ctx.add("circle", [s.center], r=s.radius, colour=body.colour, width=1.6 if gear else 2.2,
+        ctx.add("circle", [centre], r=s.radius, colour=body.colour, width=1.6 if gear else 2.2,
                 dash=gear, zorder=3, gid=gid, moves_with=name)
         for d in (np.array([1.0, 0.0]), np.array([0.0, 1.0])):
-            ctx.add("line", [s.center - 0.8 * s.radius * d, s.center + 0.8 * s.radius * d],
+            ctx.add("line", [centre - 0.8 * s.radius * d, centre + 0.8 * s.radius * d],
                     width=1.0, colour=body.colour, alpha=0.8, zorder=3, moves_with=name)
-        ctx.avoid(*_ring(s.center, s.radius))
+        ctx.avoid(*_ring(centre, s.radius))
     elif s.kind == "line":
         loop = belt_loop(ctx, body, s)
         if loop is not None:
@@ -157,15 +157,16 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
 def _moving_curve(ctx: Context, body: BodyView, s: ShapeView, gid: str) -> None:
     """A body's curve: a cam's profile filled, its pitch curve dash-dot, a curve (a slot's
     path, a profile through points) as a line."""
+    vertices = s.polyline()
     if s.role == "pitch":
-        ctx.add("line", s.vertices, width=1.0, dash=True, colour=body.colour, zorder=2,
+        ctx.add("line", vertices, width=1.0, dash=True, colour=body.colour, zorder=2,
                 moves_with=body.name)
         return
     if s.closed and s.role == "profile":
-        ctx.add("polygon", s.vertices, colour="none", fill=body.colour, alpha=0.2, width=0,
+        ctx.add("polygon", vertices, colour="none", fill=body.colour, alpha=0.2, width=0,
                 zorder=1, moves_with=body.name)
-    ctx.add("line", s.vertices, width=2.2, colour=body.colour, zorder=3, gid=gid, moves_with=body.name)
-    ctx.avoid(*s.vertices[::8])
+    ctx.add("line", vertices, width=2.2, colour=body.colour, zorder=3, gid=gid, moves_with=body.name)
+    ctx.avoid(*vertices[::8])
 
 
 def belt_loop(ctx: Context, body: BodyView, s: ShapeView) -> Optional[np.ndarray]:
@@ -175,42 +176,45 @@ def belt_loop(ctx: Context, body: BodyView, s: ShapeView) -> Optional[np.ndarray
     first's mirror in the line of centres) and the far side of the first; None otherwise."""
     touching = []
     for j in ctx.scene.joints:
-        if j.contact is None or body.name not in (j.a, j.b):
+        contact = j.contact
+        if contact is None or body.name not in (j.a, j.b):
             continue
         other = ctx.scene.bodies.get(j.b if j.a == body.name else j.a)
         circles = [c for c in (other.shapes if other else []) if c.kind == "circle"]
         if not circles:
             return None
-        circle = min(circles, key=lambda c: abs(np.linalg.norm(j.contact - c.center) - c.radius))
-        touching.append((np.asarray(j.contact, float), circle))
+        circle = min(circles, key=lambda c: abs(np.linalg.norm(contact - c.centre()) - c.radius))
+        touching.append((np.asarray(contact, float), circle))
     if len(touching) != 2:
         return None
     (t1, c1), (t2, c2) = touching
-    n = perpendicular(s.direction)
-    if float((c1.center - s.through) @ n) * float((c2.center - s.through) @ n) <= 0:
+    through, direction = s.line()
+    n = perpendicular(direction)
+    if float((c1.centre() - through) @ n) * float((c2.centre() - through) @ n) <= 0:
         return None                     # circles on both sides: a crossed strand, drawn straight
-    axis = c2.center - c1.center
+    axis = c2.centre() - c1.centre()
     if np.linalg.norm(axis) <= 1e-9 * ctx.size:
         return None
     u = axis / np.linalg.norm(axis)
 
     def mirror(p: np.ndarray) -> np.ndarray:
-        r = p - c1.center
-        return c1.center + 2 * (r @ u) * u - r
+        r = p - c1.centre()
+        return c1.centre() + 2 * (r @ u) * u - r
     m1, m2 = mirror(t1), mirror(t2)
     return np.vstack([[t1], [t2], _far_arc(c2, t2, m2, u), [m2], [m1], _far_arc(c1, m1, t1, -u), [t1]])
 
 
 def _far_arc(c: ShapeView, start: np.ndarray, end: np.ndarray, away: np.ndarray) -> np.ndarray:
     """Points of the circle from `start` to `end` the long way round the side facing `away`."""
-    a0 = np.arctan2(*(start - c.center)[::-1])
-    a1 = np.arctan2(*(end - c.center)[::-1])
+    centre = c.centre()
+    a0 = np.arctan2(*(start - centre)[::-1])
+    a1 = np.arctan2(*(end - centre)[::-1])
     mid = np.arctan2(away[1], away[0])
     sweep = (a1 - a0) % (2 * np.pi)
     if not _within(a0, sweep, mid):
         sweep -= 2 * np.pi
     ts = a0 + np.linspace(0, sweep, 48)
-    return c.center + c.radius * np.column_stack([np.cos(ts), np.sin(ts)])
+    return centre + c.radius * np.column_stack([np.cos(ts), np.sin(ts)])
 
 
 def _within(a0: float, sweep: float, angle: float) -> bool:
@@ -218,40 +222,41 @@ def _within(a0: float, sweep: float, angle: float) -> bool:
     return (angle - a0) % (2 * np.pi) <= sweep
 
 
-def _line_span(ctx: Context, body: BodyView, s: ShapeView):
+def _line_span(ctx: Context, body: BodyView, s: ShapeView) -> Optional[tuple[np.ndarray, np.ndarray]]:
     """The part of a moving body's line worth drawing (a chain's run, a rack): over its
     points and the contacts on it, a little beyond, inside the reach."""
+    through, direction = s.line()
     pts = list(body.points.values()) + [j.contact for j in ctx.scene.joints
                                         if body.name in (j.a, j.b) and j.contact is not None]
     if not pts:
-        return clip_line(s.through, s.direction, ctx.reach)
-    ts = [float((p - s.through) @ s.direction) for p in pts]
+        return clip_line(through, direction, ctx.reach)
+    ts = [float((p - through) @ direction) for p in pts]
     margin = 0.1 * ctx.size
-    return clip_segment(s.through + (min(ts) - margin) * s.direction,
-                        s.through + (max(ts) + margin) * s.direction, ctx.reach)
+    return clip_segment(through + (min(ts) - margin) * direction,
+                        through + (max(ts) + margin) * direction, ctx.reach)
 
 
 def _ring_gear(ctx: Context, body: BodyView, s: ShapeView) -> None:
     """A ring (another circle rolls inside it): a band outside its circle, with ticks so
     that its turning shows."""
-    band = min(HATCH_BAND * 1.5 * ctx.size, 0.3 * s.radius)
+    band, centre = min(HATCH_BAND * 1.5 * ctx.size, 0.3 * s.radius), s.centre()
     name = body.name
-    ctx.add("ring", [s.center], r=s.radius + band, band=band, colour="none", fill=body.colour,
+    ctx.add("ring", [centre], r=s.radius + band, band=band, colour="none", fill=body.colour,
             alpha=0.45, width=0, zorder=1, moves_with=name)
-    ctx.add("circle", [s.center], r=s.radius, colour=body.colour, width=2.2, dash=s.role == "gear",
+    ctx.add("circle", [centre], r=s.radius, colour=body.colour, width=2.2, dash=s.role == "gear",
             zorder=3, gid=f"shape:{name}", moves_with=name)
     for t in np.linspace(0, 2 * np.pi, 12, endpoint=False):
         d = np.array([np.cos(t), np.sin(t)])
-        ctx.add("line", [s.center + s.radius * d, s.center + (s.radius + band) * d], width=1.0,
+        ctx.add("line", [centre + s.radius * d, centre + (s.radius + band) * d], width=1.0,
                 colour=body.colour, zorder=2, moves_with=name)
-    ctx.avoid(*_ring(s.center, s.radius))
-    ctx.avoid(*_ring(s.center, s.radius + band))
+    ctx.avoid(*_ring(centre, s.radius))
+    ctx.avoid(*_ring(centre, s.radius + band))
 
 
 def shape_anchor(s: ShapeView) -> np.ndarray:
     """Where a circle-shaped body's name goes: up-left, on the rim of a ring, inside a wheel."""
     d = np.array([-0.7071, 0.7071])
-    return s.center + (1.0 if s.ring else 0.6) * s.radius * d
+    return s.centre() + (1.0 if s.ring else 0.6) * s.radius * d
 
 
 def _fixed_body(ctx: Context, body: BodyView) -> None:
@@ -267,8 +272,9 @@ def _fixed_body(ctx: Context, body: BodyView) -> None:
         seg = _fixed_span(ctx, body, s)
         if seg is None:
             continue
-        n = perpendicular(s.direction)
-        towards = s.hatch_towards if s.hatch_towards is not None else s.through - ctx.centroid()
+        through, direction = s.line()
+        n = perpendicular(direction)
+        towards = s.hatch_towards if s.hatch_towards is not None else through - ctx.centroid()
         side = n if float(n @ towards) >= 0 else -n
         hatched_edge(ctx, *seg, side, f"ground:{body.name}")
         anchor = (seg[0] + seg[1]) / 2
@@ -280,13 +286,14 @@ def _fixed_body(ctx: Context, body: BodyView) -> None:
                   style="italic")
 
 
-def _fixed_span(ctx: Context, body: BodyView, s: ShapeView):
+def _fixed_span(ctx: Context, body: BodyView, s: ShapeView) -> Optional[tuple[np.ndarray, np.ndarray]]:
     """The piece of a fixed line worth drawing: from the body's own points on it (where the
     piece ends, a plane's corner) to a wheel's radius beyond each contact on it (a tenth of
     the figure when what touches it is no circle), inside the reach."""
-    n = perpendicular(s.direction)
-    own = [float((p - s.through) @ s.direction) for p in body.points.values()
-           if abs(float((p - s.through) @ n)) <= 1e-6 * ctx.size]
+    through, direction = s.line()
+    n = perpendicular(direction)
+    own = [float((p - through) @ direction) for p in body.points.values()
+           if abs(float((p - through) @ n)) <= 1e-6 * ctx.size]
     ts = list(own)
     for j in ctx.scene.joints:
         if body.name not in (j.a, j.b) or j.contact is None:
@@ -294,35 +301,38 @@ def _fixed_span(ctx: Context, body: BodyView, s: ShapeView):
         other = ctx.scene.bodies.get(j.b if j.a == body.name else j.a)
         reach = min((c.radius for c in (other.shapes if other else []) if c.kind == "circle"),
                     default=0.1 * ctx.size)
-        t = float((j.contact - s.through) @ s.direction)
+        t = float((j.contact - through) @ direction)
         below, above = not own or t <= min(own), not own or t >= max(own)
         ts += [t] + ([t - reach] if below else []) + ([t + reach] if above else [])
     if len(ts) < 2:
-        return clip_line(s.through, s.direction, ctx.reach)
-    return clip_segment(s.through + min(ts) * s.direction, s.through + max(ts) * s.direction, ctx.reach)
+        return clip_line(through, direction, ctx.reach)
+    return clip_segment(through + min(ts) * direction, through + max(ts) * direction, ctx.reach)
 
 
 def _ground_shape(ctx: Context, s: ShapeView) -> None:
     band = HATCH_BAND * ctx.size
     if s.kind == "line":
-        seg = clip_line(s.through, s.direction, ctx.reach.grow(-band))
+        through, direction = s.line()
+        seg = clip_line(through, direction, ctx.reach.grow(-band))
         if seg is None:
             return
-        n = perpendicular(s.direction)
+        n = perpendicular(direction)
         towards = s.hatch_towards if s.hatch_towards is not None else \
-            s.through - ctx.centroid()
+            through - ctx.centroid()
         hatched_edge(ctx, *seg, n if float(n @ towards) >= 0 else -n, "ground:line")
     elif s.kind == "circle":
+        centre = s.centre()
         outer = s.radius if s.material_inside else s.radius + min(band, s.radius)
         width = min(band, 0.5 * s.radius)
-        ctx.add("circle", [s.center], r=s.radius, colour=GROUND, width=1.8, zorder=2,
+        ctx.add("circle", [centre], r=s.radius, colour=GROUND, width=1.8, zorder=2,
                 gid="ground:circle")
-        ctx.add("ring", [s.center], r=outer, band=width, colour=GROUND, width=0, hatch=True,
+        ctx.add("ring", [centre], r=outer, band=width, colour=GROUND, width=0, hatch=True,
                 zorder=1)
-        ctx.avoid(*_ring(s.center, s.radius))
+        ctx.avoid(*_ring(centre, s.radius))
     elif s.kind == "curve":
-        ctx.add("line", s.vertices, width=1.8, colour=GROUND, zorder=2, gid="ground:curve")
-        ctx.avoid(*s.vertices[::8])
+        vertices = s.polyline()
+        ctx.add("line", vertices, width=1.8, colour=GROUND, zorder=2, gid="ground:curve")
+        ctx.avoid(*vertices[::8])
     elif s.vertices is not None:
         ctx.add("polygon", s.vertices, fill="#f0f0f0", colour="#9e9e9e", width=1.0, zorder=0,
                 gid="ground:plane")

@@ -180,7 +180,7 @@ def _extent(bodies: dict[str, BodyView], inst: Instant) -> tuple[tuple, float]:
     for b in bodies.values():
         for s in b.shapes:
             if s.kind == "circle":
-                xy += [s.center - s.radius, s.center + s.radius]
+                xy += [s.centre() - s.radius, s.centre() + s.radius]
             elif s.vertices is not None:
                 xy += list(s.vertices)
     if not xy:
@@ -271,7 +271,7 @@ def _mark_ground_sides(bodies: dict[str, BodyView], model: Any, geos: dict, num:
         if fixed.kind == "line" and partner is not None and partner.kind == "circle":
             fixed.hatch_towards = contact - partner.center
         elif fixed.kind == "circle" and partner is not None and partner.kind == "circle":
-            fixed.material_inside = np.linalg.norm(partner.center - fixed.center) >= fixed.radius
+            fixed.material_inside = float(np.linalg.norm(partner.centre() - fixed.centre())) >= fixed.radius
 
 
 def _mark_gears(bodies: dict[str, BodyView], model: Any, geos: dict, num: Numbers) -> None:
@@ -293,10 +293,11 @@ def _mark_gears(bodies: dict[str, BodyView], model: Any, geos: dict, num: Number
 def _nearest_shape(shapes: list[ShapeView], p: Vec) -> Optional[ShapeView]:
     def gap(s: ShapeView) -> float:
         if s.kind == "circle":
-            return abs(np.linalg.norm(p - s.center) - s.radius)
+            return abs(float(np.linalg.norm(p - s.centre())) - s.radius)
         if s.kind == "line":
-            n = np.array([-s.direction[1], s.direction[0]])
-            return abs(float((p - s.through) @ n))
+            through, direction = s.line()
+            n = np.array([-direction[1], direction[0]])
+            return abs(float((p - through) @ n))
         return math.inf
     best = min(shapes, key=gap, default=None)
     return best if best is not None and gap(best) < math.inf else None

@@ -275,7 +275,8 @@ def _triad(fig: Figure, scene: Scene) -> None:
         inset.annotate("", xy=tuple(d), xytext=(0, 0),
                        arrowprops=dict(arrowstyle="-|>", color=INK, lw=1.0, shrinkA=0, shrinkB=0))
         if np.linalg.norm(d) > 0.2:
-            inset.text(*(1.2 * d), name, ha="center", va="center", fontsize=9, color=INK,
+            x, y = 1.2 * d
+            inset.text(x, y, name, ha="center", va="center", fontsize=9, color=INK,
                        style="italic")
 
 

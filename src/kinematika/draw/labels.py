@@ -238,12 +238,12 @@ def _sample(obstacles: list, transform: Any, step: float) -> tuple[np.ndarray, n
         disp = disp[np.all(np.isfinite(disp), axis=1)]
         if not len(disp):
             continue
-        seg = [disp[:1]]
+        pieces = [disp[:1]]
         for p, q in itertools.pairwise(disp):
             n = max(1, int(np.linalg.norm(q - p) / step))
             t = np.linspace(0, 1, n + 1)[1:, None]
-            seg.append(p + t * (q - p))
-        seg = np.vstack(seg)
+            pieces.append(p + t * (q - p))
+        seg = np.vstack(pieces)
         if radius > 0:                       # a marker: its outline too
             seg = (seg[:, None, :] + radius * step / SAMPLE * ring[None]).reshape(-1, 2)
         pts.append(seg)

@@ -8,13 +8,13 @@ is a double arrow at the edge, along its direction.
 """
 from __future__ import annotations
 
-from typing import Optional
+from typing import Optional, TypedDict
 
 import numpy as np
 
 from .geometry import clip_line, clip_polyline, clip_segment, edge_point, unit
 from .context import Context
-from .scene import CurvatureView, MarkView
+from .scene import CurvatureView, KennedyLine, MarkView
 from .names import coordinates
 from .style import ACCELERATION, CENTRE, CURVATURE, INK
 
@@ -22,8 +22,21 @@ MARKERS = {"icr": dict(shape="o", size=9, fill="white", colour=CENTRE, width=2.2
            "pole": dict(shape="D", size=7, fill="white", colour=ACCELERATION, width=2.0),
            "contact": dict(shape="X", size=7, fill=INK, colour="white", width=0.8)}
 COLOURS = {"icr": CENTRE, "pole": ACCELERATION, "contact": INK}
-KENNEDY = dict(lw=0.9, ls=(0, (6, 4)), color=CENTRE, alpha=0.65, zorder=1)
-NORMAL = dict(lw=1.1, ls=(0, (8, 3, 1.5, 3)), color=CENTRE, alpha=0.85, zorder=1)
+
+
+class LineStyle(TypedDict):
+    """A line's look in matplotlib's words (`Line2D`'s keywords, the legend's handle): width,
+    (offset, dashes), colour, opacity, layer."""
+
+    lw: float
+    ls: tuple[float, tuple[float, ...]]
+    color: str
+    alpha: float
+    zorder: float
+
+
+KENNEDY = LineStyle(lw=0.9, ls=(0, (6, 4)), color=CENTRE, alpha=0.65, zorder=1)
+NORMAL = LineStyle(lw=1.1, ls=(0, (8, 3, 1.5, 3)), color=CENTRE, alpha=0.85, zorder=1)
 DOTTED = (1.0, 1.65)            # matplotlib's ":" in line widths
 
 
@@ -38,7 +51,7 @@ def draw_marks(ctx: Context) -> None:
         elif ctx.view.contains(mark.point):
             _mark(ctx, group)
         else:
-            _far_mark(ctx, group)
+            _far_mark(ctx, group, mark.point)
     for line in ctx.scene.kennedy:
         _kennedy(ctx, line)
     for line in ctx.scene.normals:
@@ -93,17 +106,17 @@ def _mark(ctx: Context, group: list[MarkView]) -> None:
               group=f"mark:{mark.key}", radius=5.5)
 
 
-def _far_mark(ctx: Context, group: list[MarkView]) -> None:
-    """A mark beyond the view: an arrow at the edge pointing at it, labelled with its
-    coordinates."""
+def _far_mark(ctx: Context, group: list[MarkView], point: np.ndarray) -> None:
+    """A mark beyond the view, at `point`: an arrow at the edge pointing at it, labelled with
+    its coordinates."""
     mark = group[0]
-    q = edge_point(ctx.view, mark.point, 0.02 * ctx.size)
-    d = unit(mark.point - q)
+    q = edge_point(ctx.view, point, 0.02 * ctx.size)
+    d = unit(point - q)
     tail = q - 0.07 * ctx.size * d
     ctx.add("arrow", [tail, q], head="-|>", size=14, width=1.8, colour=COLOURS[mark.kind],
             zorder=11, gid=f"{mark.key}:far", layer="centres", group=f"mark:{mark.key}")
     ctx.avoid(tail, q, weight=3.0)
-    at = coordinates(mark.point, ctx.size, ctx.lang)
+    at = coordinates(point, ctx.size, ctx.lang)
     where = f"at {at}" if ctx.words else f"= {at}"
     ctx.label(tail, f"{group_label(group)} {where}", COLOURS[mark.kind], 2, _key(group), -d,
               layer="centres", group=f"mark:{mark.key}",
@@ -128,7 +141,7 @@ def _infinite_mark(ctx: Context, group: list[MarkView]) -> None:
                      "args": {"direction": coordinates(d, 1.0, ctx.lang)}})
 
 
-def _kennedy(ctx: Context, line, style: Optional[dict] = None) -> None:
+def _kennedy(ctx: Context, line: KennedyLine, style: Optional[LineStyle] = None) -> None:
     """The part of the line covering its centres (and a little beyond; up to the edge
     towards one that lies off the view), inside the reach."""
     d = unit(np.asarray(line.direction, dtype=float))

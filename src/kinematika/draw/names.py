@@ -10,7 +10,7 @@ short and mathtext can set them, else their value.
 from __future__ import annotations
 
 import re
-from typing import Any, Optional, Sequence
+from typing import Any, Iterable, Optional, Sequence
 
 from ..numerals import DECIMAL, decimal_sign, separator, superscript_power, written
 
@@ -132,7 +132,8 @@ def formula(expr: Any, value: float, lang: Optional[str] = None, spelt: Optional
     tidied = tidy(expr)
     if len(str(tidied).replace("Abs", "")) > FORMULA_CHARS:       # |x| is as short as (x)
         return f"≈ {value_text(value, lang)}"
-    names = {s: latex(Symbol(spelt[s.name])) for s in getattr(tidied, "free_symbols", ()) if s.name in (spelt or {})}
+    known = spelt or {}
+    names = {s: latex(Symbol(known[s.name])) for s in getattr(tidied, "free_symbols", ()) if s.name in known}
     body = latex(tidied, symbol_names=names) if names else latex(tidied)
     body = body.replace(r"\left|", "|").replace(r"\right|", "|")   # mathtext: plain bars
     text = "$" + body.replace(r"\frac", r"\dfrac") + "$"    # full-size fractions
@@ -180,7 +181,7 @@ def listed(items: Sequence[str], lang: Optional[str] = None) -> str:
     return (", " if lang is None else separator(decimal_sign(lang))).join(items)
 
 
-def coordinates(xs: Sequence[float], scale: float = 1.0, lang: Optional[str] = None) -> str:
+def coordinates(xs: Iterable[float], scale: float = 1.0, lang: Optional[str] = None) -> str:
     """`(0.32, 1.29)`; in a language with a decimal comma `(0,32; 1,29)`, as its text."""
     return "(" + listed([number(x, scale, lang) for x in xs], lang) + ")"
 

@@ -12,6 +12,7 @@ import functools
 from typing import Any, Optional
 
 import numpy as np
+from matplotlib._enums import CapStyle, JoinStyle     # documented: matplotlib.org/stable/api/_enums_api.html
 from matplotlib.backend_bases import GraphicsContextBase
 from matplotlib.lines import Line2D
 from matplotlib.markers import MarkerStyle
@@ -103,12 +104,12 @@ def marker_outline(shape: str) -> Optional[tuple[tuple[float, float], ...]]:
     if shape == "o":
         return None
     style = MarkerStyle(shape)
-    outline = style.get_path().transformed(style.get_transform()).to_polygons()[0]
+    outline = np.asarray(style.get_path().transformed(style.get_transform()).to_polygons()[0], dtype=float)
     return tuple((float(u), float(v)) for u, v in outline[:-1])   # closed: the first not repeated
 
 
 def _line(m: Mark, pts: np.ndarray) -> Line2D:
-    cap, join = m.cap or "projecting", m.join or "miter"
+    cap, join = CapStyle(m.cap or "projecting"), JoinStyle(m.join or "miter")   # what Line2D makes of them
     return Line2D(*pts.T, lw=m.width, ls=_dashes(m), color=m.colour, alpha=_alpha(m),
                   solid_capstyle=cap, dash_capstyle=cap, solid_joinstyle=join,
                   dash_joinstyle=join, zorder=m.zorder)
@@ -133,7 +134,7 @@ def hatching() -> dict[str, float]:
     (1, 1), so a line's offset across them is (x − y)/√2)."""
     gc = GraphicsContextBase()
     gc.set_hatch(HATCH)
-    v = gc.get_hatch_path().vertices
+    v = np.asarray(gc.get_hatch_path().vertices, dtype=float)
     steps = np.diff(np.sort((v[:, 0] - v[:, 1]) / np.sqrt(2)))
     return {"spacing": float(steps[steps > 1e-9].min() * 72), "width": float(gc.get_hatch_linewidth())}
 

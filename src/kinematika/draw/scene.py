@@ -40,6 +40,21 @@ class ShapeView:
     hatch_towards: Optional[Vec] = None    # ground line: the side its material is on
     material_inside: bool = True           # ground circle: a drum (True) or a cavity (False)
 
+    def centre(self) -> Vec:
+        """A circle's centre (the scene sets it for every circle)."""
+        assert self.center is not None, f"a {self.kind} shape has no centre"
+        return self.center
+
+    def line(self) -> tuple[Vec, Vec]:
+        """A line's point and unit direction (the scene sets both for every line)."""
+        assert self.through is not None and self.direction is not None, f"a {self.kind} shape is no line"
+        return self.through, self.direction
+
+    def polyline(self) -> Vec:
+        """An outline's or a curve's vertices, (n, 2) (the scene sets them for both)."""
+        assert self.vertices is not None, f"a {self.kind} shape has no vertices"
+        return self.vertices
+
 
 @dataclass
 class BodyView:

@@ -144,13 +144,15 @@ def _hooke(model: Any, xyz: dict, geos: dict, num: Any) -> Optional[dict]:
         if cross == model.frame or len(own) != 2 or len({j.at for j in own}) != 1:
             continue
         centre = own[0].at
-        arms = [_unit(num.vector(geos[j.id].axis)) for j in own]
-        if arms[0] is None or arms[1] is None or abs(float(arms[0] @ arms[1])) > 1e-6:
+        units = [_unit(num.vector(geos[j.id].axis)) for j in own]
+        arms = [a for a in units if a is not None]
+        if len(arms) < 2 or abs(float(arms[0] @ arms[1])) > 1e-6:
             continue
         shafts = [j.b if j.a == cross else j.a for j in own]
-        bearings = [next((b for b in revolute if b.at == centre and {b.a, b.b} == {s, model.frame}), None)
-                    for s in shafts]
-        if model.frame in shafts or None in bearings:
+        found = [next((b for b in revolute if b.at == centre and {b.a, b.b} == {s, model.frame}), None)
+                 for s in shafts]
+        bearings = [b for b in found if b is not None]
+        if model.frame in shafts or len(bearings) < len(shafts):
             continue
         c = xyz[centre]
         arm = max(float(np.linalg.norm(xyz[p] - c)) for s in shafts for p in model.bodies[s].points)
