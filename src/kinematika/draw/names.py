@@ -100,19 +100,51 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
     return subscript(letter, point, None if body is None else labels[body], rel, part_subscript("sub.rel", lang))
 
 
-def contact_name(model: Any, joint_id: str) -> str:
+def contact_name(model: Any, joint_id: str, sol: Any = None) -> str:
     """The name of a rolling or gear joint's contact point, as the text and the figures both
-    write it: J when the model has one contact (the notes' J), else J and the joint's number
-    (J10 for joint j10, or its place among the contacts when ids are names), or the name the
-    model's notation gives it (`contact(j4): F`, the slides' F); never a point's name (a
-    prime is added)."""
+    write it: the model's own point there, when one of the two bodies carries a point at the
+    contact (one point, one label on a page: the notes' J1 where the model names it J1, not
+    J1 and J1′); else J when the model has one contact (the notes' J), else J and the
+    joint's number (J10 for joint j10, or its place among the contacts when ids are names),
+    or the name the model's notation gives it (`contact(j4): F`, the slides' F); never
+    another point's name (a prime is added)."""
+    named = getattr(getattr(model, "wording", None), "contacts", {}).get(joint_id)
+    if named is None and sol is not None:
+        there = coincident_point(sol, joint_id)
+        if there is not None:
+            return there
     rolling = [j.id for j in model.joints if j.kind.touches]
     number = joint_id[1:] if re.fullmatch(r"j\d+", joint_id) else str(rolling.index(joint_id) + 1)
-    named = getattr(getattr(model, "wording", None), "contacts", {}).get(joint_id)
     base = named or ("J" if len(rolling) == 1 else f"J{number}")
     while base in model.points:
         base += "'"
     return base
+
+
+def coincident_point(sol: Any, joint_id: str) -> Optional[str]:
+    """The model's point at a touching joint's contact, carried by one of its two bodies
+    (first in the file's order), else None: the contact is that point."""
+    model = sol.model
+    joint = next((j for j in model.joints if j.id == joint_id), None)
+    geometry = sol.geometry(joint_id) if joint is not None else None
+    contact = getattr(geometry, "contact", None)
+    if contact is None:
+        return None
+    try:
+        where = [float(sol.inst.num(c)) for c in contact.point]
+    except (TypeError, ValueError):
+        return None
+    scale = max([1.0] + [abs(c) for c in where])
+    for name, pos in sol.inst.points.items():
+        if not {joint.a, joint.b} & set(model.carriers(name)):
+            continue
+        try:
+            xs = [float(sol.inst.num(c)) for c in pos]
+        except (TypeError, ValueError):
+            continue
+        if len(xs) == len(where) and all(abs(x - y) <= 1e-9 * scale for x, y in zip(xs, where)):
+            return name
+    return None
 
 
 def pair_symbol(letter: str, model: Any, a: str, b: str, lang: Optional[str] = None) -> str:

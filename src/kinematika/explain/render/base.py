@@ -233,8 +233,15 @@ class Renderer:
         """A body's name in the reader's language (the model's `names`), else the model's."""
         if n.kind == "body":
             return self.wording.body(n.text, self.lang)
-        if n.kind == "joint":
-            return self.wording.joint(n.text, self.lang)
+        if n.kind == "joint":                            # the model's name, else its point or bodies
+            given = getattr(self.wording, "joints", {}).get(self.lang or "", {}).get(n.text)
+            place = (self.doc.joints or {}).get(n.text)
+            if given or place is None:
+                return self.wording.joint(n.text, self.lang)
+            if isinstance(place, tuple):
+                labels = self.labels()
+                return "–".join(labels.get(b, b) for b in place)
+            return place
         if n.kind == "point" and "∈" in n.text:          # O∈wheels as the symbols write it: O∈3
             return self.numbered(Sym("", n.text))
         if n.kind == "index":                            # a body's number in the structure's table
