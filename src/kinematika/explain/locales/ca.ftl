@@ -69,6 +69,13 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [md] les fletxes
        *[other] les fletxes blaves
     } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls; els sòlids estan numerats.
+fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
+        [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
+       *[other] {""}
+    }; { $format ->
+        [md] les fletxes
+       *[other] les fletxes blaves
+    } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls.
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
         [md] , els termes l’un darrere l’altre
        *[other] : en negre els termes coneguts{ $unknown ->
@@ -282,6 +289,13 @@ sec-rates_summary = Velocitats i acceleracions angulars
 sec-rates_summary_v = Velocitats angulars
 sec-centres = Centres instantanis de rotació (CIR)
 centres-intro = I amb els números de dos sòlids ({ $example }: sòlids 1 i 3) és el CIR del seu moviment relatiu: el punt on la velocitat relativa és nul·la.
+centres-intro_named = I amb el nom d’un sòlid ({ $pair }) és el CIR { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }, i I amb dos noms units per «REL», el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
 centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),
@@ -484,6 +498,16 @@ fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids
            *[other] {" "}i { $normals }
         }).
     }
+fig-centres_named = Els centres instantanis (anells, I amb els noms dels sòlids) sobre el mecanisme{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , amb les rectes on es troben (traç i punt: { $normals }).
+        }
+       *[other] , amb les rectes on es troben (traç i punt: rectes que passen per dos centres{ $normals_n ->
+            [0] {""}
+           *[other] {" "}i { $normals }
+        }).
+    }
 fig-normal-wheel = les perpendiculars a les rodes
 fig-normal-slot = les normals a les ranures
 fig-normal-slot_fixed = les normals a les rectes per on llisquen els punts
@@ -605,7 +629,7 @@ how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } recorren a cada instant la recta { $line }: llisca al llarg d’ella i no gira)
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
-centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
+centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte
 geom-rule = La regla de tot contacte de rodolament: la condició de no lliscament es compleix a cada instant al punt geomètric de contacte (aquí { $geom }), que es mou; derivant-la al llarg d’aquest punt s’obté { $rule }: les components tangencials de les dues acceleracions són iguals i les normals difereixen en aquest terme, segons la normal comuna. Cal la velocitat del punt geomètric:
 geom-bar = { $geom }, el punt geomètric de contacte, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, a la mateixa fracció, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:

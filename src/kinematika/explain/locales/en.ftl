@@ -72,6 +72,13 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [md] the arrows
        *[other] the blue arrows
     } are the velocities of its points, to one scale, with their magnitudes; the bodies are numbered.
+fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
+        [3] , in isometric projection (the axes x, y, z at the lower right)
+       *[other] {""}
+    }; { $format ->
+        [md] the arrows
+       *[other] the blue arrows
+    } are the velocities of its points, to one scale, with their magnitudes.
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
         [md] , the terms head to tail
        *[other] : known terms in black{ $unknown ->
@@ -183,6 +190,7 @@ sec-rates_summary = Angular velocities and accelerations
 sec-rates_summary_v = Angular velocities
 sec-centres = Instant centres
 centres-intro = I with the numbers of two bodies ({ $example }: bodies 1 and 3) is the instant centre of their relative motion: the point where the relative velocity is zero.
+centres-intro_named = I with a body's name ({ $pair }) is the instant centre of { $body } relative to { $frame }, and I with two names joined by “rel” that of the first body relative to the second: the point where the relative velocity is zero.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = the pin { $joint },
 centre-joint-rolling = the contact point { $joint } (rolling without slipping),
@@ -283,6 +291,16 @@ fig-centres = The instant centres (rings, I with the numbers of two bodies) on t
            *[other] {" "}and { $normals }
         }).
     }
+fig-centres_named = The instant centres (rings, I with the bodies’ names) on the mechanism{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , with the lines they are found on (dash-dot: { $normals }).
+        }
+       *[other] , with the lines they are found on (dash-dot: lines through two centres{ $normals_n ->
+            [0] {""}
+           *[other] {" "}and { $normals }
+        }).
+    }
 fig-normal-wheel = the perpendiculars to the wheels
 fig-normal-slot = the normals to the slots
 fig-normal-slot_fixed = the normals to the lines the points slide on
@@ -350,7 +368,7 @@ how-centre_infinity = (its instant centre { $centre } is at infinity: it transla
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both run on the line { $line } at every instant: it slides along it and does not turn)
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
-centre-site_i = The instant centre { $centre } of { $body } relative to { $frame }, placed above, has no velocity: { $sym } = 0.
+centre-site_i = The instant centre { $centre } ≡ { $point } of { $body } relative to { $frame }, placed above, has no velocity: { $sym } = 0.
 sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
 geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always at the same fraction of it, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:

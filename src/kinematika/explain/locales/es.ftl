@@ -69,6 +69,13 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [md] las flechas
        *[other] las flechas azules
     } son las velocidades de sus puntos, a una misma escala, con sus módulos; los sólidos están numerados.
+fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
+        [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
+       *[other] {""}
+    }; { $format ->
+        [md] las flechas
+       *[other] las flechas azules
+    } son las velocidades de sus puntos, a una misma escala, con sus módulos.
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
         [md] , los términos uno tras otro
        *[other] : en negro los términos conocidos{ $unknown ->
@@ -207,6 +214,7 @@ sec-rates_summary = Velocidades y aceleraciones angulares
 sec-rates_summary_v = Velocidades angulares
 sec-centres = Centros instantáneos de rotación (CIR)
 centres-intro = I con los números de dos sólidos ({ $example }: sólidos 1 y 3) es el CIR de su movimiento relativo: el punto donde la velocidad relativa es nula.
+centres-intro_named = I con el nombre de un sólido ({ $pair }) es el CIR de { $body } respecto de { $frame }, e I con dos nombres unidos por «rel», el del primero respecto del segundo: el punto donde la velocidad relativa es nula.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = el eje de la articulación { $joint },
 centre-joint-rolling = el punto de contacto { $joint } (rodadura sin deslizamiento),
@@ -310,6 +318,16 @@ fig-centres = Los centros instantáneos (anillos, I con los números de dos sól
            *[other] {" "}y { $normals }
         }).
     }
+fig-centres_named = Los centros instantáneos (anillos, I con los nombres de los sólidos) sobre el mecanismo{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , con las rectas en que se hallan (trazo y punto: { $normals }).
+        }
+       *[other] , con las rectas en que se hallan (trazo y punto: rectas que pasan por dos centros{ $normals_n ->
+            [0] {""}
+           *[other] {" "}y { $normals }
+        }).
+    }
 fig-normal-wheel = las perpendiculares a las ruedas
 fig-normal-slot = las normales a las ranuras
 fig-normal-slot_fixed = las normales a las rectas por las que deslizan los puntos
@@ -383,7 +401,7 @@ how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)
 how-glides = ({ $p } y { $q } recorren en todo instante la recta { $line }: desliza a lo largo de ella y no gira)
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
-centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
+centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto
 geom-rule = La regla de todo contacto de rodadura: la condición de no deslizamiento se cumple en cada instante en el punto geométrico de contacto (aquí { $geom }), que se mueve; derivándola a lo largo de él se obtiene { $rule }: las componentes tangenciales de las dos aceleraciones son iguales y las normales difieren en este término, según la normal común. Hace falta la velocidad del punto geométrico:
 geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, en la misma fracción de ella, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:

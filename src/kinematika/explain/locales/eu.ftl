@@ -69,6 +69,13 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [md] geziak
        *[other] gezi urdinak
     } haren puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
+fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
+        [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
+       *[other] {""}
+    }; { $format ->
+        [md] geziak
+       *[other] gezi urdinak
+    } haren puntuen abiadurak dira, eskala berean, beren moduluekin.
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
         [md] , terminoak bata bestearen ondoren
        *[other] : beltzez termino ezagunak{ $unknown ->
@@ -186,6 +193,7 @@ sec-rates_summary = Abiadura eta azelerazio angeluarrak
 sec-rates_summary_v = Abiadura angeluarrak
 sec-centres = Biraketa-zentro instantaneoak
 centres-intro = I ikurrak, bi solidoren zenbakiekin ({ $example }: 1 eta 3 solidoak), haien mugimendu erlatiboaren biraketa-zentro instantaneoa adierazten du: abiadura erlatiboa nulua den puntua.
+centres-intro_named = I ikurrak, solido baten izenarekin ({ $pair }), { $body } solidoaren biraketa-zentro instantaneoa adierazten du { $frame } solidoarekiko, eta «erl» hitzaz lotutako bi izenekin, lehen solidoarena bigarrenarekiko: abiadura erlatiboa nulua den puntua.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = { $joint } giltzaduraren ardatza,
 centre-joint-rolling = { $joint } kontaktu-puntua (irristatu gabeko errodadura),
@@ -286,6 +294,16 @@ fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiek
            *[other] {" "}eta { $normals }
         }).
     }
+fig-centres_named = Biraketa-zentro instantaneoak (eraztunak, I solidoen izenekin) mekanismoaren gainean{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , aurkitzeko zuzenekin (marra-puntua: { $normals }).
+        }
+       *[other] , aurkitzeko zuzenekin (marra-puntua: bi zentrotatik pasatzen diren zuzenak{ $normals_n ->
+            [0] {""}
+           *[other] {" "}eta { $normals }
+        }).
+    }
 fig-normal-wheel = gurpilen perpendikularrak
 fig-normal-slot = arteken perpendikularrak
 fig-normal-slot_fixed = puntuak irristatzen diren zuzenen perpendikularrak
@@ -353,7 +371,7 @@ how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago:
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiadura bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
 how-glides = ({ $p } eta { $q } puntuek { $line } zuzena ibiltzen dute une oro: haren luzeran irristatzen da eta ez da biratzen)
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
-centre-site_i = { $body } solidoaren { $centre } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
+centre-site_i = { $body } solidoaren { $centre } ≡ { $point } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
 geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
 geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, zati berean, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
