@@ -22,7 +22,6 @@ col-body = sòlid
 col-points = punts
 col-shapes = formes
 col-joint = enllaç
-col-type = tipus
 col-bodies = sòlids
 col-where = on
 col-omega = velocitat angular

@@ -22,7 +22,6 @@ col-body = body
 col-points = points
 col-shapes = shapes
 col-joint = joint
-col-type = type
 col-bodies = bodies
 col-where = where
 col-omega = angular velocity

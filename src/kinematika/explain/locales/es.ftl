@@ -22,7 +22,6 @@ col-body = sólido
 col-points = puntos
 col-shapes = formas
 col-joint = par
-col-type = tipo
 col-bodies = sólidos
 col-where = dónde
 col-omega = velocidad angular

@@ -22,7 +22,6 @@ col-body = solidoa
 col-points = puntuak
 col-shapes = formak
 col-joint = lotura
-col-type = mota
 col-bodies = solidoak
 col-where = non
 col-omega = abiadura angeluarra
