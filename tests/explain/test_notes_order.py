@@ -106,12 +106,6 @@ def test_the_centres_section_holds_what_is_asked():
 
 
 # -- the notes' order: the centres first where the notes find the velocities from them ----------------------------
-def _centre_name(sol, body: str) -> str:
-    from kinematika.draw.names import pair_tag
-
-    return "I" + pair_tag(sol.model, sol.model.frame, body)
-
-
 @pytest.mark.parametrize("name,body", [
     ("seed_c5_1_1_pulley_on_cable", "pulley"),      # C5-1.1: the pulley's centre where the strands meet
     ("seed_c5_1_2_bar_on_inclined_wheels", "OJ"),   # C5-1.2: OJ's from OQ's and the vertical through J
@@ -127,14 +121,15 @@ def test_the_centres_come_first_and_give_the_velocities(name, body):
     keys = [s.title.key for s in doc.sections]
     assert keys.index("sec.centres") < keys.index("sec.velocities")
     assert not any(isinstance(b, CentreNote) and b.how == "check" for s in doc.sections for b in blocks(s))
-    centre = _centre_name(sol, body)
     found = [d for d in blocks(section(doc, "sec.velocities")) if isinstance(d, Derived) and d.body == body
              and d.kind == "omega" and d.source is not None]
     assert found, f"{body}: no ω read off an equation"
     eq = next(e for e in blocks(section(doc, "sec.velocities")) if isinstance(e, Equation)
               and any(t is found[0].source for side in e.sides for t in side))
     side = next(side for side in eq.sides if found[0].source in side)
-    assert side[0].sym.sub == centre and all(x == 0 for x in side[0].value)
+    site = next(m for m in blocks(section(doc, "sec.velocities")) if isinstance(m, Msg)
+                and m.key.startswith("centre.site") and m.args["centre"].sub == f"{sol.model.frame},{body}")
+    assert side[0].sym.sub == site.args["point"].text and all(x == 0 for x in side[0].value)
 
 
 @pytest.mark.parametrize("name", ["seed_c5_e2_gear_change", "seed_c5_e1_cavity"])

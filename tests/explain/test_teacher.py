@@ -231,14 +231,15 @@ def test_every_point_says_what_it_is(name):
 
 def test_what_a_point_is_comes_from_the_joints_and_shapes():
     """C5-1.2: O is the left wheel's centre (its circle's), J the bar's end sliding on the
-    floor (joint j8); the slides' r_pairs: B is the pin j5 between N and P."""
+    floor; the slides' r_pairs: B is the pin between N and P (a joint
+    is said by what it is, never by its id)."""
     _, doc = explained("seed_c5_1_2_bar_on_inclined_wheels")
     table = _points_table(render(doc, "ca", "md", drawings=False), "punt")
     assert table["O"] == "centre de la *roda esquerra*"
-    assert table["J"].startswith("enllaç j8, contacte amb lliscament") and "*barra OJ*" in table["J"]
+    assert table["J"].startswith("contacte amb lliscament") and "*barra OJ*" in table["J"]
     _, doc = explained("seed_001_r_pairs")
     table = _points_table(render(doc, "eu", "md", drawings=False), "puntua")
-    assert table["B"].startswith("j5 lotura, giltzadura (R)")
+    assert table["B"].startswith("giltzadura (R), *N elementua* eta *P elementua*")
 
 
 # -- the notes' reasoning (issue 30, the audit's S2, S6 and C5-E.4) ---------------------------------------------------
@@ -263,16 +264,16 @@ def test_no_seed_names_aronhold_kennedy(name, lang, monkeypatch):
 @pytest.mark.parametrize("name,lang,line", [
     # C5-1.2: the centres of the wheels move parallel to the inclined planes; OQ's centre is
     # where the perpendiculars to those velocities through the centres meet
-    ("seed_c5_1_2_bar_on_inclined_wheels", "en", "I_16: it lies on the perpendicular to v_O through O (O moves with "
+    ("seed_c5_1_2_bar_on_inclined_wheels", "en", "I_OQ: it lies on the perpendicular to v_O through O (O moves with "
                                                  "*left wheel*, which turns about K1) and on the perpendicular to v_Q "
                                                  "through Q (Q moves with *right wheel*, which turns about K2)"),
     # C5-1.3: on OQ (the perpendicular to v_Q) and on the perpendicular to the bar through J
-    ("seed_c5_1_3_bar_in_sleeve", "ca", "I_13: és a la perpendicular a v_Q per Q (Q es mou amb l’*element OQ*, que gira "
-                                        "al voltant d’O) i a la perpendicular a la guia de l’enllaç j3 per J"),
+    ("seed_c5_1_3_bar_in_sleeve", "ca", "I_barra: és a la perpendicular a v_Q per Q (Q es mou amb l’*element OQ*, que gira "
+                                        "al voltant d’O) i a la perpendicular a la guia per J"),
     # C5-E.3: the rod's pins move with the wheels about their contacts
-    ("seed_c5_e3_wheels_with_rod", "eu", "I_14: bi zuzen hauetan dago: A puntuan v_A abiadurarekiko perpendikularra"),
+    ("seed_c5_e3_wheels_with_rod", "eu", "I_biela: bi zuzen hauetan dago: A puntuan v_A abiadurarekiko perpendikularra"),
     # C5-1.4: the planet's centre and its contact with the ring, carried about O
-    ("seed_c5_1_4_epicyclic", "en", "I_15: A1 moves with *carrier* about O, and J10 with *ring* about O"),
+    ("seed_c5_1_4_epicyclic", "en", "I_planet1: A1 moves with *carrier* about O, and J10 with *ring* about O"),
 ])
 def test_a_centre_is_found_as_the_notes_find_it(name, lang, line):
     _, doc = explained(name)

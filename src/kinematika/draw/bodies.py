@@ -8,13 +8,13 @@ its lines and circles hatched on the material's side. What is drawn are marks
 """
 from __future__ import annotations
 
-from typing import Optional
+from typing import Any, Optional
 
 import numpy as np
 
 from .geometry import clip_line, clip_segment, convex_hull, perpendicular
 from ..model.wording import noun
-from .names import plain
+from .names import plain, shows_tag
 from .context import Context
 from .scene import BodyView, ShapeView
 from ..joints.symbols import HATCH_BAND
@@ -89,10 +89,18 @@ def _body(ctx: Context, body: BodyView) -> None:
     if anchor is None and pts:
         anchor = pts[0]
     if anchor is not None:
-        name = plain(noun(body.label or body.name)) + \
-            (f" ({body.index or body.number})" if ctx.scene.numbered else "")
+        name = plain(noun(body.label or body.name)) + _tag(ctx, body)
         ctx.label(anchor, name, body.colour, 5, f"body:{body.name}", body=body.name, side=side,
                   group=f"body:{body.name}", style="italic", radius=BAR_WIDTH / 2 if side is not None else 0.0)
+
+
+def _tag(ctx: Context, body: Any) -> str:
+    """` (3)` after a body's name when the figure is numbered, unless the name already reads
+    its tag (`names.shows_tag`: no `roda 1 (1)`)."""
+    tag = str(body.index or body.number)
+    if not ctx.scene.numbered or not shows_tag(tag, noun(body.label or body.name)):
+        return ""
+    return f" ({tag})"
 
 
 def _beside(ctx: Context, p: np.ndarray, q: np.ndarray) -> Optional[np.ndarray]:
@@ -280,8 +288,7 @@ def _fixed_body(ctx: Context, body: BodyView) -> None:
         anchor = (seg[0] + seg[1]) / 2
     _skeleton(ctx, body, GROUND, 3.0)
     if anchor is not None:
-        name = plain(noun(body.label or body.name)) + \
-            (f" ({body.index or body.number})" if ctx.scene.numbered else "")
+        name = plain(noun(body.label or body.name)) + _tag(ctx, body)
         ctx.label(anchor, name, GROUND, 5, f"body:{body.name}", side=side, group=f"body:{body.name}",
                   style="italic")
 

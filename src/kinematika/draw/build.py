@@ -15,7 +15,7 @@ from ..shapes import Cam, Circle, Curve, Disc, Line, Plane
 from ..errors import KinematikaError
 from .options import DrawOptions
 from .projection import Projection, projection
-from .names import body_labels, body_numbers, listed, numbered, value_text
+from .names import body_labels, body_numbers, listed, names_bodies, numbered, value_text
 from .results import add_results
 from .scene import BodyView, JointView, Numbers, Scene, ShapeView, Vec, drawing_values, numbering_note
 from .skeleton import add_skeletons
@@ -72,7 +72,9 @@ def _values_note(values: dict, given: dict, lang: Optional[str] = None) -> str:
 def _bodies(inst: Instant, num: Numbers, lang: Optional[str] = None) -> dict[str, BodyView]:
     model = inst.model
     out = {}
-    labels = body_labels(model, lang, named=False)      # the figures' numbering (3)
+    # the figures' tags: the bodies' names' subscripts where the text writes ω_biela, I_biela,
+    # else their numbers (3)
+    labels = body_labels(model, lang, named=names_bodies(model, lang))
     for name, number in body_numbers(model).items():
         body = model.bodies[name]
         frame = name == model.frame

@@ -45,14 +45,49 @@ def body_labels(model: Any, lang: Optional[str] = None, named: bool = True) -> d
     return out
 
 
-def pair_tag(model: Any, a: str, b: str, lang: Optional[str] = None) -> str:
-    """The subscript of a pair of bodies, in the numbering's order: 13, 2N, or 2,11 when a
-    body's label has more than one character."""
-    numbers, labels = body_numbers(model), body_labels(model, lang, named=False)
+def names_bodies(model: Any, lang: Optional[str]) -> bool:
+    """Whether the model names its bodies in `lang` (`names: LANG: bodies`): then every symbol
+    writes a body by its name's subscript (ω_biela, v_J1∈roda, I_biela), as the notes write
+    Ω^roda and CIR^{roda sup}; else by its number (ω_3, I_13)."""
+    wording = getattr(model, "wording", None)
+    return bool(lang and wording is not None and wording.bodies.get(lang))
+
+
+def centre_subscript(a: str, b: str, numbers: dict, labels: dict, named: bool, rel_word: str) -> str:
+    """The subscript of the instant centre of bodies `a` and `b`, the one rule of the text and
+    the figures. Named bodies (`names_bodies`): the moving body's label alone when the other
+    is the frame (I_biela, as ω_biela: the notes' CIR^{biela}_T), else the later body's label,
+    the language's word for a relative motion and the earlier's (I_{politja rel braç}, as
+    ω_{politja rel braç}). Numbered bodies: the two numbers in order, 13, 2N, or 2,11 when a
+    label has more than one character (`labels` then the numbers or the notation's indices)."""
     x, y = sorted((a, b), key=lambda n: numbers[n])
+    if named:
+        return labels[y] if numbers[x] == 1 else f"{labels[y]} {rel_word} {labels[x]}"
     if all(len(t) == 1 for t in labels.values()):
         return labels[x] + labels[y]
     return f"{labels[x]},{labels[y]}"
+
+
+def pair_tag(model: Any, a: str, b: str, lang: Optional[str] = None) -> str:
+    """The subscript of a pair of bodies' instant centre (`centre_subscript`): I_biela, or by
+    numbers 13, 2N, 2,11 when the model does not name its bodies in `lang`."""
+    from ..model.wording import part_subscript
+
+    named = names_bodies(model, lang)
+    return centre_subscript(a, b, body_numbers(model), body_labels(model, lang, named=named), named,
+                            part_subscript("sub.rel", lang))
+
+
+def shows_tag(tag: str, name: str) -> bool:
+    """Whether a figure writes a body's symbol tag after its name, `roda (3)`: not when the
+    tag is already read in the name (a word of it, or its words run together: `roda 1` for
+    1 or roda1, `biela` for biela), which would repeat it (`roda 1 (1)`)."""
+    words = [w.strip(".,;:()").lower() for w in name.split()]
+    words = [w for w in words if w]
+    t = tag.replace(" ", "").lower()
+    if t in words or t == "".join(words):
+        return False
+    return not any(t == a + b for a in words for b in words if a != b)
 
 
 def plain(text: str) -> str:
@@ -100,24 +135,56 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
     return subscript(letter, point, None if body is None else labels[body], rel, part_subscript("sub.rel", lang))
 
 
-def contact_name(model: Any, joint_id: str) -> str:
+def contact_name(model: Any, joint_id: str, sol: Any = None) -> str:
     """The name of a rolling or gear joint's contact point, as the text and the figures both
-    write it: J when the model has one contact (the notes' J), else J and the joint's number
-    (J10 for joint j10, or its place among the contacts when ids are names), or the name the
-    model's notation gives it (`contact(j4): F`, the slides' F); never a point's name (a
-    prime is added)."""
+    write it: the model's own point there, when one of the two bodies carries a point at the
+    contact (one point, one label on a page: the notes' J1 where the model names it J1, not
+    J1 and J1′); else J when the model has one contact (the notes' J), else J and the
+    joint's number (J10 for joint j10, or its place among the contacts when ids are names),
+    or the name the model's notation gives it (`contact(j4): F`, the slides' F); never
+    another point's name (a prime is added)."""
+    named = getattr(getattr(model, "wording", None), "contacts", {}).get(joint_id)
+    if named is None and sol is not None:
+        there = coincident_point(sol, joint_id)
+        if there is not None:
+            return there
     rolling = [j.id for j in model.joints if j.kind.touches]
     number = joint_id[1:] if re.fullmatch(r"j\d+", joint_id) else str(rolling.index(joint_id) + 1)
-    named = getattr(getattr(model, "wording", None), "contacts", {}).get(joint_id)
     base = named or ("J" if len(rolling) == 1 else f"J{number}")
     while base in model.points:
         base += "'"
     return base
 
 
+def coincident_point(sol: Any, joint_id: str) -> Optional[str]:
+    """The model's point at a touching joint's contact, carried by one of its two bodies
+    (first in the file's order), else None: the contact is that point."""
+    model = sol.model
+    joint = next((j for j in model.joints if j.id == joint_id), None)
+    geometry = sol.geometry(joint_id) if joint is not None else None
+    contact = getattr(geometry, "contact", None)
+    if contact is None:
+        return None
+    try:
+        where = [float(sol.inst.num(c)) for c in contact.point]
+    except (TypeError, ValueError):
+        return None
+    scale = max([1.0] + [abs(c) for c in where])
+    for name, pos in sol.inst.points.items():
+        if not {joint.a, joint.b} & set(model.carriers(name)):
+            continue
+        try:
+            xs = [float(sol.inst.num(c)) for c in pos]
+        except (TypeError, ValueError):
+            continue
+        if len(xs) == len(where) and all(abs(x - y) <= 1e-9 * scale for x, y in zip(xs, where)):
+            return name
+    return None
+
+
 def pair_symbol(letter: str, model: Any, a: str, b: str, lang: Optional[str] = None) -> str:
-    """`letter` for a pair of bodies by their labels, in the numbering's order: $I_{13}$
-    (I_{2,11} once a label has two characters; `pair_tag`)."""
+    """`letter` for a pair of bodies' centre as the text writes it (`pair_tag`): $I_{biela}$,
+    or by numbers $I_{13}$ (I_{2,11} once a label has two characters)."""
     return subscript(letter, pair_tag(model, a, b, lang))
 
 

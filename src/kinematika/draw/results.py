@@ -373,7 +373,7 @@ def _pole(scene: Scene, sol: Any, num: Numbers, lang: Optional[str], q: Any) -> 
 def _contact(scene: Scene, sol: Any, num: Numbers, lang: Optional[str], q: Any) -> None:
     value = answer(sol, q)
     if value.get("point") is not None:
-        name = contact_name(sol.model, q.target)
+        name = contact_name(sol.model, q.target, sol)
         label = subscript("J", name[1:]) if name[1:].isdigit() else "$\\mathrm{" + name + "}$"
         scene.marks.append(MarkView("contact", f"contact:{q.target}", label, point=num.page(value["point"])))
 

@@ -104,7 +104,23 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
     for eq in doc.equations():
         if id(eq) not in in_levels:
             eq.polygon = polygon(ctx, eq)
+    doc.joints = joint_places(ctx)
     return doc
+
+
+def joint_places(ctx: Ctx) -> dict:
+    """How the text names each joint, never by its id (j3): by its point (the pin A, the
+    wheel RL), by its contact (J, F) when it touches, else by the two bodies it joins
+    (body, other) — as the notes name a joint by what it is and where."""
+    out: dict = {}
+    for j in ctx.model.joints:
+        if j.at:
+            out[j.id] = j.at
+        elif getattr(j.kind, "touches", False) and ctx.planar:
+            out[j.id] = ctx.contact(j)
+        else:
+            out[j.id] = (j.b, j.a)
+    return out
 
 
 SPLIT = 14          # a level polygon with more arrows than this is drawn step by step

@@ -40,7 +40,10 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
         return None
     sec = Section(msg("sec.centres" if part != "rest" else "sec.centres_v"))
     if part != "rest":
-        sec.add(msg("centres.intro", example=Sym("I", "13", vector=False)))
+        first_body = next(b for b in ctx.model.bodies if b != ctx.frame)
+        sec.add(msg("centres.intro", example=Sym("I", "13", vector=False),
+                    pair=Sym("I", f"{ctx.frame},{first_body}", vector=False), body=Name(first_body, "body"),
+                    frame=Name(ctx.frame, "body")))
     if part == "all" or (part == "first") == (len(first) == len(chosen)) or part == "rest":
         sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False,
                         centre_pairs=used_pairs(made, chosen)))
@@ -164,6 +167,7 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
     made, chosen, _ = _notes(ctx)
     points: dict[str, tuple[str, tuple]] = {}
     still: dict[str, CentreNote] = {}
+    found: list[tuple[str, tuple, Optional[str]]] = []
     for key in chosen:
         note = made[key]
         if ctx.frame not in key or note.how not in ("kennedy", "lines") or not _placed(ctx, note):
@@ -174,13 +178,17 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
             if note.value.get("direction") is not None:
                 still[body] = note
             continue
-        name = _point_name(ctx, body, where)
+        found.append((body, tuple(where), _point_name(ctx, body, where)))
+    unnamed = sum(1 for _, _, name in found if name is None)
+    for body, where, name in found:
         if name is None:
-            name = "I" + pair_tag(ctx.model, ctx.frame, body)
+            # the notes' CIR ≡ I: one centre placed on a page is the point I; several, I and
+            # the bodies' numbers (I14, I16), a name the same in every language
+            name = "I" if unnamed == 1 else "I" + pair_tag(ctx.model, ctx.frame, body)
             while name in ctx.inst.points:          # never a point's name
                 name += "'"
-        ctx.name_position(name, tuple(where))
-        points[name] = (body, tuple(where))
+        ctx.name_position(name, where)
+        points[name] = (body, where)
     return points, still
 
 

@@ -50,12 +50,13 @@ class Ctx:
         return name
 
     def contact(self, j) -> str:
-        """The name of a rolling joint's contact point, placed there: J, or J10 for joint
-        j10 (J1, J2 … in order when ids are names), never a point's name."""
+        """The name of a rolling joint's contact point, placed there: the model's point there
+        (`draw.names.contact_name`), else J, or J10 for joint j10 (J1, J2 … in order when ids
+        are names)."""
         if j.id not in self._contacts:
             from ..draw.names import contact_name
 
-            base = contact_name(self.model, j.id)
+            base = contact_name(self.model, j.id, self.sol)
             self._contacts[j.id] = base
             contact = self.sol.geometry(j.id).contact
             if contact is not None:

@@ -304,6 +304,7 @@ class Document:
     sections: list[Section] = field(default_factory=list)
     numbers: dict = field(default_factory=dict)    # body -> its number, as the notes and figures number them
     wording: Any = None                             # the model's names per language and notation
+    joints: dict = field(default_factory=dict)      # joint -> its point or contact (how the text names it)
 
     def blocks(self) -> list:
         """Every block, nested sections included, in reading order."""

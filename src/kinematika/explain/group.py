@@ -41,7 +41,7 @@ from .drives import drive_blocks, pair_blocks
 from .given import whole_along
 from .kinds import (crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls, same_rate,
                     slider, welds)
-from .terms import contact_term, point_term, rotation_terms, slide_terms
+from .terms import contact_term, guide, point_term, rotation_terms, slide_terms
 
 MAX_TURNS = 3           # rotations along one route at most
 TOL = 1e-9              # relative: zero lengths
@@ -1006,7 +1006,7 @@ class Writer:
         if guided(j):
             unknown = not known and not self.plan._driven(j) and j.id not in p.slides
             line = (Value(ctx.clean(ctx.sol.geometry(j.id).along, ""), "") if on_fixed_line(j, ctx.frame)
-                    else msg("dir.guide", joint=joint_name(j.id)))       # a fixed line: its direction
+                    else guide(j))       # a fixed line: its direction
             return slide_terms(ctx, lv, seg.frm, seg.body, seg.p, line, j.id,
                                unknown)
         return []

@@ -12,6 +12,8 @@ their own.
 """
 from __future__ import annotations
 
+import re
+
 import math
 
 from .context import Ctx
@@ -163,6 +165,8 @@ def _letter(label: str) -> str:
     if not name or not name[0].isalpha():
         return ""
     letter = name.lower() if name.lower() != "o" else "o′"       # the pole is o: a point O's image is o′
+    if re.fullmatch(r"j\d+", letter):
+        letter = name            # a contact J10's image: j10 would read as a joint's id
     return letter + (f"∈{body}" if body else "")
 
 

@@ -8,8 +8,8 @@ from typing import Optional
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
-from .kinds import kind_key, on_fixed_line
-from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Table, Value, body, joint, msg, names, point
+from .kinds import kind_key, on_fixed_line, rolls
+from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Table, Value, body, msg, names, point
 from .order import Step
 
 
@@ -26,9 +26,10 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
-    joints = [[joint(j.id), msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
+    # a joint is said by what it is, the bodies it joins and where: never by its id (j3)
+    joints = [[msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]
-    sec.add(Table([msg("col.joint"), msg("col.type"), msg("col.bodies"), msg("col.where")], joints))
+    sec.add(Table([msg("col.joint"), msg("col.bodies"), msg("col.where")], joints))
     welded = welded_to_frame(ctx)
     if welded:
         sec.add(msg("structure.welded", bodies=names(welded, "body"), bodies_n=len(welded), frame=body(ctx.frame)))
@@ -91,6 +92,8 @@ def _where(ctx: Ctx, j) -> Inline | str:
     parts: list = []
     if j.at:
         parts.append(point(j.at))
+    elif rolls(j) and ctx.planar and ctx.sol.geometry(j.id).contact is not None:
+        parts.append(point(ctx.contact(j)))          # the contact, as the text names it
     if isinstance(j.along, PointPair):
         parts += [" ∥ " if parts else "∥ ", point(j.along.start), point(j.along.end)]
     elif j.along is not None:

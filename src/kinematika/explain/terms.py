@@ -11,7 +11,7 @@ from __future__ import annotations
 from ..algebra.vectors import scale
 from ..model.model import Joint
 from .context import Ctx, alpha_sym, omega_sym, segment
-from .document import Ann, Msg, Sym, Term, joint, msg
+from .document import Ann, Msg, Sym, Term, body, joint, msg
 
 UNIT = {"v": "speed", "a": "accel"}
 
@@ -75,8 +75,9 @@ def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: boo
 
 
 def guide(j: Joint) -> Msg:
-    """The direction of joint `j`'s guide, as a message ("guide j3")."""
-    return msg("dir.guide", joint=joint(j.id))
+    """The direction of joint `j`'s guide, named by the body that carries it ("guide of the
+    support"), never by the joint's id."""
+    return msg("dir.guide", holder=body(j.a), joint=joint(j.id))      # the joint: for checks, not written
 
 
 def slide_terms(ctx: Ctx, level: str, frame: str, moving: str, point: str, guide: Msg,

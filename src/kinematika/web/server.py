@@ -12,7 +12,7 @@ import json
 import os
 from dataclasses import dataclass, field
 from importlib import resources
-from typing import Any, Callable, Optional
+from typing import TYPE_CHECKING, Any, Callable, Optional
 
 import anyio
 from starlette.applications import Starlette
@@ -30,6 +30,9 @@ from ..languages import LANGS
 from .. import limits
 from .requests import Request, parse_body
 from .warm import warmed
+
+if TYPE_CHECKING:
+    from ..sweep.result import SweepResult
 
 ENDPOINTS = ("solve", "sweep", "simulate", "centres", "explain", "draw", "edit", "assemblies", "exercise",
              "build", "sketch", "convert")
@@ -323,14 +326,19 @@ def _centres(req: Request) -> tuple[str, str]:
 def _sweep(req: Request) -> tuple[str, str | bytes]:
     _, result = commands.sweep_run(req.model, req.get("joint"), req.get("by"), req.get("steps"),
                                    req.get("skip_bad"), how=req.how)
+    return _rows(req, result)
+
+
+def _rows(req: Request, result: SweepResult) -> tuple[str, str | bytes]:
+    """A sweep's or a motion's rows as the request asks (`as: csv`), else as `--json` writes them."""
     if req.get("as") == "csv":
         out = io.StringIO(newline="")
         result.write_csv(out)
         return CSV, out.getvalue()
-    return JSON, b"".join(result.json_chunks()) + b"\n"      # as `sweep --json` writes it
+    return JSON, b"".join(result.json_chunks()) + b"\n"
 
 
-def _simulate(req: Request) -> tuple[str, Any]:
+def _simulate(req: Request) -> tuple[str, str | bytes]:
     """What `simulate --json` prints (or its CSV); a motion that stops early answers 400 with
     the error and, under `partial`, the rows before it (as `simulate --json` prints them)."""
     from ..simulate.run import SimulationStopped
@@ -342,11 +350,7 @@ def _simulate(req: Request) -> tuple[str, Any]:
         failure = Failure(400, err.kind, err.said, err.where)
         failure.extra["partial"] = json.loads(b"".join(err.result.json_chunks()))
         raise failure from None
-    if req.get("as") == "csv":
-        out = io.StringIO(newline="")
-        result.write_csv(out)
-        return CSV, out.getvalue()
-    return JSON, b"".join(result.json_chunks()) + b"\n"      # as `simulate --json` writes it
+    return _rows(req, result)
 
 
 def _explain(req: Request) -> tuple[str, str]:

@@ -22,7 +22,6 @@ col-body = sòlid
 col-points = punts
 col-shapes = formes
 col-joint = enllaç
-col-type = tipus
 col-bodies = sòlids
 col-where = on
 col-omega = velocitat angular
@@ -69,6 +68,13 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [md] les fletxes
        *[other] les fletxes blaves
     } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls; els sòlids estan numerats.
+fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
+        [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
+       *[other] {""}
+    }; { $format ->
+        [md] les fletxes
+       *[other] les fletxes blaves
+    } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls.
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
         [md] , els termes l’un darrere l’altre
        *[other] : en negre els termes coneguts{ $unknown ->
@@ -196,70 +202,70 @@ input-revolute = { $body } { COUNT($body) ->
 input-prismatic = { $body } { COUNT($body) ->
         [many] es traslladen
        *[one] es trasllada
-    } sense girar al llarg de la guia de l’enllaç { $joint }.
+    } sense girar al llarg de la seva guia.
 other-intro = Aquests sòlids es troben alhora a partir de les condicions dels seus enllaços:
-cond-revolute = enllaç { $joint }, articulació a { $point }: { $point } és un punt { ELISION($a) ->
+cond-revolute = articulació a { $point }: { $point } és un punt { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } i { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
     }.
-cond-prismatic = enllaç { $joint }, prismàtic: { $b } { COUNT($b) ->
+cond-prismatic = enllaç prismàtic: { $b } { COUNT($b) ->
         [many] llisquen
        *[one] llisca
     } sobre { $a } sense girar respecte { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     }.
-cond-slot = enllaç { $joint }, passador { $point } en ranura: la seva velocitat relativa al sòlid amb ranura segueix la ranura.
-cond-slot_fixed = enllaç { $joint }: el punt { $point } { ELISION($b) ->
+cond-slot = passador { $point } en ranura: la seva velocitat relativa al sòlid amb ranura segueix la ranura.
+cond-slot_fixed = el punt { $point } { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
     } llisca al llarg d’una recta solidària a { $a }: la seva velocitat segueix aquesta recta.
-cond-wheel = enllaç { $joint }, roda a { $point }: sense velocitat lateral respecte { ELISION($a) ->
+cond-wheel = roda a { $point }: sense velocitat lateral respecte { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     }.
-cond-weld = enllaç { $joint }: { $a } i { $b } es mouen com un sol sòlid.
-cond-spherical = enllaç { $joint }, ròtula a { $point }: { $point } és un punt { ELISION($a) ->
+cond-weld = { $a } i { $b } es mouen com un sol sòlid.
+cond-spherical = ròtula a { $point }: { $point } és un punt { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } i { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
     }.
-cond-cylindrical = enllaç { $joint }, cilíndric: { $b } { COUNT($b) ->
+cond-cylindrical = enllaç cilíndric: { $b } { COUNT($b) ->
         [many] giren
        *[one] gira
     } al voltant de l’eix { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } i hi llisca.
-rolling-noslip = enllaç { $joint }: { $b } { COUNT($b) ->
+rolling-noslip = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
-rolling-kept = enllaç { $joint }: el contacte es manté: a { $point } les acceleracions dels punts materials { ELISION($b) ->
+rolling-kept = el contacte es manté: a { $point } les acceleracions dels punts materials { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
     } i { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } només difereixen en un terme segons la normal comuna.
-path-circle = enllaç { $joint }: { $b } { COUNT($b) ->
+path-circle = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu la circumferència de radi { $radius } centrada a { $o }, de manera que { $ac } té una component normal { $vs }² / { $radius } cap a { $o }; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), la seva component tangencial és { $al } × { $arm }.
-path-line = enllaç { $joint }: { $b } { COUNT($b) ->
+path-line = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu una recta, sense acceleració normal; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), { $ac } = { $al } × { $arm }.
-rolling-same = enllaç { $joint }: { $b } { COUNT($b) ->
+rolling-same = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat, { $sym } = { $other }.
-rolling-centre = enllaç { $joint }: { $b } { COUNT($b) ->
+rolling-centre = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }, que no es mou: el punt { $point } { ELISION($b) ->
@@ -269,9 +275,12 @@ rolling-centre = enllaç { $joint }: { $b } { COUNT($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
     }.
-dir-guide = guia { $joint }
+dir-guide = guia { ELISION($holder) ->
+        [vowel] d’{ $holder }
+       *[other] de { $holder }
+    }
 dir-normal = normal
-how-prismatic = (enllaç prismàtic { $joint }: sense rotació relativa)
+how-prismatic = (enllaç prismàtic: sense rotació relativa)
 carry-anchor = De la resolució del grup: { $sym } = { $value }.
 sense-ccw = antihorari
 sense-cw = horari
@@ -279,12 +288,19 @@ sec-rates_summary = Velocitats i acceleracions angulars
 sec-rates_summary_v = Velocitats angulars
 sec-centres = Centres instantanis de rotació (CIR)
 centres-intro = I amb els números de dos sòlids ({ $example }: sòlids 1 i 3) és el CIR del seu moviment relatiu: el punt on la velocitat relativa és nul·la.
+centres-intro_named = I amb el nom d’un sòlid ({ $pair }) és el CIR { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }, i I amb dos noms units per «REL», el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
-centre-joint-rolling = el punt de contacte de l’enllaç { $joint } (rodolament sense lliscament),
-centre-joint-gear = el contacte de les circumferències primitives de l’engranatge { $joint },
-centre-joint-prismatic = l’enllaç { $joint } és prismàtic: el moviment relatiu és una translació i el CIR és a la perpendicular a la guia,
-centre-joint-weld = l’enllaç { $joint } uneix rígidament els dos sòlids:
+centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),
+centre-joint-gear = el contacte { $joint } de les circumferències primitives,
+centre-joint-prismatic = l’enllaç és prismàtic: el moviment relatiu és una translació i el CIR és a la perpendicular a la guia,
+centre-joint-weld = els dos sòlids estan units rígidament:
 centre-kennedy = per Aronhold–Kennedy és a la recta que passa per { $l1 } (tercer sòlid { $k1 }) i a la recta que passa per { $l2 } (tercer sòlid { $k2 }); aquestes rectes es tallen
 centre-velocities = els enllaços no el situen abans de conèixer les velocitats; amb elles: les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
@@ -369,7 +385,7 @@ ask-inflection = circumferència d’inflexions i tangent polar { ELISION($body)
         [vowel] d’{ $frame }
        *[other] de { $frame }
     }
-ask-contact = els tres punts coincidents al contacte de l’enllaç { $joint }
+ask-contact = els tres punts coincidents al contacte { $joint }
 ask-decompose = composició del moviment { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
@@ -410,9 +426,9 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
-composition-slide = { $point } llisca al llarg de la guia de l’enllaç { $joint }: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
-composition-slide_seen = { $point } llisca al llarg de la guia de l’enllaç { $joint }; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat més amunt: { $sym } = { $seen } = { $value }.
-composition-pin = { $point } és el passador de l’enllaç { $joint }, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
+composition-slide = { $point } llisca al llarg de la seva guia: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
+composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat més amunt: { $sym } = { $seen } = { $value }.
+composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)
 vehicle-line-velocity = la perpendicular a { $sym } pel punt { $point }
@@ -444,7 +460,7 @@ loop-solve = Les tres components donen les velocitats desconegudes:
 loop-solve_alpha = Derivant en els eixos fixos, les acceleracions angulars relatives i els termes { $cross } sumen zero al llarg del llaç; les tres components donen les { $rate } desconegudes:
 dir-axis = eix { $joint }
 dir-wheel = roda { $joint }
-how-weld = (unió rígida { $joint }: un sol sòlid)
+how-weld = (unió rígida: un sol sòlid)
 group-wheel_v = La roda { $joint } no llisca lateralment: la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
@@ -472,6 +488,16 @@ copy-same = { $body } té els mateixos enllaços, amb els mateixos sòlids, i el
        *[other] velocitat angular
     }:
 fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , amb les rectes on es troben (traç i punt: { $normals }).
+        }
+       *[other] , amb les rectes on es troben (traç i punt: rectes que passen per dos centres{ $normals_n ->
+            [0] {""}
+           *[other] {" "}i { $normals }
+        }).
+    }
+fig-centres_named = Els centres instantanis (anells, I amb els noms dels sòlids) sobre el mecanisme{ $kennedy ->
         [0] { $normals_n ->
             [0] .
            *[other] , amb les rectes on es troben (traç i punt: { $normals }).
@@ -523,14 +549,14 @@ shape-camshape = lleva
 joint-contact = contacte (parell superior)
 joint-curved_slot = passador en ranura corba
 joint-cam = lleva i seguidor
-cond-contact = enllaç { $joint }, contacte: { $a } i { $b } es mantenen en contacte; poden lliscar segons la tangent comuna.
-cond-curved_slot = enllaç { $joint }, passador { $point } en ranura corba: la seva velocitat relativa al sòlid amb ranura segueix la tangent de la ranura.
-cond-cam = enllaç { $joint }, lleva: el seguidor { $b } es manté en contacte amb la lleva { $a }.
+cond-contact = contacte: { $a } i { $b } es mantenen en contacte; poden lliscar segons la tangent comuna.
+cond-curved_slot = passador { $point } en ranura corba: la seva velocitat relativa al sòlid amb ranura segueix la tangent de la ranura.
+cond-cam = lleva: el seguidor { $b } es manté en contacte amb la lleva { $a }.
 dir-tangent = tangent a { $point }
 dir-centre = cap al centre de curvatura { $point }
-higher-intro = El parell superior { $joint } s'escriu com el moviment de { $point } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l'acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
-higher-straight = El parell superior { $joint } s'escriu com el moviment de { $point } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).
-centre-weld = l’enllaç { $joint } uneix rígidament { $body } i { $other }: són un sol sòlid, de manera que el CIR és el { ELISION($other) ->
+higher-intro = El parell superior s'escriu com el moviment de { $point } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l'acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
+higher-straight = El parell superior s'escriu com el moviment de { $point } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).
+centre-weld = { $body } i { $other } estan units rígidament: són un sol sòlid, de manera que el CIR és el { ELISION($other) ->
         [vowel] d’{ $other }
        *[other] de { $other }
     }, { $same },
@@ -546,7 +572,7 @@ centre-line-moves_still = la perpendicular a { $v } per { $point } ({ $point } e
         [many] traslladen
        *[one] trasllada
     })
-centre-line-guide = la perpendicular a la guia de l’enllaç { $joint } per { $pivot } (el punt { ELISION($b) ->
+centre-line-guide = la perpendicular a la guia per { $pivot } (el punt { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
     } que hi és llisca al llarg de la guia respecte { ELISION($body) ->
@@ -576,11 +602,11 @@ centre-carried-outside = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q } (passa pels punts al voltant dels quals giren), de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
-centre-line-slot = la normal a la ranura de l’enllaç { $joint } per { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
+centre-line-slot = la normal a la ranura per { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
 centre-line-slot_fixed = la normal a la recta { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
-    } per { $point }, el punt que hi llisca (enllaç { $joint })
+    } per { $point }, el punt que hi llisca
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
 centre-field = els enllaços no el situen abans de conèixer les velocitats; amb elles, és a la perpendicular a { $v } per { $q }, del costat cap on apunta { $v } girada 90° en el sentit de { $w }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
@@ -602,15 +628,15 @@ how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } recorren a cada instant la recta { $line }: llisca al llarg d’ella i no gira)
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
-centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
+centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte
 geom-rule = La regla de tot contacte de rodolament: la condició de no lliscament es compleix a cada instant al punt geomètric de contacte (aquí { $geom }), que es mou; derivant-la al llarg d’aquest punt s’obté { $rule }: les components tangencials de les dues acceleracions són iguals i les normals difereixen en aquest terme, segons la normal comuna. Cal la velocitat del punt geomètric:
-geom-bar = { $geom }, el punt geomètric de contacte de l’enllaç { $joint }, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, a la mateixa fracció, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:
-geom-foot = { $geom }, el punt geomètric de contacte de l’enllaç { $joint }, és el peu de la perpendicular des del centre { $centre } a la recta { ELISION($line) ->
+geom-bar = { $geom }, el punt geomètric de contacte, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, a la mateixa fracció, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:
+geom-foot = { $geom }, el punt geomètric de contacte, és el peu de la perpendicular des del centre { $centre } a la recta { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
     }: { $radius } és un radi, perpendicular a la recta, i gira amb ella:
-contact-intro = Al contacte { $point } de l’enllaç { $joint } coincideixen tres punts amb cinemàtiques diferents: el punt { ELISION($a) ->
+contact-intro = Al contacte { $point } coincideixen tres punts amb cinemàtiques diferents: el punt { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     }, el punt { ELISION($b) ->
@@ -642,12 +668,12 @@ what-centre = centre { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }
-what-joint = enllaç { $joint }, { $kind }, entre { $a } i { $b }
+what-joint = { $kind }, entre { $a } i { $b }
 what-touching = el punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    } on toca { $other } (enllaç { $joint })
-what-contact = punt de contacte de l’enllaç { $joint } ({ $kind }), entre { $a } i { $b }
+    } on toca { $other }
+what-contact = punt de contacte ({ $kind }), entre { $a } i { $b }
 what-body = un punt { ELISION($bodies) ->
         [vowel] d’{ $bodies }
        *[other] de { $bodies }
@@ -669,11 +695,11 @@ how-translates = (es trasllada respecte { ELISION($body) ->
 pair-relation_v = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si (enllaç { $joint }), de manera que { $equation } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si, de manera que { $equation } (amb { $radii }):
 pair-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si (enllaç { $joint }), de manera que { $equation } a cada instant; derivant, amb els radis constants, { $derived } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si, de manera que { $equation } a cada instant; derivant, amb els radis constants, { $derived } (amb { $radii }):
 drive-relation_a = Derivant, amb els radis constants: { $equation } (amb { $radii }):
 drive-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
@@ -684,6 +710,6 @@ check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la
         [vowel] d’{ $pin }
        *[other] de { $pin }
     } (la manovella { $o2 }{ $pin } perpendicular a { $o4 }{ $pin }), on cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Girant uniformement, { $crank } escombra 360° − 2θ = { $slow } en una carrera i 2θ = { $fast } en l’altra: raó de temps { $ratio }.
-driver-slide = Dada: la velocitat de lliscament a l’enllaç { $joint } és { $value }.
-driver-slide_accel = Dada: l’acceleració de lliscament a l’enllaç { $joint } és { $value }.
-centre-line-normal = la normal comuna al contacte { $point } de l’enllaç { $joint } (els sòlids llisquen l’un sobre l’altre: cap velocitat relativa segons ella)
+driver-slide = Dada: la velocitat de lliscament a l’enllaç prismàtic { $joint } és { $value }.
+driver-slide_accel = Dada: l’acceleració de lliscament a l’enllaç prismàtic { $joint } és { $value }.
+centre-line-normal = la normal comuna al contacte { $point } (els sòlids llisquen l’un sobre l’altre: cap velocitat relativa segons ella)

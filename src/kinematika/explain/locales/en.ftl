@@ -22,7 +22,6 @@ col-body = body
 col-points = points
 col-shapes = shapes
 col-joint = joint
-col-type = type
 col-bodies = bodies
 col-where = where
 col-omega = angular velocity
@@ -72,6 +71,13 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [md] the arrows
        *[other] the blue arrows
     } are the velocities of its points, to one scale, with their magnitudes; the bodies are numbered.
+fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
+        [3] , in isometric projection (the axes x, y, z at the lower right)
+       *[other] {""}
+    }; { $format ->
+        [md] the arrows
+       *[other] the blue arrows
+    } are the velocities of its points, to one scale, with their magnitudes.
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
         [md] , the terms head to tail
        *[other] : known terms in black{ $unknown ->
@@ -146,8 +152,8 @@ a-intro_relative = With the velocities known, every normal term is known; the ta
 a-intro_normal = With the velocities known, the normal terms are known; the tangential terms are the unknowns.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
-driver-joint = Given: the relative angular velocity at joint { $joint } is { $value }.
-driver-joint_accel = Given: the relative angular acceleration at joint { $joint } is { $value }.
+driver-joint = Given: the relative angular velocity at the pin { $joint } is { $value }.
+driver-joint_accel = Given: the relative angular acceleration at the pin { $joint } is { $value }.
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
 driver-whole = Given: { $sym } = { $value }, { $heading }.
@@ -157,25 +163,25 @@ heading-up = upwards
 heading-down = downwards
 heading-along = along { $along }
 input-revolute = { $body } turns about the fixed pivot { $point }: its points move on circles about { $point }.
-input-prismatic = { $body } slides without turning along the guide of joint { $joint }.
+input-prismatic = { $body } slides without turning along its guide.
 other-intro = These bodies are found together from the conditions of their joints:
-cond-revolute = joint { $joint }, revolute at { $point }: { $point } is one point of { $a } and of { $b }.
-cond-prismatic = joint { $joint }, prismatic: { $b } slides along { $a } without turning relative to it.
-cond-slot = joint { $joint }, pin { $point } in a slot: its velocity relative to the slotted body is along the slot.
-cond-slot_fixed = joint { $joint }: the point { $point } of { $b } slides along a line fixed to { $a }: its velocity is along that line.
-cond-wheel = joint { $joint }, wheel at { $point }: no sideways velocity relative to { $a }.
-cond-weld = joint { $joint }: { $a } and { $b } move as one body.
-cond-spherical = joint { $joint }, ball joint at { $point }: { $point } is one point of { $a } and of { $b }.
-cond-cylindrical = joint { $joint }, cylindrical: { $b } turns about and slides along the axis of { $a }.
-rolling-noslip = joint { $joint }: { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity.
-rolling-kept = joint { $joint }: the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
-path-circle = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
-path-line = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
-rolling-same = joint { $joint }: { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
-rolling-centre = joint { $joint }: { $b } rolls without slipping on { $a }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
-dir-guide = guide { $joint }
+cond-revolute = pin at { $point }: { $point } is one point of { $a } and of { $b }.
+cond-prismatic = prismatic pair: { $b } slides along { $a } without turning relative to it.
+cond-slot = pin { $point } in a slot: its velocity relative to the slotted body is along the slot.
+cond-slot_fixed = the point { $point } of { $b } slides along a line fixed to { $a }: its velocity is along that line.
+cond-wheel = wheel at { $point }: no sideways velocity relative to { $a }.
+cond-weld = { $a } and { $b } move as one body.
+cond-spherical = ball joint at { $point }: { $point } is one point of { $a } and of { $b }.
+cond-cylindrical = cylindrical pair: { $b } turns about and slides along the axis of { $a }.
+rolling-noslip = { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity.
+rolling-kept = the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
+path-circle = { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
+path-line = { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
+rolling-same = { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
+rolling-centre = { $b } rolls without slipping on { $a }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
+dir-guide = guide of { $holder }
 dir-normal = normal
-how-prismatic = (prismatic pair { $joint }: no relative rotation)
+how-prismatic = (prismatic pair: no relative rotation)
 carry-anchor = From the solution of the group: { $sym } = { $value }.
 sense-ccw = counter-clockwise
 sense-cw = clockwise
@@ -183,12 +189,13 @@ sec-rates_summary = Angular velocities and accelerations
 sec-rates_summary_v = Angular velocities
 sec-centres = Instant centres
 centres-intro = I with the numbers of two bodies ({ $example }: bodies 1 and 3) is the instant centre of their relative motion: the point where the relative velocity is zero.
+centres-intro_named = I with a body's name ({ $pair }) is the instant centre of { $body } relative to { $frame }, and I with two names joined by “rel” that of the first body relative to the second: the point where the relative velocity is zero.
 centre-line = { $centre }: { $why } { $where }
-centre-joint-revolute = the pin of joint { $joint },
-centre-joint-rolling = the contact point of joint { $joint } (rolling without slipping),
-centre-joint-gear = the contact of the pitch circles of gear { $joint },
-centre-joint-prismatic = joint { $joint } is prismatic: the relative motion is a translation and the centre is perpendicular to the guide,
-centre-joint-weld = joint { $joint } welds the two bodies:
+centre-joint-revolute = the pin { $joint },
+centre-joint-rolling = the contact point { $joint } (rolling without slipping),
+centre-joint-gear = the contact { $joint } of the pitch circles,
+centre-joint-prismatic = the pair is prismatic: the relative motion is a translation and the centre is perpendicular to the guide,
+centre-joint-weld = the two bodies are welded:
 centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines meet
 centre-velocities = the joints do not place it before the velocities are known; with them: the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
 centre-lines = it lies on { $first } and on { $second }; these lines meet
@@ -219,7 +226,7 @@ ask-icr = instant centre of { $body } relative to { $frame }
 ask-axis = screw axis of { $body } relative to { $frame }
 ask-pole = acceleration pole of { $body } relative to { $frame }
 ask-inflection = inflection circle and pole tangent of { $body } relative to { $frame }
-ask-contact = the three coincident points at the contact of { $joint }
+ask-contact = the three coincident points at the contact { $joint }
 ask-decompose = composition of the motion of { $point }, moving frame { $frame }
 ask-curvature = curvature of the path of { $point } relative to { $frame }
 ask-intrinsic = tangential and normal acceleration of { $point } relative to { $frame }
@@ -239,9 +246,9 @@ ans-pole_normal = pole normal (unit, from I to the inflection pole)
 ans-pole_velocity = velocity of I along the centrodes
 centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
-composition-slide = { $point } slides along the guide of joint { $joint }: its relative motion is along the guide, { $sym } = { $value }.
-composition-slide_seen = { $point } slides along the guide of joint { $joint }; { $body } does not turn relative to { $frame }, so all its points have the relative motion found above: { $sym } = { $seen } = { $value }.
-composition-pin = { $point } is the pin of joint { $joint }, a point of both bodies: it has no relative motion, { $sym } = 0.
+composition-slide = { $point } slides along its guide: its relative motion is along the guide, { $sym } = { $value }.
+composition-slide_seen = { $point } slides along its guide; { $body } does not turn relative to { $frame }, so all its points have the relative motion found above: { $sym } = { $seen } = { $value }.
+composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
 vehicle-line-velocity = the perpendicular to { $sym } at { $point }
@@ -258,7 +265,7 @@ loop-solve = The three components give the unknown rates:
 loop-solve_alpha = Differentiating in the fixed axes, the relative angular accelerations and the terms { $cross } add up to zero round the loop; the three components give the unknown { $rate }:
 dir-axis = axis { $joint }
 dir-wheel = wheel { $joint }
-how-weld = (weld { $joint }: one body)
+how-weld = (weld: one body)
 group-wheel_v = The wheel { $joint } does not slip sideways: the velocity of { $point } lies in the wheel's plane.
 group-wheel_a = The wheel { $joint } does not slip sideways at any instant, and its plane turns with { $body }: the acceleration of { $point } is a tangential part in the plane and a normal part across it, { $w } × { $v }.
 how-translation = (it translates)
@@ -274,6 +281,16 @@ copy-same = { $body } is joined to the same bodies in the same way, with the sam
        *[other] velocity
     }:
 fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , with the lines they are found on (dash-dot: { $normals }).
+        }
+       *[other] , with the lines they are found on (dash-dot: lines through two centres{ $normals_n ->
+            [0] {""}
+           *[other] {" "}and { $normals }
+        }).
+    }
+fig-centres_named = The instant centres (rings, I with the bodies’ names) on the mechanism{ $kennedy ->
         [0] { $normals_n ->
             [0] .
            *[other] , with the lines they are found on (dash-dot: { $normals }).
@@ -325,22 +342,22 @@ shape-camshape = cam
 joint-contact = contact (higher pair)
 joint-curved_slot = pin in a curved slot
 joint-cam = cam and follower
-cond-contact = joint { $joint }, contact: { $a } and { $b } keep touching; they may slide along the common tangent.
-cond-curved_slot = joint { $joint }, pin { $point } in a curved slot: its velocity relative to the slotted body is along the slot's tangent.
-cond-cam = joint { $joint }, cam: the follower { $b } keeps touching the cam { $a }.
+cond-contact = contact: { $a } and { $b } keep touching; they may slide along the common tangent.
+cond-curved_slot = pin { $point } in a curved slot: its velocity relative to the slotted body is along the slot's tangent.
+cond-cam = cam: the follower { $b } keeps touching the cam { $a }.
 dir-tangent = tangent at { $point }
 dir-centre = towards the centre of curvature { $point }
-higher-intro = The higher pair { $joint } is written as the motion of { $point } along its path relative to { $holder } (a slot along the tangent, curved with radius { $radius }): the relative acceleration has a normal part v²/ρ towards the path's centre of curvature.
-higher-straight = The higher pair { $joint } is written as the motion of { $point } along a straight path relative to { $holder } (a slot along the tangent).
-centre-weld = joint { $joint } welds { $body } to { $other }: they are one body, so the centre is that of { $other }, { $same },
+higher-intro = The higher pair is written as the motion of { $point } along its path relative to { $holder } (a slot along the tangent, curved with radius { $radius }): the relative acceleration has a normal part v²/ρ towards the path's centre of curvature.
+higher-straight = The higher pair is written as the motion of { $point } along a straight path relative to { $holder } (a slot along the tangent).
+centre-weld = { $body } is welded to { $other }: they are one body, so the centre is that of { $other }, { $same },
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
 centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
-centre-line-guide = the perpendicular to the guide of joint { $joint } through { $pivot } (the point of { $b } on it slides along the guide relative to { $body }, and { $body } carries it about { $pivot } along the guide too: its velocity is along the guide)
+centre-line-guide = the perpendicular to the guide through { $pivot } (the point of { $b } on it slides along the guide relative to { $body }, and { $body } carries it about { $pivot } along the guide too: its velocity is along the guide)
 centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
 centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
-centre-line-slot = the normal at { $point } to the slot of joint { $joint } (relative to the slotted body, { $point } can only move along the slot)
-centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides (joint { $joint })
+centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
+centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
 centre-field = the joints do not place it before the velocities are known; with them, it lies on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
@@ -350,12 +367,12 @@ how-centre_infinity = (its instant centre { $centre } is at infinity: it transla
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both run on the line { $line } at every instant: it slides along it and does not turn)
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
-centre-site_i = The instant centre { $centre } of { $body } relative to { $frame }, placed above, has no velocity: { $sym } = 0.
+centre-site_i = The instant centre { $centre } ≡ { $point } of { $body } relative to { $frame }, placed above, has no velocity: { $sym } = 0.
 sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
-geom-bar = { $geom }, the geometric contact point of joint { $joint }, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always at the same fraction of it, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
-geom-foot = { $geom }, the geometric contact point of joint { $joint }, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
-contact-intro = At the contact { $point } of joint { $joint } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
+geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always at the same fraction of it, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
+geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
+contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.
 contact-fixed = { $sym }: { $point } as a point of { $body }, which is fixed, does not move: { $sym } = 0.
 fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point{ $format ->
@@ -375,21 +392,21 @@ fig-step_a = Acceleration polygon of this step, to scale: from the pole o, the a
 col-point = point
 col-what = what it is
 what-centre = centre of { $body }
-what-joint = joint { $joint }, { $kind }, between { $a } and { $b }
-what-touching = the point of { $body } where it touches { $other } (joint { $joint })
-what-contact = contact point of joint { $joint } ({ $kind }), between { $a } and { $b }
+what-joint = { $kind } between { $a } and { $b }
+what-touching = the point of { $body } where it touches { $other }
+what-contact = contact point ({ $kind }) between { $a } and { $b }
 what-body = a point of { $bodies }
 note-text = Note: { $text }
 sec-checks = Checks
 check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } carries), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.
 check-belt = Seen from { $holder }, which carries both axles, { $line } does not slip on { $a } nor on { $b }: { $equation }, so { $ratio }; with the angular velocities found above, { $values }: they agree.
 how-translates = (it translates relative to { $body })
-pair-relation_v = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other (joint { $joint }), so { $equation } (with { $radii }):
-pair-relation = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other (joint { $joint }), so { $equation } at every instant; differentiating, with the radii constant, { $derived } (with { $radii }):
+pair-relation_v = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation } (with { $radii }):
+pair-relation = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation } at every instant; differentiating, with the radii constant, { $derived } (with { $radii }):
 drive-relation_a = Differentiating, with the radii constant: { $equation } (with { $radii }):
 drive-relation = Seen from { $holder }, which carries both axles, the axles are fixed and { $line } translates: it does not slip on { $a } nor on { $b }, so both move it at one speed, { $equation } (with { $radii }):
 check-train = The train’s ratio is the product of its stages’: { $ratio }; with the angular velocities found above, the ratio is { $value }.
 check-quick = Time ratio of the quick return: { $lever } is at an end of its swing when the slot is tangent to the circle of { $pin } (the crank { $o2 }{ $pin } perpendicular to { $o4 }{ $pin }), where cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Turning steadily, { $crank } sweeps 360° − 2θ = { $slow } in one stroke and 2θ = { $fast } in the other: time ratio { $ratio }.
-driver-slide = Given: the sliding velocity at joint { $joint } is { $value }.
-driver-slide_accel = Given: the sliding acceleration at joint { $joint } is { $value }.
-centre-line-normal = the common normal at the contact { $point } of joint { $joint } (the bodies slide on each other there: no relative velocity along it)
+driver-slide = Given: the sliding velocity in the prismatic pair { $joint } is { $value }.
+driver-slide_accel = Given: the sliding acceleration in the prismatic pair { $joint } is { $value }.
+centre-line-normal = the common normal at the contact { $point } (the bodies slide on each other there: no relative velocity along it)

@@ -22,7 +22,6 @@ col-body = sólido
 col-points = puntos
 col-shapes = formas
 col-joint = par
-col-type = tipo
 col-bodies = sólidos
 col-where = dónde
 col-omega = velocidad angular
@@ -69,6 +68,13 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [md] las flechas
        *[other] las flechas azules
     } son las velocidades de sus puntos, a una misma escala, con sus módulos; los sólidos están numerados.
+fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
+        [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
+       *[other] {""}
+    }; { $format ->
+        [md] las flechas
+       *[other] las flechas azules
+    } son las velocidades de sus puntos, a una misma escala, con sus módulos.
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
         [md] , los términos uno tras otro
        *[other] : en negro los términos conocidos{ $unknown ->
@@ -143,8 +149,8 @@ a-intro_relative = Conocidas las velocidades, todos los términos normales son c
 a-intro_normal = Conocidas las velocidades, los términos normales son conocidos; las incógnitas son los términos tangenciales.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
-driver-joint = Dato: la velocidad angular relativa en el par { $joint } es { $value }.
-driver-joint_accel = Dato: la aceleración angular relativa en el par { $joint } es { $value }.
+driver-joint = Dato: la velocidad angular relativa en la articulación { $joint } es { $value }.
+driver-joint_accel = Dato: la aceleración angular relativa en la articulación { $joint } es { $value }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
 driver-whole = Dato: { $sym } = { $value }, { $heading }.
@@ -160,46 +166,46 @@ input-revolute = { $body } { COUNT($body) ->
 input-prismatic = { $body } { COUNT($body) ->
         [many] se trasladan
        *[one] se traslada
-    } sin girar a lo largo de la guía del par { $joint }.
+    } sin girar a lo largo de su guía.
 other-intro = Estos sólidos se hallan a la vez a partir de las condiciones de sus pares:
-cond-revolute = par { $joint }, de rotación en { $point }: { $point } es un punto de { $a } y de { $b }.
-cond-prismatic = par { $joint }, prismático: { $b } { COUNT($b) ->
+cond-revolute = par de rotación en { $point }: { $point } es un punto de { $a } y de { $b }.
+cond-prismatic = par prismático: { $b } { COUNT($b) ->
         [many] se deslizan
        *[one] se desliza
     } sobre { $a } sin girar respecto de él.
-cond-slot = par { $joint }, pasador { $point } en ranura: su velocidad relativa al sólido ranurado sigue la ranura.
-cond-slot_fixed = par { $joint }: el punto { $point } de { $b } desliza a lo largo de una recta fija a { $a }: su velocidad sigue esa recta.
-cond-wheel = par { $joint }, rueda en { $point }: sin velocidad lateral respecto de { $a }.
-cond-weld = par { $joint }: { $a } y { $b } se mueven como un solo sólido.
-cond-spherical = par { $joint }, esférico en { $point }: { $point } es un punto de { $a } y de { $b }.
-cond-cylindrical = par { $joint }, cilíndrico: { $b } { COUNT($b) ->
+cond-slot = pasador { $point } en ranura: su velocidad relativa al sólido ranurado sigue la ranura.
+cond-slot_fixed = el punto { $point } de { $b } desliza a lo largo de una recta fija a { $a }: su velocidad sigue esa recta.
+cond-wheel = rueda en { $point }: sin velocidad lateral respecto de { $a }.
+cond-weld = { $a } y { $b } se mueven como un solo sólido.
+cond-spherical = par esférico en { $point }: { $point } es un punto de { $a } y de { $b }.
+cond-cylindrical = par cilíndrico: { $b } { COUNT($b) ->
         [many] giran
        *[one] gira
     } alrededor del eje de { $a } y se desliza a lo largo de él.
-rolling-noslip = par { $joint }: { $b } { COUNT($b) ->
+rolling-noslip = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
-rolling-kept = par { $joint }: el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
-path-circle = par { $joint }: { $b } { COUNT($b) ->
+rolling-kept = el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
+path-circle = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vs }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
-path-line = par { $joint }: { $b } { COUNT($b) ->
+path-line = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
-rolling-same = par { $joint }: { $b } { COUNT($b) ->
+rolling-same = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
-rolling-centre = par { $joint }: { $b } { COUNT($b) ->
+rolling-centre = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
     } sin deslizar sobre { $a }, que no se mueve: el punto { $point } de { $b } en el contacto no tiene velocidad, { $sym } = 0, así que es el CIR de { $b }.
-dir-guide = guía { $joint }
+dir-guide = guía de { $holder }
 dir-normal = normal
-how-prismatic = (par prismático { $joint }: sin rotación relativa)
+how-prismatic = (par prismático: sin rotación relativa)
 carry-anchor = De la resolución del grupo: { $sym } = { $value }.
 sense-ccw = antihorario
 sense-cw = horario
@@ -207,12 +213,13 @@ sec-rates_summary = Velocidades y aceleraciones angulares
 sec-rates_summary_v = Velocidades angulares
 sec-centres = Centros instantáneos de rotación (CIR)
 centres-intro = I con los números de dos sólidos ({ $example }: sólidos 1 y 3) es el CIR de su movimiento relativo: el punto donde la velocidad relativa es nula.
+centres-intro_named = I con el nombre de un sólido ({ $pair }) es el CIR de { $body } respecto de { $frame }, e I con dos nombres unidos por «rel», el del primero respecto del segundo: el punto donde la velocidad relativa es nula.
 centre-line = { $centre }: { $why } { $where }
-centre-joint-revolute = el eje del par { $joint },
-centre-joint-rolling = el punto de contacto del par { $joint } (rodadura sin deslizamiento),
-centre-joint-gear = el contacto de las circunferencias primitivas del engranaje { $joint },
-centre-joint-prismatic = el par { $joint } es prismático: el movimiento relativo es una traslación y el CIR está en la perpendicular a la guía,
-centre-joint-weld = el par { $joint } une rígidamente los dos sólidos:
+centre-joint-revolute = el eje de la articulación { $joint },
+centre-joint-rolling = el punto de contacto { $joint } (rodadura sin deslizamiento),
+centre-joint-gear = el contacto { $joint } de las circunferencias primitivas,
+centre-joint-prismatic = el par es prismático: el movimiento relativo es una traslación y el CIR está en la perpendicular a la guía,
+centre-joint-weld = los dos sólidos están unidos rígidamente:
 centre-kennedy = por Aronhold–Kennedy está en la recta que pasa por { $l1 } (tercer sólido { $k1 }) y en la recta que pasa por { $l2 } (tercer sólido { $k2 }); estas rectas se cortan
 centre-velocities = los pares no lo sitúan antes de conocer las velocidades; con ellas: las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
 centre-lines = está en { $first } y en { $second }; estas rectas se cortan
@@ -246,7 +253,7 @@ ask-icr = CIR de { $body } respecto de { $frame }
 ask-axis = eje instantáneo de rotación y deslizamiento de { $body } respecto de { $frame }
 ask-pole = polo de aceleraciones de { $body } respecto de { $frame }
 ask-inflection = circunferencia de inflexiones y tangente polar de { $body } respecto de { $frame }
-ask-contact = los tres puntos coincidentes en el contacto del par { $joint }
+ask-contact = los tres puntos coincidentes en el contacto { $joint }
 ask-decompose = composición del movimiento de { $point }, referencia móvil { $frame }
 ask-curvature = curvatura de la trayectoria de { $point } respecto de { $frame }
 ask-intrinsic = aceleración tangencial y normal de { $point } respecto de { $frame }
@@ -266,9 +273,9 @@ ans-pole_normal = normal polar (unitaria, de I al polo de inflexiones)
 ans-pole_velocity = velocidad de I a lo largo de la base y la ruleta
 centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
-composition-slide = { $point } desliza a lo largo de la guía del par { $joint }: su movimiento relativo sigue la guía, { $sym } = { $value }.
-composition-slide_seen = { $point } desliza a lo largo de la guía del par { $joint }; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado arriba: { $sym } = { $seen } = { $value }.
-composition-pin = { $point } es el pasador del par { $joint }, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
+composition-slide = { $point } desliza a lo largo de su guía: su movimiento relativo sigue la guía, { $sym } = { $value }.
+composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado arriba: { $sym } = { $seen } = { $value }.
+composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)
 vehicle-line-velocity = la perpendicular a { $sym } por el punto { $point }
@@ -285,7 +292,7 @@ loop-solve = Las tres componentes dan las velocidades desconocidas:
 loop-solve_alpha = Derivando en los ejes fijos, las aceleraciones angulares relativas y los términos { $cross } suman cero a lo largo del lazo; las tres componentes dan las { $rate } desconocidas:
 dir-axis = eje { $joint }
 dir-wheel = rueda { $joint }
-how-weld = (unión rígida { $joint }: un solo sólido)
+how-weld = (unión rígida: un solo sólido)
 group-wheel_v = La rueda { $joint } no desliza lateralmente: la velocidad de { $point } está en el plano de la rueda.
 group-wheel_a = La rueda { $joint } no desliza lateralmente en ningún instante y su plano gira con { $body }: la aceleración de { $point } tiene una parte tangencial en el plano y una normal perpendicular a él, { $w } × { $v }.
 how-translation = (se traslada)
@@ -301,6 +308,16 @@ copy-same = { $body } tiene las mismas uniones, con los mismos sólidos, y el mi
        *[other] velocidad angular
     }:
 fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , con las rectas en que se hallan (trazo y punto: { $normals }).
+        }
+       *[other] , con las rectas en que se hallan (trazo y punto: rectas que pasan por dos centros{ $normals_n ->
+            [0] {""}
+           *[other] {" "}y { $normals }
+        }).
+    }
+fig-centres_named = Los centros instantáneos (anillos, I con los nombres de los sólidos) sobre el mecanismo{ $kennedy ->
         [0] { $normals_n ->
             [0] .
            *[other] , con las rectas en que se hallan (trazo y punto: { $normals }).
@@ -352,14 +369,14 @@ shape-camshape = leva
 joint-contact = contacto (par superior)
 joint-curved_slot = pasador en ranura curva
 joint-cam = leva y seguidor
-cond-contact = par { $joint }, contacto: { $a } y { $b } siguen en contacto; pueden deslizar según la tangente común.
-cond-curved_slot = par { $joint }, pasador { $point } en ranura curva: su velocidad relativa al sólido ranurado sigue la tangente de la ranura.
-cond-cam = par { $joint }, leva: el seguidor { $b } sigue en contacto con la leva { $a }.
+cond-contact = contacto: { $a } y { $b } siguen en contacto; pueden deslizar según la tangente común.
+cond-curved_slot = pasador { $point } en ranura curva: su velocidad relativa al sólido ranurado sigue la tangente de la ranura.
+cond-cam = leva: el seguidor { $b } sigue en contacto con la leva { $a }.
 dir-tangent = tangente en { $point }
 dir-centre = hacia el centro de curvatura { $point }
-higher-intro = El par superior { $joint } se escribe como el movimiento de { $point } por su trayectoria relativa a { $holder } (una ranura según la tangente, curva de radio { $radius }): la aceleración relativa tiene una parte normal v²/ρ hacia el centro de curvatura de la trayectoria.
-higher-straight = El par superior { $joint } se escribe como el movimiento de { $point } por una trayectoria recta relativa a { $holder } (una ranura según la tangente).
-centre-weld = el par { $joint } une rígidamente { $body } y { $other }: son un solo sólido, así que el CIR es el de { $other }, { $same },
+higher-intro = El par superior se escribe como el movimiento de { $point } por su trayectoria relativa a { $holder } (una ranura según la tangente, curva de radio { $radius }): la aceleración relativa tiene una parte normal v²/ρ hacia el centro de curvatura de la trayectoria.
+higher-straight = El par superior se escribe como el movimiento de { $point } por una trayectoria recta relativa a { $holder } (una ranura según la tangente).
+centre-weld = { $body } y { $other } están unidos rígidamente: son un solo sólido, así que el CIR es el de { $other }, { $same },
 centre-line-kennedy = la recta que pasa por { $l } (Aronhold–Kennedy, tercer sólido { $k })
 centre-line-moves = la perpendicular a { $v } por { $point } ({ $point } se mueve con { $body }, que { COUNT($body) ->
         [many] giran
@@ -369,11 +386,11 @@ centre-line-moves_still = la perpendicular a { $v } por { $point } ({ $point } s
         [many] trasladan
        *[one] traslada
     })
-centre-line-guide = la perpendicular a la guía del par { $joint } por { $pivot } (el punto de { $b } que está en ella desliza a lo largo de la guía respecto de { $body }, y { $body } lo arrastra alrededor de { $pivot } también según la guía: su velocidad sigue la guía)
+centre-line-guide = la perpendicular a la guía por { $pivot } (el punto de { $b } que está en ella desliza a lo largo de la guía respecto de { $body }, y { $body } lo arrastra alrededor de { $pivot } también según la guía: su velocidad sigue la guía)
 centre-carried-between = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q } (pasa por los puntos alrededor de los cuales giran), así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q } (pasa por los puntos alrededor de los cuales giran), así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
-centre-line-slot = la normal en { $point } a la ranura del par { $joint } (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
-centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza (par { $joint })
+centre-line-slot = la normal en { $point } a la ranura (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
+centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
 centre-field = los pares no lo sitúan antes de conocer las velocidades; con ellas, está en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
 centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
@@ -383,12 +400,12 @@ how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)
 how-glides = ({ $p } y { $q } recorren en todo instante la recta { $line }: desliza a lo largo de ella y no gira)
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
-centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
+centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto
 geom-rule = La regla de todo contacto de rodadura: la condición de no deslizamiento se cumple en cada instante en el punto geométrico de contacto (aquí { $geom }), que se mueve; derivándola a lo largo de él se obtiene { $rule }: las componentes tangenciales de las dos aceleraciones son iguales y las normales difieren en este término, según la normal común. Hace falta la velocidad del punto geométrico:
-geom-bar = { $geom }, el punto geométrico de contacto del par { $joint }, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, en la misma fracción de ella, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:
-geom-foot = { $geom }, el punto geométrico de contacto del par { $joint }, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
-contact-intro = En el contacto { $point } del par { $joint } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
+geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, en la misma fracción de ella, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:
+geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
+contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
 contact-fixed = { $sym }: { $point } como punto de { $body }, que es fijo, no se mueve: { $sym } = 0.
 fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto{ $format ->
@@ -408,21 +425,21 @@ fig-step_a = Polígono de aceleraciones de este paso, a escala: desde el polo o,
 col-point = punto
 col-what = qué es
 what-centre = centro de { $body }
-what-joint = par { $joint }, { $kind }, entre { $a } y { $b }
-what-touching = el punto de { $body } donde toca { $other } (par { $joint })
-what-contact = punto de contacto del par { $joint } ({ $kind }), entre { $a } y { $b }
+what-joint = { $kind }, entre { $a } y { $b }
+what-touching = el punto de { $body } donde toca { $other }
+what-contact = punto de contacto ({ $kind }), entre { $a } y { $b }
 what-body = un punto de { $bodies }
 note-text = Nota: { $text }
 sec-checks = Comprobaciones
 check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes lleva { $carrier }), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
 check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas, { $values }: coinciden.
 how-translates = (se traslada respecto de { $body })
-pair-relation_v = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí (par { $joint }), de modo que { $equation } (con { $radii }):
-pair-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí (par { $joint }), de modo que { $equation } en todo instante; derivando, con los radios constantes, { $derived } (con { $radii }):
+pair-relation_v = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí, de modo que { $equation } (con { $radii }):
+pair-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí, de modo que { $equation } en todo instante; derivando, con los radios constantes, { $derived } (con { $radii }):
 drive-relation_a = Derivando, con los radios constantes: { $equation } (con { $radii }):
 drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos y { $line } se traslada: no desliza sobre { $a } ni sobre { $b }, así que sus periferias tienen la misma velocidad, { $equation } (con { $radii }):
 check-train = La relación de la transmisión es el producto de las de sus etapas: { $ratio }; con las velocidades angulares halladas, la relación vale { $value }.
 check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extremo de su oscilación cuando la ranura es tangente a la circunferencia de { $pin } (la manivela { $o2 }{ $pin } perpendicular a { $o4 }{ $pin }), donde cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Girando uniformemente, { $crank } barre 360° − 2θ = { $slow } en una carrera y 2θ = { $fast } en la otra: razón de tiempos { $ratio }.
-driver-slide = Dato: la velocidad de deslizamiento en el par { $joint } es { $value }.
-driver-slide_accel = Dato: la aceleración de deslizamiento en el par { $joint } es { $value }.
-centre-line-normal = la normal común en el contacto { $point } del par { $joint } (los sólidos deslizan uno sobre otro: ninguna velocidad relativa según ella)
+driver-slide = Dato: la velocidad de deslizamiento en el par prismático { $joint } es { $value }.
+driver-slide_accel = Dato: la aceleración de deslizamiento en el par prismático { $joint } es { $value }.
+centre-line-normal = la normal común en el contacto { $point } (los sólidos deslizan uno sobre otro: ninguna velocidad relativa según ella)

@@ -22,7 +22,6 @@ col-body = solidoa
 col-points = puntuak
 col-shapes = formak
 col-joint = lotura
-col-type = mota
 col-bodies = solidoak
 col-where = non
 col-omega = abiadura angeluarra
@@ -69,6 +68,13 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [md] geziak
        *[other] gezi urdinak
     } haren puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
+fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
+        [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
+       *[other] {""}
+    }; { $format ->
+        [md] geziak
+       *[other] gezi urdinak
+    } haren puntuen abiadurak dira, eskala berean, beren moduluekin.
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
         [md] , terminoak bata bestearen ondoren
        *[other] : beltzez termino ezagunak{ $unknown ->
@@ -160,25 +166,25 @@ heading-up = gorantz
 heading-down = beherantz
 heading-along = { $along } norabidean
 input-revolute = { $body } { $point } puntu finkoaren inguruan biratzen da: haren puntuek { $point } zentrodun zirkunferentziak deskribatzen dituzte.
-input-prismatic = { $body } biratu gabe traslatzen da { $joint } loturaren gidan zehar.
+input-prismatic = { $body } biratu gabe traslatzen da bere gidan zehar.
 other-intro = Solido hauek batera aurkitzen dira beren loturen baldintzetatik:
-cond-revolute = { $joint } lotura, giltzadura { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
-cond-prismatic = { $joint } lotura, prismatikoa: { $b } solidoa { $a } solidoaren gainean irristatzen da, harekiko biratu gabe.
-cond-slot = { $joint } lotura, { $point } ziria arteka batean: artekadun solidoarekiko abiadura artekaren norabidean dago.
-cond-slot_fixed = { $joint } lotura: { $b } solidoaren { $point } puntua { $a } solidoari lotutako zuzen batean zehar irristatzen da: haren abiadura zuzen horren norabidean dago.
-cond-wheel = { $joint } lotura, gurpila { $point } puntuan: ez dago alboko abiadurarik { $a } solidoarekiko.
-cond-weld = { $joint } lotura: { $a } eta { $b } solido bakar bat bezala mugitzen dira.
-cond-spherical = { $joint } lotura, esferikoa { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
-cond-cylindrical = { $joint } lotura, zilindrikoa: { $b } solidoa { $a } solidoaren ardatzaren inguruan biratzen eta haren luzeran irristatzen da.
-rolling-noslip = { $joint } lotura: { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute.
-rolling-kept = { $joint } lotura: kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak.
-path-circle = { $joint } lotura: { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: { $o } zentroko eta { $radius } erradioko zirkunferentzia deskribatzen du; beraz, { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), haren osagai tangentziala { $al } × { $arm } da.
-path-line = { $joint } lotura: { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: zuzen bat deskribatzen du, azelerazio normalik gabe; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), { $ac } = { $al } × { $arm }.
-rolling-same = { $joint } lotura: { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute, { $sym } = { $other }.
-rolling-centre = { $joint } lotura: { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe, eta { $a } solidoa ez da mugitzen: kontaktuko { $point } puntuak, { $b } solidoarenak, ez du abiadurarik, { $sym } = 0; beraz, { $b } solidoaren biraketa-zentro instantaneoa da.
-dir-guide = { $joint } gida
+cond-revolute = giltzadura { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
+cond-prismatic = lotura prismatikoa: { $b } solidoa { $a } solidoaren gainean irristatzen da, harekiko biratu gabe.
+cond-slot = { $point } ziria arteka batean: artekadun solidoarekiko abiadura artekaren norabidean dago.
+cond-slot_fixed = { $b } solidoaren { $point } puntua { $a } solidoari lotutako zuzen batean zehar irristatzen da: haren abiadura zuzen horren norabidean dago.
+cond-wheel = gurpila { $point } puntuan: ez dago alboko abiadurarik { $a } solidoarekiko.
+cond-weld = { $a } eta { $b } solido bakar bat bezala mugitzen dira.
+cond-spherical = lotura esferikoa { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
+cond-cylindrical = lotura zilindrikoa: { $b } solidoa { $a } solidoaren ardatzaren inguruan biratzen eta haren luzeran irristatzen da.
+rolling-noslip = { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute.
+rolling-kept = kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak.
+path-circle = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: { $o } zentroko eta { $radius } erradioko zirkunferentzia deskribatzen du; beraz, { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), haren osagai tangentziala { $al } × { $arm } da.
+path-line = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: zuzen bat deskribatzen du, azelerazio normalik gabe; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), { $ac } = { $al } × { $arm }.
+rolling-same = { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute, { $sym } = { $other }.
+rolling-centre = { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe, eta { $a } solidoa ez da mugitzen: kontaktuko { $point } puntuak, { $b } solidoarenak, ez du abiadurarik, { $sym } = 0; beraz, { $b } solidoaren biraketa-zentro instantaneoa da.
+dir-guide = { $holder } solidoaren gida
 dir-normal = normala
-how-prismatic = ({ $joint } lotura prismatikoa: biraketa erlatiborik gabe)
+how-prismatic = (lotura prismatikoa: biraketa erlatiborik gabe)
 carry-anchor = Taldearen ebazpenetik: { $sym } = { $value }.
 sense-ccw = erlojuaren orratzen aurka
 sense-cw = erlojuaren orratzen noranzkoan
@@ -186,12 +192,13 @@ sec-rates_summary = Abiadura eta azelerazio angeluarrak
 sec-rates_summary_v = Abiadura angeluarrak
 sec-centres = Biraketa-zentro instantaneoak
 centres-intro = I ikurrak, bi solidoren zenbakiekin ({ $example }: 1 eta 3 solidoak), haien mugimendu erlatiboaren biraketa-zentro instantaneoa adierazten du: abiadura erlatiboa nulua den puntua.
+centres-intro_named = I ikurrak, solido baten izenarekin ({ $pair }), { $body } solidoaren biraketa-zentro instantaneoa adierazten du { $frame } solidoarekiko, eta «erl» hitzaz lotutako bi izenekin, lehen solidoarena bigarrenarekiko: abiadura erlatiboa nulua den puntua.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = { $joint } giltzaduraren ardatza,
-centre-joint-rolling = { $joint } loturaren kontaktu-puntua (irristatu gabeko errodadura),
-centre-joint-gear = { $joint } engranajearen zirkunferentzia primitiboen kontaktua,
-centre-joint-prismatic = { $joint } lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta zentroa gidaren perpendikularrean dago,
-centre-joint-weld = { $joint } loturak bi solidoak zurrunki lotzen ditu:
+centre-joint-rolling = { $joint } kontaktu-puntua (irristatu gabeko errodadura),
+centre-joint-gear = zirkunferentzia primitiboen { $joint } kontaktua,
+centre-joint-prismatic = lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta zentroa gidaren perpendikularrean dago,
+centre-joint-weld = bi solidoak zurrunki lotuta daude:
 centre-kennedy = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean dago ({ $k1 } hirugarren solidoa) eta { $l2 } zentroetatik pasatzen denean ({ $k2 } hirugarren solidoa); zuzen horiek ebakitzen dira
 centre-velocities = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin: { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
 centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek ebakitzen dira
@@ -222,7 +229,7 @@ ask-icr = { $body } solidoaren biraketa-zentro instantaneoa { $frame } solidoare
 ask-axis = { $body } solidoaren biraketa eta irristadura ardatz instantaneoa { $frame } solidoarekiko
 ask-pole = { $body } solidoaren azelerazio-poloa { $frame } solidoarekiko
 ask-inflection = { $body } solidoaren inflexio-zirkunferentzia eta polo-tangentea { $frame } solidoarekiko
-ask-contact = { $joint } loturaren kontaktuan bat datozen hiru puntuak
+ask-contact = { $joint } kontaktuan bat datozen hiru puntuak
 ask-decompose = { $point } puntuaren mugimenduaren konposizioa, { $frame } erreferentzia mugikorra
 ask-curvature = { $point } puntuaren ibilbidearen kurbadura { $frame } solidoarekiko
 ask-intrinsic = { $point } puntuaren azelerazio tangentziala eta normala { $frame } solidoarekiko
@@ -242,9 +249,9 @@ ans-pole_normal = polo-normala (unitarioa, I-tik inflexio-polora)
 ans-pole_velocity = I zentroaren abiadura polodietan zehar
 centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
-composition-slide = { $point } puntua { $joint } loturaren gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
-composition-slide_seen = { $point } puntua { $joint } loturaren gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek goian aurkitutako mugimendu erlatiboa dute: { $sym } = { $seen } = { $value }.
-composition-pin = { $point } puntua { $joint } loturaren ardatza da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
+composition-slide = { $point } puntua bere gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
+composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek goian aurkitutako mugimendu erlatiboa dute: { $sym } = { $seen } = { $value }.
+composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
 vehicle-line-velocity = { $sym } abiadurarekiko perpendikularra { $point } puntuan
@@ -261,7 +268,7 @@ loop-solve = Hiru osagaiek abiadura ezezagunak ematen dituzte:
 loop-solve_alpha = Ardatz finkoetan deribatuz, azelerazio angeluar erlatiboen eta { $cross } terminoen batura zero da begiztan; hiru osagaiek { $rate } ezezagunak ematen dituzte:
 dir-axis = { $joint } ardatza
 dir-wheel = { $joint } gurpila
-how-weld = ({ $joint } lotura zurruna: solido bakarra)
+how-weld = (lotura zurruna: solido bakarra)
 group-wheel_v = { $joint } gurpila ez da alboetara irristatzen: { $point } puntuaren abiadura gurpilaren planoan dago.
 group-wheel_a = { $joint } gurpila ez da inoiz alboetara irristatzen, eta haren planoa { $body } solidoarekin batera biratzen da: { $point } puntuaren azelerazioak zati tangentzial bat du planoan eta zati normal bat planoarekiko perpendikularra, { $w } × { $v }.
 how-translation = (traslatzen da)
@@ -277,6 +284,16 @@ copy-same = { $body } solido berberei lotuta dago, { $original } bezala eta erra
        *[other] abiadura angeluar
     } berarekin:
 fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean{ $kennedy ->
+        [0] { $normals_n ->
+            [0] .
+           *[other] , aurkitzeko zuzenekin (marra-puntua: { $normals }).
+        }
+       *[other] , aurkitzeko zuzenekin (marra-puntua: bi zentrotatik pasatzen diren zuzenak{ $normals_n ->
+            [0] {""}
+           *[other] {" "}eta { $normals }
+        }).
+    }
+fig-centres_named = Biraketa-zentro instantaneoak (eraztunak, I solidoen izenekin) mekanismoaren gainean{ $kennedy ->
         [0] { $normals_n ->
             [0] .
            *[other] , aurkitzeko zuzenekin (marra-puntua: { $normals }).
@@ -328,22 +345,22 @@ shape-camshape = espeka
 joint-contact = kontaktua (goi-mailako bikotea)
 joint-curved_slot = ziria arteka kurbatu batean
 joint-cam = espeka eta jarraitzailea
-cond-contact = { $joint } lotura, kontaktua: { $a } eta { $b } ukitzen jarraitzen dute; ukitzaile komunean irristatu daitezke.
-cond-curved_slot = { $joint } lotura, { $point } ziria arteka kurbatu batean: artekadun solidoarekiko abiadura artekaren ukitzailean dago.
-cond-cam = { $joint } lotura, espeka: { $b } jarraitzaileak { $a } espeka ukitzen jarraitzen du.
+cond-contact = kontaktua: { $a } eta { $b } ukitzen jarraitzen dute; ukitzaile komunean irristatu daitezke.
+cond-curved_slot = { $point } ziria arteka kurbatu batean: artekadun solidoarekiko abiadura artekaren ukitzailean dago.
+cond-cam = espeka: { $b } jarraitzaileak { $a } espeka ukitzen jarraitzen du.
 dir-tangent = ukitzailea { $point } puntuan
 dir-centre = { $point } kurbadura-zentrorantz
-higher-intro = { $joint } goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko bere ibilbidean ({ $radius } erradioko arteka kurbatua, ukitzailearen norabidean): azelerazio erlatiboak v²/ρ osagai normala du ibilbidearen kurbadura-zentrorantz.
-higher-straight = { $joint } goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko ibilbide zuzen batean (arteka bat ukitzailearen norabidean).
-centre-weld = { $joint } loturak { $body } eta { $other } zurrunki lotzen ditu: solido bakarra dira; beraz, zentroa { $other } solidoarena da, { $same },
+higher-intro = Goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko bere ibilbidean ({ $radius } erradioko arteka kurbatua, ukitzailearen norabidean): azelerazio erlatiboak v²/ρ osagai normala du ibilbidearen kurbadura-zentrorantz.
+higher-straight = Goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko ibilbide zuzen batean (arteka bat ukitzailearen norabidean).
+centre-weld = { $body } eta { $other } zurrunki lotuta daude: solido bakarra dira; beraz, zentroa { $other } solidoarena da, { $same },
 centre-line-kennedy = { $l } zentroetatik pasatzen den zuzena (Aronhold–Kennedy, { $k } hirugarren solidoa)
 centre-line-moves = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua { $body } solidoarekin mugitzen da, zeina { $pivot } puntuaren inguruan biratzen baita)
 centre-line-moves_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua { $body } solidoarekin mugitzen da, zeina traslatzen baita)
-centre-line-guide = { $pivot } puntuan { $joint } loturaren gidarekiko perpendikularra ({ $b } solidoak bertan duen puntua gidan zehar irristatzen da { $body } solidoarekiko, eta { $body } solidoak { $pivot } puntuaren inguruan eramaten du, hori ere gidaren norabidean: haren abiadura gidaren norabidean dago)
+centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra ({ $b } solidoak bertan duen puntua gidan zehar irristatzen da { $body } solidoarekiko, eta { $body } solidoak { $pivot } puntuaren inguruan eramaten du, hori ere gidaren norabidean: haren abiadura gidaren norabidean dago)
 centre-carried-between = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira (zuzen hori biratzen diren puntuetatik pasatzen da); beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
 centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira (zuzen hori biratzen diren puntuetatik pasatzen da); beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
-centre-line-slot = { $joint } loturaren artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
-centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala, zeinean zehar irristatzen baita ({ $joint } lotura)
+centre-line-slot = artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
+centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala, zeinean zehar irristatzen baita
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
 centre-field = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
@@ -353,12 +370,12 @@ how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago:
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiadura bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
 how-glides = ({ $p } eta { $q } puntuek { $line } zuzena ibiltzen dute une oro: haren luzeran irristatzen da eta ez da biratzen)
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
-centre-site_i = { $body } solidoaren { $centre } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
+centre-site_i = { $body } solidoaren { $centre } ≡ { $point } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
 geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
-geom-bar = { $geom }, { $joint } loturaren kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, zati berean, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
-geom-foot = { $geom }, { $joint } loturaren kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
-contact-intro = { $joint } loturaren { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
+geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, zati berean, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
+geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
+contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen, solidoa finkoa baita: { $sym } = 0.
 fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
@@ -378,9 +395,9 @@ fig-step_a = Urrats honetako azelerazioen poligonoa, eskalan: o polotik, puntu b
 col-point = puntua
 col-what = zer den
 what-centre = { $body } solidoaren zentroa
-what-joint = { $joint } lotura, { $kind }, { $a } eta { $b } solidoen artean
-what-touching = { $body } solidoak { $other } ukitzen duen puntua ({ $joint } lotura)
-what-contact = { $joint } loturaren ukipen-puntua ({ $kind }), { $a } eta { $b } solidoen artean
+what-joint = { $kind }, { $a } eta { $b } solidoen artean
+what-touching = { $body } solidoak { $other } ukitzen duen puntua
+what-contact = ukipen-puntua ({ $kind }), { $a } eta { $b } solidoen artean
 what-body = { $bodies } { $bodies_n ->
         [one] solidoaren
        *[other] solidoen
@@ -390,12 +407,12 @@ sec-checks = Egiaztapenak
 check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak { $carrier } solidoak daramatza); beraz, { $formula } = { $radii } = { $train }, { $r1 } eta { $r2 } izanik. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
 check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
 how-translates = ({ $body } solidoarekiko traslatzen da)
-pair-relation_v = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen ({ $joint } lotura); beraz, { $equation } ({ $radii } izanik):
-pair-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen ({ $joint } lotura); beraz, { $equation } une oro; deribatuz, erradioak konstanteak direnez, { $derived } ({ $radii } izanik):
+pair-relation_v = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen; beraz, { $equation } ({ $radii } izanik):
+pair-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen; beraz, { $equation } une oro; deribatuz, erradioak konstanteak direnez, { $derived } ({ $radii } izanik):
 drive-relation_a = Deribatuz, erradioak konstanteak direnez: { $equation } ({ $radii } izanik):
 drive-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira eta { $line } solidoa traslatzen da: ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean; beraz, bien periferiek abiadura bera dute, { $equation } ({ $radii } izanik):
 check-train = Transmisioaren erlazioa etapen erlazioen biderkadura da: { $ratio }; aurkitutako abiadura angeluarrekin, erlazioa { $value } da.
 check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulunkaren mutur batean dago artekak { $pin } puntuaren zirkunferentzia ukitzen duenean ({ $o2 }{ $pin } biradera { $o4 }{ $pin } zuzenarekiko perpendikularra), non cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Abiadura konstantean biratuz, { $crank } solidoak 360° − 2θ = { $slow } egiten ditu kurtsa batean eta 2θ = { $fast } bestean: denbora-erlazioa { $ratio }.
-driver-slide = Datua: { $joint } loturako irristatze-abiadura { $value } da.
-driver-slide_accel = Datua: { $joint } loturako irristatze-azelerazioa { $value } da.
-centre-line-normal = { $joint } loturaren { $point } kontaktuko normal komuna (solidoak elkarren gainean irristatzen dira: ez dago abiadura erlatiborik haren norabidean)
+driver-slide = Datua: { $joint } lotura prismatikoko irristatze-abiadura { $value } da.
+driver-slide_accel = Datua: { $joint } lotura prismatikoko irristatze-azelerazioa { $value } da.
+centre-line-normal = { $point } kontaktuko normal komuna (solidoak elkarren gainean irristatzen dira: ez dago abiadura erlatiborik haren norabidean)

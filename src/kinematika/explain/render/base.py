@@ -10,6 +10,7 @@ from babel.lists import format_list
 from ...numerals import DECIMAL, decimal_sign, separator, written
 from ...text import shown_lines
 
+from ...draw.names import centre_subscript
 from ...model.wording import ARTICLES, NO_ARTICLE, Wording, part_subscript, rate_key
 from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names,
@@ -45,6 +46,9 @@ def plain(x: Any) -> str:
     return ""
 
 UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "rate2": "rad/s²"}
+# the messages that explain the bodies' numbers, and their words where the bodies are named
+NAMED_KEYS = {"centres.intro": "centres.intro_named", "fig.centres": "fig.centres_named",
+              "fig.mechanism": "fig.mechanism_named"}
 BODY_SUBS = ("ω", "α", "I", "ω×ω")          # symbols whose subscript is made of bodies
 
 
@@ -113,6 +117,8 @@ class Renderer:
         catalogue's text is escaped and the variables' markup is not. A message that `lead`s a
         paragraph begins with a capital when its first word is the catalogue's (joint j3 … ->
         Joint j3 …), never when it is a symbol (v_Q, ω_2)."""
+        if m.key in NAMED_KEYS and self.named():          # no numbers to explain
+            m = Msg(NAMED_KEYS[m.key], m.args)
         rendered: list[str] = []
         values: list[Any] = []
         args: dict[str, Any] = {}
@@ -233,8 +239,15 @@ class Renderer:
         """A body's name in the reader's language (the model's `names`), else the model's."""
         if n.kind == "body":
             return self.wording.body(n.text, self.lang)
-        if n.kind == "joint":
-            return self.wording.joint(n.text, self.lang)
+        if n.kind == "joint":                            # the model's name, else its point or bodies
+            given = getattr(self.wording, "joints", {}).get(self.lang or "", {}).get(n.text)
+            place = (self.doc.joints or {}).get(n.text)
+            if given or place is None:
+                return self.wording.joint(n.text, self.lang)
+            if isinstance(place, tuple):
+                labels = self.labels()
+                return "–".join(labels.get(b, b) for b in place)
+            return place
         if n.kind == "point" and "∈" in n.text:          # O∈wheels as the symbols write it: O∈3
             return self.numbered(Sym("", n.text))
         if n.kind == "index":                            # a body's number in the structure's table
@@ -287,6 +300,12 @@ class Renderer:
             self._labels = self.wording.labels(order, self.lang)
         return self._labels
 
+    def named(self) -> bool:
+        """Whether the model names its bodies in this language (`draw.names.names_bodies`):
+        then the centres are written by the bodies' names (I_biela), as ω_biela, and neither
+        text nor figures number the bodies."""
+        return bool(self.lang and self.wording is not None and self.wording.bodies.get(self.lang))
+
     def numbers(self) -> dict[str, str]:
         """Each body as the instant centres (I_13) and the structure's table number it: the
         index the model's notation gives it, else its number."""
@@ -314,11 +333,10 @@ class Renderer:
             parts = s.sub.split(sep)
             if not all(p in nums for p in parts):
                 return s.sub
-            if s.base == "I":
-                numbers = self.numbers()
-                ks = sorted(parts, key=nums.get)
-                one = all(len(t) == 1 for t in numbers.values())
-                return ("" if one else ",").join(numbers[k] for k in ks)
+            if s.base == "I" and len(parts) == 2:           # the figures' rule: I_biela, or I_13
+                named = self.named()
+                return centre_subscript(parts[0], parts[1], nums, labels if named else self.numbers(), named,
+                                        part_subscript("sub.rel", self.lang))
             if sep == "/" and len(parts) == 2:
                 return self.relative(labels[parts[0]], labels[parts[1]])
             return sep.join(labels[p] for p in parts)
