@@ -163,7 +163,7 @@ def coincident_point(sol: Any, joint_id: str) -> Optional[str]:
     joint = next((j for j in model.joints if j.id == joint_id), None)
     geometry = sol.geometry(joint_id) if joint is not None else None
     contact = getattr(geometry, "contact", None)
-    if contact is None:
+    if joint is None or contact is None:          # no joint, no geometry: no contact
         return None
     try:
         where = [float(sol.inst.num(c)) for c in contact.point]
