@@ -240,6 +240,19 @@ rolling-noslip = enllaç { $joint }: { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
+rolling-glide = enllaç { $joint }: { $b } { COUNT($b) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre la vora { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    }. Des { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    }, el seu centre { $centre } manté la distància a la vora: es mou segons una recta paral·lela a la tangent a { $point }. Amb eixos a { $centre } que giren amb { $a }, el moviment de { $centre } és el d’arrossegament (el del punt { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    } que hi coincideix) més el relatiu, al llarg d’aquesta recta (i, en acceleracions, el terme de Coriolis).
 rolling-kept = enllaç { $joint }: el contacte es manté: a { $point } les acceleracions dels punts materials { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
