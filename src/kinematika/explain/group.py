@@ -193,15 +193,25 @@ class Planner:
         of N at A is a site, and crossing from it into the wheel adds the relative motion
         along that line (and Coriolis at accelerations), as across a guide: v_A = v_A∈N +
         v_A∈R/N. The wheel's own ω (α) then comes from the rolling conditions at the contact:
-        equal velocities, equal tangential accelerations."""
+        equal velocities, equal tangential accelerations. Taken where accelerations are
+        asked (at velocities the rolling conditions alone solve the pair; the accelerations
+        need the two rates one at a time, and their Coriolis term the relative velocity
+        written here), and for an edge that rolls on one wheel only: a strand or chain
+        between two wheels goes as the notes take it (`_tangents`, C5-1.5, C5-E.6)."""
+        from .needs import accelerations_asked
+
         ctx = self.ctx
+        if not ctx.planar or not accelerations_asked(ctx):
+            return
+        contacts = [ctx.sol.geometry(j.id).contact for j in ctx.model.joints if rolls(j)]
+        lines = [c.line_body for c in contacts if c is not None and c.kind == "circle-line"]
         for j in ctx.model.joints:
             contact = ctx.sol.geometry(j.id).contact if rolls(j) and by_centre_path(j) else None
-            if contact is None or contact.kind != "circle-line" or not ctx.planar:
+            if contact is None or contact.kind != "circle-line":
                 continue
             line = contact.line_body
             wheel = j.b if j.a == line else j.a
-            if ctx.fixed(line) or ctx.fixed(wheel):
+            if ctx.fixed(line) or ctx.fixed(wheel) or lines.count(line) > 1:
                 continue
             centre = path_centre(ctx, j, wheel)
             if centre is None or self.apart(centre, ctx.contact(j)) is None:
