@@ -118,8 +118,8 @@ pos-open = konfigurazio irekia: barrak ez dira gurutzatzen
 pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
-order-assur = Mekanismoa bere sarreretan eta Assur taldeetan (diadetan) deskonposatzen da; talde bakoitza jadanik ezagunak diren solidoetatik ebazten da:
-order-blocks = Mekanismoa ez da diadetan deskonposatzen biradera edo irristagailu eragileetatik abiatuta; talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da, ordena honetan:
+order-assur = Mekanismoa bere sarreretan (biradera eta irristagailu eragileak) eta diadetan deskonposatzen da; bakoitza jadanik ezagunak diren solidoetatik ebazten da:
+order-blocks = Solidoak ordena honetan aurkitzen dira, bakoitza jadanik ezagunak diren solidoetatik:
 order-item = { $n }. { $kind }: { $bodies }, { $known } { $known_n ->
         [one] solidotik
        *[other] solidoetatik
@@ -135,7 +135,7 @@ kind-RRP = RRP diada
 kind-RPR = RPR diada
 kind-PRP = PRP diada
 kind-other = batera ebatzitako taldea
-kind-copy = aurretik ebatzitako solido baten berdina
+kind-copy = modu berean
 step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
