@@ -104,6 +104,8 @@ class Bar:
         ctx, r = self.ctx, self.ctx.r(q, p)
         seg, back = segment(q, p), segment(p, q)
         name = pair_name(p, q)
+        if p == self.name:              # J^geom about C: not the material points' v_JC (one symbol, one value)
+            name = f"{name},geom"
         if level == "v":
             mag = Ann("?") if unknown else Ann("M", [self.sym, f"·{seg}"])
             return [Term(Sym("v", name), ctx.clean(ctx.space.cross(self.omega, r), "speed"), mag, Ann("perp", seg),

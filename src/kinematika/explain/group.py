@@ -39,8 +39,8 @@ from .order import jointed
 from .contacts import geometric_blocks
 from .drives import drive_blocks, pair_blocks
 from .given import whole_along
-from .kinds import (crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls, same_rate,
-                    slider, welds)
+from .kinds import (by_centre_path, crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls,
+                    same_rate, slider, welds)
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms
 
 MAX_TURNS = 3           # rotations along one route at most
@@ -157,6 +157,8 @@ class Planner:
         self._labels: dict[Site, str] = {}
         self.gliding: set[str] = set()              # bodies that translate: their turns add no term
         self.sites = {b: self._sites(b) for b in ctx.model.bodies}
+        self.glide: dict[str, tuple[str, str, str]] = {}    # joint -> (line body, wheel, centre)
+        self._glides_on_lines()
         for b in self.determined:
             self.full.update(self.label(s) for s in self.sites[b])
         if centres and level == "v":
@@ -174,7 +176,7 @@ class Planner:
         the notes' road to a_C (C5-1.7: "trajectòria circular de radi 3r"; C5-E.1, E.6)."""
         ctx, group = self.ctx, set(self.group)
         for j in ctx.model.joints:
-            contact = ctx.sol.geometry(j.id).contact if rolls(j) else None
+            contact = ctx.sol.geometry(j.id).contact if rolls(j) and by_centre_path(j) else None
             if contact is None:
                 continue
             for fixed, body in ((j.a, j.b), (j.b, j.a)):
@@ -183,6 +185,49 @@ class Planner:
                 centre = path_centre(ctx, j, body)
                 if centre is not None and Site(centre, body) in self.sites[body]:
                     self.centred[j.id] = (body, centre)
+
+    def _glides_on_lines(self) -> None:
+        """A wheel rolling on the straight edge of a moving body N (the slides' rolling pair,
+        4.4): seen from N, its centre A keeps its distance from the edge, so it runs along a
+        line parallel to it — the slides' axes at the wheel's centre turning with N. The point
+        of N at A is a site, and crossing from it into the wheel adds the relative motion
+        along that line (and Coriolis at accelerations), as across a guide: v_A = v_A∈N +
+        v_A∈R/N. The wheel's own ω (α) then comes from the rolling conditions at the contact:
+        equal velocities, equal tangential accelerations. Taken where accelerations are
+        asked (at velocities the rolling conditions alone solve the pair; the accelerations
+        need the two rates one at a time, and their Coriolis term the relative velocity
+        written here), and for an edge that rolls on one wheel only: a strand or chain
+        between two wheels goes as the notes take it (`_tangents`, C5-1.5, C5-E.6)."""
+        from .needs import accelerations_asked
+
+        ctx = self.ctx
+        if not ctx.planar or not accelerations_asked(ctx):
+            return
+        contacts = [ctx.sol.geometry(j.id).contact for j in ctx.model.joints if rolls(j)]
+        lines = [c.line_body for c in contacts if c is not None and c.kind == "circle-line"]
+        for j in ctx.model.joints:
+            contact = ctx.sol.geometry(j.id).contact if rolls(j) and by_centre_path(j) else None
+            if contact is None or contact.kind != "circle-line":
+                continue
+            line = contact.line_body
+            wheel = j.b if j.a == line else j.a
+            if ctx.fixed(line) or ctx.fixed(wheel) or lines.count(line) > 1:
+                continue
+            centre = path_centre(ctx, j, wheel)
+            if centre is None or self.apart(centre, ctx.contact(j)) is None:
+                continue
+            self.glide[j.id] = (line, wheel, centre)
+            site = Site(centre, line)
+            if site not in self.sites[line]:
+                self.sites[line].append(site)
+
+    def _glide_cross(self, seg: Seg) -> bool:
+        """Whether `seg` crosses from a moving edge into a wheel at the wheel's centre
+        (`_glides_on_lines`), not at the contact."""
+        if seg.kind != "cross" or seg.joint is None or seg.joint.id not in self.glide:
+            return False
+        line, wheel, centre = self.glide[seg.joint.id]
+        return seg.p == centre and seg.body == wheel
 
     def _glides(self) -> None:
         """At accelerations, a body pinned at the centres of two wheels that roll on fixed
@@ -324,7 +369,9 @@ class Planner:
             other = j.b if j.a == s.body else j.a
             if other in visited:
                 continue
-            if rolls(j):
+            if rolls(j) and j.id in self.glide and s.point == self.glide[j.id][2]:
+                ok = s.body == self.glide[j.id][0]              # from the edge into the wheel, at its centre
+            elif rolls(j):
                 ok = self.ctx.sol.geometry(j.id).contact is not None and self.ctx.contact(j) == s.point
             elif crossed_by_a_slot(j):
                 ok = j.at == s.point and j.a == s.body            # from the slotted body to the pin
@@ -344,9 +391,19 @@ class Planner:
             r = self.apart(seg.q, seg.p)
             return [] if r is None or seg.body in self.rates else [(-r[1], r[0])]
         j = seg.joint
+        if self._glide_cross(seg):
+            return [] if j.id in self.slides else [self._along_edge(j)]
+        if self.level == "a" and rolls(j) and j.id in self.glide:
+            n = self.ctx.num(tuple(self.ctx.sol.geometry(j.id).contact.normal))
+            return [n]                  # equal tangential components: the normal difference unknown
         if guided(j) and not self._driven(j) and j.id not in self.slides:
             return [self._dir(j)]
         return []
+
+    def _along_edge(self, j: Joint) -> tuple:
+        """The direction of the edge a wheel rolls on (across the common normal)."""
+        n = self.ctx.num(tuple(self.ctx.sol.geometry(j.id).contact.normal))
+        return (-n[1], n[0])
 
     def _site_cols(self, s: Site) -> list[tuple]:
         st = self.state(s)
@@ -387,8 +444,19 @@ class Planner:
                         out.setdefault(label, []).append(Route(start, route, t))
                     if self.state(nxt) == "none":
                         seen = visited + ((nxt.body,) if nxt.body not in visited else ())
-                        queue.append((nxt, seen, route, t, seg.kind))
+                        queue.append((nxt, seen, route, t, self._went(segs, seg)))
         return out
+
+    def _went(self, segs: tuple, seg: Seg) -> str:
+        """How a route arrived where it is, for what may follow: "centre" after it crossed into
+        a wheel on a fixed body and turned to its centre (`_centred`), where it may turn on
+        with the wheel — the notes' a_S on its path, then a_Q = a_S + a_QS^n + a_QS^t (one
+        body, one α: C5-1.3's support, from its centre to the bar's pin) — else the piece's
+        kind (a turn is not followed by another turn with the same body)."""
+        if seg.kind == "turn" and segs and segs[-1].kind == "cross" and segs[-1].joint is not None \
+                and self.centred.get(segs[-1].joint.id) == (seg.body, seg.p):
+            return "centre"
+        return seg.kind
 
     def paths(self) -> list[Path]:
         """The equations that can be written now: one route to a point, or two routes that
@@ -429,7 +497,8 @@ class Planner:
                 put(("start", self.label(r.start), k), b, c)
             for seg in r.segs:
                 for c in self._cols(seg):
-                    put(("w", seg.body) if seg.kind == "turn" else ("slide", seg.joint.id), b, c)
+                    put(("w", seg.body) if seg.kind == "turn" else
+                        ("slide" if not rolls(seg.joint) or self._glide_cross(seg) else "contact", seg.joint.id), b, c)
                     if seg.kind == "turn" and seg.body not in finds:
                         finds.append(seg.body)
         n = len(cols)
@@ -549,7 +618,7 @@ class Planner:
             self.full.update(self.label(Site(g.p, g.body)) for g in r.segs)
         self.rates.update(path.finds)
         self.slides.update(g.joint.id for r in path.routes for g in r.segs
-                           if g.joint is not None and guided(g.joint))
+                           if g.joint is not None and (guided(g.joint) or self._glide_cross(g)))
         self._use([g.joint.id for r in path.routes for g in r.segs if g.joint is not None] +
                   [spec["wheel"].id for _, spec in path.known.values() if spec.get("wheel") is not None])
         self._propagate()
@@ -770,10 +839,13 @@ class Writer:
                         out += self.path_said(seg.joint, seg.body, r.segs[i + 1].p)
                         contacts.append(ctx.contact(seg.joint))     # the sentence goes with the equation
                         continue
+                    if self.plan._glide_cross(seg):
+                        out += self.glide_said(seg.joint)
+                        continue
                     out += self.condition(seg.joint, Site(seg.p, seg.body))
                     if rolls(seg.joint):
                         contacts.append(ctx.contact(seg.joint))
-                    if lv == "a" and rolls(seg.joint):
+                    if lv == "a" and rolls(seg.joint) and seg.joint.id not in self.plan.glide:
                         out += geometric_blocks(ctx, seg.joint, ps.geometric, (seg.body, seg.frm))
         owned = list(out)
         for s in [r.start for r in p.routes] + [p.end]:
@@ -833,6 +905,18 @@ class Writer:
         found = self.plan.centred.get(seg.joint.id)
         nxt = r.segs[i + 1]
         return found is not None and found[0] == seg.body and nxt.kind == "turn" and nxt.p == found[1]
+
+    def glide_said(self, j: Joint) -> list:
+        """The sentence of a wheel's centre running along a moving edge (once per joint and
+        level): the slides' axes at the wheel's centre, turning with the edge's body."""
+        ps, ctx = self.ps, self.ctx
+        key = f"{j.id}:centre"
+        if key in ps.used:
+            return []
+        ps.used.add(key)
+        line, wheel, centre = self.plan.glide[j.id]
+        return [msg("rolling.glide", a=body_name(line), b=body_name(wheel),
+                    centre=point_name(centre), point=point_name(ctx.contact(j)))]
 
     def path_said(self, j: Joint, body: str, centre: str) -> list:
         """The sentence of a wheel's centre on its path (once per joint and level)."""
@@ -1001,6 +1085,12 @@ class Writer:
                 return []               # a body that slides along a line moves its points alike
             return rotation_terms(ctx, lv, seg.body, seg.q, seg.p, not known and seg.body not in p.rates)
         j = seg.joint
+        if self.plan._glide_cross(seg):
+            unknown = not known and j.id not in p.slides
+            tangent = msg("dir.tangent", point=point_name(ctx.contact(j)))
+            return slide_terms(ctx, lv, seg.frm, seg.body, seg.p, tangent, j.id, unknown)
+        if rolls(j) and j.id in self.plan.glide:    # equal tangential components, the normal unknown
+            return [contact_term(ctx, seg.p, seg.body, seg.frm, unknown=not known)] if lv == "a" else []
         if rolls(j):
             return [contact_term(ctx, seg.p, seg.body, seg.frm)] if lv == "a" else []
         if guided(j):

@@ -12,6 +12,16 @@ def rolls(j: Any) -> bool:
     return bool(j.kind.rolls)
 
 
+def by_centre_path(j: Any) -> bool:
+    """A rolling contact the notes explain through the circle's centre: the centre keeps its
+    distance from the other profile, so its path relative to that body is known (a line
+    parallel to a straight profile): a_C on its path when the profile is fixed (C5-1.7), the
+    slides' axes at the wheel's centre turning with the other body when it moves (4.4),
+    then equal tangential components at the contact — never the geometric contact point
+    (kept for the `contact` question, C5-1.8)."""
+    return bool(getattr(j.kind, "centre_path", False))
+
+
 def pins(j: Any) -> bool:
     """A pin: the two bodies share a point and turn about it."""
     return bool(j.kind.pins)

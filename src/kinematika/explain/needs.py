@@ -33,8 +33,41 @@ def prune(ctx: Ctx, doc: Document) -> None:
     """Drop the forward evaluations of the level sections that nothing needs."""
     if ctx.model.default_questions:
         return
+    kept = _snapshot(doc.sections)
+    unworked = _prune(ctx, doc, _asked_bodies(ctx))
+    halves = unworked.get("a", set()) - unworked.get("v", set())
+    if halves:                  # ω worked, α not: the table would show a hole — work α out too
+        _restore(kept)
+        unworked = _prune(ctx, doc, _asked_bodies(ctx) | halves)
+    _drop_rows(doc, unworked.get("v", set()), unworked.get("a", set()))
+
+
+def _snapshot(blocks: list) -> list:
+    """What pruning changes in a document's sections (their lists of blocks, their titles'
+    arguments), to put back (`_restore`): the sections stay the same objects, which the
+    builder still holds (it draws the polygons into them after pruning)."""
+    out: list = []
+    for b in blocks:
+        if isinstance(b, Section):
+            args = dict(b.title.args) if isinstance(b.title, Msg) else None
+            out.append((b, list(b.blocks), args))
+            out += _snapshot(b.blocks)
+    return out
+
+
+def _restore(snapshot: list) -> None:
+    for sec, blocks, args in snapshot:
+        sec.blocks = blocks
+        if args is not None:
+            sec.title.args = args
+
+
+def _prune(ctx: Ctx, doc: Document, bodies: set[str]) -> dict[str, set[str]]:
+    """One pass of `prune` keeping the rates of `bodies`: the bodies left unworked, by level.
+    A body whose ω the explanation works out has its α worked out too (when accelerations
+    are explained): the table of rates has no holes (C5-E.4's right wheel, C5-E.6's front
+    wheel)."""
     asked = _asked_points(ctx)
-    bodies = _asked_bodies(ctx)
     unworked: dict[str, set[str]] = {}
     for sec in reversed(doc.sections):       # the later first: what they drop, the earlier need not keep
         if sec.title.key in LEVELS:
@@ -44,7 +77,7 @@ def prune(ctx: Ctx, doc: Document) -> None:
             unworked[level] = _prune_section(sec, level, asked, used, terms, rates)
             _drop_unused_rest(sec)
             _untitle(sec, unworked[level])
-    _drop_rows(doc, unworked.get("v", set()), unworked.get("a", set()))
+    return unworked
 
 
 AT_REST = ("rolling.centre", "centre.site", "centre.site_i")

@@ -38,11 +38,22 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     if not steps:
         return sec
     order = Section(msg("sec.order"), level=3)
-    order.add(msg("order.assur" if steps and steps[0].source == "assur" else "order.blocks"))
+    order.add(msg("order.assur" if _dyads(steps) else "order.blocks"))
     for i, s in enumerate([s for s in steps if not all(ctx.fixed(b) for b in s.bodies)], 1):
         order.add(order_item(i, s))
     sec.add(order)
     return sec
+
+
+def _dyads(steps: list) -> bool:
+    """Whether the order is the slides' decomposition into inputs and dyads: decomposed so
+    and with a dyad among its steps. Otherwise the sentence names no decomposition (a wheel
+    alone, gears: the bodies in order, each from those known) — never how the program
+    failed to find dyads."""
+    return bool(steps) and steps[0].source == "assur" and any(s.kind in DYADS for s in steps)
+
+
+DYADS = ("RRR", "RRP", "RPR", "PRP")
 
 
 def order_item(n: int, step: Step) -> Msg:

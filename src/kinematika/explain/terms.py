@@ -117,11 +117,13 @@ def relative_name(point: str, body: str, relative_to: str) -> str:
     return f"{point}∈{body}/{relative_to}"
 
 
-def contact_term(ctx: Ctx, name: str, body: str, other: str) -> Term:
+def contact_term(ctx: Ctx, name: str, body: str, other: str, unknown: bool = False) -> Term:
     """a_J∈body − a_J∈other at a rolling contact without slip: along the common normal,
     ω_body/other × (v_J∈other − v_J^geom), with v_J^geom the velocity of the geometric contact
-    point (derived where the term is used: `contacts.geometric_blocks`)."""
+    point (derived where the term is used: `contacts.geometric_blocks`); `unknown`, the
+    slides' way (4.4): only the tangential components are equal, the normal difference is
+    one of the equation's two unknowns."""
+    how = [] if unknown else [omega_sym(body, other), " × (", Sym("v", f"{name}∈{other}"), " − ",
+                              Sym("v", name, "geom"), ")"]
     return Term(Sym("a", relative_name(name, body, other)), ctx.clean(ctx.acc(body, name, other), "accel"),
-                Ann("M"), Ann("para", Msg("dir.normal", {})),
-                [omega_sym(body, other), " × (", Sym("v", f"{name}∈{other}"), " − ", Sym("v", name, "geom"), ")"],
-                False, "contact")
+                Ann("?") if unknown else Ann("M"), Ann("para", Msg("dir.normal", {})), how, unknown, "contact")

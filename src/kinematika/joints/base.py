@@ -149,6 +149,9 @@ class JointKind(ABC):
     touches: ClassVar[bool] = False         # the bodies touch at a contact point (`contact` questions)
     rolls: ClassVar[bool] = False           # ... and roll there without slipping
     pitch: ClassVar[bool] = False           # its circles are pitch circles (gears: drawn dash-dot)
+    centre_path: ClassVar[bool] = False     # explained through the circle's centre, which keeps its
+                                            # distance from the other profile (the notes' route:
+                                            # C5-1.7, slides 4.4), not the geometric contact point
     knife_edge: ClassVar[bool] = False      # the point `at` of b moves only along `along`, fixed in b
                                             # (a vehicle's wheel: no slip sideways)
     velocity_only: ClassVar[tuple[int, ...]] = ()   # the dimensions in which its condition is on

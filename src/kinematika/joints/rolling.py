@@ -48,6 +48,7 @@ class Rolling(JointKind):
     condition = "v_J(b) − v_J(a) = 0 at the contact"
     touches = True
     rolls = True
+    centre_path = True                # a wheel's centre runs parallel to the profile it rolls on
     velocity_only = (3,)              # a disc on a plane: where it has rolled depends on the path
     centre = Centre.CONTACT
     fields = {"at": "optional", "internal": "optional"}

@@ -157,8 +157,8 @@ pos-open = la configuració oberta (les barres no es creuen)
 pos-crossed = la configuració creuada (les barres es creuen)
 
 sec-order = Ordre de resolució
-order-assur = El mecanisme es descompon en les seves entrades i grups d’Assur (díades); cada grup es resol a partir de sòlids ja coneguts:
-order-blocks = El mecanisme no es descompon en díades a partir de manovelles o corredores motores; cada grup es troba a partir dels sòlids ja coneguts, en aquest ordre:
+order-assur = El mecanisme es descompon en les seves entrades (manovelles i corredores motores) i díades; cadascuna es resol a partir de sòlids ja coneguts:
+order-blocks = Els sòlids es troben en aquest ordre, cadascun a partir de sòlids ja coneguts:
 order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
 order-item_group = { $n }. { $bodies }, a partir { $known }.
 order-from = { ELISION($name) ->
@@ -171,7 +171,7 @@ kind-RRP = díade RRP
 kind-RPR = díade RPR
 kind-PRP = díade PRP
 kind-other = grup resolt conjuntament
-kind-copy = igual que un sòlid ja resolt
+kind-copy = de la mateixa manera
 step-title = Pas { $n }: { $kind } — { $bodies }
 step-title_group = Pas { $n }: { $bodies }
 sec-velocities = Velocitats
@@ -246,6 +246,19 @@ rolling-noslip = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
+rolling-glide = { $b } { COUNT($b) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre la vora { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    }. Des { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    }, el seu centre { $centre } manté la distància a la vora: es mou segons una recta paral·lela a la tangent a { $point }. Amb eixos a { $centre } que giren amb { $a }, el moviment de { $centre } és el d’arrossegament (el del punt { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    } que hi coincideix) més el relatiu, al llarg d’aquesta recta (i, en acceleracions, el terme de Coriolis).
 rolling-kept = el contacte es manté: a { $point } les acceleracions dels punts materials { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }

@@ -127,8 +127,8 @@ pos-open = the open assembly (the links do not cross)
 pos-crossed = the crossed assembly (the links cross)
 
 sec-order = Order of solution
-order-assur = The mechanism is decomposed into its inputs and Assur groups (dyads); each group is solved from bodies already known:
-order-blocks = The mechanism does not decompose from driven cranks or sliders into dyads; each group is found from the bodies already known, in this order:
+order-assur = The mechanism is decomposed into its inputs (driven cranks and sliders) and dyads; each is solved from bodies already known:
+order-blocks = The bodies are found in this order, each from bodies already known:
 order-item = { $n }. { $kind }: { $bodies }, from { $known }.
 order-item_group = { $n }. { $bodies }, from { $known }.
 order-from = { $name }
@@ -138,7 +138,7 @@ kind-RRP = RRP dyad
 kind-RPR = RPR dyad
 kind-PRP = PRP dyad
 kind-other = group solved together
-kind-copy = the same as a body found before
+kind-copy = in the same way
 step-title = Step { $n }: { $kind } — { $bodies }
 step-title_group = Step { $n }: { $bodies }
 sec-velocities = Velocities
@@ -174,6 +174,7 @@ cond-weld = { $a } and { $b } move as one body.
 cond-spherical = ball joint at { $point }: { $point } is one point of { $a } and of { $b }.
 cond-cylindrical = cylindrical pair: { $b } turns about and slides along the axis of { $a }.
 rolling-noslip = { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity.
+rolling-glide = { $b } rolls without slipping on the edge of { $a }. Seen from { $a }, its centre { $centre } keeps its distance from the edge: it moves along a line parallel to the tangent at { $point }. With axes at { $centre } turning with { $a }, the motion of { $centre } is the drag motion (that of the point of { $a } there) plus the relative motion along that line (and, for accelerations, the Coriolis term).
 rolling-kept = the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
 path-circle = { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
 path-line = { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.

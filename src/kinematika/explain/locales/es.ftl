@@ -124,8 +124,8 @@ pos-open = la configuración abierta (las barras no se cruzan)
 pos-crossed = la configuración cruzada (las barras se cruzan)
 
 sec-order = Orden de resolución
-order-assur = El mecanismo se descompone en sus entradas y grupos de Assur (díadas); cada grupo se resuelve a partir de sólidos ya conocidos:
-order-blocks = El mecanismo no se descompone en díadas a partir de manivelas o correderas motoras; cada grupo se halla a partir de los sólidos ya conocidos, en este orden:
+order-assur = El mecanismo se descompone en sus entradas (manivelas y correderas motoras) y díadas; cada una se resuelve a partir de sólidos ya conocidos:
+order-blocks = Los sólidos se hallan en este orden, cada uno a partir de sólidos ya conocidos:
 order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
 order-item_group = { $n }. { $bodies }, a partir { $known }.
 order-from = de { $name }
@@ -135,7 +135,7 @@ kind-RRP = díada RRP
 kind-RPR = díada RPR
 kind-PRP = díada PRP
 kind-other = grupo resuelto en conjunto
-kind-copy = igual que un sólido ya resuelto
+kind-copy = de la misma manera
 step-title = Paso { $n }: { $kind } — { $bodies }
 step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
@@ -186,6 +186,10 @@ rolling-noslip = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
+rolling-glide = { $b } { COUNT($b) ->
+        [many] ruedan
+       *[one] rueda
+    } sin deslizar sobre el borde de { $a }. Visto desde { $a }, su centro { $centre } mantiene la distancia al borde: se mueve según una recta paralela a la tangente en { $point }. Con ejes en { $centre } que giran con { $a }, el movimiento de { $centre } es el de arrastre (el del punto de { $a } que coincide con él) más el relativo, a lo largo de esa recta (y, en aceleraciones, el término de Coriolis).
 rolling-kept = el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
 path-circle = { $b } { COUNT($b) ->
         [many] ruedan

@@ -124,8 +124,8 @@ pos-open = konfigurazio irekia: barrak ez dira gurutzatzen
 pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
-order-assur = Mekanismoa bere sarreretan eta Assur taldeetan (diadetan) deskonposatzen da; talde bakoitza jadanik ezagunak diren solidoetatik ebazten da:
-order-blocks = Mekanismoa ez da diadetan deskonposatzen biradera edo irristagailu eragileetatik abiatuta; talde bakoitza jadanik ezagunak diren solidoetatik aurkitzen da, ordena honetan:
+order-assur = Mekanismoa bere sarreretan (biradera eta irristagailu eragileak) eta diadetan deskonposatzen da; bakoitza jadanik ezagunak diren solidoetatik ebazten da:
+order-blocks = Solidoak ordena honetan aurkitzen dira, bakoitza jadanik ezagunak diren solidoetatik:
 order-item = { $n }. { $kind }: { $bodies }, { $known } { $known_n ->
         [one] solidotik
        *[other] solidoetatik
@@ -141,7 +141,7 @@ kind-RRP = RRP diada
 kind-RPR = RPR diada
 kind-PRP = PRP diada
 kind-other = batera ebatzitako taldea
-kind-copy = aurretik ebatzitako solido baten berdina
+kind-copy = modu berean
 step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
@@ -177,6 +177,7 @@ cond-weld = { $a } eta { $b } solido bakar bat bezala mugitzen dira.
 cond-spherical = lotura esferikoa { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
 cond-cylindrical = lotura zilindrikoa: { $b } solidoa { $a } solidoaren ardatzaren inguruan biratzen eta haren luzeran irristatzen da.
 rolling-noslip = { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute.
+rolling-glide = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren ertzaren gainean. { $a } solidotik ikusita, haren { $centre } zentroak ertzarekiko distantzia mantentzen du: { $point } puntuko ukitzailearen zuzen paralelo batean zehar mugitzen da. { $a } solidoarekin batera biratzen duten ardatzak gurpilaren { $centre } zentroan definituz, { $centre } puntuaren mugimendua arrastre-mugimendua ({ $a } solidoaren bertako puntuarena) gehi zuzen horretako mugimendu erlatiboa da (eta, azelerazioetan, Coriolisen terminoa).
 rolling-kept = kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak.
 path-circle = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: { $o } zentroko eta { $radius } erradioko zirkunferentzia deskribatzen du; beraz, { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), haren osagai tangentziala { $al } × { $arm } da.
 path-line = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: zuzen bat deskribatzen du, azelerazio normalik gabe; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), { $ac } = { $al } × { $arm }.
