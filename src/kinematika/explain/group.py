@@ -67,6 +67,11 @@ class Seg:
     joint: Optional[Joint] = None
     frm: str = ""
 
+    def crossed(self) -> Joint:
+        """The joint a "cross" piece crosses (every crossing is made with its joint)."""
+        assert self.joint is not None, f"a {self.kind} piece crosses no joint"
+        return self.joint
+
 
 @dataclass(frozen=True)
 class Route:
@@ -134,6 +139,12 @@ class Same:
     joint: Optional[Joint] = None
     driver: Any = None
     sign: int = 1                                  # ω_body = ω_other + sign · rate
+
+    def pair(self) -> Joint:
+        """The weld or prismatic pair that gives the rate when no driver does (every such
+        `Same` is made with its joint)."""
+        assert self.joint is not None, f"ω of {self.body} from a driver, not a joint"
+        return self.joint
 
 
 class Planner:
@@ -304,8 +315,8 @@ class Planner:
         for d in ctx.model.drivers:
             if d.kind == "omega" and d.body in group and d.relative_to in (None, ctx.frame):
                 self.rates.add(d.body)
-            elif d.kind == "velocity" and d.point.body not in self.determined:
-                label = ctx.motion_key(d.point.point, d.point.body)
+            elif d.kind == "velocity" and d.driven_point().body not in self.determined:
+                label = ctx.motion_key(d.driven_point().point, d.driven_point().body)
                 if d.along is None or whole_along(ctx, d, self.level):     # a component that is the whole
                     self.full.add(label)
                 else:
@@ -390,7 +401,7 @@ class Planner:
         if seg.kind == "turn":
             r = self.apart(seg.q, seg.p)
             return [] if r is None or seg.body in self.rates else [(-r[1], r[0])]
-        j = seg.joint
+        j = seg.crossed()
         if self._glide_cross(seg):
             return [] if j.id in self.slides else [self._along_edge(j)]
         if self.level == "a" and rolls(j) and j.id in self.glide:
@@ -424,7 +435,7 @@ class Planner:
         starts = [s for b in self.ctx.model.bodies for s in self.sites[b] if self.state(s) != "none"
                   and (b in group or self._touches(b))]
         for start in starts:
-            queue = [(start, (start.body,), (), 0, "")]
+            queue: list[tuple[Site, tuple[str, ...], tuple[Seg, ...], int, str]] = [(start, (start.body,), (), 0, "")]
             while queue:
                 site, visited, segs, turns, last = queue.pop(0)
                 moves = []
@@ -439,7 +450,7 @@ class Planner:
                     if label == self.label(start) or (seg.kind == "cross" and label in self.still):
                         continue                # a contact at rest is known as it is, not crossed into
                     route = segs + (seg,)
-                    into = seg.kind == "cross" and self.centred.get(seg.joint.id, ("",))[0] == nxt.body
+                    into = seg.kind == "cross" and self.centred.get(seg.crossed().id, ("",))[0] == nxt.body
                     if not into:                # the wheel's contact point is no end: its centre is
                         out.setdefault(label, []).append(Route(start, route, t))
                     if self.state(nxt) == "none":
@@ -708,11 +719,11 @@ class Planner:
                 out += [Same(j.b, j.a, j), Same(j.a, j.b, j)]
         for d in ctx.model.drivers:
             if d.kind == "joint":
-                j = ctx.model.joint(d.joint)
+                j = ctx.model.joint(d.driven_joint())
                 if pin_only(j):
                     out += [Same(j.b, j.a, j, d, 1), Same(j.a, j.b, j, d, -1)]
-            elif d.kind == "omega" and d.relative_to not in (None, ctx.frame):
-                out.append(Same(d.body, d.relative_to, None, d, 1))
+            elif d.kind == "omega" and d.relative_to is not None and d.relative_to != ctx.frame:
+                out.append(Same(d.driven_body(), d.relative_to, None, d, 1))
         group = set(self.group)
         return [s for s in out if s.body in group]
 
@@ -850,7 +861,8 @@ class Writer:
         owned = list(out)
         for s in [r.start for r in p.routes] + [p.end]:
             out += self.known_first(s, p)
-        sides, reads = [], {}
+        sides: list[list[Term]] = []
+        reads: dict[str, tuple[Seg, Term]] = {}
         for r in p.routes:
             terms = self.site_terms(r.start, p)
             skip = -1
@@ -1036,7 +1048,7 @@ class Writer:
                         point=point_name(self.ctx.contact(j)))]
         if knife_edge(j):
             return [msg("group.wheel_v" if lv == "v" else "group.wheel_a", joint=joint_name(j.id),
-                        point=point_name(j.at), body=body_name(j.b), w=omega_sym(j.b), v=Sym("v", self.label(s)))]
+                        point=point_name(j.point_at()), body=body_name(j.b), w=omega_sym(j.b), v=Sym("v", self.label(s)))]
         return [msg(f"cond.{kind_key(j, self.ctx.frame)}", joint=joint_name(j.id), a=body_name(j.a), b=body_name(j.b),
                     point=point_name(j.at or ""))]
 
@@ -1084,7 +1096,7 @@ class Writer:
             if self.plan.apart(seg.q, seg.p) is None or seg.body in self.plan.gliding:
                 return []               # a body that slides along a line moves its points alike
             return rotation_terms(ctx, lv, seg.body, seg.q, seg.p, not known and seg.body not in p.rates)
-        j = seg.joint
+        j = seg.crossed()
         if self.plan._glide_cross(seg):
             unknown = not known and j.id not in p.slides
             tangent = msg("dir.tangent", point=point_name(ctx.contact(j)))
@@ -1128,8 +1140,8 @@ class Writer:
         unit = "rate" if lv == "v" else "rate2"
         value = ctx.omega(s.body) if lv == "v" else ctx.alpha(s.body)
         if s.driver is None:
-            key = "how.weld" if welds(s.joint) else "how.prismatic"
-            how = [sym_of(s.other), " ", msg(key, joint=joint_name(s.joint.id))]
+            key = "how.weld" if welds(s.pair()) else "how.prismatic"
+            how = [sym_of(s.other), " ", msg(key, joint=joint_name(s.pair().id))]
         else:
             rel = sym_of(s.body, s.other) if s.sign > 0 else sym_of(s.other, s.body)
             given = s.driver.accel if lv == "a" else s.driver.value

@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Optional
 
 from ..model.model import Joint, PointPair
-from .context import Ctx, alpha_sym, omega_sym, read_off, segment
+from .context import Ctx, Segment, alpha_sym, omega_sym, read_off, segment
 from .document import Ann, Derived, Equation, Inline, Lead, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .group import centre_site, group_blocks, still_contact
 from .higher import higher_pair_steps
@@ -127,7 +127,7 @@ class PlanarSteps:
                 self.stated.add(d.index)
                 out.append(driver_msg(self.ctx, d, self.level))
                 if whole_along(self.ctx, d, self.level):      # stated whole: a written point to go from
-                    self.done.add(self.ctx.point_label(d.point.point, d.point.body))
+                    self.done.add(self.ctx.point_label(d.driven_point().point, d.driven_point().body))
         return out
 
     def input(self, step: Step, chain: list[Joint]) -> Optional[list]:
@@ -143,8 +143,8 @@ class PlanarSteps:
         else:
             out = [self.rate(body)]
         if pin_only(j):
-            self.done.add(self.ctx.point_label(j.at, body))
-            out.append(msg("input.revolute", body=body_(body), point=point(j.at)))
+            self.done.add(self.ctx.point_label(j.point_at(), body))
+            out.append(msg("input.revolute", body=body_(body), point=point(j.point_at())))
             return out
         p = self.ctx.model.bodies[body].points[0]
         holder = j.a if j.b == body else j.b
@@ -160,14 +160,14 @@ class PlanarSteps:
     def given_point(self, p: str, body: str) -> bool:
         """Whether a driver gives the velocity of point p of `body` (and its acceleration)."""
         key = self.ctx.motion_key(p, body)
-        return any(d.kind == "velocity" and self.ctx.motion_key(d.point.point, d.point.body) == key
+        return any(d.kind == "velocity" and self.ctx.motion_key(d.driven_point().point, d.driven_point().body) == key
                    for d in self.ctx.model.drivers)
 
     def rrr(self, step: Step, chain: list[Joint]) -> Optional[list]:
         """RRR: B, the pin of the two bodies, from each pivot: v_B = v_A + ω₁ × AB = v_C + ω₂ ×
         CB (with α × r and ω × (ω × r) at accelerations); both ω (α) read off the terms."""
         (b1, b2), (j1, j2, j3) = step.bodies, chain
-        a, b, c = j1.at, j2.at, j3.at
+        a, b, c = j1.point_at(), j2.point_at(), j3.point_at()
         side1 = [self.point(a, b1)] + rotation_terms(self.ctx, self.level, b1, a, b, True)
         side2 = [self.point(c, b2)] + rotation_terms(self.ctx, self.level, b2, c, b, True)
         eq = self.equation(self.target(b, b1, known=False), [side1, side2], b, b1)
@@ -179,7 +179,7 @@ class PlanarSteps:
             return self.slot_dyad(step, chain)
         (b1, b2), (j1, j2, j3) = step.bodies, chain
         k2 = step.known[-1]
-        a, b = j1.at, j2.at
+        a, b = j1.point_at(), j2.point_at()
         side1 = [self.point(a, b1)] + rotation_terms(self.ctx, self.level, b1, a, b, True)
         side2 = [self.point(b, k2)] + slide_terms(self.ctx, self.level, k2, b2, b, guide(j3), j3.id)
         eq = self.equation(self.target(b, b1, known=False), [side1, side2], b, b1)
@@ -190,7 +190,7 @@ class PlanarSteps:
         if len(chain) == 2:
             return self.slot_dyad(step, chain)
         (b1, b2), (j1, j2, j3) = step.bodies, chain
-        a, c = j1.at, j3.at
+        a, c = j1.point_at(), j3.point_at()
         side = [self.point(c, b2)] + rotation_terms(self.ctx, self.level, b2, c, a, True) + \
             slide_terms(self.ctx, self.level, b2, b1, a, guide(j2), j2.id)
         eq = self.equation(self.target(a, b1, known=True), [side], a, b1)
@@ -203,7 +203,7 @@ class PlanarSteps:
         if len(chain) == 2:
             return self.slot_dyad(step, chain)
         (b1, b2), (j1, j2, j3) = step.bodies, chain
-        k1, k2, b = step.known[0], step.known[-1], j2.at
+        k1, k2, b = step.known[0], step.known[-1], j2.point_at()
         side1 = [self.point(b, k1)] + slide_terms(self.ctx, self.level, k1, b1, b, guide(j1), j1.id)
         side2 = [self.point(b, k2)] + slide_terms(self.ctx, self.level, k2, b2, b, guide(j3), j3.id)
         eq = self.equation(self.target(b, b1, known=False), [side1, side2], b, b1)
@@ -213,12 +213,12 @@ class PlanarSteps:
         """One body with a revolute or prismatic joint and a pin in a slot."""
         body, (first, slot) = step.bodies[0], chain
         k1 = step.known[0]
-        pin, holder = slot.at, slot.a if slot.b == body else slot.b
+        pin, holder = slot.point_at(), slot.a if slot.b == body else slot.b
         ctx, lv = self.ctx, self.level
         if slot.a == body:                      # the slot is cut in the body: RPR
             if not pin_only(first):
                 return None
-            c = first.at
+            c = first.point_at()
             side = [self.point(c, body)] + rotation_terms(ctx, lv, body, c, pin, True) + \
                 slide_terms(ctx, lv, body, holder, pin, guide(slot), slot.id)
             eq = self.equation(self.target(pin, holder, known=True), [side], pin, holder)
@@ -226,7 +226,7 @@ class PlanarSteps:
             return [eq, self.read(body, rot, c, pin)]
         side2 = [self.point(pin, holder)] + slide_terms(ctx, lv, holder, body, pin, guide(slot), slot.id)
         if pin_only(first):                     # RRP: the pin turns about the body's pivot
-            c = first.at
+            c = first.point_at()
             side1 = [self.point(c, body)] + rotation_terms(ctx, lv, body, c, pin, True)
             eq = self.equation(self.target(pin, body, known=False), [side1, side2], pin, body)
             return [eq, self.read(body, side1[-1], c, pin)]
@@ -326,7 +326,8 @@ class PlanarSteps:
                 return centre
         points = ctx.model.bodies[body].points
         pinned = [p for p in points if len(ctx.model.carriers(p)) > 1 and ctx.shared(p)]
-        return (pinned or points or [None])[0]
+        chosen = pinned or points
+        return chosen[0] if chosen else None
 
     # pieces ------------------------------------------------------------------------------
     def point(self, p: str, body: str) -> Term:
@@ -474,9 +475,12 @@ class PlanarSteps:
 
 def split_segment(seg: str) -> tuple[str, str]:
     """The two point names of a segment written by `segment` (AB, O2-A)."""
-    if getattr(seg, "ends", None):
+    if isinstance(seg, Segment):
         return seg.ends
-    return tuple(seg.split("-", 1)) if "-" in seg else (seg[0], seg[1:])
+    if "-" in seg:
+        q, p = seg.split("-", 1)
+        return q, p
+    return seg[0], seg[1:]
 
 
 def driven(ctx: Ctx, d) -> list[str]:
@@ -497,10 +501,10 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
     given = d.accel if level == "a" else d.value
     inst, where = ctx.inst, d.where
     if d.kind == "omega":
-        vector = isinstance(given, tuple)           # a spatial rate: a vector
-        sym = (omega_sym if level == "v" else alpha_sym)(d.body, d.relative_to, vector=vector)
+        spatial = isinstance(given, tuple)           # a spatial rate: a vector
+        sym = (omega_sym if level == "v" else alpha_sym)(d.body, d.relative_to, vector=spatial)
         unit = "rate" if level == "v" else "rate2"
-        value = inst.vector(given, where) if vector else inst.value(given, where)
+        value = inst.vector(given, where) if spatial else inst.value(given, where)
         return msg("driver.omega", sym=sym, value=Value(ctx.clean(value, unit), unit))
     if d.kind == "joint":
         turning = turns(ctx.model.joint(d.joint))

@@ -11,7 +11,7 @@ from __future__ import annotations
 from ..algebra.vectors import scale
 from ..model.model import Joint
 from .context import Ctx, alpha_sym, omega_sym, segment
-from .document import Ann, Msg, Sym, Term, body, joint, msg
+from .document import Ann, Msg, Sym, Term, Value, body, joint, msg
 
 UNIT = {"v": "speed", "a": "accel"}
 
@@ -80,7 +80,7 @@ def guide(j: Joint) -> Msg:
     return msg("dir.guide", holder=body(j.a), joint=joint(j.id))      # the joint: for checks, not written
 
 
-def slide_terms(ctx: Ctx, level: str, frame: str, moving: str, point: str, guide: Msg,
+def slide_terms(ctx: Ctx, level: str, frame: str, moving: str, point: str, guide: Msg | Value,
                 tag: str = "", unknown: bool = True) -> list[Term]:
     """The motion of P∈moving relative to `frame` along a guide, v_P∈moving/frame (named with
     both bodies, so that its sense is the written one); with Coriolis for accelerations."""

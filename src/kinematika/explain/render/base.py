@@ -3,6 +3,7 @@ numbers, formulas, units, symbols and the M/D/? annotations. A subclass gives th
 from __future__ import annotations
 
 import re
+from abc import ABC, abstractmethod
 from typing import Any
 
 from babel.lists import format_list
@@ -52,7 +53,7 @@ NAMED_KEYS = {"centres.intro": "centres.intro_named", "fig.centres": "fig.centre
 BODY_SUBS = ("ω", "α", "I", "ω×ω")          # symbols whose subscript is made of bodies
 
 
-class Renderer:
+class Renderer(ABC):
     """Turns a `Document` into text in one language.
 
     Each format's subclass supplies the markup: `esc(text)`, `sym(Sym)`, `power(mantissa,
@@ -70,6 +71,47 @@ class Renderer:
         self.drawings = drawings
         self.decimal = decimal_sign(cat.lang)
         self.comma = separator(self.decimal)      # between a vector's components
+
+    # the format's markup (each subclass's) -----------------------------------------------------
+    @abstractmethod
+    def esc(self, text: str) -> str:
+        """`text` escaped for the format."""
+
+    @abstractmethod
+    def symbol(self, s: Sym) -> str:
+        """A symbol (already as the model's notation writes it) in the format's markup."""
+
+    @abstractmethod
+    def power(self, mantissa: str, exponent: int) -> str:
+        """A number in scientific notation: mantissa × 10^exponent."""
+
+    @abstractmethod
+    def formula(self, expr: Any) -> str:
+        """A sympy expression in the format's markup."""
+
+    @abstractmethod
+    def page(self, body: str) -> str:
+        """The whole page around its body."""
+
+    @abstractmethod
+    def heading(self, level: int, text: str) -> str:
+        """A heading of `level` (1 for the title)."""
+
+    @abstractmethod
+    def para(self, text: str) -> str:
+        """A paragraph."""
+
+    @abstractmethod
+    def equation(self, eq: Equation) -> str:
+        """A vector equation with its M/D/? annotations."""
+
+    @abstractmethod
+    def table(self, header: list[str], rows: list[list[str]]) -> str:
+        """A table of text cells."""
+
+    @abstractmethod
+    def figure(self, fig: Figure) -> str:
+        """A figure (a polygon, the centres)."""
 
     # the walk ---------------------------------------------------------------------------------
     def render(self) -> str:
@@ -296,7 +338,7 @@ class Renderer:
         (ω_roda, ω_{roda sup}: `model.subscripts`), else its number (ω_3), as the figures
         write it."""
         if not hasattr(self, "_labels"):
-            order = sorted(self.doc.numbers, key=self.doc.numbers.get)
+            order = sorted(self.doc.numbers, key=lambda b: self.doc.numbers[b])
             self._labels = self.wording.labels(order, self.lang)
         return self._labels
 
@@ -473,6 +515,7 @@ class Renderer:
         if c.how == "joint":
             why = Msg(f"centre.joint.{c.joint_type}", {"joint": Name(c.via[0], "joint")})
         elif c.how == "weld":
+            assert c.same is not None, "a weld's note has the centre it shares (centres.weld)"
             x, other = c.same["pair"]
             why = Msg("centre.weld", {"joint": Name(c.via[0], "joint"), "body": Name(c.same["welded"], "body"),
                                       "other": Name(other, "body"), "same": Sym("I", f"{x},{other}", vector=False)})

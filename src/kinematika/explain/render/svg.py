@@ -138,8 +138,8 @@ def _layout(fig: Figure, texts: dict, names: list) -> Layout:
     w, h = max(x1 - x0, 1e-300), max(y1 - y0, 1e-300)
     k = min((WIDTH - 2 * MARGIN) / w, (MAX_HEIGHT - 2 * MARGIN) / h)
     out = Layout(fig, k, x0, y1, h * k + 2 * MARGIN + BAR)
-    items = [(text, COLOURS["known"], p, 0 if style == "pole" else 1, None)
-             for text, (_, p, style) in zip(names, fig.points)]
+    items: list[tuple[Text, str, tuple, int, Optional[tuple]]] = \
+        [(text, COLOURS["known"], p, 0 if style == "pole" else 1, None) for text, (_, p, style) in zip(names, fig.points)]
     for a in fig.arrows:
         if a.label is not None:
             (ax, ay), (bx, by) = a.start, a.end
@@ -191,13 +191,13 @@ def _place(lay: Layout, items: list) -> list[Placed]:
     placed = board.layout(ax)
     out = []
     by_gid = {str(i): item for i, item in enumerate(items)}
-    for p in placed:
-        text, colour, anchor, _, _ = by_gid[p.label.gid]
-        bx0, by0, bx1, by1 = (float(c) for c in p.box)
+    for spot in placed:
+        text, colour, anchor, _, _ = by_gid[spot.label.gid]
+        bx0, by0, bx1, by1 = (float(c) for c in spot.box)
         box = (bx0, lay.height - by1, bx1, lay.height - by0)
         centre = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
         leader = None
-        if p.leader:
+        if spot.leader:
             start = lay.at(anchor)
             leader = (start, _edge(start, box))
         out.append(Placed(text, colour, centre, box, leader))
@@ -213,7 +213,7 @@ def _edge(start: tuple, box: tuple) -> tuple:
     return cx - t * dx, cy - t * dy
 
 
-def svg(fig: Figure, label: Callable[[Sym], Text], unit: str, prefix: str = "f",
+def svg(fig: Figure, label: Callable[[Sym | str], Text], unit: str, prefix: str = "f",
         number: Callable[[float], str] = lambda x: f"{x:g}") -> str:
     """The figure as an <svg> element; `label` gives a symbol's text, `unit` the bar's unit,
     `prefix` keeps its ids apart from other figures' on the page."""
