@@ -51,7 +51,7 @@ def question_label(ctx: Ctx, q) -> Any:
 def answer_items(ctx: Ctx, q, value: Any) -> list:
     """The answer as [(label, Value)]: a label is a symbol or a message, never a raw key."""
     if not isinstance(value, dict):
-        return [("", _value(ctx, value, UNITS.get(QUESTIONS[q.kind].unit_kind, "")))]
+        return [("", _value(ctx, value, UNITS.get(QUESTIONS[q.kind].unit_kind) or ""))]
     if value.get("rest"):
         return [("", msg("ans.rest"))]
     if value.get("translation"):
@@ -60,7 +60,7 @@ def answer_items(ctx: Ctx, q, value: Any) -> list:
     for key, v in value.items():
         if isinstance(v, dict):
             for sub, w in v.items():
-                out.append((_part_label(ctx, q, key, sub), _value(ctx, w, UNITS[sub] if UNITS.get(sub) else UNITS[key] or "")))
+                out.append((_part_label(ctx, q, key, sub), _value(ctx, w, UNITS.get(sub) or UNITS[key] or "")))
         elif v is not None and key != "rest":
             out.append((_part_label(ctx, q, key, None), _value(ctx, v, UNITS.get(key) or "")))
     return out
@@ -89,13 +89,15 @@ def relative_rates(ctx: Ctx) -> list[Derived]:
         kind = QUESTIONS[q.kind]                  # a body's ω or α (its table's column)
         if not (kind.column and kind.about == "body") or rel is None or not ctx.planar:
             continue
-        if f"relative:{q.target}/{rel}" in ctx.worked:
+        body = q.target
+        assert isinstance(body, str), f"{q.where}: a question about a body names the body"
+        if f"relative:{body}/{rel}" in ctx.worked:
             continue            # a step found it (a belt seen from its arm): not again, backwards
         sym, get = (omega_sym, ctx.omega) if kind.unit_kind == "omega" else (alpha_sym, ctx.alpha)
-        unit = UNITS[kind.unit_kind]
-        out.append(Derived(sym(q.target, rel), [sym(q.target), " − ", sym(rel)], ctx.value(get(q.target, rel), unit),
+        unit = UNITS[kind.unit_kind] or ""      # omega and alpha: each has its unit
+        out.append(Derived(sym(body, rel), [sym(body), " − ", sym(rel)], ctx.value(get(body, rel), unit),
                            kind=kind.unit_kind, sense=not ctx.symbolic,
-                           lead=composed(sym(q.target), sym(q.target, rel), sym(rel), q.target == ctx.frame)))
+                           lead=composed(sym(body), sym(body, rel), sym(rel), body == ctx.frame)))
     return out
 
 

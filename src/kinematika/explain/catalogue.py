@@ -13,9 +13,10 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable, cast
 
 from fluent.runtime import FluentBundle, FluentResource
+from fluent.runtime.types import FluentType
 
 from ..errors import KinematikaError
 from ..languages import LANGS, known
@@ -71,7 +72,10 @@ def count(value: Any) -> str:
     return "many" if PLURAL_NAME.search(text) else "one"
 
 
-FUNCTIONS = {"ELISION": elision, "COUNT": count}
+# fluent.runtime (0.4) annotates a function as returning a FluentType, but its resolver takes a plain
+# str too (resolver.match compares a select's key with ==, resolve() passes a str through): ours
+# return the word a select expression matches, so the cast only states what the resolver accepts.
+FUNCTIONS = cast(dict[str, Callable[[Any], FluentType]], {"ELISION": elision, "COUNT": count})
 
 
 class Catalogue:
@@ -96,10 +100,12 @@ class Catalogue:
         if not self.has(key):
             raise KinematikaError("schema", "catalogue-no-message", "explain", key=key, lang=self.lang)
         message = self.bundle.get_message(fluent_id(key))
+        assert message.value is not None, f"{self.lang}: {key} has attributes only"     # none in the catalogues
         text, errors = self.bundle.format_pattern(message.value, args or {})
         if errors:
             raise KinematikaError("schema", "catalogue-message-error", "explain", key=key, lang=self.lang,
                                   problem=str(errors[0]))
+        assert isinstance(text, str), f"{self.lang}: {key}"      # FluentNone comes with an error, raised above
         return text
 
     def get(self, key: str) -> str:

@@ -9,7 +9,7 @@ each one follows."""
 from __future__ import annotations
 
 from itertools import combinations
-from typing import Optional
+from typing import Literal, Optional, overload
 
 from ..questions.centres import all_centres, centre_line, same_line
 from .asked import worked
@@ -23,6 +23,10 @@ MAX_ALL = 10        # above this many pairs, only the centres relative to the fr
 STRUCTURAL = ("joint", "weld", "kennedy", "lines")     # placed before any velocity is known
 
 
+@overload
+def centres_section(ctx: Ctx, part: Literal["all", "first"] = "all") -> Section: ...
+@overload
+def centres_section(ctx: Ctx, part: Literal["rest"]) -> Optional[Section]: ...
 def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
     """The section of instant centres: the drawing with the centres, then, for each pair of
     bodies (what the questions name and what it is found from; else those with the frame,
@@ -263,9 +267,9 @@ def _kennedy(ctx: Ctx, note: CentreNote, found: dict, before: list) -> None:
     thirds = [k for k in ctx.model.bodies if k not in (a, b) and frozenset((a, k)) in earlier
               and frozenset((k, b)) in earlier]
     thirds = list(dict.fromkeys(note.via + thirds))
-    lines = {k: centre_line(ctx.inst, found[frozenset((a, k))].value, found[frozenset((k, b))].value)
+    drawn = {k: centre_line(ctx.inst, found[frozenset((a, k))].value, found[frozenset((k, b))].value)
              for k in thirds}
-    lines = {k: l for k, l in lines.items() if l is not None}
+    lines = {k: l for k, l in drawn.items() if l is not None}
     for i, k1 in enumerate(lines):
         for k2 in list(lines)[i + 1:]:
             if not same_line(ctx.inst, lines[k1], lines[k2]):

@@ -22,7 +22,7 @@ from typing import Optional
 
 from .context import Ctx, omega_sym
 from .document import Inline, Name, Section, Value, msg
-from .drives import circle, drives, pivot, rho, same_place, simplified
+from .drives import circle, drives, pivot, rho, same_place, simplified, wheel_circle
 from .kinds import crossed_by_a_slot, rolls, welds
 
 
@@ -65,7 +65,8 @@ def willis(ctx: Ctx) -> list:
                 circle = _circle(ctx, other)
                 if circle is None or not _same(ctx, circle[0], o):
                     continue
-                if other == frame or (_pivot(ctx, other, frame) is not None and _same(ctx, _pivot(ctx, other, frame), o)):
+                at = _pivot(ctx, other, frame) if other != frame else None
+                if other == frame or (at is not None and _same(ctx, at, o)):
                     central.append((other, j))
             if len(central) >= 2:
                 out += _willis_blocks(ctx, carrier, planet, central[0], central[1])
@@ -75,7 +76,7 @@ def willis(ctx: Ctx) -> list:
 
 def _willis_blocks(ctx: Ctx, carrier: str, planet: str, first: tuple, second: tuple) -> list:
     (s1, j1), (s2, j2) = first, second
-    r1, r2 = _circle(ctx, s1)[1], _circle(ctx, s2)[1]
+    r1, r2 = wheel_circle(ctx, s1)[1], wheel_circle(ctx, s2)[1]
     sign = _mesh_sign(ctx, j1) * _mesh_sign(ctx, j2)
     train = _simplified(ctx, sign * r2 / r1)
     w1, w2, wc = ctx.omega(s1), ctx.omega(s2), ctx.omega(carrier)
@@ -106,7 +107,7 @@ def belts(ctx: Ctx) -> list:
     links: list[tuple] = []
     for d in drives(ctx):
         a, b, holder, sign = d.a, d.b, d.holder, d.sign
-        ra, rb = _circle(ctx, a)[1], _circle(ctx, b)[1]
+        ra, rb = wheel_circle(ctx, a)[1], wheel_circle(ctx, b)[1]
         ratio = _simplified(ctx, sign * ra / rb)
         links.append((a, b, ratio, holder))
         if f"drive:{b}" in ctx.worked or f"drive:{a}" in ctx.worked:

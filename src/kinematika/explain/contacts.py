@@ -24,7 +24,7 @@ from typing import Any, Optional
 from ..algebra.vectors import add, scale, sub
 from .asked import worked
 from .context import Ctx, composed, omega_sym, read_off, segment
-from .document import Ann, Derived, Equation, Name, Section, Sym, Term, Value, joint as joint_name, msg
+from .document import Ann, Derived, Equation, Msg, Name, Section, Sym, Term, Value, joint as joint_name, msg
 from .kinds import rolls
 from .terms import pair_name, point_term, rotation_terms
 
@@ -74,6 +74,9 @@ class Bar:
         self.name = ctx.contact(j)
         (b1, c1), *rest = self.contact.centres
         self.c1, self.b1 = centre_name(ctx, b1, c1), b1
+        self.c2: Optional[str]              # the second circle's centre and body (circles), else None
+        self.b2: Optional[str]
+        self.turning: Optional[str]         # the line's body (a circle on a line), else None
         if rest:
             (b2, c2), = rest
             self.c2, self.b2 = centre_name(ctx, b2, c2), b2
@@ -89,15 +92,25 @@ class Bar:
             self.turning = self.contact.line_body
             self.omega, self.alpha = ctx.omega(self.turning), ctx.alpha(self.turning)
 
+    def second(self) -> tuple[str, str]:
+        """The second circle's centre and body (a bar between two circles)."""
+        assert self.c2 is not None and self.b2 is not None, "a circle on a line has one centre"
+        return self.c2, self.b2
+
+    def line_body(self) -> str:
+        """The body of the line the circle is on (a circle on a line)."""
+        assert self.turning is not None, "a bar between two circles turns with no line"
+        return self.turning
+
     @property
     def sym(self) -> Sym:
         """Ω_C1C2, the bar's angular velocity (ω of the line body for a circle on a line)."""
-        return Sym("Ω", segment(self.c1, self.c2), vector=False) if self.c2 else omega_sym(self.turning)
+        return Sym("Ω", segment(self.c1, self.c2), vector=False) if self.c2 else omega_sym(self.line_body())
 
     @property
     def alpha_sym(self) -> Sym:
         """α_C1C2, the bar's angular acceleration (α of the line body)."""
-        return Sym("α", segment(self.c1, self.c2), vector=False) if self.c2 else Sym("α", self.turning, vector=False)
+        return Sym("α", segment(self.c1, self.c2), vector=False) if self.c2 else Sym("α", self.line_body(), vector=False)
 
     def rotation(self, level: str, q: str, p: str, unknown: bool) -> list[Term]:
         """The bar's ω × QP (or its normal and tangential accelerations), by value."""
@@ -120,14 +133,15 @@ class Bar:
     def blocks(self, level: str, with_bar: bool = True) -> list:
         """How J^geom moves: the bar's ω (α) from its two ends (unless worked out already:
         `with_bar` False), then J^geom as its point."""
-        ctx, out = self.ctx, []
+        ctx = self.ctx
+        out: list[Msg | Equation | Derived] = []
         start = point_term(ctx, level, self.c1, self.b1)
         if self.c2 is not None:
             if level == "v":
                 out.append(msg("geom.bar", geom=geometric_point(self.name), c1=Name(self.c1), c2=Name(self.c2),
                                joint=joint_name(self.j.id)))
         if self.c2 is not None and with_bar:
-            end = point_term(ctx, level, self.c2, self.b2)
+            end = point_term(ctx, level, *self.second())
             turn = self.rotation(level, self.c1, self.c2, True)
             out.append(Equation(end, [[start] + turn], level, figure=False))
             sym = self.sym if level == "v" else self.alpha_sym
@@ -139,7 +153,7 @@ class Bar:
                                ctx.clean(ctx.r(self.c1, self.c2), "len")))
         elif self.c2 is None and level == "v":
             out.append(msg("geom.foot", geom=geometric_point(self.name), centre=Name(self.c1),
-                           line=Name(self.turning, "body"), radius=Name(segment(self.c1, self.name)),
+                           line=Name(self.line_body(), "body"), radius=Name(segment(self.c1, self.name)),
                            joint=joint_name(self.j.id)))
         arm = self.rotation(level, self.c1, self.name, False)
         target = Term(geometric_sym(level, self.name), self.geometric(level), *FOUND, unknown=True, kind="point")

@@ -128,9 +128,11 @@ class Ctx:
         if not self.symbolic:
             return self.inst.num(x)
         if self._drawn is None:
+            from ..draw.projection import projection
             from ..draw.scene import Numbers, drawing_values
 
-            self._drawn = Numbers(self.inst, None, drawing_values(self.inst))
+            # only its scalars are read (never projected): the plane's projection, whatever the model's
+            self._drawn = Numbers(self.inst, projection(2), drawing_values(self.inst))
         return self._drawn.scalar(x)
 
     def drawn_values(self) -> dict[str, float]:

@@ -125,10 +125,13 @@ def copy_of(ctx: Ctx, body: str, earlier: list[str]) -> Optional[Copy]:
         if a == body or a == ctx.frame or _signature(ctx, a) != mine or _radii(ctx, a) != radii:
             continue
         theirs = _pins(ctx, a)
-        if len(theirs) != 1 or _centre(ctx, a) is None:
+        if len(theirs) != 1:
+            continue
+        centre = _centre(ctx, a)
+        if centre is None:
             continue
         q = ctx.num(ctx.pos(theirs[0]))
-        if math.dist(_centre(ctx, a), z) > TOL * max(1.0, ctx.inst.scale) or \
+        if math.dist(centre, z) > TOL * max(1.0, ctx.inst.scale) or \
                 not _close(ctx, math.dist(z, q), math.dist(z, p)):
             continue
         if not _same_motion(ctx, body, a):
@@ -162,8 +165,9 @@ def copies(ctx: Ctx, steps: list) -> list:
     known_then: set[str] = set()
     for s in steps:
         found = [copy_of(ctx, b, known) for b in s.bodies] if s.kind == "other" else [None]
-        if found and all(c is not None for c in found):
-            originals = [c.original for c in found]
+        made = [c for c in found if c is not None]
+        if found and len(made) == len(found):
+            originals = [c.original for c in made]
             if merged is None or not set(originals) <= known_then:
                 merged = Step("copy", [], [], [], source=s.source)
                 known_then = set(known)

@@ -315,9 +315,10 @@ def shape_rows(ctx: Ctx) -> list:
 def _shape(ctx: Ctx, spec, shape) -> Any:
     if isinstance(spec, (Circle, Disc)):
         centre = point(spec.center_point) if spec.center_point else Value(ctx.clean(shape.center, "len"), "len")
-        radius = Value(ctx.clean(shape.radius, "len"), "len")
-        if not ctx.symbolic and spec.radius.names() & set(ctx.model.parameters):
-            radius = Inline([Value(_formula(ctx, (spec.radius,))[0], ""), " = ", radius])
+        radius: Value | Inline = Value(ctx.clean(shape.radius, "len"), "len")
+        formula = None if ctx.symbolic else _formula(ctx, (spec.radius,))     # None: a plain number
+        if formula is not None:
+            radius = Inline([Value(formula[0], ""), " = ", radius])
         return msg("data.circle", centre=centre, radius=radius)
     if isinstance(spec, (Line, Plane)):
         through_point = getattr(spec, "through_point", None)

@@ -72,6 +72,14 @@ def circle(ctx: Ctx, body: str) -> Optional[tuple]:
     return None
 
 
+def wheel_circle(ctx: Ctx, body: str) -> tuple:
+    """`circle` of a body known to have one: a drive's or a gear train's wheel, each chosen by
+    having a circle."""
+    found = circle(ctx, body)
+    assert found is not None, f"{body}: no circle"
+    return found
+
+
 def rho(body: str) -> Sym:
     """ρ of a body's circle, the body written by its label (ρ_3, ρ_plat's index)."""
     return Sym("ρ", body, vector=False, of_body=True)
@@ -161,7 +169,7 @@ def _pair(ctx: Ctx, d: Pair, a: str, b: str, level: str) -> list:
     """ρ_a ω_a/K = ∓ ρ_b ω_b/K seen from K (differentiated at accelerations); the known
     wheel's rate relative to K, the other's, and its own by composition (relative + drag)."""
     k = ctx.rel(d.holder)
-    ra, rb = circle(ctx, a)[1], circle(ctx, b)[1]
+    ra, rb = wheel_circle(ctx, a)[1], wheel_circle(ctx, b)[1]
     minus = "" if d.sign > 0 else "−"
     sym = omega_sym if level == "v" else alpha_sym
     get = ctx.omega if level == "v" else ctx.alpha
@@ -202,7 +210,7 @@ def _relation(ctx: Ctx, d: Drive, a: str, b: str, level: str) -> list:
     unit = "rate" if level == "v" else "rate2"
     kind = "omega" if level == "v" else "alpha"
     k = ctx.rel(d.holder)
-    ra, rb = circle(ctx, a)[1], circle(ctx, b)[1]
+    ra, rb = wheel_circle(ctx, a)[1], wheel_circle(ctx, b)[1]
     minus = "" if d.sign > 0 else "−"
     rel_a, rel_b = sym(a, k), sym(b, k)
     ctx.worked.update({f"relative:{a}/{d.holder}", f"relative:{b}/{d.holder}"})    # found here: not again
@@ -260,7 +268,7 @@ def _common_holder(ctx: Ctx, a: str, b: str) -> Optional[str]:
 
 def _turns_on(ctx: Ctx, wheel: str, k: str) -> bool:
     """Whether `wheel` (or a body welded to it) is pinned to k at the wheel's centre."""
-    centre = circle(ctx, wheel)[0]
+    centre = wheel_circle(ctx, wheel)[0]
     same = {wheel} | {(j.b if j.a == wheel else j.a) for j in ctx.model.joints if welds(j) and wheel in (j.a, j.b)}
     for w in same:
         at = pivot(ctx, w, k)
@@ -275,6 +283,6 @@ def _same_side(ctx: Ctx, line: str, a: str, b: str) -> bool:
     d, p = ctx.num(tuple(shape.direction)), ctx.num(tuple(shape.through))
 
     def side(w: str) -> float:
-        c = ctx.num(tuple(circle(ctx, w)[0]))
+        c = ctx.num(tuple(wheel_circle(ctx, w)[0]))
         return d[0] * (c[1] - p[1]) - d[1] * (c[0] - p[0])
     return side(a) * side(b) > 0

@@ -223,7 +223,7 @@ def _untitle(sec: Section, bodies: set[str]) -> None:
 def _unname(m: Msg, bodies: set[str]) -> None:
     named = m.args.get("bodies")
     lead = isinstance(named, Lead)
-    named = named.item if lead else named
+    named = named.item if isinstance(named, Lead) else named
     if bodies and isinstance(named, Names):
         left = [n for n in named.items if getattr(n, "text", n) not in bodies]
         if left and len(left) < len(named.items):

@@ -47,6 +47,7 @@ def block_order(sol: Solution) -> list[Step]:
         return []
     a_num = np.array([[inst.num(c) for c in row] for row in a], dtype=float).reshape(len(a), n)
     scaled = solver.analysis.scaled.matrix if solver.analysis else a_num
+    assert isinstance(scaled, np.ndarray), "a system kept sparse (a large numeric model) has no block order here"
     chosen = independent_rows(scaled, n)
     blocks = _blocks(a_num[chosen], chosen)
     known = {sol.model.frame}

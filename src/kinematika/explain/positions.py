@@ -23,7 +23,8 @@ def position_section(ctx: Ctx) -> Optional[Section]:
     is given by its coordinates."""
     model = ctx.model
     built = [n for n in construction_order(model.points) if not isinstance(model.points[n], tuple)]
-    carried = [n for n in model.points if isinstance(model.points[n], tuple) and turn_for(model, n)]
+    turned = {n: turn_for(model, n) for n in model.points if isinstance(model.points[n], tuple)}
+    carried = {n: t for n, t in turned.items() if t}        # each point a turn places, with its turn
     if not ctx.planar or not (built or carried):
         return None
     sec = Section(msg("sec.position"))
@@ -36,7 +37,7 @@ def position_section(ctx: Ctx) -> Optional[Section]:
         if name in built:
             sec.add(_sentence(ctx, name, turned_polar(model, name, model.points[name]) or model.points[name]))
         elif name in carried:
-            sec.add(msg("pos.carried", point=point(name), body=Name(turn_for(model, name).body, "body"),
+            sec.add(msg("pos.carried", point=point(name), body=Name(carried[name].body, "body"),
                         at=Value(ctx.clean(ctx.pos(name), "len"), "len")))
         else:
             continue
@@ -120,6 +121,7 @@ def _pair(ctx: Ctx, a: Any, b: Any) -> Any:
 def _line(ctx: Ctx, line: LineDef) -> Any:
     if line.toward is not None:
         return _pair(ctx, line.through, line.toward)
+    assert line.direction is not None, "a line goes toward a point or along a direction"
     d = ctx.clean(tuple(ctx.inst.value(e, "explain") for e in line.direction), "")
     return msg("pos.line_dir", through=_loc(ctx, line.through), dir=Value(d, ""))
 

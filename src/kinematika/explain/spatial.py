@@ -22,7 +22,8 @@ from .kinds import guided, pin_only, rolls, slider
 
 def carriers(ctx: Ctx) -> list[tuple[str, Optional[str], Optional[str]]]:
     """(body, carrier, joint point) from the frame outwards along the joints."""
-    known, out = {ctx.frame}, []
+    known = {ctx.frame}
+    out: list[tuple[str, Optional[str], Optional[str]]] = []
     progress = True
     while progress:
         progress = False
@@ -293,7 +294,7 @@ def _relative(ctx: Ctx, level: str, ref: PointRef, moving: str, pivot: Optional[
             said = [msg("composition.rolls", body=Name(body, "body"), frame=Name(moving, "body"), point=Name(q),
                         sym=Sym("v", relative_name(q, body, moving)))]
     target = _relabel(target_term(ctx, level, p, body, True, moving), sym)
-    if not _apart(ctx, q, p):
+    if q is None or not _apart(ctx, q, p):
         return said + [Equation(target, [[target_term(ctx, level, p, body, True, moving)]], level, ref, moving,
                                 figure=False)]
     side = [target_term(ctx, level, q, body, True, moving)] + rotation_terms(ctx, level, body, q, p, False, moving)

@@ -62,9 +62,9 @@ def spins(ctx: Ctx, bodies: list[str]) -> list:
             continue
         j = ctx.model.joint(jid)
         radius = ctx.model.wording.spins[jid][1]
-        out.append(msg("vehicle.spin", joint=Name(j.id, "joint"), point=Name(j.at), radius=Name(radius, "param"),
+        out.append(msg("vehicle.spin", joint=Name(j.id, "joint"), point=Name(j.point_at()), radius=Name(radius, "param"),
                        spin=spin))
-        out.append(Derived(spin, [Sym("v", ctx.point_label(j.at, body), vector=False), " / ", Name(radius, "param")],
+        out.append(Derived(spin, [Sym("v", ctx.point_label(j.point_at(), body), vector=False), " / ", Name(radius, "param")],
                            value, body, "spin", not ctx.symbolic))
     return out
 
@@ -195,7 +195,7 @@ def _equiprojective(ctx: Ctx, b: str, wheels: list, speeds: dict, q: str) -> lis
     asked = {ctx.model.resolve_point(x.target).point if isinstance(x.target, str) else x.target.point
              for x in ctx.model.questions if QUESTIONS[x.kind].about == "point"}
     key = ctx.motion_key(q, b)
-    if _axles(ctx, b, wheels) != 1 or any(d.kind == "velocity" and ctx.motion_key(d.point.point, d.point.body) == key
+    if _axles(ctx, b, wheels) != 1 or any(d.kind == "velocity" and ctx.motion_key(d.driven_point().point, d.driven_point().body) == key
                                           for d in ctx.model.drivers):
         return []                           # a given velocity turns the body about its centre at once (C5-2.1)
     for j in wheels:
@@ -293,11 +293,11 @@ def _pinned(ctx: Ctx, b: str, solved: set[str]) -> Optional[list]:
     for d in ctx.model.drivers:
         if d.kind != "joint":
             continue
-        j = ctx.model.joint(d.joint)
+        j = ctx.model.joint(d.driven_joint())
         if pin_only(j) and b in (j.a, j.b):
             other = j.a if j.b == b else j.b
             if other in solved:
-                rate = Value(ctx.clean(ctx.inst.value(d.value, d.where), "rate"), "rate")
+                rate = Value(ctx.clean(ctx.inst.value(d.rate(), d.where), "rate"), "rate")
                 return [Derived(omega_sym(b), [omega_sym(other), " + ", omega_sym(b, other), " = ",
                                                omega_sym(other), " + ", rate],
                                 ctx.value(ctx.omega(b), "rate"), b, "omega", not ctx.symbolic)]

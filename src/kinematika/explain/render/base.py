@@ -283,7 +283,7 @@ class Renderer(ABC):
             return self.wording.body(n.text, self.lang)
         if n.kind == "joint":                            # the model's name, else its point or bodies
             given = getattr(self.wording, "joints", {}).get(self.lang or "", {}).get(n.text)
-            place = (self.doc.joints or {}).get(n.text)
+            place: str | tuple[str, ...] | None = (self.doc.joints or {}).get(n.text)     # a point, or bodies
             if given or place is None:
                 return self.wording.joint(n.text, self.lang)
             if isinstance(place, tuple):
