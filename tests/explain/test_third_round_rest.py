@@ -1,0 +1,42 @@
+"""Issue 30, third round, the remaining defects of the second audit (docs/explain.md,
+"Method (third round)"), each a rule checked over the four languages:
+
+- C5-1.8: the notes' final list gives each of the three coincident points its own line: the
+  answers table gives each point's v and a a row of its own, labelled by its symbol; the
+  bar OC's angular velocity is ω_OC beside its α_OC (one letter for one kind of quantity).
+"""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from .helpers import LANGS, rendered
+
+
+def _answers(page: str) -> list[str]:
+    """The rows of the answers table (the last table of the page's last sections)."""
+    head = re.search(r"^## (Answers|Respuestas|Respostes|Erantzunak)$", page, re.M)
+    assert head, "no answers section"
+    return [line for line in page[head.end():].splitlines() if line.startswith("| ")]
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_contact_points_one_row_each(lang):
+    """C5-1.8: six rows v/a of J∈ground, J∈wheel and J^geom, each with its value alone."""
+    rows = _answers(rendered("seed_c5_1_8_contact_points", lang, drawings=False))
+    firsts = [row.split("|")[1].strip() for row in rows]
+    for sym in ("v_J^geom", "a_J^geom"):
+        assert sym in firsts, (lang, firsts)
+    wheel = {"en": "wheel", "es": "rueda", "ca": "roda", "eu": "gurpila"}[lang]
+    assert f"a_{{J∈{wheel}}}" in firsts, (lang, firsts)
+    row = rows[firsts.index("a_J^geom")]
+    assert row.split("|")[2].strip() == "(0, −2·r·ω₀²/9)".replace(",", "," if lang == "en" else ";"), row
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_bar_rate_one_letter(lang):
+    """C5-1.8: the bar OC turns at ω_OC = −ω₀/3, with α_OC; no Ω_OC beside them."""
+    page = rendered("seed_c5_1_8_contact_points", lang, drawings=False)
+    assert "Ω_OC" not in page
+    assert re.search(r"^ω_OC = .* = −ω₀/3$", page, re.M) and "α_OC" in page
