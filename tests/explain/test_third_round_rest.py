@@ -4,6 +4,9 @@
 - C5-1.8: the notes' final list gives each of the three coincident points its own line: the
   answers table gives each point's v and a a row of its own, labelled by its symbol; the
   bar OC's angular velocity is ω_OC beside its α_OC (one letter for one kind of quantity).
+- C5-2.1: a driven pin's rate is given by its symbol, ω_{b rel a} = value, the one the
+  composition uses; a centre the velocity steps placed and found velocities from is not
+  "checked" against them again.
 """
 from __future__ import annotations
 
@@ -40,3 +43,19 @@ def test_bar_rate_one_letter(lang):
     page = rendered("seed_c5_1_8_contact_points", lang, drawings=False)
     assert "Ω_OC" not in page
     assert re.search(r"^ω_OC = .* = −ω₀/3$", page, re.M) and "α_OC" in page
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_held_pin_by_its_symbol(lang):
+    """C5-2.1: the steering held is given as the rate the composition uses, ω_{front wheel
+    rel chassis} = 0 (α likewise), not as "the relative angular velocity at the pin F"; and
+    the chassis' centre, placed in the velocity step and giving its velocities, is not
+    checked again against them at the end."""
+    page = rendered("seed_c5_2_1_tricycle", lang, drawings=False)
+    given = [line for line in page.splitlines() if re.match(r"(Given|Dato|Dada|Datua): ", line)]
+    rel = re.compile(r"^(Given|Dato|Dada|Datua): (ω|α)_\{[^}]+\} = 0\.$")
+    assert sum(bool(rel.match(line)) for line in given) >= 2, given
+    assert not any(w in line for line in given for w in ("pin F", "articulación F", "articulació F", "F giltzadura"))
+    check = {"en": "Check with the velocities", "es": "Comprobación con las velocidades",
+             "ca": "Comprovació amb les velocitats", "eu": "Egiaztapena aurkitutako abiadurekin"}[lang]
+    assert check not in page

@@ -152,8 +152,6 @@ a-intro_relative = With the velocities known, every normal term is known; the ta
 a-intro_normal = With the velocities known, the normal terms are known; the tangential terms are the unknowns.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
-driver-joint = Given: the relative angular velocity at the pin { $joint } is { $value }.
-driver-joint_accel = Given: the relative angular acceleration at the pin { $joint } is { $value }.
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
 driver-whole = Given: { $sym } = { $value }, { $heading }.

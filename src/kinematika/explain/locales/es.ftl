@@ -149,8 +149,6 @@ a-intro_relative = Conocidas las velocidades, todos los términos normales son c
 a-intro_normal = Conocidas las velocidades, los términos normales son conocidos; las incógnitas son los términos tangenciales.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
-driver-joint = Dato: la velocidad angular relativa en la articulación { $joint } es { $value }.
-driver-joint_accel = Dato: la aceleración angular relativa en la articulación { $joint } es { $value }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
 driver-whole = Dato: { $sym } = { $value }, { $heading }.

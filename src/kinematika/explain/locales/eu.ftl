@@ -155,8 +155,6 @@ a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak d
 a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
-driver-joint = Datua: { $joint } giltzadurako abiadura angeluar erlatiboa { $value } da.
-driver-joint_accel = Datua: { $joint } giltzadurako azelerazio angeluar erlatiboa { $value } da.
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
 driver-whole = Datua: { $sym } = { $value }, { $heading }.
