@@ -7,6 +7,7 @@
 - C5-2.1: a driven pin's rate is given by its symbol, ω_{b rel a} = value, the one the
   composition uses; a centre the velocity steps placed and found velocities from is not
   "checked" against them again.
+- Every contact point the page names is defined in the Data section (C5-E.4: J6).
 """
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ import re
 
 import pytest
 
-from .helpers import LANGS, rendered
+from .helpers import LANGS, SEEDS, rendered
 
 
 def _answers(page: str) -> list[str]:
@@ -59,3 +60,14 @@ def test_held_pin_by_its_symbol(lang):
     check = {"en": "Check with the velocities", "es": "Comprobación con las velocidades",
              "ca": "Comprovació amb les velocitats", "eu": "Egiaztapena aurkitutako abiadurekin"}[lang]
     assert check not in page
+
+
+@pytest.mark.parametrize("name", SEEDS)
+def test_every_contact_named_is_in_data(name):
+    """Every contact point the page names (J6 in C5-E.4's structure table and centres, in no
+    equation) is a row of the Data section's points."""
+    page = rendered(name, "en", drawings=False)
+    data, rest = page.split("\n## Structure", 1)
+    rows = {line.split("|")[1].strip() for line in data.splitlines() if line.startswith("| ")}
+    named = set(re.findall(r"\b(J\d+)\b", rest))
+    assert named <= rows, sorted(named - rows)
