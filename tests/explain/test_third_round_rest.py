@@ -8,6 +8,7 @@
   composition uses; a centre the velocity steps placed and found velocities from is not
   "checked" against them again.
 - Every contact point the page names is defined in the Data section (C5-E.4: J6).
+- C5-E.6: the note on the notes' slip writes ℜ_P (a radius of curvature), not ρ (a circle's radius).
 """
 from __future__ import annotations
 
@@ -71,3 +72,15 @@ def test_every_contact_named_is_in_data(name):
     rows = {line.split("|")[1].strip() for line in data.splitlines() if line.startswith("| ")}
     named = set(re.findall(r"\b(J\d+)\b", rest))
     assert named <= rows, sorted(named - rows)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_bicycle_curvature_radius_is_a_length(lang):
+    """C5-E.6: the note correcting the notes writes P's radius of curvature with the page's
+    ℜ (ρ is a circle's radius) and defines the d it uses: ℜ_P = (d − L)²/L with d = R_roda R/r,
+    a length; the same formula as the curvature section's (L r − R R_roda)²/(L r²)."""
+    page = rendered("seed_c5_e6_bicycle", lang, drawings=False)
+    note = page[page.rindex("ℜ = (R/r)² R_roda"):]
+    assert "ρ" not in note
+    assert "ℜ_P = v(P)²/aⁿ = (d − L)²/L" in note and "d = R_roda R/r" in note
+    assert "ℜ_P = |v_P|² / |a_P^n| = (L·r − R·R_roda)²/(L·r²)" in page
