@@ -9,6 +9,8 @@
   "checked" against them again.
 - Every contact point the page names is defined in the Data section (C5-E.4: J6).
 - C5-E.6: the note on the notes' slip writes ℜ_P (a radius of curvature), not ρ (a circle's radius).
+- Lengths with their unit in the model's data sentences (C5-1.2); a position by a symbolic
+  distance said as a distance (C5-2.2's W1); a polygon's o′ explained in its caption (C5-E.1).
 """
 from __future__ import annotations
 
@@ -84,3 +86,20 @@ def test_bicycle_curvature_radius_is_a_length(lang):
     assert "ρ" not in note
     assert "ℜ_P = v(P)²/aⁿ = (d − L)²/L" in note and "d = R_roda R/r" in note
     assert "ℜ_P = |v_P|² / |a_P^n| = (L·r − R·R_roda)²/(L·r²)" in page
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_data_sentences_and_captions_read(lang):
+    """C5-1.2's chosen geometry gives its lengths in the page's unit (s = 3 m, not "s = 3 from
+    K0"); a position by a symbolic distance reads as one (C5-2.2: "W1 is at a distance a
+    from O", not "W1 is a from O"); a polygon that labels a point O's image o′ says why."""
+    page = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang, drawings=False)
+    assert "s = 3 m" in page and "(y = 2 m)" in page and "x = −5 m" in page
+    page = rendered("seed_c5_2_2_articulated", lang, drawings=False)
+    line = next(x for x in page.splitlines() if x.startswith("W1 "))
+    assert {"en": "at a distance a from O", "es": "a una distancia a de O", "ca": "a una distància a d’O",
+            "eu": "O puntutik a distantziara"}[lang] in line, line
+    page = rendered("seed_c5_e1_cavity", lang)
+    said = {"en": "The image of the point O is o′", "es": "La imagen del punto O es o′",
+            "ca": "La imatge del punt O és o′", "eu": "O puntuaren irudia o′ da"}[lang]
+    assert said in page

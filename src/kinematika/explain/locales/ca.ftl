@@ -75,6 +75,7 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         [md] les fletxes
        *[other] les fletxes blaves
     } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls.
+fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
         [md] , els termes l’un darrere l’altre
        *[other] : en negre els termes coneguts{ $unknown ->
@@ -115,15 +116,15 @@ pos-polar_ref = { $point } és a una distància { $distance } { ELISION($origin)
         [vowel] d’{ $origin }
        *[other] de { $origin }
     }, a { $angle } de la direcció { $ref }: { $point } = { $at }.
-pos-frame = { $point } és a { $x } { ELISION($origin) ->
+pos-frame = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a { $y } en perpendicular, a la seva esquerra: { $point } = { $at }.
-pos-frame_right = { $point } és a { $x } { ELISION($origin) ->
+    } segons { $line } i a una distància { $y } en perpendicular, a la seva esquerra: { $point } = { $at }.
+pos-frame_right = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a { $y } en perpendicular, a la seva dreta: { $point } = { $at }.
-pos-frame_on = { $point } és a { $x } { ELISION($origin) ->
+    } segons { $line } i a una distància { $y } en perpendicular, a la seva dreta: { $point } = { $at }.
+pos-frame_on = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
     } segons { $line }: { $point } = { $at }.

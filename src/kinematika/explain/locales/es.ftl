@@ -75,6 +75,7 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         [md] las flechas
        *[other] las flechas azules
     } son las velocidades de sus puntos, a una misma escala, con sus módulos.
+fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
         [md] , los términos uno tras otro
        *[other] : en negro los términos conocidos{ $unknown ->
@@ -106,9 +107,9 @@ pos-turn_shift = { $body } se ha desplazado { $shift } a lo largo de su guía.
 pos-carried = { $point } se mueve con { $body }: { $point } = { $at }.
 pos-polar = { $point } está a una distancia { $distance } de { $origin }, a { $angle } del eje x: { $point } = { $at }.
 pos-polar_ref = { $point } está a una distancia { $distance } de { $origin }, a { $angle } de la dirección { $ref }: { $point } = { $at }.
-pos-frame = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su izquierda: { $point } = { $at }.
-pos-frame_right = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su derecha: { $point } = { $at }.
-pos-frame_on = { $point } está a { $x } de { $origin } según { $line }: { $point } = { $at }.
+pos-frame = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a su izquierda: { $point } = { $at }.
+pos-frame_right = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a su derecha: { $point } = { $at }.
+pos-frame_on = { $point } está a una distancia { $x } de { $origin } según { $line }: { $point } = { $at }.
 pos-circles = { $point } está a una distancia { $r1 } de { $c1 } y { $r2 } de { $c2 }: la intersección de dos circunferencias, de centros { $c1 } y { $c2 }. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
 pos-circle_line = { $point } está a una distancia { $r } de { $c } sobre la recta { $line }: la intersección de una circunferencia de centro { $c } y una recta. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
 pos-lines = { $point } es el punto en que se cortan las rectas { $l1 } y { $l2 }: { $point } = { $at }.

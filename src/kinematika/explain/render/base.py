@@ -351,7 +351,7 @@ class Renderer:
     def caption(self, fig: Figure) -> str:
         """A figure's caption, saying the numbers a symbolic model is drawn at (or that it is
         drawn at sample values of the symbols)."""
-        text = self.message(fig.caption)
+        text = " ".join([self.message(fig.caption)] + [self.message(m) for m in fig.notes])
         if fig.values:
             return text + " " + self.drawn_at(fig.values)
         return text + " " + self.message(Msg("fig.sample")) if fig.sample else text
