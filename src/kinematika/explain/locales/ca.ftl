@@ -306,7 +306,7 @@ centres-intro_named = I amb el nom d’un sòlid ({ $pair }) és el CIR { ELISIO
     } respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, i I amb dos noms units per «REL», el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
+    }, i I amb dos noms units per «resp.» (respecte de), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
 centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),
