@@ -75,7 +75,7 @@ def pair_tag(model: Any, a: str, b: str, lang: Optional[str] = None) -> str:
 
     named = names_bodies(model, lang)
     return centre_subscript(a, b, body_numbers(model), body_labels(model, lang, named=named), named,
-                            part_subscript("sub.rel", lang))
+                            part_subscript("sub.rel_to", lang))
 
 
 def shows_tag(tag: str, name: str) -> bool:
@@ -132,7 +132,7 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
         body = None          # a relative motion names its body always (v_P∈3/2, as the text does)
     from ..model.wording import part_subscript
 
-    return subscript(letter, point, None if body is None else labels[body], rel, part_subscript("sub.rel", lang))
+    return subscript(letter, point, None if body is None else labels[body], rel, part_subscript("sub.rel_to", lang))
 
 
 def contact_name(model: Any, joint_id: str, sol: Any = None) -> str:

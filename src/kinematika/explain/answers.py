@@ -27,9 +27,9 @@ def answers_section(ctx: Ctx) -> Section:
     sec = Section(msg("sec.answers"))
     rows: list = []
     for q in ctx.model.questions:
-        row = [question_label(ctx, q), answer_items(ctx, q, answer(ctx.sol, q))]
-        if row not in rows:        # a fixed point asked of every body it belongs to: once
-            rows.append(row)
+        for row in question_rows(ctx, q, answer_items(ctx, q, answer(ctx.sol, q))):
+            if row not in rows:    # a fixed point asked of every body it belongs to: once
+                rows.append(row)
     if ctx.planar:                 # the spins the notes ask of a vehicle's wheels (notation spin(j))
         from .vehicles import spin_values
 
@@ -40,6 +40,19 @@ def answers_section(ctx: Ctx) -> Section:
         sec.add(msg("answers.none"))
     sec.add(Told("notes"))
     return sec
+
+
+def question_rows(ctx: Ctx, q, items: list) -> list[list]:
+    """The question's rows of the answers table: one, labelled by what is asked; or, for a
+    kind whose parts are quantities of their own (`rows_by_part`: the three coincident
+    points of a contact), a row for each part labelled by its symbol, as the notes list
+    them (C5-1.8: v and a of the ground's point, the wheel's point and the geometric
+    point), after a row with what is asked and the parts without a symbol (the position)."""
+    if not QUESTIONS[q.kind].rows_by_part:
+        return [[question_label(ctx, q), items]]
+    own = [(label, value) for label, value in items if isinstance(label, Sym)]
+    rest = [(label, value) for label, value in items if not isinstance(label, Sym)]
+    return [[question_label(ctx, q), rest]] + [[label, [("", value)]] for label, value in own]
 
 
 def question_label(ctx: Ctx, q) -> Any:

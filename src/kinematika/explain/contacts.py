@@ -3,10 +3,10 @@
 At the contact J of two profiles there are three points: the material point of each body
 and the geometric contact point J^geom, which belongs to neither and shows where the
 contact is. J^geom moves as a point of a bar hinged at the two circles' centres (it stays
-on the line of centres, at a fixed fraction of it: the notes' bar OC, Ω = ω₀/3), or, on a
+on the line of centres, at a fixed fraction of it: the notes' bar OC, ω_OC = ω₀/3), or, on a
 line, as the foot of the perpendicular from the circle's centre (it turns with the line):
 
-    v_C2 = v_C1 + Ω × C1C2          v_J^geom = v_C1 + Ω × C1J
+    v_C2 = v_C1 + ω_C1C2 × C1C2          v_J^geom = v_C1 + ω_C1C2 × C1J
 
 Rolling without slip keeps the material points' velocities equal at every instant, at the
 moving J^geom; differentiating that condition along J^geom gives the accelerations' rule
@@ -104,8 +104,10 @@ class Bar:
 
     @property
     def sym(self) -> Sym:
-        """Ω_C1C2, the bar's angular velocity (ω of the line body for a circle on a line)."""
-        return Sym("Ω", segment(self.c1, self.c2), vector=False) if self.c2 else omega_sym(self.line_body())
+        """ω_C1C2, the bar's angular velocity (ω of the line body for a circle on a line):
+        written ω beside its α_C1C2, as every angular velocity of the page (one letter for
+        one kind of quantity; the notes' Ω is the page's ω)."""
+        return Sym("ω", segment(self.c1, self.c2), vector=False) if self.c2 else omega_sym(self.line_body())
 
     @property
     def alpha_sym(self) -> Sym:
@@ -162,7 +164,7 @@ class Bar:
 
     def geometric(self, level: str) -> Any:
         """v_J^geom (a_J^geom): the motion of the bar's point at J, from its first end C1,
-        v_C1 + Ω × C1J (a_C1 − Ω²·C1J + α × C1J)."""
+        v_C1 + ω × C1J (a_C1 − ω²·C1J + α × C1J)."""
         ctx = self.ctx
         start = point_term(ctx, level, self.c1, self.b1)
         arm = self.rotation(level, self.c1, self.name, False)

@@ -232,9 +232,9 @@ def contact_rows(ctx: Ctx, doc: Any) -> None:
     from .kinds import kind_key
 
     for jid, name in ctx._contacts.items():
-        if name in listed or name not in used:
-            continue
         j = ctx.model.joint(jid)
+        if name in listed or (name not in used and not _in_structure(ctx, j)):
+            continue
         what = msg("what.contact", joint=Name(j.id, "joint"), kind=msg(f"joint.{kind_key(j, ctx.frame)}"),
                    a=Name(j.a, "body"), b=Name(j.b, "body"))
         where: Any = Value(ctx.clean(ctx.pos(name), "len"), "len")
@@ -243,6 +243,16 @@ def contact_rows(ctx: Ctx, doc: Any) -> None:
             where = Inline([point(at), " = ", where])
         table.rows.append([point(name), what, where])
         listed.add(name)
+
+
+def _in_structure(ctx: Ctx, j: Any) -> bool:
+    """Whether the structure table names the joint by its contact (a planar rolling pair
+    with no point of its own, `structure._where`): that contact is then a point the page
+    uses, and the Data section defines it (C5-E.4's J6, named in the table and the centres
+    but in no equation)."""
+    from .kinds import rolls
+
+    return bool(rolls(j) and ctx.planar and not j.at and ctx.sol.geometry(j.id).contact is not None)
 
 
 def _point_at(ctx: Ctx, where: tuple) -> Optional[str]:

@@ -496,6 +496,17 @@ def driven(ctx: Ctx, d) -> list[str]:
 
 
 
+def joint_rate_sym(ctx: Ctx, joint_id: str, level: str) -> Sym:
+    """A driven pin's rate as the notes give it, by the bodies it joins: ω_{b rel a} (α), the
+    second body relative to the first (ω_b alone on the frame), the symbol the composition
+    ω_b = ω_a + ω_{b rel a} writes later (C5-2.1: the steering held, ω_{front wheel rel
+    chassis} = 0) — not "the relative angular velocity at the pin F", a sentence the notes
+    do not write."""
+    j = ctx.model.joint(joint_id)
+    rel = None if j.a == ctx.frame else j.a
+    return (omega_sym if level == "v" else alpha_sym)(j.b, rel)
+
+
 def driver_msg(ctx: Ctx, d, level: str) -> Msg:
     """The known motion the model states, as values (never the model's own text)."""
     given = d.accel if level == "a" else d.value
@@ -510,8 +521,9 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
         turning = turns(ctx.model.joint(d.joint))
         unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")
         value = Value(ctx.clean(inst.value(given, where), unit), unit)
-        key = {(True, "v"): "driver.joint", (True, "a"): "driver.joint_accel", (False, "v"): "driver.slide",
-               (False, "a"): "driver.slide_accel"}[(turning, level)]
+        if turning:                 # the pin's rate as the symbol the composition writes later
+            return msg("driver.omega", sym=joint_rate_sym(ctx, d.joint, level), value=value)
+        key = "driver.slide" if level == "v" else "driver.slide_accel"
         return msg(key, joint=joint(d.joint), value=value)
     unit = "speed" if level == "v" else "accel"
     sym = Sym("v" if level == "v" else "a", ctx.point_label(d.point.point, d.point.body))

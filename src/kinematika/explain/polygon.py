@@ -43,7 +43,17 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     fig = Figure(msg(key), unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
+    fig.notes = pole_notes(fig)
     return fig
+
+
+def pole_notes(fig: Figure) -> list:
+    """The caption's word on a label it would not explain: the image of a point O is o′,
+    since o is the pole (C5-E.1: O the track's centre, whose point of the wheels moves)."""
+    images = [label for label, _, kind in fig.points if kind == "image"]
+    if any(re.search(r"(^|, )o′", label) for label in images):
+        return [msg("fig.o_prime")]
+    return []
 
 
 def degenerate(fig: Figure) -> bool:
@@ -75,6 +85,7 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
                  arrows=_separated(poly.arrows), unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic,
                  values=ctx.drawn_values())
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
+    fig.notes = pole_notes(fig)
     return fig
 
 

@@ -259,6 +259,7 @@ def _carried(ctx: Ctx, b: str, witness: str) -> list:
 def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speeds: Optional[dict] = None) -> list:
     ident = Sym("I", f"{ctx.frame},{b}", vector=False)
     w = omega_sym(b)
+    ctx.worked.add(f"centre:{b}")       # its velocities come from the centre: no check of it by them
     out: list = [msg("vehicle.centre", body=Name(b, "body"), first=why[0], second=why[1], centre=ident,
                      where=Value(ctx.clean(_exact_centre(ctx, b, centre), "len"), "len"))]
     known = set(speeds or ()) - {witness}

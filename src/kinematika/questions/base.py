@@ -238,6 +238,9 @@ class QuestionKind:
                                             # accelerations (an exercise carries a wrong one)
     needs_rate: ClassVar[bool] = True       # an explanation of it needs its body's ω (an instant
                                             # centre's does not: the joints place it)
+    rows_by_part: ClassVar[bool] = False    # an explanation's answers table gives each part
+                                            # labelled by its own symbol a row of its own (the
+                                            # notes' final list of C5-1.8: one line a point)
 
     def answer(self, sol: Solved, q: Asked) -> Any:
         """The raw answer (backend scalars, nested in dicts for a compound answer)."""

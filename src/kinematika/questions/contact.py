@@ -38,6 +38,7 @@ class Contact(QuestionKind):
     level = "acceleration"
     unit_kind = "velocity"
     fields = {"velocity": "velocity", "acceleration": "acceleration", "point": "position"}
+    rows_by_part = True                     # v_J∈a, a_J∈a, …, v_J^geom: one row each, as the notes list them
 
     def answer(self, sol: Solved, q: Asked) -> Any:
         """Each body's material point at J and the geometric contact point (`contact`)."""

@@ -75,6 +75,7 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         [md] les fletxes
        *[other] les fletxes blaves
     } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls.
+fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
         [md] , els termes l’un darrere l’altre
        *[other] : en negre els termes coneguts{ $unknown ->
@@ -115,15 +116,15 @@ pos-polar_ref = { $point } és a una distància { $distance } { ELISION($origin)
         [vowel] d’{ $origin }
        *[other] de { $origin }
     }, a { $angle } de la direcció { $ref }: { $point } = { $at }.
-pos-frame = { $point } és a { $x } { ELISION($origin) ->
+pos-frame = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a { $y } en perpendicular, a la seva esquerra: { $point } = { $at }.
-pos-frame_right = { $point } és a { $x } { ELISION($origin) ->
+    } segons { $line } i a una distància { $y } en perpendicular, a la seva esquerra: { $point } = { $at }.
+pos-frame_right = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a { $y } en perpendicular, a la seva dreta: { $point } = { $at }.
-pos-frame_on = { $point } és a { $x } { ELISION($origin) ->
+    } segons { $line } i a una distància { $y } en perpendicular, a la seva dreta: { $point } = { $at }.
+pos-frame_on = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
     } segons { $line }: { $point } = { $at }.
@@ -185,8 +186,6 @@ a-intro_relative = Conegudes les velocitats, tots els termes normals són conegu
 a-intro_normal = Conegudes les velocitats, els termes normals són coneguts; les incògnites són els termes tangencials.
 a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
 driver-omega = Dada: { $sym } = { $value }.
-driver-joint = Dada: la velocitat angular relativa a l’articulació { $joint } és { $value }.
-driver-joint_accel = Dada: l’acceleració angular relativa a l’articulació { $joint } és { $value }.
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
 driver-whole = Dada: { $sym } = { $value }, { $heading }.
@@ -307,7 +306,7 @@ centres-intro_named = I amb el nom d’un sòlid ({ $pair }) és el CIR { ELISIO
     } respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, i I amb dos noms units per «REL», el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
+    }, i I amb dos noms units per «resp.» (respecte de), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
 centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),

@@ -78,6 +78,7 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         [md] the arrows
        *[other] the blue arrows
     } are the velocities of its points, to one scale, with their magnitudes.
+fig-o_prime = The image of the point O is o′, since o is the pole.
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
         [md] , the terms head to tail
        *[other] : known terms in black{ $unknown ->
@@ -109,9 +110,9 @@ pos-turn_shift = { $body } has moved { $shift } along its guide.
 pos-carried = { $point } is carried with { $body }: { $point } = { $at }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
-pos-frame = { $point } is { $x } from { $origin } along { $line } and { $y } across it, to its left: { $point } = { $at }.
-pos-frame_right = { $point } is { $x } from { $origin } along { $line } and { $y } across it, to its right: { $point } = { $at }.
-pos-frame_on = { $point } is { $x } from { $origin } along { $line }: { $point } = { $at }.
+pos-frame = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, to its left: { $point } = { $at }.
+pos-frame_right = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, to its right: { $point } = { $at }.
+pos-frame_on = { $point } is at a distance { $x } from { $origin } along { $line }: { $point } = { $at }.
 pos-circles = { $point } is at distance { $r1 } from { $c1 } and { $r2 } from { $c2 }: the intersection of two circles, about { $c1 } and about { $c2 }. Of the two points where they meet, it is { $which }: { $point } = { $at }.
 pos-circle_line = { $point } is at distance { $r } from { $c } on the line { $line }: the intersection of a circle about { $c } and a line. Of the two points where they meet, it is { $which }: { $point } = { $at }.
 pos-lines = { $point } is where the lines { $l1 } and { $l2 } meet: { $point } = { $at }.
@@ -152,8 +153,6 @@ a-intro_relative = With the velocities known, every normal term is known; the ta
 a-intro_normal = With the velocities known, the normal terms are known; the tangential terms are the unknowns.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
-driver-joint = Given: the relative angular velocity at the pin { $joint } is { $value }.
-driver-joint_accel = Given: the relative angular acceleration at the pin { $joint } is { $value }.
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
 driver-whole = Given: { $sym } = { $value }, { $heading }.

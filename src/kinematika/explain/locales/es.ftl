@@ -75,6 +75,7 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         [md] las flechas
        *[other] las flechas azules
     } son las velocidades de sus puntos, a una misma escala, con sus módulos.
+fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
         [md] , los términos uno tras otro
        *[other] : en negro los términos conocidos{ $unknown ->
@@ -106,9 +107,9 @@ pos-turn_shift = { $body } se ha desplazado { $shift } a lo largo de su guía.
 pos-carried = { $point } se mueve con { $body }: { $point } = { $at }.
 pos-polar = { $point } está a una distancia { $distance } de { $origin }, a { $angle } del eje x: { $point } = { $at }.
 pos-polar_ref = { $point } está a una distancia { $distance } de { $origin }, a { $angle } de la dirección { $ref }: { $point } = { $at }.
-pos-frame = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su izquierda: { $point } = { $at }.
-pos-frame_right = { $point } está a { $x } de { $origin } según { $line } y a { $y } en perpendicular, a su derecha: { $point } = { $at }.
-pos-frame_on = { $point } está a { $x } de { $origin } según { $line }: { $point } = { $at }.
+pos-frame = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a su izquierda: { $point } = { $at }.
+pos-frame_right = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a su derecha: { $point } = { $at }.
+pos-frame_on = { $point } está a una distancia { $x } de { $origin } según { $line }: { $point } = { $at }.
 pos-circles = { $point } está a una distancia { $r1 } de { $c1 } y { $r2 } de { $c2 }: la intersección de dos circunferencias, de centros { $c1 } y { $c2 }. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
 pos-circle_line = { $point } está a una distancia { $r } de { $c } sobre la recta { $line }: la intersección de una circunferencia de centro { $c } y una recta. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
 pos-lines = { $point } es el punto en que se cortan las rectas { $l1 } y { $l2 }: { $point } = { $at }.
@@ -149,8 +150,6 @@ a-intro_relative = Conocidas las velocidades, todos los términos normales son c
 a-intro_normal = Conocidas las velocidades, los términos normales son conocidos; las incógnitas son los términos tangenciales.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
-driver-joint = Dato: la velocidad angular relativa en la articulación { $joint } es { $value }.
-driver-joint_accel = Dato: la aceleración angular relativa en la articulación { $joint } es { $value }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
 driver-whole = Dato: { $sym } = { $value }, { $heading }.

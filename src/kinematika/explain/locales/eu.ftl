@@ -75,6 +75,7 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         [md] geziak
        *[other] gezi urdinak
     } haren puntuen abiadurak dira, eskala berean, beren moduluekin.
+fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
         [md] , terminoak bata bestearen ondoren
        *[other] : beltzez termino ezagunak{ $unknown ->
@@ -106,9 +107,9 @@ pos-turn_shift = { $body } solidoa { $shift } mugitu da gidan zehar.
 pos-carried = { $point } puntua { $body } solidoarekin mugitzen da: { $point } = { $at }.
 pos-polar = { $point } puntua { $origin } puntutik { $distance } distantziara dago, x ardatzarekiko { $angle } angeluan: { $point } = { $at }.
 pos-polar_ref = { $point } puntua { $origin } puntutik { $distance } distantziara dago, { $ref } norabidearekiko { $angle } angeluan: { $point } = { $at }.
-pos-frame = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, ezkerretara: { $point } = { $at }.
-pos-frame_right = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, eskuinetara: { $point } = { $at }.
-pos-frame_on = { $point } puntua { $origin } puntutik { $x } dago { $line } zuzenean zehar: { $point } = { $at }.
+pos-frame = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, ezkerretara: { $point } = { $at }.
+pos-frame_right = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, eskuinetara: { $point } = { $at }.
+pos-frame_on = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar: { $point } = { $at }.
 pos-circles = { $point } puntua { $c1 } puntutik { $r1 } distantziara eta { $c2 } puntutik { $r2 } distantziara dago: bi zirkunferentziaren ebakidura, { $c1 } eta { $c2 } zentrodunak. Ebakitzen diren bi puntuetatik, { $which } da: { $point } = { $at }.
 pos-circle_line = { $point } puntua { $c } puntutik { $r } distantziara dago, { $line } zuzenean: { $c } zentroko zirkunferentzia baten eta zuzen baten ebakidura. Ebakitzen diren bi puntuetatik, { $which } da: { $point } = { $at }.
 pos-lines = { $point } puntua { $l1 } eta { $l2 } zuzenen ebakidura da: { $point } = { $at }.
@@ -155,8 +156,6 @@ a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak d
 a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
-driver-joint = Datua: { $joint } giltzadurako abiadura angeluar erlatiboa { $value } da.
-driver-joint_accel = Datua: { $joint } giltzadurako azelerazio angeluar erlatiboa { $value } da.
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
 driver-whole = Datua: { $sym } = { $value }, { $heading }.

@@ -357,15 +357,15 @@ class Renderer(ABC):
 
     def relative(self, body: str, other: str) -> str:
         """The subscript of a quantity of `body` relative to `other` (both labels): the
-        body, then the language's word for the relative motion (the notes' REL, the slides'
-        rel, erl) and the reference, `mòb REL braç`; never a slash, which reads as a
+        body, then the language's word for "relative to" (rel, erl; Catalan resp., respecte de,
+        since the notes' REL names the moving frame) and the reference, `mòb resp. braç`; never a slash, which reads as a
         fraction."""
-        return f"{body} {part_subscript('sub.rel', self.lang)} {other}"
+        return f"{body} {part_subscript('sub.rel_to', self.lang)} {other}"
 
     def numbered(self, s: Sym) -> str:
         """A symbol's subscript with its bodies by their labels (`labels`), as the notes and the
-        figures write them: ω_roda, ω_{mòb REL braç} (relative to another body), v_B∈plat,
-        v_{A∈N REL M}, a_J∈3; the instant centres by their numbers, I_13 (I_2,11 once a label
+        figures write them: ω_roda, ω_{mòb resp. braç} (relative to another body), v_B∈plat,
+        v_{A∈N resp. M}, a_J∈3; the instant centres by their numbers, I_13 (I_2,11 once a label
         has two characters)."""
         nums, labels = self.doc.numbers, self.labels()
         if not nums or not s.sub or s.fixed:
@@ -378,7 +378,7 @@ class Renderer(ABC):
             if s.base == "I" and len(parts) == 2:           # the figures' rule: I_biela, or I_13
                 named = self.named()
                 return centre_subscript(parts[0], parts[1], nums, labels if named else self.numbers(), named,
-                                        part_subscript("sub.rel", self.lang))
+                                        part_subscript("sub.rel_to", self.lang))
             if sep == "/" and len(parts) == 2:
                 return self.relative(labels[parts[0]], labels[parts[1]])
             return sep.join(labels[p] for p in parts)
@@ -387,13 +387,13 @@ class Renderer(ABC):
         for i in range(0, len(rest), 2):
             mark, name = rest[i], rest[i + 1] if i + 1 < len(rest) else ""
             name = labels.get(name, name)
-            out += f" {part_subscript('sub.rel', self.lang)} {name}" if mark == "/" else mark + name
+            out += f" {part_subscript('sub.rel_to', self.lang)} {name}" if mark == "/" else mark + name
         return out
 
     def caption(self, fig: Figure) -> str:
         """A figure's caption, saying the numbers a symbolic model is drawn at (or that it is
         drawn at sample values of the symbols)."""
-        text = self.message(fig.caption)
+        text = " ".join([self.message(fig.caption)] + [self.message(m) for m in fig.notes])
         if fig.values:
             return text + " " + self.drawn_at(fig.values)
         return text + " " + self.message(Msg("fig.sample")) if fig.sample else text

@@ -1,0 +1,119 @@
+"""Issue 30, third round, the remaining defects of the second audit (docs/explain.md,
+"Method (third round)"), each a rule checked over the four languages:
+
+- C5-1.8: the notes' final list gives each of the three coincident points its own line: the
+  answers table gives each point's v and a a row of its own, labelled by its symbol; the
+  bar OC's angular velocity is ω_OC beside its α_OC (one letter for one kind of quantity).
+- C5-2.1: a driven pin's rate is given by its symbol, ω_{b rel a} = value, the one the
+  composition uses; a centre the velocity steps placed and found velocities from is not
+  "checked" against them again.
+- Every contact point the page names is defined in the Data section (C5-E.4: J6).
+- C5-E.6: the note on the notes' slip writes ℜ_P (a radius of curvature), not ρ (a circle's radius).
+- Lengths with their unit in the model's data sentences (C5-1.2); a position by a symbolic
+  distance said as a distance (C5-2.2's W1); a polygon's o′ explained in its caption (C5-E.1).
+- Catalan: "relative to" in a subscript is resp. (respecte de); REL stays the moving frame's name.
+"""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from .helpers import LANGS, SEEDS, rendered
+
+
+def _answers(page: str) -> list[str]:
+    """The rows of the answers table (the last table of the page's last sections)."""
+    head = re.search(r"^## (Answers|Respuestas|Respostes|Erantzunak)$", page, re.M)
+    assert head, "no answers section"
+    return [line for line in page[head.end():].splitlines() if line.startswith("| ")]
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_contact_points_one_row_each(lang):
+    """C5-1.8: six rows v/a of J∈ground, J∈wheel and J^geom, each with its value alone."""
+    rows = _answers(rendered("seed_c5_1_8_contact_points", lang, drawings=False))
+    firsts = [row.split("|")[1].strip() for row in rows]
+    for sym in ("v_J^geom", "a_J^geom"):
+        assert sym in firsts, (lang, firsts)
+    wheel = {"en": "wheel", "es": "rueda", "ca": "roda", "eu": "gurpila"}[lang]
+    assert f"a_{{J∈{wheel}}}" in firsts, (lang, firsts)
+    row = rows[firsts.index("a_J^geom")]
+    assert row.split("|")[2].strip() == "(0, −2·r·ω₀²/9)".replace(",", "," if lang == "en" else ";"), row
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_bar_rate_one_letter(lang):
+    """C5-1.8: the bar OC turns at ω_OC = −ω₀/3, with α_OC; no Ω_OC beside them."""
+    page = rendered("seed_c5_1_8_contact_points", lang, drawings=False)
+    assert "Ω_OC" not in page
+    assert re.search(r"^ω_OC = .* = −ω₀/3$", page, re.M) and "α_OC" in page
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_held_pin_by_its_symbol(lang):
+    """C5-2.1: the steering held is given as the rate the composition uses, ω_{front wheel
+    rel chassis} = 0 (α likewise), not as "the relative angular velocity at the pin F"; and
+    the chassis' centre, placed in the velocity step and giving its velocities, is not
+    checked again against them at the end."""
+    page = rendered("seed_c5_2_1_tricycle", lang, drawings=False)
+    given = [line for line in page.splitlines() if re.match(r"(Given|Dato|Dada|Datua): ", line)]
+    rel = re.compile(r"^(Given|Dato|Dada|Datua): (ω|α)_\{[^}]+\} = 0\.$")
+    assert sum(bool(rel.match(line)) for line in given) >= 2, given
+    assert not any(w in line for line in given for w in ("pin F", "articulación F", "articulació F", "F giltzadura"))
+    check = {"en": "Check with the velocities", "es": "Comprobación con las velocidades",
+             "ca": "Comprovació amb les velocitats", "eu": "Egiaztapena aurkitutako abiadurekin"}[lang]
+    assert check not in page
+
+
+@pytest.mark.parametrize("name", SEEDS)
+def test_every_contact_named_is_in_data(name):
+    """Every contact point the page names (J6 in C5-E.4's structure table and centres, in no
+    equation) is a row of the Data section's points."""
+    page = rendered(name, "en", drawings=False)
+    data, rest = page.split("\n## Structure", 1)
+    rows = {line.split("|")[1].strip() for line in data.splitlines() if line.startswith("| ")}
+    named = set(re.findall(r"\b(J\d+)\b", rest))
+    assert named <= rows, sorted(named - rows)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_bicycle_curvature_radius_is_a_length(lang):
+    """C5-E.6: the note correcting the notes writes P's radius of curvature with the page's
+    ℜ (ρ is a circle's radius) and defines the d it uses: ℜ_P = (d − L)²/L with d = R_roda R/r,
+    a length; the same formula as the curvature section's (L r − R R_roda)²/(L r²)."""
+    page = rendered("seed_c5_e6_bicycle", lang, drawings=False)
+    note = page[page.rindex("ℜ = (R/r)² R_roda"):]
+    assert "ρ" not in note
+    assert "ℜ_P = v(P)²/aⁿ = (d − L)²/L" in note and "d = R_roda R/r" in note
+    assert "ℜ_P = |v_P|² / |a_P^n| = (L·r − R·R_roda)²/(L·r²)" in page
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_data_sentences_and_captions_read(lang):
+    """C5-1.2's chosen geometry gives its lengths in the page's unit (s = 3 m, not "s = 3 from
+    K0"); a position by a symbolic distance reads as one (C5-2.2: "W1 is at a distance a
+    from O", not "W1 is a from O"); a polygon that labels a point O's image o′ says why."""
+    page = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang, drawings=False)
+    assert "s = 3 m" in page and "(y = 2 m)" in page and "x = −5 m" in page
+    page = rendered("seed_c5_2_2_articulated", lang, drawings=False)
+    line = next(x for x in page.splitlines() if x.startswith("W1 "))
+    assert {"en": "at a distance a from O", "es": "a una distancia a de O", "ca": "a una distància a d’O",
+            "eu": "O puntutik a distantziara"}[lang] in line, line
+    page = rendered("seed_c5_e1_cavity", lang)
+    said = {"en": "The image of the point O is o′", "es": "La imagen del punto O es o′",
+            "ca": "La imatge del punt O és o′", "eu": "O puntuaren irudia o′ da"}[lang]
+    assert said in page
+
+
+@pytest.mark.parametrize("name", SEEDS)
+def test_catalan_rel_names_the_frame_only(name):
+    """The Catalan notes keep REL as the name of the moving frame (v_REL, Ω_REL); "relative
+    to" joins two names with resp. (respecte de): ω_{politja fixa resp. braç}, never
+    ω_{politja fixa REL braç}, where REL would read as a third body (C5-1.6)."""
+    for fmt in ("md", "html"):
+        text = rendered(name, "ca", fmt, drawings=False)
+        joined = re.search(r"[_>{][^}<\n]*\w REL \w[^}<\n]*[}<]", text)
+        assert joined is None, text[joined.start() - 40:joined.end() + 20]
+    if name == "seed_c5_1_6_belt":
+        assert "ω_{politja fixa resp. braç}" in rendered(name, "ca", "md", drawings=False)
