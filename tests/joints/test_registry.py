@@ -32,7 +32,8 @@ ALLOWED_WORDS = {           # the same words meaning something else, with where 
                 "questions/centres.py", "report/json_answer.py",
                 "report/units.py",                  # the `contact` question's unit
                 "web/rename.py",                    # a renamed body in a `contact` question
-                "cli/cam.py"),                      # a cam design's follower: its `contact` (roller, flat)
+                "cli/cam.py",                       # a cam design's follower: its `contact` (roller, flat)
+                "explain/group.py"),                # a route's segment through a contact (beside "slide")
     "cam": ("model/build.py", "model/schema.py", "model/shape.py", "model/generate_shape.py",
             "cli/cam.py",                           # the `kinematika cam` answer's key
             "web/palette.py", "web/rename.py"),     # a body's `cam:` shape

@@ -38,6 +38,7 @@ ALLOWED_WORDS = {           # the same words meaning something else, with where 
     "contact": ("model/shape.py",
                 "draw/results.py", "draw/scene.py", "draw/marks.py", "web/static/js/figure.js",    # a scene's contact mark
                 "explain/terms.py",                 # a term's kind: a contact's motion
+                "explain/group.py",                 # a route's segment through a contact (beside "slide")
                 "cli/cam.py"),                      # a cam design's follower: its `contact` (roller, flat)
     "axis": ("model/shape.py", "model/schema.py",   # a joint's `axis` key
              "model/builder.py",                    # a disc's axis

@@ -162,7 +162,7 @@ def coincident_point(sol: Any, joint_id: str) -> Optional[str]:
     model = sol.model
     joint = next((j for j in model.joints if j.id == joint_id), None)
     geometry = sol.geometry(joint_id) if joint is not None else None
-    contact = getattr(geometry, "contact", None)
+    contact = geometry.contact if geometry is not None else None
     if joint is None or contact is None:          # no joint, no geometry: no contact
         return None
     try:
