@@ -9,15 +9,18 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 from ..algebra.backend import Numeric, Symbolic, probe_values
 from ..algebra.vectors import Space, dot, sub
 from ..errors import KinematikaError, said_of
 from ..model import model as m
 from ..expressions import Expr, ExpressionError, evaluate
-from ..shapes import Cam, Circle, Curve, Disc, Line, Plane
 from .positions import angle_warnings, positions
+
+if TYPE_CHECKING:
+    from ..model.body_shapes import CamShape, CurveShape, Shape
+    from ..shapes import Cam, Curve
 
 
 @dataclass
@@ -265,31 +268,35 @@ def _centroid(inst: Instant) -> tuple:
     return tuple(sum(c) / len(pts) for c in zip(*pts))
 
 
-def _shape(inst: Instant, s: m.Shape, body: str) -> Any:
+def _shape(inst: Instant, s: Shape, body: str) -> Any:
+    from ..model import body_shapes as ms     # only a body with shapes needs them (start-up)
+    from ..shapes import Circle, Disc, Line, Plane
+
     where = f"bodies.{body}"
-    if isinstance(s, m.Circle):
+    if isinstance(s, ms.Circle):
         return Circle(_at(inst, s.center, s.center_point, body), _radius(inst, s.radius, where),
                       s.center_point)
-    if isinstance(s, m.Line):
+    if isinstance(s, ms.Line):
         return Line(_at(inst, s.through, s.through_point, body),
                     inst.body_direction(body, s.direction, f"{where}.line.direction"), s.through_point)
-    if isinstance(s, m.Disc):
+    if isinstance(s, ms.Disc):
         return Disc(_at(inst, s.center, s.center_point, body), _radius(inst, s.radius, where),
                     inst.body_direction(body, s.axis, f"{where}.disc.axis"), s.center_point)
-    if isinstance(s, m.Plane):
+    if isinstance(s, ms.Plane):
         return Plane(_at(inst, s.through, s.through_point, body),
                      inst.body_direction(body, s.normal, f"{where}.plane.normal"), s.through_point)
     if inst.symbolic:
         raise KinematikaError("schema", "curves-need-numbers", where)
-    if isinstance(s, m.CurveShape):
+    if isinstance(s, ms.CurveShape):
         return _curve(inst, s, body, where)
     return _cam(inst, s, body, where)
 
 
-def _curve(inst: Instant, s: m.CurveShape, body: str, where: str) -> Curve:
+def _curve(inst: Instant, s: CurveShape, body: str, where: str) -> Curve:
     """A spline through the curve's points at this instant (carried with the body when the
     model is moved: a rigid motion moves the spline through moved points)."""
     from ..curves import Spline
+    from ..shapes import Curve
 
     pts = [inst.numvec(_at(inst, () if isinstance(p, str) else p, p if isinstance(p, str) else None, body))
            for p in s.through]
@@ -300,11 +307,12 @@ def _curve(inst: Instant, s: m.CurveShape, body: str, where: str) -> Curve:
     return Curve(spline, role="curve")
 
 
-def _cam(inst: Instant, s: m.CamShape, body: str, where: str) -> Cam:
+def _cam(inst: Instant, s: CamShape, body: str, where: str) -> Cam:
     """A cam's profile and pitch curve, in the cam's own coordinates placed at `center`: a disc
     cam turned by `layout` + σθ (θ its cam angle: the drawing's, advanced by the body's turn
     since), a plate cam by `layout` (its `center` the plate's own origin, which the program's
     travel θ has carried along the frame's x from the follower's line)."""
+    from ..shapes import Cam, Curve
     from .turns import turned
 
     design = s.design.cam

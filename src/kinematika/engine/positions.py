@@ -11,15 +11,17 @@ from __future__ import annotations
 import math
 import re
 import warnings
-from typing import Any, Optional, Protocol
+from typing import TYPE_CHECKING, Any, Optional, Protocol
 
 from .. import limits
 from ..errors import KinematikaError, KinematikaWarning, Names, Num, Said
-from ..model.constructions import (CircleLine, Construction, InFrame, LineDef, Location, Polar,
-                                   TwoCircles, TwoLines, construction_order, uses)
+from ..model.point_order import construction_order
 
 from ..expressions import Expr
 from ..model.model import Direction, Model
+
+if TYPE_CHECKING:
+    from ..model.constructions import CircleLine, Construction, InFrame, LineDef, Location, Polar, TwoCircles, TwoLines
 
 
 class Evaluated(Protocol):
@@ -110,6 +112,8 @@ class _Moving:
 
     def _drawn(self, names: set[str]) -> dict[str, tuple]:
         """The drawn places of `names` (and of the points they are constructed from)."""
+        from ..model.constructions import uses
+
         drawn: dict[str, tuple] = {}
         needed = set(names)
         order = construction_order(self.model.points)
@@ -123,6 +127,7 @@ class _Moving:
         return drawn
 
     def _point(self, name: str, spec: Any, out: dict[str, tuple]) -> tuple:
+        from ..model.constructions import Polar, uses
         from .turns import carry, turn_offset, turned_polar
 
         inst, turn = self.inst, self.placing[name]
@@ -163,8 +168,13 @@ def angle_warnings(inst: Evaluated) -> list[KinematikaWarning]:
     one turn (2π) from zero: angles are radians, so `angle: 30` is 30 rad (1719°, 4.8 turns),
     most likely 30° written without `deg()`. The model is answered as written; the warning
     names the place and the fix. Angles with symbols are not judged."""
+    constructed = {name: spec for name, spec in inst.model.points.items() if not isinstance(spec, tuple)}
+    if not constructed:
+        return []
+    from ..model.constructions import Polar     # only with a constructed point (start-up)
+
     out = []
-    for name, spec in inst.model.points.items():
+    for name, spec in constructed.items():
         if not isinstance(spec, Polar) or _angle_stated(spec.angle, inst.model.parameters, set()):
             continue
         where = f"points.{name}.angle"
@@ -212,6 +222,8 @@ def _bounded(inst: Evaluated, builder: type, spec: Construction, built: tuple, n
         return name_point(inst, name, tuple(inst.backend.simplify(c) for c in built))
     if _size(built) <= NAME_OPS:
         return built
+    from ..model.constructions import uses
+
     for used in uses(spec):
         out[used] = name_point(inst, used, out[used])
     built = builder(inst, out, where).build(spec)
@@ -291,6 +303,8 @@ class _Builder:
         self.bk = inst.backend
 
     def build(self, c: Construction) -> tuple:
+        from ..model.constructions import CircleLine, InFrame, Polar, TwoCircles, TwoLines
+
         if isinstance(c, Polar):
             return self.polar(c)
         if isinstance(c, InFrame):

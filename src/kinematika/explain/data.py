@@ -21,7 +21,7 @@ from __future__ import annotations
 import ast
 from typing import Any, Optional
 
-from ..model.model import Circle, Disc, Line, Plane
+from ..model.body_shapes import Circle, Disc, Line, Plane
 from .context import Ctx
 from .document import Inline, Msg, Name, Described, Section, Table, Told, Value, msg, names, point
 from .planar import driver_msg

@@ -13,7 +13,8 @@ import math
 from typing import Any, Optional
 
 from ..engine.turns import turn_for, turned_polar
-from ..model.constructions import CircleLine, InFrame, LineDef, Polar, TwoCircles, TwoLines, construction_order
+from ..model.constructions import CircleLine, InFrame, LineDef, Polar, TwoCircles, TwoLines
+from ..model.point_order import construction_order
 from .context import Ctx
 from .document import Inline, Msg, Name, Section, Value, msg, point
 

@@ -46,12 +46,12 @@ import numpy as np
 from ..errors import KinematikaError
 from ..shapes import Cam as CamShape
 from ..shapes import Line
-from . import symbols
 from .base import JointGeometry, ModelJoint
 from .contact import Contact
 from .touching import outlines
 
 if TYPE_CHECKING:
+    from . import symbols
     from .seam import DrawContext, Instant, JointView
 
 
@@ -92,6 +92,8 @@ class Cam(Contact):
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """The follower's roller (a circle about its centre `at`, moving with it) or knife
         edge (a pin), and the contact point."""
+        from . import symbols     # drawing only (start-up)
+
         out = symbols.contact_dot(view, ctx)
         if view.at is None:
             return out

@@ -29,11 +29,11 @@ from typing import TYPE_CHECKING, Optional
 from .positions import Residual
 from .capabilities import Centre, PointOn
 from ..errors import Said
-from . import symbols
 from .base import JointGeometry, JointKind, ModelJoint, Rows
 from .touching import Follow, find_touch, outlines, touch_of, touch_row
 
 if TYPE_CHECKING:
+    from . import symbols
     from .seam import DrawContext, Instant, JointView, Level, Mechanism
 
 
@@ -83,6 +83,8 @@ class Contact(JointKind):
 
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """The contact point (a still figure only)."""
+        from . import symbols     # drawing only (start-up)
+
         return symbols.contact_dot(view, ctx)
 
     def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:

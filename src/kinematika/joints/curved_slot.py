@@ -32,12 +32,12 @@ from .positions import Residual
 from .capabilities import Centre, Coordinate, PointOn
 from ..errors import KinematikaError, Said
 from ..shapes import Circle, Curve
-from . import symbols
 from .derivatives import sliding
 from .base import JointGeometry, JointKind, ModelJoint, Rows
 from .touching import Follow, find_touch, outlines, touch_of, touch_row
 
 if TYPE_CHECKING:
+    from . import symbols
     from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 
 
@@ -90,6 +90,8 @@ class CurvedSlot(JointKind):
 
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """The pin of the second body (the slot's curve is drawn as the first body's shape)."""
+        from . import symbols     # drawing only (start-up)
+
         if view.at is None:
             return []
         return symbols.pin(view, ctx, body=None if view.b == ctx.frame else view.b)

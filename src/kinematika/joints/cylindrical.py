@@ -23,12 +23,12 @@ from typing import TYPE_CHECKING, Any, Optional
 
 from .positions import Residual
 from ..errors import KinematikaError, Said
-from . import symbols
 from .base import JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import sliding, turning
 from .positions import across, axis_kept
 
 if TYPE_CHECKING:
+    from . import symbols
     from .seam import DrawContext, Instant, JointView, Level, Mechanism
 
 
@@ -71,6 +71,8 @@ class Cylindrical(JointKind):
 
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """A block on its guide, as a prismatic pair."""
+        from . import symbols     # drawing only (start-up)
+
         return symbols.block_on_guide(view, ctx)
 
     def no_rate(self, where: str) -> KinematikaError:

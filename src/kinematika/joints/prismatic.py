@@ -23,13 +23,13 @@ from typing import TYPE_CHECKING, Any, Optional
 
 from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate
-from . import symbols
 from .base import AXES, JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import same_rotation, sliding
 from .positions import across
 from ..errors import Said
 
 if TYPE_CHECKING:
+    from . import symbols
     from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 
 
@@ -80,6 +80,8 @@ class Prismatic(JointKind):
 
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """A block on its guide (a fixed guide hatched)."""
+        from . import symbols     # drawing only (start-up)
+
         return symbols.block_on_guide(view, ctx)
 
     def rate(self, geo: JointGeometry, lv: Level) -> Scalar:

@@ -25,13 +25,13 @@ import numpy as np
 
 from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate, PointOn
-from . import symbols
 from .base import AXES, JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import coincident, turning
 from .positions import axis_kept, coincide
 from ..errors import Said
 
 if TYPE_CHECKING:
+    from . import symbols
     from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 
 
@@ -93,6 +93,8 @@ class Revolute(JointKind):
 
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """A pin; on a fixed pivot's triangle when the frame is one of its bodies; its axis (3D)."""
+        from . import symbols     # drawing only (start-up)
+
         if view.at is None:
             return []
         out = symbols.support(view.at, ctx) if ctx.frame in (view.a, view.b) else []

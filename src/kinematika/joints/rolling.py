@@ -29,7 +29,6 @@ from .capabilities import Centre
 from ..algebra.vectors import sub
 from ..errors import Said
 from ..shapes import Circle, Disc, Plane
-from . import symbols
 from .base import AXES, Holonomic, JointGeometry, JointKind, ModelJoint, Rows
 from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
@@ -37,6 +36,7 @@ from .rolling_contact import contact_of, drawn_pair, find_contact
 from .tangency import circles_tangency
 
 if TYPE_CHECKING:
+    from . import symbols
     from .seam import DrawContext, Instant, JointView, Level, Mechanism, Pose
 
 
@@ -85,6 +85,8 @@ class Rolling(JointKind):
 
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """The contact point (a still figure only: it is no body's point)."""
+        from . import symbols     # drawing only (start-up)
+
         return symbols.contact_dot(view, ctx)
 
     def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:

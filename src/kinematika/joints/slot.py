@@ -28,13 +28,13 @@ import numpy as np
 
 from .positions import Residual
 from .capabilities import Centre, Chain, Coordinate, PointOn
-from . import symbols
 from .base import JointGeometry, JointKind, ModelJoint, Rows, off_line
 from .derivatives import sliding
 from .positions import across
 from ..errors import Said
 
 if TYPE_CHECKING:
+    from . import symbols
     from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
 
 
@@ -78,6 +78,8 @@ class Slot(JointKind):
 
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """The slot of the first body (a rounded outline along its line) and the pin in it."""
+        from . import symbols     # drawing only (start-up)
+
         if view.at is None or view.along is None:
             return []
         at, along = np.asarray(view.at, dtype=float), np.asarray(view.along, dtype=float)

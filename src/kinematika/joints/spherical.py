@@ -19,13 +19,13 @@ from typing import TYPE_CHECKING, Optional
 
 from .positions import Residual
 from .capabilities import PointOn
-from . import symbols
 from .base import AXES, JointGeometry, JointKind, Rows
 from .derivatives import coincident
 from .positions import coincide
 from ..errors import Said
 
 if TYPE_CHECKING:
+    from . import symbols
     from .seam import DrawContext, Instant, JointView, Level, Mechanism
 
 
@@ -53,6 +53,8 @@ class Spherical(JointKind):
 
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """A pin with a dot (a ball), on a fixed pivot when the frame is one of its bodies."""
+        from . import symbols     # drawing only (start-up)
+
         if view.at is None:
             return []
         out = symbols.support(view.at, ctx) if ctx.frame in (view.a, view.b) else []

@@ -26,12 +26,12 @@ import numpy as np
 
 from .capabilities import Centre, PointOn, Side
 from ..algebra.vectors import dot, sub
-from . import symbols
 from .base import Holonomic, JointGeometry, JointKind, Rows
 from .derivatives import coincident
 from ..errors import Said
 
 if TYPE_CHECKING:
+    from . import symbols
     from .seam import DrawContext, Instant, JointView, Level, Mechanism
 
 
@@ -75,6 +75,8 @@ class Wheel(JointKind):
 
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
         """A knife edge seen from above: a narrow dark wheel along its rolling direction."""
+        from . import symbols     # drawing only (start-up)
+
         if view.at is None or view.along is None:
             return []
         wheel = symbols.rectangle(np.asarray(view.at, dtype=float), np.asarray(view.along, dtype=float),

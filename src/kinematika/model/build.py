@@ -16,16 +16,18 @@ from ..questions import QUESTIONS
 from ..text import brief
 from . import shape
 from .plain import Record
-from .constructions import Construction, ConstructionReader, construction_order
+from .point_order import construction_order
 from ..expressions import Expr, ExpressionError, parse
-from .model import (Body, CamShape, Circle, CurveShape, Direction, Disc, Driver, ExprVector, Joint,
-                    Line, Model, Parameter, Plane, PointPair, PointRef, Question, Shape, Simulate, Sweep)
+from .model import (Body, Direction, Driver, ExprVector, Joint, Model, Parameter, PointPair, PointRef, Question,
+                    Simulate, Sweep)
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
     from pydantic_core import ErrorDetails
 
     from . import schema
+    from .body_shapes import CamShape, Shape
+    from .constructions import Construction
 
 
 
@@ -150,11 +152,18 @@ class _Builder:
             if not name.strip() or "@" in name:
                 raise KinematikaError("schema", "name-invalid", f"{kind}.{name}", name=name)
         symbolic = any(p.value is None for p in params.values())
-        reader = ConstructionReader(self.expr, self.vector, set(self.spec.points), symbolic)
         out: dict[str, ExprVector | Construction] = {}
+        reader = None
         for name, raw in self.spec.points.items():
             where = f"points.{name}"
-            out[name] = self.vector(raw, where) if isinstance(raw, list) else reader.read(raw, where)
+            if isinstance(raw, list):
+                out[name] = self.vector(raw, where)
+                continue
+            if reader is None:           # the first constructed point (start-up: docs/architecture.md)
+                from .constructions import ConstructionReader
+
+                reader = ConstructionReader(self.expr, self.vector, set(self.spec.points), symbolic)
+            out[name] = reader.read(raw, where)
         construction_order(out)             # a cycle is an error here, with its place
         return out
 
@@ -213,6 +222,10 @@ class _Builder:
 
     def shapes(self, raw: schema.BodySpec | Record, where: str) -> list[Shape]:
         shapes: list[Shape] = []
+        if not (raw.circle or raw.line or raw.disc or raw.plane or raw.curve or raw.cam):
+            return shapes
+        from .body_shapes import CamShape, Circle, CurveShape, Disc, Line, Plane    # (start-up)
+
         if raw.circle:
             center, cp = self.location(raw.circle.center, f"{where}.circle.center")
             shapes.append(Circle(center, self.expr(raw.circle.radius, f"{where}.circle.radius"), cp))
@@ -244,6 +257,7 @@ class _Builder:
         """A cam's profile: its design checked as a cam-design file's (`cams.spec.design`,
         errors named in the body), placed at its centre."""
         from ..cams.spec import CamFileSpec, CamSpec, SpeedSpec, design
+        from .body_shapes import CamShape
 
         center, cp = self.location(raw.center, f"{where}.center")
         spec = CamFileSpec(cam=CamSpec(kind=raw.kind, base=raw.base, rotation=raw.rotation),

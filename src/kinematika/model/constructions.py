@@ -9,7 +9,7 @@ parsed constructions (expressions unevaluated) and reads them from the checked f
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable, Mapping, Optional, Protocol, TypeGuard, Union
+from typing import Any, Callable, Optional, Protocol, TypeGuard, Union
 
 from ..errors import KinematikaError
 from ..expressions import Expr
@@ -99,32 +99,6 @@ def uses(c: Construction) -> list[str]:
     elif isinstance(c, TwoLines):
         locs = [loc for line in c.lines for loc in (line.through, line.toward)]
     return [loc for loc in locs if isinstance(loc, str)]
-
-
-def construction_order(points: Mapping[str, Union[ExprVector, Construction]],
-                       extra: Optional[Mapping[str, list[str]]] = None) -> list[str]:
-    """Every point's name, each after the points its construction uses (and the points
-    `extra` says it is placed from); a cycle is an error."""
-    order: list[str] = []
-    state: dict[str, int] = {}             # 1: being visited, 2: done
-
-    def visit(name: str, path: list[str]) -> None:
-        if state.get(name) == 2:
-            return
-        if state.get(name) == 1:
-            cycle = path[path.index(name):] + [name]
-            raise KinematikaError("schema", "construction-cycle", f"points.{name}", cycle=" → ".join(cycle))
-        state[name] = 1
-        spec = points[name]
-        before = [] if isinstance(spec, tuple) else uses(spec)
-        for used in before + list((extra or {}).get(name, ())):
-            visit(used, path + [name])
-        state[name] = 2
-        order.append(name)
-
-    for name in points:
-        visit(name, [])
-    return order
 
 
 ExprOf = Callable[[object, str], Expr]

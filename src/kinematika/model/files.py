@@ -430,7 +430,7 @@ def _model_cam(model: Model, where: str) -> Any:
 
     from ..algebra.backend import Numeric
     from ..expressions import ExpressionError, evaluate
-    from .model import CamShape
+    from .body_shapes import CamShape
     from .overrides import numeric_parameters
 
     for body in model.bodies.values():

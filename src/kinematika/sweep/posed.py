@@ -23,8 +23,8 @@ import numpy as np
 from ..engine.instant import instantiate
 from ..errors import KinematikaError
 from ..expressions import Expr, ExprVector, parse
-from ..model.model import (Body, CamShape, Circle, CurveShape, Direction, Disc, Joint, Line, Model, Plane,
-                           PointPair)
+from ..model.body_shapes import CamShape, Circle, CurveShape, Disc, Line, Plane
+from ..model.model import Body, Direction, Joint, Model, PointPair
 from ..model.constructions import Construction
 from .result import SweepResult
 

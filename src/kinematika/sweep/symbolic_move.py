@@ -22,7 +22,8 @@ from ..engine.turns import turn_for
 from ..errors import KinematikaError, Said
 from ..expressions import parse
 from ..joints.capabilities import Coordinate
-from ..model.model import Line, Model, Turn
+from ..model.body_shapes import Line
+from ..model.model import Model, Turn
 from ..model.overrides import with_parameters
 from .advance import advanced, swept_to
 from .carried import Input, Path, carried_turns, fixture, placed
