@@ -134,10 +134,13 @@ def pytest_collection_modifyitems(config, items) -> None:
 
 def pytest_runtest_logreport(report) -> None:
     """With KINEMATIKA_DURATIONS=FILE, each test's phase, outcome and seconds are appended to
-    FILE as they finish (a run stopped half way still says where its time went)."""
+    FILE as they finish (a run stopped half way still says where its time went), once a test
+    (by the worker that ran it, not again by xdist's controller)."""
     path = os.environ.get("KINEMATIKA_DURATIONS")
     if hasattr(report, "node"):         # under xdist, the controller's copy of a worker's report
         return
-    if path and (report.when == "call" or report.outcome != "passed"):
+    # a test's call; its setup or teardown when it takes a tenth of a second or more (a
+    # module's or a worker's shared fixture: a server, a browser, a solved model) or fails
+    if path and (report.when == "call" or report.outcome != "passed" or report.duration >= 0.1):
         with open(path, "a", encoding="utf-8") as out:
             out.write(f"{report.duration:.2f}\t{report.outcome}\t{report.when}\t{report.nodeid}\n")
