@@ -90,8 +90,10 @@ def pytest_xdist_auto_num_workers(config) -> int:
 # one worker: their files share what a helper module caches per process (tests/explain: each
 # example solved and explained once, each seed's page written once per language, by
 # `tests/explain/helpers`; tests/examples: each example solved once, by
-# `tests/examples/helpers`), which, handed to different workers, each worker made again.
-ONE_WORKER = ("tests/explain/", "tests/examples/")
+# `tests/examples/helpers`; tests/exercise: the session's two exercises of 30 variants and
+# their folders, `tests/exercise/conftest`), which, handed to different workers, each worker
+# made again.
+ONE_WORKER = ("tests/explain/", "tests/examples/", "tests/exercise/")
 
 
 def unit(nodeid: str) -> str:
