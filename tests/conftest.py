@@ -86,16 +86,48 @@ def pytest_xdist_auto_num_workers(config) -> int:
     return (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1) + 1
 
 
+# Test directories whose files are one unit of work for xdist, run one after the other by
+# one worker: their files share what a helper module caches per process (tests/explain: each
+# example solved and explained once, each seed's page written once per language, by
+# `tests/explain/helpers`; tests/examples: each example solved once, by
+# `tests/examples/helpers`; tests/exercise: the session's two exercises of 30 variants and
+# their folders, `tests/exercise/conftest`), which, handed to different workers, each worker
+# made again.
+ONE_WORKER = ("tests/explain/", "tests/examples/", "tests/exercise/")
+
+
+def unit(nodeid: str) -> str:
+    """The unit of work a test belongs to: its file, or its directory when the directory is
+    one of `ONE_WORKER`."""
+    path = nodeid.split("::", 1)[0]
+    return next((d for d in ONE_WORKER if path.startswith(d)), path)
+
+
+@pytest.hookimpl(tryfirst=True)         # before xdist's own, which answers for every --dist
+def pytest_xdist_make_scheduler(config, log):
+    """`--dist loadfile`, with the files of a `ONE_WORKER` directory as one unit."""
+    if config.getvalue("dist") != "loadfile":
+        return None
+    from xdist.scheduler import LoadFileScheduling
+
+    class LoadUnitScheduling(LoadFileScheduling):
+        def _split_scope(self, nodeid: str) -> str:
+            return unit(nodeid)
+
+    return LoadUnitScheduling(config, log)
+
+
 def pytest_collection_modifyitems(config, items) -> None:
-    """The order in which the workers are handed the test files (`--dist loadfile`, with
-    xdist's own reordering off in pyproject.toml): first the files marked `early(rank)`,
-    lowest rank first (mypy's single run over the package, 0; the browser pages, the exact
-    solves: minutes of one worker that, handed out last, would end the run alone), then the
-    others by their number of tests, most first (what xdist's reordering did). A file's tests
-    keep their order; the order depends on nothing but the files."""
+    """The order in which the workers are handed the units of work (`unit`: a test file, or
+    a `ONE_WORKER` directory; `--dist loadfile`, with xdist's own reordering off in
+    pyproject.toml): first the units marked `early(rank)`, lowest rank first (mypy's single
+    run over the package, 0; the browser pages, the exact solves: minutes of one worker
+    that, handed out last, would end the run alone), then the others by their number of
+    tests, most first (what xdist's reordering did). A file's tests keep their order; the
+    order depends on nothing but the files."""
     files: dict[str, list] = {}
     for item in items:
-        files.setdefault(item.nodeid.split("::", 1)[0], []).append(item)
+        files.setdefault(unit(item.nodeid), []).append(item)
     def rank(tests: list) -> tuple:
         marks = [m for t in tests for m in t.iter_markers("early")]
         return (min((m.args[0] if m.args else 1) for m in marks) if marks else 2, -len(tests))
@@ -104,8 +136,13 @@ def pytest_collection_modifyitems(config, items) -> None:
 
 def pytest_runtest_logreport(report) -> None:
     """With KINEMATIKA_DURATIONS=FILE, each test's phase, outcome and seconds are appended to
-    FILE as they finish (a run stopped half way still says where its time went)."""
+    FILE as they finish (a run stopped half way still says where its time went), once a test
+    (by the worker that ran it, not again by xdist's controller)."""
     path = os.environ.get("KINEMATIKA_DURATIONS")
-    if path and (report.when == "call" or report.outcome != "passed"):
+    if hasattr(report, "node"):         # under xdist, the controller's copy of a worker's report
+        return
+    # a test's call; its setup or teardown when it takes a tenth of a second or more (a
+    # module's or a worker's shared fixture: a server, a browser, a solved model) or fails
+    if path and (report.when == "call" or report.outcome != "passed" or report.duration >= 0.1):
         with open(path, "a", encoding="utf-8") as out:
             out.write(f"{report.duration:.2f}\t{report.outcome}\t{report.when}\t{report.nodeid}\n")

@@ -64,7 +64,17 @@ def _variables(node) -> set[str]:
     return found
 
 
-CATALOGUES = {lang: _messages(lang) for lang in LANGS}
+class _Catalogues(dict):
+    """Each language's messages, parsed when a test first reads them (not when the module is
+    imported: every xdist worker imports every test module, and the four catalogues take
+    about a second of CPU to parse)."""
+
+    def __missing__(self, lang: str) -> dict[str, fluent.Message]:
+        self[lang] = _messages(lang)
+        return self[lang]
+
+
+CATALOGUES = _Catalogues()
 
 
 @pytest.mark.parametrize("lang", [lang for lang in LANGS if lang != "en"])

@@ -21,18 +21,42 @@ SEEDS = sorted(p.stem for p in EXAMPLES.glob("seed_*.yaml"))
 LANGS = ("en", "es", "ca", "eu")
 
 
+# the example each document `explained` made is the explanation of (by the document's id)
+_EXPLAINED: dict[int, tuple[str, Document]] = {}
+
+
 @functools.lru_cache(maxsize=None)
 def explained(name: str) -> tuple[kinematika.Solution, Document]:
     sol = kinematika.solve(EXAMPLES / f"{name}.yaml")
-    return sol, build(sol)
+    doc = build(sol)
+    _EXPLAINED[id(doc)] = (name, doc)
+    return sol, doc
+
+
+def rendered(name: str, lang: str, fmt: str = "md", drawings: bool = True) -> str:
+    """An example's explanation written in `lang` and `fmt`, built and written once a run
+    (the test files of tests/explain run in one process: tests/conftest.py's `ONE_WORKER`)."""
+    return _rendered(name, lang, fmt, drawings)
 
 
 @functools.lru_cache(maxsize=None)
-def rendered(name: str, lang: str, fmt: str = "md", drawings: bool = True) -> str:
-    """An example's explanation written in `lang` and `fmt`, built and written once a run."""
+def _rendered(name: str, lang: str, fmt: str, drawings: bool) -> str:
     from kinematika.explain import render
 
     _, doc = explained(name)
+    return render(doc, lang, fmt, drawings=drawings)
+
+
+def render_of(doc: Document, lang: str, fmt: str = "md", drawings: bool = True) -> str:
+    """`kinematika.explain.render(doc, lang, fmt, drawings=drawings)`, read from `rendered`'s
+    cache when `doc` is an example's explanation made by `explained` (the same document,
+    written the same way). Not for a test that patches the drawings: the patched page would
+    be cached."""
+    from kinematika.explain import render
+
+    found = _EXPLAINED.get(id(doc))
+    if found is not None and found[1] is doc:
+        return rendered(found[0], lang, fmt, drawings)
     return render(doc, lang, fmt, drawings=drawings)
 
 

@@ -10,11 +10,10 @@ import pytest
 
 from kinematika.draw.options import DrawOptions
 from kinematika.draw.build import build_scene
-from kinematika.explain import render
 
 from tests.conftest import KINDS, sampled
 
-from .helpers import EXAMPLES, explained
+from .helpers import EXAMPLES, explained, render_of
 from .test_text import plain_text
 
 # the notes' examples of each kind (every one in a deep run)
@@ -37,7 +36,7 @@ WORD = re.compile(r"[A-Za-zÀ-ÿ·]+")
 def text(name: str, lang: str) -> str:
     """The explanation as a reader reads it (once per example and language)."""
     _, doc = explained(name)
-    return plain_text(render(doc, lang, "md", drawings=False), "md")
+    return plain_text(render_of(doc, lang, "md", drawings=False), "md")
 
 
 @pytest.mark.parametrize("lang", ["es", "ca", "eu"])
@@ -55,4 +54,4 @@ def test_no_english_mechanism_word(name, lang):
 def test_titles_are_the_notes(lang):
     _, doc = explained("seed_c5_1_4_epicyclic")
     title = {"ca": "Transmissió epicicloidal", "es": "Transmisión epicicloidal", "eu": "Transmisio epizikloidala"}[lang]
-    assert render(doc, lang, "md", drawings=False).lstrip().startswith(f"# {title}")
+    assert render_of(doc, lang, "md", drawings=False).lstrip().startswith(f"# {title}")

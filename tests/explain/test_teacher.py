@@ -13,7 +13,7 @@ from kinematika.explain.catalogue import LANGS
 
 from tests.conftest import KINDS, sampled
 
-from .helpers import WORKED, explained
+from .helpers import WORKED, explained, render_of
 from .test_text import plain_text
 
 # the notes' examples of each kind (every one in a deep run)
@@ -34,7 +34,7 @@ COLOURS = re.compile(r"(?i)\b(red|blue|black|green|grey|gray|rojo|roja|azul|azul
 def test_no_explanation_mentions_the_solver(name, lang):
     _, doc = explained(name)
     for fmt in ("md", "html"):
-        text = plain_text(render(doc, lang, fmt, drawings=False), fmt)
+        text = plain_text(render_of(doc, lang, fmt, drawings=False), fmt)
         found = SOLVER.search(text)
         assert found is None, (name, lang, fmt, text[max(0, found.start() - 80):found.end() + 40])
 
@@ -68,7 +68,7 @@ def test_no_markdown_mentions_colours(name, lang, monkeypatch):
 def test_the_notes_grammar(name, lang, wrong, right):
     """Catalan, Spanish and Basque as the notes write them (issue 30's audit, its grammar points)."""
     _, doc = explained(name)
-    text = render(doc, lang, "md", drawings=False)
+    text = render_of(doc, lang, "md", drawings=False)
     assert wrong not in text and right in text
 
 def test_count_reads_plural_names():
@@ -80,7 +80,7 @@ def test_count_reads_plural_names():
 
 def _data_text(doc, lang: str = "en") -> str:
     """The Data section as a reader reads it (Markdown), up to the next section."""
-    text = render(doc, lang, "md", drawings=False)
+    text = render_of(doc, lang, "md", drawings=False)
     start = text.index("\n## ")
     return text[start:text.index("\n## ", start + 1)]
 
@@ -153,7 +153,7 @@ def test_the_tricycles_spin_is_derived_as_the_notes_give_it():
     env = {str(k): k for k in getattr(spins[0].value.value, "free_symbols", set())}
     got = spins[0].value.value.subs({env[n]: sym for n, sym in zip(("L", "s", "v0", "r"), (L, s, v0, r)) if n in env})
     assert sympy.simplify(got - by_hand) == 0
-    answers = render(doc, "en", "md", drawings=False).split("## Answers")[1]
+    answers = render_of(doc, "en", "md", drawings=False).split("## Answers")[1]
     assert "φ̇" in answers and "φ̇ = v_RL / *r*" not in answers
 
 
@@ -179,7 +179,7 @@ def test_a_chassis_on_one_axle_translates_because_its_wheels_share_a_velocity():
     assert [m.key for m in said] == ["vehicle.translation_equal"]
     assert {said[0].args["p"].text, said[0].args["q"].text} == {"W1", "W2"}
     for lang, words in (("ca", "tenen la mateixa velocitat"), ("eu", "abiadura bera dute")):
-        text = render(doc, lang, "md", drawings=False)
+        text = render_of(doc, lang, "md", drawings=False)
         assert words in text and "paral·leles: el seu CIR" not in text and "zuzenak paraleloak dira" not in text
 
 
@@ -225,7 +225,7 @@ def test_every_point_says_what_it_is(name):
     a point of its bodies)."""
     _, doc = explained(name)
     for lang, header in (("ca", "punt"), ("eu", "puntua")):
-        table = _points_table(render(doc, lang, "md", drawings=False), header)
+        table = _points_table(render_of(doc, lang, "md", drawings=False), header)
         assert table and all(table.values()), (name, lang, [p for p, w in table.items() if not w])
 
 
@@ -234,11 +234,11 @@ def test_what_a_point_is_comes_from_the_joints_and_shapes():
     floor; the slides' r_pairs: B is the pin between N and P (a joint
     is said by what it is, never by its id)."""
     _, doc = explained("seed_c5_1_2_bar_on_inclined_wheels")
-    table = _points_table(render(doc, "ca", "md", drawings=False), "punt")
+    table = _points_table(render_of(doc, "ca", "md", drawings=False), "punt")
     assert table["O"] == "centre de la *roda esquerra*"
     assert table["J"].startswith("contacte amb lliscament") and "*barra OJ*" in table["J"]
     _, doc = explained("seed_001_r_pairs")
-    table = _points_table(render(doc, "eu", "md", drawings=False), "puntua")
+    table = _points_table(render_of(doc, "eu", "md", drawings=False), "puntua")
     assert table["B"].startswith("giltzadura (R), *N elementua* eta *P elementua*")
 
 
@@ -277,7 +277,7 @@ def test_no_seed_names_aronhold_kennedy(name, lang, monkeypatch):
 ])
 def test_a_centre_is_found_as_the_notes_find_it(name, lang, line):
     _, doc = explained(name)
-    assert line in render(doc, lang, "md", drawings=False)
+    assert line in render_of(doc, lang, "md", drawings=False)
 
 
 # velocity drivers whose component is the point's whole motion (the notes' v_U = (←v)), by
@@ -301,13 +301,13 @@ def test_a_drivers_whole_velocity_is_stated_as_the_vector(name):
     datum that is the point's whole velocity is the vector, with its direction in words —
     in the Data section and where the step states it; a true component stays one."""
     _, doc = explained(name)
-    text = render(doc, "en", "md", drawings=False)
+    text = render_of(doc, "en", "md", drawings=False)
     data = _data_text(doc)
     for line in WHOLE[name]:
         assert line in data, (name, line)
     assert not re.search(r"component of v_", text), name
     if name == "seed_c5_e4_upper_wheel":
-        eu = render(doc, "eu", "md", drawings=False)
+        eu = render_of(doc, "eu", "md", drawings=False)
         assert "Datua: v_U = (−v; 0), ezkerrerantz." in eu
 
 

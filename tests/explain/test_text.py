@@ -8,12 +8,11 @@ import re
 
 import pytest
 
-from kinematika.explain import render
 from kinematika.explain.catalogue import LANGS, catalogue
 
 from tests.conftest import KINDS, sampled
 
-from .helpers import ALL, explained
+from .helpers import ALL, explained, render_of
 
 NAMES = sampled(ALL, KINDS)
 
@@ -75,7 +74,7 @@ def model_words(sol, lang: str | None = None) -> set[str]:
 @pytest.mark.parametrize("name", NAMES)
 def test_reads_as_text(name, lang, fmt):
     sol, doc = explained(name)
-    text = plain_text(render(doc, lang, fmt, drawings=False), fmt)
+    text = plain_text(render_of(doc, lang, fmt, drawings=False), fmt)
     keys = set(catalogue("en").keys())
     keys |= {k.replace("-", ".") for k in keys}
     found = set(re.findall(r"[A-Za-z][\w]*(?:[-.][\w]+)+", text)) & keys
@@ -102,7 +101,7 @@ def test_markdown_tables_keep_their_columns(name):
     """Every row of a Markdown table has the header's cells: a formula's bars |x| are
     escaped (the tricycle's speed √2·v₀·|L − s|/(2·L) split its row in two cells)."""
     _, doc = explained(name)
-    lines = render(doc, "en", "md", drawings=False).splitlines()
+    lines = render_of(doc, "en", "md", drawings=False).splitlines()
     for i, line in enumerate(lines[:-1]):
         if line.startswith("| ") and lines[i + 1].startswith("| ---"):
             header = len(BAR.findall(line))

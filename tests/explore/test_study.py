@@ -5,8 +5,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
-import pyarrow.parquet as pq
 import pytest
 from typer.testing import CliRunner
 
@@ -38,6 +36,7 @@ def cluster():
 
 
 def test_a_cluster_of_two_workers_gives_the_rows_of_one_process(model, cluster):
+    import pandas as pd           # in the tests, not at the top: every worker imports every test module
     from dask.distributed import Client
 
     here = ke.explore(model, VARY, METRICS, samples=100, seed=4, chunk=25, workers=1)
@@ -54,6 +53,9 @@ def test_the_command_on_a_scheduler_address_writes_the_same_rows(model, cluster,
                   ["-o", str(tmp_path / "there.parquet"), "--scheduler", cluster.scheduler_address]):
         result = CliRunner().invoke(app, args + extra)
         assert result.exit_code == 0, result.output
+    import pandas as pd
+    import pyarrow.parquet as pq
+
     here, there = (pq.read_table(tmp_path / f).to_pandas() for f in ("here.parquet", "there.parquet"))
     pd.testing.assert_frame_equal(here, there)
     assert len(here) == 144 and list(here.columns) == ["a", "c", "assembles", "reason", "grashof",
@@ -107,6 +109,8 @@ def test_an_interrupted_study_resumes_without_losing_or_repeating_designs(model,
     write_study(study, out, resume=True, workers=1)
     assert computed == [3, 4, 5, 6, 7] and not parts.exists()
     assert out.read_text() == whole.read_text()
+    import pandas as pd
+
     table = pd.read_csv(out)
     assert len(table) == 400 and not table.duplicated(["a", "c"]).any()
 

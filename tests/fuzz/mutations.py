@@ -8,13 +8,37 @@ from __future__ import annotations
 
 import copy
 from pathlib import Path
+from collections.abc import Iterator, Mapping
 from typing import Any
 
 import yaml
 from hypothesis import strategies as st
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-TREES = {p.name: yaml.safe_load(p.read_text(encoding="utf-8")) for p in sorted(EXAMPLES.glob("*.yaml"))}
+
+
+class _Trees(Mapping):
+    """Each example's tree by file name, read when first asked for (not when the module is
+    imported: every xdist worker imports every test module, and reading all the examples
+    takes about a second of CPU); a tree is read once a process."""
+
+    def __init__(self, paths: list[Path]) -> None:
+        self._paths = {p.name: p for p in paths}
+        self._trees: dict[str, Any] = {}
+
+    def __getitem__(self, name: str) -> Any:
+        if name not in self._trees:
+            self._trees[name] = yaml.safe_load(self._paths[name].read_text(encoding="utf-8"))
+        return self._trees[name]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._paths)
+
+    def __len__(self) -> int:
+        return len(self._paths)
+
+
+TREES = _Trees(sorted(EXAMPLES.glob("*.yaml")))
 
 # names that have broken something somewhere: markup, terminal controls, bidi overrides,
 # lone surrogates, NFKC look-alikes, keywords, the old keyword mangling, very long ones
