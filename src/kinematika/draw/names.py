@@ -261,6 +261,11 @@ def bare(label: str) -> str:
     return out.replace("\0", "_")
 
 
+# where a label's subscript names a body: a centre's (I_13, Γ_13), after "∈" (v_{A∈3}) or "/"
+_BODY_SLOT = re.compile(r"(?:^\$[IΓ]_\{?|\{\\in\}|/)(?:\\mathrm\{)?\d")
+
+
 def numbered(label: str) -> bool:
-    """Whether a label names bodies by their numbers (then the figure says which is which)."""
-    return r"{\in}" in label or ("_{" in label and "/" in label) or label.startswith(("$I_", "$Γ_"))
+    """Whether a label names bodies by their numbers (then the figure says which is which):
+    I_13, v_{A∈3}, a_{B/2}; a label that names them by their names (I_biela) needs no list."""
+    return bool(_BODY_SLOT.search(label))
