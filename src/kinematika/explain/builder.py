@@ -18,7 +18,7 @@ from .checks import checks_section
 from .contacts import contact_section
 from .copies import copies
 from .centres import centre_sites, centres_first, centres_section
-from .context import Ctx, omega_sym
+from .context import Ctx, omega_sym, pair_notation
 from .data import contact_rows, data_section
 from .document import Ann, Document, Equation, Msg, Name, Section, Sym, msg
 from .group import refine
@@ -34,7 +34,19 @@ from .translating import translations
 
 
 def build(sol: Solution, length_unit: str = "m") -> Document:
-    """The `Document` of `sol`: every value in it is read from the solution."""
+    """The `Document` of `sol`: every value in it is read from the solution. One notation for
+    pairs of points per page (`context.pair_notation`): a page whose pairs came out both run
+    together (BA) and apart (A-O1) is built again with every pair apart."""
+    with pair_notation(False) as spelt:
+        doc = _build(sol, length_unit)
+    if spelt == {True, False}:
+        with pair_notation(True):
+            doc = _build(sol, length_unit)
+    return doc
+
+
+def _build(sol: Solution, length_unit: str) -> Document:
+    """The `Document` of `sol` in the pair notation in force."""
     ctx = Ctx(sol)
     accel = accelerations_asked(ctx)
     wanted = ("v", "a") if accel else ("v",)
