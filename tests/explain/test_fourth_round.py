@@ -31,3 +31,38 @@ def test_one_notation_for_pairs_of_points_per_page(name, lang):
     sol, _ = explained(name)
     together = sorted(set(TOGETHER.findall(text)) - set(sol.inst.points))   # v_RL: a point
     assert not (apart and together), (apart[:4], together[:4])
+
+
+def _equation_lines(text: str) -> list[tuple[str, list[list[str]]]]:
+    """(left side, right sides as lists of terms) of every equation of the page's code blocks."""
+    out, inside = [], False
+    for line in text.splitlines():
+        if line.startswith("```"):
+            inside = not inside
+            continue
+        if inside and " = " in line and not line.startswith(" "):
+            parts = [p.strip() for p in re.split(r"\s+=\s+", " ".join(line.split()))]
+            out.append((parts[0], [p.split(" + ") for p in parts[1:]]))
+    return out
+
+
+def _point(symbol: str) -> str:
+    """The point a v_{F∈N} is the motion of (F), else the symbol."""
+    m = re.match(r"[va]_\{([A-Z][A-Z0-9]*)∈", symbol)
+    return m.group(1) if m else symbol
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_drag_the_steps_wrote_is_referred_to_not_written_again(name, lang):
+    """No equation repeats a sum of two or more terms an earlier equation of the page already
+    wrote for another symbol (001's v_arr,B = v_A + v_BA after v_B∈M = v_A + v_BA): the
+    composition of motions refers to the step's equation instead."""
+    seen: list[tuple[str, list[str]]] = []
+    for left, sides in _equation_lines(_text(name, lang)):
+        for side in sides:
+            if len(side) > 1:
+                again = [l for l, s in seen if s[:len(side)] == side and l != left
+                         and _point(l) != _point(left)]    # a contact's two material points: F∈N, F∈R
+                assert not again, (left, side, again)
+        seen += [(left, s) for s in sides]

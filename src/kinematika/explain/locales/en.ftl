@@ -249,6 +249,8 @@ centre-proportional-between = by Aronhold–Kennedy it lies on the line through 
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along its guide: its relative motion is along the guide, { $sym } = { $value }.
 composition-slide_seen = { $point } slides along its guide; { $body } does not turn relative to { $frame }, so all its points have the relative motion found above: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in the steps above.
+composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the step above that found this point.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
