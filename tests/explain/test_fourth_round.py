@@ -3,8 +3,11 @@ rule of the builder, checked on every seed in every language."""
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import pytest
+
+import kinematika.explain
 
 from kinematika.explain.catalogue import LANGS
 
@@ -66,3 +69,24 @@ def test_a_drag_the_steps_wrote_is_referred_to_not_written_again(name, lang):
                          and _point(l) != _point(left)]    # a contact's two material points: F∈N, F∈R
                 assert not again, (left, side, again)
         seen += [(left, s) for s in sides]
+
+
+LOCALES = Path(kinematika.explain.__file__).parent / "locales"
+
+
+def _opening(key: str, lang: str) -> str:
+    """The words a catalogue message opens with, before its first placeable."""
+    line = next(x for x in (LOCALES / f"{lang}.ftl").read_text(encoding="utf-8").splitlines()
+                if x.startswith(f"{key} = "))
+    return line.split(" = ", 1)[1].split("{", 1)[0].strip()
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_centre_is_placed_once(name, lang):
+    """No centre is placed again, as a check, from the velocities once the page has placed it
+    (C5-2.2's "check with the velocities found: … the same point: I_S2"): each instant
+    centre of a page is derived once."""
+    opening = _opening("centre-check", lang)
+    assert len(opening) > 10
+    assert opening not in _text(name, lang)
