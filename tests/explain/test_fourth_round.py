@@ -90,3 +90,27 @@ def test_a_centre_is_placed_once(name, lang):
     opening = _opening("centre-check", lang)
     assert len(opening) > 10
     assert opening not in _text(name, lang)
+
+
+OMEGA = re.compile(r"ω_(\{[^}]*\}|(?:[^\s{}()|·,;:²/−+=×]|·(?=[a-zà-ÿ]{2}))+)")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_shortened_subscript_is_defined_on_the_page(name, lang):
+    """Every ω_X the page writes is a body's whole name as written (ω_besoa, ω_{roda sup} is
+    a name the model gives), a number (the structure's table), or defined once on the page
+    (ω_gurpil: *gurpil zentral finkoa*, C5-E.2; ω_t: *txasisa*, C5-E.5): never a symbol
+    shortened away from a body's name that the student must guess."""
+    from kinematika.model.subscripts import CODE, _words
+
+    sol, _ = explained(name)
+    spelt = sol.model.wording.bodies.get(lang, {})
+    whole = {" ".join(_words(n)) for n in spelt.values()}
+    whole |= {b for b in sol.model.bodies if b not in spelt}     # unnamed: the model's own word
+    whole |= {w for n in spelt.values() for w in _words(n) if CODE.match(w)}   # ω_N of N blokea
+    text = _text(name, lang)
+    for sub in {m.group(1).strip("{}") for m in OMEGA.finditer(text)}:
+        if sub.isdigit() or sub in whole or any(w in sub for w in (" REL ", " rel ", " erl ", "/")):
+            continue
+        assert f"ω_{sub}: " in text or f"ω_{{{sub}}}: " in text, sub

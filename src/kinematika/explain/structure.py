@@ -26,6 +26,7 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
+    sec.add(msg("structure.subscripts", bodies=list(ctx.model.bodies)))   # ω_t: which body (render)
     # a joint is said by what it is, the bodies it joins and where: never by its id (j3)
     joints = [[msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]

@@ -28,6 +28,7 @@ col-omega = velocitat angular
 col-alpha = acceleració angular
 col-question = pregunta
 col-answer = resposta
+structure-subscripts = En els símbols, { $pairs }.
 structure-frame = { $body } (fix)
 structure-welded = { $bodies } { $bodies_n ->
         [one] està unit

@@ -28,6 +28,7 @@ col-omega = angular velocity
 col-alpha = angular acceleration
 col-question = question
 col-answer = answer
+structure-subscripts = In the symbols, { $pairs }.
 structure-frame = { $body } (fixed)
 structure-welded = { $bodies } { $bodies_n ->
         [one] is

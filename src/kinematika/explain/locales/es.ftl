@@ -28,6 +28,7 @@ col-omega = velocidad angular
 col-alpha = aceleración angular
 col-question = pregunta
 col-answer = respuesta
+structure-subscripts = En los símbolos, { $pairs }.
 structure-frame = { $body } (fijo)
 structure-welded = { $bodies } { $bodies_n ->
         [one] está unido

@@ -28,6 +28,7 @@ col-omega = abiadura angeluarra
 col-alpha = azelerazio angeluarra
 col-question = galdera
 col-answer = erantzuna
+structure-subscripts = Ikurretan, { $pairs }.
 structure-frame = { $body } (finkoa)
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
         [one] dago: solido finkoaren zati da, ez solido mugikorra
