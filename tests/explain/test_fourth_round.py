@@ -114,3 +114,24 @@ def test_a_shortened_subscript_is_defined_on_the_page(name, lang):
         if sub.isdigit() or sub in whole or any(w in sub for w in (" REL ", " rel ", " erl ", "/")):
             continue
         assert f"ω_{sub}: " in text or f"ω_{{{sub}}}: " in text, sub
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_the_mechanism_caption_says_which_velocities_it_draws(name, lang):
+    """The mechanism's caption names the points whose velocities the figure draws (one arrow:
+    "the arrow is the velocity of B"; C5-E.4's P at rest: "P is at rest"), never "the arrows
+    are the velocities of its points" over a figure of one arrow or none."""
+    from kinematika.draw.build import build_scene
+    from kinematika.draw.options import DrawOptions
+    from kinematika.explain.document import Drawing
+
+    sol, doc = explained(name)
+    fig = next(b for b in doc.blocks() if isinstance(b, Drawing) and b.caption.key == "fig.mechanism")
+    scene = build_scene(sol.inst, sol, DrawOptions(**fig.options))
+    drawn = {v.ref.split("@", 1)[0] for v in scene.vectors if v.kind == "velocity"}
+    opening = _opening("fig-mechanism_named", lang).split(",")[0]
+    caption = next(line for line in rendered(name, lang, "md").splitlines() if line.startswith("*" + opening))
+    assert drawn, "the figure draws no velocity"
+    for p in drawn:
+        assert re.search(rf"(?<![\w-]){re.escape(p)}(?![\w-])", caption), (p, caption[:160])

@@ -65,17 +65,33 @@ joint-cylindrical = cilíndric
 fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
-    }; { $format ->
-        [md] les fletxes
-       *[other] les fletxes blaves
-    } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls; els sòlids estan numerats.
+    }; { $arrows ->
+        [0] no s’hi dibuixa cap velocitat
+        [1] { $format ->
+            [md] la fletxa
+           *[other] la fletxa blava
+        } és la velocitat de { $points }, amb el seu mòdul
+        [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
+       *[other] { $format ->
+            [md] les fletxes
+           *[other] les fletxes blaves
+        } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
+    }; els sòlids estan numerats.
 fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
-    }; { $format ->
-        [md] les fletxes
-       *[other] les fletxes blaves
-    } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls.
+    }; { $arrows ->
+        [0] no s’hi dibuixa cap velocitat
+        [1] { $format ->
+            [md] la fletxa
+           *[other] la fletxa blava
+        } és la velocitat de { $points }, amb el seu mòdul
+        [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
+       *[other] { $format ->
+            [md] les fletxes
+           *[other] les fletxes blaves
+        } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
+    }.
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
         [md] , els termes l’un darrere l’altre
        *[other] : en negre els termes coneguts{ $unknown ->

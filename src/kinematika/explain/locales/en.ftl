@@ -68,17 +68,33 @@ joint-cylindrical = cylindrical
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
-    }; { $format ->
-        [md] the arrows
-       *[other] the blue arrows
-    } are the velocities of its points, to one scale, with their magnitudes; the bodies are numbered.
+    }; { $arrows ->
+        [0] no velocity is drawn
+        [1] { $format ->
+            [md] the arrow
+           *[other] the blue arrow
+        } is the velocity of { $points }, with its magnitude
+        [3] { $points } is at rest: its velocity is zero, written beside it
+       *[other] { $format ->
+            [md] the arrows
+           *[other] the blue arrows
+        } are the velocities of { $points }, to one scale, with their magnitudes
+    }; the bodies are numbered.
 fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
-    }; { $format ->
-        [md] the arrows
-       *[other] the blue arrows
-    } are the velocities of its points, to one scale, with their magnitudes.
+    }; { $arrows ->
+        [0] no velocity is drawn
+        [1] { $format ->
+            [md] the arrow
+           *[other] the blue arrow
+        } is the velocity of { $points }, with its magnitude
+        [3] { $points } is at rest: its velocity is zero, written beside it
+       *[other] { $format ->
+            [md] the arrows
+           *[other] the blue arrows
+        } are the velocities of { $points }, to one scale, with their magnitudes
+    }.
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
         [md] , the terms head to tail
        *[other] : known terms in black{ $unknown ->

@@ -65,17 +65,33 @@ joint-cylindrical = cilíndrico
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
-    }; { $format ->
-        [md] las flechas
-       *[other] las flechas azules
-    } son las velocidades de sus puntos, a una misma escala, con sus módulos; los sólidos están numerados.
+    }; { $arrows ->
+        [0] no se dibuja ninguna velocidad
+        [1] { $format ->
+            [md] la flecha
+           *[other] la flecha azul
+        } es la velocidad de { $points }, con su módulo
+        [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
+       *[other] { $format ->
+            [md] las flechas
+           *[other] las flechas azules
+        } son las velocidades de { $points }, a una misma escala, con sus módulos
+    }; los sólidos están numerados.
 fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
-    }; { $format ->
-        [md] las flechas
-       *[other] las flechas azules
-    } son las velocidades de sus puntos, a una misma escala, con sus módulos.
+    }; { $arrows ->
+        [0] no se dibuja ninguna velocidad
+        [1] { $format ->
+            [md] la flecha
+           *[other] la flecha azul
+        } es la velocidad de { $points }, con su módulo
+        [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
+       *[other] { $format ->
+            [md] las flechas
+           *[other] las flechas azules
+        } son las velocidades de { $points }, a una misma escala, con sus módulos
+    }.
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
         [md] , los términos uno tras otro
        *[other] : en negro los términos conocidos{ $unknown ->

@@ -65,17 +65,33 @@ joint-cylindrical = zilindrikoa
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
-    }; { $format ->
-        [md] geziak
-       *[other] gezi urdinak
-    } haren puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
+    }; { $arrows ->
+        [0] ez da abiadurarik marrazten
+        [1] { $format ->
+            [md] gezia
+           *[other] gezi urdina
+        } { $points } puntuaren abiadura da, bere moduluarekin
+        [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
+       *[other] { $format ->
+            [md] geziak
+           *[other] gezi urdinak
+        } { $points } puntuen abiadurak dira, eskala berean, beren moduluekin
+    }; solidoak zenbakituta daude.
 fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
-    }; { $format ->
-        [md] geziak
-       *[other] gezi urdinak
-    } haren puntuen abiadurak dira, eskala berean, beren moduluekin.
+    }; { $arrows ->
+        [0] ez da abiadurarik marrazten
+        [1] { $format ->
+            [md] gezia
+           *[other] gezi urdina
+        } { $points } puntuaren abiadura da, bere moduluarekin
+        [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
+       *[other] { $format ->
+            [md] geziak
+           *[other] gezi urdinak
+        } { $points } puntuen abiadurak dira, eskala berean, beren moduluekin
+    }.
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
         [md] , terminoak bata bestearen ondoren
        *[other] : beltzez termino ezagunak{ $unknown ->
