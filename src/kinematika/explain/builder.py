@@ -18,9 +18,9 @@ from .checks import checks_section
 from .contacts import contact_section
 from .copies import copies
 from .centres import centre_sites, centres_first, centres_section
-from .context import Ctx, omega_sym
+from .context import Ctx, omega_sym, pair_notation
 from .data import contact_rows, data_section
-from .document import Ann, Document, Equation, Msg, Name, Section, Sym, msg
+from .document import Ann, Document, Equation, Inline, Msg, Name, Section, Sym, Value, msg
 from .group import refine
 from .order import solution_order
 from .planar import PlanarSteps
@@ -34,7 +34,19 @@ from .translating import translations
 
 
 def build(sol: Solution, length_unit: str = "m") -> Document:
-    """The `Document` of `sol`: every value in it is read from the solution."""
+    """The `Document` of `sol`: every value in it is read from the solution. One notation for
+    pairs of points per page (`context.pair_notation`): a page whose pairs came out both run
+    together (BA) and apart (A-O1) is built again with every pair apart."""
+    with pair_notation(False) as spelt:
+        doc = _build(sol, length_unit)
+    if spelt == {True, False}:
+        with pair_notation(True):
+            doc = _build(sol, length_unit)
+    return doc
+
+
+def _build(sol: Solution, length_unit: str) -> Document:
+    """The `Document` of `sol` in the pair notation in force."""
     ctx = Ctx(sol)
     accel = accelerations_asked(ctx)
     wanted = ("v", "a") if accel else ("v",)
@@ -91,6 +103,7 @@ def build(sol: Solution, length_unit: str = "m") -> Document:
     for eq in doc.equations():
         found_forward(eq)
     prune(ctx, doc)
+    refer_drags(ctx, doc, levels)
     translations(ctx, doc)
     contact_rows(ctx, doc)
     said = relative_convention(doc)
@@ -180,6 +193,41 @@ def _name_terms(sec: Section) -> None:
         if isinstance(m, Msg) and m.key == "a.intro":
             m.key = {"coriolis": "a.intro", "relative": "a.intro_relative",
                      "normal": "a.intro_normal"}[acceleration_terms(_equations(sec))]
+
+
+def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
+    """A drag the steps already wrote is referred to, not written again: where the
+    composition's v_arr,B (a_arr,B) is the motion of a material point whose equation a step
+    kept (001's v_B∈M = v_A + v_BA), the section says v_arr,B = v_B∈M = (value) — the
+    same equation twice on one page reads as a new step."""
+    kept: dict = {}
+    sums: list = []                      # each step side's terms, as written
+    for sec in levels:
+        for eq in _equations(sec):
+            if eq.point is not None and eq.relative_to in (None, ctx.frame) and eq.sides:
+                kept.setdefault((eq.level, ctx.motion_key(eq.point.point, eq.point.body)), eq.target)
+            sums += [[_written(t.sym) for t in side] for side in eq.sides]
+    for sec in doc.sections:
+        if not isinstance(sec.title, Msg) or sec.title.key != "sec.composition":
+            continue
+        for k, b in enumerate(sec.blocks):
+            if not isinstance(b, Equation) or b.target.sym.sub_key != "sub.drag" or b.point is None:
+                continue
+            seen = kept.get((b.level, ctx.motion_key(b.point.point, b.point.body)))
+            value = Value(b.target.value, "speed" if b.level == "v" else "accel")
+            drag = [_written(t.sym) for t in b.sides[0]] if b.sides else []
+            if seen is not None:
+                sec.blocks[k] = msg("composition.drag_seen", sym=b.target.sym, seen=seen.sym, value=value)
+            elif len(drag) > 1 and any(side[:len(drag)] == drag for side in sums):
+                terms: list = []           # the drag is the first terms of a step's sum: v_B + v_{A-B}
+                for t in b.sides[0]:
+                    terms += ([" + "] if terms else []) + [t.sym]
+                sec.blocks[k] = msg("composition.drag_terms", sym=b.target.sym, terms=Inline(terms), value=value)
+
+
+def _written(sym: Sym) -> tuple:
+    """What tells two symbols apart on the page."""
+    return (sym.base, sym.sub, sym.sup, sym.sub_key)
 
 
 def _equations(sec: Section) -> list[Equation]:

@@ -51,21 +51,11 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
     if part == "all" or (part == "first") == (len(first) == len(chosen)) or part == "rest":
         sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False,
                         centre_pairs=used_pairs(made, chosen)))
-    for key in keys:
-        sec.blocks.append(made[key])
-        if part == "all" and key in asked and made[key].how in ("kennedy", "lines", "weld") \
-                and made[key].value.get("point") and not _placed_in_steps(ctx, made[key]):
-            check = CentreNote(made[key].pair, made[key].value, "check")
-            if _field(ctx, check):
-                sec.blocks.append(check)
+    # each centre once: a centre placed (at a joint, by Aronhold–Kennedy, where two lines
+    # meet) is not placed again "as a check" from the velocities — the notes never re-derive
+    # a centre they have found, and the second derivation reads as a second answer
+    sec.blocks += [made[key] for key in keys]
     return sec
-
-
-def _placed_in_steps(ctx: Ctx, note: CentreNote) -> bool:
-    """Whether the velocity steps placed this centre and found the body's velocities from
-    it (a vehicle's chassis, C5-2.1: v_Q = ω × IQ): checking it against those velocities
-    would only give back what it gave, a check a teacher leaves out."""
-    return any(f"centre:{b}" in ctx.worked for b in note.pair if b != ctx.frame) and ctx.frame in note.pair
 
 
 def used_pairs(made: dict, chosen: list) -> list[tuple[str, str]]:

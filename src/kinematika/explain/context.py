@@ -6,7 +6,9 @@ symbolic values are kept exact and simplified only when rendered.
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from contextlib import contextmanager
+from contextvars import ContextVar
+from typing import Any, Iterator, Optional
 
 from ..algebra.vectors import sub
 from ..model.model import PointRef
@@ -197,9 +199,41 @@ class Segment(str):
     ends: tuple[str, str] = ("", "")
 
 
+# One notation for pairs of points on a page: AB, v_BA, a_BA^n run two one-letter labels
+# together, but O1-A needs a separator (O1A could be O-1A); a page that writes one pair apart
+# writes every pair apart (v_{A-O1} beside v_{B-A}, never beside v_BA), as a teacher keeps one
+# notation on one sheet. `separated` is the page's choice, `spelt` what the pairs asked for.
+_SEPARATED: ContextVar[bool] = ContextVar("separated", default=False)
+_SPELT: ContextVar[Optional[set]] = ContextVar("spelt", default=None)
+
+
+def apart(needed: bool) -> bool:
+    """Whether a pair of points is written with a separator on this page: when the pair
+    `needed` one (a label longer than one character, a reserved word) or the page writes
+    every pair apart; the need is recorded for `pair_notation`."""
+    spelt = _SPELT.get()
+    if spelt is not None:
+        spelt.add(needed)
+    return needed or _SEPARATED.get()
+
+
+@contextmanager
+def pair_notation(separated: bool) -> Iterator[set]:
+    """Build a page with pairs of points written apart (`separated`) or as they need; yields
+    the set of needs met ({True, False}: the page mixed the two and is built again apart)."""
+    spelt: set = set()
+    tokens = (_SEPARATED.set(separated), _SPELT.set(spelt))
+    try:
+        yield spelt
+    finally:
+        _SPELT.reset(tokens[1])
+        _SEPARATED.reset(tokens[0])
+
+
 def segment(q: str, p: str) -> Segment:
-    """The name of the segment from q to p as the notes write it (AB; O2-A for long names)."""
-    seg = Segment(q + p if len(q) == 1 and len(p) == 1 else f"{q}-{p}")
+    """The name of the segment from q to p as the notes write it (AB; O2-A for long names,
+    and every segment of a page that writes one apart: `apart`)."""
+    seg = Segment(f"{q}-{p}" if apart(len(q) != 1 or len(p) != 1) else q + p)
     seg.ends = (q, p)
     return seg
 

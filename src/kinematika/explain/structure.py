@@ -26,6 +26,7 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
+    sec.add(msg("structure.subscripts", bodies=list(ctx.model.bodies)))   # ω_t: which body (render)
     # a joint is said by what it is, the bodies it joins and where: never by its id (j3)
     joints = [[msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
               for j in model.joints]
@@ -131,7 +132,27 @@ def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
         kennedy, joints = _lines_drawn(ctx, options)
         args["normals"] = Names([msg(f"fig.normal.{k}") for k in _normal_lines(ctx, joints)])
         args["kennedy"] = int(kennedy)
+    if caption == "fig.mechanism":
+        args.update(_arrows_drawn(ctx, options))
     return Drawing(msg(caption, **args), ctx.sol, options, fallback, values)
+
+
+def _arrows_drawn(ctx: Ctx, options: dict) -> dict:
+    """What the mechanism's figure draws of the velocities, read off the figure itself, for
+    its caption to say just that: `arrows` 1 (one arrow: "the arrow is the velocity of B"),
+    2 (several: "the arrows are the velocities of B and E"), 3 (only points at rest, whose
+    zero velocity is written beside them: C5-E.4's v_P = 0) or 0 (none); `points` which —
+    never "the arrows are the velocities of its points" over one arrow or none."""
+    from ..draw.build import build_scene
+    from ..draw.options import DrawOptions
+
+    scene = build_scene(ctx.inst, ctx.sol, DrawOptions(**options))
+    drawn = [v for v in scene.vectors if v.kind == "velocity" and v.relative_to is None]
+    moving = [v for v in drawn if v.magnitude > 1e-9 * max(ctx.inst.scale, 1e-12)]
+    shown = moving or drawn
+    points = Names([Name(v.ref.split("@", 1)[0]) for v in shown])
+    arrows = (min(len(moving), 2) if moving else 3) if drawn else 0
+    return {"arrows": arrows, "points": points}
 
 
 def _lines_drawn(ctx: Ctx, options: dict) -> tuple[bool, Optional[set]]:
@@ -163,7 +184,7 @@ def _normal_lines(ctx: Ctx, joints: Optional[set] = None) -> list[str]:
 
 def mechanism_figure(ctx: Ctx) -> Figure:
     """The mechanism at the instant: bodies as lines between their points, shapes, labels."""
-    fig = Figure(msg("fig.mechanism", dim=2), unit="len", sample=ctx.symbolic)
+    fig = Figure(msg("fig.mechanism", dim=2, arrows=0, points=Names([])), unit="len", sample=ctx.symbolic)
     pos = {name: ctx.num(p) for name, p in ctx.inst.points.items()}
     for name, carrier in ctx.model.bodies.items():
         pts = [pos[p] for p in carrier.points]

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from ..algebra.vectors import scale
 from ..model.model import Joint
-from .context import Ctx, alpha_sym, omega_sym, segment
+from .context import Ctx, alpha_sym, apart, omega_sym, segment
 from .document import Ann, Msg, Sym, Term, Value, body, joint, msg
 
 UNIT = {"v": "speed", "a": "accel"}
@@ -46,8 +46,10 @@ RESERVED_PAIRS = {"AB"}
 def pair_name(p: str, q: str) -> str:
     """The subscript of p's motion about q on one body (v_BA, v_{O2-A}); apart, v_{A-B},
     where the two names would spell the notes' word for the absolute motion."""
-    name = segment(p, q)
-    return f"{p}-{q}" if str(name) in RESERVED_PAIRS else name
+    if p + q in RESERVED_PAIRS and len(p) == 1 and len(q) == 1:
+        apart(True)
+        return f"{p}-{q}"
+    return segment(p, q)
 
 
 def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: bool,

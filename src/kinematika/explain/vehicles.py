@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Optional
 
-from .context import Ctx, omega_sym, read_off
+from .context import Ctx, omega_sym, read_off, segment
 from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, msg
 from .given import whole_along
 from .kinds import knife_edge, pin_only
@@ -213,7 +213,7 @@ def _equiprojective(ctx: Ctx, b: str, wheels: list, speeds: dict, q: str) -> lis
                 continue
             v = ctx.clean(ctx.vel(b, p), "speed")
             speeds[p] = ctx.vel(b, p)
-            seg = Name(f"{q}{p}" if len(q) == 1 and len(p) == 1 else f"{q}-{p}")
+            seg = Name(segment(q, p))
             return [msg("vehicle.equiprojective", q=Name(q), p=Name(p), body=Name(b, "body"), joint=Name(j.id, "joint"),
                         seg=seg, vp=Sym("v", p), vq=Sym("v", q), value=Value(v, "speed"),
                         speed=Value(_magnitude(ctx, v), "speed"))]
@@ -266,12 +266,12 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
     for k, p in enumerate([witness] + [q for q in ctx.model.bodies[b].points if q != witness and q not in known]):
         arm = Inline([ident, " ", Name(p)])
         value = ctx.clean(ctx.vel(b, p), "speed")
-        term = Term(Sym("v", f"{p}I"), value, Ann("?") if k == 0 else Ann("M", [w, "·", arm]),
+        term = Term(Sym("v", segment(p, "I")), value, Ann("?") if k == 0 else Ann("M", [w, "·", arm]),
                     Ann("perp", arm), [w, " × ", arm], k == 0, "rotation")
         target = Term(Sym("v", ctx.point_label(p, b)), value, Ann("M"), Ann("D"), kind="point")
         out.append(Equation(target, [[term]], "v", ctx.ref(p, b), figure=False))
         if k == 0:
-            out.append(Derived(w, read_off(ctx, Sym("v", f"{p}I"), arm, ctx.omega(b)), ctx.value(ctx.omega(b), "rate"), b,
+            out.append(Derived(w, read_off(ctx, Sym("v", segment(p, "I")), arm, ctx.omega(b)), ctx.value(ctx.omega(b), "rate"), b,
                                "omega", not ctx.symbolic, term, ctx.clean(_arm(ctx, b, p), "len")))
     return out
 

@@ -28,6 +28,7 @@ col-omega = velocitat angular
 col-alpha = acceleració angular
 col-question = pregunta
 col-answer = resposta
+structure-subscripts = En els símbols, { $pairs }.
 structure-frame = { $body } (fix)
 structure-welded = { $bodies } { $bodies_n ->
         [one] està unit
@@ -64,17 +65,33 @@ joint-cylindrical = cilíndric
 fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
-    }; { $format ->
-        [md] les fletxes
-       *[other] les fletxes blaves
-    } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls; els sòlids estan numerats.
+    }; { $arrows ->
+        [0] no s’hi dibuixa cap velocitat
+        [1] { $format ->
+            [md] la fletxa
+           *[other] la fletxa blava
+        } és la velocitat de { $points }, amb el seu mòdul
+        [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
+       *[other] { $format ->
+            [md] les fletxes
+           *[other] les fletxes blaves
+        } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
+    }; els sòlids estan numerats.
 fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
-    }; { $format ->
-        [md] les fletxes
-       *[other] les fletxes blaves
-    } són les velocitats dels seus punts, a una mateixa escala, amb els seus mòduls.
+    }; { $arrows ->
+        [0] no s’hi dibuixa cap velocitat
+        [1] { $format ->
+            [md] la fletxa
+           *[other] la fletxa blava
+        } és la velocitat de { $points }, amb el seu mòdul
+        [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
+       *[other] { $format ->
+            [md] les fletxes
+           *[other] les fletxes blaves
+        } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
+    }.
 fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
         [md] , els termes l’un darrere l’altre
@@ -440,6 +457,8 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 composition-slide = { $point } llisca al llarg de la seva guia: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
 composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat més amunt: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat en els passos anteriors.
+composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes del pas anterior que ha trobat aquest punt.
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)

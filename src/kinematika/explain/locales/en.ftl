@@ -28,6 +28,7 @@ col-omega = angular velocity
 col-alpha = angular acceleration
 col-question = question
 col-answer = answer
+structure-subscripts = In the symbols, { $pairs }.
 structure-frame = { $body } (fixed)
 structure-welded = { $bodies } { $bodies_n ->
         [one] is
@@ -67,17 +68,33 @@ joint-cylindrical = cylindrical
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
-    }; { $format ->
-        [md] the arrows
-       *[other] the blue arrows
-    } are the velocities of its points, to one scale, with their magnitudes; the bodies are numbered.
+    }; { $arrows ->
+        [0] no velocity is drawn
+        [1] { $format ->
+            [md] the arrow
+           *[other] the blue arrow
+        } is the velocity of { $points }, with its magnitude
+        [3] { $points } is at rest: its velocity is zero, written beside it
+       *[other] { $format ->
+            [md] the arrows
+           *[other] the blue arrows
+        } are the velocities of { $points }, to one scale, with their magnitudes
+    }; the bodies are numbered.
 fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
-    }; { $format ->
-        [md] the arrows
-       *[other] the blue arrows
-    } are the velocities of its points, to one scale, with their magnitudes.
+    }; { $arrows ->
+        [0] no velocity is drawn
+        [1] { $format ->
+            [md] the arrow
+           *[other] the blue arrow
+        } is the velocity of { $points }, with its magnitude
+        [3] { $points } is at rest: its velocity is zero, written beside it
+       *[other] { $format ->
+            [md] the arrows
+           *[other] the blue arrows
+        } are the velocities of { $points }, to one scale, with their magnitudes
+    }.
 fig-o_prime = The image of the point O is o′, since o is the pole.
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
         [md] , the terms head to tail
@@ -248,6 +265,8 @@ centre-proportional-between = by Aronhold–Kennedy it lies on the line through 
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along its guide: its relative motion is along the guide, { $sym } = { $value }.
 composition-slide_seen = { $point } slides along its guide; { $body } does not turn relative to { $frame }, so all its points have the relative motion found above: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in the steps above.
+composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the step above that found this point.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)

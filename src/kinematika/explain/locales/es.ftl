@@ -28,6 +28,7 @@ col-omega = velocidad angular
 col-alpha = aceleración angular
 col-question = pregunta
 col-answer = respuesta
+structure-subscripts = En los símbolos, { $pairs }.
 structure-frame = { $body } (fijo)
 structure-welded = { $bodies } { $bodies_n ->
         [one] está unido
@@ -64,17 +65,33 @@ joint-cylindrical = cilíndrico
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
-    }; { $format ->
-        [md] las flechas
-       *[other] las flechas azules
-    } son las velocidades de sus puntos, a una misma escala, con sus módulos; los sólidos están numerados.
+    }; { $arrows ->
+        [0] no se dibuja ninguna velocidad
+        [1] { $format ->
+            [md] la flecha
+           *[other] la flecha azul
+        } es la velocidad de { $points }, con su módulo
+        [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
+       *[other] { $format ->
+            [md] las flechas
+           *[other] las flechas azules
+        } son las velocidades de { $points }, a una misma escala, con sus módulos
+    }; los sólidos están numerados.
 fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
-    }; { $format ->
-        [md] las flechas
-       *[other] las flechas azules
-    } son las velocidades de sus puntos, a una misma escala, con sus módulos.
+    }; { $arrows ->
+        [0] no se dibuja ninguna velocidad
+        [1] { $format ->
+            [md] la flecha
+           *[other] la flecha azul
+        } es la velocidad de { $points }, con su módulo
+        [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
+       *[other] { $format ->
+            [md] las flechas
+           *[other] las flechas azules
+        } son las velocidades de { $points }, a una misma escala, con sus módulos
+    }.
 fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
         [md] , los términos uno tras otro
@@ -278,6 +295,8 @@ centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa 
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de su guía: su movimiento relativo sigue la guía, { $sym } = { $value }.
 composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado arriba: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en los pasos anteriores.
+composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos del paso anterior que halló este punto.
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)

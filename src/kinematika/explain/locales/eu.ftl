@@ -28,6 +28,7 @@ col-omega = abiadura angeluarra
 col-alpha = azelerazio angeluarra
 col-question = galdera
 col-answer = erantzuna
+structure-subscripts = Ikurretan, { $pairs }.
 structure-frame = { $body } (finkoa)
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
         [one] dago: solido finkoaren zati da, ez solido mugikorra
@@ -64,17 +65,33 @@ joint-cylindrical = zilindrikoa
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
-    }; { $format ->
-        [md] geziak
-       *[other] gezi urdinak
-    } haren puntuen abiadurak dira, eskala berean, beren moduluekin; solidoak zenbakituta daude.
+    }; { $arrows ->
+        [0] ez da abiadurarik marrazten
+        [1] { $format ->
+            [md] gezia
+           *[other] gezi urdina
+        } { $points } puntuaren abiadura da, bere moduluarekin
+        [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
+       *[other] { $format ->
+            [md] geziak
+           *[other] gezi urdinak
+        } { $points } puntuen abiadurak dira, eskala berean, beren moduluekin
+    }; solidoak zenbakituta daude.
 fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
-    }; { $format ->
-        [md] geziak
-       *[other] gezi urdinak
-    } haren puntuen abiadurak dira, eskala berean, beren moduluekin.
+    }; { $arrows ->
+        [0] ez da abiadurarik marrazten
+        [1] { $format ->
+            [md] gezia
+           *[other] gezi urdina
+        } { $points } puntuaren abiadura da, bere moduluarekin
+        [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
+       *[other] { $format ->
+            [md] geziak
+           *[other] gezi urdinak
+        } { $points } puntuen abiadurak dira, eskala berean, beren moduluekin
+    }.
 fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
         [md] , terminoak bata bestearen ondoren
@@ -251,6 +268,8 @@ centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetat
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua bere gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
 composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek goian aurkitutako mugimendu erlatiboa dute: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, goiko urratsetan aurkitutako puntu horren mugimendua.
+composition-drag_terms = { $sym } = { $terms } = { $value }: puntu hau aurkitu zuen goiko urratseko lehen terminoak.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)

@@ -133,6 +133,8 @@ class Renderer(ABC):
         instant centre's note; a nested section as a section."""
         if isinstance(b, Section):
             return self.section(b)
+        if isinstance(b, Msg) and b.key == "structure.subscripts":
+            return self.subscripts(b)
         if isinstance(b, Msg):
             return self.para(self.sentence(self.message(b, lead=True)))
         if isinstance(b, Equation):
@@ -331,6 +333,30 @@ class Renderer(ABC):
             return (self.sym(Sym("ω", parent, vector=s.vector)) + self.esc(" × ")
                     + self.sym(Sym("ω", f"{body}/{parent}", vector=s.vector)))
         return self.symbol(self.noted(s))
+
+    def subscripts(self, m: Msg) -> str:
+        """Which body each shortened subscript is, said once (ω_gurpil: *gurpil zentral
+        finkoa*; ω_t: *txasisa*): a symbol whose subscript is not the body's whole name in
+        this language (`model.subscripts` took a word of it, or the model's notation gives a
+        letter) is defined on the page that uses it; nothing when every subscript is the name
+        as written or the code the name holds (ω_N of *N blokea*, as the slides), or the
+        bodies go by their numbers (the structure's table)."""
+        from ...model.subscripts import CODE, _words
+
+        spelt = self.wording.bodies.get(self.lang or "", {}) if self.wording is not None else {}
+        if not spelt:
+            return ""
+        items: list = []
+        for b in m.args["bodies"]:
+            label = self.labels().get(b, "")
+            words = _words(spelt[b]) if b in spelt else []
+            if not label or label.isdigit() or not words or label == " ".join(words) \
+                    or (label in words and CODE.match(label)):
+                continue          # the name as written, or its own code (ω_N of *N blokea*)
+            items += (["; "] if items else []) + [Sym("ω", b, vector=False), ": ", Name(b, "body")]
+        if not items:
+            return ""
+        return self.para(self.sentence(self.message(Msg(m.key, {"pairs": Inline(items)}), lead=True)))
 
     def labels(self) -> dict[str, str]:
         """Each body as the symbols write it: the index the model's notation gives it in this

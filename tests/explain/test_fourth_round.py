@@ -1,0 +1,137 @@
+"""The fourth teacher audit of issue 30 (Basque 4 A / 15 B): the recurring defects, each a
+rule of the builder, checked on every seed in every language."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+import kinematika.explain
+
+from kinematika.explain.catalogue import LANGS
+
+from .helpers import SEEDS, explained, rendered
+
+# a velocity or acceleration of one point about another, or a segment after ⊥ ∥ × ·, written
+# apart (v_{A-O1}, ⊥ O1-A) or run together from two one-letter labels (v_BA, ⊥ AB)
+APART = re.compile(r"(?:\b[va]_\{|[⊥∥×·] )[A-Z][A-Z0-9]*-[A-Z][A-Z0-9]*\b")
+TOGETHER = re.compile(r"(?:\b[va]_|[⊥∥×·] )([A-Z][A-Z])(?![\w{-]| [^\W\d_])")
+
+
+def _text(name: str, lang: str) -> str:
+    return rendered(name, lang, "md", drawings=False)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_one_notation_for_pairs_of_points_per_page(name, lang):
+    """A page writes every pair of points one way: all apart (v_{B-A}, ⊥ A-B) once one label
+    needs a separator (O1, J3, the reserved AB), else all run together (v_BA, ⊥ AB) — never
+    v_{A-O1} beside v_BA on one sheet."""
+    text = _text(name, lang)
+    apart = sorted(set(APART.findall(text)))
+    sol, _ = explained(name)
+    together = sorted(set(TOGETHER.findall(text)) - set(sol.inst.points))   # v_RL: a point
+    assert not (apart and together), (apart[:4], together[:4])
+
+
+def _equation_lines(text: str) -> list[tuple[str, list[list[str]]]]:
+    """(left side, right sides as lists of terms) of every equation of the page's code blocks."""
+    out, inside = [], False
+    for line in text.splitlines():
+        if line.startswith("```"):
+            inside = not inside
+            continue
+        if inside and " = " in line and not line.startswith(" "):
+            parts = [p.strip() for p in re.split(r"\s+=\s+", " ".join(line.split()))]
+            out.append((parts[0], [p.split(" + ") for p in parts[1:]]))
+    return out
+
+
+def _point(symbol: str) -> str:
+    """The point a v_{F∈N} is the motion of (F), else the symbol."""
+    m = re.match(r"[va]_\{([A-Z][A-Z0-9]*)∈", symbol)
+    return m.group(1) if m else symbol
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_drag_the_steps_wrote_is_referred_to_not_written_again(name, lang):
+    """No equation repeats a sum of two or more terms an earlier equation of the page already
+    wrote for another symbol (001's v_arr,B = v_A + v_BA after v_B∈M = v_A + v_BA): the
+    composition of motions refers to the step's equation instead."""
+    seen: list[tuple[str, list[str]]] = []
+    for left, sides in _equation_lines(_text(name, lang)):
+        for side in sides:
+            if len(side) > 1:
+                again = [l for l, s in seen if s[:len(side)] == side and l != left
+                         and _point(l) != _point(left)]    # a contact's two material points: F∈N, F∈R
+                assert not again, (left, side, again)
+        seen += [(left, s) for s in sides]
+
+
+LOCALES = Path(kinematika.explain.__file__).parent / "locales"
+
+
+def _opening(key: str, lang: str) -> str:
+    """The words a catalogue message opens with, before its first placeable."""
+    line = next(x for x in (LOCALES / f"{lang}.ftl").read_text(encoding="utf-8").splitlines()
+                if x.startswith(f"{key} = "))
+    return line.split(" = ", 1)[1].split("{", 1)[0].strip()
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_centre_is_placed_once(name, lang):
+    """No centre is placed again, as a check, from the velocities once the page has placed it
+    (C5-2.2's "check with the velocities found: … the same point: I_S2"): each instant
+    centre of a page is derived once."""
+    opening = _opening("centre-check", lang)
+    assert len(opening) > 10
+    assert opening not in _text(name, lang)
+
+
+OMEGA = re.compile(r"ω_(\{[^}]*\}|(?:[^\s{}()|·,;:²/−+=×]|·(?=[a-zà-ÿ]{2}))+)")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_shortened_subscript_is_defined_on_the_page(name, lang):
+    """Every ω_X the page writes is a body's whole name as written (ω_besoa, ω_{roda sup} is
+    a name the model gives), a number (the structure's table), or defined once on the page
+    (ω_gurpil: *gurpil zentral finkoa*, C5-E.2; ω_t: *txasisa*, C5-E.5): never a symbol
+    shortened away from a body's name that the student must guess."""
+    from kinematika.model.subscripts import CODE, _words
+
+    sol, _ = explained(name)
+    spelt = sol.model.wording.bodies.get(lang, {})
+    whole = {" ".join(_words(n)) for n in spelt.values()}
+    whole |= {b for b in sol.model.bodies if b not in spelt}     # unnamed: the model's own word
+    whole |= {w for n in spelt.values() for w in _words(n) if CODE.match(w)}   # ω_N of N blokea
+    text = _text(name, lang)
+    for sub in {m.group(1).strip("{}") for m in OMEGA.finditer(text)}:
+        if sub.isdigit() or sub in whole or any(w in sub for w in (" REL ", " rel ", " erl ", "/")):
+            continue
+        assert f"ω_{sub}: " in text or f"ω_{{{sub}}}: " in text, sub
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_the_mechanism_caption_says_which_velocities_it_draws(name, lang):
+    """The mechanism's caption names the points whose velocities the figure draws (one arrow:
+    "the arrow is the velocity of B"; C5-E.4's P at rest: "P is at rest"), never "the arrows
+    are the velocities of its points" over a figure of one arrow or none."""
+    from kinematika.draw.build import build_scene
+    from kinematika.draw.options import DrawOptions
+    from kinematika.explain.document import Drawing
+
+    sol, doc = explained(name)
+    fig = next(b for b in doc.blocks() if isinstance(b, Drawing) and b.caption.key == "fig.mechanism")
+    scene = build_scene(sol.inst, sol, DrawOptions(**fig.options))
+    drawn = {v.ref.split("@", 1)[0] for v in scene.vectors if v.kind == "velocity"}
+    opening = _opening("fig-mechanism_named", lang).split(",")[0]
+    caption = next(line for line in rendered(name, lang, "md").splitlines() if line.startswith("*" + opening))
+    assert drawn, "the figure draws no velocity"
+    for p in drawn:
+        assert re.search(rf"(?<![\w-]){re.escape(p)}(?![\w-])", caption), (p, caption[:160])
