@@ -109,10 +109,16 @@ def test_a_shortened_subscript_is_defined_on_the_page(name, lang):
     whole = {" ".join(_words(n)) for n in spelt.values()}
     whole |= {b for b in sol.model.bodies if b not in spelt}     # unnamed: the model's own word
     whole |= {w for n in spelt.values() for w in _words(n) if CODE.match(w)}   # ω_N of N blokea
+    from kinematika.model.wording import PART_SUBSCRIPTS
+
+    joining = {f" {words[lang]} " for words in PART_SUBSCRIPTS.values()}    # ω_{a rel b}: two names
+    points = set(sol.model.points)
     text = _text(name, lang)
     for sub in {m.group(1).strip("{}") for m in OMEGA.finditer(text)}:
-        if sub.isdigit() or sub in whole or any(w in sub for w in (" REL ", " rel ", " erl ", "/")):
+        if sub.isdigit() or sub in whole or any(w in sub for w in joining):
             continue
+        if any(sub in (a + b, f"{a}-{b}") for a in points for b in points if a != b):
+            continue                        # a bar's rate by its two points: C5-1.8's ω_OC (the notes' Ω_OC)
         assert f"ω_{sub}: " in text or f"ω_{{{sub}}}: " in text, sub
 
 
