@@ -284,6 +284,9 @@ def test_the_page_and_matplotlib_paint_the_same_primitives(page, name):
     gen = page.evaluate("window.kinematika.state.gen")
     example(page, f"{name}.yaml")
     settled(page, gen)
+    # the page draws what its last analysis answered: name the page's error when it has no scene
+    drawn = page.evaluate("[window.kinematika.state.scene !== null, document.getElementById('error').textContent]")
+    assert drawn[0], f"{name}: the page has no scene; its error panel reads {drawn[1]!r}"
     svg = page.evaluate(READ_SVG)
     mpl, marks, frame, size = matplotlib_prims(name, svg["lang"])
     assert svg["frame"] == pytest.approx(frame, abs=1e-9 * size)
