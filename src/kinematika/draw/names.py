@@ -14,7 +14,7 @@ from typing import Any, Iterable, Optional, Sequence
 
 from ..numerals import DECIMAL, decimal_sign, separator, superscript_power, written
 
-_SIMPLE = re.compile(r"^[A-Za-z0-9_.,' -]+$")
+_SIMPLE = re.compile(r"^[\w.,'·’ -]+$")     # letters of any script (mathtext sets them), digits, _ . , ' · ’ - and spaces
 FORMULA_CHARS = 24            # longer formulas (as plain text) are shown by their value
 
 
