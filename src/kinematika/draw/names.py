@@ -254,8 +254,22 @@ def coordinates(xs: Iterable[float], scale: float = 1.0, lang: Optional[str] = N
 
 
 def bare(label: str) -> str:
-    """A mathtext label as readable plain text, for notes: $I_{\\mathrm{13}}$ -> I13."""
-    out = label.replace("$", "").replace(r"\mathrm", "").replace(r"{\in}", "∈")
+    """A mathtext label as readable plain text, for notes: $I_{\\mathrm{13}}$ -> I13, and a
+    subscript longer than a number or a letter in brackets, so that it does not run into its
+    letter: $I_{\\mathrm{satèl·lit2}\\ \\mathrm{resp.}\\ \\mathrm{corona}}$ -> I(satèl·lit2 resp. corona)."""
+    def piece(math: re.Match) -> str:
+        head, sep, sub = math.group(1).partition("_")
+        if not sep:
+            return _unmath(head)
+        sub = _unmath(sub)
+        return _unmath(head) + (sub if len(sub) == 1 or sub.isdigit() else f"({sub})")
+
+    out, found = re.subn(r"(?<!\\)\$(.+?)(?<!\\)\$", piece, label)
+    return out if found else _unmath(label)
+
+
+def _unmath(text: str) -> str:
+    out = text.replace("$", "").replace(r"\mathrm", "").replace(r"{\in}", "∈")
     out = out.replace(r"\_", "\0").replace(r"\ ", " ")
     out = out.replace("{", "").replace("}", "").replace("_", "").replace("\\", "")
     return out.replace("\0", "_")
