@@ -137,9 +137,10 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
 
 # The letters a contact point is named with when the model names none, in order: J first
 # (the notes' J, "el punt J de contacte"), then the letters after it. Left out: I (the
-# instant centres), O (a centre, and the polygons' pole o), P (the point a problem asks
-# about), T (the notes' terra, as in v_T), V (read as a velocity, v_V) and R (a radius).
-CONTACT_LETTERS = "JKLMNQSUWXYZEFGHABCD"
+# instant centres), L (its polygon image l reads as I or 1), O (a centre, and the
+# polygons' pole o), P (the point a problem asks about), T (the notes' terra, as in v_T),
+# V (read as a velocity, v_V) and R (a radius).
+CONTACT_LETTERS = "JKMNQSUWXYZEFGHABCD"
 
 
 def contact_name(model: Any, joint_id: str, sol: Any = None) -> str:
@@ -154,7 +155,7 @@ def contact_names(model: Any, sol: Any = None) -> dict[str, str]:
     F); else the model's own point there, when one of the two bodies (or a body welded to
     one) carries a point at the contact (one point, one label on a page: C5-1.2's K1, not K1
     and another name); else a letter as a teacher writes it, never the joint's id (the
-    joints' ids are the file's, j3 -> J3 read as a joint): J, then K, L, M … in the
+    joints' ids are the file's, j3 -> J3 read as a joint): J, then K, M, N … in the
     joints' order (`CONTACT_LETTERS`), skipping any letter a point's name starts with (C
     beside C, G beside G1 and G2), a parameter's name (L, r) or a body's index (the slides'
     N) — so one contact is the notes' J; never another point's name (a prime is added)."""

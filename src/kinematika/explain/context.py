@@ -53,7 +53,7 @@ class Ctx:
 
     def contact(self, j) -> str:
         """The name of a touching joint's contact point, placed there: the notation's name,
-        the model's point there, else J, K, L … in the joints' order (`draw.names.contact_names`,
+        the model's point there, else J, K, M … in the joints' order (`draw.names.contact_names`,
         the one rule of the text, the tables and the figures; never the joint's id)."""
         if j.id not in self._contacts:
             from ..draw.names import contact_name
