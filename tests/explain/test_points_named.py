@@ -100,3 +100,30 @@ def test_a_contact_on_a_welded_body_is_the_point_there():
     touch them (s = 3 from K0 up each plane): the contacts are K1 and K2, one label a point."""
     sol = kinematika.solve(EXAMPLES / "seed_c5_1_2_bar_on_inclined_wheels.yaml")
     assert list(contact_names(sol.model, sol).values()) == ["K1", "K2"]
+
+
+def _spelt_otherwise(sol) -> list[str]:
+    """The parameters with a digit whose symbol the formulas write otherwise (r1 as r₁)."""
+    from kinematika.explain.render.names import unicode_name
+
+    wording = sol.model.wording
+    return [p for p in sol.model.parameters if any(c.isdigit() for c in p)
+            and unicode_name(wording.symbol(p, "en") or p) != p]
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_the_models_words_write_parameters_as_the_formulas_do(name, lang):
+    """C5-E.5's point P "at r1 below its centre" sat over (L; r₂ − r₁), and its notes wrote
+    (r2 − r1)²/r1 beside the page's (r₂ − r₁)²/r₁: the model's own words (what a point is,
+    the Data's statements, the notes) write a parameter as the formulas do."""
+    sol, _ = explained(name)
+    names = _spelt_otherwise(sol)
+    text = rendered(name, lang, "md", drawings=False)
+    for p in names:
+        assert not re.search(rf"(?<![A-Za-z0-9_.]){re.escape(p)}(?![A-Za-z0-9_])", text), (name, lang, p)
+    if name == "seed_c5_e5_unequal_wheels":
+        assert sorted(names) == ["r1", "r2"]
+        assert any("ℜ = r₂/(r₂ − r₁)²" in line for line in text.splitlines())      # the note on the print
+        point_p = next(line for line in text.splitlines() if line.startswith("| P |"))
+        assert "r₁" in point_p and "r1" not in point_p
