@@ -118,7 +118,17 @@ def _build(sol: Solution, length_unit: str) -> Document:
         if id(eq) not in in_levels:
             eq.polygon = polygon(ctx, eq)
     doc.joints = joint_places(ctx)
+    doc.ground_part = ground_part(ctx)
     return doc
+
+
+def ground_part(ctx: Ctx) -> bool:
+    """Whether the model names its ground after a part fixed to it, which carries a shape (the
+    fixed pulley of C5-1.6, the tied strand of C5-1.5, a track): the text names the part where
+    it acts (a contact, the structure's table) and says the ground where it is the reference of
+    a motion, as the notes do ("el CIR del braç respecte al terra és el centre O de la politja
+    fixa")."""
+    return bool(ctx.planar and ctx.inst.shapes.get(ctx.frame))
 
 
 def joint_places(ctx: Ctx) -> dict:

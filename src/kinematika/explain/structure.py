@@ -212,21 +212,13 @@ def mechanism_figure(ctx: Ctx) -> Figure:
     return fig
 
 
-def belt_runs(ctx: Ctx) -> set[str]:
-    """The straight runs of belts and chains (`drives.drives`) that no question asks about:
-    a run translates as its holder carries it (the notes never give a belt an ω), so the
-    table of rates does not list it as a turning body."""
-    from .drives import drives
-
-    asked = {q.target for q in ctx.model.questions}
-    return {d.line for d in drives(ctx)} - asked
-
-
 def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
     """ω (and α, when accelerations are explained) of every body but a belt's run
     (`belt_runs`), the solver's values."""
     def value(x, unit: str) -> Value:
         return Value(ctx.clean(x if ctx.planar else tuple(x), unit), unit)
+
+    from .drives import belt_runs
 
     rows = [[Name(b, "body", bare=True), value(ctx.omega(b), "rate")]
             + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies

@@ -744,3 +744,5 @@ check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la
 driver-slide = Dada: la velocitat de lliscament a l’enllaç prismàtic { $joint } és { $value }.
 driver-slide_accel = Dada: l’acceleració de lliscament a l’enllaç prismàtic { $joint } és { $value }.
 centre-line-normal = la normal comuna al contacte { $point } (els sòlids llisquen l’un sobre l’altre: cap velocitat relativa segons ella)
+# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
+ground-word = el terra

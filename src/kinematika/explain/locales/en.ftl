@@ -429,3 +429,5 @@ check-quick = Time ratio of the quick return: { $lever } is at an end of its swi
 driver-slide = Given: the sliding velocity in the prismatic pair { $joint } is { $value }.
 driver-slide_accel = Given: the sliding acceleration in the prismatic pair { $joint } is { $value }.
 centre-line-normal = the common normal at the contact { $point } (the bodies slide on each other there: no relative velocity along it)
+# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
+ground-word = ground

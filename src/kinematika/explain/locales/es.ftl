@@ -465,3 +465,5 @@ check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extr
 driver-slide = Dato: la velocidad de deslizamiento en el par prismático { $joint } es { $value }.
 driver-slide_accel = Dato: la aceleración de deslizamiento en el par prismático { $joint } es { $value }.
 centre-line-normal = la normal común en el contacto { $point } (los sólidos deslizan uno sobre otro: ninguna velocidad relativa según ella)
+# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
+ground-word = el suelo

@@ -435,3 +435,5 @@ check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulu
 driver-slide = Datua: { $joint } lotura prismatikoko irristatze-abiadura { $value } da.
 driver-slide_accel = Datua: { $joint } lotura prismatikoko irristatze-azelerazioa { $value } da.
 centre-line-normal = { $point } kontaktuko normal komuna (solidoak elkarren gainean irristatzen dira: ez dago abiadura erlatiborik haren norabidean)
+# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
+ground-word = lurra
