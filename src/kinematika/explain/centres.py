@@ -75,8 +75,20 @@ def used_pairs(made: dict, chosen: list) -> list[tuple[str, str]]:
 
 def _placed(ctx: Ctx, note: CentreNote) -> bool:
     """Whether the structure places the centre, with no velocity (the engine's way, before
-    the explanation reads a wheel's axle off a velocity)."""
-    return note.how in STRUCTURAL and ctx.centre_how.get(frozenset(note.pair)) in STRUCTURAL
+    the explanation reads a wheel's axle off a velocity), or the data do (`_from_data`)."""
+    return (note.how in STRUCTURAL or _from_data(ctx, note)) and ctx.centre_how.get(frozenset(note.pair)) in STRUCTURAL
+
+
+def _from_data(ctx: Ctx, note: CentreNote) -> bool:
+    """Whether a centre found from two parallel velocities (`_kennedy`'s proportional
+    construction) takes only the data: each witness point turns with a body whose rate the
+    statement gives about a point at rest. Then the notes place the centre first and read the
+    body's ω off it, ω = v / distance (C5-1.4: the carrier and the ring given, the planet's
+    centre at (2/5)r from its axle, "el CIR es troba entre els dos"), not the other way round."""
+    if note.how != "proportional" or not note.pivots or ctx.frame not in note.pair:
+        return False
+    given = {d.body for d in ctx.model.drivers if d.kind == "omega" and d.relative_to in (None, ctx.frame)}
+    return all(k in given for k in note.via)
 
 
 def _notes(ctx: Ctx) -> tuple[dict, list, set]:
@@ -171,7 +183,7 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
     found: list[tuple[str, tuple, Optional[str]]] = []
     for key in chosen:
         note = made[key]
-        if ctx.frame not in key or note.how not in ("kennedy", "lines") or not _placed(ctx, note):
+        if ctx.frame not in key or note.how not in ("kennedy", "lines", "proportional") or not _placed(ctx, note):
             continue
         body = next(b for b in note.pair if b != ctx.frame)
         where = note.value.get("point")

@@ -873,7 +873,7 @@ class Writer:
                     turn = r.segs[i + 1]
                     made = self.seg_terms(turn, p)
                     terms = self.path_terms(seg.joint, turn.body, turn.p, terms + self.seg_terms(seg, p) + made[:-1])
-                    if not terms:               # a straight path: the centre's acceleration is that term whole
+                    if not terms and p.end != Site(turn.p, turn.body):     # a straight path, in a sum: the term is a_C whole
                         made[-1].sym = Sym(lv, ctx.point_label(turn.p, turn.body))
                         ps.done.add(made[-1].sym.sub)
                     terms.append(made[-1])
