@@ -121,7 +121,7 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
         elif c.how == "velocities" and c.finite:
             note.witnesses = _witnesses(ctx, c.pair[1], c.pair[0])
             _axles(ctx, note)
-            if note.how == "velocities" and len(note.witnesses) < 2:
+            if note.how == "velocities" and len(note.witnesses) < 2 and not _parallel(ctx, note):
                 _field(ctx, note)
         if note.how in ("kennedy", "lines", "velocities", "proportional") and ctx.frame in key and \
                 any(f"drive:{b}" in ctx.worked for b in key if b != ctx.frame):
@@ -225,6 +225,42 @@ def _field(ctx: Ctx, note: CentreNote) -> bool:
     note.arm = ctx.clean(tuple(c - p for c, p in zip(note.value["point"], ctx.pos(q))), "len")
     note.distance = ctx.clean(_length(ctx, note.arm), "len")
     return True
+
+
+def _parallel(ctx: Ctx, note: CentreNote) -> bool:
+    """The centre from two points P and Q of the body whose velocities are parallel and
+    perpendicular to the line PQ, by the notes' proportional construction (the second way to
+    find a CIR, "el triangle de velocitats ... té el CIR com a un dels seus vèrtex"): the
+    velocity grows linearly with the distance from the centre along that line, so the centre
+    is where it falls to zero, between P and Q when they move in opposite senses (at the
+    midpoint when their speeds are equal: C5-1.5's third pulley, its contact rising at 2v and
+    its centre falling at 2v), beyond the slower one when in the same sense:
+    QI = |v_Q| · PQ / |v_P ∓ v_Q|. The body's points and its rolling contacts are tried, its
+    own points (a wheel's centre) as Q. False when no such pair is there."""
+    a, b = note.pair
+    where = note.value.get("point")
+    if where is None:
+        return False
+    own = list(ctx.model.bodies[b].points)
+    contacts = [ctx.contact(j) for j in ctx.model.joints if rolls(j) and b in (j.a, j.b)]
+    points = [p for p in dict.fromkeys(own + contacts) if p in ctx.inst.points]
+    speeds = {p: ctx.vel(b, p, a) for p in points}
+    moving = [p for p in points if not ctx.is_zero(speeds[p], "speed")]
+    for q in (p for p in moving if p in own):
+        for p in (x for x in moving if x != q):
+            vp, vq = ctx.num(speeds[p]), ctx.num(speeds[q])
+            pq = [y - x for x, y in zip(ctx.num(ctx.pos(q)), ctx.num(ctx.pos(p)))]
+            size = _size(ctx, speeds[p]) * _size(ctx, speeds[q])
+            if abs(vp[0] * vq[1] - vp[1] * vq[0]) > 1e-6 * size or abs(vp[0] * pq[0] + vp[1] * pq[1]) > \
+                    1e-6 * _size(ctx, speeds[p]) * (pq[0] ** 2 + pq[1] ** 2) ** 0.5:
+                continue
+            note.how = "parallel"
+            note.side = "between" if vp[0] * vq[0] + vp[1] * vq[1] < 0 else "outside"
+            note.witnesses = [(p, ctx.clean(speeds[p], "speed")), (q, ctx.clean(speeds[q], "speed"))]
+            note.arm = ctx.clean(tuple(c - x for c, x in zip(where, ctx.pos(q))), "len")
+            note.distance = ctx.clean(_length(ctx, note.arm), "len")
+            return True
+    return False
 
 
 def _length(ctx: Ctx, v: tuple):

@@ -558,6 +558,11 @@ class Renderer(ABC):
             why = Msg("centre.lines", {"first": c.via[0], "second": c.via[1]})
         elif c.how == "proportional" and len(c.witnesses) == 2:
             why = self.proportional(c)
+        elif c.how == "parallel":
+            (p, vp), (q, vq) = c.witnesses
+            why = Msg(f"centre.parallel.{c.side}", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
+                                                   "vq": Value(vq, "speed"), "frame": self.frame_name(a),
+                                                   "arm": Inline([Name(q), name]), "dist": Value(c.distance, "len")})
         elif c.how == "field":
             why = Msg("centre.field", self.field_args(c, name))
         elif c.how == "rate":
