@@ -44,7 +44,8 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
         return None
     sec = Section(msg("sec.centres" if part != "rest" else "sec.centres_v"))
     if part != "rest":
-        first_body = next(b for b in ctx.model.bodies if b != ctx.frame)
+        first_body = next((b for b in ctx.model.bodies if b != ctx.frame and not ctx.fixed(b)),
+                          next(b for b in ctx.model.bodies if b != ctx.frame))     # a moving body, not a part of the frame
         sec.add(msg("centres.intro", example=Sym("I", "13", vector=False),
                     pair=Sym("I", f"{ctx.frame},{first_body}", vector=False), body=Name(first_body, "body"),
                     frame=Name(ctx.frame, "body", reference=True)))
@@ -109,9 +110,15 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
             weld = ctx.model.joint(c.via[0])
             welded = next(b for b in c.pair if b in (weld.a, weld.b) and b != c.via[1])
             x = next(b for b in c.pair if b != welded)
-            note.same = {"pair": (x, c.via[1]), "welded": welded,
-                         **_clean(ctx, found[frozenset((x, c.via[1]))].value)}
-            deps[key] = [frozenset((x, c.via[1]))]
+            part = found[frozenset((x, c.via[1]))]
+            if welded == ctx.frame and ctx.fixed(c.via[1]) and part.how == "joint":
+                # a part welded to the frame is the frame (the notes' inclined planes are "el
+                # terra inclinat"): the contact with it is the centre, said once, at the joint
+                note.how, note.via = "joint", list(part.via)
+                note.joint_type = ctx.model.joint(part.via[0]).kind.name
+            else:
+                note.same = {"pair": (x, c.via[1]), "welded": welded, **_clean(ctx, part.value)}
+                deps[key] = [frozenset((x, c.via[1]))]
         elif c.how == "kennedy":
             _kennedy(ctx, note, found, order[:order.index(c)])
         elif c.how == "lines":

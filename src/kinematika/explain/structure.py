@@ -8,7 +8,7 @@ from typing import Optional
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
-from .kinds import kind_key, on_fixed_line, rolls
+from .kinds import kind_key, on_fixed_line, rolls, welds
 from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Table, Value, body, msg, names, point
 from .order import Step
 
@@ -27,9 +27,11 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
     sec.add(msg("structure.subscripts", bodies=list(ctx.model.bodies)))   # ω_t: which body (render)
-    # a joint is said by what it is, the bodies it joins and where: never by its id (j3)
+    # a joint is said by what it is, the bodies it joins and where: never by its id (j3); a
+    # part welded to the frame is part of it (its row says so, and the sentence below), not a
+    # joint of the mechanism (the notes' inclined planes are "el terra inclinat")
     joints = [[msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
-              for j in model.joints]
+              for j in model.joints if not (welds(j) and ctx.fixed(j.a) and ctx.fixed(j.b))]
     sec.add(Table([msg("col.joint"), msg("col.bodies"), msg("col.where")], joints))
     welded = welded_to_frame(ctx)
     if welded:
