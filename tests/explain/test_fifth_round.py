@@ -156,3 +156,15 @@ def test_a_wheel_on_a_welded_plane_turns_about_its_contact():
     assert len(joints.rows) == len(doc.joints) - 2
     eu = rendered("seed_c5_1_2_bar_on_inclined_wheels", "eu", drawings=False)
     assert "I_{ezkerreko planoa}" not in eu and "zurrunki lotuta daude: solido bakarra" not in eu
+
+
+def test_the_tied_strand_is_a_part_welded_to_the_ceiling():
+    """C5-1.5: "tots els punts del tram de l'esquerra han de tenir velocitat nul·la respecte
+    al terra (ja que el punt de dalt està lligat al sostre)": strand 1 is its own body, welded
+    to the ceiling, on which pulley 1 rolls; a centre is said relative to the ground, the
+    ceiling being named after a part of it (the strand carries the shape)."""
+    ca = rendered("seed_c5_1_5_pulley_block", "ca", drawings=False)
+    assert "| 2 | *tram 1* (unit rígidament al *sostre*: fix) |" in ca
+    assert "La *politja 1* rodola sense lliscar sobre el *tram 1*" in ca
+    assert "CIR de la *politja 3* respecte del *terra*" in ca
+    assert "ω_tram1" not in ca                   # a part of the frame has no rate to name

@@ -26,7 +26,8 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
-    sec.add(msg("structure.subscripts", bodies=list(ctx.model.bodies)))   # ω_t: which body (render)
+    sec.add(msg("structure.subscripts",          # ω_t: which body (render); a part welded to the frame has no rate
+                bodies=[b for b in ctx.model.bodies if b not in welded_to_frame(ctx)]))
     # a joint is said by what it is, the bodies it joins and where: never by its id (j3); a
     # part welded to the frame is part of it (its row says so, and the sentence below), not a
     # joint of the mechanism (the notes' inclined planes are "el terra inclinat")
