@@ -16,7 +16,7 @@ from kinematika.questions import answer
 from .helpers import EXAMPLES, is_close, explained
 
 SEEDS = sorted(p.stem for p in EXAMPLES.glob("seed_*.yaml"))
-DERIVED_CENTRES = {"joint", "kennedy", "lines", "proportional", "velocities", "field", "weld", "rate"}
+DERIVED_CENTRES = {"joint", "kennedy", "lines", "proportional", "parallel", "velocities", "field", "weld", "rate"}
 
 
 def before_answers(doc) -> list:

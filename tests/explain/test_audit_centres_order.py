@@ -26,8 +26,9 @@ def _centre_lines(text: str) -> list[str]:
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_a_centre_from_one_velocity_is_placed_by_its_distance_not_by_k(lang):
-    """C5-1.6's I_13, 1.5, E.5, E.6: "AI_13 = |v_A| / |ω| = …", never "k × v_A / ω" (2.1 and
-    2.2 place their chassis' centres in the velocity step and do not check them again)."""
+    """C5-1.6's I_13, E.5, E.6: "AI_13 = |v_A| / |ω| = …", never "k × v_A / ω" (2.1 and
+    2.2 place their chassis' centres in the velocity step and do not check them again; 1.5's
+    third pulley goes by the notes' midpoint: `test_the_belt_pulley_centre_is_at_r_over_2_from_c3`)."""
     placed = set()
     for name in SEEDS:
         for line in _centre_lines(_text(name, lang)):
@@ -35,14 +36,16 @@ def test_a_centre_from_one_velocity_is_placed_by_its_distance_not_by_k(lang):
             assert not re.search(r"× v_\S+ / ω", line), (name, line)
             if "|v_" in line and PERPENDICULAR[lang] in line:
                 placed.add(name)
-    assert {"seed_c5_1_5_pulley_block", "seed_c5_1_6_belt", "seed_c5_e5_unequal_wheels",
-            "seed_c5_e6_bicycle"} <= placed
+    assert {"seed_c5_1_6_belt", "seed_c5_e5_unequal_wheels", "seed_c5_e6_bicycle"} <= placed
 
 
 def test_the_belt_pulley_centre_is_at_r_over_2_from_c3():
-    """C5-1.5: the pulley turns at ω = −4v/r and C3 moves at 2v, so C3I = 2v / (4v/r) = r/2."""
+    """C5-1.5: T4 rises at 2v and C3 falls at 2v, so the centre is midway between them, as the
+    notes say ("el CIR d'aquesta politja estarà en el punt mig"): C3I = r/2 (the pulley turns
+    at ω = −4v/r, and 2v / (4v/r) = r/2 too), by the construction, not by |v_C3| / |ω|."""
     text = _text("seed_c5_1_5_pulley_block", "en")
-    assert "C3I_pulley3 = |v_C3| / |ω_pulley3|" in text and "= r/2 from C3" in text
+    assert "C3I_pulley3 = r/2 from C3" in text and "lies between them" in text
+    assert "|v_C3| / |ω_pulley3|" not in text
 
 
 @pytest.mark.parametrize("lang,wrong", [("ca", r"a partir .*\* i (?:el|la|l’|els|les) ?\*"),

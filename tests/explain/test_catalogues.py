@@ -33,6 +33,7 @@ FAMILIES = {
     "ans": ["point", "direction", "center", "tangent", "slide"],
     "centre.proportional": ["between", "outside"],
     "centre.carried": ["between", "outside"],
+    "centre.parallel": ["between", "outside"],
     "pos": ["left", "right", "ahead", "behind", "open", "crossed"],
 }
 

@@ -63,7 +63,7 @@ def test_no_markdown_mentions_colours(name, lang, monkeypatch):
     # the normal to the floor's line through the point that slides on it
     ("seed_c5_1_2_bar_on_inclined_wheels", "ca", "a la normal a J a la recta", "a la normal a la recta del *terra* per J"),
     # a body's name stripped of its article keeps no stray article of its own
-    ("seed_c5_1_5_pulley_block", "ca", "del *sostre i el tram 1*", "del *sostre amb el tram 1*"),
+    ("seed_c5_1_5_pulley_block", "ca", "i el *sostre*", "a partir de la *politja 1* i del *sostre*"),
 ])
 def test_the_notes_grammar(name, lang, wrong, right):
     """Catalan, Spanish and Basque as the notes write them (issue 30's audit, its grammar points)."""

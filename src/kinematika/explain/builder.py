@@ -119,7 +119,19 @@ def _build(sol: Solution, length_unit: str) -> Document:
             eq.polygon = polygon(ctx, eq)
     doc.joints = joint_places(ctx)
     doc.parameters = tuple(ctx.model.parameters)
+    doc.ground_part = ground_part(ctx)
     return doc
+
+
+def ground_part(ctx: Ctx) -> bool:
+    """Whether the model names its ground after a part fixed to it, which carries a shape (the
+    fixed pulley of C5-1.6, a track), or welds such parts to it (the strand C5-1.5 ties to the
+    ceiling, C5-1.2's inclined planes): the text names the part where
+    it acts (a contact, the structure's table) and says the ground where it is the reference of
+    a motion, as the notes do ("el CIR del braç respecte al terra és el centre O de la politja
+    fixa")."""
+    return bool(ctx.planar and any(ctx.inst.shapes.get(b) for b in ctx.model.bodies
+                                   if b == ctx.frame or ctx.fixed(b)))
 
 
 def joint_places(ctx: Ctx) -> dict:

@@ -44,10 +44,11 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
         return None
     sec = Section(msg("sec.centres" if part != "rest" else "sec.centres_v"))
     if part != "rest":
-        first_body = next(b for b in ctx.model.bodies if b != ctx.frame)
+        first_body = next((b for b in ctx.model.bodies if b != ctx.frame and not ctx.fixed(b)),
+                          next(b for b in ctx.model.bodies if b != ctx.frame))     # a moving body, not a part of the frame
         sec.add(msg("centres.intro", example=Sym("I", "13", vector=False),
                     pair=Sym("I", f"{ctx.frame},{first_body}", vector=False), body=Name(first_body, "body"),
-                    frame=Name(ctx.frame, "body")))
+                    frame=Name(ctx.frame, "body", reference=True)))
     if part == "all" or (part == "first") == (len(first) == len(chosen)) or part == "rest":
         sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False,
                         centre_pairs=used_pairs(made, chosen)))
@@ -75,8 +76,20 @@ def used_pairs(made: dict, chosen: list) -> list[tuple[str, str]]:
 
 def _placed(ctx: Ctx, note: CentreNote) -> bool:
     """Whether the structure places the centre, with no velocity (the engine's way, before
-    the explanation reads a wheel's axle off a velocity)."""
-    return note.how in STRUCTURAL and ctx.centre_how.get(frozenset(note.pair)) in STRUCTURAL
+    the explanation reads a wheel's axle off a velocity), or the data do (`_from_data`)."""
+    return (note.how in STRUCTURAL or _from_data(ctx, note)) and ctx.centre_how.get(frozenset(note.pair)) in STRUCTURAL
+
+
+def _from_data(ctx: Ctx, note: CentreNote) -> bool:
+    """Whether a centre found from two parallel velocities (`_kennedy`'s proportional
+    construction) takes only the data: each witness point turns with a body whose rate the
+    statement gives about a point at rest. Then the notes place the centre first and read the
+    body's ω off it, ω = v / distance (C5-1.4: the carrier and the ring given, the planet's
+    centre at (2/5)r from its axle, "el CIR es troba entre els dos"), not the other way round."""
+    if note.how != "proportional" or not note.pivots or ctx.frame not in note.pair:
+        return False
+    given = {d.body for d in ctx.model.drivers if d.kind == "omega" and d.relative_to in (None, ctx.frame)}
+    return all(k in given for k in note.via)
 
 
 def _notes(ctx: Ctx) -> tuple[dict, list, set]:
@@ -97,9 +110,15 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
             weld = ctx.model.joint(c.via[0])
             welded = next(b for b in c.pair if b in (weld.a, weld.b) and b != c.via[1])
             x = next(b for b in c.pair if b != welded)
-            note.same = {"pair": (x, c.via[1]), "welded": welded,
-                         **_clean(ctx, found[frozenset((x, c.via[1]))].value)}
-            deps[key] = [frozenset((x, c.via[1]))]
+            part = found[frozenset((x, c.via[1]))]
+            if welded == ctx.frame and ctx.fixed(c.via[1]) and part.how == "joint":
+                # a part welded to the frame is the frame (the notes' inclined planes are "el
+                # terra inclinat"): the contact with it is the centre, said once, at the joint
+                note.how, note.via = "joint", list(part.via)
+                note.joint_type = ctx.model.joint(part.via[0]).kind.name
+            else:
+                note.same = {"pair": (x, c.via[1]), "welded": welded, **_clean(ctx, part.value)}
+                deps[key] = [frozenset((x, c.via[1]))]
         elif c.how == "kennedy":
             _kennedy(ctx, note, found, order[:order.index(c)])
         elif c.how == "lines":
@@ -109,7 +128,7 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
         elif c.how == "velocities" and c.finite:
             note.witnesses = _witnesses(ctx, c.pair[1], c.pair[0])
             _axles(ctx, note)
-            if note.how == "velocities" and len(note.witnesses) < 2:
+            if note.how == "velocities" and len(note.witnesses) < 2 and not _parallel(ctx, note):
                 _field(ctx, note)
         if note.how in ("kennedy", "lines", "velocities", "proportional") and ctx.frame in key and \
                 any(f"drive:{b}" in ctx.worked for b in key if b != ctx.frame):
@@ -171,7 +190,7 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
     found: list[tuple[str, tuple, Optional[str]]] = []
     for key in chosen:
         note = made[key]
-        if ctx.frame not in key or note.how not in ("kennedy", "lines") or not _placed(ctx, note):
+        if ctx.frame not in key or note.how not in ("kennedy", "lines", "proportional") or not _placed(ctx, note):
             continue
         body = next(b for b in note.pair if b != ctx.frame)
         where = note.value.get("point")
@@ -213,6 +232,42 @@ def _field(ctx: Ctx, note: CentreNote) -> bool:
     note.arm = ctx.clean(tuple(c - p for c, p in zip(note.value["point"], ctx.pos(q))), "len")
     note.distance = ctx.clean(_length(ctx, note.arm), "len")
     return True
+
+
+def _parallel(ctx: Ctx, note: CentreNote) -> bool:
+    """The centre from two points P and Q of the body whose velocities are parallel and
+    perpendicular to the line PQ, by the notes' proportional construction (the second way to
+    find a CIR, "el triangle de velocitats ... té el CIR com a un dels seus vèrtex"): the
+    velocity grows linearly with the distance from the centre along that line, so the centre
+    is where it falls to zero, between P and Q when they move in opposite senses (at the
+    midpoint when their speeds are equal: C5-1.5's third pulley, its contact rising at 2v and
+    its centre falling at 2v), beyond the slower one when in the same sense:
+    QI = |v_Q| · PQ / |v_P ∓ v_Q|. The body's points and its rolling contacts are tried, its
+    own points (a wheel's centre) as Q. False when no such pair is there."""
+    a, b = note.pair
+    where = note.value.get("point")
+    if where is None:
+        return False
+    own = list(ctx.model.bodies[b].points)
+    contacts = [ctx.contact(j) for j in ctx.model.joints if rolls(j) and b in (j.a, j.b)]
+    points = [p for p in dict.fromkeys(own + contacts) if p in ctx.inst.points]
+    speeds = {p: ctx.vel(b, p, a) for p in points}
+    moving = [p for p in points if not ctx.is_zero(speeds[p], "speed")]
+    for q in (p for p in moving if p in own):
+        for p in (x for x in moving if x != q):
+            vp, vq = ctx.num(speeds[p]), ctx.num(speeds[q])
+            pq = [y - x for x, y in zip(ctx.num(ctx.pos(q)), ctx.num(ctx.pos(p)))]
+            size = _size(ctx, speeds[p]) * _size(ctx, speeds[q])
+            if abs(vp[0] * vq[1] - vp[1] * vq[0]) > 1e-6 * size or abs(vp[0] * pq[0] + vp[1] * pq[1]) > \
+                    1e-6 * _size(ctx, speeds[p]) * (pq[0] ** 2 + pq[1] ** 2) ** 0.5:
+                continue
+            note.how = "parallel"
+            note.side = "between" if vp[0] * vq[0] + vp[1] * vq[1] < 0 else "outside"
+            note.witnesses = [(p, ctx.clean(speeds[p], "speed")), (q, ctx.clean(speeds[q], "speed"))]
+            note.arm = ctx.clean(tuple(c - x for c, x in zip(where, ctx.pos(q))), "len")
+            note.distance = ctx.clean(_length(ctx, note.arm), "len")
+            return True
+    return False
 
 
 def _length(ctx: Ctx, v: tuple):

@@ -76,6 +76,7 @@ class Name:
     text: str
     kind: str = "point"
     bare: bool = False             # a body's name without its article (in a table's cell)
+    reference: bool = False        # the ground as the reference of a motion ("relative to the ground")
 
     def __str__(self) -> str:
         return self.text
@@ -318,6 +319,7 @@ class Document:
     wording: Any = None                             # the model's names per language and notation
     joints: dict = field(default_factory=dict)      # joint -> its point or contact (how the text names it)
     parameters: tuple = ()                          # the model's parameters' names (its own words write them)
+    ground_part: bool = False                       # the ground is named after a part of it (`reference_name`)
 
     def blocks(self) -> list:
         """Every block, nested sections included, in reading order."""

@@ -33,7 +33,7 @@ import numpy as np
 from ..algebra.vectors import dot, scale, sub
 from ..model.model import Joint
 from .context import Ctx, alpha_sym, omega_sym, segment
-from .document import (Ann, Derived, Equation, Msg, Sym, Term, Value, body as body_name, joint as joint_name, msg,
+from .document import (Ann, Derived, Equation, Msg, Name, Sym, Term, Value, body as body_name, joint as joint_name, msg,
                        point as point_name)
 from .order import jointed
 from .contacts import geometric_blocks
@@ -873,6 +873,9 @@ class Writer:
                     turn = r.segs[i + 1]
                     made = self.seg_terms(turn, p)
                     terms = self.path_terms(seg.joint, turn.body, turn.p, terms + self.seg_terms(seg, p) + made[:-1])
+                    if not terms and p.end != Site(turn.p, turn.body):     # a straight path, in a sum: the term is a_C whole
+                        made[-1].sym = Sym(lv, ctx.point_label(turn.p, turn.body))
+                        ps.done.add(made[-1].sym.sub)
                     terms.append(made[-1])
                     skip = i + 1
                     if turn.body in p.finds:
@@ -1197,7 +1200,7 @@ def centre_site(ctx: Ctx, name: str, body: str):
     """The sentence that the instant centre placed before (a point of the body there, or
     I14) has no velocity."""
     key = "centre.site_i" if name in ctx.centre_points else "centre.site"
-    return msg(key, point=point_name(name), body=body_name(body), frame=body_name(ctx.frame),
+    return msg(key, point=point_name(name), body=body_name(body), frame=Name(ctx.frame, "body", reference=True),
                centre=Sym("I", f"{ctx.frame},{body}", vector=False), sym=Sym("v", ctx.point_label(name, body)))
 
 

@@ -8,7 +8,7 @@ from typing import Optional
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .context import Ctx
-from .kinds import kind_key, on_fixed_line, rolls
+from .kinds import kind_key, on_fixed_line, rolls, welds
 from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Table, Value, body, msg, names, point
 from .order import Step
 
@@ -26,10 +26,13 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
                [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
-    sec.add(msg("structure.subscripts", bodies=list(ctx.model.bodies)))   # ω_t: which body (render)
-    # a joint is said by what it is, the bodies it joins and where: never by its id (j3)
+    sec.add(msg("structure.subscripts",          # ω_t: which body (render); a part welded to the frame has no rate
+                bodies=[b for b in ctx.model.bodies if b not in welded_to_frame(ctx)]))
+    # a joint is said by what it is, the bodies it joins and where: never by its id (j3); a
+    # part welded to the frame is part of it (its row says so, and the sentence below), not a
+    # joint of the mechanism (the notes' inclined planes are "el terra inclinat")
     joints = [[msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
-              for j in model.joints]
+              for j in model.joints if not (welds(j) and ctx.fixed(j.a) and ctx.fixed(j.b))]
     sec.add(Table([msg("col.joint"), msg("col.bodies"), msg("col.where")], joints))
     welded = welded_to_frame(ctx)
     if welded:
@@ -212,21 +215,13 @@ def mechanism_figure(ctx: Ctx) -> Figure:
     return fig
 
 
-def belt_runs(ctx: Ctx) -> set[str]:
-    """The straight runs of belts and chains (`drives.drives`) that no question asks about:
-    a run translates as its holder carries it (the notes never give a belt an ω), so the
-    table of rates does not list it as a turning body."""
-    from .drives import drives
-
-    asked = {q.target for q in ctx.model.questions}
-    return {d.line for d in drives(ctx)} - asked
-
-
 def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
     """ω (and α, when accelerations are explained) of every body but a belt's run
     (`belt_runs`), the solver's values."""
     def value(x, unit: str) -> Value:
         return Value(ctx.clean(x if ctx.planar else tuple(x), unit), unit)
+
+    from .drives import belt_runs
 
     rows = [[Name(b, "body", bare=True), value(ctx.omega(b), "rate")]
             + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies

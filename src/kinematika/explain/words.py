@@ -54,7 +54,8 @@ class ExplainWords:
 
     def frame(self, q: Any) -> Name:
         """The question's frame as a body's name."""
-        return Name(self.ctx.rel(q.relative_to) or self.ctx.frame, "body")
+        moving = self.ctx.rel(q.relative_to)
+        return Name(moving, "body") if moving else Name(self.ctx.frame, "body", reference=True)
 
     def rate(self, base: str, q: Any, vector: bool) -> Sym:
         """ω_body or α_body, relative to the question's frame when it is not the fixed one."""

@@ -744,3 +744,20 @@ check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la
 driver-slide = Dada: la velocitat de lliscament a l’enllaç prismàtic { $joint } és { $value }.
 driver-slide_accel = Dada: l’acceleració de lliscament a l’enllaç prismàtic { $joint } és { $value }.
 centre-line-normal = la normal comuna al contacte { $point } (els sòlids llisquen l’un sobre l’altre: cap velocitat relativa segons ella)
+# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
+ground-word = el terra
+# un CIR a partir de dues velocitats paral·leles i perpendiculars a la recta dels seus punts (la construcció proporcional dels apunts)
+centre-parallel-between = els enllaços no el situen abans de conèixer les velocitats; amb elles: respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $arm } = { $dist } { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }:
+centre-parallel-outside = els enllaços no el situen abans de conèixer les velocitats; amb elles: respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $arm } = { $dist } { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }:

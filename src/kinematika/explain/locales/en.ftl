@@ -429,3 +429,8 @@ check-quick = Time ratio of the quick return: { $lever } is at an end of its swi
 driver-slide = Given: the sliding velocity in the prismatic pair { $joint } is { $value }.
 driver-slide_accel = Given: the sliding acceleration in the prismatic pair { $joint } is { $value }.
 centre-line-normal = the common normal at the contact { $point } (the bodies slide on each other there: no relative velocity along it)
+# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
+ground-word = ground
+# a centre from two parallel velocities perpendicular to the line through their points (the notes' proportional construction)
+centre-parallel-between = the constraints do not place it before the velocities are known; with them: relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have opposite senses, so the centre lies between them, where the speed falls to zero, at { $arm } = { $dist } from { $q }:
+centre-parallel-outside = the constraints do not place it before the velocities are known; with them: relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $arm } = { $dist } from { $q }:

@@ -465,3 +465,8 @@ check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extr
 driver-slide = Dato: la velocidad de deslizamiento en el par prismático { $joint } es { $value }.
 driver-slide_accel = Dato: la aceleración de deslizamiento en el par prismático { $joint } es { $value }.
 centre-line-normal = la normal común en el contacto { $point } (los sólidos deslizan uno sobre otro: ninguna velocidad relativa según ella)
+# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
+ground-word = el suelo
+# un CIR a partir de dos velocidades paralelas y perpendiculares a la recta de sus puntos (la construcción proporcional de los apuntes)
+centre-parallel-between = los enlaces no lo sitúan antes de conocer las velocidades; con ellas: respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $arm } = { $dist } de { $q }:
+centre-parallel-outside = los enlaces no lo sitúan antes de conocer las velocidades; con ellas: respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $arm } = { $dist } de { $q }:

@@ -435,3 +435,8 @@ check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulu
 driver-slide = Datua: { $joint } lotura prismatikoko irristatze-abiadura { $value } da.
 driver-slide_accel = Datua: { $joint } lotura prismatikoko irristatze-azelerazioa { $value } da.
 centre-line-normal = { $point } kontaktuko normal komuna (solidoak elkarren gainean irristatzen dira: ez dago abiadura erlatiborik haren norabidean)
+# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
+ground-word = lurra
+# zentro bat, bi puntuen zuzenarekiko perpendikularrak diren bi abiadura paralelotatik (apunteen eraikuntza proportzionala)
+centre-parallel-between = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin: { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $arm } = { $dist } distantziara:
+centre-parallel-outside = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin: { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $arm } = { $dist } distantziara:

@@ -302,6 +302,8 @@ class Renderer(ABC):
     # the model's words and notation -----------------------------------------------------------
     def called(self, n: Name) -> str:
         """A body's name in the reader's language (the model's `names`), else the model's."""
+        if n.kind == "body" and n.reference and self.doc.ground_part and self.cat.has("ground.word"):
+            return self.cat.get("ground.word")           # the reference, named as the notes name it
         if n.kind == "body":
             return self.wording.body(n.text, self.lang)
         if n.kind == "joint":                            # the model's name, else its point or bodies
@@ -577,6 +579,11 @@ class Renderer(ABC):
             why = Msg("centre.lines", {"first": c.via[0], "second": c.via[1]})
         elif c.how == "proportional" and len(c.witnesses) == 2:
             why = self.proportional(c)
+        elif c.how == "parallel":
+            (p, vp), (q, vq) = c.witnesses
+            why = Msg(f"centre.parallel.{c.side}", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
+                                                   "vq": Value(vq, "speed"), "frame": self.frame_name(a),
+                                                   "arm": Inline([Name(q), name]), "dist": Value(c.distance, "len")})
         elif c.how == "field":
             why = Msg("centre.field", self.field_args(c, name))
         elif c.how == "rate":
@@ -584,9 +591,9 @@ class Renderer(ABC):
         elif len(c.witnesses) == 2:
             (p, vp), (q, vq) = c.witnesses
             why = Msg("centre.velocities", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
-                                            "vq": Value(vq, "speed"), "frame": Name(a, "body")})
+                                            "vq": Value(vq, "speed"), "frame": self.frame_name(a)})
         else:
-            why = Msg("centre.omega", {"frame": Name(a, "body")})
+            why = Msg("centre.omega", {"frame": self.frame_name(a)})
         return self.message(Msg("centre.line", {"centre": name, "a": Name(a, "body"), "b": Name(b, "body"), "why": why,
                                                 "where": self.where(c.value)}))
 
@@ -603,6 +610,10 @@ class Renderer(ABC):
         return {"v": v, "w": w, "arm": arm, "vq": Value(vq, "speed"), "wv": Value(c.rate, "rate"),
                 "q": Name(q), "dist": Value(c.distance, "len"), "centre": name, "where": self.where(c.value)}
 
+    def frame_name(self, body: str) -> Name:
+        """A body as the reference of a motion: the fixed one is the ground (`Name.reference`)."""
+        return Name(body, "body", reference=body == self.doc_frame())
+
     def doc_frame(self) -> str:
         """The fixed body (numbered 1)."""
         return next((b for b, n in self.doc.numbers.items() if n == 1), "")
@@ -613,7 +624,7 @@ class Renderer(ABC):
         (p, _, vp), (q, _, vq) = c.witnesses
         names = [Sym("I", n[2:], vector=False) if n.startswith("I:") else Name(n) for n in (p, q)]
         lines = [[Sym("I", f"{a},{k}", vector=False), Sym("I", f"{k},{b}", vector=False)] for k in c.via]
-        args = {"l1": lines[0], "l2": lines[1], "frame": Name(a, "body"), "p": names[0], "q": names[1],
+        args = {"l1": lines[0], "l2": lines[1], "frame": self.frame_name(a), "p": names[0], "q": names[1],
                 "vp": Value(vp, "speed"), "vq": Value(vq, "speed")}
         if c.pivots:        # the notes' words: each point turns with a body about its centre (C5-1.4)
             return Msg(f"centre.carried.{c.side}", {**args, "k1": Name(c.via[0], "body"), "k2": Name(c.via[1], "body"),
