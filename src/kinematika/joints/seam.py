@@ -152,6 +152,10 @@ class Level(Protocol):
         """ω (α) of `body`, as linear forms."""
         ...
 
+    def column(self, body: str) -> Optional[int]:
+        """The first column of `body`'s unknowns (its ω; v₀ follows), None for the frame."""
+        ...
+
     def w(self, body: str) -> Scalar:
         """The solved ω of `body`, for the acceleration level's terms."""
         ...
