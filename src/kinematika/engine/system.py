@@ -43,6 +43,7 @@ class InstantSolver:
         self.geos: dict[str, JointGeometry] = (geos if geos is not None else
                                                {j.id: joint_geometry(inst, j) for j in model.joints})
         self.analysis: Analysis | SparseAnalysis | None = None
+        self.said_rows: dict[Any, list[Said]] = {}    # per joint kind, its rows' labels (`JointArrays`)
         self.rows_v: list[Row] = []
         # set by `prepare`: the velocity system A x = b_v (A exact for a symbolic instant, and as
         # numbers: dense, or sparse for a large numeric one)
@@ -357,6 +358,8 @@ class JointArrays:
         entries = 0
         for kind, ks in groups.items():
             batch = kind.numeric_rows([geos[joints[k].id] for k in ks], lv)
+            if batch is not None and batch.labels is None and kind not in solver.said_rows:
+                batch = None        # labels said at a level not filled as arrays: joint by joint
             parts = ([(ks, batch, True)] if batch is not None else
                      [([k], _from_rows(joint_rows(geos[joints[k].id], lv), solver.unknowns.n, lv.accel), False)
                       for k in ks])
@@ -364,9 +367,13 @@ class JointArrays:
                 per = part.per_joint
                 start[members] = len(b) + per * np.arange(len(members))
                 count[members] = per
-                if said:        # the kind's labels, said as the joint's (as `joint_rows` does)
-                    labels += [Said("row-joint", id=joints[k].id, label=label)
-                               for k, label in zip(np.repeat(members, per).tolist(), part.labels)]
+                if said and part.labels is None:      # the velocity level's, said once
+                    labels += solver.said_rows[kind]
+                elif said:        # the kind's labels, said as the joint's (as `joint_rows` does)
+                    solver.said_rows[kind] = mine = [
+                        Said("row-joint", id=joints[k].id, label=label)
+                        for k, label in zip(np.repeat(members, per).tolist(), part.labels)]
+                    labels += mine
                 else:
                     labels += part.labels
                 b += part.b.tolist() if isinstance(part.b, np.ndarray) else part.b
@@ -383,11 +390,11 @@ class JointArrays:
             b = [b[i] for i in order.tolist()]
             labels = [labels[i] for i in order.tolist()]
         self.b, self.labels = b, labels
+        if lv.accel:            # (the right sides only: the matrix is the velocity level's)
+            return
         per_joint = count.tolist()
         self.wheres = [j.where for j, c in zip(joints, per_joint) for _ in range(c)]
         self.pairs = [pair for j, c in zip(joints, per_joint) for pair in [frozenset((j.a, j.b))] * c]
-        if lv.accel:
-            return
         indptr = np.concatenate(ptrs)
         col = np.concatenate(cols) if cols else np.zeros(0, dtype=np.int64)
         val = np.concatenate(vals) if vals else np.zeros(0)

@@ -129,12 +129,13 @@ class NumericRows:
     `cols`, `vals`: row i's entries are `cols[indptr[i]:indptr[i + 1]]`, in the order its
     linear form holds them; None at the acceleration level, whose matrix is the velocity
     level's), the right sides `b` (minus each row's constant) and the labels the kind's
-    `rows` gives them. A plain class, not a dataclass: it is defined at every start
+    `rows` gives them (None at the acceleration level when they are the velocity level's). A plain class, not a dataclass: it is defined at every start
     (docs/performance.md)."""
 
     __slots__ = ("b", "cols", "indptr", "labels", "per_joint", "vals")
 
-    def __init__(self, per_joint: int, indptr: Any, cols: Any, vals: Any, b: Any, labels: list[Said]) -> None:
+    def __init__(self, per_joint: int, indptr: Any, cols: Any, vals: Any, b: Any,
+                 labels: Optional[list[Said]]) -> None:
         self.per_joint, self.indptr, self.cols, self.vals = per_joint, indptr, cols, vals
         self.b, self.labels = b, labels
 

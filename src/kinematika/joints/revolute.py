@@ -91,9 +91,9 @@ class Revolute(JointKind):
         joints = [geo.joint for geo in geos]
         r = np.array(at, dtype=float) - np.array(ref, dtype=float)
         rx, ry = r[:, 0], r[:, 1]
+        if lv.accel:            # (the labels are the velocity level's)
+            return self._known_terms(joints, at, rx, ry, lv)
         labels = [label for j in joints for label in (_shared(j, 0), _shared(j, 1))]
-        if lv.accel:
-            return self._known_terms(joints, at, rx, ry, lv, labels)
         none = -1
         ca = np.array([none if (c := lv.column(j.a)) is None else c for j in joints])
         cb = np.array([none if (c := lv.column(j.b)) is None else c for j in joints])
@@ -115,8 +115,7 @@ class Revolute(JointKind):
         return NumericRows(2, indptr, cols.reshape(-1, 4)[keep], vals.reshape(-1, 4)[keep], b, labels)
 
     @staticmethod
-    def _known_terms(joints: list, at: list, rx: np.ndarray, ry: np.ndarray, lv: Level,
-                     labels: list[Said]) -> Optional[NumericRows]:
+    def _known_terms(joints: list, at: list, rx: np.ndarray, ry: np.ndarray, lv: Level) -> Optional[NumericRows]:
         """The acceleration level's right sides of `numeric_rows`."""
         frame: dict[str, bool] = {}
         w: dict[str, float] = {}
@@ -141,7 +140,7 @@ class Revolute(JointKind):
                 if frame[body]:
                     x[k], y[k] = lv.point(body, at[k])
         b = -np.stack([bx - ax, by - ay], axis=1).reshape(-1)
-        return NumericRows(2, None, None, None, b, labels)
+        return NumericRows(2, None, None, None, b, None)
 
     def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """P_b − P_a at the pin (and the axis kept, in 3D)."""
