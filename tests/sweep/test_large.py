@@ -151,3 +151,29 @@ def test_the_pins_rows_filled_as_arrays_are_the_textbook_ones():
             assert rows.b[i] == 0.0
         wa, wb = (motion.states[x].omega if x in u.offset else 0.0 for x in (j.a, j.b))
         assert known.b[2 * k:2 * k + 2] == pytest.approx((wb ** 2 - wa ** 2) * np.array([rx, ry]), abs=1e-12)
+
+
+def test_the_rows_filled_as_arrays_are_the_joints_rows_bit_for_bit(monkeypatch):
+    # one statement of each kind's rows: its array fill gives the matrix, right sides and
+    # labels that its `rows`, joint by joint, give (signs of zeros included)
+    import numpy as np
+
+    from kinematika.engine.levels import AccelerationLevel, KnownTerms, VelocityLevel
+    from kinematika.engine.linsolve import sparse_matrix
+    from kinematika.engine.system import InstantSolver
+
+    sol = solve(_mixed_chain())
+    solver, u = sol.solver, sol.solver.unknowns
+    motion = solver._motion(solver.solve_linear(solver.b_v), None)
+    level = AccelerationLevel(KnownTerms(u), solver.inst.ref, motion)
+    arrays_b, arrays_labels = solver.known_terms(level)
+    monkeypatch.setattr(InstantSolver, "batched", property(lambda self: False))
+    rows = solver.rows(VelocityLevel(u, solver.inst.ref))
+    by_rows = sparse_matrix(rows, u.n)
+    for name in ("indptr", "cols", "vals"):
+        assert getattr(solver.a_num, name).tobytes() == getattr(by_rows, name).tobytes()
+    assert np.array(solver.b_v, float).tobytes() == np.array([-r.lin.const for r in rows], float).tobytes()
+    assert [str(x) for x in solver.labels] == [str(r.label) for r in rows]
+    joints_b, joints_labels = solver.known_terms(level)
+    assert np.array(arrays_b, float).tobytes() == np.array(joints_b, float).tobytes()
+    assert [str(x) for x in arrays_labels] == [str(x) for x in joints_labels]

@@ -92,7 +92,7 @@ class Revolute(JointKind):
         r = np.array(at, dtype=float) - np.array(ref, dtype=float)
         rx, ry = r[:, 0], r[:, 1]
         if lv.accel:            # (the labels are the velocity level's)
-            return self._known_terms(joints, at, rx, ry, lv)
+            return self._known_terms(joints, rx, ry, lv)
         labels = [label for j in joints for label in (_shared(j, 0), _shared(j, 1))]
         none = -1
         ca = np.array([none if (c := lv.column(j.a)) is None else c for j in joints])
@@ -115,30 +115,27 @@ class Revolute(JointKind):
         return NumericRows(2, indptr, cols.reshape(-1, 4)[keep], vals.reshape(-1, 4)[keep], b, labels)
 
     @staticmethod
-    def _known_terms(joints: list, at: list, rx: np.ndarray, ry: np.ndarray, lv: Level) -> Optional[NumericRows]:
-        """The acceleration level's right sides of `numeric_rows`."""
-        frame: dict[str, bool] = {}
+    def _known_terms(joints: list, rx: np.ndarray, ry: np.ndarray, lv: Level) -> Optional[NumericRows]:
+        """The acceleration level's right sides of `numeric_rows`: each body's known part
+        0 + n · ω × (ω × r) as `lv.point` sums it, the frame's with ω = 0.0 (so +0.0, as
+        `lv.point` gives the frame: 0 + (±0.0) is +0.0)."""
         w: dict[str, float] = {}
         for body in {j.a for j in joints} | {j.b for j in joints}:
-            moving = lv.column(body) is not None
-            frame[body] = not moving
-            if moving:
-                value = lv.w(body)
-                if type(value) is not float:
-                    return None
-                w[body] = value
-        wa = np.array([w.get(j.a, 0.0) for j in joints])
-        wb = np.array([w.get(j.b, 0.0) for j in joints])
+            if lv.column(body) is None:
+                w[body] = 0.0
+                continue
+            value = lv.w(body)
+            if type(value) is not float:
+                return None
+            w[body] = value
+        wa = np.array([w[j.a] for j in joints])
+        wb = np.array([w[j.b] for j in joints])
 
         def point(wk: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             c = lv.terms.normal_part((-wk * (wk * rx), wk * (-wk * ry)))
             return 0.0 + c[0], 0.0 + c[1]
 
         (bx, by), (ax, ay) = point(wb), point(wa)
-        for k, j in enumerate(joints):           # the frame's point (zero), as `lv.point` writes it
-            for body, x, y in ((j.a, ax, ay), (j.b, bx, by)):
-                if frame[body]:
-                    x[k], y[k] = lv.point(body, at[k])
         b = -np.stack([bx - ax, by - ay], axis=1).reshape(-1)
         return NumericRows(2, None, None, None, b, None)
 
