@@ -43,6 +43,10 @@ class InstantSolver:
         self.geos: dict[str, JointGeometry] = (geos if geos is not None else
                                                {j.id: joint_geometry(inst, j) for j in model.joints})
         self.analysis: Analysis | SparseAnalysis | None = None
+        # set by `prepare`: each velocity row's label, place, and whether a driver gives it
+        self.labels: list[Any] = []
+        self.wheres: list[str] = []
+        self.is_driver: np.ndarray = np.zeros(0, dtype=bool)
         self.said_rows: dict[Any, list[Said]] = {}    # per joint kind, its rows' labels (`JointArrays`)
         self.rows_v: list[Row] = []
         # set by `prepare`: the velocity system A x = b_v (A exact for a symbolic instant, and as
@@ -367,7 +371,7 @@ class JointArrays:
                 per = part.per_joint
                 start[members] = len(b) + per * np.arange(len(members))
                 count[members] = per
-                if said and part.labels is None:      # the velocity level's, said once
+                if part.labels is None:      # the velocity level's, said once
                     labels += solver.said_rows[kind]
                 elif said:        # the kind's labels, said as the joint's (as `joint_rows` does)
                     solver.said_rows[kind] = mine = [

@@ -302,7 +302,7 @@ class JointKind(ABC):
 
         signature = inspect.signature(add)
         params = list(signature.parameters.values())[1:]     # the kind itself is bound
-        method.__signature__ = signature.replace(  # type: ignore[attr-defined]
+        method.__signature__ = signature.replace(  # type: ignore[attr-defined]  # what inspect and help() read of a function
             parameters=[params[0].replace(name="self"), *params[1:]])
         method.__name__ = method.__qualname__ = self.name
         return method

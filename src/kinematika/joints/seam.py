@@ -123,6 +123,10 @@ class Terms(Protocol):
         """The factor of the Coriolis term 2 ω × v_rel (1: mechanics)."""
         ...
 
+    def normal_part(self, vector: Any) -> Any:
+        """n · ω × (ω × r), given ω × (ω × r) (a tuple of numbers or of arrays; n = 1: mechanics)."""
+        ...
+
 
 class Level(Protocol):
     """The velocity or acceleration level a joint's rows are written at (`engine.levels`):

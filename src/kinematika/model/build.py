@@ -191,8 +191,12 @@ class _Builder:
         out: dict[str, Body] = {}
         for name, written in self.spec.bodies.items():
             where = f"bodies.{name}"
-            plain = isinstance(written, list)       # only its points: no shapes
-            points = written if plain else written.points
+            record: Optional[schema.BodySpec | Record] = None     # a bare list: its points, no shapes
+            points: list[str]
+            if isinstance(written, list):
+                points = written
+            else:
+                record, points = written, written.points
             for p in points:
                 self.known_point(p, where)
             seen: set[str] = set()
@@ -203,7 +207,7 @@ class _Builder:
                 seen.add(p)
             if twice:
                 raise KinematikaError("schema", "point-listed-twice", where, point=sorted(twice)[0])
-            out[name] = Body(name, list(points), [] if plain else self.shapes(written, where))
+            out[name] = Body(name, list(points), [] if record is None else self.shapes(record, where))
         listed = {p for b in out.values() for p in b.points}
         for name in self.point_coords:
             if name not in listed:
