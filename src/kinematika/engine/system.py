@@ -44,9 +44,9 @@ class InstantSolver:
                                                {j.id: joint_geometry(inst, j) for j in model.joints})
         self.analysis: Analysis | SparseAnalysis | None = None
         # set by `prepare`: each velocity row's label, place, and whether a driver gives it
-        self.labels: list[Any] = []
-        self.wheres: list[str] = []
-        self.is_driver: np.ndarray = np.zeros(0, dtype=bool)
+        self.labels: list[Any]
+        self.wheres: list[str]
+        self.is_driver: np.ndarray
         self.said_rows: dict[Any, list[Said]] = {}    # per joint kind, its rows' labels (`JointArrays`)
         self.rows_v: list[Row] = []
         # set by `prepare`: the velocity system A x = b_v (A exact for a symbolic instant, and as

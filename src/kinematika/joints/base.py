@@ -146,7 +146,7 @@ class JointKind(ABC):
 
     A new kind must fill `conditions`, `rows` and `add` (abstract: a kind without them cannot
     be made) and set its `name`, `summary`, `fields` and capabilities; `prepare`, `residual`,
-    `holonomic`, `displacement`, `moved`, `rate` and `symbol` have defaults that a kind
+    `holonomic`, `displacement`, `moved`, `rate`, `numeric_rows` and `symbol` have defaults that a kind
     overrides as it needs (sympy's `Joint` is the pattern: an abstract base whose subclasses
     fill the hooks it calls). What the hooks receive is typed in `joints.seam`."""
 
