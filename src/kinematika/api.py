@@ -62,6 +62,8 @@ def _mechanism_assemblies(m: Any) -> list:
 
 
 # the hooks of the lower layers' classes, registered from above
+# (each `type: ignore` below: an attribute added to a class of a lower layer, which cannot import
+# the drawing and the sweeps; mypy sees the class as defined)
 Solution._repr_svg_ = _solution_svg                    # type: ignore[attr-defined]
 Mechanism._repr_svg_ = _mechanism_svg                  # type: ignore[attr-defined]
 Mechanism.solve = _solve_mechanism                     # type: ignore[attr-defined]

@@ -73,3 +73,107 @@ def test_the_inverse_norm_estimate_is_a_close_lower_bound(seed):
     exact = np.abs(np.linalg.inv(a.toarray())).sum(axis=0).max()
     estimate = linsolve.inverse_norm(splu(a), n)
     assert exact / 3 <= estimate <= exact * (1 + 1e-12)
+
+
+def _mixed_chain() -> dict:
+    """A chain whose loops are not parallelograms, some pins written (b, a) rather than
+    (a, b), and a slider-crank at its end whose prismatic joint is listed among the pins:
+    the rows of the pins filled as arrays must be put back in the joints' order."""
+    tree = four_bar_chain(61, w=-2.5, alpha=0.7)
+    for i in range(1, 31):
+        tree["points"][f"A{i}"] = [4.0 * i + 0.1 * (i % 5), 1.0 + 0.05 * (i % 3)]
+    for k, joint in enumerate(tree["joints"]):
+        if k % 3 == 1:
+            joint["bodies"] = joint["bodies"][::-1]
+    tree["points"]["B"] = [4.0 * 30 + 3.0, 1.2]
+    tree["points"]["E"] = [4.0 * 30 + 5.0, 0.0]
+    tree["bodies"]["rod"] = ["A30", "B"]
+    tree["bodies"]["slider"] = ["B"]
+    tree["bodies"]["ground"].append("E")
+    slider = {"type": "prismatic", "bodies": ["ground", "slider"], "along": ["O30", "E"]}
+    tree["joints"][40:40] = [slider]
+    tree["joints"] += [{"type": "revolute", "bodies": ["rocker30", "rod"], "at": "A30"},
+                       {"type": "revolute", "bodies": ["rod", "slider"], "at": "B"}]
+    return tree
+
+
+def test_a_mixed_chain_gives_the_dense_paths_answers_and_messages(monkeypatch):
+    tree = _mixed_chain()
+    sparse = solve(tree)
+    assert type(sparse.solver.analysis).__name__ == "SparseAnalysis"
+    solver = sparse.solver
+    assert len(solver.labels) == len(solver.wheres) == len(solver.pairs) == len(solver.b_v)
+    # the slider's rows sit where its joint is listed: after the first 40 joints' 80 rows
+    assert {solver.wheres[80], solver.wheres[81]} == {"joints[40] (j41)"}
+    assert solver.pairs[80] == frozenset(("ground", "slider"))
+    assert "j41" in str(solver.labels[80]) and "j40" in str(solver.labels[79])
+    monkeypatch.setattr(linsolve, "LARGE", 10 ** 6)
+    monkeypatch.setattr("kinematika.engine.system.LARGE", 10 ** 6)
+    dense = solve(tree)
+    assert [str(x) for x in dense.solver.labels] == [str(x) for x in solver.labels]
+    assert dense.solver.wheres == solver.wheres and dense.solver.pairs == solver.pairs
+    for body in sparse.model.moving_bodies:
+        assert sparse.omega(body) == pytest.approx(dense.omega(body), abs=1e-10)
+        assert sparse.alpha(body) == pytest.approx(dense.alpha(body), abs=1e-8)
+    assert sparse.velocity("B@slider") == pytest.approx(dense.velocity("B@slider"), abs=1e-9)
+
+
+def test_the_pins_rows_filled_as_arrays_are_the_textbook_ones():
+    # v_P(b) − v_P(a) = 0 with v_P = v₀ + ω k × r, r = P − ref: the x row has 1 at v₀x(b),
+    # −r_y at ω_b, −1 at v₀x(a) and +r_y at ω_a; the y row 1, +r_x, −1, −r_x. At the
+    # acceleration level the known part is −ω² r for each body: b = (ω_b² − ω_a²) r.
+    import numpy as np
+
+    from kinematika.engine.levels import AccelerationLevel, KnownTerms, VelocityLevel
+    from kinematika.joints.revolute import KIND
+
+    sol = solve(_mixed_chain())
+    solver, u = sol.solver, sol.solver.unknowns
+    ref = solver.inst.ref
+    pins = [g for g in solver.geos.values() if g.joint.type == "revolute"]
+    rows = KIND.numeric_rows(pins, VelocityLevel(u, ref))
+    motion = sol.solver._motion(solver.solve_linear(solver.b_v), None)
+    known = KIND.numeric_rows(pins, AccelerationLevel(KnownTerms(u), ref, motion))
+    for k, geo in enumerate(pins):
+        j = geo.joint
+        rx, ry = geo.at[0] - ref[0], geo.at[1] - ref[1]
+        for axis, (trans, lever) in enumerate(((1, -ry), (2, rx))):
+            want = {}
+            for body, sign in ((j.b, 1.0), (j.a, -1.0)):
+                if body in u.offset:
+                    want[u.offset[body] + trans] = sign
+                    if lever != 0:
+                        want[u.offset[body]] = sign * lever
+            i = 2 * k + axis
+            got = dict(zip(rows.cols[rows.indptr[i]:rows.indptr[i + 1]].tolist(),
+                           rows.vals[rows.indptr[i]:rows.indptr[i + 1]].tolist()))
+            assert got == pytest.approx(want, abs=1e-15)
+            assert rows.b[i] == 0.0
+        wa, wb = (motion.states[x].omega if x in u.offset else 0.0 for x in (j.a, j.b))
+        assert known.b[2 * k:2 * k + 2] == pytest.approx((wb ** 2 - wa ** 2) * np.array([rx, ry]), abs=1e-12)
+
+
+def test_the_rows_filled_as_arrays_are_the_joints_rows_bit_for_bit(monkeypatch):
+    # one statement of each kind's rows: its array fill gives the matrix, right sides and
+    # labels that its `rows`, joint by joint, give (signs of zeros included)
+    import numpy as np
+
+    from kinematika.engine.levels import AccelerationLevel, KnownTerms, VelocityLevel
+    from kinematika.engine.linsolve import sparse_matrix
+    from kinematika.engine.system import InstantSolver
+
+    sol = solve(_mixed_chain())
+    solver, u = sol.solver, sol.solver.unknowns
+    motion = solver._motion(solver.solve_linear(solver.b_v), None)
+    level = AccelerationLevel(KnownTerms(u), solver.inst.ref, motion)
+    arrays_b, arrays_labels = solver.known_terms(level)
+    monkeypatch.setattr(InstantSolver, "batched", property(lambda self: False))
+    rows = solver.rows(VelocityLevel(u, solver.inst.ref))
+    by_rows = sparse_matrix(rows, u.n)
+    for name in ("indptr", "cols", "vals"):
+        assert getattr(solver.a_num, name).tobytes() == getattr(by_rows, name).tobytes()
+    assert np.array(solver.b_v, float).tobytes() == np.array([-r.lin.const for r in rows], float).tobytes()
+    assert [str(x) for x in solver.labels] == [str(r.label) for r in rows]
+    joints_b, joints_labels = solver.known_terms(level)
+    assert np.array(arrays_b, float).tobytes() == np.array(joints_b, float).tobytes()
+    assert [str(x) for x in arrays_labels] == [str(x) for x in joints_labels]

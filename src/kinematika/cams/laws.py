@@ -57,7 +57,7 @@ class Polynomial(Law):
 
     def __call__(self, x: np.ndarray | float) -> Values:
         x = np.asarray(x, dtype=float)
-        return tuple(np.polyval(c, x) + 0 * x for c in self._derivatives)  # type: ignore[return-value]
+        return tuple(np.polyval(c, x) + 0 * x for c in self._derivatives)  # type: ignore[return-value]  # one per derivative kept: a tuple() of a generator is typed tuple[ndarray, ...]
 
     @property
     def _derivatives(self) -> tuple[np.ndarray, ...]:
@@ -137,7 +137,7 @@ class Trigonometric(Law):
             if np.any(mask):
                 for k, value in enumerate(_on_piece(piece, x[mask], s0, v0)):
                     out[k][mask] = value
-        return tuple(o / self._scale for o in out)  # type: ignore[return-value]
+        return tuple(o / self._scale for o in out)  # type: ignore[return-value]  # as many as `out`'s rows (a tuple() of a generator has no length to mypy)
 
 
 def _on_piece(p: Piece, x: np.ndarray, s0: float, v0: float) -> Values:

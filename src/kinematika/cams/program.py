@@ -103,7 +103,7 @@ class Program:
             if np.any(mask):
                 for k, value in enumerate(seg.motion(u[mask])):
                     out[k][mask] = value
-        return tuple(out)  # type: ignore[return-value]
+        return tuple(out)  # type: ignore[return-value]  # as many as `out`'s rows (a tuple() of a list has no length to mypy)
 
     def jet(self, u: Jet) -> Jet:
         """s as a jet along whatever parameter u is a jet of (chain rule)."""

@@ -36,7 +36,7 @@ def table() -> dict[str, dict[str, tuple]]:
     from . import _application
 
     group = typer.main.get_command(_application())
-    return {name: _options(name, group.commands[name]) for name in COMMANDS}  # type: ignore[attr-defined]
+    return {name: _options(name, group.commands[name]) for name in COMMANDS}  # type: ignore[attr-defined]  # typer's app is a click Group (`commands`), typed as a Command
 
 
 def _options(name: str, command: Any) -> dict[str, tuple]:

@@ -107,7 +107,7 @@ def _kept(err: KinematikaError, csv: Optional[Path], output: Optional[Path], kin
     """A motion that could not be followed further: the rows computed before are written
     where the rows were asked for (`--csv`, `-o`, `--plot`), and with `--json` printed beside
     the error (`{"error": ..., "partial": <the sweep's JSON>}`); the error follows."""
-    partial = err.partial                  # type: ignore[attr-defined]
+    partial = err.partial                  # type: ignore[attr-defined]  # set by `sweep.limit_positions.with_rows`
     if csv is not None:
         guarded(as_json, lambda: _write(partial, csv, "csv", "--csv"))
     if output is not None and kind is not None:     # a format whenever -o is given (_format)

@@ -50,7 +50,7 @@ class CamProfile(Curve):
     def derivatives(self, u: Param) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """r, r' and r'' from one evaluation of the trace."""
         x, y = self.jets(u)
-        return tuple(np.stack([x.d(k), y.d(k)], axis=-1) for k in range(3))  # type: ignore[return-value]
+        return tuple(np.stack([x.d(k), y.d(k)], axis=-1) for k in range(3))  # type: ignore[return-value]  # three, by range(3): a tuple() of a generator is typed tuple[ndarray, ...]
 
     def point(self, u: Param) -> np.ndarray:
         """r(u)."""

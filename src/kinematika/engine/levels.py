@@ -110,6 +110,11 @@ class Level:
         formula)."""
         raise NotImplementedError
 
+    def column(self, body: str) -> Optional[int]:
+        """The first column of `body`'s unknowns (its ω, then v₀), None for the frame: where
+        a joint's rows filled as arrays (`JointKind.numeric_rows`) put their coefficients."""
+        return self.u.offset.get(body)
+
     # the solved velocities, for the terms of the acceleration level
     def w(self, body: str) -> Any:
         """The solved ω of `body` (zero for the frame), for the acceleration level's centripetal

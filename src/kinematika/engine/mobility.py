@@ -64,22 +64,24 @@ class Diagnosis:
         self.n, self.condition_number = n, condition_number
         self._dof, self._conditions, self._ranks = dof, conditions, ranks
 
-    def _count(self) -> None:
+    def _count(self) -> tuple[int, int]:
+        """`dof` and `conditions`: as given, or counted once by `ranks()`."""
         if self._dof is None or self._conditions is None:
-            joints, total = self._ranks()            # type: ignore[misc]
+            assert self._ranks is not None, "a Diagnosis is given dof and conditions, or ranks() to count them"
+            joints, total = self._ranks()
             self._dof, self._conditions = self.n - joints, total - joints
+            return self._dof, self._conditions
+        return self._dof, self._conditions
 
     @property
     def dof(self) -> int:
         """Degrees of freedom the joints alone leave: n − rank of the joint rows."""
-        self._count()
-        return self._dof                             # type: ignore[return-value]
+        return self._count()[0]
 
     @property
     def conditions(self) -> int:
         """Independent conditions the drivers add: rank of all rows − rank of the joint rows."""
-        self._count()
-        return self._conditions                      # type: ignore[return-value]
+        return self._count()[1]
 
     def __repr__(self) -> str:
         return f"Diagnosis(n={self.n}, dof={self.dof}, conditions={self.conditions}, " \

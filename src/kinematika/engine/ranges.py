@@ -27,7 +27,9 @@ def check_rates(inst: Any) -> float:
     """The mechanism's rate scale within the range: the largest rate among the drivers'
     values and the square roots of their accelerations (an acceleration far below ω² is
     only a small one; all of them tiny, or one huge, is out of range). Returns it."""
-    sliding = {j.id for j in inst.model.joints if j.kind.slides}
+    # the joints that slide, for a driver of a joint's rate (none asked of a chain of pins)
+    sliding = ({j.id for j in inst.model.joints if j.kind.slides}
+               if any(d.kind == "joint" for d in inst.model.drivers) else set())
     largest, where = 0.0, "drivers"
     for d in inst.model.drivers:
         for level in ("value", "accel"):

@@ -12,11 +12,11 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import KinematikaError
+from ..errors import KinematikaError, Said
 from .drivers import driver_rows
 from .idle import idle_rows
 from .instant import Instant
-from ..joints import JointGeometry
+from ..joints import JointGeometry, NumericRows
 from .joints import Row, joint_geometry, joint_known_terms, joint_rows
 from .levels import AccelerationLevel, KnownTerms, Level, Unknowns, VelocityLevel
 from .motion import BodyState, Motion
@@ -43,6 +43,11 @@ class InstantSolver:
         self.geos: dict[str, JointGeometry] = (geos if geos is not None else
                                                {j.id: joint_geometry(inst, j) for j in model.joints})
         self.analysis: Analysis | SparseAnalysis | None = None
+        # set by `prepare`: each velocity row's label, place, and whether a driver gives it
+        self.labels: list[Any]
+        self.wheres: list[str]
+        self.is_driver: np.ndarray
+        self.said_rows: dict[Any, list[Said]] = {}    # per joint kind, its rows' labels (`JointArrays`)
         self.rows_v: list[Row] = []
         # set by `prepare`: the velocity system A x = b_v (A exact for a symbolic instant, and as
         # numbers: dense, or sparse for a large numeric one)
@@ -51,15 +56,21 @@ class InstantSolver:
         self.b_v: list[Any]
         self.exact: Any = None      # a symbolic instant's solution in stand-ins (`engine.exact`)
 
-    def rows(self, lv: Level) -> list[Row]:
+    @property
+    def batched(self) -> bool:
+        """Whether the joints' rows are filled as arrays (`JointArrays`): a large numeric
+        system, kept sparse."""
+        return not self.inst.symbolic and self.unknowns.n > LARGE
+
+    def rows(self, lv: Level, joints: bool = True) -> list[Row]:
         """The rows of one level: each joint's conditions, each driver's, and the idle spins'
         (`engine.idle`), in that order; the pair of bodies each joint or driver row relates is
-        kept in `pairs`."""
+        kept in `pairs`. Without `joints`: the drivers' and the idle spins' only."""
         out: list[Row] = []
         pairs: list = []          # the two bodies each joint row or driver row relates
         model = self.inst.model
         paired = not lv.accel     # the same at both levels: taken at the velocity level
-        for j in model.joints:
+        for j in model.joints if joints else ():
             rows = joint_rows(self.geos[j.id], lv)
             out += rows
             if paired:
@@ -94,18 +105,18 @@ class InstantSolver:
         symbolic ones) are analysed densely with the SVD.
         """
         inst, u = self.inst, self.unknowns
+        translation, body_of = u.layout()
+        if self.batched:
+            self.a_sym = None
+            self.a_num = sparse = self._prepare_sparse(VelocityLevel(u, inst.ref))
+            self.analysis = analyse_sparse(sparse, self.is_driver, translation, inst.scale,
+                                           self.labels, self.wheres, body_of, self._restating)
+            return
         rows_v = self.rows(VelocityLevel(u, inst.ref))
         self.rows_v = rows_v
         self.labels = [r.label for r in rows_v]
         self.wheres = [r.where for r in rows_v]
         self.is_driver = np.array([r.driver for r in rows_v], dtype=bool)
-        translation, body_of = u.layout()
-        if not inst.symbolic and u.n > LARGE:
-            self.a_sym, self.b_v = None, [-r.lin.const for r in rows_v]
-            self.a_num = sparse = sparse_matrix(rows_v, u.n)
-            self.analysis = analyse_sparse(sparse, self.is_driver, translation, inst.scale,
-                                           self.labels, self.wheres, body_of, self._restating)
-            return
         if inst.symbolic:
             a, self.b_v = self.matrix(rows_v)
             self.a_sym = a
@@ -116,6 +127,24 @@ class InstantSolver:
         self.analysis = analyse(dense, self.is_driver, translation, inst.scale, self.labels,
                                 self.wheres, body_of, want_blocks=inst.symbolic,
                                 restating=self._restating)
+
+    def _prepare_sparse(self, lv: Level) -> SparseRows:
+        """`prepare`'s rows of a large numeric system, as arrays: the joints' (`JointArrays`:
+        each kind's `numeric_rows` where it fills them at once, else `rows` joint by joint),
+        then the drivers' and the idle spins' as `rows` gives them; the same matrix, right
+        sides, labels and pairs, row for row."""
+        joints = JointArrays(self, lv)
+        others = self.rows(lv, joints=False)
+        extra = sparse_matrix(others, self.unknowns.n)
+        self.rows_v = []
+        self.b_v = joints.b + [-r.lin.const for r in others]
+        self.labels = joints.labels + [r.label for r in others]
+        self.wheres = joints.wheres + [r.where for r in others]
+        self.is_driver = np.array([False] * len(joints.b) + [r.driver for r in others], dtype=bool)
+        self.pairs = joints.pairs + self.pairs
+        indptr = np.concatenate([joints.indptr, joints.indptr[-1] + extra.indptr[1:]])
+        return SparseRows(indptr, np.concatenate([joints.cols, extra.cols]),
+                          np.concatenate([joints.vals, extra.vals]), (len(self.b_v), self.unknowns.n))
 
     def _numeric(self, rows: list[Row]) -> np.ndarray:
         """A of a numeric instance as floats, the entries the rows' terms give (others 0)."""
@@ -205,10 +234,14 @@ class InstantSolver:
         (the acceleration level, whose matrix is the velocity level's)."""
         b: list[Any] = []
         labels: list[Any] = []
-        for j in self.inst.model.joints:
-            for value, label in joint_known_terms(self.geos[j.id], lv):
-                b.append(value)
-                labels.append(label)
+        if self.batched:
+            joints = JointArrays(self, lv)
+            b, labels = joints.b, joints.labels
+        else:
+            for j in self.inst.model.joints:
+                for value, label in joint_known_terms(self.geos[j.id], lv):
+                    b.append(value)
+                    labels.append(label)
         for r in [*(r for d in self.inst.model.drivers for r in driver_rows(self.inst, d, self.geos, lv)),
                   *idle_rows(self.inst, lv)]:
             b.append(-r.lin.const)
@@ -307,3 +340,80 @@ def _split(x: list[Any], o: int, rot: int, dim: int) -> tuple[Any, tuple]:
     v0 = tuple(x[o + rot:o + rot + dim])
     return (w[0] if rot == 1 else w), v0
 
+
+
+class JointArrays:
+    """The joints' rows of one level of a large numeric system, in the model's order of joints:
+    each kind's joints filled at once by its `numeric_rows` (else each joint's `rows`), then
+    put in order. `indptr`, `cols`, `vals`: the coefficients by rows (at the velocity level);
+    `b` the right sides, `labels`, `wheres` and `pairs` (the two bodies) of each row."""
+
+    def __init__(self, solver: InstantSolver, lv: Level) -> None:
+        joints = solver.inst.model.joints
+        geos = solver.geos
+        groups: dict[Any, list[int]] = {}
+        for k, j in enumerate(joints):
+            groups.setdefault(j.kind, []).append(k)
+        start = np.zeros(len(joints), dtype=np.int64)
+        count = np.zeros(len(joints), dtype=np.int64)
+        ptrs, cols, vals = [np.zeros(1, dtype=np.int64)], [], []
+        b: list[Any] = []
+        labels: list[Any] = []
+        entries = 0
+        for kind, ks in groups.items():
+            batch = kind.numeric_rows([geos[joints[k].id] for k in ks], lv)
+            if batch is not None and batch.labels is None and kind not in solver.said_rows:
+                batch = None        # labels said at a level not filled as arrays: joint by joint
+            parts = ([(ks, batch, True)] if batch is not None else
+                     [([k], _from_rows(joint_rows(geos[joints[k].id], lv), solver.unknowns.n, lv.accel), False)
+                      for k in ks])
+            for members, part, said in parts:
+                per = part.per_joint
+                start[members] = len(b) + per * np.arange(len(members))
+                count[members] = per
+                if part.labels is None:      # the velocity level's, said once
+                    labels += solver.said_rows[kind]
+                elif said:        # the kind's labels, said as the joint's (as `joint_rows` does)
+                    solver.said_rows[kind] = mine = [
+                        Said("row-joint", id=joints[k].id, label=label)
+                        for k, label in zip(np.repeat(members, per).tolist(), part.labels)]
+                    labels += mine
+                else:
+                    labels += part.labels
+                b += part.b.tolist() if isinstance(part.b, np.ndarray) else part.b
+                if part.indptr is not None:
+                    ptrs.append(part.indptr[1:] + entries)
+                    cols.append(part.cols)
+                    vals.append(part.vals)
+                    entries += int(part.indptr[-1])
+        first = np.zeros(len(joints), dtype=np.int64)
+        np.cumsum(count[:-1], out=first[1:])
+        order = np.repeat(start - first, count) + np.arange(len(b))
+        shuffled = not np.array_equal(order, np.arange(len(b)))
+        if shuffled:
+            b = [b[i] for i in order.tolist()]
+            labels = [labels[i] for i in order.tolist()]
+        self.b, self.labels = b, labels
+        if lv.accel:            # (the right sides only: the matrix is the velocity level's)
+            return
+        per_joint = count.tolist()
+        self.wheres = [j.where for j, c in zip(joints, per_joint) for _ in range(c)]
+        self.pairs = [pair for j, c in zip(joints, per_joint) for pair in [frozenset((j.a, j.b))] * c]
+        indptr = np.concatenate(ptrs)
+        col = np.concatenate(cols) if cols else np.zeros(0, dtype=np.int64)
+        val = np.concatenate(vals) if vals else np.zeros(0)
+        if shuffled:
+            lengths = np.diff(indptr)[order]
+            new = np.zeros(len(order) + 1, dtype=np.int64)
+            np.cumsum(lengths, out=new[1:])
+            at = np.repeat(indptr[order] - new[:-1], lengths) + np.arange(int(new[-1]))
+            indptr, col, val = new, col[at], val[at]
+        self.indptr, self.cols, self.vals = indptr, col.astype(np.int64), val.astype(float)
+
+
+def _from_rows(rows: list[Row], n: int, accel: bool) -> NumericRows:
+    """One joint's `Row`s as `NumericRows` (its labels already said as the joint's)."""
+    matrix = None if accel else sparse_matrix(rows, n)
+    return NumericRows(len(rows), None if matrix is None else matrix.indptr,
+                       None if matrix is None else matrix.cols, None if matrix is None else matrix.vals,
+                       [-r.lin.const for r in rows], [r.label for r in rows])

@@ -123,13 +123,30 @@ class Holonomic:
     weights: Optional[Callable[[Pose], list]] = None
 
 
+class NumericRows:
+    """The rows of several joints of one kind at once, on floats, as arrays (`JointKind.numeric_rows`):
+    `per_joint` rows for each joint, joint after joint; their coefficients by rows (`indptr`,
+    `cols`, `vals`: row i's entries are `cols[indptr[i]:indptr[i + 1]]`, in the order its
+    linear form holds them; None at the acceleration level, whose matrix is the velocity
+    level's), the right sides `b` (minus each row's constant) and the labels the kind's
+    `rows` gives them (None at the acceleration level when they are the velocity level's). A plain class, not a dataclass: it is defined at every start
+    (docs/performance.md)."""
+
+    __slots__ = ("b", "cols", "indptr", "labels", "per_joint", "vals")
+
+    def __init__(self, per_joint: int, indptr: Any, cols: Any, vals: Any, b: Any,
+                 labels: Optional[list[Said]]) -> None:
+        self.per_joint, self.indptr, self.cols, self.vals = per_joint, indptr, cols, vals
+        self.b, self.labels = b, labels
+
+
 class JointKind(ABC):
     """A kind of joint: its name in model files and everything it means (see the module's
     docstring). One instance per kind, registered in `kinematika.joints.KINDS`.
 
     A new kind must fill `conditions`, `rows` and `add` (abstract: a kind without them cannot
     be made) and set its `name`, `summary`, `fields` and capabilities; `prepare`, `residual`,
-    `holonomic`, `displacement`, `moved`, `rate` and `symbol` have defaults that a kind
+    `holonomic`, `displacement`, `moved`, `rate`, `numeric_rows` and `symbol` have defaults that a kind
     overrides as it needs (sympy's `Joint` is the pattern: an abstract base whose subclasses
     fill the hooks it calls). What the hooks receive is typed in `joints.seam`."""
 
@@ -201,6 +218,12 @@ class JointKind(ABC):
     @abstractmethod
     def rows(self, geo: JointGeometry, lv: Level) -> Rows:
         """The conditions at the level `lv`, each (a linear form that must vanish, a label)."""
+
+    def numeric_rows(self, geos: list[JointGeometry], lv: Level) -> Optional[NumericRows]:
+        """`rows` of many joints of this kind at once, on floats (a large numeric system, whose
+        joints are mostly of a few kinds): the same coefficients, right sides and labels, row
+        for row, filled as arrays. None (the default): the engine asks `rows` joint by joint."""
+        return None
 
     def residual(self, inst: Instant, geo: JointGeometry, ref: tuple) -> Residual:
         """The condition itself, for sweeps (`joints.positions`): a function of a pose and the
@@ -279,7 +302,7 @@ class JointKind(ABC):
 
         signature = inspect.signature(add)
         params = list(signature.parameters.values())[1:]     # the kind itself is bound
-        method.__signature__ = signature.replace(  # type: ignore[attr-defined]
+        method.__signature__ = signature.replace(  # type: ignore[attr-defined]  # what inspect and help() read of a function
             parameters=[params[0].replace(name="self"), *params[1:]])
         method.__name__ = method.__qualname__ = self.name
         return method

@@ -40,7 +40,7 @@ class Gear(Rolling):
         are held by other joints (its rows are rolling's, v_J(b) = v_J(a))."""
         return 1
 
-    def add(self, m: Mechanism, a: str, b: str, internal: bool = False,  # type: ignore[override]
+    def add(self, m: Mechanism, a: str, b: str, internal: bool = False,  # type: ignore[override]  # each kind names its own fields (`JointKind.add`)
             id: Optional[str] = None) -> str:
         """The pitch circles of `a` and `b` mesh (`internal=True` for a ring gear)."""
         return m.joint(self.name, a, b, id, internal=internal)

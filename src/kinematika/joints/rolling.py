@@ -143,8 +143,8 @@ def _circles(key: str, a: str, b: str, ca: Circle, cb: Circle) -> Any:
         slip = arc_slip(rho_a, rho_b, psi - psi0, q.angle(a), q.angle(b))
         return [(dist - gap) * u[0] - slip * u[1], (dist - gap) * u[1] + slip * u[0]]
 
-    circles.key = key  # type: ignore[attr-defined]
-    circles.aux = lambda q: continued(q, key, psi0, differences(q.point(b, cb.center),  # type: ignore[attr-defined]
+    circles.key = key  # type: ignore[attr-defined]  # the continued angle's key and updater ride on the function (`simulate.holonomic`)
+    circles.aux = lambda q: continued(q, key, psi0, differences(q.point(b, cb.center),  # type: ignore[attr-defined]  # (as key)
                                                                 q.point(a, ca.center)))
     return circles
 

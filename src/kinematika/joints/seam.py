@@ -123,6 +123,10 @@ class Terms(Protocol):
         """The factor of the Coriolis term 2 ω × v_rel (1: mechanics)."""
         ...
 
+    def normal_part(self, vector: Any) -> Any:
+        """n · ω × (ω × r), given ω × (ω × r) (a tuple of numbers or of arrays; n = 1: mechanics)."""
+        ...
+
 
 class Level(Protocol):
     """The velocity or acceleration level a joint's rows are written at (`engine.levels`):
@@ -150,6 +154,10 @@ class Level(Protocol):
 
     def omega(self, body: str) -> Scalar:
         """ω (α) of `body`, as linear forms."""
+        ...
+
+    def column(self, body: str) -> Optional[int]:
+        """The first column of `body`'s unknowns (its ω; v₀ follows), None for the frame."""
         ...
 
     def w(self, body: str) -> Scalar:

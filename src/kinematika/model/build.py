@@ -6,6 +6,7 @@ points, bodies and joints, expressions, which body carries a bare point name.
 from __future__ import annotations
 
 import functools
+import operator
 import types
 import typing
 from typing import TYPE_CHECKING, Any, Iterable, Optional, TypeGuard
@@ -48,6 +49,9 @@ def build_model(tree: Any) -> Model:
     return _Builder(spec).model()
 
 
+_joint_values = operator.attrgetter(*shape.JOINT_KEYS)     # a joint's optional keys, in order
+_NONES = (None,) * len(shape.JOINT_KEYS)
+
 MAX_QUESTIONS = 10_000      # a model is read by people; more is a mistake or an attack
 
 
@@ -56,6 +60,7 @@ class _Builder:
         # `schema`'s classes, or `shape`'s records of the same names and fields (a file the
         # plain checks accept): read alike
         self.spec = spec
+        self._fields_checked: set[tuple] = set()     # (kind, keys given) whose keys passed `check_fields`
 
     def model(self) -> Model:
         spec = self.spec
@@ -131,6 +136,8 @@ class _Builder:
             expr = parse(raw)
         except ExpressionError as err:
             raise KinematikaError("schema", err.said, where) from None
+        if type(raw) is float or type(raw) is int:      # a number names nothing
+            return expr
         unknown = expr.names() - set(getattr(self, "_param_names", ())) - {"pi"}
         if hasattr(self, "_param_names") and unknown:
             raise KinematikaError("schema", "unknown-name-in-parameters", where, name=sorted(unknown)[0],
@@ -184,18 +191,23 @@ class _Builder:
         out: dict[str, Body] = {}
         for name, written in self.spec.bodies.items():
             where = f"bodies.{name}"
-            raw = shape.BodySpec.make(points=written) if isinstance(written, list) else written
-            for p in raw.points:
+            record: Optional[schema.BodySpec | Record] = None     # a bare list: its points, no shapes
+            points: list[str]
+            if isinstance(written, list):
+                points = written
+            else:
+                record, points = written, written.points
+            for p in points:
                 self.known_point(p, where)
             seen: set[str] = set()
             twice: set[str] = set()
-            for p in raw.points:
+            for p in points:
                 if p in seen:
                     twice.add(p)
                 seen.add(p)
             if twice:
                 raise KinematikaError("schema", "point-listed-twice", where, point=sorted(twice)[0])
-            out[name] = Body(name, list(raw.points), self.shapes(raw, where))
+            out[name] = Body(name, list(points), [] if record is None else self.shapes(record, where))
         listed = {p for b in out.values() for p in b.points}
         for name in self.point_coords:
             if name not in listed:
@@ -295,7 +307,13 @@ class _Builder:
         if a == b:
             raise KinematikaError("schema", "joint-same-body", where, body=a)
         kind = joint_kind(raw.type)
-        kind.check_fields({key: getattr(raw, key) for key in shape.JOINT_KEYS}, self.dim, where)
+        values = _joint_values(raw)
+        # the keys' check depends only on the kind and which keys are given: once per such
+        # case (a chain of a thousand pins is checked once)
+        case = (kind, tuple(map(operator.is_not, values, _NONES)))
+        if case not in self._fields_checked:
+            kind.check_fields(dict(zip(shape.JOINT_KEYS, values)), self.dim, where)
+            self._fields_checked.add(case)
         at = raw.at
         if at is not None:
             self.known_point(at, f"{where}.at")

@@ -228,7 +228,7 @@ class BodySpec(Strict):
     description: Optional[str] = None
 
 
-JointType = Literal[tuple(KINDS)]          # type: ignore[valid-type]  # the registered kinds
+JointType = Literal[tuple(KINDS)]          # type: ignore[valid-type]  # a Literal of the registered kinds, made at run time: mypy reads only literal values
 
 # What each key a kind of joint may declare in its `fields` holds. A joint's keys are those
 # the registered kinds declare, in this order (the order errors are looked for in).

@@ -102,4 +102,4 @@ class Projection:
         for part, _ in self.parts:
             function = part.values
             if hasattr(function, "aux"):
-                q.aux[function.key] = function.aux(q)  # type: ignore[attr-defined]
+                q.aux[function.key] = function.aux(q)  # type: ignore[attr-defined]  # `key` and `aux` ride on the residual function (`joints.rolling`), checked by hasattr

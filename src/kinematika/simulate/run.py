@@ -215,7 +215,7 @@ class Simulator:
         # LSODA's steps may otherwise shrink without end towards an instant it cannot pass
         options = {"min_step": MIN_STEP * clock.duration} if method == "LSODA" else {}
         for event in (dead, drift):
-            event.terminal, event.direction = True, 1      # type: ignore[attr-defined]
+            event.terminal, event.direction = True, 1      # type: ignore[attr-defined]  # scipy solve_ivp reads these attributes of an event function
         while rows.done < len(times):
             self.failure = None
             try:

@@ -104,7 +104,7 @@ def not_followed(plan: Plan, q: float, travel: float, why: Said, kind: str = "as
 
 def with_rows(err: KinematikaError, partial: Optional[SweepResult]) -> KinematikaError:
     """`err` carrying the rows computed so far (`partial`): the command line writes them."""
-    err.partial = partial                     # type: ignore[attr-defined]
+    err.partial = partial                     # type: ignore[attr-defined]  # the rows ride on this one error to the command line (`cli.run`)
     return err
 
 
