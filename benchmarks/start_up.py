@@ -30,6 +30,7 @@ with the median of the paired ratios after / before.
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import random
 import statistics
@@ -63,11 +64,14 @@ def processes(folder: Path) -> dict[str, tuple[list[str], tuple[int, ...]]]:
 
     chain = folder / "chain1000.yaml"
     chain.write_text(yaml.safe_dump(four_bar_chain(1000), sort_keys=False), encoding="utf-8")
+    chain_json = folder / "chain1000.json"      # the same model as JSON: what reading YAML costs
+    chain_json.write_text(json.dumps(four_bar_chain(1000)), encoding="utf-8")
     py = sys.executable
     kin = str(Path(py).parent / "kinematika")
     return {
         "numpy": ([py, "-c", "import numpy"], (0,)),
         "chain": ([kin, "solve", str(chain), "--json"], (0,)),
+        "chain-json": ([kin, "solve", str(chain_json), "--json"], (0,)),
         "solve": ([kin, "solve", str(ROOT / "examples" / "four_bar.yaml"), "--json"], (0,)),
         "script": ([py, str(HERE / "numpy_four_bar.py"), "json", "360"], (0,)),
         "sweep": ([kin, "sweep", str(HERE / "models" / "four_bar.yaml"), "--steps", "359", "--json"], (0,)),
@@ -81,6 +85,7 @@ def processes(folder: Path) -> dict[str, tuple[list[str], tuple[int, ...]]]:
 TABLE = [
     ("python -c 'import numpy'", "numpy", None, None, None),
     ("kinematika solve chain of 1000 bodies --json", "chain", "numpy", 2.0, None),
+    ("the same chain written as JSON (not the target: what reading YAML costs)", "chain-json", "numpy", None, None),
     ("kinematika solve four_bar --json", "solve", "numpy", 1.5, None),
     ("numpy script, 360 positions to JSON", "script", None, None, None),
     ("kinematika sweep four_bar --steps 359 --json", "sweep", "script", 1.5, None),
@@ -181,7 +186,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--rounds", type=int, default=9)
     parser.add_argument("--seed", type=int, default=1)
-    parser.add_argument("--only", nargs="+", choices=["chain", "solve", "sweep", "simulate", "stopping"],
+    parser.add_argument("--only", nargs="+", choices=["chain", "chain-json", "solve", "sweep", "simulate", "stopping"],
                         help="measure only these (with their peers)")
     parser.add_argument("--against", help="another checkout's src folder: each kinematika process run "
                         "with it too, paired (before and after)")
