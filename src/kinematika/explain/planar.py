@@ -507,6 +507,21 @@ def joint_rate_sym(ctx: Ctx, joint_id: str, level: str) -> Sym:
     return (omega_sym if level == "v" else alpha_sym)(j.b, rel)
 
 
+def held(ctx: Ctx, d, level: str) -> bool:
+    """Whether a pin's driver holds it at this level: rate 0 (velocities), and rate and
+    acceleration 0 (accelerations). A held pin is a condition of the joint (C5-2.1's steering,
+    its angle given and not changing), not a motion given: it is said so, never as a datum."""
+    given = [d.value] + ([d.accel] if level == "a" else [])
+    return all(g is not None and ctx.is_zero(ctx.inst.value(g, d.where), "") for g in given)
+
+
+def held_msg(ctx: Ctx, joint_id: str, level: str) -> Msg:
+    """A held pin in words: it does not turn at this instant, ω_{b rel a} = 0 (α likewise)."""
+    j = ctx.model.joint(joint_id)
+    return msg("driver.held" if level == "v" else "driver.held_accel", point=point(j.at) if j.at else joint(j.id),
+               a=body(j.a), b=body(j.b), sym=joint_rate_sym(ctx, joint_id, level))
+
+
 def driver_msg(ctx: Ctx, d, level: str) -> Msg:
     """The known motion the model states, as values (never the model's own text)."""
     given = d.accel if level == "a" else d.value
@@ -521,6 +536,8 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
         turning = turns(ctx.model.joint(d.joint))
         unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")
         value = Value(ctx.clean(inst.value(given, where), unit), unit)
+        if turning and held(ctx, d, level):
+            return held_msg(ctx, d.joint, level)
         if turning:                 # the pin's rate as the symbol the composition writes later
             return msg("driver.omega", sym=joint_rate_sym(ctx, d.joint, level), value=value)
         key = "driver.slide" if level == "v" else "driver.slide_accel"

@@ -16,8 +16,9 @@ from .order import Step
 def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     """The section on structure, before any motion: the bodies (numbered as the figures number
     them) with their points and shapes, the joints with their bodies and places, the degrees of
-    freedom by the rank of the joints' conditions, the drawing, and the order of solution
-    `steps`."""
+    freedom (counted by the rank of the joints' conditions, `dof_counts`, but said as the
+    mobility alone: the notes write no count of unknowns or independent conditions), the
+    drawing, and the order of solution `steps`."""
     model = ctx.model
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
