@@ -41,7 +41,9 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
         return sec
     order = Section(msg("sec.order"), level=3)
     order.add(msg("order.assur" if _dyads(steps) else "order.blocks"))
-    for i, s in enumerate([s for s in steps if not all(ctx.fixed(b) for b in s.bodies)], 1):
+    from .planar import merge_vehicles          # the steps as the text does them (a vehicle's at once)
+
+    for i, s in enumerate([s for s in merge_vehicles(ctx, steps) if not all(ctx.fixed(b) for b in s.bodies)], 1):
         order.add(order_item(i, s))
     sec.add(order)
     return sec
