@@ -89,7 +89,7 @@ def _steps(text: str, order: str, velocities: str, step: str) -> tuple[int, int]
     return (len(re.findall(r"^\d+\. ", listed, re.M)), len(re.findall(rf"^### {step} \d+", done, re.M)))
 
 
-@pytest.mark.parametrize("name", [n for n in SEEDS if n.startswith("seed_c5_2") or n.startswith("seed_c5_e")])
+@pytest.mark.parametrize("name", [n for n in SEEDS if n.startswith(("seed_c5_2", "seed_c5_e"))])
 def test_the_order_lists_the_steps_the_text_does(name):
     """C5-2.2: the order listed two steps (S1, then S2) where the text does one (a vehicle's
     wheels at once): the list and the velocity steps are the same steps."""

@@ -18,8 +18,8 @@ from .higher import higher_pair_steps
 from .contacts import geometric_blocks
 from .copies import copy_of
 from .given import sign_of, heading, whole_along
-from .kinds import kind_key, knife_edge, pin_only, rolls, turns
-from .order import Step
+from .kinds import kind_key, pin_only, rolls, turns
+from .order import Step, merge_vehicles
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
 from .vehicles import spins, wheel_route
@@ -494,8 +494,6 @@ def driven(ctx: Ctx, d) -> list[str]:
     return ctx.model.carriers(point) if ctx.shared(point) else [d.point.body]
 
 
-
-
 def joint_rate_sym(ctx: Ctx, joint_id: str, level: str) -> Sym:
     """A driven pin's rate as the notes give it, by the bodies it joins: ω_{b rel a} (α), the
     second body relative to the first (ω_b alone on the frame), the symbol the composition
@@ -569,19 +567,3 @@ def condition_msg(j: Joint, level: str, frame: str = "") -> Msg:
     return msg(f"cond.{kind_key(j, frame)}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))
 
 
-def merge_vehicles(ctx: Ctx, steps: list[Step]) -> list[Step]:
-    """Consecutive groups on knife-edge wheels solved as one (the notes find a vehicle's
-    centre from all its wheels at once: the front wheel's speed locates the chassis')."""
-    wheeled = {b for j in ctx.model.joints if knife_edge(j) for b in (j.a, j.b)}
-    out: list[Step] = []
-    for s in steps:
-        prev = out[-1] if out else None
-        if (prev is not None and prev.kind == s.kind == "other" and prev.source == s.source == "blocks"
-                and set(prev.bodies) & wheeled and set(s.bodies) & wheeled
-                and any({j.a, j.b} & set(prev.bodies) and {j.a, j.b} & set(s.bodies) for j in ctx.model.joints)):
-            out[-1] = Step("other", prev.bodies + s.bodies, prev.joints + s.joints,
-                           list(dict.fromkeys(prev.known + [k for k in s.known if k not in prev.bodies])),
-                           source="blocks")
-        else:
-            out.append(s)
-    return out

@@ -10,7 +10,7 @@ from ..model.model import PointPair
 from .context import Ctx
 from .kinds import kind_key, on_fixed_line, rolls
 from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Table, Value, body, msg, names, point
-from .order import Step
+from .order import Step, merge_vehicles       # the order lists the steps as the text does them
 
 
 def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
@@ -41,8 +41,6 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
         return sec
     order = Section(msg("sec.order"), level=3)
     order.add(msg("order.assur" if _dyads(steps) else "order.blocks"))
-    from .planar import merge_vehicles          # the steps as the text does them (a vehicle's at once)
-
     for i, s in enumerate([s for s in merge_vehicles(ctx, steps) if not all(ctx.fixed(b) for b in s.bodies)], 1):
         order.add(order_item(i, s))
     sec.add(order)
