@@ -67,7 +67,9 @@ def test_a_figure_in_a_comma_language_writes_decimal_commas(lang):
     sol = solve(FOUR_BAR)
     shown = texts(svg(sol, centres=True, lang=lang))
     assert r"$v_{\mathrm{B}}$ = 9,25" in shown and r"$v_{\mathrm{B}{\in}\mathrm{3}\ \mathrm{rel}\ \mathrm{2}}$ = 41,8" in shown     # B∈3 seen from 2
-    assert r"$I_{\mathrm{13}}$ at (0; 23,1)" in shown        # components parted as in the text
+    far_off = {"es": r"$I_{\mathrm{13}}$ en (0; 23,1)", "ca": r"$I_{\mathrm{13}}$ a (0; 23,1)",
+               "eu": r"$I_{\mathrm{13}}$ (0; 23,1) puntuan"}[lang]
+    assert far_off in shown        # components parted as in the text, said in the figure's language
     assert not [t for t in shown if re.search(r"\d\.\d", t)]
 
 
@@ -162,3 +164,38 @@ def test_an_animation_labels_its_live_vectors_in_the_language():
     film.show(0)
     labels = {v.kind: text.get_text() for v, _, text in film.motion.arrows}
     assert labels["velocity"] == r"$v_{\mathrm{B}}$ = 9,25"
+
+
+# the words a figure writes itself, per language, as a teacher of the course writes them
+LEGEND = {"en": ("velocity", "instant centre", "Kennedy line"),
+          "es": ("velocidad", "CIR (centro instantáneo de rotación)", "recta de Aronhold–Kennedy"),
+          "ca": ("velocitat", "CIR (centre instantani de rotació)", "recta d’Aronhold–Kennedy"),
+          "eu": ("abiadura", "biraketa-zentro instantaneoa", "Aronhold–Kennedyren zuzena")}
+TITLE = {"en": "Epicyclic transmission (example C5-1.4)", "es": "Transmisión epicicloidal (ejemplo C5-1.4)",
+         "ca": "Transmissió epicicloidal (exemple C5-1.4)", "eu": "Transmisio epizikloidala (C5-1.4 adibidea)"}
+AT_INFINITY = {"en": "at infinity, direction", "es": "en el infinito, dirección", "ca": "a l’infinit, direcció",
+               "eu": "infinituan, norabidea"}
+
+
+@pytest.mark.parametrize("lang", ["en", "es", "ca", "eu"])
+def test_a_figure_says_its_own_words_in_its_language(lang):
+    """`draw --lang`: the title (the model's in that language), the legend and the notes
+    (a centre at infinity, the values a symbolic model is drawn at) are in the figure's
+    language, never English beside Catalan labels; the epicyclic train has centres at
+    infinity (satellites translating relative to each other) and is drawn at its draw_at."""
+    sol = solve(EXAMPLES / "seed_c5_1_4_epicyclic.yaml")
+    shown = texts(svg(sol, centres=True, lang=lang))
+    assert TITLE[lang] in shown
+    assert all(word in shown for word in LEGEND[lang]), [t for t in shown if not t.startswith("$")][:20]
+    assert any(AT_INFINITY[lang] in t for t in shown)
+    english = {"velocity", "instant centre", "Kennedy line", "symbolic model"}
+    if lang != "en":
+        assert not [t for t in shown if any(w in t for w in english)]
+
+
+def test_the_figures_catalogues_have_the_same_words():
+    """Every word a figure writes exists in the four languages (none falls back to a key)."""
+    from kinematika.draw.words import catalogue as words
+
+    keys = {lang: words(lang).keys() for lang in ("en", "es", "ca", "eu")}
+    assert keys["en"] and all(k == keys["en"] for k in keys.values())

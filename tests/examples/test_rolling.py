@@ -180,8 +180,8 @@ def test_seed_c5_e1_through_the_cli():
 
 
 def test_seed_c5_e3_wheels_with_a_rod():
-    # the notes' construction: each wheel's centre is its contact; v(A) ⟂ J1A, v(B) ⟂ J2B, so
-    # the rod's centre is where the lines J1A and J2B meet; speeds are w·distance.
+    # the notes' construction: each wheel's centre is its contact; v(A) ⟂ JA, v(B) ⟂ KB, so
+    # the rod's centre is where the lines JA and KB meet; speeds are w·distance.
     name = "seed_c5_e3_wheels_with_rod"
     s = symbols(name)
     R, w = s["R"], s["w"]

@@ -111,9 +111,9 @@ def test_a_centre_on_its_path_is_written_in_one_style():
 
 def test_a_contact_sentence_stands_next_to_the_equation_that_uses_it():
     """C5-E.3: the right wheel's rolling sentence came between the rod's two equations; it
-    comes after them, before the wheel's equation v_B = v_J2∈wheel + v_B-J2."""
+    comes after them, before the wheel's equation v_B = v_K∈wheel + v_B-K (its contact K)."""
     text = rendered("seed_c5_e3_wheels_with_rod", "eu", "md", False)
     rod = text.index("v_B  =  v_I  +")
-    sentence = text.index("kontaktuko J2 puntuak")
-    wheel = text.index("v_B  =  v_{J2∈eskuineko gurpila}")
+    sentence = text.index("kontaktuko K puntuak")
+    wheel = text.index("v_B  =  v_{K∈eskuineko gurpila}")
     assert rod < sentence < wheel

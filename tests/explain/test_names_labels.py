@@ -66,7 +66,7 @@ def test_a_centre_by_names_reads_like_omega():
 
 @pytest.mark.parametrize("name", SEEDS)
 def test_a_contact_at_a_model_point_is_that_point(name):
-    """C5-E.3 names its contacts J1 and J2: the text writes J1, never J1 and J1′ for one point.
+    """C5-E.3 names its contacts J and K: the text writes J, never J and J′ for one point.
     Checked on the model's own positions: wherever a body of the joint carries a point at the
     contact, the contact's name is that point's, in every language."""
     sol, _ = explained(name)
@@ -84,10 +84,10 @@ def test_a_contact_at_a_model_point_is_that_point(name):
             assert f"{there}'" not in text and f"{there}′" not in text, (name, lang, there)
 
 
-def test_e3_contacts_are_j1_and_j2():
-    """By hand: C5-E.3's points J1 (0, 0) and J2 (4R, 0) are the ground's, where the wheels touch."""
+def test_e3_contacts_are_j_and_k():
+    """By hand: C5-E.3's points J (0, 0) and K (4R, 0) are the ground's, where the wheels touch."""
     sol = kinematika.solve(EXAMPLES / "seed_c5_e3_wheels_with_rod.yaml")
-    assert [coincident_point(sol, j.id) for j in sol.model.joints[:2]] == ["J1", "J2"]
+    assert [coincident_point(sol, j.id) for j in sol.model.joints[:2]] == ["J", "K"]
 
 
 def test_a_figure_tag_is_not_its_name_again():

@@ -19,6 +19,7 @@ from .names import body_labels, body_numbers, listed, names_bodies, numbered, va
 from .results import add_results
 from .scene import BodyView, JointView, Numbers, Scene, ShapeView, Vec, drawing_values, numbering_note
 from .skeleton import add_skeletons
+from .words import word
 from .style import body_colour
 
 
@@ -36,18 +37,19 @@ def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = No
     _mark_ground_sides(bodies, model, geos, num)
     _mark_gears(bodies, model, geos, num)
     joints = [_joint(j, geos.get(j.id), num) for j in model.joints]
-    scene = Scene(model.name, model.dimension, proj, bodies, joints, size, box)
+    scene = Scene(model.wording.title(options.lang, model.name) if options.lang else model.name,
+                  model.dimension, proj, bodies, joints, size, box)
     add_skeletons(scene, inst, num, geos)
     _grow_box(scene)
     if num.values:
         scene.notes.append(_values_note(num.values, model.draw_at, options.lang))
     if sol is not None:
         add_results(scene, sol, options, num)
-    _number_bodies(scene, options.bare)
+    _number_bodies(scene, options.bare, options.lang)
     return scene
 
 
-def _number_bodies(scene: Scene, always: bool = False) -> None:
+def _number_bodies(scene: Scene, always: bool = False, lang: Optional[str] = None) -> None:
     """When a label names a body by its number, the bodies are numbered on the figure and
     the numbering is listed under it; `always` for a figure set in a text that names the
     bodies by number (an explanation's ω_3, I_13)."""
@@ -56,17 +58,17 @@ def _number_bodies(scene: Scene, always: bool = False) -> None:
     if not always and not any(numbered(text) for text in labels):
         return
     scene.numbered = True
-    scene.notes.insert(0, numbering_note(scene))
+    scene.notes.insert(0, numbering_note(scene, lang))
 
 
 def _values_note(values: dict, given: dict, lang: Optional[str] = None) -> str:
     """Which numbers the figure shows: the model's draw_at, or generic ones."""
     text = listed([f"{s} = {value_text(v, lang)}" for s, v in sorted(values.items(), key=str)], lang)
     if all(str(s) in given for s in values):
-        return f"symbolic model drawn at {text} (its draw_at values)"
+        return word("note-drawn-at-given", lang, values=text)
     if any(str(s) in given for s in values):
-        return f"symbolic model drawn at {text} (draw_at values, generic ones for the rest)"
-    return f"symbolic model drawn at generic values {text} (a model's draw_at sets them)"
+        return word("note-drawn-at-some", lang, values=text)
+    return word("note-drawn-at-generic", lang, values=text)
 
 
 def _bodies(inst: Instant, num: Numbers, lang: Optional[str] = None) -> dict[str, BodyView]:

@@ -33,6 +33,7 @@ from .options import DrawOptions
 from .scene import Scene
 from .style import (ACCELERATION, CENTRE, CURVATURE, INK, LONGEST, SHORTEST, TITLE_SIZE, VELOCITY)
 from .vectors import Arrow, arrows
+from .words import word
 
 REACH = 2.0          # the frame is at most this many times the mechanism with its arrows
 BEYOND = 3.0         # drawing sizes a zoomable figure's infinite lines reach past its frame
@@ -77,7 +78,7 @@ def _render(scene: Scene, options: DrawOptions) -> Figure:
         _triad(fig, scene)
     if not options.bare:
         _title(fig, options.title or scene.name)
-        _legend(fig, scene, drawn, notes)
+        _legend(fig, scene, drawn, notes, options.lang)
     return fig
 
 
@@ -210,22 +211,18 @@ def _notes(scene: Scene, drawn: list[Arrow], lang: Optional[str] = None) -> list
     notes = list(scene.notes)
     for group in mark_groups(scene.marks, scene.size):
         if group[0].direction is not None:
-            notes.append(f"{bare(', '.join(m.label for m in group))} at infinity, "
-                         f"direction {coordinates(group[0].direction, lang=lang)}")
+            notes.append(word("note-at-infinity", lang, labels=bare(", ".join(m.label for m in group)),
+                              direction=coordinates(group[0].direction, lang=lang)))
     rest = [bare(m.label) for m in scene.marks if m.rest]
     if rest:
-        notes.append(f"no relative motion: {', '.join(rest)}" if len(rest) > 1 else
-                     f"{rest[0]}: no relative motion")
+        notes.append(word("note-no-relative-motion", lang, count=len(rest), labels=", ".join(rest)))
     if any(a.enlarged for a in drawn):
-        notes.append(f"arrows are to scale within each kind (the longest is {LONGEST:.0%} of the "
-                     f"drawing); those marked 'enlarged' are drawn at the minimum length "
-                     f"({SHORTEST:.0%})")
+        notes.append(word("note-enlarged", lang, longest=f"{LONGEST:.0%}", shortest=f"{SHORTEST:.0%}"))
     if scene.dim == 3:
-        view = "isometric" if scene.projection.view == "iso" else scene.projection.view
+        view = word("view-iso", lang) if scene.projection.view == "iso" else scene.projection.view
         up = next((name for name, d in scene.projection.axes().items()
                    if abs(d[0]) < 1e-9 and d[1] > 1e-9), None)
-        notes.append(f"3D model: {view} orthographic projection{f', {up} up' if up else ''} "
-                     "(axes x, y, z shown at the lower right)")
+        notes.append(word("note-3d", lang, view=view, up=up or "none"))
     lines: list[str] = []
     for note in notes:
         note = shown(note)                     # names in notes: control characters escaped
@@ -234,25 +231,26 @@ def _notes(scene: Scene, drawn: list[Arrow], lang: Optional[str] = None) -> list
     return lines
 
 
-def _legend(fig: Figure, scene: Scene, drawn: list[Arrow], notes: list[str]) -> None:
+def _legend(fig: Figure, scene: Scene, drawn: list[Arrow], notes: list[str],
+            lang: Optional[str] = None) -> None:
     handles = []
     kinds = {a.view.kind for a in drawn if a.drawn}
     if "velocity" in kinds:
-        handles.append(Line2D([], [], color=VELOCITY, lw=2.2, label="velocity"))
+        handles.append(Line2D([], [], color=VELOCITY, lw=2.2, label=word("legend-velocity", lang)))
     if "acceleration" in kinds:
-        handles.append(Line2D([], [], color=ACCELERATION, lw=2.2, label="acceleration"))
+        handles.append(Line2D([], [], color=ACCELERATION, lw=2.2, label=word("legend-acceleration", lang)))
     if any(m.kind == "icr" for m in scene.marks):
         handles.append(Line2D([], [], marker="o", ms=8, mfc="white", mec=CENTRE, mew=2, ls="",
-                              label="instant centre"))
+                              label=word("legend-centre", lang)))
     if scene.kennedy:
-        handles.append(Line2D([], [], **KENNEDY, label="Kennedy line"))
+        handles.append(Line2D([], [], **KENNEDY, label=word("legend-kennedy", lang)))
     if scene.normals:
-        handles.append(Line2D([], [], **NORMAL, label="normal to a wheel or slot"))
+        handles.append(Line2D([], [], **NORMAL, label=word("legend-normal", lang)))
     if any(m.kind == "pole" for m in scene.marks):
         handles.append(Line2D([], [], marker="D", ms=6, mfc="white", mec=ACCELERATION, ls="",
-                              label="acceleration pole"))
+                              label=word("legend-pole", lang)))
     if scene.curvatures:
-        handles.append(Line2D([], [], color=CURVATURE, lw=1.3, label="curvature circle"))
+        handles.append(Line2D([], [], color=CURVATURE, lw=1.3, label=word("legend-curvature", lang)))
     height = fig.get_figheight()
     y = (NOTE * len(notes) + 0.1 + LEGEND / 2) / height
     if handles:

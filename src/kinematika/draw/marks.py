@@ -16,6 +16,7 @@ from .geometry import clip_line, clip_polyline, clip_segment, edge_point, unit
 from .context import Context
 from .scene import CurvatureView, KennedyLine, MarkView
 from .names import coordinates
+from .words import word
 from .style import ACCELERATION, CENTRE, CURVATURE, INK
 
 MARKERS = {"icr": dict(shape="o", size=9, fill="white", colour=CENTRE, width=2.2),
@@ -117,8 +118,9 @@ def _far_mark(ctx: Context, group: list[MarkView], point: np.ndarray) -> None:
             zorder=11, gid=f"{mark.key}:far", layer="centres", group=f"mark:{mark.key}")
     ctx.avoid(tail, q, weight=3.0)
     at = coordinates(point, ctx.size, ctx.lang)
-    where = f"at {at}" if ctx.words else f"= {at}"
-    ctx.label(tail, f"{group_label(group)} {where}", COLOURS[mark.kind], 2, _key(group), -d,
+    text = word("label-far-off", ctx.lang, label=group_label(group), place=at) if ctx.words \
+        else f"{group_label(group)} = {at}"
+    ctx.label(tail, text, COLOURS[mark.kind], 2, _key(group), -d,
               layer="centres", group=f"mark:{mark.key}",
               about={"name": group_label(group), "say": "far-off", "args": {"place": at}})
 
@@ -135,7 +137,9 @@ def _infinite_mark(ctx: Context, group: list[MarkView]) -> None:
             colour=COLOURS[mark.kind], zorder=11, gid=f"{_key(group)}:infinity", layer="centres",
             group=f"mark:{mark.key}")
     ctx.avoid(q - half, q + half, weight=3.0)
-    ctx.label(q, f"{group_label(group)} {'at ∞' if ctx.words else '→ ∞'}", COLOURS[mark.kind], 2,
+    text = word("label-at-infinity", ctx.lang, label=group_label(group)) if ctx.words \
+        else f"{group_label(group)} → ∞"
+    ctx.label(q, text, COLOURS[mark.kind], 2,
               _key(group), np.array([-d[1], d[0]]), layer="centres", group=f"mark:{mark.key}",
               about={"name": group_label(group), "say": "at-infinity",
                      "args": {"direction": coordinates(d, 1.0, ctx.lang)}})
@@ -184,7 +188,8 @@ def _curvature(ctx: Context, c: CurvatureView) -> None:
     else:
         seg = clip_segment(c.point, c.centre, ctx.view)
         ctx.label(c.point + 0.5 * (seg[1] - seg[0]) if seg is not None else c.point,
-                  f"{c.label}, centre {coordinates(c.centre, ctx.size, ctx.lang)}", CURVATURE, 2,
+                  word("label-curvature-centre", ctx.lang, label=c.label,
+                       place=coordinates(c.centre, ctx.size, ctx.lang)), CURVATURE, 2,
                   f"curvature:{c.ref}", layer="curvature", group=group)
 
 

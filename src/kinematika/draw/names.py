@@ -14,7 +14,7 @@ from typing import Any, Iterable, Optional, Sequence
 
 from ..numerals import DECIMAL, decimal_sign, separator, superscript_power, written
 
-_SIMPLE = re.compile(r"^[A-Za-z0-9_.,' -]+$")
+_SIMPLE = re.compile(r"^[\w.,'·’ -]+$")     # letters of any script (mathtext sets them), digits, _ . , ' · ’ - and spaces
 FORMULA_CHARS = 24            # longer formulas (as plain text) are shown by their value
 
 
@@ -135,30 +135,55 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
     return subscript(letter, point, None if body is None else labels[body], rel, part_subscript("sub.rel_to", lang))
 
 
+# The letters a contact point is named with when the model names none, in order: J first
+# (the notes' J, "el punt J de contacte"), then the letters after it. Left out: I (the
+# instant centres), L (its polygon image l reads as I or 1), O (a centre, and the
+# polygons' pole o), P (the point a problem asks about), T (the notes' terra, as in v_T),
+# V (read as a velocity, v_V) and R (a radius).
+CONTACT_LETTERS = "JKMNQSUWXYZEFGHABCD"
+
+
 def contact_name(model: Any, joint_id: str, sol: Any = None) -> str:
-    """The name of a rolling or gear joint's contact point, as the text and the figures both
-    write it: the model's own point there, when one of the two bodies carries a point at the
-    contact (one point, one label on a page: the notes' J1 where the model names it J1, not
-    J1 and J1′); else J when the model has one contact (the notes' J), else J and the
-    joint's number (J10 for joint j10, or its place among the contacts when ids are names),
-    or the name the model's notation gives it (`contact(j4): F`, the slides' F); never
-    another point's name (a prime is added)."""
-    named = getattr(getattr(model, "wording", None), "contacts", {}).get(joint_id)
-    if named is None and sol is not None:
-        there = coincident_point(sol, joint_id)
-        if there is not None:
-            return there
-    rolling = [j.id for j in model.joints if j.kind.touches]
-    number = joint_id[1:] if re.fullmatch(r"j\d+", joint_id) else str(rolling.index(joint_id) + 1)
-    base = named or ("J" if len(rolling) == 1 else f"J{number}")
-    while base in model.points:
-        base += "'"
-    return base
+    """The name of a touching joint's contact point, as the text, the tables and the
+    figures all write it (`contact_names`)."""
+    return contact_names(model, sol)[joint_id]
+
+
+def contact_names(model: Any, sol: Any = None) -> dict[str, str]:
+    """Every touching joint's contact point -> its name, the one rule of the text, the tables
+    and the figures: the name the model's notation gives it (`contact(j4): F`, the slides'
+    F); else the model's own point there, when one of the two bodies (or a body welded to
+    one) carries a point at the contact (one point, one label on a page: C5-1.2's K1, not K1
+    and another name); else a letter as a teacher writes it, never the joint's id (the
+    joints' ids are the file's, j3 -> J3 read as a joint): J, then K, M, N … in the
+    joints' order (`CONTACT_LETTERS`), skipping any letter a point's name starts with (C
+    beside C, G beside G1 and G2), a parameter's name (L, r) or a body's index (the slides'
+    N) — so one contact is the notes' J; never another point's name (a prime is added)."""
+    touching = [j.id for j in model.joints if getattr(j.kind, "touches", False)]
+    wording = getattr(model, "wording", None)
+    out: dict[str, str] = {}
+    for jid in touching:
+        named = getattr(wording, "contacts", {}).get(jid)
+        if named is None and sol is not None:
+            named = coincident_point(sol, jid)
+        if named is not None:
+            out[jid] = named
+    taken = {n[:1].upper() for n in model.points} | {n.upper() for n in getattr(model, "parameters", {})}
+    taken |= {i.upper() for by_lang in getattr(wording, "indices", {}).values() for i in by_lang.values()}
+    taken |= {n.upper() for n in out.values()}
+    letters = iter(c for c in CONTACT_LETTERS if c not in taken)
+    for jid in touching:
+        if jid not in out:
+            base = next(letters, "J")
+            while base in model.points or base in out.values():
+                base += "'"
+            out[jid] = base
+    return {jid: out[jid] for jid in touching}
 
 
 def coincident_point(sol: Any, joint_id: str) -> Optional[str]:
-    """The model's point at a touching joint's contact, carried by one of its two bodies
-    (first in the file's order), else None: the contact is that point."""
+    """The model's point at a touching joint's contact, carried by one of its two bodies or
+    a body welded to one (first in the file's order), else None: the contact is that point."""
     model = sol.model
     joint = next((j for j in model.joints if j.id == joint_id), None)
     geometry = sol.geometry(joint_id) if joint is not None else None
@@ -170,8 +195,9 @@ def coincident_point(sol: Any, joint_id: str) -> Optional[str]:
     except (TypeError, ValueError):
         return None
     scale = max([1.0] + [abs(c) for c in where])
+    bodies = _welded(model, {joint.a, joint.b})
     for name, pos in sol.inst.points.items():
-        if not {joint.a, joint.b} & set(model.carriers(name)):
+        if not bodies & set(model.carriers(name)):
             continue
         try:
             xs = [float(sol.inst.num(c)) for c in pos]
@@ -180,6 +206,21 @@ def coincident_point(sol: Any, joint_id: str) -> Optional[str]:
         if len(xs) == len(where) and all(abs(x - y) <= 1e-9 * scale for x, y in zip(xs, where)):
             return name
     return None
+
+
+def _welded(model: Any, bodies: set) -> set:
+    """`bodies` and every body welded to one of them, directly or through others (a plane
+    welded to the ground: the ground's point on it is the plane's point there too)."""
+    out = set(bodies)
+    welds = [j for j in model.joints if getattr(j.kind, "rigid", False)]
+    grown = True
+    while grown:
+        grown = False
+        for w in welds:
+            if (w.a in out) != (w.b in out):
+                out |= {w.a, w.b}
+                grown = True
+    return out
 
 
 def pair_symbol(letter: str, model: Any, a: str, b: str, lang: Optional[str] = None) -> str:
@@ -254,8 +295,22 @@ def coordinates(xs: Iterable[float], scale: float = 1.0, lang: Optional[str] = N
 
 
 def bare(label: str) -> str:
-    """A mathtext label as readable plain text, for notes: $I_{\\mathrm{13}}$ -> I13."""
-    out = label.replace("$", "").replace(r"\mathrm", "").replace(r"{\in}", "∈")
+    """A mathtext label as readable plain text, for notes: $I_{\\mathrm{13}}$ -> I13, and a
+    subscript longer than a number or a letter in brackets, so that it does not run into its
+    letter: $I_{\\mathrm{satèl·lit2}\\ \\mathrm{resp.}\\ \\mathrm{corona}}$ -> I(satèl·lit2 resp. corona)."""
+    def piece(math: re.Match) -> str:
+        head, sep, sub = math.group(1).partition("_")
+        if not sep:
+            return _unmath(head)
+        sub = _unmath(sub)
+        return _unmath(head) + (sub if len(sub) == 1 or sub.isdigit() else f"({sub})")
+
+    out, found = re.subn(r"(?<!\\)\$(.+?)(?<!\\)\$", piece, label)
+    return out if found else _unmath(label)
+
+
+def _unmath(text: str) -> str:
+    out = text.replace("$", "").replace(r"\mathrm", "").replace(r"{\in}", "∈")
     out = out.replace(r"\_", "\0").replace(r"\ ", " ")
     out = out.replace("{", "").replace("}", "").replace("_", "").replace("\\", "")
     return out.replace("\0", "_")

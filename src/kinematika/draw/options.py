@@ -13,7 +13,8 @@ class DrawOptions:
 
     `lang`: None (the default) writes numbers as Python does (2.5, -0.3, 1e-05), as the
     figure always has; a language (en, es, ca, eu) writes them as an explanation in it
-    does (2,5, −0,3, 1×10⁻⁵ in es), so that a figure beside its text reads the same.
+    does (2,5, −0,3, 1×10⁻⁵ in es), so that a figure beside its text reads the same, and
+    the figure's own words (title, legend, notes, "at ∞") in that language (`draw.words`).
 
     `velocities` / `accelerations`: None draws the vectors the model asks for (its
     `velocity` / `acceleration` questions); True draws them at every shown point; False
@@ -37,8 +38,8 @@ class DrawOptions:
     title: Optional[str] = None       # default: the model's name
     bare: bool = False                # the drawing alone: no title, legend or notes (a page
                                       # that embeds it says them, in its own language)
-    lang: Optional[str] = None        # how numbers are written: None as Python does, else
-                                      # as an explanation in that language (see above)
+    lang: Optional[str] = None        # how numbers and words are written: None as Python
+                                      # does and in English, else as that language (see above)
     dimensions: Optional[list] = None  # `draw.dimensions.Dimension` marks (a statement's data)
 
     def __post_init__(self) -> None:

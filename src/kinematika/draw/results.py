@@ -14,6 +14,7 @@ from ..joints.capabilities import Centre
 from ..model.model import PointRef
 from ..questions import QUESTIONS, answer
 from .options import DrawOptions
+from .words import word
 from .geometry import perpendicular
 from .names import (bare, body_labels, contact_name, equation, formula, pair_symbol, point_symbol,
                     subscript, value_text)
@@ -315,10 +316,10 @@ def _curvatures(scene: Scene, sol: Any, num: Numbers, lang: Optional[str] = None
         name = point_symbol("ℜ", sol.model, q.target.point, q.target.body, q.relative_to, lang)
         value = answer(sol, q)
         if value.get("rest"):
-            scene.notes.append(f"{bare(name)} is at rest: no path curvature")
+            scene.notes.append(word("note-curvature-rest", lang, label=bare(name)))
             continue
         if value.get("radius") is None:
-            scene.notes.append(f"{bare(name)}: the path is straight here (infinite radius)")
+            scene.notes.append(word("note-curvature-straight", lang, label=bare(name)))
             continue
         p, c = num.vector(sol.position(q.target)), num.vector(value["center"])
         radius = num.scalar(value["radius"])

@@ -209,9 +209,12 @@ def numbering(scene: Scene) -> list[tuple[Any, str]]:
             for b in sorted(scene.bodies.values(), key=lambda b: b.number)]
 
 
-def numbering_note(scene: Scene) -> str:
-    """The note under a figure that numbers its bodies: 'bodies: 1 ground, 2 crank, …'."""
-    return "bodies: " + ", ".join(f"{n} {name}" for n, name in numbering(scene))
+def numbering_note(scene: Scene, lang: Optional[str] = None) -> str:
+    """The note under a figure that numbers its bodies: 'bodies: 1 ground, 2 crank, …' (in
+    the figure's language)."""
+    from .words import word
+
+    return word("note-bodies", lang, bodies=", ".join(f"{n} {name}" for n, name in numbering(scene)))
 
 
 def drawing_values(inst: Instant) -> dict:

@@ -119,6 +119,7 @@ def _build(sol: Solution, length_unit: str) -> Document:
         if id(eq) not in in_levels:
             eq.polygon = polygon(ctx, eq)
     doc.joints = joint_places(ctx)
+    doc.parameters = tuple(ctx.model.parameters)
     return doc
 
 

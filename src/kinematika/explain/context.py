@@ -52,9 +52,9 @@ class Ctx:
         return name
 
     def contact(self, j) -> str:
-        """The name of a rolling joint's contact point, placed there: the model's point there
-        (`draw.names.contact_name`), else J, or J10 for joint j10 (J1, J2 … in order when ids
-        are names)."""
+        """The name of a touching joint's contact point, placed there: the notation's name,
+        the model's point there, else J, K, M … in the joints' order (`draw.names.contact_names`,
+        the one rule of the text, the tables and the figures; never the joint's id)."""
         if j.id not in self._contacts:
             from ..draw.names import contact_name
 

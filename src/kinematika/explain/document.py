@@ -53,6 +53,17 @@ class Inline:
     items: list
 
 
+@dataclass
+class Own:
+    """The model's own words as a message argument (a note on the statement): escaped, each
+    parameter's name in them written as the formulas write it (`Renderer.own_words`)."""
+
+    text: str
+
+    def __str__(self) -> str:
+        return self.text
+
+
 def msg(key: str, **args: Any) -> Msg:
     """A catalogue message with its arguments: ``msg("curvature.rest", point=Name("B"))``."""
     return Msg(key, args)
@@ -306,6 +317,7 @@ class Document:
     numbers: dict = field(default_factory=dict)    # body -> its number, as the notes and figures number them
     wording: Any = None                             # the model's names per language and notation
     joints: dict = field(default_factory=dict)      # joint -> its point or contact (how the text names it)
+    parameters: tuple = ()                          # the model's parameters' names (its own words write them)
 
     def blocks(self) -> list:
         """Every block, nested sections included, in reading order."""

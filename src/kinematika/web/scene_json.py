@@ -51,7 +51,7 @@ def scene_data(scene: Scene, twin: Optional[Scene] = None, options: Any = None,
         "numbered": bool(getattr(scene, "numbered", False)),
         "curvatures": [{**_plain(c), "label": runs(c.label)} for c in scene.curvatures],
         "axes": [_plain(a) for a in scene.axes],
-        "notes": [_unmath(n) for n in scene.notes if n != numbering_note(scene)],
+        "notes": [_unmath(n) for n in scene.notes if n != numbering_note(scene, getattr(options, "lang", None))],
         "numbering": [list(pair) for pair in numbering(scene)] if getattr(scene, "numbered", False) else [],
         "style": STYLE,
     }

@@ -14,7 +14,7 @@ from ...text import shown_lines
 from ...draw.names import centre_subscript
 from ...model.wording import ARTICLES, NO_ARTICLE, Wording, part_subscript, rate_key
 from ..catalogue import CONTRACTIONS, Catalogue
-from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names,
+from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Own,
                         Described, Section, Sym, Table, Told, Value)
 from .names import written as written_name
 from .svg import Text, plain_text, sym_text
@@ -212,15 +212,34 @@ class Renderer(ABC):
         """The model's words in the reader's language: what its points are (a table), its
         notes on the printed statement (one paragraph each); nothing when it gives none."""
         if t.kind == "points":
-            rows = [[self.name(Name(p)), self.esc(self.wording.point(p, self.lang))] for p in t.points
+            rows = [[self.name(Name(p)), self.own_words(self.wording.point(p, self.lang))] for p in t.points
                     if self.wording.point(p, self.lang)]
             if not rows:
                 return ""
             return self.table([self.message(Msg("col.point")), self.message(Msg("col.what"))], rows)
         if t.kind == "data":
-            return "\n".join(self.para(self.esc(shown_lines(n))) for n in self.wording.data.get(self.lang, []))
+            return "\n".join(self.para(self.own_words(n)) for n in self.wording.data.get(self.lang, []))
         notes = self.wording.notes.get(self.lang, [])
-        return "\n".join(self.para(self.message(Msg("note.text", {"text": n}))) for n in notes)
+        return "\n".join(self.para(self.message(Msg("note.text", {"text": Own(n)}))) for n in notes)
+
+    def own_words(self, text: str) -> str:
+        """The model's own words (what a point is, the Data's statements, the notes) escaped,
+        each parameter's name in them whose symbol is written otherwise (r1, written r₁ by
+        the formulas) written as the formulas write it: C5-E.5's point P "at r1 below its
+        centre" sat over (L; r₂ − r₁), and its notes wrote (r2 − r1)²/r1 beside the page's
+        (r₂ − r₁)²/r₁. A name that reads the same either way (v, L, R_roda) is left as typed."""
+        import sympy
+
+        from .names import unicode_name
+
+        names = [n for n in getattr(self.doc, "parameters", ()) if unicode_name(self.spelt(n)) != n
+                 and any(c.isdigit() for c in n)]
+        if not names:
+            return self.esc(shown_lines(text))
+        pattern = re.compile(r"(?<![A-Za-z0-9_.])(" + "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
+                             + r")(?![A-Za-z0-9_]|\.\d)")         # r1² and (r1) too, not r12, x.r1, r1.5
+        parts = pattern.split(shown_lines(text))
+        return "".join(self.formula(sympy.Symbol(part)) if k % 2 else self.esc(part) for k, part in enumerate(parts))
 
     def plain(self, x: Any) -> str:
         """The text a name argument is read as, in the reader's language (for elision)."""
@@ -259,7 +278,9 @@ class Renderer(ABC):
             said = (self.wording.point if x.kind == "point" else self.wording.parameter)(x.name, self.lang)
             if not said and x.fallback is not None:
                 return self.message(x.fallback)
-            return self.esc(shown_lines(said))
+            return self.own_words(said)
+        if isinstance(x, Own):
+            return self.own_words(x.text)
         if isinstance(x, (list, tuple)):
             return ", ".join(self.arg(i) for i in x)
         return self.esc(str(x))
