@@ -117,3 +117,13 @@ def test_a_contact_sentence_stands_next_to_the_equation_that_uses_it():
     sentence = text.index("kontaktuko K puntuak")
     wheel = text.index("v_B  =  v_{K∈eskuineko gurpila}")
     assert rod < sentence < wheel
+
+
+def test_a_caption_names_each_arrow_by_its_point_on_the_page():
+    """001's P pair draws v_B and the drag of B (the guide M's point there): the caption said
+    "the velocities of B and B". Each arrow is named as the page writes the point: B∈M for
+    the drag."""
+    caption = next(line for line in rendered(P_PAIR, "eu", "md").splitlines()
+                   if line.startswith("*Mekanismoa une honetan"))
+    assert "B eta B puntuen" not in caption
+    assert "B∈M puntuen abiadurak" in caption

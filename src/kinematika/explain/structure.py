@@ -7,6 +7,7 @@ from typing import Optional
 
 from ..draw.names import body_numbers
 from ..model.model import PointPair
+from .asked import worked
 from .context import Ctx
 from .kinds import kind_key, on_fixed_line, rolls
 from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Table, Value, body, msg, names, point
@@ -151,9 +152,21 @@ def _arrows_drawn(ctx: Ctx, options: dict) -> dict:
     drawn = [v for v in scene.vectors if v.kind == "velocity" and v.relative_to is None]
     moving = [v for v in drawn if v.magnitude > 1e-9 * max(ctx.inst.scale, 1e-12)]
     shown = moving or drawn
-    points = Names([Name(v.ref.split("@", 1)[0]) for v in shown])
+    points = Names([Name(_arrow_point(ctx, v.ref)) for v in shown])
     arrows = (min(len(moving), 2) if moving else 3) if drawn else 0
     return {"arrows": arrows, "points": points}
+
+
+def _arrow_point(ctx: Ctx, ref: str) -> str:
+    """The point an arrow of the mechanism's figure is the velocity of, by its label on the
+    page: B∈rocker, and B∈M for the drag of a composition at B in the moving body M (001's P
+    pair) — never "the velocities of B and B" where two bodies' points meet and move apart."""
+    ref, _, part = ref.partition(":")
+    point, _, body = ref.partition("@")
+    if part == "drag":                           # the drag: the moving frame's point there
+        body = next((q.moving for q in worked(ctx).compositions
+                     if str(q.target) == ref and q.moving), body)
+    return ctx.point_label(point, body) if body else point
 
 
 def _lines_drawn(ctx: Ctx, options: dict) -> tuple[bool, Optional[set]]:
