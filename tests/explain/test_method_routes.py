@@ -94,7 +94,9 @@ def test_rolling_pair_lever_by_axes_at_the_wheel_centre():
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_order_names_dyads_only_where_there_are(lang):
-    dyad = {"en": "dyad", "es": "díada", "ca": "díade", "eu": "diad"}[lang]
+    # the slides write no word for a dyad (4.2: "R loturak dituzten mekanismoak", two
+    # elements N and P): the Basque pages say it in theirs (fifth round)
+    dyad = {"en": "dyad", "es": "díada", "ca": "díade", "eu": "loturak dituzten bi elementu"}[lang]
     one_wheel = rendered("seed_c5_1_7_semicylinder", lang, "md", False).lower()
     assert dyad not in one_wheel and "assur" not in one_wheel
     assert dyad in rendered("seed_001_r_pairs", lang, "md", False).lower()
@@ -109,3 +111,13 @@ def test_rates_table_has_no_holes(name):
     table = text.split("## Angular velocities and accelerations")[1].split("\n\n\n")[0]
     rows = [r for r in table.splitlines() if r.startswith("| *")]
     assert rows and all("—" not in r for r in rows), table
+
+
+def test_basque_pages_use_the_slides_words_for_a_dyad():
+    """The Basque slides (4.2, 4.3) name no dyad: they solve "R loturak dituzten mekanismoak"
+    by their two elements N and P. "diada" is a word they do not use, on no Basque page."""
+    for name in ("seed_001_r_pairs", "seed_001_p_pair_coriolis"):
+        text = rendered(name, "eu", "md", False)
+        assert "diada" not in text.lower(), name
+    assert "RRR loturak dituzten bi elementu: *N elementua* eta *P elementua*" in \
+        rendered("seed_001_r_pairs", "eu", "md", False)

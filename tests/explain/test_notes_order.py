@@ -275,8 +275,8 @@ def test_a_translation_says_why_after_its_zero(name, body):
 ])
 def test_a_wheel_on_a_fixed_body_is_accelerated_through_its_centre(name, centre, fixed_circle):
     """The notes reach the acceleration of a wheel rolling on a fixed profile through its
-    centre's path: C keeps its distance from the profile, so a_C = v_C²/OC (towards O) +
-    α × JC — no geometric contact point, no contact term, in the wheel's step."""
+    centre's path: C keeps its distance from the profile, so a_C = α × JC + v_C²/OC (towards
+    O), a_C^t + a_C^n — no geometric contact point, no contact term, in the wheel's step."""
     _, doc = explained(name)
     first = next(s for s in steps(doc, "sec.accelerations")
                  if any(isinstance(b, Msg) and b.key.startswith("path.") for b in s.blocks))
@@ -286,7 +286,8 @@ def test_a_wheel_on_a_fixed_body_is_accelerated_through_its_centre(name, centre,
     eq = next(b for b in first.blocks if isinstance(b, Equation) and b.target.sym.sub == centre)
     kinds = [t.kind for side in eq.sides for t in side]
     assert "contact" not in kinds and kinds.count("path") == (1 if fixed_circle else 0)
-    assert kinds[-1] == "tangential"
+    # the intrinsic components as the notes write them (C5-1.7): tangential, then normal (fifth round)
+    assert kinds[0] == "tangential" and (eq.sides[0][0].sym.sub == centre or not fixed_circle)
 
 
 @pytest.mark.parametrize("name,body", [("seed_c5_1_6_belt", "pulley"), ("seed_c5_e6_bicycle", "chainring")])

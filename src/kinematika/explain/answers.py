@@ -106,6 +106,7 @@ def relative_rates(ctx: Ctx) -> list[Derived]:
         assert isinstance(body, str), f"{q.where}: a question about a body names the body"
         if f"relative:{body}/{rel}" in ctx.worked:
             continue            # a step found it (a belt seen from its arm): not again, backwards
+        ctx.worked.add(f"rate:{'v' if kind.unit_kind == 'omega' else 'a'}:{body}/{rel}")    # said here
         sym, get = (omega_sym, ctx.omega) if kind.unit_kind == "omega" else (alpha_sym, ctx.alpha)
         unit = UNITS[kind.unit_kind] or ""      # omega and alpha: each has its unit
         out.append(Derived(sym(body, rel), [sym(body), " − ", sym(rel)], ctx.value(get(body, rel), unit),

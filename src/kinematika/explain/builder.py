@@ -20,7 +20,7 @@ from .copies import copies
 from .centres import centre_sites, centres_first, centres_section
 from .context import Ctx, omega_sym, pair_notation
 from .data import contact_rows, data_section
-from .document import Ann, Document, Equation, Inline, Msg, Name, Section, Sym, Value, msg
+from .document import Ann, Document, Equation, Inline, Msg, Name, Section, Sym, Term, Value, msg
 from .group import refine
 from .order import solution_order
 from .planar import PlanarSteps
@@ -93,6 +93,7 @@ def _build(sol: Solution, length_unit: str) -> Document:
                     m = RELATIVE.match(t.sym.sub)
                     if m:
                         ctx.slides_seen.setdefault((level, m.group(2), m.group(3)), t.sym)
+        coriolis_by_point(ctx, doc.sections)
     else:
         doc.sections.append(structure_section(ctx, []))
         doc.sections.append(rates_section(ctx, accel))
@@ -241,6 +242,27 @@ def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
 def _written(sym: Sym) -> tuple:
     """What tells two symbols apart on the page."""
     return (sym.base, sym.sub, sym.sup, sym.sub_key)
+
+
+def coriolis_by_point(ctx: Ctx, sections: list[Section]) -> None:
+    """The Coriolis term named as the notes name it, a_Cor at its point (a_Cor,B: 4.3's a_cor,
+    2 ω_M·v_rel), the same name in the steps, the composition of motions and the answers:
+    one quantity, one name. A step's term keeps both bodies (a_Cor,B∈N/M) only where the
+    page has Coriolis terms of one point for two different relative motions (a step's and
+    a composition asked in another moving frame), which the point alone would not tell apart."""
+    found: dict[str, list[tuple[Term, tuple]]] = {}
+    for sec in sections:
+        for eq in _equations(sec):
+            for t in (t for side in eq.sides for t in side if t.kind == "coriolis"):
+                m = RELATIVE.match(t.sym.sub)
+                if m:
+                    found.setdefault(m.group(1), []).append((t, (m.group(2), m.group(3))))
+    asked = {(ref.point, (ref.body, moving)) for ref, moving, _ in composition_pairs(ctx)}
+    for p, terms in found.items():
+        pairs = {pair for _, pair in terms} | {pair for q, pair in asked if q == p}
+        if len(pairs) == 1:
+            for t, _ in terms:
+                t.sym = Sym("a", p, sub_key="sub.cor")
 
 
 def _equations(sec: Section) -> list[Equation]:

@@ -183,6 +183,7 @@ def geometric_blocks(ctx: Ctx, j, done: set, pair: Optional[tuple[str, str]] = N
     b, a = pair or (j.b, j.a)
     bar = Bar(ctx, j)
     w = omega_sym(b, a)
+    ctx.worked.add(f"rate:v:{b}/{a}")              # said here: a composition does not say it again
     rel = Derived(w, [omega_sym(b), " − ", omega_sym(a)], ctx.value(ctx.omega(b, a), "rate"),
                   lead=None if a == ctx.frame else composed(omega_sym(b), w, omega_sym(a), b == ctx.frame))
     out: list = []

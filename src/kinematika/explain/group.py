@@ -859,7 +859,10 @@ class Writer:
                     if lv == "a" and rolls(seg.joint) and seg.joint.id not in self.plan.glide:
                         out += geometric_blocks(ctx, seg.joint, ps.geometric, (seg.body, seg.frm))
         owned = list(out)
-        for s in [r.start for r in p.routes] + [p.end]:
+        # the end point written from its own body first (C5-E.3: v_B from the rod, after v_A),
+        # then what the routes start from (the right wheel's contact at rest), each sentence
+        # next to the equation that uses it, never between one body's equations
+        for s in [p.end] + [r.start for r in p.routes]:
             out += self.known_first(s, p)
         sides: list[list[Term]] = []
         reads: dict[str, tuple[Seg, Term]] = {}
@@ -872,11 +875,11 @@ class Writer:
                 if self._centred(r, i):         # J∈fixed, the contact, ω²·JC: the centre's path normal
                     turn = r.segs[i + 1]
                     made = self.seg_terms(turn, p)
-                    terms = self.path_terms(seg.joint, turn.body, turn.p, terms + self.seg_terms(seg, p) + made[:-1])
-                    if not terms and p.end != Site(turn.p, turn.body):     # a straight path, in a sum: the term is a_C whole
+                    normal = self.path_terms(seg.joint, turn.body, turn.p, terms + self.seg_terms(seg, p) + made[:-1])
+                    if not normal and p.end != Site(turn.p, turn.body):     # a straight path, in a sum: the term is a_C whole
                         made[-1].sym = Sym(lv, ctx.point_label(turn.p, turn.body))
                         ps.done.add(made[-1].sym.sub)
-                    terms.append(made[-1])
+                    terms = self.path_tangential(made[-1], turn.body, turn.p, normal) + normal
                     skip = i + 1
                     if turn.body in p.finds:
                         reads.setdefault(turn.body, (turn, made[-1]))
@@ -948,6 +951,16 @@ class Writer:
         if o is None:
             return [msg("path.line", **args)]
         return [msg("path.circle", o=point_name(o), radius=point_name(str(segment(o, centre))), **args)]
+
+    def path_tangential(self, term: Term, body: str, centre: str, normal: list[Term]) -> list[Term]:
+        """The centre's tangential acceleration on its path, α × JC, named and placed as the
+        notes write the intrinsic components (C5-1.7: a_C = (→ r ω̇) + (↓ r ω²/3), a_C^t then
+        a_C^n), the way the curvature section writes them too: one style for a_C on a page.
+        On a straight path (no normal term) the term is the whole acceleration: left as it is."""
+        if not normal:
+            return [term]
+        term.sym = Sym("a", self.ctx.point_label(centre, body), "t")
+        return [term]
 
     def path_terms(self, j: Joint, body: str, centre: str, replaced: list[Term]) -> list[Term]:
         """The centre's normal acceleration on its path, v_C² / OC towards O: the sum of the
@@ -1027,7 +1040,8 @@ class Writer:
                         made = rotation_terms(ctx, lv, body, g.q, x, False)
                         if i > 0 and self._centred(route, i - 1) and x == g.p:     # the wheel's centre on its path
                             j = route.segs[i - 1].joint
-                            terms = self.path_terms(j, body, x, terms + made[:-1]) + made[-1:]
+                            normal = self.path_terms(j, body, x, terms + made[:-1])
+                            terms = self.path_tangential(made[-1], body, x, normal) + normal
                         else:
                             terms += made
                     break

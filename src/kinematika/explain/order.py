@@ -8,13 +8,17 @@ block's bodies forming one group.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..engine.linsolve import _blocks, independent_rows
 from ..solution import Solution
 from ..structure.assur import assur_groups, dyad as assur_dyad
-from .kinds import lower
+from .kinds import knife_edge, lower
+
+if TYPE_CHECKING:
+    from .context import Ctx
 
 
 @dataclass
@@ -107,4 +111,22 @@ def jointed(model, bodies: list[str], known: set[str]) -> list[str]:
         for x, y in ((j.a, j.b), (j.b, j.a)):
             if x in bodies and y in known and y not in out:
                 out.append(y)
+    return out
+
+
+def merge_vehicles(ctx: Ctx, steps: list[Step]) -> list[Step]:
+    """Consecutive groups on knife-edge wheels solved as one (the notes find a vehicle's
+    centre from all its wheels at once: the front wheel's speed locates the chassis')."""
+    wheeled = {b for j in ctx.model.joints if knife_edge(j) for b in (j.a, j.b)}
+    out: list[Step] = []
+    for s in steps:
+        prev = out[-1] if out else None
+        if (prev is not None and prev.kind == s.kind == "other" and prev.source == s.source == "blocks"
+                and set(prev.bodies) & wheeled and set(s.bodies) & wheeled
+                and any({j.a, j.b} & set(prev.bodies) and {j.a, j.b} & set(s.bodies) for j in ctx.model.joints)):
+            out[-1] = Step("other", prev.bodies + s.bodies, prev.joints + s.joints,
+                           list(dict.fromkeys(prev.known + [k for k in s.known if k not in prev.bodies])),
+                           source="blocks")
+        else:
+            out.append(s)
     return out

@@ -18,8 +18,8 @@ from .higher import higher_pair_steps
 from .contacts import geometric_blocks
 from .copies import copy_of
 from .given import sign_of, heading, whole_along
-from .kinds import kind_key, knife_edge, pin_only, rolls, turns
-from .order import Step
+from .kinds import kind_key, pin_only, rolls, turns
+from .order import Step, merge_vehicles
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
 from .vehicles import spins, wheel_route
@@ -494,8 +494,6 @@ def driven(ctx: Ctx, d) -> list[str]:
     return ctx.model.carriers(point) if ctx.shared(point) else [d.point.body]
 
 
-
-
 def joint_rate_sym(ctx: Ctx, joint_id: str, level: str) -> Sym:
     """A driven pin's rate as the notes give it, by the bodies it joins: ω_{b rel a} (α), the
     second body relative to the first (ω_b alone on the frame), the symbol the composition
@@ -505,6 +503,21 @@ def joint_rate_sym(ctx: Ctx, joint_id: str, level: str) -> Sym:
     j = ctx.model.joint(joint_id)
     rel = None if j.a == ctx.frame else j.a
     return (omega_sym if level == "v" else alpha_sym)(j.b, rel)
+
+
+def held(ctx: Ctx, d, level: str) -> bool:
+    """Whether a pin's driver holds it at this level: rate 0 (velocities), and rate and
+    acceleration 0 (accelerations). A held pin is a condition of the joint (C5-2.1's steering,
+    its angle given and not changing), not a motion given: it is said so, never as a datum."""
+    given = [d.value] + ([d.accel] if level == "a" else [])
+    return all(g is not None and ctx.is_zero(ctx.inst.value(g, d.where), "") for g in given)
+
+
+def held_msg(ctx: Ctx, joint_id: str, level: str) -> Msg:
+    """A held pin in words: it does not turn at this instant, ω_{b rel a} = 0 (α likewise)."""
+    j = ctx.model.joint(joint_id)
+    return msg("driver.held" if level == "v" else "driver.held_accel", point=point(j.at) if j.at else joint(j.id),
+               a=body(j.a), b=body(j.b), sym=joint_rate_sym(ctx, joint_id, level))
 
 
 def driver_msg(ctx: Ctx, d, level: str) -> Msg:
@@ -521,6 +534,8 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
         turning = turns(ctx.model.joint(d.joint))
         unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")
         value = Value(ctx.clean(inst.value(given, where), unit), unit)
+        if turning and held(ctx, d, level):
+            return held_msg(ctx, d.joint, level)
         if turning:                 # the pin's rate as the symbol the composition writes later
             return msg("driver.omega", sym=joint_rate_sym(ctx, d.joint, level), value=value)
         key = "driver.slide" if level == "v" else "driver.slide_accel"
@@ -552,19 +567,3 @@ def condition_msg(j: Joint, level: str, frame: str = "") -> Msg:
     return msg(f"cond.{kind_key(j, frame)}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))
 
 
-def merge_vehicles(ctx: Ctx, steps: list[Step]) -> list[Step]:
-    """Consecutive groups on knife-edge wheels solved as one (the notes find a vehicle's
-    centre from all its wheels at once: the front wheel's speed locates the chassis')."""
-    wheeled = {b for j in ctx.model.joints if knife_edge(j) for b in (j.a, j.b)}
-    out: list[Step] = []
-    for s in steps:
-        prev = out[-1] if out else None
-        if (prev is not None and prev.kind == s.kind == "other" and prev.source == s.source == "blocks"
-                and set(prev.bodies) & wheeled and set(s.bodies) & wheeled
-                and any({j.a, j.b} & set(prev.bodies) and {j.a, j.b} & set(s.bodies) for j in ctx.model.joints)):
-            out[-1] = Step("other", prev.bodies + s.bodies, prev.joints + s.joints,
-                           list(dict.fromkeys(prev.known + [k for k in s.known if k not in prev.bodies])),
-                           source="blocks")
-        else:
-            out.append(s)
-    return out

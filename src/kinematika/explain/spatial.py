@@ -14,7 +14,7 @@ from ..algebra.vectors import dot
 from ..model.model import PointRef, Question
 from ..questions.decompose import KIND as DECOMPOSE, decompose
 from .asked import worked
-from .context import Ctx, alpha_sym, omega_sym
+from .context import Ctx, alpha_sym, composed, omega_sym
 from .document import Ann, Derived, Equation, Inline, Name, Names, Section, Sym, Term, Value, msg
 from .terms import KNOWN, point_term, relative_name, rotation_terms, target_term
 from .kinds import guided, pin_only, rolls, slider
@@ -298,7 +298,31 @@ def _relative(ctx: Ctx, level: str, ref: PointRef, moving: str, pivot: Optional[
         return said + [Equation(target, [[target_term(ctx, level, p, body, True, moving)]], level, ref, moving,
                                 figure=False)]
     side = [target_term(ctx, level, q, body, True, moving)] + rotation_terms(ctx, level, body, q, p, False, moving)
-    return said + [Equation(target, [side], level, ref, moving, figure=False)]
+    return said + relative_rate(ctx, level, body, moving) + [Equation(target, [side], level, ref, moving,
+                                                                         figure=False)]
+
+
+def relative_rate(ctx: Ctx, level: str, body: str, moving: str) -> list:
+    """ω_{b rel a} (α at accelerations) worked out before an equation whose terms use it
+    (ω_{R rel N}·FA): from the absolute rates found above, composed the notes' way,
+    ω_b = ω_{b rel a} + ω_a ⇒ ω_{b rel a} = ω_b − ω_a — a product a student cannot evaluate
+    is never written. Planar (in space α_b/a is not α_b − α_a); once a page (`said_rate`)."""
+    if not ctx.planar or moving == ctx.frame or said_rate(ctx, level, body, moving):
+        return []
+    sym, get, unit, kind = ((omega_sym, ctx.omega, "rate", "omega") if level == "v"
+                            else (alpha_sym, ctx.alpha, "rate2", "alpha"))
+    return [Derived(sym(body, moving), [sym(body), " − ", sym(moving)], ctx.value(get(body, moving), unit),
+                    kind=kind, sense=not ctx.symbolic,
+                    lead=composed(sym(body), sym(body, moving), sym(moving), body == ctx.frame))]
+
+
+def said_rate(ctx: Ctx, level: str, body: str, frame: str) -> bool:
+    """Whether the page has already worked out ω_{body rel frame} (α at accelerations), and
+    marks it worked out from here on: a relative rate is derived once."""
+    key = f"rate:{level}:{body}/{frame}"
+    said = key in ctx.worked or f"relative:{body}/{frame}" in ctx.worked
+    ctx.worked.add(key)
+    return said
 
 
 def _relabel(term: Term, sym: Sym) -> Term:

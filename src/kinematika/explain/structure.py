@@ -7,17 +7,19 @@ from typing import Optional
 
 from ..draw.names import body_numbers
 from ..model.model import PointPair
+from .asked import worked
 from .context import Ctx
 from .kinds import kind_key, on_fixed_line, rolls, welds
 from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Table, Value, body, msg, names, point
-from .order import Step
+from .order import Step, merge_vehicles       # the order lists the steps as the text does them
 
 
 def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     """The section on structure, before any motion: the bodies (numbered as the figures number
     them) with their points and shapes, the joints with their bodies and places, the degrees of
-    freedom by the rank of the joints' conditions, the drawing, and the order of solution
-    `steps`."""
+    freedom (counted by the rank of the joints' conditions, `dof_counts`, but said as the
+    mobility alone: the notes write no count of unknowns or independent conditions), the
+    drawing, and the order of solution `steps`."""
     model = ctx.model
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
@@ -43,7 +45,7 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
         return sec
     order = Section(msg("sec.order"), level=3)
     order.add(msg("order.assur" if _dyads(steps) else "order.blocks"))
-    for i, s in enumerate([s for s in steps if not all(ctx.fixed(b) for b in s.bodies)], 1):
+    for i, s in enumerate([s for s in merge_vehicles(ctx, steps) if not all(ctx.fixed(b) for b in s.bodies)], 1):
         order.add(order_item(i, s))
     sec.add(order)
     return sec
@@ -153,9 +155,21 @@ def _arrows_drawn(ctx: Ctx, options: dict) -> dict:
     drawn = [v for v in scene.vectors if v.kind == "velocity" and v.relative_to is None]
     moving = [v for v in drawn if v.magnitude > 1e-9 * max(ctx.inst.scale, 1e-12)]
     shown = moving or drawn
-    points = Names([Name(v.ref.split("@", 1)[0]) for v in shown])
+    points = Names([Name(_arrow_point(ctx, v.ref)) for v in shown])
     arrows = (min(len(moving), 2) if moving else 3) if drawn else 0
     return {"arrows": arrows, "points": points}
+
+
+def _arrow_point(ctx: Ctx, ref: str) -> str:
+    """The point an arrow of the mechanism's figure is the velocity of, by its label on the
+    page: B∈rocker, and B∈M for the drag of a composition at B in the moving body M (001's P
+    pair) — never "the velocities of B and B" where two bodies' points meet and move apart."""
+    ref, _, part = ref.partition(":")
+    point, _, body = ref.partition("@")
+    if part == "drag":                           # the drag: the moving frame's point there
+        body = next((q.moving for q in worked(ctx).compositions
+                     if str(q.target) == ref and q.moving), body)
+    return ctx.point_label(point, body) if body else point
 
 
 def _lines_drawn(ctx: Ctx, options: dict) -> tuple[bool, Optional[set]]:

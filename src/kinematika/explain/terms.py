@@ -9,7 +9,7 @@ normal terms ∥ PQ, relative terms ∥ the guide, Coriolis terms ⊥ the guide.
 from __future__ import annotations
 
 from ..algebra.vectors import scale
-from ..model.model import Joint
+from ..model.model import Joint, PointPair
 from .context import Ctx, alpha_sym, apart, omega_sym, segment
 from .document import Ann, Msg, Sym, Term, Value, body, joint, msg
 
@@ -76,13 +76,17 @@ def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: boo
                  [al, f" × {seg}"], unknown, "tangential")]
 
 
-def guide(j: Joint) -> Msg:
-    """The direction of joint `j`'s guide, named by the body that carries it ("guide of the
-    support"), never by the joint's id."""
+def guide(j: Joint) -> Msg | str:
+    """The direction of joint `j`'s guide, said once: by the line that gives it when the model
+    gives one (the slides' "∥ XX", the structure table's "∥ AB"), else named by the body that
+    carries it ("guide of the support") — never by the joint's id, and never the guide's name
+    twice ("∥ M gida solidoaren gida" where the guide body is itself called a guide)."""
+    if isinstance(j.along, PointPair):
+        return segment(j.along.start, j.along.end)
     return msg("dir.guide", holder=body(j.a), joint=joint(j.id))      # the joint: for checks, not written
 
 
-def slide_terms(ctx: Ctx, level: str, frame: str, moving: str, point: str, guide: Msg | Value,
+def slide_terms(ctx: Ctx, level: str, frame: str, moving: str, point: str, guide: Msg | Value | str,
                 tag: str = "", unknown: bool = True) -> list[Term]:
     """The motion of P∈moving relative to `frame` along a guide, v_P∈moving/frame (named with
     both bodies, so that its sense is the written one); with Coriolis for accelerations."""

@@ -45,7 +45,8 @@ NO_ARTICLE = re.compile(r"(?!)")
 PART_SUBSCRIPTS = {"sub.rel": {"en": "rel", "es": "rel", "ca": "REL", "eu": "erl"},
                    "sub.rel_to": {"en": "rel", "es": "rel", "ca": "resp.", "eu": "erl"},
                    "sub.drag": {"en": "drag", "es": "arr", "ca": "ar", "eu": "arr"},
-                   "sub.cor": {"en": "Cor", "es": "Cor", "ca": "Cor", "eu": "Cor"}}
+                   "sub.cor": {"en": "Cor", "es": "Cor", "ca": "Cor", "eu": "cor"}}
+# the Basque slides (4.2) write the composition a_B = a_arr + a_rel + a_cor: their word, lower case
 
 
 # a screw axis as a figure labels it, in each course's words (the Catalan notes' EIRL, eix

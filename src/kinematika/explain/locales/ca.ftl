@@ -38,16 +38,10 @@ structure-welded = { $bodies } { $bodies_n ->
        *[other] formen part del sòlid fix, no són sòlids mòbils
     }; tots els seus punts tenen velocitat i acceleració nul·les.
 structure-fixed_part = { $body } (unit rígidament a { $frame }: fix)
-structure-dof = Incògnites: { $n } components de velocitat { $moving ->
-        [one] d’un sòlid mòbil
-       *[other] de { $moving } sòlids mòbils
-    }. Els enllaços imposen { $rank } condicions independents, de manera que el mecanisme té { $dof ->
+structure-dof = El mecanisme té { $dof ->
         [one] un grau
        *[other] { $dof } graus
-    } de llibertat; les dades de moviment donen { $conditions ->
-        [one] una condició independent
-       *[other] { $conditions } condicions independents
-    }.
+    } de llibertat.
 shape-circle = circumferència
 shape-line = recta
 shape-disc = disc
@@ -206,6 +200,14 @@ driver-omega = Dada: { $sym } = { $value }.
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
 driver-whole = Dada: { $sym } = { $value }, { $heading }.
+driver-held = L’articulació { $point } no gira en aquest instant: { $b } no { COUNT($b) ->
+        [many] giren
+       *[one] gira
+    } respecte { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    }, { $sym } = 0.
+driver-held_accel = L’articulació { $point } no té acceleració angular relativa en aquest instant: { $sym } = 0.
 heading-right = cap a la dreta
 heading-left = cap a l’esquerra
 heading-up = cap amunt

@@ -41,16 +41,10 @@ structure-welded = { $bodies } { $bodies_n ->
        *[other] their
     } points have zero velocity and acceleration.
 structure-fixed_part = { $body } (welded to { $frame }: fixed)
-structure-dof = Unknowns: { $n } velocity components of { $moving ->
-        [one] one moving body
-       *[other] { $moving } moving bodies
-    }. The joints impose { $rank } independent conditions on them, so the mechanism has { $dof ->
+structure-dof = The mechanism has { $dof ->
         [one] one degree
        *[other] { $dof } degrees
-    } of freedom; the drivers give { $conditions ->
-        [one] one independent condition
-       *[other] { $conditions } independent conditions
-    }.
+    } of freedom.
 shape-circle = circle
 shape-line = line
 shape-disc = disc
@@ -173,6 +167,8 @@ driver-omega = Given: { $sym } = { $value }.
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
 driver-whole = Given: { $sym } = { $value }, { $heading }.
+driver-held = The pin { $point } does not turn at this instant: { $b } does not turn relative to { $a }, { $sym } = 0.
+driver-held_accel = The pin { $point } has no relative angular acceleration at this instant: { $sym } = 0.
 heading-right = to the right
 heading-left = to the left
 heading-up = upwards

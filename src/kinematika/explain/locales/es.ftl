@@ -38,16 +38,10 @@ structure-welded = { $bodies } { $bodies_n ->
        *[other] forman parte del sólido fijo, no son sólidos móviles
     }; todos sus puntos tienen velocidad y aceleración nulas.
 structure-fixed_part = { $body } (unido rígidamente a { $frame }: fijo)
-structure-dof = Incógnitas: { $n } componentes de velocidad de { $moving ->
-        [one] un sólido móvil
-       *[other] { $moving } sólidos móviles
-    }. Los pares imponen { $rank } condiciones independientes, así que el mecanismo tiene { $dof ->
+structure-dof = El mecanismo tiene { $dof ->
         [one] un grado
        *[other] { $dof } grados
-    } de libertad; los datos de movimiento dan { $conditions ->
-        [one] una condición independiente
-       *[other] { $conditions } condiciones independientes
-    }.
+    } de libertad.
 shape-circle = circunferencia
 shape-line = recta
 shape-disc = disco
@@ -170,6 +164,11 @@ driver-omega = Dato: { $sym } = { $value }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
 driver-whole = Dato: { $sym } = { $value }, { $heading }.
+driver-held = La articulación { $point } no gira en este instante: { $b } no { COUNT($b) ->
+        [many] giran
+       *[one] gira
+    } respecto de { $a }, { $sym } = 0.
+driver-held_accel = La articulación { $point } no tiene aceleración angular relativa en este instante: { $sym } = 0.
 heading-right = hacia la derecha
 heading-left = hacia la izquierda
 heading-up = hacia arriba

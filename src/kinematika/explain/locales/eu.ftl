@@ -38,15 +38,9 @@ structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n 
        *[other] haien
     } puntu guztien abiadura eta azelerazioa nuluak dira.
 structure-fixed_part = { $body } ({ $frame } solidoari zurrunki lotuta: finkoa)
-structure-dof = Ezezagunak: { $moving ->
-        [one] solido mugikor baten
-       *[other] { $moving } solido mugikorren
-    } { $n } abiadura-osagai. Loturek { $rank } baldintza independente ezartzen dituzte; beraz, mekanismoak { $dof ->
+structure-dof = Mekanismoak { $dof ->
         [one] askatasun-gradu bat du
        *[other] { $dof } askatasun-gradu ditu
-    }; eragileek { $conditions ->
-        [one] baldintza independente bat ematen dute
-       *[other] { $conditions } baldintza independente ematen dituzte
     }.
 shape-circle = zirkunferentzia
 shape-line = zuzena
@@ -142,7 +136,7 @@ pos-open = konfigurazio irekia: barrak ez dira gurutzatzen
 pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
-order-assur = Mekanismoa bere sarreretan (biradera eta irristagailu eragileak) eta diadetan deskonposatzen da; bakoitza jadanik ezagunak diren solidoetatik ebazten da:
+order-assur = Mekanismoa bere sarreretan (biradera eta irristagailu eragileak) eta bi elementuko taldeetan deskonposatzen da; bakoitza jadanik ezagunak diren solidoetatik ebazten da:
 order-blocks = Solidoak ordena honetan aurkitzen dira, bakoitza jadanik ezagunak diren solidoetatik:
 order-item = { $n }. { $kind }: { $bodies }, { $known } { $known_n ->
         [one] solidotik
@@ -154,10 +148,10 @@ order-item_group = { $n }. { $bodies }, { $known } { $known_n ->
     }.
 order-from = { $name }
 kind-input = sarrera (solido eragilea)
-kind-RRR = RRR diada
-kind-RRP = RRP diada
-kind-RPR = RPR diada
-kind-PRP = PRP diada
+kind-RRR = RRR loturak dituzten bi elementu
+kind-RRP = RRP loturak dituzten bi elementu
+kind-RPR = RPR loturak dituzten bi elementu
+kind-PRP = PRP loturak dituzten bi elementu
 kind-other = batera ebatzitako taldea
 kind-copy = modu berean
 step-title = { $n }. urratsa: { $kind } — { $bodies }
@@ -176,6 +170,8 @@ driver-omega = Datua: { $sym } = { $value }.
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
 driver-whole = Datua: { $sym } = { $value }, { $heading }.
+driver-held = { $point } giltzadurak ez du biraketa erlatiborik une honetan: { $b } solidoa ez da biratzen { $a } solidoarekiko, { $sym } = 0.
+driver-held_accel = { $point } giltzadurak ez du azelerazio angeluar erlatiborik une honetan: { $sym } = 0.
 heading-right = eskuinerantz
 heading-left = ezkerrerantz
 heading-up = gorantz
@@ -281,7 +277,7 @@ vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp 
 vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $radius } { $spin } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
-triad-closure = { $point } barra hirutarraren puntu gisa ezaguna denez, haren { $pin } giltzadura diada batean bezala ixten da:
+triad-closure = { $point } barra hirutarraren puntu gisa ezaguna denez, haren { $pin } giltzadura bi elementuko talde batean bezala ixten da:
 loop-intro = { $bodies } solidoek begizta bat ixten dute: hura osatzean, abiadura angeluar erlatiboen batura zero da, bakoitza bere loturaren ardatzaren norabidean (hiru ekuazio eskalar { $axis } ardatzen norabideko { $rate } abiadura ezezagunetarako):
 loop-solve = Hiru osagaiek abiadura ezezagunak ematen dituzte:
 loop-solve_alpha = Ardatz finkoetan deribatuz, azelerazio angeluar erlatiboen eta { $cross } terminoen batura zero da begiztan; hiru osagaiek { $rate } ezezagunak ematen dituzte:
