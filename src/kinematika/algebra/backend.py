@@ -11,6 +11,7 @@ from typing import Any, Callable
 
 from .. import limits
 from ..expressions import ExpressionError
+from ..memo import Memo
 from ..text import brief
 
 
@@ -68,6 +69,9 @@ def _real_sqrt(x: float) -> float:
 
 MAX_BITS = int(limits.EXACT_DIGITS * math.log2(10)) + 1   # integers of an exact number
 TRIGSIMP_OPS = 40   # radicands simplified by trigsimp up to this size (beyond, it takes seconds)
+_ROOTS = Memo(4096)  # a radicand -> its root: a drawn vector's |v| is asked by every figure
+                     # drawn of it (one a language) and by the captions that read the figure,
+                     # seconds of trigsimp each (a command's own memory: kinematika.memo)
 
 
 def _radians(x: Any) -> Any:
@@ -138,8 +142,12 @@ class Symbolic:
     def sqrt(self, x: Any) -> Any:
         """√x, with sin² + cos² = 1 and squares of the symbols recognised first (in the
         exact field, where trigsimp on a long radicand would take seconds)."""
+        x = self.sp.sympify(x)
+        found = _ROOTS.get(x)
+        return _ROOTS.put(x, self._sqrt(x)) if found is None else found
+
+    def _sqrt(self, x: Any) -> Any:
         sp = self.sp
-        x = sp.sympify(x)
         size = sp.count_ops(x) if x.has(sp.sin, sp.cos) else None
         if size is not None and size <= TRIGSIMP_OPS:
             from ..budget import within

@@ -50,6 +50,9 @@ class Instant:
     body_turn: Optional[Any] = None                  # a sweep's pose: (body, drawn direction) ->
                                                      # the direction now (`sweep.poses`), for
                                                      # the drivers' directions
+    _nums: tuple = field(default=(None, None), init=False, repr=False, compare=False)
+                                                     # `num`'s memo: (the probe it was made at,
+                                                     # formula -> float)
 
     @property
     def symbolic(self) -> bool:
@@ -110,6 +113,20 @@ class Instant:
             return float(x)
         if getattr(x, "is_Number", False):
             return float(x)
+        # A memo per probe: the explanations ask for the same few formulas thousands of times,
+        # each an exact evaluation at two precisions. Probe values are only ever added (a
+        # stand-in's, a named quantity's), never changed, and a formula with a symbol not yet
+        # probed has no value, so a value once found holds while the probe is the same dict.
+        at, memo = self._nums
+        if at is not self.probe:
+            memo = {}
+            self._nums = (self.probe, memo)
+        found = memo.get(x)
+        if found is None:
+            found = memo[x] = self._num_at_probe(x)
+        return found
+
+    def _num_at_probe(self, x: Any) -> float:
         from ..algebra.evaluate import complex_value
 
         z = complex_value(x, self.probe)      # each shared subformula once (long exact numbers)
