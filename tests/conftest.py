@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import sys
 from pathlib import Path
 from types import ModuleType
 
@@ -17,6 +18,15 @@ import pytest
 from hypothesis import HealthCheck, settings
 
 DEEP = os.environ.get("KINEMATIKA_DEEP", "") not in ("", "0")
+
+# Bytecode is written during the run, whatever the environment says (PYTHONDONTWRITEBYTECODE=1
+# here and maybe in CI): a fresh clone has none, and without writing it every xdist worker
+# and every `kinematika` process a test starts compiles the package again, and pytest
+# rewrites every test module's asserts in each worker. Written once (into the clone's ignored
+# __pycache__ directories, atomically), then read. The workers and child processes inherit
+# the environment without the variable.
+sys.dont_write_bytecode = False
+os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
 
 deep_only = pytest.mark.skipif(not DEEP, reason="seconds of work: in a deep run (KINEMATIKA_DEEP=1)")
 """A test whose work repeats what a quicker one shows, kept for the deep run."""
