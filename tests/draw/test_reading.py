@@ -68,3 +68,22 @@ def test_belt_wrapped_round_both_pulleys():
     on_rims = [min(abs(np.linalg.norm(p - c1) - r1), abs(np.linalg.norm(p - c2) - r2)) for p in xy]
     straight = sum(d > 1e-6 for d in on_rims)
     assert straight == pytest.approx(0, abs=4)   # every vertex on a rim: runs are tangent lines between them
+
+
+@pytest.mark.parametrize("name,radius", [("seed_c5_1_4_epicyclic", 3 * 0.05), ("seed_c5_e2_gear_change", 3 * 0.05)])
+def test_a_rings_name_sits_on_its_rim(name, radius):
+    """A ring (an internal gear's outline) is named at its rim, outside its circle: the fourth
+    audit found C5-1.4's "corona" inside satellite 3, a wheel the ring holds. The label's box
+    (data coordinates) lies wholly outside the ring's circle (radius 3r, r = 0.05 at draw_at,
+    centre O at the origin) and within the band's width and a half of it."""
+    from matplotlib.text import Text
+
+    fig = draw(ROOT / f"{name}.yaml")
+    ax, renderer = axes(fig), fig.canvas.get_renderer()
+    (text,) = [t for t in ax.texts if t.get_gid() == "label:body:ring"]
+    if hasattr(text, "update_positions"):             # an annotation (a label with a leader)
+        text.update_positions(renderer)
+    box = Text.get_window_extent(text, renderer)
+    (x0, y0), (x1, y1) = ax.transData.inverted().transform([[box.x0, box.y0], [box.x1, box.y1]])
+    nearest = np.hypot(np.clip(0.0, x0, x1), np.clip(0.0, y0, y1))     # the box's point nearest O
+    assert radius < nearest < 1.5 * radius, (x0, y0, x1, y1)

@@ -64,12 +64,61 @@ def test_no_markdown_mentions_colours(name, lang, monkeypatch):
     ("seed_c5_1_2_bar_on_inclined_wheels", "ca", "a la normal a J a la recta", "a la normal a la recta del *terra* per J"),
     # a body's name stripped of its article keeps no stray article of its own
     ("seed_c5_1_5_pulley_block", "ca", "i el *sostre*", "a partir de la *politja 1* i del *sostre*"),
+    # the fourth audit's words: the drag's terms are those of the equation that found the point
+    ("seed_001_rolling_pair", "eu", "puntu hau aurkitu zuen goiko urratseko lehen terminoak",
+     "goiko urratsean puntu hau aurkitzeko idatzitako ekuazioaren lehen terminoak dira"),
+    # a body whose two points run on one line translates along it (points move, the body translates)
+    ("seed_c5_e4_upper_wheel", "eu", "zuzena ibiltzen dute",
+     "zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe"),
+    ("seed_c5_e6_bicycle", "eu", "irristatzen da eta ez da biratzen", "solidoa zuzen horretan zehar traslatzen da"),
+    ("seed_c5_e4_upper_wheel", "ca", "llisca al llarg d’ella", "el sòlid es trasllada al llarg d’aquesta recta, sense girar"),
+    ("seed_c5_e4_upper_wheel", "es", "desliza a lo largo de ella y no gira", "el sólido se traslada a lo largo de ella, sin girar"),
+    # the symbol I is named as a symbol: a sentence opening "I amb" reads as the word "and"
+    ("seed_c5_1_4_epicyclic", "ca", "I amb el nom d’un sòlid", "El símbol I, amb el nom d’un sòlid (I_portador), designa el CIR"),
+    ("seed_c5_1_4_epicyclic", "es", "I con el nombre", "El símbolo I, con el nombre de un sólido"),
+    ("seed_c5_1_4_epicyclic", "en", "\nI with a body's name", "The symbol I with a body's name"),
+    # the notes' own word for the planets (seed 002: "el CIR de cada rodeta")
+    ("seed_c5_1_4_epicyclic", "ca", "satèl·lit", "la *rodeta 1*"),
+    ("seed_c5_e2_gear_change", "ca", "satèl·lit", "amb les rodetes a sobre i a sota del centre"),
+    # a hub is not "buje" (Spanish) in Basque: the wheel's axle
+    ("seed_c5_e6_bicycle", "eu", "bujetik", "atzeko gurpilaren ardatzetik pedalen ardatzerainoko"),
 ])
 def test_the_notes_grammar(name, lang, wrong, right):
     """Catalan, Spanish and Basque as the notes write them (issue 30's audit, its grammar points)."""
     _, doc = explained(name)
     text = render_of(doc, lang, "md", drawings=False)
     assert wrong not in text and right in text
+
+# how a page may speak of its source: what it takes, not what became of the notes' figure
+HISTORY = re.compile(r"(?i)galdu da|s[’']ha perdut|se ha perdido|se perdió|is lost|\blost\b")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_no_page_tells_the_history_of_the_notes(lang):
+    """The Data's statements say which geometry the page takes ("Aquí es pren aquesta
+    geometria: …"), never that the notes' figure was lost (the fourth audit: a student holding
+    the notes finds it odd). Every notes' example, read from its model."""
+    from kinematika.api import as_model
+
+    from .helpers import EXAMPLES
+
+    said = {name: " ".join(as_model(EXAMPLES / f"{name}.yaml").wording.data.get(lang, []))
+            for name in WORKED}
+    assert {name: HISTORY.search(text).group(0) for name, text in said.items() if HISTORY.search(text)} == {}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_centres_symbol_is_named_as_a_symbol(lang):
+    """The CIR section's first sentence names I as a symbol ("El símbol I, amb …", "I ikurrak"):
+    a sentence that opens with a bare "I" reads as the Catalan "and" or the English "I"."""
+    from kinematika.explain.catalogue import catalogue
+
+    opening = {"ca": "El símbol I,", "es": "El símbolo I,", "en": "The symbol I ", "eu": "I ikurrak,"}[lang]
+    cat = catalogue(lang)
+    for key in ("centres.intro", "centres.intro_named"):
+        text = cat.format(key, {"example": "I_13", "pair": "I_a", "body": "a", "frame": "b"})
+        assert text.startswith(opening), (lang, key, text)
+
 
 def test_count_reads_plural_names():
     from kinematika.explain.catalogue import count

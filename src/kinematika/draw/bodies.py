@@ -82,15 +82,17 @@ def _body(ctx: Context, body: BodyView) -> None:
         ctx.avoid(*pts)
         anchor = (pts[0] + pts[1]) / 2
         side = _beside(ctx, pts[0], pts[1])
+    prefer = None
     for shape in body.shapes:
         _moving_shape(ctx, body, shape)
         if anchor is None and shape.kind == "circle":
-            anchor = shape_anchor(shape)
+            anchor = shape_anchor(shape, ring_band(ctx, shape))
+            prefer = UP_LEFT if shape.ring else None
     if anchor is None and pts:
         anchor = pts[0]
     if anchor is not None:
         name = plain(noun(body.label or body.name)) + _tag(ctx, body)
-        ctx.label(anchor, name, body.colour, 5, f"body:{body.name}", body=body.name, side=side,
+        ctx.label(anchor, name, body.colour, 5, f"body:{body.name}", body=body.name, side=side, prefer=prefer,
                   group=f"body:{body.name}", style="italic", radius=BAR_WIDTH / 2 if side is not None else 0.0)
 
 
@@ -247,7 +249,7 @@ def _line_span(ctx: Context, body: BodyView, s: ShapeView) -> Optional[tuple[np.
 def _ring_gear(ctx: Context, body: BodyView, s: ShapeView) -> None:
     """A ring (another circle rolls inside it): a band outside its circle, with ticks so
     that its turning shows."""
-    band, centre = min(HATCH_BAND * 1.5 * ctx.size, 0.3 * s.radius), s.centre()
+    band, centre = ring_band(ctx, s), s.centre()
     name = body.name
     ctx.add("ring", [centre], r=s.radius + band, band=band, colour="none", fill=body.colour,
             alpha=0.45, width=0, zorder=1, moves_with=name)
@@ -261,10 +263,22 @@ def _ring_gear(ctx: Context, body: BodyView, s: ShapeView) -> None:
     ctx.avoid(*_ring(centre, s.radius + band))
 
 
-def shape_anchor(s: ShapeView) -> np.ndarray:
-    """Where a circle-shaped body's name goes: up-left, on the rim of a ring, inside a wheel."""
-    d = np.array([-0.7071, 0.7071])
-    return s.centre() + (1.0 if s.ring else 0.6) * s.radius * d
+UP_LEFT = np.array([-0.7071, 0.7071])
+
+
+def ring_band(ctx: Context, s: ShapeView) -> float:
+    """The width of the band drawn outside a ring's circle (`_ring_gear`): the frame's hatch
+    band and a half, at most 0.3 of the radius; 0 for a wheel."""
+    return min(HATCH_BAND * 1.5 * ctx.size, 0.3 * s.radius) if s.ring else 0.0
+
+
+def shape_anchor(s: ShapeView, band: float = 0.0) -> np.ndarray:
+    """Where a circle-shaped body's name goes, up-left: inside a wheel (0.6 of its radius), and
+    for a ring on the outer edge of its band (`band` beyond its circle), its label pushed outwards
+    (`_body`'s `prefer`). A ring holds other wheels: a label anchored on its circle, between the
+    band's two edges the placer keeps clear of, is pushed inwards onto a wheel it holds (C5-1.4's
+    corona read inside satellite 3); outside the band nothing else is drawn."""
+    return s.centre() + (s.radius + band if s.ring else 0.6 * s.radius) * UP_LEFT
 
 
 def _fixed_body(ctx: Context, body: BodyView) -> None:

@@ -5,10 +5,10 @@ figures say, and nothing else reads (the answers keep the model's own names).
       ca:
         title: Transmissió epicicloidal
         bodies: {carrier: el portador, sun: la roda central, ring: la corona}
-        points: {A1: centre del primer satèl·lit}
+        points: {A1: centre de la primera rodeta}
         joints: {hub: boixa}               # a joint's id, as the text names it
         parameters: {r: radi de la roda central}   # what a parameter is (the Data section)
-        data: ["La figura dels apunts s’ha perdut: …"]   # statements of the Data section
+        data: ["Aquí es pren aquesta geometria: …"]   # statements of the Data section
         notes: ["Els apunts donen …; el correcte és … perquè …"]
     notation:                             # how a quantity is written (sympy's spelling)
       w0: omega_0                         # a parameter: ω₀

@@ -318,14 +318,14 @@ sense-cw = horari
 sec-rates_summary = Velocitats i acceleracions angulars
 sec-rates_summary_v = Velocitats angulars
 sec-centres = Centres instantanis de rotació (CIR)
-centres-intro = I amb els números de dos sòlids ({ $example }: sòlids 1 i 3) és el CIR del seu moviment relatiu: el punt on la velocitat relativa és nul·la.
-centres-intro_named = I amb el nom d’un sòlid ({ $pair }) és el CIR { ELISION($body) ->
+centres-intro = El símbol I, amb els números de dos sòlids ({ $example }: sòlids 1 i 3), designa el CIR del seu moviment relatiu: el punt on la velocitat relativa és nul·la.
+centres-intro_named = El símbol I, amb el nom d’un sòlid ({ $pair }), designa el CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     } respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, i I amb dos noms units per «resp.» (respecte de), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
+    }, i, amb dos noms units per «resp.» (respecte de), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
 centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),
@@ -460,7 +460,7 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
 composition-slide = { $point } llisca al llarg de la seva guia: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
 composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat més amunt: { $sym } = { $seen } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat en els passos anteriors.
-composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes del pas anterior que ha trobat aquest punt.
+composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació que ha donat aquest punt al pas anterior.
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)
@@ -659,7 +659,7 @@ centre-check = Comprovació amb les velocitats trobades: a la perpendicular a { 
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
-how-glides = ({ $p } i { $q } recorren a cada instant la recta { $line }: llisca al llarg d’ella i no gira)
+how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
 centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte

@@ -201,8 +201,8 @@ sense-cw = clockwise
 sec-rates_summary = Angular velocities and accelerations
 sec-rates_summary_v = Angular velocities
 sec-centres = Instant centres
-centres-intro = I with the numbers of two bodies ({ $example }: bodies 1 and 3) is the instant centre of their relative motion: the point where the relative velocity is zero.
-centres-intro_named = I with a body's name ({ $pair }) is the instant centre of { $body } relative to { $frame }, and I with two names joined by “rel” that of the first body relative to the second: the point where the relative velocity is zero.
+centres-intro = The symbol I with the numbers of two bodies ({ $example }: bodies 1 and 3) names the instant centre of their relative motion: the point where the relative velocity is zero.
+centres-intro_named = The symbol I with a body's name ({ $pair }) names the instant centre of { $body } relative to { $frame }, and with two names joined by “rel” that of the first body relative to the second: the point where the relative velocity is zero.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = the pin { $joint },
 centre-joint-rolling = the contact point { $joint } (rolling without slipping),
@@ -262,7 +262,7 @@ centre-proportional-outside = by Aronhold–Kennedy it lies on the line through 
 composition-slide = { $point } slides along its guide: its relative motion is along the guide, { $sym } = { $value }.
 composition-slide_seen = { $point } slides along its guide; { $body } does not turn relative to { $frame }, so all its points have the relative motion found above: { $sym } = { $seen } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in the steps above.
-composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the step above that found this point.
+composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation that found this point in the step above.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
@@ -380,7 +380,7 @@ centre-check = Check with the velocities found above: on the perpendicular to { 
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)
-how-glides = ({ $p } and { $q } both run on the line { $line } at every instant: it slides along it and does not turn)
+how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
 centre-site_i = The instant centre { $centre } ≡ { $point } of { $body } relative to { $frame }, placed above, has no velocity: { $sym } = 0.
 sec-contact = Contact points

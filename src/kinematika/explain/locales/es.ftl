@@ -231,8 +231,8 @@ sense-cw = horario
 sec-rates_summary = Velocidades y aceleraciones angulares
 sec-rates_summary_v = Velocidades angulares
 sec-centres = Centros instantáneos de rotación (CIR)
-centres-intro = I con los números de dos sólidos ({ $example }: sólidos 1 y 3) es el CIR de su movimiento relativo: el punto donde la velocidad relativa es nula.
-centres-intro_named = I con el nombre de un sólido ({ $pair }) es el CIR de { $body } respecto de { $frame }, e I con dos nombres unidos por «rel», el del primero respecto del segundo: el punto donde la velocidad relativa es nula.
+centres-intro = El símbolo I, con los números de dos sólidos ({ $example }: sólidos 1 y 3), designa el CIR de su movimiento relativo: el punto donde la velocidad relativa es nula.
+centres-intro_named = El símbolo I, con el nombre de un sólido ({ $pair }), designa el CIR de { $body } respecto de { $frame }, y, con dos nombres unidos por «rel», el del primero respecto del segundo: el punto donde la velocidad relativa es nula.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = el eje de la articulación { $joint },
 centre-joint-rolling = el punto de contacto { $joint } (rodadura sin deslizamiento),
@@ -295,7 +295,7 @@ centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa 
 composition-slide = { $point } desliza a lo largo de su guía: su movimiento relativo sigue la guía, { $sym } = { $value }.
 composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado arriba: { $sym } = { $seen } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en los pasos anteriores.
-composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos del paso anterior que halló este punto.
+composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación con la que se halló este punto en el paso anterior.
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)
@@ -419,7 +419,7 @@ centre-check = Comprobación con las velocidades halladas: en la perpendicular a
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)
-how-glides = ({ $p } y { $q } recorren en todo instante la recta { $line }: desliza a lo largo de ella y no gira)
+how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
 centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto

@@ -265,7 +265,7 @@ centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetat
 composition-slide = { $point } puntua bere gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
 composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek goian aurkitutako mugimendu erlatiboa dute: { $sym } = { $seen } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, goiko urratsetan aurkitutako puntu horren mugimendua.
-composition-drag_terms = { $sym } = { $terms } = { $value }: puntu hau aurkitu zuen goiko urratseko lehen terminoak.
+composition-drag_terms = { $sym } = { $terms } = { $value }: goiko urratsean puntu hau aurkitzeko idatzitako ekuazioaren lehen terminoak dira.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
@@ -383,7 +383,7 @@ centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiad
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiadura bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
-how-glides = ({ $p } eta { $q } puntuek { $line } zuzena ibiltzen dute une oro: haren luzeran irristatzen da eta ez da biratzen)
+how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
 centre-site_i = { $body } solidoaren { $centre } ≡ { $point } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
