@@ -149,6 +149,7 @@ class Term:
     how: list = field(default_factory=list)     # inline items (str, Sym) e.g. [ω, " × AB"]
     unknown: bool = False                        # solved in this step
     kind: str = ""                               # point, rotation, normal, tangential, slide, coriolis, contact
+    spelt: bool = False                          # written by its formula (α × JC), not by its symbol
 
 
 @dataclass

@@ -544,10 +544,16 @@ class Renderer(ABC):
             text += " " + self.message(d.remark)
         return text
 
+    def written(self, t) -> str:
+        """A term as an equation writes it: its symbol (a_QS^t), or its formula where the
+        term is spelt out (a wheel's centre alone on a straight path: a_H = α × GH)."""
+        return self.inline(t.how) if t.spelt and t.how else self.sym(t.sym)
+
     def term_line(self, t) -> str:
-        """`v_BA = ω × AB = (…) m/s` for the list of an equation's terms."""
-        parts = [self.sym(t.sym)]
-        if t.how and self.inline(t.how) != parts[0]:
+        """`v_BA = ω × AB = (…) m/s` for the list of an equation's terms (`α × GH = (…)` for
+        a term spelt out)."""
+        parts = [self.written(t)]
+        if t.how and not t.spelt and self.inline(t.how) != parts[0]:
             parts.append(self.inline(t.how))
         parts.append(self.value(Value(t.value, _unit(t.sym))))
         return " = ".join(parts)
