@@ -87,13 +87,13 @@ def test_the_centre_on_a_straight_path_is_named_where_it_is_found():
     assert not [t for e in eqs for side in e.sides for t in side if t.sym.sub == "SJ"]
 
 
-def test_a_wheel_centre_alone_keeps_its_tangential_term():
-    """C5-E.4: an equation that finds the centre itself (a_A1 = a_A1J4^t) is not renamed
-    (no a_A1 = a_A1)."""
+def test_a_wheel_centre_alone_is_never_written_as_itself():
+    """C5-E.4: an equation that finds the centre itself never reads a_A1 = a_A1: the term
+    named a_A1 is written by its formula, α × JA1 (sixth round: `Term.spelt`)."""
     _, doc = explained("seed_c5_e4_upper_wheel")
     for e in doc.equations():
         assert not any(t.sym.base == e.target.sym.base and t.sym.sub == e.target.sym.sub and not t.sym.sup
-                       for side in e.sides for t in side), e.target.sym
+                       and not t.spelt for side in e.sides for t in side), e.target.sym
 
 
 # -- C5-1.4: the planet's centre first, then ω = v / distance ------------------------------------------------------

@@ -162,6 +162,7 @@ v-intro = Each vector equation is annotated as in the notes: M magnitude known, 
 a-intro = With the velocities known, every normal term and every Coriolis term is known; the tangential and relative terms are the unknowns.
 a-intro_relative = With the velocities known, every normal term is known; the tangential and relative terms are the unknowns.
 a-intro_normal = With the velocities known, the normal terms are known; the tangential terms are the unknowns.
+eq-shared_rate = The terms { $terms } share one unknown, { $rate }: their magnitudes are { $mags }.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
 driver-velocity = Given: { $sym } = { $value }.

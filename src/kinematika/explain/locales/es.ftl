@@ -159,6 +159,7 @@ v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conoc
 a-intro = Conocidas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
 a-intro_relative = Conocidas las velocidades, todos los términos normales son conocidos; las incógnitas son los términos tangenciales y relativos.
 a-intro_normal = Conocidas las velocidades, los términos normales son conocidos; las incógnitas son los términos tangenciales.
+eq-shared_rate = Los términos { $terms } tienen una sola incógnita, { $rate }: sus módulos son { $mags }.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
 driver-velocity = Dato: { $sym } = { $value }.

@@ -165,6 +165,7 @@ v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua eza
 a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
+eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
 driver-velocity = Datua: { $sym } = { $value }.

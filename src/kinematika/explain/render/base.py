@@ -523,6 +523,8 @@ class Renderer(ABC):
     def ann(self, a: Ann) -> str:
         """An M/D/? annotation of a term (seed 001): M, D or ?, a magnitude's formula (ω·AB), or
         the direction ⊥ or ∥ a line."""
+        if a.code == "rate":            # an unknown rate times its arm (α·JS), shared by terms
+            return self.inline(a.ref)
         if a.code in ("M", "D", "?"):
             if a.code == "M" and a.ref:
                 return self.inline(a.ref)
