@@ -74,7 +74,7 @@ def _build(sol: Solution, length_unit: str) -> Document:
         summary.add(values_table(ctx, accel))
         summary.blocks += relative_rates(ctx)
         doc.sections.append(summary)
-        contacts = contact_section(ctx)
+        contacts = contact_section(ctx, _written_points(levels, wanted))
         if contacts is not None:
             doc.sections.append(contacts)
         checked = checks_section(ctx)
@@ -263,6 +263,19 @@ def coriolis_by_point(ctx: Ctx, sections: list[Section]) -> None:
         if len(pairs) == 1:
             for t, _ in terms:
                 t.sym = Sym("a", p, sub_key="sub.cor")
+
+
+def _written_points(levels: list[Section], wanted: tuple) -> dict[tuple[str, str], int]:
+    """(level, point label) -> the number of the step whose equation wrote that point's
+    velocity or acceleration (its left side), for later sections to refer to."""
+    out: dict[tuple[str, str], int] = {}
+    for sec, level in zip(levels, wanted):
+        steps = [b for b in sec.blocks if isinstance(b, Section)]
+        for n, step in enumerate(steps, 1):
+            for eq in _equations(step):
+                if not eq.target.sym.sup and eq.target.sym.base == level:
+                    out.setdefault((level, eq.target.sym.sub), n)
+    return out
 
 
 def _equations(sec: Section) -> list[Equation]:

@@ -678,6 +678,7 @@ contact-intro = Al contacte { $point } coincideixen tres punts amb cinemàtiques
        *[other] de { $b }
     } i el punt geomètric de contacte { $geom }, que no pertany a cap dels dos.
 contact-above = { $sym } = { $value }, obtinguda més amunt per a l’acceleració del contacte.
+contact-written = { $sym } = { $value }, escrita al pas { $step }.
 contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }

@@ -390,6 +390,7 @@ geom-bar = { $geom }, the geometric contact point, belongs to neither body: it s
 geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.
+contact-written = { $sym } = { $value }, written in step { $step }.
 contact-fixed = { $sym }: { $point } as a point of { $body }, which is fixed, does not move: { $sym } = 0.
 fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point{ $format ->
         [md] {""}

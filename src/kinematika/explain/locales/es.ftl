@@ -429,6 +429,7 @@ geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno d
 geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
+contact-written = { $sym } = { $value }, escrita en el paso { $step }.
 contact-fixed = { $sym }: { $point } como punto de { $body }, que es fijo, no se mueve: { $sym } = 0.
 fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto{ $format ->
         [md] {""}

@@ -393,6 +393,7 @@ geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena er
 geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
+contact-written = { $sym } = { $value }, { $step }. urratsean idatzia.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen, solidoa finkoa baita: { $sym } = 0.
 fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
         [md] {""}
