@@ -125,14 +125,14 @@ def _build(sol: Solution, length_unit: str) -> Document:
 
 
 def ground_part(ctx: Ctx) -> bool:
-    """Whether the model names its ground after a part fixed to it, which carries a shape (the
-    fixed pulley of C5-1.6, a track), or welds such parts to it (the strand C5-1.5 ties to the
-    ceiling, C5-1.2's inclined planes): the text names the part where
-    it acts (a contact, the structure's table) and says the ground where it is the reference of
-    a motion, as the notes do ("el CIR del braç respecte al terra és el centre O de la politja
-    fixa")."""
-    return bool(ctx.planar and any(ctx.inst.shapes.get(b) for b in ctx.model.bodies
-                                   if b == ctx.frame or ctx.fixed(b)))
+    """Whether the model names its ground after a part of it that carries a shape (the fixed
+    pulley of C5-1.6, a track): the text names the part where it acts (a contact, the
+    structure's table) and says the ground where it is the reference of a motion, as the notes
+    do ("el CIR del braç respecte al terra és el centre O de la politja fixa"). A ground with
+    no shape of its own keeps its one name on the page, whatever is welded to it (sixth round:
+    C5-1.5's ceiling, *sabaia*, was also "*lurra* solidoarekiko" beside ω_blokea = ω_sabaia;
+    its tied strand is a body named on its own, *1. kable-zatia*)."""
+    return bool(ctx.planar and ctx.inst.shapes.get(ctx.frame))
 
 
 def joint_places(ctx: Ctx) -> dict:
