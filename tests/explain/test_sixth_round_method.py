@@ -122,3 +122,22 @@ def test_a_mechanism_with_as_many_data_as_freedoms_says_the_mobility_alone():
     _, doc = explained("seed_001_rolling_pair")
     said = [b for b in _section(doc, "sec.structure").blocks if isinstance(b, Msg) and b.key.startswith("structure.dof")]
     assert [b.key for b in said] == ["structure.dof"]
+
+
+# -- C5-2.1: the notes' precession ψ̇ tied to the chassis' rate --------------------------------------------------------
+def test_the_precession_is_tied_to_the_chassis_rate():
+    """C5-2.1 by hand: the chassis turns about I = (0; L) (the rear axle's line meets the
+    normal to v_F at F = (L; 0), v_F at 45°); |v_F| = v₀, IF = √2·L, so ψ̇ = v₀/(√2·L) =
+    √2·v₀/(2·L). The notes call the chassis' rate the precession ψ̇: the page finds it as
+    "ψ̇ = ω_txasisa = |v_FI| / IF = √2·v₀/(2·L)" and writes ψ̇ after; a datum's rate (the
+    fan's ω₁) is not written twice."""
+    sol, doc = explained("seed_c5_2_1_tricycle")
+    w = next(d for d in doc.derived() if d.body == "chassis" and d.kind == "omega").value.value
+    v0, big_l = _sym(sympy.sympify(w), "v0"), _sym(sympy.sympify(w), "L")
+    assert sympy.simplify(w - sympy.sqrt(2) * v0 / (2 * big_l)) == 0
+    for lang, name in (("eu", "txasisa"), ("ca", "xassís")):
+        page = rendered("seed_c5_2_1_tricycle", lang, drawings=False)
+        assert re.search(rf"^ψ̇ = ω_{name} = \|v_\{{?F-?I\}}?\| / I_{name} F = √2·v₀/\(2·L\)", page, re.M), lang
+        assert f"ω_{name} ×" not in page
+    fan = rendered("fan_absolute", "eu", drawings=False)
+    assert "ω_1 = ω_" not in fan
