@@ -20,7 +20,7 @@ from .document import Msg, Sym, msg, names
 def _whole(ctx: Ctx) -> list:
     """The velocity drivers that give a point's whole velocity (two conditions in the plane)."""
     return [d for d in ctx.model.drivers if d.kind == "velocity" and d.along is None
-            and isinstance(d.value, tuple)]
+            and isinstance(d.value, tuple) and d.point is not None]
 
 
 def _moved(ctx: Ctx, index: int) -> list[str]:
@@ -30,9 +30,11 @@ def _moved(ctx: Ctx, index: int) -> list[str]:
     s = ctx.sol.solver
     a = np.array(s.a_num, dtype=float)
     mine = [i for i, w in enumerate(s.wheres) if w == f"drivers[{index}]"]
-    d = ctx.model.drivers[index]
-    along = np.array([float(ctx.sol.inst.num(c)) for c in ctx.vel(d.point.body, d.point.point)])
-    if len(mine) != 2 or not np.linalg.norm(along):
+    at = ctx.model.drivers[index].point
+    if at is None or len(mine) != 2:
+        return []
+    along = np.array([float(ctx.sol.inst.num(c)) for c in ctx.vel(at.body, at.point)])
+    if not np.linalg.norm(along):
         return []
     magnitude = along[0] * a[mine[0]] + along[1] * a[mine[1]]
     rows = np.vstack([a[[i for i in range(len(a)) if i not in mine]], magnitude])
@@ -58,7 +60,7 @@ def dof_sentence(ctx: Ctx, counts: dict) -> Optional[Msg]:
         return None
     d = whole[0]
     bodies = _moved(ctx, drivers.index(d))
-    if not bodies:
+    if not bodies or d.point is None:
         return None
     return msg("structure.dof_whole", dof=counts["dof"], data=len(drivers),
                sym=Sym("v", ctx.point_label(d.point.point, d.point.body)), bodies=names(bodies, "body"))
