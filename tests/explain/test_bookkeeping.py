@@ -25,7 +25,8 @@ from .test_equations import _direction
 
 # one example of each kind, and the notes' upper wheel (a translating chassis whose points
 # move as one a sentence names): every example, every seed in a deep run
-KEEP = KINDS | {"seed_c5_e4_upper_wheel"}
+# and C5-1.3 (one rate, α of the support, in two terms of one equation)
+KEEP = KINDS | {"seed_c5_e4_upper_wheel", "seed_c5_1_3_bar_in_sleeve"}
 
 
 def direction(sol, ctx: Ctx, ref, eq):
@@ -62,7 +63,9 @@ def level_equations(doc) -> list[tuple[str, Equation]]:
 
 
 def marks(t) -> int:
-    return sum(a.code == "?" for a in (t.mag, t.dir))
+    """The unknowns a term shows: each ?, and a magnitude written as an unknown rate times
+    its arm (α·JS, a rate several terms share: counted once by `quantity`)."""
+    return sum(a.code in ("?", "rate") for a in (t.mag, t.dir))
 
 
 def unknown_columns(sol, ctx, eq: Equation, dim: int) -> list[np.ndarray]:
@@ -152,6 +155,47 @@ def test_every_solved_equation_marks_what_it_solves(name):
         if dim == 2 and len(eq.sides) <= 2 and cols:
             rank = np.linalg.matrix_rank(np.column_stack(cols), tol=1e-9)
             assert rank == counted, (name, eq.target.sym, f"{counted} unknowns marked, {rank} independent")
+def shown(eq) -> int:
+    """The unknowns a reader counts on the equation: every ? (a rate marked ? on two terms
+    reads as two), and each rate written in magnitudes (α·JS, α·SQ) once; the left side of
+    an equation of several sides is what they equal, not an unknown of its own."""
+    terms = [t for side in eq.sides for t in side] + ([eq.target] if len(eq.sides) == 1 else [])
+    rates = {repr(t.mag.ref[0]) for t in terms if t.mag.code == "rate"}
+    return sum(a.code == "?" for t in terms for a in (t.mag, t.dir)) + len(rates)
+
+
+@pytest.mark.parametrize("name", sampled(ALL, KEEP))
+def test_the_unknowns_shown_are_those_solved(name):
+    """The sentence "a planar equation solves two unknowns" holds on the page: the unknowns a
+    reader counts (each ?, each shared rate once) are the equation's distinct unknowns. C5-1.3
+    marked a_S = α × JS and a_QS^t = α × SQ both ?, three ? for two unknowns (α and |a_rel|):
+    the two terms now write their magnitudes α_euskarria·JS and α_euskarria·SQ."""
+    sol, doc = explained(name)
+    ctx = context(sol)
+    for _, eq in level_equations(doc):
+        if eq.level not in ("v", "a"):
+            continue
+        distinct, _ = unknowns(sol, ctx, eq, sol.space.dim)
+        if any(isinstance(k[0], tuple) for k in distinct):
+            continue        # a triad's two rotations about one line: one unknown, its sentence says so
+        assert shown(eq) == sum(distinct.values()), (name, eq.target.sym, shown(eq), distinct)
+
+
+def test_the_support_rate_is_one_unknown_in_c5_1_3():
+    """C5-1.3, by hand: a_Q = a_S + a_QS^n + a_QS^t + a_rel + a_cor with a_S = α·JS (S on a
+    straight path, J the contact) and a_QS^t = α·SQ: one rate α, so the equation shows two
+    unknowns — α (in both magnitudes) and |a_rel| (its ?)."""
+    sol, doc = explained("seed_c5_1_3_bar_in_sleeve")
+    eq = next(e for _, e in level_equations(doc) if e.level == "a"
+              and any(t.sym.sub == "S" and t.sym.base == "a" for side in e.sides for t in side))
+    terms = {(t.sym.sub, t.sym.sup): t for side in eq.sides for t in side}
+    a_s, a_qs = terms[("S", "")], terms[("QS", "t")]
+    assert a_s.mag.code == a_qs.mag.code == "rate"
+    assert a_s.mag.ref[0] == a_qs.mag.ref[0] and a_s.mag.ref[0].base == "α"
+    assert a_s.mag.ref[1] == "·JS" and a_qs.mag.ref[1] == "·SQ"
+    assert shown(eq) == 2
+
+
 @pytest.mark.parametrize("name", sampled(ALL, KEEP))
 def test_a_term_found_before_is_known(name):
     """Within the velocities (or the accelerations), a term whose symbol and value were

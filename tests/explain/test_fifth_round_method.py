@@ -58,16 +58,18 @@ def test_the_belt_run_has_no_rate():
 # -- C5-1.6, C5-1.5: the ground named after a part is the ground as a reference -----------------------------------
 def test_the_reference_is_the_ground():
     """The notes: "Els CIR del braç respecte al terra és el centre O de la politja fixa". Where
-    the model names its ground after a part (the fixed pulley, the ceiling with the tied
-    strand), an instant centre relative to it is said relative to the ground; the part keeps
-    its name where it acts (the belt rolls on the fixed pulley)."""
+    the model names its ground after a part that carries a shape (the fixed pulley), an
+    instant centre relative to it is said relative to the ground; the part keeps its name
+    where it acts (the belt rolls on the fixed pulley). Sixth round: a ground with no shape of
+    its own (C5-1.5's ceiling) keeps its one name on the page, never "*lurra*" beside
+    "ω_blokea = ω_sabaia"."""
     ca = rendered("seed_c5_1_6_belt", "ca", drawings=False)
     assert "CIR de la *politja mòbil* respecte del *terra*" in ca
     assert "respecte de la *politja fixa*" not in ca
     assert "no llisca sobre la *politja fixa*" in ca
     eu = rendered("seed_c5_1_5_pulley_block", "eu", drawings=False)
-    assert "*3. polea* solidoaren biraketa-zentro instantaneoa *lurra* solidoarekiko" in eu
-    assert "*sabaia eta 1. kable-zatia* solidoarekiko" not in eu
+    assert "*3. polea* solidoaren biraketa-zentro instantaneoa *sabaia* solidoarekiko" in eu
+    assert "*lurra*" not in eu and "*sabaia eta 1. kable-zatia* solidoarekiko" not in eu
 
 
 # -- C5-1.3: a value is written before it is used ------------------------------------------------------------------
@@ -87,13 +89,13 @@ def test_the_centre_on_a_straight_path_is_named_where_it_is_found():
     assert not [t for e in eqs for side in e.sides for t in side if t.sym.sub == "SJ"]
 
 
-def test_a_wheel_centre_alone_keeps_its_tangential_term():
-    """C5-E.4: an equation that finds the centre itself (a_A1 = a_A1J4^t) is not renamed
-    (no a_A1 = a_A1)."""
+def test_a_wheel_centre_alone_is_never_written_as_itself():
+    """C5-E.4: an equation that finds the centre itself never reads a_A1 = a_A1: the term
+    named a_A1 is written by its formula, α × JA1 (sixth round: `Term.spelt`)."""
     _, doc = explained("seed_c5_e4_upper_wheel")
     for e in doc.equations():
         assert not any(t.sym.base == e.target.sym.base and t.sym.sub == e.target.sym.sub and not t.sym.sup
-                       for side in e.sides for t in side), e.target.sym
+                       and not t.spelt for side in e.sides for t in side), e.target.sym
 
 
 # -- C5-1.4: the planet's centre first, then ω = v / distance ------------------------------------------------------
@@ -161,10 +163,10 @@ def test_a_wheel_on_a_welded_plane_turns_about_its_contact():
 def test_the_tied_strand_is_a_part_welded_to_the_ceiling():
     """C5-1.5: "tots els punts del tram de l'esquerra han de tenir velocitat nul·la respecte
     al terra (ja que el punt de dalt està lligat al sostre)": strand 1 is its own body, welded
-    to the ceiling, on which pulley 1 rolls; a centre is said relative to the ground, the
-    ceiling being named after a part of it (the strand carries the shape)."""
+    to the ceiling, on which pulley 1 rolls; a centre is said relative to the ceiling, the one
+    name of the fixed body on the page (sixth round: the ceiling carries no shape of its own)."""
     ca = rendered("seed_c5_1_5_pulley_block", "ca", drawings=False)
     assert "| 2 | *tram 1* (unit rígidament al *sostre*: fix) |" in ca
     assert "La *politja 1* rodola sense lliscar sobre el *tram 1*" in ca
-    assert "CIR de la *politja 3* respecte del *terra*" in ca
+    assert "CIR de la *politja 3* respecte del *sostre*" in ca and "*terra*" not in ca
     assert "ω_tram1" not in ca                   # a part of the frame has no rate to name

@@ -74,7 +74,7 @@ def _build(sol: Solution, length_unit: str) -> Document:
         summary.add(values_table(ctx, accel))
         summary.blocks += relative_rates(ctx)
         doc.sections.append(summary)
-        contacts = contact_section(ctx)
+        contacts = contact_section(ctx, _written_points(levels, wanted))
         if contacts is not None:
             doc.sections.append(contacts)
         checked = checks_section(ctx)
@@ -125,14 +125,14 @@ def _build(sol: Solution, length_unit: str) -> Document:
 
 
 def ground_part(ctx: Ctx) -> bool:
-    """Whether the model names its ground after a part fixed to it, which carries a shape (the
-    fixed pulley of C5-1.6, a track), or welds such parts to it (the strand C5-1.5 ties to the
-    ceiling, C5-1.2's inclined planes): the text names the part where
-    it acts (a contact, the structure's table) and says the ground where it is the reference of
-    a motion, as the notes do ("el CIR del braç respecte al terra és el centre O de la politja
-    fixa")."""
-    return bool(ctx.planar and any(ctx.inst.shapes.get(b) for b in ctx.model.bodies
-                                   if b == ctx.frame or ctx.fixed(b)))
+    """Whether the model names its ground after a part of it that carries a shape (the fixed
+    pulley of C5-1.6, a track): the text names the part where it acts (a contact, the
+    structure's table) and says the ground where it is the reference of a motion, as the notes
+    do ("el CIR del braç respecte al terra és el centre O de la politja fixa"). A ground with
+    no shape of its own keeps its one name on the page, whatever is welded to it (sixth round:
+    C5-1.5's ceiling, *sabaia*, was also "*lurra* solidoarekiko" beside ω_blokea = ω_sabaia;
+    its tied strand is a body named on its own, *1. kable-zatia*)."""
+    return bool(ctx.planar and ctx.inst.shapes.get(ctx.frame))
 
 
 def joint_places(ctx: Ctx) -> dict:
@@ -263,6 +263,19 @@ def coriolis_by_point(ctx: Ctx, sections: list[Section]) -> None:
         if len(pairs) == 1:
             for t, _ in terms:
                 t.sym = Sym("a", p, sub_key="sub.cor")
+
+
+def _written_points(levels: list[Section], wanted: tuple) -> dict[tuple[str, str], int]:
+    """(level, point label) -> the number of the step whose equation wrote that point's
+    velocity or acceleration (its left side), for later sections to refer to."""
+    out: dict[tuple[str, str], int] = {}
+    for sec, level in zip(levels, wanted):
+        steps = [b for b in sec.blocks if isinstance(b, Section)]
+        for n, step in enumerate(steps, 1):
+            for eq in _equations(step):
+                if not eq.target.sym.sup and eq.target.sym.base == level:
+                    out.setdefault((level, eq.target.sym.sub), n)
+    return out
 
 
 def _equations(sec: Section) -> list[Equation]:

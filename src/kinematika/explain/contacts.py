@@ -200,10 +200,12 @@ def geometric_blocks(ctx: Ctx, j, done: set, pair: Optional[tuple[str, str]] = N
     return out + blocks + [rel]
 
 
-def contact_section(ctx: Ctx) -> Optional[Section]:
+def contact_section(ctx: Ctx, written: Optional[dict[tuple[str, str], int]] = None) -> Optional[Section]:
     """Each `contact` question: the velocities and accelerations of the three coincident
     points, each from an equation (C5-1.8: the wheel's point, the ground's, and J^geom on
-    the bar OC)."""
+    the bar OC). A material point a step already wrote (`written`: (level, label) -> the
+    step's number) is referred to with its value, not written again (001's rolling pair:
+    v_F∈N and a_F∈N, step 3)."""
     asked = [q for q in worked(ctx).contacts if ctx.planar and rolls(ctx.model.joint(q.target))]
     if not asked:
         return None
@@ -215,6 +217,13 @@ def contact_section(ctx: Ctx) -> Optional[Section]:
                     b=Name(j.b, "body"), geom=geometric_point(bar.name)))
         for level in ("v", "a"):
             for body in (j.a, j.b):
+                step = (written or {}).get((level, ctx.point_label(bar.name, body)))
+                if step is not None and not ctx.fixed(body):
+                    sec.add(msg("contact.written", sym=Sym(level, ctx.point_label(bar.name, body)), step=step,
+                                value=Value(ctx.clean(ctx.vel(body, bar.name), "speed") if level == "v"
+                                            else ctx.clean(ctx.acc(body, bar.name), "accel"),
+                                            "speed" if level == "v" else "accel")))
+                    continue
                 sec.blocks += _material(ctx, bar, body, level)
             if f"geom:{level}:{j.id}" in ctx.worked:     # worked out for an acceleration step
                 sec.add(msg("contact.above", sym=geometric_sym(level, bar.name),

@@ -130,8 +130,9 @@ class Lead:
 class Ann:
     """What is known of a term (seed 001): magnitude M or ?, direction D, ?, ⊥ or ∥ a line.
 
-    `code` is one of "M", "D", "?", "perp", "para", "zero"; `ref` names the line
-    (a segment "AB", or a guide `Msg`).
+    `code` is one of "M", "D", "?", "perp", "para", "zero", or "rate": a magnitude that is an
+    unknown rate times its arm (α·JS), the rate shared by several terms of one equation
+    (`shared.share`); `ref` names the line (a segment "AB", or a guide `Msg`) or the formula.
     """
 
     code: str
@@ -149,6 +150,7 @@ class Term:
     how: list = field(default_factory=list)     # inline items (str, Sym) e.g. [ω, " × AB"]
     unknown: bool = False                        # solved in this step
     kind: str = ""                               # point, rotation, normal, tangential, slide, coriolis, contact
+    spelt: bool = False                          # written by its formula (α × JC), not by its symbol
 
 
 @dataclass

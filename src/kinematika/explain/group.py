@@ -876,9 +876,12 @@ class Writer:
                     turn = r.segs[i + 1]
                     made = self.seg_terms(turn, p)
                     normal = self.path_terms(seg.joint, turn.body, turn.p, terms + self.seg_terms(seg, p) + made[:-1])
-                    if not normal and p.end != Site(turn.p, turn.body):     # a straight path, in a sum: the term is a_C whole
+                    if not normal:              # a straight path: the term is a_C whole
                         made[-1].sym = Sym(lv, ctx.point_label(turn.p, turn.body))
                         ps.done.add(made[-1].sym.sub)
+                        # the centre alone: a_C = α × JC, as the notes write v_C = Ω × JC — never
+                        # a_C = a_CJ^t, which reads as if the contact had no acceleration
+                        made[-1].spelt = p.end == Site(turn.p, turn.body)
                     terms = self.path_tangential(made[-1], turn.body, turn.p, normal) + normal
                     skip = i + 1
                     if turn.body in p.finds:

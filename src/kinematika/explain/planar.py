@@ -14,6 +14,7 @@ from ..model.model import Joint, PointPair
 from .context import Ctx, Segment, alpha_sym, omega_sym, read_off, segment
 from .document import Ann, Derived, Equation, Inline, Lead, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .group import centre_site, group_blocks, still_contact
+from .shared import shared_rates
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
 from .copies import copy_of
@@ -67,7 +68,7 @@ class PlanarSteps:
                 continue
             i += 1
             sub = Section(step_title(i, step), level=3)
-            sub.blocks = self.step(step)
+            sub.blocks = shared_rates(self.step(step))
             sec.blocks.append(sub)
             self.known.update(step.bodies)
         if self.level == "a" and self.ctx.symbolic and self.ctx.inst.names:

@@ -42,6 +42,7 @@ structure-dof = El mecanisme té { $dof ->
         [one] un grau
        *[other] { $dof } graus
     } de llibertat.
+structure-dof_whole = El mecanisme té { $dof } graus de llibertat, i l’enunciat dona { $data } dades: { $sym } es dona sencera, direcció i mòdul, dues condicions. La seva direcció treu el moviment lateral que els enllaços deixen a { $bodies }.
 shape-circle = circumferència
 shape-line = recta
 shape-disc = disc
@@ -195,6 +196,7 @@ v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D 
 a-intro = Conegudes les velocitats, tots els termes normals i de Coriolis són coneguts; les incògnites són els termes tangencials i relatius.
 a-intro_relative = Conegudes les velocitats, tots els termes normals són coneguts; les incògnites són els termes tangencials i relatius.
 a-intro_normal = Conegudes les velocitats, els termes normals són coneguts; les incògnites són els termes tangencials.
+eq-shared_rate = Els termes { $terms } tenen una sola incògnita, { $rate }: els seus mòduls són { $mags }.
 a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
 driver-omega = Dada: { $sym } = { $value }.
 driver-velocity = Dada: { $sym } = { $value }.
@@ -677,6 +679,7 @@ contact-intro = Al contacte { $point } coincideixen tres punts amb cinemàtiques
        *[other] de { $b }
     } i el punt geomètric de contacte { $geom }, que no pertany a cap dels dos.
 contact-above = { $sym } = { $value }, obtinguda més amunt per a l’acceleració del contacte.
+contact-written = { $sym } = { $value }, escrita al pas { $step }.
 contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }

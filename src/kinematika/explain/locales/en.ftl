@@ -45,6 +45,7 @@ structure-dof = The mechanism has { $dof ->
         [one] one degree
        *[other] { $dof } degrees
     } of freedom.
+structure-dof_whole = The mechanism has { $dof } degrees of freedom, and the statement gives { $data } data: { $sym } is given whole, direction and magnitude, two conditions. Its direction takes away the sideways motion the joints leave to { $bodies }.
 shape-circle = circle
 shape-line = line
 shape-disc = disc
@@ -162,6 +163,7 @@ v-intro = Each vector equation is annotated as in the notes: M magnitude known, 
 a-intro = With the velocities known, every normal term and every Coriolis term is known; the tangential and relative terms are the unknowns.
 a-intro_relative = With the velocities known, every normal term is known; the tangential and relative terms are the unknowns.
 a-intro_normal = With the velocities known, the normal terms are known; the tangential terms are the unknowns.
+eq-shared_rate = The terms { $terms } share one unknown, { $rate }: their magnitudes are { $mags }.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
 driver-velocity = Given: { $sym } = { $value }.
@@ -389,6 +391,7 @@ geom-bar = { $geom }, the geometric contact point, belongs to neither body: it s
 geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.
+contact-written = { $sym } = { $value }, written in step { $step }.
 contact-fixed = { $sym }: { $point } as a point of { $body }, which is fixed, does not move: { $sym } = 0.
 fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point{ $format ->
         [md] {""}

@@ -42,6 +42,7 @@ structure-dof = El mecanismo tiene { $dof ->
         [one] un grado
        *[other] { $dof } grados
     } de libertad.
+structure-dof_whole = El mecanismo tiene { $dof } grados de libertad, y el enunciado da { $data } datos: { $sym } se da entera, dirección y módulo, dos condiciones. Su dirección quita el movimiento lateral que los enlaces dejan a { $bodies }.
 shape-circle = circunferencia
 shape-line = recta
 shape-disc = disco
@@ -159,6 +160,7 @@ v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conoc
 a-intro = Conocidas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
 a-intro_relative = Conocidas las velocidades, todos los términos normales son conocidos; las incógnitas son los términos tangenciales y relativos.
 a-intro_normal = Conocidas las velocidades, los términos normales son conocidos; las incógnitas son los términos tangenciales.
+eq-shared_rate = Los términos { $terms } tienen una sola incógnita, { $rate }: sus módulos son { $mags }.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
 driver-velocity = Dato: { $sym } = { $value }.
@@ -428,6 +430,7 @@ geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno d
 geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
+contact-written = { $sym } = { $value }, escrita en el paso { $step }.
 contact-fixed = { $sym }: { $point } como punto de { $body }, que es fijo, no se mueve: { $sym } = 0.
 fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto{ $format ->
         [md] {""}

@@ -42,6 +42,7 @@ structure-dof = Mekanismoak { $dof ->
         [one] askatasun-gradu bat du
        *[other] { $dof } askatasun-gradu ditu
     }.
+structure-dof_whole = Mekanismoak { $dof } askatasun-gradu ditu, eta enuntziatuak { $data } datu ematen ditu: { $sym } osorik ematen da, norabidea eta modulua, bi baldintza. Haren norabideak loturek { $bodies } solidoei uzten dieten alboko mugimendua kentzen du.
 shape-circle = zirkunferentzia
 shape-line = zuzena
 shape-disc = diskoa
@@ -165,6 +166,7 @@ v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua eza
 a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
+eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
 driver-velocity = Datua: { $sym } = { $value }.
@@ -392,6 +394,7 @@ geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena er
 geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
+contact-written = { $sym } = { $value }, { $step }. urratsean idatzia.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen, solidoa finkoa baita: { $sym } = 0.
 fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
         [md] {""}

@@ -523,6 +523,8 @@ class Renderer(ABC):
     def ann(self, a: Ann) -> str:
         """An M/D/? annotation of a term (seed 001): M, D or ?, a magnitude's formula (ω·AB), or
         the direction ⊥ or ∥ a line."""
+        if a.code == "rate":            # an unknown rate times its arm (α·JS), shared by terms
+            return self.inline(a.ref)
         if a.code in ("M", "D", "?"):
             if a.code == "M" and a.ref:
                 return self.inline(a.ref)
@@ -532,8 +534,12 @@ class Renderer(ABC):
 
     def derived(self, d: Derived) -> str:
         """A value read off an equation, `ω₃ = v_BA / AB = 2.5 rad/s`, with the sense
-        (counter-clockwise or clockwise) when it is a nonzero number and the sense is asked."""
+        (counter-clockwise or clockwise) when it is a nonzero number and the sense is asked.
+        A rate the model's notation writes otherwise is tied to its body where it is found:
+        the notes' precession, ψ̇ = ω_txasisa = |v_FI| / IF = √2·v₀/(2·L)."""
         parts = [(self.inline(d.lead) if d.lead else "") + self.sym(d.sym)]
+        if d.how and self.noted(d.sym) is not d.sym and d.sym.base in ("ω", "α"):
+            parts.append(self.symbol(d.sym))     # the notes' symbol tied to the body's: ψ̇ = ω_txasisa = …
         if d.how:
             parts.append(self.inline(d.how))
         parts.append(self.value(d.value))
@@ -544,10 +550,16 @@ class Renderer(ABC):
             text += " " + self.message(d.remark)
         return text
 
+    def written(self, t) -> str:
+        """A term as an equation writes it: its symbol (a_QS^t), or its formula where the
+        term is spelt out (a wheel's centre alone on a straight path: a_H = α × GH)."""
+        return self.inline(t.how) if t.spelt and t.how else self.sym(t.sym)
+
     def term_line(self, t) -> str:
-        """`v_BA = ω × AB = (…) m/s` for the list of an equation's terms."""
-        parts = [self.sym(t.sym)]
-        if t.how and self.inline(t.how) != parts[0]:
+        """`v_BA = ω × AB = (…) m/s` for the list of an equation's terms (`α × GH = (…)` for
+        a term spelt out)."""
+        parts = [self.written(t)]
+        if t.how and not t.spelt and self.inline(t.how) != parts[0]:
             parts.append(self.inline(t.how))
         parts.append(self.value(Value(t.value, _unit(t.sym))))
         return " = ".join(parts)

@@ -97,7 +97,7 @@ class HtmlRenderer(Renderer):
             for i, t in enumerate(side):
                 if i:
                     lines[-1].append(("", "+", "", False))
-                lines[-1].append((self.ann(t.mag), self.sym(t.sym), self.ann(t.dir), t.unknown))
+                lines[-1].append((self.ann(t.mag), self.written(t), self.ann(t.dir), t.unknown))
         tables = []
         for cells in lines:
             rows = []

@@ -125,7 +125,7 @@ class LatexRenderer(Renderer):
         it (the unknowns in red), followed by an itemised list of its terms with their values."""
         def cell(t) -> str:
             mag, dir_ = self.ann(t.mag), self.ann(t.dir)
-            core = self.math_sym(t.sym)
+            core = rf"\text{{{self.inline(t.how)}}}" if t.spelt else self.math_sym(t.sym)
             if t.unknown:
                 core = r"\textcolor{red!60!black}{" + core + "}"
             return rf"\underset{{\text{{\scriptsize {dir_}}}}}{{\overset{{\text{{\scriptsize {mag}}}}}{{{core}}}}}"

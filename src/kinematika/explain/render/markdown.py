@@ -103,7 +103,7 @@ class MarkdownRenderer(Renderer):
             for i, t in enumerate(side):
                 if i:
                     groups[-1].append(("", "+", ""))
-                groups[-1].append((self.ann(t.mag), self.sym(t.sym), self.ann(t.dir)))
+                groups[-1].append((self.ann(t.mag), self.written(t), self.ann(t.dir)))
         blocks = []
         for n, cols in enumerate(groups):
             widths = [max(len(c) for c in col) for col in cols]
