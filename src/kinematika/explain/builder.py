@@ -121,6 +121,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     doc.joints = joint_places(ctx)
     doc.parameters = tuple(ctx.model.parameters)
     doc.ground_part = ground_part(ctx)
+    doc.values = ctx.drawn_values() if ctx.symbolic else {}
     return doc
 
 

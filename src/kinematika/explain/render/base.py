@@ -17,6 +17,7 @@ from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Own,
                         Described, Section, Sym, Table, Told, Value)
 from .names import written as written_name
+from .unicode import formula_values
 from .svg import Text, plain_text, sym_text
 
 TOKEN = "\ue000{}\ue001"
@@ -123,7 +124,8 @@ class Renderer(ABC):
         self._written: set[str] = set()
         self._legend: Optional[Msg] = None
         body = [self.heading(1, self.esc(shown_lines(self.wording.title(self.lang, self.doc.title))))]
-        body += [self.section(s) for s in self.doc.sections]
+        with formula_values(self.doc.values):
+            body += [self.section(s) for s in self.doc.sections]
         page = "\n".join(body)
         if self._legend is not None:
             said = self.subscripts(self._legend)
