@@ -78,7 +78,7 @@ def formula_values(values: dict) -> Iterator[None]:
         _VALUES.reset(token)
 
 
-def _negative(x: Any, values: dict) -> bool:
+def _negative(x: Any, values: dict | None) -> bool:
     """Whether `x` is negative at `values` (False when some symbol has no value)."""
     values = values or {}
     if not values:
