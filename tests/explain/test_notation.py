@@ -80,11 +80,11 @@ def test_a_belt_run_is_no_turning_body(name, run):
 
 
 def test_unequal_wheels_as_the_notes_write_them():
-    """C5-E.5: the relative velocity of A about B is v_{A-B} (the notes' v_AB is the absolute
-    velocity); the radius of curvature is the notes' ℜ (ρ is a wheel's radius); the result
+    """C5-E.5: the relative velocity of A about B is the slides' v_AB (A about B, as v_BA is B
+    about A), never the hyphenated v_{A-B} a reader takes for a difference; the radius of curvature is the notes' ℜ (ρ is a wheel's radius); the result
     v_P = v (r₂ − r₁)/r₂ carries no minus in front of a turned difference."""
     text = _text("seed_c5_e5_unequal_wheels", "ca")
-    assert "v_AB" not in text and "v_{A-B}" in text
+    assert "v_AB" in text and "v_{A-B}" not in text
     assert "ℜ_P = " in text and "ρ_P" not in text
     assert "v·(r₂ − r₁)/r₂" in text and "−v·(r₁ − r₂)" not in text
 

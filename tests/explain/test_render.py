@@ -111,17 +111,20 @@ def test_numbers_as_each_language_writes_them():
     _, doc = explained("four_bar")
     en, es = render(doc, "en", "md", drawings=False), render(doc, "es", "md", drawings=False)
     assert "(−9.117, −1.576) m/s" in en and "(−9,117; −1,576) m/s" in es
-    # O2 and O4 need a separator, so every pair of the page is written apart (B-A)
-    assert "ω_3 = −|v_{B-A}| / A-B = −0,4516 rad/s" in render(doc, "ca", "md", drawings=False)
+    # pairs run together as the slides write them (v_BA, AB), O2 and O4 beside them
+    assert "ω_3 = −|v_BA| / AB = −0,4516 rad/s" in render(doc, "ca", "md", drawings=False)
     assert "0,4516" in render(doc, "eu", "html", drawings=False)
 
 
-def test_a_bar_is_escaped_in_a_tables_cell_only():
+def test_a_bar_is_turned_in_a_tables_cell_only():
     """Markdown as plain text: |v_A| reads as written in a sentence; inside a pipe table's cell
-    a bar would end the cell, so there (and only there) it is escaped."""
+    a bar would end the cell, so there (and only there) it is the mathematical bar ∣, never
+    a backslash the reader sees; ">" and "<" between words are not escaped."""
     from kinematika.explain.render.markdown import MarkdownRenderer
 
     r = MarkdownRenderer.__new__(MarkdownRenderer)
     assert r.esc("AI = |v_A| / |ω|") == "AI = |v_A| / |ω|"
     table = r.table(["what", "value"], [["|v_A|", "3"]])
-    assert "| \\|v_A\\| | 3 |" in table.splitlines()
+    assert "| ∣v_A∣ | 3 |" in table.splitlines()
+    assert r.esc("(r₂ − r₁)² > r₁² and r < R") == "(r₂ − r₁)² > r₁² and r < R"
+    assert r.esc("> quoted") == "\\> quoted" and r.esc("<b>") == "\\<b>"

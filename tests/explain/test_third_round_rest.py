@@ -86,12 +86,13 @@ def test_every_contact_named_is_in_data(name):
 def test_bicycle_curvature_radius_is_a_length(lang):
     """C5-E.6: the note correcting the notes writes P's radius of curvature with the page's
     ℜ (ρ is a circle's radius) and defines the d it uses: ℜ_P = (d − L)²/L with d = R_roda R/r,
-    a length; the same formula as the curvature section's (L r − R R_roda)²/(L r²)."""
+    a length; the same formula as the curvature section's (R R_roda − L r)²/(L r²), the
+    square written as the note's (d − L)² (d > L at the figure's numbers: sixth round)."""
     page = rendered("seed_c5_e6_bicycle", lang, drawings=False)
     note = page[page.rindex("ℜ = (R/r)² R_roda"):]
     assert "ρ" not in note
     assert "ℜ_P = v(P)²/aⁿ = (d − L)²/L" in note and "d = R_roda R/r" in note
-    assert "ℜ_P = |v_P|² / |a_P^n| = (L·r − R·R_roda)²/(L·r²)" in page
+    assert "ℜ_P = |v_P|² / |a_P^n| = (R·R_roda − L·r)²/(L·r²)" in page
 
 
 @pytest.mark.parametrize("lang", LANGS)

@@ -18,7 +18,7 @@ from .checks import checks_section
 from .contacts import contact_section
 from .copies import copies
 from .centres import centre_sites, centres_first, centres_section
-from .context import Ctx, omega_sym, pair_notation
+from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
 from .document import Ann, Document, Equation, Inline, Msg, Name, Section, Sym, Term, Value, msg
 from .group import refine
@@ -34,20 +34,20 @@ from .translating import translations
 
 
 def build(sol: Solution, length_unit: str = "m") -> Document:
-    """The `Document` of `sol`: every value in it is read from the solution. One notation for
-    pairs of points per page (`context.pair_notation`): a page whose pairs came out both run
-    together (BA) and apart (A-O1) is built again with every pair apart."""
-    with pair_notation(False) as spelt:
-        doc = _build(sol, length_unit)
-    if spelt == {True, False}:
-        with pair_notation(True):
-            doc = _build(sol, length_unit)
-    return doc
-
-
-def _build(sol: Solution, length_unit: str) -> Document:
-    """The `Document` of `sol` in the pair notation in force."""
+    """The `Document` of `sol`: every value in it is read from the solution. Built once:
+    pairs of points are run together (AB, OA1) whatever the labels (`context.segment`)."""
     ctx = Ctx(sol)
+    if ctx.planar:                     # the contacts' names known before any segment is named
+        for j in ctx.model.joints:
+            if getattr(j.kind, "touches", False):
+                ctx.contact(j)
+    with point_labels(ctx.labels):
+        return _build(ctx, length_unit)
+
+
+def _build(ctx: Ctx, length_unit: str) -> Document:
+    """The `Document` of the solution `ctx` reads."""
+    sol = ctx.sol
     accel = accelerations_asked(ctx)
     wanted = ("v", "a") if accel else ("v",)
     levels: list[Section] = []
@@ -121,6 +121,7 @@ def _build(sol: Solution, length_unit: str) -> Document:
     doc.joints = joint_places(ctx)
     doc.parameters = tuple(ctx.model.parameters)
     doc.ground_part = ground_part(ctx)
+    doc.values = ctx.drawn_values() if ctx.symbolic else {}
     return doc
 
 

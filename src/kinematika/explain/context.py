@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from contextlib import contextmanager
 from contextvars import ContextVar
-from typing import Any, Iterator, Optional
+from typing import Any, Callable, Iterator, Optional
 
 from ..algebra.vectors import sub
 from ..model.model import PointRef
@@ -187,55 +187,74 @@ class Ctx:
             return point
         return f"{point}∈{next(c for c in classes if body in c)[0]}"
 
+    def labels(self) -> set:
+        """The point labels a page may write: the model's points and the names given to
+        contacts and centres (`name_position`), which a segment's juxtaposition must not
+        confuse (`segment`)."""
+        return set(self.inst.points) | set(self._extra)
+
     def ref(self, point: str, body: str) -> PointRef:
         """The material point `point` of `body`."""
         return PointRef(point, body)
 
 
 class Segment(str):
-    """A segment's name as written (AB, O2-A) that keeps its two points: names may hold `-`
-    themselves (`-x`), so the name alone cannot be split back."""
+    """A segment's name as written (AB, OA1) that keeps its two points: run together, the
+    name alone cannot be split back (A1A2), and names may hold `-` themselves (`-x`)."""
 
     ends: tuple[str, str] = ("", "")
 
 
-# One notation for pairs of points on a page: AB, v_BA, a_BA^n run two one-letter labels
-# together, but O1-A needs a separator (O1A could be O-1A); a page that writes one pair apart
-# writes every pair apart (v_{A-O1} beside v_{B-A}, never beside v_BA), as a teacher keeps one
-# notation on one sheet. `separated` is the page's choice, `spelt` what the pairs asked for.
-_SEPARATED: ContextVar[bool] = ContextVar("separated", default=False)
-_SPELT: ContextVar[Optional[set]] = ContextVar("spelt", default=None)
-
-
-def apart(needed: bool) -> bool:
-    """Whether a pair of points is written with a separator on this page: when the pair
-    `needed` one (a label longer than one character, a reserved word) or the page writes
-    every pair apart; the need is recorded for `pair_notation`."""
-    spelt = _SPELT.get()
-    if spelt is not None:
-        spelt.add(needed)
-    return needed or _SEPARATED.get()
+# Pairs of points are written as the slides and notes write segments, by juxtaposition (AB,
+# v_BA, OA1, A1A2, v_{A1O}); a separator only where the run-together text splits into two of
+# the page's point labels another way (O1A when the model also has a point 1A): the reader
+# must find the two points, and "B-A" reads as the difference B − A, pointing the other way.
+_LABELS: ContextVar[Optional[Callable[[], set]]] = ContextVar("labels", default=None)
 
 
 @contextmanager
-def pair_notation(separated: bool) -> Iterator[set]:
-    """Build a page with pairs of points written apart (`separated`) or as they need; yields
-    the set of needs met ({True, False}: the page mixed the two and is built again apart)."""
-    spelt: set = set()
-    tokens = (_SEPARATED.set(separated), _SPELT.set(spelt))
+def point_labels(labels: Callable[[], set]) -> Iterator[None]:
+    """Build a page whose point labels (the model's points, contacts, centres placed as points)
+    are read from `labels` when a segment is named (`segment`)."""
+    token = _LABELS.set(labels)
     try:
-        yield spelt
+        yield
     finally:
-        _SPELT.reset(tokens[1])
-        _SEPARATED.reset(tokens[0])
+        _LABELS.reset(token)
+
+
+def ambiguous(q: str, p: str, labels: set) -> bool:
+    """Whether q + p run together splits into two labels in another way than q | p (O1 + A
+    against O + 1A): then the pair needs a separator to be read back."""
+    joined, names = q + p, labels | {q, p}
+    return any(joined[:k] in names and joined[k:] in names
+               for k in range(1, len(joined)) if k != len(q))
 
 
 def segment(q: str, p: str) -> Segment:
-    """The name of the segment from q to p as the notes write it (AB; O2-A for long names,
-    and every segment of a page that writes one apart: `apart`)."""
-    seg = Segment(f"{q}-{p}" if apart(len(q) != 1 or len(p) != 1) else q + p)
+    """The name of the segment from q to p as the notes write it, the two labels run together
+    (AB, OA1, A1A2); O1-A only where the juxtaposition is `ambiguous` among the page's labels."""
+    source = _LABELS.get()
+    labels = source() if source is not None else set()
+    seg = Segment(f"{q}-{p}" if ambiguous(q, p, labels) else q + p)
     seg.ends = (q, p)
     return seg
+
+
+def split_pair(seg: str) -> tuple[str, str]:
+    """The two point names of a segment `segment` wrote (OA1, O1-A): its own ends when it
+    kept them, else the split into the page's labels (the first, else after one character)."""
+    if isinstance(seg, Segment):
+        return seg.ends
+    if "-" in seg:
+        q, p = seg.split("-", 1)
+        return q, p
+    source = _LABELS.get()
+    labels = source() if source is not None else set()
+    for k in range(1, len(seg)):
+        if seg[:k] in labels and seg[k:] in labels:
+            return seg[:k], seg[k:]
+    return seg[0], seg[1:]
 
 
 def read_off(ctx: "Ctx", term: Sym, length: Any, value: Any) -> list:

@@ -322,6 +322,7 @@ class Document:
     joints: dict = field(default_factory=dict)      # joint -> its point or contact (how the text names it)
     parameters: tuple = ()                          # the model's parameters' names (its own words write them)
     ground_part: bool = False                       # the ground is named after a part of it (`reference_name`)
+    values: dict = field(default_factory=dict)      # a symbolic model's numbers (draw_at): how formulas are written
 
     def blocks(self) -> list:
         """Every block, nested sections included, in reading order."""

@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Optional
 
 from ..model.model import Joint, PointPair
-from .context import Ctx, Segment, alpha_sym, omega_sym, read_off, segment
+from .context import Ctx, alpha_sym, omega_sym, read_off, segment, split_pair
 from .document import Ann, Derived, Equation, Inline, Lead, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .group import centre_site, group_blocks, still_contact
 from .shared import shared_rates
@@ -475,13 +475,8 @@ class PlanarSteps:
 
 
 def split_segment(seg: str) -> tuple[str, str]:
-    """The two point names of a segment written by `segment` (AB, O2-A)."""
-    if isinstance(seg, Segment):
-        return seg.ends
-    if "-" in seg:
-        q, p = seg.split("-", 1)
-        return q, p
-    return seg[0], seg[1:]
+    """The two point names of a segment written by `segment` (AB, OA1; `context.split_pair`)."""
+    return split_pair(seg)
 
 
 def driven(ctx: Ctx, d) -> list[str]:

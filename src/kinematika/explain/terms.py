@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from ..algebra.vectors import scale
 from ..model.model import Joint, PointPair
-from .context import Ctx, alpha_sym, apart, omega_sym, segment
+from .context import Ctx, alpha_sym, omega_sym, segment
 from .document import Ann, Msg, Sym, Term, Value, body, joint, msg
 
 UNIT = {"v": "speed", "a": "accel"}
@@ -38,17 +38,9 @@ def point_term(ctx: Ctx, level: str, point: str, body: str, known: bool = True) 
                 unknown=not known, kind="point")
 
 
-# the pairs of points a relative velocity's subscript does not spell as one word: the C5
-# notes' AB is the absolute motion (v_AB(P), Ω_AB), so A relative to B is written v_{A-B}
-RESERVED_PAIRS = {"AB"}
-
-
 def pair_name(p: str, q: str) -> str:
-    """The subscript of p's motion about q on one body (v_BA, v_{O2-A}); apart, v_{A-B},
-    where the two names would spell the notes' word for the absolute motion."""
-    if p + q in RESERVED_PAIRS and len(p) == 1 and len(q) == 1:
-        apart(True)
-        return f"{p}-{q}"
+    """The subscript of p's motion about q on one body, the slides' v_BA: the two labels run
+    together (v_AB, v_{A1O}) as every segment is (`context.segment`)."""
     return segment(p, q)
 
 

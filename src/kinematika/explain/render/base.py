@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 from abc import ABC, abstractmethod
-from typing import Any
+from typing import Any, Optional
 
 from babel.lists import format_list
 
@@ -17,9 +17,11 @@ from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Own,
                         Described, Section, Sym, Table, Told, Value)
 from .names import written as written_name
+from .unicode import formula_values
 from .svg import Text, plain_text, sym_text
 
 TOKEN = "\ue000{}\ue001"
+LEGEND = "\ue002legend\ue003"        # where the legend of shortened subscripts goes (`render`)
 TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
 # what a name's markup begins with before its first letter, by format
 LEADING_MARKUP = {"html": re.compile(r"(?:<[^>]*>)*"), "md": re.compile(r"[*_]*"),
@@ -116,10 +118,19 @@ class Renderer(ABC):
     # the walk ---------------------------------------------------------------------------------
     def render(self) -> str:
         """The whole document as one page of the format: its title (the model's, in the
-        reader's language when it gives one), then every section."""
+        reader's language when it gives one), then every section. The legend of shortened
+        subscripts (`subscripts`) is written last, where it stands, once the page has said
+        which labels it writes."""
+        self._written: set[str] = set()
+        self._legend: Optional[Msg] = None
         body = [self.heading(1, self.esc(shown_lines(self.wording.title(self.lang, self.doc.title))))]
-        body += [self.section(s) for s in self.doc.sections]
-        return self.page("\n".join(body))
+        with formula_values(self.doc.values):
+            body += [self.section(s) for s in self.doc.sections]
+        page = "\n".join(body)
+        if self._legend is not None:
+            said = self.subscripts(self._legend)
+            page = page.replace(LEGEND if said else LEGEND + "\n", said, 1)
+        return self.page(page)
 
     def section(self, sec: Section) -> str:
         """A section: its heading at its level, then its blocks in order."""
@@ -134,7 +145,10 @@ class Renderer(ABC):
         if isinstance(b, Section):
             return self.section(b)
         if isinstance(b, Msg) and b.key == "structure.subscripts":
-            return self.subscripts(b)
+            if not hasattr(self, "_written"):
+                return self.subscripts(b)
+            self._legend = b                 # said once the page's symbols are known (`render`)
+            return LEGEND
         if isinstance(b, Msg):
             return self.para(self.sentence(self.message(b, lead=True)))
         if isinstance(b, Equation):
@@ -312,15 +326,14 @@ class Renderer(ABC):
             if given or place is None:
                 return self.wording.joint(n.text, self.lang)
             if isinstance(place, tuple):
-                labels = self.labels()
-                return "–".join(labels.get(b, b) for b in place)
+                return "–".join(self.label(b) for b in place)
             return place
         if n.kind == "point" and "∈" in n.text:          # O∈wheels as the symbols write it: O∈3
             return self.numbered(Sym("", n.text))
         if n.kind == "index":                            # a body's number in the structure's table
             return self.numbers().get(n.text, n.text)
         if n.kind == "label":                            # a body as its symbols write it (ω_roda)
-            return self.labels().get(n.text, n.text)
+            return self.label(n.text)
         return n.text
 
     def articled(self, n: Name) -> tuple[str, str]:
@@ -370,8 +383,11 @@ class Renderer(ABC):
         if not spelt:
             return ""
         items: list = []
+        written = getattr(self, "_written", None)
         for b in m.args["bodies"]:
             label = self.labels().get(b, "")
+            if written is not None and b not in written:
+                continue          # a symbol the page never writes needs no legend
             words = _words(spelt[b]) if b in spelt else []
             if not label or label.isdigit() or not words or label == " ".join(words) \
                     or (label in words and CODE.match(label)):
@@ -390,6 +406,14 @@ class Renderer(ABC):
             order = sorted(self.doc.numbers, key=lambda b: self.doc.numbers[b])
             self._labels = self.wording.labels(order, self.lang)
         return self._labels
+
+    def label(self, b: str) -> str:
+        """Body `b` as the symbols write it (`labels`), noted as written on the page (the
+        legend of shortened subscripts says only those)."""
+        labels = self.labels()
+        if b in labels and hasattr(self, "_written"):
+            self._written.add(b)
+        return labels.get(b, b)
 
     def named(self) -> bool:
         """Whether the model names its bodies in this language (`draw.names.names_bodies`):
@@ -426,16 +450,20 @@ class Renderer(ABC):
                 return s.sub
             if s.base == "I" and len(parts) == 2:           # the figures' rule: I_biela, or I_13
                 named = self.named()
-                return centre_subscript(parts[0], parts[1], nums, labels if named else self.numbers(), named,
-                                        part_subscript("sub.rel_to", self.lang))
+                shown = centre_subscript(parts[0], parts[1], nums, labels if named else self.numbers(), named,
+                                         part_subscript("sub.rel_to", self.lang))
+                for p in parts:           # the frame is left out of I_biela: only what is shown
+                    if named and labels.get(p) and labels[p] in shown:
+                        self.label(p)
+                return shown
             if sep == "/" and len(parts) == 2:
-                return self.relative(labels[parts[0]], labels[parts[1]])
-            return sep.join(labels[p] for p in parts)
+                return self.relative(self.label(parts[0]), self.label(parts[1]))
+            return sep.join(self.label(p) for p in parts)
         head, *rest = re.split(r"([∈/,])", s.sub)
         out = head
         for i in range(0, len(rest), 2):
             mark, name = rest[i], rest[i + 1] if i + 1 < len(rest) else ""
-            name = labels.get(name, name)
+            name = self.label(name)
             out += f" {part_subscript('sub.rel_to', self.lang)} {name}" if mark == "/" else mark + name
         return out
 

@@ -15,10 +15,15 @@ from .names import unicode_name
 from .unicode import unicode_formula
 
 # what Markdown would read as markup; an underscore inside a word (R_roda) is no emphasis
-# (CommonMark), so it stays as a reader writes it; a bar is markup only in a table's cell
-# (`MarkdownRenderer.table` escapes it there), so |v_A| reads as it is written elsewhere
-MARKUP = re.compile(r"([\\`*\[\]<>]|(?<!\w)_|_(?!\w))")
+# (CommonMark), so it stays as a reader writes it; "<" only where it opens a tag or an
+# autolink (<b, </, <!), ">" only where it opens a quote (a line's start): "r₂ > 2 r₁" reads
+# as written. A bar is markup only in a table's cell (`MarkdownRenderer.table`), so |v_A|
+# reads as it is written elsewhere
+MARKUP = re.compile(r"([\\`*\[\]]|<(?=[A-Za-z/!?])|(?<=^)>|(?<!\w)_|_(?!\w))", re.M)
 BAR = re.compile(r"(?<!\\)\|")
+# the notes' magnitude bars (|a_T^n(P)|) inside a table's cell: the mathematical bar ∣ (U+2223),
+# which reads the same and ends no cell, never an escape (\|) a reader sees as text
+CELL_BAR = "\u2223"
 
 
 COMPOUND = "/,-∈ "         # a subscript with these holds more than one name (or words: roda sup)
@@ -113,9 +118,10 @@ class MarkdownRenderer(Renderer):
         return "```\n" + "\n".join(blocks) + "\n```\n"
 
     def table(self, header: list[str], rows: list[list[str]]) -> str:
-        """A pipe table; a bar inside a cell escaped, where it would end the cell."""
+        """A pipe table; a bar inside a cell, where it would end the cell, written as the
+        mathematical bar ∣ (|v_P| as ∣v_P∣): no backslash for a plain-text reader."""
         def line(cells: list[str]) -> str:
-            return "| " + " | ".join(BAR.sub(r"\\|", c) for c in cells) + " |"
+            return "| " + " | ".join(BAR.sub(CELL_BAR, c) for c in cells) + " |"
         return "\n".join([line(header), line(["---"] * len(header))] + [line(r) for r in rows]) + "\n"
 
     def figure(self, fig: Figure) -> str:

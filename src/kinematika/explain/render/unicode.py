@@ -3,7 +3,9 @@ model's names written as a teacher writes them (θ₂, x_B: `names`)."""
 from __future__ import annotations
 
 import re
-from typing import Any, Callable
+from contextlib import contextmanager
+from contextvars import ContextVar
+from typing import Any, Callable, Iterator
 
 from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.str import StrPrinter
@@ -38,6 +40,19 @@ class _Marking(StrPrinter):
             return f"{self._print(terms[1])} - {self.parenthesize(-terms[0], PRECEDENCE['Add'] + 1)}"
         return super()._print_Add(expr, order=order)
 
+    def _print_Pow(self, expr: Any, rational: bool = False) -> str:
+        """An even power of a difference with its positive value first at the model's numbers
+        (`formula_values`): (r₂ − r₁)² when r₂ > r₁, as the notes write it, the same value
+        whichever way it is written (sympy keeps (r₁ − r₂)²)."""
+        base, exp = expr.as_base_exp()
+        if exp.is_Integer and exp.is_even and base.is_Add and len(base.args) == 2 \
+                and _negative(base, _VALUES.get()):
+            import sympy
+
+            flipped = sympy.Add(*[-t for t in base.args], evaluate=False)
+            return super()._print_Pow(sympy.Pow(flipped, exp, evaluate=False), rational)
+        return super()._print_Pow(expr, rational)
+
     def _print_Pi(self, expr: Any) -> str:
         return "π"
 
@@ -48,11 +63,41 @@ class _Marking(StrPrinter):
         return "i"
 
 
+# a symbolic model's numbers (its draw_at values) while a page is written: which way round an
+# even power of a difference reads (`_Marking._print_Pow`); never a value that is printed
+_VALUES: ContextVar[dict | None] = ContextVar("formula_values", default=None)
+
+
+@contextmanager
+def formula_values(values: dict) -> Iterator[None]:
+    """Write formulas with the model's numbers `values` (name -> float) at hand."""
+    token = _VALUES.set(values)
+    try:
+        yield
+    finally:
+        _VALUES.reset(token)
+
+
+def _negative(x: Any, values: dict | None) -> bool:
+    """Whether `x` is negative at `values` (False when some symbol has no value)."""
+    values = values or {}
+    if not values:
+        return False
+    try:
+        at = x.subs({s: values[s.name] for s in x.free_symbols})
+        return bool(at.is_number and float(at) < 0)
+    except (KeyError, TypeError, ValueError):
+        return False
+
+
 def _marked(expr: Any) -> tuple[str, tuple[str, ...]]:
     """The Unicode formula with its symbols marked, and their names: printed once in a
-    command (a long formula takes long to print), written out by each language and format."""
+    command (a long formula takes long to print), written out by each language and format;
+    remembered with the numbers of its symbols (`formula_values`), which may turn a square."""
     shown = turned(tidy(expr))
-    known = _MARKED.get(shown)
+    values = _VALUES.get() or {}
+    key = (shown, tuple(sorted((s.name, values.get(s.name)) for s in getattr(shown, "free_symbols", ()))))
+    known = _MARKED.get(key)
     if known is not None:
         return known
     names: list[str] = []
@@ -60,7 +105,7 @@ def _marked(expr: Any) -> tuple[str, tuple[str, ...]]:
     text = re.sub(r"\*\*(-?\d+)", lambda m: m.group(1).translate(SUPERSCRIPTS), text)
     text = re.sub(r"sqrt\(([\w\U000F0000-\U000FFFFD]+)\)", r"√\1", text)
     text = text.replace("sqrt(", "√(").replace("**", "^").replace("*", "·")
-    return _MARKED.put(shown, (text.replace(" - ", " − ").replace("-", "−"), tuple(names)))
+    return _MARKED.put(key, (text.replace(" - ", " − ").replace("-", "−"), tuple(names)))
 
 
 def turned(x: Any) -> Any:
