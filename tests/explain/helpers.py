@@ -9,7 +9,7 @@ from typing import Any
 
 import kinematika
 from kinematika.explain import build
-from kinematika.explain.document import Document
+from kinematika.explain.document import Document, Section
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
@@ -73,3 +73,16 @@ def is_close(sol: kinematika.Solution, a: Any, b: Any, scale: float) -> bool:
     b = b if isinstance(b, tuple) else (b,)
     return len(a) == len(b) and all(math.isclose(x, y, rel_tol=1e-7, abs_tol=1e-9 * max(scale, 1e-12))
                                     for x, y in zip(a, b))
+
+
+def section(doc: Document, key: str) -> Section:
+    """The document's section whose title is message `key` (sec.centres, sec.velocities …)."""
+    return next(s for s in doc.sections if s.title.key == key)
+
+
+def blocks(sec: Section) -> list:
+    """Every block of a section, its subsections' blocks in their place."""
+    out: list = []
+    for b in sec.blocks:
+        out += blocks(b) if isinstance(b, Section) else [b]
+    return out

@@ -6,20 +6,12 @@ from __future__ import annotations
 
 import sympy
 
-from kinematika.explain.document import CentreNote, Derived, Equation, Section, Table
+from kinematika.explain.document import CentreNote, Derived, Equation, Table
 
 from .helpers import SEEDS, explained, num, rendered
+from .helpers import blocks as _blocks, section as _section
 
 
-def _section(doc, key: str) -> Section:
-    return next(s for s in doc.sections if s.title.key == key)
-
-
-def _blocks(sec: Section) -> list:
-    out: list = []
-    for b in sec.blocks:
-        out += _blocks(b) if isinstance(b, Section) else [b]
-    return out
 
 
 def _notes(doc) -> list[CentreNote]:

@@ -14,18 +14,9 @@ from kinematika.explain.document import CentreNote, Derived, Equation, Msg, Sect
 
 from tests.conftest import sampled
 
-from .helpers import explained, num
+from .helpers import blocks, explained, num, section
 
 
-def section(doc, key: str) -> Section:
-    return next(s for s in doc.sections if s.title.key == key)
-
-
-def blocks(sec: Section) -> list:
-    out: list = []
-    for b in sec.blocks:
-        out += blocks(b) if isinstance(b, Section) else [b]
-    return out
 
 
 def steps(doc, key: str = "sec.velocities") -> list[Section]:

@@ -13,7 +13,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any, Optional
 
-from ..errors.said import ENGLISH, Catalogue
+from ..errors.said import ENGLISH, Catalogue, read_catalogue
 
 LOCALES = Path(__file__).resolve().parent / "locales"
 
@@ -21,10 +21,7 @@ LOCALES = Path(__file__).resolve().parent / "locales"
 @lru_cache(maxsize=None)
 def catalogue(lang: str) -> Catalogue:
     """The figures' words in `lang` (English for a language kinematika does not speak)."""
-    path = LOCALES / f"{lang}.ftl"
-    if not path.is_file():
-        lang, path = ENGLISH, LOCALES / f"{ENGLISH}.ftl"
-    return Catalogue(lang, path.read_text(encoding="utf-8"))
+    return read_catalogue(LOCALES, lang)
 
 
 def word(key: str, lang: Optional[str] = None, **args: Any) -> str:

@@ -241,10 +241,16 @@ class Catalogue:
         return str(text)
 
 
+def read_catalogue(folder: Path, lang: str) -> Catalogue:
+    """The Fluent catalogue `folder/LANG.ftl` (English for a language kinematika does not
+    speak): the errors' here, the figures' words in `draw.words`."""
+    path = folder / f"{lang}.ftl"
+    if not path.is_file():
+        lang, path = ENGLISH, folder / f"{ENGLISH}.ftl"
+    return Catalogue(lang, path.read_text(encoding="utf-8"))
+
+
 @lru_cache(maxsize=None)
 def catalogue(lang: str) -> Catalogue:
     """The errors' catalogue of `lang` (English for a language kinematika does not speak)."""
-    path = LOCALES / f"{lang}.ftl"
-    if not path.is_file():
-        lang, path = ENGLISH, LOCALES / f"{ENGLISH}.ftl"
-    return Catalogue(lang, path.read_text(encoding="utf-8"))
+    return read_catalogue(LOCALES, lang)
