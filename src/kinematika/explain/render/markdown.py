@@ -52,14 +52,14 @@ class MarkdownRenderer(Renderer):
             text = self.esc(unicode_name(self.spelt(n.text))).replace("\\_", "_")
             return text if self.code else f"*{text}*"
         article, text = self.articled(n)
-        text = self.esc(text)
+        text = self.points(text)
         return self.esc(article) + (f"*{text}*" if n.kind == "body" and not self.code else text)
 
     def symbol(self, s: Sym) -> str:
         """A symbol in plain text: v_B, a_B^n; a subscript of more than one name in braces,
         so that it cannot be read as a division or a difference: ω_{3/2}, v_{A∈3/2},
         v_{rel,A}, v_{O2-A}."""
-        sub = self.esc(self.sub_text(s)).replace("\\_", "_")
+        sub = self.centred(self.sub_text(s, centres=False), lambda t: self.esc(t).replace("\\_", "_"), self.symbol)
         if any(c in sub for c in COMPOUND):
             sub = "{" + sub + "}"
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
