@@ -300,8 +300,15 @@ class Renderer(ABC):
         return self.esc(str(x))
 
     def inline(self, items: list) -> str:
-        """Inline items (text, symbols, values …) written in a row."""
-        return "".join(self.arg(i) for i in items)
+        """Inline items (text, symbols, values …) written in a row; a point and a centre's
+        symbol side by side (a segment to the centre, the arm D I_roda1) set apart by a space,
+        as the notes write CIR^roda_T C_roda, never DI_roda1."""
+        out = []
+        for k, i in enumerate(items):
+            if k and _segment_end(items[k - 1]) and _segment_end(i) and "I" in (_base(items[k - 1]), _base(i)):
+                out.append(" ")
+            out.append(self.arg(i))
+        return "".join(out)
 
     def cell(self, c: Any) -> str:
         """A table cell; answers come as [(label, Value), ...]."""
@@ -726,3 +733,12 @@ class Renderer(ABC):
 
 def _unit(s: Sym) -> str:
     return {"v": "speed", "a": "accel", "ω": "rate", "α": "rate2", "ω×ω": "rate2"}.get(s.base, "")
+
+
+def _segment_end(x: Any) -> bool:
+    """Whether `x` can end a segment written in a row: a point's name or a centre's symbol."""
+    return (isinstance(x, Name) and x.kind == "point") or (isinstance(x, Sym) and x.base == "I")
+
+
+def _base(x: Any) -> str:
+    return x.base if isinstance(x, Sym) else ""

@@ -6,7 +6,7 @@ import base64
 import re
 from typing import Any
 
-from ..document import Drawing, Equation, Figure, Name, Sym
+from ..document import CENTRE_POINT_RE, Drawing, Equation, Figure, Name, Sym
 from ...text import shown_lines
 from .base import Renderer
 from .html import LONG
@@ -59,8 +59,9 @@ class MarkdownRenderer(Renderer):
         """A symbol in plain text: v_B, a_B^n; a subscript of more than one name in braces,
         so that it cannot be read as a division or a difference: ω_{3/2}, v_{A∈3/2},
         v_{rel,A}, v_{O2-A}."""
-        sub = self.centred(self.sub_text(s, centres=False), lambda t: self.esc(t).replace("\\_", "_"), self.symbol)
-        if any(c in sub for c in COMPOUND):
+        raw = self.sub_text(s, centres=False)
+        sub = self.centred(raw, lambda t: self.esc(t).replace("\\_", "_"), self.symbol)
+        if any(c in sub for c in COMPOUND) or sub != raw and CENTRE_POINT_RE.search(raw):      # v_{I_OQ}
             sub = "{" + sub + "}"
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
 
