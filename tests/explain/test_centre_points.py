@@ -9,8 +9,6 @@ import re
 
 import pytest
 
-from kinematika.explain.document import CENTRE_POINT_RE
-
 from .helpers import LANGS, SEEDS, explained, rendered
 from .test_points_named import _words
 
@@ -51,6 +49,8 @@ def test_the_two_bars_centres_are_their_symbols(lang):
 def test_the_document_holds_one_token_per_centre():
     """The document is one for every language: C5-1.2's two centres are points named by
     their bodies' ids (the token), resolved per language by the renderer."""
+    from kinematika.explain.document import CENTRE_POINT_RE
+
     _, doc = explained("seed_c5_1_2_bar_on_inclined_wheels")
     found = {m.group(1) for eq in doc.equations() for t in [eq.target] + [t for s in eq.sides for t in s]
              for m in CENTRE_POINT_RE.finditer(t.sym.sub)}
