@@ -61,7 +61,7 @@ class MarkdownRenderer(Renderer):
         v_{rel,A}, v_{O2-A}."""
         raw = self.sub_text(s, centres=False)
         sub = self.centred(raw, lambda t: self.esc(t).replace("\\_", "_"), self.symbol)
-        if any(c in sub for c in COMPOUND) or sub != raw and CENTRE_POINT_RE.search(raw):      # v_{I_OQ}
+        if any(c in sub for c in COMPOUND) or CENTRE_POINT_RE.search(raw):      # v_{I_OQ}
             sub = "{" + sub + "}"
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
 
