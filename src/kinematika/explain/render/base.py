@@ -528,7 +528,7 @@ class Renderer(ABC):
         sub = self.numbered(c)
         return f"{c.base}_{{{sub}}}" if " " in sub else f"{c.base}_{sub}"
 
-    def centred(self, text: str, write: Callable[[str], str], centre: Callable[[Sym], str]) -> str:
+    def centred(self, text: str, write: Callable[[str], str], centre: Callable[[Sym], str], gap: str = " ") -> str:
         """`text` (a point's name, a segment, a subscript) with each centre placed as a point
         written as its symbol in this language (`centre`), the rest by `write`. In a segment
         the symbol stands apart from the other point by a space, as the notes write
@@ -543,8 +543,8 @@ class Renderer(ABC):
                 continue
             before, after = parts[k - 1], parts[k + 1]
             end = before[-1:]
-            lead = " " if (end and (end.isalnum() or end in "'′")) or (k > 1 and not before) else ""
-            trail = " " if after[:1].isalnum() else ""
+            lead = gap if (end and (end.isalnum() or end in "'′")) or (k > 1 and not before) else ""
+            trail = gap if after[:1].isalnum() else ""
             out.append(lead + centre(self.centre_sym(part)) + trail)
         return "".join(out)
 
