@@ -179,10 +179,10 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
     """The centres relative to the frame that the first centres section places by a
     construction (Aronhold–Kennedy, a joint's line), for the velocity steps to start from:
     {name: (body, point)} of those at a point (a point of the body there keeps its name,
-    else I14), and {body: note} of those at infinity (the body translates)."""
+    else I, or the centre's own symbol when there are several), and {body: note} of those at infinity (the body translates)."""
     if not centres_first(ctx):       # decided by the builder with the order of solution
         return {}, {}
-    from ..draw.names import pair_tag
+    from .document import centre_point
 
     made, chosen, _ = _notes(ctx)
     points: dict[str, tuple[str, tuple]] = {}
@@ -202,9 +202,9 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
     unnamed = sum(1 for _, _, name in found if name is None)
     for body, where, name in found:
         if name is None:
-            # the notes' CIR ≡ I: one centre placed on a page is the point I; several, I and
-            # the bodies' numbers (I14, I16), a name the same in every language
-            name = "I" if unnamed == 1 else "I" + pair_tag(ctx.model, ctx.frame, body)
+            # the notes' CIR ≡ I: one centre placed on a page is the point I; several, each
+            # its own symbol throughout (I_OQ, never a number: `document.centre_point`)
+            name = "I" if unnamed == 1 else centre_point(body)
             while name in ctx.inst.points:          # never a point's name
                 name += "'"
         ctx.name_position(name, where)

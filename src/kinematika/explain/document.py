@@ -7,6 +7,7 @@ and format, and tests can check its equations on the raw values.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Any, Optional, Union
 
@@ -94,6 +95,21 @@ class Names:
 
     def __len__(self) -> int:
         return len(self.items)
+
+
+# A centre placed as a point when a page places several (C5-1.2's two bars'): its point name
+# in the document is this token around the moving body's id, which every renderer writes as
+# the centre's symbol in the page's language (I_OQ, I_16 where the bodies go by numbers),
+# wherever a point is written: names, subscripts (v_{I_OQ}), segments (O I_OQ), figures. The
+# body's label is per language and the document is one for all, so the name is resolved when
+# the page is written, as a body's label is. Private-use characters: no model name holds them.
+CENTRE_POINT = "\ue010{}\ue011"
+CENTRE_POINT_RE = re.compile("\ue010([^\ue011]*)\ue011")
+
+
+def centre_point(body: str) -> str:
+    """The point name of `body`'s instant centre relative to the frame (`CENTRE_POINT`)."""
+    return CENTRE_POINT.format(body)
 
 
 def point(name: str) -> Name:

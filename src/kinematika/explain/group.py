@@ -33,7 +33,7 @@ import numpy as np
 from ..algebra.vectors import dot, scale, sub
 from ..model.model import Joint
 from .context import Ctx, alpha_sym, omega_sym, segment
-from .document import (Ann, Derived, Equation, Msg, Name, Sym, Term, Value, body as body_name, joint as joint_name, msg,
+from .document import (CENTRE_POINT_RE, Ann, Derived, Equation, Msg, Name, Sym, Term, Value, body as body_name, joint as joint_name, msg,
                        point as point_name)
 from .order import jointed
 from .contacts import geometric_blocks
@@ -1217,6 +1217,8 @@ def centre_site(ctx: Ctx, name: str, body: str):
     """The sentence that the instant centre placed before (a point of the body there, or
     I14) has no velocity."""
     key = "centre.site_i" if name in ctx.centre_points else "centre.site"
+    if CENTRE_POINT_RE.fullmatch(name):         # the point is the symbol itself: no "I_OQ ≡ I_OQ"
+        key = "centre.site_s"
     return msg(key, point=point_name(name), body=body_name(body), frame=Name(ctx.frame, "body", reference=True),
                centre=Sym("I", f"{ctx.frame},{body}", vector=False), sym=Sym("v", ctx.point_label(name, body)))
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 from abc import ABC, abstractmethod
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 from babel.lists import format_list
 
@@ -14,7 +14,7 @@ from ...text import shown_lines
 from ...draw.names import centre_subscript
 from ...model.wording import ARTICLES, NO_ARTICLE, Wording, part_subscript, rate_key
 from ..catalogue import CONTRACTIONS, Catalogue
-from ..document import (Ann, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Own,
+from ..document import (CENTRE_POINT_RE, Ann, centre_point, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Own,
                         Described, Section, Sym, Table, Told, Value)
 from .names import written as written_name
 from .unicode import formula_values
@@ -258,7 +258,7 @@ class Renderer(ABC):
     def plain(self, x: Any) -> str:
         """The text a name argument is read as, in the reader's language (for elision)."""
         if isinstance(x, Name):
-            return self.called(x)
+            return CENTRE_POINT_RE.sub("I", self.called(x))      # a centre's point reads as its letter
         if isinstance(x, Names):
             return self.plain(x.items[0]) if x.items else ""
         if isinstance(x, Lead):
@@ -279,7 +279,7 @@ class Renderer(ABC):
             articled = ARTICLES.get(self.lang, NO_ARTICLE).match(self.plain(x.item))
             return self.capital(text) if isinstance(x.item, Msg) or articled else text
         if isinstance(x, str):
-            return self.esc(x)
+            return self.points(x)
         if isinstance(x, Sym):
             return self.sym(x)
         if isinstance(x, Value):
@@ -300,8 +300,15 @@ class Renderer(ABC):
         return self.esc(str(x))
 
     def inline(self, items: list) -> str:
-        """Inline items (text, symbols, values …) written in a row."""
-        return "".join(self.arg(i) for i in items)
+        """Inline items (text, symbols, values …) written in a row; a point and a centre's
+        symbol side by side (a segment to the centre, the arm D I_roda1) set apart by a space,
+        as the notes write CIR^roda_T C_roda, never DI_roda1."""
+        out = []
+        for k, i in enumerate(items):
+            if k and _segment_end(items[k - 1]) and _segment_end(i) and "I" in (_base(items[k - 1]), _base(i)):
+                out.append(" ")
+            out.append(self.arg(i))
+        return "".join(out)
 
     def cell(self, c: Any) -> str:
         """A table cell; answers come as [(label, Value), ...]."""
@@ -493,15 +500,58 @@ class Renderer(ABC):
         """A symbol in a figure, or a point's name (a polygon's image b, b∈2 with its body by
         number): its SVG text and measured size."""
         if isinstance(s, str):
-            return plain_text(self.numbered(Sym("", s)) if "∈" in s else s)
+            return plain_text(self.centred(self.numbered(Sym("", s)) if "∈" in s else s, lambda t: t,
+                                           self.centre_text))
         s = self.noted(s)
         return sym_text(s.base, self.sub_text(s), s.sup)
 
-    def sub_text(self, s: Sym) -> str:
+    def sub_text(self, s: Sym, centres: bool = True) -> str:
         """The subscript of a symbol: the language's word for a part of a motion (arr, rel,
-        Cor: `model.wording.PART_SUBSCRIPTS`) and the name."""
+        Cor: `model.wording.PART_SUBSCRIPTS`) and the name; a centre placed as a point
+        written as plain text, I_OQ (`centres` False: left as its token, for a format
+        that sets it as a symbol inside the subscript)."""
         word = part_subscript(s.sub_key, self.lang) if s.sub_key else ""
-        return shown_lines(",".join(p for p in (word, self.numbered(s)) if p))
+        text = ",".join(p for p in (word, self.numbered(s)) if p)
+        if centres:
+            return self.centred(text, shown_lines, self.centre_text)
+        parts = CENTRE_POINT_RE.split(text)        # the tokens kept as they are, the rest shown
+        return "".join(shown_lines(p) if k % 2 == 0 else centre_point(p) for k, p in enumerate(parts))
+
+    # centres placed as points ------------------------------------------------------------------
+    def centre_sym(self, body: str) -> Sym:
+        """The symbol of `body`'s instant centre relative to the frame (I_OQ), which a centre
+        placed as a point is written as (`document.centre_point`)."""
+        return Sym("I", f"{self.doc_frame()},{body}", vector=False)
+
+    def centre_text(self, c: Sym) -> str:
+        """A centre's symbol as plain text inside a subscript or a figure: I_OQ, I_{roda sup}."""
+        sub = self.numbered(c)
+        return f"{c.base}_{{{sub}}}" if " " in sub else f"{c.base}_{sub}"
+
+    def centred(self, text: str, write: Callable[[str], str], centre: Callable[[Sym], str], gap: str = " ") -> str:
+        """`text` (a point's name, a segment, a subscript) with each centre placed as a point
+        written as its symbol in this language (`centre`), the rest by `write`. In a segment
+        the symbol stands apart from the other point by a space, as the notes write
+        CIR^roda_T C_roda: O I_OQ, I_OQ O, never OI_OQ."""
+        parts = CENTRE_POINT_RE.split(text)
+        if len(parts) == 1:
+            return write(text)
+        out = []
+        for k, part in enumerate(parts):
+            if k % 2 == 0:
+                out.append(write(part) if part else "")
+                continue
+            before, after = parts[k - 1], parts[k + 1]
+            end = before[-1:]
+            lead = gap if (end and (end.isalnum() or end in "'′")) or (k > 1 and not before) else ""
+            trail = gap if after[:1].isalnum() else ""
+            out.append(lead + centre(self.centre_sym(part)) + trail)
+        return "".join(out)
+
+    def points(self, text: str) -> str:
+        """Text that may hold a centre placed as a point (a segment O I_OQ), escaped, the
+        centre as the format writes its symbol."""
+        return self.centred(text, self.esc, self.sym)
 
     # values ---------------------------------------------------------------------------------
     def value(self, v: Value) -> str:
@@ -683,3 +733,12 @@ class Renderer(ABC):
 
 def _unit(s: Sym) -> str:
     return {"v": "speed", "a": "accel", "ω": "rate", "α": "rate2", "ω×ω": "rate2"}.get(s.base, "")
+
+
+def _segment_end(x: Any) -> bool:
+    """Whether `x` can end a segment written in a row: a point's name or a centre's symbol."""
+    return (isinstance(x, Name) and x.kind == "point") or (isinstance(x, Sym) and x.base == "I")
+
+
+def _base(x: Any) -> str:
+    return x.base if isinstance(x, Sym) else ""

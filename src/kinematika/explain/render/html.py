@@ -54,13 +54,13 @@ class HtmlRenderer(Renderer):
         article, text = self.articled(n)
         if n.kind == "body":
             return self.esc(article) + f'<i class="bd">{self.esc(text)}</i>'
-        return f'<span class="{"jt" if n.kind == "joint" else "pt"}">{self.esc(text)}</span>'
+        return f'<span class="{"jt" if n.kind == "joint" else "pt"}">{self.points(text)}</span>'
 
     def symbol(self, s: Sym) -> str:
         """A symbol: a vector's letter bold, a scalar's italic, with its subscript and superscript."""
         base = f'<b class="v">{escape(s.base)}</b>' if s.vector else f"<i>{escape(s.base)}</i>"
-        sub = self.sub_text(s)
-        return base + (f"<sub>{escape(sub)}</sub>" if sub else "") + (f"<sup>{escape(s.sup)}</sup>" if s.sup else "")
+        sub = self.centred(self.sub_text(s, centres=False), lambda t: escape(t, quote=False), self.symbol)
+        return base + (f"<sub>{sub}</sub>" if sub else "") + (f"<sup>{escape(s.sup)}</sup>" if s.sup else "")
 
     def power(self, mantissa: str, exponent: int) -> str:
         """m×10ⁿ with the exponent as a superscript."""

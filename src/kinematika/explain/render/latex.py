@@ -72,7 +72,7 @@ class LatexRenderer(Renderer):
             return f"${latex_name(self.spelt(n.text))}$"
         article, text = self.articled(n)
         command = {"body": "emph"}.get(n.kind, "textsf")
-        return self.esc(article) + f"\\{command}{{{self.esc(text)}}}"
+        return self.esc(article) + f"\\{command}{{{self.points(text) if n.kind == 'point' else self.esc(text)}}}"
 
     def math_sym(self, s: Sym) -> str:
         """A symbol inside math: an arrow over a vector's letter, the subscript and superscript as upright text; ω₁ × ω₂ for the cross term of two rates."""
@@ -83,8 +83,9 @@ class LatexRenderer(Renderer):
         s = self.noted(s)
         base = MATH.get(s.base, s.base) if s.base != "ω×ω" else r"\omega\times\omega"
         base = rf"\vec{{{base}}}" if s.vector else base
-        sub = self.sub_text(s)
-        return base + (f"_{{{tex_math_text(sub)}}}" if sub else "") + (f"^{{{tex_math_text(s.sup)}}}" if s.sup else "")
+        sub = self.centred(self.sub_text(s, centres=False), lambda t: tex_math_text(t) if t else "", self.math_sym,
+                           gap=r"\ ")             # a centre's symbol inside: v_{O\ I_{OQ}}
+        return base + (f"_{{{sub}}}" if sub else "") + (f"^{{{tex_math_text(s.sup)}}}" if s.sup else "")
 
     def symbol(self, s: Sym) -> str:
         """A symbol in running text: `math_sym` in $…$."""

@@ -6,7 +6,7 @@ import base64
 import re
 from typing import Any
 
-from ..document import Drawing, Equation, Figure, Name, Sym
+from ..document import CENTRE_POINT_RE, Drawing, Equation, Figure, Name, Sym
 from ...text import shown_lines
 from .base import Renderer
 from .html import LONG
@@ -52,15 +52,16 @@ class MarkdownRenderer(Renderer):
             text = self.esc(unicode_name(self.spelt(n.text))).replace("\\_", "_")
             return text if self.code else f"*{text}*"
         article, text = self.articled(n)
-        text = self.esc(text)
+        text = self.points(text)
         return self.esc(article) + (f"*{text}*" if n.kind == "body" and not self.code else text)
 
     def symbol(self, s: Sym) -> str:
         """A symbol in plain text: v_B, a_B^n; a subscript of more than one name in braces,
         so that it cannot be read as a division or a difference: ω_{3/2}, v_{A∈3/2},
         v_{rel,A}, v_{O2-A}."""
-        sub = self.esc(self.sub_text(s)).replace("\\_", "_")
-        if any(c in sub for c in COMPOUND):
+        raw = self.sub_text(s, centres=False)
+        sub = self.centred(raw, lambda t: self.esc(t).replace("\\_", "_"), self.symbol)
+        if any(c in sub for c in COMPOUND) or CENTRE_POINT_RE.search(raw):      # v_{I_OQ}
             sub = "{" + sub + "}"
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
 
