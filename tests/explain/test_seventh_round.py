@@ -1,0 +1,29 @@
+"""Issue 30, seventh round: the fifth audit's items, each a rule or a model change that
+matches the course notes (seed 002), checked on the pages a student reads."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+import yaml
+
+from .helpers import EXAMPLES, LANGS, explained, rendered
+
+# -- (a) the vehicles ask what the notes ask: no acceleration part -----------------------------------------------------
+# C5-2.1 asks the chassis' centre, the precession ψ̇, the rear left wheel's centre velocity and
+# its spin φ̇; C5-2.2 the spin ω′ of S2's wheels (through v_O, v_P, S2's centre and ω_S2).
+# Nothing there is an acceleration, so the page has no acceleration part and states no
+# acceleration datum (the drivers' "a_F along (1; 1) is 0", "a_W1 = (0; 0)").
+VEHICLES = ("seed_c5_2_1_tricycle", "seed_c5_2_2_articulated")
+
+
+@pytest.mark.parametrize("name", VEHICLES)
+def test_a_vehicle_asks_no_acceleration(name):
+    asks = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8"))["ask"]
+    assert not {kind for ask in asks for kind in ask} & {"acceleration", "intrinsic", "alpha", "curvature"}
+    _, doc = explained(name)
+    assert not any(s.title.key == "sec.accelerations" for s in doc.sections), name
+    for lang in LANGS:
+        page = rendered(name, lang, drawings=False)
+        assert not re.search(r"\ba_\{?[A-Z]", page), (name, lang)
