@@ -42,3 +42,32 @@ def test_the_articulated_vehicles_wheels_are_centres(lang):
     assert sorted(rows) == ["W1", "W2", "W3", "W4"], rows
     for point, words in rows.items():
         assert CENTRE_WORDS[lang] in words and "*" not in words, (lang, point, words)
+
+
+# -- (c) a model's own words write its symbols as the page does --------------------------------------------------------
+# C5-E.6's remark ties the chainring and sprocket by their rates as the page writes them (ω,
+# not the notes' Ω); in HTML the symbols typed X_sub in a model's words (its remark's ω_pinyó,
+# its note's ℜ_P, the slides' v_B) are set as the page sets symbols, with a <sub>; Markdown
+# writes a subscript with _ itself, so its text stays as typed.
+def _html_text(name: str, lang: str) -> str:
+    page = rendered(name, lang, "html", drawings=False)
+    return re.sub(r"<svg.*?</svg>", "", page, flags=re.S)
+
+
+RATES = {"en": ("sprocket", "chainring"), "es": ("piñón", "plato"), "ca": ("pinyó", "plat"), "eu": ("pinoia", "platera")}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_bicycles_remark_writes_the_pages_rates(lang):
+    small, big = RATES[lang]
+    assert f"(r ω_{small} = R ω_{big})" in rendered("seed_c5_e6_bicycle", lang, drawings=False)
+    html = _html_text("seed_c5_e6_bicycle", lang)
+    assert f"r <i>ω</i><sub>{small}</sub> = R <i>ω</i><sub>{big}</sub>" in html
+    assert "Ω" not in html and f"ω_{small}" not in html
+    assert "<i>ℜ</i><sub>P</sub> = v(P)²/aⁿ" in html and "ℜ_P" not in html
+
+
+def test_a_data_remarks_symbol_is_subscripted_in_html():
+    html = _html_text("seed_001_p_pair_coriolis", "ca")
+    assert "direcció de <i>v</i><sub>B</sub> (perpendicular a EB)" in html and "v_B" not in html
+    assert "direcció de v_B (perpendicular a EB)" in rendered("seed_001_p_pair_coriolis", "ca", drawings=False)
