@@ -71,3 +71,29 @@ def test_a_data_remarks_symbol_is_subscripted_in_html():
     html = _html_text("seed_001_p_pair_coriolis", "ca")
     assert "direcció de <i>v</i><sub>B</sub> (perpendicular a EB)" in html and "v_B" not in html
     assert "direcció de v_B (perpendicular a EB)" in rendered("seed_001_p_pair_coriolis", "ca", drawings=False)
+
+
+# -- (d) the ground's word is introduced where the fixed part is listed ------------------------------------------------
+# A ground named after a part with a shape (C5-1.6's fixed pulley …) is the reference of the
+# motions later, "*lurra* solidoarekiko": the structure's table says that word at the part.
+# A ground with no shape (C5-1.5's ceiling) keeps its one name and its "fixed" mark.
+GROUND = {"en": "*ground*", "es": "*suelo*", "ca": "*terra*", "eu": "*lurra*"}
+PARTS = {"seed_c5_1_6_belt": {"en": "fixed pulley", "eu": "polea finkoa"},
+         "seed_c5_1_7_semicylinder": {"en": "semicylinder", "eu": "euskarri erdizilindrikoa"},
+         "seed_c5_1_8_contact_points": {"en": "fixed cylinder", "eu": "zilindro finkoa"},
+         "seed_c5_e1_cavity": {"en": "cylindrical track", "eu": "pista zilindrikoa"},
+         "seed_c5_e2_gear_change": {"en": "fixed central wheel", "eu": "gurpil zentral finkoa"}}
+
+
+@pytest.mark.parametrize("name", sorted(PARTS))
+@pytest.mark.parametrize("lang", ("en", "eu"))
+def test_the_ground_word_is_introduced_at_the_part(name, lang):
+    page = rendered(name, lang, drawings=False)
+    assert f"| 1 | *{PARTS[name][lang]}* ({GROUND[lang]}) |" in page
+    assert page.index(GROUND[lang]) > page.index("| 1 | "), (name, lang)     # not used before the table says it
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_a_shapeless_ground_keeps_its_fixed_mark(lang):
+    page = rendered("seed_c5_1_5_pulley_block", lang, drawings=False)
+    assert re.search(r"^\| 1 \| \*[^*]+\* \((fixed|fijo|fix|finkoa)\) \|", page, re.M)
