@@ -331,16 +331,17 @@ def test_a_centre_is_found_as_the_notes_find_it(name, lang, line):
 
 # velocity drivers whose component is the point's whole motion (the notes' v_U = (←v)), by
 # hand from each statement: a wheel's centre on flat ground, a slider on its guide, a pulley's
-# centre on a vertical strand; and the one that truly is a component (the tricycle's front
-# wheel's acceleration has a normal part, the chassis turning about (0, L): v₀²/(√2 L)·…)
+# centre on a vertical strand; and the one that truly is a component (the car's rear-axle
+# midpoint M, driven at a steady v along MK, turns with the chassis about the centre on the
+# rear axle line: its acceleration has the normal part v·v tan δ/L across MK)
 WHOLE = {
     "seed_c5_e4_upper_wheel": ["Given: v_U = (−v, 0), to the left.", "Given: a_U = (−v̇, 0), to the left."],
     "seed_c5_e6_bicycle": ["Given: v_H = (v, 0), to the right.", "Given: a_H = (v̇, 0), to the right."],
     "seed_c5_e5_unequal_wheels": ["Given: v_A = (v, 0), to the right."],
     "seed_c5_1_5_pulley_block": ["Given: v_C1 = (0, −v), downwards.", "Given: v_C3 = (0, −2·v), downwards."],
     "seed_001_rolling_pair": ["Given: v_A = (0.5, 0) m/s, to the right."],
-    "seed_c5_2_1_tricycle": ["Given: v_{F∈wheel} = (√2·v₀/2, √2·v₀/2), along (1, 1).",
-                             "Given: the component of a_{F∈wheel} along (1, 1) is 0."],
+    "seed_c5_2_1_tricycle": ["Given: v_{F∈wheel} = (√2·v₀/2, √2·v₀/2), along (1, 1)."],
+    "car_wheel_steering": ["Given: the component of a_M along MK is 0 m/s²."],
 }
 
 

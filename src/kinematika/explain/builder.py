@@ -29,7 +29,7 @@ from .polygon import degenerate, level_polygon, polygon
 from .terms import acceleration_terms
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
-from .structure import structure_section, values_table
+from .structure import ground_part, structure_section, values_table
 from .translating import translations
 
 
@@ -124,16 +124,6 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     doc.values = ctx.drawn_values() if ctx.symbolic else {}
     return doc
 
-
-def ground_part(ctx: Ctx) -> bool:
-    """Whether the model names its ground after a part of it that carries a shape (the fixed
-    pulley of C5-1.6, a track): the text names the part where it acts (a contact, the
-    structure's table) and says the ground where it is the reference of a motion, as the notes
-    do ("el CIR del braç respecte al terra és el centre O de la politja fixa"). A ground with
-    no shape of its own keeps its one name on the page, whatever is welded to it (sixth round:
-    C5-1.5's ceiling, *sabaia*, was also "*lurra* solidoarekiko" beside ω_blokea = ω_sabaia;
-    its tied strand is a body named on its own, *1. kable-zatia*)."""
-    return bool(ctx.planar and ctx.inst.shapes.get(ctx.frame))
 
 
 def joint_places(ctx: Ctx) -> dict:

@@ -97,8 +97,13 @@ def dof_counts(ctx: Ctx) -> dict:
 
 
 def _body_cell(ctx: Ctx, name: str):
-    """The structure table's body: the frame marked fixed, a body welded to it marked part
-    of it (`welded_to_frame`)."""
+    """The structure table's body: the frame marked fixed — or, when the ground is named
+    after a part of it (`ground_part`: C5-1.6's *polea finkoa*), marked with the ground's word
+    the text later writes for the reference, "*polea finkoa* (*lurra*)" — and a body welded
+    to it marked part of it (`welded_to_frame`)."""
+    if name == ctx.frame and ground_part(ctx):
+        return msg("structure.frame_ground", body=Name(name, "body", bare=True),
+                   ground=Name(name, "body", bare=True, reference=True))
     if name == ctx.frame:
         return msg("structure.frame", body=Name(name, "body", bare=True))
     if ctx.fixed(name):
@@ -243,3 +248,15 @@ def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
             + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies
             if b not in belt_runs(ctx) and not ctx.fixed(b)]   # a weld to the frame: part of it
     return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)
+
+def ground_part(ctx: Ctx) -> bool:
+    """Whether the model names its ground after a part of it that carries a shape (the fixed
+    pulley of C5-1.6, a track): the text names the part where it acts (a contact, the
+    structure's table) and says the ground where it is the reference of a motion, as the notes
+    do ("el CIR del braç respecte al terra és el centre O de la politja fixa"). A ground with
+    no shape of its own keeps its one name on the page, whatever is welded to it (sixth round:
+    C5-1.5's ceiling, *sabaia*, was also "*lurra* solidoarekiko" beside ω_blokea = ω_sabaia;
+    its tied strand is a body named on its own, *1. kable-zatia*). The structure's table
+    introduces that word at the part (`_body_cell`), so that "relative to the ground" later
+    names a body the page has listed."""
+    return bool(ctx.planar and ctx.inst.shapes.get(ctx.frame))

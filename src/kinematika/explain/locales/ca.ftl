@@ -30,6 +30,8 @@ col-question = pregunta
 col-answer = resposta
 structure-subscripts = En els símbols, { $pairs }.
 structure-frame = { $body } (fix)
+# the fixed body named after a part of the ground: the ground's word (ground-word) beside it
+structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
         [one] està unit
        *[other] estan units

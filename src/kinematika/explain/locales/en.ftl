@@ -30,6 +30,8 @@ col-question = question
 col-answer = answer
 structure-subscripts = In the symbols, { $pairs }.
 structure-frame = { $body } (fixed)
+# the fixed body named after a part of the ground: the ground's word (ground-word) beside it
+structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
         [one] is
        *[other] are

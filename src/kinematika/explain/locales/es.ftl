@@ -30,6 +30,8 @@ col-question = pregunta
 col-answer = respuesta
 structure-subscripts = En los símbolos, { $pairs }.
 structure-frame = { $body } (fijo)
+# the fixed body named after a part of the ground: the ground's word (ground-word) beside it
+structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
         [one] está unido
        *[other] están unidos

@@ -30,6 +30,8 @@ col-question = galdera
 col-answer = erantzuna
 structure-subscripts = Ikurretan, { $pairs }.
 structure-frame = { $body } (finkoa)
+# the fixed body named after a part of the ground: the ground's word (ground-word) beside it
+structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
         [one] dago: solido finkoaren zati da, ez solido mugikorra
        *[other] daude: solido finkoaren zati dira, ez solido mugikorrak

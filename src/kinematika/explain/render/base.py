@@ -23,6 +23,10 @@ from .svg import Text, plain_text, sym_text
 TOKEN = "\ue000{}\ue001"
 LEGEND = "\ue002legend\ue003"        # where the legend of shortened subscripts goes (`render`)
 TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
+# a symbol typed in a model's own words: one letter (with its marks: φ̇) that ends no word, an
+# underscore, then a subscript of letters and digits or one in braces (v_B, Ω_pinyó, ℜ_P,
+# a_{F∈gurpila}); snake_case (draw_at) is not one, its letter ends a word
+SUBSCRIPTED = re.compile("(?<![\\w\u0300-\u036f])([^\\W\\d_][\u0300-\u036f]*)_(\\{[^{}]+\\}|[^\\W_]+)")
 # what a name's markup begins with before its first letter, by format
 LEADING_MARKUP = {"html": re.compile(r"(?:<[^>]*>)*"), "md": re.compile(r"[*_]*"),
                   "tex": re.compile(r"(?:\\[A-Za-z]+\{)*")}
@@ -249,11 +253,26 @@ class Renderer(ABC):
         names = [n for n in getattr(self.doc, "parameters", ()) if unicode_name(self.spelt(n)) != n
                  and any(c.isdigit() for c in n)]
         if not names:
-            return self.esc(shown_lines(text))
+            return self.typed(shown_lines(text))
         pattern = re.compile(r"(?<![A-Za-z0-9_.])(" + "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
                              + r")(?![A-Za-z0-9_]|\.\d)")         # r1² and (r1) too, not r12, x.r1, r1.5
         parts = pattern.split(shown_lines(text))
-        return "".join(self.formula(sympy.Symbol(part)) if k % 2 else self.esc(part) for k, part in enumerate(parts))
+        return "".join(self.formula(sympy.Symbol(part)) if k % 2 else self.typed(part) for k, part in enumerate(parts))
+
+    def typed(self, text: str) -> str:
+        """A model's own text escaped, each symbol typed in it as X_sub (SUBSCRIPTED: C5-E.6's
+        "r ω_pinyó = R ω_plat", its notes' "ℜ_P = v(P)²/aⁿ", a Data remark's "v_B") written as
+        the page writes its symbols (`subscripted`), so the words and the formulas beside them
+        show one symbol one way."""
+        parts = SUBSCRIPTED.split(text)
+        return "".join(self.subscripted(parts[k], parts[k + 1]) if k % 3 == 1
+                       else self.esc(part) if k % 3 == 0 else "" for k, part in enumerate(parts))
+
+    def subscripted(self, base: str, sub: str) -> str:
+        """A symbol typed base_sub in a model's words (sub perhaps in braces): as typed, which is
+        how a plain-text page (Markdown) writes a subscript itself (v_B, ω_{3/2}); a format with
+        markup overrides it."""
+        return self.esc(f"{base}_{sub}")
 
     def plain(self, x: Any) -> str:
         """The text a name argument is read as, in the reader's language (for elision)."""

@@ -62,6 +62,11 @@ class HtmlRenderer(Renderer):
         sub = self.centred(self.sub_text(s, centres=False), lambda t: escape(t, quote=False), self.symbol)
         return base + (f"<sub>{sub}</sub>" if sub else "") + (f"<sup>{escape(s.sup)}</sup>" if s.sup else "")
 
+    def subscripted(self, base: str, sub: str) -> str:
+        """A symbol typed base_sub in a model's words as `symbol` writes one: the letter in
+        italics, the subscript (its braces dropped) below: ω<sub>pinyó</sub>, not ω_pinyó."""
+        return f"<i>{self.esc(base)}</i><sub>{self.esc(sub.removeprefix('{').removesuffix('}'))}</sub>"
+
     def power(self, mantissa: str, exponent: int) -> str:
         """m×10ⁿ with the exponent as a superscript."""
         return f"{mantissa}×10<sup>{str(exponent).replace('-', '−')}</sup>"
