@@ -97,3 +97,11 @@ def test_the_ground_word_is_introduced_at_the_part(name, lang):
 def test_a_shapeless_ground_keeps_its_fixed_mark(lang):
     page = rendered("seed_c5_1_5_pulley_block", lang, drawings=False)
     assert re.search(r"^\| 1 \| \*[^*]+\* \((fixed|fijo|fix|finkoa)\) \|", page, re.M)
+
+
+@pytest.mark.parametrize("lang,row", [("eu", "| 1 | *lurra* (finkoa) |"), ("ca", "| 1 | *terra* (fix) |")])
+def test_a_ground_already_called_the_ground_is_not_named_twice(lang, row):
+    """C5-E.6's ground carries its road's line but is already called *lurra* / *el terra*:
+    its structure row says it is fixed, never "*lurra* (*lurra*)" (the sixth audit)."""
+    text = rendered("seed_c5_e6_bicycle", lang, "md", False)
+    assert row in text and "*lurra* (*lurra*)" not in text and "*terra* (*terra*)" not in text

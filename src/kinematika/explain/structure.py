@@ -101,7 +101,7 @@ def _body_cell(ctx: Ctx, name: str):
     after a part of it (`ground_part`: C5-1.6's *polea finkoa*), marked with the ground's word
     the text later writes for the reference, "*polea finkoa* (*lurra*)" — and a body welded
     to it marked part of it (`welded_to_frame`)."""
-    if name == ctx.frame and ground_part(ctx):
+    if name == ctx.frame and ground_part(ctx) and not _named_ground(ctx, name):
         return msg("structure.frame_ground", body=Name(name, "body", bare=True),
                    ground=Name(name, "body", bare=True, reference=True))
     if name == ctx.frame:
@@ -248,6 +248,16 @@ def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
             + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies
             if b not in belt_runs(ctx) and not ctx.fixed(b)]   # a weld to the frame: part of it
     return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)
+
+def _named_ground(ctx: Ctx, name: str) -> bool:
+    """Whether the model already calls its ground by the ground's word in some language
+    (C5-E.6's *lurra*, *el terra*): its row then needs no "(*lurra*)" after it."""
+    from ..model.wording import noun
+    from .catalogue import catalogue
+
+    return any(noun(ctx.model.wording.body(name, lang), lang).casefold()
+               == catalogue(lang).format("ground-word", {}).casefold() for lang in ("en", "es", "ca", "eu"))
+
 
 def ground_part(ctx: Ctx) -> bool:
     """Whether the model names its ground after a part of it that carries a shape (the fixed
