@@ -8,7 +8,7 @@ from typing import Optional
 from ..draw.names import body_numbers
 from ..model.model import PointPair
 from .asked import worked
-from .freedom import dof_sentence
+from .freedom import dof_unsaid
 from .context import Ctx
 from .kinds import kind_key, on_fixed_line, rolls, welds
 from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Table, Value, body, msg, names, point
@@ -41,7 +41,8 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     if welded:
         sec.add(msg("structure.welded", bodies=names(welded, "body"), bodies_n=len(welded), frame=body(ctx.frame)))
     counts = dof_counts(ctx)
-    sec.add(dof_sentence(ctx, counts) or msg("structure.dof", **counts))
+    if not dof_unsaid(ctx, counts):
+        sec.add(msg("structure.dof", **counts))
     sec.add(drawing(ctx, "fig.mechanism", velocities=True, accelerations=False, centres=False, curvature=False))
     if not steps:
         return sec

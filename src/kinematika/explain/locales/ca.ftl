@@ -44,7 +44,6 @@ structure-dof = El mecanisme té { $dof ->
         [one] un grau
        *[other] { $dof } graus
     } de llibertat.
-structure-dof_whole = El mecanisme té { $dof } graus de llibertat, i l’enunciat dona { $data } dades: { $sym } es dona sencera, direcció i mòdul, dues condicions. La seva direcció treu el moviment lateral que els enllaços deixen a { $bodies }.
 shape-circle = circumferència
 shape-line = recta
 shape-disc = disc

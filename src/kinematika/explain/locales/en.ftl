@@ -47,7 +47,6 @@ structure-dof = The mechanism has { $dof ->
         [one] one degree
        *[other] { $dof } degrees
     } of freedom.
-structure-dof_whole = The mechanism has { $dof } degrees of freedom, and the statement gives { $data } data: { $sym } is given whole, direction and magnitude, two conditions. Its direction takes away the sideways motion the joints leave to { $bodies }.
 shape-circle = circle
 shape-line = line
 shape-disc = disc

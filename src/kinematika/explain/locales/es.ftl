@@ -44,7 +44,6 @@ structure-dof = El mecanismo tiene { $dof ->
         [one] un grado
        *[other] { $dof } grados
     } de libertad.
-structure-dof_whole = El mecanismo tiene { $dof } grados de libertad, y el enunciado da { $data } datos: { $sym } se da entera, dirección y módulo, dos condiciones. Su dirección quita el movimiento lateral que los enlaces dejan a { $bodies }.
 shape-circle = circunferencia
 shape-line = recta
 shape-disc = disco

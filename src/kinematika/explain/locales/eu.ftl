@@ -44,7 +44,6 @@ structure-dof = Mekanismoak { $dof ->
         [one] askatasun-gradu bat du
        *[other] { $dof } askatasun-gradu ditu
     }.
-structure-dof_whole = Mekanismoak { $dof } askatasun-gradu ditu, eta enuntziatuak { $data } datu ematen ditu: { $sym } osorik ematen da, norabidea eta modulua, bi baldintza. Haren norabideak loturek { $bodies } solidoei uzten dieten alboko mugimendua kentzen du.
 shape-circle = zirkunferentzia
 shape-line = zuzena
 shape-disc = diskoa
