@@ -485,10 +485,10 @@ def test_a_chassis_on_two_wheels_on_one_line_slides_along_it():
 def test_the_trailing_chassis_goes_by_equiprojectivity():
     """C5-2.2: S1 translates, so v_O = rω along it; "la propietat d'equiprojectivitat permet
     obtenir la velocitat del punt mig de l'eix (P)", then S2's centre, and its ω "a partir de
-    la velocitat de P i del CIR". By hand (S1 along x, S2 trailing at 45°, OP2 = a): P2 moves
-    along S2's wheels, e = (1, 1)/√2, and (v_P2 − v_O) · OP2 = 0 with v_O = (rω, 0) gives
-    v_P2 = (rω/√2) e = (rω/2, rω/2); the centre I = (0, −√2 a) (S2's axle and the
-    perpendicular to v_O at O), I P2 = (−a/√2, a/√2), so ω_S2 = −√2 rω / (2a). The
+    la velocitat de P i del CIR". By hand (S1 along x, S2 trailing at 45°, OP = a): P moves
+    along S2's wheels, e = (1, 1)/√2, and (v_P − v_O) · OP = 0 with v_O = (rω, 0) gives
+    v_P = (rω/√2) e = (rω/2, rω/2); the centre I = (0, −√2 a) (S2's axle and the
+    perpendicular to v_O at O), I P = (−a/√2, a/√2), so ω_S2 = −√2 rω / (2a). The
     tricycle (C5-2.1), whose front wheel's velocity is a datum, keeps the notes' road there:
     the centre first, then every point about it."""
     import sympy
@@ -500,7 +500,7 @@ def test_the_trailing_chassis_goes_by_equiprojectivity():
                   and b.args["body"].text == "S2")
     assert len(said) == 1 and said[0] < centre
     m = velocities[said[0]]
-    assert (m.args["q"].text, m.args["p"].text) == ("O", "P2")
+    assert (m.args["q"].text, m.args["p"].text) == ("O", "P")
     env = {str(x): x for c in m.args["value"].value for x in sympy.sympify(c).free_symbols}
     r, w, a = env["r"], env["w"], None
     assert all(sympy.simplify(c - r * w / 2) == 0 for c in m.args["value"].value)
@@ -508,6 +508,6 @@ def test_the_trailing_chassis_goes_by_equiprojectivity():
     a = next(x for x in sympy.sympify(rate.value.value).free_symbols if x.name == "a")
     assert sympy.simplify(rate.value.value + sympy.sqrt(2) * r * w / (2 * a)) == 0
     eq = next(e for e in velocities if isinstance(e, Equation) and any(t is rate.source for s in e.sides for t in s))
-    assert eq.target.sym.sub.split("∈")[0] == "P2"
+    assert eq.target.sym.sub.split("∈")[0] == "P"
     _, tricycle = explained("seed_c5_2_1_tricycle")
     assert not any(isinstance(b, Msg) and b.key == "vehicle.equiprojective" for b in tricycle.blocks())
