@@ -19,7 +19,7 @@ import math
 
 import pytest
 
-from tests.conftest import DEEP
+from tests.conftest import BROWSER_WAIT, DEEP
 from tests.simulate.test_every_example import MOVES, TIME
 
 from .test_page import page, ready, set_row  # noqa: F401  (the page fixture)
@@ -64,6 +64,9 @@ def test_every_example_moves_on_the_page(page, server):     # noqa: F811
         server.wait(page, "(gen) => window.kinematika.state.gen > gen && window.kinematika.state.sweep"
                           " && document.getElementById('busy').hidden", gen)
         ready(page)
+        # the figure is painted after the answers arrive: on a busy machine it can be still empty
+        page.wait_for_function("() => document.querySelectorAll('#figure circle[data-point]').length > 0",
+                               timeout=BROWSER_WAIT)
         slider = page.get_by_test_id("input-slider")
         last = int(slider.get_attribute("max"))
         assert slider.is_enabled() and last > 0, name
