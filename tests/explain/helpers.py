@@ -2,8 +2,10 @@
 tie an explanation's numbers to the solver's."""
 from __future__ import annotations
 
+import base64
 import functools
 import math
+import re
 from pathlib import Path
 from typing import Any
 
@@ -86,3 +88,18 @@ def blocks(sec: Section) -> list:
     for b in sec.blocks:
         out += blocks(b) if isinstance(b, Section) else [b]
     return out
+
+
+SVG = re.compile(r"data:image/svg\+xml;base64,([A-Za-z0-9+/=]+)")
+
+
+def words_of(page: str) -> str:
+    """What a reader sees of a page: its text and tables, and the labels its figures set
+    (an SVG's <text>, and matplotlib's comment with each label it draws as paths)."""
+    figures = [base64.b64decode(b64).decode("utf-8") for b64 in SVG.findall(page)]
+    out = []
+    for part in [SVG.sub("", page)] + figures:
+        out += re.findall(r"<!--(.*?)-->", part, flags=re.S)
+        part = re.sub(r"<(style|script)\b.*?</\1>", "", part, flags=re.S)
+        out.append(re.sub(r"<[^>]*>", " ", part))
+    return "\n".join(out)

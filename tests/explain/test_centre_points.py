@@ -10,7 +10,7 @@ import re
 import pytest
 
 from .helpers import LANGS, SEEDS, explained, rendered
-from .test_points_named import _words
+from .helpers import words_of as _words
 
 # I and digits as a name, alone or run into a segment or a subscript (I16, OI16, v_I16, I17J)
 NUMBERED_CENTRE = re.compile(r"(?<![A-Za-z])I\d+")

@@ -4,7 +4,6 @@ the file's, not the notes'), in the text, the tables or the figures, in Markdown
 in the four languages; and every contact point the text names is in the points table."""
 from __future__ import annotations
 
-import base64
 import re
 
 import pytest
@@ -14,22 +13,10 @@ from kinematika.draw.names import CONTACT_LETTERS, contact_names
 from kinematika.explain.document import Table
 
 from .helpers import EXAMPLES, LANGS, SEEDS, explained, rendered
+from .helpers import words_of as _words
 
-SVG = re.compile(r"data:image/svg\+xml;base64,([A-Za-z0-9+/=]+)")
 # J and a number, as a name (J5, v_J5∈2, {J7-O}) or a figure's label ($J_{\mathrm{10}}$)
 JOINT_LABEL = re.compile(r"(?<![A-Za-z0-9])J(?:\d+|_\{(?:\\mathrm\{)?\d+)")
-
-
-def _words(page: str) -> str:
-    """What a reader sees of a page: its text and tables, and the labels its figures set
-    (an SVG's <text>, and matplotlib's comment with each label it draws as paths)."""
-    figures = [base64.b64decode(b64).decode("utf-8") for b64 in SVG.findall(page)]
-    out = []
-    for part in [SVG.sub("", page)] + figures:
-        out += re.findall(r"<!--(.*?)-->", part, flags=re.S)
-        part = re.sub(r"<(style|script)\b.*?</\1>", "", part, flags=re.S)
-        out.append(re.sub(r"<[^>]*>", " ", part))
-    return "\n".join(out)
 
 
 @pytest.mark.parametrize("fmt", ["md", "html"])
