@@ -241,19 +241,18 @@ def _plain_yaml(text: str) -> Any:
     then reads the text again and reports what it finds, so errors stay the same. The tree
     returned has passed `check_tree`'s checks.
 
-    Scalars are resolved by the loader's own resolver and constructors (so `yes`, `1_000`,
-    `0x1f`, `.inf`, `2001-12-14` read as with `yaml.load`), once per distinct text."""
+    Scalars are resolved as the loader resolves them (`_Scalars`), so `yes`, `1_000`,
+    `0x1f`, `.inf`, `2001-12-14` read as with `yaml.load`."""
     import yaml
 
     events = yaml.events
     scalar_event, alias_event, document_start = events.ScalarEvent, events.AliasEvent, events.DocumentStartEvent
     opening = {events.MappingStartEvent: True, events.SequenceStartEvent: False}
     closing = (events.MappingEndEvent, events.SequenceEndEvent)
-    scalar_node = yaml.ScalarNode
     parser = (getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader)(text)
     next_event = parser.get_event               # None once the stream has ended
-    constructors = parser.yaml_constructors
-    resolved: dict[tuple, Any] = {}
+    plain = _Scalars(yaml, parser)
+    resolved = plain.resolved                   # a plain scalar's text: its value (met before)
     stack: list[tuple] = []           # the open collections around the innermost: (it, is_mapping, its key)
     container: Any = None             # the innermost open collection (None: at the top)
     is_mapping = False
@@ -269,23 +268,15 @@ def _plain_yaml(text: str) -> Any:
             if kind is scalar_event:
                 if event.anchor is not None or event.tag not in (None, "!"):
                     return _UNUSUAL
-                text_key = (event.value, event.implicit)
-                value = resolved.get(text_key, _UNUSUAL)
-                if value is _UNUSUAL:
-                    value = _plain_number(event) if event.tag is None and event.implicit[0] else None
-                    if value is None:
-                        tag = parser.resolve(scalar_node, event.value, event.implicit)
-                        if tag not in _PLAIN_TAGS:
+                value = event.value
+                if event.implicit[0]:             # plain: resolved by its text
+                    value = resolved.get(value, _UNUSUAL)
+                    if value is _UNUSUAL:
+                        value = plain.value(event)
+                        if value is _UNUSUAL:
                             return _UNUSUAL
-                        value = constructors[tag](parser, scalar_node(tag, event.value, event.start_mark,
-                                                                       event.end_mark, event.style))
-                        if isinstance(value, str) and not value.isascii():
-                            try:
-                                value.encode("utf-8")
-                            except UnicodeEncodeError:
-                                return _UNUSUAL
-                    if value == value:                # a NaN is never shared (nor a dict key)
-                        resolved[text_key] = value
+                elif not value.isascii() and not _encodable(value):   # quoted or `!`: a string
+                    return _UNUSUAL
             elif kind in opening:
                 if event.anchor is not None or event.tag not in (None, "!") or len(stack) >= nesting:
                     return _UNUSUAL
@@ -323,16 +314,68 @@ def _plain_yaml(text: str) -> Any:
     return root
 
 
+def _encodable(text: str) -> bool:
+    """Whether `text` is valid Unicode (no lone surrogate, as a double-quoted `\\ud800` gives)."""
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
+
+
+class _Scalars:
+    """The values of plain scalars (`implicit[0]` true, no tag) as `parser`'s resolver and
+    constructors give them, each text resolved once (`resolved`).
+
+    The resolver (PyYAML's `BaseResolver.resolve`) tries the implicit resolvers listed under
+    the text's first character (and under None, for every text) and otherwise gives the
+    string tag, whose constructor returns the text itself: a text whose first character
+    has no resolver is that string, without the search. Decimal integers and numbers with
+    a point are converted directly (`_plain_number`). Any other text goes through the
+    resolver and the constructors themselves; a tag other than `_PLAIN_TAGS`' gives
+    `_UNUSUAL`."""
+
+    __slots__ = ("_constructors", "_node", "_parser", "_starts", "resolved")
+
+    def __init__(self, yaml: Any, parser: Any) -> None:
+        self._parser = parser
+        self._node = yaml.ScalarNode
+        self._constructors = parser.yaml_constructors
+        tables = parser.yaml_implicit_resolvers
+        general = None in tables or getattr(parser, "yaml_path_resolvers", None)
+        self._starts = None if general else frozenset(tables)   # first characters with a resolver
+        self.resolved: dict[str, Any] = {}
+
+    def value(self, event: Any) -> Any:
+        """The value of a plain scalar met for the first time (remembered unless a NaN, which is
+        never shared, nor a dict key)."""
+        text = event.value
+        value = _plain_number(text)
+        if value is None:
+            if self._starts is not None and text and text[0] not in self._starts:
+                value = text
+            else:
+                tag = self._parser.resolve(self._node, text, event.implicit)
+                if tag not in _PLAIN_TAGS:
+                    return _UNUSUAL
+                value = self._constructors[tag](self._parser, self._node(tag, text, event.start_mark,
+                                                                          event.end_mark, event.style))
+            if isinstance(value, str) and not value.isascii() and not _encodable(value):
+                return _UNUSUAL
+        if value == value:
+            self.resolved[text] = value
+        return value
+
+
 _DECIMAL = re.compile(r"[-+]?(?:0|[1-9][0-9]*)\Z")       # what YAML 1.1 reads as a decimal integer ...
 _POINTED = re.compile(r"[-+]?[0-9]+\.[0-9]*\Z")          # ... and as a number with a point (no _, no exponent)
 
 
-def _plain_number(event: Any) -> Any:
-    """A plain scalar written as a decimal integer or a number with a point, as the YAML
-    loader reads it (`int(text)`, `float(text)`: the resolver's int and float patterns match
-    these texts, and its constructors give the same values), without the resolver's search;
-    None for any other text."""
-    text = event.value
+def _plain_number(text: str) -> Any:
+    """A plain scalar's `text` written as a decimal integer or a number with a point, as the
+    YAML loader reads it (`int(text)`, `float(text)`: the resolver's int and float patterns
+    match these texts, and its constructors give the same values), without the resolver's
+    search; None for any other text."""
     if _POINTED.match(text):
         return float(text)
     if _DECIMAL.match(text):
