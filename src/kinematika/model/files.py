@@ -9,7 +9,6 @@ hang or a crash. YAML is read by libyaml's C parser when PyYAML has it.
 """
 from __future__ import annotations
 
-import json
 import os
 import re
 import select
@@ -188,6 +187,8 @@ def _duplicate(key: Any, where: str, line: int | None = None) -> KinematikaError
 
 
 def _json(text: str, where: str) -> Any:
+    import json         # only for a JSON file (a YAML model never needs it: 14 M instructions at start-up)
+
     def pairs(items: list[tuple[str, Any]]) -> dict:
         out: dict = {}
         for key, value in items:
