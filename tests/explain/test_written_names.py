@@ -62,12 +62,16 @@ def test_names_by_hand(name, text, html):
     assert html_name(name) == html
 
 
-def test_latex_names_are_sympys_but_pi():
-    """LaTeX as sympy writes the symbol in a formula (so text and formulas agree); a
-    parameter named pi is the word, the constant stays \\pi."""
-    for name, tex in [("theta2", r"\theta_{2}"), ("omega_link5", r"\omega_{link5}"), ("x_B", "x_{B}"),
-                      ("lambda", r"\lambda"), ("E", "E")]:
+def test_latex_names_are_sympys_but_pi_and_words():
+    """LaTeX as sympy writes the symbol in a formula (so text and formulas agree), but a
+    subscript that is a word upright (ω_link5 a word under ω, not l·i·n·k in italics,
+    as HTML and Markdown show it); a parameter named pi is the word, the constant stays \\pi."""
+    for name, tex in [("theta2", r"\theta_{2}"), ("x_B", "x_{B}"), ("B2_x", "B_{2 x}"), ("lambda", r"\lambda"), ("E", "E")]:
         assert latex_name(name) == tex == sympy.latex(sympy.Symbol(name))
+    for name, tex in [("omega_link5", r"\omega_{\mathrm{link5}}"), ("R_roda", r"R_{\mathrm{roda}}"),
+                      ("omega_left_arm", r"\omega_{\text{\normalfont left arm}}"),
+                      ("omega_besoa__2", r"\omega^{2}_{\mathrm{besoa}}")]:
+        assert latex_name(name) == tex
     assert latex_name("pi") == r"\mathit{pi}" and latex_name("pi_B") == r"\mathit{pi}_{B}"
 
 
