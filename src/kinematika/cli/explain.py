@@ -35,7 +35,7 @@ def explain(model: Path = ModelArg, lang: str = LangOpt, fmt: str = FormatOpt,
 
     def write_file() -> None:
         target = output_file(output, "-o")
-        page, files = (text, {})
+        page, files = text, dict[str, str]()
         if fmt == "md":                 # the figures as SVG files beside the page, linked by name
             from ..explain.render.markdown import figure_files
             page, files = figure_files(text, target)
