@@ -91,6 +91,13 @@ def blocks(sec: Section) -> list:
 
 
 SVG = re.compile(r"data:image/svg\+xml;base64,([A-Za-z0-9+/=]+)")
+# a Markdown page's figure definitions, at its end: `[fig-1]: data:image/svg+xml;base64,…`
+DEFINITIONS = re.compile(r"^\[fig-\d+\]: \S+$", re.M)
+
+
+def body_of(page: str) -> str:
+    """A Markdown page without its figures' reference definitions: the text a reader reads."""
+    return DEFINITIONS.sub("", page)
 
 
 def words_of(page: str) -> str:
@@ -98,7 +105,7 @@ def words_of(page: str) -> str:
     (an SVG's <text>, and matplotlib's comment with each label it draws as paths)."""
     figures = [base64.b64decode(b64).decode("utf-8") for b64 in SVG.findall(page)]
     out = []
-    for part in [SVG.sub("", page)] + figures:
+    for part in [SVG.sub("", body_of(page))] + figures:
         out += re.findall(r"<!--(.*?)-->", part, flags=re.S)
         part = re.sub(r"<(style|script)\b.*?</\1>", "", part, flags=re.S)
         out.append(re.sub(r"<[^>]*>", " ", part))

@@ -13,7 +13,7 @@ import pytest
 import kinematika
 from kinematika.draw.names import centre_subscript, coincident_point, shows_tag
 
-from .helpers import EXAMPLES, LANGS, SEEDS, explained, rendered
+from .helpers import EXAMPLES, LANGS, SEEDS, body_of, explained, rendered
 
 SVG = re.compile(r"data:image/svg\+xml;base64,([A-Za-z0-9+/=]+)")
 JOINT_ID = re.compile(r"\bj\d+\b")
@@ -26,7 +26,7 @@ def _text_and_figures(name: str, lang: str) -> tuple[str, str]:
     for b64 in SVG.findall(page):
         svg = base64.b64decode(b64).decode()
         figures += re.findall(r"<text[^>]*>([^<]*)<", svg) + re.findall(r"<!-- (.*?) -->", svg)
-    return re.sub(r"\(data:image[^)]*\)", "", page), "\n".join(figures)
+    return body_of(page), "\n".join(figures)
 
 
 @pytest.mark.parametrize("lang", LANGS)

@@ -57,7 +57,7 @@ def test_html_is_self_contained_and_has_the_final_numbers(name):
 def test_symbolic_formulas_are_written_exactly():
     sol, doc = explained("seed_c5_e2_gear_change")
     page = render(doc, "ca", "html")
-    assert "4·Ω/3" in page and "Omega" not in page          # the parameter Omega as the letter
+    assert "4·<i>Ω</i>/3" in page and "Omega" not in page          # the parameter Omega as the letter, in italics
 
 
 def test_command_line(tmp_path):

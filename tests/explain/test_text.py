@@ -12,7 +12,7 @@ from kinematika.explain.catalogue import LANGS, catalogue
 
 from tests.conftest import KINDS, sampled
 
-from .helpers import ALL, explained, render_of
+from .helpers import ALL, body_of, explained, render_of
 
 NAMES = sampled(ALL, KINDS)
 
@@ -46,7 +46,7 @@ def plain_text(text: str, fmt: str) -> str:
         text = re.sub(r"<h1>.*?</h1>", " ", text, count=1, flags=re.S)
         text = html.unescape(re.sub(r"<[^>]+>", " ", text))
     else:
-        text = re.sub(r"data:image/[^)]*\)", " ", text)
+        text = re.sub(r"\]\[fig-\d+\]", "]", body_of(text))
         text = re.sub(r"^# .*$", " ", text, count=1, flags=re.M)
     return text
 

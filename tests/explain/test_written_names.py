@@ -62,12 +62,16 @@ def test_names_by_hand(name, text, html):
     assert html_name(name) == html
 
 
-def test_latex_names_are_sympys_but_pi():
-    """LaTeX as sympy writes the symbol in a formula (so text and formulas agree); a
-    parameter named pi is the word, the constant stays \\pi."""
-    for name, tex in [("theta2", r"\theta_{2}"), ("omega_link5", r"\omega_{link5}"), ("x_B", "x_{B}"),
-                      ("lambda", r"\lambda"), ("E", "E")]:
+def test_latex_names_are_sympys_but_pi_and_words():
+    """LaTeX as sympy writes the symbol in a formula (so text and formulas agree), but a
+    subscript that is a word upright (ω_link5 a word under ω, not l·i·n·k in italics,
+    as HTML and Markdown show it); a parameter named pi is the word, the constant stays \\pi."""
+    for name, tex in [("theta2", r"\theta_{2}"), ("x_B", "x_{B}"), ("B2_x", "B_{2 x}"), ("lambda", r"\lambda"), ("E", "E")]:
         assert latex_name(name) == tex == sympy.latex(sympy.Symbol(name))
+    for name, tex in [("omega_link5", r"\omega_{\mathrm{link5}}"), ("R_roda", r"R_{\mathrm{roda}}"),
+                      ("omega_left_arm", r"\omega_{\text{\normalfont left arm}}"),
+                      ("omega_besoa__2", r"\omega^{2}_{\mathrm{besoa}}")]:
+        assert latex_name(name) == tex
     assert latex_name("pi") == r"\mathit{pi}" and latex_name("pi_B") == r"\mathit{pi}_{B}"
 
 
@@ -89,9 +93,10 @@ def test_four_bar_symbolic(four_bar):
     """The crank angle theta2 and speed w2 of the four-bar read θ₂ and w₂ in the prose,
     the formulas and the caption of the drawing, in every format."""
     page = render(four_bar, "en", "html", drawings=False)
-    assert "at θ<sub>2</sub> from the x axis: <span class=\"pt\">A</span> = (a·cos(θ<sub>2</sub>), " \
-           "a·sin(θ<sub>2</sub>))" in page
-    assert "(−a·w<sub>2</sub>·sin(θ<sub>2</sub>), a·w<sub>2</sub>·cos(θ<sub>2</sub>))" in page
+    # a parameter in italics wherever it is written, prose, formula or caption (one letter, one face)
+    assert "at <i>θ<sub>2</sub></i> from the x axis: <span class=\"pt\">A</span> = (<i>a</i>·cos(<i>θ<sub>2</sub></i>), " \
+           "<i>a</i>·sin(<i>θ<sub>2</sub></i>))" in page
+    assert "(−<i>a</i>·<i>w<sub>2</sub></i>·sin(<i>θ<sub>2</sub></i>), <i>a</i>·<i>w<sub>2</sub></i>·cos(<i>θ<sub>2</sub></i>))" in page
     assert "theta" not in page and not re.search(r"\bw2\b", page)
     text = render(four_bar, "es", "md", drawings=False)
     assert "A = (a·cos(θ₂); a·sin(θ₂))" in text and "theta" not in text     # Spanish separates by ;
@@ -123,8 +128,9 @@ def test_a_name_inside_another_is_left_whole(tmp_path):
     (the body link5 as its subscript) and the word "the" of the prose is untouched."""
     doc = _explained(tmp_path, LINK)
     page = render(doc, "en", "html", drawings=False)
-    assert "at distance atheta from <span class=\"pt\">O</span>, at θ + θ<sub>2</sub> from the x axis" in page
-    assert "(−atheta·ω<sub>link5</sub>·sin(θ + θ<sub>2</sub>), atheta·ω<sub>link5</sub>·cos(θ + θ<sub>2</sub>))" in page
+    assert "at distance <i>atheta</i> from <span class=\"pt\">O</span>, at <i>θ</i> + <i>θ<sub>2</sub></i> from the x axis" in page
+    assert ("(−<i>atheta</i>·<i>ω<sub>link5</sub></i>·sin(<i>θ</i> + <i>θ<sub>2</sub></i>), "
+            "<i>atheta</i>·<i>ω<sub>link5</sub></i>·cos(<i>θ</i> + <i>θ<sub>2</sub></i>))") in page
     assert set(re.findall(r"\w*theta\w*", page)) == {"atheta"} and "omega" not in page
     text = render(doc, "ca", "md", drawings=False)
     assert "(−atheta·ω_link5·sin(θ + θ₂); atheta·ω_link5·cos(θ + θ₂))" in text
@@ -161,7 +167,7 @@ def test_named_coordinates_as_subscripts(jansen, lang, here):
     part, doc = jansen
     page = render(doc, lang, "html", drawings=False)
     for name in PARTS[part]:
-        assert f"{here} x<sub>{name}</sub> = " in page and f"{here} y<sub>{name}</sub> = " in page
-    assert "x_B" not in page and "·sin(θ)" in page and "theta" not in page
+        assert f"{here} <i>x<sub>{name}</sub></i> = " in page and f"{here} <i>y<sub>{name}</sub></i> = " in page
+    assert "x_B" not in page and "·sin(<i>θ</i>)" in page and "theta" not in page
     if part == "whole":
         assert "ω<sub>crank</sub>" in page                    # the named angular velocities, by name

@@ -11,7 +11,8 @@ from .shared import guarded, output_file, writing
 
 LangOpt = typer.Option("en", "--lang", help="language: en, es, ca or eu")
 FormatOpt = typer.Option("md", "--format", help="md, html (one self-contained page) or tex")
-OutOpt = typer.Option(None, "-o", "--output", help="write to FILE instead of standard output")
+OutOpt = typer.Option(None, "-o", "--output", help="write to FILE instead of standard output (Markdown: each "
+                      "figure as an SVG file beside it, FILE's name.fig-1.svg …)")
 UnitOpt = typer.Option("m", "--length-unit", help="the name of the model's length unit")
 
 
@@ -34,7 +35,13 @@ def explain(model: Path = ModelArg, lang: str = LangOpt, fmt: str = FormatOpt,
 
     def write_file() -> None:
         target = output_file(output, "-o")
+        page, files = text, dict[str, str]()
+        if fmt == "md":                 # the figures as SVG files beside the page, linked by name
+            from ..explain.render.markdown import figure_files
+            page, files = figure_files(text, target)
         with writing(target, "-o"):
-            target.write_text(text, encoding="utf-8")
+            for name, drawing in files.items():
+                (target.parent / name).write_text(drawing, encoding="utf-8")
+            target.write_text(page, encoding="utf-8")
 
     guarded(False, write_file)

@@ -2,20 +2,34 @@
 over and under it, polygons as TikZ pictures to scale."""
 from __future__ import annotations
 
+import re
 from typing import Any
 
 from ..document import Equation, Figure, Name, Sym
 from ...text import shown_lines
 from .base import DECIMAL, Renderer
 from .svg import COLOURS, MARGIN, WIDTH, Text, layout, nice
-from .names import latex_name
+from .names import latex_name, upright
 from .unicode import latex_formula
 
 TEXT = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
         "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
 MATH = {"ω": r"\omega", "α": r"\alpha", "ρ": r"\rho", "ℜ": r"\Re", "⊥": r"\perp", "∥": r"\parallel", "∈": r"\in",
         "×": r"\times", "·": r"\cdot", "−": "-", "²": "^2", "³": "^3", "–": "\\text{--}", "→": r"\to",
-        "—": "\\text{---}"}
+        "—": "\\text{---}", "ⁿ": "^n", "⇒": r"\Rightarrow", "≡": r"\equiv"}
+
+# the Greek letters, as LaTeX's commands (β as \\beta, Φ as \\Phi): pdflatex's utf8 input knows
+# none, so one typed in a model's words would stop the compilation; the capitals LaTeX has no
+# command for look like Latin ones and are written as those (Α as A), ο as o
+_LOWER = (r"\alpha \beta \gamma \delta \epsilon \zeta \eta \theta \iota \kappa \lambda \mu \nu \xi o \pi \rho "
+          r"\varsigma \sigma \tau \upsilon \phi \chi \psi \omega")
+_UPPER = r"A B \Gamma \Delta E Z H \Theta I K \Lambda M N \Xi O \Pi P \Sigma T \Upsilon \Phi X \Psi \Omega"
+GREEK = dict(zip("αβγδεζηθικλμνξοπρςστυφχψω", _LOWER.split())) | dict(zip("ΑΒΓΔΕΖΗΘΙΚΛΜΝΞΟΠΡΣΤΥΦΧΨΩ", _UPPER.split()))
+MATH = GREEK | MATH | {"√": r"\surd", "′": "'"} | {d: f"_{k}" for k, d in enumerate("₀₁₂₃₄₅₆₇₈₉")} \
+    | {d: f"^{k}" for k, d in enumerate("⁰¹²³⁴⁵⁶⁷⁸⁹") if d not in MATH}
+# a letter with a dot or two over it (φ̇, a note's time derivative): \dot{\phi}, \ddot{x}
+MARKED = re.compile("(.)([\u0307\u0308])")
+ACCENT = {"\u0307": "dot", "\u0308": "ddot"}
 HEAD = r"""\documentclass[11pt]{article}
 \usepackage[utf8]{inputenc}
 \usepackage[T1]{fontenc}
@@ -26,7 +40,27 @@ HEAD = r"""\documentclass[11pt]{article}
 """
 
 
+def marked(letter: str, mark: str) -> str:
+    """A letter and its combining dot(s) as LaTeX math: \\dot{\\phi}."""
+    return f"\\{ACCENT[mark]}{{{MATH.get(letter, letter)}}}"
+
+
+def tex_math(tex: str) -> str:
+    """LaTeX math (a name as sympy writes it) with any character pdflatex's utf8 input
+    cannot set written as its command: ψ̇ as \\dot{\\psi}, β as \\beta."""
+    tex = MARKED.sub(lambda m: marked(m.group(1), m.group(2)), tex)
+    return "".join(MATH[ch] + " " if ch in MATH and not ch.isascii() else ch for ch in tex)
+
+
 def tex_text(text: str) -> str:
+    """Plain text for LaTeX: specials escaped, math characters (and a letter with a dot
+    over it) set in math mode."""
+    parts = MARKED.split(text)              # text, letter, mark, text, letter, mark, …, text
+    return "".join(_text(part) if k % 3 == 0 else f"${marked(part, parts[k + 1])}$" if k % 3 == 1 else ""
+                   for k, part in enumerate(parts))
+
+
+def _text(text: str) -> str:
     """Plain text for LaTeX: specials escaped, math characters set in math mode."""
     out = []
     for ch in text:
@@ -40,19 +74,31 @@ def tex_text(text: str) -> str:
 
 
 def tex_math_text(text: str) -> str:
-    """A name inside math: \\mathrm{...} with the math characters as commands."""
-    parts, buf = [], ""
-    for ch in text:
-        if ch in MATH:
-            if buf:
-                parts.append(r"\mathrm{" + tex_text(buf) + "}")
-                buf = ""
-            parts.append(MATH[ch] + " ")
-        else:
-            buf += ch
-    if buf:
-        parts.append(r"\mathrm{" + tex_text(buf) + "}")
-    return "".join(parts)
+    """A name or subscript inside math, upright as the other formats set it (a word is a
+    word, not a product of italic letters): `upright` for each run of text, the math
+    characters as commands (ω as \\omega, ∈ as \\in, φ̇ as \\dot{\\phi})."""
+    out: list[str] = []
+    run: list[str] = []
+
+    def end_run() -> None:
+        if run:
+            out.append(upright(tex_text("".join(run))))
+            run.clear()
+
+    parts = MARKED.split(text)              # text, letter, mark, text, …
+    for k, part in enumerate(parts):
+        if k % 3 == 1:
+            end_run()
+            out.append(marked(part, parts[k + 1]) + " ")
+        elif k % 3 == 0:
+            for ch in part:
+                if ch in MATH:
+                    end_run()
+                    out.append(MATH[ch] + " ")
+                else:
+                    run.append(ch)
+    end_run()
+    return "".join(out)
 
 
 class LatexRenderer(Renderer):
@@ -69,7 +115,7 @@ class LatexRenderer(Renderer):
         """Points and joints sans serif, bodies emphasised, parameters as symbols in math
         (as `sympy.latex` writes them in the formulas: \\theta_{2})."""
         if n.kind == "param":
-            return f"${latex_name(self.spelt(n.text))}$"
+            return f"${tex_math(latex_name(self.spelt(n.text)))}$"
         article, text = self.articled(n)
         command = {"body": "emph"}.get(n.kind, "textsf")
         return self.esc(article) + f"\\{command}{{{self.points(text) if n.kind == 'point' else self.esc(text)}}}"
@@ -81,7 +127,7 @@ class LatexRenderer(Renderer):
             return (self.math_sym(Sym("ω", parent, vector=s.vector)) + r" \times "
                     + self.math_sym(Sym("ω", f"{body}/{parent}", vector=s.vector)))
         s = self.noted(s)
-        base = MATH.get(s.base, s.base) if s.base != "ω×ω" else r"\omega\times\omega"
+        base = tex_math(s.base).strip() if s.base != "ω×ω" else r"\omega\times\omega"     # ψ̇ as \dot{\psi}
         base = rf"\vec{{{base}}}" if s.vector else base
         sub = self.centred(self.sub_text(s, centres=False), lambda t: tex_math_text(t) if t else "", self.math_sym,
                            gap=r"\ ")             # a centre's symbol inside: v_{O\ I_{OQ}}
@@ -90,6 +136,12 @@ class LatexRenderer(Renderer):
     def symbol(self, s: Sym) -> str:
         """A symbol in running text: `math_sym` in $…$."""
         return f"${self.math_sym(s)}$"
+
+    def subscripted(self, base: str, sub: str) -> str:
+        """A symbol typed base_sub in a model's words (`Renderer.typed` finds it, for every
+        format) as `math_sym` writes one: the letter in math, the subscript (its braces
+        dropped) upright below it, $\\omega_{\\mathrm{besoa}}$, not the text ω\\_besoa."""
+        return f"${tex_math(base).strip()}_{{{tex_math_text(sub.removeprefix('{').removesuffix('}'))}}}$"
 
     def power(self, mantissa: str, exponent: int) -> str:
         """m × 10ⁿ in math."""
@@ -101,7 +153,7 @@ class LatexRenderer(Renderer):
 
     def formula(self, expr: Any) -> str:
         """A formula as sympy's LaTeX in math mode (the model's notation), decimals as the language writes them."""
-        text = latex_formula(expr, {n: latex_name(self.spelt(n)) for n in self.wording.parameter_symbols(self.lang)})
+        text = tex_math(latex_formula(expr, {n: latex_name(self.spelt(n)) for n in self.wording.parameter_symbols(self.lang)}))
         return f"${DECIMAL.sub('{,}', text) if self.decimal == ',' else text}$"
 
     def page(self, body: str) -> str:

@@ -1,9 +1,16 @@
 """Markdown: readable as plain text; equations as aligned blocks (M/D/? above and below
-each term, as in the slides) and figures as inline SVG images (data URIs)."""
+each term, as in the slides) and figures as reference-style images (`![caption][fig-1]`).
+
+A figure's data (an SVG of 30–80 kB as a base64 data URI) is one line no reader wants in
+the middle of the text: the page's body names each figure by a reference (`[fig-1]`), and
+the definitions (`[fig-1]: data:image/svg+xml;base64,…`) come after everything else, so
+the page is still one self-contained document. `figure_files` turns those definitions into
+SVG files beside a page written to a file (page.fig-1.svg), linked relatively."""
 from __future__ import annotations
 
 import base64
 import re
+from pathlib import PurePath
 from typing import Any
 
 from ..document import CENTRE_POINT_RE, Drawing, Equation, Figure, Name, Sym
@@ -26,12 +33,16 @@ BAR = re.compile(r"(?<!\\)\|")
 CELL_BAR = "\u2223"
 
 
+# a figure's reference definition, as `MarkdownRenderer.page` writes it at the page's end
+DEFINITION = re.compile(r"^\[(fig-\d+)\]: data:image/svg\+xml;base64,([A-Za-z0-9+/=]+)$", re.M)
+
+
 COMPOUND = "/,-∈ "         # a subscript with these holds more than one name (or words: roda sup)
 
 
 class MarkdownRenderer(Renderer):
     """The explanation as Markdown, readable as plain text: equations as aligned code blocks,
-    figures as SVG data URIs."""
+    figures as images by reference, their SVG data URIs at the page's end."""
 
     fmt = "md"
 
@@ -74,8 +85,20 @@ class MarkdownRenderer(Renderer):
         return self.decimals(unicode_formula(expr, lambda n: unicode_name(self.spelt(n))))
 
     def page(self, body: str) -> str:
-        """The body as the whole page, ending with one newline."""
-        return body.rstrip() + "\n"
+        """The body as the whole page, then each figure's reference definition (its SVG as a
+        data URI, one line each) after everything else, ending with one newline."""
+        images = getattr(self, "images", [])
+        definitions = "".join(f"\n[{label}]: data:image/svg+xml;base64,{base64.b64encode(drawing.encode('utf-8')).decode('ascii')}"
+                              for label, drawing in images)
+        return body.rstrip() + ("\n" + definitions if images else "") + "\n"
+
+    def image(self, caption: str, drawing: str) -> str:
+        """An image by reference (`![caption][fig-N]`), its SVG kept for the page's end
+        (`page`), and its caption in italics below."""
+        self.images = getattr(self, "images", [])
+        label = f"fig-{len(self.images) + 1}"
+        self.images.append((label, drawing))
+        return f"![{caption}][{label}]\n\n*{caption}*\n"
 
     def heading(self, level: int, text: str) -> str:
         """A # heading of the level, between blank lines."""
@@ -131,11 +154,23 @@ class MarkdownRenderer(Renderer):
         self.figures = getattr(self, "figures", 0) + 1
         drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "", f"f{self.figures}",
                       self.bar_number)
-        data = base64.b64encode(drawing.encode("utf-8")).decode("ascii")
-        return f"![{caption}](data:image/svg+xml;base64,{data})\n\n*{caption}*\n"
+        return self.image(caption, drawing)
 
     def drawing(self, d: Drawing) -> str:
-        """A `draw` figure as an SVG data-URI image, with its caption in italics below."""
-        caption = self.drawing_caption(d)
-        data = base64.b64encode(d.svg(self.cat.lang).encode("utf-8")).decode("ascii")
-        return f"![{caption}](data:image/svg+xml;base64,{data})\n\n*{caption}*\n"
+        """A `draw` figure as an SVG image by reference, with its caption in italics below."""
+        return self.image(self.drawing_caption(d), d.svg(self.cat.lang))
+
+
+def figure_files(page: str, path: PurePath) -> tuple[str, dict[str, str]]:
+    """A Markdown page to be written to `path` with its figures as files beside it: the
+    page with each figure's definition pointing to `<stem>.fig-N.svg` (a relative link,
+    so the folder can be moved whole; in angle brackets if the name has a space), and
+    those files' names and SVG texts."""
+    files: dict[str, str] = {}
+
+    def linked(m: re.Match) -> str:
+        name = f"{path.stem}.{m.group(1)}.svg"
+        files[name] = base64.b64decode(m.group(2)).decode("utf-8")
+        return f"[{m.group(1)}]: " + (f"<{name}>" if re.search(r"[\s()<>]", name) else name)
+
+    return DEFINITION.sub(linked, page), files

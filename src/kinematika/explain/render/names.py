@@ -9,12 +9,15 @@ text around it. Two exceptions, in every format: a name `pi` stays `pi` (π is t
 and a name whose subscript or superscript is empty (`x_`) is written as it is.
 
 A name's subscript keeps its text: `omega_left_arm` is ω with the subscript left_arm (sympy's
-LaTeX separates the parts with a space). Plain text (Markdown) writes a subscript of digits
+LaTeX separates the parts with a space). In LaTeX a subscript or superscript that is a word
+(two letters or more: besoa, link5, left arm) is set upright (`upright`), as the method's
+own subscripts are and as HTML and Markdown show it: a word, not a product of italic letters. Plain text (Markdown) writes a subscript of digits
 with Unicode's subscript digits (θ₂), any other as `_sub` (x_B, ω_link5): the few Latin
 subscript letters Unicode has would leave most names half lowered.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from functools import lru_cache
 from html import escape
@@ -22,6 +25,7 @@ from html import escape
 SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 CONSTANT_LOOKALIKES = ("pi",)        # written as they are: the letter would read as the constant
+SCRIPT = re.compile(r"([_^])\{([^{}\\]+)\}")     # a subscript or superscript with no command in it
 
 
 @dataclass(frozen=True)
@@ -94,8 +98,24 @@ def latex_name(name: str) -> str:
     import sympy
 
     if written(name).base not in CONSTANT_LOOKALIKES:
-        return sympy.latex(sympy.Symbol(name))
-    return r"\mathit{pi}" + sympy.latex(sympy.Symbol("x" + name[2:]))[1:]     # x's sub- and superscripts
+        text = sympy.latex(sympy.Symbol(name))
+    else:
+        text = r"\mathit{pi}" + sympy.latex(sympy.Symbol("x" + name[2:]))[1:]     # x's sub- and superscripts
+    return SCRIPT.sub(lambda m: m.group(1) + "{" + (upright(m.group(2)) if _word(m.group(2)) else m.group(2)) + "}", text)
+
+
+def upright(tex: str) -> str:
+    """LaTeX text (escaped) set upright in math: \\mathrm{besoa}; with a space or a letter
+    outside ASCII (pinyó, left arm) as text in the normal font, \\text{\\normalfont pinyó},
+    since math mode drops spaces and pdflatex sets no accent there."""
+    if tex.isascii() and " " not in tex:
+        return r"\mathrm{" + tex + "}"
+    return r"\text{\normalfont " + tex + "}"
+
+
+def _word(text: str) -> bool:
+    """A subscript that is a word: two letters or more (besoa, link5), not B, 2 or B2."""
+    return sum(c.isalpha() for c in text) >= 2
 
 
 def _digits(text: str) -> bool:

@@ -151,12 +151,12 @@ def _bars(text: str) -> str:
 
 
 def latex_formula(expr: Any, spelt: dict[str, str] | None = None) -> str:
-    """sympy's LaTeX; a symbol named like the constant π (`pi`, `pi2`) as the word; the
+    """sympy's LaTeX, each symbol as `latex_name` writes it (a word in a subscript upright:
+    R_{\\mathrm{roda}}; a symbol named like the constant π, `pi`, `pi2`, as the word); the
     symbols of `spelt` (a name -> its LaTeX) as given (a model's notation)."""
     import sympy
 
     shown = tidy(expr)
     spelt = spelt or {}
-    own = {s: spelt.get(s.name) or latex_name(s.name) for s in getattr(shown, "free_symbols", ())
-           if s.name.startswith("pi") or s.name in spelt}
+    own = {s: spelt.get(s.name) or latex_name(s.name) for s in getattr(shown, "free_symbols", ())}
     return sympy.latex(shown, symbol_names=own) if own else sympy.latex(shown)

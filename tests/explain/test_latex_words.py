@@ -1,0 +1,37 @@
+"""The LaTeX page sets a symbol typed in a model's own words (C5-E.6's "r ω_pinyó = R ω_plat",
+its ℜ_P) as the other formats do, from the same rule (`Renderer.typed`): the letter in math,
+the subscript an upright word below it, never the text ω\\_pinyó; and it holds no character
+pdflatex's utf8 input cannot set (a Greek letter, ⇒, ⁿ typed in a note)."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from .helpers import SEEDS, rendered
+
+# what pdflatex's utf8 input sets in text (T1): Latin-1 and the typographic quotes and dashes
+SETTABLE = re.compile(r"[^\x00-\xff‘’“”–—]")
+
+
+@pytest.mark.parametrize("lang, typed", [
+    ("eu", r"(r $\omega_{\mathrm{pinoia}}$ = R $\omega_{\mathrm{platera}}$)"),
+    ("ca", r"(r $\omega_{\text{\normalfont pinyó}}$ = R $\omega_{\mathrm{plat}}$)"),
+])
+def test_a_symbol_in_a_models_words_is_set_as_a_symbol(lang, typed):
+    """C5-E.6's remark, by hand: ω with its body's word upright below, in math; its ℜ_P
+    too; and R_roda the same in the formulas as in the words (R_{\\mathrm{roda}})."""
+    page = rendered("seed_c5_e6_bicycle", lang, "tex", drawings=False)
+    assert typed in page
+    assert r"$\Re_{\mathrm{P}}$ = v(P)$^2$/a$^n$" in page
+    assert "R_{roda}" not in page and r"R_{\mathrm{roda}}" in page
+
+
+@pytest.mark.parametrize("lang", ["eu", "ca"])
+@pytest.mark.parametrize("name", SEEDS)
+def test_no_typed_underscore_and_nothing_pdflatex_cannot_set(name, lang):
+    """No underscore escaped as text (a symbol left as typed, ω\\_besoa) and no character
+    the article's utf8 input has no definition for."""
+    page = rendered(name, lang, "tex", drawings=False)
+    assert "\\_" not in page, (name, lang, page[page.find("\\_") - 60:page.find("\\_") + 20])
+    assert not SETTABLE.findall(page), (name, lang, sorted(set(SETTABLE.findall(page))))
