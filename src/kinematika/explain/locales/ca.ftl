@@ -3,7 +3,10 @@
 
 sec-data = Dades
 data-numeric = Unitats: longituds en { $unit }, velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
-data-planar = Moviment pla: les velocitats i acceleracions angulars tenen signe, positives en sentit antihorari.
+data-planar = Moviment pla: les velocitats{ $accelerations ->
+        [0] {" "}angulars
+       *[other] {" "}i acceleracions angulars
+    } tenen signe, positives en sentit antihorari.
 data-relative = Una magnitud relativa anomena els dos sòlids: { $v } és la velocitat del punt { $point } del sòlid { $b } vista des del sòlid { $a }, i { $w } la velocitat angular de { $b } respecte de { $a }.
 data-spatial = Les velocitats i acceleracions angulars són vectors (regla de la mà dreta al voltant de la seva direcció).
 data-symbolic = Les dades són símbols, i cada resultat és una fórmula exacta en funció d’aquests. Les figures es dibuixen amb valors de mostra dels símbols, indicats sota cada figura.
@@ -552,28 +555,40 @@ fig-drawn_at = Dibuixat amb { $values }.
 fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
-    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, les velocitats relatives de les equacions anteriors{ $format ->
+    } acaba a la seva imatge, amb la lletra del punt{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } per a { $point })
+    }; entre les imatges, les velocitats relatives de les equacions anteriors{ $format ->
         [md] {""}
        *[other] {" "}(negre)
     }, l’una darrere l’altra.
 fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
-    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors ({ $format ->
+    } acaba a la seva imatge, amb la lletra del punt{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } per a { $point })
+    }; entre les imatges, els termes de les equacions anteriors ({ $format ->
         [md] {""}
        *[other] negre:{" "}
     }normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
 fig-level_a_relative = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
-    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors ({ $format ->
+    } acaba a la seva imatge, amb la lletra del punt{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } per a { $point })
+    }; entre les imatges, els termes de les equacions anteriors ({ $format ->
         [md] {""}
        *[other] negre:{" "}
     }normals i tangencials, i relatius), l’un darrere l’altre.
 fig-level_a_normal = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
-    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors ({ $format ->
+    } acaba a la seva imatge, amb la lletra del punt{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } per a { $point })
+    }; entre les imatges, els termes de les equacions anteriors ({ $format ->
         [md] {""}
        *[other] negre:{" "}
     }normals i tangencials), l’un darrere l’altre.

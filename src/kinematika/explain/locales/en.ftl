@@ -3,7 +3,10 @@
 
 sec-data = Data
 data-numeric = Units: lengths in { $unit }, velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
-data-planar = Planar motion: angular velocities and accelerations are signed, counter-clockwise positive.
+data-planar = Planar motion: angular velocities{ $accelerations ->
+        [0] {""}
+       *[other] {" "}and accelerations
+    } are signed, counter-clockwise positive.
 data-relative = A relative quantity names both bodies: { $v } is the velocity of the point { $point } of body { $b } seen from body { $a }, and { $w } the angular velocity of { $b } relative to { $a }.
 data-spatial = Angular velocities and accelerations are vectors (right-hand rule about their direction).
 data-symbolic = The data are symbols, and every result is an exact formula in them. The figures are drawn at sample values of the symbols, given under each figure.
@@ -327,28 +330,40 @@ fig-drawn_at = Drawn at { $values }.
 fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point (a for A); between the images, the relative velocities of the equations above{ $format ->
+    } ends at its image, lettered as the point{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } for { $point })
+    }; between the images, the relative velocities of the equations above{ $format ->
         [md] {""}
        *[other] {" "}(black)
     }, head to tail.
 fig-level_a = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point (a for A); between the images, the terms of the equations above ({ $format ->
+    } ends at its image, lettered as the point{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } for { $point })
+    }; between the images, the terms of the equations above ({ $format ->
         [md] {""}
        *[other] black:{" "}
     }normal and tangential, relative and Coriolis), head to tail.
 fig-level_a_relative = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point (a for A); between the images, the terms of the equations above ({ $format ->
+    } ends at its image, lettered as the point{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } for { $point })
+    }; between the images, the terms of the equations above ({ $format ->
         [md] {""}
        *[other] black:{" "}
     }normal and tangential, and relative), head to tail.
 fig-level_a_normal = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point (a for A); between the images, the terms of the equations above ({ $format ->
+    } ends at its image, lettered as the point{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } for { $point })
+    }; between the images, the terms of the equations above ({ $format ->
         [md] {""}
        *[other] black:{" "}
     }normal and tangential), head to tail.

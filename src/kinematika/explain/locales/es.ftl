@@ -3,7 +3,10 @@
 
 sec-data = Datos
 data-numeric = Unidades: longitudes en { $unit }, velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
-data-planar = Movimiento plano: las velocidades y aceleraciones angulares llevan signo, positivas en sentido antihorario.
+data-planar = Movimiento plano: las velocidades{ $accelerations ->
+        [0] {" "}angulares
+       *[other] {" "}y aceleraciones angulares
+    } llevan signo, positivas en sentido antihorario.
 data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } del sólido { $b } vista desde el sólido { $a }, y { $w } la velocidad angular de { $b } respecto de { $a }.
 data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
 data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
@@ -360,28 +363,40 @@ fig-drawn_at = Dibujado con { $values }.
 fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
-    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, las velocidades relativas de las ecuaciones anteriores{ $format ->
+    } acaba en su imagen, con la letra del punto{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } para { $point })
+    }; entre las imágenes, las velocidades relativas de las ecuaciones anteriores{ $format ->
         [md] {""}
        *[other] {" "}(negro)
     }, una tras otra.
 fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
-    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+    } acaba en su imagen, con la letra del punto{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } para { $point })
+    }; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
         [md] {""}
        *[other] negro:{" "}
     }normales y tangenciales, relativos y de Coriolis), uno tras otro.
 fig-level_a_relative = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
-    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+    } acaba en su imagen, con la letra del punto{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } para { $point })
+    }; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
         [md] {""}
        *[other] negro:{" "}
     }normales y tangenciales, y relativos), uno tras otro.
 fig-level_a_normal = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
-    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+    } acaba en su imagen, con la letra del punto{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image } para { $point })
+    }; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
         [md] {""}
        *[other] negro:{" "}
     }normales y tangenciales), uno tras otro.

@@ -3,7 +3,10 @@
 
 sec-data = Datuak
 data-numeric = Unitateak: luzerak { $unit }-tan, abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
-data-planar = Mugimendu laua: abiadura eta azelerazio angeluarrek zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
+data-planar = Mugimendu laua: { $accelerations ->
+        [0] abiadura angeluarrek
+       *[other] abiadura eta azelerazio angeluarrek
+    } zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
 data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $b } solidoaren { $point } puntuaren abiadura da { $a } solidotik ikusita, eta { $w } { $b } solidoaren abiadura angeluarra { $a } solidoarekiko.
 data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
 data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
@@ -330,28 +333,40 @@ fig-drawn_at = Balio hauekin marraztua: { $values }.
 fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
-    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen abiadura erlatiboak{ $format ->
+    } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image }, { $point }-rentzat)
+    }; irudien artean, aurreko ekuazioen abiadura erlatiboak{ $format ->
         [md] {""}
        *[other] {" "}(beltzez)
     }, bata bestearen ondoren.
 fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
-    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak ({ $format ->
+    } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image }, { $point }-rentzat)
+    }; irudien artean, aurreko ekuazioen terminoak ({ $format ->
         [md] {""}
        *[other] beltzez:{" "}
     }normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
 fig-level_a_relative = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
-    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak ({ $format ->
+    } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image }, { $point }-rentzat)
+    }; irudien artean, aurreko ekuazioen terminoak ({ $format ->
         [md] {""}
        *[other] beltzez:{" "}
     }normalak eta tangentzialak, eta erlatiboak), bata bestearen ondoren.
 fig-level_a_normal = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
-    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak ({ $format ->
+    } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
+        [none] {""}
+       *[other] {" "}({ $image }, { $point }-rentzat)
+    }; irudien artean, aurreko ekuazioen terminoak ({ $format ->
         [md] {""}
        *[other] beltzez:{" "}
     }normalak eta tangentzialak), bata bestearen ondoren.
