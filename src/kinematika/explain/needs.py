@@ -29,6 +29,24 @@ def accelerations_asked(ctx: Ctx) -> bool:
     return ctx.model.default_questions or any(QUESTIONS[q.kind].level == "acceleration" for q in ctx.model.questions)
 
 
+def centres_asked_first(ctx: Ctx) -> bool:
+    """Whether the model asks an instant centre before anything of the accelerations: then
+    the centres found from the velocities are said right after the velocities, before the
+    accelerations, in the order the questions come (C5-E.6: the notes' first question is the
+    pedals' centre, their second the curvature of P's path)."""
+    if ctx.model.default_questions:
+        return False
+    from .asked import worked
+
+    centres = worked(ctx).centres
+    for q in ctx.model.questions:
+        if q in centres:
+            return True
+        if QUESTIONS[q.kind].level == "acceleration":
+            return False
+    return False
+
+
 def prune(ctx: Ctx, doc: Document) -> None:
     """Drop the forward evaluations of the level sections that nothing needs."""
     if ctx.model.default_questions:

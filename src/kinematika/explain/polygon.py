@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 
 import math
+from typing import Any
 
 from .context import Ctx
 from .document import Arrow, Equation, Figure, msg
@@ -49,17 +50,17 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     return fig
 
 
-def lettering(ctx: Ctx, labels: list[str]) -> dict[str, str]:
+def lettering(ctx: Ctx, labels: list[str]) -> dict[str, Any]:
     """The caption's example of how images are lettered: "a for A", unless the page writes a
     as a symbol (C5-2.2's length a: "(a, A-rentzat)" beside it reads as the length's name);
     then one of the polygon's own one-letter images that names no symbol ("p for P"), or no
-    example (`image` "none")."""
+    example (`image` 0)."""
     symbols = {str(name) for name in ctx.model.parameters}
     if "a" not in symbols:
         return {"image": "a", "point": "A"}
     letters = sorted(n for label in labels for n in label.split(", ")
                      if len(n) == 1 and n.isalpha() and n.islower() and n != "o" and n not in symbols)
-    return {"image": letters[0], "point": letters[0].upper()} if letters else {"image": "none", "point": "none"}
+    return {"image": letters[0], "point": letters[0].upper()} if letters else {"image": 0, "point": 0}
 
 
 def pole_notes(fig: Figure) -> list:
