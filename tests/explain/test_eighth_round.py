@@ -242,7 +242,7 @@ def test_the_pedals_centre_is_the_notes_c(lang):
     pedals (C)"."""
     page = rendered("seed_c5_e6_bicycle", lang, drawings=False)
     assert re.search(r"^\| C \| ", page, re.M) and not re.search(r"^\| K \| ", page, re.M)
-    assert ("v_K" not in page and "v_C = " in page) or "v_C" in page
+    assert "v_K" not in page and "v_C" in page
 
 
 # -- (i) a repeated planet is worked with its own equations ----------------------------------------------------------
