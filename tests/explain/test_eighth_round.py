@@ -278,3 +278,11 @@ def test_the_order_lists_the_steps_written(name):
     steps = re.findall(r"^### Step (\d+)", velocities, re.M)
     assert items == [str(i) for i in range(1, len(items) + 1)]
     assert len(items) == len(steps), (name, items, steps)
+
+
+def test_a_marked_symbol_is_set_in_the_sans_font():
+    """HTML: the serif italic sets δ̇'s dot into the δ's curl (read as δ = 0): a notation's
+    letter with a combining mark is set as a marked parameter is, in the sans font."""
+    html = rendered("seed_c5_2_1_tricycle", "ca", "html", drawings=False)
+    assert '<i><span class="mk">δ̇</span></i> = 0.' in html
+    assert "<i>δ̇</i>" not in html
