@@ -22,7 +22,7 @@ SOURCE = Path(explain_package.__file__).resolve().parent
 SOURCES = [SOURCE, Path(questions_package.__file__).resolve().parent]
 # keys built at run time from a name (f"kind.{step.kind}" ...): the families and their members
 FAMILIES = {
-    "kind": ["input", "RRR", "RRP", "RPR", "PRP", "other", "copy"],
+    "kind": ["input", "RRR", "RRP", "RPR", "PRP", "other"],
     "joint": list(KINDS) + ["slot_fixed"],                  # every kind of joint has its name (kinds.kind_key)
     "shape": ["circle", "line", "disc", "plane", "curveshape", "camshape"],
     "cond": [k.name for k in KINDS.values() if not k.rolls] + ["slot_fixed"],  # rolling pairs are written out

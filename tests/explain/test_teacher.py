@@ -340,7 +340,7 @@ WHOLE = {
     "seed_c5_e5_unequal_wheels": ["Given: v_A = (v, 0), to the right."],
     "seed_c5_1_5_pulley_block": ["Given: v_C1 = (0, −v), downwards.", "Given: v_C3 = (0, −2·v), downwards."],
     "seed_001_rolling_pair": ["Given: v_A = (0.5, 0) m/s, to the right."],
-    "seed_c5_2_1_tricycle": ["Given: v_{F∈wheel} = (√2·v₀/2, √2·v₀/2), along (1, 1)."],
+    "seed_c5_2_1_tricycle": ["Given: v_{F∈fork} = (√2·v₀/2, √2·v₀/2), along (1, 1)."],
     "car_wheel_steering": ["Given: the component of a_M along MK is 0 m/s²."],
 }
 

@@ -52,16 +52,17 @@ def test_bar_rate_one_letter(lang):
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_held_pin_by_its_symbol(lang):
-    """C5-2.1: the steering held is said by the rate the composition uses, ω_{front wheel
-    rel chassis} = 0 (no α since the seventh round: the notes ask no acceleration), not as "the relative angular velocity at the pin F" — and,
+    """C5-2.1: the steering held is said by the rate the composition uses, the notes' δ̇ = 0
+    (since the eighth round; ω_{front wheel rel chassis} = 0 before; no α since the seventh
+    round: the notes ask no acceleration), not as "the relative angular velocity at the pin F" — and,
     since the fifth round, as a condition of the pin F, not a datum (test_fifth_round_words); and
     the chassis' centre, placed in the velocity step and giving its velocities, is not
     checked again against them at the end."""
     page = rendered("seed_c5_2_1_tricycle", lang, drawings=False)
     given = [line for line in page.splitlines() if re.match(r"(Given|Dato|Dada|Datua): ", line)]
-    rel = re.compile(r"(ω|α)_\{[^}]+\} = 0\.$")
+    rel = re.compile(r"(δ̇|(ω|α)_\{[^}]+\}) = 0\.$")
     held = [line for line in page.splitlines() if rel.search(line) and line not in given]
-    assert held and all("ω_{" in line for line in held), held
+    assert held and all(line.endswith("δ̇ = 0.") for line in held), held
     assert not any(rel.search(line) for line in given), given
     check = {"en": "Check with the velocities", "es": "Comprobación con las velocidades",
              "ca": "Comprovació amb les velocitats", "eu": "Egiaztapena aurkitutako abiadurekin"}[lang]

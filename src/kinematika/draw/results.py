@@ -18,7 +18,7 @@ from .words import word
 from .geometry import perpendicular
 from .names import (bare, body_labels, contact_name, equation, formula, pair_symbol, point_symbol,
                     subscript, value_text)
-from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView,
+from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView, drawing_values,
                     vector_label)
 
 KINDS = ("velocity", "acceleration")
@@ -172,7 +172,28 @@ def magnitude_text(sol: Any, value: tuple, magnitude: float, lang: Optional[str]
         return "0"
     if not sol.symbolic:
         return value_text(magnitude, lang)
-    return formula(sol.norm(value), magnitude, lang, sol.model.wording.parameter_symbols(lang))
+    return formula(signed_bars(sol.norm(value), drawing_values(sol.inst)), magnitude, lang,
+                   sol.model.wording.parameter_symbols(lang))
+
+
+def signed_bars(expr: Any, values: dict) -> Any:
+    """`expr` with each |x| written as x or −x, the sign x has at `values` (the numbers the
+    figure is drawn at): the figure shows that instant, and the text writes the factor signed,
+    as the notes do (C5-2.1: v_RL = √2·v₀·(L − s)/(2·L), not |L − s|, with L > s drawn).
+    A factor that vanishes there keeps its bars."""
+    import sympy
+
+    if not values or not getattr(expr, "has", lambda *_: False)(sympy.Abs):
+        return expr
+
+    def unbarred(x: Any) -> Any:
+        try:
+            at = float(x.xreplace(values))
+        except (TypeError, ValueError):
+            return sympy.Abs(x)
+        return x if at > 0 else -x if at < 0 else sympy.Abs(x)
+
+    return expr.replace(sympy.Abs, unbarred)
 
 
 # instant centres -------------------------------------------------------------------------

@@ -16,7 +16,6 @@ from .answers import answers_section, curvature_section, relative_rates
 from .asked import worked
 from .checks import checks_section
 from .contacts import contact_section
-from .copies import copies
 from .centres import centre_sites, centres_first, centres_section
 from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
@@ -24,7 +23,7 @@ from .document import Ann, Document, Equation, Inline, Msg, Name, Section, Sym, 
 from .group import refine
 from .order import solution_order
 from .planar import PlanarSteps
-from .needs import accelerations_asked, prune
+from .needs import accelerations_asked, centres_asked_first, prune
 from .polygon import degenerate, level_polygon, polygon
 from .terms import acceleration_terms
 from .positions import position_section
@@ -55,7 +54,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
                    numbers=body_numbers(sol.model), wording=sol.model.wording)
     doc.sections.append(data_section(ctx, length_unit, accel))
     if ctx.planar:
-        steps = copies(ctx, refine(ctx, solution_order(sol)))
+        steps = refine(ctx, solution_order(sol))
         doc.sections.append(structure_section(ctx, steps))
         placed = position_section(ctx)
         if placed is not None:
@@ -86,7 +85,11 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
                 doc.sections.append(rest)
         elif ctx.model.default_questions or worked(ctx).centres:
             ctx.centre_notes = None         # read again: a rate the steps found gives a centre (0 = v_Q + ω × QI)
-            doc.sections.append(centres_section(ctx))      # only what is asked (the slides ask none)
+            centres = centres_section(ctx)      # only what is asked (the slides ask none)
+            if len(levels) > 1 and centres_asked_first(ctx):
+                doc.sections.insert(doc.sections.index(levels[0]) + 1, centres)
+            else:
+                doc.sections.append(centres)
         for sec, level in zip(levels, wanted):
             for eq in _equations(sec):
                 for t in (t for side in eq.sides for t in side if t.kind == "slide"):

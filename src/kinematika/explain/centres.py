@@ -168,7 +168,7 @@ def centres_first(ctx: Ctx, steps: Optional[list] = None) -> bool:
         return False
     if ctx.centre_first_memo is not None:
         return ctx.centre_first_memo
-    grouped = None if steps is None else {b for st in steps if st.kind in ("other", "copy") for b in st.bodies}
+    grouped = None if steps is None else {b for st in steps if st.kind == "other" for b in st.bodies}
     made, _, asked = _notes(ctx)
     ctx.centre_first_memo = any(ctx.frame in key and key in made and _placed(ctx, made[key])
                                 and (grouped is None or (set(key) - {ctx.frame}) <= grouped) for key in asked)

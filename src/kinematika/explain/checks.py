@@ -22,7 +22,7 @@ from typing import Optional
 
 from .context import Ctx, omega_sym
 from .document import Inline, Name, Section, Value, msg
-from .drives import circle, drives, pivot, rho, same_place, simplified, wheel_circle
+from .drives import circle, drives, pivot, radius, rho, same_place, simplified, wheel_circle
 from .kinds import crossed_by_a_slot, rolls, welds
 
 
@@ -83,12 +83,14 @@ def _willis_blocks(ctx: Ctx, carrier: str, planet: str, first: tuple, second: tu
     ratio = _simplified(ctx, (w1 - wc) / (w2 - wc)) if not ctx.is_zero(w2 - wc, "rate") else None
     ws = [omega_sym(b) for b in (s1, carrier, s2, carrier)]
     formula = Inline(["(", ws[0], " − ", ws[1], ") / (", ws[2], " − ", ws[3], ")"])
-    radii = Inline(["−" if sign < 0 else "", rho(s2), " / ", rho(s1)])
+    radii = Inline(["−" if sign < 0 else "", radius(ctx, s2, True), " / ", radius(ctx, s1, True)])
+    written = ctx.symbolic              # the radii written in the ratio: no "with ρ = …" after it
     values = Inline(["(", Value(ctx.clean(w1, "rate"), ""), " − ", Value(ctx.clean(wc, "rate"), ""), ") / (",
                      Value(ctx.clean(w2, "rate"), ""), " − ", Value(ctx.clean(wc, "rate"), ""), ")"])
     return [msg("check.willis", carrier=Name(carrier, "body"), planet=Name(planet, "body"), s1=Name(s1, "body"),
-                s2=Name(s2, "body"), formula=formula, radii=radii, r1=Inline([rho(s1), " = ", Value(r1, "len")]),
-                r2=Inline([rho(s2), " = ", Value(r2, "len")]), train=Value(train, ""),
+                s2=Name(s2, "body"), formula=formula, radii=radii,
+                r1=0 if written else Inline([rho(s1), " = ", Value(r1, "len")]),
+                r2=0 if written else Inline([rho(s2), " = ", Value(r2, "len")]), train=Value(train, ""),
                 values=values, ratio=Value(ratio if ratio is not None else train, ""))]
 
 
@@ -116,10 +118,10 @@ def belts(ctx: Ctx) -> list:
         rel = [omega_sym(x, ctx.rel(holder)) for x in (a, b)]
         out.append(msg("check.belt", line=Name(d.line, "body"), a=Name(a, "body"), b=Name(b, "body"),
                        holder=Name(holder, "body"),
-                       equation=Inline([rho(a), " ", rel[0], " = ", "" if sign > 0 else "−",
-                                        rho(b), " ", rel[1]]),
-                       ratio=Inline([rel[1], " / ", rel[0], " = ", "" if sign > 0 else "−", rho(a), " / ",
-                                     rho(b), " = ", Value(ratio, "")]),
+                       equation=Inline([radius(ctx, a, True), " ", rel[0], " = ", "" if sign > 0 else "−",
+                                        radius(ctx, b, True), " ", rel[1]]),
+                       ratio=Inline([rel[1], " / ", rel[0], " = ", "" if sign > 0 else "−", radius(ctx, a, True),
+                                     " / ", radius(ctx, b, True), " = ", Value(ratio, "")]),
                        values=Inline([rel[1], " = ", Value(ctx.clean(wb, "rate"), "rate"), ", ", rel[0], " = ",
                                       Value(ctx.clean(wa, "rate"), "rate")])))
     out += _train(ctx, links)
@@ -145,7 +147,7 @@ def _train(ctx: Ctx, links: list) -> list:
     w0, w1 = omega_sym(first, ctx.rel(holder)), omega_sym(last, ctx.rel(holder))
     factors: list = []
     for i, (a, b, _, _) in enumerate(chain):
-        factors += (["·"] if i else []) + ["(", rho(a), " / ", rho(b), ")"]
+        factors += (["·"] if i else []) + ["(", radius(ctx, a, True), " / ", radius(ctx, b, True), ")"]
     value = _simplified(ctx, ctx.omega(last, holder) / ctx.omega(first, holder))
     return [msg("check.train", ratio=Inline([w1, " / ", w0, " = "] + factors + [" = ", Value(product, "")]),
                 value=Value(value, ""))]

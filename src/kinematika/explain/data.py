@@ -35,7 +35,9 @@ def data_section(ctx: Ctx, length_unit: str, accelerations: bool) -> Section:
     """The Data section of the explanation of `ctx`'s solution."""
     sec = Section(msg("sec.data"))
     sec.add(msg("data.symbolic" if ctx.symbolic else "data.numeric", unit=length_unit))
-    sec.add(msg("data.planar" if ctx.planar else "data.spatial"))
+    # the sign convention names the rates the page uses: no angular accelerations on a page
+    # that asks none (C5-2.1, 2.2: "angular velocities … are signed")
+    sec.add(msg("data.planar", accelerations=int(accelerations)) if ctx.planar else msg("data.spatial"))
     sec.add(Told("data"))
     rows = parameter_rows(ctx)
     if rows:

@@ -85,6 +85,30 @@ def rho(body: str) -> Sym:
     return Sym("ρ", body, vector=False, of_body=True)
 
 
+def radius(ctx: Ctx, body: str, factor: bool = False) -> Any:
+    """A wheel's radius as a relation writes it: in a symbolic model the radius itself, as
+    the notes write it (C5-E.6's r Ω_pinyó = R Ω_plat, C5-E.2's 2r Ω = 3r Ω), in brackets
+    when it is a sum and a `factor`; in a numeric one ρ with the body's label (ρ_3), its
+    number said after (`radii`)."""
+    if not ctx.symbolic:
+        return rho(body)
+    value = ctx.clean(wheel_circle(ctx, body)[1], "len")
+    if factor and getattr(value, "is_Add", False):
+        return Inline(["(", Value(value, "len"), ")"])
+    return Value(value, "len")
+
+
+def radii(ctx: Ctx, *bodies: str) -> Any:
+    """What the relation's "(with ρ_a = …, ρ_b = …)" says: the radii's values when the
+    relation writes ρ (numeric), else 0 (the radii are written in it: `radius`)."""
+    if ctx.symbolic:
+        return 0
+    parts: list = []
+    for i, body in enumerate(bodies):
+        parts += ([", "] if i else []) + [rho(body), " = ", Value(wheel_circle(ctx, body)[1], "len")]
+    return Inline(parts)
+
+
 def simplified(ctx: Ctx, x: Any) -> Any:
     """A ratio of radii as short as it goes (2, r/R)."""
     if not ctx.symbolic:
@@ -187,16 +211,17 @@ def _pair(ctx: Ctx, d: Pair, a: str, b: str, level: str) -> list:
     r_a, r_b = sym(a, k), sym(b, k)
     ctx.worked.update({f"relative:{a}/{d.holder}", f"relative:{b}/{d.holder}"})
     sense = not ctx.symbolic
-    radii = Inline([rho(a), " = ", Value(ra, "len"), ", ", rho(b), " = ", Value(rb, "len")])
-    relation = Inline([rho(a), " ", w_a, " = ", minus, rho(b), " ", w_b])
-    derived = Inline([rho(a), " ", r_a, " = ", minus, rho(b), " ", r_b])
+    said = radii(ctx, a, b)
+    rad_a, rad_b = radius(ctx, a, True), radius(ctx, b, True)
+    relation = Inline([rad_a, " ", w_a, " = ", minus, rad_b, " ", w_b])
+    derived = Inline([rad_a, " ", r_a, " = ", minus, rad_b, " ", r_b])
     names = dict(holder=Name(d.holder, "body"), joint=Name(d.joint, "joint"), a=Name(a, "body"), b=Name(b, "body"),
-                 radii=radii)
+                 radii=said)
     if level == "v":
         ctx.worked.update({f"pair:{d.joint}", f"drive:{b}"})
         out: list = [msg("pair.relation_v", equation=relation, **names)]
     elif f"pair:{d.joint}" in ctx.worked:
-        out = [msg("drive.relation_a", equation=derived, radii=radii)]
+        out = [msg("drive.relation_a", equation=derived, radii=said)]
     else:
         out = [msg("pair.relation", equation=relation, derived=derived, **names)]
     if k is not None:
@@ -224,8 +249,8 @@ def _relation(ctx: Ctx, d: Drive, a: str, b: str, level: str) -> list:
     ctx.worked.update({f"relative:{a}/{d.holder}", f"relative:{b}/{d.holder}"})    # found here: not again
     out: list = [msg("drive.relation" if level == "v" else "drive.relation_a", holder=Name(d.holder, "body"),
                      line=Name(d.line, "body"), a=Name(a, "body"), b=Name(b, "body"),
-                     equation=Inline([rho(a), " ", rel_a, " = ", minus, rho(b), " ", rel_b]),
-                     radii=Inline([rho(a), " = ", Value(ra, "len"), ", ", rho(b), " = ", Value(rb, "len")]))]
+                     equation=Inline([radius(ctx, a, True), " ", rel_a, " = ", minus, radius(ctx, b, True), " ", rel_b]),
+                     radii=radii(ctx, a, b))]
     sense = not ctx.symbolic
     if k is not None:                  # ω_a = ω_a/K + ω_K: the known wheel's rate seen from K
         how = ["−", sym(d.holder)] if a == ctx.frame else [sym(a), " − ", sym(d.holder)]

@@ -39,7 +39,7 @@ from .order import jointed
 from .contacts import geometric_blocks
 from .drives import drive_blocks, pair_blocks
 from .given import whole_along
-from .kinds import (by_centre_path, crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls,
+from .kinds import (by_centre_path, roller, crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls,
                     same_rate, slider, welds)
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms
 
@@ -904,8 +904,9 @@ class Writer:
             ps.done.add(self.label(p.end))       # no slip says it: v_J10∈9 = v_J10∈8, in its sentence
             out = [b for b in out if not (isinstance(b, Msg) and b.key == "rolling.noslip"
                                           and b.args["joint"].text == crossing.id)]
-            out.append(msg("rolling.same", joint=joint_name(crossing.id), a=body_name(crossing.a),
-                           b=body_name(crossing.b), point=point_name(p.end.point), sym=target.sym,
+            rolling, on = roller(ctx.model, crossing)
+            out.append(msg("rolling.same", joint=joint_name(crossing.id), a=body_name(on),
+                           b=body_name(rolling), point=point_name(p.end.point), sym=target.sym,
                            other=sides[0][0].sym))
             return out
         out.append(Equation(target, sides, lv, ctx.ref(p.end.point, p.end.body), position=position,
@@ -1064,7 +1065,8 @@ class Writer:
         lv = self.level
         if rolls(j):
             key = "rolling.noslip" if lv == "v" else "rolling.kept"
-            return [msg(key, joint=joint_name(j.id), a=body_name(j.a), b=body_name(j.b),
+            rolling, on = roller(self.ctx.model, j)
+            return [msg(key, joint=joint_name(j.id), a=body_name(on), b=body_name(rolling),
                         point=point_name(self.ctx.contact(j)))]
         if knife_edge(j):
             return [msg("group.wheel_v" if lv == "v" else "group.wheel_a", joint=joint_name(j.id),

@@ -12,6 +12,23 @@ def rolls(j: Any) -> bool:
     return bool(j.kind.rolls)
 
 
+def roller(model: Any, j: Any) -> tuple[str, str]:
+    """(the body that rolls, the body it rolls on) at a rolling contact: a body with a circle
+    rolls on one with only straight profiles (a pulley on its cable, a wheel on the ground: the
+    notes' "les politges no llisquen al damunt del cable"), never a strand on a pulley; other
+    pairs (two circles: gears, a planet in its ring) keep the joint's order, `j.b` on `j.a`."""
+    def straight(body: str) -> bool:
+        shapes = model.bodies[body].shapes
+        return bool(shapes) and all(type(s).__name__ in ("Line", "Plane") for s in shapes)
+
+    def round_(body: str) -> bool:
+        return any(type(s).__name__ in ("Circle", "Disc") for s in model.bodies[body].shapes)
+
+    if straight(j.b) and round_(j.a):
+        return j.a, j.b
+    return j.b, j.a
+
+
 def by_centre_path(j: Any) -> bool:
     """A rolling contact the notes explain through the circle's centre: the centre keeps its
     distance from the other profile, so its path relative to that body is known (a line

@@ -29,6 +29,24 @@ def accelerations_asked(ctx: Ctx) -> bool:
     return ctx.model.default_questions or any(QUESTIONS[q.kind].level == "acceleration" for q in ctx.model.questions)
 
 
+def centres_asked_first(ctx: Ctx) -> bool:
+    """Whether the model asks an instant centre before anything of the accelerations: then
+    the centres found from the velocities are said right after the velocities, before the
+    accelerations, in the order the questions come (C5-E.6: the notes' first question is the
+    pedals' centre, their second the curvature of P's path)."""
+    if ctx.model.default_questions:
+        return False
+    from .asked import worked
+
+    centres = worked(ctx).centres
+    for q in ctx.model.questions:
+        if q in centres:
+            return True
+        if QUESTIONS[q.kind].level == "acceleration":
+            return False
+    return False
+
+
 def prune(ctx: Ctx, doc: Document) -> None:
     """Drop the forward evaluations of the level sections that nothing needs."""
     if ctx.model.default_questions:
@@ -201,6 +219,26 @@ def _drop_rows(doc: Document, bodies: set[str], alphas: set[str]) -> None:
         if s.title.key == "sec.structure":
             for m in (b for b in _blocks(s) if isinstance(b, Msg) and b.key in ("order.item", "order.item_group")):
                 _unname(m, bodies)
+            _drop_order_items(s, bodies)
+
+
+def _drop_order_items(sec: Section, bodies: set[str]) -> None:
+    """An item of the order of solution whose every body went unworked goes, and the rest are
+    numbered on: the order lists the steps the page writes (C5-1.4's third planet, which
+    nothing asks, is no "6." without a step 6)."""
+    def unworked(m: Msg) -> bool:
+        named = m.args.get("bodies")
+        named = named.item if isinstance(named, Lead) else named
+        return isinstance(named, Names) and all(getattr(n, "text", n) in bodies for n in named.items)
+
+    for sub in (b for b in sec.blocks if isinstance(b, Section)):
+        sub.blocks = [b for b in sub.blocks
+                      if not (isinstance(b, Msg) and b.key in ("order.item", "order.item_group") and unworked(b))]
+        n = 0
+        for m in (b for b in sub.blocks if isinstance(b, Msg) and b.key in ("order.item", "order.item_group")):
+            if isinstance(m.args.get("n"), int):
+                n += 1
+                m.args["n"] = n
 
 
 STEP_TITLES = ("step.title", "step.title_group")

@@ -17,9 +17,8 @@ from .group import centre_site, group_blocks, still_contact
 from .shared import shared_rates
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
-from .copies import copy_of
 from .given import sign_of, heading, whole_along
-from .kinds import kind_key, pin_only, rolls, turns
+from .kinds import kind_key, pin_only, roller, rolls, turns
 from .order import Step, merge_vehicles
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
@@ -91,9 +90,6 @@ class PlanarSteps:
         builder = {"input": self.input, "RRR": self.rrr, "RRP": self.dyad_rp, "RPR": self.rpr,
                    "PRP": self.prp}.get(step.kind)
         blocks = self.drivers(step)
-        if step.kind == "copy":
-            self.used.update(step.joints)
-            return blocks + self.copied(step) + self.carry(step, fallback=False)
         if step.kind == "other":
             higher = higher_pair_steps(self, step)
             if higher is not None:
@@ -235,25 +231,6 @@ class PlanarSteps:
         eq = self.equation(self.target(pin, body, known=False), [side1, side2], pin, body)
         return [eq, self.same(body, k1, first)]
 
-    def copied(self, step: Step) -> list:
-        """Bodies that repeat one found before, turned about a fixed centre (the notes' "the
-        same for each planet"): said once each, with the rate they share (`copies`)."""
-        out: list = []
-        for b in step.bodies:
-            c = copy_of(self.ctx, b, sorted(self.known))
-            if c is None:               # cannot happen: the step was made of copies
-                out.append(self.rate(b))
-                continue
-            sym = omega_sym if self.level == "v" else alpha_sym
-            value = self.ctx.omega(b) if self.level == "v" else self.ctx.alpha(b)
-            out.append(msg("copy.same", body=body_(b), original=body_(c.original), centre=point(c.centre),
-                           angle=Value(round(c.angle, 6), "deg"), accel=int(self.level == "a")))
-            out.append(Derived(sym(b), [sym(c.original)], self.ctx.value(value, LEVEL_UNIT[self.level]), b,
-                               "omega" if self.level == "v" else "alpha", not self.ctx.symbolic))
-            self.done.update(self.ctx.point_label(p, b) for p in self.ctx.model.bodies[b].points
-                             if self.ctx.motion_key(p, b) in {self.ctx.motion_key(p, k) for k in self.known})
-        return out
-
     # groups that are not dyads ------------------------------------------------------------
     def other(self, step: Step) -> list:
         """A group that is no dyad: its joints' conditions one by one (a rolling contact as no
@@ -297,12 +274,14 @@ class PlanarSteps:
             target = Term(Sym("v", name), ctx.clean(ctx.vel(j.b, name), "speed"), Ann("?"), Ann("?"),
                           unknown=True, kind="point")
             eq = Equation(target, sides, "v", ctx.ref(name, j.b), position=contact.point)
-            return [msg("rolling.noslip", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(name)), eq]
+            rolling, on = roller(ctx.model, j)
+            return [msg("rolling.noslip", joint=joint(j.id), a=body(on), b=body(rolling), point=point(name)), eq]
         rel = contact_term(ctx, name, j.b, j.a)
         target = Term(Sym("a", f"{name}∈{j.b}"), ctx.clean(ctx.acc(j.b, name), "accel"),
                       Ann("?"), Ann("?"), unknown=True, kind="point")
         eq = Equation(target, [sides[0], sides[1] + [rel]], "a", ctx.ref(name, j.b), position=contact.point)
-        return [msg("rolling.kept", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(name))] + \
+        rolling, on = roller(ctx.model, j)
+        return [msg("rolling.kept", joint=joint(j.id), a=body(on), b=body(rolling), point=point(name))] + \
             geometric_blocks(ctx, j, self.geometric) + [eq]
 
     def contact_name(self, j: Joint) -> str:

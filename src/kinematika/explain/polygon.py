@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 
 import math
+from typing import Any
 
 from .context import Ctx
 from .document import Arrow, Equation, Figure, msg
@@ -40,11 +41,26 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     if key == "fig.level_a":                # the caption names only the kinds of terms drawn
         key = {"coriolis": "fig.level_a", "relative": "fig.level_a_relative",
                "normal": "fig.level_a_normal"}[acceleration_terms(eqs)]
-    fig = Figure(msg(key), unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
+    images = poly.image_points()
+    fig = Figure(msg(key, **({} if step else lettering(ctx, [label for label, _, _ in images]))),
+                 unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows = _separated(poly.arrows)
-    fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
+    fig.points = [("o", (0.0, 0.0), "pole")] + images
     fig.notes = pole_notes(fig)
     return fig
+
+
+def lettering(ctx: Ctx, labels: list[str]) -> dict[str, Any]:
+    """The caption's example of how images are lettered: "a for A", unless the page writes a
+    as a symbol (C5-2.2's length a: "(a, A-rentzat)" beside it reads as the length's name);
+    then one of the polygon's own one-letter images that names no symbol ("p for P"), or no
+    example (`image` 0)."""
+    symbols = {str(name) for name in ctx.model.parameters}
+    if "a" not in symbols:
+        return {"image": "a", "point": "A"}
+    letters = sorted(n for label in labels for n in label.split(", ")
+                     if len(n) == 1 and n.isalpha() and n.islower() and n != "o" and n not in symbols)
+    return {"image": letters[0], "point": letters[0].upper()} if letters else {"image": 0, "point": 0}
 
 
 def pole_notes(fig: Figure) -> list:

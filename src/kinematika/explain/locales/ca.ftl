@@ -3,7 +3,10 @@
 
 sec-data = Dades
 data-numeric = Unitats: longituds en { $unit }, velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
-data-planar = Moviment pla: les velocitats i acceleracions angulars tenen signe, positives en sentit antihorari.
+data-planar = Moviment pla: les velocitats{ $accelerations ->
+        [0] {" "}angulars
+       *[other] {" "}i acceleracions angulars
+    } tenen signe, positives en sentit antihorari.
 data-relative = Una magnitud relativa anomena els dos sòlids: { $v } és la velocitat del punt { $point } del sòlid { $b } vista des del sòlid { $a }, i { $w } la velocitat angular de { $b } respecte de { $a }.
 data-spatial = Les velocitats i acceleracions angulars són vectors (regla de la mà dreta al voltant de la seva direcció).
 data-symbolic = Les dades són símbols, i cada resultat és una fórmula exacta en funció d’aquests. Les figures es dibuixen amb valors de mostra dels símbols, indicats sota cada figura.
@@ -185,7 +188,6 @@ kind-RRP = díade RRP
 kind-RPR = díade RPR
 kind-PRP = díade PRP
 kind-other = grup resolt conjuntament
-kind-copy = de la mateixa manera
 step-title = Pas { $n }: { $kind } — { $bodies }
 step-title_group = Pas { $n }: { $bodies }
 sec-velocities = Velocitats
@@ -336,7 +338,7 @@ centre-joint-gear = el contacte { $joint } de les circumferències primitives,
 centre-joint-prismatic = l’enllaç és prismàtic: el moviment relatiu és una translació i el CIR és a la perpendicular a la guia,
 centre-joint-weld = els dos sòlids estan units rígidament:
 centre-kennedy = per Aronhold–Kennedy és a la recta que passa per { $l1 } (tercer sòlid { $k1 }) i a la recta que passa per { $l2 } (tercer sòlid { $k2 }); aquestes rectes es tallen
-centre-velocities = els enllaços no el situen abans de conèixer les velocitats; amb elles: les velocitats respecte { ELISION($frame) ->
+centre-velocities = les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } { ELISION($p) ->
@@ -516,13 +518,6 @@ translation-same = { $body } { COUNT($body) ->
         [1] acceleració
        *[other] velocitat
     }:
-copy-same = { $body } té els mateixos enllaços, amb els mateixos sòlids, i el mateix radi que { $original }, i ocupa el seu lloc després d’un gir de { $angle } al voltant { ELISION($centre) ->
-        [vowel] d’{ $centre }
-       *[other] de { $centre }
-    }: el seu moviment és el de { $original }, girat, amb la mateixa { $accel ->
-        [1] acceleració angular
-       *[other] velocitat angular
-    }:
 fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme{ $kennedy ->
         [0] { $normals_n ->
             [0] .
@@ -552,28 +547,40 @@ fig-drawn_at = Dibuixat amb { $values }.
 fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
-    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, les velocitats relatives de les equacions anteriors{ $format ->
+    } acaba a la seva imatge, amb la lletra del punt{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } per a { $point })
+    }; entre les imatges, les velocitats relatives de les equacions anteriors{ $format ->
         [md] {""}
        *[other] {" "}(negre)
     }, l’una darrere l’altra.
 fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
-    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors ({ $format ->
+    } acaba a la seva imatge, amb la lletra del punt{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } per a { $point })
+    }; entre les imatges, els termes de les equacions anteriors ({ $format ->
         [md] {""}
        *[other] negre:{" "}
     }normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
 fig-level_a_relative = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
-    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors ({ $format ->
+    } acaba a la seva imatge, amb la lletra del punt{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } per a { $point })
+    }; entre les imatges, els termes de les equacions anteriors ({ $format ->
         [md] {""}
        *[other] negre:{" "}
     }normals i tangencials, i relatius), l’un darrere l’altre.
 fig-level_a_normal = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
-    } acaba a la seva imatge, amb la lletra del punt (a per a A); entre les imatges, els termes de les equacions anteriors ({ $format ->
+    } acaba a la seva imatge, amb la lletra del punt{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } per a { $point })
+    }; entre les imatges, els termes de les equacions anteriors ({ $format ->
         [md] {""}
        *[other] negre:{" "}
     }normals i tangencials), l’un darrere l’altre.
@@ -644,7 +651,7 @@ centre-line-slot_fixed = la normal a la recta { ELISION($a) ->
        *[other] de { $a }
     } per { $point }, el punt que hi llisca
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
-centre-field = els enllaços no el situen abans de conèixer les velocitats; amb elles, és a la perpendicular a { $v } per { $q }, del costat cap on apunta { $v } girada 90° en el sentit de { $w }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+centre-field = és a la perpendicular a { $v } per { $q }, del costat cap on apunta { $v } girada 90° en el sentit de { $w }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
@@ -721,7 +728,10 @@ sec-checks = Comprovacions
 check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->
         [vowel] d’{ $carrier }
        *[other] de { $carrier }
-    }, la transmissió és ordinària ({ $planet } engrana amb { $s1 } i amb { $s2 }, els eixos dels quals porta { $carrier }), de manera que { $formula } = { $radii } = { $train }, amb { $r1 } i { $r2 }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.
+    }, la transmissió és ordinària ({ $planet } engrana amb { $s1 } i amb { $s2 }, els eixos dels quals porta { $carrier }), de manera que { $formula } = { $radii } = { $train }{ $r1 ->
+        [0] {""}
+       *[other] , amb { $r1 } i { $r2 }
+    }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.
 check-belt = Vista des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
@@ -733,16 +743,28 @@ how-translates = (es trasllada respecte { ELISION($body) ->
 pair-relation_v = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si, de manera que { $equation } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si, de manera que { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}(amb { $radii })
+    }:
 pair-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si, de manera que { $equation } a cada instant; derivant, amb els radis constants, { $derived } (amb { $radii }):
-drive-relation_a = Derivant, amb els radis constants: { $equation } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos: { $a } i { $b } giren al seu voltant i no llisquen entre si, de manera que { $equation } a cada instant; derivant, amb els radis constants, { $derived }{ $radii ->
+        [0] {""}
+       *[other] {" "}(amb { $radii })
+    }:
+drive-relation_a = Derivant, amb els radis constants: { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}(amb { $radii })
+    }:
 drive-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos i { $line } es trasllada: no llisca sobre { $a } ni sobre { $b }, de manera que les seves perifèries tenen la mateixa velocitat, { $equation } (amb { $radii }):
+    }, que porta els dos eixos, els eixos són fixos i { $line } es trasllada: no llisca sobre { $a } ni sobre { $b }, de manera que les seves perifèries tenen la mateixa velocitat, { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}(amb { $radii })
+    }:
 check-train = La relació de la transmissió és el producte de les de les seves etapes: { $ratio }; amb les velocitats angulars trobades, la relació val { $value }.
 check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la seva oscil·lació quan la ranura és tangent a la circumferència { ELISION($pin) ->
         [vowel] d’{ $pin }
@@ -754,14 +776,14 @@ centre-line-normal = la normal comuna al contacte { $point } (els sòlids llisqu
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = el terra
 # un CIR a partir de dues velocitats paral·leles i perpendiculars a la recta dels seus punts (la construcció proporcional dels apunts)
-centre-parallel-between = els enllaços no el situen abans de conèixer les velocitats; amb elles: respecte { ELISION($frame) ->
+centre-parallel-between = respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $arm } = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }:
-centre-parallel-outside = els enllaços no el situen abans de conèixer les velocitats; amb elles: respecte { ELISION($frame) ->
+centre-parallel-outside = respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $arm } = { $dist } { ELISION($q) ->

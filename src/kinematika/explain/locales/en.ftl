@@ -3,7 +3,10 @@
 
 sec-data = Data
 data-numeric = Units: lengths in { $unit }, velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
-data-planar = Planar motion: angular velocities and accelerations are signed, counter-clockwise positive.
+data-planar = Planar motion: angular velocities{ $accelerations ->
+        [0] {""}
+       *[other] {" "}and accelerations
+    } are signed, counter-clockwise positive.
 data-relative = A relative quantity names both bodies: { $v } is the velocity of the point { $point } of body { $b } seen from body { $a }, and { $w } the angular velocity of { $b } relative to { $a }.
 data-spatial = Angular velocities and accelerations are vectors (right-hand rule about their direction).
 data-symbolic = The data are symbols, and every result is an exact formula in them. The figures are drawn at sample values of the symbols, given under each figure.
@@ -152,7 +155,6 @@ kind-RRP = RRP dyad
 kind-RPR = RPR dyad
 kind-PRP = PRP dyad
 kind-other = group solved together
-kind-copy = in the same way
 step-title = Step { $n }: { $kind } — { $bodies }
 step-title_group = Step { $n }: { $bodies }
 sec-velocities = Velocities
@@ -213,7 +215,7 @@ centre-joint-gear = the contact { $joint } of the pitch circles,
 centre-joint-prismatic = the pair is prismatic: the relative motion is a translation and the centre is perpendicular to the guide,
 centre-joint-weld = the two bodies are welded:
 centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines meet
-centre-velocities = the joints do not place it before the velocities are known; with them: the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
+centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
 centre-lines = it lies on { $first } and on { $second }; these lines meet
 centre-omega = with the velocities found above, the angular velocity relative to { $frame } is zero: the relative motion is a translation and the centre is
 centre-at = at { $point }.
@@ -294,10 +296,6 @@ translation-same = { $body } does not turn ({ $w } = 0{ $accel ->
         [1] acceleration
        *[other] velocity
     }:
-copy-same = { $body } is joined to the same bodies in the same way, with the same radius, as { $original }, and sits in its place turned { $angle } about { $centre }: it moves as { $original } does, turned, with the same angular { $accel ->
-        [1] acceleration
-       *[other] velocity
-    }:
 fig-centres = The instant centres (rings, I with the numbers of two bodies) on the mechanism{ $kennedy ->
         [0] { $normals_n ->
             [0] .
@@ -327,28 +325,40 @@ fig-drawn_at = Drawn at { $values }.
 fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point (a for A); between the images, the relative velocities of the equations above{ $format ->
+    } ends at its image, lettered as the point{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } for { $point })
+    }; between the images, the relative velocities of the equations above{ $format ->
         [md] {""}
        *[other] {" "}(black)
     }, head to tail.
 fig-level_a = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point (a for A); between the images, the terms of the equations above ({ $format ->
+    } ends at its image, lettered as the point{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } for { $point })
+    }; between the images, the terms of the equations above ({ $format ->
         [md] {""}
        *[other] black:{" "}
     }normal and tangential, relative and Coriolis), head to tail.
 fig-level_a_relative = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point (a for A); between the images, the terms of the equations above ({ $format ->
+    } ends at its image, lettered as the point{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } for { $point })
+    }; between the images, the terms of the equations above ({ $format ->
         [md] {""}
        *[other] black:{" "}
     }normal and tangential, and relative), head to tail.
 fig-level_a_normal = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point (a for A); between the images, the terms of the equations above ({ $format ->
+    } ends at its image, lettered as the point{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } for { $point })
+    }; between the images, the terms of the equations above ({ $format ->
         [md] {""}
        *[other] black:{" "}
     }normal and tangential), head to tail.
@@ -377,7 +387,7 @@ centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } wit
 centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
-centre-field = the joints do not place it before the velocities are known; with them, it lies on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-field = it lies on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-check = Check with the velocities found above: on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
@@ -418,13 +428,28 @@ what-contact = contact point ({ $kind }) between { $a } and { $b }
 what-body = a point of { $bodies }
 note-text = Note: { $text }
 sec-checks = Checks
-check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } carries), so { $formula } = { $radii } = { $train }, with { $r1 } and { $r2 }. With the angular velocities found above, { $values } = { $ratio }: they agree.
+check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } carries), so { $formula } = { $radii } = { $train }{ $r1 ->
+        [0] {""}
+       *[other] , with { $r1 } and { $r2 }
+    }. With the angular velocities found above, { $values } = { $ratio }: they agree.
 check-belt = Seen from { $holder }, which carries both axles, { $line } does not slip on { $a } nor on { $b }: { $equation }, so { $ratio }; with the angular velocities found above, { $values }: they agree.
 how-translates = (it translates relative to { $body })
-pair-relation_v = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation } (with { $radii }):
-pair-relation = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation } at every instant; differentiating, with the radii constant, { $derived } (with { $radii }):
-drive-relation_a = Differentiating, with the radii constant: { $equation } (with { $radii }):
-drive-relation = Seen from { $holder }, which carries both axles, the axles are fixed and { $line } translates: it does not slip on { $a } nor on { $b }, so both move it at one speed, { $equation } (with { $radii }):
+pair-relation_v = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}(with { $radii })
+    }:
+pair-relation = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation } at every instant; differentiating, with the radii constant, { $derived }{ $radii ->
+        [0] {""}
+       *[other] {" "}(with { $radii })
+    }:
+drive-relation_a = Differentiating, with the radii constant: { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}(with { $radii })
+    }:
+drive-relation = Seen from { $holder }, which carries both axles, the axles are fixed and { $line } translates: it does not slip on { $a } nor on { $b }, so both move it at one speed, { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}(with { $radii })
+    }:
 check-train = The train’s ratio is the product of its stages’: { $ratio }; with the angular velocities found above, the ratio is { $value }.
 check-quick = Time ratio of the quick return: { $lever } is at an end of its swing when the slot is tangent to the circle of { $pin } (the crank { $o2 }{ $pin } perpendicular to { $o4 }{ $pin }), where cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Turning steadily, { $crank } sweeps 360° − 2θ = { $slow } in one stroke and 2θ = { $fast } in the other: time ratio { $ratio }.
 driver-slide = Given: the sliding velocity in the prismatic pair { $joint } is { $value }.
@@ -433,5 +458,5 @@ centre-line-normal = the common normal at the contact { $point } (the bodies sli
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = ground
 # a centre from two parallel velocities perpendicular to the line through their points (the notes' proportional construction)
-centre-parallel-between = the constraints do not place it before the velocities are known; with them: relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have opposite senses, so the centre lies between them, where the speed falls to zero, at { $arm } = { $dist } from { $q }:
-centre-parallel-outside = the constraints do not place it before the velocities are known; with them: relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $arm } = { $dist } from { $q }:
+centre-parallel-between = relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have opposite senses, so the centre lies between them, where the speed falls to zero, at { $arm } = { $dist } from { $q }:
+centre-parallel-outside = relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $arm } = { $dist } from { $q }:

@@ -3,7 +3,10 @@
 
 sec-data = Datos
 data-numeric = Unidades: longitudes en { $unit }, velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
-data-planar = Movimiento plano: las velocidades y aceleraciones angulares llevan signo, positivas en sentido antihorario.
+data-planar = Movimiento plano: las velocidades{ $accelerations ->
+        [0] {" "}angulares
+       *[other] {" "}y aceleraciones angulares
+    } llevan signo, positivas en sentido antihorario.
 data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } del sólido { $b } vista desde el sólido { $a }, y { $w } la velocidad angular de { $b } respecto de { $a }.
 data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
 data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
@@ -149,7 +152,6 @@ kind-RRP = díada RRP
 kind-RPR = díada RPR
 kind-PRP = díada PRP
 kind-other = grupo resuelto en conjunto
-kind-copy = de la misma manera
 step-title = Paso { $n }: { $kind } — { $bodies }
 step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
@@ -243,7 +245,7 @@ centre-joint-gear = el contacto { $joint } de las circunferencias primitivas,
 centre-joint-prismatic = el par es prismático: el movimiento relativo es una traslación y el CIR está en la perpendicular a la guía,
 centre-joint-weld = los dos sólidos están unidos rígidamente:
 centre-kennedy = por Aronhold–Kennedy está en la recta que pasa por { $l1 } (tercer sólido { $k1 }) y en la recta que pasa por { $l2 } (tercer sólido { $k2 }); estas rectas se cortan
-centre-velocities = los pares no lo sitúan antes de conocer las velocidades; con ellas: las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
+centre-velocities = las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
 centre-lines = está en { $first } y en { $second }; estas rectas se cortan
 centre-omega = con las velocidades halladas, la velocidad angular respecto de { $frame } es nula: el movimiento relativo es una traslación y el CIR está
 centre-at = en { $point }.
@@ -327,10 +329,6 @@ translation-same = { $body } no gira ({ $w } = 0{ $accel ->
         [1] aceleración
        *[other] velocidad
     }:
-copy-same = { $body } tiene las mismas uniones, con los mismos sólidos, y el mismo radio que { $original }, y ocupa su lugar tras un giro de { $angle } alrededor de { $centre }: su movimiento es el de { $original }, girado, con la misma { $accel ->
-        [1] aceleración angular
-       *[other] velocidad angular
-    }:
 fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo{ $kennedy ->
         [0] { $normals_n ->
             [0] .
@@ -360,28 +358,40 @@ fig-drawn_at = Dibujado con { $values }.
 fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
-    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, las velocidades relativas de las ecuaciones anteriores{ $format ->
+    } acaba en su imagen, con la letra del punto{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } para { $point })
+    }; entre las imágenes, las velocidades relativas de las ecuaciones anteriores{ $format ->
         [md] {""}
        *[other] {" "}(negro)
     }, una tras otra.
 fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
-    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+    } acaba en su imagen, con la letra del punto{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } para { $point })
+    }; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
         [md] {""}
        *[other] negro:{" "}
     }normales y tangenciales, relativos y de Coriolis), uno tras otro.
 fig-level_a_relative = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
-    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+    } acaba en su imagen, con la letra del punto{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } para { $point })
+    }; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
         [md] {""}
        *[other] negro:{" "}
     }normales y tangenciales, y relativos), uno tras otro.
 fig-level_a_normal = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
-    } acaba en su imagen, con la letra del punto (a para A); entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+    } acaba en su imagen, con la letra del punto{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image } para { $point })
+    }; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
         [md] {""}
        *[other] negro:{" "}
     }normales y tangenciales), uno tras otro.
@@ -416,7 +426,7 @@ centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $
 centre-line-slot = la normal en { $point } a la ranura (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
 centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
-centre-field = los pares no lo sitúan antes de conocer las velocidades; con ellas, está en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
+centre-field = está en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
 centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
 centre-check = Comprobación con las velocidades halladas: en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades
@@ -457,13 +467,28 @@ what-contact = punto de contacto ({ $kind }), entre { $a } y { $b }
 what-body = un punto de { $bodies }
 note-text = Nota: { $text }
 sec-checks = Comprobaciones
-check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes lleva { $carrier }), de modo que { $formula } = { $radii } = { $train }, con { $r1 } y { $r2 }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
+check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet } engrana con { $s1 } y { $s2 }, cuyos ejes lleva { $carrier }), de modo que { $formula } = { $radii } = { $train }{ $r1 ->
+        [0] {""}
+       *[other] , con { $r1 } y { $r2 }
+    }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
 check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas, { $values }: coinciden.
 how-translates = (se traslada respecto de { $body })
-pair-relation_v = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí, de modo que { $equation } (con { $radii }):
-pair-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí, de modo que { $equation } en todo instante; derivando, con los radios constantes, { $derived } (con { $radii }):
-drive-relation_a = Derivando, con los radios constantes: { $equation } (con { $radii }):
-drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos y { $line } se traslada: no desliza sobre { $a } ni sobre { $b }, así que sus periferias tienen la misma velocidad, { $equation } (con { $radii }):
+pair-relation_v = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí, de modo que { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}(con { $radii })
+    }:
+pair-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí, de modo que { $equation } en todo instante; derivando, con los radios constantes, { $derived }{ $radii ->
+        [0] {""}
+       *[other] {" "}(con { $radii })
+    }:
+drive-relation_a = Derivando, con los radios constantes: { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}(con { $radii })
+    }:
+drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos y { $line } se traslada: no desliza sobre { $a } ni sobre { $b }, así que sus periferias tienen la misma velocidad, { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}(con { $radii })
+    }:
 check-train = La relación de la transmisión es el producto de las de sus etapas: { $ratio }; con las velocidades angulares halladas, la relación vale { $value }.
 check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extremo de su oscilación cuando la ranura es tangente a la circunferencia de { $pin } (la manivela { $o2 }{ $pin } perpendicular a { $o4 }{ $pin }), donde cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Girando uniformemente, { $crank } barre 360° − 2θ = { $slow } en una carrera y 2θ = { $fast } en la otra: razón de tiempos { $ratio }.
 driver-slide = Dato: la velocidad de deslizamiento en el par prismático { $joint } es { $value }.
@@ -472,5 +497,5 @@ centre-line-normal = la normal común en el contacto { $point } (los sólidos de
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = el suelo
 # un CIR a partir de dos velocidades paralelas y perpendiculares a la recta de sus puntos (la construcción proporcional de los apuntes)
-centre-parallel-between = los enlaces no lo sitúan antes de conocer las velocidades; con ellas: respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $arm } = { $dist } de { $q }:
-centre-parallel-outside = los enlaces no lo sitúan antes de conocer las velocidades; con ellas: respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $arm } = { $dist } de { $q }:
+centre-parallel-between = respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $arm } = { $dist } de { $q }:
+centre-parallel-outside = respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $arm } = { $dist } de { $q }:

@@ -3,7 +3,10 @@
 
 sec-data = Datuak
 data-numeric = Unitateak: luzerak { $unit }-tan, abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
-data-planar = Mugimendu laua: abiadura eta azelerazio angeluarrek zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
+data-planar = Mugimendu laua: { $accelerations ->
+        [0] abiadura angeluarrek
+       *[other] abiadura eta azelerazio angeluarrek
+    } zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
 data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $b } solidoaren { $point } puntuaren abiadura da { $a } solidotik ikusita, eta { $w } { $b } solidoaren abiadura angeluarra { $a } solidoarekiko.
 data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
 data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
@@ -155,7 +158,6 @@ kind-RRP = RRP loturak dituzten bi elementu
 kind-RPR = RPR loturak dituzten bi elementu
 kind-PRP = PRP loturak dituzten bi elementu
 kind-other = batera ebatzitako taldea
-kind-copy = modu berean
 step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
@@ -216,7 +218,7 @@ centre-joint-gear = zirkunferentzia primitiboen { $joint } kontaktua,
 centre-joint-prismatic = lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta zentroa gidaren perpendikularrean dago,
 centre-joint-weld = bi solidoak zurrunki lotuta daude:
 centre-kennedy = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean dago ({ $k1 } hirugarren solidoa) eta { $l2 } zentroetatik pasatzen denean ({ $k2 } hirugarren solidoa); zuzen horiek ebakitzen dira
-centre-velocities = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin: { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
+centre-velocities = { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
 centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek ebakitzen dira
 centre-omega = aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta zentroa
 centre-at = { $point } puntuan.
@@ -297,10 +299,6 @@ translation-same = { $body } solidoa ez da biratzen ({ $w } = 0{ $accel ->
         [1] azelerazio
        *[other] abiadura
     } bera dute:
-copy-same = { $body } solido berberei lotuta dago, { $original } bezala eta erradio berarekin, eta haren lekuan dago, { $centre } puntuaren inguruan { $angle } biratuta: { $original } bezala mugitzen da, biratuta, { $accel ->
-        [1] azelerazio angeluar
-       *[other] abiadura angeluar
-    } berarekin:
 fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean{ $kennedy ->
         [0] { $normals_n ->
             [0] .
@@ -330,28 +328,40 @@ fig-drawn_at = Balio hauekin marraztua: { $values }.
 fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
-    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen abiadura erlatiboak{ $format ->
+    } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image }, { $point }-rentzat)
+    }; irudien artean, aurreko ekuazioen abiadura erlatiboak{ $format ->
         [md] {""}
        *[other] {" "}(beltzez)
     }, bata bestearen ondoren.
 fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
-    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak ({ $format ->
+    } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image }, { $point }-rentzat)
+    }; irudien artean, aurreko ekuazioen terminoak ({ $format ->
         [md] {""}
        *[other] beltzez:{" "}
     }normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
 fig-level_a_relative = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
-    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak ({ $format ->
+    } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image }, { $point }-rentzat)
+    }; irudien artean, aurreko ekuazioen terminoak ({ $format ->
         [md] {""}
        *[other] beltzez:{" "}
     }normalak eta tangentzialak, eta erlatiboak), bata bestearen ondoren.
 fig-level_a_normal = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
-    } haren irudian amaitzen da, puntuaren letrarekin (a, A-rentzat); irudien artean, aurreko ekuazioen terminoak ({ $format ->
+    } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
+        [0] {""}
+       *[other] {" "}({ $image }, { $point }-rentzat)
+    }; irudien artean, aurreko ekuazioen terminoak ({ $format ->
         [md] {""}
        *[other] beltzez:{" "}
     }normalak eta tangentzialak), bata bestearen ondoren.
@@ -380,7 +390,7 @@ centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } 
 centre-line-slot = artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
 centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala, zeinean zehar irristatzen baita
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
-centre-field = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin, { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
@@ -424,13 +434,28 @@ what-body = { $bodies } { $bodies_n ->
     } puntua
 note-text = Oharra: { $text }
 sec-checks = Egiaztapenak
-check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak { $carrier } solidoak daramatza); beraz, { $formula } = { $radii } = { $train }, { $r1 } eta { $r2 } izanik. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
+check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta haien ardatzak { $carrier } solidoak daramatza); beraz, { $formula } = { $radii } = { $train }{ $r1 ->
+        [0] {""}
+       *[other] , { $r1 } eta { $r2 } izanik
+    }. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
 check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
 how-translates = ({ $body } solidoarekiko traslatzen da)
-pair-relation_v = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen; beraz, { $equation } ({ $radii } izanik):
-pair-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen; beraz, { $equation } une oro; deribatuz, erradioak konstanteak direnez, { $derived } ({ $radii } izanik):
-drive-relation_a = Deribatuz, erradioak konstanteak direnez: { $equation } ({ $radii } izanik):
-drive-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira eta { $line } solidoa traslatzen da: ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean; beraz, bien periferiek abiadura bera dute, { $equation } ({ $radii } izanik):
+pair-relation_v = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen; beraz, { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}({ $radii } izanik)
+    }:
+pair-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen; beraz, { $equation } une oro; deribatuz, erradioak konstanteak direnez, { $derived }{ $radii ->
+        [0] {""}
+       *[other] {" "}({ $radii } izanik)
+    }:
+drive-relation_a = Deribatuz, erradioak konstanteak direnez: { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}({ $radii } izanik)
+    }:
+drive-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira eta { $line } solidoa traslatzen da: ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean; beraz, bien periferiek abiadura bera dute, { $equation }{ $radii ->
+        [0] {""}
+       *[other] {" "}({ $radii } izanik)
+    }:
 check-train = Transmisioaren erlazioa etapen erlazioen biderkadura da: { $ratio }; aurkitutako abiadura angeluarrekin, erlazioa { $value } da.
 check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulunkaren mutur batean dago artekak { $pin } puntuaren zirkunferentzia ukitzen duenean ({ $o2 }{ $pin } biradera { $o4 }{ $pin } zuzenarekiko perpendikularra), non cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Abiadura konstantean biratuz, { $crank } solidoak 360° − 2θ = { $slow } egiten ditu kurtsa batean eta 2θ = { $fast } bestean: denbora-erlazioa { $ratio }.
 driver-slide = Datua: { $joint } lotura prismatikoko irristatze-abiadura { $value } da.
@@ -439,5 +464,5 @@ centre-line-normal = { $point } kontaktuko normal komuna (solidoak elkarren gain
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = lurra
 # zentro bat, bi puntuen zuzenarekiko perpendikularrak diren bi abiadura paralelotatik (apunteen eraikuntza proportzionala)
-centre-parallel-between = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin: { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $arm } = { $dist } distantziara:
-centre-parallel-outside = loturek ez dute kokatzen abiadurak ezagutu aurretik; haiekin: { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $arm } = { $dist } distantziara:
+centre-parallel-between = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $arm } = { $dist } distantziara:
+centre-parallel-outside = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $arm } = { $dist } distantziara:

@@ -57,8 +57,11 @@ class HtmlRenderer(Renderer):
         return f'<span class="{"jt" if n.kind == "joint" else "pt"}">{self.points(text)}</span>'
 
     def symbol(self, s: Sym) -> str:
-        """A symbol: a vector's letter bold, a scalar's italic, with its subscript and superscript."""
-        base = f'<b class="v">{escape(s.base)}</b>' if s.vector else f"<i>{escape(s.base)}</i>"
+        """A symbol: a vector's letter bold, a scalar's italic, with its subscript and superscript;
+        a letter with a combining mark (the notes' ψ̇, δ̇) in the sans font, as `html_name`
+        sets one: the serif italic puts δ̇'s dot into the δ's curl."""
+        letter = MARKED.sub(r'<span class="mk">\1</span>', escape(s.base))
+        base = f'<b class="v">{letter}</b>' if s.vector else f"<i>{letter}</i>"
         sub = self.centred(self.sub_text(s, centres=False), lambda t: escape(t, quote=False), self.symbol)
         return base + (f"<sub>{sub}</sub>" if sub else "") + (f"<sup>{escape(s.sup)}</sup>" if s.sup else "")
 
