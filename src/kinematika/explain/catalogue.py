@@ -65,8 +65,9 @@ PLURAL_NAME = re.compile(r"(?i)^(els|les|los|las) |\s(i|y|and|eta)\s")
 def count(value: Any) -> str:
     """`many` when a name stands for several things and a verb after it is plural: a list of
     names, a name with a plural article (els pedals, les rodes, los dientes) or two names
-    joined by "and" (el plat i els pedals); else `one`."""
-    if getattr(value, "n_names", 1) > 1:
+    joined by "and" (el plat i els pedals), or one the renderer found plural (`many`: an
+    English name, which has no article to tell, `Renderer.plural`); else `one`."""
+    if getattr(value, "n_names", 1) > 1 or getattr(value, "many", False):
         return "many"
     text = str(getattr(value, "plain", value)).strip()
     return "many" if PLURAL_NAME.search(text) else "one"

@@ -4,7 +4,7 @@
 sec-data = Datos
 data-numeric = Unidades: longitudes en { $unit }, velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
 data-planar = Movimiento plano: las velocidades y aceleraciones angulares llevan signo, positivas en sentido antihorario.
-data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } del sólido { $b } vista desde el sólido { $a }, y { $w } la velocidad angular de { $b } respecto de { $a }.
+data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } de { $body_b } vista desde { $body_a }, y { $w } la velocidad angular de { $body_b } respecto de { $body_a }.
 data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
 data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
 data-symbol = un símbolo (cualquier valor)
@@ -164,6 +164,16 @@ a-intro_normal = Conocidas las velocidades, los términos normales son conocidos
 eq-shared_rate = Los términos { $terms } tienen una sola incógnita, { $rate }: sus módulos son { $mags }.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
+driver-omega_sense = Dato: { $sym } = { $value }, { $sense ->
+        [up] en el sentido de { $w }: { $body } { COUNT($body) ->
+            [many] se aceleran
+           *[one] se acelera
+        }
+       *[down] en sentido contrario a { $w }: { $body } { COUNT($body) ->
+            [many] se frenan
+           *[one] se frena
+        }
+    }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
 driver-whole = Dato: { $sym } = { $value }, { $heading }.

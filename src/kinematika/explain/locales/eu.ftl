@@ -170,6 +170,10 @@ a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; eze
 eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
+driver-omega_sense = Datua: { $sym } = { $value }, { $sense ->
+        [up] { $w } abiadura angeluarraren noranzko berean: { $body } azkartzen ari da
+       *[down] { $w } abiadura angeluarraren aurkako noranzkoan: { $body } moteltzen ari da
+    }.
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
 driver-whole = Datua: { $sym } = { $value }, { $heading }.
