@@ -530,7 +530,7 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
             faster = speeding(ctx, inst.value(d.value, where), value)
             if faster is not None:
                 return msg("driver.omega_sense", sym=sym, value=shown, body=body(d.body),
-                           w=omega_sym(d.body, d.relative_to), sense="up" if faster else "down")
+                           w=omega_sym(d.body, d.relative_to), faster=int(faster))
         return msg("driver.omega", sym=sym, value=shown)
     if d.kind == "joint":
         turning = turns(ctx.model.joint(d.joint))

@@ -212,12 +212,12 @@ a-intro_normal = Conegudes les velocitats, els termes normals són coneguts; les
 eq-shared_rate = Els termes { $terms } tenen una sola incògnita, { $rate }: els seus mòduls són { $mags }.
 a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
 driver-omega = Dada: { $sym } = { $value }.
-driver-omega_sense = Dada: { $sym } = { $value }, { $sense ->
-        [up] en el sentit de { $w }: { $body } { COUNT($body) ->
+driver-omega_sense = Dada: { $sym } = { $value }, { $faster ->
+        [1] en el sentit de { $w }: { $body } { COUNT($body) ->
             [many] s’acceleren
            *[one] s’accelera
         }
-       *[down] en sentit contrari a { $w }: { $body } { COUNT($body) ->
+       *[other] en sentit contrari a { $w }: { $body } { COUNT($body) ->
             [many] es frenen
            *[one] es frena
         }
@@ -538,6 +538,13 @@ translation-same = { $body } { COUNT($body) ->
         [1] acceleració
        *[other] velocitat
     }:
+translation-points = Tots els punts { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } tenen la mateixa { $accel ->
+        [1] acceleració
+       *[other] velocitat
+    }:
 copy-same = { $body } té els mateixos enllaços, amb els mateixos sòlids, i el mateix radi que { $original }, i ocupa el seu lloc després d’un gir de { $angle } al voltant { ELISION($centre) ->
         [vowel] d’{ $centre }
        *[other] de { $centre }
@@ -707,7 +714,10 @@ contact-written = { $sym } = { $value }, escrita al pas { $step }.
 contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    }, que és fix, no es mou: { $sym } = 0.
+    }{ FIXED($body) ->
+        [yes] {""}
+       *[no] , que és fix,
+    } no es mou: { $sym } = 0.
 fig-step_v = Polígon de velocitats d’aquest pas, a escala: des del pol o, la velocitat de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)

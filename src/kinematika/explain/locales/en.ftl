@@ -176,12 +176,12 @@ a-intro_normal = With the velocities known, the normal terms are known; the tang
 eq-shared_rate = The terms { $terms } share one unknown, { $rate }: their magnitudes are { $mags }.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
-driver-omega_sense = Given: { $sym } = { $value }, { $sense ->
-        [up] in the sense of { $w }: { $body } { COUNT($body) ->
+driver-omega_sense = Given: { $sym } = { $value }, { $faster ->
+        [1] in the sense of { $w }: { $body } { COUNT($body) ->
             [many] are
            *[one] is
         } speeding up
-       *[down] against { $w }: { $body } { COUNT($body) ->
+       *[other] against { $w }: { $body } { COUNT($body) ->
             [many] are
            *[one] is
         } slowing down
@@ -376,6 +376,10 @@ translation-same = { $body } { COUNT($body) ->
         [1] acceleration
        *[other] velocity
     }:
+translation-points = All the points of { $body } have one { $accel ->
+        [1] acceleration
+       *[other] velocity
+    }:
 copy-same = { $body } { COUNT($body) ->
         [many] are
        *[one] is
@@ -497,9 +501,15 @@ geom-foot = { $geom }, the geometric contact point, is the foot of the perpendic
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.
 contact-written = { $sym } = { $value }, written in step { $step }.
-contact-fixed = { $sym }: { $point } as a point of { $body }{ COUNT($body) ->
-        [many] , which are fixed, do
-       *[one] , which is fixed, does
+contact-fixed = { $sym }: { $point } as a point of { $body }{ FIXED($body) ->
+        [yes] {""}
+       *[no] { COUNT($body) ->
+            [many] , which are fixed,
+           *[one] , which is fixed,
+        }
+    } { COUNT($body) ->
+        [many] do
+       *[one] does
     } not move: { $sym } = 0.
 fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point{ $format ->
         [md] {""}

@@ -164,12 +164,12 @@ a-intro_normal = Conocidas las velocidades, los términos normales son conocidos
 eq-shared_rate = Los términos { $terms } tienen una sola incógnita, { $rate }: sus módulos son { $mags }.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
-driver-omega_sense = Dato: { $sym } = { $value }, { $sense ->
-        [up] en el sentido de { $w }: { $body } { COUNT($body) ->
+driver-omega_sense = Dato: { $sym } = { $value }, { $faster ->
+        [1] en el sentido de { $w }: { $body } { COUNT($body) ->
             [many] se aceleran
            *[one] se acelera
         }
-       *[down] en sentido contrario a { $w }: { $body } { COUNT($body) ->
+       *[other] en sentido contrario a { $w }: { $body } { COUNT($body) ->
             [many] se frenan
            *[one] se frena
         }
@@ -337,6 +337,10 @@ translation-same = { $body } no gira ({ $w } = 0{ $accel ->
         [1] aceleración
        *[other] velocidad
     }:
+translation-points = Todos los puntos de { $body } tienen la misma { $accel ->
+        [1] aceleración
+       *[other] velocidad
+    }:
 copy-same = { $body } tiene las mismas uniones, con los mismos sólidos, y el mismo radio que { $original }, y ocupa su lugar tras un giro de { $angle } alrededor de { $centre }: su movimiento es el de { $original }, girado, con la misma { $accel ->
         [1] aceleración angular
        *[other] velocidad angular
@@ -443,7 +447,10 @@ geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpend
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
 contact-written = { $sym } = { $value }, escrita en el paso { $step }.
-contact-fixed = { $sym }: { $point } como punto de { $body }, que es fijo, no se mueve: { $sym } = 0.
+contact-fixed = { $sym }: { $point } como punto de { $body }{ FIXED($body) ->
+        [yes] {""}
+       *[no] , que es fijo,
+    } no se mueve: { $sym } = 0.
 fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)

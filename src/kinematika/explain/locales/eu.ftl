@@ -170,9 +170,9 @@ a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; eze
 eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
-driver-omega_sense = Datua: { $sym } = { $value }, { $sense ->
-        [up] { $w } abiadura angeluarraren noranzko berean: { $body } azkartzen ari da
-       *[down] { $w } abiadura angeluarraren aurkako noranzkoan: { $body } moteltzen ari da
+driver-omega_sense = Datua: { $sym } = { $value }, { $faster ->
+        [1] { $w } abiadura angeluarraren noranzko berean: { $body } azkartzen ari da
+       *[other] { $w } abiadura angeluarraren aurkako noranzkoan: { $body } moteltzen ari da
     }.
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
@@ -301,6 +301,10 @@ translation-same = { $body } solidoa ez da biratzen ({ $w } = 0{ $accel ->
         [1] azelerazio
        *[other] abiadura
     } bera dute:
+translation-points = { $body } solidoaren puntu guztiek { $accel ->
+        [1] azelerazio
+       *[other] abiadura
+    } bera dute:
 copy-same = { $body } solido berberei lotuta dago, { $original } bezala eta erradio berarekin, eta haren lekuan dago, { $centre } puntuaren inguruan { $angle } biratuta: { $original } bezala mugitzen da, biratuta, { $accel ->
         [1] azelerazio angeluar
        *[other] abiadura angeluar
@@ -401,7 +405,10 @@ geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
 contact-written = { $sym } = { $value }, { $step }. urratsean idatzia.
-contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen, solidoa finkoa baita: { $sym } = 0.
+contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen{ FIXED($body) ->
+        [yes] {""}
+       *[no] , solidoa finkoa baita
+    }: { $sym } = 0.
 fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
         [md] {""}
        *[other] {" "}(urdina)

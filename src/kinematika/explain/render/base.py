@@ -35,8 +35,10 @@ LEADING_MARKUP = {"html": re.compile(r"(?:<[^>]*>)*"), "md": re.compile(r"[*_]*"
 # The article a language's running text gives a body's name that the model writes without
 # one: English "The *wheel* rolls", not "*Wheel* rolls" (the notes' digest, like any English
 # text, says "the wheel"); Catalan and Spanish models write theirs in the name (la roda).
-# A table's cell (a bare name) has none.
+# A table's cell (a bare name) has none, nor a numbered designation (`NUMBERED`: pulley 1).
 SUPPLIED_ARTICLE = {"en": "the "}
+# a name ending in a number is a designation, said without an article (pulley 1, planet 2)
+NUMBERED = re.compile(r"\s\d+$")
 # an English plural noun ends in s, not in ss, us or is (wheels, pedals; not glass, chassis)
 ENGLISH_PLURAL = re.compile(r"(?i)[a-z]*[^sui]s$")
 
@@ -384,7 +386,7 @@ class Renderer(ABC):
             m = ARTICLES.get(self.lang, NO_ARTICLE).match(text)
             if m and m.end() < len(text):
                 return ("" if n.bare else text[:m.end()]), text[m.end():]
-            if not n.bare and self.lang in SUPPLIED_ARTICLE:
+            if not n.bare and self.lang in SUPPLIED_ARTICLE and not NUMBERED.search(text):
                 return SUPPLIED_ARTICLE[self.lang], text
         return "", text
 
