@@ -4,7 +4,7 @@
 sec-data = Datuak
 data-numeric = Unitateak: luzerak { $unit }-tan, abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
 data-planar = Mugimendu laua: abiadura eta azelerazio angeluarrek zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
-data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $b } solidoaren { $point } puntuaren abiadura da { $a } solidotik ikusita, eta { $w } { $b } solidoaren abiadura angeluarra { $a } solidoarekiko.
+data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $body_b } solidoaren { $point } puntuaren abiadura da { $body_a } solidotik ikusita, eta { $w } { $body_b } solidoaren abiadura angeluarra { $body_a } solidoarekiko.
 data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
 data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
 data-symbol = ikur bat (edozein balio)
