@@ -170,15 +170,18 @@ RELATIVE = re.compile(r"^([^∈/,]+)∈([^∈/,]+)/([^∈/,]+)$")
 def relative_convention(doc: Document) -> Optional[Msg]:
     """The one convention of relative quantities, said once in the Data section when the
     explanation writes any: v_A∈4/2 is the velocity of A as a point of 4 seen from 2 (never
-    its opposite, whatever the equation's route), ω_4/2 = the rate of 4 relative to 2."""
+    its opposite, whatever the equation's route), ω_4/2 = the rate of 4 relative to 2. The
+    bodies are said by their names, with their articles (the *bar* seen from the *support*),
+    where a language's phrase takes a noun ("of body bar" read as words with no article);
+    Basque puts its case endings on the classifier noun (barra solidoaren)."""
     numbers = doc.numbers
     for eq in doc.equations():
         for t in [eq.target] + [t for side in eq.sides for t in side]:
             m = RELATIVE.match(t.sym.sub)
             if m and m.group(2) in numbers and m.group(3) in numbers:
                 point_, b, a = m.groups()
-                return msg("data.relative", v=Sym("v", t.sym.sub), point=Name(point_), b=Name(b, "label"),
-                           a=Name(a, "label"), w=omega_sym(b, a))
+                return msg("data.relative", v=Sym("v", t.sym.sub), point=Name(point_), w=omega_sym(b, a),
+                           body_b=Name(b, "body"), body_a=Name(a, "body"))
     return None
 
 

@@ -65,17 +65,30 @@ PLURAL_NAME = re.compile(r"(?i)^(els|les|los|las) |\s(i|y|and|eta)\s")
 def count(value: Any) -> str:
     """`many` when a name stands for several things and a verb after it is plural: a list of
     names, a name with a plural article (els pedals, les rodes, los dientes) or two names
-    joined by "and" (el plat i els pedals); else `one`."""
-    if getattr(value, "n_names", 1) > 1:
+    joined by "and" (el plat i els pedals), or one the renderer found plural (`many`: an
+    English name, which has no article to tell, `Renderer.plural`); else `one`."""
+    if getattr(value, "n_names", 1) > 1 or getattr(value, "many", False):
         return "many"
     text = str(getattr(value, "plain", value)).strip()
     return "many" if PLURAL_NAME.search(text) else "one"
 
 
+# the word "fixed" in a name, in the four languages (the fixed cylinder, el cilindro fijo,
+# la politja fixa, zilindro finkoa)
+FIXED_WORD = re.compile(r"(?i)\b(fixed|fij[oa]s?|fix[ae]?s?|finko\w*)\b")
+
+
+def says_fixed(value: Any) -> str:
+    """`yes` when a body's name already says it is fixed (C5-1.8's *fixed cylinder*): a
+    sentence then does not add "which is fixed" after it; else `no`."""
+    return "yes" if FIXED_WORD.search(str(getattr(value, "plain", value))) else "no"
+
+
 # fluent.runtime (0.4) annotates a function as returning a FluentType, but its resolver takes a plain
 # str too (resolver.match compares a select's key with ==, resolve() passes a str through): ours
 # return the word a select expression matches, so the cast only states what the resolver accepts.
-FUNCTIONS = cast(dict[str, Callable[[Any], FluentType]], {"ELISION": elision, "COUNT": count})
+FUNCTIONS = cast(dict[str, Callable[[Any], FluentType]], {"ELISION": elision, "COUNT": count,
+                                                          "FIXED": says_fixed})
 
 
 class Catalogue:

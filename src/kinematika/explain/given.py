@@ -56,3 +56,20 @@ def sign_of(ctx: Ctx, x: Any) -> int:
     if ctx.symbolic and hasattr(x, "could_extract_minus_sign"):
         return -1 if x.could_extract_minus_sign() else 1
     return -1 if float(ctx.num(x)) < 0 else 1
+
+
+def speeding(ctx: Ctx, rate: Any, accel: Any) -> Optional[bool]:
+    """Whether a body given a rate ω and an angular acceleration α (planar, signed) is
+    speeding up (True) or slowing down (False); None when either is zero or a vector.
+
+    |ω| grows when d(ω²)/dt = 2·ω·α > 0: the body speeds up when α has the sense of ω and
+    slows down when it is against it, whatever the sense of the turning (seed 001's crank
+    O2E, ω = −5 rad/s and α = +2 rad/s², is slowing down). Numbers only: a symbol's sign is
+    not known. The words are the driver's
+    values', never a model's own text: a word for the wrong sign is a wrong answer."""
+    if isinstance(rate, tuple) or isinstance(accel, tuple):
+        return None
+    if any(getattr(x, "free_symbols", None) for x in (rate, accel)):
+        return None             # a symbol may have either sign (C5-E.1's θ̇, θ̈: "any value")
+    product = sign_of(ctx, rate) * sign_of(ctx, accel)
+    return None if product == 0 else product > 0

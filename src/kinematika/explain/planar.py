@@ -17,7 +17,7 @@ from .group import centre_site, group_blocks, still_contact
 from .shared import shared_rates
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
-from .given import sign_of, heading, whole_along
+from .given import sign_of, heading, speeding, whole_along
 from .kinds import kind_key, pin_only, roller, rolls, turns
 from .order import Step, merge_vehicles
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms, target_term
@@ -504,7 +504,13 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
         sym = (omega_sym if level == "v" else alpha_sym)(d.body, d.relative_to, vector=spatial)
         unit = "rate" if level == "v" else "rate2"
         value = inst.vector(given, where) if spatial else inst.value(given, where)
-        return msg("driver.omega", sym=sym, value=Value(ctx.clean(value, unit), unit))
+        shown = Value(ctx.clean(value, unit), unit)
+        if level == "a" and not spatial and d.relative_to in (None, ctx.frame):     # a body's own turning
+            faster = speeding(ctx, inst.value(d.value, where), value)
+            if faster is not None:
+                return msg("driver.omega_sense", sym=sym, value=shown, body=body(d.body),
+                           w=omega_sym(d.body, d.relative_to), faster=int(faster))
+        return msg("driver.omega", sym=sym, value=shown)
     if d.kind == "joint":
         turning = turns(ctx.model.joint(d.joint))
         unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")

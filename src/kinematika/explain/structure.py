@@ -34,7 +34,9 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     # a joint is said by what it is, the bodies it joins and where: never by its id (j3); a
     # part welded to the frame is part of it (its row says so, and the sentence below), not a
     # joint of the mechanism (the notes' inclined planes are "el terra inclinat")
-    joints = [[msg(f"joint.{kind_key(j, ctx.frame)}"), Inline([body(j.a), " – ", body(j.b)]), _where(ctx, j)]
+    # a table's cell names the two bodies bare, as the bodies' table does (no article)
+    joints = [[msg(f"joint.{kind_key(j, ctx.frame)}"),
+               Inline([Name(j.a, "body", bare=True), " – ", Name(j.b, "body", bare=True)]), _where(ctx, j)]
               for j in model.joints if not (welds(j) and ctx.fixed(j.a) and ctx.fixed(j.b))]
     sec.add(Table([msg("col.joint"), msg("col.bodies"), msg("col.where")], joints))
     welded = welded_to_frame(ctx)

@@ -7,9 +7,11 @@ v_P = v_Q, after one sentence that says the body translates.
 from __future__ import annotations
 
 from .context import Ctx, alpha_sym, omega_sym
-from .document import Document, Equation, Section, body, msg
+from .document import Derived, Document, Equation, Section, body, msg
 
 LEVELS = {"sec.velocities": "v", "sec.accelerations": "a"}
+# the remarks after a derived ω = 0 (α = 0) that already say the body translates
+SAYS_TRANSLATES = ("how.translation", "how.centre_infinity", "how.tangent", "how.glides")
 TURNING = ("rotation", "normal", "tangential")
 
 
@@ -36,7 +38,8 @@ def _section(ctx: Ctx, sec: Section, level: str, said: set[str]) -> None:
                 b.sides = [[b.sides[0][0]]]
                 if turning not in said:
                     said.add(turning)
-                    sec.blocks.insert(i, msg("translation.same", body=body(turning), w=omega_sym(turning),
+                    key = "translation.points" if _stated(sec.blocks[:i], turning, level) else "translation.same"
+                    sec.blocks.insert(i, msg(key, body=body(turning), w=omega_sym(turning),
                                              a=alpha_sym(turning), accel=int(level == "a")))
                     i += 1
         i += 1
@@ -62,3 +65,14 @@ def _translating(ctx: Ctx, eq: Equation, level: str) -> str | None:
     if not all(ctx.is_zero(t.value, unit) for t in rest):
         return None
     return name
+
+
+def _stated(before: list, name: str, level: str) -> bool:
+    """Whether the step has just derived the body's ω = 0 (α = 0 at accelerations) with a
+    remark that says it translates (C5-E.4: "ω_chassis = 0 (its instant centre is at
+    infinity: it translates)"): the sentence before the first v_P = v_Q then says only what
+    follows, that all its points have one velocity, not "does not turn (ω = 0): it
+    translates" a second time. Said once, as the notes say it."""
+    kind = "omega" if level == "v" else "alpha"
+    return any(isinstance(b, Derived) and b.body == name and b.kind == kind and b.remark is not None
+               and b.remark.key in SAYS_TRANSLATES for b in before)

@@ -33,8 +33,11 @@ from ..errors import KinematikaError, Names
 from ..languages import known             # the explanations' languages (each has a catalogue)
 
 # the articles a name may begin with in Catalan and Spanish (`names.ca.bodies: {carrier: el
-# portador}`): texts contract them with a preposition (del portador), figures leave them out
-ARTICLES = {"ca": re.compile(r"(?i)(els|les|el|la) |l['’]"), "es": re.compile(r"(?i)(los|las|el|la) ")}
+# portador}`): texts contract them with a preposition (del portador), figures leave them out.
+# English names are written without one (`wheel`): the explanation's text supplies "the"
+# (render.base.SUPPLIED_ARTICLE), as a Catalan or Spanish model's name carries its own
+ARTICLES = {"ca": re.compile(r"(?i)(els|les|el|la) |l['’]"), "es": re.compile(r"(?i)(los|las|el|la) "),
+            "en": re.compile(r"(?i)the ")}
 NO_ARTICLE = re.compile(r"(?!)")
 # the subscripts of a motion's parts as each language writes them (v_rel, v_arr,B, a_Cor):
 # the explanations' symbols and the figures' labels read them here (one place for both)

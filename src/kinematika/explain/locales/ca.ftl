@@ -7,7 +7,19 @@ data-planar = Moviment pla: les velocitats{ $accelerations ->
         [0] {" "}angulars
        *[other] {" "}i acceleracions angulars
     } tenen signe, positives en sentit antihorari.
-data-relative = Una magnitud relativa anomena els dos sòlids: { $v } és la velocitat del punt { $point } del sòlid { $b } vista des del sòlid { $a }, i { $w } la velocitat angular de { $b } respecte de { $a }.
+data-relative = Una magnitud relativa anomena els dos sòlids: { $v } és la velocitat del punt { $point } { ELISION($body_b) ->
+        [vowel] d’{ $body_b }
+       *[other] de { $body_b }
+    } vista des { ELISION($body_a) ->
+        [vowel] d’{ $body_a }
+       *[other] de { $body_a }
+    }, i { $w } la velocitat angular { ELISION($body_b) ->
+        [vowel] d’{ $body_b }
+       *[other] de { $body_b }
+    } respecte { ELISION($body_a) ->
+        [vowel] d’{ $body_a }
+       *[other] de { $body_a }
+    }.
 data-spatial = Les velocitats i acceleracions angulars són vectors (regla de la mà dreta al voltant de la seva direcció).
 data-symbolic = Les dades són símbols, i cada resultat és una fórmula exacta en funció d’aquests. Les figures es dibuixen amb valors de mostra dels símbols, indicats sota cada figura.
 data-symbol = un símbol (qualsevol valor)
@@ -202,6 +214,16 @@ a-intro_normal = Conegudes les velocitats, els termes normals són coneguts; les
 eq-shared_rate = Els termes { $terms } tenen una sola incògnita, { $rate }: els seus mòduls són { $mags }.
 a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
 driver-omega = Dada: { $sym } = { $value }.
+driver-omega_sense = Dada: { $sym } = { $value }, { $faster ->
+        [1] en el sentit de { $w }: { $body } { COUNT($body) ->
+            [many] s’acceleren
+           *[one] s’accelera
+        }
+       *[other] en sentit contrari a { $w }: { $body } { COUNT($body) ->
+            [many] es frenen
+           *[one] es frena
+        }
+    }.
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
 driver-whole = Dada: { $sym } = { $value }, { $heading }.
@@ -518,6 +540,13 @@ translation-same = { $body } { COUNT($body) ->
         [1] acceleració
        *[other] velocitat
     }:
+translation-points = Tots els punts { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } tenen la mateixa { $accel ->
+        [1] acceleració
+       *[other] velocitat
+    }:
 fig-centres = Els centres instantanis (anells, I amb els números de dos sòlids) sobre el mecanisme{ $kennedy ->
         [0] { $normals_n ->
             [0] .
@@ -692,7 +721,10 @@ contact-written = { $sym } = { $value }, escrita al pas { $step }.
 contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    }, que és fix, no es mou: { $sym } = 0.
+    }{ FIXED($body) ->
+        [yes] {""}
+       *[no] , que és fix,
+    } no es mou: { $sym } = 0.
 fig-step_v = Polígon de velocitats d’aquest pas, a escala: des del pol o, la velocitat de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)

@@ -7,7 +7,7 @@ data-planar = Planar motion: angular velocities{ $accelerations ->
         [0] {""}
        *[other] {" "}and accelerations
     } are signed, counter-clockwise positive.
-data-relative = A relative quantity names both bodies: { $v } is the velocity of the point { $point } of body { $b } seen from body { $a }, and { $w } the angular velocity of { $b } relative to { $a }.
+data-relative = A relative quantity names both bodies: { $v } is the velocity of the point { $point } of { $body_b } seen from { $body_a }, and { $w } the angular velocity of { $body_b } relative to { $body_a }.
 data-spatial = Angular velocities and accelerations are vectors (right-hand rule about their direction).
 data-symbolic = The data are symbols, and every result is an exact formula in them. The figures are drawn at sample values of the symbols, given under each figure.
 data-symbol = a symbol (any value)
@@ -120,9 +120,18 @@ sec-position = Position
 pos-intro = Position analysis: each moving point is placed as the statement places it, from points already placed.
 pos-named = Here { $name } = { $formula }.
 pos-moved = The mechanism is analysed where the move takes it, each body carried from the drawing as follows.
-pos-turn_angle = { $body } has turned by { $angle } about { $pivot }.
-pos-turn_toward = { $body } has turned as the line { $line } has.
-pos-turn_shift = { $body } has moved { $shift } along its guide.
+pos-turn_angle = { $body } { COUNT($body) ->
+        [many] have
+       *[one] has
+    } turned by { $angle } about { $pivot }.
+pos-turn_toward = { $body } { COUNT($body) ->
+        [many] have
+       *[one] has
+    } turned as the line { $line } has.
+pos-turn_shift = { $body } { COUNT($body) ->
+        [many] have
+       *[one] has
+    } moved { $shift } along its guide.
 pos-carried = { $point } is carried with { $body }: { $point } = { $at }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
@@ -169,34 +178,80 @@ a-intro_normal = With the velocities known, the normal terms are known; the tang
 eq-shared_rate = The terms { $terms } share one unknown, { $rate }: their magnitudes are { $mags }.
 a-named = Where a formula written out would be past reading, the angular velocities found above are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
+driver-omega_sense = Given: { $sym } = { $value }, { $faster ->
+        [1] in the sense of { $w }: { $body } { COUNT($body) ->
+            [many] are
+           *[one] is
+        } speeding up
+       *[other] against { $w }: { $body } { COUNT($body) ->
+            [many] are
+           *[one] is
+        } slowing down
+    }.
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
 driver-whole = Given: { $sym } = { $value }, { $heading }.
-driver-held = The pin { $point } does not turn at this instant: { $b } does not turn relative to { $a }, { $sym } = 0.
+driver-held = The pin { $point } does not turn at this instant: { $b } { COUNT($b) ->
+        [many] do
+       *[one] does
+    } not turn relative to { $a }, { $sym } = 0.
 driver-held_accel = The pin { $point } has no relative angular acceleration at this instant: { $sym } = 0.
 heading-right = to the right
 heading-left = to the left
 heading-up = upwards
 heading-down = downwards
 heading-along = along { $along }
-input-revolute = { $body } turns about the fixed pivot { $point }: its points move on circles about { $point }.
-input-prismatic = { $body } slides without turning along its guide.
+input-revolute = { $body } { COUNT($body) ->
+        [many] turn
+       *[one] turns
+    } about the fixed pivot { $point }: its points move on circles about { $point }.
+input-prismatic = { $body } { COUNT($body) ->
+        [many] slide
+       *[one] slides
+    } without turning along its guide.
 other-intro = These bodies are found together from the conditions of their joints:
 cond-revolute = pin at { $point }: { $point } is one point of { $a } and of { $b }.
-cond-prismatic = prismatic pair: { $b } slides along { $a } without turning relative to it.
+cond-prismatic = prismatic pair: { $b } { COUNT($b) ->
+        [many] slide
+       *[one] slides
+    } along { $a } without turning relative to it.
 cond-slot = pin { $point } in a slot: its velocity relative to the slotted body is along the slot.
-cond-slot_fixed = the point { $point } of { $b } slides along a line fixed to { $a }: its velocity is along that line.
+cond-slot_fixed = the point { $point } of { $b } { COUNT($b) ->
+        [many] slide
+       *[one] slides
+    } along a line fixed to { $a }: its velocity is along that line.
 cond-wheel = wheel at { $point }: no sideways velocity relative to { $a }.
 cond-weld = { $a } and { $b } move as one body.
 cond-spherical = ball joint at { $point }: { $point } is one point of { $a } and of { $b }.
-cond-cylindrical = cylindrical pair: { $b } turns about and slides along the axis of { $a }.
-rolling-noslip = { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity.
-rolling-glide = { $b } rolls without slipping on the edge of { $a }. Seen from { $a }, its centre { $centre } keeps its distance from the edge: it moves along a line parallel to the tangent at { $point }. With axes at { $centre } turning with { $a }, the motion of { $centre } is the drag motion (that of the point of { $a } there) plus the relative motion along that line (and, for accelerations, the Coriolis term).
+cond-cylindrical = cylindrical pair: { $b } { COUNT($b) ->
+        [many] turn
+       *[one] turns
+    } about and slides along the axis of { $a }.
+rolling-noslip = { $b } { COUNT($b) ->
+        [many] roll
+       *[one] rolls
+    } on { $a } without slipping: at the contact { $point } both material points have the same velocity.
+rolling-glide = { $b } { COUNT($b) ->
+        [many] roll
+       *[one] rolls
+    } without slipping on the edge of { $a }. Seen from { $a }, its centre { $centre } keeps its distance from the edge: it moves along a line parallel to the tangent at { $point }. With axes at { $centre } turning with { $a }, the motion of { $centre } is the drag motion (that of the point of { $a } there) plus the relative motion along that line (and, for accelerations, the Coriolis term).
 rolling-kept = the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
-path-circle = { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
-path-line = { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
-rolling-same = { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
-rolling-centre = { $b } rolls without slipping on { $a }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
+path-circle = { $b } { COUNT($b) ->
+        [many] roll
+       *[one] rolls
+    } without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
+path-line = { $b } { COUNT($b) ->
+        [many] roll
+       *[one] rolls
+    } without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
+rolling-same = { $b } { COUNT($b) ->
+        [many] roll
+       *[one] rolls
+    } on { $a } without slipping: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
+rolling-centre = { $b } { COUNT($b) ->
+        [many] roll
+       *[one] rolls
+    } without slipping on { $a }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
 dir-guide = guide of { $holder }
 dir-normal = normal
 how-prismatic = (prismatic pair: no relative rotation)
@@ -217,7 +272,10 @@ centre-joint-weld = the two bodies are welded:
 centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines meet
 centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
 centre-lines = it lies on { $first } and on { $second }; these lines meet
-centre-omega = with the velocities found above, the angular velocity relative to { $frame } is zero: the relative motion is a translation and the centre is
+centre-omega = with the velocities found above, the angular velocity relative to { $frame } { COUNT($frame) ->
+        [many] are
+       *[one] is
+    } zero: the relative motion is a translation and the centre is
 centre-at = at { $point }.
 centre-infinity = at infinity, in the direction { $direction }.
 centre-rest = there is no relative motion.
@@ -231,7 +289,13 @@ composition-intro = The motion of a point is its drag motion (that of the point 
 composition-point = Point { $point } of { $body }, moving frame { $frame }:
 composition-drag = Drag: the motion of the point of the moving frame where the point is:
 composition-relative = Relative: the motion seen from the moving frame, { $sym } = { $rel }:
-composition-rolls = { $body } rolls on { $frame } without slipping at { $point }: seen from { $frame }, { $point } is the instant centre of { $body }, { $sym } = 0, and every point of { $body } turns about it.
+composition-rolls = { $body } { COUNT($body) ->
+        [many] roll
+       *[one] rolls
+    } on { $frame } without slipping at { $point }: seen from { $frame }, { $point } is the instant centre of { $body }, { $sym } = 0, and every point of { $body } { COUNT($body) ->
+        [many] turn
+       *[one] turns
+    } about it.
 sec-curvature = Curvature of paths
 curvature-intro = The acceleration splits into a tangential part along the velocity and a normal part across it; the radius of curvature is { $rho }.
 curvature-point = Point { $point }: velocity { $v }.
@@ -265,7 +329,10 @@ ans-pole_velocity = velocity of I along the centrodes
 centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along its guide: its relative motion is along the guide, { $sym } = { $value }.
-composition-slide_seen = { $point } slides along its guide; { $body } does not turn relative to { $frame }, so all its points have the relative motion found above: { $sym } = { $seen } = { $value }.
+composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($body) ->
+        [many] do
+       *[one] does
+    } not turn relative to { $frame }, so all its points have the relative motion found above: { $sym } = { $seen } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in the steps above.
 composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation that found this point in the step above.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
@@ -273,11 +340,23 @@ vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity 
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
 vehicle-line-velocity = the perpendicular to { $sym } at { $point }
 vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg } = { $vq } · { $seg }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel’s plane: { $vp } = { $value }, of magnitude { $speed }.
-vehicle-centre = The centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
+vehicle-centre = The centre of { $body } { COUNT($body) ->
+        [many] lie
+       *[one] lies
+    } on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } { COUNT($body) ->
+        [many] move
+       *[one] moves
+    } perpendicular to its line to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel: its centre is at infinity, it translates, and every point moves as { $point }.
-vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = { $vq } = { $value }: { $body } does not turn (its centre is at infinity), it translates, and every point moves as { $p }.
+vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = { $vq } = { $value }: { $body } { COUNT($body) ->
+        [many] do
+       *[one] does
+    } not turn (its centre is at infinity), it translates, and every point moves as { $p }.
 vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $radius } { $spin }, its spin about its axle, so:
-triad-intro = { $body } is held by three binary links, { $links }: no vector equation of a single point has only two unknowns. As textbooks do for a triad, take the Assur point { $point }, where the lines { $l1 } and { $l3 } meet, as a point of { $body }:
+triad-intro = { $body } { COUNT($body) ->
+        [many] are
+       *[one] is
+    } held by three binary links, { $links }: no vector equation of a single point has only two unknowns. As textbooks do for a triad, take the Assur point { $point }, where the lines { $l1 } and { $l3 } meet, as a point of { $body }:
 triad-collinear = On each side the two unknown terms are perpendicular to one line ({ $point } lies on { $l1 } and on { $l3 }), so each side has one unknown magnitude: two unknowns, and the polygon closes.
 triad-closure = With { $point } known as a point of the ternary link, its pin { $pin } closes as in a dyad:
 loop-intro = The bodies { $bodies } close a loop: going round it, the relative angular velocities add up to zero, each along its joint's axis (three scalar equations for the unknown rates { $rate } along the axes { $axis }):
@@ -289,10 +368,17 @@ how-weld = (weld: one body)
 group-wheel_v = The wheel { $joint } does not slip sideways: the velocity of { $point } lies in the wheel's plane.
 group-wheel_a = The wheel { $joint } does not slip sideways at any instant, and its plane turns with { $body }: the acceleration of { $point } is a tangential part in the plane and a normal part across it, { $w } × { $v }.
 how-translation = (it translates)
-translation-same = { $body } does not turn ({ $w } = 0{ $accel ->
+translation-same = { $body } { COUNT($body) ->
+        [many] do
+       *[one] does
+    } not turn ({ $w } = 0{ $accel ->
         [1] , { $a } = 0
        *[other] {""}
     }): it translates, and all its points have one { $accel ->
+        [1] acceleration
+       *[other] velocity
+    }:
+translation-points = All the points of { $body } have one { $accel ->
         [1] acceleration
        *[other] velocity
     }:
@@ -372,16 +458,25 @@ joint-curved_slot = pin in a curved slot
 joint-cam = cam and follower
 cond-contact = contact: { $a } and { $b } keep touching; they may slide along the common tangent.
 cond-curved_slot = pin { $point } in a curved slot: its velocity relative to the slotted body is along the slot's tangent.
-cond-cam = cam: the follower { $b } keeps touching the cam { $a }.
+cond-cam = cam: the follower { $b } { COUNT($b) ->
+        [many] keep
+       *[one] keeps
+    } touching the cam { $a }.
 dir-tangent = tangent at { $point }
 dir-centre = towards the centre of curvature { $point }
 higher-intro = The higher pair is written as the motion of { $point } along its path relative to { $holder } (a slot along the tangent, curved with radius { $radius }): the relative acceleration has a normal part v²/ρ towards the path's centre of curvature.
 higher-straight = The higher pair is written as the motion of { $point } along a straight path relative to { $holder } (a slot along the tangent).
-centre-weld = { $body } is welded to { $other }: they are one body, so the centre is that of { $other }, { $same },
+centre-weld = { $body } { COUNT($body) ->
+        [many] are
+       *[one] is
+    } welded to { $other }: they are one body, so the centre is that of { $other }, { $same },
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
 centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
-centre-line-guide = the perpendicular to the guide through { $pivot } (the point of { $b } on it slides along the guide relative to { $body }, and { $body } carries it about { $pivot } along the guide too: its velocity is along the guide)
+centre-line-guide = the perpendicular to the guide through { $pivot } (the point of { $b } on it slides along the guide relative to { $body }, and { $body } { COUNT($body) ->
+        [many] carry
+       *[one] carries
+    } it about { $pivot } along the guide too: its velocity is along the guide)
 centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
 centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
@@ -395,8 +490,14 @@ how-centre_infinity = (its instant centre { $centre } is at infinity: it transla
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
-centre-site_i = The instant centre { $centre } ≡ { $point } of { $body } relative to { $frame }, placed above, has no velocity: { $sym } = 0.
-centre-site_s = The instant centre { $centre } of { $body } relative to { $frame }, placed above, has no velocity: { $sym } = 0.
+centre-site_i = The instant centre { $centre } ≡ { $point } of { $body } relative to { $frame }{ COUNT($frame) ->
+        [many] , placed above, have
+       *[one] , placed above, has
+    } no velocity: { $sym } = 0.
+centre-site_s = The instant centre { $centre } of { $body } relative to { $frame }{ COUNT($frame) ->
+        [many] , placed above, have
+       *[one] , placed above, has
+    } no velocity: { $sym } = 0.
 sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
 geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always at the same fraction of it, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
@@ -404,7 +505,16 @@ geom-foot = { $geom }, the geometric contact point, is the foot of the perpendic
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.
 contact-written = { $sym } = { $value }, written in step { $step }.
-contact-fixed = { $sym }: { $point } as a point of { $body }, which is fixed, does not move: { $sym } = 0.
+contact-fixed = { $sym }: { $point } as a point of { $body }{ FIXED($body) ->
+        [yes] {""}
+       *[no] { COUNT($body) ->
+            [many] , which are fixed,
+           *[one] , which is fixed,
+        }
+    } { COUNT($body) ->
+        [many] do
+       *[one] does
+    } not move: { $sym } = 0.
 fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
@@ -428,7 +538,10 @@ what-contact = contact point ({ $kind }) between { $a } and { $b }
 what-body = a point of { $bodies }
 note-text = Note: { $text }
 sec-checks = Checks
-check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } carries), so { $formula } = { $radii } = { $train }{ $r1 ->
+check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } { COUNT($carrier) ->
+        [many] carry
+       *[one] carries
+    }), so { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , with { $r1 } and { $r2 }
     }. With the angular velocities found above, { $values } = { $ratio }: they agree.

@@ -7,7 +7,7 @@ data-planar = Movimiento plano: las velocidades{ $accelerations ->
         [0] {" "}angulares
        *[other] {" "}y aceleraciones angulares
     } llevan signo, positivas en sentido antihorario.
-data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } del sólido { $b } vista desde el sólido { $a }, y { $w } la velocidad angular de { $b } respecto de { $a }.
+data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } de { $body_b } vista desde { $body_a }, y { $w } la velocidad angular de { $body_b } respecto de { $body_a }.
 data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
 data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
 data-symbol = un símbolo (cualquier valor)
@@ -166,6 +166,16 @@ a-intro_normal = Conocidas las velocidades, los términos normales son conocidos
 eq-shared_rate = Los términos { $terms } tienen una sola incógnita, { $rate }: sus módulos son { $mags }.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
+driver-omega_sense = Dato: { $sym } = { $value }, { $faster ->
+        [1] en el sentido de { $w }: { $body } { COUNT($body) ->
+            [many] se aceleran
+           *[one] se acelera
+        }
+       *[other] en sentido contrario a { $w }: { $body } { COUNT($body) ->
+            [many] se frenan
+           *[one] se frena
+        }
+    }.
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
 driver-whole = Dato: { $sym } = { $value }, { $heading }.
@@ -329,6 +339,10 @@ translation-same = { $body } no gira ({ $w } = 0{ $accel ->
         [1] aceleración
        *[other] velocidad
     }:
+translation-points = Todos los puntos de { $body } tienen la misma { $accel ->
+        [1] aceleración
+       *[other] velocidad
+    }:
 fig-centres = Los centros instantáneos (anillos, I con los números de dos sólidos) sobre el mecanismo{ $kennedy ->
         [0] { $normals_n ->
             [0] .
@@ -443,7 +457,10 @@ geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpend
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
 contact-written = { $sym } = { $value }, escrita en el paso { $step }.
-contact-fixed = { $sym }: { $point } como punto de { $body }, que es fijo, no se mueve: { $sym } = 0.
+contact-fixed = { $sym }: { $point } como punto de { $body }{ FIXED($body) ->
+        [yes] {""}
+       *[no] , que es fijo,
+    } no se mueve: { $sym } = 0.
 fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)

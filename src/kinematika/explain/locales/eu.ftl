@@ -7,7 +7,7 @@ data-planar = Mugimendu laua: { $accelerations ->
         [0] abiadura angeluarrek
        *[other] abiadura eta azelerazio angeluarrek
     } zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
-data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $b } solidoaren { $point } puntuaren abiadura da { $a } solidotik ikusita, eta { $w } { $b } solidoaren abiadura angeluarra { $a } solidoarekiko.
+data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $body_b } solidoaren { $point } puntuaren abiadura da { $body_a } solidotik ikusita, eta { $w } { $body_b } solidoaren abiadura angeluarra { $body_a } solidoarekiko.
 data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
 data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
 data-symbol = ikur bat (edozein balio)
@@ -172,6 +172,10 @@ a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; eze
 eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
+driver-omega_sense = Datua: { $sym } = { $value }, { $faster ->
+        [1] { $w } abiadura angeluarraren noranzko berean: { $body } azkartzen ari da
+       *[other] { $w } abiadura angeluarraren aurkako noranzkoan: { $body } moteltzen ari da
+    }.
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
 driver-whole = Datua: { $sym } = { $value }, { $heading }.
@@ -299,6 +303,10 @@ translation-same = { $body } solidoa ez da biratzen ({ $w } = 0{ $accel ->
         [1] azelerazio
        *[other] abiadura
     } bera dute:
+translation-points = { $body } solidoaren puntu guztiek { $accel ->
+        [1] azelerazio
+       *[other] abiadura
+    } bera dute:
 fig-centres = Biraketa-zentro instantaneoak (eraztunak, I bi solidoren zenbakiekin) mekanismoaren gainean{ $kennedy ->
         [0] { $normals_n ->
             [0] .
@@ -407,7 +415,10 @@ geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
 contact-written = { $sym } = { $value }, { $step }. urratsean idatzia.
-contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen, solidoa finkoa baita: { $sym } = 0.
+contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen{ FIXED($body) ->
+        [yes] {""}
+       *[no] , solidoa finkoa baita
+    }: { $sym } = 0.
 fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
         [md] {""}
        *[other] {" "}(urdina)

@@ -32,12 +32,24 @@ LEADING_MARKUP = {"html": re.compile(r"(?:<[^>]*>)*"), "md": re.compile(r"[*_]*"
                   "tex": re.compile(r"(?:\\[A-Za-z]+\{)*")}
 
 
+# The article a language's running text gives a body's name that the model writes without
+# one: English "The *wheel* rolls", not "*Wheel* rolls" (the notes' digest, like any English
+# text, says "the wheel"); Catalan and Spanish models write theirs in the name (la roda).
+# A table's cell (a bare name) has none, nor a numbered designation (`NUMBERED`: pulley 1).
+SUPPLIED_ARTICLE = {"en": "the "}
+# a name ending in a number is a designation, said without an article (pulley 1, planet 2)
+NUMBERED = re.compile(r"\s\d+$")
+# an English plural noun ends in s, not in ss, us or is (wheels, pedals; not glass, chassis)
+ENGLISH_PLURAL = re.compile(r"(?i)[a-z]*[^sui]s$")
+
+
 class Slot(str):
     """A message variable as Fluent sees it: a token the renderer replaces by the
     variable's markup; `plain` is its text, for the catalogue's grammar (elision)."""
 
     plain: str = ""
     n_names: int = 1            # how many names it holds (a verb after a list is plural)
+    many: bool = False          # a plural name (the wheels): a verb after it is plural
 
 
 def plain(x: Any) -> str:
@@ -194,6 +206,7 @@ class Renderer(ABC):
             slot = Slot(TOKEN.format(len(rendered)))
             slot.plain = self.plain(x)
             slot.n_names = len(inner) if isinstance(inner, Names) else 1
+            slot.many = isinstance(inner, Name) and self.plural(inner)
             rendered.append(self.arg(x))
             values.append(x)
             args[name] = slot
@@ -277,7 +290,9 @@ class Renderer(ABC):
     def plain(self, x: Any) -> str:
         """The text a name argument is read as, in the reader's language (for elision)."""
         if isinstance(x, Name):
-            return CENTRE_POINT_RE.sub("I", self.called(x))      # a centre's point reads as its letter
+            text = CENTRE_POINT_RE.sub("I", self.called(x))      # a centre's point reads as its letter
+            supplied = self.lang in SUPPLIED_ARTICLE and x.kind == "body" and not x.bare
+            return self.articled(x)[0] + text if supplied and not ARTICLES[self.lang].match(text) else text
         if isinstance(x, Names):
             return self.plain(x.items[0]) if x.items else ""
         if isinstance(x, Lead):
@@ -364,13 +379,30 @@ class Renderer(ABC):
 
     def articled(self, n: Name) -> tuple[str, str]:
         """A name split into its article, set as text, and the name proper, set as a name:
-        `el ` and `portador` for the body a Catalan model calls `el portador`."""
+        `el ` and `portador` for the body a Catalan model calls `el portador`; in English,
+        whose models write names bare, `the ` and `wheel` (SUPPLIED_ARTICLE)."""
         text = self.called(n)
         if n.kind == "body":
             m = ARTICLES.get(self.lang, NO_ARTICLE).match(text)
             if m and m.end() < len(text):
                 return ("" if n.bare else text[:m.end()]), text[m.end():]
+            if not n.bare and self.lang in SUPPLIED_ARTICLE and not NUMBERED.search(text):
+                return SUPPLIED_ARTICLE[self.lang], text
         return "", text
+
+    def plural(self, n: Name) -> bool:
+        """Whether a body's name is plural, so that a verb after it is (Catalan and Spanish
+        read it off the article, `catalogue.count`). An English name has no article to tell:
+        the body is plural when the model's Catalan or Spanish name of it is (las ruedas: the
+        wheels roll), else when its last word is an English plural (ENGLISH_PLURAL)."""
+        if n.kind != "body" or self.lang not in SUPPLIED_ARTICLE:
+            return False
+        for other in ("es", "ca"):
+            given = self.wording.bodies.get(other, {}).get(n.text)
+            if given and ARTICLES[other].match(given):
+                return bool(re.match(r"(?i)(els|les|los|las) ", given))
+        words = self.called(n).split()
+        return bool(words) and bool(ENGLISH_PLURAL.fullmatch(words[-1]))
 
     def spelt(self, name: str) -> str:
         """How a parameter is written: the model's notation (w0 as omega_0, ω₀), else its name."""
