@@ -175,7 +175,7 @@ def test_no_centre_says_what_the_joints_do_not_do(name, lang):
     assert not any(w in page for w in LEAD_INS), name
 
 
-@pytest.mark.parametrize("lang,said", [("en", "I_pulley3: relative to *ceiling*, T4 moves at (0, 2·v)"),
+@pytest.mark.parametrize("lang,said", [("en", "I_pulley3: relative to the *ceiling*, T4 moves at (0, 2·v)"),
                                        ("eu", "I_polea3: *sabaia* solidoarekiko, T4 puntuak (0; 2·v) abiadura du")])
 def test_the_third_pulleys_centre_from_its_two_velocities(lang, said):
     assert said in rendered("seed_c5_1_5_pulley_block", lang, drawings=False)
