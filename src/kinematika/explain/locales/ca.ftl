@@ -267,6 +267,14 @@ rolling-noslip = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
+rolling-noslip_edge = { $b } no { COUNT($b) ->
+        [many] llisquen
+       *[one] llisca
+    } sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
+rolling-same_edge = { $b } no { COUNT($b) ->
+        [many] llisquen
+       *[one] llisca
+    } sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat, { $sym } = { $other }.
 rolling-glide = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola

@@ -189,6 +189,8 @@ cond-weld = { $a } and { $b } move as one body.
 cond-spherical = ball joint at { $point }: { $point } is one point of { $a } and of { $b }.
 cond-cylindrical = cylindrical pair: { $b } turns about and slides along the axis of { $a }.
 rolling-noslip = { $b } rolls on { $a } without slipping: at the contact { $point } both material points have the same velocity.
+rolling-noslip_edge = { $b } does not slip on { $a }: at the contact { $point } both material points have the same velocity.
+rolling-same_edge = { $b } does not slip on { $a }: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
 rolling-glide = { $b } rolls without slipping on the edge of { $a }. Seen from { $a }, its centre { $centre } keeps its distance from the edge: it moves along a line parallel to the tangent at { $point }. With axes at { $centre } turning with { $a }, the motion of { $centre } is the drag motion (that of the point of { $a } there) plus the relative motion along that line (and, for accelerations, the Coriolis term).
 rolling-kept = the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
 path-circle = { $b } rolls without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.

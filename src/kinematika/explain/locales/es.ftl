@@ -204,6 +204,14 @@ rolling-noslip = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
+rolling-noslip_edge = { $b } no { COUNT($b) ->
+        [many] deslizan
+       *[one] desliza
+    } sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
+rolling-same_edge = { $b } no { COUNT($b) ->
+        [many] deslizan
+       *[one] desliza
+    } sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
 rolling-glide = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
