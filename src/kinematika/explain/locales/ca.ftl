@@ -58,6 +58,7 @@ joint-gear = engranatge
 joint-weld = unió rígida
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
+fig-drag = d’arrossegament de { $point } ({ $sym })
 fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}

@@ -61,6 +61,7 @@ joint-gear = gear
 joint-weld = weld
 joint-spherical = spherical
 joint-cylindrical = cylindrical
+fig-drag = the drag velocity of { $point } ({ $sym })
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}

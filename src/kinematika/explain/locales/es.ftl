@@ -58,6 +58,7 @@ joint-gear = engranaje
 joint-weld = unión rígida
 joint-spherical = esférico
 joint-cylindrical = cilíndrico
+fig-drag = de arrastre de { $point } ({ $sym })
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}

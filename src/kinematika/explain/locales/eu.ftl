@@ -58,6 +58,7 @@ joint-gear = engranajea
 joint-weld = lotura zurruna
 joint-spherical = esferikoa
 joint-cylindrical = zilindrikoa
+fig-drag = { $point } ({ $sym }, arrastre-abiadura)
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
