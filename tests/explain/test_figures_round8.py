@@ -90,7 +90,7 @@ def test_the_caption_names_the_drag_as_its_arrow_does(lang):
 
 # a straight body's name "rolls" (in each language's words) — never written of a strand
 ROLLS = {"ca": r"\* rodol(a|en)\b", "es": r"\* rueda(n)?\b", "en": r"\* rolls?\b",
-         "eu": r"\* solidoa [^.:]*? errodatzen da"}
+         "eu": r"\* solidoa \*[^*]*\* solidoaren gainean errodatzen da"}
 
 
 def _straight_bodies(name: str, lang: str) -> list[str]:
