@@ -121,9 +121,9 @@ def test_a_contact_sentence_stands_next_to_the_equation_that_uses_it():
 
 def test_a_caption_names_each_arrow_by_its_point_on_the_page():
     """001's P pair draws v_B and the drag of B (the guide M's point there): the caption said
-    "the velocities of B and B". Each arrow is named as the page writes the point: B∈M for
-    the drag."""
+    "the velocities of B and B". Each arrow is named as its label on the figure writes it:
+    the drag by its symbol v_arr,B (ninth round: "B∈M" sat under an arrow labelled v_arr,B)."""
     caption = next(line for line in rendered(P_PAIR, "eu", "md").splitlines()
                    if line.startswith("*Mekanismoa une honetan"))
     assert "B eta B puntuen" not in caption
-    assert "B∈M puntuen abiadurak" in caption
+    assert "B (v_{arr,B}, arrastre-abiadura) puntuen abiadurak" in caption

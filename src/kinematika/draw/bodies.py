@@ -234,16 +234,22 @@ def _within(a0: float, sweep: float, angle: float) -> bool:
 
 def _line_span(ctx: Context, body: BodyView, s: ShapeView) -> Optional[tuple[np.ndarray, np.ndarray]]:
     """The part of a moving body's line worth drawing (a chain's run, a rack): over its
-    points and the contacts on it, a little beyond, inside the reach."""
+    points and the contacts on it, a little beyond a point, inside the reach — but never
+    beyond a contact at its end: a strand or a straight run leaves its pulley at the tangent
+    point, so it is drawn from there, not through it (C5-1.1's strands ran past J and K)."""
     through, direction = s.line()
-    pts = list(body.points.values()) + [j.contact for j in ctx.scene.joints
-                                        if body.name in (j.a, j.b) and j.contact is not None]
-    if not pts:
+    pts = list(body.points.values())
+    contacts = [j.contact for j in ctx.scene.joints if body.name in (j.a, j.b) and j.contact is not None]
+    if not pts and not contacts:
         return clip_line(through, direction, ctx.reach)
-    ts = [float((p - through) @ direction) for p in pts]
-    margin = 0.1 * ctx.size
-    return clip_segment(through + (min(ts) - margin) * direction,
-                        through + (max(ts) + margin) * direction, ctx.reach)
+    at_points = [float((p - through) @ direction) for p in pts]
+    at_contacts = [float((p - through) @ direction) for p in contacts]
+    margin, tol = 0.1 * ctx.size, 1e-9 * ctx.size
+    lo, hi = min(at_points + at_contacts), max(at_points + at_contacts)
+    lo_contact = any(t <= lo + tol for t in at_contacts)          # a contact at the end (C5-1.5's T1 too)
+    hi_contact = any(t >= hi - tol for t in at_contacts)
+    return clip_segment(through + (lo - (0.0 if lo_contact else margin)) * direction,
+                        through + (hi + (0.0 if hi_contact else margin)) * direction, ctx.reach)
 
 
 def _ring_gear(ctx: Context, body: BodyView, s: ShapeView) -> None:

@@ -19,6 +19,7 @@ from .contacts import contact_section
 from .centres import centre_sites, centres_first, centres_section
 from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
+from .strands import strand_words
 from .document import Ann, Document, Equation, Inline, Msg, Name, Section, Sym, Term, Value, msg
 from .group import refine
 from .order import solution_order
@@ -110,6 +111,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     refer_drags(ctx, doc, levels)
     translations(ctx, doc)
     contact_rows(ctx, doc)
+    strand_words(ctx, doc.sections)
     said = relative_convention(doc)
     if said is not None:
         doc.sections[0].blocks.insert(2, said)

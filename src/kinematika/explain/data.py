@@ -19,11 +19,13 @@ Every value is the model's own, evaluated; nothing is solved here.
 from __future__ import annotations
 
 import ast
+import re
 from typing import Any, Optional
 
 from ..model.body_shapes import Circle, Disc, Line, Plane
 from .context import Ctx
-from .document import Inline, Msg, Name, Described, Section, Table, Told, Value, msg, names, point
+from .document import (Ann, CentreNote, Described, Drawing, Inline, Msg, Name, Section, Sym, Table, Told, Value, msg,
+                       names, point)
 from .planar import driver_msg
 
 # the kinds of quantity a parameter may be, by where the model uses it
@@ -222,20 +224,25 @@ def _touching(ctx: Ctx, name: str, holders: list[str]) -> Optional[Msg]:
 
 
 def contact_rows(ctx: Ctx, doc: Any) -> None:
-    """The contact points the equations name (J1, J4 …: the explanation names them, the model
+    """The contact points the page names (J1, J4 …: the explanation names them, the model
     does not) join the Data section's table of points, with what they are and where, so
-    that every point an equation names is defined before it is used (C5-1.5's J1 … J10)."""
+    that every point the page writes is located before it is used (C5-1.5's J1 … J10); a
+    contact the page names nowhere but in the structure table is not named there either
+    (its cell says "—"): the table of points lists no point the page never uses (issue 30,
+    ninth round: C5-1.4's K, Q and S, C5-E.2's K and N, listed and never used)."""
     table = next((b for b in doc.sections[0].blocks if isinstance(b, Table)
                   and getattr(b.header[0], "key", "") == "col.point"), None)
     if table is None:
         return
     listed = {row[0].text for row in table.rows if isinstance(row[0], Name)}
-    used = points_named(doc, frozenset(ctx.model.points))
+    used = points_used(ctx, doc)
     from .kinds import kind_key
 
     for jid, name in ctx._contacts.items():
         j = ctx.model.joint(jid)
-        if name in listed or (name not in used and not _in_structure(ctx, j)):
+        if name not in used and name not in ctx.model.points:     # a model's point is listed, and drawn
+            _unname_in_structure(doc, name)
+        if name in listed or name not in used:
             continue
         what = msg("what.contact", joint=Name(j.id, "joint"), kind=msg(f"joint.{kind_key(j, ctx.frame)}"),
                    a=Name(j.a, "body"), b=Name(j.b, "body"))
@@ -247,14 +254,84 @@ def contact_rows(ctx: Ctx, doc: Any) -> None:
         listed.add(name)
 
 
-def _in_structure(ctx: Ctx, j: Any) -> bool:
-    """Whether the structure table names the joint by its contact (a planar rolling pair
-    with no point of its own, `structure._where`): that contact is then a point the page
-    uses, and the Data section defines it (C5-E.4's J6, named in the table and the centres
-    but in no equation)."""
-    from .kinds import rolls
+# the tables that say what the page's points are, not where it uses them
+_NAMING_TABLES = ("col.point", "col.number", "col.joint")
 
-    return bool(rolls(j) and ctx.planar and not j.at and ctx.sol.geometry(j.id).contact is not None)
+
+def _naming(block: Any) -> bool:
+    return isinstance(block, Table) and getattr(block.header[0], "key", "") in _NAMING_TABLES
+
+
+def _unname_in_structure(doc: Any, name: str) -> None:
+    """The structure table's joint rows whose place is the contact `name` alone say "—"."""
+    for sec in doc.sections:
+        for b in sec.blocks:
+            if isinstance(b, Table) and getattr(b.header[0], "key", "") == "col.joint":
+                for row in b.rows:
+                    cell = row[-1]
+                    if isinstance(cell, Inline) and len(cell.items) == 1 and isinstance(cell.items[0], Name) \
+                            and cell.items[0].text == name:
+                        row[-1] = "—"
+
+
+def points_used(ctx: Ctx, doc: Any) -> set[str]:
+    """Every point name the page writes outside the tables that only say what its points are
+    (the Data's points, the structure's bodies and joints): in its sentences (Name), its
+    symbols' subscripts and segments (v_{J∈2}, ⊥ G1J, v_{C1-J1}: `split_names`), the
+    centres' constructions (a witness point, a contact a centre is at)."""
+    import dataclasses
+
+    known = set(ctx.model.points) | set(ctx._contacts.values())
+    contacts = dict(ctx._contacts)
+    out: set[str] = set()
+
+    def walk(x: Any) -> None:
+        if isinstance(x, Name):
+            if x.kind == "point":
+                out.update(split_names(x.text, known))
+        elif isinstance(x, str):
+            return
+        elif isinstance(x, Sym):
+            for part in re.split(r"[-,/ ]", x.sub):
+                out.update(split_names(part.split("∈")[0].strip(), known))
+        elif isinstance(x, Ann):
+            if isinstance(x.ref, str):
+                out.update(split_names(x.ref.strip(), known))
+            else:
+                walk(x.ref)
+        elif isinstance(x, CentreNote):
+            for w in x.witnesses:
+                out.update(split_names(str(w[0]), known))
+            if x.how == "joint":
+                out.update(contacts[v] for v in x.via if v in contacts)
+            walk([v for k, v in vars(x).items() if k not in ("witnesses",)])
+        elif isinstance(x, (Drawing,)) or (isinstance(x, Table) and _naming(x)):
+            return
+        elif isinstance(x, dict):
+            walk(list(x.values()))
+        elif isinstance(x, (list, tuple)):
+            for v in x:
+                walk(v)
+        elif dataclasses.is_dataclass(x) and not isinstance(x, type):
+            walk([getattr(x, f.name) for f in dataclasses.fields(x)])
+
+    walk(doc.sections)
+    return out & known
+
+
+def split_names(text: str, known: set[str]) -> set[str]:
+    """The known point names a segment or name is made of, longest first (G1J → G1, J;
+    IC → I, C; RL stays RL when RL is a point)."""
+    out: set[str] = set()
+    rest = text
+    while rest:
+        name = next((n for n in sorted(known, key=len, reverse=True) if n and rest.startswith(n)), None)
+        if name is None:
+            rest = rest[1:]
+            continue
+        out.add(name)
+        rest = rest[len(name):]
+    return out
 
 
 def _point_at(ctx: Ctx, where: tuple) -> Optional[str]:

@@ -3,15 +3,14 @@
 order of solution."""
 from __future__ import annotations
 
-from typing import Optional
+from typing import Any, Optional
 
 from ..draw.names import body_numbers
 from ..model.model import PointPair
-from .asked import worked
 from .freedom import dof_unsaid
 from .context import Ctx
 from .kinds import kind_key, on_fixed_line, rolls, welds
-from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Table, Value, body, msg, names, point
+from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Sym, Table, Value, body, msg, names, point
 from .order import Step, merge_vehicles       # the order lists the steps as the text does them
 
 
@@ -165,21 +164,22 @@ def _arrows_drawn(ctx: Ctx, options: dict) -> dict:
     drawn = [v for v in scene.vectors if v.kind == "velocity" and v.relative_to is None]
     moving = [v for v in drawn if v.magnitude > 1e-9 * max(ctx.inst.scale, 1e-12)]
     shown = moving or drawn
-    points = Names([Name(_arrow_point(ctx, v.ref)) for v in shown])
+    points = Names([_arrow_point(ctx, v.ref) for v in shown])
     arrows = (min(len(moving), 2) if moving else 3) if drawn else 0
     return {"arrows": arrows, "points": points}
 
 
-def _arrow_point(ctx: Ctx, ref: str) -> str:
-    """The point an arrow of the mechanism's figure is the velocity of, by its label on the
-    page: B∈rocker, and B∈M for the drag of a composition at B in the moving body M (001's P
-    pair) — never "the velocities of B and B" where two bodies' points meet and move apart."""
+def _arrow_point(ctx: Ctx, ref: str) -> Any:
+    """What an arrow of the mechanism's figure is the velocity of, as its label on the page
+    says it: B∈rocker where two bodies' points meet and move apart (never "the velocities of
+    B and B"), and the drag of a composition at A by the drag's own symbol, "the drag
+    velocity of A (v_ar,A)" — the label the figure writes and the composition section's
+    symbol, never "A∈N" under an arrow labelled v_ar,A (001's rolling pair)."""
     ref, _, part = ref.partition(":")
     point, _, body = ref.partition("@")
-    if part == "drag":                           # the drag: the moving frame's point there
-        body = next((q.moving for q in worked(ctx).compositions
-                     if str(q.target) == ref and q.moving), body)
-    return ctx.point_label(point, body) if body else point
+    if part == "drag":
+        return msg("fig.drag", point=Name(point), sym=Sym("v", point, sub_key="sub.drag"))
+    return Name(ctx.point_label(point, body) if body else point)
 
 
 def _lines_drawn(ctx: Ctx, options: dict) -> tuple[bool, Optional[set]]:

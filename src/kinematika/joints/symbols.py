@@ -209,15 +209,39 @@ def guide(body: str, centre: Vec, along: Vec, height: float, ctx: DrawContext) -
     if body == ctx.frame:
         n = perpendicular(along)
         side = n if float(n @ (centre - ctx.centroid())) > 1e-12 * ctx.size else -n
-        seg = ctx.clip(centre + side * height / 2, along, HATCH_BAND * ctx.size)
+        reach = carried_reach(centre, side, ctx.keep_out())            # touching, not crossing
+        base = centre + side * max(height / 2, reach + 1e-6 * ctx.size if reach else 0.0)
+        seg = ctx.clip(base, along, HATCH_BAND * ctx.size)
         if seg is not None:
-            seg = kept_out(seg, centre + side * height / 2, along, ctx.keep_out(), 0.5 * height)
+            seg = kept_out(seg, base, along, ctx.keep_out(), 0.5 * height)
         return [] if seg is None else hatched_edge(seg[0], seg[1], side, ctx, "ground:guide")
     pts = list(ctx.points(body)) + [centre]
     ts = [float((p - centre) @ along) for p in pts]
     margin = 0.12 * ctx.size
     line = np.array([centre + (min(ts) - margin) * along, centre + (max(ts) + margin) * along])
     return [Mark("line", line, f"body:{body}", width=3.0, zorder=3, moves_with=body)]
+
+
+def carried_reach(centre: Vec, side: Vec, outlines: list) -> float:
+    """How far the outlines around a block's centre reach towards the guide's `side` (0 when
+    none holds it): a slider carrying a roller on its axle (001's rolling pair) has its
+    fixed guide drawn tangent to the roller, which rests on the line, never through it —
+    a guide through the roller's centre looked like a roller sunk into the ground."""
+    reach = 0.0
+    for poly in outlines:
+        v = np.asarray(poly, dtype=float) - centre
+        if _inside(v):
+            reach = max(reach, float((v @ side).max()))
+    return reach
+
+
+def _inside(v: np.ndarray) -> bool:
+    """Whether the origin is inside the closed polygon `v` (crossings of the ray +x)."""
+    x, y = v[:, 0], v[:, 1]
+    x2, y2 = np.roll(x, -1), np.roll(y, -1)
+    crossing = (y > 0) != (y2 > 0)
+    xs = (x + (x2 - x) * y / np.where(crossing, y - y2, 1.0))[crossing]
+    return bool(np.count_nonzero(xs > 0) % 2 == 1)
 
 
 def kept_out(seg: tuple, base: Vec, along: Vec, outlines: list, margin: float) -> Optional[tuple]:

@@ -73,6 +73,7 @@ joint-gear = engranatge
 joint-weld = unió rígida
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
+fig-drag = d’arrossegament de { $point } ({ $sym })
 fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
@@ -291,6 +292,14 @@ rolling-noslip = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
+rolling-noslip_edge = { $b } no { COUNT($b) ->
+        [many] llisquen
+       *[one] llisca
+    } sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
+rolling-same_edge = { $b } no { COUNT($b) ->
+        [many] llisquen
+       *[one] llisca
+    } sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat, { $sym } = { $other }.
 rolling-glide = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola

@@ -64,6 +64,7 @@ joint-gear = gear
 joint-weld = weld
 joint-spherical = spherical
 joint-cylindrical = cylindrical
+fig-drag = the drag velocity of { $point } ({ $sym })
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
@@ -231,6 +232,14 @@ rolling-noslip = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls
     } on { $a } without slipping: at the contact { $point } both material points have the same velocity.
+rolling-noslip_edge = { $b } { COUNT($b) ->
+        [many] do
+       *[one] does
+    } not slip on { $a }: at the contact { $point } both material points have the same velocity.
+rolling-same_edge = { $b } { COUNT($b) ->
+        [many] do
+       *[one] does
+    } not slip on { $a }: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
 rolling-glide = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls

@@ -61,6 +61,7 @@ joint-gear = engranaje
 joint-weld = unión rígida
 joint-spherical = esférico
 joint-cylindrical = cilíndrico
+fig-drag = de arrastre de { $point } ({ $sym })
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
@@ -216,6 +217,14 @@ rolling-noslip = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
+rolling-noslip_edge = { $b } no { COUNT($b) ->
+        [many] deslizan
+       *[one] desliza
+    } sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
+rolling-same_edge = { $b } no { COUNT($b) ->
+        [many] deslizan
+       *[one] desliza
+    } sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
 rolling-glide = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
