@@ -116,9 +116,13 @@ def test_a_straight_body_never_rolls(name, lang):
 
 
 def test_the_pulley_blocks_strands_do_not_slip():
-    """C5-1.5 in Catalan, by hand from the notes' words: strands 2, 3, 4 and the block do not
-    slip on pulleys 1, 2, 3 and 4."""
+    """C5-1.5 in Catalan, by hand from the notes' words ("la politja no llisca al damunt del
+    cable"): each moving strand meets its two pulleys, and the sentence's subject is the
+    pulley (the round body rolls, eighth round), never the strand: pulleys 1 and 2 on strand 2,
+    2 and 3 on strand 3, 3 and 4 on strand 4, 4 on the block's strand 5."""
     text = rendered("seed_c5_1_5_pulley_block", "ca", drawings=False)
-    for strand, pulley in (("tram 2", "politja 1"), ("tram 3", "politja 2"), ("tram 4", "politja 3"),
-                           ("bloc", "politja 4")):
-        assert f"*{strand}* no llisca sobre la *{pulley}*" in text, (strand, pulley)
+    for pulley, strand in (("politja 1", "tram 2"), ("politja 2", "tram 2"), ("politja 2", "tram 3"),
+                           ("politja 3", "tram 3"), ("politja 3", "tram 4"), ("politja 4", "tram 4"),
+                           ("politja 4", "tram 5")):
+        assert f"La *{pulley}* rodola sense lliscar sobre el *{strand}*" in text, (pulley, strand)
+        assert f"*{strand}* rodola" not in text, strand
