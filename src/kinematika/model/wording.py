@@ -39,11 +39,13 @@ NO_ARTICLE = re.compile(r"(?!)")
 # the subscripts of a motion's parts as each language writes them (v_rel, v_arr,B, a_Cor):
 # the explanations' symbols and the figures' labels read them here (one place for both)
 # sub.rel names the relative motion's term (the notes' v_REL, Ω_REL: REL is the moving frame);
-# sub.rel_to joins a body to the one it is seen from (ω_{politja fixa resp. braç}). In Catalan
-# they differ: the notes keep REL for the frame and say "respecte de" (resp.) for "relative to",
-# so REL never joins two names, where it would read as a third body.
+# sub.rel_to joins a body to the one it is seen from (ω_{politja fixa rel. braç}). In Catalan
+# they differ: the notes keep REL (upper case) for the moving frame's name, so REL never joins
+# two names, where it would read as a third body; the join is "rel." (relatiu a), the notes'
+# word in lower case as an abbreviation — not "resp.", which a reader takes for
+# "respectivament", and never a slash, which reads as a division.
 PART_SUBSCRIPTS = {"sub.rel": {"en": "rel", "es": "rel", "ca": "REL", "eu": "erl"},
-                   "sub.rel_to": {"en": "rel", "es": "rel", "ca": "resp.", "eu": "erl"},
+                   "sub.rel_to": {"en": "rel", "es": "rel", "ca": "rel.", "eu": "erl"},
                    "sub.drag": {"en": "drag", "es": "arr", "ca": "ar", "eu": "arr"},
                    "sub.cor": {"en": "Cor", "es": "Cor", "ca": "Cor", "eu": "cor"}}
 # the Basque slides (4.2) write the composition a_B = a_arr + a_rel + a_cor: their word, lower case

@@ -456,15 +456,15 @@ class Renderer(ABC):
 
     def relative(self, body: str, other: str) -> str:
         """The subscript of a quantity of `body` relative to `other` (both labels): the
-        body, then the language's word for "relative to" (rel, erl; Catalan resp., respecte de,
-        since the notes' REL names the moving frame) and the reference, `mòb resp. braç`; never a slash, which reads as a
-        fraction."""
+        body, then the language's word for "relative to" (rel, erl; Catalan rel., relatiu a,
+        since the notes' REL names the moving frame and "resp." reads as "respectivament") and
+        the reference, `mòb rel. braç`; never a slash, which reads as a fraction."""
         return f"{body} {part_subscript('sub.rel_to', self.lang)} {other}"
 
     def numbered(self, s: Sym) -> str:
         """A symbol's subscript with its bodies by their labels (`labels`), as the notes and the
-        figures write them: ω_roda, ω_{mòb resp. braç} (relative to another body), v_B∈plat,
-        v_{A∈N resp. M}, a_J∈3; the instant centres by their numbers, I_13 (I_2,11 once a label
+        figures write them: ω_roda, ω_{mòb rel. braç} (relative to another body), v_B∈plat,
+        v_{A∈N rel. M}, a_J∈3; the instant centres by their numbers, I_13 (I_2,11 once a label
         has two characters)."""
         nums, labels = self.doc.numbers, self.labels()
         if not nums or not s.sub or s.fixed:
