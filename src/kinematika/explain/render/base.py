@@ -126,6 +126,8 @@ class Renderer(ABC):
         subscripts (`subscripts`) is written last, where it stands, once the page has said
         which labels it writes."""
         self._written: set[str] = set()
+        self._rated: set[str] = set()        # bodies whose own symbol (ω_X, α_X, I_X) is written
+        self._rating = False
         self._legend: Optional[Msg] = None
         body = [self.heading(1, self.esc(shown_lines(self.wording.title(self.lang, self.doc.title))))]
         with formula_values(self.doc.values):
@@ -412,8 +414,9 @@ class Renderer(ABC):
         written = getattr(self, "_written", None)
         for b in m.args["bodies"]:
             label = self.labels().get(b, "")
-            if written is not None and b not in written:
-                continue          # a symbol the page never writes needs no legend
+            if written is not None and b not in getattr(self, "_rated", written):
+                continue          # ω_X the page never writes needs no legend: a point's body
+                # (v_{J∈terra}) is named in the words beside it (J com a punt del terra cilíndric)
             words = _words(spelt[b]) if b in spelt else []
             if not label or label.isdigit() or not words or label == " ".join(words) \
                     or (label in words and CODE.match(label)):
@@ -439,6 +442,8 @@ class Renderer(ABC):
         labels = self.labels()
         if b in labels and hasattr(self, "_written"):
             self._written.add(b)
+            if getattr(self, "_rating", False):
+                self._rated.add(b)
         return labels.get(b, b)
 
     def named(self) -> bool:
@@ -470,21 +475,11 @@ class Renderer(ABC):
         if not nums or not s.sub or s.fixed:
             return s.sub
         if s.base in BODY_SUBS or s.of_body:
-            sep = "," if s.base in ("I", "ω×ω") else "/"
-            parts = s.sub.split(sep)
-            if not all(p in nums for p in parts):
-                return s.sub
-            if s.base == "I" and len(parts) == 2:           # the figures' rule: I_biela, or I_13
-                named = self.named()
-                shown = centre_subscript(parts[0], parts[1], nums, labels if named else self.numbers(), named,
-                                         part_subscript("sub.rel_to", self.lang))
-                for p in parts:           # the frame is left out of I_biela: only what is shown
-                    if named and labels.get(p) and labels[p] in shown:
-                        self.label(p)
-                return shown
-            if sep == "/" and len(parts) == 2:
-                return self.relative(self.label(parts[0]), self.label(parts[1]))
-            return sep.join(self.label(p) for p in parts)
+            self._rating = True               # the body's own symbol: the legend may define it
+            try:
+                return self._body_subscript(s, nums, labels)
+            finally:
+                self._rating = False
         head, *rest = re.split(r"([∈/,])", s.sub)
         out = head
         for i in range(0, len(rest), 2):
@@ -492,6 +487,24 @@ class Renderer(ABC):
             name = self.label(name)
             out += f" {part_subscript('sub.rel_to', self.lang)} {name}" if mark == "/" else mark + name
         return out
+
+    def _body_subscript(self, s: Sym, nums: dict, labels: dict) -> str:
+        """The subscript of a symbol made of bodies (ω_roda, ω_{mòb rel. braç}, I_13, I_biela)."""
+        sep = "," if s.base in ("I", "ω×ω") else "/"
+        parts = s.sub.split(sep)
+        if not all(p in nums for p in parts):
+            return s.sub
+        if s.base == "I" and len(parts) == 2:           # the figures' rule: I_biela, or I_13
+            named = self.named()
+            shown = centre_subscript(parts[0], parts[1], nums, labels if named else self.numbers(), named,
+                                     part_subscript("sub.rel_to", self.lang))
+            for p in parts:           # the frame is left out of I_biela: only what is shown
+                if named and labels.get(p) and labels[p] in shown:
+                    self.label(p)
+            return shown
+        if sep == "/" and len(parts) == 2:
+            return self.relative(self.label(parts[0]), self.label(parts[1]))
+        return sep.join(self.label(p) for p in parts)
 
     def caption(self, fig: Figure) -> str:
         """A figure's caption, saying the numbers a symbolic model is drawn at (or that it is
