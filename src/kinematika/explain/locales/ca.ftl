@@ -768,3 +768,5 @@ centre-parallel-outside = els enllaços no el situen abans de conèixer les velo
         [vowel] d’{ $q }
        *[other] de { $q }
     }:
+# a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
+term-magnitude = { $mag } = { $how }, cap a { $point }: { $sym } = { $value }

@@ -668,6 +668,11 @@ class Renderer(ABC):
     def term_line(self, t) -> str:
         """`v_BA = ω × AB = (…) m/s` for the list of an equation's terms (`α × GH = (…)` for
         a term spelt out)."""
+        towards = magnitude_towards(t)
+        if towards is not None:
+            return self.message(Msg("term.magnitude", {"mag": Inline(["|", t.sym, "|"]), "how": Inline(t.how),
+                                                       "point": Name(towards), "sym": t.sym,
+                                                       "value": Value(t.value, _unit(t.sym))}))
         parts = [self.written(t)]
         if t.how and not t.spelt and self.inline(t.how) != parts[0]:
             parts.append(self.inline(t.how))
@@ -761,6 +766,18 @@ class Renderer(ABC):
         if value.get("point") is None:
             return Msg("centre.infinity", {"direction": Value(value["direction"], "")})
         return Msg("centre.at", {"point": Value(value["point"], "len")})
+
+
+def magnitude_towards(t: Any) -> Optional[str]:
+    """The point a normal acceleration points to, when its formula is a magnitude (ω² · PC,
+    v_C² / OC: no cross product): then the term's line writes the magnitude, then the vector
+    with its direction, |a_C^n| = v_C² / OC, cap a O: a_C^n = (0; −r·ω²/3), as the notes
+    write "component normal de valor (3/2)·r·ω0², dirigida cap a O" — never a magnitude set
+    equal to a vector, `a_C^n = v_C² / OC = (0; −r·ω²/3)`. None for any other term."""
+    if t.kind not in ("normal", "path") or t.spelt or not t.how or any("×" in str(x) for x in t.how):
+        return None
+    ends = getattr(getattr(t.dir, "ref", None), "ends", ("", ""))
+    return ends[1] or None
 
 
 def _unit(s: Sym) -> str:
