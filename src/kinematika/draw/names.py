@@ -37,7 +37,7 @@ def body_labels(model: Any, lang: Optional[str] = None, named: bool = True) -> d
     if wording is None:
         return {name: str(k) for name, k in numbers.items()}
     if named:
-        return wording.labels(list(numbers), lang)
+        return wording.labels(list(numbers), lang, tuple(getattr(model, "parameters", {}) or ()))
     out = {}
     for name, k in numbers.items():
         index = wording.index(name, lang)

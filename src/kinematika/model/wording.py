@@ -110,14 +110,17 @@ class Wording:
         spelt = self.indices.get(body)
         return None if spelt is None else spelt.get(lang or "", spelt.get("*"))
 
-    def labels(self, order: list[str], lang: Optional[str]) -> dict[str, str]:
+    def labels(self, order: list[str], lang: Optional[str], reserved: tuple = ()) -> dict[str, str]:
         """Each body of `order` (the notes' numbering, the frame first) as the symbols write it
         in `lang`: its index (`index`), else a subscript read off its name in `lang`
-        (`subscripts.named_labels`: ω_roda, ω_{roda sup}), else its number."""
+        (`subscripts.named_labels`: ω_roda, ω_{roda sup}), else its number. A name read off
+        never equals a parameter's (`reserved`, and those the wording describes): C5-E.5's
+        "roda de radi R" is not ω_R beside the radius R (ω_R = −v/R), it is ω_roda."""
         from .subscripts import named_labels
 
         given = {b: i for b in order if (i := self.index(b, lang)) is not None}
-        return named_labels(order, self.bodies.get(lang or "", {}), lang, given)
+        params = set(reserved) | {k for described in self.parameters.values() for k in described}
+        return named_labels(order, self.bodies.get(lang or "", {}), lang, given, params)
 
     def symbol(self, key: str, lang: Optional[str]) -> Optional[str]:
         """How `key` is written in `lang`: a parameter's name, or `omega(body)`,

@@ -433,7 +433,7 @@ class Renderer(ABC):
         write it."""
         if not hasattr(self, "_labels"):
             order = sorted(self.doc.numbers, key=lambda b: self.doc.numbers[b])
-            self._labels = self.wording.labels(order, self.lang)
+            self._labels = self.wording.labels(order, self.lang, tuple(getattr(self.doc, "parameters", ())))
         return self._labels
 
     def label(self, b: str) -> str:
