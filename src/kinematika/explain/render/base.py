@@ -56,6 +56,7 @@ UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "r
 # the messages that explain the bodies' numbers, and their words where the bodies are named
 NAMED_KEYS = {"centres.intro": "centres.intro_named", "fig.centres": "fig.centres_named",
               "fig.mechanism": "fig.mechanism_named"}
+SOLIDO_RE = re.compile(r"^ solidoa?([a-z]*)\b")     # Basque: " solidoaren" after a body's name
 BODY_SUBS = ("ω", "α", "I", "ω×ω")          # symbols whose subscript is made of bodies
 
 
@@ -201,7 +202,8 @@ class Renderer(ABC):
             args[name] = slot
         args.setdefault("format", self.fmt)     # plain text (md) names no colours
         parts = TOKEN_RE.split(self.cat.format(m.key, args))
-        out = [self.esc(p) if i % 2 == 0 else rendered[int(p)] for i, p in enumerate(parts)]
+        own = self.declined(parts, rendered, values) if self.lang == "eu" else {}
+        out = [self.esc(p) if i % 2 == 0 else own.get(i, rendered[int(p)]) for i, p in enumerate(parts)]
         if lead and parts[0][:1].islower():
             out[0] = self.esc(parts[0][0].upper() + parts[0][1:])
         elif lead and parts[0] == "" and len(parts) > 1:
@@ -209,6 +211,37 @@ class Renderer(ABC):
             if isinstance(first, Name) and first.kind == "body":    # eu: Besoa O puntu finkoaren …
                 out[1] = self.capital(out[1])                        # there only, not where it recurs
         return self.contracted("".join(out))
+
+    def declined(self, parts: list[str], rendered: list[str], values: list[Any]) -> dict[int, str]:
+        """Basque: a body's name followed by the catalogue's "solido" and its case ending
+        (*1. polea* solidoaren) keeps the word the first time the page names that body, so
+        the reader knows it is a body; after that the ending goes on the name itself, as the
+        Basque notes decline their nouns (aspen, ardatzaren): *1. polearen*, *1. poleak*,
+        never "*1. polea* solidoa *1. kable-zatia* solidoaren gainean … *1. kable-zatia*
+        solidoa" on every line. A name that does not end in the article -a (a number, a
+        code) keeps the word: "3 solidoa". Returns the declined names by their place in
+        `parts`, and cuts the word from the text after them."""
+        seen = self.__dict__.setdefault("_introduced", set())
+        own: dict[int, str] = {}
+        for i in range(1, len(parts) - 1, 2):
+            x = values[int(parts[i])]
+            x = x.item if isinstance(x, Lead) else x
+            follow = SOLIDO_RE.match(parts[i + 1])
+            if not isinstance(x, Name) or x.kind != "body" or follow is None:
+                continue
+            if x.text not in seen:
+                seen.add(x.text)
+                continue
+            word = self.called(x).split()[-1] if self.called(x).split() else ""
+            markup, at = rendered[int(parts[i])], -1
+            if re.fullmatch(r"[^\W\d_][\w-]*a", word):          # polea, kable-zatia, blokea
+                at = markup.rfind(self.esc(word))
+            if at < 0:
+                continue
+            end = at + len(self.esc(word))
+            own[i] = markup[:end] + follow.group(1) + markup[end:]
+            parts[i + 1] = parts[i + 1][follow.end():]
+        return own
 
     def capital(self, markup: str) -> str:
         """`markup` with its first letter (past the format's leading tags) a capital."""
