@@ -146,3 +146,17 @@ def test_body_subscript_is_not_a_parameter(lang, label):
     text = rendered("seed_c5_e5_unequal_wheels", lang, "md", drawings=False)
     assert not re.search(r"ω_R\b|ω_\{R ", text)
     assert f"ω_{label} = " in text and "−v/R" in text
+
+
+@pytest.mark.parametrize("lang,named", [
+    ("ca", "el seu peu sobre la guia és un punt de la *barra*"),
+    ("es", "su pie sobre la guía es un punto de la *barra*"),
+    ("en", "its foot on the guide is a point of *bar*"),
+])
+def test_guide_line_names_its_point(lang, named):
+    """C5-1.3: the perpendicular to the guide through J holds the centre because of one point
+    of the bar, the foot of that perpendicular, where v_REL ∥ v_ar (the notes); the page
+    names it (before: "el punt de la barra que hi és llisca …", unclear)."""
+    text = rendered("seed_c5_1_3_bar_in_sleeve", lang, "md", drawings=False)
+    assert named in text
+    assert "que hi és llisca" not in text

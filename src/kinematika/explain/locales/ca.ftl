@@ -608,16 +608,16 @@ centre-line-moves_still = la perpendicular a { $v } per { $point } ({ $point } e
         [many] traslladen
        *[one] trasllada
     })
-centre-line-guide = la perpendicular a la guia per { $pivot } (el punt { ELISION($b) ->
+centre-line-guide = la perpendicular a la guia per { $pivot } (el seu peu sobre la guia és un punt { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
-    } que hi és llisca al llarg de la guia respecte { ELISION($body) ->
+    }: respecte { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    }, i { $body } l’arrossega al voltant { ELISION($pivot) ->
+    } llisca al llarg de la guia, i { $body } l’arrossega al voltant { ELISION($pivot) ->
         [vowel] d’{ $pivot }
        *[other] de { $pivot }
-    } també segons la guia: la seva velocitat segueix la guia)
+    } perpendicularment a aquesta perpendicular, és a dir, també segons la guia; la velocitat relativa i la d’arrossegament hi són paral·leles, i la seva velocitat segueix la guia)
 centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
