@@ -56,7 +56,7 @@ UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "r
 # the messages that explain the bodies' numbers, and their words where the bodies are named
 NAMED_KEYS = {"centres.intro": "centres.intro_named", "fig.centres": "fig.centres_named",
               "fig.mechanism": "fig.mechanism_named"}
-SOLIDO_RE = re.compile(r"^ solidoa?([a-z]*)\b")     # Basque: " solidoaren" after a body's name
+SOLIDO_RE = re.compile(r"^ solidoa([a-z]*)\b")      # Basque: " solidoaren" after a body's name (singular)
 BODY_SUBS = ("ω", "α", "I", "ω×ω")          # symbols whose subscript is made of bodies
 
 
@@ -219,7 +219,8 @@ class Renderer(ABC):
         Basque notes decline their nouns (aspen, ardatzaren): *1. polearen*, *1. poleak*,
         never "*1. polea* solidoa *1. kable-zatia* solidoaren gainean … *1. kable-zatia*
         solidoa" on every line. A name that does not end in the article -a (a number, a
-        code) keeps the word: "3 solidoa". Returns the declined names by their place in
+        code) keeps the word: "3 solidoa"; so does a plural ("*N elementua* eta *P elementua*
+        solidoen", the ending is both names'). Returns the declined names by their place in
         `parts`, and cuts the word from the text after them."""
         seen = self.__dict__.setdefault("_introduced", set())
         own: dict[int, str] = {}
@@ -227,7 +228,8 @@ class Renderer(ABC):
             x = values[int(parts[i])]
             x = x.item if isinstance(x, Lead) else x
             follow = SOLIDO_RE.match(parts[i + 1])
-            if not isinstance(x, Name) or x.kind != "body" or follow is None:
+            if not isinstance(x, Name) or x.kind != "body" or follow is None \
+                    or parts[i - 1].endswith(" eta "):   # "N eta P solidoak": both names' word
                 continue
             if x.text not in seen:
                 seen.add(x.text)
