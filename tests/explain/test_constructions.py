@@ -53,8 +53,11 @@ def test_absolute_values_in_figure_labels():
 
 @pytest.mark.parametrize("name", ALL)
 def test_every_centre_a_note_names_is_explained(name):
-    """A centre found from others (Aronhold–Kennedy, or speeds along one line) names
-    centres that the step lists too (the epicyclic's I_45 on the ring)."""
+    """A centre found from others by Aronhold–Kennedy's lines names centres (I_12, I_23)
+    that the step lists too. Found from the perpendiculars to velocities, or from speeds
+    along one line, it names points (O, A1, N), and the centres about which those points
+    turn relative to the reference: those are listed; the relative centres at the points are
+    not (ninth round: a listed centre nothing uses adds nothing)."""
     sol, doc = explained(name)
     if sol.space.dim != 2:
         return
@@ -63,4 +66,6 @@ def test_every_centre_a_note_names_is_explained(name):
         if note.how in ("kennedy", "proportional"):
             a, b = note.pair
             for k in note.via:
-                assert frozenset((a, k)) in told and frozenset((k, b)) in told, (note.pair, k)
+                assert frozenset((a, k)) in told, (note.pair, k)
+                if note.how == "kennedy" and not note.perps:
+                    assert frozenset((k, b)) in told, (note.pair, k)

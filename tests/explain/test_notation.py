@@ -47,7 +47,7 @@ def test_no_body_number_slash_or_vector_division(name, lang):
 
 
 @pytest.mark.parametrize("lang,absolute,relative,drag", [
-    ("ca", "ω_{politja mòbil}", "ω_{politja mòbil resp. braç}", "ω_braç"),
+    ("ca", "ω_{politja mòbil}", "ω_{politja mòbil rel. braç}", "ω_braç"),
     ("eu", "ω_{polea mugikorra}", "ω_{polea mugikorra erl besoa}", "ω_besoa"),
     ("es", "ω_{polea móvil}", "ω_{polea móvil rel brazo}", "ω_brazo"),
     ("en", "ω_{moving pulley}", "ω_{moving pulley rel arm}", "ω_arm"),
@@ -55,11 +55,12 @@ def test_no_body_number_slash_or_vector_division(name, lang):
 def test_belt_composition_runs_relative_plus_drag(lang, absolute, relative, drag):
     """C5-1.6 as the notes compose it from the arm (=REL): Ω_AB = Ω_REL + Ω_ar, the moving
     pulley's 2ω clockwise relative to the arm plus the arm's ω; the fixed pulley's rate
-    relative to the arm read off 0 = ω_fixed REL arm + ω_arm; never ω_R/t = ω_R − ω_t alone."""
+    relative to the arm read off ω_fixed = ω_{fixed rel arm} + ω_arm = 0 (the absolute on the
+    left, as the notes write it); never ω_R/t = ω_R − ω_t alone."""
     text = _text("seed_c5_1_6_belt", lang)
     assert f"{absolute} = {relative} + {drag} = −ω" in text
-    fixed = re.search(r"0 = (ω_\{[^}]*\}) \+ " + re.escape(drag) + r" ⇒ \1 = −" + re.escape(drag), text)
-    assert fixed is not None, text[text.find("0 = "):text.find("0 = ") + 200]
+    fixed = re.search(r"(ω_\{[^}]*\}) = (ω_\{[^}]*\}) \+ " + re.escape(drag) + r" = 0 ⇒ \2 = −" + re.escape(drag), text)
+    assert fixed is not None, text[text.find(" = 0 ⇒") - 100:text.find(" = 0 ⇒") + 100]
     for line in text.splitlines():
         backwards = re.match(r"(ω|α)_\{[^}]*\} = (ω|α)_\S+ − (ω|α)_", line)
         assert backwards is None, line         # a relative rate is read off its composition (⇒), not stated

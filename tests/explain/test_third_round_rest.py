@@ -11,7 +11,7 @@
 - C5-E.6: the note on the notes' slip writes ℜ_P (a radius of curvature), not ρ (a circle's radius).
 - Lengths with their unit in the model's data sentences (C5-1.2); a position by a symbolic
   distance said as a distance (C5-2.2's W1); a polygon's o′ explained in its caption (C5-E.1).
-- Catalan: "relative to" in a subscript is resp. (respecte de); REL stays the moving frame's name.
+- Catalan: "relative to" in a subscript is rel. (relatiu a); REL stays the moving frame's name.
 """
 from __future__ import annotations
 
@@ -123,11 +123,11 @@ def test_data_sentences_and_captions_read(lang):
 @pytest.mark.parametrize("name", SEEDS)
 def test_catalan_rel_names_the_frame_only(name):
     """The Catalan notes keep REL as the name of the moving frame (v_REL, Ω_REL); "relative
-    to" joins two names with resp. (respecte de): ω_{politja fixa resp. braç}, never
+    to" joins two names with rel. (relatiu a): ω_{politja fixa rel. braç}, never
     ω_{politja fixa REL braç}, where REL would read as a third body (C5-1.6)."""
     for fmt in ("md", "html"):
         text = rendered(name, "ca", fmt, drawings=False)
         joined = re.search(r"[_>{][^}<\n]*\w REL \w[^}<\n]*[}<]", text)
         assert joined is None, text[joined.start() - 40:joined.end() + 20]
     if name == "seed_c5_1_6_belt":
-        assert "ω_{politja fixa resp. braç}" in rendered(name, "ca", "md", drawings=False)
+        assert "ω_{politja fixa rel. braç}" in rendered(name, "ca", "md", drawings=False)

@@ -37,7 +37,7 @@ def body_labels(model: Any, lang: Optional[str] = None, named: bool = True) -> d
     if wording is None:
         return {name: str(k) for name, k in numbers.items()}
     if named:
-        return wording.labels(list(numbers), lang)
+        return wording.labels(list(numbers), lang, tuple(getattr(model, "parameters", {}) or ()))
     out = {}
     for name, k in numbers.items():
         index = wording.index(name, lang)
@@ -297,7 +297,7 @@ def coordinates(xs: Iterable[float], scale: float = 1.0, lang: Optional[str] = N
 def bare(label: str) -> str:
     """A mathtext label as readable plain text, for notes: $I_{\\mathrm{13}}$ -> I13, and a
     subscript longer than a number or a letter in brackets, so that it does not run into its
-    letter: $I_{\\mathrm{satèl·lit2}\\ \\mathrm{resp.}\\ \\mathrm{corona}}$ -> I(satèl·lit2 resp. corona)."""
+    letter: $I_{\\mathrm{satèl·lit2}\\ \\mathrm{rel.}\\ \\mathrm{corona}}$ -> I(satèl·lit2 rel. corona)."""
     def piece(math: re.Match) -> str:
         head, sep, sub = math.group(1).partition("_")
         if not sep:

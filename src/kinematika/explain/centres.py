@@ -123,8 +123,9 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
             _kennedy(ctx, note, found, order[:order.index(c)])
         elif c.how == "lines":
             note.via = [_line_reason(ctx, c, kind, name, found) for kind, name in c.lines]
-            deps[key] = [frozenset(p) for kind, name in c.lines if kind == "third"
-                         for p in ((c.pair[0], name), (name, c.pair[1]))]
+            deps[key] = [frozenset(p) for (kind, name), why in zip(c.lines, note.via) if kind == "third"
+                         for p in ((c.pair[0], name), (name, c.pair[1]))
+                         if ctx.frame in p or why.key == "centre.line.kennedy"]
         elif c.how == "velocities" and c.finite:
             note.witnesses = _witnesses(ctx, c.pair[1], c.pair[0])
             _axles(ctx, note)
@@ -147,7 +148,8 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
         made[key] = note
         if note.how in ("kennedy", "proportional"):
             a, b = note.pair
-            deps[key] = [frozenset(p) for k in note.via for p in ((a, k), (k, b))]
+            deps[key] = [frozenset(p) for k in note.via for p in ((a, k), (k, b))
+                         if (note.how == "kennedy" and not note.perps) or ctx.frame in p]
     asked = {frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target)) for q in worked(ctx).centres}
     ctx.centre_notes = (made, _chosen(ctx, made, deps, asked), asked)
     return ctx.centre_notes
@@ -444,16 +446,21 @@ def _point_name(ctx: Ctx, body: str, where) -> str | None:
 
 
 def _chosen(ctx: Ctx, notes: dict, deps: dict, asked: set) -> list[frozenset]:
-    """The centres to write: when the questions name centres, those and the centres their
-    notes are found from (the notes give no other: C5-1.4 places the planet's centre from
-    the carrier's, the ring's and the contact's, and says nothing of the other planets');
-    else every pair for small mechanisms, or the frame's pairs and what they are found from,
-    so that each centre named is explained."""
+    """The centres to write: when the questions name centres, those; else the centres
+    relative to the frame (every pair for small mechanisms); then the centres those are
+    found from (`_notes`' deps: those relative to the frame, and the others only where the
+    construction writes their symbols, Aronhold–Kennedy's I_12 and I_23, a weld's other centre).
+    A centre of two moving bodies that no question asks and no written construction names
+    is a line that adds nothing (C5-1.2's "I_{OQ rel. roda esquerra}: l'eix de
+    l'articulació O", never used again), so it is not written. Two parallel velocities
+    (`proportional`, C5-1.4's planet from the carrier and the ring) and a perpendicular to a
+    velocity (C5-1.2's "O es mou amb la roda esquerra") name the points, A1, N, O, not the
+    relative centres there: the figure draws those (`used_pairs`), the text does not list them."""
     keys = list(notes)
     if asked and not ctx.model.default_questions:
         wanted = [k for k in keys if k in asked]
     elif len(keys) <= MAX_ALL:
-        return keys
+        wanted = [k for k in keys if ctx.frame in k or k in asked]
     else:
         wanted = [k for k in keys if ctx.frame in k]
     i = 0

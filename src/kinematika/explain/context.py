@@ -279,9 +279,11 @@ def _sign(ctx: "Ctx", value: Any) -> int:
 
 def composed(absolute: Sym, relative: Sym, drag: Sym, frame: bool = False) -> list:
     """The composition of rotations in the notes' direction, relative + drag = absolute,
-    written before a relative rate is read off it: `ω_b = ω_b REL a + ω_a ⇒ ` (`0 = …` when
-    the body is the frame)."""
-    return (["0" if frame else absolute, " = ", relative, " + ", drag, " ⇒ "])
+    written before a relative rate is read off it: `ω_b = ω_{b rel a} + ω_a ⇒ `. The absolute
+    stands on the left even when it is known to be zero (the body is the frame, a pulley fixed
+    to the ground): `ω_b = ω_{b rel a} + ω_a = 0 ⇒ `, as the notes write Ω_AB = Ω_REL + Ω_ar,
+    never `0 = ω_{b rel a} + ω_a`, which hides which rate is zero."""
+    return [absolute, " = ", relative, " + ", drag] + ([" = 0"] if frame else []) + [" ⇒ "]
 
 
 def omega_sym(body: str, relative_to: Optional[str] = None, vector: bool = False) -> Sym:

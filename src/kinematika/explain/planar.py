@@ -12,7 +12,7 @@ from typing import Optional
 
 from ..model.model import Joint, PointPair
 from .context import Ctx, alpha_sym, omega_sym, read_off, segment, split_pair
-from .document import Ann, Derived, Equation, Inline, Lead, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
+from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .group import centre_site, group_blocks, still_contact
 from .shared import shared_rates
 from .higher import higher_pair_steps
@@ -33,10 +33,13 @@ def step_title(n: int, step: Step) -> Msg:
     """A step's title: its number and the bodies it finds, after the course's name for the
     group when it has one (input, RRR dyad …); a group that is no named kind is titled by its
     bodies alone, as a teacher writes it ("Step 1: rear wheel and sprocket"), not by the
-    program's "group solved together"."""
+    program's "group solved together". After the colon every title goes on in lower case,
+    the kind's word or the first name alike ("Pas 1: entrada (sòlid motor) — la corredora",
+    "Pas 2: la palanca N"): sentence case, one style for every step of a page, where a
+    capital on the name alone made the titles of one page disagree."""
     key = "step.title_group" if step.kind == "other" else "step.title"
     bodies = names(step.bodies, "body")
-    return msg(key, n=n, kind=msg(f"kind.{step.kind}"), bodies=Lead(bodies) if step.kind == "other" else bodies)
+    return msg(key, n=n, kind=msg(f"kind.{step.kind}"), bodies=bodies)
 
 
 class PlanarSteps:

@@ -12,7 +12,9 @@ The rule, for each body of a model that names its bodies in the language:
    first thing of "el plat i els pedals"): the first word in Catalan and Spanish, the last
    in English, the first not ending in -ko in Basque), when no other body's is that word:
    ω_braç, ω_plat, ω_koroa, ω_wheel, ω_gurpila;
-3. else that word with the name's number (politja 1 -> politja1, "1. polea" -> polea1);
+3. else that word with the name's number or its code (politja 1 -> politja1, "1. polea" ->
+   polea1, "roda de radi R" -> rodaR as the notes' Ω^{rodaR}, where the code R alone is a
+   parameter's name: `named_labels`' `parameters`);
 4. else the name's words as written, as the notes' "roda sup": ω_{roda esquerra},
    ω_{politja mòbil}, ω_{left wheel}, ω_{ezkerreko gurpila}.
 
@@ -73,16 +75,20 @@ def _candidates(name: str, lang: str) -> tuple[list[str], list[str]]:
     out = [head]
     if number:
         out.append(head + number)
+    elif len(codes) == 1:              # roda de radi R -> rodaR, the notes' Ω^{rodaR}
+        out.append(head + codes[0])
     if len(content) > 1:
         out.append(" ".join(content) + number)
     return codes, out
 
 
 def named_labels(order: list[str], names: dict[str, str], lang: Optional[str],
-                 given: dict[str, str]) -> dict[str, str]:
+                 given: dict[str, str], parameters: Optional[set] = None) -> dict[str, str]:
     """Each body's subscript by the rule above: `order` the bodies in the notes' numbering
     (the frame first), `names` body -> its name in `lang` (empty: numbers), `given` the
-    bodies the model's notation indexes (kept, and never reused)."""
+    bodies the model's notation indexes (kept, and never reused), `parameters` names a
+    body's subscript must not take: a body's symbol never equals a length's (ω_R beside the
+    radius R reads as the radius' rate), so its name's next word is taken (ω_roda)."""
     numbers = {b: str(k) for k, b in enumerate(order, start=1)}
     if not names:
         return {b: given.get(b, numbers[b]) for b in order}
@@ -90,7 +96,7 @@ def named_labels(order: list[str], names: dict[str, str], lang: Optional[str],
     free = [b for b in order if b not in given]
     spelt = {b: names.get(b, "") for b in free}
     found = {b: _candidates(spelt[b], lang) if spelt[b] else ([], []) for b in free}
-    taken = set(given.values())
+    taken = set(given.values()) | set(parameters or ())
     out: dict[str, str] = {}
     code_count: dict[str, int] = {}
     for codes, _ in found.values():

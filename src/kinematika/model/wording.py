@@ -42,11 +42,13 @@ NO_ARTICLE = re.compile(r"(?!)")
 # the subscripts of a motion's parts as each language writes them (v_rel, v_arr,B, a_Cor):
 # the explanations' symbols and the figures' labels read them here (one place for both)
 # sub.rel names the relative motion's term (the notes' v_REL, Ω_REL: REL is the moving frame);
-# sub.rel_to joins a body to the one it is seen from (ω_{politja fixa resp. braç}). In Catalan
-# they differ: the notes keep REL for the frame and say "respecte de" (resp.) for "relative to",
-# so REL never joins two names, where it would read as a third body.
+# sub.rel_to joins a body to the one it is seen from (ω_{politja fixa rel. braç}). In Catalan
+# they differ: the notes keep REL (upper case) for the moving frame's name, so REL never joins
+# two names, where it would read as a third body; the join is "rel." (relatiu a), the notes'
+# word in lower case as an abbreviation — not "resp.", which a reader takes for
+# "respectivament", and never a slash, which reads as a division.
 PART_SUBSCRIPTS = {"sub.rel": {"en": "rel", "es": "rel", "ca": "REL", "eu": "erl"},
-                   "sub.rel_to": {"en": "rel", "es": "rel", "ca": "resp.", "eu": "erl"},
+                   "sub.rel_to": {"en": "rel", "es": "rel", "ca": "rel.", "eu": "erl"},
                    "sub.drag": {"en": "drag", "es": "arr", "ca": "ar", "eu": "arr"},
                    "sub.cor": {"en": "Cor", "es": "Cor", "ca": "Cor", "eu": "cor"}}
 # the Basque slides (4.2) write the composition a_B = a_arr + a_rel + a_cor: their word, lower case
@@ -111,14 +113,17 @@ class Wording:
         spelt = self.indices.get(body)
         return None if spelt is None else spelt.get(lang or "", spelt.get("*"))
 
-    def labels(self, order: list[str], lang: Optional[str]) -> dict[str, str]:
+    def labels(self, order: list[str], lang: Optional[str], reserved: tuple = ()) -> dict[str, str]:
         """Each body of `order` (the notes' numbering, the frame first) as the symbols write it
         in `lang`: its index (`index`), else a subscript read off its name in `lang`
-        (`subscripts.named_labels`: ω_roda, ω_{roda sup}), else its number."""
+        (`subscripts.named_labels`: ω_roda, ω_{roda sup}), else its number. A name read off
+        never equals a parameter's (`reserved`, and those the wording describes): C5-E.5's
+        "roda de radi R" is not ω_R beside the radius R (ω_R = −v/R), it is ω_roda."""
         from .subscripts import named_labels
 
         given = {b: i for b in order if (i := self.index(b, lang)) is not None}
-        return named_labels(order, self.bodies.get(lang or "", {}), lang, given)
+        params = set(reserved) | {k for described in self.parameters.values() for k in described}
+        return named_labels(order, self.bodies.get(lang or "", {}), lang, given, params)
 
     def symbol(self, key: str, lang: Optional[str]) -> Optional[str]:
         """How `key` is written in `lang`: a parameter's name, or `omega(body)`,

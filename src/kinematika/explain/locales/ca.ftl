@@ -361,7 +361,7 @@ centres-intro_named = El símbol I, amb el nom d’un sòlid ({ $pair }), design
     } respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, i, amb dos noms units per «resp.» (respecte de), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
+    }, i, amb dos noms units per «rel.» (relatiu a), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
 centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),
@@ -653,16 +653,16 @@ centre-line-moves_still = la perpendicular a { $v } per { $point } ({ $point } e
         [many] traslladen
        *[one] trasllada
     })
-centre-line-guide = la perpendicular a la guia per { $pivot } (el punt { ELISION($b) ->
+centre-line-guide = la perpendicular a la guia per { $pivot } (el seu peu sobre la guia és un punt { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
-    } que hi és llisca al llarg de la guia respecte { ELISION($body) ->
+    }: respecte { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    }, i { $body } l’arrossega al voltant { ELISION($pivot) ->
+    } llisca al llarg de la guia, i { $body } l’arrossega al voltant { ELISION($pivot) ->
         [vowel] d’{ $pivot }
        *[other] de { $pivot }
-    } també segons la guia: la seva velocitat segueix la guia)
+    } perpendicularment a aquesta perpendicular, és a dir, també segons la guia; la velocitat relativa i la d’arrossegament hi són paral·leles, i la seva velocitat segueix la guia)
 centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
@@ -831,3 +831,5 @@ centre-parallel-outside = respecte { ELISION($frame) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }:
+# a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
+term-magnitude = { $mag } = { $how }, cap a { $point }: { $sym } = { $value }

@@ -482,10 +482,10 @@ centre-weld = { $body } { COUNT($body) ->
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
 centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
-centre-line-guide = the perpendicular to the guide through { $pivot } (the point of { $b } on it slides along the guide relative to { $body }, and { $body } { COUNT($body) ->
+centre-line-guide = the perpendicular to the guide through { $pivot } (its foot on the guide is a point of { $b }: relative to { $body } it slides along the guide, and { $body } { COUNT($body) ->
         [many] carry
        *[one] carries
-    } it about { $pivot } along the guide too: its velocity is along the guide)
+    } it about { $pivot } at right angles to that perpendicular, that is, along the guide too; there the relative and the drag velocities are parallel, and its velocity follows the guide)
 centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
 centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
@@ -582,3 +582,5 @@ ground-word = ground
 # a centre from two parallel velocities perpendicular to the line through their points (the notes' proportional construction)
 centre-parallel-between = relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have opposite senses, so the centre lies between them, where the speed falls to zero, at { $arm } = { $dist } from { $q }:
 centre-parallel-outside = relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $arm } = { $dist } from { $q }:
+# a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
+term-magnitude = { $mag } = { $how }, towards { $point }: { $sym } = { $value }

@@ -68,6 +68,7 @@ UNITS = {"speed": "{L}/s", "accel": "{L}/s²", "len": "{L}", "rate": "rad/s", "r
 # the messages that explain the bodies' numbers, and their words where the bodies are named
 NAMED_KEYS = {"centres.intro": "centres.intro_named", "fig.centres": "fig.centres_named",
               "fig.mechanism": "fig.mechanism_named"}
+SOLIDO_RE = re.compile(r"^ solidoa([a-z]*)\b")      # Basque: " solidoaren" after a body's name (singular)
 BODY_SUBS = ("ω", "α", "I", "ω×ω")          # symbols whose subscript is made of bodies
 
 
@@ -138,6 +139,8 @@ class Renderer(ABC):
         subscripts (`subscripts`) is written last, where it stands, once the page has said
         which labels it writes."""
         self._written: set[str] = set()
+        self._rated: set[str] = set()        # bodies whose own symbol (ω_X, α_X, I_X) is written
+        self._rating = False
         self._legend: Optional[Msg] = None
         body = [self.heading(1, self.esc(shown_lines(self.wording.title(self.lang, self.doc.title))))]
         with formula_values(self.doc.values):
@@ -212,7 +215,8 @@ class Renderer(ABC):
             args[name] = slot
         args.setdefault("format", self.fmt)     # plain text (md) names no colours
         parts = TOKEN_RE.split(self.cat.format(m.key, args))
-        out = [self.esc(p) if i % 2 == 0 else rendered[int(p)] for i, p in enumerate(parts)]
+        own = self.declined(parts, rendered, values) if self.lang == "eu" else {}
+        out = [self.esc(p) if i % 2 == 0 else own.get(i, rendered[int(p)]) for i, p in enumerate(parts)]
         if lead and parts[0][:1].islower():
             out[0] = self.esc(parts[0][0].upper() + parts[0][1:])
         elif lead and parts[0] == "" and len(parts) > 1:
@@ -220,6 +224,39 @@ class Renderer(ABC):
             if isinstance(first, Name) and first.kind == "body":    # eu: Besoa O puntu finkoaren …
                 out[1] = self.capital(out[1])                        # there only, not where it recurs
         return self.contracted("".join(out))
+
+    def declined(self, parts: list[str], rendered: list[str], values: list[Any]) -> dict[int, str]:
+        """Basque: a body's name followed by the catalogue's "solido" and its case ending
+        (*1. polea* solidoaren) keeps the word the first time the page names that body, so
+        the reader knows it is a body; after that the ending goes on the name itself, as the
+        Basque notes decline their nouns (aspen, ardatzaren): *1. polearen*, *1. poleak*,
+        never "*1. polea* solidoa *1. kable-zatia* solidoaren gainean … *1. kable-zatia*
+        solidoa" on every line. A name that does not end in the article -a (a number, a
+        code) keeps the word: "3 solidoa"; so does a plural ("*N elementua* eta *P elementua*
+        solidoen", the ending is both names'). Returns the declined names by their place in
+        `parts`, and cuts the word from the text after them."""
+        seen = self.__dict__.setdefault("_introduced", set())
+        own: dict[int, str] = {}
+        for i in range(1, len(parts) - 1, 2):
+            x = values[int(parts[i])]
+            x = x.item if isinstance(x, Lead) else x
+            follow = SOLIDO_RE.match(parts[i + 1])
+            if not isinstance(x, Name) or x.kind != "body" or follow is None \
+                    or parts[i - 1].endswith(" eta "):   # "N eta P solidoak": both names' word
+                continue
+            if x.text not in seen:
+                seen.add(x.text)
+                continue
+            word = self.called(x).split()[-1] if self.called(x).split() else ""
+            markup, at = rendered[int(parts[i])], -1
+            if re.fullmatch(r"[^\W\d_][\w-]*a", word):          # polea, kable-zatia, blokea
+                at = markup.rfind(self.esc(word))
+            if at < 0:
+                continue
+            end = at + len(self.esc(word))
+            own[i] = markup[:end] + follow.group(1) + markup[end:]
+            parts[i + 1] = parts[i + 1][follow.end():]
+        return own
 
     def capital(self, markup: str) -> str:
         """`markup` with its first letter (past the format's leading tags) a capital."""
@@ -444,8 +481,9 @@ class Renderer(ABC):
         written = getattr(self, "_written", None)
         for b in m.args["bodies"]:
             label = self.labels().get(b, "")
-            if written is not None and b not in written:
-                continue          # a symbol the page never writes needs no legend
+            if written is not None and b not in getattr(self, "_rated", written):
+                continue          # ω_X the page never writes needs no legend: a point's body
+                # (v_{J∈terra}) is named in the words beside it (J com a punt del terra cilíndric)
             words = _words(spelt[b]) if b in spelt else []
             if not label or label.isdigit() or not words or label == " ".join(words) \
                     or (label in words and CODE.match(label)):
@@ -462,7 +500,7 @@ class Renderer(ABC):
         write it."""
         if not hasattr(self, "_labels"):
             order = sorted(self.doc.numbers, key=lambda b: self.doc.numbers[b])
-            self._labels = self.wording.labels(order, self.lang)
+            self._labels = self.wording.labels(order, self.lang, tuple(getattr(self.doc, "parameters", ())))
         return self._labels
 
     def label(self, b: str) -> str:
@@ -471,6 +509,8 @@ class Renderer(ABC):
         labels = self.labels()
         if b in labels and hasattr(self, "_written"):
             self._written.add(b)
+            if getattr(self, "_rating", False):
+                self._rated.add(b)
         return labels.get(b, b)
 
     def named(self) -> bool:
@@ -488,35 +528,25 @@ class Renderer(ABC):
 
     def relative(self, body: str, other: str) -> str:
         """The subscript of a quantity of `body` relative to `other` (both labels): the
-        body, then the language's word for "relative to" (rel, erl; Catalan resp., respecte de,
-        since the notes' REL names the moving frame) and the reference, `mòb resp. braç`; never a slash, which reads as a
-        fraction."""
+        body, then the language's word for "relative to" (rel, erl; Catalan rel., relatiu a,
+        since the notes' REL names the moving frame and "resp." reads as "respectivament") and
+        the reference, `mòb rel. braç`; never a slash, which reads as a fraction."""
         return f"{body} {part_subscript('sub.rel_to', self.lang)} {other}"
 
     def numbered(self, s: Sym) -> str:
         """A symbol's subscript with its bodies by their labels (`labels`), as the notes and the
-        figures write them: ω_roda, ω_{mòb resp. braç} (relative to another body), v_B∈plat,
-        v_{A∈N resp. M}, a_J∈3; the instant centres by their numbers, I_13 (I_2,11 once a label
+        figures write them: ω_roda, ω_{mòb rel. braç} (relative to another body), v_B∈plat,
+        v_{A∈N rel. M}, a_J∈3; the instant centres by their numbers, I_13 (I_2,11 once a label
         has two characters)."""
         nums, labels = self.doc.numbers, self.labels()
         if not nums or not s.sub or s.fixed:
             return s.sub
         if s.base in BODY_SUBS or s.of_body:
-            sep = "," if s.base in ("I", "ω×ω") else "/"
-            parts = s.sub.split(sep)
-            if not all(p in nums for p in parts):
-                return s.sub
-            if s.base == "I" and len(parts) == 2:           # the figures' rule: I_biela, or I_13
-                named = self.named()
-                shown = centre_subscript(parts[0], parts[1], nums, labels if named else self.numbers(), named,
-                                         part_subscript("sub.rel_to", self.lang))
-                for p in parts:           # the frame is left out of I_biela: only what is shown
-                    if named and labels.get(p) and labels[p] in shown:
-                        self.label(p)
-                return shown
-            if sep == "/" and len(parts) == 2:
-                return self.relative(self.label(parts[0]), self.label(parts[1]))
-            return sep.join(self.label(p) for p in parts)
+            self._rating = True               # the body's own symbol: the legend may define it
+            try:
+                return self._body_subscript(s, nums, labels)
+            finally:
+                self._rating = False
         head, *rest = re.split(r"([∈/,])", s.sub)
         out = head
         for i in range(0, len(rest), 2):
@@ -524,6 +554,24 @@ class Renderer(ABC):
             name = self.label(name)
             out += f" {part_subscript('sub.rel_to', self.lang)} {name}" if mark == "/" else mark + name
         return out
+
+    def _body_subscript(self, s: Sym, nums: dict, labels: dict) -> str:
+        """The subscript of a symbol made of bodies (ω_roda, ω_{mòb rel. braç}, I_13, I_biela)."""
+        sep = "," if s.base in ("I", "ω×ω") else "/"
+        parts = s.sub.split(sep)
+        if not all(p in nums for p in parts):
+            return s.sub
+        if s.base == "I" and len(parts) == 2:           # the figures' rule: I_biela, or I_13
+            named = self.named()
+            shown = centre_subscript(parts[0], parts[1], nums, labels if named else self.numbers(), named,
+                                     part_subscript("sub.rel_to", self.lang))
+            for p in parts:           # the frame is left out of I_biela: only what is shown
+                if named and labels.get(p) and labels[p] in shown:
+                    self.label(p)
+            return shown
+        if sep == "/" and len(parts) == 2:
+            return self.relative(self.label(parts[0]), self.label(parts[1]))
+        return sep.join(self.label(p) for p in parts)
 
     def caption(self, fig: Figure) -> str:
         """A figure's caption, saying the numbers a symbolic model is drawn at (or that it is
@@ -687,6 +735,11 @@ class Renderer(ABC):
     def term_line(self, t) -> str:
         """`v_BA = ω × AB = (…) m/s` for the list of an equation's terms (`α × GH = (…)` for
         a term spelt out)."""
+        towards = magnitude_towards(t)
+        if towards is not None:
+            return self.message(Msg("term.magnitude", {"mag": Inline(["|", t.sym, "|"]), "how": Inline(t.how),
+                                                       "point": Name(towards), "sym": t.sym,
+                                                       "value": Value(t.value, _unit(t.sym))}))
         parts = [self.written(t)]
         if t.how and not t.spelt and self.inline(t.how) != parts[0]:
             parts.append(self.inline(t.how))
@@ -780,6 +833,18 @@ class Renderer(ABC):
         if value.get("point") is None:
             return Msg("centre.infinity", {"direction": Value(value["direction"], "")})
         return Msg("centre.at", {"point": Value(value["point"], "len")})
+
+
+def magnitude_towards(t: Any) -> Optional[str]:
+    """The point a normal acceleration points to, when its formula is a magnitude (ω² · PC,
+    v_C² / OC: no cross product): then the term's line writes the magnitude, then the vector
+    with its direction, |a_C^n| = v_C² / OC, cap a O: a_C^n = (0; −r·ω²/3), as the notes
+    write "component normal de valor (3/2)·r·ω0², dirigida cap a O" — never a magnitude set
+    equal to a vector, `a_C^n = v_C² / OC = (0; −r·ω²/3)`. None for any other term."""
+    if t.kind not in ("normal", "path") or t.spelt or not t.how or any("×" in str(x) for x in t.how):
+        return None
+    ends = getattr(getattr(t.dir, "ref", None), "ends", ("", ""))
+    return ends[1] or None
 
 
 def _unit(s: Sym) -> str:
