@@ -60,18 +60,12 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
 
 
 def used_pairs(made: dict, chosen: list) -> list[tuple[str, str]]:
-    """The pairs whose centres the text uses — those it writes and those their notes are
-    found from (a weld's other centre, Aronhold–Kennedy's two lines) — which are all the
-    centres' figure shows: a figure of every pair (C5-1.5's 36) hides the few the step needs."""
-    keys = list(chosen)
-    for key in chosen:
-        note = made[key]
-        if note.how in ("kennedy", "proportional"):
-            a, b = note.pair
-            keys += [frozenset(p) for k in note.via if isinstance(k, str) for p in ((a, k), (k, b))]
-        elif note.how == "weld" and note.same:
-            keys.append(frozenset(note.same["pair"]))
-    return [tuple(sorted(k)) for k in dict.fromkeys(keys) if len(k) == 2]
+    """The pairs whose centres the text writes, which are all the centres' figure shows: a
+    figure of every pair (C5-1.5's 36) hides the few the step needs, and a ring the text never
+    names (a relative centre at a point the text names otherwise, C5-1.4's A1 and N, C5-1.2's
+    O) is a symbol the student cannot find in the text. The centres a construction is found
+    from are written when it writes their symbols (`_chosen`), and so drawn."""
+    return [tuple(sorted(k)) for k in dict.fromkeys(chosen) if len(k) == 2 and k in made]
 
 
 def _placed(ctx: Ctx, note: CentreNote) -> bool:
@@ -455,7 +449,7 @@ def _chosen(ctx: Ctx, notes: dict, deps: dict, asked: set) -> list[frozenset]:
     l'articulació O", never used again), so it is not written. Two parallel velocities
     (`proportional`, C5-1.4's planet from the carrier and the ring) and a perpendicular to a
     velocity (C5-1.2's "O es mou amb la roda esquerra") name the points, A1, N, O, not the
-    relative centres there: the figure draws those (`used_pairs`), the text does not list them."""
+    relative centres there: neither the text nor the figure (`used_pairs`) lists them."""
     keys = list(notes)
     if asked and not ctx.model.default_questions:
         wanted = [k for k in keys if k in asked]
