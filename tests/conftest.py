@@ -102,9 +102,10 @@ def pytest_xdist_auto_num_workers(config) -> int:
 # example solved and explained once, each seed's page written once per language, by
 # `tests/explain/helpers`; tests/examples: each example solved once, by
 # `tests/examples/helpers`; tests/exercise: the session's two exercises of 30 variants and
-# their folders, `tests/exercise/conftest`), which, handed to different workers, each worker
+# their folders, `tests/exercise/conftest`; tests/web: the session's Chromium, its page server
+# and its API client, `tests/web/conftest`), which, handed to different workers, each worker
 # made again.
-ONE_WORKER = ("tests/explain/", "tests/examples/", "tests/exercise/")
+ONE_WORKER = ("tests/explain/", "tests/examples/", "tests/exercise/", "tests/web/")
 
 
 def unit(nodeid: str) -> str:
