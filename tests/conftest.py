@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import re
 import sys
 from pathlib import Path
 from types import ModuleType
@@ -101,9 +102,10 @@ def pytest_xdist_auto_num_workers(config) -> int:
 # example solved and explained once, each seed's page written once per language, by
 # `tests/explain/helpers`; tests/examples: each example solved once, by
 # `tests/examples/helpers`; tests/exercise: the session's two exercises of 30 variants and
-# their folders, `tests/exercise/conftest`), which, handed to different workers, each worker
+# their folders, `tests/exercise/conftest`; tests/web: the session's Chromium, its page server
+# and its API client, `tests/web/conftest`), which, handed to different workers, each worker
 # made again.
-ONE_WORKER = ("tests/explain/", "tests/examples/", "tests/exercise/")
+ONE_WORKER = ("tests/explain/", "tests/examples/", "tests/exercise/", "tests/web/")
 
 
 def unit(nodeid: str) -> str:
@@ -125,6 +127,51 @@ def pytest_xdist_make_scheduler(config, log):
             return unit(nodeid)
 
     return LoadUnitScheduling(config, log)
+
+
+# A test module's file name as pytest rewrites its asserts (its `python_files` and conftest.py)
+REWRITTEN = re.compile(r"(^|/)(test_[^/]*|[^/]*_test|conftest)\.py$")
+
+
+@pytest.hookimpl(tryfirst=True)         # before xdist's own, which starts the workers
+def pytest_sessionstart(session) -> None:
+    """Under xdist, in the controller before the workers start: the package compiled and the
+    test modules' asserts rewritten once, into the clone's `__pycache__`, which every worker
+    then reads. Without it, on a fresh clone, each of the three workers compiled the package
+    and rewrote the ~3 000 asserts of the tests itself, at the same moment (~4 s of CPU a
+    worker: docs/testing.md). Only the files of the paths given are rewritten."""
+    config = session.config
+    if hasattr(config, "workerinput") or not config.getoption("numprocesses", default=0) or sys.dont_write_bytecode:
+        return
+    compiled_once(config, [Path(a.split("::", 1)[0]) for a in config.args])
+
+
+def compiled_once(config, paths: list[Path]) -> None:
+    """`compileall` for the package and the tests' own helpers, and pytest's assertion
+    rewriter (private to pytest, so each step is skipped if pytest moved it) for the test
+    modules, written where the import would write them; a file already written is kept."""
+    import compileall
+
+    quiet = re.compile(r"(^|/)(\.venv|__pycache__)(/|$)")
+    compileall.compile_dir(ROOT / "src" / "kinematika", quiet=1)
+    folders = [p for p in paths if p.is_dir()]
+    for folder in folders:
+        compileall.compile_dir(folder, quiet=1, rx=re.compile(f"{REWRITTEN.pattern}|{quiet.pattern}"))
+    try:
+        from _pytest.assertion import rewrite
+
+        state = config.stash[rewrite.assertstate_key]
+    except (ImportError, AttributeError, KeyError):
+        return
+    files = [p for p in paths if p.is_file()] + [f for d in folders for f in sorted(d.rglob("*.py"))]
+    for fn in files:
+        if not REWRITTEN.search(fn.as_posix()) or quiet.search(fn.as_posix()):
+            continue
+        fn = fn.resolve()
+        pyc = rewrite.get_cache_dir(fn) / (fn.name[:-3] + rewrite.PYC_TAIL)
+        if rewrite._read_pyc(fn, pyc, state.trace) is None and rewrite.try_makedirs(pyc.parent):
+            source_hash, code = rewrite._rewrite_test(fn, config)
+            rewrite._write_pyc(state, code, source_hash, pyc)
 
 
 def pytest_collection_modifyitems(config, items) -> None:
