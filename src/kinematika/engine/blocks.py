@@ -94,8 +94,7 @@ class BlockLU:
         col_row = _match(rows, n, MATCH_WORK * max(len(cols_all), 1))
         if col_row is None:
             return None
-        deps = [[d for d in rows[col_row[c]] if d != c] for c in range(n)]
-        blocks = _merged(tarjan(n, deps))
+        blocks = _merged(tarjan(n, [rows[r] for r in col_row]))     # column c depends on its row's others
         if blocks is None:
             return None
         col_order = np.array([c for block in blocks for c in block], dtype=np.int64)
@@ -242,9 +241,14 @@ def _match(rows: list[list[int]], n: int, budget: int) -> Optional[list[int]]:
 
 def tarjan(n: int, deps: Sequence[Sequence[int]]) -> list[list[int]]:
     """Strongly connected components, each after the components it depends on (iterative,
-    the vertices' index and low-link in lists: one pass, linear in the edges)."""
+    the vertices' index and low-link in lists: one pass, linear in the edges). An edge from
+    a vertex to itself changes nothing (its index is never below its own low-link).
+
+    Each vertex on the depth-first path keeps an iterator over its edges, resumed after the
+    vertex it led to is done; a component is the top of the stack from its root's place."""
     index = [-1] * n                # -1: not visited yet
     low = [0] * n
+    place = [0] * n                 # a vertex's place in `stack`
     on_stack = [False] * n
     stack: list[int] = []
     out: list[list[int]] = []
@@ -252,38 +256,37 @@ def tarjan(n: int, deps: Sequence[Sequence[int]]) -> list[list[int]]:
     for root in range(n):
         if index[root] >= 0:
             continue
-        work = [(root, 0)]
+        index[root] = low[root] = counter
+        counter += 1
+        place[root] = len(stack)
+        stack.append(root)
+        on_stack[root] = True
+        work = [(root, iter(deps[root]))]
         while work:
-            v, i = work.pop()
-            if i == 0:
-                index[v] = low[v] = counter
-                counter += 1
-                stack.append(v)
-                on_stack[v] = True
-            recurse = False
-            edges = deps[v]
-            for k in range(i, len(edges)):
-                w = edges[k]
+            v, edges = work[-1]
+            for w in edges:
                 if index[w] < 0:
-                    work.append((v, k + 1))
-                    work.append((w, 0))
-                    recurse = True
+                    index[w] = low[w] = counter
+                    counter += 1
+                    place[w] = len(stack)
+                    stack.append(w)
+                    on_stack[w] = True
+                    work.append((w, iter(deps[w])))
                     break
                 if on_stack[w] and index[w] < low[v]:
                     low[v] = index[w]
-            if recurse:
-                continue
-            if low[v] == index[v]:
-                comp = []
-                while True:
-                    w = stack.pop()
-                    on_stack[w] = False
-                    comp.append(w)
-                    if w == v:
-                        break
-                out.append(sorted(comp))
-            if work:
-                parent = work[-1][0]
-                if low[v] < low[parent]:
-                    low[parent] = low[v]
+            else:
+                work.pop()
+                if low[v] == index[v]:
+                    at = place[v]
+                    comp = stack[at:]
+                    del stack[at:]
+                    for w in comp:
+                        on_stack[w] = False
+                    comp.sort()
+                    out.append(comp)
+                if work:
+                    parent = work[-1][0]
+                    if low[v] < low[parent]:
+                        low[parent] = low[v]
     return out
