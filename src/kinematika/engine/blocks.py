@@ -75,6 +75,11 @@ class BlockLU:
         self.below = below                # per block: (local row, column position, value) left of it
         self.left = left                  # per block: (local column, row position, value) below it
         self.n = len(col_order)
+        # per block, what each solve reads: its span and the view of its inverse (the same
+        # views every solve, made once: a solve is a Python loop over the blocks)
+        bounds = start.tolist()
+        self.spans = [(bounds[k], bounds[k + 1], inverses[k, :bounds[k + 1] - bounds[k], :bounds[k + 1] - bounds[k]])
+                      for k in range(len(bounds) - 1)]
 
     @classmethod
     def factor(cls, a: SparseRows) -> Optional["BlockLU"]:
@@ -135,29 +140,23 @@ class BlockLU:
         """x with A x = b (``trans="N"``) or Aᵀ x = b (``trans="T"``): forward through the
         blocks in order, each block's unknowns from its inverse after the entries left of it are
         taken off; the transpose backwards, as scipy's SuperLU solves."""
-        start, inverses = self.start, self.inverses
-        k_all = len(start) - 1
         x = np.empty(self.n)
         if trans == "N":
             rhs = b[self.row_order]
-            for k in range(k_all):
-                s0, s1 = start[k], start[k + 1]
+            for (s0, s1, inverse), (local, at, value) in zip(self.spans, self.below):
                 r = rhs[s0:s1]
-                local, at, value = self.below[k]
                 if len(local):
                     r = r - np.bincount(local, weights=value * x[at], minlength=s1 - s0)
-                x[s0:s1] = inverses[k, :s1 - s0, :s1 - s0] @ r
+                x[s0:s1] = inverse @ r
             out = np.empty(self.n)
             out[self.col_order] = x
             return out
         rhs = b[self.col_order]
-        for k in range(k_all - 1, -1, -1):
-            s0, s1 = start[k], start[k + 1]
+        for (s0, s1, inverse), (local, at, value) in zip(reversed(self.spans), reversed(self.left)):
             r = rhs[s0:s1]
-            local, at, value = self.left[k]
             if len(local):
                 r = r - np.bincount(local, weights=value * x[at], minlength=s1 - s0)
-            x[s0:s1] = inverses[k, :s1 - s0, :s1 - s0].T @ r
+            x[s0:s1] = inverse.T @ r
         out = np.empty(self.n)
         out[self.row_order] = x
         return out
