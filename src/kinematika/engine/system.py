@@ -320,27 +320,25 @@ class InstantSolver:
         return exact
 
     def _motion(self, x_v: list[Any], x_a: list[Any] | None) -> Motion:
-        sp, u = self.space, self.unknowns
+        sp, offset = self.space, self.unknowns.offset
+        rot, dim = sp.rot, sp.dim
         states = {}
         for body in self.inst.model.bodies:
-            if body not in u.offset:
+            o = offset.get(body)
+            if o is None:
                 zero = sp.zero()
                 states[body] = BodyState(sp.rot_zero(), zero, sp.rot_zero(), zero)
                 continue
-            o = u.offset[body]
-            w, v0 = _split(x_v, o, sp.rot, sp.dim)
+            # (ω, v₀) of the body: its `rot` unknowns, then `dim` (ω a scalar in the plane)
+            w = x_v[o] if rot == 1 else tuple(x_v[o:o + rot])
+            v0 = tuple(x_v[o + rot:o + rot + dim])
             if x_a is None:
                 alpha, a0 = sp.rot_zero(), sp.zero()
             else:
-                alpha, a0 = _split(x_a, o, sp.rot, sp.dim)
+                alpha = x_a[o] if rot == 1 else tuple(x_a[o:o + rot])
+                a0 = tuple(x_a[o + rot:o + rot + dim])
             states[body] = BodyState(w, v0, alpha, a0)
         return Motion(sp, self.inst.ref, states, self.terms)
-
-
-def _split(x: list[Any], o: int, rot: int, dim: int) -> tuple[Any, tuple]:
-    w = tuple(x[o:o + rot])
-    v0 = tuple(x[o + rot:o + rot + dim])
-    return (w[0] if rot == 1 else w), v0
 
 
 
