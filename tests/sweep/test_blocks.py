@@ -92,3 +92,27 @@ def test_chain_by_blocks_and_by_scipy_agree(monkeypatch):
         assert by_blocks.alpha(body) == pytest.approx(by_scipy.alpha(body), abs=1e-8)
     # past the changed loop every rocker turns with its crank again, a parallelogram's rule
     assert by_blocks.omega("rocker200") == pytest.approx(by_blocks.omega("rocker8"), rel=1e-12)
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_tarjan_gives_the_mutually_reachable_sets_each_after_what_it_depends_on(seed):
+    # independently: v and w share a component iff each reaches the other (the transitive
+    # closure of the edges, by repeated squaring of the boolean adjacency matrix); an edge
+    # v → w between components puts w's before v's; an edge to itself changes nothing
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(1, 60))
+    deps = [rng.integers(0, n, int(rng.integers(0, 4))).tolist() for _ in range(n)]
+    reach = np.eye(n, dtype=bool)
+    for v, ws in enumerate(deps):
+        reach[v, ws] = True
+    for _ in range(int(np.ceil(np.log2(n))) + 1):
+        reach = reach | ((reach.astype(int) @ reach.astype(int)) > 0)
+    mutual = reach & reach.T
+    comps = blocks.tarjan(n, deps)
+    assert sorted(v for comp in comps for v in comp) == list(range(n))
+    where = {v: k for k, comp in enumerate(comps) for v in comp}
+    for comp in comps:
+        assert comp == sorted(comp)
+        assert {int(w) for w in np.flatnonzero(mutual[comp[0]])} == set(comp)
+    assert all(where[w] <= where[v] for v, ws in enumerate(deps) for w in ws)
+    assert blocks.tarjan(n, [[w for w in ws if w != v] for v, ws in enumerate(deps)]) == comps

@@ -177,3 +177,36 @@ def test_the_rows_filled_as_arrays_are_the_joints_rows_bit_for_bit(monkeypatch):
     joints_b, joints_labels = solver.known_terms(level)
     assert np.array(arrays_b, float).tobytes() == np.array(joints_b, float).tobytes()
     assert [str(x) for x in arrays_labels] == [str(x) for x in joints_labels]
+
+
+def test_the_rows_labels_are_made_only_when_an_error_reads_them(monkeypatch):
+    # a 1000-body instant makes thousands of row labels that only an error reads
+    # (docs/performance.md, sixth round): none is said while the instant solves, and read
+    # afterwards they are the joint-by-joint path's, row for row
+    from kinematika.joints import revolute
+
+    said = []
+    shared = revolute._shared
+    monkeypatch.setattr(revolute, "_shared", lambda j, i: said.append((j.id, i)) or shared(j, i))
+    sol = solve(_mixed_chain())
+    assert type(sol.solver.analysis).__name__ == "SparseAnalysis"
+    assert said == []
+    labels = [str(x) for x in sol.solver.labels]
+    assert len(said) == 2 * sum(1 for j in sol.model.joints if j.type == "revolute")
+    monkeypatch.setattr("kinematika.engine.system.LARGE", 10 ** 6)
+    assert [str(x) for x in solve(_mixed_chain()).solver.labels] == labels
+
+
+def test_conflicting_drivers_of_a_large_chain_are_named_as_by_the_dense_path(monkeypatch):
+    # a parallelogram's rocker turns as the crank: ω = 5 for rocker5 against the crank's 10
+    # cannot hold; the error names both drivers (rows read from the labels made when read)
+    tree = four_bar_chain(301)
+    tree["drivers"].append({"omega": "rocker5", "value": 5.0})
+    with pytest.raises(KinematikaError) as sparse:
+        solve(tree)
+    monkeypatch.setattr(linsolve, "LARGE", 10 ** 6)
+    monkeypatch.setattr("kinematika.engine.system.LARGE", 10 ** 6)
+    with pytest.raises(KinematikaError) as dense:
+        solve(tree)
+    assert (sparse.value.kind, str(sparse.value)) == (dense.value.kind, str(dense.value))
+    assert "drivers[0] (ω of crank = 10.0); drivers[1] (ω of rocker5 = 5.0)" in str(sparse.value)

@@ -75,6 +75,11 @@ class BlockLU:
         self.below = below                # per block: (local row, column position, value) left of it
         self.left = left                  # per block: (local column, row position, value) below it
         self.n = len(col_order)
+        # per block, what each solve reads: its span and the view of its inverse (the same
+        # views every solve, made once: a solve is a Python loop over the blocks)
+        bounds = start.tolist()
+        self.spans = [(bounds[k], bounds[k + 1], inverses[k, :bounds[k + 1] - bounds[k], :bounds[k + 1] - bounds[k]])
+                      for k in range(len(bounds) - 1)]
 
     @classmethod
     def factor(cls, a: SparseRows) -> Optional["BlockLU"]:
@@ -94,8 +99,7 @@ class BlockLU:
         col_row = _match(rows, n, MATCH_WORK * max(len(cols_all), 1))
         if col_row is None:
             return None
-        deps = [[d for d in rows[col_row[c]] if d != c] for c in range(n)]
-        blocks = _merged(tarjan(n, deps))
+        blocks = _merged(tarjan(n, [rows[r] for r in col_row]))     # column c depends on its row's others
         if blocks is None:
             return None
         col_order = np.array([c for block in blocks for c in block], dtype=np.int64)
@@ -136,29 +140,23 @@ class BlockLU:
         """x with A x = b (``trans="N"``) or Aᵀ x = b (``trans="T"``): forward through the
         blocks in order, each block's unknowns from its inverse after the entries left of it are
         taken off; the transpose backwards, as scipy's SuperLU solves."""
-        start, inverses = self.start, self.inverses
-        k_all = len(start) - 1
         x = np.empty(self.n)
         if trans == "N":
             rhs = b[self.row_order]
-            for k in range(k_all):
-                s0, s1 = start[k], start[k + 1]
+            for (s0, s1, inverse), (local, at, value) in zip(self.spans, self.below):
                 r = rhs[s0:s1]
-                local, at, value = self.below[k]
                 if len(local):
                     r = r - np.bincount(local, weights=value * x[at], minlength=s1 - s0)
-                x[s0:s1] = inverses[k, :s1 - s0, :s1 - s0] @ r
+                x[s0:s1] = inverse @ r
             out = np.empty(self.n)
             out[self.col_order] = x
             return out
         rhs = b[self.col_order]
-        for k in range(k_all - 1, -1, -1):
-            s0, s1 = start[k], start[k + 1]
+        for (s0, s1, inverse), (local, at, value) in zip(reversed(self.spans), reversed(self.left)):
             r = rhs[s0:s1]
-            local, at, value = self.left[k]
             if len(local):
                 r = r - np.bincount(local, weights=value * x[at], minlength=s1 - s0)
-            x[s0:s1] = inverses[k, :s1 - s0, :s1 - s0].T @ r
+            x[s0:s1] = inverse.T @ r
         out = np.empty(self.n)
         out[self.row_order] = x
         return out
@@ -242,9 +240,14 @@ def _match(rows: list[list[int]], n: int, budget: int) -> Optional[list[int]]:
 
 def tarjan(n: int, deps: Sequence[Sequence[int]]) -> list[list[int]]:
     """Strongly connected components, each after the components it depends on (iterative,
-    the vertices' index and low-link in lists: one pass, linear in the edges)."""
+    the vertices' index and low-link in lists: one pass, linear in the edges). An edge from
+    a vertex to itself changes nothing (its index is never below its own low-link).
+
+    Each vertex on the depth-first path keeps an iterator over its edges, resumed after the
+    vertex it led to is done; a component is the top of the stack from its root's place."""
     index = [-1] * n                # -1: not visited yet
     low = [0] * n
+    place = [0] * n                 # a vertex's place in `stack`
     on_stack = [False] * n
     stack: list[int] = []
     out: list[list[int]] = []
@@ -252,38 +255,37 @@ def tarjan(n: int, deps: Sequence[Sequence[int]]) -> list[list[int]]:
     for root in range(n):
         if index[root] >= 0:
             continue
-        work = [(root, 0)]
+        index[root] = low[root] = counter
+        counter += 1
+        place[root] = len(stack)
+        stack.append(root)
+        on_stack[root] = True
+        work = [(root, iter(deps[root]))]
         while work:
-            v, i = work.pop()
-            if i == 0:
-                index[v] = low[v] = counter
-                counter += 1
-                stack.append(v)
-                on_stack[v] = True
-            recurse = False
-            edges = deps[v]
-            for k in range(i, len(edges)):
-                w = edges[k]
+            v, edges = work[-1]
+            for w in edges:
                 if index[w] < 0:
-                    work.append((v, k + 1))
-                    work.append((w, 0))
-                    recurse = True
+                    index[w] = low[w] = counter
+                    counter += 1
+                    place[w] = len(stack)
+                    stack.append(w)
+                    on_stack[w] = True
+                    work.append((w, iter(deps[w])))
                     break
                 if on_stack[w] and index[w] < low[v]:
                     low[v] = index[w]
-            if recurse:
-                continue
-            if low[v] == index[v]:
-                comp = []
-                while True:
-                    w = stack.pop()
-                    on_stack[w] = False
-                    comp.append(w)
-                    if w == v:
-                        break
-                out.append(sorted(comp))
-            if work:
-                parent = work[-1][0]
-                if low[v] < low[parent]:
-                    low[parent] = low[v]
+            else:
+                work.pop()
+                if low[v] == index[v]:
+                    at = place[v]
+                    comp = stack[at:]
+                    del stack[at:]
+                    for w in comp:
+                        on_stack[w] = False
+                    comp.sort()
+                    out.append(comp)
+                if work:
+                    parent = work[-1][0]
+                    if low[v] < low[parent]:
+                        low[parent] = low[v]
     return out

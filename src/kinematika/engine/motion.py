@@ -72,10 +72,13 @@ class Motion:
         import numpy as np
 
         sp, n = self.space, len(self.states)
-        table = [(sp.rot_components(s.omega), s.v0, sp.rot_components(s.alpha), s.a0)
-                 for s in self.states.values()]
-        return tuple(np.array([t[k] for t in table], dtype=float).reshape(n, width)
-                     for k, width in enumerate((sp.rot, sp.dim, sp.rot, sp.dim)))
+        rot = sp.rot_components
+        widths = (sp.rot, sp.dim, sp.rot, sp.dim)
+        # one row per body, its four parts side by side, read into floats in one pass
+        table = np.array([(*rot(s.omega), *s.v0, *rot(s.alpha), *s.a0) for s in self.states.values()],
+                         dtype=float).reshape(n, sum(widths))
+        edges = np.cumsum((0, *widths)).tolist()
+        return tuple(np.ascontiguousarray(table[:, edges[k]:edges[k + 1]]) for k in range(4))
 
     def fields(self, bodies: Sequence[str], points: Any) -> tuple[Any, Any]:
         """Velocities and accelerations of many material points of a numeric motion at once:

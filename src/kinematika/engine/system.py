@@ -8,11 +8,12 @@ block-by-block exact solve on sympy expressions, the blocks found numerically).
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
-from ..errors import KinematikaError, Said
+from ..errors import KinematikaError, Said, SaidLater
 from .drivers import driver_rows
 from .idle import idle_rows
 from .instant import Instant
@@ -44,10 +45,10 @@ class InstantSolver:
                                                {j.id: joint_geometry(inst, j) for j in model.joints})
         self.analysis: Analysis | SparseAnalysis | None = None
         # set by `prepare`: each velocity row's label, place, and whether a driver gives it
-        self.labels: list[Any]
+        self.labels: Sequence[Any]
         self.wheres: list[str]
         self.is_driver: np.ndarray
-        self.said_rows: dict[Any, list[Said]] = {}    # per joint kind, its rows' labels (`JointArrays`)
+        self.said_rows: dict[Any, Sequence[Said]] = {}    # per joint kind, its rows' labels (`JointArrays`)
         self.rows_v: list[Row] = []
         # set by `prepare`: the velocity system A x = b_v (A exact for a symbolic instant, and as
         # numbers: dense, or sparse for a large numeric one)
@@ -184,7 +185,7 @@ class InstantSolver:
         return self.analysis, self.a_num
 
     def solve_linear(self, b: list[Any], check: bool = True,
-                     labels: list[str] | None = None, level: int = 0) -> list[Any]:
+                     labels: Sequence[Any] | None = None, level: int = 0) -> list[Any]:
         """The solution of A x = b with the analysed matrix (exact for a symbolic instant).
         `level` 1 (velocities) or 2 (accelerations): the right side's natural size is the
         model's rate to that power (`linsolve.solve_numeric`'s check of redundant rows)."""
@@ -228,15 +229,16 @@ class InstantSolver:
         x_a = self.solve_linear(b_a, labels=labels_a, level=2)
         return self._motion(x_v, x_a)
 
-    def known_terms(self, lv: Level) -> tuple[list[Any], list[Any]]:
+    def known_terms(self, lv: Level) -> tuple[list[Any], Sequence[Any]]:
         """The right side b of the rows at level `lv` and their labels, in `rows`'s order: the
         same numbers and labels as `rows(lv)` gives, the joints' without building their `Row`s
         (the acceleration level, whose matrix is the velocity level's)."""
         b: list[Any] = []
         labels: list[Any] = []
+        joints: Sequence[Any] = []
         if self.batched:
-            joints = JointArrays(self, lv)
-            b, labels = joints.b, joints.labels
+            arrays = JointArrays(self, lv)
+            b, joints = arrays.b, arrays.labels
         else:
             for j in self.inst.model.joints:
                 for value, label in joint_known_terms(self.geos[j.id], lv):
@@ -246,7 +248,7 @@ class InstantSolver:
                   *idle_rows(self.inst, lv)]:
             b.append(-r.lin.const)
             labels.append(r.label)
-        return b, labels
+        return b, (joints + labels if isinstance(joints, SaidLater) else labels)
 
     def _solve_exact(self) -> Motion:
         """Both levels solved with the coordinates as stand-ins (`engine.exact`), then the
@@ -293,7 +295,7 @@ class InstantSolver:
         return out
 
     def _solve_exact_level(self, standin: Instant, a: list[list[Any]], b: list[Any],
-                           labels: list[str], values: dict, prefix: str) -> list[Any]:
+                           labels: Sequence[Any], values: dict, prefix: str) -> list[Any]:
         """A x = b exactly (in stand-ins), after the numeric solve checks its consistency.
         Each compound unknown reaches later blocks as a stand-in too (its value added to
         `values`, from where it is revealed), so that a later loop is solved in its terms."""
@@ -318,27 +320,25 @@ class InstantSolver:
         return exact
 
     def _motion(self, x_v: list[Any], x_a: list[Any] | None) -> Motion:
-        sp, u = self.space, self.unknowns
+        sp, offset = self.space, self.unknowns.offset
+        rot, dim = sp.rot, sp.dim
         states = {}
         for body in self.inst.model.bodies:
-            if body not in u.offset:
+            o = offset.get(body)
+            if o is None:
                 zero = sp.zero()
                 states[body] = BodyState(sp.rot_zero(), zero, sp.rot_zero(), zero)
                 continue
-            o = u.offset[body]
-            w, v0 = _split(x_v, o, sp.rot, sp.dim)
+            # (ω, v₀) of the body: its `rot` unknowns, then `dim` (ω a scalar in the plane)
+            w = x_v[o] if rot == 1 else tuple(x_v[o:o + rot])
+            v0 = tuple(x_v[o + rot:o + rot + dim])
             if x_a is None:
                 alpha, a0 = sp.rot_zero(), sp.zero()
             else:
-                alpha, a0 = _split(x_a, o, sp.rot, sp.dim)
+                alpha = x_a[o] if rot == 1 else tuple(x_a[o:o + rot])
+                a0 = tuple(x_a[o + rot:o + rot + dim])
             states[body] = BodyState(w, v0, alpha, a0)
         return Motion(sp, self.inst.ref, states, self.terms)
-
-
-def _split(x: list[Any], o: int, rot: int, dim: int) -> tuple[Any, tuple]:
-    w = tuple(x[o:o + rot])
-    v0 = tuple(x[o + rot:o + rot + dim])
-    return (w[0] if rot == 1 else w), v0
 
 
 
@@ -358,7 +358,7 @@ class JointArrays:
         count = np.zeros(len(joints), dtype=np.int64)
         ptrs, cols, vals = [np.zeros(1, dtype=np.int64)], [], []
         b: list[Any] = []
-        labels: list[Any] = []
+        pieces: list[Sequence[Said]] = []         # the rows' labels, kind after kind
         entries = 0
         for kind, ks in groups.items():
             batch = kind.numeric_rows([geos[joints[k].id] for k in ks], lv)
@@ -372,14 +372,12 @@ class JointArrays:
                 start[members] = len(b) + per * np.arange(len(members))
                 count[members] = per
                 if part.labels is None:      # the velocity level's, said once
-                    labels += solver.said_rows[kind]
+                    pieces.append(solver.said_rows[kind])
                 elif said:        # the kind's labels, said as the joint's (as `joint_rows` does)
-                    solver.said_rows[kind] = mine = [
-                        Said("row-joint", id=joints[k].id, label=label)
-                        for k, label in zip(np.repeat(members, per).tolist(), part.labels)]
-                    labels += mine
+                    solver.said_rows[kind] = mine = _said_as_joints(part.labels, joints, members, per)
+                    pieces.append(mine)
                 else:
-                    labels += part.labels
+                    pieces.append(part.labels)
                 b += part.b.tolist() if isinstance(part.b, np.ndarray) else part.b
                 if part.indptr is not None:
                     ptrs.append(part.indptr[1:] + entries)
@@ -390,9 +388,10 @@ class JointArrays:
         np.cumsum(count[:-1], out=first[1:])
         order = np.repeat(start - first, count) + np.arange(len(b))
         shuffled = not np.array_equal(order, np.arange(len(b)))
+        labels = SaidLater.joined(pieces)      # made when an error names a row
         if shuffled:
             b = [b[i] for i in order.tolist()]
-            labels = [labels[i] for i in order.tolist()]
+            labels = labels.reordered(order.tolist())
         self.b, self.labels = b, labels
         if lv.accel:            # (the right sides only: the matrix is the velocity level's)
             return
@@ -409,6 +408,13 @@ class JointArrays:
             at = np.repeat(indptr[order] - new[:-1], lengths) + np.arange(int(new[-1]))
             indptr, col, val = new, col[at], val[at]
         self.indptr, self.cols, self.vals = indptr, col.astype(np.int64), val.astype(float)
+
+
+def _said_as_joints(labels: Sequence[Said], joints: Sequence[Any], members: list[int], per: int) -> SaidLater:
+    """A kind's `labels` of its joints `members` (`per` rows each) said as each joint's, as
+    `joint_rows` says them: made when read."""
+    return SaidLater(len(labels), lambda: [Said("row-joint", id=joints[k].id, label=label)
+                                           for k, label in zip(np.repeat(members, per).tolist(), labels)])
 
 
 def _from_rows(rows: list[Row], n: int, accel: bool) -> NumericRows:

@@ -11,9 +11,9 @@ from typing import Any
 
 from ..limits import MESSAGE_CHARS, WHERE_CHARS
 from ..text import clip_middle, shown
-from .said import Names, Num, Said, language, speak, speaking
+from .said import Names, Num, Said, SaidLater, language, speak, speaking
 
-__all__ = ["KINDS", "KinematikaError", "KinematikaWarning", "Names", "Num", "Said", "language", "parser_problem",
+__all__ = ["KINDS", "KinematikaError", "KinematikaWarning", "Names", "Num", "Said", "SaidLater", "language", "parser_problem",
            "pydantic_choices", "pydantic_problem", "reason", "said_of", "speak", "speaking"]
 
 KINDS = ("syntax", "schema", "geometry", "mobility", "singular", "assembly",

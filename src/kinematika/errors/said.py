@@ -23,11 +23,12 @@ succeeds never loads it.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from contextvars import ContextVar
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any, overload
 
 LOCALES = Path(__file__).resolve().parent / "locales"
 KEY = re.compile(r"[a-z][a-z0-9]*(?:-[a-z0-9]+)*\Z")     # a catalogue's key: words joined by dashes
@@ -193,6 +194,59 @@ class Said:
 
 def _said(key: str, args: dict[str, Any]) -> Said:
     return Said(key, **args)
+
+
+class SaidLater(Sequence[Said]):
+    """`count` messages made on first reading, by `make` (which gives them all, in order).
+
+    The rows of a large system carry a label each (thousands for a 1000-body chain: a
+    tenth of its solve's work), read only when an error names a row; made here when one is
+    read (`len` needs none). A `SaidLater` and a sequence added (`+`) are another, and
+    `reordered` gives the messages in another order, both made when read. The messages are
+    the same objects every reading gives, as the list `make` returns."""
+
+    __slots__ = ("_count", "_made", "_make")
+
+    def __init__(self, count: int, make: Callable[[], Sequence[Said]]) -> None:
+        self._count, self._make = count, make
+        self._made: Sequence[Said] | None = None
+
+    def made(self) -> Sequence[Said]:
+        """Every message, made on the first call."""
+        if self._made is None:
+            self._made = self._make()
+            if len(self._made) != self._count:
+                raise ValueError(f"{len(self._made)} messages made where {self._count} were counted")
+        return self._made
+
+    def __len__(self) -> int:
+        return self._count
+
+    @overload
+    def __getitem__(self, index: int) -> Said: ...
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[Said]: ...
+
+    def __getitem__(self, index: int | slice) -> Said | Sequence[Said]:
+        return self.made()[index]
+
+    def __iter__(self) -> Iterator[Said]:
+        return iter(self.made())
+
+    def __add__(self, other: Sequence[Said]) -> "SaidLater":
+        return SaidLater.joined([self, other])
+
+    @staticmethod
+    def joined(pieces: Sequence[Sequence[Said]]) -> "SaidLater":
+        """The messages of `pieces`, one after the other."""
+        return SaidLater(sum(len(p) for p in pieces), lambda: [said for p in pieces for said in p])
+
+    def reordered(self, order: Sequence[int]) -> "SaidLater":
+        """The messages at `order`'s positions, in that order."""
+        return SaidLater(len(order), lambda: [self.made()[i] for i in order])
+
+    def __repr__(self) -> str:
+        return f"SaidLater({self._count}, made={self._made is not None})"
 
 
 def _argument(value: Any, lang: str) -> Any:

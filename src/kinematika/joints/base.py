@@ -32,6 +32,7 @@ import functools
 import inspect
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any, Callable, ClassVar, Optional, Protocol
 
 from ..algebra.vectors import dot, sub
@@ -135,7 +136,7 @@ class NumericRows:
     __slots__ = ("b", "cols", "indptr", "labels", "per_joint", "vals")
 
     def __init__(self, per_joint: int, indptr: Any, cols: Any, vals: Any, b: Any,
-                 labels: Optional[list[Said]]) -> None:
+                 labels: Optional[Sequence[Said]]) -> None:
         self.per_joint, self.indptr, self.cols, self.vals = per_joint, indptr, cols, vals
         self.b, self.labels = b, labels
 

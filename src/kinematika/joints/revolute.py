@@ -28,7 +28,7 @@ from .capabilities import Centre, Chain, Coordinate, PointOn
 from .base import AXES, JointGeometry, JointKind, ModelJoint, NumericRows, Rows
 from .derivatives import coincident, turning
 from .positions import axis_kept, coincide
-from ..errors import Said
+from ..errors import Said, SaidLater
 
 if TYPE_CHECKING:
     from . import symbols
@@ -93,7 +93,7 @@ class Revolute(JointKind):
         rx, ry = r[:, 0], r[:, 1]
         if lv.accel:            # (the labels are the velocity level's)
             return self._known_terms(joints, rx, ry, lv)
-        labels = [label for j in joints for label in (_shared(j, 0), _shared(j, 1))]
+        labels = SaidLater(2 * len(joints), lambda: [label for j in joints for label in (_shared(j, 0), _shared(j, 1))])
         none = -1
         ca = np.array([none if (c := lv.column(j.a)) is None else c for j in joints])
         cb = np.array([none if (c := lv.column(j.b)) is None else c for j in joints])
