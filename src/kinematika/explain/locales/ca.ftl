@@ -811,14 +811,14 @@ ground-word = el terra
 centre-parallel-between = respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $arm } = { $dist } { ELISION($q) ->
+    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }:
 centre-parallel-outside = respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $arm } = { $dist } { ELISION($q) ->
+    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }:

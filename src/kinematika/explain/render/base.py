@@ -724,7 +724,7 @@ class Renderer(ABC):
             (p, vp), (q, vq) = c.witnesses
             why = Msg(f"centre.parallel.{c.side}", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
                                                    "vq": Value(vq, "speed"), "frame": self.frame_name(a),
-                                                   "arm": Inline([Name(q), name]), "dist": Value(c.distance, "len")})
+                                                   "dist": Value(c.distance, "len")})
         elif c.how == "field":
             why = Msg("centre.field", self.field_args(c, name))
         elif c.how == "rate":

@@ -1,0 +1,58 @@
+"""Eleventh round: what the three audits of 30 Nov 2026 still left (docs/explain.md, "Eleventh
+round"): each a rule or the model's names and notation, over the nineteen seeds in the four
+languages where it applies.
+
+Each test fails on the pages main wrote before this round (main at 3b4edd4)."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from kinematika.model.subscripts import named_labels
+
+from .helpers import LANGS, SEEDS, rendered
+
+# the words a centre placed between/beyond two parallel velocities ends with, by language
+# ("where the speed falls to zero, at ..."), up to the colon before its coordinates
+ZERO_AT = {"en": r"where the speed falls to zero, at ([^:]*):",
+           "es": r"donde la velocidad se anula, a ([^:]*):",
+           "ca": r"on la velocitat s’anul·la, a ([^:]*):",
+           "eu": r"abiadura nulua den tokian, ([^:]*):"}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_centre_between_parallel_velocities_says_its_distance_plainly(name, lang):
+    """'at r/2 from C3', never 'at C3 I_pulley3 = r/2 from C3' (a segment set equal to the
+    distance it is measured from): the distance, then the point it is measured from."""
+    page = rendered(name, lang)
+    for said in re.findall(ZERO_AT[lang], page):
+        assert "=" not in said and "I_" not in said, said
+
+
+def test_the_pulley_blocks_third_centre_is_r_over_2_from_c3():
+    """C5-1.5 by hand: C3 falls at 2v, T4 (r to its left) rises at 2v, so the speed, linear
+    along C3T4, is zero midway: r/2 from C3."""
+    expected = {"en": "at r/2 from C3:", "es": "a r/2 de C3:", "ca": "a r/2 de C3:",
+                "eu": "C3 puntutik r/2 distantziara:"}
+    for lang in LANGS:
+        assert expected[lang] in rendered("seed_c5_1_5_pulley_block", lang), lang
+
+
+def test_a_basque_subscript_is_a_word_with_its_article():
+    """A Basque name declines its last word only: *gurpil zentrala*'s head word is the stem
+    gurpil, written alone with its article, gurpila (never ω_gurpil, no word of the page)."""
+    labels = named_labels(["ground", "sun", "ring"], {"ground": "lurra", "sun": "gurpil zentrala",
+                                                       "ring": "koroa"}, "eu", {})
+    assert labels["sun"] == "gurpila"
+    assert labels["ring"] == "koroa"
+    labels = named_labels(["ground", "p"], {"ground": "lurra", "p": "polea finkoa"}, "eu", {})
+    assert labels["p"] == "polea"          # a stem already ending in -a keeps it
+
+
+@pytest.mark.parametrize("name", ["seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"])
+def test_no_basque_page_writes_a_bare_stem(name):
+    page = rendered(name, "eu")
+    assert not re.search(r"ω_gurpil(?!a)", page)
+    assert "ω_gurpila" in page
