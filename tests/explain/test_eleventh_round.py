@@ -56,3 +56,57 @@ def test_no_basque_page_writes_a_bare_stem(name):
     page = rendered(name, "eu")
     assert not re.search(r"ω_gurpil(?!a)", page)
     assert "ω_gurpila" in page
+
+
+# a language's "and" between two names of a list, by language
+AND = {"en": "and", "es": "y", "ca": "i", "eu": "eta"}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_no_name_joined_with_and_inside_a_list_joined_with_and(name, lang):
+    """'*chain* and *chainring and pedals*' reads as three bodies: a name in a list joined
+    by "and" holds no "and" of its own."""
+    a = AND[lang]
+    page = rendered(name, lang, drawings=False)
+    found = re.search(rf"\*[^*\n]+\* {a} \*[^*\n]* {a} [^*\n]*\*", page)
+    assert not found, found and found.group(0)
+
+
+# C5-E.6's wheel radius as each language writes it (the notes' R_roda in Catalan)
+WHEEL_RADIUS = {"ca": "R_roda", "en": "R_wheel", "es": "R_rueda", "eu": "R_gurpila"}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_bicycles_wheel_radius_is_written_in_the_pages_language(lang):
+    """The Catalan R_roda only on the Catalan page; the others write their own, in the
+    formulas, the figures' 'Drawn at' and the model's own words (its Data and Notes) alike."""
+    page = rendered("seed_c5_e6_bicycle", lang)
+    others = [w for k, w in WHEEL_RADIUS.items() if k != lang]
+    assert WHEEL_RADIUS[lang] in page
+    assert not [w for w in others if w in page]
+    note = page[page.rindex("ℜ = (R/r)²"):]
+    assert f"d = {WHEEL_RADIUS[lang]} R/r" in note
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_no_polygon_image_is_a_symbol_of_the_page(name, lang):
+    """A polygon's image is its point's letter in lower case; when that letter is a
+    parameter of the page (C5-E.6's crank axle C beside the wheelbase c) it is primed, c′,
+    as O's image is o′ beside the pole o, and the caption says so."""
+    import yaml
+
+    from .helpers import EXAMPLES
+    model = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text())
+    letters = {p for p in (model.get("parameters") or {}) if len(p) == 1 and p.islower()}
+    page = rendered(name, lang, "html")
+    labels = re.findall(r"<text[^>]*>([^<]*)</text>", page)
+    images = {x.strip() for label in labels for x in label.split(",")}
+    assert not (images & letters), (images & letters)
+
+
+def test_the_bicycles_crank_axle_image_is_c_primed():
+    for lang in LANGS:
+        page = rendered("seed_c5_e6_bicycle", lang, "html")
+        assert re.search(r"<text[^>]*>[^<]*c′", page), lang

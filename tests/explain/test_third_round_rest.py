@@ -90,10 +90,11 @@ def test_bicycle_curvature_radius_is_a_length(lang):
     a length; the same formula as the curvature section's (R R_roda − L r)²/(L r²), the
     square written as the note's (d − L)² (d > L at the figure's numbers: sixth round)."""
     page = rendered("seed_c5_e6_bicycle", lang, drawings=False)
-    note = page[page.rindex("ℜ = (R/r)² R_roda"):]
+    w = {"ca": "R_roda", "en": "R_wheel", "es": "R_rueda", "eu": "R_gurpila"}[lang]   # the model's notation
+    note = page[page.rindex(f"ℜ = (R/r)² {w}"):]
     assert "ρ" not in note
-    assert "ℜ_P = v(P)²/aⁿ = (d − L)²/L" in note and "d = R_roda R/r" in note
-    assert "ℜ_P = |v_P|² / |a_P^n| = (R·R_roda − L·r)²/(L·r²)" in page
+    assert "ℜ_P = v(P)²/aⁿ = (d − L)²/L" in note and f"d = {w} R/r" in note
+    assert f"ℜ_P = |v_P|² / |a_P^n| = (R·{w} − L·r)²/(L·r²)" in page
 
 
 @pytest.mark.parametrize("lang", LANGS)

@@ -104,6 +104,8 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
     }.
 fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
+fig-primed = La imatge del punt { $point } és { $image }, ja que { $symbol } ja és un símbol de la pàgina ({ $what }).
+fig-a_symbol = una dada
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
         [md] , els termes l’un darrere l’altre
        *[other] : en negre els termes coneguts{ $unknown ->

@@ -95,6 +95,8 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         } are the velocities of { $points }, to one scale, with their magnitudes
     }.
 fig-o_prime = The image of the point O is o′, since o is the pole.
+fig-primed = The image of the point { $point } is { $image }, since { $symbol } is the { $what }.
+fig-a_symbol = symbol of a datum
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
         [md] , the terms head to tail
        *[other] : known terms in black{ $unknown ->

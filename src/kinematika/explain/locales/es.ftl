@@ -92,6 +92,8 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         } son las velocidades de { $points }, a una misma escala, con sus módulos
     }.
 fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
+fig-primed = La imagen del punto { $point } es { $image }, ya que { $symbol } ya es un símbolo de la página ({ $what }).
+fig-a_symbol = un dato
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
         [md] , los términos uno tras otro
        *[other] : en negro los términos conocidos{ $unknown ->

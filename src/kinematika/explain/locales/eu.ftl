@@ -92,6 +92,8 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         } { $points } puntuen abiadurak dira, eskala berean, beren moduluekin
     }.
 fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
+fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
+fig-a_symbol = datu baten ikurra
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
         [md] , terminoak bata bestearen ondoren
        *[other] : beltzez termino ezagunak{ $unknown ->

@@ -258,13 +258,15 @@ class Renderer(ABC):
         each parameter's name in them whose symbol is written otherwise (r1, written r₁ by
         the formulas) written as the formulas write it: C5-E.5's point P "at r1 below its
         centre" sat over (L; r₂ − r₁), and its notes wrote (r2 − r1)²/r1 beside the page's
-        (r₂ − r₁)²/r₁. A name that reads the same either way (v, L, R_roda) is left as typed."""
+        (r₂ − r₁)²/r₁; a typed symbol the notation writes per language (C5-E.6's R_roda, the
+        English page's R_wheel) is written as this page writes it. A name that reads the same
+        either way (v, L) is left as typed."""
         import sympy
 
         from .names import unicode_name
 
         names = [n for n in getattr(self.doc, "parameters", ()) if unicode_name(self.spelt(n)) != n
-                 and any(c.isdigit() for c in n)]
+                 and any(c.isdigit() or c == "_" for c in n)]
         if not names:
             return self.typed(shown_lines(text))
         pattern = re.compile(r"(?<![A-Za-z0-9_.])(" + "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
