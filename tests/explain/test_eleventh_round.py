@@ -110,3 +110,46 @@ def test_the_bicycles_crank_axle_image_is_c_primed():
     for lang in LANGS:
         page = rendered("seed_c5_e6_bicycle", lang, "html")
         assert re.search(r"<text[^>]*>[^<]*c′", page), lang
+
+
+# English abbreviations a point of C5-2.1 and 2.2 was called by (rear left, rear right, wheel)
+ENGLISH_LABELS = re.compile(r"\b(?:RL|RR|W[1-4])\b")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", ["seed_c5_2_1_tricycle", "seed_c5_2_2_articulated"])
+def test_the_vehicles_wheel_centres_are_language_neutral_letters(name, lang):
+    """The notes name no wheel centre in 2.1 and 2.2; they write a wheel's centre C_roda,
+    so the model's centres are C1, C2 … (one set of letters in every language), never the
+    English RL, RR, W1…W4 on a Catalan or Basque page."""
+    page = rendered(name, lang)
+    assert not ENGLISH_LABELS.findall(page), sorted(set(ENGLISH_LABELS.findall(page)))
+
+
+# the words a position "across a line" says its side with: as one looks from the origin
+# towards the line's other point, never "to its left/right" alone
+SIDE_ALONE = {"en": r"across it, to its (?:left|right)", "es": r"a su (?:izquierda|derecha):",
+              "ca": r"a la seva (?:esquerra|dreta):", "eu": r"perpendikularrean, (?:ezkerretara|eskuinetara):"}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_side_across_a_line_says_which_way_it_is_looked_along(name, lang):
+    assert not re.search(SIDE_ALONE[lang], rendered(name, lang, drawings=False))
+
+
+def test_the_articulated_vehicles_right_wheel_is_left_of_o_towards_p():
+    """C5-2.2 by hand: S2 trails S1 (moving +x), heading from P to O, i.e. (1, 1)/√2; its
+    right wheel's centre C4 = P + (a/2)(1, −1)/√2 = (−√2a/4, −3√2a/4) is on the right of that
+    heading and on the left of O→P (the opposite heading): the page says the latter, the
+    points' table the former, and both hold."""
+    page = rendered("seed_c5_2_2_articulated", "en", drawings=False)
+    assert "| C4 | centre of the right wheel of S2 |" in page
+    assert ("C4 is at a distance a from O along OP and a/2 across it, on the left as one looks "
+            "from O towards P: C4 = (−√2·a/4, −3·√2·a/4).") in page
+
+
+@pytest.mark.parametrize("lang", ["es", "ca"])
+def test_the_articulated_vehicles_data_reads(lang):
+    page = rendered("seed_c5_2_2_articulated", lang, drawings=False)
+    assert not re.search(r"\ba a d", page)

@@ -10,7 +10,7 @@
 - Every contact point the page names is defined in the Data section (C5-E.4: J6).
 - C5-E.6: the note on the notes' slip writes ℜ_P (a radius of curvature), not ρ (a circle's radius).
 - Lengths with their unit in the model's data sentences (C5-1.2); a position by a symbolic
-  distance said as a distance (C5-2.2's W1); a polygon's o′ explained in its caption (C5-E.1).
+  distance said as a distance (C5-2.2's C1); a polygon's o′ explained in its caption (C5-E.1).
 - Catalan: "relative to" in a subscript is resp. (respecte de); REL stays the moving frame's name.
 """
 from __future__ import annotations
@@ -100,12 +100,12 @@ def test_bicycle_curvature_radius_is_a_length(lang):
 @pytest.mark.parametrize("lang", LANGS)
 def test_data_sentences_and_captions_read(lang):
     """C5-1.2's chosen geometry gives its lengths in the page's unit (s = 3 m, not "s = 3 from
-    K0"); a position by a symbolic distance reads as one (C5-2.2: "W1 is at a distance a
-    from O", not "W1 is a from O"); a polygon that labels a point O's image o′ says why."""
+    K0"); a position by a symbolic distance reads as one (C5-2.2: "C1 is at a distance a
+    from O", not "C1 is a from O"); a polygon that labels a point O's image o′ says why."""
     page = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang, drawings=False)
     assert "s = 3 m" in page and "(y = 2 m)" in page and "x = −5 m" in page
     page = rendered("seed_c5_2_2_articulated", lang, drawings=False)
-    line = next(x for x in page.splitlines() if x.startswith("W1 "))
+    line = next(x for x in page.splitlines() if x.startswith("C1 "))
     assert {"en": "at a distance a from O", "es": "a una distancia a de O", "ca": "a una distància a d’O",
             "eu": "O puntutik a distantziara"}[lang] in line, line
     page = rendered("seed_c5_e1_cavity", lang)

@@ -149,11 +149,17 @@ pos-polar_ref = { $point } és a una distància { $distance } { ELISION($origin)
 pos-frame = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a una distància { $y } en perpendicular, a la seva esquerra: { $point } = { $at }.
+    } segons { $line } i a una distància { $y } en perpendicular, a l’esquerra mirant { ELISION($origin) ->
+        [vowel] d’{ $origin }
+       *[other] de { $origin }
+    } cap a { $toward }: { $point } = { $at }.
 pos-frame_right = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a una distància { $y } en perpendicular, a la seva dreta: { $point } = { $at }.
+    } segons { $line } i a una distància { $y } en perpendicular, a la dreta mirant { ELISION($origin) ->
+        [vowel] d’{ $origin }
+       *[other] de { $origin }
+    } cap a { $toward }: { $point } = { $at }.
 pos-frame_on = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
