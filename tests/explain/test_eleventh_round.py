@@ -153,3 +153,30 @@ def test_the_articulated_vehicles_right_wheel_is_left_of_o_towards_p():
 def test_the_articulated_vehicles_data_reads(lang):
     page = rendered("seed_c5_2_2_articulated", lang, drawings=False)
     assert not re.search(r"\ba a d", page)
+
+
+def _structure_column(page: str) -> list[str]:
+    """The first cells of the structure's bodies table: the section after the Data, its
+    first table's rows (past the header and its rule)."""
+    section = page.split("\n## ")[2]
+    table = section[section.index("\n|"):].split("\n\n")[0].strip().splitlines()[2:]
+    return [row.split("|")[1].strip() for row in table]
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_the_structure_column_does_not_mix_letters_and_numbers(name, lang):
+    """One style down the column: all numbers, or all the notation's letters."""
+    cells = _structure_column(rendered(name, lang, drawings=False))
+    assert cells, name
+    assert all(c.isdigit() for c in cells) or not any(c.isdigit() for c in cells), cells
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_p_pairs_bodies_are_numbered_in_the_notes_order(lang):
+    """Seed 001's P pair: the slides letter M and N but not the frame nor the rocker, so the
+    column numbers all four, the frame 1 and the others in the file's order; the letters
+    stay in the names and in ω_M, ω_N."""
+    page = rendered("seed_001_p_pair_coriolis", lang, drawings=False)
+    assert _structure_column(page) == ["1", "2", "3", "4"]
+    assert "ω_M" in page and "ω_N" in page

@@ -374,7 +374,7 @@ class Renderer(ABC):
         if n.kind == "point" and "∈" in n.text:          # O∈wheels as the symbols write it: O∈3
             return self.numbered(Sym("", n.text))
         if n.kind == "index":                            # a body's number in the structure's table
-            return self.numbers().get(n.text, n.text)
+            return self.column().get(n.text, n.text)
         if n.kind == "label":                            # a body as its symbols write it (ω_roda)
             return self.label(n.text)
         return n.text
@@ -487,6 +487,18 @@ class Renderer(ABC):
         if not hasattr(self, "_numbers"):
             self._numbers = {b: self.wording.index(b, self.lang) or str(k) for b, k in self.doc.numbers.items()}
         return self._numbers
+
+    def column(self) -> dict[str, str]:
+        """Each body as the structure's table numbers it, one style down the column: the
+        letters the model's notation gives when it letters every body (as slides that letter
+        all their elements), else every body's number, the frame 1. The slides letter the
+        guide M and the block N of seed 001's P pair but neither its frame nor the rocker,
+        so a column of "1, M, N, 4" mixed two styles; the letters stay in the names (*guide
+        M*) and in the symbols (ω_M)."""
+        given = {b: self.wording.index(b, self.lang) for b in self.doc.numbers}
+        if all(given.values()):
+            return {b: str(i) for b, i in given.items()}
+        return {b: str(k) for b, k in self.doc.numbers.items()}
 
     def relative(self, body: str, other: str) -> str:
         """The subscript of a quantity of `body` relative to `other` (both labels): the
