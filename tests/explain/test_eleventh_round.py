@@ -180,3 +180,21 @@ def test_the_p_pairs_bodies_are_numbered_in_the_notes_order(lang):
     page = rendered("seed_001_p_pair_coriolis", lang, drawings=False)
     assert _structure_column(page) == ["1", "2", "3", "4"]
     assert "ω_M" in page and "ω_N" in page
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_markdown_caption_is_read_once_with_one_emphasis(name, lang):
+    """Each figure: a short alternative text (its title, no longer than the caption's first
+    clause) and the caption below in one italic span, no star inside it (`*R*` nested in
+    `*…*` closes the caption's italics)."""
+    lines = rendered(name, lang).splitlines()
+    images = [k for k, line in enumerate(lines) if re.match(r"!\[[^\n]*\]\[fig-\d+\]$", line)]
+    assert images
+    for k in images:
+        alt = re.match(r"!\[(.*)\]\[fig-\d+\]$", lines[k]).group(1)
+        caption = lines[k + 2]
+        assert caption.startswith("*") and caption.endswith("*"), caption
+        inner = caption[1:-1]
+        assert "*" not in inner.replace("\\*", ""), caption
+        assert alt and inner.startswith(alt) and len(alt) < len(inner) and not re.search(r"[,:;]", alt), alt
