@@ -198,3 +198,30 @@ def test_a_markdown_caption_is_read_once_with_one_emphasis(name, lang):
         inner = caption[1:-1]
         assert "*" not in inner.replace("\\*", ""), caption
         assert alt and inner.startswith(alt) and len(alt) < len(inner) and not re.search(r"[,:;]", alt), alt
+
+
+# "distance from P = d" in the answers' table, by language
+FROM = {"en": "distance from {p} = {d}", "es": "distancia a {p} = {d}", "ca": "distància {de}{p} = {d}",
+        "eu": "{p} puntura dagoen distantzia = {d}"}
+
+
+def _from(lang: str, p: str, d: str) -> str:
+    de = "d’" if p[0] in "AEIOU" else "de "
+    return FROM[lang].format(p=p, d=d, de=de)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_planets_centre_is_two_fifths_r_from_its_centre(lang):
+    """C5-1.4 by hand: A1 moves at 2rω, the ring's contact N (r below A1) at 3rω the other
+    way; the speed is linear along A1N, zero at 2/(2+3) of r from A1: the notes' (2/5)r."""
+    page = rendered("seed_c5_1_4_epicyclic", lang, drawings=False)
+    assert _from(lang, "A1", "2·r/5") in page
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_pedals_centre_is_its_depth_below_c(lang):
+    """C5-E.6 by hand: v_C = v, ω = r v/(R R_roda), so the centre is v/ω = R R_roda/r from C
+    (the notes' d), on the perpendicular to v_C through C."""
+    w = {"ca": "R_roda", "en": "R_wheel", "es": "R_rueda", "eu": "R_gurpila"}[lang]
+    page = rendered("seed_c5_e6_bicycle", lang, drawings=False)
+    assert _from(lang, "C", f"R·{w}/r") in page

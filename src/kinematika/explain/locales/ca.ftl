@@ -472,6 +472,10 @@ ask-intrinsic = acceleració tangencial i normal { ELISION($point) ->
     }
 ans-rest = sense moviment relatiu
 ans-point = posició
+ans-from = distància { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    }
 ans-direction = direcció
 ans-center = centre de curvatura
 ans-tangent = tangent unitària

@@ -316,6 +316,7 @@ ask-curvature = curvature of the path of { $point } relative to { $frame }
 ask-intrinsic = tangential and normal acceleration of { $point } relative to { $frame }
 ans-rest = no relative motion
 ans-point = position
+ans-from = distance from { $point }
 ans-direction = direction
 ans-center = centre of curvature
 ans-tangent = unit tangent

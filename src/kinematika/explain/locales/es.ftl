@@ -295,6 +295,7 @@ ask-curvature = curvatura de la trayectoria de { $point } respecto de { $frame }
 ask-intrinsic = aceleración tangencial y normal de { $point } respecto de { $frame }
 ans-rest = sin movimiento relativo
 ans-point = posición
+ans-from = distancia a { $point }
 ans-direction = dirección
 ans-center = centro de curvatura
 ans-tangent = tangente unitaria

@@ -259,6 +259,7 @@ ask-curvature = { $point } puntuaren ibilbidearen kurbadura { $frame } solidoare
 ask-intrinsic = { $point } puntuaren azelerazio tangentziala eta normala { $frame } solidoarekiko
 ans-rest = ez dago mugimendu erlatiborik
 ans-point = posizioa
+ans-from = { $point } puntura dagoen distantzia
 ans-direction = norabidea
 ans-center = kurbadura-zentroa
 ans-tangent = ukitzaile unitarioa
