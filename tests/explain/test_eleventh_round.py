@@ -225,3 +225,23 @@ def test_the_pedals_centre_is_its_depth_below_c(lang):
     w = {"ca": "R_roda", "en": "R_wheel", "es": "R_rueda", "eu": "R_gurpila"}[lang]
     page = rendered("seed_c5_e6_bicycle", lang, drawings=False)
     assert _from(lang, "C", f"R·{w}/r") in page
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name,chassis", [("seed_c5_e5_unequal_wheels", {"en": "chassis", "es": "chasis", "ca": "xassís",
+                                                                          "eu": "txasisa"}),
+                                          ("seed_c5_e6_bicycle", {"en": "frame", "es": "cuadro", "ca": "quadre",
+                                                                   "eu": "koadroa"})])
+def test_the_chassis_translates_before_the_velocity_equations(name, chassis, lang):
+    """C5-E.5 and E.6: both wheels' centres stay at their radii above one straight ground, so
+    they move on parallel straight lines (one line when the radii are equal) and the chassis
+    pinned at them translates, as the notes state: ω = 0 said before any velocity equation,
+    never solved from v_A = v_J∈wheel2 + v_BJ + v_AB (two unknown rotations), and no term
+    ω_chassis × … anywhere."""
+    page = rendered(name, lang, drawings=False)
+    velocities = page[page.index("\n## ", page.index("\n## ") + 1):]
+    velocities = velocities[velocities.index("\n### "):]
+    w = f"ω_{chassis[lang]}"
+    said = velocities.index(f"{w} = 0 (")
+    assert said < velocities.index("```")
+    assert f"{w} ×" not in page and f"{w}·" not in page

@@ -492,6 +492,7 @@ sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
+how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the straight ground, so they move on parallel straight lines at every instant: the body translates without turning)
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
 centre-site_i = The instant centre { $centre } ≡ { $point } of { $body } relative to { $frame }{ COUNT($frame) ->
         [many] , placed above, have
