@@ -431,7 +431,7 @@ class Renderer(ABC):
         return self.symbol(self.noted(s))
 
     def subscripts(self, m: Msg) -> str:
-        """Which body each shortened subscript is, said once (ω_gurpil: *gurpil zentral
+        """Which body each shortened subscript is, said once (ω_gurpila: *gurpil zentral
         finkoa*; ω_t: *txasisa*): a symbol whose subscript is not the body's whole name in
         this language (`model.subscripts` took a word of it, or the model's notation gives a
         letter) is defined on the page that uses it; nothing when every subscript is the name
