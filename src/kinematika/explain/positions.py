@@ -89,7 +89,7 @@ def _sentence(ctx: Ctx, name: str, c: Any) -> Msg:
             # reads a/2 to its right
             key, y = "pos.frame_right", Value(ctx.clean(-across, "len"), "len")
         # the side is said as one looks from the origin towards the line's other point, never
-        # "to its left" alone: C5-2.2's W4, left of O→P, is the right wheel of the chassis
+        # "to its left" alone: C5-2.2's C4, left of O→P, is the right wheel of the chassis
         # that travels the other way (P towards O)
         return msg(key, point=p, origin=_loc(ctx, c.origin), line=_pair(ctx, c.origin, c.toward),
                    toward=_loc(ctx, c.toward), x=_quantity(ctx, c.at[0], "len"), y=y, at=at)
