@@ -147,11 +147,11 @@ def test_seed_c5_2_1_tricycle_steered_45_degrees():
     v_left = cross(w, [0, half - L])
     assert same(name, answer(name, icr="chassis")["point"], icr)
     assert same(name, answer(name, omega="chassis"), w)
-    assert same(name, answer(name, velocity="RL@chassis"), v_left)
+    assert same(name, answer(name, velocity="C1@chassis"), v_left)
     # (the right rear wheel's velocity is not asked: the notes do not ask it)
     # the notes' spin of the left rear wheel, phi_dot = v0/(√2 L) (L − s)/r: its centre moves
     # at r phi_dot, i.e. v0 (L − s)/(√2 L) (for s < L: the speed is |L − s| in general)
-    v_rl = [formula(name, c) for c in answer(name, velocity="RL@chassis")]
+    v_rl = [formula(name, c) for c in answer(name, velocity="C1@chassis")]
     speed = sympy.sqrt(v_rl[0] ** 2 + v_rl[1] ** 2)
     assert sympy.simplify(speed / s["r"] - v0 * sympy.Abs(L - half) / (sqrt(2) * L * s["r"])) == 0
     assert solved(name)[1]["dof"] == 2                    # motion + steering
@@ -177,9 +177,9 @@ def test_seed_c5_2_2_articulated_vehicle():
     assert same(name, answer(name, velocity="P@S2"), v_p2)
     assert same(name, answer(name, icr="S2")["point"], icr)
     assert same(name, answer(name, omega="S2"), w2)
-    assert same(name, answer(name, velocity="W4"), v_w4)
-    # the inner wheel's spin w' = |v(W4)|/r = w/(2√2)
-    v_w4 = [formula(name, c) for c in answer(name, velocity="W4")]
+    assert same(name, answer(name, velocity="C4"), v_w4)
+    # the inner wheel's spin w' = |v(C4)|/r = w/(2√2)
+    v_w4 = [formula(name, c) for c in answer(name, velocity="C4")]
     assert sympy.simplify(sympy.sqrt(v_w4[0] ** 2 + v_w4[1] ** 2) / r - w / (2 * sqrt(2))) == 0
     # wheels roll without side slip (knife edges, not a slot round a fixed pin): with e, n
     # along and across S2 (45°), P2 = O − a e and v(P2)·n = 0 give θ' = v(O)·n / a, and

@@ -16,7 +16,7 @@ def notes(doc) -> dict:
 
 
 def test_tricycle_centre_by_the_axles():
-    """The chassis' centre: the rear axle (perpendicular to wheel j3 at RL) and the
+    """The chassis' centre: the rear axle (perpendicular to wheel j3 at C1) and the
     perpendicular to v_F at F (the front wheel's axle)."""
     _, doc = explained("seed_c5_2_1_tricycle")
     note = notes(doc)[frozenset(("ground", "chassis"))]

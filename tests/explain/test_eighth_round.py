@@ -86,9 +86,9 @@ def test_the_tricycles_figure_writes_the_texts_factor(lang):
 def test_the_tricycle_asks_what_the_notes_ask():
     """The notes: the chassis' centre, the precession ψ̇, the rear left wheel's centre velocity
     and its spin φ̇ — not the right wheel's velocity."""
-    assert _ask("seed_c5_2_1_tricycle") == [{"icr": "chassis"}, {"omega": "chassis"}, {"velocity": "RL@chassis"}]
+    assert _ask("seed_c5_2_1_tricycle") == [{"icr": "chassis"}, {"omega": "chassis"}, {"velocity": "C1@chassis"}]
     for lang in LANGS:
-        assert "v_{RR" not in rendered("seed_c5_2_1_tricycle", lang, drawings=False)
+        assert "v_{C2" not in rendered("seed_c5_2_1_tricycle", lang, drawings=False)
 
 
 @pytest.mark.parametrize("name", SEEDS)

@@ -24,7 +24,8 @@ def test_a_symbol_in_a_models_words_is_set_as_a_symbol(lang, typed):
     page = rendered("seed_c5_e6_bicycle", lang, "tex", drawings=False)
     assert typed in page
     assert r"$\Re_{\mathrm{P}}$ = v(P)$^2$/a$^n$" in page
-    assert "R_{roda}" not in page and r"R_{\mathrm{roda}}" in page
+    w = {"eu": "gurpila", "ca": "roda"}[lang]         # the model's R_roda per language
+    assert "R_{" + w + "}" not in page and r"R_{\mathrm{" + w + "}}" in page
 
 
 @pytest.mark.parametrize("lang", ["eu", "ca"])

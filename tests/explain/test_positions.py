@@ -149,11 +149,11 @@ def test_an_offset_to_the_right_is_said_so():
 
     _, doc = explained("seed_c5_2_2_articulated")
     told = sentences(doc)
-    sides = {p: told[p].key for p in ("W1", "W2", "W3", "W4")}
-    assert sides == {"W1": "pos.frame", "W2": "pos.frame_right", "W3": "pos.frame_right", "W4": "pos.frame"}
+    sides = {p: told[p].key for p in ("C1", "C2", "C3", "C4")}
+    assert sides == {"C1": "pos.frame", "C2": "pos.frame_right", "C3": "pos.frame_right", "C4": "pos.frame"}
     a = sympy.Symbol("a", positive=True)
     for p in sides:
         y = sympy.sympify(told[p].args["y"].value)
         assert sympy.simplify(y.subs(dict.fromkeys(y.free_symbols, a)) - a / 2) == 0, p
     text = render(doc, "ca", "md", drawings=False)
-    assert "a −a/2 en perpendicular" not in text and "a a/2 en perpendicular, a la seva dreta: W2" in text
+    assert "a −a/2 en perpendicular" not in text and "a a/2 en perpendicular, a la dreta mirant d’O cap a P1: C2" in text

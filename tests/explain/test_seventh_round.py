@@ -30,16 +30,16 @@ def test_a_vehicle_asks_no_acceleration(name):
 
 
 # -- (b) C5-2.2's wheel centres read as wheel centres, not as joints ---------------------------------------------------
-# W1, W2 on S1 (heading +x: W1 at +a/2 is on its left) and W3, W4 on S2 (heading (1; 1), W3 on
-# its left) are the four wheels' centres, as the notes call W4 ("the centre of the right wheel").
+# C1, C2 on S1 (heading +x: C1 at +a/2 is on its left) and C3, C4 on S2 (heading (1; 1), C3 on
+# its left) are the four wheels' centres, as the notes call C4 ("the centre of the right wheel").
 CENTRE_WORDS = {"en": "wheel of S", "es": "rueda", "ca": "roda", "eu": "gurpilaren zentroa"}
 
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_the_articulated_vehicles_wheels_are_centres(lang):
     page = rendered("seed_c5_2_2_articulated", lang, drawings=False)
-    rows = {m.group(1): m.group(2) for m in re.finditer(r"^\| (W\d) \| ([^|]+) \|", page, re.M)}
-    assert sorted(rows) == ["W1", "W2", "W3", "W4"], rows
+    rows = {m.group(1): m.group(2) for m in re.finditer(r"^\| (C\d) \| ([^|]+) \|", page, re.M)}
+    assert sorted(rows) == ["C1", "C2", "C3", "C4"], rows
     for point, words in rows.items():
         assert CENTRE_WORDS[lang] in words and "*" not in words, (lang, point, words)
 

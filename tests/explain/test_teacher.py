@@ -208,7 +208,7 @@ def test_the_tricycles_spin_is_derived_as_the_notes_give_it():
 
 def test_the_articulated_vehicles_wheel_spin_is_the_notes():
     """C5-2.2: S1 translates at rω, so O does; S2 (at 45°) turns about I on its axle line at
-    ω_S2 = rω/(√2 a) (|OI| = √2 a); its inner wheel's centre W4, a/2 from the axle's midpoint
+    ω_S2 = rω/(√2 a) (|OI| = √2 a); its inner wheel's centre C4, a/2 from the axle's midpoint
     towards I, is a/2 from I and moves at ω_S2 a/2 = rω/(2√2) = r ω′: ω′ = ω/(2√2)."""
     import sympy
 
@@ -221,12 +221,12 @@ def test_the_articulated_vehicles_wheel_spin_is_the_notes():
 
 def test_a_chassis_on_one_axle_translates_because_its_wheels_share_a_velocity():
     """C5-2.2: S1's two wheels lie on one axle line (their lines coincide, they do not run
-    parallel), so the lines cannot place its centre; W1 and W2 are both given (rω; 0), and
+    parallel), so the lines cannot place its centre; C1 and C2 are both given (rω; 0), and
     two points with one velocity (v_W2 = v_W1 + ω × W1W2, W1W2 ≠ 0) give ω = 0: it translates."""
     _, doc = explained("seed_c5_2_2_articulated")
     said = [b for s in doc.sections for b in _walk(s) if getattr(b, "key", "").startswith("vehicle.translation")]
     assert [m.key for m in said] == ["vehicle.translation_equal"]
-    assert {said[0].args["p"].text, said[0].args["q"].text} == {"W1", "W2"}
+    assert {said[0].args["p"].text, said[0].args["q"].text} == {"C1", "C2"}
     for lang, words in (("ca", "tenen la mateixa velocitat"), ("eu", "abiadura bera dute")):
         text = render_of(doc, lang, "md", drawings=False)
         assert words in text and "paral·leles: el seu CIR" not in text and "zuzenak paraleloak dira" not in text

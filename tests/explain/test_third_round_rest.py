@@ -10,7 +10,7 @@
 - Every contact point the page names is defined in the Data section (C5-E.4: J6).
 - C5-E.6: the note on the notes' slip writes ℜ_P (a radius of curvature), not ρ (a circle's radius).
 - Lengths with their unit in the model's data sentences (C5-1.2); a position by a symbolic
-  distance said as a distance (C5-2.2's W1); a polygon's o′ explained in its caption (C5-E.1).
+  distance said as a distance (C5-2.2's C1); a polygon's o′ explained in its caption (C5-E.1).
 - Catalan: "relative to" in a subscript is rel. (relatiu a); REL stays the moving frame's name.
 """
 from __future__ import annotations
@@ -97,21 +97,22 @@ def test_bicycle_curvature_radius_is_a_length(lang):
     a length; the same formula as the curvature section's (R R_roda − L r)²/(L r²), the
     square written as the note's (d − L)² (d > L at the figure's numbers: sixth round)."""
     page = rendered("seed_c5_e6_bicycle", lang, drawings=False)
-    note = page[page.rindex("ℜ = (R/r)² R_roda"):]
+    w = {"ca": "R_roda", "en": "R_wheel", "es": "R_rueda", "eu": "R_gurpila"}[lang]   # the model's notation
+    note = page[page.rindex(f"ℜ = (R/r)² {w}"):]
     assert "ρ" not in note
-    assert "ℜ_P = v(P)²/aⁿ = (d − L)²/L" in note and "d = R_roda R/r" in note
-    assert "ℜ_P = |v_P|² / |a_P^n| = (R·R_roda − L·r)²/(L·r²)" in page
+    assert "ℜ_P = v(P)²/aⁿ = (d − L)²/L" in note and f"d = {w} R/r" in note
+    assert f"ℜ_P = |v_P|² / |a_P^n| = (R·{w} − L·r)²/(L·r²)" in page
 
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_data_sentences_and_captions_read(lang):
     """C5-1.2's chosen geometry gives its lengths in the page's unit (s = 3 m, not "s = 3 from
-    K0"); a position by a symbolic distance reads as one (C5-2.2: "W1 is at a distance a
-    from O", not "W1 is a from O"); a polygon that labels a point O's image o′ says why."""
+    K0"); a position by a symbolic distance reads as one (C5-2.2: "C1 is at a distance a
+    from O", not "C1 is a from O"); a polygon that labels a point O's image o′ says why."""
     page = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang, drawings=False)
     assert "s = 3 m" in page and "(y = 2 m)" in page and "x = −5 m" in page
     page = rendered("seed_c5_2_2_articulated", lang, drawings=False)
-    line = next(x for x in page.splitlines() if x.startswith("W1 "))
+    line = next(x for x in page.splitlines() if x.startswith("C1 "))
     assert {"en": "at a distance a from O", "es": "a una distancia a de O", "ca": "a una distància a d’O",
             "eu": "O puntutik a distantziara"}[lang] in line, line
     page = rendered("seed_c5_e1_cavity", lang)

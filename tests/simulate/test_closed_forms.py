@@ -95,10 +95,10 @@ def test_the_tricycle_turns_about_its_centre_until_its_dead_point():
     t = result.time
     theta = np.arcsin(v0 * t / (math.sqrt(2) * big))
     assert result.bodies["chassis"]["omega"][0] == pytest.approx(v0 / (math.sqrt(2) * big))
-    assert np.linalg.norm(result.points["RL@chassis"]["velocity"][0]) == pytest.approx(
+    assert np.linalg.norm(result.points["C1@chassis"]["velocity"][0]) == pytest.approx(
         v0 * (big - half) / (math.sqrt(2) * big))
     centre = np.array([0.0, big])
-    for name, drawn in (("RL@chassis", (0.0, half)), ("RR@chassis", (0.0, -half)), ("F@chassis", (big, 0.0))):
+    for name, drawn in (("C1@chassis", (0.0, half)), ("C2@chassis", (0.0, -half)), ("F@chassis", (big, 0.0))):
         r = np.subtract(drawn, centre)
         expect = centre + np.column_stack([np.cos(theta) * r[0] - np.sin(theta) * r[1],
                                            np.sin(theta) * r[0] + np.cos(theta) * r[1]])

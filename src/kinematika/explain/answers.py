@@ -27,7 +27,10 @@ def answers_section(ctx: Ctx) -> Section:
     sec = Section(msg("sec.answers"))
     rows: list = []
     for q in ctx.model.questions:
-        for row in question_rows(ctx, q, answer_items(ctx, q, answer(ctx.sol, q))):
+        items = answer_items(ctx, q, answer(ctx.sol, q))
+        if q.kind == "icr" and ctx.planar:
+            items += centre_from_point(ctx, q)
+        for row in question_rows(ctx, q, items):
             if row not in rows:    # a fixed point asked of every body it belongs to: once
                 rows.append(row)
     if ctx.planar:                 # the spins the notes ask of a vehicle's wheels (notation spin(j))
@@ -40,6 +43,38 @@ def answers_section(ctx: Ctx) -> Section:
         sec.add(msg("answers.none"))
     sec.add(Told("notes"))
     return sec
+
+
+def centre_from_point(ctx: Ctx, q) -> list:
+    """An instant centre placed on a line through a known point is also said as its distance
+    from that point, as the notes give it: C5-1.4's planet centre "(2/5)r from the centre"
+    (A1, on the line A1N), C5-E.6's pedals' centre d = R_roda R/r below C (on the
+    perpendicular to v_C through C), C5-1.5's r/2 from C3. The point is the one the centre
+    was placed from (`CentreNote`: the field's or the rate's Q, the parallel velocities' Q),
+    or, between two turning points, the nearer one; none for a centre at a joint, by
+    Aronhold–Kennedy's lines, or at infinity."""
+    import sympy
+
+    from .centres import _notes
+
+    key = frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target))
+    note = _notes(ctx)[0].get(key)
+    if note is None or note.value.get("point") is None:
+        return []
+    centre = note.value["point"]
+    if note.how in ("field", "rate", "parallel") and note.witnesses and note.distance is not None:
+        point, distance = note.witnesses[-1][0], note.distance
+    elif note.how == "proportional" and note.pivots:
+        named = [w[0] for w in note.witnesses if not str(w[0]).startswith("I:")]
+        if not named:
+            return []
+        far = {p: sympy.sqrt(sum((sympy.sympify(a) - sympy.sympify(b)) ** 2 for a, b in zip(ctx.pos(p), centre)))
+               for p in named}
+        point = min(named, key=lambda p: float(ctx.inst.num(far[p])))
+        distance = far[point]
+    else:
+        return []
+    return [(msg("ans.from", point=Name(point)), Value(ctx.clean(sympy.simplify(distance), "len"), "len"))]
 
 
 def question_rows(ctx: Ctx, q, items: list) -> list[list]:

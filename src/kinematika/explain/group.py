@@ -117,6 +117,7 @@ class Glides:
     body: str
     p: str
     q: str
+    one_line: bool = True       # both centres on one line (equal radii), else on parallel lines
 
 
 @dataclass
@@ -176,7 +177,7 @@ class Planner:
             self._centres()
         if level == "a":
             self._centred()
-            self._glides()
+        self._glides()
         self._given()
         self._propagate()
 
@@ -241,11 +242,14 @@ class Planner:
         return seg.p == centre and seg.body == wheel
 
     def _glides(self) -> None:
-        """At accelerations, a body pinned at the centres of two wheels that roll on fixed
-        straight profiles, the two centres on one line along the profiles: each centre runs on
-        that line (it keeps its distance from its profile), so the body slides along it at
-        every instant and α = 0 — the notes' "el xassís té un moviment de translació", said,
-        not solved from a three-sided equation."""
+        """A body pinned at the centres of two wheels that roll on fixed straight profiles
+        that are parallel (one straight ground, wheels of any radii): each centre keeps its
+        distance from its profile, so it runs on a line parallel to it, and two points of a
+        rigid body moving on parallel straight lines (the segment between them not across
+        the lines) keep their offset: the body translates at every instant, ω = 0 and α = 0
+        — the notes' "el quadre només es trasllada respecte del terra" (C5-E.4, E.5, E.6),
+        said before the velocity equations, never solved from a chained equation with two
+        unknown rotations (v_A = v_J∈wheel2 + v_BJ + v_AB)."""
         ctx, group = self.ctx, set(self.group)
         straight = []
         for j in ctx.model.joints:      # every such wheel, in this group or not: the path is geometry
@@ -265,12 +269,14 @@ class Planner:
                 continue
             (p, n1), (q, n2) = held[:2]
             a, b = ctx.num(ctx.pos(p)), ctx.num(ctx.pos(q))
-            across = abs(n1[0] * n2[1] - n1[1] * n2[0]) + abs((b[0] - a[0]) * n1[0] + (b[1] - a[1]) * n1[1])
-            if across <= 1e-9 * ctx.inst.scale and self.apart(p, q) is not None \
-                    and ctx.is_zero(ctx.alpha(body), "rate2") and ctx.is_zero(ctx.omega(body), "rate"):
+            parallel = abs(n1[0] * n2[1] - n1[1] * n2[0]) <= 1e-9
+            along = abs((b[0] - a[0]) * n1[1] - (b[1] - a[1]) * n1[0])     # PQ's part along the lines
+            offset = abs((b[0] - a[0]) * n1[0] + (b[1] - a[1]) * n1[1])    # and across them
+            still = ctx.is_zero(ctx.omega(body), "rate") and (self.level == "v" or ctx.is_zero(ctx.alpha(body), "rate2"))
+            if parallel and along > 1e-9 * ctx.inst.scale and self.apart(p, q) is not None and still:
                 self.rates.add(body)
                 self.gliding.add(body)
-                self.events.append(Glides(body, p, q))
+                self.events.append(Glides(body, p, q, offset <= 1e-9 * ctx.inst.scale))
 
     def _centres(self) -> None:
         """The instant centres placed before the velocities (`centres.centre_sites`): each a
@@ -1143,10 +1149,18 @@ class Writer:
                        remark=msg("how.centre_infinity", centre=centre))
 
     def glides(self, g: Glides) -> Derived:
-        """α = 0 of a body sliding along the line of two wheels' centres."""
+        """ω = 0 (α = 0 at accelerations) of a body whose two wheels' centres run on one line,
+        or on parallel lines."""
         ctx = self.ctx
+        if g.one_line:
+            remark = msg("how.glides", p=point_name(g.p), q=point_name(g.q), line=point_name(str(segment(g.p, g.q))))
+        else:
+            remark = msg("how.parallel_paths", p=point_name(g.p), q=point_name(g.q))
+        if self.level == "v":
+            return Derived(omega_sym(g.body), [], ctx.value(ctx.omega(g.body), "rate"), g.body, "omega", False,
+                           remark=remark)
         return Derived(alpha_sym(g.body), [], ctx.value(ctx.alpha(g.body), "rate2"), g.body, "alpha", False,
-                       remark=msg("how.glides", p=point_name(g.p), q=point_name(g.q), line=point_name(str(segment(g.p, g.q)))))
+                       remark=remark)
 
     def tangent(self, t: Tangent) -> Derived:
         """ω = 0 of a line tangent to two circles whose centres move alike across it."""

@@ -18,7 +18,7 @@ import math
 from typing import Any
 
 from .context import Ctx
-from .document import Arrow, Equation, Figure, msg
+from .document import Arrow, Described, Equation, Figure, msg
 from .terms import acceleration_terms
 
 OFFSET = 0.035          # of the polygon's size: the gap between collinear arrows
@@ -65,11 +65,17 @@ def lettering(ctx: Ctx, labels: list[str]) -> dict[str, Any]:
 
 def pole_notes(fig: Figure) -> list:
     """The caption's word on a label it would not explain: the image of a point O is o′,
-    since o is the pole (C5-E.1: O the track's centre, whose point of the wheels moves)."""
+    since o is the pole (C5-E.1: O the track's centre, whose point of the wheels moves);
+    a point whose lower-case letter is a parameter's symbol is primed the same way, said
+    once (C5-E.6's c′ beside the wheelbase c)."""
     images = [label for label, _, kind in fig.points if kind == "image"]
+    out = []
     if any(re.search(r"(^|, )o′", label) for label in images):
-        return [msg("fig.o_prime")]
-    return []
+        out.append(msg("fig.o_prime"))
+    primed = sorted({m for label in images for m in re.findall(r"(?:^|, )([a-np-z])′", label)})
+    out += [msg("fig.primed", image=f"{x}′", point=x.upper(), symbol=x,
+                what=Described("parameter", x, msg("fig.a_symbol"))) for x in primed]
+    return out
 
 
 def degenerate(fig: Figure) -> bool:
@@ -161,7 +167,7 @@ class _Builder:
             self._arrow(Arrow(origin, end, eq.target.sym, "result"), label=self.single)
 
     def _image(self, label: str, xy: tuple) -> None:
-        name = _letter(label)
+        name = _letter(label, page_letters(self.ctx))
         if name and name not in self.images:
             self.images[name] = xy
 
@@ -181,17 +187,25 @@ def _close(p: tuple, q: tuple, size: float) -> bool:
     return math.hypot(p[0] - q[0], p[1] - q[1]) <= 1e-7 * size
 
 
-def _letter(label: str) -> str:
+def page_letters(ctx: Ctx) -> frozenset[str]:
+    """The one-letter symbols a page writes besides the polygon's images: its parameters
+    (C5-E.6's wheelbase c, C5-2.2's length a)."""
+    return frozenset(str(n) for n in ctx.model.parameters if len(str(n)) == 1)
+
+
+def _letter(label: str, taken: frozenset[str] = frozenset()) -> str:
     """The image of a material point in the polygon: its name in lower case (A → a, O4 →
     o4), with the body when the label names one (B∈2, the guide's point under the block:
     b∈2, apart from the block's own b). The image of a motion relative to a body (B/2)
-    is not a point's: no letter."""
+    is not a point's: no letter. An image never reads as another symbol of the page: the
+    pole is o, so a point O's image is o′, and a letter the page writes as a parameter is
+    primed too (C5-E.6's crank axle C: c′, beside the wheelbase c)."""
     if "/" in label:
         return ""
     name, _, body = label.partition("∈")
     if not name or not name[0].isalpha():
         return ""
-    letter = name.lower() if name.lower() != "o" else "o′"       # the pole is o: a point O's image is o′
+    letter = name.lower() if name.lower() not in {"o", *taken} else name.lower() + "′"   # o is the pole
     if re.fullmatch(r"j\d+", letter):
         letter = name            # a contact J10's image: j10 would read as a joint's id
     return letter + (f"∈{body}" if body else "")

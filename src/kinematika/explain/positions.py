@@ -88,8 +88,11 @@ def _sentence(ctx: Ctx, name: str, c: Any) -> Msg:
             # an offset written negative is that length to the other side: −a/2 to its left
             # reads a/2 to its right
             key, y = "pos.frame_right", Value(ctx.clean(-across, "len"), "len")
+        # the side is said as one looks from the origin towards the line's other point, never
+        # "to its left" alone: C5-2.2's C4, left of O→P, is the right wheel of the chassis
+        # that travels the other way (P towards O)
         return msg(key, point=p, origin=_loc(ctx, c.origin), line=_pair(ctx, c.origin, c.toward),
-                   x=_quantity(ctx, c.at[0], "len"), y=y, at=at)
+                   toward=_loc(ctx, c.toward), x=_quantity(ctx, c.at[0], "len"), y=y, at=at)
     if isinstance(c, TwoCircles):
         (c1, c2), (r1, r2) = c.centers, c.radii
         which = _which(ctx, c.side, c.near, a=_loc(ctx, c1), b=_loc(ctx, c2))

@@ -50,11 +50,13 @@ def _words(name: str) -> list[str]:
 def _head(content: list[str], lang: str) -> str:
     """The word a name is about: the first in Catalan and Spanish (roda esquerra), the last
     in English (left wheel), the first not ending in -ko in Basque (ezkerreko gurpila,
-    polea finkoa)."""
+    polea finkoa), a Basque stem before the declined last word with its article (gurpil
+    zentrala -> gurpila)."""
     if lang == "en":
         return content[-1]
     if lang == "eu":
-        return next((w for w in content if not w.endswith("ko")), content[-1])
+        head = next((w for w in content if not w.endswith("ko")), content[-1])
+        return head if head is content[-1] or head.endswith("a") else head + "a"
     return content[0]
 
 

@@ -105,6 +105,8 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
     }.
 fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
+fig-primed = La imatge del punt { $point } és { $image }, ja que { $symbol } ja és un símbol de la pàgina ({ $what }).
+fig-a_symbol = una dada
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
         [md] , els termes l’un darrere l’altre
        *[other] : en negre els termes coneguts{ $unknown ->
@@ -148,11 +150,17 @@ pos-polar_ref = { $point } és a una distància { $distance } { ELISION($origin)
 pos-frame = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a una distància { $y } en perpendicular, a la seva esquerra: { $point } = { $at }.
+    } segons { $line } i a una distància { $y } en perpendicular, a l’esquerra mirant { ELISION($origin) ->
+        [vowel] d’{ $origin }
+       *[other] de { $origin }
+    } cap a { $toward }: { $point } = { $at }.
 pos-frame_right = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a una distància { $y } en perpendicular, a la seva dreta: { $point } = { $at }.
+    } segons { $line } i a una distància { $y } en perpendicular, a la dreta mirant { ELISION($origin) ->
+        [vowel] d’{ $origin }
+       *[other] de { $origin }
+    } cap a { $toward }: { $point } = { $at }.
 pos-frame_on = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
@@ -473,6 +481,10 @@ ask-intrinsic = acceleració tangencial i normal { ELISION($point) ->
     }
 ans-rest = sense moviment relatiu
 ans-point = posició
+ans-from = distància { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    }
 ans-direction = direcció
 ans-center = centre de curvatura
 ans-tangent = tangent unitària
@@ -708,6 +720,7 @@ sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
+how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda respecte del terra recte, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
 centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
 centre-site_s = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
@@ -820,14 +833,14 @@ ground-word = el terra
 centre-parallel-between = respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $arm } = { $dist } { ELISION($q) ->
+    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }:
 centre-parallel-outside = respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $arm } = { $dist } { ELISION($q) ->
+    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }:

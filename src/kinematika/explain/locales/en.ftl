@@ -96,6 +96,8 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         } are the velocities of { $points }, to one scale, with their magnitudes
     }.
 fig-o_prime = The image of the point O is o′, since o is the pole.
+fig-primed = The image of the point { $point } is { $image }, since { $symbol } is the { $what }.
+fig-a_symbol = symbol of a datum
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
         [md] , the terms head to tail
        *[other] : known terms in black{ $unknown ->
@@ -136,8 +138,8 @@ pos-turn_shift = { $body } { COUNT($body) ->
 pos-carried = { $point } is carried with { $body }: { $point } = { $at }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
-pos-frame = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, to its left: { $point } = { $at }.
-pos-frame_right = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, to its right: { $point } = { $at }.
+pos-frame = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, on the left as one looks from { $origin } towards { $toward }: { $point } = { $at }.
+pos-frame_right = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, on the right as one looks from { $origin } towards { $toward }: { $point } = { $at }.
 pos-frame_on = { $point } is at a distance { $x } from { $origin } along { $line }: { $point } = { $at }.
 pos-circles = { $point } is at distance { $r1 } from { $c1 } and { $r2 } from { $c2 }: the intersection of two circles, about { $c1 } and about { $c2 }. Of the two points where they meet, it is { $which }: { $point } = { $at }.
 pos-circle_line = { $point } is at distance { $r } from { $c } on the line { $line }: the intersection of a circle about { $c } and a line. Of the two points where they meet, it is { $which }: { $point } = { $at }.
@@ -323,6 +325,7 @@ ask-curvature = curvature of the path of { $point } relative to { $frame }
 ask-intrinsic = tangential and normal acceleration of { $point } relative to { $frame }
 ans-rest = no relative motion
 ans-point = position
+ans-from = distance from { $point }
 ans-direction = direction
 ans-center = centre of curvature
 ans-tangent = unit tangent
@@ -498,6 +501,7 @@ sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
+how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the straight ground, so they move on parallel straight lines at every instant: the body translates without turning)
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
 centre-site_i = The instant centre { $centre } ≡ { $point } of { $body } relative to { $frame }{ COUNT($frame) ->
         [many] , placed above, have
@@ -580,7 +584,7 @@ centre-line-normal = the common normal at the contact { $point } (the bodies sli
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = ground
 # a centre from two parallel velocities perpendicular to the line through their points (the notes' proportional construction)
-centre-parallel-between = relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have opposite senses, so the centre lies between them, where the speed falls to zero, at { $arm } = { $dist } from { $q }:
-centre-parallel-outside = relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $arm } = { $dist } from { $q }:
+centre-parallel-between = relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have opposite senses, so the centre lies between them, where the speed falls to zero, at { $dist } from { $q }:
+centre-parallel-outside = relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $q }:
 # a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
 term-magnitude = { $mag } = { $how }, towards { $point }: { $sym } = { $value }

@@ -93,6 +93,8 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         } son las velocidades de { $points }, a una misma escala, con sus módulos
     }.
 fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
+fig-primed = La imagen del punto { $point } es { $image }, ya que { $symbol } ya es un símbolo de la página ({ $what }).
+fig-a_symbol = un dato
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
         [md] , los términos uno tras otro
        *[other] : en negro los términos conocidos{ $unknown ->
@@ -124,8 +126,8 @@ pos-turn_shift = { $body } se ha desplazado { $shift } a lo largo de su guía.
 pos-carried = { $point } se mueve con { $body }: { $point } = { $at }.
 pos-polar = { $point } está a una distancia { $distance } de { $origin }, a { $angle } del eje x: { $point } = { $at }.
 pos-polar_ref = { $point } está a una distancia { $distance } de { $origin }, a { $angle } de la dirección { $ref }: { $point } = { $at }.
-pos-frame = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a su izquierda: { $point } = { $at }.
-pos-frame_right = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a su derecha: { $point } = { $at }.
+pos-frame = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a la izquierda mirando desde { $origin } hacia { $toward }: { $point } = { $at }.
+pos-frame_right = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a la derecha mirando desde { $origin } hacia { $toward }: { $point } = { $at }.
 pos-frame_on = { $point } está a una distancia { $x } de { $origin } según { $line }: { $point } = { $at }.
 pos-circles = { $point } está a una distancia { $r1 } de { $c1 } y { $r2 } de { $c2 }: la intersección de dos circunferencias, de centros { $c1 } y { $c2 }. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
 pos-circle_line = { $point } está a una distancia { $r } de { $c } sobre la recta { $line }: la intersección de una circunferencia de centro { $c } y una recta. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
@@ -302,6 +304,7 @@ ask-curvature = curvatura de la trayectoria de { $point } respecto de { $frame }
 ask-intrinsic = aceleración tangencial y normal de { $point } respecto de { $frame }
 ans-rest = sin movimiento relativo
 ans-point = posición
+ans-from = distancia a { $point }
 ans-direction = dirección
 ans-center = centro de curvatura
 ans-tangent = tangente unitaria
@@ -456,6 +459,7 @@ sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
+how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia del radio de su rueda respecto del suelo recto, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
 centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
 centre-site_s = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
@@ -523,7 +527,7 @@ centre-line-normal = la normal común en el contacto { $point } (los sólidos de
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = el suelo
 # un CIR a partir de dos velocidades paralelas y perpendiculares a la recta de sus puntos (la construcción proporcional de los apuntes)
-centre-parallel-between = respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $arm } = { $dist } de { $q }:
-centre-parallel-outside = respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $arm } = { $dist } de { $q }:
+centre-parallel-between = respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $dist } de { $q }:
+centre-parallel-outside = respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $dist } de { $q }:
 # a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
 term-magnitude = { $mag } = { $how }, hacia { $point }: { $sym } = { $value }

@@ -93,6 +93,8 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         } { $points } puntuen abiadurak dira, eskala berean, beren moduluekin
     }.
 fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
+fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
+fig-a_symbol = datu baten ikurra
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
         [md] , terminoak bata bestearen ondoren
        *[other] : beltzez termino ezagunak{ $unknown ->
@@ -124,8 +126,8 @@ pos-turn_shift = { $body } solidoa { $shift } mugitu da gidan zehar.
 pos-carried = { $point } puntua { $body } solidoarekin mugitzen da: { $point } = { $at }.
 pos-polar = { $point } puntua { $origin } puntutik { $distance } distantziara dago, x ardatzarekiko { $angle } angeluan: { $point } = { $at }.
 pos-polar_ref = { $point } puntua { $origin } puntutik { $distance } distantziara dago, { $ref } norabidearekiko { $angle } angeluan: { $point } = { $at }.
-pos-frame = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, ezkerretara: { $point } = { $at }.
-pos-frame_right = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, eskuinetara: { $point } = { $at }.
+pos-frame = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, { $origin } puntutik { $toward } puntura begiratuta ezkerretara: { $point } = { $at }.
+pos-frame_right = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, { $origin } puntutik { $toward } puntura begiratuta eskuinetara: { $point } = { $at }.
 pos-frame_on = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar: { $point } = { $at }.
 pos-circles = { $point } puntua { $c1 } puntutik { $r1 } distantziara eta { $c2 } puntutik { $r2 } distantziara dago: bi zirkunferentziaren ebakidura, { $c1 } eta { $c2 } zentrodunak. Ebakitzen diren bi puntuetatik, { $which } da: { $point } = { $at }.
 pos-circle_line = { $point } puntua { $c } puntutik { $r } distantziara dago, { $line } zuzenean: { $c } zentroko zirkunferentzia baten eta zuzen baten ebakidura. Ebakitzen diren bi puntuetatik, { $which } da: { $point } = { $at }.
@@ -260,6 +262,7 @@ ask-curvature = { $point } puntuaren ibilbidearen kurbadura { $frame } solidoare
 ask-intrinsic = { $point } puntuaren azelerazio tangentziala eta normala { $frame } solidoarekiko
 ans-rest = ez dago mugimendu erlatiborik
 ans-point = posizioa
+ans-from = { $point } puntura dagoen distantzia
 ans-direction = norabidea
 ans-center = kurbadura-zentroa
 ans-tangent = ukitzaile unitarioa
@@ -408,6 +411,7 @@ sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiadura bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
+how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur zuzenetik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
 centre-site_i = { $body } solidoaren { $centre } ≡ { $point } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
 centre-site_s = { $body } solidoaren { $centre } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
@@ -478,7 +482,7 @@ centre-line-normal = { $point } kontaktuko normal komuna (solidoak elkarren gain
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = lurra
 # zentro bat, bi puntuen zuzenarekiko perpendikularrak diren bi abiadura paralelotatik (apunteen eraikuntza proportzionala)
-centre-parallel-between = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $arm } = { $dist } distantziara:
-centre-parallel-outside = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $arm } = { $dist } distantziara:
+centre-parallel-between = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
+centre-parallel-outside = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
 # a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
 term-magnitude = { $mag } = { $how }, { $point } punturantz: { $sym } = { $value }

@@ -295,13 +295,15 @@ class Renderer(ABC):
         each parameter's name in them whose symbol is written otherwise (r1, written r₁ by
         the formulas) written as the formulas write it: C5-E.5's point P "at r1 below its
         centre" sat over (L; r₂ − r₁), and its notes wrote (r2 − r1)²/r1 beside the page's
-        (r₂ − r₁)²/r₁. A name that reads the same either way (v, L, R_roda) is left as typed."""
+        (r₂ − r₁)²/r₁; a typed symbol the notation writes per language (C5-E.6's R_roda, the
+        English page's R_wheel) is written as this page writes it. A name that reads the same
+        either way (v, L) is left as typed."""
         import sympy
 
         from .names import unicode_name
 
         names = [n for n in getattr(self.doc, "parameters", ()) if unicode_name(self.spelt(n)) != n
-                 and any(c.isdigit() for c in n)]
+                 and any(c.isdigit() or c == "_" for c in n)]
         if not names:
             return self.typed(shown_lines(text))
         pattern = re.compile(r"(?<![A-Za-z0-9_.])(" + "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
@@ -409,7 +411,7 @@ class Renderer(ABC):
         if n.kind == "point" and "∈" in n.text:          # O∈wheels as the symbols write it: O∈3
             return self.numbered(Sym("", n.text))
         if n.kind == "index":                            # a body's number in the structure's table
-            return self.numbers().get(n.text, n.text)
+            return self.column().get(n.text, n.text)
         if n.kind == "label":                            # a body as its symbols write it (ω_roda)
             return self.label(n.text)
         return n.text
@@ -466,7 +468,7 @@ class Renderer(ABC):
         return self.symbol(self.noted(s))
 
     def subscripts(self, m: Msg) -> str:
-        """Which body each shortened subscript is, said once (ω_gurpil: *gurpil zentral
+        """Which body each shortened subscript is, said once (ω_gurpila: *gurpil zentral
         finkoa*; ω_t: *txasisa*): a symbol whose subscript is not the body's whole name in
         this language (`model.subscripts` took a word of it, or the model's notation gives a
         letter) is defined on the page that uses it; nothing when every subscript is the name
@@ -525,6 +527,18 @@ class Renderer(ABC):
         if not hasattr(self, "_numbers"):
             self._numbers = {b: self.wording.index(b, self.lang) or str(k) for b, k in self.doc.numbers.items()}
         return self._numbers
+
+    def column(self) -> dict[str, str]:
+        """Each body as the structure's table numbers it, one style down the column: the
+        letters the model's notation gives when it letters every body (as slides that letter
+        all their elements), else every body's number, the frame 1. The slides letter the
+        guide M and the block N of seed 001's P pair but neither its frame nor the rocker,
+        so a column of "1, M, N, 4" mixed two styles; the letters stay in the names (*guide
+        M*) and in the symbols (ω_M)."""
+        given = {b: self.wording.index(b, self.lang) for b in self.doc.numbers}
+        if all(given.values()):
+            return {b: str(i) for b, i in given.items()}
+        return {b: str(k) for b, k in self.doc.numbers.items()}
 
     def relative(self, body: str, other: str) -> str:
         """The subscript of a quantity of `body` relative to `other` (both labels): the
@@ -777,7 +791,7 @@ class Renderer(ABC):
             (p, vp), (q, vq) = c.witnesses
             why = Msg(f"centre.parallel.{c.side}", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
                                                    "vq": Value(vq, "speed"), "frame": self.frame_name(a),
-                                                   "arm": Inline([Name(q), name]), "dist": Value(c.distance, "len")})
+                                                   "dist": Value(c.distance, "len")})
         elif c.how == "field":
             why = Msg("centre.field", self.field_args(c, name))
         elif c.how == "rate":

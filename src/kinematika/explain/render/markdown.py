@@ -93,12 +93,17 @@ class MarkdownRenderer(Renderer):
         return body.rstrip() + ("\n" + definitions if images else "") + "\n"
 
     def image(self, caption: str, drawing: str) -> str:
-        """An image by reference (`![caption][fig-N]`), its SVG kept for the page's end
-        (`page`), and its caption in italics below."""
+        """An image by reference (`![title][fig-N]`), its SVG kept for the page's end
+        (`page`), and its caption in italics below. The caption is read once: the image's
+        alternative text is only the figure's title (the caption's first clause, "Velocity
+        polygon"), and the caption below is one emphasis, the italics of the names and
+        symbols inside it dropped (`*… *R* = 0.1 …*` nests, and a Markdown reader closes the
+        caption's italics at the first inner star)."""
         self.images = getattr(self, "images", [])
         label = f"fig-{len(self.images) + 1}"
         self.images.append((label, drawing))
-        return f"![{caption}][{label}]\n\n*{caption}*\n"
+        plain = UNESCAPED_STAR.sub("", caption)
+        return f"![{figure_title(plain)}][{label}]\n\n*{plain}*\n"
 
     def heading(self, level: int, text: str) -> str:
         """A # heading of the level, between blank lines."""
@@ -159,6 +164,18 @@ class MarkdownRenderer(Renderer):
     def drawing(self, d: Drawing) -> str:
         """A `draw` figure as an SVG image by reference, with its caption in italics below."""
         return self.image(self.drawing_caption(d), d.svg(self.cat.lang))
+
+
+UNESCAPED_STAR = re.compile(r"(?<!\\)\*")
+TITLE_END = re.compile(r"[,:;(]|\.(?!\d)")
+
+
+def figure_title(caption: str) -> str:
+    """A figure's title: its caption up to the first comma, colon, semicolon, bracket or full stop
+    ("Velocity polygon, to scale: …" → "Velocity polygon"), square brackets left out (they
+    would end the image's text)."""
+    m = TITLE_END.search(caption)
+    return (caption[:m.start()] if m else caption).replace("[", "").replace("]", "").strip()
 
 
 def figure_files(page: str, path: PurePath) -> tuple[str, dict[str, str]]:
