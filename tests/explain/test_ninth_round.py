@@ -3,7 +3,7 @@
 
 - Catalan "relative to" in a subscript is rel. (relatiu a), never resp. (read as
   "respectivament") nor a slash (read as a division); es/en rel, eu erl as their notes.
-- The symbols' legend ("En els símbols, ω_X: …") defines only the bodies whose own symbol
+- The symbols' legend ("Notació: ω_X és la velocitat angular …", once "En els símbols, ω_X: …") defines only the bodies whose own symbol
   the page writes; a relative centre no question asks and no construction names is not listed.
 - A normal acceleration's magnitude is never set equal to a vector.
 - Step titles go on in lower case after the colon (one style a page).
@@ -50,13 +50,13 @@ def test_catalan_centres_intro_says_rel():
 
 @pytest.mark.parametrize("name", SEEDS)
 def test_symbols_legend_only_for_symbols_written(name):
-    """Each "En els símbols, ω_X: …" entry names a symbol the page writes elsewhere
-    (C5-1.8's ω_terra was defined and never written)."""
+    """Each "Notació: ω_X és la velocitat angular …" entry names a symbol the page writes
+    elsewhere (C5-1.8's ω_terra was defined and never written)."""
     text = rendered(name, "ca", "md", drawings=False)
     for line in text.splitlines():
-        if line.startswith("En els símbols"):
+        if line.startswith("Notació: "):
             rest = text.replace(line, "")
-            for sym in re.findall(r"(ω_(?:\{[^}]*\}|\S+?)):", line):
+            for sym in re.findall(r"(ω_(?:\{[^}]*\}|\S+?)) és la velocitat angular", line):
                 assert sym in rest, (name, sym)
 
 

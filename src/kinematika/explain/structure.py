@@ -70,10 +70,13 @@ def order_item(n: int, step: Step) -> Msg:
     """One line of the order of solution: the bodies a step finds and the bodies they are
     found from, after the course's name for the group when it has one (RRR dyad …). Its
     joints are left to the step itself, and a group that is no named kind is said by its
-    bodies alone ("1. rear wheel and sprocket, from ground"), as a teacher writes it."""
+    bodies alone ("1. rear wheel and sprocket, from ground"), as a teacher writes it. A step
+    found from no other body (C5-E.4's chassis, which translates at the given velocity) is
+    found "from the data", never from an empty list ("1. The chassis, from —.")."""
     group = step.kind == "other"
     bodies = names(step.bodies, "body")
-    return msg("order.item_group" if group else "order.item", n=n,
+    key = ("order.item_group" if group else "order.item") + ("" if step.known else "_data")
+    return msg(key, n=n,
                kind=Lead(msg(f"kind.{step.kind}")), bodies=Lead(bodies) if group else bodies,
                known=names(step.known, "body", each="order.from"))
 

@@ -43,7 +43,11 @@ col-omega = velocitat angular
 col-alpha = acceleració angular
 col-question = pregunta
 col-answer = resposta
-structure-subscripts = En els símbols, { $pairs }.
+structure-subscripts = Notació: { $pairs }.
+structure-subscript_pair = { $sym } és la velocitat angular { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }
 structure-frame = { $body } (fix)
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
@@ -199,6 +203,8 @@ order-assur = El mecanisme es descompon en les seves entrades (manovelles i corr
 order-blocks = Els sòlids es troben en aquest ordre, cadascun a partir de sòlids ja coneguts:
 order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
 order-item_group = { $n }. { $bodies }, a partir { $known }.
+order-item_data = { $n }. { $kind }: { $bodies }, a partir de les dades.
+order-item_group_data = { $n }. { $bodies }, a partir de les dades.
 order-from = { ELISION($name) ->
         [vowel] d’{ $name }
        *[other] de { $name }

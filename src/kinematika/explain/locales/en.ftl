@@ -31,7 +31,8 @@ col-omega = angular velocity
 col-alpha = angular acceleration
 col-question = question
 col-answer = answer
-structure-subscripts = In the symbols, { $pairs }.
+structure-subscripts = Notation: { $pairs }.
+structure-subscript_pair = { $sym } is the angular velocity of { $body }
 structure-frame = { $body } (fixed)
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
@@ -160,6 +161,8 @@ order-assur = The mechanism is decomposed into its inputs (driven cranks and sli
 order-blocks = The bodies are found in this order, each from bodies already known:
 order-item = { $n }. { $kind }: { $bodies }, from { $known }.
 order-item_group = { $n }. { $bodies }, from { $known }.
+order-item_data = { $n }. { $kind }: { $bodies }, from the data.
+order-item_group_data = { $n }. { $bodies }, from the data.
 order-from = { $name }
 kind-input = input (driven body)
 kind-RRR = RRR dyad
@@ -352,7 +355,7 @@ vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity 
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
 vehicle-line-velocity = the perpendicular to { $sym } at { $point }
 vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg } = { $vq } · { $seg }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel’s plane: { $vp } = { $value }, of magnitude { $speed }.
-vehicle-centre = The centre of { $body } { COUNT($body) ->
+vehicle-centre = The instant centre of { $body } { COUNT($body) ->
         [many] lie
        *[one] lies
     } on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } { COUNT($body) ->

@@ -31,7 +31,8 @@ col-omega = abiadura angeluarra
 col-alpha = azelerazio angeluarra
 col-question = galdera
 col-answer = erantzuna
-structure-subscripts = Ikurretan, { $pairs }.
+structure-subscripts = Notazioa: { $pairs }.
+structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
 structure-frame = { $body } (finkoa)
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
@@ -154,6 +155,8 @@ order-item_group = { $n }. { $bodies }, { $known } { $known_n ->
         [one] solidotik
        *[other] solidoetatik
     }.
+order-item_data = { $n }. { $kind }: { $bodies }, datuetatik.
+order-item_group_data = { $n }. { $bodies }, datuetatik.
 order-from = { $name }
 kind-input = sarrera (solido eragilea)
 kind-RRR = RRR loturak dituzten bi elementu

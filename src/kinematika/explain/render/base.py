@@ -468,8 +468,9 @@ class Renderer(ABC):
         return self.symbol(self.noted(s))
 
     def subscripts(self, m: Msg) -> str:
-        """Which body each shortened subscript is, said once (ω_gurpila: *gurpil zentral
-        finkoa*; ω_t: *txasisa*): a symbol whose subscript is not the body's whole name in
+        """Which body each shortened subscript is, said once as a sentence a teacher writes
+        ("Notation: ω_wheel is the angular velocity of the *sun wheel*", not the audits'
+        terse "In the symbols, ω_wheel: *sun wheel*"): a symbol whose subscript is not the body's whole name in
         this language (`model.subscripts` took a word of it, or the model's notation gives a
         letter) is defined on the page that uses it; nothing when every subscript is the name
         as written or the code the name holds (ω_N of *N blokea*, as the slides), or the
@@ -490,7 +491,8 @@ class Renderer(ABC):
             if not label or label.isdigit() or not words or label == " ".join(words) \
                     or (label in words and CODE.match(label)):
                 continue          # the name as written, or its own code (ω_N of *N blokea*)
-            items += (["; "] if items else []) + [Sym("ω", b, vector=False), ": ", Name(b, "body")]
+            said = Msg("structure.subscript_pair", {"sym": Sym("ω", b, vector=False), "body": Name(b, "body")})
+            items += (["; "] if items else []) + [said]
         if not items:
             return ""
         return self.para(self.sentence(self.message(Msg(m.key, {"pairs": Inline(items)}), lead=True)))

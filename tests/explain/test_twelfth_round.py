@@ -1,0 +1,74 @@
+"""Issue 30, twelfth round: what the final audits of this stop (Catalan and Basque; English
+and Spanish) still edited, each a rule checked on the pages written before it:
+
+- a step found from no other body is found "from the data", never "from —" (C5-E.4, E.5,
+  E.6: the chassis, which translates at the given velocity, came first in the order with an
+  empty list of known bodies);
+- the legend of shortened subscripts is a sentence ("Notation: ω_wheel is the angular velocity
+  of the *fixed central wheel*"), not the terse "In the symbols, ω_wheel: …" every audit
+  asked to rewrite;
+- Spanish names a joint as a pair ("par de rotación (R), entre …"), English a vehicle's
+  centre as the instant centre.
+"""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from .helpers import LANGS, SEEDS, rendered
+
+ORDER = {"en": "## Order of solution", "es": "## Orden de resolución", "ca": "## Ordre de resolució",
+         "eu": "## Ebazpen-ordena"}
+DATA = {"en": "from the data.", "es": "a partir de los datos.", "ca": "a partir de les dades.", "eu": "datuetatik."}
+LEGEND = {"en": "Notation: ", "es": "Notación: ", "ca": "Notació: ", "eu": "Notazioa: "}
+OLD_LEGEND = ("In the symbols", "En los símbolos", "En els símbols", "Ikurretan")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_no_step_is_found_from_an_empty_list(name, lang):
+    """No line of the order of solution ends "from —." (or its translation)."""
+    text = rendered(name, lang, "md", drawings=False)
+    assert not re.search(r"—\s*(?:solidoetatik|solidotik)?\.$", text, re.M), name
+    assert "a partir —" not in text and "from —" not in text
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", ["seed_c5_e4_upper_wheel", "seed_c5_e5_unequal_wheels", "seed_c5_e6_bicycle"])
+def test_the_translating_chassis_is_found_from_the_data(name, lang):
+    """By hand from the notes: the chassis (frame) translates at the given velocity v, so it is
+    the first body found, and from the data alone."""
+    text = rendered(name, lang, "md", drawings=False)
+    first = re.search(r"^1\. (.*)$", text.split(ORDER[lang], 1)[1] if ORDER[lang] in text else text, re.M)
+    assert first and first.group(1).endswith(DATA[lang]), (name, first and first.group(1))
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_the_subscripts_legend_is_a_sentence(name, lang):
+    """The legend, where a page has one, says what each short symbol is in a sentence."""
+    text = rendered(name, lang, "md", drawings=False)
+    assert not any(line.startswith(OLD_LEGEND) for line in text.splitlines())
+    for line in text.splitlines():
+        if line.startswith(LEGEND[lang]):
+            assert line.endswith(".") and "ω_" in line and ": ω_" in line
+            assert not re.search(r"ω_\S+:", line), line
+
+
+def test_the_sun_wheels_legend_by_hand():
+    """C5-E.2: the fixed central wheel's symbol is ω_wheel / ω_roda."""
+    assert "Notation: ω_wheel is the angular velocity of the *fixed central wheel*." in rendered(
+        "seed_c5_e2_gear_change", "en", "md", drawings=False)
+    assert "Notació: ω_roda és la velocitat angular de la *roda central fixa*." in rendered(
+        "seed_c5_e2_gear_change", "ca", "md", drawings=False)
+
+
+def test_spanish_joints_are_pairs_and_english_vehicle_centres_instant():
+    """001's crank O1A is pinned to the frame at O1: "par de rotación (R)" as the slides say."""
+    es = rendered("seed_001_r_pairs", "es", "md", drawings=False)
+    assert "| O1 | par de rotación (R), entre el *bastidor* y la *manivela O1A* |" in es
+    for name in ("seed_c5_2_1_tricycle", "seed_c5_2_2_articulated"):
+        en = rendered(name, "en", "md", drawings=False)
+        assert "The centre of the" not in en
+        assert "The instant centre of the" in en, name
