@@ -72,3 +72,29 @@ def test_spanish_joints_are_pairs_and_english_vehicle_centres_instant():
         en = rendered(name, "en", "md", drawings=False)
         assert "The centre of the" not in en
         assert "The instant centre of the" in en, name
+
+
+def test_a_held_pin_said_as_the_bodies_motion():
+    """C5-2.1: the steering held at this instant is said of the fork and the chassis, not as a
+    pin that "does not turn"."""
+    en = rendered("seed_c5_2_1_tricycle", "en", "md", drawings=False)
+    assert "At this instant the *front fork* does not turn relative to the *chassis* about the pin F: δ̇ = 0." in en
+    assert "The pin F does not turn" not in en
+
+
+@pytest.mark.parametrize("lang,said", [("en", "The image of the point C is c′ (c is the wheelbase)."),
+                                       ("ca", "La imatge del punt C és c′ (c: batalla)."),
+                                       ("es", "La imagen del punto C es c′ (c: batalla).")])
+def test_a_primed_image_says_what_the_letter_is_not_the_page(lang, said):
+    """C5-E.6: c′ beside the wheelbase c, said by what c is, never "a symbol of the page"."""
+    text = rendered("seed_c5_e6_bicycle", lang, "md", drawings=False)
+    assert said in text
+    assert "símbol de la pàgina" not in text and "símbolo de la página" not in text
+
+
+@pytest.mark.parametrize("lang,slip", [("en", "The notes print φ̇ = v₀/√(2L) · (L − s)/r"),
+                                       ("ca", "Els apunts imprimeixen φ̇ = v₀/√(2L) · (L − s)/r")])
+def test_the_tricycles_note_quotes_the_notes_as_printed(lang, slip):
+    """The notes (002, C5-2.1) print φ̇ = v₀/√(2L)·(L − s)/r, where the root covers 2L: a
+    slip (√L is no unit of a length); the page quotes the print and says which is meant."""
+    assert slip in rendered("seed_c5_2_1_tricycle", lang, "md", drawings=False)

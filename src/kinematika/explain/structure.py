@@ -75,7 +75,9 @@ def order_item(n: int, step: Step) -> Msg:
     found "from the data", never from an empty list ("1. The chassis, from —.")."""
     group = step.kind == "other"
     bodies = names(step.bodies, "body")
-    key = ("order.item_group" if group else "order.item") + ("" if step.known else "_data")
+    keys = {(True, True): "order.item_group", (True, False): "order.item_group_data",
+            (False, True): "order.item", (False, False): "order.item_data"}
+    key = keys[(group, bool(step.known))]
     return msg(key, n=n,
                kind=Lead(msg(f"kind.{step.kind}")), bodies=Lead(bodies) if group else bodies,
                known=names(step.known, "body", each="order.from"))

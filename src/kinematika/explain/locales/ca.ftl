@@ -109,7 +109,7 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
     }.
 fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
-fig-primed = La imatge del punt { $point } és { $image }, ja que { $symbol } ja és un símbol de la pàgina ({ $what }).
+fig-primed = La imatge del punt { $point } és { $image } ({ $symbol }: { $what }).
 fig-a_symbol = una dada
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
         [md] , els termes l’un darrere l’altre
@@ -242,13 +242,13 @@ driver-omega_sense = Dada: { $sym } = { $value }, { $faster ->
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
 driver-whole = Dada: { $sym } = { $value }, { $heading }.
-driver-held = L’articulació { $point } no gira en aquest instant: { $b } no { COUNT($b) ->
+driver-held = En aquest instant { $b } no { COUNT($b) ->
         [many] giren
        *[one] gira
     } respecte { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
-    }, { $sym } = 0.
+    } a l’articulació { $point }: { $sym } = 0.
 driver-held_accel = L’articulació { $point } no té acceleració angular relativa en aquest instant: { $sym } = 0.
 heading-right = cap a la dreta
 heading-left = cap a l’esquerra

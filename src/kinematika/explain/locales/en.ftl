@@ -97,7 +97,7 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         } are the velocities of { $points }, to one scale, with their magnitudes
     }.
 fig-o_prime = The image of the point O is o′, since o is the pole.
-fig-primed = The image of the point { $point } is { $image }, since { $symbol } is the { $what }.
+fig-primed = The image of the point { $point } is { $image } ({ $symbol } is the { $what }).
 fig-a_symbol = symbol of a datum
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
         [md] , the terms head to tail
@@ -197,10 +197,10 @@ driver-omega_sense = Given: { $sym } = { $value }, { $faster ->
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
 driver-whole = Given: { $sym } = { $value }, { $heading }.
-driver-held = The pin { $point } does not turn at this instant: { $b } { COUNT($b) ->
+driver-held = At this instant { $b } { COUNT($b) ->
         [many] do
        *[one] does
-    } not turn relative to { $a }, { $sym } = 0.
+    } not turn relative to { $a } about the pin { $point }: { $sym } = 0.
 driver-held_accel = The pin { $point } has no relative angular acceleration at this instant: { $sym } = 0.
 heading-right = to the right
 heading-left = to the left

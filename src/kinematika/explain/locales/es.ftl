@@ -94,7 +94,7 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         } son las velocidades de { $points }, a una misma escala, con sus módulos
     }.
 fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
-fig-primed = La imagen del punto { $point } es { $image }, ya que { $symbol } ya es un símbolo de la página ({ $what }).
+fig-primed = La imagen del punto { $point } es { $image } ({ $symbol }: { $what }).
 fig-a_symbol = un dato
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
         [md] , los términos uno tras otro
@@ -185,10 +185,10 @@ driver-omega_sense = Dato: { $sym } = { $value }, { $faster ->
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
 driver-whole = Dato: { $sym } = { $value }, { $heading }.
-driver-held = La articulación { $point } no gira en este instante: { $b } no { COUNT($b) ->
+driver-held = En este instante { $b } no { COUNT($b) ->
         [many] giran
        *[one] gira
-    } respecto de { $a }, { $sym } = 0.
+    } respecto de { $a } en la articulación { $point }: { $sym } = 0.
 driver-held_accel = La articulación { $point } no tiene aceleración angular relativa en este instante: { $sym } = 0.
 heading-right = hacia la derecha
 heading-left = hacia la izquierda

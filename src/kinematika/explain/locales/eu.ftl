@@ -185,7 +185,7 @@ driver-omega_sense = Datua: { $sym } = { $value }, { $faster ->
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
 driver-whole = Datua: { $sym } = { $value }, { $heading }.
-driver-held = { $point } giltzadurak ez du biraketa erlatiborik une honetan: { $b } solidoa ez da biratzen { $a } solidoarekiko, { $sym } = 0.
+driver-held = Une honetan { $b } solidoa ez da biratzen { $a } solidoarekiko { $point } giltzaduran: { $sym } = 0.
 driver-held_accel = { $point } giltzadurak ez du azelerazio angeluar erlatiborik une honetan: { $sym } = 0.
 heading-right = eskuinerantz
 heading-left = ezkerrerantz
