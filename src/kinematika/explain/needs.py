@@ -217,7 +217,7 @@ def _drop_rows(doc: Document, bodies: set[str], alphas: set[str]) -> None:
                     if len(r) > 2 and getattr(r[0], "text", None) in alphas:
                         r[2] = "—"
         if s.title.key == "sec.structure":
-            for m in (b for b in _blocks(s) if isinstance(b, Msg) and b.key in ("order.item", "order.item_group")):
+            for m in (b for b in _blocks(s) if isinstance(b, Msg) and b.key in ORDER_ITEMS):
                 _unname(m, bodies)
             _drop_order_items(s, bodies)
 
@@ -233,15 +233,17 @@ def _drop_order_items(sec: Section, bodies: set[str]) -> None:
 
     for sub in (b for b in sec.blocks if isinstance(b, Section)):
         sub.blocks = [b for b in sub.blocks
-                      if not (isinstance(b, Msg) and b.key in ("order.item", "order.item_group") and unworked(b))]
+                      if not (isinstance(b, Msg) and b.key in ORDER_ITEMS and unworked(b))]
         n = 0
-        for m in (b for b in sub.blocks if isinstance(b, Msg) and b.key in ("order.item", "order.item_group")):
+        for m in (b for b in sub.blocks if isinstance(b, Msg) and b.key in ORDER_ITEMS):
             if isinstance(m.args.get("n"), int):
                 n += 1
                 m.args["n"] = n
 
 
 STEP_TITLES = ("step.title", "step.title_group")
+# the order of solution's items: found from bodies, or (the first, a translating chassis) from the data
+ORDER_ITEMS = ("order.item", "order.item_group", "order.item_data", "order.item_group_data")
 
 
 def _untitle(sec: Section, bodies: set[str]) -> None:
