@@ -325,12 +325,13 @@ class _Builder:
         if at is not None:
             if at not in self.point_coords:
                 self.known_point(at, f"{where}.at")
-            carriers = [name for name in (a, b) if at in self.body_points[name]]
-            must = kind.point_on.bodies(a, b)
-            missing = [name for name in must if name not in carriers]
-            if missing:
-                raise KinematikaError("geometry", "joint-point-not-on-body", where, kind=kind.name, point=at,
-                                      body=missing[0])
+            if at not in self.body_points[a] or at not in self.body_points[b]:     # (else on any it must be)
+                carriers = [name for name in (a, b) if at in self.body_points[name]]
+                must = kind.point_on.bodies(a, b)
+                missing = [name for name in must if name not in carriers]
+                if missing:
+                    raise KinematikaError("geometry", "joint-point-not-on-body", where, kind=kind.name, point=at,
+                                          body=missing[0])
         along = self.direction(raw.along, f"{where}.along") if raw.along is not None else None
         axis = self.direction(raw.axis, f"{where}.axis") if raw.axis is not None else None
         return Joint(jid, kind.name, a, b, i, at=at, along=along, axis=axis, internal=raw.internal)
