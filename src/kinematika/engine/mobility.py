@@ -176,7 +176,7 @@ def _dependent_drivers(scaled: np.ndarray, is_driver: np.ndarray, labels: Sequen
             gap = np.linalg.norm(joints.T @ coef - row)
         else:
             gap = np.linalg.norm(row)
-        text = Said("row-driver", where=wheres[i], label=labels[int(i)])
+        text = Said("row-driver", where=wheres[int(i)], label=labels[int(i)])
         if gap < 1e-8 * max(float(np.linalg.norm(row)), 1e-300) and text not in out:
             out.append(text)
     return out

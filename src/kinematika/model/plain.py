@@ -184,7 +184,7 @@ def record(name: str, fields: dict[str, tuple[Check, Any]],
         for key, field, factory in made:
             if key not in x:
                 out[field] = factory()
-        section = new(cls)          # (what `Record(**out)` makes, without copying `out`)
+        section: Record = new(cls)      # (what `Record(**out)` makes, without copying `out`)
         section.__dict__ = out
         return section
     return cls, check
