@@ -13,6 +13,7 @@ import pytest
 
 from kinematika import KinematikaError, solve
 from kinematika.engine import linsolve
+from kinematika.model.model import Joint
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
 from chain import four_bar_chain
@@ -111,7 +112,7 @@ def test_a_mixed_chain_gives_the_dense_paths_answers_and_messages(monkeypatch):
     monkeypatch.setattr("kinematika.engine.system.LARGE", 10 ** 6)
     dense = solve(tree)
     assert [str(x) for x in dense.solver.labels] == [str(x) for x in solver.labels]
-    assert dense.solver.wheres == solver.wheres and dense.solver.pairs == solver.pairs
+    assert dense.solver.wheres == list(solver.wheres) and dense.solver.pairs == list(solver.pairs)
     for body in sparse.model.moving_bodies:
         assert sparse.omega(body) == pytest.approx(dense.omega(body), abs=1e-10)
         assert sparse.alpha(body) == pytest.approx(dense.alpha(body), abs=1e-8)
@@ -188,11 +189,18 @@ def test_the_rows_labels_are_made_only_when_an_error_reads_them(monkeypatch):
     said = []
     shared = revolute._shared
     monkeypatch.setattr(revolute, "_shared", lambda j, i: said.append((j.id, i)) or shared(j, i))
+    placed = []         # each row's place in the file and pair of bodies: made when read too
+    monkeypatch.setattr(Joint, "where", property(lambda j: placed.append(j.id) or f"joints[{j.index}] ({j.id})"))
     sol = solve(_mixed_chain())
     assert type(sol.solver.analysis).__name__ == "SparseAnalysis"
     assert said == []
+    # (the slider's rows, built joint by joint as `Row`s, say their place as they are made)
+    pins = {j.id for j in sol.model.joints if j.type == "revolute"}
+    assert not pins & set(placed)
     labels = [str(x) for x in sol.solver.labels]
     assert len(said) == 2 * sum(1 for j in sol.model.joints if j.type == "revolute")
+    assert sol.solver.wheres[80] == "joints[40] (j41)" and sol.solver.pairs[80] == frozenset(("ground", "slider"))
+    assert pins <= set(placed)
     monkeypatch.setattr("kinematika.engine.system.LARGE", 10 ** 6)
     assert [str(x) for x in solve(_mixed_chain()).solver.labels] == labels
 

@@ -71,7 +71,11 @@ class Instant:
     def vector(self, exprs: tuple, where: str) -> tuple:
         """Each component of `exprs` evaluated (`value`), its place named ``where[i]`` in an
         error."""
-        return tuple(self.value(e, f"{where}[{i}]") for i, e in enumerate(exprs))
+        env, backend = self.env, self.backend
+        try:
+            return tuple([evaluate(e, env, backend) for e in exprs])
+        except ExpressionError:     # again, component by component: the first error, placed
+            return tuple(self.value(e, f"{where}[{i}]") for i, e in enumerate(exprs))
 
     def unit(self, vec: tuple, where: str) -> tuple:
         """`vec` normalised, whatever its size ([1e-12, 0] is the x axis); a zero vector is a

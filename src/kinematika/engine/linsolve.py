@@ -34,7 +34,7 @@ class Analysis:
 
 
 def analyse(a: np.ndarray, is_driver: np.ndarray, translation_columns: np.ndarray, length: float,
-            labels: Sequence[Any], wheres: list[str], body_of: list[str],
+            labels: Sequence[Any], wheres: Sequence[str], body_of: list[str],
             want_blocks: bool = False, restating: Any = None) -> Analysis:
     """Check that A fixes every unknown and prepare the solves; raise `mobility`/`singular`.
     `restating()`, when given, marks the driver rows that only restate a joint."""
@@ -57,7 +57,7 @@ def analyse(a: np.ndarray, is_driver: np.ndarray, translation_columns: np.ndarra
 CONSISTENT = 1e-6   # relative residual of redundant conditions that still agree (geometry given to ~1e-6)
 
 
-def solve_numeric(an: Analysis | SparseAnalysis, b: np.ndarray, labels: Sequence[Any], wheres: list[str],
+def solve_numeric(an: Analysis | SparseAnalysis, b: np.ndarray, labels: Sequence[Any], wheres: Sequence[str],
                   is_driver: np.ndarray, check: bool = True, natural: float = 0.0) -> np.ndarray:
     """Least squares with the analysis' SVD (or sparse LU); a residual means conflicting
     conditions. It is measured against the size of the right side and of the solution, and
@@ -117,7 +117,7 @@ def sparse_matrix(rows: list[Any], n: int) -> SparseRows:
 
 
 def analyse_sparse(a: SparseRows, is_driver: np.ndarray, translation_columns: np.ndarray, length: float,
-                   labels: Sequence[Any], wheres: list[str], body_of: list[str],
+                   labels: Sequence[Any], wheres: Sequence[str], body_of: list[str],
                    restating: Any = None) -> Analysis | SparseAnalysis:
     """`analyse` for a large sparse system: scaling, a block LU (`blocks`, or scipy's sparse
     LU when the blocks are large) and a 1-norm condition estimate.

@@ -109,7 +109,7 @@ def diagnose(scaled: np.ndarray, is_driver: np.ndarray, s: np.ndarray | None = N
 
 
 def underdetermined_error(scaled: np.ndarray, is_driver: np.ndarray, labels: Sequence[Any],
-                          wheres: list[str], body_of: list[str], diag: Diagnosis,
+                          wheres: Sequence[str], body_of: list[str], diag: Diagnosis,
                           restating: np.ndarray | None = None) -> KinematikaError:
     """`singular` at a dead point (drivers enough in number), `mobility` otherwise. Driver
     rows that only restate a joint (`restating`) do not count as drivers here."""
@@ -127,7 +127,7 @@ def underdetermined_error(scaled: np.ndarray, is_driver: np.ndarray, labels: Seq
         free=Names(free, 6))
 
 
-def conflict_error(residual: np.ndarray, labels: Sequence[Any], wheres: list[str],
+def conflict_error(residual: np.ndarray, labels: Sequence[Any], wheres: Sequence[str],
                    is_driver: np.ndarray, diag: Diagnosis) -> KinematikaError:
     """Some conditions cannot hold together: name the drivers involved (else the joints)."""
     order = np.argsort(-np.abs(residual))
@@ -165,7 +165,7 @@ def _free_bodies(scaled: np.ndarray, body_of: list[str]) -> list[str]:
 
 
 def _dependent_drivers(scaled: np.ndarray, is_driver: np.ndarray, labels: Sequence[Any],
-                       wheres: list[str]) -> list[Said]:
+                       wheres: Sequence[str]) -> list[Said]:
     """Drivers whose rows lie (numerically) in the span of the joints' rows."""
     joints = scaled[~is_driver]
     out: list[Said] = []
@@ -176,7 +176,7 @@ def _dependent_drivers(scaled: np.ndarray, is_driver: np.ndarray, labels: Sequen
             gap = np.linalg.norm(joints.T @ coef - row)
         else:
             gap = np.linalg.norm(row)
-        text = Said("row-driver", where=wheres[i], label=labels[int(i)])
+        text = Said("row-driver", where=wheres[int(i)], label=labels[int(i)])
         if gap < 1e-8 * max(float(np.linalg.norm(row)), 1e-300) and text not in out:
             out.append(text)
     return out

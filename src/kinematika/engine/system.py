@@ -46,7 +46,8 @@ class InstantSolver:
         self.analysis: Analysis | SparseAnalysis | None = None
         # set by `prepare`: each velocity row's label, place, and whether a driver gives it
         self.labels: Sequence[Any]
-        self.wheres: list[str]
+        self.wheres: Sequence[str]
+        self.pairs: Sequence[frozenset | None]      # the two bodies each row relates (`rows`)
         self.is_driver: np.ndarray
         self.said_rows: dict[Any, Sequence[Said]] = {}    # per joint kind, its rows' labels (`JointArrays`)
         self.rows_v: list[Row] = []
@@ -68,7 +69,7 @@ class InstantSolver:
         (`engine.idle`), in that order; the pair of bodies each joint or driver row relates is
         kept in `pairs`. Without `joints`: the drivers' and the idle spins' only."""
         out: list[Row] = []
-        pairs: list = []          # the two bodies each joint row or driver row relates
+        pairs: list[frozenset | None] = []          # the two bodies each joint row or driver row relates
         model = self.inst.model
         paired = not lv.accel     # the same at both levels: taken at the velocity level
         for j in model.joints if joints else ():
@@ -396,8 +397,11 @@ class JointArrays:
         if lv.accel:            # (the right sides only: the matrix is the velocity level's)
             return
         per_joint = count.tolist()
-        self.wheres = [j.where for j, c in zip(joints, per_joint) for _ in range(c)]
-        self.pairs = [pair for j, c in zip(joints, per_joint) for pair in [frozenset((j.a, j.b))] * c]
+        rows = len(b)       # each row's place and pair of bodies: read only on errors, made then
+        self.wheres: SaidLater[str] = SaidLater(
+            rows, lambda: [j.where for j, c in zip(joints, per_joint) for _ in range(c)])
+        self.pairs: SaidLater[frozenset | None] = SaidLater(
+            rows, lambda: [pair for j, c in zip(joints, per_joint) for pair in [frozenset((j.a, j.b))] * c])
         indptr = np.concatenate(ptrs)
         col = np.concatenate(cols) if cols else np.zeros(0, dtype=np.int64)
         val = np.concatenate(vals) if vals else np.zeros(0)

@@ -28,7 +28,7 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, overload
+from typing import Any, TypeVar, overload
 
 LOCALES = Path(__file__).resolve().parent / "locales"
 KEY = re.compile(r"[a-z][a-z0-9]*(?:-[a-z0-9]+)*\Z")     # a catalogue's key: words joined by dashes
@@ -196,22 +196,26 @@ def _said(key: str, args: dict[str, Any]) -> Said:
     return Said(key, **args)
 
 
-class SaidLater(Sequence[Said]):
+_T = TypeVar("_T")
+
+
+class SaidLater(Sequence[_T]):
     """`count` messages made on first reading, by `make` (which gives them all, in order).
 
     The rows of a large system carry a label each (thousands for a 1000-body chain: a
     tenth of its solve's work), read only when an error names a row; made here when one is
     read (`len` needs none). A `SaidLater` and a sequence added (`+`) are another, and
     `reordered` gives the messages in another order, both made when read. The messages are
-    the same objects every reading gives, as the list `make` returns."""
+    the same objects every reading gives, as the list `make` returns. Other texts read only
+    with them (each row's place in the file) are made later the same way."""
 
     __slots__ = ("_count", "_made", "_make")
 
-    def __init__(self, count: int, make: Callable[[], Sequence[Said]]) -> None:
+    def __init__(self, count: int, make: Callable[[], Sequence[_T]]) -> None:
         self._count, self._make = count, make
-        self._made: Sequence[Said] | None = None
+        self._made: Sequence[_T] | None = None
 
-    def made(self) -> Sequence[Said]:
+    def made(self) -> Sequence[_T]:
         """Every message, made on the first call."""
         if self._made is None:
             self._made = self._make()
@@ -223,25 +227,25 @@ class SaidLater(Sequence[Said]):
         return self._count
 
     @overload
-    def __getitem__(self, index: int) -> Said: ...
+    def __getitem__(self, index: int) -> _T: ...
     @overload
-    def __getitem__(self, index: slice) -> Sequence[Said]: ...
+    def __getitem__(self, index: slice) -> Sequence[_T]: ...
 
-    def __getitem__(self, index: int | slice) -> Said | Sequence[Said]:
+    def __getitem__(self, index: int | slice) -> _T | Sequence[_T]:
         return self.made()[index]
 
-    def __iter__(self) -> Iterator[Said]:
+    def __iter__(self) -> Iterator[_T]:
         return iter(self.made())
 
-    def __add__(self, other: Sequence[Said]) -> "SaidLater":
+    def __add__(self, other: Sequence[_T]) -> "SaidLater[_T]":
         return SaidLater.joined([self, other])
 
     @staticmethod
-    def joined(pieces: Sequence[Sequence[Said]]) -> "SaidLater":
+    def joined(pieces: Sequence[Sequence[_T]]) -> "SaidLater[_T]":
         """The messages of `pieces`, one after the other."""
         return SaidLater(sum(len(p) for p in pieces), lambda: [said for p in pieces for said in p])
 
-    def reordered(self, order: Sequence[int]) -> "SaidLater":
+    def reordered(self, order: Sequence[int]) -> "SaidLater[_T]":
         """The messages at `order`'s positions, in that order."""
         return SaidLater(len(order), lambda: [self.made()[i] for i in order])
 

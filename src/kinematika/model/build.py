@@ -131,13 +131,17 @@ class _Builder:
                                           text=p.value.text)
         return out
 
-    def expr(self, raw: Any, where: str) -> Expr:
+    def expr(self, raw: Any, where: str, index: Optional[int] = None) -> Expr:
+        """`raw` as an expression in the parameters (and pi); `where` (component `index` of it,
+        when given: its place written only for an error) names it in errors."""
         try:
             expr = parse(raw)
         except ExpressionError as err:
-            raise KinematikaError("schema", err.said, where) from None
+            raise KinematikaError("schema", err.said, where if index is None else f"{where}[{index}]") from None
         if type(raw) is float or type(raw) is int:      # a number names nothing
             return expr
+        if index is not None:
+            where = f"{where}[{index}]"
         unknown = expr.names() - set(getattr(self, "_param_names", ())) - {"pi"}
         if hasattr(self, "_param_names") and unknown:
             raise KinematikaError("schema", "unknown-name-in-parameters", where, name=sorted(unknown)[0],
@@ -148,15 +152,16 @@ class _Builder:
         if len(raw) not in tuple(dims):
             raise KinematikaError("schema", "components-count", where, dims=Names(map(str, dims), joined="or"),
                                   got=len(raw))
-        return tuple(self.expr(v, f"{where}[{i}]") for i, v in enumerate(raw))
+        expr = self.expr
+        return tuple([expr(v, where, i) for i, v in enumerate(raw)])
 
     def points(self, params: dict[str, Parameter]) -> dict[str, ExprVector | Construction]:
         self._param_names = list(params)
         if not self.spec.points:
             raise KinematikaError("schema", "model-no-points", "points")
         for name in [*self.spec.points, *self.spec.bodies]:
-            kind = "points" if name in self.spec.points else "bodies"
             if not name.strip() or "@" in name:
+                kind = "points" if name in self.spec.points else "bodies"
                 raise KinematikaError("schema", "name-invalid", f"{kind}.{name}", name=name)
         symbolic = any(p.value is None for p in params.values())
         out: dict[str, ExprVector | Construction] = {}
@@ -303,7 +308,9 @@ class _Builder:
         return out
 
     def joint(self, i: int, jid: str, raw: schema.JointSpec | Record, where: str) -> Joint:
-        a, b = (self.known_body(name, f"{where}.bodies") for name in raw.bodies)
+        a, b = raw.bodies
+        if a not in self.body_map or b not in self.body_map:
+            a, b = (self.known_body(name, f"{where}.bodies") for name in raw.bodies)
         if a == b:
             raise KinematikaError("schema", "joint-same-body", where, body=a)
         kind = joint_kind(raw.type)
@@ -316,13 +323,15 @@ class _Builder:
             self._fields_checked.add(case)
         at = raw.at
         if at is not None:
-            self.known_point(at, f"{where}.at")
-            carriers = [name for name in (a, b) if at in self.body_points[name]]
-            must = kind.point_on.bodies(a, b)
-            missing = [name for name in must if name not in carriers]
-            if missing:
-                raise KinematikaError("geometry", "joint-point-not-on-body", where, kind=kind.name, point=at,
-                                      body=missing[0])
+            if at not in self.point_coords:
+                self.known_point(at, f"{where}.at")
+            if at not in self.body_points[a] or at not in self.body_points[b]:     # (else on any it must be)
+                carriers = [name for name in (a, b) if at in self.body_points[name]]
+                must = kind.point_on.bodies(a, b)
+                missing = [name for name in must if name not in carriers]
+                if missing:
+                    raise KinematikaError("geometry", "joint-point-not-on-body", where, kind=kind.name, point=at,
+                                          body=missing[0])
         along = self.direction(raw.along, f"{where}.along") if raw.along is not None else None
         axis = self.direction(raw.axis, f"{where}.axis") if raw.axis is not None else None
         return Joint(jid, kind.name, a, b, i, at=at, along=along, axis=axis, internal=raw.internal)

@@ -7,7 +7,6 @@ both end here, through `model.build`.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cached_property
 from typing import TYPE_CHECKING, Optional, Union
 
 from ..errors import KinematikaError, Names
@@ -76,16 +75,17 @@ class Joint:
     along: Optional[Direction] = None
     axis: Optional[Direction] = None
     internal: Optional[bool] = None
+    # what this kind of joint means (`kinematika.joints`): ask it, never its name; set once
+    # from `type` when the joint is made (read for every joint of every solve)
+    kind: JointKind = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        self.kind = joint_kind(self.type)
 
     @property
     def where(self) -> str:
         """Where the joint is written, for errors: ``joints[2] (j3)``."""
         return f"joints[{self.index}] ({self.id})"
-
-    @cached_property
-    def kind(self) -> JointKind:
-        """What this kind of joint means (`kinematika.joints`): ask it, never its name."""
-        return joint_kind(self.type)
 
     def point_at(self) -> str:
         """The joint's point `at`, for a kind that has one (a pin, a slot, a contact): the

@@ -163,22 +163,30 @@ def record(name: str, fields: dict[str, tuple[Check, Any]],
     cls = type(name, (Record,), {"FIELDS": tuple(fields),
                                  "DEFAULTS": {k: d for k, (_, d) in fields.items()}})
     in_file = {(keys or {}).get(f, f): f for f in fields}
-    # (file key, field, its check, its default, whether the default is a factory), once
-    steps = [(key, field, *fields[field], callable(fields[field][1])) for key, field in in_file.items()]
     known = in_file.keys()
+    # once per record: each file key's field and check; the fields a file must give; the
+    # defaults made by a factory; every field in order with its default (a value, or a
+    # place kept for the given or made ones), copied for each section checked
+    checks = {key: (field, fields[field][0]) for key, field in in_file.items()}
+    required = {key for key, field in in_file.items() if fields[field][1] is REQUIRED}
+    made = [(key, field, fields[field][1]) for key, field in in_file.items()
+            if fields[field][1] is not REQUIRED and callable(fields[field][1])]
+    template = {field: default for field, (_, default) in fields.items()}
+    new = object.__new__
 
     def check(x: Any) -> Record:
-        if type(x) is not dict or not x.keys() <= known:
+        if type(x) is not dict or not x.keys() <= known or not required <= x.keys():
             raise Refused
-        out = {}
-        for key, field, check_field, default, factory in steps:
-            if key in x:
-                out[field] = check_field(x[key])
-            elif default is REQUIRED:
-                raise Refused
-            else:
-                out[field] = default() if factory else default
-        return cls(**out)
+        out = template.copy()
+        for key, value in x.items():
+            field, check_field = checks[key]
+            out[field] = check_field(value)
+        for key, field, factory in made:
+            if key not in x:
+                out[field] = factory()
+        section: Record = new(cls)      # (what `Record(**out)` makes, without copying `out`)
+        section.__dict__ = out
+        return section
     return cls, check
 
 

@@ -16,7 +16,7 @@ conditions. Poses within `TOLERANCE` of them are left as they are.
 from __future__ import annotations
 
 import math
-from typing import Any, Callable
+from typing import Any, Callable, Sequence
 
 import numpy as np
 
@@ -31,7 +31,7 @@ TOLERANCE = 1e-12          # a correction this small (dimensionless) is the cond
 class Projection:
     """The position conditions of a model's joints, and the projection onto them."""
 
-    def __init__(self, inst: Instant, geos: dict[str, JointGeometry], wheres: list[str],
+    def __init__(self, inst: Instant, geos: dict[str, JointGeometry], wheres: Sequence[str],
                  drivers: Any) -> None:
         self.scale = inst.scale
         self.parts: list[tuple[Holonomic, list[int]]] = []
