@@ -276,4 +276,4 @@ def test_the_explanation_says_how_each_body_was_carried():
     assert "*arm* has turned by 90° about o." in position
     assert "*planet* has turned by 90·(r + r)/r° about c." in position
     assert "c is at distance r + r from o, at 90° from the x axis" in position
-    assert "q is carried with *planet*" in position
+    assert "q is carried with the *planet*" in position
