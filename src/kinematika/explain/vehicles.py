@@ -214,10 +214,41 @@ def _equiprojective(ctx: Ctx, b: str, wheels: list, speeds: dict, q: str) -> lis
             v = ctx.clean(ctx.vel(b, p), "speed")
             speeds[p] = ctx.vel(b, p)
             seg = Name(segment(q, p))
+            unit, along, proj, cos = _projection(ctx, q, p, ctx.vel(b, q), ctx.vel(b, p))
             return [msg("vehicle.equiprojective", q=Name(q), p=Name(p), body=Name(b, "body"), joint=Name(j.id, "joint"),
                         seg=seg, vp=Sym("v", p), vq=Sym("v", q), value=Value(v, "speed"),
-                        speed=Value(_magnitude(ctx, v), "speed"))]
+                        speed=Value(_magnitude(ctx, v), "speed"), unit=Value(unit), along=Value(along),
+                        proj=Value(proj, "speed"), cos=Value(cos))]
     return []
+
+
+def _projection(ctx: Ctx, q: str, p: str, vq: tuple, vp: tuple) -> tuple:
+    """The numbers of the equiprojectivity equation a student redoes, v_P · u = v_Q · u with
+    u = QP/|QP|: (u, e, v_Q · u, e · u), e the unit vector along v_P (the wheel's plane), so
+    |v_P| = (v_Q · u) / (e · u) (C5-2.2: u = (−√2/2, −√2/2), v_O · u = −rω/√2, e · u = −1,
+    |v_P| = rω/√2)."""
+    if ctx.symbolic:
+        import sympy
+
+        def simp(x):
+            return sympy.simplify(x)
+        root = sympy.sqrt
+    else:
+        def simp(x):
+            return x
+        root = _sqrt
+    qp = tuple(y - x for x, y in zip(ctx.pos(q), ctx.pos(p)))
+    size = simp(root(sum(c ** 2 for c in qp)))
+    u = tuple(simp(c / size) for c in qp)
+    speed = _magnitude(ctx, vp)
+    e = tuple(simp(c / speed) for c in vp)
+    proj = simp(sum(a * z for a, z in zip(vq, u)))
+    cos = simp(sum(a * z for a, z in zip(e, u)))
+    return ctx.clean(u, ""), ctx.clean(e, ""), ctx.clean(proj, "speed"), ctx.clean(cos, "")
+
+
+def _sqrt(x):
+    return x ** 0.5
 
 
 def _axles(ctx: Ctx, b: str, wheels: list) -> int:
