@@ -37,6 +37,7 @@ class Value:
 
     value: Any
     unit: str = ""
+    result: bool = False           # a result the notes write as x/(k√n) where it is √n·x/(k n) (`render.base.root_form`)
 
 
 @dataclass

@@ -148,6 +148,8 @@ def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
     said = _equiprojective(ctx, b, wheels, speeds, witness)
     if said:
         witness = said[0].args["p"].text
+        lines = _witness_first(ctx, _lines(ctx, b, wheels, speeds), witness, speeds)
+        said += _on_axle(ctx, lines, witness)
     for i, (p1, d1, why1) in enumerate(lines):
         for p2, d2, why2 in lines[i + 1:]:
             det = d1[0] * d2[1] - d1[1] * d2[0]
@@ -165,6 +167,43 @@ def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
                 Derived(omega_sym(b), [], ctx.value(ctx.omega(b), "rate"), b, "omega", False,
                         remark=msg("how.translation"))] + _carried(ctx, b, witness)
     return None
+
+
+def _own_line(why, witness: str) -> bool:
+    """Whether a line is the perpendicular to the witness's velocity."""
+    return why.key == "vehicle.line.velocity" and why.args["point"].text == witness
+
+
+def _witness_first(ctx: Ctx, lines: list, witness: str, speeds: dict) -> list:
+    """The lines with the wheels' axles first, then the perpendicular to the velocity the step
+    has just found (the notes' C5-2.2: "la direcció perpendicular a la velocitat del punt P i
+    ... l'eix de les rodes"), then the other known velocities': the centre is taken from the
+    first two that meet."""
+    wheels = [x for x in lines if x[2].key == "vehicle.line.wheel"]
+    own = [x for x in lines if _own_line(x[2], witness)]
+    return wheels + own + [x for x in lines if x not in wheels and x not in own]
+
+
+def _on_axle(ctx: Ctx, lines: list, witness: str) -> list:
+    """Why the perpendicular to the witness's velocity does not place the centre, when it is a
+    wheel's axle itself: the witness lies on the axle and moves along the wheel's plane
+    (C5-2.2's P, the axle's midpoint: the notes' "perpendicular a la velocitat de P" and "l'eix
+    de les rodes" are one line), so the second line is another known velocity's. Empty when the
+    witness's line is not an axle, or no other line meets the axle."""
+    own = next((x for x in lines if _own_line(x[2], witness)), None)
+    axle = next((x for x in lines if x[2].key == "vehicle.line.wheel"), None)
+    if own is None or axle is None:
+        return []
+    (p1, d1, _), (p2, d2, why) = own, axle
+    if abs(d1[0] * d2[1] - d1[1] * d2[0]) > 1e-9 * _size(d1) * _size(d2) or \
+            abs((p1[0] - p2[0]) * d2[1] - (p1[1] - p2[1]) * d2[0]) > 1e-9 * _size(d2) * ctx.inst.scale:
+        return []
+    other = next((x for x in lines if x[2].key == "vehicle.line.velocity" and not _own_line(x[2], witness)
+                  and abs(x[1][0] * d2[1] - x[1][1] * d2[0]) > 1e-9 * _size(x[1]) * _size(d2)), None)
+    if other is None:
+        return []
+    return [msg("vehicle.centre_on_axle", point=Name(witness), sym=Sym("v", witness), joint=why.args["joint"],
+                other=other[2].args["point"], vo=other[2].args["sym"])]
 
 
 def _twin(ctx: Ctx, b: str, witness: str, speeds: dict) -> Optional[str]:
@@ -214,10 +253,41 @@ def _equiprojective(ctx: Ctx, b: str, wheels: list, speeds: dict, q: str) -> lis
             v = ctx.clean(ctx.vel(b, p), "speed")
             speeds[p] = ctx.vel(b, p)
             seg = Name(segment(q, p))
+            unit, along, proj, cos = _projection(ctx, q, p, ctx.vel(b, q), ctx.vel(b, p))
             return [msg("vehicle.equiprojective", q=Name(q), p=Name(p), body=Name(b, "body"), joint=Name(j.id, "joint"),
                         seg=seg, vp=Sym("v", p), vq=Sym("v", q), value=Value(v, "speed"),
-                        speed=Value(_magnitude(ctx, v), "speed"))]
+                        speed=Value(_magnitude(ctx, v), "speed", True), unit=Value(unit), along=Value(along),
+                        proj=Value(proj, "speed"), cos=Value(cos))]
     return []
+
+
+def _projection(ctx: Ctx, q: str, p: str, vq: tuple, vp: tuple) -> tuple:
+    """The numbers of the equiprojectivity equation a student redoes, v_P · u = v_Q · u with
+    u = QP/|QP|: (u, e, v_Q · u, e · u), e the unit vector along v_P (the wheel's plane), so
+    |v_P| = (v_Q · u) / (e · u) (C5-2.2: u = (−√2/2, −√2/2), v_O · u = −rω/√2, e · u = −1,
+    |v_P| = rω/√2)."""
+    if ctx.symbolic:
+        import sympy
+
+        def simp(x):
+            return sympy.simplify(x)
+        root = sympy.sqrt
+    else:
+        def simp(x):
+            return x
+        root = _sqrt
+    qp = tuple(y - x for x, y in zip(ctx.pos(q), ctx.pos(p)))
+    size = simp(root(sum(c ** 2 for c in qp)))
+    u = tuple(simp(c / size) for c in qp)
+    speed = _magnitude(ctx, vp)
+    e = tuple(simp(c / speed) for c in vp)
+    proj = simp(sum(a * z for a, z in zip(vq, u)))
+    cos = simp(sum(a * z for a, z in zip(e, u)))
+    return ctx.clean(u, ""), ctx.clean(e, ""), ctx.clean(proj, "speed"), ctx.clean(cos, "")
+
+
+def _sqrt(x):
+    return x ** 0.5
 
 
 def _axles(ctx: Ctx, b: str, wheels: list) -> int:

@@ -354,7 +354,8 @@ composition-pin = { $point } is a pin, a point of both bodies: it has no relativ
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
 vehicle-line-velocity = the perpendicular to { $sym } at { $point }
-vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg } = { $vq } · { $seg }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel’s plane: { $vp } = { $value }, of magnitude { $speed }.
+vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel’s plane: { $vp } = |{ $vp }| e, with e = { $along } and e · { $seg }/|{ $seg }| = { $cos }. Hence |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, and { $vp } = { $value }.
+vehicle-centre_on_axle = The perpendicular to { $sym } through { $point } is the axle of wheel { $joint } itself ({ $point } lies on it and { $sym } is along the wheel’s plane), so it gives no second line: the second one is the perpendicular to { $vo } through { $other }.
 vehicle-centre = The instant centre of { $body } { COUNT($body) ->
         [many] lie
        *[one] lies

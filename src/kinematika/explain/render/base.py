@@ -386,7 +386,8 @@ class Renderer(ABC):
     def cell(self, c: Any) -> str:
         """A table cell; answers come as [(label, Value), ...]."""
         if isinstance(c, list) and c and isinstance(c[0], tuple):
-            return "; ".join((self.arg(label) + " = " if label else "") + self.arg(v) for label, v in c)
+            return "; ".join((self.arg(label) + " = " if label else "")
+                             + self.arg(Value(v.value, v.unit, True) if isinstance(v, Value) else v) for label, v in c)
         return self.arg(c)
 
     def name(self, n: Name) -> str:
@@ -681,10 +682,28 @@ class Renderer(ABC):
             text = "(" + self.comma.join(self.scalar(c) for c in x) + ")"
         else:
             text = self.scalar(x)
+            if v.result:
+                text += self.root_also(x)
         if v.unit == "deg":
             return text + "°"
         unit = self.unit(v.unit)
         return text + (" " + unit if unit and not self.doc.symbolic else "")
+
+    def root_also(self, x: Any) -> str:
+        """" = x/(k′√n)" beside a result sympy writes √n·x/k (k = k′ n), the form the notes
+        print: ω′ = √2·ω/4 = ω/(2·√2) (C5-2.2), |v_P| = √2·r·ω/2 = r·ω/√2. Empty for any other
+        value (`root_form`)."""
+        form = root_form(x)
+        if form is None:
+            return ""
+        import sympy
+
+        top, k, n = form
+        num = self.formula(top)
+        if top.is_Add:
+            num = "(" + num + ")"
+        root = self.formula(sympy.sqrt(n)) if k == 1 else "(" + self.formula(sympy.Mul(k, sympy.sqrt(n))).replace("·√", "√") + ")"
+        return " = " + num + self.esc("/") + root
 
     def unit(self, kind: str) -> str:
         """The unit of a kind of quantity (speed, accel, len, rate, rate2) in the document's
@@ -735,7 +754,7 @@ class Renderer(ABC):
             parts.append(self.symbol(d.sym))     # the notes' symbol tied to the body's: ψ̇ = ω_txasisa = …
         if d.how:
             parts.append(self.inline(d.how))
-        parts.append(self.value(d.value))
+        parts.append(self.value(Value(d.value.value, d.value.unit, True)))
         text = " = ".join(parts)
         if d.sense and isinstance(d.value.value, float) and d.value.value != 0:
             text += " (" + self.message(Msg("sense.ccw" if d.value.value > 0 else "sense.cw")) + ")"
@@ -874,3 +893,25 @@ def _segment_end(x: Any) -> bool:
 
 def _base(x: Any) -> str:
     return x.base if isinstance(x, Sym) else ""
+
+
+def root_form(x: Any) -> Optional[tuple[Any, int, int]]:
+    """(x, k′, n) when the formula `x` is ±√n·y/k with k = k′ n and y a product of positive
+    powers (ω, r·ω): the notes write it y/(k′√n) (C5-2.2's ω′ = ω/(2√2) for sympy's √2·ω/4,
+    rω/√2 for √2·r·ω/2); the first item is ±y. None for any other value (a number, a
+    quotient of symbols, a coefficient other than ±1/k)."""
+    import sympy
+
+    if not isinstance(x, sympy.Expr) or x.is_number:
+        return None
+    c, rest = x.as_coeff_Mul()
+    if not c.is_Rational or abs(c.p) != 1 or c.q == 1:
+        return None
+    roots = [f for f in sympy.Mul.make_args(rest) if f.is_Pow and f.exp == sympy.S.Half and f.base.is_Integer]
+    others = [f for f in sympy.Mul.make_args(rest) if f not in roots]
+    if len(roots) != 1 or not others or any(f.as_base_exp()[1].is_negative or f.is_number for f in others):
+        return None
+    n = int(roots[0].base)
+    if c.q % n:
+        return None
+    return sympy.Mul(*others) * (1 if c.p > 0 else -1), c.q // n, n
