@@ -28,7 +28,7 @@ def answers_section(ctx: Ctx) -> Section:
     rows: list = []
     for q in ctx.model.questions:
         items = answer_items(ctx, q, answer(ctx.sol, q))
-        if q.kind == "icr" and ctx.planar:
+        if QUESTIONS[q.kind].placed and ctx.planar:
             items += centre_from_point(ctx, q)
         for row in question_rows(ctx, q, items):
             if row not in rows:    # a fixed point asked of every body it belongs to: once

@@ -241,6 +241,9 @@ class QuestionKind:
     rows_by_part: ClassVar[bool] = False    # an explanation's answers table gives each part
                                             # labelled by its own symbol a row of its own (the
                                             # notes' final list of C5-1.8: one line a point)
+    placed: ClassVar[bool] = False          # its answer is a centre placed from a point (planar):
+                                            # the answers table also gives its distance from
+                                            # that point, as the notes do ((2/5)r from A1)
 
     def answer(self, sol: Solved, q: Asked) -> Any:
         """The raw answer (backend scalars, nested in dicts for a compound answer)."""

@@ -62,6 +62,7 @@ class Icr(QuestionKind):
     fields = {"point": "position", "direction": None}
     page = True
     needs_rate = False          # the centres section places it from the joints (Aronhold–Kennedy)
+    placed = True               # and its answer says its distance from the point it was placed from
 
     def answer(self, sol: Solved, q: Asked) -> Any:
         """P = ref + k × v₀ / ω, at infinity perpendicular to v₀ when ω = 0 (`icr`)."""
