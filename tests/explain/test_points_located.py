@@ -82,20 +82,13 @@ def _names(name: str) -> set[str]:
 
 @pytest.mark.parametrize("lang", LANGS)
 @pytest.mark.parametrize("name", SEEDS)
-def test_every_point_the_page_writes_is_located(name, lang):
-    """The points written in sentences, equations and figures are rows of the points' table."""
+def test_the_points_written_are_the_points_located(name, lang):
+    """Both ways: the points written in sentences, equations and figures are rows of the
+    points' table, and no row names a point the page never writes elsewhere."""
     page, names = rendered(name, lang), _names(name)
-    missing = sorted(_used(page, names) - _located(page, names))
-    assert not missing, (name, lang, missing)
-
-
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
-def test_every_point_located_is_written(name, lang):
-    """No row of the points' table names a point the page never writes elsewhere."""
-    page, names = rendered(name, lang), _names(name)
-    unused = sorted(_located(page, names) - _used(page, names))
-    assert not unused, (name, lang, unused)
+    used, located = _used(page, names), _located(page, names)
+    assert not sorted(used - located), (name, lang, "written, not located", sorted(used - located))
+    assert not sorted(located - used), (name, lang, "located, never written", sorted(located - used))
 
 
 def test_by_hand_the_epicyclic_lists_the_contacts_it_uses():
