@@ -96,9 +96,10 @@ def test_by_hand_the_epicyclic_lists_the_contacts_it_uses():
     the sun from planet 1 (contact J); planet 2, asked too, is worked with its own equations
     (contacts K with the sun and Q with the ring, eighth round); planet 3 is asked nothing and
     not worked. So J, K, N and Q are located, and M and S — planet 3's contacts — are neither
-    listed nor named in the structure table, which says "—" for them."""
+    listed nor named in the structure table, which gives their positions instead."""
     page = rendered("seed_c5_1_4_epicyclic", "ca")
     names = _names("seed_c5_1_4_epicyclic")
     assert _located(page, names) & {"J", "K", "M", "N", "Q", "S"} == {"J", "K", "N", "Q"}
     structure = _sections(page)[2]
-    assert structure.count("| — |") == 2
+    assert structure.count("| — |") == 0                  # planet 3's contacts by their positions
+    assert "| (−√3·r/2; r/2) |" in structure and "| (−3·√3·r/2; 3·r/2) |" in structure   # M, S by hand: r, 3r at 150°

@@ -228,7 +228,7 @@ def contact_rows(ctx: Ctx, doc: Any) -> None:
     does not) join the Data section's table of points, with what they are and where, so
     that every point the page writes is located before it is used (C5-1.5's J1 … J10); a
     contact the page names nowhere but in the structure table is not named there either
-    (its cell says "—"): the table of points lists no point the page never uses (issue 30,
+    (its cell gives its position): the table of points lists no point the page never uses (issue 30,
     ninth round: C5-1.4's K, Q and S, C5-E.2's K and N, listed and never used)."""
     table = next((b for b in doc.sections[0].blocks if isinstance(b, Table)
                   and getattr(b.header[0], "key", "") == "col.point"), None)
@@ -241,7 +241,7 @@ def contact_rows(ctx: Ctx, doc: Any) -> None:
     for jid, name in ctx._contacts.items():
         j = ctx.model.joint(jid)
         if name not in used and name not in ctx.model.points:     # a model's point is listed, and drawn
-            _unname_in_structure(doc, name)
+            _unname_in_structure(doc, name, Value(ctx.clean(ctx.pos(name), "len"), "len"))
         if name in listed or name not in used:
             continue
         what = msg("what.contact", joint=Name(j.id, "joint"), kind=msg(f"joint.{kind_key(j, ctx.frame)}"),
@@ -262,8 +262,10 @@ def _naming(block: Any) -> bool:
     return isinstance(block, Table) and getattr(block.header[0], "key", "") in _NAMING_TABLES
 
 
-def _unname_in_structure(doc: Any, name: str) -> None:
-    """The structure table's joint rows whose place is the contact `name` alone say "—"."""
+def _unname_in_structure(doc: Any, name: str, where: Any) -> None:
+    """The structure table's joint rows whose place is the contact `name` alone give the
+    contact's position instead (`where`): a letter the page never uses again is not named,
+    and an empty "—" read as a missing datum (the final readers of stop 41)."""
     for sec in doc.sections:
         for b in sec.blocks:
             if isinstance(b, Table) and getattr(b.header[0], "key", "") == "col.joint":
@@ -271,7 +273,7 @@ def _unname_in_structure(doc: Any, name: str) -> None:
                     cell = row[-1]
                     if isinstance(cell, Inline) and len(cell.items) == 1 and isinstance(cell.items[0], Name) \
                             and cell.items[0].text == name:
-                        row[-1] = "—"
+                        row[-1] = where
 
 
 def points_used(ctx: Ctx, doc: Any) -> set[str]:
