@@ -200,7 +200,7 @@ def test_willis_writes_the_radii(name, willis):
 
 
 @pytest.mark.parametrize("lang,rel", [("en", "r ω_{sprocket rel frame} = R ω_{chainring rel frame}:"),
-                                      ("eu", "r ω_{pinoia erl koadroa} = R ω_{platera erl koadroa}:")])
+                                      ("eu", "r ω_{pinoia rel koadroa} = R ω_{platera rel koadroa}:")])
 def test_the_chain_relation_is_the_notes(lang, rel):
     """C5-E.6: "r Ω_pinyó = R Ω_plat" seen from the frame."""
     assert rel in rendered("seed_c5_e6_bicycle", lang, drawings=False)

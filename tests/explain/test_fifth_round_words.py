@@ -36,11 +36,11 @@ def test_a_guide_is_said_once_by_its_line():
     text = rendered(P_PAIR, "eu", "md", False)
     assert "gida solidoaren gida" not in text
     velocities = text.split("## Abiadurak", 1)[1].split("## Azelerazioak", 1)[0]
-    assert re.search(r"\+\s+v_\{B∈N erl M\}\n.*∥ AB", velocities)
+    assert re.search(r"\+\s+v_\{B∈N rel M\}\n.*∥ AB", velocities)
 
 
 @pytest.mark.parametrize("lang,held,datum", [
-    ("eu", "F giltzaduran: δ̇ = 0", "Datua: ω_{gurpila erl txasisa}"),
+    ("eu", "F giltzaduran: δ̇ = 0", "Datua: ω_{gurpila rel txasisa}"),
     ("ca", "a l’articulació F: δ̇ = 0", "Dada: ω_{roda rel. xassís}"),
 ])
 def test_a_held_pin_is_a_condition_not_a_datum(lang, held, datum):
@@ -62,11 +62,11 @@ def test_a_relative_rate_is_worked_out_before_a_term_uses_it():
         return _number(re.search(rf"\| {re.escape(sym)} \| ([−\d,]+) rad/s", answers).group(1))
 
     for w, unit in (("ω", "rad/s"), ("α", "rad/s²")):
-        said = re.search(rf"{w}_R = {w}_{{R erl N}} \+ {w}_N ⇒ {w}_{{R erl N}} = {w}_R − {w}_N = ([−\d,]+) {unit}",
+        said = re.search(rf"{w}_R = {w}_{{R rel N}} \+ {w}_N ⇒ {w}_{{R rel N}} = {w}_R − {w}_N = ([−\d,]+) {unit}",
                          text)
         assert said, w
         assert abs(_number(said.group(1)) - (answer(f"{w}_R") - answer(f"{w}_N"))) < 2e-3
-        used = text.index(f"{w}_{{R erl N}}·FA")
+        used = text.index(f"{w}_{{R rel N}}·FA")
         assert said.start() < used, w
 
 

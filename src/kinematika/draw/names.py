@@ -106,7 +106,7 @@ def _roman(name: str) -> str:
 def subscript(letter: str, name: str, body: Optional[str] = None,
               relative: Optional[str] = None, rel_word: str = "rel") -> str:
     """`letter` with the subscript `name` (a point or a tag), `∈body` and the reference
-    `relative` after the language's word for a relative motion (`rel_word`: rel, REL, erl;
+    `relative` after the language's word for a relative motion (`rel_word`: rel, REL;
     never a slash, which reads as a fraction): $v_{\\mathrm{B}∈3\\ rel\\ 2}$. A name
     mathtext cannot take is written plainly: v(name∈3 rel 2)."""
     tail = (f"∈{body}" if body is not None else "") + (f" {rel_word} {relative}" if relative is not None

@@ -19,7 +19,7 @@ class Sym:
     """A named quantity as the notes write it: base letter, subscript, superscript.
 
     `sub_key` names a catalogue message used as (part of) the subscript, for the words
-    that change with the course's language (drag: arr / ar; relative: rel / erl).
+    that change with the course's language (drag: arr / ar; relative: rel / REL).
     """
 
     base: str

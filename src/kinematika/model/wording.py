@@ -47,8 +47,9 @@ NO_ARTICLE = re.compile(r"(?!)")
 # two names, where it would read as a third body; the join is "rel." (relatiu a), the notes'
 # word in lower case as an abbreviation — not "resp.", which a reader takes for
 # "respectivament", and never a slash, which reads as a division.
-PART_SUBSCRIPTS = {"sub.rel": {"en": "rel", "es": "rel", "ca": "REL", "eu": "erl"},
-                   "sub.rel_to": {"en": "rel", "es": "rel", "ca": "rel.", "eu": "erl"},
+# Basque writes rel, as its slides (seed 001: v_rel, a_rel, 2 ω × v_rel), not erl.
+PART_SUBSCRIPTS = {"sub.rel": {"en": "rel", "es": "rel", "ca": "REL", "eu": "rel"},
+                   "sub.rel_to": {"en": "rel", "es": "rel", "ca": "rel.", "eu": "rel"},
                    "sub.drag": {"en": "drag", "es": "arr", "ca": "ar", "eu": "arr"},
                    "sub.cor": {"en": "Cor", "es": "Cor", "ca": "Cor", "eu": "cor"}}
 # the Basque slides (4.2) write the composition a_B = a_arr + a_rel + a_cor: their word, lower case

@@ -79,7 +79,7 @@ key-contents = Aurkibidea
 
 feedback-right = Zuzena.
 feedback-wrong = Ez da zuzena: ikusi ebazpena urratsez urrats.
-mistake-coriolis-omitted = Balio hau Coriolisen 2 ω × v_erl terminoa ahaztuta lortzen da.
+mistake-coriolis-omitted = Balio hau Coriolisen 2 ω × v_rel terminoa ahaztuta lortzen da.
 mistake-coriolis-doubled = Balio hau Coriolisen terminoa bi aldiz kontatuta lortzen da.
 mistake-normal-omitted = Balio hau termino normalak (zentripetuak), ω² r, ahaztuta lortzen da.
 mistake-sense-reversed = Balio hau emandako ω edo α baten noranzkoa alderantzikatuta lortzen da.

@@ -545,7 +545,7 @@ class Renderer(ABC):
 
     def relative(self, body: str, other: str) -> str:
         """The subscript of a quantity of `body` relative to `other` (both labels): the
-        body, then the language's word for "relative to" (rel, erl; Catalan rel., relatiu a,
+        body, then the language's word for "relative to" (rel; Catalan rel., relatiu a,
         since the notes' REL names the moving frame and "resp." reads as "respectivament") and
         the reference, `mòb rel. braç`; never a slash, which reads as a fraction."""
         return f"{body} {part_subscript('sub.rel_to', self.lang)} {other}"

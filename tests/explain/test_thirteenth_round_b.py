@@ -1,0 +1,42 @@
+"""Issue 30, thirteenth round (b): what the two readers at the end of stop 41 still quoted
+(docs/explain.md, "The state at the end of stop 41"), each a rule checked over the 19 seeds in
+the languages where it applies; every test here fails on the pages written before it.
+
+1. English: a pronoun after a plural body's name agrees with it ("The *wheels* roll … Their
+   centre C"), as the verbs do since the tenth round.
+2. A body's name that begins a list item or a sentence begins with a capital ("1. *Pulley 1*,
+   from *strand 1*", "*Strand 1* is welded", "1. *Gurpila*, …").
+3. Willis' formula says "whose axle the carrier carries" of the planet only: the sun and ring
+   turn about the fixed axis.
+4. A model's own text writes coordinates with the page's separator: (4r; r) where the decimal
+   comma is the language's.
+5. Spanish 001 rolling pair: the roller's centre A moves along a guide (the notes' words).
+6. A centre placed from one point's velocity names the side it lies on (below A, to the left of
+   A), instead of "the side to which v_A points when turned 90°".
+7. Basque writes the relative subscript rel, as its slides (v_rel, a_rel), not erl.
+"""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from .helpers import LANGS, SEEDS, rendered
+
+RELATIVE_SUB = re.compile(r"_\{[^}]*\}")
+
+
+# 7 ------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("name", SEEDS)
+def test_basque_relative_subscript_is_the_slides_rel(name):
+    """Seed 001 (the Basque slides) writes v_B = v_arr + v_rel and a_rel, 2 ω_M · v_rel: never erl."""
+    text = rendered(name, "eu", "md", drawings=False)
+    assert not re.search(r"\berl\b", text), name
+
+
+def test_basque_relative_subscript_by_hand():
+    """001 p_pair: the block N's point B seen from the guide M is v_{B∈N rel M} (slides 4.2)."""
+    text = rendered("seed_001_p_pair_coriolis", "eu", "md", drawings=False)
+    assert "v_{B∈N rel M}" in text
+    assert "«rel» hitzaz" in rendered("seed_c5_1_6_belt", "eu", "md", drawings=False) or \
+        "ω_{polea mugikorra rel besoa}" in rendered("seed_c5_1_6_belt", "eu", "md", drawings=False)
