@@ -40,3 +40,36 @@ def test_basque_relative_subscript_by_hand():
     assert "v_{B∈N rel M}" in text
     assert "«rel» hitzaz" in rendered("seed_c5_1_6_belt", "eu", "md", drawings=False) or \
         "ω_{polea mugikorra rel besoa}" in rendered("seed_c5_1_6_belt", "eu", "md", drawings=False)
+
+
+# 3 ------------------------------------------------------------------------------------------
+WILLIS = {"en": "Willis’ formula", "es": "Fórmula de Willis", "ca": "Fórmula de Willis", "eu": "Willisen formula"}
+# "whose axles the carrier carries", said of the two central wheels
+OLD_WILLIS = ("whose axles", "cuyos ejes lleva", "els eixos dels quals porta", "haien ardatzak")
+# the fixed axis the central wheels turn about, through the carrier's pivot O
+FIXED_AXIS = {"en": "which turn about the fixed axis through O", "es": "que giran alrededor del eje fijo que pasa por O",
+              "ca": "que giren al voltant de l’eix fix que passa per O",
+              "eu": "O puntutik pasatzen den ardatz finkoaren inguruan biratzen dira"}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_willis_carries_the_planets_axle_only(name, lang):
+    """C5-1.4 and E.2: the carrier (arm), pinned to the frame at O, carries the planet's axle;
+    the sun and the ring are pinned to the frame at O too, so the carrier does not carry
+    theirs: they turn about the fixed axis through O."""
+    text = rendered(name, lang, "md", drawings=False)
+    line = next((x for x in text.splitlines() if x.startswith(WILLIS[lang])), None)
+    if line is None:
+        return
+    assert not any(old in line for old in OLD_WILLIS), line
+    assert FIXED_AXIS[lang] in line, line
+
+
+def test_willis_by_hand():
+    """C5-1.4: planet 1 on the carrier meshes with the sun wheel and the ring (both about O)."""
+    en = rendered("seed_c5_1_4_epicyclic", "en", "md", drawings=False)
+    assert ("(*planet 1*, whose axle the *carrier* carries, meshes with the *sun wheel* and the *ring*, "
+            "which turn about the fixed axis through O)") in en
+    es = rendered("seed_c5_e2_gear_change", "es", "md", drawings=False)
+    assert "(el *satélite superior*, cuyo eje lleva el *brazo*, engrana con la *rueda central fija* y la *corona*" in es

@@ -23,7 +23,7 @@ from typing import Optional
 from .context import Ctx, omega_sym
 from .document import Inline, Name, Section, Value, msg
 from .drives import circle, drives, pivot, radius, rho, same_place, simplified, wheel_circle
-from .kinds import crossed_by_a_slot, rolls, welds
+from .kinds import crossed_by_a_slot, pins, rolls, welds
 
 
 def checks_section(ctx: Ctx) -> Optional[Section]:
@@ -69,12 +69,21 @@ def willis(ctx: Ctx) -> list:
                 if other == frame or (at is not None and _same(ctx, at, o)):
                     central.append((other, j))
             if len(central) >= 2:
-                out += _willis_blocks(ctx, carrier, planet, central[0], central[1])
+                out += _willis_blocks(ctx, carrier, planet, central[0], central[1], _pivot_name(ctx, carrier, frame))
                 break            # one planet says it for the train
     return out
 
 
-def _willis_blocks(ctx: Ctx, carrier: str, planet: str, first: tuple, second: tuple) -> list:
+def _pivot_name(ctx: Ctx, body: str, on: str) -> str:
+    """The point where `body` is pinned to `on` (the carrier's fixed axis: O)."""
+    return next(j.at for j in ctx.model.joints if pins(j) and {j.a, j.b} == {body, on} and j.at)
+
+
+def _willis_blocks(ctx: Ctx, carrier: str, planet: str, first: tuple, second: tuple, axis: str) -> list:
+    """Willis' formula for one planet meshing with two wheels about the carrier's fixed axis
+    (`axis`, the carrier's pivot). The carrier carries the planet's axle only: the two central
+    wheels turn about the fixed axis through `axis`, the frame's (the readers of stop 41 read
+    "whose axles the carrier carries" said of the sun and the ring)."""
     (s1, j1), (s2, j2) = first, second
     r1, r2 = wheel_circle(ctx, s1)[1], wheel_circle(ctx, s2)[1]
     sign = _mesh_sign(ctx, j1) * _mesh_sign(ctx, j2)
@@ -88,7 +97,7 @@ def _willis_blocks(ctx: Ctx, carrier: str, planet: str, first: tuple, second: tu
     values = Inline(["(", Value(ctx.clean(w1, "rate"), ""), " − ", Value(ctx.clean(wc, "rate"), ""), ") / (",
                      Value(ctx.clean(w2, "rate"), ""), " − ", Value(ctx.clean(wc, "rate"), ""), ")"])
     return [msg("check.willis", carrier=Name(carrier, "body"), planet=Name(planet, "body"), s1=Name(s1, "body"),
-                s2=Name(s2, "body"), formula=formula, radii=radii,
+                s2=Name(s2, "body"), axis=axis, formula=formula, radii=radii,
                 r1=0 if written else Inline([rho(s1), " = ", Value(r1, "len")]),
                 r2=0 if written else Inline([rho(s2), " = ", Value(r2, "len")]), train=Value(train, ""),
                 values=values, ratio=Value(ratio if ratio is not None else train, ""))]

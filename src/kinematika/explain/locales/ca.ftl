@@ -789,7 +789,7 @@ sec-checks = Comprovacions
 check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->
         [vowel] d’{ $carrier }
        *[other] de { $carrier }
-    }, la transmissió és ordinària ({ $planet } engrana amb { $s1 } i amb { $s2 }, els eixos dels quals porta { $carrier }), de manera que { $formula } = { $radii } = { $train }{ $r1 ->
+    }, la transmissió és ordinària ({ $carrier } porta l’eix de { $planet }, que engrana amb { $s1 } i amb { $s2 }, que giren al voltant de l’eix fix que passa per { $axis }), de manera que { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , amb { $r1 } i { $r2 }
     }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.

@@ -555,10 +555,10 @@ what-contact = contact point ({ $kind }) between { $a } and { $b }
 what-body = a point of { $bodies }
 note-text = Note: { $text }
 sec-checks = Checks
-check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet } meshes with { $s1 } and { $s2 }, whose axles { $carrier } { COUNT($carrier) ->
+check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet }, whose axle { $carrier } { COUNT($carrier) ->
         [many] carry
        *[one] carries
-    }), so { $formula } = { $radii } = { $train }{ $r1 ->
+    }, meshes with { $s1 } and { $s2 }, which turn about the fixed axis through { $axis }), so { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , with { $r1 } and { $r2 }
     }. With the angular velocities found above, { $values } = { $ratio }: they agree.
