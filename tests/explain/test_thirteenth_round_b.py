@@ -73,3 +73,29 @@ def test_willis_by_hand():
             "which turn about the fixed axis through O)") in en
     es = rendered("seed_c5_e2_gear_change", "es", "md", drawings=False)
     assert "(el *satélite superior*, cuyo eje lleva el *brazo*, engrana con la *rueda central fija* y la *corona*" in es
+
+
+# 4 ------------------------------------------------------------------------------------------
+# a pair or triple of terms in parentheses joined by ", " (a term may hold a decimal comma), one with a digit
+COMMA_COORDINATES = re.compile(r"\((?=[^()]*\d)[^\s();,]+(?:,[^\s();,]+)?(?:, [^\s();,]+(?:,[^\s();,]+)?){1,2}\)")
+
+
+@pytest.mark.parametrize("lang", ["es", "ca", "eu"])
+@pytest.mark.parametrize("name", SEEDS)
+def test_one_coordinate_separator_a_page(name, lang):
+    """Where the decimal sign is a comma the page writes (x; y); the model's own words too."""
+    text = rendered(name, lang, "md", drawings=False)
+    assert not COMMA_COORDINATES.search(text), (name, COMMA_COORDINATES.findall(text)[:3])
+
+
+@pytest.mark.parametrize("lang", ["es", "ca", "eu"])
+def test_typed_coordinates_by_hand(lang):
+    """C5-1.6: the moving pulley's centre A at (4r; r) in the Data, as the tables write (x; y);
+    C5-1.3: Q = (1; 2) and the contact at (4; 0)."""
+    assert "(4r; r)" in rendered("seed_c5_1_6_belt", lang, "md", drawings=False)
+    text = rendered("seed_c5_1_3_bar_in_sleeve", lang, "md", drawings=False)
+    assert "Q = (1; 2)" in text and "(4; 0)" in text
+
+
+def test_english_coordinates_keep_the_comma():
+    assert "(4r, r)" in rendered("seed_c5_1_6_belt", "en", "md", drawings=False)

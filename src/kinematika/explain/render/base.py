@@ -41,6 +41,10 @@ SUPPLIED_ARTICLE = {"en": "the "}
 NUMBERED = re.compile(r"\s\d+$")
 # an English plural noun ends in s, not in ss, us or is (wheels, pedals; not glass, chassis)
 ENGLISH_PLURAL = re.compile(r"(?i)[a-z]*[^sui]s$")
+# coordinates typed in a model's own words: two or three terms in parentheses, ", " between
+# them, none with a space (a term may hold a decimal comma: (0,6, 0,3, 0)), one with a digit
+_TERM = r"[^\s();,]+(?:,[^\s();,]+)?"
+TYPED_COORDINATES = re.compile(rf"\(({_TERM}(?:, {_TERM}){{1,2}})\)")
 
 
 class Slot(str):
@@ -302,6 +306,7 @@ class Renderer(ABC):
 
         from .names import unicode_name
 
+        text = self.coordinates(text)
         names = [n for n in getattr(self.doc, "parameters", ()) if unicode_name(self.spelt(n)) != n
                  and any(c.isdigit() or c == "_" for c in n)]
         if not names:
@@ -310,6 +315,20 @@ class Renderer(ABC):
                              + r")(?![A-Za-z0-9_]|\.\d)")         # r1² and (r1) too, not r12, x.r1, r1.5
         parts = pattern.split(shown_lines(text))
         return "".join(self.formula(sympy.Symbol(part)) if k % 2 else self.typed(part) for k, part in enumerate(parts))
+
+    def coordinates(self, text: str) -> str:
+        """Coordinates the model typed in its own words, "(4r, r)", written with the page's
+        separator between the terms, as the page writes every vector: (4r; r) where the decimal
+        sign is a comma (`numerals.separator`), so one page has one form (C5-1.6's Spanish and
+        Catalan Data read "(4r, r)" above tables of "(x; y)"). Only terms with no space, one
+        of them with a digit: a parenthesis of words is left alone."""
+        if self.comma == ", ":
+            return text
+
+        def written(m: re.Match) -> str:
+            terms = m.group(1).split(", ")
+            return f"({self.comma.join(terms)})" if any(c.isdigit() for c in m.group(1)) else m.group(0)
+        return TYPED_COORDINATES.sub(written, text)
 
     def typed(self, text: str) -> str:
         """A model's own text escaped, each symbol typed in it as X_sub (SUBSCRIPTED: C5-E.6's
