@@ -99,3 +99,28 @@ def test_typed_coordinates_by_hand(lang):
 
 def test_english_coordinates_keep_the_comma():
     assert "(4r, r)" in rendered("seed_c5_1_6_belt", "en", "md", drawings=False)
+
+
+# 2 ------------------------------------------------------------------------------------------
+# a list item or a paragraph that begins with a name in lower case: "1. *pulley 1*", "*strand 1* is"
+LOWER_START = re.compile(r"^(?:\d+\. )?\*[^\W\dA-Z]{2}", re.M)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_name_that_begins_a_sentence_takes_a_capital(name, lang):
+    """The order of solution and the welded parts' sentence begin with the body's name: it
+    takes a capital, as a name with its article does ("1. La *politja 1*")."""
+    text = rendered(name, lang, "md", drawings=False)
+    assert not LOWER_START.search(text), [m.group(0) for m in LOWER_START.finditer(text)][:3]
+
+
+def test_capitals_by_hand():
+    """C5-1.5: the pulley block's order and its fixed strand; C5-1.4's planet; E.5's Basque chassis;
+    a name later in the sentence keeps its lower case."""
+    en = rendered("seed_c5_1_5_pulley_block", "en", "md", drawings=False)
+    assert "1. *Pulley 1*, from *strand 1*." in en
+    assert "*Strand 1* is welded to the *ceiling*" in en
+    assert "3. *Planet 1*, from the *carrier* and the *ring*." in rendered("seed_c5_1_4_epicyclic", "en", "md",
+                                                                          drawings=False)
+    assert "1. *Txasisa*, datuetatik." in rendered("seed_c5_e5_unequal_wheels", "eu", "md", drawings=False)

@@ -225,7 +225,7 @@ class Renderer(ABC):
             out[0] = self.esc(parts[0][0].upper() + parts[0][1:])
         elif lead and parts[0] == "" and len(parts) > 1:
             first = values[int(parts[1])]
-            if isinstance(first, Name) and first.kind == "body":    # eu: Besoa O puntu finkoaren …
+            if isinstance(first, Name) and first.kind == "body" or self.worded(first):   # eu: Besoa O puntu finkoaren …
                 out[1] = self.capital(out[1])                        # there only, not where it recurs
         return self.contracted("".join(out))
 
@@ -261,6 +261,18 @@ class Renderer(ABC):
             own[i] = markup[:end] + follow.group(1) + markup[end:]
             parts[i + 1] = parts[i + 1][follow.end():]
         return own
+
+    def worded(self, x: Any) -> bool:
+        """Whether a body's name (or a list's first) begins with a word in lower case
+        (*pulley 1*, *strand 1*, Basque *gurpila*), so that it takes a capital where it
+        begins a list item or a sentence ("1. *Pulley 1*, from *strand 1*", "*Strand 1* is
+        welded …"), as a name with its article does ("1. La *politja 1*"); a name that
+        begins with a symbol or a number (*O2E*, *1. polea*, *s*) is left as spelt."""
+        if isinstance(x, Names):
+            return bool(x.items) and self.worded(x.items[0])
+        if not isinstance(x, Name) or x.kind != "body":
+            return False
+        return bool(re.match(r"[^\W\d_A-Z]{2,}\b", self.called(x)))
 
     def capital(self, markup: str) -> str:
         """`markup` with its first letter (past the format's leading tags) a capital."""
@@ -369,7 +381,7 @@ class Renderer(ABC):
         if isinstance(x, Lead):
             text = self.arg(x.item)
             articled = ARTICLES.get(self.lang, NO_ARTICLE).match(self.plain(x.item))
-            return self.capital(text) if isinstance(x.item, Msg) or articled else text
+            return self.capital(text) if isinstance(x.item, Msg) or articled or self.worded(x.item) else text
         if isinstance(x, str):
             return self.points(x)
         if isinstance(x, Sym):
