@@ -225,7 +225,7 @@ class Renderer(ABC):
             out[0] = self.esc(parts[0][0].upper() + parts[0][1:])
         elif lead and parts[0] == "" and len(parts) > 1:
             first = values[int(parts[1])]
-            if isinstance(first, Name) and first.kind == "body" or self.worded(first):   # eu: Besoa O puntu finkoaren …
+            if (isinstance(first, Name) and first.kind == "body") or self.worded(first):   # eu: Besoa O puntu finkoaren …
                 out[1] = self.capital(out[1])                        # there only, not where it recurs
         return self.contracted("".join(out))
 
