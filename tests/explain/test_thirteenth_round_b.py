@@ -124,3 +124,52 @@ def test_capitals_by_hand():
     assert "3. *Planet 1*, from the *carrier* and the *ring*." in rendered("seed_c5_1_4_epicyclic", "en", "md",
                                                                           drawings=False)
     assert "1. *Txasisa*, datuetatik." in rendered("seed_c5_e5_unequal_wheels", "eu", "md", drawings=False)
+
+
+# 1 ------------------------------------------------------------------------------------------
+# a paragraph whose subject is a plural body, told by its plural verb (the tenth round's COUNT)
+PLURAL_SUBJECT = re.compile(r"^The \*[^*]+\* (?:roll|slide|turn|do not|have|are)\b")
+# the pronouns of a singular body: its centre, its points, its guide, it translates
+SINGULAR_PRONOUN = re.compile(r"\bIts\b|\bits (?:centre|points|guide)\b|\bit translates\b|\bit touches\b")
+# the catalogue's messages that say a pronoun of a body named in them
+PRONOUNED = {"rolling-glide": "b", "path-circle": "b", "path-line": "b", "input-revolute": "body",
+             "input-prismatic": "body", "pos-turn_shift": "body", "composition-slide_seen": "body",
+             "translation-same": "body", "vehicle-translation": "body", "vehicle-translation_equal": "body",
+             "what-touching": "body", "cond-prismatic": "a"}
+
+
+@pytest.mark.parametrize("name", SEEDS)
+def test_english_pronouns_agree_with_a_plural_name(name):
+    """C5-E.1: "The *wheels* roll without slipping … Their centre C", never "Its centre"."""
+    text = rendered(name, "en", "md", drawings=False)
+    for line in text.splitlines():
+        if PLURAL_SUBJECT.match(line):
+            assert not SINGULAR_PRONOUN.search(line), line
+
+
+def test_the_cavitys_wheels_by_hand():
+    text = rendered("seed_c5_e1_cavity", "en", "md", drawings=False)
+    assert "The *wheels* roll without slipping on the *cylindrical track*, which does not move. Their centre C" in text
+
+
+@pytest.mark.parametrize("key,var", sorted(PRONOUNED.items()))
+def test_english_messages_take_the_pronoun_from_the_name(key, var):
+    """Each English message that refers back to a body by a pronoun selects it on the body's
+    number (COUNT), as its verbs do: a plural name gets they/their/them, a singular it/its."""
+    from kinematika.explain.catalogue import catalogue
+    from kinematika.explain.render.base import Slot
+
+    def slot(text: str, many: bool) -> Slot:
+        s = Slot(text)
+        s.plain, s.many = text, many
+        return s
+    cat = catalogue("en")
+    names = re.findall(r"\{ \$(\w+) \}", cat.source.split(f"\n{key} =", 1)[1].split("\n", 1)[0]
+                       + "".join(re.findall(rf"(?ms)^{key} = .*?(?=^\S)", cat.source)))
+    args = {n: slot(n, False) for n in names} | {"accel": 1}
+    single = cat.format(key, {**args, var: slot("the *wheel*", False)})
+    plural = cat.format(key, {**args, var: slot("the *wheels*", True)})
+    assert re.search(r"\b(its|it)\b", single), single
+    assert re.search(r"\b(their|they|them|Their)\b", plural), plural
+    after = plural.split("the *wheels*", 1)[1]          # what is said of the body once named
+    assert not re.search(r"\bits (centre|points|guide)\b|\bIts\b|\bit (translates|touches)\b|relative to it\.", after), plural

@@ -135,7 +135,10 @@ pos-turn_toward = { $body } { COUNT($body) ->
 pos-turn_shift = { $body } { COUNT($body) ->
         [many] have
        *[one] has
-    } moved { $shift } along its guide.
+    } moved { $shift } along { COUNT($body) ->
+        [many] their
+       *[one] its
+    } guide.
 pos-carried = { $point } is carried with { $body }: { $point } = { $at }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
@@ -210,17 +213,26 @@ heading-along = along { $along }
 input-revolute = { $body } { COUNT($body) ->
         [many] turn
        *[one] turns
-    } about the fixed pivot { $point }: its points move on circles about { $point }.
+    } about the fixed pivot { $point }: { COUNT($body) ->
+        [many] their
+       *[one] its
+    } points move on circles about { $point }.
 input-prismatic = { $body } { COUNT($body) ->
         [many] slide
        *[one] slides
-    } without turning along its guide.
+    } without turning along { COUNT($body) ->
+        [many] their
+       *[one] its
+    } guide.
 other-intro = These bodies are found together from the conditions of their joints:
 cond-revolute = pin at { $point }: { $point } is one point of { $a } and of { $b }.
 cond-prismatic = prismatic pair: { $b } { COUNT($b) ->
         [many] slide
        *[one] slides
-    } along { $a } without turning relative to it.
+    } along { $a } without turning relative to { COUNT($a) ->
+        [many] them
+       *[one] it
+    }.
 cond-slot = pin { $point } in a slot: its velocity relative to the slotted body is along the slot.
 cond-slot_fixed = the point { $point } of { $b } { COUNT($b) ->
         [many] slide
@@ -248,16 +260,25 @@ rolling-same_edge = { $b } { COUNT($b) ->
 rolling-glide = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls
-    } without slipping on the edge of { $a }. Seen from { $a }, its centre { $centre } keeps its distance from the edge: it moves along a line parallel to the tangent at { $point }. With axes at { $centre } turning with { $a }, the motion of { $centre } is the drag motion (that of the point of { $a } there) plus the relative motion along that line (and, for accelerations, the Coriolis term).
+    } without slipping on the edge of { $a }. Seen from { $a }, { COUNT($b) ->
+        [many] their
+       *[one] its
+    } centre { $centre } keeps its distance from the edge: it moves along a line parallel to the tangent at { $point }. With axes at { $centre } turning with { $a }, the motion of { $centre } is the drag motion (that of the point of { $a } there) plus the relative motion along that line (and, for accelerations, the Coriolis term).
 rolling-kept = the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
 path-circle = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls
-    } without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
+    } without slipping on { $a }, which does not move. { COUNT($b) ->
+        [many] Their
+       *[one] Its
+    } centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
 path-line = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls
-    } without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
+    } without slipping on { $a }, which does not move. { COUNT($b) ->
+        [many] Their
+       *[one] Its
+    } centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
 rolling-same = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls
@@ -306,10 +327,7 @@ composition-relative = Relative: the motion seen from the moving frame, { $sym }
 composition-rolls = { $body } { COUNT($body) ->
         [many] roll
        *[one] rolls
-    } on { $frame } without slipping at { $point }: seen from { $frame }, { $point } is the instant centre of { $body }, { $sym } = 0, and every point of { $body } { COUNT($body) ->
-        [many] turn
-       *[one] turns
-    } about it.
+    } on { $frame } without slipping at { $point }: seen from { $frame }, { $point } is the instant centre of { $body }, { $sym } = 0, and every point of { $body } turns about it.
 sec-curvature = Curvature of paths
 curvature-intro = The acceleration splits into a tangential part along the velocity and a normal part across it; the radius of curvature is { $rho }.
 curvature-point = Point { $point }: velocity { $v }.
@@ -347,7 +365,10 @@ composition-slide = { $point } slides along its guide: its relative motion is al
 composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($body) ->
         [many] do
        *[one] does
-    } not turn relative to { $frame }, so all its points have the relative motion found above: { $sym } = { $seen } = { $value }.
+    } not turn relative to { $frame }, so all { COUNT($body) ->
+        [many] their
+       *[one] its
+    } points have the relative motion found above: { $sym } = { $seen } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in the steps above.
 composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation that found this point in the step above.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
@@ -356,18 +377,18 @@ vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $jo
 vehicle-line-velocity = the perpendicular to { $sym } at { $point }
 vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel’s plane: { $vp } = |{ $vp }| e, with e = { $along } and e · { $seg }/|{ $seg }| = { $cos }. Hence |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, and { $vp } = { $value }.
 vehicle-centre_on_axle = The perpendicular to { $sym } through { $point } is the axle of wheel { $joint } itself ({ $point } lies on it and { $sym } is along the wheel’s plane), so it gives no second line: the second one is the perpendicular to { $vo } through { $other }.
-vehicle-centre = The instant centre of { $body } { COUNT($body) ->
-        [many] lie
-       *[one] lies
-    } on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } { COUNT($body) ->
-        [many] move
-       *[one] moves
-    } perpendicular to its line to { $centre }, at a speed proportional to its distance:
-vehicle-translation = The lines of { $body } are parallel: its centre is at infinity, it translates, and every point moves as { $point }.
+vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
+vehicle-translation = The lines of { $body } are parallel: { COUNT($body) ->
+        [many] their centre is at infinity, they translate
+       *[one] its centre is at infinity, it translates
+    }, and every point moves as { $point }.
 vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = { $vq } = { $value }: { $body } { COUNT($body) ->
         [many] do
        *[one] does
-    } not turn (its centre is at infinity), it translates, and every point moves as { $p }.
+    } not turn ({ COUNT($body) ->
+        [many] their centre is at infinity), they translate
+       *[one] its centre is at infinity), it translates
+    }, and every point moves as { $p }.
 vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $radius } { $spin }, its spin about its axle, so:
 triad-intro = { $body } { COUNT($body) ->
         [many] are
@@ -390,7 +411,10 @@ translation-same = { $body } { COUNT($body) ->
     } not turn ({ $w } = 0{ $accel ->
         [1] , { $a } = 0
        *[other] {""}
-    }): it translates, and all its points have one { $accel ->
+    }): { COUNT($body) ->
+        [many] they translate, and all their
+       *[one] it translates, and all its
+    } points have one { $accel ->
         [1] acceleration
        *[other] velocity
     }:
@@ -550,7 +574,10 @@ col-point = point
 col-what = what it is
 what-centre = centre of { $body }
 what-joint = { $kind } between { $a } and { $b }
-what-touching = the point of { $body } where it touches { $other }
+what-touching = the point of { $body } where { COUNT($body) ->
+        [many] they touch
+       *[one] it touches
+    } { $other }
 what-contact = contact point ({ $kind }) between { $a } and { $b }
 what-body = a point of { $bodies }
 note-text = Note: { $text }
