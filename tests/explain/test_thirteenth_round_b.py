@@ -173,3 +173,36 @@ def test_english_messages_take_the_pronoun_from_the_name(key, var):
     assert re.search(r"\b(their|they|them|Their)\b", plural), plural
     after = plural.split("the *wheels*", 1)[1]          # what is said of the body once named
     assert not re.search(r"\bits (centre|points|guide)\b|\bIts\b|\bit (translates|touches)\b|relative to it\.", after), plural
+
+
+# 6 ------------------------------------------------------------------------------------------
+OLD_SIDE = ("points when turned 90°", "girada 90°", "90° biratuta")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_centre_placed_from_one_velocity_names_its_side(name, lang):
+    """0 = v_Q + ω × QI: the centre is on the perpendicular to v_Q through Q at |v_Q|/|ω|, on
+    the side the sense of ω gives, said by name (below Q, to the left of Q)."""
+    text = rendered(name, lang, "md", drawings=False)
+    assert not any(old in text for old in OLD_SIDE), name
+
+
+@pytest.mark.parametrize("name,lang,said", [
+    # C5-1.6: QI = ω × v_A / ω² with ω = −ω k, v_A = (−rω, 4rω): (4r, r), up and right of A
+    ("seed_c5_1_6_belt", "en", "on the side the sense of ω_{moving pulley} gives: above and to the right of A ("),
+    ("seed_c5_1_6_belt", "ca", "del costat que dona el sentit de ω_{politja mòbil}: per sobre i a la dreta d’A ("),
+    # C5-E.5: ω = v/r₁ k, v_D = (v, 0): QI = (0, r₁), above D
+    ("seed_c5_e5_unequal_wheels", "es", "del lado que da el sentido de ω_rueda1: por encima de D ("),
+    # C5-E.6: ω = −rv/(R R_w) k < 0, v_C = (v, 0): QI points down, below C
+    ("seed_c5_e6_bicycle", "eu", "ω_platera abiadura angeluarraren noranzkoak ematen duen aldean: C puntuaren azpian ("),
+])
+def test_the_side_by_hand(name, lang, said):
+    assert said in rendered(name, lang, "md", drawings=False)
+
+
+@pytest.mark.parametrize("arm,side", [((0, -2), "below"), ((0, 1), "above"), ((-1, 0), "left"), ((3, 0), "right"),
+                                      ((4, 1), "above_right"), ((-1, -1), "below_left")])
+def test_side_of(arm, side):
+    from kinematika.explain.centres import side_of
+    assert side_of(arm) == side

@@ -8,6 +8,8 @@ The centres are the engine's (`questions.centres.all_centres`); this module only
 each one follows."""
 from __future__ import annotations
 
+import math
+
 from itertools import combinations
 from typing import Literal, Optional, overload
 
@@ -227,7 +229,22 @@ def _field(ctx: Ctx, note: CentreNote) -> bool:
     note.rate = ctx.clean(w, "rate")
     note.arm = ctx.clean(tuple(c - p for c, p in zip(note.value["point"], ctx.pos(q))), "len")
     note.distance = ctx.clean(_length(ctx, note.arm), "len")
+    note.side = side_of(ctx.num(note.arm))
     return True
+
+
+def side_of(arm) -> str:
+    """The side of Q the centre lies on, named as the notes' figures show it (x to the right,
+    y up): `below`, `above`, `left`, `right`, or two of them (`below_left`), from the arm QI.
+    A sentence names it ("below A") instead of "the side to which v_A points when turned 90°
+    in the sense of ω", which the readers of stop 41 found roundabout; QI = ω × v_Q / ω² is
+    that side, so the name is the notes' construction said in one word."""
+    x, y = float(arm[0]), float(arm[1])
+    size = math.hypot(x, y)
+    tol = 1e-9 * size
+    up = "above" if y > tol else "below" if y < -tol else ""
+    across = "right" if x > tol else "left" if x < -tol else ""
+    return "_".join(w for w in (up, across) if w)
 
 
 def _parallel(ctx: Ctx, note: CentreNote) -> bool:

@@ -708,21 +708,54 @@ centre-line-slot_fixed = la normal a la recta { ELISION($a) ->
        *[other] de { $a }
     } per { $point }, el punt que hi llisca
 centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $point } (no llisca lateralment)
-centre-field = és a la perpendicular a { $v } per { $q }, del costat cap on apunta { $v } girada 90° en el sentit de { $w }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+centre-field = és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
-    } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+    }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 centre-rate = a partir de la velocitat angular trobada més amunt a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
-    }: és a la perpendicular a { $v } per { $q }, del costat cap on apunta { $v } girada 90° en el sentit de { $w }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+    }: és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
-    } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
-centre-check = Comprovació amb les velocitats trobades: a la perpendicular a { $v } per { $q }, del costat cap on apunta { $v } girada 90° en el sentit de { $w }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+    }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+# the side of a point a centre lies on, named (centre-field: below A, to the left of A)
+side-above = per sobre { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
-    }, el mateix punt: { $centre } és { $where }
+    }
+side-below = per sota { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }
+side-left = a l’esquerra { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }
+side-right = a la dreta { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }
+side-above_left = per sobre i a l’esquerra { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }
+side-above_right = per sobre i a la dreta { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }
+side-below_left = per sota i a l’esquerra { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }
+side-below_right = per sota i a la dreta { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }
+centre-check = Comprovació amb les velocitats trobades: a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }, del costat que dona el sentit de { $w }: { $side }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)

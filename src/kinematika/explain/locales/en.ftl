@@ -522,9 +522,18 @@ centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } wit
 centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
-centre-field = it lies on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
-centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
-centre-check = Check with the velocities found above: on the perpendicular to { $v } through { $q }, on the side to which { $v } points when turned 90° in the sense of { $w }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, the same point: { $centre } is { $where }
+centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+# the side of a point a centre lies on, named (centre-field: below A, to the left of A)
+side-above = above { $q }
+side-below = below { $q }
+side-left = to the left of { $q }
+side-right = to the right of { $q }
+side-above_left = above and to the left of { $q }
+side-above_right = above and to the right of { $q }
+side-below_left = below and to the left of { $q }
+side-below_right = below and to the right of { $q }
+centre-check = Check with the velocities found above: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)

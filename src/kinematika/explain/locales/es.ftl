@@ -456,9 +456,18 @@ centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $
 centre-line-slot = la normal en { $point } a la ranura (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
 centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
-centre-field = está en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
-centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
-centre-check = Comprobación con las velocidades halladas: en la perpendicular a { $v } por { $q }, del lado hacia el que apunta { $v } girada 90° en el sentido de { $w }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, el mismo punto: { $centre } está { $where }
+centre-field = está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
+centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
+# the side of a point a centre lies on, named (centre-field: below A, to the left of A)
+side-above = por encima de { $q }
+side-below = por debajo de { $q }
+side-left = a la izquierda de { $q }
+side-right = a la derecha de { $q }
+side-above_left = por encima y a la izquierda de { $q }
+side-above_right = por encima y a la derecha de { $q }
+side-below_left = por debajo y a la izquierda de { $q }
+side-below_right = por debajo y a la derecha de { $q }
+centre-check = Comprobación con las velocidades halladas: en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)

@@ -408,9 +408,18 @@ centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } 
 centre-line-slot = artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
 centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala, zeinean zehar irristatzen baita
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
-centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
-centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
-centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $v } abiadurak { $w } abiadura angeluarraren noranzkoan 90° biratuta seinalatzen duen aldean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, puntu bera: { $centre }, { $where }
+centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+# the side of a point a centre lies on, named (centre-field: below A, to the left of A)
+side-above = { $q } puntuaren gainean
+side-below = { $q } puntuaren azpian
+side-left = { $q } puntuaren ezkerrean
+side-right = { $q } puntuaren eskuinean
+side-above_left = { $q } puntuaren gainean eta ezkerrean
+side-above_right = { $q } puntuaren gainean eta eskuinean
+side-below_left = { $q } puntuaren azpian eta ezkerrean
+side-below_right = { $q } puntuaren azpian eta eskuinean
+centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side }, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiadura bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)

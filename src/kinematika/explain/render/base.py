@@ -860,7 +860,7 @@ class Renderer(ABC):
     def field_args(self, c: CentreNote, name: Sym) -> dict:
         """0 = v_Q + ω × QI: the point Q, its velocity, ω, the arm QI and its length
         |QI| = |v_Q| / |ω| (the centre on the perpendicular to v_Q through Q, on the side ω turns
-        v_Q to)."""
+        v_Q to, named: below Q, to the left of Q, `centres.side_of`)."""
         a, b = c.pair
         (q, vq), = c.witnesses
         frame = a if a != self.doc_frame() else None
@@ -868,7 +868,8 @@ class Renderer(ABC):
         w = Sym("ω", b if frame is None else f"{b}/{a}", vector=False)
         arm = Inline([Name(q), name])
         return {"v": v, "w": w, "arm": arm, "vq": Value(vq, "speed"), "wv": Value(c.rate, "rate"),
-                "q": Name(q), "dist": Value(c.distance, "len"), "centre": name, "where": self.where(c.value)}
+                "q": Name(q), "dist": Value(c.distance, "len"), "centre": name, "where": self.where(c.value),
+                "side": Msg(f"side.{c.side}", {"q": Name(q)})}
 
     def frame_name(self, body: str) -> Name:
         """A body as the reference of a motion: the fixed one is the ground (`Name.reference`)."""
