@@ -206,3 +206,15 @@ def test_the_side_by_hand(name, lang, said):
 def test_side_of(arm, side):
     from kinematika.explain.centres import side_of
     assert side_of(arm) == side
+
+
+# 5 ------------------------------------------------------------------------------------------
+def test_the_rollers_centre_moves_along_a_guide():
+    """001 rolling pair (slides 4.4): the roller's centre A moves along a guide, the horizontal
+    line through B; "cuyo centro A lleva una corredera" read as the centre carrying a slider.
+    The model's own words (examples/seed_001_rolling_pair.yaml), not a rule of the explainer."""
+    es = rendered("seed_001_rolling_pair", "es", "md", drawings=False)
+    assert "cuyo centro A lleva una corredera" not in es
+    assert "cuyo centro A se desplaza por una guía, la recta horizontal por B" in es
+    ca = rendered("seed_001_rolling_pair", "ca", "md", drawings=False)
+    assert "el centre A del qual es desplaça per una guia" in ca
