@@ -12,6 +12,7 @@ from fluent.syntax import FluentParser, ast as ftl
 import kinematika.explain as explain_package
 import kinematika.questions as questions_package
 from kinematika.explain.catalogue import LANGS, LOCALES, VARIABLE, catalogue
+from kinematika.explain.centres import SIDES
 from kinematika.joints import KINDS
 from kinematika.model.wording import PART_SUBSCRIPTS
 from kinematika.questions import QUESTIONS, QuestionKind
@@ -35,6 +36,7 @@ FAMILIES = {
     "centre.carried": ["between", "outside"],
     "centre.parallel": ["between", "outside"],
     "pos": ["left", "right", "ahead", "behind", "open", "crossed"],
+    "side": list(SIDES),                                      # the side a centre lies on (centres.side_of)
 }
 
 

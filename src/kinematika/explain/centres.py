@@ -9,9 +9,9 @@ each one follows."""
 from __future__ import annotations
 
 import math
-
+from collections.abc import Sequence
 from itertools import combinations
-from typing import Literal, Optional, overload
+from typing import Any, Literal, Optional, overload
 
 from ..questions.centres import all_centres, centre_line, same_line
 from .asked import worked
@@ -233,7 +233,11 @@ def _field(ctx: Ctx, note: CentreNote) -> bool:
     return True
 
 
-def side_of(arm) -> str:
+# the sides `side_of` names (message side.NAME in each catalogue)
+SIDES = ("above", "below", "left", "right", "above_left", "above_right", "below_left", "below_right")
+
+
+def side_of(arm: Sequence[Any]) -> str:
     """The side of Q the centre lies on, named as the notes' figures show it (x to the right,
     y up): `below`, `above`, `left`, `right`, or two of them (`below_left`), from the arm QI.
     A sentence names it ("below A") instead of "the side to which v_A points when turned 90°
