@@ -2,7 +2,8 @@
 fourth audit: C5-1.2's "I_OQ ≡ I16 … v_I16 = 0"). Over the 19 seeds in the four languages,
 Markdown and HTML, text, tables and the figures' labels: no centre is I and digits (I16,
 v_OI16, $I_{16}$ as a point), none is left as the document's token, and a segment to a centre
-sets the symbol apart from its other point (C5-E.5's "DI_roda1" is D I_roda1)."""
+runs into its other point with the symbol's subscript closed (C5-E.5's arm DI_{roda1}: the
+thirteenth round, where it was "D I_roda1")."""
 from __future__ import annotations
 
 import re
@@ -14,8 +15,9 @@ from .helpers import words_of as _words
 
 # I and digits as a name, alone or run into a segment or a subscript (I16, OI16, v_I16, I17J)
 NUMBERED_CENTRE = re.compile(r"(?<![A-Za-z])I\d+")
-# a centre's symbol run into another point's name: DI_roda1, OI_OQ
-GLUED = re.compile(r"(?<![\s(|·×/⊥∥{>$,])(?<=[A-Za-z0-9′'])I_")
+# a centre's symbol run into another point's name with its subscript open: DI_roda1, OI_OQ
+# (DI_{roda1}, OI_{OQ} is the segment, `test_thirteenth_round_a`)
+GLUED = re.compile(r"(?<![\s(|·×/⊥∥{>$,])(?<=[A-Za-z0-9′'])I_(?!\{)")
 TOKEN = re.compile("[\ue010\ue011]|\\\\ue01[01]")
 
 
@@ -36,11 +38,11 @@ def test_the_two_bars_centres_are_their_symbols(lang):
     """C5-1.2, by hand: the bars OQ and OJ have their centres placed before the velocities,
     two on one page, so each is written as its own symbol, I_OQ and I_OJ (the subscripts the
     model's Basque, Catalan, Spanish and English names give: OQ barra, barra OQ …), in the
-    velocity steps: v_{I_OQ} = 0 and the segment O I_OQ; never "I_OQ ≡ I_OQ"."""
+    velocity steps: v_{I_OQ} = 0 and the segment OI_{OQ}; never "I_OQ ≡ I_OQ"."""
     text = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang, "md", drawings=False)
     for bar in ("OQ", "OJ"):
         assert f"v_{{I_{bar}}} = (0" in text, (lang, bar)
-        assert f"v_{{O I_{bar}}}" in text and f"⊥ I_{bar} O" in text, (lang, bar)
+        assert f"v_{{OI_{{{bar}}}}}" in text and f"⊥ I_{{{bar}}}O" in text, (lang, bar)
         assert f"I_{bar} ≡" not in text
     html = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang, "html", drawings=False)
     assert '<sub><i>I</i><sub>OQ</sub></sub>' in html          # v with the subscript I_OQ, nested

@@ -42,6 +42,7 @@ def draw_bodies(ctx: Context) -> None:
         else:
             _body(ctx, body)
     _points(ctx)
+    _contact_names(ctx)
 
 
 def _skeleton(ctx: Context, body: BodyView, colour: str, width: float = BAR_WIDTH) -> None:
@@ -401,6 +402,26 @@ def _points(ctx: Context) -> None:
                 named.add(name)
                 ctx.label(p, plain(name), POINT_LABEL, 3, f"point:{name}", body=mover,
                           group=f"point:{name}", weight="bold", radius=2.0)
+
+
+def _contact_names(ctx: Context) -> None:
+    """The letter of each contact point the text names (`JointView.contact_name`, from
+    `DrawOptions.contacts`), set by its dot as a point's name is: a page that says "the
+    contact J" shows J where the wheel touches (issue 30, thirteenth round). A contact that
+    is a model's point is already labelled by `_points`; one the text never names has no
+    letter (a still figure only: the dot is no body's point)."""
+    if not ctx.still:
+        return
+    named = {n for body in ctx.scene.bodies.values() for n in body.points}
+    done: set[str] = set()
+    for j in ctx.scene.joints:
+        name = j.contact_name
+        if not name or j.contact is None or name in named or name in done:
+            continue
+        done.add(name)
+        p = np.asarray(j.contact, dtype=float)
+        ctx.avoid(p, weight=2.0, radius=2.0)
+        ctx.label(p, plain(name), POINT_LABEL, 3, f"contact:{name}", weight="bold", radius=2.0)
 
 
 def _distinct(pts: list, tol: float) -> list:

@@ -37,6 +37,8 @@ def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = No
     _mark_ground_sides(bodies, model, geos, num)
     _mark_gears(bodies, model, geos, num)
     joints = [_joint(j, geos.get(j.id), num) for j in model.joints]
+    for view in joints:
+        view.contact_name = (options.contacts or {}).get(view.id, "")
     scene = Scene(model.wording.title(options.lang, model.name) if options.lang else model.name,
                   model.dimension, proj, bodies, joints, size, box)
     add_skeletons(scene, inst, num, geos)

@@ -41,6 +41,9 @@ class DrawOptions:
     lang: Optional[str] = None        # how numbers and words are written: None as Python
                                       # does and in English, else as that language (see above)
     dimensions: Optional[list] = None  # `draw.dimensions.Dimension` marks (a statement's data)
+    contacts: Optional[dict] = None   # joint id -> the letter a text names its contact point
+                                      # by (J, K, T2): the figure labels that contact's dot
+                                      # with it, and no other contact (issue 30, 13th round)
 
     def __post_init__(self) -> None:
         if self.lang is not None:

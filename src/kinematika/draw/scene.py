@@ -90,6 +90,7 @@ class JointView:
     span: Optional[tuple[Vec, Vec]] = None  # a slot given by two points
     contact: Optional[Vec] = None
     radius: float = 0.0                    # a cam follower's roller
+    contact_name: str = ""                 # the letter the text names the contact by (labelled)
 
     @property
     def kind(self) -> Any:

@@ -223,19 +223,22 @@ def _touching(ctx: Ctx, name: str, holders: list[str]) -> Optional[Msg]:
     return None
 
 
-def contact_rows(ctx: Ctx, doc: Any) -> None:
+def contact_rows(ctx: Ctx, doc: Any) -> dict[str, str]:
     """The contact points the page names (J1, J4 …: the explanation names them, the model
     does not) join the Data section's table of points, with what they are and where, so
     that every point the page writes is located before it is used (C5-1.5's J1 … J10); a
     contact the page names nowhere but in the structure table is not named there either
     (its cell gives its position): the table of points lists no point the page never uses (issue 30,
-    ninth round: C5-1.4's K, Q and S, C5-E.2's K and N, listed and never used)."""
+    ninth round: C5-1.4's K, Q and S, C5-E.2's K and N, listed and never used). Returns
+    the contacts the page names that are no model's point (joint id -> name): the figures
+    label those (`structure.name_contacts`)."""
     table = next((b for b in doc.sections[0].blocks if isinstance(b, Table)
                   and getattr(b.header[0], "key", "") == "col.point"), None)
-    if table is None:
-        return
-    listed = {row[0].text for row in table.rows if isinstance(row[0], Name)}
     used = points_used(ctx, doc)
+    named = {jid: name for jid, name in ctx._contacts.items() if name in used and name not in ctx.model.points}
+    if table is None:
+        return named
+    listed = {row[0].text for row in table.rows if isinstance(row[0], Name)}
     from .kinds import kind_key
 
     for jid, name in ctx._contacts.items():
@@ -252,6 +255,7 @@ def contact_rows(ctx: Ctx, doc: Any) -> None:
             where = Inline([point(at), " = ", where])
         table.rows.append([point(name), what, where])
         listed.add(name)
+    return named
 
 
 # the tables that say what the page's points are, not where it uses them

@@ -185,6 +185,16 @@ class Equation:
     owned: list = field(default_factory=list, repr=False)    # the sentences written for it alone (a contact's rule)
     contacts: list = field(default_factory=list, repr=False) # the contact points they are about
 
+    @property
+    def equality(self) -> bool:
+        """Whether the equation only says that two points move alike (v_T2 = v_T1: the two
+        points of a contact, a point shared by two bodies, the points of a strand that
+        translates): one side of one term, itself a point's motion. That is not a polygon and
+        is written as a plain equality after its reason, with no M/D/? marks, which the
+        notes keep for a composition of two or more terms (issue 30, thirteenth round)."""
+        return len(self.sides) == 1 and len(self.sides[0]) == 1 and self.sides[0][0].kind == "point" \
+            and self.target.kind == "point"
+
 
 @dataclass
 class Derived:

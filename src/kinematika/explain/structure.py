@@ -156,6 +156,23 @@ def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
     return Drawing(msg(caption, **args), ctx.sol, options, fallback, values)
 
 
+def name_contacts(ctx: Ctx, doc: Any, named: dict[str, str]) -> None:
+    """Every figure of the mechanism labels the contact points the page names (joint id ->
+    J, K, T2 …: `data.contact_rows`) with the page's letter, and no other: a reader told
+    "the pulley rolls on the strand at J" finds J in the figure (issue 30, thirteenth round:
+    C5-1.1's J and K were dots without letters). The drawings get them as `DrawOptions`'
+    contacts, the LaTeX mechanism's figure as labelled points."""
+    if not named or not ctx.planar:
+        return
+    for b in doc.blocks():
+        if isinstance(b, Drawing):
+            b.options["contacts"] = dict(named)
+            if b.fallback is not None and b.fallback.points:
+                have = {label for label, _, _ in b.fallback.points}
+                b.fallback.points += [(name, ctx.num(ctx.pos(name)), "point")
+                                      for name in dict.fromkeys(named.values()) if name not in have]
+
+
 def _arrows_drawn(ctx: Ctx, options: dict) -> dict:
     """What the mechanism's figure draws of the velocities, read off the figure itself, for
     its caption to say just that: `arrows` 1 (one arrow: "the arrow is the velocity of B"),

@@ -334,7 +334,7 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
                      where=Value(ctx.clean(_exact_centre(ctx, b, centre), "len"), "len"))]
     known = set(speeds or ()) - {witness}
     for k, p in enumerate([witness] + [q for q in ctx.model.bodies[b].points if q != witness and q not in known]):
-        arm = Inline([ident, " ", Name(p)])
+        arm = Inline([ident, Name(p)])          # the segment I_{S2}P, run together (`Renderer.inline`)
         value = ctx.clean(ctx.vel(b, p), "speed")
         term = Term(Sym("v", segment(p, "I")), value, Ann("?") if k == 0 else Ann("M", [w, "·", arm]),
                     Ann("perp", arm), [w, " × ", arm], k == 0, "rotation")

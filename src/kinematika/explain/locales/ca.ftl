@@ -52,13 +52,13 @@ structure-frame = { $body } (fix)
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
-        [one] està unit
-       *[other] estan units
-    } rígidament a { $frame }: { $bodies_n ->
+        [one] és fix a
+       *[other] són fixos a
+    } { $frame }: { $bodies_n ->
         [one] forma part del sòlid fix, no és un sòlid mòbil
        *[other] formen part del sòlid fix, no són sòlids mòbils
     }; tots els seus punts tenen velocitat i acceleració nul·les.
-structure-fixed_part = { $body } (unit rígidament a { $frame }: fix)
+structure-fixed_part = { $body } (fix a { $frame })
 structure-dof = El mecanisme té { $dof ->
         [one] un grau
        *[other] { $dof } graus
@@ -74,7 +74,7 @@ joint-slot_fixed = contacte amb lliscament (un punt sobre una recta fixa)
 joint-wheel = roda (sense lliscament lateral)
 joint-rolling = rodolament
 joint-gear = engranatge
-joint-weld = unió rígida
+joint-weld = sòlids solidaris
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
 fig-drag = d’arrossegament de { $point } ({ $sym })
@@ -381,7 +381,7 @@ centre-joint-revolute = l’eix de l’articulació { $joint },
 centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),
 centre-joint-gear = el contacte { $joint } de les circumferències primitives,
 centre-joint-prismatic = l’enllaç és prismàtic: el moviment relatiu és una translació i el CIR és a la perpendicular a la guia,
-centre-joint-weld = els dos sòlids estan units rígidament:
+centre-joint-weld = els dos sòlids són solidaris:
 centre-kennedy = per Aronhold–Kennedy és a la recta que passa per { $l1 } (tercer sòlid { $k1 }) i a la recta que passa per { $l2 } (tercer sòlid { $k2 }); aquestes rectes es tallen
 centre-velocities = les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
@@ -548,7 +548,7 @@ loop-solve = Les tres components donen les velocitats desconegudes:
 loop-solve_alpha = Derivant en els eixos fixos, les acceleracions angulars relatives i els termes { $cross } sumen zero al llarg del llaç; les tres components donen les { $rate } desconegudes:
 dir-axis = eix { $joint }
 dir-wheel = roda { $joint }
-how-weld = (unió rígida: un sol sòlid)
+how-weld = (solidaris: un sol sòlid rígid)
 group-wheel_v = La roda { $joint } no llisca lateralment: la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
@@ -656,7 +656,7 @@ dir-tangent = tangent a { $point }
 dir-centre = cap al centre de curvatura { $point }
 higher-intro = El parell superior s'escriu com el moviment de { $point } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l'acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
 higher-straight = El parell superior s'escriu com el moviment de { $point } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).
-centre-weld = { $body } i { $other } estan units rígidament: són un sol sòlid, de manera que el CIR és el { ELISION($other) ->
+centre-weld = { $body } i { $other } són solidaris: són un sol sòlid rígid, de manera que el CIR és el { ELISION($other) ->
         [vowel] d’{ $other }
        *[other] de { $other }
     }, { $same },

@@ -39,14 +39,14 @@ structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
         [one] is
        *[other] are
-    } welded to { $frame }: part of the fixed body, not { $bodies_n ->
+    } fixed to { $frame }: part of the fixed body, not { $bodies_n ->
         [one] a moving body
        *[other] moving bodies
     }; all { $bodies_n ->
         [one] its
        *[other] their
     } points have zero velocity and acceleration.
-structure-fixed_part = { $body } (welded to { $frame }: fixed)
+structure-fixed_part = { $body } (fixed to { $frame })
 structure-dof = The mechanism has { $dof ->
         [one] one degree
        *[other] { $dof } degrees
@@ -62,7 +62,7 @@ joint-slot_fixed = sliding contact (a point on a fixed line)
 joint-wheel = wheel (knife edge)
 joint-rolling = rolling
 joint-gear = gear
-joint-weld = weld
+joint-weld = rigid joint
 joint-spherical = spherical
 joint-cylindrical = cylindrical
 fig-drag = the drag velocity of { $point } ({ $sym })
@@ -303,7 +303,7 @@ centre-joint-revolute = the pin { $joint },
 centre-joint-rolling = the contact point { $joint } (rolling without slipping),
 centre-joint-gear = the contact { $joint } of the pitch circles,
 centre-joint-prismatic = the pair is prismatic: the relative motion is a translation and the centre is perpendicular to the guide,
-centre-joint-weld = the two bodies are welded:
+centre-joint-weld = the two bodies are one rigid body:
 centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines meet
 centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
 centre-lines = it lies on { $first } and on { $second }; these lines meet
@@ -401,7 +401,7 @@ loop-solve = The three components give the unknown rates:
 loop-solve_alpha = Differentiating in the fixed axes, the relative angular accelerations and the terms { $cross } add up to zero round the loop; the three components give the unknown { $rate }:
 dir-axis = axis { $joint }
 dir-wheel = wheel { $joint }
-how-weld = (weld: one body)
+how-weld = (fixed to each other: one rigid body)
 group-wheel_v = The wheel { $joint } does not slip sideways: the velocity of { $point } lies in the wheel's plane.
 group-wheel_a = The wheel { $joint } does not slip sideways at any instant, and its plane turns with { $body }: the acceleration of { $point } is a tangential part in the plane and a normal part across it, { $w } × { $v }.
 how-translation = (it translates)
@@ -509,7 +509,7 @@ higher-straight = The higher pair is written as the motion of { $point } along a
 centre-weld = { $body } { COUNT($body) ->
         [many] are
        *[one] is
-    } welded to { $other }: they are one body, so the centre is that of { $other }, { $same },
+    } fixed to { $other }: they are one rigid body, so the centre is that of { $other }, { $same },
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
 centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)

@@ -37,13 +37,13 @@ structure-frame = { $body } (fijo)
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
-        [one] está unido
-       *[other] están unidos
-    } rígidamente a { $frame }: { $bodies_n ->
+        [one] es fijo a
+       *[other] son fijos a
+    } { $frame }: { $bodies_n ->
         [one] forma parte del sólido fijo, no es un sólido móvil
        *[other] forman parte del sólido fijo, no son sólidos móviles
     }; todos sus puntos tienen velocidad y aceleración nulas.
-structure-fixed_part = { $body } (unido rígidamente a { $frame }: fijo)
+structure-fixed_part = { $body } (fijo a { $frame })
 structure-dof = El mecanismo tiene { $dof ->
         [one] un grado
        *[other] { $dof } grados
@@ -59,7 +59,7 @@ joint-slot_fixed = contacto con deslizamiento (un punto sobre una recta fija)
 joint-wheel = rueda (sin deslizamiento lateral)
 joint-rolling = rodadura
 joint-gear = engranaje
-joint-weld = unión rígida
+joint-weld = sólidos solidarios
 joint-spherical = par esférico
 joint-cylindrical = par cilíndrico
 fig-drag = de arrastre de { $point } ({ $sym })
@@ -267,7 +267,7 @@ centre-joint-revolute = el eje de la articulación { $joint },
 centre-joint-rolling = el punto de contacto { $joint } (rodadura sin deslizamiento),
 centre-joint-gear = el contacto { $joint } de las circunferencias primitivas,
 centre-joint-prismatic = el par es prismático: el movimiento relativo es una traslación y el CIR está en la perpendicular a la guía,
-centre-joint-weld = los dos sólidos están unidos rígidamente:
+centre-joint-weld = los dos sólidos son solidarios:
 centre-kennedy = por Aronhold–Kennedy está en la recta que pasa por { $l1 } (tercer sólido { $k1 }) y en la recta que pasa por { $l2 } (tercer sólido { $k2 }); estas rectas se cortan
 centre-velocities = las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
 centre-lines = está en { $first } y en { $second }; estas rectas se cortan
@@ -344,7 +344,7 @@ loop-solve = Las tres componentes dan las velocidades desconocidas:
 loop-solve_alpha = Derivando en los ejes fijos, las aceleraciones angulares relativas y los términos { $cross } suman cero a lo largo del lazo; las tres componentes dan las { $rate } desconocidas:
 dir-axis = eje { $joint }
 dir-wheel = rueda { $joint }
-how-weld = (unión rígida: un solo sólido)
+how-weld = (solidarios: un solo sólido rígido)
 group-wheel_v = La rueda { $joint } no desliza lateralmente: la velocidad de { $point } está en el plano de la rueda.
 group-wheel_a = La rueda { $joint } no desliza lateralmente en ningún instante y su plano gira con { $body }: la aceleración de { $point } tiene una parte tangencial en el plano y una normal perpendicular a él, { $w } × { $v }.
 how-translation = (se traslada)
@@ -440,7 +440,7 @@ dir-tangent = tangente en { $point }
 dir-centre = hacia el centro de curvatura { $point }
 higher-intro = El par superior se escribe como el movimiento de { $point } por su trayectoria relativa a { $holder } (una ranura según la tangente, curva de radio { $radius }): la aceleración relativa tiene una parte normal v²/ρ hacia el centro de curvatura de la trayectoria.
 higher-straight = El par superior se escribe como el movimiento de { $point } por una trayectoria recta relativa a { $holder } (una ranura según la tangente).
-centre-weld = { $body } y { $other } están unidos rígidamente: son un solo sólido, así que el CIR es el de { $other }, { $same },
+centre-weld = { $body } y { $other } son solidarios: son un solo sólido rígido, así que el CIR es el de { $other }, { $same },
 centre-line-kennedy = la recta que pasa por { $l } (Aronhold–Kennedy, tercer sólido { $k })
 centre-line-moves = la perpendicular a { $v } por { $point } ({ $point } se mueve con { $body }, que { COUNT($body) ->
         [many] giran

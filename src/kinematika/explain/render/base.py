@@ -174,6 +174,8 @@ class Renderer(ABC):
             return LEGEND
         if isinstance(b, Msg):
             return self.para(self.sentence(self.message(b, lead=True)))
+        if isinstance(b, Equation) and b.equality:
+            return self.para(self.equality(b))
         if isinstance(b, Equation):
             out = self.equation(b)
             return out + ("\n" + self.figure(b.polygon) if b.polygon is not None else "")
@@ -405,14 +407,26 @@ class Renderer(ABC):
 
     def inline(self, items: list) -> str:
         """Inline items (text, symbols, values …) written in a row; a point and a centre's
-        symbol side by side (a segment to the centre, the arm D I_roda1) set apart by a space,
-        as the notes write CIR^roda_T C_roda, never DI_roda1."""
+        symbol side by side (a segment to the centre, the arm DI_{roda1}) run together as
+        every other segment of the page is (IC, G1J, AI_13), the centre's subscript closed
+        (`segment_centre`): no space inside a segment (issue 30, thirteenth round: the readers
+        read "I_S2 P" as two things)."""
         out = []
         for k, i in enumerate(items):
-            if k and _segment_end(items[k - 1]) and _segment_end(i) and "I" in (_base(items[k - 1]), _base(i)):
-                out.append(" ")
-            out.append(self.arg(i))
+            before = k and _segment_end(items[k - 1]) and "I" in (_base(items[k - 1]), _base(i))
+            after = k + 1 < len(items) and _segment_end(items[k + 1]) and "I" in (_base(items[k + 1]), _base(i))
+            text = self.arg(i)
+            if _segment_end(i) and (before or after) and _base(i) == "I":
+                text = self.segment_centre(text)
+            out.append(text)
         return "".join(out)
+
+    def segment_centre(self, text: str) -> str:
+        """A centre's symbol as written inside a segment: where its subscript is plain text
+        (I_S2), in braces, so that the segment's other point is read apart from it: I_{S2}P,
+        DI_{roda1}, as the notes' LaTeX sets I_{S2}P; a symbol the format sets with a real
+        subscript (HTML, LaTeX) is left as it is."""
+        return _PLAIN_CENTRE.sub(lambda m: f"{m.group(1)}_{{{m.group(2)}}}", text)
 
     def cell(self, c: Any) -> str:
         """A table cell; answers come as [(label, Value), ...]."""
@@ -675,11 +689,12 @@ class Renderer(ABC):
         sub = self.numbered(c)
         return f"{c.base}_{{{sub}}}" if " " in sub else f"{c.base}_{sub}"
 
-    def centred(self, text: str, write: Callable[[str], str], centre: Callable[[Sym], str], gap: str = " ") -> str:
+    def centred(self, text: str, write: Callable[[str], str], centre: Callable[[Sym], str], gap: str = "") -> str:
         """`text` (a point's name, a segment, a subscript) with each centre placed as a point
         written as its symbol in this language (`centre`), the rest by `write`. In a segment
-        the symbol stands apart from the other point by a space, as the notes write
-        CIR^roda_T C_roda: O I_OQ, I_OQ O, never OI_OQ."""
+        the symbol runs into the other point as any segment's two ends do (OI_{OQ},
+        I_{OQ}O: `segment_centre` closes a plain subscript), never with a space between
+        (issue 30, thirteenth round); `gap` is kept for a format that wants one."""
         parts = CENTRE_POINT_RE.split(text)
         if len(parts) == 1:
             return write(text)
@@ -690,9 +705,12 @@ class Renderer(ABC):
                 continue
             before, after = parts[k - 1], parts[k + 1]
             end = before[-1:]
-            lead = gap if (end and (end.isalnum() or end in "'′")) or (k > 1 and not before) else ""
-            trail = gap if after[:1].isalnum() else ""
-            out.append(lead + centre(self.centre_sym(part)) + trail)
+            joined_before = bool(end and (end.isalnum() or end in "'′")) or (k > 1 and not before)
+            joined_after = after[:1].isalnum()
+            written = centre(self.centre_sym(part))
+            if joined_before or joined_after:
+                written = self.segment_centre(written)
+            out.append((gap if joined_before else "") + written + (gap if joined_after else ""))
         return "".join(out)
 
     def points(self, text: str) -> str:
@@ -797,6 +815,12 @@ class Renderer(ABC):
         """A term as an equation writes it: its symbol (a_QS^t), or its formula where the
         term is spelt out (a wheel's centre alone on a straight path: a_H = α × GH)."""
         return self.inline(t.how) if t.spelt and t.how else self.sym(t.sym)
+
+    def equality(self, eq: Equation) -> str:
+        """Two points' equal motions in one line, v_T2 = v_T1 = (0; −2·v) (`Equation.equality`):
+        the sentence before it gives the reason; no marks, no list of terms."""
+        t = eq.sides[0][0]
+        return " = ".join([self.sym(eq.target.sym), self.written(t), self.value(Value(t.value, _unit(t.sym)))])
 
     def term_line(self, t) -> str:
         """`v_BA = ω × AB = (…) m/s` for the list of an equation's terms (`α × GH = (…)` for
@@ -916,6 +940,10 @@ def magnitude_towards(t: Any) -> Optional[str]:
 
 def _unit(s: Sym) -> str:
     return {"v": "speed", "a": "accel", "ω": "rate", "α": "rate2", "ω×ω": "rate2"}.get(s.base, "")
+
+
+# a centre's symbol written as plain text with an open subscript: I_S2, I_OQ (not I_{roda sup})
+_PLAIN_CENTRE = re.compile(r"^(I)_([^{\s][^\s]*)$")
 
 
 def _segment_end(x: Any) -> bool:

@@ -129,8 +129,8 @@ class LatexRenderer(Renderer):
         s = self.noted(s)
         base = tex_math(s.base).strip() if s.base != "ω×ω" else r"\omega\times\omega"     # ψ̇ as \dot{\psi}
         base = rf"\vec{{{base}}}" if s.vector else base
-        sub = self.centred(self.sub_text(s, centres=False), lambda t: tex_math_text(t) if t else "", self.math_sym,
-                           gap=r"\ ")             # a centre's symbol inside: v_{O\ I_{OQ}}
+        sub = self.centred(self.sub_text(s, centres=False), lambda t: tex_math_text(t) if t else "",
+                           self.math_sym)          # a centre's symbol inside: v_{O I_{OQ}}, run together
         return base + (f"_{{{sub}}}" if sub else "") + (f"^{{{tex_math_text(s.sup)}}}" if s.sup else "")
 
     def symbol(self, s: Sym) -> str:
