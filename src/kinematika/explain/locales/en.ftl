@@ -348,8 +348,12 @@ composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($b
         [many] do
        *[one] does
     } not turn relative to { $frame }, so all its points have the relative motion found above: { $sym } = { $seen } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in the steps above.
-composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation that found this point in the step above.
+composition-slide_seen_step = { $point } slides along its guide; { $body } { COUNT($body) ->
+        [many] do
+       *[one] does
+    } not turn relative to { $frame }, so all its points have the relative motion found in Step { $step }: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in Step { $step }.
+composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation of Step { $step }.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)

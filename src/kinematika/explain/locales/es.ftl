@@ -324,8 +324,9 @@ centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa 
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de su guía: su movimiento relativo sigue la guía, { $sym } = { $value }.
 composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado arriba: { $sym } = { $seen } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en los pasos anteriores.
-composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación con la que se halló este punto en el paso anterior.
+composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado en el paso { $step }: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
+composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación del paso { $step }.
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)
