@@ -53,3 +53,77 @@ def test_the_drags_steps_by_hand(lang):
     terms = [m for line in rolling.splitlines() if "= v_B + v_AB =" in line or "= a_B + a_AB^n + a_AB^t =" in line
              for m in re.findall(ref, line)]
     assert terms == ["2", "2"], terms
+
+
+NEITHER = {"en": r"slips on neither the \*[^*]+\* nor the \*[^*]+\*",
+           "es": r"no desliza sobre (?:el|la) \*[^*]+\* ni sobre (?:el|la) \*[^*]+\*",
+           "ca": r"no llisca (?:ni )?sobre (?:el|la) \*[^*]+\* ni sobre (?:el|la) \*[^*]+\*",
+           "eu": r"ez da irristatzen ez \*[^*]+\* [^,;:]*? ez \*[^*]+\*"}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_belt_slips_on_neither_pulley(name, lang):
+    """Never "does not slip on X nor on Y"; where a page says a belt or chain keeps to both
+    wheels (C5-1.6's belt, C5-E.6's chain), it says it in its language's neither … nor."""
+    text = rendered(name, lang, "md", drawings=False)
+    assert "nor on" not in text
+    if name in ("seed_c5_1_6_belt", "seed_c5_e6_bicycle"):
+        assert re.search(NEITHER[lang], text), (name, lang)
+
+
+def _prose(text: str) -> list[str]:
+    """The page's lines but a pipe table's rows."""
+    return [line for line in text.splitlines() if not re.match(r"^\| .* \|$", line)]
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_magnitudes_bars_are_one_character(name, lang):
+    """Markdown: no | but a table row's own (a cell's bars are ∣, so every line's are);
+    HTML: no ∣ at all (its cells hold |, and ∣ is the sign 'divides')."""
+    md = rendered(name, lang, "md", drawings=False)
+    assert not [line for line in _prose(md) if "|" in line], name
+    assert "∣" not in rendered(name, lang, "html", drawings=False)
+
+
+def test_the_semicylinders_bars_by_hand():
+    """C5-1.7: the curvature formula and the answers' table write one bar, ℜ_P = |v_P|²/|a_P^n|."""
+    text = rendered("seed_c5_1_7_semicylinder", "en", "md", drawings=False)
+    assert "ℜ_P = ∣v_P∣² / ∣a_P^n∣ = 3·r" in text and "∣v_P∣ = 2·r·ω" in text
+
+
+APOSTROPHE = {"en": "'", "ca": "’"}
+APOSTROPHES = re.compile(r"(?<=\w)['’]")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_one_apostrophe_a_page(name, lang):
+    """A page's apostrophes (a catalogue's and the model's own words) are one character:
+    English straight, Catalan typographic; C5-2.2 wrote "wheel’s" and "wheel's"."""
+    found = set(APOSTROPHES.findall(rendered(name, lang, "md", drawings=False)))
+    assert len(found) <= 1 and found <= {APOSTROPHE.get(lang, "'"), *APOSTROPHE.values()}, (name, lang, found)
+    if lang in APOSTROPHE:
+        assert found <= {APOSTROPHE[lang]}, (name, lang, found)
+
+
+@pytest.mark.parametrize("lang", APOSTROPHE)
+def test_each_catalogue_writes_one_apostrophe(lang):
+    """Outside comments, a catalogue's apostrophes are all its language's one."""
+    from pathlib import Path
+
+    import kinematika.explain
+
+    path = Path(kinematika.explain.__file__).parent / "locales" / f"{lang}.ftl"
+    lines = [line for line in path.read_text(encoding="utf-8").splitlines() if not line.startswith("#")]
+    assert set(APOSTROPHES.findall("\n".join(lines))) == {APOSTROPHE[lang]}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_tricycles_units_do_not_match(lang):
+    """C5-2.1's note: the notes' √(2L) is a misprint since with √L the units do not match."""
+    text = rendered("seed_c5_2_1_tricycle", lang, "md", drawings=False)
+    said = {"en": "since with √L the units do not match", "es": "con √L las unidades no cuadran",
+            "ca": "amb √L les unitats no quadren", "eu": "√L-rekin unitateak ez baitatoz bat"}
+    assert said[lang] in text and "length's unit" not in text

@@ -655,8 +655,8 @@ cond-curved_slot = passador { $point } en ranura corba: la seva velocitat relati
 cond-cam = lleva: el seguidor { $b } es manté en contacte amb la lleva { $a }.
 dir-tangent = tangent a { $point }
 dir-centre = cap al centre de curvatura { $point }
-higher-intro = El parell superior s'escriu com el moviment de { $point } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l'acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
-higher-straight = El parell superior s'escriu com el moviment de { $point } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).
+higher-intro = El parell superior s’escriu com el moviment de { $point } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l’acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
+higher-straight = El parell superior s’escriu com el moviment de { $point } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).
 centre-weld = { $body } i { $other } estan units rígidament: són un sol sòlid, de manera que el CIR és el { ELISION($other) ->
         [vowel] d’{ $other }
        *[other] de { $other }
