@@ -72,27 +72,6 @@ def test_a_belt_slips_on_neither_pulley(name, lang):
         assert re.search(NEITHER[lang], text), (name, lang)
 
 
-def _prose(text: str) -> list[str]:
-    """The page's lines but a pipe table's rows."""
-    return [line for line in text.splitlines() if not re.match(r"^\| .* \|$", line)]
-
-
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
-def test_a_magnitudes_bars_are_one_character(name, lang):
-    """Markdown: no | but a table row's own (a cell's bars are ∣, so every line's are);
-    HTML: no ∣ at all (its cells hold |, and ∣ is the sign 'divides')."""
-    md = rendered(name, lang, "md", drawings=False)
-    assert not [line for line in _prose(md) if "|" in line], name
-    assert "∣" not in rendered(name, lang, "html", drawings=False)
-
-
-def test_the_semicylinders_bars_by_hand():
-    """C5-1.7: the curvature formula and the answers' table write one bar, ℜ_P = |v_P|²/|a_P^n|."""
-    text = rendered("seed_c5_1_7_semicylinder", "en", "md", drawings=False)
-    assert "ℜ_P = ∣v_P∣² / ∣a_P^n∣ = 3·r" in text and "∣v_P∣ = 2·r·ω" in text
-
-
 APOSTROPHE = {"en": "'", "ca": "’"}
 APOSTROPHES = re.compile(r"(?<=\w)['’]")
 
@@ -127,3 +106,22 @@ def test_the_tricycles_units_do_not_match(lang):
     said = {"en": "since with √L the units do not match", "es": "con √L las unidades no cuadran",
             "ca": "amb √L les unitats no quadren", "eu": "√L-rekin unitateak ez baitatoz bat"}
     assert said[lang] in text and "length's unit" not in text
+
+
+# what a Spanish teacher edited on the HTML pages: old wording -> the teacher's
+SPANISH = {"que halla el paso": "permite hallar dos incógnitas",
+           "Conocidas las velocidades": "Una vez halladas las velocidades",
+           "una fórmula exacta en ellos": "una fórmula exacta en función de ellos"}
+
+
+@pytest.mark.parametrize("fmt", ["md", "html"])
+@pytest.mark.parametrize("name", SEEDS)
+def test_the_spanish_teachers_wording(name, fmt):
+    """Spanish: an equation lets one find two unknowns (it "solves" none, and no step "finds"
+    in the passive's place); "Conocidas … son conocidos" says known twice; a result is a
+    formula "en función de" the symbols, never "en ellos" (a calque of "in them")."""
+    text = rendered(name, "es", fmt, drawings=False)
+    for old, new in SPANISH.items():
+        assert old not in text, (name, old)
+    assert "permite hallar dos incógnitas" in text and "Una vez halladas las velocidades" in text \
+        or "## Aceleraciones" not in text and "<h2>Aceleraciones" not in text

@@ -29,11 +29,8 @@ from .unicode import unicode_formula
 MARKUP = re.compile(r"([\\`*\[\]]|<(?=[A-Za-z/!?])|(?<=^)>|(?<!\w)_|_(?!\w))", re.M)
 BAR = re.compile(r"(?<!\\)\|")
 # the notes' magnitude bars (|a_T^n(P)|) inside a table's cell: the mathematical bar ∣ (U+2223),
-# which reads the same and ends no cell, never an escape (\|) a reader sees as text; and so,
-# one character for a magnitude's bars on a page, everywhere else in the page too (`page`)
+# which reads the same and ends no cell, never an escape (\|) a reader sees as text
 CELL_BAR = "\u2223"
-# a pipe table's row, as `MarkdownRenderer.table` writes it: its bars are the table's own
-TABLE_ROW = re.compile(r"^\| .* \|$")
 
 
 # a figure's reference definition, as `MarkdownRenderer.page` writes it at the page's end
@@ -89,11 +86,7 @@ class MarkdownRenderer(Renderer):
 
     def page(self, body: str) -> str:
         """The body as the whole page, then each figure's reference definition (its SVG as a
-        data URI, one line each) after everything else, ending with one newline. A magnitude's
-        bars are one character on the page: a table's cell must write them ∣ (`table`), so
-        every other line does too (C5-1.7 wrote ℜ_P = |v_P|² / |a_P^n| above an answer
-        table's ∣v_P∣); only a table row's own bars stay |."""
-        body = "\n".join(line if TABLE_ROW.match(line) else line.replace("|", CELL_BAR) for line in body.split("\n"))
+        data URI, one line each) after everything else, ending with one newline."""
         images = getattr(self, "images", [])
         definitions = "".join(f"\n[{label}]: data:image/svg+xml;base64,{base64.b64encode(drawing.encode('utf-8')).decode('ascii')}"
                               for label, drawing in images)
