@@ -187,8 +187,9 @@ def test_the_bar_slides_on_its_support_one_way_round():
     assert ("v", "Q∈bar/support") in slides and ("a", "Q∈bar/support") in slides
     assert not any(sub.endswith("support/bar") for _, sub in slides)
     said = [b for b in blocks(section(doc, "sec.composition")) if isinstance(b, Msg)
-            and b.key == "composition.slide_seen"]
+            and b.key in ("composition.slide_seen", "composition.slide_seen_step")]
     assert [m.args["seen"].sub for m in said] == ["Q∈bar/support", "Q∈bar/support"]
+    assert [m.args.get("step") for m in said] == [2, 2]       # the bar and support are Step 2
 
 
 def test_a_slider_given_on_a_fixed_guide_needs_no_equation():

@@ -43,7 +43,7 @@ def test_basque_relative_subscript_by_hand():
 
 
 # 3 ------------------------------------------------------------------------------------------
-WILLIS = {"en": "Willis’ formula", "es": "Fórmula de Willis", "ca": "Fórmula de Willis", "eu": "Willisen formula"}
+WILLIS = {"en": "Willis' formula", "es": "Fórmula de Willis", "ca": "Fórmula de Willis", "eu": "Willisen formula"}
 # "whose axles the carrier carries", said of the two central wheels
 OLD_WILLIS = ("whose axles", "cuyos ejes lleva", "els eixos dels quals porta", "haien ardatzak")
 # the fixed axis the central wheels turn about, through the carrier's pivot O

@@ -211,15 +211,18 @@ def _name_terms(sec: Section) -> None:
 def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
     """A drag the steps already wrote is referred to, not written again: where the
     composition's v_arr,B (a_arr,B) is the motion of a material point whose equation a step
-    kept (001's v_B∈M = v_A + v_BA), the section says v_arr,B = v_B∈M = (value) — the
-    same equation twice on one page reads as a new step."""
+    kept (001's v_B∈M = v_A + v_BA), the section says v_arr,B = v_B∈M = (value), found in
+    Step 1 — the same equation twice on one page reads as a new step. The reference names
+    the step by its number (`step_of`), never "the steps above": a teacher's reader looks
+    for Step 1, not for whatever is above."""
     kept: dict = {}
-    sums: list = []                      # each step side's terms, as written
+    sums: list = []                      # (each step side's terms, as written; the step's number)
     for sec in levels:
-        for eq in _equations(sec):
-            if eq.point is not None and eq.relative_to in (None, ctx.frame) and eq.sides:
-                kept.setdefault((eq.level, ctx.motion_key(eq.point.point, eq.point.body)), eq.target)
-            sums += [[_written(t.sym) for t in side] for side in eq.sides]
+        for n, step in _steps(sec):
+            for eq in _equations(step):
+                if eq.point is not None and eq.relative_to in (None, ctx.frame) and eq.sides:
+                    kept.setdefault((eq.level, ctx.motion_key(eq.point.point, eq.point.body)), (eq.target, n))
+                sums += [([_written(t.sym) for t in side], n) for side in eq.sides]
     for sec in doc.sections:
         if not isinstance(sec.title, Msg) or sec.title.key != "sec.composition":
             continue
@@ -229,13 +232,41 @@ def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
             seen = kept.get((b.level, ctx.motion_key(b.point.point, b.point.body)))
             value = Value(b.target.value, "speed" if b.level == "v" else "accel")
             drag = [_written(t.sym) for t in b.sides[0]] if b.sides else []
+            first = next((n for side, n in sums if len(drag) > 1 and side[:len(drag)] == drag), None)
             if seen is not None:
-                sec.blocks[k] = msg("composition.drag_seen", sym=b.target.sym, seen=seen.sym, value=value)
-            elif len(drag) > 1 and any(side[:len(drag)] == drag for side in sums):
+                sec.blocks[k] = msg("composition.drag_seen", sym=b.target.sym, seen=seen[0].sym, value=value,
+                                    step=seen[1])
+            elif first is not None:
                 terms: list = []           # the drag is the first terms of a step's sum: v_B + v_{A-B}
                 for t in b.sides[0]:
                     terms += ([" + "] if terms else []) + [t.sym]
-                sec.blocks[k] = msg("composition.drag_terms", sym=b.target.sym, terms=Inline(terms), value=value)
+                sec.blocks[k] = msg("composition.drag_terms", sym=b.target.sym, terms=Inline(terms), value=value,
+                                    step=first)
+        for b in sec.blocks:
+            n = step_of(levels, b.args["seen"]) if isinstance(b, Msg) and b.key == "composition.slide_seen" else None
+            if n is not None:
+                b.key, b.args["step"] = "composition.slide_seen_step", n
+
+
+def step_of(levels: list[Section], sym: Sym) -> Optional[int]:
+    """The number of the step (as its title now reads, after `prune` renumbered the steps)
+    whose equations write `sym`, a term or a left side: the step a later section refers to
+    (the composition's relative motion of a slider, found in Step 2)."""
+    for sec in levels:
+        for n, step in _steps(sec):
+            for eq in _equations(step):
+                if any(_written(t.sym) == _written(sym) for t in [eq.target, *(t for side in eq.sides for t in side)]):
+                    return n
+    return None
+
+
+def _steps(sec: Section) -> list[tuple[int, Section]]:
+    """A level section's steps with the numbers their titles give."""
+    out: list = []
+    for n, step in enumerate((b for b in sec.blocks if isinstance(b, Section)), 1):
+        shown = step.title.args.get("n")
+        out.append((shown if isinstance(shown, int) else n, step))
+    return out
 
 
 def _written(sym: Sym) -> tuple:

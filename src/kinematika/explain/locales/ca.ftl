@@ -513,8 +513,9 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 composition-slide = { $point } llisca al llarg de la seva guia: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
 composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat més amunt: { $sym } = { $seen } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat en els passos anteriors.
-composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació que ha donat aquest punt al pas anterior.
+composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat al pas { $step }: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
+composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació del pas { $step }.
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)
@@ -654,8 +655,8 @@ cond-curved_slot = passador { $point } en ranura corba: la seva velocitat relati
 cond-cam = lleva: el seguidor { $b } es manté en contacte amb la lleva { $a }.
 dir-tangent = tangent a { $point }
 dir-centre = cap al centre de curvatura { $point }
-higher-intro = El parell superior s'escriu com el moviment de { $point } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l'acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
-higher-straight = El parell superior s'escriu com el moviment de { $point } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).
+higher-intro = El parell superior s’escriu com el moviment de { $point } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l’acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
+higher-straight = El parell superior s’escriu com el moviment de { $point } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).
 centre-weld = { $body } i { $other } són solidaris: són un sol sòlid rígid, de manera que el CIR és el { ELISION($other) ->
         [vowel] d’{ $other }
        *[other] de { $other }

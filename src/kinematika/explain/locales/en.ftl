@@ -369,14 +369,21 @@ composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($b
         [many] their
        *[one] its
     } points have the relative motion found above: { $sym } = { $seen } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in the steps above.
-composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation that found this point in the step above.
+composition-slide_seen_step = { $point } slides along its guide; { $body } { COUNT($body) ->
+        [many] do
+       *[one] does
+    } not turn relative to { $frame }, so all { COUNT($body) ->
+        [many] their
+       *[one] its
+    } points have the relative motion found in Step { $step }: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in Step { $step }.
+composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation of Step { $step }.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
 vehicle-line-velocity = the perpendicular to { $sym } at { $point }
-vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel’s plane: { $vp } = |{ $vp }| e, with e = { $along } and e · { $seg }/|{ $seg }| = { $cos }. Hence |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, and { $vp } = { $value }.
-vehicle-centre_on_axle = The perpendicular to { $sym } through { $point } is the axle of wheel { $joint } itself ({ $point } lies on it and { $sym } is along the wheel’s plane), so it gives no second line: the second one is the perpendicular to { $vo } through { $other }.
+vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel's plane: { $vp } = |{ $vp }| e, with e = { $along } and e · { $seg }/|{ $seg }| = { $cos }. Hence |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, and { $vp } = { $value }.
+vehicle-centre_on_axle = The perpendicular to { $sym } through { $point } is the axle of wheel { $joint } itself ({ $point } lies on it and { $sym } is along the wheel's plane), so it gives no second line: the second one is the perpendicular to { $vo } through { $other }.
 vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel: { COUNT($body) ->
         [many] their centre is at infinity, they translate
@@ -432,7 +439,7 @@ fig-centres = The instant centres (rings, I with the numbers of two bodies) on t
            *[other] {" "}and { $normals }
         }).
     }
-fig-centres_named = The instant centres (rings, I with the bodies’ names) on the mechanism{ $kennedy ->
+fig-centres_named = The instant centres (rings, I with the bodies' names) on the mechanism{ $kennedy ->
         [0] { $normals_n ->
             [0] .
            *[other] , with the lines they are found on (dash-dot: { $normals }).
@@ -568,14 +575,14 @@ contact-fixed = { $sym }: { $point } as a point of { $body }{ FIXED($body) ->
 fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point; between the images, the terms of this step’s equations{ $format ->
+    } ends at its image, lettered as the point; between the images, the terms of this step's equations{ $format ->
         [md] {""}
        *[other] {" "}(black)
     }, head to tail.
 fig-step_a = Acceleration polygon of this step, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point; between the images, the terms of this step’s equations{ $format ->
+    } ends at its image, lettered as the point; between the images, the terms of this step's equations{ $format ->
         [md] {""}
        *[other] {" "}(black)
     }, head to tail.
@@ -591,14 +598,14 @@ what-contact = contact point ({ $kind }) between { $a } and { $b }
 what-body = a point of { $bodies }
 note-text = Note: { $text }
 sec-checks = Checks
-check-willis = Willis’ formula: seen from { $carrier }, the train is an ordinary one ({ $planet }, whose axle { $carrier } { COUNT($carrier) ->
+check-willis = Willis' formula: seen from { $carrier }, the train is an ordinary one ({ $planet }, whose axle { $carrier } { COUNT($carrier) ->
         [many] carry
        *[one] carries
     }, meshes with { $s1 } and { $s2 }, which turn about the fixed axis through { $axis }), so { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , with { $r1 } and { $r2 }
     }. With the angular velocities found above, { $values } = { $ratio }: they agree.
-check-belt = Seen from { $holder }, which carries both axles, { $line } does not slip on { $a } nor on { $b }: { $equation }, so { $ratio }; with the angular velocities found above, { $values }: they agree.
+check-belt = Seen from { $holder }, which carries both axles, { $line } slips on neither { $a } nor { $b }: { $equation }, so { $ratio }; with the angular velocities found above, { $values }: they agree.
 how-translates = (it translates relative to { $body })
 pair-relation_v = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation }{ $radii ->
         [0] {""}
@@ -612,11 +619,11 @@ drive-relation_a = Differentiating, with the radii constant: { $equation }{ $rad
         [0] {""}
        *[other] {" "}(with { $radii })
     }:
-drive-relation = Seen from { $holder }, which carries both axles, the axles are fixed and { $line } translates: it does not slip on { $a } nor on { $b }, so both move it at one speed, { $equation }{ $radii ->
+drive-relation = Seen from { $holder }, which carries both axles, the axles are fixed and { $line } translates: it slips on neither { $a } nor { $b }, so both move it at one speed, { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}(with { $radii })
     }:
-check-train = The train’s ratio is the product of its stages’: { $ratio }; with the angular velocities found above, the ratio is { $value }.
+check-train = The train's ratio is the product of its stages': { $ratio }; with the angular velocities found above, the ratio is { $value }.
 check-quick = Time ratio of the quick return: { $lever } is at an end of its swing when the slot is tangent to the circle of { $pin } (the crank { $o2 }{ $pin } perpendicular to { $o4 }{ $pin }), where cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Turning steadily, { $crank } sweeps 360° − 2θ = { $slow } in one stroke and 2θ = { $fast } in the other: time ratio { $ratio }.
 driver-slide = Given: the sliding velocity in the prismatic pair { $joint } is { $value }.
 driver-slide_accel = Given: the sliding acceleration in the prismatic pair { $joint } is { $value }.

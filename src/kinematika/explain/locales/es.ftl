@@ -9,7 +9,7 @@ data-planar = Movimiento plano: las velocidades{ $accelerations ->
     } llevan signo, positivas en sentido antihorario.
 data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } de { $body_b } vista desde { $body_a }, y { $w } la velocidad angular de { $body_b } respecto de { $body_a }.
 data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
-data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
+data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en función de ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
 data-symbol = un símbolo (cualquier valor)
 data-constructed = situado por construcción (véase Posición)
 data-circle = centro { $centre }, radio { $radius }
@@ -162,13 +162,13 @@ step-title = Paso { $n }: { $kind } — { $bodies }
 step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
-v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Una ecuación vectorial plana resuelve dos incógnitas{ $format ->
-        [md] : los términos marcados con ?, que halla el paso
-       *[other] ; en rojo, los términos hallados en el paso
+v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
+        [md] : los términos marcados con ?
+       *[other] ; en rojo, los términos que se hallan en cada paso
     }.
-a-intro = Conocidas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
-a-intro_relative = Conocidas las velocidades, todos los términos normales son conocidos; las incógnitas son los términos tangenciales y relativos.
-a-intro_normal = Conocidas las velocidades, los términos normales son conocidos; las incógnitas son los términos tangenciales.
+a-intro = Una vez halladas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
+a-intro_relative = Una vez halladas las velocidades, todos los términos normales son conocidos; las incógnitas son los términos tangenciales y relativos.
+a-intro_normal = Una vez halladas las velocidades, los términos normales son conocidos; las incógnitas son los términos tangenciales.
 eq-shared_rate = Los términos { $terms } tienen una sola incógnita, { $rate }: sus módulos son { $mags }.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
@@ -324,8 +324,9 @@ centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa 
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de su guía: su movimiento relativo sigue la guía, { $sym } = { $value }.
 composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado arriba: { $sym } = { $seen } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en los pasos anteriores.
-composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación con la que se halló este punto en el paso anterior.
+composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado en el paso { $step }: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
+composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación del paso { $step }.
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)

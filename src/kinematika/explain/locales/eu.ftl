@@ -282,8 +282,9 @@ centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetat
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua bere gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
 composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek goian aurkitutako mugimendu erlatiboa dute: { $sym } = { $seen } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, goiko urratsetan aurkitutako puntu horren mugimendua.
-composition-drag_terms = { $sym } = { $terms } = { $value }: goiko urratsean puntu hau aurkitzeko idatzitako ekuazioaren lehen terminoak dira.
+composition-slide_seen_step = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek { $step }. urratsean aurkitutako mugimendu erlatiboa dute: { $sym } = { $seen } = { $value }.
+composition-drag_seen = { $sym } = { $seen } = { $value }, { $step }. urratsean aurkitutako puntu horren mugimendua.
+composition-drag_terms = { $sym } = { $terms } = { $value }: { $step }. urratseko ekuazioaren lehen terminoak dira.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
