@@ -22,10 +22,11 @@ def hand(variant, **changed):
 
 
 @pytest.fixture(scope="module")
-def klass(p_pair30):
+def klass(p_pair_exercise):
     """The P-pair exercise given to a class of five (the roster drawn from the seed)."""
-    ex = copy.copy(p_pair30)
-    ex.students = assigned([Student(s) for s in ("ane", "jon", "miren", "iñaki", "unai")], 30, ex.seed)
+    ex = copy.copy(p_pair_exercise)
+    ex.students = assigned([Student(s) for s in ("ane", "jon", "miren", "iñaki", "unai")],
+                           len(ex.variants), ex.seed)
     return ex
 
 
@@ -88,12 +89,12 @@ def test_a_roster_row_for_another_variant_an_unknown_student_and_a_missing_one(k
                                               "answers": []}
 
 
-def test_without_a_roster_a_second_variant_is_wrong_variant_not_a_lower_score(p_pair30, tmp_path):
-    one, two = p_pair30.variants[0], p_pair30.variants[1]
+def test_without_a_roster_a_second_variant_is_wrong_variant_not_a_lower_score(p_pair_exercise, tmp_path):
+    one, two = p_pair_exercise.variants[0], p_pair_exercise.variants[1]
     answers = tmp_path / "answers.csv"
     answers.write_text("student,variant,question,value\n" + csv_rows("x", one, right_answers(one))
                        + csv_rows("x", two, dict(list(right_answers(two).items())[:3])), encoding="utf-8")
-    x = grade(p_pair30, answers)["students"]["x"]
+    x = grade(p_pair_exercise, answers)["students"]["x"]
     assert x["score"] == 1 and x["variant"] == 1
     assert [a["diagnosis"] for a in x["answers"] if a["variant"] == 2] == ["wrong-variant"] * 3
 
@@ -141,42 +142,42 @@ def test_an_unquoted_decimal_comma_in_a_comma_file_is_read(klass, tmp_path):
     assert mark["correct"] and mark["typed"] == f"{q1:.4f}".replace(".", ",")
 
 
-def test_a_hand_solution_rounded_to_three_figures_gets_full_marks(p_pair30, tmp_path):
-    """Every intermediate rounded to 3 significant figures, as on paper, in all 30 variants."""
+def test_a_hand_solution_rounded_to_three_figures_gets_full_marks(p_pair_exercise, tmp_path):
+    """Every intermediate rounded to 3 significant figures, as on paper, in every variant."""
     lines = []
-    for v in p_pair30.variants:
+    for v in p_pair_exercise.variants:
         by_hand = derive.rows(derive.p_pair_by_hand(**p_pair_data(v.stated)))
         lines += [f"s{v.number},{v.number},{q},{x!r}\n" for q, (x, _) in by_hand.items()]
     answers = tmp_path / "answers.csv"
     answers.write_text("student,variant,question,value\n" + "".join(lines), encoding="utf-8")
-    result = grade(p_pair30, answers, carry=False)
+    result = grade(p_pair_exercise, answers, carry=False)
     assert all(s["score"] == 1 for s in result["students"].values()), {
         k: [(a["question"], a["value"]) for a in s["answers"] if not a["correct"]]
         for k, s in result["students"].items() if s["score"] < 1}
 
 
-def test_an_error_carried_forward_from_a_wrong_rate_earns_the_later_marks(p_pair30, tmp_path):
+def test_an_error_carried_forward_from_a_wrong_rate_earns_the_later_marks(p_pair_exercise, tmp_path):
     """The student's ω_EB is 12 % off (a slip in the velocity triangle); every later answer
     is what the notes' method gives from that ω: the mechanism driven 12 % faster."""
-    v = p_pair30.variants[3]
+    v = p_pair_exercise.variants[3]
     data = p_pair_data(v.stated)
     theirs = hand(v, w=1.12 * data["w"])
     answers = tmp_path / "answers.csv"
     answers.write_text("student,variant,question,value\n" + csv_rows("x", v, {q: repr(x) for q, (x, _) in theirs.items()}),
                        encoding="utf-8")
-    x = grade(p_pair30, answers)["students"]["x"]
+    x = grade(p_pair_exercise, answers)["students"]["x"]
     marks = {a["question"]: a for a in x["answers"]}
     assert not marks["q1"]["correct"] and "carried_from" not in marks["q1"]
     assert all(m["correct"] and m["carried_from"] == "q1" for q, m in marks.items() if q != "q1")
     assert x["score"] == pytest.approx(5 / 6)
-    without = grade(p_pair30, answers, carry=False)["students"]["x"]
+    without = grade(p_pair_exercise, answers, carry=False)["students"]["x"]
     assert without["score"] < 0.5
 
 
-def test_an_error_carried_forward_from_a_wrong_angular_acceleration(p_pair30, tmp_path):
+def test_an_error_carried_forward_from_a_wrong_angular_acceleration(p_pair_exercise, tmp_path):
     """The student's α_EB is wrong; a_rel (q4) and a_B (q6) follow from it: the P pair solved
     by hand with the guide's α chosen to give that α_EB (the answers are affine in it)."""
-    v = p_pair30.variants[5]
+    v = p_pair_exercise.variants[5]
     data = p_pair_data(v.stated)
     at0, at1 = derive.p_pair(**{**data, "al": 0.0}), derive.p_pair(**{**data, "al": 1.0})
     right = hand(v)
@@ -188,52 +189,52 @@ def test_an_error_carried_forward_from_a_wrong_angular_acceleration(p_pair30, tm
     answers.write_text("student,variant,question,value\n" + csv_rows("x", v, {q: repr(x) for q, (x, _) in {
         **right, "q2": theirs["q2"], "q4.x": theirs["q4.x"], "q4.y": theirs["q4.y"],
         "q6.x": theirs["q6.x"], "q6.y": theirs["q6.y"]}.items()}), encoding="utf-8")
-    marks = {a["question"]: a for a in grade(p_pair30, answers)["students"]["x"]["answers"]}
+    marks = {a["question"]: a for a in grade(p_pair_exercise, answers)["students"]["x"]["answers"]}
     assert not marks["q2"]["correct"]
     assert all(marks[q]["correct"] for q in ("q4.x", "q4.y", "q6.x", "q6.y"))
     moved = [q for q in ("q4.x", "q4.y", "q6.x", "q6.y") if abs(theirs[q][0] - right[q][0]) > 0.1 * right[q][1]]
     assert moved and all(marks[q]["carried_from"] == "q2" for q in moved)
 
 
-def test_a_later_answer_that_follows_from_nothing_stays_wrong(p_pair30, tmp_path):
-    v = p_pair30.variants[3]
+def test_a_later_answer_that_follows_from_nothing_stays_wrong(p_pair_exercise, tmp_path):
+    v = p_pair_exercise.variants[3]
     right = hand(v)
     wrong = {**{q: repr(x) for q, (x, _) in right.items()}, "q1": repr(1.12 * right["q1"][0]),
              "q5.x": repr(right["q5.x"][0] * 0.7 + 0.3)}
     answers = tmp_path / "answers.csv"
     answers.write_text("student,variant,question,value\n" + csv_rows("x", v, wrong), encoding="utf-8")
-    marks = {a["question"]: a for a in grade(p_pair30, answers)["students"]["x"]["answers"]}
+    marks = {a["question"]: a for a in grade(p_pair_exercise, answers)["students"]["x"]["answers"]}
     assert not marks["q5.x"]["correct"] and not marks["q1"]["correct"]
 
 
-def test_a_reversed_relative_velocity_beside_a_right_rate_is_not_a_reversed_sense(p_pair30, tmp_path):
-    v = p_pair30.variants[2]
+def test_a_reversed_relative_velocity_beside_a_right_rate_is_not_a_reversed_sense(p_pair_exercise, tmp_path):
+    v = p_pair_exercise.variants[2]
     right = hand(v)
     answers = {q: repr(x) for q, (x, _) in right.items()}
     answers.update({"q3.x": repr(-right["q3.x"][0]), "q3.y": repr(-right["q3.y"][0])})
     path = tmp_path / "answers.csv"
     path.write_text("student,variant,question,value\n" + csv_rows("x", v, answers), encoding="utf-8")
-    marks = {a["question"]: a for a in grade(p_pair30, path)["students"]["x"]["answers"]}
+    marks = {a["question"]: a for a in grade(p_pair_exercise, path)["students"]["x"]["answers"]}
     assert not marks["q3.x"]["correct"] and marks["q3.x"]["diagnosis"] is None
     # the whole solution with ω reversed is named so
     reversed_sense = {q: repr(x) for q, (x, _) in hand(v, w=-p_pair_data(v.stated)["w"]).items()}
     path.write_text("student,variant,question,value\n" + csv_rows("y", v, reversed_sense), encoding="utf-8")
-    marks = {a["question"]: a for a in grade(p_pair30, path, carry=False)["students"]["y"]["answers"]}
+    marks = {a["question"]: a for a in grade(p_pair_exercise, path, carry=False)["students"]["y"]["answers"]}
     assert marks["q1"]["diagnosis"] == "sense-reversed" and marks["q3.x"]["diagnosis"] == "sense-reversed"
 
 
-def test_each_question_weighs_the_same_and_the_sections_weights_count(p_pair30, tmp_path):
+def test_each_question_weighs_the_same_and_the_sections_weights_count(p_pair_exercise, tmp_path):
     import dataclasses
 
-    v = p_pair30.variants[0]
+    v = p_pair_exercise.variants[0]
     right = hand(v)
     answers = tmp_path / "answers.csv"
     answers.write_text("student,variant,question,value\n" + csv_rows("x", v, {
         "q1": repr(right["q1"][0]), "q6.x": repr(right["q6.x"][0])}), encoding="utf-8")
     # q1 is one number of six equal questions; q6.x half of one
-    assert grade(p_pair30, answers)["students"]["x"]["score"] == pytest.approx(1 / 6 + 1 / 12)
-    weighted = copy.copy(p_pair30)
-    weighted.section = dataclasses.replace(p_pair30.section, weights={1: 4, 2: 1, 3: 1, 4: 1, 5: 1, 6: 2})
+    assert grade(p_pair_exercise, answers)["students"]["x"]["score"] == pytest.approx(1 / 6 + 1 / 12)
+    weighted = copy.copy(p_pair_exercise)
+    weighted.section = dataclasses.replace(p_pair_exercise.section, weights={1: 4, 2: 1, 3: 1, 4: 1, 5: 1, 6: 2})
     assert grade(weighted, answers)["students"]["x"]["score"] == pytest.approx((4 + 1) / 10)
 
 

@@ -12,24 +12,24 @@ from typer.testing import CliRunner
 from kinematika.cli import app
 from kinematika.exercise.catalogue import catalogue
 
-from .conftest import FOUR_BAR, P_PAIR
+from .conftest import COUNT, FOUR_BAR, P_PAIR
 
 runner = CliRunner()
 
 
-def test_the_folder_holds_the_contracts_files(folders, p_pair30):
+def test_the_folder_holds_the_contracts_files(folders, p_pair_exercise):
     folder = folders["p_pair"]
     names = {p.name for p in folder.iterdir()}
     assert {"variants.csv", "key.csv", "quiz.xml", "sheets.html", "key.html", "exercise.json",
             "p_pair_coriolis.yaml", "figures"} <= names
-    assert len(list((folder / "figures").glob("variant-*.png"))) == 30
+    assert len(list((folder / "figures").glob("variant-*.png"))) == COUNT
     info = json.loads((folder / "exercise.json").read_text())
     assert info == {"model": "p_pair_coriolis.yaml", "vary": ["s=300:500:10", "beta=20:40:1", "w=2:6:0.5"],
-                    "count": 30, "seed": 7, "lang": "en"}
+                    "count": COUNT, "seed": 7, "lang": "en"}
 
 
-def test_grade_reads_the_folder_back_and_prints_the_contracts_json(folders, p_pair30, tmp_path):
-    v = p_pair30.variants[4]
+def test_grade_reads_the_folder_back_and_prints_the_contracts_json(folders, p_pair_exercise, tmp_path):
+    v = p_pair_exercise.variants[4]
     rows = {r.question: r.value for r in v.rows}
     answers = tmp_path / "answers.csv"
     answers.write_text("student,variant,question,value\n"
@@ -107,24 +107,24 @@ def test_the_class_gets_its_variants_and_its_names_on_the_sheets(tmp_path):
     assert set(result["students"]) == {"101", "102", "103"} and result["students"]["103"]["score"] == 0
     assert result["students"]["101"]["answers"][0]["diagnosis"] == "wrong-variant"
 
-def test_each_sheet_states_its_variants_data_and_asks_every_number(folders, p_pair30):
+def test_each_sheet_states_its_variants_data_and_asks_every_number(folders, p_pair_exercise):
     sheets = (folders["p_pair"] / "sheets.html").read_text(encoding="utf-8")
     pages = sheets.split('<section class="sheet">')[1:]
-    assert len(pages) == 30
-    for page, v in zip(pages, p_pair30.variants):
+    assert len(pages) == COUNT
+    for page, v in zip(pages, p_pair_exercise.variants):
         s = f"{v.stated['s'].normalize():f}"
         assert f"AB = {s}\u00a0mm" in page and f"β = {v.stated['beta'].normalize():f}°" in page
         assert re.findall(r'<td class="box" data-q="([^"]+)">', page) == [r.question for r in v.rows]
         assert page.count("data:image/png;base64,") == 1
 
 
-def test_the_key_lists_every_value_and_its_margin(folders, four_bar30):
+def test_the_key_lists_every_value_and_its_margin(folders, four_bar_exercise):
     key = (folders["four_bar"] / "key.html").read_text(encoding="utf-8")
     pages = key.split('<section class="sheet variant"')[1:]
-    assert len(pages) == 30
+    assert len(pages) == COUNT
     first = pages[0]
-    for r in four_bar30.variants[0].rows:
+    for r in four_bar_exercise.variants[0].rows:
         assert f"<code class=\"id\">{r.question}</code>" in first
     # the contents: every variant linked to its pages
     contents = key.split('<section class="sheet" id="contents">')[1].split("</section>")[0]
-    assert re.findall(r'href="#variant-(\d+)"', contents) == [str(n) for n in range(1, 31)]
+    assert re.findall(r'href="#variant-(\d+)"', contents) == [str(n) for n in range(1, COUNT + 1)]

@@ -129,11 +129,11 @@ def check(result, planted):
     return kinds_found
 
 
-def test_a_class_of_200_has_every_planted_mistake_named_and_no_right_answer_diagnosed(p_pair30, tmp_path):
-    text, planted = plant(p_pair30, p_pair_worlds, 200, 2026)
+def test_a_class_of_200_has_every_planted_mistake_named_and_no_right_answer_diagnosed(p_pair_exercise, tmp_path):
+    text, planted = plant(p_pair_exercise, p_pair_worlds, 200, 2026)
     answers = tmp_path / "answers.csv"
     answers.write_text(text, encoding="utf-8")
-    result = grade(p_pair30, answers, carry=False)
+    result = grade(p_pair_exercise, answers, carry=False)
     found = check(result, planted)
     assert found == set(KINDS)                   # every kind planted, and named
     named_as_planted = sum(1 for (s, q), (kind, _, _, _) in planted.items() if kind in KINDS and next(
@@ -149,29 +149,29 @@ def test_a_class_of_200_has_every_planted_mistake_named_and_no_right_answer_diag
     assert all(result["students"][s]["score"] == 1 for s in right_students)
 
 
-def test_a_four_bar_class_has_its_mistakes_named(four_bar30, tmp_path):
-    text, planted = plant(four_bar30, four_bar_worlds, 60, 7)
+def test_a_four_bar_class_has_its_mistakes_named(four_bar_exercise, tmp_path):
+    text, planted = plant(four_bar_exercise, four_bar_worlds, 60, 7)
     answers = tmp_path / "answers.csv"
     answers.write_text(text, encoding="utf-8")
-    found = check(grade(four_bar30, answers, carry=False), planted)
+    found = check(grade(four_bar_exercise, answers, carry=False), planted)
     assert {"normal-omitted", "sense-reversed", "units-mm-as-m", "components-swapped"} <= found
 
 
-def test_a_mistake_that_changes_nothing_names_nothing(four_bar30, tmp_path):
+def test_a_mistake_that_changes_nothing_names_nothing(four_bar_exercise, tmp_path):
     # the four-bar has no sliding pair: the Coriolis mistakes give the right values, which stay right
-    v = four_bar30.variants[0]
+    v = four_bar_exercise.variants[0]
     answers = tmp_path / "a.csv"
     answers.write_text("student,variant,question,value\n" + "".join(
         f"x,{v.number},{r.question},{r.value!r}\n" for r in v.rows))
-    result = grade(four_bar30, answers)["students"]["x"]
+    result = grade(four_bar_exercise, answers)["students"]["x"]
     assert result["score"] == 1 and all(a["diagnosis"] is None for a in result["answers"])
 
 
-def test_a_file_without_the_columns_is_one_error(p_pair30, tmp_path):
+def test_a_file_without_the_columns_is_one_error(p_pair_exercise, tmp_path):
     answers = tmp_path / "answers.csv"
     answers.write_text("student,variant,question\nx,1,q1\n")
     with pytest.raises(KinematikaError) as err:
-        grade(p_pair30, answers)
+        grade(p_pair_exercise, answers)
     assert err.value.where == "answers.csv" and "value" in err.value.message
 
 
@@ -183,13 +183,13 @@ def test_a_file_without_the_columns_is_one_error(p_pair30, tmp_path):
     ("x,one,q1,2", "is not a number"),
     ("x,1,q1,1,2,3", "6 fields"),
 ])
-def test_a_row_that_cannot_be_read_is_listed_with_its_line_and_the_others_are_graded(p_pair30, tmp_path, bad, why):
-    v = p_pair30.variants[0]
+def test_a_row_that_cannot_be_read_is_listed_with_its_line_and_the_others_are_graded(p_pair_exercise, tmp_path, bad, why):
+    v = p_pair_exercise.variants[0]
     right = {r.question: r.value for r in v.rows}
     answers = tmp_path / "answers.csv"
     answers.write_text(f"student,variant,question,value\nx,1,q1,{right['q1']!r}\n{bad}\n"
                        f"y,1,q2,{right['q2']!r}\n", encoding="utf-8")
-    result = grade(p_pair30, answers)
+    result = grade(p_pair_exercise, answers)
     assert [u["line"] for u in result["unreadable"]] == [3]
     assert why in result["unreadable"][0]["error"]
     assert result["students"]["x"]["answers"][0]["correct"] and result["students"]["y"]["answers"][0]["correct"]
@@ -203,16 +203,16 @@ SAID = {"eu": ["ikaslerik gabeko errenkada", "bi aldiz erantzuten du", "lehen al
 
 
 @pytest.mark.parametrize("lang", ["eu", "ca"])
-def test_the_rows_not_read_and_the_summary_are_said_in_the_teachers_language(p_pair30, tmp_path, lang):
+def test_the_rows_not_read_and_the_summary_are_said_in_the_teachers_language(p_pair_exercise, tmp_path, lang):
     from kinematika.errors import speaking
     from kinematika.exercise.grading import summary_text
 
-    v = p_pair30.variants[0]
+    v = p_pair_exercise.variants[0]
     answers = tmp_path / "answers.csv"
     answers.write_text(f"student,variant,question,value\nx,1,q1,{v.rows[0].value!r}\n,1,q1,2\nx,1,q1,3\n"
                        "x,1,q1,1,2,3\n", encoding="utf-8")
     with speaking(lang):
-        result = grade(p_pair30, answers)
+        result = grade(p_pair_exercise, answers)
         text = summary_text(result, "answers.csv")
     errors = " ".join(u["error"] for u in result["unreadable"])
     assert [u["line"] for u in result["unreadable"]] == [3, 4, 5]
@@ -227,9 +227,9 @@ def test_the_rows_not_read_and_the_summary_are_said_in_the_teachers_language(p_p
     assert re.search(r"^x +1 +" + {"eu": r"%16,7", "ca": r"16,7 %"}[lang] + "$", text, re.M), text
 
 
-def test_blank_and_unreadable_answers_keep_what_was_typed(p_pair30, tmp_path):
+def test_blank_and_unreadable_answers_keep_what_was_typed(p_pair_exercise, tmp_path):
     answers = tmp_path / "answers.csv"
     answers.write_text("student,variant,question,value\nx,1,q1,\nx,1,q2,abc\n")
-    result = grade(p_pair30, answers)["students"]["x"]
+    result = grade(p_pair_exercise, answers)["students"]["x"]
     assert result["score"] == 0 and result["answers"] == [
         {"variant": 1, "question": "q2", "typed": "abc", "value": None, "correct": False, "diagnosis": None}]

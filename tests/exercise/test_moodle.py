@@ -1,6 +1,6 @@
 """quiz.xml read as Moodle's importer reads it (tests/exercise/moodle_rules.py, ported from
-the public moodle repository): the issue's quizzes of 30 variants of the P pair and 30 of a
-four-bar, and a quiz with its worked solutions as general feedback."""
+the public moodle repository): the issue's quizzes of variants of the P pair and of a
+four-bar (`conftest.COUNT` each), and a quiz with its worked solutions as general feedback."""
 from __future__ import annotations
 
 import base64
@@ -19,6 +19,7 @@ from kinematika.exercise.key import floors_of
 from kinematika.exercise.moodle import cloze_text, quiz_xml
 from kinematika.exercise.solutions import solution_html
 
+from .conftest import COUNT
 from .moodle_rules import extract, validate
 
 MISTAKES = ("coriolis-omitted", "coriolis-doubled", "normal-omitted", "sense-reversed", "drag-as-absolute",
@@ -36,9 +37,9 @@ def quiz(ex, solutions=False):
 
 
 @pytest.fixture(scope="module")
-def quizzes(p_pair30, four_bar30, folders):
+def quizzes(p_pair_exercise, four_bar_exercise, folders):
     return [(ex, (folders[name] / "quiz.xml").read_text(encoding="utf-8"))
-            for name, ex in (("p_pair", p_pair30), ("four_bar", four_bar30))]
+            for name, ex in (("p_pair", p_pair_exercise), ("four_bar", four_bar_exercise))]
 
 
 def key_of(ex, column=2):
@@ -70,10 +71,10 @@ def test_the_quizzes_are_moodle_xml_with_one_cloze_question_per_variant(quizzes)
         assert questions[0].get("type") == "category"
         assert questions[0].findtext("category/text").startswith("$course$/top/")
         cloze = questions[1:]
-        assert len(cloze) == 30 and all(q.get("type") == "cloze" for q in cloze)
+        assert len(cloze) == COUNT and all(q.get("type") == "cloze" for q in cloze)
         names = [q.findtext("name/text") for q in cloze]
         ids = [q.findtext("idnumber") for q in cloze]
-        assert all(names) and len(set(names)) == 30 and len(set(ids)) == 30
+        assert all(names) and len(set(names)) == COUNT and len(set(ids)) == COUNT
         for q in cloze:
             assert q.find("questiontext").get("format") == "html"
             assert q.find("generalfeedback").get("format") == "html"
@@ -82,7 +83,7 @@ def test_the_quizzes_are_moodle_xml_with_one_cloze_question_per_variant(quizzes)
 
 def test_question_texts_are_cdata_and_their_figures_are_files_they_show(quizzes):
     for _, text in quizzes:
-        assert text.count("<questiontext format=\"html\">\n      <text><![CDATA[") == 30
+        assert text.count("<questiontext format=\"html\">\n      <text><![CDATA[") == COUNT
         for q in ET.fromstring(text.encode()).findall("question[@type='cloze']"):
             body = q.findtext("questiontext/text")
             files = q.findall("questiontext/file")
@@ -136,7 +137,7 @@ def test_the_p_pair_quiz_names_the_coriolis_mistakes_where_they_change_the_answe
     assert not any(w.feedback == words for w in by_question["q1"].alternatives[1:])   # ω_EB: no
 
 
-def test_worked_solutions_are_the_general_feedback(p_pair30):
+def test_worked_solutions_are_the_general_feedback(p_pair_exercise):
     from .conftest import P_PAIR, P_PAIR_VARY, make
 
     ex = make(P_PAIR, P_PAIR_VARY, 2, 11, "eu")
@@ -159,30 +160,30 @@ def test_a_feedback_text_reaches_moodle_as_its_html(text):
     assert [a.answer for a in subs[0].alternatives] == ["1.5", "2"]
 
 
-def test_split_writes_a_question_per_graded_part_in_a_category_each(p_pair30):
+def test_split_writes_a_question_per_graded_part_in_a_category_each(p_pair_exercise):
     from kinematika.exercise.moodle import QuizOptions
 
-    figures = {v.number: b"\x89PNG\r\n\x1a\n" for v in p_pair30.variants}
-    text = quiz_xml(p_pair30, figures, None, None, QuizOptions(split=True))
+    figures = {v.number: b"\x89PNG\r\n\x1a\n" for v in p_pair_exercise.variants}
+    text = quiz_xml(p_pair_exercise, figures, None, None, QuizOptions(split=True))
     root = ET.fromstring(text.encode())
     categories = [q.findtext("category/text") for q in root.findall("question[@type='category']")]
     assert categories == [f"$course$/top/kinematika/P pair with Coriolis/question {k}" for k in range(1, 7)]
     cloze = root.findall("question[@type='cloze']")
-    assert len(cloze) == 6 * 30 and len({q.findtext("idnumber") for q in cloze}) == 6 * 30
-    key = key_of(p_pair30)
+    assert len(cloze) == 6 * COUNT and len({q.findtext("idnumber") for q in cloze}) == 6 * COUNT
+    key = key_of(p_pair_exercise)
     for k in range(6):                               # part k+1 of variant 1 asks that question's numbers
-        _, subs = extract(cloze[30 * k].findtext("questiontext/text"))
+        _, subs = extract(cloze[COUNT * k].findtext("questiontext/text"))
         asked = [q for q in key[1] if q.split(".")[0] == f"q{k + 1}"]
         assert [s.alternatives[0].answer for s in subs] == [key[1][q] for q in asked]
         assert validate(subs) == []
 
 
-def test_a_unit_penalty_gives_part_credit_for_the_right_number_in_another_unit(p_pair30):
+def test_a_unit_penalty_gives_part_credit_for_the_right_number_in_another_unit(p_pair_exercise):
     from kinematika.exercise.moodle import QuizOptions
 
-    v = p_pair30.variants[0]
-    figures = {x.number: b"" for x in p_pair30.variants}
-    text = quiz_xml(p_pair30, figures, None, None, QuizOptions(unit_penalty=0.4))
+    v = p_pair_exercise.variants[0]
+    figures = {x.number: b"" for x in p_pair_exercise.variants}
+    text = quiz_xml(p_pair_exercise, figures, None, None, QuizOptions(unit_penalty=0.4))
     first = ET.fromstring(text.encode()).findall("question[@type='cloze']")[0]
     _, subs = extract(first.findtext("questiontext/text"))
     by_question = dict(zip([r.question for r in v.rows], subs))
@@ -195,6 +196,6 @@ def test_a_unit_penalty_gives_part_credit_for_the_right_number_in_another_unit(p
     rpm = [a for a in rate if "rpm" in a.feedback]
     assert len(rpm) == 1 and float(rpm[0].answer) == pytest.approx(right["q1"] * 30 / math.pi, rel=1e-12)
     assert validate(subs) == []
-    plain = quiz_xml(p_pair30, figures, None)                       # without the option: none
+    plain = quiz_xml(p_pair_exercise, figures, None)                       # without the option: none
     assert "mm/s" not in "".join(a.feedback for s in extract(ET.fromstring(plain.encode()).findall(
         "question[@type='cloze']")[0].findtext("questiontext/text"))[1] for a in s.alternatives)

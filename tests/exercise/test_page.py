@@ -28,11 +28,11 @@ def body(**extra):
             "lang": "eu", **extra}
 
 
-def test_the_statement_comes_without_the_key(client, p_pair30):
+def test_the_statement_comes_without_the_key(client, p_pair_exercise):
     got = client.post("/api/exercise", json=body())
     assert got.status_code == 200, got.text
     data = got.json()
-    v = p_pair30.variants[2]
+    v = p_pair_exercise.variants[2]
     assert data["variant"] == 3 and data["title"] == "P bikotea Coriolisekin"
     assert [p["question"] for a in data["asks"] for p in a["parts"]] == [r.question for r in v.rows]
     assert f"AB = {v.stated['s'].normalize():f}\u00a0mm" in data["statement"]
@@ -42,8 +42,8 @@ def test_the_statement_comes_without_the_key(client, p_pair30):
         assert f"{r.value:.4g}" not in text and f"{r.value:.4g}".replace(".", ",") not in text
 
 
-def test_answers_are_marked_with_the_diagnoses_grade_gives(client, p_pair30):
-    v = p_pair30.variants[2]
+def test_answers_are_marked_with_the_diagnoses_grade_gives(client, p_pair_exercise):
+    v = p_pair_exercise.variants[2]
     mistakes = {m.kind: m for m in v.mistaken}
     answers = {"q1": repr(v.rows[0].value).replace(".", ","), "q2": repr(mistakes["coriolis-omitted"].rows["q2"].value),
                "q3.x": "12345", "q3.y": ""}

@@ -17,31 +17,31 @@ from tests.conftest import DEEP
 from tests.model.test_cases import kinematika
 
 from . import derive
-from .conftest import FOUR_BAR, P_PAIR, P_PAIR_VARY, four_bar_data, make, p_pair_data
+from .conftest import COUNT, FOUR_BAR, P_PAIR, P_PAIR_VARY, four_bar_data, make, p_pair_data
 
 
-def test_the_same_seed_gives_the_same_variants(p_pair30):
+def test_the_same_seed_gives_the_same_variants(p_pair_exercise):
     """Variants are drawn in the generator's order: the same seed's first few are the first
-    of the thirty (all thirty made again in a deep run), another seed's are others."""
-    count = 30 if DEEP else 4
+    of the shared exercise's (all of them made again in a deep run), another seed's are others."""
+    count = COUNT if DEEP else 4
     again = make(P_PAIR, P_PAIR_VARY, count, 7)
-    assert [v.stated for v in again.variants] == [v.stated for v in p_pair30.variants[:count]]
+    assert [v.stated for v in again.variants] == [v.stated for v in p_pair_exercise.variants[:count]]
     other = make(P_PAIR, P_PAIR_VARY, count, 8)
-    assert [v.stated for v in other.variants] != [v.stated for v in p_pair30.variants[:count]]
+    assert [v.stated for v in other.variants] != [v.stated for v in p_pair_exercise.variants[:count]]
 
 
-def test_variants_are_distinct_and_on_the_grids(p_pair30, four_bar30):
-    for ex in (p_pair30, four_bar30):
+def test_variants_are_distinct_and_on_the_grids(p_pair_exercise, four_bar_exercise):
+    for ex in (p_pair_exercise, four_bar_exercise):
         seen = {tuple(v.stated.values()) for v in ex.variants}
-        assert len(seen) == len(ex.variants) == 30
+        assert len(seen) == len(ex.variants) == COUNT
         for v in ex.variants:
             for vary in ex.varies:
                 x = v.stated[vary.name]
                 assert vary.low <= x <= vary.high and (x - vary.low) % vary.step == 0
 
 
-def test_no_variant_is_near_a_dead_point(p_pair30, four_bar30):
-    for ex in (p_pair30, four_bar30):
+def test_no_variant_is_near_a_dead_point(p_pair_exercise, four_bar_exercise):
+    for ex in (p_pair_exercise, four_bar_exercise):
         assert all(v.solution.solver.analysis.diagnosis.condition_number <= MAX_CONDITION
                    for v in ex.variants)
 
@@ -77,12 +77,12 @@ def _keys_are_hand_derivations(exercise, derivation, data):
             _close(r.value, hand[r.question][0], hand[r.question][1])
 
 
-def test_every_p_pair_key_is_the_hand_derivation(p_pair30):
-    _keys_are_hand_derivations(p_pair30, derive.p_pair, p_pair_data)
+def test_every_p_pair_key_is_the_hand_derivation(p_pair_exercise):
+    _keys_are_hand_derivations(p_pair_exercise, derive.p_pair, p_pair_data)
 
 
-def test_every_four_bar_key_is_the_hand_derivation(four_bar30):
-    _keys_are_hand_derivations(four_bar30, derive.four_bar, four_bar_data)
+def test_every_four_bar_key_is_the_hand_derivation(four_bar_exercise):
+    _keys_are_hand_derivations(four_bar_exercise, derive.four_bar, four_bar_data)
 
 
 def _flat(answers, asks):
@@ -96,19 +96,19 @@ def _flat(answers, asks):
     return out
 
 
-def test_every_key_equals_solve_with_the_variants_values_through_the_api(p_pair30, four_bar30):
+def test_every_key_equals_solve_with_the_variants_values_through_the_api(p_pair_exercise, four_bar_exercise):
     from kinematika.commands import How, solve_data
 
-    for ex, path in ((p_pair30, P_PAIR), (four_bar30, FOUR_BAR)):
+    for ex, path in ((p_pair_exercise, P_PAIR), (four_bar_exercise, FOUR_BAR)):
         for v in ex.variants:
             answers = solve_data(path, how=How(set=v.sets))["answers"]
             assert {r.question: r.value for r in v.rows} == _flat(answers, ex.asks)
 
 
-def test_a_few_keys_equal_solve_set_on_the_command_line(p_pair30, four_bar30):
+def test_a_few_keys_equal_solve_set_on_the_command_line(p_pair_exercise, four_bar_exercise):
     """The first variant of each exercise in a child process, as a user runs it; the second
     in this process by click's runner (the same command, without an interpreter's start-up)."""
-    for ex, path in ((p_pair30, P_PAIR), (four_bar30, FOUR_BAR)):
+    for ex, path in ((p_pair_exercise, P_PAIR), (four_bar_exercise, FOUR_BAR)):
         for k, v in enumerate(ex.variants[:2]):
             sets = [a for name, expr in v.sets.items() for a in ("--set", f"{name}={expr}")]
             if k == 0:
@@ -122,18 +122,18 @@ def test_a_few_keys_equal_solve_set_on_the_command_line(p_pair30, four_bar30):
             assert {r.question: r.value for r in v.rows} == _flat(answers, ex.asks)
 
 
-def test_the_sets_are_the_stated_values_in_the_models_units(p_pair30):
-    v = p_pair30.variants[0]
+def test_the_sets_are_the_stated_values_in_the_models_units(p_pair_exercise):
+    v = p_pair_exercise.variants[0]
     assert v.sets["s"] == f"{v.stated['s'].normalize():f}/1000"
     assert v.sets["beta"] == f"deg({v.stated['beta'].normalize():f})"
 
 
-def test_variants_csv_and_key_csv_are_the_contracts(p_pair30):
-    lines = variants_csv(p_pair30).splitlines()
-    assert lines[0] == "variant,s,beta,w" and len(lines) == 31
-    first = p_pair30.variants[0]
+def test_variants_csv_and_key_csv_are_the_contracts(p_pair_exercise):
+    lines = variants_csv(p_pair_exercise).splitlines()
+    assert lines[0] == "variant,s,beta,w" and len(lines) == 1 + COUNT
+    first = p_pair_exercise.variants[0]
     assert lines[1].split(",") == ["1", *(f"{first.stated[n].normalize():f}" for n in ("s", "beta", "w"))]
-    key = key_csv(p_pair30).splitlines()
+    key = key_csv(p_pair_exercise).splitlines()
     assert key[0] == "variant,question,value,tolerance"
     questions = [line.split(",")[1] for line in key[1:11]]
     assert questions == ["q1", "q2", "q3.x", "q3.y", "q4.x", "q4.y", "q5.x", "q5.y", "q6.x", "q6.y"]
@@ -144,17 +144,17 @@ def test_variants_csv_and_key_csv_are_the_contracts(p_pair30):
     tolerances = [float(line.split(",")[3]) for line in key[1:]]
     assert all(FLOOR <= t <= 0.01 + SENSITIVE for t in tolerances)
     assert sum(t >= 0.01 for t in tolerances) > len(tolerances) / 2
-    assert len(key) == 1 + 30 * 10
+    assert len(key) == 1 + COUNT * 10
 
 
-def test_mistakes_that_barely_differ_are_told_apart_or_their_variant_not_drawn(p_pair30):
+def test_mistakes_that_barely_differ_are_told_apart_or_their_variant_not_drawn(p_pair_exercise):
     """Every kept variant tells each usual mistake from the right answer by 1.5 (right +
     mistaken) margins on each vector it changes; the command says what it narrowed or left out."""
     import math
 
     from kinematika.exercise.margins import APART, NOISE
 
-    for v in p_pair30.variants:
+    for v in p_pair_exercise.variants:
         stems = {}
         for r in v.rows:
             stems.setdefault(r.question.rsplit(".", 1)[0] if r.question[-2:] in (".x", ".y") else r.question, []).append(r)
@@ -166,11 +166,11 @@ def test_mistakes_that_barely_differ_are_told_apart_or_their_variant_not_drawn(p
                 size = group[0].size
                 gap = math.sqrt(sum((w.value - r.value) ** 2 for w, r in zip(wrong, group))) / size
                 tol = v.tolerance_of(group[0])
-                if gap <= min(tol, NOISE + p_pair30.tolerance):
+                if gap <= min(tol, NOISE + p_pair_exercise.tolerance):
                     continue                                   # a change no margin sees
                 assert gap >= APART * tol * (1 + min(1.0, wrong[0].size / size)) * (1 - 1e-9), (v.number, m.kind)
-    said = [str(n) for n in p_pair30.notes]
+    said = [str(n) for n in p_pair_exercise.notes]
     assert said and all(n.startswith(("not drawn: ", "variant ")) for n in said)
     for n in (n for n in said if n.startswith("variant ")):
         number, stem = int(n.split()[1].rstrip(":")), n.split("margin of ")[1].split()[0]
-        assert stem in p_pair30.variant(number).narrowed
+        assert stem in p_pair_exercise.variant(number).narrowed

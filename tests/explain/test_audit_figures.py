@@ -10,9 +10,7 @@ import re
 
 import pytest
 
-from kinematika.explain import render
-
-from .helpers import WORKED, explained
+from .helpers import WORKED, explained, render_of
 
 C5_1_2 = "seed_c5_1_2_bar_on_inclined_wheels"
 
@@ -27,7 +25,7 @@ def test_a_body_welded_to_the_ground_is_not_a_moving_body():
     from kinematika.explain.structure import dof_counts
 
     sol, doc = explained(C5_1_2)
-    text = render(doc, "en", "md", drawings=False)
+    text = render_of(doc, "en", "md", drawings=False)
     counts = dof_counts(Ctx(sol))
     assert (counts["n"], counts["moving"], counts["rank"], counts["dof"]) == (12, 4, 11, 1)
     assert "The mechanism has one degree of freedom." in text      # the mobility, as said (fifth round)
@@ -38,7 +36,7 @@ def test_a_body_welded_to_the_ground_is_not_a_moving_body():
     rates = text.split("## Angular velocities", 1)[1].split("##", 1)[0]
     assert "plane" not in rates
     for lang, words in (("ca", "un grau de llibertat"), ("eu", "askatasun-gradu bat du"), ("es", "un grado de libertad")):
-        assert words in render(doc, lang, "md", drawings=False), lang
+        assert words in render_of(doc, lang, "md", drawings=False), lang
 
 
 def _circles(sol) -> list[tuple[str, tuple, float]]:
@@ -94,7 +92,7 @@ def test_the_centres_figure_shows_only_the_centres_the_text_uses(name):
     from kinematika.draw.options import DrawOptions
 
     sol, doc = explained(name)
-    text = render(doc, "en", "md", drawings=False)
+    text = render_of(doc, "en", "md", drawings=False)
     figures = _drawings(doc, "fig.centres")
     assert figures, name
     for fig in figures:
@@ -145,7 +143,7 @@ def test_every_point_an_equation_names_is_in_the_points_table(name):
 
 
 def _points_table_en(doc) -> dict[str, str]:
-    text = render(doc, "en", "md", drawings=False)
+    text = render_of(doc, "en", "md", drawings=False)
     lines = text.split("| point |", 1)[1].split("\n\n", 1)[0].splitlines()[2:]
     return {cells[1].strip(): cells[2].strip() for cells in (line.split("|") for line in lines)}
 

@@ -104,25 +104,48 @@ class LabelBoard:
 @functools.lru_cache(maxsize=8192)
 def text_extent(text: str, size: float, weight: str = "normal",
                 style: str = "normal") -> tuple[float, float]:
-    """(width, height) in points of `text` drawn at `size`: measured once, then remembered."""
-    fig = _scratch()
+    """(width, height) in points of `text` drawn at `size`: measured once, then remembered
+    (Agg's metrics at 72 dpi, a formula's as the SVG writer lays it out: `_measuring`)."""
+    fig, renderer = _scratch()
     t = fig.text(0, 0, text, fontsize=size, weight=weight, style=style)
     try:
-        bb = t.get_window_extent(fig.canvas.get_renderer())
+        bb = t.get_window_extent(renderer)
     finally:
         t.remove()
     return float(bb.width), float(bb.height)
 
 
 @functools.lru_cache(maxsize=1)
-def _scratch() -> Any:
-    """A figure at 72 dpi (one pixel per point) to measure text in."""
+def _scratch() -> tuple[Any, Any]:
+    """A figure at 72 dpi (one pixel per point) to measure text in, and its renderer."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
     fig = Figure(dpi=72)
     FigureCanvasAgg(fig)
-    return fig
+    return fig, _measuring()
+
+
+def _measuring() -> Any:
+    """Agg's renderer at 72 dpi, except that a formula ($…$) is measured as the SVG writer
+    measures and sets it (matplotlib's `TextToPath`: laid out once at its reference size,
+    then scaled). A formula's layout (pyparsing) takes ~20 ms; Agg lays it out at the
+    label's own size, so each label of an explanation's figures (SVG) was laid out twice,
+    once to place it and once to draw it; now once (the process's `mathcache`). Its width,
+    height and depth are rounded up to whole points as Agg rounds them at 72 dpi, so a box
+    is never smaller than its text: a PNG's raster glyphs (110 dpi, hinted) come up to
+    4 % larger than the outline's. Plain text keeps Agg's hinted metrics."""
+    from matplotlib.backends.backend_agg import RendererAgg
+    from matplotlib.textpath import text_to_path
+
+    class Measuring(RendererAgg):
+        def get_text_width_height_descent(self, s: str, prop: Any, ismath: Any) -> Any:
+            if ismath is True:
+                w, h, d = text_to_path.get_text_width_height_descent(s, prop, ismath)
+                return math.ceil(w), math.ceil(h - d) + math.ceil(d), math.ceil(d)
+            return super().get_text_width_height_descent(s, prop, ismath)
+
+    return Measuring(1, 1, 72)
 
 
 class Layout:
