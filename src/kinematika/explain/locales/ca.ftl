@@ -729,7 +729,7 @@ how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mat
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda respecte del terra recte, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
-centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
+centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, és el punt { $point }: no té velocitat, { $sym } = 0.
 centre-site_s = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte
 geom-rule = La regla de tot contacte de rodolament: la condició de no lliscament es compleix a cada instant al punt geomètric de contacte (aquí { $geom }), que es mou; derivant-la al llarg d’aquest punt s’obté { $rule }: les components tangencials de les dues acceleracions són iguals i les normals difereixen en aquest terme, segons la normal comuna. Cal la velocitat del punt geomètric:

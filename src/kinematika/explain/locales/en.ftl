@@ -507,10 +507,7 @@ how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have 
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the straight ground, so they move on parallel straight lines at every instant: the body translates without turning)
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
-centre-site_i = The instant centre { $centre } ≡ { $point } of { $body } relative to { $frame }{ COUNT($frame) ->
-        [many] , placed above, have
-       *[one] , placed above, has
-    } no velocity: { $sym } = 0.
+centre-site_i = The instant centre { $centre } of { $body } relative to { $frame }, placed above, is the point { $point }: it has no velocity, { $sym } = 0.
 centre-site_s = The instant centre { $centre } of { $body } relative to { $frame }{ COUNT($frame) ->
         [many] , placed above, have
        *[one] , placed above, has

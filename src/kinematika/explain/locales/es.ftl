@@ -465,7 +465,7 @@ how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la mi
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
 how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia del radio de su rueda respecto del suelo recto, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
-centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
+centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, es el punto { $point }: no tiene velocidad, { $sym } = 0.
 centre-site_s = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto
 geom-rule = La regla de todo contacto de rodadura: la condición de no deslizamiento se cumple en cada instante en el punto geométrico de contacto (aquí { $geom }), que se mueve; derivándola a lo largo de él se obtiene { $rule }: las componentes tangenciales de las dos aceleraciones son iguales y las normales difieren en este término, según la normal común. Hace falta la velocidad del punto geométrico:
