@@ -375,6 +375,7 @@ def _perpendicular(ctx: Ctx, found: dict, a: str, k: str, b: str) -> Optional[Ms
         if w is None:
             return None
         v = Sym("v", ctx.point_label(w, k))
+        ctx.witnessed.setdefault(b, set()).add(w)     # the velocity step then uses this point too
         if pivot.get("point") is None:
             if pivot.get("direction") is None:
                 return None
