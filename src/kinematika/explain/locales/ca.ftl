@@ -672,16 +672,13 @@ centre-line-moves_still = la perpendicular a { $v } per { $point } ({ $point } e
         [many] traslladen
        *[one] trasllada
     })
-centre-line-guide = la perpendicular a la guia per { $pivot } (el seu peu sobre la guia és un punt { ELISION($b) ->
+centre-line-guide = la perpendicular a la guia per { $pivot } (al seu peu { $pivot }′ sobre la guia, la velocitat relativa { ELISION($body) ->
+        [vowel] a l’{ $body }
+       *[other] a { $body }
+    } és paral·lela a la guia i la d’arrossegament és perpendicular a { $pivot }{ $pivot }′, és a dir, també paral·lela a la guia: la velocitat del punt { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
-    }: respecte { ELISION($body) ->
-        [vowel] d’{ $body }
-       *[other] de { $body }
-    } llisca al llarg de la guia, i { $body } l’arrossega al voltant { ELISION($pivot) ->
-        [vowel] d’{ $pivot }
-       *[other] de { $pivot }
-    } perpendicularment a aquesta perpendicular, és a dir, també segons la guia; la velocitat relativa i la d’arrossegament hi són paral·leles, i la seva velocitat segueix la guia)
+    } a { $pivot }′ segueix la guia)
 centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
@@ -728,6 +725,10 @@ how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda respecte del terra recte, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
+centres-found_above = { $centre } = { $value }: trobat més amunt, al pas de velocitats { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }.
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
 centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, és el punt { $point }: no té velocitat, { $sym } = 0.
 centre-site_s = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
