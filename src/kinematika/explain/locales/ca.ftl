@@ -342,6 +342,7 @@ path-line = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu una recta, sense acceleració normal; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), { $ac } = { $al } × { $arm }.
+rolling-equal = Sense lliscament al contacte { $point }: { $sym } = { $other }.
 rolling-same = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola

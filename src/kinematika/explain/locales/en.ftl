@@ -258,6 +258,7 @@ path-line = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls
     } without slipping on { $a }, which does not move. Its centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
+rolling-equal = No slip at the contact { $point }: { $sym } = { $other }.
 rolling-same = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls

@@ -243,6 +243,7 @@ path-line = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
+rolling-equal = Sin deslizamiento en el contacto { $point }: { $sym } = { $other }.
 rolling-same = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
