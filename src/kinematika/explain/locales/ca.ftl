@@ -86,12 +86,18 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [1] { $format ->
             [md] la fletxa
            *[other] la fletxa blava
-        } és la velocitat de { $points }, amb el seu mòdul
+        } és la velocitat de { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", amb el seu mòdul"}
+        }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
        *[other] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
-        } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
+        } són les velocitats de { $points }, a una mateixa escala{ $moduli ->
+            [0] {""}
+           *[other] {", amb els seus mòduls"}
+        }
     }; els sòlids estan numerats.
 fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
@@ -101,12 +107,18 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         [1] { $format ->
             [md] la fletxa
            *[other] la fletxa blava
-        } és la velocitat de { $points }, amb el seu mòdul
+        } és la velocitat de { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", amb el seu mòdul"}
+        }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
        *[other] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
-        } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
+        } són les velocitats de { $points }, a una mateixa escala{ $moduli ->
+            [0] {""}
+           *[other] {", amb els seus mòduls"}
+        }
     }.
 fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
 fig-primed = La imatge del punt { $point } és { $image } ({ $symbol }: { $what }).

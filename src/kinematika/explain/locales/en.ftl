@@ -74,12 +74,18 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [1] { $format ->
             [md] the arrow
            *[other] the blue arrow
-        } is the velocity of { $points }, with its magnitude
+        } is the velocity of { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", with its magnitude"}
+        }
         [3] { $points } is at rest: its velocity is zero, written beside it
        *[other] { $format ->
             [md] the arrows
            *[other] the blue arrows
-        } are the velocities of { $points }, to one scale, with their magnitudes
+        } are the velocities of { $points }, to one scale{ $moduli ->
+            [0] {""}
+           *[other] {", with their magnitudes"}
+        }
     }; the bodies are numbered.
 fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
@@ -89,12 +95,18 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         [1] { $format ->
             [md] the arrow
            *[other] the blue arrow
-        } is the velocity of { $points }, with its magnitude
+        } is the velocity of { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", with its magnitude"}
+        }
         [3] { $points } is at rest: its velocity is zero, written beside it
        *[other] { $format ->
             [md] the arrows
            *[other] the blue arrows
-        } are the velocities of { $points }, to one scale, with their magnitudes
+        } are the velocities of { $points }, to one scale{ $moduli ->
+            [0] {""}
+           *[other] {", with their magnitudes"}
+        }
     }.
 fig-o_prime = The image of the point O is o′, since o is the pole.
 fig-primed = The image of the point { $point } is { $image } ({ $symbol } is the { $what }).

@@ -71,12 +71,18 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [1] { $format ->
             [md] la flecha
            *[other] la flecha azul
-        } es la velocidad de { $points }, con su módulo
+        } es la velocidad de { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", con su módulo"}
+        }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
        *[other] { $format ->
             [md] las flechas
            *[other] las flechas azules
-        } son las velocidades de { $points }, a una misma escala, con sus módulos
+        } son las velocidades de { $points }, a una misma escala{ $moduli ->
+            [0] {""}
+           *[other] {", con sus módulos"}
+        }
     }; los sólidos están numerados.
 fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
@@ -86,12 +92,18 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         [1] { $format ->
             [md] la flecha
            *[other] la flecha azul
-        } es la velocidad de { $points }, con su módulo
+        } es la velocidad de { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", con su módulo"}
+        }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
        *[other] { $format ->
             [md] las flechas
            *[other] las flechas azules
-        } son las velocidades de { $points }, a una misma escala, con sus módulos
+        } son las velocidades de { $points }, a una misma escala{ $moduli ->
+            [0] {""}
+           *[other] {", con sus módulos"}
+        }
     }.
 fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
 fig-primed = La imagen del punto { $point } es { $image } ({ $symbol }: { $what }).

@@ -71,12 +71,18 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [1] { $format ->
             [md] gezia
            *[other] gezi urdina
-        } { $points } puntuaren abiadura da, bere moduluarekin
+        } { $points } puntuaren abiadura da{ $moduli ->
+            [0] {""}
+           *[other] {", bere moduluarekin"}
+        }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
        *[other] { $format ->
             [md] geziak
            *[other] gezi urdinak
-        } { $points } puntuen abiadurak dira, eskala berean, beren moduluekin
+        } { $points } puntuen abiadurak dira, eskala berean{ $moduli ->
+            [0] {""}
+           *[other] {", beren moduluekin"}
+        }
     }; solidoak zenbakituta daude.
 fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
@@ -86,12 +92,18 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         [1] { $format ->
             [md] gezia
            *[other] gezi urdina
-        } { $points } puntuaren abiadura da, bere moduluarekin
+        } { $points } puntuaren abiadura da{ $moduli ->
+            [0] {""}
+           *[other] {", bere moduluarekin"}
+        }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
        *[other] { $format ->
             [md] geziak
            *[other] gezi urdinak
-        } { $points } puntuen abiadurak dira, eskala berean, beren moduluekin
+        } { $points } puntuen abiadurak dira, eskala berean{ $moduli ->
+            [0] {""}
+           *[other] {", beren moduluekin"}
+        }
     }.
 fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
 fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
