@@ -10,7 +10,7 @@ import pytest
 import kinematika
 
 from kinematika.explain import build, render
-from kinematika.explain.document import CentreNote, Derived, Equation, Section
+from kinematika.explain.document import CentreNote, Derived, Equation, Msg, Section
 from kinematika.questions import answer
 
 from .helpers import EXAMPLES, is_close, explained
@@ -83,7 +83,13 @@ def reached(sol, doc, q) -> bool:
     if q.kind == "icr":
         pair = {rel or frame, q.target}
         notes = [b for b in blocks if isinstance(b, CentreNote) and set(b.pair) == pair]
-        return any(n.how in DERIVED_CENTRES and (n.how != "velocities" or len(n.witnesses) == 2) for n in notes)
+        # or placed in a velocity step where two lines meet (a vehicle's chassis), and only
+        # referred to in the centres section (thirteenth round (c): a construction said once)
+        placed = [b for b in blocks if isinstance(b, Msg) and b.key == "vehicle.centre" and rel is None
+                  and b.args["body"].text == q.target and got.get("point") is not None
+                  and is_close(sol, b.args["where"].value, got["point"], _scale(sol, "len"))]
+        return bool(placed) or any(n.how in DERIVED_CENTRES and (n.how != "velocities" or len(n.witnesses) == 2)
+                                   for n in notes)
     if q.kind == "curvature":
         return any(isinstance(b, Derived) and b.kind == "radius" and b.sym.sub.split("∈")[0] == q.target.point
                    and is_close(sol, b.value.value, got["radius"], _scale(sol, "len")) for b in blocks)

@@ -6,7 +6,7 @@ import pytest
 import sympy
 
 from kinematika.draw.names import formula
-from kinematika.explain.document import CentreNote, Figure
+from kinematika.explain.document import CentreNote, Figure, Msg
 
 from .helpers import ALL, explained
 
@@ -15,22 +15,29 @@ def notes(doc) -> dict:
     return {frozenset(b.pair): b for b in doc.blocks() if isinstance(b, CentreNote) and b.how != "check"}
 
 
+def placed_in_step(doc, body: str):
+    """The velocity step's sentence that places `body`'s centre where two lines meet (the
+    centres section then refers to it: thirteenth round (c), a construction said once)."""
+    return next(b for b in doc.blocks() if isinstance(b, Msg) and b.key == "vehicle.centre"
+                and b.args["body"].text == body)
+
+
 def test_tricycle_centre_by_the_axles():
     """The chassis' centre: the rear axle (perpendicular to wheel j3 at C1) and the
-    perpendicular to v_F at F (the front wheel's axle)."""
+    perpendicular to v_F at F (the front wheel's axle), said in the step, referred to after."""
     _, doc = explained("seed_c5_2_1_tricycle")
-    note = notes(doc)[frozenset(("ground", "chassis"))]
-    assert note.how == "lines"
-    assert [m.key for m in note.via] == ["vehicle.line.wheel", "vehicle.line.velocity"]
-    assert note.via[0].args["joint"].text == "j3"
+    said = placed_in_step(doc, "chassis")
+    assert [said.args["first"].key, said.args["second"].key] == ["vehicle.line.wheel", "vehicle.line.velocity"]
+    assert said.args["first"].args["joint"].text == "j3"
+    assert frozenset(("ground", "chassis")) not in notes(doc)
+    assert any(isinstance(b, Msg) and b.key == "centres.found_above" for b in doc.blocks())
 
 
 def test_trailer_centre_by_its_axle_and_the_hitch():
     _, doc = explained("tractor_trailer")
-    note = notes(doc)[frozenset(("ground", "trailer"))]
-    assert note.how == "lines"
-    assert note.via[0].args["joint"].text == "trailer_wheels"
-    assert note.via[1].args["point"].text == "H"
+    said = placed_in_step(doc, "trailer")
+    assert said.args["first"].args["joint"].text == "trailer_wheels"
+    assert said.args["second"].args["point"].text == "H"
 
 
 def test_triad_assur_point_drawn():

@@ -149,14 +149,15 @@ def test_body_subscript_is_not_a_parameter(lang, label):
 
 
 @pytest.mark.parametrize("lang,named", [
-    ("ca", "el seu peu sobre la guia és un punt de la *barra*"),
-    ("es", "su pie sobre la guía es un punto de la *barra*"),
-    ("en", "its foot on the guide is a point of the *bar*"),
+    ("ca", "al seu peu J′ sobre la guia"),
+    ("es", "en su pie J′ sobre la guía"),
+    ("en", "at its foot J′ on the guide"),
 ])
 def test_guide_line_names_its_point(lang, named):
     """C5-1.3: the perpendicular to the guide through J holds the centre because of one point
     of the bar, the foot of that perpendicular, where v_REL ∥ v_ar (the notes); the page
-    names it (before: "el punt de la barra que hi és llisca …", unclear)."""
+    names it J′ (before: "el punt de la barra que hi és llisca …", unclear; thirteenth
+    round (c): the notes' short statement, not a long bracket)."""
     text = rendered("seed_c5_1_3_bar_in_sleeve", lang, "md", drawings=False)
     assert named in text
     assert "que hi és llisca" not in text

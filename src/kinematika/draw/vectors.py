@@ -140,6 +140,11 @@ def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
         v = arrow.view
         colour = KIND_COLOURS[v.kind]
         name = equation(v.label, "0" if arrow.zero else v.text)
+        if not ctx.words and not arrow.zero and v.text.startswith("≈"):
+            # a bare figure of a symbolic page (an explanation's) whose formula is too long
+            # to set: the vector's name alone, as its other labels are formulas — a sample
+            # number (v_P ≈ 4,03, C5-E.6) reads as a datum the page does not have
+            name = v.label
         said = {"name": name, "say": "enlarged", "args": {}} if arrow.enlarged else None
         text = name + (" (enlarged)" if arrow.enlarged and ctx.words else "")
         group, layer = f"vector:{v.key}", v.kind

@@ -57,8 +57,24 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
     # each centre once: a centre placed (at a joint, by Aronhold–Kennedy, where two lines
     # meet) is not placed again "as a check" from the velocities — the notes never re-derive
     # a centre they have found, and the second derivation reads as a second answer
-    sec.blocks += [made[key] for key in keys]
+    sec.blocks += [_once(ctx, made[key]) for key in keys]
     return sec
+
+
+def _once(ctx: Ctx, note: CentreNote):
+    """The centre's note, or, when a velocity step placed the centre already (a vehicle's
+    chassis where its axle and a velocity's perpendicular meet: `vehicles`), its value with
+    where it was found: the construction is said once on a page (C5-2.1 wrote the same
+    paragraph in step 1 and again here)."""
+    a, b = note.pair
+    body = b if a == ctx.frame else a if b == ctx.frame else None
+    point = note.value.get("point")
+    if body is None or point is None or f"centre:{body}" not in ctx.worked:
+        return note
+    from .document import Value
+
+    return msg("centres.found_above", centre=Sym("I", f"{ctx.frame},{body}", vector=False),
+               value=Value(point, "len"), body=Name(body, "body"))
 
 
 def used_pairs(made: dict, chosen: list) -> list[tuple[str, str]]:
@@ -396,6 +412,7 @@ def _perpendicular(ctx: Ctx, found: dict, a: str, k: str, b: str) -> Optional[Ms
         if w is None:
             return None
         v = Sym("v", ctx.point_label(w, k))
+        ctx.witnessed.setdefault(b, set()).add(w)     # the velocity step then uses this point too
         if pivot.get("point") is None:
             if pivot.get("direction") is None:
                 return None

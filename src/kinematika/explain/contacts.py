@@ -141,7 +141,8 @@ class Bar:
         if self.c2 is not None:
             if level == "v":
                 out.append(msg("geom.bar", geom=geometric_point(self.name), c1=Name(self.c1), c2=Name(self.c2),
-                               joint=joint_name(self.j.id)))
+                               joint=joint_name(self.j.id), part=Name(str(segment(self.c1, self.name))),
+                               whole=Name(str(segment(self.c1, self.c2))), ratio=Value(self.fraction())))
         if self.c2 is not None and with_bar:
             end = point_term(ctx, level, *self.second())
             turn = self.rotation(level, self.c1, self.c2, True)
@@ -161,6 +162,16 @@ class Bar:
         target = Term(geometric_sym(level, self.name), self.geometric(level), *FOUND, unknown=True, kind="point")
         out.append(Equation(target, [[start] + arm], level, figure=False, position=ctx.pos(self.name)))
         return out
+
+    def fraction(self) -> Any:
+        """Where J^geom is on the line of centres, C1J / C1C2 (signed: beyond C2 when above
+        1), as a number the student can check: the notes' "a 2/3 d'OC des d'O" (C5-1.8),
+        never "at the same fraction". Two circles touching at J divide C1C2 in their radii's
+        ratio, r1 / (r1 ± r2), so the fraction holds at every instant."""
+        ctx = self.ctx
+        whole, part = ctx.r(self.c1, self.second()[0]), ctx.r(self.c1, self.name)
+        value = (part[0] * whole[0] + part[1] * whole[1]) / (whole[0] ** 2 + whole[1] ** 2)
+        return _simplified(ctx, value)
 
     def geometric(self, level: str) -> Any:
         """v_J^geom (a_J^geom): the motion of the bar's point at J, from its first end C1,

@@ -36,6 +36,7 @@ class Ctx:
         self.centre_how: dict = {}           # how the engine places each pair's centre
         self.centre_points: set[str] = set() # instant centres the velocity steps start from (I14)
         self.centre_sites: dict[str, str] = {}   # ... and those at a point of the body (P): name -> body
+        self.witnessed: dict[str, set] = {}       # body -> the points its centre was placed by (M of C5-E.4)
         self.translating: dict[str, Any] = {}    # bodies whose centre is at infinity -> its note
         self.slides_seen: dict[tuple, Any] = {}  # (level, body, guide body) -> a slide's symbol written in the steps
         self.centre_first_memo: Optional[bool] = None    # the centres before the velocities (`centres.centres_first`)
@@ -170,12 +171,24 @@ class Ctx:
         return self.model.share_motion(point, self.model.carriers(point))
 
     def point_label(self, point: str, body: str) -> str:
-        """`B` when B is one point of every body carrying it, else `B∈body`."""
-        if point in self.inst.points and self.shared(point) and body in self.model.carriers(point):
+        """`B` when B is one point of every body carrying it, else `B∈body`; `O` too for the
+        point where `body` is pinned to a body that does not move (C5-E.1's bar OC about O,
+        whose wheels also carry a point at O): the fixed pivot is written bare, as the notes
+        write v_C = v_O + ω × OC, and the other bodies' points there keep their body
+        (O∈wheels)."""
+        if point in self.inst.points and body in self.model.carriers(point) and (
+                self.shared(point) or self.pivot(point, body)):
             return point
         if point in self.centre_points:              # an instant centre: the point of its body there
             return point
         return f"{point}∈{body}"
+
+    def pivot(self, point: str, body: str) -> bool:
+        """Whether `body` is pinned (or welded) at `point` to a body that does not move,
+        directly or through bodies pinned there: its material point there is at rest."""
+        classes = self.model.motion_classes(point, self.model.carriers(point))
+        mine = next((c for c in classes if body in c), [])
+        return len(mine) > 1 and any(self.fixed(b) for b in mine)
 
     def motion_key(self, point: str, body: str) -> str:
         """Which material point this is, by its motion: one key for the points of bodies

@@ -535,8 +535,16 @@ class Planner:
         def key(p: Path) -> tuple:      # a rotation about a point at rest finds ω alone, as the notes do
             rest = self._from_rest(p)
             return (self._across_tangent(p), not p.finds, len(p.routes), self._off_centre(p), -self._via_centre(p), not rest, p.turns,
-                    p.unknowns if rest else -p.unknowns, self._against(p), -self._end_rank(p), order[id(p)])
+                    p.unknowns if rest else -p.unknowns, self._against(p), -self._end_rank(p), -self._witnessed(p),
+                    order[id(p)])
         return min(found, key=key)
+
+    def _witnessed(self, p: Path) -> int:
+        """How many of the equation's points placed the instant centre of a body it finds
+        (C5-E.4: the upper wheel's centre on the perpendicular to v_M through M): the step
+        reads ω from the point the centres section named, not from its mirror N."""
+        points = {p.end.point} | {r.start.point for r in p.routes}
+        return sum(len(points & self.ctx.witnessed.get(b, set())) for b in p.finds)
 
     def _across_tangent(self, p: Path) -> int:
         """How many times the equation turns with a line found not to turn (`_tangents`):
@@ -872,8 +880,11 @@ class Writer:
             out += self.known_first(s, p)
         sides: list[list[Term]] = []
         reads: dict[str, tuple[Seg, Term]] = {}
-        for r in p.routes:
+        moved = self.one_body(p)
+        for k, r in enumerate(p.routes):
             terms = self.site_terms(r.start, p)
+            if k in moved["starts"]:
+                terms = [self.carried(terms[0], r.start, r.segs[0], moved)]
             skip = -1
             for i, seg in enumerate(r.segs):
                 if i == skip:
@@ -899,6 +910,8 @@ class Writer:
                     reads.setdefault(seg.body, (seg, made[-1]))
             sides.append(terms)
         end = self.site_terms(p.end, p)
+        if moved["end"] and len(end) == 1:
+            end = [self.carried(end[0], p.end, p.routes[0].segs[-1], moved)]
         if len(end) == 1:
             target = end[0]
         else:
@@ -915,14 +928,76 @@ class Writer:
                            b=body_name(rolling), point=point_name(p.end.point), sym=target.sym,
                            other=sides[0][0].sym))
             return out
+        out = self.said_equal(out, owned, moved)
         out.append(Equation(target, sides, lv, ctx.ref(p.end.point, p.end.body), position=position,
                             owned=owned if contacts else [], contacts=contacts))
         ps.done.add(self.label(p.end))
+        ps.done.update(moved.get("labels", ()))
         ps.done.update(t.sym.sub for side in sides for t in side if t.kind == "point" and not t.sym.sup)
         for body in p.finds:
             seg, term = reads[body]
             out.append(ps.read(body, term, seg.q, seg.p))
         return out + self.anchors(p)
+
+    def one_body(self, p: Path) -> dict:
+        """The rolling contacts an equation's velocities cross with no term of their own
+        (no slip: v_J∈b = v_J∈a), at a route's start or at its end: there the point is
+        written as a point of the body the route turns with, so that each side is one rigid
+        body's relation (v_Q∈planet2 = v_K∈planet2 + ω_planet2 × KQ), as the notes write
+        v_F∈R = v_F∈N at the contact and then each point from its own body — never
+        v_Q∈ring = v_K∈sun + v_QK, whose terms belong to three bodies. The equality at the
+        contact is said in the contact's sentence (`said_equal`). Keys: "starts", the indices
+        of the routes whose start is carried; "end", whether the end is; "pairs", (carried
+        label, crossed label, joint); "labels", the carried labels."""
+        out: dict = {"starts": set(), "end": False, "pairs": [], "labels": set()}
+        if self.level != "v":
+            return out
+
+        def plain(seg: Seg) -> bool:
+            j = seg.joint
+            return seg.kind == "cross" and j is not None and rolls(j) and not self.plan._glide_cross(seg)
+
+        for k, r in enumerate(p.routes):
+            state, spec = p.known.get(r.start, ("full", {}))
+            if len(r.segs) > 1 and plain(r.segs[0]) and r.segs[1].kind == "turn" and not spec:
+                out["starts"].add(k)
+        lasts = [r.segs[-1] for r in p.routes if r.segs]
+        state, spec = p.known.get(p.end, ("full", {}))
+        if (len(p.routes) == 1 and len(lasts) == 1 and len(p.routes[0].segs) > 1 and plain(lasts[0])
+                and p.routes[0].segs[-2].kind == "turn" and not spec):
+            out["end"] = True
+        return out
+
+    def carried(self, term: Term, s: Site, seg: Seg, moved: dict) -> Term:
+        """`term`, the velocity of site `s`, written as the point of the body on the other
+        side of the rolling contact `seg` crosses (the same velocity: no slip)."""
+        ctx = self.ctx
+        other = seg.body if seg.body != s.body else seg.frm
+        label, before = ctx.point_label(s.point, other), term.sym.sub
+        if label == before or term.kind != "point" or term.sym.sup:
+            return term
+        moved["pairs"].append((label, before, seg.crossed()))
+        moved["labels"].add(label)
+        return Term(Sym(term.sym.base, label), term.value, term.mag, term.dir, term.how, term.unknown,
+                    term.kind, term.spelt)
+
+    def said_equal(self, out: list, owned: list, moved: dict) -> list:
+        """The contact's sentence of each rolling contact an equation's point was carried
+        across (`one_body`) says the equality it uses, v_K∈planet2 = v_K∈sun, just before the
+        equation (after the crossed point's own equation, which it carries on); said alone
+        ("no slip at K: …") when the sentence was written before. `owned` follows."""
+        for label, before, j in moved.get("pairs", ()):
+            said = next((b for b in out if isinstance(b, Msg) and b.key == "rolling.noslip"
+                         and b.args["joint"].text == j.id), None)
+            if said is not None:            # said where it is used: after the crossed point's equation
+                out.remove(said)
+                same = msg("rolling.same", **said.args, sym=Sym("v", label), other=Sym("v", before))
+                owned[:] = [same if b is said else b for b in owned]
+                out.append(same)
+            else:
+                out.append(msg("rolling.equal", point=point_name(self.ctx.contact(j)), sym=Sym("v", label),
+                               other=Sym("v", before)))
+        return out
 
     def _centred(self, r: Route, i: int) -> bool:
         """Whether piece i of the route crosses into a wheel on a fixed body that the route

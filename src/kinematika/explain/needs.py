@@ -271,6 +271,10 @@ def _unname(m: Msg, bodies: set[str]) -> None:
             m.args["bodies"] = Lead(kept) if lead else kept
 
 
+# the sentences that carry a point's velocity across a contact (v_J∈9 = v_J∈8): forward steps
+FORWARD = ("rolling.same", "rolling.equal")
+
+
 def _point_of(label: str) -> str:
     return label.split("∈")[0].split("/")[0]
 
@@ -330,7 +334,7 @@ def _prune_section(sec: Section, level: str, asked: set[str], used: set[str], te
             else:
                 rates |= _rate_bodies_of(_syms([eq.how, eq.remark], set()))
             continue
-        if isinstance(eq, Msg) and eq.key != "rolling.same":
+        if isinstance(eq, Msg) and eq.key not in FORWARD:
             rates |= _rate_bodies_of(_syms(eq, set()))
             continue
         if isinstance(eq, Msg):             # no slip in a sentence, v_J∈9 = v_J∈8: a forward step too

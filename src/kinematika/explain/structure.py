@@ -188,7 +188,10 @@ def _arrows_drawn(ctx: Ctx, options: dict) -> dict:
     shown = moving or drawn
     points = Names([_arrow_point(ctx, v.ref) for v in shown])
     arrows = (min(len(moving), 2) if moving else 3) if drawn else 0
-    return {"arrows": arrows, "points": points}
+    # a symbolic page's label too long to set names the vector alone (`draw.vectors`): the
+    # caption then promises no magnitude
+    moduli = int(all(not v.text.startswith("≈") for v in shown))
+    return {"arrows": arrows, "points": points, "moduli": moduli}
 
 
 def _arrow_point(ctx: Ctx, ref: str) -> Any:

@@ -86,12 +86,18 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [1] { $format ->
             [md] la fletxa
            *[other] la fletxa blava
-        } és la velocitat de { $points }, amb el seu mòdul
+        } és la velocitat de { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", amb el seu mòdul"}
+        }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
        *[other] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
-        } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
+        } són les velocitats de { $points }, a una mateixa escala{ $moduli ->
+            [0] {""}
+           *[other] {", amb els seus mòduls"}
+        }
     }; els sòlids estan numerats.
 fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
@@ -101,12 +107,18 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         [1] { $format ->
             [md] la fletxa
            *[other] la fletxa blava
-        } és la velocitat de { $points }, amb el seu mòdul
+        } és la velocitat de { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", amb el seu mòdul"}
+        }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
        *[other] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
-        } són les velocitats de { $points }, a una mateixa escala, amb els seus mòduls
+        } són les velocitats de { $points }, a una mateixa escala{ $moduli ->
+            [0] {""}
+           *[other] {", amb els seus mòduls"}
+        }
     }.
 fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
 fig-primed = La imatge del punt { $point } és { $image } ({ $symbol }: { $what }).
@@ -342,6 +354,7 @@ path-line = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu una recta, sense acceleració normal; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), { $ac } = { $al } × { $arm }.
+rolling-equal = Sense lliscament al contacte { $point }: { $sym } = { $other }.
 rolling-same = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
@@ -673,16 +686,13 @@ centre-line-moves_still = la perpendicular a { $v } per { $point } ({ $point } e
         [many] traslladen
        *[one] trasllada
     })
-centre-line-guide = la perpendicular a la guia per { $pivot } (el seu peu sobre la guia és un punt { ELISION($b) ->
+centre-line-guide = la perpendicular a la guia per { $pivot } (al seu peu { $pivot }′ sobre la guia, la velocitat relativa { ELISION($body) ->
+        [vowel] a l’{ $body }
+       *[other] a { $body }
+    } és paral·lela a la guia i la d’arrossegament és perpendicular a { $pivot }{ $pivot }′, és a dir, també paral·lela a la guia: la velocitat del punt { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
-    }: respecte { ELISION($body) ->
-        [vowel] d’{ $body }
-       *[other] de { $body }
-    } llisca al llarg de la guia, i { $body } l’arrossega al voltant { ELISION($pivot) ->
-        [vowel] d’{ $pivot }
-       *[other] de { $pivot }
-    } perpendicularment a aquesta perpendicular, és a dir, també segons la guia; la velocitat relativa i la d’arrossegament hi són paral·leles, i la seva velocitat segueix la guia)
+    } a { $pivot }′ segueix la guia)
 centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
@@ -762,12 +772,16 @@ how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda respecte del terra recte, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
+centres-found_above = { $centre } = { $value }: trobat més amunt, al pas de velocitats { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }.
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
-centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
+centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, és el punt { $point }: no té velocitat, { $sym } = 0.
 centre-site_s = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte
 geom-rule = La regla de tot contacte de rodolament: la condició de no lliscament es compleix a cada instant al punt geomètric de contacte (aquí { $geom }), que es mou; derivant-la al llarg d’aquest punt s’obté { $rule }: les components tangencials de les dues acceleracions són iguals i les normals difereixen en aquest terme, segons la normal comuna. Cal la velocitat del punt geomètric:
-geom-bar = { $geom }, el punt geomètric de contacte, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, a la mateixa fracció, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:
+geom-bar = { $geom }, el punt geomètric de contacte, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, amb { $part }/{ $whole } = { $ratio }, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:
 geom-foot = { $geom }, el punt geomètric de contacte, és el peu de la perpendicular des del centre { $centre } a la recta { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }

@@ -74,12 +74,18 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [1] { $format ->
             [md] the arrow
            *[other] the blue arrow
-        } is the velocity of { $points }, with its magnitude
+        } is the velocity of { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", with its magnitude"}
+        }
         [3] { $points } is at rest: its velocity is zero, written beside it
        *[other] { $format ->
             [md] the arrows
            *[other] the blue arrows
-        } are the velocities of { $points }, to one scale, with their magnitudes
+        } are the velocities of { $points }, to one scale{ $moduli ->
+            [0] {""}
+           *[other] {", with their magnitudes"}
+        }
     }; the bodies are numbered.
 fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
@@ -89,12 +95,18 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         [1] { $format ->
             [md] the arrow
            *[other] the blue arrow
-        } is the velocity of { $points }, with its magnitude
+        } is the velocity of { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", with its magnitude"}
+        }
         [3] { $points } is at rest: its velocity is zero, written beside it
        *[other] { $format ->
             [md] the arrows
            *[other] the blue arrows
-        } are the velocities of { $points }, to one scale, with their magnitudes
+        } are the velocities of { $points }, to one scale{ $moduli ->
+            [0] {""}
+           *[other] {", with their magnitudes"}
+        }
     }.
 fig-o_prime = The image of the point O is o′, since o is the pole.
 fig-primed = The image of the point { $point } is { $image } ({ $symbol } is the { $what }).
@@ -279,6 +291,7 @@ path-line = { $b } { COUNT($b) ->
         [many] Their
        *[one] Its
     } centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
+rolling-equal = No slip at the contact { $point }: { $sym } = { $other }.
 rolling-same = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls
@@ -520,10 +533,7 @@ centre-weld = { $body } { COUNT($body) ->
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
 centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
-centre-line-guide = the perpendicular to the guide through { $pivot } (its foot on the guide is a point of { $b }: relative to { $body } it slides along the guide, and { $body } { COUNT($body) ->
-        [many] carry
-       *[one] carries
-    } it about { $pivot } at right angles to that perpendicular, that is, along the guide too; there the relative and the drag velocities are parallel, and its velocity follows the guide)
+centre-line-guide = the perpendicular to the guide through { $pivot } (at its foot { $pivot }′ on the guide, the velocity relative to { $body } is along the guide and the drag velocity is perpendicular to { $pivot }{ $pivot }′, that is, along the guide too: the velocity of the point of { $b } at { $pivot }′ follows the guide)
 centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
 centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
@@ -546,18 +556,16 @@ how-centre_infinity = (its instant centre { $centre } is at infinity: it transla
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the straight ground, so they move on parallel straight lines at every instant: the body translates without turning)
+centres-found_above = { $centre } = { $value }: placed above, in the velocity step of { $body }.
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
-centre-site_i = The instant centre { $centre } ≡ { $point } of { $body } relative to { $frame }{ COUNT($frame) ->
-        [many] , placed above, have
-       *[one] , placed above, has
-    } no velocity: { $sym } = 0.
+centre-site_i = The instant centre { $centre } of { $body } relative to { $frame }, placed above, is the point { $point }: it has no velocity, { $sym } = 0.
 centre-site_s = The instant centre { $centre } of { $body } relative to { $frame }{ COUNT($frame) ->
         [many] , placed above, have
        *[one] , placed above, has
     } no velocity: { $sym } = 0.
 sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
-geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always at the same fraction of it, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
+geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
 geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.

@@ -71,12 +71,18 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [1] { $format ->
             [md] la flecha
            *[other] la flecha azul
-        } es la velocidad de { $points }, con su módulo
+        } es la velocidad de { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", con su módulo"}
+        }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
        *[other] { $format ->
             [md] las flechas
            *[other] las flechas azules
-        } son las velocidades de { $points }, a una misma escala, con sus módulos
+        } son las velocidades de { $points }, a una misma escala{ $moduli ->
+            [0] {""}
+           *[other] {", con sus módulos"}
+        }
     }; los sólidos están numerados.
 fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
@@ -86,12 +92,18 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         [1] { $format ->
             [md] la flecha
            *[other] la flecha azul
-        } es la velocidad de { $points }, con su módulo
+        } es la velocidad de { $points }{ $moduli ->
+            [0] {""}
+           *[other] {", con su módulo"}
+        }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
        *[other] { $format ->
             [md] las flechas
            *[other] las flechas azules
-        } son las velocidades de { $points }, a una misma escala, con sus módulos
+        } son las velocidades de { $points }, a una misma escala{ $moduli ->
+            [0] {""}
+           *[other] {", con sus módulos"}
+        }
     }.
 fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
 fig-primed = La imagen del punto { $point } es { $image } ({ $symbol }: { $what }).
@@ -243,6 +255,7 @@ path-line = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
+rolling-equal = Sin deslizamiento en el contacto { $point }: { $sym } = { $other }.
 rolling-same = { $b } { COUNT($b) ->
         [many] ruedan
        *[one] rueda
@@ -451,7 +464,7 @@ centre-line-moves_still = la perpendicular a { $v } por { $point } ({ $point } s
         [many] trasladan
        *[one] traslada
     })
-centre-line-guide = la perpendicular a la guía por { $pivot } (su pie sobre la guía es un punto de { $b }: respecto de { $body } desliza a lo largo de la guía, y { $body } lo arrastra alrededor de { $pivot } perpendicularmente a esa perpendicular, es decir, también según la guía; la velocidad relativa y la de arrastre son allí paralelas, y su velocidad sigue la guía)
+centre-line-guide = la perpendicular a la guía por { $pivot } (en su pie { $pivot }′ sobre la guía, la velocidad relativa a { $body } es paralela a la guía y la de arrastre es perpendicular a { $pivot }{ $pivot }′, es decir, también paralela a la guía: la velocidad del punto de { $b } en { $pivot }′ sigue la guía)
 centre-carried-between = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q } (pasa por los puntos alrededor de los cuales giran), así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q } (pasa por los puntos alrededor de los cuales giran), así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 centre-line-slot = la normal en { $point } a la ranura (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
@@ -474,12 +487,13 @@ how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
 how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia del radio de su rueda respecto del suelo recto, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
+centres-found_above = { $centre } = { $value }: hallado arriba, en el paso de velocidades de { $body }.
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
-centre-site_i = El CIR { $centre } ≡ { $point } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
+centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, es el punto { $point }: no tiene velocidad, { $sym } = 0.
 centre-site_s = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto
 geom-rule = La regla de todo contacto de rodadura: la condición de no deslizamiento se cumple en cada instante en el punto geométrico de contacto (aquí { $geom }), que se mueve; derivándola a lo largo de él se obtiene { $rule }: las componentes tangenciales de las dos aceleraciones son iguales y las normales difieren en este término, según la normal común. Hace falta la velocidad del punto geométrico:
-geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, en la misma fracción de ella, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:
+geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, con { $part }/{ $whole } = { $ratio }, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:
 geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.

@@ -71,12 +71,18 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [1] { $format ->
             [md] gezia
            *[other] gezi urdina
-        } { $points } puntuaren abiadura da, bere moduluarekin
+        } { $points } puntuaren abiadura da{ $moduli ->
+            [0] {""}
+           *[other] {", bere moduluarekin"}
+        }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
        *[other] { $format ->
             [md] geziak
            *[other] gezi urdinak
-        } { $points } puntuen abiadurak dira, eskala berean, beren moduluekin
+        } { $points } puntuen abiadurak dira, eskala berean{ $moduli ->
+            [0] {""}
+           *[other] {", beren moduluekin"}
+        }
     }; solidoak zenbakituta daude.
 fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
@@ -86,12 +92,18 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         [1] { $format ->
             [md] gezia
            *[other] gezi urdina
-        } { $points } puntuaren abiadura da, bere moduluarekin
+        } { $points } puntuaren abiadura da{ $moduli ->
+            [0] {""}
+           *[other] {", bere moduluarekin"}
+        }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
        *[other] { $format ->
             [md] geziak
            *[other] gezi urdinak
-        } { $points } puntuen abiadurak dira, eskala berean, beren moduluekin
+        } { $points } puntuen abiadurak dira, eskala berean{ $moduli ->
+            [0] {""}
+           *[other] {", beren moduluekin"}
+        }
     }.
 fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
 fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
@@ -206,10 +218,11 @@ cond-cylindrical = lotura zilindrikoa: { $b } solidoa { $a } solidoaren ardatzar
 rolling-noslip = { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute.
 rolling-noslip_edge = { $b } solidoa ez da irristatzen { $a } solidoaren gainean: { $point } kontaktuan bi puntu materialek abiadura bera dute.
 rolling-same_edge = { $b } solidoa ez da irristatzen { $a } solidoaren gainean: { $point } kontaktuan bi puntu materialek abiadura bera dute, { $sym } = { $other }.
-rolling-glide = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren ertzaren gainean. { $a } solidotik ikusita, haren { $centre } zentroak ertzarekiko distantzia mantentzen du: { $point } puntuko ukitzailearen zuzen paralelo batean zehar mugitzen da. { $a } solidoarekin batera biratzen duten ardatzak gurpilaren { $centre } zentroan definituz, { $centre } puntuaren mugimendua arrastre-mugimendua ({ $a } solidoaren bertako puntuarena) gehi zuzen horretako mugimendu erlatiboa da (eta, azelerazioetan, Coriolisen terminoa).
+rolling-glide = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren ertzaren gainean. { $a } solidotik ikusita, haren { $centre } zentroak ertzarekiko distantzia mantentzen du: { $point } puntuko ukitzailearen zuzen paralelo batean zehar mugitzen da. { $a } solidoarekin batera biratzen duten ardatzak { $b } solidoaren { $centre } zentroan definituz, { $centre } puntuaren mugimendua arrastre-mugimendua ({ $a } solidoaren bertako puntuarena) gehi zuzen horretako mugimendu erlatiboa da (eta, azelerazioetan, Coriolisen terminoa).
 rolling-kept = kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak.
 path-circle = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: { $o } zentroko eta { $radius } erradioko zirkunferentzia deskribatzen du; beraz, { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), haren osagai tangentziala { $al } × { $arm } da.
 path-line = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: zuzen bat deskribatzen du, azelerazio normalik gabe; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), { $ac } = { $al } × { $arm }.
+rolling-equal = Irristadurarik ez { $point } kontaktuan: { $sym } = { $other }.
 rolling-same = { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute, { $sym } = { $other }.
 rolling-centre = { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe, eta { $a } solidoa ez da mugitzen: kontaktuko { $point } puntuak, { $b } solidoarenak, ez du abiadurarik, { $sym } = 0; beraz, { $b } solidoaren biraketa-zentro instantaneoa da.
 dir-guide = { $holder } solidoaren gida
@@ -403,7 +416,7 @@ centre-weld = { $body } eta { $other } zurrunki lotuta daude: solido bakarra dir
 centre-line-kennedy = { $l } zentroetatik pasatzen den zuzena (Aronhold–Kennedy, { $k } hirugarren solidoa)
 centre-line-moves = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua { $body } solidoarekin mugitzen da, zeina { $pivot } puntuaren inguruan biratzen baita)
 centre-line-moves_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua { $body } solidoarekin mugitzen da, zeina traslatzen baita)
-centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra (perpendikular horren oina gidan { $b } solidoaren puntu bat da: { $body } solidoarekiko gidan zehar irristatzen da, eta { $body } solidoak { $pivot } puntuaren inguruan eramaten du perpendikular horrekiko perpendikularki, hau da, hori ere gidaren norabidean; han abiadura erlatiboa eta arrastrekoa paraleloak dira, eta haren abiadura gidaren norabidean dago)
+centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra (perpendikularraren { $pivot }′ oinean, gidan, { $body } solidoarekiko abiadura erlatiboa gidarekiko paraleloa da, eta arrastrekoa { $pivot }{ $pivot }′ zuzenarekiko perpendikularra, hau da, hori ere gidarekiko paraleloa: { $b } solidoaren { $pivot }′ puntuko abiadura gidaren norabidean dago)
 centre-carried-between = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira (zuzen hori biratzen diren puntuetatik pasatzen da); beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
 centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira (zuzen hori biratzen diren puntuetatik pasatzen da); beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
 centre-line-slot = artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
@@ -426,12 +439,13 @@ how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago:
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiadura bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
 how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur zuzenetik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
+centres-found_above = { $centre } = { $value }: goian aurkitua, { $body } solidoaren abiadura-urratsean.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
-centre-site_i = { $body } solidoaren { $centre } ≡ { $point } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
+centre-site_i = { $body } solidoaren biraketa-zentro instantaneoa { $frame } solidoarekiko ({ $centre }, goian aurkitua) { $point } puntua da: ez du abiadurarik, { $sym } = 0.
 centre-site_s = { $body } solidoaren { $centre } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
 geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
-geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, zati berean, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
+geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
 geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
