@@ -86,6 +86,9 @@ class SpatialPoses:
     def __init__(self, ref: tuple | np.ndarray, rot: dict, t: dict, rotvec: dict, aux: dict) -> None:
         self.ref = np.asarray(ref, dtype=float)
         self.rot, self.t, self.rotvec, self.aux = rot, t, rotvec, aux
+        self._ref = tuple(float(c) for c in self.ref)
+        self._rot: dict = {}       # each body's R as rows of floats, and its t, once read
+        self._t: dict = {}
 
     @classmethod
     def drawn(cls, ref: tuple, bodies: list[str]) -> "SpatialPoses":
@@ -101,16 +104,33 @@ class SpatialPoses:
 
     def turn(self, body: str, vec: tuple) -> tuple:
         """A direction fixed in `body`, drawn as `vec`, now: R·vec."""
-        if body not in self.rot:
+        rows = self._rows(body)
+        if rows is None:
             return vec
-        return tuple((self.rot[body] @ np.asarray(vec, dtype=float)).tolist())
+        x, y, z = float(vec[0]), float(vec[1]), float(vec[2])
+        return tuple(r0 * x + r1 * y + r2 * z for r0, r1, r2 in rows)
 
     def point(self, body: str, p0: tuple) -> tuple:
         """The material point of `body` drawn at `p0`, now: R(P₀ − c) + c + t."""
-        if body not in self.rot:
+        rows = self._rows(body)
+        if rows is None:
             return p0
-        p = self.rot[body] @ (np.asarray(p0, dtype=float) - self.ref) + self.ref + self.t[body]
-        return tuple(p.tolist())
+        (cx, cy, cz), (tx, ty, tz) = self._ref, self._t[body]
+        x, y, z = float(p0[0]) - cx, float(p0[1]) - cy, float(p0[2]) - cz
+        return tuple(r0 * x + r1 * y + r2 * z + c + t for (r0, r1, r2), c, t
+                     in zip(rows, (cx, cy, cz), (tx, ty, tz)))
+
+    def _rows(self, body: str) -> Optional[list]:
+        """R of `body` as three rows of floats, or None for a body that does not move (the
+        frame). Kept: a pose's points and directions are read many times (a search's
+        residual reads each body's a dozen times), and 3 × 3 products of Python floats are
+        several times quicker than numpy's on arrays this small."""
+        if body not in self._rot:
+            moves = body in self.rot
+            self._rot[body] = self.rot[body].tolist() if moves else None
+            if moves:
+                self._t[body] = tuple(float(c) for c in self.t[body])
+        return self._rot[body]
 
     def stepped(self, dx: Any, unknowns: Unknowns) -> "SpatialPoses":
         """The poses after a step of the unknowns: the rotation exp(δθ) composed on the left of
@@ -148,12 +168,15 @@ AnyPoses = Union[Poses, SpatialPoses]     # the poses of a planar or of a spatia
 
 def exp_rotation(w: np.ndarray) -> np.ndarray:
     """Rodrigues: the rotation by |w| about w."""
-    angle = float(np.linalg.norm(w))
-    k = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    x, y, z = float(w[0]), float(w[1]), float(w[2])
+    angle = math.sqrt(x * x + y * y + z * z)
     if angle < 1e-12:
-        return np.eye(3) + k
-    k /= angle
-    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * (k @ k)
+        return np.array([[1.0, -z, y], [z, 1.0, -x], [-y, x, 1.0]])
+    x, y, z = x / angle, y / angle, z / angle      # the unit axis k: R = I + sin θ K + (1 − cos θ) K²,
+    s, c = math.sin(angle), 1 - math.cos(angle)     # K² = k kᵀ − I, written out in floats (an array
+    return np.array([[1 - c * (y * y + z * z), c * x * y - s * z, c * x * z + s * y],     # per call,
+                     [c * x * y + s * z, 1 - c * (x * x + z * z), c * y * z - s * x],     # not six)
+                     [c * x * z - s * y, c * y * z + s * x, 1 - c * (x * x + y * y)]])
 
 
 def log_rotation(r: np.ndarray) -> np.ndarray:
