@@ -420,12 +420,12 @@ rates-intro_v = Cada sòlid gira respecte del sòlid que el porta: { $w }.
 fields-intro_v = La velocitat de cada punt, a partir d’un punt del mateix sòlid ja conegut (el seu enllaç):
 fields-intro_a = L’acceleració de cada punt, a partir d’un punt del mateix sòlid ja conegut (el seu enllaç):
 sec-composition = Composició de moviments
-composition-intro = El moviment d’un punt és el d’arrossegament (el del punt de la referència mòbil on és) més el relatiu a aquesta referència, més, en acceleracions, el terme de Coriolis { $cor }.
+composition-intro = El moviment d’un punt és el d’arrossegament (el del punt de la referència mòbil que coincideix amb ell) més el relatiu a aquesta referència, més, en acceleracions, el terme de Coriolis { $cor }.
 composition-point = Punt { $point } { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }, referència mòbil { $frame }:
-composition-drag = Arrossegament: el moviment del punt de la referència mòbil on és el punt:
+composition-drag = Arrossegament: el moviment del punt de la referència mòbil que coincideix amb ell:
 composition-relative = Relatiu: el moviment vist des de la referència mòbil, { $sym } = { $rel }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] rodolen
@@ -730,6 +730,13 @@ centre-rate = a partir de la velocitat angular trobada més amunt a través { EL
         [vowel] d’{ $q }
        *[other] de { $q }
     }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+centre-rate_step = a partir de la velocitat angular trobada al pas { $step } a través { ELISION($line) ->
+        [vowel] d’{ $line }
+       *[other] de { $line }
+    }: és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = per sobre { ELISION($q) ->
         [vowel] d’{ $q }
@@ -794,7 +801,7 @@ contact-intro = Al contacte { $point } coincideixen tres punts amb cinemàtiques
        *[other] de { $b }
     } i el punt geomètric de contacte { $geom }, que no pertany a cap dels dos.
 contact-above = { $sym } = { $value }, obtinguda més amunt per a l’acceleració del contacte.
-contact-written = { $sym } = { $value }, escrita al pas { $step }.
+contact-written = { $sym } = { $value }, trobada al pas { $step }.
 contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }

@@ -333,9 +333,9 @@ rates-intro_v = Each body turns relative to the body that carries it: { $w }.
 fields-intro_v = The velocity of every point, from a point of the same body already known (its joint):
 fields-intro_a = The acceleration of every point, from a point of the same body already known (its joint):
 sec-composition = Composition of motions
-composition-intro = The motion of a point is its drag motion (that of the point of the moving frame where it is) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
+composition-intro = The motion of a point is its drag motion (that of the point of the moving frame that coincides with it) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
 composition-point = Point { $point } of { $body }, moving frame { $frame }:
-composition-drag = Drag: the motion of the point of the moving frame where the point is:
+composition-drag = Drag: the motion of the point of the moving frame that coincides with it:
 composition-relative = Relative: the motion seen from the moving frame, { $sym } = { $rel }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] roll
@@ -541,6 +541,7 @@ centre-line-slot_fixed = the normal at { $point } to the line of { $a } along wh
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
 centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-rate_step = from the angular velocity found in Step { $step } through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = above { $q }
 side-below = below { $q }
@@ -569,7 +570,7 @@ geom-bar = { $geom }, the geometric contact point, belongs to neither body: it s
 geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.
-contact-written = { $sym } = { $value }, written in step { $step }.
+contact-written = { $sym } = { $value }, found in Step { $step }.
 contact-fixed = { $sym }: { $point } as a point of { $body }{ FIXED($body) ->
         [yes] {""}
        *[no] { COUNT($body) ->

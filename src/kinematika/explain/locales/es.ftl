@@ -294,9 +294,9 @@ rates-intro_v = Cada sólido gira respecto del sólido que lo lleva: { $w }.
 fields-intro_v = La velocidad de cada punto, a partir de un punto del mismo sólido ya conocido (su par):
 fields-intro_a = La aceleración de cada punto, a partir de un punto del mismo sólido ya conocido (su par):
 sec-composition = Composición de movimientos
-composition-intro = El movimiento de un punto es el de arrastre (el del punto de la referencia móvil donde está) más el relativo a esa referencia, más, en aceleraciones, el término de Coriolis { $cor }.
+composition-intro = El movimiento de un punto es el de arrastre (el del punto de la referencia móvil que coincide con él) más el relativo a esa referencia, más, en aceleraciones, el término de Coriolis { $cor }.
 composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
-composition-drag = Arrastre: el movimiento del punto de la referencia móvil donde está el punto:
+composition-drag = Arrastre: el movimiento del punto de la referencia móvil que coincide con él:
 composition-relative = Relativo: el movimiento visto desde la referencia móvil, { $sym } = { $rel }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] ruedan
@@ -472,6 +472,7 @@ centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
 centre-field = está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
 centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
+centre-rate_step = a partir de la velocidad angular hallada en el paso { $step } a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = por encima de { $q }
 side-below = por debajo de { $q }
@@ -497,7 +498,7 @@ geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno d
 geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
-contact-written = { $sym } = { $value }, escrita en el paso { $step }.
+contact-written = { $sym } = { $value }, hallada en el paso { $step }.
 contact-fixed = { $sym }: { $point } como punto de { $body }{ FIXED($body) ->
         [yes] {""}
        *[no] , que es fijo,

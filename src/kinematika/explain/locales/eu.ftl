@@ -424,6 +424,7 @@ centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko norm
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
 centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+centre-rate_step = { $step }. urratsean { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = { $q } puntuaren gainean
 side-below = { $q } puntuaren azpian
@@ -449,7 +450,7 @@ geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena er
 geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
-contact-written = { $sym } = { $value }, { $step }. urratsean idatzia.
+contact-written = { $sym } = { $value }, { $step }. urratsean aurkitua.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen{ FIXED($body) ->
         [yes] {""}
        *[no] , solidoa finkoa baita

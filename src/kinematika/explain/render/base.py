@@ -871,7 +871,8 @@ class Renderer(ABC):
         elif c.how == "field":
             why = Msg("centre.field", self.field_args(c, name))
         elif c.how == "rate":
-            why = Msg("centre.rate", {**self.field_args(c, name), "line": Name(c.via[0] if c.via else "", "body")})
+            why = Msg("centre.rate_step" if c.step else "centre.rate",
+                      {**self.field_args(c, name), "line": Name(c.via[0] if c.via else "", "body"), "step": c.step})
         elif len(c.witnesses) == 2:
             (p, vp), (q, vq) = c.witnesses
             why = Msg("centre.velocities", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
