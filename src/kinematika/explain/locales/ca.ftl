@@ -844,7 +844,10 @@ sec-checks = Comprovacions
 check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->
         [vowel] d’{ $carrier }
        *[other] de { $carrier }
-    }, la transmissió és ordinària ({ $carrier } porta l’eix de { $planet }, que engrana amb { $s1 } i amb { $s2 }, que giren al voltant de l’eix fix que passa per { $axis }), de manera que { $formula } = { $radii } = { $train }{ $r1 ->
+    }, la transmissió és ordinària ({ $carrier } porta l’eix de { $planet }, que engrana amb { $s1 } i amb { $s2 }, { $fixed ->
+        [0] que giren al voltant de l’eix fix que passa per { $axis }
+       *[other] l’eix de les quals és l’eix fix que passa per { $axis }
+    }), de manera que { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , amb { $r1 } i { $r2 }
     }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.

@@ -610,7 +610,10 @@ sec-checks = Checks
 check-willis = Willis' formula: seen from { $carrier }, the train is an ordinary one ({ $planet }, whose axle { $carrier } { COUNT($carrier) ->
         [many] carry
        *[one] carries
-    }, meshes with { $s1 } and { $s2 }, which turn about the fixed axis through { $axis }), so { $formula } = { $radii } = { $train }{ $r1 ->
+    }, meshes with { $s1 } and { $s2 }, { $fixed ->
+        [0] which turn about the fixed axis through { $axis }
+       *[other] whose axis is the fixed axis through { $axis }
+    }), so { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , with { $r1 } and { $r2 }
     }. With the angular velocities found above, { $values } = { $ratio }: they agree.

@@ -526,7 +526,10 @@ what-contact = punto de contacto ({ $kind }), entre { $a } y { $b }
 what-body = un punto de { $bodies }
 note-text = Nota: { $text }
 sec-checks = Comprobaciones
-check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet }, cuyo eje lleva { $carrier }, engrana con { $s1 } y { $s2 }, que giran alrededor del eje fijo que pasa por { $axis }), de modo que { $formula } = { $radii } = { $train }{ $r1 ->
+check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet }, cuyo eje lleva { $carrier }, engrana con { $s1 } y { $s2 }, { $fixed ->
+        [0] que giran alrededor del eje fijo que pasa por { $axis }
+       *[other] cuyo eje es el eje fijo por { $axis }
+    }), de modo que { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , con { $r1 } y { $r2 }
     }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.

@@ -481,7 +481,10 @@ what-body = { $bodies } { $bodies_n ->
     } puntua
 note-text = Oharra: { $text }
 sec-checks = Egiaztapenak
-check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoaren ardatza { $carrier } solidoak darama; { $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta horiek { $axis } puntutik pasatzen den ardatz finkoaren inguruan biratzen dira); beraz, { $formula } = { $radii } = { $train }{ $r1 ->
+check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoaren ardatza { $carrier } solidoak darama; { $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta { $fixed ->
+        [0] horiek { $axis } puntutik pasatzen den ardatz finkoaren inguruan biratzen dira
+       *[other] horien ardatza { $axis } puntutik pasatzen den ardatz finkoa da
+    }); beraz, { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , { $r1 } eta { $r2 } izanik
     }. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
