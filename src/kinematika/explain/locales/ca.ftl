@@ -550,7 +550,7 @@ vehicle-translation = Les rectes { ELISION($body) ->
        *[other] de { $body }
     } són paral·leles: el seu CIR és a l’infinit, es trasllada i tots els seus punts es mouen com { $point }.
 vehicle-translation_equal = { $p } i { $q } tenen la mateixa velocitat, { $vp } = { $vq } = { $value }: { $body } no gira (el seu CIR és a l’infinit), es trasllada i tots els seus punts es mouen com { $p }.
-vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda a { $radius } { $spin }, la seva rotació pròpia al voltant del seu eix, de manera que:
+vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda a { $product }, on { $spin } és la seva rotació pròpia al voltant del seu eix, de manera que:
 triad-intro = { $body } està subjectat per tres barres binàries, { $links }: cap equació vectorial d’un sol punt no té només dues incògnites. Com fan els textos per a una tríada, es pren el punt d’Assur { $point }, on es tallen les rectes { $l1 } i { $l3 }, com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }

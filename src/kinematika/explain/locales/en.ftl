@@ -409,7 +409,7 @@ vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = 
         [many] their centre is at infinity), they translate
        *[one] its centre is at infinity), it translates
     }, and every point moves as { $p }.
-vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $radius } { $spin }, its spin about its axle, so:
+vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $product }, where { $spin } is its spin about its axle, so:
 triad-intro = { $body } { COUNT($body) ->
         [many] are
        *[one] is
