@@ -254,11 +254,17 @@ def refer_rates(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
     the belt: 0 = v_Q + ω × QI) names that step by its number: "from the angular velocity found
     in Step 2 through the belt", never "found above" — the reader looks for Step 2. The step
     is the one whose blocks write ω of the body (a Derived ω_b = ω_b REL a + ω_a, or an
-    equation's term), read after `prune` numbered the steps."""
+    equation's term), read after `prune` numbered the steps. So does a centre a vehicle's
+    velocity step placed (C5-2.1's I_chassis = (0, L): placed in Step 1), named by the step
+    that finds the body's ω there."""
     for b in (b for sec in doc.sections for b in _blocks(sec)):
         if isinstance(b, CentreNote) and b.how == "rate":
             body = next((x for x in b.pair if x != ctx.frame), b.pair[-1])
             b.step = rate_step(levels, Sym("ω", body, vector=False))
+        elif isinstance(b, Msg) and b.key == "centres.found_above":
+            n = rate_step(levels, Sym("ω", b.args["body"].text, vector=False))
+            if n is not None:
+                b.key, b.args["step"] = "centres.found_above_step", n
 
 
 def rate_step(levels: list[Section], sym: Sym) -> Optional[int]:

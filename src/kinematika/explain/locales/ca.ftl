@@ -783,6 +783,10 @@ centres-found_above = { $centre } = { $value }: trobat més amunt, al pas de vel
         [vowel] d’{ $body }
        *[other] de { $body }
     }.
+centres-found_above_step = { $centre } = { $value }: trobat al pas { $step }, amb les velocitats { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }.
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
 centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, és el punt { $point }: no té velocitat, { $sym } = 0.
 centre-site_s = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.

@@ -558,6 +558,7 @@ how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have 
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the straight ground, so they move on parallel straight lines at every instant: the body translates without turning)
 centres-found_above = { $centre } = { $value }: placed above, in the velocity step of { $body }.
+centres-found_above_step = { $centre } = { $value }: placed in Step { $step }, with the velocities of { $body }.
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
 centre-site_i = The instant centre { $centre } of { $body } relative to { $frame }, placed above, is the point { $point }: it has no velocity, { $sym } = 0.
 centre-site_s = The instant centre { $centre } of { $body } relative to { $frame }{ COUNT($frame) ->

@@ -489,6 +489,7 @@ how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la mi
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
 how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia del radio de su rueda respecto del suelo recto, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
 centres-found_above = { $centre } = { $value }: hallado arriba, en el paso de velocidades de { $body }.
+centres-found_above_step = { $centre } = { $value }: hallado en el paso { $step }, con las velocidades de { $body }.
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
 centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, es el punto { $point }: no tiene velocidad, { $sym } = 0.
 centre-site_s = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.

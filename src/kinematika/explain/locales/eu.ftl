@@ -441,6 +441,7 @@ how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $c
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
 how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur zuzenetik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 centres-found_above = { $centre } = { $value }: goian aurkitua, { $body } solidoaren abiadura-urratsean.
+centres-found_above_step = { $centre } = { $value }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
 centre-site_i = { $body } solidoaren biraketa-zentro instantaneoa { $frame } solidoarekiko ({ $centre }, goian aurkitua) { $point } puntua da: ez du abiadurarik, { $sym } = 0.
 centre-site_s = { $body } solidoaren { $centre } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
