@@ -243,10 +243,10 @@ def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
                     terms += ([" + "] if terms else []) + [t.sym]
                 sec.blocks[k] = msg("composition.drag_terms", sym=b.target.sym, terms=Inline(terms), value=value,
                                     step=first)
-        for b in sec.blocks:
-            n = step_of(levels, b.args["seen"]) if isinstance(b, Msg) and b.key == "composition.slide_seen" else None
-            if n is not None:
-                b.key, b.args["step"] = "composition.slide_seen_step", n
+        for said in (b for b in sec.blocks if isinstance(b, Msg) and b.key == "composition.slide_seen"):
+            found = step_of(levels, said.args["seen"])
+            if found is not None:
+                said.key, said.args["step"] = "composition.slide_seen_step", found
 
 
 def refer_rates(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
