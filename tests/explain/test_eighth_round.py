@@ -191,8 +191,8 @@ def test_no_radius_is_renamed_rho(name, lang):
     assert not re.search(r"ρ_", page), name
 
 
-@pytest.mark.parametrize("name,willis", [("seed_c5_1_4_epicyclic", "(ω_wheel − ω_carrier) / (ω_ring − ω_carrier) = −3·r / r = −3."),
-                                         ("seed_c5_e2_gear_change", "(ω_wheel − ω_arm) / (ω_ring − ω_arm) = −3·r / r = −3.")])
+@pytest.mark.parametrize("name,willis", [("seed_c5_1_4_epicyclic", "(ω_sun − ω_carrier) / (ω_ring − ω_carrier) = −3·r / r = −3."),
+                                         ("seed_c5_e2_gear_change", "(ω_central − ω_arm) / (ω_ring − ω_arm) = −3·r / r = −3.")])
 def test_willis_writes_the_radii(name, willis):
     """C5-1.4: ring 3r, sun r, both meshing the planet from outside and inside: (ω_s − ω_c)/
     (ω_ring − ω_c) = −3r/r = −3 (C5-E.2 likewise)."""

@@ -60,8 +60,8 @@ def test_the_epicyclic_planet_by_hand():
     contact equalities said in the contacts' sentences."""
     ca = rendered("seed_c5_1_4_epicyclic", "ca", "md", drawings=False)
     assert "v_{Q∈rodeta2}  =  v_{K∈rodeta2}  +  v_QK" in ca
-    assert "v_{K∈rodeta2} = v_{K∈roda}." in ca and "v_{Q∈rodeta2} = v_{Q∈corona}." in ca
-    assert "v_{Q∈corona}  =  v_{K∈roda}" not in ca
+    assert "v_{K∈rodeta2} = v_{K∈central}." in ca and "v_{Q∈rodeta2} = v_{Q∈corona}." in ca
+    assert "v_{Q∈corona}  =  v_{K∈central}" not in ca
 
 
 @pytest.mark.parametrize("name, lang, equation", [

@@ -57,10 +57,11 @@ def test_the_subscripts_legend_is_a_sentence(name, lang):
 
 
 def test_the_sun_wheels_legend_by_hand():
-    """C5-E.2: the fixed central wheel's symbol is ω_wheel / ω_roda."""
-    assert "Notation: ω_wheel is the angular velocity of the *fixed central wheel*." in rendered(
+    """C5-E.2: the fixed central wheel's symbol is ω_central (fourteenth round: among meshing
+    wheels "wheel" does not tell it from the planets)."""
+    assert "Notation: ω_central is the angular velocity of the *fixed central wheel*." in rendered(
         "seed_c5_e2_gear_change", "en", "md", drawings=False)
-    assert "Notació: ω_roda és la velocitat angular de la *roda central fixa*." in rendered(
+    assert "Notació: ω_central és la velocitat angular de la *roda central fixa*." in rendered(
         "seed_c5_e2_gear_change", "ca", "md", drawings=False)
 
 

@@ -20,7 +20,7 @@ from .centres import centre_sites, centres_first, centres_section
 from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
 from .strands import strand_words
-from .document import Ann, Document, Equation, Inline, Msg, Name, Section, Sym, Term, Value, msg
+from .document import Ann, CentreNote, Derived, Document, Equation, Inline, Msg, Name, Section, Sym, Term, Value, msg
 from .group import refine
 from .order import solution_order
 from .planar import PlanarSteps
@@ -109,6 +109,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
         found_forward(eq)
     prune(ctx, doc)
     refer_drags(ctx, doc, levels)
+    refer_rates(ctx, doc, levels)
     translations(ctx, doc)
     name_contacts(ctx, doc, contact_rows(ctx, doc))
     strand_words(ctx, doc.sections)
@@ -242,10 +243,46 @@ def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
                     terms += ([" + "] if terms else []) + [t.sym]
                 sec.blocks[k] = msg("composition.drag_terms", sym=b.target.sym, terms=Inline(terms), value=value,
                                     step=first)
-        for b in sec.blocks:
-            n = step_of(levels, b.args["seen"]) if isinstance(b, Msg) and b.key == "composition.slide_seen" else None
+        for said in (b for b in sec.blocks if isinstance(b, Msg) and b.key == "composition.slide_seen"):
+            found = step_of(levels, said.args["seen"])
+            if found is not None:
+                said.key, said.args["step"] = "composition.slide_seen_step", found
+
+
+def refer_rates(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
+    """A centre placed from an angular velocity a step found (C5-1.6's moving pulley through
+    the belt: 0 = v_Q + ω × QI) names that step by its number: "from the angular velocity found
+    in Step 2 through the belt", never "found above" — the reader looks for Step 2. The step
+    is the one whose blocks write ω of the body (a Derived ω_b = ω_b REL a + ω_a, or an
+    equation's term), read after `prune` numbered the steps. So does a centre a vehicle's
+    velocity step placed (C5-2.1's I_chassis = (0, L): placed in Step 1), named by the step
+    that finds the body's ω there."""
+    for b in (b for sec in doc.sections for b in _blocks(sec)):
+        if isinstance(b, CentreNote) and b.how == "rate":
+            body = next((x for x in b.pair if x != ctx.frame), b.pair[-1])
+            b.step = rate_step(levels, Sym("ω", body, vector=False))
+        elif isinstance(b, Msg) and b.key == "centres.found_above":
+            n = rate_step(levels, Sym("ω", b.args["body"].text, vector=False))
             if n is not None:
-                b.key, b.args["step"] = "composition.slide_seen_step", n
+                b.key, b.args["step"] = "centres.found_above_step", n
+
+
+def rate_step(levels: list[Section], sym: Sym) -> Optional[int]:
+    """The number of the step that finds the angular velocity `sym`: a value read off
+    (`Derived`) or an equation's term (`step_of`)."""
+    for sec in levels:
+        for n, step in _steps(sec):
+            if any(isinstance(b, Derived) and _written(b.sym) == _written(sym) for b in _blocks(step)):
+                return n
+    return step_of(levels, sym)
+
+
+def _blocks(sec: Section) -> list:
+    """Every block of a section and of its subsections."""
+    out: list = []
+    for b in sec.blocks:
+        out += _blocks(b) if isinstance(b, Section) else [b]
+    return out
 
 
 def step_of(levels: list[Section], sym: Sym) -> Optional[int]:

@@ -83,7 +83,9 @@ def _willis_blocks(ctx: Ctx, carrier: str, planet: str, first: tuple, second: tu
     """Willis' formula for one planet meshing with two wheels about the carrier's fixed axis
     (`axis`, the carrier's pivot). The carrier carries the planet's axle only: the two central
     wheels turn about the fixed axis through `axis`, the frame's (the readers of stop 41 read
-    "whose axles the carrier carries" said of the sun and the ring)."""
+    "whose axles the carrier carries" said of the sun and the ring). A fixed wheel does not
+    turn: where one of the two is fixed (E.2's central wheel), the axis is said as theirs,
+    "whose axis is the fixed axis through O", never "which turn about" it."""
     (s1, j1), (s2, j2) = first, second
     r1, r2 = wheel_circle(ctx, s1)[1], wheel_circle(ctx, s2)[1]
     sign = _mesh_sign(ctx, j1) * _mesh_sign(ctx, j2)
@@ -98,6 +100,7 @@ def _willis_blocks(ctx: Ctx, carrier: str, planet: str, first: tuple, second: tu
                      Value(ctx.clean(w2, "rate"), ""), " − ", Value(ctx.clean(wc, "rate"), ""), ")"])
     return [msg("check.willis", carrier=Name(carrier, "body"), planet=Name(planet, "body"), s1=Name(s1, "body"),
                 s2=Name(s2, "body"), axis=axis, formula=formula, radii=radii,
+                fixed=int(any(ctx.fixed(b) for b in (s1, s2))),
                 r1=0 if written else Inline([rho(s1), " = ", Value(r1, "len")]),
                 r2=0 if written else Inline([rho(s2), " = ", Value(r2, "len")]), train=Value(train, ""),
                 values=values, ratio=Value(ratio if ratio is not None else train, ""))]

@@ -292,6 +292,7 @@ class CentreNote:
     distance: Any = None                           # field, check: |QI| = |v_Q| / |ω|
     perps: list = field(default_factory=list)      # kennedy: each line as the notes draw it (Msg)
     pivots: list = field(default_factory=list)     # proportional: what each witness turns about
+    step: Optional[int] = None                     # rate: the step that found ω (builder.refer_rates)
 
 
 @dataclass(frozen=True)

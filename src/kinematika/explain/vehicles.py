@@ -63,7 +63,7 @@ def spins(ctx: Ctx, bodies: list[str]) -> list:
         j = ctx.model.joint(jid)
         radius = ctx.model.wording.spins[jid][1]
         out.append(msg("vehicle.spin", joint=Name(j.id, "joint"), point=Name(j.point_at()), radius=Name(radius, "param"),
-                       spin=spin))
+                       spin=spin, product=Inline([Name(radius, "param"), " ", spin])))
         out.append(Derived(spin, [Sym("v", ctx.point_label(j.point_at(), body), vector=False), " / ", Name(radius, "param")],
                            value, body, "spin", not ctx.symbolic))
     return out

@@ -11,7 +11,11 @@ The rule, for each body of a model that names its bodies in the language:
 2. else the word the name is about (past its article and the language's small words; the
    first thing of "el plat i els pedals"): the first word in Catalan and Spanish, the last
    in English, the first not ending in -ko in Basque), when no other body's is that word:
-   ω_braç, ω_plat, ω_koroa, ω_wheel, ω_gurpila;
+   ω_braç, ω_plat, ω_koroa, ω_wheel, ω_gurpila; but on a page where wheels mesh with
+   wheels (a gear train: `wording.meshed`), the word "wheel" (roda, rueda, gurpil) does
+   not tell a meshing wheel from the others, so the name's other word is taken when it
+   has one: the sun wheel beside the planets is ω_sun (ca roda central: ω_central), E.2's
+   fixed central wheel ω_central, never ω_wheel;
 3. else that word with the name's number or its code (politja 1 -> politja1, "1. polea" ->
    polea1, "roda de radi R" -> rodaR as the notes' Ω^{rodaR}, where the code R alone is a
    parameter's name: `named_labels`' `parameters`);
@@ -34,6 +38,8 @@ SMALL_WORDS = {"ca": {"de", "del", "dels", "d", "el", "la", "els", "les", "l", "
                "es": {"de", "del", "el", "la", "los", "las", "a"},
                "en": {"of", "the", "a", "an"},
                "eu": set()}
+# the word for a wheel, per language: no subscript among meshing wheels (rule 2)
+WHEEL_WORDS = {"en": {"wheel"}, "ca": {"roda"}, "es": {"rueda"}, "eu": {"gurpil", "gurpila"}}
 JOINING = {"ca": {"i", "amb"}, "es": {"y", "con"}, "en": {"and", "with", "of"}, "eu": {"eta"}}
 CODE = re.compile(r"^[A-Z][A-Z0-9]{0,3}$")           # N, S1, OQ, O1A
 NUMBER = re.compile(r"^\d+\.?$")                      # 1 (satèl·lit 1), 1. (1. satelitea)
@@ -84,13 +90,29 @@ def _candidates(name: str, lang: str) -> tuple[list[str], list[str]]:
     return codes, out
 
 
+def _modifier(name: str, lang: str) -> str:
+    """The word a wheel's name is about once its word for a wheel is left out (sun wheel ->
+    sun, roda central -> central, gurpil zentrala -> zentrala), '' when it has no other."""
+    small, joining, wheel = SMALL_WORDS.get(lang, set()), JOINING.get(lang, set()), WHEEL_WORDS.get(lang, set())
+    words = _words(name)
+    words = words[:next((k for k, w in enumerate(words) if w.lower() in joining), len(words))]
+    content = [w for w in words if not NUMBER.match(w) and not CODE.match(w)
+               and w.lower().replace("’", "'").split("'")[-1] not in small]
+    if not any(w.lower() in wheel for w in content):
+        return ""
+    rest = [w for w in content if w.lower() not in wheel]
+    return _head(rest, lang) if rest else ""
+
+
 def named_labels(order: list[str], names: dict[str, str], lang: Optional[str],
-                 given: dict[str, str], parameters: Optional[set] = None) -> dict[str, str]:
+                 given: dict[str, str], parameters: Optional[set] = None,
+                 wheels: frozenset = frozenset()) -> dict[str, str]:
     """Each body's subscript by the rule above: `order` the bodies in the notes' numbering
     (the frame first), `names` body -> its name in `lang` (empty: numbers), `given` the
     bodies the model's notation indexes (kept, and never reused), `parameters` names a
     body's subscript must not take: a body's symbol never equals a length's (ω_R beside the
-    radius R reads as the radius' rate), so its name's next word is taken (ω_roda)."""
+    radius R reads as the radius' rate), so its name's next word is taken (ω_roda); `wheels`
+    the bodies that mesh with wheels, whose word for a wheel is no subscript (rule 2)."""
     numbers = {b: str(k) for k, b in enumerate(order, start=1)}
     if not names:
         return {b: given.get(b, numbers[b]) for b in order}
@@ -114,7 +136,8 @@ def named_labels(order: list[str], names: dict[str, str], lang: Optional[str],
         for level, w in enumerate(words):
             clash = w in others if level == 0 else any(w in found[o][1] for o in free if o != b)
             if not clash and w not in taken:
-                out[b] = w
+                other = _modifier(spelt[b], lang) if level == 0 and b in wheels else ""
+                out[b] = other if other and other not in taken and other not in others else w
                 break
         else:
             if not spelt[b] and PLAIN_ID.match(b):

@@ -87,6 +87,7 @@ class Wording:
     spins: dict[str, tuple[str, str]] = field(default_factory=dict)     # wheel joint -> (symbol, radius)
     contacts: dict[str, str] = field(default_factory=dict)              # rolling joint -> its contact's name
     symbols: dict[str, dict[str, str]] = field(default_factory=dict)    # key -> lang|"*" -> name
+    wheels: frozenset = frozenset()                                     # bodies that mesh with a wheel (`meshed`)
 
     def title(self, lang: str, default: str) -> str:
         """The model's title in `lang`, else `default` (its `name`)."""
@@ -124,7 +125,7 @@ class Wording:
 
         given = {b: i for b in order if (i := self.index(b, lang)) is not None}
         params = set(reserved) | {k for described in self.parameters.values() for k in described}
-        return named_labels(order, self.bodies.get(lang or "", {}), lang, given, params)
+        return named_labels(order, self.bodies.get(lang or "", {}), lang, given, params, self.wheels)
 
     def symbol(self, key: str, lang: Optional[str]) -> Optional[str]:
         """How `key` is written in `lang`: a parameter's name, or `omega(body)`,
@@ -157,7 +158,7 @@ def noun(name: str, lang: Optional[str] = None) -> str:
 def read_wording(names: Any, notation: Any, bodies: dict, points: dict, parameters: dict,
                  default_title: str, joints: Optional[dict] = None, frame: str = "ground") -> Wording:
     """The checked `names:` and `notation:` sections (either may be None)."""
-    out = Wording()
+    out = Wording(wheels=meshed(joints or {}, bodies))
     for lang, spec in (names or {}).items():
         where = f"names.{lang}"
         _language(lang, where)
@@ -229,6 +230,24 @@ def _spin_joint(name: str, joints: dict, where: str) -> str:
     if not getattr(joints[name].kind, "knife_edge", False):
         raise KinematikaError("schema", "spin-not-wheel", where, joint=name)
     return name
+
+
+def meshed(joints: dict, bodies: dict) -> frozenset:
+    """The bodies that are wheels among wheels: a gear joint's two bodies, and a rolling
+    joint's where both bodies are circles (C5-1.4's sun wheel and its planets, E.2's fixed
+    central wheel and its planets). On such a page "wheel" does not tell one body from the
+    others (`subscripts.named_labels`: ω_sun, not ω_wheel, beside the planets)."""
+    from .body_shapes import Circle
+
+    def round_(body: str) -> bool:
+        return any(isinstance(s, Circle) for s in getattr(bodies.get(body), "shapes", ()) or ())
+
+    out: set = set()
+    for j in joints.values():
+        name = getattr(j.kind, "name", "")
+        if name == "gear" or (name == "rolling" and round_(j.a) and round_(j.b)):
+            out |= {j.a, j.b}
+    return frozenset(out)
 
 
 def _contact_joint(name: str, joints: dict, where: str) -> str:

@@ -420,12 +420,12 @@ rates-intro_v = Cada sòlid gira respecte del sòlid que el porta: { $w }.
 fields-intro_v = La velocitat de cada punt, a partir d’un punt del mateix sòlid ja conegut (el seu enllaç):
 fields-intro_a = L’acceleració de cada punt, a partir d’un punt del mateix sòlid ja conegut (el seu enllaç):
 sec-composition = Composició de moviments
-composition-intro = El moviment d’un punt és el d’arrossegament (el del punt de la referència mòbil on és) més el relatiu a aquesta referència, més, en acceleracions, el terme de Coriolis { $cor }.
+composition-intro = El moviment d’un punt és el d’arrossegament (el del punt de la referència mòbil que coincideix amb ell) més el relatiu a aquesta referència, més, en acceleracions, el terme de Coriolis { $cor }.
 composition-point = Punt { $point } { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }, referència mòbil { $frame }:
-composition-drag = Arrossegament: el moviment del punt de la referència mòbil on és el punt:
+composition-drag = Arrossegament: el moviment del punt de la referència mòbil que coincideix amb ell:
 composition-relative = Relatiu: el moviment vist des de la referència mòbil, { $sym } = { $rel }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] rodolen
@@ -550,7 +550,7 @@ vehicle-translation = Les rectes { ELISION($body) ->
        *[other] de { $body }
     } són paral·leles: el seu CIR és a l’infinit, es trasllada i tots els seus punts es mouen com { $point }.
 vehicle-translation_equal = { $p } i { $q } tenen la mateixa velocitat, { $vp } = { $vq } = { $value }: { $body } no gira (el seu CIR és a l’infinit), es trasllada i tots els seus punts es mouen com { $p }.
-vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda a { $radius } { $spin }, la seva rotació pròpia al voltant del seu eix, de manera que:
+vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda a { $product }, on { $spin } és la seva rotació pròpia al voltant del seu eix, de manera que:
 triad-intro = { $body } està subjectat per tres barres binàries, { $links }: cap equació vectorial d’un sol punt no té només dues incògnites. Com fan els textos per a una tríada, es pren el punt d’Assur { $point }, on es tallen les rectes { $l1 } i { $l3 }, com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -730,6 +730,13 @@ centre-rate = a partir de la velocitat angular trobada més amunt a través { EL
         [vowel] d’{ $q }
        *[other] de { $q }
     }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+centre-rate_step = a partir de la velocitat angular trobada al pas { $step } a través { ELISION($line) ->
+        [vowel] d’{ $line }
+       *[other] de { $line }
+    }: és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+        [vowel] d’{ $q }
+       *[other] de { $q }
+    }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = per sobre { ELISION($q) ->
         [vowel] d’{ $q }
@@ -769,10 +776,14 @@ centre-check = Comprovació amb les velocitats trobades: a la perpendicular a { 
     }, del costat que dona el sentit de { $w }: { $side }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
-how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
+how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa component de la velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda respecte del terra recte, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
 centres-found_above = { $centre } = { $value }: trobat més amunt, al pas de velocitats { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }.
+centres-found_above_step = { $centre } = { $value }: trobat al pas { $step }, amb les velocitats { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }.
@@ -794,7 +805,7 @@ contact-intro = Al contacte { $point } coincideixen tres punts amb cinemàtiques
        *[other] de { $b }
     } i el punt geomètric de contacte { $geom }, que no pertany a cap dels dos.
 contact-above = { $sym } = { $value }, obtinguda més amunt per a l’acceleració del contacte.
-contact-written = { $sym } = { $value }, escrita al pas { $step }.
+contact-written = { $sym } = { $value }, trobada al pas { $step }.
 contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -837,7 +848,10 @@ sec-checks = Comprovacions
 check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->
         [vowel] d’{ $carrier }
        *[other] de { $carrier }
-    }, la transmissió és ordinària ({ $carrier } porta l’eix de { $planet }, que engrana amb { $s1 } i amb { $s2 }, que giren al voltant de l’eix fix que passa per { $axis }), de manera que { $formula } = { $radii } = { $train }{ $r1 ->
+    }, la transmissió és ordinària ({ $carrier } porta l’eix de { $planet }, que engrana amb { $s1 } i amb { $s2 }, { $fixed ->
+        [0] que giren al voltant de l’eix fix que passa per { $axis }
+       *[other] l’eix de les quals és l’eix fix que passa per { $axis }
+    }), de manera que { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , amb { $r1 } i { $r2 }
     }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.

@@ -333,9 +333,9 @@ rates-intro_v = Each body turns relative to the body that carries it: { $w }.
 fields-intro_v = The velocity of every point, from a point of the same body already known (its joint):
 fields-intro_a = The acceleration of every point, from a point of the same body already known (its joint):
 sec-composition = Composition of motions
-composition-intro = The motion of a point is its drag motion (that of the point of the moving frame where it is) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
+composition-intro = The motion of a point is its drag motion (that of the point of the moving frame that coincides with it) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
 composition-point = Point { $point } of { $body }, moving frame { $frame }:
-composition-drag = Drag: the motion of the point of the moving frame where the point is:
+composition-drag = Drag: the motion of the point of the moving frame that coincides with it:
 composition-relative = Relative: the motion seen from the moving frame, { $sym } = { $rel }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] roll
@@ -409,7 +409,7 @@ vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = 
         [many] their centre is at infinity), they translate
        *[one] its centre is at infinity), it translates
     }, and every point moves as { $p }.
-vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $radius } { $spin }, its spin about its axle, so:
+vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $product }, where { $spin } is its spin about its axle, so:
 triad-intro = { $body } { COUNT($body) ->
         [many] are
        *[one] is
@@ -541,6 +541,7 @@ centre-line-slot_fixed = the normal at { $point } to the line of { $a } along wh
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
 centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-rate_step = from the angular velocity found in Step { $step } through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = above { $q }
 side-below = below { $q }
@@ -553,10 +554,11 @@ side-below_right = below and to the right of { $q }
 centre-check = Check with the velocities found above: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
-how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)
+how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity component across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the straight ground, so they move on parallel straight lines at every instant: the body translates without turning)
 centres-found_above = { $centre } = { $value }: placed above, in the velocity step of { $body }.
+centres-found_above_step = { $centre } = { $value }: placed in Step { $step }, with the velocities of { $body }.
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
 centre-site_i = The instant centre { $centre } of { $body } relative to { $frame }, placed above, is the point { $point }: it has no velocity, { $sym } = 0.
 centre-site_s = The instant centre { $centre } of { $body } relative to { $frame }{ COUNT($frame) ->
@@ -569,7 +571,7 @@ geom-bar = { $geom }, the geometric contact point, belongs to neither body: it s
 geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.
-contact-written = { $sym } = { $value }, written in step { $step }.
+contact-written = { $sym } = { $value }, found in Step { $step }.
 contact-fixed = { $sym }: { $point } as a point of { $body }{ FIXED($body) ->
         [yes] {""}
        *[no] { COUNT($body) ->
@@ -609,7 +611,10 @@ sec-checks = Checks
 check-willis = Willis' formula: seen from { $carrier }, the train is an ordinary one ({ $planet }, whose axle { $carrier } { COUNT($carrier) ->
         [many] carry
        *[one] carries
-    }, meshes with { $s1 } and { $s2 }, which turn about the fixed axis through { $axis }), so { $formula } = { $radii } = { $train }{ $r1 ->
+    }, meshes with { $s1 } and { $s2 }, { $fixed ->
+        [0] which turn about the fixed axis through { $axis }
+       *[other] whose axis is the fixed axis through { $axis }
+    }), so { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , with { $r1 } and { $r2 }
     }. With the angular velocities found above, { $values } = { $ratio }: they agree.

@@ -294,9 +294,9 @@ rates-intro_v = Cada sólido gira respecto del sólido que lo lleva: { $w }.
 fields-intro_v = La velocidad de cada punto, a partir de un punto del mismo sólido ya conocido (su par):
 fields-intro_a = La aceleración de cada punto, a partir de un punto del mismo sólido ya conocido (su par):
 sec-composition = Composición de movimientos
-composition-intro = El movimiento de un punto es el de arrastre (el del punto de la referencia móvil donde está) más el relativo a esa referencia, más, en aceleraciones, el término de Coriolis { $cor }.
+composition-intro = El movimiento de un punto es el de arrastre (el del punto de la referencia móvil que coincide con él) más el relativo a esa referencia, más, en aceleraciones, el término de Coriolis { $cor }.
 composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
-composition-drag = Arrastre: el movimiento del punto de la referencia móvil donde está el punto:
+composition-drag = Arrastre: el movimiento del punto de la referencia móvil que coincide con él:
 composition-relative = Relativo: el movimiento visto desde la referencia móvil, { $sym } = { $rel }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] ruedan
@@ -349,7 +349,7 @@ vehicle-centre_on_axle = La perpendicular a { $sym } por { $point } es el propio
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
 vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
 vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }: { $body } no gira (su CIR está en el infinito), se traslada y todos sus puntos se mueven como { $p }.
-vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $radius } { $spin }, su rotación propia alrededor de su eje, de modo que:
+vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
 triad-closure = Conocido { $point } como punto del eslabón ternario, su articulación { $pin } se cierra como en una díada:
@@ -472,6 +472,7 @@ centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
 centre-field = está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
 centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
+centre-rate_step = a partir de la velocidad angular hallada en el paso { $step } a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = por encima de { $q }
 side-below = por debajo de { $q }
@@ -484,10 +485,11 @@ side-below_right = por debajo y a la derecha de { $q }
 centre-check = Comprobación con las velocidades halladas: en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
-how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)
+how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma componente de la velocidad perpendicular a él: sin movimiento pendular, se traslada)
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
 how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia del radio de su rueda respecto del suelo recto, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
 centres-found_above = { $centre } = { $value }: hallado arriba, en el paso de velocidades de { $body }.
+centres-found_above_step = { $centre } = { $value }: hallado en el paso { $step }, con las velocidades de { $body }.
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
 centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, es el punto { $point }: no tiene velocidad, { $sym } = 0.
 centre-site_s = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
@@ -497,7 +499,7 @@ geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno d
 geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
-contact-written = { $sym } = { $value }, escrita en el paso { $step }.
+contact-written = { $sym } = { $value }, hallada en el paso { $step }.
 contact-fixed = { $sym }: { $point } como punto de { $body }{ FIXED($body) ->
         [yes] {""}
        *[no] , que es fijo,
@@ -525,7 +527,10 @@ what-contact = punto de contacto ({ $kind }), entre { $a } y { $b }
 what-body = un punto de { $bodies }
 note-text = Nota: { $text }
 sec-checks = Comprobaciones
-check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet }, cuyo eje lleva { $carrier }, engrana con { $s1 } y { $s2 }, que giran alrededor del eje fijo que pasa por { $axis }), de modo que { $formula } = { $radii } = { $train }{ $r1 ->
+check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet }, cuyo eje lleva { $carrier }, engrana con { $s1 } y { $s2 }, { $fixed ->
+        [0] que giran alrededor del eje fijo que pasa por { $axis }
+       *[other] cuyo eje es el eje fijo por { $axis }
+    }), de modo que { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , con { $r1 } y { $r2 }
     }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.

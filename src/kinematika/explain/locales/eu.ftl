@@ -307,7 +307,7 @@ vehicle-centre_on_axle = { $sym } abiadurarekiko perpendikularra { $point } punt
 vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
 vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }: { $body } solidoa ez da biratzen (zentroa infinituan dago), traslatzen da, eta puntu guztiak { $p } bezala mugitzen dira.
-vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $radius } { $spin } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:
+vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $product } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
 triad-closure = { $point } barra hirutarraren puntu gisa ezaguna denez, haren { $pin } giltzadura bi elementuko talde batean bezala ixten da:
@@ -424,6 +424,7 @@ centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko norm
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
 centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+centre-rate_step = { $step }. urratsean { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = { $q } puntuaren gainean
 side-below = { $q } puntuaren azpian
@@ -436,10 +437,11 @@ side-below_right = { $q } puntuaren azpian eta eskuinean
 centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side }, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
-how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiadura bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
+how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiaduraren osagai bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
 how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur zuzenetik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 centres-found_above = { $centre } = { $value }: goian aurkitua, { $body } solidoaren abiadura-urratsean.
+centres-found_above_step = { $centre } = { $value }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
 centre-site_i = { $body } solidoaren biraketa-zentro instantaneoa { $frame } solidoarekiko ({ $centre }, goian aurkitua) { $point } puntua da: ez du abiadurarik, { $sym } = 0.
 centre-site_s = { $body } solidoaren { $centre } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
@@ -449,7 +451,7 @@ geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena er
 geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
-contact-written = { $sym } = { $value }, { $step }. urratsean idatzia.
+contact-written = { $sym } = { $value }, { $step }. urratsean aurkitua.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen{ FIXED($body) ->
         [yes] {""}
        *[no] , solidoa finkoa baita
@@ -480,7 +482,10 @@ what-body = { $bodies } { $bodies_n ->
     } puntua
 note-text = Oharra: { $text }
 sec-checks = Egiaztapenak
-check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoaren ardatza { $carrier } solidoak darama; { $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta horiek { $axis } puntutik pasatzen den ardatz finkoaren inguruan biratzen dira); beraz, { $formula } = { $radii } = { $train }{ $r1 ->
+check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoaren ardatza { $carrier } solidoak darama; { $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta { $fixed ->
+        [0] horiek { $axis } puntutik pasatzen den ardatz finkoaren inguruan biratzen dira
+       *[other] horien ardatza { $axis } puntutik pasatzen den ardatz finkoa da
+    }); beraz, { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , { $r1 } eta { $r2 } izanik
     }. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.

@@ -410,7 +410,19 @@ class Renderer(ABC):
         symbol side by side (a segment to the centre, the arm DI_{roda1}) run together as
         every other segment of the page is (IC, G1J, AI_13), the centre's subscript closed
         (`segment_centre`): no space inside a segment (issue 30, thirteenth round: the readers
-        read "I_S2 P" as two things)."""
+        read "I_S2 P" as two things). Inside it a parameter's name is a symbol of the formula
+        (`in_formula`), written as the values write it, not an emphasised word: "v_C1 / r", "at
+        r φ̇" (issue 30, fourteenth round)."""
+        self.in_formula += 1
+        try:
+            return self._inline(items)
+        finally:
+            self.in_formula -= 1
+
+    in_formula = 0       # how deep inside inline formulas the writing is (`inline`)
+
+    def _inline(self, items: list) -> str:
+        """`inline`'s items, written in a row."""
         out = []
         for k, i in enumerate(items):
             before = k and _segment_end(items[k - 1]) and "I" in (_base(items[k - 1]), _base(i))
@@ -871,7 +883,8 @@ class Renderer(ABC):
         elif c.how == "field":
             why = Msg("centre.field", self.field_args(c, name))
         elif c.how == "rate":
-            why = Msg("centre.rate", {**self.field_args(c, name), "line": Name(c.via[0] if c.via else "", "body")})
+            why = Msg("centre.rate_step" if c.step else "centre.rate",
+                      {**self.field_args(c, name), "line": Name(c.via[0] if c.via else "", "body"), "step": c.step})
         elif len(c.witnesses) == 2:
             (p, vp), (q, vq) = c.witnesses
             why = Msg("centre.velocities", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),

@@ -58,10 +58,11 @@ class MarkdownRenderer(Renderer):
 
     def name(self, n: Name) -> str:
         """Bodies and parameters in italics (parameters as symbols: θ₂, x_B), the other
-        names as they are (escaped)."""
+        names as they are (escaped); a parameter inside a formula (an equation's block, an
+        inline formula: `Renderer.inline`) plain, as the values beside it write it (v_C1 / r)."""
         if n.kind == "param":
             text = self.esc(unicode_name(self.spelt(n.text))).replace("\\_", "_")
-            return text if self.code else f"*{text}*"
+            return text if self.code or self.in_formula else f"*{text}*"
         article, text = self.articled(n)
         text = self.points(text)
         return self.esc(article) + (f"*{text}*" if n.kind == "body" and not self.code else text)
