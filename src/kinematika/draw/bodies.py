@@ -429,10 +429,10 @@ def _contact_names(ctx: Context) -> None:
     `DrawOptions.contacts`), set by its dot as a point's name is: a page that says "the
     contact J" shows J where the wheel touches (issue 30, thirteenth round). A contact that
     is a model's point is already labelled by `_points`; one the text never names has no
-    letter (a still figure only: the dot is no body's point). A contact already labelled
-    where it is — a model's point there, or the contact's own mark (`draw.marks`: a
-    `contact` question's answer) — is not labelled again: 001's "F  F" and C5-1.8's "J  J"
-    (issue 30, fourteenth round (b))."""
+    letter (a still figure only: the dot is no body's point). A contact where a model's
+    point is labelled already is not labelled again; the contact's mark (`draw.marks`, a
+    `contact` question's answer) leaves its letter to this one, the page's: 001's "F  F" and
+    C5-1.8's "J  J" (issue 30, fourteenth round (b))."""
     if not ctx.still:
         return
     named = {n for body in ctx.scene.bodies.values() for n in body.points}
@@ -449,12 +449,14 @@ def _contact_names(ctx: Context) -> None:
         ctx.label(p, plain(name), POINT_LABEL, 3, f"contact:{name}", weight="bold", radius=2.0)
 
 
-def labelled_at(ctx: Context, p: np.ndarray) -> bool:
-    """Whether a label already stands for the place `p`: a body's point there, or a contact's
-    mark (one place, one letter on a figure)."""
+def labelled_at(ctx: Context, p: np.ndarray, contacts: bool = False) -> bool:
+    """Whether a label already stands for the place `p`: a body's point there (and with
+    `contacts`, a contact the page names, labelled by `_contact_names`): one place, one
+    letter on a figure."""
     tol = 1e-6 * ctx.size
     pts = [q for body in ctx.scene.bodies.values() for n, q in body.points.items() if n not in body.passing]
-    pts += [m.point for m in ctx.scene.marks if m.kind == "contact" and m.point is not None]
+    if contacts and ctx.still:
+        pts += [j.contact for j in ctx.scene.joints if j.contact_name and j.contact is not None]
     return any(float(np.linalg.norm(np.asarray(q, dtype=float) - p)) <= tol for q in pts)
 
 
