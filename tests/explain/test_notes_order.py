@@ -52,8 +52,8 @@ def test_identical_planets_are_each_worked(name, original, repeated):
 
 def test_the_centres_section_holds_what_is_asked():
     """C5-1.4 asks the instant centre of one planet: the notes place it from the centres of
-    the carrier and the ring (both at O) and the points A1 and N, and say nothing of the other
-    planets' centres. The planet's centres relative to the carrier and the ring (at A1, at N)
+    the carrier and the ring (both at O) and the points A1 and Q, and say nothing of the other
+    planets' centres. The planet's centres relative to the carrier and the ring (at A1, at Q)
     are named as points in its note, not listed as lines of their own (ninth round)."""
     _, doc = explained("seed_c5_1_4_epicyclic")
     notes = [b for b in blocks(section(doc, "sec.centres")) if isinstance(b, CentreNote)]
@@ -63,7 +63,7 @@ def test_the_centres_section_holds_what_is_asked():
     placed = next(n for n in notes if frozenset(n.pair) == frozenset(("ground", "planet1")))
     assert {frozenset(("ground", k)) for k in placed.via} <= pairs
     assert not {frozenset((k, "planet1")) for k in placed.via} & pairs
-    assert [w[0] for w in placed.witnesses] == ["A1", "N"]
+    assert [w[0] for w in placed.witnesses] == ["A1", "Q"]     # the ring contact j10 (J, K, N, Q …)
 
 
 # -- the notes' order: the centres first where the notes find the velocities from them ----------------------------

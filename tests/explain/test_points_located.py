@@ -92,14 +92,15 @@ def test_the_points_written_are_the_points_located(name, lang):
 
 
 def test_by_hand_the_epicyclic_lists_the_contacts_it_uses():
-    """C5-1.4, by hand: the steps solve planet 1 from the carrier and the ring (contact N) and
-    the sun from planet 1 (contact J); planet 2, asked too, is worked with its own equations
-    (contacts K with the sun and Q with the ring, eighth round); planet 3 is asked nothing and
-    not worked. So J, K, N and Q are located, and M and S — planet 3's contacts — are neither
-    listed nor named in the structure table, which gives their positions instead."""
+    """C5-1.4, by hand: six contacts J, K, N, Q, S, U (joints j7 … j12 in order). Planet 3,
+    asked nothing, has its contacts N (with the sun) and U (with the ring) written only in
+    the structure table — and since the fourteenth round (b) every contact the page writes
+    has its letter: all six are rows of the points' table, and no structure cell gives a
+    contact by its coordinates alone (the old (−√3·r/2; r/2) and (−3·√3·r/2; 3·r/2))."""
     page = rendered("seed_c5_1_4_epicyclic", "ca")
     names = _names("seed_c5_1_4_epicyclic")
-    assert _located(page, names) & {"J", "K", "M", "N", "Q", "S"} == {"J", "K", "N", "Q"}
+    assert _located(page, names) >= {"J", "K", "N", "Q", "S", "U"}
     structure = _sections(page)[2]
-    assert structure.count("| — |") == 0                  # planet 3's contacts by their positions
-    assert "| (−√3·r/2; r/2) |" in structure and "| (−3·√3·r/2; 3·r/2) |" in structure   # M, S by hand: r, 3r at 150°
+    assert structure.count("| — |") == 0
+    assert "| (−√3·r/2; r/2) |" not in structure and "| (−3·√3·r/2; 3·r/2) |" not in structure
+    assert "| N |" in structure and "| U |" in structure

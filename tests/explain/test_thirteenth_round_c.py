@@ -55,17 +55,18 @@ def test_each_side_of_a_rigid_relation_is_one_bodys(name):
 
 
 def test_the_epicyclic_planet_by_hand():
-    """C5-1.4, step 5: the planet 2 touches the sun at K and the ring at Q; its ω from both
-    contacts, each point of the planet: v_Q∈rodeta2 = v_K∈rodeta2 + v_QK, with the two
-    contact equalities said in the contacts' sentences."""
+    """C5-1.4, step 5: the planet 2 touches the sun at K and the ring at S (the contacts J, K,
+    N, Q, S, U: M is the equations' mark, fourteenth round (b)); its ω from both contacts,
+    each point of the planet: v_S∈rodeta2 = v_K∈rodeta2 + v_SK, with the two contact
+    equalities said in the contacts' sentences."""
     ca = rendered("seed_c5_1_4_epicyclic", "ca", "md", drawings=False)
-    assert "v_{Q∈rodeta2}  =  v_{K∈rodeta2}  +  v_QK" in ca
-    assert "v_{K∈rodeta2} = v_{K∈central}." in ca and "v_{Q∈rodeta2} = v_{Q∈corona}." in ca
-    assert "v_{Q∈corona}  =  v_{K∈central}" not in ca
+    assert "v_{S∈rodeta2}  =  v_{K∈rodeta2}  +  v_SK" in ca
+    assert "v_{K∈rodeta2} = v_{K∈central}." in ca and "v_{S∈rodeta2} = v_{S∈corona}." in ca
+    assert "v_{S∈corona}  =  v_{K∈central}" not in ca
 
 
 @pytest.mark.parametrize("name, lang, equation", [
-    ("seed_c5_e2_gear_change", "ca", "v_{M∈corona}  =  v_O  +  v_MO"),
+    ("seed_c5_e2_gear_change", "ca", "v_{N∈corona}  =  v_O  +  v_NO"),
     ("seed_c5_1_1_pulley_on_cable", "ca", "v_{J∈tram esquerre}  =  v_G1  +  v_JG1"),
     ("seed_001_rolling_pair", "en", "v_{F∈R}  =  v_A  +  v_FA"),
     ("seed_c5_e1_cavity", "ca", "v_C  =  v_O  +    v_CO"),
@@ -196,15 +197,16 @@ def test_the_fixed_strand_is_said_fixed_once(lang):
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_the_upper_wheels_step_uses_the_centres_point(lang):
-    """C5-E.4: I_upper is placed by U and by M (on the left wheel); the step reads ω_upper at
-    M, v_M∈upper = v_P + v_MP, not at its mirror N."""
+    """C5-E.4: I_upper is placed by U and by N (on the left wheel: the contacts J, K, N, Q, M
+    being the equations' mark); the step reads ω_upper at N, v_N∈upper = v_P + v_NP, not at
+    its mirror Q."""
     text = rendered("seed_c5_e4_upper_wheel", lang, "md", drawings=False)
     centres = text.split("\n## ")[[s.split("\n")[0] for s in text.split("\n## ")].index(
         {"en": "Instant centres", "es": "Centros instantáneos de rotación (CIR)",
          "ca": "Centres instantanis de rotació (CIR)", "eu": "Biraketa-zentro instantaneoak"}[lang])]
-    assert " M " in centres and " N " not in centres
-    assert re.search(r"v_\{M∈[^}]*\}  =  v_P  \+  v_MP", text)
-    assert "v_NP" not in text
+    assert " N " in centres and " Q " not in centres
+    assert re.search(r"v_\{N∈[^}]*\}  =  v_P  \+  v_NP", text)
+    assert "v_QP" not in text
 
 
 # ---- 5. the fraction ----------------------------------------------------------------------

@@ -37,8 +37,10 @@ def draw_bodies(ctx: Context) -> None:
             for shape in body.shapes:
                 _ground_shape(ctx, shape)
             _skeleton(ctx, body, GROUND, 3.0)
+            _fixed_circle_name(ctx, body)
         elif body.fixed:
             _fixed_body(ctx, body)
+            _fixed_circle_name(ctx, body)
         else:
             _body(ctx, body)
     _points(ctx)
@@ -337,6 +339,24 @@ def _fixed_span(ctx: Context, body: BodyView, s: ShapeView) -> Optional[tuple[np
     return clip_segment(through + min(ts) * direction, through + max(ts) * direction, ctx.reach)
 
 
+def _fixed_circle_name(ctx: Context, body: BodyView) -> None:
+    """A fixed body drawn as a circle of its own (C5-E.2's fixed central wheel, C5-1.8's
+    cylinder, a drum) is named beside it as a moving wheel is, in the ground's grey: the text
+    names it as a body ("la roda central fixa"), and its hatched circle alone reads as any
+    piece of ground (issue 30, fourteenth round (b)). The frame's line, pivots and guides
+    are its standard symbols and need no words; a welded line is named by `_fixed_body`."""
+    circles = [s for s in body.shapes if s.kind == "circle"]
+    if not circles:
+        return
+    s = max(circles, key=lambda c: c.radius)
+    inside = s.material_inside
+    band = 0.0 if inside else min(HATCH_BAND * ctx.size, s.radius)
+    anchor = s.centre() + (0.6 * s.radius if inside else s.radius + band) * UP_LEFT
+    name = plain(noun(body.label or body.name)) + _tag(ctx, body)
+    ctx.label(anchor, name, GROUND, 5, f"body:{body.name}", group=f"body:{body.name}", style="italic",
+              prefer=None if inside else UP_LEFT)
+
+
 def _ground_shape(ctx: Context, s: ShapeView) -> None:
     band = HATCH_BAND * ctx.size
     if s.kind == "line":
@@ -409,7 +429,10 @@ def _contact_names(ctx: Context) -> None:
     `DrawOptions.contacts`), set by its dot as a point's name is: a page that says "the
     contact J" shows J where the wheel touches (issue 30, thirteenth round). A contact that
     is a model's point is already labelled by `_points`; one the text never names has no
-    letter (a still figure only: the dot is no body's point)."""
+    letter (a still figure only: the dot is no body's point). A contact where a model's
+    point is labelled already is not labelled again; the contact's mark (`draw.marks`, a
+    `contact` question's answer) leaves its letter to this one, the page's: 001's "F  F" and
+    C5-1.8's "J  J" (issue 30, fourteenth round (b))."""
     if not ctx.still:
         return
     named = {n for body in ctx.scene.bodies.values() for n in body.points}
@@ -420,8 +443,21 @@ def _contact_names(ctx: Context) -> None:
             continue
         done.add(name)
         p = np.asarray(j.contact, dtype=float)
+        if labelled_at(ctx, p):
+            continue
         ctx.avoid(p, weight=2.0, radius=2.0)
         ctx.label(p, plain(name), POINT_LABEL, 3, f"contact:{name}", weight="bold", radius=2.0)
+
+
+def labelled_at(ctx: Context, p: np.ndarray, contacts: bool = False) -> bool:
+    """Whether a label already stands for the place `p`: a body's point there (and with
+    `contacts`, a contact the page names, labelled by `_contact_names`): one place, one
+    letter on a figure."""
+    tol = 1e-6 * ctx.size
+    pts = [q for body in ctx.scene.bodies.values() for n, q in body.points.items() if n not in body.passing]
+    if contacts and ctx.still:
+        pts += [j.contact for j in ctx.scene.joints if j.contact_name and j.contact is not None]
+    return any(float(np.linalg.norm(np.asarray(q, dtype=float) - p)) <= tol for q in pts)
 
 
 def _distinct(pts: list, tol: float) -> list:

@@ -13,6 +13,7 @@ from typing import Optional, TypedDict
 import numpy as np
 
 from .geometry import clip_line, clip_polyline, clip_segment, edge_point, unit
+from .bodies import labelled_at
 from .context import Context
 from .scene import CurvatureView, KennedyLine, MarkView
 from .names import coordinates
@@ -103,6 +104,8 @@ def _mark(ctx: Context, group: list[MarkView]) -> None:
         ctx.add("dot", [p], size=2.5, colour=CENTRE, fill=CENTRE, width=1.0, zorder=12,
                 layer="centres", group=f"mark:{mark.key}")
     ctx.avoid(p, weight=3.0, radius=5.0)
+    if mark.kind == "contact" and labelled_at(ctx, p, contacts=True):
+        return          # the point or the page's contact letter is there already: one place, one letter
     ctx.label(p, group_label(group), COLOURS[mark.kind], 2, _key(group), layer="centres",
               group=f"mark:{mark.key}", radius=5.5)
 

@@ -139,8 +139,10 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
 # (the notes' J, "el punt J de contacte"), then the letters after it. Left out: I (the
 # instant centres), L (its polygon image l reads as I or 1), O (a centre, and the
 # polygons' pole o), P (the point a problem asks about), T (the notes' terra, as in v_T),
-# V (read as a velocity, v_V) and R (a radius).
-CONTACT_LETTERS = "JKMNQSUWXYZEFGHABCD"
+# V (read as a velocity, v_V), R (a radius), and M and D, the marks every equation writes
+# under its terms (M magnitude known, D direction known: a contact M beside them read as a
+# mark; issue 30, fourteenth round (b), C5-E.4's M).
+CONTACT_LETTERS = "JKNQSUWXYZEFGHABC"
 
 
 def contact_name(model: Any, joint_id: str, sol: Any = None) -> str:
@@ -158,7 +160,7 @@ def contact_names(model: Any, sol: Any = None) -> dict[str, str]:
     joints' ids are the file's, j3 -> J3 read as a joint): J, then K, M, N … in the
     joints' order (`CONTACT_LETTERS`), skipping any letter a point's name starts with (C
     beside C, G beside G1 and G2), a parameter's name (L, r) or a body's index (the slides'
-    N) — so one contact is the notes' J; never another point's name (a prime is added)."""
+    N), a body named by one letter, or the M and D marks — so one contact is the notes' J; never another point's name (a prime is added)."""
     touching = [j.id for j in model.joints if getattr(j.kind, "touches", False)]
     wording = getattr(model, "wording", None)
     out: dict[str, str] = {}
@@ -170,6 +172,7 @@ def contact_names(model: Any, sol: Any = None) -> dict[str, str]:
             out[jid] = named
     taken = {n[:1].upper() for n in model.points} | {n.upper() for n in getattr(model, "parameters", {})}
     taken |= {i.upper() for by_lang in getattr(wording, "indices", {}).values() for i in by_lang.values()}
+    taken |= {b.upper() for b in getattr(model, "bodies", {}) if len(b) == 1}      # a body's symbol (001's N, R)
     taken |= {n.upper() for n in out.values()}
     letters = iter(c for c in CONTACT_LETTERS if c not in taken)
     for jid in touching:

@@ -224,18 +224,18 @@ def _touching(ctx: Ctx, name: str, holders: list[str]) -> Optional[Msg]:
 
 
 def contact_rows(ctx: Ctx, doc: Any) -> dict[str, str]:
-    """The contact points the page names (J1, J4 …: the explanation names them, the model
-    does not) join the Data section's table of points, with what they are and where, so
-    that every point the page writes is located before it is used (C5-1.5's J1 … J10); a
-    contact the page names nowhere but in the structure table is not named there either
-    (its cell gives its position): the table of points lists no point the page never uses (issue 30,
-    ninth round: C5-1.4's K, Q and S, C5-E.2's K and N, listed and never used). Returns
-    the contacts the page names that are no model's point (joint id -> name): the figures
-    label those (`structure.name_contacts`)."""
+    """Every contact point of the page (J, K, T2 …: the structure table gives each touching
+    joint's place, the explanation names some) that is no model's point joins the Data
+    section's table of points, with what it is and where, so that every point the page
+    writes is located before it is used (C5-1.5's J1 … J10) — and every contact has a
+    letter: one the page names only in the structure table is named there too, never given
+    by its coordinates alone (issue 30, fourteenth round (b): C5-E.4's "roda dreta – roda
+    superior (R/2; R·(√3 + 2)/2)", read as a datum with no name). Returns those contacts
+    (joint id -> name): the figures label them (`structure.name_contacts`), so the letter
+    is the same in the table, the text and the figure."""
     table = next((b for b in doc.sections[0].blocks if isinstance(b, Table)
                   and getattr(b.header[0], "key", "") == "col.point"), None)
-    used = points_used(ctx, doc)
-    named = {jid: name for jid, name in ctx._contacts.items() if name in used and name not in ctx.model.points}
+    named = {jid: name for jid, name in ctx._contacts.items() if name not in ctx.model.points}
     if table is None:
         return named
     listed = {row[0].text for row in table.rows if isinstance(row[0], Name)}
@@ -243,9 +243,7 @@ def contact_rows(ctx: Ctx, doc: Any) -> dict[str, str]:
 
     for jid, name in ctx._contacts.items():
         j = ctx.model.joint(jid)
-        if name not in used and name not in ctx.model.points:     # a model's point is listed, and drawn
-            _unname_in_structure(doc, name, Value(ctx.clean(ctx.pos(name), "len"), "len"))
-        if name in listed or name not in used:
+        if name in listed:
             continue
         what = msg("what.contact", joint=Name(j.id, "joint"), kind=msg(f"joint.{kind_key(j, ctx.frame)}"),
                    a=Name(j.a, "body"), b=Name(j.b, "body"))
@@ -264,20 +262,6 @@ _NAMING_TABLES = ("col.point", "col.number", "col.joint")
 
 def _naming(block: Any) -> bool:
     return isinstance(block, Table) and getattr(block.header[0], "key", "") in _NAMING_TABLES
-
-
-def _unname_in_structure(doc: Any, name: str, where: Any) -> None:
-    """The structure table's joint rows whose place is the contact `name` alone give the
-    contact's position instead (`where`): a letter the page never uses again is not named,
-    and an empty "—" read as a missing datum (the final readers of stop 41)."""
-    for sec in doc.sections:
-        for b in sec.blocks:
-            if isinstance(b, Table) and getattr(b.header[0], "key", "") == "col.joint":
-                for row in b.rows:
-                    cell = row[-1]
-                    if isinstance(cell, Inline) and len(cell.items) == 1 and isinstance(cell.items[0], Name) \
-                            and cell.items[0].text == name:
-                        row[-1] = where
 
 
 def points_used(ctx: Ctx, doc: Any) -> set[str]:
