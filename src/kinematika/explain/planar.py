@@ -125,7 +125,7 @@ class PlanarSteps:
         for d in self.ctx.model.drivers:
             if d.index not in self.stated and set(driven(self.ctx, d)) & set(step.bodies):
                 self.stated.add(d.index)
-                out.append(driver_msg(self.ctx, d, self.level))
+                out.append(driver_msg(self.ctx, d, self.level, recall=True))   # the Data said it
                 if whole_along(self.ctx, d, self.level):      # stated whole: a written point to go from
                     self.done.add(self.ctx.point_label(d.driven_point().point, d.driven_point().body))
         return out
@@ -498,8 +498,10 @@ def held_msg(ctx: Ctx, joint_id: str, level: str) -> Msg:
                a=body(j.a), b=body(j.b), sym=joint_rate_sym(ctx, joint_id, level))
 
 
-def driver_msg(ctx: Ctx, d, level: str) -> Msg:
-    """The known motion the model states, as values (never the model's own text)."""
+def driver_msg(ctx: Ctx, d, level: str, recall: bool = False) -> Msg:
+    """The known motion the model states, as values (never the model's own text). `recall`:
+    a step recalling a datum the Data stated, by its symbol only (C5-2.1's held steering:
+    "Dada: δ̇ = 0." in step 1, its sentence said once, in the Data)."""
     given = d.accel if level == "a" else d.value
     inst, where = ctx.inst, d.where
     if d.kind == "omega":
@@ -518,7 +520,7 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
         turning = turns(ctx.model.joint(d.joint))
         unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")
         value = Value(ctx.clean(inst.value(given, where), unit), unit)
-        if turning and held(ctx, d, level):
+        if turning and held(ctx, d, level) and not recall:
             return held_msg(ctx, d.joint, level)
         if turning:                 # the pin's rate as the symbol the composition writes later
             return msg("driver.omega", sym=joint_rate_sym(ctx, d.joint, level), value=value)

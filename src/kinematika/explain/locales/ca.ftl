@@ -771,7 +771,7 @@ sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
-how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda respecte del terra recte, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
+how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda del terra pla, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
 centres-found_above = { $centre } = { $value }: trobat més amunt, al pas de velocitats { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -782,6 +782,7 @@ centre-site_s = El CIR { $centre } de { $body } respecte de { $frame }, trobat m
 sec-contact = Punts de contacte
 geom-rule = La regla de tot contacte de rodolament: la condició de no lliscament es compleix a cada instant al punt geomètric de contacte (aquí { $geom }), que es mou; derivant-la al llarg d’aquest punt s’obté { $rule }: les components tangencials de les dues acceleracions són iguals i les normals difereixen en aquest terme, segons la normal comuna. Cal la velocitat del punt geomètric:
 geom-bar = { $geom }, el punt geomètric de contacte, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, amb { $part }/{ $whole } = { $ratio }, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:
+geom-bar_told = { $geom }, el punt geomètric de contacte, és sempre a la recta dels centres { $c1 } i { $c2 }, amb { $part }/{ $whole } = { $ratio }, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:
 geom-foot = { $geom }, el punt geomètric de contacte, és el peu de la perpendicular des del centre { $centre } a la recta { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
