@@ -702,7 +702,7 @@ centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
     }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    } són perpendiculars a la recta que passa per { $p } i { $q } (passa pels punts al voltant dels quals giren), de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
+    } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
 centre-carried-outside = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
@@ -712,7 +712,7 @@ centre-carried-outside = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
     }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    } són perpendiculars a la recta que passa per { $p } i { $q } (passa pels punts al voltant dels quals giren), de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
+    } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 centre-line-slot = la normal a la ranura per { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
 centre-line-slot_fixed = la normal a la recta { ELISION($a) ->
         [vowel] d’{ $a }
@@ -722,14 +722,14 @@ centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $poi
 centre-field = és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
-    }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+    }, { $side }, de manera que el CIR és
 centre-rate = a partir de la velocitat angular trobada més amunt a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
     }: és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
-    }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+    }, { $side }, de manera que el CIR és
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = per sobre { ELISION($q) ->
         [vowel] d’{ $q }
@@ -766,7 +766,7 @@ side-below_right = per sota i a la dreta { ELISION($q) ->
 centre-check = Comprovació amb les velocitats trobades: a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
-    }, del costat que dona el sentit de { $w }: { $side }, el mateix punt: { $centre } és { $where }
+    }, { $side }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)

@@ -534,13 +534,13 @@ centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { 
 centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
 centre-line-guide = the perpendicular to the guide through { $pivot } (at its foot { $pivot }′ on the guide, the velocity relative to { $body } is along the guide and the drag velocity is perpendicular to { $pivot }{ $pivot }′, that is, along the guide too: the velocity of the point of { $b } at { $pivot }′ follows the guide)
-centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
-centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
+centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
+centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
 centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
-centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
-centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
+centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = above { $q }
 side-below = below { $q }
@@ -550,7 +550,7 @@ side-above_left = above and to the left of { $q }
 side-above_right = above and to the right of { $q }
 side-below_left = below and to the left of { $q }
 side-below_right = below and to the right of { $q }
-centre-check = Check with the velocities found above: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side }, the same point: { $centre } is { $where }
+centre-check = Check with the velocities found above: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity across it: no swinging, it translates)

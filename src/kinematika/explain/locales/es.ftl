@@ -465,13 +465,13 @@ centre-line-moves_still = la perpendicular a { $v } por { $point } ({ $point } s
        *[one] traslada
     })
 centre-line-guide = la perpendicular a la guía por { $pivot } (en su pie { $pivot }′ sobre la guía, la velocidad relativa a { $body } es paralela a la guía y la de arrastre es perpendicular a { $pivot }{ $pivot }′, es decir, también paralela a la guía: la velocidad del punto de { $b } en { $pivot }′ sigue la guía)
-centre-carried-between = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q } (pasa por los puntos alrededor de los cuales giran), así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
-centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q } (pasa por los puntos alrededor de los cuales giran), así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
+centre-carried-between = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
+centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 centre-line-slot = la normal en { $point } a la ranura (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
 centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
-centre-field = está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
-centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
+centre-field = está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, de modo que el CIR está
+centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, así que el CIR está
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = por encima de { $q }
 side-below = por debajo de { $q }
@@ -481,7 +481,7 @@ side-above_left = por encima y a la izquierda de { $q }
 side-above_right = por encima y a la derecha de { $q }
 side-below_left = por debajo y a la izquierda de { $q }
 side-below_right = por debajo y a la derecha de { $q }
-centre-check = Comprobación con las velocidades halladas: en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side }, el mismo punto: { $centre } está { $where }
+centre-check = Comprobación con las velocidades halladas: en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma velocidad perpendicular a él: sin movimiento pendular, se traslada)
