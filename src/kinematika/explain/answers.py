@@ -64,14 +64,8 @@ def centre_from_point(ctx: Ctx, q) -> list:
     centre = note.value["point"]
     if note.how in ("field", "rate", "parallel") and note.witnesses and note.distance is not None:
         point, distance = note.witnesses[-1][0], note.distance
-    elif note.how == "proportional" and note.pivots:
-        named = [w[0] for w in note.witnesses if not str(w[0]).startswith("I:")]
-        if not named:
-            return []
-        far = {p: sympy.sqrt(sum((sympy.sympify(a) - sympy.sympify(b)) ** 2 for a, b in zip(ctx.pos(p), centre)))
-               for p in named}
-        point = min(named, key=lambda p: float(ctx.inst.num(far[p])))
-        distance = far[point]
+    elif note.how == "proportional" and note.near and note.distance is not None:    # centres._nearer
+        point, distance = note.near, note.distance
     else:
         return []
     return [(msg("ans.from", point=Name(point)), Value(ctx.clean(sympy.simplify(distance), "len"), "len"))]

@@ -387,8 +387,26 @@ def _kennedy(ctx: Ctx, note: CentreNote, found: dict, before: list) -> None:
     if len(note.witnesses) == 2:
         u, w = (ctx.num(v) for _, _, v in note.witnesses)
         note.side = "between" if u[0] * w[0] + u[1] * w[1] < 0 else "outside"
+        _nearer(ctx, note)
     else:
         note.how = "velocities"
+
+
+def _nearer(ctx: Ctx, note: CentreNote) -> None:
+    """A centre between (or beyond) two points turning about known pivots is also placed as
+    its distance from the nearer named one, as the notes give it: C5-1.4's planet centre
+    "a (2/5)r del centre" A1, said where the centre is found and in the answers (the
+    eleventh round put it in the answers only: the sentence gave coordinates alone)."""
+    import sympy
+
+    centre = note.value.get("point")
+    named = [(p, at) for p, at, _ in note.witnesses if not str(p).startswith("I:")]
+    if not note.pivots or centre is None or not named:
+        return
+    far = {p: sympy.sqrt(sum((sympy.sympify(a) - sympy.sympify(b)) ** 2 for a, b in zip(at, centre)))
+           for p, at in named}
+    note.near = min(far, key=lambda p: float(ctx.inst.num(far[p])))
+    note.distance = ctx.clean(sympy.simplify(far[note.near]), "len")
 
 
 def _perpendicular(ctx: Ctx, found: dict, a: str, k: str, b: str) -> Optional[Msg]:

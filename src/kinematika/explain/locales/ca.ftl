@@ -703,6 +703,19 @@ centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
+centre-carried-between_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
+        [vowel] d’{ $c1 }
+       *[other] de { $c1 }
+    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+        [vowel] d’{ $c2 }
+       *[other] de { $c2 }
+    }: totes dues velocitats respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $dist } { ELISION($near) ->
+        [vowel] d’{ $near }
+       *[other] de { $near }
+    }:
 centre-carried-outside = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
@@ -713,6 +726,19 @@ centre-carried-outside = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
+centre-carried-outside_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
+        [vowel] d’{ $c1 }
+       *[other] de { $c1 }
+    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+        [vowel] d’{ $c2 }
+       *[other] de { $c2 }
+    }: totes dues velocitats respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $dist } { ELISION($near) ->
+        [vowel] d’{ $near }
+       *[other] de { $near }
+    }:
 centre-line-slot = la normal a la ranura per { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
 centre-line-slot_fixed = la normal a la recta { ELISION($a) ->
         [vowel] d’{ $a }

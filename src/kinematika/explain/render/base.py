@@ -926,8 +926,10 @@ class Renderer(ABC):
         args = {"l1": lines[0], "l2": lines[1], "frame": self.frame_name(a), "p": names[0], "q": names[1],
                 "vp": Value(vp, "speed"), "vq": Value(vq, "speed")}
         if c.pivots:        # the notes' words: each point turns with a body about its centre (C5-1.4)
-            return Msg(f"centre.carried.{c.side}", {**args, "k1": Name(c.via[0], "body"), "k2": Name(c.via[1], "body"),
-                                                     "c1": c.pivots[0], "c2": c.pivots[1]})
+            key = f"centre.carried.{c.side}" + ("_from" if c.near and c.distance is not None else "")
+            return Msg(key, {**args, "k1": Name(c.via[0], "body"), "k2": Name(c.via[1], "body"),
+                             "c1": c.pivots[0], "c2": c.pivots[1], "near": Name(c.near),
+                             "dist": Value(c.distance, "len")})
         return Msg(f"centre.proportional.{c.side}", args)
 
     def where(self, value: dict) -> Msg:
