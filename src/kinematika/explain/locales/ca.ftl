@@ -537,7 +537,11 @@ vehicle-equiprojective = Per la propietat d’equiprojectivitat ({ $q } i { $p }
         [vowel] d’{ $body }
        *[other] de { $body }
     }), les seves velocitats tenen la mateixa component segons { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, amb { $seg }/|{ $seg }| = { $unit }, de manera que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } és a l’eix de la roda { $joint }, de manera que { $vp } té la direcció del pla de la roda: { $vp } = |{ $vp }| e, amb e = { $along } i e · { $seg }/|{ $seg }| = { $cos }. Per tant, |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, i { $vp } = { $value }.
-vehicle-centre_on_axle = La perpendicular a { $sym } pel punt { $point } és el mateix eix de la roda { $joint } ({ $point } hi és i { $sym } té la direcció del pla de la roda), de manera que no dona una segona recta: la segona és la perpendicular a { $vo } pel punt { $other }.
+vehicle-equiprojective_along = Per la propietat d’equiprojectivitat ({ $q } i { $p } són punts { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }), les seves velocitats tenen la mateixa component segons { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, amb { $seg }/|{ $seg }| = { $unit }, de manera que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } és a l’eix de la roda { $joint }, de manera que { $vp } té la direcció del pla de la roda: { $vp } = |{ $vp }| e, amb e = { $along } i e · { $seg }/|{ $seg }| = { $cos }. Per tant, |{ $vp }| = { $speed }, i { $vp } = { $value }.
+vehicle-centre_on_axle = La perpendicular a { $sym } per { $point } és l’eix mateix de la roda { $joint }: la segona recta és la perpendicular a { $vo } per { $other }.
 vehicle-centre = El CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
