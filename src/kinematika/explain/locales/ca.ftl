@@ -78,6 +78,10 @@ joint-weld = sòlids solidaris
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
 fig-drag = d’arrossegament de { $point } ({ $sym })
+fig-own_drag = la velocitat { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } i la seva velocitat d’arrossegament ({ $sym })
 fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
@@ -91,6 +95,13 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] {", amb el seu mòdul"}
         }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
+        [4] { $format ->
+            [md] les fletxes
+           *[other] les fletxes blaves
+        } són { $points }, a una mateixa escala{ $moduli ->
+            [0] {""}
+           *[other] {", amb els seus mòduls"}
+        }
        *[other] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
@@ -112,6 +123,13 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] {", amb el seu mòdul"}
         }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
+        [4] { $format ->
+            [md] les fletxes
+           *[other] les fletxes blaves
+        } són { $points }, a una mateixa escala{ $moduli ->
+            [0] {""}
+           *[other] {", amb els seus mòduls"}
+        }
        *[other] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves

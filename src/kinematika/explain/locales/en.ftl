@@ -66,6 +66,7 @@ joint-weld = rigid joint
 joint-spherical = spherical
 joint-cylindrical = cylindrical
 fig-drag = the drag velocity of { $point } ({ $sym })
+fig-own_drag = the velocity of { $point } and its drag velocity ({ $sym })
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
@@ -79,6 +80,13 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
            *[other] {", with its magnitude"}
         }
         [3] { $points } is at rest: its velocity is zero, written beside it
+        [4] { $format ->
+            [md] the arrows
+           *[other] the blue arrows
+        } are { $points }, to one scale{ $moduli ->
+            [0] {""}
+           *[other] {", with their magnitudes"}
+        }
        *[other] { $format ->
             [md] the arrows
            *[other] the blue arrows
@@ -100,6 +108,13 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
            *[other] {", with its magnitude"}
         }
         [3] { $points } is at rest: its velocity is zero, written beside it
+        [4] { $format ->
+            [md] the arrows
+           *[other] the blue arrows
+        } are { $points }, to one scale{ $moduli ->
+            [0] {""}
+           *[other] {", with their magnitudes"}
+        }
        *[other] { $format ->
             [md] the arrows
            *[other] the blue arrows

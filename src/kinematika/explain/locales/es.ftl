@@ -63,6 +63,7 @@ joint-weld = sólidos solidarios
 joint-spherical = par esférico
 joint-cylindrical = par cilíndrico
 fig-drag = de arrastre de { $point } ({ $sym })
+fig-own_drag = la velocidad de { $point } y su velocidad de arrastre ({ $sym })
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
@@ -76,6 +77,13 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
            *[other] {", con su módulo"}
         }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
+        [4] { $format ->
+            [md] las flechas
+           *[other] las flechas azules
+        } son { $points }, a una misma escala{ $moduli ->
+            [0] {""}
+           *[other] {", con sus módulos"}
+        }
        *[other] { $format ->
             [md] las flechas
            *[other] las flechas azules
@@ -97,6 +105,13 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
            *[other] {", con su módulo"}
         }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
+        [4] { $format ->
+            [md] las flechas
+           *[other] las flechas azules
+        } son { $points }, a una misma escala{ $moduli ->
+            [0] {""}
+           *[other] {", con sus módulos"}
+        }
        *[other] { $format ->
             [md] las flechas
            *[other] las flechas azules

@@ -63,6 +63,7 @@ joint-weld = lotura zurruna
 joint-spherical = esferikoa
 joint-cylindrical = zilindrikoa
 fig-drag = { $point } ({ $sym }, arrastre-abiadura)
+fig-own_drag = { $point } puntuaren abiadura eta arrastre-abiadura ({ $sym })
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
@@ -76,6 +77,13 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] {", bere moduluarekin"}
         }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
+        [4] { $format ->
+            [md] geziak
+           *[other] gezi urdinak
+        } { $points } dira, eskala berean{ $moduli ->
+            [0] {""}
+           *[other] {", beren moduluekin"}
+        }
        *[other] { $format ->
             [md] geziak
            *[other] gezi urdinak
@@ -97,6 +105,13 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] {", bere moduluarekin"}
         }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
+        [4] { $format ->
+            [md] geziak
+           *[other] gezi urdinak
+        } { $points } dira, eskala berean{ $moduli ->
+            [0] {""}
+           *[other] {", beren moduluekin"}
+        }
        *[other] { $format ->
             [md] geziak
            *[other] gezi urdinak
