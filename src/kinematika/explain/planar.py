@@ -120,12 +120,17 @@ class PlanarSteps:
         return blocks + self.other(step) + self.carry(step)
 
     def drivers(self, step: Step) -> list:
-        """The drivers that act on the step's bodies, each stated once, at its first step."""
+        """The drivers that act on the step's bodies, each stated once, at its first step; a
+        held pin not at all (C5-2.1's steering, δ̇ = 0): a condition the Data say in words,
+        which the step's composition recalls by its symbol (ω_fork = ψ̇ + δ̇ = ψ̇ + 0) — the
+        sentence twice on one page was the fourteenth round's reader's edit."""
         out = []
         for d in self.ctx.model.drivers:
             if d.index not in self.stated and set(driven(self.ctx, d)) & set(step.bodies):
                 self.stated.add(d.index)
-                out.append(driver_msg(self.ctx, d, self.level, recall=True))   # the Data said it
+                if d.kind == "joint" and turns(self.ctx.model.joint(d.joint)) and held(self.ctx, d, self.level):
+                    continue            # a condition the Data said: the step's ω_b = ω_a + δ̇ recalls it
+                out.append(driver_msg(self.ctx, d, self.level))
                 if whole_along(self.ctx, d, self.level):      # stated whole: a written point to go from
                     self.done.add(self.ctx.point_label(d.driven_point().point, d.driven_point().body))
         return out
@@ -498,10 +503,8 @@ def held_msg(ctx: Ctx, joint_id: str, level: str) -> Msg:
                a=body(j.a), b=body(j.b), sym=joint_rate_sym(ctx, joint_id, level))
 
 
-def driver_msg(ctx: Ctx, d, level: str, recall: bool = False) -> Msg:
-    """The known motion the model states, as values (never the model's own text). `recall`:
-    a step recalling a datum the Data stated, by its symbol only (C5-2.1's held steering:
-    "Dada: δ̇ = 0." in step 1, its sentence said once, in the Data)."""
+def driver_msg(ctx: Ctx, d, level: str) -> Msg:
+    """The known motion the model states, as values (never the model's own text)."""
     given = d.accel if level == "a" else d.value
     inst, where = ctx.inst, d.where
     if d.kind == "omega":
@@ -520,7 +523,7 @@ def driver_msg(ctx: Ctx, d, level: str, recall: bool = False) -> Msg:
         turning = turns(ctx.model.joint(d.joint))
         unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")
         value = Value(ctx.clean(inst.value(given, where), unit), unit)
-        if turning and held(ctx, d, level) and not recall:
+        if turning and held(ctx, d, level):
             return held_msg(ctx, d.joint, level)
         if turning:                 # the pin's rate as the symbol the composition writes later
             return msg("driver.omega", sym=joint_rate_sym(ctx, d.joint, level), value=value)
