@@ -77,6 +77,29 @@ def _once(ctx: Ctx, note: CentreNote):
                value=Value(point, "len"), body=Name(body, "body"))
 
 
+def centres_in_steps(ctx: Ctx, velocities: Section) -> None:
+    """A centre found from two parallel velocities (`_parallel`) is said in the velocity step
+    that finds its body's ω, where both velocities are known, when a later step goes on from
+    that body: the notes' order (C5-1.5: "el CIR d'aquesta politja estarà en el punt mig
+    entre aquests dos punts. A partir d'aquí ... el bloc pujarà amb celeritat 6v"), the
+    third pulley's centre before the block's speed, never in a section after every step.
+    The closing section then refers to it (`_once`: "found above")."""
+    from .document import Derived
+
+    made, chosen, _ = _notes(ctx)
+    steps = [b for b in velocities.blocks if isinstance(b, Section)]
+    for key in chosen:
+        note = made[key]
+        a, b = note.pair
+        if _placed(ctx, note) or note.how != "parallel" or a != ctx.frame:
+            continue
+        found = next((i for i, sub in enumerate(steps) if any(
+            isinstance(x, Derived) and x.body == b and x.kind == "omega" for x in sub.blocks)), None)
+        if found is not None and found + 1 < len(steps):
+            steps[found].blocks.append(note)
+            ctx.worked.add(f"centre:{b}")
+
+
 def used_pairs(made: dict, chosen: list) -> list[tuple[str, str]]:
     """The pairs whose centres the text writes, which are all the centres' figure shows: a
     figure of every pair (C5-1.5's 36) hides the few the step needs, and a ring the text never
