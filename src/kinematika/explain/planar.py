@@ -128,7 +128,8 @@ class PlanarSteps:
         for d in self.ctx.model.drivers:
             if d.index not in self.stated and set(driven(self.ctx, d)) & set(step.bodies):
                 self.stated.add(d.index)
-                if d.kind == "joint" and turns(self.ctx.model.joint(d.joint)) and held(self.ctx, d, self.level):
+                if d.kind == "joint" and d.joint is not None and turns(self.ctx.model.joint(d.joint)) \
+                        and held(self.ctx, d, self.level):
                     continue            # a condition the Data said: the step's ω_b = ω_a + δ̇ recalls it
                 out.append(driver_msg(self.ctx, d, self.level))
                 if whole_along(self.ctx, d, self.level):      # stated whole: a written point to go from
