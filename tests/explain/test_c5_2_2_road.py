@@ -17,16 +17,18 @@ from .helpers import LANGS, rendered
 
 NAME = "seed_c5_2_2_articulated"
 
-# the equation of equiprojectivity, with its numbers, in each language
+# the equation of equiprojectivity, with its numbers, in each language: along PO, the segment
+# that makes e · u positive (fourteenth round: never (−√2·r·ω/2) / (−1)); by hand, v_O =
+# (rω, 0), u = PO/|PO| = (1, 1)/√2, v_O · u = rω/√2, e = (1, 1)/√2 = u, so |v_P| = rω/√2
 EQUATION = {
-    "en": ("v_P · OP/|OP| = v_O · OP/|OP|, with OP/|OP| = (−√2/2, −√2/2), so that v_O · OP/|OP| = −√2·r·ω/2",
-           "e = (√2/2, √2/2) and e · OP/|OP| = −1", "|v_P| = (−√2·r·ω/2) / (−1) = √2·r·ω/2 = r·ω/√2"),
-    "es": ("v_P · OP/|OP| = v_O · OP/|OP|, con OP/|OP| = (−√2/2; −√2/2), de modo que v_O · OP/|OP| = −√2·r·ω/2",
-           "e = (√2/2; √2/2) y e · OP/|OP| = −1", "|v_P| = (−√2·r·ω/2) / (−1) = √2·r·ω/2 = r·ω/√2"),
-    "ca": ("v_P · OP/|OP| = v_O · OP/|OP|, amb OP/|OP| = (−√2/2; −√2/2), de manera que v_O · OP/|OP| = −√2·r·ω/2",
-           "e = (√2/2; √2/2) i e · OP/|OP| = −1", "|v_P| = (−√2·r·ω/2) / (−1) = √2·r·ω/2 = r·ω/√2"),
-    "eu": ("v_P · OP/|OP| = v_O · OP/|OP|, non OP/|OP| = (−√2/2; −√2/2); beraz, v_O · OP/|OP| = −√2·r·ω/2",
-           "e = (√2/2; √2/2) eta e · OP/|OP| = −1", "|v_P| = (−√2·r·ω/2) / (−1) = √2·r·ω/2 = r·ω/√2"),
+    "en": ("v_P · PO/|PO| = v_O · PO/|PO|, with PO/|PO| = (√2/2, √2/2), so that v_O · PO/|PO| = √2·r·ω/2",
+           "e = (√2/2, √2/2) and e · PO/|PO| = 1", "|v_P| = √2·r·ω/2 = r·ω/√2"),
+    "es": ("v_P · PO/|PO| = v_O · PO/|PO|, con PO/|PO| = (√2/2; √2/2), de modo que v_O · PO/|PO| = √2·r·ω/2",
+           "e = (√2/2; √2/2) y e · PO/|PO| = 1", "|v_P| = √2·r·ω/2 = r·ω/√2"),
+    "ca": ("v_P · PO/|PO| = v_O · PO/|PO|, amb PO/|PO| = (√2/2; √2/2), de manera que v_O · PO/|PO| = √2·r·ω/2",
+           "e = (√2/2; √2/2) i e · PO/|PO| = 1", "|v_P| = √2·r·ω/2 = r·ω/√2"),
+    "eu": ("v_P · PO/|PO| = v_O · PO/|PO|, non PO/|PO| = (√2/2; √2/2); beraz, v_O · PO/|PO| = √2·r·ω/2",
+           "e = (√2/2; √2/2) eta e · PO/|PO| = 1", "|v_P| = √2·r·ω/2 = r·ω/√2"),
 }
 
 # why the perpendicular to v_P does not place the centre (it is the axle), then the centre
@@ -35,7 +37,7 @@ ON_AXLE = {
            "The instant centre of the *chassis S2*"),
     "es": ("La perpendicular a v_P por P es el propio eje de la rueda C3", "la perpendicular a v_O por O",
            "El CIR del *chasis S2*"),
-    "ca": ("La perpendicular a v_P pel punt P és el mateix eix de la roda C3", "la perpendicular a v_O pel punt O",
+    "ca": ("La perpendicular a v_P per P és l’eix mateix de la roda C3", "la perpendicular a v_O per O",
            "El CIR del *xassís S2*"),
     "eu": ("v_P abiadurarekiko perpendikularra P puntuan C3 gurpilaren ardatza bera da",
            "v_O abiadurarekiko perpendikularra da O puntuan", "*S2 txasisaren* biraketa-zentroa"),
@@ -54,7 +56,7 @@ def test_the_centre_says_why_the_perpendicular_to_v_p_is_not_the_second_line(lan
     page = rendered(NAME, lang, drawings=False)
     said, second, centre = ON_AXLE[lang]
     assert said in page and second in page
-    assert page.index(said) < page.index(centre, page.index("v_P · OP/|OP|"))
+    assert page.index(said) < page.index(centre, page.index("v_P · PO/|PO|"))
 
 
 @pytest.mark.parametrize("lang", LANGS)

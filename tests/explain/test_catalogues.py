@@ -33,7 +33,7 @@ FAMILIES = {
     "ask": [k.name for k in QUESTIONS.values() if type(k).label is QuestionKind.label],   # `ask.NAME`
     "ans": ["point", "direction", "center", "tangent", "slide"],
     "centre.proportional": ["between", "outside"],
-    "centre.carried": ["between", "outside"],
+    "centre.carried": ["between", "outside", "between_from", "outside_from"],
     "centre.parallel": ["between", "outside"],
     "pos": ["left", "right", "ahead", "behind", "open", "crossed"],
     "side": list(SIDES),                                      # the side a centre lies on (centres.side_of)

@@ -15,7 +15,8 @@ from .helpers import blocks as _blocks, section as _section
 
 
 def _notes(doc) -> list[CentreNote]:
-    return [b for s in doc.sections if s.title.key in ("sec.centres", "sec.centres_v")
+    # a centre from two parallel velocities is said in its velocity step (fourteenth round c)
+    return [b for s in doc.sections if s.title.key in ("sec.centres", "sec.centres_v", "sec.velocities")
             for b in _blocks(s) if isinstance(b, CentreNote)]
 
 

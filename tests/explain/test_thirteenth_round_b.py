@@ -191,14 +191,16 @@ def test_a_centre_placed_from_one_velocity_names_its_side(name, lang):
 
 @pytest.mark.parametrize("name,lang,said", [
     # C5-1.6: QI = ω × v_A / ω² with ω = −ω k, v_A = (−rω, 4rω): (4r, r), up and right of A
-    ("seed_c5_1_6_belt", "en", "on the side the sense of ω_{moving pulley} gives: above and to the right of A ("),
-    ("seed_c5_1_6_belt", "ca", "del costat que dona el sentit de ω_{politja mòbil}: per sobre i a la dreta d’A ("),
+    ("seed_c5_1_6_belt", "en", "from A, above and to the right of A, so the centre is"),
+    ("seed_c5_1_6_belt", "ca", "d’A, per sobre i a la dreta d’A, de manera que el CIR és"),
     # C5-E.5: ω = v/r₁ k, v_D = (v, 0): QI = (0, r₁), above D
-    ("seed_c5_e5_unequal_wheels", "es", "del lado que da el sentido de ω_rueda1: por encima de D ("),
+    ("seed_c5_e5_unequal_wheels", "es", "de D, por encima de D, así que el CIR está"),
     # C5-E.6: ω = −rv/(R R_w) k < 0, v_C = (v, 0): QI points down, below C
-    ("seed_c5_e6_bicycle", "eu", "ω_platera abiadura angeluarraren noranzkoak ematen duen aldean: C puntuaren azpian ("),
+    ("seed_c5_e6_bicycle", "eu", "distantziara, C puntuaren azpian; beraz, zentroa"),
 ])
 def test_the_side_by_hand(name, lang, said):
+    """The side by name, nothing more (fourteenth round (c): no "on the side the sense of ω
+    gives", no values in brackets)."""
     assert said in rendered(name, lang, "md", drawings=False)
 
 

@@ -99,7 +99,6 @@ def test_the_pulleys_centre_sentence():
 
 LEVELS = {"v": ("## Velocities", "## Velocidades", "## Velocitats", "## Abiadurak"),
           "a": ("## Accelerations", "## Aceleraciones", "## Acceleracions", "## Azelerazioak")}
-DATA = ("## Data", "## Datos", "## Dades", "## Datuak")
 COMPOSITION = ("## Composition of motions", "## Composición de movimientos", "## Composició de moviments",
                "## Mugimenduen konposizioa")
 GIVEN = ("Given:", "Dato:", "Dada:", "Datua:")
@@ -150,7 +149,7 @@ def repeats(page: str) -> list[tuple[str, str]]:
     about the same things), but for what a reader expects twice: each level said on its own,
     as the notes work them (a step of the accelerations saying again what its body does, the
     composition's relative motion for v then a); a datum recalled in the step that uses it
-    ("Given: …", a pin held at this instant)."""
+    ("Given: …"), never a sentence of the Data said again (a pin held at this instant)."""
     found = []
     units = [(h, s) for h, s in _sentences(page) if len(s.split()) >= 8]
     for i, (h1, s1) in enumerate(units):
@@ -159,8 +158,10 @@ def repeats(page: str) -> list[tuple[str, str]]:
                 continue
             if {_level(h1), _level(h2)} == {"v", "a"} or (h1 == h2 and h1 in COMPOSITION):
                 continue                # each level on its own
-            if s1.startswith(GIVEN) or (h1 in DATA and _level(h2)):
-                continue                # the datum recalled where it is used
+            if s1.startswith(GIVEN):
+                continue                # the datum recalled where it is used, by its symbol
+            # (a datum's sentence in the Data and again in a step is a repeat: fourteenth round c,
+            # C5-2.1's held steering)
             found.append((s1, s2))
     return found
 

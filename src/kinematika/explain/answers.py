@@ -51,8 +51,9 @@ def centre_from_point(ctx: Ctx, q) -> list:
     (A1, on the line A1N), C5-E.6's pedals' centre d = R_roda R/r below C (on the
     perpendicular to v_C through C), C5-1.5's r/2 from C3. The point is the one the centre
     was placed from (`CentreNote`: the field's or the rate's Q, the parallel velocities' Q),
-    or, between two turning points, the nearer one; none for a centre at a joint, by
-    Aronhold–Kennedy's lines, or at infinity."""
+    or, between two turning points, the nearer one (`centres._nearer`, which the centre's
+    own sentence says too); none for a centre at a joint, by Aronhold–Kennedy's lines, or at
+    infinity."""
     import sympy
 
     from .centres import _notes
@@ -61,17 +62,10 @@ def centre_from_point(ctx: Ctx, q) -> list:
     note = _notes(ctx)[0].get(key)
     if note is None or note.value.get("point") is None:
         return []
-    centre = note.value["point"]
     if note.how in ("field", "rate", "parallel") and note.witnesses and note.distance is not None:
         point, distance = note.witnesses[-1][0], note.distance
-    elif note.how == "proportional" and note.pivots:
-        named = [w[0] for w in note.witnesses if not str(w[0]).startswith("I:")]
-        if not named:
-            return []
-        far = {p: sympy.sqrt(sum((sympy.sympify(a) - sympy.sympify(b)) ** 2 for a, b in zip(ctx.pos(p), centre)))
-               for p in named}
-        point = min(named, key=lambda p: float(ctx.inst.num(far[p])))
-        distance = far[point]
+    elif note.how == "proportional" and note.near and note.distance is not None:    # centres._nearer
+        point, distance = note.near, note.distance
     else:
         return []
     return [(msg("ans.from", point=Name(point)), Value(ctx.clean(sympy.simplify(distance), "len"), "len"))]

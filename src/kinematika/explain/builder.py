@@ -16,7 +16,7 @@ from .answers import answers_section, curvature_section, relative_rates
 from .asked import worked
 from .checks import checks_section
 from .contacts import contact_section
-from .centres import centre_sites, centres_first, centres_section
+from .centres import centre_sites, centres_first, centres_in_steps, centres_section
 from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
 from .strands import strand_words
@@ -81,6 +81,9 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
         if checked is not None:
             doc.sections.append(checked)
         if first:
+            for sec, level in zip(levels, wanted):
+                if level == "v":
+                    centres_in_steps(ctx, sec)      # a centre from two parallel velocities, where they are known
             rest = centres_section(ctx, "rest")
             if rest is not None:
                 doc.sections.append(rest)

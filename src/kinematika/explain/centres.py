@@ -77,6 +77,29 @@ def _once(ctx: Ctx, note: CentreNote):
                value=Value(point, "len"), body=Name(body, "body"))
 
 
+def centres_in_steps(ctx: Ctx, velocities: Section) -> None:
+    """A centre found from two parallel velocities (`_parallel`) is said in the velocity step
+    that finds its body's ω, where both velocities are known, when a later step goes on from
+    that body: the notes' order (C5-1.5: "el CIR d'aquesta politja estarà en el punt mig
+    entre aquests dos punts. A partir d'aquí ... el bloc pujarà amb celeritat 6v"), the
+    third pulley's centre before the block's speed, never in a section after every step.
+    The closing section then refers to it (`_once`: "found above")."""
+    from .document import Derived
+
+    made, chosen, _ = _notes(ctx)
+    steps = [b for b in velocities.blocks if isinstance(b, Section)]
+    for key in chosen:
+        note = made[key]
+        a, b = note.pair
+        if _placed(ctx, note) or note.how != "parallel" or a != ctx.frame:
+            continue
+        found = next((i for i, sub in enumerate(steps) if any(
+            isinstance(x, Derived) and x.body == b and x.kind == "omega" for x in sub.blocks)), None)
+        if found is not None and found + 1 < len(steps):
+            steps[found].blocks.append(note)
+            ctx.worked.add(f"centre:{b}")
+
+
 def used_pairs(made: dict, chosen: list) -> list[tuple[str, str]]:
     """The pairs whose centres the text writes, which are all the centres' figure shows: a
     figure of every pair (C5-1.5's 36) hides the few the step needs, and a ring the text never
@@ -387,8 +410,26 @@ def _kennedy(ctx: Ctx, note: CentreNote, found: dict, before: list) -> None:
     if len(note.witnesses) == 2:
         u, w = (ctx.num(v) for _, _, v in note.witnesses)
         note.side = "between" if u[0] * w[0] + u[1] * w[1] < 0 else "outside"
+        _nearer(ctx, note)
     else:
         note.how = "velocities"
+
+
+def _nearer(ctx: Ctx, note: CentreNote) -> None:
+    """A centre between (or beyond) two points turning about known pivots is also placed as
+    its distance from the nearer named one, as the notes give it: C5-1.4's planet centre
+    "a (2/5)r del centre" A1, said where the centre is found and in the answers (the
+    eleventh round put it in the answers only: the sentence gave coordinates alone)."""
+    import sympy
+
+    centre = note.value.get("point")
+    named = [(p, at) for p, at, _ in note.witnesses if not str(p).startswith("I:")]
+    if not note.pivots or centre is None or not named:
+        return
+    far = {p: sympy.sqrt(sum((sympy.sympify(a) - sympy.sympify(b)) ** 2 for a, b in zip(at, centre)))
+           for p, at in named}
+    note.near = min(far, key=lambda p: float(ctx.inst.num(far[p])))
+    note.distance = ctx.clean(sympy.simplify(far[note.near]), "len")
 
 
 def _perpendicular(ctx: Ctx, found: dict, a: str, k: str, b: str) -> Optional[Msg]:

@@ -140,7 +140,8 @@ class Bar:
         start = point_term(ctx, level, self.c1, self.b1)
         if self.c2 is not None:
             if level == "v":
-                out.append(msg("geom.bar", geom=geometric_point(self.name), c1=Name(self.c1), c2=Name(self.c2),
+                told = f"neither:{self.j.id}" in ctx.worked    # the contact's intro said it belongs to neither body
+                out.append(msg("geom.bar_told" if told else "geom.bar", geom=geometric_point(self.name), c1=Name(self.c1), c2=Name(self.c2),
                                joint=joint_name(self.j.id), part=Name(str(segment(self.c1, self.name))),
                                whole=Name(str(segment(self.c1, self.c2))), ratio=Value(self.fraction())))
         if self.c2 is not None and with_bar:
@@ -226,6 +227,7 @@ def contact_section(ctx: Ctx, written: Optional[dict[tuple[str, str], int]] = No
         bar = Bar(ctx, j)
         sec.add(msg("contact.intro", joint=joint_name(j.id), point=Name(bar.name), a=Name(j.a, "body"),
                     b=Name(j.b, "body"), geom=geometric_point(bar.name)))
+        ctx.worked.add(f"neither:{j.id}")       # said once: the bar's sentence does not say it again
         for level in ("v", "a"):
             for body in (j.a, j.b):
                 step = (written or {}).get((level, ctx.point_label(bar.name, body)))

@@ -289,10 +289,11 @@ class CentreNote:
     same: Optional[dict] = None                    # weld: the centre of the body it is welded to
     rate: Any = None                               # field, check: ω of the pair
     arm: Optional[tuple] = None                    # field, check: QI = ω × v_Q / ω², v_Q turned 90° with ω
-    distance: Any = None                           # field, check: |QI| = |v_Q| / |ω|
+    distance: Any = None                           # field, check: |QI| = |v_Q| / |ω|; proportional: from `near`
     perps: list = field(default_factory=list)      # kennedy: each line as the notes draw it (Msg)
     pivots: list = field(default_factory=list)     # proportional: what each witness turns about
     step: Optional[int] = None                     # rate: the step that found ω (builder.refer_rates)
+    near: str = ""                                 # proportional with pivots: the witness `distance` is from
 
 
 @dataclass(frozen=True)

@@ -120,11 +120,17 @@ class PlanarSteps:
         return blocks + self.other(step) + self.carry(step)
 
     def drivers(self, step: Step) -> list:
-        """The drivers that act on the step's bodies, each stated once, at its first step."""
+        """The drivers that act on the step's bodies, each stated once, at its first step; a
+        held pin not at all (C5-2.1's steering, δ̇ = 0): a condition the Data say in words,
+        which the step's composition recalls by its symbol (ω_fork = ψ̇ + δ̇ = ψ̇ + 0) — the
+        sentence twice on one page was the fourteenth round's reader's edit."""
         out = []
         for d in self.ctx.model.drivers:
             if d.index not in self.stated and set(driven(self.ctx, d)) & set(step.bodies):
                 self.stated.add(d.index)
+                if d.kind == "joint" and d.joint is not None and turns(self.ctx.model.joint(d.joint)) \
+                        and held(self.ctx, d, self.level):
+                    continue            # a condition the Data said: the step's ω_b = ω_a + δ̇ recalls it
                 out.append(driver_msg(self.ctx, d, self.level))
                 if whole_along(self.ctx, d, self.level):      # stated whole: a written point to go from
                     self.done.add(self.ctx.point_label(d.driven_point().point, d.driven_point().body))

@@ -186,12 +186,33 @@ def _arrows_drawn(ctx: Ctx, options: dict) -> dict:
     drawn = [v for v in scene.vectors if v.kind == "velocity" and v.relative_to is None]
     moving = [v for v in drawn if v.magnitude > 1e-9 * max(ctx.inst.scale, 1e-12)]
     shown = moving or drawn
-    points = Names([_arrow_point(ctx, v.ref) for v in shown])
+    points: Any = Names([_arrow_point(ctx, v.ref) for v in shown])
     arrows = (min(len(moving), 2) if moving else 3) if drawn else 0
+    own = _own_drag(ctx, [v.ref for v in shown])
+    if arrows == 2 and own is not None:         # one point's velocity and its drag: the point said once
+        arrows, points = 4, msg("fig.own_drag", point=Name(own), sym=Sym("v", own, sub_key="sub.drag"))
     # a symbolic page's label too long to set names the vector alone (`draw.vectors`): the
     # caption then promises no magnitude
     moduli = int(all(not v.text.startswith("≈") for v in shown))
     return {"arrows": arrows, "points": points, "moduli": moduli}
+
+
+def _own_drag(ctx: Ctx, refs: list[str]) -> Optional[str]:
+    """The point when a figure's two arrows are one point's velocity and its drag velocity
+    (001's rolling pair: v_A and v_ar,A): the caption then names the point once, "the
+    velocity of A and its drag velocity (v_ar,A)", never "the velocities of A and A
+    (v_ar,A, drag velocity)" — a list that names one point twice. None otherwise."""
+    if len(refs) != 2:
+        return None
+    parts = [r.partition(":") for r in refs]
+    drags = [head for head, _, part in parts if part == "drag"]
+    plain = [head for head, _, part in parts if not part]
+    if len(drags) != 1 or len(plain) != 1:
+        return None
+    point = drags[0].partition("@")[0]
+    at, _, body = plain[0].partition("@")
+    label = ctx.point_label(at, body) if body else at        # as the arrow's own label says it
+    return point if label == point else None
 
 
 def _arrow_point(ctx: Ctx, ref: str) -> Any:

@@ -254,7 +254,11 @@ def _equiprojective(ctx: Ctx, b: str, wheels: list, speeds: dict, q: str) -> lis
             speeds[p] = ctx.vel(b, p)
             seg = Name(segment(q, p))
             unit, along, proj, cos = _projection(ctx, q, p, ctx.vel(b, q), ctx.vel(b, p))
-            return [msg("vehicle.equiprojective", q=Name(q), p=Name(p), body=Name(b, "body"), joint=Name(j.id, "joint"),
+            if ctx.num(cos) < 0:        # the segment the other way: every number positive, never (−a) / (−1)
+                seg = Name(segment(p, q))
+                unit, proj, cos = ctx.clean(tuple(-c for c in unit), ""), ctx.clean(-proj, "speed"), ctx.clean(-cos, "")
+            key = "vehicle.equiprojective_along" if ctx.is_zero(cos - 1, "") else "vehicle.equiprojective"
+            return [msg(key, q=Name(q), p=Name(p), body=Name(b, "body"), joint=Name(j.id, "joint"),
                         seg=seg, vp=Sym("v", p), vq=Sym("v", q), value=Value(v, "speed"),
                         speed=Value(_magnitude(ctx, v), "speed", True), unit=Value(unit), along=Value(along),
                         proj=Value(proj, "speed"), cos=Value(cos))]

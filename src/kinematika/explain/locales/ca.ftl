@@ -78,6 +78,10 @@ joint-weld = sòlids solidaris
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
 fig-drag = d’arrossegament de { $point } ({ $sym })
+fig-own_drag = la velocitat { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } i la seva velocitat d’arrossegament ({ $sym })
 fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
@@ -91,6 +95,13 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] {", amb el seu mòdul"}
         }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
+        [4] { $format ->
+            [md] les fletxes
+           *[other] les fletxes blaves
+        } són { $points }, a una mateixa escala{ $moduli ->
+            [0] {""}
+           *[other] {", amb els seus mòduls"}
+        }
        *[other] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
@@ -112,6 +123,13 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] {", amb el seu mòdul"}
         }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
+        [4] { $format ->
+            [md] les fletxes
+           *[other] les fletxes blaves
+        } són { $points }, a una mateixa escala{ $moduli ->
+            [0] {""}
+           *[other] {", amb els seus mòduls"}
+        }
        *[other] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
@@ -537,7 +555,11 @@ vehicle-equiprojective = Per la propietat d’equiprojectivitat ({ $q } i { $p }
         [vowel] d’{ $body }
        *[other] de { $body }
     }), les seves velocitats tenen la mateixa component segons { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, amb { $seg }/|{ $seg }| = { $unit }, de manera que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } és a l’eix de la roda { $joint }, de manera que { $vp } té la direcció del pla de la roda: { $vp } = |{ $vp }| e, amb e = { $along } i e · { $seg }/|{ $seg }| = { $cos }. Per tant, |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, i { $vp } = { $value }.
-vehicle-centre_on_axle = La perpendicular a { $sym } pel punt { $point } és el mateix eix de la roda { $joint } ({ $point } hi és i { $sym } té la direcció del pla de la roda), de manera que no dona una segona recta: la segona és la perpendicular a { $vo } pel punt { $other }.
+vehicle-equiprojective_along = Per la propietat d’equiprojectivitat ({ $q } i { $p } són punts { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }), les seves velocitats tenen la mateixa component segons { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, amb { $seg }/|{ $seg }| = { $unit }, de manera que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } és a l’eix de la roda { $joint }, de manera que { $vp } té la direcció del pla de la roda: { $vp } = |{ $vp }| e, amb e = { $along } i e · { $seg }/|{ $seg }| = { $cos }. Per tant, |{ $vp }| = { $speed }, i { $vp } = { $value }.
+vehicle-centre_on_axle = La perpendicular a { $sym } per { $point } és l’eix mateix de la roda { $joint }: la segona recta és la perpendicular a { $vo } per { $other }.
 vehicle-centre = El CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -702,7 +724,20 @@ centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
     }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    } són perpendiculars a la recta que passa per { $p } i { $q } (passa pels punts al voltant dels quals giren), de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
+    } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
+centre-carried-between_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
+        [vowel] d’{ $c1 }
+       *[other] de { $c1 }
+    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+        [vowel] d’{ $c2 }
+       *[other] de { $c2 }
+    }: totes dues velocitats respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $dist } { ELISION($near) ->
+        [vowel] d’{ $near }
+       *[other] de { $near }
+    }:
 centre-carried-outside = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
@@ -712,7 +747,20 @@ centre-carried-outside = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
     }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    } són perpendiculars a la recta que passa per { $p } i { $q } (passa pels punts al voltant dels quals giren), de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
+    } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
+centre-carried-outside_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
+        [vowel] d’{ $c1 }
+       *[other] de { $c1 }
+    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+        [vowel] d’{ $c2 }
+       *[other] de { $c2 }
+    }: totes dues velocitats respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $dist } { ELISION($near) ->
+        [vowel] d’{ $near }
+       *[other] de { $near }
+    }:
 centre-line-slot = la normal a la ranura per { $point } (respecte del sòlid ranurat, { $point } només es pot moure al llarg de la ranura)
 centre-line-slot_fixed = la normal a la recta { ELISION($a) ->
         [vowel] d’{ $a }
@@ -722,21 +770,21 @@ centre-line-wheel = l’eix de la roda { $joint }, la normal al seu pla a { $poi
 centre-field = és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
-    }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+    }, { $side }, de manera que el CIR és
 centre-rate = a partir de la velocitat angular trobada més amunt a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
     }: és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
-    }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+    }, { $side }, de manera que el CIR és
 centre-rate_step = a partir de la velocitat angular trobada al pas { $step } a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
     }: és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
-    }, del costat que dona el sentit de { $w }: { $side } (amb { $v } = { $vq } i { $w } = { $wv }), de manera que el CIR és
+    }, { $side }, de manera que el CIR és
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = per sobre { ELISION($q) ->
         [vowel] d’{ $q }
@@ -773,12 +821,12 @@ side-below_right = per sota i a la dreta { ELISION($q) ->
 centre-check = Comprovació amb les velocitats trobades: a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
-    }, del costat que dona el sentit de { $w }: { $side }, el mateix punt: { $centre } és { $where }
+    }, { $side }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa component de la velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
-how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda respecte del terra recte, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
+how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda del terra pla, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
 centres-found_above = { $centre } = { $value }: trobat més amunt, al pas de velocitats { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -793,6 +841,7 @@ centre-site_s = El CIR { $centre } de { $body } respecte de { $frame }, trobat m
 sec-contact = Punts de contacte
 geom-rule = La regla de tot contacte de rodolament: la condició de no lliscament es compleix a cada instant al punt geomètric de contacte (aquí { $geom }), que es mou; derivant-la al llarg d’aquest punt s’obté { $rule }: les components tangencials de les dues acceleracions són iguals i les normals difereixen en aquest terme, segons la normal comuna. Cal la velocitat del punt geomètric:
 geom-bar = { $geom }, el punt geomètric de contacte, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, amb { $part }/{ $whole } = { $ratio }, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:
+geom-bar_told = { $geom }, el punt geomètric de contacte, és sempre a la recta dels centres { $c1 } i { $c2 }, amb { $part }/{ $whole } = { $ratio }, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:
 geom-foot = { $geom }, el punt geomètric de contacte, és el peu de la perpendicular des del centre { $centre } a la recta { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }

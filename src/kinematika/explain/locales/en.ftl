@@ -66,6 +66,7 @@ joint-weld = rigid joint
 joint-spherical = spherical
 joint-cylindrical = cylindrical
 fig-drag = the drag velocity of { $point } ({ $sym })
+fig-own_drag = the velocity of { $point } and its drag velocity ({ $sym })
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
@@ -79,6 +80,13 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
            *[other] {", with its magnitude"}
         }
         [3] { $points } is at rest: its velocity is zero, written beside it
+        [4] { $format ->
+            [md] the arrows
+           *[other] the blue arrows
+        } are { $points }, to one scale{ $moduli ->
+            [0] {""}
+           *[other] {", with their magnitudes"}
+        }
        *[other] { $format ->
             [md] the arrows
            *[other] the blue arrows
@@ -100,6 +108,13 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
            *[other] {", with its magnitude"}
         }
         [3] { $points } is at rest: its velocity is zero, written beside it
+        [4] { $format ->
+            [md] the arrows
+           *[other] the blue arrows
+        } are { $points }, to one scale{ $moduli ->
+            [0] {""}
+           *[other] {", with their magnitudes"}
+        }
        *[other] { $format ->
             [md] the arrows
            *[other] the blue arrows
@@ -396,7 +411,8 @@ vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity 
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
 vehicle-line-velocity = the perpendicular to { $sym } at { $point }
 vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel's plane: { $vp } = |{ $vp }| e, with e = { $along } and e · { $seg }/|{ $seg }| = { $cos }. Hence |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, and { $vp } = { $value }.
-vehicle-centre_on_axle = The perpendicular to { $sym } through { $point } is the axle of wheel { $joint } itself ({ $point } lies on it and { $sym } is along the wheel's plane), so it gives no second line: the second one is the perpendicular to { $vo } through { $other }.
+vehicle-equiprojective_along = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel's plane: { $vp } = |{ $vp }| e, with e = { $along } and e · { $seg }/|{ $seg }| = { $cos }. Hence |{ $vp }| = { $speed }, and { $vp } = { $value }.
+vehicle-centre_on_axle = The perpendicular to { $sym } through { $point } is the axle of wheel { $joint } itself: the second line is the perpendicular to { $vo } through { $other }.
 vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel: { COUNT($body) ->
         [many] their centre is at infinity, they translate
@@ -534,14 +550,16 @@ centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { 
 centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
 centre-line-guide = the perpendicular to the guide through { $pivot } (at its foot { $pivot }′ on the guide, the velocity relative to { $body } is along the guide and the drag velocity is perpendicular to { $pivot }{ $pivot }′, that is, along the guide too: the velocity of the point of { $b } at { $pivot }′ follows the guide)
-centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
-centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q } (it passes through the points they turn about), so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
+centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
+centre-carried-between_from = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero, at { $dist } from { $near }:
+centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
+centre-carried-outside_from = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $near }:
 centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
-centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
-centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
-centre-rate_step = from the angular velocity found in Step { $step } through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side } (with { $v } = { $vq } and { $w } = { $wv }), so the centre is
+centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
+centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
+centre-rate_step = from the angular velocity found in Step { $step } through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = above { $q }
 side-below = below { $q }
@@ -551,12 +569,12 @@ side-above_left = above and to the left of { $q }
 side-above_right = above and to the right of { $q }
 side-below_left = below and to the left of { $q }
 side-below_right = below and to the right of { $q }
-centre-check = Check with the velocities found above: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, on the side the sense of { $w } gives: { $side }, the same point: { $centre } is { $where }
+centre-check = Check with the velocities found above: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity component across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
-how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the straight ground, so they move on parallel straight lines at every instant: the body translates without turning)
+how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the flat ground, so they move on parallel straight lines at every instant: the body translates without turning)
 centres-found_above = { $centre } = { $value }: placed above, in the velocity step of { $body }.
 centres-found_above_step = { $centre } = { $value }: placed in Step { $step }, with the velocities of { $body }.
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
@@ -568,6 +586,7 @@ centre-site_s = The instant centre { $centre } of { $body } relative to { $frame
 sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
 geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
+geom-bar_told = { $geom }, the geometric contact point, stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
 geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out above for the acceleration of the contact.

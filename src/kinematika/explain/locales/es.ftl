@@ -63,6 +63,7 @@ joint-weld = sólidos solidarios
 joint-spherical = par esférico
 joint-cylindrical = par cilíndrico
 fig-drag = de arrastre de { $point } ({ $sym })
+fig-own_drag = la velocidad de { $point } y su velocidad de arrastre ({ $sym })
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
@@ -76,6 +77,13 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
            *[other] {", con su módulo"}
         }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
+        [4] { $format ->
+            [md] las flechas
+           *[other] las flechas azules
+        } son { $points }, a una misma escala{ $moduli ->
+            [0] {""}
+           *[other] {", con sus módulos"}
+        }
        *[other] { $format ->
             [md] las flechas
            *[other] las flechas azules
@@ -97,6 +105,13 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
            *[other] {", con su módulo"}
         }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
+        [4] { $format ->
+            [md] las flechas
+           *[other] las flechas azules
+        } son { $points }, a una misma escala{ $moduli ->
+            [0] {""}
+           *[other] {", con sus módulos"}
+        }
        *[other] { $format ->
             [md] las flechas
            *[other] las flechas azules
@@ -345,7 +360,8 @@ vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad p
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)
 vehicle-line-velocity = la perpendicular a { $sym } por el punto { $point }
 vehicle-equiprojective = Por la propiedad de equiproyectividad ({ $q } y { $p } son puntos de { $body }), sus velocidades tienen la misma componente según { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, con { $seg }/|{ $seg }| = { $unit }, de modo que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } está en el eje de la rueda { $joint }, así que { $vp } tiene la dirección del plano de la rueda: { $vp } = |{ $vp }| e, con e = { $along } y e · { $seg }/|{ $seg }| = { $cos }. Por tanto, |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, y { $vp } = { $value }.
-vehicle-centre_on_axle = La perpendicular a { $sym } por { $point } es el propio eje de la rueda { $joint } ({ $point } está en él y { $sym } tiene la dirección del plano de la rueda), así que no da una segunda recta: la segunda es la perpendicular a { $vo } por { $other }.
+vehicle-equiprojective_along = Por la propiedad de equiproyectividad ({ $q } y { $p } son puntos de { $body }), sus velocidades tienen la misma componente según { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, con { $seg }/|{ $seg }| = { $unit }, de modo que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } está en el eje de la rueda { $joint }, así que { $vp } tiene la dirección del plano de la rueda: { $vp } = |{ $vp }| e, con e = { $along } y e · { $seg }/|{ $seg }| = { $cos }. Por tanto, |{ $vp }| = { $speed }, y { $vp } = { $value }.
+vehicle-centre_on_axle = La perpendicular a { $sym } por { $point } es el propio eje de la rueda { $joint }: la segunda recta es la perpendicular a { $vo } por { $other }.
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
 vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
 vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }: { $body } no gira (su CIR está en el infinito), se traslada y todos sus puntos se mueven como { $p }.
@@ -465,14 +481,16 @@ centre-line-moves_still = la perpendicular a { $v } por { $point } ({ $point } s
        *[one] traslada
     })
 centre-line-guide = la perpendicular a la guía por { $pivot } (en su pie { $pivot }′ sobre la guía, la velocidad relativa a { $body } es paralela a la guía y la de arrastre es perpendicular a { $pivot }{ $pivot }′, es decir, también paralela a la guía: la velocidad del punto de { $b } en { $pivot }′ sigue la guía)
-centre-carried-between = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q } (pasa por los puntos alrededor de los cuales giran), así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
-centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q } (pasa por los puntos alrededor de los cuales giran), así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
+centre-carried-between = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
+centre-carried-between_from = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $dist } de { $near }:
+centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
+centre-carried-outside_from = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $dist } de { $near }:
 centre-line-slot = la normal en { $point } a la ranura (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
 centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
-centre-field = está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), de modo que el CIR está
-centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
-centre-rate_step = a partir de la velocidad angular hallada en el paso { $step } a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side } (con { $v } = { $vq } y { $w } = { $wv }), así que el CIR está
+centre-field = está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, de modo que el CIR está
+centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, así que el CIR está
+centre-rate_step = a partir de la velocidad angular hallada en el paso { $step } a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, así que el CIR está
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = por encima de { $q }
 side-below = por debajo de { $q }
@@ -482,12 +500,12 @@ side-above_left = por encima y a la izquierda de { $q }
 side-above_right = por encima y a la derecha de { $q }
 side-below_left = por debajo y a la izquierda de { $q }
 side-below_right = por debajo y a la derecha de { $q }
-centre-check = Comprobación con las velocidades halladas: en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, del lado que da el sentido de { $w }: { $side }, el mismo punto: { $centre } está { $where }
+centre-check = Comprobación con las velocidades halladas: en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma componente de la velocidad perpendicular a él: sin movimiento pendular, se traslada)
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
-how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia del radio de su rueda respecto del suelo recto, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
+how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia del radio de su rueda del suelo plano, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
 centres-found_above = { $centre } = { $value }: hallado arriba, en el paso de velocidades de { $body }.
 centres-found_above_step = { $centre } = { $value }: hallado en el paso { $step }, con las velocidades de { $body }.
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
@@ -496,6 +514,7 @@ centre-site_s = El CIR { $centre } de { $body } respecto de { $frame }, hallado 
 sec-contact = Puntos de contacto
 geom-rule = La regla de todo contacto de rodadura: la condición de no deslizamiento se cumple en cada instante en el punto geométrico de contacto (aquí { $geom }), que se mueve; derivándola a lo largo de él se obtiene { $rule }: las componentes tangenciales de las dos aceleraciones son iguales y las normales difieren en este término, según la normal común. Hace falta la velocidad del punto geométrico:
 geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, con { $part }/{ $whole } = { $ratio }, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:
+geom-bar_told = { $geom }, el punto geométrico de contacto, está siempre en la recta de los centros { $c1 } y { $c2 }, con { $part }/{ $whole } = { $ratio }, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:
 geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.

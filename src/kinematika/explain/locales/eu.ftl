@@ -63,6 +63,7 @@ joint-weld = lotura zurruna
 joint-spherical = esferikoa
 joint-cylindrical = zilindrikoa
 fig-drag = { $point } ({ $sym }, arrastre-abiadura)
+fig-own_drag = { $point } puntuaren abiadura eta arrastre-abiadura ({ $sym })
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
@@ -76,6 +77,13 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] {", bere moduluarekin"}
         }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
+        [4] { $format ->
+            [md] geziak
+           *[other] gezi urdinak
+        } { $points } dira, eskala berean{ $moduli ->
+            [0] {""}
+           *[other] {", beren moduluekin"}
+        }
        *[other] { $format ->
             [md] geziak
            *[other] gezi urdinak
@@ -97,6 +105,13 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] {", bere moduluarekin"}
         }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
+        [4] { $format ->
+            [md] geziak
+           *[other] gezi urdinak
+        } { $points } dira, eskala berean{ $moduli ->
+            [0] {""}
+           *[other] {", beren moduluekin"}
+        }
        *[other] { $format ->
             [md] geziak
            *[other] gezi urdinak
@@ -303,7 +318,8 @@ vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du 
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
 vehicle-line-velocity = { $sym } abiadurarekiko perpendikularra { $point } puntuan
 vehicle-equiprojective = Ekiproiektibitatearen propietatearengatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, non { $seg }/|{ $seg }| = { $unit }; beraz, { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago: { $vp } = |{ $vp }| e, non e = { $along } eta e · { $seg }/|{ $seg }| = { $cos }. Ondorioz, |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, eta { $vp } = { $value }.
-vehicle-centre_on_axle = { $sym } abiadurarekiko perpendikularra { $point } puntuan { $joint } gurpilaren ardatza bera da ({ $point } puntua bertan dago eta { $sym } gurpilaren planoaren norabidean dago); beraz, ez du bigarren zuzenik ematen: bigarrena { $vo } abiadurarekiko perpendikularra da { $other } puntuan.
+vehicle-equiprojective_along = Ekiproiektibitatearen propietatearengatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, non { $seg }/|{ $seg }| = { $unit }; beraz, { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago: { $vp } = |{ $vp }| e, non e = { $along } eta e · { $seg }/|{ $seg }| = { $cos }. Ondorioz, |{ $vp }| = { $speed }, eta { $vp } = { $value }.
+vehicle-centre_on_axle = { $sym } abiadurarekiko perpendikularra { $point } puntuan { $joint } gurpilaren ardatza bera da: bigarren zuzena { $vo } abiadurarekiko perpendikularra da { $other } puntuan.
 vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
 vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }: { $body } solidoa ez da biratzen (zentroa infinituan dago), traslatzen da, eta puntu guztiak { $p } bezala mugitzen dira.
@@ -414,17 +430,19 @@ higher-intro = Goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten d
 higher-straight = Goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko ibilbide zuzen batean (arteka bat ukitzailearen norabidean).
 centre-weld = { $body } eta { $other } zurrunki lotuta daude: solido bakarra dira; beraz, zentroa { $other } solidoarena da, { $same },
 centre-line-kennedy = { $l } zentroetatik pasatzen den zuzena (Aronhold–Kennedy, { $k } hirugarren solidoa)
-centre-line-moves = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua { $body } solidoarekin mugitzen da, zeina { $pivot } puntuaren inguruan biratzen baita)
-centre-line-moves_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua { $body } solidoarekin mugitzen da, zeina traslatzen baita)
+centre-line-moves = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua { $pivot } puntuaren inguruan biratzen den { $body } solidoarekin mugitzen da)
+centre-line-moves_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua traslatzen den { $body } solidoarekin mugitzen da)
 centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra (perpendikularraren { $pivot }′ oinean, gidan, { $body } solidoarekiko abiadura erlatiboa gidarekiko paraleloa da, eta arrastrekoa { $pivot }{ $pivot }′ zuzenarekiko perpendikularra, hau da, hori ere gidarekiko paraleloa: { $b } solidoaren { $pivot }′ puntuko abiadura gidaren norabidean dago)
-centre-carried-between = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira (zuzen hori biratzen diren puntuetatik pasatzen da); beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
-centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira (zuzen hori biratzen diren puntuetatik pasatzen da); beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
+centre-carried-between = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
+centre-carried-between_from = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $near } puntutik { $dist } distantziara:
+centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
+centre-carried-outside_from = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $near } puntutik { $dist } distantziara:
 centre-line-slot = artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
-centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala, zeinean zehar irristatzen baita
+centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala ({ $point } puntua zuzen horretan zehar irristatzen da)
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
-centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
-centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
-centre-rate_step = { $step }. urratsean { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side } ({ $v } = { $vq } eta { $w } = { $wv } izanik); beraz, zentroa
+centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
+centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
+centre-rate_step = { $step }. urratsean { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = { $q } puntuaren gainean
 side-below = { $q } puntuaren azpian
@@ -434,12 +452,12 @@ side-above_left = { $q } puntuaren gainean eta ezkerrean
 side-above_right = { $q } puntuaren gainean eta eskuinean
 side-below_left = { $q } puntuaren azpian eta ezkerrean
 side-below_right = { $q } puntuaren azpian eta eskuinean
-centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $w } abiadura angeluarraren noranzkoak ematen duen aldean: { $side }, puntu bera: { $centre }, { $where }
+centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiaduraren osagai bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
-how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur zuzenetik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
+how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur lautik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 centres-found_above = { $centre } = { $value }: goian aurkitua, { $body } solidoaren abiadura-urratsean.
 centres-found_above_step = { $centre } = { $value }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
@@ -448,8 +466,9 @@ centre-site_s = { $body } solidoaren { $centre } biraketa-zentro instantaneoak {
 sec-contact = Kontaktu-puntuak
 geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
 geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
+geom-bar_told = { $geom }, kontaktu-puntu geometrikoa, beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
 geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
-contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez baita ez batena ez bestearena.
+contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez dena ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
 contact-written = { $sym } = { $value }, { $step }. urratsean aurkitua.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen{ FIXED($body) ->

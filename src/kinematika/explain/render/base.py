@@ -233,36 +233,50 @@ class Renderer(ABC):
 
     def declined(self, parts: list[str], rendered: list[str], values: list[Any]) -> dict[int, str]:
         """Basque: a body's name followed by the catalogue's "solido" and its case ending
-        (*1. polea* solidoaren) keeps the word the first time the page names that body, so
-        the reader knows it is a body; after that the ending goes on the name itself, as the
-        Basque notes decline their nouns (aspen, ardatzaren): *1. polearen*, *1. poleak*,
-        never "*1. polea* solidoa *1. kable-zatia* solidoaren gainean … *1. kable-zatia*
-        solidoa" on every line. A name that does not end in the article -a (a number, a
-        code) keeps the word: "3 solidoa"; so does a plural ("*N elementua* eta *P elementua*
-        solidoen", the ending is both names'). Returns the declined names by their place in
-        `parts`, and cuts the word from the text after them."""
-        seen = self.__dict__.setdefault("_introduced", set())
+        (*1. polea* solidoaren) takes the ending on the name itself wherever the name can
+        take it, as the Basque notes decline their nouns (aspen, ardatzaren): *1. polearen*,
+        *1. poleak*, never "*1. polea* solidoa *1. kable-zatia* solidoaren gainean". One rule
+        on the whole page: the Data's and the structure's tables already say each name is a
+        body (their column "solidoa"), so the first mention keeps no word the later ones drop
+        (the fourteenth round's reader: "*ezkerreko kable-zatiarekin*" beside "*eskuineko
+        kable-zatia* solidoarekin" in one sentence). The word stays where the name cannot
+        take the ending: a name that does not end in the article -a (a number, a code: "3
+        solidoa"), a list ("*N elementua* eta *P elementua* solidoen", a plural word the
+        pattern " solidoa…" does not match); a plural name (one
+        the Catalan or Spanish name gives an article les/las to: *gurpilak*) is put in the
+        genitive plural before the word, "*gurpilen* solidoaren", never "*gurpilak*
+        solidoarenak". Returns the declined names by their place in `parts`, and cuts the
+        word from the text after them."""
         own: dict[int, str] = {}
         for i in range(1, len(parts) - 1, 2):
             x = values[int(parts[i])]
             x = x.item if isinstance(x, Lead) else x
+            x = x.items[0] if isinstance(x, Names) and len(x) == 1 else x     # a list of one body: its name
             follow = SOLIDO_RE.match(parts[i + 1])
-            if not isinstance(x, Name) or x.kind != "body" or follow is None \
-                    or parts[i - 1].endswith(" eta "):   # "N eta P solidoak": both names' word
-                continue
-            if x.text not in seen:
-                seen.add(x.text)
-                continue
+            if not isinstance(x, Name) or x.kind != "body" or follow is None:
+                continue        # "N eta P solidoen": a list's word is both names' (no "solidoa" to match)
             word = self.called(x).split()[-1] if self.called(x).split() else ""
-            markup, at = rendered[int(parts[i])], -1
-            if re.fullmatch(r"[^\W\d_][\w-]*a", word):          # polea, kable-zatia, blokea
-                at = markup.rfind(self.esc(word))
+            markup = rendered[int(parts[i])]
+            at = markup.rfind(self.esc(word)) if word else -1
             if at < 0:
                 continue
             end = at + len(self.esc(word))
-            own[i] = markup[:end] + follow.group(1) + markup[end:]
-            parts[i + 1] = parts[i + 1][follow.end():]
+            if re.fullmatch(r"[^\W\d_][\w-]*ak", word) and self.plural_elsewhere(x):   # gurpilak -> gurpilen solidoa
+                own[i] = markup[:at] + self.esc(word[:-2] + "en") + markup[end:]
+            elif re.fullmatch(r"[^\W\d_][\w-]*a", word):          # polea, kable-zatia, blokea
+                own[i] = markup[:end] + follow.group(1) + markup[end:]
+                parts[i + 1] = parts[i + 1][follow.end():]
         return own
+
+    def plural_elsewhere(self, n: Name) -> bool:
+        """Whether the model's Catalan or Spanish name of body `n` is plural (les rodes, las
+        ruedas): the reading of a Basque name ending in -ak (gurpilak, the wheels) as plural,
+        which its spelling alone cannot tell from an ergative singular."""
+        for other in ("es", "ca"):
+            given = self.wording.bodies.get(other, {}).get(n.text)
+            if given and ARTICLES[other].match(given):
+                return bool(re.match(r"(?i)(els|les|los|las) ", given))
+        return False
 
     def worded(self, x: Any) -> bool:
         """Whether a body's name (or a list's first) begins with a word in lower case
@@ -925,8 +939,10 @@ class Renderer(ABC):
         args = {"l1": lines[0], "l2": lines[1], "frame": self.frame_name(a), "p": names[0], "q": names[1],
                 "vp": Value(vp, "speed"), "vq": Value(vq, "speed")}
         if c.pivots:        # the notes' words: each point turns with a body about its centre (C5-1.4)
-            return Msg(f"centre.carried.{c.side}", {**args, "k1": Name(c.via[0], "body"), "k2": Name(c.via[1], "body"),
-                                                     "c1": c.pivots[0], "c2": c.pivots[1]})
+            key = f"centre.carried.{c.side}" + ("_from" if c.near and c.distance is not None else "")
+            return Msg(key, {**args, "k1": Name(c.via[0], "body"), "k2": Name(c.via[1], "body"),
+                             "c1": c.pivots[0], "c2": c.pivots[1], "near": Name(c.near),
+                             "dist": Value(c.distance, "len")})
         return Msg(f"centre.proportional.{c.side}", args)
 
     def where(self, value: dict) -> Msg:
