@@ -104,7 +104,7 @@ def _mark(ctx: Context, group: list[MarkView]) -> None:
         ctx.add("dot", [p], size=2.5, colour=CENTRE, fill=CENTRE, width=1.0, zorder=12,
                 layer="centres", group=f"mark:{mark.key}")
     ctx.avoid(p, weight=3.0, radius=5.0)
-    if mark.kind == "contact" and labelled_at(ctx, p, contacts=True):
+    if mark.kind == "contact" and p is not None and labelled_at(ctx, p, contacts=True):
         return          # the point or the page's contact letter is there already: one place, one letter
     ctx.label(p, group_label(group), COLOURS[mark.kind], 2, _key(group), layer="centres",
               group=f"mark:{mark.key}", radius=5.5)
