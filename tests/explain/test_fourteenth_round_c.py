@@ -194,18 +194,8 @@ def test_the_centre_on_the_axle_is_one_short_sentence(lang):
 
 # ---- 6. the model's words --------------------------------------------------------------------
 
-@pytest.mark.parametrize("name,lang,said,unsaid", [
-    ("seed_c5_e1_cavity", "ca", "*braç OC*", "recta OC"),
-    ("seed_c5_e1_cavity", "eu", "*OC besoa*", "OC zuzena"),
-    ("seed_c5_e5_unequal_wheels", "ca", "del terra pla", "terra recte"),
-    ("seed_c5_e6_bicycle", "eu", "*plater pedaldunaren*", "pedalekin"),
-    ("seed_c5_e6_bicycle", "ca", "| *e* | batalla |", "c′"),
-])
-def test_the_models_words(name, lang, said, unsaid):
-    """E.1's OC is a body, the notes' arm; E.5 the notes' "terra pla"; E.6's wheelbase is e,
-    so the crank axle C's image is plain c with no note; Basque "plater pedalduna" declines."""
-    text = rendered(name, lang, "md", drawings=False)
-    assert said in text and unsaid not in text
+# E.1's arm, E.5's flat ground, E.6's wheelbase e and Basque plater: tests/explain/test_teacher.py's
+# test_the_notes_grammar (one table of wrong and right words).
 
 
 # ---- 7. a caption names one point once --------------------------------------------------------
