@@ -148,8 +148,9 @@ def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
     options.setdefault("width", PRINT_WIDTH)
     args: dict = {"dim": ctx.space.dim}
     if caption == "fig.centres":
-        kennedy, joints = _lines_drawn(ctx, options)
-        args["normals"] = Names([msg(f"fig.normal.{k}") for k in _normal_lines(ctx, joints)])
+        kennedy, joints, radii = _lines_drawn(ctx, options)
+        kinds = _normal_lines(ctx, joints) + (["radius"] if radii else [])
+        args["normals"] = Names([msg(f"fig.normal.{k}") for k in kinds])
         args["kennedy"] = int(kennedy)
     if caption == "fig.mechanism":
         args.update(_arrows_drawn(ctx, options))
@@ -207,18 +208,19 @@ def _arrow_point(ctx: Ctx, ref: str) -> Any:
     return Name(ctx.point_label(point, body) if body else point)
 
 
-def _lines_drawn(ctx: Ctx, options: dict) -> tuple[bool, Optional[set]]:
-    """Whether the centres' figure draws Aronhold–Kennedy lines, and the joints whose normals
-    it draws (None: every joint's), read off the figure itself when it shows only some
-    centres (`centre_pairs`): its caption names only the lines it has (C5-1.5's two centres
-    stand on none)."""
-    if options.get("centre_pairs") is None:
-        return True, None
+def _lines_drawn(ctx: Ctx, options: dict) -> tuple[bool, set, bool]:
+    """What lines the centres' figure draws, read off the figure itself, for its caption to
+    name only those (issue 30, fourteenth round (d): C5-2.1's and C5-2.2's captions promised
+    "lines through two centres" where none is drawn): whether it draws an Aronhold–Kennedy
+    line (through two centres), the joints whose normals it draws, and whether it draws a
+    centre's line to a pin, perpendicular to the pin's velocity (`draw.results._radii`)."""
     from ..draw.build import build_scene
     from ..draw.options import DrawOptions
 
     scene = build_scene(ctx.inst, ctx.sol, DrawOptions(**options))
-    return bool(scene.kennedy), {k.key.split(":", 1)[1] for k in scene.normals}
+    kennedy = any(k.key.startswith("kennedy:") for k in scene.kennedy)
+    radii = any(k.key.startswith("radius:") for k in scene.kennedy)
+    return kennedy, {k.key.split(":", 1)[1] for k in scene.normals}, radii
 
 
 def _normal_lines(ctx: Ctx, joints: Optional[set] = None) -> list[str]:
