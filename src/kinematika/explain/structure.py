@@ -157,6 +157,20 @@ def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
     return Drawing(msg(caption, **args), ctx.sol, options, fallback, values)
 
 
+def moduli_units(ctx: Ctx, doc: Any, length_unit: str) -> None:
+    """The unit of the magnitudes a numeric page's mechanism figure writes beside its arrows
+    (v_B = 11), said once in its caption — "with its magnitude, in m/s" — as the text gives
+    every value with its unit (issue 30, fourteenth round (d)). Once in the caption, not in
+    each label: C5-1.3's figure sets v_ar,E = 0,287 beside v_E = 4,43, and " m/s" after each
+    would crowd them (docs/explain.md, "Fourteenth round (d)"). A symbolic page's labels are
+    formulas of the symbols, and their unit is the symbols'."""
+    if ctx.symbolic:
+        return
+    for b in doc.blocks():
+        if isinstance(b, Drawing) and b.caption.key == "fig.mechanism" and b.caption.args.get("moduli") == 1:
+            b.caption.args.update(moduli=2, unit=length_unit)
+
+
 def name_contacts(ctx: Ctx, doc: Any, named: dict[str, str]) -> None:
     """Every figure of the mechanism labels the contact points the page names (joint id ->
     J, K, T2 …: `data.contact_rows`) with the page's letter, and no other: a reader told

@@ -88,6 +88,7 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] la fletxa blava
         } és la velocitat de { $points }{ $moduli ->
             [0] {""}
+            [2] {", amb el seu mòdul, en "}{ $unit }/s
            *[other] {", amb el seu mòdul"}
         }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
@@ -96,6 +97,7 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] les fletxes blaves
         } són les velocitats de { $points }, a una mateixa escala{ $moduli ->
             [0] {""}
+            [2] {", amb els seus mòduls, en "}{ $unit }/s
            *[other] {", amb els seus mòduls"}
         }
     }; els sòlids estan numerats.
@@ -109,6 +111,7 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] la fletxa blava
         } és la velocitat de { $points }{ $moduli ->
             [0] {""}
+            [2] {", amb el seu mòdul, en "}{ $unit }/s
            *[other] {", amb el seu mòdul"}
         }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
@@ -117,6 +120,7 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] les fletxes blaves
         } són les velocitats de { $points }, a una mateixa escala{ $moduli ->
             [0] {""}
+            [2] {", amb els seus mòduls, en "}{ $unit }/s
            *[other] {", amb els seus mòduls"}
         }
     }.

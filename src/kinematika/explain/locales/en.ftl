@@ -76,6 +76,7 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
            *[other] the blue arrow
         } is the velocity of { $points }{ $moduli ->
             [0] {""}
+            [2] {", with its magnitude, in "}{ $unit }/s
            *[other] {", with its magnitude"}
         }
         [3] { $points } is at rest: its velocity is zero, written beside it
@@ -84,6 +85,7 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
            *[other] the blue arrows
         } are the velocities of { $points }, to one scale{ $moduli ->
             [0] {""}
+            [2] {", with their magnitudes, in "}{ $unit }/s
            *[other] {", with their magnitudes"}
         }
     }; the bodies are numbered.
@@ -97,6 +99,7 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
            *[other] the blue arrow
         } is the velocity of { $points }{ $moduli ->
             [0] {""}
+            [2] {", with its magnitude, in "}{ $unit }/s
            *[other] {", with its magnitude"}
         }
         [3] { $points } is at rest: its velocity is zero, written beside it
@@ -105,6 +108,7 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
            *[other] the blue arrows
         } are the velocities of { $points }, to one scale{ $moduli ->
             [0] {""}
+            [2] {", with their magnitudes, in "}{ $unit }/s
            *[other] {", with their magnitudes"}
         }
     }.

@@ -73,6 +73,7 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
            *[other] la flecha azul
         } es la velocidad de { $points }{ $moduli ->
             [0] {""}
+            [2] {", con su módulo, en "}{ $unit }/s
            *[other] {", con su módulo"}
         }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
@@ -81,6 +82,7 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
            *[other] las flechas azules
         } son las velocidades de { $points }, a una misma escala{ $moduli ->
             [0] {""}
+            [2] {", con sus módulos, en "}{ $unit }/s
            *[other] {", con sus módulos"}
         }
     }; los sólidos están numerados.
@@ -94,6 +96,7 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
            *[other] la flecha azul
         } es la velocidad de { $points }{ $moduli ->
             [0] {""}
+            [2] {", con su módulo, en "}{ $unit }/s
            *[other] {", con su módulo"}
         }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
@@ -102,6 +105,7 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
            *[other] las flechas azules
         } son las velocidades de { $points }, a una misma escala{ $moduli ->
             [0] {""}
+            [2] {", con sus módulos, en "}{ $unit }/s
            *[other] {", con sus módulos"}
         }
     }.

@@ -73,6 +73,7 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] gezi urdina
         } { $points } puntuaren abiadura da{ $moduli ->
             [0] {""}
+            [2] {", bere moduluarekin ("}{ $unit }/s-tan)
            *[other] {", bere moduluarekin"}
         }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
@@ -81,6 +82,7 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] gezi urdinak
         } { $points } puntuen abiadurak dira, eskala berean{ $moduli ->
             [0] {""}
+            [2] {", beren moduluekin ("}{ $unit }/s-tan)
            *[other] {", beren moduluekin"}
         }
     }; solidoak zenbakituta daude.
@@ -94,6 +96,7 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] gezi urdina
         } { $points } puntuaren abiadura da{ $moduli ->
             [0] {""}
+            [2] {", bere moduluarekin ("}{ $unit }/s-tan)
            *[other] {", bere moduluarekin"}
         }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
@@ -102,6 +105,7 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] gezi urdinak
         } { $points } puntuen abiadurak dira, eskala berean{ $moduli ->
             [0] {""}
+            [2] {", beren moduluekin ("}{ $unit }/s-tan)
            *[other] {", beren moduluekin"}
         }
     }.
