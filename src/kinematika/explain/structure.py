@@ -149,8 +149,8 @@ def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
     args: dict = {"dim": ctx.space.dim}
     if caption == "fig.centres":
         kennedy, joints, radii = _lines_drawn(ctx, options)
-        kinds = _normal_lines(ctx, joints) + (["radius"] if radii else [])
-        args["normals"] = Names([msg(f"fig.normal.{k}") for k in kinds])
+        args["normals"] = Names([msg(f"fig.normal.{k}") for k in _normal_lines(ctx, joints)]
+                                + ([msg("fig.normal.radius")] if radii else []))
         args["kennedy"] = int(kennedy)
     if caption == "fig.mechanism":
         args.update(_arrows_drawn(ctx, options))
