@@ -250,7 +250,9 @@ def _walk(section):
 
 @pytest.mark.parametrize("name,lines", [
     ("seed_c5_1_2_bar_on_inclined_wheels", ["fig.normal.slot_fixed"]),   # J slides on the floor: no slot
-    ("seed_c5_2_2_articulated", ["fig.normal.wheel"]),                   # knife-edge wheels: their axles
+    # knife-edge wheels: their axles; and the line from I_chassis to the pin F, perpendicular
+    # to F's velocity (fourteenth round (d): drawn, so named)
+    ("seed_c5_2_2_articulated", ["fig.normal.wheel", "fig.normal.radius"]),
     ("four_bar", []),                                                    # pins only: Aronhold–Kennedy alone
 ])
 def test_the_centres_caption_names_the_contacts_the_mechanism_has(name, lines):

@@ -55,7 +55,10 @@ def draw_marks(ctx: Context) -> None:
         else:
             _far_mark(ctx, group, mark.point)
     for line in ctx.scene.kennedy:
-        _kennedy(ctx, line)
+        # a centre's line to a pin, perpendicular to its velocity, is drawn as the normals
+        # are (dash-dot), the line of one velocity's perpendicular; a line through two
+        # centres (Aronhold–Kennedy) dashed — the centres' caption names them so
+        _kennedy(ctx, line, NORMAL if line.key.startswith("radius:") else None)
     for line in ctx.scene.normals:
         _kennedy(ctx, line, NORMAL)
 

@@ -238,14 +238,14 @@ def formula(expr: Any, value: float, lang: Optional[str] = None, spelt: Optional
     writes it, `w0` -> `omega_0`) written that way (ω₀)."""
     from sympy import Symbol, latex
 
-    from ..report.values import tidy
+    from ..report.values import written_form, written_latex
 
-    tidied = tidy(expr)
+    tidied = written_form(expr)          # the form the text writes (`written_form`)
     if len(str(tidied).replace("Abs", "")) > FORMULA_CHARS:       # |x| is as short as (x)
         return f"≈ {value_text(value, lang)}"
     known = spelt or {}
     names = {s: latex(Symbol(known[s.name])) for s in getattr(tidied, "free_symbols", ()) if s.name in known}
-    body = latex(tidied, symbol_names=names) if names else latex(tidied)
+    body = written_latex(tidied, names)
     body = body.replace(r"\left|", "|").replace(r"\right|", "|")   # mathtext: plain bars
     text = "$" + body.replace(r"\frac", r"\dfrac") + "$"    # full-size fractions
     if not settable(text):

@@ -29,7 +29,7 @@ from .polygon import degenerate, level_polygon, polygon
 from .terms import acceleration_terms
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
-from .structure import ground_part, structure_section, values_table, name_contacts
+from .structure import ground_part, moduli_units, structure_section, values_table, name_contacts
 from .translating import translations
 
 
@@ -115,6 +115,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     refer_rates(ctx, doc, levels)
     translations(ctx, doc)
     name_contacts(ctx, doc, contact_rows(ctx, doc))
+    moduli_units(ctx, doc, length_unit)
     strand_words(ctx, doc.sections)
     said = relative_convention(doc)
     if said is not None:

@@ -42,7 +42,10 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
         key = {"coriolis": "fig.level_a", "relative": "fig.level_a_relative",
                "normal": "fig.level_a_normal"}[acceleration_terms(eqs)]
     images = poly.image_points()
-    fig = Figure(msg(key, **({} if step else lettering(ctx, [label for label, _, _ in images]))),
+    # the caption's "between the images, the terms (black)" only when a term is drawn there:
+    # a polygon of absolute velocities alone (C5-2.1's rolling wheels) has none (issue 30)
+    between = int(any(a.style != "result" for a in poly.arrows))
+    fig = Figure(msg(key, between=between, **({} if step else lettering(ctx, [label for label, _, _ in images]))),
                  unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images

@@ -148,12 +148,27 @@ def drawing(ctx: Ctx, caption: str, **options) -> Drawing:
     options.setdefault("width", PRINT_WIDTH)
     args: dict = {"dim": ctx.space.dim}
     if caption == "fig.centres":
-        kennedy, joints = _lines_drawn(ctx, options)
-        args["normals"] = Names([msg(f"fig.normal.{k}") for k in _normal_lines(ctx, joints)])
+        kennedy, joints, radii = _lines_drawn(ctx, options)
+        args["normals"] = Names([msg(f"fig.normal.{k}") for k in _normal_lines(ctx, joints)]
+                                + ([msg("fig.normal.radius")] if radii else []))
         args["kennedy"] = int(kennedy)
     if caption == "fig.mechanism":
         args.update(_arrows_drawn(ctx, options))
     return Drawing(msg(caption, **args), ctx.sol, options, fallback, values)
+
+
+def moduli_units(ctx: Ctx, doc: Any, length_unit: str) -> None:
+    """The unit of the magnitudes a numeric page's mechanism figure writes beside its arrows
+    (v_B = 11), said once in its caption — "with its magnitude, in m/s" — as the text gives
+    every value with its unit (issue 30, fourteenth round (d)). Once in the caption, not in
+    each label: C5-1.3's figure sets v_ar,E = 0,287 beside v_E = 4,43, and " m/s" after each
+    would crowd them (docs/explain.md, "Fourteenth round (d)"). A symbolic page's labels are
+    formulas of the symbols, and their unit is the symbols'."""
+    if ctx.symbolic:
+        return
+    for b in doc.blocks():
+        if isinstance(b, Drawing) and b.caption.key == "fig.mechanism" and b.caption.args.get("moduli") == 1:
+            b.caption.args.update(moduli=2, unit=length_unit)
 
 
 def name_contacts(ctx: Ctx, doc: Any, named: dict[str, str]) -> None:
@@ -228,18 +243,19 @@ def _arrow_point(ctx: Ctx, ref: str) -> Any:
     return Name(ctx.point_label(point, body) if body else point)
 
 
-def _lines_drawn(ctx: Ctx, options: dict) -> tuple[bool, Optional[set]]:
-    """Whether the centres' figure draws Aronhold–Kennedy lines, and the joints whose normals
-    it draws (None: every joint's), read off the figure itself when it shows only some
-    centres (`centre_pairs`): its caption names only the lines it has (C5-1.5's two centres
-    stand on none)."""
-    if options.get("centre_pairs") is None:
-        return True, None
+def _lines_drawn(ctx: Ctx, options: dict) -> tuple[bool, set, bool]:
+    """What lines the centres' figure draws, read off the figure itself, for its caption to
+    name only those (issue 30, fourteenth round (d): C5-2.1's and C5-2.2's captions promised
+    "lines through two centres" where none is drawn): whether it draws an Aronhold–Kennedy
+    line (through two centres), the joints whose normals it draws, and whether it draws a
+    centre's line to a pin, perpendicular to the pin's velocity (`draw.results._radii`)."""
     from ..draw.build import build_scene
     from ..draw.options import DrawOptions
 
     scene = build_scene(ctx.inst, ctx.sol, DrawOptions(**options))
-    return bool(scene.kennedy), {k.key.split(":", 1)[1] for k in scene.normals}
+    kennedy = any(k.key.startswith("kennedy:") for k in scene.kennedy)
+    radii = any(k.key.startswith("radius:") for k in scene.kennedy)
+    return kennedy, {k.key.split(":", 1)[1] for k in scene.normals}, radii
 
 
 def _normal_lines(ctx: Ctx, joints: Optional[set] = None) -> list[str]:

@@ -120,6 +120,33 @@ _TIDY = Memo(4096)  # a point's velocity is asked of every body that carries it,
                     # answers repeat the tables' entries
 
 
+def turned(x: Any) -> Any:
+    """A product's minus taken into a difference of two terms, as the notes write their
+    results: −v(r₁ − r₂)/r₂ is v(r₂ − r₁)/r₂ (one sign fewer to read)."""
+    import sympy
+
+    factors = list(sympy.Mul.make_args(x))
+    if not x.is_Mul or sympy.S.NegativeOne not in factors:
+        return x
+    for f in factors:
+        base, power = f.as_base_exp()
+        if base.is_Add and len(base.args) == 2 and power in (1, -1) \
+                and sum(t.could_extract_minus_sign() for t in base.args) == 1:
+            rest = [g for g in factors if g is not f and g is not sympy.S.NegativeOne]
+            flipped = sympy.Add(*[-t for t in base.args], evaluate=False)
+            return sympy.Mul(*rest, flipped if power == 1 else sympy.Pow(flipped, power, evaluate=False),
+                             evaluate=False)
+    return x
+
+
+def written_form(x: Any) -> Any:
+    """The form every view writes a formula in — the text (Unicode, LaTeX) and the figures'
+    labels (`draw.names.formula`): `tidy`, then a product's minus taken into a difference
+    (`turned`), so a figure never labels −v(r₁ − r₂)/r₂ what its text writes v(r₂ − r₁)/r₂
+    (issue 30, fourteenth round (d): C5-E.5)."""
+    return turned(tidy(x))
+
+
 def _tidy(x: Any) -> Any:
     """`tidy` of a canonical form."""
     import sympy
@@ -239,3 +266,22 @@ def _absorb_sign(x: Any) -> Any:
             spread = len(flipped) == 2 and power == 1
             return sympy.Mul(*flipped, evaluate=not spread)
     return x
+
+
+def written_latex(x: Any, symbol_names: dict | None = None) -> str:
+    """`x` (in its `written_form`) as LaTeX, a difference of two terms with its positive term
+    first, r_2 − r_1 and never −r_1 + r_2, as the Unicode text writes it: the LaTeX page and
+    the figures' labels (mathtext) say what the text says."""
+    from sympy.printing.latex import LatexPrinter
+    from sympy.printing.precedence import PRECEDENCE
+
+    class _Written(LatexPrinter):
+        def _print_Add(self, expr: Any, order: Any = None) -> str:
+            terms = self._as_ordered_terms(expr, order=order)
+            if len(terms) == 2 and terms[0].could_extract_minus_sign() \
+                    and not terms[1].could_extract_minus_sign():
+                return f"{self._print(terms[1])} - {self.parenthesize(-terms[0], PRECEDENCE['Add'] + 1)}"
+            return super()._print_Add(expr, order=order)
+
+    settings = {"symbol_names": symbol_names} if symbol_names else {}
+    return _Written(settings).doprint(written_form(x))

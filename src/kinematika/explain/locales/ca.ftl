@@ -92,6 +92,7 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] la fletxa blava
         } és la velocitat de { $points }{ $moduli ->
             [0] {""}
+            [2] {", amb el seu mòdul, en "}{ $unit }/s
            *[other] {", amb el seu mòdul"}
         }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
@@ -107,6 +108,7 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] les fletxes blaves
         } són les velocitats de { $points }, a una mateixa escala{ $moduli ->
             [0] {""}
+            [2] {", amb els seus mòduls, en "}{ $unit }/s
            *[other] {", amb els seus mòduls"}
         }
     }; els sòlids estan numerats.
@@ -120,6 +122,7 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] la fletxa blava
         } és la velocitat de { $points }{ $moduli ->
             [0] {""}
+            [2] {", amb el seu mòdul, en "}{ $unit }/s
            *[other] {", amb el seu mòdul"}
         }
         [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
@@ -135,6 +138,7 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] les fletxes blaves
         } són les velocitats de { $points }, a una mateixa escala{ $moduli ->
             [0] {""}
+            [2] {", amb els seus mòduls, en "}{ $unit }/s
            *[other] {", amb els seus mòduls"}
         }
     }.
@@ -635,6 +639,7 @@ fig-normal-wheel = les perpendiculars a les rodes
 fig-normal-slot = les normals a les ranures
 fig-normal-slot_fixed = les normals a les rectes per on llisquen els punts
 fig-normal-normal = les normals comunes als contactes
+fig-normal-radius = les perpendiculars a les velocitats dels punts
 fig-assur = El punt d’Assur { $point }: les rectes { $l1 } i { $l3 } (a traços) perllongades fins que es tallen; { $point } es pren com a punt de la barra ternària.
 fig-drawn_at = Dibuixat amb { $values }.
 fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de cada punt{ $format ->
@@ -643,40 +648,52 @@ fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de c
     } acaba a la seva imatge, amb la lletra del punt{ $image ->
         [0] {""}
        *[other] {" "}({ $image } per a { $point })
-    }; entre les imatges, les velocitats relatives de les equacions anteriors{ $format ->
-        [md] {""}
-       *[other] {" "}(negre)
-    }, l’una darrere l’altra.
+    }{ $between ->
+        [0] .
+       *[other] ; entre les imatges, les velocitats relatives de les equacions anteriors{ $format ->
+            [md] {""}
+           *[other] {" "}(negre)
+        }, l’una darrere l’altra.
+    }
 fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
     } acaba a la seva imatge, amb la lletra del punt{ $image ->
         [0] {""}
        *[other] {" "}({ $image } per a { $point })
-    }; entre les imatges, els termes de les equacions anteriors ({ $format ->
-        [md] {""}
-       *[other] negre:{" "}
-    }normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
+    }{ $between ->
+        [0] .
+       *[other] ; entre les imatges, els termes de les equacions anteriors ({ $format ->
+            [md] {""}
+           *[other] negre:{" "}
+        }normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
+    }
 fig-level_a_relative = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
     } acaba a la seva imatge, amb la lletra del punt{ $image ->
         [0] {""}
        *[other] {" "}({ $image } per a { $point })
-    }; entre les imatges, els termes de les equacions anteriors ({ $format ->
-        [md] {""}
-       *[other] negre:{" "}
-    }normals i tangencials, i relatius), l’un darrere l’altre.
+    }{ $between ->
+        [0] .
+       *[other] ; entre les imatges, els termes de les equacions anteriors ({ $format ->
+            [md] {""}
+           *[other] negre:{" "}
+        }normals i tangencials, i relatius), l’un darrere l’altre.
+    }
 fig-level_a_normal = Polígon d’acceleracions, a escala: des del pol o, l’acceleració de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
     } acaba a la seva imatge, amb la lletra del punt{ $image ->
         [0] {""}
        *[other] {" "}({ $image } per a { $point })
-    }; entre les imatges, els termes de les equacions anteriors ({ $format ->
-        [md] {""}
-       *[other] negre:{" "}
-    }normals i tangencials), l’un darrere l’altre.
+    }{ $between ->
+        [0] .
+       *[other] ; entre les imatges, els termes de les equacions anteriors ({ $format ->
+            [md] {""}
+           *[other] negre:{" "}
+        }normals i tangencials), l’un darrere l’altre.
+    }
 col-number = núm.
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -865,17 +882,23 @@ contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
 fig-step_v = Polígon de velocitats d’aquest pas, a escala: des del pol o, la velocitat de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
-    } acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas{ $format ->
-        [md] {""}
-       *[other] {" "}(negre)
-    }, l’un darrere l’altre.
+    } acaba a la seva imatge, amb la lletra del punt{ $between ->
+        [0] .
+       *[other] ; entre les imatges, els termes de les equacions d’aquest pas{ $format ->
+            [md] {""}
+           *[other] {" "}(negre)
+        }, l’un darrere l’altre.
+    }
 fig-step_a = Polígon d’acceleracions d’aquest pas, a escala: des del pol o, l’acceleració de cada punt{ $format ->
         [md] {""}
        *[other] {" "}(blau)
-    } acaba a la seva imatge, amb la lletra del punt; entre les imatges, els termes de les equacions d’aquest pas{ $format ->
-        [md] {""}
-       *[other] {" "}(negre)
-    }, l’un darrere l’altre.
+    } acaba a la seva imatge, amb la lletra del punt{ $between ->
+        [0] .
+       *[other] ; entre les imatges, els termes de les equacions d’aquest pas{ $format ->
+            [md] {""}
+           *[other] {" "}(negre)
+        }, l’un darrere l’altre.
+    }
 col-point = punt
 col-what = què és
 what-centre = centre { ELISION($body) ->

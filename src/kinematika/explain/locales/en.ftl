@@ -77,6 +77,7 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
            *[other] the blue arrow
         } is the velocity of { $points }{ $moduli ->
             [0] {""}
+            [2] {", with its magnitude, in "}{ $unit }/s
            *[other] {", with its magnitude"}
         }
         [3] { $points } is at rest: its velocity is zero, written beside it
@@ -92,6 +93,7 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
            *[other] the blue arrows
         } are the velocities of { $points }, to one scale{ $moduli ->
             [0] {""}
+            [2] {", with their magnitudes, in "}{ $unit }/s
            *[other] {", with their magnitudes"}
         }
     }; the bodies are numbered.
@@ -105,6 +107,7 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
            *[other] the blue arrow
         } is the velocity of { $points }{ $moduli ->
             [0] {""}
+            [2] {", with its magnitude, in "}{ $unit }/s
            *[other] {", with its magnitude"}
         }
         [3] { $points } is at rest: its velocity is zero, written beside it
@@ -120,6 +123,7 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
            *[other] the blue arrows
         } are the velocities of { $points }, to one scale{ $moduli ->
             [0] {""}
+            [2] {", with their magnitudes, in "}{ $unit }/s
            *[other] {", with their magnitudes"}
         }
     }.
@@ -482,6 +486,7 @@ fig-normal-wheel = the perpendiculars to the wheels
 fig-normal-slot = the normals to the slots
 fig-normal-slot_fixed = the normals to the lines the points slide on
 fig-normal-normal = the common normals at the contacts
+fig-normal-radius = the perpendiculars to the points' velocities
 fig-assur = The Assur point { $point }: the lines { $l1 } and { $l3 } (dashed) drawn on until they meet; { $point } is taken as a point of the ternary link.
 fig-drawn_at = Drawn at { $values }.
 fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each point{ $format ->
@@ -490,40 +495,52 @@ fig-level_v = Velocity polygon, to scale: from the pole o, the velocity of each 
     } ends at its image, lettered as the point{ $image ->
         [0] {""}
        *[other] {" "}({ $image } for { $point })
-    }; between the images, the relative velocities of the equations above{ $format ->
-        [md] {""}
-       *[other] {" "}(black)
-    }, head to tail.
+    }{ $between ->
+        [0] .
+       *[other] ; between the images, the relative velocities of the equations above{ $format ->
+            [md] {""}
+           *[other] {" "}(black)
+        }, head to tail.
+    }
 fig-level_a = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
     } ends at its image, lettered as the point{ $image ->
         [0] {""}
        *[other] {" "}({ $image } for { $point })
-    }; between the images, the terms of the equations above ({ $format ->
-        [md] {""}
-       *[other] black:{" "}
-    }normal and tangential, relative and Coriolis), head to tail.
+    }{ $between ->
+        [0] .
+       *[other] ; between the images, the terms of the equations above ({ $format ->
+            [md] {""}
+           *[other] black:{" "}
+        }normal and tangential, relative and Coriolis), head to tail.
+    }
 fig-level_a_relative = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
     } ends at its image, lettered as the point{ $image ->
         [0] {""}
        *[other] {" "}({ $image } for { $point })
-    }; between the images, the terms of the equations above ({ $format ->
-        [md] {""}
-       *[other] black:{" "}
-    }normal and tangential, and relative), head to tail.
+    }{ $between ->
+        [0] .
+       *[other] ; between the images, the terms of the equations above ({ $format ->
+            [md] {""}
+           *[other] black:{" "}
+        }normal and tangential, and relative), head to tail.
+    }
 fig-level_a_normal = Acceleration polygon, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
     } ends at its image, lettered as the point{ $image ->
         [0] {""}
        *[other] {" "}({ $image } for { $point })
-    }; between the images, the terms of the equations above ({ $format ->
-        [md] {""}
-       *[other] black:{" "}
-    }normal and tangential), head to tail.
+    }{ $between ->
+        [0] .
+       *[other] ; between the images, the terms of the equations above ({ $format ->
+            [md] {""}
+           *[other] black:{" "}
+        }normal and tangential), head to tail.
+    }
 col-number = no.
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -604,17 +621,23 @@ contact-fixed = { $sym }: { $point } as a point of { $body }{ FIXED($body) ->
 fig-step_v = Velocity polygon of this step, to scale: from the pole o, the velocity of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point; between the images, the terms of this step's equations{ $format ->
-        [md] {""}
-       *[other] {" "}(black)
-    }, head to tail.
+    } ends at its image, lettered as the point{ $between ->
+        [0] .
+       *[other] ; between the images, the terms of this step's equations{ $format ->
+            [md] {""}
+           *[other] {" "}(black)
+        }, head to tail.
+    }
 fig-step_a = Acceleration polygon of this step, to scale: from the pole o, the acceleration of each point{ $format ->
         [md] {""}
        *[other] {" "}(blue)
-    } ends at its image, lettered as the point; between the images, the terms of this step's equations{ $format ->
-        [md] {""}
-       *[other] {" "}(black)
-    }, head to tail.
+    } ends at its image, lettered as the point{ $between ->
+        [0] .
+       *[other] ; between the images, the terms of this step's equations{ $format ->
+            [md] {""}
+           *[other] {" "}(black)
+        }, head to tail.
+    }
 col-point = point
 col-what = what it is
 what-centre = centre of { $body }

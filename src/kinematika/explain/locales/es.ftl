@@ -74,6 +74,7 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
            *[other] la flecha azul
         } es la velocidad de { $points }{ $moduli ->
             [0] {""}
+            [2] {", con su módulo, en "}{ $unit }/s
            *[other] {", con su módulo"}
         }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
@@ -89,6 +90,7 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
            *[other] las flechas azules
         } son las velocidades de { $points }, a una misma escala{ $moduli ->
             [0] {""}
+            [2] {", con sus módulos, en "}{ $unit }/s
            *[other] {", con sus módulos"}
         }
     }; los sólidos están numerados.
@@ -102,6 +104,7 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
            *[other] la flecha azul
         } es la velocidad de { $points }{ $moduli ->
             [0] {""}
+            [2] {", con su módulo, en "}{ $unit }/s
            *[other] {", con su módulo"}
         }
         [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
@@ -117,6 +120,7 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
            *[other] las flechas azules
         } son las velocidades de { $points }, a una misma escala{ $moduli ->
             [0] {""}
+            [2] {", con sus módulos, en "}{ $unit }/s
            *[other] {", con sus módulos"}
         }
     }.
@@ -413,6 +417,7 @@ fig-normal-wheel = las perpendiculares a las ruedas
 fig-normal-slot = las normales a las ranuras
 fig-normal-slot_fixed = las normales a las rectas por las que deslizan los puntos
 fig-normal-normal = las normales comunes en los contactos
+fig-normal-radius = las perpendiculares a las velocidades de los puntos
 fig-assur = El punto de Assur { $point }: las rectas { $l1 } y { $l3 } (a trazos) prolongadas hasta cortarse; { $point } se toma como punto del eslabón ternario.
 fig-drawn_at = Dibujado con { $values }.
 fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad de cada punto{ $format ->
@@ -421,40 +426,52 @@ fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad 
     } acaba en su imagen, con la letra del punto{ $image ->
         [0] {""}
        *[other] {" "}({ $image } para { $point })
-    }; entre las imágenes, las velocidades relativas de las ecuaciones anteriores{ $format ->
-        [md] {""}
-       *[other] {" "}(negro)
-    }, una tras otra.
+    }{ $between ->
+        [0] .
+       *[other] ; entre las imágenes, las velocidades relativas de las ecuaciones anteriores{ $format ->
+            [md] {""}
+           *[other] {" "}(negro)
+        }, una tras otra.
+    }
 fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
     } acaba en su imagen, con la letra del punto{ $image ->
         [0] {""}
        *[other] {" "}({ $image } para { $point })
-    }; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
-        [md] {""}
-       *[other] negro:{" "}
-    }normales y tangenciales, relativos y de Coriolis), uno tras otro.
+    }{ $between ->
+        [0] .
+       *[other] ; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+            [md] {""}
+           *[other] negro:{" "}
+        }normales y tangenciales, relativos y de Coriolis), uno tras otro.
+    }
 fig-level_a_relative = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
     } acaba en su imagen, con la letra del punto{ $image ->
         [0] {""}
        *[other] {" "}({ $image } para { $point })
-    }; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
-        [md] {""}
-       *[other] negro:{" "}
-    }normales y tangenciales, y relativos), uno tras otro.
+    }{ $between ->
+        [0] .
+       *[other] ; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+            [md] {""}
+           *[other] negro:{" "}
+        }normales y tangenciales, y relativos), uno tras otro.
+    }
 fig-level_a_normal = Polígono de aceleraciones, a escala: desde el polo o, la aceleración de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
     } acaba en su imagen, con la letra del punto{ $image ->
         [0] {""}
        *[other] {" "}({ $image } para { $point })
-    }; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
-        [md] {""}
-       *[other] negro:{" "}
-    }normales y tangenciales), uno tras otro.
+    }{ $between ->
+        [0] .
+       *[other] ; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+            [md] {""}
+           *[other] negro:{" "}
+        }normales y tangenciales), uno tras otro.
+    }
 col-number = n.º
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -526,17 +543,23 @@ contact-fixed = { $sym }: { $point } como punto de { $body }{ FIXED($body) ->
 fig-step_v = Polígono de velocidades de este paso, a escala: desde el polo o, la velocidad de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
-    } acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso{ $format ->
-        [md] {""}
-       *[other] {" "}(negro)
-    }, uno tras otro.
+    } acaba en su imagen, con la letra del punto{ $between ->
+        [0] .
+       *[other] ; entre las imágenes, los términos de las ecuaciones de este paso{ $format ->
+            [md] {""}
+           *[other] {" "}(negro)
+        }, uno tras otro.
+    }
 fig-step_a = Polígono de aceleraciones de este paso, a escala: desde el polo o, la aceleración de cada punto{ $format ->
         [md] {""}
        *[other] {" "}(azul)
-    } acaba en su imagen, con la letra del punto; entre las imágenes, los términos de las ecuaciones de este paso{ $format ->
-        [md] {""}
-       *[other] {" "}(negro)
-    }, uno tras otro.
+    } acaba en su imagen, con la letra del punto{ $between ->
+        [0] .
+       *[other] ; entre las imágenes, los términos de las ecuaciones de este paso{ $format ->
+            [md] {""}
+           *[other] {" "}(negro)
+        }, uno tras otro.
+    }
 col-point = punto
 col-what = qué es
 what-centre = centro de { $body }

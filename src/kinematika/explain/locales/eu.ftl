@@ -74,6 +74,7 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] gezi urdina
         } { $points } puntuaren abiadura da{ $moduli ->
             [0] {""}
+            [2] {", bere moduluarekin ("}{ $unit }/s-tan)
            *[other] {", bere moduluarekin"}
         }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
@@ -89,6 +90,7 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] gezi urdinak
         } { $points } puntuen abiadurak dira, eskala berean{ $moduli ->
             [0] {""}
+            [2] {", beren moduluekin ("}{ $unit }/s-tan)
            *[other] {", beren moduluekin"}
         }
     }; solidoak zenbakituta daude.
@@ -102,6 +104,7 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] gezi urdina
         } { $points } puntuaren abiadura da{ $moduli ->
             [0] {""}
+            [2] {", bere moduluarekin ("}{ $unit }/s-tan)
            *[other] {", bere moduluarekin"}
         }
         [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
@@ -117,6 +120,7 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] gezi urdinak
         } { $points } puntuen abiadurak dira, eskala berean{ $moduli ->
             [0] {""}
+            [2] {", beren moduluekin ("}{ $unit }/s-tan)
            *[other] {", beren moduluekin"}
         }
     }.
@@ -371,6 +375,7 @@ fig-normal-wheel = gurpilen perpendikularrak
 fig-normal-slot = arteken perpendikularrak
 fig-normal-slot_fixed = puntuak irristatzen diren zuzenen perpendikularrak
 fig-normal-normal = kontaktuetako normal komunak
+fig-normal-radius = puntuen abiaduren perpendikularrak
 fig-assur = { $point } Assur puntua: { $l1 } eta { $l3 } zuzenak (marra etenez) ebaki arte luzatuta; { $point } barra hirutarraren puntutzat hartzen da.
 fig-drawn_at = Balio hauekin marraztua: { $values }.
 fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
@@ -379,40 +384,52 @@ fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadur
     } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
         [0] {""}
        *[other] {" "}({ $image }, { $point }-rentzat)
-    }; irudien artean, aurreko ekuazioen abiadura erlatiboak{ $format ->
-        [md] {""}
-       *[other] {" "}(beltzez)
-    }, bata bestearen ondoren.
+    }{ $between ->
+        [0] .
+       *[other] ; irudien artean, aurreko ekuazioen abiadura erlatiboak{ $format ->
+            [md] {""}
+           *[other] {" "}(beltzez)
+        }, bata bestearen ondoren.
+    }
 fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
     } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
         [0] {""}
        *[other] {" "}({ $image }, { $point }-rentzat)
-    }; irudien artean, aurreko ekuazioen terminoak ({ $format ->
-        [md] {""}
-       *[other] beltzez:{" "}
-    }normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
+    }{ $between ->
+        [0] .
+       *[other] ; irudien artean, aurreko ekuazioen terminoak ({ $format ->
+            [md] {""}
+           *[other] beltzez:{" "}
+        }normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
+    }
 fig-level_a_relative = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
     } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
         [0] {""}
        *[other] {" "}({ $image }, { $point }-rentzat)
-    }; irudien artean, aurreko ekuazioen terminoak ({ $format ->
-        [md] {""}
-       *[other] beltzez:{" "}
-    }normalak eta tangentzialak, eta erlatiboak), bata bestearen ondoren.
+    }{ $between ->
+        [0] .
+       *[other] ; irudien artean, aurreko ekuazioen terminoak ({ $format ->
+            [md] {""}
+           *[other] beltzez:{" "}
+        }normalak eta tangentzialak, eta erlatiboak), bata bestearen ondoren.
+    }
 fig-level_a_normal = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
        *[other] {" "}(urdinez)
     } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
         [0] {""}
        *[other] {" "}({ $image }, { $point }-rentzat)
-    }; irudien artean, aurreko ekuazioen terminoak ({ $format ->
-        [md] {""}
-       *[other] beltzez:{" "}
-    }normalak eta tangentzialak), bata bestearen ondoren.
+    }{ $between ->
+        [0] .
+       *[other] ; irudien artean, aurreko ekuazioen terminoak ({ $format ->
+            [md] {""}
+           *[other] beltzez:{" "}
+        }normalak eta tangentzialak), bata bestearen ondoren.
+    }
 col-number = zk.
 
 # higher pairs (joints.contact, curved_slot, cam)
@@ -478,17 +495,23 @@ contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mug
 fig-step_v = Urrats honetako abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadura{ $format ->
         [md] {""}
        *[other] {" "}(urdina)
-    } haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak{ $format ->
-        [md] {""}
-       *[other] {" "}(beltza)
-    }, bata bestearen atzetik.
+    } haren irudian amaitzen da, puntuaren letrarekin{ $between ->
+        [0] .
+       *[other] ; irudien artean, urrats honetako ekuazioen terminoak{ $format ->
+            [md] {""}
+           *[other] {" "}(beltza)
+        }, bata bestearen atzetik.
+    }
 fig-step_a = Urrats honetako azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
        *[other] {" "}(urdina)
-    } haren irudian amaitzen da, puntuaren letrarekin; irudien artean, urrats honetako ekuazioen terminoak{ $format ->
-        [md] {""}
-       *[other] {" "}(beltza)
-    }, bata bestearen atzetik.
+    } haren irudian amaitzen da, puntuaren letrarekin{ $between ->
+        [0] .
+       *[other] ; irudien artean, urrats honetako ekuazioen terminoak{ $format ->
+            [md] {""}
+           *[other] {" "}(beltza)
+        }, bata bestearen atzetik.
+    }
 col-point = puntua
 col-what = zer den
 what-centre = { $body } solidoaren zentroa

@@ -11,7 +11,7 @@ from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.str import StrPrinter
 
 from ...memo import Memo
-from ...report.values import printed, tidy
+from ...report.values import printed, turned, written_form, written_latex  # noqa: F401  (turned: its old home)
 from .names import latex_name, unicode_name
 
 SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
@@ -94,7 +94,7 @@ def _marked(expr: Any) -> tuple[str, tuple[str, ...]]:
     """The Unicode formula with its symbols marked, and their names: printed once in a
     command (a long formula takes long to print), written out by each language and format;
     remembered with the numbers of its symbols (`formula_values`), which may turn a square."""
-    shown = turned(tidy(expr))
+    shown = written_form(expr)
     values = _VALUES.get() or {}
     key = (shown, tuple(sorted((s.name, values.get(s.name)) for s in getattr(shown, "free_symbols", ()))))
     known = _MARKED.get(key)
@@ -106,25 +106,6 @@ def _marked(expr: Any) -> tuple[str, tuple[str, ...]]:
     text = re.sub(r"sqrt\(([\w\U000F0000-\U000FFFFD]+)\)", r"√\1", text)
     text = text.replace("sqrt(", "√(").replace("**", "^").replace("*", "·")
     return _MARKED.put(key, (text.replace(" - ", " − ").replace("-", "−"), tuple(names)))
-
-
-def turned(x: Any) -> Any:
-    """A product's minus taken into a difference of two terms, as the notes write their
-    results: −v(r₁ − r₂)/r₂ is v(r₂ − r₁)/r₂ (one sign fewer to read)."""
-    import sympy
-
-    factors = list(sympy.Mul.make_args(x))
-    if not x.is_Mul or sympy.S.NegativeOne not in factors:
-        return x
-    for f in factors:
-        base, power = f.as_base_exp()
-        if base.is_Add and len(base.args) == 2 and power in (1, -1) \
-                and sum(t.could_extract_minus_sign() for t in base.args) == 1:
-            rest = [g for g in factors if g is not f and g is not sympy.S.NegativeOne]
-            flipped = sympy.Add(*[-t for t in base.args], evaluate=False)
-            return sympy.Mul(*rest, flipped if power == 1 else sympy.Pow(flipped, power, evaluate=False),
-                             evaluate=False)
-    return x
 
 
 _MARKED = Memo(4096)    # a command's own memory (kinematika.memo), as sympy's printed texts
@@ -154,9 +135,8 @@ def latex_formula(expr: Any, spelt: dict[str, str] | None = None) -> str:
     """sympy's LaTeX, each symbol as `latex_name` writes it (a word in a subscript upright:
     R_{\\mathrm{roda}}; a symbol named like the constant π, `pi`, `pi2`, as the word); the
     symbols of `spelt` (a name -> its LaTeX) as given (a model's notation)."""
-    import sympy
 
-    shown = tidy(expr)
+    shown = written_form(expr)
     spelt = spelt or {}
     own = {s: spelt.get(s.name) or latex_name(s.name) for s in getattr(shown, "free_symbols", ())}
-    return sympy.latex(shown, symbol_names=own) if own else sympy.latex(shown)
+    return written_latex(shown, own)
