@@ -101,6 +101,7 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] les fletxes blaves
         } són { $points }, a una mateixa escala{ $moduli ->
             [0] {""}
+            [2] {", amb els seus mòduls, en "}{ $unit }/s
            *[other] {", amb els seus mòduls"}
         }
        *[other] { $format ->
@@ -131,6 +132,7 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] les fletxes blaves
         } són { $points }, a una mateixa escala{ $moduli ->
             [0] {""}
+            [2] {", amb els seus mòduls, en "}{ $unit }/s
            *[other] {", amb els seus mòduls"}
         }
        *[other] { $format ->

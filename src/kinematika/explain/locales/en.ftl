@@ -86,6 +86,7 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
            *[other] the blue arrows
         } are { $points }, to one scale{ $moduli ->
             [0] {""}
+            [2] {", with their magnitudes, in "}{ $unit }/s
            *[other] {", with their magnitudes"}
         }
        *[other] { $format ->
@@ -116,6 +117,7 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
            *[other] the blue arrows
         } are { $points }, to one scale{ $moduli ->
             [0] {""}
+            [2] {", with their magnitudes, in "}{ $unit }/s
            *[other] {", with their magnitudes"}
         }
        *[other] { $format ->

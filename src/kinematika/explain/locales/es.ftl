@@ -83,6 +83,7 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
            *[other] las flechas azules
         } son { $points }, a una misma escala{ $moduli ->
             [0] {""}
+            [2] {", con sus módulos, en "}{ $unit }/s
            *[other] {", con sus módulos"}
         }
        *[other] { $format ->
@@ -113,6 +114,7 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
            *[other] las flechas azules
         } son { $points }, a una misma escala{ $moduli ->
             [0] {""}
+            [2] {", con sus módulos, en "}{ $unit }/s
            *[other] {", con sus módulos"}
         }
        *[other] { $format ->

@@ -83,6 +83,7 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] gezi urdinak
         } { $points } dira, eskala berean{ $moduli ->
             [0] {""}
+            [2] {", beren moduluekin ("}{ $unit }/s-tan)
            *[other] {", beren moduluekin"}
         }
        *[other] { $format ->
@@ -113,6 +114,7 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] gezi urdinak
         } { $points } dira, eskala berean{ $moduli ->
             [0] {""}
+            [2] {", beren moduluekin ("}{ $unit }/s-tan)
            *[other] {", beren moduluekin"}
         }
        *[other] { $format ->
