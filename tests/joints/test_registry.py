@@ -42,6 +42,7 @@ ALLOWED_WORDS = {           # the same words meaning something else, with where 
     # a body's kind: a pitch circle, and the default names of new bodies in the page's languages
     "gear": ("draw/scene.py", "draw/build.py", "draw/bodies.py", "web/static/js/figure.js", "web/build.py", "web/palette.py"),
     "wheel": ("explain/group.py",                   # what a partly known point's motion comes from
+              "model/subscripts.py", "model/wording.py",   # the word for a wheel in a body's name
               "web/build.py", "web/palette.py",
               "web/static/js/figure.js"),            # the browser's mouse-wheel event
 }

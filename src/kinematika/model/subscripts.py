@@ -12,7 +12,7 @@ The rule, for each body of a model that names its bodies in the language:
    first thing of "el plat i els pedals"): the first word in Catalan and Spanish, the last
    in English, the first not ending in -ko in Basque), when no other body's is that word:
    ω_braç, ω_plat, ω_koroa, ω_wheel, ω_gurpila; but on a page where wheels mesh with
-   wheels (a gear train: `wording.meshed`), the word "wheel" (roda, rueda, gurpil) does
+   wheels (wheels in mesh: `wording.meshed`), the word "wheel" (roda, rueda, gurpil) does
    not tell a meshing wheel from the others, so the name's other word is taken when it
    has one: the sun wheel beside the planets is ω_sun (ca roda central: ω_central), E.2's
    fixed central wheel ω_central, never ω_wheel;

@@ -233,19 +233,21 @@ def _spin_joint(name: str, joints: dict, where: str) -> str:
 
 
 def meshed(joints: dict, bodies: dict) -> frozenset:
-    """The bodies that are wheels among wheels: a gear joint's two bodies, and a rolling
-    joint's where both bodies are circles (C5-1.4's sun wheel and its planets, E.2's fixed
-    central wheel and its planets). On such a page "wheel" does not tell one body from the
-    others (`subscripts.named_labels`: ω_sun, not ω_wheel, beside the planets)."""
-    from .body_shapes import Circle
-
+    """The bodies that are wheels among wheels: the two bodies of a joint whose kind rolls on
+    pitch circles, and of one that rolls where both bodies are circles (C5-1.4's sun wheel and
+    its planets, E.2's fixed central wheel and its planets). On such a page "wheel" does not
+    tell one body from the others (`subscripts.named_labels`: ω_sun, not ω_wheel, beside the
+    planets). The kinds are asked (`rolls`, `pitch`), never named (`tests/joints/test_registry`);
+    the shapes are read only for a rolling joint, so a model without one imports no shapes."""
     def round_(body: str) -> bool:
+        from .body_shapes import Circle
+
         return any(isinstance(s, Circle) for s in getattr(bodies.get(body), "shapes", ()) or ())
 
     out: set = set()
     for j in joints.values():
-        name = getattr(j.kind, "name", "")
-        if name == "gear" or (name == "rolling" and round_(j.a) and round_(j.b)):
+        kind = j.kind
+        if getattr(kind, "rolls", False) and (getattr(kind, "pitch", False) or (round_(j.a) and round_(j.b))):
             out |= {j.a, j.b}
     return frozenset(out)
 
