@@ -53,6 +53,24 @@ def _words(name: str) -> list[str]:
     return [w.strip(",;:()") for w in re.split(r"\s+", text) if w.strip(",;:()")]
 
 
+def read_off(label: str, name: str, lang: Optional[str]) -> bool:
+    """Whether subscript `label` is body `name` run together, so a student reads it off the
+    name and a legend saying so is a line a teacher deletes (fifteenth round): each piece a
+    word of the name in any order, a number without the Basque ordinal's dot (politja1 for
+    *politja 1*, polea1 for *1. polea*, rodaR for *roda de radi R*, central for *roda
+    central*, ω_{roda esquerra}), in Basque a word with its article too (platera for *plater
+    pedalduna*). An abbreviation or a symbol from the notes (ψ̇) is not read off."""
+    pieces = {w.rstrip(".") for w in _words(name)} - {""}
+    if lang == "eu":
+        pieces |= {w + "a" for w in pieces}
+    text = label.replace(" ", "")
+    ends = {0}                                   # where a run of whole pieces can end
+    for i in range(1, len(text) + 1):
+        if any(text[j:i] in pieces for j in ends if j < i):
+            ends.add(i)
+    return bool(text) and len(text) in ends
+
+
 def _head(content: list[str], lang: str) -> str:
     """The word a name is about: the first in Catalan and Spanish (roda esquerra), the last
     in English (left wheel), the first not ending in -ko in Basque (ezkerreko gurpila,

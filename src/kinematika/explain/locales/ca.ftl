@@ -77,7 +77,10 @@ joint-gear = engranatge
 joint-weld = sòlids solidaris
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
-fig-drag = d’arrossegament de { $point } ({ $sym })
+fig-drag = d’arrossegament { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } ({ $sym })
 fig-own_drag = la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
@@ -90,7 +93,10 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [1] { $format ->
             [md] la fletxa
            *[other] la fletxa blava
-        } és la velocitat de { $points }{ $moduli ->
+        } és la velocitat { ELISION($points) ->
+        [vowel] d’{ $points }
+       *[other] de { $points }
+    }{ $moduli ->
             [0] {""}
             [2] {", amb el seu mòdul, en "}{ $unit }/s
            *[other] {", amb el seu mòdul"}
@@ -107,7 +113,10 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
        *[other] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
-        } són les velocitats de { $points }, a una mateixa escala{ $moduli ->
+        } són les velocitats { ELISION($points) ->
+        [vowel] d’{ $points }
+       *[other] de { $points }
+    }, a una mateixa escala{ $moduli ->
             [0] {""}
             [2] {", amb els seus mòduls, en "}{ $unit }/s
            *[other] {", amb els seus mòduls"}
@@ -121,7 +130,10 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         [1] { $format ->
             [md] la fletxa
            *[other] la fletxa blava
-        } és la velocitat de { $points }{ $moduli ->
+        } és la velocitat { ELISION($points) ->
+        [vowel] d’{ $points }
+       *[other] de { $points }
+    }{ $moduli ->
             [0] {""}
             [2] {", amb el seu mòdul, en "}{ $unit }/s
            *[other] {", amb el seu mòdul"}
@@ -138,7 +150,10 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
        *[other] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
-        } són les velocitats de { $points }, a una mateixa escala{ $moduli ->
+        } són les velocitats { ELISION($points) ->
+        [vowel] d’{ $points }
+       *[other] de { $points }
+    }, a una mateixa escala{ $moduli ->
             [0] {""}
             [2] {", amb els seus mòduls, en "}{ $unit }/s
            *[other] {", amb els seus mòduls"}
@@ -359,7 +374,10 @@ rolling-glide = { $b } { COUNT($b) ->
     }. Des { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
-    }, el seu centre { $centre } manté la distància a la vora: es mou segons una recta paral·lela a la tangent a { $point }. Amb eixos a { $centre } que giren amb { $a }, el moviment de { $centre } és el d’arrossegament (el del punt { ELISION($a) ->
+    }, el seu centre { $centre } manté la distància a la vora: es mou segons una recta paral·lela a la tangent a { $point }. Amb eixos a { $centre } que giren amb { $a }, el moviment { ELISION($centre) ->
+        [vowel] d’{ $centre }
+       *[other] de { $centre }
+    } és el d’arrossegament (el del punt { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } que hi coincideix) més el relatiu, al llarg d’aquesta recta (i, en acceleracions, el terme de Coriolis).
@@ -709,8 +727,14 @@ cond-curved_slot = passador { $point } en ranura corba: la seva velocitat relati
 cond-cam = lleva: el seguidor { $b } es manté en contacte amb la lleva { $a }.
 dir-tangent = tangent a { $point }
 dir-centre = cap al centre de curvatura { $point }
-higher-intro = El parell superior s’escriu com el moviment de { $point } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l’acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
-higher-straight = El parell superior s’escriu com el moviment de { $point } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).
+higher-intro = El parell superior s’escriu com el moviment { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } per la seva trajectòria relativa a { $holder } (una ranura segons la tangent, corba de radi { $radius }): l’acceleració relativa té una part normal v²/ρ cap al centre de curvatura de la trajectòria.
+higher-straight = El parell superior s’escriu com el moviment { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } per una trajectòria recta relativa a { $holder } (una ranura segons la tangent).
 centre-weld = { $body } i { $other } són solidaris: són un sol sòlid rígid, de manera que el CIR és el { ELISION($other) ->
         [vowel] d’{ $other }
        *[other] de { $other }

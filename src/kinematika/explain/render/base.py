@@ -542,12 +542,13 @@ class Renderer(ABC):
     def subscripts(self, m: Msg) -> str:
         """Which body each shortened subscript is, said once as a sentence a teacher writes
         ("Notation: ω_wheel is the angular velocity of the *sun wheel*", not the audits'
-        terse "In the symbols, ω_wheel: *sun wheel*"): a symbol whose subscript is not the body's whole name in
-        this language (`model.subscripts` took a word of it, or the model's notation gives a
-        letter) is defined on the page that uses it; nothing when every subscript is the name
-        as written or the code the name holds (ω_N of *N blokea*, as the slides), or the
-        bodies go by their numbers (the structure's table)."""
-        from ...model.subscripts import CODE, _words
+        terse "In the symbols, ω_wheel: *sun wheel*"): a symbol whose subscript a student cannot read off the body's
+        name in this language (an abbreviation, or a letter the model's notation gives) is
+        defined on the page that uses it; nothing when every subscript is the name as
+        written, the code the name holds (ω_N of *N blokea*, as the slides) or the name's
+        words run together (ω_politja1 of *politja 1*, ω_central of *roda central*:
+        `model.subscripts.read_off`), or the bodies go by their numbers (the structure's table)."""
+        from ...model.subscripts import CODE, _words, read_off
 
         spelt = self.wording.bodies.get(self.lang or "", {}) if self.wording is not None else {}
         if not spelt:
@@ -561,8 +562,9 @@ class Renderer(ABC):
                 # (v_{J∈terra}) is named in the words beside it (J com a punt del terra cilíndric)
             words = _words(spelt[b]) if b in spelt else []
             if not label or label.isdigit() or not words or label == " ".join(words) \
-                    or (label in words and CODE.match(label)):
-                continue          # the name as written, or its own code (ω_N of *N blokea*)
+                    or (label in words and CODE.match(label)) or read_off(label, spelt[b], self.lang):
+                continue          # the name as written, its own code (ω_N of *N blokea*), or
+                # its words run together (ω_politja1 of *politja 1*): nothing to define
             said = Msg("structure.subscript_pair", {"sym": Sym("ω", b, vector=False), "body": Name(b, "body")})
             items += (["; "] if items else []) + [said]
         if not items:
