@@ -528,8 +528,7 @@ how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia d
 centres-found_above = { $centre } = { $value }: hallado arriba, en el paso de velocidades de { $body }.
 centres-found_above_step = { $centre } = { $value }: hallado en el paso { $step }, con las velocidades de { $body }.
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
-centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, es el punto { $point }: no tiene velocidad, { $sym } = 0.
-centre-site_s = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
+centre-site_s = { $centre }, hallado arriba, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto
 geom-rule = La regla de todo contacto de rodadura: la condición de no deslizamiento se cumple en cada instante en el punto geométrico de contacto (aquí { $geom }), que se mueve; derivándola a lo largo de él se obtiene { $rule }: las componentes tangenciales de las dos aceleraciones son iguales y las normales difieren en este término, según la normal común. Hace falta la velocidad del punto geométrico:
 geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, con { $part }/{ $whole } = { $ratio }, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:

@@ -480,8 +480,7 @@ how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradio
 centres-found_above = { $centre } = { $value }: goian aurkitua, { $body } solidoaren abiadura-urratsean.
 centres-found_above_step = { $centre } = { $value }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
-centre-site_i = { $body } solidoaren biraketa-zentro instantaneoa { $frame } solidoarekiko ({ $centre }, goian aurkitua) { $point } puntua da: ez du abiadurarik, { $sym } = 0.
-centre-site_s = { $body } solidoaren { $centre } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
+centre-site_s = Goian aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
 geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
 geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
