@@ -2,7 +2,10 @@
 main's pages, each a rule checked over the seeds and the four languages where it applies:
 
 1. a centre placed as a point of no body is one symbol throughout: "I_pulley, found above,
-   has no velocity: v_{I_pulley} = 0", never "the instant centre I_pulley … is the point I".
+   has no velocity: v_{I_pulley} = 0", never "the instant centre I_pulley … is the point I";
+2. a centre from a rate found through a drive names the rate before the route: "from
+   ω_chainring (found in Step 3 through the *chain*)", never "from the angular velocity found
+   in Step 3 through the *chain*", which reads as if the centre lay on the chain.
 """
 from __future__ import annotations
 
@@ -39,3 +42,31 @@ def test_the_pulleys_centre_is_said_once_by_its_symbol(lang):
     assert line.endswith(f"v_{{{centre}}} = 0.")
     assert line.count("I_") == 2
     assert f"v_C  =  v_{{{centre}}}  +" in page
+
+
+# ---- 2. the rate named before the route it was found by -----------------------------------
+
+OLD_RATE = {"en": "from the angular velocity found", "es": "a partir de la velocidad angular hallada",
+            "ca": "a partir de la velocitat angular trobada", "eu": "aurkitutako abiadura angeluarretik"}
+NEW_RATE = {"en": r"from (ω\S*) \(found [^)]*\): it lies on",
+            "es": r"a partir de (ω\S*) \(hallada [^)]*\): está en",
+            "ca": r"a partir de (ω\S*) \(trobada [^)]*\): és a",
+            "eu": r"(ω\S*) abiadura angeluarretik \([^)]*aurkitua\): "}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_centre_from_a_rate_names_the_rate_first(name, lang):
+    """C5-1.6, E.5, E.6: the rate is named, its route in brackets, and it is the rate the
+    distance |v_Q| / |ω| divides by."""
+    page = rendered(name, lang, "md", drawings=False)
+    assert OLD_RATE[lang] not in page
+    for m in re.finditer(NEW_RATE[lang] + r".*?\| / \|(ω\S*)\|", page):
+        assert m.group(1) == m.group(2)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_chainrings_centre_from_its_rate(lang):
+    """C5-E.6: the chainring's centre is found from ω of the chainring, by the chain."""
+    page = rendered("seed_c5_e6_bicycle", lang, "md", drawings=False)
+    assert len(re.findall(NEW_RATE[lang], page)) >= 1

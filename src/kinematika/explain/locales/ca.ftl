@@ -790,17 +790,17 @@ centre-field = és a la perpendicular a { $v } per { $q }, a la distància { $ar
         [vowel] d’{ $q }
        *[other] de { $q }
     }, { $side }, de manera que el CIR és
-centre-rate = a partir de la velocitat angular trobada més amunt a través { ELISION($line) ->
+centre-rate = a partir de { $w } (trobada més amunt a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
-    }: és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+    }): és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }, { $side }, de manera que el CIR és
-centre-rate_step = a partir de la velocitat angular trobada al pas { $step } a través { ELISION($line) ->
+centre-rate_step = a partir de { $w } (trobada al pas { $step } a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
-    }: és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+    }): és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }, { $side }, de manera que el CIR és
