@@ -5,7 +5,9 @@ main's pages, each a rule checked over the seeds and the four languages where it
    has no velocity: v_{I_pulley} = 0", never "the instant centre I_pulley … is the point I";
 2. a centre from a rate found through a drive names the rate before the route: "from
    ω_chainring (found in Step 3 through the *chain*)", never "from the angular velocity found
-   in Step 3 through the *chain*", which reads as if the centre lay on the chain.
+   in Step 3 through the *chain*", which reads as if the centre lay on the chain;
+3. Spanish: a body rolling without slipping "gira sin deslizar sobre …", never "La rueda
+   rueda sin deslizar" (the verb doubles the noun); the Catalan "la roda rodola" is two words.
 """
 from __future__ import annotations
 
@@ -70,3 +72,19 @@ def test_the_chainrings_centre_from_its_rate(lang):
     """C5-E.6: the chainring's centre is found from ω of the chainring, by the chain."""
     page = rendered("seed_c5_e6_bicycle", lang, "md", drawings=False)
     assert len(re.findall(NEW_RATE[lang], page)) >= 1
+
+
+# ---- 3. Spanish: gira sin deslizar ---------------------------------------------------------
+
+@pytest.mark.parametrize("name", SEEDS)
+def test_spanish_never_says_the_wheel_wheels(name):
+    """Nine Spanish pages read "La rueda rueda sin deslizar", "Las ruedas ruedan sin deslizar"."""
+    page = rendered(name, "es", "md", drawings=False)
+    assert not re.search(r"\b(rueda|ruedan) sin deslizar", page)
+    assert not re.search(r"rueda\*? rueda\b|ruedas\*? ruedan\b", page)
+
+
+def test_spanish_the_wheel_turns_without_slipping_on_the_ground():
+    """C5-E.5: the left wheel on the ground, in the words the teacher asked for."""
+    page = rendered("seed_c5_e5_unequal_wheels", "es", "md", drawings=False)
+    assert re.search(r"\*rueda [^*]+\* gira sin deslizar sobre el \*suelo\*", page)

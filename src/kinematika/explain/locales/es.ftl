@@ -251,9 +251,11 @@ cond-cylindrical = par cilíndrico: { $b } { COUNT($b) ->
         [many] giran
        *[one] gira
     } alrededor del eje de { $a } y se desliza a lo largo de él.
+# "rueda sin deslizar" doubles the noun when the body is a wheel (La rueda rueda): Spanish says
+# it gira sin deslizar sobre … (round 15a)
 rolling-noslip = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
 rolling-noslip_edge = { $b } no { COUNT($b) ->
         [many] deslizan
@@ -264,26 +266,26 @@ rolling-same_edge = { $b } no { COUNT($b) ->
        *[one] desliza
     } sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
 rolling-glide = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre el borde de { $a }. Visto desde { $a }, su centro { $centre } mantiene la distancia al borde: se mueve según una recta paralela a la tangente en { $point }. Con ejes en { $centre } que giran con { $a }, el movimiento de { $centre } es el de arrastre (el del punto de { $a } que coincide con él) más el relativo, a lo largo de esa recta (y, en aceleraciones, el término de Coriolis).
 rolling-kept = el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
 path-circle = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vs }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
 path-line = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
 rolling-equal = Sin deslizamiento en el contacto { $point }: { $sym } = { $other }.
 rolling-same = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
 rolling-centre = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $a }, que no se mueve: el punto { $point } de { $b } en el contacto no tiene velocidad, { $sym } = 0, así que es el CIR de { $b }.
 dir-guide = guía de { $holder }
 dir-normal = normal
@@ -320,8 +322,8 @@ composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
 composition-drag = Arrastre: el movimiento del punto de la referencia móvil que coincide con él:
 composition-relative = Relativo: el movimiento visto desde la referencia móvil, { $sym } = { $rel }:
 composition-rolls = { $body } { COUNT($body) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $frame } en { $point }: visto desde { $frame }, { $point } es el CIR de { $body }, { $sym } = 0, y todos sus puntos giran alrededor de él.
 sec-curvature = Curvatura de las trayectorias
 curvature-intro = La aceleración se descompone en una parte tangencial, según la velocidad, y una normal, perpendicular a ella; el radio de curvatura es { $rho }.
@@ -371,7 +373,7 @@ vehicle-centre_on_axle = La perpendicular a { $sym } por { $point } es el propio
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
 vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
 vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }: { $body } no gira (su CIR está en el infinito), se traslada y todos sus puntos se mueven como { $p }.
-vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
+vehicle-spin = La rueda { $joint } gira sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
 triad-closure = Conocido { $point } como punto del eslabón ternario, su articulación { $pin } se cierra como en una díada:
