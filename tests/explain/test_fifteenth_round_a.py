@@ -7,7 +7,9 @@ main's pages, each a rule checked over the seeds and the four languages where it
    ω_chainring (found in Step 3 through the *chain*)", never "from the angular velocity found
    in Step 3 through the *chain*", which reads as if the centre lay on the chain;
 3. Spanish: a body rolling without slipping "gira sin deslizar sobre …", never "La rueda
-   rueda sin deslizar" (the verb doubles the noun); the Catalan "la roda rodola" is two words.
+   rueda sin deslizar" (the verb doubles the noun); the Catalan "la roda rodola" is two words;
+4. Spanish writes the sine sen: sen(β) in the text (HTML, Markdown), LaTeX and the figures'
+   labels; Catalan and Basque keep sin (their notes write no trigonometric function).
 """
 from __future__ import annotations
 
@@ -88,3 +90,40 @@ def test_spanish_the_wheel_turns_without_slipping_on_the_ground():
     """C5-E.5: the left wheel on the ground, in the words the teacher asked for."""
     page = rendered("seed_c5_e5_unequal_wheels", "es", "md", drawings=False)
     assert re.search(r"\*rueda [^*]+\* gira sin deslizar sobre el \*suelo\*", page)
+
+
+# ---- 4. Spanish sen ------------------------------------------------------------------------
+
+@pytest.mark.parametrize("fmt", ("md", "html"))
+@pytest.mark.parametrize("name", SEEDS)
+def test_spanish_writes_the_sine_sen(name, fmt):
+    """001's rolling pair read "(ρ/sin(β); 0)" and "(cos(β); sin(β))" in Spanish."""
+    page = rendered(name, "es", fmt, drawings=False)
+    assert not re.search(r"(?<![\w\\])sin\(", page)
+
+
+def test_the_rolling_pairs_sines_in_each_language():
+    """The roller's centre (ρ/sen β, 0) and the lever's direction (cos β, sen β): sen in
+    Spanish only; the other languages keep sin."""
+    assert rendered("seed_001_rolling_pair", "es", "md", drawings=False).count("sen(β)") == 2
+    for lang in ("en", "ca", "eu"):
+        page = rendered("seed_001_rolling_pair", lang, "md", drawings=False)
+        assert page.count("sin(β)") == 2 and "sen(" not in page
+
+
+def test_the_sine_is_renamed_only_as_a_call():
+    """A symbol or another function spelt with sin (asin, sinh) is never renamed; the
+    figures' labels and LaTeX write \\operatorname{sen}, which mathtext sets."""
+    import sympy
+
+    from kinematika.draw.names import formula, settable
+    from kinematika.numerals import function_names
+
+    assert function_names("asin(x) + sin(x)·sinh(y)", "es") == "asin(x) + sen(x)·sinh(y)"
+    assert function_names("sin(x)", "ca") == "sin(x)"
+    assert function_names(r"\sin{\left(x \right)} + \sinh{x}", "es", latex=True) \
+        == r"\operatorname{sen}{\left(x \right)} + \sinh{x}"
+    beta, r = sympy.symbols("beta r")
+    label = formula(r * sympy.sin(beta), 1.0, "es")
+    assert "operatorname{sen}" in label and settable(label)
+    assert r"\sin" in formula(r * sympy.sin(beta), 1.0, "eu")
