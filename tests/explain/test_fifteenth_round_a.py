@@ -9,7 +9,9 @@ main's pages, each a rule checked over the seeds and the four languages where it
 3. Spanish: a body rolling without slipping "gira sin deslizar sobre …", never "La rueda
    rueda sin deslizar" (the verb doubles the noun); the Catalan "la roda rodola" is two words;
 4. Spanish writes the sine sen: sen(β) in the text (HTML, Markdown), LaTeX and the figures'
-   labels; Catalan and Basque keep sin (their notes write no trigonometric function).
+   labels; Catalan and Basque keep sin (their notes write no trigonometric function);
+5. C5-E.4: the notes ask for the wheels' angular velocities: the right wheel's is asked
+   (the model's `ask`), derived by its own equation and answered.
 """
 from __future__ import annotations
 
@@ -127,3 +129,21 @@ def test_the_sine_is_renamed_only_as_a_call():
     label = formula(r * sympy.sin(beta), 1.0, "es")
     assert "operatorname{sen}" in label and settable(label)
     assert r"\sin" in formula(r * sympy.sin(beta), 1.0, "eu")
+
+
+# ---- 5. C5-E.4: the right wheel's ω --------------------------------------------------------
+
+RIGHT = {"en": "right wheel", "es": "rueda derecha", "ca": "roda dreta", "eu": "eskuineko gurpila"}
+LEFT = {"en": "left wheel", "es": "rueda izquierda", "ca": "roda esquerra", "eu": "ezkerreko gurpila"}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_right_wheels_rate_is_derived_and_answered(lang):
+    """By hand: the chassis translates with v_U = (−v, 0), so v_A2 = (−v, 0); the right wheel
+    (radius R) rolls on the ground at K below A2: v_A2 = ω × KA2 = (−ω·R, 0), ω = v/R
+    (counter-clockwise), from its own equation at K, and in the answers after the left wheel's."""
+    page = rendered("seed_c5_e4_upper_wheel", lang, "md", drawings=False)
+    right, left = f"ω_{{{RIGHT[lang]}}}", f"ω_{{{LEFT[lang]}}}"
+    assert f"{right} = |v_A2K| / KA2 = v/R" in page
+    assert f"| {right} | v/R |" in page
+    assert page.index(f"| {left} | v/R |") < page.index(f"| {right} | v/R |")
