@@ -11,7 +11,9 @@ main's pages, each a rule checked over the seeds and the four languages where it
 4. Spanish writes the sine sen: sen(β) in the text (HTML, Markdown), LaTeX and the figures'
    labels; Catalan and Basque keep sin (their notes write no trigonometric function);
 5. C5-E.4: the notes ask for the wheels' angular velocities: the right wheel's is asked
-   (the model's `ask`), derived by its own equation and answered.
+   (the model's `ask`), derived by its own equation and answered;
+6. a witness's perpendicular that is a wheel's axle itself is said once, inside the axle's
+   words in the centre's sentence (C5-2.2), never as a sentence of its own before it.
 """
 from __future__ import annotations
 
@@ -147,3 +149,29 @@ def test_the_right_wheels_rate_is_derived_and_answered(lang):
     assert f"{right} = |v_A2K| / KA2 = v/R" in page
     assert f"| {right} | v/R |" in page
     assert page.index(f"| {left} | v/R |") < page.index(f"| {right} | v/R |")
+
+
+# ---- 6. the axle that is the witness's perpendicular, said once ----------------------------
+
+OWN_AXLE = {"en": "is the axle of wheel", "es": "es el propio eje", "ca": "és l’eix mateix", "eu": "ardatza bera da"}
+ALSO = {"en": "perpendicular to v_P through P", "es": "perpendicular a v_P por P",
+        "ca": "perpendicular a v_P per P", "eu": "P puntuan v_P abiadurarekiko perpendikularra"}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_no_sentence_says_the_axle_is_the_perpendicular_apart(name, lang):
+    """C5-2.2 read "The perpendicular to v_P through P is the axle of wheel C3 itself: the
+    second line is the perpendicular to v_O through O." and then the centre's sentence named
+    both lines again."""
+    assert OWN_AXLE[lang] not in rendered(name, lang, "md", drawings=False)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_articulated_chassis_centre_names_the_axle_once(lang):
+    """C5-2.2: the trailing chassis's centre lies on C3's axle (which is also the
+    perpendicular to v_P through P) and on the perpendicular to v_O through O: said once."""
+    page = rendered("seed_c5_2_2_articulated", lang, "md", drawings=False)
+    assert page.count(ALSO[lang]) == 1
+    line = next(ln for ln in page.splitlines() if ALSO[lang] in ln)
+    assert "I_S2 = (0" in line and "v_O" in line

@@ -148,8 +148,7 @@ def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
     said = _equiprojective(ctx, b, wheels, speeds, witness)
     if said:
         witness = said[0].args["p"].text
-        lines = _witness_first(ctx, _lines(ctx, b, wheels, speeds), witness, speeds)
-        said += _on_axle(ctx, lines, witness)
+        lines = _on_axle(ctx, _witness_first(ctx, _lines(ctx, b, wheels, speeds), witness, speeds), witness)
     for i, (p1, d1, why1) in enumerate(lines):
         for p2, d2, why2 in lines[i + 1:]:
             det = d1[0] * d2[1] - d1[1] * d2[0]
@@ -185,25 +184,27 @@ def _witness_first(ctx: Ctx, lines: list, witness: str, speeds: dict) -> list:
 
 
 def _on_axle(ctx: Ctx, lines: list, witness: str) -> list:
-    """Why the perpendicular to the witness's velocity does not place the centre, when it is a
-    wheel's axle itself: the witness lies on the axle and moves along the wheel's plane
-    (C5-2.2's P, the axle's midpoint: the notes' "perpendicular a la velocitat de P" and "l'eix
-    de les rodes" are one line), so the second line is another known velocity's. Empty when the
-    witness's line is not an axle, or no other line meets the axle."""
+    """The lines with the perpendicular to the witness's velocity folded into the wheel's
+    axle when it is that axle itself: the witness lies on the axle and moves along the
+    wheel's plane (C5-2.2's P, the axle's midpoint: the notes' "perpendicular a la velocitat
+    de P" and "l'eix de les rodes" are one line), so the axle is said once, with that
+    coincidence in its own words, and the second line is another known velocity's (round
+    15a: a separate sentence said it before the centre's sentence said the lines again).
+    The lines unchanged when the witness's line is not an axle, or no other line meets it."""
     own = next((x for x in lines if _own_line(x[2], witness)), None)
     axle = next((x for x in lines if x[2].key == "vehicle.line.wheel"), None)
     if own is None or axle is None:
-        return []
+        return lines
     (p1, d1, _), (p2, d2, why) = own, axle
     if abs(d1[0] * d2[1] - d1[1] * d2[0]) > 1e-9 * _size(d1) * _size(d2) or \
             abs((p1[0] - p2[0]) * d2[1] - (p1[1] - p2[1]) * d2[0]) > 1e-9 * _size(d2) * ctx.inst.scale:
-        return []
-    other = next((x for x in lines if x[2].key == "vehicle.line.velocity" and not _own_line(x[2], witness)
-                  and abs(x[1][0] * d2[1] - x[1][1] * d2[0]) > 1e-9 * _size(x[1]) * _size(d2)), None)
-    if other is None:
-        return []
-    return [msg("vehicle.centre_on_axle", point=Name(witness), sym=Sym("v", witness), joint=why.args["joint"],
-                other=other[2].args["point"], vo=other[2].args["sym"])]
+        return lines
+    if not any(x[2].key == "vehicle.line.velocity" and not _own_line(x[2], witness)
+               and abs(x[1][0] * d2[1] - x[1][1] * d2[0]) > 1e-9 * _size(x[1]) * _size(d2) for x in lines):
+        return lines
+    told = msg("vehicle.line.wheel_own", joint=why.args["joint"], point=why.args["point"],
+               sym=Sym("v", witness), witness=Name(witness))
+    return [(p2, d2, told) if x is axle else x for x in lines if x is not own]
 
 
 def _twin(ctx: Ctx, b: str, witness: str, speeds: dict) -> Optional[str]:
