@@ -13,7 +13,9 @@ main's pages, each a rule checked over the seeds and the four languages where it
 5. C5-E.4: the notes ask for the wheels' angular velocities: the right wheel's is asked
    (the model's `ask`), derived by its own equation and answered;
 6. a witness's perpendicular that is a wheel's axle itself is said once, inside the axle's
-   words in the centre's sentence (C5-2.2), never as a sentence of its own before it.
+   words in the centre's sentence (C5-2.2), never as a sentence of its own before it;
+7. a velocity given on one body at a pin, used as another body's: the pin common to both
+   said first, v_{F∈chassis} = v_{F∈fork} (C5-2.1).
 """
 from __future__ import annotations
 
@@ -175,3 +177,31 @@ def test_the_articulated_chassis_centre_names_the_axle_once(lang):
     assert page.count(ALSO[lang]) == 1
     line = next(ln for ln in page.splitlines() if ALSO[lang] in ln)
     assert "I_S2 = (0" in line and "v_O" in line
+
+
+# ---- 7. the pin common to the two bodies ----------------------------------------------------
+
+SHARED = {"en": "v_{F∈chassis} = v_{F∈fork}.", "es": "v_{F∈chasis} = v_{F∈horquilla}.",
+          "ca": "v_{F∈xassís} = v_{F∈forquilla}.", "eu": "v_{F∈txasisa} = v_{F∈furka}."}
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_tricycles_pin_carries_the_given_velocity(lang):
+    """C5-2.1 gives v_{F∈fork} only; the chassis's equation starts from v_{F∈chassis}: F is
+    the pin common to the fork and the chassis, said before the equation that uses it."""
+    page = rendered("seed_c5_2_1_tricycle", lang, "md", drawings=False)
+    chassis = SHARED[lang].split(" = ")[0]
+    said = page.index(SHARED[lang])
+    assert said < page.index(f"{chassis}  =")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_point_of_a_body_used_is_given_or_said(name, lang):
+    """Every "Given: v_{P∈a}" whose P starts an equation as v_{P∈b} (another body) has the
+    equality v_{P∈b} = v_{P∈a} said on the page."""
+    page = rendered(name, lang, "md", drawings=False)
+    for m in re.finditer(r"Given: (v_\{(\w+)∈[^}]+\})|Dado: (v_\{(\w+)∈[^}]+\})", page):
+        given, point = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
+        for other in set(re.findall(rf"^(v_\{{{point}∈[^}}]+\}})  =", page, re.M)) - {given}:
+            assert f"{other} = {given}" in page

@@ -17,7 +17,7 @@ from typing import Optional
 from .context import Ctx, omega_sym, read_off, segment
 from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, msg
 from .given import whole_along
-from .kinds import knife_edge, pin_only
+from .kinds import knife_edge, pin_only, pins
 
 TOL = 1e-9
 
@@ -335,7 +335,7 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
     ident = Sym("I", f"{ctx.frame},{b}", vector=False)
     w = omega_sym(b)
     ctx.worked.add(f"centre:{b}")       # its velocities come from the centre: no check of it by them
-    out: list = [msg("vehicle.centre", body=Name(b, "body"), first=why[0], second=why[1], centre=ident,
+    out: list = _pin_shared(ctx, b, witness) + [msg("vehicle.centre", body=Name(b, "body"), first=why[0], second=why[1], centre=ident,
                      where=Value(ctx.clean(_exact_centre(ctx, b, centre), "len"), "len"))]
     known = set(speeds or ()) - {witness}
     for k, p in enumerate([witness] + [q for q in ctx.model.bodies[b].points if q != witness and q not in known]):
@@ -349,6 +349,24 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
             out.append(Derived(w, read_off(ctx, Sym("v", segment(p, "I")), arm, ctx.omega(b)), ctx.value(ctx.omega(b), "rate"), b,
                                "omega", not ctx.symbolic, term, ctx.clean(_arm(ctx, b, p), "len")))
     return out
+
+
+def _pin_shared(ctx: Ctx, b: str, witness: str) -> list:
+    """The sentence that the witness is the pin common to b and the body its velocity is
+    given on, so the given velocity is b's point's too: v_{F∈chassis} = v_{F∈fork} (C5-2.1:
+    only v_{F∈fork} is given, the equation starts from v_{F∈chassis}). Empty when the
+    velocity is given on b itself, or no pin joins the two bodies there."""
+    for d in ctx.model.drivers:
+        if d.kind != "velocity":
+            continue
+        given = d.driven_point()
+        other = given.body
+        if given.point != witness or other in (None, b):
+            continue
+        if any(pins(j) and j.at == witness and {j.a, j.b} == {b, other} for j in ctx.model.joints):
+            return [msg("vehicle.pin_shared", point=Name(witness), a=Name(other, "body"), b=Name(b, "body"),
+                        sym=Sym("v", ctx.point_label(witness, b)), other=Sym("v", ctx.point_label(witness, other)))]
+    return []
 
 
 def _exact_centre(ctx: Ctx, b: str, approx: tuple):
