@@ -60,7 +60,7 @@ def function_names(text: str, lang: str | None, latex: bool = False) -> str:
     renamed (`sin(`, `\\sin`), never a word or a symbol spelt the same."""
     for name, own in FUNCTION_NAMES.get(lang or "", {}).items():
         if latex:
-            text = re.sub(rf"\\{name}(?![A-Za-z])", lambda _m: rf"\operatorname{{{own}}}", text)
+            text = re.sub(rf"\\{name}(?![A-Za-z])", rf"\\operatorname{{{own}}}", text)
         else:
             text = re.sub(rf"(?<![\w\\]){name}(?=\()", own, text)
     return text
