@@ -45,3 +45,22 @@ def written(x: float, digits: int, decimal: str, power: Callable[[str, int], str
 def superscript_power(mantissa: str, exponent: int) -> str:
     """`1,5×10⁻⁵`: a power of ten in plain text (a figure's label), with the digits raised."""
     return f"{mantissa}×10{str(exponent).translate(SUPERSCRIPTS)}"
+
+
+# The functions a language writes under another name: Spanish writes the sine sen (sen β),
+# as its textbooks and the RAE do; Catalan and Basque write sin, as English (the Catalan
+# notes write no trigonometric function, so they keep sympy's name). One table for the
+# text (HTML, Markdown), LaTeX and the figures' labels.
+FUNCTION_NAMES: dict[str, dict[str, str]] = {"es": {"sin": "sen"}}
+
+
+def function_names(text: str, lang: str | None, latex: bool = False) -> str:
+    """`text`, a formula in sympy's plain form (`sin(β)`) or LaTeX (`\\sin{\\left(β \\right)}`),
+    with each function named as `lang` writes it (`sen(β)` in Spanish). Only a call is
+    renamed (`sin(`, `\\sin`), never a word or a symbol spelt the same."""
+    for name, own in FUNCTION_NAMES.get(lang or "", {}).items():
+        if latex:
+            text = re.sub(rf"\\{name}(?![A-Za-z])", rf"\\operatorname{{{own}}}", text)
+        else:
+            text = re.sub(rf"(?<![\w\\]){name}(?=\()", own, text)
+    return text

@@ -223,7 +223,7 @@ SEEDS = sorted(p.stem for p in (Path(__file__).resolve().parents[2] / "examples"
 
 SAYS_MOTION = ("driver.along", "driver.velocity", "driver.whole", "group.wheel_a", "vehicle.driven", "vehicle.translation",
                "contact.fixed",            # a point of a body welded to the frame does not move
-               "rolling.centre", "centre.site", "centre.site_i", "centre.site_s",   # a contact at rest, a centre placed before
+               "rolling.centre", "centre.site", "centre.site_s",   # a contact at rest, a centre placed before
                "rolling.same")             # no slip: the two material points at a contact move alike
 
 

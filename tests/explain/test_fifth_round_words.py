@@ -113,7 +113,7 @@ def test_a_contact_sentence_stands_next_to_the_equation_that_uses_it():
     """C5-E.3: the right wheel's rolling sentence came between the rod's two equations; it
     comes after them, before the wheel's equation v_B = v_K∈wheel + v_B-K (its contact K)."""
     text = rendered("seed_c5_e3_wheels_with_rod", "eu", "md", False)
-    rod = text.index("v_B  =  v_I  +")
+    rod = text.index("v_B  =  v_{I_biela}  +")
     sentence = text.index("kontaktuko K puntuak")
     wheel = text.index("v_B  =  v_{K∈eskuineko gurpila}")
     assert rod < sentence < wheel

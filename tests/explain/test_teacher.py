@@ -54,7 +54,7 @@ def test_no_markdown_mentions_colours(name, lang, monkeypatch):
 @pytest.mark.parametrize("name,lang,wrong,right", [
     # a plural body's name (les rodes, las ruedas) takes a plural verb
     ("seed_c5_e1_cavity", "ca", "*rodes* rodola", "*rodes* rodolen"),
-    ("seed_c5_e1_cavity", "es", "*ruedas* rueda ", "*ruedas* ruedan"),
+    ("seed_c5_e1_cavity", "es", "*ruedas* gira ", "*ruedas* giran"),
     # two wheels (les rodes, feminine) do not slip "l'un sobre l'altre": between themselves
     ("seed_c5_e4_upper_wheel", "ca", "no llisquen l’un sobre l’altre", "no llisquen entre si"),
     # a belt's two pulleys: their rims have one speed (not "both move with the same speed")

@@ -99,7 +99,7 @@ def test_four_bar_symbolic(four_bar):
     assert "(−<i>a</i>·<i>w<sub>2</sub></i>·sin(<i>θ<sub>2</sub></i>), <i>a</i>·<i>w<sub>2</sub></i>·cos(<i>θ<sub>2</sub></i>))" in page
     assert "theta" not in page and not re.search(r"\bw2\b", page)
     text = render(four_bar, "es", "md", drawings=False)
-    assert "A = (a·cos(θ₂); a·sin(θ₂))" in text and "theta" not in text     # Spanish separates by ;
+    assert "A = (a·cos(θ₂); a·sen(θ₂))" in text and "theta" not in text     # Spanish separates by ; and writes sen
     tex = render(four_bar, "eu", "tex", drawings=False)
     assert r"a \cos{\left(\theta_{2} \right)}" in tex and "theta2" not in tex
     drawn = render(four_bar, "en", "html")                    # the drawing's caption names the values

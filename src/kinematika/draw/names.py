@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 from typing import Any, Iterable, Optional, Sequence
 
-from ..numerals import DECIMAL, decimal_sign, separator, superscript_power, written
+from ..numerals import DECIMAL, decimal_sign, function_names, separator, superscript_power, written
 
 _SIMPLE = re.compile(r"^[\w.,'·’ -]+$")     # letters of any script (mathtext sets them), digits, _ . , ' · ’ - and spaces
 FORMULA_CHARS = 24            # longer formulas (as plain text) are shown by their value
@@ -247,6 +247,7 @@ def formula(expr: Any, value: float, lang: Optional[str] = None, spelt: Optional
     names = {s: latex(Symbol(known[s.name])) for s in getattr(tidied, "free_symbols", ()) if s.name in known}
     body = written_latex(tidied, names)
     body = body.replace(r"\left|", "|").replace(r"\right|", "|")   # mathtext: plain bars
+    body = function_names(body, lang, latex=True)          # Spanish sen, as the text
     text = "$" + body.replace(r"\frac", r"\dfrac") + "$"    # full-size fractions
     if not settable(text):
         return f"≈ {value_text(value, lang)}"

@@ -216,7 +216,7 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
     """The centres relative to the frame that the first centres section places by a
     construction (Aronhold–Kennedy, a joint's line), for the velocity steps to start from:
     {name: (body, point)} of those at a point (a point of the body there keeps its name,
-    else I, or the centre's own symbol when there are several), and {body: note} of those at infinity (the body translates)."""
+    else the centre's own symbol, I_pulley), and {body: note} of those at infinity (the body translates)."""
     if not centres_first(ctx):       # decided by the builder with the order of solution
         return {}, {}
     from .document import centre_point
@@ -236,12 +236,12 @@ def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, Cent
                 still[body] = note
             continue
         found.append((body, tuple(where), _point_name(ctx, body, where)))
-    unnamed = sum(1 for _, _, name in found if name is None)
     for body, where, name in found:
         if name is None:
-            # the notes' CIR ≡ I: one centre placed on a page is the point I; several, each
-            # its own symbol throughout (I_OQ, never a number: `document.centre_point`)
-            name = "I" if unnamed == 1 else centre_point(body)
+            # a centre at no point of the model is its own symbol throughout (I_OQ, never a
+            # number: `document.centre_point`), one centre or several: a page that placed
+            # I_pulley never renames it I (one symbol for one point, round 15a)
+            name = centre_point(body)
             while name in ctx.inst.points:          # never a point's name
                 name += "'"
         ctx.name_position(name, where)

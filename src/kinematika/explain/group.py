@@ -1306,10 +1306,10 @@ def still_contact(ctx: Ctx, j: Joint, fixed: str, body: str):
 
 def centre_site(ctx: Ctx, name: str, body: str):
     """The sentence that the instant centre placed before (a point of the body there, or
-    I14) has no velocity."""
-    key = "centre.site_i" if name in ctx.centre_points else "centre.site"
-    if CENTRE_POINT_RE.fullmatch(name):         # the point is the symbol itself: no "I_OQ ≡ I_OQ"
-        key = "centre.site_s"
+    I_pulley) has no velocity."""
+    # a centre at no point of the model is named by its symbol (I_pulley), so it is said once:
+    # "I_pulley, found above, has no velocity", never "I_pulley … is the point I" (round 15a)
+    key = "centre.site_s" if CENTRE_POINT_RE.fullmatch(name) else "centre.site"
     return msg(key, point=point_name(name), body=body_name(body), frame=Name(ctx.frame, "body", reference=True),
                centre=Sym("I", f"{ctx.frame},{body}", vector=False), sym=Sym("v", ctx.point_label(name, body)))
 

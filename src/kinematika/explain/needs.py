@@ -98,7 +98,7 @@ def _prune(ctx: Ctx, doc: Document, bodies: set[str]) -> dict[str, set[str]]:
     return unworked
 
 
-AT_REST = ("rolling.centre", "centre.site", "centre.site_i", "centre.site_s")
+AT_REST = ("rolling.centre", "centre.site", "centre.site_s")
 
 
 def _drop_unused_rest(sec: Section) -> None:

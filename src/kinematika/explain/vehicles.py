@@ -17,7 +17,7 @@ from typing import Optional
 from .context import Ctx, omega_sym, read_off, segment
 from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, msg
 from .given import whole_along
-from .kinds import knife_edge, pin_only
+from .kinds import knife_edge, pin_only, pins
 
 TOL = 1e-9
 
@@ -148,8 +148,7 @@ def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
     said = _equiprojective(ctx, b, wheels, speeds, witness)
     if said:
         witness = said[0].args["p"].text
-        lines = _witness_first(ctx, _lines(ctx, b, wheels, speeds), witness, speeds)
-        said += _on_axle(ctx, lines, witness)
+        lines = _on_axle(ctx, _witness_first(ctx, _lines(ctx, b, wheels, speeds), witness, speeds), witness)
     for i, (p1, d1, why1) in enumerate(lines):
         for p2, d2, why2 in lines[i + 1:]:
             det = d1[0] * d2[1] - d1[1] * d2[0]
@@ -185,25 +184,27 @@ def _witness_first(ctx: Ctx, lines: list, witness: str, speeds: dict) -> list:
 
 
 def _on_axle(ctx: Ctx, lines: list, witness: str) -> list:
-    """Why the perpendicular to the witness's velocity does not place the centre, when it is a
-    wheel's axle itself: the witness lies on the axle and moves along the wheel's plane
-    (C5-2.2's P, the axle's midpoint: the notes' "perpendicular a la velocitat de P" and "l'eix
-    de les rodes" are one line), so the second line is another known velocity's. Empty when the
-    witness's line is not an axle, or no other line meets the axle."""
+    """The lines with the perpendicular to the witness's velocity folded into the wheel's
+    axle when it is that axle itself: the witness lies on the axle and moves along the
+    wheel's plane (C5-2.2's P, the axle's midpoint: the notes' "perpendicular a la velocitat
+    de P" and "l'eix de les rodes" are one line), so the axle is said once, with that
+    coincidence in its own words, and the second line is another known velocity's (round
+    15a: a separate sentence said it before the centre's sentence said the lines again).
+    The lines unchanged when the witness's line is not an axle, or no other line meets it."""
     own = next((x for x in lines if _own_line(x[2], witness)), None)
     axle = next((x for x in lines if x[2].key == "vehicle.line.wheel"), None)
     if own is None or axle is None:
-        return []
+        return lines
     (p1, d1, _), (p2, d2, why) = own, axle
     if abs(d1[0] * d2[1] - d1[1] * d2[0]) > 1e-9 * _size(d1) * _size(d2) or \
             abs((p1[0] - p2[0]) * d2[1] - (p1[1] - p2[1]) * d2[0]) > 1e-9 * _size(d2) * ctx.inst.scale:
-        return []
-    other = next((x for x in lines if x[2].key == "vehicle.line.velocity" and not _own_line(x[2], witness)
-                  and abs(x[1][0] * d2[1] - x[1][1] * d2[0]) > 1e-9 * _size(x[1]) * _size(d2)), None)
-    if other is None:
-        return []
-    return [msg("vehicle.centre_on_axle", point=Name(witness), sym=Sym("v", witness), joint=why.args["joint"],
-                other=other[2].args["point"], vo=other[2].args["sym"])]
+        return lines
+    if not any(x[2].key == "vehicle.line.velocity" and not _own_line(x[2], witness)
+               and abs(x[1][0] * d2[1] - x[1][1] * d2[0]) > 1e-9 * _size(x[1]) * _size(d2) for x in lines):
+        return lines
+    told = msg("vehicle.line.wheel_own", joint=why.args["joint"], point=why.args["point"],
+               sym=Sym("v", witness), witness=Name(witness))
+    return [(p2, d2, told) if x is axle else x for x in lines if x is not own]
 
 
 def _twin(ctx: Ctx, b: str, witness: str, speeds: dict) -> Optional[str]:
@@ -334,7 +335,7 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
     ident = Sym("I", f"{ctx.frame},{b}", vector=False)
     w = omega_sym(b)
     ctx.worked.add(f"centre:{b}")       # its velocities come from the centre: no check of it by them
-    out: list = [msg("vehicle.centre", body=Name(b, "body"), first=why[0], second=why[1], centre=ident,
+    out: list = _pin_shared(ctx, b, witness) + [msg("vehicle.centre", body=Name(b, "body"), first=why[0], second=why[1], centre=ident,
                      where=Value(ctx.clean(_exact_centre(ctx, b, centre), "len"), "len"))]
     known = set(speeds or ()) - {witness}
     for k, p in enumerate([witness] + [q for q in ctx.model.bodies[b].points if q != witness and q not in known]):
@@ -348,6 +349,24 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
             out.append(Derived(w, read_off(ctx, Sym("v", segment(p, "I")), arm, ctx.omega(b)), ctx.value(ctx.omega(b), "rate"), b,
                                "omega", not ctx.symbolic, term, ctx.clean(_arm(ctx, b, p), "len")))
     return out
+
+
+def _pin_shared(ctx: Ctx, b: str, witness: str) -> list:
+    """The sentence that the witness is the pin common to b and the body its velocity is
+    given on, so the given velocity is b's point's too: v_{F∈chassis} = v_{F∈fork} (C5-2.1:
+    only v_{F∈fork} is given, the equation starts from v_{F∈chassis}). Empty when the
+    velocity is given on b itself, or no pin joins the two bodies there."""
+    for d in ctx.model.drivers:
+        if d.kind != "velocity":
+            continue
+        given = d.driven_point()
+        other = given.body
+        if given.point != witness or other in (None, b):
+            continue
+        if any(pins(j) and j.at == witness and {j.a, j.b} == {b, other} for j in ctx.model.joints):
+            return [msg("vehicle.pin_shared", point=Name(witness), a=Name(other, "body"), b=Name(b, "body"),
+                        sym=Sym("v", ctx.point_label(witness, b)), other=Sym("v", ctx.point_label(witness, other)))]
+    return []
 
 
 def _exact_centre(ctx: Ctx, b: str, approx: tuple):

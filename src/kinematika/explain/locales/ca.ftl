@@ -583,7 +583,8 @@ vehicle-equiprojective_along = Per la propietat d’equiprojectivitat ({ $q } i 
         [vowel] d’{ $body }
        *[other] de { $body }
     }), les seves velocitats tenen la mateixa component segons { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, amb { $seg }/|{ $seg }| = { $unit }, de manera que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } és a l’eix de la roda { $joint }, de manera que { $vp } té la direcció del pla de la roda: { $vp } = |{ $vp }| e, amb e = { $along } i e · { $seg }/|{ $seg }| = { $cos }. Per tant, |{ $vp }| = { $speed }, i { $vp } = { $value }.
-vehicle-centre_on_axle = La perpendicular a { $sym } per { $point } és l’eix mateix de la roda { $joint }: la segona recta és la perpendicular a { $vo } per { $other }.
+vehicle-line-wheel_own = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix, que és també la perpendicular a { $sym } per { $witness }: la roda no llisca lateralment)
+vehicle-pin_shared = { $point } és el passador comú a { $a } i { $b }: { $sym } = { $other }.
 vehicle-centre = El CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -814,17 +815,17 @@ centre-field = és a la perpendicular a { $v } per { $q }, a la distància { $ar
         [vowel] d’{ $q }
        *[other] de { $q }
     }, { $side }, de manera que el CIR és
-centre-rate = a partir de la velocitat angular trobada més amunt a través { ELISION($line) ->
+centre-rate = a partir de { $w } (trobada més amunt a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
-    }: és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+    }): és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }, { $side }, de manera que el CIR és
-centre-rate_step = a partir de la velocitat angular trobada al pas { $step } a través { ELISION($line) ->
+centre-rate_step = a partir de { $w } (trobada al pas { $step } a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
-    }: és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+    }): és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }, { $side }, de manera que el CIR és
@@ -879,8 +880,7 @@ centres-found_above_step = { $centre } = { $value }: trobat al pas { $step }, am
        *[other] de { $body }
     }.
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt: { $sym } = 0.
-centre-site_i = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, és el punt { $point }: no té velocitat, { $sym } = 0.
-centre-site_s = El CIR { $centre } de { $body } respecte de { $frame }, trobat més amunt, no té velocitat: { $sym } = 0.
+centre-site_s = { $centre }, trobat més amunt, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte
 geom-rule = La regla de tot contacte de rodolament: la condició de no lliscament es compleix a cada instant al punt geomètric de contacte (aquí { $geom }), que es mou; derivant-la al llarg d’aquest punt s’obté { $rule }: les components tangencials de les dues acceleracions són iguals i les normals difereixen en aquest terme, segons la normal comuna. Cal la velocitat del punt geomètric:
 geom-bar = { $geom }, el punt geomètric de contacte, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, amb { $part }/{ $whole } = { $ratio }, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:

@@ -418,7 +418,8 @@ vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $jo
 vehicle-line-velocity = the perpendicular to { $sym } at { $point }
 vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel's plane: { $vp } = |{ $vp }| e, with e = { $along } and e · { $seg }/|{ $seg }| = { $cos }. Hence |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, and { $vp } = { $value }.
 vehicle-equiprojective_along = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel's plane: { $vp } = |{ $vp }| e, with e = { $along } and e · { $seg }/|{ $seg }| = { $cos }. Hence |{ $vp }| = { $speed }, and { $vp } = { $value }.
-vehicle-centre_on_axle = The perpendicular to { $sym } through { $point } is the axle of wheel { $joint } itself: the second line is the perpendicular to { $vo } through { $other }.
+vehicle-line-wheel_own = the perpendicular at { $point } to the plane of wheel { $joint } (its axle, which is also the perpendicular to { $sym } through { $witness }: the wheel does not slip sideways)
+vehicle-pin_shared = { $point } is the pin common to { $a } and { $b }: { $sym } = { $other }.
 vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel: { COUNT($body) ->
         [many] their centre is at infinity, they translate
@@ -577,8 +578,8 @@ centre-line-slot = the normal at { $point } to the slot (relative to the slotted
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
 centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
-centre-rate = from the angular velocity found above through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
-centre-rate_step = from the angular velocity found in Step { $step } through { $line }: it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
+centre-rate = from { $w } (found above through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
+centre-rate_step = from { $w } (found in Step { $step } through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = above { $q }
 side-below = below { $q }
@@ -597,11 +598,7 @@ how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from t
 centres-found_above = { $centre } = { $value }: placed above, in the velocity step of { $body }.
 centres-found_above_step = { $centre } = { $value }: placed in Step { $step }, with the velocities of { $body }.
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed above: { $sym } = 0.
-centre-site_i = The instant centre { $centre } of { $body } relative to { $frame }, placed above, is the point { $point }: it has no velocity, { $sym } = 0.
-centre-site_s = The instant centre { $centre } of { $body } relative to { $frame }{ COUNT($frame) ->
-        [many] , placed above, have
-       *[one] , placed above, has
-    } no velocity: { $sym } = 0.
+centre-site_s = { $centre }, found above, has no velocity: { $sym } = 0.
 sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
 geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:

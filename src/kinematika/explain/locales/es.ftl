@@ -251,9 +251,11 @@ cond-cylindrical = par cilíndrico: { $b } { COUNT($b) ->
         [many] giran
        *[one] gira
     } alrededor del eje de { $a } y se desliza a lo largo de él.
+# "rueda sin deslizar" doubles the noun when the body is a wheel (La rueda rueda): Spanish says
+# it gira sin deslizar sobre … (round 15a)
 rolling-noslip = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
 rolling-noslip_edge = { $b } no { COUNT($b) ->
         [many] deslizan
@@ -264,26 +266,26 @@ rolling-same_edge = { $b } no { COUNT($b) ->
        *[one] desliza
     } sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
 rolling-glide = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre el borde de { $a }. Visto desde { $a }, su centro { $centre } mantiene la distancia al borde: se mueve según una recta paralela a la tangente en { $point }. Con ejes en { $centre } que giran con { $a }, el movimiento de { $centre } es el de arrastre (el del punto de { $a } que coincide con él) más el relativo, a lo largo de esa recta (y, en aceleraciones, el término de Coriolis).
 rolling-kept = el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
 path-circle = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vs }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
 path-line = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
 rolling-equal = Sin deslizamiento en el contacto { $point }: { $sym } = { $other }.
 rolling-same = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
 rolling-centre = { $b } { COUNT($b) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $a }, que no se mueve: el punto { $point } de { $b } en el contacto no tiene velocidad, { $sym } = 0, así que es el CIR de { $b }.
 dir-guide = guía de { $holder }
 dir-normal = normal
@@ -320,8 +322,8 @@ composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
 composition-drag = Arrastre: el movimiento del punto de la referencia móvil que coincide con él:
 composition-relative = Relativo: el movimiento visto desde la referencia móvil, { $sym } = { $rel }:
 composition-rolls = { $body } { COUNT($body) ->
-        [many] ruedan
-       *[one] rueda
+        [many] giran
+       *[one] gira
     } sin deslizar sobre { $frame } en { $point }: visto desde { $frame }, { $point } es el CIR de { $body }, { $sym } = 0, y todos sus puntos giran alrededor de él.
 sec-curvature = Curvatura de las trayectorias
 curvature-intro = La aceleración se descompone en una parte tangencial, según la velocidad, y una normal, perpendicular a ella; el radio de curvatura es { $rho }.
@@ -367,11 +369,12 @@ vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el pun
 vehicle-line-velocity = la perpendicular a { $sym } por el punto { $point }
 vehicle-equiprojective = Por la propiedad de equiproyectividad ({ $q } y { $p } son puntos de { $body }), sus velocidades tienen la misma componente según { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, con { $seg }/|{ $seg }| = { $unit }, de modo que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } está en el eje de la rueda { $joint }, así que { $vp } tiene la dirección del plano de la rueda: { $vp } = |{ $vp }| e, con e = { $along } y e · { $seg }/|{ $seg }| = { $cos }. Por tanto, |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, y { $vp } = { $value }.
 vehicle-equiprojective_along = Por la propiedad de equiproyectividad ({ $q } y { $p } son puntos de { $body }), sus velocidades tienen la misma componente según { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, con { $seg }/|{ $seg }| = { $unit }, de modo que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } está en el eje de la rueda { $joint }, así que { $vp } tiene la dirección del plano de la rueda: { $vp } = |{ $vp }| e, con e = { $along } y e · { $seg }/|{ $seg }| = { $cos }. Por tanto, |{ $vp }| = { $speed }, y { $vp } = { $value }.
-vehicle-centre_on_axle = La perpendicular a { $sym } por { $point } es el propio eje de la rueda { $joint }: la segunda recta es la perpendicular a { $vo } por { $other }.
+vehicle-line-wheel_own = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje, que es también la perpendicular a { $sym } por { $witness }: la rueda no desliza lateralmente)
+vehicle-pin_shared = { $point } es el pasador común a { $a } y { $b }: { $sym } = { $other }.
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
 vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
 vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }: { $body } no gira (su CIR está en el infinito), se traslada y todos sus puntos se mueven como { $p }.
-vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
+vehicle-spin = La rueda { $joint } gira sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
 triad-closure = Conocido { $point } como punto del eslabón ternario, su articulación { $pin } se cierra como en una díada:
@@ -508,8 +511,8 @@ centre-line-slot = la normal en { $point } a la ranura (respecto del sólido ran
 centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
 centre-field = está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, de modo que el CIR está
-centre-rate = a partir de la velocidad angular hallada arriba a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, así que el CIR está
-centre-rate_step = a partir de la velocidad angular hallada en el paso { $step } a través de { $line }: está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, así que el CIR está
+centre-rate = a partir de { $w } (hallada arriba a través de { $line }): está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, así que el CIR está
+centre-rate_step = a partir de { $w } (hallada en el paso { $step } a través de { $line }): está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, así que el CIR está
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = por encima de { $q }
 side-below = por debajo de { $q }
@@ -528,8 +531,7 @@ how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia d
 centres-found_above = { $centre } = { $value }: hallado arriba, en el paso de velocidades de { $body }.
 centres-found_above_step = { $centre } = { $value }: hallado en el paso { $step }, con las velocidades de { $body }.
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado arriba: { $sym } = 0.
-centre-site_i = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, es el punto { $point }: no tiene velocidad, { $sym } = 0.
-centre-site_s = El CIR { $centre } de { $body } respecto de { $frame }, hallado arriba, no tiene velocidad: { $sym } = 0.
+centre-site_s = { $centre }, hallado arriba, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto
 geom-rule = La regla de todo contacto de rodadura: la condición de no deslizamiento se cumple en cada instante en el punto geométrico de contacto (aquí { $geom }), que se mueve; derivándola a lo largo de él se obtiene { $rule }: las componentes tangenciales de las dos aceleraciones son iguales y las normales difieren en este término, según la normal común. Hace falta la velocidad del punto geométrico:
 geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, con { $part }/{ $whole } = { $ratio }, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:

@@ -325,7 +325,8 @@ vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point
 vehicle-line-velocity = { $sym } abiadurarekiko perpendikularra { $point } puntuan
 vehicle-equiprojective = Ekiproiektibitatearen propietatearengatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, non { $seg }/|{ $seg }| = { $unit }; beraz, { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago: { $vp } = |{ $vp }| e, non e = { $along } eta e · { $seg }/|{ $seg }| = { $cos }. Ondorioz, |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, eta { $vp } = { $value }.
 vehicle-equiprojective_along = Ekiproiektibitatearen propietatearengatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, non { $seg }/|{ $seg }| = { $unit }; beraz, { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago: { $vp } = |{ $vp }| e, non e = { $along } eta e · { $seg }/|{ $seg }| = { $cos }. Ondorioz, |{ $vp }| = { $speed }, eta { $vp } = { $value }.
-vehicle-centre_on_axle = { $sym } abiadurarekiko perpendikularra { $point } puntuan { $joint } gurpilaren ardatza bera da: bigarren zuzena { $vo } abiadurarekiko perpendikularra da { $other } puntuan.
+vehicle-line-wheel_own = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza, { $witness } puntuan { $sym } abiadurarekiko perpendikularra ere badena: gurpila ez da alboetara irristatzen)
+vehicle-pin_shared = { $point } { $a } eta { $b } solidoen artikulazio komuna da: { $sym } = { $other }.
 vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
 vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }: { $body } solidoa ez da biratzen (zentroa infinituan dago), traslatzen da, eta puntu guztiak { $p } bezala mugitzen dira.
@@ -460,8 +461,8 @@ centre-line-slot = artekarekiko normala { $point } puntuan (artekadun solidoarek
 centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala ({ $point } puntua zuzen horretan zehar irristatzen da)
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
 centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
-centre-rate = goian { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
-centre-rate_step = { $step }. urratsean { $line } solidoaren bidez aurkitutako abiadura angeluarretik: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
+centre-rate = { $w } abiadura angeluarretik (goian { $line } solidoaren bidez aurkitua): { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
+centre-rate_step = { $w } abiadura angeluarretik ({ $step }. urratsean { $line } solidoaren bidez aurkitua): { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = { $q } puntuaren gainean
 side-below = { $q } puntuaren azpian
@@ -480,8 +481,7 @@ how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradio
 centres-found_above = { $centre } = { $value }: goian aurkitua, { $body } solidoaren abiadura-urratsean.
 centres-found_above_step = { $centre } = { $value }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
-centre-site_i = { $body } solidoaren biraketa-zentro instantaneoa { $frame } solidoarekiko ({ $centre }, goian aurkitua) { $point } puntua da: ez du abiadurarik, { $sym } = 0.
-centre-site_s = { $body } solidoaren { $centre } biraketa-zentro instantaneoak { $frame } solidoarekiko, goian aurkituak, ez du abiadurarik: { $sym } = 0.
+centre-site_s = Goian aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
 geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
 geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:

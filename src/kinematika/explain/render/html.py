@@ -78,7 +78,7 @@ class HtmlRenderer(Renderer):
         """A formula in Unicode and HTML (θ₂ as θ<sub>2</sub>, the model's notation), decimals as
         the language writes them; its symbols in italics, as `name` sets a parameter in the
         prose and the tables (r in "radi r", "(2·r·ω; 0)" and the Data table one letter)."""
-        return self.decimals(unicode_formula(expr, lambda n: f"<i>{html_name(self.spelt(n))}</i>", escape))
+        return self.decimals(unicode_formula(expr, lambda n: f"<i>{html_name(self.spelt(n))}</i>", escape, self.lang))
 
     def page(self, body: str) -> str:
         """The HTML page around `body`: the language, the title, the inline CSS."""

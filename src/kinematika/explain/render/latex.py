@@ -7,6 +7,7 @@ from typing import Any
 
 from ..document import Equation, Figure, Name, Sym
 from ...text import shown_lines
+from ...numerals import function_names
 from .base import DECIMAL, Renderer
 from .svg import COLOURS, MARGIN, WIDTH, Text, layout, nice
 from .names import latex_name, upright
@@ -154,6 +155,7 @@ class LatexRenderer(Renderer):
     def formula(self, expr: Any) -> str:
         """A formula as sympy's LaTeX in math mode (the model's notation), decimals as the language writes them."""
         text = tex_math(latex_formula(expr, {n: latex_name(self.spelt(n)) for n in self.wording.parameter_symbols(self.lang)}))
+        text = function_names(text, self.lang, latex=True)        # Spanish \operatorname{sen}
         return f"${DECIMAL.sub('{,}', text) if self.decimal == ',' else text}$"
 
     def page(self, body: str) -> str:

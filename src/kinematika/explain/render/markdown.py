@@ -83,7 +83,7 @@ class MarkdownRenderer(Renderer):
 
     def formula(self, expr: Any) -> str:
         """The Unicode formula (its bars |x| as they are: a table's cell escapes them)."""
-        return self.decimals(unicode_formula(expr, lambda n: unicode_name(self.spelt(n))))
+        return self.decimals(unicode_formula(expr, lambda n: unicode_name(self.spelt(n)), lang=self.lang))
 
     def page(self, body: str) -> str:
         """The body as the whole page, then each figure's reference definition (its SVG as a

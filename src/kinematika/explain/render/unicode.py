@@ -11,6 +11,7 @@ from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.str import StrPrinter
 
 from ...memo import Memo
+from ...numerals import function_names
 from ...report.values import printed, turned, written_form, written_latex  # noqa: F401  (turned: its old home)
 from .names import latex_name, unicode_name
 
@@ -112,10 +113,12 @@ _MARKED = Memo(4096)    # a command's own memory (kinematika.memo), as sympy's p
 
 
 def unicode_formula(expr: Any, name: Callable[[str], str] = unicode_name,
-                    esc: Callable[[str], str] = lambda text: text) -> str:
+                    esc: Callable[[str], str] = lambda text: text, lang: str | None = None) -> str:
     """`sqrt(2)*r**2*theta2/4` as `√2·r²·θ₂/4`: the text through `esc` (HTML's escaping),
-    each symbol as `name` writes it."""
+    each symbol as `name` writes it, each function as `lang` names it (Spanish sen(β):
+    `numerals.function_names`; the symbols are still marks, so a symbol named `sin` stays)."""
     text, names = _marked(expr)
+    text = function_names(text, lang)
     return MARKS.sub(lambda m: name(names[ord(m.group()) - MARK]), esc(text))
 
 
