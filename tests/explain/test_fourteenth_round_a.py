@@ -100,12 +100,14 @@ def test_no_meshing_wheel_is_written_by_the_word_wheel(name, lang):
 
 
 @pytest.mark.parametrize("name,lang,symbol", [
-    ("seed_c5_1_4_epicyclic", "en", "ω_sun is the angular velocity of the *sun wheel*"),
-    ("seed_c5_1_4_epicyclic", "ca", "ω_central és la velocitat angular de la *roda central*"),
-    ("seed_c5_1_4_epicyclic", "eu", "ω_zentrala *gurpil zentralaren* abiadura angeluarra da"),
-    ("seed_c5_e2_gear_change", "en", "ω_central is the angular velocity of the *fixed central wheel*"),
-    ("seed_c5_e2_gear_change", "es", "ω_central es la velocidad angular de la *rueda central fija*")])
+    ("seed_c5_1_4_epicyclic", "en", "ω_sun"),
+    ("seed_c5_1_4_epicyclic", "ca", "ω_central"),
+    ("seed_c5_1_4_epicyclic", "eu", "ω_zentrala"),
+    ("seed_c5_e2_gear_change", "en", "ω_central"),
+    ("seed_c5_e2_gear_change", "es", "ω_central")])
 def test_the_meshing_wheels_symbol_is_its_distinguishing_word(name, lang, symbol):
+    """The sun wheel's ω_sun, E.2's fixed central wheel's ω_central: written on the page (the
+    fifteenth round (b) writes no legend for a subscript read off the name)."""
     assert symbol in page(name, lang)
 
 
