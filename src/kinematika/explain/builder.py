@@ -261,7 +261,7 @@ def refer_rates(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
     equation's term), read after `prune` numbered the steps. So does a centre a vehicle's
     velocity step placed (C5-2.1's I_chassis = (0, L): placed in Step 1), named by the step
     that finds the body's ω there."""
-    for b in (b for sec in doc.sections for b in _blocks(sec)):
+    for b in doc.blocks():
         if isinstance(b, CentreNote) and b.how == "rate":
             body = next((x for x in b.pair if x != ctx.frame), b.pair[-1])
             b.step = rate_step(levels, Sym("ω", body, vector=False))
@@ -276,17 +276,10 @@ def rate_step(levels: list[Section], sym: Sym) -> Optional[int]:
     (`Derived`) or an equation's term (`step_of`)."""
     for sec in levels:
         for n, step in _steps(sec):
-            if any(isinstance(b, Derived) and _written(b.sym) == _written(sym) for b in _blocks(step)):
+            if any(isinstance(b, Derived) and _written(b.sym) == _written(sym) for b in step.leaves()):
                 return n
     return step_of(levels, sym)
 
-
-def _blocks(sec: Section) -> list:
-    """Every block of a section and of its subsections."""
-    out: list = []
-    for b in sec.blocks:
-        out += _blocks(b) if isinstance(b, Section) else [b]
-    return out
 
 
 def step_of(levels: list[Section], sym: Sym) -> Optional[int]:

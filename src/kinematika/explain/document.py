@@ -334,6 +334,13 @@ class Section:
         self.blocks.extend(blocks)
         return self
 
+    def leaves(self) -> list:
+        """Every block of the section and of its nested sections, in reading order."""
+        out: list = []
+        for b in self.blocks:
+            out += b.leaves() if isinstance(b, Section) else [b]
+        return out
+
 
 @dataclass
 class Document:
@@ -355,14 +362,7 @@ class Document:
 
     def blocks(self) -> list:
         """Every block, nested sections included, in reading order."""
-        out: list = []
-
-        def walk(sec: Section) -> None:
-            for b in sec.blocks:
-                walk(b) if isinstance(b, Section) else out.append(b)
-        for s in self.sections:
-            walk(s)
-        return out
+        return [b for s in self.sections for b in s.leaves()]
 
     def equations(self) -> list[Equation]:
         """Every vector equation, in reading order (tests check them on the raw values)."""

@@ -105,7 +105,7 @@ def _drop_unused_rest(sec: Section) -> None:
     """A sentence that a point is at rest (a contact on a fixed body, an instant centre)
     goes with the equations that start from it: none left, the sentence goes too (the belt
     touching the fixed pulley, which nothing asks)."""
-    used = {(t.sym.base, t.sym.sub) for b in _blocks(sec) if isinstance(b, Equation)
+    used = {(t.sym.base, t.sym.sub) for b in sec.leaves() if isinstance(b, Equation)
             for t in [b.target] + [t for side in b.sides for t in side]}
     for holder, block in _messages(sec):
         if block.key in AT_REST and (block.args["sym"].base, block.args["sym"].sub) not in used:
@@ -194,7 +194,7 @@ def _rates_after(ctx: Ctx, doc: Document, sec: Section) -> set[str]:
     for s in doc.sections[doc.sections.index(sec) + 1:]:
         if s.title.key in ("sec.rates_summary", "sec.rates_summary_v", "sec.answers"):
             continue                    # they list the rates found, they do not use them
-        for b in _blocks(s):
+        for b in s.leaves():
             if isinstance(b, CentreNote):
                 if b.rate is not None or b.how in ("rate", "field", "check"):
                     out.update(x for x in b.pair if x != ctx.frame)
@@ -217,7 +217,7 @@ def _drop_rows(doc: Document, bodies: set[str], alphas: set[str]) -> None:
                     if len(r) > 2 and getattr(r[0], "text", None) in alphas:
                         r[2] = "—"
         if s.title.key == "sec.structure":
-            for m in (b for b in _blocks(s) if isinstance(b, Msg) and b.key in ORDER_ITEMS):
+            for m in (b for b in s.leaves() if isinstance(b, Msg) and b.key in ORDER_ITEMS):
                 _unname(m, bodies)
             _drop_order_items(s, bodies)
 
@@ -292,7 +292,7 @@ def _used_after(doc: Document, sec: Section) -> tuple[set[str], set[tuple]]:
             continue
         if not started:
             continue
-        for b in _blocks(s):
+        for b in s.leaves():
             if isinstance(b, CentreNote):
                 names.update(w[0] for w in b.witnesses if isinstance(w[0], str))
             elif isinstance(b, Equation):
@@ -306,12 +306,6 @@ def _point_terms(eq: Equation) -> set[tuple]:
     return {(t.sym.base, t.sym.sub) for t in [t for side in eq.sides for t in side] + known_target
             if t.kind == "point"}
 
-
-def _blocks(sec: Section) -> list:
-    out: list = []
-    for b in sec.blocks:
-        out += _blocks(b) if isinstance(b, Section) else [b]
-    return out
 
 
 def _prune_section(sec: Section, level: str, asked: set[str], used: set[str], terms: set[tuple],
@@ -390,7 +384,7 @@ def _drop_orphans(sec: Section, dropped: list[Equation]) -> None:
     the section speaks of that contact (the chain's J7 on the pinion, which nothing asks)."""
     if not dropped:
         return
-    left = set().union(*[_names(b) for b in _blocks(sec) if isinstance(b, Equation)
+    left = set().union(*[_names(b) for b in sec.leaves() if isinstance(b, Equation)
                          and not any(b in eq.owned for eq in dropped)] or [set()])
     for eq in dropped:
         if not eq.owned or set(eq.contacts) & left:
