@@ -205,15 +205,26 @@ def slider_centre(view: JointView, ctx: DrawContext) -> Optional[Vec]:
 
 def guide(body: str, centre: Vec, along: Vec, height: float, ctx: DrawContext) -> list[Mark]:
     """The guide a block slides on: the frame's hatched edge beside the block, or a bar of
-    the guiding body over its points."""
+    the guiding body over its points.
+
+    A fixed guide is the line the block runs on (tangent to the block, on the side away from
+    the mechanism), hatched on that side only where the guide shows as ground: outside the
+    moving bodies' wheels and cams. A block inside such an outline (001's slider carrying
+    a roller on its axle) keeps its guide under the block, through the roller, with no
+    hatching inside it — a hatched edge tangent to the roller read as a ground the roller
+    rolls on (issue 30, sixteenth round (d)); a block outside them has its guide cut short
+    of them (a follower's guide stops before its cam)."""
     if body == ctx.frame:
         n = perpendicular(along)
         side = n if float(n @ (centre - ctx.centroid())) > 1e-12 * ctx.size else -n
-        reach = carried_reach(centre, side, ctx.keep_out())            # touching, not crossing
-        base = centre + side * max(height / 2, reach + 1e-6 * ctx.size if reach else 0.0)
+        base = centre + side * height / 2
         seg = ctx.clip(base, along, HATCH_BAND * ctx.size)
-        if seg is not None:
-            seg = kept_out(seg, base, along, ctx.keep_out(), 0.5 * height)
+        if seg is None:
+            return []
+        outlines = ctx.keep_out()
+        if carried_reach(centre, side, outlines) > 0:                 # the block rides inside a wheel
+            return guide_through(seg, base, along, side, outlines, ctx)
+        seg = kept_out(seg, base, along, outlines, 0.5 * height)
         return [] if seg is None else hatched_edge(seg[0], seg[1], side, ctx, "ground:guide")
     pts = list(ctx.points(body)) + [centre]
     ts = [float((p - centre) @ along) for p in pts]
@@ -222,11 +233,47 @@ def guide(body: str, centre: Vec, along: Vec, height: float, ctx: DrawContext) -
     return [Mark("line", line, f"body:{body}", width=3.0, zorder=3, moves_with=body)]
 
 
+def guide_through(seg: tuple, base: Vec, along: Vec, side: Vec, outlines: list,
+                  ctx: DrawContext) -> list[Mark]:
+    """A fixed guide that runs through a moving wheel: its whole line, hatched on `side` only
+    on the stretches outside every outline (`outside_spans`), so that no hatched ground is
+    drawn inside the wheel, nor where its rim could seem to touch it."""
+    p, q = seg
+    out = [Mark("line", np.array([p, q]), "ground", width=1.8, zorder=2, gid="ground:guide")]
+    band = HATCH_BAND * ctx.size
+    for a, b in outside_spans(seg, base, along, outlines, band):
+        out.append(Mark("polygon", np.array([a, b, b + band * side, a + band * side]), "ground", width=0,
+                        hatch=True, zorder=1, avoid=0.7, gid="ground:guide-hatch"))
+    return out
+
+
+def outside_spans(seg: tuple, base: Vec, along: Vec, outlines: list, margin: float) -> list[tuple]:
+    """The pieces of the segment `seg` (on the line through `base` along the unit `along`)
+    that lie outside every closed outline, each shortened by `margin` at an outline's rim;
+    pieces no longer than `margin` are dropped."""
+    t0, t1 = (float((p - base) @ along) for p in seg)
+    normal = perpendicular(along)
+    inside: list[tuple[float, float]] = []
+    for poly in outlines:
+        v = np.asarray(poly, dtype=float) - base
+        h, t = v @ normal, v @ along
+        h2, t2 = np.roll(h, -1), np.roll(t, -1)
+        crossing = (h > 0) != (h2 > 0)
+        ts = np.sort((t + (t2 - t) * h / np.where(crossing, h - h2, 1.0))[crossing])
+        inside += [(float(ts[i]) - margin, float(ts[i + 1]) + margin) for i in range(0, len(ts) - 1, 2)]
+    spans, start = [], t0
+    for a, b in sorted(inside):
+        if a > start:
+            spans.append((start, min(a, t1)))
+        start = max(start, b)
+    spans.append((start, t1))
+    return [(base + a * along, base + b * along) for a, b in spans if b - a > margin]
+
+
 def carried_reach(centre: Vec, side: Vec, outlines: list) -> float:
     """How far the outlines around a block's centre reach towards the guide's `side` (0 when
-    none holds it): a slider carrying a roller on its axle (001's rolling pair) has its
-    fixed guide drawn tangent to the roller, which rests on the line, never through it —
-    a guide through the roller's centre looked like a roller sunk into the ground."""
+    none holds it): whether the block rides inside a wheel (001's rolling pair: a slider
+    carrying a roller on its axle), whose guide `guide_through` draws."""
     reach = 0.0
     for poly in outlines:
         v = np.asarray(poly, dtype=float) - centre
