@@ -56,19 +56,18 @@ def test_the_pulley_blocks_strands_run_between_tangent_points():
         assert math.isclose(xy[:, 1].min(), -4 * r, abs_tol=1e-9) and math.isclose(xy[:, 1].max(), 0, abs_tol=1e-9)
 
 
-def test_the_roller_rests_on_its_guide():
+def test_the_roller_rides_on_its_slider_not_on_the_ground():
     """001's rolling pair: the slider carries the roller's centre A = (ρ/sin β, 0) = (0.2, 0)
-    along the horizontal through B; the roller's radius is ρ = 0.1. The fixed guide is drawn
-    tangent under the roller, on y = −0.1, where it rests — not through A (inside the roller)."""
+    along the horizontal through B (ρ = 0.1). The fixed guide is the line under the block, not
+    a hatched ground tangent under the roller (which read as the roller rolling on the ground,
+    sixteenth round (d)): nothing of the guide lies on y = −0.1."""
     sol = kinematika.solve(EXAMPLES / "seed_001_rolling_pair.yaml")
     scene = build_scene(sol.inst, sol, DrawOptions())
     view = Box(*scene.box).grow(0.6 * scene.size)
-    guide = [m for m in scene_symbols(scene, view) if m.gid == "ground:guide"]
+    guide = [m for m in scene_symbols(scene, view) if m.gid.startswith("ground:guide")]
     assert guide
     ys = np.concatenate([np.asarray(m.points, float)[:, 1] for m in guide])
-    assert np.allclose(ys, -0.1, atol=1e-5), ys
-    xs = np.concatenate([np.asarray(m.points, float)[:, 0] for m in guide])
-    assert xs.min() < 0.2 < xs.max()               # under the roller, not cut short of it
+    assert not np.any(np.isclose(ys, -0.1, atol=1e-3)), ys
 
 
 # the drag's subscript word, as the notes of each language write it (composition section)

@@ -7,7 +7,8 @@ while positions are tried.
 
 Placement is greedy, then refined. In order of importance each label tries boxes around
 its anchor (`DIRECTIONS` directions at the `DISTANCES`) and takes the cheapest: overlapping
-a placed label costs most, then leaving the axes, then covering what is drawn (arrows and
+a placed label (or coming within `GAP` of it) or covering an arrow's tip (`LabelBoard.tip`)
+costs most, then leaving the axes, then covering what is drawn (arrows and
 marks weigh more than bars), then the distance from the anchor and, for a vector, not lying
 beyond its tip. Then, a few times over, every label is taken out and put back at its best
 place given all the others, until none moves. A label placed far from its anchor gets a
@@ -33,6 +34,8 @@ PAD = 1.5                # points kept free around each label's text
 OBSTACLE_PAD = 2.5       # points: half a thin line's width around drawn geometry
 SAMPLE = 4.0             # points between samples of drawn lines
 PASSES = 4               # refinement passes at most
+GAP = 3.0                # points kept between two labels' boxes (beyond PAD): no two touch
+TIP = 7.0                # points around an arrow's tip that no label covers (its head)
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
@@ -77,6 +80,7 @@ class LabelBoard:
 
     labels: list[Label] = field(default_factory=list)
     obstacles: list[tuple] = field(default_factory=list)   # (data polyline, weight, radius)
+    tips: list[np.ndarray] = field(default_factory=list)   # arrows' tips (data coordinates)
 
     def add(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
             prefer: Any = None, **kw: Any) -> None:
@@ -91,6 +95,12 @@ class LabelBoard:
         (points) how far around each point the drawing reaches (a marker's size)."""
         self.obstacles.append((np.array([np.asarray(p, dtype=float) for p in polyline]), weight,
                                radius))
+
+    def tip(self, point: Any) -> None:
+        """An arrow's tip: no label may cover its head (`TIP` points around it), which in a
+        crowded polygon read as the label of the arrow ending there (issue 30, sixteenth
+        round (d)); weighed as a label's overlap, not as a drawn line."""
+        self.tips.append(np.asarray(point, dtype=float))
 
     def layout(self, ax: Any) -> list[Placement]:
         """The best place of every label in `ax` (display pixels), without drawing anything."""
@@ -159,6 +169,7 @@ class Layout:
         self.labels = sorted(board.labels, key=lambda lb: lb.priority)
         self.obstacles, self.weights = _sample(board.obstacles, ax.transData, SAMPLE * self.px)
         self.unit = _directions()
+        self.tips = ax.transData.transform(np.array(board.tips)) if board.tips else np.zeros((0, 2))
 
     def run(self) -> list[Placement]:
         """Every label's placement: greedily, most important first, each at its cheapest
@@ -211,6 +222,7 @@ class Layout:
                   np.clip(np.minimum(boxes[:, 3], ay1) - np.maximum(boxes[:, 1], ay0), 0, None))
         cost = OUTSIDE * (1 - inside / area) + DISTANCE * dist
         cost += COVER * _covered(boxes, self.obstacles, self.weights, OBSTACLE_PAD * self.px)
+        cost += OVERLAP * _covered(boxes, self.tips, np.ones(len(self.tips)), TIP * self.px)
         if label.prefer is not None and np.linalg.norm(label.prefer) > 0:
             p = label.prefer / np.linalg.norm(label.prefer)
             cost += PREFER * (1 - dirs @ p)
@@ -225,7 +237,7 @@ class Layout:
             return np.zeros(len(boxes))
         placed = np.array([cands[j][0][choice[j]] for j in others])
         area = (boxes[0, 2] - boxes[0, 0]) * (boxes[0, 3] - boxes[0, 1])
-        ov = _overlaps(boxes, placed)
+        ov = _overlaps(boxes, placed + np.array([-1, -1, 1, 1]) * GAP * self.px)
         cost = OVERLAP * (ov > 0).sum(axis=1) + OVERLAP_AREA * ov.sum(axis=1) / area
         # my leader across placed labels
         far = dist >= LEADER

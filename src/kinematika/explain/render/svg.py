@@ -178,6 +178,7 @@ def _place(lay: Layout, items: list) -> list[Placed]:
                                   width=text.width, height=text.height))
     for a in fig.arrows:
         board.avoid(data(a.start), data(a.end), weight=3.0)
+        board.tip(data(a.end))
     for p, q in fig.segments:
         board.avoid(data(p), data(q), weight=1.0)
     for p, q in fig.lines:

@@ -1,0 +1,91 @@
+"""Issue 30, sixteenth round (d): the figures of the explanations.
+
+- A fixed guide through a wheel (001's slider carrying the roller on its axle) is the line the
+  block runs on, hatched only outside the wheel: no hatched ground under the roller.
+- No two labels of a figure come within `GAP` of each other, and none covers an arrow's tip:
+  every label layout of every seed's figures (the mechanism's, the polygons') is recorded
+  while the page is written, and its boxes (display units) are checked pairwise here.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import kinematika
+from kinematika.draw import labels
+from kinematika.draw.build import build_scene
+from kinematika.draw.geometry import Box
+from kinematika.draw.joints import scene_symbols
+from kinematika.draw.options import DrawOptions
+from kinematika.explain import build, render
+from tests.explain.helpers import EXAMPLES, SEEDS
+
+NOTES_SEEDS = [s for s in SEEDS if s.startswith(("seed_001_", "seed_c5_"))]
+
+
+def test_the_rollers_guide_runs_under_the_block_unhatched_inside_the_roller():
+    """001's rolling pair: A = (ρ/sin β, 0) = (0.2, 0), ρ = 0.1. The guide is the horizontal
+    line under the slider's block (y = −h/2, h = 0.06·size), crossing the roller; its hatching
+    lies only where |x − 0.2| > ρ (outside the roller), never under the roller's rim."""
+    sol = kinematika.solve(EXAMPLES / "seed_001_rolling_pair.yaml")
+    scene = build_scene(sol.inst, sol, DrawOptions())
+    view = Box(*scene.box).grow(0.6 * scene.size)
+    marks = scene_symbols(scene, view)
+    line = [m for m in marks if m.gid == "ground:guide"]
+    assert len(line) == 1
+    ys = np.asarray(line[0].points, float)[:, 1]
+    assert np.allclose(ys, -0.03 * scene.size, atol=1e-9), ys
+    xs = np.asarray(line[0].points, float)[:, 0]
+    assert xs.min() < 0.1 and xs.max() > 0.3                       # through the roller
+    hatch = [m for m in marks if m.gid == "ground:guide-hatch"]
+    assert hatch
+    for m in hatch:
+        x = np.asarray(m.points, float)[:, 0]
+        assert np.all(np.abs(x - 0.2) >= 0.1 - 1e-9), x          # outside the roller only
+
+
+@pytest.fixture(scope="module")
+def layouts():
+    """Every label layout (boxes and the arrows' tips, display units) of the seeds' pages in
+    English and Catalan (whose words are the longest), drawn afresh."""
+    found: dict[tuple[str, str], list] = {}
+    orig_init, orig_run = labels.Layout.__init__, labels.Layout.run
+    current: list = []
+
+    def init(self, board, ax):
+        orig_init(self, board, ax)
+
+    def run(self):
+        out = orig_run(self)
+        current.append((out, self.tips, self.px))
+        return out
+
+    labels.Layout.__init__, labels.Layout.run = init, run
+    try:
+        for name in NOTES_SEEDS:
+            doc = build(kinematika.solve(EXAMPLES / f"{name}.yaml"))
+            for lang in ("en", "ca"):
+                current.clear()
+                render(doc, lang, "md")
+                found[(name, lang)] = list(current)
+    finally:
+        labels.Layout.__init__, labels.Layout.run = orig_init, orig_run
+    return found
+
+
+@pytest.mark.parametrize("name", NOTES_SEEDS)
+def test_no_two_labels_touch_and_none_covers_a_tip(layouts, name):
+    for lang in ("en", "ca"):
+        for placed, tips, px in layouts[(name, lang)]:
+            boxes = [p.box for p in placed]
+            for i in range(len(boxes)):
+                for j in range(i + 1, len(boxes)):
+                    a, b = boxes[i], boxes[j]
+                    w = min(a[2], b[2]) - max(a[0], b[0])
+                    h = min(a[3], b[3]) - max(a[1], b[1])
+                    assert not (w > -5 * px and h > -5 * px), \
+                        (lang, placed[i].label.text, placed[j].label.text, w, h)
+            for p in placed:
+                x0, y0, x1, y1 = p.box
+                inside = [(x, y) for x, y in tips if x0 - 5 * px < x < x1 + 5 * px and y0 - 5 * px < y < y1 + 5 * px]
+                assert not inside, (lang, p.label.text, inside)
