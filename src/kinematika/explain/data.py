@@ -181,7 +181,9 @@ def point_rows(ctx: Ctx) -> list:
 def what_point(ctx: Ctx, name: str) -> Optional[Msg]:
     """What a point is, from the model's structure, for a model that does not say it in
     `names`: the centre of a body's circle, else the point of a joint (its kind and bodies),
-    else a point of the bodies that hold it; None when no body holds it."""
+    else a point of the bodies that hold it, the preposition (the Basque genitive) on each
+    ("un punt del terra, del pla esquerre i del pla dret", `what.of`); None when no body
+    holds it."""
     from .kinds import kind_key
 
     for b, carrier in ctx.model.bodies.items():
@@ -195,14 +197,16 @@ def what_point(ctx: Ctx, name: str) -> Optional[Msg]:
     touching = _touching(ctx, name, holders)
     if touching is not None:
         return touching
-    return msg("what.body", bodies=names(holders, "body")) if holders else None
+    return msg("what.body", bodies=names(holders, "body", each="what.of")) if holders else None
 
 
 def _touching(ctx: Ctx, name: str, holders: list[str]) -> Optional[Msg]:
     """A point that is, at the instant, where a body holding it touches another (a rolling
     joint's contact: C5-1.5's T2, where strand 2 leaves pulley 2): "the point of strand 2
     where it touches pulley 2 (joint j4)". A body welded to the frame holds the frame's
-    points (C5-1.2's K1 on the left plane)."""
+    points (C5-1.2's K1), and the point is named after the body actually touched, the one
+    the joint joins: "the point of the *left plane* where the *left wheel* touches", never
+    "of the *ground*", which the wheel does not touch (issue 30, sixteenth round (c))."""
     from .kinds import welds
 
     if ctx.symbolic and not ctx.inst.env:
@@ -217,8 +221,7 @@ def _touching(ctx: Ctx, name: str, holders: list[str]) -> Optional[Msg]:
             continue
         for own, other in ((j.a, j.b), (j.b, j.a)):
             if own in holders or any(ctx.fixed(h) and ctx.fixed(own) for h in holders):
-                held = own if own in holders else next(h for h in holders if ctx.fixed(h))
-                return msg("what.touching", body=Name(held, "body"), other=Name(other, "body"),
+                return msg("what.touching", body=Name(own, "body"), other=Name(other, "body"),
                            joint=Name(j.id, "joint"))
     return None
 

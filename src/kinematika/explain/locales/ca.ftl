@@ -937,9 +937,10 @@ what-touching = el punt { ELISION($body) ->
        *[other] de { $body }
     } on toca { $other }
 what-contact = punt de contacte ({ $kind }), entre { $a } i { $b }
-what-body = un punt { ELISION($bodies) ->
-        [vowel] d’{ $bodies }
-       *[other] de { $bodies }
+what-body = un punt { $bodies }
+what-of = { ELISION($name) ->
+        [vowel] d’{ $name }
+       *[other] de { $name }
     }
 note-text = Nota: { $text }
 sec-checks = Comprovacions

@@ -647,6 +647,7 @@ what-touching = the point of { $body } where { COUNT($body) ->
     } { $other }
 what-contact = contact point ({ $kind }) between { $a } and { $b }
 what-body = a point of { $bodies }
+what-of = { $name }
 note-text = Note: { $text }
 sec-checks = Checks
 check-willis = Willis' formula: seen from { $carrier }, the train is an ordinary one ({ $planet }, whose axle { $carrier } { COUNT($carrier) ->

@@ -323,8 +323,8 @@ composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
 vehicle-line-velocity = { $sym } abiadurarekiko perpendikularra { $point } puntuan
-vehicle-equiprojective = Ekiproiektibitatearen propietatearengatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, non { $seg }/|{ $seg }| = { $unit }; beraz, { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago: { $vp } = |{ $vp }| e, non e = { $along } eta e · { $seg }/|{ $seg }| = { $cos }. Ondorioz, |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, eta { $vp } = { $value }.
-vehicle-equiprojective_along = Ekiproiektibitatearen propietatearengatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, non { $seg }/|{ $seg }| = { $unit }; beraz, { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago: { $vp } = |{ $vp }| e, non e = { $along } eta e · { $seg }/|{ $seg }| = { $cos }. Ondorioz, |{ $vp }| = { $speed }, eta { $vp } = { $value }.
+vehicle-equiprojective = Ekiproiektibitatearen propietateagatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, non { $seg }/|{ $seg }| = { $unit }; beraz, { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago: { $vp } = |{ $vp }| e, non e = { $along } eta e · { $seg }/|{ $seg }| = { $cos }. Ondorioz, |{ $vp }| = ({ $proj }) / ({ $cos }) = { $speed }, eta { $vp } = { $value }.
+vehicle-equiprojective_along = Ekiproiektibitatearen propietateagatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, non { $seg }/|{ $seg }| = { $unit }; beraz, { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago: { $vp } = |{ $vp }| e, non e = { $along } eta e · { $seg }/|{ $seg }| = { $cos }. Ondorioz, |{ $vp }| = { $speed }, eta { $vp } = { $value }.
 vehicle-line-wheel_own = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza, { $witness } puntuan { $sym } abiadurarekiko perpendikularra ere badena: gurpila ez da alboetara irristatzen)
 vehicle-pin_shared = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } = { $other }.
 vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
@@ -484,8 +484,8 @@ centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneo
 centre-site_s = Goian aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
 geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
-geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
-geom-bar_told = { $geom }, kontaktu-puntu geometrikoa, beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan artikulatutako barra baten puntu bat bezala mugitzen da:
+geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan giltzatutako barra baten puntu bat bezala mugitzen da:
+geom-bar_told = { $geom }, kontaktu-puntu geometrikoa, beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan giltzatutako barra baten puntu bat bezala mugitzen da:
 geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez dena ez batena ez bestearena.
 contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
@@ -520,10 +520,8 @@ what-centre = { $body } solidoaren zentroa
 what-joint = { $kind }, { $a } eta { $b } solidoen artean
 what-touching = { $body } solidoak { $other } ukitzen duen puntua
 what-contact = ukipen-puntua ({ $kind }), { $a } eta { $b } solidoen artean
-what-body = { $bodies } { $bodies_n ->
-        [one] solidoaren
-       *[other] solidoen
-    } puntua
+what-body = { $bodies } puntua
+what-of = { $name } solidoaren
 note-text = Oharra: { $text }
 sec-checks = Egiaztapenak
 check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoaren ardatza { $carrier } solidoak darama; { $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta { $fixed ->
