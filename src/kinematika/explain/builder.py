@@ -22,6 +22,7 @@ from .data import contact_rows, data_section
 from .strands import strand_words
 from .document import Ann, CentreNote, Derived, Document, Equation, Inline, Msg, Name, Section, Sym, Term, Value, msg
 from .group import refine
+from .material import material_contacts
 from .order import solution_order
 from .planar import PlanarSteps
 from .needs import accelerations_asked, centres_asked_first, prune
@@ -115,6 +116,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     refer_reverses(doc, levels)
     refer_rates(ctx, doc, levels)
     translations(ctx, doc)
+    material_contacts(levels)
     name_contacts(ctx, doc, contact_rows(ctx, doc))
     moduli_units(ctx, doc, length_unit)
     strand_words(ctx, doc.sections)
