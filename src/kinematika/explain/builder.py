@@ -23,7 +23,7 @@ from .strands import strand_words
 from .document import Ann, CentreNote, Derived, Document, Equation, Inline, Msg, Name, Section, Sym, Term, Value, msg
 from .group import refine
 from .material import material_contacts
-from .order import solution_order
+from .order import asked_order, solution_order
 from .planar import PlanarSteps
 from .needs import accelerations_asked, centres_asked_first, prune
 from .polygon import degenerate, level_polygon, polygon
@@ -56,7 +56,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
                    numbers=body_numbers(sol.model), wording=sol.model.wording)
     doc.sections.append(data_section(ctx, length_unit, accel))
     if ctx.planar:
-        steps = refine(ctx, solution_order(sol))
+        steps = asked_order(ctx, refine(ctx, solution_order(sol)))
         doc.sections.append(structure_section(ctx, steps))
         placed = position_section(ctx)
         if placed is not None:
