@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..engine.linsolve import _blocks, independent_rows
+from ..errors import KinematikaError
 from ..solution import Solution
 from ..structure.assur import assur_groups, dyad as assur_dyad
 from .kinds import knife_edge, lower
@@ -167,7 +168,7 @@ def _rank(ctx: Ctx, step: Step) -> int:
             else:
                 try:
                     body = model.resolve_point(target).body
-                except (KeyError, ValueError):
+                except (KeyError, ValueError, KinematikaError):     # a joint's id (a contact asked)
                     body = None
         if body in step.bodies:
             return q.index
