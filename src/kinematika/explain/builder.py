@@ -22,7 +22,8 @@ from .data import contact_rows, data_section
 from .strands import strand_words
 from .document import Ann, CentreNote, Derived, Document, Equation, Inline, Msg, Name, Section, Sym, Term, Value, msg
 from .group import refine
-from .order import solution_order
+from .material import material_contacts
+from .order import asked_order, solution_order
 from .planar import PlanarSteps
 from .needs import accelerations_asked, centres_asked_first, prune
 from .polygon import degenerate, level_polygon, polygon
@@ -55,7 +56,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
                    numbers=body_numbers(sol.model), wording=sol.model.wording)
     doc.sections.append(data_section(ctx, length_unit, accel))
     if ctx.planar:
-        steps = refine(ctx, solution_order(sol))
+        steps = asked_order(ctx, refine(ctx, solution_order(sol)))
         doc.sections.append(structure_section(ctx, steps))
         placed = position_section(ctx)
         if placed is not None:
@@ -112,8 +113,10 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
         found_forward(eq)
     prune(ctx, doc)
     refer_drags(ctx, doc, levels)
+    refer_reverses(doc, levels)
     refer_rates(ctx, doc, levels)
     translations(ctx, doc)
+    material_contacts(levels)
     name_contacts(ctx, doc, contact_rows(ctx, doc))
     moduli_units(ctx, doc, length_unit)
     strand_words(ctx, doc.sections)
@@ -251,6 +254,56 @@ def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
             found = step_of(levels, said.args["seen"])
             if found is not None:
                 said.key, said.args["step"] = "composition.slide_seen_step", found
+
+
+def refer_reverses(doc: Document, levels: list[Section]) -> None:
+    """A relative motion a later section uses (001's rolling pair: a_{F∈R rel N} in the
+    composition's relative equation) that no step wrote, where a step found its reverse
+    (a_{F∈N rel R} in Step 3), is derived where it is first used, before its equation:
+    a_{F∈R rel N} = −a_{F∈N rel R} = (value), from Step 3 — a number a student cannot trace
+    is never written. v_{P∈b rel a} = v_{P∈b} − v_{P∈a} = −v_{P∈a rel b} always; for
+    accelerations the two differ by 2 (ω_b − ω_a) × v_{P∈b rel a}, so the reverse is said
+    only where the values are opposite (a rolling contact, v_rel = 0), checked here."""
+    found = {_written(t.sym): (t, n) for sec in levels for n, step in _steps(sec) for eq in _equations(step)
+             for t in [eq.target, *(t for side in eq.sides for t in side)]}
+    for sec in doc.sections:
+        if any(sec is level for level in levels):
+            continue
+        said: set = set()
+        for eq in [b for b in sec.leaves() if isinstance(b, Equation)]:
+            for t in (t for side in eq.sides for t in side if not t.unknown):
+                m = RELATIVE.match(t.sym.sub)
+                if m is None or _written(t.sym) in found or _written(t.sym) in said:
+                    continue
+                back = Sym(t.sym.base, f"{m.group(1)}∈{m.group(3)}/{m.group(2)}", t.sym.sup, t.sym.vector,
+                           t.sym.sub_key)
+                rev = found.get(_written(back))
+                if rev is None or not _opposite(t.value, rev[0].value):
+                    continue
+                said.add(_written(t.sym))
+                unit = "speed" if t.sym.base == "v" else "accel"
+                _insert_before(sec, eq, msg("composition.reverse", sym=t.sym, back=rev[0].sym,
+                                            value=Value(t.value, unit), step=rev[1]))
+
+
+def _opposite(u: object, w: object) -> bool:
+    """Whether two vectors (tuples of numbers) are each other's negative, to rounding."""
+    try:
+        a, b = [float(x) for x in u], [float(x) for x in w]     # type: ignore[attr-defined]
+    except (TypeError, ValueError):
+        return False
+    scale = max([abs(x) for x in a + b] + [1e-12])
+    return len(a) == len(b) and all(abs(x + y) <= 1e-9 * scale for x, y in zip(a, b))
+
+
+def _insert_before(sec: Section, eq: Equation, block: Msg) -> None:
+    """Put `block` just before `eq` in whichever (nested) section holds it."""
+    for k, b in enumerate(sec.blocks):
+        if b is eq:
+            sec.blocks.insert(k, block)
+            return
+        if isinstance(b, Section):
+            _insert_before(b, eq, block)
 
 
 def refer_rates(ctx: Ctx, doc: Document, levels: list[Section]) -> None:

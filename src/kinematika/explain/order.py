@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..engine.linsolve import _blocks, independent_rows
+from ..errors import KinematikaError
 from ..solution import Solution
 from ..structure.assur import assur_groups, dyad as assur_dyad
 from .kinds import knife_edge, lower
@@ -130,3 +131,54 @@ def merge_vehicles(ctx: Ctx, steps: list[Step]) -> list[Step]:
         else:
             out.append(s)
     return out
+
+
+def asked_order(ctx: Ctx, steps: list[Step]) -> list[Step]:
+    """The steps in the order the model asks for their bodies, where the dependencies allow
+    it: the notes derive the quantities in the order the exercise asks them (C5-E.4 asks the
+    left wheel's ω, then the right wheel's; both are found from the chassis alone, so the
+    left wheel's step comes first). Two consecutive steps trade places only when both are
+    asked (`_rank`), the later one is asked first, neither is an input, and the later one
+    neither is solved from the earlier one's bodies nor goes through a joint touching them
+    (each is found without the other): a step nobody asked for keeps its place."""
+    rank = {id(s): _rank(ctx, s) for s in steps}
+    out = list(steps)
+    moved = True
+    while moved:
+        moved = False
+        for i in range(len(out) - 1):
+            first, second = out[i], out[i + 1]
+            if (rank[id(second)] < rank[id(first)] < len(ctx.model.questions)
+                    and "input" not in (first.kind, second.kind) and _apart(ctx, first, second)):
+                out[i], out[i + 1] = second, first
+                moved = True
+    return out
+
+
+def _rank(ctx: Ctx, step: Step) -> int:
+    """The index of the model's first question about one of the step's bodies (its ω, α,
+    centre, or one of its points' motion); past the last question when none asks."""
+    model = ctx.model
+    for q in model.questions:
+        target = q.target
+        body = getattr(target, "body", None)
+        if body is None and isinstance(target, str):
+            if target in model.bodies:
+                body = target
+            else:
+                try:
+                    body = model.resolve_point(target).body
+                except (KeyError, ValueError, KinematikaError):     # a joint's id (a contact asked)
+                    body = None
+        if body in step.bodies:
+            return q.index
+    return len(model.questions)
+
+
+def _apart(ctx: Ctx, first: Step, second: Step) -> bool:
+    """Whether `second` is found without `first`: not solved from its bodies, and no joint
+    of `second` touches them."""
+    mine = set(first.bodies)
+    if mine & set(second.known):
+        return False
+    return not any({ctx.model.joint(j).a, ctx.model.joint(j).b} & mine for j in second.joints)

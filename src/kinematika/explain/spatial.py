@@ -230,7 +230,9 @@ def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> l
                                         Sym("v", p, sub_key="sub.rel")], kind="coriolis"))
         target = Term(Sym(level, p), ctx.clean(got["total"], unit), *KNOWN, kind="point")
         out += [msg("composition.drag")] + _drag(ctx, level, p, moving, pivot, drag.sym)
-        out += [msg("composition.relative", sym=rel.sym, rel=Sym(level, relative_name(p, body, moving)))]
+        # one symbol for the relative motion (the notes' v_REL), its frame said in words, never
+        # "v_REL = v_{P∈b rel m}": two names of one vector read as two vectors (round 16b)
+        out += [msg("composition.relative", sym=rel.sym, frame=Name(moving, "body"))]
         out += _relative(ctx, level, ref, moving, pivot, rel.sym)
         out.append(Equation(target, [side], level, ref, figure=ctx.planar))   # the parts found, their sum
     return out

@@ -357,7 +357,7 @@ sec-composition = Composition of motions
 composition-intro = The motion of a point is its drag motion (that of the point of the moving frame that coincides with it) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
 composition-point = Point { $point } of { $body }, moving frame { $frame }:
 composition-drag = Drag: the motion of the point of the moving frame that coincides with it:
-composition-relative = Relative: the motion seen from the moving frame, { $sym } = { $rel }:
+composition-relative = Relative: { $sym }, the motion seen from the moving frame, { $frame }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] roll
        *[one] rolls
@@ -402,16 +402,17 @@ composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($b
     } not turn relative to { $frame }, so all { COUNT($body) ->
         [many] their
        *[one] its
-    } points have the relative motion found above: { $sym } = { $seen } = { $value }.
+    } points have the relative motion found above: { $sym } = { $value }.
 composition-slide_seen_step = { $point } slides along its guide; { $body } { COUNT($body) ->
         [many] do
        *[one] does
     } not turn relative to { $frame }, so all { COUNT($body) ->
         [many] their
        *[one] its
-    } points have the relative motion found in Step { $step }: { $sym } = { $seen } = { $value }.
+    } points have the relative motion found in Step { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in Step { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation of Step { $step }.
+composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the relative motion found in Step { $step }.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
