@@ -51,6 +51,10 @@ QUESTIONS = {"kinematika.questions", "kinematika.questions.axis", "kinematika.qu
 # not imported by a model without a constructed point, a body with a shape, or a drawing (docs/architecture.md:
 # the imports left inside functions): `model.constructions`, `model.body_shapes`, `shapes`, `joints.symbols`
 CONSTRUCTED = {"kinematika.model.constructions"}        # four_bar.yaml's coupler pin: two circles
+# a model's `sweep:` or `simulate:` section, or a moved model's turns (four_bar.yaml and spherical_four_bar.yaml
+# have a `sweep:`, tractor_trailer_turning.yaml a `simulate:`); inverted_slider_crank.yaml, like the 1000-body
+# chain, has neither, and its solve must not load the module
+SECTIONS = {"kinematika.model.motion_sections"}
 SWEEP_RUN = {"kinematika.memory", "kinematika.sweep.coincident", "kinematika.sweep.plan", "kinematika.sweep.result",
              "kinematika.sweep.run",
              "kinematika.sweep.joint_rates"}       # a 3D ω along a revolute's axis is its rate (issue 31)
@@ -62,17 +66,19 @@ HEAVY = {"scipy", "sympy", "pydantic", "typer", "click", "rich", "matplotlib", "
 
 # command line, kinematika's modules, heavy libraries allowed, most other modules
 COMMANDS = {
-    "solve": (["solve", "{ex}/four_bar.yaml", "--json"], SOLVE | QUESTIONS | CONSTRUCTED, set(), 145),
-    "solve-no-questions": (["solve", "{ex}/spherical_four_bar.yaml", "--json"], SOLVE, set(), 145),
+    "solve": (["solve", "{ex}/four_bar.yaml", "--json"], SOLVE | QUESTIONS | CONSTRUCTED | SECTIONS, set(), 145),
+    "solve-no-questions": (["solve", "{ex}/spherical_four_bar.yaml", "--json"], SOLVE | SECTIONS, set(), 145),
+    "solve-no-sections": (["solve", "{ex}/inverted_slider_crank.yaml", "--json"], SOLVE | CONSTRUCTED, set(), 145),
     "centres": (["centres", "{ex}/four_bar.yaml", "--json"],
-                SOLVE | QUESTIONS | CONSTRUCTED | {"kinematika.questions.centres", "kinematika.report.centres_table"},
+                SOLVE | QUESTIONS | CONSTRUCTED | SECTIONS | {"kinematika.questions.centres",
+                                                              "kinematika.report.centres_table"},
                 set(), 145),
     "sweep": (["sweep", "{ex}/four_bar.yaml", "--steps", "8", "--json"],
-              SOLVE | SWEEP_RUN | CONSTRUCTED | {"kinematika.structure", "kinematika.structure.assur",
+              SOLVE | SWEEP_RUN | CONSTRUCTED | SECTIONS | {"kinematika.structure", "kinematika.structure.assur",
                                                  "kinematika.sweep.closed_form"},
               set(), 145),
     "simulate": (["simulate", "{ex}/tractor_trailer_turning.yaml", "--time", "1", "--steps", "2", "--json"],
-                 SOLVE | SWEEP_RUN | SIMULATE, {"scipy"}, 245),
+                 SOLVE | SWEEP_RUN | SIMULATE | SECTIONS, {"scipy"}, 245),
 }
 
 

@@ -17,7 +17,8 @@ from typing import Any, Optional, Protocol
 
 from ..algebra.vectors import dot, sub
 from ..expressions import Expr, parse
-from ..model.model import Direction, Model, Turn
+from ..model.model import Direction, Model
+from ..model.motion_sections import Turn
 
 
 class Placed(Protocol):

@@ -19,14 +19,14 @@ from . import shape
 from .plain import Record
 from .point_order import construction_order
 from ..expressions import Expr, ExpressionError, parse
-from .model import (Body, Direction, Driver, ExprVector, Joint, Model, Parameter, PointPair, PointRef, Question,
-                    Simulate, Sweep)
+from .model import Body, Direction, Driver, ExprVector, Joint, Model, Parameter, PointPair, PointRef, Question
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
     from pydantic_core import ErrorDetails
 
     from . import schema
+    from .motion_sections import Simulate, Sweep
     from .body_shapes import CamShape, Shape
     from .constructions import Construction
 
@@ -463,6 +463,8 @@ class _Builder:
         raw = self.spec.sweep
         if raw is None:
             return None
+        from .motion_sections import Sweep      # most models have no `sweep:` section
+
         if raw.joint is not None and raw.joint not in {j.id for j in self.joint_list}:
             raise KinematikaError("schema", "unknown-joint-bare", "sweep.joint", joint=raw.joint)
         if raw.steps < 1:
@@ -473,6 +475,8 @@ class _Builder:
         raw = self.spec.simulate
         if raw is None:
             return None
+        from .motion_sections import Simulate      # most models have no `simulate:` section
+
         if raw.steps < 1:
             raise KinematikaError("schema", "steps-at-least-one", "simulate.steps")
         return Simulate(self.expr(raw.time, "simulate.time"), raw.steps)

@@ -19,6 +19,7 @@ if TYPE_CHECKING:
     from .body_shapes import Shape
     from .constructions import Construction
     from .exercise_section import ExerciseSection
+    from .motion_sections import Simulate, Sweep, Turn
     from .wording import Wording
 
 
@@ -180,49 +181,6 @@ class Question:
         return self.target
 
 
-@dataclass(frozen=True)
-class Turn:
-    """A body carried rigidly from its drawn pose when a model with symbolic parameters is
-    moved (`move`): p ↦ P + R (p − P₀), P₀ and P its `pivot`'s drawn and present places, R
-    the rotation by `angle` (radians), or the one that takes the drawn direction P₀→T₀ to
-    the present P→T (`toward` T: a point of the body, or a pin sliding in a slot of it
-    along PT when `slides`); or shifted by `shift` along `along`. The input's turn is about
-    its pivot on the frame; the other bodies' turns are found in closed form
-    (`sweep.carried`), and the constructions follow."""
-
-    body: str
-    pivot: Optional[str] = None
-    angle: Optional[Expr] = None
-    along: Optional[Direction] = None
-    shift: Optional[Expr] = None
-    toward: Optional[str] = None
-    slides: bool = False
-
-    @property
-    def anchors(self) -> list[str]:
-        """The points whose places the turn is taken from (pivot, toward)."""
-        return [p for p in (self.pivot, self.toward) if p is not None]
-
-
-@dataclass
-class Sweep:
-    """A model's `sweep` section: the joint whose coordinate advances (None: the first driven
-    joint), by how much in all (degrees or length) and in how many steps."""
-
-    joint: Optional[str]
-    by: Expr
-    steps: int
-
-
-@dataclass
-class Simulate:
-    """A model's `simulate` section: how long its motion is followed in time (seconds) and in
-    how many equal steps of time."""
-
-    time: Expr
-    steps: int
-
-
 @dataclass
 class Model:
     """A mechanism parsed: its parameters, points (coordinates or constructions), bodies,
@@ -240,10 +198,10 @@ class Model:
     joints: list[Joint]
     drivers: list[Driver]
     questions: list[Question]
-    sweep: Optional[Sweep] = None
-    simulate: Optional[Simulate] = None                    # `kinematika simulate`: time, steps
+    sweep: Optional["Sweep"] = None
+    simulate: Optional["Simulate"] = None                    # `kinematika simulate`: time, steps
     move: dict[str, Expr] = field(default_factory=dict)    # joint id -> advance (deg or length)
-    turns: list[Turn] = field(default_factory=list)        # bodies carried from the drawing
+    turns: list["Turn"] = field(default_factory=list)        # bodies carried from the drawing
     default_questions: bool = False   # no `ask` was written: every body and point is asked
     draw_at: dict[str, float] = field(default_factory=dict)   # figures: values of the symbols
     up: Optional[tuple[float, ...]] = None                    # figures: the vertical (3D)

@@ -33,7 +33,8 @@ from ..errors import KinematikaError, Said
 from ..expressions import parse
 from ..joints.rolling import arc_slip
 from ..joints.tangency import circles_tangency
-from ..model.model import Model, PointPair, Turn
+from ..model.model import Model, PointPair
+from ..model.motion_sections import Turn
 from ..shapes import Circle
 
 ANGLE_TOLERANCE = 1e-6          # radians: a candidate's turn against the sweep's, every row

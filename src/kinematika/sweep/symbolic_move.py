@@ -23,7 +23,8 @@ from ..errors import KinematikaError, Said
 from ..expressions import parse
 from ..joints.capabilities import Coordinate
 from ..model.body_shapes import Line
-from ..model.model import Model, Turn
+from ..model.model import Model
+from ..model.motion_sections import Turn
 from ..model.overrides import with_parameters
 from .advance import advanced, swept_to
 from .carried import Input, Path, carried_turns, fixture, placed
