@@ -35,7 +35,6 @@ col-given = dades
 sec-structure = Estructura
 col-body = sòlid
 col-points = punts
-col-shapes = formes
 col-joint = enllaç
 col-bodies = sòlids
 col-where = on
@@ -49,6 +48,7 @@ structure-subscript_pair = { $sym } és la velocitat angular { ELISION($body) ->
        *[other] de { $body }
     }
 structure-frame = { $body } (fix)
+structure-shaped = { $body }, { $shape } de radi { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->

@@ -23,7 +23,6 @@ col-given = data
 sec-structure = Structure
 col-body = body
 col-points = points
-col-shapes = shapes
 col-joint = joint
 col-bodies = bodies
 col-where = where
@@ -34,6 +33,7 @@ col-answer = answer
 structure-subscripts = Notation: { $pairs }.
 structure-subscript_pair = { $sym } is the angular velocity of { $body }
 structure-frame = { $body } (fixed)
+structure-shaped = { $body }, { $shape } of radius { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->

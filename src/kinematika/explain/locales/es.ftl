@@ -23,7 +23,6 @@ col-given = datos
 sec-structure = Estructura
 col-body = sólido
 col-points = puntos
-col-shapes = formas
 col-joint = par
 col-bodies = sólidos
 col-where = dónde
@@ -34,6 +33,7 @@ col-answer = respuesta
 structure-subscripts = Notación: { $pairs }.
 structure-subscript_pair = { $sym } es la velocidad angular de { $body }
 structure-frame = { $body } (fijo)
+structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->

@@ -23,7 +23,6 @@ col-given = datuak
 sec-structure = Egitura
 col-body = solidoa
 col-points = puntuak
-col-shapes = formak
 col-joint = lotura
 col-bodies = solidoak
 col-where = non
@@ -34,6 +33,7 @@ col-answer = erantzuna
 structure-subscripts = Notazioa: { $pairs }.
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
 structure-frame = { $body } (finkoa)
+structure-shaped = { $body }, { $radius } erradioko { $shape }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
