@@ -250,7 +250,7 @@ pos-open = la configuració oberta (les barres no es creuen)
 pos-crossed = la configuració creuada (les barres es creuen)
 
 sec-order = Ordre de resolució
-order-assur = El mecanisme es descompon en les seves entrades (manovelles i corredores motores) i díades; cadascuna es resol a partir de sòlids ja coneguts:
+order-assur = El mecanisme es descompon en les seves entrades i díades; cadascuna es resol a partir de sòlids ja coneguts:
 order-blocks = Els sòlids es troben en aquest ordre, cadascun a partir de sòlids ja coneguts:
 order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
 order-item_group = { $n }. { $bodies }, a partir { $known }.

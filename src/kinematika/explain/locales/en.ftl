@@ -193,7 +193,7 @@ pos-open = the open assembly (the links do not cross)
 pos-crossed = the crossed assembly (the links cross)
 
 sec-order = Order of solution
-order-assur = The mechanism is decomposed into its inputs (driven cranks and sliders) and dyads; each is solved from bodies already known:
+order-assur = The mechanism is decomposed into its inputs and dyads; each is solved from bodies already known:
 order-blocks = The bodies are found in this order, each from bodies already known:
 order-item = { $n }. { $kind }: { $bodies }, from { $known }.
 order-item_group = { $n }. { $bodies }, from { $known }.

@@ -178,7 +178,7 @@ pos-open = la configuración abierta (las barras no se cruzan)
 pos-crossed = la configuración cruzada (las barras se cruzan)
 
 sec-order = Orden de resolución
-order-assur = El mecanismo se descompone en sus entradas (manivelas y correderas motoras) y díadas; cada una se resuelve a partir de sólidos ya conocidos:
+order-assur = El mecanismo se descompone en sus entradas y díadas; cada una se resuelve a partir de sólidos ya conocidos:
 order-blocks = Los sólidos se hallan en este orden, cada uno a partir de sólidos ya conocidos:
 order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
 order-item_group = { $n }. { $bodies }, a partir { $known }.

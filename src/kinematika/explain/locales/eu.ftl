@@ -178,7 +178,7 @@ pos-open = konfigurazio irekia: barrak ez dira gurutzatzen
 pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
-order-assur = Mekanismoa bere sarreretan (biradera eta irristagailu eragileak) eta bi elementuko taldeetan deskonposatzen da; bakoitza jadanik ezagunak diren solidoetatik ebazten da:
+order-assur = Mekanismoa bere sarreretan eta bi elementuko taldeetan deskonposatzen da; bakoitza jadanik ezagunak diren solidoetatik ebazten da:
 order-blocks = Solidoak ordena honetan aurkitzen dira, bakoitza jadanik ezagunak diren solidoetatik:
 order-item = { $n }. { $kind }: { $bodies }, { $known } { $known_n ->
         [one] solidotik
