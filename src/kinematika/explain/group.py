@@ -787,13 +787,14 @@ def _recut(ctx: Ctx, run: list, known: set[str]) -> list:
     out: list = []
     while any(b not in done for b in pool):
         plan = Planner(ctx, [b for b in pool if b not in done], done, "v")
-        mark = 0
+        mark = seen = 0
         while True:
             new = [b for b in pool if b in plan.determined and b not in done]
             if new:
-                out.append(Step("other", new, _joining(ctx, new, done, plan.used[mark:]), jointed(ctx.model, new, done),
+                out.append(Step("other", new, _joining(ctx, new, done, plan.used[mark:]),
+                                _sources(ctx, plan.events[seen:], done) or jointed(ctx.model, new, done),
                                 source=run[0].source))
-                mark = len(plan.used)
+                mark, seen = len(plan.used), len(plan.events)
                 done |= set(new)
             if plan.complete() or plan.step() is None:
                 break
@@ -804,6 +805,38 @@ def _recut(ctx: Ctx, run: list, known: set[str]) -> list:
         out.append(Step(stuck.kind, bodies, stuck.joints, stuck.known, stuck.letters, stuck.source))
         done |= set(bodies)
     return out
+
+
+def _sources(ctx: Ctx, events: list, done: set[str]) -> list[str]:
+    """The known bodies a step's equations read, in the model's order: for each equation
+    (`Path`) the bodies of the known points it writes — a point of a body still unknown but
+    pinned to a known one read from that body (C5-1.2's B on the lever, pinned to the
+    ground) — and for a rate carried (`Same`) the body it is carried from. The order of
+    solution says these, the same source the step's equation reads (round 16a: 001's lever
+    N was said "from the ground" while its equation reads the slider's A); empty when the
+    step writes no equation of known points (the caller then names the jointed bodies)."""
+    found: set[str] = set()
+    for ev in events:
+        if isinstance(ev, Path):
+            for site, (state, _spec) in ev.known.items():
+                if site.body in done:
+                    found.add(site.body)
+                elif state == "full":
+                    key = ctx.motion_key(site.point, site.body)
+                    pinned = [b for b in ctx.model.carriers(site.point)
+                              if b in done and ctx.motion_key(site.point, b) == key]
+                    found.update([ctx.frame] if ctx.frame in pinned else pinned[:1])   # one source a point
+                found.update(_touched(ctx, site, done))
+        elif isinstance(ev, Same) and ev.other in done:
+            found.add(ev.other)
+    return [b for b in ctx.model.bodies if b in found]
+
+
+def _touched(ctx: Ctx, site: Site, done: set[str]) -> list[str]:
+    """The known bodies a rolling contact at `site` touches: a wheel's contact point on the
+    ground is read from the ground (v_J = 0 there), so the ground is a source of the step."""
+    return [other for j in ctx.model.joints if rolls(j) and site.body in (j.a, j.b)
+            for other in [j.b if site.body == j.a else j.a] if other in done and ctx.contact(j) == site.point]
 
 
 def _joining(ctx: Ctx, new: list[str], done: set[str], used: list[str]) -> list[str]:

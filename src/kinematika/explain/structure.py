@@ -6,6 +6,7 @@ from __future__ import annotations
 from typing import Any, Optional
 
 from ..draw.names import body_numbers
+from ..model.body_shapes import Circle, Disc
 from ..model.model import PointPair
 from .freedom import dof_unsaid
 from .context import Ctx
@@ -23,11 +24,9 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model = ctx.model
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
-    bodies = [[Name(name, "index"), _body_cell(ctx, name),
-               [point(p) for p in b.points],
-               [msg(f"shape.{type(s).__name__.lower()}") for s in b.shapes]]
+    bodies = [[Name(name, "index"), _shaped(ctx, name, _body_cell(ctx, name)), [point(p) for p in b.points]]
               for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
-    sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points"), msg("col.shapes")], bodies))
+    sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points")], bodies))
     sec.add(msg("structure.subscripts",          # ω_t: which body (render); a part welded to the frame has no rate
                 bodies=[b for b in ctx.model.bodies if b not in welded_to_frame(ctx)]))
     # a joint is said by what it is, the bodies it joins and where: never by its id (j3); a
@@ -101,6 +100,20 @@ def dof_counts(ctx: Ctx) -> dict:
     welded = len(welded_to_frame(ctx))
     n = d.n - k * welded
     return {"n": n, "moving": moving - welded, "rank": n - d.dof, "dof": d.dof, "conditions": d.conditions}
+
+
+def _shaped(ctx: Ctx, name: str, cell: Any) -> Any:
+    """The body's cell with its round shape folded in ("*wheel*, circle of radius 0.5 m"): a
+    teacher prints a body's shape only where it matters — a wheel's, a pulley's, a disc's
+    radius, which the rolling conditions use — and never an empty "shapes" column (the
+    readers' top item, round 16a). A line (a strand, the floor) says nothing the body's name
+    and the Data's shape table do not; every shape stays stated there (`data.shape_rows`)."""
+    round_ = [(s, inst) for s, inst in zip(ctx.model.bodies[name].shapes, ctx.inst.shapes.get(name, []))
+              if isinstance(s, (Circle, Disc))]
+    for spec, shape in round_:
+        cell = msg("structure.shaped", body=cell, shape=msg(f"shape.{type(spec).__name__.lower()}"),
+                   radius=Value(ctx.clean(shape.radius, "len"), "len"))
+    return cell
 
 
 def _body_cell(ctx: Ctx, name: str):

@@ -35,7 +35,6 @@ col-given = dades
 sec-structure = Estructura
 col-body = sòlid
 col-points = punts
-col-shapes = formes
 col-joint = enllaç
 col-bodies = sòlids
 col-where = on
@@ -49,6 +48,7 @@ structure-subscript_pair = { $sym } és la velocitat angular { ELISION($body) ->
        *[other] de { $body }
     }
 structure-frame = { $body } (fix)
+structure-shaped = { $body }, { $shape } de radi { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
@@ -250,7 +250,7 @@ pos-open = la configuració oberta (les barres no es creuen)
 pos-crossed = la configuració creuada (les barres es creuen)
 
 sec-order = Ordre de resolució
-order-assur = El mecanisme es descompon en les seves entrades (manovelles i corredores motores) i díades; cadascuna es resol a partir de sòlids ja coneguts:
+order-assur = El mecanisme es descompon en les seves entrades i díades; cadascuna es resol a partir de sòlids ja coneguts:
 order-blocks = Els sòlids es troben en aquest ordre, cadascun a partir de sòlids ja coneguts:
 order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
 order-item_group = { $n }. { $bodies }, a partir { $known }.

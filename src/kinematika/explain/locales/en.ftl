@@ -23,7 +23,6 @@ col-given = data
 sec-structure = Structure
 col-body = body
 col-points = points
-col-shapes = shapes
 col-joint = joint
 col-bodies = bodies
 col-where = where
@@ -34,6 +33,7 @@ col-answer = answer
 structure-subscripts = Notation: { $pairs }.
 structure-subscript_pair = { $sym } is the angular velocity of { $body }
 structure-frame = { $body } (fixed)
+structure-shaped = { $body }, { $shape } of radius { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
@@ -193,7 +193,7 @@ pos-open = the open assembly (the links do not cross)
 pos-crossed = the crossed assembly (the links cross)
 
 sec-order = Order of solution
-order-assur = The mechanism is decomposed into its inputs (driven cranks and sliders) and dyads; each is solved from bodies already known:
+order-assur = The mechanism is decomposed into its inputs and dyads; each is solved from bodies already known:
 order-blocks = The bodies are found in this order, each from bodies already known:
 order-item = { $n }. { $kind }: { $bodies }, from { $known }.
 order-item_group = { $n }. { $bodies }, from { $known }.

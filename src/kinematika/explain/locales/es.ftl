@@ -23,7 +23,6 @@ col-given = datos
 sec-structure = Estructura
 col-body = sólido
 col-points = puntos
-col-shapes = formas
 col-joint = par
 col-bodies = sólidos
 col-where = dónde
@@ -34,6 +33,7 @@ col-answer = respuesta
 structure-subscripts = Notación: { $pairs }.
 structure-subscript_pair = { $sym } es la velocidad angular de { $body }
 structure-frame = { $body } (fijo)
+structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
@@ -178,7 +178,7 @@ pos-open = la configuración abierta (las barras no se cruzan)
 pos-crossed = la configuración cruzada (las barras se cruzan)
 
 sec-order = Orden de resolución
-order-assur = El mecanismo se descompone en sus entradas (manivelas y correderas motoras) y díadas; cada una se resuelve a partir de sólidos ya conocidos:
+order-assur = El mecanismo se descompone en sus entradas y díadas; cada una se resuelve a partir de sólidos ya conocidos:
 order-blocks = Los sólidos se hallan en este orden, cada uno a partir de sólidos ya conocidos:
 order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
 order-item_group = { $n }. { $bodies }, a partir { $known }.

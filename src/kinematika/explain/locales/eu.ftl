@@ -23,7 +23,6 @@ col-given = datuak
 sec-structure = Egitura
 col-body = solidoa
 col-points = puntuak
-col-shapes = formak
 col-joint = lotura
 col-bodies = solidoak
 col-where = non
@@ -34,6 +33,7 @@ col-answer = erantzuna
 structure-subscripts = Notazioa: { $pairs }.
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
 structure-frame = { $body } (finkoa)
+structure-shaped = { $body }, { $radius } erradioko { $shape }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
@@ -178,7 +178,7 @@ pos-open = konfigurazio irekia: barrak ez dira gurutzatzen
 pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
-order-assur = Mekanismoa bere sarreretan (biradera eta irristagailu eragileak) eta bi elementuko taldeetan deskonposatzen da; bakoitza jadanik ezagunak diren solidoetatik ebazten da:
+order-assur = Mekanismoa bere sarreretan eta bi elementuko taldeetan deskonposatzen da; bakoitza jadanik ezagunak diren solidoetatik ebazten da:
 order-blocks = Solidoak ordena honetan aurkitzen dira, bakoitza jadanik ezagunak diren solidoetatik:
 order-item = { $n }. { $kind }: { $bodies }, { $known } { $known_n ->
         [one] solidotik
