@@ -27,8 +27,9 @@ from .helpers import LANGS, SEEDS, rendered
 
 # ---- 1. one symbol for a placed centre ----------------------------------------------------
 
-FOUND = {"en": "found above, has no velocity", "es": "hallado arriba, no tiene velocidad",
-         "ca": "trobat més amunt, no té velocitat", "eu": "zentroak ez du abiadurarik"}
+FOUND = {"en": "placed in «Instant centres», has no velocity",
+         "es": "hallado en «Centros instantáneos de rotación (CIR)», no tiene velocidad",
+         "ca": "trobat a «Centres instantanis de rotació (CIR)», no té velocitat", "eu": "zentroak ez du abiadurarik"}
 
 
 @pytest.mark.parametrize("lang", LANGS)

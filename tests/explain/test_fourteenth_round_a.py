@@ -73,8 +73,8 @@ BY_NUMBER = [("seed_c5_1_6_belt", {"en": "found in Step 2 through the *belt*", "
              ("seed_c5_e5_unequal_wheels", {"en": "found in Step 4 through the *wheel of radius R*",
                                             "es": "hallada en el paso 4 a través de la *rueda de radio R*"}),
              ("seed_c5_e6_bicycle", {"en": "found in Step 3 through the *chain*", "es": "hallada en el paso 3 a través de la *cadena*"}),
-             ("seed_c5_2_1_tricycle", {"en": "the rear left wheel's spin found in Step 1",
-                                       "es": "rueda trasera izquierda hallada en el paso 1"}),
+             ("seed_c5_2_1_tricycle", {"en": "the wheel C1 (rear left) found in Step 1",
+                                       "es": "rueda C1 (trasera izquierda) hallada en el paso 1"}),
              ("seed_001_rolling_pair", {"en": "m/s, found in Step 3.", "es": "m/s, hallada en el paso 3."})]
 
 

@@ -91,7 +91,7 @@ def test_no_centre_is_said_with_an_equivalence_sign(name, lang):
 
 def test_the_pulleys_centre_sentence():
     ca = rendered("seed_c5_1_1_pulley_on_cable", "ca", "md", drawings=False)
-    assert "I_politja, trobat més amunt, no té velocitat: v_{I_politja} = 0." in ca   # one symbol (round 15a)
+    assert "I_politja, trobat a «Centres instantanis de rotació (CIR)», no té velocitat: v_{I_politja} = 0." in ca   # one symbol (round 15a)
 
 
 # ---- 3. said once -----------------------------------------------------------------------

@@ -54,21 +54,32 @@ def _words(name: str) -> list[str]:
 
 
 def read_off(label: str, name: str, lang: Optional[str]) -> bool:
-    """Whether subscript `label` is body `name` run together, so a student reads it off the
-    name and a legend saying so is a line a teacher deletes (fifteenth round): each piece a
-    word of the name in any order, a number without the Basque ordinal's dot (politja1 for
-    *politja 1*, polea1 for *1. polea*, rodaR for *roda de radi R*, central for *roda
-    central*, ω_{roda esquerra}), in Basque a word with its article too (platera for *plater
-    pedalduna*). An abbreviation or a symbol from the notes (ψ̇) is not read off."""
-    pieces = {w.rstrip(".") for w in _words(name)} - {""}
-    if lang == "eu":
-        pieces |= {w + "a" for w in pieces}
+    """Whether subscript `label` is body `name` run together, every word of it, so a student
+    reads it off the name and a legend saying so is a line a teacher deletes (fifteenth
+    round): each word of the name (past its article and the language's small words, de, of)
+    once, in any order, a number without the Basque ordinal's dot (politja1 for *politja 1*,
+    polea1 for *1. polea*, ω_{roda esquerra}), in Basque a word with its article too
+    (platera for *plater pedalduna*'s *plater*... only when every word is there). A subscript
+    that keeps only some of the name's words is shortened (sixteenth round: central for *roda
+    central*, plat for *plat amb els pedals*, rodaR for *roda de radi R*): the reader cannot
+    tell which body it is until the page says so. An abbreviation or a symbol from the notes
+    (ψ̇) is not read off either."""
+    small = SMALL_WORDS.get(lang or "", set())
+    words = [w.rstrip(".") for w in _words(name)]
+    words = [w for w in words if w and w.lower().replace("’", "'").split("'")[-1] not in small]
     text = label.replace(" ", "")
-    ends = {0}                                   # where a run of whole pieces can end
-    for i in range(1, len(text) + 1):
-        if any(text[j:i] in pieces for j in ends if j < i):
-            ends.add(i)
-    return bool(text) and len(text) in ends
+    if not text or not words or len(words) > 6:
+        return False
+
+    def forms(w: str) -> set[str]:
+        return {w, w + "a"} if lang == "eu" else {w}
+
+    def match(rest: str, left: tuple[str, ...]) -> bool:
+        if not left:
+            return not rest
+        return any(rest.startswith(f) and match(rest[len(f):], left[:k] + left[k + 1:])
+                   for k, w in enumerate(left) for f in forms(w))
+    return match(text, tuple(words))
 
 
 def _head(content: list[str], lang: str) -> str:

@@ -250,7 +250,7 @@ dir-guide = { $holder } solidoaren gida
 dir-normal = normala
 how-prismatic = (lotura prismatikoa: biraketa erlatiborik gabe)
 carry-anchor = Taldearen ebazpenetik: { $sym } = { $value }.
-sense-ccw = erlojuaren orratzen aurka
+sense-ccw = erlojuaren orratzen aurkako noranzkoan
 sense-cw = erlojuaren orratzen noranzkoan
 sec-rates_summary = Abiadura eta azelerazio angeluarrak
 sec-rates_summary_v = Abiadura angeluarrak
@@ -481,8 +481,8 @@ how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira u
 how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur lautik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 centres-found_above = { $centre } = { $value }: goian aurkitua, { $body } solidoaren abiadura-urratsean.
 centres-found_above_step = { $centre } = { $value }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
-centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
-centre-site_s = Goian aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
+centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, «{ sec-centres }» atalean aurkitua): { $sym } = 0.
+centre-site_s = «{ sec-centres }» atalean aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
 geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
 geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan giltzatutako barra baten puntu bat bezala mugitzen da:
