@@ -77,10 +77,12 @@ joint-gear = engranatge
 joint-weld = sòlids solidaris
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
-fig-drag = d’arrossegament { ELISION($point) ->
+fig-arrow-velocity = la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
-    } ({ $sym })
+    }
+fig-arrow-drag = la velocitat d’arrossegament ({ $sym })
+fig-arrow-relative = la velocitat relativa ({ $sym })
 fig-own_drag = la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }

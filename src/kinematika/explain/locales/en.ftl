@@ -65,7 +65,9 @@ joint-gear = gear
 joint-weld = rigid joint
 joint-spherical = spherical
 joint-cylindrical = cylindrical
-fig-drag = the drag velocity of { $point } ({ $sym })
+fig-arrow-velocity = the velocity of { $point }
+fig-arrow-drag = the drag velocity ({ $sym })
+fig-arrow-relative = the relative velocity ({ $sym })
 fig-own_drag = the velocity of { $point } and its drag velocity ({ $sym })
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)

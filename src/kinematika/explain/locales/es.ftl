@@ -62,7 +62,9 @@ joint-gear = engranaje
 joint-weld = sólidos solidarios
 joint-spherical = par esférico
 joint-cylindrical = par cilíndrico
-fig-drag = de arrastre de { $point } ({ $sym })
+fig-arrow-velocity = la velocidad de { $point }
+fig-arrow-drag = la velocidad de arrastre ({ $sym })
+fig-arrow-relative = la velocidad relativa ({ $sym })
 fig-own_drag = la velocidad de { $point } y su velocidad de arrastre ({ $sym })
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)

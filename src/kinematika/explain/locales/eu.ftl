@@ -62,7 +62,9 @@ joint-gear = engranajea
 joint-weld = lotura zurruna
 joint-spherical = esferikoa
 joint-cylindrical = zilindrikoa
-fig-drag = { $point } ({ $sym }, arrastre-abiadura)
+fig-arrow-velocity = { $point } puntuaren abiadura
+fig-arrow-drag = arrastre-abiadura ({ $sym })
+fig-arrow-relative = abiadura erlatiboa ({ $sym })
 fig-own_drag = { $point } puntuaren abiadura eta arrastre-abiadura ({ $sym })
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
