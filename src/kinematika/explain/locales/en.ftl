@@ -212,7 +212,12 @@ step-title = Step { $n }: { $kind } — { $bodies }
 step-title_group = Step { $n }: { $bodies }
 sec-velocities = Velocities
 sec-accelerations = Accelerations
-v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
+ann-M = mag
+ann-D = dir
+v-intro = Each vector equation is annotated as in the notes: { $marks ->
+        [1] mag magnitude known, dir direction known
+       *[other] M magnitude known, D direction known
+    }, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
         [md] : the terms marked ?, which the step finds
        *[other] ; the terms found in the step are in red
     }.

@@ -197,7 +197,12 @@ step-title = Paso { $n }: { $kind } — { $bodies }
 step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
-v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
+ann-M = mód
+ann-D = dir
+v-intro = Cada ecuación vectorial se anota como en los apuntes: { $marks ->
+        [1] mód módulo conocido, dir dirección conocida
+       *[other] M módulo conocido, D dirección conocida
+    }, ? desconocido; ⊥ y ∥ dan una dirección conocida. Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
         [md] : los términos marcados con ?
        *[other] ; en rojo, los términos que se hallan en cada paso
     }.
