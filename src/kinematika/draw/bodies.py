@@ -239,7 +239,10 @@ def _line_span(ctx: Context, body: BodyView, s: ShapeView) -> Optional[tuple[np.
     """The part of a moving body's line worth drawing (a chain's run, a rack): over its
     points and the contacts on it, a little beyond a point, inside the reach — but never
     beyond a contact at its end: a strand or a straight run leaves its pulley at the tangent
-    point, so it is drawn from there, not through it (C5-1.1's strands ran past J and K)."""
+    point, so it is drawn from there, not through it (C5-1.1's strands ran past J and K); nor
+    beyond a point at its end, where a cable is tied (C5-1.1's strands ran past G1 and G2,
+    above the ceiling; issue 30, sixteenth round (f)) — unless the line guides another body,
+    which needs the room to slide on, or its points and contacts are one place."""
     through, direction = s.line()
     pts = list(body.points.values())
     contacts = [j.contact for j in ctx.scene.joints if body.name in (j.a, j.b) and j.contact is not None]
@@ -249,6 +252,9 @@ def _line_span(ctx: Context, body: BodyView, s: ShapeView) -> Optional[tuple[np.
     at_contacts = [float((p - through) @ direction) for p in contacts]
     margin, tol = 0.1 * ctx.size, 1e-9 * ctx.size
     lo, hi = min(at_points + at_contacts), max(at_points + at_contacts)
+    guides = any(j.a == body.name and (j.kind.slides or j.kind.guides_point) for j in ctx.scene.joints)
+    if not guides and hi - lo > tol:           # a strand ends at its points and contacts
+        margin = 0.0
     lo_contact = any(t <= lo + tol for t in at_contacts)          # a contact at the end (C5-1.5's T1 too)
     hi_contact = any(t >= hi - tol for t in at_contacts)
     return clip_segment(through + (lo - (0.0 if lo_contact else margin)) * direction,

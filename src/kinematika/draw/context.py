@@ -39,6 +39,12 @@ class Context:
         """The page positions of `body`'s points."""
         return list(self.scene.bodies[body].points.values())
 
+    def joined(self, body: str, but: str = "") -> list:
+        """The page places where the scene's joints other than `but` hold `body`: their pins
+        (`at`) and contacts."""
+        return [np.asarray(p, dtype=float) for j in self.scene.joints if j.id != but and body in (j.a, j.b)
+                for p in (j.at, j.contact) if p is not None]
+
     def keep_out(self) -> list[np.ndarray]:
         """Closed outlines ((n, 2) polygons) a fixed guide stops short of: each moving body's
         circles and closed curves (a cam's profile; not its pitch curve, which a roller's

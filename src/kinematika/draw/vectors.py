@@ -69,12 +69,15 @@ def arrow_for(view: VectorView, largest: float, size: float, origin=None, value=
 
 def arrows(vectors: list[VectorView], size: float, bars: Optional[list] = None) -> list[Arrow]:
     """Every vector's arrow, each kind to its own scale (the longest of a kind is `LONGEST` of
-    the drawing size); one that would lie along a bar from its point (a centripetal
-    acceleration along its crank) is drawn ending at the point instead, beyond the bar,
-    where it can be seen."""
+    the drawing size); an acceleration that would lie along a bar from its point (a
+    centripetal acceleration along its crank) is drawn ending at the point instead, beyond
+    the bar, where it can be seen. A velocity always starts at its point, as the notes draw
+    it (issue 30, sixteenth round (f): C5-2.2's v_O and v_P, along the chassis, ended at
+    their points and read as velocities of other points): along a bar it is drawn over the
+    bar, above it (`arrow_mark`'s zorder)."""
     largest = arrow_scales(vectors)
     out = [arrow_for(v, largest[v.kind], size) for v in vectors]
-    return [off_bars(a, bars or [], size) for a in out]
+    return [off_bars(a, bars or [], size) if a.view.kind == "acceleration" else a for a in out]
 
 
 def off_bars(arrow: Arrow, bars: list, size: float) -> Arrow:

@@ -25,6 +25,7 @@ from .group import refine
 from .material import material_contacts
 from .order import asked_order, solution_order
 from .planar import PlanarSteps
+from .marks import worded_marks
 from .needs import accelerations_asked, centres_asked_first, prune
 from .polygon import degenerate, level_polygon, polygon
 from .terms import acceleration_terms
@@ -135,6 +136,10 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     doc.parameters = tuple(ctx.model.parameters)
     doc.ground_part = ground_part(ctx)
     doc.values = ctx.drawn_values() if ctx.symbolic else {}
+    doc.worded_marks = worded_marks(ctx)
+    for b in doc.blocks():              # the legend says the marks the equations write (`marks`)
+        if isinstance(b, Msg) and b.key == "v.intro":
+            b.args["marks"] = int(doc.worded_marks)
     return doc
 
 

@@ -66,6 +66,11 @@ class Ctx:
                 self.name_position(base, contact.point)
         return self._contacts[j.id]
 
+    def page_names(self) -> set[str]:
+        """Every name the page may write alone: the model's points and bodies, the contacts
+        and the locations named for the equations (`name_position`)."""
+        return set(self.model.points) | set(self.model.bodies) | set(self._contacts.values()) | set(self._extra)
+
     def r(self, q: str, p: str) -> tuple:
         """The position vector from point q to point p: r_qp = p − q (as in ω × r_AB)."""
         return sub(self.pos(p), self.pos(q))

@@ -61,7 +61,7 @@ class PlanarSteps:
         model's accelerations first say that ω is written by its name (ω_crank) in the formulas."""
         title = "sec.velocities" if self.level == "v" else "sec.accelerations"
         sec = Section(msg(title))
-        sec.add(msg("v.intro" if self.level == "v" else "a.intro"))
+        sec.add(msg("v.intro", marks=0) if self.level == "v" else msg("a.intro"))
         i = 0
         for step in merge_vehicles(self.ctx, self.steps):
             if all(self.ctx.fixed(b) for b in step.bodies):  # welded to the frame: part of it, said in Structure

@@ -205,32 +205,57 @@ def _arrows_drawn(ctx: Ctx, options: dict) -> dict:
     """What the mechanism's figure draws of the velocities, read off the figure itself, for
     its caption to say just that: `arrows` 1 (one arrow: "the arrow is the velocity of B"),
     2 (several: "the arrows are the velocities of B and E"), 3 (only points at rest, whose
-    zero velocity is written beside them: C5-E.4's v_P = 0) or 0 (none); `points` which —
-    never "the arrows are the velocities of its points" over one arrow or none."""
+    zero velocity is written beside them: C5-E.4's v_P = 0), 4 (a list of the arrows, each
+    said whole) or 0 (none); `points` which — never "the arrows are the velocities of its
+    points" over one arrow or none. One source: every arrow drawn, a relative velocity's
+    too, is named in the caption (issue 30, sixteenth round (f): 001's prismatic pair drew
+    v_B∈N rel. M under a caption that named two arrows)."""
     from ..draw.build import build_scene
     from ..draw.options import DrawOptions
 
     scene = build_scene(ctx.inst, ctx.sol, DrawOptions(**options))
-    drawn = [v for v in scene.vectors if v.kind == "velocity" and v.relative_to is None]
+    drawn = [v for v in scene.vectors if v.kind == "velocity"]
     moving = [v for v in drawn if v.magnitude > 1e-9 * max(ctx.inst.scale, 1e-12)]
     shown = moving or drawn
     points: Any = Names([_arrow_point(ctx, v.ref) for v in shown])
     arrows = (min(len(moving), 2) if moving else 3) if drawn else 0
-    own = _own_drag(ctx, [v.ref for v in shown])
+    own = _own_drag(ctx, [v.ref for v in shown], [v.relative_to for v in shown])
     if arrows == 2 and own is not None:         # one point's velocity and its drag: the point said once
         arrows, points = 4, msg("fig.own_drag", point=Name(own), sym=Sym("v", own, sub_key="sub.drag"))
+    elif moving and any(v.relative_to or v.ref.endswith(":drag") for v in shown):
+        arrows, points = 4, Names([_arrow_named(ctx, v) for v in sorted(shown, key=_composition_order)])
     # a symbolic page's label too long to set names the vector alone (`draw.vectors`): the
     # caption then promises no magnitude
     moduli = int(all(not v.text.startswith("≈") for v in shown))
     return {"arrows": arrows, "points": points, "moduli": moduli}
 
 
-def _own_drag(ctx: Ctx, refs: list[str]) -> Optional[str]:
+def _composition_order(v: Any) -> int:
+    """An arrow's place in a caption's list, the composition's order v = v_ar + v_rel: a
+    point's velocity, then the drag velocity, then the relative one."""
+    return 2 if v.relative_to else 1 if v.ref.endswith(":drag") else 0
+
+
+def _arrow_named(ctx: Ctx, v: Any) -> Msg:
+    """One arrow of a figure that draws a composition, said whole: "the velocity of B∈N",
+    "the drag velocity (v_ar,B)", "the relative velocity (v_B∈N rel. M)" — each by the
+    symbol its label in the figure writes, so the caption's list and the arrows are one."""
+    ref, _, part = v.ref.partition(":")
+    point, _, body = ref.partition("@")
+    if part == "drag":
+        return msg("fig.arrow.drag", sym=Sym("v", point, sub_key="sub.drag"))
+    if v.relative_to:
+        from .terms import relative_name
+        return msg("fig.arrow.relative", sym=Sym("v", relative_name(point, body, v.relative_to)))
+    return msg("fig.arrow.velocity", point=_arrow_point(ctx, v.ref))
+
+
+def _own_drag(ctx: Ctx, refs: list[str], relative: Optional[list] = None) -> Optional[str]:
     """The point when a figure's two arrows are one point's velocity and its drag velocity
     (001's rolling pair: v_A and v_ar,A): the caption then names the point once, "the
     velocity of A and its drag velocity (v_ar,A)", never "the velocities of A and A
     (v_ar,A, drag velocity)" — a list that names one point twice. None otherwise."""
-    if len(refs) != 2:
+    if len(refs) != 2 or any(relative or []):
         return None
     parts = [r.partition(":") for r in refs]
     drags = [head for head, _, part in parts if part == "drag"]
@@ -246,13 +271,8 @@ def _own_drag(ctx: Ctx, refs: list[str]) -> Optional[str]:
 def _arrow_point(ctx: Ctx, ref: str) -> Any:
     """What an arrow of the mechanism's figure is the velocity of, as its label on the page
     says it: B∈rocker where two bodies' points meet and move apart (never "the velocities of
-    B and B"), and the drag of a composition at A by the drag's own symbol, "the drag
-    velocity of A (v_ar,A)" — the label the figure writes and the composition section's
-    symbol, never "A∈N" under an arrow labelled v_ar,A (001's rolling pair)."""
-    ref, _, part = ref.partition(":")
-    point, _, body = ref.partition("@")
-    if part == "drag":
-        return msg("fig.drag", point=Name(point), sym=Sym("v", point, sub_key="sub.drag"))
+    B and B")."""
+    point, _, body = ref.partition(":")[0].partition("@")
     return Name(ctx.point_label(point, body) if body else point)
 
 

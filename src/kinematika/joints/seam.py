@@ -229,6 +229,10 @@ class DrawContext(Protocol):
         """`body`'s points on the page."""
         ...
 
+    def joined(self, body: str, but: str = "") -> list:
+        """Where the figure's joints other than `but` hold `body` (pins and contacts), on the page."""
+        ...
+
     def clip(self, p: np.ndarray, d: np.ndarray, inset: float) -> Optional[tuple]:
         """The part of the line through p along d inside the figure's reach, less `inset`."""
         ...

@@ -192,14 +192,20 @@ def block_on_guide(view: JointView, ctx: DrawContext) -> list[Mark]:
 
 
 def slider_centre(view: JointView, ctx: DrawContext) -> Optional[Vec]:
-    """Where a slider's block is drawn: at the joint's point `at`, else at the centroid of the
-    moving body's points (the slider's, else the guide's), else nowhere (None)."""
+    """Where a slider's block is drawn: at the joint's point `at`, else at the moving body's
+    own points — those no other joint holds (the slider's, else the guide's) — else at the
+    centroid of all its points, else nowhere (None). A body is drawn at its points: C5-1.5's
+    block K hangs from strand 5, whose other point T7 is its contact with pulley 4, and a
+    block at the centroid of T7 and K sat halfway down the strand, where no point is (issue
+    30, sixteenth round (f))."""
     if view.at is not None:
         return np.asarray(view.at, dtype=float)
     for name in (view.b, view.a):
         pts = ctx.points(name)
         if len(pts) and name != ctx.frame:
-            return np.mean(pts, axis=0)
+            held = ctx.joined(name, view.id)
+            own = [p for p in pts if not any(np.linalg.norm(p - q) <= 1e-9 * ctx.size for q in held)]
+            return np.mean(own or pts, axis=0)
     return None
 
 

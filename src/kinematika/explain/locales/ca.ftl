@@ -77,10 +77,12 @@ joint-gear = engranatge
 joint-weld = sòlids solidaris
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
-fig-drag = d’arrossegament { ELISION($point) ->
+fig-arrow-velocity = la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
-    } ({ $sym })
+    }
+fig-arrow-drag = la velocitat d’arrossegament ({ $sym })
+fig-arrow-relative = la velocitat relativa ({ $sym })
 fig-own_drag = la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
@@ -270,7 +272,12 @@ step-title = Pas { $n }: { $kind } — { $bodies }
 step-title_group = Pas { $n }: { $bodies }
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
-v-intro = Cada equació vectorial s’anota com als apunts: M mòdul conegut, D direcció coneguda, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
+ann-M = mòd
+ann-D = dir
+v-intro = Cada equació vectorial s’anota com als apunts: { $marks ->
+        [1] mòd mòdul conegut, dir direcció coneguda
+       *[other] M mòdul conegut, D direcció coneguda
+    }, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
         [md] : els termes marcats amb ?, que troba el pas
        *[other] ; en vermell, els termes trobats en el pas
     }.

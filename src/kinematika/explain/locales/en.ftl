@@ -65,7 +65,9 @@ joint-gear = gear
 joint-weld = rigid joint
 joint-spherical = spherical
 joint-cylindrical = cylindrical
-fig-drag = the drag velocity of { $point } ({ $sym })
+fig-arrow-velocity = the velocity of { $point }
+fig-arrow-drag = the drag velocity ({ $sym })
+fig-arrow-relative = the relative velocity ({ $sym })
 fig-own_drag = the velocity of { $point } and its drag velocity ({ $sym })
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
@@ -210,7 +212,12 @@ step-title = Step { $n }: { $kind } — { $bodies }
 step-title_group = Step { $n }: { $bodies }
 sec-velocities = Velocities
 sec-accelerations = Accelerations
-v-intro = Each vector equation is annotated as in the notes: M magnitude known, D direction known, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
+ann-M = mag
+ann-D = dir
+v-intro = Each vector equation is annotated as in the notes: { $marks ->
+        [1] mag magnitude known, dir direction known
+       *[other] M magnitude known, D direction known
+    }, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
         [md] : the terms marked ?, which the step finds
        *[other] ; the terms found in the step are in red
     }.

@@ -62,7 +62,9 @@ joint-gear = engranaje
 joint-weld = sólidos solidarios
 joint-spherical = par esférico
 joint-cylindrical = par cilíndrico
-fig-drag = de arrastre de { $point } ({ $sym })
+fig-arrow-velocity = la velocidad de { $point }
+fig-arrow-drag = la velocidad de arrastre ({ $sym })
+fig-arrow-relative = la velocidad relativa ({ $sym })
 fig-own_drag = la velocidad de { $point } y su velocidad de arrastre ({ $sym })
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
@@ -195,7 +197,12 @@ step-title = Paso { $n }: { $kind } — { $bodies }
 step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
-v-intro = Cada ecuación vectorial se anota como en los apuntes: M módulo conocido, D dirección conocida, ? desconocido; ⊥ y ∥ dan una dirección conocida. Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
+ann-M = mód
+ann-D = dir
+v-intro = Cada ecuación vectorial se anota como en los apuntes: { $marks ->
+        [1] mód módulo conocido, dir dirección conocida
+       *[other] M módulo conocido, D dirección conocida
+    }, ? desconocido; ⊥ y ∥ dan una dirección conocida. Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
         [md] : los términos marcados con ?
        *[other] ; en rojo, los términos que se hallan en cada paso
     }.

@@ -62,7 +62,9 @@ joint-gear = engranajea
 joint-weld = lotura zurruna
 joint-spherical = esferikoa
 joint-cylindrical = zilindrikoa
-fig-drag = { $point } ({ $sym }, arrastre-abiadura)
+fig-arrow-velocity = { $point } puntuaren abiadura
+fig-arrow-drag = arrastre-abiadura ({ $sym })
+fig-arrow-relative = abiadura erlatiboa ({ $sym })
 fig-own_drag = { $point } puntuaren abiadura eta arrastre-abiadura ({ $sym })
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
@@ -201,7 +203,12 @@ step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
-v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M modulua ezaguna, D norabidea ezaguna, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
+ann-M = mod
+ann-D = norab
+v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: { $marks ->
+        [1] mod modulua ezaguna, norab norabidea ezaguna
+       *[other] M modulua ezaguna, D norabidea ezaguna
+    }, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
         [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
        *[other] ; gorriz, urratsean aurkitutako terminoak
     }.

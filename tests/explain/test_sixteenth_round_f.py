@@ -1,0 +1,164 @@
+"""Issue 30, sixteenth round (f): the explanations' figures and their captions, over the 19
+seeds (docs/explain.md, "Sixteenth round (f)").
+
+- a mechanism figure's caption names every velocity arrow the figure draws, a relative one
+  too (001's prismatic pair drew v_B∈N rel. M under a caption naming two arrows);
+- a velocity arrow starts at its point (C5-2.2's v_O and v_P ended there);
+- the M/D marks of the equations are never a name on the page (C5-1.1's point D);
+- a slider's block is drawn at its body's own point (C5-1.5's block K sat halfway down its
+  strand) and a strand ends at its end points (C5-1.1's strands ran past G1 and G2).
+"""
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from kinematika.draw import draw
+from kinematika.draw.build import build_scene
+from kinematika.draw.options import DrawOptions
+from kinematika.explain.document import Drawing
+
+from tests.draw.artists import arrow, axes, pixel
+from .helpers import LANGS, SEEDS, explained, rendered
+
+# what each language calls a relative and a drag velocity in a caption's list
+RELATIVE = {"en": "relative velocity", "es": "velocidad relativa", "ca": "velocitat relativa",
+            "eu": "abiadura erlatiboa"}
+
+
+def _mechanism_drawings(name: str) -> list[Drawing]:
+    _, doc = explained(name)
+    return [b for b in doc.blocks() if isinstance(b, Drawing) and b.caption.key == "fig.mechanism"]
+
+
+def _drawings(name: str) -> list[Drawing]:
+    _, doc = explained(name)
+    return [b for b in doc.blocks() if isinstance(b, Drawing)]
+
+
+def _captions(name: str, lang: str) -> list[str]:
+    return re.findall(r"^\*(?:The mechanism|El mecanismo|El mecanisme|Mekanismoa).*\*$", rendered(name, lang),
+                      flags=re.M)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_caption_names_every_velocity_arrow_drawn(name, lang):
+    """As many velocity arrows as the figure draws, as many the caption names: each relative
+    arrow by the words "relative velocity" and its symbol's subscript (B∈N … M)."""
+    sol, _ = explained(name)
+    captions = _captions(name, lang)
+    for d, caption in zip(_mechanism_drawings(name), captions):
+        scene = build_scene(sol.inst, sol, DrawOptions(**d.options))
+        moving = [v for v in scene.vectors if v.kind == "velocity" and v.magnitude > 1e-9 * sol.inst.scale]
+        relative = [v for v in moving if v.relative_to]
+        assert caption.count(RELATIVE[lang]) == len(relative), caption
+        for v in relative:
+            point, _, body = v.ref.partition("@")
+            assert re.search(rf"{point}∈{body}\W+(?:rel\.? |erl\.? |/)?{v.relative_to}", caption), caption
+
+
+def test_the_prismatic_pair_caption_lists_three_arrows():
+    """001's prismatic pair draws v_B∈N, v_ar,B and v_B∈N rel. M (by hand: the composition
+    v_B∈N = v_B∈M + v_B∈N rel. M, all three nonzero): its caption names the three."""
+    for lang, words in (("ca", ("la velocitat de B∈N", "la velocitat d’arrossegament (v_{ar,B})",
+                                "la velocitat relativa (v_{B∈N rel. M})")),
+                        ("eu", ("B∈N puntuaren abiadura", "arrastre-abiadura (v_{arr,B})", "abiadura erlatiboa"))):
+        (caption,) = _captions("seed_001_p_pair_coriolis", lang)
+        for w in words:
+            assert w in caption, caption
+
+
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_velocity_arrow_starts_at_its_point(name):
+    """Read off the drawn arrows: every velocity arrow's path starts at its point (the scene's
+    origin of the vector), never ends there."""
+    sol, _ = explained(name)
+    for d in _drawings(name):
+        options = DrawOptions(**d.options)
+        scene = build_scene(sol.inst, sol, options)
+        fig = draw(sol, options=options)
+        for v in scene.vectors:
+            if v.kind != "velocity" or v.magnitude <= 1e-9 * sol.inst.scale:
+                continue
+            start, tip = arrow(fig, v.key)
+            assert np.linalg.norm(start - np.asarray(v.origin)[:2]) <= 2 * pixel(fig), (v.key, start, v.origin)
+            assert np.linalg.norm(tip - start) > 10 * pixel(fig), v.key
+
+
+def _mark_rows(md: str) -> list[list[str]]:
+    """The annotation rows (first and third) of every vector equation's code block."""
+    rows = []
+    for block in re.findall(r"```\n(.*?)```", md, flags=re.S):
+        lines = block.splitlines()
+        if len(lines) >= 3:
+            rows += [lines[0].split(), lines[2].split()]
+    return rows
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_the_marks_are_never_a_name_on_the_page(name, lang):
+    """A page that names a point, contact or body M or D writes neither letter as a mark,
+    nor in the legend; any other page writes the notes' M and D."""
+    sol, doc = explained(name)
+    md = rendered(name, lang)
+    named = set(sol.model.points) | set(sol.model.bodies) | set(doc.joints.values())
+    named |= set(re.findall(r"^\| ([A-Z][A-Za-z0-9]*) \|", md, flags=re.M))       # the points tables
+    clash = named & {"M", "D"}
+    marks = {tok for row in _mark_rows(md) for tok in row}
+    if clash:
+        assert not marks & {"M", "D"}, (clash, marks & {"M", "D"})
+        assert not re.search(r"(?<![\w∈])[MD] (?:mòdul|direcció|magnitude|direction|módulo|dirección|modulua|norabidea)",
+                             md)
+    elif _mark_rows(md) and doc.equations():
+        assert marks & {"M", "D"}
+
+
+def test_the_pulley_on_a_cable_writes_its_marks_as_words():
+    """C5-1.1 names its lowest point D: its equations are marked mòd/dir (ca)."""
+    md = rendered("seed_c5_1_1_pulley_on_cable", "ca")
+    assert "mòd mòdul conegut, dir direcció coneguda" in md
+    assert "dir" in {tok for row in _mark_rows(md) for tok in row}
+
+
+def test_the_block_is_drawn_at_its_point():
+    """C5-1.5: strand 5 carries T7 (its contact with pulley 4) and the block K; the block's
+    rectangle is centred on K = (8r, −6r), not on the midpoint (8r, −3r)."""
+    sol, _ = explained("seed_c5_1_5_pulley_block")
+    for d in _drawings("seed_c5_1_5_pulley_block"):
+        options = DrawOptions(**d.options)
+        fig = draw(sol, options=options)
+        scene = build_scene(sol.inst, sol, options)
+        blocks = [p for p in axes(fig).patches if (p.get_gid() or "").startswith("joint:")
+                  and len(p.get_path().vertices) >= 4]
+        k, t7 = (np.asarray(scene.point(n), dtype=float)[:2] for n in ("K", "T7"))   # drawn at r = 0.1
+        assert np.linalg.norm(k - t7) == pytest.approx(0.6, rel=1e-9)              # 6r below T7
+        centres = [p.get_path().vertices[:4].mean(axis=0) for p in blocks]
+        assert any(np.linalg.norm(c - k) <= 3 * pixel(fig) for c in centres), (centres, k)
+
+
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_strand_ends_at_its_points(name):
+    """A moving line body that guides nothing (a cable's strand) is drawn from its first point
+    or contact to its last, never past them (C5-1.1's strands ran past G1 and G2)."""
+    sol, _ = explained(name)
+    for d in _drawings(name)[:1]:
+        options = DrawOptions(**d.options)
+        scene = build_scene(sol.inst, sol, options)
+        fig = draw(sol, options=options)
+        for body in scene.bodies.values():
+            if body.frame or not any(s.kind == "line" for s in body.shapes):
+                continue
+            if any(j.a == body.name and (j.kind.slides or j.kind.guides_point) for j in scene.joints):
+                continue
+            ends = [ln.get_xydata() for ln in axes(fig).lines if ln.get_gid() == f"shape:{body.name}"]
+            if not ends or len(ends[0]) != 2:
+                continue                                           # a belt's loop
+            places = list(body.points.values()) + [j.contact for j in scene.joints
+                                                   if body.name in (j.a, j.b) and j.contact is not None]
+            for end in ends[0]:
+                assert min(np.linalg.norm(end - np.asarray(p)[:2]) for p in places) <= 2 * pixel(fig), \
+                    (body.name, end)
