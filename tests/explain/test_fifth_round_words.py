@@ -126,4 +126,4 @@ def test_a_caption_names_each_arrow_by_its_point_on_the_page():
     caption = next(line for line in rendered(P_PAIR, "eu", "md").splitlines()
                    if line.startswith("*Mekanismoa une honetan"))
     assert "B eta B puntuen" not in caption
-    assert "B (v_{arr,B}, arrastre-abiadura) puntuen abiadurak" in caption
+    assert "B∈N puntuaren abiadura, arrastre-abiadura (v_{arr,B}) eta abiadura erlatiboa" in caption

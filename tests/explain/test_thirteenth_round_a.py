@@ -118,9 +118,10 @@ def test_trivial_equality_has_no_marks(name, lang):
 def test_pulley_block_strand_velocity_is_a_plain_equality():
     """C5-1.5 by hand: strand 2 translates, so its points T2 and T1 have one velocity, which
     T1's strand gives, v_T1 = (0, −2v) (the block rises at v, the free strand at 2v): the page
-    writes "v_T2 = v_T1 = (0, −2·v)" after its reason."""
+    writes "v_T2 = v_{T1∈pulley1} = (0, −2·v)" after its reason (T1 written once, as the
+    pulley's material point: the sixteenth round (b))."""
     md = rendered("seed_c5_1_5_pulley_block", "en")
-    assert "All the points of *strand 2* have one velocity:\n\nv_T2 = v_T1 = (0, −2·v)\n" in md
+    assert "All the points of *strand 2* have one velocity:\n\nv_T2 = v_{T1∈pulley1} = (0, −2·v)\n" in md
     assert len(_equalities("seed_c5_1_5_pulley_block")) == 4
 
 
