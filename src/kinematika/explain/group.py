@@ -1225,9 +1225,12 @@ class Writer:
 
     def glides(self, g: Glides) -> Derived:
         """ω = 0 (α = 0 at accelerations) of a body whose two wheels' centres run on one line,
-        or on parallel lines."""
+        or on parallel lines. The reason is said once, at velocities; α = 0 refers to it (it
+        translates at every instant), not repeating it (sixteenth round: C5-E.5 said it twice)."""
         ctx = self.ctx
-        if g.one_line:
+        if self.level != "v":
+            remark = msg("how.translates_always")
+        elif g.one_line:
             remark = msg("how.glides", p=point_name(g.p), q=point_name(g.q), line=point_name(str(segment(g.p, g.q))))
         else:
             remark = msg("how.parallel_paths", p=point_name(g.p), q=point_name(g.q))

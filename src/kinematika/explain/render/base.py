@@ -344,6 +344,40 @@ class Renderer(ABC):
         parts = pattern.split(shown_lines(text))
         return "".join(self.formula(sympy.Symbol(part)) if k % 2 else self.typed(part) for k, part in enumerate(parts))
 
+    def bodies_marked(self, text: str, write: Callable[[str], str]) -> str:
+        """A model's own words with each body's name in them marked as the page marks a body's
+        name everywhere else (`body_word`: italics), the rest written by `write`: "centre of
+        *pulley 1*" beside "*pulley 2*" (issue 30, sixteenth round: C5-1.5's point table wrote
+        "centre of pulley 1" upright under "*pulley 1*"). A name is matched as a whole word
+        (its first letter in either case, as a sentence may start with it), the longest
+        first; a name of fewer than three letters (a bare letter, a number) is not matched."""
+        pattern = self.body_pattern()
+        if pattern is None:
+            return write(text)
+        parts = pattern.split(text)
+        return "".join(self.body_word(part) if k % 2 else write(part) for k, part in enumerate(parts))
+
+    def body_pattern(self) -> Optional[re.Pattern]:
+        """The page's bodies' names (the article taken off) as one pattern, or None."""
+        cached = getattr(self, "_body_pattern", False)
+        if cached is not False:
+            return cached
+        names = set()
+        for b in getattr(self.doc, "numbers", {}) or {}:
+            _, proper = self.articled(Name(b, "body", bare=True))
+            if sum(c.isalpha() for c in proper) >= 3:
+                names.add(proper)
+        alternatives = ["[" + n[0].lower() + n[0].upper() + "]" + re.escape(n[1:])
+                        for n in sorted(names, key=len, reverse=True)]
+        self._body_pattern = (re.compile(r"(?<!\w)(" + "|".join(alternatives) + r")(?![\w])")
+                              if alternatives else None)
+        return self._body_pattern
+
+    def body_word(self, text: str) -> str:
+        """A body's name as it stands in a model's words, marked as a name: escaped here; a
+        format that marks names (italics) overrides it."""
+        return self.esc(text)
+
     def coordinates(self, text: str) -> str:
         """Coordinates the model typed in its own words, "(4r, r)", written with the page's
         separator between the terms, as the page writes every vector: (4r; r) where the decimal
@@ -362,10 +396,10 @@ class Renderer(ABC):
         """A model's own text escaped, each symbol typed in it as X_sub (SUBSCRIPTED: C5-E.6's
         "r ω_pinyó = R ω_plat", its notes' "ℜ_P = v(P)²/aⁿ", a Data remark's "v_B") written as
         the page writes its symbols (`subscripted`), so the words and the formulas beside them
-        show one symbol one way."""
+        show one symbol one way; the bodies' names in the words marked (`bodies_marked`)."""
         parts = SUBSCRIPTED.split(text)
         return "".join(self.subscripted(parts[k], parts[k + 1]) if k % 3 == 1
-                       else self.esc(part) if k % 3 == 0 else "" for k, part in enumerate(parts))
+                       else self.bodies_marked(part, self.esc) if k % 3 == 0 else "" for k, part in enumerate(parts))
 
     def subscripted(self, base: str, sub: str) -> str:
         """A symbol typed base_sub in a model's words (sub perhaps in braces): as typed, which is
@@ -424,7 +458,10 @@ class Renderer(ABC):
         symbol side by side (a segment to the centre, the arm DI_{roda1}) run together as
         every other segment of the page is (IC, G1J, AI_13), the centre's subscript closed
         (`segment_centre`): no space inside a segment (issue 30, thirteenth round: the readers
-        read "I_S2 P" as two things). Inside it a parameter's name is a symbol of the formula
+        read "I_S2 P" as two things). Only a centre another point follows has its subscript
+        closed (I_{S2}P); a centre that ends the segment keeps its plain subscript, CI_pulley,
+        so that a velocity to it is not a subscript inside a subscript, v_{CI_pulley} (sixteenth
+        round: "v_{CI_{pulley}}" read badly). Inside it a parameter's name is a symbol of the formula
         (`in_formula`), written as the values write it, not an emphasised word: "v_C1 / r", "at
         r φ̇" (issue 30, fourteenth round)."""
         self.in_formula += 1
@@ -442,7 +479,7 @@ class Renderer(ABC):
             before = k and _segment_end(items[k - 1]) and "I" in (_base(items[k - 1]), _base(i))
             after = k + 1 < len(items) and _segment_end(items[k + 1]) and "I" in (_base(items[k + 1]), _base(i))
             text = self.arg(i)
-            if _segment_end(i) and (before or after) and _base(i) == "I":
+            if _segment_end(i) and after and _base(i) == "I":
                 text = self.segment_centre(text)
             out.append(text)
         return "".join(out)
@@ -720,9 +757,10 @@ class Renderer(ABC):
     def centred(self, text: str, write: Callable[[str], str], centre: Callable[[Sym], str], gap: str = "") -> str:
         """`text` (a point's name, a segment, a subscript) with each centre placed as a point
         written as its symbol in this language (`centre`), the rest by `write`. In a segment
-        the symbol runs into the other point as any segment's two ends do (OI_{OQ},
-        I_{OQ}O: `segment_centre` closes a plain subscript), never with a space between
-        (issue 30, thirteenth round); `gap` is kept for a format that wants one."""
+        the symbol runs into the other point as any segment's two ends do (OI_OQ, I_{OQ}O:
+        `segment_centre` closes a plain subscript where a point follows it, and only there,
+        so that v_{OI_OQ} is no subscript inside a subscript), never with a space between
+        (issue 30, thirteenth and sixteenth rounds); `gap` is kept for a format that wants one."""
         parts = CENTRE_POINT_RE.split(text)
         if len(parts) == 1:
             return write(text)
@@ -736,7 +774,7 @@ class Renderer(ABC):
             joined_before = bool(end and (end.isalnum() or end in "'′")) or (k > 1 and not before)
             joined_after = after[:1].isalnum()
             written = centre(self.centre_sym(part))
-            if joined_before or joined_after:
+            if joined_after:
                 written = self.segment_centre(written)
             out.append((gap if joined_before else "") + written + (gap if joined_after else ""))
         return "".join(out)

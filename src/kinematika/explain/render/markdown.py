@@ -28,9 +28,6 @@ from .unicode import unicode_formula
 # reads as it is written elsewhere
 MARKUP = re.compile(r"([\\`*\[\]]|<(?=[A-Za-z/!?])|(?<=^)>|(?<!\w)_|_(?!\w))", re.M)
 BAR = re.compile(r"(?<!\\)\|")
-# the notes' magnitude bars (|a_T^n(P)|) inside a table's cell: the mathematical bar ∣ (U+2223),
-# which reads the same and ends no cell, never an escape (\|) a reader sees as text
-CELL_BAR = "\u2223"
 
 
 # a figure's reference definition, as `MarkdownRenderer.page` writes it at the page's end
@@ -66,6 +63,10 @@ class MarkdownRenderer(Renderer):
         article, text = self.articled(n)
         text = self.points(text)
         return self.esc(article) + (f"*{text}*" if n.kind == "body" and not self.code else text)
+
+    def body_word(self, text: str) -> str:
+        """A body's name in a model's words in italics, as `name` sets it (not in a code block)."""
+        return self.esc(text) if self.code else f"*{self.esc(text)}*"
 
     def symbol(self, s: Sym) -> str:
         """A symbol in plain text: v_B, a_B^n; a subscript of more than one name in braces,
@@ -148,11 +149,27 @@ class MarkdownRenderer(Renderer):
         return "```\n" + "\n".join(blocks) + "\n```\n"
 
     def table(self, header: list[str], rows: list[list[str]]) -> str:
-        """A pipe table; a bar inside a cell, where it would end the cell, written as the
-        mathematical bar ∣ (|v_P| as ∣v_P∣): no backslash for a plain-text reader."""
+        """A pipe table. A bar inside a cell would end the cell, and neither its escape (\\|,
+        a backslash a plain-text reader sees) nor another bar character (∣, beside the page's
+        |v_A| elsewhere: two bars for one magnitude) reads as the notes write it; so a table
+        whose cells hold a magnitude's bars is written as a list of its rows, "- question:
+        answer", the other columns named by their headers (issue 30, sixteenth round: C5-1.7's
+        "∣v_P∣" beside "|v_P|")."""
+        if any(BAR.search(c) for r in rows for c in r):
+            return self.rows_as_list(header, rows)
+
         def line(cells: list[str]) -> str:
-            return "| " + " | ".join(BAR.sub(CELL_BAR, c) for c in cells) + " |"
+            return "| " + " | ".join(cells) + " |"
         return "\n".join([line(header), line(["---"] * len(header))] + [line(r) for r in rows]) + "\n"
+
+    def rows_as_list(self, header: list[str], rows: list[list[str]]) -> str:
+        """A table as a list, one row an item: "- first cell: second cell" for two columns,
+        "- first cell: header: cell; header: cell" for more."""
+        items = []
+        for r in rows:
+            rest = r[1:] if len(r) == 2 else [f"{h}: {c}" for h, c in zip(header[1:], r[1:])]
+            items.append(f"- {r[0]}: " + "; ".join(rest))
+        return "\n".join(items) + "\n"
 
     def figure(self, fig: Figure) -> str:
         """A polygon or figure as an SVG data-URI image, with its caption in italics below."""
