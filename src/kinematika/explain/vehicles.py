@@ -66,7 +66,8 @@ def spins(ctx: Ctx, bodies: list[str]) -> list:
         out.append(msg("vehicle.spin", joint=Name(j.id, "joint"), point=Name(j.point_at()), radius=Name(radius, "param"),
                        spin=spin, product=Inline([Name(radius, "param"), " ", spin])))
         speed = Sym("v", ctx.point_label(j.point_at(), body), vector=False)
-        out.append(Derived(spin, read_off(ctx, speed, Name(radius, "param"), value.value),
+        # the sign at the sample values: a formula's written form (−s + L) says nothing of it
+        out.append(Derived(spin, read_off(ctx, speed, Name(radius, "param"), ctx.num(value.value)),
                            value, body, "spin", not ctx.symbolic))
     return out
 

@@ -350,7 +350,8 @@ class Renderer(ABC):
         *pulley 1*" beside "*pulley 2*" (issue 30, sixteenth round: C5-1.5's point table wrote
         "centre of pulley 1" upright under "*pulley 1*"). A name is matched as a whole word
         (its first letter in either case, as a sentence may start with it), the longest
-        first; a name of fewer than three letters (a bare letter, a number) is not matched."""
+        first, in Basque with its case ending (R arrabolaren); a name of fewer than three letters
+        (a bare letter, a number) is not matched."""
         pattern = self.body_pattern()
         if pattern is None:
             return write(text)
@@ -367,8 +368,12 @@ class Renderer(ABC):
             _, proper = self.articled(Name(b, "body", bare=True))
             if sum(c.isalpha() for c in proper) >= 3:
                 names.add(proper)
-        alternatives = ["[" + n[0].lower() + n[0].upper() + "]" + re.escape(n[1:])
-                        for n in sorted(names, key=len, reverse=True)]
+        # Basque declines a name by its ending (R arrabola, R arrabolaren; gurpilak, gurpilen):
+        # the stem, without the article -a or -ak, and any ending
+        inflected = r"\w*" if self.lang == "eu" else ""
+        stems = [re.sub(r"(ak|a)$", "", n) if inflected and len(n) > 4 else n for n in names]
+        alternatives = ["[" + n[0].lower() + n[0].upper() + "]" + re.escape(n[1:]) + inflected
+                        for n in sorted(stems, key=len, reverse=True)]
         self._body_pattern = (re.compile(r"(?<!\w)(" + "|".join(alternatives) + r")(?![\w])")
                               if alternatives else None)
         return self._body_pattern
