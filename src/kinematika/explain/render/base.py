@@ -481,7 +481,6 @@ class Renderer(ABC):
         """`inline`'s items, written in a row."""
         out = []
         for k, i in enumerate(items):
-            before = k and _segment_end(items[k - 1]) and "I" in (_base(items[k - 1]), _base(i))
             after = k + 1 < len(items) and _segment_end(items[k + 1]) and "I" in (_base(items[k + 1]), _base(i))
             text = self.arg(i)
             if _segment_end(i) and after and _base(i) == "I":
