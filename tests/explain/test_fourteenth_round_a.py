@@ -145,7 +145,7 @@ def test_a_fixed_wheel_does_not_turn_about_its_axis(lang):
 
 
 @pytest.mark.parametrize("name,old,new", [
-    ("seed_c5_1_3_bar_in_sleeve", "pasador del soporte", "| S | manguito (centro del soporte) |"),
+    ("seed_c5_1_3_bar_in_sleeve", "pasador del soporte", "| S | manguito (centro del *soporte*) |"),
     ("seed_c5_e6_bicycle", "eje de los pedales", "| C | eje del pedalier |"),
     ("seed_c5_1_1_pulley_on_cable", "hacia el lado", "se desplaza lateralmente con celeridad v")])
 def test_the_spanish_models_words(name, old, new):

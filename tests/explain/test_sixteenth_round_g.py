@@ -94,18 +94,18 @@ def test_articulated_translates_by_hand():
 @pytest.mark.parametrize("lang", LANGS)
 @pytest.mark.parametrize("name", SEEDS)
 def test_no_nested_subscript_in_markdown(name, lang):
-    """A velocity to a centre reads as plain text: v_{CI_pulley}, never v_{CI_{pulley}}; a
-    centre with another point after it keeps its closed subscript, I_{pulley}C (thirteenth
-    round). A centre whose name has a space is the one exception (I_{moving pulley})."""
+    """A velocity to a centre reads as plain text: v_{C,I_pulley} (the notes' v_C,I), never
+    v_{CI_{pulley}}; a bare segment keeps the thirteenth round's CI_{pulley}, I_{pulley}C. A
+    centre whose name has a space is the one exception (I_{moving pulley})."""
     text = _text(name, lang)
     nested = [m for m in re.findall(r"_\{[^{}\s]*_\{[^{}]*\}[^{}]*\}", text) if " " not in m]
     assert not nested, (name, lang, nested[:4])
 
 
 def test_pulley_on_cable_by_hand():
-    """C5-1.1: v_C = v_{I_pulley} + v_{CI_pulley}, v_{CI_pulley} = ω_pulley × I_{pulley}C."""
+    """C5-1.1: v_C = v_{I_pulley} + v_{C,I_pulley}, v_{C,I_pulley} = ω_pulley × I_{pulley}C."""
     text = _text("seed_c5_1_1_pulley_on_cable", "en")
-    assert "v_{CI_pulley} = ω_pulley × I_{pulley}C" in text
+    assert "v_{C,I_pulley} = ω_pulley × I_{pulley}C" in text
     html = rendered("seed_c5_1_1_pulley_on_cable", "en", "html")
     assert "CI_{" not in html
 

@@ -76,8 +76,8 @@ SPACED_HTML = re.compile(r"<i>I</i><sub>[^<]*</sub> <span class=\"pt\">|</span> 
 @pytest.mark.parametrize("name", SEEDS)
 def test_segment_to_a_centre_runs_together(name, lang):
     """A segment from a centre's symbol to a point is written as every segment of the page,
-    its two ends side by side: I_{S2}P, DI_roda1, v_{OI_OJ} (Markdown, the subscript
-    closed where a point follows it), I<sub>S2</sub>P (HTML) — never "I_S2 P" or "D I_roda1"."""
+    its two ends side by side: I_{S2}P, DI_{roda1}, v_{OI_{OJ}} (Markdown, the subscript
+    closed), I<sub>S2</sub>P (HTML) — never "I_S2 P" or "D I_roda1"."""
     md = _text(rendered(name, lang)) + "\n".join(CODE.findall(body_of(rendered(name, lang))))
     bad = [m.group(0) for m in SPACED_MD.finditer(md)]
     assert not bad, (name, lang, bad[:5])

@@ -360,9 +360,8 @@ class Renderer(ABC):
 
     def body_pattern(self) -> Optional[re.Pattern]:
         """The page's bodies' names (the article taken off) as one pattern, or None."""
-        cached = getattr(self, "_body_pattern", False)
-        if cached is not False:
-            return cached
+        if "body_pattern" in self._cache:
+            return self._cache["body_pattern"]
         names = set()
         for b in getattr(self.doc, "numbers", {}) or {}:
             _, proper = self.articled(Name(b, "body", bare=True))
@@ -374,9 +373,17 @@ class Renderer(ABC):
         stems = [re.sub(r"(ak|a)$", "", n) if inflected and len(n) > 4 else n for n in names]
         alternatives = ["[" + n[0].lower() + n[0].upper() + "]" + re.escape(n[1:]) + inflected
                         for n in sorted(stems, key=len, reverse=True)]
-        self._body_pattern = (re.compile(r"(?<!\w)(" + "|".join(alternatives) + r")(?![\w])")
-                              if alternatives else None)
-        return self._body_pattern
+        pattern = re.compile(r"(?<!\w)(" + "|".join(alternatives) + r")(?!\w)") if alternatives else None
+        self._cache["body_pattern"] = pattern
+        return pattern
+
+    @property
+    def _cache(self) -> dict[str, Optional[re.Pattern]]:
+        """Patterns made once a page (the bodies' names: `body_pattern`)."""
+        if "_patterns" not in self.__dict__:
+            self.__dict__["_patterns"] = {}
+        patterns: dict[str, Optional[re.Pattern]] = self.__dict__["_patterns"]
+        return patterns
 
     def body_word(self, text: str) -> str:
         """A body's name as it stands in a model's words, marked as a name: escaped here; a
@@ -463,10 +470,7 @@ class Renderer(ABC):
         symbol side by side (a segment to the centre, the arm DI_{roda1}) run together as
         every other segment of the page is (IC, G1J, AI_13), the centre's subscript closed
         (`segment_centre`): no space inside a segment (issue 30, thirteenth round: the readers
-        read "I_S2 P" as two things). Only a centre another point follows has its subscript
-        closed (I_{S2}P); a centre that ends the segment keeps its plain subscript, CI_pulley,
-        so that a velocity to it is not a subscript inside a subscript, v_{CI_pulley} (sixteenth
-        round: "v_{CI_{pulley}}" read badly). Inside it a parameter's name is a symbol of the formula
+        read "I_S2 P" as two things). Inside it a parameter's name is a symbol of the formula
         (`in_formula`), written as the values write it, not an emphasised word: "v_C1 / r", "at
         r φ̇" (issue 30, fourteenth round)."""
         self.in_formula += 1
@@ -481,9 +485,10 @@ class Renderer(ABC):
         """`inline`'s items, written in a row."""
         out = []
         for k, i in enumerate(items):
+            before = k and _segment_end(items[k - 1]) and "I" in (_base(items[k - 1]), _base(i))
             after = k + 1 < len(items) and _segment_end(items[k + 1]) and "I" in (_base(items[k + 1]), _base(i))
             text = self.arg(i)
-            if _segment_end(i) and after and _base(i) == "I":
+            if _segment_end(i) and (before or after) and _base(i) == "I":
                 text = self.segment_centre(text)
             out.append(text)
         return "".join(out)
@@ -761,10 +766,9 @@ class Renderer(ABC):
     def centred(self, text: str, write: Callable[[str], str], centre: Callable[[Sym], str], gap: str = "") -> str:
         """`text` (a point's name, a segment, a subscript) with each centre placed as a point
         written as its symbol in this language (`centre`), the rest by `write`. In a segment
-        the symbol runs into the other point as any segment's two ends do (OI_OQ, I_{OQ}O:
-        `segment_centre` closes a plain subscript where a point follows it, and only there,
-        so that v_{OI_OQ} is no subscript inside a subscript), never with a space between
-        (issue 30, thirteenth and sixteenth rounds); `gap` is kept for a format that wants one."""
+        the symbol runs into the other point as any segment's two ends do (OI_{OQ},
+        I_{OQ}O: `segment_centre` closes a plain subscript), never with a space between
+        (issue 30, thirteenth round); `gap` is kept for a format that wants one."""
         parts = CENTRE_POINT_RE.split(text)
         if len(parts) == 1:
             return write(text)
@@ -778,7 +782,7 @@ class Renderer(ABC):
             joined_before = bool(end and (end.isalnum() or end in "'′")) or (k > 1 and not before)
             joined_after = after[:1].isalnum()
             written = centre(self.centre_sym(part))
-            if joined_after:
+            if joined_before or joined_after:
                 written = self.segment_centre(written)
             out.append((gap if joined_before else "") + written + (gap if joined_after else ""))
         return "".join(out)

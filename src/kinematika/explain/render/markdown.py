@@ -34,6 +34,10 @@ BAR = re.compile(r"(?<!\\)\|")
 DEFINITION = re.compile(r"^\[(fig-\d+)\]: data:image/svg\+xml;base64,([A-Za-z0-9+/=]+)$", re.M)
 
 
+# a segment ending at a centre inside a symbol's subscript, CI_{pulley} in v_{CI_{pulley}}: written
+# v_{C,I_pulley} (the notes' v_C,I), a point and the centre apart, so that no subscript stands
+# inside a subscript (issue 30, sixteenth round); a bare segment keeps CI_{pulley} (thirteenth)
+SEGMENT_TO_CENTRE = re.compile(r"(?<=[A-Za-z0-9′'])I_\{([^{}\s]+)\}$")
 COMPOUND = "/,-∈ "         # a subscript with these holds more than one name (or words: roda sup)
 
 
@@ -71,9 +75,10 @@ class MarkdownRenderer(Renderer):
     def symbol(self, s: Sym) -> str:
         """A symbol in plain text: v_B, a_B^n; a subscript of more than one name in braces,
         so that it cannot be read as a division or a difference: ω_{3/2}, v_{A∈3/2},
-        v_{rel,A}, v_{O2-A}."""
+        v_{rel,A}, v_{O2-A}; a velocity to a centre v_{C,I_pulley} (`SEGMENT_TO_CENTRE`)."""
         raw = self.sub_text(s, centres=False)
         sub = self.centred(raw, lambda t: self.esc(t).replace("\\_", "_"), self.symbol)
+        sub = SEGMENT_TO_CENTRE.sub(r",I_\1", sub)                              # v_{C,I_pulley}
         if any(c in sub for c in COMPOUND) or CENTRE_POINT_RE.search(raw):      # v_{I_OQ}
             sub = "{" + sub + "}"
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
