@@ -63,7 +63,7 @@ def test_the_centre_says_why_the_perpendicular_to_v_p_is_not_the_second_line(lan
 @pytest.mark.parametrize("lang", LANGS)
 def test_the_spin_is_written_as_the_notes_write_it(lang):
     page = rendered(NAME, lang, drawings=False)
-    assert "ω′ = v_C4 / r = √2·ω/4 = ω/(2√2)" in page   # r a symbol in the formula (fourteenth round)
+    assert "ω′ = |v_C4| / r = √2·ω/4 = ω/(2√2)" in page   # r a symbol (fourteenth round), |v| (sixteenth)
     assert "| ω′ | √2·ω/4 = ω/(2√2) |" in page
 
 

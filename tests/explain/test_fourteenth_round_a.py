@@ -146,7 +146,7 @@ def test_a_fixed_wheel_does_not_turn_about_its_axis(lang):
 
 
 @pytest.mark.parametrize("name,old,new", [
-    ("seed_c5_1_3_bar_in_sleeve", "pasador del soporte", "| S | manguito (centro del soporte) |"),
+    ("seed_c5_1_3_bar_in_sleeve", "pasador del soporte", "| S | manguito (centro del *soporte*) |"),
     ("seed_c5_e6_bicycle", "eje de los pedales", "| C | eje del pedalier |"),
     ("seed_c5_1_1_pulley_on_cable", "hacia el lado", "se desplaza lateralmente con celeridad v")])
 def test_the_spanish_models_words(name, old, new):
@@ -179,9 +179,9 @@ def test_no_parameter_is_emphasised_inside_a_formula(name, lang):
     assert not EMPHASISED_IN_FORMULA.search(text), (name, lang, EMPHASISED_IN_FORMULA.search(text))
 
 
-SPIN = {"en": "at r φ̇, where φ̇ is its spin about its axle, so:",
-        "es": "a r φ̇, donde φ̇ es su rotación propia alrededor de su eje, de modo que:",
-        "ca": "a r φ̇, on φ̇ és la seva rotació pròpia al voltant del seu eix, de manera que:",
+SPIN = {"en": "with the speed r φ̇, where φ̇ is its spin about its axle, so:",       # sixteenth round
+        "es": "con celeridad r φ̇, donde φ̇ es su rotación propia alrededor de su eje, de modo que:",
+        "ca": "amb celeritat r φ̇, on φ̇ és la seva rotació pròpia al voltant del seu eix, de manera que:",
         "eu": "r φ̇ abiaduraz, φ̇ gurpilak bere ardatzaren inguruan duen biraketa propioa izanik"}
 
 
@@ -189,7 +189,7 @@ SPIN = {"en": "at r φ̇, where φ̇ is its spin about its axle, so:",
 def test_the_spin_is_named_where_it_is_used(lang):
     text = page("seed_c5_2_1_tricycle", lang)
     assert SPIN[lang] in text
-    assert re.search(r"φ̇ = v_\{C1∈[^}]+\} / r = ", text)
+    assert re.search(r"φ̇ = \|v_\{C1∈[^}]+\}\| / r = ", text)        # a magnitude (sixteenth round)
 
 
 def test_the_articulated_vehicles_note_says_equiprojectivity_with_o():

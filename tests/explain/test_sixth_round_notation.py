@@ -106,14 +106,15 @@ def test_the_audits_unused_legends_are_gone(name):
 @pytest.mark.parametrize("name", SEEDS)
 def test_no_backslash_a_plain_text_reader_sees(name, lang):
     """Neither \\| nor \\> in a page's Markdown: a magnitude in a table's cell keeps the
-    notes' bars as ∣ ∣, a comparison is written as it is."""
+    notes' bars (the table written as a list), a comparison is written as it is."""
     text = _text(name, lang)
     assert "\\|" not in text and "\\>" not in text
 
 
 def test_magnitudes_and_comparisons_read_as_written():
-    """C5-1.7's answer table writes ∣v_P∣; C5-E.5's note compares (r₂ − r₁)² > r₁²."""
-    assert "∣v_P∣ = 2·r·ω" in _text("seed_c5_1_7_semicylinder", "eu")
+    """C5-1.7's answers write |v_P| (a list: a bar would end a table's cell); C5-E.5's note
+    compares (r₂ − r₁)² > r₁²."""
+    assert "|v_P| = 2·r·ω" in _text("seed_c5_1_7_semicylinder", "eu")
     assert "(r₂ − r₁)² > r₁²" in _text("seed_c5_e5_unequal_wheels", "eu")
 
 

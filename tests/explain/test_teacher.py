@@ -81,12 +81,12 @@ def test_no_markdown_mentions_colours(name, lang, monkeypatch):
     ("seed_c5_1_4_epicyclic", "ca", "satèl·lit", "la *rodeta 1*"),
     ("seed_c5_e2_gear_change", "ca", "satèl·lit", "amb les rodetes a sobre i a sota del centre"),
     # a hub is not "buje" (Spanish) in Basque: the wheel's axle
-    ("seed_c5_e6_bicycle", "eu", "bujetik", "atzeko gurpilaren ardatzetik pedalen ardatzerainoko"),
+    ("seed_c5_e6_bicycle", "eu", "bujetik", "*atzeko gurpilaren* ardatzetik pedalen ardatzerainoko"),
     # fourteenth round (c): E.1's OC is a body, the notes' arm; E.5 the notes' "terra pla"; E.6's
     # wheelbase is e, so the crank axle C's image is plain c with no note; "plater pedalduna" declines
     ("seed_c5_e1_cavity", "ca", "recta OC", "*braç OC*"),
     ("seed_c5_e1_cavity", "eu", "OC zuzena", "*OC besoa*"),
-    ("seed_c5_e5_unequal_wheels", "ca", "terra recte", "del terra pla"),
+    ("seed_c5_e5_unequal_wheels", "ca", "terra recte", "sobre el terra pla"),
     ("seed_c5_e6_bicycle", "eu", "pedalekin", "*plater pedaldunaren*"),
     ("seed_c5_e6_bicycle", "ca", "c′", "| *e* | batalla |"),
 ])

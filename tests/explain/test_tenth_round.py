@@ -88,7 +88,7 @@ def test_property_speeding_up_iff_omega_alpha_positive(w, a):
 def test_p_pair_data_sentence_reads():
     page = rendered("seed_001_p_pair_coriolis", "en", drawings=False)
     assert "s along it, is pinned" not in page
-    assert "The block N slides along it" in page
+    assert "The *block N* slides along it" in page   # its name marked (sixteenth round)
 
 
 BARE_LEAD = re.compile(r"(?m)^\*[A-Z][^*]*\* [a-z]")        # a paragraph opening *Wheel* rolls

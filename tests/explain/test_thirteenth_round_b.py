@@ -218,6 +218,6 @@ def test_the_rollers_centre_moves_along_a_guide():
     The model's own words (examples/seed_001_rolling_pair.yaml), not a rule of the explainer."""
     es = rendered("seed_001_rolling_pair", "es", "md", drawings=False)
     assert "cuyo centro A lleva una corredera" not in es
-    assert "cuyo centro A se desplaza por una guía, la recta horizontal por B" in es
+    assert "cuyo centro A se desplaza por una guía, la recta horizontal que pasa por B" in es
     ca = rendered("seed_001_rolling_pair", "ca", "md", drawings=False)
     assert "el centre A del qual es desplaça per una guia" in ca

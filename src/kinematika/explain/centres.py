@@ -46,8 +46,7 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
         return None
     sec = Section(msg("sec.centres" if part != "rest" else "sec.centres_v"))
     if part != "rest":
-        first_body = next((b for b in ctx.model.bodies if b != ctx.frame and not ctx.fixed(b)),
-                          next(b for b in ctx.model.bodies if b != ctx.frame))     # a moving body, not a part of the frame
+        first_body = _example_body(ctx, [made[k].pair for k in chosen])
         sec.add(msg("centres.intro", example=Sym("I", "13", vector=False),
                     pair=Sym("I", f"{ctx.frame},{first_body}", vector=False), body=Name(first_body, "body"),
                     frame=Name(ctx.frame, "body", reference=True)))
@@ -59,6 +58,18 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
     # a centre they have found, and the second derivation reads as a second answer
     sec.blocks += [_once(ctx, made[key]) for key in keys]
     return sec
+
+
+def _example_body(ctx: Ctx, pairs: list) -> str:
+    """The body whose centre the section's first sentence takes as its example (I_OC): one
+    the section then places relative to the frame, so the intro names only a symbol the page
+    uses (issue 30, sixteenth round: C5-E.1's intro named I_OC, never placed); else a moving
+    body, not a part of the frame."""
+    for a, b in pairs:
+        if ctx.frame in (a, b) and not ctx.fixed(b if a == ctx.frame else a):
+            return b if a == ctx.frame else a
+    return next((b for b in ctx.model.bodies if b != ctx.frame and not ctx.fixed(b)),
+                next(b for b in ctx.model.bodies if b != ctx.frame))
 
 
 def _once(ctx: Ctx, note: CentreNote):

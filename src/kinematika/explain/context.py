@@ -38,6 +38,7 @@ class Ctx:
         self.centre_sites: dict[str, str] = {}   # ... and those at a point of the body (P): name -> body
         self.witnessed: dict[str, set] = {}       # body -> the points its centre was placed by (M of C5-E.4)
         self.translating: dict[str, Any] = {}    # bodies whose centre is at infinity -> its note
+        self.glides_said: set[str] = set()        # bodies whose reason to translate the velocities gave
         self.slides_seen: dict[tuple, Any] = {}  # (level, body, guide body) -> a slide's symbol written in the steps
         self.centre_first_memo: Optional[bool] = None    # the centres before the velocities (`centres.centres_first`)
 

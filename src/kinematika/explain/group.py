@@ -1258,13 +1258,17 @@ class Writer:
 
     def glides(self, g: Glides) -> Derived:
         """ω = 0 (α = 0 at accelerations) of a body whose two wheels' centres run on one line,
-        or on parallel lines."""
+        or on parallel lines. The reason is said once: where the velocities gave it, α = 0
+        refers to it (it translates at every instant), not repeating it (sixteenth round: C5-E.5 said it twice)."""
         ctx = self.ctx
-        if g.one_line:
+        if self.level != "v" and g.body in ctx.glides_said:
+            remark = msg("how.translates_always")
+        elif g.one_line:
             remark = msg("how.glides", p=point_name(g.p), q=point_name(g.q), line=point_name(str(segment(g.p, g.q))))
         else:
             remark = msg("how.parallel_paths", p=point_name(g.p), q=point_name(g.q))
         if self.level == "v":
+            ctx.glides_said.add(g.body)
             return Derived(omega_sym(g.body), [], ctx.value(ctx.omega(g.body), "rate"), g.body, "omega", False,
                            remark=remark)
         return Derived(alpha_sym(g.body), [], ctx.value(ctx.alpha(g.body), "rate2"), g.body, "alpha", False,

@@ -11,7 +11,8 @@ from .document import Derived, Document, Equation, Section, body, msg
 
 LEVELS = {"sec.velocities": "v", "sec.accelerations": "a"}
 # the remarks after a derived ω = 0 (α = 0) that already say the body translates
-SAYS_TRANSLATES = ("how.translation", "how.centre_infinity", "how.tangent", "how.glides", "how.parallel_paths")
+SAYS_TRANSLATES = ("how.translation", "how.centre_infinity", "how.tangent", "how.glides", "how.parallel_paths",
+                   "how.translates_always")
 TURNING = ("rotation", "normal", "tangential")
 
 

@@ -55,7 +55,8 @@ def wheel_route(ctx: Ctx, group: list[str], known: set[str], level: str) -> Opti
 def spins(ctx: Ctx, bodies: list[str]) -> list:
     """The spin of each wheel of `bodies` whose radius the model gives (`notation: spin(j3)`):
     it rolls without slipping, so its centre's speed along its plane is r φ̇ (the notes'
-    tricycle, C5-2.1: φ̇ = v₀ (L − s)/(√2 L r))."""
+    tricycle, C5-2.1: φ̇ = v₀ (L − s)/(√2 L r)). The spin is read off as a magnitude over a
+    length, φ̇ = |v_C1| / r (`read_off`), never a vector over a length."""
     out: list = []
     for jid, body, spin, value in spin_values(ctx):
         if body not in bodies:
@@ -64,7 +65,9 @@ def spins(ctx: Ctx, bodies: list[str]) -> list:
         radius = ctx.model.wording.spins[jid][1]
         out.append(msg("vehicle.spin", joint=Name(j.id, "joint"), point=Name(j.point_at()), radius=Name(radius, "param"),
                        spin=spin, product=Inline([Name(radius, "param"), " ", spin])))
-        out.append(Derived(spin, [Sym("v", ctx.point_label(j.point_at(), body), vector=False), " / ", Name(radius, "param")],
+        speed = Sym("v", ctx.point_label(j.point_at(), body), vector=False)
+        # the sign at the sample values: a formula's written form (−s + L) says nothing of it
+        out.append(Derived(spin, read_off(ctx, speed, Name(radius, "param"), ctx.num(value.value)),
                            value, body, "spin", not ctx.symbolic))
     return out
 

@@ -605,7 +605,7 @@ vehicle-translation = Les rectes { ELISION($body) ->
        *[other] de { $body }
     } són paral·leles: el seu CIR és a l’infinit, es trasllada i tots els seus punts es mouen com { $point }.
 vehicle-translation_equal = { $p } i { $q } tenen la mateixa velocitat, { $vp } = { $vq } = { $value }: { $body } no gira (el seu CIR és a l’infinit), es trasllada i tots els seus punts es mouen com { $p }.
-vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda a { $product }, on { $spin } és la seva rotació pròpia al voltant del seu eix, de manera que:
+vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda amb celeritat { $product }, on { $spin } és la seva rotació pròpia al voltant del seu eix, de manera que:
 triad-intro = { $body } està subjectat per tres barres binàries, { $links }: cap equació vectorial d’un sol punt no té només dues incògnites. Com fan els textos per a una tríada, es pren el punt d’Assur { $point }, on es tallen les rectes { $l1 } i { $l3 }, com a punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -878,7 +878,8 @@ sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa component de la velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
-how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda del terra pla, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
+how-parallel_paths = ({ $p } i { $q } es mantenen sempre a una altura igual al radi de la seva roda sobre el terra pla, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
+how-translates_always = (es trasllada en tot instant, com s’ha vist a les velocitats)
 centres-found_above = { $centre } = { $value }: trobat més amunt, al pas de velocitats { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }

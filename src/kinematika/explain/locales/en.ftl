@@ -430,17 +430,17 @@ vehicle-line-wheel_own = the perpendicular at { $point } to the plane of wheel {
 vehicle-pin_shared = { $point } is the pin common to { $a } and { $b }: { $sym } = { $other }.
 vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel: { COUNT($body) ->
-        [many] their centre is at infinity, they translate
-       *[one] its centre is at infinity, it translates
+        [many] their instant centre is at infinity, they translate
+       *[one] its instant centre is at infinity, it translates
     }, and every point moves as { $point }.
 vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = { $vq } = { $value }: { $body } { COUNT($body) ->
         [many] do
        *[one] does
     } not turn ({ COUNT($body) ->
-        [many] their centre is at infinity), they translate
-       *[one] its centre is at infinity), it translates
+        [many] their instant centre is at infinity), they translate
+       *[one] its instant centre is at infinity), it translates
     }, and every point moves as { $p }.
-vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane at { $product }, where { $spin } is its spin about its axle, so:
+vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane with the speed { $product }, where { $spin } is its spin about its axle, so:
 triad-intro = { $body } { COUNT($body) ->
         [many] are
        *[one] is
@@ -603,6 +603,7 @@ how-centre_infinity = (its instant centre { $centre } is at infinity: it transla
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity component across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the flat ground, so they move on parallel straight lines at every instant: the body translates without turning)
+how-translates_always = (it translates at every instant, as the velocities showed)
 centres-found_above = { $centre } = { $value }: placed above, in the velocity step of { $body }.
 centres-found_above_step = { $centre } = { $value }: placed in Step { $step }, with the velocities of { $body }.
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed in «{ sec-centres }»: { $sym } = 0.

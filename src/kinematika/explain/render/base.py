@@ -344,6 +344,52 @@ class Renderer(ABC):
         parts = pattern.split(shown_lines(text))
         return "".join(self.formula(sympy.Symbol(part)) if k % 2 else self.typed(part) for k, part in enumerate(parts))
 
+    def bodies_marked(self, text: str, write: Callable[[str], str]) -> str:
+        """A model's own words with each body's name in them marked as the page marks a body's
+        name everywhere else (`body_word`: italics), the rest written by `write`: "centre of
+        *pulley 1*" beside "*pulley 2*" (issue 30, sixteenth round: C5-1.5's point table wrote
+        "centre of pulley 1" upright under "*pulley 1*"). A name is matched as a whole word
+        (its first letter in either case, as a sentence may start with it), the longest
+        first, in Basque with its case ending (R arrabolaren); a name of fewer than three letters
+        (a bare letter, a number) is not matched."""
+        pattern = self.body_pattern()
+        if pattern is None:
+            return write(text)
+        parts = pattern.split(text)
+        return "".join(self.body_word(part) if k % 2 else write(part) for k, part in enumerate(parts))
+
+    def body_pattern(self) -> Optional[re.Pattern]:
+        """The page's bodies' names (the article taken off) as one pattern, or None."""
+        if "body_pattern" in self._cache:
+            return self._cache["body_pattern"]
+        names = set()
+        for b in getattr(self.doc, "numbers", {}) or {}:
+            _, proper = self.articled(Name(b, "body", bare=True))
+            if sum(c.isalpha() for c in proper) >= 3:
+                names.add(proper)
+        # Basque declines a name by its ending (R arrabola, R arrabolaren; gurpilak, gurpilen):
+        # the stem, without the article -a or -ak, and any ending
+        inflected = r"\w*" if self.lang == "eu" else ""
+        stems = [re.sub(r"(ak|a)$", "", n) if inflected and len(n) > 4 else n for n in names]
+        alternatives = ["[" + n[0].lower() + n[0].upper() + "]" + re.escape(n[1:]) + inflected
+                        for n in sorted(stems, key=len, reverse=True)]
+        pattern = re.compile(r"(?<!\w)(" + "|".join(alternatives) + r")(?!\w)") if alternatives else None
+        self._cache["body_pattern"] = pattern
+        return pattern
+
+    @property
+    def _cache(self) -> dict[str, Optional[re.Pattern]]:
+        """Patterns made once a page (the bodies' names: `body_pattern`)."""
+        if "_patterns" not in self.__dict__:
+            self.__dict__["_patterns"] = {}
+        patterns: dict[str, Optional[re.Pattern]] = self.__dict__["_patterns"]
+        return patterns
+
+    def body_word(self, text: str) -> str:
+        """A body's name as it stands in a model's words, marked as a name: escaped here; a
+        format that marks names (italics) overrides it."""
+        return self.esc(text)
+
     def coordinates(self, text: str) -> str:
         """Coordinates the model typed in its own words, "(4r, r)", written with the page's
         separator between the terms, as the page writes every vector: (4r; r) where the decimal
@@ -362,10 +408,10 @@ class Renderer(ABC):
         """A model's own text escaped, each symbol typed in it as X_sub (SUBSCRIPTED: C5-E.6's
         "r ω_pinyó = R ω_plat", its notes' "ℜ_P = v(P)²/aⁿ", a Data remark's "v_B") written as
         the page writes its symbols (`subscripted`), so the words and the formulas beside them
-        show one symbol one way."""
+        show one symbol one way; the bodies' names in the words marked (`bodies_marked`)."""
         parts = SUBSCRIPTED.split(text)
         return "".join(self.subscripted(parts[k], parts[k + 1]) if k % 3 == 1
-                       else self.esc(part) if k % 3 == 0 else "" for k, part in enumerate(parts))
+                       else self.bodies_marked(part, self.esc) if k % 3 == 0 else "" for k, part in enumerate(parts))
 
     def subscripted(self, base: str, sub: str) -> str:
         """A symbol typed base_sub in a model's words (sub perhaps in braces): as typed, which is

@@ -56,6 +56,10 @@ class HtmlRenderer(Renderer):
             return self.esc(article) + f'<i class="bd">{self.esc(text)}</i>'
         return f'<span class="{"jt" if n.kind == "joint" else "pt"}">{self.points(text)}</span>'
 
+    def body_word(self, text: str) -> str:
+        """A body's name in a model's words in italics, as `name` sets it."""
+        return f'<i class="bd">{self.esc(text)}</i>'
+
     def symbol(self, s: Sym) -> str:
         """A symbol: a vector's letter bold, a scalar's italic, with its subscript and superscript;
         a letter with a combining mark (the notes' ψ̇, δ̇) in the sans font, as `html_name`

@@ -121,6 +121,10 @@ class LatexRenderer(Renderer):
         command = {"body": "emph"}.get(n.kind, "textsf")
         return self.esc(article) + f"\\{command}{{{self.points(text) if n.kind == 'point' else self.esc(text)}}}"
 
+    def body_word(self, text: str) -> str:
+        """A body's name in a model's words emphasised, as `name` sets it."""
+        return f"\\emph{{{self.esc(text)}}}"
+
     def math_sym(self, s: Sym) -> str:
         """A symbol inside math: an arrow over a vector's letter, the subscript and superscript as upright text; ω₁ × ω₂ for the cross term of two rates."""
         if s.base == "ω×ω" and "," in s.sub:

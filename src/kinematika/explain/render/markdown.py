@@ -28,15 +28,16 @@ from .unicode import unicode_formula
 # reads as it is written elsewhere
 MARKUP = re.compile(r"([\\`*\[\]]|<(?=[A-Za-z/!?])|(?<=^)>|(?<!\w)_|_(?!\w))", re.M)
 BAR = re.compile(r"(?<!\\)\|")
-# the notes' magnitude bars (|a_T^n(P)|) inside a table's cell: the mathematical bar ∣ (U+2223),
-# which reads the same and ends no cell, never an escape (\|) a reader sees as text
-CELL_BAR = "\u2223"
 
 
 # a figure's reference definition, as `MarkdownRenderer.page` writes it at the page's end
 DEFINITION = re.compile(r"^\[(fig-\d+)\]: data:image/svg\+xml;base64,([A-Za-z0-9+/=]+)$", re.M)
 
 
+# a segment ending at a centre inside a symbol's subscript, CI_{pulley} in v_{CI_{pulley}}: written
+# v_{C,I_pulley} (the notes' v_C,I), a point and the centre apart, so that no subscript stands
+# inside a subscript (issue 30, sixteenth round); a bare segment keeps CI_{pulley} (thirteenth)
+SEGMENT_TO_CENTRE = re.compile(r"(?<=[A-Za-z0-9′'])I_\{([^{}\s]+)\}$")
 COMPOUND = "/,-∈ "         # a subscript with these holds more than one name (or words: roda sup)
 
 
@@ -67,12 +68,17 @@ class MarkdownRenderer(Renderer):
         text = self.points(text)
         return self.esc(article) + (f"*{text}*" if n.kind == "body" and not self.code else text)
 
+    def body_word(self, text: str) -> str:
+        """A body's name in a model's words in italics, as `name` sets it (not in a code block)."""
+        return self.esc(text) if self.code else f"*{self.esc(text)}*"
+
     def symbol(self, s: Sym) -> str:
         """A symbol in plain text: v_B, a_B^n; a subscript of more than one name in braces,
         so that it cannot be read as a division or a difference: ω_{3/2}, v_{A∈3/2},
-        v_{rel,A}, v_{O2-A}."""
+        v_{rel,A}, v_{O2-A}; a velocity to a centre v_{C,I_pulley} (`SEGMENT_TO_CENTRE`)."""
         raw = self.sub_text(s, centres=False)
         sub = self.centred(raw, lambda t: self.esc(t).replace("\\_", "_"), self.symbol)
+        sub = SEGMENT_TO_CENTRE.sub(r",I_\1", sub)                              # v_{C,I_pulley}
         if any(c in sub for c in COMPOUND) or CENTRE_POINT_RE.search(raw):      # v_{I_OQ}
             sub = "{" + sub + "}"
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
@@ -148,11 +154,27 @@ class MarkdownRenderer(Renderer):
         return "```\n" + "\n".join(blocks) + "\n```\n"
 
     def table(self, header: list[str], rows: list[list[str]]) -> str:
-        """A pipe table; a bar inside a cell, where it would end the cell, written as the
-        mathematical bar ∣ (|v_P| as ∣v_P∣): no backslash for a plain-text reader."""
+        """A pipe table. A bar inside a cell would end the cell, and neither its escape (\\|,
+        a backslash a plain-text reader sees) nor another bar character (∣, beside the page's
+        |v_A| elsewhere: two bars for one magnitude) reads as the notes write it; so a table
+        whose cells hold a magnitude's bars is written as a list of its rows, "- question:
+        answer", the other columns named by their headers (issue 30, sixteenth round: C5-1.7's
+        "∣v_P∣" beside "|v_P|")."""
+        if any(BAR.search(c) for r in rows for c in r):
+            return self.rows_as_list(header, rows)
+
         def line(cells: list[str]) -> str:
-            return "| " + " | ".join(BAR.sub(CELL_BAR, c) for c in cells) + " |"
+            return "| " + " | ".join(cells) + " |"
         return "\n".join([line(header), line(["---"] * len(header))] + [line(r) for r in rows]) + "\n"
+
+    def rows_as_list(self, header: list[str], rows: list[list[str]]) -> str:
+        """A table as a list, one row an item: "- first cell: second cell" for two columns,
+        "- first cell: header: cell; header: cell" for more."""
+        items = []
+        for r in rows:
+            rest = r[1:] if len(r) == 2 else [f"{h}: {c}" for h, c in zip(header[1:], r[1:])]
+            items.append(f"- {r[0]}: " + "; ".join(rest))
+        return "\n".join(items) + "\n"
 
     def figure(self, fig: Figure) -> str:
         """A polygon or figure as an SVG data-URI image, with its caption in italics below."""
