@@ -146,4 +146,4 @@ def test_a_points_description_says_what_it_is(name, lang):
 
 
 def test_gear_change_centre_in_the_table():
-    assert "| O | centro de la rueda central fija |" in page("seed_c5_e2_gear_change", "es")
+    assert "| O | centro de la *rueda central fija* |" in page("seed_c5_e2_gear_change", "es")   # a body name in italics: the sixteenth round (g)
