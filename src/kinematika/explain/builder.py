@@ -169,6 +169,7 @@ def level_polygons(ctx: Ctx, sec: Section, level: str) -> None:
     whole = level_polygon(ctx, _equations(sec), level)
     if whole is None or degenerate(whole):         # a line of arrows with piled-up images: left out
         return
+    whole.caption.args.update(drawn_steps(sec, level))
     steps = [b for b in sec.blocks if isinstance(b, Section)]
     if len(whole.arrows) <= SPLIT or len(steps) < 2:
         sec.add(whole)
@@ -177,6 +178,16 @@ def level_polygons(ctx: Ctx, sec: Section, level: str) -> None:
         drawn = level_polygon(ctx, _equations(step), level, step=True)
         if drawn is not None:
             step.add(drawn)
+
+
+def drawn_steps(sec: Section, level: str) -> dict[str, object]:
+    """The steps whose equations a level polygon draws, as its caption names them ("the terms of
+    the equations of Steps 1 to 5", of Steps 1 and 2, of Step 1): a back-reference names the step,
+    never "the equations above" (issue 30, seventeenth round b)."""
+    drawn = [n for n, step in _steps(sec) if any(e.level == level for e in _equations(step))] or [0]
+    first, last = min(drawn), max(drawn)
+    span = min(last - first + 1, 3)             # 1 step, 2 steps ("1 and 2"), more ("1 to 5")
+    return {"first": first, "last": last, "span": span}
 
 
 RELATIVE = re.compile(r"^([^∈/,]+)∈([^∈/,]+)/([^∈/,]+)$")

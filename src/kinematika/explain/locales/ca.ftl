@@ -285,7 +285,7 @@ a-intro = Conegudes les velocitats, tots els termes normals i de Coriolis són c
 a-intro_relative = Conegudes les velocitats, tots els termes normals són coneguts; les incògnites són els termes tangencials i relatius.
 a-intro_normal = Conegudes les velocitats, els termes normals són coneguts; les incògnites són els termes tangencials.
 eq-shared_rate = Els termes { $terms } tenen una sola incògnita, { $rate }: els seus mòduls són { $mags }.
-a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades abans s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
+a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades a «{ sec-velocities }» s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
 driver-omega = Dada: { $sym } = { $value }.
 driver-omega_sense = Dada: { $sym } = { $value }, { $faster ->
         [1] en el sentit de { $w }: { $body } { COUNT($body) ->
@@ -456,7 +456,7 @@ centre-velocities = les velocitats respecte { ELISION($frame) ->
        *[other] de { $q }
     }, { $vq }, són perpendiculars a les rectes que els uneixen amb el CIR; les perpendiculars es tallen
 centre-lines = és a { $first } i a { $second }; aquestes rectes es tallen
-centre-omega = amb les velocitats trobades, la velocitat angular respecte { ELISION($frame) ->
+centre-omega = amb les velocitats trobades a «{ sec-velocities }», la velocitat angular respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } és nul·la: el moviment relatiu és una translació i el CIR és
@@ -574,7 +574,7 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
        *[other] de { $frame }
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 composition-slide = { $point } llisca al llarg de la seva guia: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
-composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat més amunt: { $sym } = { $value }.
+composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat a «{ sec-velocities }»: { $sym } = { $value }.
 composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat al pas { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació del pas { $step }.
@@ -679,7 +679,11 @@ fig-level_v = Polígon de velocitats, a escala: des del pol o, la velocitat de c
        *[other] {" "}({ $image } per a { $point })
     }{ $between ->
         [0] .
-       *[other] ; entre les imatges, les velocitats relatives de les equacions anteriors{ $format ->
+       *[other] ; entre les imatges, les velocitats relatives de les equacions { $span ->
+            [1] del pas { $first }
+            [2] dels passos { $first } i { $last }
+           *[other] dels passos { $first } a { $last }
+        }{ $format ->
             [md] {""}
            *[other] {" "}(negre)
         }, l’una darrere l’altra.
@@ -692,7 +696,11 @@ fig-level_a = Polígon d’acceleracions, a escala: des del pol o, l’accelerac
        *[other] {" "}({ $image } per a { $point })
     }{ $between ->
         [0] .
-       *[other] ; entre les imatges, els termes de les equacions anteriors ({ $format ->
+       *[other] ; entre les imatges, els termes de les equacions { $span ->
+            [1] del pas { $first }
+            [2] dels passos { $first } i { $last }
+           *[other] dels passos { $first } a { $last }
+        } ({ $format ->
             [md] {""}
            *[other] negre:{" "}
         }normals i tangencials, relatius i de Coriolis), l’un darrere l’altre.
@@ -705,7 +713,11 @@ fig-level_a_relative = Polígon d’acceleracions, a escala: des del pol o, l’
        *[other] {" "}({ $image } per a { $point })
     }{ $between ->
         [0] .
-       *[other] ; entre les imatges, els termes de les equacions anteriors ({ $format ->
+       *[other] ; entre les imatges, els termes de les equacions { $span ->
+            [1] del pas { $first }
+            [2] dels passos { $first } i { $last }
+           *[other] dels passos { $first } a { $last }
+        } ({ $format ->
             [md] {""}
            *[other] negre:{" "}
         }normals i tangencials, i relatius), l’un darrere l’altre.
@@ -718,7 +730,11 @@ fig-level_a_normal = Polígon d’acceleracions, a escala: des del pol o, l’ac
        *[other] {" "}({ $image } per a { $point })
     }{ $between ->
         [0] .
-       *[other] ; entre les imatges, els termes de les equacions anteriors ({ $format ->
+       *[other] ; entre les imatges, els termes de les equacions { $span ->
+            [1] del pas { $first }
+            [2] dels passos { $first } i { $last }
+           *[other] dels passos { $first } a { $last }
+        } ({ $format ->
             [md] {""}
            *[other] negre:{" "}
         }normals i tangencials), l’un darrere l’altre.
@@ -823,7 +839,7 @@ centre-field = és a la perpendicular a { $v } per { $q }, a la distància { $ar
         [vowel] d’{ $q }
        *[other] de { $q }
     }, { $side }, de manera que el CIR és
-centre-rate = a partir de { $w } (trobada més amunt a través { ELISION($line) ->
+centre-rate = a partir de { $w } (trobada a «{ sec-velocities }» a través { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
     }): és a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
@@ -870,7 +886,7 @@ side-below_right = per sota i a la dreta { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }
-centre-check = Comprovació amb les velocitats trobades: a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
+centre-check = Comprovació amb les velocitats trobades a «{ sec-velocities }»: a la perpendicular a { $v } per { $q }, a la distància { $arm } = |{ $v }| / |{ $w }| = { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }, { $side }, el mateix punt: { $centre } és { $where }
@@ -880,7 +896,7 @@ how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mat
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 how-parallel_paths = ({ $p } i { $q } es mantenen sempre a una altura igual al radi de la seva roda sobre el terra pla, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
 how-translates_always = (es trasllada en tot instant, com s’ha vist a les velocitats)
-centres-found_above = { $centre } = { $value }: trobat més amunt, al pas de velocitats { ELISION($body) ->
+centres-found_above = { $centre } = { $value }: trobat a «{ sec-velocities }», al pas de velocitats { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }.
@@ -905,7 +921,7 @@ contact-intro = Al contacte { $point } coincideixen tres punts amb cinemàtiques
         [vowel] d’{ $b }
        *[other] de { $b }
     } i el punt geomètric de contacte { $geom }, que no pertany a cap dels dos.
-contact-above = { $sym } = { $value }, obtinguda més amunt per a l’acceleració del contacte.
+contact-above = { $sym } = { $value }, obtinguda a «{ sec-accelerations }» per a l’acceleració del contacte.
 contact-written = { $sym } = { $value }, trobada al pas { $step }.
 contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
         [vowel] d’{ $body }
@@ -962,11 +978,11 @@ check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->
     }), de manera que { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , amb { $r1 } i { $r2 }
-    }. Amb les velocitats angulars trobades, { $values } = { $ratio }: coincideixen.
+    }. Amb les velocitats angulars trobades a «{ sec-velocities }», { $values } = { $ratio }: coincideixen.
 check-belt = Vista des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, { $line } no llisca ni sobre { $a } ni sobre { $b }: { $equation }, de manera que { $ratio }; amb les velocitats angulars trobades, { $values }: coincideixen.
+    }, que porta els dos eixos, { $line } no llisca ni sobre { $a } ni sobre { $b }: { $equation }, de manera que { $ratio }; amb les velocitats angulars trobades a «{ sec-velocities }», { $values }: coincideixen.
 how-translates = (es trasllada respecte { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -996,7 +1012,7 @@ drive-relation = Vistos des { ELISION($holder) ->
         [0] {""}
        *[other] {" "}(amb { $radii })
     }:
-check-train = La relació de la transmissió és el producte de les de les seves etapes: { $ratio }; amb les velocitats angulars trobades, la relació val { $value }.
+check-train = La relació de la transmissió és el producte de les de les seves etapes: { $ratio }; amb les velocitats angulars trobades a «{ sec-velocities }», la relació val { $value }.
 check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la seva oscil·lació quan la ranura és tangent a la circumferència { ELISION($pin) ->
         [vowel] d’{ $pin }
        *[other] de { $pin }

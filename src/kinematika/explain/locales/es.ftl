@@ -210,7 +210,7 @@ a-intro = Una vez halladas las velocidades, todos los términos normales y de Co
 a-intro_relative = Una vez halladas las velocidades, todos los términos normales son conocidos; las incógnitas son los términos tangenciales y relativos.
 a-intro_normal = Una vez halladas las velocidades, los términos normales son conocidos; las incógnitas son los términos tangenciales.
 eq-shared_rate = Los términos { $terms } tienen una sola incógnita, { $rate }: sus módulos son { $mags }.
-a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas antes se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
+a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas en «{ sec-velocities }» se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
 driver-omega_sense = Dato: { $sym } = { $value }, { $faster ->
         [1] en el sentido de { $w }: { $body } { COUNT($body) ->
@@ -314,7 +314,7 @@ centre-joint-weld = los dos sólidos son solidarios:
 centre-kennedy = por Aronhold–Kennedy está en la recta que pasa por { $l1 } (tercer sólido { $k1 }) y en la recta que pasa por { $l2 } (tercer sólido { $k2 }); estas rectas se cortan
 centre-velocities = las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
 centre-lines = está en { $first } y en { $second }; estas rectas se cortan
-centre-omega = con las velocidades halladas, la velocidad angular respecto de { $frame } es nula: el movimiento relativo es una traslación y el CIR está
+centre-omega = con las velocidades halladas en «{ sec-velocities }», la velocidad angular respecto de { $frame } es nula: el movimiento relativo es una traslación y el CIR está
 centre-at = en { $point }.
 centre-infinity = en el infinito, en la dirección { $direction }.
 centre-rest = no hay movimiento relativo.
@@ -366,7 +366,7 @@ ans-pole_velocity = velocidad de I a lo largo de la base y la ruleta
 centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de su guía: su movimiento relativo sigue la guía, { $sym } = { $value }.
-composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado arriba: { $sym } = { $value }.
+composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado en «{ sec-velocities }»: { $sym } = { $value }.
 composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado en el paso { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación del paso { $step }.
@@ -441,7 +441,11 @@ fig-level_v = Polígono de velocidades, a escala: desde el polo o, la velocidad 
        *[other] {" "}({ $image } para { $point })
     }{ $between ->
         [0] .
-       *[other] ; entre las imágenes, las velocidades relativas de las ecuaciones anteriores{ $format ->
+       *[other] ; entre las imágenes, las velocidades relativas de las ecuaciones { $span ->
+            [1] del paso { $first }
+            [2] de los pasos { $first } y { $last }
+           *[other] de los pasos { $first } a { $last }
+        }{ $format ->
             [md] {""}
            *[other] {" "}(negro)
         }, una tras otra.
@@ -454,7 +458,11 @@ fig-level_a = Polígono de aceleraciones, a escala: desde el polo o, la acelerac
        *[other] {" "}({ $image } para { $point })
     }{ $between ->
         [0] .
-       *[other] ; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+       *[other] ; entre las imágenes, los términos de las ecuaciones { $span ->
+            [1] del paso { $first }
+            [2] de los pasos { $first } y { $last }
+           *[other] de los pasos { $first } a { $last }
+        } ({ $format ->
             [md] {""}
            *[other] negro:{" "}
         }normales y tangenciales, relativos y de Coriolis), uno tras otro.
@@ -467,7 +475,11 @@ fig-level_a_relative = Polígono de aceleraciones, a escala: desde el polo o, la
        *[other] {" "}({ $image } para { $point })
     }{ $between ->
         [0] .
-       *[other] ; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+       *[other] ; entre las imágenes, los términos de las ecuaciones { $span ->
+            [1] del paso { $first }
+            [2] de los pasos { $first } y { $last }
+           *[other] de los pasos { $first } a { $last }
+        } ({ $format ->
             [md] {""}
            *[other] negro:{" "}
         }normales y tangenciales, y relativos), uno tras otro.
@@ -480,7 +492,11 @@ fig-level_a_normal = Polígono de aceleraciones, a escala: desde el polo o, la a
        *[other] {" "}({ $image } para { $point })
     }{ $between ->
         [0] .
-       *[other] ; entre las imágenes, los términos de las ecuaciones anteriores ({ $format ->
+       *[other] ; entre las imágenes, los términos de las ecuaciones { $span ->
+            [1] del paso { $first }
+            [2] de los pasos { $first } y { $last }
+           *[other] de los pasos { $first } a { $last }
+        } ({ $format ->
             [md] {""}
            *[other] negro:{" "}
         }normales y tangenciales), uno tras otro.
@@ -519,7 +535,7 @@ centre-line-slot = la normal en { $point } a la ranura (respecto del sólido ran
 centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)
 centre-field = está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, de modo que el CIR está
-centre-rate = a partir de { $w } (hallada arriba a través de { $line }): está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, así que el CIR está
+centre-rate = a partir de { $w } (hallada en «{ sec-velocities }» a través de { $line }): está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, así que el CIR está
 centre-rate_step = a partir de { $w } (hallada en el paso { $step } a través de { $line }): está en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, así que el CIR está
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = por encima de { $q }
@@ -530,14 +546,14 @@ side-above_left = por encima y a la izquierda de { $q }
 side-above_right = por encima y a la derecha de { $q }
 side-below_left = por debajo y a la izquierda de { $q }
 side-below_right = por debajo y a la derecha de { $q }
-centre-check = Comprobación con las velocidades halladas: en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, el mismo punto: { $centre } está { $where }
+centre-check = Comprobación con las velocidades halladas en «{ sec-velocities }»: en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma componente de la velocidad perpendicular a él: sin movimiento pendular, se traslada)
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
 how-parallel_paths = ({ $p } y { $q } se mantienen siempre a una altura igual al radio de su rueda sobre el suelo plano, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
 how-translates_always = (se traslada en todo instante, como se ha visto en las velocidades)
-centres-found_above = { $centre } = { $value }: hallado arriba, en el paso de velocidades de { $body }.
+centres-found_above = { $centre } = { $value }: hallado en «{ sec-velocities }», en el paso de velocidades de { $body }.
 centres-found_above_step = { $centre } = { $value }: hallado en el paso { $step }, con las velocidades de { $body }.
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado en «{ sec-centres }»: { $sym } = 0.
 centre-site_s = { $centre }, hallado en «{ sec-centres }», no tiene velocidad: { $sym } = 0.
@@ -547,7 +563,7 @@ geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno d
 geom-bar_told = { $geom }, el punto geométrico de contacto, está siempre en la recta de los centros { $c1 } y { $c2 }, con { $part }/{ $whole } = { $ratio }, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:
 geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
-contact-above = { $sym } = { $value }, obtenida arriba para la aceleración del contacto.
+contact-above = { $sym } = { $value }, obtenida en «{ sec-accelerations }» para la aceleración del contacto.
 contact-written = { $sym } = { $value }, hallada en el paso { $step }.
 contact-fixed = { $sym }: { $point } como punto de { $body }{ FIXED($body) ->
         [yes] {""}
@@ -589,8 +605,8 @@ check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es 
     }), de modo que { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , con { $r1 } y { $r2 }
-    }. Con las velocidades angulares halladas, { $values } = { $ratio }: coinciden.
-check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas, { $values }: coinciden.
+    }. Con las velocidades angulares halladas en «{ sec-velocities }», { $values } = { $ratio }: coinciden.
+check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas en «{ sec-velocities }», { $values }: coinciden.
 how-translates = (se traslada respecto de { $body })
 pair-relation_v = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí, de modo que { $equation }{ $radii ->
         [0] {""}
@@ -608,7 +624,7 @@ drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes est�
         [0] {""}
        *[other] {" "}(con { $radii })
     }:
-check-train = La relación de la transmisión es el producto de las de sus etapas: { $ratio }; con las velocidades angulares halladas, la relación vale { $value }.
+check-train = La relación de la transmisión es el producto de las de sus etapas: { $ratio }; con las velocidades angulares halladas en «{ sec-velocities }», la relación vale { $value }.
 check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extremo de su oscilación cuando la ranura es tangente a la circunferencia de { $pin } (la manivela { $o2 }{ $pin } perpendicular a { $o4 }{ $pin }), donde cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Girando uniformemente, { $crank } barre 360° − 2θ = { $slow } en una carrera y 2θ = { $fast } en la otra: razón de tiempos { $ratio }.
 driver-slide = Dato: la velocidad de deslizamiento en el par prismático { $joint } es { $value }.
 driver-slide_accel = Dato: la aceleración de deslizamiento en el par prismático { $joint } es { $value }.

@@ -216,7 +216,7 @@ a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztia
 a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
 eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira.
-a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, lehen aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
+a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, «{ sec-velocities }» atalean aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
 driver-omega_sense = Datua: { $sym } = { $value }, { $faster ->
         [1] { $w } abiadura angeluarraren noranzko berean: { $body } azkartzen ari da
@@ -273,7 +273,7 @@ centre-joint-weld = bi solidoak zurrunki lotuta daude:
 centre-kennedy = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean dago ({ $k1 } hirugarren solidoa) eta { $l2 } zentroetatik pasatzen denean ({ $k2 } hirugarren solidoa); zuzen horiek ebakitzen dira
 centre-velocities = { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
 centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek ebakitzen dira
-centre-omega = aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta zentroa
+centre-omega = «{ sec-velocities }» atalean aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta zentroa
 centre-at = { $point } puntuan.
 centre-infinity = infinituan, { $direction } norabidean.
 centre-rest = ez dago mugimendu erlatiborik.
@@ -322,7 +322,7 @@ ans-pole_velocity = I zentroaren abiadura polodietan zehar
 centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua bere gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
-composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek goian aurkitutako mugimendu erlatiboa dute: { $sym } = { $value }.
+composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek «{ sec-velocities }» atalean aurkitutako mugimendu erlatiboa dute: { $sym } = { $value }.
 composition-slide_seen_step = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek { $step }. urratsean aurkitutako mugimendu erlatiboa dute: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, { $step }. urratsean aurkitutako puntu horren mugimendua.
 composition-drag_terms = { $sym } = { $terms } = { $value }: { $step }. urratseko ekuazioaren lehen terminoak dira.
@@ -397,7 +397,11 @@ fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadur
        *[other] {" "}({ $image }, { $point }-rentzat)
     }{ $between ->
         [0] .
-       *[other] ; irudien artean, aurreko ekuazioen abiadura erlatiboak{ $format ->
+       *[other] ; irudien artean, { $span ->
+            [1] { $first }. urratseko
+            [2] { $first }. eta { $last }. urratsetako
+           *[other] { $first }.–{ $last }. urratsetako
+        } ekuazioen abiadura erlatiboak{ $format ->
             [md] {""}
            *[other] {" "}(beltzez)
         }, bata bestearen ondoren.
@@ -410,7 +414,11 @@ fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azel
        *[other] {" "}({ $image }, { $point }-rentzat)
     }{ $between ->
         [0] .
-       *[other] ; irudien artean, aurreko ekuazioen terminoak ({ $format ->
+       *[other] ; irudien artean, { $span ->
+            [1] { $first }. urratseko
+            [2] { $first }. eta { $last }. urratsetako
+           *[other] { $first }.–{ $last }. urratsetako
+        } ekuazioen terminoak ({ $format ->
             [md] {""}
            *[other] beltzez:{" "}
         }normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
@@ -423,7 +431,11 @@ fig-level_a_relative = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitz
        *[other] {" "}({ $image }, { $point }-rentzat)
     }{ $between ->
         [0] .
-       *[other] ; irudien artean, aurreko ekuazioen terminoak ({ $format ->
+       *[other] ; irudien artean, { $span ->
+            [1] { $first }. urratseko
+            [2] { $first }. eta { $last }. urratsetako
+           *[other] { $first }.–{ $last }. urratsetako
+        } ekuazioen terminoak ({ $format ->
             [md] {""}
            *[other] beltzez:{" "}
         }normalak eta tangentzialak, eta erlatiboak), bata bestearen ondoren.
@@ -436,7 +448,11 @@ fig-level_a_normal = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzar
        *[other] {" "}({ $image }, { $point }-rentzat)
     }{ $between ->
         [0] .
-       *[other] ; irudien artean, aurreko ekuazioen terminoak ({ $format ->
+       *[other] ; irudien artean, { $span ->
+            [1] { $first }. urratseko
+            [2] { $first }. eta { $last }. urratsetako
+           *[other] { $first }.–{ $last }. urratsetako
+        } ekuazioen terminoak ({ $format ->
             [md] {""}
            *[other] beltzez:{" "}
         }normalak eta tangentzialak), bata bestearen ondoren.
@@ -469,7 +485,7 @@ centre-line-slot = artekarekiko normala { $point } puntuan (artekadun solidoarek
 centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala ({ $point } puntua zuzen horretan zehar irristatzen da)
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
 centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
-centre-rate = { $w } abiadura angeluarretik (goian { $line } solidoaren bidez aurkitua): { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
+centre-rate = { $w } abiadura angeluarretik («{ sec-velocities }» atalean { $line } solidoaren bidez aurkitua): { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
 centre-rate_step = { $w } abiadura angeluarretik ({ $step }. urratsean { $line } solidoaren bidez aurkitua): { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = { $q } puntuaren gainean
@@ -480,14 +496,14 @@ side-above_left = { $q } puntuaren gainean eta ezkerrean
 side-above_right = { $q } puntuaren gainean eta eskuinean
 side-below_left = { $q } puntuaren azpian eta ezkerrean
 side-below_right = { $q } puntuaren azpian eta eskuinean
-centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }, puntu bera: { $centre }, { $where }
+centre-check = Egiaztapena «{ sec-velocities }» atalean aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiaduraren osagai bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
 how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur lautik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 how-translates_always = (une oro traslatzen da, abiaduretan ikusi den bezala)
-centres-found_above = { $centre } = { $value }: goian aurkitua, { $body } solidoaren abiadura-urratsean.
+centres-found_above = { $centre } = { $value }: «{ sec-velocities }» atalean aurkitua, { $body } solidoaren abiadura-urratsean.
 centres-found_above_step = { $centre } = { $value }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, «{ sec-centres }» atalean aurkitua): { $sym } = 0.
 centre-site_s = «{ sec-centres }» atalean aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
@@ -497,7 +513,7 @@ geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena er
 geom-bar_told = { $geom }, kontaktu-puntu geometrikoa, beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan giltzatutako barra baten puntu bat bezala mugitzen da:
 geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez dena ez batena ez bestearena.
-contact-above = { $sym } = { $value }, goian lortua kontaktuaren azelerazioa kalkulatzeko.
+contact-above = { $sym } = { $value }, «{ sec-accelerations }» atalean lortua kontaktuaren azelerazioa kalkulatzeko.
 contact-written = { $sym } = { $value }, { $step }. urratsean aurkitua.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen{ FIXED($body) ->
         [yes] {""}
@@ -540,7 +556,7 @@ check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arr
         [0] {""}
        *[other] , { $r1 } eta { $r2 } izanik
     }. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
-check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
+check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; «{ sec-velocities }» atalean aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
 how-translates = ({ $body } solidoarekiko traslatzen da)
 pair-relation_v = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen; beraz, { $equation }{ $radii ->
         [0] {""}
@@ -558,7 +574,7 @@ drive-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak 
         [0] {""}
        *[other] {" "}({ $radii } izanik)
     }:
-check-train = Transmisioaren erlazioa etapen erlazioen biderkadura da: { $ratio }; aurkitutako abiadura angeluarrekin, erlazioa { $value } da.
+check-train = Transmisioaren erlazioa etapen erlazioen biderkadura da: { $ratio }; «{ sec-velocities }» atalean aurkitutako abiadura angeluarrekin, erlazioa { $value } da.
 check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulunkaren mutur batean dago artekak { $pin } puntuaren zirkunferentzia ukitzen duenean ({ $o2 }{ $pin } biradera { $o4 }{ $pin } zuzenarekiko perpendikularra), non cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Abiadura konstantean biratuz, { $crank } solidoak 360° − 2θ = { $slow } egiten ditu kurtsa batean eta 2θ = { $fast } bestean: denbora-erlazioa { $ratio }.
 driver-slide = Datua: { $joint } lotura prismatikoko irristatze-abiadura { $value } da.
 driver-slide_accel = Datua: { $joint } lotura prismatikoko irristatze-azelerazioa { $value } da.
