@@ -571,6 +571,7 @@ composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } n
 composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat al pas { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació del pas { $step }.
+composition-sum_seen = Així, { $sym } = { $terms } és l’equació del pas { $step }, que va trobar { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: el contrari del moviment relatiu trobat al pas { $step }.
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
@@ -589,10 +590,14 @@ vehicle-pin_shared = { $point } és el passador comú a { $a } i { $b }: { $sym 
 vehicle-centre = El CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    } és a { $first } i a { $second }; es tallen a { $centre } = { $where }. Cada punt { ELISION($body) ->
+    } és a { $first } i a { $second }; es tallen a { $centre } = { $where }, que no té velocitat: { $rest } = 0. Cada punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     } es mou perpendicular a la seva recta fins a { $centre }, amb celeritat proporcional a la seva distància:
+centres-found_in_step = { $centre }: trobat al pas { $step }, amb les velocitats { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }.
 vehicle-translation = Les rectes { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }

@@ -363,6 +363,7 @@ composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no
 composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado en el paso { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación del paso { $step }.
+composition-sum_seen = Así, { $sym } = { $terms } es la ecuación del paso { $step }, que halló { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: el opuesto del movimiento relativo hallado en el paso { $step }.
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
@@ -372,7 +373,8 @@ vehicle-equiprojective = Por la propiedad de equiproyectividad ({ $q } y { $p } 
 vehicle-equiprojective_along = Por la propiedad de equiproyectividad ({ $q } y { $p } son puntos de { $body }), sus velocidades tienen la misma componente según { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, con { $seg }/|{ $seg }| = { $unit }, de modo que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } está en el eje de la rueda { $joint }, así que { $vp } tiene la dirección del plano de la rueda: { $vp } = |{ $vp }| e, con e = { $along } y e · { $seg }/|{ $seg }| = { $cos }. Por tanto, |{ $vp }| = { $speed }, y { $vp } = { $value }.
 vehicle-line-wheel_own = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje, que es también la perpendicular a { $sym } por { $witness }: la rueda no desliza lateralmente)
 vehicle-pin_shared = { $point } es el pasador común a { $a } y { $b }: { $sym } = { $other }.
-vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
+vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }, que no tiene velocidad: { $rest } = 0. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
+centres-found_in_step = { $centre }: hallado en el paso { $step }, con las velocidades de { $body }.
 vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
 vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }: { $body } no gira (su CIR está en el infinito), se traslada y todos sus puntos se mueven como { $p }.
 vehicle-spin = La rueda { $joint } gira sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:

@@ -319,6 +319,7 @@ composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $b
 composition-slide_seen_step = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek { $step }. urratsean aurkitutako mugimendu erlatiboa dute: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, { $step }. urratsean aurkitutako puntu horren mugimendua.
 composition-drag_terms = { $sym } = { $terms } = { $value }: { $step }. urratseko ekuazioaren lehen terminoak dira.
+composition-sum_seen = Beraz, { $sym } = { $terms } { $step }. urratseko ekuazioa da, { $seen } aurkitu zuena.
 composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako mugimendu erlatiboaren aurkakoa.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
@@ -328,7 +329,8 @@ vehicle-equiprojective = Ekiproiektibitatearen propietateagatik ({ $q } eta { $p
 vehicle-equiprojective_along = Ekiproiektibitatearen propietateagatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, non { $seg }/|{ $seg }| = { $unit }; beraz, { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago: { $vp } = |{ $vp }| e, non e = { $along } eta e · { $seg }/|{ $seg }| = { $cos }. Ondorioz, |{ $vp }| = { $speed }, eta { $vp } = { $value }.
 vehicle-line-wheel_own = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza, { $witness } puntuan { $sym } abiadurarekiko perpendikularra ere badena: gurpila ez da alboetara irristatzen)
 vehicle-pin_shared = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } = { $other }.
-vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
+vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira, eta zentro horrek ez du abiadurarik: { $rest } = 0; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
+centres-found_in_step = { $centre }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
 vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }: { $body } solidoa ez da biratzen (zentroa infinituan dago), traslatzen da, eta puntu guztiak { $p } bezala mugitzen dira.
 vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $product } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:
