@@ -874,6 +874,7 @@ centre-check = Comprovació amb les velocitats trobades: a la perpendicular a { 
     }, { $side }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
+how-constant_rate = ({ $sym } = { $value } és constant: { $line } conserva la seva longitud, i la seva velocitat angular la fixen els radis i { $rates }, que és constant)
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa component de la velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda del terra pla, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)

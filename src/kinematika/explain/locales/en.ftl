@@ -595,6 +595,7 @@ side-below_right = below and to the right of { $q }
 centre-check = Check with the velocities found above: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
+how-constant_rate = ({ $sym } = { $value } is constant: { $line } keeps its length, and its rate is set by the radii and by { $rates }, which is constant)
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity component across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the flat ground, so they move on parallel straight lines at every instant: the body translates without turning)

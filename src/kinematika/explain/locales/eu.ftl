@@ -478,6 +478,7 @@ side-below_right = { $q } puntuaren azpian eta eskuinean
 centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
+how-constant_rate = ({ $sym } = { $value } konstantea da: { $line } zuzenak bere luzera gordetzen du, eta haren abiadura angeluarra erradioek eta { $rates } konstanteak finkatzen dute)
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiaduraren osagai bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
 how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur lautik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
