@@ -205,17 +205,17 @@ pos-polar_ref = { $point } és a una distància { $distance } { ELISION($origin)
 pos-frame = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a una distància { $y } en perpendicular, a l’esquerra mirant { ELISION($origin) ->
-        [vowel] d’{ $origin }
-       *[other] de { $origin }
-    } cap a { $toward }: { $point } = { $at }.
+    } segons { $line } i a una distància { $y } en perpendicular, a l’esquerra mirant { ELISION($from) ->
+        [vowel] d’{ $from }
+       *[other] de { $from }
+    } cap a { $to }: { $point } = { $at }.
 pos-frame_right = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a una distància { $y } en perpendicular, a la dreta mirant { ELISION($origin) ->
-        [vowel] d’{ $origin }
-       *[other] de { $origin }
-    } cap a { $toward }: { $point } = { $at }.
+    } segons { $line } i a una distància { $y } en perpendicular, a la dreta mirant { ELISION($from) ->
+        [vowel] d’{ $from }
+       *[other] de { $from }
+    } cap a { $to }: { $point } = { $at }.
 pos-frame_on = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }

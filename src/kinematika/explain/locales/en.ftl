@@ -175,8 +175,8 @@ pos-turn_shift = { $body } { COUNT($body) ->
 pos-carried = { $point } is carried with { $body }: { $point } = { $at }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
-pos-frame = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, on the left as one looks from { $origin } towards { $toward }: { $point } = { $at }.
-pos-frame_right = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, on the right as one looks from { $origin } towards { $toward }: { $point } = { $at }.
+pos-frame = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, on the left as one looks from { $from } towards { $to }: { $point } = { $at }.
+pos-frame_right = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, on the right as one looks from { $from } towards { $to }: { $point } = { $at }.
 pos-frame_on = { $point } is at a distance { $x } from { $origin } along { $line }: { $point } = { $at }.
 pos-circles = { $point } is at distance { $r1 } from { $c1 } and { $r2 } from { $c2 }: the intersection of two circles, about { $c1 } and about { $c2 }. Of the two points where they meet, it is { $which }: { $point } = { $at }.
 pos-circle_line = { $point } is at distance { $r } from { $c } on the line { $line }: the intersection of a circle about { $c } and a line. Of the two points where they meet, it is { $which }: { $point } = { $at }.

@@ -160,8 +160,8 @@ pos-turn_shift = { $body } se ha desplazado { $shift } a lo largo de su guía.
 pos-carried = { $point } se mueve con { $body }: { $point } = { $at }.
 pos-polar = { $point } está a una distancia { $distance } de { $origin }, a { $angle } del eje x: { $point } = { $at }.
 pos-polar_ref = { $point } está a una distancia { $distance } de { $origin }, a { $angle } de la dirección { $ref }: { $point } = { $at }.
-pos-frame = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a la izquierda mirando desde { $origin } hacia { $toward }: { $point } = { $at }.
-pos-frame_right = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a la derecha mirando desde { $origin } hacia { $toward }: { $point } = { $at }.
+pos-frame = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a la izquierda mirando desde { $from } hacia { $to }: { $point } = { $at }.
+pos-frame_right = { $point } está a una distancia { $x } de { $origin } según { $line } y a una distancia { $y } en perpendicular, a la derecha mirando desde { $from } hacia { $to }: { $point } = { $at }.
 pos-frame_on = { $point } está a una distancia { $x } de { $origin } según { $line }: { $point } = { $at }.
 pos-circles = { $point } está a una distancia { $r1 } de { $c1 } y { $r2 } de { $c2 }: la intersección de dos circunferencias, de centros { $c1 } y { $c2 }. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.
 pos-circle_line = { $point } está a una distancia { $r } de { $c } sobre la recta { $line }: la intersección de una circunferencia de centro { $c } y una recta. De los dos puntos en que se cortan, es { $which }: { $point } = { $at }.

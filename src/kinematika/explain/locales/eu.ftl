@@ -160,8 +160,8 @@ pos-turn_shift = { $body } solidoa { $shift } mugitu da gidan zehar.
 pos-carried = { $point } puntua { $body } solidoarekin mugitzen da: { $point } = { $at }.
 pos-polar = { $point } puntua { $origin } puntutik { $distance } distantziara dago, x ardatzarekiko { $angle } angeluan: { $point } = { $at }.
 pos-polar_ref = { $point } puntua { $origin } puntutik { $distance } distantziara dago, { $ref } norabidearekiko { $angle } angeluan: { $point } = { $at }.
-pos-frame = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, { $origin } puntutik { $toward } puntura begiratuta ezkerretara: { $point } = { $at }.
-pos-frame_right = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, { $origin } puntutik { $toward } puntura begiratuta eskuinetara: { $point } = { $at }.
+pos-frame = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, { $from } puntutik { $to } puntura begiratuta ezkerretara: { $point } = { $at }.
+pos-frame_right = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar, eta { $y } haren perpendikularrean, { $from } puntutik { $to } puntura begiratuta eskuinetara: { $point } = { $at }.
 pos-frame_on = { $point } puntua { $origin } puntutik { $x } distantziara dago { $line } zuzenean zehar: { $point } = { $at }.
 pos-circles = { $point } puntua { $c1 } puntutik { $r1 } distantziara eta { $c2 } puntutik { $r2 } distantziara dago: bi zirkunferentziaren ebakidura, { $c1 } eta { $c2 } zentrodunak. Ebakitzen diren bi puntuetatik, { $which } da: { $point } = { $at }.
 pos-circle_line = { $point } puntua { $c } puntutik { $r } distantziara dago, { $line } zuzenean: { $c } zentroko zirkunferentzia baten eta zuzen baten ebakidura. Ebakitzen diren bi puntuetatik, { $which } da: { $point } = { $at }.
