@@ -875,6 +875,15 @@ centre-check = Comprovació amb les velocitats trobades: a la perpendicular a { 
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
 how-constant_rate = ({ $sym } = { $value } és constant: { $line } conserva la seva longitud, i la seva velocitat angular la fixen els radis i { $rates }, que és constant)
+idle-rolling = { $body } rodola sense lliscar sobre { $fixed }: el seu punt { $point } del contacte és el seu CIR, de manera que:
+idle-symmetry = { $body } té la mateixa disposició que { $like } (el mateix radi, els mateixos enllaços amb els mateixos sòlids): per simetria gira igual:
+idle-unused = { $bodies } no { $count ->
+        [one] intervé
+       *[other] intervenen
+    } en la pregunta: cap pas no necessita { $count ->
+        [one] la seva velocitat angular
+       *[other] les seves velocitats angulars
+    }.
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa component de la velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 how-parallel_paths = ({ $p } i { $q } són sempre, cadascun, a la distància del radi de la seva roda del terra pla, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)

@@ -596,6 +596,15 @@ centre-check = Check with the velocities found above: on the perpendicular to { 
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
 how-constant_rate = ({ $sym } = { $value } is constant: { $line } keeps its length, and its rate is set by the radii and by { $rates }, which is constant)
+idle-rolling = { $body } rolls without slipping on { $fixed }: its point { $point } at the contact is its instant centre, so:
+idle-symmetry = { $body } is placed like { $like } (the same radius, the same joints with the same bodies): by symmetry it turns alike:
+idle-unused = { $bodies } { $count ->
+        [one] does
+       *[other] do
+    } not enter the question: no step needs { $count ->
+        [one] its angular velocity
+       *[other] their angular velocities
+    }.
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity component across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the flat ground, so they move on parallel straight lines at every instant: the body translates without turning)

@@ -529,6 +529,15 @@ centre-check = Comprobación con las velocidades halladas: en la perpendicular a
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-constant_rate = ({ $sym } = { $value } es constante: { $line } conserva su longitud, y su velocidad angular la fijan los radios y { $rates }, que es constante)
+idle-rolling = { $body } rueda sin deslizar sobre { $fixed }: su punto { $point } del contacto es su CIR, de modo que:
+idle-symmetry = { $body } tiene la misma disposición que { $like } (el mismo radio, los mismos enlaces con los mismos sólidos): por simetría gira igual:
+idle-unused = { $bodies } no { $count ->
+        [one] interviene
+       *[other] intervienen
+    } en la pregunta: ningún paso necesita { $count ->
+        [one] su velocidad angular
+       *[other] sus velocidades angulares
+    }.
 how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma componente de la velocidad perpendicular a él: sin movimiento pendular, se traslada)
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
 how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia del radio de su rueda del suelo plano, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)

@@ -479,6 +479,15 @@ centre-check = Egiaztapena aurkitutako abiadurekin: { $q } puntutik { $v } abiad
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
 how-constant_rate = ({ $sym } = { $value } konstantea da: { $line } zuzenak bere luzera gordetzen du, eta haren abiadura angeluarra erradioek eta { $rates } konstanteak finkatzen dute)
+idle-rolling = { $body } irristatu gabe errodatzen da { $fixed } solidoaren gainean: kontaktuko { $point } puntua haren biraketa-zentro instantaneoa da; beraz:
+idle-symmetry = { $body } { $like } bezala kokatuta dago (erradio bera, lotura berak solido berekin): simetriagatik berdin biratzen da:
+idle-unused = { $bodies } ez { $count ->
+        [one] da
+       *[other] dira
+    } galderan sartzen: urratsek ez dute { $count ->
+        [one] haren abiadura angeluarra
+       *[other] haien abiadura angeluarrak
+    } behar.
 how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiaduraren osagai bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
 how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur lautik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
