@@ -30,7 +30,7 @@ def test_tricycle_centre_by_the_axles():
     assert [said.args["first"].key, said.args["second"].key] == ["vehicle.line.wheel", "vehicle.line.velocity"]
     assert said.args["first"].args["joint"].text == "j3"
     assert frozenset(("ground", "chassis")) not in notes(doc)
-    assert any(isinstance(b, Msg) and b.key == "centres.found_in_step" and b.args["step"] == 1
+    assert any(isinstance(b, Msg) and b.key == "centres.found_above_step" and b.args["step"] == 1
                for b in doc.blocks())
 
 

@@ -359,7 +359,7 @@ def refer_rates(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
             n = rate_step(levels, Sym("ω", b.args["body"].text, vector=False))
             if n is not None:
                 # the value is written once, where the step found it (round 17a)
-                b.key, b.args["step"] = "centres.found_in_step", n
+                b.key, b.args["step"] = "centres.found_above_step", n
 
 
 def rate_step(levels: list[Section], sym: Sym) -> Optional[int]:

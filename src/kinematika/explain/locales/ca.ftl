@@ -594,10 +594,6 @@ vehicle-centre = El CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     } es mou perpendicular a la seva recta fins a { $centre }, amb celeritat proporcional a la seva distància:
-centres-found_in_step = { $centre }: trobat al pas { $step }, amb les velocitats { ELISION($body) ->
-        [vowel] d’{ $body }
-       *[other] de { $body }
-    }.
 vehicle-translation = Les rectes { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -891,7 +887,7 @@ centres-found_above = { $centre } = { $value }: trobat més amunt, al pas de vel
         [vowel] d’{ $body }
        *[other] de { $body }
     }.
-centres-found_above_step = { $centre } = { $value }: trobat al pas { $step }, amb les velocitats { ELISION($body) ->
+centres-found_above_step = { $centre }: trobat al pas { $step }, amb les velocitats { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }.

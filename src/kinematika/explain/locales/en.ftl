@@ -423,7 +423,6 @@ vehicle-equiprojective_along = By equiprojectivity ({ $q } and { $p } are points
 vehicle-line-wheel_own = the perpendicular at { $point } to the plane of wheel { $joint } (its axle, which is also the perpendicular to { $sym } through { $witness }: the wheel does not slip sideways)
 vehicle-pin_shared = { $point } is the pin common to { $a } and { $b }: { $sym } = { $other }.
 vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }, which has no velocity: { $rest } = 0. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
-centres-found_in_step = { $centre }: placed in Step { $step }, with the velocities of { $body }.
 vehicle-translation = The lines of { $body } are parallel: { COUNT($body) ->
         [many] their centre is at infinity, they translate
        *[one] its centre is at infinity, it translates
@@ -609,7 +608,7 @@ how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have 
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the flat ground, so they move on parallel straight lines at every instant: the body translates without turning)
 centres-found_above = { $centre } = { $value }: placed above, in the velocity step of { $body }.
-centres-found_above_step = { $centre } = { $value }: placed in Step { $step }, with the velocities of { $body }.
+centres-found_above_step = { $centre }: placed in Step { $step }, with the velocities of { $body }.
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed in «{ sec-centres }»: { $sym } = 0.
 centre-site_s = { $centre }, placed in «{ sec-centres }», has no velocity: { $sym } = 0.
 sec-contact = Contact points

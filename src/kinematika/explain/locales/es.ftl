@@ -374,7 +374,6 @@ vehicle-equiprojective_along = Por la propiedad de equiproyectividad ({ $q } y {
 vehicle-line-wheel_own = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje, que es también la perpendicular a { $sym } por { $witness }: la rueda no desliza lateralmente)
 vehicle-pin_shared = { $point } es el pasador común a { $a } y { $b }: { $sym } = { $other }.
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }, que no tiene velocidad: { $rest } = 0. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
-centres-found_in_step = { $centre }: hallado en el paso { $step }, con las velocidades de { $body }.
 vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
 vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }: { $body } no gira (su CIR está en el infinito), se traslada y todos sus puntos se mueven como { $p }.
 vehicle-spin = La rueda { $joint } gira sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda a { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
@@ -542,7 +541,7 @@ how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la mi
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
 how-parallel_paths = ({ $p } y { $q } están siempre, cada uno, a la distancia del radio de su rueda del suelo plano, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
 centres-found_above = { $centre } = { $value }: hallado arriba, en el paso de velocidades de { $body }.
-centres-found_above_step = { $centre } = { $value }: hallado en el paso { $step }, con las velocidades de { $body }.
+centres-found_above_step = { $centre }: hallado en el paso { $step }, con las velocidades de { $body }.
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado en «{ sec-centres }»: { $sym } = 0.
 centre-site_s = { $centre }, hallado en «{ sec-centres }», no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto

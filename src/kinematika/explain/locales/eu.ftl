@@ -330,7 +330,6 @@ vehicle-equiprojective_along = Ekiproiektibitatearen propietateagatik ({ $q } et
 vehicle-line-wheel_own = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza, { $witness } puntuan { $sym } abiadurarekiko perpendikularra ere badena: gurpila ez da alboetara irristatzen)
 vehicle-pin_shared = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } = { $other }.
 vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira, eta zentro horrek ez du abiadurarik: { $rest } = 0; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
-centres-found_in_step = { $centre }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: zentroa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
 vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }: { $body } solidoa ez da biratzen (zentroa infinituan dago), traslatzen da, eta puntu guztiak { $p } bezala mugitzen dira.
 vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $product } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:
@@ -492,7 +491,7 @@ how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $c
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
 how-parallel_paths = ({ $p } eta { $q } puntuak bakoitza bere gurpilaren erradiora daude lur lautik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 centres-found_above = { $centre } = { $value }: goian aurkitua, { $body } solidoaren abiadura-urratsean.
-centres-found_above_step = { $centre } = { $value }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
+centres-found_above_step = { $centre }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, «{ sec-centres }» atalean aurkitua): { $sym } = 0.
 centre-site_s = «{ sec-centres }» atalean aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
