@@ -97,7 +97,9 @@ def reached(sol, doc, q) -> bool:
         return any(isinstance(b, Equation) and b.level == "a" and b.target.sym.sub.split("∈")[0] == q.target.point
                    and any(t.sym.sup == "t" for t in b.sides[0]) for b in blocks)
     if q.kind == "decompose":
-        return all(any(isinstance(b, Equation) and b.level == lv and any(t.kind == "drag" for t in b.sides[0])
+        # the sum a step wrote already is referred to (seventeenth round (a)), not written again
+        return all(any((isinstance(b, Equation) and b.level == lv and any(t.kind == "drag" for t in b.sides[0]))
+                       or (isinstance(b, Msg) and b.key == "composition.sum_seen" and b.args["sym"].base == lv)
                        for b in blocks) for lv in ("v", "a"))
     if q.kind == "contact":
         want = [(part[key], lv) for name, part in got.items() if isinstance(part, dict)

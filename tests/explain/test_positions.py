@@ -144,13 +144,16 @@ def test_named_coordinates_are_defined_where_the_point_is_placed(monkeypatch):
 
 def test_an_offset_to_the_right_is_said_so():
     """C5-2.2 places each wheel a/2 to one side of its axle's midpoint (`at: [a, -a/2]` is
-    to the right of O→P): the text says "a/2 … to its right", never "−a/2 … to its left"."""
+    to the right of O→P): the text says "a/2 … to its right", never "−a/2 … to its left".
+    S2 moves from P towards O, so its wheels' sides are said looking that way (seventeenth
+    round (a)): C3 on the left looking from P towards O, C4 on the right."""
     import sympy
 
     _, doc = explained("seed_c5_2_2_articulated")
     told = sentences(doc)
     sides = {p: told[p].key for p in ("C1", "C2", "C3", "C4")}
-    assert sides == {"C1": "pos.frame", "C2": "pos.frame_right", "C3": "pos.frame_right", "C4": "pos.frame"}
+    assert sides == {"C1": "pos.frame", "C2": "pos.frame_right", "C3": "pos.frame", "C4": "pos.frame_right"}
+    assert [told[p].args["from"].text for p in ("C1", "C3")] == ["O", "P"]
     a = sympy.Symbol("a", positive=True)
     for p in sides:
         y = sympy.sympify(told[p].args["y"].value)

@@ -127,7 +127,7 @@ def test_the_precession_is_tied_to_the_chassis_rate():
     """C5-2.1 by hand: the chassis turns about I = (0; L) (the rear axle's line meets the
     normal to v_F at F = (L; 0), v_F at 45°); |v_F| = v₀, IF = √2·L, so ψ̇ = v₀/(√2·L) =
     √2·v₀/(2·L). The notes call the chassis' rate the precession ψ̇: the page finds it as
-    "ψ̇ = ω_txasisa = |v_FI| / IF = √2·v₀/(2·L)" and writes ψ̇ after; a datum's rate (the
+    "ψ̇ = ω_txasisa = |v_{FI_{txasisa}}| / I_{txasisa}F = √2·v₀/(2·L)" and writes ψ̇ after; a datum's rate (the
     fan's ω₁) is not written twice."""
     sol, doc = explained("seed_c5_2_1_tricycle")
     w = next(d for d in doc.derived() if d.body == "chassis" and d.kind == "omega").value.value
@@ -135,7 +135,8 @@ def test_the_precession_is_tied_to_the_chassis_rate():
     assert sympy.simplify(w - sympy.sqrt(2) * v0 / (2 * big_l)) == 0
     for lang, name in (("eu", "txasisa"), ("ca", "xassís")):
         page = rendered("seed_c5_2_1_tricycle", lang, drawings=False)
-        assert re.search(rf"^ψ̇ = ω_{name} = \|v_\{{?F-?I\}}?\| / I_\{{{name}\}}F = √2·v₀/\(2·L\)", page, re.M), lang
+        # the centre in full in the subscript (seventeenth round (a)): v_{FI_{txasisa}}
+        assert re.search(rf"^ψ̇ = ω_{name} = \|v_\{{FI_\{{{name}\}}\}}\| / I_\{{{name}\}}F = √2·v₀/\(2·L\)", page, re.M), lang
         assert f"ω_{name} ×" not in page
     fan = rendered("fan_absolute", "eu", drawings=False)
     assert "ω_1 = ω_" not in fan

@@ -266,10 +266,46 @@ def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
                     terms += ([" + "] if terms else []) + [t.sym]
                 sec.blocks[k] = msg("composition.drag_terms", sym=b.target.sym, terms=Inline(terms), value=value,
                                     step=first)
+        _refer_sums(ctx, sec, levels)
         for said in (b for b in sec.blocks if isinstance(b, Msg) and b.key == "composition.slide_seen"):
             found = step_of(levels, said.args["seen"])
             if found is not None:
                 said.key, said.args["step"] = "composition.slide_seen_step", found
+
+
+def _refer_sums(ctx: Ctx, sec: Section, levels: list[Section]) -> None:
+    """The composition's sum v_P = v_arr,P + v_rel,P (+ a_Cor,P) where a step's equation was
+    that very sum, the point's motion on its guide body plus its slide along the guide
+    (001's v_{B∈rocker} = v_{B∈M} + v_{B∈N rel M}): the section refers to that step, "so
+    v_B = v_arr,B + v_rel,B is the equation of Step 2, which found v_{B∈rocker}", and does
+    not derive v_B again (a result is derived once, round 17a)."""
+    found: dict = {}
+    for level_sec in levels:
+        for n, step in _steps(level_sec):
+            for eq in _equations(step):
+                if eq.point is None:
+                    continue
+                for side in eq.sides:
+                    for t in side:
+                        m = RELATIVE.match(t.sym.sub) if t.kind == "slide" else None
+                        if m and m.group(1) == eq.point.point:
+                            key = (eq.level, ctx.motion_key(eq.point.point, m.group(2)), m.group(2), m.group(3))
+                            found.setdefault(key, (eq.target.sym, n))
+    moving = None
+    for k, b in enumerate(sec.blocks):
+        if isinstance(b, Msg) and b.key == "composition.point":
+            moving = b.args["frame"].text
+        if not isinstance(b, Equation) or b.point is None or b.target.kind != "point" or not b.sides:
+            continue
+        if not any(t.kind == "drag" for t in b.sides[0]):
+            continue
+        seen = found.get((b.level, ctx.motion_key(b.point.point, b.point.body), b.point.body, moving))
+        if seen is None:
+            continue
+        terms: list = []
+        for t in b.sides[0]:
+            terms += ([" + "] if terms else []) + [t.sym]
+        sec.blocks[k] = msg("composition.sum_seen", sym=b.target.sym, terms=Inline(terms), seen=seen[0], step=seen[1])
 
 
 def refer_reverses(doc: Document, levels: list[Section]) -> None:
@@ -329,7 +365,8 @@ def refer_rates(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
     is the one whose blocks write ω of the body (a Derived ω_b = ω_b REL a + ω_a, or an
     equation's term), read after `prune` numbered the steps. So does a centre a vehicle's
     velocity step placed (C5-2.1's I_chassis = (0, L): placed in Step 1), named by the step
-    that finds the body's ω there."""
+    that finds the body's ω there, without its value again (C5-1.5's "I_pulley3: found in
+    Step 3", never "I_pulley3 = (9r/2, −4r): found in Step 3": a result is written once)."""
     for b in doc.blocks():
         if isinstance(b, CentreNote) and b.how == "rate":
             body = next((x for x in b.pair if x != ctx.frame), b.pair[-1])
@@ -337,6 +374,7 @@ def refer_rates(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
         elif isinstance(b, Msg) and b.key == "centres.found_above":
             n = rate_step(levels, Sym("ω", b.args["body"].text, vector=False))
             if n is not None:
+                # the value is written once, where the step found it (round 17a)
                 b.key, b.args["step"] = "centres.found_above_step", n
 
 

@@ -223,6 +223,20 @@ def centres_first(ctx: Ctx, steps: Optional[list] = None) -> bool:
     return ctx.centre_first_memo
 
 
+def placed_at_contact(ctx: Ctx, body: str, joint_id: str) -> bool:
+    """Whether the centres section, written before the velocities, already placed `body`'s
+    instant centre relative to the frame at the contact of joint `joint_id` (C5-1.3's
+    "I_suport: el punt de contacte J"): a velocity step then refers to that section, as it
+    does for every centre placed there, and does not derive it again (a result is derived
+    once, round 17a)."""
+    if not centres_first(ctx):
+        return False
+    made, chosen, _ = _notes(ctx)
+    key = frozenset((ctx.frame, body))
+    note = made.get(key)
+    return key in chosen and note is not None and note.how == "joint" and list(note.via[:1]) == [joint_id]
+
+
 def centre_sites(ctx: Ctx) -> tuple[dict[str, tuple[str, tuple]], dict[str, CentreNote]]:
     """The centres relative to the frame that the first centres section places by a
     construction (Aronhold–Kennedy, a joint's line), for the velocity steps to start from:

@@ -144,7 +144,13 @@ class Bar:
                 out.append(msg("geom.bar_told" if told else "geom.bar", geom=geometric_point(self.name), c1=Name(self.c1), c2=Name(self.c2),
                                joint=joint_name(self.j.id), part=Name(str(segment(self.c1, self.name))),
                                whole=Name(str(segment(self.c1, self.c2))), ratio=Value(self.fraction())))
-        if self.c2 is not None and with_bar:
+        if self.c2 is not None and with_bar and level == "a" and self.constant():
+            # the notes: α_OC = 0 because ω_OC = −ω0/3 is constant (C5-1.8), not read off a_C
+            out.append(Derived(self.alpha_sym, [], Value(ctx.clean(self.alpha, "rate2"), "rate2"), "", "alpha", False,
+                               remark=msg("how.constant_rate", sym=self.sym,
+                                          value=Value(ctx.clean(self.omega, "rate"), "rate"),
+                                          line=Name(str(segment(self.c1, self.c2))), rates=self.steady_rates())))
+        elif self.c2 is not None and with_bar:
             end = point_term(ctx, level, *self.second())
             turn = self.rotation(level, self.c1, self.c2, True)
             out.append(Equation(end, [[start] + turn], level, figure=False))
@@ -164,6 +170,28 @@ class Bar:
         out.append(Equation(target, [[start] + arm], level, figure=False, position=ctx.pos(self.name)))
         return out
 
+    def constant(self) -> bool:
+        """Whether the bar's ω is constant over the motion, as the model knows it: two circles
+        rolling on each other keep C1C2 = r1 ± r2, so the bar turns at a fixed combination
+        of the circles' rates, (r1 ω1 ± r2 ω2)/(r1 ± r2); each circle's body is fixed or
+        driven at a rate whose acceleration is zero, so ω_C1C2 is constant and α_C1C2 = 0
+        is said from that, as the notes do (C5-1.8: "ω_OC constant"), never read off an
+        equation ("α_OC = |a_CO^t| / OC = 0")."""
+        ctx = self.ctx
+        if not ctx.is_zero(self.alpha, "rate2"):
+            return False
+        return all(ctx.fixed(b) or _steady(ctx, b) for b in (self.b1, self.second()[1]))
+
+    def steady_rates(self) -> Any:
+        """The driven rates the bar's ω is set by (ω_wheel; "ω_1 and ω_2" when both turn)."""
+        from .document import Inline
+
+        syms = [omega_sym(b) for b in (self.b1, self.second()[1]) if not self.ctx.fixed(b)]
+        items: list = []
+        for k, w in enumerate(syms):
+            items += ([", "] if k else []) + [w]
+        return Inline(items)
+
     def fraction(self) -> Any:
         """Where J^geom is on the line of centres, C1J / C1C2 (signed: beyond C2 when above
         1), as a number the student can check: the notes' "a 2/3 d'OC des d'O" (C5-1.8),
@@ -182,6 +210,16 @@ class Bar:
         arm = self.rotation(level, self.c1, self.name, False)
         moved = add(start.value, arm[0].value) if level == "v" else add(start.value, add(arm[0].value, arm[1].value))
         return ctx.clean(moved, "speed" if level == "v" else "accel")
+
+
+def _steady(ctx: Ctx, body: str) -> bool:
+    """Whether a driver gives `body`'s ω relative to the frame with a zero acceleration: its
+    rate is constant over the motion (C5-1.8's wheel at ω0)."""
+    for d in ctx.model.drivers:
+        if d.kind == "omega" and d.body == body and d.relative_to in (None, ctx.frame):
+            accel = ctx.inst.value(d.accel, d.where) if d.accel is not None else 0
+            return ctx.is_zero(accel, "rate2")
+    return False
 
 
 def geometric_blocks(ctx: Ctx, j, done: set, pair: Optional[tuple[str, str]] = None) -> list:

@@ -1336,7 +1336,11 @@ def _crossing_only(p: Path) -> Optional[Joint]:
 def still_contact(ctx: Ctx, j: Joint, fixed: str, body: str):
     """The sentence that a body rolling on a fixed one has its contact point at rest: its
     instant centre (v_J∈b = 0)."""
+    from .centres import placed_at_contact
+
     name = ctx.contact(j)
+    if placed_at_contact(ctx, body, j.id):      # the centres section placed it: refer to it
+        return centre_site(ctx, name, body)
     return msg("rolling.centre", joint=joint_name(j.id), a=body_name(fixed), b=body_name(body), point=point_name(name),
                sym=Sym("v", ctx.point_label(name, body)))
 

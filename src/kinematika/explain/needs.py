@@ -57,7 +57,27 @@ def prune(ctx: Ctx, doc: Document) -> None:
     if halves:                  # ω worked, α not: the table would show a hole — work α out too
         _restore(kept)
         unworked = _prune(ctx, doc, _asked_bodies(ctx) | halves)
-    _drop_rows(doc, unworked.get("v", set()), unworked.get("a", set()))
+    idle, rated = _idle(ctx, doc, unworked.get("v", set()))
+    _drop_rows(doc, unworked.get("v", set()), unworked.get("a", set()) - rated, keep=rated)
+    if idle:
+        for s in doc.sections:
+            if s.title.key in ("sec.rates_summary", "sec.rates_summary_v"):
+                at = next((k + 1 for k, b in enumerate(s.blocks) if isinstance(b, Table)), len(s.blocks))
+                s.blocks[at:at] = idle
+
+
+def _idle(ctx: Ctx, doc: Document, unworked: set[str]) -> tuple[list, set[str]]:
+    """The lines for the moving bodies the structure lists and no step works out
+    (`idle.idle_blocks`), and those given a rate there."""
+    from .drives import belt_runs
+    from .idle import idle_blocks
+
+    listed = [b for b in ctx.model.moving_bodies if not ctx.fixed(b) and b not in belt_runs(ctx)]
+    idle = [b for b in listed if b in unworked]
+    if not idle:
+        return [], set()
+    accel = any(s.title.key == "sec.rates_summary" for s in doc.sections)
+    return idle_blocks(ctx, idle, [b for b in listed if b not in unworked], accel)
 
 
 def _snapshot(blocks: list) -> list:
@@ -203,7 +223,7 @@ def _rates_after(ctx: Ctx, doc: Document, sec: Section) -> set[str]:
     return out | _rate_bodies(ctx, syms)
 
 
-def _drop_rows(doc: Document, bodies: set[str], alphas: set[str]) -> None:
+def _drop_rows(doc: Document, bodies: set[str], alphas: set[str], keep: frozenset | set = frozenset()) -> None:
     """The rates' table lists what the explanation found: a body whose ω was not worked out
     has no row, one whose α was not, no α (—); the order of solution names the bodies each
     step works out."""
@@ -212,7 +232,8 @@ def _drop_rows(doc: Document, bodies: set[str], alphas: set[str]) -> None:
     for s in doc.sections:
         if s.title.key in ("sec.rates_summary", "sec.rates_summary_v"):
             for t in (b for b in s.blocks if isinstance(b, Table)):
-                t.rows = [r for r in t.rows if getattr(r[0], "text", None) not in bodies]
+                # a body given its rate in a line after the table (`idle`) keeps its row
+                t.rows = [r for r in t.rows if getattr(r[0], "text", None) not in bodies - set(keep)]
                 for r in t.rows:
                     if len(r) > 2 and getattr(r[0], "text", None) in alphas:
                         r[2] = "—"

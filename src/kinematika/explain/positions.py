@@ -88,11 +88,15 @@ def _sentence(ctx: Ctx, name: str, c: Any) -> Msg:
             # an offset written negative is that length to the other side: −a/2 to its left
             # reads a/2 to its right
             key, y = "pos.frame_right", Value(ctx.clean(-across, "len"), "len")
-        # the side is said as one looks from the origin towards the line's other point, never
-        # "to its left" alone: C5-2.2's C4, left of O→P, is the right wheel of the chassis
-        # that travels the other way (P towards O)
+        # the side is said as one looks along the line, never "to its left" alone; a
+        # vehicle's wheel is said looking the way the vehicle moves (C5-2.2's S2 travels from
+        # P towards O: its left wheel C3 is on the left looking from P towards O, round 17a)
+        view = (c.toward, c.origin) if _backwards(ctx, name, c.origin, c.toward) else (c.origin, c.toward)
+        if view[0] != c.origin:
+            key = {"pos.frame": "pos.frame_right", "pos.frame_right": "pos.frame"}.get(key, key)
         return msg(key, point=p, origin=_loc(ctx, c.origin), line=_pair(ctx, c.origin, c.toward),
-                   toward=_loc(ctx, c.toward), x=_quantity(ctx, c.at[0], "len"), y=y, at=at)
+                   toward=_loc(ctx, c.toward), x=_quantity(ctx, c.at[0], "len"), y=y, at=at,
+                   **{"from": _loc(ctx, view[0]), "to": _loc(ctx, view[1])})
     if isinstance(c, TwoCircles):
         (c1, c2), (r1, r2) = c.centers, c.radii
         which = _which(ctx, c.side, c.near, a=_loc(ctx, c1), b=_loc(ctx, c2))
@@ -106,6 +110,28 @@ def _sentence(ctx: Ctx, name: str, c: Any) -> Msg:
                    line=_line(ctx, c.line), which=_which(ctx, c.side, c.near, line=_line(ctx, c.line)), at=at)
     assert isinstance(c, TwoLines)
     return msg("pos.lines", point=p, l1=_line(ctx, c.lines[0]), l2=_line(ctx, c.lines[1]), at=at)
+
+
+def _backwards(ctx: Ctx, name: str, origin: Any, toward: Any) -> bool:
+    """Whether `name` is a vehicle's wheel centre (a knife-edge joint there) whose vehicle
+    moves against the line origin → toward at the instant: the velocity of the wheel's centre
+    on its chassis points from `toward` to `origin`. Its sides are then said looking the way
+    it moves, as one names a vehicle's left and right wheels."""
+    from .kinds import knife_edge
+
+    if not (isinstance(origin, str) and isinstance(toward, str)):
+        return False
+    for j in ctx.model.joints:
+        if j.at != name or not knife_edge(j):
+            continue
+        body = j.b if j.a == ctx.frame else j.a
+        try:
+            v = ctx.num(ctx.vel(body, name))
+            d = ctx.num(ctx.r(origin, toward))
+        except (KeyError, TypeError, ValueError):
+            return False
+        return float(sum(a * b for a, b in zip(v, d))) < 0
+    return False
 
 
 def _loc(ctx: Ctx, loc: Any) -> Any:

@@ -15,7 +15,7 @@ from __future__ import annotations
 from typing import Optional
 
 from .context import Ctx, omega_sym, read_off, segment
-from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, msg
+from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, centre_point, msg
 from .given import whole_along
 from .kinds import knife_edge, pin_only, pins
 
@@ -339,17 +339,25 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
     w = omega_sym(b)
     ctx.worked.add(f"centre:{b}")       # its velocities come from the centre: no check of it by them
     out: list = _pin_shared(ctx, b, witness) + [msg("vehicle.centre", body=Name(b, "body"), first=why[0], second=why[1], centre=ident,
-                     where=Value(ctx.clean(_exact_centre(ctx, b, centre), "len"), "len"))]
+                     where=Value(ctx.clean(_exact_centre(ctx, b, centre), "len"), "len"),
+                     rest=Sym("v", centre_point(b)))]
     known = set(speeds or ()) - {witness}
+    # the composition the notes write about the centre, v_P = v_{I_b} + v_{P I_b} with
+    # v_{I_b} = 0 (002's v_T(I) = v_T(C) + Ω × CI), the centre named in full in every
+    # subscript (v_{F I_xassís}, never v_FI, which reads as a point I of the model)
+    centre_pt = centre_point(b)
+    rest = Term(Sym("v", centre_pt), ctx.clean((0,) * len(ctx.vel(b, witness)), "speed"), Ann("M"), Ann("D"),
+                kind="point")
     for k, p in enumerate([witness] + [q for q in ctx.model.bodies[b].points if q != witness and q not in known]):
-        arm = Inline([ident, Name(p)])          # the segment I_{S2}P, run together (`Renderer.inline`)
+        arm = segment(centre_pt, p)             # the segment I_{S2}P, the centre's full symbol
+        rel = Sym("v", segment(p, centre_pt))
         value = ctx.clean(ctx.vel(b, p), "speed")
-        term = Term(Sym("v", segment(p, "I")), value, Ann("?") if k == 0 else Ann("M", [w, "·", arm]),
+        term = Term(rel, value, Ann("?") if k == 0 else Ann("M", [w, "·", arm]),
                     Ann("perp", arm), [w, " × ", arm], k == 0, "rotation")
         target = Term(Sym("v", ctx.point_label(p, b)), value, Ann("M"), Ann("D"), kind="point")
-        out.append(Equation(target, [[term]], "v", ctx.ref(p, b), figure=False))
+        out.append(Equation(target, [[rest, term]], "v", ctx.ref(p, b), figure=False))
         if k == 0:
-            out.append(Derived(w, read_off(ctx, Sym("v", segment(p, "I")), arm, ctx.omega(b)), ctx.value(ctx.omega(b), "rate"), b,
+            out.append(Derived(w, read_off(ctx, rel, arm, ctx.omega(b)), ctx.value(ctx.omega(b), "rate"), b,
                                "omega", not ctx.symbolic, term, ctx.clean(_arm(ctx, b, p), "len")))
     return out
 

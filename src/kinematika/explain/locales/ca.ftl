@@ -207,17 +207,17 @@ pos-polar_ref = { $point } és a una distància { $distance } { ELISION($origin)
 pos-frame = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a una distància { $y } en perpendicular, a l’esquerra mirant { ELISION($origin) ->
-        [vowel] d’{ $origin }
-       *[other] de { $origin }
-    } cap a { $toward }: { $point } = { $at }.
+    } segons { $line } i a una distància { $y } en perpendicular, a l’esquerra mirant { ELISION($from) ->
+        [vowel] d’{ $from }
+       *[other] de { $from }
+    } cap a { $to }: { $point } = { $at }.
 pos-frame_right = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
-    } segons { $line } i a una distància { $y } en perpendicular, a la dreta mirant { ELISION($origin) ->
-        [vowel] d’{ $origin }
-       *[other] de { $origin }
-    } cap a { $toward }: { $point } = { $at }.
+    } segons { $line } i a una distància { $y } en perpendicular, a la dreta mirant { ELISION($from) ->
+        [vowel] d’{ $from }
+       *[other] de { $from }
+    } cap a { $to }: { $point } = { $at }.
 pos-frame_on = { $point } és a una distància { $x } { ELISION($origin) ->
         [vowel] d’{ $origin }
        *[other] de { $origin }
@@ -578,6 +578,7 @@ composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } n
 composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat al pas { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació del pas { $step }.
+composition-sum_seen = Així, { $sym } = { $terms } és l’equació del pas { $step }, que va trobar { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: el contrari del moviment relatiu trobat al pas { $step }.
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
@@ -596,7 +597,7 @@ vehicle-pin_shared = { $point } és el passador comú a { $a } i { $b }: { $sym 
 vehicle-centre = El CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    } és a { $first } i a { $second }; es tallen a { $centre } = { $where }. Cada punt { ELISION($body) ->
+    } és a { $first } i a { $second }; es tallen a { $centre } = { $where }, que no té velocitat: { $rest } = 0. Cada punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     } es mou perpendicular a la seva recta fins a { $centre }, amb celeritat proporcional a la seva distància:
@@ -892,6 +893,16 @@ centre-check = Comprovació amb les velocitats trobades a «{ sec-velocities }»
     }, { $side }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
+how-constant_rate = ({ $sym } = { $value } és constant: { $line } conserva la seva longitud, i la seva velocitat angular la fixen els radis i { $rates }, que és constant)
+idle-rolling = { $body } rodola sense lliscar sobre { $fixed }: el seu punt { $point } del contacte és el seu CIR, de manera que:
+idle-symmetry = { $body } té la mateixa disposició que { $like } (el mateix radi, els mateixos enllaços amb els mateixos sòlids): per simetria gira igual:
+idle-unused = { $bodies } no { $count ->
+        [one] intervé
+       *[other] intervenen
+    } en la pregunta: cap pas no necessita { $count ->
+        [one] la seva velocitat angular
+       *[other] les seves velocitats angulars
+    }.
 how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa component de la velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 how-parallel_paths = ({ $p } i { $q } es mantenen sempre a una altura igual al radi de la seva roda sobre el terra pla, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
@@ -900,7 +911,7 @@ centres-found_above = { $centre } = { $value }: trobat a «{ sec-velocities }»,
         [vowel] d’{ $body }
        *[other] de { $body }
     }.
-centres-found_above_step = { $centre } = { $value }: trobat al pas { $step }, amb les velocitats { ELISION($body) ->
+centres-found_above_step = { $centre }: trobat al pas { $step }, amb les velocitats { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }.

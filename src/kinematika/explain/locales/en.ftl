@@ -177,8 +177,8 @@ pos-turn_shift = { $body } { COUNT($body) ->
 pos-carried = { $point } is carried with { $body }: { $point } = { $at }.
 pos-polar = { $point } is at distance { $distance } from { $origin }, at { $angle } from the x axis: { $point } = { $at }.
 pos-polar_ref = { $point } is at distance { $distance } from { $origin }, at { $angle } from the direction { $ref }: { $point } = { $at }.
-pos-frame = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, on the left as one looks from { $origin } towards { $toward }: { $point } = { $at }.
-pos-frame_right = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, on the right as one looks from { $origin } towards { $toward }: { $point } = { $at }.
+pos-frame = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, on the left as one looks from { $from } towards { $to }: { $point } = { $at }.
+pos-frame_right = { $point } is at a distance { $x } from { $origin } along { $line } and { $y } across it, on the right as one looks from { $from } towards { $to }: { $point } = { $at }.
 pos-frame_on = { $point } is at a distance { $x } from { $origin } along { $line }: { $point } = { $at }.
 pos-circles = { $point } is at distance { $r1 } from { $c1 } and { $r2 } from { $c2 }: the intersection of two circles, about { $c1 } and about { $c2 }. Of the two points where they meet, it is { $which }: { $point } = { $at }.
 pos-circle_line = { $point } is at distance { $r } from { $c } on the line { $line }: the intersection of a circle about { $c } and a line. Of the two points where they meet, it is { $which }: { $point } = { $at }.
@@ -419,6 +419,7 @@ composition-slide_seen_step = { $point } slides along its guide; { $body } { COU
     } points have the relative motion found in Step { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in Step { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation of Step { $step }.
+composition-sum_seen = So { $sym } = { $terms } is the equation of Step { $step }, which found { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the relative motion found in Step { $step }.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
@@ -428,7 +429,7 @@ vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { 
 vehicle-equiprojective_along = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel's plane: { $vp } = |{ $vp }| e, with e = { $along } and e · { $seg }/|{ $seg }| = { $cos }. Hence |{ $vp }| = { $speed }, and { $vp } = { $value }.
 vehicle-line-wheel_own = the perpendicular at { $point } to the plane of wheel { $joint } (its axle, which is also the perpendicular to { $sym } through { $witness }: the wheel does not slip sideways)
 vehicle-pin_shared = { $point } is the pin common to { $a } and { $b }: { $sym } = { $other }.
-vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
+vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }, which has no velocity: { $rest } = 0. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel: { COUNT($body) ->
         [many] their instant centre is at infinity, they translate
        *[one] its instant centre is at infinity, it translates
@@ -616,12 +617,22 @@ side-below_right = below and to the right of { $q }
 centre-check = Check with the velocities found in «{ sec-velocities }»: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
+how-constant_rate = ({ $sym } = { $value } is constant: { $line } keeps its length, and its rate is set by the radii and by { $rates }, which is constant)
+idle-rolling = { $body } rolls without slipping on { $fixed }: its point { $point } at the contact is its instant centre, so:
+idle-symmetry = { $body } is placed like { $like } (the same radius, the same joints with the same bodies): by symmetry it turns alike:
+idle-unused = { $bodies } { $count ->
+        [one] does
+       *[other] do
+    } not enter the question: no step needs { $count ->
+        [one] its angular velocity
+       *[other] their angular velocities
+    }.
 how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity component across it: no swinging, it translates)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the flat ground, so they move on parallel straight lines at every instant: the body translates without turning)
 how-translates_always = (it translates at every instant, as the velocities showed)
 centres-found_above = { $centre } = { $value }: placed in «{ sec-velocities }», in the velocity step of { $body }.
-centres-found_above_step = { $centre } = { $value }: placed in Step { $step }, with the velocities of { $body }.
+centres-found_above_step = { $centre }: placed in Step { $step }, with the velocities of { $body }.
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed in «{ sec-centres }»: { $sym } = 0.
 centre-site_s = { $centre }, placed in «{ sec-centres }», has no velocity: { $sym } = 0.
 sec-contact = Contact points
