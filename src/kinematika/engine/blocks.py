@@ -161,7 +161,9 @@ def _steps(inverses: np.ndarray, start: np.ndarray, n: int, block: np.ndarray, l
     count = len(inverses)
     bounds = start.tolist()
     key = np.sort(block * n + at)                     # each block's distinct coupled positions, sorted
-    key = key[np.r_[True, key[1:] != key[:-1]]]       # (not np.unique: it imports numpy.ma)
+    distinct = np.ones(len(key), dtype=bool)          # (not np.unique: it imports numpy.ma)
+    distinct[1:] = key[1:] != key[:-1]
+    key = key[distinct]
     owner = key // n
     first = np.searchsorted(owner, np.arange(count + 1)).tolist()
     column = np.searchsorted(key, block * n + at) - np.asarray(first)[block]
