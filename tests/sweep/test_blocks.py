@@ -134,3 +134,47 @@ def test_factoring_imports_nothing_more():
     assert out.split("] ")[1].strip() == "[]"
     # x0 = 1, x1 = 1 − x0 = 0, x2 = 1 − 2·x1 = 1, x3 = 1 − 3·x2 = −2
     assert out.split("] ")[0] + "]" == "[1.0, 0.0, 1.0, -2.0]"
+
+
+def test_a_system_in_block_order_keeps_its_own_order(monkeypatch):
+    # rows and columns already block lower-triangular (blocks of 3, 2, 4, 1 unknowns, each
+    # reading the one before): the blocks are read off the order, the components' walk is
+    # not needed, and the solves are the dense ones
+    sizes = [3, 2, 4, 1]
+    n = sum(sizes)
+    rng = np.random.default_rng(7)
+    a = np.zeros((n, n))
+    start = np.r_[0, np.cumsum(sizes)]
+    for k, s in enumerate(sizes):
+        a[start[k]:start[k + 1], start[k]:start[k + 1]] = rng.normal(size=(s, s)) + 3 * np.eye(s)
+        if k:
+            a[start[k]:start[k + 1], start[k - 1]:start[k]] = rng.normal(size=(s, sizes[k - 1]))
+
+    def no_walk(*args):
+        raise AssertionError("the components were walked")
+
+    monkeypatch.setattr(blocks, "tarjan", no_walk)
+    monkeypatch.setattr(blocks, "MERGED", 4)          # each block its own (2 + 4 > 4, 3 + 2 > 4)
+    lu = BlockLU.factor(sparse(a))
+    assert lu.start.tolist() == [0, 3, 5, 9, 10]
+    b = rng.normal(size=n)
+    assert lu.solve(b) == pytest.approx(np.linalg.solve(a, b), rel=1e-12, abs=1e-12)
+    assert lu.solve(b, trans="T") == pytest.approx(np.linalg.solve(a.T, b), rel=1e-12, abs=1e-12)
+
+
+def test_an_order_with_a_block_larger_than_merged_is_walked(monkeypatch):
+    # the last row reads the first unknown: in its own order the system is one block of 10,
+    # larger than a merged block, so the components are found (a 1-cycle chain: one block
+    # after all) and the solve is still the dense one
+    n = 10
+    a = 3 * np.eye(n) + np.diag(np.ones(n - 1), -1)
+    a[0, n - 1] = 1.0
+    walked = []
+    real = blocks.tarjan
+    monkeypatch.setattr(blocks, "tarjan", lambda *args: walked.append(1) or real(*args))
+    monkeypatch.setattr(blocks, "MERGED", 4)
+    monkeypatch.setattr(blocks, "BLOCK_MAX", 12)
+    lu = BlockLU.factor(sparse(a))
+    assert walked == [1]
+    b = np.arange(1.0, n + 1)
+    assert lu.solve(b) == pytest.approx(np.linalg.solve(a, b), rel=1e-12, abs=1e-12)
