@@ -3,6 +3,7 @@ dense solve, a condition estimate that bounds the dense one, and the same mechan
 as scipy's sparse LU (which remains the fallback)."""
 from __future__ import annotations
 
+import subprocess
 import sys
 from pathlib import Path
 
@@ -116,3 +117,64 @@ def test_tarjan_gives_the_mutually_reachable_sets_each_after_what_it_depends_on(
         assert {int(w) for w in np.flatnonzero(mutual[comp[0]])} == set(comp)
     assert all(where[w] <= where[v] for v, ws in enumerate(deps) for w in ws)
     assert blocks.tarjan(n, [[w for w in ws if w != v] for v, ws in enumerate(deps)]) == comps
+
+
+def test_factoring_imports_nothing_more():
+    # np.unique imports numpy.ma (about 30 M instructions, a 1000-body instant's start):
+    # the blocks find each block's distinct couplings by sorting instead
+    code = ("import sys, numpy as np\n"
+            "from kinematika.engine.blocks import BlockLU, SparseRows\n"
+            "a = np.eye(4) + np.diag([1.0, 2.0, 3.0], -1)\n"
+            "r, c = np.nonzero(a)\n"
+            "ptr = np.r_[0, np.cumsum(np.bincount(r, minlength=4))]\n"
+            "before = set(sys.modules)\n"
+            "lu = BlockLU.factor(SparseRows(ptr, c.astype(np.int64), a[r, c], (4, 4)))\n"
+            "print(lu.solve(np.ones(4)).tolist(), sorted(set(sys.modules) - before))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.split("] ")[1].strip() == "[]"
+    # x0 = 1, x1 = 1 − x0 = 0, x2 = 1 − 2·x1 = 1, x3 = 1 − 3·x2 = −2
+    assert out.split("] ")[0] + "]" == "[1.0, 0.0, 1.0, -2.0]"
+
+
+def test_a_system_in_block_order_keeps_its_own_order(monkeypatch):
+    # rows and columns already block lower-triangular (blocks of 3, 2, 4, 1 unknowns, each
+    # reading the one before): the blocks are read off the order, the components' walk is
+    # not needed, and the solves are the dense ones
+    sizes = [3, 2, 4, 1]
+    n = sum(sizes)
+    rng = np.random.default_rng(7)
+    a = np.zeros((n, n))
+    start = np.r_[0, np.cumsum(sizes)]
+    for k, s in enumerate(sizes):
+        a[start[k]:start[k + 1], start[k]:start[k + 1]] = rng.normal(size=(s, s)) + 3 * np.eye(s)
+        if k:
+            a[start[k]:start[k + 1], start[k - 1]:start[k]] = rng.normal(size=(s, sizes[k - 1]))
+
+    def no_walk(*args):
+        raise AssertionError("the components were walked")
+
+    monkeypatch.setattr(blocks, "tarjan", no_walk)
+    monkeypatch.setattr(blocks, "MERGED", 4)          # each block its own (2 + 4 > 4, 3 + 2 > 4)
+    lu = BlockLU.factor(sparse(a))
+    assert lu.start.tolist() == [0, 3, 5, 9, 10]
+    b = rng.normal(size=n)
+    assert lu.solve(b) == pytest.approx(np.linalg.solve(a, b), rel=1e-12, abs=1e-12)
+    assert lu.solve(b, trans="T") == pytest.approx(np.linalg.solve(a.T, b), rel=1e-12, abs=1e-12)
+
+
+def test_an_order_with_a_block_larger_than_merged_is_walked(monkeypatch):
+    # the last row reads the first unknown: in its own order the system is one block of 10,
+    # larger than a merged block, so the components are found (a 1-cycle chain: one block
+    # after all) and the solve is still the dense one
+    n = 10
+    a = 3 * np.eye(n) + np.diag(np.ones(n - 1), -1)
+    a[0, n - 1] = 1.0
+    walked = []
+    real = blocks.tarjan
+    monkeypatch.setattr(blocks, "tarjan", lambda *args: walked.append(1) or real(*args))
+    monkeypatch.setattr(blocks, "MERGED", 4)
+    monkeypatch.setattr(blocks, "BLOCK_MAX", 12)
+    lu = BlockLU.factor(sparse(a))
+    assert walked == [1]
+    b = np.arange(1.0, n + 1)
+    assert lu.solve(b) == pytest.approx(np.linalg.solve(a, b), rel=1e-12, abs=1e-12)

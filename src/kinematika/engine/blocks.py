@@ -5,7 +5,8 @@ then the strongly connected components of what each unknown depends on: the
 Dulmage–Mendelsohn fine blocks) falls apart into small square blocks, a chain's loops or
 a machine's Assur groups, solved one after the other. Consecutive blocks are merged up to
 `MERGED` unknowns and every merged block is inverted densely in one stacked numpy call, so
-a solve is a short Python loop of small products. When a block is large, the matching
+a solve is a short Python loop of small products, one per block (its inverse and its
+couplings to earlier blocks multiplied out once per factorisation, `_steps`). When a block is large, the matching
 takes too long or a block is singular, `BlockLU.factor` returns None and the caller falls
 back on scipy's sparse LU, whose import alone costs more CPU than a 1 000-body instant.
 """
@@ -16,7 +17,8 @@ from typing import Any, Optional, Sequence
 import numpy as np
 
 BLOCK_MAX = 64      # largest fine block solved as a dense matrix
-MERGED = 48         # consecutive blocks merged up to this many unknowns
+MERGED = 24         # consecutive blocks merged up to this many unknowns (the inverses' n·MERGED²
+                    # against one product per block and solve: 24 is the least for a long chain)
 MATCH_WORK = 50     # matching steps allowed per nonzero before giving up (scipy decides)
 
 
@@ -68,18 +70,12 @@ class BlockLU:
     positions start[k]:start[k+1] of both. `solve(b)` solves A x = b, `solve(c, trans="T")`
     Aᵀ y = c, as scipy's SuperLU does (so `linsolve.inverse_norm` takes either)."""
 
-    def __init__(self, matrix, row_order, col_order, start, inverses, below, left) -> None:
+    def __init__(self, matrix, row_order, col_order, start, forward, backward) -> None:
         self.matrix = matrix
         self.row_order, self.col_order, self.start = row_order, col_order, start
-        self.inverses = inverses          # (K, S, S), padded with the identity
-        self.below = below                # per block: (local row, column position, value) left of it
-        self.left = left                  # per block: (local column, row position, value) below it
+        self.forward = forward            # per block, in order: (start, end, H, where), see `_steps`
+        self.backward = backward          # the same for Aᵀ, last block first
         self.n = len(col_order)
-        # per block, what each solve reads: its span and the view of its inverse (the same
-        # views every solve, made once: a solve is a Python loop over the blocks)
-        bounds = start.tolist()
-        self.spans = [(bounds[k], bounds[k + 1], inverses[k, :bounds[k + 1] - bounds[k], :bounds[k + 1] - bounds[k]])
-                      for k in range(len(bounds) - 1)]
 
     @classmethod
     def factor(cls, a: SparseRows) -> Optional["BlockLU"]:
@@ -99,7 +95,8 @@ class BlockLU:
         col_row = _match(rows, n, MATCH_WORK * max(len(cols_all), 1))
         if col_row is None:
             return None
-        blocks = _merged(tarjan(n, [rows[r] for r in col_row]))     # column c depends on its row's others
+        blocks = _merged(_in_own_order(a.row_index[nonzero], a.cols[nonzero], col_row)
+                         or tarjan(n, [rows[r] for r in col_row]))  # column c depends on its row's others
         if blocks is None:
             return None
         col_order = np.array([c for block in blocks for c in block], dtype=np.int64)
@@ -126,9 +123,10 @@ class BlockLU:
         if not np.isfinite(inverses).all():
             return None
         low = cb < rb                    # entries left of the diagonal blocks (none are right of them)
-        below = _grouped(rb[low], r[low] - start[rb[low]], c[low], v[low], len(blocks))
-        left = _grouped(cb[low], c[low] - start[cb[low]], r[low], v[low], len(blocks))
-        return cls(a, row_order, col_order, start, inverses, below, left)
+        forward = _steps(inverses, start, n, rb[low], r[low] - start[rb[low]], c[low], v[low])
+        backward = _steps(inverses.transpose(0, 2, 1), start, n, cb[low], c[low] - start[cb[low]],
+                          r[low], v[low])[::-1]
+        return cls(a, row_order, col_order, start, forward, backward)
 
     def refined(self, b: np.ndarray) -> np.ndarray:
         """A x = b with one step of iterative refinement: solving with the blocks' explicit
@@ -138,38 +136,73 @@ class BlockLU:
 
     def solve(self, b: np.ndarray, trans: str = "N") -> np.ndarray:
         """x with A x = b (``trans="N"``) or Aᵀ x = b (``trans="T"``): forward through the
-        blocks in order, each block's unknowns from its inverse after the entries left of it are
-        taken off; the transpose backwards, as scipy's SuperLU solves."""
-        x = np.empty(self.n)
-        if trans == "N":
-            rhs = b[self.row_order]
-            for (s0, s1, inverse), (local, at, value) in zip(self.spans, self.below):
-                r = rhs[s0:s1]
-                if len(local):
-                    r = r - np.bincount(local, weights=value * x[at], minlength=s1 - s0)
-                x[s0:s1] = inverse @ r
-            out = np.empty(self.n)
-            out[self.col_order] = x
-            return out
-        rhs = b[self.col_order]
-        for (s0, s1, inverse), (local, at, value) in zip(reversed(self.spans), reversed(self.left)):
-            r = rhs[s0:s1]
-            if len(local):
-                r = r - np.bincount(local, weights=value * x[at], minlength=s1 - s0)
-            x[s0:s1] = inverse.T @ r
-        out = np.empty(self.n)
-        out[self.row_order] = x
+        blocks in order, backwards for the transpose, as scipy's SuperLU solves. One vector
+        holds the unknowns found so far and the right side (`_steps`); each block's unknowns
+        are one product of its matrix with the entries it reads of that vector."""
+        n = self.n
+        first, then = (self.row_order, self.col_order) if trans == "N" else (self.col_order, self.row_order)
+        known = np.empty(2 * n)
+        known[n:2 * n] = b[first]
+        dot = np.dot                      # (a tenth cheaper than `@` on a block's small product)
+        for s0, s1, h, where in (self.forward if trans == "N" else self.backward):
+            known[s0:s1] = dot(h, known[where])
+        out = np.empty(n)
+        out[then] = known[:n]
         return out
 
 
-def _grouped(block: np.ndarray, local: np.ndarray, at: np.ndarray, value: np.ndarray,
-             count: int) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
-    """Entries split by block: (local index, position in the other direction, value) each."""
-    order = np.argsort(block, kind="stable")
-    bounds = np.searchsorted(block[order], np.arange(count + 1)).tolist()
-    local, at, value = local[order], at[order], value[order]
-    return [(local[bounds[k]:bounds[k + 1]], at[bounds[k]:bounds[k + 1]], value[bounds[k]:bounds[k + 1]])
-            for k in range(count)]
+def _steps(inverses: np.ndarray, start: np.ndarray, n: int, block: np.ndarray, local: np.ndarray,
+           at: np.ndarray, value: np.ndarray) -> list[tuple[int, int, np.ndarray, np.ndarray]]:
+    """Each block's solve as one product: block k's unknowns x_k (positions s0:s1) are
+    A_kk⁻¹ (b_k − C_k x_at) = [A_kk⁻¹ | −A_kk⁻¹ C_k] · [b_k; x_at], C_k being the entries
+    (`local` row, position `at`, `value`) coupling it to unknowns found before it. With the
+    unknowns at 0:n of one vector and the right side at n:2n, that is H_k · v[where_k]:
+    H_k = [A_kk⁻¹ | −A_kk⁻¹ C_k] and where_k the block's right side and the positions it reads
+    (a block's inverse is applied once per solve, not once per coupling: the products are
+    made here, once per factorisation)."""
+    count = len(inverses)
+    bounds = start.tolist()
+    key = np.sort(block * n + at)                     # each block's distinct coupled positions, sorted
+    distinct = np.ones(len(key), dtype=bool)          # (not np.unique: it imports numpy.ma)
+    distinct[1:] = key[1:] != key[:-1]
+    key = key[distinct]
+    owner = key // n
+    first = np.searchsorted(owner, np.arange(count + 1)).tolist()
+    column = np.searchsorted(key, block * n + at) - np.asarray(first)[block]
+    width = max((first[k + 1] - first[k] for k in range(count)), default=0)
+    coupling = np.zeros((count, inverses.shape[1], width))
+    np.add.at(coupling, (block, local, column), value)
+    product = -(inverses @ coupling)
+    reads = key % n
+    out = []
+    for k in range(count):
+        s0, s1 = bounds[k], bounds[k + 1]
+        size, used = s1 - s0, first[k + 1] - first[k]
+        h = np.concatenate((inverses[k, :size, :size], product[k, :size, :used]), axis=1)
+        out.append((s0, s1, h, np.concatenate((np.arange(n + s0, n + s1), reads[first[k]:first[k + 1]]))))
+    return out
+
+
+def _in_own_order(row_index: np.ndarray, cols: np.ndarray, col_row: list[int]) -> Optional[list[list[int]]]:
+    """The unknowns in their own order as blocks, when that order is already block
+    triangular in blocks of at most `MERGED` unknowns (else None: the components must be
+    found). With row `col_row[p]` at place p, a block may end after place p when no row up to
+    p has an entry right of p: the running maximum of the rows' last columns is p.
+
+    A system written body after body usually is (a chain's unknowns, loop after loop), and
+    then the components' walk (`tarjan`, Python over every edge: about 18 M instructions for
+    3 000 unknowns) is spared; its blocks may be coarser than the components, never larger
+    than a merged block."""
+    n = len(col_row)
+    row_pos = np.empty(n, np.int64)
+    row_pos[col_row] = np.arange(n)
+    reach = np.zeros(n, np.int64)
+    np.maximum.at(reach, row_pos[row_index], cols)
+    ends = (np.flatnonzero(np.maximum.accumulate(reach) <= np.arange(n)) + 1).tolist()
+    starts = [0] + ends[:-1]
+    if max(e - s for s, e in zip(starts, ends)) > MERGED:
+        return None
+    return [list(range(s, e)) for s, e in zip(starts, ends)]
 
 
 def _merged(components: list[list[int]]) -> Optional[list[list[int]]]:
@@ -188,11 +221,16 @@ def _merged(components: list[list[int]]) -> Optional[list[list[int]]]:
 def _match(rows: list[list[int]], n: int, budget: int) -> Optional[list[int]]:
     """A perfect matching of rows to columns (the row of each column): a cheap pass, then
     augmenting paths by depth-first search with lookahead (Duff's MC21); None if there is
-    none or it takes more than `budget` steps."""
+    none or it takes more than `budget` steps.
+
+    The cheap pass takes the rows with fewest entries first (a short row has fewer columns
+    to lose to the rows before it): a chain's two-entry rows then leave its longer rows the
+    columns they need, and no augmenting path is searched (in row order, one per loop)."""
     col_row = [-1] * n
     row_col = [-1] * n
     look = [0] * n
-    for i, cs in enumerate(rows):
+    for i in sorted(range(len(rows)), key=list(map(len, rows)).__getitem__):
+        cs = rows[i]
         for k, c in enumerate(cs):
             if col_row[c] < 0:
                 col_row[c], row_col[i], look[i] = i, c, k + 1
