@@ -54,16 +54,18 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
 
 
 def lettering(ctx: Ctx, labels: list[str]) -> dict[str, Any]:
-    """The caption's example of how images are lettered: "a for A", unless the page writes a
-    as a symbol (C5-2.2's length a: "(a, A-rentzat)" beside it reads as the length's name);
-    then one of the polygon's own one-letter images that names no symbol ("p for P"), or no
-    example (`image` 0)."""
+    """The caption's example of how images are lettered, taken from the polygon's own images:
+    "a for A" where a is one of them, else the first plain image ("p for P", "a1 for A1"),
+    never a letter the page writes as a symbol (C5-2.2's length a: "(a, A-rentzat)" beside it
+    reads as the length's name) nor the pole o, and no example (`image` 0) when none is left
+    (a page with no point A said "(a for A)" of a letter it never draws)."""
     symbols = {str(name) for name in ctx.model.parameters}
-    if "a" not in symbols:
-        return {"image": "a", "point": "A"}
-    letters = sorted(n for label in labels for n in label.split(", ")
-                     if len(n) == 1 and n.isalpha() and n.islower() and n != "o" and n not in symbols)
-    return {"image": letters[0], "point": letters[0].upper()} if letters else {"image": 0, "point": 0}
+    plain = sorted({n for label in labels for n in label.split(", ")
+                    if re.fullmatch(r"[a-z][0-9]*", n) and n != "o" and n not in symbols})
+    if not plain:
+        return {"image": 0, "point": 0}
+    image = "a" if "a" in plain else plain[0]
+    return {"image": image, "point": image.upper()}
 
 
 def pole_notes(fig: Figure) -> list:

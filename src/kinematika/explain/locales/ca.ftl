@@ -55,8 +55,8 @@ structure-welded = { $bodies } { $bodies_n ->
         [one] és fix a
        *[other] són fixos a
     } { $frame }: { $bodies_n ->
-        [one] forma part del sòlid fix, no és un sòlid mòbil
-       *[other] formen part del sòlid fix, no són sòlids mòbils
+        [one] en forma part i no es mou
+       *[other] en formen part i no es mouen
     }; tots els seus punts tenen velocitat i acceleració nul·les.
 structure-fixed_part = { $body } (fix a { $frame })
 structure-dof = El mecanisme té { $dof ->

@@ -39,12 +39,9 @@ structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
         [one] is
        *[other] are
-    } fixed to { $frame }: part of the fixed body, not { $bodies_n ->
-        [one] a moving body
-       *[other] moving bodies
-    }; all { $bodies_n ->
-        [one] its
-       *[other] their
+    } fixed to { $frame }: { $bodies_n ->
+        [one] it is part of it and does not move; all its
+       *[other] they are part of it and do not move; all their
     } points have zero velocity and acceleration.
 structure-fixed_part = { $body } (fixed to { $frame })
 structure-dof = The mechanism has { $dof ->

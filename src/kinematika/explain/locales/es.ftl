@@ -40,8 +40,8 @@ structure-welded = { $bodies } { $bodies_n ->
         [one] es fijo a
        *[other] son fijos a
     } { $frame }: { $bodies_n ->
-        [one] forma parte del sólido fijo, no es un sólido móvil
-       *[other] forman parte del sólido fijo, no son sólidos móviles
+        [one] es parte de él y no se mueve
+       *[other] son parte de él y no se mueven
     }; todos sus puntos tienen velocidad y aceleración nulas.
 structure-fixed_part = { $body } (fijo a { $frame })
 structure-dof = El mecanismo tiene { $dof ->

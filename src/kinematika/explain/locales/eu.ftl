@@ -37,8 +37,8 @@ structure-shaped = { $body }, { $radius } erradioko { $shape }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
-        [one] dago: solido finkoaren zati da, ez solido mugikorra
-       *[other] daude: solido finkoaren zati dira, ez solido mugikorrak
+        [one] dago: haren zati da eta ez da mugitzen
+       *[other] daude: haren zati dira eta ez dira mugitzen
     }; { $bodies_n ->
         [one] haren
        *[other] haien
