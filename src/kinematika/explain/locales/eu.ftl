@@ -327,6 +327,7 @@ composition-slide_seen_step = { $point } puntua bere gidan zehar irristatzen da;
 composition-drag_seen = { $sym } = { $seen } = { $value }, { $step }. urratsean aurkitutako puntu horren mugimendua.
 composition-drag_terms = { $sym } = { $terms } = { $value }: { $step }. urratseko ekuazioaren lehen terminoak dira.
 composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako mugimendu erlatiboaren aurkakoa.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako mugimendu erlatiboaren aurkakoa: { $vel } = 0 denez (errodadura-kontaktua), bi Coriolis gaiak nuluak dira, eta, beraz, bi azelerazio erlatiboak aurkakoak dira.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
