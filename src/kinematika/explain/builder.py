@@ -114,7 +114,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
         found_forward(eq)
     prune(ctx, doc)
     refer_drags(ctx, doc, levels)
-    refer_reverses(doc, levels)
+    refer_reverses(ctx, doc, levels)
     refer_rates(ctx, doc, levels)
     translations(ctx, doc)
     material_contacts(levels)
@@ -308,14 +308,17 @@ def _refer_sums(ctx: Ctx, sec: Section, levels: list[Section]) -> None:
         sec.blocks[k] = msg("composition.sum_seen", sym=b.target.sym, terms=Inline(terms), seen=seen[0], step=seen[1])
 
 
-def refer_reverses(doc: Document, levels: list[Section]) -> None:
+def refer_reverses(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
     """A relative motion a later section uses (001's rolling pair: a_{F∈R rel N} in the
     composition's relative equation) that no step wrote, where a step found its reverse
     (a_{F∈N rel R} in Step 3), is derived where it is first used, before its equation:
     a_{F∈R rel N} = −a_{F∈N rel R} = (value), from Step 3 — a number a student cannot trace
     is never written. v_{P∈b rel a} = v_{P∈b} − v_{P∈a} = −v_{P∈a rel b} always; for
     accelerations the two differ by 2 (ω_b − ω_a) × v_{P∈b rel a}, so the reverse is said
-    only where the values are opposite (a rolling contact, v_rel = 0), checked here."""
+    only where the values are opposite (a rolling contact, v_rel = 0), checked here. An
+    acceleration's reverse says why (round 18a): where v_{P∈b rel a} = 0 (a rolling contact)
+    the Coriolis terms vanish, so the two relative accelerations are opposite — a reader who
+    knows a_rel ≠ −a_rel in general is told the reason, not asked to trust it."""
     found = {_written(t.sym): (t, n) for sec in levels for n, step in _steps(sec) for eq in _equations(step)
              for t in [eq.target, *(t for side in eq.sides for t in side)]}
     for sec in doc.sections:
@@ -334,8 +337,21 @@ def refer_reverses(doc: Document, levels: list[Section]) -> None:
                     continue
                 said.add(_written(t.sym))
                 unit = "speed" if t.sym.base == "v" else "accel"
-                _insert_before(sec, eq, msg("composition.reverse", sym=t.sym, back=rev[0].sym,
-                                            value=Value(t.value, unit), step=rev[1]))
+                key, extra = "composition.reverse", {}
+                if unit == "accel" and _at_rest(ctx, m.group(1), m.group(2), m.group(3)):
+                    key, extra = "composition.reverse_rolling", {"vel": Sym("v", t.sym.sub)}
+                _insert_before(sec, eq, msg(key, sym=t.sym, back=rev[0].sym,
+                                            value=Value(t.value, unit), step=rev[1], **extra))
+
+
+def _at_rest(ctx: Ctx, point: str, body: str, frame: str) -> bool:
+    """Whether `body`'s material point at `point` has no velocity relative to `frame` (a
+    rolling contact): then 2 ω × v_rel = 0 and a_{P∈b rel a} = −a_{P∈a rel b}."""
+    try:
+        v = [float(x) for x in ctx.vel(body, point, frame)]
+    except Exception:        # a label the solution does not know: no reason claimed
+        return False
+    return max(abs(x) for x in v) < 1e-9
 
 
 def _opposite(u: object, w: object) -> bool:

@@ -580,6 +580,7 @@ composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aques
 composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació del pas { $step }.
 composition-sum_seen = Així, { $sym } = { $terms } és l’equació del pas { $step }, que va trobar { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: el contrari del moviment relatiu trobat al pas { $step }.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: el contrari del moviment relatiu trobat al pas { $step }, ja que { $vel } = 0 (contacte de rodolament) anul·la els dos termes de Coriolis, i per tant les dues acceleracions relatives són oposades.
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)

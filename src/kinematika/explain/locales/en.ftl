@@ -418,6 +418,7 @@ composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that po
 composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation of Step { $step }.
 composition-sum_seen = So { $sym } = { $terms } is the equation of Step { $step }, which found { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the relative motion found in Step { $step }.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative motion found in Step { $step }, since { $vel } = 0 (rolling contact) makes both Coriolis terms vanish, so the two relative accelerations are opposite.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)

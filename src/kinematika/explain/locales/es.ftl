@@ -372,6 +372,7 @@ composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese 
 composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación del paso { $step }.
 composition-sum_seen = Así, { $sym } = { $terms } es la ecuación del paso { $step }, que halló { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: el opuesto del movimiento relativo hallado en el paso { $step }.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: el opuesto del movimiento relativo hallado en el paso { $step }, ya que { $vel } = 0 (contacto de rodadura) anula los dos términos de Coriolis, así que las dos aceleraciones relativas son opuestas.
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)

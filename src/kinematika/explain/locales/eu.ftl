@@ -328,6 +328,7 @@ composition-drag_seen = { $sym } = { $seen } = { $value }, { $step }. urratsean 
 composition-drag_terms = { $sym } = { $terms } = { $value }: { $step }. urratseko ekuazioaren lehen terminoak dira.
 composition-sum_seen = Beraz, { $sym } = { $terms } { $step }. urratseko ekuazioa da, { $seen } aurkitu zuena.
 composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako mugimendu erlatiboaren aurkakoa.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako mugimendu erlatiboaren aurkakoa: { $vel } = 0 denez (errodadura-kontaktua), bi Coriolis gaiak nuluak dira, eta, beraz, bi azelerazio erlatiboak aurkakoak dira.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
