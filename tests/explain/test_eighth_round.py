@@ -26,7 +26,7 @@ def _asks_accelerations(name: str) -> bool:
 # -- (a) the polygon's example letter is no symbol of the page -----------------------------------------------------
 # C5-2.2's length a: "(a, A-rentzat)" beside it reads as the length's name. The caption's
 # example is then one of the polygon's own images (P, the axle's midpoint: "p for P").
-EXAMPLE = {"en": "({} for {})", "es": "({} para {})", "ca": "({} per a {})", "eu": "({}, {}-rentzat)"}
+EXAMPLE = {"en": "({} for {})", "es": "({} para {})", "ca": "({} per a {})", "eu": "({1}-rentzat {0})"}
 
 
 @pytest.mark.parametrize("lang", LANGS)

@@ -144,12 +144,12 @@ def test_a_side_across_a_line_says_which_way_it_is_looked_along(name, lang):
 def test_the_articulated_vehicles_right_wheel_is_left_of_o_towards_p():
     """C5-2.2 by hand: S2 trails S1 (moving +x), heading from P to O, i.e. (1, 1)/√2; its
     right wheel's centre C4 = P + (a/2)(1, −1)/√2 = (−√2a/4, −3√2a/4) is on the right of that
-    heading and on the left of O→P (the opposite heading): the page says the latter, the
-    points' table the former, and both hold."""
+    heading and on the left of O→P (the opposite heading): the page now says it as the
+    vehicle heads (seventeenth round (a): the right wheel on the right, looking from P towards O)."""
     page = rendered("seed_c5_2_2_articulated", "en", drawings=False)
     assert "| C4 | centre of the right wheel of S2 |" in page
-    assert ("C4 is at a distance a from O along OP and a/2 across it, on the left as one looks "
-            "from O towards P: C4 = (−√2·a/4, −3·√2·a/4).") in page
+    assert ("C4 is at a distance a from O along OP and a/2 across it, on the right as one looks "
+            "from P towards O: C4 = (−√2·a/4, −3·√2·a/4).") in page
 
 
 @pytest.mark.parametrize("lang", ["es", "ca"])

@@ -114,7 +114,7 @@ def test_a_contact_sentence_stands_next_to_the_equation_that_uses_it():
     comes after them, before the wheel's equation v_B = v_K∈wheel + v_B-K (its contact K)."""
     text = rendered("seed_c5_e3_wheels_with_rod", "eu", "md", False)
     rod = text.index("v_B  =  v_{I_biela}  +")
-    sentence = text.index("kontaktuko K puntuak")
+    sentence = text.index("K puntua *eskuineko gurpilaren* biraketa-zentro")   # the CIR section's centre (17a)
     wheel = text.index("v_B  =  v_{K∈eskuineko gurpila}")
     assert rod < sentence < wheel
 

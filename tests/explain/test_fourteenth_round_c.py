@@ -65,8 +65,8 @@ def test_basque_solidoa_only_where_the_name_cannot_decline(name):
 
 def test_basque_plural_body_in_the_genitive():
     text = rendered("seed_c5_e1_cavity", "eu", "md", drawings=False)
-    assert "kontaktuko J puntuak, *gurpilen* solidoarenak," in text
-    assert "*Gurpilen* solidoa *pista zilindrikoaren* gainean errodatzen da" in text
+    assert "J puntua *gurpilen* solidoaren biraketa-zentro instantaneoa da" in text   # the CIR section's centre (17a)
+    assert "*Gurpilen* solidoa irristatu gabe errodatzen da *pista zilindrikoaren* gainean" in text
 
 
 # ---- 2. the side alone ----------------------------------------------------------------------

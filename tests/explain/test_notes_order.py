@@ -127,7 +127,8 @@ def test_a_wheel_on_a_fixed_body_turns_about_its_contact(name, body):
     wheel's velocities there; it never writes the empty equation v_J∈wheel = v_J∈ground."""
     sol, doc = explained(name)
     velocities = blocks(section(doc, "sec.velocities"))
-    said = [i for i, b in enumerate(velocities) if isinstance(b, Msg) and b.key == "rolling.centre"]
+    # said by the rolling sentence, or by the centre the CIR section placed (seventeenth round (a))
+    said = [i for i, b in enumerate(velocities) if isinstance(b, Msg) and b.key in ("rolling.centre", "centre.site")]
     assert len(said) == 1
     frame = sol.model.frame
     for i, eq in enumerate(velocities):
@@ -299,10 +300,14 @@ def test_a_rate_nobody_asks_is_not_worked_out():
     velocities = blocks(section(doc, "sec.velocities"))
     for eq in (b for b in velocities if isinstance(b, Equation)):
         assert not turning_bodies(eq) & {"wheel1", "wheel2"}, eq.target.sym
-    assert not [d for d in doc.derived() if d.body in ("wheel1", "wheel2")]
+    # the wheels' rates, which two readers asked for, are read off after the rates' table from
+    # their rolling (seventeenth round (a)): ω = −|v_O| / r, never in a velocity equation
     summary = next(s for s in doc.sections if s.title.key.startswith("sec.rates_summary"))
+    wheel_rates = {d.body: d for d in doc.derived() if d.body in ("wheel1", "wheel2")}
+    assert set(wheel_rates) == {"wheel1", "wheel2"}
+    assert all(any(d is b for b in summary.leaves()) for d in wheel_rates.values())
     table = next(b for b in summary.blocks if hasattr(b, "rows"))
-    assert [r[0].text for r in table.rows] == ["OQ", "OJ"]       # the planes are ground (welded to it)
+    assert [r[0].text for r in table.rows] == ["wheel1", "wheel2", "OQ", "OJ"]   # the planes are ground (welded to it)
     step = next(s for s in steps(doc) if "OQ" in [n.text for n in s.title.args["bodies"].items])
     assert [n.text for n in step.title.args["bodies"].items] == ["OQ"]
     # by hand
@@ -314,6 +319,9 @@ def test_a_rate_nobody_asks_is_not_worked_out():
     i16 = _meet(k1, n1, k2, n2)
     i17 = _meet(i16, (o[0] - i16[0], o[1] - i16[1]), (-5.0, 2.0), (0.0, 1.0))
     w7 = -1.0 * math.dist(i16, o) / math.dist(i17, o)
+    q = (k2[0] + n2[0], k2[1] + n2[1])
+    for wheel, centre in (("wheel1", o), ("wheel2", q)):       # |v| = ω_OQ·|I_OQ C| over r = 1, clockwise
+        assert math.isclose(num(sol, wheel_rates[wheel].value.value), -math.dist(i16, centre), rel_tol=1e-9), wheel
     v_j = (-w7 * (2.0 - i17[1]), 0.0)
     rate = next(d for d in doc.derived() if d.body == "OJ" and d.kind == "omega")
     assert math.isclose(num(sol, rate.value.value), w7, rel_tol=1e-9)

@@ -135,8 +135,8 @@ def test_the_precession_is_tied_to_the_chassis_rate():
     assert sympy.simplify(w - sympy.sqrt(2) * v0 / (2 * big_l)) == 0
     for lang, name in (("eu", "txasisa"), ("ca", "xassís")):
         page = rendered("seed_c5_2_1_tricycle", lang, drawings=False)
-        # the centre in full in the subscript (seventeenth round (a)): v_{FI_{txasisa}}
-        assert re.search(rf"^ψ̇ = ω_{name} = \|v_\{{FI_\{{{name}\}}\}}\| / I_\{{{name}\}}F = √2·v₀/\(2·L\)", page, re.M), lang
+        # the centre in full in the subscript (seventeenth round (a)), the notes' v_{F,I_b} (sixteenth round (g))
+        assert re.search(rf"^ψ̇ = ω_{name} = \|v_\{{F,I_{name}\}}\| / I_\{{{name}\}}F = √2·v₀/\(2·L\)", page, re.M), lang
         assert f"ω_{name} ×" not in page
     fan = rendered("fan_absolute", "eu", drawings=False)
     assert "ω_1 = ω_" not in fan

@@ -91,7 +91,7 @@ def test_articulated_arm_is_written_as_the_notes_set_it():
     md = rendered("seed_c5_2_2_articulated", "en")
     assert "ω_S2 × I_{S2}P" in md and "/ I_{S2}P" in md
     html = rendered("seed_c5_2_2_articulated", "en", "html")
-    assert '<i>I</i><sub>S2</sub><span class="pt">P</span>' in html
+    assert re.search(r'<i>I</i><sub>S2</sub>(<span class="pt">)?P', html)
 
 
 def _equalities(name: str) -> list:

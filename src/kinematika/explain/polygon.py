@@ -64,7 +64,7 @@ def lettering(ctx: Ctx, labels: list[str]) -> dict[str, Any]:
                     if re.fullmatch(r"[a-z][0-9]*", n) and n != "o" and n not in symbols})
     if not plain:
         return {"image": 0, "point": 0}
-    image = "a" if "a" in plain else plain[0]
+    image = "a" if "a" in plain else min(plain, key=lambda n: (len(n), n))     # a bare letter first: p before c1
     return {"image": image, "point": image.upper()}
 
 

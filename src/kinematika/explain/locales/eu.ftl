@@ -396,7 +396,7 @@ fig-level_v = Abiaduren poligonoa, eskalan: o polotik, puntu bakoitzaren abiadur
        *[other] {" "}(urdinez)
     } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
         [0] {""}
-       *[other] {" "}({ $image }, { $point }-rentzat)
+       *[other] {" "}({ $point }-rentzat { $image })
     }{ $between ->
         [0] .
        *[other] ; irudien artean, { $span ->
@@ -413,7 +413,7 @@ fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azel
        *[other] {" "}(urdinez)
     } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
         [0] {""}
-       *[other] {" "}({ $image }, { $point }-rentzat)
+       *[other] {" "}({ $point }-rentzat { $image })
     }{ $between ->
         [0] .
        *[other] ; irudien artean, { $span ->
@@ -430,7 +430,7 @@ fig-level_a_relative = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitz
        *[other] {" "}(urdinez)
     } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
         [0] {""}
-       *[other] {" "}({ $image }, { $point }-rentzat)
+       *[other] {" "}({ $point }-rentzat { $image })
     }{ $between ->
         [0] .
        *[other] ; irudien artean, { $span ->
@@ -447,7 +447,7 @@ fig-level_a_normal = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzar
        *[other] {" "}(urdinez)
     } haren irudian amaitzen da, puntuaren letrarekin{ $image ->
         [0] {""}
-       *[other] {" "}({ $image }, { $point }-rentzat)
+       *[other] {" "}({ $point }-rentzat { $image })
     }{ $between ->
         [0] .
        *[other] ; irudien artean, { $span ->
