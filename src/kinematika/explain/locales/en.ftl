@@ -285,10 +285,16 @@ cond-cylindrical = cylindrical pair: { $b } { COUNT($b) ->
         [many] turn
        *[one] turns
     } about and slides along the axis of { $a }.
-rolling-noslip = { $b } { COUNT($b) ->
-        [many] roll
-       *[one] rolls
-    } on { $a } without slipping: at the contact { $point } both material points have the same velocity.
+rolling-noslip = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] mesh
+               *[one] meshes
+            } with { $a }
+       *[other] { $b } { COUNT($b) ->
+            [many] roll
+           *[one] rolls
+        } on { $a } without slipping
+    }: at the contact { $point } both material points have the same velocity.
 rolling-noslip_edge = { $b } { COUNT($b) ->
         [many] do
        *[one] does
@@ -320,14 +326,26 @@ path-line = { $b } { COUNT($b) ->
        *[one] Its
     } centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
 rolling-equal = No slip at the contact { $point }: { $sym } = { $other }.
-rolling-same = { $b } { COUNT($b) ->
-        [many] roll
-       *[one] rolls
-    } on { $a } without slipping: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
-rolling-centre = { $b } { COUNT($b) ->
-        [many] roll
-       *[one] rolls
-    } without slipping on { $a }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
+rolling-same = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] mesh
+               *[one] meshes
+            } with { $a }
+       *[other] { $b } { COUNT($b) ->
+            [many] roll
+           *[one] rolls
+        } on { $a } without slipping
+    }: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
+rolling-centre = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] mesh
+               *[one] meshes
+            } with { $a }
+       *[other] { $b } { COUNT($b) ->
+            [many] roll
+           *[one] rolls
+        } without slipping on { $a }
+    }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
 dir-guide = guide of { $holder }
 dir-normal = normal
 how-prismatic = (prismatic pair: no relative rotation)
@@ -606,8 +624,8 @@ how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from t
 how-translates_always = (it translates at every instant, as the velocities showed)
 centres-found_above = { $centre } = { $value }: placed above, in the velocity step of { $body }.
 centres-found_above_step = { $centre } = { $value }: placed in Step { $step }, with the velocities of { $body }.
-centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed in «{ sec-centres }»: { $sym } = 0.
-centre-site_s = { $centre }, placed in «{ sec-centres }», has no velocity: { $sym } = 0.
+centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed in “{ sec-centres }”: { $sym } = 0.
+centre-site_s = { $centre }, placed in “{ sec-centres }”, has no velocity: { $sym } = 0.
 sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
 geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
