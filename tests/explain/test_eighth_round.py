@@ -150,7 +150,7 @@ def _all(sec: Section) -> list:
 
 
 ROLLS = {"en": "*Pulley 4* rolls on *strand 5* without slipping",
-         "es": "La *polea 4* gira sin deslizar sobre el *tramo 5*",
+         "es": "La *polea 4* rueda sin deslizar sobre el *tramo 5*",
          "ca": "La *politja 4* rodola sense lliscar sobre el *tram 5*",
          "eu": "*4. polea* *5. kable-zatiaren* gainean errodatzen da irristatu gabe"}
 

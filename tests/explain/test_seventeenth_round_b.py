@@ -22,7 +22,7 @@ ABOVE = {
 }
 # The angular velocities a check compares with, named by their section (no bare "found").
 CHECK = {
-    "en": r"[Ww]ith the angular velocities found(?! in «Velocities»)",
+    "en": r"[Ww]ith the angular velocities found(?! in “Velocities”)",
     "es": r"[Cc]on las velocidades angulares halladas(?! en «Velocidades»)",
     "ca": r"[Aa]mb les velocitats angulars trobades(?! a «Velocitats»)",
     "eu": r"(?<!«Abiadurak» atalean )aurkitutako abiadura angeluarrekin",
@@ -63,7 +63,7 @@ def test_the_readers_cases_by_hand() -> None:
     """C5-1.4's Willis check and polygon caption, read by hand: five velocity steps, the check
     names «Velocities»."""
     page = rendered("seed_c5_1_4_epicyclic", "en", "md", drawings=False)
-    assert "With the angular velocities found in «Velocities», (7·ω − ω) / (−ω − ω) = −3" in page
+    assert "With the angular velocities found in “Velocities”, (7·ω − ω) / (−ω − ω) = −3" in page
     assert "the relative velocities of the equations of Steps 1 to 5, head to tail" in page
     ca = rendered("seed_c5_1_4_epicyclic", "ca", "md", drawings=False)
     assert "de les equacions dels passos 1 a 5" in ca

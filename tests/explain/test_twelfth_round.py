@@ -68,7 +68,7 @@ def test_the_sun_wheels_symbol_by_hand():
 def test_spanish_joints_are_pairs_and_english_vehicle_centres_instant():
     """001's crank O1A is pinned to the frame at O1: "par de rotación (R)" as the slides say."""
     es = rendered("seed_001_r_pairs", "es", "md", drawings=False)
-    assert "| O1 | par de rotación (R), entre el *bastidor* y la *manivela O1A* |" in es
+    assert "| O1 | par de rotación (R) entre el *bastidor* y la *manivela O1A* |" in es
     for name in ("seed_c5_2_1_tricycle", "seed_c5_2_2_articulated"):
         en = rendered(name, "en", "md", drawings=False)
         assert "The centre of the" not in en

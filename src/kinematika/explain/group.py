@@ -39,7 +39,7 @@ from .order import jointed
 from .contacts import geometric_blocks
 from .drives import drive_blocks, pair_blocks
 from .given import whole_along
-from .kinds import (by_centre_path, roller, crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls,
+from .kinds import (by_centre_path, meshes, roller, crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls,
                     same_rate, slider, welds)
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms
 
@@ -957,7 +957,7 @@ class Writer:
             out = [b for b in out if not (isinstance(b, Msg) and b.key == "rolling.noslip"
                                           and b.args["joint"].text == crossing.id)]
             rolling, on = roller(ctx.model, crossing)
-            out.append(msg("rolling.same", joint=joint_name(crossing.id), a=body_name(on),
+            out.append(msg("rolling.same", joint=joint_name(crossing.id), a=body_name(on), gear=meshes(crossing),
                            b=body_name(rolling), point=point_name(p.end.point), sym=target.sym,
                            other=sides[0][0].sym))
             return out
@@ -1180,7 +1180,7 @@ class Writer:
         if rolls(j):
             key = "rolling.noslip" if lv == "v" else "rolling.kept"
             rolling, on = roller(self.ctx.model, j)
-            return [msg(key, joint=joint_name(j.id), a=body_name(on), b=body_name(rolling),
+            return [msg(key, joint=joint_name(j.id), a=body_name(on), b=body_name(rolling), gear=meshes(j),
                         point=point_name(self.ctx.contact(j)))]
         if knife_edge(j):
             return [msg("group.wheel_v" if lv == "v" else "group.wheel_a", joint=joint_name(j.id),
@@ -1341,7 +1341,7 @@ def still_contact(ctx: Ctx, j: Joint, fixed: str, body: str):
     name = ctx.contact(j)
     if placed_at_contact(ctx, body, j.id):      # the centres section placed it: refer to it
         return centre_site(ctx, name, body)
-    return msg("rolling.centre", joint=joint_name(j.id), a=body_name(fixed), b=body_name(body), point=point_name(name),
+    return msg("rolling.centre", joint=joint_name(j.id), a=body_name(fixed), b=body_name(body), point=point_name(name), gear=meshes(j),
                sym=Sym("v", ctx.point_label(name, body)))
 
 

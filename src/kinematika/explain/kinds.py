@@ -109,3 +109,10 @@ def line_kind(j: Any) -> str:
     wheel's axle, the common normal at a contact that slides (a cam, a curved slot), the
     normal to a straight slot at its pin."""
     return j.kind.centre_line
+
+
+def meshes(j: Any) -> int:
+    """1 for a gear pair, else 0 (a number: the renderer hands Fluent numbers as they are, so
+    a message selects on it): the catalogues say a gear "meshes with" its mate (the gear
+    joint's own word), where a wheel "rolls without slipping" on a profile."""
+    return int(j.kind.name == "gear")

@@ -18,7 +18,7 @@ from .shared import shared_rates
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
 from .given import sign_of, heading, speeding, whole_along
-from .kinds import kind_key, pin_only, roller, rolls, turns
+from .kinds import kind_key, meshes, pin_only, roller, rolls, turns
 from .order import Step, merge_vehicles
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
@@ -284,7 +284,8 @@ class PlanarSteps:
                           unknown=True, kind="point")
             eq = Equation(target, sides, "v", ctx.ref(name, j.b), position=contact.point)
             rolling, on = roller(ctx.model, j)
-            return [msg("rolling.noslip", joint=joint(j.id), a=body(on), b=body(rolling), point=point(name)), eq]
+            return [msg("rolling.noslip", joint=joint(j.id), a=body(on), b=body(rolling), point=point(name),
+                        gear=meshes(j)), eq]
         rel = contact_term(ctx, name, j.b, j.a)
         target = Term(Sym("a", f"{name}∈{j.b}"), ctx.clean(ctx.acc(j.b, name), "accel"),
                       Ann("?"), Ann("?"), unknown=True, kind="point")

@@ -360,10 +360,16 @@ cond-cylindrical = enllaç cilíndric: { $b } { COUNT($b) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } i hi llisca.
-rolling-noslip = { $b } { COUNT($b) ->
-        [many] rodolen
-       *[one] rodola
-    } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
+rolling-noslip = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] engranen
+               *[one] engrana
+            } amb { $a }
+       *[other] { $b } { COUNT($b) ->
+            [many] rodolen
+           *[one] rodola
+        } sense lliscar sobre { $a }
+    }: al contacte { $point } els dos punts materials tenen la mateixa velocitat.
 rolling-noslip_edge = { $b } no { COUNT($b) ->
         [many] llisquen
        *[one] llisca
@@ -404,14 +410,26 @@ path-line = { $b } { COUNT($b) ->
        *[one] rodola
     } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu una recta, sense acceleració normal; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), { $ac } = { $al } × { $arm }.
 rolling-equal = Sense lliscament al contacte { $point }: { $sym } = { $other }.
-rolling-same = { $b } { COUNT($b) ->
-        [many] rodolen
-       *[one] rodola
-    } sense lliscar sobre { $a }: al contacte { $point } els dos punts materials tenen la mateixa velocitat, { $sym } = { $other }.
-rolling-centre = { $b } { COUNT($b) ->
-        [many] rodolen
-       *[one] rodola
-    } sense lliscar sobre { $a }, que no es mou: el punt { $point } { ELISION($b) ->
+rolling-same = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] engranen
+               *[one] engrana
+            } amb { $a }
+       *[other] { $b } { COUNT($b) ->
+            [many] rodolen
+           *[one] rodola
+        } sense lliscar sobre { $a }
+    }: al contacte { $point } els dos punts materials tenen la mateixa velocitat, { $sym } = { $other }.
+rolling-centre = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] engranen
+               *[one] engrana
+            } amb { $a }
+       *[other] { $b } { COUNT($b) ->
+            [many] rodolen
+           *[one] rodola
+        } sense lliscar sobre { $a }
+    }, que no es mou: el punt { $point } { ELISION($b) ->
         [vowel] d’{ $b }
        *[other] de { $b }
     } al contacte no té velocitat, { $sym } = 0; per tant, és el CIR { ELISION($b) ->
@@ -968,12 +986,12 @@ what-centre = centre { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }
-what-joint = { $kind }, entre { $a } i { $b }
+what-joint = { $kind } entre { $a } i { $b }
 what-touching = el punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     } on toca { $other }
-what-contact = punt de contacte ({ $kind }), entre { $a } i { $b }
+what-contact = punt de contacte ({ $kind }) entre { $a } i { $b }
 what-body = un punt { $bodies }
 what-of = { ELISION($name) ->
         [vowel] d’{ $name }
@@ -984,7 +1002,7 @@ sec-checks = Comprovacions
 check-willis = Fórmula de Willis: vista des { ELISION($carrier) ->
         [vowel] d’{ $carrier }
        *[other] de { $carrier }
-    }, la transmissió és ordinària ({ $carrier } porta l’eix de { $planet }, que engrana amb { $s1 } i amb { $s2 }, { $fixed ->
+    }, el tren és ordinari ({ $carrier } porta l’eix de { $planet }, que engrana amb { $s1 } i amb { $s2 }, { $fixed ->
         [0] que giren al voltant de l’eix fix que passa per { $axis }
        *[other] l’eix de les quals és l’eix fix que passa per { $axis }
     }), de manera que { $formula } = { $radii } = { $train }{ $r1 ->

@@ -222,7 +222,7 @@ a-intro = With the velocities known, every normal term and every Coriolis term i
 a-intro_relative = With the velocities known, every normal term is known; the tangential and relative terms are the unknowns.
 a-intro_normal = With the velocities known, the normal terms are known; the tangential terms are the unknowns.
 eq-shared_rate = The terms { $terms } share one unknown, { $rate }: their magnitudes are { $mags }.
-a-named = Where a formula written out would be past reading, the angular velocities found in «{ sec-velocities }» are written by name: { $name } for the ω of { $body }, and so for every body.
+a-named = Where a formula written out would be past reading, the angular velocities found in “{ sec-velocities }” are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
 driver-omega_sense = Given: { $sym } = { $value }, { $faster ->
         [1] in the sense of { $w }: { $body } { COUNT($body) ->
@@ -282,10 +282,16 @@ cond-cylindrical = cylindrical pair: { $b } { COUNT($b) ->
         [many] turn
        *[one] turns
     } about and slides along the axis of { $a }.
-rolling-noslip = { $b } { COUNT($b) ->
-        [many] roll
-       *[one] rolls
-    } on { $a } without slipping: at the contact { $point } both material points have the same velocity.
+rolling-noslip = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] mesh
+               *[one] meshes
+            } with { $a }
+       *[other] { $b } { COUNT($b) ->
+            [many] roll
+           *[one] rolls
+        } on { $a } without slipping
+    }: at the contact { $point } both material points have the same velocity.
 rolling-noslip_edge = { $b } { COUNT($b) ->
         [many] do
        *[one] does
@@ -317,14 +323,26 @@ path-line = { $b } { COUNT($b) ->
        *[one] Its
     } centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
 rolling-equal = No slip at the contact { $point }: { $sym } = { $other }.
-rolling-same = { $b } { COUNT($b) ->
-        [many] roll
-       *[one] rolls
-    } on { $a } without slipping: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
-rolling-centre = { $b } { COUNT($b) ->
-        [many] roll
-       *[one] rolls
-    } without slipping on { $a }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
+rolling-same = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] mesh
+               *[one] meshes
+            } with { $a }
+       *[other] { $b } { COUNT($b) ->
+            [many] roll
+           *[one] rolls
+        } on { $a } without slipping
+    }: at the contact { $point } both material points have the same velocity, { $sym } = { $other }.
+rolling-centre = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] mesh
+               *[one] meshes
+            } with { $a }
+       *[other] { $b } { COUNT($b) ->
+            [many] roll
+           *[one] rolls
+        } without slipping on { $a }
+    }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
 dir-guide = guide of { $holder }
 dir-normal = normal
 how-prismatic = (prismatic pair: no relative rotation)
@@ -345,7 +363,7 @@ centre-joint-weld = the two bodies are one rigid body:
 centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines meet
 centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
 centre-lines = it lies on { $first } and on { $second }; these lines meet
-centre-omega = with the velocities found in «{ sec-velocities }», the angular velocity relative to { $frame } { COUNT($frame) ->
+centre-omega = with the velocities found in “{ sec-velocities }”, the angular velocity relative to { $frame } { COUNT($frame) ->
         [many] are
        *[one] is
     } zero: the relative motion is a translation and the centre is
@@ -406,7 +424,7 @@ composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($b
     } not turn relative to { $frame }, so all { COUNT($body) ->
         [many] their
        *[one] its
-    } points have the relative motion found in «{ sec-velocities }»: { $sym } = { $value }.
+    } points have the relative motion found in “{ sec-velocities }”: { $sym } = { $value }.
 composition-slide_seen_step = { $point } slides along its guide; { $body } { COUNT($body) ->
         [many] do
        *[one] does
@@ -601,7 +619,7 @@ centre-line-slot = the normal at { $point } to the slot (relative to the slotted
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
 centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
-centre-rate = from { $w } (found in «{ sec-velocities }» through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
+centre-rate = from { $w } (found in “{ sec-velocities }” through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
 centre-rate_step = from { $w } (found in Step { $step } through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = above { $q }
@@ -612,7 +630,7 @@ side-above_left = above and to the left of { $q }
 side-above_right = above and to the right of { $q }
 side-below_left = below and to the left of { $q }
 side-below_right = below and to the right of { $q }
-centre-check = Check with the velocities found in «{ sec-velocities }»: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, the same point: { $centre } is { $where }
+centre-check = Check with the velocities found in “{ sec-velocities }”: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
 how-constant_rate = ({ $sym } = { $value } is constant: { $line } keeps its length, and its rate is set by the radii and by { $rates }, which is constant)
@@ -629,17 +647,17 @@ how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have 
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the flat ground, so they move on parallel straight lines at every instant: the body translates without turning)
 how-translates_always = (it translates at every instant, as the velocities showed)
-centres-found_above = { $centre } = { $value }: placed in «{ sec-velocities }», in the velocity step of { $body }.
+centres-found_above = { $centre } = { $value }: placed in “{ sec-velocities }”, in the velocity step of { $body }.
 centres-found_above_step = { $centre }: placed in Step { $step }, with the velocities of { $body }.
-centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed in «{ sec-centres }»: { $sym } = 0.
-centre-site_s = { $centre }, placed in «{ sec-centres }», has no velocity: { $sym } = 0.
+centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed in “{ sec-centres }”: { $sym } = 0.
+centre-site_s = { $centre }, placed in “{ sec-centres }”, has no velocity: { $sym } = 0.
 sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
 geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
 geom-bar_told = { $geom }, the geometric contact point, stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
 geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
-contact-above = { $sym } = { $value }, worked out in «{ sec-accelerations }» for the acceleration of the contact.
+contact-above = { $sym } = { $value }, worked out in “{ sec-accelerations }” for the acceleration of the contact.
 contact-written = { $sym } = { $value }, found in Step { $step }.
 contact-fixed = { $sym }: { $point } as a point of { $body }{ FIXED($body) ->
         [yes] {""}
@@ -693,8 +711,8 @@ check-willis = Willis' formula: seen from { $carrier }, the train is an ordinary
     }), so { $formula } = { $radii } = { $train }{ $r1 ->
         [0] {""}
        *[other] , with { $r1 } and { $r2 }
-    }. With the angular velocities found in «{ sec-velocities }», { $values } = { $ratio }: they agree.
-check-belt = Seen from { $holder }, which carries both axles, { $line } slips on neither { $a } nor { $b }: { $equation }, so { $ratio }; with the angular velocities found in «{ sec-velocities }», { $values }: they agree.
+    }. With the angular velocities found in “{ sec-velocities }”, { $values } = { $ratio }: they agree.
+check-belt = Seen from { $holder }, which carries both axles, { $line } slips on neither { $a } nor { $b }: { $equation }, so { $ratio }; with the angular velocities found in “{ sec-velocities }”, { $values }: they agree.
 how-translates = (it translates relative to { $body })
 pair-relation_v = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation }{ $radii ->
         [0] {""}
@@ -712,7 +730,7 @@ drive-relation = Seen from { $holder }, which carries both axles, the axles are 
         [0] {""}
        *[other] {" "}(with { $radii })
     }:
-check-train = The train's ratio is the product of its stages': { $ratio }; with the angular velocities found in «{ sec-velocities }», the ratio is { $value }.
+check-train = The train's ratio is the product of its stages': { $ratio }; with the angular velocities found in “{ sec-velocities }”, the ratio is { $value }.
 check-quick = Time ratio of the quick return: { $lever } is at an end of its swing when the slot is tangent to the circle of { $pin } (the crank { $o2 }{ $pin } perpendicular to { $o4 }{ $pin }), where cos θ = { $o2 }{ $pin } / { $o2 }{ $o4 } = { $r } / { $d }, θ = { $theta }. Turning steadily, { $crank } sweeps 360° − 2θ = { $slow } in one stroke and 2θ = { $fast } in the other: time ratio { $ratio }.
 driver-slide = Given: the sliding velocity in the prismatic pair { $joint } is { $value }.
 driver-slide_accel = Given: the sliding acceleration in the prismatic pair { $joint } is { $value }.

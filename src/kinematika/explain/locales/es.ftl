@@ -258,12 +258,22 @@ cond-cylindrical = par cilíndrico: { $b } { COUNT($b) ->
         [many] giran
        *[one] gira
     } alrededor del eje de { $a } y se desliza a lo largo de él.
-# "rueda sin deslizar" doubles the noun when the body is a wheel (La rueda rueda): Spanish says
-# it gira sin deslizar sobre … (round 15a)
-rolling-noslip = { $b } { COUNT($b) ->
-        [many] giran
-       *[one] gira
-    } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
+# a body "rueda sin deslizar" (the textbook's verb), but a wheel "gira sin deslizar": "la rueda
+# rueda" doubles the noun (round 15a); NOUN is the name's first word after its article (round 18b)
+rolling-noslip = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] engranan
+               *[one] engrana
+            } con { $a }
+       *[other] { $b } { NOUN($b) ->
+            [rueda] gira
+            [ruedas] giran
+           *[other] { COUNT($b) ->
+                [many] ruedan
+               *[one] rueda
+            }
+        } sin deslizar sobre { $a }
+    }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
 rolling-noslip_edge = { $b } no { COUNT($b) ->
         [many] deslizan
        *[one] desliza
@@ -272,28 +282,60 @@ rolling-same_edge = { $b } no { COUNT($b) ->
         [many] deslizan
        *[one] desliza
     } sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
-rolling-glide = { $b } { COUNT($b) ->
-        [many] giran
-       *[one] gira
+rolling-glide = { $b } { NOUN($b) ->
+        [rueda] gira
+        [ruedas] giran
+       *[other] { COUNT($b) ->
+            [many] ruedan
+           *[one] rueda
+        }
     } sin deslizar sobre el borde de { $a }. Visto desde { $a }, su centro { $centre } mantiene la distancia al borde: se mueve según una recta paralela a la tangente en { $point }. Con ejes en { $centre } que giran con { $a }, el movimiento de { $centre } es el de arrastre (el del punto de { $a } que coincide con él) más el relativo, a lo largo de esa recta (y, en aceleraciones, el término de Coriolis).
 rolling-kept = el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
-path-circle = { $b } { COUNT($b) ->
-        [many] giran
-       *[one] gira
+path-circle = { $b } { NOUN($b) ->
+        [rueda] gira
+        [ruedas] giran
+       *[other] { COUNT($b) ->
+            [many] ruedan
+           *[one] rueda
+        }
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vs }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
-path-line = { $b } { COUNT($b) ->
-        [many] giran
-       *[one] gira
+path-line = { $b } { NOUN($b) ->
+        [rueda] gira
+        [ruedas] giran
+       *[other] { COUNT($b) ->
+            [many] ruedan
+           *[one] rueda
+        }
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
 rolling-equal = Sin deslizamiento en el contacto { $point }: { $sym } = { $other }.
-rolling-same = { $b } { COUNT($b) ->
-        [many] giran
-       *[one] gira
-    } sin deslizar sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
-rolling-centre = { $b } { COUNT($b) ->
-        [many] giran
-       *[one] gira
-    } sin deslizar sobre { $a }, que no se mueve: el punto { $point } de { $b } en el contacto no tiene velocidad, { $sym } = 0, así que es el CIR de { $b }.
+rolling-same = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] engranan
+               *[one] engrana
+            } con { $a }
+       *[other] { $b } { NOUN($b) ->
+            [rueda] gira
+            [ruedas] giran
+           *[other] { COUNT($b) ->
+                [many] ruedan
+               *[one] rueda
+            }
+        } sin deslizar sobre { $a }
+    }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
+rolling-centre = { $gear ->
+        [1] { $b } { COUNT($b) ->
+                [many] engranan
+               *[one] engrana
+            } con { $a }
+       *[other] { $b } { NOUN($b) ->
+            [rueda] gira
+            [ruedas] giran
+           *[other] { COUNT($b) ->
+                [many] ruedan
+               *[one] rueda
+            }
+        } sin deslizar sobre { $a }
+    }, que no se mueve: el punto { $point } de { $b } en el contacto no tiene velocidad, { $sym } = 0, así que es el CIR de { $b }.
 dir-guide = guía de { $holder }
 dir-normal = normal
 how-prismatic = (par prismático: sin rotación relativa)
@@ -328,9 +370,13 @@ composition-intro = El movimiento de un punto es el de arrastre (el del punto de
 composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
 composition-drag = Arrastre: el movimiento del punto de la referencia móvil que coincide con él:
 composition-relative = Relativo: { $sym }, el movimiento visto desde la referencia móvil, { $frame }:
-composition-rolls = { $body } { COUNT($body) ->
-        [many] giran
-       *[one] gira
+composition-rolls = { $body } { NOUN($body) ->
+        [rueda] gira
+        [ruedas] giran
+       *[other] { COUNT($body) ->
+            [many] ruedan
+           *[one] rueda
+        }
     } sin deslizar sobre { $frame } en { $point }: visto desde { $frame }, { $point } es el CIR de { $body }, { $sym } = 0, y todos sus puntos giran alrededor de él.
 sec-curvature = Curvatura de las trayectorias
 curvature-intro = La aceleración se descompone en una parte tangencial, según la velocidad, y una normal, perpendicular a ella; el radio de curvatura es { $rho }.
@@ -604,14 +650,14 @@ fig-step_a = Polígono de aceleraciones de este paso, a escala: desde el polo o,
 col-point = punto
 col-what = qué es
 what-centre = centro de { $body }
-what-joint = { $kind }, entre { $a } y { $b }
+what-joint = { $kind } entre { $a } y { $b }
 what-touching = el punto de { $body } donde toca { $other }
-what-contact = punto de contacto ({ $kind }), entre { $a } y { $b }
+what-contact = punto de contacto ({ $kind }) entre { $a } y { $b }
 what-body = un punto { $bodies }
 what-of = de { $name }
 note-text = Nota: { $text }
 sec-checks = Comprobaciones
-check-willis = Fórmula de Willis: vista desde { $carrier }, la transmisión es ordinaria ({ $planet }, cuyo eje lleva { $carrier }, engrana con { $s1 } y { $s2 }, { $fixed ->
+check-willis = Fórmula de Willis: vista desde { $carrier }, el tren es ordinario ({ $planet }, cuyo eje lleva { $carrier }, engrana con { $s1 } y { $s2 }, { $fixed ->
         [0] que giran alrededor del eje fijo que pasa por { $axis }
        *[other] cuyo eje es el eje fijo por { $axis }
     }), de modo que { $formula } = { $radii } = { $train }{ $r1 ->

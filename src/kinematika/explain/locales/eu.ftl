@@ -243,7 +243,10 @@ cond-wheel = gurpila { $point } puntuan: ez dago alboko abiadurarik { $a } solid
 cond-weld = { $a } eta { $b } solido bakar bat bezala mugitzen dira.
 cond-spherical = lotura esferikoa { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
 cond-cylindrical = lotura zilindrikoa: { $b } solidoa { $a } solidoaren ardatzaren inguruan biratzen eta haren luzeran irristatzen da.
-rolling-noslip = { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute.
+rolling-noslip = { $gear ->
+        [1] { $b } solidoak { $a } solidoarekin engranatzen du
+       *[other] { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe
+    }: { $point } kontaktuan bi puntu materialek abiadura bera dute.
 rolling-noslip_edge = { $b } solidoa ez da irristatzen { $a } solidoaren gainean: { $point } kontaktuan bi puntu materialek abiadura bera dute.
 rolling-same_edge = { $b } solidoa ez da irristatzen { $a } solidoaren gainean: { $point } kontaktuan bi puntu materialek abiadura bera dute, { $sym } = { $other }.
 rolling-glide = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren ertzaren gainean. { $a } solidotik ikusita, haren { $centre } zentroak ertzarekiko distantzia mantentzen du: { $point } puntuko ukitzailearen zuzen paralelo batean zehar mugitzen da. { $a } solidoarekin batera biratzen duten ardatzak { $b } solidoaren { $centre } zentroan definituz, { $centre } puntuaren mugimendua arrastre-mugimendua ({ $a } solidoaren bertako puntuarena) gehi zuzen horretako mugimendu erlatiboa da (eta, azelerazioetan, Coriolisen terminoa).
@@ -251,8 +254,14 @@ rolling-kept = kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } sol
 path-circle = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: { $o } zentroko eta { $radius } erradioko zirkunferentzia deskribatzen du; beraz, { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), haren osagai tangentziala { $al } × { $arm } da.
 path-line = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: zuzen bat deskribatzen du, azelerazio normalik gabe; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), { $ac } = { $al } × { $arm }.
 rolling-equal = Irristadurarik ez { $point } kontaktuan: { $sym } = { $other }.
-rolling-same = { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe: { $point } kontaktuan bi puntu materialek abiadura bera dute, { $sym } = { $other }.
-rolling-centre = { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe, eta { $a } solidoa ez da mugitzen: kontaktuko { $point } puntuak, { $b } solidoarenak, ez du abiadurarik, { $sym } = 0; beraz, { $b } solidoaren biraketa-zentro instantaneoa da.
+rolling-same = { $gear ->
+        [1] { $b } solidoak { $a } solidoarekin engranatzen du
+       *[other] { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe
+    }: { $point } kontaktuan bi puntu materialek abiadura bera dute, { $sym } = { $other }.
+rolling-centre = { $gear ->
+        [1] { $b } solidoak { $a } solidoarekin engranatzen du
+       *[other] { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe
+    }, eta { $a } solidoa ez da mugitzen: kontaktuko { $point } puntuak, { $b } solidoarenak, ez du abiadurarik, { $sym } = 0; beraz, { $b } solidoaren biraketa-zentro instantaneoa da.
 dir-guide = { $holder } solidoaren gida
 dir-normal = normala
 how-prismatic = (lotura prismatikoa: biraketa erlatiborik gabe)
@@ -561,7 +570,7 @@ what-body = { $bodies } puntua
 what-of = { $name } solidoaren
 note-text = Oharra: { $text }
 sec-checks = Egiaztapenak
-check-willis = Willisen formula: { $carrier } solidotik ikusita, transmisioa arrunta da ({ $planet } solidoaren ardatza { $carrier } solidoak darama; { $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta { $fixed ->
+check-willis = Willisen formula: { $carrier } solidotik ikusita, trena arrunta da ({ $planet } solidoaren ardatza { $carrier } solidoak darama; { $planet } solidoak { $s1 } eta { $s2 } solidoekin engranatzen du, eta { $fixed ->
         [0] horiek { $axis } puntutik pasatzen den ardatz finkoaren inguruan biratzen dira
        *[other] horien ardatza { $axis } puntutik pasatzen den ardatz finkoa da
     }); beraz, { $formula } = { $radii } = { $train }{ $r1 ->
