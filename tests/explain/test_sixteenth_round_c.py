@@ -79,15 +79,25 @@ SHARED = {
     ("seed_c5_1_2_bar_on_inclined_wheels", "ca"): "un punt del *terra*, del *pla esquerre* i del *pla dret*",
     ("seed_c5_1_2_bar_on_inclined_wheels", "es"): "un punto del *suelo*, del *plano izquierdo* y del *plano derecho*",
     ("seed_c5_1_2_bar_on_inclined_wheels", "eu"): "*lurraren*, *ezkerreko planoaren* eta *eskuineko planoaren* puntua",
-    ("seed_c5_1_5_pulley_block", "ca"): "un punt del *sostre* i del *tram 1*",
-    ("seed_c5_1_5_pulley_block", "es"): "un punto del *techo* y del *tramo 1*",
-    ("seed_c5_1_5_pulley_block", "eu"): "*sabaiaren* eta *1. kable-zatiaren* puntua",
 }
 
 
 @pytest.mark.parametrize("key", sorted(SHARED))
-def test_a_shared_point_names_each_body_with_its_preposition(key):
-    assert SHARED[key] in page(*key)
+def test_a_shared_point_names_each_body_with_its_preposition(key, tmp_path):
+    """The list of a point's bodies, each with its preposition: the words for a point the model
+    does not describe. Since the eighteenth round (c) the seeds describe their shared points
+    (K0 "el vèrtex on es tallen els dos plans"), so C5-1.2 is read with K0's words taken out."""
+    import kinematika
+    from kinematika.explain import build, render
+
+    name, lang = key
+    text = (EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8")
+    text = re.sub(r"^    points: \{K0: [^}]*\}\n", "", text, flags=re.M)
+    assert "K0: " not in text.split("names:")[1]
+    model = tmp_path / f"{name}.yaml"
+    model.write_text(text, encoding="utf-8")
+    page_ = render(build(kinematika.solve(model)), lang, "md", drawings=False)
+    assert SHARED[key] in page_
 
 
 @pytest.mark.parametrize("lang", ("ca", "es"))

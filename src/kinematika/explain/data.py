@@ -219,11 +219,24 @@ def _touching(ctx: Ctx, name: str, holders: list[str]) -> Optional[Msg]:
         contact = ctx.sol.geometry(j.id).contact
         if contact is None or max(abs(a - b) for a, b in zip(ctx.num(contact.point), where)) > tol:
             continue
-        for own, other in ((j.a, j.b), (j.b, j.a)):
+        pairs = sorted(((j.a, j.b), (j.b, j.a)), key=lambda pair: -_contacts_of(ctx, pair[0]))
+        for own, other in pairs:
             if own in holders or any(ctx.fixed(h) and ctx.fixed(own) for h in holders):
                 return msg("what.touching", body=Name(own, "body"), other=Name(other, "body"),
                            joint=Name(j.id, "joint"))
     return None
+
+
+def _contacts_of(ctx: Ctx, body: str) -> int:
+    """How many touching joints `body` is in. A contact point both bodies hold is named on the
+    one that touches more (the belt or strand that runs from pulley to pulley), so that a page's
+    contacts are all points of the same body: C5-1.6's T1 "the point of the *belt* where it
+    touches the *fixed pulley*" beside T2 "the point of the *belt* where it touches the *moving
+    pulley*", never "of the *moving pulley* where it touches the *belt*" (issue 30, eighteenth
+    round (c)); a tie keeps the joint's order (sorted is stable)."""
+    from .kinds import welds
+
+    return sum(1 for j in ctx.model.joints if j.kind.touches and not welds(j) and body in (j.a, j.b))
 
 
 def contact_rows(ctx: Ctx, doc: Any) -> dict[str, str]:
