@@ -47,15 +47,16 @@ def test_spanish_rolling_verb(name):
 
 
 def test_a_gear_meshes():
-    for lang, word in {"en": "meshes with", "es": "engrana con", "ca": "engrana amb",
-                       "eu": "engranatzen du"}.items():
-        text = page("seed_c5_e2_gear_change", lang).replace("*", "")
-        assert f"satélite superior {word}" in text or word in text, lang
+    """C5-E.2's planets mesh with the fixed central wheel: never "rolls without slipping on" it.
+    Since the seventeenth round (a) the step refers to the centre the CIR section placed at the
+    contact of the pitch circles, so the gear's own sentence ("engrana con") is said where a
+    gear contact is not a centre; here the page says the pitch circles."""
     es = page("seed_c5_e2_gear_change", "es").replace("*", "")
     assert "sin deslizar sobre la rueda central fija" not in es
-    assert "El satélite superior engrana con la rueda central fija, que no se mueve" in es
+    assert "I_{satélite superior}: el contacto J de las circunferencias primitivas" in es
     en = page("seed_c5_e2_gear_change", "en")
     assert not re.search(r"rolls?( without slipping)? on the \*?fixed", en)
+    assert "I_{upper planet}: the contact J of the pitch circles" in en
 
 
 @pytest.mark.parametrize("name", ["seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"])

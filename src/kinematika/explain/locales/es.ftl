@@ -598,7 +598,10 @@ centre-check = Comprobación con las velocidades halladas en «{ sec-velocities 
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
 how-constant_rate = ({ $sym } = { $value } es constante: { $line } conserva su longitud, y su velocidad angular la fijan los radios y { $rates }, que es constante)
-idle-rolling = { $body } rueda sin deslizar sobre { $fixed }: su punto { $point } del contacto es su CIR, de modo que:
+idle-rolling = { $body } { NOUN($body) ->
+        [rueda] gira
+       *[other] rueda
+    } sin deslizar sobre { $fixed }: su punto { $point } del contacto es su CIR, de modo que:
 idle-symmetry = { $body } tiene la misma disposición que { $like } (el mismo radio, los mismos enlaces con los mismos sólidos): por simetría gira igual:
 idle-unused = { $bodies } no { $count ->
         [one] interviene
