@@ -1,47 +1,21 @@
 """Issue 30, sixteenth round (d): the figures of the explanations.
 
-- A fixed guide through a wheel (001's slider carrying the roller on its axle) is the line the
-  block runs on, hatched only outside the wheel: no hatched ground under the roller.
+- A fixed guide through a wheel (001's slider carrying the roller on its axle): now a slot, see
+  test_eighteenth_round_d.py.
 - No two labels of a figure come within `GAP` of each other, and none covers an arrow's tip:
   every label layout of every seed's figures (the mechanism's, the polygons') is recorded
   while the page is written, and its boxes (display units) are checked pairwise here.
 """
 from __future__ import annotations
 
-import numpy as np
 import pytest
 
 import kinematika
 from kinematika.draw import labels
-from kinematika.draw.build import build_scene
-from kinematika.draw.geometry import Box
-from kinematika.draw.joints import scene_symbols
-from kinematika.draw.options import DrawOptions
 from kinematika.explain import build, render
 from tests.explain.helpers import EXAMPLES, SEEDS
 
 NOTES_SEEDS = [s for s in SEEDS if s.startswith(("seed_001_", "seed_c5_"))]
-
-
-def test_the_rollers_guide_runs_under_the_block_unhatched_inside_the_roller():
-    """001's rolling pair: A = (ρ/sin β, 0) = (0.2, 0), ρ = 0.1. The guide is the horizontal
-    line under the slider's block (y = −h/2, h = 0.06·size), crossing the roller; its hatching
-    lies only where |x − 0.2| > ρ (outside the roller), never under the roller's rim."""
-    sol = kinematika.solve(EXAMPLES / "seed_001_rolling_pair.yaml")
-    scene = build_scene(sol.inst, sol, DrawOptions())
-    view = Box(*scene.box).grow(0.6 * scene.size)
-    marks = scene_symbols(scene, view)
-    line = [m for m in marks if m.gid == "ground:guide"]
-    assert len(line) == 1
-    ys = np.asarray(line[0].points, float)[:, 1]
-    assert np.allclose(ys, -0.03 * scene.size, atol=1e-9), ys
-    xs = np.asarray(line[0].points, float)[:, 0]
-    assert xs.min() < 0.1 and xs.max() > 0.3                       # through the roller
-    hatch = [m for m in marks if m.gid == "ground:guide-hatch"]
-    assert hatch
-    for m in hatch:
-        x = np.asarray(m.points, float)[:, 0]
-        assert np.all(np.abs(x - 0.2) >= 0.1 - 1e-9), x          # outside the roller only
 
 
 @pytest.fixture(scope="module")

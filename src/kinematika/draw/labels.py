@@ -10,7 +10,9 @@ its anchor (`DIRECTIONS` directions at the `DISTANCES`) and takes the cheapest: 
 a placed label (or coming within `GAP` of it) or covering an arrow's tip (`LabelBoard.tip`)
 costs most, then leaving the axes, then covering what is drawn (arrows and
 marks weigh more than bars), then the distance from the anchor and, for a vector, not lying
-beyond its tip. Then, a few times over, every label is taken out and put back at its best
+beyond its tip. A label of a long arrow (`Label.along`) may sit beside any of a few points
+of its arrow (`SLIDE`), not only beside its middle: in a polygon where several arrows cross
+or meet, the middle is often where the others are. Then, a few times over, every label is taken out and put back at its best
 place given all the others, until none moves. A label placed far from its anchor gets a
 thin leader line, which later labels keep clear of.
 """
@@ -36,10 +38,13 @@ SAMPLE = 4.0             # points between samples of drawn lines
 PASSES = 4               # refinement passes at most
 GAP = 3.0                # points kept between two labels' boxes (beyond PAD): no two touch
 TIP = 7.0                # points around an arrow's tip that no label covers (its head)
+SLIDE = (0.5, 0.35, 0.65, 0.22, 0.78)   # where along its arrow an arrow's label may sit
+SLIDE_END = 18.0         # points: a slid anchor stays this far from the arrow's ends
+LEADER_CLEAR = 6.0       # points of a leader next to its anchor (on its own arrow) not weighed
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
-DISTANCE, PREFER = 0.15, 5.0
+DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
 
 
 @dataclass
@@ -57,6 +62,7 @@ class Label:
     size: float = LABEL_SIZE
     weight: str = "normal"
     style: str = "normal"
+    along: Optional[np.ndarray] = None    # an arrow's (start, end), data: the anchor may slide on it
 
     @property
     def extent(self) -> tuple[float, float]:
@@ -66,12 +72,20 @@ class Label:
 
 @dataclass
 class Placement:
-    """Where a label went: its box (display pixels) and its offset from the anchor (points)."""
+    """Where a label went: its box (display pixels), its offset from the anchor (points), and
+    the anchor it is placed by (data coordinates: the label's own, or a point of its arrow
+    when it slid, `Label.along`), where its leader starts."""
 
     label: Label
     box: np.ndarray                    # x0, y0, x1, y1
     offset: tuple[float, float]
     leader: bool
+    at: Optional[np.ndarray] = None    # data coordinates of the anchor used (None: label.anchor)
+
+    @property
+    def anchor(self) -> np.ndarray:
+        """The anchor the label is placed by, in data coordinates."""
+        return self.label.anchor if self.at is None else self.at
 
 
 @dataclass
@@ -180,38 +194,65 @@ class Layout:
             return []
         anchors = self.ax.transData.transform(np.array([lb.anchor for lb in self.labels]))
         sizes = np.array([lb.extent for lb in self.labels]) * self.px + 2 * PAD * self.px
-        cands = [self._candidates(anchors[i], sizes[i]) for i in range(n)]
-        base = [self._fixed_cost(self.labels[i], *cands[i]) for i in range(n)]
+        cands = [self._candidates(self.labels[i], anchors[i], sizes[i]) for i in range(n)]
+        base = [self._fixed_cost(self.labels[i], *cands[i][:3]) + cands[i][4] +
+                self._leader_over(self.labels[i], cands[i]) for i in range(n)]
         choice = [-1] * n
         for i in range(n):                                 # greedy, most important first
-            choice[i] = int(np.argmin(base[i] + self._mutual(i, cands, choice, anchors)))
+            choice[i] = int(np.argmin(base[i] + self._mutual(i, cands, choice)))
         for _ in range(PASSES):                            # refine until nothing moves
             moved = False
             for i in range(n):
-                cost = base[i] + self._mutual(i, cands, choice, anchors)
+                cost = base[i] + self._mutual(i, cands, choice)
                 best = int(np.argmin(cost))
                 if cost[best] < cost[choice[i]] - 1e-9:
                     choice[i], moved = best, True
             if not moved:
                 break
         out = []
+        inverse = self.ax.transData.inverted()
         for i, k in enumerate(choice):
-            boxes, dist, _ = cands[i]
+            boxes, dist, _, at, _ = cands[i]
             centre = (boxes[k, :2] + boxes[k, 2:]) / 2
-            offset = tuple((centre - anchors[i]) / self.px)
+            offset = tuple((centre - at[k]) / self.px)
             inner = boxes[k] + np.array([1, 1, -1, -1]) * PAD * self.px
-            out.append(Placement(self.labels[i], inner, offset, dist[k] >= LEADER))
+            slid = None if np.allclose(at[k], anchors[i]) else inverse.transform(at[k])
+            out.append(Placement(self.labels[i], inner, offset, dist[k] >= LEADER, slid))
         return out
 
-    def _candidates(self, anchor: np.ndarray, size: np.ndarray) -> tuple:
-        """(boxes (K, 4), distance in points (K,), direction (K, 2)) around the anchor."""
+    def _candidates(self, label: Label, anchor: np.ndarray, size: np.ndarray) -> tuple:
+        """(boxes (K, 4), distance in points (K,), direction (K, 2), anchor (K, 2), cost of
+        sliding (K,)) around the anchor, or around each of the points of its arrow where it
+        may slide (`slide_points`)."""
+        per = len(DISTANCES) * len(self.unit)
         dist = np.repeat(np.array(DISTANCES), len(self.unit))
         dirs = np.tile(self.unit, (len(DISTANCES), 1))
         half = size / 2
         reach = np.abs(dirs) @ half                        # the box's half-extent along dir
-        centre = anchor + dirs * (dist * self.px + reach)[:, None]
+        points, slid = self.slide_points(label, anchor)
+        at = np.repeat(points, per, axis=0)
+        centre = at + np.tile(dirs * (dist * self.px + reach)[:, None], (len(points), 1))
         boxes = np.hstack([centre - half, centre + half])
-        return boxes, dist, dirs
+        return (boxes, np.tile(dist, len(points)), np.tile(dirs, (len(points), 1)), at,
+                np.repeat(ALONG * slid, per))
+
+    def slide_points(self, label: Label, anchor: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The points (display) a label may be placed by, and how far each lies from `anchor`
+        (points): the anchor alone, or for an arrow's label (`Label.along`) the points at the
+        fractions `SLIDE` of its arrow that lie `SLIDE_END` from both its ends. Its middle,
+        where a polygon's arrows cross and meet, is often taken (001's acceleration polygon,
+        issue 30, eighteenth round (d))."""
+        if label.along is None:
+            return anchor[None, :], np.zeros(1)
+        a, b = self.ax.transData.transform(np.asarray(label.along, dtype=float))
+        length = float(np.linalg.norm(b - a)) / self.px
+        pts, off = [anchor], [0.0]
+        for t in SLIDE[1:]:
+            if min(t, 1 - t) * length >= SLIDE_END:
+                p = a + t * (b - a)
+                pts.append(p)
+                off.append(float(np.linalg.norm(p - anchor)) / self.px)
+        return np.array(pts), np.array(off)
 
     def _fixed_cost(self, label: Label, boxes: np.ndarray, dist: np.ndarray,
                     dirs: np.ndarray) -> np.ndarray:
@@ -228,10 +269,46 @@ class Layout:
             cost += PREFER * (1 - dirs @ p)
         return cost
 
-    def _mutual(self, i: int, cands: list, choice: list[int], anchors: np.ndarray) -> np.ndarray:
+    def _leader_over(self, label: Label, cand: tuple) -> np.ndarray:
+        """What the leader of an arrow's label (`Label.along`: a polygon's) costs for crossing
+        what is drawn: `LEADER_CROSS` / 3 for
+        each sample of it (at most 0.9 `LEADER_CROSS`) (every `SAMPLE` points, from `LEADER_CLEAR` beyond its anchor to the
+        box) on an arrow, a bar or a mark. A leader drawn across other arrows of a polygon led
+        the eye to the wrong arrow (001's a_AB^t across a_FB^t and a_F∈N/R, issue 30,
+        eighteenth round (d)). Other labels' leaders weigh only the labels they cross."""
+        boxes, dist, _, at, _ = cand
+        cost = np.zeros(len(boxes))
+        far = np.flatnonzero(dist >= LEADER)
+        if label.along is None or not len(far) or not len(self.obstacles):
+            return cost
+        centres = (boxes[far, :2] + boxes[far, 2:]) / 2
+        d = centres - at[far]
+        length = np.linalg.norm(d, axis=1)
+        edge = np.array([_edge(a, b) for a, b in zip(at[far], boxes[far])])
+        reach = np.linalg.norm(edge - at[far], axis=1)
+        step, pad = SAMPLE * self.px, OBSTACLE_PAD * self.px
+        s = np.arange(LEADER_CLEAR * self.px, float(reach.max()) + step, step)          # (S,)
+        pts = at[far][:, None, :] + (s[None, :, None] / np.maximum(length, 1e-9)[:, None, None]) * d[:, None, :]
+        valid = s[None, :] <= reach[:, None]                                           # (F, S)
+        flat = pts.reshape(-1, 2)
+        lo, hi = flat.min(axis=0) - pad, flat.max(axis=0) + pad
+        near = np.all((self.obstacles >= lo) & (self.obstacles <= hi), axis=1)
+        obs = self.obstacles[near][self.weights[near] >= 1.0]
+        if not len(obs):
+            return cost
+        hit = np.zeros(len(flat), bool)
+        for k in range(0, len(flat), 2048):
+            diff = flat[k:k + 2048, None, :] - obs[None, :, :]
+            hit[k:k + 2048] = (np.abs(diff) < pad).all(axis=2).any(axis=1)
+        # at most just under a leader through a label (`LEADER_CROSS`), which reads worse
+        cost[far] = np.minimum(LEADER_CROSS / 3 * (hit.reshape(valid.shape) & valid).sum(axis=1),
+                               0.9 * LEADER_CROSS)
+        return cost
+
+    def _mutual(self, i: int, cands: list, choice: list[int]) -> np.ndarray:
         """The cost of each of label i's candidates against the other labels as placed:
         overlaps, covering their anchors, and leaders crossing labels either way."""
-        boxes, dist, _ = cands[i]
+        boxes, dist, _, at, _ = cands[i]
         others = [j for j in range(len(choice)) if j != i and choice[j] >= 0]
         if not others:
             return np.zeros(len(boxes))
@@ -243,11 +320,11 @@ class Layout:
         far = dist >= LEADER
         if far.any():
             centres = (boxes[far, :2] + boxes[far, 2:]) / 2
-            cost[far] += LEADER_CROSS * _segments_hit(anchors[i], centres, placed)
+            cost[far] += LEADER_CROSS * _segments_hit(at[far], centres, placed)
         # placed labels' leaders across me, and my leader across theirs
         lead = [j for j in others if cands[j][1][choice[j]] >= LEADER]
         if lead:
-            starts = anchors[lead]
+            starts = np.array([cands[j][3][choice[j]] for j in lead])
             ends = np.array([(cands[j][0][choice[j], :2] + cands[j][0][choice[j], 2:]) / 2
                              for j in lead])
             t = np.linspace(0.1, 0.9, 9)[None, :, None]
@@ -255,7 +332,7 @@ class Layout:
             cost += LEADER_CROSS * _covered(boxes, pts, np.ones(len(pts)), 0.0) / 3
             if far.any():
                 mine = (boxes[far, :2] + boxes[far, 2:]) / 2
-                cost[far] += LEADER_CROSS * _crossing(anchors[i], mine, starts, ends)
+                cost[far] += LEADER_CROSS * _crossing(at[far][:, None, :], mine, starts, ends)
         return cost
 
 
@@ -313,8 +390,10 @@ def _overlaps(boxes: np.ndarray, others: np.ndarray) -> np.ndarray:
 
 
 def _segments_hit(start: np.ndarray, ends: np.ndarray, boxes: np.ndarray) -> np.ndarray:
-    """For each segment start→end, how many of `boxes` it passes through (sampled)."""
+    """For each segment start→end (`start` one point, or one per segment), how many of
+    `boxes` it passes through (sampled)."""
     t = np.linspace(0.15, 0.85, 8)
+    start = np.broadcast_to(start, ends.shape)[:, None, :]
     pts = start + t[None, :, None] * (ends[:, None, :] - start)          # (K, 8, 2)
     x, y = pts[..., 0][..., None], pts[..., 1][..., None]
     inside = ((x > boxes[:, 0]) & (x < boxes[:, 2]) & (y > boxes[:, 1]) & (y < boxes[:, 3]))
@@ -322,7 +401,8 @@ def _segments_hit(start: np.ndarray, ends: np.ndarray, boxes: np.ndarray) -> np.
 
 
 def _crossing(p: np.ndarray, qs: np.ndarray, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
-    """For each segment p→q (q in `qs`), how many of the segments starts→ends it crosses."""
+    """For each segment p→q (q in `qs`; `p` one point, or (K, 1, 2) one per q), how many of
+    the segments starts→ends it crosses."""
     def side(o, u, v):
         return (u[..., 0] - o[..., 0]) * (v[..., 1] - o[..., 1]) - \
             (u[..., 1] - o[..., 1]) * (v[..., 0] - o[..., 0])
@@ -337,7 +417,7 @@ def _annotation(ax: Any, p: Placement) -> Any:
     points and the data-to-pixel scale both grow with the dpi), and its leader line."""
     label = p.label
     inv = ax.transData.inverted()
-    anchor = ax.transData.transform(label.anchor)
+    anchor = ax.transData.transform(p.anchor)
     centre = (p.box[:2] + p.box[2:]) / 2
     text = ax.text(*inv.transform(centre), label.text, ha="center", va="center",
                    fontsize=label.size, color=label.colour, weight=label.weight,

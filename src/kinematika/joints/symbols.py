@@ -216,10 +216,11 @@ def guide(body: str, centre: Vec, along: Vec, height: float, ctx: DrawContext) -
     A fixed guide is the line the block runs on (tangent to the block, on the side away from
     the mechanism), hatched on that side only where the guide shows as ground: outside the
     moving bodies' wheels and cams. A block inside such an outline (001's slider carrying
-    a roller on its axle) keeps its guide under the block, through the roller, with no
-    hatching inside it — a hatched edge tangent to the roller read as a ground the roller
-    rolls on (issue 30, sixteenth round (d)); a block outside them has its guide cut short
-    of them (a follower's guide stops before its cam)."""
+    a roller on its axle) runs in a fixed `slot` through the roller — a hatched edge tangent
+    to the roller read as a ground the roller rolls on (issue 30, sixteenth round (d)), a
+    hatched line through its centre as a floor it was sunk into (eighteenth round (d)); a
+    block outside them has its guide cut short of them (a follower's guide stops before its
+    cam)."""
     if body == ctx.frame:
         n = perpendicular(along)
         side = n if float(n @ (centre - ctx.centroid())) > 1e-12 * ctx.size else -n
@@ -229,7 +230,7 @@ def guide(body: str, centre: Vec, along: Vec, height: float, ctx: DrawContext) -
             return []
         outlines = ctx.keep_out()
         if carried_reach(centre, side, outlines) > 0:                 # the block rides inside a wheel
-            return guide_through(seg, base, along, side, outlines, ctx)
+            return slot(seg, centre, along, height, outlines, ctx)
         seg = kept_out(seg, base, along, outlines, 0.5 * height)
         return [] if seg is None else hatched_edge(seg[0], seg[1], side, ctx, "ground:guide")
     pts = list(ctx.points(body)) + [centre]
@@ -239,47 +240,44 @@ def guide(body: str, centre: Vec, along: Vec, height: float, ctx: DrawContext) -
     return [Mark("line", line, f"body:{body}", width=3.0, zorder=3, moves_with=body)]
 
 
-def guide_through(seg: tuple, base: Vec, along: Vec, side: Vec, outlines: list,
-                  ctx: DrawContext) -> list[Mark]:
-    """A fixed guide that runs through a moving wheel: its whole line, hatched on `side` only
-    on the stretches outside every outline (`outside_spans`), so that no hatched ground is
-    drawn inside the wheel, nor where its rim could seem to touch it."""
+def slot(seg: tuple, centre: Vec, along: Vec, height: float, outlines: list,
+         ctx: DrawContext) -> list[Mark]:
+    """A fixed guide that runs through a moving wheel (a slider carrying a roller on its axle,
+    001's rolling pair) drawn as the notes draw a fixed slot: two thin parallel lines, one on
+    each side of the block (the block slides between them), across the wheel and a little
+    beyond (not over the frame's other pivots on its line, 001's B), closed at each end by a short wall fixed to the frame — hatched outwards, away from the
+    block and the roller, and only where the end lies outside every wheel. No hatched band
+    runs along the slot: a hatched line through the roller's centre read as a floor the
+    roller was sunk into (issue 30, eighteenth round (d); before, its line was hatched outside the wheel)."""
     p, q = seg
-    out = [Mark("line", np.array([p, q]), "ground", width=1.8, zorder=2, gid="ground:guide")]
-    band = HATCH_BAND * ctx.size
-    for a, b in outside_spans(seg, base, along, outlines, band):
-        out.append(Mark("polygon", np.array([a, b, b + band * side, a + band * side]), "ground", width=0,
-                        hatch=True, zorder=1, avoid=0.7, gid="ground:guide-hatch"))
+    n = perpendicular(along)
+    half = height / 2
+    t0, t1 = (float((x - centre) @ along) for x in (p, q))
+    reach = [np.asarray(poly, dtype=float) - centre for poly in outlines]
+    spans = [v @ along for v in reach if _inside(v)]
+    if spans:                                   # the wheel's width and a little: not over the frame's pivots
+        margin = 1.5 * height
+        t0 = max(t0, min(float(t.min()) for t in spans) - margin)
+        t1 = min(t1, max(float(t.max()) for t in spans) + margin)
+    a, b = centre + t0 * along, centre + t1 * along
+    out = [Mark("line", np.array([a + s * half * n, b + s * half * n]), "ground", width=1.0, zorder=2,
+                gid="ground:slot") for s in (1.0, -1.0)]
+    band = 0.6 * HATCH_BAND * ctx.size
+    for end, out_dir in ((a, -along), (b, along)):
+        if any(_inside(np.asarray(poly, dtype=float) - end) for poly in outlines):
+            continue
+        wall = np.array([end - half * n, end + half * n])
+        out.append(Mark("line", wall, "ground", width=1.6, zorder=2, gid="ground:slot-end"))
+        out.append(Mark("polygon", np.array([wall[0], wall[1], wall[1] + band * out_dir,
+                                             wall[0] + band * out_dir]), "ground", width=0,
+                        hatch=True, zorder=1, avoid=0.7, gid="ground:slot-end-hatch"))
     return out
-
-
-def outside_spans(seg: tuple, base: Vec, along: Vec, outlines: list, margin: float) -> list[tuple]:
-    """The pieces of the segment `seg` (on the line through `base` along the unit `along`)
-    that lie outside every closed outline, each shortened by `margin` at an outline's rim;
-    pieces no longer than `margin` are dropped."""
-    t0, t1 = (float((p - base) @ along) for p in seg)
-    normal = perpendicular(along)
-    inside: list[tuple[float, float]] = []
-    for poly in outlines:
-        v = np.asarray(poly, dtype=float) - base
-        h, t = v @ normal, v @ along
-        h2, t2 = np.roll(h, -1), np.roll(t, -1)
-        crossing = (h > 0) != (h2 > 0)
-        ts = np.sort((t + (t2 - t) * h / np.where(crossing, h - h2, 1.0))[crossing])
-        inside += [(float(ts[i]) - margin, float(ts[i + 1]) + margin) for i in range(0, len(ts) - 1, 2)]
-    spans, start = [], t0
-    for a, b in sorted(inside):
-        if a > start:
-            spans.append((start, min(a, t1)))
-        start = max(start, b)
-    spans.append((start, t1))
-    return [(base + a * along, base + b * along) for a, b in spans if b - a > margin]
 
 
 def carried_reach(centre: Vec, side: Vec, outlines: list) -> float:
     """How far the outlines around a block's centre reach towards the guide's `side` (0 when
     none holds it): whether the block rides inside a wheel (001's rolling pair: a slider
-    carrying a roller on its axle), whose guide `guide_through` draws."""
+    carrying a roller on its axle), whose guide `slot` draws."""
     reach = 0.0
     for poly in outlines:
         v = np.asarray(poly, dtype=float) - centre

@@ -138,13 +138,14 @@ def _layout(fig: Figure, texts: dict, names: list) -> Layout:
     w, h = max(x1 - x0, 1e-300), max(y1 - y0, 1e-300)
     k = min((WIDTH - 2 * MARGIN) / w, (MAX_HEIGHT - 2 * MARGIN) / h)
     out = Layout(fig, k, x0, y1, h * k + 2 * MARGIN + BAR)
-    items: list[tuple[Text, str, tuple, int, Optional[tuple]]] = \
-        [(text, COLOURS["known"], p, 0 if style == "pole" else 1, None) for text, (_, p, style) in zip(names, fig.points)]
+    items: list[tuple[Text, str, tuple, int, Optional[tuple], Optional[tuple]]] = \
+        [(text, COLOURS["known"], p, 0 if style == "pole" else 1, None, None)
+         for text, (_, p, style) in zip(names, fig.points)]
     for a in fig.arrows:
-        if a.label is not None:
+        if a.label is not None:             # beside its middle, or slid along it (`draw.labels.SLIDE`)
             (ax, ay), (bx, by) = a.start, a.end
             items.append((texts[id(a)], COLOURS[a.style], ((ax + bx) / 2, (ay + by) / 2), 2,
-                          (-(by - ay), bx - ax)))
+                          (-(by - ay), bx - ax), (a.start, a.end)))
     if items:
         out.labels = _place(out, items)
     return out
@@ -172,9 +173,10 @@ def _place(lay: Layout, items: list) -> list[Placed]:
         return u, lay.height - v
 
     board = LabelBoard()
-    for i, (text, colour, anchor, priority, prefer) in enumerate(items):
+    for i, (text, colour, anchor, priority, prefer, along) in enumerate(items):
         board.labels.append(Sized(np.asarray(data(anchor), dtype=float), text.markup, colour, priority, str(i),
                                   None if prefer is None else np.asarray(prefer, dtype=float),
+                                  along=None if along is None else np.array([data(along[0]), data(along[1])]),
                                   width=text.width, height=text.height))
     for a in fig.arrows:
         board.avoid(data(a.start), data(a.end), weight=3.0)
@@ -193,13 +195,14 @@ def _place(lay: Layout, items: list) -> list[Placed]:
     out = []
     by_gid = {str(i): item for i, item in enumerate(items)}
     for spot in placed:
-        text, colour, anchor, _, _ = by_gid[spot.label.gid]
+        text, colour, _, _, _, _ = by_gid[spot.label.gid]
         bx0, by0, bx1, by1 = (float(c) for c in spot.box)
         box = (bx0, lay.height - by1, bx1, lay.height - by0)
         centre = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
         leader = None
         if spot.leader:
-            start = lay.at(anchor)
+            ax_, ay_ = (float(c) for c in spot.anchor)
+            start = (ax_, lay.height - ay_)
             leader = (start, _edge(start, box))
         out.append(Placed(text, colour, centre, box, leader))
     return out
