@@ -217,8 +217,11 @@ def _steady(ctx: Ctx, body: str) -> bool:
     rate is constant over the motion (C5-1.8's wheel at ω0)."""
     for d in ctx.model.drivers:
         if d.kind == "omega" and d.body == body and d.relative_to in (None, ctx.frame):
-            accel = ctx.inst.value(d.accel, d.where) if d.accel is not None else 0
-            return ctx.is_zero(accel, "rate2")
+            if d.accel is None:
+                return True
+            given = d.given(accel=True)
+            parts = given if isinstance(given, tuple) else (given,)      # a spatial ω is a vector
+            return all(ctx.is_zero(ctx.inst.value(p, d.where), "rate2") for p in parts)
     return False
 
 

@@ -115,4 +115,4 @@ def meshes(j: Any) -> int:
     """1 for a gear pair, else 0 (a number: the renderer hands Fluent numbers as they are, so
     a message selects on it): the catalogues say a gear "meshes with" its mate (the gear
     joint's own word), where a wheel "rolls without slipping" on a profile."""
-    return int(j.kind.name == "gear")
+    return int(bool(getattr(j.kind, "pitch", False)))       # the kind is asked, never named
