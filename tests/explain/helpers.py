@@ -110,3 +110,22 @@ def words_of(page: str) -> str:
         part = re.sub(r"<(style|script)\b.*?</\1>", "", part, flags=re.S)
         out.append(re.sub(r"<[^>]*>", " ", part))
     return "\n".join(out)
+
+
+NOTES_SEEDS = [s for s in SEEDS if s.startswith(("seed_001_", "seed_c5_"))]
+
+
+def recorded_pages(current: list, langs: tuple = ("en", "ca")) -> dict:
+    """What a patched drawing step appends to `current` while each of the notes' seeds is
+    written in `langs` (Markdown), a list per (seed, language): the label layouts the figure
+    tests read in display units. The caller patches and restores the step."""
+    from kinematika.explain import render
+
+    found = {}
+    for name in NOTES_SEEDS:
+        doc = build(kinematika.solve(EXAMPLES / f"{name}.yaml"))
+        for lang in langs:
+            current.clear()
+            render(doc, lang, "md")
+            found[(name, lang)] = list(current)
+    return found

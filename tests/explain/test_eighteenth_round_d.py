@@ -17,15 +17,13 @@ from matplotlib.figure import Figure
 
 import kinematika
 from kinematika.draw.labels import LabelBoard
-from kinematika.explain import build, render
 from kinematika.explain.render import svg as svg_module
 from kinematika.draw.build import build_scene
 from kinematika.draw.geometry import Box
 from kinematika.draw.joints import scene_symbols
 from kinematika.draw.options import DrawOptions
-from tests.explain.helpers import EXAMPLES, SEEDS
+from tests.explain.helpers import EXAMPLES, NOTES_SEEDS, recorded_pages
 
-NOTES_SEEDS = [s for s in SEEDS if s.startswith(("seed_001_", "seed_c5_"))]
 
 
 def _marks(name: str) -> tuple:
@@ -113,7 +111,6 @@ def _crossings(p, q, a, b) -> bool:
 @pytest.fixture(scope="module")
 def polygons():
     """Every polygon's layout of the seeds' pages (en, ca): (figure layout, placed labels)."""
-    found: dict[tuple[str, str], list] = {}
     orig = svg_module._place
     current: list = []
 
@@ -124,12 +121,7 @@ def polygons():
 
     svg_module._place = place
     try:
-        for name in NOTES_SEEDS:
-            doc = build(kinematika.solve(EXAMPLES / f"{name}.yaml"))
-            for lang in ("en", "ca"):
-                current.clear()
-                render(doc, lang, "md")
-                found[(name, lang)] = list(current)
+        found = recorded_pages(current)
     finally:
         svg_module._place = orig
     return found

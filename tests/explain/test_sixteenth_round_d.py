@@ -10,19 +10,15 @@ from __future__ import annotations
 
 import pytest
 
-import kinematika
 from kinematika.draw import labels
-from kinematika.explain import build, render
-from tests.explain.helpers import EXAMPLES, SEEDS
+from tests.explain.helpers import NOTES_SEEDS, recorded_pages
 
-NOTES_SEEDS = [s for s in SEEDS if s.startswith(("seed_001_", "seed_c5_"))]
 
 
 @pytest.fixture(scope="module")
 def layouts():
     """Every label layout (boxes and the arrows' tips, display units) of the seeds' pages in
     English and Catalan (whose words are the longest), drawn afresh."""
-    found: dict[tuple[str, str], list] = {}
     orig_init, orig_run = labels.Layout.__init__, labels.Layout.run
     current: list = []
 
@@ -36,12 +32,7 @@ def layouts():
 
     labels.Layout.__init__, labels.Layout.run = init, run
     try:
-        for name in NOTES_SEEDS:
-            doc = build(kinematika.solve(EXAMPLES / f"{name}.yaml"))
-            for lang in ("en", "ca"):
-                current.clear()
-                render(doc, lang, "md")
-                found[(name, lang)] = list(current)
+        found = recorded_pages(current)
     finally:
         labels.Layout.__init__, labels.Layout.run = orig_init, orig_run
     return found
