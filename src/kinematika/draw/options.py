@@ -44,6 +44,11 @@ class DrawOptions:
     contacts: Optional[dict] = None   # joint id -> the letter a text names its contact point
                                       # by (J, K, T2): the figure labels that contact's dot
                                       # with it, and no other contact (issue 30, 13th round)
+    construction: Optional[list] = None  # [(pair of bodies, point), …] with centres=True: the
+                                      # line from each point (model coordinates) to the pair's
+                                      # centre, a line the text finds that centre on ("lies on
+                                      # the perpendicular to v_J through J …; these lines
+                                      # meet"): drawn as the lines to pins are (issue 30, 19d)
 
     def __post_init__(self) -> None:
         if self.lang is not None:

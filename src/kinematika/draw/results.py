@@ -202,6 +202,34 @@ def _centres(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
     _normals(scene)
     if options.centres and scene.dim == 2:
         _radii(scene, sol, num, _pairs(options))
+        _construction(scene, sol, num, options.construction or [])
+
+
+def _construction(scene: Scene, sol: Any, num: Numbers, lines: list) -> None:
+    """The lines a text places a centre on, each from its point to the centre (`DrawOptions.
+    construction`): a centre said to be where two lines meet is drawn with those lines, as a
+    student draws them (issue 30, nineteenth round (d): C5-1.1's I_pulley sat below the
+    pulley with the strands' lines, which the text says meet there, stopping at J and K). A
+    line already drawn (an Aronhold–Kennedy line, a line to a pin) is that line reaching on."""
+    from ..questions.centres import all_centres
+
+    by_pair = {frozenset(c.pair): c for c in all_centres(sol)}
+    drawn = scene.normals + scene.kennedy
+    for pair, at in lines:
+        c = by_pair.get(frozenset(pair))
+        if c is None or c.value.get("point") is None:
+            continue
+        centre, p = num.page(c.value["point"]), num.page(at)
+        d = centre - p
+        if np.linalg.norm(d) <= 1e-9 * scene.size:
+            continue
+        same = next((k for k in drawn if _on_line(k, p, d, scene.size)), None)
+        if same is not None:
+            same.anchors += [p, centre]
+            continue
+        line = KennedyLine(f"radius:{'-'.join(pair)}:{len(scene.kennedy)}", p, d, [p, centre])
+        scene.kennedy.append(line)
+        drawn.append(line)
 
 
 def _normals(scene: Scene) -> None:

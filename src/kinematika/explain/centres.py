@@ -52,7 +52,7 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
                     frame=Name(ctx.frame, "body", reference=True)))
     if part == "all" or (part == "first") == (len(first) == len(chosen)) or part == "rest":
         sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False,
-                        centre_pairs=used_pairs(made, chosen)))
+                        centre_pairs=used_pairs(made, chosen), construction=construction(ctx, made, chosen)))
     # each centre once: a centre placed (at a joint, by Aronhold–Kennedy, where two lines
     # meet) is not placed again "as a check" from the velocities — the notes never re-derive
     # a centre they have found, and the second derivation reads as a second answer
@@ -118,6 +118,27 @@ def used_pairs(made: dict, chosen: list) -> list[tuple[str, str]]:
     O) is a symbol the student cannot find in the text. The centres a construction is found
     from are written when it writes their symbols (`_chosen`), and so drawn."""
     return [tuple(sorted(k)) for k in dict.fromkeys(chosen) if len(k) == 2 and k in made]
+
+
+def construction(ctx: Ctx, made: dict, chosen: list) -> list[tuple[tuple, tuple]]:
+    """The lines each written centre is said to lie on, as (pair, a point of the line) for the
+    centres' figure to draw from the point on to the centre (`DrawOptions.construction`): by
+    Aronhold–Kennedy, through the two centres of each third body (the point W the notes name,
+    "the perpendicular to v_W through W"); from velocities, through each witness point,
+    perpendicular to its velocity. A sentence that says "these lines meet" there, over a
+    figure with the lines stopping short of the ring, left the reader to draw them (issue 30,
+    nineteenth round (d): C5-1.1's strands' lines and I_pulley)."""
+    out: list[tuple[tuple, tuple]] = []
+    for key in dict.fromkeys(chosen):
+        note = made.get(key)
+        if note is None or note.value.get("point") is None:
+            continue
+        if note.how == "kennedy":
+            out += [(note.pair, tuple(c["point"])) for line in note.lines for c in line
+                    if c.get("point") is not None]
+        elif note.how == "velocities" and len(note.witnesses) >= 2:
+            out += [(note.pair, tuple(ctx.pos(p))) for p, *_ in note.witnesses]
+    return out
 
 
 def _placed(ctx: Ctx, note: CentreNote) -> bool:
