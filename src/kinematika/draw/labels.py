@@ -41,9 +41,12 @@ TIP = 7.0                # points around an arrow's tip that no label covers (it
 SLIDE = (0.5, 0.35, 0.65, 0.22, 0.78)   # where along its arrow an arrow's label may sit
 SLIDE_END = 18.0         # points: a slid anchor stays this far from the arrow's ends
 LEADER_CLEAR = 6.0       # points of a leader next to its anchor (on its own arrow) not weighed
+CLOSE = 14.0             # points: two points' labels nearer than this sit on opposite sides
+POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its letter)
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
+TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
 DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
 
 
@@ -196,7 +199,8 @@ class Layout:
         sizes = np.array([lb.extent for lb in self.labels]) * self.px + 2 * PAD * self.px
         cands = [self._candidates(self.labels[i], anchors[i], sizes[i]) for i in range(n)]
         base = [self._fixed_cost(self.labels[i], *cands[i][:3]) + cands[i][4] +
-                self._leader_over(self.labels[i], cands[i]) for i in range(n)]
+                self._leader_over(self.labels[i], cands[i]) + self._apart(i, anchors, cands[i])
+                for i in range(n)]
         choice = [-1] * n
         for i in range(n):                                 # greedy, most important first
             choice[i] = int(np.argmin(base[i] + self._mutual(i, cands, choice)))
@@ -267,6 +271,24 @@ class Layout:
         if label.prefer is not None and np.linalg.norm(label.prefer) > 0:
             p = label.prefer / np.linalg.norm(label.prefer)
             cost += PREFER * (1 - dirs @ p)
+        return cost
+
+    def _apart(self, i: int, anchors: np.ndarray, cand: tuple) -> np.ndarray:
+        """What a point's label costs for leaning towards another labelled point closer than
+        `CLOSE` points: `TOWARDS` × the cosine of its direction with the line to that point,
+        when positive. Two such labels then sit on opposite sides, each beyond its own dot,
+        never side by side where either could be read as the other's (C5-E.6's H, the
+        sprocket's centre, and T1, r above it: "H" and "T1" both above, issue 30, nineteenth
+        round (d)). A point with a label elsewhere (an arrow's, a body's) is not weighed."""
+        cost = np.zeros(len(cand[0]))
+        if not self.labels[i].gid.startswith(POINT_GIDS):
+            return cost
+        for j, other in enumerate(self.labels):
+            d = anchors[j] - anchors[i]
+            gap = float(np.linalg.norm(d)) / self.px
+            if j == i or not other.gid.startswith(POINT_GIDS) or not 1e-6 < gap < CLOSE:
+                continue
+            cost += TOWARDS * np.clip(cand[2] @ (d / np.linalg.norm(d)), 0, None)
         return cost
 
     def _leader_over(self, label: Label, cand: tuple) -> np.ndarray:
