@@ -46,6 +46,7 @@ POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its 
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
+ARROW_CROSS = 54.0       # a polygon label's leader across an arrow (exactly, not sampled)
 TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
 DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
 
@@ -187,6 +188,7 @@ class Layout:
         self.obstacles, self.weights = _sample(board.obstacles, ax.transData, SAMPLE * self.px)
         self.unit = _directions()
         self.tips = ax.transData.transform(np.array(board.tips)) if board.tips else np.zeros((0, 2))
+        self.arrows = _arrow_segments(board.obstacles, ax.transData)
 
     def run(self) -> list[Placement]:
         """Every label's placement: greedily, most important first, each at its cheapest
@@ -307,6 +309,7 @@ class Layout:
         d = centres - at[far]
         length = np.linalg.norm(d, axis=1)
         edge = np.array([_edge(a, b) for a, b in zip(at[far], boxes[far])])
+        cost[far] = ARROW_CROSS * _arrows_crossed(at[far], edge, self.arrows, OBSTACLE_PAD * self.px)
         reach = np.linalg.norm(edge - at[far], axis=1)
         step, pad = SAMPLE * self.px, OBSTACLE_PAD * self.px
         s = np.arange(LEADER_CLEAR * self.px, float(reach.max()) + step, step)          # (S,)
@@ -323,8 +326,8 @@ class Layout:
             diff = flat[k:k + 2048, None, :] - obs[None, :, :]
             hit[k:k + 2048] = (np.abs(diff) < pad).all(axis=2).any(axis=1)
         # at most just under a leader through a label (`LEADER_CROSS`), which reads worse
-        cost[far] = np.minimum(LEADER_CROSS / 3 * (hit.reshape(valid.shape) & valid).sum(axis=1),
-                               0.9 * LEADER_CROSS)
+        cost[far] += np.minimum(LEADER_CROSS / 3 * (hit.reshape(valid.shape) & valid).sum(axis=1),
+                                0.9 * LEADER_CROSS)
         return cost
 
     def _mutual(self, i: int, cands: list, choice: list[int]) -> np.ndarray:
@@ -432,6 +435,38 @@ def _crossing(p: np.ndarray, qs: np.ndarray, starts: np.ndarray, ends: np.ndarra
     d1, d2 = side(starts, ends, p), side(starts, ends, q)
     d3, d4 = side(p, q, starts), side(p, q, ends)
     return ((d1 * d2 < 0) & (d3 * d4 < 0)).sum(axis=1).astype(float)
+
+
+def _arrow_segments(obstacles: list, transform: Any) -> np.ndarray:
+    """(M, 2, 2) the segments (display) of the drawn polylines weighing as arrows (weight ≥ 3:
+    a polygon's arrows), for a leader's crossings to be counted exactly (`_arrows_crossed`)."""
+    segs = [np.stack([q[:-1], q[1:]], axis=1) for q in
+            (transform.transform(line) for line, weight, _ in obstacles if weight >= 3.0 and len(line) >= 2)]
+    return np.concatenate(segs) if segs else np.zeros((0, 2, 2))
+
+
+def _arrows_crossed(starts: np.ndarray, ends: np.ndarray, segs: np.ndarray, pad: float) -> np.ndarray:
+    """For each leader starts[k]→ends[k], how many of the segments `segs` it crosses or runs
+    within `pad` of (through the pole, where arrows start, too); a segment the leader starts
+    on or next to (its own arrow, an arrow meeting it there) is not counted. Sampling the
+    leader and the arrows every few points, as `_leader_over` does for what a leader runs
+    over, misses a crossing between two samples: 001's a_FB^n, 35 pt long at the pole o,
+    kept its leader across a_FA^n (issue 30, nineteenth round (d))."""
+    if not len(segs) or not len(starts):
+        return np.zeros(len(starts))
+    a, b = segs[:, 0][None], segs[:, 1][None]                     # (1, M, 2)
+    p, q = starts[:, None, :], ends[:, None, :]                    # (K, 1, 2)
+
+    def side(o, u, v):
+        return (u[..., 0] - o[..., 0]) * (v[..., 1] - o[..., 1]) - (u[..., 1] - o[..., 1]) * (v[..., 0] - o[..., 0])
+
+    def off(x, u, v):                                              # distance from x to segment uv
+        uv = v - u
+        t = np.clip(((x - u) * uv).sum(axis=-1) / np.maximum((uv * uv).sum(axis=-1), 1e-12), 0, 1)
+        return np.linalg.norm(u + t[..., None] * uv - x, axis=-1)
+    crossed = (side(a, b, p) * side(a, b, q) < 0) & (side(p, q, a) * side(p, q, b) < 0)
+    near = np.minimum.reduce([off(q, a, b), off(a, p, q), off(b, p, q)]) <= pad
+    return ((crossed | near) & (off(p, a, b) > pad)).sum(axis=1).astype(float)
 
 
 def _annotation(ax: Any, p: Placement) -> Any:
