@@ -27,7 +27,7 @@ from .order import asked_order, solution_order
 from .planar import PlanarSteps
 from .marks import worded_marks
 from .needs import accelerations_asked, centres_asked_first, prune
-from .polygon import degenerate, level_polygon, polygon
+from .polygon import degenerate, level_polygon, polygon, term_steps
 from .terms import acceleration_terms
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
@@ -169,7 +169,8 @@ def level_polygons(ctx: Ctx, sec: Section, level: str) -> None:
     whole = level_polygon(ctx, _equations(sec), level)
     if whole is None or degenerate(whole):         # a line of arrows with piled-up images: left out
         return
-    whole.caption.args.update(drawn_steps(sec, level))
+    whole.caption.args.update(drawn_steps(sec, level, term_steps(ctx, whole, [
+        (n, [e for e in _equations(step) if e.level == level]) for n, step in _steps(sec)])))
     steps = [b for b in sec.blocks if isinstance(b, Section)]
     if len(whole.arrows) <= SPLIT or len(steps) < 2:
         sec.add(whole)
@@ -180,11 +181,12 @@ def level_polygons(ctx: Ctx, sec: Section, level: str) -> None:
             step.add(drawn)
 
 
-def drawn_steps(sec: Section, level: str) -> dict[str, object]:
+def drawn_steps(sec: Section, level: str, terms: Optional[list[int]] = None) -> dict[str, object]:
     """The steps whose equations a level polygon draws, as its caption names them ("the terms of
     the equations of Steps 1 to 5", of Steps 1 and 2, of Step 1): a back-reference names the step,
-    never "the equations above" (issue 30, seventeenth round b)."""
-    drawn = [n for n, step in _steps(sec) if any(e.level == level for e in _equations(step))] or [0]
+    never "the equations above" (issue 30, seventeenth round b). `terms`: the steps whose
+    equations draw its black arrows (`polygon.term_steps`), which the caption then names."""
+    drawn = terms or [n for n, step in _steps(sec) if any(e.level == level for e in _equations(step))] or [0]
     first, last = min(drawn), max(drawn)
     span = min(last - first + 1, 3)             # 1 step, 2 steps ("1 and 2"), more ("1 to 5")
     return {"first": first, "last": last, "span": span}

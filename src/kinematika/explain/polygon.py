@@ -53,6 +53,31 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     return fig
 
 
+def term_steps(ctx: Ctx, fig: Figure, steps: list[tuple[int, list[Equation]]]) -> list[int]:
+    """The numbers of the steps whose equations draw a black arrow (a term between the
+    images) of the level polygon `fig`: the one list its caption's "the equations of Steps
+    … (black)" is read from. Counting every step with an equation of the level named steps
+    whose equations draw only blue arrows, or none (001's revolute pairs: "Steps 1 to 3" over
+    Step 3's two terms; C5-E.6's bicycle "1 to 3" over one v_PC; issue 30, nineteenth round (d))."""
+    whole = _Builder(ctx)                  # the polygon's arrows as built, before `_separated` moves them
+    for _, eqs in steps:
+        for eq in eqs:
+            whole.equation(eq)
+    black = [a for a in whole.arrows if a.style != "result"]
+    if len(black) != sum(a.style != "result" for a in fig.arrows):
+        return []
+    out = []
+    for n, eqs in steps:
+        poly = _Builder(ctx)
+        for eq in eqs:
+            poly.equation(eq)
+        size = poly.size
+        if any(_close(a.start, b.start, size) and _close(a.end, b.end, size)
+               for a in poly.arrows if a.style != "result" for b in black):
+            out.append(n)
+    return out
+
+
 def lettering(ctx: Ctx, labels: list[str]) -> dict[str, Any]:
     """The caption's example of how images are lettered, taken from the polygon's own images:
     "a for A" where a is one of them, else the first plain image ("p for P", "a1 for A1"),
