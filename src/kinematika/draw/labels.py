@@ -46,7 +46,7 @@ POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its 
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
-ARROW_CROSS = 54.0       # a polygon label's leader across an arrow (exactly, not sampled)
+ARROW_CROSS = 90.0       # a polygon label's leader across an arrow (exactly, not sampled): worse than across a label
 TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
 DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
 

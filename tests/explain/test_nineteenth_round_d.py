@@ -1,0 +1,186 @@
+"""Issue 30, nineteenth round (d): the figures of the explanations.
+
+- A centre the text places where lines meet is drawn with those lines, from each point the
+  text names on to the ring (C5-1.1: the strands' lines stopped at J and K, I_pulley below).
+- Two points' labels closer than `labels.CLOSE` sit on opposite sides (C5-E.6's H and T1).
+- A polygon label's leader costs for each arrow it crosses, counted exactly (001's a_FB^n).
+- A level polygon's caption names the steps whose equations draw its black arrows.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+import kinematika
+from kinematika.draw.build import build_scene
+from kinematika.draw.labels import CLOSE, LabelBoard, _arrows_crossed
+from kinematika.draw.options import DrawOptions
+from kinematika.explain import build, render
+from kinematika.explain.document import Drawing, Figure as DocFigure, Section
+from kinematika.explain.render import svg as svg_module
+from tests.explain.helpers import EXAMPLES, explained, rendered
+
+
+def _cross(u, v) -> float:
+    return float(u[0]) * float(v[1]) - float(u[1]) * float(v[0])
+
+
+def _blocks(sec):
+    for b in sec.blocks:
+        if isinstance(b, Section):
+            yield from _blocks(b)
+        else:
+            yield b
+
+
+def _all(doc):
+    for s in doc.sections:
+        yield from _blocks(s)
+
+
+def test_the_strands_lines_are_drawn_on_to_the_pulleys_centre():
+    """C5-1.1 at r = 0.1: G1 = (−2√3 r, 4r), J = (−√3 r/2, −r/2) (the left strand tangent at
+    60°), K = (√3 r/2, −r/2), I_pulley = (0, −2r) — G1, J and I_pulley collinear: (J − G1) =
+    3 (I − J) = (3√3 r/2, −9r/2). The centres' figure draws a line through J and through
+    K, each reaching I_pulley (its anchors)."""
+    sol, doc = explained("seed_c5_1_1_pulley_on_cable")
+    fig = next(b for b in _all(doc) if isinstance(b, Drawing) and b.caption.key == "fig.centres")
+    scene = build_scene(sol.inst, sol, DrawOptions(**fig.options))
+    r = 0.1
+    centre = np.array([0.0, -2 * r])
+    for w in ((-math.sqrt(3) * r / 2, -r / 2), (math.sqrt(3) * r / 2, -r / 2)):
+        w = np.array(w)
+        on = [k for k in scene.kennedy + scene.normals
+              if abs(float(_cross(k.direction, w - np.asarray(k.through, float)))) < 1e-9
+              and abs(float(_cross(k.direction, centre - np.asarray(k.through, float)))) < 1e-9]
+        assert on, w
+        assert any(any(np.allclose(a, centre, atol=1e-9) for a in k.anchors) for k in on)
+    assert "perpendiculars to the points' velocities" in rendered("seed_c5_1_1_pulley_on_cable", "en")
+
+
+def _axes():
+    fig = Figure(figsize=(400 / 72, 400 / 72), dpi=72)
+    FigureCanvasAgg(fig)
+    ax = fig.add_axes((0, 0, 1, 1))
+    ax.set_xlim(0, 400)
+    ax.set_ylim(0, 400)
+    return ax
+
+
+@pytest.mark.parametrize("gap", [6.0, 9.0, 12.0])
+def test_two_close_points_labels_sit_on_opposite_sides(gap):
+    """H at (200, 200), T1 `gap` pt above (display points = data here): each label's box
+    centre lies on its own side, (centre − own point)·(other − own) ≤ 0 — never both above
+    or both beside (C5-E.6 drew "H" and "T1" side by side above the two dots)."""
+    assert gap < CLOSE
+    ax = _axes()
+    board = LabelBoard()
+    h, t = np.array([200.0, 200.0]), np.array([200.0, 200.0 + gap])
+    board.add(h, "H", "k", 3, "point:H")
+    board.add(t, "T1", "k", 3, "point:T1")
+    board.avoid(h, radius=3.0)
+    board.avoid(t, radius=3.0)
+    spots = {s.label.gid: s for s in board.layout(ax)}
+    for me, other, gid in ((h, t, "point:H"), (t, h, "point:T1")):
+        box = spots[gid].box
+        c = (box[:2] + box[2:]) / 2
+        assert float((c - me) @ (other - me)) <= 1e-9, (gid, box)
+
+
+def test_the_bicycles_h_and_t1_labels_are_apart():
+    """C5-E.6's mechanism: H (the rear hub, (0, R_wheel)) and T1 (r = 0.04 above it) — their
+    labels, in display units, lie each on its own side of the line between the dots."""
+    from kinematika.draw import labels as labels_module
+
+    sol, doc = explained("seed_c5_e6_bicycle")
+    fig = next(b for b in _all(doc) if isinstance(b, Drawing) and b.caption.key == "fig.mechanism")
+    orig, found = labels_module.Layout.run, []
+
+    def run(self):
+        out = orig(self)
+        found.append((self, out))
+        return out
+
+    labels_module.Layout.run = run
+    try:
+        kinematika.draw.svg(sol, bare=True, lang="ca", **fig.options)
+    finally:
+        labels_module.Layout.run = orig
+    lay, out = found[-1]
+    spot = {p.label.gid: p for p in out}
+    h, t = spot["point:H"], spot["point:T1"]
+    ph, pt = (lay.ax.transData.transform(p.label.anchor) for p in (h, t))
+    assert np.linalg.norm(pt - ph) / lay.px < CLOSE
+    for me, other, p in ((ph, pt, h), (pt, ph, t)):
+        c = (p.box[:2] + p.box[2:]) / 2
+        assert float((c - me) @ (other - me)) <= 1e-9, (p.label.gid, p.box)
+
+
+def test_a_leaders_crossings_are_counted_exactly():
+    """Arrows (0, 0)→(100, 0) and (50, −50)→(50, 50): a leader from (20, 0) (on the first) to
+    (80, 10) crosses the second once and does not count the first it starts on; one from
+    (20, 0) to (48.5, 30) runs within 2.5 of the second without crossing: counted; one to
+    (20, 40) crosses nothing. Samples 4 apart on both would miss a crossing between them."""
+    segs = np.array([[[0.0, 0.0], [100.0, 0.0]], [[50.0, -50.0], [50.0, 50.0]]])
+    starts = np.array([[20.0, 0.0]] * 3)
+    ends = np.array([[80.0, 10.0], [48.5, 30.0], [20.0, 40.0]])
+    assert list(_arrows_crossed(starts, ends, segs, 2.5)) == [1.0, 1.0, 0.0]
+
+
+def _crosses(p, q, a, b) -> bool:
+    def side(o, u, v):
+        return (u[0] - o[0]) * (v[1] - o[1]) - (u[1] - o[1]) * (v[0] - o[0])
+    return side(a, b, p) * side(a, b, q) < 0 and side(p, q, a) * side(p, q, b) < 0
+
+
+def _off(p, a, b) -> float:
+    p, a, b = (np.asarray(v, float) for v in (p, a, b))
+    d = b - a
+    t = float(np.clip((p - a) @ d / max(float(d @ d), 1e-12), 0, 1))
+    return float(np.linalg.norm(a + t * d - p))
+
+
+@pytest.mark.parametrize("lang", ["ca", "en"])
+def test_the_rolling_pairs_leaders_cross_no_arrow(lang):
+    """001's rolling pair, every polygon (figure units): no label's leader crosses an arrow
+    other than its own (the ca acceleration polygon led a_FB^n across a_FA^n at o)."""
+    orig, found = svg_module._place, []
+
+    def place(lay, items):
+        out = orig(lay, items)
+        found.append((lay, out))
+        return out
+
+    svg_module._place = place
+    try:
+        render(build(kinematika.solve(EXAMPLES / "seed_001_rolling_pair.yaml")), lang, "md")
+    finally:
+        svg_module._place = orig
+    assert found
+    for lay, placed in found:
+        arrows = [(lay.at(a.start), lay.at(a.end)) for a in lay.fig.arrows]
+        for spot in placed:
+            if spot.leader is None:
+                continue
+            start, end = spot.leader
+            crossed = [ab for ab in arrows if _crosses(start, end, *ab) and _off(start, *ab) > 0.5]
+            assert not crossed, (spot.text.markup, crossed)
+
+
+# the steps whose equations draw a black arrow of the level's velocity polygon, read off the
+# pages' equations by hand: 001's revolute pairs find v_A and v_B from the pins (Steps 1, 2:
+# blue only) and Step 3's v_B = v_A + v_BA draws v_BA; C5-E.4, E.5 and E.6 find their wheels'
+# rates first and relate two points in the last step; C5-1.4's Step 5 alone relates two
+@pytest.mark.parametrize("name, first, last", [
+    ("seed_001_r_pairs", 3, 3), ("seed_c5_e4_upper_wheel", 4, 4), ("seed_c5_e5_unequal_wheels", 4, 4),
+    ("seed_c5_e6_bicycle", 3, 3), ("seed_c5_1_4_epicyclic", 5, 5), ("seed_001_p_pair_coriolis", 2, 2)])
+def test_a_velocity_polygons_caption_names_the_steps_it_draws(name, first, last):
+    _, doc = explained(name)
+    fig = next(b for b in _all(doc) if isinstance(b, DocFigure) and b.caption.key == "fig.level_v")
+    args = fig.caption.args
+    assert (args["first"], args["last"]) == (first, last)
+    assert f"of the equations of Step {first}," in rendered(name, "en")
