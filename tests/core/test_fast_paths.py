@@ -97,6 +97,41 @@ def test_the_records_have_schemas_fields_and_defaults():
                                                      "ExerciseSpec", "DimensionSpec", "LanguageNames"}  # all but the cam's design
 
 
+def test_exact_lists_and_mappings_checked_at_once_refuse_what_one_by_one_refused():
+    """`listed` and `mapping` of exact checks test the values' types at once: a bool among
+    numbers, a subclass, a key not text, a wrong length are still refused; what is accepted
+    is a copy with the same values; `optional` of an exact check takes None too."""
+    from kinematika.model.plain import Refused, exact, listed, mapping, optional
+
+    class Text(str):
+        pass
+
+    numbers, pair, names = listed(exact(int, float)), listed(exact(str), 2, 2), mapping(exact(str))
+    given = [1, 2.5]
+    assert numbers(given) == [1, 2.5] and numbers(given) is not given and numbers([]) == []
+    assert pair(["a", "b"]) == ["a", "b"]
+    assert names({"a": "x"}) == {"a": "x"}
+    assert optional(exact(str))(None) is None and optional(exact(str))("a") == "a"
+    for check, value in [(numbers, [1, True]), (numbers, (1, 2)), (pair, ["a"]), (pair, ["a", Text("b")]),
+                         (names, {1: "x"}), (names, {"a": 1}), (optional(exact(str)), 1)]:
+        with pytest.raises(Refused):
+            check(value)
+
+
+def test_a_number_written_twice_is_one_expression_with_its_own_text():
+    """The build makes one `Expr` per number written (`_Builder.expr`), keyed by its text: 1
+    and 1.0, 0.0 and -0.0 stay apart."""
+    from kinematika.model.build import build_model
+
+    tree = four_bar()
+    tree["points"] = {"O2": [0.0, 0.0], "A": [-0.0, 1.0], "B": [1, 1.0], "O4": [4.0, 0]}
+    model = build_model(tree)
+    assert [[e.text for e in model.points[p]] for p in ("O2", "A", "B", "O4")] == \
+        [["0.0", "0.0"], ["-0.0", "1.0"], ["1", "1.0"], ["4.0", "0"]]
+    assert model.points["O2"][0] is model.points["O2"][1] and model.points["A"][0] is not model.points["O2"][0]
+    assert model.points["A"][1] is model.points["B"][1]
+
+
 @pytest.mark.parametrize("annotation, code", [
     (Union[StrictInt, StrictFloat, str], "value"),                          # schema's named type
     (Union[StrictInt, StrictBool], "exact(int, bool)"),

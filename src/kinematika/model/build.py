@@ -49,6 +49,11 @@ def build_model(tree: Any) -> Model:
     return _Builder(spec).model()
 
 
+def _joint_place(i: int, jid: str) -> str:
+    """Where joint `i` (`jid`) is written, for errors: ``joints[2] (j3)`` (as `Joint.where`)."""
+    return f"joints[{i}] ({jid})"
+
+
 _joint_values = operator.attrgetter(*shape.JOINT_KEYS)     # a joint's optional keys, in order
 _NONES = (None,) * len(shape.JOINT_KEYS)
 
@@ -61,6 +66,7 @@ class _Builder:
         # plain checks accept): read alike
         self.spec = spec
         self._fields_checked: set[tuple] = set()     # (kind, keys given) whose keys passed `check_fields`
+        self._numbers: dict[str, Expr] = {}         # the numbers' expressions by their text (`repr`)
 
     def model(self) -> Model:
         spec = self.spec
@@ -134,11 +140,17 @@ class _Builder:
     def expr(self, raw: Any, where: str, index: Optional[int] = None) -> Expr:
         """`raw` as an expression in the parameters (and pi); `where` (component `index` of it,
         when given: its place written only for an error) names it in errors."""
+        number = type(raw) is float or type(raw) is int
+        if number:          # a number names nothing: one `Expr` per number written (the same text)
+            found = self._numbers.get(repr(raw))
+            if found is not None:
+                return found
         try:
             expr = parse(raw)
         except ExpressionError as err:
             raise KinematikaError("schema", err.said, where if index is None else f"{where}[{index}]") from None
-        if type(raw) is float or type(raw) is int:      # a number names nothing
+        if number:
+            self._numbers[expr.text] = expr
             return expr
         if index is not None:
             where = f"{where}[{index}]"
@@ -194,29 +206,32 @@ class _Builder:
     # bodies -----------------------------------------------------------------------------
     def bodies(self) -> dict[str, Body]:
         out: dict[str, Body] = {}
+        known = self.point_coords.keys()
         for name, written in self.spec.bodies.items():
-            where = f"bodies.{name}"
             record: Optional[schema.BodySpec | Record] = None     # a bare list: its points, no shapes
             points: list[str]
             if isinstance(written, list):
                 points = written
             else:
                 record, points = written, written.points
-            for p in points:
-                self.known_point(p, where)
-            seen: set[str] = set()
-            twice: set[str] = set()
-            for p in points:
-                if p in seen:
-                    twice.add(p)
-                seen.add(p)
-            if twice:
-                raise KinematikaError("schema", "point-listed-twice", where, point=sorted(twice)[0])
-            out[name] = Body(name, list(points), [] if record is None else self.shapes(record, where))
+            distinct = set(points)
+            if not known >= distinct:        # the first unknown one named
+                for p in points:
+                    self.known_point(p, f"bodies.{name}")
+            if len(distinct) != len(points):
+                seen: set[str] = set()
+                twice: set[str] = set()
+                for p in points:
+                    if p in seen:
+                        twice.add(p)
+                    seen.add(p)
+                raise KinematikaError("schema", "point-listed-twice", f"bodies.{name}", point=sorted(twice)[0])
+            out[name] = Body(name, list(points), [] if record is None else self.shapes(record, f"bodies.{name}"))
         listed = {p for b in out.values() for p in b.points}
-        for name in self.point_coords:
-            if name not in listed:
-                raise KinematikaError("schema", "point-not-carried", f"points.{name}", point=name)
+        if not listed >= known:             # the first not carried named
+            for name in self.point_coords:
+                if name not in listed:
+                    raise KinematikaError("schema", "point-not-carried", f"points.{name}", point=name)
         return out
 
     def known_point(self, name: str, where: str) -> None:
@@ -298,42 +313,44 @@ class _Builder:
         ids: set[str] = set()
         for i, raw in enumerate(self.spec.joints):
             jid = raw.id if raw.id is not None else f"j{i + 1}"
-            where = f"joints[{i}] ({jid})"
             if not jid.strip():
                 raise KinematikaError("schema", "joint-id-empty", f"joints[{i}].id")
             if jid in ids:
-                raise KinematikaError("schema", "joint-id-twice", where, id=jid)
+                raise KinematikaError("schema", "joint-id-twice", _joint_place(i, jid), id=jid)
             ids.add(jid)
-            out.append(self.joint(i, jid, raw, where))
+            out.append(self.joint(i, jid, raw))
         return out
 
-    def joint(self, i: int, jid: str, raw: schema.JointSpec | Record, where: str) -> Joint:
+    def joint(self, i: int, jid: str, raw: schema.JointSpec | Record) -> Joint:
+        """Joint `i` (`jid`) of the file; its place (`_joint_place`) is written only for an
+        error or a direction (a chain of a thousand pins writes none)."""
         a, b = raw.bodies
         if a not in self.body_map or b not in self.body_map:
+            where = _joint_place(i, jid)
             a, b = (self.known_body(name, f"{where}.bodies") for name in raw.bodies)
         if a == b:
-            raise KinematikaError("schema", "joint-same-body", where, body=a)
+            raise KinematikaError("schema", "joint-same-body", _joint_place(i, jid), body=a)
         kind = joint_kind(raw.type)
         values = _joint_values(raw)
         # the keys' check depends only on the kind and which keys are given: once per such
         # case (a chain of a thousand pins is checked once)
         case = (kind, tuple(map(operator.is_not, values, _NONES)))
         if case not in self._fields_checked:
-            kind.check_fields(dict(zip(shape.JOINT_KEYS, values)), self.dim, where)
+            kind.check_fields(dict(zip(shape.JOINT_KEYS, values)), self.dim, _joint_place(i, jid))
             self._fields_checked.add(case)
         at = raw.at
         if at is not None:
             if at not in self.point_coords:
-                self.known_point(at, f"{where}.at")
+                self.known_point(at, f"{_joint_place(i, jid)}.at")
             if at not in self.body_points[a] or at not in self.body_points[b]:     # (else on any it must be)
                 carriers = [name for name in (a, b) if at in self.body_points[name]]
                 must = kind.point_on.bodies(a, b)
                 missing = [name for name in must if name not in carriers]
                 if missing:
-                    raise KinematikaError("geometry", "joint-point-not-on-body", where, kind=kind.name, point=at,
-                                          body=missing[0])
-        along = self.direction(raw.along, f"{where}.along") if raw.along is not None else None
-        axis = self.direction(raw.axis, f"{where}.axis") if raw.axis is not None else None
+                    raise KinematikaError("geometry", "joint-point-not-on-body", _joint_place(i, jid), kind=kind.name,
+                                          point=at, body=missing[0])
+        along = self.direction(raw.along, f"{_joint_place(i, jid)}.along") if raw.along is not None else None
+        axis = self.direction(raw.axis, f"{_joint_place(i, jid)}.axis") if raw.axis is not None else None
         return Joint(jid, kind.name, a, b, i, at=at, along=along, axis=axis, internal=raw.internal)
 
     def direction(self, raw: list, where: str) -> Direction:

@@ -58,6 +58,11 @@ class Record:
         return f"{type(self).__name__}({', '.join(f'{k}={getattr(self, k)!r}' for k in self.FIELDS)})"
 
 
+# the exact checks made here and the types each accepts: a list or mapping of such values
+# is checked by its values' types at once (`listed`, `mapping`), not value by value
+_EXACT: dict[Check, frozenset[type]] = {}
+
+
 def exact(*types: type) -> Check:
     """A value of exactly one of `types` (never a subclass: a bool is not an int here)."""
     if len(types) == 1:
@@ -67,12 +72,14 @@ def exact(*types: type) -> Check:
             if type(x) is only:
                 return x
             raise Refused
+        _EXACT[check_one] = frozenset(types)
         return check_one
 
     def check(x: Any) -> Any:
         if type(x) in types:
             return x
         raise Refused
+    _EXACT[check] = frozenset(types)
     return check
 
 
@@ -102,11 +109,22 @@ def either(*checks: Check) -> Check:
 
 def optional(check: Check) -> Check:
     """None, or what `check` accepts."""
+    if check in _EXACT:              # None is one more exact type
+        return exact(*_EXACT[check], type(None))
     return lambda x: None if x is None else check(x)
 
 
 def listed(check: Check, shortest: int = 0, longest: Optional[int] = None) -> Check:
     """A list of `shortest` to `longest` items, each checked."""
+    types = _EXACT.get(check)
+    if types is not None:            # each value returned as it is: a copy of the list
+        def check_exact(x: Any) -> list:
+            if type(x) is not list or len(x) < shortest or (longest is not None and len(x) > longest) \
+                    or not types.issuperset(map(type, x)):
+                raise Refused
+            return x.copy()
+        return check_exact
+
     def check_all(x: Any) -> list:
         if type(x) is not list or len(x) < shortest or (longest is not None and len(x) > longest):
             raise Refused
@@ -116,6 +134,15 @@ def listed(check: Check, shortest: int = 0, longest: Optional[int] = None) -> Ch
 
 def mapping(check: Check) -> Check:
     """A mapping of text keys to values, each checked."""
+    types = _EXACT.get(check)
+    if types is not None:            # each value returned as it is: a copy of the mapping
+        def check_exact(x: Any) -> dict:
+            if type(x) is not dict or not _STR.issuperset(map(type, x)) \
+                    or not types.issuperset(map(type, x.values())):
+                raise Refused
+            return x.copy()
+        return check_exact
+
     def check_all(x: Any) -> dict:
         if type(x) is not dict:
             raise Refused
@@ -126,6 +153,9 @@ def mapping(check: Check) -> Check:
             out[k] = check(v)
         return out
     return check_all
+
+
+_STR = frozenset((str,))
 
 
 def first_key(*choices: tuple[str, Check]) -> Check:

@@ -64,12 +64,15 @@ def part_subscript(key: str, lang: Optional[str]) -> str:
     """The subscript `key` (sub.rel, sub.drag, sub.cor) in `lang` (English when None)."""
     words = PART_SUBSCRIPTS[key]
     return words.get(lang or "en", words["en"])
-RATE = re.compile(r"^(omega|alpha)\((.+)\)$")
-SPELLING = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")      # a name sympy writes as a symbol
-INDEX_KEY = re.compile(r"^index\((.+)\)$")                # notation: index(BODY): N
-SPIN_KEY = re.compile(r"^spin\((.+)\)$")                  # notation: spin(JOINT): {symbol, radius}
-CONTACT_KEY = re.compile(r"^contact\((.+)\)$")            # notation: contact(JOINT): NAME
-INDEX = re.compile(r"^[A-Za-z0-9]{1,4}$")                 # a body's index as the notes write it
+
+
+# patterns compiled where first used (`re`'s cache): most models have no `names:` or `notation:`
+RATE = r"^(omega|alpha)\((.+)\)$"
+SPELLING = r"^[A-Za-z][A-Za-z0-9_]*$"      # a name sympy writes as a symbol
+INDEX_KEY = r"^index\((.+)\)$"                # notation: index(BODY): N
+SPIN_KEY = r"^spin\((.+)\)$"                  # notation: spin(JOINT): {symbol, radius}
+CONTACT_KEY = r"^contact\((.+)\)$"            # notation: contact(JOINT): NAME
+INDEX = r"^[A-Za-z0-9]{1,4}$"                 # a body's index as the notes write it
 
 
 @dataclass
@@ -139,7 +142,7 @@ class Wording:
         """parameter name -> its written name, for the parameters the notation spells."""
         out = {}
         for key in self.symbols:
-            if not RATE.match(key):
+            if not re.match(RATE, key):
                 spelt = self.symbol(key, lang)
                 if spelt:
                     out[key] = spelt
@@ -176,16 +179,16 @@ def read_wording(names: Any, notation: Any, bodies: dict, points: dict, paramete
         out.notes[lang] = [_text(t, f"{where}.notes[{i}]") for i, t in enumerate(spec.notes or [])]
     for raw, spelt in (notation or {}).items():
         where = f"notation.{raw}"
-        spin = SPIN_KEY.match(raw.strip())
+        spin = re.match(SPIN_KEY, raw.strip())
         if spin is not None:
             out.spins[_spin_joint(spin.group(1).strip(), joints or {}, where)] = _spin(spelt, parameters, where)
             continue
-        contact = CONTACT_KEY.match(raw.strip())
+        contact = re.match(CONTACT_KEY, raw.strip())
         if contact is not None:
             out.contacts[_contact_joint(contact.group(1).strip(), joints or {}, where)] = _index(spelt, where,
                                                                                                 "contact-name-shape")
             continue
-        index = INDEX_KEY.match(raw.strip())
+        index = re.match(INDEX_KEY, raw.strip())
         if index is not None:
             b = _known(index.group(1).strip(), bodies, "body", where)
             given = {"*": spelt} if isinstance(spelt, str) else dict(spelt)
@@ -276,7 +279,7 @@ def _spin(spelt: Any, parameters: dict, where: str) -> tuple[str, str]:
 
 
 def _index(text: str, where: str, key: str = "index-shape") -> str:
-    if not isinstance(text, str) or not INDEX.match(text):
+    if not isinstance(text, str) or not re.match(INDEX, text):
         raise KinematikaError("schema", key, where, index=str(text))
     return text
 
@@ -300,7 +303,7 @@ def _known(name: str, known: dict, kind: str, where: str) -> str:
 def _notation_key(key: str, bodies: dict, parameters: dict, where: str) -> str:
     """A parameter's name, or omega(body), omega(body/other), alpha(…) of known bodies;
     returned as looked up (a rate without spaces: omega(blades/block))."""
-    rate = RATE.match(key.strip())
+    rate = re.match(RATE, key.strip())
     if rate is None:
         if key not in parameters:
             raise KinematikaError("schema", "notation-key-unknown", where, key=key, parameters=list(parameters))
@@ -319,6 +322,6 @@ def rate_key(kind: str, body: str, relative_to: Optional[str] = None) -> str:
 
 
 def _spelling(name: str, where: str) -> str:
-    if not SPELLING.match(name):
+    if not re.match(SPELLING, name):
         raise KinematikaError("schema", "notation-spelling", where, name=name)
     return name
