@@ -394,6 +394,17 @@ def _formula(ctx: Ctx, exprs: tuple) -> Optional[tuple]:
     return tuple(evaluate(e, env, Symbolic()) for e in exprs)
 
 
+def radius_formula(ctx: Ctx, spec: Any) -> Optional[Any]:
+    """A circle's radius as the model writes it in its parameters (r, not 1 m) in a numeric
+    model, or None when it is a plain number or the model is symbolic (its value is then
+    the formula already): a relation such as a wheel's rolling, ω = |v_O| / r, is written
+    with the symbol, its value being in the Data (nineteenth round b)."""
+    if ctx.symbolic or getattr(spec, "radius", None) is None:
+        return None
+    formula = _formula(ctx, (spec.radius,))
+    return None if formula is None else formula[0]
+
+
 def shape_rows(ctx: Ctx) -> list:
     """[body, shape, what defines it] of every shape: a circle's centre and radius, a line's
     point and direction (a plane's, a disc's axis in space)."""
@@ -411,9 +422,9 @@ def _shape(ctx: Ctx, spec, shape) -> Any:
     if isinstance(spec, (Circle, Disc)):
         centre = point(spec.center_point) if spec.center_point else Value(ctx.clean(shape.center, "len"), "len")
         radius: Value | Inline = Value(ctx.clean(shape.radius, "len"), "len")
-        formula = None if ctx.symbolic else _formula(ctx, (spec.radius,))     # None: a plain number
+        formula = radius_formula(ctx, spec)     # None: a plain number
         if formula is not None:
-            radius = Inline([Value(formula[0], ""), " = ", radius])
+            radius = Inline([Value(formula, ""), " = ", radius])
         return msg("data.circle", centre=centre, radius=radius)
     if isinstance(spec, (Line, Plane)):
         through_point = getattr(spec, "through_point", None)
