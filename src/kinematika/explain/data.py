@@ -23,7 +23,8 @@ import re
 from typing import Any, Optional
 
 from ..model.body_shapes import Circle, Disc, Line, Plane
-from .context import Ctx
+from .context import Ctx, radius_formula
+from .context import model_formula as _formula
 from .document import (Ann, CentreNote, Described, Drawing, Inline, Msg, Name, Section, Sym, Table, Told, Value, msg,
                        names, point)
 from .planar import driver_msg
@@ -377,32 +378,6 @@ def _coordinates(ctx: Ctx, exprs: tuple, value: tuple) -> Any:
     if formula is None or ctx.symbolic:
         return shown
     return Inline([Value(formula, ""), " = ", shown])
-
-
-def _formula(ctx: Ctx, exprs: tuple) -> Optional[tuple]:
-    """The expressions in the parameters' symbols (a numeric model's formulas), or None when
-    they are plain numbers."""
-    names = set().union(*(e.names() for e in exprs)) & set(ctx.model.parameters)
-    if not names:
-        return None
-    import sympy
-
-    from ..algebra.backend import Symbolic
-    from ..expressions import evaluate
-
-    env = {n: sympy.Symbol(n, positive=True) for n in ctx.model.parameters}
-    return tuple(evaluate(e, env, Symbolic()) for e in exprs)
-
-
-def radius_formula(ctx: Ctx, spec: Any) -> Optional[Any]:
-    """A circle's radius as the model writes it in its parameters (r, not 1 m) in a numeric
-    model, or None when it is a plain number or the model is symbolic (its value is then
-    the formula already): a relation such as a wheel's rolling, ω = |v_O| / r, is written
-    with the symbol, its value being in the Data (nineteenth round b)."""
-    if ctx.symbolic or getattr(spec, "radius", None) is None:
-        return None
-    formula = _formula(ctx, (spec.radius,))
-    return None if formula is None else formula[0]
 
 
 def shape_rows(ctx: Ctx) -> list:

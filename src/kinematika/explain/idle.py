@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from .context import Ctx, alpha_sym, omega_sym, read_off
+from .context import Ctx, alpha_sym, omega_sym, radius_formula, read_off
 from .document import Derived, Name, Names, Sym, Value, msg
 from .kinds import rolls
 
@@ -72,7 +72,6 @@ def _centre(ctx: Ctx, b: str, contact: Any) -> Optional[tuple[str, Any, str]]:
     """The named centre of b's circle in the contact (a point of b), its radius (the model's
     symbol when it has one, ω = |v_O| / r, else the length) and the radius's unit kind."""
     from .contacts import centre_name
-    from .data import radius_formula
 
     for body, c in getattr(contact, "centres", []):
         if body != b:
