@@ -86,8 +86,10 @@ def test_a_centre_at_infinity_is_the_instant_centre(name):
 
 
 def test_articulated_translates_by_hand():
-    """C5-2.2: C1 and C2 have one velocity, so S1 does not turn (its instant centre at infinity)."""
-    assert "(its instant centre is at infinity)" in _text("seed_c5_2_2_articulated", "en")
+    """C5-2.2: C1 and C2 have one velocity, so S1 translates; its instant centre is at
+    infinity, perpendicular to that velocity (the translation first: nineteenth round b)."""
+    assert ("so the *chassis S1* translates: every point has the velocity (r·ω, 0); its instant centre is at "
+            "infinity, perpendicular to v_C1.") in _text("seed_c5_2_2_articulated", "en")
 
 
 # 4. no subscript inside a subscript in Markdown --------------------------------------------

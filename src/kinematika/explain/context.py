@@ -315,3 +315,29 @@ def alpha_sym(body: str, relative_to: Optional[str] = None, vector: bool = False
     """α of `body` (relative to another body when given); a vector in 3D."""
     sub_ = body if relative_to is None else f"{body}/{relative_to}"
     return Sym("α", sub_, vector=vector)
+
+
+def model_formula(ctx: "Ctx", exprs: tuple) -> Optional[tuple]:
+    """The expressions in the parameters' symbols (a numeric model's formulas), or None when
+    they are plain numbers."""
+    names = set().union(*(e.names() for e in exprs)) & set(ctx.model.parameters)
+    if not names:
+        return None
+    import sympy
+
+    from ..algebra.backend import Symbolic
+    from ..expressions import evaluate
+
+    env = {n: sympy.Symbol(n, positive=True) for n in ctx.model.parameters}
+    return tuple(evaluate(e, env, Symbolic()) for e in exprs)
+
+
+def radius_formula(ctx: "Ctx", spec: Any) -> Optional[Any]:
+    """A circle's radius as the model writes it in its parameters (r, not 1 m) in a numeric
+    model, or None when it is a plain number or the model is symbolic (its value is then
+    the formula already): a relation such as a wheel's rolling, ω = |v_O| / r, is written
+    with the symbol, its value being in the Data (nineteenth round b)."""
+    if ctx.symbolic or getattr(spec, "radius", None) is None:
+        return None
+    formula = model_formula(ctx, (spec.radius,))
+    return None if formula is None else formula[0]

@@ -23,7 +23,8 @@ import re
 from typing import Any, Optional
 
 from ..model.body_shapes import Circle, Disc, Line, Plane
-from .context import Ctx
+from .context import Ctx, radius_formula
+from .context import model_formula as _formula
 from .document import (Ann, CentreNote, Described, Drawing, Inline, Msg, Name, Section, Sym, Table, Told, Value, msg,
                        names, point)
 from .planar import driver_msg
@@ -379,21 +380,6 @@ def _coordinates(ctx: Ctx, exprs: tuple, value: tuple) -> Any:
     return Inline([Value(formula, ""), " = ", shown])
 
 
-def _formula(ctx: Ctx, exprs: tuple) -> Optional[tuple]:
-    """The expressions in the parameters' symbols (a numeric model's formulas), or None when
-    they are plain numbers."""
-    names = set().union(*(e.names() for e in exprs)) & set(ctx.model.parameters)
-    if not names:
-        return None
-    import sympy
-
-    from ..algebra.backend import Symbolic
-    from ..expressions import evaluate
-
-    env = {n: sympy.Symbol(n, positive=True) for n in ctx.model.parameters}
-    return tuple(evaluate(e, env, Symbolic()) for e in exprs)
-
-
 def shape_rows(ctx: Ctx) -> list:
     """[body, shape, what defines it] of every shape: a circle's centre and radius, a line's
     point and direction (a plane's, a disc's axis in space)."""
@@ -411,9 +397,9 @@ def _shape(ctx: Ctx, spec, shape) -> Any:
     if isinstance(spec, (Circle, Disc)):
         centre = point(spec.center_point) if spec.center_point else Value(ctx.clean(shape.center, "len"), "len")
         radius: Value | Inline = Value(ctx.clean(shape.radius, "len"), "len")
-        formula = None if ctx.symbolic else _formula(ctx, (spec.radius,))     # None: a plain number
+        formula = radius_formula(ctx, spec)     # None: a plain number
         if formula is not None:
-            radius = Inline([Value(formula[0], ""), " = ", radius])
+            radius = Inline([Value(formula, ""), " = ", radius])
         return msg("data.circle", centre=centre, radius=radius)
     if isinstance(spec, (Line, Plane)):
         through_point = getattr(spec, "through_point", None)

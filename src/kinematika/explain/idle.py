@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from .context import Ctx, alpha_sym, omega_sym, read_off
+from .context import Ctx, alpha_sym, omega_sym, radius_formula, read_off
 from .document import Derived, Name, Names, Sym, Value, msg
 from .kinds import rolls
 
@@ -54,10 +54,10 @@ def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool) -> list:
         centre = _centre(ctx, b, contact)
         if centre is None:
             continue
-        name, radius = centre
+        name, radius, unit = centre
         if not any(k in worked or ctx.fixed(k) for k in ctx.model.carriers(name) if k != b):
             continue
-        r = Value(radius, "len")
+        r = Value(radius, unit)          # the model's symbol r (no unit), or a plain number's length
         out: list = [msg("idle.rolling", body=Name(b, "body"), fixed=Name(other, "body"), point=Name(ctx.contact(j))),
                      Derived(omega_sym(b), read_off(ctx, Sym("v", name), r, ctx.omega(b)),
                              ctx.value(ctx.omega(b), "rate"), b, "omega", not ctx.symbolic)]
@@ -68,8 +68,9 @@ def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool) -> list:
     return []
 
 
-def _centre(ctx: Ctx, b: str, contact: Any) -> Optional[tuple[str, Any]]:
-    """The named centre of b's circle in the contact (a point of b) and its radius."""
+def _centre(ctx: Ctx, b: str, contact: Any) -> Optional[tuple[str, Any, str]]:
+    """The named centre of b's circle in the contact (a point of b), its radius (the model's
+    symbol when it has one, ω = |v_O| / r, else the length) and the radius's unit kind."""
     from .contacts import centre_name
 
     for body, c in getattr(contact, "centres", []):
@@ -78,9 +79,10 @@ def _centre(ctx: Ctx, b: str, contact: Any) -> Optional[tuple[str, Any]]:
         name = centre_name(ctx, body, c)
         if name not in ctx.model.bodies[b].points:
             return None
-        for shape in ctx.inst.shapes.get(b, []):
+        for spec, shape in zip(ctx.model.bodies[b].shapes, ctx.inst.shapes.get(b, [])):
             if hasattr(shape, "radius") and ctx.num(tuple(shape.center)) == ctx.num(tuple(c)):
-                return name, ctx.clean(shape.radius, "len")
+                formula = radius_formula(ctx, spec)    # the model's symbol r, its value in the Data
+                return (name, ctx.clean(shape.radius, "len"), "len") if formula is None else (name, formula, "")
     return None
 
 

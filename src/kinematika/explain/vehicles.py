@@ -164,7 +164,7 @@ def _centre(ctx: Ctx, b: str, wheels: list, speeds: dict) -> Optional[list]:
         twin = _twin(ctx, b, witness, speeds)
         reason = (msg("vehicle.translation_equal", body=Name(b, "body"), p=Name(witness), q=Name(twin),
                       vp=Sym("v", witness), vq=Sym("v", twin), value=Value(ctx.clean(speeds[witness], "speed"), "speed"))
-                  if twin else msg("vehicle.translation", body=Name(b, "body"), point=Name(witness)))
+                  if twin else msg("vehicle.translation", body=Name(b, "body"), point=Name(witness), v=Sym("v", witness)))
         return [reason,
                 Derived(omega_sym(b), [], ctx.value(ctx.omega(b), "rate"), b, "omega", False,
                         remark=msg("how.translation"))] + _carried(ctx, b, witness)

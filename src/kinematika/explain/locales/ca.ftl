@@ -462,7 +462,10 @@ centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscame
 centre-joint-gear = el contacte { $joint } de les circumferències primitives,
 centre-joint-prismatic = l’enllaç és prismàtic: el moviment relatiu és una translació i el CIR és a la perpendicular a la guia,
 centre-joint-weld = els dos sòlids són solidaris:
-centre-kennedy = per Aronhold–Kennedy és a la recta que passa per { $l1 } (tercer sòlid { $k1 }) i a la recta que passa per { $l2 } (tercer sòlid { $k2 }); aquestes rectes es tallen
+centre-kennedy = per Aronhold–Kennedy és a la recta que passa per { $l1 } (tercer sòlid { $k1 }) i a la recta que passa per { $l2 } (tercer sòlid { $k2 }); aquestes rectes { $far ->
+        [1] són paral·leles, de manera que
+       *[other] es tallen
+    }
 centre-velocities = les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
@@ -473,13 +476,23 @@ centre-velocities = les velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }, { $vq }, són perpendiculars a les rectes que els uneixen amb el CIR; les perpendiculars es tallen
-centre-lines = és a { $first } i a { $second }; aquestes rectes es tallen
+centre-lines = és a { $first } i a { $second }; aquestes rectes { $far ->
+        [1] són paral·leles, de manera que
+       *[other] es tallen
+    }
 centre-omega = amb les velocitats trobades a «{ sec-velocities }», la velocitat angular respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } és nul·la: el moviment relatiu és una translació i el CIR és
 centre-at = a { $point }.
-centre-infinity = a l’infinit, en la direcció { $direction }.
+centre-infinity = { $body } es trasllada respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }: tots els seus punts tenen la velocitat { $v }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }, { $direction }.
+centre-infinity_one = { $body } es trasllada respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }: tots els seus punts tenen la mateixa velocitat; el seu CIR és a l’infinit, en la direcció perpendicular a aquesta velocitat, { $direction }.
 centre-rest = no hi ha moviment relatiu.
 sec-rates = Velocitats i acceleracions angulars
 rates-intro = Cada sòlid gira respecte del sòlid que el porta: { $w }, i, derivant en els eixos fixos, { $a }.
@@ -623,8 +636,8 @@ vehicle-centre = El CIR { ELISION($body) ->
 vehicle-translation = Les rectes { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    } són paral·leles: el seu CIR és a l’infinit, es trasllada i tots els seus punts es mouen com { $point }.
-vehicle-translation_equal = { $p } i { $q } tenen la mateixa velocitat, { $vp } = { $vq } = { $value }: { $body } no gira (el seu CIR és a l’infinit), es trasllada i tots els seus punts es mouen com { $p }.
+    } són paral·leles, de manera que es trasllada: tots els seus punts es mouen com { $point }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }.
+vehicle-translation_equal = { $p } i { $q } tenen la mateixa velocitat, { $vp } = { $vq } = { $value }, de manera que { $body } es trasllada: tots els seus punts tenen la velocitat { $value }; el seu CIR és a l’infinit, en la direcció perpendicular a { $vp }.
 vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda amb celeritat { $product }, on { $spin } és la seva rotació pròpia al voltant del seu eix, de manera que:
 triad-intro = { $body } està subjectat per tres barres binàries, { $links }: cap equació vectorial d’un sol punt no té només dues incògnites. Com fan els textos per a una tríada, es pren el punt d’Assur { $point }, on es tallen les rectes { $l1 } i { $l3 }, com a punt { ELISION($body) ->
         [vowel] d’{ $body }
@@ -911,7 +924,7 @@ centre-check = Comprovació amb les velocitats trobades a «{ sec-velocities }»
        *[other] de { $q }
     }, { $side }, el mateix punt: { $centre } és { $where }
 sec-centres_v = CIR trobats a partir de les velocitats
-how-centre_infinity = (el seu CIR { $centre } és a l’infinit: es trasllada)
+how-centre_infinity = (es trasllada: el seu CIR { $centre } és a l’infinit)
 how-constant_rate = ({ $sym } = { $value } és constant: { $line } conserva la seva longitud, i la seva velocitat angular la fixen els radis i { $rates }, que és constant)
 idle-rolling = { $body } rodola sense lliscar sobre { $fixed }: el seu punt { $point } del contacte és el seu CIR, de manera que:
 idle-symmetry = { $body } té la mateixa disposició que { $like } (el mateix radi, els mateixos enllaços amb els mateixos sòlids): per simetria gira igual:

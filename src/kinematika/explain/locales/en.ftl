@@ -360,15 +360,22 @@ centre-joint-rolling = the contact point { $joint } (rolling without slipping),
 centre-joint-gear = the contact { $joint } of the pitch circles,
 centre-joint-prismatic = the pair is prismatic: the relative motion is a translation and the centre is perpendicular to the guide,
 centre-joint-weld = the two bodies are one rigid body:
-centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines meet
+centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines { $far ->
+        [1] are parallel, so
+       *[other] meet
+    }
 centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
-centre-lines = it lies on { $first } and on { $second }; these lines meet
+centre-lines = it lies on { $first } and on { $second }; these lines { $far ->
+        [1] are parallel, so
+       *[other] meet
+    }
 centre-omega = with the velocities found in “{ sec-velocities }”, the angular velocity relative to { $frame } { COUNT($frame) ->
         [many] are
        *[one] is
     } zero: the relative motion is a translation and the centre is
 centre-at = at { $point }.
-centre-infinity = at infinity, in the direction { $direction }.
+centre-infinity = { $body } translates relative to { $frame }: every point has the velocity { $v }; its instant centre is at infinity, perpendicular to { $v }, in the direction { $direction }.
+centre-infinity_one = { $body } translates relative to { $frame }: every point has one velocity; its instant centre is at infinity, perpendicular to that velocity, in the direction { $direction }.
 centre-rest = there is no relative motion.
 sec-rates = Angular velocities and accelerations
 rates-intro = Each body turns relative to the body that carries it: { $w }, and, differentiating in the fixed axes, { $a }.
@@ -446,17 +453,14 @@ vehicle-equiprojective_along = By equiprojectivity ({ $q } and { $p } are points
 vehicle-line-wheel_own = the perpendicular at { $point } to the plane of wheel { $joint } (its axle, which is also the perpendicular to { $sym } through { $witness }: the wheel does not slip sideways)
 vehicle-pin_shared = { $point } is the pin common to { $a } and { $b }: { $sym } = { $other }.
 vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }, which has no velocity: { $rest } = 0. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
-vehicle-translation = The lines of { $body } are parallel: { COUNT($body) ->
-        [many] their instant centre is at infinity, they translate
-       *[one] its instant centre is at infinity, it translates
-    }, and every point moves as { $point }.
-vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = { $vq } = { $value }: { $body } { COUNT($body) ->
-        [many] do
-       *[one] does
-    } not turn ({ COUNT($body) ->
-        [many] their instant centre is at infinity), they translate
-       *[one] its instant centre is at infinity), it translates
-    }, and every point moves as { $p }.
+vehicle-translation = The lines of { $body } are parallel, so { COUNT($body) ->
+        [many] they translate: every point moves as { $point }; their instant centre is at infinity
+       *[one] it translates: every point moves as { $point }; its instant centre is at infinity
+    }, perpendicular to { $v }.
+vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = { $vq } = { $value }, so { $body } { COUNT($body) ->
+        [many] translate: every point has the velocity { $value }; their instant centre is at infinity
+       *[one] translates: every point has the velocity { $value }; its instant centre is at infinity
+    }, perpendicular to { $vp }.
 vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane with the speed { $product }, where { $spin } is its spin about its axle, so:
 triad-intro = { $body } { COUNT($body) ->
         [many] are
@@ -632,7 +636,7 @@ side-below_left = below and to the left of { $q }
 side-below_right = below and to the right of { $q }
 centre-check = Check with the velocities found in “{ sec-velocities }”: on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, the same point: { $centre } is { $where }
 sec-centres_v = Instant centres found from the velocities
-how-centre_infinity = (its instant centre { $centre } is at infinity: it translates)
+how-centre_infinity = (it translates: its instant centre { $centre } is at infinity)
 how-constant_rate = ({ $sym } = { $value } is constant: { $line } keeps its length, and its rate is set by the radii and by { $rates }, which is constant)
 idle-rolling = { $body } rolls without slipping on { $fixed }: its point { $point } at the contact is its instant centre, so:
 idle-symmetry = { $body } is placed like { $like } (the same radius, the same joints with the same bodies): by symmetry it turns alike:

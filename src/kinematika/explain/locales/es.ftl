@@ -353,12 +353,19 @@ centre-joint-rolling = el punto de contacto { $joint } (rodadura sin deslizamien
 centre-joint-gear = el contacto { $joint } de las circunferencias primitivas,
 centre-joint-prismatic = el par es prismático: el movimiento relativo es una traslación y el CIR está en la perpendicular a la guía,
 centre-joint-weld = los dos sólidos son solidarios:
-centre-kennedy = por Aronhold–Kennedy está en la recta que pasa por { $l1 } (tercer sólido { $k1 }) y en la recta que pasa por { $l2 } (tercer sólido { $k2 }); estas rectas se cortan
+centre-kennedy = por Aronhold–Kennedy está en la recta que pasa por { $l1 } (tercer sólido { $k1 }) y en la recta que pasa por { $l2 } (tercer sólido { $k2 }); estas rectas { $far ->
+        [1] son paralelas, así que
+       *[other] se cortan
+    }
 centre-velocities = las velocidades respecto de { $frame } de { $p }, { $vp }, y de { $q }, { $vq }, son perpendiculares a las rectas que los unen con el CIR; las perpendiculares se cortan
-centre-lines = está en { $first } y en { $second }; estas rectas se cortan
+centre-lines = está en { $first } y en { $second }; estas rectas { $far ->
+        [1] son paralelas, así que
+       *[other] se cortan
+    }
 centre-omega = con las velocidades halladas en «{ sec-velocities }», la velocidad angular respecto de { $frame } es nula: el movimiento relativo es una traslación y el CIR está
 centre-at = en { $point }.
-centre-infinity = en el infinito, en la dirección { $direction }.
+centre-infinity = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la velocidad { $v }; su CIR está en el infinito, en la dirección perpendicular a { $v }, { $direction }.
+centre-infinity_one = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la misma velocidad; su CIR está en el infinito, en la dirección perpendicular a esa velocidad, { $direction }.
 centre-rest = no hay movimiento relativo.
 sec-rates = Velocidades y aceleraciones angulares
 rates-intro = Cada sólido gira respecto del sólido que lo lleva: { $w }, y, derivando en los ejes fijos, { $a }.
@@ -428,8 +435,8 @@ vehicle-equiprojective_along = Por la propiedad de equiproyectividad ({ $q } y {
 vehicle-line-wheel_own = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje, que es también la perpendicular a { $sym } por { $witness }: la rueda no desliza lateralmente)
 vehicle-pin_shared = { $point } es el pasador común a { $a } y { $b }: { $sym } = { $other }.
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }, que no tiene velocidad: { $rest } = 0. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
-vehicle-translation = Las rectas de { $body } son paralelas: su CIR está en el infinito, se traslada y todos sus puntos se mueven como { $point }.
-vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }: { $body } no gira (su CIR está en el infinito), se traslada y todos sus puntos se mueven como { $p }.
+vehicle-translation = Las rectas de { $body } son paralelas, así que se traslada: todos sus puntos se mueven como { $point }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
+vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }, así que { $body } se traslada: todos sus puntos tienen la velocidad { $value }; su CIR está en el infinito, en la dirección perpendicular a { $vp }.
 vehicle-spin = La rueda { $joint } gira sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda con celeridad { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
@@ -596,7 +603,7 @@ side-below_left = por debajo y a la izquierda de { $q }
 side-below_right = por debajo y a la derecha de { $q }
 centre-check = Comprobación con las velocidades halladas en «{ sec-velocities }»: en la perpendicular a { $v } por { $q }, a la distancia { $arm } = |{ $v }| / |{ $w }| = { $dist } de { $q }, { $side }, el mismo punto: { $centre } está { $where }
 sec-centres_v = CIR hallados a partir de las velocidades
-how-centre_infinity = (su CIR { $centre } está en el infinito: se traslada)
+how-centre_infinity = (se traslada: su CIR { $centre } está en el infinito)
 how-constant_rate = ({ $sym } = { $value } es constante: { $line } conserva su longitud, y su velocidad angular la fijan los radios y { $rates }, que es constante)
 idle-rolling = { $body } { NOUN($body) ->
         [rueda] gira

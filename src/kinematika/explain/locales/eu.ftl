@@ -206,9 +206,9 @@ sec-accelerations = Azelerazioak
 ann-M = mod
 ann-D = norab
 v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: { $marks ->
-        [1] mod modulua ezaguna, norab norabidea ezaguna
-       *[other] M modulua ezaguna, D norabidea ezaguna
-    }, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
+        [1] mod: modulua ezaguna; norab: norabidea ezaguna
+       *[other] M: modulua ezaguna; D: norabidea ezaguna
+    }; ?: ezezaguna (norabidea edo modulua); ⊥ eta ∥ ikurrek norabide ezaguna adierazten dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
         [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
        *[other] ; gorriz, urratsean aurkitutako terminoak
     }.
@@ -279,12 +279,19 @@ centre-joint-rolling = { $joint } kontaktu-puntua (irristatu gabeko errodadura),
 centre-joint-gear = zirkunferentzia primitiboen { $joint } kontaktua,
 centre-joint-prismatic = lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta zentroa gidaren perpendikularrean dago,
 centre-joint-weld = bi solidoak zurrunki lotuta daude:
-centre-kennedy = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean dago ({ $k1 } hirugarren solidoa) eta { $l2 } zentroetatik pasatzen denean ({ $k2 } hirugarren solidoa); zuzen horiek ebakitzen dira
+centre-kennedy = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean dago ({ $k1 } hirugarren solidoa) eta { $l2 } zentroetatik pasatzen denean ({ $k2 } hirugarren solidoa); zuzen horiek { $far ->
+        [1] paraleloak dira; beraz,
+       *[other] ebakitzen dira
+    }
 centre-velocities = { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
-centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek ebakitzen dira
+centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek { $far ->
+        [1] paraleloak dira; beraz,
+       *[other] ebakitzen dira
+    }
 centre-omega = «{ sec-velocities }» atalean aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta zentroa
 centre-at = { $point } puntuan.
-centre-infinity = infinituan, { $direction } norabidean.
+centre-infinity = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek { $v } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean, { $direction }.
+centre-infinity_one = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek abiadura bera dute; biraketa-zentro instantaneoa infinituan dago, abiadura horrekiko norabide perpendikularrean, { $direction }.
 centre-rest = ez dago mugimendu erlatiborik.
 sec-rates = Abiadura eta azelerazio angeluarrak
 rates-intro = Solido bakoitza daraman solidoarekiko biratzen da: { $w }, eta, ardatz finkoetan deribatuz, { $a }.
@@ -347,8 +354,8 @@ vehicle-equiprojective_along = Ekiproiektibitatearen propietateagatik ({ $q } et
 vehicle-line-wheel_own = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza, { $witness } puntuan { $sym } abiadurarekiko perpendikularra ere badena: gurpila ez da alboetara irristatzen)
 vehicle-pin_shared = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } = { $other }.
 vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira, eta zentro horrek ez du abiadurarik: { $rest } = 0; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
-vehicle-translation = { $body } solidoaren zuzenak paraleloak dira: biraketa-zentro instantaneoa infinituan dago, solidoa traslatzen da eta puntu guztiak { $point } bezala mugitzen dira.
-vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }: { $body } solidoa ez da biratzen (biraketa-zentro instantaneoa infinituan dago), traslatzen da, eta puntu guztiak { $p } bezala mugitzen dira.
+vehicle-translation = { $body } solidoaren zuzenak paraleloak dira; beraz, solidoa traslatzen da: puntu guztiak { $point } bezala mugitzen dira; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
+vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }; beraz, { $body } solidoa traslatzen da: puntu guztiek { $value } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $vp } abiadurarekiko norabide perpendikularrean.
 vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $product } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
@@ -509,7 +516,7 @@ side-below_left = { $q } puntuaren azpian eta ezkerrean
 side-below_right = { $q } puntuaren azpian eta eskuinean
 centre-check = Egiaztapena «{ sec-velocities }» atalean aurkitutako abiadurekin: { $q } puntutik { $v } abiadurari marraztutako perpendikularrean, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }, puntu bera: { $centre }, { $where }
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
-how-centre_infinity = ({ $centre } biraketa-zentro instantaneoa infinituan dago: traslatzen da)
+how-centre_infinity = (traslatzen da: { $centre } biraketa-zentro instantaneoa infinituan dago)
 how-constant_rate = ({ $sym } = { $value } konstantea da: { $line } zuzenak bere luzera gordetzen du, eta haren abiadura angeluarra erradioek eta { $rates } konstanteak finkatzen dute)
 idle-rolling = { $body } irristatu gabe errodatzen da { $fixed } solidoaren gainean: kontaktuko { $point } puntua haren biraketa-zentro instantaneoa da; beraz:
 idle-symmetry = { $body } { $like } bezala kokatuta dago (erradio bera, lotura berak solido berekin): simetriagatik berdin biratzen da:

@@ -955,8 +955,20 @@ class Renderer(ABC):
                                             "vq": Value(vq, "speed"), "frame": self.frame_name(a)})
         else:
             why = Msg("centre.omega", {"frame": self.frame_name(a)})
+        where = self.where(c.value)
+        if why.key in ("centre.lines", "centre.kennedy"):
+            why = Msg(why.key, {**why.args, "far": 0})
+        if c.value.get("point") is None and not c.value.get("rest"):
+            # nineteenth round (b): a centre at infinity is said as the translation it is, the
+            # translation first (the notes: a body whose points all have one velocity translates;
+            # its centre is at infinity, perpendicular to that velocity)
+            why = Msg(why.key, {**why.args, "far": 1})
+            v = next((m.args["v"] for m in (*c.perps, *c.via) if isinstance(m, Msg) and "v" in m.args), None)
+            where = Msg("centre.infinity" if v is not None else "centre.infinity_one",
+                        {"body": Name(b, "body"), "frame": self.frame_name(a), "direction": Value(c.value["direction"], ""),
+                         **({"v": v} if v is not None else {})})
         return self.message(Msg("centre.line", {"centre": name, "a": Name(a, "body"), "b": Name(b, "body"), "why": why,
-                                                "where": self.where(c.value)}))
+                                                "where": where}))
 
     def field_args(self, c: CentreNote, name: Sym) -> dict:
         """0 = v_Q + ω × QI: the point Q, its velocity, ω, the arm QI and its length
