@@ -31,5 +31,5 @@ def test_rolling_pair_reverse_by_hand(lang: str) -> None:
     page = rendered("seed_001_rolling_pair", lang)
     lines = [m.group(0) for m in REVERSE.finditer(page)]
     assert len(lines) == 1, lines
-    rel = "rel." if lang == "ca" else "rel"
+    rel = "rel"              # the slides' word in every language (notation.relative, round 19a)
     assert f"v_{{F∈R {rel} N}} = 0" in lines[0]

@@ -49,9 +49,13 @@ def test_relative_motion_is_one_symbol(name, lang):
     assert not REL_RENAMED.search(text), REL_RENAMED.search(text).group(0)
 
 
-FRAME_SAID = {"en": "Relative: v_{rel,E}, the motion seen from the moving frame, the *support*:",
-              "ca": "Relatiu: v_{REL,E}, el moviment vist des de la referència mòbil, el *suport*:",
-              "eu": "Erlatiboa: v_{rel,E}, *euskarria* erreferentzia mugikorretik ikusten den mugimendua:"}
+# the relative motion under the steps' one symbol, both bodies named (round 19a: the
+# composition's point-only v_{rel,E} was a second name of the steps' vector)
+FRAME_SAID = {"en": "Relative: v_{E∈bar rel support}, the motion seen from the moving frame, the *support*:",
+              "ca": "Relatiu: v_{E∈barra rel. suport}, el moviment vist des de la referència mòbil, el *suport*:",
+              "eu": "Erlatiboa: v_{E∈barra rel euskarria}, *euskarria* erreferentzia mugikorretik ikusten den "
+                    "mugimendua:"}
+FRAME_SYM = {"en": "v_{E∈bar rel support}", "ca": "v_{E∈barra rel. suport}", "eu": "v_{E∈barra rel euskarria}"}
 
 
 @pytest.mark.parametrize("lang", sorted(FRAME_SAID))
@@ -59,7 +63,7 @@ def test_relative_motion_says_its_frame_in_words(lang):
     text = rendered("seed_c5_1_3_bar_in_sleeve", lang, "md", drawings=False)
     assert FRAME_SAID[lang] in text
     # the slider's relative motion read off Step 2 by its value, under the one symbol
-    sym = "v_{REL,E}" if lang == "ca" else "v_{rel,E}"
+    sym = FRAME_SYM[lang]
     assert f"{sym} = (−4{',' if lang != 'en' else '.'}364" in text
 
 
@@ -102,7 +106,7 @@ def test_rolling_pair_reverse_is_derived_from_its_step(lang):
     and a_{F∈R rel N} = a_{F∈R} − a_{F∈N}, read here off the contact section's a_{F∈R} and
     a_{F∈N}: the value the line states is that difference."""
     text = rendered("seed_001_rolling_pair", lang, "md", drawings=False)
-    rel = "rel. " if lang == "ca" else "rel "
+    rel = "rel "             # the slides' word in every language (notation.relative, round 19a)
     comp = _composition(text, lang)
     sym = f"a_{{F∈R {rel}N}}"
     line = re.search(re.escape(f"{sym} = −a_{{F∈N {rel}R}} = ") + r"(\([^)]*\))[^\n]*3", comp)

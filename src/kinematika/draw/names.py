@@ -71,11 +71,10 @@ def centre_subscript(a: str, b: str, numbers: dict, labels: dict, named: bool, r
 def pair_tag(model: Any, a: str, b: str, lang: Optional[str] = None) -> str:
     """The subscript of a pair of bodies' instant centre (`centre_subscript`): I_biela, or by
     numbers 13, 2N, 2,11 when the model does not name its bodies in `lang`."""
-    from ..model.wording import part_subscript
 
     named = names_bodies(model, lang)
     return centre_subscript(a, b, body_numbers(model), body_labels(model, lang, named=named), named,
-                            part_subscript("sub.rel_to", lang))
+                            model.wording.relative_word(lang))
 
 
 def shows_tag(tag: str, name: str) -> bool:
@@ -130,9 +129,8 @@ def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
     rel = None if relative_to in (None, model.frame) else labels[relative_to]
     if body is not None and rel is None and model.share_motion(point, model.carriers(point)):
         body = None          # a relative motion names its body always (v_P∈3/2, as the text does)
-    from ..model.wording import part_subscript
 
-    return subscript(letter, point, None if body is None else labels[body], rel, part_subscript("sub.rel_to", lang))
+    return subscript(letter, point, None if body is None else labels[body], rel, model.wording.relative_word(lang))
 
 
 # The letters a contact point is named with when the model names none, in order: J first

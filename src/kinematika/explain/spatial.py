@@ -222,12 +222,15 @@ def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> l
         unit = "speed" if level == "v" else "accel"
         got = parts[key]
         drag = Term(Sym(level, p, sub_key="sub.drag"), ctx.clean(got["drag"], unit), *KNOWN, kind="drag")
-        rel = Term(Sym(level, p, sub_key="sub.rel"), ctx.clean(got["relative"], unit), *KNOWN, kind="relative")
+        # the relative motion written as the steps and the answers write it, both bodies named
+        # (v_{B∈N rel M}): one vector, one symbol on the page (round 19a)
+        rel = Term(Sym(level, relative_name(p, body, moving)), ctx.clean(got["relative"], unit), *KNOWN,
+                   kind="relative")
         side = [drag, rel]
         if level == "a":
             side.append(Term(Sym("a", p, sub_key="sub.cor"), ctx.clean(got["coriolis"], unit), Ann("M"),
                              Ann("D"), ["2 ", omega_sym(moving, vector=not ctx.planar), " × ",
-                                        Sym("v", p, sub_key="sub.rel")], kind="coriolis"))
+                                        Sym("v", relative_name(p, body, moving))], kind="coriolis"))
         target = Term(Sym(level, p), ctx.clean(got["total"], unit), *KNOWN, kind="point")
         out += [msg("composition.drag")] + _drag(ctx, level, p, moving, pivot, drag.sym)
         # one symbol for the relative motion (the notes' v_REL), its frame said in words, never

@@ -73,6 +73,7 @@ INDEX_KEY = r"^index\((.+)\)$"                # notation: index(BODY): N
 SPIN_KEY = r"^spin\((.+)\)$"                  # notation: spin(JOINT): {symbol, radius}
 CONTACT_KEY = r"^contact\((.+)\)$"            # notation: contact(JOINT): NAME
 INDEX = r"^[A-Za-z0-9]{1,4}$"                 # a body's index as the notes write it
+RELATIVE_WORD = r"^[A-Za-z]{1,6}\.?$"          # notation: relative: rel
 
 
 @dataclass
@@ -91,6 +92,14 @@ class Wording:
     contacts: dict[str, str] = field(default_factory=dict)              # rolling joint -> its contact's name
     symbols: dict[str, dict[str, str]] = field(default_factory=dict)    # key -> lang|"*" -> name
     wheels: frozenset = frozenset()                                     # bodies that mesh with a wheel (`meshed`)
+    relative: dict[str, str] = field(default_factory=dict)              # lang|"*" -> the word of v_{P∈b rel a}
+
+    def relative_word(self, lang: Optional[str]) -> str:
+        """The word joining a body to the one it is seen from, v_{B∈N rel M}, ω_{b rel a}: the
+        model's `notation: {relative: WORD}` (the notes' own, rel or REL), else the
+        language's (`PART_SUBSCRIPTS['sub.rel_to']`). One word a page, so that the step, the
+        composition of motions and the answers write one relative vector alike."""
+        return self.relative.get(lang or "", self.relative.get("*", part_subscript("sub.rel_to", lang)))
 
     def title(self, lang: str, default: str) -> str:
         """The model's title in `lang`, else `default` (its `name`)."""
@@ -197,6 +206,14 @@ def read_wording(names: Any, notation: Any, bodies: dict, points: dict, paramete
                     _language(lang, f"{where}.{lang}")
             out.indices[b] = {lang: _index(i, f"{where}.{lang}" if lang != "*" else where) for lang, i in given.items()}
             continue
+        if raw.strip() == "relative":
+            given = {"*": spelt} if isinstance(spelt, str) else dict(spelt)
+            for lang in given:
+                if lang != "*":
+                    _language(lang, f"{where}.{lang}")
+            out.relative = {lang: _relative_word(w, f"{where}.{lang}" if lang != "*" else where)
+                            for lang, w in given.items()}
+            continue
         key = _notation_key(raw, bodies, parameters, where)
         if isinstance(spelt, str):
             out.symbols[key] = {"*": _spelling(spelt, where)}
@@ -276,6 +293,14 @@ def _spin(spelt: Any, parameters: dict, where: str) -> tuple[str, str]:
         raise KinematikaError("schema", "spin-radius-unknown", f"{where}.radius", radius=radius,
                               parameters=Names(parameters))
     return _spelling(spelt["symbol"], f"{where}.symbol"), radius
+
+
+def _relative_word(text: Any, where: str) -> str:
+    """The word of a relative motion (`notation: {relative: rel}`): one to six letters, with
+    an abbreviation's full stop (rel, REL, rel.)."""
+    if not isinstance(text, str) or not re.match(RELATIVE_WORD, text):
+        raise KinematikaError("schema", "index-shape", where, index=str(text))
+    return text
 
 
 def _index(text: str, where: str, key: str = "index-shape") -> str:

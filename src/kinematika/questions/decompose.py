@@ -76,7 +76,12 @@ class Decompose(QuestionKind):
     def part(self, words: Words, q: Asked, key: str, sub: Optional[str]) -> Any:
         """v_{arr,P}, a_{rel,P}, a_{Cor,P}, v_P: the part's word as the subscript."""
         level = "v" if key == "velocity" else "a"
-        return words.sym(level, words.ref(q).point, sub_key=PARTS.get(sub or "", ""))
+        ref = words.ref(q)
+        if sub == "relative" and ref.body and q.moving:
+            # the relative part as the steps write it, both bodies named (v_{B∈N rel M}): one
+            # vector, one symbol in the step, the composition and the answers (round 19a)
+            return words.sym(level, f"{ref.point}∈{ref.body}/{q.moving}")
+        return words.sym(level, ref.point, sub_key=PARTS.get(sub or "", ""))
 
 
 KIND = Decompose()

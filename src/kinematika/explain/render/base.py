@@ -667,7 +667,7 @@ class Renderer(ABC):
         body, then the language's word for "relative to" (rel; Catalan rel., relatiu a,
         since the notes' REL names the moving frame and "resp." reads as "respectivament") and
         the reference, `mòb rel. braç`; never a slash, which reads as a fraction."""
-        return f"{body} {part_subscript('sub.rel_to', self.lang)} {other}"
+        return f"{body} {self.wording.relative_word(self.lang)} {other}"
 
     def numbered(self, s: Sym) -> str:
         """A symbol's subscript with its bodies by their labels (`labels`), as the notes and the
@@ -688,7 +688,7 @@ class Renderer(ABC):
         for i in range(0, len(rest), 2):
             mark, name = rest[i], rest[i + 1] if i + 1 < len(rest) else ""
             name = self.label(name)
-            out += f" {part_subscript('sub.rel_to', self.lang)} {name}" if mark == "/" else mark + name
+            out += f" {self.wording.relative_word(self.lang)} {name}" if mark == "/" else mark + name
         return out
 
     def _body_subscript(self, s: Sym, nums: dict, labels: dict) -> str:
@@ -700,7 +700,7 @@ class Renderer(ABC):
         if s.base == "I" and len(parts) == 2:           # the figures' rule: I_biela, or I_13
             named = self.named()
             shown = centre_subscript(parts[0], parts[1], nums, labels if named else self.numbers(), named,
-                                     part_subscript("sub.rel_to", self.lang))
+                                     self.wording.relative_word(self.lang))
             for p in parts:           # the frame is left out of I_biela: only what is shown
                 if named and labels.get(p) and labels[p] in shown:
                     self.label(p)
