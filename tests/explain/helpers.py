@@ -3,15 +3,21 @@ tie an explanation's numbers to the solver's."""
 from __future__ import annotations
 
 import base64
+import contextlib
 import functools
+import inspect
+import itertools
 import math
 import re
+import traceback
 from pathlib import Path
 from typing import Any
 
+import pytest
+
 import kinematika
 from kinematika.explain import build
-from kinematika.explain.document import Document, Section
+from kinematika.explain.document import Document, Drawing, Figure, Section
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
@@ -46,7 +52,23 @@ def _rendered(name: str, lang: str, fmt: str, drawings: bool) -> str:
     from kinematika.explain import render
 
     _, doc = explained(name)
-    return render(doc, lang, fmt, drawings=drawings)
+    if (name, lang, fmt, drawings) not in RECORDED:
+        return render(doc, lang, fmt, drawings=drawings)
+    # A page whose label layouts the figure tests read: each is recorded as it is made. What
+    # another format of the page made first, and the documents keep (a drawing's SVG in this
+    # language, a polygon's layout), is made again here, the same; a polygon's layout that
+    # another recorded page made (the languages mostly share one) is recorded there.
+    recorded = {id(lay) for found in _LAYOUTS.values() for lay, _, _ in found["polygons"]}
+    for block in doc.blocks():
+        if isinstance(block, Drawing):
+            block._svg.pop(lang, None)
+        elif isinstance(block, Figure):
+            for key in [k for k, lay in block.layouts.items() if id(lay) not in recorded]:
+                del block.layouts[key]
+    with _recording() as found:
+        page = render(doc, lang, fmt, drawings=drawings)
+    _LAYOUTS[(name, lang)] = found
+    return page
 
 
 def render_of(doc: Document, lang: str, fmt: str = "md", drawings: bool = True) -> str:
@@ -115,17 +137,80 @@ def words_of(page: str) -> str:
 NOTES_SEEDS = [s for s in SEEDS if s.startswith(("seed_001_", "seed_c5_"))]
 
 
-def recorded_pages(current: list, langs: tuple = ("en", "ca")) -> dict:
-    """What a patched drawing step appends to `current` while each of the notes' seeds is
-    written in `langs` (Markdown), a list per (seed, language): the label layouts the figure
-    tests read in display units. The caller patches and restores the step."""
-    from kinematika.explain import render
+# The pages whose label layouts are recorded while `rendered` writes them (the notes' seeds in
+# English and in Catalan, whose words are the longest; Markdown with its drawings), and what
+# was recorded, by (seed, language): {"labels": [(placed, tips, px) of each label layout,
+# display units], "polygons": [(layout, items, placed) of each polygon]}.
+RECORDED_LANGS = ("en", "ca")
+RECORDED = frozenset((name, lang, "md", True) for name in NOTES_SEEDS for lang in RECORDED_LANGS)
+_LAYOUTS: dict[tuple[str, str], dict[str, list]] = {}
 
-    found = {}
+
+@contextlib.contextmanager
+def _recording():
+    """Every label layout (`draw.labels.Layout.run`: a mechanism's or a polygon's labels) and
+    every polygon's placement (`explain.render.svg._place`) made inside the block, appended to
+    the dict it yields as they are made; each call returns what it returned (the page is
+    written as without the recording)."""
+    from kinematika.draw import labels
+    from kinematika.explain.render import svg as svg_module
+
+    found: dict[str, list] = {"labels": [], "polygons": []}
+    run, place = labels.Layout.run, svg_module._place
+
+    def recorded_run(self):
+        out = run(self)
+        found["labels"].append((out, self.tips, self.px))
+        return out
+
+    def recorded_place(lay, items):
+        out = place(lay, items)
+        found["polygons"].append((lay, items, out))
+        return out
+
+    labels.Layout.run, svg_module._place = recorded_run, recorded_place
+    try:
+        yield found
+    finally:
+        labels.Layout.run, svg_module._place = run, place
+
+
+def recorded_pages(kind: str) -> dict:
+    """What was recorded of `kind` ("labels" or "polygons", see `_LAYOUTS`) while each of the
+    notes' seeds was written in English and in Catalan (Markdown, with its drawings), a list
+    per (seed, language). The pages are `rendered`'s: each is drawn once a run, for the
+    figure tests and every other test that reads it."""
     for name in NOTES_SEEDS:
-        doc = build(kinematika.solve(EXAMPLES / f"{name}.yaml"))
-        for lang in langs:
-            current.clear()
-            render(doc, lang, "md")
-            found[(name, lang)] = list(current)
-    return found
+        for lang in RECORDED_LANGS:
+            rendered(name, lang, "md")
+    return {key: found[kind] for key, found in _LAYOUTS.items()}
+
+
+def over(**grids) -> Any:
+    """A rule checked over a grid of pages as ONE test: `@over(name=SEEDS, lang=LANGS)` on a
+    check taking `name` and `lang` (and any fixtures) runs it on every combination and fails
+    once, naming every failing (seed, language) with its message. One test item a rule, not
+    76: pytest's collection, reports and setup for each item cost more than most checks."""
+    def wrap(check):
+        params = inspect.signature(check).parameters
+        here = inspect.getsourcefile(check)
+        missing = set(grids) - set(params)
+        assert not missing, f"{check.__name__} takes no {missing}"
+
+        def test(**fixtures):
+            cases = list(itertools.product(*grids.values()))
+            failed = []
+            for values in cases:
+                try:
+                    check(**dict(zip(grids, values)), **fixtures)
+                except (Exception, pytest.fail.Exception) as e:     # said with the other pages' failures
+                    said = "".join(traceback.format_exception_only(e)).strip().replace("\n", "\n    ")
+                    where = [f.lineno for f in traceback.extract_tb(e.__traceback__) if f.filename == here]
+                    failed.append(f"{', '.join(map(str, values))} (line {where[-1] if where else '?'}): {said}")
+            assert not failed, f"{len(failed)} of {len(cases)} pages fail {check.__name__}:\n" + "\n".join(failed)
+
+        functools.update_wrapper(test, check)
+        del test.__wrapped__                    # pytest reads the fixtures from the signature
+        test.__signature__ = inspect.Signature([p for n, p in params.items() if n not in grids])
+        return test
+    return wrap

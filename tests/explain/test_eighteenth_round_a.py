@@ -8,14 +8,13 @@ import re
 
 import pytest
 
-from .helpers import LANGS, SEEDS, rendered
+from .helpers import LANGS, SEEDS, rendered, over
 
 # a_{P∈b rel a} = −a_{P∈a rel b} = (…): the derivation by reversal, in any language
 REVERSE = re.compile(r"^(a_\{(\S+)∈(\S+) (?:rel\.?) (\S+)\}) = −a_\{\2∈\4 (?:rel\.?) \3\} = .*$", re.M)
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_reversed_relative_acceleration_says_why(name: str, lang: str) -> None:
     page = rendered(name, lang)
     for m in REVERSE.finditer(page):

@@ -12,7 +12,7 @@ import re
 
 import pytest
 
-from .helpers import LANGS, rendered
+from .helpers import LANGS, rendered, over
 
 NINETEEN = ["seed_001_p_pair_coriolis", "seed_001_r_pairs", "seed_001_rolling_pair",
             "seed_c5_1_1_pulley_on_cable", "seed_c5_1_2_bar_on_inclined_wheels", "seed_c5_1_3_bar_in_sleeve",
@@ -26,18 +26,17 @@ def page(name: str, lang: str) -> str:
     return rendered(name, lang, "md", drawings=False)
 
 
-@pytest.mark.parametrize("name", NINETEEN)
+@over(name=NINETEEN)
 def test_english_has_no_guillemets(name):
     assert "«" not in page(name, "en") and "»" not in page(name, "en")
 
 
-@pytest.mark.parametrize("name", NINETEEN)
-@pytest.mark.parametrize("lang", ["es", "ca"])
+@over(name=NINETEEN, lang=["es", "ca"])
 def test_no_comma_before_entre(name, lang):
     assert not re.search(r"\), entre ", page(name, lang))
 
 
-@pytest.mark.parametrize("name", NINETEEN)
+@over(name=NINETEEN)
 def test_spanish_rolling_verb(name):
     text = page(name, "es").replace("*", "")
     assert "rueda rueda" not in text
@@ -59,7 +58,7 @@ def test_a_gear_meshes():
     assert "I_{upper planet}: the contact J of the pitch circles" in en
 
 
-@pytest.mark.parametrize("name", ["seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"])
+@over(name=["seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"])
 def test_willis_says_train(name):
     es, ca = page(name, "es"), page(name, "ca")
     if "Willis" in es:

@@ -8,15 +8,13 @@ from __future__ import annotations
 
 import re
 
-import pytest
 
-from .helpers import SEEDS, explained, rendered
+from .helpers import SEEDS, explained, rendered, over
 
 LANGS = ("en", "es", "ca", "eu")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_point_shared_by_parts_with_no_joint_there_is_described_by_the_model(name: str, lang: str) -> None:
     """A point several bodies hold with no joint at it and no circle centred there (only
     parts welded together share it: C5-1.2's K0, C5-1.5's G) is said in the model's own words
@@ -37,7 +35,7 @@ def test_a_point_shared_by_parts_with_no_joint_there_is_described_by_the_model(n
 ROW = re.compile(r"^\| \w+ \| the point of (?:the )?\*([^*]+)\* where (?:it touches|they touch) (?:the )?\*([^*]+)\*")
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_contact_points_are_named_on_the_same_body(name: str) -> None:
     """The Data's contact points are points of one body consistently: no body is the point's
     body in one row and the body touched in another (C5-1.6: T1 and T2 both "the point of the
@@ -58,8 +56,7 @@ def test_the_belts_contacts_by_hand() -> None:
 _OF_RADIUS = {"en": r"(\w+) of radius (\w+)", "es": r"(\w+) de radio (\w+)", "ca": r"(\w+) de radi (\w+)"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_body_named_by_its_radius_keeps_its_name(name: str, lang: str) -> None:
     """A body the model names "wheel of radius R" is never "wheel R" on the page (C5-E.5: the
     model's data and parameter words said "wheel R" three times)."""
@@ -76,8 +73,7 @@ def test_a_body_named_by_its_radius_keeps_its_name(name: str, lang: str) -> None
             assert not re.search(short, page), (name, lang, spelt, re.search(short, page).group(0))
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_sibling_points_described_alike(name: str, lang: str) -> None:
     """Where the model describes a point through a body's code ("centre of the wheel C1 (rear
     left)"), the points numbered alike (C2) are described through theirs too (C5-2.1: "centre

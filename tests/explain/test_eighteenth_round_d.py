@@ -17,12 +17,11 @@ from matplotlib.figure import Figure
 
 import kinematika
 from kinematika.draw.labels import LabelBoard
-from kinematika.explain.render import svg as svg_module
 from kinematika.draw.build import build_scene
 from kinematika.draw.geometry import Box
 from kinematika.draw.joints import scene_symbols
 from kinematika.draw.options import DrawOptions
-from tests.explain.helpers import EXAMPLES, NOTES_SEEDS, recorded_pages
+from tests.explain.helpers import EXAMPLES, NOTES_SEEDS, recorded_pages, over
 
 
 
@@ -110,24 +109,12 @@ def _crossings(p, q, a, b) -> bool:
 
 @pytest.fixture(scope="module")
 def polygons():
-    """Every polygon's layout of the seeds' pages (en, ca): (figure layout, placed labels)."""
-    orig = svg_module._place
-    current: list = []
-
-    def place(lay, items):
-        out = orig(lay, items)
-        current.append((lay, items, out))
-        return out
-
-    svg_module._place = place
-    try:
-        found = recorded_pages(current)
-    finally:
-        svg_module._place = orig
-    return found
+    """Every polygon's layout of the seeds' pages (en, ca): (figure layout, placed labels),
+    recorded as the pages were drawn."""
+    return recorded_pages("polygons")
 
 
-@pytest.mark.parametrize("name", NOTES_SEEDS)
+@over(name=NOTES_SEEDS)
 def test_no_leader_runs_across_two_arrows(polygons, name):
     """In every velocity and acceleration polygon, a label's leader (from its arrow to its box,
     display units) crosses at most two other arrows: 001's acceleration polygon had a_AB^t

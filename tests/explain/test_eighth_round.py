@@ -11,7 +11,7 @@ import yaml
 
 from kinematika.explain.document import Equation, Msg, Section
 
-from .helpers import EXAMPLES, LANGS, SEEDS, explained, rendered, section, words_of
+from .helpers import EXAMPLES, LANGS, SEEDS, explained, rendered, section, words_of, over
 
 
 def _ask(name: str) -> list[dict]:
@@ -37,7 +37,7 @@ def test_the_polygons_example_letter_is_no_symbol(lang):
     assert EXAMPLE[lang].format("a", "A") in rendered("seed_001_r_pairs", lang, drawings=False)
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_no_caption_letters_a_parameter(name):
     parameters = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8")).get("parameters") or {}
     page = rendered(name, "en", drawings=False)
@@ -52,8 +52,7 @@ VELOCITIES = {"en": "angular velocities are signed", "es": "las velocidades angu
               "ca": "les velocitats angulars tenen signe", "eu": "Mugimendu laua: abiadura angeluarrek zeinua"}
 
 
-@pytest.mark.parametrize("name", SEEDS)
-@pytest.mark.parametrize("lang", LANGS)
+@over(name=SEEDS, lang=LANGS)
 def test_the_sign_convention_says_what_the_page_uses(name, lang):
     page = rendered(name, lang, drawings=False)
     _, doc = explained(name)
@@ -91,7 +90,7 @@ def test_the_tricycle_asks_what_the_notes_ask():
         assert "v_{C2" not in rendered("seed_c5_2_1_tricycle", lang, drawings=False)
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_a_seed_names_no_acceleration_it_does_not_ask(name):
     """A seed's notation spells an α (C5-2.1's ψ̈) only where the page has accelerations."""
     notation = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8")).get("notation") or {}
@@ -129,7 +128,7 @@ def _round(model, body: str) -> bool:
     return any(type(s).__name__ in ("Circle", "Disc") for s in model.bodies[body].shapes)
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_a_circle_rolls_on_a_line(name):
     """"Les politges no llisquen al damunt del cable": the subject of a rolling sentence is
     the body with the circle, never a strand rolling on a pulley."""
@@ -168,8 +167,7 @@ def test_the_pulley_rolls_on_the_blocks_strand(lang):
 LEAD_INS = ("do not place it", "no lo sitúan", "no el situen", "ez dute kokatzen")
 
 
-@pytest.mark.parametrize("name", SEEDS)
-@pytest.mark.parametrize("lang", LANGS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_centre_says_what_the_joints_do_not_do(name, lang):
     page = rendered(name, lang, drawings=False)
     assert not any(w in page for w in LEAD_INS), name
@@ -182,8 +180,7 @@ def test_the_third_pulleys_centre_from_its_two_velocities(lang, said):
 
 
 # -- (g) radii written as the notes write them ----------------------------------------------------------------------
-@pytest.mark.parametrize("name", SEEDS)
-@pytest.mark.parametrize("lang", LANGS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_radius_is_renamed_rho(name, lang):
     """The radii have the model's symbols (r, R, 3·r): a relation or Willis' check writes them,
     never ρ_sprocket … "(with ρ_sprocket = r)"."""
@@ -249,8 +246,7 @@ def test_the_pedals_centre_is_the_notes_c(lang):
 SAME_WAY = ("in the same way", "de la misma manera", "de la mateixa manera", "modu berean", "era berean")
 
 
-@pytest.mark.parametrize("name", SEEDS)
-@pytest.mark.parametrize("lang", LANGS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_step_is_done_in_the_same_way(name, lang):
     page = rendered(name, lang, drawings=False)
     assert not any(w in page for w in SAME_WAY), name
@@ -267,7 +263,7 @@ def test_an_asked_planet_has_its_own_equation(name, planet):
     assert planet in turning, turning
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_the_order_lists_the_steps_written(name):
     """Every item of the order of solution is a step the velocities write (C5-1.4's third
     planet, which nothing asks, is neither)."""

@@ -11,7 +11,7 @@ import pytest
 
 from kinematika.model.subscripts import named_labels
 
-from .helpers import LANGS, SEEDS, rendered
+from .helpers import LANGS, SEEDS, rendered, over
 
 # the words a centre placed between/beyond two parallel velocities ends with, by language
 # ("where the speed falls to zero, at ..."), up to the colon before its coordinates
@@ -21,8 +21,7 @@ ZERO_AT = {"en": r"where the speed falls to zero, at ([^:]*):",
            "eu": r"abiadura nulua den tokian, ([^:]*):"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_centre_between_parallel_velocities_says_its_distance_plainly(name, lang):
     """'at r/2 from C3', never 'at C3 I_pulley3 = r/2 from C3' (a segment set equal to the
     distance it is measured from): the distance, then the point it is measured from."""
@@ -51,7 +50,7 @@ def test_a_basque_subscript_is_a_word_with_its_article():
     assert labels["p"] == "polea"          # a stem already ending in -a keeps it
 
 
-@pytest.mark.parametrize("name", ["seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"])
+@over(name=["seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"])
 def test_no_basque_page_writes_a_bare_stem(name):
     page = rendered(name, "eu")
     assert not re.search(r"ω_gurpil(?!a)", page)
@@ -62,8 +61,7 @@ def test_no_basque_page_writes_a_bare_stem(name):
 AND = {"en": "and", "es": "y", "ca": "i", "eu": "eta"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_name_joined_with_and_inside_a_list_joined_with_and(name, lang):
     """'*chain* and *chainring and pedals*' reads as three bodies: a name in a list joined
     by "and" holds no "and" of its own."""
@@ -89,8 +87,7 @@ def test_the_bicycles_wheel_radius_is_written_in_the_pages_language(lang):
     assert f"d = {WHEEL_RADIUS[lang]} R/r" in note
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_polygon_image_is_a_symbol_of_the_page(name, lang):
     """A polygon's image is its point's letter in lower case; when that letter is a
     parameter of the page (C5-E.6's crank axle C beside the wheelbase c) it is primed, c′,
@@ -119,8 +116,7 @@ def test_the_bicycles_crank_axle_image_is_c():
 ENGLISH_LABELS = re.compile(r"\b(?:RL|RR|W[1-4])\b")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", ["seed_c5_2_1_tricycle", "seed_c5_2_2_articulated"])
+@over(name=["seed_c5_2_1_tricycle", "seed_c5_2_2_articulated"], lang=LANGS)
 def test_the_vehicles_wheel_centres_are_language_neutral_letters(name, lang):
     """The notes name no wheel centre in 2.1 and 2.2; they write a wheel's centre C_roda,
     so the model's centres are C1, C2 … (one set of letters in every language), never the
@@ -135,8 +131,7 @@ SIDE_ALONE = {"en": r"across it, to its (?:left|right)", "es": r"a su (?:izquier
               "ca": r"a la seva (?:esquerra|dreta):", "eu": r"perpendikularrean, (?:ezkerretara|eskuinetara):"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_side_across_a_line_says_which_way_it_is_looked_along(name, lang):
     assert not re.search(SIDE_ALONE[lang], rendered(name, lang, drawings=False))
 
@@ -166,8 +161,7 @@ def _structure_column(page: str) -> list[str]:
     return [row.split("|")[1].strip() for row in table]
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_the_structure_column_does_not_mix_letters_and_numbers(name, lang):
     """One style down the column: all numbers, or all the notation's letters."""
     cells = _structure_column(rendered(name, lang, drawings=False))
@@ -185,8 +179,7 @@ def test_the_p_pairs_bodies_are_numbered_in_the_notes_order(lang):
     assert "ω_M" in page and "ω_N" in page
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_markdown_caption_is_read_once_with_one_emphasis(name, lang):
     """Each figure: a short alternative text (its title, no longer than the caption's first
     clause) and the caption below in one italic span, no star inside it (`*R*` nested in

@@ -23,7 +23,7 @@ import re
 
 import pytest
 
-from .helpers import LANGS, SEEDS, rendered
+from .helpers import LANGS, SEEDS, rendered, over
 
 # ---- 1. one symbol for a placed centre ----------------------------------------------------
 
@@ -32,8 +32,7 @@ FOUND = {"en": "placed in “Instant centres”, has no velocity",
          "ca": "trobat a «Centres instantanis de rotació (CIR)», no té velocitat", "eu": "zentroak ez du abiadurarik"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_placed_centre_is_never_renamed_i(name, lang):
     """The pulley's centre was "I_pulley … is the point I: v_I = 0" (two symbols for one
     point): no point I stands on a page beside a centre's symbol, and the equations start at
@@ -66,8 +65,7 @@ NEW_RATE = {"en": r"from (ω\S*) \(found [^)]*\): it lies on",
             "eu": r"(ω\S*) abiadura angeluarretik \([^)]*aurkitua\): "}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_centre_from_a_rate_names_the_rate_first(name, lang):
     """C5-1.6, E.5, E.6: the rate is named, its route in brackets, and it is the rate the
     distance |v_Q| / |ω| divides by."""
@@ -86,7 +84,7 @@ def test_the_chainrings_centre_from_its_rate(lang):
 
 # ---- 3. Spanish: gira sin deslizar ---------------------------------------------------------
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_spanish_never_says_the_wheel_wheels(name):
     """Nine Spanish pages read "La rueda rueda sin deslizar", "Las ruedas ruedan sin deslizar"
     (other bodies "ruedan sin deslizar" since the eighteenth round (b))."""
@@ -162,8 +160,7 @@ ALSO = {"en": "perpendicular to v_P through P", "es": "perpendicular a v_P por P
         "ca": "perpendicular a v_P per P", "eu": "P puntuan v_P abiadurarekiko perpendikularra"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_sentence_says_the_axle_is_the_perpendicular_apart(name, lang):
     """C5-2.2 read "The perpendicular to v_P through P is the axle of wheel C3 itself: the
     second line is the perpendicular to v_O through O." and then the centre's sentence named
@@ -197,8 +194,7 @@ def test_the_tricycles_pin_carries_the_given_velocity(lang):
     assert said < page.index(f"{chassis}  =")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_point_of_a_body_used_is_given_or_said(name, lang):
     """Every "Given: v_{P∈a}" whose P starts an equation as v_{P∈b} (another body) has the
     equality v_{P∈b} = v_{P∈a} said on the page."""

@@ -10,7 +10,7 @@ import pytest
 
 from kinematika.explain.catalogue import VOWEL_LETTERS
 
-from .helpers import SEEDS, explained, rendered
+from .helpers import SEEDS, explained, rendered, over
 
 
 def _vowel_points(name: str) -> list[str]:
@@ -60,8 +60,7 @@ def _run_together(label: str, body: str, lang: str) -> bool:
     return any("".join(p) == label for choice in product(*forms) for p in permutations(choice))
 
 
-@pytest.mark.parametrize("lang", ("en", "es", "ca", "eu"))
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=("en", "es", "ca", "eu"))
 def test_no_legend_entry_for_a_subscript_read_off_the_name(name: str, lang: str) -> None:
     """"Notació: ω_politja1 és la velocitat angular de la politja 1; …" (C5-1.4, 1.5, 2.1,
     E.2, E.5, E.6 in every language) is a line a teacher deletes: a subscript that is the

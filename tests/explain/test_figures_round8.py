@@ -20,7 +20,7 @@ from kinematika.draw.joints import scene_symbols
 from kinematika.draw.options import DrawOptions
 
 from tests.draw.artists import axes
-from .helpers import EXAMPLES, LANGS, SEEDS, rendered
+from .helpers import EXAMPLES, LANGS, SEEDS, rendered, over
 from .helpers import words_of as _words
 
 
@@ -103,8 +103,7 @@ def _straight_bodies(name: str, lang: str) -> list[str]:
     return out
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_straight_body_never_rolls(name, lang):
     """No sentence says a strand, a belt's run or a block's edge rolls: "*tram 2* rodola"."""
     text = rendered(name, lang, drawings=False)

@@ -20,7 +20,7 @@ import re
 
 import pytest
 
-from .helpers import LANGS, SEEDS, rendered
+from .helpers import LANGS, SEEDS, rendered, over
 
 COMPOSITION = ("seed_001_p_pair_coriolis", "seed_001_rolling_pair", "seed_c5_1_3_bar_in_sleeve")
 DRAG = {"en": "Drag: the motion of the point of the moving frame that coincides with it:",
@@ -35,8 +35,7 @@ def page(name: str, lang: str) -> str:
     return rendered(name, lang, "md", drawings=False)
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_the_drag_is_the_coinciding_point(name, lang):
     """Rule 1: every composition section says the drag twice (velocities, accelerations) as
     the point of the moving frame that coincides with the point; never "where the point is"."""
@@ -56,8 +55,7 @@ STEP_TITLE = {"en": r"^### Step (\d+):", "es": r"^### Paso (\d+):", "ca": r"^###
               "eu": r"^### (\d+)\. urratsa:"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_what_a_step_found_is_referred_to_by_its_number(name, lang):
     """Rule 2: no "found above" for what a step found; each step a reference names is on the page."""
     text = page(name, lang)
@@ -91,8 +89,7 @@ def test_the_steps_named_by_hand(name, said, lang):
 WHEEL_WORDS = {"en": "wheel", "es": "rueda", "ca": "roda", "eu": "gurpila"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", ("seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"))
+@over(name=("seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"), lang=LANGS)
 def test_no_meshing_wheel_is_written_by_the_word_wheel(name, lang):
     """Rule 3: where wheels mesh with wheels, ω_wheel (ω_roda, ω_rueda, ω_gurpila) does not
     tell the sun / the fixed central wheel from the planets, which are wheels too."""
@@ -171,8 +168,7 @@ def test_a_strand_translates_by_its_velocity_component(lang):
 EMPHASISED_IN_FORMULA = re.compile(r"(?:[=/·×+−(]|\bat|\ba) \*[^\s*]{1,6}\*(?=\s*[=/·×+−)φω])")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_parameter_is_emphasised_inside_a_formula(name, lang):
     """Rule 7: "/ *r*", "*s* = 0.4 m", "at *r* φ̇": a parameter in a formula is a symbol."""
     text = "\n".join(line for line in page(name, lang).splitlines() if not line.startswith("|"))

@@ -9,11 +9,10 @@ from __future__ import annotations
 import base64
 import re
 
-import pytest
 
 from kinematika.draw.names import contact_names
 
-from .helpers import LANGS, SEEDS, SVG, explained, rendered
+from .helpers import LANGS, SEEDS, SVG, explained, rendered, over
 
 MARKS = {"M", "D"}
 
@@ -41,8 +40,7 @@ def _contacts(name: str) -> dict[str, str]:
     return {jid: c for jid, c in contact_names(sol.model, sol).items() if c not in sol.model.points}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_every_contact_has_its_letter_in_table_and_figure(name, lang):
     """Every contact of the page — the structure table gives each rolling joint's place —
     has a letter: a row of the Data's points table, the letter (never its coordinates
@@ -66,7 +64,7 @@ def test_by_hand_the_upper_wheel_names_its_fourth_contact():
     assert "| *roda dreta* – *roda superior* | Q |" in _section(page, 2)
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_a_contact_letter_is_free(name):
     """A contact's made-up letter is no point's initial, no parameter, no one-letter body
     (001's N and R) and never M or D, the marks under every equation's terms."""
@@ -81,8 +79,7 @@ def test_a_contact_letter_is_free(name):
         assert contact[:1] not in taken, (name, jid, contact)
 
 
-@pytest.mark.parametrize("lang", ("ca", "eu"))
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=("ca", "eu"))
 def test_a_place_has_one_letter_in_a_figure(name, lang):
     """No figure prints a point's or a contact's letter twice: 001's "F  F" (the contact's
     mark and the page's letter) and C5-1.8's "J  J"."""
@@ -95,8 +92,7 @@ def test_a_place_has_one_letter_in_a_figure(name, lang):
         assert not twice, (name, lang, k + 1, twice)
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_fixed_circle_is_named_in_the_figure(name, lang):
     """A fixed body drawn as a circle of its own (C5-E.2's fixed central wheel, C5-1.8's
     cylinder, C5-E.1's cavity) carries its name in the mechanism's figure, as the structure

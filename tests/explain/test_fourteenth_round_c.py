@@ -22,7 +22,7 @@ import re
 import pytest
 import sympy
 
-from .helpers import LANGS, SEEDS, explained, rendered
+from .helpers import LANGS, SEEDS, explained, rendered, over
 from .test_thirteenth_round_c import repeats
 
 
@@ -33,7 +33,7 @@ def _prose(text: str) -> str:
 
 # ---- 1. Basque word order; one rule for "solidoa" -----------------------------------------
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_basque_has_no_relative_clause_calque(name):
     """"…, zeina X puntuaren inguruan biratzen baita" and "…, zeinean zehar irristatzen baita"
     are Romance relative clauses in Basque words; Basque puts the relative before its noun."""
@@ -52,7 +52,7 @@ def test_basque_centre_lines_by_hand(name, said):
     assert said in rendered(name, "eu", "md", drawings=False)
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_basque_solidoa_only_where_the_name_cannot_decline(name):
     """A body's name that ends in the article -a takes the case ending itself everywhere
     (*polearen*, *kable-zatiarekin*): never "*eskuineko kable-zatia* solidoarekin" beside
@@ -77,8 +77,7 @@ OLD_CARRIED = ("(it passes through the points they turn about)", "(pasa por los 
                "(passa pels punts al voltant dels quals giren)", "(zuzen hori biratzen diren puntuetatik pasatzen da)")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_centre_says_its_side_and_nothing_more(name, lang):
     text = rendered(name, lang, "md", drawings=False)
     assert not any(x in text for x in OLD_SIDE_LEAD + OLD_CARRIED), name
@@ -99,8 +98,7 @@ def test_the_belts_centre_by_hand(lang, said):
 
 # ---- 3. said once ---------------------------------------------------------------------------
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_sentence_of_the_data_said_again_in_a_step(name, lang):
     """The thirteenth round's repeat check without its exemption for the Data: a datum's
     sentence is said once (a step may recall a datum as "Given: symbol = value")."""
@@ -178,8 +176,7 @@ def test_the_third_pulleys_centre_before_the_block(lang):
 
 # ---- 5. equiprojectivity with positive numbers -------------------------------------------------
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_quotient_of_two_negatives(name, lang):
     text = rendered(name, lang, "md", drawings=False)
     assert not re.search(r"\(−[^()]*\) / \(−", text), name
@@ -213,8 +210,7 @@ def test_the_rolling_pairs_caption_names_a_once(lang):
     assert CAPTION[lang] in rendered("seed_001_rolling_pair", lang, "md", drawings=True)
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_caption_lists_a_point_twice(name, lang):
     """"geziak A eta A (…) puntuen abiadurak dira": a list of points with one point twice."""
     text = rendered(name, lang, "md", drawings=True)

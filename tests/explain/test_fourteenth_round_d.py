@@ -15,7 +15,7 @@ from kinematika.draw.build import build_scene
 from kinematika.draw.options import DrawOptions
 from kinematika.explain.document import Drawing, Equation, Figure
 
-from .helpers import LANGS, SEEDS, SVG, explained, rendered
+from .helpers import LANGS, SEEDS, SVG, explained, rendered, over
 
 # how each language says a centres' line through two centres, and a polygon's terms between
 # the images (the clause the polygon's caption gives only when it draws such a term)
@@ -96,7 +96,7 @@ def _labels(page: str) -> list[str]:
             for c in re.findall(r"<!--(.*?)-->", base64.b64decode(b64).decode("utf-8"), re.S)]
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_figure_formulas_never_lead_a_difference_with_its_minus(name: str) -> None:
     """A figure's formula label is written in the text's form: a difference of two terms with
     its positive term first and the product's minus taken into it — never "−v(r₁ − r₂)/r₂" or
@@ -120,8 +120,7 @@ NUMERIC = [n for n in SEEDS if not explained(n)[0].symbolic]
 UNIT = {"en": "in m/s", "es": "en m/s", "ca": "en m/s", "eu": "(m/s-tan)"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", NUMERIC)
+@over(name=NUMERIC, lang=LANGS)
 def test_numeric_magnitudes_have_their_unit(name: str, lang: str) -> None:
     """A numeric page's mechanism figure writes magnitudes (v_B = 11); its caption gives
     their unit once, as the text gives every value's."""
@@ -129,7 +128,7 @@ def test_numeric_magnitudes_have_their_unit(name: str, lang: str) -> None:
     assert UNIT[lang] in caption, (name, lang, caption)
 
 
-@pytest.mark.parametrize("name", [n for n in SEEDS if n not in NUMERIC])
+@over(name=[n for n in SEEDS if n not in NUMERIC])
 def test_symbolic_captions_add_no_unit(name: str) -> None:
     """A symbolic page's labels are formulas of its symbols: no unit is added to its caption."""
     assert "m/s" not in _captions(name, "en")[0]

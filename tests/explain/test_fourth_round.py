@@ -5,13 +5,12 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-import pytest
 
 import kinematika.explain
 
 from kinematika.explain.catalogue import LANGS
 
-from .helpers import SEEDS, explained, rendered
+from .helpers import SEEDS, explained, rendered, over
 
 def _text(name: str, lang: str) -> str:
     return rendered(name, lang, "md", drawings=False)
@@ -36,8 +35,7 @@ def _point(symbol: str) -> str:
     return m.group(1) if m else symbol
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_drag_the_steps_wrote_is_referred_to_not_written_again(name, lang):
     """No equation repeats a sum of two or more terms an earlier equation of the page already
     wrote for another symbol (001's v_arr,B = v_A + v_BA after v_B∈M = v_A + v_BA): the
@@ -62,8 +60,7 @@ def _opening(key: str, lang: str) -> str:
     return line.split(" = ", 1)[1].split("{", 1)[0].strip()
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_centre_is_placed_once(name, lang):
     """No centre is placed again, as a check, from the velocities once the page has placed it
     (C5-2.2's "check with the velocities found: … the same point: I_S2"): each instant
@@ -77,8 +74,7 @@ LEGEND = {"en": "Notation: ", "es": "Notación: ", "ca": "Notació: ", "eu": "No
 OMEGA = re.compile(r"ω_(\{[^}]*\}|(?:[^\s{}()|·,;:²/−+=×]|·(?=[a-zà-ÿ]{2}))+)")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_shortened_subscript_is_defined_on_the_page(name, lang):
     """Every ω_X the page writes is a body's whole name as written (ω_besoa, ω_{roda sup} is
     a name the model gives), a number (the structure's table), or defined once on the page
@@ -107,8 +103,7 @@ def test_a_shortened_subscript_is_defined_on_the_page(name, lang):
         assert re.search(rf"ω_(?:{re.escape(sub)}|\{{{re.escape(sub)}\}}) \S", legend), sub   # "Notation: ω_X is …"
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_the_mechanism_caption_says_which_velocities_it_draws(name, lang):
     """The mechanism's caption names the points whose velocities the figure draws (one arrow:
     "the arrow is the velocity of B"; C5-E.4's P at rest: "P is at rest"), never "the arrows

@@ -17,12 +17,12 @@ import re
 
 import pytest
 
-from .helpers import SEEDS, rendered
+from .helpers import SEEDS, rendered, over
 
 RELATIVE_SUB = re.compile(r"_\{([^}]*)\}")
 
 
-@pytest.mark.parametrize("name", ["seed_001_p_pair_coriolis", "seed_c5_1_6_belt", "seed_c5_1_3_bar_in_sleeve"])
+@over(name=["seed_001_p_pair_coriolis", "seed_c5_1_6_belt", "seed_c5_1_3_bar_in_sleeve"])
 def test_catalan_relative_subscript_is_rel(name):
     """v_{B∈N rel. M}, ω_{politja fixa rel. braç}: the Catalan notes' REL in lower case with
     the abbreviation's point; "resp." reads as "respectivament", a slash as a division."""
@@ -48,7 +48,7 @@ def test_catalan_centres_intro_says_rel():
     assert "resp." not in text
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_symbols_legend_only_for_symbols_written(name):
     """Each "Notació: ω_X és la velocitat angular …" entry names a symbol the page writes
     elsewhere (C5-1.8's ω_terra was defined and never written)."""
@@ -92,9 +92,8 @@ def test_magnitude_then_vector(name, lang, towards):
     assert not re.search(r"\^n = [^=\n]*(²|· [A-Z]+) = \(", text), "a magnitude set equal to a vector"
 
 
-@pytest.mark.parametrize("name", ["seed_c5_1_7_semicylinder", "seed_c5_1_8_contact_points", "seed_c5_e1_cavity",
-                                  "seed_001_r_pairs"])
-@pytest.mark.parametrize("lang", ["ca", "eu"])
+@over(name=["seed_c5_1_7_semicylinder", "seed_c5_1_8_contact_points", "seed_c5_e1_cavity",
+                                  "seed_001_r_pairs"], lang=["ca", "eu"])
 def test_no_magnitude_equals_vector(name, lang):
     """No term line `a^n = ω² · PC = (…)` or `= v² / OC = (…)` on any of the pages the audit named."""
     text = rendered(name, lang, "md", drawings=False)

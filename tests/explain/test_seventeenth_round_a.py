@@ -19,7 +19,7 @@ import sympy
 
 from kinematika.explain.document import Derived, Equation, Msg, Table
 
-from .helpers import LANGS, SEEDS, explained, rendered
+from .helpers import LANGS, SEEDS, explained, rendered, over
 
 SUB = re.compile(r"v_(\{[^{}]*(?:\{[^{}]*\}[^{}]*)*\}|[A-Za-z0-9]+)")
 
@@ -29,8 +29,7 @@ def _page(name: str, lang: str) -> str:
 
 
 # -- 1. the centre's full symbol, the composition about it ------------------------------------
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_velocity_subscript_ends_in_a_bare_centre(name: str, lang: str) -> None:
     """No v_FI, v_C1I, v_PI, v_C4I: a subscript ending in a bare I that is no point of the
     model reads as a point I; the centre is written in full, v_{FI_{chassis}}."""
@@ -42,8 +41,7 @@ def test_no_velocity_subscript_ends_in_a_bare_centre(name: str, lang: str) -> No
             pytest.fail(f"{name} {lang}: v_{m.group(1)}")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", ["seed_c5_2_1_tricycle", "seed_c5_2_2_articulated"])
+@over(name=["seed_c5_2_1_tricycle", "seed_c5_2_2_articulated"], lang=LANGS)
 def test_a_velocity_about_the_centre_is_the_notes_composition(name: str, lang: str) -> None:
     """Each equation about the chassis' centre is v_P = v_{I_b} + v_{P I_b} (v_{I_b} = 0),
     never the one-term v_P = v_PI."""
@@ -68,7 +66,7 @@ def _placed_first(doc) -> set[str]:
     return {b for n in sec.blocks if getattr(n, "how", None) == "joint" for b in n.pair}
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_a_contact_the_centres_section_placed_is_referred_to(name: str) -> None:
     """C5-1.3: "I_support: the contact point J" in the centres section, then a step saying
     again "the support rolls … so it is the instant centre of the support": the step refers
@@ -84,8 +82,7 @@ STEP_AGAIN = {"en": r"I_\S+ = \([^)]*\): placed in Step", "es": r"I_\S+ = \([^)]
               "ca": r"I_\S+ = \([^)]*\): trobat al pas", "eu": r"I_\S+ = \([^)]*\): \d+\. urratsean aurkitua"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_centre_a_step_found_is_not_written_again(name: str, lang: str) -> None:
     """C5-1.5 "I_pulley3 = (9r/2, −4r): placed in Step 3" after Step 3 wrote it: the closing
     section names it and its step, without the value again."""
@@ -98,7 +95,7 @@ def test_the_reader_s_centres_name_their_step() -> None:
         assert line in _page(name, lang), (name, lang)
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_the_composition_does_not_sum_again_what_a_step_summed(name: str) -> None:
     """001's v_B = v_arr,B + v_rel,B where Step 2 wrote v_{B∈rocker} = v_{B∈M} + v_{B∈N rel M}:
     no equation of the composition section has a drag term and a point a step's equation
@@ -124,8 +121,7 @@ def test_001_composition_refers_to_step_2(lang: str) -> None:
 
 
 # -- 3. an angular acceleration from a constant rate -------------------------------------------
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_zero_alpha_read_off_a_bar_of_centres(name: str, lang: str) -> None:
     """No "α_OC = |a_CO^t| / OC = 0": a line of centres turning at a constant rate has α = 0
     by its constancy."""
@@ -162,7 +158,7 @@ def test_c5_2_2_left_wheel_on_the_left(lang: str) -> None:
     assert SIDES[lang][0] in c3 and SIDES[lang][1] in c4, (lang, c3, c4)
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_a_named_side_matches_the_words(name: str) -> None:
     """Every English point named a left (right) wheel is placed on the left (right)."""
     sol, _ = explained(name)
@@ -185,7 +181,7 @@ def _rates_table(doc) -> set[str]:
     return {r[0].text for r in table.rows}
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_every_listed_body_has_its_rate_or_is_said_unused(name: str) -> None:
     """A moving body of the structure table is in the table of rates, or a sentence says it
     does not enter the question; no α cell is left "—" for a body given its rate."""

@@ -7,9 +7,8 @@ from __future__ import annotations
 
 import re
 
-import pytest
 
-from .helpers import SEEDS, rendered
+from .helpers import SEEDS, rendered, over
 
 LANGS = ("en", "es", "ca", "eu")
 
@@ -37,8 +36,7 @@ STEPS = {
 HEADING = {"en": r"### Step (\d+)", "es": r"### Paso (\d+)", "ca": r"### Pas (\d+)", "eu": r"### (\d+)\. urratsa"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_back_reference_points_above(name: str, lang: str) -> None:
     """No sentence or caption sends the reader "above": it names the step (Step 3) or the
     section («Velocities», «Instant centres») where the quantity was found."""
@@ -47,8 +45,7 @@ def test_no_back_reference_points_above(name: str, lang: str) -> None:
     assert not re.search(CHECK[lang], page), (name, lang, re.search(CHECK[lang], page))
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_polygon_caption_names_steps_the_page_has(name: str, lang: str) -> None:
     """A level polygon's caption names the steps whose equations it draws, and each is a step
     heading of the page (a caption naming Step 0 or a step not written is a broken reference)."""

@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from .helpers import SEEDS, rendered
+from .helpers import SEEDS, rendered, over
 
 LANGS = ("en", "es", "ca", "eu")
 EXAMPLE = {"en": r"\(([a-z][0-9]*) for ([A-Z][0-9]*)\)", "es": r"\(([a-z][0-9]*) para ([A-Z][0-9]*)\)",
@@ -20,8 +20,7 @@ def _points(page: str) -> set[str]:
     return set(re.findall(r"^\| ([A-Z][0-9]*) \|", page, flags=re.M))
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_captions_lettering_example_is_a_point_of_the_page(name, lang):
     page = rendered(name, lang, drawings=False)
     for m in re.finditer(EXAMPLE[lang], page):

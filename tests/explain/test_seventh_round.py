@@ -8,7 +8,7 @@ import pytest
 
 import yaml
 
-from .helpers import EXAMPLES, LANGS, explained, rendered
+from .helpers import EXAMPLES, LANGS, explained, rendered, over
 
 # -- (a) the vehicles ask what the notes ask: no acceleration part -----------------------------------------------------
 # C5-2.1 asks the chassis' centre, the precession ψ̇, the rear left wheel's centre velocity and
@@ -18,7 +18,7 @@ from .helpers import EXAMPLES, LANGS, explained, rendered
 VEHICLES = ("seed_c5_2_1_tricycle", "seed_c5_2_2_articulated")
 
 
-@pytest.mark.parametrize("name", VEHICLES)
+@over(name=VEHICLES)
 def test_a_vehicle_asks_no_acceleration(name):
     asks = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8"))["ask"]
     assert not {kind for ask in asks for kind in ask} & {"acceleration", "intrinsic", "alpha", "curvature"}
@@ -85,8 +85,7 @@ PARTS = {"seed_c5_1_6_belt": {"en": "fixed pulley", "eu": "polea finkoa"},
          "seed_c5_e2_gear_change": {"en": "fixed central wheel", "eu": "gurpil zentral finkoa"}}
 
 
-@pytest.mark.parametrize("name", sorted(PARTS))
-@pytest.mark.parametrize("lang", ("en", "eu"))
+@over(name=sorted(PARTS), lang=("en", "eu"))
 def test_the_ground_word_is_introduced_at_the_part(name, lang):
     page = rendered(name, lang, drawings=False)
     assert f"| 1 | *{PARTS[name][lang]}* ({GROUND[lang]})" in page

@@ -14,7 +14,7 @@ import re
 
 import pytest
 
-from .helpers import LANGS, SEEDS, rendered
+from .helpers import LANGS, SEEDS, rendered, over
 
 SHAPES = {"en": "shapes", "es": "formas", "ca": "formes", "eu": "formak"}
 RADIUS = {"en": "of radius", "es": "de radio", "ca": "de radi", "eu": "erradioko"}
@@ -27,8 +27,7 @@ def _structure_table(page: str) -> list[str]:
     return page[start:end].strip().splitlines()
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_the_structure_table_has_no_shapes_column(name, lang):
     """The header was `| no. | body | points | shapes |`, the last cell empty on most rows."""
     rows = _structure_table(rendered(name, lang, "md", drawings=False))
@@ -44,7 +43,7 @@ ROUND = {"seed_001_rolling_pair": {"roller R": "0.1 m"},
          "seed_c5_1_7_semicylinder": {"semicylinder": "2·r", "wheel": "r"}}
 
 
-@pytest.mark.parametrize("name", sorted(ROUND))
+@over(name=sorted(ROUND))
 def test_a_round_body_cell_gives_its_radius(name):
     rows = _structure_table(rendered(name, "en", "md", drawings=False))
     for body, radius in ROUND[name].items():

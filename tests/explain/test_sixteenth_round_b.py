@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from .helpers import EXAMPLES, LANGS, SEEDS, rendered
+from .helpers import EXAMPLES, LANGS, SEEDS, rendered, over
 
 COMPOSITION = {"en": "## Composition of motions", "es": "## Composición de movimientos",
                "ca": "## Composició de moviments", "eu": "## Mugimenduen konposizioa"}
@@ -40,8 +40,7 @@ def _composition(text: str, lang: str) -> str:
 REL_RENAMED = re.compile(r"[va]_\{(?:REL|rel),[^}]+\} = [va]_[{A-Za-z]")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_relative_motion_is_one_symbol(name, lang):
     """C5-1.3 (ca): "Relatiu: …, v_{REL,E} = v_{E∈barra rel. suport}" and "v_{REL,E} =
     v_{Q∈barra rel. suport} = (…)" named one vector twice; the notes write v_REL only."""
@@ -73,8 +72,7 @@ def test_relative_motion_says_its_frame_in_words(lang):
 RELATIVE_SYM = re.compile(r"[va]_\{[^{}∈ ]+∈[^{}]+ rel\.? [^{}]+\}")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_composition_relative_terms_are_derived_before_use(name, lang):
     """Every relative motion the composition's equations use is written before the
     composition (a step) or derived in it before the equation that uses it: 001's
@@ -125,8 +123,7 @@ def test_rolling_pair_reverse_is_derived_from_its_step(lang):
 TRIVIAL = re.compile(r"\bv_([A-Z][A-Za-z0-9]*) = v_\{\1∈")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_contact_point_equated_with_its_material_point(name, lang):
     text = rendered(name, lang, "md", drawings=False)
     assert not TRIVIAL.search(text), TRIVIAL.search(text).group(0)

@@ -23,7 +23,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from .helpers import EXAMPLES, SEEDS, rendered
+from .helpers import EXAMPLES, SEEDS, rendered, over
 
 LOCALES = Path(__file__).resolve().parents[2] / "src" / "kinematika" / "explain" / "locales"
 
@@ -38,14 +38,14 @@ def names(name: str) -> dict:
 
 # ---- 1. Basque words ------------------------------------------------------------------------
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_eu_two_point_names_never_side_by_side(name):
     """"C O-ren zuzen gainean" (C5-1.7, 1.8, E.1): a point name followed at once by another
     in a case is read as one name; a word (zentroa) or a comma stands between them."""
     assert not re.search(r"\b[A-Z]\d*′? [A-Z]\d*′?-(?:ren|rekin|ri|tik|ra|n)\b", page(name, "eu"))
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_eu_the_words_the_reader_marked(name):
     """Tangent to a body is "-ekiko ukitzaile"; "2 zenbakia", not "2a"; the Basque
     "propietateagatik"; "giltzatutako barra"; one term for a pendulum motion."""
@@ -100,8 +100,7 @@ def test_a_shared_point_names_each_body_with_its_preposition(key, tmp_path):
     assert SHARED[key] in page_
 
 
-@pytest.mark.parametrize("lang", ("ca", "es"))
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=("ca", "es"))
 def test_no_list_of_bodies_drops_the_preposition(name, lang):
     """"del terra, el pla esquerre i el pla dret": after the first body a list never goes on
     with a bare article where the first had "de"."""
@@ -131,8 +130,7 @@ SYNONYMS = {"es": [("planeta", "rueda central")], "ca": [("roda central", "plane
             "eu": [("gurpil zentral", "planeta")]}
 
 
-@pytest.mark.parametrize("lang", sorted(SYNONYMS))
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=sorted(SYNONYMS))
 def test_the_models_words_call_a_body_by_its_name(name, lang):
     """C5-1.4 es: the sun is "el planeta" but a parameter said "radio de la rueda central":
     the model's own words (points, parameters, data, notes) use the body's name."""
@@ -146,8 +144,7 @@ def test_the_models_words_call_a_body_by_its_name(name, lang):
                 assert other not in told
 
 
-@pytest.mark.parametrize("lang", ("en", "es", "ca", "eu"))
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=("en", "es", "ca", "eu"))
 def test_a_points_description_says_what_it_is(name, lang):
     """C5-E.2 es "| O | centro |": a centre says whose it is."""
     points = (names(name).get(lang) or {}).get("points") or {}

@@ -10,35 +10,18 @@ from __future__ import annotations
 
 import pytest
 
-from kinematika.draw import labels
-from tests.explain.helpers import NOTES_SEEDS, recorded_pages
+from tests.explain.helpers import NOTES_SEEDS, recorded_pages, over
 
 
 
 @pytest.fixture(scope="module")
 def layouts():
     """Every label layout (boxes and the arrows' tips, display units) of the seeds' pages in
-    English and Catalan (whose words are the longest), drawn afresh."""
-    orig_init, orig_run = labels.Layout.__init__, labels.Layout.run
-    current: list = []
-
-    def init(self, board, ax):
-        orig_init(self, board, ax)
-
-    def run(self):
-        out = orig_run(self)
-        current.append((out, self.tips, self.px))
-        return out
-
-    labels.Layout.__init__, labels.Layout.run = init, run
-    try:
-        found = recorded_pages(current)
-    finally:
-        labels.Layout.__init__, labels.Layout.run = orig_init, orig_run
-    return found
+    English and Catalan (whose words are the longest), recorded as the pages were drawn."""
+    return recorded_pages("labels")
 
 
-@pytest.mark.parametrize("name", NOTES_SEEDS)
+@over(name=NOTES_SEEDS)
 def test_no_two_labels_touch_and_none_covers_a_tip(layouts, name):
     for lang in ("en", "ca"):
         for placed, tips, px in layouts[(name, lang)]:

@@ -10,7 +10,7 @@ import re
 
 import pytest
 
-from .helpers import SEEDS, explained, rendered
+from .helpers import SEEDS, explained, rendered, over
 
 LANGS = ("en", "es", "ca", "eu")
 LEGEND = {"en": "Notation: ", "es": "Notación: ", "ca": "Notació: ", "eu": "Notazioa: "}
@@ -30,8 +30,7 @@ def _shortened(label: str, name: str) -> bool:
     return any(w not in text and w.rstrip("a") not in text for w in words)
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_shortened_subscript_is_said(name: str, lang: str) -> None:
     """A page writing ω_X where X drops words of the body's name (ω_central for the *roda
     central*, ω_plat for the *plat amb els pedals*, ω_rodaR for the *roda de radi R*) says once
@@ -91,8 +90,7 @@ ABOVE = {"ca": ("més amunt",), "es": ("hallado arriba",), "en": ("placed above"
          "eu": ("goian aurkitu", "gorago aurkitu")}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_centre_at_rest_names_where_it_was_found(name: str, lang: str) -> None:
     """"I_rodeta1, trobat més amunt, no té velocitat" (C5-1.1, 1.2, 1.3, 1.4, E.3, E.4): the
     step names the section that placed the centre, «Centres instantanis de rotació (CIR)»."""
@@ -102,7 +100,7 @@ def test_a_centre_at_rest_names_where_it_was_found(name: str, lang: str) -> None
             assert not any(w in line for w in ABOVE[lang]), (name, lang, line)
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_basque_senses_are_a_pair(name: str) -> None:
     """Basque writes a rate's sense as "(erlojuaren orratzen aurkako noranzkoan)" beside
     "(erlojuaren orratzen noranzkoan)", never the bare "(erlojuaren orratzen aurka)"."""

@@ -21,7 +21,7 @@ from kinematika.draw.options import DrawOptions
 from kinematika.explain.document import Drawing
 
 from tests.draw.artists import arrow, axes, pixel
-from .helpers import LANGS, SEEDS, explained, rendered
+from .helpers import LANGS, SEEDS, explained, rendered, over
 
 # what each language calls a relative and a drag velocity in a caption's list
 RELATIVE = {"en": "relative velocity", "es": "velocidad relativa", "ca": "velocitat relativa",
@@ -43,8 +43,7 @@ def _captions(name: str, lang: str) -> list[str]:
                       flags=re.M)
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_caption_names_every_velocity_arrow_drawn(name, lang):
     """As many velocity arrows as the figure draws, as many the caption names: each relative
     arrow by the words "relative velocity" and its symbol's subscript (B∈N … M)."""
@@ -71,7 +70,7 @@ def test_the_prismatic_pair_caption_lists_three_arrows():
             assert w in caption, caption
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_a_velocity_arrow_starts_at_its_point(name):
     """Read off the drawn arrows: every velocity arrow's path starts at its point (the scene's
     origin of the vector), never ends there."""
@@ -98,8 +97,7 @@ def _mark_rows(md: str) -> list[list[str]]:
     return rows
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_the_marks_are_never_a_name_on_the_page(name, lang):
     """A page that names a point, contact or body M or D writes neither letter as a mark,
     nor in the legend; any other page writes the notes' M and D."""
@@ -140,7 +138,7 @@ def test_the_block_is_drawn_at_its_point():
         assert any(np.linalg.norm(c - k) <= 3 * pixel(fig) for c in centres), (centres, k)
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_a_strand_ends_at_its_points(name):
     """A moving line body that guides nothing (a cable's strand) is drawn from its first point
     or contact to its last, never past them (C5-1.1's strands ran past G1 and G2)."""

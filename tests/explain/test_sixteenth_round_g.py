@@ -10,9 +10,8 @@ from __future__ import annotations
 
 import re
 
-import pytest
 
-from .helpers import LANGS, SEEDS, SVG, body_of, rendered
+from .helpers import LANGS, SEEDS, SVG, body_of, rendered, over
 
 CODE = re.compile(r"```.*?```", re.S)
 SPIN_SEEDS = ("seed_c5_2_1_tricycle", "seed_c5_2_2_articulated")
@@ -29,8 +28,7 @@ CALQUES = {
 }
 
 
-@pytest.mark.parametrize("lang", sorted(CALQUES))
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=sorted(CALQUES))
 def test_no_calques_of_english_prepositions(name, lang):
     """'a s a lo largo de la guía' is 'a una distancia s de A a lo largo de la guía'; 'por B a
     β' is 'que pasa por B y forma un ángulo β con la horizontal'; a speed is 'con celeridad
@@ -50,8 +48,7 @@ def test_the_calques_replaced_by_hand():
     assert "A y B se mantienen siempre a una altura igual al radio de su rueda sobre el suelo plano" in e5
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_reason_for_translating_is_said_once(name, lang):
     """The reason a body does not turn (its wheels' centres on one line or on parallel lines)
     is said at velocities; α = 0 refers to it instead of saying it again (C5-E.5)."""
@@ -61,8 +58,7 @@ def test_a_reason_for_translating_is_said_once(name, lang):
 
 
 # 2. a magnitude over a length --------------------------------------------------------------
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SPIN_SEEDS)
+@over(name=SPIN_SEEDS, lang=LANGS)
 def test_a_spin_is_a_magnitude_over_a_length(name, lang):
     """C5-2.1 by hand: C1 rolls, so r φ̇ = |v_C1|, φ̇ = |v_{C1∈chassis}| / r = v₀ (L − s)/(√2 L r);
     never the vector v_C1 over the length r."""
@@ -77,7 +73,7 @@ def test_tricycle_spin_by_hand():
 
 
 # 3. the instant centre at infinity ---------------------------------------------------------
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_a_centre_at_infinity_is_the_instant_centre(name):
     """'(its instant centre is at infinity)', never 'its centre is at infinity' (a wheel's
     centre is a point of the page); Basque 'biraketa-zentro instantaneoa', not 'zentroa'."""
@@ -93,8 +89,7 @@ def test_articulated_translates_by_hand():
 
 
 # 4. no subscript inside a subscript in Markdown --------------------------------------------
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_nested_subscript_in_markdown(name, lang):
     """A velocity to a centre reads as plain text: v_{C,I_pulley} (the notes' v_C,I), never
     v_{CI_{pulley}}; a bare segment keeps the thirteenth round's CI_{pulley}, I_{pulley}C. A
@@ -113,8 +108,7 @@ def test_pulley_on_cable_by_hand():
 
 
 # 5. one bar character -------------------------------------------------------------------------
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_one_bar_character(name, lang):
     """A magnitude's bars are '|' on every page, in every format: no '∣' (U+2223)."""
     for fmt in ("md", "html"):
@@ -127,8 +121,7 @@ def test_semicylinder_answers_keep_the_bars():
 
 
 # 6. a body's name marked the same way ---------------------------------------------------------
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_body_name_is_always_in_italics(name, lang):
     """Where a body's name is written in italics anywhere on the page, it is never written
     upright as a whole word in the model's own words (the Data section: its statements and
@@ -151,8 +144,7 @@ def test_pulley_block_points_by_hand():
 
 
 # 7. the centres' intro names a centre the page places ----------------------------------------
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_the_centres_intro_names_a_centre_the_page_uses(name, lang):
     """The symbol the first sentence of 'Instant centres' takes as its example is used again."""
     text = CODE.sub("", _text(name, lang))

@@ -6,12 +6,11 @@ from __future__ import annotations
 import math
 import re
 
-import pytest
 import sympy
 
 from kinematika.explain.document import Equation, Msg, Section
 
-from .helpers import LANGS, explained, num, rendered
+from .helpers import LANGS, explained, num, rendered, over
 
 
 def _blocks(sec: Section) -> list:
@@ -33,7 +32,7 @@ def _sym(expr, name: str):
 ROLLING_CENTRES = ("seed_c5_e4_upper_wheel", "seed_c5_e5_unequal_wheels", "seed_c5_e6_bicycle")
 
 
-@pytest.mark.parametrize("name", ROLLING_CENTRES)
+@over(name=ROLLING_CENTRES)
 def test_a_rolling_centre_alone_is_alpha_times_its_radius(name):
     """A wheel's centre found alone on its straight path is a_C = α × JC (the notes' v_C = Ω × JC,
     differentiated): the one term is written by its formula with α named, never a_C = a_CJ^t,

@@ -13,7 +13,7 @@ from kinematika.explain.catalogue import LANGS
 from kinematika.explain.context import ambiguous, point_labels, segment
 from kinematika.explain.render.unicode import formula_values, unicode_formula
 
-from .helpers import SEEDS, explained, rendered
+from .helpers import SEEDS, explained, rendered, over
 
 # two labels joined by a hyphen (A-O1, v_{A1-J}): a capital, then letters, digits or primes
 HYPHENATED = re.compile(r"(?<![\w′'-])([A-Z][A-Za-z0-9′']*)-([A-Z][A-Za-z0-9′']*)(?![\w′'])")
@@ -37,8 +37,7 @@ def _split_ways(joined: str, labels: set[str]) -> set[tuple[str, str]]:
             if joined[:k] in labels and joined[k:] in labels}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_hyphen_between_two_point_labels_unless_ambiguous(name, lang):
     """A segment or a subscript of two points (v_BA, OA1, v_AO1) never joins them with a
     hyphen, which reads as the difference B − A; only where the run-together text reads as
@@ -81,8 +80,7 @@ SAID = {"eu": r" \S.*? abiadura angeluarra da", "ca": " és la velocitat angular
         "en": " is the angular velocity"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_shortened_subscript_is_said_only_when_the_page_writes_it(name, lang):
     """The legend under the structure table (ω_pista: *pista zilindrikoa*) names only labels
     that some symbol of the page writes (a subscript _pista, _{… pista …}, ∈pista)."""
@@ -96,14 +94,13 @@ def test_a_shortened_subscript_is_said_only_when_the_page_writes_it(name, lang):
         assert used, label
 
 
-@pytest.mark.parametrize("name", ["seed_c5_1_7_semicylinder", "seed_c5_e1_cavity"])
+@over(name=["seed_c5_1_7_semicylinder", "seed_c5_e1_cavity"])
 def test_the_audits_unused_legends_are_gone(name):
     """C5-1.7 and C5-E.1 write no ω of their fixed part: no legend for it."""
     assert "Notazioa" not in _text(name, "eu")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_backslash_a_plain_text_reader_sees(name, lang):
     """Neither \\| nor \\> in a page's Markdown: a magnitude in a table's cell keeps the
     notes' bars (the table written as a list), a comparison is written as it is."""

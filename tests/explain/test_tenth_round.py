@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 import kinematika
 from kinematika.explain import build, render
 
-from .helpers import ALL, EXAMPLES, LANGS, explained, rendered
+from .helpers import ALL, EXAMPLES, LANGS, explained, rendered, over
 
 # the words a page says a driven body speeds up or slows down with, by language
 FASTER = {"en": "is speeding up", "es": "se acelera", "ca": "s’accelera", "eu": "azkartzen ari da"}
@@ -40,7 +40,7 @@ def _expected(model: dict) -> dict:
     return out
 
 
-@pytest.mark.parametrize("name", ALL)
+@over(name=ALL)
 def test_speeding_up_follows_the_signs_of_every_example(name):
     """Every planar example's driven body with a numeric ω and α: the Data says it speeds up
     exactly when ω·α > 0 (seed 001's crank O2E, ω = −5, α = +2, was said to speed up)."""
@@ -94,7 +94,7 @@ def test_p_pair_data_sentence_reads():
 BARE_LEAD = re.compile(r"(?m)^\*[A-Z][^*]*\* [a-z]")        # a paragraph opening *Wheel* rolls
 
 
-@pytest.mark.parametrize("name", ["seed_c5_e1_cavity", "seed_c5_e4_upper_wheel", "seed_c5_1_6_belt",
+@over(name=["seed_c5_e1_cavity", "seed_c5_e4_upper_wheel", "seed_c5_1_6_belt",
                                   "seed_001_p_pair_coriolis"])
 def test_english_body_names_take_the_article(name):
     page = rendered(name, "en", drawings=False)

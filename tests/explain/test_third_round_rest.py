@@ -19,7 +19,7 @@ import re
 
 import pytest
 
-from .helpers import LANGS, SEEDS, explained, rendered
+from .helpers import LANGS, SEEDS, explained, rendered, over
 
 
 def _answers(page: str) -> list[str]:
@@ -69,7 +69,7 @@ def test_held_pin_by_its_symbol(lang):
     assert check not in page
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_every_contact_named_is_in_data(name):
     """Every contact point the page names (J6 in C5-E.4's structure table and centres, in no
     equation) is a row of the Data section's points."""
@@ -121,7 +121,7 @@ def test_data_sentences_and_captions_read(lang):
     assert said in page
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_catalan_rel_names_the_frame_only(name):
     """The Catalan notes keep REL as the name of the moving frame (v_REL, Ω_REL); "relative
     to" joins two names with rel. (relatiu a): ω_{politja fixa rel. braç}, never

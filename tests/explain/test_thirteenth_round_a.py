@@ -8,11 +8,10 @@ from __future__ import annotations
 import base64
 import re
 
-import pytest
 
 from kinematika.draw.names import contact_names
 
-from .helpers import LANGS, SEEDS, SVG, body_of, explained, rendered
+from .helpers import LANGS, SEEDS, SVG, body_of, explained, rendered, over
 
 CODE = re.compile(r"```.*?```", re.S)
 
@@ -37,8 +36,7 @@ def _named(text: str, name: str) -> bool:
     return re.search(rf"(?<![\w′']){re.escape(name)}(?![\w′'])", text) is not None
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_contact_points_labelled_as_the_text_names_them(name, lang):
     """Every contact point the text names (J, K, T2 … that is no model point: those are
     labelled already) is labelled in the figures with the text's letter; a contact the text
@@ -72,8 +70,7 @@ SPACED_MD = re.compile(r"I_(?:\{[^}]*\}|[^\s{}|,;:)]+) [A-Z][0-9]?(?![\w(])|(?<!
 SPACED_HTML = re.compile(r"<i>I</i><sub>[^<]*</sub> <span class=\"pt\">|</span> <i>I</i><sub>")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_segment_to_a_centre_runs_together(name, lang):
     """A segment from a centre's symbol to a point is written as every segment of the page,
     its two ends side by side: I_{S2}P, DI_{roda1}, v_{OI_{OJ}} (Markdown, the subscript
@@ -101,8 +98,7 @@ def _equalities(name: str) -> list:
             and e.sides[0][0].kind == "point" and e.target.kind == "point"]
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_trivial_equality_has_no_marks(name, lang):
     """v_T2 = v_T1 (two points of one contact, a point shared by two bodies, the points of a
     strand that translates) is one line, "v_T2 = v_T1 = (0; −2·v)", with no M/D/? rows: a
@@ -128,8 +124,7 @@ def test_pulley_block_strand_velocity_is_a_plain_equality():
 WELD = re.compile(r"weld|soldat|soldad|unid[oa]s? rígidamente|units? rígidament|unió rígida|unión rígida", re.I)
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_weld_words(name, lang):
     """The notes say a part is fixed to the ground ("fixa a terra") and two bodies solidaris
     ("el pinyó és solidari a la roda posterior"), one rigid body: no "welded", "soldat",

@@ -21,13 +21,13 @@ import re
 
 import pytest
 
-from .helpers import LANGS, SEEDS, rendered
+from .helpers import LANGS, SEEDS, rendered, over
 
 RELATIVE_SUB = re.compile(r"_\{[^}]*\}")
 
 
 # 7 ------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_basque_relative_subscript_is_the_slides_rel(name):
     """Seed 001 (the Basque slides) writes v_B = v_arr + v_rel and a_rel, 2 ω_M · v_rel: never erl."""
     text = rendered(name, "eu", "md", drawings=False)
@@ -52,8 +52,7 @@ FIXED_AXIS = {"en": "which turn about the fixed axis through O", "es": "que gira
               "eu": "O puntutik pasatzen den ardatz finkoaren inguruan biratzen dira"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_willis_carries_the_planets_axle_only(name, lang):
     """C5-1.4 and E.2: the carrier (arm), pinned to the frame at O, carries the planet's axle;
     the sun and the ring are pinned to the frame at O too, so the carrier does not carry
@@ -81,8 +80,7 @@ def test_willis_by_hand():
 COMMA_COORDINATES = re.compile(r"\((?=[^()]*\d)[^\s();,]+(?:,[^\s();,]+)?(?:, [^\s();,]+(?:,[^\s();,]+)?){1,2}\)")
 
 
-@pytest.mark.parametrize("lang", ["es", "ca", "eu"])
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=["es", "ca", "eu"])
 def test_one_coordinate_separator_a_page(name, lang):
     """Where the decimal sign is a comma the page writes (x; y); the model's own words too."""
     text = rendered(name, lang, "md", drawings=False)
@@ -107,8 +105,7 @@ def test_english_coordinates_keep_the_comma():
 LOWER_START = re.compile(r"^(?:\d+\. )?\*[^\W\dA-Z]{2}", re.M)
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_name_that_begins_a_sentence_takes_a_capital(name, lang):
     """The order of solution and the welded parts' sentence begin with the body's name: it
     takes a capital, as a name with its article does ("1. La *politja 1*")."""
@@ -139,7 +136,7 @@ PRONOUNED = {"rolling-glide": "b", "path-circle": "b", "path-line": "b", "input-
              "what-touching": "body", "cond-prismatic": "a"}
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_english_pronouns_agree_with_a_plural_name(name):
     """C5-E.1: "The *wheels* roll without slipping … Their centre C", never "Its centre"."""
     text = rendered(name, "en", "md", drawings=False)
@@ -180,8 +177,7 @@ def test_english_messages_take_the_pronoun_from_the_name(key, var):
 OLD_SIDE = ("points when turned 90°", "girada 90°", "90° biratuta")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_centre_placed_from_one_velocity_names_its_side(name, lang):
     """0 = v_Q + ω × QI: the centre is on the perpendicular to v_Q through Q at |v_Q|/|ω|, on
     the side the sense of ω gives, said by name (below Q, to the left of Q)."""

@@ -20,7 +20,7 @@ import pytest
 
 from kinematika.explain.document import Equation
 
-from .helpers import LANGS, SEEDS, explained, rendered, words_of
+from .helpers import LANGS, SEEDS, explained, rendered, words_of, over
 
 
 def _body(sym_sub: str) -> str:
@@ -41,7 +41,7 @@ def _rigid_sides(eq: Equation):
                 yield [eq.target] + points, bodies.pop()
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_each_side_of_a_rigid_relation_is_one_bodys(name):
     """v_B = v_A + ω_b × AB: a point written with a body (B∈x) is a point of b itself. By
     hand from the notes (slides 4.4, C5-1.4): v_F∈R = v_F∈N at the contact, then v_F∈R =
@@ -81,8 +81,7 @@ def test_the_teachers_equations_by_hand(name, lang, equation):
 
 # ---- 2. a placed centre said plainly ----------------------------------------------------
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_centre_is_said_with_an_equivalence_sign(name, lang):
     """"El CIR I_politja ≡ I" read as notation to decode: the centre's symbol and the point's
     name are said in words (… és el punt I)."""
@@ -165,8 +164,7 @@ def repeats(page: str) -> list[tuple[str, str]]:
     return found
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_sentence_is_said_twice(name, lang):
     """C5-2.1 placed the chassis' centre in step 1 and again, word for word, in the centres
     section; the check fails on that page as main wrote it (`test_the_check_finds_the_old_repeat`)."""
@@ -227,8 +225,7 @@ def test_the_geometric_points_fraction(lang):
 NUMBER_LABEL = re.compile(r"\b[va]_?[A-Z]\w* (?:=|≈) −?(?:[1-9]\d*(?:[.,]\d+)?|0[.,]\d+)")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_symbolic_figures_label_no_vector_by_a_number(name, lang):
     """C5-E.6: "vP = 4,03" on a page whose data are symbols; the figures' labels are the
     vectors' names (their values are formulas the text gives)."""
@@ -242,7 +239,7 @@ def test_symbolic_figures_label_no_vector_by_a_number(name, lang):
 
 # ---- 7. the model's names ----------------------------------------------------------------
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_basque_names_the_rolling_body_by_its_name(name):
     """001: the roller R (arrabola) rolls on the lever's edge: "ardatzak *R arrabolaren* A
     zentroan", never "gurpilaren" for a body the model does not call gurpil."""

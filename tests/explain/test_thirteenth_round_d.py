@@ -10,7 +10,7 @@ import re
 
 import pytest
 
-from .helpers import LANGS, SEEDS, rendered
+from .helpers import LANGS, SEEDS, rendered, over
 
 # the old vague references to an earlier step, in the four languages
 VAGUE = ("found in the steps above", "in the step above", "relative motion found above",
@@ -24,8 +24,7 @@ STEP_TITLE = {"en": r"^### Step (\d+):", "es": r"^### Paso (\d+):", "ca": r"^###
               "eu": r"^### (\d+)\. urratsa:"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_an_earlier_step_is_named_by_its_number(name, lang):
     """No page refers to "the step(s) above"; every step a reference names exists on the page."""
     text = rendered(name, lang, "md", drawings=False)
@@ -61,8 +60,7 @@ NEITHER = {"en": r"slips on neither the \*[^*]+\* nor the \*[^*]+\*",
            "eu": r"ez da irristatzen ez \*[^*]+\* [^,;:]*? ez \*[^*]+\*"}
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_belt_slips_on_neither_pulley(name, lang):
     """Never "does not slip on X nor on Y"; where a page says a belt or chain keeps to both
     wheels (C5-1.6's belt, C5-E.6's chain), it says it in its language's neither … nor."""
@@ -76,8 +74,7 @@ APOSTROPHE = {"en": "'", "ca": "’"}
 APOSTROPHES = re.compile(r"(?<=\w)['’]")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_one_apostrophe_a_page(name, lang):
     """A page's apostrophes (a catalogue's and the model's own words) are one character:
     English straight, Catalan typographic; C5-2.2 wrote "wheel’s" and "wheel's"."""

@@ -16,7 +16,7 @@ import re
 
 import pytest
 
-from .helpers import LANGS, SEEDS, rendered
+from .helpers import LANGS, SEEDS, rendered, over
 
 ORDER = {"en": "## Order of solution", "es": "## Orden de resolución", "ca": "## Ordre de resolució",
          "eu": "## Ebazpen-ordena"}
@@ -25,8 +25,7 @@ LEGEND = {"en": "Notation: ", "es": "Notación: ", "ca": "Notació: ", "eu": "No
 OLD_LEGEND = ("In the symbols", "En los símbolos", "En els símbols", "Ikurretan")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_no_step_is_found_from_an_empty_list(name, lang):
     """No line of the order of solution ends "from —." (or its translation)."""
     text = rendered(name, lang, "md", drawings=False)
@@ -34,8 +33,7 @@ def test_no_step_is_found_from_an_empty_list(name, lang):
     assert "a partir —" not in text and "from —" not in text
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", ["seed_c5_e4_upper_wheel", "seed_c5_e5_unequal_wheels", "seed_c5_e6_bicycle"])
+@over(name=["seed_c5_e4_upper_wheel", "seed_c5_e5_unequal_wheels", "seed_c5_e6_bicycle"], lang=LANGS)
 def test_the_translating_chassis_is_found_from_the_data(name, lang):
     """By hand from the notes: the chassis (frame) translates at the given velocity v, so it is
     the first body found, and from the data alone."""
@@ -44,8 +42,7 @@ def test_the_translating_chassis_is_found_from_the_data(name, lang):
     assert first and first.group(1).endswith(DATA[lang]), (name, first and first.group(1))
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_the_subscripts_legend_is_a_sentence(name, lang):
     """The legend, where a page has one, says what each short symbol is in a sentence."""
     text = rendered(name, lang, "md", drawings=False)
