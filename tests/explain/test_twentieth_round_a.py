@@ -70,3 +70,13 @@ def test_inclined_wheels_right_wheel_centre_written(lang: str) -> None:
     # the table comes after the last line read off
     table = page.index("| --- | --- |", page.index("|v_Q| /") - 3000)
     assert table > page.index("|v_Q| /")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", SEEDS)
+def test_a_direction_along_a_segment_is_said_as_the_line(name: str, lang: str) -> None:
+    """A velocity whose direction is the segment of the equiprojectivity (C5-2.2: the wheel's
+    plane through P is the line PO) is written v_P = |v_P| PO/|PO|, never through a unit
+    vector e whose product with PO/|PO| is 1."""
+    page = rendered(name, lang)
+    assert not re.search(r"e · (\S+)/\|\1\| = 1\b", page), name
