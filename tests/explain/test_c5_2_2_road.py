@@ -19,16 +19,17 @@ NAME = "seed_c5_2_2_articulated"
 
 # the equation of equiprojectivity, with its numbers, in each language: along PO, the segment
 # that makes e · u positive (fourteenth round: never (−√2·r·ω/2) / (−1)); by hand, v_O =
-# (rω, 0), u = PO/|PO| = (1, 1)/√2, v_O · u = rω/√2, e = (1, 1)/√2 = u, so |v_P| = rω/√2
+# (rω, 0), u = PO/|PO| = (1, 1)/√2, v_O · u = rω/√2, the wheel's plane along (1, 1)/√2 = u: v_P is
+# along PO (twentieth round (a): said as the line, v_P = |v_P| PO/|PO|), so |v_P| = rω/√2
 EQUATION = {
     "en": ("v_P · PO/|PO| = v_O · PO/|PO|, with PO/|PO| = (√2/2, √2/2), so that v_O · PO/|PO| = √2·r·ω/2",
-           "e = (√2/2, √2/2) and e · PO/|PO| = 1", "|v_P| = √2·r·ω/2 = r·ω/√2"),
+           "v_P = |v_P| PO/|PO|.", "|v_P| = √2·r·ω/2 = r·ω/√2"),
     "es": ("v_P · PO/|PO| = v_O · PO/|PO|, con PO/|PO| = (√2/2; √2/2), de modo que v_O · PO/|PO| = √2·r·ω/2",
-           "e = (√2/2; √2/2) y e · PO/|PO| = 1", "|v_P| = √2·r·ω/2 = r·ω/√2"),
+           "v_P = |v_P| PO/|PO|.", "|v_P| = √2·r·ω/2 = r·ω/√2"),
     "ca": ("v_P · PO/|PO| = v_O · PO/|PO|, amb PO/|PO| = (√2/2; √2/2), de manera que v_O · PO/|PO| = √2·r·ω/2",
-           "e = (√2/2; √2/2) i e · PO/|PO| = 1", "|v_P| = √2·r·ω/2 = r·ω/√2"),
+           "v_P = |v_P| PO/|PO|.", "|v_P| = √2·r·ω/2 = r·ω/√2"),
     "eu": ("v_P · PO/|PO| = v_O · PO/|PO|, non PO/|PO| = (√2/2; √2/2); beraz, v_O · PO/|PO| = √2·r·ω/2",
-           "e = (√2/2; √2/2) eta e · PO/|PO| = 1", "|v_P| = √2·r·ω/2 = r·ω/√2"),
+           "v_P = |v_P| PO/|PO|.", "|v_P| = √2·r·ω/2 = r·ω/√2"),
 }
 
 # why the perpendicular to v_P does not place the centre (it is the axle), then the centre

@@ -16,20 +16,23 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from .context import Ctx, alpha_sym, omega_sym, radius_formula, read_off
-from .document import Derived, Name, Names, Sym, Value, msg
+from .context import Ctx, alpha_sym, omega_sym, radius_formula, read_off, segment
+from .document import Derived, Name, Names, Sym, Value, centre_point, msg
 from .kinds import rolls
 
 
-def idle_blocks(ctx: Ctx, idle: list[str], worked: list[str], accel: bool) -> tuple[list, set[str]]:
+def idle_blocks(ctx: Ctx, idle: list[str], worked: list[str], accel: bool,
+                written: Optional[set[tuple[str, str]]] = None) -> tuple[list, set[str]]:
     """The lines for the `idle` bodies (no step works their ω out), and those of them given a
     rate (their rows stay in the table, α too when `accel`); `worked` are the bodies the
-    table lists."""
+    table lists; `written` the (v or a, subscript) of the motions the page writes before
+    these lines (`written_motions`): a line uses no velocity the page has not written (round
+    20a)."""
     out: list = []
     rated: set[str] = set()
     left: list[str] = []
     for b in idle:
-        lines = _rolling(ctx, b, worked, accel) or _symmetric(ctx, b, worked, accel)
+        lines = _rolling(ctx, b, worked, accel, written or set()) or _symmetric(ctx, b, worked, accel)
         if not lines:
             left.append(b)
             continue
@@ -40,10 +43,13 @@ def idle_blocks(ctx: Ctx, idle: list[str], worked: list[str], accel: bool) -> tu
     return out, rated
 
 
-def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool) -> list:
+def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool, written: set[tuple[str, str]]) -> list:
     """ω = ±|v_O| / r of a body rolling on a fixed one, O its centre, a point of a body the
     page worked out (or of the frame); α = ±|a_O^t| / r with accelerations (|v_O| = |ω| r
-    at every instant, differentiated along the path)."""
+    at every instant, differentiated along the path), ±|a_O| / r when O's path is straight
+    (a_O has no normal part: C5-E.6's front wheel on the road). A velocity (acceleration) of
+    O the page has not written is written first, from the body that carries O
+    (`_centre_motion`: v_Q = ω_OQ × I_{OQ}Q, v_F = v_H), round 20a."""
     for j in ctx.model.joints:
         if b not in (j.a, j.b) or not rolls(j):
             continue
@@ -58,14 +64,75 @@ def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool) -> list:
         if not any(k in worked or ctx.fixed(k) for k in ctx.model.carriers(name) if k != b):
             continue
         r = Value(radius, unit)          # the model's symbol r (no unit), or a plain number's length
-        out: list = [msg("idle.rolling", body=Name(b, "body"), fixed=Name(other, "body"), point=Name(ctx.contact(j))),
-                     Derived(omega_sym(b), read_off(ctx, Sym("v", name), r, ctx.omega(b)),
-                             ctx.value(ctx.omega(b), "rate"), b, "omega", not ctx.symbolic)]
+        carrier = next((k for k in ctx.model.carriers(name) if k != b and (k in worked or ctx.fixed(k))), "")
+        out: list = _centre_motion(ctx, carrier, name, "v", written)
+        out.append(msg("idle.rolling", body=Name(b, "body"), fixed=Name(other, "body"), point=Name(ctx.contact(j))))
+        out.append(Derived(omega_sym(b), read_off(ctx, Sym("v", name), r, ctx.omega(b)),
+                           ctx.value(ctx.omega(b), "rate"), b, "omega", not ctx.symbolic))
         if accel:
-            out.append(Derived(alpha_sym(b), read_off(ctx, Sym("a", name, "t"), r, ctx.alpha(b)),
+            out += _centre_motion(ctx, carrier, name, "a", written)
+            straight = _straight(ctx, carrier, name)
+            out.append(Derived(alpha_sym(b), read_off(ctx, Sym("a", name, "" if straight else "t"), r, ctx.alpha(b)),
                                ctx.value(ctx.alpha(b), "rate2"), b, "alpha", not ctx.symbolic))
         return out
     return []
+
+
+def written_motions(blocks: list) -> set[tuple[str, str]]:
+    """The motions a list of blocks writes: ("v" or "a", subscript) of every equation's
+    target and terms and of every value read off (`Derived`), sections included; ("I",
+    "a,b") for every instant centre placed."""
+    from .document import CentreNote, Equation, Section
+
+    out: set[tuple[str, str]] = set()
+    for blk in blocks:
+        if isinstance(blk, CentreNote):
+            out |= {("I", ",".join(blk.pair)), ("I", ",".join(reversed(blk.pair)))}
+        elif isinstance(blk, Section):
+            out |= written_motions(blk.blocks)
+        elif isinstance(blk, Equation):
+            for t in [blk.target] + [t for side in blk.sides for t in side]:
+                if t.sym.base in ("v", "a") and not t.sym.sup:
+                    out.add((t.sym.base, str(t.sym.sub)))
+        elif isinstance(blk, Derived) and blk.sym.base in ("v", "a") and not blk.sym.sup:
+            out.add((blk.sym.base, str(blk.sym.sub)))
+    return out
+
+
+def _centre_motion(ctx: Ctx, k: str, name: str, level: str, written: set[tuple[str, str]]) -> list:
+    """The line that writes the velocity (acceleration) of the centre `name` of a rolling
+    body from the body k that carries it, when the page has not written it: v_F = v_H (k
+    translates, H a point of k whose motion the page writes), v_Q = ω_k × I_kQ (k's instant
+    centre placed on the page), else v_Q = v_P + ω_k × PQ (a = a_P + α_k × PQ − ω_k² PQ).
+    Empty when it is written, or k is not known."""
+    if (level, name) in written or not k:
+        return []
+    unit = "speed" if level == "v" else "accel"
+    value = ctx.value(ctx.vel(k, name) if level == "v" else ctx.acc(k, name), unit)
+    if ctx.fixed(k):
+        return [Derived(Sym(level, name), [], value, k)]
+    still = ctx.is_zero(ctx.omega(k), "rate") and (level == "v" or ctx.is_zero(ctx.alpha(k), "rate2"))
+    known = [p for p in ctx.model.bodies[k].points if p != name and (level, ctx.point_label(p, k)) in written]
+    if still and known:
+        return [Derived(Sym(level, name), [Sym(level, ctx.point_label(known[0], k))], value, k)]
+    if level == "v" and (f"centre:{k}" in ctx.worked or ("I", f"{ctx.frame},{k}") in written):
+        return [Derived(Sym("v", name), [omega_sym(k), " × ", segment(centre_point(k), name)], value, k)]
+    if not known:
+        return []
+    p = known[0]
+    arm = segment(p, name)
+    if level == "v":
+        how = [Sym("v", ctx.point_label(p, k)), " + ", omega_sym(k), " × ", arm]
+    else:
+        how = [Sym("a", ctx.point_label(p, k)), " + ", alpha_sym(k), " × ", arm, " − ", omega_sym(k), "² ", arm]
+    return [Derived(Sym(level, name), how, value, k)]
+
+
+def _straight(ctx: Ctx, k: str, name: str) -> bool:
+    """Whether the centre's acceleration has no normal part (a_O ∥ v_O, or v_O = 0): its
+    path is straight at the instant, so α is read off |a_O| itself."""
+    v, a = ctx.vel(k, name), ctx.acc(k, name)
+    return ctx.is_zero(v[0] * a[1] - v[1] * a[0], "accel") if len(v) == 2 else False
 
 
 def _centre(ctx: Ctx, b: str, contact: Any) -> Optional[tuple[str, Any, str]]:

@@ -62,7 +62,9 @@ def prune(ctx: Ctx, doc: Document) -> None:
     if idle:
         for s in doc.sections:
             if s.title.key in ("sec.rates_summary", "sec.rates_summary_v"):
-                at = next((k + 1 for k, b in enumerate(s.blocks) if isinstance(b, Table)), len(s.blocks))
+                # before the table that prints their rates (round 20a): a line is read before
+                # the value it finds is listed
+                at = next((k for k, b in enumerate(s.blocks) if isinstance(b, Table)), len(s.blocks))
                 s.blocks[at:at] = idle
 
 
@@ -70,14 +72,14 @@ def _idle(ctx: Ctx, doc: Document, unworked: set[str]) -> tuple[list, set[str]]:
     """The lines for the moving bodies the structure lists and no step works out
     (`idle.idle_blocks`), and those given a rate there."""
     from .drives import belt_runs
-    from .idle import idle_blocks
+    from .idle import idle_blocks, written_motions
 
     listed = [b for b in ctx.model.moving_bodies if not ctx.fixed(b) and b not in belt_runs(ctx)]
     idle = [b for b in listed if b in unworked]
     if not idle:
         return [], set()
     accel = any(s.title.key == "sec.rates_summary" for s in doc.sections)
-    return idle_blocks(ctx, idle, [b for b in listed if b not in unworked], accel)
+    return idle_blocks(ctx, idle, [b for b in listed if b not in unworked], accel, written_motions(doc.sections))
 
 
 def _snapshot(blocks: list) -> list:
