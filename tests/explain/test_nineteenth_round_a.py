@@ -15,7 +15,7 @@ import kinematika
 from kinematika.errors import KinematikaError
 from kinematika.explain import build, render
 
-from .helpers import EXAMPLES, LANGS, NOTES_SEEDS, rendered
+from .helpers import EXAMPLES, LANGS, NOTES_SEEDS, over, rendered
 
 # the composition's old point-only form of the relative part (v_{rel,B}, a_{REL,B})
 POINT_ONLY = re.compile(r"\b[va]_\{(?:rel|REL),[^}]*\}")
@@ -23,8 +23,7 @@ POINT_ONLY = re.compile(r"\b[va]_\{(?:rel|REL),[^}]*\}")
 BOTH = re.compile(r"\b[va]_\{[^{}∈ ]+∈[^{}]+? (?:rel\.?|REL) [^{}]+\}")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", NOTES_SEEDS)
+@over(name=NOTES_SEEDS, lang=LANGS)
 def test_relative_vector_has_one_symbol(name: str, lang: str) -> None:
     page = rendered(name, lang, drawings=False)
     assert not POINT_ONLY.findall(page), (name, lang, POINT_ONLY.findall(page))

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from .helpers import LANGS, SEEDS, rendered
+from .helpers import LANGS, SEEDS, over, rendered
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -35,8 +35,7 @@ def _sentences(line: str) -> list[str]:
     return [s for s in re.split(r"(?<=\.)\s+", line) if s]
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_infinity_is_said_after_the_translation(name: str, lang: str) -> None:
     """Every mention of a centre at infinity comes after the word that the body translates,
     in the same sentence (the notes: the points' one velocity first, the centre after)."""
@@ -61,14 +60,14 @@ def test_translating_centre_says_perpendicular_to_the_velocity(name: str, lang: 
         assert "v_" in tail, (name, lang, x)
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_catalan_perpendicular_and_above(name: str) -> None:
     page = rendered(name, "ca")
     assert "perpendicularment a la recta" not in page, name
     assert not re.search(r"\ba dalt d", page), name
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_basque_legend_marks_with_colons(name: str) -> None:
     page = rendered(name, "eu")
     assert ", ? ezezaguna" not in page, name
@@ -91,8 +90,7 @@ def _names_block(name: str, lang: str) -> str:
     return "\n".join(x for x in m.group(1).splitlines() if x.strip().startswith(("bodies:", "points:")))
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_bodies_named_by_the_model(name: str, lang: str) -> None:
     page = rendered(name, lang).lower()
     own = _names_block(name, lang).lower()
@@ -106,8 +104,7 @@ def test_spanish_guide_imposes_the_relative_velocity() -> None:
     assert "impone la dirección de la velocidad relativa" in page
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_rolling_read_off_has_no_bare_length(name: str, lang: str) -> None:
     """ω = ±|v_O| / r: the divisor is a symbol, never a number with its unit."""
     assert not re.search(r"\| / [0-9][0-9.,]* ?m\b", rendered(name, lang)), (name, lang)

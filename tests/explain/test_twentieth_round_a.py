@@ -11,7 +11,7 @@ import pytest
 
 from kinematika.explain.document import Derived, Equation, Section, Sym, Table
 
-from .helpers import LANGS, SEEDS, explained, rendered
+from .helpers import LANGS, SEEDS, explained, over, rendered
 
 RATES = ("sec.rates_summary", "sec.rates_summary_v")
 
@@ -39,7 +39,7 @@ def _walk(blocks: list, seen: set, bad: list, in_rates: bool, table_seen: list) 
             seen |= _motions([b.sym])
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_rates_read_off_before_the_table_from_written_motions(name: str) -> None:
     _, doc = explained(name)
     bad: list = []
@@ -72,8 +72,7 @@ def test_inclined_wheels_right_wheel_centre_written(lang: str) -> None:
     assert table > page.index("|v_Q| /")
 
 
-@pytest.mark.parametrize("lang", LANGS)
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS, lang=LANGS)
 def test_a_direction_along_a_segment_is_said_as_the_line(name: str, lang: str) -> None:
     """A velocity whose direction is the segment of the equiprojectivity (C5-2.2: the wheel's
     plane through P is the line PO) is written v_P = |v_P| PO/|PO|, never through a unit
