@@ -337,7 +337,7 @@ def refer_reverses(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
                     continue
                 said.add(_written(t.sym))
                 unit = "speed" if t.sym.base == "v" else "accel"
-                key, extra = "composition.reverse", {}
+                key, extra = "composition.reverse", {"kind": unit}
                 if unit == "accel" and _at_rest(ctx, m.group(1), m.group(2), m.group(3)):
                     key, extra = "composition.reverse_rolling", {"vel": Sym("v", t.sym.sub)}
                 _insert_before(sec, eq, msg(key, sym=t.sym, back=rev[0].sym,
