@@ -61,7 +61,8 @@ def test_the_reference_is_the_ground():
     assert "respecte de la *politja fixa*" not in ca
     assert "no llisca sobre la *politja fixa*" in ca
     eu = rendered("seed_c5_1_5_pulley_block", "eu", drawings=False)
-    assert "*3. polearen* biraketa-zentro instantaneoa *sabaiarekiko*" in eu      # "solido" said once (ninth round)
+    # "solido" said once (ninth round); an instant centre relative to the ground (twentieth round (b))
+    assert "*3. polearen* biraketa-zentro instantaneoa *lurrarekiko*" in eu
     assert "*lurra*" not in eu and "*sabaia eta 1. kable-zatia* solidoarekiko" not in eu
 
 
@@ -161,5 +162,6 @@ def test_the_tied_strand_is_a_part_welded_to_the_ceiling():
     ca = rendered("seed_c5_1_5_pulley_block", "ca", drawings=False)
     assert "| 2 | *tram 1* (fix al *sostre*) |" in ca
     assert "I_politja1: el punt de contacte J (rodolament sense lliscament)" in ca   # the centre, said once (17a)
-    assert "CIR de la *politja 3* respecte del *sostre*" in ca and "*terra*" not in ca
+    # an absolute centre is said relative to the ground, as the notes say (twentieth round (b))
+    assert "CIR de la *politja 3* respecte del *terra*" in ca and "CIR de la *politja 3* respecte del *sostre*" not in ca
     assert "ω_tram1" not in ca                   # a part of the frame has no rate to name

@@ -8,7 +8,7 @@ velocities and accelerations, composition of motions, answers.
 from __future__ import annotations
 
 import re
-from typing import Optional
+from typing import Any, Optional
 
 from ..draw.names import body_numbers
 from ..solution import Solution
@@ -339,9 +339,10 @@ def refer_reverses(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
                     continue
                 said.add(_written(t.sym))
                 unit = "speed" if t.sym.base == "v" else "accel"
-                key, extra = "composition.reverse", {}
+                key = "composition.reverse"
+                extra: dict[str, Any] = {"kind": unit}          # the quantity, never "motion"
                 if unit == "accel" and _at_rest(ctx, m.group(1), m.group(2), m.group(3)):
-                    key, extra = "composition.reverse_rolling", {"vel": Sym("v", t.sym.sub)}
+                    key, extra = "composition.reverse_rolling", {"kind": unit, "vel": Sym("v", t.sym.sub)}
                 _insert_before(sec, eq, msg(key, sym=t.sym, back=rev[0].sym,
                                             value=Value(t.value, unit), step=rev[1], **extra))
 

@@ -84,27 +84,11 @@ def says_fixed(value: Any) -> str:
     return "yes" if FIXED_WORD.search(str(getattr(value, "plain", value))) else "no"
 
 
-
-def head_noun(value: Any) -> str:
-    """The first word of a name after its article, in lower case and without markup (`rueda`
-    for "la *rueda izquierda*", `satélite` for "El *satélite 1*"): a sentence chooses its verb
-    by it where the verb would repeat the noun (Spanish "la rueda gira sin deslizar", where
-    every other body "rueda sin deslizar", the textbook's verb)."""
-    text = re.sub(r"<[^>]+>", "", str(getattr(value, "plain", value))).replace("*", "").strip()
-    for pattern in ARTICLES.values():
-        m = pattern.match(text)
-        if m and m.end() < len(text):
-            text = text[m.end():]
-            break
-    words = text.split()
-    return words[0].lower() if words else "other"
-
-
 # fluent.runtime (0.4) annotates a function as returning a FluentType, but its resolver takes a plain
 # str too (resolver.match compares a select's key with ==, resolve() passes a str through): ours
 # return the word a select expression matches, so the cast only states what the resolver accepts.
 FUNCTIONS = cast(dict[str, Callable[[Any], FluentType]], {"ELISION": elision, "COUNT": count,
-                                                          "FIXED": says_fixed, "NOUN": head_noun})
+                                                          "FIXED": says_fixed})
 
 
 class Catalogue:

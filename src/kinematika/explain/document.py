@@ -79,6 +79,8 @@ class Name:
     kind: str = "point"
     bare: bool = False             # a body's name without its article (in a table's cell)
     reference: bool = False        # the ground as the reference of a motion ("relative to the ground")
+    centre: bool = False           # the reference of an absolute instant centre: always the ground's
+                                   # word, as the notes say it ("CIR respecte al terra", C5-1.1, 1.5)
 
     def __str__(self) -> str:
         return self.text

@@ -1351,7 +1351,8 @@ def centre_site(ctx: Ctx, name: str, body: str):
     # a centre at no point of the model is named by its symbol (I_pulley), so it is said once:
     # "I_pulley, found above, has no velocity", never "I_pulley … is the point I" (round 15a)
     key = "centre.site_s" if CENTRE_POINT_RE.fullmatch(name) else "centre.site"
-    return msg(key, point=point_name(name), body=body_name(body), frame=Name(ctx.frame, "body", reference=True),
+    return msg(key, point=point_name(name), body=body_name(body),
+               frame=Name(ctx.frame, "body", reference=True, centre=True),
                centre=Sym("I", f"{ctx.frame},{body}", vector=False), sym=Sym("v", ctx.point_label(name, body)))
 
 

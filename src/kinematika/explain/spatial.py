@@ -283,7 +283,7 @@ def _relative(ctx: Ctx, level: str, ref: PointRef, moving: str, pivot: Optional[
     if joint is not None and guided(joint):
         seen = ctx.slides_seen.get((level, body, moving)) if slider(joint) else None
         if seen is not None:            # a slider does not turn on its guide: one relative motion, found above
-            return [msg("composition.slide_seen", sym=sym, seen=seen, value=Value(value, unit),
+            return [msg("composition.slide_seen", sym=sym, seen=seen, value=Value(value, unit), kind=unit,
                         joint=Name(joint.id, "joint"), point=Name(p), body=Name(body, "body"),
                         frame=Name(moving, "body"))]
         return [msg("composition.slide", sym=sym, value=Value(value, unit), joint=Name(joint.id, "joint"),

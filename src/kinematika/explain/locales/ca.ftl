@@ -263,10 +263,10 @@ order-from = { ELISION($name) ->
        *[other] de { $name }
     }
 kind-input = entrada (sòlid motor)
-kind-RRR = díade RRR
-kind-RRP = díade RRP
-kind-RPR = díade RPR
-kind-PRP = díade PRP
+kind-RRR = díada RRR
+kind-RRP = díada RRP
+kind-RPR = díada RPR
+kind-PRP = díada PRP
 kind-other = grup resolt conjuntament
 step-title = Pas { $n }: { $kind } — { $bodies }
 step-title_group = Pas { $n }: { $bodies }
@@ -605,13 +605,22 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
        *[other] de { $frame }
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 composition-slide = { $point } llisca al llarg de la seva guia: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
-composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat a «{ sec-velocities }»: { $sym } = { $value }.
-composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen el moviment relatiu trobat al pas { $step }: { $sym } = { $value }.
+composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen { $kind ->
+        [accel] l’acceleració
+       *[speed] la velocitat
+    } relativa trobada a «{ sec-velocities }»: { $sym } = { $value }.
+composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen { $kind ->
+        [accel] l’acceleració
+       *[speed] la velocitat
+    } relativa trobada al pas { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació del pas { $step }.
 composition-sum_seen = Així, { $sym } = { $terms } és l’equació del pas { $step }, que va trobar { $seen }.
-composition-reverse = { $sym } = −{ $back } = { $value }: el contrari del moviment relatiu trobat al pas { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: el contrari del moviment relatiu trobat al pas { $step }, ja que { $vel } = 0 (contacte de rodolament) anul·la els dos termes de Coriolis, i per tant les dues acceleracions relatives són oposades.
+composition-reverse = { $sym } = −{ $back } = { $value }: l'oposada { $kind ->
+        [accel] de l'acceleració
+       *[speed] de la velocitat
+    } relativa trobada al pas { $step }.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l'oposada de l'acceleració relativa trobada al pas { $step }, ja que { $vel } = 0 (contacte de rodolament) anul·la els dos termes de Coriolis, i per tant les dues acceleracions relatives són oposades.
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)
@@ -644,7 +653,7 @@ triad-intro = { $body } està subjectat per tres barres binàries, { $links }: c
        *[other] de { $body }
     }:
 triad-collinear = A cada membre els dos termes desconeguts són perpendiculars a una mateixa recta ({ $point } és a { $l1 } i a { $l3 }), de manera que cada membre té un sol mòdul desconegut: dues incògnites, i el polígon es tanca.
-triad-closure = Conegut { $point } com a punt de la barra ternària, la seva articulació { $pin } es tanca com en una díade:
+triad-closure = Conegut { $point } com a punt de la barra ternària, la seva articulació { $pin } es tanca com en una díada:
 loop-intro = Els sòlids { $bodies } tanquen un llaç: en recórrer-lo, les velocitats angulars relatives sumen zero, cadascuna segons l’eix del seu enllaç (tres equacions escalars per a les velocitats { $rate } desconegudes segons els eixos { $axis }):
 loop-solve = Les tres components donen les velocitats desconegudes:
 loop-solve_alpha = Derivant en els eixos fixos, les acceleracions angulars relatives i els termes { $cross } sumen zero al llarg del llaç; les tres components donen les { $rate } desconegudes:
@@ -926,7 +935,7 @@ centre-check = Comprovació amb les velocitats trobades a «{ sec-velocities }»
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (es trasllada: el seu CIR { $centre } és a l’infinit)
 how-constant_rate = ({ $sym } = { $value } és constant: { $line } conserva la seva longitud, i la seva velocitat angular la fixen els radis i { $rates }, que és constant)
-idle-rolling = { $body } rodola sense lliscar sobre { $fixed }: el seu punt { $point } del contacte és el seu CIR, de manera que:
+idle-rolling = { $body } rodola sense lliscar sobre { $fixed }: el seu punt de contacte { $point } és el seu CIR, de manera que:
 idle-symmetry = { $body } té la mateixa disposició que { $like } (el mateix radi, els mateixos enllaços amb els mateixos sòlids): per simetria gira igual:
 idle-unused = { $bodies } no { $count ->
         [one] intervé

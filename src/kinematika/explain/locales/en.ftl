@@ -431,19 +431,28 @@ composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($b
     } not turn relative to { $frame }, so all { COUNT($body) ->
         [many] their
        *[one] its
-    } points have the relative motion found in “{ sec-velocities }”: { $sym } = { $value }.
+    } points have the relative { $kind ->
+        [accel] acceleration
+       *[speed] velocity
+    } found in “{ sec-velocities }”: { $sym } = { $value }.
 composition-slide_seen_step = { $point } slides along its guide; { $body } { COUNT($body) ->
         [many] do
        *[one] does
     } not turn relative to { $frame }, so all { COUNT($body) ->
         [many] their
        *[one] its
-    } points have the relative motion found in Step { $step }: { $sym } = { $value }.
+    } points have the relative { $kind ->
+        [accel] acceleration
+       *[speed] velocity
+    } found in Step { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in Step { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation of Step { $step }.
 composition-sum_seen = So { $sym } = { $terms } is the equation of Step { $step }, which found { $seen }.
-composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the relative motion found in Step { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative motion found in Step { $step }, since { $vel } = 0 (rolling contact) makes both Coriolis terms vanish, so the two relative accelerations are opposite.
+composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the relative { $kind ->
+        [accel] acceleration
+       *[speed] velocity
+    } found in Step { $step }.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }, since { $vel } = 0 (rolling contact) makes both Coriolis terms vanish, so the two relative accelerations are opposite.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
@@ -452,7 +461,7 @@ vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { 
 vehicle-equiprojective_along = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel's plane, the line { $seg }: { $vp } = |{ $vp }| { $seg }/|{ $seg }|. Hence |{ $vp }| = { $speed }, and { $vp } = { $value }.
 vehicle-line-wheel_own = the perpendicular at { $point } to the plane of wheel { $joint } (its axle, which is also the perpendicular to { $sym } through { $witness }: the wheel does not slip sideways)
 vehicle-pin_shared = { $point } is the pin common to { $a } and { $b }: { $sym } = { $other }.
-vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }, which has no velocity: { $rest } = 0. Every point of { $body } moves perpendicular to its line to { $centre }, at a speed proportional to its distance:
+vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }, which has no velocity: { $rest } = 0. Every point of { $body } moves perpendicular to the line joining it to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel, so { COUNT($body) ->
         [many] they translate: every point moves as { $point }; their instant centre is at infinity
        *[one] it translates: every point moves as { $point }; its instant centre is at infinity

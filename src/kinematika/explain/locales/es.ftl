@@ -37,11 +37,11 @@ structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
-        [one] es fijo a
-       *[other] son fijos a
+        [one] está unido rígidamente a
+       *[other] están unidos rígidamente a
     } { $frame }: { $bodies_n ->
-        [one] es parte de él y no se mueve
-       *[other] son parte de él y no se mueven
+        [one] forma parte de él y no se mueve
+       *[other] forman parte de él y no se mueven
     }; todos sus puntos tienen velocidad y aceleración nulas.
 structure-fixed_part = { $body } (fijo a { $frame })
 structure-dof = El mecanismo tiene { $dof ->
@@ -258,21 +258,17 @@ cond-cylindrical = par cilíndrico: { $b } { COUNT($b) ->
         [many] giran
        *[one] gira
     } alrededor del eje de { $a } y se desliza a lo largo de él.
-# a body "rueda sin deslizar" (the textbook's verb), but a wheel "gira sin deslizar": "la rueda
-# rueda" doubles the noun (round 15a); NOUN is the name's first word after its article (round 18b)
+# every body, a wheel too, "rueda sin deslizar" (the textbook's verb; plural "ruedan"): the
+# readers of round 20 asked for "la rueda rueda sin deslizar" over round 15a's "gira"
 rolling-noslip = { $gear ->
         [1] { $b } { COUNT($b) ->
                 [many] engranan
                *[one] engrana
             } con { $a }
-       *[other] { $b } { NOUN($b) ->
-            [rueda] gira
-            [ruedas] giran
-           *[other] { COUNT($b) ->
+       *[other] { $b } { COUNT($b) ->
                 [many] ruedan
                *[one] rueda
-            }
-        } sin deslizar sobre { $a }
+            } sin deslizar sobre { $a }
     }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad.
 rolling-noslip_edge = { $b } no { COUNT($b) ->
         [many] deslizan
@@ -282,59 +278,39 @@ rolling-same_edge = { $b } no { COUNT($b) ->
         [many] deslizan
        *[one] desliza
     } sobre { $a }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
-rolling-glide = { $b } { NOUN($b) ->
-        [rueda] gira
-        [ruedas] giran
-       *[other] { COUNT($b) ->
+rolling-glide = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
-        }
-    } sin deslizar sobre el borde de { $a }. Visto desde { $a }, su centro { $centre } mantiene la distancia al borde: se mueve según una recta paralela a la tangente en { $point }. Con ejes en { $centre } que giran con { $a }, el movimiento de { $centre } es el de arrastre (el del punto de { $a } que coincide con él) más el relativo, a lo largo de esa recta (y, en aceleraciones, el término de Coriolis).
+        } sin deslizar sobre el borde de { $a }. Visto desde { $a }, su centro { $centre } mantiene la distancia al borde: se mueve según una recta paralela a la tangente en { $point }. Con ejes en { $centre } que giran con { $a }, el movimiento de { $centre } es el de arrastre (el del punto de { $a } que coincide con él) más el relativo, a lo largo de esa recta (y, en aceleraciones, el término de Coriolis).
 rolling-kept = el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
-path-circle = { $b } { NOUN($b) ->
-        [rueda] gira
-        [ruedas] giran
-       *[other] { COUNT($b) ->
+path-circle = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
-        }
-    } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vs }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
-path-line = { $b } { NOUN($b) ->
-        [rueda] gira
-        [ruedas] giran
-       *[other] { COUNT($b) ->
+        } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vs }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
+path-line = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
-        }
-    } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
+        } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
 rolling-equal = Sin deslizamiento en el contacto { $point }: { $sym } = { $other }.
 rolling-same = { $gear ->
         [1] { $b } { COUNT($b) ->
                 [many] engranan
                *[one] engrana
             } con { $a }
-       *[other] { $b } { NOUN($b) ->
-            [rueda] gira
-            [ruedas] giran
-           *[other] { COUNT($b) ->
+       *[other] { $b } { COUNT($b) ->
                 [many] ruedan
                *[one] rueda
-            }
-        } sin deslizar sobre { $a }
+            } sin deslizar sobre { $a }
     }: en el contacto { $point } los dos puntos materiales tienen la misma velocidad, { $sym } = { $other }.
 rolling-centre = { $gear ->
         [1] { $b } { COUNT($b) ->
                 [many] engranan
                *[one] engrana
             } con { $a }
-       *[other] { $b } { NOUN($b) ->
-            [rueda] gira
-            [ruedas] giran
-           *[other] { COUNT($b) ->
+       *[other] { $b } { COUNT($b) ->
                 [many] ruedan
                *[one] rueda
-            }
-        } sin deslizar sobre { $a }
+            } sin deslizar sobre { $a }
     }, que no se mueve: el punto { $point } de { $b } en el contacto no tiene velocidad, { $sym } = 0, así que es el CIR de { $b }.
 dir-guide = guía de { $holder }
 dir-normal = normal
@@ -377,14 +353,10 @@ composition-intro = El movimiento de un punto es el de arrastre (el del punto de
 composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
 composition-drag = Arrastre: el movimiento del punto de la referencia móvil que coincide con él:
 composition-relative = Relativo: { $sym }, el movimiento visto desde la referencia móvil, { $frame }:
-composition-rolls = { $body } { NOUN($body) ->
-        [rueda] gira
-        [ruedas] giran
-       *[other] { COUNT($body) ->
+composition-rolls = { $body } { COUNT($body) ->
             [many] ruedan
            *[one] rueda
-        }
-    } sin deslizar sobre { $frame } en { $point }: visto desde { $frame }, { $point } es el CIR de { $body }, { $sym } = 0, y todos sus puntos giran alrededor de él.
+        } sin deslizar sobre { $frame } en { $point }: visto desde { $frame }, { $point } es el CIR de { $body }, { $sym } = 0, y todos sus puntos giran alrededor de él.
 sec-curvature = Curvatura de las trayectorias
 curvature-intro = La aceleración se descompone en una parte tangencial, según la velocidad, y una normal, perpendicular a ella; el radio de curvatura es { $rho }.
 curvature-point = Punto { $point }: velocidad { $v }.
@@ -419,13 +391,22 @@ ans-pole_velocity = velocidad de I a lo largo de la base y la ruleta
 centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de su guía: su movimiento relativo sigue la guía, { $sym } = { $value }.
-composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado en «{ sec-velocities }»: { $sym } = { $value }.
-composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen el movimiento relativo hallado en el paso { $step }: { $sym } = { $value }.
+composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen la { $kind ->
+        [accel] aceleración
+       *[speed] velocidad
+    } relativa hallada en «{ sec-velocities }»: { $sym } = { $value }.
+composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen la { $kind ->
+        [accel] aceleración
+       *[speed] velocidad
+    } relativa hallada en el paso { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación del paso { $step }.
 composition-sum_seen = Así, { $sym } = { $terms } es la ecuación del paso { $step }, que halló { $seen }.
-composition-reverse = { $sym } = −{ $back } = { $value }: el opuesto del movimiento relativo hallado en el paso { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: el opuesto del movimiento relativo hallado en el paso { $step }, ya que { $vel } = 0 (contacto de rodadura) anula los dos términos de Coriolis, así que las dos aceleraciones relativas son opuestas.
+composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { $kind ->
+        [accel] aceleración
+       *[speed] velocidad
+    } relativa hallada en el paso { $step }.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }, ya que { $vel } = 0 (contacto de rodadura) anula los dos términos de Coriolis, así que las dos aceleraciones relativas son opuestas.
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)
@@ -434,10 +415,10 @@ vehicle-equiprojective = Por la propiedad de equiproyectividad ({ $q } y { $p } 
 vehicle-equiprojective_along = Por la propiedad de equiproyectividad ({ $q } y { $p } son puntos de { $body }), sus velocidades tienen la misma componente según { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, con { $seg }/|{ $seg }| = { $unit }, de modo que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } está en el eje de la rueda { $joint }, así que { $vp } tiene la dirección del plano de la rueda, la recta { $seg }: { $vp } = |{ $vp }| { $seg }/|{ $seg }|. Por tanto, |{ $vp }| = { $speed }, y { $vp } = { $value }.
 vehicle-line-wheel_own = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje, que es también la perpendicular a { $sym } por { $witness }: la rueda no desliza lateralmente)
 vehicle-pin_shared = { $point } es el pasador común a { $a } y { $b }: { $sym } = { $other }.
-vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }, que no tiene velocidad: { $rest } = 0. Cada punto de { $body } se mueve perpendicular a su recta hasta { $centre }, con celeridad proporcional a su distancia:
+vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }, que no tiene velocidad: { $rest } = 0. Cada punto de { $body } se mueve perpendicularmente a la recta que lo une con { $centre }, con celeridad proporcional a su distancia:
 vehicle-translation = Las rectas de { $body } son paralelas, así que se traslada: todos sus puntos se mueven como { $point }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
 vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }, así que { $body } se traslada: todos sus puntos tienen la velocidad { $value }; su CIR está en el infinito, en la dirección perpendicular a { $vp }.
-vehicle-spin = La rueda { $joint } gira sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda con celeridad { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
+vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda con celeridad { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.
 triad-closure = Conocido { $point } como punto del eslabón ternario, su articulación { $pin } se cierra como en una díada:
@@ -605,9 +586,9 @@ centre-check = Comprobación con las velocidades halladas en «{ sec-velocities 
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (se traslada: su CIR { $centre } está en el infinito)
 how-constant_rate = ({ $sym } = { $value } es constante: { $line } conserva su longitud, y su velocidad angular la fijan los radios y { $rates }, que es constante)
-idle-rolling = { $body } { NOUN($body) ->
-        [rueda] gira
-       *[other] rueda
+idle-rolling = { $body } { COUNT($body) ->
+        [many] ruedan
+       *[one] rueda
     } sin deslizar sobre { $fixed }: su punto { $point } del contacto es su CIR, de modo que:
 idle-symmetry = { $body } tiene la misma disposición que { $like } (el mismo radio, los mismos enlaces con los mismos sólidos): por simetría gira igual:
 idle-unused = { $bodies } no { $count ->
