@@ -47,6 +47,10 @@ structure-subscript_pair = { $sym } és la velocitat angular { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }
+structure-subscript_member = { $sym } és la velocitat del punt { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } situat a { $point }
 structure-frame = { $body } (fix)
 structure-shaped = { $body }, { $shape } de radi { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it

@@ -32,6 +32,7 @@ col-question = question
 col-answer = answer
 structure-subscripts = Notation: { $pairs }.
 structure-subscript_pair = { $sym } is the angular velocity of { $body }
+structure-subscript_member = { $sym } is the velocity of the point of { $body } at { $point }
 structure-frame = { $body } (fixed)
 structure-shaped = { $body }, { $shape } of radius { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it

@@ -32,6 +32,7 @@ col-question = pregunta
 col-answer = respuesta
 structure-subscripts = Notación: { $pairs }.
 structure-subscript_pair = { $sym } es la velocidad angular de { $body }
+structure-subscript_member = { $sym } es la velocidad del punto de { $body } situado en { $point }
 structure-frame = { $body } (fijo)
 structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it

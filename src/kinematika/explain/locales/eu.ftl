@@ -32,6 +32,7 @@ col-question = galdera
 col-answer = erantzuna
 structure-subscripts = Notazioa: { $pairs }.
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
+structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuko puntuaren abiadura da
 structure-frame = { $body } (finkoa)
 structure-shaped = { $body }, { $radius } erradioko { $shape }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it

@@ -145,6 +145,7 @@ class Renderer(ABC):
         self._written: set[str] = set()
         self._rated: set[str] = set()        # bodies whose own symbol (ω_X, α_X, I_X) is written
         self._rating = False
+        self._member: Optional[tuple[str, str]] = None   # the first v_{J∈b} written (`subscripts`)
         self._legend: Optional[Msg] = None
         body = [self.heading(1, self.esc(shown_lines(self.wording.title(self.lang, self.doc.title))))]
         with formula_values(self.doc.values):
@@ -594,15 +595,16 @@ class Renderer(ABC):
         defined on the page that uses it; nothing when every subscript is the name as
         written, the code the name holds (ω_N of *N blokea*, as the slides) or the name's
         words run together (ω_politja1 of *politja 1*, ω_central of *roda central*:
-        `model.subscripts.read_off`), or the bodies go by their numbers (the structure's table)."""
+        `model.subscripts.read_off`), or the bodies go by their numbers (the structure's table).
+        A page that writes a point's velocity on a body, v_{J∈cylinder}, says once (with its
+        first such symbol) what J∈cylinder means: the point of the cylinder at J, which the
+        notes write v_T(J) in words beside the figure, and a reader met undefined."""
         from ...model.subscripts import CODE, _words, read_off
 
         spelt = self.wording.bodies.get(self.lang or "", {}) if self.wording is not None else {}
-        if not spelt:
-            return ""
         items: list = []
         written = getattr(self, "_written", None)
-        for b in m.args["bodies"]:
+        for b in (m.args["bodies"] if spelt else []):
             label = self.labels().get(b, "")
             if written is not None and b not in getattr(self, "_rated", written):
                 continue          # ω_X the page never writes needs no legend: a point's body
@@ -613,6 +615,12 @@ class Renderer(ABC):
                 continue          # the name as written, its own code (ω_N of *N blokea*), or
                 # its words run together (ω_politja1 of *politja 1*): nothing to define
             said = Msg("structure.subscript_pair", {"sym": Sym("ω", b, vector=False), "body": Name(b, "body")})
+            items += (["; "] if items else []) + [said]
+        member = getattr(self, "_member", None)
+        if member is not None:            # v_{J∈cylinder}: the point of the cylinder at J, once a page
+            point_, of = member
+            said = Msg("structure.subscript_member", {"sym": Sym("v", f"{point_}∈{of}"), "body": Name(of, "body"),
+                                                      "point": Name(point_, "point")})
             items += (["; "] if items else []) + [said]
         if not items:
             return ""
@@ -685,6 +693,8 @@ class Renderer(ABC):
             finally:
                 self._rating = False
         head, *rest = re.split(r"([∈/,])", s.sub)
+        if s.base == "v" and len(rest) == 2 and rest[0] == "∈" and getattr(self, "_member", "") is None:
+            self._member = (head, rest[1])     # v_{J∈b}: the legend says once what J∈b means
         out = head
         for i in range(0, len(rest), 2):
             mark, name = rest[i], rest[i + 1] if i + 1 < len(rest) else ""
