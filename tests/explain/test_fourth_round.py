@@ -90,6 +90,7 @@ def test_a_shortened_subscript_is_defined_on_the_page(name, lang):
     from kinematika.model.wording import PART_SUBSCRIPTS
 
     joining = {f" {words[lang]} " for words in PART_SUBSCRIPTS.values()}    # ω_{a rel b}: two names
+    joining.add(f" {sol.model.wording.relative_word(lang)} ")             # the model's own (001: rel)
     points = set(sol.model.points)
     text = _text(name, lang)
     for sub in {m.group(1).strip("{}") for m in OMEGA.finditer(text)}:

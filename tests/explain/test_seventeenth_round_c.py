@@ -41,7 +41,7 @@ def test_the_readers_pages_by_hand():
 WELDED_OLD = {"en": "part of the fixed body", "es": "parte del sólido fijo", "ca": "part del sòlid fix",
               "eu": "solido finkoaren zati"}
 WELDED_NEW = {"en": "are fixed to the *ground*: they are part of it and do not move",
-              "es": "están unidos rígidamente al *suelo*: forman parte de él y no se mueven",   # 20b
+              "es": "están fijados al *suelo*: forman parte de él y no se mueven",   # 20b (fijado: no weld word)
               "ca": "són fixos al *terra*: en formen part i no es mouen",
               "eu": "zurrunki lotuta daude: haren zati dira eta ez dira mugitzen"}
 

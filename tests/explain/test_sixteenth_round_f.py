@@ -63,7 +63,7 @@ def test_the_prismatic_pair_caption_lists_three_arrows():
     """001's prismatic pair draws v_B∈N, v_ar,B and v_B∈N rel. M (by hand: the composition
     v_B∈N = v_B∈M + v_B∈N rel. M, all three nonzero): its caption names the three."""
     for lang, words in (("ca", ("la velocitat de B∈N", "la velocitat d’arrossegament (v_{ar,B})",
-                                "la velocitat relativa (v_{B∈N rel. M})")),
+                                "la velocitat relativa (v_{B∈N rel M})")),
                         ("eu", ("B∈N puntuaren abiadura", "arrastre-abiadura (v_{arr,B})", "abiadura erlatiboa"))):
         (caption,) = _captions("seed_001_p_pair_coriolis", lang)
         for w in words:

@@ -249,11 +249,13 @@ def _walk(section):
 
 
 @pytest.mark.parametrize("name,lines", [
-    ("seed_c5_1_2_bar_on_inclined_wheels", ["fig.normal.slot_fixed"]),   # J slides on the floor: no slot
+    # J slides on the floor: no slot; and the lines through O and K1, Q and K2 the text meets at
+    # I_OQ (nineteenth round (d): a centre the text places where lines meet is drawn with them)
+    ("seed_c5_1_2_bar_on_inclined_wheels", ["fig.normal.slot_fixed", "fig.normal.radius"]),
     # knife-edge wheels: their axles; and the line from I_chassis to the pin F, perpendicular
     # to F's velocity (fourteenth round (d): drawn, so named)
     ("seed_c5_2_2_articulated", ["fig.normal.wheel", "fig.normal.radius"]),
-    ("four_bar", []),                                                    # pins only: Aronhold–Kennedy alone
+    ("four_bar", ["fig.normal.radius"]),     # pins only: the crank's and the rocker's lines meet at I
 ])
 def test_the_centres_caption_names_the_contacts_the_mechanism_has(name, lines):
     """What the centres' figure says its lines are comes from the joints: C5-1.2's bar end J

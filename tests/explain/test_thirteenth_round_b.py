@@ -164,7 +164,7 @@ def test_english_messages_take_the_pronoun_from_the_name(key, var):
     cat = catalogue("en")
     names = re.findall(r"\{ \$(\w+) \}", cat.source.split(f"\n{key} =", 1)[1].split("\n", 1)[0]
                        + "".join(re.findall(rf"(?ms)^{key} = .*?(?=^\S)", cat.source)))
-    args = {n: slot(n, False) for n in names} | {"accel": 1}
+    args = {n: slot(n, False) for n in names} | {"accel": 1, "kind": "speed"}     # selectors, not slots
     single = cat.format(key, {**args, var: slot("the *wheel*", False)})
     plural = cat.format(key, {**args, var: slot("the *wheels*", True)})
     assert re.search(r"\b(its|it)\b", single), single

@@ -186,7 +186,7 @@ def test_the_fixed_strand_is_said_fixed_once(lang):
     """C5-1.5: the statement gives strand 1 tied to the ceiling (a datum); that it is welded
     to the ceiling, part of the fixed body, is the structure's rule, said once."""
     text = rendered("seed_c5_1_5_pulley_block", lang, "md", drawings=False)
-    welded = {"en": "is fixed to the", "es": "está unido rígidamente al", "ca": "és fix al", "eu": "zurrunki lotuta"}[lang]   # round a: no weld words
+    welded = {"en": "is fixed to the", "es": "está fijado al", "ca": "és fix al", "eu": "zurrunki lotuta"}[lang]   # round a: no weld words
     prose = "\n".join(s for _, s in _sentences(text))
     assert prose.count(welded) == 1, prose.count(welded)
 

@@ -2,7 +2,7 @@
 
 1. Spanish: every body that rolls, a wheel too, "rueda sin deslizar" (plural "ruedan"), the
    textbook's verb: never "la rueda gira sin deslizar" (round 15a's choice, reversed).
-2. Spanish: a body welded to the fixed one "está unido rígidamente al techo: forma parte de él",
+2. Spanish: a body welded to the fixed one "está fijado al techo: forma parte de él",
    never "es fijo al techo: es parte de él".
 3. The reverse of a relative vector names its quantity: "the reverse of the relative
    acceleration found in Step 3", never "of the relative motion" (four languages).
@@ -61,7 +61,7 @@ def test_spanish_plural_wheels_roll():
     assert text.startswith("Las ruedas ruedan sin deslizar sobre el suelo")
 
 
-# ---- 2. Spanish: unido rígidamente ------------------------------------------------------------
+# ---- 2. Spanish: fijado (not "unido rígidamente": thirteenth round (a), no weld words)
 
 @over(name=NINETEEN)
 def test_spanish_welded_is_rigidly_joined(name):
@@ -71,12 +71,12 @@ def test_spanish_welded_is_rigidly_joined(name):
 
 
 def test_spanish_cable_strand_part_of_the_ceiling():
-    assert "El tramo 1 está unido rígidamente al techo: forma parte de él" in plain("seed_c5_1_5_pulley_block", "es")
+    assert "El tramo 1 está fijado al techo: forma parte de él" in plain("seed_c5_1_5_pulley_block", "es")
 
 
 def test_spanish_planes_part_of_the_ground():
     text = plain("seed_c5_1_2_bar_on_inclined_wheels", "es")
-    assert "están unidos rígidamente al suelo: forman parte de él" in text
+    assert "están fijados al suelo: forman parte de él" in text
 
 
 # ---- 3. the reverse of the relative acceleration ------------------------------------------------
@@ -171,3 +171,20 @@ def test_centre_relative_to_the_ground(name, lang):
     assert centre_rows and all(GROUND[lang] in line for line in centre_rows)
     assert not any(re.search(rf"(CIR|instant centre|zentro instantaneoa)[^.|]*{CEILING[lang]}", line, re.I)
                    for line in rows)
+
+
+# the quantity a slider's relative motion is, word by word (a word variable goes through
+# WORD(): a token would match no key and every line would say "velocity")
+QUANTITY = {"en": ("velocity", "acceleration"), "es": ("velocidad", "aceleración"),
+            "ca": ("velocitat", "acceleració"), "eu": ("abiadura", "azelerazio")}
+
+
+@over(lang=LANGS)
+def test_a_sliders_relative_motion_names_its_quantity(lang):
+    """001 P pair: B's relative velocity and acceleration, each line naming its own quantity."""
+    lines = [line for line in plain("seed_001_p_pair_coriolis", lang).splitlines()
+             if re.search(r"_\{B∈N \w+\.? M\} =", line) and line.startswith("B ")]
+    speed, accel = QUANTITY[lang]
+    assert [line.startswith("B ") for line in lines] == [True, True], lines
+    assert speed in lines[0] and accel not in lines[0], lines[0]
+    assert accel in lines[1] and speed not in lines[1], lines[1]

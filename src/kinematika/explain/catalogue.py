@@ -84,11 +84,19 @@ def says_fixed(value: Any) -> str:
     return "yes" if FIXED_WORD.search(str(getattr(value, "plain", value))) else "no"
 
 
+def word(value: Any) -> str:
+    """The word a select expression matches when a variable is a word, not a name (the
+    quantity a sentence is about: `{ WORD($kind) -> [accel] … *[speed] … }`): the renderer
+    hands every non-number to Fluent as a token, which no key matches, so the select reads
+    the token's plain text."""
+    return str(getattr(value, "plain", value))
+
+
 # fluent.runtime (0.4) annotates a function as returning a FluentType, but its resolver takes a plain
 # str too (resolver.match compares a select's key with ==, resolve() passes a str through): ours
 # return the word a select expression matches, so the cast only states what the resolver accepts.
 FUNCTIONS = cast(dict[str, Callable[[Any], FluentType]], {"ELISION": elision, "COUNT": count,
-                                                          "FIXED": says_fixed})
+                                                          "FIXED": says_fixed, "WORD": word})
 
 
 class Catalogue:

@@ -609,22 +609,22 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
        *[other] de { $frame }
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 composition-slide = { $point } llisca al llarg de la seva guia: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
-composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen { $kind ->
+composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen { WORD($kind) ->
         [accel] l’acceleració
        *[speed] la velocitat
     } relativa trobada a «{ sec-velocities }»: { $sym } = { $value }.
-composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen { $kind ->
+composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen { WORD($kind) ->
         [accel] l’acceleració
        *[speed] la velocitat
     } relativa trobada al pas { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació del pas { $step }.
 composition-sum_seen = Així, { $sym } = { $terms } és l’equació del pas { $step }, que va trobar { $seen }.
-composition-reverse = { $sym } = −{ $back } = { $value }: l'oposada { $kind ->
-        [accel] de l'acceleració
+composition-reverse = { $sym } = −{ $back } = { $value }: l’oposada { WORD($kind) ->
+        [accel] de l’acceleració
        *[speed] de la velocitat
     } relativa trobada al pas { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l'oposada de l'acceleració relativa trobada al pas { $step }, ja que { $vel } = 0 (contacte de rodolament) anul·la els dos termes de Coriolis, i per tant les dues acceleracions relatives són oposades.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l’oposada de l’acceleració relativa trobada al pas { $step }, ja que { $vel } = 0 (contacte de rodolament) anul·la els dos termes de Coriolis, i per tant les dues acceleracions relatives són oposades.
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)

@@ -432,7 +432,7 @@ composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($b
     } not turn relative to { $frame }, so all { COUNT($body) ->
         [many] their
        *[one] its
-    } points have the relative { $kind ->
+    } points have the relative { WORD($kind) ->
         [accel] acceleration
        *[speed] velocity
     } found in “{ sec-velocities }”: { $sym } = { $value }.
@@ -442,14 +442,14 @@ composition-slide_seen_step = { $point } slides along its guide; { $body } { COU
     } not turn relative to { $frame }, so all { COUNT($body) ->
         [many] their
        *[one] its
-    } points have the relative { $kind ->
+    } points have the relative { WORD($kind) ->
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in Step { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation of Step { $step }.
 composition-sum_seen = So { $sym } = { $terms } is the equation of Step { $step }, which found { $seen }.
-composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the relative { $kind ->
+composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the relative { WORD($kind) ->
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }.

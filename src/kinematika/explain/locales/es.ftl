@@ -38,8 +38,8 @@ structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
-        [one] está unido rígidamente a
-       *[other] están unidos rígidamente a
+        [one] está fijado a
+       *[other] están fijados a
     } { $frame }: { $bodies_n ->
         [one] forma parte de él y no se mueve
        *[other] forman parte de él y no se mueven
@@ -392,18 +392,18 @@ ans-pole_velocity = velocidad de I a lo largo de la base y la ruleta
 centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de su guía: su movimiento relativo sigue la guía, { $sym } = { $value }.
-composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen la { $kind ->
+composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen la { WORD($kind) ->
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en «{ sec-velocities }»: { $sym } = { $value }.
-composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen la { $kind ->
+composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen la { WORD($kind) ->
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación del paso { $step }.
 composition-sum_seen = Así, { $sym } = { $terms } es la ecuación del paso { $step }, que halló { $seen }.
-composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { $kind ->
+composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { WORD($kind) ->
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }.

@@ -339,18 +339,18 @@ ans-pole_velocity = I zentroaren abiadura polodietan zehar
 centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua bere gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
-composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek «{ sec-velocities }» atalean aurkitutako { $kind ->
+composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek «{ sec-velocities }» atalean aurkitutako { WORD($kind) ->
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboa dute: { $sym } = { $value }.
-composition-slide_seen_step = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek { $step }. urratsean aurkitutako { $kind ->
+composition-slide_seen_step = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek { $step }. urratsean aurkitutako { WORD($kind) ->
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboa dute: { $sym } = { $value }.
 composition-drag_seen = { $sym } = { $seen } = { $value }, { $step }. urratsean aurkitutako puntu horren mugimendua.
 composition-drag_terms = { $sym } = { $terms } = { $value }: { $step }. urratseko ekuazioaren lehen terminoak dira.
 composition-sum_seen = Beraz, { $sym } = { $terms } { $step }. urratseko ekuazioa da, { $seen } aurkitu zuena.
-composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako { $kind ->
+composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako { WORD($kind) ->
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboaren aurkakoa.
