@@ -49,6 +49,7 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
                  unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images
+    fig.bar = bar_unit(ctx, poly.values)
     fig.notes = pole_notes(fig)
     return fig
 
@@ -138,7 +139,33 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
                  values=ctx.drawn_values())
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
     fig.notes = pole_notes(fig)
+    fig.bar = bar_unit(ctx, poly.values)
     return fig
+
+
+def bar_unit(ctx: Ctx, values: list) -> tuple | None:
+    """The unit a symbolic polygon's scale bar is measured in, as (formula, its number at the
+    figure's draw_at values): the product of symbols that the longest absolute motion drawn
+    (blue) is a multiple of, in its largest component (C5-E.4's a_P = v²/R: a bar of
+    "v²/(2·R)"; C5-1.4's r·ω: "2·r·ω"), the next longest when it is no such multiple. Its
+    sample numbers have no unit a reader could name, and a bar of a bare "5" says nothing
+    (issue 30, twentieth round (c)). None on a numeric page (its bar says m/s, m/s²) or
+    when no component is such a product."""
+    if not ctx.symbolic:
+        return None
+    import sympy
+
+    def size(x: Any) -> float:
+        return abs(float(ctx.drawn(x)))
+
+    parts = [sympy.factor(sympy.expand(c)) for value in values for c in (value if isinstance(value, tuple) else (value,))
+             if isinstance(c, sympy.Basic) and c.free_symbols]
+    for c in sorted(parts, key=size, reverse=True):         # sorted keeps the first of equals first
+        _, rest = c.as_independent(*c.free_symbols, as_Add=False)      # -(2 + √3)/2 · v
+        factors = [f.as_base_exp() for f in sympy.Mul.make_args(rest)]
+        if rest.free_symbols and all(b.is_Symbol and e.is_Rational for b, e in factors) and size(rest) > 0:
+            return rest, size(rest)
+    return None
 
 
 class _Builder:
@@ -149,6 +176,7 @@ class _Builder:
         self.arrows: list[Arrow] = []
         self.images: dict[str, tuple] = {}
         self.size = max(ctx.scale_of("speed"), 1e-300)
+        self.values: list = []              # the absolute motions drawn (blue), as the solver gives them
 
     def at_pole(self, xy: tuple) -> bool:
         return math.hypot(*xy) <= SAME * self._scale()
@@ -183,6 +211,7 @@ class _Builder:
                 end = (tip[0] + step[0], tip[1] + step[1])
                 whole = term.kind == "point" and not term.sym.sup
                 if whole and tip == origin:
+                    self.values.append(term.value)
                     self._image(term.sym.sub, end)
                     style = "known" if self.single and not term.unknown else "result"
                     self._arrow(Arrow(origin, end, term.sym, style if self.single else "result"), label=self.single)
@@ -192,6 +221,7 @@ class _Builder:
                 tip = end
         end = self.ctx.drawn(eq.target.value)
         if end != origin and eq.target.sym.base in ("v", "a"):
+            self.values.append(eq.target.value)
             if not eq.target.sym.sup:
                 self._image(eq.target.sym.sub, end)
             self._arrow(Arrow(origin, end, eq.target.sym, "result"), label=self.single)
