@@ -161,6 +161,10 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] {", amb els seus mòduls"}
         }
     }.
+fig-at_pole = { $count ->
+    [one] { $images } és al pol o, ja que { $zero }.
+   *[other] { $images } són al pol o, ja que { $zero }.
+}
 fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
 fig-primed = La imatge del punt { $point } és { $image } ({ $symbol }: { $what }).
 fig-a_symbol = una dada

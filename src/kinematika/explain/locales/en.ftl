@@ -128,6 +128,10 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
            *[other] {", with their magnitudes"}
         }
     }.
+fig-at_pole = { $count ->
+    [one] { $images } is at the pole o, since { $zero }.
+   *[other] { $images } are at the pole o, since { $zero }.
+}
 fig-o_prime = The image of the point O is o′, since o is the pole.
 fig-primed = The image of the point { $point } is { $image } ({ $symbol } is the { $what }).
 fig-a_symbol = symbol of a datum

@@ -128,6 +128,10 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
            *[other] {", con sus módulos"}
         }
     }.
+fig-at_pole = { $count ->
+    [one] { $images } está en el polo o, ya que { $zero }.
+   *[other] { $images } están en el polo o, ya que { $zero }.
+}
 fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
 fig-primed = La imagen del punto { $point } es { $image } ({ $symbol }: { $what }).
 fig-a_symbol = un dato

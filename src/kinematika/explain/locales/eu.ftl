@@ -128,6 +128,10 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] {", beren moduluekin"}
         }
     }.
+fig-at_pole = { $count ->
+    [one] { $images } o poloan dago, { $zero } baita.
+   *[other] { $images } o poloan daude, { $zero } baita.
+}
 fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
 fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
 fig-a_symbol = datu baten ikurra
