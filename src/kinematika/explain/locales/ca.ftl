@@ -276,10 +276,8 @@ step-title = Pas { $n }: { $kind } — { $bodies }
 step-title_group = Pas { $n }: { $bodies }
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
-ann-M = mòd
-ann-D = dir
 v-intro = Cada equació vectorial s’anota com als apunts: { $marks ->
-        [1] mòd mòdul conegut, dir direcció coneguda
+        [1] M: mòdul conegut, D: direcció coneguda (sota un terme aquestes lletres són sempre aquestes marques, mai els punts M i D)
        *[other] M mòdul conegut, D direcció coneguda
     }, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
         [md] : els termes marcats amb ?, que troba el pas

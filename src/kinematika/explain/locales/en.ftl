@@ -213,10 +213,8 @@ step-title = Step { $n }: { $kind } — { $bodies }
 step-title_group = Step { $n }: { $bodies }
 sec-velocities = Velocities
 sec-accelerations = Accelerations
-ann-M = mag
-ann-D = dir
 v-intro = Each vector equation is annotated as in the notes: { $marks ->
-        [1] mag magnitude known, dir direction known
+        [1] M: magnitude known, D: direction known (under a term these letters are always these marks, never the points M and D)
        *[other] M magnitude known, D direction known
     }, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
         [md] : the terms marked ?, which the step finds

@@ -201,10 +201,8 @@ step-title = Paso { $n }: { $kind } — { $bodies }
 step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
-ann-M = mód
-ann-D = dir
 v-intro = Cada ecuación vectorial se anota como en los apuntes: { $marks ->
-        [1] mód módulo conocido, dir dirección conocida
+        [1] M: módulo conocido, D: dirección conocida (bajo un término estas letras son siempre estas marcas, nunca los puntos M y D)
        *[other] M módulo conocido, D dirección conocida
     }, ? desconocido; ⊥ y ∥ dan una dirección conocida. Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
         [md] : los términos marcados con ?

@@ -207,10 +207,8 @@ step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
-ann-M = mod
-ann-D = norab
 v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: { $marks ->
-        [1] mod modulua ezaguna, norab norabidea ezaguna
+        [1] M: modulua ezaguna, D: norabidea ezaguna (termino baten azpian letra hauek beti marka hauek dira, ez inoiz M eta D puntuak)
        *[other] M modulua ezaguna, D norabidea ezaguna
     }, ? ezezaguna; ⊥ eta ∥ ikurrek norabide ezaguna ematen dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
         [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak

@@ -881,8 +881,6 @@ class Renderer(ABC):
         if a.code in ("M", "D", "?"):
             if a.code == "M" and a.ref:
                 return self.inline(a.ref)
-            if a.code != "?" and self.doc.worded_marks:     # a name on the page is M or D (`marks`)
-                return self.esc(self.message(Msg("ann.M" if a.code == "M" else "ann.D")))
             return self.esc(a.code)
         sign = {"perp": "⊥ ", "para": "∥ "}[a.code]
         return self.esc(sign) + self.arg(a.ref)
