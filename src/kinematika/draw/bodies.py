@@ -33,6 +33,7 @@ def draw_bodies(ctx: Context) -> None:
         ctx.add("circle", [centre], r=float(radius), colour="#bdbdbd", width=1.0,
                 dash=DOTTED_SPHERE, zorder=0, gid="sphere")
     for body in ctx.scene.bodies.values():
+        ctx.owner = body.name                 # what is drawn now outlines this body (`Context.avoid`)
         if body.frame:
             for shape in body.shapes:
                 _ground_shape(ctx, shape)
@@ -43,6 +44,7 @@ def draw_bodies(ctx: Context) -> None:
             _fixed_circle_name(ctx, body)
         else:
             _body(ctx, body)
+    ctx.owner = None
     _points(ctx)
     _contact_names(ctx)
 

@@ -29,6 +29,7 @@ class Context:
         self.frame = scene.frame.name
         self.dim = scene.dim
         self.marks: list[Mark] = []
+        self.owner: Optional[str] = None      # the body being drawn: the outlines `avoid` keeps are its
 
     # what a joint's symbol asks of its figure (`joints.symbols`) ------------------------
     def centroid(self) -> np.ndarray:
@@ -76,9 +77,11 @@ class Context:
     def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0) -> None:
         """Keep labels off the polyline through these points (a single point too); `weight`
         says how bad covering it is (arrows and marks more than bars), `radius` (points) how
-        far around each point the drawing reaches."""
+        far around each point the drawing reaches; drawn while a body is (`owner`), it is
+        that body's outline, which that body's name may reach across (`draw.labels`)."""
+        owner = self.owner
         self.add("clear", [np.asarray(p, dtype=float) for p in polyline], avoid=weight,
-                 radius=radius, zorder=0)
+                 radius=radius, zorder=0, **({"group": f"outline:{owner}"} if owner else {}))
 
     def label(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
               prefer: Any = None, body: Optional[str] = None, group: str = "", layer: str = "",

@@ -47,6 +47,7 @@ POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
 ARROW_CROSS = 90.0       # a polygon label's leader across an arrow (exactly, not sampled): worse than across a label
+BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
 TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
 DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
 
@@ -99,6 +100,7 @@ class LabelBoard:
     labels: list[Label] = field(default_factory=list)
     obstacles: list[tuple] = field(default_factory=list)   # (data polyline, weight, radius)
     tips: list[np.ndarray] = field(default_factory=list)   # arrows' tips (data coordinates)
+    owners: list[str] = field(default_factory=list)        # each obstacle's body ("" for none)
 
     def add(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
             prefer: Any = None, **kw: Any) -> None:
@@ -107,12 +109,14 @@ class LabelBoard:
         self.labels.append(Label(np.asarray(anchor, dtype=float), text, colour, priority, gid,
                                  pref, **kw))
 
-    def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0) -> None:
+    def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0, owner: str = "") -> None:
         """Keep labels off the drawn polyline through these points (a single point too);
         `weight` says how bad covering it is (arrows and marks more than bars), `radius`
-        (points) how far around each point the drawing reaches (a marker's size)."""
+        (points) how far around each point the drawing reaches (a marker's size), `owner`
+        the body it outlines (its name's leader may cross it: `Layout._leader_over`)."""
         self.obstacles.append((np.array([np.asarray(p, dtype=float) for p in polyline]), weight,
                                radius))
+        self.owners.append(owner)
 
     def tip(self, point: Any) -> None:
         """An arrow's tip: no label may cover its head (`TIP` points around it), which in a
@@ -189,6 +193,11 @@ class Layout:
         self.unit = _directions()
         self.tips = ax.transData.transform(np.array(board.tips)) if board.tips else np.zeros((0, 2))
         self.arrows = _arrow_segments(board.obstacles, ax.transData)
+        owners = board.owners if len(board.owners) == len(board.obstacles) else [""] * len(board.obstacles)
+        self.outlines = _arrow_segments(board.obstacles, ax.transData, low=1.0, high=3.0)
+        self.outline_owners = np.array([o for (line, weight, _), o in zip(board.obstacles, owners)
+                                        if 1.0 <= weight < 3.0 and len(line) >= 2
+                                        for _ in range(len(line) - 1)], dtype=object)
 
     def run(self) -> list[Placement]:
         """Every label's placement: greedily, most important first, each at its cheapest
@@ -299,17 +308,26 @@ class Layout:
         each sample of it (at most 0.9 `LEADER_CROSS`) (every `SAMPLE` points, from `LEADER_CLEAR` beyond its anchor to the
         box) on an arrow, a bar or a mark. A leader drawn across other arrows of a polygon led
         the eye to the wrong arrow (001's a_AB^t across a_FB^t and a_F∈N/R, issue 30,
-        eighteenth round (d)). Other labels' leaders weigh only the labels they cross."""
+        eighteenth round (d)). Every leader also costs `BODY_CROSS` for each time it crosses
+        a drawn body's outline, bar or the ground's line (a body's name: another body's, as
+        it reaches into its own), counted exactly: a leader across a wheel or the ground reads as
+        pointing at it (C5-1.2's v_J∈OJ across the left wheel, C5-1.4's I labels across the
+        planet, C5-E.6's chainring name across the ground; issue 30, twentieth round (c))."""
         boxes, dist, _, at, _ = cand
         cost = np.zeros(len(boxes))
         far = np.flatnonzero(dist >= LEADER)
-        if label.along is None or not len(far) or not len(self.obstacles):
+        if not len(far) or not len(self.obstacles):
             return cost
         centres = (boxes[far, :2] + boxes[far, 2:]) / 2
         d = centres - at[far]
         length = np.linalg.norm(d, axis=1)
         edge = np.array([_edge(a, b) for a, b in zip(at[far], boxes[far])])
-        cost[far] = ARROW_CROSS * _arrows_crossed(at[far], edge, self.arrows, OBSTACLE_PAD * self.px)
+        own = self.outline_owners == label.gid.removeprefix("body:") if label.gid.startswith("body:") else None
+        outlines = self.outlines if own is None or not len(own) else self.outlines[~own]   # a name reaches into its body
+        cost[far] = BODY_CROSS * _arrows_crossed(at[far], edge, outlines, OBSTACLE_PAD * self.px)
+        if label.along is None:
+            return cost
+        cost[far] += ARROW_CROSS * _arrows_crossed(at[far], edge, self.arrows, OBSTACLE_PAD * self.px)
         reach = np.linalg.norm(edge - at[far], axis=1)
         step, pad = SAMPLE * self.px, OBSTACLE_PAD * self.px
         s = np.arange(LEADER_CLEAR * self.px, float(reach.max()) + step, step)          # (S,)
@@ -437,11 +455,13 @@ def _crossing(p: np.ndarray, qs: np.ndarray, starts: np.ndarray, ends: np.ndarra
     return ((d1 * d2 < 0) & (d3 * d4 < 0)).sum(axis=1).astype(float)
 
 
-def _arrow_segments(obstacles: list, transform: Any) -> np.ndarray:
+def _arrow_segments(obstacles: list, transform: Any, low: float = 3.0, high: float = math.inf) -> np.ndarray:
     """(M, 2, 2) the segments (display) of the drawn polylines weighing as arrows (weight ≥ 3:
-    a polygon's arrows), for a leader's crossings to be counted exactly (`_arrows_crossed`)."""
+    a polygon's arrows), or weighing from `low` up to `high` (1 to 3: the bodies' outlines,
+    bars and the ground's line, not its hatching), for a leader's crossings to be counted
+    exactly (`_arrows_crossed`)."""
     segs = [np.stack([q[:-1], q[1:]], axis=1) for q in
-            (transform.transform(line) for line, weight, _ in obstacles if weight >= 3.0 and len(line) >= 2)]
+            (transform.transform(line) for line, weight, _ in obstacles if low <= weight < high and len(line) >= 2)]
     return np.concatenate(segs) if segs else np.zeros((0, 2, 2))
 
 

@@ -67,7 +67,8 @@ def _avoid(cv: Canvas, m: Mark, pts: np.ndarray) -> None:
     """Labels keep off the mark: a clear mark's polyline, a dot's point, another's points
     round (back to the first)."""
     if m.kind == "clear":
-        cv.board.avoid(*pts, weight=m.avoid, radius=m.radius)
+        owner = m.group.removeprefix("outline:") if m.group and m.group.startswith("outline:") else ""
+        cv.board.avoid(*pts, weight=m.avoid, radius=m.radius, owner=owner)
     elif m.kind == "dot":
         cv.board.avoid(pts[0], weight=m.avoid, radius=m.radius)
     else:

@@ -247,6 +247,7 @@ class Figure:
     unit: str = ""                                 # unit of the scale bar (speed, accel, len)
     sample: bool = False                           # drawn at sample values of the symbols
     values: dict = field(default_factory=dict)     # ... namely these (a symbolic model's draw_at)
+    bar: Optional[tuple] = None                    # a symbolic bar's unit: (formula, its drawn number)
     notes: list = field(default_factory=list)      # sentences after the caption (how a label reads)
     layouts: dict = field(default_factory=dict, repr=False, compare=False)   # by the labels' texts
 
@@ -361,7 +362,7 @@ class Document:
     parameters: tuple = ()                          # the model's parameters' names (its own words write them)
     ground_part: bool = False                       # the ground is named after a part of it (`reference_name`)
     values: dict = field(default_factory=dict)      # a symbolic model's numbers (draw_at): how formulas are written
-    worded_marks: bool = False                      # M/D written as words: a name on the page is M or D (`marks`)
+    worded_marks: bool = False                      # a name on the page is M or D: the legend says the marks are not points (`marks`)
 
     def blocks(self) -> list:
         """Every block, nested sections included, in reading order."""

@@ -18,7 +18,7 @@ import math
 from typing import Any
 
 from .context import Ctx
-from .document import Arrow, Described, Equation, Figure, msg
+from .document import Arrow, Described, Equation, Figure, Inline, Name, Names, msg
 from .terms import acceleration_terms
 
 OFFSET = 0.035          # of the polygon's size: the gap between collinear arrows
@@ -49,7 +49,8 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
                  unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images
-    fig.notes = pole_notes(fig)
+    fig.bar = bar_unit(ctx, poly.values)
+    fig.notes = pole_notes(fig) + at_pole_notes(poly)
     return fig
 
 
@@ -137,8 +138,49 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
                  arrows=_separated(poly.arrows), unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic,
                  values=ctx.drawn_values())
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
-    fig.notes = pole_notes(fig)
+    fig.notes = pole_notes(fig) + at_pole_notes(poly)
+    fig.bar = bar_unit(ctx, poly.values)
     return fig
+
+
+def at_pole_notes(poly: "_Builder") -> list:
+    """The caption's word on the images that fall on the pole, which the figure cannot letter
+    apart from o: "a is at o, since a_A = 0" (001's rolling pair, A the fixed point of the
+    ground: its acceleration is zero and its image a is the pole). Said of every image a
+    term of the polygon's equations names there, at either level (issue 30, twentieth round (c))."""
+    zero = sorted((name, sym) for name, (xy, sym) in poly.named.items() if poly.at_pole(xy))
+    if not zero:
+        return []
+    names = [name for name, _ in zero]
+    equal: list = []
+    for _, sym in zero:
+        equal += [sym, " = "]
+    return [msg("fig.at_pole", images=Names([Name(n) for n in names]), count=len(names), zero=Inline(equal + ["0"]))]
+
+
+def bar_unit(ctx: Ctx, values: list) -> tuple | None:
+    """The unit a symbolic polygon's scale bar is measured in, as (formula, its number at the
+    figure's draw_at values): the product of symbols that the longest absolute motion drawn
+    (blue) is a multiple of, in its largest component (C5-E.4's a_P = v²/R: a bar of
+    "v²/(2·R)"; C5-1.4's r·ω: "2·r·ω"), the next longest when it is no such multiple. Its
+    sample numbers have no unit a reader could name, and a bar of a bare "5" says nothing
+    (issue 30, twentieth round (c)). None on a numeric page (its bar says m/s, m/s²) or
+    when no component is such a product."""
+    if not ctx.symbolic:
+        return None
+    import sympy
+
+    def size(x: Any) -> float:
+        return abs(float(ctx.drawn(x)))
+
+    parts = [sympy.factor(sympy.expand(c)) for value in values for c in (value if isinstance(value, tuple) else (value,))
+             if isinstance(c, sympy.Basic) and c.free_symbols]
+    for c in sorted(parts, key=size, reverse=True):         # sorted keeps the first of equals first
+        _, rest = c.as_independent(*c.free_symbols, as_Add=False)      # -(2 + √3)/2 · v
+        factors = [f.as_base_exp() for f in sympy.Mul.make_args(rest)]
+        if rest.free_symbols and all(b.is_Symbol and e.is_Rational for b, e in factors) and size(rest) > 0:
+            return rest, size(rest)
+    return None
 
 
 class _Builder:
@@ -149,6 +191,8 @@ class _Builder:
         self.arrows: list[Arrow] = []
         self.images: dict[str, tuple] = {}
         self.size = max(ctx.scale_of("speed"), 1e-300)
+        self.values: list = []              # the absolute motions drawn (blue), as the solver gives them
+        self.named: dict[str, tuple] = {}   # image -> (its place, the symbol of the motion ending there)
 
     def at_pole(self, xy: tuple) -> bool:
         return math.hypot(*xy) <= SAME * self._scale()
@@ -179,11 +223,15 @@ class _Builder:
             for term in side:
                 step = self.ctx.drawn(term.value)
                 if step[0] == 0 and step[1] == 0:
+                    if term.kind == "point" and not term.sym.sup and tip == origin:
+                        self._named(term.sym, origin)          # a point at rest: its image is o
                     continue
                 end = (tip[0] + step[0], tip[1] + step[1])
                 whole = term.kind == "point" and not term.sym.sup
                 if whole and tip == origin:
+                    self.values.append(term.value)
                     self._image(term.sym.sub, end)
+                    self._named(term.sym, end)
                     style = "known" if self.single and not term.unknown else "result"
                     self._arrow(Arrow(origin, end, term.sym, style if self.single else "result"), label=self.single)
                 else:
@@ -191,10 +239,19 @@ class _Builder:
                     self._arrow(Arrow(tip, end, term.sym, style))
                 tip = end
         end = self.ctx.drawn(eq.target.value)
+        if eq.target.sym.base in ("v", "a") and not eq.target.sym.sup:
+            self._named(eq.target.sym, end)
         if end != origin and eq.target.sym.base in ("v", "a"):
+            self.values.append(eq.target.value)
             if not eq.target.sym.sup:
                 self._image(eq.target.sym.sub, end)
             self._arrow(Arrow(origin, end, eq.target.sym, "result"), label=self.single)
+
+    def _named(self, sym: Any, xy: tuple) -> None:
+        """The image of the point `sym` (v_A, a_A) names, with its place and that symbol."""
+        name = _letter(sym.sub, page_letters(self.ctx))
+        if name and name not in self.named:
+            self.named[name] = (xy, sym)
 
     def _image(self, label: str, xy: tuple) -> None:
         name = _letter(label, page_letters(self.ctx))

@@ -165,6 +165,10 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] {", amb els seus mòduls"}
         }
     }.
+fig-at_pole = { $count ->
+    [one] { $images } és al pol o, ja que { $zero }.
+   *[other] { $images } són al pol o, ja que { $zero }.
+}
 fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
 fig-primed = La imatge del punt { $point } és { $image } ({ $symbol }: { $what }).
 fig-a_symbol = una dada
@@ -276,10 +280,8 @@ step-title = Pas { $n }: { $kind } — { $bodies }
 step-title_group = Pas { $n }: { $bodies }
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
-ann-M = mòd
-ann-D = dir
 v-intro = Cada equació vectorial s’anota com als apunts: { $marks ->
-        [1] mòd mòdul conegut, dir direcció coneguda
+        [1] M: mòdul conegut, D: direcció coneguda (sota un terme aquestes lletres són sempre aquestes marques, mai els punts M i D)
        *[other] M mòdul conegut, D direcció coneguda
     }, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
         [md] : els termes marcats amb ?, que troba el pas

@@ -129,6 +129,10 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
            *[other] {", with their magnitudes"}
         }
     }.
+fig-at_pole = { $count ->
+    [one] { $images } is at the pole o, since { $zero }.
+   *[other] { $images } are at the pole o, since { $zero }.
+}
 fig-o_prime = The image of the point O is o′, since o is the pole.
 fig-primed = The image of the point { $point } is { $image } ({ $symbol } is the { $what }).
 fig-a_symbol = symbol of a datum
@@ -210,10 +214,8 @@ step-title = Step { $n }: { $kind } — { $bodies }
 step-title_group = Step { $n }: { $bodies }
 sec-velocities = Velocities
 sec-accelerations = Accelerations
-ann-M = mag
-ann-D = dir
 v-intro = Each vector equation is annotated as in the notes: { $marks ->
-        [1] mag magnitude known, dir direction known
+        [1] M: magnitude known, D: direction known (under a term these letters are always these marks, never the points M and D)
        *[other] M magnitude known, D direction known
     }, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
         [md] : the terms marked ?, which the step finds

@@ -129,6 +129,10 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
            *[other] {", con sus módulos"}
         }
     }.
+fig-at_pole = { $count ->
+    [one] { $images } está en el polo o, ya que { $zero }.
+   *[other] { $images } están en el polo o, ya que { $zero }.
+}
 fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
 fig-primed = La imagen del punto { $point } es { $image } ({ $symbol }: { $what }).
 fig-a_symbol = un dato
@@ -198,10 +202,8 @@ step-title = Paso { $n }: { $kind } — { $bodies }
 step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
-ann-M = mód
-ann-D = dir
 v-intro = Cada ecuación vectorial se anota como en los apuntes: { $marks ->
-        [1] mód módulo conocido, dir dirección conocida
+        [1] M: módulo conocido, D: dirección conocida (bajo un término estas letras son siempre estas marcas, nunca los puntos M y D)
        *[other] M módulo conocido, D dirección conocida
     }, ? desconocido; ⊥ y ∥ dan una dirección conocida. Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
         [md] : los términos marcados con ?

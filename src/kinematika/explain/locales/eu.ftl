@@ -129,6 +129,10 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] {", beren moduluekin"}
         }
     }.
+fig-at_pole = { $count ->
+    [one] { $images } o poloan dago, { $zero } baita.
+   *[other] { $images } o poloan daude, { $zero } baita.
+}
 fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
 fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
 fig-a_symbol = datu baten ikurra
@@ -204,10 +208,8 @@ step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
-ann-M = mod
-ann-D = norab
 v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: { $marks ->
-        [1] mod: modulua ezaguna; norab: norabidea ezaguna
+        [1] M: modulua ezaguna; D: norabidea ezaguna (termino baten azpian letra hauek beti marka hauek dira, ez inoiz M eta D puntuak)
        *[other] M: modulua ezaguna; D: norabidea ezaguna
     }; ?: ezezaguna (norabidea edo modulua); ⊥ eta ∥ ikurrek norabide ezaguna adierazten dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
         [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak

@@ -857,6 +857,24 @@ class Renderer(ABC):
         write theirs with the same writer (`numerals.written`), to three digits."""
         return written(x, 4, self.decimal, self.power)
 
+    def bar(self, fig: Figure) -> tuple[str, Callable[[float], str], float]:
+        """A figure's scale bar: its unit, how its count is written, the size of one unit.
+        A numeric page's bar is in m/s or m/s² ("0,5 m/s"); a symbolic page's polygon in the
+        symbols' unit (`polygon.bar_unit`), the count written into the formula as the notes
+        write a multiple (v²/(2·R), 2·r·ω): its sample numbers have no unit to name. A
+        symbolic figure with no such unit keeps a bare number (issue 30, twentieth round (c))."""
+        if not self.doc.symbolic:
+            return self.unit(fig.unit), self.bar_number, 1.0
+        if fig.bar is None:
+            return "", self.bar_number, 1.0
+        import sympy
+
+        from .unicode import unicode_formula, unicode_name
+
+        unit, size = fig.bar
+        return "", lambda n: self.decimals(unicode_formula(sympy.nsimplify(n) * unit,
+                                                           lambda s: unicode_name(self.spelt(s)), lang=self.lang)), size
+
     def bar_number(self, x: float) -> str:
         """A scale bar's round length, with the language's decimal sign."""
         return f"{x:g}".replace(".", self.decimal)
@@ -874,8 +892,6 @@ class Renderer(ABC):
         if a.code in ("M", "D", "?"):
             if a.code == "M" and a.ref:
                 return self.inline(a.ref)
-            if a.code != "?" and self.doc.worded_marks:     # a name on the page is M or D (`marks`)
-                return self.esc(self.message(Msg("ann.M" if a.code == "M" else "ann.D")))
             return self.esc(a.code)
         sign = {"perp": "⊥ ", "para": "∥ "}[a.code]
         return self.esc(sign) + self.arg(a.ref)

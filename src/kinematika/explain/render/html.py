@@ -135,8 +135,8 @@ class HtmlRenderer(Renderer):
         and its caption."""
         caption = self.caption(fig)
         self.figures = getattr(self, "figures", 0) + 1
-        drawing = svg(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "", f"f{self.figures}",
-                      self.bar_number)
+        unit, number, per = self.bar(fig)
+        drawing = svg(fig, self.svg_label, unit, f"f{self.figures}", number, per)
         return f"<figure>{drawing}<figcaption>{caption}</figcaption></figure>"
 
     def drawing(self, d: Drawing) -> str:

@@ -9,7 +9,7 @@ from ..document import Equation, Figure, Name, Sym
 from ...text import shown_lines
 from ...numerals import function_names
 from .base import DECIMAL, Renderer
-from .svg import COLOURS, MARGIN, WIDTH, Text, layout, nice
+from .svg import COLOURS, MARGIN, WIDTH, Text, bar_length, layout
 from .names import latex_name, upright
 from .unicode import latex_formula
 
@@ -205,8 +205,8 @@ class LatexRenderer(Renderer):
     def figure(self, fig: Figure) -> str:
         """A polygon or figure as a TikZ picture, laid out as the SVG is, with its caption."""
         caption = self.caption(fig)
-        return tikz(fig, self.svg_label, self.unit(fig.unit) if not self.doc.symbolic else "", caption,
-                    self.bar_number)
+        unit, number, per = self.bar(fig)
+        return tikz(fig, self.svg_label, unit, caption, number, per)
 
     def svg_label(self, s: Sym | str) -> Text:
         """A symbol or a polygon's point name in a figure: its measured size and, for a symbol, its LaTeX for TikZ."""
@@ -216,7 +216,7 @@ class LatexRenderer(Renderer):
         return text
 
 
-def tikz(fig: Figure, label, unit: str, caption: str, number=lambda x: f"{x:g}") -> str:
+def tikz(fig: Figure, label, unit: str, caption: str, number=lambda x: f"{x:g}", per: float = 1.0) -> str:
     """The figure as a TikZ picture 12 cm wide, laid out (labels placed) as the SVG is."""
     lay = layout(fig, label)
     c = 12.0 / WIDTH
@@ -245,9 +245,9 @@ def tikz(fig: Figure, label, unit: str, caption: str, number=lambda x: f"{x:g}")
         if lb.leader is not None:
             out.append(rf"\draw[very thin, color=k{colour}] {cm(*lb.leader[0])} -- {cm(*lb.leader[1])};")
         out.append(rf"\node[color=k{colour}, inner sep=0pt] at {cm(*lb.centre)} {{\small {lb.text.tex or tex_text(lb.text.raw)}}};")
-    length = nice(90 / lay.k)
+    count = bar_length(lay.k, per)
     y = lay.height - 14
-    out.append(rf"\draw[|-|] {cm(MARGIN, y)} -- {cm(MARGIN + length * lay.k, y)} node[right] "
-               rf"{{{tex_text(number(length))} {unit}}};")
+    out.append(rf"\draw[|-|] {cm(MARGIN, y)} -- {cm(MARGIN + count * per * lay.k, y)} node[right] "
+               rf"{{{tex_text(number(count))} {unit}}};")
     out.append(r"\end{tikzpicture}\\[2pt]{\small " + caption + r"}\end{center}")
     return "\n".join(out) + "\n"

@@ -218,9 +218,10 @@ def _edge(start: tuple, box: tuple) -> tuple:
 
 
 def svg(fig: Figure, label: Callable[[Sym | str], Text], unit: str, prefix: str = "f",
-        number: Callable[[float], str] = lambda x: f"{x:g}") -> str:
+        number: Callable[[float], str] = lambda x: f"{x:g}", per: float = 1.0) -> str:
     """The figure as an <svg> element; `label` gives a symbol's text, `unit` the bar's unit,
-    `prefix` keeps its ids apart from other figures' on the page."""
+    `prefix` keeps its ids apart from other figures' on the page; the bar is a round number
+    of `per` (a symbolic unit's drawn size, `bar_length`), written by `number`."""
     lay = layout(fig, label)
     height = lay.height
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height:.0f}" '
@@ -261,16 +262,23 @@ def svg(fig: Figure, label: Callable[[Sym | str], Text], unit: str, prefix: str 
         out.append(f'<text x="{lb.centre[0]:.1f}" y="{lb.centre[1]:.1f}" fill="{lb.colour}" text-anchor="middle" '
                    f'dominant-baseline="central" stroke="white" stroke-width="3" '
                    f'paint-order="stroke">{lb.text.markup}</text>')
-    out.append(_scale_bar(lay, unit, number))
+    out.append(_scale_bar(lay, unit, number, per))
     out.append("</svg>")
     return "".join(out)
 
 
-def _scale_bar(lay: Layout, unit: str, number: Callable[[float], str]) -> str:
-    length = nice(90 / lay.k)
-    px = length * lay.k
+def bar_length(k: float, per: float = 1.0) -> float:
+    """A scale bar's count of its unit: a round number (`nice`) of units `per` (1 for m/s;
+    a symbolic bar's unit at the drawn numbers, v²/R = 16) about 90 points long at `k`
+    points a model unit."""
+    return nice(90 / (k * per))
+
+
+def _scale_bar(lay: Layout, unit: str, number: Callable[[float], str], per: float = 1.0) -> str:
+    count = bar_length(lay.k, per)
+    px = count * per * lay.k
     y = lay.height - 14
-    text = f"{number(length)} {unit}".strip()
+    text = f"{number(count)} {unit}".strip()
     return (f'<line x1="{MARGIN}" y1="{y:.1f}" x2="{MARGIN + px:.1f}" y2="{y:.1f}" stroke="#222" '
             f'stroke-width="2"/><line x1="{MARGIN}" y1="{y - 4:.1f}" x2="{MARGIN}" y2="{y + 4:.1f}" '
             f'stroke="#222"/><line x1="{MARGIN + px:.1f}" y1="{y - 4:.1f}" x2="{MARGIN + px:.1f}" '
