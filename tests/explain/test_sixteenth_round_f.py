@@ -111,7 +111,7 @@ def test_the_marks_are_never_a_name_on_the_page(name, lang):
     assert not marks & {"mòd", "mag", "mód", "mod", "norab"}
     if _mark_rows(md) and doc.equations():
         assert marks & {"M", "D"}
-        assert bool(clash) == bool(re.search(r"\bM: \w+ \w+, D: ", md)), clash
+        assert bool(clash) == bool(re.search(r"\bM: \w+ \w+[,;] D: \w+ \w+ \(", md)), clash
 
 
 def test_the_pulley_on_a_cable_writes_the_notes_marks():

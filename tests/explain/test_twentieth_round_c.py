@@ -12,7 +12,7 @@ from matplotlib.figure import Figure as MplFigure
 
 from kinematika.draw.labels import BODY_CROSS, LEADER, Label, LabelBoard, Layout
 
-from .helpers import LANGS, SEEDS, explained, rendered
+from .helpers import LANGS, SEEDS, explained, over, rendered
 
 BAR = re.compile(r'<text x="[0-9.]+" y="[0-9.]+" fill="#222">([^<]*)</text>')
 
@@ -24,7 +24,7 @@ def _polygons(doc) -> list:
             and b.unit in ("speed", "accel")]
 
 
-@pytest.mark.parametrize("name", SEEDS)
+@over(name=SEEDS)
 def test_every_scale_bar_says_its_unit(name):
     """No bar is a bare number: a numeric page's says m/s or m/s², a symbolic page's a
     multiple of its symbols (C5-E.4's "5", C5-1.4's "1" before)."""
@@ -111,5 +111,5 @@ def test_the_notes_marks_are_kept_where_a_point_is_m_or_d(name, lang):
     """Pages naming a point M or D wrote "mag/dir": they keep M and D, and say once in the
     legend that under a term these are marks, not points."""
     md = rendered(name, lang)
-    assert re.search(r"\bM: \w+ \w+, D: \w+ \w+ \(", md)
+    assert re.search(r"\bM: \w+ \w+[,;] D: \w+ \w+ \(", md)
     assert not re.search(r"(?m)^\s*(?:mag|mòd|mód|mod|dir|norab)(?:\s|$)", md)
