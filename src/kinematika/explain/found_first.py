@@ -81,6 +81,7 @@ def centres_after_found(ctx: Ctx, centres: Section, velocities: Section) -> None
             s, at = first_use
             at += 1 if s == i and at > k else 0
             said = steps[s].blocks[at]
+            assert isinstance(said, Msg)        # `_starts_from` finds only these sentences
             steps[s].blocks[at] = Msg(PLACED_BEFORE[said.key], said.args)
         centres.blocks[n] = msg("centres.found_above_step", centre=centre, step=i + 1, body=Name(body, "body"))
         ctx.worked.add(f"centre:{body}")
