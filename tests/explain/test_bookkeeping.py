@@ -224,6 +224,7 @@ SEEDS = sorted(p.stem for p in (Path(__file__).resolve().parents[2] / "examples"
 SAYS_MOTION = ("driver.along", "driver.velocity", "driver.whole", "group.wheel_a", "vehicle.driven", "vehicle.translation",
                "contact.fixed",            # a point of a body welded to the frame does not move
                "rolling.centre", "centre.site", "centre.site_s",   # a contact at rest, a centre placed before
+               "centre.site_here", "centre.site_s_here",          # a centre placed just above (round 20e)
                "rolling.same")             # no slip: the two material points at a contact move alike
 
 

@@ -98,12 +98,16 @@ def test_the_planet_centre_comes_from_the_data_before_its_rate():
     ring), both ⊥ to the vertical A1–J10. Linear along it, v(y) = 2rω + 5ω(y + 2r) vanishes
     at y = −12r/5: I at (0, −12r/5), (2/5)r below A1 as the notes say. Then ω_planet1 from
     v_A1 = ω_z ẑ × (A1 − I) = ω_z ẑ × (0, 2r/5) = (−2rω_z/5, 0): ω_z = −5ω. The centre is in
-    the first centres section and the rate is read off an equation starting at it."""
+    the velocity step, after the equations that find v_A1 and v_J10 (round 20e: "Instant
+    centres", before the velocities, read them before any line found them), before the rate,
+    which is read off an equation starting at it."""
     sol, doc = explained("seed_c5_1_4_epicyclic")
     keys = [s.title.key for s in doc.sections]
     assert keys.index("sec.centres") < keys.index("sec.velocities")
-    note = next(n for n in _blocks(_section(doc, "sec.centres")) if isinstance(n, CentreNote)
-                and set(n.pair) == {"ground", "planet1"})
+    velocities = _blocks(_section(doc, "sec.velocities"))
+    note = next(n for n in velocities if isinstance(n, CentreNote) and set(n.pair) == {"ground", "planet1"})
+    rate = next(d for d in velocities if isinstance(d, Derived) and d.body == "planet1" and d.kind == "omega")
+    assert velocities.index(note) < velocities.index(rate)
     assert note.how == "proportional" and note.side == "between"
     px, py = (sympy.sympify(c) for c in note.value["point"])
     r = _sym(py, "r")

@@ -54,9 +54,14 @@ def test_the_centres_section_holds_what_is_asked():
     """C5-1.4 asks the instant centre of one planet: the notes place it from the centres of
     the carrier and the ring (both at O) and the points A1 and Q, and say nothing of the other
     planets' centres. The planet's centres relative to the carrier and the ring (at A1, at Q)
-    are named as points in its note, not listed as lines of their own (ninth round)."""
+    are named as points in its note, not listed as lines of their own (ninth round). The
+    planet's note stands in the velocity step, after the equations that find v_A1 and v_Q
+    (round 20e); the centres section says where it is placed."""
     _, doc = explained("seed_c5_1_4_epicyclic")
-    notes = [b for b in blocks(section(doc, "sec.centres")) if isinstance(b, CentreNote)]
+    centres = blocks(section(doc, "sec.centres"))
+    assert any(getattr(b, "key", "") == "centres.found_above_step" and str(b.args["centre"].sub) == "ground,planet1"
+               for b in centres)
+    notes = [b for b in centres + blocks(section(doc, "sec.velocities")) if isinstance(b, CentreNote)]
     pairs = {frozenset(n.pair) for n in notes}
     assert frozenset(("ground", "planet1")) in pairs
     assert not any(pair & {"planet2", "planet3"} for pair in pairs)

@@ -17,6 +17,7 @@ from .asked import worked
 from .checks import checks_section
 from .contacts import contact_section
 from .centres import centre_sites, centres_first, centres_in_steps, centres_section
+from .found_first import centres_after_found
 from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
 from .strands import strand_words
@@ -67,7 +68,8 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
             sites, ctx.translating = centre_sites(ctx)
             ctx.centre_sites = {name: b for name, (b, _) in sites.items()}
             ctx.centre_points = {name for name in sites if name not in ctx.inst.points}
-            doc.sections.append(centres_section(ctx, "first"))
+            placed_first = centres_section(ctx, "first")
+            doc.sections.append(placed_first)
         for level in wanted:
             sec = PlanarSteps(ctx, steps, level).section()
             levels.append(sec)
@@ -85,6 +87,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
         if first:
             for sec, level in zip(levels, wanted):
                 if level == "v":
+                    centres_after_found(ctx, placed_first, sec)     # a centre read off velocities, after them
                     centres_in_steps(ctx, sec)      # a centre from two parallel velocities, where they are known
             rest = centres_section(ctx, "rest")
             if rest is not None:

@@ -120,7 +120,7 @@ def _prune(ctx: Ctx, doc: Document, bodies: set[str]) -> dict[str, set[str]]:
     return unworked
 
 
-AT_REST = ("rolling.centre", "centre.site", "centre.site_s")
+AT_REST = ("rolling.centre", "centre.site", "centre.site_s", "centre.site_here", "centre.site_s_here")
 
 
 def _drop_unused_rest(sec: Section) -> None:

@@ -14,6 +14,7 @@ from ..model.model import Joint, PointPair
 from .context import Ctx, alpha_sym, omega_sym, read_off, segment, split_pair
 from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .group import centre_site, group_blocks, still_contact
+from .said_first import conditions_first
 from .shared import shared_rates
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
@@ -70,7 +71,7 @@ class PlanarSteps:
                 continue
             i += 1
             sub = Section(step_title(i, step), level=3)
-            sub.blocks = shared_rates(self.step(step))
+            sub.blocks = shared_rates(conditions_first(self.step(step)))
             sec.blocks.append(sub)
             self.known.update(step.bodies)
         if self.level == "a" and self.ctx.symbolic and self.ctx.inst.names:

@@ -964,6 +964,8 @@ centres-found_above_step = { $centre }: trobat al pas { $step }, amb les velocit
     }.
 centre-site = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat a «{ sec-centres }»: { $sym } = 0.
 centre-site_s = { $centre }, trobat a «{ sec-centres }», no té velocitat: { $sym } = 0.
+centre-site_here = { $point } és el CIR { $centre } de { $body } respecte de { $frame }, trobat just abans: { $sym } = 0.
+centre-site_s_here = { $centre }, trobat just abans, no té velocitat: { $sym } = 0.
 sec-contact = Punts de contacte
 geom-rule = La regla de tot contacte de rodolament: la condició de no lliscament es compleix a cada instant al punt geomètric de contacte (aquí { $geom }), que es mou; derivant-la al llarg d’aquest punt s’obté { $rule }: les components tangencials de les dues acceleracions són iguals i les normals difereixen en aquest terme, segons la normal comuna. Cal la velocitat del punt geomètric:
 geom-bar = { $geom }, el punt geomètric de contacte, no pertany a cap dels dos sòlids: és sempre a la recta dels centres { $c1 } i { $c2 }, amb { $part }/{ $whole } = { $ratio }, i es mou com un punt d’una barra articulada a { $c1 } i { $c2 }:

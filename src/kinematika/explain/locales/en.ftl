@@ -667,6 +667,8 @@ centres-found_above = { $centre } = { $value }: placed in “{ sec-velocities }�
 centres-found_above_step = { $centre }: placed in Step { $step }, with the velocities of { $body }.
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed in “{ sec-centres }”: { $sym } = 0.
 centre-site_s = { $centre }, placed in “{ sec-centres }”, has no velocity: { $sym } = 0.
+centre-site_here = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, found just above: { $sym } = 0.
+centre-site_s_here = { $centre }, found just above, has no velocity: { $sym } = 0.
 sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
 geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:

@@ -609,6 +609,8 @@ centres-found_above = { $centre } = { $value }: hallado en «{ sec-velocities }�
 centres-found_above_step = { $centre }: hallado en el paso { $step }, con las velocidades de { $body }.
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado en «{ sec-centres }»: { $sym } = 0.
 centre-site_s = { $centre }, hallado en «{ sec-centres }», no tiene velocidad: { $sym } = 0.
+centre-site_here = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado justo antes: { $sym } = 0.
+centre-site_s_here = { $centre }, hallado justo antes, no tiene velocidad: { $sym } = 0.
 sec-contact = Puntos de contacto
 geom-rule = La regla de todo contacto de rodadura: la condición de no deslizamiento se cumple en cada instante en el punto geométrico de contacto (aquí { $geom }), que se mueve; derivándola a lo largo de él se obtiene { $rule }: las componentes tangenciales de las dos aceleraciones son iguales y las normales difieren en este término, según la normal común. Hace falta la velocidad del punto geométrico:
 geom-bar = { $geom }, el punto geométrico de contacto, no pertenece a ninguno de los dos sólidos: está siempre en la recta de los centros { $c1 } y { $c2 }, con { $part }/{ $whole } = { $ratio }, y se mueve como un punto de una barra articulada en { $c1 } y { $c2 }:

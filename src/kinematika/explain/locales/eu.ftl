@@ -547,6 +547,8 @@ centres-found_above = { $centre } = { $value }: «{ sec-velocities }» atalean a
 centres-found_above_step = { $centre }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, «{ sec-centres }» atalean aurkitua): { $sym } = 0.
 centre-site_s = «{ sec-centres }» atalean aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
+centre-site_here = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, goian aurkitua): { $sym } = 0.
+centre-site_s_here = Goian aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
 sec-contact = Kontaktu-puntuak
 geom-rule = Errodadura-kontaktu ororen araua: irristatu gabeko baldintza une oro betetzen da mugitzen den kontaktu-puntu geometrikoan (hemen { $geom }); puntu horretan zehar deribatuz { $rule } lortzen da: bi azelerazioen osagai tangentzialak berdinak dira, eta normalak termino horretan bereizten dira, normal komunaren norabidean. Puntu geometrikoaren abiadura behar da:
 geom-bar = { $geom }, kontaktu-puntu geometrikoa, ez da bi solidoetako batena ere: beti dago { $c1 } eta { $c2 } zentroen zuzenean, { $part }/{ $whole } = { $ratio } izanik, eta { $c1 } eta { $c2 } puntuetan giltzatutako barra baten puntu bat bezala mugitzen da:
