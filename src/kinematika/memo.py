@@ -53,3 +53,31 @@ def fresh() -> Iterator[None]:
         yield
     finally:
         _local.tables = before
+
+
+class Pure:
+    """A bounded table, shared by the whole process (every command, every thread), for a
+    step whose result depends on its input formula alone — sympy's trigsimp, a seeded
+    factor, factor_terms — so that a formula met again (the page's server solving the same
+    model for each request, a test process solving it in several tests) is not worked again.
+    Unlike `Memo`, what it keeps cannot depend on what came before in a command: only what
+    a fresh call would return is kept, and a step stopped part-way (its time up, an error)
+    keeps nothing. A caller whose step has a side effect keeps it with the result (a seeded
+    factor keeps the state of sympy's random numbers after it) and repeats it on a hit."""
+
+    def __init__(self, size: int) -> None:
+        self.size = size
+        self.table: dict = {}
+        self.lock = threading.Lock()
+
+    def get(self, key: Hashable) -> Any:
+        """The value remembered for `key`, or None."""
+        return self.table.get(key)
+
+    def put(self, key: Hashable, value: Any) -> Any:
+        """Remember `value` for `key` (the table emptied when full) and return it."""
+        with self.lock:
+            if len(self.table) >= self.size:
+                self.table.clear()
+            self.table[key] = value
+        return value

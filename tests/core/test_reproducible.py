@@ -150,6 +150,34 @@ def test_what_a_command_remembers_is_its_own():
     assert memo.get(0) is None and memo.get(4) == 4
 
 
+def test_pure_steps_remembered_for_the_process_answer_as_a_fresh_call():
+    """trigsimp, the seeded factor and factor_terms are remembered for the whole process
+    (`memo.Pure`: the page's server solving one model for each request): a formula met
+    again, in another command, gets what sympy itself gives (by hand: x² − y² is
+    (x − y)(x + y); 2x + 2xy is 2x(y + 1); sin² + cos² is 1), and a remembered factoring
+    leaves sympy's random numbers as a fresh seeded factor leaves them."""
+    import sympy
+    from sympy.core import random
+
+    from kinematika.algebra import backend, fields
+
+    x, y, t = sympy.symbols("x y t")
+    fresh_state = None
+    for _ in range(2):                                     # computed, then remembered
+        with budget.budget("the exact formulas", 60):
+            random.rng.seed(12345)
+            assert fields.factor(x**2 - y**2) == (x - y) * (x + y)
+            state = random.rng.getstate()
+            fresh_state = fresh_state or state
+            assert state == fresh_state
+            assert fields.common_factors(2*x + 2*x*y) == 2 * x * (y + 1)
+            assert backend._trigsimp_keeping_angles(sympy.sin(t)**2 + sympy.cos(t)**2 + x) == x + 1
+    random.rng.seed(fields.FACTOR_SEED)
+    sympy.factor(x**2 - y**2)
+    assert random.rng.getstate() == fresh_state            # as a fresh seeded factor leaves it
+    assert fields._FACTORED.get(x**2 - y**2)[0] == (x - y) * (x + y)
+
+
 def test_other_threads_work_does_not_cut_a_step_short(monkeypatch):
     """The safety net of an optional step counts the main thread's own processor time: a
     step of 0.15 s of it ends whole while another thread works (the page's server answering

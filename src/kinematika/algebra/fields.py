@@ -20,7 +20,7 @@ import functools
 from typing import Any, Iterable
 
 from ..budget import spend, within
-from ..memo import Memo
+from ..memo import Memo, Pure
 
 PRIME_LIMIT = 10 ** 12      # rational radicands up to this size are split into prime roots
 MAX_ROOTS = 40
@@ -739,7 +739,7 @@ def _whole(e: Any, max_terms: int = MAX_TERMS, written: bool = False) -> Any:
     elif ops(value) <= FACTOR_OPS:
         value = factored(value)
     elif ops(value) <= COMMON_OPS:          # too large to factor: common factors taken out
-        value = within(ops(value), sympy.factor_terms, value, default=value)
+        value = within(ops(value), common_factors, value, default=value)
     if not written or field is None:
         return value
     try:
@@ -764,12 +764,36 @@ def factored(e: Any) -> Any:
 def factor(e: Any) -> Any:
     """sympy's factor with its random choices drawn the same way every time: multivariate
     factoring picks random evaluation points, and a rare draw takes far longer; seeded,
-    the same formula is factored alike (and as fast) in every run."""
+    the same formula is factored alike (and as fast) in every run. Remembered for the
+    process (`_FACTORED`) with the state of sympy's random numbers after it, which a
+    formula met again restores: the process goes on as if it had been factored again."""
     import sympy
     from sympy.core import random
 
+    known = _FACTORED.get(e)
+    if known is not None:
+        random.rng.setstate(known[1])
+        return known[0]
     random.rng.seed(FACTOR_SEED)
-    return sympy.factor(e)
+    out = sympy.factor(e)
+    _FACTORED.put(e, (out, random.rng.getstate()))
+    return out
+
+
+_FACTORED = Pure(4096)
+
+
+def common_factors(e: Any) -> Any:
+    """sympy's factor_terms(e) (common factors taken out, nothing expanded), remembered for
+    the process (`_COMMON`): a function of e alone, and the canonical forms of several
+    answers often end in the same long form."""
+    import sympy
+
+    known = _COMMON.get(e)
+    return _COMMON.put(e, sympy.factor_terms(e)) if known is None else known
+
+
+_COMMON = Pure(4096)
 
 
 def _by_factors(e: Any) -> Any:
