@@ -464,6 +464,21 @@ def _written_points(levels: list[Section], wanted: tuple) -> dict[tuple[str, str
             for eq in _equations(step):
                 if not eq.target.sym.sup and eq.target.sym.base == level:
                     out.setdefault((level, eq.target.sym.sub), n)
+            for m in _messages(step):        # a contact at rest said, not written: v_J∈wheel = 0
+                if m.key in STILL_KEYS and level == "v":
+                    out.setdefault((level, m.args["sym"].sub), n)
+    return out
+
+
+# the sentences that say a body's point at a contact is at rest (its instant centre): they
+# find that point's velocity as an equation would (C5-1.8: v_J∈wheel = 0, Step 1)
+STILL_KEYS = ("rolling.centre", "centre.site", "centre.site_s")
+
+
+def _messages(sec: Section) -> list[Msg]:
+    out: list = []
+    for b in sec.blocks:
+        out += _messages(b) if isinstance(b, Section) else [b] if isinstance(b, Msg) else []
     return out
 
 

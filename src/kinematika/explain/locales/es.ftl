@@ -390,6 +390,8 @@ curvature-intro = La aceleración se descompone en una parte tangencial, según 
 curvature-point = Punto { $point }: velocidad { $v }.
 curvature-rest = El punto { $point } está en reposo: su trayectoria no tiene curvatura en este instante.
 curvature-straight = La aceleración normal de { $point } es nula: su trayectoria es recta aquí (o tiene un punto de inflexión).
+curvature-circle = Punto { $point }: mantiene la distancia al punto fijo { $o }, así que su trayectoria es la circunferencia de radio { $radius } centrada en { $o }; el radio de curvatura es ese radio:
+curvature-circle-centre = El centro de curvatura de la trayectoria de { $point } es { $o }, en { $centre }.
 curvature-centre = El centro de curvatura de la trayectoria de { $point } está en { $centre }, del lado de la aceleración normal.
 sec-answers = Respuestas
 answers-none = El modelo no hace preguntas.
@@ -632,6 +634,7 @@ geom-bar_told = { $geom }, el punto geométrico de contacto, está siempre en la
 geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida en «{ sec-accelerations }» para la aceleración del contacto.
+contact-written_centre = { $sym } = { $value }, hallada en el paso { $step }: { $point } es el CIR de { $body }.
 contact-written = { $sym } = { $value }, hallada en el paso { $step }.
 contact-fixed = { $sym }: { $point } como punto de { $body }{ FIXED($body) ->
         [yes] {""}

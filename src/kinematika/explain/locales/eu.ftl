@@ -309,6 +309,8 @@ curvature-intro = Azelerazioa bi zatitan banatzen da: abiaduraren norabideko zat
 curvature-point = { $point } puntua: abiadura { $v }.
 curvature-rest = { $point } puntua geldirik dago: haren ibilbideak ez du kurbadurarik une honetan.
 curvature-straight = { $point } puntuaren azelerazio normala nulua da: haren ibilbidea zuzena da hemen (edo inflexio-puntu bat du).
+curvature-circle = { $point } puntua: { $o } puntu finkoarekiko distantzia mantentzen du; beraz, haren ibilbidea { $o } zentroko eta { $radius } erradioko zirkunferentzia da, eta kurbadura-erradioa erradio hori da:
+curvature-circle-centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $o } puntua da, { $centre } posizioan.
 curvature-centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $centre } puntuan dago, azelerazio normalaren aldean.
 sec-answers = Erantzunak
 answers-none = Ereduak ez du galderarik egiten.
@@ -542,6 +544,7 @@ geom-bar_told = { $geom }, kontaktu-puntu geometrikoa, beti dago { $c1 } eta { $
 geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez dena ez batena ez bestearena.
 contact-above = { $sym } = { $value }, «{ sec-accelerations }» atalean lortua kontaktuaren azelerazioa kalkulatzeko.
+contact-written_centre = { $sym } = { $value }, { $step }. urratsean aurkitua: { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da.
 contact-written = { $sym } = { $value }, { $step }. urratsean aurkitua.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen{ FIXED($body) ->
         [yes] {""}
