@@ -54,6 +54,7 @@ class PlanarSteps:
         self.used: set[str] = set()          # joints already written
         self.stated: set[int] = set()        # drivers already stated
         self.geometric: set[str] = set()     # rolling joints whose v_J^geom is derived
+        self.found_in: dict[str, int] = {}   # point label -> the step that explained it (earlier steps)
 
     def section(self) -> Section:
         """The velocity (or acceleration) section: its introduction, then one subsection per
@@ -72,6 +73,8 @@ class PlanarSteps:
             sub = Section(step_title(i, step), level=3)
             sub.blocks = shared_rates(self.step(step))
             sec.blocks.append(sub)
+            for label in self.done:          # later steps refer to it: "a_C, found in Step 1"
+                self.found_in.setdefault(label, i)
             self.known.update(step.bodies)
         if self.level == "a" and self.ctx.symbolic and self.ctx.inst.names:
             first = next(iter(self.ctx.model.moving_bodies))

@@ -405,6 +405,10 @@ path-circle = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu la circumferència de radi { $radius } centrada a { $o }, de manera que { $ac } té una component normal { $vs }² / { $radius } cap a { $o }; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), la seva component tangencial és { $al } × { $arm }.
+path-found = { $b } { COUNT($b) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre { $a }, que no es mou. { $ac }, trobada al pas { $step }, té una component normal { $vs }² / { $radius } cap a { $o } i una de tangencial, que és { $al } × { $arm }, ja que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR).
 path-line = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola

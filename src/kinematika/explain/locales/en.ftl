@@ -315,6 +315,10 @@ path-circle = { $b } { COUNT($b) ->
         [many] Their
        *[one] Its
     } centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
+path-found = { $b } { COUNT($b) ->
+        [many] roll
+       *[one] rolls
+    } without slipping on { $a }, which does not move. { $ac }, found in Step { $step }, splits into a normal part { $vs }² / { $radius } towards { $o } and a tangential part, which is { $al } × { $arm } since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre).
 path-line = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls

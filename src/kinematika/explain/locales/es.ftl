@@ -299,6 +299,14 @@ path-circle = { $b } { NOUN($b) ->
            *[one] rueda
         }
     } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vs }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
+path-found = { $b } { NOUN($b) ->
+        [rueda] gira
+        [ruedas] giran
+       *[other] { COUNT($b) ->
+            [many] ruedan
+           *[one] rueda
+        }
+    } sin deslizar sobre { $a }, que no se mueve. { $ac }, hallada en el paso { $step }, tiene una componente normal { $vs }² / { $radius } hacia { $o } y una tangencial, que es { $al } × { $arm }, ya que { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR).
 path-line = { $b } { NOUN($b) ->
         [rueda] gira
         [ruedas] giran
