@@ -20,7 +20,7 @@ from .centres import centre_sites, centres_first, centres_in_steps, centres_sect
 from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
 from .strands import strand_words
-from .document import Ann, CentreNote, Derived, Document, Equation, Inline, Msg, Name, Section, Sym, Term, Value, msg
+from .document import Ann, CentreNote, Derived, Document, Equation, Inline, Msg, Name, Names, Section, Sym, Term, Value, msg
 from .group import refine
 from .material import material_contacts
 from .order import asked_order, solution_order
@@ -292,7 +292,7 @@ def _refer_sums(ctx: Ctx, sec: Section, levels: list[Section]) -> None:
                         m = RELATIVE.match(t.sym.sub) if t.kind == "slide" else None
                         if m and m.group(1) == eq.point.point:
                             key = (eq.level, ctx.motion_key(eq.point.point, m.group(2)), m.group(2), m.group(3))
-                            found.setdefault(key, (eq.target.sym, n))
+                            found.setdefault(key, (found_by(step, eq), n))
     moving = None
     for k, b in enumerate(sec.blocks):
         if isinstance(b, Msg) and b.key == "composition.point":
@@ -308,6 +308,31 @@ def _refer_sums(ctx: Ctx, sec: Section, levels: list[Section]) -> None:
         for t in b.sides[0]:
             terms += ([" + "] if terms else []) + [t.sym]
         sec.blocks[k] = msg("composition.sum_seen", sym=b.target.sym, terms=Inline(terms), seen=seen[0], step=seen[1])
+
+
+def found_by(step: Section, eq: Equation) -> Names:
+    """What a step's equation found: the target when it is unknown (001's v_{B∈rocker}), else
+    its unknown terms, each said by the rate read off it (ω_N from v_AB) or by its own symbol.
+    A datum on the left (001's rolling pair: v_A, a_A given) is not something the step found:
+    "the equation of Step 2, which found ω_N and v_{A∈R rel N}", never "which found v_A"."""
+    if eq.target.unknown:
+        return Names([eq.target.sym])
+    reads = {id(d.source): d.sym for d in _blocks(step) if isinstance(d, Derived) and d.source is not None}
+    out: list = []
+    for side in eq.sides:
+        for t in side:
+            if t.unknown:
+                sym = reads.get(id(t), t.sym)
+                if sym not in out:
+                    out.append(sym)
+    return Names(out or [eq.target.sym])
+
+
+def _blocks(sec: Section) -> list:
+    out: list = []
+    for b in sec.blocks:
+        out += _blocks(b) if isinstance(b, Section) else [b]
+    return out
 
 
 def refer_reverses(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
