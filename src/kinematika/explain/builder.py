@@ -31,7 +31,7 @@ from .polygon import degenerate, level_polygon, polygon, term_steps
 from .terms import acceleration_terms
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
-from .structure import ground_part, moduli_units, structure_section, values_table, name_contacts
+from .structure import derived_arrows, ground_part, moduli_units, structure_section, values_table, name_contacts
 from .translating import translations
 
 
@@ -118,6 +118,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     refer_rates(ctx, doc, levels)
     translations(ctx, doc)
     material_contacts(levels)
+    derived_arrows(ctx, doc, next((s for s, lv in zip(levels, wanted) if lv == "v"), None))
     name_contacts(ctx, doc, contact_rows(ctx, doc))
     moduli_units(ctx, doc, length_unit)
     strand_words(ctx, doc.sections)
