@@ -200,5 +200,5 @@ def circle_steps(ctx: Ctx, label: str, origin: str, result: dict) -> list:
     radius = Value(ctx.clean(result["radius"], "len"), "len")
     return [msg("curvature.circle", point=Name(label), o=point_name(origin), radius=oc),
             Derived(Sym("ℜ", label, vector=False), [oc], radius, kind="radius"),
-            msg("curvature.circle-centre", point=Name(label), o=point_name(origin),
+            msg("curvature.circle_centre", point=Name(label), o=point_name(origin),
                 centre=Value(ctx.clean(result["center"], "len"), "len"))]

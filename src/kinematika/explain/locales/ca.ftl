@@ -530,7 +530,7 @@ curvature-straight = L’acceleració normal { ELISION($point) ->
        *[other] de { $point }
     } és nul·la: la seva trajectòria és recta aquí (o hi té un punt d’inflexió).
 curvature-circle = Punt { $point }: manté la distància al punt fix { $o }, de manera que la seva trajectòria és la circumferència de radi { $radius } centrada a { $o }; el radi de curvatura és aquest radi:
-curvature-circle-centre = El centre de curvatura de la trajectòria { ELISION($point) ->
+curvature-circle_centre = El centre de curvatura de la trajectòria { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
     } és { $o }, a { $centre }.
