@@ -8,8 +8,9 @@ from ..model.model import PointRef
 from ..questions import QUESTIONS, answer
 from ..questions.curvature import intrinsic
 from .asked import worked
-from .context import Ctx, alpha_sym, composed, omega_sym
-from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Told, Value, msg
+from .context import Ctx, alpha_sym, composed, omega_sym, segment
+from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Told, Value, msg, point as point_name
+from .paths import circle_about
 from .terms import KNOWN
 from .words import ExplainWords
 
@@ -168,6 +169,9 @@ def curvature_steps(ctx: Ctx, q) -> list:
     label = ctx.point_label(ref.point, ref.body)
     if result.get("rest"):
         return [msg("curvature.rest", point=Name(label))]
+    origin = circle_about(ctx, ref) if rel in (None, ctx.frame) and result.get("radius") is not None else None
+    if origin is not None:                    # a circle the structure gives: read off, not derived again
+        return circle_steps(ctx, label, origin, result)
     split = intrinsic(ctx.sol, q)             # the solver's aᵗ and aⁿ of the same point
     at, an = split["tangential_vector"], split["normal_vector"]
     target = Term(Sym("a", label), ctx.clean(a, "accel"), *KNOWN, kind="point")
@@ -185,3 +189,16 @@ def curvature_steps(ctx: Ctx, q) -> list:
                        radius, kind="radius", source=normal, arm=ctx.clean(v, "speed")))
     out.append(msg("curvature.centre", point=Name(label), centre=Value(ctx.clean(result["center"], "len"), "len")))
     return out
+
+
+def circle_steps(ctx: Ctx, label: str, origin: str, result: dict) -> list:
+    """The curvature of a path the structure makes a circle about the fixed point O
+    (`paths.circle_about`): ℜ_C = OC and the centre of curvature is O, as the notes read it
+    (C5-1.7: "trajectòria circular de radi 3r") — not ℜ = |v|² / |aⁿ| with the aⁿ = v² / OC
+    a step already wrote, which would give OC back from OC."""
+    oc = point_name(str(segment(origin, label)))
+    radius = Value(ctx.clean(result["radius"], "len"), "len")
+    return [msg("curvature.circle", point=Name(label), o=point_name(origin), radius=oc),
+            Derived(Sym("ℜ", label, vector=False), [oc], radius, kind="radius"),
+            msg("curvature.circle_centre", point=Name(label), o=point_name(origin),
+                centre=Value(ctx.clean(result["center"], "len"), "len"))]

@@ -21,7 +21,7 @@ from .found_first import centres_after_found
 from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
 from .strands import strand_words
-from .document import Ann, CentreNote, Derived, Document, Equation, Inline, Msg, Name, Section, Sym, Term, Value, msg
+from .document import Ann, CentreNote, Derived, Document, Equation, Inline, Msg, Name, Names, Section, Sym, Term, Value, msg
 from .group import refine
 from .material import material_contacts
 from .order import asked_order, solution_order
@@ -32,7 +32,7 @@ from .polygon import degenerate, level_polygon, polygon, term_steps
 from .terms import acceleration_terms
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
-from .structure import ground_part, moduli_units, structure_section, values_table, name_contacts
+from .structure import derived_arrows, ground_part, moduli_units, structure_section, values_table, name_contacts
 from .translating import translations
 
 
@@ -121,6 +121,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     refer_rates(ctx, doc, levels)
     translations(ctx, doc)
     material_contacts(levels)
+    derived_arrows(ctx, doc, next((s for s, lv in zip(levels, wanted) if lv == "v"), None))
     name_contacts(ctx, doc, contact_rows(ctx, doc))
     moduli_units(ctx, doc, length_unit)
     strand_words(ctx, doc.sections)
@@ -295,7 +296,7 @@ def _refer_sums(ctx: Ctx, sec: Section, levels: list[Section]) -> None:
                         m = RELATIVE.match(t.sym.sub) if t.kind == "slide" else None
                         if m and m.group(1) == eq.point.point:
                             key = (eq.level, ctx.motion_key(eq.point.point, m.group(2)), m.group(2), m.group(3))
-                            found.setdefault(key, (eq.target.sym, n))
+                            found.setdefault(key, (found_by(step, eq), n))
     moving = None
     for k, b in enumerate(sec.blocks):
         if isinstance(b, Msg) and b.key == "composition.point":
@@ -311,6 +312,31 @@ def _refer_sums(ctx: Ctx, sec: Section, levels: list[Section]) -> None:
         for t in b.sides[0]:
             terms += ([" + "] if terms else []) + [t.sym]
         sec.blocks[k] = msg("composition.sum_seen", sym=b.target.sym, terms=Inline(terms), seen=seen[0], step=seen[1])
+
+
+def found_by(step: Section, eq: Equation) -> Names:
+    """What a step's equation found: the target when it is unknown (001's v_{B∈rocker}), else
+    its unknown terms, each said by the rate read off it (ω_N from v_AB) or by its own symbol.
+    A datum on the left (001's rolling pair: v_A, a_A given) is not something the step found:
+    "the equation of Step 2, which found ω_N and v_{A∈R rel N}", never "which found v_A"."""
+    if eq.target.unknown:
+        return Names([eq.target.sym])
+    reads = {id(d.source): d.sym for d in _blocks(step) if isinstance(d, Derived) and d.source is not None}
+    out: list = []
+    for side in eq.sides:
+        for t in side:
+            if t.unknown:
+                sym = reads.get(id(t), t.sym)
+                if sym not in out:
+                    out.append(sym)
+    return Names(out or [eq.target.sym])
+
+
+def _blocks(sec: Section) -> list:
+    out: list = []
+    for b in sec.blocks:
+        out += _blocks(b) if isinstance(b, Section) else [b]
+    return out
 
 
 def refer_reverses(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
@@ -468,6 +494,21 @@ def _written_points(levels: list[Section], wanted: tuple) -> dict[tuple[str, str
             for eq in _equations(step):
                 if not eq.target.sym.sup and eq.target.sym.base == level:
                     out.setdefault((level, eq.target.sym.sub), n)
+            for m in _messages(step):        # a contact at rest said, not written: v_J∈wheel = 0
+                if m.key in STILL_KEYS and level == "v":
+                    out.setdefault((level, m.args["sym"].sub), n)
+    return out
+
+
+# the sentences that say a body's point at a contact is at rest (its instant centre): they
+# find that point's velocity as an equation would (C5-1.8: v_J∈wheel = 0, Step 1)
+STILL_KEYS = ("rolling.centre", "centre.site", "centre.site_s")
+
+
+def _messages(sec: Section) -> list[Msg]:
+    out: list = []
+    for b in sec.blocks:
+        out += _messages(b) if isinstance(b, Section) else [b] if isinstance(b, Msg) else []
     return out
 
 

@@ -273,10 +273,7 @@ def contact_section(ctx: Ctx, written: Optional[dict[tuple[str, str], int]] = No
             for body in (j.a, j.b):
                 step = (written or {}).get((level, ctx.point_label(bar.name, body)))
                 if step is not None and not ctx.fixed(body):
-                    sec.add(msg("contact.written", sym=Sym(level, ctx.point_label(bar.name, body)), step=step,
-                                value=Value(ctx.clean(ctx.vel(body, bar.name), "speed") if level == "v"
-                                            else ctx.clean(ctx.acc(body, bar.name), "accel"),
-                                            "speed" if level == "v" else "accel")))
+                    sec.add(_written(ctx, bar.name, body, level, step))
                     continue
                 sec.blocks += _material(ctx, bar, body, level)
             if f"geom:{level}:{j.id}" in ctx.worked:     # worked out for an acceleration step
@@ -287,6 +284,19 @@ def contact_section(ctx: Ctx, written: Optional[dict[tuple[str, str], int]] = No
             sec.blocks += bar.blocks(level, with_bar=key not in ctx.worked)
             ctx.worked.update({key, f"geom:{level}:{j.id}"})
     return sec
+
+
+def _written(ctx: Ctx, name: str, body: str, level: str, step: int) -> Msg:
+    """A material point at the contact a step already found, referred to with its value; a
+    moving body's point with no velocity is that body's instant centre, and the step said so
+    (C5-1.8: "v_J∈wheel = 0, found in Step 1: J is the instant centre of the wheel") — not
+    v_J∈wheel = v_C + v_JC derived again."""
+    value = ctx.vel(body, name) if level == "v" else ctx.acc(body, name)
+    args = dict(sym=Sym(level, ctx.point_label(name, body)), step=step,
+                value=Value(ctx.clean(value, "speed" if level == "v" else "accel"), "speed" if level == "v" else "accel"))
+    if level == "v" and ctx.is_zero(value, "speed"):
+        return msg("contact.written_centre", point=Name(name), body=Name(body, "body"), **args)
+    return msg("contact.written", **args)
 
 
 def _material(ctx: Ctx, bar: Bar, body: str, level: str) -> list:

@@ -1055,7 +1055,9 @@ class Writer:
                     centre=point_name(centre), point=point_name(ctx.contact(j)))]
 
     def path_said(self, j: Joint, body: str, centre: str) -> list:
-        """The sentence of a wheel's centre on its path (once per joint and level)."""
+        """The sentence of a wheel's centre on its path (once per joint and level); when an
+        earlier step found the centre's acceleration (C5-E.1: C on the arm OC), the sentence
+        refers to it and only says how it splits, never "C keeps its distance …" again."""
         ps, ctx = self.ps, self.ctx
         if j.id in ps.used:
             return []
@@ -1068,6 +1070,9 @@ class Writer:
                     w=omega_sym(body), al=alpha_sym(body), arm=point_name(str(segment(name, centre))))
         if o is None:
             return [msg("path.line", **args)]
+        step = getattr(ps, "found_in", {}).get(ctx.point_label(centre, body))
+        if step is not None:                 # a_C found before (C5-E.1: on the arm OC, Step 1): referred to
+            return [msg("path.found", o=point_name(o), radius=point_name(str(segment(o, centre))), step=step, **args)]
         return [msg("path.circle", o=point_name(o), radius=point_name(str(segment(o, centre))), **args)]
 
     def path_tangential(self, term: Term, body: str, centre: str, normal: list[Term]) -> list[Term]:

@@ -55,6 +55,7 @@ class PlanarSteps:
         self.used: set[str] = set()          # joints already written
         self.stated: set[int] = set()        # drivers already stated
         self.geometric: set[str] = set()     # rolling joints whose v_J^geom is derived
+        self.found_in: dict[str, int] = {}   # point label -> the step that explained it (earlier steps)
 
     def section(self) -> Section:
         """The velocity (or acceleration) section: its introduction, then one subsection per
@@ -64,6 +65,7 @@ class PlanarSteps:
         sec = Section(msg(title))
         sec.add(msg("v.intro", marks=0) if self.level == "v" else msg("a.intro"))
         i = 0
+        written: list[tuple[Section, list[str]]] = []
         for step in merge_vehicles(self.ctx, self.steps):
             if all(self.ctx.fixed(b) for b in step.bodies):  # welded to the frame: part of it, said in Structure
                 self.used.update(step.joints)
@@ -73,7 +75,11 @@ class PlanarSteps:
             sub = Section(step_title(i, step), level=3)
             sub.blocks = shared_rates(conditions_first(self.step(step)))
             sec.blocks.append(sub)
+            written.append((sub, list(step.bodies)))
+            for label in self.done:          # later steps refer to it: "a_C, found in Step 1"
+                self.found_in.setdefault(label, i)
             self.known.update(step.bodies)
+        gather_own(self.ctx, written)
         if self.level == "a" and self.ctx.symbolic and self.ctx.inst.names:
             first = next(iter(self.ctx.model.moving_bodies))
             import sympy
@@ -559,3 +565,39 @@ def condition_msg(j: Joint, level: str, frame: str = "") -> Msg:
     return msg(f"cond.{kind_key(j, frame)}", joint=joint(j.id), a=body(j.a), b=body(j.b), point=point(j.at or ""))
 
 
+
+
+def gather_own(ctx: Ctx, written: list[tuple[Section, list[str]]]) -> None:
+    """A step's title and its equations go together: a step that writes no equation (C5-1.4's
+    ring, given ω and turning about O) takes the equations a later step wrote first for a
+    point of its bodies from their own motion (v_{Q∈ring} = v_O + v_QO, written under planet
+    1's step because planet 1 needs it) — each moved to the end of the step that names the
+    body, in its order, so no step is left with a title and no equation."""
+    for k, (sub, bodies) in enumerate(written):
+        if any(isinstance(b, Equation) for b in sub.blocks):
+            continue
+        for later, _ in written[k + 1:]:
+            moved = [b for b in later.blocks if isinstance(b, Equation) and _own(ctx, b, bodies)]
+            later.blocks = [b for b in later.blocks if not any(b is m for m in moved)]
+            sub.blocks += moved
+
+
+def _own(ctx: Ctx, eq: Equation, bodies: list[str]) -> bool:
+    """Whether `eq` writes a point of `bodies` from that body's own motion alone: one side,
+    a known point of the body or of a fixed body, then the body's rotation terms."""
+    if eq.point is None or eq.point.body not in bodies or len(eq.sides) != 1 or eq.relative_to:
+        return False
+    for t in eq.sides[0]:
+        if t.unknown or t.kind not in ("point", "rotation", "normal", "tangential"):
+            return False
+        if t.kind == "point" and not _of(ctx, t.sym.sub, bodies):
+            return False
+    return True
+
+
+def _of(ctx: Ctx, label: str, bodies: list[str]) -> bool:
+    """Whether the point written `label` (B, or B∈body) is a point of `bodies` or of a fixed
+    body (a pin's point, written without ∈, moves as each body it joins)."""
+    name, _, owner = label.partition("∈")
+    owners = [owner] if owner else [b for b, body in ctx.model.bodies.items() if name in body.points]
+    return any(o in bodies or ctx.fixed(o) for o in owners)

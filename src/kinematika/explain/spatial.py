@@ -265,12 +265,30 @@ def _known_point(ctx: Ctx, body: str, p: str, prefer: Optional[str]) -> Optional
 def _drag(ctx: Ctx, level: str, p: str, moving: str, pivot: Optional[str], sym: Sym) -> list:
     """The drag motion: that of the moving frame's point at P, from a known point Q of the
     moving body away from P (O4 for the quick-return's rocker): v_Q + ω × QP."""
-    q = _known_point(ctx, moving, p, pivot)
+    q = (_still_centre(ctx, moving) if level == "v" else None) or _known_point(ctx, moving, p, pivot)
     target = _relabel(point_term(ctx, level, p, moving), sym)
     if q is None:
         return [Equation(target, [[point_term(ctx, level, p, moving)]], level, PointRef(p, moving), figure=False)]
     side = [point_term(ctx, level, q, moving)] + rotation_terms(ctx, level, moving, q, p, False)
     return [Equation(target, [side], level, PointRef(p, moving), figure=False)]
+
+
+def _still_centre(ctx: Ctx, moving: str) -> Optional[str]:
+    """The contact where the moving frame rolls on a fixed body: its point there is at rest,
+    the frame's instant centre, so the drag velocity is a rotation about it, as the notes
+    write C5-1.3's ("si terra = AB i suport = REL, el moviment d'arrossegament és de rotació
+    al voltant de J"): v_ar,E = v_J∈support + v_EJ, never from the sleeve S. Velocities only:
+    the contact point has an acceleration, and the drag acceleration stays from a point
+    whose acceleration a step wrote."""
+    if not ctx.planar:
+        return None
+    for j in ctx.model.joints:
+        if not rolls(j) or moving not in (j.a, j.b) or ctx.sol.geometry(j.id).contact is None:
+            continue
+        other = j.a if j.b == moving else j.b
+        if ctx.fixed(other):
+            return ctx.contact(j)
+    return None
 
 
 def _relative(ctx: Ctx, level: str, ref: PointRef, moving: str, pivot: Optional[str], sym: Sym) -> list:

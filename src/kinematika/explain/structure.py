@@ -11,7 +11,7 @@ from ..model.model import PointPair
 from .freedom import dof_unsaid
 from .context import Ctx
 from .kinds import kind_key, on_fixed_line, rolls, welds
-from .document import Arrow, Drawing, Figure, Inline, Lead, Msg, Name, Names, Section, Sym, Table, Value, body, msg, names, point
+from .document import Arrow, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Section, Sym, Table, Value, body, msg, names, point
 from .order import Step, merge_vehicles       # the order lists the steps as the text does them
 
 
@@ -182,6 +182,40 @@ def moduli_units(ctx: Ctx, doc: Any, length_unit: str) -> None:
     for b in doc.blocks():
         if isinstance(b, Drawing) and b.caption.key == "fig.mechanism" and b.caption.args.get("moduli") == 1:
             b.caption.args.update(moduli=2, unit=length_unit)
+
+
+def derived_arrows(ctx: Ctx, doc: Any, velocities: Optional[Any]) -> None:
+    """A mechanism's figure that would draw the velocity of every moving point (the model
+    asks about no point: C5-E.3 asks the centres and the rates) draws those whose velocity
+    the page derives — the targets of the velocity section's equations — and its caption
+    names just those: "the arrows are the velocities of A and B", never "of C1, A, C2 and
+    B" over a page that never writes v_C1 or v_C2 (a sentence lists only what the page
+    derives, issue 30, twentieth round (d))."""
+    from ..questions import QUESTIONS
+
+    if velocities is None or any(QUESTIONS[q.kind].about == "point" for q in ctx.model.questions):
+        return
+    refs: list[str] = []
+    for eq in _velocity_equations(velocities):
+        if eq.point is not None and eq.relative_to in (None, ctx.frame) and eq.target.kind == "point" \
+                and eq.point.point in ctx.model.points:      # a contact the page names (N) is not drawn
+            ref = f"{eq.point.point}@{eq.point.body}"
+            if ref not in refs:
+                refs.append(ref)
+    if not refs:
+        return
+    for b in doc.blocks():
+        if isinstance(b, Drawing) and b.caption.key == "fig.mechanism" and b.options.get("velocities") \
+                and not b.options.get("points"):
+            b.options["points"] = refs
+            b.caption.args.update(_arrows_drawn(ctx, b.options))
+
+
+def _velocity_equations(sec: Any) -> list:
+    out: list = []
+    for b in sec.blocks:
+        out += _velocity_equations(b) if isinstance(b, Section) else [b] if isinstance(b, Equation) else []
+    return out
 
 
 def name_contacts(ctx: Ctx, doc: Any, named: dict[str, str]) -> None:

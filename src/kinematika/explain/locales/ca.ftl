@@ -411,6 +411,10 @@ path-circle = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
     } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu la circumferència de radi { $radius } centrada a { $o }, de manera que { $ac } té una component normal { $vs }² / { $radius } cap a { $o }; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), la seva component tangencial és { $al } × { $arm }.
+path-found = { $b } { COUNT($b) ->
+        [many] rodolen
+       *[one] rodola
+    } sense lliscar sobre { $a }, que no es mou. { $ac }, trobada al pas { $step }, té una component normal { $vs }² / { $radius } cap a { $o } i una de tangencial, que és { $al } × { $arm }, ja que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR).
 path-line = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
@@ -531,6 +535,11 @@ curvature-straight = L’acceleració normal { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
     } és nul·la: la seva trajectòria és recta aquí (o hi té un punt d’inflexió).
+curvature-circle = Punt { $point }: manté la distància al punt fix { $o }, de manera que la seva trajectòria és la circumferència de radi { $radius } centrada a { $o }; el radi de curvatura és aquest radi:
+curvature-circle_centre = El centre de curvatura de la trajectòria { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } és { $o }, a { $centre }.
 curvature-centre = El centre de curvatura de la trajectòria { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
@@ -982,6 +991,10 @@ contact-intro = Al contacte { $point } coincideixen tres punts amb cinemàtiques
        *[other] de { $b }
     } i el punt geomètric de contacte { $geom }, que no pertany a cap dels dos.
 contact-above = { $sym } = { $value }, obtinguda a «{ sec-accelerations }» per a l’acceleració del contacte.
+contact-written_centre = { $sym } = { $value }, trobada al pas { $step }: { $point } és el CIR { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    }.
 contact-written = { $sym } = { $value }, trobada al pas { $step }.
 contact-fixed = { $sym }: { $point } com a punt { ELISION($body) ->
         [vowel] d’{ $body }

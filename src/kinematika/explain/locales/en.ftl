@@ -318,6 +318,10 @@ path-circle = { $b } { COUNT($b) ->
         [many] Their
        *[one] Its
     } centre { $centre } keeps its distance from { $a }: it moves on the circle of radius { $radius } about { $o }, so { $ac } has a normal part { $vs }² / { $radius } towards { $o }; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its tangential part is { $al } × { $arm }.
+path-found = { $b } { COUNT($b) ->
+        [many] roll
+       *[one] rolls
+    } without slipping on { $a }, which does not move. { $ac }, found in Step { $step }, splits into a normal part { $vs }² / { $radius } towards { $o } and a tangential part, which is { $al } × { $arm } since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre).
 path-line = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls
@@ -399,6 +403,8 @@ curvature-intro = The acceleration splits into a tangential part along the veloc
 curvature-point = Point { $point }: velocity { $v }.
 curvature-rest = Point { $point } is at rest: its path has no curvature at this instant.
 curvature-straight = The normal acceleration of { $point } is zero: its path is straight here (or at an inflection point).
+curvature-circle = Point { $point }: it keeps its distance from the fixed point { $o }, so its path is the circle of radius { $radius } about { $o }; the radius of curvature is that radius:
+curvature-circle_centre = The centre of curvature of the path of { $point } is { $o }, at { $centre }.
 curvature-centre = The centre of curvature of the path of { $point } is at { $centre }, on the side of the normal acceleration.
 sec-answers = Answers
 answers-none = The model asks no questions.
@@ -676,6 +682,7 @@ geom-bar_told = { $geom }, the geometric contact point, stays on the line of the
 geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out in “{ sec-accelerations }” for the acceleration of the contact.
+contact-written_centre = { $sym } = { $value }, found in Step { $step }: { $point } is the instant centre of { $body }.
 contact-written = { $sym } = { $value }, found in Step { $step }.
 contact-fixed = { $sym }: { $point } as a point of { $body }{ FIXED($body) ->
         [yes] {""}

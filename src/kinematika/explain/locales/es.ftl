@@ -290,6 +290,10 @@ path-circle = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
         } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe la circunferencia de radio { $radius } centrada en { $o }, así que { $ac } tiene una componente normal { $vs }² / { $radius } hacia { $o }; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su componente tangencial es { $al } × { $arm }.
+path-found = { $b } { COUNT($b) ->
+            [many] ruedan
+           *[one] rueda
+        } sin deslizar sobre { $a }, que no se mueve. { $ac }, hallada en el paso { $step }, tiene una componente normal { $vs }² / { $radius } hacia { $o } y una tangencial, que es { $al } × { $arm }, ya que { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR).
 path-line = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
@@ -365,6 +369,8 @@ curvature-intro = La aceleración se descompone en una parte tangencial, según 
 curvature-point = Punto { $point }: velocidad { $v }.
 curvature-rest = El punto { $point } está en reposo: su trayectoria no tiene curvatura en este instante.
 curvature-straight = La aceleración normal de { $point } es nula: su trayectoria es recta aquí (o tiene un punto de inflexión).
+curvature-circle = Punto { $point }: mantiene la distancia al punto fijo { $o }, así que su trayectoria es la circunferencia de radio { $radius } centrada en { $o }; el radio de curvatura es ese radio:
+curvature-circle_centre = El centro de curvatura de la trayectoria de { $point } es { $o }, en { $centre }.
 curvature-centre = El centro de curvatura de la trayectoria de { $point } está en { $centre }, del lado de la aceleración normal.
 sec-answers = Respuestas
 answers-none = El modelo no hace preguntas.
@@ -618,6 +624,7 @@ geom-bar_told = { $geom }, el punto geométrico de contacto, está siempre en la
 geom-foot = { $geom }, el punto geométrico de contacto, es el pie de la perpendicular desde el centro { $centre } a la recta de { $line }: { $radius } es un radio, perpendicular a la recta, y gira con ella:
 contact-intro = En el contacto { $point } coinciden tres puntos con cinemáticas diferentes: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }, que no pertenece a ninguno de los dos.
 contact-above = { $sym } = { $value }, obtenida en «{ sec-accelerations }» para la aceleración del contacto.
+contact-written_centre = { $sym } = { $value }, hallada en el paso { $step }: { $point } es el CIR de { $body }.
 contact-written = { $sym } = { $value }, hallada en el paso { $step }.
 contact-fixed = { $sym }: { $point } como punto de { $body }{ FIXED($body) ->
         [yes] {""}

@@ -255,6 +255,7 @@ rolling-same_edge = { $b } solidoa ez da irristatzen { $a } solidoaren gainean: 
 rolling-glide = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren ertzaren gainean. { $a } solidotik ikusita, haren { $centre } zentroak ertzarekiko distantzia mantentzen du: { $point } puntuko ukitzailearen zuzen paralelo batean zehar mugitzen da. { $a } solidoarekin batera biratzen duten ardatzak { $b } solidoaren { $centre } zentroan definituz, { $centre } puntuaren mugimendua arrastre-mugimendua ({ $a } solidoaren bertako puntuarena) gehi zuzen horretako mugimendu erlatiboa da (eta, azelerazioetan, Coriolisen terminoa).
 rolling-kept = kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak.
 path-circle = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: { $o } zentroko eta { $radius } erradioko zirkunferentzia deskribatzen du; beraz, { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), haren osagai tangentziala { $al } × { $arm } da.
+path-found = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. { $step }. urratsean aurkitutako { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera, eta osagai tangentziala { $al } × { $arm } da, une oro { $vc } = { $w } × { $arm } baita ({ $point } kontaktua biraketa-zentro instantaneoa da).
 path-line = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: zuzen bat deskribatzen du, azelerazio normalik gabe; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), { $ac } = { $al } × { $arm }.
 rolling-equal = Irristadurarik ez { $point } kontaktuan: { $sym } = { $other }.
 rolling-same = { $gear ->
@@ -312,6 +313,8 @@ curvature-intro = Azelerazioa bi zatitan banatzen da: abiaduraren norabideko zat
 curvature-point = { $point } puntua: abiadura { $v }.
 curvature-rest = { $point } puntua geldirik dago: haren ibilbideak ez du kurbadurarik une honetan.
 curvature-straight = { $point } puntuaren azelerazio normala nulua da: haren ibilbidea zuzena da hemen (edo inflexio-puntu bat du).
+curvature-circle = { $point } puntua: { $o } puntu finkoarekiko distantzia mantentzen du; beraz, haren ibilbidea { $o } zentroko eta { $radius } erradioko zirkunferentzia da, eta kurbadura-erradioa erradio hori da:
+curvature-circle_centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $o } puntua da, { $centre } posizioan.
 curvature-centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $centre } puntuan dago, azelerazio normalaren aldean.
 sec-answers = Erantzunak
 answers-none = Ereduak ez du galderarik egiten.
@@ -556,6 +559,7 @@ geom-bar_told = { $geom }, kontaktu-puntu geometrikoa, beti dago { $c1 } eta { $
 geom-foot = { $geom }, kontaktu-puntu geometrikoa, { $centre } zentrotik { $line } solidoaren zuzenera marraztutako perpendikularraren oina da: { $radius } erradio bat da, zuzenarekiko perpendikularra, eta zuzenarekin batera biratzen da:
 contact-intro = { $point } kontaktuan hiru puntu datoz bat, zinematika desberdinekin: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa, ez dena ez batena ez bestearena.
 contact-above = { $sym } = { $value }, «{ sec-accelerations }» atalean lortua kontaktuaren azelerazioa kalkulatzeko.
+contact-written_centre = { $sym } = { $value }, { $step }. urratsean aurkitua: { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da.
 contact-written = { $sym } = { $value }, { $step }. urratsean aurkitua.
 contact-fixed = { $sym }: { $point }, { $body } solidoaren puntu gisa, ez da mugitzen{ FIXED($body) ->
         [yes] {""}
