@@ -25,6 +25,7 @@ from typing import Any, Optional
 
 import numpy as np
 from matplotlib.lines import Line2D
+from scipy.spatial import cKDTree
 
 from .style import LABEL_SIZE
 import itertools
@@ -198,6 +199,9 @@ class Layout:
         self.outline_owners = np.array([o for (line, weight, _), o in zip(board.obstacles, owners)
                                         if 1.0 <= weight < 3.0 and len(line) >= 2
                                         for _ in range(len(line) - 1)], dtype=object)
+        solid = self.obstacles[self.weights >= 1.0]
+        # the drawing a leader should not run over (arrows, bars, marks), searched by a tree
+        self.solid = cKDTree(solid) if len(solid) else None
 
     def run(self) -> list[Placement]:
         """Every label's placement: greedily, most important first, each at its cheapest
@@ -321,7 +325,7 @@ class Layout:
         centres = (boxes[far, :2] + boxes[far, 2:]) / 2
         d = centres - at[far]
         length = np.linalg.norm(d, axis=1)
-        edge = np.array([_edge(a, b) for a, b in zip(at[far], boxes[far])])
+        edge = _edges(at[far], boxes[far])
         own = self.outline_owners == label.gid.removeprefix("body:") if label.gid.startswith("body:") else None
         outlines = self.outlines if own is None or not len(own) else self.outlines[~own]   # a name reaches into its body
         cost[far] = BODY_CROSS * _arrows_crossed(at[far], edge, outlines, OBSTACLE_PAD * self.px)
@@ -334,15 +338,13 @@ class Layout:
         pts = at[far][:, None, :] + (s[None, :, None] / np.maximum(length, 1e-9)[:, None, None]) * d[:, None, :]
         valid = s[None, :] <= reach[:, None]                                           # (F, S)
         flat = pts.reshape(-1, 2)
-        lo, hi = flat.min(axis=0) - pad, flat.max(axis=0) + pad
-        near = np.all((self.obstacles >= lo) & (self.obstacles <= hi), axis=1)
-        obs = self.obstacles[near][self.weights[near] >= 1.0]
-        if not len(obs):
+        if self.solid is None:
             return cost
+        # the nearest solid sample in the max-norm: within `pad` in x and in y, as before
         hit = np.zeros(len(flat), bool)
-        for k in range(0, len(flat), 2048):
-            diff = flat[k:k + 2048, None, :] - obs[None, :, :]
-            hit[k:k + 2048] = (np.abs(diff) < pad).all(axis=2).any(axis=1)
+        inside = valid.ravel()
+        near, _ = self.solid.query(flat[inside], p=np.inf, distance_upper_bound=2 * pad)
+        hit[inside] = near < pad
         # at most just under a leader through a label (`LEADER_CROSS`), which reads worse
         cost[far] += np.minimum(LEADER_CROSS / 3 * (hit.reshape(valid.shape) & valid).sum(axis=1),
                                 0.9 * LEADER_CROSS)
@@ -505,6 +507,16 @@ def _annotation(ax: Any, p: Placement) -> Any:
         ax.add_line(Line2D(*inv.transform(np.array([anchor, end])).T, lw=0.6, alpha=0.7,
                            color=label.colour, zorder=19, gid=f"leader:{label.gid}"))
     return text
+
+
+def _edges(starts: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """`_edge` of each start (K, 2) and box (K, 4) at once, the same arithmetic row by row."""
+    centre = (boxes[:, :2] + boxes[:, 2:]) / 2
+    d = centre - starts
+    half = (boxes[:, 2:] - boxes[:, :2]) / 2
+    with np.errstate(divide="ignore"):
+        t = np.min(np.where(np.abs(d) > 1e-9, half / np.abs(np.where(d == 0, 1, d)), np.inf), axis=1)
+    return centre - np.minimum(t, 1.0)[:, None] * d
 
 
 def _edge(start: np.ndarray, box: np.ndarray) -> np.ndarray:

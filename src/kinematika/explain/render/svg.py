@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import math
 import re
+import threading
 from dataclasses import dataclass, field
 from html import escape
-from typing import Callable, Optional
+from typing import Any, Callable, Optional
 
 import numpy as np
 
@@ -153,20 +154,11 @@ def _layout(fig: Figure, texts: dict, names: list) -> Layout:
 
 def _place(lay: Layout, items: list) -> list[Placed]:
     """The labels placed by the figures' LabelBoard on an axes of the figure's size."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure as MplFigure
-
     from ...draw.labels import LabelBoard
     from .placing import Sized
 
     fig = lay.fig
-    mpl = MplFigure(figsize=(WIDTH / 72, lay.height / 72), dpi=72)
-    FigureCanvasAgg(mpl)
-    ax = mpl.add_axes((0, 0, 1, 1))
-    ax.set_axis_off()
-    # figure units (y down) as data: x = u, y = height - v
-    ax.set_xlim(0, WIDTH)
-    ax.set_ylim(0, lay.height)
+    ax = _axes(lay.height)
 
     def data(p: tuple) -> tuple[float, float]:
         u, v = lay.at(p)
@@ -206,6 +198,30 @@ def _place(lay: Layout, items: list) -> list[Placed]:
             leader = (start, _edge(start, box))
         out.append(Placed(text, colour, centre, box, leader))
     return out
+
+
+_SCRATCH = threading.local()      # each thread's axes to place a figure's labels on
+
+
+def _axes(height: float) -> Any:
+    """An axes filling a figure WIDTH × `height` points at 72 dpi, figure units (y down) as
+    data (x = u, y = height - v), for `LabelBoard.layout` to read its transform and extent.
+    Nothing is drawn on it, so one per thread serves every figure, resized: a new matplotlib
+    figure and axes for each took ~20 ms, more than placing its labels. The sizes and limits
+    set are a new one's, so its transforms are the same numbers."""
+    ax = getattr(_SCRATCH, "ax", None)
+    if ax is None:
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure as MplFigure
+
+        mpl = MplFigure(figsize=(WIDTH / 72, height / 72), dpi=72)
+        FigureCanvasAgg(mpl)
+        ax = _SCRATCH.ax = mpl.add_axes((0, 0, 1, 1))
+        ax.set_axis_off()
+    ax.figure.set_size_inches(WIDTH / 72, height / 72)
+    ax.set_xlim(0, WIDTH)
+    ax.set_ylim(0, height)
+    return ax
 
 
 def _edge(start: tuple, box: tuple) -> tuple:
