@@ -206,7 +206,11 @@ class LatexRenderer(Renderer):
         """A polygon or figure as a TikZ picture, laid out as the SVG is, with its caption."""
         caption = self.caption(fig)
         unit, number, per = self.bar(fig)
-        return tikz(fig, self.svg_label, unit, caption, number, per)
+        if self.doc.symbolic and fig.bar is not None:       # the bar's multiple of symbols, as math
+            import sympy
+
+            return tikz(fig, self.svg_label, unit, caption, lambda n: self.formula(sympy.nsimplify(n) * fig.bar[0]), per)
+        return tikz(fig, self.svg_label, unit, caption, lambda n: tex_text(number(n)), per)
 
     def svg_label(self, s: Sym | str) -> Text:
         """A symbol or a polygon's point name in a figure: its measured size and, for a symbol, its LaTeX for TikZ."""
@@ -217,7 +221,8 @@ class LatexRenderer(Renderer):
 
 
 def tikz(fig: Figure, label, unit: str, caption: str, number=lambda x: f"{x:g}", per: float = 1.0) -> str:
-    """The figure as a TikZ picture 12 cm wide, laid out (labels placed) as the SVG is."""
+    """The figure as a TikZ picture 12 cm wide, laid out (labels placed) as the SVG is;
+    `number` writes the scale bar's count as LaTeX."""
     lay = layout(fig, label)
     c = 12.0 / WIDTH
 
@@ -248,6 +253,6 @@ def tikz(fig: Figure, label, unit: str, caption: str, number=lambda x: f"{x:g}",
     count = bar_length(lay.k, per)
     y = lay.height - 14
     out.append(rf"\draw[|-|] {cm(MARGIN, y)} -- {cm(MARGIN + count * per * lay.k, y)} node[right] "
-               rf"{{{tex_text(number(count))} {unit}}};")
+               rf"{{{number(count)} {unit}}};")
     out.append(r"\end{tikzpicture}\\[2pt]{\small " + caption + r"}\end{center}")
     return "\n".join(out) + "\n"
