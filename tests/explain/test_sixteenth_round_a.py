@@ -79,9 +79,10 @@ def test_a_wheel_on_the_ground_keeps_the_ground_as_a_source():
 
 def test_a_point_pinned_to_several_known_bodies_is_one_source():
     """C5-1.4: the sun wheel's step reads O at rest (pinned to the ground, the carrier and the
-    ring) and planet 1's contact: "from the ground and planet 1", not four bodies."""
+    ring) and planet 1's contact: "from planet 1 and the ground" (round 20f: in the order the
+    step reads them, v_{J∈planet1} first), not four bodies."""
     order = _order(rendered("seed_c5_1_4_epicyclic", "en", "md", drawings=False))
-    assert "4. The *sun wheel*, from the *ground* and *planet 1*." in order, order
+    assert "4. The *sun wheel*, from *planet 1* and the *ground*." in order, order
 
 
 NO_SLIDERS = {"en": "sliders", "es": "correderas", "ca": "corredores", "eu": "irristagailu"}

@@ -63,7 +63,8 @@ def test_no_markdown_mentions_colours(name, lang, monkeypatch):
     # the normal to the floor's line through the point that slides on it
     ("seed_c5_1_2_bar_on_inclined_wheels", "ca", "a la normal a J a la recta", "a la normal a la recta del *terra* per J"),
     # a body's name stripped of its article keeps no stray article of its own
-    ("seed_c5_1_5_pulley_block", "ca", "i el *sostre*", "a partir del *sostre* i de la *politja 1*"),
+    # (round 20f: the sources in the order the step reads them, pulley 1 before the ceiling)
+    ("seed_c5_1_5_pulley_block", "ca", "i el *sostre*", "a partir de la *politja 1* i del *sostre*"),
     # the fourth audit's words: the drag's terms are those of the equation that found the point
     ("seed_001_rolling_pair", "eu", "puntu hau aurkitu zuen goiko urratseko lehen terminoak",
      "2. urratseko ekuazioaren lehen terminoak dira"),

@@ -119,7 +119,8 @@ def test_capitals_by_hand():
     en = rendered("seed_c5_1_5_pulley_block", "en", "md", drawings=False)
     assert "1. *Pulley 1*, from *strand 1*." in en
     assert "*Strand 1* is fixed to the *ceiling*" in en      # thirteenth round (a): no weld words
-    assert "3. *Planet 1*, from the *carrier* and the *ring*." in rendered("seed_c5_1_4_epicyclic", "en", "md",
+    # round 20f: the sources in the order the step reads them (v_{Q∈ring} first)
+    assert "3. *Planet 1*, from the *ring* and the *carrier*." in rendered("seed_c5_1_4_epicyclic", "en", "md",
                                                                           drawings=False)
     assert "1. *Txasisa*, datuetatik." in rendered("seed_c5_e5_unequal_wheels", "eu", "md", drawings=False)
 

@@ -32,7 +32,7 @@ from .polygon import degenerate, level_polygon, polygon, term_steps
 from .terms import acceleration_terms
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
-from .structure import derived_arrows, ground_part, moduli_units, structure_section, values_table, name_contacts
+from .structure import derived_arrows, ground_part, moduli_units, reorder, structure_section, values_table, name_contacts
 from .translating import translations
 
 
@@ -59,7 +59,8 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     doc.sections.append(data_section(ctx, length_unit, accel))
     if ctx.planar:
         steps = asked_order(ctx, refine(ctx, solution_order(sol)))
-        doc.sections.append(structure_section(ctx, steps))
+        structure = structure_section(ctx, steps)
+        doc.sections.append(structure)
         placed = position_section(ctx)
         if placed is not None:
             doc.sections.append(placed)
@@ -74,6 +75,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
             sec = PlanarSteps(ctx, steps, level).section()
             levels.append(sec)
             doc.sections.append(sec)
+        reorder(ctx, structure, steps)       # the order as the velocity steps found the bodies
         summary = Section(msg("sec.rates_summary" if accel else "sec.rates_summary_v"))
         summary.add(values_table(ctx, accel))
         summary.blocks += relative_rates(ctx)

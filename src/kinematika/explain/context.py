@@ -41,6 +41,7 @@ class Ctx:
         self.glides_said: set[str] = set()        # bodies whose reason to translate the velocities gave
         self.slides_seen: dict[tuple, Any] = {}  # (level, body, guide body) -> a slide's symbol written in the steps
         self.centre_first_memo: Optional[bool] = None    # the centres before the velocities (`centres.centres_first`)
+        self.found_order: dict[frozenset, tuple] = {}    # a step's bodies -> (bodies, sources) as its equations find and read them
 
     # positions -----------------------------------------------------------------------------
     def pos(self, name: str) -> tuple:

@@ -774,12 +774,24 @@ def refine(ctx: Ctx, steps: list) -> list:
         while i < len(steps) and steps[i].kind == "other":
             run.append(steps[i])
             i += 1
-        out += _recut(ctx, run, known)
+        out += _recut(ctx, run, known, found_rank(ctx, out))
         known.update(b for s in run for b in s.bodies)
     return out
 
 
-def _recut(ctx: Ctx, run: list, known: set[str]) -> list:
+def found_rank(ctx: Ctx, steps: list) -> dict[str, int]:
+    """Each body's place in the order its motion was found: the frame first, then the bodies
+    of `steps` as they list them (a step lists first the body its equation finds: C5-1.2's
+    bar OQ, before the wheels it carries). A point shared by several known bodies (a pin) is
+    credited to the first of them (`_reads`)."""
+    rank = {ctx.frame: 0}
+    for s in steps:
+        for b in s.bodies:
+            rank.setdefault(b, len(rank))
+    return rank
+
+
+def _recut(ctx: Ctx, run: list, known: set[str], rank: dict[str, int]) -> list:
     from .order import Step
 
     pool = [b for s in run for b in s.bodies]
@@ -792,10 +804,12 @@ def _recut(ctx: Ctx, run: list, known: set[str]) -> list:
             new = [b for b in pool if b in plan.determined and b not in done]
             if new:
                 out.append(Step("other", new, _joining(ctx, new, done, plan.used[mark:]),
-                                _sources(ctx, plan.events[seen:], done) or jointed(ctx.model, new, done),
+                                _sources(ctx, plan.events[seen:], done, rank) or jointed(ctx.model, new, done),
                                 source=run[0].source))
                 mark, seen = len(plan.used), len(plan.events)
                 done |= set(new)
+                for b in new:
+                    rank.setdefault(b, len(rank))
             if plan.complete() or plan.step() is None:
                 break
         if plan.complete():
@@ -804,32 +818,61 @@ def _recut(ctx: Ctx, run: list, known: set[str]) -> list:
         bodies = [b for b in stuck.bodies if b not in done]
         out.append(Step(stuck.kind, bodies, stuck.joints, stuck.known, stuck.letters, stuck.source))
         done |= set(bodies)
+        for b in bodies:
+            rank.setdefault(b, len(rank))
     return out
 
 
-def _sources(ctx: Ctx, events: list, done: set[str]) -> list[str]:
-    """The known bodies a step's equations read, in the model's order: for each equation
-    (`Path`) the bodies of the known points it writes — a point of a body still unknown but
-    pinned to a known one read from that body (C5-1.2's B on the lever, pinned to the
-    ground) — and for a rate carried (`Same`) the body it is carried from. The order of
-    solution says these, the same source the step's equation reads (round 16a: 001's lever
-    N was said "from the ground" while its equation reads the slider's A); empty when the
-    step writes no equation of known points (the caller then names the jointed bodies)."""
-    found: set[str] = set()
-    for ev in events:
-        if isinstance(ev, Path):
-            for site, (state, _spec) in ev.known.items():
-                if site.body in done:
-                    found.add(site.body)
-                elif state == "full":
-                    key = ctx.motion_key(site.point, site.body)
-                    pinned = [b for b in ctx.model.carriers(site.point)
-                              if b in done and ctx.motion_key(site.point, b) == key]
-                    found.update([ctx.frame] if ctx.frame in pinned else pinned[:1])   # one source a point
-                found.update(_touched(ctx, site, done))
-        elif isinstance(ev, Same) and ev.other in done:
-            found.add(ev.other)
-    return [b for b in ctx.model.bodies if b in found]
+def _sources(ctx: Ctx, events: list, done: set[str], rank: dict[str, int], ordered: bool = False) -> list[str]:
+    """The known bodies a step's equations read (`_reads`, event by event), in the model's
+    order — or, `ordered`, in the order the written equations read them (`record_found`,
+    round 20f: C5-1.5's strand 2 "from pulley 1 and the ceiling", T1 of pulley 1 first).
+    The order of solution says these, the same source the step's equation reads (round
+    16a: 001's lever N was said "from the ground" while its equation reads the slider's A);
+    empty when the step writes no equation of known points (the caller then names the
+    jointed bodies)."""
+    read = list(dict.fromkeys(b for ev in events for b in _reads(ctx, ev, done, rank)))
+    return read if ordered else [b for b in ctx.model.bodies if b in read]
+
+
+def _reads(ctx: Ctx, ev: Any, done: set[str], rank: dict[str, int]) -> list[str]:
+    """The known bodies one event reads, in its order: for an equation (`Path`) the bodies of
+    the known points it writes, in the order the step writes them: an instant centre the
+    equation starts from first (at rest, the frame's point: "I_OJ … has no velocity" is said
+    before v_O = v_{I_OJ} + ω × I_{OJ}O), then the point it ends at when that is a contact on
+    a known body (none of the body's own points), whose motion is written first (001's v_{F∈N} = v_B + …, before v_{F∈R} = v_A
+    + …), then the routes' starts (an equation goes from its start: 001's v_A = v_B + v_AB +
+    … reads the lever's fixed pivot B), then the others — a point of a body still unknown but pinned to known ones
+    read from the frame if it is one of them, else from the body whose motion was found
+    first (`rank`: C5-1.2's O, on the wheel and on the bar OQ, is the bar's, whose equation
+    found v_O) — for a line tangent to two circles (`Tangent`) the circles' bodies whose
+    centres it reads, and for a rate carried (`Same`) the body it is carried from."""
+    found: list[str] = []
+    if isinstance(ev, Path):
+        first = [s for s in ev.known if s.point in ctx.centre_points]    # said at rest before the equation
+        end = ev.end           # a known body's contact point: its motion is carried there first
+        first += [end] if end.body in done and end.point not in ctx.model.bodies[end.body].points else []
+        first += [r.start for r in ev.routes]
+        for site in dict.fromkeys(s for s in first + list(ev.known) if s in ev.known):
+            state = ev.known[site][0]
+            if site.point in ctx.centre_points:     # I_b, at rest: a point of the frame (v_{I_OJ} = 0)
+                found.append(ctx.frame)
+            elif site.body in done:
+                found.append(site.body)
+            elif state == "full":
+                key = ctx.motion_key(site.point, site.body)
+                pinned = [b for b in ctx.model.carriers(site.point)
+                          if b in done and ctx.motion_key(site.point, b) == key]
+                pinned.sort(key=lambda b: rank.get(b, len(rank)))
+                found += [ctx.frame] if ctx.frame in pinned else pinned[:1]   # one source a point
+            found += _touched(ctx, site, done)
+    elif isinstance(ev, Tangent):
+        for circle, centre in zip(ev.circles, ev.centres):
+            found += _reads(ctx, Path([], Site(centre, circle), 0, [], {Site(centre, circle): ("full", {})}),
+                            done, rank)
+    elif isinstance(ev, Same) and ev.other in done:
+        found.append(ev.other)
+    return found
 
 
 def _touched(ctx: Ctx, site: Site, done: set[str]) -> list[str]:
@@ -1379,4 +1422,25 @@ def group_blocks(ps, step) -> Optional[list]:
     if not plan.run():
         return None
     ps.ctx.worked.update(f"drive:{b}" for b in rates)
+    if ps.level == "v":         # a drive's sentence reads its own sources first: the order of the known kept
+        record_found(ps.ctx, step, plan, set(ps.known), found_rank(ps.ctx, ps.steps), bool(given))
     return given + Writer(ps, plan).blocks()
+
+
+def record_found(ctx: Ctx, step, plan: Planner, known: set[str], rank: dict[str, int], given: bool) -> None:
+    """Records the order in which the plan's events find the step's bodies (a line's tangency,
+    a rate carried, an equation's ω) and read its sources (`_reads`), for the order of
+    solution and the step's title (`order.as_found`): a body or source no event names keeps
+    its place after those that are named — the order changes, never the lists. A step whose
+    rates a drive or a gear pair gave first (`given`: the drive's sentence reads the carrier
+    and the known wheel in its own order) keeps its sources' order."""
+    found: list[str] = []
+    for ev in plan.events:
+        if isinstance(ev, (Tangent, Still, Glides, Same)):
+            found.append(ev.body)
+        elif isinstance(ev, Path):
+            found += ev.finds
+    bodies = [b for b in dict.fromkeys(found) if b in step.bodies]
+    bodies += [b for b in step.bodies if b not in bodies]
+    read = [] if given else [b for b in _sources(ctx, plan.events, known, rank, True) if b in step.known]
+    ctx.found_order[frozenset(step.bodies)] = (bodies, read + [b for b in step.known if b not in read])

@@ -115,6 +115,19 @@ def jointed(model, bodies: list[str], known: set[str]) -> list[str]:
     return out
 
 
+def as_found(ctx: Ctx, step: Step) -> Step:
+    """The step with its bodies in the order its velocity equations find them and its sources
+    in the order they read them, as `group.group_blocks` recorded them (`Ctx.found_order`):
+    the order of solution and the step's title say what the step does (round 20f: C5-1.5's
+    step finds strand 2, tangent to both pulleys, before pulley 2: "Strand 2 and pulley 2,
+    from pulley 1 and the ceiling"). A step not planned equation by equation is as it was."""
+    found = ctx.found_order.get(frozenset(step.bodies))
+    if found is None:
+        return step
+    bodies, known = found
+    return Step(step.kind, list(bodies), step.joints, list(known), step.letters, step.source)
+
+
 def merge_vehicles(ctx: Ctx, steps: list[Step]) -> list[Step]:
     """Consecutive groups on knife-edge wheels solved as one (the notes find a vehicle's
     centre from all its wheels at once: the front wheel's speed locates the chassis')."""

@@ -20,7 +20,7 @@ from .higher import higher_pair_steps
 from .contacts import geometric_blocks
 from .given import sign_of, heading, speeding, whole_along
 from .kinds import kind_key, meshes, pin_only, roller, rolls, turns
-from .order import Step, merge_vehicles
+from .order import Step, as_found, merge_vehicles
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
 from .vehicles import spins, wheel_route
@@ -72,8 +72,9 @@ class PlanarSteps:
                 self.known.update(step.bodies)
                 continue
             i += 1
-            sub = Section(step_title(i, step), level=3)
-            sub.blocks = shared_rates(conditions_first(self.step(step)))
+            blocks = shared_rates(conditions_first(self.step(step)))      # first: the title says the bodies as the step finds them
+            sub = Section(step_title(i, as_found(self.ctx, step)), level=3)
+            sub.blocks = blocks
             sec.blocks.append(sub)
             written.append((sub, list(step.bodies)))
             for label in self.done:          # later steps refer to it: "a_C, found in Step 1"

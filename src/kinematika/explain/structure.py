@@ -12,7 +12,7 @@ from .freedom import dof_unsaid
 from .context import Ctx
 from .kinds import kind_key, on_fixed_line, rolls, welds
 from .document import Arrow, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Section, Sym, Table, Value, body, msg, names, point
-from .order import Step, merge_vehicles       # the order lists the steps as the text does them
+from .order import Step, as_found, merge_vehicles       # the order lists the steps as the text does them
 
 
 def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
@@ -46,12 +46,27 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     sec.add(drawing(ctx, "fig.mechanism", velocities=True, accelerations=False, centres=False, curvature=False))
     if not steps:
         return sec
+    sec.add(order_section(ctx, steps))
+    return sec
+
+
+def order_section(ctx: Ctx, steps: list[Step]) -> Section:
+    """The order of solution: one item a step, its bodies and sources as the step's equations
+    find and read them once the velocities are written (`order.as_found`; the builder makes
+    this section again then, `reorder`)."""
     order = Section(msg("sec.order"), level=3)
     order.add(msg("order.assur" if _dyads(steps) else "order.blocks"))
     for i, s in enumerate([s for s in merge_vehicles(ctx, steps) if not all(ctx.fixed(b) for b in s.bodies)], 1):
-        order.add(order_item(i, s))
-    sec.add(order)
-    return sec
+        order.add(order_item(i, as_found(ctx, s)))
+    return order
+
+
+def reorder(ctx: Ctx, structure: Section, steps: list[Step]) -> None:
+    """The structure section's order of solution made again from the steps as written (the
+    velocities record the order their equations find the bodies in, `Ctx.found_order`)."""
+    for i, b in enumerate(structure.blocks):
+        if isinstance(b, Section) and b.title.key == "sec.order":
+            structure.blocks[i] = order_section(ctx, steps)
 
 
 def _dyads(steps: list) -> bool:
