@@ -148,7 +148,7 @@ def test_english_pronouns_agree_with_a_plural_name(name):
 
 def test_the_cavitys_wheels_by_hand():
     text = rendered("seed_c5_e1_cavity", "en", "md", drawings=False)
-    assert "The *wheels* roll without slipping on the *cylindrical track*, which does not move. Their centre C" in text
+    assert "The *wheels* roll without slipping on the *cylindrical track*, which does not move. a_C, found in Step 1" in text
 
 
 @pytest.mark.parametrize("key,var", sorted(PRONOUNED.items()))

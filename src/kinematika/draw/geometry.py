@@ -117,8 +117,8 @@ def convex_hull(points: list[Vec]) -> Vec:
     if len(pts) <= 2:
         return np.array(pts)
 
-    def half(seq):
-        chain: list = []
+    def half(seq: Iterable[tuple[float, float]]) -> list[tuple[float, float]]:
+        chain: list[tuple[float, float]] = []
         for p in seq:
             while len(chain) >= 2 and _turn(chain[-2], chain[-1], p) <= 0:
                 chain.pop()

@@ -209,7 +209,7 @@ def _axes(height: float) -> Any:
     Nothing is drawn on it, so one per thread serves every figure, resized: a new matplotlib
     figure and axes for each took ~20 ms, more than placing its labels. The sizes and limits
     set are a new one's, so its transforms are the same numbers."""
-    ax = getattr(_SCRATCH, "ax", None)
+    ax: Any = getattr(_SCRATCH, "ax", None)        # its figure a matplotlib Figure (never a SubFigure)
     if ax is None:
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure as MplFigure
