@@ -1,0 +1,85 @@
+"""Issue 30, twentieth round (g): C5-1.1's "J moves with the left strand" skipped the
+no-slip step. When a centre's line goes through a point W of b taken to move with a third
+body k and W is a rolling (no-slip) contact of b on k, the page says why: b does not slip
+on k (the notes: "la politja no llisca al damunt del cable"), so b's point W has k's
+velocity there."""
+from __future__ import annotations
+
+import dataclasses
+import re
+
+import pytest
+
+from kinematika.draw.names import contact_name
+from kinematika.explain.document import Msg
+from kinematika.explain.kinds import rolls
+
+from .helpers import LANGS, SEEDS, explained, over, rendered
+
+# the words a no-slip reason is said with, per language (the rolling-noslip messages' verbs)
+NO_SLIP = {"en": "not slip on", "es": "no desliza sobre", "ca": "no llisca sobre", "eu": "ez da irristatzen"}
+
+
+def _msgs(x, seen=None):
+    """Every catalogue message in a document, however deep."""
+    seen = set() if seen is None else seen
+    if id(x) in seen:
+        return
+    seen.add(id(x))
+    if isinstance(x, Msg):
+        yield x
+        for v in x.args.values():
+            yield from _msgs(v, seen)
+    elif isinstance(x, (list, tuple)):
+        for v in x:
+            yield from _msgs(v, seen)
+    elif isinstance(x, dict):
+        for v in x.values():
+            yield from _msgs(v, seen)
+    elif dataclasses.is_dataclass(x) and not isinstance(x, type):
+        for f in dataclasses.fields(x):
+            yield from _msgs(getattr(x, f.name), seen)
+
+
+def _rolling_contacts(name: str) -> dict[str, frozenset]:
+    sol, _ = explained(name)
+    return {contact_name(sol.model, j.id, sol): frozenset((j.a, j.b)) for j in sol.model.joints if rolls(j)}
+
+
+@over(name=SEEDS)
+def test_a_rolling_contact_is_not_said_to_just_move_with_a_body(name: str) -> None:
+    """A perpendicular through a point that 'moves with k' never stands on a rolling contact
+    of k: there the reason is the no-slip condition, said with the rolls message."""
+    _, doc = explained(name)
+    contacts = _rolling_contacts(name)
+    bad = []
+    for m in _msgs(doc):
+        if m.key.startswith("centre.line.moves"):
+            point, body = str(m.args["point"].text), str(m.args["body"].text)
+            if point in contacts and body in contacts[point]:
+                bad.append((point, body))
+        if m.key.startswith("centre.line.rolls"):
+            point, body, b = (str(m.args[k].text) for k in ("point", "body", "b"))
+            assert contacts.get(point) == frozenset((body, b)), (m.key, point, body, b)
+    assert not bad, bad
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_the_no_slip_reason_is_said_in_every_language(name: str, lang: str) -> None:
+    """Each rolls line, rendered, names the no-slip condition in the page's language."""
+    _, doc = explained(name)
+    n = sum(1 for m in _msgs(doc) if m.key.startswith("centre.line.rolls"))
+    page = rendered(name, lang)
+    said = sum(line.count(NO_SLIP[lang]) for line in page.splitlines() if line.startswith("I_"))
+    assert said >= n, (n, said)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_pulley_on_cable_by_hand(lang: str) -> None:
+    """C5-1.1 as the notes reason: the pulley does not slip on the cable, so its points J, K
+    have the strands' velocities; each strand turns about the point where it is tied."""
+    page = rendered("seed_c5_1_1_pulley_on_cable", lang)
+    line = next(x for x in page.splitlines() if x.startswith(("I_pulley", "I_polea", "I_politja")))
+    assert line.count(NO_SLIP[lang]) == 2, line
+    assert re.search(r"\(J (moves with|se mueve con|es mou amb|puntua)", line) is None, line
+    assert "G1" in line and "G2" in line
