@@ -83,3 +83,38 @@ def test_pulley_on_cable_by_hand(lang: str) -> None:
     assert line.count(NO_SLIP[lang]) == 2, line
     assert re.search(r"\(J (moves with|se mueve con|es mou amb|puntua)", line) is None, line
     assert "G1" in line and "G2" in line
+
+
+def _rates_rows(doc) -> set[str]:
+    from kinematika.explain.document import Section, Table
+
+    sec = next(s for s in doc.sections if isinstance(s, Section)
+               and s.title.key in ("sec.rates_summary", "sec.rates_summary_v"))
+    table = next(b for b in sec.blocks if isinstance(b, Table))
+    return {r[0].text for r in table.rows}
+
+
+@over(name=SEEDS)
+def test_every_rate_a_step_finds_is_in_the_table(name: str) -> None:
+    """Item 2: a body whose ω a step finds (a line ω_body = …, or a belt's or chain's run the
+    drive relation says translates with the axles' carrier) is a row of the table of rates,
+    with its ω line written (C5-1.6's belt, C5-E.6's chain were left out)."""
+    from kinematika.explain.document import Derived
+
+    sol, doc = explained(name)
+    if not sol.model.bodies or sol.space.dim != 2:
+        return
+    found = {b.body for b in doc.blocks() if isinstance(b, Derived) and b.sym.base == "ω" and b.body}
+    runs = {str(m.args["line"].text) for m in _msgs(doc) if m.key == "drive.relation" and "line" in m.args}
+    rows = _rates_rows(doc)
+    assert runs <= found, ("a run the relation moves has no ω line", runs - found)
+    assert found <= rows, ("found, not in the table", found - rows)
+
+
+def test_belt_and_chain_by_hand() -> None:
+    """C5-1.6: seen from the arm the belt translates, so ω_belt = ω_arm = ω; C5-E.6: the chain
+    translates with the frame, which translates: ω_chain = α_chain = 0."""
+    page = rendered("seed_c5_1_6_belt", "en")
+    assert re.search(r"\| \*belt\* \| ω \|", page)
+    page = rendered("seed_c5_e6_bicycle", "en")
+    assert re.search(r"\| \*chain\* \| 0 \| 0 \|", page)
