@@ -118,3 +118,30 @@ def test_belt_and_chain_by_hand() -> None:
     assert re.search(r"\| \*belt\* \| ω \|", page)
     page = rendered("seed_c5_e6_bicycle", "en")
     assert re.search(r"\| \*chain\* \| 0 \| 0 \|", page)
+
+
+@over(name=SEEDS)
+def test_a_body_row_lists_every_point_on_it(name: str) -> None:
+    """Item 3: the structure table's row of a body lists its model points and the contact
+    point of each touching joint it is in (C5-1.6's fixed pulley had O but not T1, while the
+    moving pulley had T2)."""
+    from kinematika.explain.document import Table
+
+    sol, doc = explained(name)
+    if sol.space.dim != 2:
+        return
+    sec = next(s for s in doc.sections if s.title.key == "sec.structure")
+    table = next(b for b in sec.blocks if isinstance(b, Table) and b.header[-1].key == "col.points")
+    rows = {str(r[0].text): {str(p.text) for p in r[2]} for r in table.rows}   # r[0]: the body, set as its number
+    bad = []
+    for j in sol.model.joints:
+        if getattr(j.kind, "touches", False):
+            c = contact_name(sol.model, j.id, sol)
+            bad += [(body, c) for body in (j.a, j.b) if c not in rows[body]]
+    assert not bad, bad
+
+
+def test_belt_structure_by_hand() -> None:
+    page = rendered("seed_c5_1_6_belt", "en")
+    assert "| 1 | *fixed pulley* (*ground*), circle of radius 2·r | O, T1 |" in page
+    assert "| 3 | *moving pulley*, circle of radius r | A, T2 |" in page
