@@ -14,7 +14,7 @@ from kinematika.draw.names import contact_name
 from kinematika.explain.document import Msg
 from kinematika.explain.kinds import rolls
 
-from .helpers import LANGS, SEEDS, explained, over, rendered
+from .helpers import LANGS, SEEDS, explained, over, rendered, words_of
 
 # the words a no-slip reason is said with, per language (the rolling-noslip messages' verbs)
 NO_SLIP = {"en": "not slip on", "es": "no desliza sobre", "ca": "no llisca sobre", "eu": "ez da irristatzen"}
@@ -145,3 +145,29 @@ def test_belt_structure_by_hand() -> None:
     page = rendered("seed_c5_1_6_belt", "en")
     assert "| 1 | *fixed pulley* (*ground*), circle of radius 2·r | O, T1 |" in page
     assert "| 3 | *moving pulley*, circle of radius r | A, T2 |" in page
+
+
+# the geometric contact point's spellings the reader saw on one page (001's rolling pair)
+OTHER_GEOM = re.compile(r"\^geom|,geom\b|[A-Z]\d*\}\^\{?geom|_[A-Z]\d*\^\{?geom")
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_the_geometric_point_has_one_spelling(name: str, lang: str) -> None:
+    """Item 4: the geometric contact point is F^{geom} wherever it is written — the point,
+    v_{F^{geom}}, a_{F^{geom}}, and its motion about the centre v_{F^{geom}A} — never F^geom,
+    v_F^geom or v_{FA,geom} (one name, `document.geometric_name`)."""
+    page = words_of(rendered(name, lang))
+    bad = OTHER_GEOM.findall(page)
+    assert not bad, bad
+
+
+def test_rolling_pair_geometric_point_by_hand() -> None:
+    """001: F^{geom} moves with the bar AF that turns with the lever: v_{F^{geom}} = v_A +
+    v_{F^{geom}A}; the HTML sets the superscript inside the subscript."""
+    page = rendered("seed_001_rolling_pair", "en")
+    assert "v_{F^{geom}}  =  v_A  +  v_{F^{geom}A}" in page
+    assert "a_{F^{geom}}  =  a_A  +  a_{F^{geom}A}^n  +  a_{F^{geom}A}^t" in page
+    assert "F^{geom}, the geometric contact point" in page
+    html = rendered("seed_001_rolling_pair", "ca", "html")
+    assert '<b class="v">v</b><sub>F<sup>geom</sup></sub>' in html
+    assert '<b class="v">v</b><sub>F<sup>geom</sup>A</sub>' in html

@@ -504,9 +504,9 @@ def _perpendicular(ctx: Ctx, found: dict, a: str, k: str, b: str) -> Optional[Ms
         if pivot.get("point") is None:
             if pivot.get("direction") is None:
                 return None
-            return msg(f"centre.line.{why}_still", v=v, point=Name(w), body=Name(k, "body"), **_slip_names(ctx, k, b))
+            return msg("centre.line.rolls_still" if why == "rolls" else "centre.line.moves_still", v=v, point=Name(w), body=Name(k, "body"), **_slip_names(ctx, k, b))
         centre = _pivot(ctx, found, a, k)
-        return None if centre is None else msg(f"centre.line.{why}", v=v, point=Name(w), body=Name(k, "body"),
+        return None if centre is None else msg("centre.line.rolls" if why == "rolls" else "centre.line.moves", v=v, point=Name(w), body=Name(k, "body"),
                                               pivot=centre, **_slip_names(ctx, k, b))
     guide = next((j for j in ctx.model.joints if {j.a, j.b} == {k, b} and guided(j)), None)
     centre = _pivot(ctx, found, a, k) if pivot.get("point") is not None else None

@@ -138,6 +138,10 @@ class LatexRenderer(Renderer):
                            self.math_sym)          # a centre's symbol inside: v_{O I_{OQ}}, run together
         return base + (f"_{{{sub}}}" if sub else "") + (f"^{{{tex_math_text(s.sup)}}}" if s.sup else "")
 
+    def geom_mark(self) -> str:
+        """J^{\\mathrm{geom}} in math (the name is written in math: `points`)."""
+        return r"^{\mathrm{geom}}"
+
     def symbol(self, s: Sym) -> str:
         """A symbol in running text: `math_sym` in $…$."""
         return f"${self.math_sym(s)}$"
