@@ -139,8 +139,9 @@ class LatexRenderer(Renderer):
         return base + (f"_{{{sub}}}" if sub else "") + (f"^{{{tex_math_text(s.sup)}}}" if s.sup else "")
 
     def geom_mark(self) -> str:
-        """J^{\\mathrm{geom}} in math (the name is written in math: `points`)."""
-        return r"^{\mathrm{geom}}"
+        """^{geom} upright, in a symbol's math and in a point's name in text alike
+        (`\\ensuremath`)."""
+        return r"\ensuremath{^{\mathrm{geom}}}"
 
     def symbol(self, s: Sym) -> str:
         """A symbol in running text: `math_sym` in $…$."""
