@@ -122,7 +122,7 @@ def test_a_contact_is_named_as_the_notes_name_it():
     doc = build(kinematika.solve(EXAMPLES / "seed_001_rolling_pair.yaml"))
     text = render(doc, "eu", "md", drawings=False)
     assert "v_{F∈R}" in text and "v_{F∈N}" in text
-    assert "J∈" not in text and "J^geom" not in text
+    assert "J∈" not in text and "J^{geom}" not in text
     text = (EXAMPLES / "seed_001_rolling_pair.yaml").read_text().replace("contact(j4): F ", "contact(j4): F! ")
     with pytest.raises(KinematikaError) as err:
         kinematika.solve(text)

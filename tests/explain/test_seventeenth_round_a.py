@@ -185,14 +185,13 @@ def _rates_table(doc) -> set[str]:
 def test_every_listed_body_has_its_rate_or_is_said_unused(name: str) -> None:
     """A moving body of the structure table is in the table of rates, or a sentence says it
     does not enter the question; no α cell is left "—" for a body given its rate."""
-    from kinematika.explain.drives import belt_runs
     from kinematika.explain.context import Ctx
 
     sol, doc = explained(name)
     if sol.model.default_questions:
         return
     ctx = Ctx(sol)
-    listed = [b for b in sol.model.moving_bodies if not ctx.fixed(b) and b not in belt_runs(ctx)]
+    listed = [b for b in sol.model.moving_bodies if not ctx.fixed(b)]
     unused = {n.text for b in doc.blocks() if isinstance(b, Msg) and b.key == "idle.unused"
               for n in b.args["bodies"].items}
     rows = _rates_table(doc)

@@ -91,7 +91,7 @@ def test_the_contact_section_refers_to_the_steps():
     assert math.isclose(hand[0], 0.125) and math.isclose(hand[1], -0.2165, abs_tol=1e-4)
     for lang in LANGS:
         page = rendered("seed_001_rolling_pair", lang, drawings=False)
-        contact = next(s for s in page.split("\n## ") if "v_F^geom  =" in s)    # the geometric point: the contact section
+        contact = next(s for s in page.split("\n## ") if "v_{F^{geom}}  =" in s)    # the geometric point: the contact section
         assert "v_{F∈N}  =" not in contact and "a_{F∈N}  =" not in contact, lang
 
 

@@ -30,7 +30,7 @@ SYNTAX = [
     (r"\bpi\b", "π written as pi"),
     (r"\b(None|True|False)\b", "a Python value"),
     (r"\b(Name|Msg|Sym|Value|Inline)\(", "a Python object"),
-    (r"\{\s*\$\w+\s*\}|(?<!_)\{\s*\w+\s*\}(?!\S)", "a placeholder"),     # not a subscript in braces: v_{A∈2/3}, CI_{plat}
+    (r"\{\s*\$\w+\s*\}|(?<![_^])\{\s*\w+\s*\}(?!\S)", "a placeholder"),     # not a subscript or superscript in braces: v_{A∈2/3}, CI_{plat}, J^{geom}
 ]
 PASTED_PLURAL = re.compile(r"\w\((s|es|ons|ak|ek)\)")
 WORD = re.compile(r"[A-Za-zÀ-ÿ’']+")

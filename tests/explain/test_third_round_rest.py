@@ -34,11 +34,11 @@ def test_contact_points_one_row_each(lang):
     """C5-1.8: six rows v/a of J∈ground, J∈wheel and J^geom, each with its value alone."""
     rows = _answers(rendered("seed_c5_1_8_contact_points", lang, drawings=False))
     firsts = [row.split("|")[1].strip() for row in rows]
-    for sym in ("v_J^geom", "a_J^geom"):
+    for sym in ("v_{J^{geom}}", "a_{J^{geom}}"):
         assert sym in firsts, (lang, firsts)
     wheel = {"en": "wheel", "es": "rueda", "ca": "roda", "eu": "gurpila"}[lang]
     assert f"a_{{J∈{wheel}}}" in firsts, (lang, firsts)
-    row = rows[firsts.index("a_J^geom")]
+    row = rows[firsts.index("a_{J^{geom}}")]
     assert row.split("|")[2].strip() == "(0, −2·r·ω₀²/9)".replace(",", "," if lang == "en" else ";"), row
 
 

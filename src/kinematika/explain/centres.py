@@ -16,7 +16,7 @@ from typing import Any, Literal, Optional, overload
 from ..questions.centres import all_centres, centre_line, same_line
 from .asked import worked
 from .context import Ctx
-from .kinds import guided, knife_edge, line_kind, on_fixed_line, rolls
+from .kinds import guided, knife_edge, line_kind, on_fixed_line, roller, rolls
 from .document import CentreNote, Msg, Name, Section, Sym, msg
 
 MAX_ALL = 10        # above this many pairs, only the centres relative to the frame (and what they need)
@@ -500,19 +500,43 @@ def _perpendicular(ctx: Ctx, found: dict, a: str, k: str, b: str) -> Optional[Ms
             return None
         v = Sym("v", ctx.point_label(w, k))
         ctx.witnessed.setdefault(b, set()).add(w)     # the velocity step then uses this point too
+        why = _no_slip(ctx, k, b)
         if pivot.get("point") is None:
             if pivot.get("direction") is None:
                 return None
-            return msg("centre.line.moves_still", v=v, point=Name(w), body=Name(k, "body"))
+            return msg("centre.line.rolls_still" if why == "rolls" else "centre.line.moves_still", v=v, point=Name(w), body=Name(k, "body"), **_slip_names(ctx, k, b))
         centre = _pivot(ctx, found, a, k)
-        return None if centre is None else msg("centre.line.moves", v=v, point=Name(w), body=Name(k, "body"),
-                                              pivot=centre)
+        return None if centre is None else msg("centre.line.rolls" if why == "rolls" else "centre.line.moves", v=v, point=Name(w), body=Name(k, "body"),
+                                              pivot=centre, **_slip_names(ctx, k, b))
     guide = next((j for j in ctx.model.joints if {j.a, j.b} == {k, b} and guided(j)), None)
     centre = _pivot(ctx, found, a, k) if pivot.get("point") is not None else None
     if guide is None or centre is None:
         return None
     return msg("centre.line.guide", joint=Name(guide.id, "joint"), pivot=centre, b=Name(b, "body"),
                body=Name(k, "body"))
+
+
+def _rolling(ctx: Ctx, k: str, b: str) -> Any:
+    """The rolling (no-slip) joint between k and b, or None."""
+    return next((j for j in ctx.model.joints if {j.a, j.b} == {k, b} and rolls(j)), None)
+
+
+def _no_slip(ctx: Ctx, k: str, b: str) -> str:
+    """Why b's point W has k's velocity: at a rolling contact the reason is the no-slip
+    condition (the notes' C5-1.1: "la politja no llisca al damunt del cable", so the pulley's
+    point J has the strand's velocity), said as such ("rolls"); at a pin W simply moves with
+    k ("moves")."""
+    return "rolls" if _rolling(ctx, k, b) is not None else "moves"
+
+
+def _slip_names(ctx: Ctx, k: str, b: str) -> dict[str, Name]:
+    """The names a no-slip reason says: the body that rolls, the one it rolls on (the notes'
+    order: the pulley on its cable, `kinds.roller`) and b, whose point W is meant."""
+    j = _rolling(ctx, k, b)
+    if j is None:
+        return {}
+    rolling, on = roller(ctx.model, j)
+    return {"roller": Name(rolling, "body"), "on": Name(on, "body"), "b": Name(b, "body")}
 
 
 def _pivot(ctx: Ctx, found: dict, a: str, k: str):

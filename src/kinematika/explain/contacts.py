@@ -24,7 +24,8 @@ from typing import Any, Optional
 from ..algebra.vectors import add, scale, sub
 from .asked import worked
 from .context import Ctx, composed, omega_sym, read_off, segment
-from .document import Ann, Derived, Equation, Msg, Name, Section, Sym, Term, Value, joint as joint_name, msg
+from .document import (Ann, Derived, Equation, Msg, Name, Section, Sym, Term, Value, geometric_name, joint as joint_name,
+                       msg)
 from .kinds import rolls
 from .terms import pair_name, point_term, rotation_terms
 
@@ -33,13 +34,14 @@ FOUND = (Ann("?"), Ann("?"))
 
 
 def geometric_sym(level: str, name: str) -> Sym:
-    """v_J^geom (a_J^geom): the geometric contact point's motion."""
-    return Sym(level, name, "geom")
+    """v_{J^{geom}} (a_{J^{geom}}): the geometric contact point's motion, its name
+    (`document.geometric_name`) as the subscript."""
+    return Sym(level, geometric_name(name))
 
 
-def geometric_point(name: str) -> Sym:
-    """J^geom, the geometric contact point, in a sentence."""
-    return Sym(name, "", "geom", vector=False, fixed=True)
+def geometric_point(name: str) -> Name:
+    """J^{geom}, the geometric contact point, in a sentence (`document.geometric_name`)."""
+    return Name(geometric_name(name))
 
 
 def _rate_of(ctx: Ctx, r: tuple, dv: tuple) -> Any:
@@ -119,8 +121,8 @@ class Bar:
         ctx, r = self.ctx, self.ctx.r(q, p)
         seg, back = segment(q, p), segment(p, q)
         name = pair_name(p, q)
-        if p == self.name:              # J^geom about C: not the material points' v_JC (one symbol, one value)
-            name = f"{name},geom"
+        if p == self.name:              # J^{geom} about C: not the material points' v_JC (one symbol, one value)
+            name = pair_name(geometric_name(p), q)
         if level == "v":
             mag = Ann("?") if unknown else Ann("M", [self.sym, f"·{seg}"])
             return [Term(Sym("v", name), ctx.clean(ctx.space.cross(self.omega, r), "speed"), mag, Ann("perp", seg),

@@ -110,6 +110,19 @@ CENTRE_POINT = "\ue010{}\ue011"
 CENTRE_POINT_RE = re.compile("\ue010([^\ue011]*)\ue011")
 
 
+# the geometric contact point of a rolling pair, one name wherever it is written: the point
+# F^{geom}, its motion v_{F^{geom}}, a_{F^{geom}}, and its motion about a centre v_{F^{geom}A}
+# (twentieth round g: 001's rolling pair wrote F^geom, v_F^geom and v_{FA,geom}). The mark
+# follows the contact's name; each format sets it as a superscript on that name
+# (`Renderer.geom_mark`), inside a subscript too.
+GEOM_MARK = "\ue012"
+
+
+def geometric_name(name: str) -> str:
+    """The name of the geometric contact point at the contact `name` (J -> J^{geom})."""
+    return name + GEOM_MARK
+
+
 def centre_point(body: str) -> str:
     """The point name of `body`'s instant centre relative to the frame (`CENTRE_POINT`)."""
     return CENTRE_POINT.format(body)

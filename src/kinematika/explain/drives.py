@@ -118,14 +118,6 @@ def simplified(ctx: Ctx, x: Any) -> Any:
     return sympy.nsimplify(sympy.simplify(x)) if not getattr(x, "free_symbols", None) else sympy.simplify(x)
 
 
-def belt_runs(ctx: Ctx) -> set[str]:
-    """The straight runs of belts and chains (`drives`) that no question asks about:
-    a run translates as its holder carries it (the notes never give a belt an ω), so the
-    table of rates does not list it as a turning body."""
-    asked = {q.target for q in ctx.model.questions}
-    return {d.line for d in drives(ctx)} - asked
-
-
 def drive_blocks(ctx: Ctx, bodies: list[str], known: set[str], level: str) -> tuple[list, set[str]]:
     """The drive relations that give rates of the step's `bodies` from bodies already
     `known`: the blocks (the relation, the known wheel's rate relative to the carrier, the
@@ -261,9 +253,7 @@ def _relation(ctx: Ctx, d: Drive, a: str, b: str, level: str) -> list:
                        b if k is None else "", kind, sense))
     if k is not None:
         out.append(Derived(sym(b), [rel_b, " + ", sym(d.holder)], ctx.value(get(b), unit), b, kind, sense))
-    if d.line in belt_runs(ctx):        # the notes never give a run an ω: the relation says it translates
-        return out
-    if k is not None:
+    if k is not None:                  # the run translates with its holder: ω_run = ω_K, listed (round 20g)
         out.append(Derived(sym(d.line), [sym(d.holder), " ", msg("how.translates", body=Name(d.holder, "body"))],
                            ctx.value(get(d.line), unit), d.line, kind, sense))
     else:

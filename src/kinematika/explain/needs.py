@@ -71,10 +71,9 @@ def prune(ctx: Ctx, doc: Document) -> None:
 def _idle(ctx: Ctx, doc: Document, unworked: set[str]) -> tuple[list, set[str]]:
     """The lines for the moving bodies the structure lists and no step works out
     (`idle.idle_blocks`), and those given a rate there."""
-    from .drives import belt_runs
     from .idle import idle_blocks, written_motions
 
-    listed = [b for b in ctx.model.moving_bodies if not ctx.fixed(b) and b not in belt_runs(ctx)]
+    listed = [b for b in ctx.model.moving_bodies if not ctx.fixed(b)]
     idle = [b for b in listed if b in unworked]
     if not idle:
         return [], set()

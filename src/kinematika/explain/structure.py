@@ -15,6 +15,18 @@ from .document import Arrow, Drawing, Equation, Figure, Inline, Lead, Msg, Name,
 from .order import Step, as_found, merge_vehicles       # the order lists the steps as the text does them
 
 
+def _points_on(ctx: Ctx, body: str) -> list[str]:
+    """Every named point on `body`, as its row of the structure table lists them: the model's
+    points, then the contact points of its touching joints (J, K, T1 …, `ctx.contact`), each
+    once — the same for every body (twentieth round g: C5-1.6's moving pulley listed T2, the
+    model's point, and the fixed pulley left out T1, its contact with the belt)."""
+    names = list(ctx.model.bodies[body].points)
+    if ctx.planar:
+        names += [ctx.contact(j) for j in ctx.model.joints
+                  if getattr(j.kind, "touches", False) and body in (j.a, j.b)]
+    return list(dict.fromkeys(names))
+
+
 def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     """The section on structure, before any motion: the bodies (numbered as the figures number
     them) with their points and shapes, the joints with their bodies and places, the degrees of
@@ -24,8 +36,8 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model = ctx.model
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
-    bodies = [[Name(name, "index"), _shaped(ctx, name, _body_cell(ctx, name)), [point(p) for p in b.points]]
-              for name, b in sorted(model.bodies.items(), key=lambda kv: numbers[kv[0]])]
+    bodies = [[Name(name, "index"), _shaped(ctx, name, _body_cell(ctx, name)), [point(p) for p in _points_on(ctx, name)]]
+              for name in sorted(model.bodies, key=lambda n: numbers[n])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points")], bodies))
     sec.add(msg("structure.subscripts",          # ω_t: which body (render); a part welded to the frame has no rate
                 bodies=[b for b in ctx.model.bodies if b not in welded_to_frame(ctx)]))
@@ -384,16 +396,16 @@ def mechanism_figure(ctx: Ctx) -> Figure:
 
 
 def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
-    """ω (and α, when accelerations are explained) of every body but a belt's run
-    (`belt_runs`), the solver's values."""
+    """ω (and α, when accelerations are explained) of every moving body, the solver's values:
+    every body whose rate a step finds is listed, a belt's or chain's run too (it translates
+    with the carrier of the axles, ω_run = ω_carrier; twentieth round g: C5-1.6's belt, C5-E.6's
+    chain were found and left out)."""
     def value(x, unit: str) -> Value:
         return Value(ctx.clean(x if ctx.planar else tuple(x), unit), unit)
 
-    from .drives import belt_runs
-
     rows = [[Name(b, "body", bare=True), value(ctx.omega(b), "rate")]
             + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies
-            if b not in belt_runs(ctx) and not ctx.fixed(b)]   # a weld to the frame: part of it
+            if not ctx.fixed(b)]   # a weld to the frame: part of it
     return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)
 
 def _named_ground(ctx: Ctx, name: str) -> bool:

@@ -829,6 +829,23 @@ centre-line-moves = la perpendicular a { $v } per { $point } ({ $point } es mou 
         [vowel] d’{ $pivot }
        *[other] de { $pivot }
     })
+centre-line-rolls = la perpendicular a { $v } per { $point } ({ $roller } no { COUNT($roller) ->
+        [many] llisquen
+       *[one] llisca
+    } sobre { $on }, de manera que el punt { $point } de { $b } té la velocitat de { $body } en aquest punt, i { $body } { COUNT($body) ->
+        [many] giren
+       *[one] gira
+    } al voltant { ELISION($pivot) ->
+        [vowel] d’{ $pivot }
+       *[other] de { $pivot }
+    })
+centre-line-rolls_still = la perpendicular a { $v } per { $point } ({ $roller } no { COUNT($roller) ->
+        [many] llisquen
+       *[one] llisca
+    } sobre { $on }, de manera que el punt { $point } de { $b } té la velocitat de { $body }, que es { COUNT($body) ->
+        [many] traslladen
+       *[one] trasllada
+    })
 centre-line-moves_still = la perpendicular a { $v } per { $point } ({ $point } es mou amb { $body }, que es { COUNT($body) ->
         [many] traslladen
        *[one] trasllada

@@ -631,6 +631,20 @@ centre-weld = { $body } { COUNT($body) ->
     } fixed to { $other }: they are one rigid body, so the centre is that of { $other }, { $same },
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
 centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
+centre-line-rolls = the perpendicular to { $v } through { $point } ({ $roller } { COUNT($roller) ->
+        [many] do
+       *[one] does
+    } not slip on { $on }, so the point { $point } of { $b } has the velocity of { $body } there, and { $body } { COUNT($body) ->
+        [many] turn
+       *[one] turns
+    } about { $pivot })
+centre-line-rolls_still = the perpendicular to { $v } through { $point } ({ $roller } { COUNT($roller) ->
+        [many] do
+       *[one] does
+    } not slip on { $on }, so the point { $point } of { $b } has the velocity of { $body }, which { COUNT($body) ->
+        [many] translate
+       *[one] translates
+    })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
 centre-line-guide = the perpendicular to the guide through { $pivot } (at its foot { $pivot }′ on the guide, the velocity relative to { $body } is along the guide and the drag velocity is perpendicular to { $pivot }{ $pivot }′, that is, along the guide too: the velocity of the point of { $b } at { $pivot }′ follows the guide)
 centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:

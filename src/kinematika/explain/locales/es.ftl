@@ -567,6 +567,20 @@ centre-line-moves = la perpendicular a { $v } por { $point } ({ $point } se muev
         [many] giran
        *[one] gira
     } alrededor de { $pivot })
+centre-line-rolls = la perpendicular a { $v } por { $point } ({ $roller } no { COUNT($roller) ->
+        [many] deslizan
+       *[one] desliza
+    } sobre { $on }, así que el punto { $point } de { $b } tiene la velocidad de { $body } en ese punto, y { $body } { COUNT($body) ->
+        [many] giran
+       *[one] gira
+    } alrededor de { $pivot })
+centre-line-rolls_still = la perpendicular a { $v } por { $point } ({ $roller } no { COUNT($roller) ->
+        [many] deslizan
+       *[one] desliza
+    } sobre { $on }, así que el punto { $point } de { $b } tiene la velocidad de { $body }, que se { COUNT($body) ->
+        [many] trasladan
+       *[one] traslada
+    })
 centre-line-moves_still = la perpendicular a { $v } por { $point } ({ $point } se mueve con { $body }, que se { COUNT($body) ->
         [many] trasladan
        *[one] traslada

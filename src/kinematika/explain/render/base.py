@@ -14,7 +14,7 @@ from ...text import shown_lines
 from ...draw.names import centre_subscript
 from ...model.wording import ARTICLES, NO_ARTICLE, Wording, part_subscript, rate_key
 from ..catalogue import CONTRACTIONS, Catalogue
-from ..document import (CENTRE_POINT_RE, Ann, centre_point, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Own,
+from ..document import (CENTRE_POINT_RE, GEOM_MARK, Ann, centre_point, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Own,
                         Described, Section, Sym, Table, Told, Value)
 from .names import written as written_name
 from .unicode import formula_values
@@ -761,7 +761,8 @@ class Renderer(ABC):
         if centres:
             return self.centred(text, shown_lines, self.centre_text)
         parts = CENTRE_POINT_RE.split(text)        # the tokens kept as they are, the rest shown
-        return "".join(shown_lines(p) if k % 2 == 0 else centre_point(p) for k, p in enumerate(parts))
+        return "".join(GEOM_MARK.join(map(shown_lines, p.split(GEOM_MARK))) if k % 2 == 0 else centre_point(p)
+                       for k, p in enumerate(parts))
 
     # centres placed as points ------------------------------------------------------------------
     def centre_sym(self, body: str) -> Sym:
@@ -780,6 +781,8 @@ class Renderer(ABC):
         the symbol runs into the other point as any segment's two ends do (OI_{OQ},
         I_{OQ}O: `segment_centre` closes a plain subscript), never with a space between
         (issue 30, thirteenth round); `gap` is kept for a format that wants one."""
+        if GEOM_MARK in text:          # J^{geom}: each piece as it is, the mark as the format sets it
+            return self.geom_mark().join(self.centred(t, write, centre, gap) for t in text.split(GEOM_MARK))
         parts = CENTRE_POINT_RE.split(text)
         if len(parts) == 1:
             return write(text)
@@ -797,6 +800,11 @@ class Renderer(ABC):
                 written = self.segment_centre(written)
             out.append((gap if joined_before else "") + written + (gap if joined_after else ""))
         return "".join(out)
+
+    def geom_mark(self) -> str:
+        """The superscript that makes a contact's name the geometric contact point's,
+        J^{geom} (`document.GEOM_MARK`): plain text writes it ^{geom}."""
+        return "^{geom}"
 
     def points(self, text: str) -> str:
         """Text that may hold a centre placed as a point (a segment O I_OQ), escaped, the

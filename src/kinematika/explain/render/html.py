@@ -74,6 +74,10 @@ class HtmlRenderer(Renderer):
         italics, the subscript (its braces dropped) below: ω<sub>pinyó</sub>, not ω_pinyó."""
         return f"<i>{self.esc(base)}</i><sub>{self.esc(sub.removeprefix('{').removesuffix('}'))}</sub>"
 
+    def geom_mark(self) -> str:
+        """J<sup>geom</sup>, inside a subscript too."""
+        return "<sup>geom</sup>"
+
     def power(self, mantissa: str, exponent: int) -> str:
         """m×10ⁿ with the exponent as a superscript."""
         return f"{mantissa}×10<sup>{str(exponent).replace('-', '−')}</sup>"

@@ -138,6 +138,11 @@ class LatexRenderer(Renderer):
                            self.math_sym)          # a centre's symbol inside: v_{O I_{OQ}}, run together
         return base + (f"_{{{sub}}}" if sub else "") + (f"^{{{tex_math_text(s.sup)}}}" if s.sup else "")
 
+    def geom_mark(self) -> str:
+        """^{geom} upright, in a symbol's math and in a point's name in text alike
+        (`\\ensuremath`)."""
+        return r"\ensuremath{^{\mathrm{geom}}}"
+
     def symbol(self, s: Sym) -> str:
         """A symbol in running text: `math_sym` in $…$."""
         return f"${self.math_sym(s)}$"

@@ -38,7 +38,7 @@ DEFINITION = re.compile(r"^\[(fig-\d+)\]: data:image/svg\+xml;base64,([A-Za-z0-9
 # v_{C,I_pulley} (the notes' v_C,I), a point and the centre apart, so that no subscript stands
 # inside a subscript (issue 30, sixteenth round); a bare segment keeps CI_{pulley} (thirteenth)
 SEGMENT_TO_CENTRE = re.compile(r"(?<=[A-Za-z0-9′'])I_\{([^{}\s]+)\}$")
-COMPOUND = "/,-∈ "         # a subscript with these holds more than one name (or words: roda sup)
+COMPOUND = "/,-∈ ^"        # a subscript with these holds more than one name (or words: roda sup; J^{geom})
 
 
 class MarkdownRenderer(Renderer):
