@@ -113,7 +113,11 @@ CENTRE = re.compile("^(?:I\\d*|\ue010[^\ue011]*\ue011)$")
 
 
 def _defined(name: str, listed: set[str]) -> bool:
-    """A point name the table lists, a centre, or a segment of two of them (CJ, P2I, RLI)."""
+    """A point name the table lists, a centre, or a segment of two of them (CJ, P2I, RLI); the
+    geometric contact point J^{geom} by its contact J (the contact's section says what it is)."""
+    from kinematika.explain.document import GEOM_MARK
+
+    name = name.replace(GEOM_MARK, "")
     if name in listed or CENTRE.match(name):
         return True
     return any((name[:k] in listed or CENTRE.match(name[:k])) and (name[k:] in listed or CENTRE.match(name[k:]))
