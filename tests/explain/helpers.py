@@ -214,3 +214,21 @@ def over(**grids) -> Any:
         test.__signature__ = inspect.Signature([p for n, p in params.items() if n not in grids])
         return test
     return wrap
+
+
+def plain_page(name: str, lang: str) -> str:
+    """A seed's page as Markdown without its figures: what a rule over the words reads."""
+    return rendered(name, lang, "md", drawings=False)
+
+
+def scratch_axes() -> object:
+    """A 400 × 400 pt matplotlib axes, figure points as data, for a label layout built by hand."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(400 / 72, 400 / 72), dpi=72)
+    FigureCanvasAgg(fig)
+    ax = fig.add_axes((0, 0, 1, 1))
+    ax.set_xlim(0, 400)
+    ax.set_ylim(0, 400)
+    return ax

@@ -12,8 +12,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
 
 import kinematika
 from kinematika.draw.labels import LabelBoard
@@ -21,7 +19,7 @@ from kinematika.draw.build import build_scene
 from kinematika.draw.geometry import Box
 from kinematika.draw.joints import scene_symbols
 from kinematika.draw.options import DrawOptions
-from tests.explain.helpers import EXAMPLES, NOTES_SEEDS, recorded_pages, over
+from tests.explain.helpers import EXAMPLES, NOTES_SEEDS, over, recorded_pages, scratch_axes
 
 
 
@@ -65,13 +63,6 @@ def test_the_rollers_guide_is_a_slot_not_a_floor():
     assert not between
 
 
-def _axes() -> object:
-    fig = Figure(figsize=(400 / 72, 400 / 72), dpi=72)
-    FigureCanvasAgg(fig)
-    ax = fig.add_axes((0, 0, 1, 1))
-    ax.set_xlim(0, 400)
-    ax.set_ylim(0, 400)
-    return ax
 
 
 def test_a_long_arrows_label_slides_along_it_when_its_middle_is_taken():
@@ -79,7 +70,7 @@ def test_a_long_arrows_label_slides_along_it_when_its_middle_is_taken():
     lines y = 150…250 (x 120…280, 5 pt apart): its label sits beside a point of the arrow
     outside the block (|y − 200| > 50), next to the arrow (within 12 pt of x = 200), with no
     leader. Without `along` it could only sit beside the middle: on the block or far off."""
-    ax = _axes()
+    ax = scratch_axes()
     board = LabelBoard()
     board.add((200, 200), "$a_{AB}$", "k", 2, "arrow", prefer=(1, 0))
     board.labels[0].along = np.array([[200.0, 50.0], [200.0, 350.0]])

@@ -12,8 +12,6 @@ import math
 
 import numpy as np
 import pytest
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
 
 import kinematika
 from kinematika.draw.build import build_scene
@@ -22,7 +20,7 @@ from kinematika.draw.options import DrawOptions
 from kinematika.explain import build, render
 from kinematika.explain.document import Drawing, Figure as DocFigure, Section
 from kinematika.explain.render import svg as svg_module
-from tests.explain.helpers import EXAMPLES, explained, rendered
+from tests.explain.helpers import EXAMPLES, explained, rendered, scratch_axes
 
 
 def _cross(u, v) -> float:
@@ -62,13 +60,6 @@ def test_the_strands_lines_are_drawn_on_to_the_pulleys_centre():
     assert "perpendiculars to the points' velocities" in rendered("seed_c5_1_1_pulley_on_cable", "en")
 
 
-def _axes():
-    fig = Figure(figsize=(400 / 72, 400 / 72), dpi=72)
-    FigureCanvasAgg(fig)
-    ax = fig.add_axes((0, 0, 1, 1))
-    ax.set_xlim(0, 400)
-    ax.set_ylim(0, 400)
-    return ax
 
 
 @pytest.mark.parametrize("gap", [6.0, 9.0, 12.0])
@@ -77,7 +68,7 @@ def test_two_close_points_labels_sit_on_opposite_sides(gap):
     centre lies on its own side, (centre − own point)·(other − own) ≤ 0 — never both above
     or both beside (C5-E.6 drew "H" and "T1" side by side above the two dots)."""
     assert gap < CLOSE
-    ax = _axes()
+    ax = scratch_axes()
     board = LabelBoard()
     h, t = np.array([200.0, 200.0]), np.array([200.0, 200.0 + gap])
     board.add(h, "H", "k", 3, "point:H")

@@ -22,22 +22,15 @@ import pytest
 
 from kinematika.explain.catalogue import catalogue
 
-from .helpers import LANGS, over, rendered
+from .helpers import LANGS, NOTES_SEEDS, over, plain_page
 
-NINETEEN = ["seed_001_p_pair_coriolis", "seed_001_r_pairs", "seed_001_rolling_pair",
-            "seed_c5_1_1_pulley_on_cable", "seed_c5_1_2_bar_on_inclined_wheels", "seed_c5_1_3_bar_in_sleeve",
-            "seed_c5_1_4_epicyclic", "seed_c5_1_5_pulley_block", "seed_c5_1_6_belt", "seed_c5_1_7_semicylinder",
-            "seed_c5_1_8_contact_points", "seed_c5_2_1_tricycle", "seed_c5_2_2_articulated", "seed_c5_e1_cavity",
-            "seed_c5_e2_gear_change", "seed_c5_e3_wheels_with_rod", "seed_c5_e4_upper_wheel",
-            "seed_c5_e5_unequal_wheels", "seed_c5_e6_bicycle"]
+NINETEEN = NOTES_SEEDS      # the notes' nineteen worked examples
 
 
-def page(name: str, lang: str) -> str:
-    return rendered(name, lang, "md", drawings=False)
 
 
 def plain(name: str, lang: str) -> str:
-    return page(name, lang).replace("*", "")
+    return plain_page(name, lang).replace("*", "")
 
 
 # ---- 1. Spanish: la rueda rueda sin deslizar ---------------------------------------------------
@@ -164,7 +157,7 @@ CEILING = {"en": "ceiling", "es": "techo", "ca": "sostre", "eu": "sabaia"}
 def test_centre_relative_to_the_ground(name, lang):
     """The notes: "El seu CIR respecte al terra" (C5-1.1), though the cable is tied to the
     ceiling: the centre's rows and the notation line say the ground, never the ceiling."""
-    text = page(name, lang)
+    text = plain_page(name, lang)
     rows = [line for line in text.splitlines() if re.search(r"CIR|instant centre|biraketa-zentro", line)
             and (GROUND[lang] in line or CEILING[lang] in line.lower())]
     centre_rows = [line for line in rows if line.startswith("|")]
