@@ -181,3 +181,20 @@ def test_a_sliders_relative_motion_names_its_quantity(lang):
     assert [line.startswith("B ") for line in lines] == [True, True], lines
     assert speed in lines[0] and accel not in lines[0], lines[0]
     assert accel in lines[1] and speed not in lines[1], lines[1]
+
+
+def test_spanish_fixed_participle_agrees_with_a_feminine_name():
+    """"La polea 1 está fijada al techo", "El tramo 1 está fijado al techo": the participle
+    takes the name's gender from its article; a list takes the masculine."""
+    from kinematika.explain.render.base import Slot
+
+    def slot(text: str, n: int = 1) -> Slot:
+        s = Slot(text)
+        s.plain, s.n_names = text, n
+        return s
+    cat = catalogue("es")
+    said = {name: cat.format("structure-welded", {"bodies": slot(name, n), "bodies_n": n, "frame": slot("el techo")})
+            for name, n in (("La polea 1", 1), ("El tramo 1", 1), ("El plano y la guía", 2))}
+    assert said["La polea 1"].startswith("La polea 1 está fijada a el techo")
+    assert said["El tramo 1"].startswith("El tramo 1 está fijado a el techo")
+    assert said["El plano y la guía"].startswith("El plano y la guía están fijados a el techo")

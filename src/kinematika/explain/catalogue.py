@@ -84,6 +84,18 @@ def says_fixed(value: Any) -> str:
     return "yes" if FIXED_WORD.search(str(getattr(value, "plain", value))) else "no"
 
 
+FEMININE_ARTICLE = re.compile(r"(?i)^(la|las|una|unas) ")
+
+
+def gender(value: Any) -> str:
+    """`f` when a Spanish name is feminine by its article (la polea, las ruedas) and is one
+    name, for a participle that agrees with it (fijada, fijadas); else `m` (a list takes the
+    masculine, as Spanish does when any of its names is masculine, and most lists here are)."""
+    if getattr(value, "n_names", 1) > 1:
+        return "m"
+    return "f" if FEMININE_ARTICLE.match(str(getattr(value, "plain", value)).strip()) else "m"
+
+
 def word(value: Any) -> str:
     """The word a select expression matches when a variable is a word, not a name (the
     quantity a sentence is about: `{ WORD($kind) -> [accel] … *[speed] … }`): the renderer
@@ -96,7 +108,8 @@ def word(value: Any) -> str:
 # str too (resolver.match compares a select's key with ==, resolve() passes a str through): ours
 # return the word a select expression matches, so the cast only states what the resolver accepts.
 FUNCTIONS = cast(dict[str, Callable[[Any], FluentType]], {"ELISION": elision, "COUNT": count,
-                                                          "FIXED": says_fixed, "WORD": word})
+                                                          "FIXED": says_fixed, "WORD": word,
+                                                          "GENDER": gender})
 
 
 class Catalogue:

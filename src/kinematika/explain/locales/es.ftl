@@ -38,8 +38,14 @@ structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
 structure-welded = { $bodies } { $bodies_n ->
-        [one] está fijado a
-       *[other] están fijados a
+        [one] está { GENDER($bodies) ->
+            [f] fijada
+           *[m] fijado
+        } a
+       *[other] están { GENDER($bodies) ->
+            [f] fijadas
+           *[m] fijados
+        } a
     } { $frame }: { $bodies_n ->
         [one] forma parte de él y no se mueve
        *[other] forman parte de él y no se mueven
