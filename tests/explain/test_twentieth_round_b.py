@@ -194,7 +194,8 @@ def test_spanish_fixed_participle_agrees_with_a_feminine_name():
         return s
     cat = catalogue("es")
     said = {name: cat.format("structure-welded", {"bodies": slot(name, n), "bodies_n": n, "frame": slot("el techo")})
-            for name, n in (("La polea 1", 1), ("El tramo 1", 1), ("El plano y la guía", 2))}
+            for name, n in (("La polea 1", 1), ("El tramo 1", 1), ("El plano y la guía", 2), ("Las ruedas", 1))}
     assert said["La polea 1"].startswith("La polea 1 está fijada a el techo")
     assert said["El tramo 1"].startswith("El tramo 1 está fijado a el techo")
     assert said["El plano y la guía"].startswith("El plano y la guía están fijados a el techo")
+    assert said["Las ruedas"].startswith("Las ruedas están fijadas a el techo: forman parte de él")   # a plural name

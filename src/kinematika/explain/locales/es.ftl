@@ -37,18 +37,18 @@ structure-frame = { $body } (fijo)
 structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
-structure-welded = { $bodies } { $bodies_n ->
-        [one] está { GENDER($bodies) ->
-            [f] fijada
-           *[m] fijado
-        } a
-       *[other] están { GENDER($bodies) ->
+structure-welded = { $bodies } { COUNT($bodies) ->
+        [many] están { GENDER($bodies) ->
             [f] fijadas
            *[m] fijados
-        } a
-    } { $frame }: { $bodies_n ->
-        [one] forma parte de él y no se mueve
-       *[other] forman parte de él y no se mueven
+        } a { $frame }: forman parte de él y no se mueven
+       *[one] { $bodies_n ->
+            [one] está { GENDER($bodies) ->
+                [f] fijada
+               *[m] fijado
+            } a { $frame }: forma parte de él y no se mueve
+           *[other] están fijados a { $frame }: forman parte de él y no se mueven
+        }
     }; todos sus puntos tienen velocidad y aceleración nulas.
 structure-fixed_part = { $body } (fijo a { $frame })
 structure-dof = El mecanismo tiene { $dof ->
