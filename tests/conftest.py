@@ -192,9 +192,10 @@ def pytest_collection_modifyitems(config, items) -> None:
 
 
 def pytest_runtest_logreport(report) -> None:
-    """With KINEMATIKA_DURATIONS=FILE, each test's phase, outcome and seconds are appended to
-    FILE as they finish (a run stopped half way still says where its time went), once a test
-    (by the worker that ran it, not again by xdist's controller)."""
+    """With KINEMATIKA_DURATIONS=FILE, each test's seconds, outcome, phase and id, then its
+    worker's CPU seconds so far and process id, are appended to FILE as they finish (a run
+    stopped half way still says where its time went), once a test (by the worker that ran
+    it, not again by xdist's controller). `scripts/durations.py FILE` sums them."""
     path = os.environ.get("KINEMATIKA_DURATIONS")
     if hasattr(report, "node"):         # under xdist, the controller's copy of a worker's report
         return
@@ -202,4 +203,15 @@ def pytest_runtest_logreport(report) -> None:
     # module's or a worker's shared fixture: a server, a browser, a solved model) or fails
     if path and (report.when == "call" or report.outcome != "passed" or report.duration >= 0.1):
         with open(path, "a", encoding="utf-8") as out:
-            out.write(f"{report.duration:.2f}\t{report.outcome}\t{report.when}\t{report.nodeid}\n")
+            out.write(f"{report.duration:.2f}\t{report.outcome}\t{report.when}\t{report.nodeid}\t"
+                      f"{_cpu_so_far():.2f}\t{os.getpid()}\n")
+
+
+def _cpu_so_far() -> float:
+    """This worker's CPU seconds so far (user + system), its finished child processes
+    included (a `kinematika` command, a page server): in the durations file, the difference
+    between two lines of one worker (the last column, its process id) is the CPU the tests
+    between them took, whatever the load made of their wall time. Children still running
+    (the session's Chromium and page server) count when they end."""
+    t = os.times()
+    return t.user + t.system + t.children_user + t.children_system
