@@ -50,8 +50,8 @@ POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its 
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
 ARROW_CROSS = 90.0       # a polygon label's leader across an arrow (exactly, not sampled): worse than across a label
 BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
-AREA = 300.0            # a body's name or a vector's value over another body's area, × the box's part covered
-AREA_GRID = (6, 3)      # points across and up a label's box tested for lying in a body's area
+AREA = 400.0            # a body's name or a vector's value over another body's area, × the box's part covered
+AREA_GRID = (8, 4)      # points across and up a label's box tested for lying in a body's area
 TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
 DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
 
