@@ -155,12 +155,13 @@ def _recording():
     from kinematika.draw import labels
     from kinematika.explain.render import svg as svg_module
 
-    found: dict[str, list] = {"labels": [], "polygons": []}
+    found: dict[str, list] = {"labels": [], "polygons": [], "areas": []}
     run, place = labels.Layout.run, svg_module._place
 
     def recorded_run(self):
         out = run(self)
         found["labels"].append((out, self.tips, self.px))
+        found["areas"].append((out, self.areas))
         return out
 
     def recorded_place(lay, items):
@@ -176,7 +177,8 @@ def _recording():
 
 
 def recorded_pages(kind: str) -> dict:
-    """What was recorded of `kind` ("labels" or "polygons", see `_LAYOUTS`) while each of the
+    """What was recorded of `kind` ("labels", "polygons" or "areas": each label layout's
+    placements and its bodies' areas, see `_LAYOUTS`) while each of the
     notes' seeds was written in English and in Catalan (Markdown, with its drawings), a list
     per (seed, language). The pages are `rendered`'s: each is drawn once a run, for the
     figure tests and every other test that reads it."""

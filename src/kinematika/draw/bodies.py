@@ -78,6 +78,7 @@ def _body(ctx: Context, body: BodyView) -> None:
             ctx.add("polygon", hull, colour=body.colour, fill=body.colour, alpha=0.38, width=2.5,
                     join="round", zorder=2, gid=f"body:{body.name}", moves_with=body.name)
             ctx.avoid(*hull, hull[0])
+            ctx.area(*hull)
             anchor = np.mean(hull, axis=0)
         else:
             pts = _extremes(pts)
@@ -151,6 +152,7 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
             ctx.add("line", [centre - 0.8 * s.radius * d, centre + 0.8 * s.radius * d],
                     width=1.0, colour=body.colour, alpha=0.8, zorder=3, moves_with=name)
         ctx.avoid(*_ring(centre, s.radius))
+        ctx.area(*_ring(centre, s.radius))
     elif s.kind == "line":
         loop = belt_loop(ctx, body, s)
         if loop is not None:
@@ -167,6 +169,7 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
         ctx.add("polygon", s.vertices, colour=body.colour, fill=body.colour, alpha=0.3, width=1.5,
                 zorder=1, gid=gid, moves_with=name)
         ctx.avoid(*s.vertices)
+        ctx.area(*s.vertices)
 
 
 def _moving_curve(ctx: Context, body: BodyView, s: ShapeView, gid: str) -> None:
@@ -180,6 +183,7 @@ def _moving_curve(ctx: Context, body: BodyView, s: ShapeView, gid: str) -> None:
     if s.closed and s.role == "profile":
         ctx.add("polygon", vertices, colour="none", fill=body.colour, alpha=0.2, width=0,
                 zorder=1, moves_with=body.name)
+        ctx.area(*vertices)
     ctx.add("line", vertices, width=2.2, colour=body.colour, zorder=3, gid=gid, moves_with=body.name)
     ctx.avoid(*vertices[::8])
 
@@ -278,6 +282,7 @@ def _ring_gear(ctx: Context, body: BodyView, s: ShapeView) -> None:
                 colour=body.colour, zorder=2, moves_with=name)
     ctx.avoid(*_ring(centre, s.radius))
     ctx.avoid(*_ring(centre, s.radius + band))
+    ctx.area(*_ring(centre, s.radius + band), *_ring(centre, s.radius)[::-1])
 
 
 UP_LEFT = np.array([-0.7071, 0.7071])
@@ -385,6 +390,8 @@ def _ground_shape(ctx: Context, s: ShapeView) -> None:
         ctx.add("ring", [centre], r=outer, band=width, colour=GROUND, width=0, hatch=True,
                 zorder=1)
         ctx.avoid(*_ring(centre, s.radius))
+        ctx.area(*(_ring(centre, s.radius) if s.material_inside else
+                   np.vstack([_ring(centre, outer), _ring(centre, s.radius)[::-1]])))
     elif s.kind == "curve":
         vertices = s.polyline()
         ctx.add("line", vertices, width=1.8, colour=GROUND, zorder=2, gid="ground:curve")

@@ -83,6 +83,15 @@ class Context:
         self.add("clear", [np.asarray(p, dtype=float) for p in polyline], avoid=weight,
                  radius=radius, zorder=0, **({"group": f"outline:{owner}"} if owner else {}))
 
+    def area(self, *polygon: Any) -> None:
+        """The region the body being drawn (`owner`) covers, a closed polygon through these
+        points (a wheel's disc, a plate; a ring's band as its outer circle then its inner one
+        backwards): another body's name or vector value may not sit on it (`draw.labels`,
+        `LabelBoard.area`). Nothing is painted."""
+        if self.owner:
+            self.add("clear", [np.asarray(p, dtype=float) for p in polygon], avoid=0.0, zorder=0,
+                     group=f"area:{self.owner}")
+
     def label(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
               prefer: Any = None, body: Optional[str] = None, group: str = "", layer: str = "",
               **kw: Any) -> None:

@@ -25,6 +25,7 @@ from typing import Any, Optional
 
 import numpy as np
 from matplotlib.lines import Line2D
+from matplotlib.path import Path
 from scipy.spatial import cKDTree
 
 from .style import LABEL_SIZE
@@ -49,6 +50,8 @@ POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its 
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
 ARROW_CROSS = 90.0       # a polygon label's leader across an arrow (exactly, not sampled): worse than across a label
 BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
+AREA = 400.0            # a body's name or a vector's value over another body's area, × the box's part covered
+AREA_GRID = (8, 4)      # points across and up a label's box tested for lying in a body's area
 TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
 DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
 
@@ -102,6 +105,7 @@ class LabelBoard:
     obstacles: list[tuple] = field(default_factory=list)   # (data polyline, weight, radius)
     tips: list[np.ndarray] = field(default_factory=list)   # arrows' tips (data coordinates)
     owners: list[str] = field(default_factory=list)        # each obstacle's body ("" for none)
+    areas: list[tuple[str, np.ndarray]] = field(default_factory=list)   # (body, polygon, data)
 
     def add(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
             prefer: Any = None, **kw: Any) -> None:
@@ -118,6 +122,12 @@ class LabelBoard:
         self.obstacles.append((np.array([np.asarray(p, dtype=float) for p in polyline]), weight,
                                radius))
         self.owners.append(owner)
+
+    def area(self, owner: str, polygon: Any) -> None:
+        """The region body `owner` covers (a closed polygon, data coordinates: a wheel's disc,
+        a plate, a ring's band), which another body's name or a vector's value does not sit
+        on (`Layout._areas`)."""
+        self.areas.append((owner, np.asarray(polygon, dtype=float)))
 
     def tip(self, point: Any) -> None:
         """An arrow's tip: no label may cover its head (`TIP` points around it), which in a
@@ -199,6 +209,8 @@ class Layout:
         self.outline_owners = np.array([o for (line, weight, _), o in zip(board.obstacles, owners)
                                         if 1.0 <= weight < 3.0 and len(line) >= 2
                                         for _ in range(len(line) - 1)], dtype=object)
+        self.areas = [(owner, Path(ax.transData.transform(poly))) for owner, poly in board.areas
+                      if len(poly) >= 3]
         solid = self.obstacles[self.weights >= 1.0]
         # the drawing a leader should not run over (arrows, bars, marks), searched by a tree
         self.solid = cKDTree(solid) if len(solid) else None
@@ -214,7 +226,8 @@ class Layout:
         sizes = np.array([lb.extent for lb in self.labels]) * self.px + 2 * PAD * self.px
         cands = [self._candidates(self.labels[i], anchors[i], sizes[i]) for i in range(n)]
         base = [self._fixed_cost(self.labels[i], *cands[i][:3]) + cands[i][4] +
-                self._leader_over(self.labels[i], cands[i]) + self._apart(i, anchors, cands[i])
+                self._leader_over(self.labels[i], cands[i]) + self._apart(i, anchors, cands[i]) +
+                self._areas(self.labels[i], cands[i][0])
                 for i in range(n)]
         choice = [-1] * n
         for i in range(n):                                 # greedy, most important first
@@ -306,6 +319,21 @@ class Layout:
             cost += TOWARDS * np.clip(cand[2] @ (d / np.linalg.norm(d)), 0, None)
         return cost
 
+    def _areas(self, label: Label, boxes: np.ndarray) -> np.ndarray:
+        """What a body's name or a vector's value costs for lying on another body's area
+        (`LabelBoard.area`): `AREA` × the part of its box (sampled on `AREA_GRID`) inside
+        the discs, plates and bands of bodies other than its own (`label_owner`). Covering
+        only outlines was weighed: a name inside another wheel, clear of its rim, was free and
+        read as that wheel's (C5-E.6's quadre on the front wheel, C5-E.4's xassís in the left
+        wheel, C5-1.4's portador in planet 2, C5-1.3's v_E on the support; issue 30,
+        twenty-first round (d)). Labels of points and centres are not weighed: they sit on
+        their point, wherever it is."""
+        owner = label_owner(label.gid)
+        others = [path for body, path in self.areas if owner is not None and body != owner]
+        if not others:
+            return np.zeros(len(boxes))
+        return AREA * covered_part(boxes, others)
+
     def _leader_over(self, label: Label, cand: tuple) -> np.ndarray:
         """What the leader of an arrow's label (`Label.along`: a polygon's) costs for crossing
         what is drawn: `LEADER_CROSS` / 3 for
@@ -379,6 +407,33 @@ class Layout:
                 mine = (boxes[far, :2] + boxes[far, 2:]) / 2
                 cost[far] += LEADER_CROSS * _crossing(at[far][:, None, :], mine, starts, ends)
         return cost
+
+
+def label_owner(gid: str) -> Optional[str]:
+    """The body a label belongs to, read off its gid: a body's name (`body:NAME`), a vector's
+    value (`velocity:P@NAME`, `acceleration:P@NAME/REF`); None for any other label."""
+    if gid.startswith("body:"):
+        return gid.removeprefix("body:")
+    kind, _, ref = gid.partition(":")
+    if kind in ("velocity", "acceleration") and "@" in ref:
+        return ref.split("@", 1)[1].split("/", 1)[0]
+    return None
+
+
+def covered_part(boxes: np.ndarray, paths: list) -> np.ndarray:
+    """For each box (K, 4, display), the part of it (0 to 1) inside any of `paths`
+    (matplotlib Paths, display), sampled at the centres of an `AREA_GRID` of cells."""
+    nx, ny = AREA_GRID
+    u = (np.arange(nx) + 0.5) / nx
+    v = (np.arange(ny) + 0.5) / ny
+    fx, fy = (a.ravel() for a in np.meshgrid(u, v))
+    xs = boxes[:, 0:1] + fx[None, :] * (boxes[:, 2:3] - boxes[:, 0:1])
+    ys = boxes[:, 1:2] + fy[None, :] * (boxes[:, 3:4] - boxes[:, 1:2])
+    pts = np.column_stack([xs.ravel(), ys.ravel()])
+    inside = np.zeros(len(pts), bool)
+    for path in paths:
+        inside |= path.contains_points(pts)
+    return inside.reshape(len(boxes), -1).mean(axis=1)
 
 
 def _directions() -> np.ndarray:

@@ -38,6 +38,9 @@ def paint_mark(cv: Canvas, m: Mark) -> Optional[Any]:
         cv.label(pts[0], m.text, m.colour, m.priority, m.gid, m.prefer, weight=m.weight,
                  style=m.style, size=m.size or LABEL_SIZE)
         return None
+    if m.kind == "clear" and m.group.startswith("area:"):
+        cv.board.area(m.group.removeprefix("area:"), pts)
+        return None
     if m.kind != "clear":
         drawn = artist(m)
         if drawn is None:
