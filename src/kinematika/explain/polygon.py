@@ -173,14 +173,33 @@ def bar_unit(ctx: Ctx, values: list) -> tuple | None:
     def size(x: Any) -> float:
         return abs(float(ctx.drawn(x)))
 
-    parts = [sympy.factor(sympy.expand(c)) for value in values for c in (value if isinstance(value, tuple) else (value,))
-             if isinstance(c, sympy.Basic) and c.free_symbols]
+    expanded = [sympy.expand(c) for value in values for c in (value if isinstance(value, tuple) else (value,))
+                if isinstance(c, sympy.Basic) and c.free_symbols]
+    parts = [sympy.factor(c) for c in expanded if _may_be_a_product(c)]
     for c in sorted(parts, key=size, reverse=True):         # sorted keeps the first of equals first
         _, rest = c.as_independent(*c.free_symbols, as_Add=False)      # -(2 + √3)/2 · v
         factors = [f.as_base_exp() for f in sympy.Mul.make_args(rest)]
         if rest.free_symbols and all(b.is_Symbol and e.is_Rational for b, e in factors) and size(rest) > 0:
             return rest, size(rest)
     return None
+
+
+def _may_be_a_product(expanded: Any) -> bool:
+    """Whether factoring `expanded` (an expanded sympy expression) could give a number times
+    a product of symbols' powers: not when a function of the symbols (sin θ₂) or a root of
+    a sum of them (√(a² + b²)) is left in it. Factoring writes the same expression as a
+    product of polynomials in those same generators, so a generator the expanded form
+    depends on stays in some factor, whose base is then not a symbol; skipping the factoring
+    there gives `bar_unit` the same answer without its cost (a symbolic four-bar's 44
+    components: most of its explanation's build)."""
+    import sympy
+
+    for atom in sympy.preorder_traversal(expanded):
+        if isinstance(atom, sympy.Function) and atom.free_symbols:
+            return False
+        if isinstance(atom, sympy.Pow) and not atom.exp.is_Integer and not atom.base.is_Symbol and atom.base.free_symbols:
+            return False
+    return True
 
 
 class _Builder:
