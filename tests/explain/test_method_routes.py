@@ -97,7 +97,7 @@ def test_rolling_pair_lever_by_axes_at_the_wheel_centre():
 def test_order_names_dyads_only_where_there_are(lang):
     # the slides write no word for a dyad (4.2: "R loturak dituzten mekanismoak", two
     # elements N and P): the Basque pages say it in theirs (fifth round)
-    dyad = {"en": "dyad", "es": "díada", "ca": "díada", "eu": "loturak dituzten bi elementu"}[lang]
+    dyad = {"en": "dyad", "es": "díada", "ca": "díade", "eu": "loturak dituzten bi elementu"}[lang]
     one_wheel = rendered("seed_c5_1_7_semicylinder", lang, "md", False).lower()
     assert dyad not in one_wheel and "assur" not in one_wheel
     assert dyad in rendered("seed_001_r_pairs", lang, "md", False).lower()

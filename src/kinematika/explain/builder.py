@@ -143,9 +143,10 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     doc.ground_part = ground_part(ctx)
     doc.values = ctx.drawn_values() if ctx.symbolic else {}
     doc.worded_marks = worded_marks(ctx)
-    for b in doc.blocks():              # the legend says the marks the equations write (`marks`)
+    for b in doc.blocks():              # the legend names the marks that are also points (`marks`)
         if isinstance(b, Msg) and b.key == "v.intro":
-            b.args["marks"] = int(doc.worded_marks)
+            b.args["marks"] = len(doc.worded_marks)
+            b.args["clash"] = doc.worded_marks[0] if doc.worded_marks else ""
     return doc
 
 

@@ -375,7 +375,7 @@ class Document:
     parameters: tuple = ()                          # the model's parameters' names (its own words write them)
     ground_part: bool = False                       # the ground is named after a part of it (`reference_name`)
     values: dict = field(default_factory=dict)      # a symbolic model's numbers (draw_at): how formulas are written
-    worded_marks: bool = False                      # a name on the page is M or D: the legend says the marks are not points (`marks`)
+    worded_marks: tuple = ()                        # the page's points named M or D: the legend says the marks are not those points (`marks`)
 
     def blocks(self) -> list:
         """Every block, nested sections included, in reading order."""

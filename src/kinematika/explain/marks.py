@@ -8,6 +8,11 @@ sixteenth round (f)). The notes keep M and D always, so the page does too: there
 says once "M: magnitude known, D: direction known", and that under a term these letters
 are always the marks, never the points (words such as mòd/dir, the sixteenth round's, read
 as a second notation; issue 30, twentieth round (c)).
+
+The legend names only the letters that are a POINT of the page (a model point, a contact, a
+centre placed as a point): "never the point D" on C5-1.1 and C5-E.5, "never the point M" on
+C5-2.1. A body called M (001's guide) is not a point; "never the points M and D" named a
+point the page does not have (issue 30, twenty-first round (a)).
 """
 from __future__ import annotations
 
@@ -17,7 +22,9 @@ from .context import Ctx
 NOTES_MARKS = ("M", "D")
 
 
-def worded_marks(ctx: Ctx) -> bool:
-    """Whether the page's legend says its M/D marks are never its points: some point,
-    contact, centre placed as a point, or body of the page is named M or D."""
-    return bool(ctx.page_names() & set(NOTES_MARKS))
+def worded_marks(ctx: Ctx) -> tuple[str, ...]:
+    """The notes' marks (M, D, in that order) that are also a point of the page — a model
+    point, a contact or a centre placed as a point, never a body — which the legend says its
+    marks are never; empty when no point clashes."""
+    points = set(ctx.model.points) | ctx.labels()
+    return tuple(m for m in NOTES_MARKS if m in points)

@@ -63,7 +63,7 @@ class PlanarSteps:
         model's accelerations first say that ω is written by its name (ω_crank) in the formulas."""
         title = "sec.velocities" if self.level == "v" else "sec.accelerations"
         sec = Section(msg(title))
-        sec.add(msg("v.intro", marks=0) if self.level == "v" else msg("a.intro"))
+        sec.add(msg("v.intro", marks=0, clash="") if self.level == "v" else msg("a.intro"))
         i = 0
         written: list[tuple[Section, list[str]]] = []
         for step in merge_vehicles(self.ctx, self.steps):

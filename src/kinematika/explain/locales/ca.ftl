@@ -271,17 +271,18 @@ order-from = { ELISION($name) ->
        *[other] de { $name }
     }
 kind-input = entrada (sòlid motor)
-kind-RRR = díada RRR
-kind-RRP = díada RRP
-kind-RPR = díada RPR
-kind-PRP = díada PRP
+kind-RRR = díade RRR
+kind-RRP = díade RRP
+kind-RPR = díade RPR
+kind-PRP = díade PRP
 kind-other = grup resolt conjuntament
 step-title = Pas { $n }: { $kind } — { $bodies }
 step-title_group = Pas { $n }: { $bodies }
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
 v-intro = Cada equació vectorial s’anota com als apunts: { $marks ->
-        [1] M: mòdul conegut, D: direcció coneguda (sota un terme aquestes lletres són sempre aquestes marques, mai els punts M i D)
+        [1] M: mòdul conegut, D: direcció coneguda (sota un terme aquestes lletres són sempre aquestes marques, mai el punt { $clash })
+        [2] M: mòdul conegut, D: direcció coneguda (sota un terme aquestes lletres són sempre aquestes marques, mai els punts M i D)
        *[other] M mòdul conegut, D direcció coneguda
     }, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
         [md] : els termes marcats amb ?, que troba el pas
@@ -515,7 +516,7 @@ composition-point = Punt { $point } { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }, referència mòbil { $frame }:
-composition-drag = Arrossegament: el moviment del punt de la referència mòbil que coincideix amb ell:
+composition-drag = Arrossegament:
 composition-relative = Relatiu: { $sym }, el moviment vist des de la referència mòbil, { $frame }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] rodolen
@@ -579,7 +580,7 @@ ask-decompose = composició del moviment { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
     }, referència mòbil { $frame }
-ask-curvature = curvatura de la trajectòria { ELISION($point) ->
+ask-curvature = radi de curvatura de la trajectòria { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
     } respecte { ELISION($frame) ->
@@ -656,7 +657,7 @@ vehicle-centre = El CIR { ELISION($body) ->
     } és a { $first } i a { $second }; es tallen a { $centre } = { $where }, que no té velocitat: { $rest } = 0. Cada punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    } es mou perpendicular a la seva recta fins a { $centre }, amb celeritat proporcional a la seva distància:
+    } es mou perpendicularment a la recta que l’uneix amb { $centre }, amb celeritat proporcional a la seva distància:
 vehicle-translation = Les rectes { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -668,7 +669,7 @@ triad-intro = { $body } està subjectat per tres barres binàries, { $links }: c
        *[other] de { $body }
     }:
 triad-collinear = A cada membre els dos termes desconeguts són perpendiculars a una mateixa recta ({ $point } és a { $l1 } i a { $l3 }), de manera que cada membre té un sol mòdul desconegut: dues incògnites, i el polígon es tanca.
-triad-closure = Conegut { $point } com a punt de la barra ternària, la seva articulació { $pin } es tanca com en una díada:
+triad-closure = Conegut { $point } com a punt de la barra ternària, la seva articulació { $pin } es tanca com en una díade:
 loop-intro = Els sòlids { $bodies } tanquen un llaç: en recórrer-lo, les velocitats angulars relatives sumen zero, cadascuna segons l’eix del seu enllaç (tres equacions escalars per a les velocitats { $rate } desconegudes segons els eixos { $axis }):
 loop-solve = Les tres components donen les velocitats desconegudes:
 loop-solve_alpha = Derivant en els eixos fixos, les acceleracions angulars relatives i els termes { $cross } sumen zero al llarg del llaç; les tres components donen les { $rate } desconegudes:
@@ -967,7 +968,7 @@ centre-check = Comprovació amb les velocitats trobades a «{ sec-velocities }»
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (es trasllada: el seu CIR { $centre } és a l’infinit)
 how-constant_rate = ({ $sym } = { $value } és constant: { $line } conserva la seva longitud, i la seva velocitat angular la fixen els radis i { $rates }, que és constant)
-idle-rolling = { $body } rodola sense lliscar sobre { $fixed }: el seu punt de contacte { $point } és el seu CIR, de manera que:
+idle-rolling = { $body } rodola sense lliscar sobre { $fixed }: el punt de contacte { $point } n’és el CIR, de manera que:
 idle-symmetry = { $body } té la mateixa disposició que { $like } (el mateix radi, els mateixos enllaços amb els mateixos sòlids): per simetria gira igual:
 idle-unused = { $bodies } no { $count ->
         [one] intervé

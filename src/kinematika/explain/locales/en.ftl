@@ -215,7 +215,8 @@ step-title_group = Step { $n }: { $bodies }
 sec-velocities = Velocities
 sec-accelerations = Accelerations
 v-intro = Each vector equation is annotated as in the notes: { $marks ->
-        [1] M: magnitude known, D: direction known (under a term these letters are always these marks, never the points M and D)
+        [1] M: magnitude known, D: direction known (under a term these letters are always these marks, never the point { $clash })
+        [2] M: magnitude known, D: direction known (under a term these letters are always these marks, never the points M and D)
        *[other] M magnitude known, D direction known
     }, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
         [md] : the terms marked ?, which the step finds
@@ -392,7 +393,7 @@ fields-intro_a = The acceleration of every point, from a point of the same body 
 sec-composition = Composition of motions
 composition-intro = The motion of a point is its drag motion (that of the point of the moving frame that coincides with it) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
 composition-point = Point { $point } of { $body }, moving frame { $frame }:
-composition-drag = Drag: the motion of the point of the moving frame that coincides with it:
+composition-drag = Drag:
 composition-relative = Relative: { $sym }, the motion seen from the moving frame, { $frame }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] roll
@@ -414,7 +415,7 @@ ask-pole = acceleration pole of { $body } relative to { $frame }
 ask-inflection = inflection circle and pole tangent of { $body } relative to { $frame }
 ask-contact = the three coincident points at the contact { $joint }
 ask-decompose = composition of the motion of { $point }, moving frame { $frame }
-ask-curvature = curvature of the path of { $point } relative to { $frame }
+ask-curvature = radius of curvature of the path of { $point } relative to { $frame }
 ask-intrinsic = tangential and normal acceleration of { $point } relative to { $frame }
 ans-rest = no relative motion
 ans-point = position
@@ -670,7 +671,7 @@ centre-check = Check with the velocities found in “{ sec-velocities }”: on t
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (it translates: its instant centre { $centre } is at infinity)
 how-constant_rate = ({ $sym } = { $value } is constant: { $line } keeps its length, and its rate is set by the radii and by { $rates }, which is constant)
-idle-rolling = { $body } rolls without slipping on { $fixed }: its point { $point } at the contact is its instant centre, so:
+idle-rolling = { $body } rolls without slipping on { $fixed }: its contact point { $point } is its instant centre, so:
 idle-symmetry = { $body } is placed like { $like } (the same radius, the same joints with the same bodies): by symmetry it turns alike:
 idle-unused = { $bodies } { $count ->
         [one] does

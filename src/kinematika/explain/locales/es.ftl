@@ -209,7 +209,8 @@ step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
 v-intro = Cada ecuación vectorial se anota como en los apuntes: { $marks ->
-        [1] M: módulo conocido, D: dirección conocida (bajo un término estas letras son siempre estas marcas, nunca los puntos M y D)
+        [1] M: módulo conocido, D: dirección conocida (bajo un término estas letras son siempre estas marcas, nunca el punto { $clash })
+        [2] M: módulo conocido, D: dirección conocida (bajo un término estas letras son siempre estas marcas, nunca los puntos M y D)
        *[other] M módulo conocido, D dirección conocida
     }, ? desconocido; ⊥ y ∥ dan una dirección conocida. Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
         [md] : los términos marcados con ?
@@ -364,7 +365,7 @@ fields-intro_a = La aceleración de cada punto, a partir de un punto del mismo s
 sec-composition = Composición de movimientos
 composition-intro = El movimiento de un punto es el de arrastre (el del punto de la referencia móvil que coincide con él) más el relativo a esa referencia, más, en aceleraciones, el término de Coriolis { $cor }.
 composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
-composition-drag = Arrastre: el movimiento del punto de la referencia móvil que coincide con él:
+composition-drag = Arrastre:
 composition-relative = Relativo: { $sym }, el movimiento visto desde la referencia móvil, { $frame }:
 composition-rolls = { $body } { COUNT($body) ->
             [many] ruedan
@@ -386,7 +387,7 @@ ask-pole = polo de aceleraciones de { $body } respecto de { $frame }
 ask-inflection = circunferencia de inflexiones y tangente polar de { $body } respecto de { $frame }
 ask-contact = los tres puntos coincidentes en el contacto { $joint }
 ask-decompose = composición del movimiento de { $point }, referencia móvil { $frame }
-ask-curvature = curvatura de la trayectoria de { $point } respecto de { $frame }
+ask-curvature = radio de curvatura de la trayectoria de { $point } respecto de { $frame }
 ask-intrinsic = aceleración tangencial y normal de { $point } respecto de { $frame }
 ans-rest = sin movimiento relativo
 ans-point = posición
@@ -618,7 +619,7 @@ how-constant_rate = ({ $sym } = { $value } es constante: { $line } conserva su l
 idle-rolling = { $body } { COUNT($body) ->
         [many] ruedan
        *[one] rueda
-    } sin deslizar sobre { $fixed }: su punto { $point } del contacto es su CIR, de modo que:
+    } sin deslizar sobre { $fixed }: su punto de contacto { $point } es su CIR, de modo que:
 idle-symmetry = { $body } tiene la misma disposición que { $like } (el mismo radio, los mismos enlaces con los mismos sólidos): por simetría gira igual:
 idle-unused = { $bodies } no { $count ->
         [one] interviene

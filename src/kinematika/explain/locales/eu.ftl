@@ -209,7 +209,8 @@ step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
 v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: { $marks ->
-        [1] M: modulua ezaguna; D: norabidea ezaguna (termino baten azpian letra hauek beti marka hauek dira, ez inoiz M eta D puntuak)
+        [1] M: modulua ezaguna; D: norabidea ezaguna (termino baten azpian letra hauek beti marka hauek dira, ez inoiz { $clash } puntua)
+        [2] M: modulua ezaguna; D: norabidea ezaguna (termino baten azpian letra hauek beti marka hauek dira, ez inoiz M eta D puntuak)
        *[other] M: modulua ezaguna; D: norabidea ezaguna
     }; ?: ezezaguna (norabidea edo modulua); ⊥ eta ∥ ikurrek norabide ezaguna adierazten dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
         [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
@@ -305,7 +306,7 @@ fields-intro_a = Puntu bakoitzaren azelerazioa, solido bereko puntu ezagun batet
 sec-composition = Mugimenduen konposizioa
 composition-intro = Puntu baten mugimendua arrastre-mugimendua da (erreferentzia mugikorrean puntuarekin bat datorren puntuarena) gehi erreferentzia horrekiko mugimendu erlatiboa, gehi, azelerazioetan, Coriolisen terminoa { $cor }.
 composition-point = { $body } solidoaren { $point } puntua, { $frame } erreferentzia mugikorra:
-composition-drag = Arrastrea: erreferentzia mugikorrean puntuarekin bat datorren puntuaren mugimendua:
+composition-drag = Arrastrea:
 composition-relative = Erlatiboa: { $sym }, { $frame } erreferentzia mugikorretik ikusten den mugimendua:
 composition-rolls = { $body } solidoa { $frame } solidoaren gainean errodatzen da irristatu gabe { $point } puntuan: { $frame } solidotik ikusita, { $point } da { $body } solidoaren biraketa-zentro instantaneoa, { $sym } = 0, eta haren puntu guztiek haren inguruan biratzen dute.
 sec-curvature = Ibilbideen kurbadura
@@ -324,7 +325,7 @@ ask-pole = { $body } solidoaren azelerazio-poloa { $frame } solidoarekiko
 ask-inflection = { $body } solidoaren inflexio-zirkunferentzia eta polo-tangentea { $frame } solidoarekiko
 ask-contact = { $joint } kontaktuan bat datozen hiru puntuak
 ask-decompose = { $point } puntuaren mugimenduaren konposizioa, { $frame } erreferentzia mugikorra
-ask-curvature = { $point } puntuaren ibilbidearen kurbadura { $frame } solidoarekiko
+ask-curvature = { $point } puntuaren ibilbidearen kurbadura-erradioa { $frame } solidoarekiko
 ask-intrinsic = { $point } puntuaren azelerazio tangentziala eta normala { $frame } solidoarekiko
 ans-rest = ez dago mugimendu erlatiborik
 ans-point = posizioa
@@ -359,7 +360,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboaren aurkakoa.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa: { $vel } = 0 denez (errodadura-kontaktua), bi Coriolis gaiak nuluak dira, eta, beraz, bi azelerazio erlatiboak aurkakoak dira.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa: { $vel } = 0 denez (errodadura-kontaktua), bi Coriolis terminoak nuluak dira, eta, beraz, bi azelerazio erlatiboak aurkakoak dira.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
