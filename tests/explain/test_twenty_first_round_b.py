@@ -39,3 +39,36 @@ def test_pulley_on_cable_keeps_the_ceiling_in_its_table() -> None:
     page = plain_page("seed_c5_1_1_pulley_on_cable", "en")
     assert "| 1 | *ceiling* (fixed) |" in page
     assert "relative to the *ground*" in page
+
+
+def _messages(blocks: list, key: str) -> list:
+    from kinematika.explain.document import Msg, Section
+
+    out: list = []
+    for b in blocks:
+        if isinstance(b, Section):
+            out += _messages(b.blocks, key)
+        elif isinstance(b, Msg) and b.key == key:
+            out.append(b)
+    return out
+
+
+@over(name=SEEDS)
+def test_the_composition_sum_names_the_point_as_its_step(name: str) -> None:
+    """001 p_pair: "So v_B = v_{drag,B} + … is the equation of Step 2, which found
+    v_{B∈rocker}" named one velocity twice; the sum now writes the step's v_{B∈rocker}."""
+    from .helpers import explained
+
+    _, doc = explained(name)
+    for m in _messages(doc.sections, "composition.sum_seen"):
+        sym = m.args["sym"]
+        point = sym.sub.partition("∈")[0]
+        # a velocity the step found for this very point (not a relative one) is named so
+        same = [s.sub for s in m.args["seen"].items if getattr(s, "base", "") == sym.base
+                and s.sub.partition("∈")[0] == point and "/" not in s.sub]
+        assert all(sub == sym.sub for sub in same), (sym.sub, same)
+
+
+def test_p_pair_sum_by_hand() -> None:
+    assert "So v_{B∈rocker} = v_{drag,B} + v_{B∈N rel M}" in plain_page("seed_001_p_pair_coriolis", "en")
+    assert "Así, v_{B∈balancín} = v_{arr,B} + v_{B∈N rel M}" in plain_page("seed_001_p_pair_coriolis", "es")
