@@ -72,3 +72,38 @@ def test_the_composition_sum_names_the_point_as_its_step(name: str) -> None:
 def test_p_pair_sum_by_hand() -> None:
     assert "So v_{B∈rocker} = v_{drag,B} + v_{B∈N rel M}" in plain_page("seed_001_p_pair_coriolis", "en")
     assert "Así, v_{B∈balancín} = v_{arr,B} + v_{B∈N rel M}" in plain_page("seed_001_p_pair_coriolis", "es")
+
+
+def _said_twice(blocks: list, bad: list) -> None:
+    from kinematika.explain.document import Section
+    from kinematika.explain.said_first import USES_CONDITION, said_joint, used_joints
+
+    said: set = set()
+    for b in blocks:
+        if isinstance(b, Section):
+            _said_twice(b.blocks, bad)
+            continue
+        if said_joint(b) is not None:
+            said.add(said_joint(b))
+        twice = said & set(used_joints(b))
+        if twice:
+            bad.append((str(b.sym), sorted(map(str, twice)), USES_CONDITION))
+
+
+@over(name=SEEDS)
+def test_a_joint_condition_is_said_once_before_use(name: str) -> None:
+    """C5-1.3: "Prismatic pair: the bar slides along the support without turning relative to
+    it." and then "ω_support = ω_bar (prismatic pair: no relative rotation)": the sentence
+    said first stays, the parenthesis goes."""
+    from .helpers import explained
+
+    _, doc = explained(name)
+    bad: list = []
+    _said_twice(doc.sections, bad)
+    assert not bad, bad
+
+
+def test_bar_in_sleeve_by_hand() -> None:
+    page = plain_page("seed_c5_1_3_bar_in_sleeve", "en")
+    assert "without turning relative to it" in page
+    assert "no relative rotation" not in page
