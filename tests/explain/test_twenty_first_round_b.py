@@ -107,3 +107,28 @@ def test_bar_in_sleeve_by_hand() -> None:
     page = plain_page("seed_c5_1_3_bar_in_sleeve", "en")
     assert "without turning relative to it" in page
     assert "no relative rotation" not in page
+
+
+def _centre_before_equation(blocks: list, bad: list) -> None:
+    from kinematika.explain.document import CentreNote, Equation, Section
+
+    for b in blocks:
+        if isinstance(b, Section):
+            _centre_before_equation(b.blocks, bad)
+    notes = [i for i, b in enumerate(blocks) if isinstance(b, CentreNote)]
+    eqs = [i for i, b in enumerate(blocks) if isinstance(b, Equation)]
+    bad += [(blocks[i].pair) for i in notes if any(e > i and "\\ue010" not in repr(blocks[e]) for e in eqs)]
+
+
+def test_a_step_writes_its_equations_before_the_centre_that_reads_them() -> None:
+    """C5-1.4, Step 2: "I_planet1: A1 moves with the carrier about O…" stood before the
+    v_{S∈ring} equation block: the ring's equations first, then the centre's paragraph."""
+    from .helpers import explained
+
+    for name in SEEDS:
+        _, doc = explained(name)
+        bad: list = []
+        _centre_before_equation(doc.sections, bad)
+        assert not bad, (name, bad)
+    page = plain_page("seed_c5_1_4_epicyclic", "en")
+    assert page.index("v_SO = ω_ring × OS") < page.index("I_planet1: A1 moves with the *carrier*")
