@@ -286,7 +286,8 @@ def _refer_sums(ctx: Ctx, sec: Section, levels: list[Section]) -> None:
     """The composition's sum v_P = v_arr,P + v_rel,P (+ a_Cor,P) where a step's equation was
     that very sum, the point's motion on its guide body plus its slide along the guide
     (001's v_{B∈rocker} = v_{B∈M} + v_{B∈N rel M}): the section refers to that step, "so
-    v_B = v_arr,B + v_rel,B is the equation of Step 2, which found v_{B∈rocker}", and does
+    v_{B∈rocker} = v_arr,B + v_rel,B is the equation of Step 2, which found v_{B∈rocker}",
+    naming the point as the step does, and does
     not derive v_B again (a result is derived once, round 17a)."""
     found: dict = {}
     for level_sec in levels:
@@ -299,7 +300,7 @@ def _refer_sums(ctx: Ctx, sec: Section, levels: list[Section]) -> None:
                         m = RELATIVE.match(t.sym.sub) if t.kind == "slide" else None
                         if m and m.group(1) == eq.point.point:
                             key = (eq.level, ctx.motion_key(eq.point.point, m.group(2)), m.group(2), m.group(3))
-                            found.setdefault(key, (found_by(step, eq), n))
+                            found.setdefault(key, (found_by(step, eq), n, eq.target.sym))
     moving = None
     for k, b in enumerate(sec.blocks):
         if isinstance(b, Msg) and b.key == "composition.point":
@@ -314,7 +315,9 @@ def _refer_sums(ctx: Ctx, sec: Section, levels: list[Section]) -> None:
         terms: list = []
         for t in b.sides[0]:
             terms += ([" + "] if terms else []) + [t.sym]
-        sec.blocks[k] = msg("composition.sum_seen", sym=b.target.sym, terms=Inline(terms), seen=seen[0], step=seen[1])
+        # the sum names the point as the step's equation does (twenty-first round (b): 001's
+        # "So v_B = v_{drag,B} + …" beside Step 2's v_{B∈rocker}: one velocity, one name)
+        sec.blocks[k] = msg("composition.sum_seen", sym=seen[2], terms=Inline(terms), seen=seen[0], step=seen[1])
 
 
 def found_by(step: Section, eq: Equation) -> Names:

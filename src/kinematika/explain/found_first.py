@@ -76,6 +76,7 @@ def centres_after_found(ctx: Ctx, centres: Section, velocities: Section) -> None
                           for at in [_starts_from(step, centre)] if at is not None), None)
         if first_use is not None and (first_use[0], first_use[1]) < (i, k):
             continue            # the step starts from it before the velocities: no order would do
+        k = _after_equations(steps[i].blocks, k, body)
         steps[i].blocks.insert(k + 1, note)
         if first_use is not None:
             s, at = first_use
@@ -85,3 +86,17 @@ def centres_after_found(ctx: Ctx, centres: Section, velocities: Section) -> None
             steps[s].blocks[at] = Msg(PLACED_BEFORE[said.key], said.args)
         centres.blocks[n] = msg("centres.found_above_step", centre=centre, step=i + 1, body=Name(body, "body"))
         ctx.worked.add(f"centre:{body}")
+
+
+def _after_equations(blocks: list, k: int, body: str) -> int:
+    """The index after which a centre's paragraph goes in a step: past the equations that
+    follow the one it reads, when none of them reads the centre (twenty-first round (b):
+    C5-1.4's "I_planet1: A1 moves with the carrier about O…" stood between the ring's
+    v_{Q∈ring} and v_{S∈ring}; the notes write a step's equations for its body, then the
+    centre found from them)."""
+    from .document import CENTRE_POINT, Equation
+
+    token = CENTRE_POINT.format(body)
+    while k + 1 < len(blocks) and isinstance(blocks[k + 1], Equation) and token not in repr(blocks[k + 1]):
+        k += 1
+    return k

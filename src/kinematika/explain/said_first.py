@@ -50,4 +50,29 @@ def conditions_first(blocks: list) -> list:
         if first is not None:
             out.insert(first, out.pop(i))
         i += 1
-    return out
+    return said_once(out)
+
+
+def said_once(blocks: list) -> list:
+    """The blocks with a rate carried across a joint whose condition a sentence before it
+    said written without the parenthesis that says it again (twenty-first round (b):
+    C5-1.3's "the bar slides along the support without turning relative to it", then
+    "ω_support = ω_bar (prismatic pair: no relative rotation)"): one condition, said once,
+    before its use."""
+    said: set = set()
+    for b in blocks:
+        joint = said_joint(b)
+        if joint is not None:
+            said.add(joint)
+        if isinstance(b, Derived) and said & set(used_joints(b)):
+            how: list = []
+            for m in b.how:
+                if isinstance(m, Msg) and m.key in USES_CONDITION and m.args.get("joint") in said:
+                    if how and how[-1] == " ":
+                        how.pop()
+                    continue
+                how.append(m)
+            b.how = how
+            if isinstance(b.remark, Msg) and b.remark.key in USES_CONDITION and b.remark.args.get("joint") in said:
+                b.remark = None
+    return blocks

@@ -1020,8 +1020,13 @@ class Renderer(ABC):
                 "side": Msg(f"side.{c.side}", {"q": Name(q)})}
 
     def frame_name(self, body: str) -> Name:
-        """A body as the reference of a motion: the fixed one is the ground (`Name.reference`)."""
-        return Name(body, "body", reference=body == self.doc_frame())
+        """A body as the reference of a motion: the fixed one is the ground (`Name.reference`),
+        said with the ground's word (`Name.centre`) whatever the model calls it — a centre
+        placed from velocities reads absolute velocities, which the page says "relative to the
+        ground" everywhere else (issue 30, twenty-first round (b): C5-1.5's "relative to the
+        *ceiling*", C5-1.4's "respecto del *bastidor*" beside "respecto del *suelo*")."""
+        fixed = body == self.doc_frame()
+        return Name(body, "body", reference=fixed, centre=fixed)
 
     def doc_frame(self) -> str:
         """The fixed body (numbered 1)."""
