@@ -351,7 +351,8 @@ class _Builder:
                                           point=at, body=missing[0])
         along = self.direction(raw.along, f"{_joint_place(i, jid)}.along") if raw.along is not None else None
         axis = self.direction(raw.axis, f"{_joint_place(i, jid)}.axis") if raw.axis is not None else None
-        return Joint(jid, kind.name, a, b, i, at=at, along=along, axis=axis, internal=raw.internal)
+        # (in the fields' order, by place: keywords cost a third of a joint's making)
+        return Joint(jid, kind.name, a, b, i, at, along, axis, raw.internal)
 
     def direction(self, raw: list, where: str) -> Direction:
         """A direction as a vector, or as two points [P, Q] (from P to Q, at this instant)."""

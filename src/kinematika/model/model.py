@@ -60,12 +60,18 @@ class Parameter:
     positive: bool = True
 
 
-@dataclass
+_KINDS_BY_NAME: dict[str, JointKind] = {}     # the kinds joints have been made of: the registry asked once each
+
+
+@dataclass(slots=True)
 class Joint:
     """A joint between body `a` (the one `along` directions are fixed in) and body `b`, of kind
     `type` (ask `kind`, never compare the name), with the keys its kind declares: point `at`,
     directions `along` and `axis`, `internal` for circles inside circles. `index` is its place
-    in the file."""
+    in the file.
+
+    Slotted: a model may have thousands (a chain of a thousand pins), each made once and read
+    by every solve."""
 
     id: str
     type: str
@@ -81,7 +87,10 @@ class Joint:
     kind: JointKind = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        self.kind = joint_kind(self.type)
+        kind = _KINDS_BY_NAME.get(self.type)
+        if kind is None:
+            kind = _KINDS_BY_NAME[self.type] = joint_kind(self.type)
+        self.kind = kind
 
     @property
     def where(self) -> str:
