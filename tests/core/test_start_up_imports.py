@@ -39,12 +39,18 @@ SOLVE = {
     "kinematika.languages", "kinematika.limits", "kinematika.memo", "kinematika.model", "kinematika.model.build",
     "kinematika.model.builder", "kinematika.model.figure_hints", "kinematika.model.point_order",
     "kinematika.model.files", "kinematika.model.model", "kinematika.model.overrides", "kinematika.model.plain",
+    "kinematika.model.point_ref",
     "kinematika.model.shape", "kinematika.model.source", "kinematika.model.wording", "kinematika.report", "kinematika.report.json_answer",
     "kinematika.report.json_text", "kinematika.report.values", "kinematika.registry", "kinematika.shapes", "kinematika.solution",
     "kinematika.sweep", "kinematika.sweep.posing", "kinematika.text",
     # the question kinds' registry: an answer's tables read what each asked kind is (issue 34, part 3)
     "kinematika.questions", "kinematika.questions.base", "kinematika.questions.motion",
 }
+# a model with `parameters:` (every example here but spherical_four_bar.yaml), a model that asks
+# (its `ask`, or none written: every body and point by default); not the 1000-body chain, whose
+# `ask` is empty and which has no parameters (`test_a_model_without_parameters_or_questions...`)
+PARAMETERS = {"kinematika.model.parameter"}
+ASKED = {"kinematika.model.question"}
 QUESTIONS = {"kinematika.questions", "kinematika.questions.axis", "kinematika.questions.contact",
              "kinematika.questions.curvature", "kinematika.questions.decompose", "kinematika.questions.icr",
              "kinematika.questions.inflection", "kinematika.questions.motion", "kinematika.questions.pole"}
@@ -58,7 +64,7 @@ SECTIONS = {"kinematika.model.motion_sections"}
 SWEEP_RUN = {"kinematika.memory", "kinematika.sweep.coincident", "kinematika.sweep.plan", "kinematika.sweep.result",
              "kinematika.sweep.run",
              "kinematika.sweep.joint_rates"}       # a 3D ω along a revolute's axis is its rate (issue 31)
-SIMULATE = {"kinematika.simulate", "kinematika.simulate.clock", "kinematika.simulate.holonomic",
+SIMULATE = {"kinematika.joints.holonomic", "kinematika.simulate", "kinematika.simulate.clock", "kinematika.simulate.holonomic",
             "kinematika.simulate.result", "kinematika.simulate.run", "kinematika.simulate.state",
             "kinematika.simulate.timed", "kinematika.sweep.poses", "kinematika.sweep.progress"}
 HEAVY = {"scipy", "sympy", "pydantic", "typer", "click", "rich", "matplotlib", "pyarrow", "starlette", "uvicorn",
@@ -66,19 +72,19 @@ HEAVY = {"scipy", "sympy", "pydantic", "typer", "click", "rich", "matplotlib", "
 
 # command line, kinematika's modules, heavy libraries allowed, most other modules
 COMMANDS = {
-    "solve": (["solve", "{ex}/four_bar.yaml", "--json"], SOLVE | QUESTIONS | CONSTRUCTED | SECTIONS, set(), 145),
-    "solve-no-questions": (["solve", "{ex}/spherical_four_bar.yaml", "--json"], SOLVE | SECTIONS, set(), 145),
-    "solve-no-sections": (["solve", "{ex}/inverted_slider_crank.yaml", "--json"], SOLVE | CONSTRUCTED, set(), 145),
+    "solve": (["solve", "{ex}/four_bar.yaml", "--json"], SOLVE | PARAMETERS | ASKED | QUESTIONS | CONSTRUCTED | SECTIONS, set(), 145),
+    "solve-no-questions": (["solve", "{ex}/spherical_four_bar.yaml", "--json"], SOLVE | ASKED | SECTIONS, set(), 145),
+    "solve-no-sections": (["solve", "{ex}/inverted_slider_crank.yaml", "--json"], SOLVE | PARAMETERS | ASKED | CONSTRUCTED, set(), 145),
     "centres": (["centres", "{ex}/four_bar.yaml", "--json"],
-                SOLVE | QUESTIONS | CONSTRUCTED | SECTIONS | {"kinematika.questions.centres",
+                SOLVE | PARAMETERS | ASKED | QUESTIONS | CONSTRUCTED | SECTIONS | {"kinematika.questions.centres",
                                                               "kinematika.report.centres_table"},
                 set(), 145),
     "sweep": (["sweep", "{ex}/four_bar.yaml", "--steps", "8", "--json"],
-              SOLVE | SWEEP_RUN | CONSTRUCTED | SECTIONS | {"kinematika.structure", "kinematika.structure.assur",
+              SOLVE | PARAMETERS | ASKED | SWEEP_RUN | CONSTRUCTED | SECTIONS | {"kinematika.structure", "kinematika.structure.assur",
                                                  "kinematika.sweep.closed_form"},
               set(), 145),
     "simulate": (["simulate", "{ex}/tractor_trailer_turning.yaml", "--time", "1", "--steps", "2", "--json"],
-                 SOLVE | SWEEP_RUN | SIMULATE | SECTIONS, {"scipy"}, 245),
+                 SOLVE | PARAMETERS | ASKED | SWEEP_RUN | SIMULATE | SECTIONS, {"scipy"}, 245),
 }
 
 
@@ -103,3 +109,27 @@ def test_a_fast_command_imports_only_its_listed_modules(command):
     assert len(others) <= most_others, (f"`kinematika {command}` imports {len(others)} other modules "
                                         f"(at most {most_others})")
     assert len(ours) >= len(listed) // 2          # the report was read (the lists are not vacuous)
+
+
+PLAIN_CHAIN = """\
+points: {O: [0, 0], A: [0, 1], B: [2, 1], C: [2, 0]}
+bodies: {ground: [O, C], crank: [O, A], coupler: [A, B], rocker: [B, C]}
+joints:
+- {type: revolute, bodies: [ground, crank], at: O}
+- {type: revolute, bodies: [crank, coupler], at: A}
+- {type: revolute, bodies: [coupler, rocker], at: B}
+- {type: revolute, bodies: [rocker, ground], at: C}
+drivers:
+- {omega: crank, value: 10.0, alpha: 0.0}
+ask: []
+"""
+
+
+def test_a_model_without_parameters_or_questions_defines_neither(tmp_path):
+    """A model like the 1000-body chain (numbers only, `ask: []`) makes no `Parameter` and no
+    `Question`, so its solve does not import (define) them, nor a joint's `Holonomic`."""
+    model = tmp_path / "plain_chain.yaml"
+    model.write_text(PLAIN_CHAIN, encoding="utf-8")
+    modules = set(imported(["solve", str(model), "--json"]))
+    assert "kinematika.model.build" in modules          # the report was read
+    assert not modules & (PARAMETERS | ASKED | {"kinematika.joints.holonomic"})

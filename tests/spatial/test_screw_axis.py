@@ -90,7 +90,7 @@ def test_screw_axis_properties_on_random_chains(chain):
 
 
 def answers_axis(sol, body: str) -> dict:
-    from kinematika.model.model import Question
+    from kinematika.model.question import Question
     from kinematika.questions import answer
 
     return answer(sol, Question("axis", 0, body, {"axis": body}))

@@ -19,6 +19,7 @@ from ..expressions import Expr, ExpressionError, evaluate
 from .positions import angle_warnings, positions
 
 if TYPE_CHECKING:
+    from ..model.parameter import Parameter
     from ..model.body_shapes import CamShape, CurveShape, Shape
     from ..shapes import Cam, Curve
 
@@ -197,7 +198,7 @@ def _parameters(model: m.Model, backend: Any, force_symbols: bool) -> tuple[dict
     return env, probe
 
 
-def _given_value(p: m.Parameter, backend: Any) -> float | None:
+def _given_value(p: Parameter, backend: Any) -> float | None:
     """The value a forced symbol was given, to probe the model where its geometry holds;
     None (a generic probe) for 0 or a sign its symbol cannot take."""
     if p.value is None:

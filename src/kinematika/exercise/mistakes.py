@@ -28,7 +28,8 @@ from typing import Any, Callable, Optional
 from ..engine.terms import Terms
 from ..errors import KinematikaError, KinematikaWarning
 from ..expressions import Expr, parse
-from ..model.model import Joint, Model, PointRef, Question
+from ..model.model import Joint, Model, PointRef
+from ..model.question import Question
 from ..questions import QUESTIONS
 from .key import Row, key_rows
 

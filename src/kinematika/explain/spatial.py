@@ -11,7 +11,8 @@ from __future__ import annotations
 from typing import Optional
 
 from ..algebra.vectors import dot
-from ..model.model import PointRef, Question
+from ..model.model import PointRef
+from ..model.question import Question
 from ..questions.decompose import KIND as DECOMPOSE, decompose
 from .asked import worked
 from .context import Ctx, alpha_sym, composed, omega_sym

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from ..registry import Registry
-from .base import AXES, Holonomic, JointGeometry, JointKind, NumericRows, Rows, rounding_hint
+from .base import AXES, JointGeometry, JointKind, NumericRows, Rows, rounding_hint
 
 MODULES = {                        # the kind's name in model files -> its module
     "revolute": "revolute",
@@ -31,7 +31,7 @@ MODULES = {                        # the kind's name in model files -> its modul
 
 KINDS: Mapping[str, JointKind] = Registry(__name__, MODULES)   # each kind imported on first use
 
-__all__ = ["AXES", "KINDS", "MODULES", "Holonomic", "JointGeometry", "JointKind", "NumericRows", "Rows", "kind", "rounding_hint"]
+__all__ = ["AXES", "KINDS", "MODULES", "JointGeometry", "JointKind", "NumericRows", "Rows", "kind", "rounding_hint"]
 
 
 def kind(name: str) -> JointKind:

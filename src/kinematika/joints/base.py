@@ -44,7 +44,8 @@ from .positions import Residual
 from ..expressions import Direction
 
 if TYPE_CHECKING:
-    from .seam import DrawContext, Instant, JointView, Level, Mechanism, Pose, Scalar
+    from .holonomic import Holonomic
+    from .seam import DrawContext, Instant, JointView, Level, Mechanism, Scalar
     from .symbols import Mark
 
 AXES = "xyz"
@@ -107,21 +108,6 @@ class JointGeometry:
 
 
 Rows = list[tuple["Scalar", Said]]       # each condition (a linear form) and its message (errors' catalogue)
-
-
-@dataclass
-class Holonomic:
-    """The part of a joint's condition that is on positions alone, which a motion followed in
-    time (`simulate`) keeps its poses on by projection.
-
-    `values(q, 0.0)` is the residual at the poses `q` (zero on the condition), with the
-    signature of `JointKind.residual`'s functions (whose `aux` and `key`, when they carry them,
-    are kept); `weights(q)` says how the rate of each value is made of the joint's engine rows
-    (one list of weights per value), so that the Jacobian of the values is those weights times
-    the engine's velocity matrix; None: the values are the rows themselves, one for one."""
-
-    values: Residual
-    weights: Optional[Callable[[Pose], list]] = None
 
 
 class NumericRows:
@@ -236,6 +222,8 @@ class JointKind(ABC):
         """The condition's part on positions (`Holonomic`), for a motion integrated in time: the
         whole condition (`residual`, row for row the engine's) unless the kind is constrained
         on velocities only (a knife edge, a disc rolling on a plane), which says what is left."""
+        from .holonomic import Holonomic
+
         return Holonomic(self.residual(inst, geo, ref))
 
     def displacement(self, geo: JointGeometry, ref: tuple, swept: bool) -> Residual:

@@ -29,7 +29,8 @@ from .capabilities import Centre
 from ..algebra.vectors import sub
 from ..errors import Said
 from ..shapes import Circle, Disc, Plane
-from .base import AXES, Holonomic, JointGeometry, JointKind, ModelJoint, Rows
+from .base import AXES, JointGeometry, JointKind, ModelJoint, Rows
+from .holonomic import Holonomic
 from .derivatives import coincident
 from .positions import continued, differences, dot, wrap
 from .rolling_contact import contact_of, drawn_pair, find_contact

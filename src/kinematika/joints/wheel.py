@@ -26,7 +26,8 @@ import numpy as np
 
 from .capabilities import Centre, PointOn, Side
 from ..algebra.vectors import dot, sub
-from .base import Holonomic, JointGeometry, JointKind, Rows
+from .base import JointGeometry, JointKind, Rows
+from .holonomic import Holonomic
 from .derivatives import coincident
 from ..errors import Said
 

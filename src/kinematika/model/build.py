@@ -19,7 +19,7 @@ from . import shape
 from .plain import Record
 from .point_order import construction_order
 from ..expressions import Expr, ExpressionError, parse
-from .model import Body, Direction, Driver, ExprVector, Joint, Model, Parameter, PointPair, PointRef, Question
+from .model import Body, Direction, Driver, ExprVector, Joint, Model, PointPair, PointRef
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
@@ -29,6 +29,8 @@ if TYPE_CHECKING:
     from .motion_sections import Simulate, Sweep
     from .body_shapes import CamShape, Shape
     from .constructions import Construction
+    from .parameter import Parameter
+    from .question import Question
 
 
 
@@ -119,6 +121,10 @@ class _Builder:
     # parameters and points -------------------------------------------------------------
     def parameters(self) -> dict[str, Parameter]:
         out: dict[str, Parameter] = {}
+        if not self.spec.parameters:       # (`Parameter` is defined only for a model that has one)
+            return out
+        from .parameter import Parameter
+
         for name, raw in self.spec.parameters.items():
             where = f"parameters.{name}"
             if not name.isidentifier():
@@ -351,7 +357,8 @@ class _Builder:
                                           point=at, body=missing[0])
         along = self.direction(raw.along, f"{_joint_place(i, jid)}.along") if raw.along is not None else None
         axis = self.direction(raw.axis, f"{_joint_place(i, jid)}.axis") if raw.axis is not None else None
-        return Joint(jid, kind.name, a, b, i, at=at, along=along, axis=axis, internal=raw.internal)
+        # (in the fields' order, by place: keywords cost a third of a joint's making)
+        return Joint(jid, kind.name, a, b, i, at, along, axis, raw.internal)
 
     def direction(self, raw: list, where: str) -> Direction:
         """A direction as a vector, or as two points [P, Q] (from P to Q, at this instant)."""
@@ -423,6 +430,8 @@ class _Builder:
         """The contract's default: every body (ω, α) and every material point (v, a), the
         fixed frame and its points included, in the file's order: the kinds whose answers
         are the columns of the answer's tables (`QuestionKind.column`)."""
+        from .question import Question      # (defined only for a model that asks: see its module)
+
         columns = [k for k in QUESTIONS.values() if k.column]
         out: list[Question] = []
         for body in self.body_map:
@@ -436,6 +445,8 @@ class _Builder:
     def question(self, i: int, raw: schema.QuestionSpec | Record) -> Question:
         """A question of `ask`, checked as its kind says (`questions.QUESTIONS`): its target
         a material point, a body or a joint, a `moving` body when it takes one, its models."""
+        from .question import Question
+
         where = f"ask[{i}]"
         names = [k for k in QUESTIONS if getattr(raw, k) is not None]
         if len(names) != 1:

@@ -3,11 +3,13 @@ symbolic model is drawn at) and `up` (the vertical of a 3D model), checked here.
 from __future__ import annotations
 
 import math
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 from .. import limits
 from ..errors import KinematikaError
-from .model import Parameter
+
+if TYPE_CHECKING:
+    from .parameter import Parameter
 
 
 def draw_values(raw: Optional[dict[str, Any]], params: dict[str, Parameter]) -> dict[str, float]:

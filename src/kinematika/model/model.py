@@ -14,12 +14,15 @@ from ..joints import JointKind
 from ..joints import kind as joint_kind
 from ..expressions import Direction, Expr, ExprVector
 from ..expressions import PointPair as PointPair      # re-exported: written `model.PointPair` across the package
+from .point_ref import PointRef as PointRef           # re-exported: written `model.PointRef` across the package
 
 if TYPE_CHECKING:
     from .body_shapes import Shape
     from .constructions import Construction
     from .exercise_section import ExerciseSection
     from .motion_sections import Simulate, Sweep, Turn
+    from .parameter import Parameter
+    from .question import Question
     from .wording import Wording
 
 
@@ -27,17 +30,6 @@ def _wording() -> "Wording":
     from .wording import Wording
 
     return Wording()
-
-
-@dataclass(frozen=True)
-class PointRef:
-    """A material point: the point `point` of body `body` (written ``point@body``)."""
-
-    point: str
-    body: str
-
-    def __str__(self) -> str:
-        return f"{self.point}@{self.body}"
 
 
 @dataclass
@@ -50,22 +42,18 @@ class Body:
     shapes: list[Shape] = field(default_factory=list)
 
 
-@dataclass
-class Parameter:
-    """A named value of the model; `value` None keeps it a symbol, so answers are formulas in
-    it; `positive` tells the algebra its sign (lengths are positive; an angle may have either)."""
-
-    name: str
-    value: Optional[Expr]          # None: a symbol
-    positive: bool = True
+_KINDS_BY_NAME: dict[str, JointKind] = {}     # the kinds joints have been made of: the registry asked once each
 
 
-@dataclass
+@dataclass(slots=True)
 class Joint:
     """A joint between body `a` (the one `along` directions are fixed in) and body `b`, of kind
     `type` (ask `kind`, never compare the name), with the keys its kind declares: point `at`,
     directions `along` and `axis`, `internal` for circles inside circles. `index` is its place
-    in the file."""
+    in the file.
+
+    Slotted: a model may have thousands (a chain of a thousand pins), each made once and read
+    by every solve."""
 
     id: str
     type: str
@@ -81,7 +69,10 @@ class Joint:
     kind: JointKind = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        self.kind = joint_kind(self.type)
+        kind = _KINDS_BY_NAME.get(self.type)
+        if kind is None:
+            kind = _KINDS_BY_NAME[self.type] = joint_kind(self.type)
+        self.kind = kind
 
     @property
     def where(self) -> str:
@@ -151,34 +142,6 @@ class Driver:
         given = self.given(accel)
         assert isinstance(given, tuple), f"{self.where}: one number, not a vector"
         return given
-
-
-@dataclass
-class Question:
-    """One question of `ask`: its `kind` (velocity, icr, curvature …), its target (a body, a
-    material point or a joint id), the body it is asked `relative_to` and, for a decomposition,
-    the `moving` body; `echo` is the question as written, repeated in the answer. What a kind
-    means is its module's (`kinematika.questions.QUESTIONS[kind]`): ask it, never its name."""
-
-    kind: str                      # a key of kinematika.questions.QUESTIONS
-    index: int
-    target: Union[str, PointRef]   # body name, material point or joint id
-    echo: dict                     # the question as written, echoed in the answer
-    relative_to: Optional[str] = None
-    moving: Optional[str] = None
-
-    @property
-    def where(self) -> str:
-        """Where the question is written, for errors: ``ask[1]``."""
-        return f"ask[{self.index}]"
-
-    @property
-    def name(self) -> str:
-        """The body (or joint) a question about a body or joint asks of (`omega`, `alpha`,
-        `icr`, `axis`, `pole`, `contact`): its target, which is then a name."""
-        if not isinstance(self.target, str):
-            raise TypeError(f"{self.where} asks of a material point, not a body")
-        return self.target
 
 
 @dataclass

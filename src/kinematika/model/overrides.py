@@ -15,13 +15,15 @@ from typing import Mapping, Optional
 
 from ..errors import KinematikaError, KinematikaWarning, Names, Said
 from ..expressions import ExpressionError, evaluate, parse
-from .model import Model, Parameter
+from .model import Model
 
 
 def with_parameters(model: Model, values: Mapping[str, Optional[str]]) -> Model:
     """A copy of `model` with the named parameters set to `values`."""
     if not values:
         return model
+    from .parameter import Parameter    # (defined only for a model that has one: see its module)
+
     params = dict(model.parameters)
     for name, text in values.items():
         if name not in params:

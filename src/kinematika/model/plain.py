@@ -8,6 +8,7 @@ decides, with its error messages. Nothing here imports pydantic: the fast path's
 """
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, Any, Callable, ClassVar, Optional
 
 Check = Callable[[Any], Any]       # returns the checked value, or raises Refused
@@ -117,16 +118,23 @@ def optional(check: Check) -> Check:
 def listed(check: Check, shortest: int = 0, longest: Optional[int] = None) -> Check:
     """A list of `shortest` to `longest` items, each checked."""
     types = _EXACT.get(check)
+    most = sys.maxsize if longest is None else longest
     if types is not None:            # each value returned as it is: a copy of the list
         def check_exact(x: Any) -> list:
-            if type(x) is not list or len(x) < shortest or (longest is not None and len(x) > longest) \
-                    or not types.issuperset(map(type, x)):
+            if type(x) is not list or not shortest <= len(x) <= most:
                 raise Refused
+            if len(x) > _SHORT:          # the types at once (a set of them)
+                if not types.issuperset(map(type, x)):
+                    raise Refused
+            else:                        # a few values: one by one costs less than the set
+                for v in x:
+                    if type(v) not in types:
+                        raise Refused
             return x.copy()
         return check_exact
 
     def check_all(x: Any) -> list:
-        if type(x) is not list or len(x) < shortest or (longest is not None and len(x) > longest):
+        if type(x) is not list or not shortest <= len(x) <= most:
             raise Refused
         return [check(v) for v in x]
     return check_all
@@ -156,6 +164,7 @@ def mapping(check: Check) -> Check:
 
 
 _STR = frozenset((str,))
+_SHORT = 4          # a list of up to this many exactly typed values is checked value by value
 
 
 def first_key(*choices: tuple[str, Check]) -> Check:
@@ -193,27 +202,32 @@ def record(name: str, fields: dict[str, tuple[Check, Any]],
     cls = type(name, (Record,), {"FIELDS": tuple(fields),
                                  "DEFAULTS": {k: d for k, (_, d) in fields.items()}})
     in_file = {(keys or {}).get(f, f): f for f in fields}
-    known = in_file.keys()
     # once per record: each file key's field and check; the fields a file must give; the
     # defaults made by a factory; every field in order with its default (a value, or a
     # place kept for the given or made ones), copied for each section checked
+    # a key the record does not know is "checked" by refusing it, in the same look-up
     checks = {key: (field, fields[field][0]) for key, field in in_file.items()}
-    required = {key for key, field in in_file.items() if fields[field][1] is REQUIRED}
+    unknown = ("", pydantic_decides)
+    required = tuple(key for key, field in in_file.items() if fields[field][1] is REQUIRED)
     made = [(key, field, fields[field][1]) for key, field in in_file.items()
             if fields[field][1] is not REQUIRED and callable(fields[field][1])]
     template = {field: default for field, (_, default) in fields.items()}
     new = object.__new__
 
     def check(x: Any) -> Record:
-        if type(x) is not dict or not x.keys() <= known or not required <= x.keys():
+        if type(x) is not dict:
             raise Refused
+        for key in required:
+            if key not in x:
+                raise Refused
         out = template.copy()
         for key, value in x.items():
-            field, check_field = checks[key]
+            field, check_field = checks.get(key, unknown)
             out[field] = check_field(value)
-        for key, field, factory in made:
-            if key not in x:
-                out[field] = factory()
+        if made:
+            for key, field, factory in made:
+                if key not in x:
+                    out[field] = factory()
         section: Record = new(cls)      # (what `Record(**out)` makes, without copying `out`)
         section.__dict__ = out
         return section

@@ -22,7 +22,8 @@ import numpy as np
 
 from ..engine.instant import Instant
 from ..errors import KinematikaError
-from ..joints import Holonomic, JointGeometry
+from ..joints import JointGeometry
+from ..joints.holonomic import Holonomic
 
 ITERATIONS = 8
 TOLERANCE = 1e-12          # a correction this small (dimensionless) is the conditions met

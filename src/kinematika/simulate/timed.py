@@ -19,7 +19,8 @@ from typing import Any, Callable, Iterator
 from ..algebra.backend import Numeric
 from ..errors import KinematikaError, Names, Num, Said
 from ..expressions import Expr, ExpressionError, evaluate, parse
-from ..model.model import Model, Parameter
+from ..model.model import Model
+from ..model.parameter import Parameter
 from ..model.overrides import numeric_parameters
 
 TIME = "t"

@@ -1,0 +1,16 @@
+"""A material point (``point@body``), in a module of its own so that a question
+(`model.question`) names it without importing the whole model."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class PointRef:
+    """A material point: the point `point` of body `body` (written ``point@body``)."""
+
+    point: str
+    body: str
+
+    def __str__(self) -> str:
+        return f"{self.point}@{self.body}"
