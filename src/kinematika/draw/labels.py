@@ -522,6 +522,16 @@ def _arrow_segments(obstacles: list, transform: Any, low: float = 3.0, high: flo
     return np.concatenate(segs) if segs else np.zeros((0, 2, 2))
 
 
+def _near_box(segs: np.ndarray, points: np.ndarray, pad: float) -> np.ndarray:
+    """The segments (M, 2, 2) whose bounding box, grown by `pad`, meets the bounding box of
+    `points` (the leaders' ends): a segment a leader crosses, or that runs within `pad` of
+    it, is among them, so `_arrows_crossed` counts the same over these alone, without the
+    distances to every outline of the figure (most of a figure's label placement)."""
+    lo, hi = points.min(axis=0) - pad, points.max(axis=0) + pad
+    keep = np.all((segs.max(axis=1) >= lo) & (segs.min(axis=1) <= hi), axis=1)
+    return segs[keep]
+
+
 def _arrows_crossed(starts: np.ndarray, ends: np.ndarray, segs: np.ndarray, pad: float) -> np.ndarray:
     """For each leader starts[k]→ends[k], how many of the segments `segs` it crosses or runs
     within `pad` of (through the pole, where arrows start, too); a segment the leader starts
@@ -530,6 +540,9 @@ def _arrows_crossed(starts: np.ndarray, ends: np.ndarray, segs: np.ndarray, pad:
     over, misses a crossing between two samples: 001's a_FB^n, 35 pt long at the pole o,
     kept its leader across a_FA^n (issue 30, nineteenth round (d))."""
     if not len(segs) or not len(starts):
+        return np.zeros(len(starts))
+    segs = _near_box(segs, np.concatenate([starts, ends]), pad)
+    if not len(segs):
         return np.zeros(len(starts))
     a, b = segs[:, 0][None], segs[:, 1][None]                     # (1, M, 2)
     p, q = starts[:, None, :], ends[:, None, :]                    # (K, 1, 2)
