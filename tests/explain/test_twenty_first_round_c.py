@@ -1,0 +1,71 @@
+"""Issue 30, twenty-first round (c): the figures' geometry.
+
+- A line that places an instant centre (an Aronhold–Kennedy line through a third body's two
+  centres, alone or with a joint's normal) is drawn on to that centre: C5-1.2's line through
+  I_OQ, O and K1, "the perpendicular to v_O through O", stopped past K1, short of I_OJ.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from kinematika.draw.build import build_scene
+from kinematika.draw.options import DrawOptions
+from kinematika.explain.document import Drawing
+from kinematika.questions.centres import all_centres
+from tests.explain.helpers import SEEDS, explained, over
+
+
+def _figures(doc, key):
+    return [b for b in doc.blocks() if isinstance(b, Drawing) and b.caption.key == key]
+
+
+def _cross(u, v) -> float:
+    return float(u[0]) * float(v[1]) - float(u[1]) * float(v[0])
+
+
+def _reaches(scene, p, q, centre, tol) -> bool:
+    """Whether a drawn line runs through p and q (the two points that give it) and its
+    anchors (what it is drawn over, plus a margin) reach `centre`."""
+    for k in scene.kennedy + scene.normals:
+        d = np.asarray(k.direction, float) / np.linalg.norm(k.direction)
+        o = np.asarray(k.through, float)
+        if all(abs(_cross(d, np.asarray(x, float) - o)) < tol for x in (p, q, centre)):
+            ts = [float((np.asarray(a, float) - o) @ d) for a in k.anchors]
+            t = float((centre - o) @ d)
+            if ts and min(ts) - tol <= t <= max(ts) + tol:
+                return True
+    return False
+
+
+def _num(sol, point) -> np.ndarray:
+    """A point's numbers at the instant drawn (a symbolic model's at its drawing values)."""
+    return np.asarray(sol.inst.numvec(point), float)[:2]
+
+
+@over(name=SEEDS)
+def test_a_line_that_places_a_centre_reaches_it(name):
+    """Each centre of a centres figure the structure places where a Kennedy line (third body
+    k: the line through I_ak and I_kb, both finite) meets another line (a joint's normal) has a drawn line through those
+    two points whose drawn part reaches the centre: the points are the solver's, the line is
+    checked by cross products (collinear to 1e-9 of the figure's size)."""
+    sol, doc = explained(name)
+    by_pair = {frozenset(c.pair): c for c in all_centres(sol)}
+    for fig in _figures(doc, "fig.centres"):
+        scene = build_scene(sol.inst, sol, DrawOptions(**fig.options))
+        pairs = {frozenset(p) for p in fig.options.get("centre_pairs") or []}
+        for key in pairs:
+            c = by_pair.get(key)
+            if c is None or c.how != "lines" or c.value.get("point") is None:
+                continue
+            a, b = c.pair
+            thirds = [n for kind, n in c.lines if kind == "third"]
+            centre = _num(sol, c.value["point"])
+            for k in thirds:
+                ends = [by_pair[frozenset(x)].value.get("point") for x in ((a, k), (k, b))]
+                if any(e is None for e in ends):
+                    continue
+                p, q = (_num(sol, e) for e in ends)
+                if np.linalg.norm(p - q) < 1e-9:
+                    continue
+                assert _reaches(scene, p, q, centre, 1e-9 * max(1.0, float(np.abs(centre).max()))), \
+                    f"I({a},{b}) on the line through I({a},{k}) and I({k},{b}): not drawn to it"
