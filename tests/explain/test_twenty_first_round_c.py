@@ -3,16 +3,21 @@
 - A line that places an instant centre (an Aronhold–Kennedy line through a third body's two
   centres, alone or with a joint's normal) is drawn on to that centre: C5-1.2's line through
   I_OQ, O and K1, "the perpendicular to v_O through O", stopped past K1, short of I_OJ.
+- A rod sliding through a sleeve of a moving body has the sleeve drawn at the guiding body's
+  point on the rod's line (C5-1.3: at the support's centre S, not at the bar's end E).
 """
 from __future__ import annotations
 
 import numpy as np
 
+import kinematika
 from kinematika.draw.build import build_scene
+from kinematika.draw.geometry import Box
+from kinematika.draw.joints import scene_symbols
 from kinematika.draw.options import DrawOptions
 from kinematika.explain.document import Drawing
 from kinematika.questions.centres import all_centres
-from tests.explain.helpers import SEEDS, explained, over
+from tests.explain.helpers import EXAMPLES, SEEDS, explained, over
 
 
 def _figures(doc, key):
@@ -69,3 +74,31 @@ def test_a_line_that_places_a_centre_reaches_it(name):
                     continue
                 assert _reaches(scene, p, q, centre, 1e-9 * max(1.0, float(np.abs(centre).max()))), \
                     f"I({a},{b}) on the line through I({a},{k}) and I({k},{b}): not drawn to it"
+
+
+def _block(name: str, joint: str):
+    sol = kinematika.solve(EXAMPLES / f"{name}.yaml")
+    scene = build_scene(sol.inst, sol, DrawOptions())
+    view = Box(*scene.box).grow(0.6 * scene.size)
+    block = next(m for m in scene_symbols(scene, view) if m.gid == f"joint:{joint}" and m.kind == "polygon")
+    return np.asarray(block.points, float).mean(axis=0), block
+
+
+def test_the_sleeve_is_drawn_at_the_supports_centre():
+    """C5-1.3: the bar (Q = (1, 2), E = (5.5, 0.5)) slides through the support's sleeve at
+    its centre S = (4, 1), on QE: (S − Q) = (3, −1) ∥ (E − Q) = (4.5, −1.5). The block's
+    four corners average to S (not E), and it is the support's (its fill, and it moves with
+    the support)."""
+    centre, block = _block("seed_c5_1_3_bar_in_sleeve", "j3")
+    assert np.allclose(centre, (4.0, 1.0), atol=1e-9)
+    assert block.fill == "body:support" and block.moves_with == "support"
+
+
+def test_a_block_on_a_moving_guide_stays_at_its_point():
+    """001's P pair: the block N (its one point B) on the guide M keeps its place at B —
+    the sleeve rule takes a rod (two points along the guide) only."""
+    sol = kinematika.solve(EXAMPLES / "seed_001_p_pair_coriolis.yaml")
+    b = np.asarray(sol.inst.numvec(sol.inst.points["B"]), float)[:2]
+    centre, block = _block("seed_001_p_pair_coriolis", "j2")
+    assert np.allclose(centre, b, atol=1e-9)
+    assert block.fill == "body:N"
