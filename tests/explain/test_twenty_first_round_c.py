@@ -102,3 +102,46 @@ def test_a_block_on_a_moving_guide_stays_at_its_point():
     centre, block = _block("seed_001_p_pair_coriolis", "j2")
     assert np.allclose(centre, b, atol=1e-9)
     assert block.fill == "body:N"
+
+
+def test_every_circle_of_a_stepped_wheel_is_drawn_and_listed():
+    """C5-E.1: the wheels are solidary circles of radii R and 2R about C = (0, 2R) (the
+    Data: "the large one's is 2R"); at R = 0.1 the figure's wheels carry two circles centred
+    at (0, 0.2), radii 0.1 and 0.2, the point O on the larger's rim (|OC| = 2R); the shapes
+    table lists both, and the rolling contact stays the R wheel's J = (0, 3R) = 1.5·C."""
+    from tests.explain.helpers import rendered
+
+    sol = kinematika.solve(EXAMPLES / "seed_c5_e1_cavity.yaml")
+    scene = build_scene(sol.inst, sol, DrawOptions())
+    circles = sorted((s for s in scene.bodies["wheels"].shapes if s.kind == "circle"), key=lambda s: s.radius)
+    assert [round(float(s.radius), 12) for s in circles] == [0.1, 0.2]
+    assert all(np.allclose(s.centre(), (0.0, 0.2), atol=1e-12) for s in circles)
+    table = [line for line in rendered("seed_c5_e1_cavity", "ca").splitlines()
+             if line.startswith("| *rodes* | circumferència")]
+    assert table == ["| *rodes* | circumferència | centre C, radi R |",
+                     "| *rodes* | circumferència | centre C, radi 2·R |"]
+    j = np.asarray(sol.inst.numvec(sol.geometry("j3").contact.point), float)[:2]
+    c = np.asarray(sol.inst.numvec(sol.inst.points["C"]), float)[:2]
+    assert np.allclose(j, 1.5 * c, rtol=1e-12, atol=1e-12)          # J = (0, 3R), C = (0, 2R)
+
+
+def test_a_body_takes_a_list_of_circles(tmp_path):
+    """`circle: [{…}, {…}]` gives the body both circles, in order; rolling takes the pair
+    that touches: a wheel of radii 1 and 2 about C = (0, 1) on the ground line y = 0 touches
+    with its radius-1 circle at (0, 0), and v_C = (−ω·1, 0) = (−2, 0) for ω = 2."""
+    text = """
+points: {O: [0, 0], C: [0, 1]}
+bodies:
+  ground: {points: [O], line: {through: O, direction: [1, 0]}}
+  wheel: {points: [C], circle: [{center: C, radius: 1}, {center: C, radius: 2}]}
+joints:
+  - {type: rolling, bodies: [ground, wheel]}
+drivers:
+  - {omega: wheel, value: 2}
+"""
+    path = tmp_path / "stepped.yaml"
+    path.write_text(text)
+    sol = kinematika.solve(path)
+    radii = [float(s.radius) for s in sol.inst.shapes["wheel"]]
+    assert radii == [1.0, 2.0]
+    assert np.allclose(np.asarray(sol.inst.numvec(sol.velocity("C")), float)[:2], (-2.0, 0.0), atol=1e-12)
