@@ -17,7 +17,7 @@ from kinematika.draw.joints import scene_symbols
 from kinematika.draw.options import DrawOptions
 from kinematika.explain.document import Drawing
 from kinematika.questions.centres import all_centres
-from tests.explain.helpers import EXAMPLES, SEEDS, explained, over
+from tests.explain.helpers import EXAMPLES, NOTES_SEEDS, SEEDS, explained, over, recorded_pages
 
 
 def _figures(doc, key):
@@ -145,3 +145,33 @@ drivers:
     radii = [float(s.radius) for s in sol.inst.shapes["wheel"]]
     assert radii == [1.0, 2.0]
     assert np.allclose(np.asarray(sol.inst.numvec(sol.velocity("C")), float)[:2], (-2.0, 0.0), atol=1e-12)
+
+
+def _through(box, a, b, inset=0.5) -> bool:
+    """Whether the segment ab passes through `box` (x0, y0, x1, y1) shrunk by `inset`: sampled
+    every 0.05 figure units (a check apart from the layout's exact clipping)."""
+    x0, y0, x1, y1 = box[0] + inset, box[1] + inset, box[2] - inset, box[3] - inset
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    n = max(2, int(np.linalg.norm(b - a) / 0.05) + 1)
+    pts = a + np.linspace(0, 1, n)[:, None] * (b - a)
+    return bool(np.any((pts[:, 0] > x0) & (pts[:, 0] < x1) & (pts[:, 1] > y0) & (pts[:, 1] < y1)))
+
+
+@over(name=NOTES_SEEDS)
+def test_a_polygon_label_sits_on_no_other_arrow(name):
+    """In every velocity and acceleration polygon of the seeds' pages (en, ca), an arrow's
+    label box (its text) lies on no other arrow: 001's rolling pair (ca) set a_AB^n over the
+    blue a_F∈N at the pole."""
+    pages = recorded_pages("polygons")
+    for lang in ("en", "ca"):
+        for lay, items, placed in pages[(name, lang)]:
+            arrows = [(lay.at(a.start), lay.at(a.end)) for a in lay.fig.arrows]
+            along_of = {id(item[0]): item[5] for item in items}
+            for spot in placed:
+                text, along = spot.text, along_of[id(spot.text)]
+                if along is None:
+                    continue
+                own = (lay.at(along[0]), lay.at(along[1]))
+                under = [ab for ab in arrows if not (np.allclose(ab[0], own[0]) and np.allclose(ab[1], own[1]))
+                         and _through(spot.box, *ab)]
+                assert not under, (lang, text.markup, under)
