@@ -47,7 +47,7 @@ POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its 
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
-ARROW_CROSS = 90.0       # a polygon label's leader across an arrow (exactly, not sampled): worse than across a label
+ARROW_CROSS = 450.0      # a polygon label's leader across an arrow (exactly, not sampled): worse than a box over an arrow
 ARROW_UNDER = 400.0      # a polygon label's box over another arrow (exactly): as bad as over a label
 BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
 TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
