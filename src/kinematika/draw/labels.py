@@ -48,7 +48,8 @@ POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its 
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
-ARROW_CROSS = 90.0       # a polygon label's leader across an arrow (exactly, not sampled): worse than across a label
+ARROW_CROSS = 450.0      # a polygon label's leader across an arrow (exactly, not sampled): worse than a box over an arrow
+ARROW_UNDER = 400.0      # a polygon label's box over another arrow (exactly): as bad as over a label
 BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
 AREA = 400.0            # a body's name or a vector's value over another body's area, × the box's part covered
 AREA_GRID = (8, 4)      # points across and up a label's box tested for lying in a body's area
@@ -299,7 +300,30 @@ class Layout:
         if label.prefer is not None and np.linalg.norm(label.prefer) > 0:
             p = label.prefer / np.linalg.norm(label.prefer)
             cost += PREFER * (1 - dirs @ p)
+        if label.along is not None:
+            cost += ARROW_UNDER * self._over_arrows(label, boxes)
         return cost
+
+    def _over_arrows(self, label: Label, boxes: np.ndarray) -> np.ndarray:
+        """For each box of a polygon arrow's label, how many segments of the other arrows run
+        through it (its text box, without `PAD`), counted exactly (`_segments_in_boxes`): a
+        label on another arrow reads as that arrow's (001's a_AB^n on the blue a_F∈N, issue
+        30, twenty-first round (c)). Its own arrow — the segments along `Label.along` — is
+        not counted."""
+        if not len(self.arrows):
+            return np.zeros(len(boxes))
+        a, b = self.ax.transData.transform(np.asarray(label.along, dtype=float))
+        u = b - a
+        n = float(np.linalg.norm(u))
+        segs = self.arrows
+        if n > 1e-9:
+            def off(x):                                    # distance from x to the own arrow's segment
+                t = np.clip(((x - a) @ u) / (n * n), 0, 1)
+                return np.linalg.norm(a + t[:, None] * u - x, axis=1)
+            own = (off(segs[:, 0]) <= self.px) & (off(segs[:, 1]) <= self.px)
+            segs = segs[~own]
+        inner = boxes + np.array([1, 1, -1, -1]) * PAD * self.px
+        return _segments_in_boxes(segs, inner)
 
     def _apart(self, i: int, anchors: np.ndarray, cand: tuple) -> np.ndarray:
         """What a point's label costs for leaning towards another labelled point closer than
@@ -498,6 +522,25 @@ def _segments_hit(start: np.ndarray, ends: np.ndarray, boxes: np.ndarray) -> np.
     x, y = pts[..., 0][..., None], pts[..., 1][..., None]
     inside = ((x > boxes[:, 0]) & (x < boxes[:, 2]) & (y > boxes[:, 1]) & (y < boxes[:, 3]))
     return inside.any(axis=1).sum(axis=1).astype(float)
+
+
+def _segments_in_boxes(segs: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """For each box (K, 4: x0, y0, x1, y1), how many of the segments (M, 2, 2) pass through
+    it: the segment p + t (q − p), 0 ≤ t ≤ 1, clipped to the box by its slabs (Liang–Barsky)
+    keeps a part of positive length."""
+    if not len(segs) or not len(boxes):
+        return np.zeros(len(boxes))
+    p, d = segs[:, 0][None], (segs[:, 1] - segs[:, 0])[None]         # (1, M, 2)
+    lo, hi = boxes[:, None, :2], boxes[:, None, 2:]                  # (K, 1, 2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t1, t2 = (lo - p) / d, (hi - p) / d
+    flat = np.abs(d) < 1e-12                                         # parallel to a slab: inside it or never
+    inside = (p >= lo) & (p <= hi)
+    t_in = np.where(flat, np.where(inside, -np.inf, np.inf), np.minimum(t1, t2))
+    t_out = np.where(flat, np.where(inside, np.inf, -np.inf), np.maximum(t1, t2))
+    enter = np.maximum(t_in.max(axis=-1), 0.0)
+    leave = np.minimum(t_out.min(axis=-1), 1.0)
+    return (leave - enter > 1e-9).sum(axis=1).astype(float)
 
 
 def _crossing(p: np.ndarray, qs: np.ndarray, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:

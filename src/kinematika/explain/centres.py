@@ -124,7 +124,9 @@ def construction(ctx: Ctx, made: dict, chosen: list) -> list[tuple[tuple, tuple]
     """The lines each written centre is said to lie on, as (pair, a point of the line) for the
     centres' figure to draw from the point on to the centre (`DrawOptions.construction`): by
     Aronhold–Kennedy, through the two centres of each third body (the point W the notes name,
-    "the perpendicular to v_W through W"); from velocities, through each witness point,
+    "the perpendicular to v_W through W"), the same for a centre where such a line meets a
+    joint's normal (C5-1.2's I_OJ on the line through I_OQ and O, which stopped past K1; the
+    normal is drawn on to its centre by `draw.results._normals`); from velocities, through each witness point,
     perpendicular to its velocity. A sentence that says "these lines meet" there, over a
     figure with the lines stopping short of the ring, left the reader to draw them (issue 30,
     nineteenth round (d): C5-1.1's strands' lines and I_pulley)."""
@@ -133,7 +135,7 @@ def construction(ctx: Ctx, made: dict, chosen: list) -> list[tuple[tuple, tuple]
         note = made.get(key)
         if note is None or note.value.get("point") is None:
             continue
-        if note.how == "kennedy":
+        if note.how in ("kennedy", "lines"):
             out += [(note.pair, tuple(c["point"])) for line in note.lines for c in line
                     if c.get("point") is not None]
         elif note.how == "velocities" and len(note.witnesses) >= 2:
@@ -190,6 +192,9 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
             _kennedy(ctx, note, found, order[:order.index(c)])
         elif c.how == "lines":
             note.via = [_line_reason(ctx, c, kind, name, found) for kind, name in c.lines]
+            note.lines = [(_clean(ctx, found[frozenset((c.pair[0], name))].value),
+                           _clean(ctx, found[frozenset((name, c.pair[1]))].value))
+                          for kind, name in c.lines if kind == "third"]     # drawn on to the centre
             deps[key] = [frozenset(p) for (kind, name), why in zip(c.lines, note.via) if kind == "third"
                          for p in ((c.pair[0], name), (name, c.pair[1]))
                          if ctx.frame in p or why.key == "centre.line.kennedy"]

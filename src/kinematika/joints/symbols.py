@@ -179,16 +179,42 @@ def hatched_edge(p: Vec, q: Vec, side: Vec, ctx: DrawContext, gid: str) -> list[
 def block_on_guide(view: JointView, ctx: DrawContext) -> list[Mark]:
     """A block (second body) on its guide (first body); a fixed guide is hatched."""
     along = view.along if view.along is not None else (unit(view.axis) if view.axis is not None else None)
-    centre = slider_centre(view, ctx)
+    sleeve = None if along is None or view.at is not None else sleeve_at(view, along, ctx)
+    centre = sleeve if sleeve is not None else slider_centre(view, ctx)
     if along is None or centre is None:
         return []
     length, height = (f * ctx.size for f in BLOCK)
-    out = guide(view.a, centre, along, height, ctx)
+    out = [] if sleeve is not None else guide(view.a, centre, along, height, ctx)
     block = rectangle(centre, along, length, height)
-    fill = f"body:{view.b}" if view.b != ctx.frame else "ground"
+    owner = view.a if sleeve is not None else view.b          # a sleeve is the guiding body's
+    fill = f"body:{owner}" if owner != ctx.frame else "ground"
     out.append(Mark("polygon", block, "ink", fill, 1.3, zorder=4, gid=f"joint:{view.id}",
-                    moves_with=mover(view, ctx) if view.b != ctx.frame else None))
+                    moves_with=(view.a if sleeve is not None else mover(view, ctx)) if owner != ctx.frame else None))
     return out
+
+
+def sleeve_at(view: JointView, along: Vec, ctx: DrawContext) -> Optional[Vec]:
+    """Where a rod slides through a sleeve of the guiding body: when the sliding body's
+    points lie on one line along the guide (it is the rod) and the guiding body, not the
+    frame, has a point of its own on that line, the sleeve is there — the point the model
+    gives it (C5-1.3: "the sleeve at its centre S" of the support, the bar along QS; the
+    block was drawn at the bar's far end E). None otherwise: a block carried by its own point
+    on a guide (001's N on M) keeps `slider_centre`."""
+    if view.a == ctx.frame:
+        return None
+    rod = [np.asarray(p, dtype=float) for p in ctx.points(view.b)]
+    u = unit(np.asarray(along, dtype=float))
+    tol = 1e-9 * ctx.size
+
+    def on(p: Vec) -> bool:
+        d = p - rod[0]
+        return abs(float(d[0] * u[1] - d[1] * u[0])) <= tol
+
+    if len(rod) < 2 or not all(on(p) for p in rod[1:]):
+        return None
+    own = [np.asarray(p, dtype=float) for p in ctx.points(view.a)]
+    found = [p for p in own if on(p) and not any(np.linalg.norm(p - q) <= tol for q in rod)]
+    return found[0] if found else None
 
 
 def slider_centre(view: JointView, ctx: DrawContext) -> Optional[Vec]:

@@ -264,9 +264,11 @@ class _Builder:
             return shapes
         from .body_shapes import CamShape, Circle, CurveShape, Disc, Line, Plane    # (start-up)
 
-        if raw.circle:
-            center, cp = self.location(raw.circle.center, f"{where}.circle.center")
-            shapes.append(Circle(center, self.expr(raw.circle.radius, f"{where}.circle.radius"), cp))
+        circles = raw.circle if isinstance(raw.circle, list) else [raw.circle] if raw.circle else []
+        for i, circle in enumerate(circles):        # several: solidary wheels (C5-E.1's R and 2R)
+            at = f"{where}.circle[{i}]" if isinstance(raw.circle, list) else f"{where}.circle"
+            center, cp = self.location(circle.center, f"{at}.center")
+            shapes.append(Circle(center, self.expr(circle.radius, f"{at}.radius"), cp))
         if raw.line:
             through, tp = self.location(raw.line.through, f"{where}.line.through")
             shapes.append(Line(through, self.direction(raw.line.direction,

@@ -219,7 +219,7 @@ class BodySpec(Strict):
     plane, curve, cam), and a description; a bare list of points is the short form."""
 
     points: list[str] = Field(default_factory=list)
-    circle: Optional[CircleSpec] = None
+    circle: Optional[Union[CircleSpec, list[CircleSpec]]] = None    # a list: a stepped wheel's circles
     line: Optional[LineSpec] = None
     disc: Optional[DiscSpec] = None
     plane: Optional[PlaneSpec] = None

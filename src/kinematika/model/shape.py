@@ -76,7 +76,7 @@ CurveSpec, curve_spec = record('CurveSpec', {
 })
 BodySpec, body_spec = record('BodySpec', {
     'points': (listed(exact(str)), list),
-    'circle': (optional(circle_spec), None),
+    'circle': (optional(either(circle_spec, listed(circle_spec))), None),
     'line': (optional(line_spec), None),
     'disc': (optional(disc_spec), None),
     'plane': (optional(plane_spec), None),

@@ -124,6 +124,7 @@ def sketch(text: str, fmt: str) -> dict[str, Any]:
     for name in tree.root.get("bodies") or {}:
         body = tree.root["bodies"][name]
         circle = body.get("circle") if isinstance(body, dict) else None
+        circle = (circle[0] if circle else None) if isinstance(circle, list) else circle    # the first of several
         bodies[str(name)] = {"points": tree.body_points(str(name)), "frame": str(name) == tree.frame,
                              "circle": {"center": str(circle["center"]),
                                         "radius": values.number(circle["radius"])} if circle else None}
