@@ -111,5 +111,6 @@ def test_the_notes_marks_are_kept_where_a_point_is_m_or_d(name, lang):
     """Pages naming a point M or D wrote "mag/dir": they keep M and D, and say once in the
     legend that under a term these are marks, not points."""
     md = rendered(name, lang)
-    assert re.search(r"\bM: \w+ \w+[,;] D: \w+ \w+ \(", md)
+    if name != "seed_001_p_pair_coriolis":      # its M is a guide (a body), no point: the plain legend (21st round (a))
+        assert re.search(r"\bM: \w+ \w+[,;] D: \w+ \w+ \(", md)
     assert not re.search(r"(?m)^\s*(?:mag|mòd|mód|mod|dir|norab)(?:\s|$)", md)

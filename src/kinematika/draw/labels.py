@@ -48,6 +48,7 @@ POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its 
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
+LEADER_OVER = 450.0      # a leader across another label's box: a fault (`label_faults`), worse than a name on another body (`AREA`)
 ARROW_CROSS = 450.0      # a polygon label's leader across an arrow (exactly, not sampled): worse than a box over an arrow
 ARROW_UNDER = 400.0      # a polygon label's box over another arrow (exactly): as bad as over a label
 BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
@@ -417,7 +418,7 @@ class Layout:
         far = dist >= LEADER
         if far.any():
             centres = (boxes[far, :2] + boxes[far, 2:]) / 2
-            cost[far] += LEADER_CROSS * _segments_hit(at[far], centres, placed)
+            cost[far] += LEADER_OVER * _segments_hit(at[far], centres, placed)
         # placed labels' leaders across me, and my leader across theirs
         lead = [j for j in others if cands[j][1][choice[j]] >= LEADER]
         if lead:
@@ -426,7 +427,7 @@ class Layout:
                              for j in lead])
             t = np.linspace(0.1, 0.9, 9)[None, :, None]
             pts = (starts[:, None, :] + t * (ends - starts)[:, None, :]).reshape(-1, 2)
-            cost += LEADER_CROSS * _covered(boxes, pts, np.ones(len(pts)), 0.0) / 3
+            cost += LEADER_OVER * _covered(boxes, pts, np.ones(len(pts)), 0.0) / 3
             if far.any():
                 mine = (boxes[far, :2] + boxes[far, 2:]) / 2
                 cost[far] += LEADER_CROSS * _crossing(at[far][:, None, :], mine, starts, ends)
