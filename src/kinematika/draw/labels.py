@@ -48,7 +48,7 @@ POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its 
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
-LEADER_OVER = 450.0      # a leader across another label's box: a fault (`label_faults`), worse than a name on another body (`AREA`)
+LEADER_OVER = 450.0      # a leader across another label's box, for labels not on an arrow (`Label.along`): worse than a name on another body (`AREA`)
 ARROW_CROSS = 450.0      # a polygon label's leader across an arrow (exactly, not sampled): worse than a box over an arrow
 ARROW_UNDER = 400.0      # a polygon label's box over another arrow (exactly): as bad as over a label
 BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
@@ -411,6 +411,9 @@ class Layout:
         if not others:
             return np.zeros(len(boxes))
         placed = np.array([cands[j][0][choice[j]] for j in others])
+        # a leader over a label: a mechanism figure's names and values weigh it above lying
+        # on another body (`AREA`); a polygon's labels keep `LEADER_CROSS` against `ARROW_CROSS`
+        over = LEADER_CROSS if self.labels[i].along is not None else LEADER_OVER
         area = (boxes[0, 2] - boxes[0, 0]) * (boxes[0, 3] - boxes[0, 1])
         ov = _overlaps(boxes, placed + np.array([-1, -1, 1, 1]) * GAP * self.px)
         cost = OVERLAP * (ov > 0).sum(axis=1) + OVERLAP_AREA * ov.sum(axis=1) / area
@@ -418,7 +421,7 @@ class Layout:
         far = dist >= LEADER
         if far.any():
             centres = (boxes[far, :2] + boxes[far, 2:]) / 2
-            cost[far] += LEADER_OVER * _segments_hit(at[far], centres, placed)
+            cost[far] += over * _segments_hit(at[far], centres, placed)
         # placed labels' leaders across me, and my leader across theirs
         lead = [j for j in others if cands[j][1][choice[j]] >= LEADER]
         if lead:
@@ -427,7 +430,7 @@ class Layout:
                              for j in lead])
             t = np.linspace(0.1, 0.9, 9)[None, :, None]
             pts = (starts[:, None, :] + t * (ends - starts)[:, None, :]).reshape(-1, 2)
-            cost += LEADER_OVER * _covered(boxes, pts, np.ones(len(pts)), 0.0) / 3
+            cost += over * _covered(boxes, pts, np.ones(len(pts)), 0.0) / 3
             if far.any():
                 mine = (boxes[far, :2] + boxes[far, 2:]) / 2
                 cost[far] += LEADER_CROSS * _crossing(at[far][:, None, :], mine, starts, ends)
