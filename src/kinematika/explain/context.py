@@ -182,13 +182,17 @@ class Ctx:
         point where `body` is pinned to a body that does not move (C5-E.1's bar OC about O,
         whose wheels also carry a point at O): the fixed pivot is written bare, as the notes
         write v_C = v_O + ω × OC, and the other bodies' points there keep their body
-        (O∈wheels)."""
+        (O∈wheels). Bodies pinned (or welded) together at the point share one label, the
+        first of them (`motion_key`): one velocity, one symbol on the page (twenty-first round
+        (e): 001's Step 2 wrote v_{B∈rocker} where the question and the caption say v_{B∈N},
+        the block N pinned to the rocker at B; the slides write one v_B for both)."""
         if point in self.inst.points and body in self.model.carriers(point) and (
                 self.shared(point) or self.pivot(point, body)):
             return point
         if point in self.centre_points:              # an instant centre: the point of its body there
             return point
-        return f"{point}∈{body}"
+        return self.motion_key(point, body)
+
 
     def pivot(self, point: str, body: str) -> bool:
         """Whether `body` is pinned (or welded) at `point` to a body that does not move,

@@ -170,6 +170,7 @@ fig-at_pole = { $count ->
    *[other] { $images } són al pol o, ja que { $zero }.
 }
 fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
+fig-o_prime_named = o′, la imatge d’O,
 fig-primed = La imatge del punt { $point } és { $image } ({ $symbol }: { $what }).
 fig-a_symbol = una dada
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
@@ -499,7 +500,7 @@ centre-at = a { $point }.
 centre-infinity = { $body } es trasllada respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }: tots els seus punts tenen la velocitat { $v }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }, { $direction }.
+    }: tots els seus punts tenen la velocitat { $v }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }.
 centre-infinity_one = { $body } es trasllada respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }

@@ -134,6 +134,7 @@ fig-at_pole = { $count ->
    *[other] { $images } are at the pole o, since { $zero }.
 }
 fig-o_prime = The image of the point O is o′, since o is the pole.
+fig-o_prime_named = o′, the image of O,
 fig-primed = The image of the point { $point } is { $image } ({ $symbol } is the { $what }).
 fig-a_symbol = symbol of a datum
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
@@ -382,7 +383,7 @@ centre-omega = with the velocities found in “{ sec-velocities }”, the angula
        *[one] is
     } zero: the relative motion is a translation and the centre is
 centre-at = at { $point }.
-centre-infinity = { $body } translates relative to { $frame }: every point has the velocity { $v }; its instant centre is at infinity, perpendicular to { $v }, in the direction { $direction }.
+centre-infinity = { $body } translates relative to { $frame }: every point has the velocity { $v }; its instant centre is at infinity, perpendicular to { $v }.
 centre-infinity_one = { $body } translates relative to { $frame }: every point has one velocity; its instant centre is at infinity, perpendicular to that velocity, in the direction { $direction }.
 centre-rest = there is no relative motion.
 sec-rates = Angular velocities and accelerations
@@ -694,7 +695,7 @@ sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
 geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
 geom-bar_told = { $geom }, the geometric contact point, stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
-geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
+geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, perpendicular to the line, and turns with it:
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out in “{ sec-accelerations }” for the acceleration of the contact.
 contact-written_centre = { $sym } = { $value }, found in Step { $step }: { $point } is the instant centre of { $body }.

@@ -140,6 +140,7 @@ fig-at_pole = { $count ->
    *[other] { $images } están en el polo o, ya que { $zero }.
 }
 fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
+fig-o_prime_named = o′, la imagen de O,
 fig-primed = La imagen del punto { $point } es { $image } ({ $symbol }: { $what }).
 fig-a_symbol = un dato
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
@@ -354,7 +355,7 @@ centre-lines = está en { $first } y en { $second }; estas rectas { $far ->
     }
 centre-omega = con las velocidades halladas en «{ sec-velocities }», la velocidad angular respecto de { $frame } es nula: el movimiento relativo es una traslación y el CIR está
 centre-at = en { $point }.
-centre-infinity = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la velocidad { $v }; su CIR está en el infinito, en la dirección perpendicular a { $v }, { $direction }.
+centre-infinity = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la velocidad { $v }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
 centre-infinity_one = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la misma velocidad; su CIR está en el infinito, en la dirección perpendicular a esa velocidad, { $direction }.
 centre-rest = no hay movimiento relativo.
 sec-rates = Velocidades y aceleraciones angulares

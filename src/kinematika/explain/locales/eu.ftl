@@ -134,6 +134,7 @@ fig-at_pole = { $count ->
    *[other] { $images } o poloan daude, { $zero } baita.
 }
 fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
+fig-o_prime_named = o′, O-ren irudia,
 fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
 fig-a_symbol = datu baten ikurra
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
@@ -295,7 +296,7 @@ centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek 
     }
 centre-omega = «{ sec-velocities }» atalean aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta zentroa
 centre-at = { $point } puntuan.
-centre-infinity = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek { $v } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean, { $direction }.
+centre-infinity = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek { $v } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
 centre-infinity_one = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek abiadura bera dute; biraketa-zentro instantaneoa infinituan dago, abiadura horrekiko norabide perpendikularrean, { $direction }.
 centre-rest = ez dago mugimendu erlatiborik.
 sec-rates = Abiadura eta azelerazio angeluarrak
