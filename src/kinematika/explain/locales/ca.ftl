@@ -652,6 +652,7 @@ vehicle-equiprojective_along = Per la propietat d’equiprojectivitat ({ $q } i 
     }), les seves velocitats tenen la mateixa component segons { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, amb { $seg }/|{ $seg }| = { $unit }, de manera que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } és a l’eix de la roda { $joint }, de manera que { $vp } té la direcció del pla de la roda, la recta { $seg }: { $vp } = |{ $vp }| { $seg }/|{ $seg }|. Per tant, |{ $vp }| = { $speed }, i { $vp } = { $value }.
 vehicle-line-wheel_own = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix, que és també la perpendicular a { $sym } per { $witness }: la roda no llisca lateralment)
 vehicle-pin_shared = { $point } és el passador comú a { $a } i { $b }: { $sym } = { $other }.
+vehicle-pin_shared_one = { $point } és el passador comú a { $a } i { $b }: { $sym } és la velocitat de tots dos.
 vehicle-centre = El CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }

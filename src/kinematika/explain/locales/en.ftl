@@ -472,6 +472,7 @@ vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { 
 vehicle-equiprojective_along = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel's plane, the line { $seg }: { $vp } = |{ $vp }| { $seg }/|{ $seg }|. Hence |{ $vp }| = { $speed }, and { $vp } = { $value }.
 vehicle-line-wheel_own = the perpendicular at { $point } to the plane of wheel { $joint } (its axle, which is also the perpendicular to { $sym } through { $witness }: the wheel does not slip sideways)
 vehicle-pin_shared = { $point } is the pin common to { $a } and { $b }: { $sym } = { $other }.
+vehicle-pin_shared_one = { $point } is the pin common to { $a } and { $b }: { $sym } is the velocity of both.
 vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }, which has no velocity: { $rest } = 0. Every point of { $body } moves perpendicular to the line joining it to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel, so { COUNT($body) ->
         [many] they translate: every point moves as { $point }; their instant centre is at infinity
