@@ -180,16 +180,17 @@ def test_the_articulated_chassis_centre_names_the_axle_once(lang):
 
 # ---- 7. the pin common to the two bodies ----------------------------------------------------
 
-SHARED = {"en": "v_{F∈chassis} = v_{F∈fork}.", "es": "v_{F∈chasis} = v_{F∈horquilla}.",
-          "ca": "v_{F∈xassís} = v_{F∈forquilla}.", "eu": "v_{F∈txasisa} = v_{F∈furka}."}
+# one point of the two pinned bodies, one label: v_{F∈fork}, the given one (twenty-first round (e))
+SHARED = {"en": "v_{F∈fork} is the velocity of both.", "es": "v_{F∈horquilla} es la velocidad de ambos.",
+          "ca": "v_{F∈forquilla} és la velocitat de tots dos.", "eu": "v_{F∈furka} bien abiadura da."}
 
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_the_tricycles_pin_carries_the_given_velocity(lang):
-    """C5-2.1 gives v_{F∈fork} only; the chassis's equation starts from v_{F∈chassis}: F is
-    the pin common to the fork and the chassis, said before the equation that uses it."""
+    """C5-2.1 gives v_{F∈fork} only; the chassis's equation starts from that point, F, the pin
+    common to the fork and the chassis, said before the equation that uses it."""
     page = rendered("seed_c5_2_1_tricycle", lang, "md", drawings=False)
-    chassis = SHARED[lang].split(" = ")[0]
+    chassis = SHARED[lang].split(" ")[0]
     said = page.index(SHARED[lang])
     assert said < page.index(f"{chassis}  =")
 

@@ -76,8 +76,8 @@ def _images(doc, key: str) -> dict:
 
 
 def test_polygon_letters_sit_on_the_images_they_name():
-    """P pair (seed 001 §4.3): the block's own B (written B∈rocker, the point it shares with
-    the rocker) and the guide's point under it, B∈M (the drag velocity), each lettered at
+    """P pair (seed 001 §4.3): the block's own B (written B∈N, the point it shares with
+    the rocker, twenty-first round (e)) and the guide's point under it, B∈M (the drag velocity), each lettered at
     its own tip; the quick-return's slot point A∈rocker has its letter."""
     from kinematika.model.model import PointRef
 
@@ -85,7 +85,7 @@ def test_polygon_letters_sit_on_the_images_they_name():
     images = _images(doc, "fig.level_v")
     v_b = tuple(sol.inst.numvec(sol.velocity(PointRef("B", "N"))))
     v_guide = tuple(sol.inst.numvec(sol.velocity(PointRef("B", "M"))))
-    assert images["b∈rocker"] == pytest.approx(tuple(v_b))
+    assert images["b∈N"] == pytest.approx(tuple(v_b))
     assert images["b∈M"] == pytest.approx(tuple(v_guide))
     sol, doc = explained("quick_return")
     images = _images(doc, "fig.level_v")

@@ -116,8 +116,8 @@ def test_data_sentences_and_captions_read(lang):
     assert {"en": "at a distance a from O", "es": "a una distancia a de O", "ca": "a una distància a d’O",
             "eu": "O puntutik a distantziara"}[lang] in line, line
     page = rendered("seed_c5_e1_cavity", lang)
-    said = {"en": "The image of the point O is o′", "es": "La imagen del punto O es o′",
-            "ca": "La imatge del punt O és o′", "eu": "O puntuaren irudia o′ da"}[lang]
+    said = {"en": "o′, the image of O, is at the pole o", "es": "o′, la imagen de O, está en el polo o",
+            "ca": "o′, la imatge d’O, és al pol o", "eu": "o′, O-ren irudia, o poloan dago"}[lang]   # round 21e
     assert said in page
 
 

@@ -70,8 +70,9 @@ def test_the_composition_sum_names_the_point_as_its_step(name: str) -> None:
 
 
 def test_p_pair_sum_by_hand() -> None:
-    assert "So v_{B∈rocker} = v_{drag,B} + v_{B∈N rel M}" in plain_page("seed_001_p_pair_coriolis", "en")
-    assert "Así, v_{B∈balancín} = v_{arr,B} + v_{B∈N rel M}" in plain_page("seed_001_p_pair_coriolis", "es")
+    # the block N pinned to the rocker at B: one label, B∈N (twenty-first round (e))
+    assert "So v_{B∈N} = v_{drag,B} + v_{B∈N rel M}" in plain_page("seed_001_p_pair_coriolis", "en")
+    assert "Así, v_{B∈N} = v_{arr,B} + v_{B∈N rel M}" in plain_page("seed_001_p_pair_coriolis", "es")
 
 
 def _said_twice(blocks: list, bad: list) -> None:

@@ -182,13 +182,41 @@ class Ctx:
         point where `body` is pinned to a body that does not move (C5-E.1's bar OC about O,
         whose wheels also carry a point at O): the fixed pivot is written bare, as the notes
         write v_C = v_O + ω × OC, and the other bodies' points there keep their body
-        (O∈wheels)."""
+        (O∈wheels). Bodies pinned (or welded) together at the point share one label, the
+        first of them (`motion_key`): one velocity, one symbol on the page (twenty-first round
+        (e): 001's Step 2 wrote v_{B∈rocker} where the question and the caption say v_{B∈N},
+        the block N pinned to the rocker at B; the slides write one v_B for both)."""
         if point in self.inst.points and body in self.model.carriers(point) and (
                 self.shared(point) or self.pivot(point, body)):
             return point
         if point in self.centre_points:              # an instant centre: the point of its body there
             return point
-        return f"{point}∈{body}"
+        return self.label_body(point, body)
+
+    def label_body(self, point: str, body: str) -> str:
+        """`point∈b` for the body b that names the material point of `body` at `point` on the
+        page: of the bodies pinned (or welded) to `body` there, the one a question or a driver
+        names at that point (001's B@N, C5-2.1's F@front), else the first (`motion_key`)."""
+        if point not in self.inst.points or body not in self.model.carriers(point):
+            return f"{point}∈{body}"
+        mine = next(c for c in self.model.motion_classes(point, self.model.carriers(point)) if body in c)
+        named = self._named_at(point)
+        return f"{point}∈{next((b for b in mine if b in named), mine[0])}"
+
+    def _named_at(self, point: str) -> list:
+        """The bodies the model's questions and velocity drivers name at `point` (B@N)."""
+        out = []
+        for q in self.model.questions:
+            ref = q.target if isinstance(q.target, PointRef) else None
+            if ref is None and isinstance(q.target, str) and "@" in q.target:
+                ref = self.model.resolve_point(q.target)
+            if ref is not None and ref.point == point and ref.body:
+                out.append(ref.body)
+        for d in self.model.drivers:
+            if d.kind == "velocity" and d.driven_point().point == point and d.driven_point().body:
+                out.append(d.driven_point().body)
+        return out
+
 
     def pivot(self, point: str, body: str) -> bool:
         """Whether `body` is pinned (or welded) at `point` to a body that does not move,

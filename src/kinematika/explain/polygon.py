@@ -50,7 +50,7 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     fig.arrows = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images
     fig.bar = bar_unit(ctx, poly.values)
-    fig.notes = pole_notes(fig) + at_pole_notes(poly)
+    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
     return fig
 
 
@@ -94,14 +94,16 @@ def lettering(ctx: Ctx, labels: list[str]) -> dict[str, Any]:
     return {"image": image, "point": image.upper()}
 
 
-def pole_notes(fig: Figure) -> list:
+def pole_notes(fig: Figure, poly: "_Builder") -> list:
     """The caption's word on a label it would not explain: the image of a point O is o′,
     since o is the pole (C5-E.1: O the track's centre, whose point of the wheels moves);
     a point whose lower-case letter is a parameter's symbol is primed the same way, said
-    once (C5-E.6's c′ beside the wheelbase c)."""
+    once (C5-E.6's c′ beside the wheelbase c). Where o′ itself lies at the pole, the
+    at-pole sentence names it ("o′, the image of O, is at the pole o, since a_O = 0",
+    `at_pole_notes`): one sentence per image at the pole (twenty-first round (e))."""
     images = [label for label, _, kind in fig.points if kind == "image"]
     out = []
-    if any(re.search(r"(^|, )o′", label) for label in images):
+    if any(re.search(r"(^|, )o′", label) for label in images) and "o′" not in _at_pole(poly):
         out.append(msg("fig.o_prime"))
     primed = sorted({m for label in images for m in re.findall(r"(?:^|, )([a-np-z])′", label)})
     out += [msg("fig.primed", image=f"{x}′", point=x.upper(), symbol=x,
@@ -138,7 +140,7 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
                  arrows=_separated(poly.arrows), unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic,
                  values=ctx.drawn_values())
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
-    fig.notes = pole_notes(fig) + at_pole_notes(poly)
+    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
     fig.bar = bar_unit(ctx, poly.values)
     return fig
 
@@ -155,7 +157,14 @@ def at_pole_notes(poly: "_Builder") -> list:
     equal: list = []
     for _, sym in zero:
         equal += [sym, " = "]
-    return [msg("fig.at_pole", images=Names([Name(n) for n in names]), count=len(names), zero=Inline(equal + ["0"]))]
+    # o′ says whose image it is where it is said (`pole_notes`): "o′, the image of O, is at …"
+    items = [msg("fig.o_prime_named") if n == "o′" else Name(n) for n in names]
+    return [msg("fig.at_pole", images=Names(items), count=len(names), zero=Inline(equal + ["0"]))]
+
+
+def _at_pole(poly: "_Builder") -> set:
+    """The names of the images a term of the polygon's equations puts at the pole."""
+    return {name for name, (xy, _) in poly.named.items() if poly.at_pole(xy)}
 
 
 def bar_unit(ctx: Ctx, values: list) -> tuple | None:

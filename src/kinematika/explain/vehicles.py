@@ -375,8 +375,10 @@ def _pin_shared(ctx: Ctx, b: str, witness: str) -> list:
         if given.point != witness or other in (None, b):
             continue
         if any(pins(j) and j.at == witness and {j.a, j.b} == {b, other} for j in ctx.model.joints):
-            return [msg("vehicle.pin_shared", point=Name(witness), a=Name(other, "body"), b=Name(b, "body"),
-                        sym=Sym("v", ctx.point_label(witness, b)), other=Sym("v", ctx.point_label(witness, other)))]
+            sym, given_sym = Sym("v", ctx.point_label(witness, b)), Sym("v", ctx.point_label(witness, other))
+            # one point of the two bodies, one label (twenty-first round (e)): "v_F is the velocity of both"
+            key = "vehicle.pin_shared_one" if sym == given_sym else "vehicle.pin_shared"
+            return [msg(key, point=Name(witness), a=Name(other, "body"), b=Name(b, "body"), sym=sym, other=given_sym)]
     return []
 
 

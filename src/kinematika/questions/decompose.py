@@ -81,7 +81,11 @@ class Decompose(QuestionKind):
             # the relative part as the steps write it, both bodies named (v_{B∈N rel M}): one
             # vector, one symbol in the step, the composition and the answers (round 19a)
             return words.sym(level, f"{ref.point}∈{ref.body}/{q.moving}")
-        return words.sym(level, ref.point, sub_key=PARTS.get(sub or "", ""))
+        if sub not in PARTS:
+            # the point's own motion as the question and the steps label it (v_{B∈N}, not v_B
+            # beside Step 2's v_{B∈N}: one velocity, one symbol, twenty-first round (e))
+            return words.sym(level, words.point(q))
+        return words.sym(level, ref.point, sub_key=PARTS[sub])
 
 
 KIND = Decompose()

@@ -170,6 +170,7 @@ fig-at_pole = { $count ->
    *[other] { $images } són al pol o, ja que { $zero }.
 }
 fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
+fig-o_prime_named = o′, la imatge d’O,
 fig-primed = La imatge del punt { $point } és { $image } ({ $symbol }: { $what }).
 fig-a_symbol = una dada
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
@@ -499,7 +500,7 @@ centre-at = a { $point }.
 centre-infinity = { $body } es trasllada respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }: tots els seus punts tenen la velocitat { $v }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }, { $direction }.
+    }: tots els seus punts tenen la velocitat { $v }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }.
 centre-infinity_one = { $body } es trasllada respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
@@ -651,6 +652,7 @@ vehicle-equiprojective_along = Per la propietat d’equiprojectivitat ({ $q } i 
     }), les seves velocitats tenen la mateixa component segons { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, amb { $seg }/|{ $seg }| = { $unit }, de manera que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } és a l’eix de la roda { $joint }, de manera que { $vp } té la direcció del pla de la roda, la recta { $seg }: { $vp } = |{ $vp }| { $seg }/|{ $seg }|. Per tant, |{ $vp }| = { $speed }, i { $vp } = { $value }.
 vehicle-line-wheel_own = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix, que és també la perpendicular a { $sym } per { $witness }: la roda no llisca lateralment)
 vehicle-pin_shared = { $point } és el passador comú a { $a } i { $b }: { $sym } = { $other }.
+vehicle-pin_shared_one = { $point } és el passador comú a { $a } i { $b }: { $sym } és la velocitat de tots dos.
 vehicle-centre = El CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }

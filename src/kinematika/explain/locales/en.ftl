@@ -134,6 +134,7 @@ fig-at_pole = { $count ->
    *[other] { $images } are at the pole o, since { $zero }.
 }
 fig-o_prime = The image of the point O is o′, since o is the pole.
+fig-o_prime_named = o′, the image of O,
 fig-primed = The image of the point { $point } is { $image } ({ $symbol } is the { $what }).
 fig-a_symbol = symbol of a datum
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
@@ -382,7 +383,7 @@ centre-omega = with the velocities found in “{ sec-velocities }”, the angula
        *[one] is
     } zero: the relative motion is a translation and the centre is
 centre-at = at { $point }.
-centre-infinity = { $body } translates relative to { $frame }: every point has the velocity { $v }; its instant centre is at infinity, perpendicular to { $v }, in the direction { $direction }.
+centre-infinity = { $body } translates relative to { $frame }: every point has the velocity { $v }; its instant centre is at infinity, perpendicular to { $v }.
 centre-infinity_one = { $body } translates relative to { $frame }: every point has one velocity; its instant centre is at infinity, perpendicular to that velocity, in the direction { $direction }.
 centre-rest = there is no relative motion.
 sec-rates = Angular velocities and accelerations
@@ -471,6 +472,7 @@ vehicle-equiprojective = By equiprojectivity ({ $q } and { $p } are points of { 
 vehicle-equiprojective_along = By equiprojectivity ({ $q } and { $p } are points of { $body }), their velocities have the same component along { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, with { $seg }/|{ $seg }| = { $unit }, so that { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } is on the axle of wheel { $joint }, so { $vp } lies along the wheel's plane, the line { $seg }: { $vp } = |{ $vp }| { $seg }/|{ $seg }|. Hence |{ $vp }| = { $speed }, and { $vp } = { $value }.
 vehicle-line-wheel_own = the perpendicular at { $point } to the plane of wheel { $joint } (its axle, which is also the perpendicular to { $sym } through { $witness }: the wheel does not slip sideways)
 vehicle-pin_shared = { $point } is the pin common to { $a } and { $b }: { $sym } = { $other }.
+vehicle-pin_shared_one = { $point } is the pin common to { $a } and { $b }: { $sym } is the velocity of both.
 vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }, which has no velocity: { $rest } = 0. Every point of { $body } moves perpendicular to the line joining it to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel, so { COUNT($body) ->
         [many] they translate: every point moves as { $point }; their instant centre is at infinity
@@ -694,7 +696,7 @@ sec-contact = Contact points
 geom-rule = The rule for every rolling contact: no slip holds at every instant at the geometric contact point (here { $geom }), which moves; differentiating the no-slip condition along it gives { $rule }: the tangential components of the two accelerations are equal and the normal ones differ by this term, along the common normal. It needs the velocity of the geometric point:
 geom-bar = { $geom }, the geometric contact point, belongs to neither body: it stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
 geom-bar_told = { $geom }, the geometric contact point, stays on the line of the centres { $c1 } and { $c2 }, always with { $part }/{ $whole } = { $ratio }, so it moves as a point of a bar hinged at { $c1 } and { $c2 }:
-geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, across the line, and turns with it:
+geom-foot = { $geom }, the geometric contact point, is the foot of the perpendicular from the centre { $centre } to the line of { $line }: { $radius } is a radius, perpendicular to the line, and turns with it:
 contact-intro = At the contact { $point } three points coincide, with different motions: the point of { $a }, the point of { $b }, and the geometric contact point { $geom }, which is a point of neither.
 contact-above = { $sym } = { $value }, worked out in “{ sec-accelerations }” for the acceleration of the contact.
 contact-written_centre = { $sym } = { $value }, found in Step { $step }: { $point } is the instant centre of { $body }.

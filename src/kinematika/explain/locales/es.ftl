@@ -140,6 +140,7 @@ fig-at_pole = { $count ->
    *[other] { $images } están en el polo o, ya que { $zero }.
 }
 fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
+fig-o_prime_named = o′, la imagen de O,
 fig-primed = La imagen del punto { $point } es { $image } ({ $symbol }: { $what }).
 fig-a_symbol = un dato
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
@@ -354,7 +355,7 @@ centre-lines = está en { $first } y en { $second }; estas rectas { $far ->
     }
 centre-omega = con las velocidades halladas en «{ sec-velocities }», la velocidad angular respecto de { $frame } es nula: el movimiento relativo es una traslación y el CIR está
 centre-at = en { $point }.
-centre-infinity = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la velocidad { $v }; su CIR está en el infinito, en la dirección perpendicular a { $v }, { $direction }.
+centre-infinity = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la velocidad { $v }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
 centre-infinity_one = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la misma velocidad; su CIR está en el infinito, en la dirección perpendicular a esa velocidad, { $direction }.
 centre-rest = no hay movimiento relativo.
 sec-rates = Velocidades y aceleraciones angulares
@@ -431,6 +432,7 @@ vehicle-equiprojective = Por la propiedad de equiproyectividad ({ $q } y { $p } 
 vehicle-equiprojective_along = Por la propiedad de equiproyectividad ({ $q } y { $p } son puntos de { $body }), sus velocidades tienen la misma componente según { $seg }: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, con { $seg }/|{ $seg }| = { $unit }, de modo que { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } está en el eje de la rueda { $joint }, así que { $vp } tiene la dirección del plano de la rueda, la recta { $seg }: { $vp } = |{ $vp }| { $seg }/|{ $seg }|. Por tanto, |{ $vp }| = { $speed }, y { $vp } = { $value }.
 vehicle-line-wheel_own = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje, que es también la perpendicular a { $sym } por { $witness }: la rueda no desliza lateralmente)
 vehicle-pin_shared = { $point } es el pasador común a { $a } y { $b }: { $sym } = { $other }.
+vehicle-pin_shared_one = { $point } es el pasador común a { $a } y { $b }: { $sym } es la velocidad de ambos.
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }, que no tiene velocidad: { $rest } = 0. Cada punto de { $body } se mueve perpendicularmente a la recta que lo une con { $centre }, con celeridad proporcional a su distancia:
 vehicle-translation = Las rectas de { $body } son paralelas, así que se traslada: todos sus puntos se mueven como { $point }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
 vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }, así que { $body } se traslada: todos sus puntos tienen la velocidad { $value }; su CIR está en el infinito, en la dirección perpendicular a { $vp }.

@@ -134,6 +134,7 @@ fig-at_pole = { $count ->
    *[other] { $images } o poloan daude, { $zero } baita.
 }
 fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
+fig-o_prime_named = o′, O-ren irudia,
 fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
 fig-a_symbol = datu baten ikurra
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
@@ -295,7 +296,7 @@ centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek 
     }
 centre-omega = «{ sec-velocities }» atalean aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta zentroa
 centre-at = { $point } puntuan.
-centre-infinity = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek { $v } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean, { $direction }.
+centre-infinity = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek { $v } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
 centre-infinity_one = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek abiadura bera dute; biraketa-zentro instantaneoa infinituan dago, abiadura horrekiko norabide perpendikularrean, { $direction }.
 centre-rest = ez dago mugimendu erlatiborik.
 sec-rates = Abiadura eta azelerazio angeluarrak
@@ -369,6 +370,7 @@ vehicle-equiprojective = Ekiproiektibitatearen propietateagatik ({ $q } eta { $p
 vehicle-equiprojective_along = Ekiproiektibitatearen propietateagatik ({ $q } eta { $p } { $body } solidoaren puntuak dira), haien abiadurek osagai bera dute { $seg } zuzenean: { $vp } · { $seg }/|{ $seg }| = { $vq } · { $seg }/|{ $seg }|, non { $seg }/|{ $seg }| = { $unit }; beraz, { $vq } · { $seg }/|{ $seg }| = { $proj }. { $p } puntua { $joint } gurpilaren ardatzean dago; beraz, { $vp } gurpilaren planoaren norabidean dago, { $seg } zuzenean: { $vp } = |{ $vp }| { $seg }/|{ $seg }|. Ondorioz, |{ $vp }| = { $speed }, eta { $vp } = { $value }.
 vehicle-line-wheel_own = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza, { $witness } puntuan { $sym } abiadurarekiko perpendikularra ere badena: gurpila ez da alboetara irristatzen)
 vehicle-pin_shared = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } = { $other }.
+vehicle-pin_shared_one = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } bien abiadura da.
 vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira, eta zentro horrek ez du abiadurarik: { $rest } = 0; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira; beraz, solidoa traslatzen da: puntu guztiak { $point } bezala mugitzen dira; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
 vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }; beraz, { $body } solidoa traslatzen da: puntu guztiek { $value } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $vp } abiadurarekiko norabide perpendikularrean.

@@ -26,6 +26,7 @@ TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
 # a symbol typed in a model's own words: one letter (with its marks: φ̇) that ends no word, an
 # underscore, then a subscript of letters and digits or one in braces (v_B, Ω_pinyó, ℜ_P,
 # a_{F∈gurpila}); snake_case (draw_at) is not one, its letter ends a word
+TYPED_GEOM = "^{geom}"      # the geometric contact point's mark as a model's words type it
 SUBSCRIPTED = re.compile("(?<![\\w\u0300-\u036f])([^\\W\\d_][\u0300-\u036f]*)_(\\{[^{}]+\\}|[^\\W_]+)")
 # what a name's markup begins with before its first letter, by format
 LEADING_MARKUP = {"html": re.compile(r"(?:<[^>]*>)*"), "md": re.compile(r"[*_]*"),
@@ -409,7 +410,11 @@ class Renderer(ABC):
         """A model's own text escaped, each symbol typed in it as X_sub (SUBSCRIPTED: C5-E.6's
         "r ω_pinyó = R ω_plat", its notes' "ℜ_P = v(P)²/aⁿ", a Data remark's "v_B") written as
         the page writes its symbols (`subscripted`), so the words and the formulas beside them
-        show one symbol one way; the bodies' names in the words marked (`bodies_marked`)."""
+        show one symbol one way; the bodies' names in the words marked (`bodies_marked`); the
+        geometric contact point typed J^{geom} marked as the body marks it (`geom_mark`: a
+        superscript, not the braces; twenty-first round (e), C5-1.8's Catalan note)."""
+        if TYPED_GEOM in text:      # J^{geom} in a note as the body writes the point (`geom_mark`)
+            return self.geom_mark().join(self.typed(part) for part in text.split(TYPED_GEOM))
         parts = SUBSCRIPTED.split(text)
         return "".join(self.subscripted(parts[k], parts[k + 1]) if k % 3 == 1
                        else self.bodies_marked(part, self.esc) if k % 3 == 0 else "" for k, part in enumerate(parts))
