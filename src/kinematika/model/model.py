@@ -188,6 +188,11 @@ class Model:
         """Every material point, body by body, in the file's order."""
         return [PointRef(p, b.name) for b in self.bodies.values() for p in b.points]
 
+    def material_pairs(self) -> list[tuple[str, str]]:
+        """`material_points` as (point, body) pairs, for a reader of every point at once (an
+        answer's tables) that needs no `PointRef` of each."""
+        return [(p, b.name) for b in self.bodies.values() for p in b.points]
+
     def joint(self, joint_id: str) -> Joint:
         """The joint with id `joint_id` (the id must exist: a model's ids are checked when it is
         built)."""
