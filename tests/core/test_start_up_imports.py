@@ -29,7 +29,7 @@ SOLVE = {
     "kinematika", "kinematika.algebra", "kinematika.algebra.backend", "kinematika.algebra.vectors",
     "kinematika.api", "kinematika.budget", "kinematika.cli", "kinematika.cli.fast", "kinematika.cli.fast_options",
     "kinematika.cli.run", "kinematika.cli.shared", "kinematika.commands", "kinematika.engine",
-    "kinematika.engine.blocks", "kinematika.engine.drivers", "kinematika.engine.idle", "kinematika.engine.instant",
+    "kinematika.engine.blocks", "kinematika.engine.dense", "kinematika.engine.drivers", "kinematika.engine.idle", "kinematika.engine.instant",
     "kinematika.engine.joints", "kinematika.engine.levels", "kinematika.engine.linear", "kinematika.engine.linsolve",
     "kinematika.engine.mobility", "kinematika.engine.motion", "kinematika.engine.positions",
     "kinematika.engine.ranges", "kinematika.engine.system", "kinematika.engine.terms", "kinematika.errors",
@@ -133,3 +133,21 @@ def test_a_model_without_parameters_or_questions_defines_neither(tmp_path):
     modules = set(imported(["solve", str(model), "--json"]))
     assert "kinematika.model.build" in modules          # the report was read
     assert not modules & (PARAMETERS | ASKED | {"kinematika.joints.holonomic"})
+
+
+def test_a_large_chain_solved_sparse_defines_no_dense_analysis(tmp_path):
+    """A chain of 101 bodies (303 unknowns, above `linsolve.LARGE`) is solved by its sparse LU:
+    its solve does not import `engine.dense` (the dense `Analysis`); the small four-bar, whose
+    system is dense, does."""
+    import json
+
+    sys.path.insert(0, str(EXAMPLES.parent / "benchmarks"))
+    from chain import four_bar_chain
+
+    large, small = tmp_path / "chain101.json", tmp_path / "plain_chain.yaml"
+    large.write_text(json.dumps(four_bar_chain(101)), encoding="utf-8")
+    small.write_text(PLAIN_CHAIN, encoding="utf-8")
+    modules = set(imported(["solve", str(large), "--json"]))
+    assert "kinematika.engine.linsolve" in modules          # the report was read
+    assert "kinematika.engine.dense" not in modules
+    assert "kinematika.engine.dense" in set(imported(["solve", str(small), "--json"]))
