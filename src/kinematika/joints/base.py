@@ -37,7 +37,6 @@ from typing import TYPE_CHECKING, Any, Callable, ClassVar, Optional, Protocol
 
 from ..algebra.vectors import dot, sub
 from ..errors import KinematikaError, Names, Num, Said
-from ..expressions import PointPair
 from . import positions
 from .capabilities import Centre, CentreLine, Chain, Coordinate, Need, PointOn, Side
 from .positions import Residual
@@ -322,7 +321,7 @@ def off_line(inst: Instant, joint: ModelJoint, geo: JointGeometry) -> None:
     """A slot's pin must lie on the slot's line PQ when the slot is given by two points:
     else a `geometry` error with the gap."""
     along = joint.along
-    if not isinstance(along, PointPair) or joint.at is None:
+    if along is None or isinstance(along, tuple) or joint.at is None:     # (not two points)
         return
     start = inst.points[along.start]
     gap = inst.num(dot(sub(geo.point_at(), start), geo.perps[0]))

@@ -13,7 +13,6 @@ from ..errors import KinematikaError, Names
 from ..joints import JointKind
 from ..joints import kind as joint_kind
 from ..expressions import Direction, Expr, ExprVector
-from ..expressions import PointPair as PointPair      # re-exported: written `model.PointPair` across the package
 from .point_ref import PointRef as PointRef           # re-exported: written `model.PointRef` across the package
 
 if TYPE_CHECKING:
