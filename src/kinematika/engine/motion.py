@@ -74,9 +74,13 @@ class Motion:
         sp, n = self.space, len(self.states)
         rot = sp.rot_components
         widths = (sp.rot, sp.dim, sp.rot, sp.dim)
-        # one row per body, its four parts side by side, read into floats in one pass
-        table = np.array([(*rot(s.omega), *s.v0, *rot(s.alpha), *s.a0) for s in self.states.values()],
-                         dtype=float).reshape(n, sum(widths))
+        # one row per body, its four parts side by side, read into floats in one pass (in the
+        # plane ω and α are their one component: `rot_components` not called body by body)
+        if sp.rot == 1:
+            rows = [(s.omega, *s.v0, s.alpha, *s.a0) for s in self.states.values()]
+        else:
+            rows = [(*rot(s.omega), *s.v0, *rot(s.alpha), *s.a0) for s in self.states.values()]
+        table = np.array(rows, dtype=float).reshape(n, sum(widths))
         edges = np.cumsum((0, *widths)).tolist()
         return tuple(np.ascontiguousarray(table[:, edges[k]:edges[k + 1]]) for k in range(4))
 
