@@ -191,9 +191,7 @@ class JointKind(ABC):
     def prepare(self, inst: Instant, joint: ModelJoint) -> JointGeometry:
         """Evaluate the joint's point and directions, and check its geometry holds (else a
         `geometry` error naming the joint and the gap)."""
-        at = joint.at
-        if at is not None:
-            at = inst.points[at]
+        at = inst.points[joint.at] if joint.at is not None else None
         along = axis = None
         perps: list[tuple] = []
         if joint.along is not None:
