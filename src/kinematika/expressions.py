@@ -16,11 +16,14 @@ import ast
 import math
 import re
 from dataclasses import dataclass
-from typing import Any, Callable, Mapping, Union
+from typing import TYPE_CHECKING, Any, Callable, Mapping, Union
 
 from . import limits
 from .errors import Said, parser_problem
 from .text import brief
+
+if TYPE_CHECKING:
+    from .point_pair import PointPair
 
 MAX_LENGTH = limits.EXPRESSION_CHARS
 MAX_DEPTH = limits.EXPRESSION_DEPTH
@@ -119,17 +122,11 @@ ExprVector = tuple[Expr, ...]
 """A point's or direction's coordinates, each an expression."""
 
 
-@dataclass(frozen=True)
-class PointPair:
-    """A direction given by two points, from `start` to `end`."""
-
-    start: str
-    end: str
-
-
-Direction = Union[ExprVector, PointPair]
-"""A direction as a model writes it: its components, or two points (`model.model` keeps
-it; the joints' hooks receive it, so it sits below both)."""
+Direction = Union[ExprVector, "PointPair"]
+"""A direction as a model writes it: its components (a tuple), or two points (`PointPair`, in
+`point_pair`, imported where one is made or read: a reader tells the two apart by
+`isinstance(d, tuple)`). `model.model` keeps it; the joints' hooks receive it, so it sits
+below both."""
 
 
 def parse(text: str | int | float) -> Expr:

@@ -138,16 +138,20 @@ class Solution:
         α_B/F = α_B − α_F − ω_F × ω_B/F. ``sol.alpha("rocker")``."""
         return self.state(body, relative_to).alpha
 
-    def point_fields(self) -> tuple[list[PointRef], Any, Any, Any]:
-        """Every material point (file order) with its position, velocity and acceleration as
-        (n, dim) float arrays, computed at once from the body twists (numeric instants)."""
+    def point_fields(self) -> tuple[list[str], Any, Any, Any]:
+        """Every material point (file order), named ``point@body``, with its position, velocity
+        and acceleration as (n, dim) float arrays, computed at once from the body twists
+        (numeric instants)."""
         if self._fields is None:
             import numpy as np
 
-            refs = self.model.material_points()
-            places = np.array([self.inst.points[r.point] for r in refs], dtype=float).reshape(len(refs), -1)
-            velocity, acceleration = self.motion.fields([r.body for r in refs], places)
-            self._fields = (refs, places, velocity, acceleration)
+            from .model.point_ref import written
+
+            pairs = self.model.material_pairs()
+            points = self.inst.points
+            places = np.array([points[p] for p, _ in pairs], dtype=float).reshape(len(pairs), -1)
+            velocity, acceleration = self.motion.fields([b for _, b in pairs], places)
+            self._fields = (written(pairs), places, velocity, acceleration)
         return self._fields
 
     # zero tests at the model's scale --------------------------------------------------------

@@ -520,3 +520,40 @@ def test_a_large_chains_answer_is_its_hand_derivation():
                 or a["ask"].get("alpha"), next(iter(a["ask"]))): a["value"] for a in data["answers"]}
     assert answers[("A150@rocker150", "velocity")] == [-w, 0.0]
     assert answers[("rocker150", "alpha")] == pytest.approx(alpha, rel=1e-9)
+
+
+def test_a_motions_arrays_are_read_once_and_read_only():
+    """`Motion.arrays` (ω, v₀, α, a₀ of every body) is read from the states once and shared:
+    the same arrays at every call, not writable (a reader that changed them would change
+    every later reader's). Their values, in the plane, by hand for a chain of parallelogram
+    loops (`benchmarks/chain.py`; v₀, a₀ at the motion's reference point R): the crank and
+    every rocker turn at ω, α, pivoted at O_i = (4i, 0), so with d = R − O_i, v₀ = ω k × d
+    = ω (−d_y, d_x) and a₀ = α (−d_y, d_x) − ω² d; the couplers translate as the pins A_i
+    move, v₀ = (−ω, 0), a₀ = (−α, −ω²)."""
+    import numpy as np
+
+    sys.path.insert(0, str(EXAMPLES.parent / "benchmarks"))
+    from chain import four_bar_chain
+
+    from kinematika import solve
+
+    w, alpha = 10.0, 3.0
+    sol = solve(four_bar_chain(7, w=w, alpha=alpha))
+    arrays = sol.motion.arrays()
+    assert sol.motion.arrays() is arrays
+    omega, v0, acc, a0 = arrays
+    assert all(not part.flags.writeable for part in arrays)
+    with pytest.raises(ValueError):
+        omega[0, 0] = 1.0
+    row = {name: i for i, name in enumerate(sol.motion.states)}
+    assert omega.shape == (len(row), 1) and v0.shape == (len(row), 2)
+    for i in range(1, 4):
+        r, c = row[f"rocker{i}"], row[f"coupler{i}"]
+        assert (omega[r, 0], acc[r, 0]) == pytest.approx((w, alpha), rel=1e-9)
+        dx, dy = sol.motion.ref[0] - 4.0 * i, sol.motion.ref[1]
+        assert v0[r] == pytest.approx([-w * dy, w * dx], rel=1e-9)
+        assert a0[r] == pytest.approx([-alpha * dy - w * w * dx, alpha * dx - w * w * dy], rel=1e-9)
+        assert (omega[c, 0], acc[c, 0]) == pytest.approx((0.0, 0.0), abs=1e-9)
+        assert v0[c] == pytest.approx([-w, 0.0], rel=1e-9)
+        assert a0[c] == pytest.approx([-alpha, -w * w], rel=1e-9)
+    assert np.array_equal(omega[:, 0], [sol.state(b).omega for b in sol.motion.states])

@@ -29,7 +29,7 @@ SOLVE = {
     "kinematika", "kinematika.algebra", "kinematika.algebra.backend", "kinematika.algebra.vectors",
     "kinematika.api", "kinematika.budget", "kinematika.cli", "kinematika.cli.fast", "kinematika.cli.fast_options",
     "kinematika.cli.run", "kinematika.cli.shared", "kinematika.commands", "kinematika.engine",
-    "kinematika.engine.blocks", "kinematika.engine.drivers", "kinematika.engine.idle", "kinematika.engine.instant",
+    "kinematika.engine.blocks", "kinematika.engine.dense", "kinematika.engine.drivers", "kinematika.engine.idle", "kinematika.engine.instant",
     "kinematika.engine.joints", "kinematika.engine.levels", "kinematika.engine.linear", "kinematika.engine.linsolve",
     "kinematika.engine.mobility", "kinematika.engine.motion", "kinematika.engine.positions",
     "kinematika.engine.ranges", "kinematika.engine.system", "kinematika.engine.terms", "kinematika.errors",
@@ -56,7 +56,10 @@ QUESTIONS = {"kinematika.questions", "kinematika.questions.axis", "kinematika.qu
              "kinematika.questions.inflection", "kinematika.questions.motion", "kinematika.questions.pole"}
 # not imported by a model without a constructed point, a body with a shape, or a drawing (docs/architecture.md:
 # the imports left inside functions): `model.constructions`, `model.body_shapes`, `shapes`, `joints.symbols`
-CONSTRUCTED = {"kinematika.model.constructions"}        # four_bar.yaml's coupler pin: two circles
+CONSTRUCTED = {"kinematika.model.constructions"}
+# a direction given by two points (spherical_four_bar.yaml's axes, inverted_slider_crank.yaml's slide, the
+# tractor-trailer's wheels); four_bar.yaml and the 1000-body chain have none
+POINT_PAIRS = {"kinematika.point_pair"}        # four_bar.yaml's coupler pin: two circles
 # a model's `sweep:` or `simulate:` section, or a moved model's turns (four_bar.yaml and spherical_four_bar.yaml
 # have a `sweep:`, tractor_trailer_turning.yaml a `simulate:`); inverted_slider_crank.yaml, like the 1000-body
 # chain, has neither, and its solve must not load the module
@@ -73,8 +76,9 @@ HEAVY = {"scipy", "sympy", "pydantic", "typer", "click", "rich", "matplotlib", "
 # command line, kinematika's modules, heavy libraries allowed, most other modules
 COMMANDS = {
     "solve": (["solve", "{ex}/four_bar.yaml", "--json"], SOLVE | PARAMETERS | ASKED | QUESTIONS | CONSTRUCTED | SECTIONS, set(), 145),
-    "solve-no-questions": (["solve", "{ex}/spherical_four_bar.yaml", "--json"], SOLVE | ASKED | SECTIONS, set(), 145),
-    "solve-no-sections": (["solve", "{ex}/inverted_slider_crank.yaml", "--json"], SOLVE | PARAMETERS | ASKED | CONSTRUCTED, set(), 145),
+    "solve-no-questions": (["solve", "{ex}/spherical_four_bar.yaml", "--json"], SOLVE | ASKED | SECTIONS | POINT_PAIRS, set(), 145),
+    "solve-no-sections": (["solve", "{ex}/inverted_slider_crank.yaml", "--json"],
+                           SOLVE | PARAMETERS | ASKED | CONSTRUCTED | POINT_PAIRS, set(), 145),
     "centres": (["centres", "{ex}/four_bar.yaml", "--json"],
                 SOLVE | PARAMETERS | ASKED | QUESTIONS | CONSTRUCTED | SECTIONS | {"kinematika.questions.centres",
                                                               "kinematika.report.centres_table"},
@@ -84,7 +88,7 @@ COMMANDS = {
                                                  "kinematika.sweep.closed_form"},
               set(), 145),
     "simulate": (["simulate", "{ex}/tractor_trailer_turning.yaml", "--time", "1", "--steps", "2", "--json"],
-                 SOLVE | PARAMETERS | ASKED | SWEEP_RUN | SIMULATE | SECTIONS, {"scipy"}, 245),
+                 SOLVE | PARAMETERS | ASKED | SWEEP_RUN | SIMULATE | SECTIONS | POINT_PAIRS, {"scipy"}, 245),
 }
 
 
@@ -126,10 +130,29 @@ ask: []
 
 
 def test_a_model_without_parameters_or_questions_defines_neither(tmp_path):
-    """A model like the 1000-body chain (numbers only, `ask: []`) makes no `Parameter` and no
-    `Question`, so its solve does not import (define) them, nor a joint's `Holonomic`."""
+    """A model like the 1000-body chain (numbers only, `ask: []`, pins only) makes no `Parameter`,
+    no `Question` and no `PointPair`, so its solve does not import (define) them, nor a joint's
+    `Holonomic`."""
     model = tmp_path / "plain_chain.yaml"
     model.write_text(PLAIN_CHAIN, encoding="utf-8")
     modules = set(imported(["solve", str(model), "--json"]))
     assert "kinematika.model.build" in modules          # the report was read
-    assert not modules & (PARAMETERS | ASKED | {"kinematika.joints.holonomic"})
+    assert not modules & (PARAMETERS | ASKED | POINT_PAIRS | {"kinematika.joints.holonomic"})
+
+
+def test_a_large_chain_solved_sparse_defines_no_dense_analysis(tmp_path):
+    """A chain of 101 bodies (303 unknowns, above `linsolve.LARGE`) is solved by its sparse LU:
+    its solve does not import `engine.dense` (the dense `Analysis`); the small four-bar, whose
+    system is dense, does."""
+    import json
+
+    sys.path.insert(0, str(EXAMPLES.parent / "benchmarks"))
+    from chain import four_bar_chain
+
+    large, small = tmp_path / "chain101.json", tmp_path / "plain_chain.yaml"
+    large.write_text(json.dumps(four_bar_chain(101)), encoding="utf-8")
+    small.write_text(PLAIN_CHAIN, encoding="utf-8")
+    modules = set(imported(["solve", str(large), "--json"]))
+    assert "kinematika.engine.linsolve" in modules          # the report was read
+    assert "kinematika.engine.dense" not in modules
+    assert "kinematika.engine.dense" in set(imported(["solve", str(small), "--json"]))

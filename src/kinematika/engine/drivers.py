@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from ..algebra.vectors import dot, sub
 from ..errors import Said
-from ..model.model import Direction, Driver, PointPair
+from ..model.model import Direction, Driver
 from .instant import Instant
 from ..joints import AXES, JointGeometry
 from .joints import Row, joint_rate
@@ -73,6 +73,6 @@ def _reference_direction(inst: Instant, body: str, d: Direction, where: str) -> 
     """A velocity driver's `along`, fixed in its frame of reference `body`: as drawn, turned
     with that body in a moved model (`Model.turns`) or a sweep's pose (`Instant.body_turn`);
     two points give it at the instant anyway."""
-    if inst.body_turn is not None and not isinstance(d, PointPair):
+    if inst.body_turn is not None and isinstance(d, tuple):      # written, not two points
         return tuple(inst.body_turn(body, inst.direction(d, where)))
     return inst.body_direction(body, d, where)

@@ -95,7 +95,7 @@ class Instant:
     def direction(self, d: m.Direction, where: str) -> tuple:
         """A unit direction from the model: two points (from `start` to `end`, which must
         differ) or a written vector, normalised."""
-        if isinstance(d, m.PointPair):
+        if not isinstance(d, tuple):         # two points (`PointPair`), not a written vector
             gap = sub(self.points[d.end], self.points[d.start])
             if math.hypot(*self.numvec(gap)) <= 1e-12 * self.scale:
                 raise KinematikaError("schema", "direction-points-coincide", where, start=d.start, end=d.end)
@@ -106,7 +106,7 @@ class Instant:
         """A direction fixed in `body`: as written, turned with the body when the model is
         moved (`Model.turns`); two points give it at the instant anyway."""
         u = self.direction(d, where)
-        if self.model.turns and not isinstance(d, m.PointPair):
+        if self.model.turns and isinstance(d, tuple):      # written, not two points
             from .turns import turned
 
             u = turned(self, body, u)

@@ -37,6 +37,7 @@ class Motion:
         self.ref = ref
         self.states = states
         self.terms = terms
+        self._arrays: tuple[Any, ...] | None = None
 
     def state(self, body: str, relative_to: str | None = None) -> BodyState:
         """The motion of `body` as seen by an observer fixed to `relative_to` (default: ground).
@@ -68,17 +69,32 @@ class Motion:
 
     def arrays(self) -> tuple[Any, ...]:
         """ω, v₀, α, a₀ of every body (the order of `states`) as float arrays of one row per
-        body (ω and α with one column in the plane, three in space); numeric motions."""
+        body (ω and α with one column in the plane, three in space); numeric motions. Read
+        once (a motion's states are not changed after it is solved) and shared, read-only:
+        an answer reads them three times (its scales, its points' fields, its tables)."""
+        if self._arrays is None:
+            self._arrays = self._read_arrays()
+        return self._arrays
+
+    def _read_arrays(self) -> tuple[Any, ...]:
+        """`arrays`, read from the states."""
         import numpy as np
 
         sp, n = self.space, len(self.states)
         rot = sp.rot_components
         widths = (sp.rot, sp.dim, sp.rot, sp.dim)
-        # one row per body, its four parts side by side, read into floats in one pass
-        table = np.array([(*rot(s.omega), *s.v0, *rot(s.alpha), *s.a0) for s in self.states.values()],
-                         dtype=float).reshape(n, sum(widths))
+        # one row per body, its four parts side by side, read into floats in one pass (in the
+        # plane ω and α are their one component: `rot_components` not called body by body)
+        if sp.rot == 1:
+            rows = [(s.omega, *s.v0, s.alpha, *s.a0) for s in self.states.values()]
+        else:
+            rows = [(*rot(s.omega), *s.v0, *rot(s.alpha), *s.a0) for s in self.states.values()]
+        table = np.array(rows, dtype=float).reshape(n, sum(widths))
         edges = np.cumsum((0, *widths)).tolist()
-        return tuple(np.ascontiguousarray(table[:, edges[k]:edges[k + 1]]) for k in range(4))
+        out = tuple(np.ascontiguousarray(table[:, edges[k]:edges[k + 1]]) for k in range(4))
+        for part in out:
+            part.flags.writeable = False          # shared: read, never written
+        return out
 
     def fields(self, bodies: Sequence[str], points: Any) -> tuple[Any, Any]:
         """Velocities and accelerations of many material points of a numeric motion at once:

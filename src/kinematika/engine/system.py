@@ -9,7 +9,7 @@ block-by-block exact solve on sympy expressions, the blocks found numerically).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -23,9 +23,11 @@ from .levels import AccelerationLevel, KnownTerms, Level, Unknowns, VelocityLeve
 from .motion import BodyState, Motion
 from .terms import MECHANICS, Terms
 from .blocks import SparseRows
-from .linsolve import (LARGE, Analysis, SparseAnalysis, analyse, analyse_sparse, solve_numeric,
-                       solve_symbolic, sparse_matrix)
+from .linsolve import LARGE, SparseAnalysis, analyse_sparse, solve_numeric, solve_symbolic, sparse_matrix
 from .positions import fresh_name
+
+if TYPE_CHECKING:
+    from .dense import Analysis
 
 
 class InstantSolver:
@@ -126,6 +128,8 @@ class InstantSolver:
         else:                       # numbers: the matrix filled from the rows' terms at once
             self.a_sym, self.b_v, dense = None, [-r.lin.const for r in rows_v], self._numeric(rows_v)
         self.a_num = dense
+        from .dense import analyse       # (defined only where a dense analysis is made: see its module)
+
         self.analysis = analyse(dense, self.is_driver, translation, inst.scale, self.labels,
                                 self.wheres, body_of, want_blocks=inst.symbolic,
                                 restating=self._restating)
@@ -182,6 +186,8 @@ class InstantSolver:
     def _dense(self) -> tuple[Analysis, np.ndarray]:
         """The dense analysis and numeric matrix of a symbolic instant, which is never kept
         sparse (`prepare`): what the exact solve orders its blocks by."""
+        from .dense import Analysis      # (made by `prepare` for every symbolic instant)
+
         assert isinstance(self.analysis, Analysis) and isinstance(self.a_num, np.ndarray), "a dense system"
         return self.analysis, self.a_num
 

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..engine.linsolve import _blocks, independent_rows
+from ..engine.dense import _blocks, independent_rows
 from ..errors import KinematikaError
 from ..solution import Solution
 from ..structure.assur import assur_groups, dyad as assur_dyad

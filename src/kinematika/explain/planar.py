@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from typing import Optional
 
-from ..model.model import Joint, PointPair
+from ..model.model import Joint
+from ..point_pair import PointPair
 from .context import Ctx, alpha_sym, omega_sym, read_off, segment, split_pair
 from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
 from .group import centre_site, group_blocks, still_contact

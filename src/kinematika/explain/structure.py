@@ -7,7 +7,7 @@ from typing import Any, Optional
 
 from ..draw.names import body_numbers
 from ..model.body_shapes import Circle, Disc
-from ..model.model import PointPair
+from ..point_pair import PointPair
 from .freedom import dof_unsaid
 from .context import Ctx
 from .kinds import kind_key, on_fixed_line, rolls, welds

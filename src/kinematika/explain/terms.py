@@ -9,7 +9,8 @@ normal terms ∥ PQ, relative terms ∥ the guide, Coriolis terms ⊥ the guide.
 from __future__ import annotations
 
 from ..algebra.vectors import scale
-from ..model.model import Joint, PointPair
+from ..model.model import Joint
+from ..point_pair import PointPair
 from .context import Ctx, alpha_sym, omega_sym, segment
 from .document import Ann, Msg, Sym, Term, Value, body, joint, msg
 

@@ -37,7 +37,6 @@ from typing import TYPE_CHECKING, Any, Callable, ClassVar, Optional, Protocol
 
 from ..algebra.vectors import dot, sub
 from ..errors import KinematikaError, Names, Num, Said
-from ..expressions import PointPair
 from . import positions
 from .capabilities import Centre, CentreLine, Chain, Coordinate, Need, PointOn, Side
 from .positions import Residual
@@ -81,7 +80,8 @@ class ModelJoint(Protocol):
 class JointGeometry:
     """What a joint's rows need at this instant, evaluated once: the joint's point, its
     unit directions (fixed in body `a`, in `b` for a knife edge) and their unit normals,
-    and the contact of a rolling pair."""
+    and the contact of a rolling pair. `JointKind.prepare` makes it with its fields by place
+    (one is made per joint at every instant: docs/performance.md)."""
 
     joint: ModelJoint
     at: Optional[tuple] = None              # a tuple of numbers or formulas, or None
@@ -191,16 +191,15 @@ class JointKind(ABC):
     def prepare(self, inst: Instant, joint: ModelJoint) -> JointGeometry:
         """Evaluate the joint's point and directions, and check its geometry holds (else a
         `geometry` error naming the joint and the gap)."""
-        sp, bk = inst.space, inst.backend
-        geo = JointGeometry(joint)
-        if joint.at is not None:
-            geo.at = inst.points[joint.at]
+        at = inst.points[joint.at] if joint.at is not None else None
+        along = axis = None
+        perps: list[tuple] = []
         if joint.along is not None:
-            geo.along = inst.body_direction(self.along_body(joint), joint.along, f"{joint.where}.along")
-            geo.perps = sp.perpendiculars(geo.along, bk.sqrt)
+            along = inst.body_direction(self.along_body(joint), joint.along, f"{joint.where}.along")
+            perps = inst.space.perpendiculars(along, inst.backend.sqrt)
         if joint.axis is not None:
-            geo.axis = inst.direction(joint.axis, f"{joint.where}.axis")
-        return geo
+            axis = inst.direction(joint.axis, f"{joint.where}.axis")
+        return JointGeometry(joint, at, along, axis, perps)
 
     @abstractmethod
     def rows(self, geo: JointGeometry, lv: Level) -> Rows:
@@ -320,7 +319,7 @@ def off_line(inst: Instant, joint: ModelJoint, geo: JointGeometry) -> None:
     """A slot's pin must lie on the slot's line PQ when the slot is given by two points:
     else a `geometry` error with the gap."""
     along = joint.along
-    if not isinstance(along, PointPair) or joint.at is None:
+    if along is None or isinstance(along, tuple) or joint.at is None:     # (not two points)
         return
     start = inst.points[along.start]
     gap = inst.num(dot(sub(geo.point_at(), start), geo.perps[0]))

@@ -19,7 +19,7 @@ from . import shape
 from .plain import Record
 from .point_order import construction_order
 from ..expressions import Expr, ExpressionError, parse
-from .model import Body, Direction, Driver, ExprVector, Joint, Model, PointPair, PointRef
+from .model import Body, Direction, Driver, ExprVector, Joint, Model, PointRef
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
@@ -367,6 +367,8 @@ class _Builder:
         if len(raw) == 2 and all(isinstance(v, str) and v in self.point_coords for v in raw):
             if raw[0] == raw[1]:
                 raise KinematikaError("schema", "direction-same-points", where)
+            from ..point_pair import PointPair     # (defined only for a model that has one: see its module)
+
             return PointPair(raw[0], raw[1])
         return self.check_size(self.vector(raw, where), where)
 

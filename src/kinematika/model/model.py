@@ -13,7 +13,6 @@ from ..errors import KinematikaError, Names
 from ..joints import JointKind
 from ..joints import kind as joint_kind
 from ..expressions import Direction, Expr, ExprVector
-from ..expressions import PointPair as PointPair      # re-exported: written `model.PointPair` across the package
 from .point_ref import PointRef as PointRef           # re-exported: written `model.PointRef` across the package
 
 if TYPE_CHECKING:
@@ -187,6 +186,11 @@ class Model:
     def material_points(self) -> list[PointRef]:
         """Every material point, body by body, in the file's order."""
         return [PointRef(p, b.name) for b in self.bodies.values() for p in b.points]
+
+    def material_pairs(self) -> list[tuple[str, str]]:
+        """`material_points` as (point, body) pairs, for a reader of every point at once (an
+        answer's tables) that needs no `PointRef` of each."""
+        return [(p, b.name) for b in self.bodies.values() for p in b.points]
 
     def joint(self, joint_id: str) -> Joint:
         """The joint with id `joint_id` (the id must exist: a model's ids are checked when it is

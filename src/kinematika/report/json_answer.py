@@ -65,11 +65,11 @@ def _numeric_tables(sol: Solution, scale: dict[str, float]) -> tuple[dict, dict]
         omega, alpha = omega[:, 0], alpha[:, 0]
     rates = zip(numbers(omega, scale["omega"]).tolist(), numbers(alpha, scale["alpha"]).tolist())
     bodies = {name: {"omega": w, "alpha": a} for name, (w, a) in zip(sol.motion.states, rates)}
-    refs, places, velocity, acceleration = sol.point_fields()
+    names, places, velocity, acceleration = sol.point_fields()
     columns = [numbers(values, scale[kind]).tolist() for values, kind in
                ((places, "position"), (velocity, "velocity"), (acceleration, "acceleration"))]
-    points = {str(ref): {"position": p, "velocity": v, "acceleration": a}
-              for ref, p, v, a in zip(refs, *columns)}
+    points = {name: {"position": p, "velocity": v, "acceleration": a}
+              for name, p, v, a in zip(names, *columns)}
     return bodies, points
 
 

@@ -23,7 +23,8 @@ from ..engine.array_positions import array_positions
 from ..engine.instant import Instant, _parameters
 from ..errors import KinematikaError, speaking
 from ..joints.capabilities import Coordinate
-from ..model.model import Model, PointPair
+from ..model.model import Model
+from ..point_pair import PointPair
 from ..model.parameter import Parameter
 from ..structure.assur import Group, assur_groups
 from .closed_form import ClosedForm, InputRates, Outcome, Over, applicable

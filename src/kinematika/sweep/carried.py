@@ -33,7 +33,8 @@ from ..errors import KinematikaError, Said
 from ..expressions import parse
 from ..joints.rolling import arc_slip
 from ..joints.tangency import circles_tangency
-from ..model.model import Model, PointPair
+from ..model.model import Model
+from ..point_pair import PointPair
 from ..model.motion_sections import Turn
 from ..shapes import Circle
 

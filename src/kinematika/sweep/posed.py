@@ -24,7 +24,8 @@ from ..engine.instant import instantiate
 from ..errors import KinematikaError
 from ..expressions import Expr, ExprVector, parse
 from ..model.body_shapes import CamShape, Circle, CurveShape, Disc, Line, Plane
-from ..model.model import Body, Direction, Joint, Model, PointPair
+from ..model.model import Body, Direction, Joint, Model
+from ..point_pair import PointPair
 from ..model.constructions import Construction
 from .result import SweepResult
 
