@@ -40,7 +40,7 @@ def test_no_calques_of_english_prepositions(name, lang):
 
 def test_the_calques_replaced_by_hand():
     """The Spanish sentences the teacher asked for, word for word."""
-    assert "a una distancia s de A a lo largo de la guía" in _text("seed_001_p_pair_coriolis", "es")
+    assert "a una distancia s de A a lo largo de la *guía M*" in _text("seed_001_p_pair_coriolis", "es")
     assert "que pasa por B y forma un ángulo β con la horizontal" in _text("seed_001_rolling_pair", "es")
     assert "se mueve en el plano de la rueda con celeridad r φ̇" in _text("seed_c5_2_1_tricycle", "es")
     assert "con celeridad r ω′" in _text("seed_c5_2_2_articulated", "es")
