@@ -17,7 +17,7 @@ from .asked import worked
 from .checks import checks_section
 from .contacts import contact_section
 from .centres import centre_sites, centres_first, centres_in_steps, centres_section
-from .found_first import centres_after_found
+from .found_first import centres_after_found, refer_placed
 from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
 from .strands import strand_words
@@ -121,6 +121,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     refer_drags(ctx, doc, levels)
     refer_reverses(ctx, doc, levels)
     refer_rates(ctx, doc, levels)
+    refer_placed(doc, levels)
     translations(ctx, doc)
     material_contacts(levels)
     derived_arrows(ctx, doc, next((s for s, lv in zip(levels, wanted) if lv == "v"), None))

@@ -133,7 +133,7 @@ fig-at_pole = { $count ->
     [one] { $images } o poloan dago, { $zero } baita.
    *[other] { $images } o poloan daude, { $zero } baita.
 }
-fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
+fig-o_prime = O puntuaren irudia o′ izendatzen da, o letrak poloa izendatzen baitu.
 fig-o_prime_named = o′, O-ren irudia,
 fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
 fig-a_symbol = datu baten ikurra
@@ -552,6 +552,8 @@ how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira u
 how-parallel_paths = ({ $p } eta { $q } puntuetako bakoitza bere gurpilaren erradioaren altueran dago lur lautik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 how-translates_always = (une oro traslatzen da, abiaduretan ikusi den bezala)
 centres-found_above = { $centre } = { $value }: «{ sec-velocities }» atalean aurkitua, { $body } solidoaren abiadura-urratsean.
+centres-witness = { $name }
+centres-placed_in_step = { $centre }: { $step }. urratsean aurkitua, { $points } puntuen abiaduretatik.
 centres-found_above_step = { $centre }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, «{ sec-centres }» atalean aurkitua): { $sym } = 0.
 centre-site_s = «{ sec-centres }» atalean aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
