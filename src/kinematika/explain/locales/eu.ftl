@@ -217,7 +217,7 @@ v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: { $marks ->
         [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
        *[other] ; gorriz, urratsean aurkitutako terminoak
     }.
-a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
+a-intro = Abiadurak ezagunak direnez, termino normal guztiak eta Coriolisen termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
 eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira.
@@ -361,7 +361,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboaren aurkakoa.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa: { $vel } = 0 denez (errodadura-kontaktua), bi Coriolis terminoak nuluak dira, eta, beraz, bi azelerazio erlatiboak aurkakoak dira.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa: { $vel } = 0 denez (errodadura-kontaktua), Coriolisen bi terminoak nuluak dira, eta, beraz, bi azelerazio erlatiboak aurkakoak dira.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
@@ -457,7 +457,7 @@ fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azel
         } ekuazioen terminoak ({ $format ->
             [md] {""}
            *[other] beltzez:{" "}
-        }normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
+        }normalak eta tangentzialak, erlatiboak eta Coriolisen terminoak), bata bestearen ondoren.
     }
 fig-level_a_relative = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
