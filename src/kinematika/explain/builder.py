@@ -17,7 +17,7 @@ from .asked import worked
 from .checks import checks_section
 from .contacts import contact_section
 from .centres import centre_sites, centres_first, centres_in_steps, centres_section
-from .found_first import centres_after_found, refer_placed
+from .found_first import centres_after_found
 from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
 from .strands import strand_words
@@ -431,6 +431,20 @@ def refer_rates(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
             if n is not None:
                 # the value is written once, where the step found it (round 17a)
                 b.key, b.args["step"] = "centres.found_above_step", n
+
+
+def refer_placed(doc: Document, levels: list[Section]) -> None:
+    """The number of the step a centre's paragraph was moved into, as the step's title reads
+    after `prune` renumbered the steps: "I_planet1: placed in Step 3, from the velocities of
+    A1 and Q" — the step of the body whose centre it is, where the paragraph stands."""
+    for b in doc.blocks():
+        if not (isinstance(b, Msg) and b.key == "centres.placed_in_step"):
+            continue
+        body = b.args["body"].text
+        for sec in levels:
+            for shown, step in _steps(sec):
+                if any(isinstance(x, CentreNote) and body in x.pair for x in step.blocks):
+                    b.args["step"] = shown
 
 
 def rate_step(levels: list[Section], sym: Sym) -> Optional[int]:

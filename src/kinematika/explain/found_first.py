@@ -19,7 +19,7 @@ from __future__ import annotations
 from typing import Optional
 
 from .context import Ctx
-from .document import CentreNote, Document, Equation, Msg, Name, Section, Sym, msg, names
+from .document import CentreNote, Equation, Msg, Name, Section, Sym, msg, names
 
 # the sentences that a step starts from a centre placed in "Instant centres", and what each
 # says once the centre is placed just above it in the step
@@ -93,26 +93,10 @@ def centres_after_found(ctx: Ctx, centres: Section, velocities: Section) -> None
             assert isinstance(said, Msg)        # `_starts_from` finds only these sentences
             steps[s].blocks[at] = Msg(PLACED_BEFORE[said.key], said.args)
         points = [p for p, _, _ in note.witnesses if not str(p).startswith("I:")]
-        # the step's number is read off the page after `prune` (builder.refer_placed)
+        # the step's number is read off the page after `prune` (`builder.refer_placed`)
         centres.blocks[n] = msg("centres.placed_in_step", centre=centre, step=0, body=Name(body, "body"),
                                 points=names(points, "point", each="centres.witness"))
         ctx.worked.add(f"centre:{body}")
-
-
-def refer_placed(doc: Document, levels: list[Section]) -> None:
-    """The number of the step a centre's paragraph was moved into, as the step's title reads
-    after `prune` renumbered the steps: "I_planet1: placed in Step 3, from the velocities of
-    A1 and Q" — the step of the body whose centre it is, where the paragraph stands."""
-    from .builder import _steps
-
-    for b in doc.blocks():
-        if not (isinstance(b, Msg) and b.key == "centres.placed_in_step"):
-            continue
-        body = b.args["body"].text
-        for sec in levels:
-            for shown, step in _steps(sec):
-                if any(isinstance(x, CentreNote) and body in x.pair for x in step.blocks):
-                    b.args["step"] = shown
 
 
 def _after_equations(blocks: list, k: int, body: str) -> int:
