@@ -57,10 +57,11 @@ def test_the_centres_section_holds_what_is_asked():
     planets' centres. The planet's centres relative to the carrier and the ring (at A1, at Q)
     are named as points in its note, not listed as lines of their own (ninth round). The
     planet's note stands in the velocity step, after the equations that find v_A1 and v_Q
-    (round 20e); the centres section says where it is placed."""
+    (round 20e), at the head of the planet's own step (round 22a); the centres section says
+    where it is placed."""
     _, doc = explained("seed_c5_1_4_epicyclic")
     centres = blocks(section(doc, "sec.centres"))
-    assert any(getattr(b, "key", "") == "centres.found_above_step" and str(b.args["centre"].sub) == "ground,planet1"
+    assert any(getattr(b, "key", "") == "centres.placed_in_step" and str(b.args["centre"].sub) == "ground,planet1"
                for b in centres)
     notes = [b for b in centres + blocks(section(doc, "sec.velocities")) if isinstance(b, CentreNote)]
     pairs = {frozenset(n.pair) for n in notes}

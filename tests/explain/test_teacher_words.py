@@ -14,10 +14,10 @@ from .helpers import LANGS, SEEDS, explained, rendered
 GROUP = {"en": "solved together", "es": "resuelto en conjunto", "ca": "resolt conjuntament", "eu": "batera ebatzitako"}
 # the acceleration section's sentence that says the Coriolis terms are known
 CORIOLIS = {"en": "every Coriolis term is known", "es": "normales y de Coriolis son conocidos",
-            "ca": "normals i de Coriolis són coneguts", "eu": "Coriolis termino guztiak ezagunak"}
+            "ca": "normals i de Coriolis són coneguts", "eu": "Coriolisen termino guztiak ezagunak"}
 # the level polygon's caption naming Coriolis terms among those drawn
 CAPTION = {"en": "relative and Coriolis", "es": "relativos y de Coriolis", "ca": "relatius i de Coriolis",
-           "eu": "erlatiboak eta Coriolisenak"}
+           "eu": "erlatiboak eta Coriolisen terminoak"}
 
 
 def _text(name: str, lang: str) -> str:

@@ -121,6 +121,7 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
     refer_drags(ctx, doc, levels)
     refer_reverses(ctx, doc, levels)
     refer_rates(ctx, doc, levels)
+    refer_placed(doc, levels)
     translations(ctx, doc)
     material_contacts(levels)
     derived_arrows(ctx, doc, next((s for s, lv in zip(levels, wanted) if lv == "v"), None))
@@ -430,6 +431,20 @@ def refer_rates(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
             if n is not None:
                 # the value is written once, where the step found it (round 17a)
                 b.key, b.args["step"] = "centres.found_above_step", n
+
+
+def refer_placed(doc: Document, levels: list[Section]) -> None:
+    """The number of the step a centre's paragraph was moved into, as the step's title reads
+    after `prune` renumbered the steps: "I_planet1: placed in Step 3, from the velocities of
+    A1 and Q" — the step of the body whose centre it is, where the paragraph stands."""
+    for b in doc.blocks():
+        if not (isinstance(b, Msg) and b.key == "centres.placed_in_step"):
+            continue
+        body = b.args["body"].text
+        for sec in levels:
+            for shown, step in _steps(sec):
+                if any(isinstance(x, CentreNote) and body in x.pair for x in step.blocks):
+                    b.args["step"] = shown
 
 
 def rate_step(levels: list[Section], sym: Sym) -> Optional[int]:

@@ -19,7 +19,7 @@ from __future__ import annotations
 from typing import Optional
 
 from .context import Ctx
-from .document import CentreNote, Equation, Msg, Name, Section, Sym, msg
+from .document import CentreNote, Equation, Msg, Name, Section, Sym, msg, names
 
 # the sentences that a step starts from a centre placed in "Instant centres", and what each
 # says once the centre is placed just above it in the step
@@ -76,15 +76,26 @@ def centres_after_found(ctx: Ctx, centres: Section, velocities: Section) -> None
                           for at in [_starts_from(step, centre)] if at is not None), None)
         if first_use is not None and (first_use[0], first_use[1]) < (i, k):
             continue            # the step starts from it before the velocities: no order would do
-        k = _after_equations(steps[i].blocks, k, body)
-        steps[i].blocks.insert(k + 1, note)
-        if first_use is not None:
+        if first_use is not None and first_use[0] > i:
+            # the body's own step starts from it: the paragraph opens that step (twenty-second
+            # round (a): C5-1.4's I_planet1 closed the ring's step, then planet 1's step read it)
             s, at = first_use
-            at += 1 if s == i and at > k else 0
+            steps[s].blocks.insert(at, note)
+            at += 1
+        else:
+            k = _after_equations(steps[i].blocks, k, body)
+            steps[i].blocks.insert(k + 1, note)
+            if first_use is not None:
+                s, at = first_use
+                at += 1 if s == i and at > k else 0
+        if first_use is not None:
             said = steps[s].blocks[at]
             assert isinstance(said, Msg)        # `_starts_from` finds only these sentences
             steps[s].blocks[at] = Msg(PLACED_BEFORE[said.key], said.args)
-        centres.blocks[n] = msg("centres.found_above_step", centre=centre, step=i + 1, body=Name(body, "body"))
+        points = [p for p, _, _ in note.witnesses if not str(p).startswith("I:")]
+        # the step's number is read off the page after `prune` (`builder.refer_placed`)
+        centres.blocks[n] = msg("centres.placed_in_step", centre=centre, step=0, body=Name(body, "body"),
+                                points=names(points, "point", each="centres.witness"))
         ctx.worked.add(f"centre:{body}")
 
 

@@ -95,8 +95,10 @@ def lettering(ctx: Ctx, labels: list[str]) -> dict[str, Any]:
 
 
 def pole_notes(fig: Figure, poly: "_Builder") -> list:
-    """The caption's word on a label it would not explain: the image of a point O is o′,
-    since o is the pole (C5-E.1: O the track's centre, whose point of the wheels moves);
+    """The caption's word on a label it would not explain: the image of O is lettered o′
+    because the letter o names the pole (C5-E.1: O the track's centre, whose point of the
+    wheels moves; said so, and not "since o is the pole", which read as if O were at the
+    pole where it is not: C5-1.2, C5-2.2, twenty-second round (a));
     a point whose lower-case letter is a parameter's symbol is primed the same way, said
     once (C5-E.6's c′ beside the wheelbase c). Where o′ itself lies at the pole, the
     at-pole sentence names it ("o′, the image of O, is at the pole o, since a_O = 0",

@@ -169,7 +169,7 @@ fig-at_pole = { $count ->
     [one] { $images } és al pol o, ja que { $zero }.
    *[other] { $images } són al pol o, ja que { $zero }.
 }
-fig-o_prime = La imatge del punt O és o′, ja que o és el pol.
+fig-o_prime = La imatge d’O es designa o′, perquè la lletra o designa el pol.
 fig-o_prime_named = o′, la imatge d’O,
 fig-primed = La imatge del punt { $point } és { $image } ({ $symbol }: { $what }).
 fig-a_symbol = una dada
@@ -987,6 +987,11 @@ centres-found_above = { $centre } = { $value }: trobat a «{ sec-velocities }»,
         [vowel] d’{ $body }
        *[other] de { $body }
     }.
+centres-witness = { ELISION($name) ->
+        [vowel] d’{ $name }
+       *[other] de { $name }
+    }
+centres-placed_in_step = { $centre }: trobat al pas { $step }, a partir de les velocitats { $points }.
 centres-found_above_step = { $centre }: trobat al pas { $step }, amb les velocitats { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }

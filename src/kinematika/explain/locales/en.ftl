@@ -133,7 +133,7 @@ fig-at_pole = { $count ->
     [one] { $images } is at the pole o, since { $zero }.
    *[other] { $images } are at the pole o, since { $zero }.
 }
-fig-o_prime = The image of the point O is o′, since o is the pole.
+fig-o_prime = The image of O is lettered o′, because the letter o names the pole.
 fig-o_prime_named = o′, the image of O,
 fig-primed = The image of the point { $point } is { $image } ({ $symbol } is the { $what }).
 fig-a_symbol = symbol of a datum
@@ -687,6 +687,8 @@ how-glides = ({ $p } and { $q } both move on the line { $line } at every instant
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the flat ground, so they move on parallel straight lines at every instant: the body translates without turning)
 how-translates_always = (it translates at every instant, as the velocities showed)
 centres-found_above = { $centre } = { $value }: placed in “{ sec-velocities }”, in the velocity step of { $body }.
+centres-witness = { $name }
+centres-placed_in_step = { $centre }: placed in Step { $step }, from the velocities of { $points }.
 centres-found_above_step = { $centre }: placed in Step { $step }, with the velocities of { $body }.
 centre-site = { $point } is the instant centre { $centre } of { $body } relative to { $frame }, placed in “{ sec-centres }”: { $sym } = 0.
 centre-site_s = { $centre }, placed in “{ sec-centres }”, has no velocity: { $sym } = 0.

@@ -139,7 +139,7 @@ fig-at_pole = { $count ->
     [one] { $images } está en el polo o, ya que { $zero }.
    *[other] { $images } están en el polo o, ya que { $zero }.
 }
-fig-o_prime = La imagen del punto O es o′, ya que o es el polo.
+fig-o_prime = La imagen de O se designa o′, porque la letra o designa el polo.
 fig-o_prime_named = o′, la imagen de O,
 fig-primed = La imagen del punto { $point } es { $image } ({ $symbol }: { $what }).
 fig-a_symbol = un dato
@@ -635,6 +635,8 @@ how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el só
 how-parallel_paths = ({ $p } y { $q } se mantienen siempre a una altura igual al radio de su rueda sobre el suelo plano, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
 how-translates_always = (se traslada en todo instante, como se ha visto en las velocidades)
 centres-found_above = { $centre } = { $value }: hallado en «{ sec-velocities }», en el paso de velocidades de { $body }.
+centres-witness = de { $name }
+centres-placed_in_step = { $centre }: hallado en el paso { $step }, a partir de las velocidades { $points }.
 centres-found_above_step = { $centre }: hallado en el paso { $step }, con las velocidades de { $body }.
 centre-site = { $point } es el CIR { $centre } de { $body } respecto de { $frame }, hallado en «{ sec-centres }»: { $sym } = 0.
 centre-site_s = { $centre }, hallado en «{ sec-centres }», no tiene velocidad: { $sym } = 0.

@@ -133,7 +133,7 @@ fig-at_pole = { $count ->
     [one] { $images } o poloan dago, { $zero } baita.
    *[other] { $images } o poloan daude, { $zero } baita.
 }
-fig-o_prime = O puntuaren irudia o′ da, o poloa baita.
+fig-o_prime = O puntuaren irudia o′ izendatzen da, o letrak poloa izendatzen baitu.
 fig-o_prime_named = o′, O-ren irudia,
 fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
 fig-a_symbol = datu baten ikurra
@@ -217,7 +217,7 @@ v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: { $marks ->
         [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
        *[other] ; gorriz, urratsean aurkitutako terminoak
     }.
-a-intro = Abiadurak ezagunak direnez, termino normal eta Coriolis termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
+a-intro = Abiadurak ezagunak direnez, termino normal guztiak eta Coriolisen termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
 eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira.
@@ -361,7 +361,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboaren aurkakoa.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa: { $vel } = 0 denez (errodadura-kontaktua), bi Coriolis terminoak nuluak dira, eta, beraz, bi azelerazio erlatiboak aurkakoak dira.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa: { $vel } = 0 denez (errodadura-kontaktua), Coriolisen bi terminoak nuluak dira, eta, beraz, bi azelerazio erlatiboak aurkakoak dira.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
@@ -457,7 +457,7 @@ fig-level_a = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azel
         } ekuazioen terminoak ({ $format ->
             [md] {""}
            *[other] beltzez:{" "}
-        }normalak eta tangentzialak, erlatiboak eta Coriolisenak), bata bestearen ondoren.
+        }normalak eta tangentzialak, erlatiboak eta Coriolisen terminoak), bata bestearen ondoren.
     }
 fig-level_a_relative = Azelerazioen poligonoa, eskalan: o polotik, puntu bakoitzaren azelerazioa{ $format ->
         [md] {""}
@@ -552,6 +552,8 @@ how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira u
 how-parallel_paths = ({ $p } eta { $q } puntuetako bakoitza bere gurpilaren erradioaren altueran dago lur lautik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 how-translates_always = (une oro traslatzen da, abiaduretan ikusi den bezala)
 centres-found_above = { $centre } = { $value }: «{ sec-velocities }» atalean aurkitua, { $body } solidoaren abiadura-urratsean.
+centres-witness = { $name }
+centres-placed_in_step = { $centre }: { $step }. urratsean aurkitua, { $points } puntuen abiaduretatik.
 centres-found_above_step = { $centre }: { $step }. urratsean aurkitua, { $body } solidoaren abiadurekin.
 centre-site = { $point } puntua { $body } solidoaren biraketa-zentro instantaneoa da { $frame } solidoarekiko ({ $centre }, «{ sec-centres }» atalean aurkitua): { $sym } = 0.
 centre-site_s = «{ sec-centres }» atalean aurkitutako { $centre } zentroak ez du abiadurarik: { $sym } = 0.
