@@ -55,6 +55,8 @@ structure-frame = { $body } (fix)
 structure-shaped = { $body }, { $shape } de radi { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
+# the fixed body with no shape, named otherwise than the ground (a ceiling): the ground's word the text uses, tied to it (twenty-second round b)
+structure-frame_named = { $body } (fix: { $ground })
 structure-welded = { $bodies } { $bodies_n ->
         [one] és fix a
        *[other] són fixos a
