@@ -153,14 +153,12 @@ def _body_cell(ctx: Ctx, name: str):
     shapeless frame named otherwise (C5-1.1's and C5-1.5's ceiling) is marked fixed and tied,
     "*ceiling* (fixed: the *ground*)", "*sabaia* (*lurra*, finkoa)" (twenty-second round b:
     the row said "*sabaia* (finkoa)" and the text "*lurrarekiko*")."""
-    if name == ctx.frame and not _named_ground(ctx, name):
-        if ground_part(ctx):
-            return msg("structure.frame_ground", body=Name(name, "body", bare=True),
-                       ground=Name(name, "body", bare=True, reference=True))
+    if name == ctx.frame and ground_part(ctx) and not _named_ground(ctx, name):
+        return msg("structure.frame_ground", body=Name(name, "body", bare=True),
+                   ground=Name(name, "body", bare=True, reference=True))
+    if name == ctx.frame:     # the catalogue ties the ground's word where the language's name differs
         return msg("structure.frame_named", body=Name(name, "body", bare=True),
                    ground=Name(name, "body", reference=True, centre=True))
-    if name == ctx.frame:
-        return msg("structure.frame", body=Name(name, "body", bare=True))
     if ctx.fixed(name):
         return msg("structure.fixed_part", body=Name(name, "body", bare=True), frame=body(ctx.frame))
     return Name(name, "body", bare=True)

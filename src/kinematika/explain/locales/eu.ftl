@@ -33,12 +33,14 @@ col-answer = erantzuna
 structure-subscripts = Notazioa: { $pairs }.
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
 structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuko puntuaren abiadura da
-structure-frame = { $body } (finkoa)
 structure-shaped = { $body }, { $radius } erradioko { $shape }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
-# the fixed body with no shape, named otherwise than the ground (a ceiling): the ground's word the text uses, tied to it (twenty-second round b)
-structure-frame_named = { $body } ({ $ground }, finkoa)
+# the fixed body with no shape: named otherwise than the ground (a ceiling), the ground's word the text uses is tied to it (twenty-second round b)
+structure-frame_named = { $body } { SAME($body, $ground) ->
+        [yes] (finkoa)
+       *[no] ({ $ground }, finkoa)
+    }
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
         [one] dago: haren zati da eta ez da mugitzen
        *[other] daude: haren zati dira eta ez dira mugitzen
