@@ -104,12 +104,26 @@ def word(value: Any) -> str:
     return str(getattr(value, "plain", value))
 
 
+# a leading article in the four languages, which a name's comparison with another leaves out
+LEADING_ARTICLE = re.compile(r"(?i)^(the|el|la|els|les|los|las|l[’'])\s*")
+
+
+def same(first: Any, second: Any) -> str:
+    """`yes` when two name arguments say the same word once their articles are left out (a
+    frame the model calls *el suelo* and the ground's word the text uses for the reference,
+    el *suelo*): the frame's row then needs no "(fixed: the *ground*)" (twenty-second round b,
+    decided per language: C5-1.4 calls its frame *bastidor* in Spanish only); else `no`."""
+    def bare(value: Any) -> str:
+        return LEADING_ARTICLE.sub("", str(getattr(value, "plain", value)).strip()).casefold()
+    return "yes" if bare(first) == bare(second) else "no"
+
+
 # fluent.runtime (0.4) annotates a function as returning a FluentType, but its resolver takes a plain
 # str too (resolver.match compares a select's key with ==, resolve() passes a str through): ours
 # return the word a select expression matches, so the cast only states what the resolver accepts.
 FUNCTIONS = cast(dict[str, Callable[[Any], FluentType]], {"ELISION": elision, "COUNT": count,
                                                           "FIXED": says_fixed, "WORD": word,
-                                                          "GENDER": gender})
+                                                          "GENDER": gender, "SAME": same})
 
 
 class Catalogue:

@@ -147,12 +147,18 @@ def _body_cell(ctx: Ctx, name: str):
     """The structure table's body: the frame marked fixed — or, when the ground is named
     after a part of it (`ground_part`: C5-1.6's *polea finkoa*), marked with the ground's word
     the text later writes for the reference, "*polea finkoa* (*lurra*)" — and a body welded
-    to it marked part of it (`welded_to_frame`)."""
+    to it marked part of it (`welded_to_frame`). One rule ties the model's name to the ground's
+    word wherever they differ, since the text names the reference of every instant centre "the
+    *ground*" (`Name.centre`): a part with a shape is the ground, "*polea finkoa* (*lurra*)"; a
+    shapeless frame named otherwise (C5-1.1's and C5-1.5's ceiling) is marked fixed and tied,
+    "*ceiling* (fixed: the *ground*)", "*sabaia* (*lurra*, finkoa)" (twenty-second round b:
+    the row said "*sabaia* (finkoa)" and the text "*lurrarekiko*")."""
     if name == ctx.frame and ground_part(ctx) and not _named_ground(ctx, name):
         return msg("structure.frame_ground", body=Name(name, "body", bare=True),
                    ground=Name(name, "body", bare=True, reference=True))
-    if name == ctx.frame:
-        return msg("structure.frame", body=Name(name, "body", bare=True))
+    if name == ctx.frame:     # the catalogue ties the ground's word where the language's name differs
+        return msg("structure.frame_named", body=Name(name, "body", bare=True),
+                   ground=Name(name, "body", reference=True, centre=True))
     if ctx.fixed(name):
         return msg("structure.fixed_part", body=Name(name, "body", bare=True), frame=body(ctx.frame))
     return Name(name, "body", bare=True)

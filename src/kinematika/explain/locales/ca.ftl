@@ -51,10 +51,14 @@ structure-subscript_member = { $sym } és la velocitat del punt { ELISION($body)
         [vowel] d’{ $body }
        *[other] de { $body }
     } situat a { $point }
-structure-frame = { $body } (fix)
 structure-shaped = { $body }, { $shape } de radi { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
+# the fixed body with no shape: named otherwise than the ground (a ceiling), the ground's word the text uses is tied to it (twenty-second round b)
+structure-frame_named = { $body } { SAME($body, $ground) ->
+        [yes] (fix)
+       *[no] (fix: { $ground })
+    }
 structure-welded = { $bodies } { $bodies_n ->
         [one] és fix a
        *[other] són fixos a

@@ -33,10 +33,14 @@ col-answer = erantzuna
 structure-subscripts = Notazioa: { $pairs }.
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
 structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuko puntuaren abiadura da
-structure-frame = { $body } (finkoa)
 structure-shaped = { $body }, { $radius } erradioko { $shape }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
 structure-frame_ground = { $body } ({ $ground })
+# the fixed body with no shape: named otherwise than the ground (a ceiling), the ground's word the text uses is tied to it (twenty-second round b)
+structure-frame_named = { $body } { SAME($body, $ground) ->
+        [yes] (finkoa)
+       *[no] ({ $ground }, finkoa)
+    }
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
         [one] dago: haren zati da eta ez da mugitzen
        *[other] daude: haren zati dira eta ez dira mugitzen
@@ -210,8 +214,11 @@ step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
 v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: { $marks ->
-        [1] M: modulua ezaguna; D: norabidea ezaguna (termino baten azpian letra hauek beti marka hauek dira, ez inoiz { $clash } puntua)
-        [2] M: modulua ezaguna; D: norabidea ezaguna (termino baten azpian letra hauek beti marka hauek dira, ez inoiz M eta D puntuak)
+        [1] M: modulua ezaguna; D: norabidea ezaguna (marka gisa, { WORD($clash) ->
+            [M] M letrak modulu ezaguna
+           *[other] D letrak norabide ezaguna
+        } adierazten du beti, ez { $clash } puntua)
+        [2] M: modulua ezaguna; D: norabidea ezaguna (marka gisa, M letrak modulu ezaguna adierazten du beti, ez M puntua, eta D letrak norabide ezaguna, ez D puntua)
        *[other] M: modulua ezaguna; D: norabidea ezaguna
     }; ?: ezezaguna (norabidea edo modulua); ⊥ eta ∥ ikurrek norabide ezaguna adierazten dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
         [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
@@ -635,7 +642,7 @@ centre-line-normal = { $point } kontaktuko normal komuna (solidoak elkarren gain
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = lurra
 # zentro bat, bi puntuen zuzenarekiko perpendikularrak diren bi abiadura paralelotatik (apunteen eraikuntza proportzionala)
-centre-parallel-between = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
-centre-parallel-outside = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
+centre-parallel-between = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
+centre-parallel-outside = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
 # a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
 term-magnitude = { $mag } = { $how }, { $point } punturantz: { $sym } = { $value }
