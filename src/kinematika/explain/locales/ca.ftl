@@ -864,23 +864,27 @@ centre-line-guide = la perpendicular a la guia per { $pivot } (al seu peu { $piv
         [vowel] d’{ $b }
        *[other] de { $b }
     } a { $pivot }′ segueix la guia)
+centre-carried-slip = {" "}({ $b } no { COUNT($b) ->
+        [many] llisquen
+       *[one] llisca
+    } sobre { $body }, de manera que el seu punt { $point } té la velocitat de { $body } en aquest punt)
 centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
-    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+    }{ $why1 }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
         [vowel] d’{ $c2 }
        *[other] de { $c2 }
-    }: totes dues velocitats respecte { ELISION($frame) ->
+    }{ $why2 }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
 centre-carried-between_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
-    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+    }{ $why1 }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
         [vowel] d’{ $c2 }
        *[other] de { $c2 }
-    }: totes dues velocitats respecte { ELISION($frame) ->
+    }{ $why2 }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $dist } { ELISION($near) ->
@@ -890,20 +894,20 @@ centre-carried-between_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1
 centre-carried-outside = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
-    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+    }{ $why1 }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
         [vowel] d’{ $c2 }
        *[other] de { $c2 }
-    }: totes dues velocitats respecte { ELISION($frame) ->
+    }{ $why2 }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 centre-carried-outside_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
-    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+    }{ $why1 }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
         [vowel] d’{ $c2 }
        *[other] de { $c2 }
-    }: totes dues velocitats respecte { ELISION($frame) ->
+    }{ $why2 }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $dist } { ELISION($near) ->

@@ -1,0 +1,50 @@
+"""Issue 30, twenty-third round (a): a reader's items on main's pages.
+
+- a witness of the proportional construction that is a rolling contact says why it moves
+  with the other body: the no-slip condition (C5-1.4: "… and Q with the *ring* about O
+  (*planet 1* does not slip on the *ring*, so its point Q has the velocity of the *ring*
+  there)"), as `centre.line.rolls` says it;
+"""
+
+from __future__ import annotations
+
+from kinematika.explain.document import CentreNote
+from kinematika.explain.kinds import rolls
+
+from .helpers import LANGS, SEEDS, explained, over, rendered
+
+# the no-slip clause each catalogue writes, by its opening words
+SLIP = {"en": "does not slip on", "es": "no desliza sobre", "ca": "no llisca sobre",
+        "eu": "ez da irristatzen"}
+
+
+def _notes(doc) -> list[CentreNote]:
+    """Every proportional centre note said with its pivots (`centre.carried.*`)."""
+    return [b for s in doc.sections for b in s.leaves()
+            if isinstance(b, CentreNote) and b.how == "proportional" and b.pivots and len(b.witnesses) == 2]
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_a_rolling_witness_says_it_does_not_slip(name: str, lang: str) -> None:
+    """Each witness of "P moves with k1 about c1, and Q with k2 about c2" that is the contact
+    of a rolling joint between k and the body says the no-slip reason (the model decides, not
+    the note: a rolling joint between the witness's body and the centre's body); a pin says none."""
+    sol, doc = explained(name)
+    md = rendered(name, lang)
+    for note in _notes(doc):
+        b = note.pair[1]
+        rolling = [k for k in note.via if any(rolls(j) and {j.a, j.b} == {k, b} for j in sol.model.joints)]
+        line = next(x for x in md.splitlines() if x.startswith("I_") and f" {note.witnesses[0][0]} " in x
+                    and f" {note.witnesses[1][0]} " in x and ("(" in x or not rolling))
+        assert line.count(SLIP[lang]) == len(rolling), line
+
+
+def test_the_epicyclic_planet_rolls_on_the_ring() -> None:
+    """C5-1.4, the reader's words, four languages (the old page gave no reason)."""
+    want = {"en": "and Q with the *ring* about O (*planet 1* does not slip on the *ring*, so its point Q has the velocity of the *ring* there): both",
+            "es": "y Q con la *corona* alrededor de O (el *satélite 1* no desliza sobre la *corona*, así que su punto Q tiene la velocidad de la *corona* en ese punto): ambas",
+            "ca": "i Q amb la *corona* al voltant d’O (la *rodeta 1* no llisca sobre la *corona*, de manera que el seu punt Q té la velocitat de la *corona* en aquest punt): totes",
+            "eu": "eta Q puntua *koroarekin* O puntuaren inguruan (*1. satelitea* ez da irristatzen *koroaren* gainean: bere Q puntuak *koroaren* abiadura du bertan): bi"}
+    for lang in LANGS:
+        assert want[lang] in rendered("seed_c5_1_4_epicyclic", lang), lang
+    assert "A1 moves with the *carrier* about O, and" in rendered("seed_c5_1_4_epicyclic", "en")
