@@ -8,6 +8,8 @@
 
 from __future__ import annotations
 
+import re
+
 from kinematika.explain.document import CentreNote
 from kinematika.explain.kinds import rolls
 
@@ -48,3 +50,17 @@ def test_the_epicyclic_planet_rolls_on_the_ring() -> None:
     for lang in LANGS:
         assert want[lang] in rendered("seed_c5_1_4_epicyclic", lang), lang
     assert "A1 moves with the *carrier* about O, and" in rendered("seed_c5_1_4_epicyclic", "en")
+
+
+TANGENT = {"en": "unit tangent", "es": "tangente unitaria", "ca": "tangent unitària", "eu": "ukitzaile unitarioa"}
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_the_unit_tangent_is_the_velocitys_unit_vector(name: str, lang: str) -> None:
+    """Every answer "unit tangent t = …" writes it as the velocity's unit vector, t = v_P/|v_P|
+    = (1, 0), with the point the speed |v_P| just before it names (C5-1.7: "t = (1, 0)" had
+    no working)."""
+    md = rendered(name, lang)
+    for m in re.finditer(r"\|(v_\S+?)\| = [^;]*; " + re.escape(TANGENT[lang]) + r" t = ([^;]*);", md):
+        v = m.group(1)
+        assert m.group(2).startswith(f"{v}/|{v}| = ("), m.group(0)
