@@ -10,10 +10,12 @@ from __future__ import annotations
 
 import re
 
+import yaml
+
 from kinematika.explain.document import CentreNote
 from kinematika.explain.kinds import rolls
 
-from .helpers import LANGS, SEEDS, explained, over, rendered
+from .helpers import EXAMPLES, LANGS, SEEDS, explained, over, rendered
 
 # the no-slip clause each catalogue writes, by its opening words
 SLIP = {"en": "does not slip on", "es": "no desliza sobre", "ca": "no llisca sobre",
@@ -64,3 +66,40 @@ def test_the_unit_tangent_is_the_velocitys_unit_vector(name: str, lang: str) -> 
     for m in re.finditer(r"\|(v_\S+?)\| = [^;]*; " + re.escape(TANGENT[lang]) + r" t = ([^;]*);", md):
         v = m.group(1)
         assert m.group(2).startswith(f"{v}/|{v}| = ("), m.group(0)
+
+
+# each catalogue's word for a contact point in the fixed body's row
+CONTACT = {"en": "contact", "es": "contacto", "ca": "contacte", "eu": "kontaktu-punt"}
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_the_fixed_row_says_a_wheels_point_is_a_contact(name: str, lang: str) -> None:
+    """A point the fixed body carries only for a wheel or rolling joint (`at:` in the model,
+    no pin of the frame there) is listed in its row as the contact it is, never bare beside
+    its own points (C5-2.1: "C1, C2, F" was read as the wheels' centres)."""
+    model = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text())
+    frame = next(iter(model["bodies"]))
+    kinds = {"wheel", "rolling"}
+    at = [j for j in model.get("joints", []) if frame in j.get("bodies", []) and j.get("at")]
+    pins = {j["at"] for j in at if j["type"] not in kinds}
+    own = model["bodies"][frame]
+    own = own.get("points", []) if isinstance(own, dict) else own       # the points the frame carries
+    contacts = [j["at"] for j in at if j["type"] in kinds and j["at"] not in pins and j["at"] in own]
+    if not contacts:
+        return
+    row = next(x for x in rendered(name, lang).splitlines() if x.startswith("| 1 |"))
+    cell = row.rstrip(" |").rsplit("|", 1)[1]
+    assert CONTACT[lang] in cell, row
+    bare = [p.strip() for p in re.split(r",| and | y | i | eta ", cell.split("(")[0] if lang == "eu" else cell.split(CONTACT[lang])[0])]
+    if lang == "eu":       # "G, J eta K (kontaktu-puntuak)": the contacts are the last ones before the bracket
+        bare = [p for p in bare if p not in contacts]
+    assert not set(bare) & set(contacts), row
+
+
+def test_the_tricycle_ground_row() -> None:
+    """C5-2.1, the reader's item in four languages."""
+    want = {"en": "| contacts of the wheels at C1, C2, and F |", "es": "| contactos de las ruedas en C1, C2 y F |",
+            "ca": "| contactes de les rodes a C1, C2 i F |", "eu": "| C1, C2 eta F (gurpilen kontaktu-puntuak) |"}
+    for lang in LANGS:
+        row = next(x for x in rendered("seed_c5_2_1_tricycle", lang).splitlines() if x.startswith("| 1 |"))
+        assert row.endswith(want[lang]), row

@@ -66,6 +66,14 @@ structure-welded = { $bodies } { $bodies_n ->
         [one] en forma part i no es mou
        *[other] en formen part i no es mouen
     }; tots els seus punts tenen velocitat i acceleració nul·les.
+structure-contacts_wheel = { $points_n ->
+        [one] contacte d’una roda a { $points }
+       *[other] contactes de les rodes a { $points }
+    }
+structure-contacts_rolling = { $points_n ->
+        [one] punt de contacte { $points }
+       *[other] punts de contacte { $points }
+    }
 structure-fixed_part = { $body } (fix a { $frame })
 structure-dof = El mecanisme té { $dof ->
         [one] un grau

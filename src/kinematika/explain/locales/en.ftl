@@ -48,6 +48,14 @@ structure-welded = { $bodies } { $bodies_n ->
         [one] it is part of it and does not move; all its
        *[other] they are part of it and do not move; all their
     } points have zero velocity and acceleration.
+structure-contacts_wheel = { $points_n ->
+        [one] contact of a wheel at { $points }
+       *[other] contacts of the wheels at { $points }
+    }
+structure-contacts_rolling = { $points_n ->
+        [one] contact point { $points }
+       *[other] contact points { $points }
+    }
 structure-fixed_part = { $body } (fixed to { $frame })
 structure-dof = The mechanism has { $dof ->
         [one] one degree

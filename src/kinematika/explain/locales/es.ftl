@@ -54,6 +54,14 @@ structure-welded = { $bodies } { COUNT($bodies) ->
            *[other] están fijados a { $frame }: forman parte de él y no se mueven
         }
     }; todos sus puntos tienen velocidad y aceleración nulas.
+structure-contacts_wheel = { $points_n ->
+        [one] contacto de una rueda en { $points }
+       *[other] contactos de las ruedas en { $points }
+    }
+structure-contacts_rolling = { $points_n ->
+        [one] punto de contacto { $points }
+       *[other] puntos de contacto { $points }
+    }
 structure-fixed_part = { $body } (fijo a { $frame })
 structure-dof = El mecanismo tiene { $dof ->
         [one] un grado

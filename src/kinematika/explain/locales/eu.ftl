@@ -48,6 +48,14 @@ structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n 
         [one] haren
        *[other] haien
     } puntu guztien abiadura eta azelerazioa nuluak dira.
+structure-contacts_wheel = { $points_n ->
+        [one] { $points } (gurpil baten kontaktu-puntua)
+       *[other] { $points } (gurpilen kontaktu-puntuak)
+    }
+structure-contacts_rolling = { $points_n ->
+        [one] { $points } (kontaktu-puntua)
+       *[other] { $points } (kontaktu-puntuak)
+    }
 structure-fixed_part = { $body } ({ $frame } solidoari zurrunki lotuta: finkoa)
 structure-dof = Mekanismoak { $dof ->
         [one] askatasun-gradu bat du
