@@ -41,10 +41,10 @@ def _points_cell(ctx: Ctx, body: str) -> list:
     other = {j.at for j in joints if not knife_edge(j) and not rolls(j)}      # a pin there too: its own point
     contacts = {p for p in wheels + rolling if p not in other and p in names}
     cell: list = [point(p) for p in names if p not in contacts]
-    for kind, group in (("wheel", wheels), ("rolling", rolling)):
+    for key, group in (("structure.contacts_wheel", wheels), ("structure.contacts_rolling", rolling)):
         said = [p for p in names if p in group and p in contacts]        # the row's own order
         if said:
-            cell.append(msg(f"structure.contacts_{kind}", points=Names([point(p) for p in said])))
+            cell.append(msg(key, points=Names([point(p) for p in said])))
             contacts -= set(said)
     return cell
 
