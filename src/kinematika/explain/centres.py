@@ -456,14 +456,26 @@ def _kennedy(ctx: Ctx, note: CentreNote, found: dict, before: list) -> None:
             note.witnesses.append((_site_name(ctx, where, (b, k)) or f"I:{k},{b}", ctx.clean(tuple(where), "len"),
                                    ctx.clean(_velocity_at(ctx, b, a, where), "speed")))
             note.pivots.append(_pivot(ctx, found, a, k))
+            note.slips.append(_carried_slip(ctx, note.witnesses[-1][0], k, b))
     if a != ctx.frame or not all(note.pivots):
-        note.pivots = []
+        note.pivots, note.slips = [], []
     if len(note.witnesses) == 2:
         u, w = (ctx.num(v) for _, _, v in note.witnesses)
         note.side = "between" if u[0] * w[0] + u[1] * w[1] < 0 else "outside"
         _nearer(ctx, note)
     else:
         note.how = "velocities"
+
+
+def _carried_slip(ctx: Ctx, w: str, k: str, b: str) -> Optional[Msg]:
+    """Why b's point W, a witness of the proportional construction, moves with k: at a
+    rolling contact of b on k it is the no-slip condition (C5-1.4: "Q with the *ring* about
+    O (*planet 1* does not slip on the *ring*, so its point Q has the ring's velocity
+    there)"), said as `centre.line.rolls` says it (twentieth round (g)); None at a pin, where
+    W simply moves with k, or for a witness with no name."""
+    if _no_slip(ctx, k, b) != "rolls" or w.startswith("I:"):
+        return None
+    return msg("centre.carried.slip", b=Name(b, "body"), body=Name(k, "body"), point=Name(w))
 
 
 def _nearer(ctx: Ctx, note: CentreNote) -> None:

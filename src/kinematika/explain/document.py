@@ -310,6 +310,7 @@ class CentreNote:
     pivots: list = field(default_factory=list)     # proportional: what each witness turns about
     step: Optional[int] = None                     # rate: the step that found ω (builder.refer_rates)
     near: str = ""                                 # proportional with pivots: the witness `distance` is from
+    slips: list = field(default_factory=list)      # proportional with pivots: each witness's no-slip reason (Msg) or None
 
 
 @dataclass(frozen=True)

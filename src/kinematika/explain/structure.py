@@ -10,7 +10,7 @@ from ..model.body_shapes import Circle, Disc
 from ..point_pair import PointPair
 from .freedom import dof_unsaid
 from .context import Ctx
-from .kinds import kind_key, on_fixed_line, rolls, welds
+from .kinds import kind_key, knife_edge, on_fixed_line, rolls, welds
 from .document import Arrow, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Section, Sym, Table, Value, body, msg, names, point
 from .order import Step, as_found, merge_vehicles       # the order lists the steps as the text does them
 
@@ -27,6 +27,28 @@ def _points_on(ctx: Ctx, body: str) -> list[str]:
     return list(dict.fromkeys(names))
 
 
+def _points_cell(ctx: Ctx, body: str) -> list:
+    """A body's cell of the points column. The fixed body lists a point it carries only as the
+    contact of a wheel or rolling joint as the contact it is, "contacts of the wheels at C1,
+    C2, F" (twenty-third round (a): C5-2.1's ground row "C1, C2, F" was read as the wheels'
+    centres, which they also name); its own points, and every other body's, by name."""
+    names = _points_on(ctx, body)
+    if body != ctx.frame or not ctx.planar:
+        return [point(p) for p in names]
+    joints = [j for j in ctx.model.joints if body in (j.a, j.b)]
+    wheels = [j.at or ctx.contact(j) for j in joints if knife_edge(j)]
+    rolling = [j.at or ctx.contact(j) for j in joints if rolls(j) and not knife_edge(j)]
+    other = {j.at for j in joints if not knife_edge(j) and not rolls(j)}      # a pin there too: its own point
+    contacts = {p for p in wheels + rolling if p not in other and p in names}
+    cell: list = [point(p) for p in names if p not in contacts]
+    for key, group in (("structure.contacts_wheel", wheels), ("structure.contacts_rolling", rolling)):
+        said = [p for p in names if p in group and p in contacts]        # the row's own order
+        if said:
+            cell.append(msg(key, points=Names([point(p) for p in said])))
+            contacts -= set(said)
+    return cell
+
+
 def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     """The section on structure, before any motion: the bodies (numbered as the figures number
     them) with their points and shapes, the joints with their bodies and places, the degrees of
@@ -36,7 +58,7 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model = ctx.model
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
-    bodies = [[Name(name, "index"), _shaped(ctx, name, _body_cell(ctx, name)), [point(p) for p in _points_on(ctx, name)]]
+    bodies = [[Name(name, "index"), _shaped(ctx, name, _body_cell(ctx, name)), _points_cell(ctx, name)]
               for name in sorted(model.bodies, key=lambda n: numbers[n])]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points")], bodies))
     sec.add(msg("structure.subscripts",          # ω_t: which body (render); a part welded to the frame has no rate

@@ -27,12 +27,15 @@ class Intrinsic(QuestionKind):
         return intrinsic(sol, q)
 
     def part(self, words: Words, q: Asked, key: str, sub: Optional[str]) -> Any:
-        """|v_C|, the tangent t, a_C^t · t, |a_C^n|, a_C^t, a_C^n: scalars told from vectors by
+        """|v_C|, the tangent t = v_C/|v_C|, a_C^t · t, |a_C^n|, a_C^t, a_C^n: scalars told from vectors by
         how they are written."""
         p = words.point(q)
         t = words.sym("t", vector=True)
-        symbols = {"speed": words.inline(["|", words.sym("v", p), "|"]),
-                   "tangent": words.inline([words.msg("ans.tangent"), " ", t]),
+        v = words.sym("v", p)
+        symbols = {"speed": words.inline(["|", v, "|"]),
+                   # the tangent as the unit vector of the velocity, so a student reproduces it
+                   # from |v_C| just above: "unit tangent t = v_C/|v_C| = (1, 0)"
+                   "tangent": words.inline([words.msg("ans.tangent"), " ", t, " = ", v, "/|", v, "|"]),
                    "tangential": words.inline([words.sym("a", p, "t"), " · ", t]),
                    "normal": words.inline(["|", words.sym("a", p, "n"), "|"]),
                    "tangential_vector": words.sym("a", p, "t"), "normal_vector": words.sym("a", p, "n")}

@@ -66,6 +66,14 @@ structure-welded = { $bodies } { $bodies_n ->
         [one] en forma part i no es mou
        *[other] en formen part i no es mouen
     }; tots els seus punts tenen velocitat i acceleració nul·les.
+structure-contacts_wheel = { $points_n ->
+        [one] contacte d’una roda a { $points }
+       *[other] contactes de les rodes a { $points }
+    }
+structure-contacts_rolling = { $points_n ->
+        [one] punt de contacte { $points }
+       *[other] punts de contacte { $points }
+    }
 structure-fixed_part = { $body } (fix a { $frame })
 structure-dof = El mecanisme té { $dof ->
         [one] un grau
@@ -864,23 +872,27 @@ centre-line-guide = la perpendicular a la guia per { $pivot } (al seu peu { $piv
         [vowel] d’{ $b }
        *[other] de { $b }
     } a { $pivot }′ segueix la guia)
+centre-carried-slip = {" "}({ $b } no { COUNT($b) ->
+        [many] llisquen
+       *[one] llisca
+    } sobre { $body }, de manera que el seu punt { $point } té la velocitat de { $body } en aquest punt)
 centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
-    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+    }{ $why1 }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
         [vowel] d’{ $c2 }
        *[other] de { $c2 }
-    }: totes dues velocitats respecte { ELISION($frame) ->
+    }{ $why2 }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
 centre-carried-between_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
-    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+    }{ $why1 }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
         [vowel] d’{ $c2 }
        *[other] de { $c2 }
-    }: totes dues velocitats respecte { ELISION($frame) ->
+    }{ $why2 }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $dist } { ELISION($near) ->
@@ -890,20 +902,20 @@ centre-carried-between_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1
 centre-carried-outside = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
-    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+    }{ $why1 }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
         [vowel] d’{ $c2 }
        *[other] de { $c2 }
-    }: totes dues velocitats respecte { ELISION($frame) ->
+    }{ $why2 }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 centre-carried-outside_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
-    }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
+    }{ $why1 }, i { $q } amb { $k2 } al voltant { ELISION($c2) ->
         [vowel] d’{ $c2 }
        *[other] de { $c2 }
-    }: totes dues velocitats respecte { ELISION($frame) ->
+    }{ $why2 }: totes dues velocitats respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $dist } { ELISION($near) ->

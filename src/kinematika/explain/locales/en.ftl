@@ -48,6 +48,14 @@ structure-welded = { $bodies } { $bodies_n ->
         [one] it is part of it and does not move; all its
        *[other] they are part of it and do not move; all their
     } points have zero velocity and acceleration.
+structure-contacts_wheel = { $points_n ->
+        [one] contact of a wheel at { $points }
+       *[other] contacts of the wheels at { $points }
+    }
+structure-contacts_rolling = { $points_n ->
+        [one] contact point { $points }
+       *[other] contact points { $points }
+    }
 structure-fixed_part = { $body } (fixed to { $frame })
 structure-dof = The mechanism has { $dof ->
         [one] one degree
@@ -654,10 +662,14 @@ centre-line-rolls_still = the perpendicular to { $v } through { $point } ({ $rol
     })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
 centre-line-guide = the perpendicular to the guide through { $pivot } (at its foot { $pivot }′ on the guide, the velocity relative to { $body } is along the guide and the drag velocity is perpendicular to { $pivot }{ $pivot }′, that is, along the guide too: the velocity of the point of { $b } at { $pivot }′ follows the guide)
-centre-carried-between = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
-centre-carried-between_from = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero, at { $dist } from { $near }:
-centre-carried-outside = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
-centre-carried-outside_from = { $p } moves with { $k1 } about { $c1 }, and { $q } with { $k2 } about { $c2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $near }:
+centre-carried-slip = {" "}({ $b } { COUNT($b) ->
+        [many] do
+       *[one] does
+    } not slip on { $body }, so its point { $point } has the velocity of { $body } there)
+centre-carried-between = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
+centre-carried-between_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero, at { $dist } from { $near }:
+centre-carried-outside = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
+centre-carried-outside_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $near }:
 centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)

@@ -54,6 +54,14 @@ structure-welded = { $bodies } { COUNT($bodies) ->
            *[other] están fijados a { $frame }: forman parte de él y no se mueven
         }
     }; todos sus puntos tienen velocidad y aceleración nulas.
+structure-contacts_wheel = { $points_n ->
+        [one] contacto de una rueda en { $points }
+       *[other] contactos de las ruedas en { $points }
+    }
+structure-contacts_rolling = { $points_n ->
+        [one] punto de contacto { $points }
+       *[other] puntos de contacto { $points }
+    }
 structure-fixed_part = { $body } (fijo a { $frame })
 structure-dof = El mecanismo tiene { $dof ->
         [one] un grado
@@ -599,10 +607,14 @@ centre-line-moves_still = la perpendicular a { $v } por { $point } ({ $point } s
        *[one] traslada
     })
 centre-line-guide = la perpendicular a la guía por { $pivot } (en su pie { $pivot }′ sobre la guía, la velocidad relativa a { $body } es paralela a la guía y la de arrastre es perpendicular a { $pivot }{ $pivot }′, es decir, también paralela a la guía: la velocidad del punto de { $b } en { $pivot }′ sigue la guía)
-centre-carried-between = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
-centre-carried-between_from = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $dist } de { $near }:
-centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
-centre-carried-outside_from = { $p } se mueve con { $k1 } alrededor de { $c1 }, y { $q } con { $k2 } alrededor de { $c2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $dist } de { $near }:
+centre-carried-slip = {" "}({ $b } no { COUNT($b) ->
+        [many] deslizan
+       *[one] desliza
+    } sobre { $body }, así que su punto { $point } tiene la velocidad de { $body } en ese punto)
+centre-carried-between = { $p } se mueve con { $k1 } alrededor de { $c1 }{ $why1 }, y { $q } con { $k2 } alrededor de { $c2 }{ $why2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
+centre-carried-between_from = { $p } se mueve con { $k1 } alrededor de { $c1 }{ $why1 }, y { $q } con { $k2 } alrededor de { $c2 }{ $why2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $dist } de { $near }:
+centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }{ $why1 }, y { $q } con { $k2 } alrededor de { $c2 }{ $why2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
+centre-carried-outside_from = { $p } se mueve con { $k1 } alrededor de { $c1 }{ $why1 }, y { $q } con { $k2 } alrededor de { $c2 }{ $why2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $dist } de { $near }:
 centre-line-slot = la normal en { $point } a la ranura (respecto del sólido ranurado, { $point } solo puede moverse a lo largo de la ranura)
 centre-line-slot_fixed = la normal en { $point } a la recta de { $a } por la que desliza
 centre-line-wheel = el eje de la rueda { $joint }, la normal en { $point } a su plano (no desliza lateralmente)

@@ -1049,8 +1049,14 @@ class Renderer(ABC):
             key = f"centre.carried.{c.side}" + ("_from" if c.near and c.distance is not None else "")
             return Msg(key, {**args, "k1": Name(c.via[0], "body"), "k2": Name(c.via[1], "body"),
                              "c1": c.pivots[0], "c2": c.pivots[1], "near": Name(c.near),
-                             "dist": Value(c.distance, "len")})
+                             "dist": Value(c.distance, "len"),
+                             "why1": self.slip(c, 0), "why2": self.slip(c, 1)})
         return Msg(f"centre.proportional.{c.side}", args)
+
+    @staticmethod
+    def slip(c: CentreNote, i: int) -> Any:
+        """The i-th witness's no-slip reason (`centres._carried_slip`), or nothing at a pin."""
+        return c.slips[i] if i < len(c.slips) and c.slips[i] is not None else ""
 
     def where(self, value: dict) -> Msg:
         """Where a centre is, as a message: at a point, at infinity along a direction, or no
