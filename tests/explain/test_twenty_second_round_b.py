@@ -83,5 +83,5 @@ def test_the_basque_model_texts_read_as_basque() -> None:
     assert "| P | pedal-besoaren muturra (pedala) |" in bike
     assert "| C | pedalen ardatza |" in bike
     assert "| *R* | *plater pedaldunaren* erradioa |" in bike and "platerraren" not in bike
-    assert ("haren ebazpenean, hemen jarraitzen denean, *plater pedaldunaren* erradioa R da eta "
+    assert ("hemen jarraitzen dugun haren ebazpenean, *plater pedaldunaren* erradioa R da eta "
             "*pinoiarena* r") in bike
