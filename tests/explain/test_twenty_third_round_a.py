@@ -103,3 +103,13 @@ def test_the_tricycle_ground_row() -> None:
     for lang in LANGS:
         row = next(x for x in rendered("seed_c5_2_1_tricycle", lang).splitlines() if x.startswith("| 1 |"))
         assert row.endswith(want[lang]), row
+
+
+def test_the_articulated_vehicles_ground_row_names_its_wheels_contacts() -> None:
+    """C5-2.2: the ground lists no point (`ground: []`), yet its four knife-edge wheels touch it
+    at C1–C4; its row was empty (two readers marked it). The contacts are listed as on 2.1."""
+    want = {"en": "| contacts of the wheels at C1, C2, C3, and C4 |", "es": "| contactos de las ruedas en C1, C2, C3 y C4 |",
+            "ca": "| contactes de les rodes a C1, C2, C3 i C4 |", "eu": "| C1, C2, C3 eta C4 (gurpilen kontaktu-puntuak) |"}
+    for lang in LANGS:
+        row = next(x for x in rendered("seed_c5_2_2_articulated", lang).splitlines() if x.startswith("| 1 |"))
+        assert row.endswith(want[lang]), row

@@ -31,7 +31,8 @@ def _points_cell(ctx: Ctx, body: str) -> list:
     """A body's cell of the points column. The fixed body lists a point it carries only as the
     contact of a wheel or rolling joint as the contact it is, "contacts of the wheels at C1,
     C2, F" (twenty-third round (a): C5-2.1's ground row "C1, C2, F" was read as the wheels'
-    centres, which they also name); its own points, and every other body's, by name."""
+    centres, which they also name), whether or not the model lists the point on it (C5-2.2's
+    ground lists none; its row was empty); its own points, and every other body's, by name."""
     names = _points_on(ctx, body)
     if body != ctx.frame or not ctx.planar:
         return [point(p) for p in names]
@@ -39,10 +40,13 @@ def _points_cell(ctx: Ctx, body: str) -> list:
     wheels = [j.at or ctx.contact(j) for j in joints if knife_edge(j)]
     rolling = [j.at or ctx.contact(j) for j in joints if rolls(j) and not knife_edge(j)]
     other = {j.at for j in joints if not knife_edge(j) and not rolls(j)}      # a pin there too: its own point
-    contacts = {p for p in wheels + rolling if p not in other and p in names}
+    contacts = {p for p in wheels + rolling if p not in other}
     cell: list = [point(p) for p in names if p not in contacts]
     for key, group in (("structure.contacts_wheel", wheels), ("structure.contacts_rolling", rolling)):
-        said = [p for p in names if p in group and p in contacts]        # the row's own order
+        # the row's own order, then the contacts at points the frame does not list (C5-2.2's
+        # ground lists none: its four wheels touch it all the same)
+        said = [p for p in names if p in group and p in contacts] + \
+            [p for p in dict.fromkeys(group) if p not in names and p in contacts]
         if said:
             cell.append(msg(key, points=Names([point(p) for p in said])))
             contacts -= set(said)
