@@ -91,12 +91,15 @@ class PageServer:
 
 
 def _seen(page) -> str:
-    """What the page shows of its state, for a wait that failed to say why."""
+    """What the page shows of its state, for a wait that failed to say why: with the last
+    calls to the API and their HTTP status (0: failed before any answer)."""
     return page.evaluate("""() => { const s = window.kinematika && window.kinematika.state;
         const text = (id) => { const e = document.getElementById(id); return e ? (e.hidden ? "(hidden)" : e.textContent) : null; };
         return JSON.stringify({gen: s && s.gen, solution: !!(s && s.solution), sweep: !!(s && s.sweep),
             sweepError: s && s.sweepError, input: s && s.input, busy: text("busy"), error: text("error"),
-            example: document.getElementById("example").value, notes: text("notes")}); }""")
+            example: document.getElementById("example").value, notes: text("notes"), missing: text("missing"),
+            calls: performance.getEntriesByType("resource").filter((r) => r.name.includes("/api/")).slice(-8)
+                .map((r) => `${r.name.split("/api/")[1]} ${r.responseStatus ?? "?"}`)}); }""")
 
 
 def _computing(thread: threading.Thread) -> bool:

@@ -9,7 +9,9 @@ import os
 
 import pytest
 
-from .test_page import cell, page, ready, set_row  # noqa: F401  (the page fixture)
+from kinematika.web.strings import page_strings
+
+from .test_page import cell, edited, page, ready, set_row  # noqa: F401  (the page fixture)
 
 pytestmark = pytest.mark.browser
 SHOT = os.environ.get("KINEMATIKA_SHOT")      # a path: the page is saved there as PNG, to look at
@@ -39,3 +41,20 @@ def test_the_slider_moves_a_vehicle_through_time(page, server):   # noqa: F811
         assert hinge == pytest.approx([speed * t, 0.0], abs=1e-9)
     assert "t (s)" in page.locator("#plot").text_content()
     page.screenshot(path=str(SHOT)) if SHOT else None
+
+
+def test_a_model_placed_by_symbols_says_what_it_lacks(page, server):   # noqa: F811
+    """The vehicle's points are placed by symbols, so its sketch has bodies but no points:
+    with its two drivers taken away it is not a page not begun (which says nothing) but a
+    mechanism of two degrees of freedom that lacks its inputs, and the page says so (it
+    once said nothing at all, and a failed solve of such a model left a silent page)."""
+    gen = page.evaluate("window.kinematika.state.gen")
+    page.get_by_test_id("example").select_option("seed_c5_2_2_articulated.yaml")
+    server.wait(page, "(gen) => window.kinematika.state.gen > gen && window.kinematika.state.sweep"
+                      " && document.getElementById('busy').hidden", gen)
+    drivers = ('  - {velocity: C1, along: [1, 0], value: "r*w"}\n'
+               '  - {velocity: C2, along: [1, 0], value: "r*w"}\n')
+    with edited(page, drivers, "  []\n", "missing") as (_, _, missing):
+        assert missing.inner_text() == page_strings("en")["messages"]["missing-input"]
+        assert page.get_by_test_id("dof").inner_text() == "DOF 2"      # 3 × 2 − 2 − 4·1 (no side slip)
+        assert page.get_by_test_id("error").is_hidden()

@@ -62,7 +62,10 @@ async function analyse() {
   $("busy").hidden = true;
   const sketch = sketched.status === "fulfilled" ? sketched.value : null;
   if (solved.status === "rejected") {
-    const blank = sketch && !Object.keys(sketch.points).length && !sketch.problem;
+    // blank: nothing built yet (no moving body, no point), not a model whose points are
+    // placed by symbols (a sketch with no points but bodies): its failure is said
+    const blank = sketch && !Object.keys(sketch.points).length && !sketch.problem
+      && !Object.values(sketch.bodies).some((b) => !b.frame);
     const missing = blank ? null : stillBuilding(solved.reason, sketch);
     showError(blank || missing ? null : solved.reason);
     showMissing(missing, solved.reason);
