@@ -95,7 +95,7 @@ def _plus_at_top(text: str) -> bool:
     """Whether `text` holds a " + " outside brackets."""
     depth = 0
     for i, c in enumerate(text):
-        depth += c in "([" and 1 or c in ")]" and -1 or 0
+        depth += (c in "([") - (c in ")]")
         if depth == 0 and text.startswith(" + ", i):
             return True
     return False
