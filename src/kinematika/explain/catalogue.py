@@ -109,13 +109,18 @@ LEADING_ARTICLE = re.compile(r"(?i)^(the|el|la|els|les|los|las|l[’'])\s*")
 
 
 def same(first: Any, second: Any) -> str:
-    """`yes` when two name arguments say the same word once their articles are left out (a
-    frame the model calls *el suelo* and the ground's word the text uses for the reference,
-    el *suelo*): the frame's row then needs no "(fixed: the *ground*)" (twenty-second round b,
-    decided per language: C5-1.4 calls its frame *bastidor* in Spanish only); else `no`."""
+    """`yes` when the name `first` already says the ground's word `second`, once their articles
+    are left out: the same word (a frame the model calls *el suelo* and the ground's word the
+    text uses for the reference, el *suelo*) or one word of it (C5-1.8's Catalan *terra
+    cilíndric*, a *cylindrical ground*). The frame's row then needs no tie to the ground's word,
+    "(fixed: the *ground*)" or "*terra cilíndric* (*terra*)", which would only repeat it
+    (twenty-second round b, decided per language: C5-1.4 calls its frame *bastidor* in Spanish
+    only; twenty-fourth round a: the word inside the name); else `no`."""
     def bare(value: Any) -> str:
         return LEADING_ARTICLE.sub("", str(getattr(value, "plain", value)).strip()).casefold()
-    return "yes" if bare(first) == bare(second) else "no"
+    name, word = bare(first), bare(second)
+    held = bool(word) and re.search(rf"(?<![\w·-]){re.escape(word)}(?![\w·-])", name) is not None
+    return "yes" if name == word or held else "no"
 
 
 # fluent.runtime (0.4) annotates a function as returning a FluentType, but its resolver takes a plain

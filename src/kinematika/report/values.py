@@ -268,20 +268,28 @@ def _absorb_sign(x: Any) -> Any:
     return x
 
 
+def positive_first(terms: list) -> list:
+    """A sum's terms as a teacher writes them: its positive terms first, then its negative
+    ones, each group in the order it came (sympy's): R_w + r − R, R_w + r − L − R, never
+    −R + R_w + r, whose leading minus a reader takes for the sign of the whole (twenty-fourth
+    round a; a difference of two terms, r₂ − r₁, was the first case). A sum with no positive
+    term keeps its order, −a − b. The value is the same whichever way it is written: only the
+    printed order changes (the formula printers', never a JSON answer's `printed`)."""
+    negative = [t.could_extract_minus_sign() for t in terms]
+    if not negative or not negative[0] or all(negative):
+        return list(terms)
+    return [t for t, neg in zip(terms, negative) if not neg] + [t for t, neg in zip(terms, negative) if neg]
+
+
 def written_latex(x: Any, symbol_names: dict | None = None) -> str:
-    """`x` (in its `written_form`) as LaTeX, a difference of two terms with its positive term
-    first, r_2 − r_1 and never −r_1 + r_2, as the Unicode text writes it: the LaTeX page and
-    the figures' labels (mathtext) say what the text says."""
+    """`x` (in its `written_form`) as LaTeX, a sum with its positive terms first
+    (`positive_first`), r_2 − r_1 and never −r_1 + r_2, as the Unicode text writes it: the
+    LaTeX page and the figures' labels (mathtext) say what the text says."""
     from sympy.printing.latex import LatexPrinter
-    from sympy.printing.precedence import PRECEDENCE
 
     class _Written(LatexPrinter):
-        def _print_Add(self, expr: Any, order: Any = None) -> str:
-            terms = self._as_ordered_terms(expr, order=order)
-            if len(terms) == 2 and terms[0].could_extract_minus_sign() \
-                    and not terms[1].could_extract_minus_sign():
-                return f"{self._print(terms[1])} - {self.parenthesize(-terms[0], PRECEDENCE['Add'] + 1)}"
-            return super()._print_Add(expr, order=order)
+        def _as_ordered_terms(self, expr: Any, order: Any = None) -> list:
+            return positive_first(super()._as_ordered_terms(expr, order=order))
 
     settings = {"symbol_names": symbol_names} if symbol_names else {}
     return _Written(settings).doprint(written_form(x))

@@ -52,8 +52,11 @@ structure-subscript_member = { $sym } és la velocitat del punt { ELISION($body)
        *[other] de { $body }
     } situat a { $point }
 structure-shaped = { $body }, { $shape } de radi { $radius }
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it
-structure-frame_ground = { $body } ({ $ground })
+# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
+structure-frame_ground = { $body }{ SAME($body, $ground) ->
+        [yes] {""}
+       *[no] {" "}({ $ground })
+    }
 # the fixed body with no shape: named otherwise than the ground (a ceiling), the ground's word the text uses is tied to it (twenty-second round b)
 structure-frame_named = { $body } { SAME($body, $ground) ->
         [yes] (fix)

@@ -34,8 +34,11 @@ structure-subscripts = Notación: { $pairs }.
 structure-subscript_pair = { $sym } es la velocidad angular de { $body }
 structure-subscript_member = { $sym } es la velocidad del punto de { $body } situado en { $point }
 structure-shaped = { $body }, { $shape } de radio { $radius }
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it
-structure-frame_ground = { $body } ({ $ground })
+# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
+structure-frame_ground = { $body }{ SAME($body, $ground) ->
+        [yes] {""}
+       *[no] {" "}({ $ground })
+    }
 # the fixed body with no shape: named otherwise than the ground (a ceiling), the ground's word the text uses is tied to it (twenty-second round b)
 structure-frame_named = { $body } { SAME($body, $ground) ->
         [yes] (fijo)

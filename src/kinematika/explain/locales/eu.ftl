@@ -34,8 +34,11 @@ structure-subscripts = Notazioa: { $pairs }.
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
 structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuko puntuaren abiadura da
 structure-shaped = { $body }, { $radius } erradioko { $shape }
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it
-structure-frame_ground = { $body } ({ $ground })
+# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
+structure-frame_ground = { $body }{ SAME($body, $ground) ->
+        [yes] {""}
+       *[no] {" "}({ $ground })
+    }
 # the fixed body with no shape: named otherwise than the ground (a ceiling), the ground's word the text uses is tied to it (twenty-second round b)
 structure-frame_named = { $body } { SAME($body, $ground) ->
         [yes] (finkoa)
@@ -613,7 +616,7 @@ col-what = zer den
 what-centre = { $body } solidoaren zentroa
 what-joint = { $kind }, { $a } eta { $b } solidoen artean
 what-touching = { $body } solidoak { $other } ukitzen duen puntua
-what-contact = ukipen-puntua ({ $kind }), { $a } eta { $b } solidoen artean
+what-contact = kontaktu-puntua ({ $kind }), { $a } eta { $b } solidoen artean
 what-body = { $bodies } puntua
 what-of = { $name } solidoaren
 note-text = Oharra: { $text }

@@ -7,12 +7,11 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 from typing import Any, Callable, Iterator
 
-from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.str import StrPrinter
 
 from ...memo import Memo
 from ...numerals import function_names
-from ...report.values import printed, turned, written_form, written_latex  # noqa: F401  (turned: its old home)
+from ...report.values import positive_first, printed, turned, written_form, written_latex  # noqa: F401  (turned: its old home)
 from .names import latex_name, unicode_name
 
 SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
@@ -34,12 +33,10 @@ class _Marking(StrPrinter):
             self.names.append(expr.name)
         return chr(MARK + self.names.index(expr.name))
 
-    def _print_Add(self, expr: Any, order: Any = None) -> str:
-        """A difference of two terms with its positive term first: r₂ − r₁, never −r₁ + r₂."""
-        terms = self._as_ordered_terms(expr, order=order)
-        if len(terms) == 2 and terms[0].could_extract_minus_sign() and not terms[1].could_extract_minus_sign():
-            return f"{self._print(terms[1])} - {self.parenthesize(-terms[0], PRECEDENCE['Add'] + 1)}"
-        return super()._print_Add(expr, order=order)
+    def _as_ordered_terms(self, expr: Any, order: Any = None) -> list:
+        """A sum's terms with its positive terms first (`positive_first`): R_w + r − R,
+        r₂ − r₁, never −R + R_w + r."""
+        return positive_first(super()._as_ordered_terms(expr, order=order))
 
     def _print_Pow(self, expr: Any, rational: bool = False) -> str:
         """An even power of a difference with its positive value first at the model's numbers
