@@ -155,13 +155,14 @@ def _recording():
     from kinematika.draw import labels
     from kinematika.explain.render import svg as svg_module
 
-    found: dict[str, list] = {"labels": [], "polygons": [], "areas": []}
+    found: dict[str, list] = {"labels": [], "polygons": [], "areas": [], "layouts": []}
     run, place = labels.Layout.run, svg_module._place
 
     def recorded_run(self):
         out = run(self)
         found["labels"].append((out, self.tips, self.px))
         found["areas"].append((out, self.areas))
+        found["layouts"].append((out, self))
         return out
 
     def recorded_place(lay, items):
@@ -177,8 +178,9 @@ def _recording():
 
 
 def recorded_pages(kind: str) -> dict:
-    """What was recorded of `kind` ("labels", "polygons" or "areas": each label layout's
-    placements and its bodies' areas, see `_LAYOUTS`) while each of the
+    """What was recorded of `kind` ("labels", "polygons", "areas": each label layout's
+    placements and its bodies' areas, or "layouts": its placements and the `Layout` itself,
+    see `_LAYOUTS`) while each of the
     notes' seeds was written in English and in Catalan (Markdown, with its drawings), a list
     per (seed, language). The pages are `rendered`'s: each is drawn once a run, for the
     figure tests and every other test that reads it."""

@@ -56,6 +56,8 @@ AREA = 400.0            # a body's name or a vector's value over another body's 
 AREA_GRID = (8, 4)      # points across and up a label's box tested for lying in a body's area
 TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
 DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
+SHAFT = 0.5              # per point a mechanism vector's value slides back from its tip along its shaft (`Label.shaft`)
+RIM = 400.0              # a vector's value whose box another body's outline (a rim, a bar) runs through: as on its area
 
 
 @dataclass
@@ -74,6 +76,7 @@ class Label:
     weight: str = "normal"
     style: str = "normal"
     along: Optional[np.ndarray] = None    # an arrow's (start, end), data: the anchor may slide on it
+    shaft: Optional[np.ndarray] = None    # a mechanism vector's arrow (start, end), data: likewise (`SHAFT`)
 
     @property
     def extent(self) -> tuple[float, float]:
@@ -267,18 +270,24 @@ class Layout:
         at = np.repeat(points, per, axis=0)
         centre = at + np.tile(dirs * (dist * self.px + reach)[:, None], (len(points), 1))
         boxes = np.hstack([centre - half, centre + half])
+        rate = ALONG if label.along is not None else SHAFT
         return (boxes, np.tile(dist, len(points)), np.tile(dirs, (len(points), 1)), at,
-                np.repeat(ALONG * slid, per))
+                np.repeat(rate * slid, per))
 
     def slide_points(self, label: Label, anchor: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The points (display) a label may be placed by, and how far each lies from `anchor`
         (points): the anchor alone, or for an arrow's label (`Label.along`) the points at the
         fractions `SLIDE` of its arrow that lie `SLIDE_END` from both its ends. Its middle,
         where a polygon's arrows cross and meet, is often taken (001's acceleration polygon,
-        issue 30, eighteenth round (d))."""
-        if label.along is None:
+        issue 30, eighteenth round (d)). A mechanism vector's value (`Label.shaft`) slides
+        the same way back from its tip, at `SHAFT` a point (dearer than a polygon's `ALONG`:
+        beyond the tip is its place), so that where its tip lies on another body it sits
+        beside its own shaft, clear of that body, not on the body or across its rim at the end
+        of a long leader (C5-E.6's v_P, ending inside the front wheel; twenty-fourth round (b))."""
+        along = label.along if label.along is not None else label.shaft
+        if along is None:
             return anchor[None, :], np.zeros(1)
-        a, b = self.ax.transData.transform(np.asarray(label.along, dtype=float))
+        a, b = self.ax.transData.transform(np.asarray(along, dtype=float))
         length = float(np.linalg.norm(b - a)) / self.px
         pts, off = [anchor], [0.0]
         for t in SLIDE[1:]:
@@ -355,9 +364,23 @@ class Layout:
         their point, wherever it is."""
         owner = label_owner(label.gid)
         others = [path for body, path in self.areas if owner is not None and body != owner]
-        if not others:
+        cost = AREA * covered_part(boxes, others) if others else np.zeros(len(boxes))
+        return cost + self._rims(label, owner, boxes)
+
+    def _rims(self, label: Label, owner: Optional[str], boxes: np.ndarray) -> np.ndarray:
+        """What a vector's value costs for another body's outline (a wheel's rim, a bar's
+        side) running through its box: `RIM`, as much as lying on that body's area. A box
+        just outside a wheel but on its rim reads as the wheel's as much as one inside it,
+        and the areas alone left that place free (C5-E.6's v_P on the front wheel's rim;
+        issue 30, twenty-fourth round (b)). Names of bodies are not weighed here (a name
+        beside its own body may touch a neighbour's outline: `_leader_over`)."""
+        if owner is None or not label.gid.startswith(("velocity:", "acceleration:")) or not len(self.outlines):
             return np.zeros(len(boxes))
-        return AREA * covered_part(boxes, others)
+        other = (self.outline_owners != owner) & (self.outline_owners != "")
+        if not other.any():
+            return np.zeros(len(boxes))
+        inner = boxes + np.array([1, 1, -1, -1]) * PAD * self.px
+        return RIM * np.minimum(_segments_in_boxes(self.outlines[other], inner), 1.0)
 
     def _leader_over(self, label: Label, cand: tuple) -> np.ndarray:
         """What the leader of an arrow's label (`Label.along`: a polygon's) costs for crossing
@@ -439,12 +462,13 @@ class Layout:
 
 def label_owner(gid: str) -> Optional[str]:
     """The body a label belongs to, read off its gid: a body's name (`body:NAME`), a vector's
-    value (`velocity:P@NAME`, `acceleration:P@NAME/REF`); None for any other label."""
+    value (`velocity:P@NAME`, `acceleration:P@NAME/REF`, a drag motion's `velocity:P@NAME:drag`:
+    NAME's point at P); None for any other label."""
     if gid.startswith("body:"):
         return gid.removeprefix("body:")
     kind, _, ref = gid.partition(":")
     if kind in ("velocity", "acceleration") and "@" in ref:
-        return ref.split("@", 1)[1].split("/", 1)[0]
+        return ref.split("@", 1)[1].split("/", 1)[0].split(":", 1)[0]
     return None
 
 

@@ -36,7 +36,7 @@ def paint_mark(cv: Canvas, m: Mark) -> Optional[Any]:
     pts = np.asarray(m.points, dtype=float)
     if m.kind == "text":
         cv.label(pts[0], m.text, m.colour, m.priority, m.gid, m.prefer, weight=m.weight,
-                 style=m.style, size=m.size or LABEL_SIZE)
+                 style=m.style, size=m.size or LABEL_SIZE, shaft=m.shaft)
         return None
     if m.kind == "clear" and m.group.startswith("area:"):
         cv.board.area(m.group.removeprefix("area:"), pts)

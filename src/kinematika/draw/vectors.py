@@ -160,6 +160,7 @@ def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
             ctx.avoid(arrow.start, arrow.end, weight=3.0)
             free, away = (arrow.start, arrow.start - arrow.end) if arrow.tip_at_point else \
                 (arrow.end, arrow.end - arrow.start)                # the label beyond the free end
-            ctx.label(free, text, colour, 1, v.key, away, layer=layer, group=group, about=said)
+            ctx.label(free, text, colour, 1, v.key, away, layer=layer, group=group, about=said,
+                      shaft=np.array([arrow.start, arrow.end], dtype=float))
         else:
             ctx.label(arrow.start, text, colour, 1, v.key, layer=layer, group=group, about=said)

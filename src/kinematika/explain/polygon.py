@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 
 import math
-from typing import Any
+from typing import Any, Sequence
 
 from .context import Ctx
 from .document import Arrow, Described, Equation, Figure, Inline, Name, Names, msg
@@ -49,7 +49,7 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
                  unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images
-    fig.bar = bar_unit(ctx, poly.values)
+    fig.bar = bar_unit(ctx, poly.values, poly.syms)
     fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
     return fig
 
@@ -143,7 +143,7 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
                  values=ctx.drawn_values())
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
     fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
-    fig.bar = bar_unit(ctx, poly.values)
+    fig.bar = bar_unit(ctx, poly.values, poly.syms)
     return fig
 
 
@@ -169,14 +169,20 @@ def _at_pole(poly: "_Builder") -> set:
     return {name for name, (xy, _) in poly.named.items() if poly.at_pole(xy)}
 
 
-def bar_unit(ctx: Ctx, values: list) -> tuple | None:
+def bar_unit(ctx: Ctx, values: list, syms: Sequence = ()) -> tuple | None:
     """The unit a symbolic polygon's scale bar is measured in, as (formula, its number at the
     figure's draw_at values): the product of symbols that the longest absolute motion drawn
     (blue) is a multiple of, in its largest component (C5-E.4's a_P = v²/R: a bar of
     "v²/(2·R)"; C5-1.4's r·ω: "2·r·ω"), the next longest when it is no such multiple. Its
     sample numbers have no unit a reader could name, and a bar of a bare "5" says nothing
     (issue 30, twentieth round (c)). None on a numeric page (its bar says m/s, m/s²) or
-    when no component is such a product."""
+    when no component is such a product.
+
+    A product of more than `FEW_FACTORS` symbols is no unit a teacher draws a bar in
+    (C5-E.6's "L·r²·v²/(5·R²·R_wheel²)" under its acceleration polygon): the bar is then
+    measured in the magnitude of the longest absolute motion drawn that a point names
+    (`syms`, the symbol of each of `values`), "|a_P|/5", the polygon's own reference
+    vector (`_reference`; issue 30, twenty-fourth round (b))."""
     if not ctx.symbolic:
         return None
     import sympy
@@ -191,8 +197,29 @@ def bar_unit(ctx: Ctx, values: list) -> tuple | None:
         _, rest = c.as_independent(*c.free_symbols, as_Add=False)      # -(2 + √3)/2 · v
         factors = [f.as_base_exp() for f in sympy.Mul.make_args(rest)]
         if rest.free_symbols and all(b.is_Symbol and e.is_Rational for b, e in factors) and size(rest) > 0:
+            if len(rest.free_symbols) > FEW_FACTORS:
+                return _reference(ctx, values, syms) or (rest, size(rest))
             return rest, size(rest)
     return None
+
+
+FEW_FACTORS = 3     # symbols a scale bar's unit may multiply (2·r·ω, v²/(2·R)); more: the reference vector
+
+
+def _reference(ctx: Ctx, values: list, syms: Sequence) -> tuple | None:
+    """The magnitude of the longest absolute motion drawn whose symbol names a point (a_P,
+    not a_{P∈N}, not a term's a_PC^n), as (|a_P|, its drawn length): the unit of a symbolic
+    polygon's bar whose product of symbols is too long to read (`bar_unit`). None when no
+    drawn motion is such a point's."""
+    import sympy
+
+    named = [(math.hypot(*ctx.drawn(value)), sym) for value, sym in zip(values, syms)
+             if getattr(sym, "sub", "").isalnum() and not sym.sup and not sym.sub_key]
+    named = [(size, sym) for size, sym in named if size > 0]
+    if not named:
+        return None
+    size, sym = max(named, key=lambda n: n[0])            # max keeps the first of equals
+    return sympy.Abs(sympy.Symbol(f"{sym.base}_{sym.sub}")), size
 
 
 def _may_be_a_product(expanded: Any) -> bool:
@@ -222,6 +249,7 @@ class _Builder:
         self.images: dict[str, tuple] = {}
         self.size = max(ctx.scale_of("speed"), 1e-300)
         self.values: list = []              # the absolute motions drawn (blue), as the solver gives them
+        self.syms: list = []                # the symbol of each of `values` (a_P)
         self.named: dict[str, tuple] = {}   # image -> (its place, the symbol of the motion ending there)
 
     def at_pole(self, xy: tuple) -> bool:
@@ -260,6 +288,7 @@ class _Builder:
                 whole = term.kind == "point" and not term.sym.sup
                 if whole and tip == origin:
                     self.values.append(term.value)
+                    self.syms.append(term.sym)
                     self._image(term.sym.sub, end)
                     self._named(term.sym, end)
                     style = "known" if self.single and not term.unknown else "result"
@@ -273,6 +302,7 @@ class _Builder:
             self._named(eq.target.sym, end)
         if end != origin and eq.target.sym.base in ("v", "a"):
             self.values.append(eq.target.value)
+            self.syms.append(eq.target.sym)
             if not eq.target.sym.sup:
                 self._image(eq.target.sym.sub, end)
             self._arrow(Arrow(origin, end, eq.target.sym, "result"), label=self.single)

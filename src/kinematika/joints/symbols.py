@@ -93,6 +93,7 @@ class Mark:
     layer: str = ""                     # results the page switches: velocity, acceleration, centres, curvature
     group: str = ""                     # ROLE:KEY of the thing it belongs to
     about: Optional[dict] = None        # what the page needs to move it (a live arrow)
+    shaft: Optional[Vec] = None         # a vector's value: its arrow (start, end), beside which it may sit
 
 
 # shapes of symbols -------------------------------------------------------------------------

@@ -1,0 +1,147 @@
+"""Issue 30, twenty-fourth round (b): C5-E.6's v_P and its acceleration polygon's bar.
+
+A reader saw the Catalan C5-E.6 figure's v_P on the front wheel's rim, at the end of a long
+leader from its tip inside the wheel: the areas of the twenty-first round (d) kept the value
+off the wheel's disc, and nothing kept it off the rim just outside. A mechanism vector's
+value now keeps off other bodies' outlines as off their areas (`draw.labels.RIM`), and may
+sit beside its own shaft, back from its tip (`Label.shaft`, `SHAFT`). The page's acceleration
+bar read "L·r²·v²/(5·R²·R_wheel²)"; a product of more than `FEW_FACTORS` symbols gives way
+to the polygon's reference vector, "|a_P|/5" (`explain.polygon.bar_unit`).
+
+The checks measure the placed boxes against the recorded outlines and areas on their own
+lattice and segment sampling, not through the placer's costs.
+"""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+import pytest
+import sympy
+
+from kinematika.draw.labels import label_owner
+from kinematika.explain.polygon import FEW_FACTORS
+
+from .helpers import LANGS, NOTES_SEEDS, SEEDS, explained, over, recorded_pages, rendered
+
+BAR = re.compile(r'<text x="[0-9.]+" y="[0-9.]+" fill="#222">([^<]*)</text>')
+NEAR = 48.0          # points: a leader no longer than the figures' usual ones (their bodies' names: 53–57)
+
+
+@pytest.fixture(scope="module")
+def layouts():
+    """Every mechanism and polygon label layout of the notes' seeds in English and Catalan,
+    with its `Layout` (its outlines, their owners and its areas, display units)."""
+    return recorded_pages("layouts")
+
+
+def _values(placed: list) -> list:
+    """The placements of mechanism vectors' values (a velocity's or an acceleration's, owned
+    by a body), not a polygon's arrow labels."""
+    return [p for p in placed if p.label.gid.startswith(("velocity:", "acceleration:"))
+            and label_owner(p.label.gid) is not None and p.label.along is None]
+
+
+def _crosses(box: np.ndarray, segs: np.ndarray) -> bool:
+    """Whether any segment (M, 2, 2) has a point strictly inside `box`, sampled at 64 points
+    along each (a rim's segments are a few points long)."""
+    if not len(segs):
+        return False
+    t = np.linspace(0, 1, 64)[None, :, None]
+    pts = segs[:, :1] + t * (segs[:, 1:] - segs[:, :1])
+    x, y = pts[..., 0], pts[..., 1]
+    return bool(np.any((x > box[0]) & (x < box[2]) & (y > box[1]) & (y < box[3])))
+
+
+@over(name=NOTES_SEEDS)
+def test_a_vector_value_keeps_off_other_bodies_outlines(layouts, name):
+    """No vector's value has another body's outline (a rim, a bar's side, a plate's edge)
+    running through its text's box: C5-1.2's v_J∈OJ sat on the left wheel's rim."""
+    bad = []
+    for lang in ("en", "ca"):
+        for placed, lay in layouts[(name, lang)]:
+            for p in _values(placed):
+                owner = label_owner(p.label.gid)
+                other = (lay.outline_owners != owner) & (lay.outline_owners != "") if len(lay.outline_owners) else []
+                if len(other) and _crosses(p.box, lay.outlines[other]):
+                    bad.append(f"{lang} {p.label.text!r}")
+    assert not bad, "; ".join(bad)
+
+
+@over(name=NOTES_SEEDS)
+def test_a_value_whose_tip_is_on_another_body_sits_near_its_arrow(layouts, name):
+    """A vector whose tip lies on another body's disc or plate has its value off that body
+    and within `NEAR` points of its arrow, measured from its box's centre to the nearest
+    point of the arrow: C5-E.6's v_P (tip inside the front wheel) sat 92 points away, on the
+    rim; C5-1.3's v_E (tip on the support) 69."""
+    bad = []
+    for lang in ("en", "ca"):
+        for placed, lay in layouts[(name, lang)]:
+            for p in _values(placed):
+                if p.label.shaft is None:
+                    continue
+                owner = label_owner(p.label.gid)
+                tip = lay.ax.transData.transform(p.label.anchor)
+                on = [path for body, path in lay.areas if body != owner and path.contains_point(tip)]
+                if not on:
+                    continue
+                a, b = lay.ax.transData.transform(np.asarray(p.label.shaft, dtype=float))
+                c = (p.box[:2] + p.box[2:]) / 2
+                t = np.clip((c - a) @ (b - a) / max(float((b - a) @ (b - a)), 1e-12), 0, 1)
+                gap = float(np.linalg.norm(a + t * (b - a) - c)) / lay.px
+                centre_on = any(path.contains_point(c) for path in on)
+                if gap > NEAR or centre_on:
+                    bad.append(f"{lang} {p.label.text!r} {gap:.0f} pt from its arrow" + (" on the body" if centre_on else ""))
+    assert not bad, "; ".join(bad)
+
+
+def test_the_bicycles_v_p_sits_beside_its_shaft_off_the_front_wheel(layouts):
+    """C5-E.6: v_P runs from the pedal P (below the crank axle) forward into the front wheel;
+    its value sits beside its shaft, slid back from the tip, its box off that wheel, with
+    no leader (before: 92 points out, across the rim)."""
+    for lang in ("en", "ca"):
+        placed, lay = next((pl, lay) for pl, lay in layouts[("seed_c5_e6_bicycle", lang)]
+                           if any(p.label.gid.startswith("velocity:P@") for p in pl))
+        p = next(p for p in placed if p.label.gid.startswith("velocity:P@"))
+        front = [path for body, path in lay.areas if body == "front"]
+        c = (p.box[:2] + p.box[2:]) / 2
+        assert front and not front[0].contains_point(c), lang
+        assert p.at is not None and not p.leader, lang     # slid back from the tip, beside its shaft
+
+
+@over(name=SEEDS)
+def test_a_scale_bar_is_a_short_product_or_a_reference_vector(name):
+    """A symbolic polygon's bar unit multiplies at most `FEW_FACTORS` symbols, or is the
+    magnitude of a point's motion, |a_P|."""
+    from kinematika.explain.document import Figure
+
+    _, doc = explained(name)
+    for fig in (b for b in doc.blocks() if isinstance(b, Figure) and b.bar is not None):
+        unit = fig.bar[0]
+        if isinstance(unit, sympy.Abs):
+            assert unit.args[0].is_Symbol, unit
+        else:
+            assert len(unit.free_symbols) <= FEW_FACTORS, unit
+
+
+def test_the_bicycles_acceleration_bar_is_measured_in_a_p():
+    """C5-E.6 at its draw_at numbers (R_roda 0.35, R 0.1, r 0.04, L 0.17, v 5, v̇ 0.5): the
+    chainring turns at ω = (r/R)(v/R_roda) = 40/7 rad/s, so the pedal P, L below the crank
+    axle, has a_P = (v̇ − L (r/R) v̇/R_roda, L ω²) (the notes' v(P) = v − L (r/R) v/R_roda,
+    differentiated; the normal part towards C), |a_P| = 5.5657. The bar is in |a_P|, not in
+    the product L·r²·v²/(R²·R_roda²) of five symbols, and reads so in every language."""
+    _, doc = explained("seed_c5_e6_bicycle")
+    from kinematika.explain.document import Figure
+
+    accel = [b.bar for b in doc.blocks() if isinstance(b, Figure) and b.unit == "accel" and b.bar is not None]
+    assert accel
+    unit, size = accel[-1]
+    assert unit == sympy.Abs(sympy.Symbol("a_P"))
+    R_w, R, r, L, v, vd = 0.35, 0.1, 0.04, 0.17, 5.0, 0.5
+    omega = (r / R) * (v / R_w)
+    assert size == pytest.approx(math.hypot(vd - L * (r / R) * vd / R_w, L * omega**2), rel=1e-9)
+    for lang in LANGS:
+        bars = BAR.findall(rendered("seed_c5_e6_bicycle", lang, "html"))
+        assert any(re.fullmatch(r"[0-9]*·?\|a_P\|(/[0-9]+)?", b.strip()) for b in bars), (lang, bars)
+        assert not any("R_roda" in b for b in bars), (lang, bars)
