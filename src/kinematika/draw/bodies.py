@@ -193,7 +193,7 @@ def _moving_curve(ctx: Context, body: BodyView, s: ShapeView, gid: str) -> None:
         return
     if s.closed and s.role == "profile":
         ctx.add("polygon", vertices, colour="none", fill=body.colour, alpha=0.2, width=0,
-                zorder=1, moves_with=body.name)
+                zorder=DISC_FILL, moves_with=body.name)
         ctx.area(*vertices)
     ctx.add("line", vertices, width=2.2, colour=body.colour, zorder=3, gid=gid, moves_with=body.name)
     ctx.avoid(*vertices[::8])
@@ -284,7 +284,7 @@ def _ring_gear(ctx: Context, body: BodyView, s: ShapeView) -> None:
     band, centre = ring_band(ctx, s), s.centre()
     name = body.name
     ctx.add("ring", [centre], r=s.radius + band, band=band, colour="none", fill=body.colour,
-            alpha=0.45, width=0, zorder=1, moves_with=name)
+            alpha=0.45, width=0, zorder=DISC_FILL, moves_with=name)
     ctx.add("circle", [centre], r=s.radius, colour=body.colour, width=2.2, dash=s.role == "gear",
             zorder=3, gid=f"shape:{name}", moves_with=name)
     for t in np.linspace(0, 2 * np.pi, 12, endpoint=False):
