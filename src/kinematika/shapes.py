@@ -13,11 +13,14 @@ import numpy as np
 
 @dataclass
 class Circle:
-    """A circle (planar): its centre and radius."""
+    """A circle (planar): its centre and radius; `arc` (degrees, from → to counter-clockwise,
+    turned with its body when the model is moved) when its body is only that part of the disc
+    (figures only: contacts are found on the whole circle)."""
 
     center: tuple
     radius: Any
     center_point: Optional[str] = None
+    arc: Optional[tuple[float, float]] = None
 
 
 @dataclass

@@ -22,6 +22,9 @@ from .style import BAR_WIDTH, GROUND, INK, POINT_LABEL
 
 DOTTED_SPHERE = (4.0, 3.0)      # the sphere of a spherical linkage: dashes, in line widths
 FALLING = "\\\\\\\\"              # matplotlib's hatching falling to the right, as dense as the frame's ////
+DISC_FILL = 0.5      # a moving disc's translucent fill: under the frame's hatching (zorder 1)
+                     # and outline (2), so a track a wheel overlaps stays seen (C5-E.1's 2R
+                     # wheel over "pista zilindrikoa"; issue 30, twenty-fourth round (h))
 
 
 def draw_bodies(ctx: Context) -> None:
@@ -142,10 +145,18 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
     gid, name = f"shape:{body.name}", body.name
     if s.kind == "circle" and s.ring:
         _ring_gear(ctx, body, s)
+    elif s.kind == "circle" and s.arc is not None:
+        outline = s.outline()                # a part of a disc: filled, its arc and chord drawn
+        ctx.add("polygon", outline, colour="none", fill=body.colour, alpha=0.25, width=0,
+                zorder=DISC_FILL, moves_with=name)
+        ctx.add("line", outline, width=2.2, colour=body.colour, join="round", zorder=3, gid=gid,
+                moves_with=name)
+        ctx.avoid(*outline)
+        ctx.area(*outline)
     elif s.kind == "circle":
         gear, centre = s.role == "gear", s.centre()
         ctx.add("circle", [centre], r=s.radius, colour="none", fill=body.colour,
-                alpha=0.18 if gear else 0.25, width=0, zorder=1, moves_with=name)
+                alpha=0.18 if gear else 0.25, width=0, zorder=DISC_FILL, moves_with=name)
         ctx.add("circle", [centre], r=s.radius, colour=body.colour, width=1.6 if gear else 2.2,
                 dash=gear, zorder=3, gid=gid, moves_with=name)
         for d in (np.array([1.0, 0.0]), np.array([0.0, 1.0])):
@@ -182,7 +193,7 @@ def _moving_curve(ctx: Context, body: BodyView, s: ShapeView, gid: str) -> None:
         return
     if s.closed and s.role == "profile":
         ctx.add("polygon", vertices, colour="none", fill=body.colour, alpha=0.2, width=0,
-                zorder=1, moves_with=body.name)
+                zorder=DISC_FILL, moves_with=body.name)
         ctx.area(*vertices)
     ctx.add("line", vertices, width=2.2, colour=body.colour, zorder=3, gid=gid, moves_with=body.name)
     ctx.avoid(*vertices[::8])
@@ -273,7 +284,7 @@ def _ring_gear(ctx: Context, body: BodyView, s: ShapeView) -> None:
     band, centre = ring_band(ctx, s), s.centre()
     name = body.name
     ctx.add("ring", [centre], r=s.radius + band, band=band, colour="none", fill=body.colour,
-            alpha=0.45, width=0, zorder=1, moves_with=name)
+            alpha=0.45, width=0, zorder=DISC_FILL, moves_with=name)
     ctx.add("circle", [centre], r=s.radius, colour=body.colour, width=2.2, dash=s.role == "gear",
             zorder=3, gid=f"shape:{name}", moves_with=name)
     for t in np.linspace(0, 2 * np.pi, 12, endpoint=False):
@@ -364,7 +375,12 @@ def _fixed_circle_name(ctx: Context, body: BodyView) -> None:
     s = max(circles, key=lambda c: c.radius)
     inside = s.material_inside
     band = 0.0 if inside else min(HATCH_BAND * ctx.size, s.radius)
-    anchor = s.centre() + (0.6 * s.radius if inside else s.radius + band) * UP_LEFT
+    towards = UP_LEFT
+    if s.arc is not None:                    # a part of a disc: towards its arc's middle
+        mid = 0.5 * (s.arc[0] + s.arc[1])
+        towards = np.array([np.cos(mid), np.sin(mid)]) + 0.5 * UP_LEFT
+        towards = towards / np.linalg.norm(towards)
+    anchor = s.centre() + (0.6 * s.radius if inside else s.radius + band) * towards
     name = plain(noun(body.label or body.name)) + _tag(ctx, body)
     ctx.label(anchor, name, GROUND, 5, f"body:{body.name}", group=f"body:{body.name}", style="italic",
               prefer=None if inside else UP_LEFT)
@@ -381,6 +397,8 @@ def _ground_shape(ctx: Context, s: ShapeView) -> None:
         towards = s.hatch_towards if s.hatch_towards is not None else \
             through - ctx.centroid()
         hatched_edge(ctx, *seg, n if float(n @ towards) >= 0 else -n, "ground:line")
+    elif s.kind == "circle" and s.arc is not None:
+        _ground_arc(ctx, s, band)
     elif s.kind == "circle":
         centre = s.centre()
         outer = s.radius if s.material_inside else s.radius + min(band, s.radius)
@@ -399,6 +417,27 @@ def _ground_shape(ctx: Context, s: ShapeView) -> None:
     elif s.vertices is not None:
         ctx.add("polygon", s.vertices, fill="#f0f0f0", colour="#9e9e9e", width=1.0, zorder=0,
                 gid="ground:plane")
+
+
+def _ground_arc(ctx: Context, s: ShapeView, band: float) -> None:
+    """A fixed part of a disc (a semicylinder, `arc` [0, 180]): its arc and flat side drawn in
+    the ground's grey, the arc hatched along its material's side (inside a drum, outside a
+    cavity) and the flat side hatched beyond it, the ground it rests on (issue 30,
+    twenty-fourth round (h): C5-1.7's semicylinder read as a whole cylinder)."""
+    centre, outline = s.centre(), s.outline()
+    arc = outline[:-1]
+    width = min(band, 0.5 * s.radius)
+    inner = centre + (arc - centre) * ((s.radius - width if s.material_inside else s.radius + width) / s.radius)
+    ctx.add("line", arc, width=1.8, colour=GROUND, zorder=2, gid="ground:circle")
+    ctx.add("polygon", np.vstack([arc, inner[::-1]]), colour=GROUND, width=0, hatch=True, zorder=1)
+    chord = arc[-1] - arc[0]
+    side = perpendicular(chord / np.linalg.norm(chord))
+    mid = float(np.mean(s.arc or (0.0, 0.0)))
+    if float(side @ np.array([np.cos(mid), np.sin(mid)])) > 0:
+        side = -side                         # away from the arc: the ground under the flat side
+    hatched_edge(ctx, arc[-1], arc[0], side, "ground:circle")
+    ctx.avoid(*outline)
+    ctx.area(*(outline if s.material_inside else np.vstack([arc, inner[::-1]])))
 
 
 def _across(edge: np.ndarray) -> bool | str:

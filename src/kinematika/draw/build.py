@@ -140,7 +140,8 @@ def _curve(c: Curve, num: Numbers, role: str) -> ShapeView:
 
 def _shape(s: Any, num: Numbers) -> ShapeView:
     if isinstance(s, Circle):
-        return ShapeView("circle", center=num.page(s.center), radius=num.scalar(s.radius))
+        return ShapeView("circle", center=num.page(s.center), radius=num.scalar(s.radius),
+                         arc=_page_arc(s.arc, num))
     if isinstance(s, Line):
         d = num.page(s.direction)
         return ShapeView("line", through=num.page(s.through), direction=d / np.linalg.norm(d))
@@ -153,6 +154,17 @@ def _shape(s: Any, num: Numbers) -> ShapeView:
                          vertices=np.array([num.proj(p) for p in rim]))
     assert isinstance(s, Plane)
     return _plane(s, num)
+
+
+def _page_arc(arc: Optional[tuple[float, float]], num: Numbers) -> Optional[tuple[float, float]]:
+    """A circle's arc (model degrees) as page radians, from → to counter-clockwise: its start
+    direction as the page shows it, the same sweep."""
+    if arc is None:
+        return None
+    a0 = math.radians(arc[0])
+    d = num.page((math.cos(a0), math.sin(a0)))
+    start = math.atan2(float(d[1]), float(d[0]))
+    return start, start + math.radians(arc[1] - arc[0])
 
 
 def _plane(s: Plane, num: Numbers) -> ShapeView:
@@ -185,7 +197,9 @@ def _extent(bodies: dict[str, BodyView], inst: Instant) -> tuple[tuple, float]:
     xy = [p for b in bodies.values() for p in b.points.values()]
     for b in bodies.values():
         for s in b.shapes:
-            if s.kind == "circle":
+            if s.kind == "circle" and s.arc is not None:
+                xy += list(s.outline())        # a part of a disc: its own extent (a semicylinder)
+            elif s.kind == "circle":
                 xy += [s.centre() - s.radius, s.centre() + s.radius]
             elif s.vertices is not None:
                 xy += list(s.vertices)

@@ -55,7 +55,9 @@ class Context:
             if body.name == self.frame:
                 continue
             for sh in body.shapes:
-                if sh.kind == "circle" and not sh.ring:
+                if sh.kind == "circle" and sh.arc is not None:
+                    out.append(sh.outline())
+                elif sh.kind == "circle" and not sh.ring:
                     out.append(ring(np.asarray(sh.center, dtype=float), float(sh.radius)))
                 elif sh.kind == "curve" and sh.closed and sh.role != "pitch" and sh.vertices is not None:
                     out.append(np.asarray(sh.vertices, dtype=float))

@@ -39,11 +39,21 @@ class ShapeView:
     ring: bool = False                     # the outer circle of an internal contact
     hatch_towards: Optional[Vec] = None    # ground line: the side its material is on
     material_inside: bool = True           # ground circle: a drum (True) or a cavity (False)
+    arc: Optional[tuple[float, float]] = None  # circle: the part its body is (radians on the page,
+                                           # from → to counter-clockwise; a semicylinder)
 
     def centre(self) -> Vec:
         """A circle's centre (the scene sets it for every circle)."""
         assert self.center is not None, f"a {self.kind} shape has no centre"
         return self.center
+
+    def outline(self, n: int = 72) -> Vec:
+        """A circle's outline, (n + 1, 2) closed: the whole circle, or for an `arc` the arc
+        and the chord back to its start (a semicylinder's half-disc, its flat side)."""
+        a0, a1 = self.arc if self.arc is not None else (0.0, 2 * np.pi)
+        t = np.linspace(a0, a1, n + 1)
+        pts = self.centre() + self.radius * np.column_stack([np.cos(t), np.sin(t)])
+        return pts if self.arc is None else np.vstack([pts, pts[:1]])
 
     def line(self) -> tuple[Vec, Vec]:
         """A line's point and unit direction (the scene sets both for every line)."""

@@ -297,7 +297,7 @@ def _shape(inst: Instant, s: Shape, body: str) -> Any:
     where = f"bodies.{body}"
     if isinstance(s, ms.Circle):
         return Circle(_at(inst, s.center, s.center_point, body), _radius(inst, s.radius, where),
-                      s.center_point)
+                      s.center_point, _arc(inst, s.arc, body))
     if isinstance(s, ms.Line):
         return Line(_at(inst, s.through, s.through_point, body),
                     inst.body_direction(body, s.direction, f"{where}.line.direction"), s.through_point)
@@ -312,6 +312,19 @@ def _shape(inst: Instant, s: Shape, body: str) -> Any:
     if isinstance(s, ms.CurveShape):
         return _curve(inst, s, body, where)
     return _cam(inst, s, body, where)
+
+
+def _arc(inst: Instant, arc: Optional[tuple[float, float]], body: str) -> Optional[tuple[float, float]]:
+    """A circle's arc (degrees) at this instant: as written, advanced by its body's turn when
+    the model is moved (`turns.turned`: the arc's start direction turned with the body)."""
+    if arc is None or not inst.model.turns:
+        return arc
+    from .turns import turned
+
+    a0 = math.radians(arc[0])
+    u = turned(inst, body, (math.cos(a0), math.sin(a0)))
+    turn = math.degrees(math.atan2(inst.num(u[1]), inst.num(u[0]))) - arc[0]
+    return arc[0] + turn, arc[1] + turn
 
 
 def _curve(inst: Instant, s: CurveShape, body: str, where: str) -> Curve:

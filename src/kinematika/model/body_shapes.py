@@ -15,11 +15,14 @@ from ..expressions import Direction, Expr, ExprVector
 @dataclass(frozen=True)
 class Circle:
     """A body's circle (a wheel, a pitch circle, a slot's arc): its centre (coordinates, or the
-    named point `center_point`) and radius."""
+    named point `center_point`) and radius; `arc` (degrees, from → to counter-clockwise, in
+    the model's axes at the drawing) when the body is only that part of the disc, which only
+    the figures read (a semicylinder is drawn as a half-disc; its contact is on the circle)."""
 
     center: ExprVector               # empty when `center_point` names the point
     radius: Expr
     center_point: Optional[str] = None
+    arc: Optional[tuple[float, float]] = None
 
 
 @dataclass(frozen=True)

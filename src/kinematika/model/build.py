@@ -251,6 +251,17 @@ class _Builder:
             return (), raw
         return self.check_size(self.vector(raw, where), where), None
 
+    @staticmethod
+    def arc(raw: Optional[list], where: str) -> Optional[tuple[float, float]]:
+        """A circle's `arc` [from, to] in degrees (counter-clockwise from `from`): a part of the
+        disc that is neither nothing nor all of it (0 < to − from < 360), else a `schema` error."""
+        if raw is None:
+            return None
+        start, end = (float(a) for a in raw)
+        if not 0.0 < end - start < 360.0:
+            raise KinematikaError("schema", "circle-arc", where, start=raw[0], end=raw[1])
+        return start, end
+
     def check_size(self, vec: ExprVector, where: str, what: str = "components") -> ExprVector:
         """A vector of the model's dimension: never padded or cut, so that a slip such as a 2D
         axis in a 3D model is an error rather than a different mechanism."""
@@ -268,7 +279,8 @@ class _Builder:
         for i, circle in enumerate(circles):        # several: solidary wheels (C5-E.1's R and 2R)
             at = f"{where}.circle[{i}]" if isinstance(raw.circle, list) else f"{where}.circle"
             center, cp = self.location(circle.center, f"{at}.center")
-            shapes.append(Circle(center, self.expr(circle.radius, f"{at}.radius"), cp))
+            shapes.append(Circle(center, self.expr(circle.radius, f"{at}.radius"), cp,
+                                 self.arc(circle.arc, f"{at}.arc")))
         if raw.line:
             through, tp = self.location(raw.line.through, f"{where}.line.through")
             shapes.append(Line(through, self.direction(raw.line.direction,

@@ -43,10 +43,14 @@ class ParameterSpec(Strict):
 
 
 class CircleSpec(Strict):
-    """A body's `circle`: centre (a point's name or coordinates) and radius."""
+    """A body's `circle`: centre (a point's name or coordinates) and radius; `arc` [from, to]
+    (degrees, counter-clockwise, in the model's axes at the drawing) when the body is only that
+    part of the disc (a semicylinder: `[0, 180]`). The arc is what the figures draw; the
+    kinematics read the circle (a contact on it is one on the whole circle)."""
 
     center: Union[str, Vector]
     radius: Value
+    arc: Optional[Annotated[list[Union[StrictInt, StrictFloat]], Field(min_length=2, max_length=2)]] = None
 
 
 class LineSpec(Strict):

@@ -60,6 +60,7 @@ point_spec = by_type({dict: construction_spec, list: vector})
 CircleSpec, circle_spec = record('CircleSpec', {
     'center': (location, REQUIRED),
     'radius': (value, REQUIRED),
+    'arc': (optional(listed(exact(int, float), 2, 2)), None),
 })
 DiscSpec, disc_spec = record('DiscSpec', {
     'center': (location, REQUIRED),

@@ -228,6 +228,7 @@ construction-cycle = les construccions es refereixen les unes a les altres en un
 construction-point-expected = s’esperava el nom d’un punt o coordenades [x, y], i hi ha { $got }
 construction-coordinates = les construccions són planes: coordenades [x, y], i n’hi ha { $got } components
 construction-circle-radius = una circumferència és [centre, radi]: el radi és un sol nombre
+circle-arc = l’arc [des de, fins a] d’una circumferència (graus, en sentit antihorari) n’és una part: 0 < fins a − des de < 360 (aquí de { $start } a { $end })
 construction-line-direction = la direcció d’una recta és un vector; per a una recta per dos punts escriu [P, Q]
 construction-direction-planar = les construccions són planes: una direcció [dx, dy]
 near-symbolic = `near` necessita nombres; en un model amb paràmetres simbòlics tria la intersecció amb `side`

@@ -156,6 +156,7 @@ construction-cycle = the constructions refer to each other in a cycle: { $cycle 
 construction-point-expected = expected a point's name or coordinates [x, y], got { $got }
 construction-coordinates = constructions are planar: coordinates [x, y], got { $got } components
 construction-circle-radius = a circle is [centre, radius]: the radius is one number
+circle-arc = a circle's arc [from, to] (degrees, counter-clockwise) is a part of the circle: 0 < to − from < 360 (here { $start } to { $end })
 construction-line-direction = a line's direction is a vector; for a line through two points write [P, Q]
 construction-direction-planar = constructions are planar: a direction [dx, dy]
 near-symbolic = `near` needs numbers; in a model with symbolic parameters choose the intersection with `side`

@@ -228,6 +228,7 @@ construction-cycle = las construcciones se refieren unas a otras en un ciclo: { 
 construction-point-expected = se esperaba el nombre de un punto o coordenadas [x, y], y hay { $got }
 construction-coordinates = las construcciones son planas: coordenadas [x, y], y hay { $got } componentes
 construction-circle-radius = una circunferencia es [centro, radio]: el radio es un solo número
+circle-arc = el arco [desde, hasta] de una circunferencia (grados, en sentido antihorario) es una parte de ella: 0 < hasta − desde < 360 (aquí de { $start } a { $end })
 construction-line-direction = la dirección de una recta es un vector; para una recta por dos puntos escribe [P, Q]
 construction-direction-planar = las construcciones son planas: una dirección [dx, dy]
 near-symbolic = `near` necesita números; en un modelo con parámetros simbólicos elige la intersección con `side`

@@ -228,6 +228,7 @@ construction-cycle = eraikuntzek elkar aipatzen dute ziklo batean: { $cycle }
 construction-point-expected = puntu baten izena edo [x, y] koordenatuak espero ziren, baina { $got } dago
 construction-coordinates = eraikuntzak lauak dira: [x, y] koordenatuak, baina { $got } osagai daude
 construction-circle-radius = zirkunferentzia bat [zentroa, erradioa] da: erradioa zenbaki bakar bat da
+circle-arc = zirkunferentzia baten arkua [hasiera, amaiera] (graduak, erlojuaren orratzen aurkako noranzkoan) haren zati bat da: 0 < amaiera − hasiera < 360 (hemen { $start }-tik { $end }-ra)
 construction-line-direction = zuzen baten norabidea bektore bat da; bi puntutatik pasatzen den zuzen baterako idatzi [P, Q]
 construction-direction-planar = eraikuntzak lauak dira: norabide bat [dx, dy]
 near-symbolic = `near` gakoak zenbakiak behar ditu; parametro sinbolikoak dituen eredu batean aukeratu ebakidura `side` gakoarekin
