@@ -62,6 +62,7 @@ class IdleStep:
     velocity: list
     acceleration: list
     known: list[str]
+    centre: str = ""             # the rolling body's centre, whose motion the step reads
 
 
 def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool,
@@ -100,7 +101,7 @@ def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool,
             straight = _straight(ctx, carrier, name)
             acc.append(Derived(alpha_sym(b), read_off(ctx, Sym("a", name, "" if straight else "t"), r, ctx.alpha(b)),
                                ctx.value(ctx.alpha(b), "rate2"), b, "alpha", not ctx.symbolic))
-        return IdleStep(b, out, acc, [other] + ([carrier] if carrier and carrier != other else []))
+        return IdleStep(b, out, acc, [other] + ([carrier] if carrier and carrier != other else []), name)
     return None
 
 

@@ -59,6 +59,14 @@ def prune(ctx: Ctx, doc: Document) -> None:
         _restore(kept)
         unworked = _prune(ctx, doc, _asked_bodies(ctx) | halves)
     steps, idle, rated = _idle(ctx, doc, unworked.get("v", set()))
+    centres = frozenset(s.centre for s in steps if s.centre)
+    if centres:
+        # the centre of a wheel given its rate after the steps: its motion stays in the step
+        # of the body that carries it, as that step wrote it (C5-1.2's v_Q = v_{I_OQ} +
+        # v_{Q,I_OQ} in Step 1, round 24d), not a line of the wheel's own step
+        _restore(kept)
+        unworked = _prune(ctx, doc, _asked_bodies(ctx) | halves, centres)
+        steps, idle, rated = _idle(ctx, doc, unworked.get("v", set()))
     _drop_rows(doc, unworked.get("v", set()), unworked.get("a", set()) - rated, keep=rated)
     for step in steps:
         _idle_step(doc, step)
@@ -127,12 +135,13 @@ def _restore(snapshot: list) -> None:
             sec.title.args = args
 
 
-def _prune(ctx: Ctx, doc: Document, bodies: set[str]) -> dict[str, set[str]]:
-    """One pass of `prune` keeping the rates of `bodies`: the bodies left unworked, by level.
+def _prune(ctx: Ctx, doc: Document, bodies: set[str], points: frozenset[str] = frozenset()) -> dict[str, set[str]]:
+    """One pass of `prune` keeping the rates of `bodies` and the motions of `points` (as if
+    asked): the bodies left unworked, by level.
     A body whose ω the explanation works out has its α worked out too (when accelerations
     are explained): the table of rates has no holes (C5-E.4's right wheel, C5-E.6's front
     wheel)."""
-    asked = _asked_points(ctx)
+    asked = _asked_points(ctx) | points
     unworked: dict[str, set[str]] = {}
     for sec in reversed(doc.sections):       # the later first: what they drop, the earlier need not keep
         if sec.title.key in LEVELS:
