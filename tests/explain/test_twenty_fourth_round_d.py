@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 
-from kinematika.explain.document import Derived, Equation, Msg, Section, Table
+from kinematika.explain.document import Derived, Equation, Msg
 
 from .helpers import LANGS, SEEDS, explained, over, rendered
 

@@ -99,8 +99,7 @@ def _idle_step(doc: Document, step: Any) -> None:
     body, and every point velocity, is derived in a step the order lists; the summary of
     rates only collects (round 24d)."""
     from .order import Step
-    from .planar import step_title
-    from .structure import order_item
+    from .structure import order_item, step_title
 
     found = Step("other", [step.body], [], list(step.known))
     for sec in doc.sections:
