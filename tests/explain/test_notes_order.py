@@ -310,12 +310,16 @@ def test_a_rate_nobody_asks_is_not_worked_out():
     velocities = blocks(section(doc, "sec.velocities"))
     for eq in (b for b in velocities if isinstance(b, Equation)):
         assert not turning_bodies(eq) & {"wheel1", "wheel2"}, eq.target.sym
-    # the wheels' rates, which two readers asked for, are read off after the rates' table from
-    # their rolling (seventeenth round (a)): ω = −|v_O| / r, never in a velocity equation
+    # the wheels' rates, which two readers asked for, are read off their rolling (seventeenth
+    # round (a)): ω = −|v_O| / r, never in a velocity equation, each in a step of its own after
+    # the bars' (round 24d: the summary only collects)
     summary = next(s for s in doc.sections if s.title.key.startswith("sec.rates_summary"))
     wheel_rates = {d.body: d for d in doc.derived() if d.body in ("wheel1", "wheel2")}
     assert set(wheel_rates) == {"wheel1", "wheel2"}
-    assert all(any(d is b for b in summary.leaves()) for d in wheel_rates.values())
+    assert not any(any(d is b for b in summary.leaves()) for d in wheel_rates.values())
+    for body, d in wheel_rates.items():
+        own = next(s for s in steps(doc) if [n.text for n in s.title.args["bodies"].items] == [body])
+        assert any(d is b for b in own.leaves()), body
     table = next(b for b in summary.blocks if hasattr(b, "rows"))
     assert [r[0].text for r in table.rows] == ["wheel1", "wheel2", "OQ", "OJ"]   # the planes are ground (welded to it)
     step = next(s for s in steps(doc) if "OQ" in [n.text for n in s.title.args["bodies"].items])

@@ -101,6 +101,8 @@ def answer_items(ctx: Ctx, q, value: Any) -> list:
         return [("", msg("ans.translation"))]
     out = []
     for key, v in value.items():
+        if key in QUESTIONS[q.kind].working:        # derived in a step before (`intrinsic_lines`)
+            continue
         if isinstance(v, dict):
             for sub, w in v.items():
                 out.append((_part_label(ctx, q, key, sub), _value(ctx, w, UNITS.get(sub) or UNITS[key] or "")))
@@ -146,16 +148,48 @@ def relative_rates(ctx: Ctx) -> list[Derived]:
 
 
 def curvature_section(ctx: Ctx) -> Section | None:
-    """Each `curvature` question: the acceleration split along and across the velocity."""
+    """Each `curvature` question: the acceleration split along and across the velocity; and
+    each `intrinsic` question's working (`intrinsic_lines`), after its point's split, so that
+    the answers table gives only the asked aᵗ and aⁿ (round 24d: C5-1.7's answer row carried
+    |v_P|, t, aᵗ · t and |aⁿ|, symbols the page never derived)."""
     asked = [q for q in worked(ctx).curvatures if ctx.planar]
-    if not asked:
+    split = [q for q in ctx.model.questions if q.kind == "intrinsic" and ctx.planar]
+    if not asked and not split:
         return None
     sec = Section(msg("sec.curvature"))
     sec.add(msg("curvature.intro", rho=Inline([Sym("ℜ", vector=False), " = |", Sym("v"), "|² / |",
                                                Sym("a", sup="n"), "|"])))
     for q in asked:
         sec.blocks += curvature_steps(ctx, q)
+    for q in split:
+        at = next((k for k, b in enumerate(sec.blocks) if isinstance(b, Equation) and b.point == q.target
+                   and b.relative_to == q.relative_to), None)
+        lines = intrinsic_lines(ctx, q)
+        if at is None:                      # no curvature asked of the point: its split first
+            sec.blocks += [b for b in curvature_steps(ctx, q)
+                           if isinstance(b, Equation) or getattr(b, "key", "") == "curvature.point"] + lines
+        else:
+            sec.blocks[at + 1:at + 1] = lines
     return sec
+
+
+def intrinsic_lines(ctx: Ctx, q) -> list:
+    """The intrinsic components of a point's acceleration, worked out from its velocity and
+    the split a = aᵗ + aⁿ: |v|, the unit tangent t = v/|v|, the signed aᵗ · t and |aⁿ|."""
+    result = answer(ctx.sol, q)
+    if result.get("rest"):
+        return []
+    label = ctx.point_label(q.target.point, q.target.body)
+    v, t = Sym("v", label), Sym("t")
+    speed = Value(ctx.clean(result["speed"], "speed"), "speed")
+    tangent = Value(ctx.clean(tuple(result["tangent"]), ""), "")
+    along = Value(ctx.clean(result["tangential"], "accel"), "accel")
+    across = Value(ctx.clean(result["normal"], "accel"), "accel")
+    return [msg("curvature.intrinsic", point=Name(label),
+                speed=Inline(["|", v, "| = ", speed]),
+                tangent=Inline([t, " = ", v, "/|", v, "| = ", tangent]),
+                tangential=Inline([Sym("a", label, "t"), " · ", t, " = ", along]),
+                normal=Inline(["|", Sym("a", label, "n"), "| = ", across]))]
 
 
 def curvature_steps(ctx: Ctx, q) -> list:

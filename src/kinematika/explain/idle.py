@@ -11,9 +11,16 @@ would, after the table of rates (round 17a):
   bodies) and turning with it: ω is that body's, by symmetry (C5-1.4's planets), in the
   table too;
 - any other: one sentence that it does not enter the question.
+
+A body given its rate is worked out in a numbered step of its own, in the velocities and in
+the accelerations, and the order of solution lists it ("4. The *front wheel*, from the
+*ground* and the *frame*."): the summary after the steps only collects what they found
+(round 24d; the readers found C5-E.6's v_F = v_H and ω_{front wheel} derived under "Angular
+velocities", outside any step, and missing from the order).
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any, Optional
 
 from .context import Ctx, alpha_sym, omega_sym, radius_formula, read_off, segment
@@ -22,28 +29,44 @@ from .kinds import rolls
 
 
 def idle_blocks(ctx: Ctx, idle: list[str], worked: list[str], accel: bool,
-                written: Optional[set[tuple[str, str]]] = None) -> tuple[list, set[str]]:
-    """The lines for the `idle` bodies (no step works their ω out), and those of them given a
-    rate (their rows stay in the table, α too when `accel`); `worked` are the bodies the
-    table lists; `written` the (v or a, subscript) of the motions the page writes before
-    these lines (`written_motions`): a line uses no velocity the page has not written (round
-    20a)."""
-    out: list = []
+                written: Optional[set[tuple[str, str]]] = None) -> tuple[list[IdleStep], list, set[str]]:
+    """The steps for the `idle` bodies given a rate (no step of the solver works their ω
+    out), the lines for the others (one sentence: they do not enter the question), and the
+    bodies given a rate (their rows stay in the table, α too when `accel`); `worked` are the
+    bodies the table lists; `written` the (v or a, subscript) of the motions the page writes
+    before these lines (`written_motions`): a line uses no velocity the page has not written
+    (round 20a)."""
+    steps: list[IdleStep] = []
     rated: set[str] = set()
     left: list[str] = []
     for b in idle:
-        lines = _rolling(ctx, b, worked, accel, written or set()) or _symmetric(ctx, b, worked, accel)
-        if not lines:
+        step = _rolling(ctx, b, worked, accel, written or set()) or _symmetric(ctx, b, worked, accel)
+        if step is None:
             left.append(b)
             continue
-        out += lines
+        steps.append(step)
         rated.add(b)
+    out: list = []
     if left:
         out.append(msg("idle.unused", bodies=Names([Name(b, "body") for b in left]), count=len(left)))
-    return out, rated
+    return steps, out, rated
 
 
-def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool, written: set[tuple[str, str]]) -> list:
+@dataclass
+class IdleStep:
+    """A body given its rate in a step of its own: its velocity lines, its acceleration lines
+    and the bodies it is found from (the fixed body it rolls on and the body that carries its
+    centre, or the body it is placed like)."""
+
+    body: str
+    velocity: list
+    acceleration: list
+    known: list[str]
+    centre: str = ""             # the rolling body's centre, whose motion the step reads
+
+
+def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool,
+             written: set[tuple[str, str]]) -> Optional[IdleStep]:
     """ω = ±|v_O| / r of a body rolling on a fixed one, O its centre, a point of a body the
     page worked out (or of the frame); α = ±|a_O^t| / r with accelerations (|v_O| = |ω| r
     at every instant, differentiated along the path), ±|a_O| / r when O's path is straight
@@ -65,17 +88,21 @@ def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool, written: set[tupl
             continue
         r = Value(radius, unit)          # the model's symbol r (no unit), or a plain number's length
         carrier = next((k for k in ctx.model.carriers(name) if k != b and (k in worked or ctx.fixed(k))), "")
+        said = msg("idle.rolling", body=Name(b, "body"), fixed=Name(other, "body"), point=Name(ctx.contact(j)))
         out: list = _centre_motion(ctx, carrier, name, "v", written)
-        out.append(msg("idle.rolling", body=Name(b, "body"), fixed=Name(other, "body"), point=Name(ctx.contact(j))))
+        out.append(said)
         out.append(Derived(omega_sym(b), read_off(ctx, Sym("v", name), r, ctx.omega(b)),
                            ctx.value(ctx.omega(b), "rate"), b, "omega", not ctx.symbolic))
+        acc: list = []
         if accel:
-            out += _centre_motion(ctx, carrier, name, "a", written)
+            acc += _centre_motion(ctx, carrier, name, "a", written)
+            acc.append(msg("idle.rolling", body=Name(b, "body"), fixed=Name(other, "body"),
+                           point=Name(ctx.contact(j))))
             straight = _straight(ctx, carrier, name)
-            out.append(Derived(alpha_sym(b), read_off(ctx, Sym("a", name, "" if straight else "t"), r, ctx.alpha(b)),
+            acc.append(Derived(alpha_sym(b), read_off(ctx, Sym("a", name, "" if straight else "t"), r, ctx.alpha(b)),
                                ctx.value(ctx.alpha(b), "rate2"), b, "alpha", not ctx.symbolic))
-        return out
-    return []
+        return IdleStep(b, out, acc, [other] + ([carrier] if carrier and carrier != other else []), name)
+    return None
 
 
 def written_motions(blocks: list) -> set[tuple[str, str]]:
@@ -153,7 +180,7 @@ def _centre(ctx: Ctx, b: str, contact: Any) -> Optional[tuple[str, Any, str]]:
     return None
 
 
-def _symmetric(ctx: Ctx, b: str, worked: list[str], accel: bool) -> list:
+def _symmetric(ctx: Ctx, b: str, worked: list[str], accel: bool) -> Optional[IdleStep]:
     """ω_b = ω_w of a worked body w placed like b: the same round shapes and the same kinds
     of joint with the same bodies, and the same angular velocity (C5-1.4's third planet,
     like the first)."""
@@ -165,11 +192,12 @@ def _symmetric(ctx: Ctx, b: str, worked: list[str], accel: bool) -> list:
             continue
         out: list = [msg("idle.symmetry", body=Name(b, "body"), like=Name(w, "body")),
                      Derived(omega_sym(b), [omega_sym(w)], ctx.value(ctx.omega(b), "rate"), b, "omega", not ctx.symbolic)]
+        acc: list = []
         if accel:
-            out.append(Derived(alpha_sym(b), [alpha_sym(w)], ctx.value(ctx.alpha(b), "rate2"), b, "alpha",
+            acc.append(Derived(alpha_sym(b), [alpha_sym(w)], ctx.value(ctx.alpha(b), "rate2"), b, "alpha",
                                not ctx.symbolic))
-        return out
-    return []
+        return IdleStep(b, out, acc, [w])
+    return None
 
 
 def _placing(ctx: Ctx, b: str) -> tuple:

@@ -14,6 +14,7 @@ point) always stay. A model without questions asks for everything, and keeps eve
 from __future__ import annotations
 
 import re
+from typing import Any
 
 from ..questions import QUESTIONS
 from .context import Ctx
@@ -57,8 +58,18 @@ def prune(ctx: Ctx, doc: Document) -> None:
     if halves:                  # ω worked, α not: the table would show a hole — work α out too
         _restore(kept)
         unworked = _prune(ctx, doc, _asked_bodies(ctx) | halves)
-    idle, rated = _idle(ctx, doc, unworked.get("v", set()))
+    steps, idle, rated = _idle(ctx, doc, unworked.get("v", set()))
+    centres = frozenset(s.centre for s in steps if s.centre)
+    if centres:
+        # the centre of a wheel given its rate after the steps: its motion stays in the step
+        # of the body that carries it, as that step wrote it (C5-1.2's v_Q = v_{I_OQ} +
+        # v_{Q,I_OQ} in Step 1, round 24d), not a line of the wheel's own step
+        _restore(kept)
+        unworked = _prune(ctx, doc, _asked_bodies(ctx) | halves, centres)
+        steps, idle, rated = _idle(ctx, doc, unworked.get("v", set()))
     _drop_rows(doc, unworked.get("v", set()), unworked.get("a", set()) - rated, keep=rated)
+    for step in steps:
+        _idle_step(doc, step)
     if idle:
         for s in doc.sections:
             if s.title.key in ("sec.rates_summary", "sec.rates_summary_v"):
@@ -68,17 +79,39 @@ def prune(ctx: Ctx, doc: Document) -> None:
                 s.blocks[at:at] = idle
 
 
-def _idle(ctx: Ctx, doc: Document, unworked: set[str]) -> tuple[list, set[str]]:
-    """The lines for the moving bodies the structure lists and no step works out
-    (`idle.idle_blocks`), and those given a rate there."""
+def _idle(ctx: Ctx, doc: Document, unworked: set[str]) -> tuple[list, list, set[str]]:
+    """The steps and the lines for the moving bodies the structure lists and no step works
+    out (`idle.idle_blocks`), and those given a rate there."""
     from .idle import idle_blocks, written_motions
 
     listed = [b for b in ctx.model.moving_bodies if not ctx.fixed(b)]
     idle = [b for b in listed if b in unworked]
     if not idle:
-        return [], set()
+        return [], [], set()
     accel = any(s.title.key == "sec.rates_summary" for s in doc.sections)
     return idle_blocks(ctx, idle, [b for b in listed if b not in unworked], accel, written_motions(doc.sections))
+
+
+def _idle_step(doc: Document, step: Any) -> None:
+    """A body given its rate after the solver's steps (`idle.IdleStep`) gets a numbered step
+    of its own at the end of the velocities (and of the accelerations), and the order of
+    solution an item for it: "4. The *front wheel*, from the *ground* and the *frame*." Every
+    body, and every point velocity, is derived in a step the order lists; the summary of
+    rates only collects (round 24d)."""
+    from .order import Step
+    from .structure import order_item, step_title
+
+    found = Step("other", [step.body], [], list(step.known))
+    for sec in doc.sections:
+        lines = {LEVELS[0]: step.velocity, LEVELS[1]: step.acceleration}.get(sec.title.key)
+        if sec.title.key == "sec.structure":
+            for sub in (b for b in sec.blocks if isinstance(b, Section) and b.title.key == "sec.order"):
+                n = sum(1 for m in sub.blocks if isinstance(m, Msg) and m.key in ORDER_ITEMS)
+                sub.add(order_item(n + 1, found))
+        elif lines:
+            numbered = [k for k, b in enumerate(sec.blocks) if isinstance(b, Section) and b.title.key in STEP_TITLES]
+            at = numbered[-1] + 1 if numbered else len(sec.blocks)
+            sec.blocks.insert(at, Section(step_title(len(numbered) + 1, found), list(lines), level=3))
 
 
 def _snapshot(blocks: list) -> list:
@@ -101,12 +134,13 @@ def _restore(snapshot: list) -> None:
             sec.title.args = args
 
 
-def _prune(ctx: Ctx, doc: Document, bodies: set[str]) -> dict[str, set[str]]:
-    """One pass of `prune` keeping the rates of `bodies`: the bodies left unworked, by level.
+def _prune(ctx: Ctx, doc: Document, bodies: set[str], points: frozenset[str] = frozenset()) -> dict[str, set[str]]:
+    """One pass of `prune` keeping the rates of `bodies` and the motions of `points` (as if
+    asked): the bodies left unworked, by level.
     A body whose ω the explanation works out has its α worked out too (when accelerations
     are explained): the table of rates has no holes (C5-E.4's right wheel, C5-E.6's front
     wheel)."""
-    asked = _asked_points(ctx)
+    asked = _asked_points(ctx) | points
     unworked: dict[str, set[str]] = {}
     for sec in reversed(doc.sections):       # the later first: what they drop, the earlier need not keep
         if sec.title.key in LEVELS:

@@ -13,7 +13,7 @@ from typing import Optional
 from ..model.model import Joint
 from ..point_pair import PointPair
 from .context import Ctx, alpha_sym, omega_sym, read_off, segment, split_pair
-from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, names, point
+from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, point
 from .group import centre_site, group_blocks, still_contact
 from .said_first import conditions_first
 from .shared import shared_rates
@@ -22,6 +22,7 @@ from .contacts import geometric_blocks
 from .given import sign_of, heading, speeding, whole_along
 from .kinds import kind_key, meshes, pin_only, roller, rolls, turns
 from .order import Step, as_found, merge_vehicles
+from .structure import step_title
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
 from .vehicles import spins, wheel_route
@@ -29,19 +30,6 @@ from .vehicles import spins, wheel_route
 body_ = body
 
 LEVEL_UNIT = {"v": "rate", "a": "rate2"}
-
-
-def step_title(n: int, step: Step) -> Msg:
-    """A step's title: its number and the bodies it finds, after the course's name for the
-    group when it has one (input, RRR dyad …); a group that is no named kind is titled by its
-    bodies alone, as a teacher writes it ("Step 1: rear wheel and sprocket"), not by the
-    program's "group solved together". After the colon every title goes on in lower case,
-    the kind's word or the first name alike ("Pas 1: entrada (sòlid motor) — la corredora",
-    "Pas 2: la palanca N"): sentence case, one style for every step of a page, where a
-    capital on the name alone made the titles of one page disagree."""
-    key = "step.title_group" if step.kind == "other" else "step.title"
-    bodies = names(step.bodies, "body")
-    return msg(key, n=n, kind=msg(f"kind.{step.kind}"), bodies=bodies)
 
 
 class PlanarSteps:

@@ -118,6 +118,19 @@ def _dyads(steps: list) -> bool:
 DYADS = ("RRR", "RRP", "RPR", "PRP")
 
 
+def step_title(n: int, step: Step) -> Msg:
+    """A step's title: its number and the bodies it finds, after the course's name for the
+    group when it has one (input, RRR dyad …); a group that is no named kind is titled by its
+    bodies alone, as a teacher writes it ("Step 1: rear wheel and sprocket"), not by the
+    program's "group solved together". After the colon every title goes on in lower case,
+    the kind's word or the first name alike ("Pas 1: entrada (sòlid motor) — la corredora",
+    "Pas 2: la palanca N"): sentence case, one style for every step of a page, where a
+    capital on the name alone made the titles of one page disagree."""
+    key = "step.title_group" if step.kind == "other" else "step.title"
+    bodies = names(step.bodies, "body")
+    return msg(key, n=n, kind=msg(f"kind.{step.kind}"), bodies=bodies)
+
+
 def order_item(n: int, step: Step) -> Msg:
     """One line of the order of solution: the bodies a step finds and the bodies they are
     found from, after the course's name for the group when it has one (RRR dyad …). Its

@@ -246,6 +246,10 @@ class QuestionKind:
     placed: ClassVar[bool] = False          # its answer is a centre placed from a point (planar):
                                             # the answers table also gives its distance from
                                             # that point, as the notes do ((2/5)r from A1)
+    working: ClassVar[frozenset[str]] = frozenset()   # fields that are the working of the
+                                            # answer, not the answer: an explanation derives
+                                            # them in a step and its answers table leaves them
+                                            # out (the intrinsic split's |v|, t, aᵗ · t, |aⁿ|)
 
     def answer(self, sol: Solved, q: Asked) -> Any:
         """The raw answer (backend scalars, nested in dicts for a compound answer)."""

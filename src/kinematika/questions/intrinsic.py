@@ -20,6 +20,9 @@ class Intrinsic(QuestionKind):
     fields = {"speed": "velocity", "tangent": None, "tangential": "acceleration", "normal": "acceleration",
               "tangential_vector": "acceleration", "normal_vector": "acceleration",
               "acceleration": "acceleration"}
+    # the answer is the two vectors aᵗ and aⁿ; the speed, the tangent and the two scalars
+    # are how they are found, written in the explanation's curvature section (round 24d)
+    working = frozenset({"speed", "tangent", "tangential", "normal"})
 
     def answer(self, sol: Solved, q: Asked) -> Any:
         """Speed, unit tangent, the signed tangential and the normal acceleration

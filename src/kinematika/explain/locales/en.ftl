@@ -423,6 +423,7 @@ curvature-straight = The normal acceleration of { $point } is zero: its path is 
 curvature-circle = Point { $point }: it keeps its distance from the fixed point { $o }, so its path is the circle of radius { $radius } about { $o }; the radius of curvature is that radius:
 curvature-circle_centre = The centre of curvature of the path of { $point } is { $o }, at { $centre }.
 curvature-centre = The centre of curvature of the path of { $point } is at { $centre }, on the side of the normal acceleration.
+curvature-intrinsic = The tangential and normal acceleration of { $point }, along the unit tangent of its path: { $speed }; { $tangent }; { $tangential }; { $normal }.
 sec-answers = Answers
 answers-none = The model asks no questions.
 ask-icr = instant centre of { $body } relative to { $frame }

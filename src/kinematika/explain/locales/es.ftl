@@ -395,6 +395,7 @@ curvature-straight = La aceleración normal de { $point } es nula: su trayectori
 curvature-circle = Punto { $point }: mantiene la distancia al punto fijo { $o }, así que su trayectoria es la circunferencia de radio { $radius } centrada en { $o }; el radio de curvatura es ese radio:
 curvature-circle_centre = El centro de curvatura de la trayectoria de { $point } es { $o }, en { $centre }.
 curvature-centre = El centro de curvatura de la trayectoria de { $point } está en { $centre }, del lado de la aceleración normal.
+curvature-intrinsic = La aceleración tangencial y normal de { $point }, según la tangente unitaria de su trayectoria: { $speed }; { $tangent }; { $tangential }; { $normal }.
 sec-answers = Respuestas
 answers-none = El modelo no hace preguntas.
 ask-icr = CIR de { $body } respecto de { $frame }

@@ -336,6 +336,7 @@ curvature-straight = { $point } puntuaren azelerazio normala nulua da: haren ibi
 curvature-circle = { $point } puntua: { $o } puntu finkoarekiko distantzia mantentzen du; beraz, haren ibilbidea { $o } zentroko eta { $radius } erradioko zirkunferentzia da, eta kurbadura-erradioa erradio hori da:
 curvature-circle_centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $o } puntua da, { $centre } posizioan.
 curvature-centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $centre } puntuan dago, azelerazio normalaren aldean.
+curvature-intrinsic = { $point } puntuaren azelerazio tangentziala eta normala, haren ibilbidearen ukitzaile unitarioan zehar: { $speed }; { $tangent }; { $tangential }; { $normal }.
 sec-answers = Erantzunak
 answers-none = Ereduak ez du galderarik egiten.
 ask-icr = { $body } solidoaren biraketa-zentro instantaneoa { $frame } solidoarekiko
