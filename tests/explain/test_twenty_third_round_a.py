@@ -54,18 +54,23 @@ def test_the_epicyclic_planet_rolls_on_the_ring() -> None:
     assert "A1 moves with the *carrier* about O, and" in rendered("seed_c5_1_4_epicyclic", "en")
 
 
-TANGENT = {"en": "unit tangent", "es": "tangente unitaria", "ca": "tangent unitària", "eu": "ukitzaile unitarioa"}
-
-
 @over(name=SEEDS, lang=LANGS)
 def test_the_unit_tangent_is_the_velocitys_unit_vector(name: str, lang: str) -> None:
     """Every answer "unit tangent t = …" writes it as the velocity's unit vector, t = v_P/|v_P|
     = (1, 0), with the point the speed |v_P| just before it names (C5-1.7: "t = (1, 0)" had
     no working)."""
     md = rendered(name, lang)
-    for m in re.finditer(r"\|(v_\S+?)\| = [^;]*; " + re.escape(TANGENT[lang]) + r" t = ([^;]*);", md):
+    # the working stands before the answers since the twenty-fourth round (d): "|v_P| = …; t = …"
+    for m in re.finditer(r"\|(v_\S+?)\| = [^;]*; t = ([^;]*);", md):
         v = m.group(1)
         assert m.group(2).startswith(f"{v}/|{v}| = ("), m.group(0)
+
+
+def test_the_unit_tangent_is_written_on_the_semicylinders_page() -> None:
+    """The rule above reads C5-1.7's working in every language (it would pass on a page that
+    lost it): there, |v_P| = 2·r·ω and t = v_P/|v_P| = (1, 0)."""
+    for lang in LANGS:
+        assert "|v_P| = 2·r·ω; t = v_P/|v_P| = (1" in rendered("seed_c5_1_7_semicylinder", lang), lang
 
 
 # each catalogue's word for a contact point in the fixed body's row
