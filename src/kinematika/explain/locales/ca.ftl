@@ -529,7 +529,10 @@ composition-point = Punt { $point } { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }, referència mòbil { $frame }:
-composition-drag = Arrossegament:
+composition-drag = { WORD($kind) ->
+        [accel] { sec-accelerations }
+       *[speed] { sec-velocities }
+    }. Arrossegament:
 composition-relative = Relatiu: { $sym }, el moviment vist des de la referència mòbil, { $frame }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] rodolen

@@ -406,7 +406,10 @@ fields-intro_a = The acceleration of every point, from a point of the same body 
 sec-composition = Composition of motions
 composition-intro = The motion of a point is its drag motion (that of the point of the moving frame that coincides with it) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
 composition-point = Point { $point } of { $body }, moving frame { $frame }:
-composition-drag = Drag:
+composition-drag = { WORD($kind) ->
+        [accel] { sec-accelerations }
+       *[speed] { sec-velocities }
+    }. Drag:
 composition-relative = Relative: { $sym }, the motion seen from the moving frame, { $frame }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] roll

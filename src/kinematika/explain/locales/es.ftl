@@ -378,7 +378,10 @@ fields-intro_a = La aceleración de cada punto, a partir de un punto del mismo s
 sec-composition = Composición de movimientos
 composition-intro = El movimiento de un punto es el de arrastre (el del punto de la referencia móvil que coincide con él) más el relativo a esa referencia, más, en aceleraciones, el término de Coriolis { $cor }.
 composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
-composition-drag = Arrastre:
+composition-drag = { WORD($kind) ->
+        [accel] { sec-accelerations }
+       *[speed] { sec-velocities }
+    }. Arrastre:
 composition-relative = Relativo: { $sym }, el movimiento visto desde la referencia móvil, { $frame }:
 composition-rolls = { $body } { COUNT($body) ->
             [many] ruedan

@@ -322,7 +322,10 @@ fields-intro_a = Puntu bakoitzaren azelerazioa, solido bereko puntu ezagun batet
 sec-composition = Mugimenduen konposizioa
 composition-intro = Puntu baten mugimendua arrastre-mugimendua da (erreferentzia mugikorrean puntuarekin bat datorren puntuarena) gehi erreferentzia horrekiko mugimendu erlatiboa, gehi, azelerazioetan, Coriolisen terminoa { $cor }.
 composition-point = { $body } solidoaren { $point } puntua, { $frame } erreferentzia mugikorra:
-composition-drag = Arrastrea:
+composition-drag = { WORD($kind) ->
+        [accel] { sec-accelerations }
+       *[speed] { sec-velocities }
+    }. Arrastrea:
 composition-relative = Erlatiboa: { $sym }, { $frame } erreferentzia mugikorretik ikusten den mugimendua:
 composition-rolls = { $body } solidoa { $frame } solidoaren gainean errodatzen da irristatu gabe { $point } puntuan: { $frame } solidotik ikusita, { $point } da { $body } solidoaren biraketa-zentro instantaneoa, { $sym } = 0, eta haren puntu guztiek haren inguruan biratzen dute.
 sec-curvature = Ibilbideen kurbadura
