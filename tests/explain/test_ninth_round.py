@@ -48,7 +48,7 @@ def test_relative_subscript_in_the_other_languages(lang, word):
 def test_catalan_centres_intro_says_rel():
     """The centres' section says how two names are joined, with the same word."""
     text = rendered("seed_c5_1_3_bar_in_sleeve", "ca", "md", drawings=False)
-    assert "units per «rel.» (relatiu a)" in text
+    assert "units per «rel» (relatiu a)" in text
     assert "resp." not in text
 
 
@@ -131,7 +131,7 @@ def test_basque_numbered_bodies_keep_the_word():
 
 
 @pytest.mark.parametrize("lang,absolute,relative,drag", [
-    ("ca", "ω_{politja fixa}", "ω_{politja fixa rel. braç}", "ω_braç"),
+    ("ca", "ω_{politja fixa}", "ω_{politja fixa rel braç}", "ω_braç"),
     ("es", "ω_{polea fija}", "ω_{polea fija rel brazo}", "ω_brazo"),
 ])
 def test_belt_fixed_pulley_absolute_on_the_left(lang, absolute, relative, drag):

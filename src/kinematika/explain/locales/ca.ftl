@@ -479,7 +479,7 @@ centres-intro_named = El símbol I, amb el nom d’un sòlid ({ $pair }), design
     } respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, i, amb dos noms units per «rel.» (relatiu a), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
+    }, i, amb dos noms units per «rel» (relatiu a), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
 centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),
