@@ -47,6 +47,13 @@ structure-subscript_pair = { $sym } és la velocitat angular { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }
+structure-subscript_drag = { $equal } és { WORD($kind) ->
+        [accel] l’acceleració
+       *[speed] la velocitat
+    } d’arrossegament { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    }
 structure-subscript_member = { $sym } és la velocitat del punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -645,7 +652,7 @@ composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $bod
         [accel] l’acceleració
        *[speed] la velocitat
     } relativa trobada al pas { $step }: { $sym } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
+composition-drag_seen = { $sym } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació del pas { $step }.
 composition-sum_seen = Així, { $sym } = { $terms } és l’equació del pas { $step }, que va trobar { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: l’oposada { WORD($kind) ->

@@ -32,6 +32,10 @@ col-question = pregunta
 col-answer = respuesta
 structure-subscripts = Notación: { $pairs }.
 structure-subscript_pair = { $sym } es la velocidad angular de { $body }
+structure-subscript_drag = { $equal } es la { WORD($kind) ->
+        [accel] aceleración
+       *[speed] velocidad
+    } de arrastre de { $point }
 structure-subscript_member = { $sym } es la velocidad del punto de { $body } situado en { $point }
 structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
@@ -431,7 +435,7 @@ composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }: { $sym } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
+composition-drag_seen = { $sym } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación del paso { $step }.
 composition-sum_seen = Así, { $sym } = { $terms } es la ecuación del paso { $step }, que halló { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { WORD($kind) ->

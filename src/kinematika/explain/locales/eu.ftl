@@ -32,6 +32,10 @@ col-question = galdera
 col-answer = erantzuna
 structure-subscripts = Notazioa: { $pairs }.
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
+structure-subscript_drag = { $equal } { $point } puntuaren arrastre-{ WORD($kind) ->
+        [accel] azelerazioa
+       *[speed] abiadura
+    } da
 structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuko puntuaren abiadura da
 structure-shaped = { $body }, { $radius } erradioko { $shape }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it
@@ -372,7 +376,7 @@ composition-slide_seen_step = { $point } puntua bere gidan zehar irristatzen da;
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboa dute: { $sym } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, { $step }. urratsean aurkitutako puntu horren mugimendua.
+composition-drag_seen = { $sym } = { $value }, { $step }. urratsean aurkitutako puntu horren mugimendua.
 composition-drag_terms = { $sym } = { $terms } = { $value }: { $step }. urratseko ekuazioaren lehen terminoak dira.
 composition-sum_seen = Beraz, { $sym } = { $terms } { $step }. urratseko ekuazioa da, { $seen } aurkitu zuena.
 composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako { WORD($kind) ->
