@@ -66,7 +66,7 @@ def test_a_relative_rate_is_worked_out_before_a_term_uses_it():
                          text)
         assert said, w
         assert abs(_number(said.group(1)) - (answer(f"{w}_R") - answer(f"{w}_N"))) < 2e-3
-        used = text.index(f"{w}_{{R rel N}}·FA")
+        used = text.index(f"{w}_{{R rel N}}·AF")      # the term's own segment (twenty-fourth round (c))
         assert said.start() < used, w
 
 
