@@ -1,7 +1,7 @@
 """The ninth round: the notation and wording rules after the seventh independent audit
 (docs/explain.md, "Ninth round"). Each test fails on main's output before the round.
 
-- Catalan "relative to" in a subscript is rel. (relatiu a), never resp. (read as
+- Catalan "relative to" in a subscript is rel (relatiu a; rel. until the twenty-fourth round (c)), never resp. (read as
   "respectivament") nor a slash (read as a division); es/en/eu rel as their notes (the Basque slides write v_rel).
 - The symbols' legend ("Notació: ω_X és la velocitat angular …", once "En els símbols, ω_X: …") defines only the bodies whose own symbol
   the page writes; a relative centre no question asks and no construction names is not listed.
