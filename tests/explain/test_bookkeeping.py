@@ -183,7 +183,7 @@ def test_the_unknowns_shown_are_those_solved(name):
 
 def test_the_support_rate_is_one_unknown_in_c5_1_3():
     """C5-1.3, by hand: a_Q = a_S + a_QS^n + a_QS^t + a_rel + a_cor with a_S = α·JS (S on a
-    straight path, J the contact) and a_QS^t = α·SQ: one rate α, so the equation shows two
+    straight path, J the contact) and a_QS^t = α·QS: one rate α, so the equation shows two
     unknowns — α (in both magnitudes) and |a_rel| (its ?)."""
     sol, doc = explained("seed_c5_1_3_bar_in_sleeve")
     eq = next(e for _, e in level_equations(doc) if e.level == "a"
@@ -192,7 +192,8 @@ def test_the_support_rate_is_one_unknown_in_c5_1_3():
     a_s, a_qs = terms[("S", "")], terms[("QS", "t")]
     assert a_s.mag.code == a_qs.mag.code == "rate"
     assert a_s.mag.ref[0] == a_qs.mag.ref[0] and a_s.mag.ref[0].base == "α"
-    assert a_s.mag.ref[1] == "·JS" and a_qs.mag.ref[1] == "·SQ"
+    # each in its own segment's order, as its ⊥ below it (twenty-fourth round (c))
+    assert a_s.mag.ref[1] == "·SJ" and a_qs.mag.ref[1] == "·QS"
     assert shown(eq) == 2
 
 

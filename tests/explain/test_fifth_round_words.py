@@ -41,7 +41,7 @@ def test_a_guide_is_said_once_by_its_line():
 
 @pytest.mark.parametrize("lang,held,datum", [
     ("eu", "F giltzaduran: δ̇ = 0", "Datua: ω_{gurpila rel txasisa}"),
-    ("ca", "a l’articulació F: δ̇ = 0", "Dada: ω_{roda rel. xassís}"),
+    ("ca", "a l’articulació F: δ̇ = 0", "Dada: ω_{roda rel xassís}"),
 ])
 def test_a_held_pin_is_a_condition_not_a_datum(lang, held, datum):
     """C5-2.1's steering is held at this instant (the notes give its angle, not a rate): the
@@ -66,7 +66,7 @@ def test_a_relative_rate_is_worked_out_before_a_term_uses_it():
                          text)
         assert said, w
         assert abs(_number(said.group(1)) - (answer(f"{w}_R") - answer(f"{w}_N"))) < 2e-3
-        used = text.index(f"{w}_{{R rel N}}·FA")
+        used = text.index(f"{w}_{{R rel N}}·AF")      # the term's own segment (twenty-fourth round (c))
         assert said.start() < used, w
 
 

@@ -24,7 +24,8 @@ from .helpers import LANGS, SEEDS, rendered, over
 
 COMPOSITION = ("seed_001_p_pair_coriolis", "seed_001_rolling_pair", "seed_c5_1_3_bar_in_sleeve")
 # the drag lines say the word alone: the section's intro defines it once (twenty-first round (a))
-DRAG = {"en": "\nDrag:\n", "es": "\nArrastre:\n", "ca": "\nArrossegament:\n", "eu": "\nArrastrea:\n"}
+# (each half says which it opens, twenty-fourth round (c): "Velocities. Drag:")
+DRAG = {"en": ". Drag:\n", "es": ". Arrastre:\n", "ca": ". Arrossegament:\n", "eu": ". Arrastrea:\n"}
 WHERE_IT_IS = ("where the point is", "where it is)", "donde está el punto", "donde está)",
                "on és el punt", "on és)")
 

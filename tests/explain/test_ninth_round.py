@@ -1,7 +1,7 @@
 """The ninth round: the notation and wording rules after the seventh independent audit
 (docs/explain.md, "Ninth round"). Each test fails on main's output before the round.
 
-- Catalan "relative to" in a subscript is rel. (relatiu a), never resp. (read as
+- Catalan "relative to" in a subscript is rel (relatiu a; rel. until the twenty-fourth round (c)), never resp. (read as
   "respectivament") nor a slash (read as a division); es/en/eu rel as their notes (the Basque slides write v_rel).
 - The symbols' legend ("Notació: ω_X és la velocitat angular …", once "En els símbols, ω_X: …") defines only the bodies whose own symbol
   the page writes; a relative centre no question asks and no construction names is not listed.
@@ -48,7 +48,7 @@ def test_relative_subscript_in_the_other_languages(lang, word):
 def test_catalan_centres_intro_says_rel():
     """The centres' section says how two names are joined, with the same word."""
     text = rendered("seed_c5_1_3_bar_in_sleeve", "ca", "md", drawings=False)
-    assert "units per «rel.» (relatiu a)" in text
+    assert "units per «rel» (relatiu a)" in text
     assert "resp." not in text
 
 
@@ -131,7 +131,7 @@ def test_basque_numbered_bodies_keep_the_word():
 
 
 @pytest.mark.parametrize("lang,absolute,relative,drag", [
-    ("ca", "ω_{politja fixa}", "ω_{politja fixa rel. braç}", "ω_braç"),
+    ("ca", "ω_{politja fixa}", "ω_{politja fixa rel braç}", "ω_braç"),
     ("es", "ω_{polea fija}", "ω_{polea fija rel brazo}", "ω_brazo"),
 ])
 def test_belt_fixed_pulley_absolute_on_the_left(lang, absolute, relative, drag):

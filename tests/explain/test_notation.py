@@ -47,7 +47,7 @@ def test_no_body_number_slash_or_vector_division(name, lang):
 
 
 @pytest.mark.parametrize("lang,absolute,relative,drag", [
-    ("ca", "ω_{politja mòbil}", "ω_{politja mòbil rel. braç}", "ω_braç"),
+    ("ca", "ω_{politja mòbil}", "ω_{politja mòbil rel braç}", "ω_braç"),
     ("eu", "ω_{polea mugikorra}", "ω_{polea mugikorra rel besoa}", "ω_besoa"),
     ("es", "ω_{polea móvil}", "ω_{polea móvil rel brazo}", "ω_brazo"),
     ("en", "ω_{moving pulley}", "ω_{moving pulley rel arm}", "ω_arm"),

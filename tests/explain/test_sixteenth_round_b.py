@@ -42,7 +42,7 @@ REL_RENAMED = re.compile(r"[va]_\{(?:REL|rel),[^}]+\} = [va]_[{A-Za-z]")
 
 @over(name=SEEDS, lang=LANGS)
 def test_relative_motion_is_one_symbol(name, lang):
-    """C5-1.3 (ca): "Relatiu: …, v_{REL,E} = v_{E∈barra rel. suport}" and "v_{REL,E} =
+    """C5-1.3 (ca): "Relatiu: …, v_{REL,E} = v_{E∈barra rel suport}" and "v_{REL,E} =
     v_{Q∈barra rel. suport} = (…)" named one vector twice; the notes write v_REL only."""
     text = rendered(name, lang, "md", drawings=False)
     assert not REL_RENAMED.search(text), REL_RENAMED.search(text).group(0)
@@ -51,10 +51,10 @@ def test_relative_motion_is_one_symbol(name, lang):
 # the relative motion under the steps' one symbol, both bodies named (round 19a: the
 # composition's point-only v_{rel,E} was a second name of the steps' vector)
 FRAME_SAID = {"en": "Relative: v_{E∈bar rel support}, the motion seen from the moving frame, the *support*:",
-              "ca": "Relatiu: v_{E∈barra rel. suport}, el moviment vist des de la referència mòbil, el *suport*:",
+              "ca": "Relatiu: v_{E∈barra rel suport}, el moviment vist des de la referència mòbil, el *suport*:",
               "eu": "Erlatiboa: v_{E∈barra rel euskarria}, *euskarria* erreferentzia mugikorretik ikusten den "
                     "mugimendua:"}
-FRAME_SYM = {"en": "v_{E∈bar rel support}", "ca": "v_{E∈barra rel. suport}", "eu": "v_{E∈barra rel euskarria}"}
+FRAME_SYM = {"en": "v_{E∈bar rel support}", "ca": "v_{E∈barra rel suport}", "eu": "v_{E∈barra rel euskarria}"}
 
 
 @pytest.mark.parametrize("lang", sorted(FRAME_SAID))

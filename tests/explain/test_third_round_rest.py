@@ -131,4 +131,4 @@ def test_catalan_rel_names_the_frame_only(name):
         joined = re.search(r"[_>{][^}<\n]*\w REL \w[^}<\n]*[}<]", text)
         assert joined is None, text[joined.start() - 40:joined.end() + 20]
     if name == "seed_c5_1_6_belt":
-        assert "ω_{politja fixa rel. braç}" in rendered(name, "ca", "md", drawings=False)
+        assert "ω_{politja fixa rel braç}" in rendered(name, "ca", "md", drawings=False)

@@ -43,7 +43,9 @@ def test_the_drags_steps_by_hand(lang):
     coriolis = rendered("seed_001_p_pair_coriolis", lang, "md", drawings=False)
     rolling = rendered("seed_001_rolling_pair", lang, "md", drawings=False)
     ref = STEP_REF[lang]
-    drag = [m for line in coriolis.splitlines() if "= v_{B∈M} =" in line or "= a_{B∈M} =" in line
+    # the composition writes v_ar,B alone, equated with v_B∈M in the notation line
+    # (twenty-fourth round (c))
+    drag = [m for line in coriolis.splitlines() if re.match(r"[va]_\{\w+,B\} = \(", line)
             for m in re.findall(ref, line)]
     assert drag == ["1", "1"], drag
     slide = [m for line in coriolis.splitlines() if re.search(r"_\{B∈N \w+\.? M\}", line) and line.startswith("B ")

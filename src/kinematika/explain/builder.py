@@ -251,6 +251,7 @@ def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
     for Step 1, not for whatever is above."""
     kept: dict = {}
     sums: list = []                      # (each step side's terms, as written; the step's number)
+    named: list = []                     # each drag a step named: (level, v_arr,B, v_B∈M, B)
     for sec in levels:
         for n, step in _steps(sec):
             for eq in _equations(step):
@@ -270,6 +271,7 @@ def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
             if seen is not None:
                 sec.blocks[k] = msg("composition.drag_seen", sym=b.target.sym, seen=seen[0].sym, value=value,
                                     step=seen[1])
+                named.append((b.level, b.target.sym, seen[0].sym, b.point.point))
             elif first is not None:
                 terms: list = []           # the drag is the first terms of a step's sum: v_B + v_{A-B}
                 for t in b.sides[0]:
@@ -281,6 +283,21 @@ def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
             found = step_of(levels, said.args["seen"])
             if found is not None:
                 said.key, said.args["step"] = "composition.slide_seen_step", found
+    _name_drags(doc, named)
+
+
+def _name_drags(doc: Document, named: list) -> None:
+    """A drag velocity the steps wrote under its own name (001's v_B∈M) has two names on the
+    page; their equality is said once, in the notation line under the structure, before the
+    figure that draws v_arr,B and the steps that write v_B∈M, and the composition then writes
+    v_arr,B alone (twenty-fourth round (c): "v_ar,B = v_B∈M" met only in the composition,
+    after the caption had used v_ar,B). The legend's message carries them as `drags`."""
+    if not named:
+        return
+    for sec in doc.sections:
+        for b in sec.blocks:
+            if isinstance(b, Msg) and b.key == "structure.subscripts":
+                b.args["drags"] = list(named)
 
 
 def _refer_sums(ctx: Ctx, sec: Section, levels: list[Section]) -> None:

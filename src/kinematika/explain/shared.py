@@ -22,7 +22,11 @@ def _rate(t: Term) -> Sym | None:
 
 
 def _arm(t: Term) -> str:
-    """The term's arm as its magnitude writes it: " × JS" → "·JS"."""
+    """The term's arm as its magnitude writes it: the segment its direction names (⊥ SJ →
+    "·SJ"), the term's own order, so that the annotation above a term and the one below it
+    name one segment (twenty-fourth round (c)); else its vector product's (" × JS" → "·JS")."""
+    if t.dir.code == "perp" and isinstance(t.dir.ref, str) and t.dir.ref:
+        return "·" + t.dir.ref
     return "·" + t.how[1].strip().removeprefix("×").strip()
 
 

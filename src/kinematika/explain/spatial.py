@@ -206,11 +206,31 @@ def composition_section(ctx: Ctx, pairs: list[tuple[PointRef, str, Optional[str]
     if not pairs:
         return None
     sec = Section(msg("sec.composition"))
-    w = omega_sym("", vector=not ctx.planar)
-    sec.add(msg("composition.intro", cor=Inline(["2 ", w, " × ", Sym("v", "", sub_key="sub.rel")])))
+    sec.add(msg("composition.intro", cor=Names(coriolis_forms(ctx, pairs))))
     for ref, moving, pivot in pairs:
         sec.blocks += composition(ctx, ref, moving, pivot)
     return sec
+
+
+def coriolis_forms(ctx: Ctx, pairs: list[tuple[PointRef, str, Optional[str]]]) -> list[Inline]:
+    """The Coriolis term 2 ω_M × v_{B∈N rel M} of each composed point, in the symbols its
+    equations write (twenty-fourth round (c)): the notes' generic "2 ω × v_rel" named a
+    vector the page never writes (the relative velocity is v_{B∈N rel M} on the page), and a
+    reader looked for it. One form a distinct (point, body, moving frame)."""
+    out: list[Inline] = []
+    seen: set[tuple[str, str, str]] = set()
+    for ref, moving, _ in pairs:
+        key = (ref.point, ref.body, moving)
+        if key not in seen:
+            seen.add(key)
+            out.append(_coriolis_form(ctx, ref, moving))
+    return out
+
+
+def _coriolis_form(ctx: Ctx, ref: PointRef, moving: str) -> Inline:
+    """2 ω_M × v_{B∈N rel M}: the moving frame's angular velocity and the point's relative velocity."""
+    return Inline(["2 ", omega_sym(moving, vector=not ctx.planar), " × ",
+                   Sym("v", relative_name(ref.point, ref.body, moving))])
 
 
 def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> list:
@@ -230,10 +250,9 @@ def composition(ctx: Ctx, ref: PointRef, moving: str, pivot: Optional[str]) -> l
         side = [drag, rel]
         if level == "a":
             side.append(Term(Sym("a", p, sub_key="sub.cor"), ctx.clean(got["coriolis"], unit), Ann("M"),
-                             Ann("D"), ["2 ", omega_sym(moving, vector=not ctx.planar), " × ",
-                                        Sym("v", relative_name(p, body, moving))], kind="coriolis"))
+                             Ann("D"), list(_coriolis_form(ctx, ref, moving).items), kind="coriolis"))
         target = Term(Sym(level, p), ctx.clean(got["total"], unit), *KNOWN, kind="point")
-        out += [msg("composition.drag")] + _drag(ctx, level, p, moving, pivot, drag.sym)
+        out += [msg("composition.drag", kind=unit)] + _drag(ctx, level, p, moving, pivot, drag.sym)
         # one symbol for the relative motion (the notes' v_REL), its frame said in words, never
         # "v_REL = v_{P∈b rel m}": two names of one vector read as two vectors (round 16b)
         out += [msg("composition.relative", sym=rel.sym, frame=Name(moving, "body"))]

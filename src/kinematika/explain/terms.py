@@ -47,14 +47,24 @@ def pair_name(p: str, q: str) -> str:
 
 def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: bool,
                    relative_to: str | None = None) -> list[Term]:
-    """ω × QP at the velocity level; ω × (ω × QP) and α × QP at the acceleration level."""
+    """ω × QP at the velocity level; ω × (ω × QP) and α × QP at the acceleration level.
+
+    A term's magnitude and direction are written with the term's own segment, the order of
+    its subscript (v_AO1: ω·AO1, ⊥ AO1; a_JC^n: ω²·JC, ∥ JC), in the annotation above it and
+    in the line below alike; only the vector product keeps the vector QP (ω × O1A), whose
+    order is its sense (twenty-fourth round (c): "ω_O1A² · AO1" under "ω_O1A²·O1A", and
+    "ω_roda²·CJ" over "a_JC^n ∥ JC", read as two segments)."""
     sp, r, seg, back = ctx.space, ctx.r(q, p), segment(q, p), segment(p, q)
     w = omega_sym(body, relative_to, vector=not ctx.planar)
-    name = pair_name(p, q) + (f",{body}/{relative_to}" if relative_to else "")
+    # a relative term names its segment and the frame it is seen from, v_{AF rel N}: the
+    # equation's own target (v_{A∈R rel N}) and the annotation above it (ω_{R rel N}·FA) name
+    # the body, and "v_{AF,R rel N}" was a subscript of six parts a reader could not parse
+    # (twenty-fourth round (c)); as the absolute terms, v_AB, which name no body either
+    name = pair_name(p, q) + (f"/{relative_to}" if relative_to else "")
     if level == "v":
         value = sp.cross(ctx.omega(body, relative_to), r)
-        mag = Ann("?") if unknown else Ann("M", [w, f"·{seg}"] if ctx.planar else "")
-        return [Term(Sym("v", name), ctx.clean(value, "speed"), mag, Ann("perp", seg),
+        mag = Ann("?") if unknown else Ann("M", [w, f"·{back}"] if ctx.planar else "")
+        return [Term(Sym("v", name), ctx.clean(value, "speed"), mag, Ann("perp", back),
                      [w, f" × {seg}"], unknown, "rotation")]
     om = ctx.omega(body, relative_to)
     normal = sp.cross(om, sp.cross(om, r))
@@ -62,10 +72,10 @@ def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: boo
     al = alpha_sym(body, relative_to, vector=not ctx.planar)
     how_n = [w, " × (", w, f" × {seg})"] if not ctx.planar else [w, f"² · {back}"]
     # in space ω × (ω × r) points to the axis of ω, along r only in the plane
-    return [Term(Sym("a", name, "n"), ctx.clean(normal, "accel"), Ann("M", [w, f"²·{seg}"] if ctx.planar else ""),
+    return [Term(Sym("a", name, "n"), ctx.clean(normal, "accel"), Ann("M", [w, f"²·{back}"] if ctx.planar else ""),
                  Ann("para", back) if ctx.planar else Ann("D"), how_n, False, "normal"),
             Term(Sym("a", name, "t"), ctx.clean(tangential, "accel"),
-                 Ann("?") if unknown else Ann("M", [al, f"·{seg}"] if ctx.planar else ""), Ann("perp", seg),
+                 Ann("?") if unknown else Ann("M", [al, f"·{back}"] if ctx.planar else ""), Ann("perp", back),
                  [al, f" × {seg}"], unknown, "tangential")]
 
 

@@ -352,8 +352,9 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
         arm = segment(centre_pt, p)             # the segment I_{S2}P, the centre's full symbol
         rel = Sym("v", segment(p, centre_pt))
         value = ctx.clean(ctx.vel(b, p), "speed")
-        term = Term(rel, value, Ann("?") if k == 0 else Ann("M", [w, "·", arm]),
-                    Ann("perp", arm), [w, " × ", arm], k == 0, "rotation")
+        own = segment(p, centre_pt)             # magnitude and direction in the term's own order
+        term = Term(rel, value, Ann("?") if k == 0 else Ann("M", [w, "·", own]),
+                    Ann("perp", own), [w, " × ", arm], k == 0, "rotation")
         target = Term(Sym("v", ctx.point_label(p, b)), value, Ann("M"), Ann("D"), kind="point")
         out.append(Equation(target, [[rest, term]], "v", ctx.ref(p, b), figure=False))
         if k == 0:

@@ -44,12 +44,14 @@ NO_ARTICLE = re.compile(r"(?!)")
 # sub.rel names the relative motion's term (the notes' v_REL, Ω_REL: REL is the moving frame);
 # sub.rel_to joins a body to the one it is seen from (ω_{politja fixa rel. braç}). In Catalan
 # they differ: the notes keep REL (upper case) for the moving frame's name, so REL never joins
-# two names, where it would read as a third body; the join is "rel." (relatiu a), the notes'
-# word in lower case as an abbreviation — not "resp.", which a reader takes for
-# "respectivament", and never a slash, which reads as a division.
+# two names, where it would read as a third body; the join is "rel" (relatiu a), the notes'
+# word in lower case — not "resp.", which a reader takes for "respectivament", and never a
+# slash, which reads as a division. Without a full stop, as the slides (seed 001: v_{B∈N rel
+# M}) and the other languages write it: "rel" on one page and "rel." on the next read as two
+# notations (twenty-fourth round (c)).
 # Basque writes rel, as its slides (seed 001: v_rel, a_rel, 2 ω × v_rel), not erl.
 PART_SUBSCRIPTS = {"sub.rel": {"en": "rel", "es": "rel", "ca": "REL", "eu": "rel"},
-                   "sub.rel_to": {"en": "rel", "es": "rel", "ca": "rel.", "eu": "rel"},
+                   "sub.rel_to": {"en": "rel", "es": "rel", "ca": "rel", "eu": "rel"},
                    "sub.drag": {"en": "drag", "es": "arr", "ca": "ar", "eu": "arr"},
                    "sub.cor": {"en": "Cor", "es": "Cor", "ca": "Cor", "eu": "cor"}}
 # the Basque slides (4.2) write the composition a_B = a_arr + a_rel + a_cor: their word, lower case

@@ -47,6 +47,13 @@ structure-subscript_pair = { $sym } és la velocitat angular { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }
+structure-subscript_drag = { $equal } és { WORD($kind) ->
+        [accel] l’acceleració
+       *[speed] la velocitat
+    } d’arrossegament { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    }
 structure-subscript_member = { $sym } és la velocitat del punt { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -482,7 +489,7 @@ centres-intro_named = El símbol I, amb el nom d’un sòlid ({ $pair }), design
     } respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, i, amb dos noms units per «rel.» (relatiu a), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
+    }, i, amb dos noms units per «rel» (relatiu a), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
 centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),
@@ -532,7 +539,10 @@ composition-point = Punt { $point } { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }, referència mòbil { $frame }:
-composition-drag = Arrossegament:
+composition-drag = { WORD($kind) ->
+        [accel] { sec-accelerations }
+       *[speed] { sec-velocities }
+    }. Arrossegament:
 composition-relative = Relatiu: { $sym }, el moviment vist des de la referència mòbil, { $frame }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] rodolen
@@ -649,7 +659,7 @@ composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $bod
         [accel] l’acceleració
        *[speed] la velocitat
     } relativa trobada al pas { $step }: { $sym } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
+composition-drag_seen = { $sym } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació del pas { $step }.
 composition-sum_seen = Així, { $sym } = { $terms } és l’equació del pas { $step }, que va trobar { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: l’oposada { WORD($kind) ->

@@ -32,6 +32,10 @@ col-question = question
 col-answer = answer
 structure-subscripts = Notation: { $pairs }.
 structure-subscript_pair = { $sym } is the angular velocity of { $body }
+structure-subscript_drag = { $equal } is the drag { WORD($kind) ->
+        [accel] acceleration
+       *[speed] velocity
+    } of { $point }
 structure-subscript_member = { $sym } is the velocity of the point of { $body } at { $point }
 structure-shaped = { $body }, { $shape } of radius { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
@@ -409,7 +413,10 @@ fields-intro_a = The acceleration of every point, from a point of the same body 
 sec-composition = Composition of motions
 composition-intro = The motion of a point is its drag motion (that of the point of the moving frame that coincides with it) plus its motion relative to the frame, plus, for accelerations, the Coriolis term { $cor }.
 composition-point = Point { $point } of { $body }, moving frame { $frame }:
-composition-drag = Drag:
+composition-drag = { WORD($kind) ->
+        [accel] { sec-accelerations }
+       *[speed] { sec-velocities }
+    }. Drag:
 composition-relative = Relative: { $sym }, the motion seen from the moving frame, { $frame }:
 composition-rolls = { $body } { COUNT($body) ->
         [many] roll
@@ -472,7 +479,7 @@ composition-slide_seen_step = { $point } slides along its guide; { $body } { COU
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }: { $sym } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, the motion of that point found in Step { $step }.
+composition-drag_seen = { $sym } = { $value }, the motion of that point found in Step { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation of Step { $step }.
 composition-sum_seen = So { $sym } = { $terms } is the equation of Step { $step }, which found { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the relative { WORD($kind) ->

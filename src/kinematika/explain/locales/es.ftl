@@ -32,6 +32,10 @@ col-question = pregunta
 col-answer = respuesta
 structure-subscripts = Notación: { $pairs }.
 structure-subscript_pair = { $sym } es la velocidad angular de { $body }
+structure-subscript_drag = { $equal } es la { WORD($kind) ->
+        [accel] aceleración
+       *[speed] velocidad
+    } de arrastre de { $point }
 structure-subscript_member = { $sym } es la velocidad del punto de { $body } situado en { $point }
 structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
@@ -381,7 +385,10 @@ fields-intro_a = La aceleración de cada punto, a partir de un punto del mismo s
 sec-composition = Composición de movimientos
 composition-intro = El movimiento de un punto es el de arrastre (el del punto de la referencia móvil que coincide con él) más el relativo a esa referencia, más, en aceleraciones, el término de Coriolis { $cor }.
 composition-point = Punto { $point } de { $body }, referencia móvil { $frame }:
-composition-drag = Arrastre:
+composition-drag = { WORD($kind) ->
+        [accel] { sec-accelerations }
+       *[speed] { sec-velocities }
+    }. Arrastre:
 composition-relative = Relativo: { $sym }, el movimiento visto desde la referencia móvil, { $frame }:
 composition-rolls = { $body } { COUNT($body) ->
             [many] ruedan
@@ -432,7 +439,7 @@ composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }: { $sym } = { $value }.
-composition-drag_seen = { $sym } = { $seen } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
+composition-drag_seen = { $sym } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación del paso { $step }.
 composition-sum_seen = Así, { $sym } = { $terms } es la ecuación del paso { $step }, que halló { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { WORD($kind) ->

@@ -627,6 +627,10 @@ class Renderer(ABC):
             said = Msg("structure.subscript_member", {"sym": Sym("v", f"{point_}∈{of}"), "body": Name(of, "body"),
                                                       "point": Name(point_, "point")})
             items += (["; "] if items else []) + [said]
+        for level, drag, seen, point_ in m.args.get("drags", []):   # v_arr,B = v_B∈M, said once (builder)
+            said = Msg("structure.subscript_drag", {"equal": Inline([drag, " = ", seen]), "point": Name(point_, "point"),
+                                                    "kind": "speed" if level == "v" else "accel"})
+            items += (["; "] if items else []) + [said]
         if not items:
             return ""
         return self.para(self.sentence(self.message(Msg(m.key, {"pairs": Inline(items)}), lead=True)))
