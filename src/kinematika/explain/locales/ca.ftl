@@ -293,11 +293,14 @@ step-title = Pas { $n }: { $kind } — { $bodies }
 step-title_group = Pas { $n }: { $bodies }
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
-v-intro = Cada equació vectorial s’anota com als apunts: { $marks ->
-        [1] M: mòdul conegut, D: direcció coneguda (sota un terme aquestes lletres són sempre aquestes marques, mai el punt { $clash })
-        [2] M: mòdul conegut, D: direcció coneguda (sota un terme aquestes lletres són sempre aquestes marques, mai els punts M i D)
-       *[other] M mòdul conegut, D direcció coneguda
-    }, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
+v-intro = Cada equació vectorial s’anota com als apunts: M: mòdul conegut; D: direcció coneguda; ?: desconegut; ⊥ i ∥ donen una direcció coneguda.{ $marks ->
+        [1] { WORD($clash) ->
+            [M] {" "}Aquí M indica un mòdul conegut; no és el punt M.
+           *[other] {" "}Aquí D indica una direcció coneguda; no és el punt D.
+        }
+        [2] {" "}Aquí M i D són aquestes marques; no són els punts M i D.
+       *[other] {""}
+    } Una equació vectorial plana resol dues incògnites{ $format ->
         [md] : els termes marcats amb ?, que troba el pas
        *[other] ; en vermell, els termes trobats en el pas
     }.

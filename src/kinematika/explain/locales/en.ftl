@@ -227,11 +227,14 @@ step-title = Step { $n }: { $kind } — { $bodies }
 step-title_group = Step { $n }: { $bodies }
 sec-velocities = Velocities
 sec-accelerations = Accelerations
-v-intro = Each vector equation is annotated as in the notes: { $marks ->
-        [1] M: magnitude known, D: direction known (under a term these letters are always these marks, never the point { $clash })
-        [2] M: magnitude known, D: direction known (under a term these letters are always these marks, never the points M and D)
-       *[other] M magnitude known, D direction known
-    }, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
+v-intro = Each vector equation is annotated as in the notes: M: magnitude known; D: direction known; ?: unknown; ⊥ and ∥ give a known direction.{ $marks ->
+        [1] { WORD($clash) ->
+            [M] {" "}Here M marks a known magnitude; it is not the point M.
+           *[other] {" "}Here D marks a known direction; it is not the point D.
+        }
+        [2] {" "}Here M and D are these marks; they are not the points M and D.
+       *[other] {""}
+    } A planar vector equation solves two unknowns{ $format ->
         [md] : the terms marked ?, which the step finds
        *[other] ; the terms found in the step are in red
     }.

@@ -221,11 +221,14 @@ step-title = Paso { $n }: { $kind } — { $bodies }
 step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
-v-intro = Cada ecuación vectorial se anota como en los apuntes: { $marks ->
-        [1] M: módulo conocido, D: dirección conocida (bajo un término estas letras son siempre estas marcas, nunca el punto { $clash })
-        [2] M: módulo conocido, D: dirección conocida (bajo un término estas letras son siempre estas marcas, nunca los puntos M y D)
-       *[other] M módulo conocido, D dirección conocida
-    }, ? desconocido; ⊥ y ∥ dan una dirección conocida. Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
+v-intro = Cada ecuación vectorial se anota como en los apuntes: M: módulo conocido; D: dirección conocida; ?: desconocido; ⊥ y ∥ dan una dirección conocida.{ $marks ->
+        [1] { WORD($clash) ->
+            [M] {" "}Aquí M indica un módulo conocido; no es el punto M.
+           *[other] {" "}Aquí D indica una dirección conocida; no es el punto D.
+        }
+        [2] {" "}Aquí M y D son estas marcas; no son los puntos M y D.
+       *[other] {""}
+    } Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
         [md] : los términos marcados con ?
        *[other] ; en rojo, los términos que se hallan en cada paso
     }.

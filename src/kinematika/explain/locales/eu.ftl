@@ -221,14 +221,14 @@ step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
-v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: { $marks ->
-        [1] M: modulua ezaguna; D: norabidea ezaguna (marka gisa, { WORD($clash) ->
-            [M] M letrak modulu ezaguna
-           *[other] D letrak norabide ezaguna
-        } adierazten du beti, ez { $clash } puntua)
-        [2] M: modulua ezaguna; D: norabidea ezaguna (marka gisa, M letrak modulu ezaguna adierazten du beti, ez M puntua, eta D letrak norabide ezaguna, ez D puntua)
-       *[other] M: modulua ezaguna; D: norabidea ezaguna
-    }; ?: ezezaguna (norabidea edo modulua); ⊥ eta ∥ ikurrek norabide ezaguna adierazten dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
+v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M: modulua ezaguna; D: norabidea ezaguna; ?: ezezaguna (norabidea edo modulua); ⊥ eta ∥ ikurrek norabide ezaguna adierazten dute.{ $marks ->
+        [1] { WORD($clash) ->
+            [M] {" "}Hemen M letrak modulu ezaguna adierazten du; ez da M puntua.
+           *[other] {" "}Hemen D letrak norabide ezaguna adierazten du; ez da D puntua.
+        }
+        [2] {" "}Hemen M eta D letrak marka hauek dira; ez dira M eta D puntuak.
+       *[other] {""}
+    } Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
         [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
        *[other] ; gorriz, urratsean aurkitutako terminoak
     }.

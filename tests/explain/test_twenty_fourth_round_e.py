@@ -1,0 +1,60 @@
+"""Issue 30, twenty-fourth round (e): four readers' items on main's pages (docs/explain.md,
+"Twenty-fourth round (e)").
+
+- the M/D legend lists "M: magnitude known; D: direction known" plainly on every page; where
+  the page has a point named M or D, one short sentence after it says that letter is the mark
+  and not the point, naming the letter (the old aside "(under a term these letters are always
+  these marks, never the point D)" read oddly; the Basque one hung M's note on D);
+"""
+from __future__ import annotations
+
+import re
+
+from .helpers import LANGS, SEEDS, explained, over, rendered
+
+# the legend, the same on every page (the notes' marks, seed 001)
+LEGEND = {"en": "M: magnitude known; D: direction known; ?: unknown;",
+          "es": "M: módulo conocido; D: dirección conocida; ?: desconocido;",
+          "ca": "M: mòdul conegut; D: direcció coneguda; ?: desconegut;",
+          "eu": "M: modulua ezaguna; D: norabidea ezaguna; ?: ezezaguna (norabidea edo modulua);"}
+# the sentence after the legend for one letter that is also a point of the page
+ONE = {"en": {"M": "Here M marks a known magnitude; it is not the point M.",
+              "D": "Here D marks a known direction; it is not the point D."},
+       "es": {"M": "Aquí M indica un módulo conocido; no es el punto M.",
+              "D": "Aquí D indica una dirección conocida; no es el punto D."},
+       "ca": {"M": "Aquí M indica un mòdul conegut; no és el punt M.",
+              "D": "Aquí D indica una direcció coneguda; no és el punt D."},
+       "eu": {"M": "Hemen M letrak modulu ezaguna adierazten du; ez da M puntua.",
+              "D": "Hemen D letrak norabide ezaguna adierazten du; ez da D puntua."}}
+# the old asides, gone
+OLD = ("never the point", "nunca el punto", "mai el punt", "marka gisa", "under a term",
+       "bajo un término", "sota un terme")
+
+
+def _clash(name: str, md: str) -> list[str]:
+    """The notes' letters that are a point of the page (model point, contact, points table)."""
+    sol, doc = explained(name)
+    points = set(sol.model.points) | set(doc.joints.values())
+    points |= set(re.findall(r"^\| ([A-Z][A-Za-z0-9]*) \|", md, flags=re.M))
+    return [m for m in ("M", "D") if m in points]
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_the_marks_legend_is_plain_and_a_clash_is_its_own_sentence(name, lang):
+    """Every page with equations lists the legend plainly; a letter that is also a point is
+    said in one sentence of its own right after the legend, naming that letter (C5-1.1 and
+    C5-E.5: D; C5-2.1: M; 001's guide M is a body: nothing)."""
+    md = rendered(name, lang, drawings=False)
+    line = next((ln for ln in md.splitlines() if LEGEND[lang] in ln), None)
+    if line is None:
+        assert not explained(name)[1].equations(), "no legend"
+        return
+    assert not any(old in md for old in OLD)
+    clash = _clash(name, md)
+    for letter in ("M", "D"):
+        said = ONE[lang][letter] in line
+        assert said == (clash == [letter]), (letter, clash)
+    # the sentence follows the legend's last clause at once (the ⊥/∥ clause)
+    if len(clash) == 1:
+        after = line.split("∥", 1)[1]
+        assert re.match(r"[^.]*\. " + re.escape(ONE[lang][clash[0]]), after), after
