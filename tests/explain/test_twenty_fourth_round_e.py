@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import re
 
-from .helpers import LANGS, SEEDS, explained, over, rendered
+import yaml
+
+from .helpers import EXAMPLES, LANGS, SEEDS, explained, over, rendered
 
 # the legend, the same on every page (the notes' marks, seed 001)
 LEGEND = {"en": "M: magnitude known; D: direction known; ?: unknown;",
@@ -58,3 +60,42 @@ def test_the_marks_legend_is_plain_and_a_clash_is_its_own_sentence(name, lang):
     if len(clash) == 1:
         after = line.split("∥", 1)[1]
         assert re.match(r"[^.]*\. " + re.escape(ONE[lang][clash[0]]), after), after
+
+
+# ---- a point's body after ∈ is read on the page -------------------------------------------
+NOTATION = {"en": "Notation: ", "es": "Notación: ", "ca": "Notació: ", "eu": "Notazioa: "}
+ARTICLE = re.compile(r"(?i)^(?:(?:els|les|el|la|los|las|the)\s+|l['’]\s*)")
+SMALL = {"de", "del", "d", "of", "the", "a"}
+
+
+def _readable(label: str, name: str, lang: str) -> bool:
+    """Whether subscript `label` is body `name` as written or its words run together, or the
+    code the name holds (OJ of *barra OJ*, M of *guia M*): a student reads it off the name."""
+    words = [w.rstrip(".") for w in ARTICLE.sub("", name.strip()).split()]
+    words = [w for w in words if w.lower().replace("’", "'").split("'")[-1] not in SMALL]
+    joined = "".join(words)
+    plain = label.replace(" ", "")
+    if label in words and re.fullmatch(r"[A-Z][A-Z0-9]{0,3}", label):
+        return True
+    return plain == joined or (lang == "eu" and plain in {joined + "a", "".join(w + "a" for w in words)}) \
+        or sorted(re.findall(r"\d+|\D+", plain)) == sorted(words)
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_every_body_after_in_is_read_off_or_defined(name, lang):
+    """v_{J∈zilindroa} on C5-1.8 (the body is *zilindro finkoa*; es v_{J∈cilindro} of the
+    *cilindro fijo*, ca v_{J∈terra} of the *terra cilíndric*): a body written after ∈ whose
+    subscript is not its name as written is defined once on the Notation line."""
+    md = rendered(name, lang, drawings=False)
+    names = (yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text()).get("names") or {}).get(lang, {})
+    bodies = list((names.get("bodies") or {}).values())
+    if not bodies:
+        return
+    notation = next((ln for ln in md.splitlines() if ln.startswith(NOTATION[lang])), "")
+    prose = "\n".join(ln for ln in md.splitlines() if not ln.startswith(NOTATION[lang]))
+    labels = {m for m in re.findall(r"[va]_\{[A-Za-z0-9′]+∈([^}]+)\}", prose) if " rel" not in m}
+    for label in sorted(labels):
+        if any(_readable(label, b, lang) for b in bodies):
+            continue
+        assert f"∈{label}}}" in notation or f"ω_{label} " in notation or f"ω_{{{label}}} " in notation, \
+            (label, notation)
