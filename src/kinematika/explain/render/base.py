@@ -25,9 +25,10 @@ LEGEND = "\ue002legend\ue003"        # where the legend of shortened subscripts 
 TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
 # a symbol typed in a model's own words: one letter (with its marks: φ̇) that ends no word, an
 # underscore, then a subscript of letters and digits or one in braces (v_B, Ω_pinyó, ℜ_P,
-# a_{F∈gurpila}); snake_case (draw_at) is not one, its letter ends a word
+# a_{F∈gurpila}); snake_case (draw_at) is not one, its letter ends a word; a superscript
+# after it is the symbol's power, not its subscript (v_P² is v_P squared: twenty-fourth round (e))
 TYPED_GEOM = "^{geom}"      # the geometric contact point's mark as a model's words type it
-SUBSCRIPTED = re.compile("(?<![\\w\u0300-\u036f])([^\\W\\d_][\u0300-\u036f]*)_(\\{[^{}]+\\}|[^\\W_]+)")
+SUBSCRIPTED = re.compile("(?<![\\w\u0300-\u036f])([^\\W\\d_][\u0300-\u036f]*)_(\\{[^{}]+\\}|[^\\W_\u00b2\u00b3\u00b9\u2070-\u207f]+)")
 # what a name's markup begins with before its first letter, by format
 LEADING_MARKUP = {"html": re.compile(r"(?:<[^>]*>)*"), "md": re.compile(r"[*_]*"),
                   "tex": re.compile(r"(?:\\[A-Za-z]+\{)*")}
