@@ -99,3 +99,42 @@ def test_every_body_after_in_is_read_off_or_defined(name, lang):
             continue
         assert f"∈{label}}}" in notation or f"ω_{label} " in notation or f"ω_{{{label}}} " in notation, \
             (label, notation)
+
+
+# ---- the models' own texts --------------------------------------------------------------------
+def _model_texts(name: str, lang: str) -> list[str]:
+    """The model's data and notes sentences in `lang` (its own words, `names.LANG`)."""
+    names = (yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text()).get("names") or {}).get(lang, {})
+    return [t for key in ("data", "notes") for t in (names.get(key) or []) if isinstance(t, str)]
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_a_typed_rate_is_italic_and_a_power_no_subscript(name, lang):
+    """C5-2.1's "val la seva resposta φ̇ = v₀ …": upright, the dot sat on the φ's stem and a
+    reader read φ; a letter with a dot is a rate, set in italics as the answer table sets
+    it. E.6's "ℜ_P = v_P²/aⁿ": the square is not part of the subscript."""
+    page = rendered(name, lang, "html", drawings=False)
+    upright = re.findall(r'(?<!<i>)(?<!<b class="v">)<span class="mk">(.[\u0307\u0308]+)</span>', page)
+    assert not upright, upright
+    assert not re.search(r"<sub>[^<]*[²³¹\u2070-\u207f]</sub>", page)
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_the_model_texts_write_the_pages_notation(name, lang):
+    """A model's note writes a point's velocity v_P as the page does, never the notes' v(P)
+    (C5-E.6), and a segment XY it sets equal to something joins two points of the page
+    (C5-E.5's "CP = r₂" where the wheel's centre is B: BP)."""
+    sol, doc = explained(name)
+    points = set(sol.model.points) | set(doc.joints.values())
+    for text in _model_texts(name, lang):
+        assert not re.search(r"(?<![\w(])[va]\([A-Z]\w*\)", text), text
+        for a, b in re.findall(r"(?<![\w′])([A-Z])([A-Z])(?= =)", text):
+            assert {a, b} <= points, (a + b, text)
+
+
+def test_the_basque_small_wheel_is_said_whole():
+    """C5-E.1 (eu): the radius of the small wheel read "*gurpil* txikiaren erradioa", half
+    the name in italics; the model now says "gurpilen erradio txikia"."""
+    md = rendered("seed_c5_e1_cavity", "eu", drawings=False)
+    assert "*gurpil* txikiaren" not in md
+    assert "*gurpilen* erradio txikia" in md
