@@ -138,3 +138,27 @@ def test_the_basque_small_wheel_is_said_whole():
     md = rendered("seed_c5_e1_cavity", "eu", drawings=False)
     assert "*gurpil* txikiaren" not in md
     assert "*gurpilen* erradio txikia" in md
+
+
+# ---- a primed point is defined where it is first written ------------------------------------
+# the definition of the foot J′ beside its first mention, per language
+FOOT = {"en": r"at (\w)′, the foot of the perpendicular from \1 to the guide",
+        "es": r"en (\w)′, el pie de la perpendicular desde \1 a la guía",
+        "ca": r"a (\w)′, el peu de la perpendicular des de \1 a la guia",
+        "eu": r"(\w)′ puntuan, \1 puntutik gidara doan perpendikularraren oinean"}
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_a_primed_point_is_defined_where_first_written(name, lang):
+    """C5-1.3's "(al seu peu J′ sobre la guia, …)": J′ was never defined. A point written
+    X′ that is no point of the model is defined at its first mention as the foot of the
+    perpendicular from X to the guide."""
+    sol, doc = explained(name)
+    md = rendered(name, lang, drawings=False)
+    points = set(sol.model.points) | set(doc.joints.values())
+    first = re.search(r"(?<![\w′])([A-Z])′", md)
+    if first is None or f"{first[1]}′" in points:
+        return
+    said = re.search(FOOT[lang], md)
+    assert said and said[1] == first[1], md[first.start() - 80:first.end() + 80]
+    assert said.start() <= first.start() < said.end(), "defined after its first mention"

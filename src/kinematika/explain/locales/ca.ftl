@@ -868,7 +868,7 @@ centre-line-moves_still = la perpendicular a { $v } per { $point } ({ $point } e
         [many] traslladen
        *[one] trasllada
     })
-centre-line-guide = la perpendicular a la guia per { $pivot } (al seu peu { $pivot }′ sobre la guia, la velocitat relativa { ELISION($body) ->
+centre-line-guide = la perpendicular a la guia per { $pivot } (a { $pivot }′, el peu de la perpendicular des de { $pivot } a la guia, la velocitat relativa { ELISION($body) ->
         [vowel] a l’{ $body }
        *[other] a { $body }
     } és paral·lela a la guia i la d’arrossegament és perpendicular a { $pivot }{ $pivot }′, és a dir, també paral·lela a la guia: la velocitat del punt { ELISION($b) ->

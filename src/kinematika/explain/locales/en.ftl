@@ -664,7 +664,7 @@ centre-line-rolls_still = the perpendicular to { $v } through { $point } ({ $rol
        *[one] translates
     })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
-centre-line-guide = the perpendicular to the guide through { $pivot } (at its foot { $pivot }′ on the guide, the velocity relative to { $body } is along the guide and the drag velocity is perpendicular to { $pivot }{ $pivot }′, that is, along the guide too: the velocity of the point of { $b } at { $pivot }′ follows the guide)
+centre-line-guide = the perpendicular to the guide through { $pivot } (at { $pivot }′, the foot of the perpendicular from { $pivot } to the guide, the velocity relative to { $body } is along the guide and the drag velocity is perpendicular to { $pivot }{ $pivot }′, that is, along the guide too: the velocity of the point of { $b } at { $pivot }′ follows the guide)
 centre-carried-slip = {" "}({ $b } { COUNT($b) ->
         [many] do
        *[one] does

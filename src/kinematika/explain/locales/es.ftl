@@ -609,7 +609,7 @@ centre-line-moves_still = la perpendicular a { $v } por { $point } ({ $point } s
         [many] trasladan
        *[one] traslada
     })
-centre-line-guide = la perpendicular a la guía por { $pivot } (en su pie { $pivot }′ sobre la guía, la velocidad relativa a { $body } es paralela a la guía y la de arrastre es perpendicular a { $pivot }{ $pivot }′, es decir, también paralela a la guía: la velocidad del punto de { $b } en { $pivot }′ sigue la guía)
+centre-line-guide = la perpendicular a la guía por { $pivot } (en { $pivot }′, el pie de la perpendicular desde { $pivot } a la guía, la velocidad relativa a { $body } es paralela a la guía y la de arrastre es perpendicular a { $pivot }{ $pivot }′, es decir, también paralela a la guía: la velocidad del punto de { $b } en { $pivot }′ sigue la guía)
 centre-carried-slip = {" "}({ $b } no { COUNT($b) ->
         [many] deslizan
        *[one] desliza
