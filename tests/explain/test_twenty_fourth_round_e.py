@@ -162,3 +162,23 @@ def test_a_primed_point_is_defined_where_first_written(name, lang):
     said = re.search(FOOT[lang], md)
     assert said and said[1] == first[1], md[first.start() - 80:first.end() + 80]
     assert said.start() <= first.start() < said.end(), "defined after its first mention"
+
+
+# ---- a point the page lists is a point it uses ---------------------------------------------
+# the points table's row of a point the model says nothing of: "a point of the *ground*"
+GENERIC = {"en": r"a point of (?:the )?\*[^*]+\*", "es": r"un punto de(?:l| la| los| las)? \*[^*]+\*",
+           "ca": r"un punt (?:del|de la|de l’|dels|de les) ?\*[^*]+\*", "eu": r"\*[^*]+\* puntua"}
+STRUCTURE = {"en": "## Structure", "es": "## Estructura", "ca": "## Estructura", "eu": "## Egitura"}
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_a_listed_point_of_no_words_is_used(name, lang):
+    """C5-E.4's "| G | un punto del *suelo* | (0; 0) |": G only anchored the ground's line
+    and the page used it nowhere. A point the model gives no words is listed only when the
+    page writes it after its structure (the model now draws the line through (0, 0))."""
+    md = rendered(name, lang, drawings=False)
+    start = md.find("\n## ", md.find(STRUCTURE[lang]) + 5)
+    rest = md[start:]
+    for point, what in re.findall(r"^\| ([A-Z][A-Z0-9]*) \| ([^|]+) \|", md, flags=re.M):
+        if re.fullmatch(GENERIC[lang], what.strip()):
+            assert re.search(rf"(?<![\w′]){point}(?![\w′])", rest), (point, what)
