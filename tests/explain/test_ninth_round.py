@@ -152,9 +152,9 @@ def test_body_subscript_is_not_a_parameter(lang, label):
 
 
 @pytest.mark.parametrize("lang,named", [
-    ("ca", "al seu peu J′ sobre la guia"),
-    ("es", "en su pie J′ sobre la guía"),
-    ("en", "at its foot J′ on the guide"),
+    ("ca", "a J′, el peu de la perpendicular des de J a la guia"),     # twenty-fourth round (e):
+    ("es", "en J′, el pie de la perpendicular desde J a la guía"),      # J′ defined where it is
+    ("en", "at J′, the foot of the perpendicular from J to the guide"),  # first written
 ])
 def test_guide_line_names_its_point(lang, named):
     """C5-1.3: the perpendicular to the guide through J holds the centre because of one point

@@ -112,14 +112,16 @@ def test_the_marks_are_never_a_name_on_the_page(name, lang):
     assert not marks & {"mòd", "mag", "mód", "mod", "norab"}
     if _mark_rows(md) and doc.equations():
         assert marks & {"M", "D"}
-        assert bool(clash) == bool(re.search(r"\bM: \w+ \w+[,;] D: \w+ \w+ \(", md)), clash
+        # the sentence after the legend (twenty-fourth round (e))
+        assert bool(clash) == bool(re.search(r"(not the point|no es el punto|no és el punt|ez da [MD] puntua)", md)), clash
 
 
 def test_the_pulley_on_a_cable_writes_the_notes_marks():
     """C5-1.1 names its lowest point D: its equations still carry the notes' M and D (ca), the
     legend saying once that they are marks, not its points."""
     md = rendered("seed_c5_1_1_pulley_on_cable", "ca")
-    assert "M: mòdul conegut, D: direcció coneguda (sota un terme" in md
+    assert "M: mòdul conegut; D: direcció coneguda; ?: desconegut;" in md
+    assert "Aquí D indica una direcció coneguda; no és el punt D." in md
     assert "D" in {tok for row in _mark_rows(md) for tok in row}
 
 

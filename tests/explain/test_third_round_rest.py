@@ -100,7 +100,7 @@ def test_bicycle_curvature_radius_is_a_length(lang):
     w = {"ca": "R_roda", "en": "R_wheel", "es": "R_rueda", "eu": "R_gurpila"}[lang]   # the model's notation
     note = page[page.rindex(f"ℜ = (R/r)² {w}"):]
     assert "ρ" not in note
-    assert "ℜ_P = v(P)²/aⁿ = (d − L)²/L" in note and f"d = {w} R/r" in note
+    assert "ℜ_P = v_P²/aⁿ = (d − L)²/L" in note and f"d = {w} R/r" in note   # v_P: twenty-fourth round (e)
     assert f"ℜ_P = |v_P|² / |a_P^n| = (R·{w} − L·r)²/(L·r²)" in page
 
 

@@ -25,10 +25,11 @@ BARE = {"en": r"(?<!radius of )curvature of the path", "es": r"(?<!radio de )cur
         "ca": r"(?<!radi de )curvatura de la trajectòria", "eu": r"ibilbidearen kurbadura(?!-)"}
 DRAG = {"en": "Drag:", "es": "Arrastre:", "ca": "Arrossegament:", "eu": "Arrastrea:"}
 CONTACT = {"en": "its contact point", "es": "su punto de contacto", "ca": "el punt de contacte", "eu": "kontaktuko"}
-LEGEND = {"en": ("never the point", "never the points M and D"),
-          "es": ("nunca el punto", "nunca los puntos M y D"),
-          "ca": ("mai el punt", "mai els punts M i D"),
-          "eu": (r"marka gisa, \w letrak", "ez M puntua, eta D letrak")}   # twenty-second round (b)
+# the sentence after the legend (twenty-fourth round (e): its own sentence, not an aside)
+LEGEND = {"en": ("it is not the point", "they are not the points M and D"),
+          "es": ("no es el punto", "no son los puntos M y D"),
+          "ca": ("no és el punt", "no són els punts M i D"),
+          "eu": ("ez da [MD] puntua", "ez dira M eta D puntuak")}
 
 
 @over(name=SEEDS, lang=LANGS)
@@ -93,7 +94,7 @@ def test_the_catalan_title_says_diade():
 
 @over(name=SEEDS, lang=LANGS)
 def test_the_marks_legend_names_only_its_points(name, lang):
-    """The legend's "never the point(s) …" names exactly the model's points (or contacts)
+    """The legend's "it is not the point(s) …" names exactly the model's points (or contacts)
     called M or D: C5-1.1 and C5-E.5 D, C5-2.1 M; 001's guide M is a body, so no clause."""
     sol, doc = explained(name)
     md = rendered(name, lang)
@@ -104,7 +105,7 @@ def test_the_marks_legend_names_only_its_points(name, lang):
     if len(clash) == 2:
         assert both in md
     elif len(clash) == 1:
-        assert re.search(rf"{one} ?{clash[0]}\b" if lang != "eu" else rf"marka gisa, {clash[0]} letrak[^)]*ez {clash[0]} puntua", md), clash
+        assert re.search(rf"{one} ?{clash[0]}\b" if lang != "eu" else rf"ez da {clash[0]} puntua", md), clash
         assert both not in md
     else:
         assert not re.search(one, md) and both not in md

@@ -13,6 +13,11 @@ The legend names only the letters that are a POINT of the page (a model point, a
 centre placed as a point): "never the point D" on C5-1.1 and C5-E.5, "never the point M" on
 C5-2.1. A body called M (001's guide) is not a point; "never the points M and D" named a
 point the page does not have (issue 30, twenty-first round (a)).
+
+The legend itself is plain on every page ("M: magnitude known; D: direction known; ?:
+unknown"); the clash is one short sentence of its own after it, naming its letter ("Here D
+marks a known direction; it is not the point D."): an aside inside the legend read oddly, and
+the Basque one hung M's note on D (issue 30, twenty-fourth round (e)).
 """
 from __future__ import annotations
 

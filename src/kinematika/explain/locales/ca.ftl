@@ -303,11 +303,14 @@ step-title = Pas { $n }: { $kind } — { $bodies }
 step-title_group = Pas { $n }: { $bodies }
 sec-velocities = Velocitats
 sec-accelerations = Acceleracions
-v-intro = Cada equació vectorial s’anota com als apunts: { $marks ->
-        [1] M: mòdul conegut, D: direcció coneguda (sota un terme aquestes lletres són sempre aquestes marques, mai el punt { $clash })
-        [2] M: mòdul conegut, D: direcció coneguda (sota un terme aquestes lletres són sempre aquestes marques, mai els punts M i D)
-       *[other] M mòdul conegut, D direcció coneguda
-    }, ? desconegut; ⊥ i ∥ donen una direcció coneguda. Una equació vectorial plana resol dues incògnites{ $format ->
+v-intro = Cada equació vectorial s’anota com als apunts: M: mòdul conegut; D: direcció coneguda; ?: desconegut; ⊥ i ∥ donen una direcció coneguda.{ $marks ->
+        [1] { WORD($clash) ->
+            [M] {" "}Aquí M indica un mòdul conegut; no és el punt M.
+           *[other] {" "}Aquí D indica una direcció coneguda; no és el punt D.
+        }
+        [2] {" "}Aquí M i D són aquestes marques; no són els punts M i D.
+       *[other] {""}
+    } Una equació vectorial plana resol dues incògnites{ $format ->
         [md] : els termes marcats amb ?, que troba el pas
        *[other] ; en vermell, els termes trobats en el pas
     }.
@@ -882,7 +885,7 @@ centre-line-moves_still = la perpendicular a { $v } per { $point } ({ $point } e
         [many] traslladen
        *[one] trasllada
     })
-centre-line-guide = la perpendicular a la guia per { $pivot } (al seu peu { $pivot }′ sobre la guia, la velocitat relativa { ELISION($body) ->
+centre-line-guide = la perpendicular a la guia per { $pivot } (a { $pivot }′, el peu de la perpendicular des de { $pivot } a la guia, la velocitat relativa { ELISION($body) ->
         [vowel] a l’{ $body }
        *[other] a { $body }
     } és paral·lela a la guia i la d’arrossegament és perpendicular a { $pivot }{ $pivot }′, és a dir, també paral·lela a la guia: la velocitat del punt { ELISION($b) ->

@@ -234,11 +234,14 @@ step-title = Step { $n }: { $kind } — { $bodies }
 step-title_group = Step { $n }: { $bodies }
 sec-velocities = Velocities
 sec-accelerations = Accelerations
-v-intro = Each vector equation is annotated as in the notes: { $marks ->
-        [1] M: magnitude known, D: direction known (under a term these letters are always these marks, never the point { $clash })
-        [2] M: magnitude known, D: direction known (under a term these letters are always these marks, never the points M and D)
-       *[other] M magnitude known, D direction known
-    }, ? unknown; ⊥ and ∥ give a known direction. A planar vector equation solves two unknowns{ $format ->
+v-intro = Each vector equation is annotated as in the notes: M: magnitude known; D: direction known; ?: unknown; ⊥ and ∥ give a known direction.{ $marks ->
+        [1] { WORD($clash) ->
+            [M] {" "}Here M marks a known magnitude; it is not the point M.
+           *[other] {" "}Here D marks a known direction; it is not the point D.
+        }
+        [2] {" "}Here M and D are these marks; they are not the points M and D.
+       *[other] {""}
+    } A planar vector equation solves two unknowns{ $format ->
         [md] : the terms marked ?, which the step finds
        *[other] ; the terms found in the step are in red
     }.
@@ -672,7 +675,7 @@ centre-line-rolls_still = the perpendicular to { $v } through { $point } ({ $rol
        *[one] translates
     })
 centre-line-moves_still = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which translates)
-centre-line-guide = the perpendicular to the guide through { $pivot } (at its foot { $pivot }′ on the guide, the velocity relative to { $body } is along the guide and the drag velocity is perpendicular to { $pivot }{ $pivot }′, that is, along the guide too: the velocity of the point of { $b } at { $pivot }′ follows the guide)
+centre-line-guide = the perpendicular to the guide through { $pivot } (at { $pivot }′, the foot of the perpendicular from { $pivot } to the guide, the velocity relative to { $body } is along the guide and the drag velocity is perpendicular to { $pivot }{ $pivot }′, that is, along the guide too: the velocity of the point of { $b } at { $pivot }′ follows the guide)
 centre-carried-slip = {" "}({ $b } { COUNT($b) ->
         [many] do
        *[one] does

@@ -228,11 +228,14 @@ step-title = Paso { $n }: { $kind } — { $bodies }
 step-title_group = Paso { $n }: { $bodies }
 sec-velocities = Velocidades
 sec-accelerations = Aceleraciones
-v-intro = Cada ecuación vectorial se anota como en los apuntes: { $marks ->
-        [1] M: módulo conocido, D: dirección conocida (bajo un término estas letras son siempre estas marcas, nunca el punto { $clash })
-        [2] M: módulo conocido, D: dirección conocida (bajo un término estas letras son siempre estas marcas, nunca los puntos M y D)
-       *[other] M módulo conocido, D dirección conocida
-    }, ? desconocido; ⊥ y ∥ dan una dirección conocida. Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
+v-intro = Cada ecuación vectorial se anota como en los apuntes: M: módulo conocido; D: dirección conocida; ?: desconocido; ⊥ y ∥ dan una dirección conocida.{ $marks ->
+        [1] { WORD($clash) ->
+            [M] {" "}Aquí M indica un módulo conocido; no es el punto M.
+           *[other] {" "}Aquí D indica una dirección conocida; no es el punto D.
+        }
+        [2] {" "}Aquí M y D son estas marcas; no son los puntos M y D.
+       *[other] {""}
+    } Cada ecuación vectorial plana permite hallar dos incógnitas{ $format ->
         [md] : los términos marcados con ?
        *[other] ; en rojo, los términos que se hallan en cada paso
     }.
@@ -617,7 +620,7 @@ centre-line-moves_still = la perpendicular a { $v } por { $point } ({ $point } s
         [many] trasladan
        *[one] traslada
     })
-centre-line-guide = la perpendicular a la guía por { $pivot } (en su pie { $pivot }′ sobre la guía, la velocidad relativa a { $body } es paralela a la guía y la de arrastre es perpendicular a { $pivot }{ $pivot }′, es decir, también paralela a la guía: la velocidad del punto de { $b } en { $pivot }′ sigue la guía)
+centre-line-guide = la perpendicular a la guía por { $pivot } (en { $pivot }′, el pie de la perpendicular desde { $pivot } a la guía, la velocidad relativa a { $body } es paralela a la guía y la de arrastre es perpendicular a { $pivot }{ $pivot }′, es decir, también paralela a la guía: la velocidad del punto de { $b } en { $pivot }′ sigue la guía)
 centre-carried-slip = {" "}({ $b } no { COUNT($b) ->
         [many] deslizan
        *[one] desliza

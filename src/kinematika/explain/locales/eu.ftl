@@ -228,14 +228,14 @@ step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-title_group = { $n }. urratsa: { $bodies }
 sec-velocities = Abiadurak
 sec-accelerations = Azelerazioak
-v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: { $marks ->
-        [1] M: modulua ezaguna; D: norabidea ezaguna (marka gisa, { WORD($clash) ->
-            [M] M letrak modulu ezaguna
-           *[other] D letrak norabide ezaguna
-        } adierazten du beti, ez { $clash } puntua)
-        [2] M: modulua ezaguna; D: norabidea ezaguna (marka gisa, M letrak modulu ezaguna adierazten du beti, ez M puntua, eta D letrak norabide ezaguna, ez D puntua)
-       *[other] M: modulua ezaguna; D: norabidea ezaguna
-    }; ?: ezezaguna (norabidea edo modulua); ⊥ eta ∥ ikurrek norabide ezaguna adierazten dute. Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
+v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M: modulua ezaguna; D: norabidea ezaguna; ?: ezezaguna (norabidea edo modulua); ⊥ eta ∥ ikurrek norabide ezaguna adierazten dute.{ $marks ->
+        [1] { WORD($clash) ->
+            [M] {" "}Hemen M letrak modulu ezaguna adierazten du; ez da M puntua.
+           *[other] {" "}Hemen D letrak norabide ezaguna adierazten du; ez da D puntua.
+        }
+        [2] {" "}Hemen M eta D letrak marka hauek dira; ez dira M eta D puntuak.
+       *[other] {""}
+    } Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
         [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
        *[other] ; gorriz, urratsean aurkitutako terminoak
     }.
@@ -540,7 +540,7 @@ centre-line-moves = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ 
 centre-line-rolls = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $roller } solidoa ez da irristatzen { $on } solidoaren gainean: { $b } solidoaren { $point } puntuak { $body } solidoaren abiadura du, eta { $body } solidoa { $pivot } puntuaren inguruan biratzen da)
 centre-line-rolls_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $roller } solidoa ez da irristatzen { $on } solidoaren gainean: { $b } solidoaren { $point } puntuak traslatzen den { $body } solidoaren abiadura du)
 centre-line-moves_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua traslatzen den { $body } solidoarekin mugitzen da)
-centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra (perpendikularraren { $pivot }′ oinean, gidan, { $body } solidoarekiko abiadura erlatiboa gidarekiko paraleloa da, eta arrastrekoa { $pivot }{ $pivot }′ zuzenarekiko perpendikularra, hau da, hori ere gidarekiko paraleloa: { $b } solidoaren { $pivot }′ puntuko abiadura gidaren norabidean dago)
+centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra ({ $pivot }′ puntuan, { $pivot } puntutik gidara doan perpendikularraren oinean, { $body } solidoarekiko abiadura erlatiboa gidarekiko paraleloa da, eta arrastrekoa { $pivot }{ $pivot }′ zuzenarekiko perpendikularra, hau da, hori ere gidarekiko paraleloa: { $b } solidoaren { $pivot }′ puntuko abiadura gidaren norabidean dago)
 centre-carried-slip = {" "}({ $b } solidoa ez da irristatzen { $body } solidoaren gainean: bere { $point } puntuak { $body } solidoaren abiadura du bertan)
 centre-carried-between = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
 centre-carried-between_from = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $near } puntutik { $dist } distantziara:

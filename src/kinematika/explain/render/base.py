@@ -25,9 +25,10 @@ LEGEND = "\ue002legend\ue003"        # where the legend of shortened subscripts 
 TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
 # a symbol typed in a model's own words: one letter (with its marks: φ̇) that ends no word, an
 # underscore, then a subscript of letters and digits or one in braces (v_B, Ω_pinyó, ℜ_P,
-# a_{F∈gurpila}); snake_case (draw_at) is not one, its letter ends a word
+# a_{F∈gurpila}); snake_case (draw_at) is not one, its letter ends a word; a superscript
+# after it is the symbol's power, not its subscript (v_P² is v_P squared: twenty-fourth round (e))
 TYPED_GEOM = "^{geom}"      # the geometric contact point's mark as a model's words type it
-SUBSCRIPTED = re.compile("(?<![\\w\u0300-\u036f])([^\\W\\d_][\u0300-\u036f]*)_(\\{[^{}]+\\}|[^\\W_]+)")
+SUBSCRIPTED = re.compile("(?<![\\w\u0300-\u036f])([^\\W\\d_][\u0300-\u036f]*)_(\\{[^{}]+\\}|[^\\W_\u00b2\u00b3\u00b9\u2070-\u207f]+)")
 # what a name's markup begins with before its first letter, by format
 LEADING_MARKUP = {"html": re.compile(r"(?:<[^>]*>)*"), "md": re.compile(r"[*_]*"),
                   "tex": re.compile(r"(?:\\[A-Za-z]+\{)*")}
@@ -147,6 +148,7 @@ class Renderer(ABC):
         self._rated: set[str] = set()        # bodies whose own symbol (ω_X, α_X, I_X) is written
         self._rating = False
         self._member: Optional[tuple[str, str]] = None   # the first v_{J∈b} written (`subscripts`)
+        self._members: dict[str, str] = {}   # each body written after ∈, at its first point (`subscripts`)
         self._legend: Optional[Msg] = None
         body = [self.heading(1, self.esc(shown_lines(self.wording.title(self.lang, self.doc.title))))]
         with formula_values(self.doc.values):
@@ -603,27 +605,32 @@ class Renderer(ABC):
         `model.subscripts.read_off`), or the bodies go by their numbers (the structure's table).
         A page that writes a point's velocity on a body, v_{J∈cylinder}, says once (with its
         first such symbol) what J∈cylinder means: the point of the cylinder at J, which the
-        notes write v_T(J) in words beside the figure, and a reader met undefined."""
-        from ...model.subscripts import CODE, _words, read_off
-
+        notes write v_T(J) in words beside the figure, and a reader met undefined. A body
+        written only after ∈ (v_{J∈zilindroa}, a_{J∈terra}) whose subscript is shortened from
+        its name (*zilindro finkoa*, *terra cilíndric*) and that no ω line defines is said
+        the same way, once, at its first point: every subscript on the page is read
+        (twenty-fourth round (e))."""
         spelt = self.wording.bodies.get(self.lang or "", {}) if self.wording is not None else {}
         items: list = []
         written = getattr(self, "_written", None)
+        defined: set[str] = set()
         for b in (m.args["bodies"] if spelt else []):
             label = self.labels().get(b, "")
             if written is not None and b not in getattr(self, "_rated", written):
-                continue          # ω_X the page never writes needs no legend: a point's body
-                # (v_{J∈terra}) is named in the words beside it (J com a punt del terra cilíndric)
-            words = _words(spelt[b]) if b in spelt else []
-            if not label or label.isdigit() or not words or label == " ".join(words) \
-                    or (label in words and CODE.match(label)) or read_off(label, spelt[b], self.lang):
+                continue          # ω_X the page never writes needs no legend (a body written
+                # after ∈ only is defined below, with its point)
+            if self._plain(b, label, spelt):
                 continue          # the name as written, its own code (ω_N of *N blokea*), or
                 # its words run together (ω_politja1 of *politja 1*): nothing to define
             said = Msg("structure.subscript_pair", {"sym": Sym("ω", b, vector=False), "body": Name(b, "body")})
             items += (["; "] if items else []) + [said]
+            defined.add(b)
         member = getattr(self, "_member", None)
-        if member is not None:            # v_{J∈cylinder}: the point of the cylinder at J, once a page
-            point_, of = member
+        members = [member] if member is not None else []     # v_{J∈cylinder}: the point of the cylinder at J, once a page
+        members += [(point_, of) for of, point_ in getattr(self, "_members", {}).items()
+                    if (member is None or of != member[1]) and of not in defined and spelt
+                    and not self._plain(of, self.labels().get(of, ""), spelt)]
+        for point_, of in members:
             said = Msg("structure.subscript_member", {"sym": Sym("v", f"{point_}∈{of}"), "body": Name(of, "body"),
                                                       "point": Name(point_, "point")})
             items += (["; "] if items else []) + [said]
@@ -634,6 +641,16 @@ class Renderer(ABC):
         if not items:
             return ""
         return self.para(self.sentence(self.message(Msg(m.key, {"pairs": Inline(items)}), lead=True)))
+
+    def _plain(self, b: str, label: str, spelt: dict) -> bool:
+        """Whether body `b`'s subscript `label` needs no definition: no label, its number, the
+        name as written, the code the name holds (ω_N of *N blokea*) or the name's words run
+        together (ω_politja1 of *politja 1*: `model.subscripts.read_off`)."""
+        from ...model.subscripts import CODE, _words, read_off
+
+        words = _words(spelt[b]) if b in spelt else []
+        return (not label or label.isdigit() or not words or label == " ".join(words)
+                or (label in words and bool(CODE.match(label))) or read_off(label, spelt[b], self.lang))
 
     def labels(self) -> dict[str, str]:
         """Each body as the symbols write it: the index the model's notation gives it in this
@@ -704,6 +721,8 @@ class Renderer(ABC):
         head, *rest = re.split(r"([∈/,])", s.sub)
         if s.base == "v" and len(rest) == 2 and rest[0] == "∈" and getattr(self, "_member", "") is None:
             self._member = (head, rest[1])     # v_{J∈b}: the legend says once what J∈b means
+        if s.base in ("v", "a") and len(rest) == 2 and rest[0] == "∈" and hasattr(self, "_members"):
+            self._members.setdefault(rest[1], head)   # v_{J∈cylinder}: which body, if shortened
         out = head
         for i in range(0, len(rest), 2):
             mark, name = rest[i], rest[i + 1] if i + 1 < len(rest) else ""

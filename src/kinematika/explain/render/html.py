@@ -35,6 +35,10 @@ figure,table.eq{break-inside:avoid}h2,h3{break-after:avoid}}
 
 LONG = 8            # terms: a longer equation is set one side to a line
 MARKED = re.compile("(.[\u0300-\u036f]+)")     # a letter and its combining marks
+# a letter with a dot or two over it in a model's words (the notes' φ̇ = v₀ …): a rate, set as
+# `symbol` sets one, in italics; upright, DejaVu Sans puts φ̇'s dot on the φ's stem and a
+# reader saw φ (twenty-fourth round (e))
+DOTTED = re.compile("(.[\u0307\u0308]+)")
 
 
 class HtmlRenderer(Renderer):
@@ -43,8 +47,11 @@ class HtmlRenderer(Renderer):
     fmt = "html"
 
     def esc(self, text: str) -> str:
-        """Text escaped; a letter with a combining mark (θ̇ in a note) in the sans font."""
-        return MARKED.sub(r'<span class="mk">\1</span>', escape(shown_lines(text), quote=False))
+        """Text escaped; a letter with a combining mark (θ̇ in a note) in the sans font, and
+        in italics when the mark is a dot (a rate, `DOTTED`), as `symbol` writes it."""
+        text = escape(shown_lines(text), quote=False)
+        return MARKED.sub(lambda m: (f'<i><span class="mk">{m[1]}</span></i>' if DOTTED.fullmatch(m[1])
+                                     else f'<span class="mk">{m[1]}</span>'), text)
 
     def name(self, n: Name) -> str:
         """Points upright and sans serif (as the figures letter them), bodies in italics,
