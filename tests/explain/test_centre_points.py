@@ -43,7 +43,8 @@ def test_the_two_bars_centres_are_their_symbols(lang):
     text = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang, "md", drawings=False)
     for bar in ("OQ", "OJ"):
         assert f"v_{{I_{bar}}} = (0" in text, (lang, bar)
-        assert f"v_{{O,I_{bar}}}" in text and f"⊥ I_{{{bar}}}O" in text, (lang, bar)
+        # the direction in the term's own order, O then I (twenty-fourth round (c))
+        assert f"v_{{O,I_{bar}}}" in text and f"⊥ OI_{{{bar}}}" in text, (lang, bar)
         assert f"I_{bar} ≡" not in text
     html = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang, "html", drawings=False)
     assert '<sub><i>I</i><sub>OQ</sub></sub>' in html          # v with the subscript I_OQ, nested

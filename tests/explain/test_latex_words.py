@@ -23,7 +23,8 @@ def test_a_symbol_in_a_models_words_is_set_as_a_symbol(lang, typed):
     too; and R_roda the same in the formulas as in the words (R_{\\mathrm{roda}})."""
     page = rendered("seed_c5_e6_bicycle", lang, "tex", drawings=False)
     assert typed in page
-    assert r"$\Re_{\mathrm{P}}$ = v(P)$^2$/a$^n$" in page
+    # the remark writes the page's v_P since the twenty-fourth round (e) (was the notes' v(P))
+    assert r"$\Re_{\mathrm{P}}$ = $v_{\mathrm{P}}$$^2$/a$^n$" in page
     w = {"eu": "gurpila", "ca": "roda"}[lang]         # the model's R_roda per language
     assert "R_{" + w + "}" not in page and r"R_{\mathrm{" + w + "}}" in page
 

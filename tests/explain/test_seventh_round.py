@@ -64,7 +64,8 @@ def test_the_bicycles_remark_writes_the_pages_rates(lang):
     html = _html_text("seed_c5_e6_bicycle", lang)
     assert f"r <i>ω</i><sub>{small}</sub> = R <i>ω</i><sub>{big}</sub>" in html
     assert "Ω" not in html and f"ω_{small}" not in html
-    assert "<i>ℜ</i><sub>P</sub> = v(P)²/aⁿ" in html and "ℜ_P" not in html
+    # the remark writes the page's v_P since the twenty-fourth round (e) (was the notes' v(P))
+    assert "<i>ℜ</i><sub>P</sub> = <i>v</i><sub>P</sub>²/aⁿ" in html and "ℜ_P" not in html
 
 
 def test_a_data_remarks_symbol_is_subscripted_in_html():
