@@ -16,6 +16,7 @@ the line every half pixel, not by the placer's arithmetic.
 from __future__ import annotations
 
 import functools
+import itertools
 import re
 
 import numpy as np
@@ -72,7 +73,7 @@ def layouts(name: str, lang: str) -> list:
 def crossed(points: np.ndarray, box: np.ndarray) -> bool:
     """Whether the polyline through `points` (display) runs through `box` (x0, y0, x1, y1):
     some point of it, sampled every half pixel, strictly inside."""
-    for p, q in zip(points[:-1], points[1:]):
+    for p, q in itertools.pairwise(points):
         n = max(2, int(np.linalg.norm(q - p) / 0.5) + 1)
         t = np.linspace(0, 1, n)[:, None]
         s = p + t * (q - p)

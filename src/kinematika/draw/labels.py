@@ -366,7 +366,8 @@ class Layout:
     def _lines_under(self, label: Label, boxes: np.ndarray) -> np.ndarray:
         """What a label other than a point's costs for lying across drawn lines: `LINE_OVER` for
         each line (a body's outline, bar, rim or hatching; a construction line: `avoid`
-        weights in `DRAWN`) that runs through its text box, counted exactly
+        weights in `DRAWN`) that runs through its box grown by `OBSTACLE_PAD` (its text and
+        `PAD`, 4 points: half a bar's width, so that no bar's stroke touches it), counted exactly
         (`_lines_in_boxes`), its own body's lines apart (`label_owner`). The areas alone
         (`_areas`) left a label free to straddle a rim, a bar or a hatched band, where it
         reads as that body's (C5-1.2's v_J∈OJ across the left wheel's rim, C5-2.2's v_O on
@@ -378,8 +379,8 @@ class Layout:
             return np.zeros(len(boxes))
         owner = label_owner(label.gid)
         keep = self.drawn_owner != owner if owner is not None else np.ones(len(self.drawn), bool)
-        inner = boxes + np.array([1, 1, -1, -1]) * PAD * self.px
-        return LINE_OVER * _lines_in_boxes(self.drawn[keep], self.drawn_line[keep], inner)
+        clear = boxes + np.array([-1, -1, 1, 1]) * OBSTACLE_PAD * self.px    # a bar's half width beyond the text
+        return LINE_OVER * _lines_in_boxes(self.drawn[keep], self.drawn_line[keep], clear)
 
     def _leader_over(self, label: Label, cand: tuple) -> np.ndarray:
         """What the leader of an arrow's label (`Label.along`: a polygon's) costs for crossing
