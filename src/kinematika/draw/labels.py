@@ -54,7 +54,7 @@ ARROW_UNDER = 400.0      # a polygon label's box over another arrow (exactly): a
 BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
 AREA = 400.0            # a body's name or a vector's value over another body's area, × the box's part covered
 AREA_GRID = (8, 4)      # points across and up a label's box tested for lying in a body's area
-LINE_OVER = 150.0        # a name, value or centre's label across a drawn line of another body (an outline, bar, rim,
+LINE_OVER = 150.0        # a name, value or centre's label across a drawn line of a body (an outline, bar, rim,
                          # hatching, construction line), each line: worse than a leader across one (`BODY_CROSS`)
 DRAWN = (0.5, 3.0)       # the `avoid` weights of such lines (hatching 0.7, construction 0.5; arrows weigh 3)
 TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
@@ -368,7 +368,9 @@ class Layout:
         each line (a body's outline, bar, rim or hatching; a construction line: `avoid`
         weights in `DRAWN`) that runs through its box grown by `OBSTACLE_PAD` (its text and
         `PAD`, 4 points: half a bar's width, so that no bar's stroke touches it), counted exactly
-        (`_lines_in_boxes`), its own body's lines apart (`label_owner`). The areas alone
+        (`_lines_in_boxes`), its own body's lines too: a name across its own wheel's rim is
+        as hard to read (C5-E.5's "R erradioko gurpila"), and inside the disc or beside it
+        is free. The areas alone
         (`_areas`) left a label free to straddle a rim, a bar or a hatched band, where it
         reads as that body's (C5-1.2's v_J∈OJ across the left wheel's rim, C5-2.2's v_O on
         the chassis' bar, C5-E.2's names on the hatched fixed wheel, C5-1.1's name across a
@@ -377,10 +379,8 @@ class Layout:
         edge, less than a step away from the anchor."""
         if label.gid.startswith(POINT_GIDS) or not len(self.drawn):
             return np.zeros(len(boxes))
-        owner = label_owner(label.gid)
-        keep = self.drawn_owner != owner if owner is not None else np.ones(len(self.drawn), bool)
         clear = boxes + np.array([-1, -1, 1, 1]) * OBSTACLE_PAD * self.px    # a bar's half width beyond the text
-        return LINE_OVER * _lines_in_boxes(self.drawn[keep], self.drawn_line[keep], clear)
+        return LINE_OVER * _lines_in_boxes(self.drawn, self.drawn_line, clear)
 
     def _leader_over(self, label: Label, cand: tuple) -> np.ndarray:
         """What the leader of an arrow's label (`Label.along`: a polygon's) costs for crossing
