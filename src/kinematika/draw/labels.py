@@ -54,6 +54,9 @@ ARROW_UNDER = 400.0      # a polygon label's box over another arrow (exactly): a
 BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
 AREA = 400.0            # a body's name or a vector's value over another body's area, × the box's part covered
 AREA_GRID = (8, 4)      # points across and up a label's box tested for lying in a body's area
+LINE_OVER = 150.0        # a name, value or centre's label across a drawn line of a body (an outline, bar, rim,
+                         # hatching, construction line), each line: worse than a leader across one (`BODY_CROSS`)
+DRAWN = (0.5, 3.0)       # the `avoid` weights of such lines (hatching 0.7, construction 0.5; arrows weigh 3)
 TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
 DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
 SHAFT = 0.5              # per point a mechanism vector's value slides back from its tip along its shaft (`Label.shaft`)
@@ -214,6 +217,7 @@ class Layout:
         self.outline_owners = np.array([o for (line, weight, _), o in zip(board.obstacles, owners)
                                         if 1.0 <= weight < 3.0 and len(line) >= 2
                                         for _ in range(len(line) - 1)], dtype=object)
+        self.drawn, self.drawn_line, self.drawn_owner = _drawn_lines(board.obstacles, owners, ax.transData)
         self.areas = [(owner, Path(ax.transData.transform(poly))) for owner, poly in board.areas
                       if len(poly) >= 3]
         solid = self.obstacles[self.weights >= 1.0]
@@ -232,7 +236,7 @@ class Layout:
         cands = [self._candidates(self.labels[i], anchors[i], sizes[i]) for i in range(n)]
         base = [self._fixed_cost(self.labels[i], *cands[i][:3]) + cands[i][4] +
                 self._leader_over(self.labels[i], cands[i]) + self._apart(i, anchors, cands[i]) +
-                self._areas(self.labels[i], cands[i][0])
+                self._areas(self.labels[i], cands[i][0]) + self._lines_under(self.labels[i], cands[i][0])
                 for i in range(n)]
         choice = [-1] * n
         for i in range(n):                                 # greedy, most important first
@@ -381,6 +385,25 @@ class Layout:
             return np.zeros(len(boxes))
         inner = boxes + np.array([1, 1, -1, -1]) * PAD * self.px
         return RIM * np.minimum(_segments_in_boxes(self.outlines[other], inner), 1.0)
+
+    def _lines_under(self, label: Label, boxes: np.ndarray) -> np.ndarray:
+        """What a label other than a point's costs for lying across drawn lines: `LINE_OVER` for
+        each line (a body's outline, bar, rim or hatching; a construction line: `avoid`
+        weights in `DRAWN`) that runs through its box grown by `OBSTACLE_PAD` (its text and
+        `PAD`, 4 points: half a bar's width, so that no bar's stroke touches it), counted exactly
+        (`_lines_in_boxes`), its own body's lines too: a name across its own wheel's rim is
+        as hard to read (C5-E.5's "R erradioko gurpila"), and inside the disc or beside it
+        is free. The areas alone
+        (`_areas`) left a label free to straddle a rim, a bar or a hatched band, where it
+        reads as that body's (C5-1.2's v_J∈OJ across the left wheel's rim, C5-2.2's v_O on
+        the chassis' bar, C5-E.2's names on the hatched fixed wheel, C5-1.1's name across a
+        dash-dot line; issue 30, twenty-fourth round (f)). Sampling the lines (`COVER`)
+        weighs a line by its length inside the box, a few points for a rim crossed at its
+        edge, less than a step away from the anchor."""
+        if label.gid.startswith(POINT_GIDS) or not len(self.drawn):
+            return np.zeros(len(boxes))
+        clear = boxes + np.array([-1, -1, 1, 1]) * OBSTACLE_PAD * self.px    # a bar's half width beyond the text
+        return LINE_OVER * _lines_in_boxes(self.drawn, self.drawn_line, clear)
 
     def _leader_over(self, label: Label, cand: tuple) -> np.ndarray:
         """What the leader of an arrow's label (`Label.along`: a polygon's) costs for crossing
@@ -558,6 +581,12 @@ def _segments_in_boxes(segs: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     keeps a part of positive length."""
     if not len(segs) or not len(boxes):
         return np.zeros(len(boxes))
+    return _segment_hits(segs, boxes).sum(axis=1).astype(float)
+
+
+def _segment_hits(segs: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """(K, M): whether each of the segments (M, 2, 2) passes through each box (K, 4), clipped
+    to the box by its slabs (Liang–Barsky) keeping a part of positive length."""
     p, d = segs[:, 0][None], (segs[:, 1] - segs[:, 0])[None]         # (1, M, 2)
     lo, hi = boxes[:, None, :2], boxes[:, None, 2:]                  # (K, 1, 2)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -566,9 +595,42 @@ def _segments_in_boxes(segs: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     inside = (p >= lo) & (p <= hi)
     t_in = np.where(flat, np.where(inside, -np.inf, np.inf), np.minimum(t1, t2))
     t_out = np.where(flat, np.where(inside, np.inf, -np.inf), np.maximum(t1, t2))
-    enter = np.maximum(t_in.max(axis=-1), 0.0)
-    leave = np.minimum(t_out.min(axis=-1), 1.0)
-    return (leave - enter > 1e-9).sum(axis=1).astype(float)
+    return np.minimum(t_out.min(axis=-1), 1.0) - np.maximum(t_in.max(axis=-1), 0.0) > 1e-9
+
+
+def _lines_in_boxes(segs: np.ndarray, line: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """For each box (K, 4), how many distinct drawn lines pass through it: `segs` (M, 2, 2)
+    are their segments, `line` (M,) the line each belongs to (a rim is one line, however
+    many segments draw it)."""
+    if not len(segs) or not len(boxes):
+        return np.zeros(len(boxes))
+    lo, hi = boxes[:, :2].min(axis=0), boxes[:, 2:].max(axis=0)
+    near = np.all((segs.max(axis=1) >= lo) & (segs.min(axis=1) <= hi), axis=1)
+    segs, line = segs[near], line[near]
+    if not len(segs):
+        return np.zeros(len(boxes))
+    ids, which = np.unique(line, return_inverse=True)
+    hits = _segment_hits(segs, boxes)                                # (K, M)
+    per_line = np.zeros((len(boxes), len(ids)), bool)
+    for k in range(len(ids)):
+        per_line[:, k] = hits[:, which == k].any(axis=1)
+    return per_line.sum(axis=1).astype(float)
+
+
+def _drawn_lines(obstacles: list, owners: list, transform: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The segments (M, 2, 2, display) of the drawn lines whose `avoid` weight is in `DRAWN`
+    (outlines, bars, rims, hatching, construction lines), the line (M,) each belongs to and
+    its body (M,: "" for none), for `Layout._lines_under`."""
+    segs, lines, own = [], [], []
+    for k, ((line, weight, _), owner) in enumerate(zip(obstacles, owners)):
+        if DRAWN[0] <= weight < DRAWN[1] and len(line) >= 2:
+            q = transform.transform(line)
+            segs.append(np.stack([q[:-1], q[1:]], axis=1))
+            lines += [k] * (len(q) - 1)
+            own += [owner] * (len(q) - 1)
+    if not segs:
+        return np.zeros((0, 2, 2)), np.zeros(0, int), np.zeros(0, dtype=object)
+    return np.concatenate(segs), np.array(lines), np.array(own, dtype=object)
 
 
 def _crossing(p: np.ndarray, qs: np.ndarray, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:

@@ -167,6 +167,9 @@ def _kennedy(ctx: Context, line: KennedyLine, style: Optional[LineStyle] = None)
         ctx.add("line", seg, width=st["lw"], dash=st["ls"][1], colour=st["color"], alpha=st["alpha"],
                 zorder=st["zorder"], gid=line.key, layer="centres",
                 group=f"{'normal' if style is NORMAL else 'kennedy'}:{line.key}")
+        # labels keep off it (`draw.labels.Layout._lines_under`): a name across a dash-dot line
+        # reads as struck through (C5-1.1's ezkerreko kable-zatia, twenty-fourth round (f))
+        ctx.avoid(*seg, weight=0.5)
 
 
 def draw_curvatures(ctx: Context) -> None:

@@ -99,7 +99,12 @@ def plain(text: str) -> str:
 
 
 def _roman(name: str) -> str:
-    return r"\mathrm{" + name.replace("_", r"\_").replace(" ", r"\ ") + "}"
+    """A name set upright in mathtext: \\mathrm{kable\\ zatia}. A hyphen is set as text
+    (\\text{-}): inside \\mathrm mathtext sets "-" as a minus sign with a space either side,
+    and a Basque reader read C5-1.1's I_{eskuineko kable-zatia} as "kable − zatia" (issue 30,
+    twenty-fourth round (f)); a name is words, not a difference."""
+    body = name.replace("_", r"\_").replace(" ", r"\ ")
+    return r"\mathrm{" + body.replace("-", r"}\text{-}\mathrm{") + "}"
 
 
 def subscript(letter: str, name: str, body: Optional[str] = None,
@@ -312,7 +317,7 @@ def bare(label: str) -> str:
 
 
 def _unmath(text: str) -> str:
-    out = text.replace("$", "").replace(r"\mathrm", "").replace(r"{\in}", "∈")
+    out = text.replace("$", "").replace(r"\mathrm", "").replace(r"\text", "").replace(r"{\in}", "∈")
     out = out.replace(r"\_", "\0").replace(r"\ ", " ")
     out = out.replace("{", "").replace("}", "").replace("_", "").replace("\\", "")
     return out.replace("\0", "_")

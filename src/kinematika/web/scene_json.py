@@ -248,7 +248,7 @@ def _latex_text(text: str) -> str:
     for _ in range(4):       # innermost first: \frac{a}{b}, \sqrt{x}, \mathrm{x}, x^{2}
         text = re.sub(r"\\frac\{([^{}]*)\}\{([^{}]*)\}", r"(\1)/(\2)", text)
         text = re.sub(r"\\sqrt\{([^{}]*)\}", r"√(\1)", text)
-        text = re.sub(r"\\(?:mathrm|mathit|operatorname)\{([^{}]*)\}", r"\1", text)
+        text = re.sub(r"\\(?:mathrm|mathit|operatorname|text)\{([^{}]*)\}", r"\1", text)
         text = re.sub(r"\^\{?(-?[0-9]+)\}?", lambda m: m.group(1).translate(_SUPERSCRIPT), text)
     text = re.sub(r"\\([A-Za-z]+)", lambda m: _GREEK.get(m.group(1), m.group(1)), text)
     text = re.sub(r"\((\w)\)", r"\1", text)         # (a)/(b) of single letters: a/b
