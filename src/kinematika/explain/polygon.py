@@ -24,7 +24,8 @@ from .terms import acceleration_terms
 OFFSET = 0.06           # of the polygon's size: the gap between collinear arrows (a label's height at the figure's width)
 PARALLEL = 0.02         # sin of the angle under which two arrows read as parallel (about 1°)
 SAME = 1e-9             # relative: two points (or arrows) are one
-MAX_AT_POINT = 3        # images at one point, written as one label: more is no label a reader parses
+MAX_AT_POINT = 4        # names of one image, written as one label: every point there (C5-2.2's translating chassis: c1, c2, o′, p1)
+CROWDED = 3             # images at one point past which a polygon along one line constructs nothing a reader parses
 
 
 def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = False) -> Figure | None:
@@ -42,6 +43,7 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     if key == "fig.level_a":                # the caption names only the kinds of terms drawn
         key = {"coriolis": "fig.level_a", "relative": "fig.level_a_relative",
                "normal": "fig.level_a_normal"}[acceleration_terms(eqs)]
+    poly.join_page_points(level)
     images = poly.image_points()
     # the caption's "between the images, the terms (black)" only when a term is drawn there:
     # a polygon of absolute velocities alone (C5-2.1's rolling wheels) has none (issue 30)
@@ -117,7 +119,7 @@ def pole_notes(fig: Figure, poly: "_Builder") -> list:
 def degenerate(fig: Figure) -> bool:
     """Whether a polygon constructs nothing and cannot be read: all its arrows lie along one
     direction (no triangle closes: the equations' values say all it would) and more than
-    `MAX_AT_POINT` images fall on one point (C5-1.5's pulleys: five contact points' images
+    `CROWDED` images fall on one point (C5-1.5's pulleys: five contact points' images
     where the block's speed is, their labels piled up). Such a polygon is left out."""
     dirs = [(a.end[0] - a.start[0], a.end[1] - a.start[1]) for a in fig.arrows]
     dirs = [d for d in dirs if d != (0.0, 0.0)]
@@ -126,7 +128,7 @@ def degenerate(fig: Figure) -> bool:
     ux, uy = dirs[0]
     along = all(abs(ux * vy - uy * vx) <= 1e-6 * math.hypot(ux, uy) * math.hypot(vx, vy) for vx, vy in dirs)
     crowded = max((name.count(", ") + 1 for name, _, kind in fig.points if kind == "image"), default=0)
-    return along and crowded > MAX_AT_POINT
+    return along and crowded > CROWDED
 
 
 def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
@@ -242,6 +244,28 @@ class _Builder:
             else:
                 same[0].append(name)
         return [(", ".join(sorted(names)), xy, "image") for names, xy in groups]
+
+    def join_page_points(self, level: str) -> None:
+        """Letter at an image every other point of the page whose motion (`level` 'v' or 'a')
+        lands there: a polygon point names all the points it is the image of (C5-2.2's c1, c2,
+        o′: the wheels' centres C1 and C2 of the chassis S1 have one velocity, and "c1, o′"
+        left out c2; twenty-fourth round (g)). Only points that are one point of every body
+        carrying them (their letter needs no body), and only at images already drawn: a
+        point no equation names adds no image of its own."""
+        size = self._scale()
+        spots = [xy for xy in self.images.values() if not self.at_pole(xy)]
+        if not spots:
+            return
+        taken = {n.split("∈")[0] for n in self.images}
+        for point in self.ctx.model.points:
+            bodies = self.ctx.model.carriers(point)
+            name = _letter(point, page_letters(self.ctx))
+            if not bodies or not name or name in taken or not self.ctx.shared(point):
+                continue
+            motion = (self.ctx.vel if level == "v" else self.ctx.acc)(bodies[0], point)
+            xy = tuple(float(c) for c in self.ctx.drawn(motion)[:2])
+            if any(math.hypot(xy[0] - p[0], xy[1] - p[1]) <= 1e-7 * size for p in spots):
+                self.images[name] = xy
 
     def _scale(self) -> float:
         pts = [p for a in self.arrows for p in (a.start, a.end)]
