@@ -194,9 +194,10 @@ def _place(lay: Layout, items: list) -> list[Placed]:
         box = (bx0, lay.height - by1, bx1, lay.height - by0)
         centre = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
         leader = None
-        if spot.leader or _nearer_another(box, anchor, along, lay, arrows, dots):
-            ax_, ay_ = (float(c) for c in spot.anchor)
-            start = (ax_, lay.height - ay_)
+        ax_, ay_ = (float(c) for c in spot.anchor)
+        start = (ax_, lay.height - ay_)
+        if spot.leader or (_nearer_another(box, anchor, along, lay, arrows, dots)
+                           and not _crosses_another(start, _edge(start, box), along, lay, arrows)):
             leader = (start, _edge(start, box))
         out.append(Placed(text, colour, centre, box, leader))
     return out
@@ -219,6 +220,21 @@ def _nearer_another(box: tuple, anchor: tuple, along: Optional[tuple], lay: Layo
         mine = _box_to_segment(box, here, here)
         others = [_box_to_segment(box, d, d) for d in dots if math.dist(d, here) >= 0.5]
     return any(d < mine - 1.0 for d in others)
+
+
+def _crosses_another(p: tuple, q: tuple, along: Optional[tuple], lay: Layout, arrows: list) -> bool:
+    """Whether a leader pq would cross an arrow other than its own (`along`): a leader the
+    placement did not choose is drawn only where it crosses none (nineteenth round (d))."""
+    own = None if along is None else (lay.at(along[0]), lay.at(along[1]))
+
+    def side(o: tuple, u: tuple, v: tuple) -> float:
+        return (u[0] - o[0]) * (v[1] - o[1]) - (u[1] - o[1]) * (v[0] - o[0])
+    for a, b in arrows:
+        if own is not None and math.dist(a, own[0]) < 0.5 and math.dist(b, own[1]) < 0.5:
+            continue
+        if side(p, q, a) * side(p, q, b) < 0 and side(a, b, p) * side(a, b, q) < 0:
+            return True
+    return False
 
 
 def _box_to_segment(box: tuple, p: tuple, q: tuple, samples: int = 48) -> float:
