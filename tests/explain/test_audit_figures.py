@@ -159,8 +159,9 @@ def _points_table_en(doc) -> dict[str, str]:
 @pytest.mark.parametrize("name", sorted(p for p in WORKED if p.startswith("seed_")))
 def test_no_polygon_piles_labels_on_one_point(name):
     """A polygon writes the images that fall on one point as one label (a, b, d), at most
-    three names; a polygon whose arrows all lie on one line with more images on a point is
-    left out (C5-1.5's: eight vertical arrows, five contact points' images on one point)."""
+    four names (C5-2.2's translating chassis: c1, c2, o′, p1); a polygon whose arrows all lie
+    on one line with more than three images on a point is left out (C5-1.5's: eight vertical
+    arrows, the contact points' images on one point)."""
     from kinematika.explain.document import Figure, Section
     from kinematika.explain.polygon import MAX_AT_POINT
 

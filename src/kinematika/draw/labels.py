@@ -80,6 +80,7 @@ class Label:
     style: str = "normal"
     along: Optional[np.ndarray] = None    # an arrow's (start, end), data: the anchor may slide on it
     shaft: Optional[np.ndarray] = None    # a mechanism vector's arrow (start, end), data: likewise (`SHAFT`)
+    off_arrows: bool = False              # a polygon's image name: no arrow may run through its box
 
     @property
     def extent(self) -> tuple[float, float]:
@@ -314,30 +315,22 @@ class Layout:
         if label.prefer is not None and np.linalg.norm(label.prefer) > 0:
             p = label.prefer / np.linalg.norm(label.prefer)
             cost += PREFER * (1 - dirs @ p)
-        if label.along is not None:
+        if label.along is not None or label.off_arrows:
             cost += ARROW_UNDER * self._over_arrows(label, boxes)
         return cost
 
     def _over_arrows(self, label: Label, boxes: np.ndarray) -> np.ndarray:
-        """For each box of a polygon arrow's label, how many segments of the other arrows run
-        through it (its text box, without `PAD`), counted exactly (`_segments_in_boxes`): a
-        label on another arrow reads as that arrow's (001's a_AB^n on the blue a_F∈N, issue
-        30, twenty-first round (c)). Its own arrow — the segments along `Label.along` — is
-        not counted."""
+        """For each box of a polygon's label (an arrow's, `Label.along`, or an image's name,
+        `Label.off_arrows`), how many segments of the arrows run through it (its text box,
+        without `PAD`), counted exactly (`_segments_in_boxes`): a label on another arrow reads
+        as that arrow's (001's a_AB^n on the blue a_F∈N, issue 30, twenty-first round (c)), and
+        one on its own arrow, or an image's letter on an arrow, is read through a line (C5-E.1's
+        "v_PC" and "p" on collinear arrows, twenty-fourth round (g)): its own arrow counts too.
+        Where the space beside it is short, the label goes farther, with its leader."""
         if not len(self.arrows):
             return np.zeros(len(boxes))
-        a, b = self.ax.transData.transform(np.asarray(label.along, dtype=float))
-        u = b - a
-        n = float(np.linalg.norm(u))
-        segs = self.arrows
-        if n > 1e-9:
-            def off(x):                                    # distance from x to the own arrow's segment
-                t = np.clip(((x - a) @ u) / (n * n), 0, 1)
-                return np.linalg.norm(a + t[:, None] * u - x, axis=1)
-            own = (off(segs[:, 0]) <= self.px) & (off(segs[:, 1]) <= self.px)
-            segs = segs[~own]
         inner = boxes + np.array([1, 1, -1, -1]) * PAD * self.px
-        return _segments_in_boxes(segs, inner)
+        return _segments_in_boxes(self.arrows, inner)
 
     def _apart(self, i: int, anchors: np.ndarray, cand: tuple) -> np.ndarray:
         """What a point's label costs for leaning towards another labelled point closer than

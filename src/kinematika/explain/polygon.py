@@ -21,9 +21,11 @@ from .context import Ctx
 from .document import Arrow, Described, Equation, Figure, Inline, Name, Names, msg
 from .terms import acceleration_terms
 
-OFFSET = 0.035          # of the polygon's size: the gap between collinear arrows
+OFFSET = 0.06           # of the polygon's size: the gap between collinear arrows (a label's height at the figure's width)
+PARALLEL = 0.02         # sin of the angle under which two arrows read as parallel (about 1°)
 SAME = 1e-9             # relative: two points (or arrows) are one
-MAX_AT_POINT = 3        # images at one point, written as one label: more is no label a reader parses
+MAX_AT_POINT = 4        # names of one image, written as one label: every point there (C5-2.2's translating chassis: c1, c2, o′, p1)
+CROWDED = 3             # images at one point past which a polygon along one line constructs nothing a reader parses
 
 
 def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = False) -> Figure | None:
@@ -41,6 +43,7 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     if key == "fig.level_a":                # the caption names only the kinds of terms drawn
         key = {"coriolis": "fig.level_a", "relative": "fig.level_a_relative",
                "normal": "fig.level_a_normal"}[acceleration_terms(eqs)]
+    poly.join_page_points(level)
     images = poly.image_points()
     # the caption's "between the images, the terms (black)" only when a term is drawn there:
     # a polygon of absolute velocities alone (C5-2.1's rolling wheels) has none (issue 30)
@@ -116,7 +119,7 @@ def pole_notes(fig: Figure, poly: "_Builder") -> list:
 def degenerate(fig: Figure) -> bool:
     """Whether a polygon constructs nothing and cannot be read: all its arrows lie along one
     direction (no triangle closes: the equations' values say all it would) and more than
-    `MAX_AT_POINT` images fall on one point (C5-1.5's pulleys: five contact points' images
+    `CROWDED` images fall on one point (C5-1.5's pulleys: five contact points' images
     where the block's speed is, their labels piled up). Such a polygon is left out."""
     dirs = [(a.end[0] - a.start[0], a.end[1] - a.start[1]) for a in fig.arrows]
     dirs = [d for d in dirs if d != (0.0, 0.0)]
@@ -125,7 +128,7 @@ def degenerate(fig: Figure) -> bool:
     ux, uy = dirs[0]
     along = all(abs(ux * vy - uy * vx) <= 1e-6 * math.hypot(ux, uy) * math.hypot(vx, vy) for vx, vy in dirs)
     crowded = max((name.count(", ") + 1 for name, _, kind in fig.points if kind == "image"), default=0)
-    return along and crowded > MAX_AT_POINT
+    return along and crowded > CROWDED
 
 
 def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
@@ -270,6 +273,28 @@ class _Builder:
                 same[0].append(name)
         return [(", ".join(sorted(names)), xy, "image") for names, xy in groups]
 
+    def join_page_points(self, level: str) -> None:
+        """Letter at an image every other point of the page whose motion (`level` 'v' or 'a')
+        lands there: a polygon point names all the points it is the image of (C5-2.2's c1, c2,
+        o′: the wheels' centres C1 and C2 of the chassis S1 have one velocity, and "c1, o′"
+        left out c2; twenty-fourth round (g)). Only points that are one point of every body
+        carrying them (their letter needs no body), and only at images already drawn: a
+        point no equation names adds no image of its own."""
+        size = self._scale()
+        spots = [xy for xy in self.images.values() if not self.at_pole(xy)]
+        if not spots:
+            return
+        taken = {n.split("∈")[0] for n in self.images}
+        for point in self.ctx.model.points:
+            bodies = self.ctx.model.carriers(point)
+            name = _letter(point, page_letters(self.ctx))
+            if not bodies or not name or name in taken or not self.ctx.shared(point):
+                continue
+            motion = (self.ctx.vel if level == "v" else self.ctx.acc)(bodies[0], point)
+            xy = tuple(float(c) for c in self.ctx.drawn(motion)[:2])
+            if any(math.hypot(xy[0] - p[0], xy[1] - p[1]) <= 1e-7 * size for p in spots):
+                self.images[name] = xy
+
     def _scale(self) -> float:
         pts = [p for a in self.arrows for p in (a.start, a.end)]
         return max([math.hypot(*p) for p in pts] + [1e-300])
@@ -359,20 +384,37 @@ def _letter(label: str, taken: frozenset[str] = frozenset()) -> str:
 
 
 def _separated(arrows: list[Arrow]) -> list[Arrow]:
-    """Arrows moved across their line, in turn, while they overlap one already placed."""
+    """Arrows moved across their line, in turn, while one runs along one already placed closer
+    than the gap (`_overlap`): collinear terms side by side, and a term that runs a hair's
+    breadth beside another (C5-E.4's blue a_P beside a_PU^n, 0.5 apart on a polygon 16 long)
+    moved off it too, each to its own side, so that no arrow reads as drawn over another
+    (issue 30, twenty-fourth round (g)). The absolute motions (blue) are placed first: each
+    ends at the image it letters, and the terms between images move aside from them."""
     pts = [p for a in arrows for p in (a.start, a.end)]
     size = max(*(abs(p[0]) for p in pts), *(abs(p[1]) for p in pts), 1e-300)
     gap = OFFSET * size
-    placed: list[Arrow] = []
-    for a in arrows:
-        k = 0
+    placed: dict[int, Arrow] = {}
+    order = sorted(range(len(arrows)), key=lambda i: arrows[i].style != "result")
+    for i in order:
+        a = arrows[i]
+        near = [_across(a, b) for b in placed.values() if _overlap(a, b, math.inf)]     # parallel, side by side
+        # the least move that clears them all: none, or just `gap` to either side of one
+        shifts = sorted({0.0, *(s + d for s in near for d in (gap, -gap))}, key=lambda s: (abs(s), -s))
         moved = a
-        while any(_overlap(moved, b, 0.2 * gap) for b in placed) and k < 8:
-            k += 1
-            shift = gap * ((k + 1) // 2) * (1 if k % 2 else -1)
+        for shift in shifts:
             moved = _shifted(a, shift)
-        placed.append(moved)
-    return placed
+            if not any(_overlap(moved, b, gap) for b in placed.values()):
+                break
+        placed[i] = moved
+    return [placed[i] for i in range(len(arrows))]
+
+
+def _across(a: Arrow, b: Arrow) -> float:
+    """How far the middle of `b` lies across the line of `a`, along `a`'s left normal."""
+    dx, dy = a.end[0] - a.start[0], a.end[1] - a.start[1]
+    n = math.hypot(dx, dy) or 1.0
+    mx, my = (b.start[0] + b.end[0]) / 2 - a.start[0], (b.start[1] + b.end[1]) / 2 - a.start[1]
+    return (dx * my - dy * mx) / n
 
 
 def _shifted(a: Arrow, d: float) -> Arrow:
@@ -383,16 +425,18 @@ def _shifted(a: Arrow, d: float) -> Arrow:
 
 
 def _overlap(a: Arrow, b: Arrow, tol: float) -> bool:
-    """Whether two arrows lie on one line (within tol) with overlapping extents."""
+    """Whether two arrows run along one another: parallel (within `PARALLEL`), both ends of
+    `b` closer than `tol` to the line of `a`, and their extents overlapping."""
     ux, uy = a.end[0] - a.start[0], a.end[1] - a.start[1]
     vx, vy = b.end[0] - b.start[0], b.end[1] - b.start[1]
     la, lb = math.hypot(ux, uy), math.hypot(vx, vy)
-    if la == 0 or lb == 0 or abs(ux * vy - uy * vx) > 1e-6 * la * lb:
+    if la == 0 or lb == 0 or abs(ux * vy - uy * vx) > PARALLEL * la * lb:
         return False
     wx, wy = b.start[0] - a.start[0], b.start[1] - a.start[1]
-    if abs(ux * wy - uy * wx) / la > tol:
+    ex, ey = b.end[0] - a.start[0], b.end[1] - a.start[1]
+    if max(abs(ux * wy - uy * wx), abs(ux * ey - uy * ex)) / la >= tol * (1 - 1e-9):
         return False
     t0 = (wx * ux + wy * uy) / la
-    t1 = ((b.end[0] - a.start[0]) * ux + (b.end[1] - a.start[1]) * uy) / la
+    t1 = (ex * ux + ey * uy) / la
     lo, hi = min(t0, t1), max(t0, t1)
     return hi > 0.02 * la and lo < 0.98 * la

@@ -169,7 +169,7 @@ def _place(lay: Layout, items: list) -> list[Placed]:
         board.labels.append(Sized(np.asarray(data(anchor), dtype=float), text.markup, colour, priority, str(i),
                                   None if prefer is None else np.asarray(prefer, dtype=float),
                                   along=None if along is None else np.array([data(along[0]), data(along[1])]),
-                                  width=text.width, height=text.height))
+                                  width=text.width, height=text.height, off_arrows=along is None))
     for a in fig.arrows:
         board.avoid(data(a.start), data(a.end), weight=3.0)
         board.tip(data(a.end))
@@ -186,18 +186,64 @@ def _place(lay: Layout, items: list) -> list[Placed]:
     placed = board.layout(ax)
     out = []
     by_gid = {str(i): item for i, item in enumerate(items)}
+    arrows = [(lay.at(a.start), lay.at(a.end)) for a in fig.arrows]
+    dots = [lay.at(p) for _, p, _ in fig.points]
     for spot in placed:
-        text, colour, _, _, _, _ = by_gid[spot.label.gid]
+        text, colour, anchor, _, _, along = by_gid[spot.label.gid]
         bx0, by0, bx1, by1 = (float(c) for c in spot.box)
         box = (bx0, lay.height - by1, bx1, lay.height - by0)
         centre = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
         leader = None
-        if spot.leader:
-            ax_, ay_ = (float(c) for c in spot.anchor)
-            start = (ax_, lay.height - ay_)
+        ax_, ay_ = (float(c) for c in spot.anchor)
+        start = (ax_, lay.height - ay_)
+        if spot.leader or (_nearer_another(box, anchor, along, lay, arrows, dots)
+                           and not _crosses_another(start, _edge(start, box), along, lay, arrows)):
             leader = (start, _edge(start, box))
         out.append(Placed(text, colour, centre, box, leader))
     return out
+
+
+def _nearer_another(box: tuple, anchor: tuple, along: Optional[tuple], lay: Layout, arrows: list,
+                    dots: list) -> bool:
+    """Whether a polygon's label (its `box`, figure units) lies nearer another arrow than its
+    own (an arrow's label, `along` its start and end) or nearer another image's dot than its
+    own point's (an image's name at `anchor`): read beside it, it names that one (C5-E.1's
+    a_PC^n and a_C^n stacked by three parallel arrows at c, twenty-fourth round (g)). Such a
+    label is drawn with its leader, whatever its distance."""
+    if along is not None:
+        own = (lay.at(along[0]), lay.at(along[1]))
+        mine = _box_to_segment(box, *own)
+        others = [_box_to_segment(box, p, q) for p, q in arrows
+                  if not (math.dist(p, own[0]) < 0.5 and math.dist(q, own[1]) < 0.5)]
+    else:
+        here = lay.at(anchor)
+        mine = _box_to_segment(box, here, here)
+        others = [_box_to_segment(box, d, d) for d in dots if math.dist(d, here) >= 0.5]
+    return any(d < mine - 1.0 for d in others)
+
+
+def _crosses_another(p: tuple, q: tuple, along: Optional[tuple], lay: Layout, arrows: list) -> bool:
+    """Whether a leader pq would cross an arrow other than its own (`along`): a leader the
+    placement did not choose is drawn only where it crosses none (nineteenth round (d))."""
+    own = None if along is None else (lay.at(along[0]), lay.at(along[1]))
+
+    def side(o: tuple, u: tuple, v: tuple) -> float:
+        return (u[0] - o[0]) * (v[1] - o[1]) - (u[1] - o[1]) * (v[0] - o[0])
+    for a, b in arrows:
+        if own is not None and math.dist(a, own[0]) < 0.5 and math.dist(b, own[1]) < 0.5:
+            continue
+        if side(p, q, a) * side(p, q, b) < 0 and side(a, b, p) * side(a, b, q) < 0:
+            return True
+    return False
+
+
+def _box_to_segment(box: tuple, p: tuple, q: tuple, samples: int = 48) -> float:
+    """The distance (figure units) from a box (x0, y0, x1, y1) to the segment pq, sampled."""
+    t = np.linspace(0.0, 1.0, samples)[:, None]
+    pts = np.asarray(p, float) + t * (np.asarray(q, float) - np.asarray(p, float))
+    dx = np.maximum(np.maximum(box[0] - pts[:, 0], pts[:, 0] - box[2]), 0.0)
+    dy = np.maximum(np.maximum(box[1] - pts[:, 1], pts[:, 1] - box[3]), 0.0)
+    return float(np.min(np.hypot(dx, dy)))
 
 
 _SCRATCH = threading.local()      # each thread's axes to place a figure's labels on
