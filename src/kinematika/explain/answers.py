@@ -153,7 +153,7 @@ def curvature_section(ctx: Ctx) -> Section | None:
     the answers table gives only the asked aᵗ and aⁿ (round 24d: C5-1.7's answer row carried
     |v_P|, t, aᵗ · t and |aⁿ|, symbols the page never derived)."""
     asked = [q for q in worked(ctx).curvatures if ctx.planar]
-    split = [q for q in ctx.model.questions if q.kind == "intrinsic" and ctx.planar]
+    split = [q for q in ctx.model.questions if QUESTIONS[q.kind].working and ctx.planar]
     if not asked and not split:
         return None
     sec = Section(msg("sec.curvature"))
