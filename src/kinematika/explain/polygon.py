@@ -50,7 +50,7 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     between = int(any(a.style != "result" for a in poly.arrows))
     fig = Figure(msg(key, between=between, **({} if step else lettering(ctx, [label for label, _, _ in images]))),
                  unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
-    fig.arrows = _separated(poly.arrows)
+    fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images
     fig.bar = bar_unit(ctx, poly.values, poly.syms)
     fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
@@ -142,8 +142,9 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
     styles = {a.style for a in poly.arrows}
     fig = Figure(msg("fig.polygon_v" if eq.level == "v" else "fig.polygon_a",
                      unknown=int("unknown" in styles), result=int("result" in styles)),
-                 arrows=_separated(poly.arrows), unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic,
+                 unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic,
                  values=ctx.drawn_values())
+    fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
     fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
     fig.bar = bar_unit(ctx, poly.values, poly.syms)
@@ -383,20 +384,30 @@ def _letter(label: str, taken: frozenset[str] = frozenset()) -> str:
     return letter + (f"∈{body}" if body else "")
 
 
-def _separated(arrows: list[Arrow]) -> list[Arrow]:
+def _separated(arrows: list[Arrow]) -> tuple[list[Arrow], list[tuple[tuple, tuple]]]:
     """Arrows moved across their line, in turn, while one runs along one already placed closer
     than the gap (`_overlap`): collinear terms side by side, and a term that runs a hair's
     breadth beside another (C5-E.4's blue a_P beside a_PU^n, 0.5 apart on a polygon 16 long)
     moved off it too, each to its own side, so that no arrow reads as drawn over another
-    (issue 30, twenty-fourth round (g)). The absolute motions (blue) are placed first: each
-    ends at the image it letters, and the terms between images move aside from them."""
+    (issue 30, twenty-fourth round (g)).
+
+    An absolute motion (blue) never moves: it runs from the pole to the image it letters, as
+    the caption says ("each absolute velocity ends at its image"; the twenty-fourth round's
+    blue arrows moved aside ended beside their dots: C5-2.2, C5-E.1's o′ a dot no arrow
+    reached; twenty-fifth round (c)). Only terms (black) move aside, and a term moved keeps
+    its ends joined to the points it runs between: the second list, thin lines from each
+    moved end back to where it was (an image, or the tip of the term before it)."""
     pts = [p for a in arrows for p in (a.start, a.end)]
     size = max(*(abs(p[0]) for p in pts), *(abs(p[1]) for p in pts), 1e-300)
     gap = OFFSET * size
     placed: dict[int, Arrow] = {}
+    joins: list[tuple[tuple, tuple]] = []
     order = sorted(range(len(arrows)), key=lambda i: arrows[i].style != "result")
     for i in order:
         a = arrows[i]
+        if a.style == "result" and any(b.style == "result" for b in arrows):
+            placed[i] = a                       # blue: from the pole to its image, where it is
+            continue
         near = [_across(a, b) for b in placed.values() if _overlap(a, b, math.inf)]     # parallel, side by side
         # the least move that clears them all: none, or just `gap` to either side of one
         shifts = sorted({0.0, *(s + d for s in near for d in (gap, -gap))}, key=lambda s: (abs(s), -s))
@@ -406,7 +417,9 @@ def _separated(arrows: list[Arrow]) -> list[Arrow]:
             if not any(_overlap(moved, b, gap) for b in placed.values()):
                 break
         placed[i] = moved
-    return [placed[i] for i in range(len(arrows))]
+        if moved.start != a.start:
+            joins += [(a.start, moved.start), (a.end, moved.end)]
+    return [placed[i] for i in range(len(arrows))], joins
 
 
 def _across(a: Arrow, b: Arrow) -> float:
