@@ -1,0 +1,58 @@
+"""Issue 30, twenty-fifth round (c): the velocity and acceleration polygons.
+
+- An absolute motion (blue) runs from the pole o to the dot of its image, always: the
+  twenty-fourth round moved blue arrows aside, and they ended beside their dots (C5-2.2,
+  C5-E.1's o′ a dot no arrow reached), while the caption says each "ends at its image".
+  Only terms (black) move aside, and a term moved keeps its ends joined (thin lines) to the
+  points it runs between.
+"""
+from __future__ import annotations
+
+import math
+
+from kinematika.explain.document import Figure
+from tests.explain.helpers import NOTES_SEEDS, explained, over
+
+POLYGONS = ("fig.level", "fig.step", "fig.polygon")
+
+
+def _polygons(doc) -> list[Figure]:
+    return [b for b in doc.blocks() if isinstance(b, Figure) and b.arrows and b.caption.key.startswith(POLYGONS)]
+
+
+def _size(fig: Figure) -> float:
+    return max(abs(c) for a in fig.arrows for p in (a.start, a.end) for c in p)
+
+
+@over(name=NOTES_SEEDS)
+def test_an_absolute_motion_runs_from_the_pole_to_its_image(name):
+    """Every blue arrow of a level polygon starts at the pole o and ends on the dot of an
+    image (a lettered point of the figure)."""
+    _, doc = explained(name)
+    for fig in _polygons(doc):
+        if not fig.caption.key.startswith("fig.level"):
+            continue
+        size = _size(fig)
+        dots = [p for label, p, kind in fig.points if kind == "image"]
+        for a in fig.arrows:
+            if a.style != "result":
+                continue
+            assert math.hypot(*a.start) <= 1e-9 * size, (fig.caption.key, "starts off the pole", a.start)
+            assert any(math.dist(a.end, d) <= 1e-9 * size for d in dots), (fig.caption.key, "ends off its image", a.end)
+
+
+@over(name=NOTES_SEEDS)
+def test_a_term_moved_aside_is_joined_to_its_ends(name):
+    """Every end of a black arrow of a polygon lies on the figure's construction: the pole, an
+    image, an end of another arrow, or the end of a thin line that joins it back there; no
+    end of a term moved aside floats free of the points it runs between."""
+    _, doc = explained(name)
+    for fig in _polygons(doc):
+        size = _size(fig)
+        for a in fig.arrows:
+            if a.style == "result":
+                continue
+            for end in (a.start, a.end):
+                spots = [p for _, p, _ in fig.points] + [p for q in fig.lines for p in q]
+                spots += [p for b in fig.arrows if b is not a for p in (b.start, b.end)]
+                assert any(math.dist(end, p) <= 1e-9 * size for p in spots), (fig.caption.key, a.label, end)
