@@ -23,6 +23,7 @@ from .terms import acceleration_terms
 
 OFFSET = 0.06           # of the polygon's size: the gap between collinear arrows (a label's height at the figure's width)
 PARALLEL = 0.02         # sin of the angle under which two arrows read as parallel (about 1°)
+ALONG = 0.2             # sin of the angle (about 11°) under which a term out of (into) a blue arrow's end runs along it
 SAME = 1e-9             # relative: two points (or arrows) are one
 MAX_AT_POINT = 4        # names of one image, written as one label: every point there (C5-2.2's translating chassis: c1, c2, o′, p1)
 CROWDED = 3             # images at one point past which a polygon along one line constructs nothing a reader parses
@@ -408,18 +409,31 @@ def _separated(arrows: list[Arrow]) -> tuple[list[Arrow], list[tuple[tuple, tupl
         if a.style == "result" and any(b.style == "result" for b in arrows):
             placed[i] = a                       # blue: from the pole to its image, where it is
             continue
-        near = [_across(a, b) for b in placed.values() if _overlap(a, b, math.inf)]     # parallel, side by side
+        near = [_across(a, b) for b in placed.values()
+                if _overlap(a, b, math.inf, _alike(a, b, gap))]      # parallel, side by side
         # the least move that clears them all: none, or just `gap` to either side of one
         shifts = sorted({0.0, *(s + d for s in near for d in (gap, -gap))}, key=lambda s: (abs(s), -s))
         moved = a
         for shift in shifts:
             moved = _shifted(a, shift)
-            if not any(_overlap(moved, b, gap) for b in placed.values()):
+            if not any(_overlap(moved, b, gap, _alike(a, b, gap)) for b in placed.values()):
                 break
         placed[i] = moved
         if moved.start != a.start:
             joins += [(a.start, moved.start), (a.end, moved.end)]
     return [placed[i] for i in range(len(arrows))], joins
+
+
+def _alike(a: Arrow, b: Arrow, gap: float) -> float:
+    """The angle (its sine) under which term `a`, within a gap of the arrow `b` placed
+    before it, reads as drawn over it: `ALONG` (about 11°) when `b` is blue and `a` leaves
+    its start (the pole) or ends at its end (its image), since two arrows out of (into) one
+    point that close read as one and their heads pile up (001's a_EO2^n out of o, 4.6° off
+    the blue o→e; a_BE^t into b beside o→b; twenty-fifth round (c)); `PARALLEL` else."""
+    if b.style == "result" and a.style != "result" and (
+            math.dist(a.start, b.start) <= 1e-9 * gap or math.dist(a.end, b.end) <= 1e-9 * gap):
+        return ALONG
+    return PARALLEL
 
 
 def _across(a: Arrow, b: Arrow) -> float:
@@ -437,13 +451,15 @@ def _shifted(a: Arrow, d: float) -> Arrow:
     return Arrow((a.start[0] + ox, a.start[1] + oy), (a.end[0] + ox, a.end[1] + oy), a.label, a.style)
 
 
-def _overlap(a: Arrow, b: Arrow, tol: float) -> bool:
-    """Whether two arrows run along one another: parallel (within `PARALLEL`), both ends of
-    `b` closer than `tol` to the line of `a`, and their extents overlapping."""
+def _overlap(a: Arrow, b: Arrow, tol: float, sin: float = PARALLEL) -> bool:
+    """Whether two arrows run along one another: both ends of `b` closer than `tol` to the
+    line of `a`, their extents overlapping, and their directions within `sin` of each
+    other (parallel: `PARALLEL`; a term out of the pole or into an image beside a blue
+    arrow: `ALONG`, see `_alike`)."""
     ux, uy = a.end[0] - a.start[0], a.end[1] - a.start[1]
     vx, vy = b.end[0] - b.start[0], b.end[1] - b.start[1]
     la, lb = math.hypot(ux, uy), math.hypot(vx, vy)
-    if la == 0 or lb == 0 or abs(ux * vy - uy * vx) > PARALLEL * la * lb:
+    if la == 0 or lb == 0 or abs(ux * vy - uy * vx) > sin * la * lb:
         return False
     wx, wy = b.start[0] - a.start[0], b.start[1] - a.start[1]
     ex, ey = b.end[0] - a.start[0], b.end[1] - a.start[1]
