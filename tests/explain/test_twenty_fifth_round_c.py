@@ -4,14 +4,16 @@
   twenty-fourth round moved blue arrows aside, and they ended beside their dots (C5-2.2,
   C5-E.1's o′ a dot no arrow reached), while the caption says each "ends at its image".
   Only terms (black) move aside, and a term moved keeps its ends joined (thin lines) to the
-  points it runs between.
+  points it runs between; a term out of the pole or into an image within about 11° of the
+  blue arrow there moves aside too (001's a_EO2^n under o→e).
+- No label sits in the scale bar's row (C5-1.1's "k∈polea, …" beside "v/5").
 """
 from __future__ import annotations
 
 import math
 
 from kinematika.explain.document import Figure
-from tests.explain.helpers import NOTES_SEEDS, explained, over
+from tests.explain.helpers import LANGS, NOTES_SEEDS, explained, over
 
 POLYGONS = ("fig.level", "fig.step", "fig.polygon")
 
@@ -56,3 +58,22 @@ def test_a_term_moved_aside_is_joined_to_its_ends(name):
                 spots = [p for _, p, _ in fig.points] + [p for q in fig.lines for p in q]
                 spots += [p for b in fig.arrows if b is not a for p in (b.start, b.end)]
                 assert any(math.dist(end, p) <= 1e-9 * size for p in spots), (fig.caption.key, a.label, end)
+
+
+BAR_ROW = 24        # points from a polygon's bottom: the scale bar's row (its line and its text)
+
+
+@over(name=NOTES_SEEDS)
+def test_no_polygon_label_sits_on_the_scale_bar_row(name):
+    """No label of a polygon, in any language, sits in the scale bar's row, where it read as
+    the bar's (C5-1.1 in Basque: "k∈polea, k∈eskuineko kable-zatia" beside "v/5")."""
+    from kinematika.explain import render
+
+    _, doc = explained(name)
+    figs = _polygons(doc)
+    for lang in LANGS:
+        render(doc, lang, "md")
+    for fig in figs:
+        for lay in fig.layouts.values():
+            for lb in lay.labels:
+                assert lb.box[3] <= lay.height - BAR_ROW, (fig.caption.key, lb.text.raw, lb.box, lay.height)
