@@ -77,3 +77,35 @@ def test_no_polygon_label_sits_on_the_scale_bar_row(name):
         for lay in fig.layouts.values():
             for lb in lay.labels:
                 assert lb.box[3] <= lay.height - BAR_ROW, (fig.caption.key, lb.text.raw, lb.box, lay.height)
+
+
+SIN_ALONG = 0.17    # about 10°: a term out of (into) a blue arrow's end within it reads as drawn over it
+APART = 0.05        # of a polygon's size: the least gap between arrows side by side (twenty-fourth round (g))
+
+
+def _off_line(p, a) -> float:
+    ux, uy = a.end[0] - a.start[0], a.end[1] - a.start[1]
+    return abs(ux * (p[1] - a.start[1]) - uy * (p[0] - a.start[0])) / math.hypot(ux, uy)
+
+
+@over(name=NOTES_SEEDS)
+def test_no_term_leaves_or_enters_a_blue_arrow_along_it(name):
+    """No black arrow of a level polygon runs out of the pole, or into an image, within about
+    10° of the blue arrow there and less than `APART` of the polygon's size off it (001's
+    a_EO2^n, 4.6° off o→e: the blue drawn over it and the heads piled up at e)."""
+    _, doc = explained(name)
+    for fig in _polygons(doc):
+        if not fig.caption.key.startswith("fig.level"):
+            continue
+        size = _size(fig)
+        blue = [b for b in fig.arrows if b.style == "result"]
+        for a in fig.arrows:
+            if a.style == "result":
+                continue
+            for b in blue:
+                shared = math.dist(a.start, b.start) <= 1e-9 * size or math.dist(a.end, b.end) <= 1e-9 * size
+                ux, uy = a.end[0] - a.start[0], a.end[1] - a.start[1]
+                vx, vy = b.end[0] - b.start[0], b.end[1] - b.start[1]
+                sin = abs(ux * vy - uy * vx) / (math.hypot(ux, uy) * math.hypot(vx, vy))
+                far = max(_off_line(a.start, b), _off_line(a.end, b))
+                assert not (shared and sin < SIN_ALONG and far < APART * size), (fig.caption.key, a.label, far / size)
