@@ -90,8 +90,9 @@ def _off_line(p, a) -> float:
 
 @over(name=NOTES_SEEDS)
 def test_no_term_leaves_or_enters_a_blue_arrow_along_it(name):
-    """No black arrow of a level polygon runs out of the pole, or into an image, within about
-    10° of the blue arrow there and less than `APART` of the polygon's size off it (001's
+    """No black arrow of a level polygon runs out of the pole, or into an image, beside the
+    blue arrow there (its middle within the blue's extent), within about 10° of it and less
+    than `APART` of the polygon's size off it (001's
     a_EO2^n, 4.6° off o→e: the blue drawn over it and the heads piled up at e)."""
     _, doc = explained(name)
     for fig in _polygons(doc):
@@ -108,4 +109,6 @@ def test_no_term_leaves_or_enters_a_blue_arrow_along_it(name):
                 vx, vy = b.end[0] - b.start[0], b.end[1] - b.start[1]
                 sin = abs(ux * vy - uy * vx) / (math.hypot(ux, uy) * math.hypot(vx, vy))
                 far = max(_off_line(a.start, b), _off_line(a.end, b))
-                assert not (shared and sin < SIN_ALONG and far < APART * size), (fig.caption.key, a.label, far / size)
+                mx, my = (a.start[0] + a.end[0]) / 2 - b.start[0], (a.start[1] + a.end[1]) / 2 - b.start[1]
+                over = 0 < (mx * vx + my * vy) / (vx * vx + vy * vy) < 1        # beside it, not beyond its end
+                assert not (shared and over and sin < SIN_ALONG and far < APART * size), (fig.caption.key, a.label, far / size)

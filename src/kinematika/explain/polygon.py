@@ -409,19 +409,26 @@ def _separated(arrows: list[Arrow]) -> tuple[list[Arrow], list[tuple[tuple, tupl
         if a.style == "result" and any(b.style == "result" for b in arrows):
             placed[i] = a                       # blue: from the pole to its image, where it is
             continue
-        near = [_across(a, b) for b in placed.values()
-                if _overlap(a, b, math.inf, _alike(a, b, gap))]      # parallel, side by side
+        near = [_across(a, b) for b in placed.values() if _along(a, a, b, math.inf, gap)]     # side by side
         # the least move that clears them all: none, or just `gap` to either side of one
         shifts = sorted({0.0, *(s + d for s in near for d in (gap, -gap))}, key=lambda s: (abs(s), -s))
         moved = a
         for shift in shifts:
             moved = _shifted(a, shift)
-            if not any(_overlap(moved, b, gap, _alike(a, b, gap)) for b in placed.values()):
+            if not any(_along(moved, a, b, gap, gap) for b in placed.values()):
                 break
         placed[i] = moved
         if moved.start != a.start:
             joins += [(a.start, moved.start), (a.end, moved.end)]
     return [placed[i] for i in range(len(arrows))], joins
+
+
+def _along(moved: Arrow, a: Arrow, b: Arrow, tol: float, gap: float) -> bool:
+    """Whether term `a`, drawn at `moved`, runs along the arrow `b` closer than `tol`: `b`'s
+    ends near `moved`'s line, or, where `a` leaves or enters the blue `b` (`_alike`), also
+    `moved`'s ends near `b`'s line (a short term beside a long blue arrow)."""
+    sin = _alike(a, b, gap)
+    return _overlap(moved, b, tol, sin) or (sin == ALONG and _overlap(b, moved, tol, sin))
 
 
 def _alike(a: Arrow, b: Arrow, gap: float) -> float:
