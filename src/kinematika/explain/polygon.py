@@ -23,6 +23,7 @@ from .terms import acceleration_terms
 
 OFFSET = 0.06           # of the polygon's size: the gap between collinear arrows (a label's height at the figure's width)
 PARALLEL = 0.02         # sin of the angle under which two arrows read as parallel (about 1°)
+ALONG = 0.2             # sin of the angle (about 11°) under which a term out of (into) a blue arrow's end runs along it
 SAME = 1e-9             # relative: two points (or arrows) are one
 MAX_AT_POINT = 4        # names of one image, written as one label: every point there (C5-2.2's translating chassis: c1, c2, o′, p1)
 CROWDED = 3             # images at one point past which a polygon along one line constructs nothing a reader parses
@@ -50,7 +51,7 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     between = int(any(a.style != "result" for a in poly.arrows))
     fig = Figure(msg(key, between=between, **({} if step else lettering(ctx, [label for label, _, _ in images]))),
                  unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
-    fig.arrows = _separated(poly.arrows)
+    fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images
     fig.bar = bar_unit(ctx, poly.values, poly.syms)
     fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
@@ -142,8 +143,9 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
     styles = {a.style for a in poly.arrows}
     fig = Figure(msg("fig.polygon_v" if eq.level == "v" else "fig.polygon_a",
                      unknown=int("unknown" in styles), result=int("result" in styles)),
-                 arrows=_separated(poly.arrows), unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic,
+                 unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic,
                  values=ctx.drawn_values())
+    fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
     fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
     fig.bar = bar_unit(ctx, poly.values, poly.syms)
@@ -383,30 +385,62 @@ def _letter(label: str, taken: frozenset[str] = frozenset()) -> str:
     return letter + (f"∈{body}" if body else "")
 
 
-def _separated(arrows: list[Arrow]) -> list[Arrow]:
+def _separated(arrows: list[Arrow]) -> tuple[list[Arrow], list[tuple[tuple, tuple]]]:
     """Arrows moved across their line, in turn, while one runs along one already placed closer
     than the gap (`_overlap`): collinear terms side by side, and a term that runs a hair's
     breadth beside another (C5-E.4's blue a_P beside a_PU^n, 0.5 apart on a polygon 16 long)
     moved off it too, each to its own side, so that no arrow reads as drawn over another
-    (issue 30, twenty-fourth round (g)). The absolute motions (blue) are placed first: each
-    ends at the image it letters, and the terms between images move aside from them."""
+    (issue 30, twenty-fourth round (g)).
+
+    An absolute motion (blue) never moves: it runs from the pole to the image it letters, as
+    the caption says ("each absolute velocity ends at its image"; the twenty-fourth round's
+    blue arrows moved aside ended beside their dots: C5-2.2, C5-E.1's o′ a dot no arrow
+    reached; twenty-fifth round (c)). Only terms (black) move aside, and a term moved keeps
+    its ends joined to the points it runs between: the second list, thin lines from each
+    moved end back to where it was (an image, or the tip of the term before it)."""
     pts = [p for a in arrows for p in (a.start, a.end)]
     size = max(*(abs(p[0]) for p in pts), *(abs(p[1]) for p in pts), 1e-300)
     gap = OFFSET * size
     placed: dict[int, Arrow] = {}
+    joins: list[tuple[tuple, tuple]] = []
     order = sorted(range(len(arrows)), key=lambda i: arrows[i].style != "result")
     for i in order:
         a = arrows[i]
-        near = [_across(a, b) for b in placed.values() if _overlap(a, b, math.inf)]     # parallel, side by side
+        if a.style == "result" and any(b.style == "result" for b in arrows):
+            placed[i] = a                       # blue: from the pole to its image, where it is
+            continue
+        near = [_across(a, b) for b in placed.values() if _along(a, a, b, math.inf, gap)]     # side by side
         # the least move that clears them all: none, or just `gap` to either side of one
         shifts = sorted({0.0, *(s + d for s in near for d in (gap, -gap))}, key=lambda s: (abs(s), -s))
         moved = a
         for shift in shifts:
             moved = _shifted(a, shift)
-            if not any(_overlap(moved, b, gap) for b in placed.values()):
+            if not any(_along(moved, a, b, gap, gap) for b in placed.values()):
                 break
         placed[i] = moved
-    return [placed[i] for i in range(len(arrows))]
+        if moved.start != a.start:
+            joins += [(a.start, moved.start), (a.end, moved.end)]
+    return [placed[i] for i in range(len(arrows))], joins
+
+
+def _along(moved: Arrow, a: Arrow, b: Arrow, tol: float, gap: float) -> bool:
+    """Whether term `a`, drawn at `moved`, runs along the arrow `b` closer than `tol`: `b`'s
+    ends near `moved`'s line, or, where `a` leaves or enters the blue `b` (`_alike`), also
+    `moved`'s ends near `b`'s line (a short term beside a long blue arrow)."""
+    sin = _alike(a, b, gap)
+    return _overlap(moved, b, tol, sin) or (sin == ALONG and _overlap(b, moved, tol, sin))
+
+
+def _alike(a: Arrow, b: Arrow, gap: float) -> float:
+    """The angle (its sine) under which term `a`, within a gap of the arrow `b` placed
+    before it, reads as drawn over it: `ALONG` (about 11°) when `b` is blue and `a` leaves
+    its start (the pole) or ends at its end (its image), since two arrows out of (into) one
+    point that close read as one and their heads pile up (001's a_EO2^n out of o, 4.6° off
+    the blue o→e; a_BE^t into b beside o→b; twenty-fifth round (c)); `PARALLEL` else."""
+    if b.style == "result" and a.style != "result" and (
+            math.dist(a.start, b.start) <= 1e-9 * gap or math.dist(a.end, b.end) <= 1e-9 * gap):
+        return ALONG
+    return PARALLEL
 
 
 def _across(a: Arrow, b: Arrow) -> float:
@@ -424,13 +458,15 @@ def _shifted(a: Arrow, d: float) -> Arrow:
     return Arrow((a.start[0] + ox, a.start[1] + oy), (a.end[0] + ox, a.end[1] + oy), a.label, a.style)
 
 
-def _overlap(a: Arrow, b: Arrow, tol: float) -> bool:
-    """Whether two arrows run along one another: parallel (within `PARALLEL`), both ends of
-    `b` closer than `tol` to the line of `a`, and their extents overlapping."""
+def _overlap(a: Arrow, b: Arrow, tol: float, sin: float = PARALLEL) -> bool:
+    """Whether two arrows run along one another: both ends of `b` closer than `tol` to the
+    line of `a`, their extents overlapping, and their directions within `sin` of each
+    other (parallel: `PARALLEL`; a term out of the pole or into an image beside a blue
+    arrow: `ALONG`, see `_alike`)."""
     ux, uy = a.end[0] - a.start[0], a.end[1] - a.start[1]
     vx, vy = b.end[0] - b.start[0], b.end[1] - b.start[1]
     la, lb = math.hypot(ux, uy), math.hypot(vx, vy)
-    if la == 0 or lb == 0 or abs(ux * vy - uy * vx) > PARALLEL * la * lb:
+    if la == 0 or lb == 0 or abs(ux * vy - uy * vx) > sin * la * lb:
         return False
     wx, wy = b.start[0] - a.start[0], b.start[1] - a.start[1]
     ex, ey = b.end[0] - a.start[0], b.end[1] - a.start[1]

@@ -182,7 +182,10 @@ def _place(lay: Layout, items: list) -> list[Placed]:
         board.avoid(*ring, weight=1.0)
     for _, p, _ in fig.points:
         board.avoid(data(p), weight=3.0, radius=3.0)
-    board.avoid((MARGIN, BAR - 8), (MARGIN + 150, BAR - 8), weight=3.0)      # the scale bar
+    # the scale bar's row, its text included, across the figure: a label there read as the
+    # bar's (C5-1.1's "k∈polea, …" beside "v/5"; twenty-fifth round (c))
+    board.avoid((MARGIN, BAR), (WIDTH - MARGIN, BAR), (WIDTH - MARGIN, BAR - 8), (MARGIN, BAR - 8),
+                (MARGIN, 10), (WIDTH - MARGIN, 10), weight=3.0)
     placed = board.layout(ax)
     out = []
     by_gid = {str(i): item for i, item in enumerate(items)}
