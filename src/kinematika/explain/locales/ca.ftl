@@ -346,6 +346,8 @@ heading-left = cap a l’esquerra
 heading-up = cap amunt
 heading-down = cap avall
 heading-along = segons { $along }
+readoff-along_x = segons x:
+readoff-along_y = segons y:
 input-revolute = { $body } { COUNT($body) ->
         [many] giren
        *[one] gira

@@ -274,6 +274,8 @@ heading-left = to the left
 heading-up = upwards
 heading-down = downwards
 heading-along = along { $along }
+readoff-along_x = along x:
+readoff-along_y = along y:
 input-revolute = { $body } { COUNT($body) ->
         [many] turn
        *[one] turns

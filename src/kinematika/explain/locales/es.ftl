@@ -268,6 +268,8 @@ heading-left = hacia la izquierda
 heading-up = hacia arriba
 heading-down = hacia abajo
 heading-along = según { $along }
+readoff-along_x = según x:
+readoff-along_y = según y:
 input-revolute = { $body } { COUNT($body) ->
         [many] giran
        *[one] gira
