@@ -343,7 +343,7 @@ def read_along(ctx: "Ctx", term: Sym, length: Any, rate: Sym, arm: Optional[tupl
         sign, part = parts[axis][0], sympy.simplify(parts[axis][1])
         value = Value(part, "len")
         factor = [value] if part.is_Symbol else ["(", value, ")"]
-    return [Msg(f"readoff.along_{axis}", {}), " ", term, " = ", "−" if sign < 0 else "", rate, "·", *factor, " ⇒ "]
+    return [Msg("readoff.along_x" if axis == "x" else "readoff.along_y", {}), " ", term, " = ", "−" if sign < 0 else "", rate, "·", *factor, " ⇒ "]
 
 
 def _sign(ctx: "Ctx", value: Any) -> int:
