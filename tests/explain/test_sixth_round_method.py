@@ -52,7 +52,8 @@ def test_a_rolling_centre_alone_is_alpha_times_its_radius(name):
 def test_the_bicycle_rear_hub_by_hand():
     """C5-E.6: H at height R_roda over the contact G, a_H = (v̇; 0) (the datum). a_H = α × GH
     with GH = (0; R_roda): α k × (0, R_roda) = (−α·R_roda; 0) = (v̇; 0), so α_rear = −v̇/R_roda;
-    the page writes "a_H = α_{atzeko gurpila} × G…H" and α = −|a_H| / GH."""
+    the page writes "a_H = α_{atzeko gurpila} × G…H" and α from its x component (twenty-fifth
+    round d): "x norabidean: a_H = −α·GH ⇒ α = −v̇/R_gurpila"."""
     _, doc = explained("seed_c5_e6_bicycle")
     eq = next(e for e in _blocks(_section(doc, "sec.accelerations"))
               if isinstance(e, Equation) and e.target.sym.sub == "H" and len(e.sides[0]) == 1)
@@ -65,7 +66,7 @@ def test_the_bicycle_rear_hub_by_hand():
     assert sympy.simplify(alpha + vd / r) == 0
     page = rendered("seed_c5_e6_bicycle", "eu", drawings=False)
     assert re.search(r"^a_H\s+=\s+α_\{atzeko gurpila\} × G-?H\s*$", page, re.M)
-    assert re.search(r"α_\{atzeko gurpila\} = −\|a_H\| / G-?H", page)
+    assert re.search(r"x norabidean: a_H = −α_\{atzeko gurpila\}·G-?H ⇒ α_\{atzeko gurpila\} = −v̇/R_gurpila", page)
 
 
 # -- 001's rolling pair: the contact section refers to what step 3 wrote ----------------------------------------------
@@ -126,7 +127,8 @@ def test_the_precession_is_tied_to_the_chassis_rate():
     """C5-2.1 by hand: the chassis turns about I = (0; L) (the rear axle's line meets the
     normal to v_F at F = (L; 0), v_F at 45°); |v_F| = v₀, IF = √2·L, so ψ̇ = v₀/(√2·L) =
     √2·v₀/(2·L). The notes call the chassis' rate the precession ψ̇: the page finds it as
-    "ψ̇ = ω_txasisa = |v_{FI_{txasisa}}| / I_{txasisa}F = √2·v₀/(2·L)" and writes ψ̇ after; a datum's rate (the
+    "x norabidean: v_{F,I_txasisa} = ψ̇·L ⇒ ψ̇ = ω_txasisa = √2·v₀/(2·L)" (from the term's x
+    component, twenty-fifth round (d): I_txasisa F = (L; −L)) and writes ψ̇ after; a datum's rate (the
     fan's ω₁) is not written twice."""
     sol, doc = explained("seed_c5_2_1_tricycle")
     w = next(d for d in doc.derived() if d.body == "chassis" and d.kind == "omega").value.value
@@ -135,7 +137,7 @@ def test_the_precession_is_tied_to_the_chassis_rate():
     for lang, name in (("eu", "txasisa"), ("ca", "xassís")):
         page = rendered("seed_c5_2_1_tricycle", lang, drawings=False)
         # the centre in full in the subscript (seventeenth round (a)), the notes' v_{F,I_b} (sixteenth round (g))
-        assert re.search(rf"^ψ̇ = ω_{name} = \|v_\{{F,I_{name}\}}\| / I_\{{{name}\}}F = √2·v₀/\(2·L\)", page, re.M), lang
+        assert re.search(rf": v_\{{F,I_{name}\}} = ψ̇·L ⇒ ψ̇ = ω_{name} = √2·v₀/\(2·L\)$", page, re.M), lang
         assert f"ω_{name} ×" not in page
     fan = rendered("fan_absolute", "eu", drawings=False)
     assert "ω_1 = ω_" not in fan

@@ -92,8 +92,8 @@ def test_d_the_wheels_are_steps_of_their_own() -> None:
     and a_F written in the frame's step; v_Q = v_{I_OQ} + v_{Q,I_OQ} in Step 1 of C5-1.2."""
     parts = _parts("seed_c5_e6_bicycle", "en")
     assert "4. The *front wheel*, from the *ground* and the *frame*." in parts["sec.structure"]
-    for level, line in (("sec.velocities", "ω_{front wheel} = −|v_F| / R_wheel = −v/R_wheel"),
-                        ("sec.accelerations", "α_{front wheel} = −|a_F| / R_wheel = −v̇/R_wheel")):
+    for level, line in (("sec.velocities", "along x: v_F = −ω_{front wheel}·R_wheel ⇒ ω_{front wheel} = −v/R_wheel"),
+                        ("sec.accelerations", "along x: a_F = −α_{front wheel}·R_wheel ⇒ α_{front wheel} = −v̇/R_wheel")):
         step = parts[level].split("### Step 4: the *front wheel*\n")[1]
         assert line in step, level
         assert ("v_F = v_H" if level == "sec.velocities" else "a_F = a_H") in parts[level].split("### Step 2")[0]

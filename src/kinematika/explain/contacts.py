@@ -23,7 +23,7 @@ from typing import Any, Optional
 
 from ..algebra.vectors import add, scale, sub
 from .asked import worked
-from .context import Ctx, composed, omega_sym, read_off, segment
+from .context import Ctx, composed, omega_sym, read_along, read_off, segment
 from .document import (Ann, Derived, Equation, Msg, Name, Section, Sym, Term, Value, geometric_name, joint as joint_name,
                        msg)
 from .kinds import rolls
@@ -158,11 +158,12 @@ class Bar:
             out.append(Equation(end, [[start] + turn], level, figure=False))
             sym = self.sym if level == "v" else self.alpha_sym
             value = self.omega if level == "v" else self.alpha
-            out.append(Derived(sym, read_off(ctx, turn[-1].sym, segment(self.c1, self.c2), value),
+            lead = read_along(ctx, turn[-1].sym, segment(self.c1, self.c2), sym, ctx.r(self.c1, self.c2))
+            out.append(Derived(sym, [] if lead else read_off(ctx, turn[-1].sym, segment(self.c1, self.c2), value),
                                Value(ctx.clean(value, "rate" if level == "v" else "rate2"),
                                      "rate" if level == "v" else "rate2"),
                                "", "omega" if level == "v" else "alpha", not ctx.symbolic, turn[-1],
-                               ctx.clean(ctx.r(self.c1, self.c2), "len")))
+                               ctx.clean(ctx.r(self.c1, self.c2), "len"), lead=lead))
         elif self.c2 is None and level == "v":
             out.append(msg("geom.foot", geom=geometric_point(self.name), centre=Name(self.c1),
                            line=Name(self.line_body(), "body"), radius=Name(segment(self.c1, self.name)),

@@ -14,7 +14,7 @@ from ..algebra.vectors import sub
 from ..model.model import PointRef
 from ..report.values import number
 from ..solution import ZERO, Solution
-from .document import Sym, Value
+from .document import Msg, Sym, Value
 
 
 class Ctx:
@@ -311,6 +311,39 @@ def read_off(ctx: "Ctx", term: Sym, length: Any, value: Any) -> list:
     never a vector divided by a vector (v_{O-I17} / I17-O)."""
     sign = _sign(ctx, value)
     return (["−"] if sign < 0 else []) + ["|", term, "| / ", length]
+
+
+def read_along(ctx: "Ctx", term: Sym, length: Any, rate: Sym, arm: Optional[tuple]) -> Optional[list]:
+    """How a rate is read off its term on a symbolic page: from one component of the term,
+    "along x: a_H = −α·GH ⇒ " (written before the rate, `Derived.lead`), never from a
+    magnitude, −|a_H| / GH, which holds only for the sense the figure shows when the data are
+    symbols of any value (issue 30, twenty-fifth round d). With the term = rate k × arm and
+    arm = (x, y), the term's x component is −rate·y and its y component rate·x: an arm along
+    an axis is written by its segment (GH), an oblique one by the component that multiplies
+    the rate, the simpler of the two, in brackets unless one symbol (along y: v_NP =
+    −ω·(R/2)). None on a numeric page (a known number's magnitude is its value, `read_off`)
+    and in 3D."""
+    if not ctx.symbolic or arm is None or len(arm) != 2:
+        return None
+    try:
+        x, y = (float(c) for c in ctx.num(tuple(arm)))
+    except (TypeError, ValueError):
+        return None
+    size = (x * x + y * y) ** 0.5
+    if size == 0:
+        return None
+    if abs(x) <= 1e-9 * size or abs(y) <= 1e-9 * size:
+        axis, sign = ("x", -1 if y > 0 else 1) if abs(x) <= 1e-9 * size else ("y", 1 if x > 0 else -1)
+        factor: list = [length]
+    else:
+        import sympy
+
+        parts = {"x": (-1 if y > 0 else 1, abs(sympy.sympify(arm[1]))), "y": (1 if x > 0 else -1, abs(sympy.sympify(arm[0])))}
+        axis = min(parts, key=lambda k: (sympy.count_ops(parts[k][1]), k))
+        sign, part = parts[axis][0], sympy.simplify(parts[axis][1])
+        value = Value(part, "len")
+        factor = [value] if part.is_Symbol else ["(", value, ")"]
+    return [Msg("readoff.along_x" if axis == "x" else "readoff.along_y", {}), " ", term, " = ", "−" if sign < 0 else "", rate, "·", *factor, " ⇒ "]
 
 
 def _sign(ctx: "Ctx", value: Any) -> int:

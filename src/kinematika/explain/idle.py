@@ -23,7 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Optional
 
-from .context import Ctx, alpha_sym, omega_sym, radius_formula, read_off, segment
+from .context import Ctx, alpha_sym, omega_sym, radius_formula, read_along, read_off, segment
 from .document import Derived, Name, Names, Sym, Value, centre_point, msg
 from .kinds import rolls
 
@@ -91,16 +91,20 @@ def _rolling(ctx: Ctx, b: str, worked: list[str], accel: bool,
         said = msg("idle.rolling", body=Name(b, "body"), fixed=Name(other, "body"), point=Name(ctx.contact(j)))
         out: list = _centre_motion(ctx, carrier, name, "v", written)
         out.append(said)
-        out.append(Derived(omega_sym(b), read_off(ctx, Sym("v", name), r, ctx.omega(b)),
-                           ctx.value(ctx.omega(b), "rate"), b, "omega", not ctx.symbolic))
+        arm = ctx.r(ctx.contact(j), name)         # from the contact, the instant centre, to O
+        lead = read_along(ctx, Sym("v", name), r, omega_sym(b), arm)
+        out.append(Derived(omega_sym(b), [] if lead else read_off(ctx, Sym("v", name), r, ctx.omega(b)),
+                           ctx.value(ctx.omega(b), "rate"), b, "omega", not ctx.symbolic, lead=lead))
         acc: list = []
         if accel:
             acc += _centre_motion(ctx, carrier, name, "a", written)
             acc.append(msg("idle.rolling", body=Name(b, "body"), fixed=Name(other, "body"),
                            point=Name(ctx.contact(j))))
             straight = _straight(ctx, carrier, name)
-            acc.append(Derived(alpha_sym(b), read_off(ctx, Sym("a", name, "" if straight else "t"), r, ctx.alpha(b)),
-                               ctx.value(ctx.alpha(b), "rate2"), b, "alpha", not ctx.symbolic))
+            term = Sym("a", name, "" if straight else "t")
+            lead = read_along(ctx, term, r, alpha_sym(b), arm)
+            acc.append(Derived(alpha_sym(b), [] if lead else read_off(ctx, term, r, ctx.alpha(b)),
+                               ctx.value(ctx.alpha(b), "rate2"), b, "alpha", not ctx.symbolic, lead=lead))
         return IdleStep(b, out, acc, [other] + ([carrier] if carrier and carrier != other else []), name)
     return None
 

@@ -12,7 +12,7 @@ from typing import Optional
 
 from ..model.model import Joint
 from ..point_pair import PointPair
-from .context import Ctx, alpha_sym, omega_sym, read_off, segment, split_pair
+from .context import Ctx, alpha_sym, omega_sym, read_along, read_off, segment, split_pair
 from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, point
 from .group import centre_site, group_blocks, still_contact
 from .said_first import conditions_first
@@ -341,9 +341,10 @@ class PlanarSteps:
             sym, value = omega_sym(body), ctx.omega(body)
         else:
             sym, value = alpha_sym(body), ctx.alpha(body)
-        return Derived(sym, read_off(ctx, term.sym, seg, value), ctx.value(value, LEVEL_UNIT[self.level]), body,
-                       "omega" if self.level == "v" else "alpha", not ctx.symbolic, term,
-                       ctx.clean(ctx.r(q, p), "len"))
+        lead = read_along(ctx, term.sym, seg, sym, ctx.r(q, p))
+        return Derived(sym, [] if lead else read_off(ctx, term.sym, seg, value), ctx.value(value, LEVEL_UNIT[self.level]),
+                       body, "omega" if self.level == "v" else "alpha", not ctx.symbolic, term,
+                       ctx.clean(ctx.r(q, p), "len"), lead=lead)
 
     def same(self, body: str, other: str, j: Joint) -> Derived:
         """Bodies joined by a prismatic pair share ω and α."""

@@ -18,7 +18,7 @@ import math
 from typing import Any, Sequence
 
 from .context import Ctx
-from .document import Arrow, Described, Equation, Figure, Inline, Name, Names, msg
+from .document import CENTRE_POINT_RE, Arrow, Described, Equation, Figure, Inline, Lead, Name, Names, msg
 from .terms import acceleration_terms
 
 OFFSET = 0.06           # of the polygon's size: the gap between collinear arrows (a label's height at the figure's width)
@@ -156,17 +156,46 @@ def at_pole_notes(poly: "_Builder") -> list:
     """The caption's word on the images that fall on the pole, which the figure cannot letter
     apart from o: "a is at o, since a_A = 0" (001's rolling pair, A the fixed point of the
     ground: its acceleration is zero and its image a is the pole). Said of every image a
-    term of the polygon's equations names there, at either level (issue 30, twentieth round (c))."""
+    term of the polygon's equations names there, at either level (issue 30, twentieth round (c)),
+    an instant centre's too ("… and the image of the instant centre I_rod", C5-E.3's v_{I_rod}
+    = 0: a caption that says which images are at the pole names them all, twenty-fifth round d)."""
     zero = sorted((name, sym) for name, (xy, sym) in poly.named.items() if poly.at_pole(xy))
-    if not zero:
+    centres = sorted(poly.centres.items())
+    # o′ last: its apposition ends in a comma ("o′, the image of O, is at …"), never one
+    # before the list's own (", and")
+    lettered = [z for z in zero if z[0] != "o′"]
+    prime = [z for z in zero if z[0] == "o′"]
+    if not zero and not centres:
         return []
-    names = [name for name, _ in zero]
     equal: list = []
-    for _, sym in zero:
+    for _, sym in lettered + centres + prime:
         equal += [sym, " = "]
+    items: list = [Name(n) for n, _ in lettered]
+    if centres:
+        said = msg("fig.centre_image", centre=Names([Name(t) for t, _ in centres]), count=len(centres))
+        items.append(said if items else Lead(said))        # a sentence's first word, capitalised
     # o′ says whose image it is where it is said (`pole_notes`): "o′, the image of O, is at …"
-    items = [msg("fig.o_prime_named") if n == "o′" else Name(n) for n in names]
-    return [msg("fig.at_pole", images=Names(items), count=len(names), zero=Inline(equal + ["0"]))]
+    items += [_o_prime(poly) for _ in prime]
+    count = len(lettered) + len(centres) + len(prime)
+    return [msg("fig.at_pole", images=Names(items), count=count, zero=Inline(equal + ["0"]))]
+
+
+def _o_prime(poly: "_Builder") -> Any:
+    """How the caption names o′ at the pole: "o′, the image of O,", and where another body's
+    point at O has an image of its own (C5-E.1's o′∈wheels, which moves), the O it means:
+    the fixed pivot O of the moving body pinned there to a body that does not move ("o′, the
+    image of the fixed point O of the arm OC,"; twenty-fifth round d)."""
+    ctx = poly.ctx
+    others = [n for n in poly.images if n.startswith("o′∈")]
+    sym = poly.named["o′"][1]
+    point = str(sym.sub)
+    carriers = ctx.model.carriers(point)
+    if not others or not any(ctx.fixed(b) for b in carriers):
+        return msg("fig.o_prime_named")
+    moving = [b for b in carriers if not ctx.fixed(b) and ctx.point_label(point, b) == point]
+    if not moving:
+        return msg("fig.o_prime_named")
+    return msg("fig.o_prime_fixed", body=Name(moving[0], "body"))
 
 
 def _at_pole(poly: "_Builder") -> set:
@@ -256,6 +285,7 @@ class _Builder:
         self.values: list = []              # the absolute motions drawn (blue), as the solver gives them
         self.syms: list = []                # the symbol of each of `values` (a_P)
         self.named: dict[str, tuple] = {}   # image -> (its place, the symbol of the motion ending there)
+        self.centres: dict[str, Any] = {}   # an instant centre's point at rest (v_{I_rod}) -> its symbol
 
     def at_pole(self, xy: tuple) -> bool:
         return math.hypot(*xy) <= SAME * self._scale()
@@ -335,7 +365,12 @@ class _Builder:
             self._arrow(Arrow(origin, end, eq.target.sym, "result"), label=self.single)
 
     def _named(self, sym: Any, xy: tuple) -> None:
-        """The image of the point `sym` (v_A, a_A) names, with its place and that symbol."""
+        """The image of the point `sym` (v_A, a_A) names, with its place and that symbol; an
+        instant centre placed as a point (v_{I_rod}, no letter of its own) is kept apart, by
+        its token, for the caption (`at_pole_notes`)."""
+        if CENTRE_POINT_RE.fullmatch(str(sym.sub)):
+            self.centres.setdefault(str(sym.sub), sym)
+            return
         name = _letter(sym.sub, page_letters(self.ctx))
         if name and name not in self.named:
             self.named[name] = (xy, sym)

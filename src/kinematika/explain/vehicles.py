@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Optional
 
-from .context import Ctx, omega_sym, read_off, segment
+from .context import Ctx, omega_sym, read_along, read_off, segment
 from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, centre_point, msg
 from .given import whole_along
 from .kinds import knife_edge, pin_only, pins
@@ -358,8 +358,9 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
         target = Term(Sym("v", ctx.point_label(p, b)), value, Ann("M"), Ann("D"), kind="point")
         out.append(Equation(target, [[rest, term]], "v", ctx.ref(p, b), figure=False))
         if k == 0:
-            out.append(Derived(w, read_off(ctx, rel, arm, ctx.omega(b)), ctx.value(ctx.omega(b), "rate"), b,
-                               "omega", not ctx.symbolic, term, ctx.clean(_arm(ctx, b, p), "len")))
+            lead = read_along(ctx, rel, arm, w, _arm(ctx, b, p))
+            out.append(Derived(w, [] if lead else read_off(ctx, rel, arm, ctx.omega(b)), ctx.value(ctx.omega(b), "rate"),
+                               b, "omega", not ctx.symbolic, term, ctx.clean(_arm(ctx, b, p), "len"), lead=lead))
     return out
 
 

@@ -193,6 +193,11 @@ fig-at_pole = { $count ->
 }
 fig-o_prime = La imatge d’O es designa o′, perquè la lletra o designa el pol.
 fig-o_prime_named = o′, la imatge d’O,
+fig-o_prime_fixed = o′, la imatge del punt fix O de { $body },
+fig-centre_image = { $count ->
+    [one] la imatge del CIR { $centre }
+   *[other] les imatges dels CIR { $centre }
+}
 fig-primed = La imatge del punt { $point } és { $image } ({ $symbol }: { $what }).
 fig-a_symbol = una dada
 fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
@@ -346,6 +351,8 @@ heading-left = cap a l’esquerra
 heading-up = cap amunt
 heading-down = cap avall
 heading-along = segons { $along }
+readoff-along_x = segons x:
+readoff-along_y = segons y:
 input-revolute = { $body } { COUNT($body) ->
         [many] giren
        *[one] gira

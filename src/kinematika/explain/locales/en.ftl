@@ -154,6 +154,11 @@ fig-at_pole = { $count ->
 }
 fig-o_prime = The image of O is lettered o′, because the letter o names the pole.
 fig-o_prime_named = o′, the image of O,
+fig-o_prime_fixed = o′, the image of the fixed point O of { $body },
+fig-centre_image = { $count ->
+    [one] the image of the instant centre { $centre }
+   *[other] the images of the instant centres { $centre }
+}
 fig-primed = The image of the point { $point } is { $image } ({ $symbol } is the { $what }).
 fig-a_symbol = symbol of a datum
 fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
@@ -274,6 +279,8 @@ heading-left = to the left
 heading-up = upwards
 heading-down = downwards
 heading-along = along { $along }
+readoff-along_x = along x:
+readoff-along_y = along y:
 input-revolute = { $body } { COUNT($body) ->
         [many] turn
        *[one] turns

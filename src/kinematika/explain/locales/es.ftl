@@ -160,6 +160,11 @@ fig-at_pole = { $count ->
 }
 fig-o_prime = La imagen de O se designa o′, porque la letra o designa el polo.
 fig-o_prime_named = o′, la imagen de O,
+fig-o_prime_fixed = o′, la imagen del punto fijo O de { $body },
+fig-centre_image = { $count ->
+    [one] la imagen del CIR { $centre }
+   *[other] las imágenes de los CIR { $centre }
+}
 fig-primed = La imagen del punto { $point } es { $image } ({ $symbol }: { $what }).
 fig-a_symbol = un dato
 fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
@@ -268,6 +273,8 @@ heading-left = hacia la izquierda
 heading-up = hacia arriba
 heading-down = hacia abajo
 heading-along = según { $along }
+readoff-along_x = según x:
+readoff-along_y = según y:
 input-revolute = { $body } { COUNT($body) ->
         [many] giran
        *[one] gira

@@ -154,6 +154,11 @@ fig-at_pole = { $count ->
 }
 fig-o_prime = O puntuaren irudia o′ izendatzen da, o letrak poloa izendatzen baitu.
 fig-o_prime_named = o′, O-ren irudia,
+fig-o_prime_fixed = o′, { $body } solidoaren O puntu finkoaren irudia,
+fig-centre_image = { $count ->
+    [one] { $centre } zentroaren irudia
+   *[other] { $centre } zentroen irudiak
+}
 fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
 fig-a_symbol = datu baten ikurra
 fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
@@ -259,6 +264,8 @@ heading-left = ezkerrerantz
 heading-up = gorantz
 heading-down = beherantz
 heading-along = { $along } norabidean
+readoff-along_x = x norabidean:
+readoff-along_y = y norabidean:
 input-revolute = { $body } { $point } puntu finkoaren inguruan biratzen da: haren puntuek { $point } zentrodun zirkunferentziak deskribatzen dituzte.
 input-prismatic = { $body } biratu gabe traslatzen da bere gidan zehar.
 other-intro = Solido hauek batera aurkitzen dira beren loturen baldintzetatik:

@@ -938,7 +938,7 @@ class Renderer(ABC):
         A rate the model's notation writes otherwise is tied to its body where it is found:
         the notes' precession, ψ̇ = ω_txasisa = |v_FI| / IF = √2·v₀/(2·L)."""
         parts = [(self.inline(d.lead) if d.lead else "") + self.sym(d.sym)]
-        if d.how and self.noted(d.sym) is not d.sym and d.sym.base in ("ω", "α"):
+        if (d.how or d.lead) and self.noted(d.sym) is not d.sym and d.sym.base in ("ω", "α"):
             parts.append(self.symbol(d.sym))     # the notes' symbol tied to the body's: ψ̇ = ω_txasisa = …
         if d.how:
             parts.append(self.inline(d.how))
