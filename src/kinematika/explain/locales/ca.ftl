@@ -58,6 +58,18 @@ structure-subscript_member = { $sym } és la velocitat del punt { ELISION($body)
         [vowel] d’{ $body }
        *[other] de { $body }
     } situat a { $point }
+structure-subscript_rel = { $sym } és { $kind ->
+        [rate2] l’acceleració angular
+        [speed] la velocitat del punt { $point }
+        [accel] l’acceleració del punt { $point }
+       *[rate] la velocitat angular
+    } { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($other) ->
+        [vowel] d’{ $other }
+       *[other] de { $other }
+    } (dos noms units per «rel», relatiu a: el primer sòlid respecte del segon)
 structure-shaped = { $body }, { $shape } de radi { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
@@ -487,6 +499,13 @@ sec-rates_summary_v = Velocitats angulars
 sec-centres = Centres instantanis de rotació (CIR)
 centres-intro = El símbol I, amb els números de dos sòlids ({ $example }: sòlids 1 i 3), designa el CIR del seu moviment relatiu: el punt on la velocitat relativa és nul·la.
 centres-intro_named = El símbol I, amb el nom d’un sòlid ({ $pair }), designa el CIR { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    }: el punt on la velocitat relativa és nul·la.
+centres-intro_named_rel = El símbol I, amb el nom d’un sòlid ({ $pair }), designa el CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     } respecte { ELISION($frame) ->

@@ -37,6 +37,12 @@ structure-subscript_drag = { $equal } is the drag { WORD($kind) ->
        *[speed] velocity
     } of { $point }
 structure-subscript_member = { $sym } is the velocity of the point of { $body } at { $point }
+structure-subscript_rel = { $sym } is the { $kind ->
+        [rate2] angular acceleration of { $body }
+        [speed] velocity of the point { $point } of { $body }
+        [accel] acceleration of the point { $point } of { $body }
+       *[rate] angular velocity of { $body }
+    } relative to { $other } (two names joined by “rel”: the first body relative to the second)
 structure-shaped = { $body }, { $shape } of radius { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
@@ -384,7 +390,8 @@ sec-rates_summary = Angular velocities and accelerations
 sec-rates_summary_v = Angular velocities
 sec-centres = Instant centres
 centres-intro = The symbol I with the numbers of two bodies ({ $example }: bodies 1 and 3) names the instant centre of their relative motion: the point where the relative velocity is zero.
-centres-intro_named = The symbol I with a body's name ({ $pair }) names the instant centre of { $body } relative to { $frame }, and with two names joined by “rel” that of the first body relative to the second: the point where the relative velocity is zero.
+centres-intro_named = The symbol I with a body's name ({ $pair }) names the instant centre of { $body } relative to { $frame }: the point where the relative velocity is zero.
+centres-intro_named_rel = The symbol I with a body's name ({ $pair }) names the instant centre of { $body } relative to { $frame }, and with two names joined by “rel” that of the first body relative to the second: the point where the relative velocity is zero.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = the pin { $joint },
 centre-joint-rolling = the contact point { $joint } (rolling without slipping),

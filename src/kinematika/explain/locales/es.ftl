@@ -37,6 +37,12 @@ structure-subscript_drag = { $equal } es la { WORD($kind) ->
        *[speed] velocidad
     } de arrastre de { $point }
 structure-subscript_member = { $sym } es la velocidad del punto de { $body } situado en { $point }
+structure-subscript_rel = { $sym } es la { $kind ->
+        [rate2] aceleración angular de { $body }
+        [speed] velocidad del punto { $point } de { $body }
+        [accel] aceleración del punto { $point } de { $body }
+       *[rate] velocidad angular de { $body }
+    } respecto de { $other } (dos nombres unidos por «rel»: el primer sólido respecto del segundo)
 structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
@@ -359,7 +365,8 @@ sec-rates_summary = Velocidades y aceleraciones angulares
 sec-rates_summary_v = Velocidades angulares
 sec-centres = Centros instantáneos de rotación (CIR)
 centres-intro = El símbolo I, con los números de dos sólidos ({ $example }: sólidos 1 y 3), designa el CIR de su movimiento relativo: el punto donde la velocidad relativa es nula.
-centres-intro_named = El símbolo I, con el nombre de un sólido ({ $pair }), designa el CIR de { $body } respecto de { $frame }, y, con dos nombres unidos por «rel», el del primero respecto del segundo: el punto donde la velocidad relativa es nula.
+centres-intro_named = El símbolo I, con el nombre de un sólido ({ $pair }), designa el CIR de { $body } respecto de { $frame }: el punto donde la velocidad relativa es nula.
+centres-intro_named_rel = El símbolo I, con el nombre de un sólido ({ $pair }), designa el CIR de { $body } respecto de { $frame }, y, con dos nombres unidos por «rel», el del primero respecto del segundo: el punto donde la velocidad relativa es nula.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = el eje de la articulación { $joint },
 centre-joint-rolling = el punto de contacto { $joint } (rodadura sin deslizamiento),

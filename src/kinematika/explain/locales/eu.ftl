@@ -37,6 +37,12 @@ structure-subscript_drag = { $equal } { $point } puntuaren arrastre-{ WORD($kind
        *[speed] abiadura
     } da
 structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuko puntuaren abiadura da
+structure-subscript_rel = { $sym } { $body } solidoaren { $kind ->
+        [rate2] azelerazio angeluarra
+        [speed] { $point } puntuaren abiadura
+        [accel] { $point } puntuaren azelerazioa
+       *[rate] abiadura angeluarra
+    } da { $other } solidoarekiko («rel» hitzaz lotutako bi izen: lehen solidoa bigarrenarekiko)
 structure-shaped = { $body }, { $radius } erradioko { $shape }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
@@ -300,7 +306,8 @@ sec-rates_summary = Abiadura eta azelerazio angeluarrak
 sec-rates_summary_v = Abiadura angeluarrak
 sec-centres = Biraketa-zentro instantaneoak
 centres-intro = I ikurrak, bi solidoren zenbakiekin ({ $example }: 1 eta 3 solidoak), haien mugimendu erlatiboaren biraketa-zentro instantaneoa adierazten du: abiadura erlatiboa nulua den puntua.
-centres-intro_named = I ikurrak, solido baten izenarekin ({ $pair }), { $body } solidoaren biraketa-zentro instantaneoa adierazten du { $frame } solidoarekiko, eta «rel» hitzaz lotutako bi izenekin, lehen solidoarena bigarrenarekiko: abiadura erlatiboa nulua den puntua.
+centres-intro_named = I ikurrak, solido baten izenarekin ({ $pair }), { $body } solidoaren biraketa-zentro instantaneoa adierazten du { $frame } solidoarekiko: abiadura erlatiboa nulua den puntua.
+centres-intro_named_rel = I ikurrak, solido baten izenarekin ({ $pair }), { $body } solidoaren biraketa-zentro instantaneoa adierazten du { $frame } solidoarekiko, eta «rel» hitzaz lotutako bi izenekin, lehen solidoarena bigarrenarekiko: abiadura erlatiboa nulua den puntua.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = { $joint } giltzaduraren ardatza,
 centre-joint-rolling = { $joint } kontaktu-puntua (irristatu gabeko errodadura),
