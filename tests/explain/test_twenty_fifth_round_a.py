@@ -44,3 +44,22 @@ def test_rel_is_said_where_written_and_before_its_first_use(name, lang):
         return
     assert told and told[0] <= first, (lines[first][:120], told)
     assert len(told) == 1, [lines[k][:80] for k in told]
+
+
+# the intrinsic derivation's opening words, each language
+WITH = {"en": "With |v_", "es": "Con |v_", "ca": "Amb |v_", "eu": "izanik, ukitzaile unitarioa"}
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_the_intrinsic_split_is_derived_before_its_bullets(name, lang):
+    """The tangential and normal acceleration are worked out (|v|, t = v/|v|, aᵗ = (a · t) t,
+    aⁿ = a − aᵗ) in one sentence ending in a colon, just before the split a = aᵗ + aⁿ and its
+    bullets, never after them (C5-1.7 read as a repetition of its bullets)."""
+    lines = [ln for ln in rendered(name, lang, drawings=False).splitlines() if ln.strip()]
+    said = [k for k, ln in enumerate(lines) if WITH[lang] in ln]
+    if name == "seed_c5_1_7_semicylinder":
+        assert said, "no derivation"
+    for k in said:
+        ln = lines[k]
+        assert ln.endswith(":") and " t = v_" in ln and "^t = (a_" in ln and " − a_" in ln, ln
+        assert lines[k + 1] == "```" and re.search(r"a_\S+ += +a_\S+\^t +\+ +a_\S+\^n", lines[k + 3]), lines[k + 1:k + 4]

@@ -593,10 +593,7 @@ curvature-centre = El centre de curvatura de la trajectòria { ELISION($point) -
         [vowel] d’{ $point }
        *[other] de { $point }
     } és a { $centre }, del costat de l’acceleració normal.
-curvature-intrinsic = L’acceleració tangencial i normal { ELISION($point) ->
-        [vowel] d’{ $point }
-       *[other] de { $point }
-    }, segons la tangent unitària de la seva trajectòria: { $speed }; { $tangent }; { $tangential }; { $normal }.
+curvature-intrinsic = Amb { $speed }, la tangent unitària és { $tangent }; { $split }, amb { $tangential }, i { $rest }, { $normal }:
 sec-answers = Respostes
 answers-none = El model no fa preguntes.
 ask-icr = CIR { ELISION($body) ->
