@@ -63,3 +63,21 @@ def test_the_intrinsic_split_is_derived_before_its_bullets(name, lang):
         ln = lines[k]
         assert ln.endswith(":") and " t = v_" in ln and "^t = (a_" in ln and " − a_" in ln, ln
         assert lines[k + 1] == "```" and re.search(r"a_\S+ += +a_\S+\^t +\+ +a_\S+\^n", lines[k + 3]), lines[k + 1:k + 4]
+
+
+# the units line, and its word for accelerations
+UNITS = {"en": ("Units:", "accelerations"), "es": ("Unidades:", "aceleraciones"),
+         "ca": ("Unitats:", "acceleracions"), "eu": ("Unitateak:", "azelerazio")}
+ACCEL = re.compile(r"\ba_|α_|m/s²")
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_the_units_line_lists_the_pages_quantities(name, lang):
+    """The units line names accelerations only on a page that writes one (C5-1.2, 2.1, 2.2
+    ask velocities alone and listed "acceleracions en m/s²")."""
+    lines = rendered(name, lang, drawings=False).splitlines()
+    units = next((ln for ln in lines if ln.startswith(UNITS[lang][0])), None)
+    if units is None:
+        return
+    rest = "\n".join(ln for ln in lines if ln is not units)
+    assert (UNITS[lang][1] in units) == bool(ACCEL.search(rest)), units

@@ -2,7 +2,10 @@
 ## arrossegament, relativa, CIR). Cal conservar els marcadors entre claus.
 
 sec-data = Dades
-data-numeric = Unitats: longituds en { $unit }, velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
+data-numeric = Unitats: longituds en { $unit }, { $accelerations ->
+        [0] velocitats en { $unit }/s i velocitats angulars en rad/s.
+       *[other] velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
+    }
 data-planar = Moviment pla: les velocitats{ $accelerations ->
         [0] {" "}angulars
        *[other] {" "}i acceleracions angulars

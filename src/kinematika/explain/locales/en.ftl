@@ -2,7 +2,10 @@
 ## renderer with symbols, values or other messages; keep them in every translation.
 
 sec-data = Data
-data-numeric = Units: lengths in { $unit }, velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
+data-numeric = Units: lengths in { $unit }, { $accelerations ->
+        [0] velocities in { $unit }/s and angular velocities in rad/s.
+       *[other] velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
+    }
 data-planar = Planar motion: angular velocities{ $accelerations ->
         [0] {""}
        *[other] {" "}and accelerations

@@ -2,7 +2,10 @@
 ## aceleración, arrastre, relativa, CIR). Conservar los marcadores entre llaves.
 
 sec-data = Datos
-data-numeric = Unidades: longitudes en { $unit }, velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
+data-numeric = Unidades: longitudes en { $unit }, { $accelerations ->
+        [0] velocidades en { $unit }/s y velocidades angulares en rad/s.
+       *[other] velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
+    }
 data-planar = Movimiento plano: las velocidades{ $accelerations ->
         [0] {" "}angulares
        *[other] {" "}y aceleraciones angulares

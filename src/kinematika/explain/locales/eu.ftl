@@ -2,7 +2,10 @@
 ## azelerazioa, arrastrea, erlatiboa). Giltza arteko markak bere horretan utzi.
 
 sec-data = Datuak
-data-numeric = Unitateak: luzerak { $unit }-tan, abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
+data-numeric = Unitateak: luzerak { $unit }-tan, { $accelerations ->
+        [0] abiadurak { $unit }/s-tan eta abiadura angeluarrak rad/s-tan.
+       *[other] abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
+    }
 data-planar = Mugimendu laua: { $accelerations ->
         [0] abiadura angeluarrek
        *[other] abiadura eta azelerazio angeluarrek
