@@ -80,7 +80,7 @@ def test_d_the_intrinsic_working_comes_before_the_answers() -> None:
     for lang in LANGS:
         parts = _parts("seed_c5_1_7_semicylinder", lang)
         working = parts["sec.curvature"]
-        for said in ("|v_P| = 2·r·ω", "t = v_P/|v_P| = (1", "a_P^t · t = 2·r·ω̇", "|a_P^n| = 4·r·ω²/3"):
+        for said in ("|v_P| = 2·r·ω", "t = v_P/|v_P| = (1", "a_P · t = 2·r·ω̇", "|a_P^n| = 4·r·ω²/3"):
             assert said in working, (lang, said)
         row = next(ln for ln in parts["sec.answers"].splitlines() if "a_P^t" in ln)
         assert row.endswith(want[lang]) and row.count(" = ") == 2, (lang, row)

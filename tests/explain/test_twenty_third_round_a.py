@@ -61,7 +61,9 @@ def test_the_unit_tangent_is_the_velocitys_unit_vector(name: str, lang: str) -> 
     no working)."""
     md = rendered(name, lang)
     # the working stands before the answers since the twenty-fourth round (d): "|v_P| = …; t = …"
-    for m in re.finditer(r"\|(v_\S+?)\| = [^;]*; t = ([^;]*);", md):
+    # the derivation before the split since the twenty-fifth round (a): "With |v_P| = …, the
+    # unit tangent is t = …;" (each language's words between the speed and t)
+    for m in re.finditer(r"\|(v_\S+?)\| = [^;,]*,[^;]*?\bt = ([^;]*?)(?: da)?;", md):
         v = m.group(1)
         assert m.group(2).startswith(f"{v}/|{v}| = ("), m.group(0)
 
@@ -70,7 +72,9 @@ def test_the_unit_tangent_is_written_on_the_semicylinders_page() -> None:
     """The rule above reads C5-1.7's working in every language (it would pass on a page that
     lost it): there, |v_P| = 2·r·ω and t = v_P/|v_P| = (1, 0)."""
     for lang in LANGS:
-        assert "|v_P| = 2·r·ω; t = v_P/|v_P| = (1" in rendered("seed_c5_1_7_semicylinder", lang), lang
+        md = rendered("seed_c5_1_7_semicylinder", lang)
+        assert "|v_P| = 2·r·ω" in md and " t = v_P/|v_P| = (1" in md, lang
+        assert len(re.findall(r"\|(v_\S+?)\| = [^;,]*,[^;]*?\bt = ([^;]*?)(?: da)?;", md)) == 1, lang
 
 
 # each catalogue's word for a contact point in the fixed body's row

@@ -166,16 +166,20 @@ def curvature_section(ctx: Ctx) -> Section | None:
                    and b.relative_to == q.relative_to), None)
         lines = intrinsic_lines(ctx, q)
         if at is None:                      # no curvature asked of the point: its split first
-            sec.blocks += [b for b in curvature_steps(ctx, q)
-                           if isinstance(b, Equation) or getattr(b, "key", "") == "curvature.point"] + lines
-        else:
-            sec.blocks[at + 1:at + 1] = lines
+            kept = [b for b in curvature_steps(ctx, q)
+                    if isinstance(b, Equation) or getattr(b, "key", "") == "curvature.point"]
+            first = next((k for k, b in enumerate(kept) if isinstance(b, Equation)), len(kept))
+            sec.blocks += kept[:first] + lines + kept[first:]
+        else:                               # the derivation before the split it gives
+            sec.blocks[at:at] = lines
     return sec
 
 
 def intrinsic_lines(ctx: Ctx, q) -> list:
-    """The intrinsic components of a point's acceleration, worked out from its velocity and
-    the split a = aᵗ + aⁿ: |v|, the unit tangent t = v/|v|, the signed aᵗ · t and |aⁿ|."""
+    """The intrinsic components of a point's acceleration, worked out from its velocity: |v|,
+    the unit tangent t = v/|v|, aᵗ = (a · t) t with a · t signed, and aⁿ = a − aᵗ with |aⁿ|;
+    said as the derivation it is, before the split a = aᵗ + aⁿ it gives (twenty-fifth round
+    (a): after the split's bullets it read as their repetition)."""
     result = answer(ctx.sol, q)
     if result.get("rest"):
         return []
@@ -188,7 +192,9 @@ def intrinsic_lines(ctx: Ctx, q) -> list:
     return [msg("curvature.intrinsic", point=Name(label),
                 speed=Inline(["|", v, "| = ", speed]),
                 tangent=Inline([t, " = ", v, "/|", v, "| = ", tangent]),
-                tangential=Inline([Sym("a", label, "t"), " · ", t, " = ", along]),
+                split=Inline([Sym("a", label, "t"), " = (", Sym("a", label), " · ", t, ") ", t]),
+                tangential=Inline([Sym("a", label), " · ", t, " = ", along]),
+                rest=Inline([Sym("a", label, "n"), " = ", Sym("a", label), " − ", Sym("a", label, "t")]),
                 normal=Inline(["|", Sym("a", label, "n"), "| = ", across]))]
 
 

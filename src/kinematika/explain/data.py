@@ -37,7 +37,10 @@ DRIVER_UNIT = {("omega", "v"): "rate", ("omega", "a"): "rate2", ("velocity", "v"
 def data_section(ctx: Ctx, length_unit: str, accelerations: bool) -> Section:
     """The Data section of the explanation of `ctx`'s solution."""
     sec = Section(msg("sec.data"))
-    sec.add(msg("data.symbolic" if ctx.symbolic else "data.numeric", unit=length_unit))
+    # the units of the quantities the page writes: no accelerations on a page of velocities
+    # alone (twenty-fifth round (a): C5-1.2 listed "acceleracions en m/s²")
+    sec.add(msg("data.symbolic", unit=length_unit) if ctx.symbolic
+            else msg("data.numeric", unit=length_unit, accelerations=int(accelerations)))
     # the sign convention names the rates the page uses: no angular accelerations on a page
     # that asks none (C5-2.1, 2.2: "angular velocities … are signed")
     sec.add(msg("data.planar", accelerations=int(accelerations)) if ctx.planar else msg("data.spatial"))

@@ -2,7 +2,10 @@
 ## arrossegament, relativa, CIR). Cal conservar els marcadors entre claus.
 
 sec-data = Dades
-data-numeric = Unitats: longituds en { $unit }, velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
+data-numeric = Unitats: longituds en { $unit }, { $accelerations ->
+        [0] velocitats en { $unit }/s i velocitats angulars en rad/s.
+       *[other] velocitats en { $unit }/s, acceleracions en { $unit }/s², velocitats angulars en rad/s i acceleracions angulars en rad/s².
+    }
 data-planar = Moviment pla: les velocitats{ $accelerations ->
         [0] {" "}angulars
        *[other] {" "}i acceleracions angulars
@@ -58,6 +61,18 @@ structure-subscript_member = { $sym } és la velocitat del punt { ELISION($body)
         [vowel] d’{ $body }
        *[other] de { $body }
     } situat a { $point }
+structure-subscript_rel = { $sym } és { $kind ->
+        [rate2] l’acceleració angular
+        [speed] la velocitat del punt { $point }
+        [accel] l’acceleració del punt { $point }
+       *[rate] la velocitat angular
+    } { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($other) ->
+        [vowel] d’{ $other }
+       *[other] de { $other }
+    } (dos noms units per «rel», relatiu a: el primer sòlid respecte del segon)
 structure-shaped = { $body }, { $shape } de radi { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
@@ -499,6 +514,13 @@ centres-intro_named = El símbol I, amb el nom d’un sòlid ({ $pair }), design
     } respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
+    }: el punt on la velocitat relativa és nul·la.
+centres-intro_named_rel = El símbol I, amb el nom d’un sòlid ({ $pair }), designa el CIR { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
     }, i, amb dos noms units per «rel» (relatiu a), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
@@ -581,10 +603,7 @@ curvature-centre = El centre de curvatura de la trajectòria { ELISION($point) -
         [vowel] d’{ $point }
        *[other] de { $point }
     } és a { $centre }, del costat de l’acceleració normal.
-curvature-intrinsic = L’acceleració tangencial i normal { ELISION($point) ->
-        [vowel] d’{ $point }
-       *[other] de { $point }
-    }, segons la tangent unitària de la seva trajectòria: { $speed }; { $tangent }; { $tangential }; { $normal }.
+curvature-intrinsic = Amb { $speed }, la tangent unitària és { $tangent }; { $split }, amb { $tangential }, i { $rest }, { $normal }:
 sec-answers = Respostes
 answers-none = El model no fa preguntes.
 ask-icr = CIR { ELISION($body) ->

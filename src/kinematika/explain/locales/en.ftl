@@ -2,7 +2,10 @@
 ## renderer with symbols, values or other messages; keep them in every translation.
 
 sec-data = Data
-data-numeric = Units: lengths in { $unit }, velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
+data-numeric = Units: lengths in { $unit }, { $accelerations ->
+        [0] velocities in { $unit }/s and angular velocities in rad/s.
+       *[other] velocities in { $unit }/s, accelerations in { $unit }/s², angular velocities in rad/s and angular accelerations in rad/s².
+    }
 data-planar = Planar motion: angular velocities{ $accelerations ->
         [0] {""}
        *[other] {" "}and accelerations
@@ -37,6 +40,12 @@ structure-subscript_drag = { $equal } is the drag { WORD($kind) ->
        *[speed] velocity
     } of { $point }
 structure-subscript_member = { $sym } is the velocity of the point of { $body } at { $point }
+structure-subscript_rel = { $sym } is the { $kind ->
+        [rate2] angular acceleration of { $body }
+        [speed] velocity of the point { $point } of { $body }
+        [accel] acceleration of the point { $point } of { $body }
+       *[rate] angular velocity of { $body }
+    } relative to { $other } (two names joined by “rel”: the first body relative to the second)
 structure-shaped = { $body }, { $shape } of radius { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
@@ -391,7 +400,8 @@ sec-rates_summary = Angular velocities and accelerations
 sec-rates_summary_v = Angular velocities
 sec-centres = Instant centres
 centres-intro = The symbol I with the numbers of two bodies ({ $example }: bodies 1 and 3) names the instant centre of their relative motion: the point where the relative velocity is zero.
-centres-intro_named = The symbol I with a body's name ({ $pair }) names the instant centre of { $body } relative to { $frame }, and with two names joined by “rel” that of the first body relative to the second: the point where the relative velocity is zero.
+centres-intro_named = The symbol I with a body's name ({ $pair }) names the instant centre of { $body } relative to { $frame }: the point where the relative velocity is zero.
+centres-intro_named_rel = The symbol I with a body's name ({ $pair }) names the instant centre of { $body } relative to { $frame }, and with two names joined by “rel” that of the first body relative to the second: the point where the relative velocity is zero.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = the pin { $joint },
 centre-joint-rolling = the contact point { $joint } (rolling without slipping),
@@ -440,7 +450,7 @@ curvature-straight = The normal acceleration of { $point } is zero: its path is 
 curvature-circle = Point { $point }: it keeps its distance from the fixed point { $o }, so its path is the circle of radius { $radius } about { $o }; the radius of curvature is that radius:
 curvature-circle_centre = The centre of curvature of the path of { $point } is { $o }, at { $centre }.
 curvature-centre = The centre of curvature of the path of { $point } is at { $centre }, on the side of the normal acceleration.
-curvature-intrinsic = The tangential and normal acceleration of { $point }, along the unit tangent of its path: { $speed }; { $tangent }; { $tangential }; { $normal }.
+curvature-intrinsic = With { $speed }, the unit tangent is { $tangent }; { $split }, with { $tangential }, and { $rest }, { $normal }:
 sec-answers = Answers
 answers-none = The model asks no questions.
 ask-icr = instant centre of { $body } relative to { $frame }

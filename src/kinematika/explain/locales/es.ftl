@@ -2,7 +2,10 @@
 ## aceleración, arrastre, relativa, CIR). Conservar los marcadores entre llaves.
 
 sec-data = Datos
-data-numeric = Unidades: longitudes en { $unit }, velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
+data-numeric = Unidades: longitudes en { $unit }, { $accelerations ->
+        [0] velocidades en { $unit }/s y velocidades angulares en rad/s.
+       *[other] velocidades en { $unit }/s, aceleraciones en { $unit }/s², velocidades angulares en rad/s y aceleraciones angulares en rad/s².
+    }
 data-planar = Movimiento plano: las velocidades{ $accelerations ->
         [0] {" "}angulares
        *[other] {" "}y aceleraciones angulares
@@ -37,6 +40,12 @@ structure-subscript_drag = { $equal } es la { WORD($kind) ->
        *[speed] velocidad
     } de arrastre de { $point }
 structure-subscript_member = { $sym } es la velocidad del punto de { $body } situado en { $point }
+structure-subscript_rel = { $sym } es la { $kind ->
+        [rate2] aceleración angular de { $body }
+        [speed] velocidad del punto { $point } de { $body }
+        [accel] aceleración del punto { $point } de { $body }
+       *[rate] velocidad angular de { $body }
+    } respecto de { $other } (dos nombres unidos por «rel»: el primer sólido respecto del segundo)
 structure-shaped = { $body }, { $shape } de radio { $radius }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
@@ -366,7 +375,8 @@ sec-rates_summary = Velocidades y aceleraciones angulares
 sec-rates_summary_v = Velocidades angulares
 sec-centres = Centros instantáneos de rotación (CIR)
 centres-intro = El símbolo I, con los números de dos sólidos ({ $example }: sólidos 1 y 3), designa el CIR de su movimiento relativo: el punto donde la velocidad relativa es nula.
-centres-intro_named = El símbolo I, con el nombre de un sólido ({ $pair }), designa el CIR de { $body } respecto de { $frame }, y, con dos nombres unidos por «rel», el del primero respecto del segundo: el punto donde la velocidad relativa es nula.
+centres-intro_named = El símbolo I, con el nombre de un sólido ({ $pair }), designa el CIR de { $body } respecto de { $frame }: el punto donde la velocidad relativa es nula.
+centres-intro_named_rel = El símbolo I, con el nombre de un sólido ({ $pair }), designa el CIR de { $body } respecto de { $frame }, y, con dos nombres unidos por «rel», el del primero respecto del segundo: el punto donde la velocidad relativa es nula.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = el eje de la articulación { $joint },
 centre-joint-rolling = el punto de contacto { $joint } (rodadura sin deslizamiento),
@@ -412,7 +422,7 @@ curvature-straight = La aceleración normal de { $point } es nula: su trayectori
 curvature-circle = Punto { $point }: mantiene la distancia al punto fijo { $o }, así que su trayectoria es la circunferencia de radio { $radius } centrada en { $o }; el radio de curvatura es ese radio:
 curvature-circle_centre = El centro de curvatura de la trayectoria de { $point } es { $o }, en { $centre }.
 curvature-centre = El centro de curvatura de la trayectoria de { $point } está en { $centre }, del lado de la aceleración normal.
-curvature-intrinsic = La aceleración tangencial y normal de { $point }, según la tangente unitaria de su trayectoria: { $speed }; { $tangent }; { $tangential }; { $normal }.
+curvature-intrinsic = Con { $speed }, la tangente unitaria es { $tangent }; { $split }, con { $tangential }, y { $rest }, { $normal }:
 sec-answers = Respuestas
 answers-none = El modelo no hace preguntas.
 ask-icr = CIR de { $body } respecto de { $frame }

@@ -2,7 +2,10 @@
 ## azelerazioa, arrastrea, erlatiboa). Giltza arteko markak bere horretan utzi.
 
 sec-data = Datuak
-data-numeric = Unitateak: luzerak { $unit }-tan, abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
+data-numeric = Unitateak: luzerak { $unit }-tan, { $accelerations ->
+        [0] abiadurak { $unit }/s-tan eta abiadura angeluarrak rad/s-tan.
+       *[other] abiadurak { $unit }/s-tan, azelerazioak { $unit }/s²-tan, abiadura angeluarrak rad/s-tan eta azelerazio angeluarrak rad/s²-tan.
+    }
 data-planar = Mugimendu laua: { $accelerations ->
         [0] abiadura angeluarrek
        *[other] abiadura eta azelerazio angeluarrek
@@ -37,6 +40,12 @@ structure-subscript_drag = { $equal } { $point } puntuaren arrastre-{ WORD($kind
        *[speed] abiadura
     } da
 structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuko puntuaren abiadura da
+structure-subscript_rel = { $sym } { $body } solidoaren { $kind ->
+        [rate2] azelerazio angeluarra
+        [speed] { $point } puntuaren abiadura
+        [accel] { $point } puntuaren azelerazioa
+       *[rate] abiadura angeluarra
+    } da { $other } solidoarekiko («rel» hitzaz lotutako bi izen: lehen solidoa bigarrenarekiko)
 structure-shaped = { $body }, { $radius } erradioko { $shape }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
@@ -307,7 +316,8 @@ sec-rates_summary = Abiadura eta azelerazio angeluarrak
 sec-rates_summary_v = Abiadura angeluarrak
 sec-centres = Biraketa-zentro instantaneoak
 centres-intro = I ikurrak, bi solidoren zenbakiekin ({ $example }: 1 eta 3 solidoak), haien mugimendu erlatiboaren biraketa-zentro instantaneoa adierazten du: abiadura erlatiboa nulua den puntua.
-centres-intro_named = I ikurrak, solido baten izenarekin ({ $pair }), { $body } solidoaren biraketa-zentro instantaneoa adierazten du { $frame } solidoarekiko, eta «rel» hitzaz lotutako bi izenekin, lehen solidoarena bigarrenarekiko: abiadura erlatiboa nulua den puntua.
+centres-intro_named = I ikurrak, solido baten izenarekin ({ $pair }), { $body } solidoaren biraketa-zentro instantaneoa adierazten du { $frame } solidoarekiko: abiadura erlatiboa nulua den puntua.
+centres-intro_named_rel = I ikurrak, solido baten izenarekin ({ $pair }), { $body } solidoaren biraketa-zentro instantaneoa adierazten du { $frame } solidoarekiko, eta «rel» hitzaz lotutako bi izenekin, lehen solidoarena bigarrenarekiko: abiadura erlatiboa nulua den puntua.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = { $joint } giltzaduraren ardatza,
 centre-joint-rolling = { $joint } kontaktu-puntua (irristatu gabeko errodadura),
@@ -350,7 +360,7 @@ curvature-straight = { $point } puntuaren azelerazio normala nulua da: haren ibi
 curvature-circle = { $point } puntua: { $o } puntu finkoarekiko distantzia mantentzen du; beraz, haren ibilbidea { $o } zentroko eta { $radius } erradioko zirkunferentzia da, eta kurbadura-erradioa erradio hori da:
 curvature-circle_centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $o } puntua da, { $centre } posizioan.
 curvature-centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $centre } puntuan dago, azelerazio normalaren aldean.
-curvature-intrinsic = { $point } puntuaren azelerazio tangentziala eta normala, haren ibilbidearen ukitzaile unitarioan zehar: { $speed }; { $tangent }; { $tangential }; { $normal }.
+curvature-intrinsic = { $speed } izanik, ukitzaile unitarioa { $tangent } da; { $split }, { $tangential } izanik, eta { $rest }, { $normal }:
 sec-answers = Erantzunak
 answers-none = Ereduak ez du galderarik egiten.
 ask-icr = { $body } solidoaren biraketa-zentro instantaneoa { $frame } solidoarekiko

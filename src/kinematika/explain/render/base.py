@@ -22,6 +22,7 @@ from .svg import Text, plain_text, sym_text
 
 TOKEN = "\ue000{}\ue001"
 LEGEND = "\ue002legend\ue003"        # where the legend of shortened subscripts goes (`render`)
+CENTRES_INTRO = "\ue002centres\ue003"   # where the centres' first sentence goes (`render`)
 TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
 # a symbol typed in a model's own words: one letter (with its marks: φ̇) that ends no word, an
 # underscore, then a subscript of letters and digits or one in braces (v_B, Ω_pinyó, ℜ_P,
@@ -150,6 +151,10 @@ class Renderer(ABC):
         self._member: Optional[tuple[str, str]] = None   # the first v_{J∈b} written (`subscripts`)
         self._members: dict[str, str] = {}   # each body written after ∈, at its first point (`subscripts`)
         self._legend: Optional[Msg] = None
+        self._rel: Optional[tuple[str, str, str, str]] = None   # the first symbol written with "rel" (`subscripts`)
+        self._rel_told = False               # the data's sentence on relative quantities said "rel"
+        self._rel_centres: list[Sym] = []    # instant centres written with "rel", I_{a rel b}
+        self._centres_intro: Optional[tuple[str, str]] = None
         body = [self.heading(1, self.esc(shown_lines(self.wording.title(self.lang, self.doc.title))))]
         with formula_values(self.doc.values):
             body += [self.section(s) for s in self.doc.sections]
@@ -157,6 +162,10 @@ class Renderer(ABC):
         if self._legend is not None:
             said = self.subscripts(self._legend)
             page = page.replace(LEGEND if said else LEGEND + "\n", said, 1)
+        if self._centres_intro is not None:      # a message may write a centre it then does not show
+            centres, self._rel_centres = self._rel_centres, []
+            shown = any(self.sym(c) in page for c in centres)
+            page = page.replace(CENTRES_INTRO, self._centres_intro[shown], 1)
         return self.page(page)
 
     def section(self, sec: Section) -> str:
@@ -176,6 +185,15 @@ class Renderer(ABC):
                 return self.subscripts(b)
             self._legend = b                 # said once the page's symbols are known (`render`)
             return LEGEND
+        if isinstance(b, Msg) and b.key == "centres.intro" and self.named() and hasattr(self, "_written"):
+            # the clause on two names joined by "rel" only where the page writes such a
+            # centre, I_{a rel b}: known once the page is written (twenty-fifth round (a))
+            self._centres_intro = (self.para(self.sentence(self.message(b, lead=True))),
+                                   self.para(self.sentence(self.message(Msg("centres.intro_named_rel", b.args),
+                                                                        lead=True))))
+            return CENTRES_INTRO
+        if isinstance(b, Msg) and b.key == "data.relative":
+            self._rel_told = True            # "rel" said before its first use: no legend for it
         if isinstance(b, Msg):
             return self.para(self.sentence(self.message(b, lead=True)))
         if isinstance(b, Equation) and b.equality:
@@ -638,9 +656,36 @@ class Renderer(ABC):
             said = Msg("structure.subscript_drag", {"equal": Inline([drag, " = ", seen]), "point": Name(point_, "point"),
                                                     "kind": "speed" if level == "v" else "accel"})
             items += (["; "] if items else []) + [said]
+        rel = self._rel_item()
+        if rel is not None:
+            items += (["; "] if items else []) + [rel]
         if not items:
             return ""
         return self.para(self.sentence(self.message(Msg(m.key, {"pairs": Inline(items)}), lead=True)))
+
+    def _note_rel(self, base: str, point_: str, body_: str, other: str) -> None:
+        """Note the first symbol the page writes with two bodies joined by "rel" (ω_{politja
+        fixa rel braç}, v_{E∈barra rel suport}): the notation line defines it, and with it
+        "rel", unless the data's sentence on relative quantities has (`subscripts`)."""
+        if getattr(self, "_rel", "") is None and base in ("ω", "α", "v", "a"):
+            self._rel = (base, point_, body_, other)
+
+    def _rel_item(self) -> Optional[Msg]:
+        """The notation line's definition of the first symbol written with "rel", said where
+        the page writes one and no sentence before it said what "rel" means (twenty-fifth
+        round (a): C5-1.6 wrote ω_{politja fixa rel braç} in step 2 and explained "rel" only
+        in the centres' first sentence, after it). The notation line stands under the
+        structure, before every step."""
+        rel = getattr(self, "_rel", None)
+        if rel is None or getattr(self, "_rel_told", False):
+            return None
+        base, point_, body_, other = rel
+        kind = {"ω": "rate", "α": "rate2", "v": "speed", "a": "accel"}[base]
+        sub = f"{point_}∈{body_}/{other}" if point_ else f"{body_}/{other}"
+        self._rel = ("", "", "", "")         # written once: not noted again while saying it
+        return Msg("structure.subscript_rel", {"sym": Sym(base, sub, vector=False), "kind": kind,
+                                               "point": Name(point_ or "-", "point"),
+                                               "body": Name(body_, "body"), "other": Name(other, "body")})
 
     def _plain(self, b: str, label: str, spelt: dict) -> bool:
         """Whether body `b`'s subscript `label` needs no definition: no label, its number, the
@@ -724,6 +769,8 @@ class Renderer(ABC):
         if s.base in ("v", "a") and len(rest) == 2 and rest[0] == "∈" and hasattr(self, "_members"):
             self._members.setdefault(rest[1], head)   # v_{J∈cylinder}: which body, if shortened
         out = head
+        if s.base in ("v", "a") and len(rest) == 4 and rest[0] == "∈" and rest[2] == "/":
+            self._note_rel(s.base, head, rest[1], rest[3])
         for i in range(0, len(rest), 2):
             mark, name = rest[i], rest[i + 1] if i + 1 < len(rest) else ""
             name = self.label(name)
@@ -743,8 +790,11 @@ class Renderer(ABC):
             for p in parts:           # the frame is left out of I_biela: only what is shown
                 if named and labels.get(p) and labels[p] in shown:
                     self.label(p)
+            if named and f" {self.wording.relative_word(self.lang)} " in shown and hasattr(self, "_rel_centres"):
+                self._rel_centres.append(s)   # I_{a rel b}: the page may or may not show it (`render`)
             return shown
         if sep == "/" and len(parts) == 2:
+            self._note_rel(s.base, "", parts[0], parts[1])
             return self.relative(self.label(parts[0]), self.label(parts[1]))
         return sep.join(self.label(p) for p in parts)
 
