@@ -46,10 +46,17 @@ def test_relative_subscript_in_the_other_languages(lang, word):
 
 
 def test_catalan_centres_intro_says_rel():
-    """The centres' section says how two names are joined, with the same word."""
-    text = rendered("seed_c5_1_3_bar_in_sleeve", "ca", "md", drawings=False)
-    assert "units per «rel» (relatiu a)" in text
+    """How two names are joined is said with the same word, «rel», where the page first
+    writes such a symbol (since the twenty-fifth round (a): the notation line, before the
+    steps, not the centres' section, which wrote no centre with «rel»): C5-1.6's fixed
+    pulley seen from the arm."""
+    text = rendered("seed_c5_1_6_belt", "ca", "md", drawings=False)
+    assert "(dos noms units per «rel», relatiu a: el primer sòlid respecte del segon)" in text
+    first = text.index("rel braç}")              # the symbol's first writing: the line that defines it
+    assert text.rfind("\n", 0, first) == text.rfind("\n", 0, text.index("«rel», relatiu a"))
+    assert first < text.index("## Velocitats")
     assert "resp." not in text
+    assert "units per «rel»" not in rendered("seed_c5_1_3_bar_in_sleeve", "ca", "md", drawings=False)
 
 
 @over(name=SEEDS)
