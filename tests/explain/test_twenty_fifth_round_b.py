@@ -49,7 +49,7 @@ DOTS = ("point:", "contact:", "icr:", "centre:", "pole:")
 
 
 def _leaders_through_dots(found: list) -> list[str]:
-    """The mechanism labels (not a polygon's arrow labels) whose leader, from its anchor to
+    """The labels of points and centres (`DOTS`) whose leader, from its anchor to
     the nearest point of its text's box, passes within `DOT` points of another labelled
     dot (a point's, a centre's ring), its own anchor's place aside: measured on the placed
     boxes, not through the placer's costs."""
@@ -61,7 +61,7 @@ def _leaders_through_dots(found: list) -> list[str]:
         dots = [(p.label.text, lay.ax.transData.transform(p.label.anchor)) for p in placed
                 if p.label.gid.startswith(DOTS)]
         for p in placed:
-            if not p.leader or p.label.along is not None:
+            if not p.leader or not p.label.gid.startswith(DOTS):
                 continue
             a = lay.ax.transData.transform(p.anchor)
             c = (p.box[:2] + p.box[2:]) / 2
@@ -82,7 +82,7 @@ def _leaders_through_dots(found: list) -> list[str]:
 
 @over(name=NOTES_SEEDS)
 def test_no_leader_runs_through_another_points_dot(name):
-    """A label set away from its point or centre has its leader to it; that leader runs
+    """A point's or centre's label set away from its dot has its leader to it; that leader runs
     through no other labelled point or centre, where it reads as that point's (C5-E.2's
     I_upper planet above A1, its leader hidden along the arm from J through A1), in English
     and Catalan (the recorded pages)."""

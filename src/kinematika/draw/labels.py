@@ -427,7 +427,8 @@ class Layout:
         outlines = self.outlines if own is None or not len(own) else self.outlines[~own]   # a name reaches into its body
         cost[far] = BODY_CROSS * _arrows_crossed(at[far], edge, outlines, OBSTACLE_PAD * self.px)
         if label.along is None:
-            return cost + LEADER_OVER * self._dots_passed(at, edge, far, len(boxes))
+            dots = self._dots_passed(at, edge, far, len(boxes)) if label.gid.startswith(DOT_GIDS) else 0.0
+            return cost + LEADER_OVER * dots
         cost[far] += ARROW_CROSS * _arrows_crossed(at[far], edge, self.arrows, OBSTACLE_PAD * self.px)
         reach = np.linalg.norm(edge - at[far], axis=1)
         step, pad = SAMPLE * self.px, OBSTACLE_PAD * self.px
@@ -448,13 +449,15 @@ class Layout:
         return cost
 
     def _dots_passed(self, at: np.ndarray, edge: np.ndarray, far: np.ndarray, n: int) -> np.ndarray:
-        """For each of `n` candidates, how many labelled dots (a point's, a centre's ring:
-        `DOT_GIDS`) other than its own anchor the leader of those that have one (`far`: from
-        `at` to `edge`) runs within `DOT_NEAR` points of. A leader through another point
+        """For each of `n` candidates of a point's or a centre's label, how many labelled dots
+        (a point's, a centre's ring: `DOT_GIDS`) other than its own anchor the leader of those
+        that have one (`far`: from `at` to `edge`) runs within `DOT_NEAR` points of. A leader through another point
         reads as pointing at it, and one running along a bar or a cross line is not seen at
         all: C5-E.2's I_upper planet sat above A1, its leader hidden along the arm from its
         ring at J through A1, and read as A1's (issue 30, twenty-fifth round (b)). Weighed as a
-        leader across another label's box (`LEADER_OVER`)."""
+        leader across another label's box (`LEADER_OVER`). A body's name is not weighed: its
+        anchor is no dot, and the places its leader then took were worse (C5-1.5's pulley 1
+        across strand 2)."""
         out = np.zeros(n)
         if not len(self.dots) or not len(far):
             return out
