@@ -128,3 +128,44 @@ def test_the_gear_changes_planets_centres_sit_by_their_rings():
 
 
 NEAR = 48.0         # points from a centre's ring to its label's box: a step of the placer's with a leader
+
+
+# --- a wheel's construction cross is a line labels keep off --------------------------------------
+
+def _crosses_of(lay) -> list:
+    """A drawing's construction crosses' lines (display), read off what is drawn in its axes,
+    not off the label board: a wheel's two thin lines (1 point wide, 0.8 opaque) through its
+    centre, each level or upright."""
+    import numpy as np
+
+    out = []
+    for line in lay.ax.get_lines():
+        xy = np.asarray(line.get_xydata(), dtype=float)
+        if len(xy) != 2 or line.get_linewidth() != 1.0 or line.get_alpha() != 0.8:
+            continue
+        q = line.get_transform().transform(xy)
+        d = q[1] - q[0]
+        if min(abs(d[0]), abs(d[1])) <= 1e-6 * max(abs(d[0]), abs(d[1]), 1e-300):
+            out.append(q)
+    return out
+
+
+@over(name=NOTES_SEEDS)
+def test_no_name_or_centre_lies_across_a_wheels_cross(name):
+    """No body's name and no centre's label has a wheel's construction cross (the lines
+    through a wheel's or pulley's centre) running through its text's box, in English and
+    Catalan: C5-1.1's "pulley", C5-1.3's "support" and I_support, C5-1.5's pulley 1 and 3,
+    C5-E.4's right wheel sat on one (the lines were not on the label board)."""
+    import numpy as np
+
+    from kinematika.draw.labels import _segment_hits
+
+    bad = []
+    for lang in RECORDED_LANGS:
+        for placed, lay in recorded_pages("layouts")[(name, lang)]:
+            crosses = [np.stack([c[:-1], c[1:]], axis=1) for c in _crosses_of(lay)]
+            for p in placed:
+                if p.label.gid.startswith(("body:", "centre:")) and any(
+                        _segment_hits(s, p.box[None, :]).any() for s in crosses):
+                    bad.append(f"{lang}: {p.label.text!r}")
+    assert not bad, bad
