@@ -117,7 +117,7 @@ def test_the_gear_changes_planets_centres_sit_by_their_rings():
             box = p.box
             gap = np.hypot(*np.maximum(np.maximum(box[:2] - ring, ring - box[2:]), 0)) / lay.px
             assert gap <= NEAR, (lang, p.label.text, gap)
-            placed = [q for q in found["layouts"] if q[1] is lay][0][0]
+            placed = next(q for q in found["layouts"] if q[1] is lay)[0]
             centre = (box[:2] + box[2:]) / 2
             own = np.linalg.norm(centre - ring)
             for q in placed:
