@@ -26,13 +26,6 @@ DISC_FILL = 0.5      # a moving disc's translucent fill: under the frame's hatch
                      # and outline (2), so a track a wheel overlaps stays seen (C5-E.1's 2R
                      # wheel over "pista zilindrikoa"; issue 30, twenty-fourth round (h))
 
-# the `avoid` weight of a wheel's construction cross (the two lines through its centre): a
-# construction line's (`draw.labels.DRAWN`), so a name or a centre's label pays for lying
-# across it (`LINE_OVER`) and a point's letter moves off it where a free place is near
-# (`COVER`); unweighed, C5-1.1's "politja" and C5-1.2's O sat on it (issue 30, twenty-fifth
-# round (b))
-CROSS = 0.5
-
 
 def draw_bodies(ctx: Context) -> None:
     """Every body as a textbook draws it: the frame's shapes hatched and its bars grey, each
@@ -168,7 +161,7 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
                 dash=gear, zorder=3, gid=gid, moves_with=name)
         for d in (np.array([1.0, 0.0]), np.array([0.0, 1.0])):
             ctx.add("line", [centre - 0.8 * s.radius * d, centre + 0.8 * s.radius * d],
-                    width=1.0, colour=body.colour, alpha=0.8, zorder=3, moves_with=name, avoid=CROSS)
+                    width=1.0, colour=body.colour, alpha=0.8, zorder=3, moves_with=name)
         ctx.avoid(*_ring(centre, s.radius))
         ctx.area(*_ring(centre, s.radius))
     elif s.kind == "line":
