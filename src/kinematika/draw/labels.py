@@ -45,10 +45,13 @@ SLIDE_END = 18.0         # points: a slid anchor stays this far from the arrow's
 LEADER_CLEAR = 6.0       # points of a leader next to its anchor (on its own arrow) not weighed
 CLOSE = 14.0             # points: two points' labels nearer than this sit on opposite sides
 POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its letter)
+DOT_GIDS = POINT_GIDS + ("icr:", "centre:", "pole:")   # labels whose anchor is a dot or ring drawn there (a point, a centre)
+DOT_NEAR = 4.0           # points: a leader passing this close to another label's dot runs through it
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
 LEADER_OVER = 450.0      # a leader across another label's box, for labels not on an arrow (`Label.along`): worse than a name on another body (`AREA`)
+                         # or through another label's dot (a point, a centre: `Layout._dots_passed`)
 ARROW_CROSS = 450.0      # a polygon label's leader across an arrow (exactly, not sampled): worse than a box over an arrow
 ARROW_UNDER = 400.0      # a polygon label's box over another arrow (exactly): as bad as over a label
 BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
@@ -221,6 +224,8 @@ class Layout:
         self.drawn, self.drawn_line, self.drawn_owner = _drawn_lines(board.obstacles, owners, ax.transData)
         self.areas = [(owner, Path(ax.transData.transform(poly))) for owner, poly in board.areas
                       if len(poly) >= 3]
+        dots = [lb.anchor for lb in self.labels if lb.gid.startswith(DOT_GIDS)]
+        self.dots = ax.transData.transform(np.array(dots)) if dots else np.zeros((0, 2))
         solid = self.obstacles[self.weights >= 1.0]
         # the drawing a leader should not run over (arrows, bars, marks), searched by a tree
         self.solid = cKDTree(solid) if len(solid) else None
@@ -422,7 +427,8 @@ class Layout:
         outlines = self.outlines if own is None or not len(own) else self.outlines[~own]   # a name reaches into its body
         cost[far] = BODY_CROSS * _arrows_crossed(at[far], edge, outlines, OBSTACLE_PAD * self.px)
         if label.along is None:
-            return cost
+            dots = self._dots_passed(at, edge, far, len(boxes)) if label.gid.startswith(DOT_GIDS) else 0.0
+            return cost + LEADER_OVER * dots
         cost[far] += ARROW_CROSS * _arrows_crossed(at[far], edge, self.arrows, OBSTACLE_PAD * self.px)
         reach = np.linalg.norm(edge - at[far], axis=1)
         step, pad = SAMPLE * self.px, OBSTACLE_PAD * self.px
@@ -441,6 +447,29 @@ class Layout:
         cost[far] += np.minimum(LEADER_CROSS / 3 * (hit.reshape(valid.shape) & valid).sum(axis=1),
                                 0.9 * LEADER_CROSS)
         return cost
+
+    def _dots_passed(self, at: np.ndarray, edge: np.ndarray, far: np.ndarray, n: int) -> np.ndarray:
+        """For each of `n` candidates of a point's or a centre's label, how many labelled dots
+        (a point's, a centre's ring: `DOT_GIDS`) other than its own anchor the leader of those
+        that have one (`far`: from `at` to `edge`) runs within `DOT_NEAR` points of. A leader through another point
+        reads as pointing at it, and one running along a bar or a cross line is not seen at
+        all: C5-E.2's I_upper planet sat above A1, its leader hidden along the arm from its
+        ring at J through A1, and read as A1's (issue 30, twenty-fifth round (b)). Weighed as a
+        leader across another label's box (`LEADER_OVER`). A body's name is not weighed: its
+        anchor is no dot, and the places its leader then took were worse (C5-1.5's pulley 1
+        across strand 2)."""
+        out = np.zeros(n)
+        if not len(self.dots) or not len(far):
+            return out
+        a, b = at[far], edge
+        d = b - a
+        length2 = np.maximum((d * d).sum(axis=1), 1e-12)
+        rel = self.dots[None, :, :] - a[:, None, :]                                   # (F, D, 2)
+        t = np.clip((rel * d[:, None, :]).sum(axis=2) / length2[:, None], 0.0, 1.0)
+        gap = np.linalg.norm(rel - t[..., None] * d[:, None, :], axis=2)
+        own = np.linalg.norm(rel, axis=2) <= DOT_NEAR * self.px                        # its own anchor, or a dot there
+        out[far] = ((gap <= DOT_NEAR * self.px) & ~own).sum(axis=1)
+        return out
 
     def _mutual(self, i: int, cands: list, choice: list[int]) -> np.ndarray:
         """The cost of each of label i's candidates against the other labels as placed:

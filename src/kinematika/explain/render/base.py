@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 from abc import ABC, abstractmethod
+from html import escape
 from typing import Any, Callable, Optional
 
 from babel.lists import format_list
@@ -948,18 +949,21 @@ class Renderer(ABC):
         A numeric page's bar is in m/s or m/s² ("0,5 m/s"); a symbolic page's polygon in the
         symbols' unit (`polygon.bar_unit`), the count written into the formula as the notes
         write a multiple (v²/(2·R), 2·r·ω): its sample numbers have no unit to name. A
-        symbolic figure with no such unit keeps a bare number (issue 30, twentieth round (c))."""
+        symbolic figure with no such unit keeps a bare number (issue 30, twentieth round (c)).
+        The count is written as SVG markup, each symbol set as a label's (`svg.name_markup`:
+        |a_P|/5 with an italic a and a subscript P, twenty-fifth round (b))."""
         if not self.doc.symbolic:
             return self.unit(fig.unit), self.bar_number, 1.0
         if fig.bar is None:
             return "", self.bar_number, 1.0
         import sympy
 
-        from .unicode import unicode_formula, unicode_name
+        from .svg import name_markup
+        from .unicode import unicode_formula
 
         unit, size = fig.bar
-        return "", lambda n: self.decimals(unicode_formula(sympy.nsimplify(n) * unit,
-                                                           lambda s: unicode_name(self.spelt(s)), lang=self.lang)), size
+        return "", lambda n: unicode_formula(sympy.nsimplify(n) * unit, lambda s: name_markup(self.spelt(s)),
+                                             lambda text: self.decimals(escape(text, quote=False)), lang=self.lang), size
 
     def bar_number(self, x: float) -> str:
         """A scale bar's round length, with the language's decimal sign."""

@@ -71,13 +71,35 @@ def sym_text(base: str, sub: str, sup: str, tex: str = "") -> Text:
     its size."""
     from ...draw.labels import text_extent
 
-    out = f'<tspan font-style="italic" font-weight="bold">{escape(base)}</tspan>'
+    out = sym_markup(base, sub, sup)
     w, h = text_extent(base, FONT, "bold", "italic")
+    for part in (sub, sup):
+        if part:
+            w += text_extent(part, FONT * SMALL)[0]
+    return Text(out, w, h * (1.25 if sub or sup else 1.0), tex)
+
+
+def sym_markup(base: str, sub: str, sup: str, weight: str = "bold") -> str:
+    """A symbol's SVG markup: its letter in italics (bold in a label), its subscript and
+    superscript smaller and shifted, each part escaped. A label (`sym_text`) and a symbol in
+    a scale bar's formula (`name_markup`) are set alike: a bar's |a_P|/5 reads as the a_P
+    beside its arrow (issue 30, twenty-fifth round (b))."""
+    bold = ' font-weight="bold"' if weight == "bold" else ""
+    out = f'<tspan font-style="italic"{bold}>{escape(base)}</tspan>'
     for part, shift in ((sub, "sub"), (sup, "super")):
         if part:
             out += f'<tspan baseline-shift="{shift}" font-size="70%">{escape(part)}</tspan>'
-            w += text_extent(part, FONT * SMALL)[0]
-    return Text(out, w, h * (1.25 if sub or sup else 1.0), tex)
+    return out
+
+
+def name_markup(name: str) -> str:
+    """A model's symbol name (a_P, R_wheel, omega_2, v) in a figure's running text, a
+    scale bar's formula: its letter in italics, its subscript set as a subscript
+    (`sym_markup`), never the raw underscore of its plain-text spelling."""
+    from .names import written
+
+    w = written(name)
+    return sym_markup(w.base, w.sub, w.sup, weight="normal")
 
 
 def plain_text(text: str) -> Text:
@@ -286,7 +308,8 @@ def svg(fig: Figure, label: Callable[[Sym | str], Text], unit: str, prefix: str 
         number: Callable[[float], str] = lambda x: f"{x:g}", per: float = 1.0) -> str:
     """The figure as an <svg> element; `label` gives a symbol's text, `unit` the bar's unit,
     `prefix` keeps its ids apart from other figures' on the page; the bar is a round number
-    of `per` (a symbolic unit's drawn size, `bar_length`), written by `number`."""
+    of `per` (a symbolic unit's drawn size, `bar_length`), written by `number` as SVG markup
+    (its symbols as `name_markup` sets them)."""
     lay = layout(fig, label)
     height = lay.height
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height:.0f}" '
@@ -343,12 +366,12 @@ def _scale_bar(lay: Layout, unit: str, number: Callable[[float], str], per: floa
     count = bar_length(lay.k, per)
     px = count * per * lay.k
     y = lay.height - 14
-    text = f"{number(count)} {unit}".strip()
+    text = f"{number(count)} {escape(unit)}".strip()         # `number` writes markup (`name_markup`)
     return (f'<line x1="{MARGIN}" y1="{y:.1f}" x2="{MARGIN + px:.1f}" y2="{y:.1f}" stroke="#222" '
             f'stroke-width="2"/><line x1="{MARGIN}" y1="{y - 4:.1f}" x2="{MARGIN}" y2="{y + 4:.1f}" '
             f'stroke="#222"/><line x1="{MARGIN + px:.1f}" y1="{y - 4:.1f}" x2="{MARGIN + px:.1f}" '
             f'y2="{y + 4:.1f}" stroke="#222"/><text x="{MARGIN + px + 8:.1f}" y="{y + 4:.1f}" '
-            f'fill="#222">{escape(text)}</text>')
+            f'fill="#222">{text}</text>')
 
 
 def embedded(text: str, prefix: str) -> str:
