@@ -62,10 +62,13 @@ def test_d_the_component_written_holds(name: str, lang: str) -> None:
         return
     sol, _ = explained(name)
     for d in (d for d in _rates(name) if d.lead and d.source is not None and d.arm is not None):
-        axis = d.lead[0].key[-1]
-        assert d.lead[0].key in ("readoff.along_x", "readoff.along_y"), d.lead
-        sign = -1 if "−" in d.lead else 1
-        factor = next((i.value for i in d.lead if isinstance(i, Value)), None)
+        at = next(k for k, i in enumerate(d.lead) if hasattr(i, "key"))
+        axis = d.lead[at].key[-1]
+        assert d.lead[at].key in ("readoff.along_x", "readoff.along_y"), d.lead
+        sign = -1 if "−" in d.lead[at:] else 1
+        factor = next((i.value for i in d.lead[at:] if isinstance(i, Value)), None)
+        if factor is not None:      # an oblique arm: its components written first (KS = (√3·r, r); …)
+            assert at == 4 and [sympy.sympify(c) for c in d.lead[2].value] == [sympy.sympify(c) for c in d.arm], d.lead
         arm = [sympy.sympify(c) for c in d.arm]
         length = sympy.sqrt(arm[0] ** 2 + arm[1] ** 2) if factor is None else sympy.sympify(factor)
         comp = sympy.sympify(d.source.value[0 if axis == "x" else 1])

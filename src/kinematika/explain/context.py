@@ -321,7 +321,8 @@ def read_along(ctx: "Ctx", term: Sym, length: Any, rate: Sym, arm: Optional[tupl
     arm = (x, y), the term's x component is −rate·y and its y component rate·x: an arm along
     an axis is written by its segment (GH), an oblique one by the component that multiplies
     the rate, the simpler of the two, in brackets unless one symbol (along y: v_NP =
-    −ω·(R/2)). None on a numeric page (a known number's magnitude is its value, `read_off`)
+    −ω·(R/2)), the arm's components written before it (KS = (√3·r, r); along x: v_SK =
+    −ω·r ⇒: the factor read off them). None on a numeric page (a known number's magnitude is its value, `read_off`)
     and in 3D."""
     if not ctx.symbolic or arm is None or len(arm) != 2:
         return None
@@ -343,6 +344,11 @@ def read_along(ctx: "Ctx", term: Sym, length: Any, rate: Sym, arm: Optional[tupl
         sign, part = parts[axis][0], sympy.simplify(parts[axis][1])
         value = Value(part, "len")
         factor = [value] if part.is_Symbol else ["(", value, ")"]
+        # the arm's components first, so that the factor is read off them (a reader met
+        # "along x: v_SK = −ω·r" with KS = 2·r and asked where r came from)
+        arm_is = [length, " = ", Value(ctx.clean(tuple(arm), "len"), "len"), "; "]
+        return [*arm_is, Msg("readoff.along_x" if axis == "x" else "readoff.along_y", {}), " ", term, " = ",
+                "−" if sign < 0 else "", rate, "·", *factor, " ⇒ "]
     return [Msg("readoff.along_x" if axis == "x" else "readoff.along_y", {}), " ", term, " = ", "−" if sign < 0 else "", rate, "·", *factor, " ⇒ "]
 
 
