@@ -16,7 +16,6 @@ the line every half pixel, not by the placer's arithmetic.
 from __future__ import annotations
 
 import functools
-import itertools
 import re
 
 import numpy as np
@@ -72,14 +71,18 @@ def layouts(name: str, lang: str) -> list:
 
 def crossed(points: np.ndarray, box: np.ndarray) -> bool:
     """Whether the polyline through `points` (display) runs through `box` (x0, y0, x1, y1):
-    some point of it, sampled every half pixel, strictly inside."""
-    for p, q in itertools.pairwise(points):
-        n = max(2, int(np.linalg.norm(q - p) / 0.5) + 1)
-        t = np.linspace(0, 1, n)[:, None]
-        s = p + t * (q - p)
-        if np.any((s[:, 0] > box[0]) & (s[:, 0] < box[2]) & (s[:, 1] > box[1]) & (s[:, 1] < box[3])):
-            return True
-    return False
+    some point of it, sampled every half pixel, strictly inside (a polyline whose bounding
+    box misses the box is not sampled)."""
+    points = np.asarray(points, dtype=float)
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    if lo[0] >= box[2] or hi[0] <= box[0] or lo[1] >= box[3] or hi[1] <= box[1]:
+        return False
+    p, q = points[:-1], points[1:]
+    n = np.maximum(2, (np.linalg.norm(q - p, axis=1) / 0.5).astype(int) + 1)     # samples a segment
+    seg = np.repeat(np.arange(len(p)), n)
+    t = (np.arange(n.sum()) - np.repeat(np.cumsum(n) - n, n)) / np.repeat(n - 1, n)
+    s = p[seg] + t[:, None] * (q - p)[seg]
+    return bool(np.any((s[:, 0] > box[0]) & (s[:, 0] < box[2]) & (s[:, 1] > box[1]) & (s[:, 1] < box[3])))
 
 
 @over(name=NOTES_SEEDS, lang=LANGS)
