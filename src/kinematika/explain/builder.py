@@ -217,8 +217,19 @@ def relative_convention(doc: Document) -> Optional[Msg]:
             if m and m.group(2) in numbers and m.group(3) in numbers:
                 point_, b, a = m.groups()
                 return msg("data.relative", v=Sym("v", t.sym.sub), point=Name(point_), w=omega_sym(b, a),
-                           body_b=Name(b, "body"), body_a=Name(a, "body"))
+                           body_b=Name(b, "body"), body_a=Name(a, "body"),
+                           rate="yes" if writes_rate(doc, f"{b}/{a}") else "no")
     return None
+
+
+def writes_rate(doc: Document, sub: str) -> bool:
+    """Whether the explanation writes the relative rate ω (or α) with subscript `sub` (b/a)
+    in an equation or a result: the Data's convention defines ω_{b rel a} only then (a reader
+    met "ω_{N rel M} the angular velocity of the block N relative to the guide M" on a page
+    that never wrote it; issue 30, stop 46)."""
+    rates = [d.sym for d in doc.derived()]
+    rates += [t.sym for eq in doc.equations() for t in [eq.target] + [t for side in eq.sides for t in side]]
+    return any(s.base in ("ω", "α") and s.sub == sub for s in rates)
 
 
 def found_forward(eq: Equation) -> None:

@@ -16,13 +16,16 @@ data-relative = Una magnitud relativa anomena els dos sòlids: { $v } és la vel
     } vista des { ELISION($body_a) ->
         [vowel] d’{ $body_a }
        *[other] de { $body_a }
-    }, i { $w } la velocitat angular { ELISION($body_b) ->
-        [vowel] d’{ $body_b }
-       *[other] de { $body_b }
-    } respecte { ELISION($body_a) ->
-        [vowel] d’{ $body_a }
-       *[other] de { $body_a }
-    }.
+    }{ WORD($rate) ->
+        [yes] , i { $w } la velocitat angular { ELISION($body_b) ->
+            [vowel] d’{ $body_b }
+           *[other] de { $body_b }
+        } respecte { ELISION($body_a) ->
+            [vowel] d’{ $body_a }
+           *[other] de { $body_a }
+        }.
+       *[no] .
+    }
 data-spatial = Les velocitats i acceleracions angulars són vectors (regla de la mà dreta al voltant de la seva direcció).
 data-symbolic = Les dades són símbols, i cada resultat és una fórmula exacta en funció d’aquests. Les figures es dibuixen amb valors de mostra dels símbols, indicats sota cada figura.
 data-symbol = un símbol (qualsevol valor)

@@ -10,7 +10,10 @@ data-planar = Planar motion: angular velocities{ $accelerations ->
         [0] {""}
        *[other] {" "}and accelerations
     } are signed, counter-clockwise positive.
-data-relative = A relative quantity names both bodies: { $v } is the velocity of the point { $point } of { $body_b } seen from { $body_a }, and { $w } the angular velocity of { $body_b } relative to { $body_a }.
+data-relative = A relative quantity names both bodies: { $v } is the velocity of the point { $point } of { $body_b } seen from { $body_a }{ WORD($rate) ->
+        [yes] , and { $w } the angular velocity of { $body_b } relative to { $body_a }.
+       *[no] .
+    }
 data-spatial = Angular velocities and accelerations are vectors (right-hand rule about their direction).
 data-symbolic = The data are symbols, and every result is an exact formula in them. The figures are drawn at sample values of the symbols, given under each figure.
 data-symbol = a symbol (any value)

@@ -10,7 +10,10 @@ data-planar = Movimiento plano: las velocidades{ $accelerations ->
         [0] {" "}angulares
        *[other] {" "}y aceleraciones angulares
     } llevan signo, positivas en sentido antihorario.
-data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } de { $body_b } vista desde { $body_a }, y { $w } la velocidad angular de { $body_b } respecto de { $body_a }.
+data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } de { $body_b } vista desde { $body_a }{ WORD($rate) ->
+        [yes] , y { $w } la velocidad angular de { $body_b } respecto de { $body_a }.
+       *[no] .
+    }
 data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de la mano derecha alrededor de su dirección).
 data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en función de ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
 data-symbol = un símbolo (cualquier valor)

@@ -10,7 +10,10 @@ data-planar = Mugimendu laua: { $accelerations ->
         [0] abiadura angeluarrek
        *[other] abiadura eta azelerazio angeluarrek
     } zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
-data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $body_b } solidoaren { $point } puntuaren abiadura da { $body_a } solidotik ikusita, eta { $w } { $body_b } solidoaren abiadura angeluarra { $body_a } solidoarekiko.
+data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $body_b } solidoaren { $point } puntuaren abiadura da { $body_a } solidotik ikusita{ WORD($rate) ->
+        [yes] , eta { $w } { $body_b } solidoaren abiadura angeluarra { $body_a } solidoarekiko.
+       *[no] .
+    }
 data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
 data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
 data-symbol = ikur bat (edozein balio)
