@@ -18,8 +18,8 @@ def _number(text: str) -> float:
 
 
 @pytest.mark.parametrize("lang,words,absent", [
-    ("eu", "Mekanismoak 2 askatasun-gradu ditu.", "baldintza independente"),
-    ("ca", "El mecanisme té 2 graus de llibertat.", "condicions independents"),
+    ("eu", "Mekanismoak bi askatasun-gradu ditu.", "baldintza independente"),
+    ("ca", "El mecanisme té dos graus de llibertat.", "condicions independents"),
 ])
 def test_structure_says_the_mobility_and_no_count_of_conditions(lang, words, absent):
     """The notes write no count of unknowns or independent conditions: the structure section

@@ -105,6 +105,8 @@ structure-contacts_rolling = { $points_n ->
 structure-fixed_part = { $body } (fix a { $frame })
 structure-dof = El mecanisme té { $dof ->
         [one] un grau
+        [2] dos graus
+        [3] tres graus
        *[other] { $dof } graus
     } de llibertat.
 shape-circle = circumferència

@@ -78,6 +78,8 @@ structure-contacts_rolling = { $points_n ->
 structure-fixed_part = { $body } (fixed to { $frame })
 structure-dof = The mechanism has { $dof ->
         [one] one degree
+        [2] two degrees
+        [3] three degrees
        *[other] { $dof } degrees
     } of freedom.
 shape-circle = circle

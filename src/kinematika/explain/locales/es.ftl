@@ -84,6 +84,8 @@ structure-contacts_rolling = { $points_n ->
 structure-fixed_part = { $body } (fijo a { $frame })
 structure-dof = El mecanismo tiene { $dof ->
         [one] un grado
+        [2] dos grados
+        [3] tres grados
        *[other] { $dof } grados
     } de libertad.
 shape-circle = circunferencia

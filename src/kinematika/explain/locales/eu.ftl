@@ -78,6 +78,8 @@ structure-contacts_rolling = { $points_n ->
 structure-fixed_part = { $body } ({ $frame } solidoari zurrunki lotuta: finkoa)
 structure-dof = Mekanismoak { $dof ->
         [one] askatasun-gradu bat du
+        [2] bi askatasun-gradu ditu
+        [3] hiru askatasun-gradu ditu
        *[other] { $dof } askatasun-gradu ditu
     }.
 shape-circle = zirkunferentzia
