@@ -212,7 +212,7 @@ def relative_convention(doc: Document) -> Optional[Msg]:
     Basque puts its case endings on the classifier noun (barra solidoaren)."""
     numbers = doc.numbers
     for eq in doc.equations():
-        for t in [eq.target] + [t for side in eq.sides for t in side]:
+        for t in eq.terms:
             m = RELATIVE.match(t.sym.sub)
             if m and m.group(2) in numbers and m.group(3) in numbers:
                 point_, b, a = m.groups()
@@ -228,7 +228,7 @@ def writes_rate(doc: Document, sub: str) -> bool:
     met "ω_{N rel M} the angular velocity of the block N relative to the guide M" on a page
     that never wrote it; issue 30, stop 46)."""
     rates = [d.sym for d in doc.derived()]
-    rates += [t.sym for eq in doc.equations() for t in [eq.target] + [t for side in eq.sides for t in side]]
+    rates += [t.sym for eq in doc.equations() for t in eq.terms]
     return any(s.base in ("ω", "α") and s.sub == sub for s in rates)
 
 

@@ -362,7 +362,7 @@ def points_named(doc: Any, known: frozenset = frozenset()) -> set[str]:
 
     out: set[str] = set()
     for eq in doc.equations():
-        for term in [eq.target] + [t for side in eq.sides for t in side]:
+        for term in eq.terms:
             sub = term.sym.sub.split("/")[0].split(",")[0]
             for part in re.split(r"[-,]", sub):
                 name = part.split("∈")[0].strip()

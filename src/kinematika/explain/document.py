@@ -201,6 +201,11 @@ class Equation:
     contacts: list = field(default_factory=list, repr=False) # the contact points they are about
 
     @property
+    def terms(self) -> list[Term]:
+        """Every term it writes: its target, then each side's terms in order."""
+        return [self.target] + [t for side in self.sides for t in side]
+
+    @property
     def equality(self) -> bool:
         """Whether the equation only says that two points move alike (v_T2 = v_T1: the two
         points of a contact, a point shared by two bodies, the points of a strand that

@@ -429,7 +429,7 @@ def _rate_bodies_of(syms: set) -> set[str]:
 def _names(eq: Equation) -> set[str]:
     """The point names an equation's terms mention (J7 in v_J7∈4, a_{J7∈7/4}, v_{J7-H})."""
     out: set[str] = set()
-    for t in [eq.target] + [t for side in eq.sides for t in side]:
+    for t in eq.terms:
         out.update(x for x in re.split(r"[∈/,\-]", t.sym.sub) if x)
     return out
 

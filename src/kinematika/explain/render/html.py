@@ -131,7 +131,7 @@ class HtmlRenderer(Renderer):
                               for c in cells)
                 rows.append(f'<tr class="{"ann" if k != 1 else "terms"}">{tds}</tr>')
             tables.append(f'<table class="eq">{"".join(rows)}</table>')
-        terms = [eq.target] + [t for side in eq.sides for t in side]
+        terms = eq.terms
         items = "".join(f"<li>{self.term_line(t)}</li>" for t in terms)
         return "".join(tables) + f'<ul class="terms">{items}</ul>'
 

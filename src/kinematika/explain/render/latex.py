@@ -197,7 +197,7 @@ class LatexRenderer(Renderer):
         for side in eq.sides:
             parts.append("=")
             parts.append(" + ".join(cell(t) for t in side))
-        terms = [eq.target] + [t for side in eq.sides for t in side]
+        terms = eq.terms
         items = "\n".join(rf"\item {self.term_line(t)}" for t in terms)
         return "\\[ " + " ".join(parts) + " \\]\n\\begin{itemize}\n" + items + "\n\\end{itemize}\n"
 

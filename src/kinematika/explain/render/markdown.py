@@ -128,7 +128,7 @@ class MarkdownRenderer(Renderer):
             block = self._block(eq)
         finally:
             self.code = False
-        terms = [eq.target] + [t for side in eq.sides for t in side]
+        terms = eq.terms
         listed = "\n".join(f"- {self.term_line(t)}" for t in terms)
         return block + "\n" + listed + "\n"
 
